@@ -1,0 +1,99 @@
+"""Time budgets for SymPy work whose cost cannot be known in advance.
+
+Simplification and equation solving are optional refinements: when they run out
+of time the engine keeps the unrefined (still correct) expression.  The budget
+uses an interval timer, which only works in a process's main thread; that is
+where derivations run (the start-up cache builder and the worker processes that
+serve user systems).  Elsewhere the budget degrades to a size gate alone.
+"""
+
+from __future__ import annotations
+
+import signal
+import threading
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from typing import TypeVar
+
+import sympy as sp
+
+T = TypeVar("T")
+
+SIMPLIFY_SECONDS = 0.5
+SIMPLIFY_MAX_OPS = 300
+
+
+class BudgetExceeded(Exception):
+    """Raised inside a budgeted block when its time is up."""
+
+
+@contextmanager
+def time_limit(seconds: float) -> Iterator[None]:
+    """Raise BudgetExceeded in the block after ``seconds`` (main thread only)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def _expire(signum: int, frame: object) -> None:
+        raise BudgetExceeded
+
+    previous = signal.signal(signal.SIGALRM, _expire)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+def within_budget(work: Callable[[], T], fallback: T, seconds: float) -> T:
+    """Run ``work``; on timeout (or a SymPy failure) return ``fallback``."""
+    try:
+        with time_limit(seconds):
+            return work()
+    except (BudgetExceeded, NotImplementedError, RecursionError, TypeError, ValueError):
+        return fallback
+
+
+def tidy(expr: sp.Expr, seconds: float = SIMPLIFY_SECONDS) -> sp.Expr:
+    """A display form: cheap normalisation always, full simplify when small and quick."""
+    cheap = within_budget(lambda: sp.factor_terms(sp.cancel(expr)), expr, seconds)
+    if sp.count_ops(cheap) > SIMPLIFY_MAX_OPS:
+        return cheap
+    full = within_budget(lambda: sp.simplify(cheap), cheap, seconds)
+    # Keep the angles the reader wrote: reject forms that trade sin θ cos θ for sin 2θ.
+    if _angles(full) - _angles(cheap) or sp.count_ops(full) > sp.count_ops(cheap):
+        return cheap
+    return full
+
+
+def _angles(expr: sp.Expr) -> set[sp.Expr]:
+    return {f.args[0] for f in expr.atoms(sp.sin, sp.cos, sp.tan)}
+
+
+def pythagoras(expr: sp.Expr) -> sp.Expr:
+    """Collapse sin²a + cos²a = 1 for every angle a, cheaply and deterministically.
+
+    For each angle both rewritings (sin² → 1 − cos², cos² → 1 − sin²) are tried
+    and the shorter result kept, so a kinetic energy keeps its natural form.
+    """
+    angles = sorted({f.args[0] for f in expr.atoms(sp.sin, sp.cos)}, key=sp.default_sort_key)
+    best = sp.expand(expr)
+    for a in angles:
+        options = [
+            best,
+            sp.expand(best.subs(sp.sin(a) ** 2, 1 - sp.cos(a) ** 2)),
+            sp.expand(best.subs(sp.cos(a) ** 2, 1 - sp.sin(a) ** 2)),
+        ]
+        best = min(options, key=sp.count_ops)
+    return best
+
+
+def is_zero(expr: sp.Expr) -> bool:
+    """Decide expr == 0: exact cancellation first, then a budgeted simplification."""
+    expanded = sp.expand(expr)
+    if expanded == 0:
+        return True
+    if pythagoras(expanded) == 0:
+        return True
+    return tidy(expanded) == 0

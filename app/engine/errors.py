@@ -1,0 +1,12 @@
+"""Errors the engine raises for declarations it cannot derive."""
+
+
+class DerivationError(ValueError):
+    """A system the engine refuses; the message says what is wrong and what is allowed.
+
+    ``part`` names the offending piece of the input when there is one.
+    """
+
+    def __init__(self, message: str, part: str = ""):
+        super().__init__(message)
+        self.part = part

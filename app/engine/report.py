@@ -1,0 +1,290 @@
+"""The derivation as data: ordered steps and the API's JSON contract.
+
+Every step is ``{"title", "latex", "sympy", "explanation"}``; templates only
+loop over them.  ``sympy`` strings use the symbol convention (``q``, ``q_dot``,
+``q_ddot``, ``t``, parameters by name) and parse with ``sympy.sympify``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import sympy as sp
+
+from app.engine.budget import pythagoras, tidy
+from app.engine.derive import Derivation
+
+
+@dataclass
+class Printer:
+    names: dict[sp.Symbol, str]
+
+    def tex(self, expr: Any) -> str:
+        return sp.latex(expr, symbol_names=self.names)
+
+    def pair(self, expr: sp.Expr) -> dict[str, str]:
+        return {"sympy": sp.sstr(expr), "latex": self.tex(expr)}
+
+
+def _aligned(rows: list[str]) -> str:
+    return r"\begin{aligned}" + r" \\ ".join(rows) + r"\end{aligned}" if len(rows) > 1 else rows[0]
+
+
+def _step(title: str, rows: list[str], sympy: Any, explanation: str) -> dict[str, str]:
+    text = sp.sstr(sympy) if not isinstance(sympy, str) else sympy
+    return {"title": title, "latex": _aligned(rows), "sympy": text, "explanation": explanation}
+
+
+def display(expr: sp.Expr) -> sp.Expr:
+    return tidy(pythagoras(expr)) if expr.free_symbols else expr
+
+
+def build_steps(d: Derivation) -> list[dict[str, str]]:
+    m, eqs, en, red, table = d.mechanics, d.equations, d.energetics, d.reduction, d.table
+    pr = Printer(table.latex_names())
+    qn = [pr.tex(s) for s in table.q]
+    qdn = [pr.tex(s) for s in table.qd]
+    qddn = [pr.tex(s) for s in table.qdd]
+    steps: list[dict[str, str]] = []
+
+    if m.positions:
+        n = len(m.positions)
+        label = (lambda i: rf"_{{{i + 1}}}") if n > 1 else (lambda i: "")
+        steps.append(
+            _step(
+                "Positions",
+                [
+                    rf"\vec r{label(i)} = \left({', '.join(pr.tex(c) for c in r)}\right)"
+                    for i, r in enumerate(m.positions)
+                ],
+                [tuple(r) for r in m.positions],
+                "Each mass is placed in Cartesian coordinates as a function of the generalized coordinates"
+                + (
+                    " and of time, because a constraint moves."
+                    if any(c.has(table.t) for r in m.positions for c in r)
+                    else "."
+                ),
+            )
+        )
+        steps.append(
+            _step(
+                "Velocities",
+                [
+                    rf"\vec v{label(i)} = \left({', '.join(pr.tex(c) for c in v)}\right)"
+                    for i, v in enumerate(m.velocities)
+                ],
+                [tuple(v) for v in m.velocities],
+                "Differentiating each position along the motion (chain rule through every coordinate) gives its velocity.",
+            )
+        )
+        steps.append(
+            _step(
+                "Squared speeds",
+                [rf"v{label(i)}^2 = {pr.tex(v2)}" for i, v2 in enumerate(m.speeds_squared)],
+                list(m.speeds_squared),
+                "The dot product of each velocity with itself, after using sin² + cos² = 1.",
+            )
+        )
+    if m.T is not None:
+        steps.append(
+            _step(
+                "Kinetic energy",
+                [f"T = {pr.tex(m.T)}"],
+                m.T,
+                "T adds up one half of mass times squared speed." if m.positions else "The kinetic energy as declared.",
+            )
+        )
+        steps.append(
+            _step("Potential energy", [f"U = {pr.tex(m.U)}"], m.U, "The potential energy depends on positions only.")
+        )
+    steps.append(
+        _step(
+            "Lagrangian",
+            [f"L = {pr.tex(m.L)}"],
+            m.L,
+            "The Lagrangian is kinetic minus potential energy." if m.T is not None else "The Lagrangian as declared.",
+        )
+    )
+
+    for k, name in enumerate(table.names):
+        g, p, dp = eqs.dL_dq[k], eqs.momenta[k], eqs.ddt_momenta[k]
+        steps.append(
+            _step(
+                f"Derivatives for {name}",
+                [
+                    rf"\frac{{\partial L}}{{\partial {qn[k]}}} = {pr.tex(display(g))}",
+                    rf"\frac{{\partial L}}{{\partial {qdn[k]}}} = {pr.tex(display(p))}",
+                    rf"\frac{{d}}{{dt}}\frac{{\partial L}}{{\partial {qdn[k]}}} = {pr.tex(display(dp))}",
+                ],
+                [display(g), display(p), display(dp)],
+                "The two partial derivatives the Euler–Lagrange equation needs, and the total time derivative of the second.",
+            )
+        )
+    if any(f != 0 for f in m.Q):
+        steps.append(
+            _step(
+                "Generalized forces",
+                [f"Q_{{{qn[k]}}} = {pr.tex(f)}" for k, f in enumerate(m.Q)],
+                list(m.Q),
+                "Forces that no potential describes enter on the right: d/dt ∂L/∂q̇ − ∂L/∂q = Q.",
+            )
+        )
+    residuals = [display(r) for r in eqs.residuals]
+    steps.append(
+        _step(
+            "Euler–Lagrange equations",
+            [f"{pr.tex(r)} = 0" for r in residuals],
+            residuals,
+            "For each coordinate, d/dt ∂L/∂q̇ − ∂L/∂q − Q vanishes along the true motion.",
+        )
+    )
+    steps.append(
+        _step(
+            "Mass matrix and forcing",
+            [rf"M = {pr.tex(eqs.mass_matrix)}", rf"f = {pr.tex(eqs.forcing.applyfunc(display))}"],
+            [eqs.mass_matrix.tolist(), [display(x) for x in eqs.forcing]],
+            "The equations are linear in the accelerations, M q̈ = f, with M the Hessian of L in the velocities.",
+        )
+    )
+    acc = [display(a) for a in eqs.accelerations]
+    steps.append(
+        _step(
+            "Accelerations",
+            [f"{qddn[k]} = {pr.tex(a)}" for k, a in enumerate(acc)],
+            acc,
+            "Solving M q̈ = f gives each acceleration explicitly, ready for numerical integration.",
+        )
+    )
+    steps.append(
+        _step(
+            "Generalized momenta",
+            [f"p_{{{qn[k]}}} = {pr.tex(display(p))}" for k, p in enumerate(eqs.momenta)],
+            [display(p) for p in eqs.momenta],
+            "Each generalized momentum is the derivative of L with respect to that coordinate's velocity.",
+        )
+    )
+    if en.cyclic:
+        steps.append(
+            _step(
+                "Cyclic coordinates",
+                [
+                    rf"\frac{{\partial L}}{{\partial {qn[table.names.index(c)]}}} = 0 \;\Rightarrow\; "
+                    rf"p_{{{qn[table.names.index(c)]}}} = {pr.tex(display(eqs.momenta[table.names.index(c)]))} = \text{{const}}"
+                    for c in en.cyclic
+                ],
+                [display(eqs.momenta[table.names.index(c)]) for c in en.cyclic],
+                "A coordinate missing from L (with no force on it) has a momentum that never changes.",
+            )
+        )
+    steps.append(
+        _step(
+            "Explicit time dependence",
+            [rf"\frac{{\partial L}}{{\partial t}} = {pr.tex(display(en.dL_dt))}"],
+            display(en.dL_dt),
+            "If L does not contain t explicitly, the Hamiltonian is conserved (absent non-conservative forces).",
+        )
+    )
+    steps.append(
+        _step(
+            "Hamiltonian",
+            [rf"h = \sum_k p_k \dot{{q}}_k - L = {pr.tex(display(en.hamiltonian))}"],
+            display(en.hamiltonian),
+            "The Hamiltonian is the sum of momenta times velocities minus the Lagrangian.",
+        )
+    )
+    if m.T is not None:
+        steps.append(
+            _step(
+                "Energy",
+                [f"E = T + U = {pr.tex(display(en.energy))}"],
+                display(en.energy),
+                "The mechanical energy, for comparison with h.",
+            )
+        )
+        steps.append(
+            _step(
+                "Is h equal to E?",
+                [f"E - h = {pr.tex(en.energy_minus_h)}"],
+                en.energy_minus_h,
+                en.reason,
+            )
+        )
+    if any(f != 0 for f in m.Q):
+        steps.append(
+            _step(
+                "Power of the non-conservative forces",
+                [
+                    rf"\frac{{dh}}{{dt}} = -\frac{{\partial L}}{{\partial t}} + \sum_k Q_k \dot{{q}}_k = {pr.tex(display(en.power - en.dL_dt))}"
+                ],
+                display(en.power - en.dL_dt),
+                "Along the motion h changes at the rate at which the generalized forces do work.",
+            )
+        )
+    if red is not None:
+        steps.extend(_reduction_steps(d, pr))
+    return steps
+
+
+def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
+    red = d.reduction
+    assert red is not None
+    table = d.table
+    r = table.q[table.names.index(red.coordinate)]
+    rn = pr.tex(r)
+    out: list[dict[str, str]] = []
+    if red.cyclic_velocities:
+        out.append(
+            _step(
+                "Eliminating the cyclic velocities",
+                [f"{pr.tex(k)} = {pr.tex(v)}" for k, v in red.cyclic_velocities.items()],
+                list(red.cyclic_velocities.values()),
+                "Each conserved momentum is solved for its velocity, leaving one coordinate to follow.",
+            )
+        )
+    out.append(
+        _step(
+            "Effective potential",
+            [
+                rf"U_\text{{eff}}({rn}) = {pr.tex(red.effective_potential)}",
+                rf"m_\text{{eff}} = {pr.tex(red.effective_mass)}",
+            ],
+            [red.effective_potential, red.effective_mass],
+            "With the cyclic motion folded in, the remaining coordinate moves like a particle of mass m_eff in U_eff.",
+        )
+    )
+    out.append(
+        _step(
+            "Energy first integral",
+            [rf"E_r = {pr.tex(red.radial_energy)}"],
+            red.radial_energy,
+            f"The conserved h, written in {red.coordinate} alone: a first-order equation for {red.coordinate}.",
+        )
+    )
+    out.append(
+        _step(
+            "Time as an integral",
+            [rf"t = {pr.tex(red.time_integral)}"],
+            red.time_integral,
+            f"Separating variables in the energy integral gives the time to reach each {red.coordinate}.",
+        )
+    )
+    if red.equilibria:
+        rows = [rf"{rn}_0 = {pr.tex(e.position)},\quad \omega^2 = {pr.tex(e.omega_squared)}" for e in red.equilibria]
+        sym: Any = [(e.position, e.omega_squared) for e in red.equilibria]
+        why = "Equilibria make U_eff' vanish; about each, ω² = U_eff''/m_eff (oscillation when positive, instability when negative)."
+    else:
+        rows = [
+            rf"U_\text{{eff}}'({rn}_0) = {pr.tex(red.equilibrium_condition.xreplace({r: sp.Symbol(r.name + '0')}))} = 0",
+            rf"\omega^2 = \frac{{U_\text{{eff}}''}}{{m_\text{{eff}}}} = {pr.tex(red.omega_squared_at)}",
+        ]
+        sym = [red.equilibrium_condition, red.omega_squared_at]
+        if not red.equilibrium_condition.has(r):
+            why = f"U_eff' does not depend on {red.coordinate} and is not zero, so there is no equilibrium."
+        else:
+            why = (
+                f"No closed-form root was found; the condition and the frequency hold at any {red.coordinate}_0 "
+                "that satisfies it."
+            )
+    out.append(_step("Equilibria and small oscillations", rows, sym, why))
+    return out

@@ -1,0 +1,38 @@
+"""The ASGI application: ``app.main:app``."""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
+
+from fastapi import FastAPI
+
+from app.service.derivations import warm_all
+from app.web import api_scenes, errors
+
+
+@asynccontextmanager
+async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+    # Fill the derivation cache in the background: the server answers at once,
+    # and a request for a scene not yet derived waits only for that scene.
+    threading.Thread(target=warm_all, name="warm-derivations", daemon=True).start()
+    yield
+
+
+app = FastAPI(
+    title="Lagrange",
+    summary="An interactive textbook of Lagrangian mechanics: derivations, simulations and their errors.",
+    version="0.1.0",
+    lifespan=lifespan,
+)
+errors.install(app)
+
+ROUTERS = [api_scenes.router]
+for router in ROUTERS:
+    app.include_router(router)
+
+
+@app.get("/healthz", tags=["service"], summary="Liveness and readiness probe")
+def health() -> dict[str, str]:
+    return {"status": "ok"}

@@ -1,0 +1,77 @@
+"""A small two-level cache: memory, then JSON files on disk, then compute.
+
+Keys carry a fingerprint of the engine's source, so a changed engine never
+serves a stale derivation.  Each key is computed at most once per process even
+under concurrent requests (a lock per key).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import tempfile
+import threading
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def cache_dir() -> Path:
+    return Path(os.environ.get("LAGRANGE_CACHE_DIR", ROOT / ".cache"))
+
+
+def source_fingerprint(*packages: str) -> str:
+    """A hash of every Python file in the named packages of ``app``."""
+    digest = hashlib.sha256()
+    for package in packages:
+        for path in sorted((ROOT / "app" / package).rglob("*.py")):
+            digest.update(path.relative_to(ROOT).as_posix().encode())
+            digest.update(path.read_bytes())
+    return digest.hexdigest()[:16]
+
+
+class JsonCache:
+    """Memory and disk cache of JSON-serialisable results."""
+
+    def __init__(self, namespace: str, fingerprint: str):
+        self.namespace = namespace
+        self.fingerprint = fingerprint
+        self._memory: dict[str, Any] = {}
+        self._locks: dict[str, threading.Lock] = {}
+        self._guard = threading.Lock()
+
+    def _path(self, key: str) -> Path:
+        return cache_dir() / self.namespace / f"{key}-{self.fingerprint}.json"
+
+    def _lock(self, key: str) -> threading.Lock:
+        with self._guard:
+            return self._locks.setdefault(key, threading.Lock())
+
+    def get(self, key: str, compute: Callable[[], Any]) -> Any:
+        if key in self._memory:
+            return self._memory[key]
+        with self._lock(key):
+            if key in self._memory:
+                return self._memory[key]
+            path = self._path(key)
+            try:
+                value = json.loads(path.read_text())
+            except (OSError, ValueError):
+                value = compute()
+                self._write(path, value)
+            self._memory[key] = value
+            return value
+
+    @staticmethod
+    def _write(path: Path, value: Any) -> None:
+        # Write then rename, so a reader never sees half a file.
+        try:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            with tempfile.NamedTemporaryFile("w", dir=path.parent, delete=False, suffix=".tmp") as handle:
+                json.dump(value, handle)
+            os.replace(handle.name, path)
+        except OSError:
+            pass  # a read-only disk only costs a recomputation in the next process

@@ -1,0 +1,77 @@
+"""Derivations of the chapter's scenes, computed once and cached."""
+
+from __future__ import annotations
+
+import threading
+from functools import cache
+from typing import Any
+
+from app.engine.contract import derivation_json, parameters_json
+from app.engine.derive import Derivation, derive
+from app.scenes import SCENES, Scene
+from app.service.cache import JsonCache, source_fingerprint
+
+
+class UnknownScene(KeyError):
+    def __init__(self, scene_id: str):
+        super().__init__(scene_id)
+        self.scene_id = scene_id
+
+    def __str__(self) -> str:
+        known = ", ".join(sorted(SCENES))
+        return f"no scene with id {self.scene_id[:60]!r}; known scenes: {known}"
+
+
+_json_cache = JsonCache("derivations", source_fingerprint("engine", "scenes"))
+
+
+def scene(scene_id: str) -> Scene:
+    try:
+        return SCENES[scene_id]
+    except KeyError:
+        raise UnknownScene(scene_id) from None
+
+
+_derive_lock = threading.Lock()
+
+
+@cache
+def _derivation(scene_id: str) -> Derivation:
+    return derive(SCENES[scene_id].system)
+
+
+def derivation(scene_id: str) -> Derivation:
+    """The SymPy derivation of a scene (memory-cached per process)."""
+    scene(scene_id)
+    with _derive_lock:
+        return _derivation(scene_id)
+
+
+def derivation_document(scene_id: str) -> dict[str, Any]:
+    """The contract JSON of a scene's derivation (memory and disk cached)."""
+    s = scene(scene_id)
+    return _json_cache.get(scene_id, lambda: {"id": s.id, **derivation_json(derivation(scene_id))})
+
+
+def scene_summary(s: Scene) -> dict[str, Any]:
+    return {
+        "id": s.id,
+        "title": s.title,
+        "section": s.section,
+        "summary": s.summary,
+        "coordinates": list(s.system.coordinates),
+        "parameters": parameters_json(s.system.parameters),
+        "initial": dict(s.initial),
+        "t_end": s.t_end,
+        "panels": list(s.panels),
+    }
+
+
+def warm_all() -> None:
+    """Compute (or load) every scene's derivation: run at start-up and at image build."""
+    for scene_id in SCENES:
+        derivation_document(scene_id)
+
+
+if __name__ == "__main__":
+    warm_all()

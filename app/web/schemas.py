@@ -1,0 +1,45 @@
+"""Pydantic models for the API's documented shapes."""
+
+from __future__ import annotations
+
+from pydantic import BaseModel, ConfigDict
+
+
+class ErrorResponse(BaseModel):
+    detail: str
+
+
+class ParameterInfo(BaseModel):
+    default: float
+    unit: str
+    min: float | None
+    max: float | None
+    description: str
+
+
+class SceneSummary(BaseModel):
+    model_config = ConfigDict(
+        json_schema_extra={
+            "example": {
+                "id": "simple-pendulum",
+                "title": "Simple pendulum",
+                "section": "4.3",
+                "summary": "...",
+                "coordinates": ["theta"],
+                "parameters": {"m": {"default": 1.0, "unit": "kg", "min": 0.01, "max": 100.0, "description": "mass"}},
+                "initial": {"theta": 1.0, "theta_dot": 0.0},
+                "t_end": 10.0,
+                "panels": ["animation-2d"],
+            }
+        }
+    )
+
+    id: str
+    title: str
+    section: str
+    summary: str
+    coordinates: list[str]
+    parameters: dict[str, ParameterInfo]
+    initial: dict[str, float]
+    t_end: float
+    panels: list[str]

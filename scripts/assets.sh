@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Install KaTeX and plotly.js from npm (versions pinned in package-lock.json)
+# and copy the files the pages load into static/vendor.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+if ! command -v npm >/dev/null 2>&1; then
+    apt-get update -qq && apt-get install -y -qq --no-install-recommends nodejs npm >/dev/null
+fi
+npm ci --no-audit --no-fund --loglevel=error >/dev/null
+
+vendor=static/vendor
+rm -rf "$vendor"
+mkdir -p "$vendor/katex/contrib" "$vendor/plotly"
+cp node_modules/katex/dist/katex.min.js node_modules/katex/dist/katex.min.css "$vendor/katex/"
+cp node_modules/katex/dist/contrib/auto-render.min.js "$vendor/katex/contrib/"
+cp -r node_modules/katex/dist/fonts "$vendor/katex/fonts"
+cp node_modules/plotly.js-dist-min/plotly.min.js "$vendor/plotly/"

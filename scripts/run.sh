@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Set up (idempotent) and serve the app on http://127.0.0.1:8000.
+# HOST, PORT and WORKERS may be set in the environment.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+.venv/bin/python -m app.service.derivations   # derive the chapter once, before serving
+exec .venv/bin/uvicorn app.main:app --host "${HOST:-127.0.0.1}" --port "${PORT:-8000}" \
+    --workers "${WORKERS:-1}" --timeout-keep-alive 75

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Set up the app on a fresh machine: a virtual environment with the Python
+# packages, and the front-end libraries (KaTeX, plotly.js) from npm, copied
+# into static/vendor so the app serves them itself (no CDN, works offline).
+# Usage: scripts/setup.sh [dev]   ("dev" adds the test tools)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+python=${PYTHON:-python3}
+if [ ! -x .venv/bin/python ]; then
+    "$python" -m venv .venv
+fi
+.venv/bin/python -m pip install --quiet --upgrade pip
+if [ "${1:-}" = "dev" ]; then
+    .venv/bin/python -m pip install --quiet -e ".[dev]"
+else
+    .venv/bin/python -m pip install --quiet -e .
+fi
+
+scripts/assets.sh

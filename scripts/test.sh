@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Set up (idempotent) and run the whole test suite: lint, then pytest
+# (engine, API, numerics, and the pages in Debian's headless Chromium).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh dev
+if [ ! -x /usr/bin/chromium ]; then
+    apt-get update -qq
+    apt-get install -y -qq --no-install-recommends chromium fonts-liberation >/dev/null
+fi
+.venv/bin/ruff check app tests benchmarks
+.venv/bin/python -m pytest "$@"

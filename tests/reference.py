@@ -1,0 +1,83 @@
+"""An independent route to the equations: sympy.physics.mechanics.
+
+The declaration's strings are read here with ``sympify`` (trusted test input),
+particles become ``Particle`` objects in an inertial frame, and
+``LagrangesMethod`` forms the equations.  Generalized forces Q are added to
+its forcing vector: M q_ddot = f + Q.
+"""
+
+from __future__ import annotations
+
+import random
+
+import sympy as sp
+import sympy.physics.mechanics as me
+
+from app.scenes.types import System
+
+
+def _reader(system: System):
+    names = list(system.coordinates)
+    qs = me.dynamicsymbols(" ".join(names), seq=True)
+    t = me.dynamicsymbols._t
+    plain = {n: sp.Symbol(n, real=True) for n in names}
+    local = {p.name: sp.Symbol(p.name, real=True) for p in system.parameters}
+    local.update(plain)
+    local.update({f"{n}_dot": sp.Symbol(f"{n}_dot", real=True) for n in names})
+    local["t"] = sp.Symbol("t", real=True)
+    to_dyn = {plain[n]: q for n, q in zip(names, qs, strict=True)}
+    to_dyn.update({local[f"{n}_dot"]: q.diff(t) for n, q in zip(names, qs, strict=True)})
+    to_dyn[local["t"]] = t
+
+    def read(text: str) -> sp.Expr:
+        return sp.sympify(text, locals=local).xreplace(to_dyn)
+
+    return qs, read
+
+
+def reference_accelerations(system: System) -> tuple[list[sp.Expr], dict[str, sp.Expr]]:
+    """q_ddot from LagrangesMethod, expressed in the project's plain symbols."""
+    qs, read = _reader(system)
+    N = me.ReferenceFrame("N")
+    origin = me.Point("O")
+    origin.set_vel(N, 0)
+    if system.particles:
+        bodies = []
+        for i, part in enumerate(system.particles):
+            P = origin.locatenew(
+                f"P{i}", sum((read(c) * e for c, e in zip(part.position, (N.x, N.y, N.z), strict=True)), 0 * N.x)
+            )
+            P.set_vel(N, P.pos_from(origin).dt(N))
+            bodies.append(me.Particle(f"B{i}", P, read(part.mass)))
+        L = me.Lagrangian(N, *bodies) - read(system.potential)
+    elif system.kinetic is not None:
+        L = read(system.kinetic) - read(system.potential)
+    else:
+        L = read(system.lagrangian)
+    lm = me.LagrangesMethod(L, qs)
+    lm.form_lagranges_equations()
+    Q = sp.Matrix([read(system.forces.get(n, "0")) for n in system.coordinates])
+    acc = lm.mass_matrix.LUsolve(lm.forcing + Q)
+    t = me.dynamicsymbols._t
+    back = {}
+    for n, q in zip(system.coordinates, qs, strict=True):
+        back[q.diff(t)] = sp.Symbol(f"{n}_dot", real=True)
+    for n, q in zip(system.coordinates, qs, strict=True):
+        back[q] = sp.Symbol(n, real=True)
+    back[t] = sp.Symbol("t", real=True)
+    return [a.subs(back) for a in acc], back
+
+
+def random_point(symbols, seed: int = 7) -> dict[sp.Symbol, sp.Float]:
+    """A generic point (away from the special values 0, 1, pi/2) for numeric comparison."""
+    rng = random.Random(seed)
+    return {s: sp.Float(rng.uniform(0.4, 1.3)) for s in symbols}
+
+
+def numerically_equal(a: sp.Expr, b: sp.Expr, symbols, trials: int = 3, tol: float = 1e-9) -> bool:
+    for seed in range(trials):
+        point = random_point(symbols, seed)
+        va, vb = complex(sp.N(a.xreplace(point))), complex(sp.N(b.xreplace(point)))
+        if abs(va - vb) > tol * max(1.0, abs(va), abs(vb)):
+            return False
+    return True
