@@ -1,28 +1,46 @@
 """Turn expression text into SymPy without ever calling ``eval``.
 
 ``sympify`` and ``parse_expr`` evaluate Python code, so they are never used on
-text.  Instead the text is parsed by Python's ``ast`` module and the tree is
-walked against an allowlist: numbers, declared names, ``+ - * / **``, unary
-minus and plus, parentheses and calls of a fixed set of functions on exactly
-one argument.  Everything else is refused with a message naming the offending
-part.  Size limits are checked before SymPy sees anything.
+text.  The text goes through three gates, each refusing with a message that
+names the offending part and where it starts:
+
+1. characters: ASCII letters, digits, ``_ . + - * / ( ) ,`` and spaces only,
+   and at most ``MAX_LENGTH`` of them (quotes, brackets, colons and the like
+   are the raw material of code, strings, lambdas and f-strings);
+2. structure (pure Python, no SymPy): Python's ``ast`` tree walked against an
+   allowlist of numbers, declared names, ``+ - * / **``, unary signs and calls
+   of a fixed set of one-argument functions; limits on nesting depth, node
+   count, literal size and exponents; constant sub-expressions evaluated in
+   floating point so that ``exp(exp(exp(3)))`` is refused as too large instead
+   of sending SymPy's automatic evaluation into a hang; and an upper bound on
+   the number of terms a full expansion can produce;
+3. construction: the checked tree is built into SymPy, and a result that is
+   undefined or not real (``1/(x - x)``, ``sqrt(-x**2)``) is refused.
+
+``check_expression`` runs gates 1 and 2 only, so a web process can refuse
+hostile text without touching SymPy; ``parse_expression`` runs all three.
 """
 
 from __future__ import annotations
 
 import ast
+import keyword
+import math
 import re
-from collections.abc import Mapping
+from collections.abc import Callable, Collection, Mapping
+from dataclasses import dataclass
 
 import sympy as sp
 
 from app.engine.errors import DerivationError
 
-MAX_LENGTH = 2000
-MAX_DEPTH = 40
-MAX_NODES = 600
-MAX_EXPONENT = 64
-MAX_INT_DIGITS = 15
+MAX_LENGTH = 2000  # characters in one expression
+MAX_DEPTH = 40  # nesting of the expression tree
+MAX_NODES = 600  # parts of the expression tree
+MAX_EXPONENT = 64  # magnitude of a numeric exponent
+MAX_LITERAL = 1e15  # magnitude of a number as written (integers: at most 15 digits)
+MAX_CONSTANT = 1e100  # magnitude of any constant sub-expression, such as 10**20 or exp(50)
+MAX_TERMS = 2000  # terms a full expansion of the expression may produce (an upper bound)
 
 FUNCTIONS: dict[str, type[sp.Function]] = {
     "sin": sp.sin,
@@ -39,123 +57,359 @@ FUNCTIONS: dict[str, type[sp.Function]] = {
     "sqrt": sp.sqrt,
     "Abs": sp.Abs,
 }
+# The same functions in floating point, to bound constant sub-expressions before SymPy sees them.
+_FLOAT_FUNCTIONS: dict[str, Callable[[float], float]] = {
+    "sin": math.sin,
+    "cos": math.cos,
+    "tan": math.tan,
+    "asin": math.asin,
+    "acos": math.acos,
+    "atan": math.atan,
+    "sinh": math.sinh,
+    "cosh": math.cosh,
+    "tanh": math.tanh,
+    "exp": math.exp,
+    "log": math.log,
+    "sqrt": math.sqrt,
+    "Abs": abs,
+}
 CONSTANTS: dict[str, sp.Expr] = {"pi": sp.pi}
-RESERVED = frozenset(FUNCTIONS) | frozenset(CONSTANTS) | {"t", "E", "I", "oo", "nan", "zoo"}
+_FLOAT_CONSTANTS = {"pi": math.pi}
+# Names an output string may contain, or that SymPy reads as something else.
+_SYMPY_NAMES = {"E", "I", "S", "N", "O", "Q", "oo", "nan", "zoo", "sign", "re", "im", "arg"}
+_SYMPY_NAMES |= {"sec", "csc", "cot", "asec", "acsc", "acot", "asinh", "acosh", "atanh", "coth", "sech", "csch"}
+_SYMPY_NAMES |= {"atan2", "Max", "Min", "Piecewise", "Heaviside", "DiracDelta", "Integral", "Derivative", "Subs"}
+_SYMPY_NAMES |= {"Symbol", "Function", "Integer", "Float", "Rational", "Matrix", "floor", "ceiling"}
+RESERVED = frozenset(FUNCTIONS) | frozenset(CONSTANTS) | frozenset(_SYMPY_NAMES) | {"t"} | frozenset(keyword.kwlist)
 NAME_PATTERN = re.compile(r"^[A-Za-z][A-Za-z0-9]{0,15}$")
+# A name ending in "dot" would print like a velocity (SymPy typesets xdot as x with a dot).
+_DOTTED = re.compile(r"d{1,4}ot$")
+ALLOWED_CHARACTERS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.+-*/(), ")
 
-_BINARY = {
-    ast.Add: lambda a, b: a + b,
-    ast.Sub: lambda a, b: a - b,
-    ast.Mult: lambda a, b: a * b,
-    ast.Div: lambda a, b: a / b,
-    ast.Pow: lambda a, b: a**b,
+_OPERATORS = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/", ast.Pow: "**"}
+_REFUSED_OPERATORS = {
+    ast.BitXor: "'^' is not a power here: write x**2",
+    ast.FloorDiv: "'//' is not allowed: write a/b",
+    ast.Mod: "'%' is not allowed",
+    ast.MatMult: "'@' is not allowed",
+}
+_REFUSED_NODES = {
+    ast.Attribute: "attribute access with '.' is not allowed",
+    ast.Subscript: "indexing is not allowed",
+    ast.Lambda: "a lambda is not allowed",
+    ast.JoinedStr: "an f-string is not allowed",
+    ast.Compare: "a comparison is not allowed",
+    ast.BoolOp: "'and'/'or' are not allowed",
+    ast.IfExp: "a conditional expression is not allowed",
+    ast.Tuple: "a comma is only allowed between a function's arguments, and functions take one",
+    ast.Starred: "'*' unpacking is not allowed",
+    ast.NamedExpr: "':=' is not allowed",
+    ast.GeneratorExp: "a generator is not allowed",
 }
 
 
 class ExpressionError(DerivationError):
-    """Text that is not an allowed expression; ``part`` names what was wrong."""
+    """Text that is not an allowed expression.
+
+    ``part`` is the offending piece of the text; ``start`` and ``end`` are its
+    character offsets in the text as given (``None`` when no single piece is at
+    fault, such as a text that is too long).
+    """
+
+    def __init__(self, message: str, part: str = "", start: int | None = None, end: int | None = None):
+        super().__init__(message, part)
+        self.start = start
+        self.end = end
+
+    def __reduce__(self):  # keep part and offsets across a process boundary
+        return (type(self), (str(self), self.part, self.start, self.end))
 
 
 def check_name(name: str, what: str = "name") -> str:
-    """A declared name: letters then letters or digits, not a function or constant."""
+    """A declared name: a letter then up to 15 letters or digits, not a function, constant or keyword."""
     if not isinstance(name, str) or not NAME_PATTERN.match(name):
+        shown = str(name)[:40]
         raise ExpressionError(
-            f"{what} {str(name)[:40]!r} is not allowed: use a letter followed by up to 15 "
-            "letters or digits (no underscores)",
-            str(name)[:40],
+            f"{what} {shown!r} is not allowed: use a letter followed by up to 15 ASCII letters or digits "
+            "(no underscores or spaces)",
+            shown,
         )
     if name in RESERVED:
-        raise ExpressionError(f"{what} {name!r} clashes with a reserved name", name)
+        kind = "a Python keyword" if keyword.iskeyword(name) else "a reserved function or constant name"
+        kind = "time, which every expression may use" if name == "t" else kind
+        raise ExpressionError(f"{what} {name!r} is {kind}; choose another name", name)
+    if _DOTTED.search(name) and name[: _DOTTED.search(name).start()]:
+        raise ExpressionError(f"{what} {name!r} would print like a velocity; choose another name", name)
     return name
 
 
-def _snippet(text: str, node: ast.AST) -> str:
-    part = ast.get_source_segment(text, node) or type(node).__name__
-    return part if len(part) <= 60 else part[:57] + "..."
+@dataclass(frozen=True)
+class _Facts:
+    """What the checker knows about a sub-expression."""
+
+    value: float | None  # its value in floating point when it is a constant
+    terms: int  # an upper bound on the terms of its full expansion (capped)
 
 
-class _Builder:
-    def __init__(self, text: str, names: Mapping[str, sp.Symbol]):
+def _cap(n: int) -> int:
+    return min(n, MAX_TERMS + 1)
+
+
+class _Checker:
+    """Gate 2: the allowlist walk, in pure Python."""
+
+    def __init__(self, text: str, offset: int, names: Collection[str]):
         self.text = text
+        self.offset = offset
         self.names = names
 
     def refuse(self, node: ast.AST, why: str) -> ExpressionError:
-        part = _snippet(self.text, node)
-        return ExpressionError(f"{why}: {part!r}", part)
+        start = getattr(node, "col_offset", 0)
+        end = getattr(node, "end_col_offset", None) or len(self.text)
+        part = self.text[start:end]
+        shown = part if len(part) <= 60 else part[:57] + "..."
+        return ExpressionError(
+            f"{why}: {shown!r} at column {self.offset + start + 1}",
+            shown,
+            self.offset + start,
+            self.offset + end,
+        )
 
-    def build(self, node: ast.AST, depth: int = 0) -> sp.Expr:
+    def check(self, node: ast.AST, depth: int = 0) -> _Facts:
         if depth > MAX_DEPTH:
-            raise self.refuse(node, f"expression nested deeper than {MAX_DEPTH} levels")
-        if isinstance(node, ast.Expression):
-            return self.build(node.body, depth + 1)
+            raise self.refuse(node, f"nested deeper than {MAX_DEPTH} levels")
         if isinstance(node, ast.Constant):
-            return self.number(node)
+            return self.literal(node)
         if isinstance(node, ast.Name):
-            if node.id in self.names:
-                return self.names[node.id]
-            if node.id in CONSTANTS:
-                return CONSTANTS[node.id]
-            allowed = ", ".join(sorted(self.names)) or "none"
-            raise self.refuse(node, f"unknown name (declared names: {allowed})")
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
-            value = self.build(node.operand, depth + 1)
-            return -value if isinstance(node.op, ast.USub) else value
-        if isinstance(node, ast.BinOp) and type(node.op) in _BINARY:
-            left = self.build(node.left, depth + 1)
-            right = self.build(node.right, depth + 1)
-            if isinstance(node.op, ast.Pow):
-                self.check_power(node, right)
-            if isinstance(node.op, ast.Div) and right == 0:
-                raise self.refuse(node, "division by zero")
-            return _BINARY[type(node.op)](left, right)
+            return self.name(node)
+        if isinstance(node, ast.UnaryOp):
+            if not isinstance(node.op, (ast.USub, ast.UAdd)):
+                raise self.refuse(node, "only the signs + and - may stand before a term")
+            inner = self.check(node.operand, depth + 1)
+            value = None if inner.value is None else (-inner.value if isinstance(node.op, ast.USub) else inner.value)
+            return _Facts(value, inner.terms)
+        if isinstance(node, ast.BinOp):
+            return self.binary(node, depth)
         if isinstance(node, ast.Call):
             return self.call(node, depth)
-        raise self.refuse(node, f"{type(node).__name__} is not allowed in an expression")
+        why = _REFUSED_NODES.get(type(node), f"{type(node).__name__} is not allowed in an expression")
+        raise self.refuse(node, why)
 
-    def number(self, node: ast.Constant) -> sp.Expr:
+    def literal(self, node: ast.Constant) -> _Facts:
         value = node.value
+        if isinstance(value, complex):
+            raise self.refuse(node, "imaginary numbers are not allowed")
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise self.refuse(node, "only numbers are allowed as literals")
-        if isinstance(value, int):
-            if len(str(abs(value))) > MAX_INT_DIGITS:
-                raise self.refuse(node, f"integer literal longer than {MAX_INT_DIGITS} digits")
-            return sp.Integer(value)
-        if value != value or value in (float("inf"), float("-inf")) or abs(value) > 1e15:
-            raise self.refuse(node, "number out of range (at most 1e15 in magnitude)")
-        # A decimal literal becomes the exact rational it names, so derivations stay exact.
-        return sp.nsimplify(sp.Float(repr(value)), rational=True)
+        if isinstance(value, int) and abs(value) >= 10**15:
+            raise self.refuse(node, "integer literal longer than 15 digits")
+        if isinstance(value, float) and not (math.isfinite(value) and abs(value) <= MAX_LITERAL):
+            raise self.refuse(node, f"number out of range (at most {MAX_LITERAL:.0e} in magnitude)")
+        return _Facts(float(value), 1)
 
-    def check_power(self, node: ast.BinOp, exponent: sp.Expr) -> None:
-        if not exponent.is_number:
-            raise self.refuse(node, "exponents must be numbers")
+    def name(self, node: ast.Name) -> _Facts:
+        name = node.id
+        if name in self.names:
+            return _Facts(None, 1)
+        if name in _FLOAT_CONSTANTS:
+            return _Facts(_FLOAT_CONSTANTS[name], 1)
+        if name in FUNCTIONS:
+            raise self.refuse(node, f"{name} is a function: write {name}(...)")
+        if name.endswith("_ddot"):
+            raise self.refuse(node, "accelerations never appear in a declaration; the engine derives them")
+        if name.endswith("_dot") and name[:-4] in self.names:
+            raise self.refuse(node, "a velocity is not allowed here (only in T, L and forces)")
+        declared = ", ".join(sorted(self.names)) or "none"
+        raise self.refuse(node, f"unknown name (allowed here: {declared}, pi)")
+
+    def binary(self, node: ast.BinOp, depth: int) -> _Facts:
+        if type(node.op) not in _OPERATORS:
+            why = _REFUSED_OPERATORS.get(type(node.op), "only + - * / ** are allowed")
+            raise self.refuse(node, why)
+        left = self.check(node.left, depth + 1)
+        right = self.check(node.right, depth + 1)
+        op = type(node.op)
+        if op is ast.Pow:
+            return self.power(node, left, right)
+        if op is ast.Div and right.value == 0:
+            raise self.refuse(node, "division by zero")
+        if op in (ast.Add, ast.Sub):
+            terms = left.terms + right.terms
+        else:
+            # a product (or a quotient, whose denominator expands too) multiplies the terms
+            terms = left.terms * right.terms
+        value = None
+        if left.value is not None and right.value is not None:
+            value = self.fold(node, lambda: _ARITHMETIC[op](left.value, right.value))
+        return _Facts(value, _cap(terms))
+
+    def power(self, node: ast.BinOp, base: _Facts, exponent: _Facts) -> _Facts:
         if isinstance(node.right, ast.BinOp) and isinstance(node.right.op, ast.Pow):
             raise self.refuse(node, "towers of exponents are not allowed")
-        if abs(float(exponent)) > MAX_EXPONENT:
+        if exponent.value is None:
+            raise self.refuse(node, "exponents must be numbers (write exp(y*log(x)) for x**y)")
+        n = exponent.value
+        if abs(n) > MAX_EXPONENT:
             raise self.refuse(node, f"exponent larger than {MAX_EXPONENT} in magnitude")
+        if base.value == 0 and n < 0:
+            raise self.refuse(node, "division by zero")
+        # (a_1 + ... + a_k)**n expands into at most C(n + k - 1, n) terms
+        whole = math.ceil(abs(n))
+        terms = math.comb(whole + base.terms - 1, whole) if base.terms > 1 else 1
+        value = None
+        if base.value is not None:
+            value = self.fold(node, lambda: base.value**n)
+        return _Facts(value, _cap(terms))
 
-    def call(self, node: ast.Call, depth: int) -> sp.Expr:
+    def call(self, node: ast.Call, depth: int) -> _Facts:
         if not isinstance(node.func, ast.Name) or node.func.id not in FUNCTIONS:
             allowed = ", ".join(sorted(FUNCTIONS))
-            raise self.refuse(node, f"only these functions may be called: {allowed}")
+            raise self.refuse(node.func, f"only these functions may be called: {allowed}")
         if node.keywords or len(node.args) != 1 or isinstance(node.args[0], ast.Starred):
-            raise self.refuse(node, "a function takes exactly one argument")
-        argument = self.build(node.args[0], depth + 1)
-        return FUNCTIONS[node.func.id](argument)
+            raise self.refuse(node, f"{node.func.id} takes exactly one argument")
+        argument = self.check(node.args[0], depth + 1)
+        value = None
+        if argument.value is not None:
+            function = _FLOAT_FUNCTIONS[node.func.id]
+            value = self.fold(node, lambda: function(argument.value))
+        return _Facts(value, 1)
+
+    def fold(self, node: ast.AST, compute: Callable[[], float]) -> float:
+        """The value of a constant sub-expression, refused when huge or not real."""
+        try:
+            value = compute()
+        except ZeroDivisionError:
+            raise self.refuse(node, "division by zero") from None
+        except OverflowError:
+            raise self.refuse(node, f"this number is too large (at most {MAX_CONSTANT:.0e})") from None
+        except (ValueError, TypeError):
+            raise self.refuse(node, "this number is undefined or not real") from None
+        if isinstance(value, complex):
+            raise self.refuse(node, "this number is not real")
+        if not math.isfinite(value) or abs(value) > MAX_CONSTANT:
+            raise self.refuse(node, f"this number is too large (at most {MAX_CONSTANT:.0e})")
+        return value
+
+
+_ARITHMETIC: dict[type, Callable[[float, float], float]] = {
+    ast.Add: lambda a, b: a + b,
+    ast.Sub: lambda a, b: a - b,
+    ast.Mult: lambda a, b: a * b,
+    ast.Div: lambda a, b: a / b,
+}
+
+
+def _first_bad_character(text: str) -> int | None:
+    for i, ch in enumerate(text):
+        if ch not in ALLOWED_CHARACTERS:
+            return i
+    return None
+
+
+def _character_error(text: str, i: int) -> ExpressionError:
+    ch = text[i]
+    if ch == "^":
+        why = "'^' is not a power here: write x**2"
+    elif ch in "'\"":
+        why = "quotes are not allowed: an expression holds no strings"
+    elif ord(ch) > 127:
+        why = "only ASCII is allowed (write theta, not θ)"
+    else:
+        why = "only letters, digits, spaces, _ . , ( ) and + - * / ** are allowed"
+    return ExpressionError(f"character {ch!r} at column {i + 1} is not allowed: {why}", ch, i, i + 1)
+
+
+def check_expression(text: str, names: Collection[str]) -> ast.Expression:
+    """Gates 1 and 2: refuse anything but an allowed expression, without SymPy.
+
+    ``names`` are the names the expression may use (``pi`` is always allowed).
+    Returns the checked tree (of the text with surrounding spaces removed).
+    """
+    if not isinstance(text, str):
+        raise ExpressionError("an expression must be a string")
+    if len(text) > MAX_LENGTH:
+        raise ExpressionError(f"expression is {len(text)} characters long; at most {MAX_LENGTH} are allowed")
+    # tabs and line breaks count as spaces (one for one, so columns stay right)
+    text = text.translate({9: " ", 10: " ", 13: " "})
+    bad = _first_bad_character(text)
+    if bad is not None:
+        raise _character_error(text, bad)
+    stripped = text.strip()
+    if not stripped:
+        raise ExpressionError("empty expression (write 0 for nothing)")
+    offset = len(text) - len(text.lstrip())
+    try:
+        tree = ast.parse(stripped, mode="eval")
+    except SyntaxError as exc:
+        column = min(max((exc.offset or 1) - 1, 0), len(stripped))
+        first, last = max(column - 10, 0), min(column + 10, len(stripped))
+        near = stripped[first:last]
+        raise ExpressionError(
+            f"syntax error at column {offset + column + 1} ({exc.msg}), near {near!r}",
+            near,
+            offset + first,
+            offset + last,
+        ) from None
+    except (RecursionError, MemoryError, ValueError):
+        raise ExpressionError("expression could not be read (too deeply nested?)") from None
+    count = sum(isinstance(node, ast.expr) for node in ast.walk(tree))
+    if count > MAX_NODES:
+        raise ExpressionError(f"expression has {count} parts; at most {MAX_NODES} are allowed")
+    facts = _Checker(stripped, offset, names).check(tree.body)
+    if facts.terms > MAX_TERMS:
+        raise ExpressionError(
+            f"expression would expand into more than {MAX_TERMS} terms; write it in a smaller form",
+            stripped[:60],
+            offset,
+            offset + len(stripped),
+        )
+    return tree
+
+
+class _Builder:
+    """Gate 3: a checked tree into SymPy."""
+
+    def __init__(self, text: str, offset: int, names: Mapping[str, sp.Symbol]):
+        self.checker = _Checker(text, offset, names)
+        self.names = names
+
+    def build(self, node: ast.AST) -> sp.Expr:
+        if isinstance(node, ast.Constant):
+            # A decimal literal becomes the exact rational it names, so derivations stay exact.
+            value = node.value
+            return sp.Integer(value) if isinstance(value, int) else sp.Rational(repr(value))
+        if isinstance(node, ast.Name):
+            return self.names[node.id] if node.id in self.names else CONSTANTS[node.id]
+        if isinstance(node, ast.UnaryOp):
+            inner = self.build(node.operand)
+            return -inner if isinstance(node.op, ast.USub) else inner
+        if isinstance(node, ast.BinOp):
+            left, right = self.build(node.left), self.build(node.right)
+            if isinstance(node.op, ast.Div) and right == 0:
+                raise self.checker.refuse(node.right, "division by zero (this denominator is 0)")
+            op = type(node.op)
+            if op is ast.Add:
+                return left + right
+            if op is ast.Sub:
+                return left - right
+            if op is ast.Mult:
+                return left * right
+            if op is ast.Div:
+                return left / right
+            return left**right
+        assert isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
+        return FUNCTIONS[node.func.id](self.build(node.args[0]))
 
 
 def parse_expression(text: str, names: Mapping[str, sp.Symbol]) -> sp.Expr:
     """Parse ``text`` into a SymPy expression over the symbols in ``names``."""
-    if not isinstance(text, str):
-        raise ExpressionError("an expression must be a string")
-    if len(text) > MAX_LENGTH:
-        raise ExpressionError(f"expression longer than {MAX_LENGTH} characters", text[:40] + "...")
-    if not text.strip():
-        raise ExpressionError("empty expression")
-    try:
-        tree = ast.parse(text.strip(), mode="eval")
-    except SyntaxError as exc:
-        raise ExpressionError(f"syntax error at column {exc.offset}: {exc.msg}", text[:60]) from None
-    count = sum(1 for _ in ast.walk(tree))
-    if count > MAX_NODES:
-        raise ExpressionError(f"expression has {count} parts; at most {MAX_NODES} are allowed")
-    return _Builder(text.strip(), names).build(tree)
+    tree = check_expression(text, names)
+    spaced = text.translate({9: " ", 10: " ", 13: " "})
+    stripped = spaced.strip()
+    offset = len(spaced) - len(spaced.lstrip())
+    expr = _Builder(stripped, offset, names).build(tree.body)
+    if expr.has(sp.zoo, sp.oo, sp.nan, -sp.oo):
+        raise ExpressionError(f"the expression is undefined (a division by zero?): {stripped[:60]!r}", stripped[:60])
+    if expr.has(sp.I):
+        raise ExpressionError(f"the expression is not real: {stripped[:60]!r}", stripped[:60])
+    return expr
