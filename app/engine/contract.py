@@ -4,10 +4,13 @@ from __future__ import annotations
 
 from typing import Any
 
+from app.engine.constraints import ConstraintForce, constraint_forces
 from app.engine.derive import Derivation
-from app.engine.report import Printer, build_steps
+from app.engine.report import Printer, build_steps, constraint_steps, new_lagrangian, transform_steps
 from app.engine.report import display as _show
-from app.scenes.types import Parameter
+from app.engine.transform import Transformed, transform
+from app.scenes import SCENES
+from app.scenes.types import Parameter, Scene
 
 
 def parameters_json(parameters: tuple[Parameter, ...]) -> dict[str, dict[str, Any]]:
@@ -18,10 +21,22 @@ def parameters_json(parameters: tuple[Parameter, ...]) -> dict[str, dict[str, An
     }
 
 
-def derivation_json(d: Derivation) -> dict[str, Any]:
-    """Everything derived, with each expression as a sympy string and LaTeX."""
+def registered_scene(d: Derivation) -> Scene | None:
+    """The chapter scene whose declaration this derivation came from, if any."""
+    return next((s for s in SCENES.values() if s.system is d.system), None)
+
+
+def derivation_json(d: Derivation, scene: Scene | None = None) -> dict[str, Any]:
+    """Everything derived, with each expression as a sympy string and LaTeX.
+
+    ``scene`` (by default the registered scene that declares ``d.system``)
+    adds the scene block and the chapter's errata.
+    """
     table, eqs, en, red = d.table, d.equations, d.energetics, d.reduction
     pr = Printer(table.latex_names())
+    scene = scene or registered_scene(d)
+    forces = constraint_forces(d)
+    transformed = transform(d.system)
     result: dict[str, Any] = {
         "coordinates": list(table.names),
         "parameters": parameters_json(d.system.parameters),
@@ -49,7 +64,13 @@ def derivation_json(d: Derivation) -> dict[str, Any]:
         "hamiltonian_energy_reason": en.reason,
         "energy_minus_hamiltonian": pr.pair(en.energy_minus_h),
         "effective_potential": None,
-        "steps": build_steps(d),
+        "steps": build_steps(d) + constraint_steps(forces, pr) + (transform_steps(transformed) if transformed else []),
+        "scene": scene_json(scene) if scene is not None else None,
+        "errata": [{"chapter": e.chapter, "correct": e.correct, "reason": e.reason} for e in scene.errata]
+        if scene
+        else [],
+        "constraint_forces": [constraint_force_json(f, pr) for f in forces],
+        "transformed": transformed_json(transformed) if transformed is not None else None,
     }
     if red is not None:
         result["effective_potential"] = {
@@ -65,3 +86,72 @@ def derivation_json(d: Derivation) -> dict[str, Any]:
             ],
         }
     return result
+
+
+def scene_json(scene: Scene) -> dict[str, Any]:
+    """What the page says about the scene: statement, figure, panels and defaults."""
+    return {
+        "title": scene.title,
+        "section": scene.section,
+        "summary": scene.summary,
+        "statement": scene.statement,
+        "figure": scene.figure,
+        "panels": list(scene.panels),
+        "initial": dict(scene.initial),
+        "t_end": scene.t_end,
+    }
+
+
+def constraint_force_json(f: ConstraintForce, pr: Printer) -> dict[str, Any]:
+    """One force of constraint: a function of q, q_dot, t and parameters, with its sign convention."""
+    return {
+        "name": f.constraint.name,
+        **pr.pair(f.force),
+        "convention": f.constraint.convention,
+        "slack_when_negative": f.constraint.slack_when_negative,
+        "constraint": pr.pair(f.g),
+        "particle": f.constraint.on,
+    }
+
+
+def transformed_json(tr: Transformed) -> dict[str, Any]:
+    """The derivation again in the declared new coordinates."""
+    d = tr.derivation
+    old = Printer(tr.original.latex_names())
+    pr = Printer(d.table.latex_names())
+    names = d.table.names
+    red = d.reduction
+    return {
+        "coordinates": list(names),
+        "definitions": {name: old.pair(f) for name, f in zip(names, tr.definitions, strict=True)},
+        "inverse": {q.name: pr.pair(e) for q, e in tr.inverse.items()},
+        "lagrangian": pr.pair(new_lagrangian(tr)),
+        "accelerations": {n: pr.pair(_show(a)) for n, a in zip(names, d.equations.accelerations, strict=True)},
+        "momenta": {n: pr.pair(_show(p)) for n, p in zip(names, d.equations.momenta, strict=True)},
+        "mass_matrix": [[pr.pair(_show(x)) for x in row] for row in d.equations.mass_matrix.tolist()],
+        "inertia": {n: pr.pair(m) for n, m in zip(names, tr.inertia, strict=True)},
+        "reduced_mass": pr.pair(tr.reduced_mass) if tr.reduced_mass is not None else None,
+        "cyclic": list(d.energetics.cyclic),
+        "conserved": [
+            {
+                "name": c.name,
+                "latex_name": c.latex_name,
+                **pr.pair(_show(c.expr)),
+                "original": old.pair(_show(tr.to_original(c.expr))),
+                "reason": c.reason,
+            }
+            for c in d.energetics.conserved
+        ],
+        "effective_potential": None
+        if red is None
+        else {
+            "coordinate": red.coordinate,
+            "momenta": [s.name for s in red.momenta],
+            "potential": pr.pair(red.effective_potential),
+            "mass": pr.pair(red.effective_mass),
+            "equilibria": [
+                {"position": pr.pair(e.position), "omega_squared": pr.pair(e.omega_squared), "stable": e.stable}
+                for e in red.equilibria
+            ],
+        },
+    }

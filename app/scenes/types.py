@@ -35,6 +35,45 @@ class Particle:
 
 
 @dataclass(frozen=True)
+class Constraint:
+    """A holonomic constraint g = 0 in Cartesian form, whose force the engine derives.
+
+    ``expression`` is g written in the particles' Cartesian coordinates (``x, y, z``
+    for a single particle; ``x1, y1, z1, x2, ...`` for several), parameters and
+    ``t``.  By Lagrange's method the constraint pushes particle i with the force
+    lambda * grad_i g.  The engine reports, for the particle numbered ``on``
+    (from 1), the signed size of that force along grad_i g: positive when the
+    force points the way g increases, whatever the normalisation of g.
+    ``convention`` says in words what positive means; ``slack_when_negative``
+    marks one-sided constraints (a string, a surface one rests on) that cannot
+    pull, so a negative value means the constraint has gone slack.
+    """
+
+    name: str
+    expression: str
+    convention: str
+    on: int = 1
+    slack_when_negative: bool = False
+
+
+@dataclass(frozen=True)
+class CoordinateChange:
+    """New generalized coordinates defined as expressions of the old ones.
+
+    ``definitions`` gives each new coordinate (in the order of ``coordinates``)
+    as a function of the old coordinates, parameters and ``t``; the engine
+    inverts the map, substitutes it into the declaration and derives again.
+    ``relative`` optionally names the new coordinate whose inertia is a reduced
+    mass (the relative coordinate of a two-body problem).
+    """
+
+    coordinates: tuple[str, ...]
+    definitions: tuple[str, ...]
+    explanation: str = ""
+    relative: str | None = None
+
+
+@dataclass(frozen=True)
 class System:
     """The mechanics of a system, in exactly one of three forms.
 
@@ -45,6 +84,13 @@ class System:
     ``forces`` maps a coordinate to its generalized non-conservative force Q_k,
     so that the equations read d/dt dL/dq_dot - dL/dq = Q.  ``nonnegative``
     names coordinates that are distances (a radius never goes below zero).
+
+    Optional Cartesian extras: ``constraints`` (holonomic constraints whose
+    forces the engine derives by Lagrange multipliers) with
+    ``cartesian_potential``, the same U written in the particles' Cartesian
+    coordinates (needed for the force's component along each constraint);
+    ``coordinate_change``, a second set of coordinates in which the engine
+    derives the motion again.
     """
 
     coordinates: tuple[str, ...]
@@ -55,6 +101,24 @@ class System:
     lagrangian: str | None = None
     forces: dict[str, str] = field(default_factory=dict)
     nonnegative: tuple[str, ...] = ()
+    constraints: tuple[Constraint, ...] = ()
+    cartesian_potential: str | None = None
+    coordinate_change: CoordinateChange | None = None
+
+
+@dataclass(frozen=True)
+class Erratum:
+    """A formula the chapter gets wrong, the correct one, and why.
+
+    ``correct`` reads ``lhs = rhs`` with ``rhs`` in the project's symbol
+    convention; ``check`` names the engine result it must equal (the tests
+    compare the two), for example ``acceleration:theta``.
+    """
+
+    chapter: str
+    correct: str
+    reason: str
+    check: str
 
 
 @dataclass(frozen=True)
@@ -71,4 +135,4 @@ class Scene:
     initial: dict[str, float] = field(default_factory=dict)
     t_end: float = 10.0
     panels: tuple[str, ...] = ()
-    errata: tuple[dict[str, str], ...] = ()
+    errata: tuple[Erratum, ...] = ()
