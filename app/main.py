@@ -10,6 +10,7 @@ from fastapi import FastAPI
 
 from app.service.derivations import warm_all
 from app.web import api_scenes, errors
+from app.web.api_user import router as user_router
 
 
 @asynccontextmanager
@@ -28,7 +29,7 @@ app = FastAPI(
 )
 errors.install(app)
 
-ROUTERS = [api_scenes.router]
+ROUTERS = [api_scenes.router, user_router]
 for router in ROUTERS:
     app.include_router(router)
 

@@ -1,0 +1,349 @@
+"""Systems users type in: check, derive and simulate them inside the worker pool.
+
+A request arrives as plain data (the web layer validated its shape):
+
+    {"coordinates": [...], "parameters": [{"name", "value", "unit", "min", "max"}, ...],
+     "lagrangian": ... | "kinetic": ..., "potential": ... | "particles": [...], "potential": ...,
+     "forces": {coordinate: Q}, "nonnegative": [...]}
+
+``check_system`` refuses bad names and bad expressions in pure Python (no
+SymPy), each refusal carrying the location of the offending field
+(``["particles", 0, "position", 1]``) and the character span of the offending
+part.  The jobs ``derive_job`` and ``simulate_job`` run in a worker process:
+they check again, build every expression in SymPy, derive the system with the
+engine and return the JSON document as bytes.  The event loop only checks,
+looks up caches and awaits.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import logging
+import math
+import os
+import threading
+from collections import OrderedDict
+from collections.abc import Callable, Iterator
+from typing import Any
+
+from app.engine.contract import derivation_json
+from app.engine.derive import Derivation, derive
+from app.engine.errors import DerivationError
+from app.engine.parse import ExpressionError, check_expression, check_name, parse_expression
+from app.engine.symbols import SymbolTable
+from app.scenes.types import Parameter, Particle, System
+from app.service import fairness as fair
+from app.service import worker
+
+MAX_COORDINATES = 6
+MAX_PARAMETERS = 24
+MAX_PARTICLES = 8
+DERIVE_SECONDS = float(os.environ.get("LAGRANGE_DERIVE_SECONDS", "30"))
+SIMULATE_SECONDS = float(os.environ.get("LAGRANGE_SIMULATE_SECONDS", "30"))
+
+log = logging.getLogger(__name__)
+
+
+class InvalidSystem(DerivationError):
+    """A user system refused; ``loc`` is the path of the offending field in the request."""
+
+    def __init__(self, message: str, loc: tuple = (), part: str = "", start: int | None = None, end: int | None = None):
+        super().__init__(message, part)
+        self.loc = tuple(loc)
+        self.start = start
+        self.end = end
+
+    def __reduce__(self):
+        return (type(self), (str(self), self.loc, self.part, self.start, self.end))
+
+    def as_json(self) -> dict[str, Any]:
+        return {
+            "detail": str(self)[:500],
+            "part": self.part[:80],
+            "loc": ["body", *(str(x) for x in self.loc)],
+            "start": self.start,
+            "end": self.end,
+        }
+
+
+def _where(loc: tuple) -> str:
+    head, *rest = loc
+    text = str(head)
+    for x in rest:
+        text += f"[{x}]" if isinstance(x, int) else f".{x}"
+    return text
+
+
+def _refuse(loc: tuple, exc: ExpressionError) -> InvalidSystem:
+    return InvalidSystem(f"{_where(loc)}: {exc}", loc, exc.part, getattr(exc, "start", None), getattr(exc, "end", None))
+
+
+def form_of(spec: dict[str, Any]) -> str:
+    """Which of the three forms the system is given in (the field a derivation error points at)."""
+    if spec.get("particles"):
+        return "particles"
+    return "lagrangian" if spec.get("lagrangian") is not None else "kinetic"
+
+
+def expressions(spec: dict[str, Any]) -> Iterator[tuple[tuple, str, bool]]:
+    """Every expression of a system: (location, text, whether velocities may appear)."""
+    for i, particle in enumerate(spec.get("particles") or ()):
+        yield ("particles", i, "mass"), particle["mass"], False
+        for j, component in enumerate(particle["position"]):
+            yield ("particles", i, "position", j), component, False
+    for key, velocities in (("lagrangian", True), ("kinetic", True), ("potential", False)):
+        if spec.get(key) is not None:
+            yield (key,), spec[key], velocities
+    for name, text in (spec.get("forces") or {}).items():
+        yield ("forces", name), text, True
+
+
+def _names(spec: dict[str, Any]) -> tuple[list[str], list[str]]:
+    coordinates = list(spec.get("coordinates") or ())
+    parameters = [p["name"] for p in spec.get("parameters") or ()]
+    return coordinates, parameters
+
+
+def check_system(spec: dict[str, Any]) -> None:
+    """Refuse a system whose names or expressions are not allowed (pure Python, no SymPy)."""
+    coordinates, parameters = _names(spec)
+    if not 1 <= len(coordinates) <= MAX_COORDINATES:
+        raise InvalidSystem(f"give between 1 and {MAX_COORDINATES} coordinates", ("coordinates",))
+    if len(parameters) > MAX_PARAMETERS:
+        raise InvalidSystem(f"at most {MAX_PARAMETERS} parameters are allowed", ("parameters",))
+    if len(spec.get("particles") or ()) > MAX_PARTICLES:
+        raise InvalidSystem(f"at most {MAX_PARTICLES} particles are allowed", ("particles",))
+    seen: set[str] = set()
+    named = [(("coordinates", i), n, "coordinate") for i, n in enumerate(coordinates)]
+    named += [(("parameters", i, "name"), n, "parameter") for i, n in enumerate(parameters)]
+    for loc, name, what in named:
+        try:
+            check_name(name, what)
+        except ExpressionError as exc:
+            raise _refuse(loc, exc) from None
+        if name in seen:
+            raise InvalidSystem(f"{_where(loc)}: the name {name!r} is declared twice", loc, name)
+        seen.add(name)
+    for i, p in enumerate(spec.get("parameters") or ()):
+        low, high, value = p.get("min"), p.get("max"), p.get("value", 1.0)
+        if (low is not None and value < low) or (high is not None and value > high):
+            loc = ("parameters", i, "value")
+            raise InvalidSystem(f"{_where(loc)}: {value:g} is outside the allowed range [{low}, {high}]", loc)
+
+    forms = [bool(spec.get("particles")), spec.get("kinetic") is not None, spec.get("lagrangian") is not None]
+    if sum(forms) != 1:
+        raise InvalidSystem(
+            "give exactly one of: particles (with a potential), kinetic and potential, or lagrangian", ()
+        )
+    if spec.get("lagrangian") is not None and spec.get("potential") is not None:
+        raise InvalidSystem("potential: a Lagrangian already contains the potential; give L alone", ("potential",))
+    if spec.get("lagrangian") is None and spec.get("potential") is None:
+        raise InvalidSystem(
+            "potential: a potential U is needed with particles or with T (write 0 if none)", ("potential",)
+        )
+    for name in spec.get("forces") or {}:
+        if name not in coordinates:
+            raise InvalidSystem(f"forces: {name[:40]!r} is not a coordinate", ("forces", name), name[:40])
+    for i, name in enumerate(spec.get("nonnegative") or ()):
+        if name not in coordinates:
+            raise InvalidSystem(f"nonnegative[{i}]: {name[:40]!r} is not a coordinate", ("nonnegative", i), name[:40])
+
+    base = set(coordinates) | set(parameters) | {"t"}
+    with_velocities = base | {f"{q}_dot" for q in coordinates}
+    for loc, text, velocities in expressions(spec):
+        try:
+            check_expression(text, with_velocities if velocities else base)
+        except ExpressionError as exc:
+            raise _refuse(loc, exc) from None
+
+
+def to_system(spec: dict[str, Any]) -> System:
+    """The engine's declaration of a checked request."""
+    particles = []
+    for p in spec.get("particles") or ():
+        position = tuple(p["position"]) + ("0",) * (3 - len(p["position"]))
+        particles.append(Particle(p["mass"], position, p.get("label") or ""))
+    return System(
+        coordinates=tuple(spec["coordinates"]),
+        parameters=tuple(
+            Parameter(p["name"], float(p.get("value", 1.0)), p.get("unit") or "", p.get("min"), p.get("max"))
+            for p in spec.get("parameters") or ()
+        ),
+        particles=tuple(particles),
+        kinetic=spec.get("kinetic"),
+        potential=spec.get("potential"),
+        lagrangian=spec.get("lagrangian"),
+        forces=dict(spec.get("forces") or {}),
+        nonnegative=tuple(spec.get("nonnegative") or ()),
+    )
+
+
+# ---- in the worker --------------------------------------------------------------------------
+
+
+def build_system(spec: dict[str, Any]) -> System:
+    """Check a request and build each expression in SymPy (gate 3), locating any refusal."""
+    check_system(spec)
+    coordinates, parameters = _names(spec)
+    namespace = SymbolTable(tuple(coordinates), tuple(parameters)).namespace()
+    positional = {k: v for k, v in namespace.items() if not k.endswith("_dot")}
+    for loc, text, velocities in expressions(spec):
+        try:
+            parse_expression(text, namespace if velocities else positional)
+        except ExpressionError as exc:
+            raise _refuse(loc, exc) from None
+    return to_system(spec)
+
+
+_derivations: OrderedDict[str, Derivation] = OrderedDict()
+
+
+def _derive(spec: dict[str, Any]) -> Derivation:
+    """Derive a checked system (a small cache per worker: simulating after deriving is common)."""
+    key = spec_key(spec)
+    if key in _derivations:
+        _derivations.move_to_end(key)
+        return _derivations[key]
+    system = build_system(spec)
+    try:
+        d = derive(system)
+    except InvalidSystem:
+        raise
+    except DerivationError as exc:
+        where = form_of(spec)
+        raise InvalidSystem(f"{where}: {exc}", (where,), exc.part) from None
+    _derivations[key] = d
+    while len(_derivations) > 8:
+        _derivations.popitem(last=False)
+    return d
+
+
+def _dumps(document: Any) -> bytes:
+    try:
+        return json.dumps(document, allow_nan=False, separators=(",", ":")).encode()
+    except ValueError:  # a non-finite number: JSON has none, so it becomes null
+        return json.dumps(_finite(document), allow_nan=False, separators=(",", ":")).encode()
+
+
+def _finite(value: Any) -> Any:
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_finite(v) for v in value]
+    return value
+
+
+def _guarded(job: Callable[[], Any]) -> bytes:
+    """Run a job; an engine failure on user input is a refusal, never a server error."""
+    try:
+        return _dumps(job())
+    except (InvalidSystem, MemoryError, RecursionError):
+        raise
+    except DerivationError as exc:
+        raise InvalidSystem(str(exc), (), exc.part) from None
+    except Exception as exc:  # a SymPy or numerics failure on an odd but allowed input
+        log.exception("user system failed")
+        raise InvalidSystem(
+            f"the engine could not handle this system ({type(exc).__name__}: {str(exc)[:200]})"
+        ) from None
+
+
+def derive_job(spec: dict[str, Any]) -> bytes:
+    """Worker job: the derivation JSON of a user system (as for a scene)."""
+    return _guarded(lambda: derivation_json(_derive(spec)))
+
+
+def simulate_job(spec: dict[str, Any], request: Any) -> bytes:
+    """Worker job: the simulation JSON of a user system (as for a scene)."""
+    from app.service.simulation import simulate_derivation
+
+    return _guarded(lambda: simulate_derivation(_derive(spec), request))
+
+
+# ---- in the web process ---------------------------------------------------------------------
+
+
+def spec_key(spec: dict[str, Any], *extra: Any) -> str:
+    text = json.dumps([spec, *extra], sort_keys=True, separators=(",", ":"), default=str)
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+class ResultCache:
+    """A small LRU of finished documents (bytes), bounded in entries and in total size."""
+
+    def __init__(self, entries: int = 256, total_bytes: int = 64 * 2**20):
+        self.entries = entries
+        self.total_bytes = total_bytes
+        self._items: OrderedDict[str, bytes] = OrderedDict()
+        self._size = 0
+        self._lock = threading.Lock()
+
+    def get(self, key: str) -> bytes | None:
+        with self._lock:
+            value = self._items.get(key)
+            if value is not None:
+                self._items.move_to_end(key)
+            return value
+
+    def put(self, key: str, value: bytes) -> None:
+        with self._lock:
+            if key in self._items or len(value) > self.total_bytes // 4:
+                return
+            self._items[key] = value
+            self._size += len(value)
+            while len(self._items) > self.entries or self._size > self.total_bytes:
+                _, dropped = self._items.popitem(last=False)
+                self._size -= len(dropped)
+
+
+class UserSystems:
+    """Derive and simulate user systems: caches, fairness, then the worker pool."""
+
+    def __init__(self, pool: worker.WorkerPool | None = None, gate: fair.Fairness | None = None):
+        self._pool = pool
+        self._gate = gate
+        self.derivations = ResultCache()
+        self.simulations = ResultCache(entries=64)
+
+    @property
+    def pool(self) -> worker.WorkerPool:
+        if self._pool is None:
+            self._pool = worker.pool()
+        return self._pool
+
+    @property
+    def gate(self) -> fair.Fairness:
+        if self._gate is None:
+            self._gate = fair.Fairness(capacity=4 * self.pool.workers, workers=self.pool.workers)
+        return self._gate
+
+    async def _run(self, cache: ResultCache, key: str, client: str, address: str, timeout: float, job, *args) -> bytes:
+        cached = cache.get(key)
+        if cached is not None:
+            return cached
+        ticket = self.gate.admit(client, address)
+        try:
+            future = self.pool.submit(job, *args, timeout=timeout)
+        except BaseException:
+            ticket.release()
+            raise
+        # the slot is freed when the job really ends, even if the client goes away first
+        future.add_done_callback(lambda _: ticket.release())
+        result = await self.pool.run_async(future, timeout)
+        cache.put(key, result)
+        return result
+
+    async def derive(self, spec: dict[str, Any], client: str, address: str) -> bytes:
+        check_system(spec)
+        return await self._run(self.derivations, spec_key(spec), client, address, DERIVE_SECONDS, derive_job, spec)
+
+    async def simulate(self, spec: dict[str, Any], request: Any, client: str, address: str) -> bytes:
+        check_system(spec)
+        key = spec_key(spec, request.model_dump(mode="json"))
+        return await self._run(self.simulations, key, client, address, SIMULATE_SECONDS, simulate_job, spec, request)
+
+
+service = UserSystems()

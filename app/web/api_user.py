@@ -1,0 +1,155 @@
+"""POST /api/derive and POST /api/simulate: systems users type in.
+
+The routes are ``async`` but never run SymPy: they check the request's shape
+and names in pure Python, look up a cache, take a fair-share ticket and await
+a job in the worker pool (app/service/worker.py), which parses, derives and
+simulates under a hard time limit and a memory cap.  Bodies are capped in
+size before they are read.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Coroutine
+from typing import Annotated, Any
+
+from fastapi import APIRouter, Body, HTTPException, Request
+from fastapi.responses import JSONResponse, Response
+from fastapi.routing import APIRoute
+
+from app.service import user_systems
+from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
+from app.service.user_systems import InvalidSystem
+from app.service.worker import JobFailed
+from app.web.examples_user import DERIVE_EXAMPLES, DERIVE_RESPONSE, ERROR_EXAMPLES
+from app.web.schemas import ErrorResponse
+from app.web.schemas_user import BusyError, DerivationDocument, SystemSpec, UserError
+
+MAX_BODY_BYTES = 32 * 1024
+
+
+def too_large(size: int | None) -> HTTPException:
+    told = f"{size} bytes" if size is not None else "larger than that"
+    return HTTPException(413, f"the request body is {told}; at most {MAX_BODY_BYTES} bytes are allowed")
+
+
+class CappedBodyRoute(APIRoute):
+    """A route that refuses bodies over MAX_BODY_BYTES before reading them whole (413)."""
+
+    def get_route_handler(self) -> Callable[[Request], Coroutine[Any, Any, Response]]:
+        handler = super().get_route_handler()
+
+        async def capped(request: Request) -> Response:
+            declared = request.headers.get("content-length")
+            if declared is not None:
+                if not declared.isdigit():
+                    raise HTTPException(400, "the Content-Length header is not a number")
+                if int(declared) > MAX_BODY_BYTES:
+                    raise too_large(int(declared))
+            receive, seen = request.receive, 0
+
+            async def limited() -> dict[str, Any]:
+                # a chunked body declares no length: count it as it streams in
+                nonlocal seen
+                message = await receive()
+                if message["type"] == "http.request":
+                    seen += len(message.get("body", b""))
+                    if seen > MAX_BODY_BYTES:
+                        raise too_large(None)
+                return message
+
+            return await handler(Request(request.scope, limited))
+
+        return capped
+
+
+router = APIRouter(prefix="/api", tags=["your systems"], route_class=CappedBodyRoute)
+
+BUSY_HEADERS = {"Retry-After": {"description": "Seconds to wait before retrying.", "schema": {"type": "integer"}}}
+
+
+def _errors(*statuses: int) -> dict[int | str, dict[str, Any]]:
+    """The documented error responses, each with its model and examples."""
+    described = {
+        400: (ErrorResponse, "The body could not be read (not UTF-8, or a number JSON cannot hold)."),
+        413: (ErrorResponse, f"The body is larger than {MAX_BODY_BYTES} bytes."),
+        422: (
+            UserError,
+            "The system was refused: a bad shape, name or expression (located by `loc`, `part`, "
+            "`start`/`end`), a singular mass matrix, NaN or Infinity, or work beyond the time or memory limit.",
+        ),
+        429: (BusyError, "You already have a derivation or simulation running (one at a time per session)."),
+        503: (BusyError, "The server is busy with other users' systems."),
+    }
+    responses: dict[int | str, dict[str, Any]] = {}
+    for status in statuses:
+        model, text = described[status]
+        examples = {
+            name: {"summary": e["summary"], "value": e["response"]} for name, e in ERROR_EXAMPLES[status].items()
+        }
+        entry: dict[str, Any] = {
+            "model": model,
+            "description": text,
+            "content": {"application/json": {"examples": examples}},
+        }
+        if status in (429, 503):
+            entry["headers"] = BUSY_HEADERS
+        responses[status] = entry
+    return responses
+
+
+def _address(request: Request) -> str:
+    return request.client.host if request.client else "unknown"
+
+
+async def _answer(request: Request, work: Callable[[str, str], Coroutine[Any, Any, bytes]]) -> Response:
+    """Identify the client, run the work, and turn refusals into their documented responses."""
+    service = user_systems.service
+    address = _address(request)
+    session = service.gate.verify(request.cookies.get(COOKIE))
+    minted = None if session else service.gate.mint(address)
+    client = f"session:{session}" if session else f"address:{address}"
+    response: Response
+    try:
+        body = await work(client, address)
+    except InvalidSystem as exc:
+        response = JSONResponse(exc.as_json(), status_code=422)
+    except Busy as exc:
+        response = JSONResponse(
+            {"detail": str(exc), "retry_after": exc.retry_after},
+            status_code=exc.status,
+            headers={"Retry-After": str(exc.retry_after)},
+        )
+    except JobFailed as exc:
+        if exc.kind == "unavailable":
+            response = JSONResponse(
+                {"detail": str(exc), "retry_after": 1}, status_code=503, headers={"Retry-After": "1"}
+            )
+        else:
+            response = JSONResponse({"detail": str(exc), "kind": exc.kind}, status_code=422)
+    else:
+        response = Response(body, media_type="application/json")
+    if minted:
+        response.set_cookie(COOKIE, minted, max_age=COOKIE_MAX_AGE, httponly=True, samesite="lax")
+    return response
+
+
+@router.post(
+    "/derive",
+    summary="Derive a system you declare",
+    description=(
+        "Give generalized coordinates, parameters and the mechanics in one form (particles with a potential, "
+        "T and U, or L), optionally generalized forces. The answer is the same derivation JSON as a scene's: "
+        "symbol convention q, q_dot, q_ddot, t and parameters by name. Expressions are parsed by an allowlist "
+        "(never evaluated as code); the derivation runs in a worker process with a time and memory limit."
+    ),
+    response_model=DerivationDocument,
+    responses={
+        200: {"content": {"application/json": {"example": DERIVE_RESPONSE}}},
+        **_errors(400, 413, 422, 429, 503),
+    },
+)
+async def derive_system(
+    request: Request, system: Annotated[SystemSpec, Body(openapi_examples=DERIVE_EXAMPLES)]
+) -> Response:
+    spec = system.to_spec()
+    return await _answer(request, lambda client, address: user_systems.service.derive(spec, client, address))

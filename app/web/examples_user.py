@@ -1,0 +1,173 @@
+"""Documented examples of the user-system API, requests and the answers they really get.
+
+The answers live in ``examples/user_api.json``, written by running the API on
+the requests below (``python -m app.web.examples_user``); a test checks that
+the file still matches what the API answers.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+EXAMPLES_FILE = Path(__file__).with_name("examples") / "user_api.json"
+
+DOUBLE_PENDULUM = {
+    "coordinates": ["theta1", "theta2"],
+    "parameters": [
+        {"name": "m1", "value": 1.0, "unit": "kg", "min": 0.01},
+        {"name": "m2", "value": 1.0, "unit": "kg", "min": 0.01},
+        {"name": "l1", "value": 1.0, "unit": "m", "min": 0.01},
+        {"name": "l2", "value": 1.0, "unit": "m", "min": 0.01},
+        {"name": "g", "value": 9.81, "unit": "m/s^2", "min": 0.0},
+    ],
+    "particles": [
+        {"mass": "m1", "position": ["l1*sin(theta1)", "-l1*cos(theta1)"]},
+        {"mass": "m2", "position": ["l1*sin(theta1) + l2*sin(theta2)", "-l1*cos(theta1) - l2*cos(theta2)"]},
+    ],
+    "potential": "-(m1 + m2)*g*l1*cos(theta1) - m2*g*l2*cos(theta2)",
+}
+FORCED_SPRING = {
+    "coordinates": ["x"],
+    "parameters": [
+        {"name": "m", "value": 1.0, "unit": "kg", "min": 0.01},
+        {"name": "k", "value": 4.0, "unit": "N/m", "min": 0.0},
+        {"name": "b", "value": 0.1, "unit": "kg/s", "min": 0.0},
+        {"name": "F", "value": 0.5, "unit": "N"},
+        {"name": "w", "value": 1.5, "unit": "1/s"},
+    ],
+    "kinetic": "m*x_dot**2/2",
+    "potential": "k*x**2/2",
+    "forces": {"x": "F*cos(w*t) - b*x_dot"},
+}
+SPINNING_HOOP = {
+    "coordinates": ["theta"],
+    "parameters": ["m", "R", "g", "w"],
+    "lagrangian": "m*R**2*(theta_dot**2 + w**2*sin(theta)**2)/2 + m*g*R*cos(theta)",
+}
+
+DERIVE_EXAMPLES: dict[str, dict[str, Any]] = {
+    "forced-spring": {
+        "summary": "A spring-mass with damping and a periodic force (T, U and Q)",
+        "value": FORCED_SPRING,
+    },
+    "double-pendulum": {"summary": "A double pendulum given by its particles and U", "value": DOUBLE_PENDULUM},
+    "spinning-hoop": {"summary": "A bead on a spinning hoop given by L alone", "value": SPINNING_HOOP},
+}
+
+# Requests whose refusals are documented (their answers are in the examples file).
+REFUSED_REQUESTS: dict[str, dict[str, Any]] = {
+    "code": {
+        "summary": "Code instead of an expression",
+        "value": {"coordinates": ["x"], "lagrangian": "__import__('os').system('ls')"},
+    },
+    "attribute": {
+        "summary": "Attribute access",
+        "value": {"coordinates": ["x"], "lagrangian": "x_dot**2/2 + sin.__globals__"},
+    },
+    "unknown-name": {
+        "summary": "A name that was not declared",
+        "value": {"coordinates": ["x"], "parameters": ["k"], "kinetic": "x_dot**2/2", "potential": "k*y**2/2"},
+    },
+    "clashing-name": {
+        "summary": "A parameter named like a function",
+        "value": {"coordinates": ["x"], "parameters": ["sin"], "lagrangian": "x_dot**2"},
+    },
+    "tower": {
+        "summary": "A tower of exponents",
+        "value": {"coordinates": ["x"], "lagrangian": "x_dot**2/2 - 9**9**9**9*x"},
+    },
+    "singular": {
+        "summary": "No term quadratic in the velocities",
+        "value": {"coordinates": ["x"], "lagrangian": "x_dot*x - x**2/2"},
+    },
+    "shape": {"summary": "A body of the wrong shape", "value": {"coordinates": [], "lagrangian": "x_dot**2"}},
+}
+
+
+def _load() -> dict[str, Any]:
+    try:
+        return json.loads(EXAMPLES_FILE.read_text())
+    except (OSError, ValueError):
+        return {"derive": None, "errors": {}}
+
+
+JSON = {"content-type": "application/json"}
+# a parameter value with more digits than Python's JSON reader converts
+UNREADABLE = (
+    b'{"coordinates": ["x"], "lagrangian": "x_dot**2", "parameters": [{"name": "k", "value": 1' + b"0" * 5000 + b"}]}"
+)
+TIMEOUT_SECONDS = 1.0  # the timeout example is recorded with this limit (the served limit is longer)
+
+_ANSWERS = _load()
+DERIVE_RESPONSE: dict[str, Any] | None = _ANSWERS["derive"]
+_SUMMARIES = {
+    "400": {"unreadable": "A number JSON cannot hold as a float"},
+    "413": {"too-large": "A body over the size cap"},
+    "422": {
+        **{k: v["summary"] for k, v in REFUSED_REQUESTS.items()},
+        "timeout": "Work beyond the time limit (recorded with a 1 s limit)",
+    },
+    "429": {"one-at-a-time": "A second request while your first is still running"},
+    "503": {"busy": "Every slot taken"},
+}
+ERROR_EXAMPLES: dict[int, dict[str, dict[str, Any]]] = {
+    int(status): {
+        name: {"summary": summary, "response": _ANSWERS["errors"].get(status, {}).get(name, {"detail": summary})}
+        for name, summary in names.items()
+    }
+    for status, names in _SUMMARIES.items()
+}
+
+
+def record() -> dict[str, Any]:
+    """Run the API on the example requests and collect what it answers."""
+    from fastapi.testclient import TestClient
+
+    from app.main import app
+    from app.service import user_systems
+    from app.web.api_user import MAX_BODY_BYTES
+
+    errors: dict[str, dict[str, Any]] = {status: {} for status in _SUMMARIES}
+    service = user_systems.service
+    with TestClient(app) as client:
+        derived = client.post("/api/derive", json=FORCED_SPRING).json()
+        for name, example in REFUSED_REQUESTS.items():
+            errors["422"][name] = client.post("/api/derive", json=example["value"]).json()
+        errors["400"]["unreadable"] = client.post("/api/derive", content=UNREADABLE, headers=JSON).json()
+        errors["413"]["too-large"] = client.post(
+            "/api/derive", content=b" " * (MAX_BODY_BYTES + 1), headers=JSON
+        ).json()
+        errors["422"]["timeout"] = answer_with_time_limit(client, TIMEOUT_SECONDS)
+        client.cookies.clear()  # keyed on the address from here on
+        ticket = service.gate.admit("address:testclient", "testclient")
+        try:
+            errors["429"]["one-at-a-time"] = client.post("/api/derive", json=DOUBLE_PENDULUM).json()
+        finally:
+            ticket.release()
+        tickets = [service.gate.admit(f"filler{i}", f"filler{i}") for i in range(service.gate.capacity)]
+        try:
+            errors["503"]["busy"] = client.post("/api/derive", json=DOUBLE_PENDULUM).json()
+        finally:
+            for ticket in tickets:
+                ticket.release()
+    return {"derive": derived, "errors": errors}
+
+
+def answer_with_time_limit(client: Any, seconds: float) -> dict[str, Any]:
+    """The answer to deriving the double pendulum under a short time limit (no cached result)."""
+    from app.service import user_systems
+
+    saved, cache = user_systems.DERIVE_SECONDS, user_systems.service.derivations
+    user_systems.DERIVE_SECONDS, user_systems.service.derivations = seconds, user_systems.ResultCache()
+    try:
+        return client.post("/api/derive", json=DOUBLE_PENDULUM).json()
+    finally:
+        user_systems.DERIVE_SECONDS, user_systems.service.derivations = saved, cache
+
+
+if __name__ == "__main__":
+    EXAMPLES_FILE.parent.mkdir(exist_ok=True)
+    EXAMPLES_FILE.write_text(json.dumps(record(), indent=1, ensure_ascii=False) + "\n")
+    print(f"wrote {EXAMPLES_FILE}")

@@ -1,0 +1,185 @@
+"""Request and response models of the user-system API (POST /api/derive, POST /api/simulate).
+
+Shapes only; the limits a model cannot express (names, expressions) are
+checked by ``app.service.user_systems.check_system`` with located messages.
+Every float is finite: JSON's ``NaN`` and ``Infinity`` (which Python's
+``json`` accepts) are refused with a 422.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any
+
+from pydantic import BaseModel, ConfigDict, Field
+
+from app.engine.parse import MAX_LENGTH
+from app.service.user_systems import MAX_COORDINATES, MAX_PARAMETERS, MAX_PARTICLES
+from app.web.schemas import ParameterInfo
+
+Expression = Annotated[
+    str,
+    Field(
+        min_length=1,
+        max_length=MAX_LENGTH,
+        description="An expression: numbers, declared names, + - * / **, parentheses and "
+        "sin cos tan asin acos atan sinh cosh tanh exp log sqrt Abs; pi and time t.",
+    ),
+]
+Name = Annotated[
+    str,
+    Field(min_length=1, max_length=40, description="A letter then up to 15 ASCII letters or digits."),
+]
+Number = Annotated[float, Field(ge=-1e15, le=1e15)]
+
+STRICT = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+
+class ParameterSpec(BaseModel):
+    model_config = STRICT
+
+    name: Name
+    value: Number = Field(1.0, description="The value used to simulate (and shown as the default).")
+    unit: str = Field("", max_length=24)
+    min: Number | None = Field(None, description="Lower end of the allowed range; min > 0 marks a positive quantity.")
+    max: Number | None = None
+    description: str = Field("", max_length=200)
+
+
+class ParticleSpec(BaseModel):
+    model_config = STRICT
+
+    mass: Expression
+    position: list[Expression] = Field(
+        min_length=2, max_length=3, description="Cartesian (x, y[, z]) as expressions of the coordinates and t."
+    )
+    label: str = Field("", max_length=40)
+
+
+class SystemSpec(BaseModel):
+    """A mechanical system in one of three forms: particles + potential, kinetic + potential, or lagrangian."""
+
+    model_config = STRICT
+
+    coordinates: list[Name] = Field(min_length=1, max_length=MAX_COORDINATES)
+    parameters: list[ParameterSpec | Name] = Field(
+        default_factory=list,
+        max_length=MAX_PARAMETERS,
+        description="Each a name (value 1) or an object with a value, unit and range.",
+    )
+    lagrangian: Expression | None = None
+    kinetic: Expression | None = None
+    potential: Expression | None = None
+    particles: list[ParticleSpec] = Field(default_factory=list, max_length=MAX_PARTICLES)
+    forces: dict[Name, Expression] = Field(
+        default_factory=dict,
+        max_length=MAX_COORDINATES,
+        description="Generalized non-conservative forces Q by coordinate: d/dt dL/dq_dot - dL/dq = Q.",
+    )
+    nonnegative: list[Name] = Field(
+        default_factory=list, max_length=MAX_COORDINATES, description="Coordinates that are distances (r >= 0)."
+    )
+
+    def to_spec(self) -> dict[str, Any]:
+        """Plain data for the service and the worker (parameters always as objects)."""
+        data = self.model_dump(include=set(SystemSpec.model_fields))
+        data["parameters"] = [
+            ParameterSpec(name=p).model_dump() if isinstance(p, str) else p for p in data["parameters"]
+        ]
+        return data
+
+
+# ---- responses ---------------------------------------------------------------------------
+
+OPEN = ConfigDict(extra="allow")
+
+
+class ExprPair(BaseModel):
+    model_config = OPEN
+    sympy: str = Field(description="In the symbol convention: q, q_dot, q_ddot, t, parameters by name.")
+    latex: str
+
+
+class EquationOfMotion(ExprPair):
+    coordinate: str
+
+
+class ConservedQuantity(ExprPair):
+    name: str
+    latex_name: str
+    reason: str
+
+
+class Step(BaseModel):
+    model_config = OPEN
+    title: str
+    latex: str
+    sympy: str
+    explanation: str
+
+
+class Equilibrium(BaseModel):
+    model_config = OPEN
+    position: ExprPair
+    omega_squared: ExprPair
+    stable: bool | None
+
+
+class EffectivePotential(BaseModel):
+    model_config = OPEN
+    coordinate: str
+    momenta: list[str]
+    potential: ExprPair
+    mass: ExprPair
+    condition: ExprPair
+    omega_squared: ExprPair
+    equilibria: list[Equilibrium]
+
+
+class DerivationDocument(BaseModel):
+    """The derivation JSON, the same document as GET /api/scenes/{id}/derivation."""
+
+    model_config = OPEN
+    coordinates: list[str]
+    parameters: dict[str, ParameterInfo]
+    kinetic: ExprPair | None
+    potential: ExprPair | None
+    lagrangian: ExprPair
+    hamiltonian: ExprPair
+    energy: ExprPair
+    equations_of_motion: list[EquationOfMotion]
+    accelerations: dict[str, ExprPair]
+    mass_matrix: list[list[ExprPair]]
+    forcing: list[ExprPair]
+    momenta: dict[str, ExprPair]
+    generalized_forces: dict[str, ExprPair]
+    cyclic: list[str]
+    conserved: list[ConservedQuantity]
+    explicit_time_derivative: ExprPair
+    hamiltonian_equals_energy: bool
+    hamiltonian_energy_reason: str
+    energy_minus_hamiltonian: ExprPair
+    effective_potential: EffectivePotential | None
+    steps: list[Step]
+
+
+class ValidationIssue(BaseModel):
+    loc: list[str]
+    msg: str
+    type: str
+
+
+class UserError(BaseModel):
+    """Why a system was refused; ``loc`` and ``start``/``end`` point at the offending part."""
+
+    detail: str
+    part: str | None = Field(None, description="The offending piece of the input.")
+    loc: list[str] | None = Field(None, description="Path of the offending field, e.g. body.particles.0.mass.")
+    start: int | None = Field(None, description="Offset of the offending part in that field's text.")
+    end: int | None = None
+    kind: str | None = Field(None, description="timeout or memory when the work exceeded a limit.")
+    errors: list[ValidationIssue] | None = Field(None, description="Shape errors (never echoing the input).")
+
+
+class BusyError(BaseModel):
+    detail: str
+    retry_after: int = Field(description="Seconds to wait; also in the Retry-After header.")

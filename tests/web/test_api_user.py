@@ -1,0 +1,185 @@
+"""POST /api/derive: systems users declare, derived in the worker pool."""
+
+import json
+import threading
+import time
+
+import pytest
+import sympy as sp
+
+from app.service import user_systems
+from app.service.fairness import COOKIE
+from app.web import examples_user
+from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, REFUSED_REQUESTS, SPINNING_HOOP
+from tests.reference import numerically_equal, reference_accelerations
+
+
+def symbols_of(doc):
+    names = {"t": sp.Symbol("t", real=True)}
+    for q in doc["coordinates"]:
+        for suffix in ("", "_dot", "_ddot"):
+            names[q + suffix] = sp.Symbol(q + suffix, real=True)
+    for p in doc["parameters"]:
+        names[p] = sp.Symbol(p, real=True)
+    return names
+
+
+def derive(client, body):
+    response = client.post("/api/derive", json=body)
+    assert response.status_code == 200, response.text
+    return response.json()
+
+
+@pytest.mark.parametrize("name", ["double-pendulum", "forced-spring"])
+def test_systems_outside_the_chapter_match_lagranges_method(client, name):
+    spec = {"double-pendulum": DOUBLE_PENDULUM, "forced-spring": FORCED_SPRING}[name]
+    doc = derive(client, spec)
+    names = symbols_of(doc)
+    ours = [sp.sympify(doc["accelerations"][q]["sympy"], locals=names) for q in doc["coordinates"]]
+    system = user_systems.to_system(_spec(spec))
+    theirs, _ = reference_accelerations(system)
+    symbols = sorted(set(names.values()), key=str)
+    for a, b in zip(ours, theirs, strict=True):
+        assert numerically_equal(a, b, symbols), (name, a, b)
+    # every served equation of motion vanishes on the served accelerations
+    on_motion = {names[f"{q}_ddot"]: a for q, a in zip(doc["coordinates"], ours, strict=True)}
+    for eq in doc["equations_of_motion"]:
+        residual = sp.sympify(eq["sympy"], locals=names).xreplace(on_motion)
+        assert numerically_equal(residual, sp.Integer(0), symbols)
+
+
+def _spec(body):
+    from app.web.schemas_user import SystemSpec
+
+    return SystemSpec.model_validate(body).to_spec()
+
+
+def test_forced_spring_reports_the_force_and_no_conserved_energy(client):
+    doc = derive(client, FORCED_SPRING)
+    names = symbols_of(doc)
+    assert set(doc["generalized_forces"]) == {"x"}
+    force = sp.sympify(doc["generalized_forces"]["x"]["sympy"], locals=names)
+    assert sp.expand(force - (names["F"] * sp.cos(names["w"] * names["t"]) - names["b"] * names["x_dot"])) == 0
+    # a driven, damped oscillator conserves neither E nor h
+    assert doc["conserved"] == []
+    assert any(s["title"] == "Generalized forces" for s in doc["steps"])
+
+
+def test_lagrangian_form_and_same_contract_as_scenes(client):
+    doc = derive(client, SPINNING_HOOP)
+    names = symbols_of(doc)
+    for key in ("lagrangian", "hamiltonian", "energy"):
+        sp.sympify(doc[key]["sympy"], locals=names)
+    assert [e["coordinate"] for e in doc["equations_of_motion"]] == ["theta"]
+    assert doc["steps"] and all(set(s) == {"title", "latex", "sympy", "explanation"} for s in doc["steps"])
+    assert r"\dot{\theta}" in doc["lagrangian"]["latex"]
+    # the bead's angular acceleration, checked against LagrangesMethod
+    theirs, _ = reference_accelerations(user_systems.to_system(_spec(SPINNING_HOOP)))
+    ours = sp.sympify(doc["accelerations"]["theta"]["sympy"], locals=names)
+    assert numerically_equal(ours, theirs[0], sorted(names.values(), key=str))
+
+
+def test_parameters_given_by_name_default_to_one(client):
+    doc = derive(client, SPINNING_HOOP)
+    assert doc["parameters"]["m"]["default"] == 1.0
+
+
+def test_a_session_cookie_is_issued_and_kept(client):
+    client.cookies.clear()
+    first = client.post("/api/derive", json=SPINNING_HOOP)
+    assert COOKIE in first.cookies
+    second = client.post("/api/derive", json=SPINNING_HOOP)
+    assert COOKIE not in second.cookies  # the client already holds one
+
+
+@pytest.mark.parametrize("name", sorted(REFUSED_REQUESTS))
+def test_documented_refusals_are_what_the_api_answers(client, name):
+    response = client.post("/api/derive", json=REFUSED_REQUESTS[name]["value"])
+    assert response.status_code == 422
+    assert response.json() == examples_user.ERROR_EXAMPLES[422][name]["response"], (
+        "stale example: run python -m app.web.examples_user"
+    )
+
+
+def test_documented_derivation_is_what_the_api_answers(client):
+    assert derive(client, FORCED_SPRING) == examples_user.DERIVE_RESPONSE, (
+        "stale example: run python -m app.web.examples_user"
+    )
+
+
+def test_other_documented_errors_are_what_the_api_answers(client):
+    from app.web.api_user import MAX_BODY_BYTES
+
+    documented = examples_user.ERROR_EXAMPLES
+    unreadable = client.post("/api/derive", content=examples_user.UNREADABLE, headers=examples_user.JSON)
+    assert (unreadable.status_code, unreadable.json()) == (400, documented[400]["unreadable"]["response"])
+    big = client.post("/api/derive", content=b" " * (MAX_BODY_BYTES + 1), headers=examples_user.JSON)
+    assert (big.status_code, big.json()) == (413, documented[413]["too-large"]["response"])
+
+
+def test_a_job_over_the_time_limit_is_stopped_and_the_pool_recovers(client):
+    answer = examples_user.answer_with_time_limit(client, examples_user.TIMEOUT_SECONDS)
+    assert answer == examples_user.ERROR_EXAMPLES[422]["timeout"]["response"]
+    # the pool replaced the killed worker: the next job runs normally
+    assert client.get("/healthz").json() == {"status": "ok"}
+    assert derive(client, SPINNING_HOOP)["coordinates"] == ["theta"]
+
+
+def test_one_job_at_a_time_per_session(client):
+    """A second request while the first still runs gets 429 with Retry-After; the first completes."""
+    service = user_systems.service
+    saved = service.derivations
+    service.derivations = user_systems.ResultCache()  # no cached answer: the first request must work
+    client.cookies.clear()
+    client.post("/api/derive", json=SPINNING_HOOP)  # issues the session cookie both requests carry
+    assert COOKIE in client.cookies
+    results = {}
+
+    def first():
+        results["first"] = client.post("/api/derive", json=DOUBLE_PENDULUM)
+
+    worker = threading.Thread(target=first)
+    try:
+        worker.start()
+        deadline = time.monotonic() + 60
+        while service.gate.in_flight == 0 and time.monotonic() < deadline:
+            time.sleep(0.01)
+        second = client.post("/api/derive", json=FORCED_SPRING)
+        assert second.status_code == 429
+        assert int(second.headers["Retry-After"]) >= 1
+        body = second.json()
+        assert body["retry_after"] == int(second.headers["Retry-After"]) and "already" in body["detail"]
+        worker.join(120)
+        assert results["first"].status_code == 200
+        # once the first is done, the same session may go again
+        assert client.post("/api/derive", json=FORCED_SPRING).status_code == 200
+    finally:
+        worker.join(120)
+        service.derivations = saved
+
+
+def test_busy_server_answers_503_with_retry_after(client):
+    gate = user_systems.service.gate
+    tickets = [gate.admit(f"other{i}", f"10.0.0.{i}") for i in range(gate.capacity)]
+    try:
+        client.cookies.clear()
+        response = client.post("/api/derive", json={"coordinates": ["q"], "lagrangian": "q_dot**2 - q**4"})
+        assert response.status_code == 503
+        assert int(response.headers["Retry-After"]) >= 1
+        assert response.json()["detail"] == examples_user.ERROR_EXAMPLES[503]["busy"]["response"]["detail"]
+    finally:
+        for ticket in tickets:
+            ticket.release()
+
+
+def test_openapi_documents_every_answer(client):
+    schema = client.get("/openapi.json").json()
+    operation = schema["paths"]["/api/derive"]["post"]
+    assert set(operation["responses"]) == {"200", "400", "413", "422", "429", "503"}
+    for status, response in operation["responses"].items():
+        content = response["content"]["application/json"]
+        assert "schema" in content and ("example" in content or "examples" in content), status
+    assert "Retry-After" in operation["responses"]["429"]["headers"]
+    examples = operation["requestBody"]["content"]["application/json"]["examples"]
+    assert {"double-pendulum", "forced-spring", "spinning-hoop"} <= set(examples)
+    json.dumps(schema)
