@@ -1,0 +1,64 @@
+"""Global error of a run, estimated by a second, more accurate run.
+
+    error_estimate = max over samples and coordinates of |q_run(t) - q_ref(t)| * factor
+
+* adaptive methods: the reference is the compiled DOP853 (Radau when the
+  problem is stiff) at a thousand times tighter tolerances, factor 1.  With
+  errors roughly proportional to the tolerance the reference's own error is
+  about 1/1000 of the run's, so the difference is the run's error.
+* fixed-step methods (order p): the reference is the same method with half the
+  step (Richardson): e_h = C h^p and e_{h/2} = e_h / 2^p give
+  e_h = (y_h - y_{h/2}) / (1 - 2^-p).  This matters near a separatrix, where a
+  symplectic method's bounded energy error makes it far more accurate than an
+  adaptive method at any affordable tolerance, so no adaptive run could serve
+  as its reference.
+
+Near the round-off floor both runs carry errors of similar size; there the
+estimate is never allowed below the run's round-off level, eps max|q| sqrt(steps).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from app.numerics.methods.base import Problem, Trajectory
+
+TIGHTER = 1.0e-3
+REFERENCE_RTOL_MIN = 1.0e-13
+REFERENCE_ATOL_MIN = 1.0e-16
+
+
+@dataclass(frozen=True)
+class Estimate:
+    value: float
+    by_coordinate: dict[str, float]
+    reference: str
+
+
+def reference_problem(problem: Problem, stiff: bool) -> tuple[str, Problem]:
+    method = "Radau" if stiff else "DOP853-compiled"
+    tight = Problem(
+        **{
+            **problem.__dict__,
+            "rtol": max(problem.rtol * TIGHTER, REFERENCE_RTOL_MIN),
+            "atol": np.maximum(problem.atol * TIGHTER, REFERENCE_ATOL_MIN),
+        }
+    )
+    return method, tight
+
+
+def compare(
+    run: Trajectory, reference: Trajectory, coordinates: tuple[str, ...], label: str, factor: float = 1.0
+) -> Estimate:
+    """Largest coordinate difference over the samples both runs reached, times ``factor``."""
+    n = len(coordinates)
+    common = min(run.t.size, reference.t.size)
+    if common == 0:
+        return Estimate(float("nan"), {}, label)
+    diff = np.abs(run.y[:common, :n] - reference.y[:common, :n]) * factor
+    eps = np.finfo(float).eps
+    floor = eps * np.max(np.abs(run.y[:common, :n]), axis=0) * np.sqrt(max(run.steps, 1))
+    per = np.maximum(np.max(diff, axis=0), floor)
+    return Estimate(float(per.max()), {name: float(v) for name, v in zip(coordinates, per, strict=True)}, label)

@@ -1,0 +1,117 @@
+"""Generated source for one system: right-hand sides and observables, from the engine's expressions.
+
+Three scalar functions, all ``f(t, y, k, out)`` (y a state, k the parameters):
+
+    rhs      y = (q, q_dot)  ->  (q_dot, q_ddot)    q_ddot = M(q, t)^-1 f(q, q_dot, t)
+    ham      z = (q, p)      ->  (q_dot, p_dot)     q_dot = M^-1 (p - b),  p_dot = dL/dq + Q
+    momenta  y = (q, q_dot)  ->  p                  p = dL/dq_dot
+
+where b = p at q_dot = 0 (L is quadratic in the velocities, so p = M q_dot + b),
+and p_dot = dL/dq (at the q_dot belonging to p) + Q is Hamilton's
+p_dot = -dH/dq + Q written with the Lagrangian.  q_ddot uses the engine's solved
+accelerations when they are compact, otherwise M and f with a numeric solve.
+One vectorised function evaluates observables (energy, h, conserved
+quantities, det M, constraint forces) on all samples at once.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import sympy as sp
+
+from app.engine.derive import Derivation
+from app.numerics.codegen import ArrayPrinter, Block, ScalarPrinter, function_source, ldl_solve, matrix_entries, unpack
+
+
+@dataclass(frozen=True)
+class Names:
+    """Safe names for the engine's symbols in generated code."""
+
+    rename: dict[sp.Symbol, sp.Symbol]
+    q: list[str]
+    v: list[str]
+    p: list[str]
+    k: list[str]
+
+    @classmethod
+    def of(cls, d: Derivation) -> Names:
+        table = d.table
+        n = len(table.names)
+        q = [f"q{i}" for i in range(n)]
+        v = [f"v{i}" for i in range(n)]
+        k = [f"k{i}" for i in range(len(table.params))]
+        rename = {table.t: sp.Symbol("t", real=True)}
+        rename.update({s: sp.Symbol(name, real=True) for s, name in zip(table.q, q, strict=True)})
+        rename.update({s: sp.Symbol(name, real=True) for s, name in zip(table.qd, v, strict=True)})
+        rename.update({s: sp.Symbol(name, real=True) for s, name in zip(table.params, k, strict=True)})
+        return cls(rename, q, v, [f"p{i}" for i in range(n)], k)
+
+    def __call__(self, expr: sp.Expr) -> sp.Expr:
+        return sp.sympify(expr).xreplace(self.rename)
+
+
+def _compact(accelerations: Sequence[sp.Expr], M: sp.Matrix, f: sp.Matrix) -> bool:
+    """Use the solved accelerations unless they are much larger than M and f together."""
+    return sp.count_ops(list(accelerations)) <= 3 * (sp.count_ops(M) + sp.count_ops(f)) + 60
+
+
+def rhs_source(d: Derivation, names: Names) -> str:
+    eqs = d.equations
+    n = len(names.q)
+    block = Block()
+    block.raw(*unpack("y", names.q), *unpack("y", names.v, n), *unpack("k", names.k))
+    outs = [f"out[{n + i}]" for i in range(n)]
+    block.raw(*(f"out[{i}] = {v}" for i, v in enumerate(names.v)))
+    if _compact(eqs.accelerations, eqs.mass_matrix, eqs.forcing):
+        block.assign(outs, [names(a) for a in eqs.accelerations], ScalarPrinter(), "a_")
+    else:
+        # M q_ddot = f, solved numerically
+        M = eqs.mass_matrix.applyfunc(names)
+        entries, exprs = matrix_entries(M, "_")
+        forcing = [f"_f{i}" for i in range(n)]
+        block.assign(entries + forcing, [*exprs, *(names(x) for x in eqs.forcing)], ScalarPrinter(), "a_")
+        ldl_solve(block, M, forcing, [f"_x{i}" for i in range(n)], "_")
+        block.raw(*(f"{out} = _x{i}" for i, out in enumerate(outs)))
+    return function_source("rhs", "t, y, k, out", block)
+
+
+def hamilton_source(d: Derivation, names: Names) -> str:
+    eqs, mech = d.equations, d.mechanics
+    n = len(names.q)
+    block = Block()
+    block.raw(*unpack("z", names.q), *unpack("z", names.p, n), *unpack("k", names.k))
+    zero_v = {sp.Symbol(v, real=True): sp.Integer(0) for v in names.v}
+    M = eqs.mass_matrix.applyfunc(names)
+    entries, exprs = matrix_entries(M, "_")
+    # b = p at q_dot = 0, so that p = M q_dot + b
+    offsets = [names(p).xreplace(zero_v) for p in eqs.momenta]
+    block.assign(entries + [f"_b{i}" for i in range(n)], [*exprs, *offsets], ScalarPrinter(), "h_")
+    block.raw(*(f"_r{i} = p{i} - _b{i}" for i in range(n)))
+    # q_dot = M^-1 (p - b)
+    ldl_solve(block, M, [f"_r{i}" for i in range(n)], names.v, "_")
+    # p_dot = dL/dq + Q at that q_dot
+    p_dot = [names(g + Q) for g, Q in zip(eqs.dL_dq, mech.Q, strict=True)]
+    block.assign([f"out[{n + i}]" for i in range(n)], p_dot, ScalarPrinter(), "g_")
+    block.raw(*(f"out[{i}] = {v}" for i, v in enumerate(names.v)))
+    return function_source("ham", "t, z, k, out", block)
+
+
+def momenta_source(d: Derivation, names: Names) -> str:
+    n = len(names.q)
+    block = Block()
+    block.raw(*unpack("y", names.q), *unpack("y", names.v, n), *unpack("k", names.k))
+    block.assign([f"out[{i}]" for i in range(n)], [names(p) for p in d.equations.momenta], ScalarPrinter(), "m_")
+    return function_source("momenta", "t, y, k, out", block)
+
+
+def observables_source(names: Names, exprs: Sequence[sp.Expr]) -> str:
+    """``observe(t, Q, V, k)``: each expression on arrays of samples (Q, V of shape (n, N))."""
+    block = Block()
+    block.raw(*unpack("Q", names.q), *unpack("V", names.v), *unpack("k", names.k))
+    targets = [f"_o{i}" for i in range(len(exprs))]
+    block.assign(targets, [names(e) for e in exprs], ArrayPrinter(), "o_")
+    listed = "".join(f"{x}, " for x in targets)
+    block.raw(f"return [numpy.broadcast_to(numpy.asarray(x, dtype=float), numpy.shape(t)).copy() for x in ({listed})]")
+    return function_source("observe", "t, Q, V, k", block)

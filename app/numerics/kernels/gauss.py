@@ -1,0 +1,143 @@
+"""Gauss-Legendre implicit Runge-Kutta on z = (q, p), compiled: symplectic for any Hamiltonian.
+
+With s stages (order 2s) and the Butcher tableau (A, b, c) of the Gauss
+collocation nodes, one step of size h solves
+
+    Z_i = z + h sum_j a_ij F(t + c_i h, Z_j),   i = 1..s
+    z_new = z + h sum_i b_i F(t + c_i h, Z_i)
+
+by fixed-point iteration on the stage slopes K_i = F(Z_i).  The first guess
+extrapolates the previous step's collocation polynomial: K_i ~ sum_j E_ij K_j^old
+with E_ij = l_j(1 + c_i), the Lagrange basis on the nodes.  Iteration stops at
+round-off (the correction no longer shrinks) or after 50 sweeps (then the
+kernel reports no convergence: the step is too large for the problem's
+stiffness).  The step is fixed, ``substeps`` per interval between samples, and
+the update uses compensated summation.  Samples are (q, q_dot) with q_dot the
+first half of F.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from app.numerics.kernels.common import (
+    BOUND,
+    DONE,
+    I64,
+    JIT,
+    MAT,
+    NO_CONVERGENCE,
+    NONFINITE,
+    RHS,
+    RUNNING,
+    VEC,
+    all_finite,
+    compensated_add,
+    outside,
+)
+
+MAX_SWEEPS = 50
+INTERVAL, SUBSTEP, STEPS, NFEV, STARTED, HAVE_PREV, SWEEPS, MAX_SWEEPS_SEEN = range(8)
+STATE_SIZE = 8
+
+
+@njit(I64(RHS, VEC, VEC, MAT, VEC, VEC, MAT, I64, VEC, VEC, I64, VEC, VEC, MAT, VEC, MAT), **JIT)
+def run(f, k, t_out, A, b, c, E, substeps, bound, scale_floor, chunk, z, comp, Kprev, st, Y):
+    m = z.size
+    n = m // 2
+    s = b.size
+    n_out = t_out.size
+    K = np.empty((s, m))
+    Knew = np.empty((s, m))
+    Z = np.empty(m)
+    work = np.empty(m)
+    if st[STARTED] == 0.0:
+        f(t_out[0], z, k, work)
+        Y[0, :n] = z[:n]
+        Y[0, n:] = work[:n]
+        st[NFEV] += 1
+        st[STARTED] = 1.0
+    j = int(st[INTERVAL])
+    sub = int(st[SUBSTEP])
+    done_here = 0
+    while j < n_out - 1:
+        h = (t_out[j + 1] - t_out[j]) / substeps
+        while sub < substeps:
+            if done_here >= chunk:
+                st[INTERVAL] = j
+                st[SUBSTEP] = sub
+                return RUNNING
+            t = t_out[j] + sub * h
+            # first guess of the stage slopes
+            if st[HAVE_PREV] != 0.0:
+                for i in range(s):
+                    for col in range(m):
+                        acc = 0.0
+                        for jj in range(s):
+                            acc += E[i, jj] * Kprev[jj, col]
+                        K[i, col] = acc
+            else:
+                f(t, z, k, work)
+                st[NFEV] += 1
+                for i in range(s):
+                    K[i, :] = work
+            previous = np.inf
+            converged = False
+            for sweep in range(MAX_SWEEPS):
+                # K_i <- F(t + c_i h, z + h sum_j a_ij K_j)
+                for i in range(s):
+                    for col in range(m):
+                        acc = 0.0
+                        for jj in range(s):
+                            acc += A[i, jj] * K[jj, col]
+                        Z[col] = z[col] + h * acc
+                    f(t + c[i] * h, Z, k, Knew[i])
+                st[NFEV] += s
+                st[SWEEPS] += 1
+                change = 0.0
+                for i in range(s):
+                    for col in range(m):
+                        d = abs(h * (Knew[i, col] - K[i, col])) / (abs(z[col]) + scale_floor[col])
+                        if not d <= change:
+                            change = d
+                K[:, :] = Knew
+                if sweep + 1 > st[MAX_SWEEPS_SEEN]:
+                    st[MAX_SWEEPS_SEEN] = sweep + 1
+                if change <= 1e-15:
+                    converged = True
+                    break
+                if sweep >= 2 and change >= previous and change <= 1e-10:
+                    converged = True  # round-off level: further sweeps only shuffle the last bits
+                    break
+                if not np.isfinite(change):
+                    break
+                previous = change
+            if not converged:
+                st[INTERVAL] = j
+                st[SUBSTEP] = sub
+                return NO_CONVERGENCE
+            # z_new = z + h sum_i b_i K_i
+            for col in range(m):
+                acc = 0.0
+                for i in range(s):
+                    acc += b[i] * K[i, col]
+                compensated_add(z, comp, col, h * acc)
+            Kprev[:, :] = K
+            st[HAVE_PREV] = 1.0
+            st[STEPS] += 1
+            sub += 1
+            done_here += 1
+        sub = 0
+        j += 1
+        f(t_out[j], z, k, work)
+        st[NFEV] += 1
+        Y[j, :n] = z[:n]
+        Y[j, n:] = work[:n]
+        st[INTERVAL] = j
+        st[SUBSTEP] = 0
+        if not all_finite(z) or not all_finite(work):
+            return NONFINITE
+        if outside(Y[j], bound):
+            return BOUND
+    return DONE

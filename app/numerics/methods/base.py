@@ -1,0 +1,136 @@
+"""The rules every integrator follows; subclasses only supply the mathematics.
+
+A ``Problem`` is one initial-value problem y' = F(t, y), y = (q, q_dot), sampled
+at fixed times.  ``Method.integrate`` checks that the method applies, runs the
+subclass's ``_run`` under the budget (a deadline and a step limit), and turns
+the outcome into a ``Trajectory``: either the whole interval, or the part
+before the motion left its bounds (a runaway, a singularity) with a message
+saying where and why.  Running out of budget raises ``TooMuchWork``.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from app.numerics.errors import SimulationError, TooMuchWork
+from app.numerics.system import NumericSystem
+
+
+@dataclass
+class Problem:
+    system: NumericSystem
+    k: np.ndarray  # parameter values, in the system's order
+    y0: np.ndarray  # (q, q_dot) at t[0]
+    t: np.ndarray  # sample times, increasing, t[0] the start
+    rtol: float
+    atol: np.ndarray  # per component of y
+    bound: np.ndarray  # |y_i| beyond bound_i ends the run
+    deadline: float  # time.perf_counter() value at which work must stop
+    max_steps: int
+
+    @property
+    def t_end(self) -> float:
+        return float(self.t[-1])
+
+    def remaining(self) -> float:
+        return self.deadline - time.perf_counter()
+
+
+@dataclass
+class Trajectory:
+    method: str
+    t: np.ndarray
+    y: np.ndarray  # shape (len(t), 2n): q then q_dot
+    steps: int
+    rhs_evaluations: int
+    wall_time_s: float
+    complete: bool = True
+    stop_reason: str = ""
+    stiff_detected: bool = False
+    notes: list[str] = field(default_factory=list)
+    step_size: float | None = None  # fixed-step methods
+    substeps: int | None = None  # fixed-step methods: steps per interval between samples
+
+    @property
+    def t_reached(self) -> float:
+        return float(self.t[-1]) if self.t.size else 0.0
+
+
+class Method:
+    """Base class: a named integrator with its applicability rule."""
+
+    name = ""
+    family = ""  # "explicit", "implicit", "symplectic"
+    order = 0
+    compiled = False
+    summary = ""
+
+    def applicable(self, system: NumericSystem) -> str | None:
+        """None when the method can integrate the system; otherwise why not."""
+        return None
+
+    def integrate(self, problem: Problem, **options) -> Trajectory:
+        why_not = self.applicable(problem.system)
+        if why_not:
+            raise SimulationError(f"method {self.name} cannot integrate this system: {why_not}", "method")
+        if problem.remaining() <= 0:
+            raise TooMuchWork(f"no time left in the budget for {self.name}", "t_end")
+        start = time.perf_counter()
+        trajectory = self._run(problem, **options)
+        trajectory.wall_time_s = time.perf_counter() - start
+        return trajectory
+
+    def _run(self, problem: Problem, **options) -> Trajectory:
+        raise NotImplementedError
+
+    def too_much(self, problem: Problem, what: str) -> TooMuchWork:
+        return TooMuchWork(
+            f"too much work for {self.name}: {what} before t = {problem.t_end:g} s. "
+            "Shorten t_end, loosen rtol/atol, or choose another method (method 'auto' picks one for the problem).",
+            "t_end",
+        )
+
+
+def drive(step: Callable[[int], int], steps_done: Callable[[], float], problem: Problem, method: Method) -> int:
+    """Call a resumable compiled kernel in chunks, checking the deadline and step limit between them.
+
+    Chunks start small and grow to about 50 ms, so a slow right-hand side
+    cannot overrun the deadline by more than one short chunk.
+    """
+    from app.numerics.kernels.common import RUNNING
+
+    chunk = 2_000
+    while True:
+        before = time.perf_counter()
+        status = step(chunk)
+        elapsed = time.perf_counter() - before
+        if status != RUNNING:
+            return status
+        if steps_done() >= problem.max_steps:
+            raise method.too_much(problem, f"more than {problem.max_steps:,} steps")
+        if time.perf_counter() >= problem.deadline:
+            raise method.too_much(problem, "the wall-clock budget ran out")
+        chunk = int(min(max(chunk * 0.05 / max(elapsed, 1e-6), 100), 2_000_000))
+
+
+def finished(method: Method, problem: Problem, Y: np.ndarray, filled: int, status: int, **stats) -> Trajectory:
+    """A trajectory from kernel output: complete, or cut at the last sample reached with the reason."""
+    from app.numerics.kernels.common import BOUND, DONE, STATUS_NAMES
+
+    t = problem.t[:filled]
+    y = Y[:filled]
+    if status == DONE:
+        return Trajectory(method.name, t, y, complete=True, wall_time_s=0.0, **stats)
+    where = f"t = {t[-1]:.6g} s" if filled else "the start"
+    if status == BOUND:
+        reason = (
+            f"the motion left the bound |q|, |q_dot| <= {problem.bound.max():.3g} after {where}: it runs away, "
+            "so the run stops there"
+        )
+    else:
+        reason = f"{STATUS_NAMES.get(status, 'stopped')} after {where}: the equations cannot be followed further"
+    return Trajectory(method.name, t, y, complete=False, stop_reason=reason, wall_time_s=0.0, **stats)

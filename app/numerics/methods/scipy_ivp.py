@@ -1,0 +1,116 @@
+"""scipy's ``solve_ivp`` methods (DOP853, RK45, Radau, BDF, LSODA) under the same rules.
+
+The right-hand side is the generated scalar-math function (plain Python:
+scipy calls back into Python at every step anyway).  The budget is enforced
+in the step loop (scipy's ``OdeSolver.step``, the loop ``solve_ivp`` runs) and,
+for long Newton iterations, inside the callback every 64 calls, so even a
+method that never finishes (LSODA not switching to its stiff mode, RK45 on a
+stiff spring) is stopped at the deadline.  Samples come from each solver's
+dense output; a state outside its bound ends the run (a runaway).
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+from scipy.integrate import BDF, DOP853, LSODA, RK45, Radau
+
+from app.numerics.methods.base import Method, Problem, Trajectory
+
+
+class _OutOfBudget(Exception):
+    pass
+
+
+class _NotEvaluable(Exception):
+    pass
+
+
+ORDERS = {"DOP853": 8, "RK45": 5, "Radau": 5, "BDF": 5, "LSODA": 12}
+FAMILIES = {"DOP853": "explicit", "RK45": "explicit", "Radau": "implicit", "BDF": "implicit", "LSODA": "switching"}
+SUMMARIES = {
+    "DOP853": "scipy's Dormand-Prince 8(5,3), Python step loop",
+    "RK45": "scipy's Dormand-Prince 5(4), Python step loop",
+    "Radau": "scipy's Radau IIA order 5, implicit (stiff problems)",
+    "BDF": "scipy's variable-order backward differentiation, implicit (stiff problems)",
+    "LSODA": "scipy's LSODA: Adams, switching to BDF when it detects stiffness",
+}
+
+
+class ScipyMethod(Method):
+    compiled = False
+
+    def __init__(self, scipy_name: str):
+        self.name = scipy_name
+        self.order = ORDERS[scipy_name]
+        self.family = FAMILIES[scipy_name]
+        self.summary = SUMMARIES[scipy_name]
+
+    def _run(self, problem: Problem, **options) -> Trajectory:
+        rhs = problem.system.python["rhs"]
+        k = problem.k
+        m = problem.y0.size
+        calls = [0]
+        deadline = problem.deadline
+
+        def fun(t, y):
+            calls[0] += 1
+            if calls[0] % 64 == 0 and time.perf_counter() > deadline:
+                raise _OutOfBudget("the wall-clock budget ran out")
+            out = np.empty(m)
+            try:
+                rhs(t, y, k, out)
+            except (ZeroDivisionError, ValueError, OverflowError) as exc:
+                raise _NotEvaluable(f"{exc} at t = {t:.6g} s") from None
+            return out
+
+        t_out = problem.t
+        Y = np.empty((t_out.size, m))
+        Y[0] = problem.y0
+        filled = 1
+        steps = 0
+        stop = ""
+        solver = None
+        try:
+            solver = SOLVERS[self.name](fun, t_out[0], problem.y0, problem.t_end, rtol=problem.rtol, atol=problem.atol)
+            while solver.status == "running":
+                message = solver.step()
+                if solver.status == "failed":
+                    where = f"t = {solver.t:.6g} s"
+                    stop = f"{self.name} stopped at {where}: {message}"
+                    break
+                steps += 1
+                if steps > problem.max_steps:
+                    raise _OutOfBudget(f"more than {problem.max_steps:,} steps")
+                upto = int(np.searchsorted(t_out, solver.t, side="right"))
+                if upto > filled:
+                    Y[filled:upto] = solver.dense_output()(t_out[filled:upto]).T
+                    filled = upto
+                if not np.all(np.abs(solver.y) <= problem.bound):
+                    stop = (
+                        f"the motion left the bound |q|, |q_dot| <= {problem.bound.max():.3g} after "
+                        f"t = {solver.t:.6g} s: it runs away, so the run stops there"
+                    )
+                    break
+        except _OutOfBudget as exc:
+            raise self.too_much(problem, str(exc)) from None
+        except _NotEvaluable as exc:
+            stop = f"the right-hand side could not be evaluated ({exc})"
+        trajectory = Trajectory(
+            self.name,
+            t_out[:filled],
+            Y[:filled],
+            steps=steps,
+            rhs_evaluations=calls[0],
+            wall_time_s=0.0,
+            complete=not stop,
+            stop_reason=stop,
+        )
+        njev = getattr(solver, "njev", 0)
+        if njev:
+            trajectory.notes.append(f"{njev} Jacobian evaluations, {getattr(solver, 'nlu', 0)} LU decompositions")
+        return trajectory
+
+
+SOLVERS = {"DOP853": DOP853, "RK45": RK45, "Radau": Radau, "BDF": BDF, "LSODA": LSODA}

@@ -1,0 +1,54 @@
+"""Where compiled code and generated sources live on disk.
+
+numba's on-disk cache goes to ``NUMBA_CACHE_DIR``; unless the environment sets
+it, that is ``<LAGRANGE_CACHE_DIR or .cache>/numba``.  Generated right-hand
+sides are written as modules under ``.../generated`` (numba only caches
+functions defined in a real file).  A read-only cache directory falls back to
+a per-user folder under the system's temporary directory.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _writable(path: Path) -> bool:
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+        probe = path / f".probe-{os.getpid()}"
+        probe.write_text("")
+        probe.unlink()
+        return True
+    except OSError:
+        return False
+
+
+def cache_root() -> Path:
+    base = Path(os.environ.get("LAGRANGE_CACHE_DIR", ROOT / ".cache"))
+    if _writable(base):
+        return base
+    return Path(tempfile.gettempdir()) / f"lagrange-cache-{os.getuid()}"
+
+
+def configure_numba() -> Path:
+    """Point numba's cache at a writable folder; call before any @njit(cache=True)."""
+    target = Path(os.environ.get("NUMBA_CACHE_DIR") or cache_root() / "numba")
+    if not _writable(target):
+        target = Path(tempfile.gettempdir()) / f"lagrange-numba-{os.getuid()}"
+        target.mkdir(parents=True, exist_ok=True)
+    os.environ["NUMBA_CACHE_DIR"] = str(target)
+    import numba.core.config
+
+    if numba.core.config.CACHE_DIR != str(target):
+        numba.core.config.reload_config()
+    return target
+
+
+def generated_dir() -> Path:
+    path = cache_root() / "generated"
+    path.mkdir(parents=True, exist_ok=True)
+    return path

@@ -1,0 +1,126 @@
+"""One simulation: choose the method, run it under the budget, estimate its global error.
+
+Order of work: analyse the start (stiffness, time scales), choose, run the
+method (switching to Radau if ``auto``'s DOP853 meets stiffness on the way),
+run the reference for the error estimate, compare.  Everything shares one
+deadline.  The main run exceeding
+it is an error (too much work); the reference exceeding it only costs the
+estimate, with a warning.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from app.numerics import limits
+from app.numerics.choose import Analysis, analyse, choose
+from app.numerics.errors import SimulationError, TooMuchWork
+from app.numerics.estimate import Estimate, compare, reference_problem
+from app.numerics.methods import METHODS, Problem, Trajectory
+from app.numerics.methods.symplectic import FixedStep
+from app.numerics.system import NumericSystem
+
+
+@dataclass
+class Outcome:
+    trajectory: Trajectory
+    method: str
+    reason: str
+    analysis: Analysis
+    estimate: Estimate | None
+    warnings: list[str] = field(default_factory=list)
+    compile_seconds: float = 0.0
+
+
+def _budget_for(method_name: str) -> int:
+    return limits.COMPILED_STEPS if METHODS[method_name].compiled else limits.SCIPY_STEPS
+
+
+def simulate(
+    system: NumericSystem,
+    k: np.ndarray,
+    y0: np.ndarray,
+    t_end: float,
+    samples: int,
+    method: str = "auto",
+    rtol: float = limits.RTOL_DEFAULT,
+    atol: float = limits.ATOL_DEFAULT,
+    wall_seconds: float = limits.WALL_SECONDS,
+    estimate: bool = True,
+) -> Outcome:
+    start = time.perf_counter()
+    deadline = start + wall_seconds
+    t = np.linspace(0.0, t_end, samples)
+    m = y0.size
+    atol_vector = np.full(m, atol)
+    analysis = analyse(system, k, y0, t_end, rtol, atol_vector)
+    if method == "auto":
+        name, reason = choose(system, analysis)
+    else:
+        if method not in METHODS:
+            raise SimulationError(f"unknown method {method!r}; choose auto or one of {', '.join(METHODS)}", "method")
+        name, reason = method, "requested"
+    chosen = METHODS[name]
+    why_not = chosen.applicable(system)
+    if why_not:
+        raise SimulationError(f"method {name} cannot integrate this system: {why_not}", "method")
+
+    warnings: list[str] = []
+    compile_seconds = 0.0
+    if chosen.compiled or estimate:
+        before = time.perf_counter()
+        system.compiled()
+        compile_seconds = time.perf_counter() - before
+
+    problem = Problem(system, k, y0, t, rtol, atol_vector, np.full(m, limits.STATE_BOUND), deadline, _budget_for(name))
+    options = {"stop_on_stiff": True} if method == "auto" and name == "DOP853-compiled" else {}
+    trajectory = chosen.integrate(problem, **options)
+    stiff = analysis.stiff
+    if trajectory.stiff_detected and not trajectory.complete and options:
+        # DOP853 found h |lambda| at its stability limit for 15 steps in a row: switch to Radau
+        reason += (
+            f"; but DOP853 detected stiffness at t = {trajectory.t_reached:.4g} s (step size held at its "
+            "stability limit), so the run was redone with the implicit Radau method"
+        )
+        name, stiff = "Radau", True
+        problem.max_steps = _budget_for(name)
+        trajectory = METHODS[name].integrate(problem)
+    elif trajectory.stiff_detected:
+        warnings.append(
+            f"{name} detected stiffness (its step size is held at the stability limit): an implicit method "
+            "(Radau or BDF) may be much cheaper here"
+        )
+    if not trajectory.complete:
+        warnings.append(trajectory.stop_reason)
+    result = estimate_error(system, problem, METHODS[name], trajectory, stiff, warnings) if estimate else None
+    return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds)
+
+
+def estimate_error(
+    system: NumericSystem, problem: Problem, method, trajectory: Trajectory, stiff: bool, warnings: list[str]
+) -> Estimate | None:
+    """Run the reference (see ``estimate``) in what is left of the budget and compare."""
+    if isinstance(method, FixedStep):
+        ref_name, ref_problem, factor = method.name, problem, 1.0 / (1.0 - 2.0**-method.order)
+        options = {"substeps": 2 * trajectory.substeps}
+        label = (
+            f"{method.name} with half the step (h = {trajectory.step_size / 2:.3g} s), Richardson factor {factor:.3g}"
+        )
+    else:
+        ref_name, ref_problem = reference_problem(problem, stiff)
+        ref_problem.max_steps = _budget_for(ref_name)
+        factor, options = 1.0, {}
+        label = f"{ref_name} at rtol={ref_problem.rtol:.1e}, atol={float(ref_problem.atol.max()):.1e}"
+    try:
+        reference = METHODS[ref_name].integrate(ref_problem, **options)
+    except TooMuchWork:
+        warnings.append("no error estimate: the reference run did not fit in the time budget")
+        return None
+    if reference.t.size < trajectory.t.size:
+        warnings.append(
+            f"the error estimate covers t <= {reference.t_reached:.4g} s only (the reference stopped there)"
+        )
+    return compare(trajectory, reference, system.coordinates, label, factor)

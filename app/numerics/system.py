@@ -1,0 +1,87 @@
+"""A derivation as numeric functions, with the structural facts the method choice needs."""
+
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass, field
+from types import ModuleType
+
+import numpy as np
+import sympy as sp
+
+from app.engine.derive import Derivation
+from app.numerics import jit
+from app.numerics.generate import Names, hamilton_source, momenta_source, rhs_source
+
+
+@dataclass
+class NumericSystem:
+    """Right-hand sides of one system: Python callables at once, numba ones on first use."""
+
+    derivation: Derivation
+    coordinates: tuple[str, ...]
+    parameter_names: tuple[str, ...]
+    sources: dict[str, str]
+    python: dict
+    separable: bool  # q_ddot depends on q alone and M is constant: H = 1/2 v.M.v + U(q)
+    autonomous: bool  # no explicit t in the equations
+    energy_name: str | None  # "E" or "h" when the engine says that quantity is conserved
+    conserved: tuple[str, ...]
+    key: str
+    _compiled: ModuleType | None = field(default=None, repr=False)
+    _lock: threading.Lock = field(default_factory=threading.Lock, repr=False)
+
+    @property
+    def n(self) -> int:
+        return len(self.coordinates)
+
+    def compiled(self) -> ModuleType:
+        """The numba module with ``rhs`` and ``ham`` (compiled or loaded from the disk cache once)."""
+        with self._lock:
+            if self._compiled is None:
+                self._compiled = jit.compiled_functions({k: self.sources[k] for k in ("rhs", "ham")})
+            return self._compiled
+
+    def f(self, t: float, y: np.ndarray, k: np.ndarray) -> np.ndarray:
+        out = np.empty(2 * self.n)
+        self.python["rhs"](t, y, k, out)
+        return out
+
+    def momenta(self, t: float, y: np.ndarray, k: np.ndarray) -> np.ndarray:
+        out = np.empty(self.n)
+        self.python["momenta"](t, y, k, out)
+        return out
+
+
+def _free(expr, symbols) -> bool:
+    return not sp.sympify(expr).has(*symbols)
+
+
+def numeric_system(d: Derivation) -> NumericSystem:
+    """Generate (never simplify) the numeric functions of a derivation."""
+    names = Names.of(d)
+    table, eqs, en = d.table, d.equations, d.energetics
+    sources = {"rhs": rhs_source(d, names), "ham": hamilton_source(d, names), "momenta": momenta_source(d, names)}
+    mass_constant = all(_free(x, (*table.q, table.t)) for x in eqs.mass_matrix)
+    forced = any(Q != 0 for Q in d.mechanics.Q)
+    separable = (
+        mass_constant
+        and not forced
+        and all(_free(a, (*table.qd, table.t)) for a in eqs.accelerations)
+        and all(_free(p.xreplace(dict.fromkeys(table.qd, 0)), (*table.q, table.t)) for p in eqs.momenta)
+    )
+    autonomous = all(_free(a, (table.t,)) for a in eqs.accelerations)
+    conserved = tuple(c.name for c in en.conserved)
+    energy_name = next((c.name for c in en.conserved if c.name in ("E", "h")), None)
+    return NumericSystem(
+        derivation=d,
+        coordinates=tuple(table.names),
+        parameter_names=tuple(table.parameter_names),
+        sources=sources,
+        python=jit.python_functions(sources),
+        separable=separable,
+        autonomous=autonomous,
+        energy_name=energy_name,
+        conserved=conserved,
+        key=jit.source_key("".join(sources.values())),
+    )
