@@ -1,0 +1,98 @@
+"""Every scene is declared as the issue fixes it, with consistent defaults and panels."""
+
+import pytest
+
+from app.scenes import SCENES
+from app.service.derivations import derivation
+
+# id -> (coordinates, parameters), exactly as the API promises them
+TABLE = {
+    "simple-pendulum": (("theta",), ("m", "g", "R")),
+    "helix-bead": (("z",), ("m", "g", "R", "alpha")),
+    "incline-block": (("X",), ("m", "g", "alpha")),
+    "tabletop-spring": (("r", "theta"), ("m", "k")),
+    "spherical-pendulum": (("theta", "phi"), ("m", "g", "R")),
+    "rail-two-body": (("x1", "x2"), ("m1", "m2", "k", "l0")),
+    "pulley": (("y1", "y2"), ("m1", "m2", "M", "g")),
+    "movable-incline": (("X", "D"), ("m", "M", "g", "alpha")),
+    "rotating-parabola": (("rho",), ("m", "g", "alpha", "omega")),
+    "damped-pendulum": (("theta",), ("m", "g", "R", "b")),
+}
+# what the engine must find: cyclic coordinates and whether h = E
+CYCLIC = {"tabletop-spring": ("theta",), "spherical-pendulum": ("phi",), "movable-incline": ("X",)}
+MOVING_CONSTRAINT = {"rotating-parabola"}
+PANELS = {
+    "animation-2d",
+    "animation-3d",
+    "energy",
+    "h-vs-e",
+    "momenta",
+    "phase",
+    "effective-potential",
+    "small-oscillations",
+    "constraint-force",
+    "work-precision",
+}
+THREE_D = {"spherical-pendulum", "helix-bead"}
+
+
+def test_all_ten_scenes_are_registered():
+    assert set(SCENES) == set(TABLE)
+
+
+@pytest.mark.parametrize("scene_id", sorted(TABLE))
+def test_coordinates_and_parameters(scene_id):
+    s = SCENES[scene_id]
+    coordinates, parameters = TABLE[scene_id]
+    assert s.id == scene_id
+    assert s.system.coordinates == coordinates
+    assert tuple(p.name for p in s.system.parameters) == parameters
+
+
+@pytest.mark.parametrize("scene_id", sorted(TABLE))
+def test_texts_defaults_and_ranges(scene_id):
+    s = SCENES[scene_id]
+    assert s.title and s.summary and len(s.statement) > 80 and s.figure
+    assert s.section.startswith("4.") and s.t_end > 0
+    for p in s.system.parameters:
+        assert p.unit and p.description, p.name
+        assert p.min is not None and p.max is not None and p.min <= p.default <= p.max, p.name
+    expected = {f"{q}{suffix}" for q in s.system.coordinates for suffix in ("", "_dot")}
+    assert set(s.initial) == expected
+
+
+@pytest.mark.parametrize("scene_id", sorted(TABLE))
+def test_panels_are_what_the_scene_needs(scene_id):
+    s = SCENES[scene_id]
+    d = derivation(scene_id)
+    panels = set(s.panels)
+    assert panels <= PANELS and len(panels) == len(s.panels)
+    assert "work-precision" in panels and "energy" in panels and "phase" in panels
+    # 3-D only where the motion is 3-D; exactly one animation
+    assert ("animation-3d" in panels) == (scene_id in THREE_D)
+    assert ("animation-2d" in panels) != ("animation-3d" in panels)
+    # h against E only where they differ
+    assert ("h-vs-e" in panels) == (not d.energetics.h_equals_e)
+    # momenta only with a conserved generalized momentum
+    assert ("momenta" in panels) == bool(d.energetics.cyclic)
+    if "effective-potential" in panels:
+        assert d.reduction is not None
+    if "small-oscillations" in panels:
+        # an equilibrium that is stable, or stable for some parameters (stable is None)
+        assert any(e.stable is not False for e in d.reduction.equilibria)
+    assert ("constraint-force" in panels) == bool(s.system.constraints)
+
+
+@pytest.mark.parametrize("scene_id", sorted(TABLE))
+def test_cyclic_coordinates_and_h_equals_e(scene_id):
+    en = derivation(scene_id).energetics
+    assert en.cyclic == CYCLIC.get(scene_id, ())
+    assert en.h_equals_e == (scene_id not in MOVING_CONSTRAINT)
+    names = {c.name for c in en.conserved}
+    assert {f"p_{c}" for c in en.cyclic} <= names
+    if scene_id == "damped-pendulum":
+        assert not names & {"h", "E"}
+    elif scene_id in MOVING_CONSTRAINT:
+        assert "h" in names and "E" not in names
+    else:
+        assert "E" in names
