@@ -127,9 +127,13 @@ def check_system(spec: dict[str, Any]) -> None:
         seen.add(name)
     for i, p in enumerate(spec.get("parameters") or ()):
         low, high, value = p.get("min"), p.get("max"), p.get("value", 1.0)
+        if low is not None and high is not None and low > high:
+            loc = ("parameters", i, "min")
+            raise InvalidSystem(f"{_where(loc)}: min {low:g} is larger than max {high:g}", loc)
         if (low is not None and value < low) or (high is not None and value > high):
             loc = ("parameters", i, "value")
-            raise InvalidSystem(f"{_where(loc)}: {value:g} is outside the allowed range [{low}, {high}]", loc)
+            span = f"{'-inf' if low is None else f'{low:g}'} to {'inf' if high is None else f'{high:g}'}"
+            raise InvalidSystem(f"{_where(loc)}: {value:g} is outside the allowed range, {span}", loc)
 
     forms = [bool(spec.get("particles")), spec.get("kinetic") is not None, spec.get("lagrangian") is not None]
     if sum(forms) != 1:
