@@ -115,43 +115,22 @@ def constraint_force_json(f: ConstraintForce, pr: Printer) -> dict[str, Any]:
 
 
 def transformed_json(tr: Transformed) -> dict[str, Any]:
-    """The derivation again in the declared new coordinates."""
+    """The derivation again in the declared new coordinates, with the maps between the two sets."""
     d = tr.derivation
     old = Printer(tr.original.latex_names())
     pr = Printer(d.table.latex_names())
     names = d.table.names
-    red = d.reduction
+    full = derivation_json(d)
+    by_name = {c.name: c for c in d.energetics.conserved}
     return {
         "coordinates": list(names),
         "definitions": {name: old.pair(f) for name, f in zip(names, tr.definitions, strict=True)},
         "inverse": {q.name: pr.pair(e) for q, e in tr.inverse.items()},
         "lagrangian": pr.pair(new_lagrangian(tr)),
-        "accelerations": {n: pr.pair(_show(a)) for n, a in zip(names, d.equations.accelerations, strict=True)},
-        "momenta": {n: pr.pair(_show(p)) for n, p in zip(names, d.equations.momenta, strict=True)},
-        "mass_matrix": [[pr.pair(_show(x)) for x in row] for row in d.equations.mass_matrix.tolist()],
+        **{key: full[key] for key in ("accelerations", "momenta", "mass_matrix", "cyclic", "effective_potential")},
+        "conserved": [
+            {**c, "original": old.pair(_show(tr.to_original(by_name[c["name"]].expr)))} for c in full["conserved"]
+        ],
         "inertia": {n: pr.pair(m) for n, m in zip(names, tr.inertia, strict=True)},
         "reduced_mass": pr.pair(tr.reduced_mass) if tr.reduced_mass is not None else None,
-        "cyclic": list(d.energetics.cyclic),
-        "conserved": [
-            {
-                "name": c.name,
-                "latex_name": c.latex_name,
-                **pr.pair(_show(c.expr)),
-                "original": old.pair(_show(tr.to_original(c.expr))),
-                "reason": c.reason,
-            }
-            for c in d.energetics.conserved
-        ],
-        "effective_potential": None
-        if red is None
-        else {
-            "coordinate": red.coordinate,
-            "momenta": [s.name for s in red.momenta],
-            "potential": pr.pair(red.effective_potential),
-            "mass": pr.pair(red.effective_mass),
-            "equilibria": [
-                {"position": pr.pair(e.position), "omega_squared": pr.pair(e.omega_squared), "stable": e.stable}
-                for e in red.equilibria
-            ],
-        },
     }

@@ -3,8 +3,9 @@
 import pytest
 import sympy as sp
 
+from app.engine.parse import parse_expression
 from app.scenes import SCENES
-from app.service.derivations import derivation_document
+from app.service.derivations import derivation, derivation_document
 from tests.reference import numerically_equal
 from tests.scenes.common import forces
 
@@ -42,6 +43,8 @@ def test_constraint_forces_are_functions_of_the_state(scene_id):
         expr = sp.sympify(f["sympy"], locals=names)
         assert expr.free_symbols <= set(names.values())
         assert numerically_equal(expr, engine.force, sorted(expr.free_symbols | {names["t"]}, key=str))
+        # and with the engine's safe parser, which is how the numerics reads it
+        assert parse_expression(f["sympy"], derivation(scene_id).table.namespace()) == expr
 
 
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
