@@ -10,6 +10,7 @@ from fastapi import FastAPI
 
 from app.service.derivations import warm_all
 from app.web import api_scenes, errors
+from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
 
 
@@ -29,7 +30,7 @@ app = FastAPI(
 )
 errors.install(app)
 
-ROUTERS = [api_scenes.router, user_router]
+ROUTERS = [api_scenes.router, user_router, simulate_router]
 for router in ROUTERS:
     app.include_router(router)
 

@@ -2,15 +2,17 @@
 
 from __future__ import annotations
 
+from app.engine.errors import DerivationError
 
-class SimulationError(ValueError):
-    """A request the numerics refuses or cannot finish; the message says what and what to change."""
+
+class SimulationError(DerivationError):
+    """A request the numerics refuses or cannot finish; the message says what and what to change.
+
+    A ``DerivationError``, so every layer that already maps those to a 422
+    (the app's handlers, the user-system worker) reports it with its message.
+    """
 
     status_code = 422
-
-    def __init__(self, message: str, part: str = ""):
-        super().__init__(message)
-        self.part = part
 
 
 class TooMuchWork(SimulationError):

@@ -23,4 +23,5 @@ MAX_NAMES = 64  # entries in "parameters" or "initial"
 WALL_SECONDS = 8.0  # for the whole request (main run and error-estimate run)
 COMPILED_STEPS = 20_000_000  # steps of a compiled loop
 SCIPY_STEPS = 400_000  # right-hand-side evaluations under scipy's Python loop
-STATE_BOUND = 1.0e8  # |q| or |q_dot| beyond this ends the run (a runaway)
+STATE_BOUND = 1.0e8  # |q_dot| (and |q| of angles) beyond this ends the run
+RUNAWAY_FACTOR = 1.0e3  # a non-angle coordinate beyond this times max(1, |q(0)|) ends the run (a runaway)

@@ -39,6 +39,16 @@ def _budget_for(method_name: str) -> int:
     return limits.COMPILED_STEPS if METHODS[method_name].compiled else limits.SCIPY_STEPS
 
 
+def bounds(system: NumericSystem, y0: np.ndarray) -> np.ndarray:
+    """|y_i| limits: a coordinate that is not an angle may not exceed RUNAWAY_FACTOR times its starting scale."""
+    n = system.n
+    bound = np.full(2 * n, limits.STATE_BOUND)
+    for i in range(n):
+        if not (system.periodic and system.periodic[i]):
+            bound[i] = limits.RUNAWAY_FACTOR * max(1.0, abs(float(y0[i])))
+    return bound
+
+
 def simulate(
     system: NumericSystem,
     k: np.ndarray,
@@ -75,7 +85,7 @@ def simulate(
         system.compiled()
         compile_seconds = time.perf_counter() - before
 
-    problem = Problem(system, k, y0, t, rtol, atol_vector, np.full(m, limits.STATE_BOUND), deadline, _budget_for(name))
+    problem = Problem(system, k, y0, t, rtol, atol_vector, bounds(system, y0), deadline, _budget_for(name))
     options = {"stop_on_stiff": True} if method == "auto" and name == "DOP853-compiled" else {}
     trajectory = chosen.integrate(problem, **options)
     stiff = analysis.stiff

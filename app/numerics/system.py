@@ -28,6 +28,7 @@ class NumericSystem:
     energy_name: str | None  # "E" or "h" when the engine says that quantity is conserved
     conserved: tuple[str, ...]
     key: str
+    periodic: tuple[bool, ...] = ()  # coordinates that are angles: F(q + 2 pi e_i) = F(q)
     _compiled: ModuleType | None = field(default=None, repr=False)
     _lock: threading.Lock = field(default_factory=threading.Lock, repr=False)
 
@@ -73,7 +74,7 @@ def numeric_system(d: Derivation) -> NumericSystem:
     autonomous = all(_free(a, (table.t,)) for a in eqs.accelerations)
     conserved = tuple(c.name for c in en.conserved)
     energy_name = next((c.name for c in en.conserved if c.name in ("E", "h")), None)
-    return NumericSystem(
+    system = NumericSystem(
         derivation=d,
         coordinates=tuple(table.names),
         parameter_names=tuple(table.parameter_names),
@@ -85,3 +86,23 @@ def numeric_system(d: Derivation) -> NumericSystem:
         conserved=conserved,
         key=jit.source_key("".join(sources.values())),
     )
+    system.periodic = tuple(_is_angle(system, i) for i in range(system.n))
+    return system
+
+
+def _is_angle(system: NumericSystem, i: int) -> bool:
+    """True when the equations repeat after q_i -> q_i + 2 pi (checked at random states and parameters)."""
+    rng = np.random.default_rng(7)
+    for _ in range(4):
+        y = rng.uniform(0.2, 1.3, 2 * system.n)
+        k = rng.uniform(0.5, 2.0, len(system.parameter_names))
+        t = float(rng.uniform(0.0, 1.0))
+        shifted = y.copy()
+        shifted[i] += 2 * np.pi
+        try:
+            a, b = system.f(t, y, k), system.f(t, shifted, k)
+        except (ArithmeticError, ValueError):
+            return False
+        if not np.allclose(a, b, rtol=1e-9, atol=1e-12):
+            return False
+    return True

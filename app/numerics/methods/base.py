@@ -117,10 +117,27 @@ def drive(step: Callable[[int], int], steps_done: Callable[[], float], problem: 
         chunk = int(min(max(chunk * 0.05 / max(elapsed, 1e-6), 100), 2_000_000))
 
 
-def finished(method: Method, problem: Problem, Y: np.ndarray, filled: int, status: int, **stats) -> Trajectory:
+def outside_names(problem: Problem, y: np.ndarray) -> str:
+    """Which components are beyond their bounds, e.g. "|rho| passed 1e+03"."""
+    coords = problem.system.coordinates
+    labels = [*coords, *(f"{q}_dot" for q in coords)]
+    beyond = [
+        f"|{labels[i]}| passed {problem.bound[i]:.3g}" for i in range(y.size) if not abs(y[i]) <= problem.bound[i]
+    ]
+    return ", ".join(beyond) or "the state left its bounds"
+
+
+def finished(
+    method: Method, problem: Problem, Y: np.ndarray, filled: int, status: int, last: np.ndarray | None = None, **stats
+) -> Trajectory:
     """A trajectory from kernel output: complete, or cut at the last sample reached with the reason."""
     from app.numerics.kernels.common import BOUND, DONE, STATUS_NAMES
 
+    if status == BOUND and filled:
+        # keep the samples up to the first one outside the bounds (a long step may have passed several)
+        outside = np.any(~(np.abs(Y[:filled]) <= problem.bound), axis=1)
+        if outside.any():
+            filled = int(np.argmax(outside)) + 1
     t = problem.t[:filled]
     y = Y[:filled]
     if status == DONE:
@@ -128,7 +145,7 @@ def finished(method: Method, problem: Problem, Y: np.ndarray, filled: int, statu
     where = f"t = {t[-1]:.6g} s" if filled else "the start"
     if status == BOUND:
         reason = (
-            f"the motion left the bound |q|, |q_dot| <= {problem.bound.max():.3g} after {where}: it runs away, "
+            f"the motion ran away: {outside_names(problem, last if last is not None else Y[filled - 1])} after {where}, "
             "so the run stops there"
         )
     else:

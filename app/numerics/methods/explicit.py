@@ -36,6 +36,7 @@ class CompiledDOP853(Method):
             Y,
             int(st[dop853.NEXT_OUT]),
             status,
+            last=y,
             steps=int(st[dop853.STEPS]),
             rhs_evaluations=int(st[dop853.NFEV]),
             stiff_detected=bool(st[dop853.STIFF_SEEN]),

@@ -16,7 +16,7 @@ import time
 import numpy as np
 from scipy.integrate import BDF, DOP853, LSODA, RK45, Radau
 
-from app.numerics.methods.base import Method, Problem, Trajectory
+from app.numerics.methods.base import Method, Problem, Trajectory, outside_names
 
 
 class _OutOfBudget(Exception):
@@ -88,9 +88,12 @@ class ScipyMethod(Method):
                     Y[filled:upto] = solver.dense_output()(t_out[filled:upto]).T
                     filled = upto
                 if not np.all(np.abs(solver.y) <= problem.bound):
+                    outside = np.any(~(np.abs(Y[:filled]) <= problem.bound), axis=1)
+                    if outside.any():
+                        filled = int(np.argmax(outside)) + 1
                     stop = (
-                        f"the motion left the bound |q|, |q_dot| <= {problem.bound.max():.3g} after "
-                        f"t = {solver.t:.6g} s: it runs away, so the run stops there"
+                        f"the motion ran away: {outside_names(problem, solver.y)} at t = {solver.t:.6g} s, "
+                        "so the run stops there"
                     )
                     break
         except _OutOfBudget as exc:

@@ -1,0 +1,236 @@
+"""Simulations of scenes and of user systems: validation, compiled-system cache, the JSON result.
+
+``simulate_derivation`` is the one entry point: the scene route calls it with
+a scene's derivation, the user-system worker with a user's.  It checks the
+request against the system's declared ranges, builds (once per system and
+process) the numeric functions, runs ``app.numerics.simulate`` and returns the
+documented JSON:
+
+    {"t", "state": {q, q_dot}, "energy", "hamiltonian", "conserved": {name: [...]},
+     "constraint_forces": {name: [...]}, "stats": {...}}
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import threading
+import time
+from collections import OrderedDict
+from collections.abc import Mapping, Sequence
+from typing import Any, Protocol
+
+import numpy as np
+
+from app.engine.derive import Derivation
+from app.numerics import limits
+from app.numerics.errors import Busy, SimulationError
+from app.numerics.methods import METHODS
+from app.numerics.observables import Observables, build, summarize
+from app.numerics.simulate import simulate
+from app.numerics.system import NumericSystem, numeric_system
+from app.scenes import SCENES, Scene
+
+DEFAULT_T_END = 10.0
+_SLOTS = threading.BoundedSemaphore(max(2, os.cpu_count() or 2))
+
+
+class SimulationInput(Protocol):
+    """What a request carries (``app.web.schemas_simulate.SimulateRequest`` has these fields)."""
+
+    parameters: Mapping[str, float]
+    initial: Mapping[str, float]
+    t_end: float | None
+    method: str
+    rtol: float | None
+    atol: float | None
+    samples: int | None
+
+
+class _Compiled:
+    """Numeric systems per scene id (or per generated source for user systems), per process."""
+
+    def __init__(self, size: int = 32):
+        self.size = size
+        self.items: OrderedDict[str, tuple[NumericSystem, Observables]] = OrderedDict()
+        self.lock = threading.Lock()
+        self.build_seconds: dict[str, float] = {}
+
+    def get(
+        self, key: str | None, d: Derivation, forces: Sequence[dict[str, Any]]
+    ) -> tuple[NumericSystem, Observables]:
+        with self.lock:
+            if key is not None and key in self.items:
+                self.items.move_to_end(key)
+                return self.items[key]
+            start = time.perf_counter()
+            system = numeric_system(d)
+            key = key or system.key
+            if key in self.items:
+                return self.items[key]
+            entry = (system, build(system, forces))
+            self.build_seconds[key] = time.perf_counter() - start
+            self.items[key] = entry
+            while len(self.items) > self.size:
+                self.items.popitem(last=False)
+            return entry
+
+
+COMPILED = _Compiled()
+
+
+def _check_number(value: Any, where: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise SimulationError(f"{where} must be a finite number", where)
+    if abs(value) > limits.VALUE_MAX:
+        raise SimulationError(f"{where} = {value:g} is beyond the allowed magnitude {limits.VALUE_MAX:g}", where)
+    return float(value)
+
+
+def _in_range(value: float, low: float | None, high: float | None) -> bool:
+    return (low is None or value >= low) and (high is None or value <= high)
+
+
+def parameter_vector(d: Derivation, given: Mapping[str, float]) -> np.ndarray:
+    declared = {p.name: p for p in d.system.parameters}
+    unknown = sorted(set(given) - set(declared))
+    if unknown:
+        raise SimulationError(
+            f"unknown parameter {unknown[0][:40]!r}; this system has {', '.join(declared) or 'no parameters'}",
+            "parameters",
+        )
+    values = []
+    for name, p in declared.items():
+        value = _check_number(given.get(name, p.default), f"parameters.{name}")
+        if not _in_range(value, p.min, p.max):
+            raise SimulationError(
+                f"parameters.{name} = {value:g} is outside its allowed range [{p.min}, {p.max}] {p.unit}".rstrip(),
+                f"parameters.{name}",
+            )
+        values.append(value)
+    return np.array(values, dtype=float)
+
+
+def initial_state(d: Derivation, given: Mapping[str, float], defaults: Mapping[str, float]) -> np.ndarray:
+    names = list(d.table.names)
+    allowed = names + [f"{q}_dot" for q in names]
+    unknown = sorted(set(given) - set(allowed))
+    if unknown:
+        raise SimulationError(f"unknown initial value {unknown[0][:40]!r}; allowed: {', '.join(allowed)}", "initial")
+    y0 = np.array([_check_number(given.get(n, defaults.get(n, 0.0)), f"initial.{n}") for n in allowed])
+    for q in d.system.nonnegative:
+        if y0[names.index(q)] < 0:
+            raise SimulationError(f"initial.{q} must be >= 0 ({q} is a distance)", f"initial.{q}")
+    return y0
+
+
+def _setting(value: Any, default: float, low: float, high: float, where: str) -> float:
+    value = default if value is None else _check_number(value, where)
+    if not low <= value <= high:
+        raise SimulationError(f"{where} = {value:g} is outside the allowed range [{low:g}, {high:g}]", where)
+    return value
+
+
+def _series(values: np.ndarray) -> list[float | None]:
+    return [float(v) if math.isfinite(v) else None for v in values.tolist()]
+
+
+def simulate_derivation(
+    derivation: Derivation,
+    request: SimulationInput,
+    *,
+    constraint_forces: Sequence[dict[str, Any]] = (),
+    scene_id: str | None = None,
+) -> dict[str, Any]:
+    """Simulate a derived system as the request asks; a refusal raises SimulationError (422/429)."""
+    scene: Scene | None = SCENES.get(scene_id) if scene_id else None
+    k = parameter_vector(derivation, request.parameters or {})
+    y0 = initial_state(derivation, request.initial or {}, scene.initial if scene else {})
+    t_end = _setting(request.t_end, scene.t_end if scene else DEFAULT_T_END, 1e-9, limits.T_END_MAX, "t_end")
+    rtol = _setting(request.rtol, limits.RTOL_DEFAULT, limits.RTOL_MIN, limits.RTOL_MAX, "rtol")
+    atol = _setting(request.atol, limits.ATOL_DEFAULT, limits.ATOL_MIN, limits.ATOL_MAX, "atol")
+    samples = int(_setting(request.samples, limits.SAMPLES_DEFAULT, limits.SAMPLES_MIN, limits.SAMPLES_MAX, "samples"))
+    method = request.method or "auto"
+    if method != "auto" and method not in METHODS:
+        raise SimulationError(f"unknown method {method[:40]!r}; choose auto or one of {', '.join(METHODS)}", "method")
+
+    system, observables = COMPILED.get(scene_id, derivation, constraint_forces)
+    try:
+        start = system.f(0.0, y0, k)
+    except (ArithmeticError, ValueError):
+        start = np.array([math.nan])
+    if not np.all(np.isfinite(start)):
+        raise SimulationError(
+            "the equations of motion cannot be evaluated at this initial state (a division by zero: "
+            "the coordinates are singular there, e.g. a radius of 0 or a pole of the sphere); move it slightly",
+            "initial",
+        )
+    if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
+        raise Busy("too many simulations are running at once; try again in a few seconds")
+    try:
+        outcome = simulate(system, k, y0, t_end, samples, method, rtol, atol)
+    finally:
+        _SLOTS.release()
+    return document(system, observables, outcome, k, rtol)
+
+
+def document(system: NumericSystem, observables: Observables, outcome, k: np.ndarray, rtol: float) -> dict[str, Any]:
+    tr = outcome.trajectory
+    n = system.n
+    values = observables.evaluate(tr.t, tr.y, k)
+    summary = summarize(observables, tr.t, values, rtol)
+    warnings = [*outcome.warnings, *summary.pop("warnings")]
+    state: dict[str, list] = {}
+    for i, q in enumerate(system.coordinates):
+        state[q] = _series(tr.y[:, i])
+        state[f"{q}_dot"] = _series(tr.y[:, n + i])
+    conserved = {c: _series(values[f"conserved:{c}"]) for c in system.conserved}
+    forces = {f["name"]: _series(values[f"force:{i}"]) for i, f in enumerate(observables.forces)}
+    est = outcome.estimate
+    stats = {
+        "method": outcome.method,
+        "reason": outcome.reason,
+        "steps": tr.steps,
+        "rhs_evaluations": tr.rhs_evaluations,
+        "wall_time_s": tr.wall_time_s,
+        "error_estimate": est.value if est and math.isfinite(est.value) else None,
+        "error_estimate_by_coordinate": est.by_coordinate if est else {},
+        "error_reference": est.reference if est else None,
+        **summary,
+        "complete": tr.complete,
+        "t_end_reached": tr.t_reached,
+        "step_size": tr.step_size,
+        "stiffness": outcome.analysis.as_dict(),
+        "compile_time_s": outcome.compile_seconds,
+        "notes": tr.notes,
+        "warnings": warnings,
+    }
+    if any(v is None for series in (*state.values(), *conserved.values()) for v in series):
+        warnings.append("some values are not finite (the motion reached a singular point); they are null")
+    return {
+        "t": _series(tr.t),
+        "state": state,
+        "energy": _series(values["energy"]),
+        "hamiltonian": _series(values["hamiltonian"]),
+        "conserved": conserved,
+        "constraint_forces": forces,
+        "stats": _finite(stats),
+    }
+
+
+def _finite(value: Any) -> Any:
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_finite(v) for v in value]
+    return value
+
+
+def simulate_scene(scene_id: str, request: SimulationInput) -> dict[str, Any]:
+    from app.service.derivations import derivation, derivation_document, scene
+
+    scene(scene_id)
+    forces = derivation_document(scene_id).get("constraint_forces") or []
+    return simulate_derivation(derivation(scene_id), request, constraint_forces=forces, scene_id=scene_id)

@@ -1,0 +1,92 @@
+"""Request and response models of POST /api/scenes/{id}/simulate (and the user-system twin).
+
+Every float is finite (JSON's NaN and Infinity, which Python's json accepts,
+are a 422); the ranges are the numerics' own limits (app/numerics/limits.py).
+Ranges that depend on the system (parameter ranges, which names exist) are
+checked by app.service.simulation with messages naming the field.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from pydantic import BaseModel, ConfigDict, Field
+
+from app.numerics import limits
+
+Method = Literal[
+    "auto", "DOP853-compiled", "Yoshida4", "Verlet", "Gauss-Legendre", "DOP853", "RK45", "Radau", "BDF", "LSODA"
+]
+Values = Annotated[
+    dict[Annotated[str, Field(max_length=40)], Annotated[float, Field(ge=-limits.VALUE_MAX, le=limits.VALUE_MAX)]],
+    Field(max_length=limits.MAX_NAMES),
+]
+
+
+class SimulateRequest(BaseModel):
+    """What to simulate; only ``initial`` is required, the rest defaults from the scene."""
+
+    model_config = ConfigDict(
+        extra="forbid",
+        allow_inf_nan=False,
+        json_schema_extra={
+            "example": {
+                "parameters": {"m": 1.0, "g": 9.81, "R": 1.0},
+                "initial": {"theta": 2.5, "theta_dot": 0.0},
+                "t_end": 20.0,
+                "method": "auto",
+                "rtol": 1e-8,
+                "atol": 1e-10,
+                "samples": 500,
+            }
+        },
+    )
+
+    parameters: Values = Field(default_factory=dict, description="Parameter values by name (default: the scene's).")
+    initial: Values = Field(
+        description="Initial coordinates and velocities by name (q and q_dot); missing ones default from the scene."
+    )
+    t_end: float | None = Field(None, gt=0, le=limits.T_END_MAX, description="End time in seconds.")
+    method: Method = Field("auto", description="'auto' chooses per scene and request and says why in stats.reason.")
+    rtol: float | None = Field(None, ge=limits.RTOL_MIN, le=limits.RTOL_MAX, description="Relative tolerance.")
+    atol: float | None = Field(None, ge=limits.ATOL_MIN, le=limits.ATOL_MAX, description="Absolute tolerance.")
+    samples: int | None = Field(
+        None, ge=limits.SAMPLES_MIN, le=limits.SAMPLES_MAX, description="Evenly spaced output times from 0 to t_end."
+    )
+
+
+class SimulateStats(BaseModel):
+    method: str
+    reason: str
+    steps: int
+    rhs_evaluations: int
+    wall_time_s: float
+    error_estimate: float | None = Field(description="Estimated max |q - q_exact| over the samples.")
+    max_energy_drift: float | None
+    max_hamiltonian_drift: float | None
+    warnings: list[str]
+    t_end_reached: float
+    complete: bool
+
+
+class SimulateResponse(BaseModel):
+    t: list[float]
+    state: dict[str, list[float | None]]
+    energy: list[float | None]
+    hamiltonian: list[float | None]
+    conserved: dict[str, list[float | None]]
+    constraint_forces: dict[str, list[float | None]]
+    stats: SimulateStats
+
+
+class WorkPrecisionRun(BaseModel):
+    method: str
+    rtol: float
+    error: float | None
+    wall_time_s: float | None
+    rhs_evaluations: int | None
+
+
+class WorkPrecision(BaseModel):
+    reference: str
+    runs: list[WorkPrecisionRun]
