@@ -1,0 +1,310 @@
+"""Everything a scene page shows, built once per scene from the derivation JSON.
+
+``scene_page(doc, scene, particles, methods)`` returns a plain dict: the
+steps (long ones flagged for collapsing), the summary box, the controls with
+units and ranges, the panels to draw, the diagram, and ``client`` -- the
+compact data the browser modules need (expression trees, not code).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Sequence
+from typing import Any
+
+from app.viz.diagrams import diagram
+from app.viz.exprtree import maybe_tree
+from app.viz.mechanism import mechanism
+from app.viz.names import is_angle, label
+
+PANELS = (
+    "animation-2d",
+    "animation-3d",
+    "energy",
+    "h-vs-e",
+    "momenta",
+    "phase",
+    "effective-potential",
+    "small-oscillations",
+    "constraint-force",
+    "work-precision",
+)
+LONG_STEP = 420  # characters of LaTeX beyond which a step's math starts collapsed
+RTOLS = ("1e-3", "1e-4", "1e-6", "1e-8", "1e-10", "1e-12")
+DEFAULT_RTOL = "1e-8"
+
+
+def _names(doc: dict[str, Any], extra: Sequence[str] = ()) -> list[str]:
+    q = doc["coordinates"]
+    return [*q, *(f"{c}_dot" for c in q), *doc["parameters"], "t", *extra]
+
+
+def _pair_tree(pair: dict[str, Any] | None, names: Sequence[str]) -> Any:
+    return maybe_tree(pair.get("sympy"), names) if isinstance(pair, dict) else None
+
+
+def _steps(doc: dict[str, Any]) -> list[dict[str, Any]]:
+    return [
+        {
+            "number": i + 1,
+            "title": s["title"],
+            "latex": s["latex"],
+            "explanation": s["explanation"],
+            "long": len(s["latex"]) > LONG_STEP,
+        }
+        for i, s in enumerate(doc["steps"])
+    ]
+
+
+def _summary(doc: dict[str, Any]) -> dict[str, Any]:
+    q = doc["coordinates"]
+    conserved = [
+        {"latex": f"{c.get('latex_name') or c['name']} = {c['latex']}", "reason": c["reason"]}
+        for c in doc.get("conserved", [])
+    ]
+    ddot = {c: rf"\ddot{{{_latex_symbol(c)}}}" for c in q}
+    return {
+        "equations": [e["latex"] for e in doc["equations_of_motion"]],
+        "accelerations": [f"{ddot[c]} = {doc['accelerations'][c]['latex']}" for c in q],
+        "momenta": [f"p_{{{_latex_symbol(c)}}} = {doc['momenta'][c]['latex']}" for c in q],
+        "conserved": conserved,
+        "h_equals_e": doc["hamiltonian_equals_energy"],
+        "h_reason": doc["hamiltonian_energy_reason"],
+        "hamiltonian": "h = " + doc["hamiltonian"]["latex"],
+        "energy_minus_h": (doc.get("energy_minus_hamiltonian") or {}).get("latex"),
+        "effective_potential": (
+            {
+                **doc["effective_potential"],
+                "coordinate_latex": _latex_symbol(doc["effective_potential"]["coordinate"]) + " = ",
+            }
+            if doc.get("effective_potential")
+            else None
+        ),
+        "constraint_forces": doc.get("constraint_forces") or [],
+    }
+
+
+_GREEK_TEX = {"alpha", "beta", "gamma", "delta", "theta", "phi", "psi", "rho", "omega", "lambda", "mu", "sigma", "tau",
+              "chi", "xi", "eta", "zeta", "nu", "kappa", "epsilon", "iota"}  # fmt: skip
+
+
+def _latex_symbol(name: str) -> str:
+    stem = name.rstrip("0123456789")
+    digits = name[len(stem) :]
+    tex = f"\\{stem}" if stem in _GREEK_TEX else stem
+    return f"{tex}_{{{digits}}}" if digits else tex
+
+
+def _transformed(doc: dict[str, Any]) -> list[dict[str, Any]] | None:
+    """The derivation in other coordinates (the rail's centre of mass and separation), as labelled rows of LaTeX."""
+    tr = doc.get("transformed")
+    if not tr:
+        return None
+    q = tr.get("coordinates", [])
+    sym = {c: _latex_symbol(c) for c in q}
+    rows: list[dict[str, Any]] = []
+
+    def add(title: str, items: list[str]) -> None:
+        if items:
+            rows.append({"title": title, "latex": items})
+
+    add("New coordinates", [f"{sym.get(c, c)} = {e['latex']}" for c, e in tr.get("definitions", {}).items()])
+    add("Old coordinates in the new", [f"{_latex_symbol(c)} = {e['latex']}" for c, e in tr.get("inverse", {}).items()])
+    if "lagrangian" in tr:
+        add("Lagrangian", [f"L = {tr['lagrangian']['latex']}"])
+    if "reduced_mass" in tr:
+        add("Reduced mass", [rf"\mu = {tr['reduced_mass']['latex']}"])
+    add("Accelerations", [rf"\ddot{{{sym.get(c, c)}}} = {e['latex']}" for c, e in tr.get("accelerations", {}).items()])
+    add("Momenta", [f"p_{{{sym.get(c, c)}}} = {e['latex']}" for c, e in tr.get("momenta", {}).items()])
+    conserved = []
+    for c in tr.get("conserved", []):
+        text = f"{c.get('latex_name') or c['name']} = {c['latex']}"
+        if c.get("original"):
+            text += f" = {c['original']['latex']}"
+        conserved.append(text)
+    add("Conserved", conserved)
+    cyclic = ", ".join(sym.get(c, c) for c in tr.get("cyclic", []))
+    return [{"title": "Cyclic", "latex": [rf"\text{{cyclic: }} {cyclic}"]}, *rows] if cyclic else rows
+
+
+def _fmt(x: float) -> str:
+    return f"{x:.6g}"
+
+
+def _initial_controls(doc: dict[str, Any], initial: dict[str, float], nonnegative: Sequence[str]) -> list[dict]:
+    lengths = [p["default"] for p in doc["parameters"].values() if p.get("unit") == "m" and p["default"] > 0]
+    scale = max([1.0, *lengths])
+    controls = []
+    for q in doc["coordinates"]:
+        angle = is_angle(q)
+        value, rate = float(initial.get(q, 0.0)), float(initial.get(f"{q}_dot", 0.0))
+        if angle:
+            lo, hi = -math.pi, math.pi
+            lo, hi = min(lo, value), max(hi, value)
+        else:
+            size = 3 * max(scale, abs(value))
+            lo, hi = (0.0 if q in nonnegative else -size), size
+        vmax = max(10.0, 3 * abs(rate)) if angle else max(5.0, 3 * abs(rate), math.sqrt(9.81 * scale))
+        unit = "rad" if angle else "m"
+        controls.append(
+            {"name": q, "label": f"{label(q)}(0)", "latex": _latex_symbol(q), "unit": unit,
+             "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(value), "log": False,
+             "description": f"initial {'angle' if angle else 'position'} {label(q)}"}
+        )  # fmt: skip
+        controls.append(
+            {"name": f"{q}_dot", "label": f"{label(q + '_dot')}(0)", "latex": rf"\dot{{{_latex_symbol(q)}}}",
+             "unit": f"{unit}/s", "min": _fmt(-vmax), "max": _fmt(vmax), "value": _fmt(rate), "log": False,
+             "description": f"initial rate of change of {label(q)}"}
+        )  # fmt: skip
+    return controls
+
+
+def _parameter_controls(doc: dict[str, Any]) -> list[dict[str, Any]]:
+    controls = []
+    for name, info in doc["parameters"].items():
+        default = float(info["default"])
+        lo = info.get("min") if info.get("min") is not None else min(0.0, default) - 10 * max(1.0, abs(default))
+        hi = info.get("max") if info.get("max") is not None else max(0.0, default) + 10 * max(1.0, abs(default))
+        log = lo > 0 and hi / lo >= 50
+        controls.append(
+            {"name": name, "label": label(name), "latex": _latex_symbol(name), "unit": info.get("unit") or "",
+             "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(default), "log": log,
+             "description": info.get("description") or name}
+        )  # fmt: skip
+    return controls
+
+
+def _reduction(doc: dict[str, Any]) -> dict[str, Any] | None:
+    red = doc.get("effective_potential")
+    if not red:
+        return None
+    momenta = [m for m in red.get("momenta", [])]
+    names = _names(doc, momenta)
+    coordinate_of = {m: m[2:] for m in momenta if m.startswith("p_")}
+    out = {
+        "coordinate": red["coordinate"],
+        "momenta": [
+            {
+                "symbol": m,
+                "coordinate": coordinate_of.get(m),
+                "tree": _pair_tree(doc["momenta"].get(coordinate_of.get(m, "")), names),
+            }
+            for m in momenta
+        ],
+        "potential": _pair_tree(red["potential"], names),
+        "mass": _pair_tree(red["mass"], names),
+        "condition": _pair_tree(red["condition"], names),
+        "omega_squared": _pair_tree(red["omega_squared"], names),
+        "equilibria": [
+            {
+                "position": _pair_tree(e["position"], names),
+                "omega_squared": _pair_tree(e["omega_squared"], names),
+                "stable": e.get("stable"),
+            }
+            for e in red.get("equilibria", [])
+        ],  # fmt: skip
+    }
+    essential = [out["potential"], out["mass"], *(m["tree"] for m in out["momenta"])]
+    return out if all(x is not None for x in essential) else None
+
+
+def _client(doc, info, reduction, spec, methods, nonnegative) -> dict[str, Any]:
+    names = _names(doc)
+    units = {q: "rad" if is_angle(q) else "m" for q in doc["coordinates"]}
+    conserved = [
+        {"name": c["name"], "label": label(c["name"]), "tree": maybe_tree(c.get("sympy"), names)}
+        for c in doc.get("conserved", [])
+    ]
+    return {
+        "id": doc.get("id"),
+        "coordinates": doc["coordinates"],
+        "labels": {n: label(n) for n in [*names, *(c["name"] for c in doc.get("conserved", []))] if n != "t"},
+        "units": units,
+        "nonnegative": list(nonnegative),
+        "parameters": {k: v["default"] for k, v in doc["parameters"].items()},
+        "initial": info.get("initial", {}),
+        "t_end": info.get("t_end", 10.0),
+        "panels": info["panels"],
+        "trees": {
+            "kinetic": _pair_tree(doc.get("kinetic"), names),
+            "potential": _pair_tree(doc.get("potential"), names),
+            "hamiltonian": _pair_tree(doc.get("hamiltonian"), names),
+            "energy": _pair_tree(doc.get("energy"), names),
+            "momenta": {q: _pair_tree(doc["momenta"][q], names) for q in doc["coordinates"]},
+        },
+        "cyclic": doc.get("cyclic", []),
+        "conserved": conserved,
+        "h_equals_e": doc["hamiltonian_equals_energy"],
+        "reduction": reduction,
+        "constraint_forces": [
+            {
+                "name": c["name"],
+                "label": label(c["name"]),
+                "convention": c.get("convention", ""),
+                "slack_when_negative": bool(c.get("slack_when_negative")),
+            }
+            for c in doc.get("constraint_forces") or []
+        ],  # fmt: skip
+        "mechanism": spec,
+        "methods": list(methods),
+    }
+
+
+def _panels(declared: Sequence[str], doc: dict[str, Any], reduction, spec) -> list[str]:
+    """The declared panels this scene has data for, in the declared order."""
+    has = {
+        "animation-2d": spec is not None and spec["dim"] == 2,
+        "animation-3d": spec is not None and spec["dim"] == 3,
+        "effective-potential": reduction is not None,
+        "small-oscillations": reduction is not None and reduction["omega_squared"] is not None,
+        "constraint-force": bool(doc.get("constraint_forces")),
+        "momenta": any(c["name"].startswith("p_") for c in doc.get("conserved", [])),
+    }
+    return [p for p in declared if p in PANELS and has.get(p, True)]
+
+
+def scene_page(
+    doc: dict[str, Any],
+    info: dict[str, Any],
+    particles: Sequence[tuple[str, Sequence[str]]] = (),
+    methods: Sequence[str] = ("auto",),
+    nonnegative: Sequence[str] = (),
+) -> dict[str, Any]:
+    """The page model of one scene; ``info`` holds title, section, summary, statement, figure, panels, initial, t_end."""
+    declared = list(info.get("panels", ()))
+    reduction = _reduction(doc)
+    spec = mechanism(info.get("id", doc.get("id", "")), particles, doc["coordinates"], "animation-3d" in declared)
+    panels = _panels(declared, doc, reduction, spec)
+    info = {**info, "panels": panels}
+    defaults = {k: v["default"] for k, v in doc["parameters"].items()}
+    client = _client(doc, info, reduction, spec, methods, nonnegative)
+    return {
+        "info": info,
+        "declared_panels": declared,
+        "panels": panels,
+        "diagram": diagram(
+            info.get("id", ""),
+            f"Set-up: {info.get('title', '')}",
+            info.get("figure", ""),
+            defaults,
+            info.get("initial", {}),
+            doc["coordinates"],
+            particles,
+        ),  # fmt: skip
+        "steps": _steps(doc),
+        "summary": _summary(doc),
+        "errata": doc.get("errata") or [],
+        "transformed": _transformed(doc),
+        "parameters": _parameter_controls(doc),
+        "initial": _initial_controls(doc, info.get("initial", {}), nonnegative),
+        "t_end": {
+            "value": _fmt(info.get("t_end", 10.0)),
+            "min": "0.5",
+            "max": _fmt(max(60.0, 10 * info.get("t_end", 10.0))),
+        },
+        "methods": list(methods),
+        "rtols": RTOLS,
+        "default_rtol": DEFAULT_RTOL,
+        "client_json": json.dumps(client, separators=(",", ":")).replace("<", "\\u003c"),
+    }
