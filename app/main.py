@@ -9,9 +9,10 @@ from contextlib import asynccontextmanager
 from fastapi import FastAPI
 
 from app.service.derivations import warm_all
-from app.web import api_scenes, errors
+from app.web import api_scenes, errors, pages
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
+from app.web.templating import static_app
 
 
 @asynccontextmanager
@@ -30,7 +31,8 @@ app = FastAPI(
 )
 errors.install(app)
 
-ROUTERS = [api_scenes.router, user_router, simulate_router]
+ROUTERS = [api_scenes.router, pages.router, user_router, simulate_router]
+app.mount("/static", static_app, name="static")
 for router in ROUTERS:
     app.include_router(router)
 

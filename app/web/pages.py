@@ -1,0 +1,101 @@
+"""HTML pages: the chapter's table of contents and one page per scene.
+
+Pages are rendered on the server from the derivation JSON (cached by the
+service layer) through the page model of ``app.viz.page_model``; the model of
+each scene is built once per process, so a warm request only renders the
+template.  Routes are plain ``def``: a first, uncached derivation runs in the
+thread pool, never on the event loop.
+"""
+
+from __future__ import annotations
+
+import threading
+from typing import Any
+
+from fastapi import APIRouter, Request
+from fastapi.responses import HTMLResponse
+
+from app.service import derivations
+from app.service.derivations import UnknownScene
+from app.viz.chapter import table_of_contents
+from app.viz.diagrams import diagram
+from app.viz.page_model import scene_page
+from app.web.templating import templates
+
+router = APIRouter(tags=["pages"], include_in_schema=False)
+
+FALLBACK_METHODS = ("auto", "DOP853", "RK45", "Radau", "BDF", "LSODA")
+
+_models: dict[str, tuple[int, dict[str, Any]]] = {}
+_lock = threading.Lock()
+
+
+def simulation_methods() -> tuple[str, ...]:
+    """The integration methods the simulate endpoint accepts (from its request schema when present)."""
+    try:
+        from app.web.schemas_simulate import SimulateRequest  # the numerics layer's request model
+    except ImportError:
+        return FALLBACK_METHODS
+    prop = SimulateRequest.model_json_schema().get("properties", {}).get("method", {})
+    options = prop.get("enum") or [o.get("const") for o in prop.get("anyOf", []) if "const" in o]
+    if not options:
+        options = [x for o in prop.get("anyOf", []) for x in o.get("enum", [])]
+    options = [str(o) for o in options if o]
+    return tuple(["auto", *(o for o in options if o != "auto")]) if options else FALLBACK_METHODS
+
+
+def scene_info(scene_id: str, doc: dict[str, Any]) -> dict[str, Any]:
+    """Title, section, statement, figure, panels, initial state and t_end of a scene."""
+    s = derivations.scene(scene_id)
+    info = {"id": s.id, **derivations.scene_summary(s), "statement": s.statement, "figure": s.figure}
+    info.update(doc.get("scene") or {})
+    info["id"] = s.id
+    return info
+
+
+def page_model(scene_id: str) -> dict[str, Any]:
+    """The scene's page model, rebuilt only if its derivation document changed."""
+    doc = derivations.derivation_document(scene_id)
+    cached = _models.get(scene_id)
+    if cached and cached[0] == id(doc):
+        return cached[1]
+    s = derivations.scene(scene_id)
+    particles = [(p.label, p.position) for p in s.system.particles]
+    model = scene_page(doc, scene_info(scene_id, doc), particles, simulation_methods(), s.system.nonnegative)
+    with _lock:
+        _models[scene_id] = (id(doc), model)
+    return model
+
+
+_cards: dict[str, str] = {}
+
+
+def _card_diagram(s: Any) -> str:
+    if s.id not in _cards:
+        defaults = {p.name: p.default for p in s.system.parameters}
+        particles = [(p.label, p.position) for p in s.system.particles]
+        _cards[s.id] = diagram(
+            s.id, s.title, s.figure, defaults, dict(s.initial), s.system.coordinates, particles, ident=f"card-{s.id}"
+        )
+    return _cards[s.id]
+
+
+@router.get("/", response_class=HTMLResponse)
+def index(request: Request) -> HTMLResponse:
+    scenes = [
+        {**derivations.scene_summary(s), "diagram": _card_diagram(s), "url": f"/scenes/{s.id}"}
+        for s in derivations.SCENES.values()
+    ]
+    return templates.TemplateResponse(request, "index.html", {"toc": table_of_contents(scenes), "scenes": scenes})
+
+
+@router.get("/scenes/{scene_id}", response_class=HTMLResponse)
+def scene_page_route(request: Request, scene_id: str) -> HTMLResponse:
+    try:
+        model = page_model(scene_id)
+    except UnknownScene as exc:
+        known = [{"id": s.id, "title": s.title, "url": f"/scenes/{s.id}"} for s in derivations.SCENES.values()]
+        return templates.TemplateResponse(
+            request, "404.html", {"missing": exc.scene_id[:60], "known": known}, status_code=404
+        )
+    return templates.TemplateResponse(request, "scene.html", {"m": model, "scene": model["info"]})

@@ -1,0 +1,201 @@
+/**
+ * controls.js — the parameter and initial-condition controls of a simulation.
+ *
+ * Markup (rendered by templates/_controls.html, or built here by buildControls):
+ *   <div class="control" data-group="parameters|initial|run" data-name="m"
+ *        data-min="0.01" data-max="100" data-log="true" data-default="1">
+ *     <label id="ctl-m-label" for="ctl-m-range">…</label>
+ *     <input type="range" id="ctl-m-range" …> <input type="number" id="ctl-m" …>
+ *     <p class="hint" id="ctl-m-hint">allowed: 0.01 to 100 kg</p>
+ *   </div>
+ * plus <select name="method"> and <select name="rtol">.
+ *
+ *   buildControls(container, spec)   build that markup from a spec
+ *                                    {parameters: [...], initial: [...], t_end, methods, rtols}
+ *                                    (each control {name, label, unit, min, max, value, log, description})
+ *   bindControls(form, onChange)     keep each slider and number field in step, check
+ *                                    ranges (aria-invalid + message), and call
+ *                                    onChange(request) after the user stops changing things
+ *   readRequest(form)                the simulate request body {parameters, initial, t_end, method, rtol}
+ *   resetControls(form)              back to the defaults
+ *
+ * A slider spanning more than a factor 50 moves on a log scale; its aria-valuetext
+ * always reads the real value with its unit.
+ */
+
+const STEPS = 1000;
+
+function fromSlider(ctl, position) {
+  const lo = Number(ctl.dataset.min), hi = Number(ctl.dataset.max);
+  const u = Number(position) / STEPS;
+  if (ctl.dataset.log === "true") return lo * Math.pow(hi / lo, u);
+  return lo + (hi - lo) * u;
+}
+
+function toSlider(ctl, value) {
+  const lo = Number(ctl.dataset.min), hi = Number(ctl.dataset.max);
+  const v = Math.min(hi, Math.max(lo, value));
+  const u = ctl.dataset.log === "true" ? Math.log(v / lo) / Math.log(hi / lo) : (v - lo) / (hi - lo);
+  return Math.round(u * STEPS);
+}
+
+/** A value rounded for display: 4 significant digits, no trailing zeros. */
+export function tidy(x) {
+  if (!Number.isFinite(x)) return String(x);
+  if (x === 0) return "0";
+  return String(Number(x.toPrecision(4)));
+}
+
+function parts(ctl) {
+  return {
+    range: ctl.querySelector('input[type="range"]'),
+    number: ctl.querySelector('input[type="number"]'),
+    hint: ctl.querySelector(".hint"),
+  };
+}
+
+function check(ctl) {
+  const { number, hint } = parts(ctl);
+  const value = Number(number.value);
+  const lo = Number(ctl.dataset.min), hi = Number(ctl.dataset.max);
+  const unit = ctl.dataset.unit ? ` ${ctl.dataset.unit}` : "";
+  const ok = number.value.trim() !== "" && Number.isFinite(value) && value >= lo && value <= hi;
+  number.setAttribute("aria-invalid", ok ? "false" : "true");
+  ctl.classList.toggle("invalid", !ok);
+  hint.textContent = ok
+    ? `allowed: ${tidy(lo)} to ${tidy(hi)}${unit}`
+    : `${ctl.dataset.label || ctl.dataset.name} must be a number from ${tidy(lo)} to ${tidy(hi)}${unit}`;
+  return ok;
+}
+
+function setValueText(ctl, value) {
+  const { range } = parts(ctl);
+  range.setAttribute("aria-valuetext", `${tidy(value)}${ctl.dataset.unit ? " " + ctl.dataset.unit : ""}`);
+}
+
+function setValue(ctl, value) {
+  const { range, number } = parts(ctl);
+  number.value = tidy(value);
+  range.value = String(toSlider(ctl, value));
+  setValueText(ctl, value);
+  check(ctl);
+}
+
+export function readRequest(form) {
+  const request = { parameters: {}, initial: {} };
+  for (const ctl of form.querySelectorAll(".control")) {
+    const value = Number(parts(ctl).number.value);
+    const group = ctl.dataset.group;
+    if (group === "parameters") request.parameters[ctl.dataset.name] = value;
+    else if (group === "initial") request.initial[ctl.dataset.name] = value;
+    else request[ctl.dataset.name] = value;
+  }
+  const method = form.querySelector('select[name="method"]');
+  if (method) request.method = method.value;
+  const rtol = form.querySelector('select[name="rtol"]');
+  if (rtol) request.rtol = Number(rtol.value);
+  return request;
+}
+
+export function resetControls(form) {
+  for (const ctl of form.querySelectorAll(".control")) setValue(ctl, Number(ctl.dataset.default));
+  for (const sel of form.querySelectorAll("select[data-default]")) sel.value = sel.dataset.default;
+}
+
+/** Set one control by name (e.g. "theta" for an initial angle); returns false if absent. */
+export function setControl(form, name, value) {
+  const ctl = form.querySelector(`.control[data-name="${CSS.escape(name)}"]`);
+  if (!ctl) return false;
+  setValue(ctl, value);
+  return true;
+}
+
+export function bindControls(form, onChange, delay = 350) {
+  let timer = null;
+  const fire = (now) => {
+    clearTimeout(timer);
+    const valid = [...form.querySelectorAll(".control")].every(check);
+    if (!valid) return;
+    timer = setTimeout(() => onChange(readRequest(form)), now ? 0 : delay);
+  };
+  for (const ctl of form.querySelectorAll(".control")) {
+    const { range, number } = parts(ctl);
+    range.value = String(toSlider(ctl, Number(number.value)));
+    setValueText(ctl, Number(number.value));
+    check(ctl);
+    range.addEventListener("input", () => {
+      const value = fromSlider(ctl, range.value);
+      number.value = tidy(value);
+      setValueText(ctl, value);
+      check(ctl);
+      fire(false);
+    });
+    number.addEventListener("input", () => {
+      if (check(ctl)) {
+        range.value = String(toSlider(ctl, Number(number.value)));
+        setValueText(ctl, Number(number.value));
+      }
+    });
+    number.addEventListener("change", () => fire(true));
+  }
+  for (const sel of form.querySelectorAll("select")) sel.addEventListener("change", () => fire(true));
+  form.addEventListener("submit", (event) => { event.preventDefault(); fire(true); });
+  const reset = form.querySelector('[data-action="reset"]');
+  if (reset) reset.addEventListener("click", () => { resetControls(form); fire(true); });
+  return { fire };
+}
+
+function el(tag, attrs = {}, text = "") {
+  const node = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) node.setAttribute(k, v);
+  if (text) node.textContent = text;
+  return node;
+}
+
+function control(group, c) {
+  const id = `ctl-${c.name}`;
+  const div = el("div", {
+    class: "control", "data-group": group, "data-name": c.name, "data-label": c.label, "data-unit": c.unit || "",
+    "data-min": c.min, "data-max": c.max, "data-log": c.log ? "true" : "false", "data-default": c.value,
+  });
+  const label = el("label", { id: `${id}-label`, for: `${id}-range` });
+  label.append(el("span", { class: "sym" }, c.label), " ", el("span", { class: "desc" }, c.description || ""));
+  const row = el("div", { class: "control-inputs" });
+  const range = el("input", { type: "range", id: `${id}-range`, min: "0", max: String(STEPS), step: "1",
+    "aria-labelledby": `${id}-label`, "aria-describedby": `${id}-hint` });
+  const number = el("input", { type: "number", id, name: c.name, min: c.min, max: c.max, step: "any",
+    value: c.value, inputmode: "decimal", "aria-labelledby": `${id}-label ${id}-unit`, "aria-describedby": `${id}-hint` });
+  row.append(range, number, el("span", { class: "unit", id: `${id}-unit` }, c.unit || "(no unit)"));
+  div.append(label, row, el("p", { class: "hint", id: `${id}-hint` }));
+  range.value = String(toSlider(div, Number(c.value)));
+  return div;
+}
+
+function select(name, labelText, options, value) {
+  const wrap = el("div", { class: "select" });
+  wrap.append(el("label", { for: `ctl-${name}` }, labelText));
+  const sel = el("select", { id: `ctl-${name}`, name, "data-default": value });
+  for (const o of options) sel.append(el("option", { value: o }, o));
+  sel.value = value;
+  wrap.append(sel);
+  return wrap;
+}
+
+export function buildControls(container, spec) {
+  container.replaceChildren();
+  const groups = [["parameters", "Parameters", spec.parameters], ["initial", "Initial conditions", spec.initial]];
+  for (const [group, legend, list] of groups) {
+    const fs = el("fieldset", { class: `controls-${group}` });
+    fs.append(el("legend", {}, legend));
+    for (const c of list) fs.append(control(group, c));
+    container.append(fs);
+  }
+  const run = el("fieldset", { class: "controls-run" });
+  run.append(el("legend", {}, "Integration"));
+  run.append(control("run", { name: "t_end", label: "t_end", unit: "s", description: "duration", ...spec.t_end }));
+  run.append(select("method", "Method", spec.methods, spec.methods[0]));
+  run.append(select("rtol", "Relative tolerance", spec.rtols, spec.default_rtol));
+  run.append(el("button", { type: "button", "data-action": "reset" }, "Reset to defaults"));
+  container.append(run);
+  for (const ctl of container.querySelectorAll(".control")) check(ctl);
+}

@@ -1,0 +1,133 @@
+/**
+ * derivation.js — typeset and render derivations with KaTeX (loaded by base.html).
+ *
+ *   typeset(root)                 render every .math element under root (its text
+ *                                 is the LaTeX; .math-display for display math); prose
+ *                                 with $…$ inside .prose-math elements goes through
+ *                                 KaTeX's auto-render.  Returns the number of errors.
+ *   renderDerivation(el, doc)     build the steps and the summary of a derivation
+ *                                 JSON (GET /api/scenes/{id}/derivation, or a user
+ *                                 system's) into el, with the same markup the server
+ *                                 renders for scene pages, then typeset it.
+ *   printReady()                  open every collapsed step while printing.
+ *
+ * KaTeX errors never throw: a bad formula shows as a .katex-error element, which
+ * the browser tests look for.
+ */
+
+const LONG_STEP = 420; // characters of LaTeX beyond which a step's math starts collapsed
+
+export function typeset(root = document) {
+  const katex = window.katex;
+  if (!katex) return 0;
+  for (const el of root.querySelectorAll(".math")) {
+    if (el.dataset.typeset === "1") continue;
+    const tex = el.textContent;
+    el.setAttribute("data-tex", tex);
+    katex.render(tex, el, { displayMode: el.classList.contains("math-display"), throwOnError: false });
+    el.dataset.typeset = "1";
+  }
+  if (window.renderMathInElement) {
+    for (const el of root.querySelectorAll(".prose-math")) {
+      if (el.dataset.typeset === "1") continue;
+      window.renderMathInElement(el, {
+        delimiters: [{ left: "$$", right: "$$", display: true }, { left: "$", right: "$", display: false }],
+        throwOnError: false,
+      });
+      el.dataset.typeset = "1";
+    }
+  }
+  return root.querySelectorAll(".katex-error").length;
+}
+
+function h(tag, attrs = {}, ...children) {
+  const el = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) {
+    if (k === "class") el.className = v;
+    else if (k === "text") el.textContent = v;
+    else el.setAttribute(k, v);
+  }
+  for (const c of children) if (c) el.append(c);
+  return el;
+}
+
+export function math(tex, display = false) {
+  return h(display ? "div" : "span", { class: display ? "math math-display" : "math", text: tex });
+}
+
+function stepItem(step, number) {
+  const li = h("li", { class: "step", id: `step-${number}` });
+  li.append(h("h3", { class: "step-title", text: step.title }));
+  li.append(h("p", { class: "explanation", text: step.explanation }));
+  if (step.latex.length > LONG_STEP) {
+    const details = h("details", { class: "long-step" });
+    details.append(h("summary", { text: `Show the full expression (${step.latex.length} characters of LaTeX)` }));
+    details.append(math(step.latex, true));
+    li.append(details);
+  } else {
+    li.append(math(step.latex, true));
+  }
+  return li;
+}
+
+function listOf(items) {
+  const ul = h("ul", { class: "math-list" });
+  for (const tex of items) ul.append(h("li", {}, math(tex, true)));
+  return ul;
+}
+
+const greek = new Set(["alpha", "beta", "gamma", "delta", "theta", "phi", "psi", "rho", "omega", "lambda", "mu",
+  "sigma", "tau", "chi", "xi", "eta", "zeta", "nu", "kappa", "epsilon", "iota"]);
+export function texName(name) {
+  const m = /^([A-Za-z]+?)(\d*)$/.exec(name);
+  if (!m) return name;
+  const stem = greek.has(m[1]) ? `\\${m[1]}` : m[1];
+  return m[2] ? `${stem}_{${m[2]}}` : stem;
+}
+
+/** The summary box of a derivation JSON, as a <section class="summary-box">. */
+export function summaryBox(doc) {
+  const box = h("section", { class: "summary-box", "aria-labelledby": "results-title" });
+  box.append(h("h2", { id: "results-title", text: "Results" }));
+  const dl = h("dl");
+  const add = (term, ...content) => { dl.append(h("dt", { text: term })); dl.append(h("dd", {}, ...content)); };
+  add("Equations of motion", listOf(doc.equations_of_motion.map((e) => e.latex)));
+  add("Accelerations", listOf(doc.coordinates.map((q) => `\\ddot{${texName(q)}} = ${doc.accelerations[q].latex}`)));
+  add("Generalized momenta", listOf(doc.coordinates.map((q) => `p_{${texName(q)}} = ${doc.momenta[q].latex}`)));
+  const conserved = h("ul", { class: "conserved" });
+  for (const c of doc.conserved || []) {
+    conserved.append(h("li", {}, math(`${c.latex_name || c.name} = ${c.latex}`, true), h("p", { class: "reason", text: c.reason })));
+  }
+  if (!(doc.conserved || []).length) conserved.append(h("li", { text: "Nothing is conserved in general." }));
+  add("Conserved quantities", conserved);
+  const hv = h("div", {}, h("p", { text: doc.hamiltonian_equals_energy ? "h = E." : "h ≠ E." }),
+    h("p", { class: "reason", text: doc.hamiltonian_energy_reason }));
+  if (!doc.hamiltonian_equals_energy && doc.energy_minus_hamiltonian) hv.append(math(`E - h = ${doc.energy_minus_hamiltonian.latex}`, true));
+  add("Hamiltonian and energy", hv);
+  box.append(dl);
+  return box;
+}
+
+/** Render a derivation JSON's steps and summary into container; returns the KaTeX error count. */
+export function renderDerivation(container, doc) {
+  container.replaceChildren();
+  const ol = h("ol", { class: "steps" });
+  doc.steps.forEach((s, i) => ol.append(stepItem(s, i + 1)));
+  container.append(h("section", { class: "derivation", "aria-labelledby": "derivation-title" },
+    h("h2", { id: "derivation-title", text: "Derivation, step by step" }), ol));
+  container.append(summaryBox(doc));
+  return typeset(container);
+}
+
+/** Open collapsed steps for printing, and close them again afterwards. */
+export function printReady() {
+  let opened = [];
+  window.addEventListener("beforeprint", () => {
+    opened = [...document.querySelectorAll("details:not([open])")];
+    for (const d of opened) d.open = true;
+  });
+  window.addEventListener("afterprint", () => {
+    for (const d of opened) d.open = false;
+    opened = [];
+  });
+}

@@ -1,0 +1,193 @@
+"""The HTML pages: every page renders, shows exactly the declared panels, loads nothing from the internet."""
+
+import json
+import math
+import re
+import xml.etree.ElementTree as ET
+from html.parser import HTMLParser
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+from app.scenes import SCENES
+from app.service.derivations import derivation_document
+from app.viz.chapter import SECTIONS, section_numbers, table_of_contents
+from app.viz.exprtree import TreeError, evaluate, tree
+from app.viz.names import label
+from app.viz.page_model import PANELS
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+class Tags(HTMLParser):
+    """Every start tag with its attributes, and the text of the page."""
+
+    def __init__(self):
+        super().__init__()
+        self.tags: list[tuple[str, dict[str, str]]] = []
+        self.text: list[str] = []
+
+    def handle_starttag(self, tag, attrs):
+        self.tags.append((tag, {k: v or "" for k, v in attrs}))
+
+    def handle_data(self, data):
+        self.text.append(data)
+
+
+def parse(html: str) -> Tags:
+    tags = Tags()
+    tags.feed(html)
+    return tags
+
+
+def declared_panels(scene_id: str) -> list[str]:
+    doc = derivation_document(scene_id)
+    return list((doc.get("scene") or {}).get("panels") or SCENES[scene_id].panels)
+
+
+@pytest.fixture(scope="module")
+def pages(client):
+    urls = ["/", *(f"/scenes/{sid}" for sid in SCENES)]
+    return {url: client.get(url) for url in urls}
+
+
+def test_every_page_renders(pages):
+    for url, response in pages.items():
+        assert response.status_code == 200, url
+        assert response.headers["content-type"].startswith("text/html")
+        assert "<h1" in response.text
+
+
+def test_contents_lists_every_scene_in_section_order(pages):
+    html = pages["/"].text
+    for sid in SCENES:
+        assert f'href="/scenes/{sid}"' in html
+    positions = [html.index(f'id="section-{s.number}"') for s in SECTIONS]
+    assert positions == sorted(positions)
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_panels_rendered_are_exactly_the_declared_ones(pages, scene_id):
+    tags = parse(pages[f"/scenes/{scene_id}"].text)
+    rendered = [a["data-panel"] for t, a in tags.tags if "data-panel" in a]
+    declared = declared_panels(scene_id)
+    assert set(declared) <= set(PANELS), f"unknown panel in {declared}"
+    assert rendered == declared
+    data = json.loads(
+        re.search(
+            r'<script type="application/json" id="scene-data">(.*?)</script>', pages[f"/scenes/{scene_id}"].text, re.S
+        ).group(1)
+    )
+    assert data["panels"] == declared
+    if any(p.startswith("animation") for p in declared):
+        assert data["mechanism"]["dim"] == (3 if "animation-3d" in declared else 2)
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_scene_page_shows_every_step_and_the_results(pages, scene_id):
+    html = pages[f"/scenes/{scene_id}"].text
+    tags = parse(html)
+    doc = derivation_document(scene_id)
+    steps = [a for t, a in tags.tags if t == "li" and "step" in a.get("class", "").split()]
+    assert len(steps) == len(doc["steps"])
+    text = "".join(tags.text)
+    for step in doc["steps"]:
+        assert step["title"] in text and step["explanation"] in text
+        assert step["latex"] in text  # Jinja escapes & and <, which the parser undoes
+    for eq in doc["equations_of_motion"]:
+        assert eq["latex"] in text
+    assert doc["hamiltonian_energy_reason"] in text
+    for e in doc.get("errata") or []:
+        assert e["chapter"] in text and e["correct"] in text and e["reason"] in text
+    for c in doc.get("constraint_forces") or []:
+        assert c["latex"] in text and c["convention"] in text
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_every_control_has_a_label(pages, scene_id):
+    tags = parse(pages[f"/scenes/{scene_id}"].text)
+    label_for = {a["for"] for t, a in tags.tags if t == "label" and "for" in a}
+    ids = {a["id"] for t, a in tags.tags if "id" in a}
+    controls = [(t, a) for t, a in tags.tags if t in ("input", "select", "textarea")]
+    assert controls
+    for t, a in controls:
+        named = (
+            a.get("id") in label_for
+            or a.get("aria-label")
+            or (a.get("aria-labelledby") and all(i in ids for i in a["aria-labelledby"].split()))
+        )
+        assert named, f"{t} {a} has no label"
+    doc = derivation_document(scene_id)
+    names = {a.get("name") for t, a in controls}
+    assert set(doc["parameters"]) <= names
+    assert {f"{q}{s}" for q in doc["coordinates"] for s in ("", "_dot")} <= names
+
+
+def test_no_page_or_module_loads_anything_from_the_internet(pages, client):
+    for url, response in pages.items():
+        for tag, attrs in parse(response.text).tags:
+            for key in ("src", "href"):
+                value = attrs.get(key, "")
+                assert not re.match(r"^(https?:)?//", value), f"{url}: <{tag} {key}={value}>"
+                if tag in ("script", "link") and key in attrs:
+                    assert value.startswith("/static/"), f"{url}: <{tag} {key}={value}>"
+    own = [p for p in (ROOT / "static").rglob("*") if p.is_file() and "vendor" not in p.parts]
+    assert any(p.suffix == ".js" for p in own)
+    for path in own:
+        text = path.read_text()
+        assert not re.search(r"""(import|from|fetch\(|url\()\s*["'(]?(https?:)?//""", text), path
+        rel = path.relative_to(ROOT / "static").as_posix()
+        assert client.get(f"/static/{rel}").status_code == 200
+
+
+def test_unknown_scene_is_a_404_page_listing_the_scenes(client):
+    response = client.get("/scenes/no-such-scene")
+    assert response.status_code == 404
+    assert response.headers["content-type"].startswith("text/html")
+    assert "no-such-scene" in response.text
+    for sid in SCENES:
+        assert f'href="/scenes/{sid}"' in response.text
+    # an id is echoed escaped, never as markup
+    response = client.get("/scenes/%3Cscript%3Ealert(1)%3C%2Fscript%3E")
+    assert response.status_code == 404 and "<script>alert" not in response.text
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_set_up_diagram_labels_the_coordinates_and_parameters(pages, scene_id):
+    html = pages[f"/scenes/{scene_id}"].text
+    svg = re.search(r'<svg class="diagram".*?</svg>', html, re.S).group(0)
+    root = ET.fromstring(svg)  # well-formed
+    ns = "{http://www.w3.org/2000/svg}"
+    assert root.find(f"{ns}title").text and root.find(f"{ns}desc").text
+    words = " ".join(t.text or "" for t in root.iter(f"{ns}text"))
+    doc = derivation_document(scene_id)
+    for name in [*doc["coordinates"], *doc["parameters"]]:
+        assert label(name) in words, f"{scene_id}: {label(name)} is not labelled in {words!r}"
+
+
+def test_every_scene_is_in_exactly_one_section():
+    scenes = [{"id": s.id, "section": s.section, "panels": list(s.panels)} for s in SCENES.values()]
+    toc = table_of_contents(scenes)
+    owners = {sid: [s["number"] for s in toc if sid in [x["id"] for x in s["scenes"]]] for sid in SCENES}
+    assert all(len(v) == 1 for v in owners.values()), owners
+    assert section_numbers("§ 4.6–4.7") == ["4.6", "4.7"]
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_expression_trees_evaluate_like_sympy(scene_id):
+    # the browser evaluates these trees; check them against SymPy on the served strings
+    doc = derivation_document(scene_id)
+    names = [*doc["coordinates"], *(f"{q}_dot" for q in doc["coordinates"]), *doc["parameters"], "t"]
+    symbols = {n: sp.Symbol(n, real=True) for n in names}
+    env = {n: 0.3 + 0.17 * i for i, n in enumerate(names)}
+    exprs = [doc["lagrangian"], doc["hamiltonian"], *doc["momenta"].values(), *doc["accelerations"].values()]
+    for pair in exprs:
+        expected = float(sp.sympify(pair["sympy"], locals=symbols).subs({symbols[k]: v for k, v in env.items()}))
+        assert math.isclose(evaluate(tree(pair["sympy"], names), env), expected, rel_tol=1e-9, abs_tol=1e-12)
+
+
+@pytest.mark.parametrize("text", ["__import__('os')", "x.real", "x[0]", "lambda: 1", "f(x)", "sin(x, y)", ""])
+def test_expression_trees_refuse_anything_but_arithmetic(text):
+    with pytest.raises(TreeError):
+        tree(text, ["x", "y"])
