@@ -9,7 +9,6 @@ from app.engine.derive import Derivation
 from app.engine.report import Printer, build_steps, constraint_steps, new_lagrangian, transform_steps
 from app.engine.report import display as _show
 from app.engine.transform import Transformed, transform
-from app.scenes import SCENES
 from app.scenes.types import Parameter, Scene
 
 
@@ -21,20 +20,13 @@ def parameters_json(parameters: tuple[Parameter, ...]) -> dict[str, dict[str, An
     }
 
 
-def registered_scene(d: Derivation) -> Scene | None:
-    """The chapter scene whose declaration this derivation came from, if any."""
-    return next((s for s in SCENES.values() if s.system is d.system), None)
-
-
 def derivation_json(d: Derivation, scene: Scene | None = None) -> dict[str, Any]:
     """Everything derived, with each expression as a sympy string and LaTeX.
 
-    ``scene`` (by default the registered scene that declares ``d.system``)
-    adds the scene block and the chapter's errata.
+    ``scene``, for a chapter scene, adds the scene block and the chapter's errata.
     """
     table, eqs, en, red = d.table, d.equations, d.energetics, d.reduction
     pr = Printer(table.latex_names())
-    scene = scene or registered_scene(d)
     forces = constraint_forces(d)
     transformed = transform(d.system)
     result: dict[str, Any] = {

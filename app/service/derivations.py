@@ -50,7 +50,7 @@ def derivation(scene_id: str) -> Derivation:
 def derivation_document(scene_id: str) -> dict[str, Any]:
     """The contract JSON of a scene's derivation (memory and disk cached)."""
     s = scene(scene_id)
-    return _json_cache.get(scene_id, lambda: {"id": s.id, **derivation_json(derivation(scene_id))})
+    return _json_cache.get(scene_id, lambda: {"id": s.id, **derivation_json(derivation(scene_id), scene=s)})
 
 
 def scene_summary(s: Scene) -> dict[str, Any]:
