@@ -18,11 +18,12 @@ energy over very long runs.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, types
 
 from app.numerics.kernels.common import (
     BOUND,
     DONE,
+    F64,
     I64,
     JIT,
     MAT,
@@ -38,6 +39,48 @@ from app.numerics.kernels.common import (
 # Slots of the state vector ``st``.
 INTERVAL, SUBSTEP, STEPS, NFEV, STARTED = range(5)
 STATE_SIZE = 5
+
+
+@njit(types.void(RHS, VEC, F64, F64, VEC, VEC, VEC, VEC, VEC), **JIT)
+def composed_step(f, k, t, h, weights, y, acc, comp, work):
+    """One composed step of size h: a kick-drift-kick Verlet step of size w h for each weight w."""
+    n = y.size // 2
+    for w in weights:
+        hw = w * h
+        for i in range(n):
+            compensated_add(y, comp, n + i, 0.5 * hw * acc[i])
+        for i in range(n):
+            compensated_add(y, comp, i, hw * y[n + i])
+        f(t, y, k, work)
+        acc[:] = work[n:]
+        for i in range(n):
+            compensated_add(y, comp, n + i, 0.5 * hw * acc[i])
+
+
+@njit(types.void(RHS, VEC, VEC, VEC, MAT, F64, VEC, F64, F64, VEC), **JIT)
+def local_errors(f, k, weights, times, states, h, atol, rtol, order, out):
+    """Scaled local error of one step from each state, by step doubling (see methods.symplectic)."""
+    m = states.shape[1]
+    n = m // 2
+    work = np.empty(m)
+    for s in range(states.shape[0]):
+        t = times[s]
+        one = states[s].copy()
+        two = states[s].copy()
+        acc1 = np.empty(n)
+        f(t, one, k, work)
+        acc1[:] = work[n:]
+        acc2 = acc1.copy()
+        composed_step(f, k, t, h, weights, one, acc1, np.zeros(m), work)
+        comp = np.zeros(m)
+        composed_step(f, k, t, 0.5 * h, weights, two, acc2, comp, work)
+        composed_step(f, k, t + 0.5 * h, 0.5 * h, weights, two, acc2, comp, work)
+        total = 0.0
+        for i in range(m):
+            scale = atol[i] + rtol * max(abs(states[s, i]), abs(two[i]))
+            total += ((one[i] - two[i]) / (1.0 - 2.0**-order) / scale) ** 2
+        err = np.sqrt(total / m)
+        out[s] = err if np.isfinite(err) else np.inf
 
 
 @njit(I64(RHS, VEC, VEC, VEC, I64, VEC, I64, VEC, VEC, VEC, VEC, MAT), **JIT)
@@ -63,17 +106,7 @@ def run(f, k, t_out, weights, substeps, bound, chunk, y, acc, comp, st, Y):
                 st[INTERVAL] = j
                 st[SUBSTEP] = sub
                 return RUNNING
-            t = t_out[j] + sub * h
-            for w in weights:
-                hw = w * h
-                for i in range(n):
-                    compensated_add(y, comp, n + i, 0.5 * hw * acc[i])
-                for i in range(n):
-                    compensated_add(y, comp, i, hw * y[n + i])
-                f(t, y, k, work)
-                acc[:] = work[n:]
-                for i in range(n):
-                    compensated_add(y, comp, n + i, 0.5 * hw * acc[i])
+            composed_step(f, k, t_out[j] + sub * h, h, weights, y, acc, comp, work)
             st[NFEV] += weights.size
             st[STEPS] += 1
             sub += 1

@@ -19,11 +19,12 @@ first half of F.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, types
 
 from app.numerics.kernels.common import (
     BOUND,
     DONE,
+    F64,
     I64,
     JIT,
     MAT,
@@ -42,6 +43,90 @@ INTERVAL, SUBSTEP, STEPS, NFEV, STARTED, HAVE_PREV, SWEEPS, MAX_SWEEPS_SEEN = ra
 STATE_SIZE = 8
 
 
+@njit(types.boolean(RHS, VEC, F64, F64, MAT, VEC, VEC, MAT, VEC, VEC, VEC, MAT, MAT, VEC), **JIT)
+def gl_step(f, k, t, h, A, b, c, E, scale_floor, z, comp, K, Kprev, st):
+    """One Gauss-Legendre step of size h in place on z; False when the stage iteration fails."""
+    m = z.size
+    s = b.size
+    Knew = np.empty((s, m))
+    Z = np.empty(m)
+    # first guess of the stage slopes
+    if st[HAVE_PREV] != 0.0:
+        for i in range(s):
+            for col in range(m):
+                acc = 0.0
+                for jj in range(s):
+                    acc += E[i, jj] * Kprev[jj, col]
+                K[i, col] = acc
+    else:
+        f(t, z, k, Z)
+        st[NFEV] += 1
+        for i in range(s):
+            K[i, :] = Z
+    previous = np.inf
+    for sweep in range(MAX_SWEEPS):
+        # K_i <- F(t + c_i h, z + h sum_j a_ij K_j)
+        for i in range(s):
+            for col in range(m):
+                acc = 0.0
+                for jj in range(s):
+                    acc += A[i, jj] * K[jj, col]
+                Z[col] = z[col] + h * acc
+            f(t + c[i] * h, Z, k, Knew[i])
+        st[NFEV] += s
+        st[SWEEPS] += 1
+        change = 0.0
+        for i in range(s):
+            for col in range(m):
+                d = abs(h * (Knew[i, col] - K[i, col])) / (abs(z[col]) + scale_floor[col])
+                if not d <= change:
+                    change = d
+        K[:, :] = Knew
+        if sweep + 1 > st[MAX_SWEEPS_SEEN]:
+            st[MAX_SWEEPS_SEEN] = sweep + 1
+        converged = change <= 1e-15 or (sweep >= 2 and change >= previous and change <= 1e-10)
+        if converged:
+            # z_new = z + h sum_i b_i K_i
+            for col in range(m):
+                acc = 0.0
+                for i in range(s):
+                    acc += b[i] * K[i, col]
+                compensated_add(z, comp, col, h * acc)
+            Kprev[:, :] = K
+            st[HAVE_PREV] = 1.0
+            return True
+        if not np.isfinite(change):
+            return False
+        previous = change
+    return False
+
+
+@njit(types.void(RHS, VEC, MAT, VEC, VEC, MAT, VEC, MAT, F64, VEC, F64, F64, VEC), **JIT)
+def local_errors(f, k, A, b, c, E, times, states, h, atol, rtol, order, out):
+    """Scaled local error of one step from each state z = (q, p), by step doubling."""
+    m = states.shape[1]
+    s = b.size
+    st = np.zeros(STATE_SIZE)
+    K = np.empty((s, m))
+    Kprev = np.zeros((s, m))
+    for r in range(states.shape[0]):
+        t = times[r]
+        one = states[r].copy()
+        two = states[r].copy()
+        st[HAVE_PREV] = 0.0
+        ok = gl_step(f, k, t, h, A, b, c, E, atol, one, np.zeros(m), K, Kprev, st)
+        st[HAVE_PREV] = 0.0
+        comp = np.zeros(m)
+        ok = ok and gl_step(f, k, t, 0.5 * h, A, b, c, E, atol, two, comp, K, Kprev, st)
+        ok = ok and gl_step(f, k, t + 0.5 * h, 0.5 * h, A, b, c, E, atol, two, comp, K, Kprev, st)
+        total = 0.0
+        for i in range(m):
+            scale = atol[i] + rtol * max(abs(states[r, i]), abs(two[i]))
+            total += ((one[i] - two[i]) / (1.0 - 2.0**-order) / scale) ** 2
+        err = np.sqrt(total / m)
+        out[r] = err if ok and np.isfinite(err) else np.inf
+
+
 @njit(I64(RHS, VEC, VEC, MAT, VEC, VEC, MAT, I64, VEC, VEC, I64, VEC, VEC, MAT, VEC, MAT), **JIT)
 def run(f, k, t_out, A, b, c, E, substeps, bound, scale_floor, chunk, z, comp, Kprev, st, Y):
     m = z.size
@@ -49,8 +134,6 @@ def run(f, k, t_out, A, b, c, E, substeps, bound, scale_floor, chunk, z, comp, K
     s = b.size
     n_out = t_out.size
     K = np.empty((s, m))
-    Knew = np.empty((s, m))
-    Z = np.empty(m)
     work = np.empty(m)
     if st[STARTED] == 0.0:
         f(t_out[0], z, k, work)
@@ -68,63 +151,10 @@ def run(f, k, t_out, A, b, c, E, substeps, bound, scale_floor, chunk, z, comp, K
                 st[INTERVAL] = j
                 st[SUBSTEP] = sub
                 return RUNNING
-            t = t_out[j] + sub * h
-            # first guess of the stage slopes
-            if st[HAVE_PREV] != 0.0:
-                for i in range(s):
-                    for col in range(m):
-                        acc = 0.0
-                        for jj in range(s):
-                            acc += E[i, jj] * Kprev[jj, col]
-                        K[i, col] = acc
-            else:
-                f(t, z, k, work)
-                st[NFEV] += 1
-                for i in range(s):
-                    K[i, :] = work
-            previous = np.inf
-            converged = False
-            for sweep in range(MAX_SWEEPS):
-                # K_i <- F(t + c_i h, z + h sum_j a_ij K_j)
-                for i in range(s):
-                    for col in range(m):
-                        acc = 0.0
-                        for jj in range(s):
-                            acc += A[i, jj] * K[jj, col]
-                        Z[col] = z[col] + h * acc
-                    f(t + c[i] * h, Z, k, Knew[i])
-                st[NFEV] += s
-                st[SWEEPS] += 1
-                change = 0.0
-                for i in range(s):
-                    for col in range(m):
-                        d = abs(h * (Knew[i, col] - K[i, col])) / (abs(z[col]) + scale_floor[col])
-                        if not d <= change:
-                            change = d
-                K[:, :] = Knew
-                if sweep + 1 > st[MAX_SWEEPS_SEEN]:
-                    st[MAX_SWEEPS_SEEN] = sweep + 1
-                if change <= 1e-15:
-                    converged = True
-                    break
-                if sweep >= 2 and change >= previous and change <= 1e-10:
-                    converged = True  # round-off level: further sweeps only shuffle the last bits
-                    break
-                if not np.isfinite(change):
-                    break
-                previous = change
-            if not converged:
+            if not gl_step(f, k, t_out[j] + sub * h, h, A, b, c, E, scale_floor, z, comp, K, Kprev, st):
                 st[INTERVAL] = j
                 st[SUBSTEP] = sub
                 return NO_CONVERGENCE
-            # z_new = z + h sum_i b_i K_i
-            for col in range(m):
-                acc = 0.0
-                for i in range(s):
-                    acc += b[i] * K[i, col]
-                compensated_add(z, comp, col, h * acc)
-            Kprev[:, :] = K
-            st[HAVE_PREV] = 1.0
             st[STEPS] += 1
             sub += 1
             done_here += 1

@@ -69,6 +69,16 @@ class Method:
     compiled = False
     summary = ""
 
+    kernel_module = ""  # the compiled loop this method runs (imported, so compiled or loaded, by prepare)
+
+    def prepare(self, system: NumericSystem) -> None:
+        """Compile (or load from the disk cache) what the method runs, before any clock starts."""
+        if self.compiled:
+            import importlib
+
+            system.compiled()
+            importlib.import_module(self.kernel_module)
+
     def applicable(self, system: NumericSystem) -> str | None:
         """None when the method can integrate the system; otherwise why not."""
         return None

@@ -12,6 +12,7 @@ class CompiledDOP853(Method):
     family = "explicit"
     order = 8
     compiled = True
+    kernel_module = "app.numerics.kernels.dop853"
     summary = "Dormand-Prince 8(5,3), adaptive steps, 7th-order dense output; the loop runs in numba"
 
     def _run(self, problem: Problem, stop_on_stiff: bool = False) -> Trajectory:

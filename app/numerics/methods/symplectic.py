@@ -53,17 +53,15 @@ class FixedStep(Method):
         """Run the compiled loop over sample times t; return (Y, filled, status, steps, nfev, extra)."""
         raise NotImplementedError
 
-    def local_error(self, problem: Problem, t: float, y: np.ndarray, h: float) -> float:
-        """Scaled local error of one step of size h from (t, y), by step doubling."""
-        grid = np.array([t, t + h])
-        one = self.kernel(problem, grid, self.start_state(problem, t, y), 1, False)
-        two = self.kernel(problem, grid, self.start_state(problem, t, y), 2, False)
-        y1, y2 = one[0][-1], two[0][-1]
-        if one[1] < 2 or two[1] < 2 or not (np.all(np.isfinite(y1)) and np.all(np.isfinite(y2))):
-            return math.inf
-        scale = problem.atol + problem.rtol * np.maximum(np.abs(y), np.abs(y2))
-        err = (y1 - y2) / (1.0 - 2.0**-self.order) / scale
-        return float(np.sqrt(np.mean(err**2)))
+    def local_errors(self, problem: Problem, times: np.ndarray, states: np.ndarray, h: float) -> np.ndarray:
+        """Scaled local error of one step of size h from each (t, y), by step doubling (compiled)."""
+        raise NotImplementedError
+
+    def prepare(self, system: NumericSystem) -> None:
+        from app.numerics.methods.explicit import CompiledDOP853
+
+        super().prepare(system)
+        CompiledDOP853().prepare(system)  # the pilot pass
 
     def pilot(self, problem: Problem) -> tuple[np.ndarray, np.ndarray, float]:
         """States along the motion and a first step size, from a quick compiled DOP853 pass."""
@@ -79,8 +77,10 @@ class FixedStep(Method):
         pick = np.unique(np.linspace(0, len(t_pilot) - 1, min(PILOT_STATES, len(t_pilot))).astype(int))
         spacing = float(np.max(np.diff(problem.t)))
         h = min(spacing, mean_step)
+        times = np.ascontiguousarray(t_pilot[pick], dtype=float)
+        states = np.ascontiguousarray(y_pilot[pick], dtype=float)
         for _ in range(8):
-            err = max(self.local_error(problem, float(t_pilot[i]), y_pilot[i], h) for i in pick)
+            err = float(np.max(self.local_errors(problem, times, states, h)))
             if err == 0.0:
                 factor = 4.0
             elif not math.isfinite(err):
@@ -123,6 +123,7 @@ class FixedStep(Method):
 
 class Composition(FixedStep):
     weights = np.array([1.0])
+    kernel_module = "app.numerics.kernels.composition"
 
     def applicable(self, system: NumericSystem) -> str | None:
         if system.separable:
@@ -131,6 +132,14 @@ class Composition(FixedStep):
             "it needs a separable Hamiltonian H = T(p) + U(q) with a constant mass matrix and no "
             "velocity- or time-dependent forces; use Gauss-Legendre (symplectic for any Hamiltonian)"
         )
+
+    def local_errors(self, problem: Problem, times: np.ndarray, states: np.ndarray, h: float) -> np.ndarray:
+        from app.numerics.kernels import composition as kc
+
+        out = np.empty(len(times))
+        rhs = problem.system.compiled().rhs
+        kc.local_errors(rhs, problem.k, self.weights, times, states, h, problem.atol, problem.rtol, self.order, out)
+        return out
 
     def kernel(self, problem: Problem, t: np.ndarray, state: np.ndarray, substeps: int, chunked: bool):
         from app.numerics.kernels import composition as kc
@@ -171,6 +180,7 @@ class Yoshida4(Composition):
 
 class GaussLegendre(FixedStep):
     name = "Gauss-Legendre"
+    kernel_module = "app.numerics.kernels.gauss"
     stages = 3
     order = 6
     summary = "3-stage Gauss-Legendre collocation on (q, p), order 6, symplectic for any Hamiltonian, fixed step"
@@ -183,6 +193,35 @@ class GaussLegendre(FixedStep):
         n = problem.system.n
         return np.concatenate([y[:n], problem.system.momenta(t, y, problem.k)])
 
+    def local_errors(self, problem: Problem, times: np.ndarray, states: np.ndarray, h: float) -> np.ndarray:
+        from app.numerics.kernels import gauss as kg
+
+        # errors measured on z = (q, p), the variables the method advances
+        z = np.array([self.start_state(problem, t, y) for t, y in zip(times, states, strict=True)])
+        out = np.empty(len(times))
+        ham = problem.system.compiled().ham
+        kg.local_errors(
+            ham,
+            problem.k,
+            self.A,
+            self.b,
+            self.c,
+            self.E,
+            times,
+            z,
+            h,
+            self.floor(problem),
+            problem.rtol,
+            self.order,
+            out,
+        )
+        return out
+
+    def floor(self, problem: Problem) -> np.ndarray:
+        """Absolute tolerance on z = (q, p): atol for q, and for p the largest atol."""
+        n = problem.system.n
+        return np.concatenate([problem.atol[:n], np.full(n, float(np.max(problem.atol)))])
+
     def kernel(self, problem: Problem, t: np.ndarray, state: np.ndarray, substeps: int, chunked: bool):
         from app.numerics.kernels import gauss as kg
 
@@ -192,7 +231,7 @@ class GaussLegendre(FixedStep):
         Kprev = np.zeros((self.stages, m))
         st = np.zeros(kg.STATE_SIZE)
         Y = np.empty((t.size, m))
-        floor = np.concatenate([problem.atol[: m // 2], np.full(m // 2, float(np.max(problem.atol)))])
+        floor = self.floor(problem)
         args = (problem.k, t, self.A, self.b, self.c, self.E, substeps, problem.bound, floor)
         if chunked:
             status = drive(
