@@ -36,9 +36,3 @@ def label(name: str) -> str:
         head, _, tail = name.partition("_")
         return _base(head) + "_" + _base(tail)
     return _base(name)
-
-
-def is_angle(name: str) -> bool:
-    """Greek-named coordinates are angles (the chapter's convention); others are lengths."""
-    match = _TRAILING_DIGITS.match(name)
-    return (match.group(1) if match else name) in GREEK

@@ -10,13 +10,14 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from collections.abc import Sequence
 from typing import Any
 
 from app.viz.diagrams import diagram
 from app.viz.exprtree import maybe_tree
 from app.viz.mechanism import mechanism
-from app.viz.names import is_angle, label
+from app.viz.names import label
 
 PANELS = (
     "animation-2d",
@@ -132,12 +133,26 @@ def _fmt(x: float) -> str:
     return f"{x:.6g}"
 
 
-def _initial_controls(doc: dict[str, Any], initial: dict[str, float], nonnegative: Sequence[str]) -> list[dict]:
+def angles(doc: dict[str, Any], particles: Sequence[tuple[str, Sequence[str]]] = ()) -> set[str]:
+    """Coordinates that are angles: each appears alone as the argument of sin, cos or tan somewhere in the set-up."""
+    texts = [c for _, pos in particles for c in pos]
+    texts += [(doc.get(k) or {}).get("sympy", "") for k in ("lagrangian", "potential", "kinetic")]
+    found = set()
+    for q in doc["coordinates"]:
+        pattern = re.compile(rf"\b(sin|cos|tan)\(\s*-?{re.escape(q)}\s*\)")
+        if any(pattern.search(t or "") for t in texts):
+            found.add(q)
+    return found
+
+
+def _initial_controls(
+    doc: dict[str, Any], initial: dict[str, float], nonnegative: Sequence[str], angular: set[str]
+) -> list[dict]:
     lengths = [p["default"] for p in doc["parameters"].values() if p.get("unit") == "m" and p["default"] > 0]
     scale = max([1.0, *lengths])
     controls = []
     for q in doc["coordinates"]:
-        angle = is_angle(q)
+        angle = q in angular
         value, rate = float(initial.get(q, 0.0)), float(initial.get(f"{q}_dot", 0.0))
         if angle:
             lo, hi = -math.pi, math.pi
@@ -209,9 +224,9 @@ def _reduction(doc: dict[str, Any]) -> dict[str, Any] | None:
     return out if all(x is not None for x in essential) else None
 
 
-def _client(doc, info, reduction, spec, methods, nonnegative) -> dict[str, Any]:
+def _client(doc, info, reduction, spec, methods, nonnegative, angular) -> dict[str, Any]:
     names = _names(doc)
-    units = {q: "rad" if is_angle(q) else "m" for q in doc["coordinates"]}
+    units = {q: "rad" if q in angular else "m" for q in doc["coordinates"]}
     conserved = [
         {"name": c["name"], "label": label(c["name"]), "tree": maybe_tree(c.get("sympy"), names)}
         for c in doc.get("conserved", [])
@@ -278,7 +293,8 @@ def scene_page(
     panels = _panels(declared, doc, reduction, spec)
     info = {**info, "panels": panels}
     defaults = {k: v["default"] for k, v in doc["parameters"].items()}
-    client = _client(doc, info, reduction, spec, methods, nonnegative)
+    angular = angles(doc, particles)
+    client = _client(doc, info, reduction, spec, methods, nonnegative, angular)
     return {
         "info": info,
         "declared_panels": declared,
@@ -297,7 +313,7 @@ def scene_page(
         "errata": doc.get("errata") or [],
         "transformed": _transformed(doc),
         "parameters": _parameter_controls(doc),
-        "initial": _initial_controls(doc, info.get("initial", {}), nonnegative),
+        "initial": _initial_controls(doc, info.get("initial", {}), nonnegative, angular),
         "t_end": {
             "value": _fmt(info.get("t_end", 10.0)),
             "min": "0.5",

@@ -20,8 +20,8 @@ const PALETTE = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a", "#00838f", "#8d6e00
 
 function layout(extra = {}) {
   return {
-    margin: { l: 64, r: 16, t: 10, b: 44 }, height: 320, font: { size: 13 },
-    paper_bgcolor: "#fff", plot_bgcolor: "#fff", legend: { orientation: "h", y: 1.12, x: 0 },
+    margin: { l: 64, r: 16, t: 24, b: 44 }, height: 340, font: { size: 13 },
+    paper_bgcolor: "#fff", plot_bgcolor: "#fff", legend: { orientation: "h", x: 0, y: 1.02, yanchor: "bottom" },
     hovermode: "x unified", ...extra,
   };
 }
@@ -121,7 +121,8 @@ class ConstraintForcePanel extends TimePanel {
     });
     this.drawSeries(run, top, null, "force (N)");
     Plotly.relayout(this.plot, { "shapes[1]": { type: "line", xref: "paper", x0: 0, x1: 1, y0: 0, y1: 0, line: { color: "#57606a", width: 1 } } });
-    this.readout.textContent = notes.join(" ") || `${top.length} constraint force(s) along the run.`;
+    const ranges = top.filter((s) => !s.name.includes("slack")).map((s) => `${capital(s.name)} ranges from ${fmt(Math.min(...finite(s.values)))} to ${fmt(Math.max(...finite(s.values)))} N.`);
+    this.readout.textContent = [...notes, ...ranges].join(" ");
     seriesTable(this.summary, "Constraint forces over the run (N)", run.t, top.filter((s) => !s.name.includes("slack")));
   }
 }

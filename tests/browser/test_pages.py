@@ -1,0 +1,176 @@
+"""The pages in headless Chromium: they load cleanly, typeset, animate, re-simulate, and work from the keyboard."""
+
+from __future__ import annotations
+
+import pytest
+
+from app.scenes import SCENES
+
+pytestmark = pytest.mark.browser
+
+READY = '#run-status[data-state="ready"]'
+
+
+def open_scene(page, scene_id: str) -> None:
+    page.goto(f"/scenes/{scene_id}")
+    page.wait_for_selector(READY, state="attached")
+
+
+def trace_values(page, selector: str, trace: int, key: str = "x") -> list:
+    return page.evaluate(
+        "([sel, i, key]) => Array.from(document.querySelector(sel).data[i][key] || [])", [selector, trace, key]
+    )
+
+
+def test_contents_page(page, artifacts):
+    page.goto("/")
+    page.wait_for_load_state("load")
+    assert page.locator(".card").count() == len(SCENES)
+    assert page.locator("svg.diagram").count() == len(SCENES)
+    page.screenshot(path=artifacts / "contents.png", full_page=True)
+    assert page.console_errors == []
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_scene_page_loads_typesets_and_draws_every_panel(page, artifacts, scene_id):
+    open_scene(page, scene_id)
+    assert page.locator(".katex-error").count() == 0
+    assert page.evaluate("document.body.dataset.katexErrors") == "0"
+    typeset = page.locator(".math .katex").count()
+    assert typeset == page.locator(".math").count() > 0
+    for section in page.locator("[data-panel]").all():
+        kind = section.get_attribute("data-panel")
+        plot = section.locator(".plot")
+        if kind == "work-precision":
+            continue  # drawn when scrolled into view: see test_work_precision_chart
+        assert plot.locator(".main-svg").count() > 0, f"{kind} was not drawn"
+        assert page.evaluate("(el) => el.data.length", plot.element_handle()) > 0, f"{kind} has no data"
+        if not kind.startswith("animation"):
+            assert section.locator(".readout").inner_text().strip(), f"{kind} has no text alternative"
+            assert section.locator(".data-summary table").count() == 1
+    page.screenshot(path=artifacts / f"scene-{scene_id}.png", full_page=True)
+    assert page.console_errors == []
+
+
+def test_animation_plays_and_moves_the_cursors(page, artifacts):
+    open_scene(page, "simple-pendulum")
+    player = "[data-panel=animation-2d] .plot"
+    bodies = page.evaluate(f"document.querySelector('{player}').data.findIndex((t) => t.name === 'bob')")
+    start = trace_values(page, player, bodies)
+    cursor = page.evaluate("document.querySelector('[data-panel=energy] .plot').layout.shapes[0].x0")
+    page.click("[data-panel=animation-2d] [data-action=play]")
+    page.wait_for_timeout(900)
+    moving = trace_values(page, player, bodies)
+    page.click("[data-panel=animation-2d] [data-action=play]")  # pause
+    page.wait_for_timeout(300)
+    assert moving != start
+    assert page.get_attribute("[data-panel=animation-2d] [data-action=play]", "aria-pressed") == "false"
+    paused = trace_values(page, player, bodies)
+    page.wait_for_timeout(300)
+    assert trace_values(page, player, bodies) == paused
+    assert page.evaluate("document.querySelector('[data-panel=energy] .plot').layout.shapes[0].x0") > cursor
+    # scrubbing with the keyboard
+    page.focus("[data-panel=animation-2d] input.scrub")
+    page.keyboard.press("End")
+    page.wait_for_timeout(300)
+    t_end = page.evaluate("document.querySelector('[data-panel=energy] .plot').layout.shapes[0].x0")
+    assert t_end == pytest.approx(SCENES["simple-pendulum"].t_end)
+    assert page.inner_text("[data-panel=animation-2d] output.time") == f"t = {t_end:.2f} s"
+    page.locator("[data-panel=animation-2d]").screenshot(path=artifacts / "animation.png")
+    assert page.console_errors == []
+
+
+def test_moving_a_slider_resimulates_without_reloading(page, artifacts):
+    open_scene(page, "simple-pendulum")
+    page.evaluate("window.notReloaded = true")
+    runs = page.get_attribute("#simulation", "data-runs")
+    energy = trace_values(page, "[data-panel=energy] .plot", 0, "y")
+    page.focus("#ctl-g-range")
+    for _ in range(40):
+        page.keyboard.press("ArrowRight")
+    page.wait_for_function(f"document.querySelector('#simulation').dataset.runs !== '{runs}'")
+    page.wait_for_selector(READY, state="attached")
+    assert float(page.input_value("#ctl-g")) > 9.81
+    assert trace_values(page, "[data-panel=energy] .plot", 0, "y") != energy
+    assert page.evaluate("window.notReloaded") is True
+    page.screenshot(path=artifacts / "after-slider.png")
+    assert page.console_errors == []
+
+
+def test_bad_input_and_refusals_are_shown_in_place(page):
+    open_scene(page, "spherical-pendulum")
+    page.fill("#ctl-R", "1000")
+    page.dispatch_event("#ctl-R", "change")
+    assert page.get_attribute("#ctl-R", "aria-invalid") == "true"
+    assert "must be a number from" in page.inner_text("#ctl-R-hint")
+    page.fill("#ctl-R", "1")
+    page.dispatch_event("#ctl-R", "change")
+    page.wait_for_selector(READY, state="attached")
+    # Verlet needs a constant mass matrix, which the spherical pendulum has not: the API refuses, the page says why
+    page.select_option("#ctl-method", "Verlet")
+    page.wait_for_selector('#run-status[data-state="error"]', state="attached")
+    message = page.inner_text("#run-status .message")
+    assert message.startswith("The simulation failed:") and "Verlet" in message
+    assert page.get_attribute("#run-status", "role") == "status"
+    page.route(
+        "**/simulate",
+        lambda route: route.fulfill(
+            status=422, content_type="application/json", body='{"detail": "t_end: too much work"}'
+        ),
+    )
+    page.select_option("#ctl-method", "auto")
+    page.wait_for_selector('#run-status[data-state="error"]', state="attached")
+    assert "t_end: too much work" in page.inner_text("#run-status .message")
+    # the refusals are answers, not failures of the page
+    assert all("422" in message for message in page.console_errors)
+
+
+def test_keyboard_focus_reaches_every_control(page):
+    open_scene(page, "spherical-pendulum")
+    controls = page.evaluate(
+        """() => [...document.querySelectorAll('main input, main select, main button')]
+              .filter((el) => el.offsetParent !== null && !el.disabled).map((el) => el.id || el.outerHTML.slice(0, 80))"""
+    )
+    assert len(controls) > 20
+    page.focus("main")
+    seen = set()
+    for _ in range(400):
+        page.keyboard.press("Tab")
+        seen.add(page.evaluate("document.activeElement.id || document.activeElement.outerHTML.slice(0, 80)"))
+        if seen >= set(controls):
+            break
+    assert set(controls) <= seen, set(controls) - seen
+    assert page.console_errors == []
+
+
+def test_work_precision_chart(page, artifacts):
+    open_scene(page, "simple-pendulum")
+    panel = page.locator("[data-panel=work-precision]")
+    panel.scroll_into_view_if_needed()
+    page.wait_for_function(
+        "document.querySelector('[data-panel=work-precision] .plot').data?.length >= 4", timeout=120_000
+    )
+    names = page.evaluate("document.querySelector('[data-panel=work-precision] .plot').data.map((t) => t.name)")
+    assert "this run (estimate)" in names and len(set(names)) >= 5  # at least four methods and this run
+    assert "Reference:" in panel.locator(".readout").inner_text()
+    panel.screenshot(path=artifacts / "work-precision.png")
+    assert page.console_errors == []
+
+
+def test_unknown_scene_page(page):
+    response = page.goto("/scenes/no-such-scene")
+    assert response.status == 404
+    assert "no-such-scene" in page.inner_text("h1")
+    assert page.locator("main a[href^='/scenes/']").count() == len(SCENES)
+    # the only console message allowed is the browser's note that this document is a 404
+    assert all("404" in message for message in page.console_errors)
+
+
+def test_print_shows_the_derivation_without_the_simulation(page, artifacts):
+    open_scene(page, "spherical-pendulum")
+    page.emulate_media(media="print")
+    assert page.locator("#simulation").is_hidden()
+    assert page.locator("#derivation .step").first.is_visible()
+    assert page.locator(".summary-box").is_visible()
+    page.pdf(path=str(artifacts / "spherical-pendulum.pdf"))
+    assert page.console_errors == []
