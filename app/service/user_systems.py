@@ -262,9 +262,28 @@ def derive_job(spec: dict[str, Any]) -> bytes:
 
 def simulate_job(spec: dict[str, Any], request: Any) -> bytes:
     """Worker job: the simulation JSON of a user system (as for a scene)."""
+    from app.numerics.errors import SimulationError
     from app.service.simulation import simulate_derivation
 
-    return _guarded(lambda: simulate_derivation(_derive(spec), request))
+    def run() -> dict[str, Any]:
+        d = _derive(spec)
+        try:
+            return simulate_derivation(d, request)
+        except SimulationError as exc:
+            raise InvalidSystem(str(exc), simulation_loc(spec, exc.part), exc.part) from None
+
+    return _guarded(run)
+
+
+def simulation_loc(spec: dict[str, Any], part: str) -> tuple:
+    """Where in a simulate request the numerics' complaint points ("parameters.k" is that parameter's value)."""
+    head, _, name = part.partition(".")
+    if head == "parameters":
+        names = [p["name"] for p in spec.get("parameters") or ()]
+        return ("parameters", names.index(name), "value") if name in names else ("parameters",)
+    if head == "initial":
+        return ("initial", name) if name else ("initial",)
+    return (head,) if head else ()
 
 
 # ---- in the web process ---------------------------------------------------------------------

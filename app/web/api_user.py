@@ -20,9 +20,17 @@ from app.service import user_systems
 from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
 from app.service.user_systems import InvalidSystem
 from app.service.worker import JobFailed
-from app.web.examples_user import DERIVE_EXAMPLES, DERIVE_RESPONSE, ERROR_EXAMPLES
+from app.web.examples_user import DERIVE_EXAMPLES, DERIVE_RESPONSE, ERROR_EXAMPLES, SIMULATE_EXAMPLES, SIMULATE_RESPONSE
 from app.web.schemas import ErrorResponse
-from app.web.schemas_user import BusyError, DerivationDocument, SystemSpec, UserError
+from app.web.schemas_simulate import SimulateResponse
+from app.web.schemas_user import (
+    BusyError,
+    DerivationDocument,
+    SystemSpec,
+    UserError,
+    UserSimulateRequest,
+    simulate_request,
+)
 
 MAX_BODY_BYTES = 32 * 1024
 
@@ -153,3 +161,26 @@ async def derive_system(
 ) -> Response:
     spec = system.to_spec()
     return await _answer(request, lambda client, address: user_systems.service.derive(spec, client, address))
+
+
+@router.post(
+    "/simulate",
+    summary="Simulate a system you declare",
+    description=(
+        "The system as for POST /api/derive (parameter values from its `parameters`) plus the simulate fields of "
+        "POST /api/scenes/{id}/simulate: `initial` (q and q_dot by name; missing ones are 0), `t_end` (default 10 s), "
+        "`method`, `rtol`, `atol`, `samples`. The answer is the same result JSON as a scene's: samples of the state, "
+        "E, h, conserved quantities, and stats with the method, an error estimate, drifts and warnings."
+    ),
+    response_model=SimulateResponse,
+    responses={
+        200: {"content": {"application/json": {"example": SIMULATE_RESPONSE}}},
+        **_errors(400, 413, 422, 429, 503),
+    },
+)
+async def simulate_system(
+    request: Request, body: Annotated[UserSimulateRequest, Body(openapi_examples=SIMULATE_EXAMPLES)]
+) -> Response:
+    spec = SystemSpec.model_validate(body.model_dump(include=set(SystemSpec.model_fields))).to_spec()
+    wanted = simulate_request(body)
+    return await _answer(request, lambda client, address: user_systems.service.simulate(spec, wanted, client, address))

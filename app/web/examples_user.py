@@ -56,6 +56,21 @@ DERIVE_EXAMPLES: dict[str, dict[str, Any]] = {
     "spinning-hoop": {"summary": "A bead on a spinning hoop given by L alone", "value": SPINNING_HOOP},
 }
 
+SIMULATE_EXAMPLES: dict[str, dict[str, Any]] = {
+    "forced-spring": {
+        "summary": "The driven, damped spring from rest at x = 1 (a few samples)",
+        "value": {**FORCED_SPRING, "initial": {"x": 1.0, "x_dot": 0.0}, "t_end": 5.0, "samples": 6},
+    },
+    "double-pendulum": {
+        "summary": "The double pendulum released from rest",
+        "value": {**DOUBLE_PENDULUM, "initial": {"theta1": 1.0, "theta2": 2.0}, "t_end": 10.0, "samples": 200},
+    },
+}
+SIMULATE_REFUSED = {
+    "summary": "An initial value for a name that is not a coordinate",
+    "value": {**FORCED_SPRING, "initial": {"y": 1.0}, "t_end": 5.0},
+}
+
 # Requests whose refusals are documented (their answers are in the examples file).
 REFUSED_REQUESTS: dict[str, dict[str, Any]] = {
     "code": {
@@ -102,12 +117,14 @@ TIMEOUT_SECONDS = 1.0  # the timeout example is recorded with this limit (the se
 
 _ANSWERS = _load()
 DERIVE_RESPONSE: dict[str, Any] | None = _ANSWERS["derive"]
+SIMULATE_RESPONSE: dict[str, Any] | None = _ANSWERS.get("simulate")
 _SUMMARIES = {
     "400": {"unreadable": "A number JSON cannot hold as a float"},
     "413": {"too-large": "A body over the size cap"},
     "422": {
         **{k: v["summary"] for k, v in REFUSED_REQUESTS.items()},
         "timeout": "Work beyond the time limit (recorded with a 1 s limit)",
+        "simulate": SIMULATE_REFUSED["summary"],
     },
     "429": {"one-at-a-time": "A second request while your first is still running"},
     "503": {"busy": "Every slot taken"},
@@ -133,6 +150,8 @@ def record() -> dict[str, Any]:
     service = user_systems.service
     with TestClient(app) as client:
         derived = client.post("/api/derive", json=FORCED_SPRING).json()
+        simulated = client.post("/api/simulate", json=SIMULATE_EXAMPLES["forced-spring"]["value"]).json()
+        errors["422"]["simulate"] = client.post("/api/simulate", json=SIMULATE_REFUSED["value"]).json()
         for name, example in REFUSED_REQUESTS.items():
             errors["422"][name] = client.post("/api/derive", json=example["value"]).json()
         errors["400"]["unreadable"] = client.post("/api/derive", content=UNREADABLE, headers=JSON).json()
@@ -152,7 +171,7 @@ def record() -> dict[str, Any]:
         finally:
             for ticket in tickets:
                 ticket.release()
-    return {"derive": derived, "errors": errors}
+    return {"derive": derived, "simulate": simulated, "errors": errors}
 
 
 def answer_with_time_limit(client: Any, seconds: float) -> dict[str, Any]:

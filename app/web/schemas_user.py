@@ -10,11 +10,12 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, create_model
 
 from app.engine.parse import MAX_LENGTH
 from app.service.user_systems import MAX_COORDINATES, MAX_PARAMETERS, MAX_PARTICLES
 from app.web.schemas import ParameterInfo
+from app.web.schemas_simulate import SimulateRequest
 
 Expression = Annotated[
     str,
@@ -183,3 +184,30 @@ class UserError(BaseModel):
 class BusyError(BaseModel):
     detail: str
     retry_after: int = Field(description="Seconds to wait; also in the Retry-After header.")
+
+
+# ---- simulate ----------------------------------------------------------------------------
+
+
+def _simulate_fields() -> dict[str, Any]:
+    """The scene simulate request's fields except ``parameters`` (a user system declares its values)."""
+    return {
+        name: (field.annotation, field) for name, field in SimulateRequest.model_fields.items() if name != "parameters"
+    }
+
+
+UserSimulateRequest = create_model(
+    "UserSimulateRequest",
+    __base__=SystemSpec,
+    __doc__="A system as for POST /api/derive (parameter values from its `parameters`), plus what to simulate.",
+    **_simulate_fields(),
+)
+
+
+def simulate_request(body: BaseModel) -> SimulateRequest:
+    """The numerics' request for a user system: parameter values from the declaration."""
+    spec = SystemSpec.model_validate(body.model_dump(include=set(SystemSpec.model_fields))).to_spec()
+    values = {p["name"]: p["value"] for p in spec["parameters"]}
+    rest = body.model_dump(include=set(SimulateRequest.model_fields) - {"parameters"})
+    # every field was validated with the same rules in the body; the numerics check the values by name
+    return SimulateRequest.model_construct(parameters=values, **rest)

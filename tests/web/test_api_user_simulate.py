@@ -1,0 +1,104 @@
+"""POST /api/simulate: user systems simulated in the worker pool, with the scene endpoint's result JSON."""
+
+import math
+
+import pytest
+import sympy as sp
+
+from app.web import examples_user
+from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SIMULATE_EXAMPLES, SIMULATE_REFUSED
+
+
+def simulate(client, body):
+    response = client.post("/api/simulate", json=body)
+    assert response.status_code == 200, response.text
+    return response.json()
+
+
+def test_forced_spring_matches_the_closed_form_solution(client):
+    """An independent check: m x'' + b x' + k x = F cos(w t), solved by hand (dsolve) from x = 1 at rest."""
+    body = {**FORCED_SPRING, "initial": {"x": 1.0, "x_dot": 0.0}, "t_end": 10.0, "samples": 101, "rtol": 1e-10}
+    result = simulate(client, body)
+    values = {p["name"]: p["value"] for p in FORCED_SPRING["parameters"]}
+    t = sp.Symbol("t", real=True)
+    x = sp.Function("x")
+    m, k, b, F, w = (sp.Rational(str(values[n])) for n in ("m", "k", "b", "F", "w"))
+    ode = sp.Eq(m * x(t).diff(t, 2) + b * x(t).diff(t) + k * x(t), F * sp.cos(w * t))
+    exact = sp.lambdify(t, sp.dsolve(ode, x(t), ics={x(0): 1, x(t).diff(t).subs(t, 0): 0}).rhs, "math")
+    error = max(abs(xs - exact(ts)) for ts, xs in zip(result["t"], result["state"]["x"], strict=True))
+    assert error < 1e-7
+    stats = result["stats"]
+    # the reported error estimate is honest: not far below the true error, not wildly above it
+    assert stats["error_estimate"] is not None and error / 10 <= stats["error_estimate"] + 1e-12
+    # the force does work, so neither E nor h is conserved and none is reported as such
+    assert result["conserved"] == {}
+
+
+def test_double_pendulum_conserves_energy(client):
+    body = SIMULATE_EXAMPLES["double-pendulum"]["value"]
+    result = simulate(client, body)
+    assert set(result["state"]) == {"theta1", "theta1_dot", "theta2", "theta2_dot"}
+    assert len(result["t"]) == body["samples"] and result["t"][-1] == pytest.approx(body["t_end"])
+    energy = result["energy"]
+    assert max(abs(e - energy[0]) for e in energy) < 1e-6 * max(1.0, abs(energy[0]))
+    assert "E" in result["conserved"]
+
+
+def test_parameter_values_come_from_the_declaration(client):
+    slow = {**FORCED_SPRING, "initial": {"x": 1.0}, "t_end": 2.0, "samples": 3, "forces": {}}
+    stiff = {**slow, "parameters": [{**p, "value": 16.0} if p["name"] == "k" else p for p in slow["parameters"]]}
+    # without forces, x(t) = cos(sqrt(k/m) t): a stiffer spring turns faster
+    for spec, omega in ((slow, 2.0), (stiff, 4.0)):
+        x_end = simulate(client, spec)["state"]["x"][-1]
+        assert x_end == pytest.approx(math.cos(omega * 2.0), abs=1e-6)
+
+
+def test_documented_simulation_is_what_the_api_answers(client):
+    documented = examples_user.SIMULATE_RESPONSE
+    result = simulate(client, SIMULATE_EXAMPLES["forced-spring"]["value"])
+    assert result["t"] == documented["t"]
+    for name, series in documented["state"].items():
+        assert result["state"][name] == pytest.approx(series, rel=1e-9, abs=1e-12), name
+    assert result["stats"]["method"] == documented["stats"]["method"]
+
+
+def test_documented_simulation_refusal_is_what_the_api_answers(client):
+    response = client.post("/api/simulate", json=SIMULATE_REFUSED["value"])
+    assert response.status_code == 422
+    assert response.json() == examples_user.ERROR_EXAMPLES[422]["simulate"]["response"]
+
+
+@pytest.mark.parametrize(
+    ("change", "where"),
+    [
+        ({"initial": {"x": 1.0}, "t_end": 1e9}, "t_end"),
+        ({"initial": {"x": 1.0}, "samples": 10**7}, "samples"),
+        ({"initial": {"x": 1.0}, "method": "Euler"}, "method"),
+        ({"initial": {"x": 1.0}, "rtol": 0.5}, "rtol"),
+        ({"initial": {"x": 1e300}}, "initial"),
+        ({}, "initial"),
+        ({"initial": {"x": 1.0}, "parameters": [{"name": "k", "value": 1e14}, "m", "b", "F", "w"]}, "parameters"),
+        (
+            {"initial": {"x": 1.0}, "lagrangian": "x_dot*x", "kinetic": None, "potential": None, "forces": {}},
+            "lagrangian",
+        ),
+    ],
+)
+def test_bad_simulate_requests_are_located_422s(client, change, where):
+    response = client.post("/api/simulate", json={**FORCED_SPRING, **change})
+    assert response.status_code == 422, response.text[:300]
+    answer = response.json()
+    located = [*(answer.get("loc") or []), *(str(p) for e in answer.get("errors") or [] for p in e["loc"])]
+    assert where in located or where in answer["detail"], answer
+
+
+def test_nan_in_initial_state_is_refused(client):
+    body = b'{"coordinates": ["x"], "parameters": ["k"], "lagrangian": "x_dot**2/2 - k*x**2/2", "initial": {"x": NaN}}'
+    response = client.post("/api/simulate", content=body, headers={"content-type": "application/json"})
+    assert response.status_code == 422 and "finite" in response.json()["detail"]
+
+
+def test_hostile_expressions_are_refused_before_simulating(client):
+    body = {**DOUBLE_PENDULUM, "potential": "__import__('os').system('true')", "initial": {"theta1": 1.0}}
+    response = client.post("/api/simulate", json=body)
+    assert response.status_code == 422 and response.json()["loc"] == ["body", "potential"]
