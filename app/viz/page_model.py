@@ -251,6 +251,7 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular) -> dict[s
         "cyclic": doc.get("cyclic", []),
         "conserved": conserved,
         "h_equals_e": doc["hamiltonian_equals_energy"],
+        "forced": bool(doc.get("generalized_forces")),
         "reduction": reduction,
         "constraint_forces": [
             {

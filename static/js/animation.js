@@ -154,7 +154,7 @@ export class Player {
       const ratio = spans.map((w) => Math.max(w / span, 0.4));
       return { ...base, margin: { l: 0, r: 0, t: 30, b: 0 },
         scene: { xaxis: axis(0, spans[0]), yaxis: axis(1, spans[1]), zaxis: axis(2, spans[2]), aspectmode: "manual",
-          aspectratio: { x: ratio[0], y: ratio[1], z: ratio[2] }, camera: { eye: { x: 1.5, y: 1.3, z: 0.8 } } } };
+          aspectratio: { x: ratio[0], y: ratio[1], z: ratio[2] }, camera: { eye: { x: 1.2, y: 1.05, z: 0.65 } } } };
     }
     return { ...base, xaxis: axis(0, span), yaxis: { ...axis(1, span), scaleanchor: "x", scaleratio: 1 } };
   }

@@ -72,9 +72,12 @@ class EnergyPanel extends TimePanel {
     const dE = diff(run.energy), dh = diff(run.hamiltonian);
     const bottom = [{ name: "E − E(0)", values: dE, color: COLORS.E }, { name: "h − h(0)", values: dh, color: COLORS.h, dash: "dash" }];
     this.drawSeries(run, top, bottom, "energy (J)", "change");
-    const rel = (d, ref) => Math.max(...finite(d).map(Math.abs)) / Math.max(Math.abs(ref[0]), 1e-300);
-    const what = run.data.h_equals_e ? "h = E here." : "h and E differ here.";
-    this.readout.textContent = `Largest change since t = 0: E by ${fmt(rel(dE, run.energy))} and h by ${fmt(rel(dh, run.hamiltonian))} (relative). ${what}`;
+    // relative to the run's energy scale (E itself may be zero, as when U is measured from the start)
+    const scale = Math.max(...finite([...run.energy, ...(run.T || []), ...(run.U || [])]).map(Math.abs), 1e-300);
+    const rel = (d) => Math.max(...finite(d).map(Math.abs)) / scale;
+    let what = run.data.h_equals_e ? "h = E here." : "h and E differ here.";
+    if (run.data.forced) what += " A non-conservative generalized force acts, so the change is physical, not numerical.";
+    this.readout.textContent = `Largest change since t = 0, relative to the energy scale ${fmt(scale)} J: E by ${fmt(rel(dE))}, h by ${fmt(rel(dh))}. ${what}`;
     seriesTable(this.summary, "Energies over the run (J)", run.t, [...top, ...bottom]);
   }
 }
@@ -95,7 +98,14 @@ class MomentaPanel extends TimePanel {
     const names = Object.keys(run.momenta);
     const top = names.map((n, k) => ({ name: run.data.labels[n] || n, values: run.momenta[n], color: PALETTE[k % PALETTE.length] }));
     const bottom = names.map((n, k) => ({ name: `${run.data.labels[n] || n} − initial`, values: diff(run.momenta[n]), color: PALETTE[k % PALETTE.length] }));
-    this.drawSeries(run, top, bottom, "conserved momentum", "change");
+    this.drawSeries(run, top, bottom, "momentum", "change");
+    // a conserved quantity should look flat: centre the upper axis on the values with a margin
+    // of 5 % of their size (or 5 times their drift, if larger), not on the noise
+    const all = finite(top.flatMap((s) => Array.from(s.values)));
+    const drift = Math.max(...finite(bottom.flatMap((s) => Array.from(s.values))).map(Math.abs), 0);
+    const lo = Math.min(...all), hi = Math.max(...all);
+    const pad = Math.max(0.05 * Math.max(Math.abs(lo), Math.abs(hi)), 5 * drift, 1e-12);
+    Plotly.relayout(this.plot, { "yaxis.range": [lo - pad, hi + pad] });
     this.readout.textContent = top.map((s, k) => `${s.name} stays at ${fmt(s.values[0])} within ${fmt(Math.max(...finite(bottom[k].values).map(Math.abs)))}.`).join(" ");
     seriesTable(this.summary, "Conserved momenta over the run", run.t, [...top, ...bottom]);
   }
