@@ -5,14 +5,23 @@ differences, with eigenvalues lambda_i and eigenvectors v_i:
 
 * stiff: the fastest rate |lambda|_max exceeds the slow rates (the rest of the
   spectrum, or 1 / t_end) by more than ``STIFF_RATIO``, and the fast modes are
-  not excited: writing F(y0) = sum_i c_i v_i, a mode with eigenvalue lambda_i
-  oscillates with amplitude |c_i / lambda_i| |v_i|; when that is below the
-  tolerance (atol + rtol |y|) for every fast mode, only the slow motion matters
-  and an implicit method (Radau) steps over the fast one;
-* long and conservative: the engine says E or h is conserved and the run lasts
-  more than ``LONG_RUN`` characteristic times 2 pi / |lambda|_max: a symplectic
-  method (Yoshida-4 when H separates, else Gauss-Legendre) keeps the energy
-  error bounded instead of letting it grow with time;
+  not excited.  The fast modes span an invariant subspace of J: with the
+  ordered Schur form J = Q [[T11, T12], [0, T22]] Q^H (slow block first) and X
+  solving T11 X - X T22 = -T12, the fast part of F(y0) has coordinates
+  z2 = (Q^H F)_fast and the fast displacement is d = T22^-1 z2 (F_fast = J d on
+  that subspace).  Split into the modes of T22 (T22 w_i = lambda_i w_i,
+  d = sum_i c_i w_i), mode i swings component l by |c_i| |(Q [X; I] w_i)_l|.
+  When that swing is below the tolerance (atol + rtol |y|) in every component,
+  only the slow motion matters and an implicit method (Radau) steps over the
+  fast one.  (The Schur form copes with a defective J, e.g. a cyclic angle
+  whose eigenvalue 0 is doubled, where a full eigenvector basis does not exist.)
+* conservative (the engine says E or h is conserved) and either long (more
+  than ``LONG_RUN`` characteristic times 2 pi / |lambda|_max) or starting near
+  an unstable equilibrium (J has a real eigenvalue lambda > 0 while
+  |F(y0)| < ``SADDLE_SPEED`` lambda |y0|: the motion creeps away from a saddle,
+  so the energy level alone decides on which side of the separatrix it goes):
+  a symplectic method (Yoshida-4 when H separates, else Gauss-Legendre) keeps
+  the energy error bounded instead of letting it drift;
 * otherwise the compiled DOP853 (high order, adaptive, cheapest per digit).
 
 A stiff problem whose fast mode *is* excited must resolve that mode whatever
@@ -25,11 +34,13 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.linalg import schur, solve_sylvester
 
 from app.numerics.system import NumericSystem
 
 STIFF_RATIO = 1.0e3
 LONG_RUN = 1.0e3  # characteristic times
+SADDLE_SPEED = 1.0e-2
 
 
 @dataclass(frozen=True)
@@ -39,6 +50,7 @@ class Analysis:
     fast_amplitude: float  # the fast modes' amplitude, in units of the tolerance
     stiff: bool
     characteristic_times: float
+    near_saddle: bool = False
 
     def as_dict(self) -> dict[str, float | bool]:
         return {
@@ -47,6 +59,7 @@ class Analysis:
             "fast_mode_amplitude_over_tolerance": self.fast_amplitude,
             "stiff": self.stiff,
             "characteristic_times": self.characteristic_times,
+            "near_saddle": self.near_saddle,
         }
 
 
@@ -63,13 +76,30 @@ def jacobian(system: NumericSystem, t: float, y: np.ndarray, k: np.ndarray) -> n
     return J
 
 
+def fast_swing(J: np.ndarray, F: np.ndarray, threshold: float) -> np.ndarray:
+    """Per component, how far the fast modes (|lambda| >= threshold) swing the state about the slow motion."""
+    T, Q, slow_count = schur(J, output="complex", sort=lambda x: abs(x) < threshold)
+    m = J.shape[0]
+    if slow_count == m:
+        return np.zeros(m)
+    z = Q.conj().T @ F.astype(complex)
+    T11, T12, T22 = T[:slow_count, :slow_count], T[:slow_count, slow_count:], T[slow_count:, slow_count:]
+    # T11 X - X T22 = -T12 decouples the blocks (their spectra are disjoint)
+    X = solve_sylvester(T11, -T22, -T12) if slow_count else np.zeros((0, m - slow_count))
+    basis = Q @ np.vstack([X, np.eye(m - slow_count)])  # the fast invariant subspace
+    # fast displacement d = T22^-1 z_fast; its modes T22 w_i = lambda_i w_i swing with amplitude |c_i| |basis w_i|
+    lam, W = np.linalg.eig(T22)
+    c = np.linalg.solve(W, np.linalg.solve(T22, z[slow_count:]))
+    return np.abs(basis @ W) @ np.abs(c)
+
+
 def analyse(
     system: NumericSystem, k: np.ndarray, y0: np.ndarray, t_end: float, rtol: float, atol: np.ndarray
 ) -> Analysis:
     try:
         J = jacobian(system, 0.0, y0, k)
         F = system.f(0.0, y0, k)
-        lam, V = np.linalg.eig(J)
+        lam = np.linalg.eigvals(J)
     except (ArithmeticError, ValueError, np.linalg.LinAlgError):
         return Analysis(math.nan, math.nan, math.inf, False, 0.0)
     if not (np.all(np.isfinite(lam)) and np.all(np.isfinite(F))):
@@ -78,16 +108,19 @@ def analyse(
     rho = float(size.max())
     fast = size >= rho / 10.0
     slow_rate = max(float(size[~fast].max()) if np.any(~fast) else 0.0, 1.0 / t_end)
-    # amplitudes of the fast modes: F(y0) = V c, mode i moves by |c_i / lambda_i| |v_i|
     scale = atol + rtol * np.abs(y0)
-    if rho > 0 and np.linalg.cond(V) < 1e10:
-        c = np.linalg.solve(V, F.astype(complex))
-        amplitude = np.abs(V[:, fast]) @ (np.abs(c[fast]) / size[fast])
-        fast_amplitude = float(np.max(amplitude / scale))
-    else:
+    try:
+        fast_amplitude = float(np.max(fast_swing(J, F, rho / 10.0) / scale)) if rho > 0 else 0.0
+    except (ValueError, np.linalg.LinAlgError):
         fast_amplitude = math.inf
     stiff = rho > STIFF_RATIO * slow_rate and fast_amplitude <= 1.0
-    return Analysis(rho, slow_rate, fast_amplitude, stiff, rho * t_end / (2 * math.pi))
+    unstable = lam[(lam.real > 0) & (np.abs(lam.imag) <= 1e-8 * size)]
+    creeping = float(np.linalg.norm(F)) < SADDLE_SPEED * (unstable.real.max() if unstable.size else 0.0) * max(
+        float(np.linalg.norm(y0)), 1.0
+    )
+    return Analysis(
+        rho, slow_rate, fast_amplitude, stiff, rho * t_end / (2 * math.pi), bool(unstable.size) and creeping
+    )
 
 
 def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
@@ -99,12 +132,19 @@ def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
             f"{a.spectral_radius / a.slow_rate:.2g} times the slow rate and its mode is not excited "
             f"(amplitude {a.fast_amplitude:.2g} of the tolerance), so the implicit Radau method steps over it"
         )
-    if system.energy_name is not None and a.characteristic_times >= LONG_RUN:
+    if system.energy_name is not None and (a.characteristic_times >= LONG_RUN or a.near_saddle):
         name = "Yoshida4" if system.separable else "Gauss-Legendre"
         why = "H separates into T(p) + U(q)" if system.separable else "H(q, p) does not separate"
+        if a.near_saddle:
+            what = (
+                "the motion starts next to an unstable equilibrium, where the energy level alone decides on which side "
+                "of the separatrix it goes"
+            )
+        else:
+            what = f"long run (about {a.characteristic_times:.3g} characteristic times)"
         return name, (
-            f"long run of a conservative system (about {a.characteristic_times:.3g} characteristic times, and the engine "
-            f"says {system.energy_name} is conserved): a symplectic method keeps the energy error bounded; {why}"
+            f"{what}, and the engine says {system.energy_name} is conserved: a symplectic method keeps the energy error "
+            f"bounded instead of letting it drift; {why}"
         )
     excited = ""
     if a.spectral_radius > STIFF_RATIO * a.slow_rate:

@@ -77,6 +77,30 @@ def rhs_source(d: Derivation, names: Names) -> str:
     return function_source("rhs", "t, y, k, out", block)
 
 
+def jacobian_source(d: Derivation, names: Names) -> str | None:
+    """``jac(t, y, k, out)``: out[i*2n + j] = dF_i/dy_j, for the implicit methods; None when q_ddot is not compact."""
+    eqs = d.equations
+    if not _compact(eqs.accelerations, eqs.mass_matrix, eqs.forcing):
+        return None
+    n = len(names.q)
+    ys = [sp.Symbol(x, real=True) for x in (*names.q, *names.v)]
+    rows = [ys[n + i] for i in range(n)] + [names(a) for a in eqs.accelerations]
+    block = Block()
+    block.raw(*unpack("y", names.q), *unpack("y", names.v, n), *unpack("k", names.k))
+    targets, exprs = [], []
+    for i, row in enumerate(rows):
+        for j, y in enumerate(ys):
+            # dF_i/dy_j, differentiated term by term (no simplification)
+            derivative = sp.diff(row, y)
+            if derivative != 0:
+                targets.append(f"out[{i * 2 * n + j}]")
+                exprs.append(derivative)
+    block.raw(f"for _i in range({4 * n * n}):", "    out[_i] = 0.0")
+    if exprs:
+        block.assign(targets, exprs, ScalarPrinter(), "j_")
+    return function_source("jac", "t, y, k, out", block)
+
+
 def hamilton_source(d: Derivation, names: Names) -> str:
     eqs, mech = d.equations, d.mechanics
     n = len(names.q)

@@ -58,9 +58,10 @@ def simulate(
     method: str = "auto",
     rtol: float = limits.RTOL_DEFAULT,
     atol: float = limits.ATOL_DEFAULT,
-    wall_seconds: float = limits.WALL_SECONDS,
+    wall_seconds: float | None = None,
     estimate: bool = True,
 ) -> Outcome:
+    wall_seconds = limits.WALL_SECONDS if wall_seconds is None else wall_seconds
     t = np.linspace(0.0, t_end, samples)
     m = y0.size
     atol_vector = np.full(m, atol)

@@ -11,7 +11,7 @@ import sympy as sp
 
 from app.engine.derive import Derivation
 from app.numerics import jit
-from app.numerics.generate import Names, hamilton_source, momenta_source, rhs_source
+from app.numerics.generate import Names, hamilton_source, jacobian_source, momenta_source, rhs_source
 
 
 @dataclass
@@ -48,6 +48,15 @@ class NumericSystem:
         self.python["rhs"](t, y, k, out)
         return out
 
+    def jacobian(self, t: float, y: np.ndarray, k: np.ndarray) -> np.ndarray | None:
+        """dF/dy from the engine's expressions, or None when not generated."""
+        if "jac" not in self.python:
+            return None
+        m = 2 * self.n
+        out = np.empty(m * m)
+        self.python["jac"](t, y, k, out)
+        return out.reshape(m, m)
+
     def momenta(self, t: float, y: np.ndarray, k: np.ndarray) -> np.ndarray:
         out = np.empty(self.n)
         self.python["momenta"](t, y, k, out)
@@ -63,6 +72,9 @@ def numeric_system(d: Derivation) -> NumericSystem:
     names = Names.of(d)
     table, eqs, en = d.table, d.equations, d.energetics
     sources = {"rhs": rhs_source(d, names), "ham": hamilton_source(d, names), "momenta": momenta_source(d, names)}
+    jac = jacobian_source(d, names)
+    if jac is not None:
+        sources["jac"] = jac
     mass_constant = all(_free(x, (*table.q, table.t)) for x in eqs.mass_matrix)
     forced = any(Q != 0 for Q in d.mechanics.Q)
     separable = (

@@ -73,9 +73,17 @@ class ScipyMethod(Method):
         stop = ""
         solver = None
         try:
-            solver = SOLVERS[self.name](fun, t_out[0], problem.y0, problem.t_end, rtol=problem.rtol, atol=problem.atol)
+            options = {}
+            if self.family != "explicit" and "jac" in problem.system.python:
+                # the engine's own Jacobian (differentiated, not simplified) instead of finite differences
+                options["jac"] = lambda t, y: problem.system.jacobian(t, y, k)
+            solver = SOLVERS[self.name](
+                fun, t_out[0], problem.y0, problem.t_end, rtol=problem.rtol, atol=problem.atol, **options
+            )
             while solver.status == "running":
-                message = solver.step()
+                # scipy's step-size and Jacobian heuristics may overflow on the way to a failure it reports
+                with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+                    message = solver.step()
                 if solver.status == "failed":
                     where = f"t = {solver.t:.6g} s"
                     stop = f"{self.name} stopped at {where}: {message}"
@@ -85,7 +93,8 @@ class ScipyMethod(Method):
                     raise _OutOfBudget(f"more than {problem.max_steps:,} steps")
                 upto = int(np.searchsorted(t_out, solver.t, side="right"))
                 if upto > filled:
-                    Y[filled:upto] = solver.dense_output()(t_out[filled:upto]).T
+                    with np.errstate(over="ignore", invalid="ignore"):
+                        Y[filled:upto] = solver.dense_output()(t_out[filled:upto]).T
                     filled = upto
                 if not np.all(np.abs(solver.y) <= problem.bound):
                     outside = np.any(~(np.abs(Y[:filled]) <= problem.bound), axis=1)

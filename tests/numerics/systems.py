@@ -1,0 +1,35 @@
+"""Systems declared for the numerics tests and benchmarks (besides the chapter's scenes)."""
+
+from app.scenes.types import Parameter, Particle, System
+
+# A bead on a stiff radial spring of rest length l0 on a frictionless table, in polar coordinates:
+# the radial mode has omega^2 = k/m (fast), the orbit turns at the slow rate theta_dot.
+STIFF_SPRING = System(
+    coordinates=("r", "theta"),
+    parameters=(
+        Parameter("m", 1.0, "kg", 1e-3, 1e3),
+        Parameter("k", 1e6, "N/m", 1e-3, 1e12),
+        Parameter("l0", 1.0, "m", 1e-3, 1e3),
+    ),
+    particles=(Particle("m", ("r*cos(theta)", "r*sin(theta)", "0")),),
+    potential="k*(r - l0)**2/2",
+    nonnegative=("r",),
+)
+
+m1, m2, l1, l2, g = (
+    Parameter("m1", 1.0, "kg", 0.01, 100.0),
+    Parameter("m2", 1.0, "kg", 0.01, 100.0),
+    Parameter("l1", 1.0, "m", 0.05, 100.0),
+    Parameter("l2", 1.0, "m", 0.05, 100.0),
+    Parameter("g", 9.81, "m/s²", 0.1, 100.0),
+)
+
+DOUBLE_PENDULUM = System(
+    coordinates=("a", "c"),
+    parameters=(m1, m2, l1, l2, g),
+    particles=(
+        Particle("m1", ("l1*sin(a)", "-l1*cos(a)", "0")),
+        Particle("m2", ("l1*sin(a) + l2*sin(c)", "-l1*cos(a) - l2*cos(c)", "0")),
+    ),
+    potential="-m1*g*l1*cos(a) - m2*g*(l1*cos(a) + l2*cos(c))",
+)
