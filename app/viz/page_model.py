@@ -31,7 +31,7 @@ PANELS = (
     "constraint-force",
     "work-precision",
 )
-LONG_STEP = 420  # characters of LaTeX beyond which a step's math starts collapsed
+LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collapsed
 RTOLS = ("1e-3", "1e-4", "1e-6", "1e-8", "1e-10", "1e-12")
 DEFAULT_RTOL = "1e-8"
 

@@ -166,7 +166,7 @@ function control(group, c) {
   const number = el("input", { type: "number", id, name: c.name, min: c.min, max: c.max, step: "any",
     value: c.value, inputmode: "decimal", "aria-labelledby": `${id}-label ${id}-unit`, "aria-describedby": `${id}-hint` });
   row.append(range, number, el("span", { class: "unit", id: `${id}-unit` }, c.unit || "(no unit)"));
-  div.append(label, row, el("p", { class: "hint", id: `${id}-hint` }));
+  div.append(label, row, el("p", { class: "hint", id: `${id}-hint`, "aria-live": "polite" }));
   range.value = String(toSlider(div, Number(c.value)));
   return div;
 }

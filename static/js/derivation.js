@@ -15,7 +15,7 @@
  * the browser tests look for.
  */
 
-const LONG_STEP = 420; // characters of LaTeX beyond which a step's math starts collapsed
+const LONG_STEP = 320; // characters of LaTeX beyond which a step's math starts collapsed
 
 export function typeset(root = document) {
   const katex = window.katex;

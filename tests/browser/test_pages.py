@@ -168,9 +168,15 @@ def test_unknown_scene_page(page):
 
 def test_print_shows_the_derivation_without_the_simulation(page, artifacts):
     open_scene(page, "spherical-pendulum")
+    collapsed = page.locator("details.long-step:not([open])").count()
+    assert collapsed > 0  # long steps start collapsed on screen ...
+    page.evaluate("window.dispatchEvent(new Event('beforeprint'))")
+    assert page.locator("details.long-step:not([open])").count() == 0  # ... and print in full
     page.emulate_media(media="print")
     assert page.locator("#simulation").is_hidden()
     assert page.locator("#derivation .step").first.is_visible()
     assert page.locator(".summary-box").is_visible()
     page.pdf(path=str(artifacts / "spherical-pendulum.pdf"))
+    page.evaluate("window.dispatchEvent(new Event('afterprint'))")
+    assert page.locator("details.long-step:not([open])").count() == collapsed
     assert page.console_errors == []
