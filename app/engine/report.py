@@ -30,7 +30,16 @@ class Printer:
 
 
 def _aligned(rows: list[str]) -> str:
-    return r"\begin{aligned}" + r" \\ ".join(rows) + r"\end{aligned}" if len(rows) > 1 else rows[0]
+    """One row as it is; several rows stacked and aligned at their first '='."""
+    if len(rows) == 1:
+        return rows[0]
+    marked = [row.replace(" = ", " &= ", 1) if " = " in row else "&" + row for row in rows]
+    return r"\begin{aligned}" + r" \\ ".join(marked) + r"\end{aligned}"
+
+
+def plain_name(name: str) -> str:
+    """A coordinate's name as a reader writes it in running text: theta -> θ, x1 -> x₁."""
+    return sp.pretty(sp.Symbol(name), use_unicode=True)
 
 
 def _step(title: str, rows: list[str], sympy: Any, explanation: str) -> dict[str, str]:
@@ -113,7 +122,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         g, p, dp = eqs.dL_dq[k], eqs.momenta[k], eqs.ddt_momenta[k]
         steps.append(
             _step(
-                f"Derivatives for {name}",
+                f"Derivatives for {plain_name(name)}",
                 [
                     rf"\frac{{\partial L}}{{\partial {qn[k]}}} = {pr.tex(display(g))}",
                     rf"\frac{{\partial L}}{{\partial {qdn[k]}}} = {pr.tex(display(p))}",
