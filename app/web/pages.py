@@ -13,7 +13,7 @@ import threading
 from typing import Any
 
 from fastapi import APIRouter, Request
-from fastapi.responses import HTMLResponse
+from fastapi.responses import HTMLResponse, RedirectResponse
 
 from app.service import derivations
 from app.service.derivations import UnknownScene
@@ -87,6 +87,11 @@ def index(request: Request) -> HTMLResponse:
         for s in derivations.SCENES.values()
     ]
     return templates.TemplateResponse(request, "index.html", {"toc": table_of_contents(scenes), "scenes": scenes})
+
+
+@router.get("/scenes", response_class=RedirectResponse)
+def scenes_index() -> RedirectResponse:
+    return RedirectResponse("/", status_code=307)
 
 
 @router.get("/scenes/{scene_id}", response_class=HTMLResponse)

@@ -175,7 +175,12 @@ export class Player {
       this.scrub.value = String(this.index);
       this.scrub.setAttribute("aria-valuetext", `t = ${this.run.t[this.index].toFixed(2)} s`);
     }
-    if (this.timeOut) this.timeOut.textContent = `t = ${this.run.t[this.index].toFixed(2)} s`;
+    if (this.timeOut) {
+      // the current state in words: a text alternative that follows the animation
+      const { data, state } = this.run;
+      const parts = data.coordinates.map((q) => `${data.labels[q] || q} = ${state[q][this.index].toFixed(3)} ${data.units[q] || ""}`.trim());
+      this.timeOut.textContent = [`t = ${this.run.t[this.index].toFixed(2)} s`, ...parts].join(" · ");
+    }
     this.onFrame(this.index);
   }
 

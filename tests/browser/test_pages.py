@@ -75,7 +75,7 @@ def test_animation_plays_and_moves_the_cursors(page, artifacts):
     page.wait_for_timeout(300)
     t_end = page.evaluate("document.querySelector('[data-panel=energy] .plot').layout.shapes[0].x0")
     assert t_end == pytest.approx(SCENES["simple-pendulum"].t_end)
-    assert page.inner_text("[data-panel=animation-2d] output.time") == f"t = {t_end:.2f} s"
+    assert page.inner_text("[data-panel=animation-2d] output.time").startswith(f"t = {t_end:.2f} s · θ = ")
     page.locator("[data-panel=animation-2d]").screenshot(path=artifacts / "animation.png")
     assert page.console_errors == []
 
