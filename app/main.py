@@ -12,6 +12,7 @@ from app.service.derivations import warm_all
 from app.web import api_scenes, errors, pages
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
+from app.web.playground import router as playground_router
 from app.web.templating import static_app
 
 
@@ -31,7 +32,7 @@ app = FastAPI(
 )
 errors.install(app)
 
-ROUTERS = [api_scenes.router, pages.router, user_router, simulate_router]
+ROUTERS = [api_scenes.router, pages.router, user_router, simulate_router, playground_router]
 app.mount("/static", static_app, name="static")
 for router in ROUTERS:
     app.include_router(router)

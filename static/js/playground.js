@@ -1,0 +1,182 @@
+/**
+ * playground.js — the entry module of /playground (templates/playground.html).
+ *
+ * The page arrives server-rendered: the form as typed, the derivation (or the
+ * refusal, next to its field) and the simulation controls and panels.  This module
+ *   - typesets the math (derivation.js) and prepares it for printing;
+ *   - shows only the fields of the chosen form (L, T and U, or particles and U),
+ *     adds rows to the parameter, particle and force tables, copies a link to the system;
+ *   - moves focus to the field a refusal points at;
+ *   - simulates the derived system through POST /api/simulate (the declared system with
+ *     the controls' parameter values, plus initial, t_end, method, rtol, samples) and draws
+ *     it with simulation.js's SimulationView: one request in flight, the latest settings win,
+ *     and a 429/503 is retried after its Retry-After.
+ * Everything it needs is in the page: #scene-data (the client JSON of app/viz/page_model.py)
+ * and #playground-system (the request the page derived).
+ */
+import { printReady, typeset } from "./derivation.js";
+import { bindControls, readRequest } from "./controls.js";
+import { prepareRun, SimulationView } from "./simulation.js";
+import { fmt } from "./summaries.js";
+
+const errors = typeset(document);
+document.body.dataset.katexErrors = String(errors);
+printReady();
+
+// ---- the system form -----------------------------------------------------------------------
+
+const systemForm = document.getElementById("system-form");
+
+function showKind() {
+  const kind = systemForm.querySelector('input[name="form"]:checked')?.value || "energies";
+  for (const block of systemForm.querySelectorAll("[data-kind]")) {
+    block.hidden = !block.dataset.kind.split(" ").includes(kind);
+  }
+}
+
+function addRow(tableId) {
+  const body = document.getElementById(tableId).tBodies[0];
+  const last = body.rows[body.rows.length - 1];
+  const row = last.cloneNode(true);
+  const index = body.rows.length;
+  for (const input of row.querySelectorAll("input")) {
+    input.value = "";
+    input.placeholder = "";
+    input.removeAttribute("aria-invalid");
+    input.removeAttribute("aria-describedby");
+    input.id = input.id.replace(/-\d+-/, `-${index}-`);
+  }
+  for (const note of row.querySelectorAll(".field-error")) note.remove();
+  body.appendChild(row);
+  row.querySelector("input")?.focus();
+}
+
+if (systemForm) {
+  for (const radio of systemForm.querySelectorAll('input[name="form"]')) radio.addEventListener("change", showKind);
+  showKind();
+  for (const button of systemForm.querySelectorAll('[data-action="add-row"]')) {
+    button.addEventListener("click", () => addRow(button.dataset.target));
+  }
+  // empty rows would only lengthen the shareable address
+  systemForm.addEventListener("submit", () => {
+    for (const row of systemForm.querySelectorAll("tr.row")) {
+      const inputs = [...row.querySelectorAll("input")];
+      if (inputs.every((i) => !i.value.trim())) inputs.forEach((i) => { i.disabled = true; });
+    }
+    for (const block of systemForm.querySelectorAll("[data-kind][hidden]")) {
+      block.querySelectorAll("input, textarea").forEach((i) => { i.disabled = true; });
+    }
+  });
+  const copy = systemForm.querySelector('[data-action="copy-link"]');
+  copy?.addEventListener("click", async () => {
+    const status = document.getElementById("copy-status");
+    try {
+      await navigator.clipboard.writeText(window.location.href);
+      status.textContent = "Link copied.";
+    } catch {
+      status.textContent = `Link: ${window.location.href}`;
+    }
+  });
+  const invalid = systemForm.querySelector('[aria-invalid="true"]');
+  if (invalid) {
+    const kindBlock = invalid.closest("[data-kind]");
+    if (kindBlock && kindBlock.hidden) kindBlock.hidden = false;
+    invalid.focus();
+  }
+}
+
+// ---- the simulation ------------------------------------------------------------------------
+
+const root = document.getElementById("simulation");
+const dataNode = document.getElementById("scene-data");
+const system = JSON.parse(document.getElementById("playground-system").textContent || "{}");
+
+function body(request) {
+  // the declared system, with the parameter values the controls now hold
+  const parameters = (system.parameters || []).map((p) => ({
+    ...p, value: request.parameters[p.name] ?? p.value,
+  }));
+  const { initial, t_end, method, rtol, samples } = request;
+  return { ...system, parameters, initial, t_end, method, rtol, samples };
+}
+
+function describe(stats) {
+  const parts = [`Method ${stats.method}`];
+  if (stats.reason) parts.push(`(${stats.reason})`);
+  parts.push(`run time ${fmt((stats.wall_time_s || 0) * 1000)} ms`);
+  if (stats.error_estimate !== undefined && stats.error_estimate !== null) parts.push(`estimated error ${fmt(stats.error_estimate)}`);
+  return parts.join(", ") + ".";
+}
+
+const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+
+async function post(request) {
+  for (let attempt = 0; ; attempt++) {
+    const res = await fetch(root.dataset.simulateUrl, {
+      method: "POST",
+      headers: { "Content-Type": "application/json", Accept: "application/json" },
+      body: JSON.stringify(body(request)),
+    });
+    let answer = null;
+    try { answer = await res.json(); } catch { answer = null; }
+    if (res.ok) return answer;
+    if ((res.status === 429 || res.status === 503) && attempt < 5) {
+      await sleep(1000 * Number(res.headers.get("Retry-After") || 1));
+      continue;
+    }
+    const detail = answer && answer.detail ? answer.detail : `the server answered ${res.status}`;
+    throw new Error(typeof detail === "string" ? detail : JSON.stringify(detail));
+  }
+}
+
+function connect(data) {
+  const form = document.getElementById("controls");
+  const status = document.getElementById("run-status");
+  const message = status.querySelector(".message");
+  const warnings = status.querySelector(".warnings");
+  const view = new SimulationView(root, data, {});
+  let running = false;
+  let pending = null;
+
+  async function run(request) {
+    if (request.samples === undefined) {
+      request.samples = Math.min(4000, Math.max(300, Math.round(60 * (request.t_end || data.t_end))));
+    }
+    pending = request;
+    if (running) return; // the latest settings run as soon as the current run ends
+    running = true;
+    while (pending) {
+      const mine = pending;
+      pending = null;
+      root.setAttribute("aria-busy", "true");
+      status.dataset.state = "running";
+      message.textContent = "Simulating…";
+      try {
+        const result = await post(mine);
+        if (pending) continue;
+        const prepared = prepareRun(data, mine, result);
+        view.draw(prepared);
+        status.dataset.state = "ready";
+        message.textContent = describe(prepared.stats);
+        warnings.replaceChildren(...(prepared.stats.warnings || []).map((w) => Object.assign(document.createElement("li"), { textContent: w })));
+        root.dataset.runs = String(Number(root.dataset.runs || 0) + 1);
+      } catch (err) {
+        if (pending) continue;
+        status.dataset.state = "error";
+        message.textContent = `The simulation failed: ${err.message}`;
+      }
+    }
+    root.setAttribute("aria-busy", "false");
+    running = false;
+  }
+
+  bindControls(form, run);
+  run(readRequest(form));
+}
+
+if (root && dataNode && window.Plotly) {
+  connect(JSON.parse(dataNode.textContent));
+} else if (root) {
+  document.querySelector("#run-status .message").textContent =
+    "The plotting library is missing: run scripts/assets.sh (it copies plotly.js into static/vendor).";
+}

@@ -1,0 +1,92 @@
+"""/playground on the server: the system in the query string, derivation rendered, refusals located."""
+
+import json
+import re
+from urllib.parse import urlencode
+
+import pytest
+from starlette.datastructures import QueryParams
+
+from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
+from app.web.playground import MAX_QUERY, form_of, query_of, read_form, spec_of
+from app.web.schemas_user import SystemSpec
+
+
+@pytest.mark.parametrize("spec", [FORCED_SPRING, DOUBLE_PENDULUM, SPINNING_HOOP], ids=["spring", "double", "hoop"])
+def test_the_address_holds_the_whole_system(spec):
+    """API request -> form -> query string -> form -> API request gives the request back."""
+    query = QueryParams(urlencode(query_of(form_of(spec)), doseq=True))
+    expected = SystemSpec.model_validate(spec).to_spec()
+    again = spec_of(read_form(query))
+    if "particles" in spec:  # the form always writes all three components
+        for p in expected["particles"]:
+            p["position"] = p["position"] + ["0"] * (3 - len(p["position"]))
+    assert again == expected
+
+
+def test_the_page_derives_and_renders_the_steps(client):
+    response = client.get("/playground?" + urlencode(query_of(form_of(SPINNING_HOOP)), doseq=True))
+    assert response.status_code == 200
+    html = response.text
+    assert html.count('class="step"') >= 8
+    assert 'data-simulate-url="/api/simulate"' in html
+    data = json.loads(re.search(r'<script type="application/json" id="scene-data">(.*?)</script>', html, re.S)[1])
+    assert data["coordinates"] == ["theta"] and data["mechanism"]["points"]
+    system = json.loads(re.search(r'id="playground-system">(.*?)</script>', html, re.S)[1])
+    assert system["lagrangian"] == SPINNING_HOOP["lagrangian"]
+
+
+def test_system_json_in_the_address_works_too(client):
+    response = client.get("/playground?" + urlencode({"system": json.dumps(FORCED_SPRING)}))
+    assert response.status_code == 200 and 'value="x"' in response.text
+
+
+def test_an_empty_form_derives_nothing(client):
+    response = client.get("/playground?new")
+    assert response.status_code == 200
+    assert 'id="derivation"' not in response.text and 'id="form-error"' not in response.text
+
+
+@pytest.mark.parametrize(
+    ("query", "field", "words"),
+    [
+        ({"q": "x", "form": "energies", "T": "x_dot**2", "U": "x^2"}, "f-U", "write x**2"),
+        (
+            {"q": "x", "form": "energies", "pn": "k", "pv": "lots", "T": "x_dot**2", "U": "k*x"},
+            "f-param-0-value",
+            "not a number",
+        ),
+        ({"q": "x", "form": "energies", "pn": "sin", "T": "x_dot**2", "U": "0"}, "f-param-0-name", "reserved"),
+        (
+            {"q": "x", "form": "particles", "m": "1", "x": "x", "z": "__class__", "U": "0"},
+            "f-particle-0-z",
+            "unknown name",
+        ),
+        (
+            {"q": "x", "form": "lagrangian", "L": "x_dot**2", "fq": "x", "fQ": "eval(x)"},
+            "f-force-0-expression",
+            "functions",
+        ),
+        ({"q": "x", "form": "lagrangian", "L": "x_dot*x"}, "f-L", "mass matrix"),
+        ({"q": "", "form": "lagrangian", "L": "x_dot**2"}, "f-coordinates", "at least 1"),
+        ({"system": "{not json"}, "f-coordinates", "not valid JSON"),
+    ],
+)
+def test_refusals_point_at_the_field(client, query, field, words):
+    response = client.get("/playground?" + urlencode(query))
+    assert response.status_code == 422
+    html = response.text
+    assert f'data-field="{field}"' in html
+    assert re.search(rf'id="{field}"[^>]*aria-invalid="true"', html)
+    assert words in re.search(r'<div class="form-error".*?</div>', html, re.S)[0].replace("&#39;", "'")
+
+
+def test_an_overlong_address_is_refused(client):
+    response = client.get("/playground?" + urlencode({"q": "x", "L": "x" * (MAX_QUERY + 1)}))
+    assert response.status_code == 422 and "longer than" in response.text
+
+
+def test_the_page_issues_a_session(client):
+    client.cookies.clear()
+    response = client.get("/playground?new")
+    assert "lagrange_session" in response.cookies
