@@ -114,6 +114,7 @@ def _transformed(doc: dict[str, Any]) -> list[dict[str, Any]] | None:
     add("Old coordinates in the new", [f"{_latex_symbol(c)} = {e['latex']}" for c, e in tr.get("inverse", {}).items()])
     if "lagrangian" in tr:
         add("Lagrangian", [f"L = {tr['lagrangian']['latex']}"])
+    add("Cyclic coordinates", [", ".join(sym.get(c, c) for c in tr.get("cyclic", []))] if tr.get("cyclic") else [])
     if "reduced_mass" in tr:
         add("Reduced mass", [rf"\mu = {tr['reduced_mass']['latex']}"])
     add("Accelerations", [rf"\ddot{{{sym.get(c, c)}}} = {e['latex']}" for c, e in tr.get("accelerations", {}).items()])
@@ -121,12 +122,11 @@ def _transformed(doc: dict[str, Any]) -> list[dict[str, Any]] | None:
     conserved = []
     for c in tr.get("conserved", []):
         text = f"{c.get('latex_name') or c['name']} = {c['latex']}"
-        if c.get("original"):
-            text += f" = {c['original']['latex']}"
+        if c.get("original") and c["name"].startswith("p_"):
+            text += f" = {c['original']['latex']}"  # the same momentum in the old coordinates
         conserved.append(text)
     add("Conserved", conserved)
-    cyclic = ", ".join(sym.get(c, c) for c in tr.get("cyclic", []))
-    return [{"title": "Cyclic", "latex": [rf"\text{{cyclic: }} {cyclic}"]}, *rows] if cyclic else rows
+    return rows
 
 
 def _fmt(x: float) -> str:
