@@ -12,8 +12,11 @@ READY = '#run-status[data-state="ready"]'
 
 
 def open_scene(page, scene_id: str) -> None:
+    """Open a scene page and wait for its first simulation (failing fast, with the page's message, if it fails)."""
     page.goto(f"/scenes/{scene_id}")
-    page.wait_for_selector(READY, state="attached")
+    page.wait_for_selector(f'{READY}, #run-status[data-state="error"]', state="attached")
+    state = page.get_attribute("#run-status", "data-state")
+    assert state == "ready", page.inner_text("#run-status .message")
 
 
 def trace_values(page, selector: str, trace: int, key: str = "x") -> list:
