@@ -1,0 +1,168 @@
+/**
+ * reduction.js — panels of the one-coordinate reduction (the derivation's effective_potential).
+ *
+ *   new EffectivePotentialPanel(section, data)   U_eff over the run's range, the energy level
+ *                                                (E_r at the cursor), turning points, the current point
+ *   new SmallOscillationsPanel(section, data)    ω from the engine's ω² = U_eff''/m_eff at the nearest
+ *                                                stable equilibrium, beside ω measured from the run
+ *   reduced(run), equilibrium(run, red), measuredOmega(t, values)   the numbers behind them
+ *
+ * Every expression comes from the engine as a tree (expr.js); the momenta of the cyclic
+ * coordinates take their values from the initial state.
+ */
+import { compile } from "./expr.js";
+import { axis, COLORS, CONFIG, cursorShape, finite, layout, parts } from "./plotkit.js";
+import { fmt, table } from "./summaries.js";
+
+/** The one-coordinate reduction evaluated for a run: U_eff, m_eff, the momenta's values, E_r(t). */
+export function reduced(run) {
+  const red = run.data.reduction;
+  const env0 = run.envAt(0);
+  const P = {};
+  for (const m of red.momenta) P[m.symbol] = compile(m.tree)(env0);
+  const U = compile(red.potential), M = compile(red.mass);
+  const r = red.coordinate;
+  const at = (x) => ({ ...run.params, ...P, [r]: x, t: 0 });
+  const Er = Array.from({ length: run.n }, (_, i) => {
+    const e = { ...run.envAt(i), ...P };
+    return 0.5 * M(e) * e[`${r}_dot`] ** 2 + U(e);
+  });
+  return { r, P, U: (x) => U(at(x)), at, Er, values: run.state[r] };
+}
+
+function bisect(f, a, b) {
+  let fa = f(a);
+  for (let k = 0; k < 60; k++) {
+    const m = (a + b) / 2, fm = f(m);
+    if (Math.sign(fm) === Math.sign(fa)) { a = m; fa = fm; } else b = m;
+  }
+  return (a + b) / 2;
+}
+
+function roots(f, lo, hi, n = 400) {
+  const out = [];
+  let x0 = lo, f0 = f(lo);
+  for (let k = 1; k <= n; k++) {
+    const x1 = lo + ((hi - lo) * k) / n, f1 = f(x1);
+    if (Number.isFinite(f0) && Number.isFinite(f1) && Math.sign(f0) !== Math.sign(f1)) out.push(bisect(f, x0, x1));
+    x0 = x1; f0 = f1;
+  }
+  return out;
+}
+
+function window_(values, nonnegative) {
+  const lo = Math.min(...values), hi = Math.max(...values);
+  const pad = Math.max(0.5 * (hi - lo), 0.15 * Math.max(Math.abs(lo), Math.abs(hi), 0.2));
+  return [nonnegative ? Math.max(lo - pad, 1e-3 * hi) : lo - pad, hi + pad];
+}
+
+export class EffectivePotentialPanel {
+  constructor(section, data) { this.section = section; this.data = data; Object.assign(this, parts(section)); }
+
+  draw(run) {
+    this.red = reduced(run);
+    const { r, U, Er, values } = this.red;
+    const [lo, hi] = window_(values, run.data.nonnegative.includes(r));
+    this.grid = Array.from({ length: 300 }, (_, k) => lo + ((hi - lo) * k) / 299);
+    const u = this.grid.map((x) => { const y = U(x); return Number.isFinite(y) ? y : null; });
+    const top = Math.max(...finite(Er)), bottom = Math.min(...finite(u));
+    const d = Math.max(top - bottom, 1e-9 * Math.abs(top), 1e-12);
+    const lr = run.data.labels[r], unit = run.data.units[r];
+    const traces = [
+      { type: "scatter", mode: "lines", x: this.grid, y: u, name: "U_eff", line: { color: COLORS.U, width: 2.5 } },
+      { type: "scatter", mode: "lines", x: [lo, hi], y: [Er[0], Er[0]], name: "energy level", line: { color: COLORS.E, dash: "dash" } },
+      { type: "scatter", mode: "markers", x: [], y: [], name: "turning points", marker: { color: COLORS.a, size: 10, symbol: "diamond" } },
+      { type: "scatter", mode: "markers", x: [values[0]], y: [U(values[0])], name: "now", marker: { color: "#c62828", size: 12 } },
+    ];
+    const lay = layout({ hovermode: "closest", xaxis: axis(`${lr} (${unit})`, { range: [lo, hi] }), yaxis: axis("U_eff (J)", { range: [bottom - 0.1 * d, top + 0.6 * d] }) });
+    Plotly.react(this.plot, traces, lay, CONFIG);
+    const momenta = Object.entries(this.red.P).map(([k, v]) => `${run.data.labels[k] || k} = ${fmt(v)}`).join(", ");
+    this.cursor(0, run);
+    table(this.summary, "Effective potential on a grid (every 30th point)", [`${lr} (${unit})`, "U_eff (J)"],
+      this.grid.filter((_, k) => k % 30 === 0).map((x) => [fmt(x), U(x)]));
+    this.note = momenta ? `With ${momenta} (fixed by the initial state).` : "";
+  }
+
+  cursor(i, run) {
+    const { U, Er, values } = this.red;
+    const level = Er[i];
+    const turning = roots((x) => U(x) - level, this.grid[0], this.grid[this.grid.length - 1]);
+    Plotly.restyle(this.plot, {
+      x: [[this.grid[0], this.grid[this.grid.length - 1]], turning, [values[i]]],
+      y: [[level, level], turning.map(() => level), [U(values[i])]],
+    }, [1, 2, 3]);
+    const lr = run.data.labels[this.red.r], unit = run.data.units[this.red.r];
+    const tp = turning.length ? `turning points at ${lr} = ${turning.map(fmt).join(", ")} ${unit}` : "no turning point in view";
+    this.readout.textContent = `Energy level ${fmt(level)} J; ${tp}. ${this.note}`;
+  }
+}
+
+/** The stable equilibrium nearest the motion and its ω² (from the engine's expressions). */
+export function equilibrium(run, red) {
+  const spec = run.data.reduction;
+  const values = red.values;
+  const mid = (Math.min(...values) + Math.max(...values)) / 2;
+  const env = red.at(mid);
+  const W = compile(spec.omega_squared);
+  let candidates = spec.equilibria
+    .filter((e) => e.position !== null && e.omega_squared !== null)
+    .map((e) => ({ x: compile(e.position)(env), w2: compile(e.omega_squared)(env) }));
+  if (!candidates.length && spec.condition !== null) {
+    const C = compile(spec.condition);
+    const [lo, hi] = window_(values, run.data.nonnegative.includes(red.r));
+    candidates = roots((x) => C(red.at(x)), lo, hi).map((x) => ({ x, w2: W(red.at(x)) }));
+  }
+  candidates = candidates.filter((c) => Number.isFinite(c.x) && Number.isFinite(c.w2) && c.w2 > 0);
+  candidates.sort((a, b) => Math.abs(a.x - mid) - Math.abs(b.x - mid));
+  return candidates[0] || null;
+}
+
+/** Angular frequency measured from a sampled oscillation (mean spacing of upward crossings of its midline). */
+export function measuredOmega(t, values) {
+  const mid = (Math.min(...values) + Math.max(...values)) / 2;
+  const crossings = [];
+  for (let i = 1; i < values.length; i++) {
+    const a = values[i - 1] - mid, b = values[i] - mid;
+    if (a < 0 && b >= 0) crossings.push(t[i - 1] + ((t[i] - t[i - 1]) * -a) / (b - a));
+  }
+  if (crossings.length < 2) return null;
+  const period = (crossings[crossings.length - 1] - crossings[0]) / (crossings.length - 1);
+  return (2 * Math.PI) / period;
+}
+
+export class SmallOscillationsPanel {
+  constructor(section, data) { this.section = section; this.data = data; Object.assign(this, parts(section)); }
+
+  draw(run) {
+    const red = reduced(run);
+    const eq = equilibrium(run, red);
+    const { r, values } = red;
+    const lr = run.data.labels[r], unit = run.data.units[r];
+    const measured = measuredOmega(run.t, values);
+    const traces = [{ type: "scatter", mode: "lines", x: run.t, y: values, name: `${lr} simulated`, line: { color: COLORS.T, width: 2 } }];
+    if (eq) {
+      const w = Math.sqrt(eq.w2), a = values[0] - eq.x, b = run.state[`${r}_dot`][0] / w;
+      traces.push({ type: "scatter", mode: "lines", x: run.t, y: Array.from(run.t, (t) => eq.x + a * Math.cos(w * t) + b * Math.sin(w * t)), name: "small-oscillation prediction", line: { color: COLORS.U, width: 2, dash: "dash" } });
+    }
+    Plotly.react(this.plot, traces, layout({ xaxis: axis("t (s)"), yaxis: axis(`${lr} (${unit})`), shapes: [cursorShape(0)] }), CONFIG);
+    const predicted = eq ? Math.sqrt(eq.w2) : null;
+    const rows = [
+      ["predicted by the engine (ω² = U_eff''/m_eff)", predicted, predicted ? (2 * Math.PI) / predicted : null],
+      ["measured from this run", measured, measured ? (2 * Math.PI) / measured : null],
+    ];
+    table(this.summary, "Small-oscillation frequency", ["", "ω (rad/s)", "period (s)"], rows);
+    const tableEl = this.section.querySelector(".frequencies");
+    if (tableEl) table(tableEl, "Frequency: prediction and measurement", ["", "ω (rad/s)", "period (s)"], rows);
+    if (!eq) this.readout.textContent = "No stable equilibrium near this motion, so no small-oscillation prediction.";
+    else if (!measured) this.readout.textContent = `Predicted ω = ${fmt(predicted)} rad/s about ${lr} = ${fmt(eq.x)} ${unit}; this run is too short to measure a full oscillation.`;
+    else {
+      const amp = Math.max(...values.map((v) => Math.abs(v - eq.x)));
+      this.readout.textContent = `About ${lr} = ${fmt(eq.x)} ${unit}: predicted ω = ${fmt(predicted)} rad/s, measured ${fmt(measured)} rad/s (${fmt((100 * (measured - predicted)) / predicted)} %) at amplitude ${fmt(amp)} ${unit}. The prediction holds as the amplitude goes to zero.`;
+    }
+  }
+
+  cursor(i, run) {
+    Plotly.relayout(this.plot, { "shapes[0].x0": run.t[i], "shapes[0].x1": run.t[i] });
+  }
+}
+
