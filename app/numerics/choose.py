@@ -113,13 +113,13 @@ def analyse(
         fast_amplitude = float(np.max(fast_swing(J, F, rho / 10.0) / scale)) if rho > 0 else 0.0
     except (ValueError, np.linalg.LinAlgError):
         fast_amplitude = math.inf
-    stiff = rho > STIFF_RATIO * slow_rate and fast_amplitude <= 1.0
+    stiff = bool(rho > STIFF_RATIO * slow_rate and fast_amplitude <= 1.0)
     unstable = lam[(lam.real > 0) & (np.abs(lam.imag) <= 1e-8 * size)]
     creeping = float(np.linalg.norm(F)) < SADDLE_SPEED * (unstable.real.max() if unstable.size else 0.0) * max(
         float(np.linalg.norm(y0)), 1.0
     )
     return Analysis(
-        rho, slow_rate, fast_amplitude, stiff, rho * t_end / (2 * math.pi), bool(unstable.size) and creeping
+        rho, slow_rate, fast_amplitude, stiff, rho * t_end / (2 * math.pi), bool(unstable.size and creeping)
     )
 
 

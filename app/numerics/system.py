@@ -43,9 +43,11 @@ class NumericSystem:
                 self._compiled = jit.compiled_functions({k: self.sources[k] for k in ("rhs", "ham")})
             return self._compiled
 
+    # The Python twins get lists of floats: plain float arithmetic is faster than numpy scalars, and a
+    # division by zero raises ZeroDivisionError instead of warning and returning inf.
     def f(self, t: float, y: np.ndarray, k: np.ndarray) -> np.ndarray:
         out = np.empty(2 * self.n)
-        self.python["rhs"](t, y, k, out)
+        self.python["rhs"](float(t), np.asarray(y, dtype=float).tolist(), np.asarray(k, dtype=float).tolist(), out)
         return out
 
     def jacobian(self, t: float, y: np.ndarray, k: np.ndarray) -> np.ndarray | None:
@@ -54,12 +56,12 @@ class NumericSystem:
             return None
         m = 2 * self.n
         out = np.empty(m * m)
-        self.python["jac"](t, y, k, out)
+        self.python["jac"](float(t), np.asarray(y, dtype=float).tolist(), np.asarray(k, dtype=float).tolist(), out)
         return out.reshape(m, m)
 
     def momenta(self, t: float, y: np.ndarray, k: np.ndarray) -> np.ndarray:
         out = np.empty(self.n)
-        self.python["momenta"](t, y, k, out)
+        self.python["momenta"](float(t), np.asarray(y, dtype=float).tolist(), np.asarray(k, dtype=float).tolist(), out)
         return out
 
 

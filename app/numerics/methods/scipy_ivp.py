@@ -50,6 +50,7 @@ class ScipyMethod(Method):
     def _run(self, problem: Problem, **options) -> Trajectory:
         rhs = problem.system.python["rhs"]
         k = problem.k
+        floats = k.tolist()
         m = problem.y0.size
         calls = [0]
         deadline = problem.deadline
@@ -60,7 +61,7 @@ class ScipyMethod(Method):
                 raise _OutOfBudget("the wall-clock budget ran out")
             out = np.empty(m)
             try:
-                rhs(t, y, k, out)
+                rhs(t, y.tolist(), floats, out)
             except (ZeroDivisionError, ValueError, OverflowError) as exc:
                 raise _NotEvaluable(f"{exc} at t = {t:.6g} s") from None
             return out

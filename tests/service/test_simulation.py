@@ -1,0 +1,127 @@
+"""The simulation service: request checks with clear messages, the JSON document, work-precision data."""
+
+from types import SimpleNamespace
+
+import pytest
+
+from app.numerics import limits
+from app.numerics.errors import SimulationError, TooMuchWork
+from app.service import simulation, work_precision
+from app.service.derivations import derivation
+
+
+def request(**fields):
+    base = {"parameters": {}, "initial": {}, "t_end": None, "method": "auto", "rtol": None, "atol": None, "samples": 50}
+    return SimpleNamespace(**{**base, **fields})
+
+
+def test_document_shape_for_a_scene():
+    doc = simulation.simulate_scene("spherical-pendulum", request(t_end=2.0))
+    assert len(doc["t"]) == 50 and doc["t"][0] == 0.0 and doc["t"][-1] == 2.0
+    assert set(doc["state"]) == {"theta", "theta_dot", "phi", "phi_dot"}
+    assert set(doc["conserved"]) == {"p_phi", "E"}
+    assert "string tension" in doc["constraint_forces"]
+    stats = doc["stats"]
+    for key in ("method", "reason", "steps", "rhs_evaluations", "wall_time_s", "error_estimate", "max_energy_drift"):
+        assert key in stats
+    assert stats["max_hamiltonian_drift"] is not None and stats["t_end_reached"] == 2.0
+    assert stats["error_estimate"] < 1e-5
+
+
+def test_defaults_come_from_the_scene():
+    doc = simulation.simulate_scene("simple-pendulum", request(samples=None))
+    assert len(doc["t"]) == limits.SAMPLES_DEFAULT and doc["t"][-1] == 10.0
+    assert doc["state"]["theta"][0] == 1.0
+
+
+@pytest.mark.parametrize(
+    "fields, message",
+    [
+        ({"parameters": {"mass": 1.0}}, "unknown parameter 'mass'; this system has m, g, R"),
+        ({"parameters": {"m": -1.0}}, "parameters.m = -1 is outside its allowed range"),
+        ({"parameters": {"R": 0.0}}, "parameters.R = 0 is outside its allowed range"),
+        ({"initial": {"x": 1.0}}, "unknown initial value 'x'; allowed: theta, theta_dot"),
+        ({"initial": {"theta": float("nan")}}, "initial.theta must be a finite number"),
+        ({"t_end": 1e9}, "t_end = 1e+09 is outside the allowed range"),
+        ({"rtol": 1e-20}, "rtol = 1e-20 is outside the allowed range"),
+        ({"samples": 10**7}, "samples = 1e+07 is outside the allowed range"),
+        ({"method": "Euler"}, "unknown method 'Euler'"),
+    ],
+)
+def test_bad_requests_are_refused_with_a_message(fields, message):
+    with pytest.raises(SimulationError) as info:
+        simulation.simulate_scene("simple-pendulum", request(**fields))
+    assert message in str(info.value)
+    assert info.value.status_code == 422
+
+
+def test_singular_start_is_refused():
+    with pytest.raises(SimulationError, match="cannot be evaluated at this initial state"):
+        simulation.simulate_scene("tabletop-spring", request(initial={"r": 0.0, "theta_dot": 1.0}))
+
+
+def test_method_that_does_not_apply_is_refused():
+    with pytest.raises(SimulationError, match="Yoshida4 cannot integrate this system"):
+        simulation.simulate_scene("spherical-pendulum", request(method="Yoshida4"))
+
+
+def test_too_much_work_is_a_clear_refusal(monkeypatch):
+    monkeypatch.setattr(limits, "WALL_SECONDS", 0.3)
+    with pytest.raises(TooMuchWork, match="too much work for RK45") as info:
+        simulation.simulate_scene(
+            "tabletop-spring", request(parameters={"k": 1e8}, t_end=1000.0, method="RK45", rtol=1e-10)
+        )
+    assert info.value.status_code == 422
+
+
+def test_slack_string_is_flagged():
+    """From near the top at rest the string tension m (R theta_dot^2 + g cos theta) starts negative."""
+    doc = simulation.simulate_scene("simple-pendulum", request(initial={"theta": 3.0}, t_end=1.0))
+    assert min(doc["constraint_forces"]["string tension"]) < 0
+    assert any("string tension becomes negative" in w for w in doc["stats"]["warnings"])
+
+
+def test_user_systems_go_through_the_same_function():
+    from app.engine.derive import derive
+    from tests.numerics.systems import DOUBLE_PENDULUM
+
+    doc = simulation.simulate_derivation(derive(DOUBLE_PENDULUM), request(initial={"a": 1.0}, t_end=3.0))
+    assert set(doc["state"]) == {"a", "a_dot", "c", "c_dot"} and doc["constraint_forces"] == {}
+    assert doc["stats"]["error_estimate"] is not None
+
+
+def test_constraint_force_that_does_not_parse_is_skipped_with_a_warning():
+    forces = [{"name": "bad", "sympy": "__import__('os')", "slack_when_negative": False}]
+    doc = simulation.simulate_derivation(
+        derivation("simple-pendulum"), request(t_end=1.0), constraint_forces=forces, scene_id=None
+    )
+    assert doc["constraint_forces"] == {}
+    assert any("constraint force 'bad' not evaluated" in w for w in doc["stats"]["warnings"])
+
+
+def test_work_precision_data():
+    data = work_precision.compute(
+        "simple-pendulum", sweep=[1e-4, 1e-8], methods=["DOP853-compiled", "Yoshida4", "RK45", "LSODA"]
+    )
+    assert "exact pendulum solution" in data["reference"]
+    assert {r["method"] for r in data["runs"]} == {"DOP853-compiled", "Yoshida4", "RK45", "LSODA"}
+    for run in data["runs"]:
+        assert run["error"] is not None and run["wall_time_s"] > 0 and run["rhs_evaluations"] > 0
+    by = {(r["method"], r["rtol"]): r["error"] for r in data["runs"]}
+    assert by[("DOP853-compiled", 1e-8)] < by[("DOP853-compiled", 1e-4)]
+
+
+def test_work_precision_without_an_exact_solution_checks_its_reference():
+    data = work_precision.compute("tabletop-spring", sweep=[1e-6], methods=["DOP853-compiled", "Gauss-Legendre"])
+    assert "no exact solution" in data["reference"] and "differ by" in data["reference"]
+    assert all(r["error"] is not None and r["error"] < 1e-3 for r in data["runs"])
+
+
+def test_work_precision_is_cached_per_scene(monkeypatch):
+    calls = []
+    monkeypatch.setattr(work_precision, "compute", lambda scene_id: calls.append(scene_id) or {"runs": []})
+    monkeypatch.setattr(work_precision, "_cache", work_precision.JsonCache("wp-test", "x"))
+    monkeypatch.setattr(work_precision._cache, "_write", lambda path, value: None)
+    work_precision.for_scene("pulley")
+    work_precision.for_scene("pulley")
+    assert calls == ["pulley"]

@@ -1,0 +1,122 @@
+"""POST /api/scenes/{id}/simulate and GET /api/scenes/{id}/work-precision follow their contract."""
+
+import pytest
+
+from app.numerics import limits
+from app.scenes import SCENES
+from app.service import work_precision
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_simulate_every_scene(client, scene_id):
+    response = client.post(f"/api/scenes/{scene_id}/simulate", json={"initial": {}, "samples": 40, "t_end": 1.0})
+    assert response.status_code == 200, response.text
+    doc = response.json()
+    scene = SCENES[scene_id]
+    assert len(doc["t"]) == 40 and doc["t"][-1] == 1.0
+    names = [*scene.system.coordinates, *(f"{q}_dot" for q in scene.system.coordinates)]
+    assert set(doc["state"]) == set(names)
+    assert all(len(v) == 40 for v in doc["state"].values())
+    assert len(doc["energy"]) == len(doc["hamiltonian"]) == 40
+    assert set(doc["stats"]) >= {
+        "method",
+        "reason",
+        "steps",
+        "rhs_evaluations",
+        "wall_time_s",
+        "error_estimate",
+        "max_energy_drift",
+        "max_hamiltonian_drift",
+        "warnings",
+        "t_end_reached",
+    }
+    assert isinstance(doc["conserved"], dict) and isinstance(doc["constraint_forces"], dict)
+
+
+def test_requested_method_and_tolerances(client):
+    body = {"initial": {"theta": 2.0}, "method": "RK45", "rtol": 1e-6, "atol": 1e-9, "samples": 11, "t_end": 2.0}
+    doc = client.post("/api/scenes/simple-pendulum/simulate", json=body).json()
+    assert doc["stats"]["method"] == "RK45" and doc["stats"]["reason"] == "requested"
+    assert doc["state"]["theta"][0] == 2.0
+
+
+@pytest.mark.parametrize(
+    "raw",
+    [
+        '{"initial": {"theta": NaN}}',
+        '{"initial": {"theta": Infinity}}',
+        '{"initial": {"theta": 1.0}, "parameters": {"g": -Infinity}}',
+        '{"initial": {"theta": 1.0}, "t_end": NaN}',
+    ],
+)
+def test_non_finite_numbers_are_422(client, raw):
+    response = client.post(
+        "/api/scenes/simple-pendulum/simulate", content=raw, headers={"content-type": "application/json"}
+    )
+    assert response.status_code == 422
+    assert "finite" in response.json()["detail"]
+
+
+@pytest.mark.parametrize(
+    "body, where",
+    [
+        ({}, "initial"),
+        ({"initial": {}, "samples": limits.SAMPLES_MAX + 1}, "samples"),
+        ({"initial": {}, "t_end": -1}, "t_end"),
+        ({"initial": {}, "t_end": limits.T_END_MAX * 10}, "t_end"),
+        ({"initial": {}, "rtol": 0.5}, "rtol"),
+        ({"initial": {}, "method": "Euler"}, "method"),
+        ({"initial": {}, "extra": 1}, "extra"),
+        ({"initial": {}, "parameters": {"m": 1e300}}, "parameters"),
+    ],
+)
+def test_out_of_range_requests_are_422(client, body, where):
+    response = client.post("/api/scenes/simple-pendulum/simulate", json=body)
+    assert response.status_code == 422
+    assert where in response.json()["detail"]
+
+
+def test_scene_ranges_and_names_are_checked(client):
+    response = client.post("/api/scenes/simple-pendulum/simulate", json={"initial": {}, "parameters": {"R": 0}})
+    assert response.status_code == 422
+    assert "parameters.R = 0 is outside its allowed range [0.05, 100.0] m" in response.json()["detail"]
+    response = client.post("/api/scenes/simple-pendulum/simulate", json={"initial": {"phi": 1}})
+    assert response.status_code == 422 and "allowed: theta, theta_dot" in response.json()["detail"]
+
+
+def test_unknown_scene_is_404(client):
+    assert client.post("/api/scenes/nope/simulate", json={"initial": {}}).status_code == 404
+    assert client.get("/api/scenes/nope/work-precision").status_code == 404
+
+
+def test_too_much_work_is_422_not_a_hang(client, monkeypatch):
+    monkeypatch.setattr(limits, "WALL_SECONDS", 0.3)
+    body = {"initial": {}, "parameters": {"k": 1e8}, "t_end": 1000, "method": "LSODA", "rtol": 1e-10}
+    response = client.post("/api/scenes/tabletop-spring/simulate", json=body)
+    assert response.status_code == 422
+    assert response.json()["detail"].startswith("too much work for LSODA")
+
+
+def test_runaway_stops_with_a_message(client):
+    body = {"initial": {"rho": 0.5}, "parameters": {"omega": 10.0}, "t_end": 1000, "samples": 500}
+    doc = client.post("/api/scenes/rotating-parabola/simulate", json=body).json()
+    assert doc["stats"]["complete"] is False and doc["stats"]["t_end_reached"] < 1000
+    assert len(doc["t"]) < 500 and any("ran away" in w for w in doc["stats"]["warnings"])
+
+
+def test_work_precision_endpoint(client, monkeypatch):
+    monkeypatch.setattr(work_precision, "SWEEP", [1e-3, 1e-6])
+    monkeypatch.setattr(work_precision, "_cache", work_precision.JsonCache("wp-api-test", "x"))
+    monkeypatch.setattr(work_precision._cache, "_write", lambda path, value: None)
+    doc = client.get("/api/scenes/incline-block/work-precision").json()
+    assert "constant-acceleration" in doc["reference"]
+    methods = {run["method"] for run in doc["runs"]}
+    assert len(methods) >= 4
+    for run in doc["runs"]:
+        assert set(run) >= {"method", "rtol", "error", "wall_time_s", "rhs_evaluations"}
+
+
+def test_openapi_lists_the_routes(client):
+    paths = client.get("/openapi.json").json()["paths"]
+    assert "post" in paths["/api/scenes/{scene_id}/simulate"]
+    assert "get" in paths["/api/scenes/{scene_id}/work-precision"]
