@@ -17,6 +17,7 @@ looks up caches and awaits.
 
 from __future__ import annotations
 
+import asyncio
 import hashlib
 import json
 import logging
@@ -348,13 +349,19 @@ class UserSystems:
         if cached is not None:
             return cached
         ticket = self.gate.admit(client, address)
-        try:
-            future = self.pool.submit(job, *args, timeout=timeout)
-        except BaseException:
-            ticket.release()
-            raise
-        # the slot is freed when the job really ends, even if the client goes away first
-        future.add_done_callback(lambda _: ticket.release())
+
+        def submit() -> Any:
+            try:
+                future = self.pool.submit(job, *args, timeout=timeout)
+            except BaseException:
+                ticket.release()
+                raise
+            # the slot is freed when the job really ends, even if the client goes away first
+            future.add_done_callback(lambda _: ticket.release())
+            return future
+
+        # in a thread: the first job starts the forkserver (importing the engine), which takes seconds
+        future = await asyncio.to_thread(submit)
         result = await self.pool.run_async(future, timeout)
         cache.put(key, result)
         return result

@@ -102,7 +102,12 @@ class WorkerPool:
         except RuntimeError:  # the pool stopped between the check and the call: start afresh once
             with self._lock:
                 self._pool = None
+        try:
             return self._running_pool().schedule(function, args=args, timeout=timeout)
+        except (RuntimeError, OSError, BrokenProcessPool):
+            with self._lock:
+                self._pool = None
+            raise JobFailed("the worker pool could not start a worker; try again", "unavailable") from None
 
     def outcome(self, future: Future, timeout: float) -> Any:
         """The job's result, or JobFailed saying why there is none."""
