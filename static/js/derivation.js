@@ -121,13 +121,13 @@ export function renderDerivation(container, doc) {
 
 /** Open collapsed steps for printing, and close them again afterwards. */
 export function printReady() {
-  let opened = [];
+  // beforeprint may fire more than once before afterprint (a print preview, then the print)
+  const opened = new Set();
   window.addEventListener("beforeprint", () => {
-    opened = [...document.querySelectorAll("details:not([open])")];
-    for (const d of opened) d.open = true;
+    for (const d of document.querySelectorAll("details:not([open])")) { d.open = true; opened.add(d); }
   });
   window.addEventListener("afterprint", () => {
     for (const d of opened) d.open = false;
-    opened = [];
+    opened.clear();
   });
 }
