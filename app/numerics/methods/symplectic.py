@@ -76,7 +76,8 @@ class FixedStep(Method):
         t_pilot, y_pilot, mean_step = self.pilot(problem)
         pick = np.unique(np.linspace(0, len(t_pilot) - 1, min(PILOT_STATES, len(t_pilot))).astype(int))
         spacing = float(np.max(np.diff(problem.t)))
-        h = min(spacing, mean_step)
+        # a pilot that stopped at once (a runaway, a singular start) gives no step size to start from
+        h = min(spacing, mean_step) if mean_step > 0 and math.isfinite(mean_step) else spacing / 1000.0
         times = np.ascontiguousarray(t_pilot[pick], dtype=float)
         states = np.ascontiguousarray(y_pilot[pick], dtype=float)
         for _ in range(8):
