@@ -15,7 +15,10 @@ expensive job (a derivation or simulation of a user system):
 
 Jobs are time-limited by the worker pool and queued first come, first served;
 since each client has at most one job waiting, the queue serves clients in
-turn and a few abusive clients hold at most a few slots.
+turn and a few abusive clients hold at most a few slots.  Answers are cached,
+and a request identical to one already running waits for that job without a
+ticket of its own (app/service/user_systems.py), so a class opening one shared
+link costs one job.
 """
 
 from __future__ import annotations

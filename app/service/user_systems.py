@@ -331,6 +331,7 @@ class UserSystems:
         self._gate = gate
         self.derivations = ResultCache()
         self.simulations = ResultCache(entries=64)
+        self._running: dict[tuple[int, str], asyncio.Future] = {}
 
     @property
     def pool(self) -> worker.WorkerPool:
@@ -345,18 +346,34 @@ class UserSystems:
         return self._gate
 
     async def _run(self, cache: ResultCache, key: str, client: str, address: str, timeout: float, job, *args) -> bytes:
+        """A cached answer, else the same request already running, else a new job (one fair-share ticket)."""
         cached = cache.get(key)
         if cached is not None:
             return cached
-        ticket = self.gate.admit(client, address)
+        # a classroom opening one shared link asks for the same system at once: one job serves them all
+        running = self._running.get((id(asyncio.get_running_loop()), key))
+        if running is None:
+            ticket = self.gate.admit(client, address)
+            running = asyncio.ensure_future(self._job(cache, key, ticket, timeout, job, args))
+            slot = (id(asyncio.get_running_loop()), key)
+            self._running[slot] = running
+            running.add_done_callback(lambda done: self._finished(slot, done))
+        # a client that goes away does not stop the job the others wait for
+        return await asyncio.shield(running)
 
+    def _finished(self, slot: tuple[int, str], done: asyncio.Future) -> None:
+        self._running.pop(slot, None)
+        if not done.cancelled():
+            done.exception()  # retrieved here too, in case every waiter went away
+
+    async def _job(self, cache: ResultCache, key: str, ticket: fair.Ticket, timeout: float, job, args) -> bytes:
         def submit() -> Any:
             try:
                 future = self.pool.submit(job, *args, timeout=timeout)
             except BaseException:
                 ticket.release()
                 raise
-            # the slot is freed when the job really ends, even if the client goes away first
+            # the slot is freed when the job really ends
             future.add_done_callback(lambda _: ticket.release())
             return future
 

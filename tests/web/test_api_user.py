@@ -164,6 +164,38 @@ def test_one_job_at_a_time_per_session(client):
         service.derivations = saved
 
 
+def test_the_same_system_asked_twice_at_once_is_derived_once(client):
+    """A classroom opening one link: a second session asking for a system being derived waits for that job."""
+    service = user_systems.service
+    saved = service.derivations
+    service.derivations = user_systems.ResultCache()
+    client.cookies.clear()
+    sessions = [service.gate.mint(f"pupil{i}") for i in range(2)]
+    results, most = {}, 0
+
+    def ask(i):
+        results[i] = client.post("/api/derive", json=DOUBLE_PENDULUM, headers={"cookie": f"{COOKIE}={sessions[i]}"})
+
+    first = threading.Thread(target=ask, args=(0,))
+    second = threading.Thread(target=ask, args=(1,))
+    try:
+        first.start()
+        deadline = time.monotonic() + 60
+        while service.gate.in_flight == 0 and time.monotonic() < deadline:
+            time.sleep(0.01)
+        second.start()
+        while second.is_alive() or first.is_alive():
+            most = max(most, service.gate.in_flight)
+            time.sleep(0.01)
+        assert results[0].status_code == results[1].status_code == 200
+        assert results[0].content == results[1].content
+        assert most == 1  # one job, one fair-share slot, for both
+    finally:
+        first.join(120)
+        second.join(120)
+        service.derivations = saved
+
+
 def test_busy_server_answers_503_with_retry_after(client):
     gate = user_systems.service.gate
     tickets = [gate.admit(f"other{i}", f"10.0.0.{i}") for i in range(gate.capacity)]
