@@ -1,10 +1,10 @@
 """Fixtures for real-browser tests: the app served by uvicorn in a thread, and Debian's headless Chromium.
 
 ``live_server`` (session) yields the base URL of the app on a free loopback
-port.  ``page`` is a Playwright page in a fresh context of one shared browser
-(``/usr/bin/chromium`` through ``executable_path``; never ``playwright
-install``); ``page.console_errors`` collects console errors and uncaught
-exceptions.  Screenshots go to ``test-artifacts/``.
+port.  ``page`` is a Playwright page in a fresh context of one browser shared
+by the package's tests (``/usr/bin/chromium`` through ``executable_path``;
+never ``playwright install``); ``page.console_errors`` collects console errors
+and uncaught exceptions.  Screenshots go to ``test-artifacts/``.
 """
 
 from __future__ import annotations
@@ -47,8 +47,10 @@ def live_server() -> Iterator[str]:
     thread.join(timeout=10)
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="package")
 def browser():
+    # Package scope: Playwright's sync API keeps an event loop running in this thread while it is
+    # open, so it must close when the browser tests are done (later tests may call asyncio.run).
     from playwright.sync_api import sync_playwright
 
     with sync_playwright() as playwright:
