@@ -213,9 +213,7 @@ def _derive(spec: dict[str, Any]) -> Derivation:
     system = build_system(spec)
     try:
         d = derive(system)
-    except InvalidSystem:
-        raise
-    except DerivationError as exc:
+    except DerivationError as exc:  # a singular mass matrix and the like: the form's field is at fault
         where = form_of(spec)
         raise InvalidSystem(f"{where}: {exc}", (where,), exc.part) from None
     _derivations[key] = d

@@ -5,6 +5,7 @@ The jobs below are module-level functions, so a worker process can import them.
 
 import asyncio
 import os
+import threading
 import time
 
 import pytest
@@ -32,6 +33,24 @@ def whoami():
 
 def raise_value_error():
     raise ValueError("a job's own error")
+
+
+def run_in_own_loop(coroutine_function):
+    """asyncio.run in a thread of its own (the browser tests' Playwright keeps a loop running in the main one)."""
+    outcome = {}
+
+    def target():
+        try:
+            outcome["value"] = asyncio.run(coroutine_function())
+        except BaseException as exc:  # handed to the test's thread
+            outcome["error"] = exc
+
+    thread = threading.Thread(target=target)
+    thread.start()
+    thread.join(120)
+    if "error" in outcome:
+        raise outcome["error"]
+    return outcome["value"]
 
 
 @pytest.fixture(scope="module")
@@ -90,7 +109,7 @@ def test_awaiting_a_job_does_not_hold_the_event_loop(pool):
         result, _ = await asyncio.gather(pool.run_async(future, 60), tick())
         return result, ticks
 
-    result, ticks = asyncio.run(main())
+    result, ticks = run_in_own_loop(main)
     assert result == 0.3 and ticks > 5
 
 
@@ -104,7 +123,7 @@ def test_cancelling_the_await_kills_the_job(pool):
             await task
         return future
 
-    future = asyncio.run(main())
+    future = run_in_own_loop(main)
     deadline = time.monotonic() + 20
     while not future.done() and time.monotonic() < deadline:
         time.sleep(0.05)
