@@ -20,6 +20,7 @@ from app.web.schemas_simulate import SimulateRequest, SimulateResponse, WorkPrec
 router = APIRouter(prefix="/api", tags=["simulation"])
 
 ERRORS = {
+    400: {"model": ErrorResponse, "description": "The body is not JSON (or not UTF-8)."},
     404: {"model": ErrorResponse, "description": "No scene has this id."},
     422: {
         "model": ErrorResponse,
