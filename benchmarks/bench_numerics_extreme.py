@@ -17,8 +17,10 @@ def fmt(x: float | None) -> str:
 
 
 def main() -> None:
-    print("| case | auto chose | error vs exact | error estimate | time s | energy drift (rel.) | notes |")
-    print("|---|---|---|---|---|---|---|")
+    print(
+        "| case | rtol | auto chose | error vs exact | error estimate | time s | drift of E (h if E is not conserved) | notes |"
+    )
+    print("|---|---|---|---|---|---|---|---|")
     for case in CASES:
         r = run(case)
         o = r.outcome
@@ -28,7 +30,7 @@ def main() -> None:
             notes.insert(0, f"p_φ drift {r.summary['conserved_drift']['p_phi']['relative']:.1e} (rel.)")
         text = "; ".join(n.split(":")[0] if len(n) > 90 else n for n in notes) or ""
         print(
-            f"| {case.name} | {o.method} | {fmt(r.true_error)} | {fmt(est)} | {r.seconds:.3f} | "
+            f"| {case.name} | {case.rtol:.0e} | {o.method} | {fmt(r.true_error)} | {fmt(est)} | {r.seconds:.3f} | "
             f"{fmt(r.energy_drift)} | {text} |"
         )
 
