@@ -8,7 +8,7 @@ from contextlib import asynccontextmanager
 
 from fastapi import FastAPI
 
-from app.service.derivations import warm_all
+from app.service import derivations, simulation
 from app.web import api_scenes, errors, pages
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
@@ -18,9 +18,14 @@ from app.web.templating import static_app
 
 @asynccontextmanager
 async def lifespan(app: FastAPI) -> AsyncIterator[None]:
-    # Fill the derivation cache in the background: the server answers at once,
-    # and a request for a scene not yet derived waits only for that scene.
-    threading.Thread(target=warm_all, name="warm-derivations", daemon=True).start()
+    # Fill the derivation cache, then load the compiled integrators and the scenes'
+    # right-hand sides, in the background: the server answers at once, and a request
+    # for a scene not yet ready waits only for that scene.
+    def warm() -> None:
+        derivations.warm_all()
+        simulation.warm_all()
+
+    threading.Thread(target=warm, name="warm-up", daemon=True).start()
     yield
 
 
