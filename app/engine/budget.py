@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import signal
 import threading
+import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import TypeVar
@@ -61,16 +62,54 @@ def within_budget(work: Callable[[], T], fallback: T, seconds: float) -> T:
         return fallback
 
 
+_local = threading.local()
+_TIDY_CACHE: dict[sp.Expr, sp.Expr] = {}
+_TIDY_CACHE_SIZE = 2048
+
+
+@contextmanager
+def display_budget(seconds: float) -> Iterator[None]:
+    """Share one time budget among all display simplifications in the block."""
+    previous = getattr(_local, "deadline", None)
+    _local.deadline = time.monotonic() + seconds
+    try:
+        yield
+    finally:
+        _local.deadline = previous
+
+
+def _remaining(seconds: float) -> float:
+    deadline = getattr(_local, "deadline", None)
+    return seconds if deadline is None else min(seconds, deadline - time.monotonic())
+
+
 def tidy(expr: sp.Expr, seconds: float = SIMPLIFY_SECONDS) -> sp.Expr:
-    """A display form: cheap normalisation always, full simplify when small and quick."""
-    cheap = within_budget(lambda: sp.factor_terms(sp.cancel(expr)), expr, seconds)
-    if sp.count_ops(cheap) > SIMPLIFY_MAX_OPS:
-        return cheap
-    full = within_budget(lambda: sp.simplify(cheap), cheap, seconds)
-    # Keep the angles the reader wrote: reject forms that trade sin θ cos θ for sin 2θ.
-    if _angles(full) - _angles(cheap) or sp.count_ops(full) > sp.count_ops(cheap):
-        return cheap
-    return full
+    """A display form: cheap normalisation always, full simplify when small and quick.
+
+    Results reached within budget are remembered (derivations repeat many
+    expressions); once a shared display budget is spent, expressions are shown
+    as they are.
+    """
+    if expr in _TIDY_CACHE:
+        return _TIDY_CACHE[expr]
+    left = _remaining(seconds)
+    if left <= 0.01:
+        return expr
+    cheap = within_budget(lambda: sp.factor_terms(sp.cancel(expr)), None, left)
+    if cheap is None:
+        return expr
+    result = cheap
+    if sp.count_ops(cheap) <= SIMPLIFY_MAX_OPS:
+        left = _remaining(seconds)
+        full = within_budget(lambda: sp.simplify(cheap), None, left) if left > 0.01 else None
+        if full is None:
+            return cheap
+        # Keep the angles the reader wrote: reject forms that trade sin θ cos θ for sin 2θ.
+        if not (_angles(full) - _angles(cheap)) and sp.count_ops(full) <= sp.count_ops(cheap):
+            result = full
+    if len(_TIDY_CACHE) < _TIDY_CACHE_SIZE:
+        _TIDY_CACHE[expr] = result
+    return result
 
 
 def _angles(expr: sp.Expr) -> set[sp.Expr]:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from app.engine.budget import display_budget
 from app.engine.constraints import ConstraintForce, constraint_forces
 from app.engine.derive import Derivation
 from app.engine.report import Printer, build_steps, constraint_steps, new_lagrangian, transform_steps
@@ -20,11 +21,20 @@ def parameters_json(parameters: tuple[Parameter, ...]) -> dict[str, dict[str, An
     }
 
 
+DISPLAY_SECONDS = 6.0
+
+
 def derivation_json(d: Derivation, scene: Scene | None = None) -> dict[str, Any]:
     """Everything derived, with each expression as a sympy string and LaTeX.
 
     ``scene``, for a chapter scene, adds the scene block and the chapter's errata.
+    All display simplification shares one time budget (DISPLAY_SECONDS).
     """
+    with display_budget(DISPLAY_SECONDS):
+        return _derivation_json(d, scene)
+
+
+def _derivation_json(d: Derivation, scene: Scene | None) -> dict[str, Any]:
     table, eqs, en, red = d.table, d.equations, d.energetics, d.reduction
     pr = Printer(table.latex_names())
     forces = constraint_forces(d)

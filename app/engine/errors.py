@@ -10,3 +10,7 @@ class DerivationError(ValueError):
     def __init__(self, message: str, part: str = ""):
         super().__init__(message)
         self.part = part
+
+    def __reduce__(self):
+        # keep ``part`` when the error crosses a process boundary (worker pool)
+        return (type(self), (str(self), self.part))

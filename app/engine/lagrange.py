@@ -20,6 +20,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from app.engine.budget import pythagoras
 from app.engine.errors import DerivationError
 from app.engine.mechanics import Mechanics
 
@@ -85,6 +86,12 @@ def euler_lagrange(mech: Mechanics) -> Equations:
     # f = -E|_{q_ddot = 0}, so that M q_ddot = f
     zero_acc = dict.fromkeys(qdd, sp.Integer(0))
     forcing = sp.Matrix([-sp.expand(r).xreplace(zero_acc) for r in residuals])
-    # q_ddot = M^-1 f
-    solved = M.LUsolve(forcing)
+    if M.shape[0] <= 3:
+        # Cramer's rule, q_ddot = adj(M) f / det M, with sin² + cos² = 1 collected:
+        # compact closed forms that display without further simplification
+        det = sp.factor_terms(pythagoras(M.det(method="berkowitz")))
+        solved = [sp.factor_terms(sp.expand(x)) / det for x in M.adjugate() * forcing]
+    else:
+        # q_ddot = M^-1 f
+        solved = list(M.LUsolve(forcing))
     return Equations(dL_dq, momenta, ddt, residuals, M, forcing, tuple(solved))
