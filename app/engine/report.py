@@ -126,7 +126,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
                 [
                     rf"\frac{{\partial L}}{{\partial {qn[k]}}} = {pr.tex(display(g))}",
                     rf"\frac{{\partial L}}{{\partial {qdn[k]}}} = {pr.tex(display(p))}",
-                    rf"\frac{{d}}{{dt}}\frac{{\partial L}}{{\partial {qdn[k]}}} = {pr.tex(display(dp))}",
+                    rf"\frac{{d}}{{dt}}\left(\frac{{\partial L}}{{\partial {qdn[k]}}}\right) = {pr.tex(display(dp))}",
                 ],
                 [display(g), display(p), display(dp)],
                 "The two partial derivatives the Euler–Lagrange equation needs, and the total time derivative of the second.",
