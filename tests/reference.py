@@ -35,8 +35,8 @@ def _reader(system: System):
     return qs, read
 
 
-def reference_accelerations(system: System) -> tuple[list[sp.Expr], dict[str, sp.Expr]]:
-    """q_ddot from LagrangesMethod, expressed in the project's plain symbols."""
+def lagranges_method(system: System):
+    """LagrangesMethod on the declaration, its equations formed; returns it and the reader."""
     qs, read = _reader(system)
     N = me.ReferenceFrame("N")
     origin = me.Point("O")
@@ -44,9 +44,8 @@ def reference_accelerations(system: System) -> tuple[list[sp.Expr], dict[str, sp
     if system.particles:
         bodies = []
         for i, part in enumerate(system.particles):
-            P = origin.locatenew(
-                f"P{i}", sum((read(c) * e for c, e in zip(part.position, (N.x, N.y, N.z), strict=True)), 0 * N.x)
-            )
+            r = sum((read(c) * e for c, e in zip(part.position, (N.x, N.y, N.z), strict=True)), 0 * N.x)
+            P = origin.locatenew(f"P{i}", r)
             P.set_vel(N, P.pos_from(origin).dt(N))
             bodies.append(me.Particle(f"B{i}", P, read(part.mass)))
         L = me.Lagrangian(N, *bodies) - read(system.potential)
@@ -56,6 +55,12 @@ def reference_accelerations(system: System) -> tuple[list[sp.Expr], dict[str, sp
         L = read(system.lagrangian)
     lm = me.LagrangesMethod(L, qs)
     lm.form_lagranges_equations()
+    return lm, qs, read
+
+
+def reference_accelerations(system: System) -> tuple[list[sp.Expr], dict[str, sp.Expr]]:
+    """q_ddot from LagrangesMethod, expressed in the project's plain symbols."""
+    lm, qs, read = lagranges_method(system)
     Q = sp.Matrix([read(system.forces.get(n, "0")) for n in system.coordinates])
     acc = lm.mass_matrix.LUsolve(lm.forcing + Q)
     t = me.dynamicsymbols._t
