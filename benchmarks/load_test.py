@@ -140,7 +140,9 @@ def start_server(workers: int) -> tuple[subprocess.Popen, str]:
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
-    env = {**os.environ, "PORT": str(port), "HOST": "127.0.0.1", "WORKERS": str(workers)}
+    # serve.sh runs `python`: the one of this interpreter's environment (the venv)
+    path = f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}"
+    env = {**os.environ, "PATH": path, "PORT": str(port), "HOST": "127.0.0.1", "WORKERS": str(workers)}
     proc = subprocess.Popen(
         [str(ROOT / "scripts" / "serve.sh")],
         cwd=ROOT,

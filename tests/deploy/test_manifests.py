@@ -1,0 +1,27 @@
+"""Deployment files say what the README promises."""
+
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def test_dockerfile_is_offline_non_root_and_healthchecked():
+    text = (ROOT / "Dockerfile").read_text()
+    assert "HEALTHCHECK" in text and "/healthz" in text
+    assert "USER lagrange" in text
+    assert "python -m app.service.warm" in text
+    # node only in the asset stage
+    final = text[text.rindex("\nFROM ") :]
+    assert "npm" not in final and "nodejs" not in final
+
+
+def test_kubernetes_manifest_has_probes_service_and_autoscaler():
+    text = (ROOT / "deploy" / "kubernetes.yaml").read_text()
+    for kind in ("kind: Deployment", "kind: Service", "kind: HorizontalPodAutoscaler"):
+        assert kind in text
+    assert "readinessProbe" in text and "livenessProbe" in text and "path: /healthz" in text
+
+
+def test_serve_script_takes_port_and_workers_from_the_environment():
+    text = (ROOT / "scripts" / "serve.sh").read_text()
+    assert "${PORT:-8000}" in text and "WORKERS" in text and "--timeout-keep-alive" in text
