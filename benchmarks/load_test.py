@@ -3,7 +3,8 @@
 Starts the app with uvicorn (``--workers``, as in the image) on a free loopback
 port, then runs bounded asyncio clients:
 
-* a student opens a scene page and its assets (once, as a browser caches them),
+* a student arrives within the first ``--ramp`` seconds and opens a scene page and
+  its assets (once, gzip accepted, as a browser caches them),
   reads the derivation and the work-precision report, then every few seconds
   changes a parameter and re-simulates; now and then derives a system of their own;
 * a hostile client (``--hostile N``) sends expensive jobs back to back: a
@@ -78,9 +79,11 @@ class Recorder:
         return response
 
 
-async def student(base: str, scenes: list[dict], rec: Recorder, stop: float, rng: random.Random) -> None:
+async def student(base: str, scenes: list[dict], rec: Recorder, stop: float, rng: random.Random, ramp: float) -> None:
     scene = rng.choice(scenes)
     sid = scene["id"]
+    # students open the page over the first `ramp` seconds, not all in one millisecond
+    await asyncio.sleep(rng.uniform(0.0, ramp))
     async with httpx.AsyncClient(base_url=base, timeout=30) as c:
         await rec.call(c, "page", "GET", f"/scenes/{sid}")
         for asset in ASSETS:
@@ -179,7 +182,7 @@ def report(level: str, rec: Recorder, seconds: float, rss: tuple[float, float]) 
         print(f"| {name} | {len(t)} | {statistics.median(t) * 1e3:.0f} | {p99 * 1e3:.0f} | {codes} |")
 
 
-async def run_level(base: str, pid: int, students: int, hostiles: int, seconds: float, soak: bool) -> None:
+async def run_level(base: str, pid: int, students: int, hostiles: int, seconds: float, soak: bool, ramp: float) -> None:
     async with httpx.AsyncClient(base_url=base, timeout=30) as c:
         scenes = (await c.get("/api/scenes")).json()
     rec = Recorder()
@@ -193,7 +196,7 @@ async def run_level(base: str, pid: int, students: int, hostiles: int, seconds: 
             samples.append((seconds - (stop - time.monotonic()), server_rss_mb(pid)))
             await asyncio.sleep(min(30.0, seconds / 10))
 
-    tasks = [student(base, scenes, rec, stop, random.Random(rng.random())) for _ in range(students)]
+    tasks = [student(base, scenes, rec, stop, random.Random(rng.random()), ramp) for _ in range(students)]
     tasks += [hostile(base, scenes, rec, stop) for _ in range(hostiles)]
     started = time.monotonic()
     await asyncio.gather(sample_memory(), *tasks)
@@ -214,9 +217,15 @@ def main() -> None:
     parser.add_argument("--seconds", type=float, default=60.0)
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--soak", action="store_true")
+    parser.add_argument("--ramp", type=float, default=10.0, help="seconds over which students arrive")
+    parser.add_argument(
+        "--no-warm", action="store_true", help="skip `python -m app.service.warm` (the image runs it at build)"
+    )
     args = parser.parse_args()
     if args.seconds > 1800:
         sys.exit("--seconds is capped at 1800")
+    if not args.no_warm:
+        subprocess.run([sys.executable, "-m", "app.service.warm"], cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
     proc, base = start_server(args.workers)
     try:
         print(
@@ -224,7 +233,7 @@ def main() -> None:
             f"({os.cpu_count()} cores)"
         )
         for n in args.students:
-            asyncio.run(run_level(base, proc.pid, min(n, 500), args.hostile, args.seconds, args.soak))
+            asyncio.run(run_level(base, proc.pid, min(n, 500), args.hostile, args.seconds, args.soak, args.ramp))
     finally:
         os.killpg(proc.pid, signal.SIGTERM)
         proc.wait(timeout=30)

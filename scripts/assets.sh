@@ -16,3 +16,5 @@ cp node_modules/katex/dist/katex.min.js node_modules/katex/dist/katex.min.css "$
 cp node_modules/katex/dist/contrib/auto-render.min.js "$vendor/katex/contrib/"
 cp -r node_modules/katex/dist/fonts "$vendor/katex/fonts"
 cp node_modules/plotly.js-dist-min/plotly.min.js "$vendor/plotly/"
+# Precompressed copies, served to browsers that accept gzip (app/web/templating.py).
+find "$vendor" -type f \( -name '*.js' -o -name '*.css' \) -exec gzip -9 -k -f {} +

@@ -103,4 +103,12 @@ def scene_page_route(request: Request, scene_id: str) -> HTMLResponse:
         return templates.TemplateResponse(
             request, "404.html", {"missing": exc.scene_id[:60], "known": known}, status_code=404
         )
-    return templates.TemplateResponse(request, "scene.html", {"m": model, "scene": model["info"]})
+    # A scene page depends only on its model: render it once per model, then serve the bytes.
+    cached = _pages.get(scene_id)
+    if cached is None or cached[0] is not model:
+        body = templates.TemplateResponse(request, "scene.html", {"m": model, "scene": model["info"]}).body
+        cached = _pages[scene_id] = (model, bytes(body))
+    return HTMLResponse(cached[1])
+
+
+_pages: dict[str, tuple[dict[str, Any], bytes]] = {}
