@@ -58,10 +58,16 @@ def _address_space() -> int:
     return 0
 
 
+WORKER_NICENESS = 10
+
+
 def initialize_worker(memory_mb: int) -> None:
-    """Run in each new worker: cap its address space at what it has plus ``memory_mb``."""
+    """Run in each new worker: cap its address space at what it has plus ``memory_mb``,
+    and yield the CPU to the web processes, so users' long derivations never slow
+    the pages and scene simulations of everyone else."""
     limit = _address_space() + memory_mb * 1024 * 1024
     resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+    os.nice(WORKER_NICENESS)
 
 
 def _context(preload: Sequence[str]):
