@@ -33,6 +33,9 @@ from app.scenes import SCENES, Scene
 
 DEFAULT_T_END = 10.0
 _SLOTS = threading.BoundedSemaphore(max(2, os.cpu_count() or 2))
+# scipy's integrators loop in Python and hold the GIL for their whole run: one at a
+# time per process, so they cannot starve the compiled runs and pages served beside them.
+_PYTHON_LOOP = threading.BoundedSemaphore(1)
 
 
 class SimulationInput(Protocol):
@@ -165,12 +168,19 @@ def simulate_derivation(
             "the coordinates are singular there, e.g. a radius of 0 or a pole of the sphere); move it slightly",
             "initial",
         )
-    if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
-        raise Busy("too many simulations are running at once; try again in a few seconds")
+    python_loop = method != "auto" and not METHODS[method].compiled
+    if python_loop and not _PYTHON_LOOP.acquire(timeout=limits.WALL_SECONDS):
+        raise Busy(f"another {method} run is in progress here; try again in a few seconds, or use a compiled method")
     try:
-        outcome = simulate(system, k, y0, t_end, samples, method, rtol, atol)
+        if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
+            raise Busy("too many simulations are running at once; try again in a few seconds")
+        try:
+            outcome = simulate(system, k, y0, t_end, samples, method, rtol, atol)
+        finally:
+            _SLOTS.release()
     finally:
-        _SLOTS.release()
+        if python_loop:
+            _PYTHON_LOOP.release()
     return document(system, observables, outcome, k, rtol)
 
 
