@@ -12,6 +12,20 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+# What a scene's page may show, in display order; a scene declares the panels it needs.
+PANELS = (
+    "animation-2d",  # the mechanism in a plane
+    "animation-3d",  # the mechanism in space (only where the motion is 3-D)
+    "energy",  # T, U, E and h against time, and their drift
+    "h-vs-e",  # h and E side by side where they differ
+    "momenta",  # conserved generalized momenta against time
+    "phase",  # phase portrait (q, q_dot)
+    "effective-potential",  # U_eff with the energy level and turning points
+    "small-oscillations",  # predicted against measured frequency
+    "constraint-force",  # forces of constraint against time, slack flagged
+    "work-precision",  # error against run time
+)
+
 
 @dataclass(frozen=True)
 class Parameter:

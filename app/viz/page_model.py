@@ -14,23 +14,12 @@ import re
 from collections.abc import Sequence
 from typing import Any
 
+from app.scenes.types import PANELS
 from app.viz.diagrams import diagram
 from app.viz.exprtree import maybe_tree
 from app.viz.mechanism import mechanism
 from app.viz.names import label
 
-PANELS = (
-    "animation-2d",
-    "animation-3d",
-    "energy",
-    "h-vs-e",
-    "momenta",
-    "phase",
-    "effective-potential",
-    "small-oscillations",
-    "constraint-force",
-    "work-precision",
-)
 LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collapsed
 RTOLS = ("1e-3", "1e-4", "1e-6", "1e-8", "1e-10", "1e-12")
 DEFAULT_RTOL = "1e-8"

@@ -3,6 +3,7 @@
 import pytest
 
 from app.scenes import SCENES
+from app.scenes.types import PANELS
 from app.service.derivations import derivation
 
 # id -> (coordinates, parameters), exactly as the API promises them
@@ -21,18 +22,6 @@ TABLE = {
 # what the engine must find: cyclic coordinates and whether h = E
 CYCLIC = {"tabletop-spring": ("theta",), "spherical-pendulum": ("phi",), "movable-incline": ("X",)}
 MOVING_CONSTRAINT = {"rotating-parabola"}
-PANELS = {
-    "animation-2d",
-    "animation-3d",
-    "energy",
-    "h-vs-e",
-    "momenta",
-    "phase",
-    "effective-potential",
-    "small-oscillations",
-    "constraint-force",
-    "work-precision",
-}
 THREE_D = {"spherical-pendulum", "helix-bead"}
 
 
@@ -66,7 +55,7 @@ def test_panels_are_what_the_scene_needs(scene_id):
     s = SCENES[scene_id]
     d = derivation(scene_id)
     panels = set(s.panels)
-    assert panels <= PANELS and len(panels) == len(s.panels)
+    assert panels <= set(PANELS) and len(panels) == len(s.panels)
     assert "work-precision" in panels and "energy" in panels and "phase" in panels
     # 3-D only where the motion is 3-D; exactly one animation
     assert ("animation-3d" in panels) == (scene_id in THREE_D)
