@@ -1,9 +1,9 @@
 """Beads on wires: a fixed helix, and a parabola spun about its axis (a moving constraint)."""
 
+from app.scenes.common import GRAVITY
 from app.scenes.types import Constraint, Erratum, Parameter, Particle, Scene, System
 
 MASS = Parameter("m", 0.1, "kg", 0.001, 100.0, "mass of the bead")
-GRAVITY = Parameter("g", 9.81, "m/s²", 0.1, 100.0, "gravitational acceleration")
 
 HELIX_BEAD = Scene(
     id="helix-bead",

@@ -1,9 +1,9 @@
 """Blocks on frictionless inclines: a fixed one, and a wedge free to slide on the floor."""
 
+from app.scenes.common import GRAVITY
 from app.scenes.types import Constraint, Erratum, Parameter, Particle, Scene, System
 
 MASS = Parameter("m", 1.0, "kg", 0.001, 1000.0, "mass of the block")
-GRAVITY = Parameter("g", 9.81, "m/s²", 0.1, 100.0, "gravitational acceleration")
 ANGLE = Parameter("alpha", 0.5, "rad", 0.01, 1.5, "angle of the incline above the horizontal")
 
 INCLINE_BLOCK = Scene(

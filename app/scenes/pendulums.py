@@ -1,9 +1,9 @@
 """Pendulum scenes: a bob on a string, in a plane, on a sphere, and with damping."""
 
+from app.scenes.common import GRAVITY
 from app.scenes.types import Constraint, Erratum, Parameter, Particle, Scene, System
 
 MASS = Parameter("m", 1.0, "kg", 0.01, 100.0, "mass of the bob")
-GRAVITY = Parameter("g", 9.81, "m/s²", 0.1, 100.0, "gravitational acceleration")
 LENGTH = Parameter("R", 1.0, "m", 0.05, 100.0, "length of the string")
 DAMPING = Parameter("b", 0.3, "kg·m²/s", 0.0, 100.0, "damping coefficient: the generalized drag force is Q_θ = −b θ̇")
 

@@ -1,8 +1,8 @@
 """Central forces and systems of particles: the tabletop spring, the two-body rail, the pulleys."""
 
+from app.scenes.common import GRAVITY
 from app.scenes.types import Constraint, CoordinateChange, Erratum, Parameter, Particle, Scene, System
 
-GRAVITY = Parameter("g", 9.81, "m/s²", 0.1, 100.0, "gravitational acceleration")
 # U_eff written out for the tabletop, used in the errata formulas below
 _U_EFF = "p_theta**2/(2*m*r**2) + k*r**2/2"
 
