@@ -195,8 +195,8 @@ RULES: tuple[Rule, ...] = (
     Rule(
         "sign_of_u",
         ("potential", "hamiltonian"),
-        "The sign of U is reversed: gravity's potential energy is +m g × height with height measured upward, "
-        "against gravity. Check which way your height axis points.",
+        "The sign of U is reversed: U is +m g × height with height measured upward, against gravity (and "
+        "+½ k × stretch² for a spring). Check which way your height axis points.",
         _negative_u,
     ),
     Rule(
