@@ -115,7 +115,9 @@ def check_answer(text: str, step: str, kinds: dict[str, str]) -> None:
             kind = kinds.get(match.group())
             if kind is not None and kind not in _KINDS[step]:
                 why = _WHY_NOT.get((step, kind)) or (
-                    "an acceleration appears only in the equation step" if kind == "acceleration" else f"a {kind} cannot appear in this step"
+                    "an acceleration appears only in the equation step"
+                    if kind == "acceleration"
+                    else f"a {kind} cannot appear in this step"
                 )
                 raise CheckError(
                     f"answer: {why}: {match.group()!r} at column {match.start() + 1}",
@@ -199,7 +201,9 @@ def problem(d: Derivation, step: str, coordinate: str | None = None) -> Problem:
     available = exercises(d)
     steps = list(dict.fromkeys(s for s, _ in available))
     if step not in STEPS:
-        raise CheckError(f"step: unknown step {str(step)[:40]!r}; the steps are: {', '.join(steps)}", "step", str(step)[:40])
+        raise CheckError(
+            f"step: unknown step {str(step)[:40]!r}; the steps are: {', '.join(steps)}", "step", str(step)[:40]
+        )
     if step not in steps:
         raise CheckError(
             f"step: {step!r} does not apply: {_unavailable(d, step)}; the steps are: {', '.join(steps)}", "step", step
@@ -403,7 +407,9 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
         if step == "equation":
             latex = f"{pr.tex(shown[0])} = 0"
         elif step == "omega_squared":
-            latex = r",\quad ".join(rf"\omega^2 = {pr.tex(w)}\ \text{{at}}\ {_where_tex(d, i, pr)}" for i, w in enumerate(shown))
+            latex = r",\quad ".join(
+                rf"\omega^2 = {pr.tex(w)}\ \text{{at}}\ {_where_tex(d, i, pr)}" for i, w in enumerate(shown)
+            )
         else:
             latex = f"{_lhs(step, name, pr, d)} = {pr.tex(shown[0])}"
         items.append(

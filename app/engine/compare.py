@@ -119,7 +119,9 @@ def differ_by_constant(a: Values, b: Values) -> bool:
     """a − b takes one value within each draw of the constants."""
     groups = []
     for da, db in zip(a, b, strict=True):
-        groups.append([x - y for ba, bb in zip(da, db, strict=True) for x, y in zip(ba, bb, strict=True) if None not in (x, y)])
+        groups.append(
+            [x - y for ba, bb in zip(da, db, strict=True) for x, y in zip(ba, bb, strict=True) if None not in (x, y)]
+        )
     return any(len(g) > 1 for g in groups) and _same_within(groups)
 
 

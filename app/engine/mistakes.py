@@ -116,7 +116,7 @@ def _negative_u(d: Derivation, step: str, k: int | None) -> sp.Expr | None:
     U = _U(d)
     if U is None:
         return None
-    return -U if step == "potential" else d.energetics.hamiltonian - 2 * U
+    return -U
 
 
 def _t_plus_u(d: Derivation, step: str, k: int | None) -> sp.Expr | None:
@@ -194,7 +194,7 @@ RULES: tuple[Rule, ...] = (
     ),
     Rule(
         "sign_of_u",
-        ("potential", "hamiltonian"),
+        ("potential",),
         "The sign of U is reversed: U is +m g × height with height measured upward, against gravity (and "
         "+½ k × stretch² for a spring). Check which way your height axis points.",
         _negative_u,

@@ -46,9 +46,7 @@ ERRORS = {
 async def check_scene_step(request: Request, scene_id: str, body: CheckRequest) -> Response:
     return await _answer(
         request,
-        lambda client, address: service.check_scene(
-            scene_id, body.step, body.coordinate, body.answer, client, address
-        ),
+        lambda client, address: service.check_scene(scene_id, body.step, body.coordinate, body.answer, client, address),
     )
 
 

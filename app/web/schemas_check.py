@@ -23,7 +23,9 @@ class CheckRequest(BaseModel):
 
     model_config = ConfigDict(
         **STRICT,
-        json_schema_extra={"example": {"step": "equation", "coordinate": "theta", "answer": "theta_ddot + g/R*sin(theta)"}},
+        json_schema_extra={
+            "example": {"step": "equation", "coordinate": "theta", "answer": "theta_ddot + g/R*sin(theta)"}
+        },
     )
 
     step: Step = Field(
@@ -61,7 +63,9 @@ class SystemCheckRequest(CheckRequest):
 
 class CheckResponse(BaseModel):
     verdict: Literal["correct", "equivalent", "incorrect"]
-    message: str = Field(description="Plain words: what the verdict means, and for an equivalent answer how it differs.")
+    message: str = Field(
+        description="Plain words: what the verdict means, and for an equivalent answer how it differs."
+    )
     difference: ExprPair | None = Field(
         None,
         description="For an incorrect answer: answer − the engine's (less an accepted additive constant; for an "
