@@ -22,14 +22,15 @@ CART_PENDULUM = {
     "forces": {"x": "-c*x_dot"},
 }
 
-# A bead on a hoop spinning at the rate w about its vertical diameter, given by L alone.
-SPUN_HOOP = {
-    "coordinates": ["theta"],
-    "parameters": [{"name": n, "value": 1.0, "min": 0.1} for n in ("m", "R", "g", "w")],
-    "lagrangian": "m*R**2*(theta_dot**2 + w**2*sin(theta)**2)/2 + m*g*R*cos(theta)",
+# A bead on a rod spun at the rate w in a horizontal plane, held by a spring of natural length a
+# anchored on the axis, given by L alone.
+SPRING_ROD = {
+    "coordinates": ["r"],
+    "parameters": [{"name": n, "value": 1.0, "min": 0.1} for n in ("m", "k", "a", "w")],
+    "lagrangian": "m*(r_dot**2 + w**2*r**2)/2 - k*(r - a)**2/2",
 }
 
-USER_SYSTEMS = {"cart-pendulum": CART_PENDULUM, "spun-hoop": SPUN_HOOP}
+USER_SYSTEMS = {"cart-pendulum": CART_PENDULUM, "spring-rod": SPRING_ROD}
 
 CORPUS = [
     # simple pendulum
@@ -289,25 +290,19 @@ CORPUS = [
         "forgot_force",
     ),
     ("cart-pendulum", "momentum", "x", "(M + m)*x_dot + m*l*cos(phi)*phi_dot", "correct", None, None),
-    # a bead on a spinning hoop, given by L alone (a system of our own)
+    # a bead on a spun rod with a spring, given by L alone (a system of our own)
+    ("spring-rod", "hamiltonian", None, "m*(r_dot**2 - w**2*r**2)/2 + k*(r - a)**2/2", "correct", None, None),
     (
-        "spun-hoop",
+        "spring-rod",
         "hamiltonian",
         None,
-        "m*R**2*(theta_dot**2 - w**2*sin(theta)**2)/2 - m*g*R*cos(theta)",
-        "correct",
-        None,
-        None,
-    ),
-    (
-        "spun-hoop",
-        "hamiltonian",
-        None,
-        "m*R**2*(theta_dot**2 + w**2*sin(theta)**2)/2 + m*g*R*cos(theta)",
+        "m*(r_dot**2 + w**2*r**2)/2 - k*(r - a)**2/2",
         "incorrect",
-        "m*R**2*w**2*sin(theta)**2 + 2*m*g*R*cos(theta)",
+        "m*w**2*r**2 - k*r**2 + 2*k*a*r",
         "h_is_l",
     ),
-    ("spun-hoop", "momentum", "theta", "m*R**2*theta_dot", "correct", None, None),
-    ("spun-hoop", "omega_squared", None, "g/R - w**2", "correct", None, None),
+    ("spring-rod", "momentum", "r", "m*r_dot", "correct", None, None),
+    ("spring-rod", "equation", "r", "r_ddot + (k/m - w**2)*r - k*a/m", "equivalent", None, None),
+    ("spring-rod", "omega_squared", None, "(k - m*w**2)/m", "correct", None, None),
+    ("spring-rod", "omega_squared", None, "sqrt(k/m - w**2)", "incorrect", "sqrt(k/m - w**2) - k/m + w**2", "omega"),
 ]

@@ -167,7 +167,7 @@ def test_an_unknown_or_inapplicable_step_or_coordinate_lists_the_allowed_ones():
     with pytest.raises(CheckError, match="'x' is not a coordinate of this system; the coordinates are: theta"):
         problem(damped, "equation", "x")
     with pytest.raises(CheckError, match="given by its Lagrangian alone"):
-        problem(derivation("spun-hoop"), "kinetic")
+        problem(derivation("spring-rod"), "kinetic")
 
 
 def test_exercises_follow_the_chapter_and_carry_the_engines_answers():
