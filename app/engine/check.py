@@ -416,7 +416,7 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
             {
                 "step": step,
                 "coordinate": name,
-                "title": pb.label[0].upper() + pb.label[1:],
+                "title": _title(pb.label),
                 "lhs": _lhs(step, name, pr, d),
                 "names": allowed_names(step, pb.kinds),
                 "answer": {"sympy": sp.sstr(shown[0]), "latex": latex},
@@ -424,6 +424,11 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
         )
     symbols = {s.name: pr.tex(s) for s in (*d.table.q, *d.table.qd, *d.table.qdd, *d.table.params, *_momenta(d))}
     return {"exercises": items, "symbols": {**symbols, "t": "t"}, "rules": POINTERS}
+
+
+def _title(label: str) -> str:
+    """A heading: the label with a capital, unless it opens with a symbol (ω² stays ω²)."""
+    return label[0].upper() + label[1:] if label[0].isascii() else label
 
 
 def _where_tex(d: Derivation, i: int, pr: Printer) -> str:
