@@ -28,6 +28,7 @@ so a web process can refuse bad text without SymPy.
 from __future__ import annotations
 
 import re
+from collections import OrderedDict
 from dataclasses import dataclass
 from typing import Any
 
@@ -36,6 +37,7 @@ import sympy as sp
 from app.engine.budget import BudgetExceeded, display_budget, tidy, time_limit
 from app.engine.compare import (
     Groups,
+    Values,
     differ_by_constant,
     differ_by_factor,
     equal,
@@ -55,7 +57,7 @@ PER_COORDINATE = frozenset({"momentum", "equation", "acceleration"})
 # how an answer may differ from the truth and still be physically the same
 RELATIONS = {"potential": "constant", "lagrangian": "constant", "hamiltonian": "constant", "equation": "factor"}
 MIN_POINTS = 6  # sample points where both sides are defined, for a numeric verdict
-DISPLAY_SECONDS = 0.3
+DISPLAY_SECONDS = 0.12  # for typesetting a difference: past it, the difference is shown expanded
 FACTOR_SECONDS = 0.2
 
 # which kinds of name each step's answer may use
@@ -301,12 +303,27 @@ def _noun(pb: Problem) -> str:
     return f"the engine's {pb.label}" + (f" (at {pb.where[0]})" if pb.where else "")
 
 
+_VALUES: OrderedDict[tuple, Values] = OrderedDict()
+
+
+def _known(expr: sp.Expr, groups: Groups) -> Values:
+    """The values of an engine expression (a truth or a mistake), remembered: a worker judges many answers."""
+    key = (expr, groups)
+    if key in _VALUES:
+        _VALUES.move_to_end(key)
+        return _VALUES[key]
+    found = _VALUES[key] = values(expr, groups)
+    while len(_VALUES) > 512:
+        _VALUES.popitem(last=False)
+    return found
+
+
 def judge(pb: Problem, text: str) -> dict[str, Any]:
     """The verdict on one answer: ``{"verdict", "message", "difference", "hint"}``."""
     answer = parse_answer(pb, text)
     printer = Printer(pb.latex_names)
     a = values(answer, pb.groups)
-    results = [(truth, values(truth, pb.groups)) for truth in pb.truths]
+    results = [(truth, _known(truth, pb.groups)) for truth in pb.truths]
     numeric = [(truth, b) for truth, b in results if usable(a, b) >= MIN_POINTS]
 
     for i, (truth, b) in enumerate(results):
@@ -379,7 +396,7 @@ def _difference(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[sp.Expr, 
 
 def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str:
     for _, hint, variant in pb.variants:
-        v = values(variant, pb.groups)
+        v = _known(variant, pb.groups)
         if usable(a, v) < MIN_POINTS or equal(v, b):
             continue
         if (
