@@ -22,6 +22,7 @@ from app.web.schemas_user import BusyError, SystemSpec, UserError
 router = APIRouter(prefix="/api", tags=["practice"], route_class=CappedBodyRoute)
 
 ERRORS = {
+    400: {"model": ErrorResponse, "description": "The body could not be read (not JSON, or not UTF-8)."},
     404: {"model": ErrorResponse, "description": "No scene has this id (the message lists the known ones)."},
     413: {"model": ErrorResponse, "description": "The body is larger than 32 KiB."},
     422: {
