@@ -90,6 +90,7 @@ def test_the_playground_practises_the_declared_system(page, artifacts):
     page.wait_for_selector(STEP.format("acceleration:x"))
     # the system lives in the address: its practice link opens it in practice mode
     page.locator("#practice-link").click()
+    page.wait_for_function("document.getElementById('practice-link-status').textContent !== ''")
     link = page.locator("#practice-link-status").inner_text().removeprefix("Link: ")
     assert link == "Link copied." or ("practice" in link and "system=" in link)
     answer(page, "acceleration:x", "(F*cos(w*t) - b*x_dot - k*x)/m")
