@@ -6,7 +6,8 @@ the middle three per coordinate): the engine's expression for it (the truth),
 how answers may legitimately differ from it, the names an answer may use, and
 the mistaken expressions of ``app.engine.mistakes``. A problem holds SymPy
 objects only, so it can be built where the derivation lives and sent to a
-worker process with the student's text.
+worker process with the student's text. (``app.engine.exercises`` lists a
+system's steps for a practice page.)
 
 ``judge`` parses the text with the project's parser (app/engine/parse.py), then
 compares (app/engine/compare.py):
@@ -152,11 +153,11 @@ class Problem:
     acceleration: sp.Symbol | None = None
 
 
-def _momenta(d: Derivation) -> tuple[sp.Symbol, ...]:
+def conserved_momenta(d: Derivation) -> tuple[sp.Symbol, ...]:
     return d.reduction.momenta if d.reduction is not None else ()
 
 
-def _equilibria(d: Derivation) -> list:
+def checkable_equilibria(d: Derivation) -> list:
     """Equilibria whose ω² a student can be asked for: not known to be unstable."""
     red = d.reduction
     return [e for e in red.equilibria if e.stable is not False] if red is not None else []
@@ -168,7 +169,7 @@ def exercises(d: Derivation) -> list[tuple[str, str | None]]:
     for step in STEPS:
         if step in ("kinetic", "potential") and d.mechanics.T is None:
             continue
-        if step == "omega_squared" and not _equilibria(d):
+        if step == "omega_squared" and not checkable_equilibria(d):
             continue
         if step in PER_COORDINATE:
             out += [(step, name) for name in d.table.names]
@@ -241,7 +242,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None) -> Problem:
     elif step == "hamiltonian":
         truths = (d.energetics.hamiltonian,)
     else:
-        found = _equilibria(d)
+        found = checkable_equilibria(d)
         truths = tuple(e.omega_squared for e in found)
         r = d.reduction.coordinate
         where = tuple(f"{plain_name(r)} = {sp.sstr(e.position)}" for e in found)
@@ -256,7 +257,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None) -> Problem:
         # ω in place of ω²
         variants += [("omega_not_squared", OMEGA_HINT, sp.sqrt(w2)) for w2 in truths]
 
-    momenta = _momenta(d)
+    momenta = conserved_momenta(d)
     kinds = name_kinds(table.names, table.parameter_names, tuple(p.name for p in momenta))
     namespace = {**table.namespace(), **{s.name: s for s in table.qdd}, **{p.name: p for p in momenta}}
     groups = Groups((*table.params, *momenta), (*table.q, table.t), (*table.qd, *table.qdd))
@@ -412,59 +413,3 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str:
             template = CONSTANT_FACTOR_HINT if factor_is_constant(b, a) else MISSING_FACTOR_HINT
             return template.format(factor=sp.sstr(factor))
     return POINTERS[pb.step]
-
-
-def exercise_json(d: Derivation) -> dict[str, Any]:
-    """What a practice page needs: each step to try, its prompt and the engine's answer, and how names print."""
-    pr = Printer({**d.table.latex_names(), **{p: sp.latex(p) for p in _momenta(d)}})
-    items = []
-    for step, name in exercises(d):
-        pb = problem(d, step, name)
-        shown = [display(t) for t in pb.truths]
-        if step == "equation":
-            latex = f"{pr.tex(shown[0])} = 0"
-        elif step == "omega_squared":
-            latex = r",\quad ".join(
-                rf"\omega^2 = {pr.tex(w)}\ \text{{at}}\ {_where_tex(d, i, pr)}" for i, w in enumerate(shown)
-            )
-        else:
-            latex = f"{_lhs(step, name, pr, d)} = {pr.tex(shown[0])}"
-        items.append(
-            {
-                "step": step,
-                "coordinate": name,
-                "title": _title(pb.label),
-                "lhs": _lhs(step, name, pr, d),
-                "names": allowed_names(step, pb.kinds),
-                "answer": {"sympy": sp.sstr(shown[0]), "latex": latex},
-            }
-        )
-    symbols = {s.name: pr.tex(s) for s in (*d.table.q, *d.table.qd, *d.table.qdd, *d.table.params, *_momenta(d))}
-    return {"exercises": items, "symbols": {**symbols, "t": "t"}, "rules": POINTERS}
-
-
-def _title(label: str) -> str:
-    """A heading: the label with a capital, unless it opens with a symbol (ω² stays ω²)."""
-    return label[0].upper() + label[1:] if label[0].isascii() else label
-
-
-def _where_tex(d: Derivation, i: int, pr: Printer) -> str:
-    red = d.reduction
-    r = d.table.q[d.table.names.index(red.coordinate)]
-    return f"{pr.tex(r)} = {pr.tex(_equilibria(d)[i].position)}"
-
-
-def _lhs(step: str, name: str | None, pr: Printer, d: Derivation) -> str:
-    if name is not None:
-        q = d.table.q[d.table.names.index(name)]
-        qdd = d.table.qdd[d.table.names.index(name)]
-    return {
-        "kinetic": "T",
-        "potential": "U",
-        "lagrangian": "L",
-        "momentum": f"p_{{{pr.tex(q)}}}" if name else "",
-        "equation": "0",
-        "acceleration": pr.tex(qdd) if name else "",
-        "hamiltonian": "h",
-        "omega_squared": r"\omega^2",
-    }[step]

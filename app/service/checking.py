@@ -26,8 +26,9 @@ import threading
 from collections.abc import Callable
 from typing import Any
 
-from app.engine.check import STEPS, CheckError, Problem, check_answer, exercise_json, judge, name_kinds, problem
+from app.engine.check import STEPS, CheckError, Problem, check_answer, judge, name_kinds, problem
 from app.engine.errors import DerivationError
+from app.engine.exercises import exercise_json
 from app.service import derivations
 from app.service.user_systems import InvalidSystem, ResultCache, _derive, _guarded, check_system, spec_key
 from app.service.user_systems import service as user_service

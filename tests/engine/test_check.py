@@ -8,8 +8,9 @@ from functools import cache
 import pytest
 import sympy as sp
 
-from app.engine.check import STEPS, CheckError, check_answer, exercise_json, exercises, judge, name_kinds, problem
+from app.engine.check import STEPS, CheckError, check_answer, exercises, judge, name_kinds, problem
 from app.engine.derive import Derivation, derive
+from app.engine.exercises import exercise_json
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, OMEGA_HINT, POINTERS, RULES
 from app.engine.parse import parse_expression
 from app.scenes import SCENES
