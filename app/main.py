@@ -10,6 +10,7 @@ from fastapi import FastAPI
 
 from app.service import derivations, simulation
 from app.web import api_scenes, errors, pages
+from app.web.api_check import router as check_router
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
 from app.web.playground import router as playground_router
@@ -37,7 +38,7 @@ app = FastAPI(
 )
 errors.install(app)
 
-ROUTERS = [api_scenes.router, pages.router, user_router, simulate_router, playground_router]
+ROUTERS = [api_scenes.router, pages.router, user_router, simulate_router, playground_router, check_router]
 app.mount("/static", static_app, name="static")
 for router in ROUTERS:
     app.include_router(router)

@@ -18,6 +18,11 @@ from typing import TypeVar
 
 import sympy as sp
 
+# sp.simplify imports sympy.physics.units on its first call (0.5 s or more on a busy machine); imported
+# here, at start-up, so that no time budget ever interrupts that import halfway and leaves every later
+# simplification to retry it and be cut short again.
+import sympy.physics.units  # noqa: F401, E402
+
 T = TypeVar("T")
 
 SIMPLIFY_SECONDS = 0.5

@@ -359,6 +359,10 @@ class UserSystems:
         # a client that goes away does not stop the job the others wait for
         return await asyncio.shield(running)
 
+    async def run_job(self, cache: ResultCache, key: str, client: str, address: str, timeout: float, job, *args) -> bytes:
+        """Another kind of job on user text (checking a student's answer): same cache, sharing, fair share and pool."""
+        return await self._run(cache, key, client, address, timeout, job, *args)
+
     def _finished(self, slot: tuple[int, str], done: asyncio.Future) -> None:
         self._running.pop(slot, None)
         if not done.cancelled():

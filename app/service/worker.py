@@ -35,7 +35,7 @@ from pebble import ProcessExpired, ProcessPool
 WORKERS = int(os.environ.get("LAGRANGE_WORKERS", "0")) or min(2, os.cpu_count() or 1)
 MEMORY_MB = int(os.environ.get("LAGRANGE_WORKER_MEMORY_MB", "1024"))  # address space a job may add
 MAX_TASKS = 200  # a worker is replaced after this many jobs, so caches cannot grow without bound
-PRELOAD = ("app.service.user_systems", "app.service.simulation")  # a missing module is skipped
+PRELOAD = ("app.service.user_systems", "app.service.simulation", "app.service.checking")  # a missing module is skipped
 
 
 class JobFailed(Exception):

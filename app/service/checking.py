@@ -1,0 +1,174 @@
+"""Check a student's step: the scenes' and users' systems, through the user-system worker pool.
+
+An answer is text a user typed, so checking it is user-driven SymPy work and
+runs where /api/derive's does: the web process refuses bad text in pure Python
+(``app.engine.check.check_answer``: the parser's first two gates and the step's
+name rules), then one job in the worker pool with its hard time limit parses
+and judges it, under the same fair share per session (one job at a time) and
+with identical requests answered from a cache.
+
+* A scene's problem (the engine's expression for the step and the mistaken
+  variants) is built once per process from the scene's cached derivation, in a
+  thread, and sent to the worker with the answer: the worker does no derivation.
+* A user system is derived in the worker (its per-worker cache makes repeated
+  checks of one system cheap), then judged there.
+
+Refusals carry the field at fault: ``answer``, ``step`` or ``coordinate``, or
+``system.…`` for the declared system of ``POST /api/check``.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import os
+import threading
+from collections.abc import Callable
+from typing import Any
+
+from app.engine.check import STEPS, CheckError, Problem, check_answer, judge, name_kinds, problem
+from app.engine.errors import DerivationError
+from app.engine.exercises import exercise_json
+from app.service import derivations
+from app.service.user_systems import InvalidSystem, ResultCache, _derive, _guarded, check_system, spec_key
+from app.service.user_systems import service as user_service
+
+CHECK_SECONDS = float(os.environ.get("LAGRANGE_CHECK_SECONDS", "10"))
+MAX_ANSWER_CACHE = 4096
+
+
+def refusal(exc: CheckError) -> InvalidSystem:
+    return InvalidSystem(str(exc), (exc.field,), exc.part, exc.start, exc.end)
+
+
+def _in_system(exc: DerivationError) -> InvalidSystem:
+    """A refusal of the declared system, located under ``system``."""
+    loc = getattr(exc, "loc", ())
+    return InvalidSystem(
+        f"system.{exc}" if loc else f"system: {exc}",
+        ("system", *loc),
+        exc.part,
+        getattr(exc, "start", None),
+        getattr(exc, "end", None),
+    )
+
+
+def _judged(work: Callable[[], Any]) -> Any:
+    try:
+        return work()
+    except CheckError as exc:
+        raise refusal(exc) from None
+
+
+# ---- in the worker --------------------------------------------------------------------------
+
+
+def scene_check_job(pb: Problem, answer: str) -> bytes:
+    """Worker job: judge an answer against a scene's problem."""
+    return _guarded(lambda: _judged(lambda: judge(pb, answer)))
+
+
+def _system(spec: dict[str, Any]):
+    try:
+        return _derive(spec)
+    except (InvalidSystem, DerivationError) as exc:
+        raise _in_system(exc) from None
+
+
+def system_check_job(spec: dict[str, Any], step: str, coordinate: str | None, answer: str) -> bytes:
+    """Worker job: derive a user system (cached per worker), then judge the answer."""
+
+    def run() -> dict[str, Any]:
+        d = _system(spec)
+        return _judged(lambda: judge(problem(d, step, coordinate), answer))
+
+    return _guarded(run)
+
+
+def system_practice_job(spec: dict[str, Any]) -> bytes:
+    """Worker job: the exercises of a user system (each step's prompt and the engine's answer)."""
+    return _guarded(lambda: exercise_json(_system(spec)))
+
+
+# ---- in the web process ---------------------------------------------------------------------
+
+
+class Checking:
+    """Scene problems and exercises (cached per process), answers through the worker pool."""
+
+    def __init__(self) -> None:
+        self._problems: dict[tuple[str, str, str | None], Problem] = {}
+        self._exercises: dict[str, bytes] = {}
+        self._lock = threading.Lock()
+        self.answers = ResultCache(entries=MAX_ANSWER_CACHE, total_bytes=16 * 2**20)
+        self.practice = ResultCache(entries=64)
+
+    def scene_problem(self, scene_id: str, step: str, coordinate: str | None) -> Problem:
+        """The problem of a scene's step (in a thread: SymPy on the engine's own expressions)."""
+        d = derivations.derivation(scene_id)  # UnknownScene for an unknown id
+        key = (scene_id, step, coordinate if coordinate in d.table.names else None)
+        with self._lock:
+            found = self._problems.get(key)
+        if found is None:
+            try:
+                found = problem(d, step, coordinate)
+            except CheckError as exc:
+                raise refusal(exc) from None
+            with self._lock:
+                self._problems[key] = found
+        return found
+
+    def scene_exercises(self, scene_id: str) -> bytes:
+        """The exercises of a scene as JSON (in a thread)."""
+        if scene_id not in self._exercises:
+            document = {"id": scene_id, **exercise_json(derivations.derivation(scene_id))}
+            self._exercises[scene_id] = json.dumps(document, separators=(",", ":")).encode()
+        return self._exercises[scene_id]
+
+    async def check_scene(
+        self, scene_id: str, step: str, coordinate: str | None, answer: str, client: str, address: str
+    ) -> bytes:
+        pb = await asyncio.to_thread(self.scene_problem, scene_id, step, coordinate)
+        try:
+            check_answer(answer, step, pb.kinds)
+        except CheckError as exc:
+            raise refusal(exc) from None
+        key = spec_key("scene", scene_id, step, pb.coordinate, answer.strip())
+        return await user_service.run_job(
+            self.answers, key, client, address, CHECK_SECONDS, scene_check_job, pb, answer
+        )
+
+    async def check_system(
+        self, spec: dict[str, Any], step: str, coordinate: str | None, answer: str, client: str, address: str
+    ) -> bytes:
+        try:
+            check_system(spec)
+        except InvalidSystem as exc:
+            raise _in_system(exc) from None
+        coordinates = tuple(spec["coordinates"])
+        parameters = tuple(p["name"] for p in spec.get("parameters") or ())
+        if step not in STEPS:
+            raise InvalidSystem(f"step: unknown step {step[:40]!r}; the steps are: {', '.join(STEPS)}", ("step",))
+        # every coordinate's momentum may turn out conserved: the worker checks the names exactly
+        kinds = name_kinds(coordinates, parameters, tuple(f"p_{q}" for q in coordinates))
+        try:
+            check_answer(answer, step, kinds)
+        except CheckError as exc:
+            raise refusal(exc) from None
+        key = spec_key(spec, step, coordinate, answer.strip())
+        return await user_service.run_job(
+            self.answers, key, client, address, CHECK_SECONDS, system_check_job, spec, step, coordinate, answer
+        )
+
+    async def system_exercises(self, spec: dict[str, Any], client: str, address: str) -> bytes:
+        try:
+            check_system(spec)
+        except InvalidSystem as exc:
+            raise _in_system(exc) from None
+        key = spec_key(spec, "practice")
+        return await user_service.run_job(
+            self.practice, key, client, address, CHECK_SECONDS * 3, system_practice_job, spec
+        )
+
+
+service = Checking()

@@ -1,0 +1,436 @@
+/**
+ * practice.js — "Try it yourself" on scene pages and in the playground (templates/_practice.html).
+ *
+ * With the switch on, the page's derivation and results are hidden (body.practising) and a box
+ * per step takes the student's own expression, in the chapter's order. As they type, the
+ * expression is typeset live (a small converter from the API's syntax to LaTeX; the server
+ * stays the judge); Enter or "Check" sends it to the checker and shows the verdict, the
+ * difference typeset and the hint; "Show this step" reveals the engine's step.
+ *
+ * What the student typed, the verdicts and the switch are kept in localStorage, one record per
+ * scene and per declared system, so a reload loses nothing. A link with ?practice opens the
+ * page in practice mode; on a scene page it also carries the simulation's parameter values
+ * (?practice&m=2&R=0.5), which are set on the controls before the first run.
+ */
+import { readRequest, setControl } from "./controls.js";
+
+const root = document.getElementById("practice");
+const query = new URLSearchParams(window.location.search);
+const sceneId = root?.dataset.scene || "";
+const systemNode = document.getElementById("playground-system");
+const system = sceneId ? null : JSON.parse(systemNode?.textContent || "{}");
+const controls = document.getElementById("controls");
+
+// ---- the API's expression syntax, typeset -------------------------------------------------------
+
+const FUNCTIONS = new Set(["sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "exp", "log", "sqrt", "Abs"]);
+const TEX_FUNCTIONS = { asin: "\\arcsin", acos: "\\arccos", atan: "\\arctan" };
+
+function tokenize(text) {
+  const tokens = [];
+  const pattern = /\s*(?:(\d+\.?\d*(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?)|([A-Za-z_][A-Za-z0-9_]*)|(\*\*|[-+*/(),]))/y;
+  let at = 0;
+  while (at < text.length) {
+    if (/^\s*$/.test(text.slice(at))) break;
+    pattern.lastIndex = at;
+    const m = pattern.exec(text);
+    if (!m) throw new Error(`cannot read ${text.slice(at).trim().slice(0, 12)}`);
+    tokens.push(m[1] ? { kind: "num", value: m[1] } : m[2] ? { kind: "name", value: m[2] } : { kind: "op", value: m[3] });
+    at = pattern.lastIndex;
+  }
+  return tokens;
+}
+
+/** Parse to a small tree: {op: "+", args}, {op: "*"}, {op: "/"}, {op: "neg"}, {op: "pow"}, {op: "call", name}, leaves. */
+function parse(text) {
+  const tokens = tokenize(text);
+  let i = 0;
+  const peek = () => tokens[i];
+  const take = (value) => {
+    const t = tokens[i];
+    if (!t || (value && t.value !== value)) throw new Error(value ? `expected ${value}` : "unexpected end");
+    i += 1;
+    return t;
+  };
+  function sum() {
+    const args = [product()];
+    while (peek() && (peek().value === "+" || peek().value === "-")) {
+      const sign = take().value;
+      const term = product();
+      args.push(sign === "-" ? { op: "neg", args: [term], minus: true } : term);
+    }
+    return args.length === 1 ? args[0] : { op: "+", args };
+  }
+  function product() {
+    let left = unary();
+    while (peek() && (peek().value === "*" || peek().value === "/")) {
+      const op = take().value;
+      const right = unary();
+      left = op === "*" ? { op: "*", args: [left, right] } : { op: "/", args: [left, right] };
+    }
+    return left;
+  }
+  function unary() {
+    if (peek() && (peek().value === "-" || peek().value === "+")) {
+      const sign = take().value;
+      const inner = unary();
+      return sign === "-" ? { op: "neg", args: [inner] } : inner;
+    }
+    return power();
+  }
+  function power() {
+    const base = atom();
+    if (peek() && peek().value === "**") {
+      take();
+      return { op: "pow", args: [base, unary()] };
+    }
+    return base;
+  }
+  function atom() {
+    const t = take();
+    if (t.kind === "num") return { leaf: "num", value: t.value };
+    if (t.kind === "name") {
+      if (peek() && peek().value === "(") {
+        take("(");
+        const arg = sum();
+        take(")");
+        return { op: "call", name: t.value, args: [arg] };
+      }
+      return { leaf: "name", value: t.value };
+    }
+    if (t.value === "(") {
+      const inner = sum();
+      take(")");
+      return inner;
+    }
+    throw new Error(`unexpected ${t.value}`);
+  }
+  const tree = sum();
+  if (i < tokens.length) throw new Error(`unexpected ${tokens[i].value}`);
+  return tree;
+}
+
+const LEVEL = { "+": 1, neg: 1, "*": 2, "/": 2, pow: 3 };
+
+function nameTex(name, symbols) {
+  if (symbols[name]) return symbols[name];
+  if (name === "pi") return "\\pi";
+  return `\\mathrm{${name.replace(/_/g, "\\_")}}`;
+}
+
+function tex(node, symbols) {
+  const wrap = (child, level) => {
+    const inner = tex(child, symbols);
+    return child.op && LEVEL[child.op] !== undefined && LEVEL[child.op] < level ? `\\left(${inner}\\right)` : inner;
+  };
+  if (node.leaf === "num") return node.value.replace(/[eE]([+-]?\d+)$/, "\\times 10^{$1}");
+  if (node.leaf === "name") return nameTex(node.value, symbols);
+  switch (node.op) {
+    case "+":
+      return node.args
+        .map((a, k) => (k > 0 && a.minus ? `- ${wrap(a.args[0], 2)}` : k > 0 ? `+ ${tex(a, symbols)}` : tex(a, symbols)))
+        .join(" ");
+    case "neg":
+      return `-${wrap(node.args[0], 2)}`;
+    case "*": {
+      const [a, b] = node.args;
+      const numeric = (n) => n.leaf === "num" || (n.op === "pow" && n.args[0].leaf === "num");
+      return `${wrap(a, 2)} ${numeric(b) ? "\\cdot " : ""}${wrap(b, 2)}`;
+    }
+    case "/":
+      return `\\frac{${tex(node.args[0], symbols)}}{${tex(node.args[1], symbols)}}`;
+    case "pow": {
+      const [base, exponent] = node.args;
+      if (base.op === "call" && base.name !== "sqrt" && base.name !== "Abs" && base.name !== "exp") {
+        return `${funcName(base.name)}^{${tex(exponent, symbols)}}\\left(${tex(base.args[0], symbols)}\\right)`;
+      }
+      const shown = base.op || base.leaf === "num" && base.value.startsWith("-") ? wrap(base, 4) : tex(base, symbols);
+      return `{${shown}}^{${tex(exponent, symbols)}}`;
+    }
+    case "call": {
+      const arg = tex(node.args[0], symbols);
+      if (node.name === "sqrt") return `\\sqrt{${arg}}`;
+      if (node.name === "Abs") return `\\left|${arg}\\right|`;
+      if (node.name === "exp") return `e^{${arg}}`;
+      return `${funcName(node.name)}\\left(${arg}\\right)`;
+    }
+    default:
+      throw new Error("cannot typeset");
+  }
+}
+
+function funcName(name) {
+  if (!FUNCTIONS.has(name)) return `\\mathrm{${name}}`;
+  return TEX_FUNCTIONS[name] || `\\${name}`;
+}
+
+/** LaTeX for what the student typed (throws while the expression is incomplete). */
+export function toTex(text, symbols = {}) {
+  return tex(parse(text), symbols);
+}
+
+// ---- storage ------------------------------------------------------------------------------------
+
+function storageKey() {
+  if (sceneId) return `lagrange-practice:scene:${sceneId}`;
+  // a declared system is keyed on its declaration, so each system keeps its own answers
+  const text = JSON.stringify(system);
+  let hash = 5381;
+  for (let k = 0; k < text.length; k++) hash = ((hash * 33) ^ text.charCodeAt(k)) >>> 0;
+  return `lagrange-practice:system:${hash.toString(36)}`;
+}
+
+const KEY = storageKey();
+
+function load() {
+  try {
+    return JSON.parse(window.localStorage.getItem(KEY) || "{}") || {};
+  } catch {
+    return {};
+  }
+}
+
+function save(record) {
+  try {
+    window.localStorage.setItem(KEY, JSON.stringify(record));
+  } catch {
+    /* storage full or disabled: practice still works, it just is not kept */
+  }
+}
+
+const record = Object.assign({ on: false, answers: {}, verdicts: {} }, load());
+
+// ---- the page -----------------------------------------------------------------------------------
+
+const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+
+async function request(url, body) {
+  for (let attempt = 0; ; attempt++) {
+    const res = await fetch(url, body === undefined ? { headers: { Accept: "application/json" } } : {
+      method: "POST",
+      headers: { "Content-Type": "application/json", Accept: "application/json" },
+      body: JSON.stringify(body),
+    });
+    let answer = null;
+    try { answer = await res.json(); } catch { answer = null; }
+    if ((res.status === 429 || res.status === 503) && attempt < 4) {
+      await sleep(1000 * Number(res.headers.get("Retry-After") || 1));
+      continue;
+    }
+    return { ok: res.ok, status: res.status, answer };
+  }
+}
+
+function katexInto(el, latex, display = false) {
+  if (window.katex) window.katex.render(latex, el, { displayMode: display, throwOnError: false });
+  else el.textContent = latex;
+}
+
+function keyOf(exercise) {
+  return exercise.coordinate ? `${exercise.step}:${exercise.coordinate}` : exercise.step;
+}
+
+function element(tag, attrs = {}, text = "") {
+  const el = document.createElement(tag);
+  for (const [name, value] of Object.entries(attrs)) el.setAttribute(name, value);
+  if (text) el.textContent = text;
+  return el;
+}
+
+const LABELS = { correct: "Correct", equivalent: "Equivalent", incorrect: "Not yet" };
+
+function showVerdict(item, result, answer) {
+  const box = item.querySelector(".practice-verdict");
+  box.replaceChildren();
+  box.dataset.verdict = result.verdict || "refused";
+  if (result.verdict) {
+    // the message opens with the verdict ("Correct: …"): that word in bold
+    const head = element("p", { class: "verdict-head" });
+    const [first, ...rest] = result.message.split(":");
+    head.append(element("strong", {}, rest.length ? `${first}:` : LABELS[result.verdict]), rest.length ? rest.join(":") : ` ${first}`);
+    box.append(head);
+    if (result.difference) {
+      const diff = element("div", { class: "verdict-difference", "aria-label": `difference: ${result.difference.sympy}` });
+      katexInto(diff, `\\text{yours} - \\text{engine's} = ${result.difference.latex}`, true);
+      box.append(diff);
+    }
+    if (result.hint) box.append(element("p", { class: "verdict-hint" }, `Hint: ${result.hint}`));
+  } else {
+    // a refusal: say what was wrong and mark the offending part of what was typed
+    const head = element("p", { class: "verdict-head" });
+    head.append(element("strong", {}, "Not checked. "), result.detail || "The answer could not be read.");
+    box.append(head);
+    if (Number.isInteger(result.start) && Number.isInteger(result.end) && result.end <= answer.length) {
+      const typed = element("code", { class: "typed", "aria-label": "What you typed, with the offending part marked" });
+      typed.append(answer.slice(0, result.start), element("mark", {}, answer.slice(result.start, result.end)), answer.slice(result.end));
+      box.append(typed);
+    }
+  }
+  const input = item.querySelector("input");
+  const stale = record.verdicts[item.dataset.key]?.answer !== undefined && record.verdicts[item.dataset.key].answer !== input.value;
+  if (stale) box.append(element("p", { class: "help" }, `(for your earlier answer: ${record.verdicts[item.dataset.key].answer})`));
+  input.setAttribute("aria-invalid", result.verdict ? String(result.verdict === "incorrect") : "true");
+}
+
+function preview(item, symbols) {
+  const input = item.querySelector("input");
+  const out = item.querySelector(".practice-preview");
+  const text = input.value.trim();
+  if (!text) {
+    out.replaceChildren(element("span", { class: "help" }, "What you type appears here, typeset."));
+    return;
+  }
+  try {
+    const latex = toTex(text, symbols);
+    const lhs = item.dataset.lhs;
+    katexInto(out, item.dataset.step === "equation" ? `${latex} = 0` : `${lhs} = ${latex}`, true);
+  } catch (error) {
+    out.replaceChildren(element("span", { class: "help" }, `Not a complete expression yet (${error.message}).`));
+  }
+}
+
+function buildItem(exercise, index, doc) {
+  const key = keyOf(exercise);
+  const id = `practice-${index}`;
+  const item = element("li", { class: "practice-step", "data-key": key, "data-step": exercise.step, "data-lhs": exercise.lhs });
+  const form = element("form", { class: "practice-form", novalidate: "" });
+  const title = element("h3", { id: `${id}-title` }, exercise.title);
+  const label = element("label", { for: `${id}-answer` }, `Your answer: ${exercise.title}`);
+  const row = element("div", { class: "practice-row" });
+  const lhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
+  katexInto(lhs, exercise.step === "equation" ? "" : `${exercise.lhs} =`);
+  const input = element("input", {
+    type: "text",
+    id: `${id}-answer`,
+    name: key,
+    autocomplete: "off",
+    spellcheck: "false",
+    autocapitalize: "off",
+    "aria-describedby": `${id}-names ${id}-preview`,
+  });
+  input.value = record.answers[key] || "";
+  const rhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
+  if (exercise.step === "equation") katexInto(rhs, "= 0");
+  row.append(lhs, input, rhs);
+  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `Names you may use: ${exercise.names.join(", ")}, pi.`);
+  const previewBox = element("div", { class: "practice-preview", id: `${id}-preview`, "aria-label": "Your answer, typeset" });
+  const actions = element("div", { class: "practice-actions" });
+  const check = element("button", { type: "submit" }, "Check");
+  const reveal = element("button", { type: "button", "aria-expanded": "false", "aria-controls": `${id}-engine` }, "Show this step");
+  actions.append(check, reveal);
+  const verdict = element("div", { class: "practice-verdict", role: "status", "aria-live": "polite", id: `${id}-verdict` });
+  const engine = element("div", { class: "practice-engine", id: `${id}-engine`, hidden: "" });
+  const engineMath = element("div", { class: "math-display" });
+  katexInto(engineMath, exercise.answer.latex, true);
+  engine.append(element("p", { class: "help" }, "The engine's step:"), engineMath);
+  form.append(title, label, row, names, previewBox, actions, verdict, engine);
+  item.append(form);
+
+  let timer = null;
+  input.addEventListener("input", () => {
+    record.answers[key] = input.value;
+    save(record);
+    clearTimeout(timer);
+    timer = setTimeout(() => preview(item, doc.symbols), 120);
+  });
+  reveal.addEventListener("click", () => {
+    const open = engine.hidden;
+    engine.hidden = !open;
+    reveal.setAttribute("aria-expanded", String(open));
+    reveal.textContent = open ? "Hide this step" : "Show this step";
+  });
+  form.addEventListener("submit", async (event) => {
+    event.preventDefault();
+    const answer = input.value.trim();
+    if (!answer) {
+      showVerdict(item, { detail: "Type an expression first." }, "");
+      input.focus();
+      return;
+    }
+    check.disabled = true;
+    verdict.textContent = "Checking…";
+    const body = { step: exercise.step, answer };
+    if (exercise.coordinate) body.coordinate = exercise.coordinate;
+    if (system) body.system = system;
+    try {
+      const { answer: result } = await request(root.dataset.checkUrl, body);
+      record.verdicts[key] = { answer: input.value, result: result || { detail: "No answer from the server." } };
+      save(record);
+      showVerdict(item, record.verdicts[key].result, input.value);
+    } catch {
+      showVerdict(item, { detail: "The server could not be reached; try again." }, answer);
+    } finally {
+      check.disabled = false;
+    }
+  });
+
+  preview(item, doc.symbols);
+  if (record.verdicts[key]) showVerdict(item, record.verdicts[key].result, record.verdicts[key].answer);
+  return item;
+}
+
+async function loadSteps() {
+  const status = document.getElementById("practice-status");
+  const list = document.getElementById("practice-steps");
+  const { ok, answer } = await request(root.dataset.practiceUrl, system || undefined);
+  if (!ok) {
+    status.textContent = `The steps could not be loaded: ${answer?.detail || "no answer from the server"}.`;
+    return;
+  }
+  list.replaceChildren(...answer.exercises.map((exercise, index) => buildItem(exercise, index, answer)));
+  status.textContent = `${answer.exercises.length} steps to derive, in the chapter's order.`;
+}
+
+let loaded = false;
+
+function setPractising(on, remember = true) {
+  document.body.classList.toggle("practising", on);
+  document.getElementById("practice-switch").checked = on;
+  document.getElementById("practice-body").hidden = !on;
+  if (remember) {
+    record.on = on;
+    save(record);
+  }
+  if (on && !loaded) {
+    loaded = true;
+    loadSteps();
+  }
+}
+
+function shareLink() {
+  const url = new URL(window.location.href);
+  url.searchParams.set("practice", "");
+  if (sceneId && controls) {
+    for (const [name, value] of Object.entries(readRequest(controls).parameters)) url.searchParams.set(name, String(value));
+  } else if ([...url.searchParams.keys()].every((name) => name === "practice")) {
+    // the playground's default system has no address of its own: put the declaration in the link
+    url.searchParams.set("system", JSON.stringify(system));
+  }
+  return url.toString().replace("practice=&", "practice&").replace(/practice=$/, "practice");
+}
+
+if (root) {
+  // parameters from a shared link are set before the first simulation runs
+  if (sceneId && controls && query.has("practice")) {
+    for (const [name, value] of query) {
+      if (name !== "practice" && value.trim() !== "" && Number.isFinite(Number(value))) setControl(controls, name, Number(value));
+    }
+  }
+  const start = () => {
+    document.getElementById("practice-switch").addEventListener("change", (event) => setPractising(event.target.checked));
+    document.getElementById("practice-link").addEventListener("click", async () => {
+      const status = document.getElementById("practice-link-status");
+      const link = shareLink();
+      try {
+        await navigator.clipboard.writeText(link);
+        status.textContent = "Link copied.";
+      } catch {
+        status.textContent = `Link: ${link}`;
+      }
+    });
+    if (query.has("practice") || record.on) setPractising(true, query.has("practice") ? true : false);
+  };
+  // KaTeX is loaded with defer, after this module: start once the document is ready
+  if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", start);
+  else start();
+}

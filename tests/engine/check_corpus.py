@@ -1,0 +1,308 @@
+"""A corpus of student answers with the verdict, difference and hint the checker must give.
+
+Each entry: (system, step, coordinate, answer, verdict, difference, hint).
+``system`` is a scene id or one of the two systems below; ``difference`` is
+answer − truth as an expression in the API's syntax (``None`` when there is
+none); ``hint`` is a mistake of ``app.engine.mistakes.RULES``, ``"pointer"``
+(the step's general rule), ``"omega"``, ``"missing_factor:<factor>"`` or
+``"constant_factor:<factor>"``, or ``None``.
+"""
+
+from __future__ import annotations
+
+# A cart on a spring with a pendulum hanging from it, and drag on the cart (particles, U and a force).
+CART_PENDULUM = {
+    "coordinates": ["x", "phi"],
+    "parameters": [{"name": n, "value": 1.0, "min": 0.1} for n in ("M", "m", "l", "k", "g", "c")],
+    "particles": [
+        {"mass": "M", "position": ["x", "0", "0"]},
+        {"mass": "m", "position": ["x + l*sin(phi)", "0", "-l*cos(phi)"]},
+    ],
+    "potential": "k*x**2/2 - m*g*l*cos(phi)",
+    "forces": {"x": "-c*x_dot"},
+}
+
+# A bead on a rod spun at the rate w in a horizontal plane, held by a spring of natural length a
+# anchored on the axis, given by L alone.
+SPRING_ROD = {
+    "coordinates": ["r"],
+    "parameters": [{"name": n, "value": 1.0, "min": 0.1} for n in ("m", "k", "a", "w")],
+    "lagrangian": "m*(r_dot**2 + w**2*r**2)/2 - k*(r - a)**2/2",
+}
+
+USER_SYSTEMS = {"cart-pendulum": CART_PENDULUM, "spring-rod": SPRING_ROD}
+
+CORPUS = [
+    # simple pendulum
+    ("simple-pendulum", "kinetic", None, "m*R**2*theta_dot**2/2", "correct", None, None),
+    ("simple-pendulum", "kinetic", None, "m*(R*theta_dot)**2*(sin(theta)**2 + cos(theta)**2)/2", "correct", None, None),
+    ("simple-pendulum", "kinetic", None, "m*R**2*theta_dot**2", "incorrect", "m*R**2*theta_dot**2/2", "missing_half"),
+    (
+        "simple-pendulum",
+        "kinetic",
+        None,
+        "m*R*theta_dot/2",
+        "incorrect",
+        "m*R*theta_dot/2 - m*R**2*theta_dot**2/2",
+        "speed_not_squared",
+    ),
+    ("simple-pendulum", "potential", None, "-m*g*R*cos(theta)", "equivalent", None, None),
+    ("simple-pendulum", "potential", None, "m*g*R*cos(theta)", "incorrect", "2*m*g*R*cos(theta)", "sign_of_u"),
+    (
+        "simple-pendulum",
+        "lagrangian",
+        None,
+        "m*R**2*theta_dot**2/2 + m*g*R*(1 - cos(theta))",
+        "incorrect",
+        "-2*m*g*R*cos(theta)",
+        "t_plus_u",
+    ),
+    ("simple-pendulum", "equation", "theta", "theta_ddot + g*sin(theta)/R", "equivalent", None, None),
+    ("simple-pendulum", "equation", "theta", "-m*R*theta_ddot - m*g*sin(theta)", "equivalent", None, None),
+    (
+        "simple-pendulum",
+        "equation",
+        "theta",
+        "theta_ddot - g*sin(theta)/R",
+        "incorrect",
+        "-2*g*sin(theta)/R",
+        "sign_of_dl_dq",
+    ),
+    (
+        "simple-pendulum",
+        "equation",
+        "theta",
+        "theta_ddot + g*sin(theta)",
+        "incorrect",
+        "g*sin(theta) - g*sin(theta)/R",
+        "pointer",
+    ),
+    ("simple-pendulum", "acceleration", "theta", "-2*g*sin(theta/2)*cos(theta/2)/R", "correct", None, None),
+    ("simple-pendulum", "omega_squared", None, "sqrt(g/R)", "incorrect", "sqrt(g/R) - g/R", "omega"),
+    ("simple-pendulum", "omega_squared", None, "g/R", "correct", None, None),
+    ("simple-pendulum", "hamiltonian", None, "m*R**2*theta_dot**2/2 - m*g*R*cos(theta)", "equivalent", None, None),
+    (
+        "simple-pendulum",
+        "hamiltonian",
+        None,
+        "m*R**2*theta_dot**2/2 - m*g*R*(1 - cos(theta))",
+        "incorrect",
+        "2*m*g*R*cos(theta)",
+        "h_is_l",
+    ),
+    # damped pendulum
+    (
+        "damped-pendulum",
+        "equation",
+        "theta",
+        "m*R**2*theta_ddot + m*g*R*sin(theta) + b*theta_dot",
+        "correct",
+        None,
+        None,
+    ),
+    (
+        "damped-pendulum",
+        "equation",
+        "theta",
+        "m*R**2*theta_ddot + 2*m*g*R*sin(theta) + b*theta_dot",
+        "incorrect",
+        "m*g*R*sin(theta)",
+        "force_counted_twice",
+    ),
+    (
+        "damped-pendulum",
+        "equation",
+        "theta",
+        "m*R**2*theta_ddot + m*g*R*sin(theta)",
+        "incorrect",
+        "-b*theta_dot",
+        "forgot_force",
+    ),
+    (
+        "damped-pendulum",
+        "acceleration",
+        "theta",
+        "-(2*m*g*R*sin(theta) + b*theta_dot)/(m*R**2)",
+        "incorrect",
+        "-g*sin(theta)/R",
+        "force_counted_twice",
+    ),
+    (
+        "damped-pendulum",
+        "momentum",
+        "theta",
+        "m*R*theta_dot",
+        "incorrect",
+        "m*R*theta_dot - m*R**2*theta_dot",
+        "constant_factor:R",
+    ),
+    # helix bead
+    ("helix-bead", "kinetic", None, "m*(1 + R**2*alpha**2)*z_dot**2/2", "correct", None, None),
+    ("helix-bead", "potential", None, "-m*g*z", "incorrect", "-2*m*g*z", "sign_of_u"),
+    ("helix-bead", "acceleration", "z", "-g/(1 + alpha**2*R**2)", "correct", None, None),
+    # incline block
+    ("incline-block", "lagrangian", None, "m*X_dot**2/2 - m*g*X*sin(alpha) + 3*m*g", "equivalent", None, None),
+    ("incline-block", "acceleration", "X", "-g*sin(alpha)", "correct", None, None),
+    ("incline-block", "acceleration", "X", "g*sin(alpha)", "incorrect", "2*g*sin(alpha)", "sign_of_dl_dq"),
+    # tabletop spring
+    ("tabletop-spring", "acceleration", "theta", "0", "incorrect", "2*r_dot*theta_dot/r", "chain_rule_in_ddt"),
+    ("tabletop-spring", "acceleration", "theta", "-2*r_dot*theta_dot/r", "correct", None, None),
+    (
+        "tabletop-spring",
+        "momentum",
+        "theta",
+        "m*theta_dot",
+        "incorrect",
+        "m*theta_dot - m*r**2*theta_dot",
+        "missing_factor:r**2",
+    ),
+    ("tabletop-spring", "omega_squared", None, "4*k/m", "correct", None, None),
+    ("tabletop-spring", "omega_squared", None, "2*sqrt(k/m)", "incorrect", "2*sqrt(k/m) - 4*k/m", "omega"),
+    # spherical pendulum
+    (
+        "spherical-pendulum",
+        "momentum",
+        "phi",
+        "m*R**2*phi_dot",
+        "incorrect",
+        "m*R**2*phi_dot*cos(theta)**2",
+        "missing_factor:sin(theta)**2",
+    ),
+    (
+        "spherical-pendulum",
+        "equation",
+        "phi",
+        "m*R**2*sin(theta)**2*phi_ddot",
+        "incorrect",
+        "-2*m*R**2*sin(theta)*cos(theta)*theta_dot*phi_dot",
+        "chain_rule_in_ddt",
+    ),
+    (
+        "spherical-pendulum",
+        "equation",
+        "phi",
+        "sin(theta)*phi_ddot + 2*cos(theta)*theta_dot*phi_dot",
+        "equivalent",
+        None,
+        None,
+    ),
+    ("spherical-pendulum", "acceleration", "phi", "-2*theta_dot*phi_dot/tan(theta)", "correct", None, None),
+    ("spherical-pendulum", "potential", None, "-m*g*R*cos(theta)", "incorrect", "-2*m*g*R*cos(theta)", "sign_of_u"),
+    # rail and two bodies
+    ("rail-two-body", "potential", None, "k*(x1 - x2 + l0)**2/2", "correct", None, None),
+    ("rail-two-body", "equation", "x1", "m1*x1_ddot - k*(x2 - x1 - l0)", "correct", None, None),
+    # pulley
+    (
+        "pulley",
+        "kinetic",
+        None,
+        "M*(y1_dot**2 + y2_dot**2)/8 + m1*y1_dot**2/2 + m2*y2_dot**2/2",
+        "incorrect",
+        "-M*y1_dot*y2_dot/4",
+        "missing_cross_term",
+    ),
+    ("pulley", "kinetic", None, "M*(y1_dot + y2_dot)**2/8 + m1*y1_dot**2/2 + m2*y2_dot**2/2", "correct", None, None),
+    # movable incline
+    (
+        "movable-incline",
+        "kinetic",
+        None,
+        "M*X_dot**2/2 + m*(X_dot**2 + D_dot**2)/2",
+        "incorrect",
+        "-m*X_dot*D_dot*cos(alpha)",
+        "missing_cross_term",
+    ),
+    (
+        "movable-incline",
+        "lagrangian",
+        None,
+        "M*X_dot**2/2 + m*((X_dot + D_dot*cos(alpha))**2 + (D_dot*sin(alpha))**2)/2 + m*g*D*sin(alpha) + 7*m",
+        "equivalent",
+        None,
+        None,
+    ),
+    ("movable-incline", "momentum", "X", "(M + m)*X_dot + m*D_dot*cos(alpha)", "correct", None, None),
+    # rotating parabola
+    (
+        "rotating-parabola",
+        "hamiltonian",
+        None,
+        "m*rho_dot**2*(1 + 4*alpha**2*rho**2)/2 + m*omega**2*rho**2/2 + alpha*g*m*rho**2",
+        "incorrect",
+        "m*omega**2*rho**2",
+        "h_is_e",
+    ),
+    (
+        "rotating-parabola",
+        "hamiltonian",
+        None,
+        "m*rho_dot**2*(1 + 4*alpha**2*rho**2)/2 - m*omega**2*rho**2/2 + alpha*g*m*rho**2",
+        "correct",
+        None,
+        None,
+    ),
+    ("rotating-parabola", "omega_squared", None, "2*alpha*g - omega**2", "correct", None, None),
+    # a cart with a hanging pendulum, a spring and drag (a system of our own)
+    (
+        "cart-pendulum",
+        "kinetic",
+        None,
+        "(M + m)*x_dot**2/2 + m*l**2*phi_dot**2/2",
+        "incorrect",
+        "-m*l*cos(phi)*x_dot*phi_dot",
+        "missing_cross_term",
+    ),
+    (
+        "cart-pendulum",
+        "lagrangian",
+        None,
+        "(M + m)*x_dot**2/2 + m*l*cos(phi)*x_dot*phi_dot + m*l**2*phi_dot**2/2 - k*x**2/2 + m*g*l*cos(phi)",
+        "correct",
+        None,
+        None,
+    ),
+    ("cart-pendulum", "equation", "phi", "l*phi_ddot + cos(phi)*x_ddot + g*sin(phi)", "equivalent", None, None),
+    (
+        "cart-pendulum",
+        "equation",
+        "phi",
+        "m*l**2*phi_ddot + m*l*cos(phi)*x_ddot + m*g*l*sin(phi) - m*l*sin(phi)*x_dot*phi_dot",
+        "incorrect",
+        "-m*l*sin(phi)*x_dot*phi_dot",
+        "pointer",
+    ),
+    (
+        "cart-pendulum",
+        "equation",
+        "x",
+        "(M + m)*x_ddot + m*l*cos(phi)*phi_ddot + k*x + c*x_dot",
+        "incorrect",
+        "m*l*sin(phi)*phi_dot**2",
+        "chain_rule_in_ddt",
+    ),
+    (
+        "cart-pendulum",
+        "equation",
+        "x",
+        "(M + m)*x_ddot + m*l*cos(phi)*phi_ddot - m*l*sin(phi)*phi_dot**2 + k*x",
+        "incorrect",
+        "-c*x_dot",
+        "forgot_force",
+    ),
+    ("cart-pendulum", "momentum", "x", "(M + m)*x_dot + m*l*cos(phi)*phi_dot", "correct", None, None),
+    # a bead on a spun rod with a spring, given by L alone (a system of our own)
+    ("spring-rod", "hamiltonian", None, "m*(r_dot**2 - w**2*r**2)/2 + k*(r - a)**2/2", "correct", None, None),
+    (
+        "spring-rod",
+        "hamiltonian",
+        None,
+        "m*(r_dot**2 + w**2*r**2)/2 - k*(r - a)**2/2",
+        "incorrect",
+        "m*w**2*r**2 - k*r**2 + 2*k*a*r",
+        "h_is_l",
+    ),
+    ("spring-rod", "momentum", "r", "m*r_dot", "correct", None, None),
+    ("spring-rod", "equation", "r", "r_ddot + (k/m - w**2)*r - k*a/m", "equivalent", None, None),
+    ("spring-rod", "omega_squared", None, "(k - m*w**2)/m", "correct", None, None),
+    ("spring-rod", "omega_squared", None, "sqrt(k/m - w**2)", "incorrect", "sqrt(k/m - w**2) - k/m + w**2", "omega"),
+]

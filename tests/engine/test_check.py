@@ -1,0 +1,199 @@
+"""The step checker against a corpus of student answers, and its refusals."""
+
+from __future__ import annotations
+
+import os
+from functools import cache
+
+import pytest
+import sympy as sp
+
+from app.engine.check import STEPS, CheckError, check_answer, exercises, judge, name_kinds, problem
+from app.engine.derive import Derivation, derive
+from app.engine.exercises import exercise_json
+from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, OMEGA_HINT, POINTERS, RULES
+from app.engine.parse import parse_expression
+from app.scenes import SCENES
+from app.scenes.types import Parameter, Particle, System
+from tests.engine.check_corpus import CORPUS, USER_SYSTEMS
+
+HINTS = {rule.mistake: rule.hint for rule in RULES}
+
+
+def system_of(spec: dict) -> System:
+    """The engine's declaration of a system given in the API's request shape."""
+    return System(
+        coordinates=tuple(spec["coordinates"]),
+        parameters=tuple(Parameter(p["name"], p["value"], min=p["min"]) for p in spec["parameters"]),
+        particles=tuple(Particle(p["mass"], tuple(p["position"])) for p in spec.get("particles", [])),
+        kinetic=spec.get("kinetic"),
+        potential=spec.get("potential"),
+        lagrangian=spec.get("lagrangian"),
+        forces=dict(spec.get("forces", {})),
+    )
+
+
+@cache
+def derivation(name: str) -> Derivation:
+    return derive(system_of(USER_SYSTEMS[name]) if name in USER_SYSTEMS else SCENES[name].system)
+
+
+def expected_hint(step: str, hint: str | None) -> str | None:
+    if hint is None:
+        return None
+    kind, _, factor = hint.partition(":")
+    if kind == "pointer":
+        return POINTERS[step]
+    if kind == "omega":
+        return OMEGA_HINT
+    if kind == "missing_factor":
+        return MISSING_FACTOR_HINT.format(factor=factor)
+    if kind == "constant_factor":
+        return CONSTANT_FACTOR_HINT.format(factor=factor)
+    return HINTS[kind]
+
+
+@pytest.mark.parametrize(
+    ("system", "step", "coordinate", "answer", "verdict", "difference", "hint"),
+    CORPUS,
+    ids=[f"{c[0]}-{c[1]}-{c[2] or ''}-{i}" for i, c in enumerate(CORPUS)],
+)
+def test_corpus(system, step, coordinate, answer, verdict, difference, hint):
+    d = derivation(system)
+    result = judge(problem(d, step, coordinate), answer)
+    assert result["verdict"] == verdict, result
+    assert result["hint"] == expected_hint(step, hint)
+    if difference is None:
+        assert result["difference"] is None
+    else:
+        names = {**d.table.namespace(), **{s.name: s for s in d.table.qdd}}
+        got = parse_expression(result["difference"]["sympy"], names)
+        want = parse_expression(difference, names)
+        assert sp.simplify(got - want) == 0, (result["difference"], difference)
+        assert result["difference"]["latex"]
+    if verdict == "equivalent":
+        message = result["message"]
+        assert message.startswith("Equivalent:") and ("multiplied by" in message or "plus" in message)
+
+
+def test_the_corpus_covers_every_scene_both_systems_and_every_common_mistake():
+    assert len(CORPUS) >= 40
+    assert {c[0] for c in CORPUS} == set(SCENES) | set(USER_SYSTEMS)
+    hints = {c[6].partition(":")[0] for c in CORPUS if c[6]}
+    common = {
+        "missing_half",
+        "speed_not_squared",
+        "sign_of_u",
+        "t_plus_u",
+        "missing_cross_term",
+        "force_counted_twice",
+        "missing_factor",
+        "chain_rule_in_ddt",
+        "omega",
+    }
+    assert common <= hints
+    assert {c[4] for c in CORPUS} == {"correct", "equivalent", "incorrect"}
+    assert {c[1] for c in CORPUS} == set(STEPS)
+
+
+def test_equivalent_messages_say_how():
+    d = derivation("simple-pendulum")
+    potential = judge(problem(d, "potential"), "-m*g*R*cos(theta)")
+    assert "plus the constant -R*g*m" in potential["message"] and "zero of height" in potential["message"]
+    equation = judge(problem(d, "equation", "theta"), "theta_ddot + g*sin(theta)/R")
+    assert "multiplied by 1/(R**2*m)" in equation["message"]
+    spherical = judge(
+        problem(derivation("spherical-pendulum"), "equation", "phi"),
+        "sin(theta)*phi_ddot + 2*cos(theta)*theta_dot*phi_dot",
+    )
+    assert "depends on the coordinates" in spherical["message"] and "sin(theta)" in spherical["message"]
+
+
+def test_an_incorrect_equation_is_compared_at_the_students_scale():
+    result = judge(problem(derivation("simple-pendulum"), "equation", "theta"), "theta_ddot - g*sin(theta)/R")
+    assert "scaling it by 1/(R**2*m)" in result["message"]
+
+
+@pytest.mark.parametrize(
+    ("answer", "part"),
+    [
+        ("m*(R*theta_dot**2/2", "m*(R*theta_d"),  # syntax
+        ("m*v**2/2", "v"),  # an unknown name
+        ("m*R^2*theta_dot**2/2", "^"),
+        ("__import__('os').system('touch /tmp/lagrange-check-ran')", "'"),
+        ("theta_dot.__class__", "theta_dot.__class__"),
+        ("(lambda x: x)(1)", ":"),
+        ("sin.__globals__", "sin.__globals__"),
+        ("Symbol(1)", "Symbol"),
+        ("9**9**9**9", "9**9**9"),
+        ("exp(exp(exp(3)))", "exp(exp(exp(3)))"),
+        ("m*R**2*theta_dot**2/2 + t*1e999", "1e999"),
+        ("theta_ddot", "theta_ddot"),  # no acceleration in T
+    ],
+)
+def test_refusals_name_the_answer_and_the_offending_part_and_run_nothing(answer, part):
+    d = derivation("simple-pendulum")
+    with pytest.raises(CheckError) as refused:
+        judge(problem(d, "kinetic"), answer)
+    assert refused.value.field == "answer"
+    assert str(refused.value).startswith("answer: ")
+    assert refused.value.part == part
+    assert answer[refused.value.start : refused.value.end] == part
+    assert not os.path.exists("/tmp/lagrange-check-ran")
+
+
+def test_refusals_in_pure_python_name_the_steps_rules():
+    kinds = name_kinds(("theta",), ("m", "g", "R"), ())
+    with pytest.raises(CheckError, match="U depends on positions only") as velocity:
+        check_answer("m*g*R*theta_dot", "potential", kinds)
+    assert (velocity.value.start, velocity.value.end) == (6, 15)
+    with pytest.raises(CheckError, match="what you solve for"):
+        check_answer("-g*sin(theta)/R + 0*theta_ddot", "acceleration", kinds)
+    with pytest.raises(CheckError, match="constant"):
+        check_answer("g*cos(theta)/R", "omega_squared", kinds)
+    with pytest.raises(CheckError, match="allowed here: R, g, m, t, theta, theta_dot"):
+        check_answer("m*x_dot", "kinetic", kinds)
+
+
+def test_an_unknown_or_inapplicable_step_or_coordinate_lists_the_allowed_ones():
+    damped = derivation("damped-pendulum")
+    with pytest.raises(CheckError, match="the steps are: kinetic, potential, lagrangian, momentum, equation") as e:
+        problem(damped, "omega_squared")
+    assert e.value.field == "step"
+    with pytest.raises(CheckError, match="unknown step 'jerk'"):
+        problem(damped, "jerk")
+    with pytest.raises(CheckError, match="give one of: theta") as e:
+        problem(damped, "momentum")
+    assert e.value.field == "coordinate"
+    with pytest.raises(CheckError, match="'x' is not a coordinate of this system; the coordinates are: theta"):
+        problem(damped, "equation", "x")
+    with pytest.raises(CheckError, match="given by its Lagrangian alone"):
+        problem(derivation("spring-rod"), "kinetic")
+
+
+def test_exercises_follow_the_chapter_and_carry_the_engines_answers():
+    d = derivation("spherical-pendulum")
+    assert exercises(d) == [
+        ("kinetic", None),
+        ("potential", None),
+        ("lagrangian", None),
+        ("momentum", "theta"),
+        ("momentum", "phi"),
+        ("equation", "theta"),
+        ("equation", "phi"),
+        ("acceleration", "theta"),
+        ("acceleration", "phi"),
+        ("hamiltonian", None),
+    ]
+    doc = exercise_json(derivation("tabletop-spring"))
+    last = doc["exercises"][-1]
+    assert last["step"] == "omega_squared" and r"\omega^2 = \frac{4 k}{m}" in last["answer"]["latex"]
+    assert "p_theta" in last["names"] and doc["symbols"]["theta_dot"] == r"\dot{\theta}"
+    for item in doc["exercises"]:
+        # the engine's own answer passes its own checker
+        assert (
+            judge(problem(derivation("tabletop-spring"), item["step"], item["coordinate"]), item["answer"]["sympy"])[
+                "verdict"
+            ]
+            == "correct"
+        )

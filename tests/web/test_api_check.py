@@ -1,0 +1,114 @@
+"""POST /api/scenes/{id}/check and POST /api/check: students' steps judged in the worker pool."""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+
+from app.engine.mistakes import RULES
+from app.service import checking
+from tests.engine.check_corpus import CART_PENDULUM, SPRING_ROD
+
+HINTS = {rule.mistake: rule.hint for rule in RULES}
+
+
+def check(client, body, scene="simple-pendulum"):
+    url = f"/api/scenes/{scene}/check" if scene else "/api/check"
+    return client.post(url, json=body)
+
+
+def test_a_scene_answer_gets_its_verdict_difference_and_hint(client):
+    wrong = check(client, {"step": "kinetic", "answer": "m*R**2*theta_dot**2"})
+    assert wrong.status_code == 200, wrong.text
+    body = wrong.json()
+    assert set(body) == {"verdict", "message", "difference", "hint"}
+    assert body["verdict"] == "incorrect" and body["hint"] == HINTS["missing_half"]
+    assert body["difference"] == {"sympy": "R**2*m*theta_dot**2/2", "latex": r"\frac{R^{2} m \dot{\theta}^{2}}{2}"}
+    right = check(client, {"step": "equation", "coordinate": "theta", "answer": "theta_ddot + g*sin(theta)/R"}).json()
+    assert right["verdict"] == "equivalent" and right["difference"] is None and right["hint"] is None
+    scene = check(client, {"step": "momentum", "coordinate": "phi", "answer": "m*R**2*phi_dot"}, "spherical-pendulum")
+    assert "sin(theta)**2" in scene.json()["hint"]
+
+
+def test_a_declared_system_is_checked_like_a_scene(client):
+    cross = check(
+        client,
+        {"system": CART_PENDULUM, "step": "kinetic", "answer": "(M + m)*x_dot**2/2 + m*l**2*phi_dot**2/2"},
+        scene=None,
+    )
+    assert cross.status_code == 200, cross.text
+    assert cross.json()["hint"] == HINTS["missing_cross_term"]
+    omega = check(client, {"system": SPRING_ROD, "step": "omega_squared", "answer": "k/m - w**2"}, scene=None)
+    assert omega.status_code == 200, omega.text
+    assert omega.json()["verdict"] == "correct"
+
+
+@pytest.mark.parametrize(
+    ("body", "loc", "detail"),
+    [
+        ({"step": "kinetic", "answer": "m*R**2*theta_dot**2/"}, ["body", "answer"], "syntax error"),
+        ({"step": "kinetic", "answer": "m*v**2/2"}, ["body", "answer"], "unknown name (allowed here: R, g, m, t"),
+        ({"step": "potential", "answer": "m*g*theta_dot"}, ["body", "answer"], "U depends on positions only"),
+        ({"step": "momentum", "answer": "m*R**2*theta_dot"}, ["body", "coordinate"], "give one of: theta"),
+        ({"step": "equation", "coordinate": "x", "answer": "1"}, ["body", "coordinate"], "the coordinates are: theta"),
+        ({"step": "jerk", "answer": "1"}, ["body", "step"], "'kinetic', 'potential', 'lagrangian', 'momentum'"),
+        ({"step": "kinetic", "answer": ""}, ["body", "answer"], "at least 1 character"),
+        ({"step": "kinetic", "answer": "1", "extra": 1}, ["body", "extra"], "Extra inputs are not permitted"),
+    ],
+)
+def test_bad_requests_are_422_naming_the_field(client, body, loc, detail):
+    response = check(client, body)
+    assert response.status_code == 422, response.text
+    answer = response.json()
+    got = answer.get("loc") or answer["errors"][0]["loc"]
+    assert got == loc and detail in answer["detail"]
+
+
+def test_a_step_that_does_not_apply_lists_the_steps_that_do(client):
+    response = check(client, {"step": "omega_squared", "answer": "g/R"}, "damped-pendulum")
+    assert response.status_code == 422
+    assert response.json()["detail"].endswith(
+        "the steps are: kinetic, potential, lagrangian, momentum, equation, acceleration, hamiltonian"
+    )
+    hoop = check(client, {"system": SPRING_ROD, "step": "kinetic", "answer": "1"}, scene=None)
+    assert hoop.status_code == 422 and "Lagrangian alone" in hoop.json()["detail"]
+    assert hoop.json()["loc"] == ["body", "step"]
+
+
+def test_a_bad_declared_system_is_located_under_system(client):
+    response = check(client, {"system": {**SPRING_ROD, "lagrangian": "m*q"}, "step": "lagrangian", "answer": "1"}, None)
+    assert response.status_code == 422
+    assert response.json()["loc"] == ["body", "system", "lagrangian"] and response.json()["part"] == "q"
+
+
+def test_code_like_answers_are_refused_before_any_job_and_run_nothing(client, monkeypatch):
+    submitted = []
+    monkeypatch.setattr(checking.user_service, "run_job", lambda *a, **k: submitted.append(a))
+    for answer in (
+        "__import__('os').system('touch /tmp/lagrange-api-check-ran')",
+        "sin.__globals__",
+        "(lambda: 1)()",
+        "theta_dot.__class__.__mro__",
+        "exp(exp(exp(exp(3))))",
+    ):
+        response = check(client, {"step": "kinetic", "answer": answer})
+        assert response.status_code == 422 and response.json()["loc"] == ["body", "answer"], answer
+        assert response.json()["part"] in answer
+    assert submitted == [] and not os.path.exists("/tmp/lagrange-api-check-ran")
+
+
+def test_unknown_scene_is_404_listing_the_known_ones(client):
+    response = check(client, {"step": "kinetic", "answer": "1"}, "nope")
+    assert response.status_code == 404 and "simple-pendulum" in response.json()["detail"]
+
+
+def test_practice_lists_each_step_with_the_engines_answer(client):
+    doc = client.get("/api/scenes/pulley/practice").json()
+    steps = [(e["step"], e["coordinate"]) for e in doc["exercises"]]
+    assert steps[:3] == [("kinetic", None), ("potential", None), ("lagrangian", None)]
+    assert ("equation", "y2") in steps and steps[-1] == ("hamiltonian", None)
+    assert doc["symbols"]["y1_dot"] == r"\dot{y}_{1}"
+    own = client.post("/api/practice", json=SPRING_ROD)
+    assert own.status_code == 200, own.text
+    assert [e["step"] for e in own.json()["exercises"]][-1] == "omega_squared"
