@@ -13,6 +13,7 @@ from app.web import api_scenes, errors, pages
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
 from app.web.playground import router as playground_router
+from app.web.responses import ApiGzip
 from app.web.templating import static_app
 
 
@@ -36,6 +37,7 @@ app = FastAPI(
     lifespan=lifespan,
 )
 errors.install(app)
+app.add_middleware(ApiGzip)
 
 ROUTERS = [api_scenes.router, pages.router, user_router, simulate_router, playground_router]
 app.mount("/static", static_app, name="static")

@@ -48,6 +48,7 @@ class SimulationInput(Protocol):
     rtol: float | None
     atol: float | None
     samples: int | None
+    precision: str  # "full" or "display" (absent means full)
 
 
 class _Compiled:
@@ -134,8 +135,30 @@ def _setting(value: Any, default: float, low: float, high: float, where: str) ->
     return value
 
 
-def _series(values: np.ndarray) -> list[float | None]:
-    return [float(v) if math.isfinite(v) else None for v in values.tolist()]
+# Significant digits of the series in a "display" document: a plot or a readout needs far fewer
+# than the 17 of a double, and short numbers make the response about half the size.
+DISPLAY_DIGITS = 7
+
+
+def display_rounded(values: np.ndarray, digits: int = DISPLAY_DIGITS) -> np.ndarray:
+    """Each finite x rounded to ``digits`` significant digits (0, NaN and Infinity unchanged).
+
+    With e = floor(log10 |x|), x = round(x 10^s) 10^-s for s = digits - 1 - e.  The power of ten is
+    applied as an exact multiplier or divisor (10^|s| is exact up to 10^22), so the result is the
+    double nearest the rounded decimal and prints with at most ``digits`` digits."""
+    out = np.array(values, dtype=float)
+    finite = np.isfinite(out) & (out != 0.0)
+    x = out[finite]
+    shift = digits - 1 - np.floor(np.log10(np.abs(x)))
+    power = 10.0 ** np.abs(shift)
+    out[finite] = np.where(shift >= 0, np.round(x * power) / power, np.round(x / power) * power)
+    return out
+
+
+def _series(values: np.ndarray, precision: str = "full") -> np.ndarray:
+    """A series as the document carries it: a float array (orjson writes NaN and Infinity as null)."""
+    values = np.ascontiguousarray(values, dtype=float)
+    return display_rounded(values) if precision == "display" else values
 
 
 def simulate_derivation(
@@ -181,21 +204,24 @@ def simulate_derivation(
     finally:
         if python_loop:
             _PYTHON_LOOP.release()
-    return document(system, observables, outcome, k, rtol)
+    return document(system, observables, outcome, k, rtol, getattr(request, "precision", None) or "full")
 
 
-def document(system: NumericSystem, observables: Observables, outcome, k: np.ndarray, rtol: float) -> dict[str, Any]:
+def document(
+    system: NumericSystem, observables: Observables, outcome, k: np.ndarray, rtol: float, precision: str = "full"
+) -> dict[str, Any]:
+    """The result document; ``precision="display"`` rounds the series (never ``stats``) to DISPLAY_DIGITS."""
     tr = outcome.trajectory
     n = system.n
     values = observables.evaluate(tr.t, tr.y, k)
     summary = summarize(observables, tr.t, values, rtol)
     warnings = [*outcome.warnings, *summary.pop("warnings")]
-    state: dict[str, list] = {}
+    state: dict[str, np.ndarray] = {}
     for i, q in enumerate(system.coordinates):
-        state[q] = _series(tr.y[:, i])
-        state[f"{q}_dot"] = _series(tr.y[:, n + i])
-    conserved = {c: _series(values[f"conserved:{c}"]) for c in system.conserved}
-    forces = {f["name"]: _series(values[f"force:{i}"]) for i, f in enumerate(observables.forces)}
+        state[q] = _series(tr.y[:, i], precision)
+        state[f"{q}_dot"] = _series(tr.y[:, n + i], precision)
+    conserved = {c: _series(values[f"conserved:{c}"], precision) for c in system.conserved}
+    forces = {f["name"]: _series(values[f"force:{i}"], precision) for i, f in enumerate(observables.forces)}
     est = outcome.estimate
     stats = {
         "method": outcome.method,
@@ -215,13 +241,13 @@ def document(system: NumericSystem, observables: Observables, outcome, k: np.nda
         "notes": tr.notes,
         "warnings": warnings,
     }
-    if any(v is None for series in (*state.values(), *conserved.values()) for v in series):
+    if not all(np.isfinite(series).all() for series in (*state.values(), *conserved.values())):
         warnings.append("some values are not finite (the motion reached a singular point); they are null")
     return {
         "t": _series(tr.t),
         "state": state,
-        "energy": _series(values["energy"]),
-        "hamiltonian": _series(values["hamiltonian"]),
+        "energy": _series(values["energy"], precision),
+        "hamiltonian": _series(values["hamiltonian"], precision),
         "conserved": conserved,
         "constraint_forces": forces,
         "stats": _finite(stats),

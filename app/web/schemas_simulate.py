@@ -17,6 +17,7 @@ from app.numerics import limits
 Method = Literal[
     "auto", "DOP853-compiled", "Yoshida4", "Verlet", "Gauss-Legendre", "DOP853", "RK45", "Radau", "BDF", "LSODA"
 ]
+Precision = Literal["full", "display"]
 Values = Annotated[
     dict[Annotated[str, Field(max_length=40)], Annotated[float, Field(ge=-limits.VALUE_MAX, le=limits.VALUE_MAX)]],
     Field(max_length=limits.MAX_NAMES),
@@ -52,6 +53,11 @@ class SimulateRequest(BaseModel):
     atol: float | None = Field(None, ge=limits.ATOL_MIN, le=limits.ATOL_MAX, description="Absolute tolerance.")
     samples: int | None = Field(
         None, ge=limits.SAMPLES_MIN, le=limits.SAMPLES_MAX, description="Evenly spaced output times from 0 to t_end."
+    )
+    precision: Precision = Field(
+        "full",
+        description="'full': every float as computed; 'display': the series rounded to 7 significant digits "
+        "(what a plot needs; about half the bytes), stats unchanged.",
     )
 
 

@@ -125,3 +125,13 @@ def test_work_precision_is_cached_per_scene(monkeypatch):
     work_precision.for_scene("pulley")
     work_precision.for_scene("pulley")
     assert calls == ["pulley"]
+
+
+def test_display_rounding_keeps_seven_significant_digits():
+    import numpy as np
+
+    x = np.array([0.0, -1.23456789e-12, 3.14159265358979, 98765.4321987, -7.0e15 / 3.0, np.nan, np.inf])
+    r = simulation.display_rounded(x)
+    expected = [0.0, -1.234568e-12, 3.141593, 98765.43, -2.333333e15]
+    assert r[:5].tolist() == expected and [repr(v) for v in r[:5].tolist()] == [repr(v) for v in expected]
+    assert np.isnan(r[5]) and r[6] == np.inf
