@@ -1,7 +1,8 @@
 """``auto``: pick a method per system and request, and say why.
 
-The decision uses the linearisation at the start, J = dF/dy by central
-differences, with eigenvalues lambda_i and eigenvectors v_i:
+The decision uses the linearisation at the start, J = dF/dy (the engine's
+generated Jacobian, or central differences where none is generated), with
+eigenvalues lambda_i and eigenvectors v_i:
 
 * stiff: the fastest rate |lambda|_max exceeds the slow rates (the rest of the
   spectrum, or 1 / t_end) by more than ``STIFF_RATIO``, and the fast modes are
@@ -64,7 +65,10 @@ class Analysis:
 
 
 def jacobian(system: NumericSystem, t: float, y: np.ndarray, k: np.ndarray) -> np.ndarray:
-    """dF/dy by central differences (step ~ eps^(1/3) |y_j|)."""
+    """dF/dy: the engine's expressions differentiated (one call), else central differences (step ~ eps^(1/3) |y_j|)."""
+    exact = system.jacobian(t, y, k)
+    if exact is not None:
+        return exact
     m = y.size
     J = np.empty((m, m))
     for j in range(m):

@@ -36,6 +36,18 @@ from app.numerics.kernels.common import JIT, RHS_SIG
 _lock = threading.Lock()
 _modules: dict[str, ModuleType] = {}
 
+# What is compiled (or loaded from numba's disk cache) in this process: kernel module names and
+# generated-source keys.  A server that must not wait on the compiler asks before it runs.
+_ready: set[str] = set()
+
+
+def mark_ready(name: str) -> None:
+    _ready.add(name)
+
+
+def ready(name: str) -> bool:
+    return name in _ready
+
 
 def python_functions(sources: dict[str, str]) -> dict[str, Callable]:
     """Execute generated source (our own printer's output, never user text) as plain Python."""
@@ -49,9 +61,13 @@ def source_key(text: str) -> str:
     return hashlib.sha256(text.encode()).hexdigest()[:20]
 
 
+def compiled_source(sources: dict[str, str]) -> str:
+    return HEADER + "".join(f"\n\n@njit(RHS_SIG, **JIT)\n{source}" for source in sources.values())
+
+
 def compiled_functions(sources: dict[str, str]) -> ModuleType:
     """numba versions of the generated scalar functions, from the on-disk cache when present."""
-    text = HEADER + "".join(f"\n\n@njit(RHS_SIG, **JIT)\n{source}" for source in sources.values())
+    text = compiled_source(sources)
     key = source_key(text)
     with _lock:
         if key in _modules:
@@ -69,4 +85,5 @@ def compiled_functions(sources: dict[str, str]) -> ModuleType:
         sys.modules[name] = module
         spec.loader.exec_module(module)
         _modules[key] = module
+        mark_ready(key)
         return module

@@ -3,9 +3,13 @@
 Order of work: analyse the start (stiffness, time scales), choose, run the
 method (switching to Radau if ``auto``'s DOP853 meets stiffness on the way),
 run the reference for the error estimate, compare.  Everything shares one
-deadline.  The main run exceeding
-it is an error (too much work); the reference exceeding it only costs the
-estimate, with a warning.
+deadline.  The main run exceeding it is an error (too much work); the
+reference exceeding it only costs the estimate, with a warning.
+
+A server passes ``wait_for_compile=False``: when ``auto`` picks a compiled
+method whose numba code is not ready in this process yet (a background thread
+is compiling it), scipy's DOP853 on the generated scalar right-hand side
+answers instead, for the run and the reference, and ``Outcome.path`` says so.
 """
 
 from __future__ import annotations
@@ -33,6 +37,9 @@ class Outcome:
     estimate: Estimate | None
     warnings: list[str] = field(default_factory=list)
     compile_seconds: float = 0.0
+    path: str = "compiled"  # "compiled", "scipy" (a scipy method was asked for or chosen), "scipy-fallback"
+
+FALLBACK = "DOP853"  # scipy's, on the generated scalar right-hand side: needs no compiler
 
 
 def _budget_for(method_name: str) -> int:
@@ -60,6 +67,7 @@ def simulate(
     atol: float = limits.ATOL_DEFAULT,
     wall_seconds: float | None = None,
     estimate: bool = True,
+    wait_for_compile: bool = True,
 ) -> Outcome:
     wall_seconds = limits.WALL_SECONDS if wall_seconds is None else wall_seconds
     t = np.linspace(0.0, t_end, samples)
@@ -78,11 +86,20 @@ def simulate(
         raise SimulationError(f"method {name} cannot integrate this system: {why_not}", "method")
 
     warnings: list[str] = []
+    path = "compiled" if chosen.compiled else "scipy"
+    reference_ready = not estimate or METHODS["DOP853-compiled"].ready(system)
+    if method == "auto" and chosen.compiled and not wait_for_compile and not (chosen.ready(system) and reference_ready):
+        reason = (
+            f"scipy's {FALLBACK} (Python step loop) answered, because the compiled code that auto picks here is "
+            f"still being compiled in the background; once it is ready auto runs {name}: {reason}"
+        )
+        name, chosen, path = FALLBACK, METHODS[FALLBACK], "scipy-fallback"
     # compiling (first use in this process, or after a change) happens before the clock starts
     before = time.perf_counter()
-    chosen.prepare(system)
-    if estimate:
-        METHODS["DOP853-compiled"].prepare(system)
+    if path != "scipy-fallback":
+        chosen.prepare(system)
+        if estimate:
+            METHODS["DOP853-compiled"].prepare(system)
     compile_seconds = time.perf_counter() - before
     deadline = time.perf_counter() + wall_seconds
 
@@ -106,12 +123,19 @@ def simulate(
         )
     if not trajectory.complete:
         warnings.append(trajectory.stop_reason)
-    result = estimate_error(system, problem, METHODS[name], trajectory, stiff, warnings) if estimate else None
-    return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds)
+    compiled = path != "scipy-fallback"
+    result = estimate_error(system, problem, METHODS[name], trajectory, stiff, warnings, compiled) if estimate else None
+    return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds, path)
 
 
 def estimate_error(
-    system: NumericSystem, problem: Problem, method, trajectory: Trajectory, stiff: bool, warnings: list[str]
+    system: NumericSystem,
+    problem: Problem,
+    method,
+    trajectory: Trajectory,
+    stiff: bool,
+    warnings: list[str],
+    compiled: bool = True,
 ) -> Estimate | None:
     """Run the reference (see ``estimate``) in what is left of the budget and compare."""
     if isinstance(method, FixedStep):
@@ -121,7 +145,7 @@ def estimate_error(
             f"{method.name} with half the step (h = {trajectory.step_size / 2:.3g} s), Richardson factor {factor:.3g}"
         )
     else:
-        ref_name, ref_problem = reference_problem(problem, stiff)
+        ref_name, ref_problem = reference_problem(problem, stiff, compiled)
         ref_problem.max_steps = _budget_for(ref_name)
         factor, options = 1.0, {}
         label = f"{ref_name} at rtol={ref_problem.rtol:.1e}, atol={float(ref_problem.atol.max()):.1e}"

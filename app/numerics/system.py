@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import threading
 from dataclasses import dataclass, field
+from functools import cached_property
 from types import ModuleType
 
 import numpy as np
@@ -36,11 +37,22 @@ class NumericSystem:
     def n(self) -> int:
         return len(self.coordinates)
 
+    @cached_property
+    def compiled_key(self) -> str:
+        return jit.source_key(jit.compiled_source(self._compiled_sources()))
+
+    def _compiled_sources(self) -> dict[str, str]:
+        return {k: self.sources[k] for k in ("rhs", "ham")}
+
+    def is_compiled(self) -> bool:
+        """True when ``compiled()`` would return at once (no numba compile or cache load)."""
+        return jit.ready(self.compiled_key)
+
     def compiled(self) -> ModuleType:
         """The numba module with ``rhs`` and ``ham`` (compiled or loaded from the disk cache once)."""
         with self._lock:
             if self._compiled is None:
-                self._compiled = jit.compiled_functions({k: self.sources[k] for k in ("rhs", "ham")})
+                self._compiled = jit.compiled_functions(self._compiled_sources())
             return self._compiled
 
     # The Python twins get lists of floats: plain float arithmetic is faster than numpy scalars, and a

@@ -36,6 +36,9 @@ _SLOTS = threading.BoundedSemaphore(max(2, os.cpu_count() or 2))
 # scipy's integrators loop in Python and hold the GIL for their whole run: one at a
 # time per process, so they cannot starve the compiled runs and pages served beside them.
 _PYTHON_LOOP = threading.BoundedSemaphore(1)
+# Set by ``start_warming`` (the server): while the background thread compiles, ``auto`` requests are
+# answered by scipy instead of waiting on numba; scripts and tests compile in line as before.
+ANSWER_WHILE_COMPILING = False
 
 
 class SimulationInput(Protocol):
@@ -198,7 +201,9 @@ def simulate_derivation(
         if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
             raise Busy("too many simulations are running at once; try again in a few seconds")
         try:
-            outcome = simulate(system, k, y0, t_end, samples, method, rtol, atol)
+            outcome = simulate(
+                system, k, y0, t_end, samples, method, rtol, atol, wait_for_compile=not ANSWER_WHILE_COMPILING
+            )
         finally:
             _SLOTS.release()
     finally:
@@ -226,6 +231,7 @@ def document(
     stats = {
         "method": outcome.method,
         "reason": outcome.reason,
+        "path": outcome.path,
         "steps": tr.steps,
         "rhs_evaluations": tr.rhs_evaluations,
         "wall_time_s": tr.wall_time_s,
@@ -267,22 +273,43 @@ def _finite(value: Any) -> Any:
 def warm_all() -> dict[str, float]:
     """Compile (or load from numba's disk cache) every kernel and every scene's right-hand sides.
 
-    Run in the background at start-up and at image build (``python -m app.service.simulation``), so
-    no request waits on the compiler; returns the seconds spent per item."""
-    from app.numerics.methods import METHODS
+    Run in the background at start-up and at image build (``python -m app.service.simulation``).
+    Order: every scene's numeric system, then the compiled DOP853 (what ``auto`` picks most
+    often, and the error reference) with each scene's right-hand sides, then the other compiled
+    kernels; a method is used the moment it is ready.  Returns the seconds spent per item."""
     from app.service.derivations import derivation, derivation_document
 
     spent: dict[str, float] = {}
-    for scene_id in SCENES:
+    start = time.perf_counter()
+    systems = [
+        COMPILED.get(scene_id, derivation(scene_id), derivation_document(scene_id).get("constraint_forces") or [])[0]
+        for scene_id in SCENES
+    ]
+    spent["numeric systems"] = time.perf_counter() - start
+    first = METHODS["DOP853-compiled"]
+    for method in (first, *(m for m in METHODS.values() if m.compiled and m is not first)):
         start = time.perf_counter()
-        system, _ = COMPILED.get(
-            scene_id, derivation(scene_id), derivation_document(scene_id).get("constraint_forces") or []
-        )
-        for method in METHODS.values():
-            if method.compiled and method.applicable(system) is None:
+        for system in systems:
+            if method.applicable(system) is None:
                 method.prepare(system)
-        spent[scene_id] = time.perf_counter() - start
+        spent[method.name] = time.perf_counter() - start
     return spent
+
+
+def start_warming() -> threading.Thread:
+    """The server's start: answer at once (scipy while compiling), derive and compile in the background."""
+    from app.service import derivations
+
+    global ANSWER_WHILE_COMPILING
+    ANSWER_WHILE_COMPILING = True
+
+    def warm() -> None:
+        derivations.warm_all()
+        warm_all()
+
+    thread = threading.Thread(target=warm, name="warm-up", daemon=True)
+    thread.start()
+    return thread
 
 
 def simulate_scene(scene_id: str, request: SimulationInput) -> dict[str, Any]:

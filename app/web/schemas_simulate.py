@@ -64,6 +64,10 @@ class SimulateRequest(BaseModel):
 class SimulateStats(BaseModel):
     method: str
     reason: str
+    path: str = Field(
+        description="'compiled' (a numba step loop), 'scipy' (a scipy method asked for or chosen) or "
+        "'scipy-fallback' (the server's compiled code was not ready yet, so scipy's DOP853 answered)."
+    )
     steps: int
     rhs_evaluations: int
     wall_time_s: float

@@ -135,3 +135,34 @@ def test_display_rounding_keeps_seven_significant_digits():
     expected = [0.0, -1.234568e-12, 3.141593, 98765.43, -2.333333e15]
     assert r[:5].tolist() == expected and [repr(v) for v in r[:5].tolist()] == [repr(v) for v in expected]
     assert np.isnan(r[5]) and r[6] == np.inf
+
+
+@pytest.mark.parametrize("scene_id", ["simple-pendulum", "spherical-pendulum"])
+def test_while_kernels_compile_scipy_answers_and_says_so(monkeypatch, scene_id):
+    """The server's state before its background thread has compiled anything: nothing is ready."""
+    import numpy as np
+
+    from app.numerics import jit
+
+    monkeypatch.setattr(simulation, "ANSWER_WHILE_COMPILING", True)
+    with monkeypatch.context() as m:
+        m.setattr(jit, "ready", lambda name: False)
+        fallback = simulation.simulate_scene(scene_id, request(t_end=3.0))
+    stats = fallback["stats"]
+    assert stats["path"] == "scipy-fallback" and stats["method"] == "DOP853"
+    assert "still being compiled" in stats["reason"] and stats["error_reference"].startswith("DOP853 at")
+    compiled = simulation.simulate_scene(scene_id, request(t_end=3.0))
+    assert compiled["stats"]["path"] == "compiled"
+    # the same motion within the two runs' error estimates
+    bound = stats["error_estimate"] + compiled["stats"]["error_estimate"]
+    for q in SCENES_COORDINATES[scene_id]:
+        assert np.max(np.abs(np.asarray(fallback["state"][q]) - compiled["state"][q])) <= 2 * bound + 1e-12
+
+
+SCENES_COORDINATES = {"simple-pendulum": ["theta"], "spherical-pendulum": ["theta", "phi"]}
+
+
+def test_scripts_without_a_server_compile_in_line(monkeypatch):
+    monkeypatch.setattr(simulation, "ANSWER_WHILE_COMPILING", False)
+    doc = simulation.simulate_scene("simple-pendulum", request(t_end=1.0))
+    assert doc["stats"]["path"] == "compiled"

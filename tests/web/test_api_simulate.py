@@ -149,3 +149,16 @@ def test_api_responses_are_gzipped_for_clients_that_accept_it(client):
     assert zipped.headers["content-encoding"] == "gzip" and "content-encoding" not in plain.headers
     assert zipped.json()["t"] == plain.json()["t"]
     assert int(zipped.headers["content-length"]) < len(plain.content) / 2
+
+
+def test_a_request_while_kernels_compile_is_answered_by_scipy(client, monkeypatch):
+    from app.numerics import jit
+    from app.service import simulation
+
+    monkeypatch.setattr(simulation, "ANSWER_WHILE_COMPILING", True)  # as the server's start-up sets it
+    monkeypatch.setattr(jit, "ready", lambda name: False)  # nothing compiled yet
+    response = client.post("/api/scenes/damped-pendulum/simulate", json={"initial": {}, "samples": 30})
+    assert response.status_code == 200, response.text
+    stats = response.json()["stats"]
+    assert stats["path"] == "scipy-fallback" and stats["method"] == "DOP853"
+    assert stats["error_estimate"] is not None and "still being compiled" in stats["reason"]

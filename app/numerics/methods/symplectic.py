@@ -63,6 +63,11 @@ class FixedStep(Method):
         super().prepare(system)
         CompiledDOP853().prepare(system)  # the pilot pass
 
+    def ready(self, system: NumericSystem) -> bool:
+        from app.numerics.methods.explicit import CompiledDOP853
+
+        return super().ready(system) and CompiledDOP853().ready(system)
+
     def pilot(self, problem: Problem) -> tuple[np.ndarray, np.ndarray, float]:
         """States along the motion and a first step size, from a quick compiled DOP853 pass."""
         from app.numerics.methods.explicit import CompiledDOP853
