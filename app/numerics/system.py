@@ -81,14 +81,21 @@ def _free(expr, symbols) -> bool:
     return not sp.sympify(expr).has(*symbols)
 
 
-def numeric_system(d: Derivation) -> NumericSystem:
-    """Generate (never simplify) the numeric functions of a derivation."""
+def generated_sources(d: Derivation) -> dict[str, str]:
+    """The generated scalar functions of a derivation, by name (rhs, ham, momenta, and jac when compact)."""
     names = Names.of(d)
-    table, eqs, en = d.table, d.equations, d.energetics
     sources = {"rhs": rhs_source(d, names), "ham": hamilton_source(d, names), "momenta": momenta_source(d, names)}
     jac = jacobian_source(d, names)
     if jac is not None:
         sources["jac"] = jac
+    return sources
+
+
+def numeric_system(d: Derivation, sources: dict[str, str] | None = None) -> NumericSystem:
+    """Generate (never simplify) the numeric functions of a derivation; ``sources`` when already generated
+    (``generated_sources`` of the same derivation, e.g. from a disk cache)."""
+    table, eqs, en = d.table, d.equations, d.energetics
+    sources = dict(sources) if sources is not None else generated_sources(d)
     mass_constant = all(_free(x, (*table.q, table.t)) for x in eqs.mass_matrix)
     forced = any(Q != 0 for Q in d.mechanics.Q)
     separable = (

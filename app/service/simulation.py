@@ -28,8 +28,9 @@ from app.numerics.errors import Busy, SimulationError
 from app.numerics.methods import METHODS
 from app.numerics.observables import Observables, build, summarize
 from app.numerics.simulate import simulate
-from app.numerics.system import NumericSystem, numeric_system
+from app.numerics.system import NumericSystem, generated_sources, numeric_system
 from app.scenes import SCENES, Scene
+from app.service.cache import JsonCache, source_fingerprint
 
 DEFAULT_T_END = 10.0
 _SLOTS = threading.BoundedSemaphore(max(2, os.cpu_count() or 2))
@@ -71,7 +72,10 @@ class _Compiled:
                 self.items.move_to_end(key)
                 return self.items[key]
             start = time.perf_counter()
-            system = numeric_system(d)
+            # a scene's generated sources come from the disk cache (keyed by the engine's, scenes' and
+            # numerics' source), so a new worker skips the code generation
+            sources = _SOURCES.get(key, lambda: generated_sources(d)) if key is not None else None
+            system = numeric_system(d, sources)
             key = key or system.key
             if key in self.items:
                 return self.items[key]
@@ -83,6 +87,7 @@ class _Compiled:
             return entry
 
 
+_SOURCES = JsonCache("generated-sources", source_fingerprint("engine", "scenes", "numerics"))
 COMPILED = _Compiled()
 
 
