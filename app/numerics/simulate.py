@@ -14,7 +14,10 @@ answers instead, for the run and the reference, and ``Outcome.path`` says so.
 
 from __future__ import annotations
 
+import os
+import threading
 import time
+from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -40,6 +43,46 @@ class Outcome:
     path: str = "compiled"  # "compiled", "scipy" (a scipy method was asked for or chosen), "scipy-fallback"
 
 FALLBACK = "DOP853"  # scipy's, on the generated scalar right-hand side: needs no compiler
+
+
+class _Cores:
+    """Busy threads of this module (runs and references) against the machine's cores: a reference
+    runs beside its run only while a core is free, since the compiled kernels release the GIL."""
+
+    def __init__(self) -> None:
+        self.count = os.cpu_count() or 1
+        self.busy = 0
+        self.lock = threading.Lock()
+
+    def take(self, force: bool = False) -> bool:
+        with self.lock:
+            if not force and self.busy >= self.count:
+                return False
+            self.busy += 1
+            return True
+
+    def give(self) -> None:
+        with self.lock:
+            self.busy -= 1
+
+
+CORES = _Cores()
+_AHEAD = ThreadPoolExecutor(max_workers=CORES.count, thread_name_prefix="reference")
+
+
+def _reference_ahead(problem: Problem) -> Future | None:
+    """Start the compiled DOP853 reference of a non-stiff adaptive run in another thread, if a core is free."""
+    if not CORES.take():
+        return None
+    name, tight = reference_problem(problem, stiff=False, compiled=True)
+    tight.max_steps = _budget_for(name)
+    try:
+        future = _AHEAD.submit(METHODS[name].integrate, tight)
+    except RuntimeError:  # the interpreter is shutting down
+        CORES.give()
+        return None
+    future.add_done_callback(lambda _: CORES.give())
+    return future
 
 
 def _budget_for(method_name: str) -> int:
@@ -105,7 +148,14 @@ def simulate(
 
     problem = Problem(system, k, y0, t, rtol, atol_vector, bounds(system, y0), deadline, _budget_for(name))
     options = {"stop_on_stiff": True} if method == "auto" and name == "DOP853-compiled" else {}
-    trajectory = chosen.integrate(problem, **options)
+    # the reference of a non-stiff adaptive compiled run does not depend on the run: start it now
+    adaptive = path == "compiled" and not isinstance(chosen, FixedStep)
+    ahead = _reference_ahead(problem) if estimate and adaptive and not analysis.stiff else None
+    CORES.take(force=True)
+    try:
+        trajectory = chosen.integrate(problem, **options)
+    finally:
+        CORES.give()
     stiff = analysis.stiff
     if trajectory.stiff_detected and not trajectory.complete and options:
         # DOP853 found h |lambda| at its stability limit for 15 steps in a row: switch to Radau
@@ -113,7 +163,7 @@ def simulate(
             f"; but DOP853 detected stiffness at t = {trajectory.t_reached:.4g} s (step size held at its "
             "stability limit), so the run was redone with the implicit Radau method"
         )
-        name, stiff = "Radau", True
+        name, stiff, ahead = "Radau", True, None
         problem.max_steps = _budget_for(name)
         trajectory = METHODS[name].integrate(problem)
     elif trajectory.stiff_detected:
@@ -124,7 +174,11 @@ def simulate(
     if not trajectory.complete:
         warnings.append(trajectory.stop_reason)
     compiled = path != "scipy-fallback"
-    result = estimate_error(system, problem, METHODS[name], trajectory, stiff, warnings, compiled) if estimate else None
+    result = (
+        estimate_error(system, problem, METHODS[name], trajectory, stiff, warnings, compiled, ahead)
+        if estimate
+        else None
+    )
     return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds, path)
 
 
@@ -136,6 +190,7 @@ def estimate_error(
     stiff: bool,
     warnings: list[str],
     compiled: bool = True,
+    ahead: Future | None = None,
 ) -> Estimate | None:
     """Run the reference (see ``estimate``) in what is left of the budget and compare."""
     if isinstance(method, FixedStep):
@@ -150,7 +205,8 @@ def estimate_error(
         factor, options = 1.0, {}
         label = f"{ref_name} at rtol={ref_problem.rtol:.1e}, atol={float(ref_problem.atol.max()):.1e}"
     try:
-        reference = METHODS[ref_name].integrate(ref_problem, **options)
+        # the same run, already started beside the main one (see _reference_ahead)
+        reference = ahead.result() if ahead is not None else METHODS[ref_name].integrate(ref_problem, **options)
     except TooMuchWork:
         warnings.append("no error estimate: the reference run did not fit in the time budget")
         return None
