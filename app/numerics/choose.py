@@ -23,7 +23,10 @@ eigenvalues lambda_i and eigenvectors v_i:
   so the energy level alone decides on which side of the separatrix it goes):
   a symplectic method (Yoshida-4 when H separates, else Gauss-Legendre) keeps
   the energy error bounded instead of letting it drift;
-* otherwise the compiled DOP853 (high order, adaptive, cheapest per digit).
+* otherwise the compiled DOP853 (high order, adaptive, and it detects
+  stiffness that appears on the way).  The compiled Vern8 was within about
+  10 % of it at equal error on the chapter's pendulums (benchmarks/bench_cyrk.py),
+  not a clear enough win to give up that detection.
 
 A stiff problem whose fast mode *is* excited must resolve that mode whatever
 the method, so it is treated as non-stiff (explicit or symplectic).
@@ -154,5 +157,6 @@ def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
     if a.spectral_radius > STIFF_RATIO * a.slow_rate:
         excited = f" (the fast mode, |λ| = {a.spectral_radius:.3g}/s, is excited, so it must be resolved)"
     return "DOP853-compiled", (
-        f"non-stiff{excited}: the explicit 8th-order DOP853 with a compiled step loop is the cheapest per digit"
+        f"non-stiff{excited}: the explicit 8th-order DOP853 with a compiled step loop, which watches for stiffness "
+        "on the way (and hands over to Radau if it appears)"
     )
