@@ -21,6 +21,8 @@ from collections.abc import Callable
 from types import ModuleType
 
 import numpy
+from numba.core.types.function_type import WrapperAddressProtocol
+from numba.experimental.function_type import _get_wrapper_address
 
 from app.numerics.paths import generated_dir
 
@@ -47,6 +49,25 @@ def mark_ready(name: str) -> None:
 
 def ready(name: str) -> bool:
     return name in _ready
+
+
+class Bound(WrapperAddressProtocol):
+    """A compiled generated function as a first-class function argument of the kernels, resolved once.
+
+    Handing numba a dispatcher makes it look up the function's wrapper address at
+    every Python-to-kernel call (hundreds of microseconds); this object hands over the
+    address found once, per system and function."""
+
+    def __init__(self, dispatcher, signature):
+        self.dispatcher = dispatcher  # keeps the compiled code alive
+        self.sig = signature
+        self.address = _get_wrapper_address(dispatcher, signature)
+
+    def __wrapper_address__(self) -> int:
+        return self.address
+
+    def signature(self):
+        return self.sig
 
 
 def python_functions(sources: dict[str, str]) -> dict[str, Callable]:

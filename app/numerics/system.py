@@ -32,6 +32,7 @@ class NumericSystem:
     periodic: tuple[bool, ...] = ()  # coordinates that are angles: F(q + 2 pi e_i) = F(q)
     _compiled: ModuleType | None = field(default=None, repr=False)
     _lock: threading.Lock = field(default_factory=threading.Lock, repr=False)
+    _bound: dict = field(default_factory=dict, repr=False)
 
     @property
     def n(self) -> int:
@@ -54,6 +55,18 @@ class NumericSystem:
             if self._compiled is None:
                 self._compiled = jit.compiled_functions(self._compiled_sources())
             return self._compiled
+
+    def bound(self, name: str) -> jit.Bound:
+        """``rhs`` or ``ham`` compiled, ready to hand to a kernel (the address looked up once per system)."""
+        with self._lock:
+            found = self._bound.get(name)
+        if found is None:
+            from app.numerics.kernels.common import RHS_SIG
+
+            found = jit.Bound(getattr(self.compiled(), name), RHS_SIG)
+            with self._lock:
+                self._bound[name] = found
+        return found
 
     # The Python twins get lists of floats: plain float arithmetic is faster than numpy scalars, and a
     # division by zero raises ZeroDivisionError instead of warning and returning inf.

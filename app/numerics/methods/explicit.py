@@ -18,7 +18,7 @@ class CompiledDOP853(Method):
     def _run(self, problem: Problem, stop_on_stiff: bool = False) -> Trajectory:
         from app.numerics.kernels import dop853
 
-        rhs = problem.system.compiled().rhs
+        rhs = problem.system.bound("rhs")
         y = problem.y0.astype(float).copy()
         fy = np.empty_like(y)
         st = np.zeros(dop853.STATE_SIZE)
@@ -58,7 +58,7 @@ class CompiledVern8(Method):
     def _run(self, problem: Problem) -> Trajectory:
         from app.numerics.kernels import vern8
 
-        rhs = problem.system.compiled().rhs
+        rhs = problem.system.bound("rhs")
         y = problem.y0.astype(float).copy()
         fy = np.empty_like(y)
         st = np.zeros(vern8.STATE_SIZE)
