@@ -21,6 +21,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import urllib.error
 import urllib.request
 from pathlib import Path
 
@@ -73,8 +74,13 @@ def run_server(cache: Path, label: str) -> None:
             path = f"{doc['stats']['path']} ({doc['stats']['method']})"
             print(f"| simulate {sid} | {latency:.2f} | {time.perf_counter() - ready:.2f} | {path} |")
         for sid in REPORTS:
-            latency, _ = _request(f"{base}/api/scenes/{sid}/work-precision", timeout=600.0)
-            print(f"| work-precision {sid} | {latency:.2f} | {time.perf_counter() - ready:.2f} | |")
+            start = time.perf_counter()
+            try:
+                latency, _ = _request(f"{base}/api/scenes/{sid}/work-precision", timeout=600.0)
+                note = ""
+            except urllib.error.HTTPError as exc:
+                latency, note = time.perf_counter() - start, f"HTTP {exc.code}: {exc.read()[:200].decode()}"
+            print(f"| work-precision {sid} | {latency:.2f} | {time.perf_counter() - ready:.2f} | {note} |")
         pending = list(SCENES)
         while pending:
             latency, doc = _request(f"{base}/api/scenes/{pending[0]}/simulate", {"initial": {}})
