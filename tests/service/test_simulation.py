@@ -166,3 +166,25 @@ def test_scripts_without_a_server_compile_in_line(monkeypatch):
     monkeypatch.setattr(simulation, "ANSWER_WHILE_COMPILING", False)
     doc = simulation.simulate_scene("simple-pendulum", request(t_end=1.0))
     assert doc["stats"]["path"] == "compiled"
+
+
+def test_reference_run_beside_the_run_gives_the_same_estimate(monkeypatch):
+    from app.numerics import simulate as numerics_simulate
+
+    started = []
+    original = numerics_simulate._reference_ahead
+
+    def spy(problem):
+        future = original(problem)
+        started.append(future is not None)
+        return future
+
+    monkeypatch.setattr(numerics_simulate, "_reference_ahead", spy)
+    monkeypatch.setattr(numerics_simulate, "_machine_load", lambda: 0.0)
+    monkeypatch.setattr(numerics_simulate.CORES, "count", 2)
+    beside = simulation.simulate_scene("spherical-pendulum", request(t_end=3.0))
+    monkeypatch.setattr(numerics_simulate.CORES, "count", 1)  # no free core: the reference runs after
+    after = simulation.simulate_scene("spherical-pendulum", request(t_end=3.0))
+    assert started == [True, False]
+    assert beside["stats"]["error_estimate"] == after["stats"]["error_estimate"]
+    assert beside["stats"]["error_reference"] == after["stats"]["error_reference"]
