@@ -2,31 +2,27 @@
 
 from __future__ import annotations
 
-import threading
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 
 from fastapi import FastAPI
 
-from app.service import derivations, simulation
+from app.service import simulation
 from app.web import api_scenes, errors, pages
 from app.web.api_check import router as check_router
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
 from app.web.playground import router as playground_router
+from app.web.responses import ApiGzip
 from app.web.templating import static_app
 
 
 @asynccontextmanager
 async def lifespan(app: FastAPI) -> AsyncIterator[None]:
     # Fill the derivation cache, then load the compiled integrators and the scenes'
-    # right-hand sides, in the background: the server answers at once, and a request
-    # for a scene not yet ready waits only for that scene.
-    def warm() -> None:
-        derivations.warm_all()
-        simulation.warm_all()
-
-    threading.Thread(target=warm, name="warm-up", daemon=True).start()
+    # right-hand sides, in the background: the server answers at once, with scipy
+    # while a compiled integrator is not ready yet.
+    simulation.start_warming()
     yield
 
 
@@ -37,6 +33,7 @@ app = FastAPI(
     lifespan=lifespan,
 )
 errors.install(app)
+app.add_middleware(ApiGzip)
 
 ROUTERS = [api_scenes.router, pages.router, user_router, simulate_router, playground_router, check_router]
 app.mount("/static", static_app, name="static")

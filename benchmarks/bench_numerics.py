@@ -10,7 +10,8 @@ max_k |q_k(t_end) - q_k,ref(t_end)| is at most 1e-8; the time is the minimum of 
 reference is exact for the pendulum (Jacobi elliptic functions, mpmath) and for the double pendulum
 the compiled DOP853 at rtol 1e-13, checked against Gauss-Legendre.  Goal: ratio >= 100 on each.
 
-Also printed: the cost of one right-hand-side call (cse'd scalar code vs lambdify), and the energy
+Also printed: CyRK's DOP853, Vern7 and Vern8 side by side with our DOP853 and Vern8 kernels and the
+default path, at the same error, against the floor of bare right-hand-side calls (bench_cyrk); the cost of one right-hand-side call (cse'd scalar code vs lambdify), and the energy
 error of the symplectic path against DOP853 over 10^4 pendulum periods, decade by decade.
 
     .venv/bin/python -m benchmarks.bench_numerics
@@ -179,6 +180,11 @@ def main() -> None:
     rhs_call_costs(dp, kd, yd)
 
     energy_decades()
+
+    # our kernels and default path against CyRK's C++ integrators at the same error (benchmarks/bench_cyrk.py)
+    from benchmarks import bench_cyrk
+
+    bench_cyrk.main()
 
 
 if __name__ == "__main__":

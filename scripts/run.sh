@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# Set up (idempotent) and serve the app on http://127.0.0.1:8000.
-# HOST, PORT and WORKERS may be set in the environment.
+# Serve the app on http://127.0.0.1:8000, setting up first only when needed: on
+# a fresh clone, or when the dependency lists or set-up scripts changed since
+# the last set-up (scripts/stamp.sh).  HOST, PORT and WORKERS may be set.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh
-# The app derives the chapter and loads its compiled integrators in the background
-# at start-up (cached on disk after the first run); `python -m app.service.warm`
-# also precomputes the work-precision reports, as the Docker image does at build.
+if [ ! -x .venv/bin/uvicorn ] || [ ! -d static/vendor ] \
+    || [ "$(cat .cache/setup.stamp 2>/dev/null)" != "$(scripts/stamp.sh)" ]; then
+    scripts/setup.sh
+fi
+# The app loads the chapter's derivations and compiled integrators in the background
+# at start-up (from the caches set-up filled) and answers with scipy meanwhile.
 exec .venv/bin/uvicorn app.main:app --host "${HOST:-127.0.0.1}" --port "${PORT:-8000}" \
     --workers "${WORKERS:-1}" --timeout-keep-alive 75

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Set up the app on a fresh machine: a virtual environment with the Python
-# packages, and the front-end libraries (KaTeX, plotly.js) from npm, copied
-# into static/vendor so the app serves them itself (no CDN, works offline).
+# packages, the front-end libraries (KaTeX, plotly.js) from npm, copied into
+# static/vendor so the app serves them itself (no CDN, works offline), and the
+# caches a first request would otherwise wait for (derivations, numba's
+# compiled kernels, the work-precision reports).  Idempotent.
 # Usage: scripts/setup.sh [dev]   ("dev" adds the test tools)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,3 +20,6 @@ else
 fi
 
 scripts/assets.sh
+.venv/bin/python -m app.service.warm
+mkdir -p .cache
+scripts/stamp.sh > .cache/setup.stamp

@@ -24,6 +24,9 @@ from app.engine.budget import pythagoras
 from app.engine.errors import DerivationError
 from app.engine.mechanics import Mechanics
 
+# Closed forms by Cramer's rule up to this many coordinates; LU elimination beyond.
+CRAMER_MAX = 2
+
 
 @dataclass(frozen=True)
 class Equations:
@@ -86,12 +89,13 @@ def euler_lagrange(mech: Mechanics) -> Equations:
     # f = -E|_{q_ddot = 0}, so that M q_ddot = f
     zero_acc = dict.fromkeys(qdd, sp.Integer(0))
     forcing = sp.Matrix([-sp.expand(r).xreplace(zero_acc) for r in residuals])
-    if M.shape[0] <= 3:
+    if M.shape[0] <= CRAMER_MAX:
         # Cramer's rule, q_ddot = adj(M) f / det M, with sin² + cos² = 1 collected:
         # compact closed forms that display without further simplification
         det = sp.factor_terms(pythagoras(M.det(method="berkowitz")))
         solved = [sp.factor_terms(sp.expand(x)) / det for x in M.adjugate() * forcing]
     else:
-        # q_ddot = M^-1 f
+        # q_ddot = M^-1 f by LU elimination, untidied: a 3x3 adjugate tidied term by term cost more
+        # than the whole 4-coordinate elimination (the display tidies what it shows, in its own budget)
         solved = list(M.LUsolve(forcing))
     return Equations(dL_dq, momenta, ddt, residuals, M, forcing, tuple(solved))

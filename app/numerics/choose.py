@@ -1,7 +1,8 @@
 """``auto``: pick a method per system and request, and say why.
 
-The decision uses the linearisation at the start, J = dF/dy by central
-differences, with eigenvalues lambda_i and eigenvectors v_i:
+The decision uses the linearisation at the start, J = dF/dy (the engine's
+generated Jacobian, or central differences where none is generated), with
+eigenvalues lambda_i and eigenvectors v_i:
 
 * stiff: the fastest rate |lambda|_max exceeds the slow rates (the rest of the
   spectrum, or 1 / t_end) by more than ``STIFF_RATIO``, and the fast modes are
@@ -22,7 +23,10 @@ differences, with eigenvalues lambda_i and eigenvectors v_i:
   so the energy level alone decides on which side of the separatrix it goes):
   a symplectic method (Yoshida-4 when H separates, else Gauss-Legendre) keeps
   the energy error bounded instead of letting it drift;
-* otherwise the compiled DOP853 (high order, adaptive, cheapest per digit).
+* otherwise the compiled DOP853 (high order, adaptive, and it detects
+  stiffness that appears on the way).  The compiled Vern8 was within about
+  10 % of it at equal error on the chapter's pendulums (benchmarks/bench_cyrk.py),
+  not a clear enough win to give up that detection.
 
 A stiff problem whose fast mode *is* excited must resolve that mode whatever
 the method, so it is treated as non-stiff (explicit or symplectic).
@@ -64,7 +68,10 @@ class Analysis:
 
 
 def jacobian(system: NumericSystem, t: float, y: np.ndarray, k: np.ndarray) -> np.ndarray:
-    """dF/dy by central differences (step ~ eps^(1/3) |y_j|)."""
+    """dF/dy: the engine's expressions differentiated (one call), else central differences (step ~ eps^(1/3) |y_j|)."""
+    exact = system.jacobian(t, y, k)
+    if exact is not None:
+        return exact
     m = y.size
     J = np.empty((m, m))
     for j in range(m):
@@ -150,5 +157,6 @@ def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
     if a.spectral_radius > STIFF_RATIO * a.slow_rate:
         excited = f" (the fast mode, |λ| = {a.spectral_radius:.3g}/s, is excited, so it must be resolved)"
     return "DOP853-compiled", (
-        f"non-stiff{excited}: the explicit 8th-order DOP853 with a compiled step loop is the cheapest per digit"
+        f"non-stiff{excited}: the explicit 8th-order DOP853 with a compiled step loop, which watches for stiffness "
+        "on the way (and hands over to Radau if it appears)"
     )

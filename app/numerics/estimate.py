@@ -2,8 +2,8 @@
 
     error_estimate = max over samples and coordinates of |q_run(t) - q_ref(t)| * factor
 
-* adaptive methods: the reference is the compiled DOP853 (Radau when the
-  problem is stiff) at a thousand times tighter tolerances (for Radau, rtol
+* adaptive methods: the reference is the compiled DOP853 (scipy's while the
+  kernels compile; Radau when the problem is stiff) at a thousand times tighter tolerances (for Radau, rtol
   only), factor 1.  With
   errors roughly proportional to the tolerance the reference's own error is
   about 1/1000 of the run's, so the difference is the run's error.
@@ -38,10 +38,11 @@ class Estimate:
     reference: str
 
 
-def reference_problem(problem: Problem, stiff: bool) -> tuple[str, Problem]:
+def reference_problem(problem: Problem, stiff: bool, compiled: bool = True) -> tuple[str, Problem]:
     """The tighter run.  For a stiff problem atol stays: tightening it would make round-off-sized
-    wiggles of the fast mode (which the run rightly ignores) count, and force Radau to resolve them."""
-    method = "Radau" if stiff else "DOP853-compiled"
+    wiggles of the fast mode (which the run rightly ignores) count, and force Radau to resolve them.
+    ``compiled=False`` (kernels not compiled yet) takes scipy's DOP853 for the compiled one."""
+    method = "Radau" if stiff else ("DOP853-compiled" if compiled else "DOP853")
     atol = problem.atol if stiff else np.maximum(problem.atol * TIGHTER, REFERENCE_ATOL_MIN)
     tight = Problem(**{**problem.__dict__, "rtol": max(problem.rtol * TIGHTER, REFERENCE_RTOL_MIN), "atol": atol})
     return method, tight

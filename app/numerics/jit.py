@@ -21,6 +21,8 @@ from collections.abc import Callable
 from types import ModuleType
 
 import numpy
+from numba.core.types.function_type import WrapperAddressProtocol
+from numba.experimental.function_type import _get_wrapper_address
 
 from app.numerics.paths import generated_dir
 
@@ -36,6 +38,37 @@ from app.numerics.kernels.common import JIT, RHS_SIG
 _lock = threading.Lock()
 _modules: dict[str, ModuleType] = {}
 
+# What is compiled (or loaded from numba's disk cache) in this process: kernel module names and
+# generated-source keys.  A server that must not wait on the compiler asks before it runs.
+_ready: set[str] = set()
+
+
+def mark_ready(name: str) -> None:
+    _ready.add(name)
+
+
+def ready(name: str) -> bool:
+    return name in _ready
+
+
+class Bound(WrapperAddressProtocol):
+    """A compiled generated function as a first-class function argument of the kernels, resolved once.
+
+    Handing numba a dispatcher makes it look up the function's wrapper address at
+    every Python-to-kernel call (hundreds of microseconds); this object hands over the
+    address found once, per system and function."""
+
+    def __init__(self, dispatcher, signature):
+        self.dispatcher = dispatcher  # keeps the compiled code alive
+        self.sig = signature
+        self.address = _get_wrapper_address(dispatcher, signature)
+
+    def __wrapper_address__(self) -> int:
+        return self.address
+
+    def signature(self):
+        return self.sig
+
 
 def python_functions(sources: dict[str, str]) -> dict[str, Callable]:
     """Execute generated source (our own printer's output, never user text) as plain Python."""
@@ -49,9 +82,13 @@ def source_key(text: str) -> str:
     return hashlib.sha256(text.encode()).hexdigest()[:20]
 
 
+def compiled_source(sources: dict[str, str]) -> str:
+    return HEADER + "".join(f"\n\n@njit(RHS_SIG, **JIT)\n{source}" for source in sources.values())
+
+
 def compiled_functions(sources: dict[str, str]) -> ModuleType:
     """numba versions of the generated scalar functions, from the on-disk cache when present."""
-    text = HEADER + "".join(f"\n\n@njit(RHS_SIG, **JIT)\n{source}" for source in sources.values())
+    text = compiled_source(sources)
     key = source_key(text)
     with _lock:
         if key in _modules:
@@ -69,4 +106,5 @@ def compiled_functions(sources: dict[str, str]) -> ModuleType:
         sys.modules[name] = module
         spec.loader.exec_module(module)
         _modules[key] = module
+        mark_ready(key)
         return module

@@ -3,14 +3,21 @@
 Order of work: analyse the start (stiffness, time scales), choose, run the
 method (switching to Radau if ``auto``'s DOP853 meets stiffness on the way),
 run the reference for the error estimate, compare.  Everything shares one
-deadline.  The main run exceeding
-it is an error (too much work); the reference exceeding it only costs the
-estimate, with a warning.
+deadline.  The main run exceeding it is an error (too much work); the
+reference exceeding it only costs the estimate, with a warning.
+
+A server passes ``wait_for_compile=False``: when ``auto`` picks a compiled
+method whose numba code is not ready in this process yet (a background thread
+is compiling it), scipy's DOP853 on the generated scalar right-hand side
+answers instead, for the run and the reference, and ``Outcome.path`` says so.
 """
 
 from __future__ import annotations
 
+import os
+import threading
 import time
+from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -33,6 +40,59 @@ class Outcome:
     estimate: Estimate | None
     warnings: list[str] = field(default_factory=list)
     compile_seconds: float = 0.0
+    path: str = "compiled"  # "compiled", "scipy" (a scipy method was asked for or chosen), "scipy-fallback"
+
+FALLBACK = "DOP853"  # scipy's, on the generated scalar right-hand side: needs no compiler
+
+
+def _machine_load() -> float:
+    try:
+        return os.getloadavg()[0]
+    except (AttributeError, OSError):  # no load average on this platform: count only our own threads
+        return 0.0
+
+
+class _Cores:
+    """Busy threads of this module (runs and references) against the machine's cores: a reference
+    runs beside its run only while a core is free, since the compiled kernels release the GIL.
+    A core is free when this module's threads leave one and the machine's load average (other
+    processes included) is below cores - 1: on a busy shared machine a second thread only adds
+    switching (measured: 4.0-6.1x /healthz instead of 2.9-4.0x at a load average of 7 on 2 cores)."""
+
+    def __init__(self) -> None:
+        self.count = os.cpu_count() or 1
+        self.busy = 0
+        self.lock = threading.Lock()
+
+    def take(self, force: bool = False) -> bool:
+        with self.lock:
+            if not force and (self.busy >= self.count or _machine_load() > self.count - 1):
+                return False
+            self.busy += 1
+            return True
+
+    def give(self) -> None:
+        with self.lock:
+            self.busy -= 1
+
+
+CORES = _Cores()
+_AHEAD = ThreadPoolExecutor(max_workers=CORES.count, thread_name_prefix="reference")
+
+
+def _reference_ahead(problem: Problem) -> Future | None:
+    """Start the compiled DOP853 reference of a non-stiff adaptive run in another thread, if a core is free."""
+    if not CORES.take():
+        return None
+    name, tight = reference_problem(problem, stiff=False, compiled=True)
+    tight.max_steps = _budget_for(name)
+    try:
+        future = _AHEAD.submit(METHODS[name].integrate, tight)
+    except RuntimeError:  # the interpreter is shutting down
+        CORES.give()
+        return None
+    future.add_done_callback(lambda _: CORES.give())
+    return future
 
 
 def _budget_for(method_name: str) -> int:
@@ -60,6 +120,7 @@ def simulate(
     atol: float = limits.ATOL_DEFAULT,
     wall_seconds: float | None = None,
     estimate: bool = True,
+    wait_for_compile: bool = True,
 ) -> Outcome:
     wall_seconds = limits.WALL_SECONDS if wall_seconds is None else wall_seconds
     t = np.linspace(0.0, t_end, samples)
@@ -78,17 +139,33 @@ def simulate(
         raise SimulationError(f"method {name} cannot integrate this system: {why_not}", "method")
 
     warnings: list[str] = []
+    path = "compiled" if chosen.compiled else "scipy"
+    reference_ready = not estimate or METHODS["DOP853-compiled"].ready(system)
+    if method == "auto" and chosen.compiled and not wait_for_compile and not (chosen.ready(system) and reference_ready):
+        reason = (
+            f"scipy's {FALLBACK} (Python step loop) answered, because the compiled code that auto picks here is "
+            f"still being compiled in the background; once it is ready auto runs {name}: {reason}"
+        )
+        name, chosen, path = FALLBACK, METHODS[FALLBACK], "scipy-fallback"
     # compiling (first use in this process, or after a change) happens before the clock starts
     before = time.perf_counter()
-    chosen.prepare(system)
-    if estimate:
-        METHODS["DOP853-compiled"].prepare(system)
+    if path != "scipy-fallback":
+        chosen.prepare(system)
+        if estimate:
+            METHODS["DOP853-compiled"].prepare(system)
     compile_seconds = time.perf_counter() - before
     deadline = time.perf_counter() + wall_seconds
 
     problem = Problem(system, k, y0, t, rtol, atol_vector, bounds(system, y0), deadline, _budget_for(name))
     options = {"stop_on_stiff": True} if method == "auto" and name == "DOP853-compiled" else {}
-    trajectory = chosen.integrate(problem, **options)
+    # the reference of a non-stiff adaptive compiled run does not depend on the run: start it now
+    adaptive = path == "compiled" and not isinstance(chosen, FixedStep)
+    CORES.take(force=True)  # this run's own core
+    ahead = _reference_ahead(problem) if estimate and adaptive and not analysis.stiff else None
+    try:
+        trajectory = chosen.integrate(problem, **options)
+    finally:
+        CORES.give()
     stiff = analysis.stiff
     if trajectory.stiff_detected and not trajectory.complete and options:
         # DOP853 found h |lambda| at its stability limit for 15 steps in a row: switch to Radau
@@ -96,7 +173,7 @@ def simulate(
             f"; but DOP853 detected stiffness at t = {trajectory.t_reached:.4g} s (step size held at its "
             "stability limit), so the run was redone with the implicit Radau method"
         )
-        name, stiff = "Radau", True
+        name, stiff, ahead = "Radau", True, None
         problem.max_steps = _budget_for(name)
         trajectory = METHODS[name].integrate(problem)
     elif trajectory.stiff_detected:
@@ -106,12 +183,24 @@ def simulate(
         )
     if not trajectory.complete:
         warnings.append(trajectory.stop_reason)
-    result = estimate_error(system, problem, METHODS[name], trajectory, stiff, warnings) if estimate else None
-    return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds)
+    compiled = path != "scipy-fallback"
+    result = (
+        estimate_error(system, problem, METHODS[name], trajectory, stiff, warnings, compiled, ahead)
+        if estimate
+        else None
+    )
+    return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds, path)
 
 
 def estimate_error(
-    system: NumericSystem, problem: Problem, method, trajectory: Trajectory, stiff: bool, warnings: list[str]
+    system: NumericSystem,
+    problem: Problem,
+    method,
+    trajectory: Trajectory,
+    stiff: bool,
+    warnings: list[str],
+    compiled: bool = True,
+    ahead: Future | None = None,
 ) -> Estimate | None:
     """Run the reference (see ``estimate``) in what is left of the budget and compare."""
     if isinstance(method, FixedStep):
@@ -121,12 +210,13 @@ def estimate_error(
             f"{method.name} with half the step (h = {trajectory.step_size / 2:.3g} s), Richardson factor {factor:.3g}"
         )
     else:
-        ref_name, ref_problem = reference_problem(problem, stiff)
+        ref_name, ref_problem = reference_problem(problem, stiff, compiled)
         ref_problem.max_steps = _budget_for(ref_name)
         factor, options = 1.0, {}
         label = f"{ref_name} at rtol={ref_problem.rtol:.1e}, atol={float(ref_problem.atol.max()):.1e}"
     try:
-        reference = METHODS[ref_name].integrate(ref_problem, **options)
+        # the same run, already started beside the main one (see _reference_ahead)
+        reference = ahead.result() if ahead is not None else METHODS[ref_name].integrate(ref_problem, **options)
     except TooMuchWork:
         warnings.append("no error estimate: the reference run did not fit in the time budget")
         return None

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import threading
 from dataclasses import dataclass, field
+from functools import cached_property
 from types import ModuleType
 
 import numpy as np
@@ -31,17 +32,41 @@ class NumericSystem:
     periodic: tuple[bool, ...] = ()  # coordinates that are angles: F(q + 2 pi e_i) = F(q)
     _compiled: ModuleType | None = field(default=None, repr=False)
     _lock: threading.Lock = field(default_factory=threading.Lock, repr=False)
+    _bound: dict = field(default_factory=dict, repr=False)
 
     @property
     def n(self) -> int:
         return len(self.coordinates)
 
+    @cached_property
+    def compiled_key(self) -> str:
+        return jit.source_key(jit.compiled_source(self._compiled_sources()))
+
+    def _compiled_sources(self) -> dict[str, str]:
+        return {k: self.sources[k] for k in ("rhs", "ham")}
+
+    def is_compiled(self) -> bool:
+        """True when ``compiled()`` would return at once (no numba compile or cache load)."""
+        return jit.ready(self.compiled_key)
+
     def compiled(self) -> ModuleType:
         """The numba module with ``rhs`` and ``ham`` (compiled or loaded from the disk cache once)."""
         with self._lock:
             if self._compiled is None:
-                self._compiled = jit.compiled_functions({k: self.sources[k] for k in ("rhs", "ham")})
+                self._compiled = jit.compiled_functions(self._compiled_sources())
             return self._compiled
+
+    def bound(self, name: str) -> jit.Bound:
+        """``rhs`` or ``ham`` compiled, ready to hand to a kernel (the address looked up once per system)."""
+        with self._lock:
+            found = self._bound.get(name)
+        if found is None:
+            from app.numerics.kernels.common import RHS_SIG
+
+            found = jit.Bound(getattr(self.compiled(), name), RHS_SIG)
+            with self._lock:
+                self._bound[name] = found
+        return found
 
     # The Python twins get lists of floats: plain float arithmetic is faster than numpy scalars, and a
     # division by zero raises ZeroDivisionError instead of warning and returning inf.
@@ -69,14 +94,21 @@ def _free(expr, symbols) -> bool:
     return not sp.sympify(expr).has(*symbols)
 
 
-def numeric_system(d: Derivation) -> NumericSystem:
-    """Generate (never simplify) the numeric functions of a derivation."""
+def generated_sources(d: Derivation) -> dict[str, str]:
+    """The generated scalar functions of a derivation, by name (rhs, ham, momenta, and jac when compact)."""
     names = Names.of(d)
-    table, eqs, en = d.table, d.equations, d.energetics
     sources = {"rhs": rhs_source(d, names), "ham": hamilton_source(d, names), "momenta": momenta_source(d, names)}
     jac = jacobian_source(d, names)
     if jac is not None:
         sources["jac"] = jac
+    return sources
+
+
+def numeric_system(d: Derivation, sources: dict[str, str] | None = None) -> NumericSystem:
+    """Generate (never simplify) the numeric functions of a derivation; ``sources`` when already generated
+    (``generated_sources`` of the same derivation, e.g. from a disk cache)."""
+    table, eqs, en = d.table, d.equations, d.energetics
+    sources = dict(sources) if sources is not None else generated_sources(d)
     mass_constant = all(_free(x, (*table.q, table.t)) for x in eqs.mass_matrix)
     forced = any(Q != 0 for Q in d.mechanics.Q)
     separable = (

@@ -33,6 +33,17 @@ def source_fingerprint(*packages: str) -> str:
     return digest.hexdigest()[:16]
 
 
+def write_atomically(path: Path, data: bytes) -> None:
+    """Write then rename, so a reader never sees half a file; a read-only disk is no error."""
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        with tempfile.NamedTemporaryFile("wb", dir=path.parent, delete=False, suffix=".tmp") as handle:
+            handle.write(data)
+        os.replace(handle.name, path)
+    except OSError:
+        pass  # a read-only disk only costs a recomputation in the next process
+
+
 class JsonCache:
     """Memory and disk cache of JSON-serialisable results."""
 
@@ -67,11 +78,4 @@ class JsonCache:
 
     @staticmethod
     def _write(path: Path, value: Any) -> None:
-        # Write then rename, so a reader never sees half a file.
-        try:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            with tempfile.NamedTemporaryFile("w", dir=path.parent, delete=False, suffix=".tmp") as handle:
-                json.dump(value, handle)
-            os.replace(handle.name, path)
-        except OSError:
-            pass  # a read-only disk only costs a recomputation in the next process
+        write_atomically(path, json.dumps(value).encode())

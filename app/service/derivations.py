@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import pickle
 import threading
 from functools import cache
 from typing import Any
@@ -9,7 +10,7 @@ from typing import Any
 from app.engine.contract import derivation_json, parameters_json
 from app.engine.derive import Derivation, derive
 from app.scenes import SCENES, Scene
-from app.service.cache import JsonCache, source_fingerprint
+from app.service.cache import JsonCache, cache_dir, source_fingerprint, write_atomically
 
 
 class UnknownScene(KeyError):
@@ -32,18 +33,33 @@ def scene(scene_id: str) -> Scene:
         raise UnknownScene(scene_id) from None
 
 
-_derive_lock = threading.Lock()
+_guard = threading.Lock()
+_locks: dict[str, threading.Lock] = {}
+
+
+def _object_path(scene_id: str):
+    return cache_dir() / "derivation-objects" / f"{scene_id}-{_json_cache.fingerprint}.pickle"
 
 
 @cache
 def _derivation(scene_id: str) -> Derivation:
-    return derive(SCENES[scene_id].system)
+    # The SymPy objects themselves, pickled by this program into its own cache folder (keyed by the
+    # engine's and scenes' source), so a new worker loads the chapter in milliseconds instead of deriving it.
+    path = _object_path(scene_id)
+    try:
+        return pickle.loads(path.read_bytes())
+    except Exception:  # absent, or written by another version of SymPy: derive again
+        d = derive(SCENES[scene_id].system)
+        write_atomically(path, pickle.dumps(d, protocol=pickle.HIGHEST_PROTOCOL))
+        return d
 
 
 def derivation(scene_id: str) -> Derivation:
-    """The SymPy derivation of a scene (memory-cached per process)."""
+    """The SymPy derivation of a scene (memory- and disk-cached; one lock per scene)."""
     scene(scene_id)
-    with _derive_lock:
+    with _guard:
+        lock = _locks.setdefault(scene_id, threading.Lock())
+    with lock:
         return _derivation(scene_id)
 
 
@@ -68,8 +84,9 @@ def scene_summary(s: Scene) -> dict[str, Any]:
 
 
 def warm_all() -> None:
-    """Compute (or load) every scene's derivation: run at start-up and at image build."""
+    """Compute (or load) every scene's derivation and its document: run at start-up and at image build."""
     for scene_id in SCENES:
+        derivation(scene_id)
         derivation_document(scene_id)
 
 

@@ -28,14 +28,18 @@ from app.numerics.errors import Busy, SimulationError
 from app.numerics.methods import METHODS
 from app.numerics.observables import Observables, build, summarize
 from app.numerics.simulate import simulate
-from app.numerics.system import NumericSystem, numeric_system
+from app.numerics.system import NumericSystem, generated_sources, numeric_system
 from app.scenes import SCENES, Scene
+from app.service.cache import JsonCache, source_fingerprint
 
 DEFAULT_T_END = 10.0
 _SLOTS = threading.BoundedSemaphore(max(2, os.cpu_count() or 2))
 # scipy's integrators loop in Python and hold the GIL for their whole run: one at a
 # time per process, so they cannot starve the compiled runs and pages served beside them.
 _PYTHON_LOOP = threading.BoundedSemaphore(1)
+# Set by ``start_warming`` (the server): while the background thread compiles, ``auto`` requests are
+# answered by scipy instead of waiting on numba; scripts and tests compile in line as before.
+ANSWER_WHILE_COMPILING = False
 
 
 class SimulationInput(Protocol):
@@ -48,6 +52,7 @@ class SimulationInput(Protocol):
     rtol: float | None
     atol: float | None
     samples: int | None
+    precision: str  # "full" or "display" (absent means full)
 
 
 class _Compiled:
@@ -67,7 +72,10 @@ class _Compiled:
                 self.items.move_to_end(key)
                 return self.items[key]
             start = time.perf_counter()
-            system = numeric_system(d)
+            # a scene's generated sources come from the disk cache (keyed by the engine's, scenes' and
+            # numerics' source), so a new worker skips the code generation
+            sources = _SOURCES.get(key, lambda: generated_sources(d)) if key is not None else None
+            system = numeric_system(d, sources)
             key = key or system.key
             if key in self.items:
                 return self.items[key]
@@ -79,6 +87,7 @@ class _Compiled:
             return entry
 
 
+_SOURCES = JsonCache("generated-sources", source_fingerprint("engine", "scenes", "numerics"))
 COMPILED = _Compiled()
 
 
@@ -134,8 +143,30 @@ def _setting(value: Any, default: float, low: float, high: float, where: str) ->
     return value
 
 
-def _series(values: np.ndarray) -> list[float | None]:
-    return [float(v) if math.isfinite(v) else None for v in values.tolist()]
+# Significant digits of the series in a "display" document: a plot or a readout needs far fewer
+# than the 17 of a double, and short numbers make the response about half the size.
+DISPLAY_DIGITS = 7
+
+
+def display_rounded(values: np.ndarray, digits: int = DISPLAY_DIGITS) -> np.ndarray:
+    """Each finite x rounded to ``digits`` significant digits (0, NaN and Infinity unchanged).
+
+    With e = floor(log10 |x|), x = round(x 10^s) 10^-s for s = digits - 1 - e.  The power of ten is
+    applied as an exact multiplier or divisor (10^|s| is exact up to 10^22), so the result is the
+    double nearest the rounded decimal and prints with at most ``digits`` digits."""
+    out = np.array(values, dtype=float)
+    finite = np.isfinite(out) & (out != 0.0)
+    x = out[finite]
+    shift = digits - 1 - np.floor(np.log10(np.abs(x)))
+    power = 10.0 ** np.abs(shift)
+    out[finite] = np.where(shift >= 0, np.round(x * power) / power, np.round(x / power) * power)
+    return out
+
+
+def _series(values: np.ndarray, precision: str = "full") -> np.ndarray:
+    """A series as the document carries it: a float array (orjson writes NaN and Infinity as null)."""
+    values = np.ascontiguousarray(values, dtype=float)
+    return display_rounded(values) if precision == "display" else values
 
 
 def simulate_derivation(
@@ -175,31 +206,37 @@ def simulate_derivation(
         if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
             raise Busy("too many simulations are running at once; try again in a few seconds")
         try:
-            outcome = simulate(system, k, y0, t_end, samples, method, rtol, atol)
+            outcome = simulate(
+                system, k, y0, t_end, samples, method, rtol, atol, wait_for_compile=not ANSWER_WHILE_COMPILING
+            )
         finally:
             _SLOTS.release()
     finally:
         if python_loop:
             _PYTHON_LOOP.release()
-    return document(system, observables, outcome, k, rtol)
+    return document(system, observables, outcome, k, rtol, getattr(request, "precision", None) or "full")
 
 
-def document(system: NumericSystem, observables: Observables, outcome, k: np.ndarray, rtol: float) -> dict[str, Any]:
+def document(
+    system: NumericSystem, observables: Observables, outcome, k: np.ndarray, rtol: float, precision: str = "full"
+) -> dict[str, Any]:
+    """The result document; ``precision="display"`` rounds the series (never ``stats``) to DISPLAY_DIGITS."""
     tr = outcome.trajectory
     n = system.n
     values = observables.evaluate(tr.t, tr.y, k)
     summary = summarize(observables, tr.t, values, rtol)
     warnings = [*outcome.warnings, *summary.pop("warnings")]
-    state: dict[str, list] = {}
+    state: dict[str, np.ndarray] = {}
     for i, q in enumerate(system.coordinates):
-        state[q] = _series(tr.y[:, i])
-        state[f"{q}_dot"] = _series(tr.y[:, n + i])
-    conserved = {c: _series(values[f"conserved:{c}"]) for c in system.conserved}
-    forces = {f["name"]: _series(values[f"force:{i}"]) for i, f in enumerate(observables.forces)}
+        state[q] = _series(tr.y[:, i], precision)
+        state[f"{q}_dot"] = _series(tr.y[:, n + i], precision)
+    conserved = {c: _series(values[f"conserved:{c}"], precision) for c in system.conserved}
+    forces = {f["name"]: _series(values[f"force:{i}"], precision) for i, f in enumerate(observables.forces)}
     est = outcome.estimate
     stats = {
         "method": outcome.method,
         "reason": outcome.reason,
+        "path": outcome.path,
         "steps": tr.steps,
         "rhs_evaluations": tr.rhs_evaluations,
         "wall_time_s": tr.wall_time_s,
@@ -215,13 +252,13 @@ def document(system: NumericSystem, observables: Observables, outcome, k: np.nda
         "notes": tr.notes,
         "warnings": warnings,
     }
-    if any(v is None for series in (*state.values(), *conserved.values()) for v in series):
+    if not all(np.isfinite(series).all() for series in (*state.values(), *conserved.values())):
         warnings.append("some values are not finite (the motion reached a singular point); they are null")
     return {
         "t": _series(tr.t),
         "state": state,
-        "energy": _series(values["energy"]),
-        "hamiltonian": _series(values["hamiltonian"]),
+        "energy": _series(values["energy"], precision),
+        "hamiltonian": _series(values["hamiltonian"], precision),
         "conserved": conserved,
         "constraint_forces": forces,
         "stats": _finite(stats),
@@ -241,22 +278,43 @@ def _finite(value: Any) -> Any:
 def warm_all() -> dict[str, float]:
     """Compile (or load from numba's disk cache) every kernel and every scene's right-hand sides.
 
-    Run in the background at start-up and at image build (``python -m app.service.simulation``), so
-    no request waits on the compiler; returns the seconds spent per item."""
-    from app.numerics.methods import METHODS
+    Run in the background at start-up and at image build (``python -m app.service.simulation``).
+    Order: every scene's numeric system, then the compiled DOP853 (what ``auto`` picks most
+    often, and the error reference) with each scene's right-hand sides, then the other compiled
+    kernels; a method is used the moment it is ready.  Returns the seconds spent per item."""
     from app.service.derivations import derivation, derivation_document
 
     spent: dict[str, float] = {}
-    for scene_id in SCENES:
+    start = time.perf_counter()
+    systems = [
+        COMPILED.get(scene_id, derivation(scene_id), derivation_document(scene_id).get("constraint_forces") or [])[0]
+        for scene_id in SCENES
+    ]
+    spent["numeric systems"] = time.perf_counter() - start
+    first = METHODS["DOP853-compiled"]
+    for method in (first, *(m for m in METHODS.values() if m.compiled and m is not first)):
         start = time.perf_counter()
-        system, _ = COMPILED.get(
-            scene_id, derivation(scene_id), derivation_document(scene_id).get("constraint_forces") or []
-        )
-        for method in METHODS.values():
-            if method.compiled and method.applicable(system) is None:
+        for system in systems:
+            if method.applicable(system) is None:
                 method.prepare(system)
-        spent[scene_id] = time.perf_counter() - start
+        spent[method.name] = time.perf_counter() - start
     return spent
+
+
+def start_warming() -> threading.Thread:
+    """The server's start: answer at once (scipy while compiling), derive and compile in the background."""
+    from app.service import derivations
+
+    global ANSWER_WHILE_COMPILING
+    ANSWER_WHILE_COMPILING = True
+
+    def warm() -> None:
+        derivations.warm_all()
+        warm_all()
+
+    thread = threading.Thread(target=warm, name="warm-up", daemon=True)
+    thread.start()
+    return thread
 
 
 def simulate_scene(scene_id: str, request: SimulationInput) -> dict[str, Any]:

@@ -21,7 +21,6 @@ import asyncio
 import hashlib
 import json
 import logging
-import math
 import os
 import threading
 from collections import OrderedDict
@@ -36,6 +35,7 @@ from app.engine.symbols import SymbolTable
 from app.scenes.types import Parameter, Particle, System
 from app.service import fairness as fair
 from app.service import worker
+from app.service.encoding import dumps
 
 MAX_COORDINATES = 6
 MAX_PARAMETERS = 24
@@ -222,27 +222,10 @@ def _derive(spec: dict[str, Any]) -> Derivation:
     return d
 
 
-def _dumps(document: Any) -> bytes:
-    try:
-        return json.dumps(document, allow_nan=False, separators=(",", ":")).encode()
-    except ValueError:  # a non-finite number: JSON has none, so it becomes null
-        return json.dumps(_finite(document), allow_nan=False, separators=(",", ":")).encode()
-
-
-def _finite(value: Any) -> Any:
-    if isinstance(value, float):
-        return value if math.isfinite(value) else None
-    if isinstance(value, dict):
-        return {k: _finite(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_finite(v) for v in value]
-    return value
-
-
 def _guarded(job: Callable[[], Any]) -> bytes:
     """Run a job; an engine failure on user input is a refusal, never a server error."""
     try:
-        return _dumps(job())
+        return dumps(job())
     except (InvalidSystem, MemoryError, RecursionError):
         raise
     except DerivationError as exc:

@@ -2,7 +2,7 @@
 
 Plain ``def`` routes: FastAPI runs them in its thread pool, and the compiled
 integration loops release the GIL, so simulations run in parallel and never
-block the event loop.
+block the event loop; the response is encoded there too (orjson).
 """
 
 from __future__ import annotations
@@ -14,6 +14,7 @@ from fastapi.responses import JSONResponse
 
 from app.numerics.errors import SimulationError
 from app.service import simulation, work_precision
+from app.web.responses import FastJSONResponse
 from app.web.schemas import ErrorResponse
 from app.web.schemas_simulate import SimulateRequest, SimulateResponse, WorkPrecision
 
@@ -49,7 +50,8 @@ def _refused(exc: SimulationError) -> JSONResponse:
 )
 def simulate_scene(scene_id: str, request: SimulateRequest) -> Any:
     try:
-        return simulation.simulate_scene(scene_id, request)
+        # encoded here, in the thread pool, by orjson (numpy arrays directly)
+        return FastJSONResponse(simulation.simulate_scene(scene_id, request))
     except SimulationError as exc:
         return _refused(exc)
 

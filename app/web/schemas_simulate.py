@@ -13,10 +13,11 @@ from typing import Annotated, Literal
 from pydantic import BaseModel, ConfigDict, Field
 
 from app.numerics import limits
+from app.numerics.methods import METHODS
 
-Method = Literal[
-    "auto", "DOP853-compiled", "Yoshida4", "Verlet", "Gauss-Legendre", "DOP853", "RK45", "Radau", "BDF", "LSODA"
-]
+# "auto" and the registry's names (app/numerics/methods/__init__.py)
+Method = Literal[("auto", *METHODS)]
+Precision = Literal["full", "display"]
 Values = Annotated[
     dict[Annotated[str, Field(max_length=40)], Annotated[float, Field(ge=-limits.VALUE_MAX, le=limits.VALUE_MAX)]],
     Field(max_length=limits.MAX_NAMES),
@@ -53,11 +54,20 @@ class SimulateRequest(BaseModel):
     samples: int | None = Field(
         None, ge=limits.SAMPLES_MIN, le=limits.SAMPLES_MAX, description="Evenly spaced output times from 0 to t_end."
     )
+    precision: Precision = Field(
+        "full",
+        description="'full': every float as computed; 'display': the series rounded to 7 significant digits "
+        "(what a plot needs; about half the bytes), stats unchanged.",
+    )
 
 
 class SimulateStats(BaseModel):
     method: str
     reason: str
+    path: str = Field(
+        description="'compiled' (a numba step loop), 'scipy' (a scipy method asked for or chosen) or "
+        "'scipy-fallback' (the server's compiled code was not ready yet, so scipy's DOP853 answered)."
+    )
     steps: int
     rhs_evaluations: int
     wall_time_s: float

@@ -30,7 +30,7 @@ export async function simulate(url, request, { signal } = {}) {
   const res = await fetch(url, {
     method: "POST",
     headers: { "Content-Type": "application/json", Accept: "application/json" },
-    body: JSON.stringify(request),
+    body: JSON.stringify({ ...request, precision: "display" }),
     signal,
   });
   let body = null;

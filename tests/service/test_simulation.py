@@ -125,3 +125,66 @@ def test_work_precision_is_cached_per_scene(monkeypatch):
     work_precision.for_scene("pulley")
     work_precision.for_scene("pulley")
     assert calls == ["pulley"]
+
+
+def test_display_rounding_keeps_seven_significant_digits():
+    import numpy as np
+
+    x = np.array([0.0, -1.23456789e-12, 3.14159265358979, 98765.4321987, -7.0e15 / 3.0, np.nan, np.inf])
+    r = simulation.display_rounded(x)
+    expected = [0.0, -1.234568e-12, 3.141593, 98765.43, -2.333333e15]
+    assert r[:5].tolist() == expected and [repr(v) for v in r[:5].tolist()] == [repr(v) for v in expected]
+    assert np.isnan(r[5]) and r[6] == np.inf
+
+
+@pytest.mark.parametrize("scene_id", ["simple-pendulum", "spherical-pendulum"])
+def test_while_kernels_compile_scipy_answers_and_says_so(monkeypatch, scene_id):
+    """The server's state before its background thread has compiled anything: nothing is ready."""
+    import numpy as np
+
+    from app.numerics import jit
+
+    monkeypatch.setattr(simulation, "ANSWER_WHILE_COMPILING", True)
+    with monkeypatch.context() as m:
+        m.setattr(jit, "ready", lambda name: False)
+        fallback = simulation.simulate_scene(scene_id, request(t_end=3.0))
+    stats = fallback["stats"]
+    assert stats["path"] == "scipy-fallback" and stats["method"] == "DOP853"
+    assert "still being compiled" in stats["reason"] and stats["error_reference"].startswith("DOP853 at")
+    compiled = simulation.simulate_scene(scene_id, request(t_end=3.0))
+    assert compiled["stats"]["path"] == "compiled"
+    # the same motion within the two runs' error estimates
+    bound = stats["error_estimate"] + compiled["stats"]["error_estimate"]
+    for q in SCENES_COORDINATES[scene_id]:
+        assert np.max(np.abs(np.asarray(fallback["state"][q]) - compiled["state"][q])) <= 2 * bound + 1e-12
+
+
+SCENES_COORDINATES = {"simple-pendulum": ["theta"], "spherical-pendulum": ["theta", "phi"]}
+
+
+def test_scripts_without_a_server_compile_in_line(monkeypatch):
+    monkeypatch.setattr(simulation, "ANSWER_WHILE_COMPILING", False)
+    doc = simulation.simulate_scene("simple-pendulum", request(t_end=1.0))
+    assert doc["stats"]["path"] == "compiled"
+
+
+def test_reference_run_beside_the_run_gives_the_same_estimate(monkeypatch):
+    from app.numerics import simulate as numerics_simulate
+
+    started = []
+    original = numerics_simulate._reference_ahead
+
+    def spy(problem):
+        future = original(problem)
+        started.append(future is not None)
+        return future
+
+    monkeypatch.setattr(numerics_simulate, "_reference_ahead", spy)
+    monkeypatch.setattr(numerics_simulate, "_machine_load", lambda: 0.0)
+    monkeypatch.setattr(numerics_simulate.CORES, "count", 2)
+    beside = simulation.simulate_scene("spherical-pendulum", request(t_end=3.0))
+    monkeypatch.setattr(numerics_simulate.CORES, "count", 1)  # no free core: the reference runs after
+    after = simulation.simulate_scene("spherical-pendulum", request(t_end=3.0))
+    assert started == [True, False]
+    assert beside["stats"]["error_estimate"] == after["stats"]["error_estimate"]
+    assert beside["stats"]["error_reference"] == after["stats"]["error_reference"]

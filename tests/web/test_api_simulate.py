@@ -120,3 +120,45 @@ def test_openapi_lists_the_routes(client):
     paths = client.get("/openapi.json").json()["paths"]
     assert "post" in paths["/api/scenes/{scene_id}/simulate"]
     assert "get" in paths["/api/scenes/{scene_id}/work-precision"]
+
+
+def test_display_precision_rounds_the_series_not_the_stats(client):
+    body = {"initial": {"theta": 2.0}, "samples": 60, "t_end": 3.0}
+    full = client.post("/api/scenes/simple-pendulum/simulate", json=body)
+    display = client.post("/api/scenes/simple-pendulum/simulate", json={**body, "precision": "display"})
+    assert full.status_code == display.status_code == 200
+    a, b = full.json(), display.json()
+    for name in ("theta", "theta_dot"):
+        for x, r in zip(a["state"][name], b["state"][name], strict=True):
+            assert abs(r - x) <= 5e-7 * abs(x)
+            assert float(f"{x:.7g}") == r
+    assert a["stats"]["error_estimate"] == b["stats"]["error_estimate"]
+    assert a["t"] == b["t"]
+    assert len(display.content) < 0.7 * len(full.content)
+
+
+def test_precision_must_be_full_or_display(client):
+    response = client.post("/api/scenes/simple-pendulum/simulate", json={"initial": {}, "precision": "half"})
+    assert response.status_code == 422 and "precision" in response.json()["detail"]
+
+
+def test_api_responses_are_gzipped_for_clients_that_accept_it(client):
+    url = "/api/scenes/simple-pendulum/simulate"
+    zipped = client.post(url, json={"initial": {}}, headers={"Accept-Encoding": "gzip"})
+    plain = client.post(url, json={"initial": {}}, headers={"Accept-Encoding": "identity"})
+    assert zipped.headers["content-encoding"] == "gzip" and "content-encoding" not in plain.headers
+    assert zipped.json()["t"] == plain.json()["t"]
+    assert int(zipped.headers["content-length"]) < len(plain.content) / 2
+
+
+def test_a_request_while_kernels_compile_is_answered_by_scipy(client, monkeypatch):
+    from app.numerics import jit
+    from app.service import simulation
+
+    monkeypatch.setattr(simulation, "ANSWER_WHILE_COMPILING", True)  # as the server's start-up sets it
+    monkeypatch.setattr(jit, "ready", lambda name: False)  # nothing compiled yet
+    response = client.post("/api/scenes/damped-pendulum/simulate", json={"initial": {}, "samples": 30})
+    assert response.status_code == 200, response.text
+    stats = response.json()["stats"]
+    assert stats["path"] == "scipy-fallback" and stats["method"] == "DOP853"
+    assert stats["error_estimate"] is not None and "still being compiled" in stats["reason"]

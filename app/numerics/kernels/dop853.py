@@ -33,6 +33,7 @@ from app.numerics.kernels.common import (
     STEP_TOO_SMALL,
     STIFF,
     VEC,
+    initial_step,
     outside,
 )
 
@@ -50,41 +51,6 @@ SAFETY, MIN_FACTOR, MAX_FACTOR = 0.9, 0.2, 10.0
 # Slots of the state vector ``st`` carried between calls.
 T, H, STEPS, REJECTED, NFEV, NEXT_OUT, STIFF_RUN, CALM_RUN, STIFF_SEEN, STARTED = range(10)
 STATE_SIZE = 10
-
-
-@njit(F64(VEC, VEC), **JIT)
-def _rms(x, scale):
-    # ||x / scale|| / sqrt(n)
-    s = 0.0
-    for i in range(x.size):
-        s += (x[i] / scale[i]) ** 2
-    return np.sqrt(s / x.size)
-
-
-@njit(F64(RHS, F64, VEC, VEC, VEC, F64, F64, VEC, F64), **JIT)
-def initial_step(f, t0, y0, f0, k, t_end, rtol, atol, order):
-    """scipy's ``select_initial_step``: h from |y|, |f| and a trial Euler step."""
-    n = y0.size
-    scale = np.empty(n)
-    for i in range(n):
-        scale[i] = atol[i] + abs(y0[i]) * rtol
-    d0 = _rms(y0, scale)
-    d1 = _rms(f0, scale)
-    h0 = 1e-6 if d0 < 1e-5 or d1 < 1e-5 else 0.01 * d0 / d1
-    h0 = min(h0, t_end - t0)
-    y1 = np.empty(n)
-    for i in range(n):
-        y1[i] = y0[i] + h0 * f0[i]
-    f1 = np.empty(n)
-    f(t0 + h0, y1, k, f1)
-    for i in range(n):
-        f1[i] -= f0[i]
-    d2 = _rms(f1, scale) / h0
-    if d1 <= 1e-15 and d2 <= 1e-15:
-        h1 = max(1e-6, h0 * 1e-3)
-    else:
-        h1 = (0.01 / max(d1, d2)) ** (1.0 / (order + 1.0))
-    return min(100.0 * h0, h1, t_end - t0)
 
 
 @njit(types.void(MAT, VEC, F64, types.intp, VEC), **JIT)

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from app.numerics.methods.base import Method, Problem, Trajectory
-from app.numerics.methods.explicit import CompiledDOP853
+from app.numerics.methods.explicit import CompiledDOP853, CompiledVern8
 from app.numerics.methods.scipy_ivp import ScipyMethod
 from app.numerics.methods.symplectic import GaussLegendre, StormerVerlet, Yoshida4
 
@@ -11,6 +11,7 @@ METHODS: dict[str, Method] = {
     m.name: m
     for m in (
         CompiledDOP853(),
+        CompiledVern8(),
         StormerVerlet(),
         Yoshida4(),
         GaussLegendre(),

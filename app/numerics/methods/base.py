@@ -76,8 +76,17 @@ class Method:
         if self.compiled:
             import importlib
 
+            from app.numerics import jit
+
             system.compiled()
             importlib.import_module(self.kernel_module)
+            jit.mark_ready(self.kernel_module)
+
+    def ready(self, system: NumericSystem) -> bool:
+        """True when ``prepare`` would return at once: nothing left to compile for this system."""
+        from app.numerics import jit
+
+        return not self.compiled or (jit.ready(self.kernel_module) and system.is_compiled())
 
     def applicable(self, system: NumericSystem) -> str | None:
         """None when the method can integrate the system; otherwise why not."""

@@ -18,7 +18,7 @@ class CompiledDOP853(Method):
     def _run(self, problem: Problem, stop_on_stiff: bool = False) -> Trajectory:
         from app.numerics.kernels import dop853
 
-        rhs = problem.system.compiled().rhs
+        rhs = problem.system.bound("rhs")
         y = problem.y0.astype(float).copy()
         fy = np.empty_like(y)
         st = np.zeros(dop853.STATE_SIZE)
@@ -44,4 +44,37 @@ class CompiledDOP853(Method):
         )
         if st[dop853.REJECTED]:
             trajectory.notes.append(f"{int(st[dop853.REJECTED])} rejected steps")
+        return trajectory
+
+
+class CompiledVern8(Method):
+    name = "Vern8"
+    family = "explicit"
+    order = 8
+    compiled = True
+    kernel_module = "app.numerics.kernels.vern8"
+    summary = "Verner's 8(7) pair, adaptive steps, 7th-order dense output; the loop runs in numba"
+
+    def _run(self, problem: Problem) -> Trajectory:
+        from app.numerics.kernels import vern8
+
+        rhs = problem.system.bound("rhs")
+        y = problem.y0.astype(float).copy()
+        fy = np.empty_like(y)
+        st = np.zeros(vern8.STATE_SIZE)
+        Y = np.empty((problem.t.size, y.size))
+        args = (problem.k, problem.t, problem.rtol, problem.atol, problem.bound)
+        status = drive(lambda chunk: vern8.run(rhs, *args, chunk, y, fy, st, Y), lambda: st[vern8.STEPS], problem, self)
+        trajectory = finished(
+            self,
+            problem,
+            Y,
+            int(st[vern8.NEXT_OUT]),
+            status,
+            last=y,
+            steps=int(st[vern8.STEPS]),
+            rhs_evaluations=int(st[vern8.NFEV]),
+        )
+        if st[vern8.REJECTED]:
+            trajectory.notes.append(f"{int(st[vern8.REJECTED])} rejected steps")
         return trajectory

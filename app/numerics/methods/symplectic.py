@@ -63,6 +63,11 @@ class FixedStep(Method):
         super().prepare(system)
         CompiledDOP853().prepare(system)  # the pilot pass
 
+    def ready(self, system: NumericSystem) -> bool:
+        from app.numerics.methods.explicit import CompiledDOP853
+
+        return super().ready(system) and CompiledDOP853().ready(system)
+
     def pilot(self, problem: Problem) -> tuple[np.ndarray, np.ndarray, float]:
         """States along the motion and a first step size, from a quick compiled DOP853 pass."""
         from app.numerics.methods.explicit import CompiledDOP853
@@ -138,14 +143,14 @@ class Composition(FixedStep):
         from app.numerics.kernels import composition as kc
 
         out = np.empty(len(times))
-        rhs = problem.system.compiled().rhs
+        rhs = problem.system.bound("rhs")
         kc.local_errors(rhs, problem.k, self.weights, times, states, h, problem.atol, problem.rtol, self.order, out)
         return out
 
     def kernel(self, problem: Problem, t: np.ndarray, state: np.ndarray, substeps: int, chunked: bool):
         from app.numerics.kernels import composition as kc
 
-        rhs = problem.system.compiled().rhs
+        rhs = problem.system.bound("rhs")
         n = problem.system.n
         acc = np.empty(n)
         comp = np.zeros(2 * n)
@@ -200,7 +205,7 @@ class GaussLegendre(FixedStep):
         # errors measured on z = (q, p), the variables the method advances
         z = np.array([self.start_state(problem, t, y) for t, y in zip(times, states, strict=True)])
         out = np.empty(len(times))
-        ham = problem.system.compiled().ham
+        ham = problem.system.bound("ham")
         kg.local_errors(
             ham,
             problem.k,
@@ -226,7 +231,7 @@ class GaussLegendre(FixedStep):
     def kernel(self, problem: Problem, t: np.ndarray, state: np.ndarray, substeps: int, chunked: bool):
         from app.numerics.kernels import gauss as kg
 
-        ham = problem.system.compiled().ham
+        ham = problem.system.bound("ham")
         m = state.size
         comp = np.zeros(m)
         Kprev = np.zeros((self.stages, m))

@@ -1,0 +1,182 @@
+"""Our compiled kernels and default path side by side with CyRK (Cython/C++ integrators), at equal error.
+
+Each method runs at the loosest tolerance on the grid of bench_numerics (rtol =
+10^(-k/4), atol = rtol/100) whose final-state error is at most 1e-8, on the
+pendulum (θ0 = 2.5, 100 periods, exact reference) and the double pendulum
+(θ1 = 1, θ2 = 0, 50 s, reference DOP853 at rtol 1e-13).  Every method calls the
+same right-hand side: the engine's generated function compiled by numba (CyRK
+through a numba cfunc wrapper).  The floor is the time of the same number of
+bare right-hand-side calls through a function pointer in a compiled loop.
+Times are the minimum of several runs, all in one process (ratios within one
+run: the machine is shared, absolute times drift).
+
+    .venv/bin/python -m benchmarks.bench_cyrk
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from CyRK import cyjit, nbsolve2_ivp
+from numba import carray, njit, types
+
+from app.engine.derive import derive
+from app.numerics.exact import pendulum
+from app.numerics.kernels.common import F64, I64, RHS, VEC
+from app.numerics.methods import METHODS, Problem
+from app.numerics.simulate import simulate
+from app.numerics.system import NumericSystem, numeric_system
+from app.scenes import SCENES
+from benchmarks.bench_numerics import GRID, TARGET, best_time
+from tests.numerics.extreme_cases import pendulum_period
+from tests.numerics.systems import DOUBLE_PENDULUM
+
+OURS = ("DOP853-compiled", "Vern8")
+CYRK = ("DOP853", "Vern7", "Vern8")
+
+
+@njit(types.void(RHS, F64, VEC, VEC, VEC, I64))
+def bare_calls(f, t, y, k, out, count):
+    for _ in range(count):
+        f(t, y, k, out)
+        y[0] += 1e-300 * out[0]  # a data dependence, so the calls cannot be hoisted
+
+
+def cyrk_rhs(system: NumericSystem, k: np.ndarray):
+    rhs = system.compiled().rhs
+    m, nk = 2 * system.n, k.size
+
+    @cyjit
+    def f(dy, t, y, args):
+        rhs(t, carray(y, (m,)), carray(args, (nk,)), carray(dy, (m,)))
+
+    return f
+
+
+@njit
+def cyrk_final(address, t_end, y0, method_id, args, rtol, atol):
+    method = "DOP853" if method_id == 0 else ("Vern7" if method_id == 1 else "Vern8")
+    sol = nbsolve2_ivp(address, (0.0, t_end), y0, method=method, args=args, rtol=rtol, atol=atol)
+    y = sol.y
+    last = y[:, y.shape[1] - 1].copy()
+    steps = sol.steps_taken
+    sol.free()
+    return last, steps
+
+
+def ours_problem(system, k, y0, t_end, rtol):
+    m = y0.size
+    return Problem(
+        system, k, y0, np.array([0.0, t_end]), rtol, np.full(m, rtol / 100), np.full(m, 1e8), math.inf, 10**9
+    )
+
+
+def loosest(error_of) -> float:
+    for rtol in GRID:
+        if error_of(rtol) <= TARGET:
+            return rtol
+    raise RuntimeError("no tolerance on the grid reaches the target")
+
+
+def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
+    n = system.n
+    rows = []
+    out = np.empty(y0.size)
+    rhs = system.bound("rhs")  # as the kernels get it
+
+    def floor(evaluations: int) -> float:
+        return best_time(lambda: bare_calls(rhs, 0.0, y0.copy(), k, out, evaluations))
+
+    for name in OURS:
+        method = METHODS[name]
+        rtol = loosest(
+            lambda r, method=method: np.abs(
+                method.integrate(ours_problem(system, k, y0, t_end, r)).y[-1, :n] - reference[:n]
+            ).max()
+        )
+        run = method.integrate(ours_problem(system, k, y0, t_end, rtol))
+        seconds = best_time(lambda rtol=rtol, method=method: method.integrate(ours_problem(system, k, y0, t_end, rtol)))
+        error = np.abs(run.y[-1, :n] - reference[:n]).max()
+        rows.append(
+            (
+                f"ours {name} (kernel from Python)",
+                rtol,
+                error,
+                run.steps,
+                run.rhs_evaluations,
+                seconds,
+                floor(run.rhs_evaluations),
+            )
+        )
+
+    def auto(r):
+        return simulate(system, k, y0, t_end, 2, "auto", r, r / 100, wall_seconds=120, estimate=False)
+
+    rtol = loosest(lambda r: np.abs(auto(r).trajectory.y[-1, :n] - reference[:n]).max())
+    outcome = auto(rtol)
+    seconds = best_time(lambda: auto(rtol))
+    tr = outcome.trajectory
+    rows.append(
+        (
+            f"ours default path (auto → {outcome.method})",
+            rtol,
+            np.abs(tr.y[-1, :n] - reference[:n]).max(),
+            tr.steps,
+            tr.rhs_evaluations,
+            seconds,
+            floor(tr.rhs_evaluations),
+        )
+    )
+
+    address = cyrk_rhs(system, k).address
+    for method_id, name in enumerate(CYRK):
+
+        def final(r, method_id=method_id):
+            return cyrk_final(address, t_end, y0, method_id, k, r, r / 100)
+
+        rtol = loosest(lambda r, final=final: np.abs(final(r)[0][:n] - reference[:n]).max())
+        last, steps = final(rtol)
+        seconds = best_time(lambda rtol=rtol, final=final: final(rtol))
+        rows.append((f"CyRK {name}", rtol, np.abs(last[:n] - reference[:n]).max(), int(steps), None, seconds, None))
+
+    print(f"\n{label}: final-state error target {TARGET:g}")
+    print("| path | rtol | final error | steps | RHS evaluations | time ms | floor ms | time / floor |")
+    print("|---|---|---|---|---|---|---|---|")
+    for path, rtol, error, steps, nfev, seconds, floor_s in rows:
+        nf = "" if nfev is None else f"{nfev}"
+        fl = "" if floor_s is None else f"{floor_s * 1e3:.3f}"
+        ratio = "" if floor_s is None else f"{seconds / floor_s:.2f}"
+        print(f"| {path} | {rtol:.1e} | {error:.1e} | {steps} | {nf} | {seconds * 1e3:.3f} | {fl} | {ratio} |")
+    fastest_cyrk = min(r[5] for r in rows if r[0].startswith("CyRK"))
+    default = next(r for r in rows if r[0].startswith("ours default"))
+    print(
+        f"\ndefault path / fastest CyRK: {default[5] / fastest_cyrk:.2f} (target <= 1); "
+        f"default path / its floor: {default[5] / default[6]:.2f} (target <= 1.3)"
+    )
+    return {r[0]: r[5] for r in rows}
+
+
+def main() -> None:
+    pend = numeric_system(derive(SCENES["simple-pendulum"].system))
+    k = np.array([1.0, 9.81, 1.0])
+    y0 = np.array([2.5, 0.0])
+    t_end = 100 * pendulum_period(2.5)
+    reference = pendulum(9.81, 2.5, 0.0)(np.array([t_end]))[0]
+    side_by_side(f"Pendulum θ0 = 2.5, 100 periods (t = {t_end:.2f} s)", pend, k, y0, t_end, reference)
+
+    dp = numeric_system(derive(DOUBLE_PENDULUM))
+    kd = np.array([1.0, 1.0, 1.0, 1.0, 9.81])
+    yd = np.array([1.0, 0.0, 0.0, 0.0])
+    ref = (
+        METHODS["DOP853-compiled"]
+        .integrate(
+            Problem(dp, kd, yd, np.array([0.0, 50.0]), 1e-13, np.full(4, 1e-16), np.full(4, 1e8), math.inf, 10**9)
+        )
+        .y[-1]
+    )
+    side_by_side("Double pendulum (θ1 = 1, θ2 = 0), t = 50 s", dp, kd, yd, 50.0, ref)
+
+
+if __name__ == "__main__":
+    main()

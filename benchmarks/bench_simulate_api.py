@@ -1,0 +1,63 @@
+"""Warm scene simulations through the API, as ratios against GET /healthz in the same run.
+
+Each scene's default simulation (POST /api/scenes/{id}/simulate with
+``{"initial": {}}``: the scene's defaults, full precision) is requested through
+the ASGI app in process (Starlette's TestClient, which accepts gzip as a
+browser does), interleaved with /healthz so a slow moment of the shared
+machine hits both alike.  Also the same request at ``"precision": "display"``
+(what the pages ask for) and the bytes on the wire.  Target: every scene's p50
+at most 3x the /healthz p50.
+
+    .venv/bin/python -m benchmarks.bench_simulate_api
+"""
+
+from __future__ import annotations
+
+import statistics
+import time
+
+from fastapi.testclient import TestClient
+
+from app.main import app
+from app.scenes import SCENES
+
+ROUNDS = 60
+WARMUP = 5
+
+
+def main() -> None:
+    with TestClient(app) as client:
+        requests = [("GET", "/healthz", None, "")]
+        for sid in SCENES:
+            url = f"/api/scenes/{sid}/simulate"
+            requests.append(("POST", url, {"initial": {}}, sid))
+            requests.append(("POST", url, {"initial": {}, "precision": "display"}, f"{sid} (display)"))
+        times: dict[str, list[float]] = {label or url: [] for _, url, _, label in requests}
+        sizes: dict[str, tuple[int, int]] = {}
+        for round_ in range(WARMUP + ROUNDS):
+            for verb, url, body, label in requests:
+                start = time.perf_counter()
+                response = client.request(verb, url, json=body)
+                elapsed = time.perf_counter() - start
+                assert response.status_code == 200, (url, response.text[:200])
+                if round_ >= WARMUP:
+                    times[label or url].append(elapsed)
+                if round_ == 0 and body is not None:
+                    wire = int(response.headers.get("content-length", len(response.content)))
+                    sizes[label] = (len(response.content), wire)
+        base = statistics.median(times["/healthz"])
+        print(f"{ROUNDS} interleaved rounds after {WARMUP} warm-up; GET /healthz p50 = {base * 1e3:.2f} ms\n")
+        print("| request | p50 ms | p50 / healthz | JSON kB | gzipped kB |")
+        print("|---|---|---|---|---|")
+        worst = 0.0
+        for _, _, _, label in requests[1:]:
+            p50 = statistics.median(times[label])
+            if "display" not in label:
+                worst = max(worst, p50 / base)
+            raw, wire = sizes[label]
+            print(f"| {label} | {p50 * 1e3:.2f} | {p50 / base:.1f} | {raw / 1024:.0f} | {wire / 1024:.0f} |")
+        print(f"\nslowest scene at full precision: {worst:.1f}x /healthz (target <= 3x)")
+
+
+if __name__ == "__main__":
+    main()
