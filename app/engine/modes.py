@@ -36,7 +36,7 @@ import scipy.linalg
 import scipy.optimize
 import sympy as sp
 
-from app.engine.budget import within_budget
+from app.engine.budget import tidy, within_budget
 from app.engine.derive import Derivation, positive_names
 
 SOLVE_SECONDS = 1.5  # symbolic equilibria
@@ -132,8 +132,14 @@ def _shape(vector: np.ndarray) -> tuple[float, ...]:
     return tuple(float(x) for x in v / big) if big != 0 else tuple(float(x) for x in v)
 
 
-def _exact_eigenvalues(M: sp.Matrix, K: sp.Matrix) -> list[sp.Expr]:
-    """Closed forms of the roots of det(K - lambda M) = 0, when small."""
+def _exact_eigenvalues(M: sp.Matrix, K: sp.Matrix, assume: Mapping[sp.Symbol, sp.Symbol]) -> list[sp.Expr]:
+    """Closed forms of the roots of det(K - lambda M) = 0 (under the declared signs), when small."""
+    back = {v: k for k, v in assume.items()}
+    M, K = M.xreplace(dict(assume)), K.xreplace(dict(assume))
+    return [r.xreplace(back) for r in _roots(M, K)]
+
+
+def _roots(M: sp.Matrix, K: sp.Matrix) -> list[sp.Expr]:
     n = M.shape[0]
     if M.is_diagonal() and K.is_diagonal():
         return [sp.cancel(K[i, i] / M[i, i]) for i in range(n)]
@@ -142,7 +148,7 @@ def _exact_eigenvalues(M: sp.Matrix, K: sp.Matrix) -> list[sp.Expr]:
         a = M.det()
         b = -(K[0, 0] * M[1, 1] + K[1, 1] * M[0, 0] - K[0, 1] * M[1, 0] - K[1, 0] * M[0, 1])
         c = K.det()
-        root = sp.sqrt(sp.factor_terms(sp.expand(b**2 - 4 * a * c)))
+        root = sp.sqrt(sp.factor(sp.expand(b**2 - 4 * a * c)))
         return [sp.factor_terms((-b - root) / (2 * a)), sp.factor_terms((-b + root) / (2 * a))]
     lam = sp.Dummy("lambda")
     poly = sp.Poly(sp.expand((K - lam * M).det(method="berkowitz")), lam)
@@ -153,8 +159,12 @@ def _exact_eigenvalues(M: sp.Matrix, K: sp.Matrix) -> list[sp.Expr]:
 
 
 def _modes(
-    M: sp.Matrix, K: sp.Matrix, values: Mapping[sp.Symbol, float], exact: bool
-) -> tuple[tuple[Mode, ...], np.ndarray] | None:
+    M: sp.Matrix,
+    K: sp.Matrix,
+    values: Mapping[sp.Symbol, float],
+    exact: bool,
+    assume: Mapping[sp.Symbol, sp.Symbol] | None = None,
+) -> tuple[Mode, ...] | None:
     """Mode frequencies and shapes at the defaults; None when M is singular there."""
     Mn = np.array([[_numeric(x, values).real for x in row] for row in M.tolist()], dtype=float)
     Kn = np.array([[_numeric(x, values).real for x in row] for row in K.tolist()], dtype=float)
@@ -172,8 +182,9 @@ def _modes(
         w2, vectors = w2c.real[order], vectors[:, order]
     closed: list[sp.Expr] = []
     if exact:
-        found = within_budget(lambda: _exact_eigenvalues(M, K), [], EIGEN_SECONDS)
-        closed = [c for c in found if sp.count_ops(c) <= MAX_EXACT_OPS]
+        found = within_budget(lambda: _exact_eigenvalues(M, K, assume or {}), [], EIGEN_SECONDS)
+        # short ones tidied here, outside the budget above (a nested budget would cancel its timer)
+        closed = [tidy(c, 0.3) if sp.count_ops(c) <= 40 else c for c in found if sp.count_ops(c) <= MAX_EXACT_OPS]
     modes = []
     for i, w in enumerate(w2):
         match = None
@@ -184,14 +195,16 @@ def _modes(
                 closed.remove(c)
                 break
         modes.append(Mode(float(w), _shape(vectors[:, i]), match))
-    return tuple(modes), Kn
+    return tuple(modes)
 
 
 def _positive(d: Derivation) -> dict[sp.Symbol, sp.Symbol]:
     """Stand-ins carrying the declared signs (positive parameters, nonnegative distances)."""
     names = positive_names(d.system)
     table = d.table
-    out = {s: sp.Symbol(s.name, positive=True) for s in table.params if s.name in names}
+    nonnegative = {p.name for p in d.system.parameters if p.min is not None and p.min == 0}
+    out = {s: sp.Symbol(s.name, nonnegative=True) for s in table.params if s.name in nonnegative}
+    out.update({s: sp.Symbol(s.name, positive=True) for s in table.params if s.name in names})
     out.update({s: sp.Symbol(s.name, nonnegative=True) for s in table.q if s.name in names})
     return out
 
@@ -342,11 +355,10 @@ def normal_modes(d: Derivation, momenta: Mapping[str, float] | None = None) -> N
         M0 = M.xreplace(at).applyfunc(_cheap) if exact is not None else M.xreplace(at)
         K0 = J.xreplace(at).applyfunc(_cheap) if exact is not None else J.xreplace(at)
         position = {name: float(v) for name, v in zip(table.names, x, strict=True)}
-        result = _modes(M0, K0, values, exact is not None)
-        if result is None:
+        modes = _modes(M0, K0, values, exact is not None, _positive(d))
+        if modes is None:
             singular.append(position)
             continue
-        modes, _ = result
         damped = damped or any(abs(_numeric(c, values)) > 0 for c in C.xreplace(at))
         equilibria.append(
             Equilibrium(
@@ -389,10 +401,9 @@ def _relative(d: Derivation, momenta: Mapping[str, float]) -> list[Equilibrium]:
         k0 = sp.diff(red.effective_potential, r, 2).xreplace(at)
         if exact is not None:
             m0, k0 = _cheap(m0), _cheap(k0)
-        result = _modes(sp.Matrix([[m0]]), sp.Matrix([[k0]]), values, exact is not None)
-        if result is None:
+        modes = _modes(sp.Matrix([[m0]]), sp.Matrix([[k0]]), values, exact is not None, _positive(d))
+        if modes is None:
             continue
-        modes, _ = result
         out.append(
             Equilibrium(
                 {red.coordinate: float(x0)},
