@@ -36,11 +36,11 @@ import scipy.linalg
 import scipy.optimize
 import sympy as sp
 
-from app.engine.budget import tidy, within_budget
+from app.engine.budget import within_budget
 from app.engine.derive import Derivation, positive_names
 
 SOLVE_SECONDS = 1.5  # symbolic equilibria
-EIGEN_SECONDS = 0.5  # symbolic omega^2
+EIGEN_SECONDS = 1.0  # symbolic omega^2
 SEARCH_SECONDS = 1.5  # numeric equilibria
 MAX_SOLVE_OPS = 400  # larger conditions go straight to the numeric search
 MAX_EXACT_OPS = 80  # closed forms of omega^2 longer than this are given as numbers only
@@ -139,6 +139,12 @@ def _exact_eigenvalues(M: sp.Matrix, K: sp.Matrix, assume: Mapping[sp.Symbol, sp
     return [r.xreplace(back) for r in _roots(M, K)]
 
 
+def _neat(expr: sp.Expr) -> sp.Expr:
+    if any(not e.exp.is_integer for e in expr.atoms(sp.Pow)):
+        return sp.factor_terms(expr)
+    return sp.factor(expr)
+
+
 def _roots(M: sp.Matrix, K: sp.Matrix) -> list[sp.Expr]:
     n = M.shape[0]
     if M.is_diagonal() and K.is_diagonal():
@@ -149,7 +155,8 @@ def _roots(M: sp.Matrix, K: sp.Matrix) -> list[sp.Expr]:
         b = -(K[0, 0] * M[1, 1] + K[1, 1] * M[0, 0] - K[0, 1] * M[1, 0] - K[1, 0] * M[0, 1])
         c = K.det()
         root = sp.sqrt(sp.factor(sp.expand(b**2 - 4 * a * c)))
-        return [sp.factor_terms((-b - root) / (2 * a)), sp.factor_terms((-b + root) / (2 * a))]
+        # a rational result (the square root came out) is put over one factored denominator
+        return [_neat((-b - root) / (2 * a)), _neat((-b + root) / (2 * a))]
     lam = sp.Dummy("lambda")
     poly = sp.Poly(sp.expand((K - lam * M).det(method="berkowitz")), lam)
     roots = sp.roots(poly, multiple=True)
@@ -183,8 +190,7 @@ def _modes(
     closed: list[sp.Expr] = []
     if exact:
         found = within_budget(lambda: _exact_eigenvalues(M, K, assume or {}), [], EIGEN_SECONDS)
-        # short ones tidied here, outside the budget above (a nested budget would cancel its timer)
-        closed = [tidy(c, 0.3) if sp.count_ops(c) <= 40 else c for c in found if sp.count_ops(c) <= MAX_EXACT_OPS]
+        closed = [c for c in found if sp.count_ops(c) <= MAX_EXACT_OPS]
     modes = []
     for i, w in enumerate(w2):
         match = None
