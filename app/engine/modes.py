@@ -358,8 +358,11 @@ def normal_modes(d: Derivation, momenta: Mapping[str, float] | None = None) -> N
     damped = False
     for exact, x in points:
         at = {s: (exact[s] if exact is not None else sp.Float(float(v))) for s, v in zip(q, x, strict=True)}
-        M0 = M.xreplace(at).applyfunc(_cheap) if exact is not None else M.xreplace(at)
-        K0 = J.xreplace(at).applyfunc(_cheap) if exact is not None else J.xreplace(at)
+        if exact is not None:
+            M0, K0 = M.xreplace(at).applyfunc(_cheap), J.xreplace(at).applyfunc(_cheap)
+        else:
+            # found numerically at the defaults: M and K as numbers there
+            M0, K0 = M.xreplace(at).xreplace(values).evalf(), J.xreplace(at).xreplace(values).evalf()
         position = {name: float(v) for name, v in zip(table.names, x, strict=True)}
         modes = _modes(M0, K0, values, exact is not None, _positive(d))
         if modes is None:
@@ -407,6 +410,8 @@ def _relative(d: Derivation, momenta: Mapping[str, float]) -> list[Equilibrium]:
         k0 = sp.diff(red.effective_potential, r, 2).xreplace(at)
         if exact is not None:
             m0, k0 = _cheap(m0), _cheap(k0)
+        else:
+            m0, k0 = m0.xreplace(values).evalf(), k0.xreplace(values).evalf()
         modes = _modes(sp.Matrix([[m0]]), sp.Matrix([[k0]]), values, exact is not None, _positive(d))
         if modes is None:
             continue

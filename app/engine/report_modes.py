@@ -116,14 +116,19 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
     vname = "U" if plain else "V"
     forced = any(f.xreplace(dict.fromkeys(table.qd, 0)) != 0 for f in d.mechanics.Q)
     rows = [
-        rf"\frac{{\partial {vname}}}{{\partial {qn[k]}}}{' - Q' if forced else ''} = {pr.tex(display(g))} = 0"
+        rf"\frac{{\partial {vname}}}{{\partial {qn[k]}}}{' - Q' if forced else ''} = {pr.tex(display(g))}"
+        + (" = 0" if g != 0 else "")
         for k, g in enumerate(nm.condition)
     ]
     if not plain:
         rows.insert(0, rf"V = -L\big|_{{\dot q = 0}} = {pr.tex(display(nm.potential))}")
     found = [e for e in nm.equilibria if not e.momenta]
-    if found or nm.singular:
-        rows += [_where(e, pr, d) for e in found]
+    rows += [_where(e, pr, d) for e in found]
+    sym = {s.name: s for s in table.q}
+    rows += [
+        r",\; ".join(f"{pr.tex(sym[n])} = {_number(v)}" for n, v in point.items()) + r"\quad (M \text{ singular})"
+        for point in nm.singular
+    ]
     why = "At rest (q̇ = 0) the state stays put where every generalized force vanishes. "
     if not plain:
         why += "V = U − T₀ includes the velocity-free part T₀ of the kinetic energy (a moving constraint's share). "
@@ -153,7 +158,7 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, damped: bool) 
     for i, m in enumerate(e.modes, start=1):
         value = (
             pr.tex(m.exact) + r" \approx " + _number(m.omega_squared)
-            if m.exact is not None
+            if m.exact is not None and not m.exact.is_number
             else _number(m.omega_squared)
         )
         shape = ", ".join(f"{pr.tex(sym[n])}: {_number(a)}" for n, a in zip(e.coordinates, m.shape, strict=True))
