@@ -108,11 +108,11 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         }
     if beyond:
         # built last, so that they never take the chapter's steps' share of the display budget
-        _add_beyond(d, scene, result, pr)
+        add_beyond(d, scene, result, pr)
     return result
 
 
-def _add_beyond(d: Derivation, scene: Scene | None, result: dict[str, Any], pr: Printer) -> None:
+def add_beyond(d: Derivation, scene: Scene | None, result: dict[str, Any], pr: Printer) -> None:
     """Hamilton's equations after h, the normal modes after them: steps and JSON."""
     ham = hamilton(d)
     modes = normal_modes(d, held_momenta(d, scene))
