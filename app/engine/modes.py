@@ -44,6 +44,8 @@ EIGEN_SECONDS = 1.0  # symbolic omega^2
 SEARCH_SECONDS = 1.5  # numeric equilibria
 MAX_SOLVE_OPS = 400  # larger conditions go straight to the numeric search
 MAX_EXACT_OPS = 80  # closed forms of omega^2 longer than this are given as numbers only
+MAX_EQUILIBRIA = 8  # equilibria linearized (a polynomial condition can have many roots)
+MAX_SYMBOLIC_SIZE = 3  # coordinates up to which M and K are kept symbolic at an exact equilibrium
 ZERO = 1e-9  # relative size below which an omega^2 counts as zero
 
 STABLE, NEUTRAL, UNSTABLE = "stable", "neutral", "unstable"
@@ -356,15 +358,15 @@ def normal_modes(d: Derivation, momenta: Mapping[str, float] | None = None) -> N
     equilibria: list[Equilibrium] = []
     singular: list[dict[str, float]] = []
     damped = False
-    for exact, x in points:
+    for exact, x in points[:MAX_EQUILIBRIA]:
         at = {s: (exact[s] if exact is not None else sp.Float(float(v))) for s, v in zip(q, x, strict=True)}
-        if exact is not None:
+        if exact is not None and len(q) <= MAX_SYMBOLIC_SIZE:
             M0, K0 = M.xreplace(at).applyfunc(_cheap), J.xreplace(at).applyfunc(_cheap)
         else:
             # found numerically at the defaults: M and K as numbers there
             M0, K0 = M.xreplace(at).xreplace(values).evalf(), J.xreplace(at).xreplace(values).evalf()
         position = {name: float(v) for name, v in zip(table.names, x, strict=True)}
-        modes = _modes(M0, K0, values, exact is not None, _positive(d))
+        modes = _modes(M0, K0, values, exact is not None and len(q) <= MAX_SYMBOLIC_SIZE, _positive(d))
         if modes is None:
             singular.append(position)
             continue
@@ -404,7 +406,7 @@ def _relative(d: Derivation, momenta: Mapping[str, float]) -> list[Equilibrium]:
     if not roots and dU.has(r):
         roots = [(None, x) for x in _roots_1d(dU, r, values, red.coordinate in d.system.nonnegative)]
     out = []
-    for exact, x0 in roots:
+    for exact, x0 in roots[:MAX_EQUILIBRIA]:
         at = {r: exact if exact is not None else sp.Float(x0)}
         m0 = red.effective_mass.xreplace(at)
         k0 = sp.diff(red.effective_potential, r, 2).xreplace(at)
