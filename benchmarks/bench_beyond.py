@@ -37,7 +37,9 @@ def main() -> None:
         if not scene.beyond_chapter:
             base_total, added_total = base_total + base, added_total + added
     ratio = added_total / base_total
-    print(f"chapter scenes: documents {base_total:.2f} s, added {added_total:.2f} s, ratio {ratio:.2f} (goal <= {GOAL})")
+    print(
+        f"chapter scenes: documents {base_total:.2f} s, added {added_total:.2f} s, ratio {ratio:.2f} (goal <= {GOAL})"
+    )
 
 
 if __name__ == "__main__":
