@@ -7,8 +7,11 @@ from typing import Any
 from app.engine.budget import display_budget
 from app.engine.constraints import ConstraintForce, constraint_forces
 from app.engine.derive import Derivation
+from app.engine.hamilton import hamilton
+from app.engine.modes import normal_modes
 from app.engine.report import Printer, build_steps, constraint_steps, new_lagrangian, transform_steps
 from app.engine.report import display as _show
+from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.transform import Transformed, transform
 from app.scenes.types import Parameter, Scene
 
@@ -24,17 +27,31 @@ def parameters_json(parameters: tuple[Parameter, ...]) -> dict[str, dict[str, An
 DISPLAY_SECONDS = 6.0
 
 
-def derivation_json(d: Derivation, scene: Scene | None = None) -> dict[str, Any]:
+def derivation_json(d: Derivation, scene: Scene | None = None, beyond: bool = True) -> dict[str, Any]:
     """Everything derived, with each expression as a sympy string and LaTeX.
 
     ``scene``, for a chapter scene, adds the scene block and the chapter's errata.
+    ``beyond`` adds Hamilton's equations and the normal modes (steps and JSON).
     All display simplification shares one time budget (DISPLAY_SECONDS).
     """
     with display_budget(DISPLAY_SECONDS):
-        return _derivation_json(d, scene)
+        return _derivation_json(d, scene, beyond)
 
 
-def _derivation_json(d: Derivation, scene: Scene | None) -> dict[str, Any]:
+def held_momenta(d: Derivation, scene: Scene | None) -> dict[str, float]:
+    """The conserved momenta of a reduction at the scene's initial state and default parameters."""
+    red = d.reduction
+    if red is None or not red.momenta or scene is None:
+        return {}
+    table = d.table
+    values = {s: p.default for s, p in zip(table.params, d.system.parameters, strict=True)}
+    values.update({s: scene.initial.get(s.name, 0.0) for s in (*table.q, *table.qd)})
+    return {
+        P.name: float(d.equations.momenta[table.names.index(P.name[2:])].xreplace(values).evalf()) for P in red.momenta
+    }
+
+
+def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) -> dict[str, Any]:
     table, eqs, en, red = d.table, d.equations, d.energetics, d.reduction
     pr = Printer(table.latex_names())
     forces = constraint_forces(d)
@@ -73,6 +90,8 @@ def _derivation_json(d: Derivation, scene: Scene | None) -> dict[str, Any]:
         else [],
         "constraint_forces": [constraint_force_json(f, pr) for f in forces],
         "transformed": transformed_json(transformed) if transformed is not None else None,
+        "hamilton": None,
+        "normal_modes": [],
     }
     if red is not None:
         result["effective_potential"] = {
@@ -87,7 +106,33 @@ def _derivation_json(d: Derivation, scene: Scene | None) -> dict[str, Any]:
                 for e in red.equilibria
             ],
         }
+    if beyond:
+        # built last, so that they never take the chapter's steps' share of the display budget
+        add_beyond(d, scene, result, pr)
     return result
+
+
+def add_beyond(d: Derivation, scene: Scene | None, result: dict[str, Any], pr: Printer) -> None:
+    """Hamilton's equations after h, the normal modes after them: steps and JSON."""
+    ham = hamilton(d)
+    modes = normal_modes(d, held_momenta(d, scene))
+    steps = result["steps"]
+    titles = [s["title"] for s in steps]
+    # Hamilton's equations right after h (and after the power of the forces when there is one)
+    after = max(
+        i + 1
+        for i, t in enumerate(titles)
+        if t in ("Hamiltonian", "Is h equal to E?", "Power of the non-conservative forces")
+    )
+    # the normal modes after the chapter's own steps, before constraint forces and coordinate changes
+    end = next(
+        (i for i, t in enumerate(titles) if t in ("Constraints in Cartesian form", "Change of coordinates")), len(steps)
+    )
+    result["steps"] = (
+        steps[:after] + hamilton_steps(d, ham) + steps[after:end] + normal_mode_steps(d, modes) + steps[end:]
+    )
+    result["hamilton"] = hamilton_json(d, ham)
+    result["normal_modes"] = normal_modes_json(modes, pr)
 
 
 def scene_json(scene: Scene) -> dict[str, Any]:
@@ -122,7 +167,7 @@ def transformed_json(tr: Transformed) -> dict[str, Any]:
     old = Printer(tr.original.latex_names())
     pr = Printer(d.table.latex_names())
     names = d.table.names
-    full = derivation_json(d)
+    full = derivation_json(d, beyond=False)
     by_name = {c.name: c for c in d.energetics.conserved}
     return {
         "coordinates": list(names),

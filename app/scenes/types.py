@@ -137,7 +137,12 @@ class Erratum:
 
 @dataclass(frozen=True)
 class Scene:
-    """A chapter example: a system plus what the page and API say about it."""
+    """A chapter example: a system plus what the page and API say about it.
+
+    ``beyond_chapter`` marks a scene that goes past the chapter (normal modes of
+    several coordinates, chaos); its ``section`` names the chapter section it
+    builds on, and the contents list it under a heading of its own.
+    """
 
     id: str
     title: str
@@ -150,3 +155,4 @@ class Scene:
     t_end: float = 10.0
     panels: tuple[str, ...] = ()
     errata: tuple[Erratum, ...] = ()
+    beyond_chapter: bool = False

@@ -80,6 +80,7 @@ def scene_summary(s: Scene) -> dict[str, Any]:
         "initial": dict(s.initial),
         "t_end": s.t_end,
         "panels": list(s.panels),
+        "beyond_chapter": s.beyond_chapter,
     }
 
 

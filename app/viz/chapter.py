@@ -3,7 +3,9 @@
 Each scene is listed under the section it belongs to (its declared
 ``section``); a section that teaches something a scene's panels show (a force
 of constraint, a conserved momentum, h against E, small oscillations) also
-points to those scenes.
+points to those scenes.  Scenes marked ``beyond_chapter`` are listed under a
+heading of their own after the chapter's sections (and, as "also shown in",
+under the section they build on).
 """
 
 from __future__ import annotations
@@ -74,6 +76,12 @@ SECTIONS: tuple[Section, ...] = (
     ),
 )
 
+BEYOND = Section(
+    "+",
+    "Beyond the chapter",
+    "Where a course goes next: normal modes of several coordinates, beats, Hamilton's equations and chaos.",
+)
+
 _NUMBER = re.compile(r"4\.\d")
 
 
@@ -89,8 +97,9 @@ def section_numbers(section: str) -> list[str]:
 def table_of_contents(scenes: list[dict[str, Any]]) -> list[dict[str, Any]]:
     """Sections in order, each with its own scenes and the scenes that illustrate it elsewhere."""
     toc = []
+    chapter = [s for s in scenes if not s.get("beyond_chapter")]
     for section in SECTIONS:
-        own = [s for s in scenes if section.number in section_numbers(s["section"])[:1]]
+        own = [s for s in chapter if section.number in section_numbers(s["section"])[:1]]
         also = [
             s
             for s in scenes
@@ -99,5 +108,10 @@ def table_of_contents(scenes: list[dict[str, Any]]) -> list[dict[str, Any]]:
         ]
         toc.append(
             {"number": section.number, "title": section.title, "blurb": section.blurb, "scenes": own, "also": also}
+        )
+    beyond = [s for s in scenes if s.get("beyond_chapter")]
+    if beyond:
+        toc.append(
+            {"number": BEYOND.number, "title": BEYOND.title, "blurb": BEYOND.blurb, "scenes": beyond, "also": []}
         )
     return toc

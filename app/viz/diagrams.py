@@ -31,6 +31,8 @@ FAMILIES: dict[str, Family] = {
     "tabletop-spring": blocks.tabletop,
     "rail-two-body": blocks.rail_two_body,
     "pulley": blocks.pulley,
+    "double-pendulum": swing.double_pendulum,
+    "coupled-oscillators": blocks.coupled_oscillators,
 }
 
 Particle = tuple[str, Sequence[str]]  # (label, (x, y, z) expression strings)

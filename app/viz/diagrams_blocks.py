@@ -159,3 +159,27 @@ def pulley(p: dict[str, float], q: dict[str, float]) -> Svg:
     svg.arrow(mid, 48, mid, 84, color=PARAM)
     svg.text(mid + 12, 66, "g", PARAM)
     return svg
+
+
+def coupled_oscillators(p: dict[str, float], q: dict[str, float]) -> Svg:
+    svg = Svg()
+    floor, w = 150.0, 36.0
+    svg.line(10, floor, 310, floor, INK, 3)
+    for wall in (14.0, 306.0):
+        svg.line(wall, floor - 70, wall, floor, INK, 3)
+    x1, x2 = 108.0, 212.0  # rest positions of the two masses
+    for x, name in ((x1, "m"), (x2, "m")):
+        svg.rect(x - w / 2, floor - 34, w, 32)
+        svg.text(x, floor - 14, name, PARAM, 15)
+    svg.spring(14, floor - 18, x1 - w / 2, floor - 18, coils=6)
+    svg.spring(x1 + w / 2, floor - 18, x2 - w / 2, floor - 18, coils=6)
+    svg.spring(x2 + w / 2, floor - 18, 306, floor - 18, coils=6)
+    svg.text((14 + x1 - w / 2) / 2, floor - 40, "k", PARAM, 16)
+    svg.text((x1 + x2) / 2, floor - 40, "κ", PARAM, 16)
+    svg.text((x2 + w / 2 + 306) / 2, floor - 40, "k", PARAM, 16)
+    # displacements measured from the rest positions
+    for x, name in ((x1, "x₁"), (x2, "x₂")):
+        svg.line(x, floor + 6, x, floor + 40, GUIDE, 1.2, dash=True)
+        svg.arrow(x, floor + 30, x + 34, floor + 30, color=ACCENT)
+        svg.text(x + 18, floor + 52, name, ACCENT, 16)
+    return svg

@@ -149,3 +149,33 @@ def rotating_parabola(p: dict[str, float], q: dict[str, float]) -> Svg:
     svg.text(205, 196, "z = α ρ²", PARAM, 15, anchor="start")
     _gravity(svg, 284, 110)
     return svg
+
+
+def double_pendulum(p: dict[str, float], q: dict[str, float]) -> Svg:
+    svg = Svg()
+    t1 = _drawing_angle(q.get("theta1", 0.6), 0.35, 0.7)
+    t2 = _drawing_angle(q.get("theta2", 0.9), 0.5, 1.0)
+    px, py, l1, l2 = 130.0, 24.0, 92.0, 84.0
+    ax, ay = px + l1 * math.sin(t1), py + l1 * math.cos(t1)
+    bx, by = ax + l2 * math.sin(t2), ay + l2 * math.cos(t2)
+    svg.line(px - 40, py, px + 40, py, width=3)
+    for i in range(5):
+        svg.line(px - 36 + 18 * i, py, px - 44 + 18 * i, py - 8, width=1.2)
+    # the angles, each from the downward vertical through its own pivot
+    svg.line(px, py, px, py + l1 + 10, GUIDE, 1.5, dash=True)
+    svg.line(ax, ay, ax, ay + l2 + 10, GUIDE, 1.5, dash=True)
+    svg.line(px, py, ax, ay, width=2)
+    svg.line(ax, ay, bx, by, width=2)
+    svg.arc(px, py, 44, math.pi / 2, math.pi / 2 - t1, arrow=True)
+    svg.text(px + 58 * math.sin(t1 / 2) + 4, py + 58 * math.cos(t1 / 2), "θ₁", ACCENT, 16)
+    svg.arc(ax, ay, 40, math.pi / 2, math.pi / 2 - t2, arrow=True)
+    svg.text(ax + 54 * math.sin(t2 / 2) + 6, ay + 54 * math.cos(t2 / 2), "θ₂", ACCENT, 16)
+    # lengths on the outer side of each rod, away from the angle marks
+    svg.text((px + ax) / 2 + 16 * math.cos(t1), (py + ay) / 2 - 16 * math.sin(t1), "l₁", PARAM)
+    svg.text((ax + bx) / 2 + 16 * math.cos(t2), (ay + by) / 2 - 16 * math.sin(t2), "l₂", PARAM)
+    svg.circle(ax, ay, 10, fill="#c9d8ea")
+    svg.text(ax + 22, ay - 8, "m₁", PARAM)
+    svg.circle(bx, by, 10, fill="#c9d8ea")
+    svg.text(bx + 22, by + 4, "m₂", PARAM)
+    _gravity(svg, 40, 150)
+    return svg

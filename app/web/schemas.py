@@ -43,3 +43,4 @@ class SceneSummary(BaseModel):
     initial: dict[str, float]
     t_end: float
     panels: list[str]
+    beyond_chapter: bool = False

@@ -136,6 +136,38 @@ class EffectivePotential(BaseModel):
     equilibria: list[Equilibrium]
 
 
+class Mode(BaseModel):
+    model_config = OPEN
+    omega_squared: float = Field(description="At the default parameters; negative along an unstable direction.")
+    shape: dict[str, float] = Field(description="Amplitude of each coordinate, largest component 1.")
+    sympy: str | None = Field(description="omega^2 in closed form, when it is short.")
+    latex: str | None
+
+
+class NormalModesAt(BaseModel):
+    model_config = OPEN
+    equilibrium: dict[str, float] = Field(description="The equilibrium, coordinate -> value at the default parameters.")
+    stable: bool = Field(description="No mode grows exponentially (kind stable or neutral).")
+    kind: str = Field(description="stable (every omega^2 > 0), neutral (some omega^2 = 0) or unstable.")
+    momenta: dict[str, float] = Field(
+        description="Conserved momenta held fixed, for a steady motion of the one-coordinate reduction."
+    )
+    modes: list[Mode]
+
+
+class HamiltonEquation(BaseModel):
+    model_config = OPEN
+    coordinate: str
+    q_dot: ExprPair = Field(description="dH/dp_q, in q and the momenta p_q.")
+    p_dot: ExprPair = Field(description="-dH/dq plus the generalized force, in q and the momenta p_q.")
+
+
+class Hamilton(BaseModel):
+    model_config = OPEN
+    hamiltonian: ExprPair = Field(description="H(q, p, t); the momentum of coordinate q is the symbol p_q.")
+    equations: list[HamiltonEquation]
+
+
 class DerivationDocument(BaseModel):
     """The derivation JSON, the same document as GET /api/scenes/{id}/derivation."""
 
@@ -161,6 +193,8 @@ class DerivationDocument(BaseModel):
     energy_minus_hamiltonian: ExprPair
     effective_potential: EffectivePotential | None
     steps: list[Step]
+    hamilton: Hamilton | None = None
+    normal_modes: list[NormalModesAt] = Field(default_factory=list)
 
 
 class ValidationIssue(BaseModel):

@@ -174,3 +174,34 @@ def test_rotating_parabola_h_conserved_energy_not():
     # the equilibrium at the bottom is stable when omega^2 < 2 g alpha
     (bottom,) = d.reduction.equilibria
     assert bottom.position == 0 and same(bottom.omega_squared, 2 * g * alpha - omega**2)
+
+
+def test_coupled_oscillators_beat_at_the_difference_of_the_mode_frequencies():
+    import numpy as np
+
+    from app.numerics.simulate import simulate
+    from app.numerics.system import numeric_system
+    from app.scenes import SCENES
+
+    s = SCENES["coupled-oscillators"]
+    # by hand: in phase omega1² = k/m, in opposition omega2² = (k + 2 kappa)/m
+    m_, k_, kappa = 1.0, 10.0, 1.0
+    w1, w2 = np.sqrt(k_ / m_), np.sqrt((k_ + 2 * kappa) / m_)
+    beat = np.pi / (w2 - w1)  # the time for the motion to pass from x1 to x2
+    y0 = np.array([s.initial[n] for n in ("x1", "x2", "x1_dot", "x2_dot")])
+    run = simulate(
+        numeric_system(derivation("coupled-oscillators")),
+        np.array([m_, k_, kappa]),
+        y0,
+        2 * beat,
+        4001,
+        "DOP853-compiled",
+        estimate=False,
+    ).trajectory
+    # x1 = a cos((w2 - w1) t/2) cos((w1 + w2) t/2), x2 = a sin((w2 - w1) t/2) sin((w1 + w2) t/2)
+    a, t = y0[0], run.t
+    assert np.allclose(run.y[:, 0], a * np.cos((w2 - w1) * t / 2) * np.cos((w1 + w2) * t / 2), atol=1e-6)
+    assert np.allclose(run.y[:, 1], a * np.sin((w2 - w1) * t / 2) * np.sin((w1 + w2) * t / 2), atol=1e-6)
+    # about one carrier period around the beat time: x1 nearly still, x2 swinging with all the amplitude
+    near = np.abs(t - beat) < np.pi / (w1 + w2) * 2
+    assert np.abs(run.y[near, 0]).max() < 0.2 * a and np.abs(run.y[near, 1]).max() > 0.95 * a

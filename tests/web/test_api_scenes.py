@@ -4,6 +4,7 @@ import pytest
 import sympy as sp
 
 from app.scenes import SCENES
+from tests.reference import numerically_equal
 
 
 def names_for(doc):
@@ -45,11 +46,13 @@ def test_derivation_contract(client, scene_id):
     assert doc["steps"] and all(set(s) == {"title", "latex", "sympy", "explanation"} for s in doc["steps"])
     # velocities print with dots, never as q_dot
     assert "_dot" not in doc["lagrangian"]["latex"] and r"\dot" in doc["lagrangian"]["latex"]
-    # every equation of motion, evaluated with the served accelerations, vanishes
+    # every equation of motion, evaluated with the served accelerations, vanishes (at random states:
+    # simplify cannot always prove it for the double pendulum's angle differences)
     subs = {names[f"{q}_ddot"]: sp.sympify(doc["accelerations"][q]["sympy"], locals=names) for q in doc["coordinates"]}
+    symbols = sorted(names.values(), key=str)
     for eq in doc["equations_of_motion"]:
         residual = sp.sympify(eq["sympy"], locals=names).xreplace(subs)
-        assert sp.simplify(residual) == 0
+        assert numerically_equal(residual, sp.Integer(0), symbols)
 
 
 def test_unknown_scene_is_404_with_a_message(client):

@@ -79,6 +79,18 @@ def test_lagrangian_form_and_same_contract_as_scenes(client):
     assert numerically_equal(ours, theirs[0], sorted(names.values(), key=str))
 
 
+def test_user_documents_carry_hamiltons_equations_and_normal_modes(client):
+    doc = derive(client, DOUBLE_PENDULUM)
+    names = symbols_of(doc)
+    names |= {f"p_{q}": sp.Symbol(f"p_{q}", real=True) for q in doc["coordinates"]}
+    sp.sympify(doc["hamilton"]["hamiltonian"]["sympy"], locals=names)
+    assert [e["coordinate"] for e in doc["hamilton"]["equations"]] == doc["coordinates"]
+    # four equilibria of a double pendulum, only the hanging one stable
+    assert sorted(e["kind"] for e in doc["normal_modes"]) == ["stable", "unstable", "unstable", "unstable"]
+    titles = [s["title"] for s in doc["steps"]]
+    assert "Hamilton's equations" in titles and "Equilibria" in titles
+
+
 def test_parameters_given_by_name_default_to_one(client):
     doc = derive(client, SPINNING_HOOP)
     assert doc["parameters"]["m"]["default"] == 1.0

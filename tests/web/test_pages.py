@@ -167,10 +167,16 @@ def test_set_up_diagram_labels_the_coordinates_and_parameters(pages, scene_id):
 
 
 def test_every_scene_is_in_exactly_one_section():
-    scenes = [{"id": s.id, "section": s.section, "panels": list(s.panels)} for s in SCENES.values()]
+    scenes = [
+        {"id": s.id, "section": s.section, "panels": list(s.panels), "beyond_chapter": s.beyond_chapter}
+        for s in SCENES.values()
+    ]
     toc = table_of_contents(scenes)
     owners = {sid: [s["number"] for s in toc if sid in [x["id"] for x in s["scenes"]]] for sid in SCENES}
     assert all(len(v) == 1 for v in owners.values()), owners
+    # the scenes beyond the chapter under their own heading, after the chapter's sections
+    assert toc[-1]["title"] == "Beyond the chapter"
+    assert {x["id"] for x in toc[-1]["scenes"]} == {sid for sid, s in SCENES.items() if s.beyond_chapter}
     assert section_numbers("§ 4.6–4.7") == ["4.6", "4.7"]
 
 

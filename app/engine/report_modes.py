@@ -1,0 +1,207 @@
+"""Hamilton's equations and the normal modes as derivation steps and as JSON.
+
+Steps follow ``app.engine.report`` (``{"title", "latex", "sympy",
+"explanation"}``); the JSON blocks are the derivation document's ``hamilton``
+and ``normal_modes``, with numbers at the default parameters.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import sympy as sp
+
+from app.engine.derive import Derivation
+from app.engine.hamilton import Hamilton
+from app.engine.modes import NEUTRAL, STABLE, Equilibrium, NormalModes
+from app.engine.report import Printer, _step, display, plain_name
+
+
+def _show(expr: sp.Expr) -> sp.Expr:
+    """Hamilton's expressions are compact as built: only common factors are pulled out."""
+    return sp.factor_terms(expr)
+
+
+def hamilton_printer(d: Derivation, ham: Hamilton) -> Printer:
+    """The derivation's printer, with the momentum of coordinate q printed p_q."""
+    names = d.table.latex_names()
+    for q, P in zip(d.table.q, ham.momenta, strict=True):
+        names[P] = f"p_{{{names[q]}}}"
+    return Printer(names)
+
+
+def hamilton_steps(d: Derivation, ham: Hamilton) -> list[dict[str, str]]:
+    table = d.table
+    pr = hamilton_printer(d, ham)
+    qn = [pr.tex(s) for s in table.q]
+    pn = [pr.tex(P) for P in ham.momenta]
+    vn = [pr.tex(v) for v in table.qd]
+    velocities = [_show(v) for v in ham.velocities]
+    H = _show(ham.hamiltonian)
+    p_dot = [_show(x) for x in ham.p_dot]
+    forced = any(f != 0 for f in d.mechanics.Q)
+    offsets = any(b != 0 for b in ham.offsets)
+    return [
+        _step(
+            "Velocities from the momenta",
+            [f"{vn[k]} = {pr.tex(v)}" for k, v in enumerate(velocities)],
+            velocities,
+            "The momenta are linear in the velocities, p = M q̇ + b"
+            + (" (b, the momenta at rest, comes from the terms of L linear in q̇)" if offsets else "")
+            + "; solving for the velocities gives q̇ = M⁻¹ (p − b).",
+        ),
+        _step(
+            "Hamiltonian H(q, p)",
+            [rf"H = \sum_k p_k \dot{{q}}_k - L = {pr.tex(H)}"],
+            H,
+            "The same h, now written in the coordinates and momenta: H = ½ (p − b)·M⁻¹(p − b) − L(q, q̇ = 0).",
+        ),
+        _step(
+            "Hamilton's equations",
+            [rf"{vn[k]} = \frac{{\partial H}}{{\partial {pn[k]}}} = {pr.tex(v)}" for k, v in enumerate(velocities)]
+            + [
+                rf"\dot{{{pn[k]}}} = -\frac{{\partial H}}{{\partial {qn[k]}}}"
+                + (f" + Q_{{{qn[k]}}}" if d.mechanics.Q[k] != 0 else "")
+                + f" = {pr.tex(x)}"
+                for k, x in enumerate(p_dot)
+            ],
+            [*velocities, *p_dot],
+            "Two first-order equations per coordinate replace each second-order Euler–Lagrange equation"
+            + (", with the generalized forces added to ṗ." if forced else "."),
+        ),
+    ]
+
+
+def hamilton_json(d: Derivation, ham: Hamilton) -> dict[str, Any]:
+    pr = hamilton_printer(d, ham)
+    return {
+        "hamiltonian": pr.pair(_show(ham.hamiltonian)),
+        "momenta": {name: P.name for name, P in zip(d.table.names, ham.momenta, strict=True)},
+        "equations": [
+            {"coordinate": name, "q_dot": pr.pair(_show(v)), "p_dot": pr.pair(_show(x))}
+            for name, v, x in zip(d.table.names, ham.velocities, ham.p_dot, strict=True)
+        ],
+    }
+
+
+def _number(x: float) -> str:
+    return f"{x:.6g}"
+
+
+def _where(e: Equilibrium, pr: Printer, d: Derivation) -> str:
+    table = d.table
+    sym = {s.name: s for s in table.q}
+    parts = []
+    for name, value in e.position.items():
+        exact = e.exact.get(name) if e.exact else None
+        parts.append(f"{pr.tex(sym[name])} = {pr.tex(exact) if exact is not None else _number(value)}")
+    held = [rf"{pr.tex(sp.Symbol(n))} = {_number(v)}" for n, v in e.momenta.items()]
+    return r",\; ".join(parts + held)
+
+
+_KIND = {
+    STABLE: "every ω² is positive, so each mode oscillates: a stable equilibrium",
+    NEUTRAL: "one ω² is zero: along that mode nothing pulls back and the system drifts at constant speed "
+    "(a neutral direction), while the other modes oscillate",
+    "unstable": "a negative ω² means that small displacements along that mode grow like exp(√(−ω²) t): "
+    "an unstable equilibrium",
+}
+
+
+def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
+    table = d.table
+    pr = Printer(table.latex_names())
+    qn = [pr.tex(s) for s in table.q]
+    plain = d.mechanics.T is not None and d.mechanics.U is not None and sp.expand(d.mechanics.U - nm.potential) == 0
+    vname = "U" if plain else "V"
+    forced = any(f.xreplace(dict.fromkeys(table.qd, 0)) != 0 for f in d.mechanics.Q)
+    rows = [
+        rf"\frac{{\partial {vname}}}{{\partial {qn[k]}}}{' - Q' if forced else ''} = {pr.tex(display(g))}"
+        + (" = 0" if g != 0 else "")
+        for k, g in enumerate(nm.condition)
+    ]
+    if not plain:
+        rows.insert(0, rf"V = -L\big|_{{\dot q = 0}} = {pr.tex(display(nm.potential))}")
+    found = [e for e in nm.equilibria if not e.momenta]
+    rows += [_where(e, pr, d) for e in found]
+    sym = {s.name: s for s in table.q}
+    rows += [
+        r",\; ".join(f"{pr.tex(sym[n])} = {_number(v)}" for n, v in point.items()) + r"\quad (M \text{ singular})"
+        for point in nm.singular
+    ]
+    why = "At rest (q̇ = 0) the state stays put where every generalized force vanishes. "
+    if not plain:
+        why += "V = U − T₀ includes the velocity-free part T₀ of the kinetic energy (a moving constraint's share). "
+    if nm.note:
+        why += nm.note
+    elif nm.solved:
+        why += "The conditions were solved exactly" + (
+            "; a coordinate they leave free is set to 0." if any(len(e.position) > 1 for e in found) else "."
+        )
+    else:
+        why += "No closed form was found in time, so the equilibria were found numerically at the default parameters."
+    if nm.singular:
+        why += (
+            f" At {len(nm.singular)} of them the mass matrix is singular (the coordinates break down there, like "
+            "polar coordinates at the origin), so no modes are computed at those points."
+        )
+    steps = [_step("Equilibria", rows, list(nm.condition), why)]
+    for e in nm.equilibria:
+        steps.append(_equilibrium_step(e, pr, d, nm.damped))
+    return steps
+
+
+def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, damped: bool) -> dict[str, str]:
+    sym = {s.name: s for s in d.table.q}
+    where = _where(e, pr, d)
+    rows = [rf"M = {pr.tex(e.mass)},\quad K = {pr.tex(e.stiffness)}"]
+    for i, m in enumerate(e.modes, start=1):
+        value = (
+            pr.tex(m.exact) + r" \approx " + _number(m.omega_squared)
+            if m.exact is not None and not m.exact.is_number
+            else _number(m.omega_squared)
+        )
+        shape = ", ".join(f"{pr.tex(sym[n])}: {_number(a)}" for n, a in zip(e.coordinates, m.shape, strict=True))
+        rows.append(rf"\omega_{{{i}}}^2 = {value},\quad \text{{shape }} ({shape})")
+    if e.momenta:
+        title = f"Small oscillations about the steady motion at {plain_name(e.coordinates[0])} = {_number(e.position[e.coordinates[0]])}"
+        why = (
+            "With the conserved momenta held at the values shown, the reduced coordinate sits at a minimum or maximum of "
+            "U_eff: the body moves steadily (a circular or conical orbit), and ω² = U_eff''/m_eff. "
+        )
+    else:
+        title = "Normal modes about " + ", ".join(f"{plain_name(n)} = {_number(v)}" for n, v in e.position.items())
+        why = (
+            "Near the equilibrium M ε̈ + K ε = 0 with M the mass matrix and K the Hessian of the potential there; "
+            "ε = a cos ωt solves it when (K − ω² M) a = 0, so each ω² is an eigenvalue of K relative to M and a its shape "
+            "(numbers at the default parameters). "
+        )
+    why += _KIND[e.kind][0].upper() + _KIND[e.kind][1:] + "."
+    if damped:
+        why += " Velocity terms (damping or gyroscopic forces) are left out of these frequencies."
+    return _step(
+        title, [where, *rows], [e.mass.tolist(), e.stiffness.tolist(), [m.omega_squared for m in e.modes]], why
+    )
+
+
+def normal_modes_json(nm: NormalModes, pr: Printer) -> list[dict[str, Any]]:
+    return [
+        {
+            "equilibrium": dict(e.position),
+            "exact": {n: pr.pair(x) for n, x in e.exact.items()} if e.exact else None,
+            "momenta": dict(e.momenta),
+            "stable": e.stable,
+            "kind": e.kind,
+            "coordinates": list(e.coordinates),
+            "modes": [
+                {
+                    "omega_squared": m.omega_squared,
+                    "shape": dict(zip(e.coordinates, m.shape, strict=True)),
+                    "sympy": sp.sstr(m.exact) if m.exact is not None else None,
+                    "latex": pr.tex(m.exact) if m.exact is not None else None,
+                }
+                for m in e.modes
+            ],
+        }
+        for e in nm.equilibria
+    ]

@@ -1,0 +1,114 @@
+"""Poincaré sections of scenes and user systems: checked options in, the documented JSON out.
+
+``section_of_derivation`` is the entry point the pages (and a later API route)
+call with a derivation; ``section_of_scene`` looks the scene up.  The result:
+
+    {"coordinate": q_i, "value": c, "direction": +1 | -1, "energy": E,
+     "axes": {"q": q_j, "q_dot": q_j + "_dot", "p": "p_" + q_j},
+     "orbits": [{"initial": {...}, "t": [...], "q": [...], "q_dot": [...], "p": [...],
+                 "energy_drift": number, "complete": bool}],
+     "stats": {"wall_time_s": number, "crossings": int}}
+
+(q_j is the first coordinate other than q_i: the plane's points are (q_j, p_j).)
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+from app.engine.derive import Derivation
+from app.numerics import limits
+from app.numerics.errors import Busy, SimulationError
+from app.numerics.poincare import hamiltonian, section
+from app.service.simulation import _SLOTS, COMPILED, _check_number, _setting, initial_state, parameter_vector
+
+COUNT_MAX = 12  # orbits per section
+T_END_MAX = 2_000.0  # seconds of simulated time per orbit
+DEFAULT_COUNT = 6
+DEFAULT_T_END = 200.0
+
+
+def section_of_derivation(
+    d: Derivation,
+    *,
+    parameters: Mapping[str, float] | None = None,
+    energy: float | None = None,
+    initial: Mapping[str, float] | None = None,
+    coordinate: str | None = None,
+    value: float = 0.0,
+    direction: int = 1,
+    count: int = DEFAULT_COUNT,
+    t_end: float = DEFAULT_T_END,
+    key: str | None = None,
+    defaults: Mapping[str, float] | None = None,
+    constraint_forces: Sequence[dict[str, Any]] = (),
+) -> dict[str, Any]:
+    """The section q_coordinate = value of orbits with h = energy (or h at ``initial``); refusals raise SimulationError."""
+    names = list(d.table.names)
+    if len(names) < 2:
+        raise SimulationError("a Poincaré section needs at least two coordinates; this system has one", "coordinate")
+    coordinate = names[1] if coordinate is None else coordinate
+    if coordinate not in names:
+        raise SimulationError(f"unknown coordinate {coordinate[:40]!r}; choose one of {', '.join(names)}", "coordinate")
+    if direction not in (1, -1):
+        raise SimulationError("direction must be 1 (crossing upward) or -1 (downward)", "direction")
+    value = _check_number(value, "value")
+    count = int(_setting(count, DEFAULT_COUNT, 1, COUNT_MAX, "count"))
+    t_end = _setting(t_end, DEFAULT_T_END, 1e-6, T_END_MAX, "t_end")
+    k = parameter_vector(d, parameters or {})
+    system, observables = COMPILED.get(key, d, constraint_forces)
+    if energy is None:
+        y0 = initial_state(d, initial or {}, defaults or {})
+        energy = float(hamiltonian(observables, y0, k)[0])
+    energy = _check_number(energy, "energy")
+    if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
+        raise Busy("too many simulations are running at once; try again in a few seconds")
+    start = time.perf_counter()
+    try:
+        cut = section(
+            system, observables, k, energy, names.index(coordinate), value, direction, count, t_end, limits.WALL_SECONDS
+        )
+    finally:
+        _SLOTS.release()
+    other = next(n for n in names if n != coordinate)
+    j = names.index(other)
+    n = len(names)
+    return {
+        "coordinate": coordinate,
+        "value": value,
+        "direction": direction,
+        "energy": energy,
+        "axes": {"q": other, "q_dot": f"{other}_dot", "p": f"p_{other}"},
+        "orbits": [
+            {
+                "initial": {
+                    **{q: float(o.start[i]) for i, q in enumerate(names)},
+                    **{f"{q}_dot": float(o.start[n + i]) for i, q in enumerate(names)},
+                },
+                "t": o.t.tolist(),
+                "q": o.states[:, j].tolist(),
+                "q_dot": o.states[:, n + j].tolist(),
+                "p": o.momenta[:, j].tolist(),
+                "energy_drift": o.energy_drift,
+                "complete": o.complete,
+            }
+            for o in cut.orbits
+        ],
+        "stats": {
+            "wall_time_s": time.perf_counter() - start,
+            "crossings": int(sum(o.t.size for o in cut.orbits)),
+        },
+    }
+
+
+def section_of_scene(scene_id: str, **options: Any) -> dict[str, Any]:
+    """A scene's Poincaré section; the energy defaults to h at the scene's initial state."""
+    from app.service.derivations import derivation, derivation_document, scene
+
+    s = scene(scene_id)
+    forces = derivation_document(scene_id).get("constraint_forces") or []
+    return section_of_derivation(
+        derivation(scene_id), key=scene_id, defaults=s.initial, constraint_forces=forces, **options
+    )

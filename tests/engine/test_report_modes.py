@@ -1,0 +1,75 @@
+"""The new JSON blocks and steps: ``hamilton`` and ``normal_modes`` in every derivation document."""
+
+import math
+
+import pytest
+import sympy as sp
+
+from app.scenes import SCENES
+from app.service.derivations import derivation_document
+from app.web.schemas_user import DerivationDocument
+from tests.reference import numerically_equal
+
+
+def names_of(doc):
+    names = {"t": sp.Symbol("t", real=True)}
+    for q in doc["coordinates"]:
+        for s in ("", "_dot"):
+            names[q + s] = sp.Symbol(q + s, real=True)
+        names[f"p_{q}"] = sp.Symbol(f"p_{q}", real=True)
+    names |= {p: sp.Symbol(p, real=True) for p in doc["parameters"]}
+    return names
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_hamilton_block_parses_and_its_hamiltonian_is_h(scene_id):
+    doc = derivation_document(scene_id)
+    DerivationDocument.model_validate(doc)  # the documented schema holds
+    names = names_of(doc)
+    ham = doc["hamilton"]
+    assert [e["coordinate"] for e in ham["equations"]] == doc["coordinates"]
+    H = sp.sympify(ham["hamiltonian"]["sympy"], locals=names)
+    momenta = {names[f"p_{q}"]: sp.sympify(doc["momenta"][q]["sympy"], locals=names) for q in doc["coordinates"]}
+    h = sp.sympify(doc["hamiltonian"]["sympy"], locals=names)
+    symbols = sorted(set(names.values()), key=str)
+    assert numerically_equal(H.xreplace(momenta), h, symbols)
+    for e in ham["equations"]:
+        # q_dot(q, p) evaluated at p = p(q, q_dot) is the velocity itself
+        v = sp.sympify(e["q_dot"]["sympy"], locals=names).xreplace(momenta)
+        assert numerically_equal(v, names[e["coordinate"] + "_dot"], symbols)
+        assert e["p_dot"]["latex"] and e["q_dot"]["latex"]
+    titles = [s["title"] for s in doc["steps"]]
+    assert titles.index("Hamilton's equations") > titles.index("Hamiltonian")
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_normal_modes_block_has_numbers_at_the_defaults(scene_id):
+    doc = derivation_document(scene_id)
+    names = names_of(doc)
+    defaults = {names[p]: v["default"] for p, v in doc["parameters"].items()}
+    titles = [s["title"] for s in doc["steps"]]
+    assert "Equilibria" in titles
+    for entry in doc["normal_modes"]:
+        assert set(entry["equilibrium"]) <= set(doc["coordinates"])
+        assert entry["kind"] in ("stable", "neutral", "unstable")
+        assert entry["stable"] == (entry["kind"] != "unstable")
+        assert entry["stable"] == all(m["omega_squared"] > -1e-9 for m in entry["modes"])
+        for m in entry["modes"]:
+            assert math.isfinite(m["omega_squared"]) and set(m["shape"]) == set(entry["equilibrium"])
+            if m["sympy"] is not None:
+                value = sp.sympify(m["sympy"], locals=names).xreplace(defaults)
+                assert float(value) == pytest.approx(m["omega_squared"], rel=1e-9, abs=1e-12)
+                assert m["latex"]
+
+
+def test_which_scenes_have_which_equilibria():
+    kinds = {sid: [e["kind"] for e in derivation_document(sid)["normal_modes"]] for sid in SCENES}
+    assert kinds["simple-pendulum"] == ["stable", "unstable"]
+    assert kinds["rail-two-body"] == ["neutral"]
+    assert kinds["double-pendulum"] == ["stable", "unstable", "unstable", "unstable"]
+    assert kinds["coupled-oscillators"] == ["stable"]
+    # the conical orbit of the spherical pendulum, at the scene's own p_phi
+    (conical,) = derivation_document("spherical-pendulum")["normal_modes"]
+    assert conical["momenta"] == {"p_phi": pytest.approx(2.0 * math.sin(2.2) ** 2)}
+    for sid in ("helix-bead", "incline-block", "pulley", "movable-incline"):
+        assert kinds[sid] == []
