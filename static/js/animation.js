@@ -165,7 +165,8 @@ export class Player {
     this.dt = dt;
     this.trailLength = Math.max(2, Math.min(MAX_TRAIL, Math.round(TRAIL_SECONDS / dt)));
     this.ownersOf = this.owners(run.data.coordinates);
-    this.fit();
+    // while a body is dragged the view stays put, so the body follows the pointer
+    if (!this.dragging || !this.frame) this.fit();
     if (this.scrub) this.scrub.max = String(run.n - 1);
     // a new run (an input changed) keeps the instant shown, so dragging a slider does not jump back
     this.seek(Math.min(run.n - 1, Math.round(keep / dt)));
