@@ -9,6 +9,7 @@ keeps a stale module after an upgrade.
 
 from __future__ import annotations
 
+import gzip
 import hashlib
 import stat as stat_mode
 from functools import cache
@@ -47,11 +48,35 @@ class ClassroomStaticFiles(StaticFiles):
         except (OSError, ValueError):
             return None
         if found is None or not stat_mode.S_ISREG(found.st_mode):
-            return None
+            return await self._compress_small(path)
         response = self.file_response(full_path, found, scope)
         response.headers["Content-Encoding"] = "gzip"
         response.headers["Vary"] = "Accept-Encoding"
         return response
+
+
+    async def _compress_small(self, path: str) -> Response | None:
+        """Our own modules and styles (no .gz sibling, which could go stale while they are edited),
+        compressed once per version of the file and kept in memory."""
+        if not path.endswith((".js", ".css", ".svg")):
+            return None
+        try:
+            full_path, found = await anyio.to_thread.run_sync(self.lookup_path, path)
+        except (OSError, ValueError):
+            return None
+        if found is None or not stat_mode.S_ISREG(found.st_mode) or found.st_size > _SMALL:
+            return None
+        key = (full_path, found.st_mtime_ns, found.st_size)
+        body = _gzipped.get(key)
+        if body is None:
+            body = await anyio.to_thread.run_sync(lambda: gzip.compress(Path(full_path).read_bytes(), 9))
+            _gzipped[key] = body
+        media = {"js": "text/javascript", "css": "text/css", "svg": "image/svg+xml"}[path.rsplit(".", 1)[1]]
+        return Response(body, media_type=media, headers={"Content-Encoding": "gzip", "Vary": "Accept-Encoding"})
+
+
+_SMALL = 512 * 1024
+_gzipped: dict[tuple[str, int, int], bytes] = {}
 
 
 def _root() -> Path:

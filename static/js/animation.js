@@ -235,8 +235,16 @@ export class Player {
       ctx.lineWidth = (selected ? 4 : 1.5) * dpr;
       ctx.beginPath(); ctx.arc(x, y, 10 * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
       if (this.masses.length > 1) {
+        // labels point away from the middle of the view and alternate above and below,
+        // with a white halo, so bodies that meet keep readable labels
+        const left = x < this.canvas.width / 2;
+        ctx.textAlign = left ? "right" : "left";
+        const lx = x + (left ? -14 : 14) * dpr, ly = y + (k % 2 ? 22 : -12) * dpr;
+        ctx.strokeStyle = "#fff"; ctx.lineWidth = 4 * dpr;
+        ctx.strokeText(this.spec.points[p].label, lx, ly);
         ctx.fillStyle = "#1b1f24";
-        ctx.fillText(this.spec.points[p].label, x + 13 * dpr, y - 11 * dpr);
+        ctx.fillText(this.spec.points[p].label, lx, ly);
+        ctx.textAlign = "left";
       }
       bodies.push({ label: this.spec.points[p].label, x: Math.round(x / dpr), y: Math.round(y / dpr) });
     });
