@@ -8,6 +8,10 @@
  * to an outside service (no Chart Studio, no "Share").  On a coarse pointer (a phone) the
  * plots do not zoom or pan on drag, so a swipe that starts on a plot scrolls the page;
  * a "Zoom" button in the panel's tools turns dragging on for that plot.
+ *
+ * react(panel, traces, layout): Plotly.react for the server's run; for the browser's preview
+ * (panel.previewing) the traces are drawn as lines on a canvas over the plot, in its current
+ * axes, with the plot itself greyed: a few milliseconds instead of a Plotly redraw.
  */
 
 export const COARSE = typeof matchMedia === "function" && matchMedia("(pointer: coarse)").matches;
@@ -45,6 +49,18 @@ export function parts(section) {
 
 const SVG = "http://www.w3.org/2000/svg";
 
+export function react(panel, traces, lay) {
+  const plot = panel.plot;
+  if (panel.previewing && plot._fullLayout && panel.overlay) {
+    panel.overlay.lines(traces);
+    panel.section.classList.add("previewing");
+    return null;
+  }
+  panel.overlay?.lines([]);
+  panel.section.classList.remove("previewing");
+  return Plotly.react(plot, traces, lay, CONFIG);
+}
+
 /** An SVG over a Plotly plot: a vertical time cursor, markers and level lines in data coordinates. */
 export class Overlay {
   constructor(plot) {
@@ -73,6 +89,48 @@ export class Overlay {
       Plotly.relayout(this.plot, { dragmode: on ? "zoom" : false });
     });
     tools.append(button);
+  }
+
+  /** Preview lines: traces ({x, y, line: {color, dash}, yaxis}) drawn on a canvas in the plot's axes. */
+  lines(traces) {
+    if (!this.canvas) {
+      this.canvas = document.createElement("canvas");
+      this.canvas.className = "plot-preview";
+      this.canvas.setAttribute("aria-hidden", "true");
+      this.svg.before(this.canvas);
+    }
+    const c = this.canvas, dpr = window.devicePixelRatio || 1;
+    const w = this.plot.clientWidth, h = this.plot.clientHeight;
+    if (c.width !== Math.round(w * dpr) || c.height !== Math.round(h * dpr)) {
+      c.width = Math.round(w * dpr); c.height = Math.round(h * dpr);
+    }
+    const ctx = c.getContext("2d");
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    ctx.clearRect(0, 0, w, h);
+    c.dataset.lines = String(traces.length);
+    const fl = this.plot._fullLayout;
+    if (!fl || !traces.length) return;
+    for (const tr of traces) {
+      const xa = fl.xaxis, ya = fl[tr.yaxis ? `yaxis${tr.yaxis.slice(1)}` : "yaxis"];
+      if (!xa || !ya || !tr.x || !tr.y) continue;
+      ctx.save();
+      ctx.beginPath();
+      ctx.rect(xa._offset, ya._offset, xa._length, ya._length);
+      ctx.clip();
+      ctx.strokeStyle = (tr.line && tr.line.color) || (tr.marker && tr.marker.color) || "#1b1f24";
+      ctx.lineWidth = 2;
+      ctx.setLineDash(tr.line && tr.line.dash === "dash" ? [6, 4] : []);
+      ctx.beginPath();
+      let pen = false;
+      for (let i = 0; i < tr.x.length; i++) {
+        const x = xa._offset + xa.l2p(tr.x[i]), y = ya._offset + ya.l2p(tr.y[i]);
+        if (!Number.isFinite(x) || !Number.isFinite(y)) { pen = false; continue; }
+        if (pen) ctx.lineTo(x, y); else ctx.moveTo(x, y);
+        pen = true;
+      }
+      ctx.stroke();
+      ctx.restore();
+    }
   }
 
   item(key, tag, attrs) {

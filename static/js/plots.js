@@ -13,7 +13,7 @@
  * Each panel writes a text alternative (a data table) into its .data-summary and
  * a one-line reading into its .readout.
  */
-import { axis, capital, COLORS, CONFIG, diff, finite, layout, line, Overlay, PALETTE, parts } from "./plotkit.js";
+import { axis, capital, COLORS, CONFIG, diff, finite, layout, line, Overlay, PALETTE, parts, react } from "./plotkit.js";
 import { EffectivePotentialPanel, SmallOscillationsPanel } from "./reduction.js";
 import { fmt, seriesTable, table } from "./summaries.js";
 
@@ -31,7 +31,7 @@ class TimePanel {
     const grid = bottom
       ? { yaxis: axis(yTitle, { domain: [0.42, 1], ...(extra.yaxis || {}) }), yaxis2: axis(bottomTitle, { domain: [0, 0.3], exponentformat: "e" }), xaxis: axis("t (s)", { anchor: "y2" }), height: 380 }
       : { yaxis: axis(yTitle), xaxis: axis("t (s)") };
-    Plotly.react(this.plot, traces, layout({ ...grid, shapes: extra.shapes || [] }), CONFIG);
+    react(this, traces, layout({ ...grid, shapes: extra.shapes || [] }));
   }
 
   cursor(i, run) {
@@ -138,7 +138,7 @@ class PhasePanel {
     const traces = [
       { type: "scatter", mode: "lines", x: q, y: v, name: "trajectory", line: { color: COLORS.T, width: 1.5 } },
     ];
-    Plotly.react(this.plot, traces, layout({ hovermode: "closest", xaxis: axis(`${lq} (${unit})`), yaxis: axis(`${run.data.labels[this.q + "_dot"]} (${unit}/s)`) }), CONFIG);
+    react(this, traces, layout({ hovermode: "closest", xaxis: axis(`${lq} (${unit})`), yaxis: axis(`${run.data.labels[this.q + "_dot"]} (${unit}/s)`) }));
     this.readout.textContent = `${lq} ranges over [${fmt(Math.min(...q))}, ${fmt(Math.max(...q))}] ${unit}; its rate over [${fmt(Math.min(...v))}, ${fmt(Math.max(...v))}] ${unit}/s.`;
     seriesTable(this.summary, `Phase portrait of ${lq}`, run.t, [{ name: lq, values: q }, { name: run.data.labels[this.q + "_dot"], values: v }]);
   }

@@ -11,7 +11,7 @@
  * coordinates take their values from the initial state.
  */
 import { compile } from "./expr.js";
-import { axis, COLORS, CONFIG, finite, layout, Overlay, parts } from "./plotkit.js";
+import { axis, COLORS, finite, layout, Overlay, parts, react } from "./plotkit.js";
 import { fmt, table } from "./summaries.js";
 
 /** The one-coordinate reduction evaluated for a run: U_eff, m_eff, the momenta's values, E_r(t). */
@@ -76,7 +76,7 @@ export class EffectivePotentialPanel {
       { type: "scatter", mode: "lines", x: this.grid, y: u, name: "U_eff", line: { color: COLORS.U, width: 2.5 } },
     ];
     const lay = layout({ hovermode: "closest", xaxis: axis(`${lr} (${unit})`, { range: [lo, hi] }), yaxis: axis("U_eff (J)", { range: [bottom - 0.1 * d, top + 0.6 * d] }) });
-    Plotly.react(this.plot, traces, lay, CONFIG);
+    react(this, traces, lay);
     this.turningCache = new Map();
     const momenta = Object.entries(this.red.P).map(([k, v]) => `${run.data.labels[k] || k} = ${fmt(v)}`).join(", ");
     this.cursor(0, run);
@@ -155,7 +155,7 @@ export class SmallOscillationsPanel {
       const w = Math.sqrt(eq.w2), a = values[0] - eq.x, b = run.state[`${r}_dot`][0] / w;
       traces.push({ type: "scatter", mode: "lines", x: run.t, y: Array.from(run.t, (t) => eq.x + a * Math.cos(w * t) + b * Math.sin(w * t)), name: "small-oscillation prediction", line: { color: COLORS.U, width: 2, dash: "dash" } });
     }
-    Plotly.react(this.plot, traces, layout({ xaxis: axis("t (s)"), yaxis: axis(`${lr} (${unit})`) }), CONFIG);
+    react(this, traces, layout({ xaxis: axis("t (s)"), yaxis: axis(`${lr} (${unit})`) }));
     const predicted = eq ? Math.sqrt(eq.w2) : null;
     const rows = [
       ["predicted by the engine (ω² = U_eff''/m_eff)", predicted, predicted ? (2 * Math.PI) / predicted : null],

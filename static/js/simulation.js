@@ -148,6 +148,7 @@ export class SimulationView {
   drawPanel(p) {
     const run = p.dirty;
     p.dirty = null;
+    p.previewing = run.source === "preview";
     p.section.classList.remove("stale");
     try {
       const done = p.draw(run);
@@ -162,6 +163,7 @@ export class SimulationView {
   /** Draw a run; source is "preview" (the browser's) or "server". Resolves when the panels in view are drawn. */
   draw(run, source = "server") {
     this.run = run;
+    run.source = source;
     this.root.dataset.source = source;
     if (this.player) this.player.load(run);
     else this.setIndex(0);
@@ -242,14 +244,20 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
       pendingPreview = null;
       if (!rhs) return;
       if (req.samples === undefined) req.samples = samplesFor(req.t_end || data.t_end);
+      const t0 = performance.now();
       let result;
       try { result = integrate(previewSpec, rhs, data, req, req.samples); } catch (err) { result = { error: err.message }; }
+      const t1 = performance.now();
       root.classList.remove("stale");
       if (result.error) {
         say("preview", `No preview: ${result.error}. The server's run follows when you stop.`);
         return;
       }
-      view.draw(prepareRun(data, req, result), "preview");
+      const prepared = prepareRun(data, req, result);
+      const t2 = performance.now();
+      view.draw(prepared, "preview");
+      // where the preview's time goes (integrate / prepare / draw, ms): read by benchmarks/bench_browser.py
+      root.dataset.previewTiming = [t1 - t0, t2 - t1, performance.now() - t2].map((x) => x.toFixed(1)).join(" ");
       say("preview", "Preview: integrated in your browser (RK4, fixed step). The server's run, with its error estimate, replaces it when you stop.");
       painted("preview");
     });
