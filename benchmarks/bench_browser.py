@@ -126,7 +126,13 @@ def interactive(browser, base: str, path: str, height: int) -> dict[str, float]:
     page = context.new_page()
     page.goto(path)
     page.wait_for_selector(READY, state="attached", timeout=120_000)
-    page.wait_for_timeout(1500)
+    # every plot drawn (those out of view are drawn while the browser is idle), then a quiet second
+    page.wait_for_function(
+        """[...document.querySelectorAll('[data-panel] .plot')]
+             .every((p) => p.closest('[data-panel=work-precision]') || (p.data && p.data.length))""",
+        timeout=120_000,
+    )
+    page.wait_for_timeout(1000)
     result = page.evaluate(LATENCY_JS, [INPUTS, 60])
     page.wait_for_selector(READY, state="attached")
     scrub = page.evaluate(SCRUB_JS, 200)

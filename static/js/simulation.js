@@ -150,6 +150,9 @@ export class SimulationView {
     p.dirty = null;
     p.previewing = run.source === "preview";
     p.section.classList.remove("stale");
+    // a preview leaves the data tables (the text alternative) to the server's run
+    const summary = p.summary;
+    if (p.previewing) p.summary = null;
     try {
       const done = p.draw(run);
       if (done && done.catch) done.catch((err) => console.warn(err));
@@ -157,6 +160,8 @@ export class SimulationView {
     } catch (err) {
       const out = p.section.querySelector(".readout");
       if (out) out.textContent = `This panel could not be drawn: ${err.message}`;
+    } finally {
+      p.summary = summary;
     }
   }
 
