@@ -87,7 +87,7 @@ class SimulateResponse(BaseModel):
     conserved: dict[str, list[float | None]]
     constraint_forces: dict[str, list[float | None]]
     stats: SimulateStats
-    preview: BrowserPreview
+    preview: BrowserPreview | None = None
 
 
 class WorkPrecisionRun(BaseModel):
