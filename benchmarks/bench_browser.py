@@ -41,10 +41,11 @@ LATENCY_JS = """async ([count, gap]) => {
   let started = 0;
   const frame = () => new Promise((r) => requestAnimationFrame(() => r(performance.now())));
   for (let i = 0; i < count; i++) {
-    const painted = new Promise((resolve) => {
+    // a preview that never paints counts as 5 s (and the run goes on)
+    const painted = Promise.race([new Promise((resolve) => {
       const seen = (e) => { if (e.detail.source === 'preview') { document.removeEventListener('lagrange:painted', seen); resolve(); } };
       document.addEventListener('lagrange:painted', seen);
-    });
+    }), new Promise((resolve) => setTimeout(resolve, 5000))]);
     const step = i % 20 < 10 ? 1 : -1;
     slider.value = String(Number(slider.value) + 8 * step);
     started = performance.now();
@@ -54,8 +55,8 @@ LATENCY_JS = """async ([count, gap]) => {
     await new Promise((r) => setTimeout(r, gap));
   }
   const last = performance.now();
-  await new Promise((resolve) => document.addEventListener('lagrange:painted',
-    (e) => { if (e.detail.source === 'server') resolve(); }));
+  await Promise.race([new Promise((resolve) => document.addEventListener('lagrange:painted',
+    (e) => { if (e.detail.source === 'server') resolve(); })), new Promise((resolve) => setTimeout(resolve, 30000))]);
   return { latency: out, settle: performance.now() - last };
 }"""
 
@@ -154,6 +155,7 @@ def main(argv: list[str]) -> None:
     try:
         with sync_playwright() as p:
             browser = p.chromium.launch(executable_path=CHROMIUM, args=ARGS)
+            print(flush=True)
             print("page                          kB sent   input→paint p50/p95 (768 | all plots)   settle→server  scrub p50/p95  fps (rAF)")
             for path in [*(f"/scenes/{s}" for s in scenes), "/playground"]:
                 kb = transferred(browser, base, path) / 1000

@@ -127,5 +127,6 @@ if (root && dataNode) {
     data: JSON.parse(dataNode.textContent),
     status: document.getElementById("run-status"),
     fetchRun: post,
+    serial: true,
   });
 }

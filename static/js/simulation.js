@@ -219,7 +219,7 @@ const painted = (source) => document.dispatchEvent(new CustomEvent("lagrange:pai
 /** About 60 samples per simulated second: smooth animation, compact arrays. */
 export const samplesFor = (tEnd) => Math.min(4000, Math.max(300, Math.round(60 * tEnd)));
 
-export function connectSimulation({ form, root, data, urls = {}, status, fetchRun = null }) {
+export function connectSimulation({ form, root, data, urls = {}, status, fetchRun = null, serial = false }) {
   const message = status.querySelector(".message");
   const warnings = status.querySelector(".warnings");
   const post = fetchRun || ((request, signal) => simulate(urls.simulate, request, { signal }));
@@ -268,8 +268,14 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
     });
   }
 
+  let inFlight = false, queued = null;
+
   async function run(request) {
     if (request.samples === undefined) request.samples = samplesFor(request.t_end || data.t_end);
+    // serial: a server that runs one job per session (the playground's worker pool) gets the
+    // latest settings after the current run ends, instead of an aborted request and a 429
+    if (serial && inFlight) { queued = request; return; }
+    inFlight = true;
     controller?.abort();
     controller = new AbortController();
     const mine = ++generation;
@@ -278,7 +284,7 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
     if (status.dataset.state !== "preview") say("running", "Simulating…");
     try {
       const result = await post(request, controller.signal);
-      if (mine !== generation) return;
+      if (mine !== generation || queued) return; // newer settings are on their way
       if (result.preview && result.preview.rhs !== previewSpec?.rhs) {
         try { rhs = compileRhs(result.preview); previewSpec = result.preview; } catch { rhs = null; }
       }
@@ -294,6 +300,8 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
       root.classList.add("stale");
     } finally {
       if (mine === generation) root.setAttribute("aria-busy", "false");
+      inFlight = false;
+      if (queued) { const next = queued; queued = null; run(next); }
     }
   }
 
