@@ -17,6 +17,13 @@ from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation
 from app.engine.transform import Transformed, collected, compact
 
+# The steps a reader needs to follow the argument: the Lagrangian, its equations of motion, the
+# accelerations and what is conserved.  The others are bookkeeping a page may fold away.
+CORE_STEPS = frozenset(
+    {"Lagrangian", "Generalized forces", "Euler–Lagrange equations", "Accelerations", "Cyclic coordinates",
+     "Is h equal to E?", "Energy first integral"}
+)  # fmt: skip
+
 
 @dataclass
 class Printer:

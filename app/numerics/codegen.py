@@ -1,4 +1,4 @@
-"""SymPy expressions to Python source: common subexpressions out, scalar ``math`` calls in.
+"""SymPy expressions to Python (and browser JavaScript) source: common subexpressions out, scalar calls in.
 
 The engine's symbols carry user-chosen names; generated code never uses them.
 Every symbol is renamed to a fixed pattern (``q0``, ``v0``, ``p0``, ``k0``,
@@ -12,6 +12,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
 import sympy as sp
+from sympy.printing.jscode import JavascriptCodePrinter
 from sympy.printing.numpy import NumPyPrinter
 from sympy.printing.pycode import PythonCodePrinter
 
@@ -42,20 +43,41 @@ class ArrayPrinter(NumPyPrinter):
         return repr(float(expr.p) / float(expr.q))
 
 
+class BrowserPrinter(JavascriptCodePrinter):
+    """Prints ``Math.sin(x)`` for the browser's live preview; like the others, refuses what it cannot print."""
+
+    def __init__(self) -> None:
+        super().__init__({"strict": True})
+
+    def _print_Float(self, expr: sp.Float) -> str:
+        return repr(float(expr))
+
+
 @dataclass
 class Block:
-    """Straight-line code: ``name = expression`` lines, common subexpressions first."""
+    """Straight-line code: ``name = expression`` lines, common subexpressions first.
+
+    ``javascript`` blocks declare each new name with ``let`` and end lines with ``;``.
+    """
 
     lines: list[str] = field(default_factory=list)
+    javascript: bool = False
+
+    def set(self, target: str, text: str) -> None:
+        if self.javascript:
+            declare = "" if "[" in target else "let "
+            self.lines.append(f"{declare}{target} = {text};")
+        else:
+            self.lines.append(f"{target} = {text}")
 
     def assign(self, targets: Sequence[str], exprs: Sequence[sp.Expr], printer, prefix: str) -> None:
         # Repeated subexpressions become temporaries prefix0, prefix1, ...
         temps = sp.numbered_symbols(prefix)
         replacements, reduced = sp.cse(list(exprs), symbols=temps, order="none")
         for symbol, value in replacements:
-            self.lines.append(f"{symbol.name} = {printer.doprint(value)}")
+            self.set(symbol.name, printer.doprint(value))
         for target, value in zip(targets, reduced, strict=True):
-            self.lines.append(f"{target} = {printer.doprint(value)}")
+            self.set(target, printer.doprint(value))
 
     def raw(self, *lines: str) -> None:
         self.lines.extend(lines)
@@ -66,7 +88,9 @@ def function_source(name: str, arguments: str, block: Block) -> str:
     return f"def {name}({arguments}):\n{body}\n"
 
 
-def ldl_solve(block: Block, matrix: sp.Matrix, rhs: Sequence[str], result: Sequence[str], tag: str) -> None:
+def ldl_solve(
+    block: Block, matrix: sp.Matrix, rhs: Sequence[str], result: Sequence[str], tag: str, printer=None
+) -> None:
     """Lines solving M x = r for a symmetric M given as entry names, by M = L D L^T.
 
     A mass matrix is symmetric positive definite, so the factorisation needs no
@@ -80,12 +104,12 @@ def ldl_solve(block: Block, matrix: sp.Matrix, rhs: Sequence[str], result: Seque
             entry[i, j] = sp.Symbol(f"{tag}m{i}_{j}") if matrix[i, j] != 0 else sp.Integer(0)
     L: dict[tuple[int, int], sp.Expr] = {}
     D: list[sp.Expr] = []
-    printer = ScalarPrinter()
+    printer = printer or ScalarPrinter()
 
     def define(name: str, value: sp.Expr) -> sp.Expr:
         if value == 0:
             return sp.Integer(0)
-        block.raw(f"{name} = {printer.doprint(value)}")
+        block.set(name, printer.doprint(value))
         return sp.Symbol(name)
 
     for j in range(n):
@@ -103,7 +127,7 @@ def ldl_solve(block: Block, matrix: sp.Matrix, rhs: Sequence[str], result: Seque
     x: dict[int, sp.Expr] = {}
     for i in reversed(range(n)):
         value = z[i] / D[i] - sum((L[k, i] * x[k] for k in range(i + 1, n)), sp.Integer(0))
-        block.raw(f"{result[i]} = {printer.doprint(value)}")
+        block.set(result[i], printer.doprint(value))
         x[i] = sp.Symbol(result[i])
 
 

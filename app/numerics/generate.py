@@ -6,6 +6,9 @@ Three scalar functions, all ``f(t, y, k, out)`` (y a state, k the parameters):
     ham      z = (q, p)      ->  (q_dot, p_dot)     q_dot = M^-1 (p - b),  p_dot = dL/dq + Q
     momenta  y = (q, q_dot)  ->  p                  p = dL/dq_dot
 
+``browser_source`` prints the same q_ddot as the body of a JavaScript function
+``(t, y, k, out)`` for the page's live preview (static/js/preview.js).
+
 where b = p at q_dot = 0 (L is quadratic in the velocities, so p = M q_dot + b),
 and p_dot = dL/dq (at the q_dot belonging to p) + Q is Hamilton's
 p_dot = -dH/dq + Q written with the Lagrangian.  q_ddot uses the engine's solved
@@ -22,7 +25,16 @@ from dataclasses import dataclass
 import sympy as sp
 
 from app.engine.derive import Derivation
-from app.numerics.codegen import ArrayPrinter, Block, ScalarPrinter, function_source, ldl_solve, matrix_entries, unpack
+from app.numerics.codegen import (
+    ArrayPrinter,
+    Block,
+    BrowserPrinter,
+    ScalarPrinter,
+    function_source,
+    ldl_solve,
+    matrix_entries,
+    unpack,
+)
 
 
 @dataclass(frozen=True)
@@ -57,24 +69,41 @@ def _compact(accelerations: Sequence[sp.Expr], M: sp.Matrix, f: sp.Matrix) -> bo
     return sp.count_ops(list(accelerations)) <= 3 * (sp.count_ops(M) + sp.count_ops(f)) + 60
 
 
-def rhs_source(d: Derivation, names: Names) -> str:
+def _rhs_block(d: Derivation, names: Names, block: Block, printer) -> Block:
+    """out = (q_dot, q_ddot) from y = (q, q_dot), k and t, as straight-line code."""
     eqs = d.equations
     n = len(names.q)
-    block = Block()
-    block.raw(*unpack("y", names.q), *unpack("y", names.v, n), *unpack("k", names.k))
+    for vector, group, offset in (("y", names.q, 0), ("y", names.v, n), ("k", names.k, 0)):
+        for i, name in enumerate(group):
+            block.set(name, f"{vector}[{i + offset}]")
     outs = [f"out[{n + i}]" for i in range(n)]
-    block.raw(*(f"out[{i}] = {v}" for i, v in enumerate(names.v)))
+    for i, v in enumerate(names.v):
+        block.set(f"out[{i}]", v)
     if _compact(eqs.accelerations, eqs.mass_matrix, eqs.forcing):
-        block.assign(outs, [names(a) for a in eqs.accelerations], ScalarPrinter(), "a_")
+        block.assign(outs, [names(a) for a in eqs.accelerations], printer, "a_")
     else:
         # M q_ddot = f, solved numerically
         M = eqs.mass_matrix.applyfunc(names)
         entries, exprs = matrix_entries(M, "_")
         forcing = [f"_f{i}" for i in range(n)]
-        block.assign(entries + forcing, [*exprs, *(names(x) for x in eqs.forcing)], ScalarPrinter(), "a_")
-        ldl_solve(block, M, forcing, [f"_x{i}" for i in range(n)], "_")
-        block.raw(*(f"{out} = _x{i}" for i, out in enumerate(outs)))
-    return function_source("rhs", "t, y, k, out", block)
+        block.assign(entries + forcing, [*exprs, *(names(x) for x in eqs.forcing)], printer, "a_")
+        ldl_solve(block, M, forcing, [f"_x{i}" for i in range(n)], "_", printer)
+        for i, out in enumerate(outs):
+            block.set(out, f"_x{i}")
+    return block
+
+
+def rhs_source(d: Derivation, names: Names) -> str:
+    return function_source("rhs", "t, y, k, out", _rhs_block(d, names, Block(), ScalarPrinter()))
+
+
+def browser_source(d: Derivation, names: Names) -> str:
+    """The body of the JavaScript function ``(t, y, k, out)`` computing the same (q_dot, q_ddot) as ``rhs``.
+
+    Printed from the engine's expressions with the renamed symbols, like the Python source: no
+    name or text from a declaration reaches it, only q0.., v0.., k0.., t, numbers and Math calls.
+    """
+    return "\n".join(_rhs_block(d, names, Block(javascript=True), BrowserPrinter()).lines)
 
 
 def jacobian_source(d: Derivation, names: Names) -> str | None:

@@ -12,7 +12,7 @@ import sympy as sp
 
 from app.engine.derive import Derivation
 from app.numerics import jit
-from app.numerics.generate import Names, hamilton_source, jacobian_source, momenta_source, rhs_source
+from app.numerics.generate import Names, browser_source, hamilton_source, jacobian_source, momenta_source, rhs_source
 
 
 @dataclass
@@ -30,6 +30,7 @@ class NumericSystem:
     conserved: tuple[str, ...]
     key: str
     periodic: tuple[bool, ...] = ()  # coordinates that are angles: F(q + 2 pi e_i) = F(q)
+    browser: str = ""  # the body of a JavaScript (t, y, k, out) computing rhs, for the page's live preview
     _compiled: ModuleType | None = field(default=None, repr=False)
     _lock: threading.Lock = field(default_factory=threading.Lock, repr=False)
     _bound: dict = field(default_factory=dict, repr=False)
@@ -133,6 +134,7 @@ def numeric_system(d: Derivation, sources: dict[str, str] | None = None) -> Nume
         key=jit.source_key("".join(sources.values())),
     )
     system.periodic = tuple(_is_angle(system, i) for i in range(system.n))
+    system.browser = browser_source(d, names)
     return system
 
 

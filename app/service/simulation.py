@@ -262,6 +262,9 @@ def document(
         "conserved": conserved,
         "constraint_forces": forces,
         "stats": _finite(stats),
+        # the same right-hand side as JavaScript: the page integrates a preview while an input moves
+        "preview": {"rhs": system.browser, "coordinates": list(system.coordinates),
+                    "parameters": list(system.parameter_names)},
     }
 
 

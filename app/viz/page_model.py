@@ -14,6 +14,7 @@ import re
 from collections.abc import Sequence
 from typing import Any
 
+from app.engine.report import CORE_STEPS
 from app.scenes.types import PANELS
 from app.viz.diagrams import diagram
 from app.viz.exprtree import maybe_tree
@@ -42,6 +43,7 @@ def _steps(doc: dict[str, Any]) -> list[dict[str, Any]]:
             "latex": s["latex"],
             "explanation": s["explanation"],
             "long": len(s["latex"]) > LONG_STEP,
+            "core": s["title"] in CORE_STEPS,
         }
         for i, s in enumerate(doc["steps"])
     ]

@@ -9,6 +9,7 @@ thread pool, never on the event loop.
 
 from __future__ import annotations
 
+import gzip
 import threading
 from typing import Any
 
@@ -103,12 +104,14 @@ def scene_page_route(request: Request, scene_id: str) -> HTMLResponse:
         return templates.TemplateResponse(
             request, "404.html", {"missing": exc.scene_id[:60], "known": known}, status_code=404
         )
-    # A scene page depends only on its model: render it once per model, then serve the bytes.
+    # A scene page depends only on its model: render (and compress) it once per model, then serve the bytes.
     cached = _pages.get(scene_id)
     if cached is None or cached[0] is not model:
-        body = templates.TemplateResponse(request, "scene.html", {"m": model, "scene": model["info"]}).body
-        cached = _pages[scene_id] = (model, bytes(body))
-    return HTMLResponse(cached[1])
+        body = bytes(templates.TemplateResponse(request, "scene.html", {"m": model, "scene": model["info"]}).body)
+        cached = _pages[scene_id] = (model, body, gzip.compress(body, 9))
+    if "gzip" in request.headers.get("accept-encoding", ""):
+        return HTMLResponse(cached[2], headers={"Content-Encoding": "gzip", "Vary": "Accept-Encoding"})
+    return HTMLResponse(cached[1], headers={"Vary": "Accept-Encoding"})
 
 
-_pages: dict[str, tuple[dict[str, Any], bytes]] = {}
+_pages: dict[str, tuple[dict[str, Any], bytes, bytes]] = {}

@@ -79,6 +79,16 @@ class SimulateStats(BaseModel):
     complete: bool
 
 
+class BrowserPreview(BaseModel):
+    rhs: str = Field(
+        description="Body of a JavaScript function (t, y, k, out) writing (q_dot, q_ddot) for y = (q, q_dot) and k the "
+        "parameters: printed from the engine's expressions with renamed symbols (q0, v0, k0, t), for the page's "
+        "live preview"
+    )
+    coordinates: list[str] = Field(description="The order of the coordinates in y")
+    parameters: list[str] = Field(description="The order of the parameters in k")
+
+
 class SimulateResponse(BaseModel):
     t: list[float]
     state: dict[str, list[float | None]]
@@ -87,6 +97,7 @@ class SimulateResponse(BaseModel):
     conserved: dict[str, list[float | None]]
     constraint_forces: dict[str, list[float | None]]
     stats: SimulateStats
+    preview: BrowserPreview | None = None
 
 
 class WorkPrecisionRun(BaseModel):

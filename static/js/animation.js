@@ -1,23 +1,32 @@
 /**
- * animation.js — the mechanism, animated with Plotly from a run's state arrays.
+ * animation.js — the mechanism drawn on our own <canvas>, played with requestAnimationFrame.
  *
- *   const player = new Player(root, spec, { onFrame });
- *   player.load(run);      // run from simulation.js prepareRun(); draws frame 0
+ *   const player = new Player(root, spec, { onFrame, onDrag });
+ *   player.load(run);      // run from simulation.js prepareRun(); keeps the current instant
  *   player.play(); player.pause(); player.toggle(); player.seek(i);
  *
- * root holds .plot (the Plotly div), [data-action="play"] (a button),
- * input.scrub (a range over sample indices), select.speed, output.time.
- * spec is the scene's mechanism (app/viz/mechanism.py): points, links and fixed
- * curves as expression trees in {parameters, q, q_dot, t} (curves in s and the
- * run's extent qmin_<q>, qmax_<q>).  Positions are computed once per run from
- * the compact arrays; each frame restyles only the moving traces
- * (requestAnimationFrame, at most one restyle per displayed frame).
+ * root holds canvas.mechanism, [data-action="play"], input.scrub (a range over sample
+ * indices), select.speed and output.time.  spec is the scene's mechanism
+ * (app/viz/mechanism.py): points, links and fixed curves as expression trees in
+ * {parameters, q, q_dot, t} (curves in s and the run's extent qmin_<q>, qmax_<q>).
+ * Positions are computed once per run; a frame only redraws the canvas (no plotting
+ * library), so playback keeps up with the display.  3-D mechanisms are drawn in an
+ * orthographic view that turns when the background is dragged.
+ *
+ * Direct manipulation: dragging a body (or the arrow keys while the canvas has focus;
+ * N picks the next body) moves it along its constraint; onDrag({q: value, ...}) receives
+ * the initial coordinates that put it nearest the pointer, found by Gauss–Newton steps on
+ * the body's on-screen position as a function of the coordinates it owns.
+ *
+ * For tests and tools: root.dataset.frame is the sample shown; canvas.dataset.bodies lists
+ * each body's label and position in CSS pixels of the canvas.
  */
-import { compile } from "./expr.js";
+import { compile, symbolsOf } from "./expr.js";
 
 const MASS_COLORS = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a"];
 const TRAIL_SECONDS = 1.5;
 const MAX_TRAIL = 90;
+const GRAB_RADIUS = 26; // CSS pixels around a body that start a drag
 
 function mix(hex, amount) {
   // blend a colour toward white: amount 0 -> white, 1 -> the colour (a fading trail without alpha)
@@ -27,22 +36,80 @@ function mix(hex, amount) {
 }
 
 export class Player {
-  constructor(root, spec, { onFrame = () => {} } = {}) {
+  constructor(root, spec, { onFrame = () => {}, onDrag = null, controls = null } = {}) {
     this.root = root;
     this.spec = spec;
     this.onFrame = onFrame;
-    this.plot = root.querySelector(".plot");
+    this.onDrag = onDrag;
+    this.controls = controls; // name -> {value, min, max} of the initial-condition controls
+    this.canvas = root.querySelector("canvas.mechanism");
+    this.ctx = this.canvas.getContext("2d");
     this.button = root.querySelector('[data-action="play"]');
     this.scrub = root.querySelector("input.scrub");
     this.speedSelect = root.querySelector("select.speed");
     this.timeOut = root.querySelector("output.time");
+    this.dragStatus = root.querySelector(".drag-status");
     this.playing = false;
     this.index = 0;
-    this.points = spec.points.map((p) => p.xyz.map(compile));
+    this.frames = 0;
     this.dim = spec.dim;
+    this.view = { yaw: -0.6, pitch: 0.35 }; // 3-D only
+    this.points = spec.points.map((p) => p.xyz.map(compile));
+    this.masses = spec.points.map((p, i) => (p.mass ? i : -1)).filter((i) => i >= 0);
+    this.fixed = spec.points.map((p, i) => (p.mass ? -1 : i)).filter((i) => i >= 0);
+    this.selected = 0;
     this.button?.addEventListener("click", () => this.toggle());
     this.scrub?.addEventListener("input", () => { this.pause(); this.seek(Number(this.scrub.value)); });
     this.tick = this.tick.bind(this);
+    this.bindPointer();
+    this.bindKeys();
+    if ("ResizeObserver" in window) new ResizeObserver(() => this.resize()).observe(this.canvas);
+    this.resize();
+  }
+
+  /** The coordinates each body owns: those it depends on that no earlier body depends on. */
+  owners(coordinates) {
+    const earlier = new Set();
+    return this.masses.map((p) => {
+      const deps = new Set();
+      for (const tree of this.spec.points[p].xyz) symbolsOf(tree, deps);
+      const mine = coordinates.filter((q) => deps.has(q));
+      const own = mine.filter((q) => !earlier.has(q));
+      mine.forEach((q) => earlier.add(q));
+      return own.length ? own : mine;
+    });
+  }
+
+  resize() {
+    const dpr = window.devicePixelRatio || 1;
+    const w = Math.max(1, Math.round(this.canvas.clientWidth * dpr));
+    const h = Math.max(1, Math.round(this.canvas.clientHeight * dpr));
+    if (this.canvas.width !== w || this.canvas.height !== h) {
+      this.canvas.width = w; this.canvas.height = h;
+      this.fit();
+      if (this.run) this.draw(this.index);
+    }
+  }
+
+  // ---- geometry ---------------------------------------------------------------------------
+
+  project(x, y, z) {
+    // 2-D: the spec's two axes (the second points up); 3-D: turn about the vertical axis, then tilt
+    if (this.dim !== 3) return [x, y];
+    const { yaw, pitch } = this.view;
+    const xr = x * Math.cos(yaw) - y * Math.sin(yaw);
+    const yr = x * Math.sin(yaw) + y * Math.cos(yaw);
+    return [xr, z * Math.cos(pitch) + yr * Math.sin(pitch)];
+  }
+
+  toScreen(u, v) {
+    const f = this.frame;
+    return [f.cx + (u - f.u0) * f.scale, f.cy - (v - f.v0) * f.scale];
+  }
+
+  screenOf(xyz) {
+    const [u, v] = this.project(xyz[0], xyz[1], xyz[2] ?? 0);
+    return this.toScreen(u, v);
   }
 
   positions(run) {
@@ -60,117 +127,161 @@ export class Player {
     return this.spec.curves.map((c) => {
       const lo = compile(c.from)(env), hi = compile(c.to)(env);
       const fs = c.xyz.map(compile);
-      const cols = fs.map(() => []);
+      const cols = fs.map(() => new Float64Array(161));
       for (let k = 0; k <= 160; k++) {
         const e = { ...env, s: lo + ((hi - lo) * k) / 160 };
-        fs.forEach((f, a) => cols[a].push(f(e)));
+        fs.forEach((f, a) => { cols[a][k] = f(e); });
       }
       return { label: c.label, cols };
     });
   }
 
+  fit() {
+    // equal scales on both screen axes, everything the run visits in view, with a margin
+    if (!this.xyz) return;
+    let ulo = Infinity, uhi = -Infinity, vlo = Infinity, vhi = -Infinity;
+    const grow = (x, y, z) => {
+      const [u, v] = this.project(x, y, z);
+      if (!Number.isFinite(u) || !Number.isFinite(v)) return;
+      ulo = Math.min(ulo, u); uhi = Math.max(uhi, u); vlo = Math.min(vlo, v); vhi = Math.max(vhi, v);
+    };
+    const stride = Math.max(1, Math.floor(this.run.n / 400));
+    for (const a of this.xyz) for (let i = 0; i < this.run.n; i += stride) grow(a[0][i], a[1][i], a[2] ? a[2][i] : 0);
+    for (const a of this.xyz) { const i = this.run.n - 1; grow(a[0][i], a[1][i], a[2] ? a[2][i] : 0); }
+    for (const c of this.curveCols) for (let k = 0; k < c.cols[0].length; k++) grow(c.cols[0][k], c.cols[1][k], c.cols[2] ? c.cols[2][k] : 0);
+    if (!Number.isFinite(ulo)) { ulo = -1; uhi = 1; vlo = -1; vhi = 1; }
+    const W = this.canvas.width, H = this.canvas.height, pad = 24 * (window.devicePixelRatio || 1);
+    const su = Math.max(uhi - ulo, 1e-6), sv = Math.max(vhi - vlo, 1e-6);
+    const scale = Math.min((W - 2 * pad) / su, (H - 2 * pad) / sv);
+    this.frame = { scale, u0: (ulo + uhi) / 2, v0: (vlo + vhi) / 2, cx: W / 2, cy: H / 2 };
+  }
+
   load(run) {
+    const keep = this.run ? this.run.t[this.index] : 0;
     this.run = run;
     this.xyz = this.positions(run);
+    this.curveCols = this.curves(run);
     const dt = run.n > 1 ? run.t[1] - run.t[0] : 1;
+    this.dt = dt;
     this.trailLength = Math.max(2, Math.min(MAX_TRAIL, Math.round(TRAIL_SECONDS / dt)));
-    this.masses = this.spec.points.map((p, i) => (p.mass ? i : -1)).filter((i) => i >= 0);
-    const curves = this.curves(run);
-    const axes = this.spec.axes;
-    const type = this.dim === 3 ? "scatter3d" : "scatter";
-    const traces = curves.map((c) => this.trace(type, c.cols, {
-      name: c.label, mode: "lines", line: { color: "#8c959f", width: 2, dash: this.dim === 3 ? "solid" : "dot" }, hoverinfo: "skip",
-    }));
-    this.first = traces.length;
-    traces.push(this.trace(type, this.linkCols(0), { name: "links", mode: "lines", line: { color: "#1b1f24", width: 3 }, hoverinfo: "skip" }));
+    this.ownersOf = this.owners(run.data.coordinates);
+    // while a body is dragged the view stays put, so the body follows the pointer
+    if (!this.dragging || !this.frame) this.fit();
+    if (this.scrub) this.scrub.max = String(run.n - 1);
+    // a new run (an input changed) keeps the instant shown, so dragging a slider does not jump back
+    this.seek(Math.min(run.n - 1, Math.round(keep / dt)));
+  }
+
+  // ---- drawing ----------------------------------------------------------------------------
+
+  at(p, i) {
+    const a = this.xyz[p];
+    return this.screenOf([a[0][i], a[1][i], a[2] ? a[2][i] : 0]);
+  }
+
+  draw(i) {
+    const ctx = this.ctx, dpr = window.devicePixelRatio || 1;
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.clearRect(0, 0, this.canvas.width, this.canvas.height);
+    ctx.lineCap = "round"; ctx.lineJoin = "round";
+    // fixed curves: the path, the wire, the incline
+    ctx.strokeStyle = "#8c959f"; ctx.lineWidth = 2 * dpr;
+    ctx.setLineDash(this.dim === 3 ? [] : [4 * dpr, 4 * dpr]);
+    for (const c of this.curveCols) {
+      ctx.beginPath();
+      let pen = false;
+      for (let k = 0; k < c.cols[0].length; k++) {
+        const [x, y] = this.screenOf([c.cols[0][k], c.cols[1][k], c.cols[2] ? c.cols[2][k] : 0]);
+        if (!Number.isFinite(x) || !Number.isFinite(y)) { pen = false; continue; }
+        if (pen) ctx.lineTo(x, y); else ctx.moveTo(x, y);
+        pen = true;
+      }
+      ctx.stroke();
+    }
+    ctx.setLineDash([]);
+    this.scaleBar(ctx, dpr);
+    // links: rods, springs (a zigzag) and strings
+    for (const link of this.spec.links) {
+      const [x0, y0] = this.at(link.from, i), [x1, y1] = this.at(link.to, i);
+      ctx.strokeStyle = "#1b1f24";
+      ctx.lineWidth = (link.style === "string" ? 1.5 : 3) * dpr;
+      ctx.beginPath();
+      if (link.style === "spring") this.zigzag(ctx, x0, y0, x1, y1, dpr);
+      else { ctx.moveTo(x0, y0); ctx.lineTo(x1, y1); }
+      ctx.stroke();
+    }
+    // fading trails, then the bodies on top
     this.masses.forEach((p, k) => {
       const color = MASS_COLORS[k % MASS_COLORS.length];
-      const colors = Array.from({ length: this.trailLength }, (_, j) => mix(color, 0.08 + (0.7 * j) / this.trailLength));
-      traces.push(this.trace(type, this.trailCols(p, 0), {
-        name: `trail of ${this.spec.points[p].label}`, mode: "markers", hoverinfo: "skip",
-        marker: { color: colors, size: this.dim === 3 ? 3 : 5, line: { width: 0 } },
-      }));
+      for (let j = Math.max(0, i - this.trailLength + 1); j < i; j++) {
+        const age = (i - j) / this.trailLength;
+        const [x, y] = this.at(p, j);
+        ctx.fillStyle = mix(color, 0.75 * (1 - age) + 0.08);
+        ctx.beginPath(); ctx.arc(x, y, 2.5 * dpr, 0, 2 * Math.PI); ctx.fill();
+      }
     });
-    // one marker trace per body (named in the legend), then the fixed points (pivots, pulleys)
+    ctx.fillStyle = "#1b1f24";
+    for (const p of this.fixed) {
+      const [x, y] = this.at(p, i);
+      ctx.beginPath(); ctx.arc(x, y, 4 * dpr, 0, 2 * Math.PI); ctx.fill();
+    }
+    const bodies = [];
+    ctx.font = `${13 * dpr}px system-ui, sans-serif`;
     this.masses.forEach((p, k) => {
-      traces.push(this.trace(type, this.pointCols([p], 0), {
-        name: this.spec.points[p].label, mode: "markers", showlegend: true, hoverinfo: "name",
-        marker: { color: MASS_COLORS[k % MASS_COLORS.length], size: this.dim === 3 ? 9 : 16, line: { color: "#1b1f24", width: 1 } },
-      }));
+      const [x, y] = this.at(p, i);
+      const selected = k === this.selected && this.focused;
+      ctx.fillStyle = MASS_COLORS[k % MASS_COLORS.length];
+      ctx.strokeStyle = selected ? "#ffbf47" : "#1b1f24";
+      ctx.lineWidth = (selected ? 4 : 1.5) * dpr;
+      ctx.beginPath(); ctx.arc(x, y, 10 * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      if (this.masses.length > 1) {
+        // labels point away from the middle of the view and alternate above and below,
+        // with a white halo, so bodies that meet keep readable labels
+        const left = x < this.canvas.width / 2;
+        ctx.textAlign = left ? "right" : "left";
+        const lx = x + (left ? -14 : 14) * dpr, ly = y + (k % 2 ? 22 : -12) * dpr;
+        ctx.strokeStyle = "#fff"; ctx.lineWidth = 4 * dpr;
+        ctx.strokeText(this.spec.points[p].label, lx, ly);
+        ctx.fillStyle = "#1b1f24";
+        ctx.fillText(this.spec.points[p].label, lx, ly);
+        ctx.textAlign = "left";
+      }
+      bodies.push({ label: this.spec.points[p].label, x: Math.round(x / dpr), y: Math.round(y / dpr) });
     });
-    this.fixed = this.spec.points.map((p, i) => (p.mass ? -1 : i)).filter((i) => i >= 0);
-    traces.push(this.trace(type, this.pointCols(this.fixed, 0), {
-      name: "fixed points", mode: "markers", marker: { color: "#1b1f24", size: this.dim === 3 ? 4 : 7 }, hoverinfo: "skip",
-    }));
-    this.moving = traces.map((_, i) => i).slice(this.first);
-    Plotly.react(this.plot, traces, this.layout(curves, axes), { responsive: true, displaylogo: false });
-    if (this.scrub) { this.scrub.max = String(run.n - 1); this.scrub.value = "0"; }
-    this.seek(0);
+    this.canvas.dataset.bodies = JSON.stringify(bodies);
+    this.frames++;
   }
 
-  trace(type, cols, extra) {
-    const t = { type, x: cols[0], y: cols[1], showlegend: false, ...extra };
-    if (this.dim === 3) t.z = cols[2];
-    return t;
-  }
-
-  linkCols(i) {
-    const cols = [[], [], []];
-    for (const link of this.spec.links) {
-      for (const p of [link.from, link.to]) this.xyz[p].forEach((a, k) => cols[k].push(a[i]));
-      cols.forEach((c) => c.push(null));
+  zigzag(ctx, x0, y0, x1, y1, dpr) {
+    const dx = x1 - x0, dy = y1 - y0, len = Math.hypot(dx, dy) || 1;
+    const nx = -dy / len, ny = dx / len, turns = 10, amp = 6 * dpr;
+    ctx.moveTo(x0, y0);
+    for (let k = 1; k < 2 * turns; k++) {
+      const f = 0.1 + (0.8 * k) / (2 * turns), s = k % 2 ? amp : -amp;
+      ctx.lineTo(x0 + dx * f + nx * s, y0 + dy * f + ny * s);
     }
-    return cols;
+    ctx.lineTo(x1, y1);
   }
 
-  trailCols(p, i) {
-    const cols = [[], [], []];
-    for (let j = i - this.trailLength + 1; j <= i; j++) {
-      const s = Math.max(0, j);
-      this.xyz[p].forEach((a, k) => cols[k].push(a[s]));
-    }
-    return cols;
+  scaleBar(ctx, dpr) {
+    // a bar of a round length (1, 2 or 5 times a power of ten metres) in the lower left corner
+    const target = 90 * dpr / this.frame.scale;
+    const p = Math.pow(10, Math.floor(Math.log10(target)));
+    const len = [5, 2, 1].map((m) => m * p).find((v) => v <= target) || p;
+    const x = 12 * dpr, y = this.canvas.height - 10 * dpr, w = len * this.frame.scale;
+    ctx.strokeStyle = "#4b535c"; ctx.lineWidth = 2 * dpr;
+    ctx.beginPath(); ctx.moveTo(x, y - 5 * dpr); ctx.lineTo(x, y); ctx.lineTo(x + w, y); ctx.lineTo(x + w, y - 5 * dpr); ctx.stroke();
+    ctx.fillStyle = "#4b535c"; ctx.font = `${12 * dpr}px system-ui, sans-serif`;
+    ctx.fillText(`${Number(len.toPrecision(2))} m`, x + w + 6 * dpr, y);
   }
 
-  pointCols(which, i) {
-    const cols = [[], [], []];
-    for (const p of which) this.xyz[p].forEach((a, k) => cols[k].push(a[i]));
-    return cols;
-  }
-
-  layout(curves, axes) {
-    const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
-    const grow = (k, v) => { if (Number.isFinite(v)) { lo[k] = Math.min(lo[k], v); hi[k] = Math.max(hi[k], v); } };
-    this.xyz.forEach((a) => a.forEach((arr, k) => arr.forEach((v) => grow(k, v))));
-    curves.forEach((c) => c.cols.forEach((arr, k) => arr.forEach((v) => grow(k, v))));
-    const spans = lo.slice(0, this.dim).map((l, k) => Math.max(hi[k] - l, 1e-6) * 1.12);
-    const span = Math.max(...spans);
-    const range = (k, width) => { const mid = (lo[k] + hi[k]) / 2; return [mid - width / 2, mid + width / 2]; };
-    const axis = (k, width) => ({ title: { text: `${axes[k]} (m)` }, range: range(k, width), zeroline: false, gridcolor: "#e6e8eb" });
-    const base = { margin: { l: 50, r: 20, t: 20, b: 45 }, height: 420, paper_bgcolor: "#fff", plot_bgcolor: "#fff", font: { size: 13 },
-      legend: { orientation: "h", x: 0, y: 1.02, yanchor: "bottom" } };
-    if (this.dim === 3) {
-      // true proportions, except that no axis is drawn shorter than 40 % of the longest (a tall helix stays readable)
-      const ratio = spans.map((w) => Math.max(w / span, 0.4));
-      return { ...base, margin: { l: 0, r: 0, t: 30, b: 0 },
-        scene: { xaxis: axis(0, spans[0]), yaxis: axis(1, spans[1]), zaxis: axis(2, spans[2]), aspectmode: "manual",
-          aspectratio: { x: ratio[0], y: ratio[1], z: ratio[2] }, camera: { eye: { x: 1.2, y: 1.05, z: 0.65 } } } };
-    }
-    return { ...base, xaxis: axis(0, span), yaxis: { ...axis(1, span), scaleanchor: "x", scaleratio: 1 } };
-  }
+  // ---- playback ---------------------------------------------------------------------------
 
   seek(i) {
     if (!this.run) return;
     this.index = Math.max(0, Math.min(this.run.n - 1, i));
-    const cols = [
-      this.linkCols(this.index),
-      ...this.masses.map((p) => this.trailCols(p, this.index)),
-      ...this.masses.map((p) => this.pointCols([p], this.index)),
-      this.pointCols(this.fixed, this.index),
-    ];
-    const update = { x: cols.map((c) => c[0]), y: cols.map((c) => c[1]) };
-    if (this.dim === 3) update.z = cols.map((c) => c[2]);
-    Plotly.restyle(this.plot, update, this.moving);
+    this.draw(this.index);
+    this.root.dataset.frame = String(this.index);
     if (this.scrub) {
       this.scrub.value = String(this.index);
       this.scrub.setAttribute("aria-valuetext", `t = ${this.run.t[this.index].toFixed(2)} s`);
@@ -215,9 +326,151 @@ export class Player {
     this.last = now;
     const t = this.run.t, end = t[t.length - 1];
     if (this.simTime > end) this.simTime = 0; // loop
-    const dt = t.length > 1 ? t[1] - t[0] : 1;
-    const i = Math.min(t.length - 1, Math.round(this.simTime / dt));
+    const i = Math.min(t.length - 1, Math.round(this.simTime / this.dt));
     if (i !== this.index) this.seek(i);
     requestAnimationFrame(this.tick);
+  }
+
+  // ---- direct manipulation ----------------------------------------------------------------
+
+  pointer(event) {
+    const r = this.canvas.getBoundingClientRect(), dpr = window.devicePixelRatio || 1;
+    return [(event.clientX - r.left) * dpr, (event.clientY - r.top) * dpr];
+  }
+
+  grab(x, y) {
+    // the body under the pointer (at the instant shown), if any
+    if (!this.run) return -1;
+    const dpr = window.devicePixelRatio || 1;
+    let best = -1, bestD = GRAB_RADIUS * dpr;
+    this.masses.forEach((p, k) => {
+      const [px, py] = this.at(p, this.index);
+      const d = Math.hypot(px - x, py - y);
+      if (d < bestD) { best = k; bestD = d; }
+    });
+    return best;
+  }
+
+  /** The body's screen position with the initial coordinates `values` (others as they are). */
+  placed(k, values) {
+    const env = { ...this.run.envAt(0), ...values, t: 0 };
+    return this.screenOf(this.points[this.masses[k]].map((f) => f(env)));
+  }
+
+  /** Initial coordinates of body k that bring it nearest the screen point (x, y): Gauss–Newton, clamped to the controls' ranges. */
+  solve(k, x, y) {
+    const names = (this.ownersOf[k] || []).filter((q) => this.controls && this.controls(q));
+    if (!names.length) return null;
+    const ranges = names.map((q) => this.controls(q));
+    const values = Object.fromEntries(names.map((q, j) => [q, ranges[j].value]));
+    for (let iter = 0; iter < 12; iter++) {
+      const [px, py] = this.placed(k, values);
+      const rx = x - px, ry = y - py;
+      // columns of the Jacobian d(screen)/d(q) by central differences
+      const J = names.map((q, j) => {
+        const h = 1e-4 * Math.max(1, Math.abs(values[q]), ranges[j].max - ranges[j].min);
+        const a = this.placed(k, { ...values, [q]: values[q] + h }), b = this.placed(k, { ...values, [q]: values[q] - h });
+        return [(a[0] - b[0]) / (2 * h), (a[1] - b[1]) / (2 * h)];
+      });
+      // normal equations (J^T J + mu I) d = J^T r, for one or two unknowns
+      const mu = 1e-9;
+      let step;
+      if (names.length === 1) {
+        const [a, b] = J[0];
+        step = [(a * rx + b * ry) / (a * a + b * b + mu)];
+      } else {
+        const [a, b] = J[0], [c, d] = J[1];
+        const m11 = a * a + b * b + mu, m12 = a * c + b * d, m22 = c * c + d * d + mu;
+        const g1 = a * rx + b * ry, g2 = c * rx + d * ry, det = m11 * m22 - m12 * m12;
+        step = [(m22 * g1 - m12 * g2) / det, (m11 * g2 - m12 * g1) / det];
+      }
+      let moved = 0;
+      names.slice(0, step.length).forEach((q, j) => {
+        if (!Number.isFinite(step[j])) return;
+        const next = Math.min(ranges[j].max, Math.max(ranges[j].min, values[q] + step[j]));
+        moved = Math.max(moved, Math.abs(next - values[q]));
+        values[q] = next;
+      });
+      if (moved < 1e-9) break;
+    }
+    return values;
+  }
+
+  bindPointer() {
+    const c = this.canvas;
+    // a touch that lands on a body drags it; any other touch scrolls the page (touch-action: pan-y)
+    c.addEventListener("touchstart", (e) => {
+      const t = e.touches[0];
+      if (t && this.grab(...this.pointer(t)) >= 0) e.preventDefault();
+    }, { passive: false });
+    c.addEventListener("pointerdown", (e) => {
+      const [x, y] = this.pointer(e);
+      const k = this.grab(x, y);
+      if (k >= 0 && this.onDrag) {
+        this.pause();
+        this.selected = k;
+        this.dragging = { k };
+        if (this.index !== 0) this.seek(0);
+      } else if (this.dim === 3 && e.pointerType !== "touch") {
+        this.dragging = { rotate: true, x, y, yaw: this.view.yaw, pitch: this.view.pitch };
+      } else return;
+      c.setPointerCapture(e.pointerId);
+      e.preventDefault();
+    });
+    c.addEventListener("pointermove", (e) => {
+      if (!this.dragging) {
+        if (this.onDrag && e.pointerType === "mouse") c.style.cursor = this.grab(...this.pointer(e)) >= 0 ? "grab" : "";
+        return;
+      }
+      const [x, y] = this.pointer(e);
+      if (this.dragging.rotate) {
+        const d = this.dragging, dpr = window.devicePixelRatio || 1;
+        this.view.yaw = d.yaw + (x - d.x) / (120 * dpr);
+        this.view.pitch = Math.max(-1.4, Math.min(1.4, d.pitch + (y - d.y) / (120 * dpr)));
+        this.fit();
+        this.draw(this.index);
+        return;
+      }
+      const values = this.solve(this.dragging.k, x, y);
+      if (values) this.onDrag(values);
+    });
+    const end = () => { this.dragging = null; };
+    c.addEventListener("pointerup", end);
+    c.addEventListener("pointercancel", end);
+  }
+
+  bindKeys() {
+    const c = this.canvas;
+    c.addEventListener("focus", () => { this.focused = true; if (this.run) this.draw(this.index); });
+    c.addEventListener("blur", () => { this.focused = false; if (this.run) this.draw(this.index); });
+    c.addEventListener("keydown", (e) => {
+      if (!this.run || !this.onDrag || !this.masses.length) return;
+      if (e.key === "n" || e.key === "N") {
+        this.selected = (this.selected + 1) % this.masses.length;
+        this.draw(this.index);
+        this.say(`${this.spec.points[this.masses[this.selected]].label} selected`);
+        e.preventDefault();
+        return;
+      }
+      const keys = { ArrowRight: [0, 1], ArrowUp: [1, 1], ArrowLeft: [0, -1], ArrowDown: [1, -1] };
+      if (!(e.key in keys)) return;
+      const names = (this.ownersOf[this.selected] || []).filter((q) => this.controls && this.controls(q));
+      if (!names.length) return;
+      // Right/Left move the body's first coordinate, Up/Down its second (or the first if it has one)
+      const [which, sign] = keys[e.key];
+      const q = names[Math.min(which, names.length - 1)];
+      const r = this.controls(q);
+      const step = ((r.max - r.min) / 100) * (e.shiftKey ? 10 : 1);
+      const value = Math.min(r.max, Math.max(r.min, r.value + sign * step));
+      this.pause();
+      if (this.index !== 0) this.seek(0);
+      this.onDrag({ [q]: value });
+      this.say(`${this.run.data.labels[q] || q} starts at ${Number(value.toPrecision(4))}`);
+      e.preventDefault();
+    });
+  }
+
+  say(text) {
+    if (this.dragStatus) this.dragStatus.textContent = text;
   }
 }

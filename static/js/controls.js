@@ -13,9 +13,9 @@
  *   buildControls(container, spec)   build that markup from a spec
  *                                    {parameters: [...], initial: [...], t_end, methods, rtols}
  *                                    (each control {name, label, unit, min, max, value, log, description})
- *   bindControls(form, onChange)     keep each slider and number field in step, check
- *                                    ranges (aria-invalid + message), and call
- *                                    onChange(request) after the user stops changing things
+ *   bindControls(form, handlers)     keep each slider and number field in step, check
+ *                                    ranges (aria-invalid + message); onInput(request) on
+ *                                    every change, onSettle(request) 150 ms after the last
  *   readRequest(form)                the simulate request body {parameters, initial, t_end, method, rtol}
  *   resetControls(form)              back to the defaults
  *
@@ -110,13 +110,28 @@ export function setControl(form, name, value) {
   return true;
 }
 
-export function bindControls(form, onChange, delay = 350) {
+/**
+ * Bind the controls.  handlers: {onInput(request), onSettle(request), onInvalid(message)}
+ * (a bare function is onSettle).  Every change of a value calls onInput at once (the live
+ * preview) and onSettle `delay` ms after the last change (the server's run); a method,
+ * tolerance, submit or reset settles at once.  An invalid value calls onInvalid with what
+ * is wrong instead.  Returns {fire(now), set(values)}: set({name: value, ...}) moves
+ * controls as if the user had (dragging a body in the animation does this).
+ */
+export function bindControls(form, handlers, delay = 150) {
+  const { onInput = null, onSettle = () => {}, onInvalid = () => {} } =
+    typeof handlers === "function" ? { onSettle: handlers } : handlers;
   let timer = null;
-  const fire = (now) => {
+  const fire = (now, preview = true) => {
     clearTimeout(timer);
-    const valid = [...form.querySelectorAll(".control")].every(check);
-    if (!valid) return;
-    timer = setTimeout(() => onChange(readRequest(form)), now ? 0 : delay);
+    const bad = [...form.querySelectorAll(".control")].filter((ctl) => !check(ctl));
+    if (bad.length) {
+      onInvalid(bad.map((ctl) => parts(ctl).hint.textContent).join("; "));
+      return;
+    }
+    const request = readRequest(form);
+    if (preview && onInput) onInput(request);
+    timer = setTimeout(() => onSettle(readRequest(form)), now ? 0 : delay);
   };
   for (const ctl of form.querySelectorAll(".control")) {
     const { range, number } = parts(ctl);
@@ -135,14 +150,29 @@ export function bindControls(form, onChange, delay = 350) {
         range.value = String(toSlider(ctl, Number(number.value)));
         setValueText(ctl, Number(number.value));
       }
+      fire(false);
     });
-    number.addEventListener("change", () => fire(true));
+    number.addEventListener("change", () => fire(true, false));
   }
-  for (const sel of form.querySelectorAll("select")) sel.addEventListener("change", () => fire(true));
-  form.addEventListener("submit", (event) => { event.preventDefault(); fire(true); });
+  for (const sel of form.querySelectorAll("select")) sel.addEventListener("change", () => fire(true, false));
+  form.addEventListener("submit", (event) => { event.preventDefault(); fire(true, false); });
   const reset = form.querySelector('[data-action="reset"]');
   if (reset) reset.addEventListener("click", () => { resetControls(form); fire(true); });
-  return { fire };
+  const set = (values) => {
+    for (const [name, value] of Object.entries(values)) {
+      const ctl = form.querySelector(`.control[data-name="${CSS.escape(name)}"]`);
+      if (ctl) setValue(ctl, value);
+    }
+    fire(false);
+  };
+  return { fire, set };
+}
+
+/** The value and range of a control by name ({value, min, max}), or null. */
+export function controlRange(form, name) {
+  const ctl = form.querySelector(`.control[data-name="${CSS.escape(name)}"]`);
+  if (!ctl) return null;
+  return { value: Number(parts(ctl).number.value), min: Number(ctl.dataset.min), max: Number(ctl.dataset.max) };
 }
 
 function el(tag, attrs = {}, text = "") {

@@ -10,6 +10,10 @@
  *                                 system's) into el, with the same markup the server
  *                                 renders for scene pages, then typeset it.
  *   printReady()                  open every collapsed step while printing.
+ *   whenTypeset(root)             typeset once KaTeX's deferred script has run, and record
+ *                                 the error count in document.body.dataset.katexErrors.
+ *   foldSteps(root)               show the core steps (li.step without .bookkeeping) and put
+ *                                 the others behind one "all steps" toggle button.
  *
  * KaTeX errors never throw: a bad formula shows as a .katex-error element, which
  * the browser tests look for.
@@ -22,7 +26,8 @@ export function typeset(root = document) {
   if (!katex) return 0;
   for (const el of root.querySelectorAll(".math")) {
     if (el.dataset.typeset === "1") continue;
-    const tex = el.textContent;
+    // the server sends MathML (readable without JavaScript) with the TeX in data-tex
+    const tex = el.dataset.tex ?? el.textContent;
     el.setAttribute("data-tex", tex);
     katex.render(tex, el, { displayMode: el.classList.contains("math-display"), throwOnError: false });
     el.dataset.typeset = "1";
@@ -130,4 +135,31 @@ export function printReady() {
     for (const d of opened) d.open = false;
     opened.clear();
   });
+}
+
+/** Typeset as soon as KaTeX has loaded (it is deferred; module scripts may run first). */
+export function whenTypeset(root = document) {
+  const go = () => { document.body.dataset.katexErrors = String(typeset(root)); };
+  if (window.katex) go();
+  else if (document.readyState === "complete") go();
+  else window.addEventListener("load", go, { once: true });
+}
+
+/** Fold the bookkeeping steps of each derivation under root behind one toggle. */
+export function foldSteps(root = document) {
+  for (const list of root.querySelectorAll("ol.steps")) {
+    const hidden = list.querySelectorAll("li.step.bookkeeping").length;
+    if (!hidden || list.dataset.folded) continue;
+    list.dataset.folded = "true";
+    const total = list.querySelectorAll("li.step").length;
+    const button = Object.assign(document.createElement("button"), { type: "button", className: "all-steps" });
+    const show = (all) => {
+      list.classList.toggle("core-only", !all);
+      button.setAttribute("aria-expanded", String(all));
+      button.textContent = all ? `Show the core steps only` : `Show all ${total} steps (${hidden} more: positions, velocities, derivatives, …)`;
+    };
+    button.addEventListener("click", () => show(list.classList.contains("core-only")));
+    list.before(button);
+    show(false);
+  }
 }

@@ -9,19 +9,17 @@
  *   - moves focus to the field a refusal points at;
  *   - simulates the derived system through POST /api/simulate (the declared system with
  *     the controls' parameter values, plus initial, t_end, method, rtol, samples) and draws
- *     it with simulation.js's SimulationView: one request in flight, the latest settings win,
- *     and a 429/503 is retried after its Retry-After.
+ *     it with simulation.js's connectSimulation (the same live preview as a scene page);
+ *     a 429/503 is retried after its Retry-After.
  * Everything it needs is in the page: #scene-data (the client JSON of app/viz/page_model.py)
  * and #playground-system (the request the page derived).
  */
-import { printReady, typeset } from "./derivation.js";
-import { bindControls, readRequest } from "./controls.js";
-import { prepareRun, SimulationView } from "./simulation.js";
-import { fmt } from "./summaries.js";
+import { foldSteps, printReady, whenTypeset } from "./derivation.js";
+import { connectSimulation } from "./simulation.js";
 
-const errors = typeset(document);
-document.body.dataset.katexErrors = String(errors);
+foldSteps(document);
 printReady();
+whenTypeset(document);
 
 // ---- the system form -----------------------------------------------------------------------
 
@@ -100,22 +98,15 @@ function body(request) {
   return { ...system, parameters, initial, t_end, method, rtol, samples };
 }
 
-function describe(stats) {
-  const parts = [`Method ${stats.method}`];
-  if (stats.reason) parts.push(`(${stats.reason})`);
-  parts.push(`run time ${fmt((stats.wall_time_s || 0) * 1000)} ms`);
-  if (stats.error_estimate !== undefined && stats.error_estimate !== null) parts.push(`estimated error ${fmt(stats.error_estimate)}`);
-  return parts.join(", ") + ".";
-}
-
 const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 
-async function post(request) {
+async function post(request, signal) {
   for (let attempt = 0; ; attempt++) {
     const res = await fetch(root.dataset.simulateUrl, {
       method: "POST",
       headers: { "Content-Type": "application/json", Accept: "application/json" },
       body: JSON.stringify(body(request)),
+      signal,
     });
     let answer = null;
     try { answer = await res.json(); } catch { answer = null; }
@@ -129,54 +120,13 @@ async function post(request) {
   }
 }
 
-function connect(data) {
-  const form = document.getElementById("controls");
-  const status = document.getElementById("run-status");
-  const message = status.querySelector(".message");
-  const warnings = status.querySelector(".warnings");
-  const view = new SimulationView(root, data, {});
-  let running = false;
-  let pending = null;
-
-  async function run(request) {
-    if (request.samples === undefined) {
-      request.samples = Math.min(4000, Math.max(300, Math.round(60 * (request.t_end || data.t_end))));
-    }
-    pending = request;
-    if (running) return; // the latest settings run as soon as the current run ends
-    running = true;
-    while (pending) {
-      const mine = pending;
-      pending = null;
-      root.setAttribute("aria-busy", "true");
-      status.dataset.state = "running";
-      message.textContent = "Simulating…";
-      try {
-        const result = await post(mine);
-        if (pending) continue;
-        const prepared = prepareRun(data, mine, result);
-        view.draw(prepared);
-        status.dataset.state = "ready";
-        message.textContent = describe(prepared.stats);
-        warnings.replaceChildren(...(prepared.stats.warnings || []).map((w) => Object.assign(document.createElement("li"), { textContent: w })));
-        root.dataset.runs = String(Number(root.dataset.runs || 0) + 1);
-      } catch (err) {
-        if (pending) continue;
-        status.dataset.state = "error";
-        message.textContent = `The simulation failed: ${err.message}`;
-      }
-    }
-    root.setAttribute("aria-busy", "false");
-    running = false;
-  }
-
-  bindControls(form, run);
-  run(readRequest(form));
-}
-
-if (root && dataNode && window.Plotly) {
-  connect(JSON.parse(dataNode.textContent));
-} else if (root) {
-  document.querySelector("#run-status .message").textContent =
-    "The plotting library is missing: run scripts/assets.sh (it copies plotly.js into static/vendor).";
+if (root && dataNode) {
+  connectSimulation({
+    form: document.getElementById("controls"),
+    root,
+    data: JSON.parse(dataNode.textContent),
+    status: document.getElementById("run-status"),
+    fetchRun: post,
+    serial: true,
+  });
 }

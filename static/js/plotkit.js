@@ -1,26 +1,41 @@
 /**
  * plotkit.js — shared pieces of the plot panels (plots.js, reduction.js): Plotly config,
- * colours, a base layout, axes, the time-cursor shape, and the parts of a panel section
- * (.plot, .data-summary .table, .readout, .panel-tools).
+ * colours, a base layout, axes, the parts of a panel section (.plot, .data-summary .table,
+ * .readout, .panel-tools), and Overlay: time cursors and "now" markers drawn in an SVG laid
+ * over a plot, so that moving them never asks Plotly to lay the figure out again.
+ *
+ * Privacy: the mode bar offers only "download as PNG" and "reset axes"; nothing can be sent
+ * to an outside service (no Chart Studio, no "Share").  On a coarse pointer (a phone) the
+ * plots do not zoom or pan on drag, so a swipe that starts on a plot scrolls the page;
+ * a "Zoom" button in the panel's tools turns dragging on for that plot.
+ *
+ * react(panel, traces, layout): Plotly.react for the server's run; for the browser's preview
+ * (panel.previewing) the traces are drawn as lines on a canvas over the plot, in its current
+ * axes, with the plot itself greyed: a few milliseconds instead of a Plotly redraw.
  */
 
-export const CONFIG = { responsive: true, displaylogo: false };
+export const COARSE = typeof matchMedia === "function" && matchMedia("(pointer: coarse)").matches;
+
+export const CONFIG = {
+  responsive: true, displaylogo: false, showSendToCloud: false, showEditInChartStudio: false, showLink: false,
+  scrollZoom: false, displayModeBar: COARSE ? false : "hover", modeBarButtons: [["toImage", "resetScale2d"]],
+  toImageButtonOptions: { format: "png", scale: 2 },
+};
 export const COLORS = { T: "#0b5cad", U: "#b34700", E: "#1b1f24", h: "#2e7d32", a: "#6a1b9a", b: "#00838f" };
 export const PALETTE = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a", "#00838f", "#8d6e00"];
 
 export function layout(extra = {}) {
   return {
-    margin: { l: 64, r: 16, t: 24, b: 44 }, height: 340, font: { size: 13 },
+    margin: { l: 64, r: 16, t: 34, b: 44 }, height: 320, font: { size: 13 },
     paper_bgcolor: "#fff", plot_bgcolor: "#fff", legend: { orientation: "h", x: 0, y: 1.02, yanchor: "bottom" },
-    hovermode: "x unified", ...extra,
+    hovermode: COARSE ? false : "x unified", dragmode: COARSE ? false : "zoom", ...extra,
   };
 }
 
 export const axis = (text, extra = {}) => ({ title: { text }, gridcolor: "#e6e8eb", zerolinecolor: "#b8bec5", ...extra });
-export const cursorShape = (t) => ({ type: "line", xref: "x", yref: "paper", x0: t, x1: t, y0: 0, y1: 1, line: { color: "#57606a", width: 1.5, dash: "dot" } });
 export const line = (x, y, name, color, dash = "solid") => ({ type: "scatter", mode: "lines", x, y, name, line: { color, width: 2, dash } });
 export const diff = (arr) => Array.from(arr, (v) => v - arr[0]);
-export const finite = (arr) => arr.filter((v) => Number.isFinite(v));
+export const finite = (arr) => Array.from(arr).filter((v) => Number.isFinite(v));
 export const capital = (text) => text.charAt(0).toUpperCase() + text.slice(1);
 
 export function parts(section) {
@@ -32,3 +47,148 @@ export function parts(section) {
   };
 }
 
+const SVG = "http://www.w3.org/2000/svg";
+
+export function react(panel, traces, lay) {
+  const plot = panel.plot;
+  if (panel.previewing && plot._fullLayout && panel.overlay) {
+    panel.overlay.lines(traces);
+    panel.section.classList.add("previewing");
+    return null;
+  }
+  panel.overlay?.lines([]);
+  panel.section.classList.remove("previewing");
+  return Plotly.react(plot, traces, lay, CONFIG);
+}
+
+/** An SVG over a Plotly plot: a vertical time cursor, markers and level lines in data coordinates. */
+export class Overlay {
+  constructor(plot) {
+    this.plot = plot;
+    const wrap = document.createElement("div");
+    wrap.className = "plot-wrap";
+    plot.before(wrap);
+    wrap.append(plot);
+    this.svg = document.createElementNS(SVG, "svg");
+    this.svg.setAttribute("class", "plot-overlay");
+    this.svg.setAttribute("aria-hidden", "true");
+    wrap.append(this.svg);
+    this.items = {};
+    if (COARSE) this.zoomToggle(plot.closest("section")?.querySelector(".panel-tools"));
+  }
+
+  zoomToggle(tools) {
+    if (!tools) return;
+    const button = Object.assign(document.createElement("button"), { type: "button", textContent: "Zoom" });
+    button.className = "zoom-toggle";
+    button.setAttribute("aria-pressed", "false");
+    button.addEventListener("click", () => {
+      const on = button.getAttribute("aria-pressed") !== "true";
+      button.setAttribute("aria-pressed", String(on));
+      this.plot.classList.toggle("zooming", on);
+      Plotly.relayout(this.plot, { dragmode: on ? "zoom" : false });
+    });
+    tools.append(button);
+  }
+
+  /** Preview lines: traces ({x, y, line: {color, dash}, yaxis}) drawn on a canvas in the plot's axes. */
+  lines(traces) {
+    if (!this.canvas) {
+      this.canvas = document.createElement("canvas");
+      this.canvas.className = "plot-preview";
+      this.canvas.setAttribute("aria-hidden", "true");
+      this.svg.before(this.canvas);
+    }
+    const c = this.canvas, dpr = window.devicePixelRatio || 1;
+    const w = this.plot.clientWidth, h = this.plot.clientHeight;
+    if (c.width !== Math.round(w * dpr) || c.height !== Math.round(h * dpr)) {
+      c.width = Math.round(w * dpr); c.height = Math.round(h * dpr);
+    }
+    const ctx = c.getContext("2d");
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    ctx.clearRect(0, 0, w, h);
+    c.dataset.lines = String(traces.length);
+    const fl = this.plot._fullLayout;
+    if (!fl || !traces.length) return;
+    for (const tr of traces) {
+      const xa = fl.xaxis, ya = fl[tr.yaxis ? `yaxis${tr.yaxis.slice(1)}` : "yaxis"];
+      if (!xa || !ya || !tr.x || !tr.y) continue;
+      ctx.save();
+      ctx.beginPath();
+      ctx.rect(xa._offset, ya._offset, xa._length, ya._length);
+      ctx.clip();
+      ctx.strokeStyle = (tr.line && tr.line.color) || (tr.marker && tr.marker.color) || "#1b1f24";
+      ctx.lineWidth = 2;
+      ctx.setLineDash(tr.line && tr.line.dash === "dash" ? [6, 4] : []);
+      ctx.beginPath();
+      let pen = false;
+      for (let i = 0; i < tr.x.length; i++) {
+        const x = xa._offset + xa.l2p(tr.x[i]), y = ya._offset + ya.l2p(tr.y[i]);
+        if (!Number.isFinite(x) || !Number.isFinite(y)) { pen = false; continue; }
+        if (pen) ctx.lineTo(x, y); else ctx.moveTo(x, y);
+        pen = true;
+      }
+      ctx.stroke();
+      ctx.restore();
+    }
+  }
+
+  item(key, tag, attrs) {
+    let el = this.items[key];
+    if (!el) {
+      el = this.items[key] = document.createElementNS(SVG, tag);
+      for (const [k, v] of Object.entries(attrs)) el.setAttribute(k, v);
+      this.svg.append(el);
+    }
+    return el;
+  }
+
+  axes(x = "xaxis", y = "yaxis") {
+    const fl = this.plot._fullLayout;
+    if (!fl || !fl[x] || !fl[y]) return null;
+    return { fl, xa: fl[x], ya: fl[y] };
+  }
+
+  /** A vertical dotted line at x = value over the whole plot area (the time cursor). */
+  cursor(value) {
+    const a = this.axes();
+    if (!a || !Number.isFinite(value)) return;
+    const px = a.xa._offset + a.xa.l2p(value);
+    const el = this.item("cursor", "line", { class: "cursor", stroke: "#57606a", "stroke-width": "1.5", "stroke-dasharray": "3 3" });
+    el.setAttribute("x1", px); el.setAttribute("x2", px);
+    el.setAttribute("y1", a.fl._size.t); el.setAttribute("y2", a.fl._size.t + a.fl._size.h);
+    el.dataset.value = String(value);
+  }
+
+  /** Filled markers at data points [[x, y], ...] (the current state). */
+  points(key, pts, { color = "#c62828", r = 6, shape = "circle" } = {}) {
+    const a = this.axes();
+    if (!a) return;
+    const group = this.item(key, "g", { class: key, fill: color, stroke: "#1b1f24", "stroke-width": "1" });
+    while (group.childNodes.length > pts.length) group.lastChild.remove();
+    while (group.childNodes.length < pts.length) {
+      group.append(document.createElementNS(SVG, shape === "diamond" ? "path" : "circle"));
+    }
+    pts.forEach(([x, y], k) => {
+      const el = group.childNodes[k];
+      const px = a.xa._offset + a.xa.l2p(x), py = a.ya._offset + a.ya.l2p(y);
+      const visible = Number.isFinite(px) && Number.isFinite(py);
+      el.setAttribute("visibility", visible ? "visible" : "hidden");
+      if (!visible) return;
+      if (shape === "diamond") el.setAttribute("d", `M${px},${py - r}L${px + r},${py}L${px},${py + r}L${px - r},${py}Z`);
+      else { el.setAttribute("cx", px); el.setAttribute("cy", py); el.setAttribute("r", r); }
+    });
+    group.dataset.points = JSON.stringify(pts);
+  }
+
+  /** A horizontal dashed line at y = value across the plot area (an energy level). */
+  level(key, value, color = "#1b1f24") {
+    const a = this.axes();
+    if (!a) return;
+    const el = this.item(key, "line", { class: key, stroke: color, "stroke-width": "1.5", "stroke-dasharray": "6 4" });
+    const py = a.ya._offset + a.ya.l2p(value);
+    el.setAttribute("x1", a.fl._size.l); el.setAttribute("x2", a.fl._size.l + a.fl._size.w);
+    el.setAttribute("y1", py); el.setAttribute("y2", py);
+    el.dataset.value = String(value);
+  }
+}

@@ -3,7 +3,9 @@
  *
  *   const panel = createPanel(kind, section, data);  // kind from the panels vocabulary
  *   panel.draw(run);        // run from simulation.js prepareRun()
- *   panel.cursor(i, run);   // move the time cursor (or the current-state marker) to sample i
+ *   panel.cursor(i, run);   // move the time cursor (or the current-state marker) to sample i:
+ *                           // an SVG overlay (plotkit.js Overlay), never a Plotly relayout
+ *   panel.preview           // false for panels that need the server's run (forces, error report)
  *
  * Panels: energy, h-vs-e, momenta, phase, effective-potential, small-oscillations,
  * constraint-force (time plots with a cursor line), and work-precision (drawn from
@@ -11,27 +13,29 @@
  * Each panel writes a text alternative (a data table) into its .data-summary and
  * a one-line reading into its .readout.
  */
-import { axis, capital, COLORS, CONFIG, cursorShape, diff, finite, layout, line, PALETTE, parts } from "./plotkit.js";
+import { axis, capital, COLORS, CONFIG, diff, finite, layout, line, Overlay, PALETTE, parts, react } from "./plotkit.js";
 import { EffectivePotentialPanel, SmallOscillationsPanel } from "./reduction.js";
 import { fmt, seriesTable, table } from "./summaries.js";
 
 /** A panel of quantities against time, with a second row for their change since t = 0. */
 class TimePanel {
-  constructor(section, data) { this.section = section; this.data = data; Object.assign(this, parts(section)); }
+  constructor(section, data) {
+    this.section = section; this.data = data; Object.assign(this, parts(section));
+    this.overlay = new Overlay(this.plot);
+    this.preview = true;
+  }
 
-  series(run) { return []; } // [{name, values, color, dash}]
-
-  drawSeries(run, top, bottom, yTitle, bottomTitle) {
+  drawSeries(run, top, bottom, yTitle, bottomTitle, extra = {}) {
     const traces = top.map((s) => line(run.t, s.values, s.name, s.color, s.dash));
     for (const s of bottom || []) traces.push({ ...line(run.t, s.values, s.name, s.color, s.dash), yaxis: "y2", showlegend: false });
     const grid = bottom
-      ? { yaxis: axis(yTitle, { domain: [0.42, 1] }), yaxis2: axis(bottomTitle, { domain: [0, 0.3], exponentformat: "e" }), xaxis: axis("t (s)", { anchor: "y2" }), height: 400 }
+      ? { yaxis: axis(yTitle, { domain: [0.42, 1], ...(extra.yaxis || {}) }), yaxis2: axis(bottomTitle, { domain: [0, 0.3], exponentformat: "e" }), xaxis: axis("t (s)", { anchor: "y2" }), height: 380 }
       : { yaxis: axis(yTitle), xaxis: axis("t (s)") };
-    Plotly.react(this.plot, traces, layout({ ...grid, shapes: [cursorShape(run.t[0])] }), CONFIG);
+    react(this, traces, layout({ ...grid, shapes: extra.shapes || [] }));
   }
 
   cursor(i, run) {
-    Plotly.relayout(this.plot, { "shapes[0].x0": run.t[i], "shapes[0].x1": run.t[i] });
+    this.overlay.cursor(run.t[i]);
   }
 }
 
@@ -71,20 +75,21 @@ class MomentaPanel extends TimePanel {
     const names = Object.keys(run.momenta);
     const top = names.map((n, k) => ({ name: run.data.labels[n] || n, values: run.momenta[n], color: PALETTE[k % PALETTE.length] }));
     const bottom = names.map((n, k) => ({ name: `${run.data.labels[n] || n} − initial`, values: diff(run.momenta[n]), color: PALETTE[k % PALETTE.length] }));
-    this.drawSeries(run, top, bottom, "momentum", "change");
     // a conserved quantity should look flat: centre the upper axis on the values with a margin
     // of 5 % of their size (or 5 times their drift, if larger), not on the noise
     const all = finite(top.flatMap((s) => Array.from(s.values)));
     const drift = Math.max(...finite(bottom.flatMap((s) => Array.from(s.values))).map(Math.abs), 0);
     const lo = Math.min(...all), hi = Math.max(...all);
     const pad = Math.max(0.05 * Math.max(Math.abs(lo), Math.abs(hi)), 5 * drift, 1e-12);
-    Plotly.relayout(this.plot, { "yaxis.range": [lo - pad, hi + pad] });
+    this.drawSeries(run, top, bottom, "momentum", "change", { yaxis: { range: [lo - pad, hi + pad] } });
     this.readout.textContent = top.map((s, k) => `${s.name} stays at ${fmt(s.values[0])} within ${fmt(Math.max(...finite(bottom[k].values).map(Math.abs)))}.`).join(" ");
     seriesTable(this.summary, "Conserved momenta over the run", run.t, [...top, ...bottom]);
   }
 }
 
 class ConstraintForcePanel extends TimePanel {
+  constructor(section, data) { super(section, data); this.preview = false; } // the forces come from the server's run
+
   draw(run) {
     const top = [];
     const notes = [];
@@ -102,8 +107,8 @@ class ConstraintForcePanel extends TimePanel {
         } else notes.push(`${capital(c.label)} stays positive: the constraint holds throughout.`);
       }
     });
-    this.drawSeries(run, top, null, "force (N)");
-    Plotly.relayout(this.plot, { "shapes[1]": { type: "line", xref: "paper", x0: 0, x1: 1, y0: 0, y1: 0, line: { color: "#57606a", width: 1 } } });
+    this.drawSeries(run, top, null, "force (N)", null,
+      { shapes: [{ type: "line", xref: "paper", x0: 0, x1: 1, y0: 0, y1: 0, line: { color: "#57606a", width: 1 } }] });
     const ranges = top.filter((s) => !s.name.includes("slack")).map((s) => `${capital(s.name)} ranges from ${fmt(Math.min(...finite(s.values)))} to ${fmt(Math.max(...finite(s.values)))} N.`);
     this.readout.textContent = [...notes, ...ranges].join(" ");
     seriesTable(this.summary, "Constraint forces over the run (N)", run.t, top.filter((s) => !s.name.includes("slack")));
@@ -113,6 +118,8 @@ class ConstraintForcePanel extends TimePanel {
 class PhasePanel {
   constructor(section, data) {
     this.section = section; this.data = data; Object.assign(this, parts(section));
+    this.overlay = new Overlay(this.plot);
+    this.preview = true;
     this.q = data.coordinates[0];
     if (data.coordinates.length > 1 && this.tools) {
       const id = `${section.id}-coordinate`;
@@ -130,15 +137,14 @@ class PhasePanel {
     const lq = run.data.labels[this.q], unit = run.data.units[this.q];
     const traces = [
       { type: "scatter", mode: "lines", x: q, y: v, name: "trajectory", line: { color: COLORS.T, width: 1.5 } },
-      { type: "scatter", mode: "markers", x: [q[0]], y: [v[0]], name: "now", marker: { color: "#c62828", size: 11 } },
     ];
-    Plotly.react(this.plot, traces, layout({ hovermode: "closest", xaxis: axis(`${lq} (${unit})`), yaxis: axis(`${run.data.labels[this.q + "_dot"]} (${unit}/s)`) }), CONFIG);
+    react(this, traces, layout({ hovermode: "closest", xaxis: axis(`${lq} (${unit})`), yaxis: axis(`${run.data.labels[this.q + "_dot"]} (${unit}/s)`) }));
     this.readout.textContent = `${lq} ranges over [${fmt(Math.min(...q))}, ${fmt(Math.max(...q))}] ${unit}; its rate over [${fmt(Math.min(...v))}, ${fmt(Math.max(...v))}] ${unit}/s.`;
     seriesTable(this.summary, `Phase portrait of ${lq}`, run.t, [{ name: lq, values: q }, { name: run.data.labels[this.q + "_dot"], values: v }]);
   }
 
   cursor(i, run) {
-    Plotly.restyle(this.plot, { x: [[run.state[this.q][i]]], y: [[run.state[`${this.q}_dot`][i]]] }, [1]);
+    this.overlay.points("now", [[run.state[this.q][i], run.state[`${this.q}_dot`][i]]]);
   }
 }
 
@@ -147,6 +153,7 @@ class WorkPrecisionPanel {
   // so it is fetched only when the panel scrolls into view.
   constructor(section, data, url) {
     this.section = section; this.data = data; this.url = url; Object.assign(this, parts(section));
+    this.preview = false; // the report and the star belong to the server's run
     this.visible = !("IntersectionObserver" in window);
     if (!this.visible) {
       const observer = new IntersectionObserver((entries) => {

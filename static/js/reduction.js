@@ -11,7 +11,7 @@
  * coordinates take their values from the initial state.
  */
 import { compile } from "./expr.js";
-import { axis, COLORS, CONFIG, cursorShape, finite, layout, parts } from "./plotkit.js";
+import { axis, COLORS, finite, layout, Overlay, parts, react } from "./plotkit.js";
 import { fmt, table } from "./summaries.js";
 
 /** The one-coordinate reduction evaluated for a run: U_eff, m_eff, the momenta's values, E_r(t). */
@@ -57,7 +57,11 @@ function window_(values, nonnegative) {
 }
 
 export class EffectivePotentialPanel {
-  constructor(section, data) { this.section = section; this.data = data; Object.assign(this, parts(section)); }
+  constructor(section, data) {
+    this.section = section; this.data = data; Object.assign(this, parts(section));
+    this.overlay = new Overlay(this.plot);
+    this.preview = true;
+  }
 
   draw(run) {
     this.red = reduced(run);
@@ -70,12 +74,10 @@ export class EffectivePotentialPanel {
     const lr = run.data.labels[r], unit = run.data.units[r];
     const traces = [
       { type: "scatter", mode: "lines", x: this.grid, y: u, name: "U_eff", line: { color: COLORS.U, width: 2.5 } },
-      { type: "scatter", mode: "lines", x: [lo, hi], y: [Er[0], Er[0]], name: "energy level", line: { color: COLORS.E, dash: "dash" } },
-      { type: "scatter", mode: "markers", x: [], y: [], name: "turning points", marker: { color: COLORS.a, size: 10, symbol: "diamond" } },
-      { type: "scatter", mode: "markers", x: [values[0]], y: [U(values[0])], name: "now", marker: { color: "#c62828", size: 12 } },
     ];
     const lay = layout({ hovermode: "closest", xaxis: axis(`${lr} (${unit})`, { range: [lo, hi] }), yaxis: axis("U_eff (J)", { range: [bottom - 0.1 * d, top + 0.6 * d] }) });
-    Plotly.react(this.plot, traces, lay, CONFIG);
+    react(this, traces, lay);
+    this.turningCache = new Map();
     const momenta = Object.entries(this.red.P).map(([k, v]) => `${run.data.labels[k] || k} = ${fmt(v)}`).join(", ");
     this.cursor(0, run);
     table(this.summary, "Effective potential on a grid (every 30th point)", [`${lr} (${unit})`, "U_eff (J)"],
@@ -86,11 +88,16 @@ export class EffectivePotentialPanel {
   cursor(i, run) {
     const { U, Er, values } = this.red;
     const level = Er[i];
-    const turning = roots((x) => U(x) - level, this.grid[0], this.grid[this.grid.length - 1]);
-    Plotly.restyle(this.plot, {
-      x: [[this.grid[0], this.grid[this.grid.length - 1]], turning, [values[i]]],
-      y: [[level, level], turning.map(() => level), [U(values[i])]],
-    }, [1, 2, 3]);
+    // the level (dashed), the turning points (diamonds) and the current point, drawn over the plot
+    let turning = this.turningCache.get(level);
+    if (!turning) {
+      turning = roots((x) => U(x) - level, this.grid[0], this.grid[this.grid.length - 1]);
+      if (this.turningCache.size > 512) this.turningCache.clear();
+      this.turningCache.set(level, turning);
+    }
+    this.overlay.level("level", level);
+    this.overlay.points("turning", turning.map((x) => [x, level]), { color: COLORS.a, r: 6, shape: "diamond" });
+    this.overlay.points("now", [[values[i], U(values[i])]]);
     const lr = run.data.labels[this.red.r], unit = run.data.units[this.red.r];
     const tp = turning.length ? `turning points at ${lr} = ${turning.map(fmt).join(", ")} ${unit}` : "no turning point in view";
     this.readout.textContent = `Energy level ${fmt(level)} J; ${tp}. ${this.note}`;
@@ -131,7 +138,11 @@ export function measuredOmega(t, values) {
 }
 
 export class SmallOscillationsPanel {
-  constructor(section, data) { this.section = section; this.data = data; Object.assign(this, parts(section)); }
+  constructor(section, data) {
+    this.section = section; this.data = data; Object.assign(this, parts(section));
+    this.overlay = new Overlay(this.plot);
+    this.preview = true;
+  }
 
   draw(run) {
     const red = reduced(run);
@@ -144,7 +155,7 @@ export class SmallOscillationsPanel {
       const w = Math.sqrt(eq.w2), a = values[0] - eq.x, b = run.state[`${r}_dot`][0] / w;
       traces.push({ type: "scatter", mode: "lines", x: run.t, y: Array.from(run.t, (t) => eq.x + a * Math.cos(w * t) + b * Math.sin(w * t)), name: "small-oscillation prediction", line: { color: COLORS.U, width: 2, dash: "dash" } });
     }
-    Plotly.react(this.plot, traces, layout({ xaxis: axis("t (s)"), yaxis: axis(`${lr} (${unit})`), shapes: [cursorShape(0)] }), CONFIG);
+    react(this, traces, layout({ xaxis: axis("t (s)"), yaxis: axis(`${lr} (${unit})`) }));
     const predicted = eq ? Math.sqrt(eq.w2) : null;
     const rows = [
       ["predicted by the engine (ω² = U_eff''/m_eff)", predicted, predicted ? (2 * Math.PI) / predicted : null],
@@ -162,7 +173,7 @@ export class SmallOscillationsPanel {
   }
 
   cursor(i, run) {
-    Plotly.relayout(this.plot, { "shapes[0].x0": run.t[i], "shapes[0].x1": run.t[i] });
+    this.overlay.cursor(run.t[i]);
   }
 }
 

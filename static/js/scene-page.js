@@ -1,20 +1,21 @@
 /**
  * scene-page.js — the entry module of a scene page (templates/scene.html).
  *
- * Typesets the server-rendered derivation, prepares it for printing, and binds
- * the controls to the simulation panels.  Everything it needs is in the page:
+ * Typesets the server-rendered derivation (MathML until KaTeX has loaded), folds its
+ * bookkeeping steps behind an "all steps" toggle, prepares it for printing, and binds the
+ * controls to the simulation.  Everything it needs is in the page:
  * <script type="application/json" id="scene-data"> and data-* URLs on #simulation.
  */
-import { printReady, typeset } from "./derivation.js";
+import { foldSteps, printReady, whenTypeset } from "./derivation.js";
 import { connectSimulation } from "./simulation.js";
 
 const data = JSON.parse(document.getElementById("scene-data").textContent);
-const errors = typeset(document);
-document.body.dataset.katexErrors = String(errors);
+foldSteps(document);
 printReady();
+whenTypeset(document);
 
 const root = document.getElementById("simulation");
-if (root && window.Plotly) {
+if (root) {
   connectSimulation({
     form: document.getElementById("controls"),
     root,
@@ -22,7 +23,4 @@ if (root && window.Plotly) {
     urls: { simulate: root.dataset.simulateUrl, workPrecision: root.dataset.workPrecisionUrl },
     status: document.getElementById("run-status"),
   });
-} else if (root) {
-  document.querySelector("#run-status .message").textContent =
-    "The plotting library is missing: run scripts/assets.sh (it copies plotly.js into static/vendor).";
 }

@@ -7,23 +7,30 @@
  *   prepareRun(data, request, result)  the result plus what the panels derive from it
  *                                      (T and U from the engine's expressions, momenta,
  *                                      the run's extent), as plain arrays
- *   new SimulationView(root, data, urls)
- *       .draw(run)                     draw every panel found in root
- *                                      (<section data-panel="energy">, …; the animation
- *                                      in data-panel="animation-2d" or "animation-3d")
- *       .setIndex(i)                   move every time cursor to sample i
- *   connectSimulation({form, root, data, urls, status})
- *                                      bind the controls (controls.js) to re-simulate on
- *                                      change, with a progress state and errors in status;
- *                                      returns {run(request)}.
+ *   new SimulationView(root, data, urls, {onDrag, controls})
+ *       .draw(run, source)             draw the animation, the energy bars and the plot
+ *                                      panels in view (<section data-panel="energy">, …);
+ *                                      panels out of view are drawn when they scroll in
+ *                                      (after a server run, also when the browser is idle);
+ *                                      a preview leaves panels that need the server greyed
+ *       .setIndex(i)                   move the energy bars and every time cursor to sample i
+ *   connectSimulation({form, root, data, urls, status, fetchRun})
+ *                                      bind the controls: every input repaints a preview
+ *                                      integrated in the browser (preview.js) at the next
+ *                                      frame; 150 ms after the last change the server's run
+ *                                      replaces it.  After each repaint an input caused, the
+ *                                      document receives CustomEvent('lagrange:painted',
+ *                                      {detail: {source: 'preview' | 'server'}}).
  *
  * data is the page's client JSON (app/viz/page_model.py): coordinates, labels, units,
  * parameters, trees, conserved, reduction, constraint_forces, mechanism, panels.
  */
 import { Player } from "./animation.js";
-import { bindControls, readRequest } from "./controls.js";
+import { bindControls, controlRange, readRequest } from "./controls.js";
+import { EnergyBars } from "./energybars.js";
 import { compile } from "./expr.js";
 import { createPanel } from "./plots.js";
+import { compileRhs, integrate } from "./preview.js";
 import { fmt } from "./summaries.js";
 
 export async function simulate(url, request, { signal } = {}) {
@@ -91,102 +98,224 @@ export function prepareRun(data, request, result) {
   };
 }
 
+const plotly = new Promise((resolve) => {
+  // plotly.js loads with `async`: the animation and the math never wait for it
+  if (window.Plotly) return resolve(window.Plotly);
+  const script = document.getElementById("plotly-js");
+  if (script) script.addEventListener("load", () => resolve(window.Plotly));
+  window.addEventListener("load", () => { if (window.Plotly) resolve(window.Plotly); });
+});
+
+const idle = window.requestIdleCallback || ((f) => setTimeout(f, 50));
+
 export class SimulationView {
-  constructor(root, data, urls = {}) {
+  constructor(root, data, urls = {}, { onDrag = null, controls = null } = {}) {
     this.root = root;
     this.data = data;
     this.panels = [];
     this.player = null;
+    this.index = 0;
+    const barsEl = root.querySelector(".energy-bars");
+    this.bars = barsEl ? new EnergyBars(barsEl) : null;
     for (const section of root.querySelectorAll("[data-panel]")) {
       const kind = section.dataset.panel;
-      if (kind.startsWith("animation")) {
-        if (data.mechanism) this.player = new Player(section, data.mechanism, { onFrame: (i) => this.setIndex(i) });
-      } else {
-        const panel = createPanel(kind, section, data, urls);
-        if (panel) this.panels.push(panel);
+      if (kind.startsWith("animation") && data.mechanism) {
+        this.player = new Player(section, data.mechanism, { onFrame: (i) => this.setIndex(i), onDrag, controls });
       }
     }
-    this.pendingIndex = null;
-    this.lastCursor = 0;
+    this.visible = new Set();
+    this.observer = "IntersectionObserver" in window
+      ? new IntersectionObserver((entries) => this.seen(entries), { rootMargin: "100px" }) : null;
+    this.ready = plotly.then(() => {
+      for (const section of root.querySelectorAll("[data-panel]")) {
+        const kind = section.dataset.panel;
+        if (kind.startsWith("animation")) continue;
+        const panel = createPanel(kind, section, data, urls);
+        if (!panel) continue;
+        this.panels.push(panel);
+        if (this.observer) this.observer.observe(section); else this.visible.add(panel.section);
+      }
+    });
   }
 
-  draw(run) {
-    this.run = run;
-    for (const p of this.panels) {
-      try {
-        const done = p.draw(run);
-        if (done && done.catch) done.catch((err) => console.warn(err));
-      } catch (err) {
-        const out = p.section.querySelector(".readout");
-        if (out) out.textContent = `This panel could not be drawn: ${err.message}`;
-      }
+  seen(entries) {
+    for (const e of entries) {
+      if (e.isIntersecting) this.visible.add(e.target); else this.visible.delete(e.target);
     }
+    for (const p of this.panels) if (this.visible.has(p.section) && p.dirty) this.drawPanel(p);
+  }
+
+  drawPanel(p) {
+    const run = p.dirty;
+    p.dirty = null;
+    p.previewing = run.source === "preview";
+    p.section.classList.remove("stale");
+    // a preview leaves the data tables (the text alternative) to the server's run
+    const summary = p.summary;
+    if (p.previewing) p.summary = null;
+    try {
+      const done = p.draw(run);
+      if (done && done.catch) done.catch((err) => console.warn(err));
+      p.cursor(Math.min(this.index, run.n - 1), run);
+    } catch (err) {
+      const out = p.section.querySelector(".readout");
+      if (out) out.textContent = `This panel could not be drawn: ${err.message}`;
+    } finally {
+      p.summary = summary;
+    }
+  }
+
+  /** Draw a run; source is "preview" (the browser's) or "server". Resolves when the panels in view are drawn. */
+  draw(run, source = "server") {
+    this.run = run;
+    run.source = source;
+    this.root.dataset.source = source;
     if (this.player) this.player.load(run);
+    else this.setIndex(0);
+    if (this.bars) { this.bars.load(run); this.bars.set(this.index); }
+    return this.ready.then(() => {
+      if (this.run !== run) return;
+      for (const p of this.panels) {
+        if (source === "preview" && !p.preview) { p.section.classList.add("stale"); continue; }
+        p.dirty = run;
+        if (this.visible.has(p.section)) this.drawPanel(p);
+      }
+      // after the server's run, panels out of view are drawn while the browser is idle
+      if (source === "server") {
+        const later = this.panels.filter((p) => p.dirty === run);
+        const next = () => {
+          const p = later.shift();
+          if (!p || this.run !== run) return;
+          if (p.dirty === run) this.drawPanel(p);
+          idle(next);
+        };
+        idle(next);
+      }
+    });
   }
 
   setIndex(i) {
-    // time cursors follow the animation at up to 8 updates per second, and always end on the last frame
-    this.pendingIndex = i;
-    const now = performance.now();
-    if (now - this.lastCursor > 125) this.flush();
-    else if (!this.timer) this.timer = setTimeout(() => this.flush(), 130);
-  }
-
-  flush() {
-    clearTimeout(this.timer);
-    this.timer = null;
-    if (this.pendingIndex === null || !this.run) return;
-    this.lastCursor = performance.now();
+    // called by the animation for every frame it shows: only overlays and bars move
+    this.index = i;
+    if (this.bars) this.bars.set(i);
+    if (!this.run) return;
     for (const p of this.panels) {
-      try { p.cursor(this.pendingIndex, this.run); } catch { /* a panel that failed to draw has no cursor */ }
+      if (p.dirty || !this.visible.has(p.section)) continue;
+      try { p.cursor(Math.min(i, this.run.n - 1), this.run); } catch { /* a panel that failed to draw has no cursor */ }
     }
-    this.pendingIndex = null;
   }
 }
 
 function describe(stats) {
-  const parts = [`Method ${stats.method}`];
+  const parts = [`Server run: method ${stats.method}`];
   if (stats.reason) parts.push(`(${stats.reason})`);
   parts.push(`run time ${fmt((stats.wall_time_s || 0) * 1000)} ms`);
-  if (stats.error_estimate !== undefined) parts.push(`estimated error ${fmt(stats.error_estimate)}`);
+  if (stats.error_estimate !== undefined && stats.error_estimate !== null) parts.push(`estimated error ${fmt(stats.error_estimate)}`);
   return parts.join(", ") + ".";
 }
 
-export function connectSimulation({ form, root, data, urls, status }) {
-  const view = new SimulationView(root, data, urls);
+const painted = (source) => document.dispatchEvent(new CustomEvent("lagrange:painted", { detail: { source } }));
+
+/** About 60 samples per simulated second: smooth animation, compact arrays. */
+export const samplesFor = (tEnd) => Math.min(4000, Math.max(300, Math.round(60 * tEnd)));
+
+export function connectSimulation({ form, root, data, urls = {}, status, fetchRun = null, serial = false }) {
   const message = status.querySelector(".message");
   const warnings = status.querySelector(".warnings");
+  const post = fetchRun || ((request, signal) => simulate(urls.simulate, request, { signal }));
+  let controls = null;
+  const view = new SimulationView(root, data, urls, {
+    onDrag: (values) => controls && controls.set(values),
+    controls: (name) => (data.coordinates.includes(name) ? controlRange(form, name) : null),
+  });
   let controller = null;
   let generation = 0;
+  let rhs = null, previewSpec = null;
+  let pendingPreview = null;
+
+  function say(state, text, list) {
+    status.dataset.state = state;
+    message.textContent = text;
+    if (list) warnings.replaceChildren(...list.map((w) => Object.assign(document.createElement("li"), { textContent: w })));
+  }
+
+  function preview(request) {
+    // at most one preview per displayed frame: the latest input wins
+    const first = pendingPreview === null;
+    pendingPreview = request;
+    if (!first) return;
+    requestAnimationFrame(() => {
+      const req = pendingPreview;
+      pendingPreview = null;
+      if (!rhs) return;
+      if (req.samples === undefined) req.samples = samplesFor(req.t_end || data.t_end);
+      const t0 = performance.now();
+      let result;
+      try { result = integrate(previewSpec, rhs, data, req, req.samples); } catch (err) { result = { error: err.message }; }
+      const t1 = performance.now();
+      root.classList.remove("stale");
+      if (result.error) {
+        say("preview", `No preview: ${result.error}. The server's run follows when you stop.`);
+        return;
+      }
+      const prepared = prepareRun(data, req, result);
+      const t2 = performance.now();
+      view.draw(prepared, "preview");
+      // where the preview's time goes (integrate / prepare / draw, ms): read by benchmarks/bench_browser.py
+      root.dataset.previewTiming = [t1 - t0, t2 - t1, performance.now() - t2].map((x) => x.toFixed(1)).join(" ");
+      say("preview", "Preview: integrated in your browser (RK4, fixed step). The server's run, with its error estimate, replaces it when you stop.");
+      painted("preview");
+    });
+  }
+
+  let inFlight = false, queued = null;
 
   async function run(request) {
-    // about 60 samples per simulated second: smooth animation, compact arrays
-    if (request.samples === undefined) request.samples = Math.min(4000, Math.max(300, Math.round(60 * (request.t_end || data.t_end))));
+    if (request.samples === undefined) request.samples = samplesFor(request.t_end || data.t_end);
+    // serial: a server that runs one job per session (the playground's worker pool) gets the
+    // latest settings after the current run ends, instead of an aborted request and a 429
+    if (serial && inFlight) { queued = request; return; }
+    inFlight = true;
     controller?.abort();
     controller = new AbortController();
     const mine = ++generation;
     root.setAttribute("aria-busy", "true");
-    status.dataset.state = "running";
-    message.textContent = "Simulating…";
+    root.classList.remove("stale");
+    if (status.dataset.state !== "preview") say("running", "Simulating…");
     try {
-      const result = await simulate(urls.simulate, request, { signal: controller.signal });
-      if (mine !== generation) return;
+      const result = await post(request, controller.signal);
+      if (mine !== generation || queued) return; // newer settings are on their way
+      if (result.preview && result.preview.rhs !== previewSpec?.rhs) {
+        try { rhs = compileRhs(result.preview); previewSpec = result.preview; } catch { rhs = null; }
+      }
       const r = prepareRun(data, request, result);
-      view.draw(r);
-      status.dataset.state = "ready";
-      message.textContent = describe(r.stats);
-      warnings.replaceChildren(...(r.stats.warnings || []).map((w) => Object.assign(document.createElement("li"), { textContent: w })));
+      await view.draw(r, "server");
+      if (mine !== generation) return;
+      say("ready", describe(r.stats), r.stats.warnings || []);
       root.dataset.runs = String(Number(root.dataset.runs || 0) + 1);
+      painted("server");
     } catch (err) {
       if (err.name === "AbortError" || mine !== generation) return;
-      status.dataset.state = "error";
-      message.textContent = `The simulation failed: ${err.message}`;
+      say("error", `The simulation failed: ${err.message}`, []);
+      root.classList.add("stale");
     } finally {
       if (mine === generation) root.setAttribute("aria-busy", "false");
+      inFlight = false;
+      if (queued) { const next = queued; queued = null; run(next); }
     }
   }
 
-  bindControls(form, run);
+  controls = bindControls(form, {
+    onInput: preview,
+    onSettle: run,
+    onInvalid: (why) => {
+      ++generation;
+      controller?.abort();
+      root.setAttribute("aria-busy", "false");
+      root.classList.add("stale");
+      say("invalid", `Not re-run: ${why}.`, []);
+    },
+  });
   run(readRequest(form));
   return { run, view };
 }

@@ -21,6 +21,7 @@ export function fmt(x) {
 }
 
 export function table(container, caption, headers, rows) {
+  if (!container) return null;
   const t = document.createElement("table");
   const cap = document.createElement("caption");
   cap.textContent = caption;
@@ -47,6 +48,7 @@ export function table(container, caption, headers, rows) {
 }
 
 export function seriesTable(container, caption, t, series) {
+  if (!container) return null;
   const rows = series.map(({ name, values }) => {
     let lo = Infinity, hi = -Infinity;
     for (const v of values) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }

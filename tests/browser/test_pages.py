@@ -25,6 +25,16 @@ def trace_values(page, selector: str, trace: int, key: str = "x") -> list:
     )
 
 
+def bodies(page, kind: str = "animation-2d") -> list:
+    """The bodies the animation's canvas shows: label and position in CSS pixels."""
+    return page.evaluate(f"JSON.parse(document.querySelector('[data-panel={kind}] canvas').dataset.bodies || '[]')")
+
+
+def cursor(page, kind: str = "energy") -> float:
+    """The time at which a plot's cursor overlay stands."""
+    return float(page.evaluate(f"document.querySelector('[data-panel={kind}] .plot-overlay line.cursor').dataset.value"))
+
+
 def test_contents_page(page, artifacts):
     page.goto("/")
     page.wait_for_load_state("load")
@@ -46,6 +56,12 @@ def test_scene_page_loads_typesets_and_draws_every_panel(page, artifacts, scene_
         plot = section.locator(".plot")
         if kind == "work-precision":
             continue  # drawn when scrolled into view: see test_work_precision_chart
+        if kind.startswith("animation"):
+            assert bodies(page, kind), f"{kind} drew no body"
+            assert page.locator(".energy-bars .ebar").count() >= 3
+            continue
+        # panels out of view are drawn when the browser is idle after the server's run
+        page.wait_for_function("(el) => el.data && el.data.length > 0", arg=plot.element_handle())
         assert plot.locator(".main-svg").count() > 0, f"{kind} was not drawn"
         assert page.evaluate("(el) => el.data.length", plot.element_handle()) > 0, f"{kind} has no data"
         if not kind.startswith("animation"):
@@ -56,27 +72,27 @@ def test_scene_page_loads_typesets_and_draws_every_panel(page, artifacts, scene_
 
 
 def test_animation_plays_and_moves_the_cursors(page, artifacts):
+    page.set_viewport_size({"width": 1280, "height": 2400})  # the animation and the energy plot both in view
     open_scene(page, "simple-pendulum")
-    player = "[data-panel=animation-2d] .plot"
-    bodies = page.evaluate(f"document.querySelector('{player}').data.findIndex((t) => t.name === 'bob')")
-    start = trace_values(page, player, bodies)
-    cursor = page.evaluate("document.querySelector('[data-panel=energy] .plot').layout.shapes[0].x0")
+    page.wait_for_selector("[data-panel=energy] .plot-overlay line.cursor", state="attached")
+    start = bodies(page)
+    before = cursor(page)
     page.click("[data-panel=animation-2d] [data-action=play]")
     page.wait_for_timeout(900)
-    moving = trace_values(page, player, bodies)
+    moving = bodies(page)
     page.click("[data-panel=animation-2d] [data-action=play]")  # pause
     page.wait_for_timeout(300)
     assert moving != start
     assert page.get_attribute("[data-panel=animation-2d] [data-action=play]", "aria-pressed") == "false"
-    paused = trace_values(page, player, bodies)
+    paused = bodies(page)
     page.wait_for_timeout(300)
-    assert trace_values(page, player, bodies) == paused
-    assert page.evaluate("document.querySelector('[data-panel=energy] .plot').layout.shapes[0].x0") > cursor
+    assert bodies(page) == paused
+    assert cursor(page) > before
     # scrubbing with the keyboard
     page.focus("[data-panel=animation-2d] input.scrub")
     page.keyboard.press("End")
     page.wait_for_timeout(300)
-    t_end = page.evaluate("document.querySelector('[data-panel=energy] .plot').layout.shapes[0].x0")
+    t_end = cursor(page)
     assert t_end == pytest.approx(SCENES["simple-pendulum"].t_end)
     assert page.inner_text("[data-panel=animation-2d] output.time").startswith(f"t = {t_end:.2f} s · θ = ")
     page.locator("[data-panel=animation-2d]").screenshot(path=artifacts / "animation.png")
@@ -84,7 +100,9 @@ def test_animation_plays_and_moves_the_cursors(page, artifacts):
 
 
 def test_moving_a_slider_resimulates_without_reloading(page, artifacts):
+    page.set_viewport_size({"width": 1280, "height": 2400})  # the energy plot in view: panels out of view wait
     open_scene(page, "simple-pendulum")
+    page.wait_for_function("document.querySelector('[data-panel=energy] .plot').data?.length > 0")
     page.evaluate("window.notReloaded = true")
     runs = page.get_attribute("#simulation", "data-runs")
     energy = trace_values(page, "[data-panel=energy] .plot", 0, "y")
@@ -106,10 +124,15 @@ def test_bad_input_and_refusals_are_shown_in_place(page):
     page.dispatch_event("#ctl-R", "change")
     assert page.get_attribute("#ctl-R", "aria-invalid") == "true"
     assert "must be a number from" in page.inner_text("#ctl-R-hint")
+    # an invalid value is not run: the page says so next to Play and greys the plots
+    assert page.get_attribute("#run-status", "data-state") == "invalid"
+    assert page.inner_text("#run-status .message").startswith("Not re-run: ")
+    assert "stale" in page.get_attribute("#simulation", "class")
     page.fill("#ctl-R", "1")
     page.dispatch_event("#ctl-R", "change")
     page.wait_for_selector(READY, state="attached")
     # Verlet needs a constant mass matrix, which the spherical pendulum has not: the API refuses, the page says why
+    page.click(".controls-run-details > summary")
     page.select_option("#ctl-method", "Verlet")
     page.wait_for_selector('#run-status[data-state="error"]', state="attached")
     message = page.inner_text("#run-status .message")
@@ -130,9 +153,10 @@ def test_bad_input_and_refusals_are_shown_in_place(page):
 
 def test_keyboard_focus_reaches_every_control(page):
     open_scene(page, "spherical-pendulum")
+    page.click(".controls-run-details > summary")  # the integration settings, folded by default
     controls = page.evaluate(
         """() => [...document.querySelectorAll('main input, main select, main button')]
-              .filter((el) => el.offsetParent !== null && !el.disabled).map((el) => el.id || el.outerHTML.slice(0, 80))"""
+              .filter((el) => el.checkVisibility() && !el.disabled).map((el) => el.id || el.outerHTML.slice(0, 80))"""
     )
     assert len(controls) > 20
     page.focus("main")

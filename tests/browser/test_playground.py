@@ -23,8 +23,10 @@ def test_the_default_system_is_derived_typeset_and_simulated(page, artifacts):
     assert page.evaluate("document.body.dataset.katexErrors") == "0"
     assert page.locator("#derivation .step").count() >= 8
     assert page.locator(".math .katex").count() == page.locator(".math").count() > 0
-    for kind in ("animation-2d", "energy", "phase"):
+    assert page.evaluate("JSON.parse(document.querySelector('[data-panel=animation-2d] canvas').dataset.bodies).length") > 0
+    for kind in ("energy", "phase"):
         plot = page.locator(f"[data-panel={kind}] .plot")
+        page.wait_for_function("(el) => el.data && el.data.length > 0", arg=plot.element_handle())
         assert plot.locator(".main-svg").count() > 0, kind
         assert page.evaluate("(el) => el.data.length", plot.element_handle()) > 0, kind
     page.screenshot(path=artifacts / "playground.png", full_page=True)
@@ -63,10 +65,9 @@ def test_a_typed_system_is_derived_shared_and_animated(page, artifacts, browser,
     other.context.close()
 
     # the pendulum bob swings: the animation moves when played
-    plot = "[data-panel=animation-2d] .plot"
-    bob = page.evaluate(f"document.querySelector('{plot}').data.findIndex((t) => t.name === 'mass 1')")
-    assert bob >= 0
-    where = f"JSON.stringify([document.querySelector('{plot}').data[{bob}].x, document.querySelector('{plot}').data[{bob}].y])"
+    canvas = "document.querySelector('[data-panel=animation-2d] canvas')"
+    assert page.evaluate(f"JSON.parse({canvas}.dataset.bodies)[0].label") == "mass 1"
+    where = f"{canvas}.dataset.bodies"
     start = page.evaluate(where)
     page.click("[data-panel=animation-2d] [data-action=play]")
     page.wait_for_function(f"{where} !== {start!r}")

@@ -91,7 +91,8 @@ def test_scene_page_shows_every_step_and_the_results(pages, scene_id):
     doc = derivation_document(scene_id)
     steps = [a for t, a in tags.tags if t == "li" and "step" in a.get("class", "").split()]
     assert len(steps) == len(doc["steps"])
-    text = "".join(tags.text)
+    # the TeX of every formula rides in data-tex (its MathML is the element's content)
+    text = "".join(tags.text) + "".join(a["data-tex"] for t, a in tags.tags if "data-tex" in a)
     for step in doc["steps"]:
         assert step["title"] in text and step["explanation"] in text
         assert step["latex"] in text  # Jinja escapes & and <, which the parser undoes
@@ -197,3 +198,32 @@ def test_expression_trees_evaluate_like_sympy(scene_id):
 def test_expression_trees_refuse_anything_but_arithmetic(text):
     with pytest.raises(TreeError):
         tree(text, ["x", "y"])
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_every_formula_is_mathml_with_its_tex(pages, scene_id):
+    html = pages[f"/scenes/{scene_id}"].text
+    tags = parse(html)
+    formulas = [a for t, a in tags.tags if "math" in a.get("class", "").split()]
+    assert formulas and all(a.get("data-tex") for a in formulas)
+    # each formula element holds a <math> element: the derivation reads without JavaScript
+    assert html.count('<math xmlns="http://www.w3.org/1998/Math/MathML"') == len(formulas)
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_the_core_steps_are_never_folded(pages, scene_id):
+    tags = parse(pages[f"/scenes/{scene_id}"].text)
+    steps = [a for t, a in tags.tags if t == "li" and "step" in a.get("class", "").split()]
+    titles = [s["title"] for s in derivation_document(scene_id)["steps"]]
+    folded = {title for title, a in zip(titles, steps, strict=True) if "bookkeeping" in a["class"].split()}
+    assert {"Lagrangian", "Euler–Lagrange equations", "Accelerations"}.isdisjoint(folded)
+    assert "Positions" in folded and len(folded) < len(titles)
+
+
+def test_a_scene_page_is_sent_compressed(client):
+    response = client.get("/scenes/simple-pendulum", headers={"Accept-Encoding": "gzip"})
+    assert response.headers["content-encoding"] == "gzip" and "<h1" in response.text
+    plain = client.get("/scenes/simple-pendulum", headers={"Accept-Encoding": "identity"})
+    assert "content-encoding" not in plain.headers and plain.text == response.text
+    module = client.get("/static/js/simulation.js", headers={"Accept-Encoding": "gzip"})
+    assert module.headers["content-encoding"] == "gzip" and "connectSimulation" in module.text

@@ -1,0 +1,55 @@
+/**
+ * energybars.js — bars of T, U, E = T + U (and h where h ≠ E) at the instant the animation shows.
+ *
+ *   const bars = new EnergyBars(container);
+ *   bars.load(run);   // run from simulation.js prepareRun(): one scale for the whole run
+ *   bars.set(i);      // the values at sample i (a few style writes: cheap enough for every frame)
+ *
+ * Every bar starts at zero on one shared axis, so a negative U points left and the bars of
+ * T and U add up to the bar of E.  Each row carries its value as text.
+ */
+import { COLORS } from "./plotkit.js";
+import { fmt } from "./summaries.js";
+
+export class EnergyBars {
+  constructor(container) {
+    this.container = container;
+  }
+
+  load(run) {
+    const rows = [];
+    if (run.T) rows.push({ key: "T", name: "T", title: "kinetic energy", values: run.T, color: COLORS.T });
+    if (run.U) rows.push({ key: "U", name: "U", title: "potential energy", values: run.U, color: COLORS.U });
+    if (run.energy) rows.push({ key: "E", name: "E", title: "T + U", values: run.energy, color: COLORS.E });
+    if (run.hamiltonian && !run.data.h_equals_e) rows.push({ key: "h", name: "h", title: "the Hamiltonian", values: run.hamiltonian, color: COLORS.h });
+    let lo = 0, hi = 0;
+    for (const r of rows) for (const v of r.values) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
+    this.lo = lo; this.span = Math.max(hi - lo, 1e-300);
+    this.rows = rows;
+    const zero = (100 * -lo) / this.span;
+    this.container.replaceChildren(...rows.map((r) => {
+      const row = document.createElement("div");
+      row.className = "ebar";
+      row.dataset.key = r.key;
+      row.innerHTML = `<span class="ebar-name" title="${r.title}"><i>${r.name}</i></span><span class="ebar-track"><span class="ebar-zero"></span><span class="ebar-fill"></span></span><span class="ebar-value"></span>`;
+      row.querySelector(".ebar-fill").style.background = r.color;
+      row.querySelector(".ebar-zero").style.left = `${zero}%`;
+      r.fill = row.querySelector(".ebar-fill");
+      r.text = row.querySelector(".ebar-value");
+      return row;
+    }));
+    this.container.dataset.ready = "true";
+  }
+
+  set(i) {
+    if (!this.rows) return;
+    for (const r of this.rows) {
+      const v = r.values[i];
+      if (!Number.isFinite(v)) { r.fill.style.width = "0"; r.text.textContent = "–"; continue; }
+      const a = (100 * (Math.min(0, v) - this.lo)) / this.span, w = (100 * Math.abs(v)) / this.span;
+      r.fill.style.left = `${a}%`;
+      r.fill.style.width = `${w}%`;
+      r.text.textContent = `${fmt(v)} J`;
+    }
+  }
+}
