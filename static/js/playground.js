@@ -95,7 +95,8 @@ function body(request) {
     ...p, value: request.parameters[p.name] ?? p.value,
   }));
   const { initial, t_end, method, rtol, samples } = request;
-  return { ...system, parameters, initial, t_end, method, rtol, samples };
+  // series rounded to what a plot shows; stats stay exact
+  return { ...system, parameters, initial, t_end, method, rtol, samples, precision: "display" };
 }
 
 const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
