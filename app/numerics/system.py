@@ -30,7 +30,6 @@ class NumericSystem:
     conserved: tuple[str, ...]
     key: str
     periodic: tuple[bool, ...] = ()  # coordinates that are angles: F(q + 2 pi e_i) = F(q)
-    browser: str = ""  # the body of a JavaScript (t, y, k, out) computing rhs, for the page's live preview
     _compiled: ModuleType | None = field(default=None, repr=False)
     _lock: threading.Lock = field(default_factory=threading.Lock, repr=False)
     _bound: dict = field(default_factory=dict, repr=False)
@@ -38,6 +37,11 @@ class NumericSystem:
     @property
     def n(self) -> int:
         return len(self.coordinates)
+
+    @cached_property
+    def browser(self) -> str:
+        """The body of a JavaScript (t, y, k, out) computing rhs, for the page's live preview (printed on first use)."""
+        return browser_source(self.derivation, Names.of(self.derivation))
 
     @cached_property
     def compiled_key(self) -> str:
@@ -134,7 +138,6 @@ def numeric_system(d: Derivation, sources: dict[str, str] | None = None) -> Nume
         key=jit.source_key("".join(sources.values())),
     )
     system.periodic = tuple(_is_angle(system, i) for i in range(system.n))
-    system.browser = browser_source(d, names)
     return system
 
 
