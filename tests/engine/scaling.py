@@ -33,9 +33,7 @@ def scale_text(text: str | None, factors: dict[str, float]) -> str | None:
 def scaled(system: System, factors: dict[str, float]) -> System:
     """The declaration with each named parameter p replaced by p * factors[p]."""
     s = lambda text: scale_text(text, factors)  # noqa: E731
-    particles = tuple(
-        Particle(s(p.mass), tuple(s(c) for c in p.position), p.label) for p in system.particles
-    )
+    particles = tuple(Particle(s(p.mass), tuple(s(c) for c in p.position), p.label) for p in system.particles)
     return dataclasses.replace(
         system,
         particles=particles,
