@@ -12,7 +12,7 @@ from typing import Annotated, Any
 
 from pydantic import BaseModel, ConfigDict, Field, create_model
 
-from app.engine.parse import MAX_LENGTH
+from app.engine.parse import FUNCTIONS, MAX_LENGTH
 from app.service.user_systems import MAX_COORDINATES, MAX_PARAMETERS, MAX_PARTICLES
 from app.web.schemas import ParameterInfo
 from app.web.schemas_simulate import SimulateRequest
@@ -23,7 +23,7 @@ Expression = Annotated[
         min_length=1,
         max_length=MAX_LENGTH,
         description="An expression: numbers, declared names, + - * / **, parentheses and "
-        "sin cos tan asin acos atan sinh cosh tanh exp log sqrt Abs; pi and time t.",
+        f"{' '.join(FUNCTIONS)} (atan2(y, x) takes two arguments); pi and time t.",
     ),
 ]
 Name = Annotated[
