@@ -266,7 +266,7 @@ def model_of(spec: dict[str, Any], doc: dict[str, Any]) -> dict[str, Any]:
     particles = _display_particles(spec, doc)
     three_d = bool(spec.get("particles")) and _moves_in_3d(particles, spec["coordinates"])
     panels = ["animation-3d" if three_d else "animation-2d", "energy"]
-    if not doc["hamiltonian_equals_energy"]:
+    if doc["hamiltonian_equals_energy"] is False:
         panels.append("h-vs-e")
     panels += ["momenta", "phase", "effective-potential", "small-oscillations"]
     info = {

@@ -156,8 +156,13 @@ class DerivationDocument(BaseModel):
     cyclic: list[str]
     conserved: list[ConservedQuantity]
     explicit_time_derivative: ExprPair
-    hamiltonian_equals_energy: bool
+    hamiltonian_equals_energy: bool | None = Field(
+        description="Whether h = E: true, false, or null when it cannot be decided (only L was given, so T and U "
+        "cannot be told apart); hamiltonian_energy_reason says why."
+    )
     hamiltonian_energy_reason: str
+    hamiltonian_conserved: bool = Field(description="Whether h is conserved (dh/dt = −∂L/∂t + Σ Q q̇ = 0).")
+    hamiltonian_conserved_reason: str
     energy_minus_hamiltonian: ExprPair
     effective_potential: EffectivePotential | None
     steps: list[Step]
