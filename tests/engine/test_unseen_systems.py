@@ -213,8 +213,16 @@ UNSEEN_SYSTEMS = {name: u.system for name, u in UNSEEN.items()}
 SCALINGS = scaling_cases(UNSEEN_SYSTEMS, (("kg", "m"),))
 
 
+# the triple pendulum's Cramer's rule takes seconds per derivation
+SLOW_TO_DERIVE = {"triple-pendulum"}
+
+
 @pytest.mark.parametrize(
-    ("name", "units", "factor"), SCALINGS, ids=[f"{s}-{'+'.join(u)}-{f:g}" for s, u, f in SCALINGS]
+    ("name", "units", "factor"),
+    [
+        pytest.param(s, u, f, id=f"{s}-{'+'.join(u)}-{f:g}", marks=[pytest.mark.slow] if s in SLOW_TO_DERIVE else [])
+        for s, u, f in SCALINGS
+    ],
 )
 def test_scaled_masses_and_lengths_keep_the_accelerations(name, units, factor):
     system = UNSEEN_SYSTEMS[name]
