@@ -142,9 +142,9 @@ def energetics(mech: Mechanics, eqs: Equations) -> Energetics:
 def _sources_of_t1_t0(mech: Mechanics, parts: dict[int, sp.Expr]) -> list[str]:
     """Where T's parts of degree 1 and 0 in the velocities come from, each in a sentence."""
     t = mech.table.t
-    if mech.positions:
-        # with particles, T1 and T0 come only from dr/dt: positions that depend on time
-        moving = [str(i) for i, r in enumerate(mech.positions, start=1) if any(c.has(t) for c in r)]
+    # with particles, T1 and T0 come only from dr/dt: positions that depend on time
+    moving = [str(i) for i, r in enumerate(mech.positions, start=1) if any(c.has(t) for c in r)]
+    if moving:
         which = "particle " + moving[0] if len(moving) == 1 else "particles " + ", ".join(moving)
         return [
             f"The positions depend explicitly on time (a moving constraint: the position of {which} contains t), "
