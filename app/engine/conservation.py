@@ -8,8 +8,14 @@ homogeneous functions gives sum_k q_dot_k dT/dq_dot_k = 2 T2 + T1, hence
 
     h = T2 - T0 + U   and   E - h = T1 + 2 T0,
 
-which vanishes exactly when T is a homogeneous quadratic form: the case of
-constraints fixed in time.
+which vanishes exactly when T is a homogeneous quadratic form.  T1 and T0 have
+two possible origins, and the reason given names each one present: positions
+that depend explicitly on time (a moving constraint: with r(q, t),
+v = sum_k dr/dq_k q_dot_k + dr/dt, so T1 = sum m v_q . dr/dt and
+T0 = sum m |dr/dt|^2 / 2), or terms the user wrote into T directly (a
+velocity-linear, gyroscopic or magnetic term; a velocity-free term such as a
+rotating frame's centrifugal one).  When only L is given, T and U cannot be
+told apart and whether h = E is left undecided (None), never claimed.
 """
 
 from __future__ import annotations
@@ -39,9 +45,11 @@ class Energetics:
     hamiltonian: sp.Expr
     energy: sp.Expr
     energy_minus_h: sp.Expr
-    h_equals_e: bool
+    h_equals_e: bool | None  # None: undecidable (only L was given)
     reason: str
     power: sp.Expr
+    h_conserved: bool
+    h_conserved_reason: str
 
 
 def velocity_degrees(expr: sp.Expr, velocities: tuple[sp.Symbol, ...]) -> dict[int, sp.Expr]:
@@ -78,11 +86,15 @@ def energetics(mech: Mechanics, eqs: Equations) -> Energetics:
     # dh/dt = -dL/dt|explicit + sum_k Q_k q_dot_k  (the power of the non-conservative forces)
     power = sp.expand(sum(f * v for f, v in zip(mech.Q, qd, strict=True)))
 
+    equal: bool | None
     if mech.T is None:
         E = h
         diff = sp.Integer(0)
-        equal = True
-        reason = "Only L was given, so T and U cannot be told apart; the energy reported is h itself."
+        equal = None
+        reason = (
+            "Only L was given, so T and U cannot be told apart: whether h equals the energy T + U cannot be "
+            "decided, and the energy reported is h itself."
+        )
     else:
         parts = velocity_degrees(mech.T, qd)
         unexpected = sorted(d for d in parts if d not in (0, 1, 2))
@@ -100,18 +112,66 @@ def energetics(mech: Mechanics, eqs: Equations) -> Energetics:
         elif unexpected:
             reason = "T is not a polynomial of degree at most two in the velocities, so h differs from E."
         else:
-            reason = (
-                "The positions depend explicitly on time (a moving constraint), so T has parts of degree "
-                "1 and 0 in the velocities and E − h = T₁ + 2T₀ ≠ 0."
-            )
+            causes = "; and ".join(_sources_of_t1_t0(mech, parts))
+            reason = f"{causes}. So E − h = T₁ + 2T₀ ≠ 0."
 
-    if dL_dt == 0 and not forced:
-        name = "E" if equal and mech.T is not None else "h"
-        why = "L has no explicit time dependence and no non-conservative force acts, so dh/dt = −∂L/∂t = 0"
-        if name == "E":
-            why += ", and h = E here."
+    # dh/dt = -dL/dt|explicit + sum_k Q_k q_dot_k
+    working = forced and not is_zero(power)
+    h_conserved = dL_dt == 0 and not working
+    if h_conserved:
+        name = "E" if equal else "h"
+        if forced:
+            why = "L has no explicit time dependence and the generalized forces do no work (Σ Q q̇ = 0), so dh/dt = 0"
         else:
-            why += "."
+            why = "L has no explicit time dependence and no non-conservative force acts, so dh/dt = −∂L/∂t = 0"
+        why += ", and h = E here." if name == "E" else "."
         conserved.append(Conserved(name, name, E if name == "E" else h, why))
+        h_why = why
+    else:
+        parts_of_change = []
+        if dL_dt != 0:
+            parts_of_change.append("L depends explicitly on time (∂L/∂t ≠ 0)")
+        if working:
+            parts_of_change.append("the generalized forces do work at the rate Σ Q q̇")
+        joined = " and ".join(parts_of_change)
+        h_why = f"{joined[0].upper()}{joined[1:]}, so h is not conserved: dh/dt = −∂L/∂t + Σ Q q̇ along the motion."
 
-    return Energetics(cyclic, tuple(conserved), dL_dt, h, E, diff, equal, reason, power)
+    return Energetics(cyclic, tuple(conserved), dL_dt, h, E, diff, equal, reason, power, h_conserved, h_why)
+
+
+def _sources_of_t1_t0(mech: Mechanics, parts: dict[int, sp.Expr]) -> list[str]:
+    """Where T's parts of degree 1 and 0 in the velocities come from, each in a sentence."""
+    t = mech.table.t
+    # with particles, T1 and T0 come only from dr/dt: positions that depend on time
+    moving = [str(i) for i, r in enumerate(mech.positions, start=1) if any(c.has(t) for c in r)]
+    if moving:
+        which = "particle " + moving[0] if len(moving) == 1 else "particles " + ", ".join(moving)
+        return [
+            f"The positions depend explicitly on time (a moving constraint: the position of {which} contains t), "
+            "so T has parts of degree 1 and 0 in the velocities"
+        ]
+    # T written by the user: sort the terms of T1 and T0 by whether they contain t
+    timed, linear, free = False, False, False
+    for degree in (1, 0):
+        part = parts.get(degree, sp.Integer(0))
+        if is_zero(part):
+            continue
+        for term in sp.Add.make_args(part):
+            if term.has(t):
+                timed = True
+            elif degree == 1:
+                linear = True
+            else:
+                free = True
+    causes = []
+    if timed:
+        causes.append(
+            "T depends explicitly on time in its parts of degree 1 and 0 in the velocities, as a moving constraint makes it"
+        )
+    if linear:
+        causes.append("T has terms linear in the velocities as written (a gyroscopic or magnetic term), a part T₁")
+    if free:
+        causes.append(
+            "T has a part without velocities as written (such as a rotating frame's centrifugal term), a part T₀"
+        )
+    return [causes[0][0].upper() + causes[0][1:], *causes[1:]] if causes else ["T has parts of degree 1 and 0"]

@@ -81,6 +81,8 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "explicit_time_derivative": pr.pair(en.dL_dt),
         "hamiltonian_equals_energy": en.h_equals_e,
         "hamiltonian_energy_reason": en.reason,
+        "hamiltonian_conserved": en.h_conserved,
+        "hamiltonian_conserved_reason": en.h_conserved_reason,
         "energy_minus_hamiltonian": pr.pair(en.energy_minus_h),
         "effective_potential": None,
         "steps": build_steps(d) + constraint_steps(forces, pr) + (transform_steps(transformed) if transformed else []),

@@ -18,6 +18,7 @@ from __future__ import annotations
 import random
 from dataclasses import dataclass
 
+import numpy as np
 import sympy as sp
 
 from app.engine.budget import pythagoras
@@ -39,21 +40,61 @@ class Equations:
     accelerations: tuple[sp.Expr, ...]
 
 
+# Smallest singular value, relative to the largest, below which an equilibrated M counts as singular.
+RANK_TOLERANCE = 1e-10
+
+
+def _equilibrated(A: np.ndarray, sweeps: int = 30) -> np.ndarray | None:
+    """D⁻¹ A D⁻¹ with D positive diagonal such that every row's largest entry is 1 (Ruiz's sweeps).
+
+    Any c S A S (c > 0, S positive diagonal) equilibrates to the same matrix, so what follows does
+    not depend on the units of the masses, lengths or coordinates.  None when a row is zero.
+    """
+    for _ in range(sweeps):
+        # r_i = sqrt(max_j |A_ij|); A_ij -> A_ij / (r_i r_j)
+        r = np.sqrt(np.max(np.abs(A), axis=1))
+        if not np.all(r > 0):
+            return None
+        A = A / np.outer(r, r)
+        if np.max(np.abs(r - 1.0)) < 1e-6:
+            break
+    return A
+
+
+def _rank_deficient(A: np.ndarray) -> bool:
+    """True when the equilibrated A has a singular value below RANK_TOLERANCE times its largest."""
+    E = _equilibrated(A)
+    if E is None:
+        return True
+    s = np.linalg.svd(E, compute_uv=False)
+    return bool(s[-1] <= RANK_TOLERANCE * s[0])
+
+
 def _numerically_singular(M: sp.Matrix, symbols: list[sp.Symbol], trials: int = 4) -> bool:
-    """True when det M vanishes at every one of a few random real points."""
+    """True when M is rank-deficient at every one of a few random real points, judged relative to M itself.
+
+    Scaling every mass by 10⁻⁶, or changing the unit of one coordinate, turns M into c S M S
+    (c > 0, S positive diagonal) and must not change the verdict; an absolute threshold on det M
+    would.  So at each point M (evaluated to 30 digits) is equilibrated, which removes c and S, and
+    its rank read from the singular values with a relative tolerance.  A point where M is not finite
+    tells nothing and another is drawn; with no usable point at all M is not called singular.
+    """
     rng = random.Random(20261122)
-    det = M.det(method="berkowitz") if M.shape[0] <= 4 else None
-    for _ in range(trials):
-        point = {s: sp.Float(rng.uniform(0.3, 1.7)) for s in symbols}
-        if det is not None:
-            value = complex(det.xreplace(point).evalf())
-            if abs(value) > 1e-9:
-                return False
-        else:
-            numeric = M.xreplace(point).evalf()
-            if numeric.rank(iszerofunc=lambda x: abs(complex(x)) < 1e-9) == M.shape[0]:
-                return False
-    return True
+    conclusive = 0
+    for _ in range(3 * trials):
+        point = {s: sp.Float(rng.uniform(0.3, 1.7), 30) for s in symbols}
+        try:
+            A = np.array([[complex(x) for x in row] for row in M.xreplace(point).evalf(30).tolist()])
+        except (TypeError, ValueError, ArithmeticError):
+            continue
+        if not np.all(np.isfinite(A)):
+            continue
+        if not _rank_deficient(A):
+            return False
+        conclusive += 1
+        if conclusive == trials:
+            break
+    return conclusive > 0
 
 
 def euler_lagrange(mech: Mechanics) -> Equations:

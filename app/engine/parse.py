@@ -9,7 +9,8 @@ names the offending part and where it starts:
    are the raw material of code, strings, lambdas and f-strings);
 2. structure (pure Python, no SymPy): Python's ``ast`` tree walked against an
    allowlist of numbers, declared names, ``+ - * / **``, unary signs and calls
-   of a fixed set of one-argument functions; limits on nesting depth, node
+   of a fixed set of functions (``FUNCTIONS``, one argument each but
+   ``atan2(y, x)``); limits on nesting depth, node
    count, literal size and exponents; constant sub-expressions evaluated in
    floating point so that ``exp(exp(exp(3)))`` is refused as too large instead
    of sending SymPy's automatic evaluation into a hang; and an upper bound on
@@ -46,9 +47,13 @@ FUNCTIONS: dict[str, type[sp.Function]] = {
     "sin": sp.sin,
     "cos": sp.cos,
     "tan": sp.tan,
+    "cot": sp.cot,
+    "sec": sp.sec,
+    "csc": sp.csc,
     "asin": sp.asin,
     "acos": sp.acos,
     "atan": sp.atan,
+    "atan2": sp.atan2,
     "sinh": sp.sinh,
     "cosh": sp.cosh,
     "tanh": sp.tanh,
@@ -58,13 +63,17 @@ FUNCTIONS: dict[str, type[sp.Function]] = {
     "Abs": sp.Abs,
 }
 # The same functions in floating point, to bound constant sub-expressions before SymPy sees them.
-_FLOAT_FUNCTIONS: dict[str, Callable[[float], float]] = {
+_FLOAT_FUNCTIONS: dict[str, Callable[..., float]] = {
     "sin": math.sin,
     "cos": math.cos,
     "tan": math.tan,
+    "cot": lambda x: 1.0 / math.tan(x),
+    "sec": lambda x: 1.0 / math.cos(x),
+    "csc": lambda x: 1.0 / math.sin(x),
     "asin": math.asin,
     "acos": math.acos,
     "atan": math.atan,
+    "atan2": math.atan2,
     "sinh": math.sinh,
     "cosh": math.cosh,
     "tanh": math.tanh,
@@ -73,6 +82,8 @@ _FLOAT_FUNCTIONS: dict[str, Callable[[float], float]] = {
     "sqrt": math.sqrt,
     "Abs": abs,
 }
+# Functions of more than one argument (atan2(y, x) is the angle of the point (x, y)); the rest take one.
+ARITY: dict[str, int] = {"atan2": 2}
 CONSTANTS: dict[str, sp.Expr] = {"pi": sp.pi}
 _FLOAT_CONSTANTS = {"pi": math.pi}
 # Names an output string may contain, or that SymPy reads as something else.
@@ -101,7 +112,7 @@ _REFUSED_NODES = {
     ast.Compare: "a comparison is not allowed",
     ast.BoolOp: "'and'/'or' are not allowed",
     ast.IfExp: "a conditional expression is not allowed",
-    ast.Tuple: "a comma is only allowed between a function's arguments, and functions take one",
+    ast.Tuple: "a comma is only allowed between a function's arguments (only atan2 takes two)",
     ast.Starred: "'*' unpacking is not allowed",
     ast.NamedExpr: "':=' is not allowed",
     ast.GeneratorExp: "a generator is not allowed",
@@ -265,13 +276,17 @@ class _Checker:
         if not isinstance(node.func, ast.Name) or node.func.id not in FUNCTIONS:
             allowed = ", ".join(sorted(FUNCTIONS))
             raise self.refuse(node.func, f"only these functions may be called: {allowed}")
-        if node.keywords or len(node.args) != 1 or isinstance(node.args[0], ast.Starred):
-            raise self.refuse(node, f"{node.func.id} takes exactly one argument")
-        argument = self.check(node.args[0], depth + 1)
+        arity = ARITY.get(node.func.id, 1)
+        if node.keywords or len(node.args) != arity or any(isinstance(a, ast.Starred) for a in node.args):
+            count = "exactly one argument" if arity == 1 else f"exactly {arity} arguments"
+            raise self.refuse(node, f"{node.func.id} takes {count}")
+        arguments = [self.check(a, depth + 1) for a in node.args]
         value = None
-        if argument.value is not None:
+        if all(a.value is not None for a in arguments):
             function = _FLOAT_FUNCTIONS[node.func.id]
-            value = self.fold(node, lambda: function(argument.value))
+            if node.func.id == "atan2" and arguments[0].value == 0 and arguments[1].value == 0:
+                raise self.refuse(node, "atan2(0, 0) is undefined")
+            value = self.fold(node, lambda: function(*(a.value for a in arguments)))
         return _Facts(value, 1)
 
     def fold(self, node: ast.AST, compute: Callable[[], float]) -> float:
@@ -398,7 +413,7 @@ class _Builder:
                 return left / right
             return left**right
         assert isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
-        return FUNCTIONS[node.func.id](self.build(node.args[0]))
+        return FUNCTIONS[node.func.id](*(self.build(a) for a in node.args))
 
 
 def parse_expression(text: str, names: Mapping[str, sp.Symbol]) -> sp.Expr:

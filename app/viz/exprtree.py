@@ -11,6 +11,7 @@ particles' positions for the animation), so each string is parsed by Python's
     a + b + c         -> ["+", a, b, c]        a * b -> ["*", a, b]
     -a                -> ["neg", a]            a / b -> ["/", a, b]
     a ** b            -> ["pow", a, b]         sin(a) -> ["sin", a]
+    atan2(y, x)       -> ["atan2", y, x]
 
 Nothing is evaluated here and no ``eval`` or ``sympify`` runs on the text.
 """
@@ -22,11 +23,14 @@ import math
 from collections.abc import Iterable
 from typing import Any
 
-FUNCTIONS = frozenset(
-    {"sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "exp", "log", "sqrt", "Abs", "sign"}
-)
+from app.engine.parse import ARITY
+from app.engine.parse import FUNCTIONS as INPUT_FUNCTIONS
+
+# The functions users may write (their one home is the parser), plus sign, which SymPy's derivatives add.
+FUNCTIONS = frozenset(INPUT_FUNCTIONS) | {"sign"}
 CONSTANTS = {"pi": math.pi, "E": math.e}
 MAX_NODES = 5000
+_RECIPROCALS = {"cot": "tan", "sec": "cos", "csc": "sin"}
 
 Tree = float | int | str | list[Any]
 
@@ -66,8 +70,8 @@ def _build(node: ast.AST, names: frozenset[str] | None) -> Tree:
         if isinstance(node.op, ast.Pow):
             return ["pow", left, right]
     if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in FUNCTIONS:
-        if len(node.args) == 1 and not node.keywords:
-            return [node.func.id, _build(node.args[0], names)]
+        if len(node.args) == ARITY.get(node.func.id, 1) and not node.keywords:
+            return [node.func.id, *(_build(a, names) for a in node.args)]
     raise TreeError(f"{type(node).__name__} is not supported in a figure expression")
 
 
@@ -127,4 +131,9 @@ def evaluate(node: Tree, env: dict[str, float]) -> float:
         return abs(values[0])
     if op == "sign":
         return math.copysign(1.0, values[0]) if values[0] else 0.0
+    if op in _RECIPROCALS:
+        # cot = 1/tan, sec = 1/cos, csc = 1/sin
+        return 1.0 / getattr(math, _RECIPROCALS[op])(values[0])
+    if op == "atan2":
+        return math.atan2(values[0], values[1])
     return getattr(math, op)(values[0])

@@ -63,6 +63,8 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         "conserved": conserved,
         "h_equals_e": doc["hamiltonian_equals_energy"],
         "h_reason": doc["hamiltonian_energy_reason"],
+        "h_conserved": doc.get("hamiltonian_conserved"),
+        "h_conserved_reason": doc.get("hamiltonian_conserved_reason"),
         "hamiltonian": "h = " + doc["hamiltonian"]["latex"],
         "energy_minus_h": (doc.get("energy_minus_hamiltonian") or {}).get("latex"),
         "effective_potential": (

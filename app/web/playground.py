@@ -22,6 +22,7 @@ from pydantic import ValidationError
 from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import QueryParams
 
+from app.engine.parse import FUNCTIONS
 from app.service import user_systems
 from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
 from app.service.user_systems import InvalidSystem
@@ -265,7 +266,7 @@ def model_of(spec: dict[str, Any], doc: dict[str, Any]) -> dict[str, Any]:
     particles = _display_particles(spec, doc)
     three_d = bool(spec.get("particles")) and _moves_in_3d(particles, spec["coordinates"])
     panels = ["animation-3d" if three_d else "animation-2d", "energy"]
-    if not doc["hamiltonian_equals_energy"]:
+    if doc["hamiltonian_equals_energy"] is False:
         panels.append("h-vs-e")
     panels += ["momenta", "phase", "effective-potential", "small-oscillations"]
     info = {
@@ -352,6 +353,7 @@ async def playground(request: Request) -> Response:
         "system_json": json.dumps(spec or {}, separators=(",", ":")).replace("<", "\\u003c"),
         "examples": _example_links(),
         "forms": FORMS,
+        "functions": list(FUNCTIONS),
     }
     status = 200 if error is None else (busy.status if busy else 422)
     response = templates.TemplateResponse(request, "playground.html", context, status_code=status)

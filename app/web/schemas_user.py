@@ -12,7 +12,7 @@ from typing import Annotated, Any
 
 from pydantic import BaseModel, ConfigDict, Field, create_model
 
-from app.engine.parse import MAX_LENGTH
+from app.engine.parse import FUNCTIONS, MAX_LENGTH
 from app.service.user_systems import MAX_COORDINATES, MAX_PARAMETERS, MAX_PARTICLES
 from app.web.schemas import ParameterInfo
 from app.web.schemas_simulate import SimulateRequest
@@ -23,7 +23,7 @@ Expression = Annotated[
         min_length=1,
         max_length=MAX_LENGTH,
         description="An expression: numbers, declared names, + - * / **, parentheses and "
-        "sin cos tan asin acos atan sinh cosh tanh exp log sqrt Abs; pi and time t.",
+        f"{' '.join(FUNCTIONS)} (atan2(y, x) takes two arguments); pi and time t.",
     ),
 ]
 Name = Annotated[
@@ -188,8 +188,13 @@ class DerivationDocument(BaseModel):
     cyclic: list[str]
     conserved: list[ConservedQuantity]
     explicit_time_derivative: ExprPair
-    hamiltonian_equals_energy: bool
+    hamiltonian_equals_energy: bool | None = Field(
+        description="Whether h = E: true, false, or null when it cannot be decided (only L was given, so T and U "
+        "cannot be told apart); hamiltonian_energy_reason says why."
+    )
     hamiltonian_energy_reason: str
+    hamiltonian_conserved: bool = Field(description="Whether h is conserved (dh/dt = −∂L/∂t + Σ Q q̇ = 0).")
+    hamiltonian_conserved_reason: str
     energy_minus_hamiltonian: ExprPair
     effective_potential: EffectivePotential | None
     steps: list[Step]

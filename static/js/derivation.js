@@ -105,9 +105,14 @@ export function summaryBox(doc) {
   }
   if (!(doc.conserved || []).length) conserved.append(h("li", { text: "Nothing is conserved in general." }));
   add("Conserved quantities", conserved);
-  const hv = h("div", {}, h("p", { text: doc.hamiltonian_equals_energy ? "h = E." : "h ≠ E." }),
-    h("p", { class: "reason", text: doc.hamiltonian_energy_reason }));
-  if (!doc.hamiltonian_equals_energy && doc.energy_minus_hamiltonian) hv.append(math(`E - h = ${doc.energy_minus_hamiltonian.latex}`, true));
+  // true, false, or null when it cannot be decided (only L was given)
+  const verdict = { true: "h = E.", false: "h ≠ E.", null: "Whether h = E cannot be decided." }[doc.hamiltonian_equals_energy];
+  const hv = h("div", {}, h("p", { text: verdict }), h("p", { class: "reason", text: doc.hamiltonian_energy_reason }));
+  if (doc.hamiltonian_conserved !== undefined) {
+    hv.append(h("p", { text: doc.hamiltonian_conserved ? "h is conserved." : "h is not conserved." }),
+      h("p", { class: "reason", text: doc.hamiltonian_conserved_reason }));
+  }
+  if (doc.hamiltonian_equals_energy === false && doc.energy_minus_hamiltonian) hv.append(math(`E - h = ${doc.energy_minus_hamiltonian.latex}`, true));
   add("Hamiltonian and energy", hv);
   box.append(dl);
   return box;

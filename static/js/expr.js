@@ -2,9 +2,9 @@
  * expr.js — evaluate the expression trees the server sends (app/viz/exprtree.py).
  *
  * A tree is a number, a symbol name (string), or [op, ...args] with op one of
- * "+", "*", "neg", "/", "pow" or a function name (sin, cos, tan, asin, acos,
- * atan, sinh, cosh, tanh, exp, log, sqrt, Abs, sign).  No code is generated
- * or evaluated: a tree compiles to nested closures.
+ * "+", "*", "neg", "/", "pow" or a function name (the parser's FUNCTIONS
+ * plus sign; atan2 takes two arguments, the others one).  No code is
+ * generated or evaluated: a tree compiles to nested closures.
  *
  *   import { compile, evaluate } from "/static/js/expr.js";
  *   const f = compile(tree);          // f(env) -> number, env maps names to numbers
@@ -17,6 +17,7 @@ const FUNCS = {
   sin: Math.sin, cos: Math.cos, tan: Math.tan, asin: Math.asin, acos: Math.acos, atan: Math.atan,
   sinh: Math.sinh, cosh: Math.cosh, tanh: Math.tanh, exp: Math.exp, log: Math.log, sqrt: Math.sqrt,
   Abs: Math.abs, sign: Math.sign,
+  cot: (x) => 1 / Math.tan(x), sec: (x) => 1 / Math.cos(x), csc: (x) => 1 / Math.sin(x), atan2: Math.atan2,
 };
 
 export function compile(tree) {
@@ -46,6 +47,7 @@ export function compile(tree) {
     default: {
       const f = FUNCS[op];
       if (!f) throw new Error(`unknown function ${op}`);
+      if (args.length === 2) return (env) => f(args[0](env), args[1](env));
       return (env) => f(args[0](env));
     }
   }

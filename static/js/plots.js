@@ -52,7 +52,8 @@ class EnergyPanel extends TimePanel {
     // relative to the run's energy scale (E itself may be zero, as when U is measured from the start)
     const scale = Math.max(...finite([...run.energy, ...(run.T || []), ...(run.U || [])]).map(Math.abs), 1e-300);
     const rel = (d) => Math.max(...finite(d).map(Math.abs)) / scale;
-    let what = run.data.h_equals_e ? "h = E here." : "h and E differ here.";
+    let what = { true: "h = E here.", false: "h and E differ here." }[run.data.h_equals_e]
+      ?? "Only L was given, so E cannot be told apart from h: the curve labelled E is h.";
     if (run.data.forced) what += " A non-conservative generalized force acts, so the change is physical, not numerical.";
     this.readout.textContent = `Largest change since t = 0, relative to the energy scale ${fmt(scale)} J: E by ${fmt(rel(dE))}, h by ${fmt(rel(dh))}. ${what}`;
     seriesTable(this.summary, "Energies over the run (J)", run.t, [...top, ...bottom]);

@@ -98,7 +98,7 @@ def test_scene_page_shows_every_step_and_the_results(pages, scene_id):
         assert step["latex"] in text  # Jinja escapes & and <, which the parser undoes
     for eq in doc["equations_of_motion"]:
         assert eq["latex"] in text
-    assert doc["hamiltonian_energy_reason"] in text
+    assert doc["hamiltonian_energy_reason"] in text and doc["hamiltonian_conserved_reason"] in text
     for e in doc.get("errata") or []:
         assert e["chapter"] in text and e["correct"] in text and e["reason"] in text
     for c in doc.get("constraint_forces") or []:

@@ -1,0 +1,30 @@
+"""The browser's evaluator (static/js/expr.js) knows every function a figure tree may hold."""
+
+import json
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from app.viz.exprtree import FUNCTIONS, evaluate, tree
+
+EXPR_JS = Path(__file__).resolve().parents[2] / "static" / "js" / "expr.js"
+
+pytestmark = pytest.mark.skipif(shutil.which("node") is None, reason="node is installed with the front-end assets")
+
+
+def test_expr_js_evaluates_every_function_like_python():
+    env = {"x": 0.7, "y": -0.4}
+    texts = ["atan2(y, x)" if name == "atan2" else f"{name}(x)" for name in sorted(FUNCTIONS)]
+    trees = [tree(text, ["x", "y"]) for text in texts]
+    script = (
+        f"import {{ evaluate }} from {json.dumps(EXPR_JS.as_uri())};"
+        f"const trees = {json.dumps(trees)}; const env = {json.dumps(env)};"
+        "console.log(JSON.stringify(trees.map((t) => evaluate(t, env))));"
+    )
+    run = subprocess.run(["node", "--input-type=module", "-e", script], capture_output=True, text=True, timeout=30)
+    assert run.returncode == 0, run.stderr
+    values = json.loads(run.stdout)
+    for text, node, value in zip(texts, trees, values, strict=True):
+        assert value == pytest.approx(evaluate(node, env), rel=1e-12), text
