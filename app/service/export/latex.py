@@ -1,0 +1,125 @@
+"""A LaTeX document: the problem, every step of the derivation in ``align*``, the results.
+
+It uses only the article class, amsmath, amssymb and geometry, so it compiles
+with Debian's texlive-latex-base and texlive-latex-recommended.  Formulas are
+the engine's LaTeX (the page's textbook forms, printed by SymPy from validated
+expressions); every piece of prose goes through ``latex_text``.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import sympy as sp
+
+from app.service.export.source import Source
+from app.service.export.text import latex_text
+
+PREAMBLE = r"""\documentclass[11pt]{article}
+\usepackage[T1]{fontenc}
+\usepackage{amsmath,amssymb}
+\usepackage[margin=2cm]{geometry}
+\allowdisplaybreaks
+% SymPy may print these for a few symbol names; plain fallbacks keep the document compiling
+\providecommand{\mathscr}{\mathcal}
+\setlength{\parindent}{0pt}
+\setlength{\parskip}{0.5em}
+"""
+
+
+def _rows(latex: str) -> str:
+    """The body of an ``align*``: the engine's stacked rows as they are, one row aligned at its '='."""
+    opening, closing = r"\begin{aligned}", r"\end{aligned}"
+    if latex.startswith(opening) and latex.endswith(closing):
+        return latex[len(opening) : -len(closing)]
+    return latex.replace(" = ", " &= ", 1) if " = " in latex else "&" + latex
+
+
+def _align(latex: str) -> str:
+    return "\\begin{align*}\n" + _rows(latex) + "\n\\end{align*}"
+
+
+def _parameters(source: Source) -> list[str]:
+    if not source.parameters:
+        return []
+    lines = [r"\begin{center}\begin{tabular}{llll}", r"parameter & meaning & value & unit \\ \hline"]
+    for p in source.parameters:
+        lines.append(
+            rf"${_symbol(p.name)}$ & {latex_text(p.description)} & {latex_text(repr(p.default))} & "
+            rf"{latex_text(p.unit)} \\"
+        )
+    lines.append(r"\end{tabular}\end{center}")
+    return ["\n".join(lines)]
+
+
+def _symbol(name: str) -> str:
+    """A declared name (letters and digits, checked by the engine) as SymPy typesets it."""
+    return sp.latex(sp.Symbol(name))
+
+
+def _stack(rows: list[str]) -> str:
+    """Rows of an ``align*``, each aligned at its first '='."""
+    return "\\begin{align*}\n" + " \\\\\n".join(_rows(row) for row in rows) + "\n\\end{align*}"
+
+
+def _results(source: Source) -> list[str]:
+    doc, table = source.document, source.derivation.table
+    out = [r"\section*{Results}", r"\subsection*{Equations of motion}"]
+    out.append(_stack([eq["latex"] for eq in doc["equations_of_motion"]]))
+    tex = table.latex_names()
+    out.append("and, solved for the accelerations,")
+    out.append(_stack([f"{tex[a]} = {doc['accelerations'][q]['latex']}" for q, a in zip(table.names, table.qdd, strict=True)]))
+    out.append(r"\subsection*{Generalized momenta}")
+    out.append(_stack([f"p_{{{tex[s]}}} = {doc['momenta'][q]['latex']}" for q, s in zip(table.names, table.q, strict=True)]))
+    out.append(r"\subsection*{Conserved quantities}")
+    if doc["conserved"]:
+        for c in doc["conserved"]:
+            out.append(_align(f"{c['latex_name']} = {c['latex']}"))
+            out.append(latex_text(c["reason"]))
+    else:
+        out.append("None: no coordinate is cyclic, and h changes with time.")
+    out += [r"\subsection*{Is $h$ equal to $E$?}", latex_text(doc["hamiltonian_energy_reason"])]
+    eff = doc.get("effective_potential")
+    if eff:
+        out += [r"\subsection*{Effective potential}", _align(r"U_\text{eff} = " + eff["potential"]["latex"])]
+    forces = doc.get("constraint_forces") or []
+    if forces:
+        out.append(r"\subsection*{Forces of constraint}")
+        for f in forces:
+            out.append(latex_text(f"{f['name']}: {f['convention']}"))
+            out.append(_align("F = " + f["latex"]))
+    return out
+
+
+def latex(source: Source) -> str:
+    doc = source.document
+    tex = source.derivation.table.latex_names()
+    symbols = [*source.derivation.table.q, *source.derivation.table.qd]
+    start = ", ".join(f"${tex[s]} = {x!r}$" for s, x in zip(symbols, source.initial, strict=True))
+    body = [
+        rf"\title{{{latex_text(source.title)}}}",
+        r"\author{Exported by Lagrange}" + (rf"\date{{Section {latex_text(source.section)}}}" if source.section else r"\date{}"),
+        r"\begin{document}",
+        r"\maketitle",
+        r"\section*{The problem}",
+        latex_text(source.statement),
+    ]
+    if source.figure:
+        body.append(latex_text(source.figure))
+    body += _parameters(source)
+    body.append(f"The simulation starts from {start} and runs to $t = {source.t_end!r}$ s.")
+    body.append(r"\section*{Derivation}")
+    for step in doc["steps"]:
+        body += [rf"\subsection*{{{latex_text(step['title'])}}}", latex_text(step["explanation"]), _align(step["latex"])]
+    body += _results(source)
+    if source.errata:
+        body.append(r"\section*{Errata: where the chapter goes wrong}")
+        body.append(r"\begin{itemize}")
+        for e in source.errata:
+            body.append(
+                rf"\item The chapter writes \texttt{{{latex_text(e['chapter'])}}}; correct is "
+                rf"\texttt{{{latex_text(e['correct'])}}}. {latex_text(e['reason'])}"
+            )
+        body.append(r"\end{itemize}")
+    body.append(r"\end{document}")
+    return PREAMBLE + "\n\n".join(body) + "\n"
