@@ -8,8 +8,6 @@ expressions); every piece of prose goes through ``latex_text``.
 
 from __future__ import annotations
 
-from typing import Any
-
 import sympy as sp
 
 from app.service.export.source import Source
