@@ -66,9 +66,13 @@ def _results(source: Source) -> list[str]:
     out.append(_stack([eq["latex"] for eq in doc["equations_of_motion"]]))
     tex = table.latex_names()
     out.append("and, solved for the accelerations,")
-    out.append(_stack([f"{tex[a]} = {doc['accelerations'][q]['latex']}" for q, a in zip(table.names, table.qdd, strict=True)]))
+    out.append(
+        _stack([f"{tex[a]} = {doc['accelerations'][q]['latex']}" for q, a in zip(table.names, table.qdd, strict=True)])
+    )
     out.append(r"\subsection*{Generalized momenta}")
-    out.append(_stack([f"p_{{{tex[s]}}} = {doc['momenta'][q]['latex']}" for q, s in zip(table.names, table.q, strict=True)]))
+    out.append(
+        _stack([f"p_{{{tex[s]}}} = {doc['momenta'][q]['latex']}" for q, s in zip(table.names, table.q, strict=True)])
+    )
     out.append(r"\subsection*{Conserved quantities}")
     if doc["conserved"]:
         for c in doc["conserved"]:
@@ -96,7 +100,8 @@ def latex(source: Source) -> str:
     start = ", ".join(f"${tex[s]} = {x!r}$" for s, x in zip(symbols, source.initial, strict=True))
     body = [
         rf"\title{{{latex_text(source.title)}}}",
-        r"\author{Exported by Lagrange}" + (rf"\date{{Section {latex_text(source.section)}}}" if source.section else r"\date{}"),
+        r"\author{Exported by Lagrange}"
+        + (rf"\date{{Section {latex_text(source.section)}}}" if source.section else r"\date{}"),
         r"\begin{document}",
         r"\maketitle",
         r"\section*{The problem}",
@@ -108,7 +113,11 @@ def latex(source: Source) -> str:
     body.append(f"The simulation starts from {start} and runs to $t = {source.t_end!r}$ s.")
     body.append(r"\section*{Derivation}")
     for step in doc["steps"]:
-        body += [rf"\subsection*{{{latex_text(step['title'])}}}", latex_text(step["explanation"]), _align(step["latex"])]
+        body += [
+            rf"\subsection*{{{latex_text(step['title'])}}}",
+            latex_text(step["explanation"]),
+            _align(step["latex"]),
+        ]
     body += _results(source)
     if source.errata:
         body.append(r"\section*{Errata: where the chapter goes wrong}")

@@ -79,7 +79,9 @@ def notebook(source: Source) -> str:
     latex_entries = ", ".join(f"{s.name}: {tex!r}" for s, tex in latex.items())
     cells = [_md(*_problem(source))]
 
-    cells.append(_md("## Symbols", "Each coordinate, its velocity and acceleration, and each parameter is a real SymPy symbol."))
+    cells.append(
+        _md("## Symbols", "Each coordinate, its velocity and acceleration, and each parameter is a real SymPy symbol.")
+    )
     cells.append(
         _code(*HELPER_LINES, *naming.symbol_lines(), f"LATEX = {{{latex_entries}}}", "", "", *DT_LINES, *CHECK_LINES)
     )
@@ -133,7 +135,9 @@ def notebook(source: Source) -> str:
     cells.append(_engine("EL", naming.code_list(eqs.residuals), "EL"))
 
     cells.append(_md("## Accelerations", "Solving M q̈ = f for the accelerations."))
-    cells.append(_code(*ACCELERATION_LINES, "for ak, x in zip(a, acc):", "    show(sp.latex(ak, symbol_names=LATEX), x)"))
+    cells.append(
+        _code(*ACCELERATION_LINES, "for ak, x in zip(a, acc):", "    show(sp.latex(ak, symbol_names=LATEX), x)")
+    )
     cells.append(_engine("accelerations", naming.code_list(eqs.accelerations), "acc"))
 
     cells.append(_md("## Generalized momenta", "p = ∂L/∂q̇ for each coordinate."))
@@ -164,7 +168,11 @@ def notebook(source: Source) -> str:
 
 def _engine(name: str, code: str, mine: str):
     """A cell with the engine's result, typeset and compared with the student's."""
-    lines = [f"{mine}_engine = {code}", f"show_engine({mine!r}, {mine}_engine)", f"check({name!r}, {mine}, {mine}_engine)"]
+    lines = [
+        f"{mine}_engine = {code}",
+        f"show_engine({mine!r}, {mine}_engine)",
+        f"check({name!r}, {mine}, {mine}_engine)",
+    ]
     return _code(*lines)
 
 
