@@ -11,8 +11,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import Any
 
-from app.engine.contract import derivation_json
 from app.engine.derive import Derivation
 from app.service import derivations
 from app.service.export import filename, render
@@ -44,9 +44,13 @@ def scene_export(scene_id: str, fmt: str) -> Exported:
     return Exported(render(source, fmt).encode(), filename(source, fmt), FORMATS[fmt][0])
 
 
-def system_export(d: Derivation, fmt: str, initial: Mapping[str, float], t_end: float | None) -> dict[str, str]:
-    """A user system's derivation as a file (in a worker); a bad initial state raises SimulationError."""
+def system_export(
+    d: Derivation, document: dict[str, Any], fmt: str, initial: Mapping[str, float], t_end: float | None
+) -> dict[str, str]:
+    """A user system's derivation (and its JSON document) as a file, made in a worker.
+
+    A bad initial state raises SimulationError; a name or function that cannot be written, ExportError."""
     _check_format(fmt)
     y0 = initial_state(d, initial, {})
-    source = system_source(d, derivation_json(d), tuple(y0.tolist()), DEFAULT_T_END if t_end is None else t_end)
+    source = system_source(d, document, tuple(y0.tolist()), DEFAULT_T_END if t_end is None else t_end)
     return {"content": render(source, fmt), "filename": filename(source, fmt), "media_type": FORMATS[fmt][0]}

@@ -274,8 +274,12 @@ def simulate_job(spec: dict[str, Any], request: Any) -> bytes:
     return _guarded(run)
 
 
-def export_job(spec: dict[str, Any], fmt: str, initial: dict[str, float], t_end: float | None) -> bytes:
-    """Worker job: the derivation of a user system as a notebook, script or LaTeX document (JSON-wrapped)."""
+def export_job(
+    spec: dict[str, Any], fmt: str, initial: dict[str, float], t_end: float | None, document: bytes
+) -> bytes:
+    """Worker job: a user system as a notebook, script or LaTeX document (JSON-wrapped).
+
+    ``document`` is the system's derivation JSON (from ``derive_job``), so only printing is left to do."""
     from app.numerics.errors import SimulationError
     from app.service.export.code import ExportError
     from app.service.exporting import system_export
@@ -283,7 +287,7 @@ def export_job(spec: dict[str, Any], fmt: str, initial: dict[str, float], t_end:
     def run() -> dict[str, str]:
         d = _derive(spec)
         try:
-            return system_export(d, fmt, initial, t_end)
+            return system_export(d, json.loads(document), fmt, initial, t_end)
         except SimulationError as exc:
             raise InvalidSystem(str(exc), simulation_loc(spec, exc.part), exc.part) from None
         except ExportError as exc:
@@ -415,8 +419,13 @@ class UserSystems:
         """``{"content", "filename", "media_type"}`` as JSON bytes, made in the pool under the derive limit."""
         check_system(spec)
         key = spec_key(spec, "export", fmt, initial, t_end)
+        cached = self.exports.get(key)
+        if cached is not None:
+            return cached
+        # the derivation the page already asked for (cached), or a derive job first: the export only prints
+        document = await self.derive(spec, client, address)
         return await self._run(
-            self.exports, key, client, address, DERIVE_SECONDS, export_job, spec, fmt, initial, t_end
+            self.exports, key, client, address, DERIVE_SECONDS, export_job, spec, fmt, initial, t_end, document
         )
 
 

@@ -155,6 +155,8 @@ def notebook(source: Source) -> str:
     cells.append(_md(*_conserved(source)))
 
     cells += _simulation(source, naming, "E" if m.T is not None else "h")
+    for i, cell in enumerate(cells):
+        cell.id = f"cell-{i}"  # fixed ids: the same derivation always gives the same file
     book = new_notebook(
         cells=cells,
         metadata={
