@@ -58,6 +58,7 @@ EXPORT_CONTENT = {media: {"schema": {"type": "string"}} for media, _ in FORMATS.
     responses={
         200: {"content": EXPORT_CONTENT, "description": "The file, as an attachment."},
         404: {"model": ErrorResponse, "description": "No scene has this id."},
+        422: {"model": ErrorResponse, "description": "The format is missing or not one of ipynb, py, tex."},
     },
 )
 def scene_export(
