@@ -21,15 +21,26 @@ function fileName(response, format) {
   return match ? match[1] : `system.${format}`;
 }
 
+const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+
+async function post(body) {
+  // one job at a time per session: while a simulation of this page runs, wait as the server asks
+  for (let attempt = 0; ; attempt += 1) {
+    const response = await fetch("/api/export", {
+      method: "POST",
+      headers: { "content-type": "application/json" },
+      body: JSON.stringify(body),
+    });
+    if (![429, 503].includes(response.status) || attempt >= 5) return response;
+    await sleep(1000 * Math.min(5, Number(response.headers.get("retry-after")) || 1));
+  }
+}
+
 async function download(format, button) {
   button.disabled = true;
   status.textContent = "Preparing the file…";
   try {
-    const response = await fetch("/api/export", {
-      method: "POST",
-      headers: { "content-type": "application/json" },
-      body: JSON.stringify(request(format)),
-    });
+    const response = await post(request(format));
     if (!response.ok) {
       const answer = await response.json().catch(() => ({}));
       status.textContent = `Not exported: ${answer.detail || response.statusText}`;
