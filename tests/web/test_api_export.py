@@ -23,6 +23,7 @@ def test_every_scene_exports_in_every_format(client, scene_id):
         assert response.text.startswith(STARTS[fmt]) and response.text == exported(scene_id, fmt)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["double-pendulum", "forced-spring", "hostile"])
 def test_user_systems_export_through_the_worker_pool_as_they_do_in_process(client, name):
     body, initial, t_end = USER_SYSTEMS[name]
