@@ -1,12 +1,14 @@
-"""A LaTeX document: the problem, every step of the derivation in ``align*``, the results.
+"""A LaTeX document: the problem, every step of the derivation in ``align*`` (long rows in ``dmath*``), the results.
 
-It uses only the article class, amsmath, amssymb and geometry, so it compiles
+It uses only the article class, amsmath, amssymb, geometry and breqn, so it compiles
 with Debian's texlive-latex-base and texlive-latex-recommended.  Formulas are
 the engine's LaTeX (the page's textbook forms, printed by SymPy from validated
 expressions); every piece of prose goes through ``latex_text``.
 """
 
 from __future__ import annotations
+
+import re
 
 import sympy as sp
 
@@ -17,6 +19,7 @@ PREAMBLE = r"""\documentclass[11pt]{article}
 \usepackage[T1]{fontenc}
 \usepackage{amsmath,amssymb}
 \usepackage[margin=2cm]{geometry}
+\usepackage{breqn}
 \allowdisplaybreaks
 % SymPy may print these for a few symbol names; plain fallbacks keep the document compiling
 \providecommand{\mathscr}{\mathcal}
@@ -25,16 +28,48 @@ PREAMBLE = r"""\documentclass[11pt]{article}
 """
 
 
-def _rows(latex: str) -> str:
-    """The body of an ``align*``: the engine's stacked rows as they are, one row aligned at its '='."""
+# A row longer than this (characters of LaTeX) is set with breqn's dmath*, which breaks it across lines;
+# breqn comes with texlive-latex-recommended.  Rows holding an environment (a matrix) stay in align*.
+LONG_ROW = 250
+
+
+def _split(latex: str) -> list[str]:
+    """The engine's rows, without their alignment marks (its aligned block joins them with ' \\\\ ')."""
     opening, closing = r"\begin{aligned}", r"\end{aligned}"
-    if latex.startswith(opening) and latex.endswith(closing):
-        return latex[len(opening) : -len(closing)]
-    return latex.replace(" = ", " &= ", 1) if " = " in latex else "&" + latex
+    if not (latex.startswith(opening) and latex.endswith(closing)):
+        return [latex]
+    rows = latex[len(opening) : -len(closing)].split(" \\\\ ")
+    return [row.replace(" &= ", " = ", 1) if " &= " in row else row.removeprefix("&") for row in rows]
+
+
+def _braced(row: str) -> str:
+    # U_\text{eff} -> U_{\text{eff}}: breqn makes _ take exactly one braced argument
+    return re.sub(r"_\\text\{([^{}]*)\}", r"_{\\text{\1}}", row)
+
+
+def _marked(row: str) -> str:
+    return row.replace(" = ", " &= ", 1) if " = " in row else "&" + row
+
+
+def _display(rows: list[str]) -> str:
+    """Rows as displays: runs of short rows in one align* (aligned at their first '='), long rows broken by dmath*."""
+    blocks: list[str] = []
+    run: list[str] = []
+    for row in map(_braced, rows):
+        if len(row) > LONG_ROW and "\\begin{" not in row:
+            if run:
+                blocks.append("\\begin{align*}\n" + " \\\\\n".join(run) + "\n\\end{align*}")
+                run = []
+            blocks.append("\\begin{dmath*}\n" + row + "\n\\end{dmath*}")
+        else:
+            run.append(_marked(row))
+    if run:
+        blocks.append("\\begin{align*}\n" + " \\\\\n".join(run) + "\n\\end{align*}")
+    return "\n".join(blocks)
 
 
 def _align(latex: str) -> str:
-    return "\\begin{align*}\n" + _rows(latex) + "\n\\end{align*}"
+    return _display(_split(latex))
 
 
 def _parameters(source: Source) -> list[str]:
@@ -55,23 +90,20 @@ def _symbol(name: str) -> str:
     return sp.latex(sp.Symbol(name))
 
 
-def _stack(rows: list[str]) -> str:
-    """Rows of an ``align*``, each aligned at its first '='."""
-    return "\\begin{align*}\n" + " \\\\\n".join(_rows(row) for row in rows) + "\n\\end{align*}"
-
-
 def _results(source: Source) -> list[str]:
     doc, table = source.document, source.derivation.table
     out = [r"\section*{Results}", r"\subsection*{Equations of motion}"]
-    out.append(_stack([eq["latex"] for eq in doc["equations_of_motion"]]))
+    out.append(_display([eq["latex"] for eq in doc["equations_of_motion"]]))
     tex = table.latex_names()
     out.append("and, solved for the accelerations,")
     out.append(
-        _stack([f"{tex[a]} = {doc['accelerations'][q]['latex']}" for q, a in zip(table.names, table.qdd, strict=True)])
+        _display(
+            [f"{tex[a]} = {doc['accelerations'][q]['latex']}" for q, a in zip(table.names, table.qdd, strict=True)]
+        )
     )
     out.append(r"\subsection*{Generalized momenta}")
     out.append(
-        _stack([f"p_{{{tex[s]}}} = {doc['momenta'][q]['latex']}" for q, s in zip(table.names, table.q, strict=True)])
+        _display([f"p_{{{tex[s]}}} = {doc['momenta'][q]['latex']}" for q, s in zip(table.names, table.q, strict=True)])
     )
     out.append(r"\subsection*{Conserved quantities}")
     if doc["conserved"]:
