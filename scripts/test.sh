@@ -1,12 +1,17 @@
 #!/usr/bin/env bash
 # Set up (idempotent) and run the whole test suite: lint, then pytest
-# (engine, API, numerics, and the pages in Debian's headless Chromium).
+# (engine, API, numerics, and the pages in Debian's headless Chromium; exported
+# LaTeX documents are compiled with Debian's pdflatex).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh dev
 if [ ! -x /usr/bin/chromium ]; then
     apt-get update -qq
     apt-get install -y -qq --no-install-recommends chromium fonts-liberation >/dev/null
+fi
+if ! command -v pdflatex >/dev/null; then
+    apt-get update -qq
+    apt-get install -y -qq --no-install-recommends texlive-latex-base texlive-latex-recommended >/dev/null
 fi
 .venv/bin/ruff check app tests benchmarks
 .venv/bin/python -m pytest "$@"

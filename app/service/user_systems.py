@@ -257,6 +257,28 @@ def simulate_job(spec: dict[str, Any], request: Any) -> bytes:
     return _guarded(run)
 
 
+def export_job(
+    spec: dict[str, Any], fmt: str, initial: dict[str, float], t_end: float | None, document: bytes
+) -> bytes:
+    """Worker job: a user system as a notebook, script or LaTeX document (JSON-wrapped).
+
+    ``document`` is the system's derivation JSON (from ``derive_job``), so only printing is left to do."""
+    from app.numerics.errors import SimulationError
+    from app.service.export.code import ExportError
+    from app.service.exporting import system_export
+
+    def run() -> dict[str, str]:
+        d = _derive(spec)
+        try:
+            return system_export(d, json.loads(document), fmt, initial, t_end)
+        except SimulationError as exc:
+            raise InvalidSystem(str(exc), simulation_loc(spec, exc.part), exc.part) from None
+        except ExportError as exc:
+            raise InvalidSystem(f"this system cannot be exported: {exc}") from None
+
+    return _guarded(run)
+
+
 def simulation_loc(spec: dict[str, Any], part: str) -> tuple:
     """Where in a simulate request the numerics' complaint points ("parameters.k" is that parameter's value)."""
     head, _, name = part.partition(".")
@@ -312,6 +334,7 @@ class UserSystems:
         self._gate = gate
         self.derivations = ResultCache()
         self.simulations = ResultCache(entries=64)
+        self.exports = ResultCache(entries=64)
         self._running: dict[tuple[int, str], asyncio.Future] = {}
 
     @property
@@ -376,6 +399,21 @@ class UserSystems:
         check_system(spec)
         key = spec_key(spec, request.model_dump(mode="json"))
         return await self._run(self.simulations, key, client, address, SIMULATE_SECONDS, simulate_job, spec, request)
+
+    async def export(
+        self, spec: dict[str, Any], fmt: str, initial: dict[str, float], t_end: float | None, client: str, address: str
+    ) -> bytes:
+        """``{"content", "filename", "media_type"}`` as JSON bytes, made in the pool under the derive limit."""
+        check_system(spec)
+        key = spec_key(spec, "export", fmt, initial, t_end)
+        cached = self.exports.get(key)
+        if cached is not None:
+            return cached
+        # the derivation the page already asked for (cached), or a derive job first: the export only prints
+        document = await self.derive(spec, client, address)
+        return await self._run(
+            self.exports, key, client, address, DERIVE_SECONDS, export_job, spec, fmt, initial, t_end, document
+        )
 
 
 service = UserSystems()

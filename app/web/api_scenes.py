@@ -1,13 +1,17 @@
-"""Routes for the chapter's scenes: list them and serve their derivations."""
+"""Routes for the chapter's scenes: list them, serve their derivations and their exports."""
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Annotated, Any
 
-from fastapi import APIRouter
+from fastapi import APIRouter, Query
+from fastapi.responses import Response
 
-from app.service import derivations
+from app.service import derivations, exporting
+from app.service.export.source import FORMATS
+from app.service.exporting import Exported
 from app.web.schemas import ErrorResponse, SceneSummary
+from app.web.schemas_export import FORMAT_HELP, ExportFormat
 
 router = APIRouter(prefix="/api", tags=["scenes"])
 
@@ -26,3 +30,39 @@ def scene_derivation(scene_id: str) -> dict[str, Any]:
     # A plain `def`: FastAPI runs it in its thread pool, so a first (uncached)
     # derivation never blocks the event loop.
     return derivations.derivation_document(scene_id)
+
+
+def download(exported: Exported) -> Response:
+    """A file to save: its media type and a Content-Disposition with its name."""
+    return Response(
+        exported.content,
+        media_type=exported.media_type,
+        headers={"Content-Disposition": f'attachment; filename="{exported.filename}"'},
+    )
+
+
+EXPORT_CONTENT = {media: {"schema": {"type": "string"}} for media, _ in FORMATS.values()}
+
+
+@router.get(
+    "/scenes/{scene_id}/export",
+    summary="A scene's derivation as a notebook, a Python script or a LaTeX document",
+    description=(
+        "`format=ipynb`: a Jupyter notebook with each step in SymPy beside the engine's result, a simulation with "
+        "scipy and a plot (needs sympy, scipy, matplotlib). `format=py`: a standalone script (numpy, scipy, sympy) "
+        "that derives the accelerations from L, integrates the default start to t_end with DOP853 (rtol 1e-10, "
+        'atol 1e-12) and prints `{"t": t_end, "state": {q: ..., q_dot: ...}}` as JSON on its last line. '
+        "`format=tex`: a whole LaTeX document (article, amsmath) with every step."
+    ),
+    response_class=Response,
+    responses={
+        200: {"content": EXPORT_CONTENT, "description": "The file, as an attachment."},
+        404: {"model": ErrorResponse, "description": "No scene has this id."},
+        422: {"model": ErrorResponse, "description": "The format is missing or not one of ipynb, py, tex."},
+    },
+)
+def scene_export(
+    scene_id: str, fmt: Annotated[ExportFormat, Query(alias="format", description=FORMAT_HELP)]
+) -> Response:
+    # a plain `def`: the first export of a scene may derive it, in FastAPI's thread pool
+    return download(exporting.scene_export(scene_id, fmt))

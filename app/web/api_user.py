@@ -1,4 +1,4 @@
-"""POST /api/derive and POST /api/simulate: systems users type in.
+"""POST /api/derive, POST /api/simulate and POST /api/export: systems users type in.
 
 The routes are ``async`` but never run SymPy: they check the request's shape
 and names in pure Python, look up a cache, take a fair-share ticket and await
@@ -9,6 +9,7 @@ size before they are read.
 
 from __future__ import annotations
 
+import json
 from collections.abc import Callable, Coroutine
 from typing import Annotated, Any
 
@@ -17,11 +18,14 @@ from fastapi.responses import JSONResponse, Response
 from fastapi.routing import APIRoute
 
 from app.service import user_systems
+from app.service.exporting import Exported
 from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
 from app.service.user_systems import InvalidSystem
 from app.service.worker import JobFailed
+from app.web.api_scenes import EXPORT_CONTENT, download
 from app.web.examples_user import DERIVE_EXAMPLES, DERIVE_RESPONSE, ERROR_EXAMPLES, SIMULATE_EXAMPLES, SIMULATE_RESPONSE
 from app.web.schemas import ErrorResponse
+from app.web.schemas_export import ExportRequest
 from app.web.schemas_simulate import SimulateResponse
 from app.web.schemas_user import (
     BusyError,
@@ -109,7 +113,15 @@ def _address(request: Request) -> str:
     return request.client.host if request.client else "unknown"
 
 
-async def _answer(request: Request, work: Callable[[str, str], Coroutine[Any, Any, bytes]]) -> Response:
+def _json(body: bytes) -> Response:
+    return Response(body, media_type="application/json")
+
+
+async def _answer(
+    request: Request,
+    work: Callable[[str, str], Coroutine[Any, Any, bytes]],
+    reply: Callable[[bytes], Response] = _json,
+) -> Response:
     """Identify the client, run the work, and turn refusals into their documented responses."""
     service = user_systems.service
     address = _address(request)
@@ -135,7 +147,7 @@ async def _answer(request: Request, work: Callable[[str, str], Coroutine[Any, An
         else:
             response = JSONResponse({"detail": str(exc), "kind": exc.kind}, status_code=422)
     else:
-        response = Response(body, media_type="application/json")
+        response = reply(body)
     if minted:
         response.set_cookie(COOKIE, minted, max_age=COOKIE_MAX_AGE, httponly=True, samesite="lax")
     return response
@@ -184,3 +196,46 @@ async def simulate_system(
     spec = SystemSpec.model_validate(body.model_dump(include=set(SystemSpec.model_fields))).to_spec()
     wanted = simulate_request(body)
     return await _answer(request, lambda client, address: user_systems.service.simulate(spec, wanted, client, address))
+
+
+# what the numerics may complain about at the top of an export request; the rest is inside "system"
+_EXPORT_TOP_LEVEL = {"initial", "t_end", "format"}
+
+
+def _in_system(exc: InvalidSystem) -> InvalidSystem:
+    """A refusal located in the export body: the system's fields sit under ``system``."""
+    if exc.loc and exc.loc[0] in _EXPORT_TOP_LEVEL:
+        return exc
+    return InvalidSystem(str(exc), ("system", *exc.loc), exc.part, exc.start, exc.end)
+
+
+@router.post(
+    "/export",
+    summary="A system you declare as a notebook, a Python script or a LaTeX document",
+    description=(
+        "The body holds `system` (as for POST /api/derive, parameter values from its `parameters`), `format` "
+        "(ipynb, py or tex, as for GET /api/scenes/{id}/export) and optionally `initial` (q and q_dot by name; "
+        "missing ones are 0) and `t_end` (default 10 s) for the exported simulation. The export is made in the "
+        "worker pool under the derivation's limits; only the engine's checked expressions and names reach the file."
+    ),
+    response_class=Response,
+    responses={
+        200: {"content": EXPORT_CONTENT, "description": "The file, as an attachment."},
+        **_errors(400, 413, 422, 429, 503),
+    },
+)
+async def export_system(request: Request, body: ExportRequest) -> Response:
+    spec = body.system.to_spec()
+    initial, t_end = dict(body.initial), body.t_end
+
+    async def work(client: str, address: str) -> bytes:
+        try:
+            return await user_systems.service.export(spec, body.format, initial, t_end, client, address)
+        except InvalidSystem as exc:
+            raise _in_system(exc) from None
+
+    def reply(document: bytes) -> Response:
+        made = json.loads(document)
+        return download(Exported(made["content"].encode(), made["filename"], made["media_type"]))
+
+    return await _answer(request, work, reply)

@@ -1,0 +1,171 @@
+"""SymPy source for exported notebooks and scripts, under the code generator's rule.
+
+As in ``app.numerics.codegen``, no name a user declared becomes a Python
+identifier: coordinates are ``q0, q1, ...``, their velocities ``v0, ...``, their
+accelerations ``a0, ...``, parameters ``k0, ...`` and time ``t``.  The declared
+names appear only as the *names* of those SymPy symbols (string literals, so
+printed results read ``theta``), and only after ``check_name`` accepted them
+again here.  Expressions are the engine's validated SymPy objects, renamed and
+printed by a SymPy printer; no text a user typed is pasted into code.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+import sympy as sp
+from sympy.printing.pycode import SymPyPrinter
+
+from app.engine.derive import Derivation
+from app.engine.parse import ExpressionError, check_name
+
+
+class ExportError(ValueError):
+    """A derivation that cannot be exported safely (an unexpected name or function)."""
+
+
+class SourcePrinter(SymPyPrinter):
+    """Prints SymPy-building source: ``sp.sin(q0)``, ``sp.Rational(1, 2)``, ``sp.pi``.
+
+    Strict: a function it has no rule for raises instead of being pasted by name.
+    """
+
+    def __init__(self) -> None:
+        super().__init__({"fully_qualified_modules": True, "strict": True})
+
+    def _module_format(self, fqn: str, register: bool = True) -> str:
+        # every SymPy function by its short name under the ``sp`` alias
+        return "sp." + fqn.rsplit(".", 1)[-1]
+
+    def _print_Rational(self, expr: sp.Rational) -> str:
+        # exact: Python's 1/2 would be the float 0.5
+        return f"sp.Rational({expr.p}, {expr.q})"
+
+    def _print_Half(self, expr: sp.Rational) -> str:
+        return self._print_Rational(expr)
+
+    def _print_Float(self, expr: sp.Float) -> str:
+        return repr(float(expr))
+
+    def _print_Pi(self, expr: sp.Expr) -> str:
+        return "sp.pi"
+
+    def _print_Exp1(self, expr: sp.Expr) -> str:
+        return "sp.E"
+
+    def _print_ImaginaryUnit(self, expr: sp.Expr) -> str:
+        raise ExportError("the derivation contains the imaginary unit, which a real system should not")
+
+
+def checked_name(name: str, what: str) -> str:
+    """A declared name, accepted again before it is written into a file (letters and digits only)."""
+    try:
+        return check_name(name, what)
+    except ExpressionError as exc:
+        raise ExportError(str(exc)) from None
+
+
+@dataclass(frozen=True)
+class Naming:
+    """The fixed code names of one derivation's symbols, and a printer that uses them."""
+
+    coordinates: tuple[str, ...]
+    parameters: tuple[str, ...]
+    renamed: dict[sp.Symbol, sp.Symbol]
+
+    @classmethod
+    def of(cls, d: Derivation) -> Naming:
+        table = d.table
+        coordinates = tuple(checked_name(n, "coordinate") for n in table.names)
+        parameters = tuple(checked_name(n, "parameter") for n in table.parameter_names)
+        renamed: dict[sp.Symbol, sp.Symbol] = {table.t: sp.Symbol("t", real=True)}
+        for i, (q, qd, qdd) in enumerate(zip(table.q, table.qd, table.qdd, strict=True)):
+            renamed[q] = sp.Symbol(f"q{i}", real=True)
+            renamed[qd] = sp.Symbol(f"v{i}", real=True)
+            renamed[qdd] = sp.Symbol(f"a{i}", real=True)
+        for i, k in enumerate(table.params):
+            renamed[k] = sp.Symbol(f"k{i}", real=True)
+        return cls(coordinates, parameters, renamed)
+
+    @property
+    def n(self) -> int:
+        return len(self.coordinates)
+
+    def code(self, expr: sp.Expr) -> str:
+        """An engine expression as SymPy source in the code names."""
+        expr = sp.sympify(expr).xreplace(self.renamed)
+        unknown = expr.free_symbols - set(self.renamed.values())
+        if unknown:
+            raise ExportError(f"the expression has symbols the system does not declare: {sorted(map(str, unknown))}")
+        try:
+            return SourcePrinter().doprint(expr)
+        except ExportError:
+            raise
+        except Exception as exc:  # sympy's strict printer refusing a function it cannot print
+            raise ExportError(f"an expression cannot be written as SymPy code ({type(exc).__name__})") from None
+
+    def code_list(self, exprs: Iterable[sp.Expr]) -> str:
+        return "[" + ", ".join(self.code(e) for e in exprs) + "]"
+
+    def symbol_lines(self) -> list[str]:
+        """Lines declaring t and every code name as a real SymPy symbol named as declared."""
+        lines = ['t = sp.Symbol("t", real=True)']
+        for i, name in enumerate(self.coordinates):
+            lines.append(f"q{i} = sp.Symbol({name!r}, real=True)")
+        for i, name in enumerate(self.coordinates):
+            lines.append(f"v{i} = sp.Symbol({name + '_dot'!r}, real=True)")
+        for i, name in enumerate(self.coordinates):
+            lines.append(f"a{i} = sp.Symbol({name + '_ddot'!r}, real=True)")
+        for i, name in enumerate(self.parameters):
+            lines.append(f"k{i} = sp.Symbol({name!r}, real=True)")
+        n, m = self.n, len(self.parameters)
+        lines.append(f"q = [{', '.join(f'q{i}' for i in range(n))}]  # coordinates")
+        lines.append(f"v = [{', '.join(f'v{i}' for i in range(n))}]  # their velocities")
+        lines.append(f"a = [{', '.join(f'a{i}' for i in range(n))}]  # their accelerations")
+        lines.append(f"k = [{', '.join(f'k{i}' for i in range(m))}]  # parameters")
+        return lines
+
+
+# The total time derivative along a motion, d/dt f = ∂f/∂t + Σ_k (∂f/∂q_k) q̇_k + (∂f/∂q̇_k) q̈_k,
+# the engine's own rule (app.engine.symbols), written out for the reader.
+DT_LINES = [
+    "def dt(f):",
+    '    """The total time derivative of f(t, q, v) along a motion: chain rule through every coordinate."""',
+    "    return sp.diff(f, t) + sum(sp.diff(f, qk) * vk + sp.diff(f, vk) * ak for qk, vk, ak in zip(q, v, a))",
+]
+
+EULER_LAGRANGE_LINES = [
+    "# p_k = ∂L/∂q̇_k, and the Euler–Lagrange equations d/dt p_k − ∂L/∂q_k − Q_k = 0",
+    "p = [sp.diff(L, vk) for vk in v]",
+    "EL = [dt(pk) - sp.diff(L, qk) - Qk for pk, qk, Qk in zip(p, q, Q)]",
+]
+
+ACCELERATION_LINES = [
+    "# The equations are linear in the accelerations: M q̈ = f, M_jk = ∂EL_j/∂q̈_k, f = −EL at q̈ = 0",
+    "M = sp.Matrix([[sp.diff(e, ak) for ak in a] for e in EL])",
+    "f = -sp.Matrix(EL).xreplace({ak: 0 for ak in a})",
+    "acc = list(M.LUsolve(f))",
+]
+
+
+def number(value: float) -> str:
+    return repr(float(value))
+
+
+def simulation_lines(naming: Naming, values: Sequence[float], y0: Sequence[float], t_end: float) -> list[str]:
+    """Lines that integrate q̈ = acc from y0 to t_end with DOP853 (``sol`` holds the run)."""
+    names = ", ".join(naming.parameters)
+    return [
+        f"k_values = [{', '.join(number(x) for x in values)}]  # {names or 'no parameters'}",
+        f"y0 = [{', '.join(number(x) for x in y0)}]  # q, then q_dot",
+        f"t_end = {number(t_end)}",
+        "accelerations = sp.lambdify((t, q, v, k), acc, modules='math', cse=True, dummify=True)",
+        "",
+        "",
+        "def rhs(time, y):",
+        '    """y = (q, q_dot) -> (q_dot, q_ddot)."""',
+        f"    return [*y[{naming.n}:], *accelerations(time, y[:{naming.n}], y[{naming.n}:], k_values)]",
+        "",
+        "",
+    ]
