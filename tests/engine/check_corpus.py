@@ -305,4 +305,26 @@ CORPUS = [
     ("spring-rod", "equation", "r", "r_ddot + (k/m - w**2)*r - k*a/m", "equivalent", None, None),
     ("spring-rod", "omega_squared", None, "(k - m*w**2)/m", "correct", None, None),
     ("spring-rod", "omega_squared", None, "sqrt(k/m - w**2)", "incorrect", "sqrt(k/m - w**2) - k/m + w**2", "omega"),
+    # beyond the chapter: the double pendulum and two masses between three springs
+    (
+        "double-pendulum",
+        "kinetic",
+        None,
+        "(m1 + m2)*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2",
+        "incorrect",
+        "-m2*l1*l2*theta1_dot*theta2_dot*cos(theta1 - theta2)",
+        "missing_cross_term",
+    ),
+    (
+        "double-pendulum",
+        "kinetic",
+        None,
+        "(m1 + m2)*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2 + m2*l1*l2*theta1_dot*theta2_dot*cos(theta1 - theta2)",
+        "correct",
+        None,
+        None,
+    ),
+    ("coupled-oscillators", "potential", None, "k*(x1**2 + x2**2)/2 + kappa*(x2 - x1)**2/2 + 7", "equivalent", None, None),
+    ("coupled-oscillators", "equation", "x1", "m*x1_ddot + (k + kappa)*x1 - kappa*x2", "correct", None, None),
+    ("coupled-oscillators", "equation", "x1", "m*x1_ddot + k*x1", "incorrect", "kappa*(x2 - x1)", "pointer"),
 ]

@@ -28,7 +28,7 @@ def test_the_page_derives_and_renders_the_steps(client):
     response = client.get("/playground?" + urlencode(query_of(form_of(SPINNING_HOOP)), doseq=True))
     assert response.status_code == 200
     html = response.text
-    assert html.count('class="step"') >= 8
+    assert html.count('<li class="step') >= 8
     assert 'data-simulate-url="/api/simulate"' in html
     data = json.loads(re.search(r'<script type="application/json" id="scene-data">(.*?)</script>', html, re.S)[1])
     assert data["coordinates"] == ["theta"] and data["mechanism"]["points"]
