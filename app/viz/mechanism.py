@@ -100,6 +100,16 @@ FAMILIES: dict[str, Family] = {
             ("right pulley", "#1", "string"),
         ),
     ),
+    "double-pendulum": Family(
+        fixed=(("pivot", ("0", "0", "0")),),
+        links=(("pivot", "#0", "rod"), ("#0", "#1", "rod")),
+    ),
+    "coupled-oscillators": Family(
+        # walls 2 m out from the masses' rest positions (-1 m and +1 m), the three springs between
+        fixed=(("left wall", ("-3", "0", "0")), ("right wall", ("3", "0", "0"))),
+        links=(("left wall", "#0", "spring"), ("#0", "#1", "spring"), ("#1", "right wall", "spring")),
+        curves=(("floor", "-3", "3", ("s", "0", "0")),),
+    ),
     "movable-incline": Family(
         # the wedge's apex is the wedge particle; its slope is long enough for the block's whole run
         fixed=(
