@@ -9,7 +9,7 @@ from contextlib import asynccontextmanager
 from fastapi import FastAPI
 
 from app.service import derivations, simulation
-from app.web import api_scenes, errors, pages
+from app.web import api_scenes, errors, limits, pages
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
 from app.web.playground import router as playground_router
@@ -36,6 +36,7 @@ app = FastAPI(
     lifespan=lifespan,
 )
 errors.install(app)
+limits.install(app)  # every POST body capped before it is read
 
 ROUTERS = [api_scenes.router, pages.router, user_router, simulate_router, playground_router]
 app.mount("/static", static_app, name="static")

@@ -81,9 +81,9 @@ _SYMPY_NAMES |= {"sec", "csc", "cot", "asec", "acsc", "acot", "asinh", "acosh", 
 _SYMPY_NAMES |= {"atan2", "Max", "Min", "Piecewise", "Heaviside", "DiracDelta", "Integral", "Derivative", "Subs"}
 _SYMPY_NAMES |= {"Symbol", "Function", "Integer", "Float", "Rational", "Matrix", "floor", "ceiling"}
 RESERVED = frozenset(FUNCTIONS) | frozenset(CONSTANTS) | frozenset(_SYMPY_NAMES) | {"t"} | frozenset(keyword.kwlist)
-NAME_PATTERN = re.compile(r"^[A-Za-z][A-Za-z0-9]{0,15}$")
+NAME_PATTERN = re.compile(r"[A-Za-z][A-Za-z0-9]{0,15}")  # always matched whole (fullmatch)
 # A name ending in "dot" would print like a velocity (SymPy typesets xdot as x with a dot).
-_DOTTED = re.compile(r"d{1,4}ot$")
+_DOTTED = re.compile(r"d{1,4}ot\Z")
 ALLOWED_CHARACTERS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.+-*/(), ")
 
 _OPERATORS = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/", ast.Pow: "**"}
@@ -127,7 +127,7 @@ class ExpressionError(DerivationError):
 
 def check_name(name: str, what: str = "name") -> str:
     """A declared name: a letter then up to 15 letters or digits, not a function, constant or keyword."""
-    if not isinstance(name, str) or not NAME_PATTERN.match(name):
+    if not isinstance(name, str) or not NAME_PATTERN.fullmatch(name):
         shown = str(name)[:40]
         raise ExpressionError(
             f"{what} {shown!r} is not allowed: use a letter followed by up to 15 ASCII letters or digits "

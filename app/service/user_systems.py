@@ -30,7 +30,7 @@ from typing import Any
 
 from app.engine.contract import derivation_json
 from app.engine.derive import Derivation, derive
-from app.engine.errors import DerivationError
+from app.engine.errors import DerivationError, excerpt
 from app.engine.parse import ExpressionError, check_expression, check_name, parse_expression
 from app.engine.symbols import SymbolTable
 from app.scenes.types import Parameter, Particle, System
@@ -62,7 +62,7 @@ class InvalidSystem(DerivationError):
         return {
             "detail": str(self)[:500],
             "part": self.part[:80],
-            "loc": ["body", *(str(x) for x in self.loc)],
+            "loc": ["body", *(excerpt(x) for x in self.loc)],
             "start": self.start,
             "end": self.end,
         }
@@ -72,7 +72,7 @@ def _where(loc: tuple) -> str:
     head, *rest = loc
     text = str(head)
     for x in rest:
-        text += f"[{x}]" if isinstance(x, int) else f".{x}"
+        text += f"[{x}]" if isinstance(x, int) else f".{excerpt(x)}"
     return text
 
 

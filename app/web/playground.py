@@ -29,6 +29,7 @@ from app.service.worker import JobFailed
 from app.viz.exprtree import TreeError, tree
 from app.viz.page_model import angles, scene_page
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
+from app.web.limits import TooDeep, json_depth
 from app.web.pages import simulation_methods
 from app.web.schemas_user import SystemSpec
 from app.web.templating import templates
@@ -93,9 +94,13 @@ def read_form(query: QueryParams) -> Form:
     """The form as typed, from the query string (``system`` JSON takes precedence)."""
     if query.get("system"):
         try:
+            # the nesting is checked by a scan before json.loads, which recurses once per level
+            json_depth(query["system"])
             return form_of(json.loads(query["system"]))
-        except (ValueError, TypeError, AttributeError):
-            raise FormError("the system in the address is not valid JSON", "f-coordinates") from None
+        except TooDeep as exc:
+            raise FormError(f"the system in the address is not a system: {exc}", "f-coordinates") from None
+        except (ValueError, TypeError, AttributeError, RecursionError):
+            raise FormError("the system in the address is not valid JSON in the API's shape", "f-coordinates") from None
     return Form(
         coordinates=query.get("q", "").strip(),
         parameters=_rows(query, {"name": "pn", "value": "pv", "unit": "pu", "min": "plo", "max": "phi"}),
