@@ -479,6 +479,24 @@ def check_expression(text: str, names: Collection[str]) -> ast.Expression:
     ``names`` are the names the expression may use (``pi`` is always allowed).
     Returns the checked tree (of the text with surrounding spaces removed).
     """
+    return _checked(text, names)[0]
+
+
+@dataclass(frozen=True)
+class Size:
+    """Upper bounds for a checked expression: terms of its full expansion, and its degree (x**2*y: 3)."""
+
+    terms: int
+    degree: float
+
+
+def expression_size(text: str, names: Collection[str]) -> Size:
+    """Check an expression as ``check_expression`` does and return its size bounds."""
+    facts = _checked(text, names)[1]
+    return Size(facts.terms, facts.degree)
+
+
+def _checked(text: str, names: Collection[str]) -> tuple[ast.Expression, _Facts]:
     if not isinstance(text, str):
         raise ExpressionError("an expression must be a string")
     if len(text) > MAX_LENGTH:
@@ -518,7 +536,7 @@ def check_expression(text: str, names: Collection[str]) -> ast.Expression:
             offset,
             offset + len(stripped),
         )
-    return tree
+    return tree, facts
 
 
 class _Builder:

@@ -28,10 +28,11 @@ from collections import OrderedDict
 from collections.abc import Callable, Iterator
 from typing import Any
 
+from app.engine.budget import BudgetExceeded, time_limit
 from app.engine.contract import derivation_json
 from app.engine.derive import Derivation, derive
 from app.engine.errors import DerivationError, excerpt
-from app.engine.parse import ExpressionError, check_expression, check_name, parse_expression
+from app.engine.parse import MAX_TERMS, ExpressionError, Size, check_name, expression_size, parse_expression
 from app.engine.symbols import SymbolTable
 from app.scenes.types import Parameter, Particle, System
 from app.service import fairness as fair
@@ -42,6 +43,8 @@ MAX_PARAMETERS = 24
 MAX_PARTICLES = 8
 DERIVE_SECONDS = float(os.environ.get("LAGRANGE_DERIVE_SECONDS", "30"))
 SIMULATE_SECONDS = float(os.environ.get("LAGRANGE_SIMULATE_SECONDS", "30"))
+# the engine's own budget for one derivation, inside the worker's hard limit: over it, a refusal naming it
+ENGINE_SECONDS = min(8.0, DERIVE_SECONDS / 2)
 
 log = logging.getLogger(__name__)
 
@@ -156,11 +159,36 @@ def check_system(spec: dict[str, Any]) -> None:
 
     base = set(coordinates) | set(parameters) | {"t"}
     with_velocities = base | {f"{q}_dot" for q in coordinates}
+    sizes = {}
     for loc, text, velocities in expressions(spec):
         try:
-            check_expression(text, with_velocities if velocities else base)
+            sizes[loc] = expression_size(text, with_velocities if velocities else base)
         except ExpressionError as exc:
             raise _refuse(loc, exc) from None
+    _check_kinetic_size(spec, sizes)
+
+
+def _check_kinetic_size(spec: dict[str, Any], sizes: dict[tuple, Size]) -> None:
+    """Refuse particles whose kinetic energy would expand past MAX_TERMS terms (before SymPy builds it).
+
+    A position of n terms of degree d has a velocity of at most n*d terms (each
+    monomial differentiates into one term per factor); its square has at most
+    v(v + 1)/2 terms, times the terms of the mass; T sums those over particles and axes.
+    """
+    total = 0
+    for i, particle in enumerate(spec.get("particles") or ()):
+        mass = sizes[("particles", i, "mass")].terms
+        for j in range(len(particle["position"])):
+            size = sizes[("particles", i, "position", j)]
+            velocity = size.terms * max(1, math.ceil(size.degree))
+            total += mass * velocity * (velocity + 1) // 2
+        if total > MAX_TERMS:
+            loc = ("particles", i, "position")
+            raise InvalidSystem(
+                f"{_where(loc)}: the kinetic energy of these particles would expand into more than {MAX_TERMS} "
+                "terms; use fewer or simpler positions (or give T and U directly)",
+                loc,
+            )
 
 
 def to_system(spec: dict[str, Any]) -> System:
@@ -210,11 +238,21 @@ def _derive(spec: dict[str, Any]) -> Derivation:
     if key in _derivations:
         _derivations.move_to_end(key)
         return _derivations[key]
-    system = build_system(spec)
+    where = form_of(spec)
     try:
-        d = derive(system)
+        # every expand, substitution and solve of the derivation shares one budget, below the worker's hard limit
+        with time_limit(ENGINE_SECONDS):
+            system = build_system(spec)
+            d = derive(system)
+    except BudgetExceeded:
+        raise InvalidSystem(
+            f"{where}: deriving this system takes longer than the {ENGINE_SECONDS:g} s allowed; "
+            "write it with fewer terms, lower powers or fewer nested functions",
+            (where,),
+        ) from None
     except DerivationError as exc:  # a singular mass matrix and the like: the form's field is at fault
-        where = form_of(spec)
+        if isinstance(exc, InvalidSystem):
+            raise
         raise InvalidSystem(f"{where}: {exc}", (where,), exc.part) from None
     _derivations[key] = d
     while len(_derivations) > 8:
@@ -249,8 +287,10 @@ def _guarded(job: Callable[[], Any]) -> bytes:
         raise InvalidSystem(str(exc), (), exc.part) from None
     except Exception as exc:  # a SymPy or numerics failure on an odd but allowed input
         log.exception("user system failed")
+        # the details are for the log; the student gets a sentence without the engine's internal names
         raise InvalidSystem(
-            f"the engine could not handle this system ({type(exc).__name__}: {str(exc)[:200]})"
+            "the engine could not handle this system (a limit of the engine, not a mistake in what you wrote); "
+            "try writing it another way, for example without Abs or with simpler expressions"
         ) from None
 
 
