@@ -285,7 +285,7 @@ def _guarded(job: Callable[[], Any]) -> bytes:
         raise
     except DerivationError as exc:
         raise InvalidSystem(str(exc), (), exc.part) from None
-    except Exception as exc:  # a SymPy or numerics failure on an odd but allowed input
+    except Exception:  # a SymPy or numerics failure on an odd but allowed input
         log.exception("user system failed")
         # the details are for the log; the student gets a sentence without the engine's internal names
         raise InvalidSystem(

@@ -21,7 +21,7 @@ from app.service.user_systems import InvalidSystem
 from app.service.worker import JobFailed
 from app.web.examples_user import DERIVE_EXAMPLES, DERIVE_RESPONSE, ERROR_EXAMPLES, SIMULATE_EXAMPLES, SIMULATE_RESPONSE
 from app.web.limits import MAX_BODY_BYTES
-from app.web.schemas import ErrorResponse
+from app.web.schemas import SESSION_COOKIE, ErrorResponse
 from app.web.schemas_simulate import SimulateResponse
 from app.web.schemas_user import (
     BusyError,
@@ -116,6 +116,7 @@ async def _answer(request: Request, work: Callable[[str, str], Coroutine[Any, An
         "(never evaluated as code); the derivation runs in a worker process with a time and memory limit."
     ),
     response_model=DerivationDocument,
+    openapi_extra={"parameters": [SESSION_COOKIE]},
     responses={
         200: {"content": {"application/json": {"example": DERIVE_RESPONSE}}},
         **_errors(400, 413, 422, 429, 503),
@@ -138,6 +139,7 @@ async def derive_system(
         "E, h, conserved quantities, and stats with the method, an error estimate, drifts and warnings."
     ),
     response_model=SimulateResponse,
+    openapi_extra={"parameters": [SESSION_COOKIE]},
     responses={
         200: {"content": {"application/json": {"example": SIMULATE_RESPONSE}}},
         **_errors(400, 413, 422, 429, 503),

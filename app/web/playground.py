@@ -31,10 +31,11 @@ from app.viz.page_model import angles, scene_page
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
 from app.web.limits import TooDeep, json_depth
 from app.web.pages import simulation_methods
+from app.web.schemas import SESSION_COOKIE
 from app.web.schemas_user import SystemSpec
 from app.web.templating import templates
 
-router = APIRouter(tags=["pages"], include_in_schema=False)
+router = APIRouter(tags=["pages"])
 
 MAX_QUERY = 16_000  # characters of query string: far more than any system the form can hold
 FORMS = ("lagrangian", "energies", "particles")
@@ -318,7 +319,51 @@ def query_of(form: Form) -> dict[str, Any]:
     return {k: v for k, v in query.items() if (any(v) if isinstance(v, list) else v)}
 
 
-@router.get("/playground", response_class=HTMLResponse)
+def _query_parameter(name: str, description: str, repeated: bool = False) -> dict[str, Any]:
+    schema: dict[str, Any] = {"type": "array", "items": {"type": "string"}} if repeated else {"type": "string"}
+    return {"name": name, "in": "query", "required": False, "description": description, "schema": schema}
+
+
+# The form's fields as the query string carries them (read by read_form); documented so that
+# generated requests (schemathesis) reach every one of them.
+QUERY_PARAMETERS = [
+    _query_parameter("q", "Generalized coordinates, separated by commas or spaces."),
+    _query_parameter("form", f"Which form the mechanics is given in: one of {', '.join(FORMS)}."),
+    _query_parameter("L", "The Lagrangian (form=lagrangian)."),
+    _query_parameter("T", "The kinetic energy (form=energies)."),
+    _query_parameter("U", "The potential energy (form=energies or particles)."),
+    *(
+        _query_parameter(key, f"Parameters: {what}, one per parameter.", repeated=True)
+        for key, what in (("pn", "names"), ("pv", "values"), ("pu", "units"), ("plo", "lowest"), ("phi", "highest"))
+    ),
+    _query_parameter("m", "Particles: masses, one per particle.", repeated=True),
+    *(_query_parameter(a, f"Particles: {a} positions, one per particle.", repeated=True) for a in AXES),
+    _query_parameter("fq", "Generalized forces: the coordinate each acts on.", repeated=True),
+    _query_parameter("fQ", "Generalized forces: the expressions, in the order of fq.", repeated=True),
+    _query_parameter("nn", "Coordinates that are distances (never negative)."),
+    _query_parameter("system", "The whole system as JSON in the shape of POST /api/derive (takes precedence)."),
+    _query_parameter("new", "Present (any value) for an empty form."),
+    SESSION_COOKIE,
+]
+HTML = {"text/html": {"schema": {"type": "string"}}}
+
+
+@router.get(
+    "/playground",
+    response_class=HTMLResponse,
+    summary="Type a system and see its derivation",
+    description=(
+        f"The playground page. The system comes from the query string (at most {MAX_QUERY} characters); a "
+        "refusal is shown on the page next to the field it concerns, with status 422."
+    ),
+    openapi_extra={"parameters": QUERY_PARAMETERS},
+    responses={
+        200: {"description": "The page, with the derivation when a system was given.", "content": HTML},
+        422: {"description": "The page, with the refusal shown next to the offending field.", "content": HTML},
+        429: {"description": "You already have a derivation running; the page says so.", "content": HTML},
+        503: {"description": "The server is busy; the page says so.", "content": HTML},
+    },
+)
 async def playground(request: Request) -> Response:
     service = user_systems.service
     address = request.client.host if request.client else "unknown"
