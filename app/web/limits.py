@@ -23,17 +23,15 @@ class TooDeep(ValueError):
     """A JSON text nested deeper than allowed."""
 
 
-def json_depth(text: str | bytes, limit: int = MAX_JSON_DEPTH) -> int:
-    """Check a JSON text's nesting of arrays and objects by scanning (not parsing) it.
+def check_json_depth(text: str | bytes, limit: int = MAX_JSON_DEPTH) -> None:
+    """Refuse a JSON text whose arrays and objects nest deeper than ``limit``, by scanning (not parsing) it.
 
-    Brackets inside strings do not count; raises TooDeep as soon as ``limit`` is
-    passed.  The number returned is a lower bound on the depth when the text has
-    few brackets (then no scan is needed), else the depth itself.
+    Brackets inside strings do not count; raises TooDeep as soon as ``limit`` is passed.
     """
     data = text.encode("utf-8", "surrogatepass") if isinstance(text, str) else text
-    if data.count(b"[") + data.count(b"{") <= limit:  # the common case, at C speed
-        return 0 if not data.strip() else 1
-    depth = deepest = 0
+    if data.count(b"[") + data.count(b"{") <= limit:  # the common case, decided at C speed
+        return
+    depth = 0
     in_string = escaped = False
     for byte in data:
         if in_string:
@@ -49,10 +47,8 @@ def json_depth(text: str | bytes, limit: int = MAX_JSON_DEPTH) -> int:
             depth += 1
             if depth > limit:
                 raise TooDeep(f"the JSON is nested deeper than {limit} levels")
-            deepest = max(deepest, depth)
         elif byte in (0x5D, 0x7D):  # ] }
             depth -= 1
-    return deepest
 
 
 def too_large_message(size: int | None) -> str:
@@ -105,7 +101,7 @@ class BodyLimit:
                 break
         body = b"".join(chunks)
         try:
-            json_depth(body, self.max_depth)
+            check_json_depth(body, self.max_depth)
         except TooDeep as exc:
             await _refuse(send, 400, f"{exc}; requests here are at most a few levels deep")
             return

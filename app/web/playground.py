@@ -29,7 +29,7 @@ from app.service.worker import JobFailed
 from app.viz.exprtree import TreeError, tree
 from app.viz.page_model import angles, scene_page
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
-from app.web.limits import TooDeep, json_depth
+from app.web.limits import TooDeep, check_json_depth
 from app.web.pages import simulation_methods
 from app.web.schemas import SESSION_COOKIE
 from app.web.schemas_user import SystemSpec
@@ -96,7 +96,7 @@ def read_form(query: QueryParams) -> Form:
     if query.get("system"):
         try:
             # the nesting is checked by a scan before json.loads, which recurses once per level
-            json_depth(query["system"])
+            check_json_depth(query["system"])
             return form_of(json.loads(query["system"]))
         except TooDeep as exc:
             raise FormError(f"the system in the address is not a system: {exc}", "f-coordinates") from None
