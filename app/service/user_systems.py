@@ -26,6 +26,7 @@ import os
 import threading
 from collections import OrderedDict
 from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from typing import Any
 
 from app.engine.budget import BudgetExceeded, time_limit
@@ -44,7 +45,7 @@ MAX_PARTICLES = 8
 DERIVE_SECONDS = float(os.environ.get("LAGRANGE_DERIVE_SECONDS", "30"))
 SIMULATE_SECONDS = float(os.environ.get("LAGRANGE_SIMULATE_SECONDS", "30"))
 # the engine's own budget for one derivation, inside the worker's hard limit: over it, a refusal naming it
-ENGINE_SECONDS = min(8.0, DERIVE_SECONDS / 2)
+ENGINE_SECONDS = DERIVE_SECONDS * 2 / 3
 
 log = logging.getLogger(__name__)
 
@@ -229,6 +230,26 @@ def build_system(spec: dict[str, Any]) -> System:
     return to_system(spec)
 
 
+@contextmanager
+def engine_budget(spec: dict[str, Any]) -> Iterator[None]:
+    """One time budget for the engine's work on a user system, below the worker's hard limit.
+
+    Every expand, substitution, solve and display step inside shares it (the
+    engine's own smaller budgets nest within it); running out is a refusal that
+    names the limit, not a killed worker.
+    """
+    try:
+        with time_limit(ENGINE_SECONDS):
+            yield
+    except BudgetExceeded:
+        where = form_of(spec)
+        raise InvalidSystem(
+            f"{where}: deriving this system takes longer than the {ENGINE_SECONDS:g} s allowed; "
+            "write it with fewer terms, lower powers or fewer nested functions",
+            (where,),
+        ) from None
+
+
 _derivations: OrderedDict[str, Derivation] = OrderedDict()
 
 
@@ -240,16 +261,9 @@ def _derive(spec: dict[str, Any]) -> Derivation:
         return _derivations[key]
     where = form_of(spec)
     try:
-        # every expand, substitution and solve of the derivation shares one budget, below the worker's hard limit
-        with time_limit(ENGINE_SECONDS):
+        with engine_budget(spec):
             system = build_system(spec)
             d = derive(system)
-    except BudgetExceeded:
-        raise InvalidSystem(
-            f"{where}: deriving this system takes longer than the {ENGINE_SECONDS:g} s allowed; "
-            "write it with fewer terms, lower powers or fewer nested functions",
-            (where,),
-        ) from None
     except DerivationError as exc:  # a singular mass matrix and the like: the form's field is at fault
         if isinstance(exc, InvalidSystem):
             raise
@@ -296,7 +310,12 @@ def _guarded(job: Callable[[], Any]) -> bytes:
 
 def derive_job(spec: dict[str, Any]) -> bytes:
     """Worker job: the derivation JSON of a user system (as for a scene)."""
-    return _guarded(lambda: derivation_json(_derive(spec)))
+
+    def run() -> dict[str, Any]:
+        with engine_budget(spec):
+            return derivation_json(_derive(spec))
+
+    return _guarded(run)
 
 
 def simulate_job(spec: dict[str, Any], request: Any) -> bytes:
