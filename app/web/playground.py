@@ -22,6 +22,7 @@ from pydantic import ValidationError
 from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import QueryParams
 
+from app.engine.errors import excerpt
 from app.service import user_systems
 from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
 from app.service.user_systems import InvalidSystem
@@ -190,7 +191,7 @@ def spec_of(form: Form) -> dict[str, Any]:
         first = exc.errors()[0]
         # a parameter is a name or an object: drop the union member from the location
         loc = tuple(x for x in first["loc"] if x not in ("ParameterSpec", "str"))
-        where = ".".join(str(x) for x in loc)
+        where = ".".join(excerpt(x) for x in loc)
         raise _located(form, loc, f"{where}: {first['msg']}") from None
 
 
