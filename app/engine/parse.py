@@ -389,19 +389,20 @@ class _Checker:
         if calls > MAX_CALLS:
             raise self.refuse(node, f"functions nested more than {MAX_CALLS} deep")
         inside = max(argument.inside, argument.terms)
+        terms, degree = 1, 1.0
+        if name == "exp":
+            # SymPy rewrites exp(c*log(u) + rest) as u**c * exp(rest), also for a constant u
+            # (exp(10**15*log(0.5)) is 2**-10**15): bound those powers as powers
+            powers = [self.power(summand, u, c) for summand, u, c in self.exp_log_powers(node.args[0], depth + 1)]
+            for p in powers:
+                terms, inside = _cap(terms * p.terms), max(inside, p.inside)
+            degree = max(degree, sum(p.degree for p in powers))
         if argument.value is not None:
             if argument.exact is not None and name in _DOMAINS and not _DOMAINS[name](argument.exact):
                 raise self.refuse(node, f"this number is undefined or not real ({name} of {float(argument.exact):g})")
             function = _FLOAT_FUNCTIONS[name]
             value = self.fold(node, lambda: function(argument.value))
             return _Facts(value, None, 1, inside, 0, calls)
-        terms, degree = 1, 1.0
-        if name == "exp":
-            # SymPy rewrites exp(c*log(u) + rest) as u**c * exp(rest): bound those powers as powers
-            powers = [self.power(summand, u, c) for summand, u, c in self.exp_log_powers(node.args[0], depth + 1)]
-            for p in powers:
-                terms, inside = _cap(terms * p.terms), max(inside, p.inside)
-            degree = max(degree, sum(p.degree for p in powers))
         return _Facts(None, None, terms, inside, degree, calls)
 
     def exp_log_powers(self, argument: ast.AST, depth: int) -> list[tuple[ast.AST, _Facts, _Facts]]:

@@ -53,6 +53,8 @@ hostile = st.recursive(leaves, _extend, max_leaves=10)
 @example("exp(1000000*log(x + 1))")
 @example("exp(10**15*log(x))")
 @example("((x**60)**60)**60")
+@example("exp((10**15)*log(sin(1)))")
+@example("exp((10**15)*log(0.5))")
 def test_hostile_expressions_are_refused_or_built_quickly_and_real(text):
     try:
         with time_limit(HANG_GUARD):
