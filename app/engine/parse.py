@@ -10,12 +10,18 @@ names the offending part and where it starts:
 2. structure (pure Python, no SymPy): Python's ``ast`` tree walked against an
    allowlist of numbers, declared names, ``+ - * / **``, unary signs and calls
    of a fixed set of one-argument functions; limits on nesting depth, node
-   count, literal size and exponents; constant sub-expressions evaluated in
-   floating point so that ``exp(exp(exp(3)))`` is refused as too large instead
-   of sending SymPy's automatic evaluation into a hang; and an upper bound on
-   the number of terms a full expansion can produce;
+   count, literal size, exponents and nested calls; constant sub-expressions
+   folded exactly (``fractions.Fraction``, with caps on digits and on the index
+   of a root SymPy would extract) or in floating point, so that
+   ``exp(exp(exp(3)))``, ``12**(1 - 1/3**40)`` or ``asin(2)`` are refused
+   instead of sending SymPy's automatic evaluation into a hang or a non-real
+   value; towers of exponents refused even behind signs; ``exp(c*log(u))``
+   bounded as the power ``u**c`` SymPy turns it into; the degree of powers
+   once combined bounded; and an upper bound on the number of terms a full
+   expansion can produce, of the whole and of every function's argument;
 3. construction: the checked tree is built into SymPy, and a result that is
-   undefined or not real (``1/(x - x)``, ``sqrt(-x**2)``) is refused.
+   undefined or not real (``1/(x - x)``, ``sqrt(-x**2)``, ``asin(2 + x - x)``)
+   is refused.
 
 ``check_expression`` runs gates 1 and 2 only, so a web process can refuse
 hostile text without touching SymPy; ``parse_expression`` runs all three.
