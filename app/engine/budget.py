@@ -35,10 +35,19 @@ class BudgetExceeded(Exception):
 
 @contextmanager
 def time_limit(seconds: float) -> Iterator[None]:
-    """Raise BudgetExceeded in the block after ``seconds`` (main thread only)."""
+    """Raise BudgetExceeded in the block after ``seconds`` (main thread only).
+
+    Limits nest: an inner block gets at most the time the outer one has left,
+    and the outer limit is re-armed with what remains when the inner block ends
+    (at once, if it ran out meanwhile), so a whole derivation can have a budget
+    while its optional refinements have smaller ones.
+    """
     if threading.current_thread() is not threading.main_thread():
         yield
         return
+    outer, _ = signal.getitimer(signal.ITIMER_REAL)
+    started = time.monotonic()
+    seconds = min(seconds, outer) if outer > 0 else seconds
 
     def _expire(signum: int, frame: object) -> None:
         # A signal landing in an interpreter callback (a gc callback, a finaliser)
@@ -56,6 +65,8 @@ def time_limit(seconds: float) -> Iterator[None]:
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous)
+        if outer > 0:
+            signal.setitimer(signal.ITIMER_REAL, max(outer - (time.monotonic() - started), 0.001))
 
 
 def within_budget(work: Callable[[], T], fallback: T, seconds: float) -> T:

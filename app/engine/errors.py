@@ -1,6 +1,12 @@
 """Errors the engine raises for declarations it cannot derive."""
 
 
+def excerpt(text: object, limit: int = 40) -> str:
+    """A short excerpt of user input for a message: never more than ``limit`` characters echoed back."""
+    shown = str(text)
+    return shown if len(shown) <= limit else shown[: limit - 3] + "..."
+
+
 class DerivationError(ValueError):
     """A system the engine refuses; the message says what is wrong and what is allowed.
 

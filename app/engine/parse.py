@@ -11,12 +11,18 @@ names the offending part and where it starts:
    allowlist of numbers, declared names, ``+ - * / **``, unary signs and calls
    of a fixed set of functions (``FUNCTIONS``, one argument each but
    ``atan2(y, x)``); limits on nesting depth, node
-   count, literal size and exponents; constant sub-expressions evaluated in
-   floating point so that ``exp(exp(exp(3)))`` is refused as too large instead
-   of sending SymPy's automatic evaluation into a hang; and an upper bound on
-   the number of terms a full expansion can produce;
+   count, literal size, exponents and nested calls; constant sub-expressions
+   folded exactly (``fractions.Fraction``, with caps on digits and on the index
+   of a root SymPy would extract) or in floating point, so that
+   ``exp(exp(exp(3)))``, ``12**(1 - 1/3**40)`` or ``asin(2)`` are refused
+   instead of sending SymPy's automatic evaluation into a hang or a non-real
+   value; towers of exponents refused even behind signs; ``exp(c*log(u))``
+   bounded as the power ``u**c`` SymPy turns it into; the degree of powers
+   once combined bounded; and an upper bound on the number of terms a full
+   expansion can produce, of the whole and of every function's argument;
 3. construction: the checked tree is built into SymPy, and a result that is
-   undefined or not real (``1/(x - x)``, ``sqrt(-x**2)``) is refused.
+   undefined or not real (``1/(x - x)``, ``sqrt(-x**2)``, ``asin(2 + x - x)``)
+   is refused.
 
 ``check_expression`` runs gates 1 and 2 only, so a web process can refuse
 hostile text without touching SymPy; ``parse_expression`` runs all three.
@@ -30,6 +36,7 @@ import math
 import re
 from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass
+from fractions import Fraction
 
 import sympy as sp
 
@@ -41,7 +48,12 @@ MAX_NODES = 600  # parts of the expression tree
 MAX_EXPONENT = 64  # magnitude of a numeric exponent
 MAX_LITERAL = 1e15  # magnitude of a number as written (integers: at most 15 digits)
 MAX_CONSTANT = 1e100  # magnitude of any constant sub-expression, such as 10**20 or exp(50)
-MAX_TERMS = 2000  # terms a full expansion of the expression may produce (an upper bound)
+MAX_TERMS = 2000  # terms a full expansion of the expression (or of a function's argument) may produce
+MAX_DIGITS = 400  # digits of the numerator or denominator of an exact rational constant (a float literal: under 340)
+MAX_ROOT = 64  # index of a root SymPy extracts from a constant (x**(p/q) with x constant: q)
+MAX_DEGREE = 256  # exponent of any one factor once SymPy combines powers ((x**8)**8, x**40*x**40, exp(9*log(x)))
+MAX_CALLS = 8  # functions nested inside one another (each level multiplies the size of the derivatives)
+_MAX_BITS = math.ceil(MAX_DIGITS * math.log2(10))
 
 FUNCTIONS: dict[str, type[sp.Function]] = {
     "sin": sp.sin,
@@ -92,9 +104,9 @@ _SYMPY_NAMES |= {"sec", "csc", "cot", "asec", "acsc", "acot", "asinh", "acosh", 
 _SYMPY_NAMES |= {"atan2", "Max", "Min", "Piecewise", "Heaviside", "DiracDelta", "Integral", "Derivative", "Subs"}
 _SYMPY_NAMES |= {"Symbol", "Function", "Integer", "Float", "Rational", "Matrix", "floor", "ceiling"}
 RESERVED = frozenset(FUNCTIONS) | frozenset(CONSTANTS) | frozenset(_SYMPY_NAMES) | {"t"} | frozenset(keyword.kwlist)
-NAME_PATTERN = re.compile(r"^[A-Za-z][A-Za-z0-9]{0,15}$")
+NAME_PATTERN = re.compile(r"[A-Za-z][A-Za-z0-9]{0,15}")  # always matched whole (fullmatch)
 # A name ending in "dot" would print like a velocity (SymPy typesets xdot as x with a dot).
-_DOTTED = re.compile(r"d{1,4}ot$")
+_DOTTED = re.compile(r"d{1,4}ot\Z")
 ALLOWED_CHARACTERS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.+-*/(), ")
 
 _OPERATORS = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/", ast.Pow: "**"}
@@ -138,7 +150,7 @@ class ExpressionError(DerivationError):
 
 def check_name(name: str, what: str = "name") -> str:
     """A declared name: a letter then up to 15 letters or digits, not a function, constant or keyword."""
-    if not isinstance(name, str) or not NAME_PATTERN.match(name):
+    if not isinstance(name, str) or not NAME_PATTERN.fullmatch(name):
         shown = str(name)[:40]
         raise ExpressionError(
             f"{what} {shown!r} is not allowed: use a letter followed by up to 15 ASCII letters or digits "
@@ -159,20 +171,64 @@ class _Facts:
     """What the checker knows about a sub-expression."""
 
     value: float | None  # its value in floating point when it is a constant
+    exact: Fraction | None  # its exact value when it is a rational constant
     terms: int  # an upper bound on the terms of its full expansion (capped)
+    inside: int = 1  # the same bound for the largest function argument within (expand expands those too)
+    degree: float = 0  # an upper bound on the exponent SymPy may give any one factor after combining powers
+    calls: int = 0  # how deeply function calls nest inside it
 
 
 def _cap(n: int) -> int:
     return min(n, MAX_TERMS + 1)
 
 
+def _strip_signs(node: ast.AST) -> tuple[ast.AST, int]:
+    """The operand under a run of unary signs, and the sign they amount to."""
+    sign = 1
+    while isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+        sign = -sign if isinstance(node.op, ast.USub) else sign
+        node = node.operand
+    return node, sign
+
+
+def _chain(node: ast.AST, ops: tuple[type, ...]) -> list[tuple[type | None, ast.AST, ast.AST]]:
+    """A left-deep run of operators of one family (a + b - c, a * b / c) as a flat list, without recursion.
+
+    Each item is (operator or None for the first operand, operand, the partial expression it ends).
+    """
+    items: list[tuple[type | None, ast.AST, ast.AST]] = []
+    while isinstance(node, ast.BinOp) and type(node.op) in ops:
+        items.append((type(node.op), node.right, node))
+        node = node.left
+    items.append((None, node, node))
+    items.reverse()
+    return items
+
+
+_SUMS = (ast.Add, ast.Sub)
+_PRODUCTS = (ast.Mult, ast.Div)
+# the real domain of functions that are not real everywhere, for an exact (rational) argument
+_DOMAINS: dict[str, Callable[[Fraction], bool]] = {
+    "asin": lambda a: -1 <= a <= 1,
+    "acos": lambda a: -1 <= a <= 1,
+    "log": lambda a: a > 0,
+    "sqrt": lambda a: a >= 0,
+}
+
+
 class _Checker:
-    """Gate 2: the allowlist walk, in pure Python."""
+    """Gate 2: the allowlist walk, in pure Python.
+
+    Sums and products are walked as flat lists (their length is bounded by
+    MAX_NODES, their nesting by nothing), so the recursion follows only real
+    nesting (parentheses, calls, signs, powers), which MAX_DEPTH bounds.
+    """
 
     def __init__(self, text: str, offset: int, names: Collection[str]):
         self.text = text
         self.offset = offset
         self.names = names
+        self.memo: dict[int, _Facts] = {}
 
     def refuse(self, node: ast.AST, why: str) -> ExpressionError:
         start = getattr(node, "col_offset", 0)
@@ -187,6 +243,11 @@ class _Checker:
         )
 
     def check(self, node: ast.AST, depth: int = 0) -> _Facts:
+        if id(node) not in self.memo:
+            self.memo[id(node)] = self._check(node, depth)
+        return self.memo[id(node)]
+
+    def _check(self, node: ast.AST, depth: int) -> _Facts:
         if depth > MAX_DEPTH:
             raise self.refuse(node, f"nested deeper than {MAX_DEPTH} levels")
         if isinstance(node, ast.Constant):
@@ -197,10 +258,22 @@ class _Checker:
             if not isinstance(node.op, (ast.USub, ast.UAdd)):
                 raise self.refuse(node, "only the signs + and - may stand before a term")
             inner = self.check(node.operand, depth + 1)
-            value = None if inner.value is None else (-inner.value if isinstance(node.op, ast.USub) else inner.value)
-            return _Facts(value, inner.terms)
+            if isinstance(node.op, ast.UAdd) or inner.value is None:
+                return inner
+            exact = None if inner.exact is None else -inner.exact
+            return _Facts(-inner.value, exact, inner.terms, inner.inside, inner.degree, inner.calls)
         if isinstance(node, ast.BinOp):
-            return self.binary(node, depth)
+            if type(node.op) not in _OPERATORS:
+                why = _REFUSED_OPERATORS.get(type(node.op), "only + - * / ** are allowed")
+                raise self.refuse(node, why)
+            if isinstance(node.op, ast.Pow):
+                base, exponent = self.check(node.left, depth + 1), self.check(node.right, depth + 1)
+                if isinstance(_strip_signs(node.right)[0], ast.BinOp) and isinstance(
+                    _strip_signs(node.right)[0].op, ast.Pow
+                ):
+                    raise self.refuse(node, "towers of exponents are not allowed")
+                return self.power(node, base, exponent)
+            return self.sum(node, depth) if isinstance(node.op, _SUMS) else self.product(node, depth)
         if isinstance(node, ast.Call):
             return self.call(node, depth)
         why = _REFUSED_NODES.get(type(node), f"{type(node).__name__} is not allowed in an expression")
@@ -216,14 +289,16 @@ class _Checker:
             raise self.refuse(node, "integer literal longer than 15 digits")
         if isinstance(value, float) and not (math.isfinite(value) and abs(value) <= MAX_LITERAL):
             raise self.refuse(node, f"number out of range (at most {MAX_LITERAL:.0e} in magnitude)")
-        return _Facts(float(value), 1)
+        # a decimal literal stands for the exact rational it names (as the builder makes it)
+        exact = Fraction(value) if isinstance(value, int) else Fraction(repr(value))
+        return _Facts(float(value), self.exactly(node, exact), 1)
 
     def name(self, node: ast.Name) -> _Facts:
         name = node.id
         if name in self.names:
-            return _Facts(None, 1)
+            return _Facts(None, None, 1, degree=1)
         if name in _FLOAT_CONSTANTS:
-            return _Facts(_FLOAT_CONSTANTS[name], 1)
+            return _Facts(_FLOAT_CONSTANTS[name], None, 1)
         if name in FUNCTIONS:
             raise self.refuse(node, f"{name} is a function: write {name}(...)")
         if name.endswith("_ddot"):
@@ -233,30 +308,56 @@ class _Checker:
         declared = ", ".join(sorted(self.names)) or "none"
         raise self.refuse(node, f"unknown name (allowed here: {declared}, pi)")
 
-    def binary(self, node: ast.BinOp, depth: int) -> _Facts:
-        if type(node.op) not in _OPERATORS:
-            why = _REFUSED_OPERATORS.get(type(node.op), "only + - * / ** are allowed")
-            raise self.refuse(node, why)
-        left = self.check(node.left, depth + 1)
-        right = self.check(node.right, depth + 1)
-        op = type(node.op)
-        if op is ast.Pow:
-            return self.power(node, left, right)
-        if op is ast.Div and right.value == 0:
-            raise self.refuse(node, "division by zero")
-        if op in (ast.Add, ast.Sub):
-            terms = left.terms + right.terms
-        else:
-            # a product (or a quotient, whose denominator expands too) multiplies the terms
-            terms = left.terms * right.terms
-        value = None
-        if left.value is not None and right.value is not None:
-            value = self.fold(node, lambda: _ARITHMETIC[op](left.value, right.value))
-        return _Facts(value, _cap(terms))
+    def sum(self, node: ast.BinOp, depth: int) -> _Facts:
+        items = _chain(node, _SUMS)
+        facts = [self.check(operand, depth + 1) for _, operand, _ in items]
+        value, exact = facts[0].value, facts[0].exact
+        for (op, _, partial), f in zip(items[1:], facts[1:], strict=True):
+            sign = 1 if op is ast.Add else -1
+            if value is not None and f.value is not None:
+                if exact is not None and f.exact is not None:
+                    exact = self.exactly(partial, exact + sign * f.exact)
+                    value = float(exact)
+                else:
+                    exact, value = None, self.fold(partial, lambda a=value, b=f.value, s=sign: a + s * b)
+            else:
+                value = exact = None
+        return _Facts(
+            value,
+            exact,
+            _cap(sum(f.terms for f in facts)),
+            max(f.inside for f in facts),
+            max(f.degree for f in facts),
+            max(f.calls for f in facts),
+        )
 
-    def power(self, node: ast.BinOp, base: _Facts, exponent: _Facts) -> _Facts:
-        if isinstance(node.right, ast.BinOp) and isinstance(node.right.op, ast.Pow):
-            raise self.refuse(node, "towers of exponents are not allowed")
+    def product(self, node: ast.BinOp, depth: int) -> _Facts:
+        items = _chain(node, _PRODUCTS)
+        facts = [self.check(operand, depth + 1) for _, operand, _ in items]
+        value, exact, terms = facts[0].value, facts[0].exact, facts[0].terms
+        for (op, _, partial), f in zip(items[1:], facts[1:], strict=True):
+            if op is ast.Div and f.value == 0:
+                raise self.refuse(partial, "division by zero")
+            # a product (or a quotient, whose denominator expands too) multiplies the terms
+            terms = _cap(terms * f.terms)
+            if value is not None and f.value is not None:
+                if exact is not None and f.exact is not None:
+                    exact = self.exactly(partial, exact * f.exact if op is ast.Mult else exact / f.exact)
+                    value = float(exact)
+                else:
+                    exact = None
+                    value = self.fold(partial, lambda a=value, b=f.value, o=op: a * b if o is ast.Mult else a / b)
+            else:
+                value = exact = None
+        degree = sum(f.degree for f in facts)
+        if degree > MAX_DEGREE:
+            raise self.refuse(
+                node, f"the powers here grow too large (degree {degree:g} once combined; at most {MAX_DEGREE})"
+            )
+        return _Facts(value, exact, terms, max(f.inside for f in facts), degree, max(f.calls for f in facts))
+
+    def power(self, node: ast.AST, base: _Facts, exponent: _Facts) -> _Facts:
+        """base**exponent, also when written exp(exponent*log(base)) (which SymPy turns into a power)."""
         if exponent.value is None:
             raise self.refuse(node, "exponents must be numbers (write exp(y*log(x)) for x**y)")
         n = exponent.value
@@ -264,30 +365,99 @@ class _Checker:
             raise self.refuse(node, f"exponent larger than {MAX_EXPONENT} in magnitude")
         if base.value == 0 and n < 0:
             raise self.refuse(node, "division by zero")
+        whole_exponent = exponent.exact is not None and exponent.exact.denominator == 1
+        exact = None
+        if base.value is not None:
+            # SymPy extracts roots of a constant exactly: a large root index makes it search for ever
+            if exponent.exact is not None and exponent.exact.denominator > MAX_ROOT:
+                raise self.refuse(
+                    node, f"a root of index {exponent.exact.denominator} is too large (at most {MAX_ROOT})"
+                )
+            if base.value < 0 and not whole_exponent:
+                raise self.refuse(node, "this number is not real (a fractional power of a negative number)")
+            if base.exact is not None and whole_exponent:
+                p = abs(exponent.exact.numerator)
+                bits = max(base.exact.numerator.bit_length(), base.exact.denominator.bit_length())
+                if bits * p > _MAX_BITS:
+                    raise self.refuse(node, f"this number is too large (more than {MAX_DIGITS} digits)")
+                exact = self.exactly(node, base.exact**exponent.exact.numerator)
+        degree = base.degree * abs(n)
+        if degree > MAX_DEGREE:
+            raise self.refuse(
+                node, f"the powers here grow too large (degree {degree:g} once combined; at most {MAX_DEGREE})"
+            )
         # (a_1 + ... + a_k)**n expands into at most C(n + k - 1, n) terms
         whole = math.ceil(abs(n))
         terms = math.comb(whole + base.terms - 1, whole) if base.terms > 1 else 1
         value = None
         if base.value is not None:
-            value = self.fold(node, lambda: base.value**n)
-        return _Facts(value, _cap(terms))
+            value = float(exact) if exact is not None else self.fold(node, lambda: base.value**n)
+        return _Facts(value, exact, _cap(terms), base.inside, degree, base.calls)
 
     def call(self, node: ast.Call, depth: int) -> _Facts:
         if not isinstance(node.func, ast.Name) or node.func.id not in FUNCTIONS:
             allowed = ", ".join(sorted(FUNCTIONS))
             raise self.refuse(node.func, f"only these functions may be called: {allowed}")
-        arity = ARITY.get(node.func.id, 1)
+        name = node.func.id
+        arity = ARITY.get(name, 1)
         if node.keywords or len(node.args) != arity or any(isinstance(a, ast.Starred) for a in node.args):
             count = "exactly one argument" if arity == 1 else f"exactly {arity} arguments"
-            raise self.refuse(node, f"{node.func.id} takes {count}")
+            raise self.refuse(node, f"{name} takes {count}")
         arguments = [self.check(a, depth + 1) for a in node.args]
-        value = None
+        calls = max(a.calls for a in arguments) + 1
+        if calls > MAX_CALLS:
+            raise self.refuse(node, f"functions nested more than {MAX_CALLS} deep")
+        inside = max(max(a.inside, a.terms) for a in arguments)
+        terms, degree = 1, 1.0
+        if name == "exp":
+            # SymPy rewrites exp(c*log(u) + rest) as u**c * exp(rest), also for a constant u
+            # (exp(10**15*log(0.5)) is 2**-10**15): bound those powers as powers
+            powers = [self.power(summand, u, c) for summand, u, c in self.exp_log_powers(node.args[0], depth + 1)]
+            for p in powers:
+                terms, inside = _cap(terms * p.terms), max(inside, p.inside)
+            degree = max(degree, sum(p.degree for p in powers))
         if all(a.value is not None for a in arguments):
-            function = _FLOAT_FUNCTIONS[node.func.id]
-            if node.func.id == "atan2" and arguments[0].value == 0 and arguments[1].value == 0:
+            if name == "atan2" and arguments[0].value == 0 and arguments[1].value == 0:
                 raise self.refuse(node, "atan2(0, 0) is undefined")
+            exact = arguments[0].exact
+            if arity == 1 and exact is not None and name in _DOMAINS and not _DOMAINS[name](exact):
+                raise self.refuse(node, f"this number is undefined or not real ({name} of {float(exact):g})")
+            function = _FLOAT_FUNCTIONS[name]
             value = self.fold(node, lambda: function(*(a.value for a in arguments)))
-        return _Facts(value, 1)
+            return _Facts(value, None, 1, inside, 0, calls)
+        return _Facts(None, None, terms, inside, degree, calls)
+
+    def exp_log_powers(self, argument: ast.AST, depth: int) -> list[tuple[ast.AST, _Facts, _Facts]]:
+        """The summands c*log(u) (c constant) of an exp's argument, each as (summand, u, c)."""
+        found = []
+        whole, whole_sign = _strip_signs(argument)
+        for op, summand, _ in _chain(whole, _SUMS):
+            term, sign = _strip_signs(summand)
+            sign *= whole_sign * (-1 if op is ast.Sub else 1)
+            logs, value, exact = [], float(sign), Fraction(sign)
+            for factor_op, factor, _ in _chain(term, _PRODUCTS):
+                inner, factor_sign = _strip_signs(factor)
+                if isinstance(inner, ast.Call) and getattr(inner.func, "id", "") == "log" and factor_op is not ast.Div:
+                    logs.append(inner)
+                    value, exact = value * factor_sign, None if exact is None else exact * factor_sign
+                    continue
+                f = self.check(factor, depth)
+                if f.value is None or f.value == 0:
+                    break
+                divide = factor_op is ast.Div
+                value = value / f.value if divide else value * f.value
+                exact = None if exact is None or f.exact is None else (exact / f.exact if divide else exact * f.exact)
+            else:
+                if len(logs) == 1:
+                    u = self.check(logs[0].args[0], depth + 1)
+                    found.append((summand, u, _Facts(value, exact, 1)))
+        return found
+
+    def exactly(self, node: ast.AST, value: Fraction) -> Fraction:
+        """An exact rational constant, refused when its numerator or denominator is too long to keep."""
+        if max(value.numerator.bit_length(), value.denominator.bit_length()) > _MAX_BITS:
+            raise self.refuse(node, f"this number is too large to keep exactly (more than {MAX_DIGITS} digits)")
+        return value
 
     def fold(self, node: ast.AST, compute: Callable[[], float]) -> float:
         """The value of a constant sub-expression, refused when huge or not real."""
@@ -304,14 +474,6 @@ class _Checker:
         if not math.isfinite(value) or abs(value) > MAX_CONSTANT:
             raise self.refuse(node, f"this number is too large (at most {MAX_CONSTANT:.0e})")
         return value
-
-
-_ARITHMETIC: dict[type, Callable[[float, float], float]] = {
-    ast.Add: lambda a, b: a + b,
-    ast.Sub: lambda a, b: a - b,
-    ast.Mult: lambda a, b: a * b,
-    ast.Div: lambda a, b: a / b,
-}
 
 
 def _first_bad_character(text: str) -> int | None:
@@ -340,6 +502,24 @@ def check_expression(text: str, names: Collection[str]) -> ast.Expression:
     ``names`` are the names the expression may use (``pi`` is always allowed).
     Returns the checked tree (of the text with surrounding spaces removed).
     """
+    return _checked(text, names)[0]
+
+
+@dataclass(frozen=True)
+class Size:
+    """Upper bounds for a checked expression: terms of its full expansion, and its degree (x**2*y: 3)."""
+
+    terms: int
+    degree: float
+
+
+def expression_size(text: str, names: Collection[str]) -> Size:
+    """Check an expression as ``check_expression`` does and return its size bounds."""
+    facts = _checked(text, names)[1]
+    return Size(facts.terms, facts.degree)
+
+
+def _checked(text: str, names: Collection[str]) -> tuple[ast.Expression, _Facts]:
     if not isinstance(text, str):
         raise ExpressionError("an expression must be a string")
     if len(text) > MAX_LENGTH:
@@ -371,14 +551,15 @@ def check_expression(text: str, names: Collection[str]) -> ast.Expression:
     if count > MAX_NODES:
         raise ExpressionError(f"expression has {count} parts; at most {MAX_NODES} are allowed")
     facts = _Checker(stripped, offset, names).check(tree.body)
-    if facts.terms > MAX_TERMS:
+    if facts.terms > MAX_TERMS or facts.inside > MAX_TERMS:
+        where = "expression" if facts.terms > MAX_TERMS else "a function's argument"
         raise ExpressionError(
-            f"expression would expand into more than {MAX_TERMS} terms; write it in a smaller form",
+            f"{where} would expand into more than {MAX_TERMS} terms; write it in a smaller form",
             stripped[:60],
             offset,
             offset + len(stripped),
         )
-    return tree
+    return tree, facts
 
 
 class _Builder:
@@ -398,22 +579,34 @@ class _Builder:
         if isinstance(node, ast.UnaryOp):
             inner = self.build(node.operand)
             return -inner if isinstance(node.op, ast.USub) else inner
+        if isinstance(node, ast.BinOp) and isinstance(node.op, (*_SUMS, *_PRODUCTS)):
+            # a long sum or product is a flat list here too, not a recursion as deep as it is long
+            items = _chain(node, _SUMS if isinstance(node.op, _SUMS) else _PRODUCTS)
+            result = self.build(items[0][1])
+            for op, operand, _ in items[1:]:
+                right = self.build(operand)
+                if op is ast.Div and right == 0:
+                    raise self.checker.refuse(operand, "division by zero (this denominator is 0)")
+                result = _COMBINE[op](result, right)
+            return result
         if isinstance(node, ast.BinOp):
-            left, right = self.build(node.left), self.build(node.right)
-            if isinstance(node.op, ast.Div) and right == 0:
-                raise self.checker.refuse(node.right, "division by zero (this denominator is 0)")
-            op = type(node.op)
-            if op is ast.Add:
-                return left + right
-            if op is ast.Sub:
-                return left - right
-            if op is ast.Mult:
-                return left * right
-            if op is ast.Div:
-                return left / right
-            return left**right
+            return self.real(node, self.build(node.left) ** self.build(node.right))
         assert isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
-        return FUNCTIONS[node.func.id](*(self.build(a) for a in node.args))
+        return self.real(node, FUNCTIONS[node.func.id](*(self.build(a) for a in node.args)))
+
+    def real(self, node: ast.AST, value: sp.Expr) -> sp.Expr:
+        """A power or function value, refused when it is a constant that is not real (asin(2 + x - x))."""
+        if value.is_number and value.is_finite is not False and value.is_extended_real is False:
+            raise self.checker.refuse(node, "this number is not real")
+        return value
+
+
+_COMBINE: dict[type, Callable[[sp.Expr, sp.Expr], sp.Expr]] = {
+    ast.Add: lambda a, b: a + b,
+    ast.Sub: lambda a, b: a - b,
+    ast.Mult: lambda a, b: a * b,
+    ast.Div: lambda a, b: a / b,
+}
 
 
 def parse_expression(text: str, names: Mapping[str, sp.Symbol]) -> sp.Expr:

@@ -119,8 +119,10 @@ def jacobian_source(d: Derivation, names: Names) -> str | None:
     targets, exprs = [], []
     for i, row in enumerate(rows):
         for j, y in enumerate(ys):
-            # dF_i/dy_j, differentiated term by term (no simplification)
-            derivative = sp.diff(row, y)
+            # dF_i/dy_j, differentiated term by term (no simplification).  A piecewise-smooth F
+            # (Abs, sign) has a derivative with DiracDelta at its kinks; away from them, where every
+            # step of an implicit method's Newton iteration lands almost surely, the delta is 0.
+            derivative = sp.diff(row, y).replace(lambda e: isinstance(e, sp.DiracDelta), lambda e: sp.S.Zero)
             if derivative != 0:
                 targets.append(f"out[{i * 2 * n + j}]")
                 exprs.append(derivative)

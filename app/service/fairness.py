@@ -104,8 +104,8 @@ class Fairness:
         return hmac.new(self._key, session.encode(), hashlib.sha256).hexdigest()[:24]
 
     def verify(self, token: str | None) -> str | None:
-        """The session id of a valid cookie value, else None."""
-        if not token or len(token) > 100 or "." not in token:
+        """The session id of a valid cookie value, else None (a malformed value is simply not a session)."""
+        if not isinstance(token, str) or not token or len(token) > 100 or not token.isascii() or "." not in token:
             return None
         session, _, signature = token.partition(".")
         return session if hmac.compare_digest(self._sign(session), signature) else None

@@ -21,16 +21,19 @@ import asyncio
 import hashlib
 import json
 import logging
+import math
 import os
 import threading
 from collections import OrderedDict
 from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from typing import Any
 
+from app.engine.budget import BudgetExceeded, time_limit
 from app.engine.contract import derivation_json
 from app.engine.derive import Derivation, derive
-from app.engine.errors import DerivationError
-from app.engine.parse import ExpressionError, check_expression, check_name, parse_expression
+from app.engine.errors import DerivationError, excerpt
+from app.engine.parse import MAX_TERMS, ExpressionError, Size, check_name, expression_size, parse_expression
 from app.engine.symbols import SymbolTable
 from app.scenes.types import Parameter, Particle, System
 from app.service import fairness as fair
@@ -42,6 +45,8 @@ MAX_PARAMETERS = 24
 MAX_PARTICLES = 8
 DERIVE_SECONDS = float(os.environ.get("LAGRANGE_DERIVE_SECONDS", "30"))
 SIMULATE_SECONDS = float(os.environ.get("LAGRANGE_SIMULATE_SECONDS", "30"))
+# the engine's own budget for one derivation, inside the worker's hard limit: over it, a refusal naming it
+ENGINE_SECONDS = DERIVE_SECONDS * 2 / 3
 
 log = logging.getLogger(__name__)
 
@@ -62,7 +67,7 @@ class InvalidSystem(DerivationError):
         return {
             "detail": str(self)[:500],
             "part": self.part[:80],
-            "loc": ["body", *(str(x) for x in self.loc)],
+            "loc": ["body", *(excerpt(x) for x in self.loc)],
             "start": self.start,
             "end": self.end,
         }
@@ -72,7 +77,7 @@ def _where(loc: tuple) -> str:
     head, *rest = loc
     text = str(head)
     for x in rest:
-        text += f"[{x}]" if isinstance(x, int) else f".{x}"
+        text += f"[{x}]" if isinstance(x, int) else f".{excerpt(x)}"
     return text
 
 
@@ -156,11 +161,36 @@ def check_system(spec: dict[str, Any]) -> None:
 
     base = set(coordinates) | set(parameters) | {"t"}
     with_velocities = base | {f"{q}_dot" for q in coordinates}
+    sizes = {}
     for loc, text, velocities in expressions(spec):
         try:
-            check_expression(text, with_velocities if velocities else base)
+            sizes[loc] = expression_size(text, with_velocities if velocities else base)
         except ExpressionError as exc:
             raise _refuse(loc, exc) from None
+    _check_kinetic_size(spec, sizes)
+
+
+def _check_kinetic_size(spec: dict[str, Any], sizes: dict[tuple, Size]) -> None:
+    """Refuse particles whose kinetic energy would expand past MAX_TERMS terms (before SymPy builds it).
+
+    A position of n terms of degree d has a velocity of at most n*d terms (each
+    monomial differentiates into one term per factor); its square has at most
+    v(v + 1)/2 terms, times the terms of the mass; T sums those over particles and axes.
+    """
+    total = 0
+    for i, particle in enumerate(spec.get("particles") or ()):
+        mass = sizes[("particles", i, "mass")].terms
+        for j in range(len(particle["position"])):
+            size = sizes[("particles", i, "position", j)]
+            velocity = size.terms * max(1, math.ceil(size.degree))
+            total += mass * velocity * (velocity + 1) // 2
+        if total > MAX_TERMS:
+            loc = ("particles", i, "position")
+            raise InvalidSystem(
+                f"{_where(loc)}: the kinetic energy of these particles would expand into more than {MAX_TERMS} "
+                "terms; use fewer or simpler positions (or give T and U directly)",
+                loc,
+            )
 
 
 def to_system(spec: dict[str, Any]) -> System:
@@ -201,6 +231,26 @@ def build_system(spec: dict[str, Any]) -> System:
     return to_system(spec)
 
 
+@contextmanager
+def engine_budget(spec: dict[str, Any]) -> Iterator[None]:
+    """One time budget for the engine's work on a user system, below the worker's hard limit.
+
+    Every expand, substitution, solve and display step inside shares it (the
+    engine's own smaller budgets nest within it); running out is a refusal that
+    names the limit, not a killed worker.
+    """
+    try:
+        with time_limit(ENGINE_SECONDS):
+            yield
+    except BudgetExceeded:
+        where = form_of(spec)
+        raise InvalidSystem(
+            f"{where}: deriving this system takes longer than the {ENGINE_SECONDS:g} s allowed; "
+            "write it with fewer terms, lower powers or fewer nested functions",
+            (where,),
+        ) from None
+
+
 _derivations: OrderedDict[str, Derivation] = OrderedDict()
 
 
@@ -210,11 +260,14 @@ def _derive(spec: dict[str, Any]) -> Derivation:
     if key in _derivations:
         _derivations.move_to_end(key)
         return _derivations[key]
-    system = build_system(spec)
+    where = form_of(spec)
     try:
-        d = derive(system)
+        with engine_budget(spec):
+            system = build_system(spec)
+            d = derive(system)
     except DerivationError as exc:  # a singular mass matrix and the like: the form's field is at fault
-        where = form_of(spec)
+        if isinstance(exc, InvalidSystem):
+            raise
         raise InvalidSystem(f"{where}: {exc}", (where,), exc.part) from None
     _derivations[key] = d
     while len(_derivations) > 8:
@@ -230,16 +283,23 @@ def _guarded(job: Callable[[], Any]) -> bytes:
         raise
     except DerivationError as exc:
         raise InvalidSystem(str(exc), (), exc.part) from None
-    except Exception as exc:  # a SymPy or numerics failure on an odd but allowed input
+    except Exception:  # a SymPy or numerics failure on an odd but allowed input
         log.exception("user system failed")
+        # the details are for the log; the student gets a sentence without the engine's internal names
         raise InvalidSystem(
-            f"the engine could not handle this system ({type(exc).__name__}: {str(exc)[:200]})"
+            "the engine could not handle this system (a limit of the engine, not a mistake in what you wrote); "
+            "try writing it another way, for example without Abs or with simpler expressions"
         ) from None
 
 
 def derive_job(spec: dict[str, Any]) -> bytes:
     """Worker job: the derivation JSON of a user system (as for a scene)."""
-    return _guarded(lambda: derivation_json(_derive(spec)))
+
+    def run() -> dict[str, Any]:
+        with engine_budget(spec):
+            return derivation_json(_derive(spec))
+
+    return _guarded(run)
 
 
 def simulate_job(spec: dict[str, Any], request: Any) -> bytes:

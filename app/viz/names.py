@@ -17,11 +17,11 @@ GREEK = {
 }  # fmt: skip
 SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 DOT, DDOT = "\u0307", "\u0308"
-_TRAILING_DIGITS = re.compile(r"^([A-Za-z]+?)(\d+)$")
+_TRAILING_DIGITS = re.compile(r"([A-Za-z]+?)(\d+)")
 
 
 def _base(name: str) -> str:
-    match = _TRAILING_DIGITS.match(name)
+    match = _TRAILING_DIGITS.fullmatch(name)
     stem, digits = (match.group(1), match.group(2)) if match else (name, "")
     return GREEK.get(stem, stem) + digits.translate(SUBSCRIPT)
 

@@ -14,12 +14,12 @@ from fastapi import APIRouter, Request
 from fastapi.responses import Response
 
 from app.service.checking import service
-from app.web.api_user import CappedBodyRoute, _answer
+from app.web.api_user import _answer
 from app.web.schemas import ErrorResponse
 from app.web.schemas_check import CheckRequest, CheckResponse, Exercises, SystemCheckRequest
 from app.web.schemas_user import BusyError, SystemSpec, UserError
 
-router = APIRouter(prefix="/api", tags=["practice"], route_class=CappedBodyRoute)
+router = APIRouter(prefix="/api", tags=["practice"])
 
 ERRORS = {
     400: {"model": ErrorResponse, "description": "The body could not be read (not JSON, or not UTF-8)."},

@@ -14,6 +14,7 @@ from fastapi.responses import JSONResponse
 
 from app.numerics.errors import SimulationError
 from app.service import simulation, work_precision
+from app.web.limits import MAX_BODY_BYTES
 from app.web.responses import FastJSONResponse
 from app.web.schemas import ErrorResponse
 from app.web.schemas_simulate import SimulateRequest, SimulateResponse, WorkPrecision
@@ -21,7 +22,7 @@ from app.web.schemas_simulate import SimulateRequest, SimulateResponse, WorkPrec
 router = APIRouter(prefix="/api", tags=["simulation"])
 
 ERRORS = {
-    400: {"model": ErrorResponse, "description": "The body is not JSON (or not UTF-8)."},
+    400: {"model": ErrorResponse, "description": "The body is not JSON (or not UTF-8, or nested too deeply)."},
     404: {"model": ErrorResponse, "description": "No scene has this id."},
     422: {
         "model": ErrorResponse,
@@ -30,6 +31,7 @@ ERRORS = {
     },
     429: {"model": ErrorResponse, "description": "Too many simulations are running at once."},
 }
+BODY_ERRORS = {413: {"model": ErrorResponse, "description": f"The body is larger than {MAX_BODY_BYTES} bytes."}}
 
 
 def _refused(exc: SimulationError) -> JSONResponse:
@@ -46,7 +48,7 @@ def _refused(exc: SimulationError) -> JSONResponse:
         "global error of the coordinates (from a second, more accurate run), drifts and warnings."
     ),
     response_model=None,
-    responses={200: {"model": SimulateResponse}, **ERRORS},
+    responses={200: {"model": SimulateResponse}, **ERRORS, **BODY_ERRORS},
 )
 def simulate_scene(scene_id: str, request: SimulateRequest) -> Any:
     try:

@@ -4,7 +4,7 @@ The routes are ``async`` but never run SymPy: they check the request's shape
 and names in pure Python, look up a cache, take a fair-share ticket and await
 a job in the worker pool (app/service/worker.py), which parses, derives and
 simulates under a hard time limit and a memory cap.  Bodies are capped in
-size before they are read.
+size before they are read (app/web/limits.py, for every route).
 """
 
 from __future__ import annotations
@@ -13,9 +13,8 @@ import json
 from collections.abc import Callable, Coroutine
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, HTTPException, Request
+from fastapi import APIRouter, Body, Request
 from fastapi.responses import JSONResponse, Response
-from fastapi.routing import APIRoute
 
 from app.service import user_systems
 from app.service.exporting import Exported
@@ -24,7 +23,8 @@ from app.service.user_systems import InvalidSystem
 from app.service.worker import JobFailed
 from app.web.api_scenes import EXPORT_CONTENT, download
 from app.web.examples_user import DERIVE_EXAMPLES, DERIVE_RESPONSE, ERROR_EXAMPLES, SIMULATE_EXAMPLES, SIMULATE_RESPONSE
-from app.web.schemas import ErrorResponse
+from app.web.limits import MAX_BODY_BYTES
+from app.web.schemas import SESSION_COOKIE, ErrorResponse
 from app.web.schemas_export import ExportRequest
 from app.web.schemas_simulate import SimulateResponse
 from app.web.schemas_user import (
@@ -36,45 +36,7 @@ from app.web.schemas_user import (
     simulate_request,
 )
 
-MAX_BODY_BYTES = 32 * 1024
-
-
-def too_large(size: int | None) -> HTTPException:
-    told = f"{size} bytes" if size is not None else "larger than that"
-    return HTTPException(413, f"the request body is {told}; at most {MAX_BODY_BYTES} bytes are allowed")
-
-
-class CappedBodyRoute(APIRoute):
-    """A route that refuses bodies over MAX_BODY_BYTES before reading them whole (413)."""
-
-    def get_route_handler(self) -> Callable[[Request], Coroutine[Any, Any, Response]]:
-        handler = super().get_route_handler()
-
-        async def capped(request: Request) -> Response:
-            declared = request.headers.get("content-length")
-            if declared is not None:
-                if not declared.isdigit():
-                    raise HTTPException(400, "the Content-Length header is not a number")
-                if int(declared) > MAX_BODY_BYTES:
-                    raise too_large(int(declared))
-            receive, seen = request.receive, 0
-
-            async def limited() -> dict[str, Any]:
-                # a chunked body declares no length: count it as it streams in
-                nonlocal seen
-                message = await receive()
-                if message["type"] == "http.request":
-                    seen += len(message.get("body", b""))
-                    if seen > MAX_BODY_BYTES:
-                        raise too_large(None)
-                return message
-
-            return await handler(Request(request.scope, limited))
-
-        return capped
-
-
-router = APIRouter(prefix="/api", tags=["your systems"], route_class=CappedBodyRoute)
+router = APIRouter(prefix="/api", tags=["your systems"])
 
 BUSY_HEADERS = {"Retry-After": {"description": "Seconds to wait before retrying.", "schema": {"type": "integer"}}}
 
@@ -82,7 +44,10 @@ BUSY_HEADERS = {"Retry-After": {"description": "Seconds to wait before retrying.
 def _errors(*statuses: int) -> dict[int | str, dict[str, Any]]:
     """The documented error responses, each with its model and examples."""
     described = {
-        400: (ErrorResponse, "The body could not be read (not UTF-8, or a number JSON cannot hold)."),
+        400: (
+            ErrorResponse,
+            "The body could not be read (not UTF-8, a number JSON cannot hold, or nested too deeply).",
+        ),
         413: (ErrorResponse, f"The body is larger than {MAX_BODY_BYTES} bytes."),
         422: (
             UserError,
@@ -163,6 +128,7 @@ async def _answer(
         "(never evaluated as code); the derivation runs in a worker process with a time and memory limit."
     ),
     response_model=DerivationDocument,
+    openapi_extra={"parameters": [SESSION_COOKIE]},
     responses={
         200: {"content": {"application/json": {"example": DERIVE_RESPONSE}}},
         **_errors(400, 413, 422, 429, 503),
@@ -185,6 +151,7 @@ async def derive_system(
         "E, h, conserved quantities, and stats with the method, an error estimate, drifts and warnings."
     ),
     response_model=SimulateResponse,
+    openapi_extra={"parameters": [SESSION_COOKIE]},
     responses={
         200: {"content": {"application/json": {"example": SIMULATE_RESPONSE}}},
         **_errors(400, 413, 422, 429, 503),

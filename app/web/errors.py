@@ -2,7 +2,8 @@
 
 FastAPI's default validation handler echoes the offending input back; a huge
 or non-finite input would then be repeated or break JSON encoding.  This one
-reports where and what, and never the input itself.
+reports where and what, and never the input itself; a name in a location (a
+dictionary key) is cut to a short excerpt.
 """
 
 from __future__ import annotations
@@ -11,17 +12,21 @@ from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
 
-from app.engine.errors import DerivationError
+from app.engine.errors import DerivationError, excerpt
 from app.service.derivations import UnknownScene
 
 
 def _location(loc: tuple | list) -> str:
-    return ".".join(str(part) for part in loc if part != "body") or "body"
+    return ".".join(excerpt(part) for part in loc if part != "body") or "body"
 
 
 async def validation_error(request: Request, exc: RequestValidationError) -> JSONResponse:
     errors = [
-        {"loc": [str(p) for p in e.get("loc", ())], "msg": str(e.get("msg", ""))[:300], "type": e.get("type", "")}
+        {
+            "loc": [excerpt(p) for p in e.get("loc", ())],
+            "msg": excerpt(e.get("msg", ""), 300),
+            "type": e.get("type", ""),
+        }
         for e in exc.errors()[:20]
     ]
     first = errors[0] if errors else {"loc": [], "msg": "invalid request"}

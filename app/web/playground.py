@@ -22,6 +22,7 @@ from pydantic import ValidationError
 from starlette.concurrency import run_in_threadpool
 from starlette.datastructures import QueryParams
 
+from app.engine.errors import excerpt
 from app.engine.parse import FUNCTIONS
 from app.service import user_systems
 from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
@@ -30,11 +31,13 @@ from app.service.worker import JobFailed
 from app.viz.exprtree import TreeError, tree
 from app.viz.page_model import angles, scene_page
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
+from app.web.limits import TooDeep, check_json_depth
 from app.web.pages import simulation_methods
+from app.web.schemas import SESSION_COOKIE
 from app.web.schemas_user import SystemSpec
 from app.web.templating import templates
 
-router = APIRouter(tags=["pages"], include_in_schema=False)
+router = APIRouter(tags=["pages"])
 
 MAX_QUERY = 16_000  # characters of query string: far more than any system the form can hold
 FORMS = ("lagrangian", "energies", "particles")
@@ -94,9 +97,13 @@ def read_form(query: QueryParams) -> Form:
     """The form as typed, from the query string (``system`` JSON takes precedence)."""
     if query.get("system"):
         try:
+            # the nesting is checked by a scan before json.loads, which recurses once per level
+            check_json_depth(query["system"])
             return form_of(json.loads(query["system"]))
-        except (ValueError, TypeError, AttributeError):
-            raise FormError("the system in the address is not valid JSON", "f-coordinates") from None
+        except TooDeep as exc:
+            raise FormError(f"the system in the address is not a system: {exc}", "f-coordinates") from None
+        except (ValueError, TypeError, AttributeError, RecursionError):
+            raise FormError("the system in the address is not valid JSON in the API's shape", "f-coordinates") from None
     return Form(
         coordinates=query.get("q", "").strip(),
         parameters=_rows(query, {"name": "pn", "value": "pv", "unit": "pu", "min": "plo", "max": "phi"}),
@@ -185,7 +192,7 @@ def spec_of(form: Form) -> dict[str, Any]:
         first = exc.errors()[0]
         # a parameter is a name or an object: drop the union member from the location
         loc = tuple(x for x in first["loc"] if x not in ("ParameterSpec", "str"))
-        where = ".".join(str(x) for x in loc)
+        where = ".".join(excerpt(x) for x in loc)
         raise _located(form, loc, f"{where}: {first['msg']}") from None
 
 
@@ -314,7 +321,51 @@ def query_of(form: Form) -> dict[str, Any]:
     return {k: v for k, v in query.items() if (any(v) if isinstance(v, list) else v)}
 
 
-@router.get("/playground", response_class=HTMLResponse)
+def _query_parameter(name: str, description: str, repeated: bool = False) -> dict[str, Any]:
+    schema: dict[str, Any] = {"type": "array", "items": {"type": "string"}} if repeated else {"type": "string"}
+    return {"name": name, "in": "query", "required": False, "description": description, "schema": schema}
+
+
+# The form's fields as the query string carries them (read by read_form); documented so that
+# generated requests (schemathesis) reach every one of them.
+QUERY_PARAMETERS = [
+    _query_parameter("q", "Generalized coordinates, separated by commas or spaces."),
+    _query_parameter("form", f"Which form the mechanics is given in: one of {', '.join(FORMS)}."),
+    _query_parameter("L", "The Lagrangian (form=lagrangian)."),
+    _query_parameter("T", "The kinetic energy (form=energies)."),
+    _query_parameter("U", "The potential energy (form=energies or particles)."),
+    *(
+        _query_parameter(key, f"Parameters: {what}, one per parameter.", repeated=True)
+        for key, what in (("pn", "names"), ("pv", "values"), ("pu", "units"), ("plo", "lowest"), ("phi", "highest"))
+    ),
+    _query_parameter("m", "Particles: masses, one per particle.", repeated=True),
+    *(_query_parameter(a, f"Particles: {a} positions, one per particle.", repeated=True) for a in AXES),
+    _query_parameter("fq", "Generalized forces: the coordinate each acts on.", repeated=True),
+    _query_parameter("fQ", "Generalized forces: the expressions, in the order of fq.", repeated=True),
+    _query_parameter("nn", "Coordinates that are distances (never negative)."),
+    _query_parameter("system", "The whole system as JSON in the shape of POST /api/derive (takes precedence)."),
+    _query_parameter("new", "Present (any value) for an empty form."),
+    SESSION_COOKIE,
+]
+HTML = {"text/html": {"schema": {"type": "string"}}}
+
+
+@router.get(
+    "/playground",
+    response_class=HTMLResponse,
+    summary="Type a system and see its derivation",
+    description=(
+        f"The playground page. The system comes from the query string (at most {MAX_QUERY} characters); a "
+        "refusal is shown on the page next to the field it concerns, with status 422."
+    ),
+    openapi_extra={"parameters": QUERY_PARAMETERS},
+    responses={
+        200: {"description": "The page, with the derivation when a system was given.", "content": HTML},
+        422: {"description": "The page, with the refusal shown next to the offending field.", "content": HTML},
+        429: {"description": "You already have a derivation running; the page says so.", "content": HTML},
+        503: {"description": "The server is busy; the page says so.", "content": HTML},
+    },
+)
 async def playground(request: Request) -> Response:
     service = user_systems.service
     address = request.client.host if request.client else "unknown"

@@ -2,7 +2,21 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from pydantic import BaseModel, ConfigDict
+
+from app.service.fairness import COOKIE
+
+# The session cookie the server issues for fair sharing; any other value (tampered, expired,
+# not ASCII) is ignored and a fresh session is issued with the answer.
+SESSION_COOKIE: dict[str, Any] = {
+    "name": COOKIE,
+    "in": "cookie",
+    "required": False,
+    "description": "Your session (issued by the server; a missing or malformed one gets a fresh session).",
+    "schema": {"type": "string"},
+}
 
 
 class ErrorResponse(BaseModel):

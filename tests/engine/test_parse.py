@@ -89,7 +89,7 @@ REFUSALS = [
     ("x +", "syntax error", "x +"),
     ("", "empty", ""),
     ("(x+y+m+g)**64", "expand into more than", "(x+y+m+g)**64"),
-    ("((x+1)**64)**64", "expand into more than", "((x+1)**64)**64"),
+    ("((x+1)**64)**64", "grow too large", "((x+1)**64)**64"),
     ("-" * 60 + "x", f"deeper than {MAX_DEPTH}", "-"),
     ("+".join(["x"] * (MAX_NODES + 1)), "parts", ""),
     ("x" * (MAX_LENGTH + 1), "characters long", ""),

@@ -1,0 +1,121 @@
+"""Request bodies bounded before anything reads them: one ASGI middleware for every POST route.
+
+A body larger than ``MAX_BODY_BYTES`` is refused with a 413 as soon as its
+``Content-Length`` says so (or, for a chunked body, as soon as the count
+passes the cap), before the route or the JSON parser sees a byte of it.  A
+JSON text nested deeper than ``MAX_JSON_DEPTH`` is refused with a 400 before
+``json.loads`` runs (Python's parser recurses once per level).
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+from starlette.types import ASGIApp, Message, Receive, Scope, Send
+
+MAX_BODY_BYTES = 32 * 1024
+MAX_JSON_DEPTH = 32  # the deepest request the API documents is 5 levels deep
+_BODY_METHODS = frozenset({"POST", "PUT", "PATCH"})
+
+
+class TooDeep(ValueError):
+    """A JSON text nested deeper than allowed."""
+
+
+def check_json_depth(text: str | bytes, limit: int = MAX_JSON_DEPTH) -> None:
+    """Refuse a JSON text whose arrays and objects nest deeper than ``limit``, by scanning (not parsing) it.
+
+    Brackets inside strings do not count; raises TooDeep as soon as ``limit`` is passed.
+    """
+    data = text.encode("utf-8", "surrogatepass") if isinstance(text, str) else text
+    if data.count(b"[") + data.count(b"{") <= limit:  # the common case, decided at C speed
+        return
+    depth = 0
+    in_string = escaped = False
+    for byte in data:
+        if in_string:
+            if escaped:
+                escaped = False
+            elif byte == 0x5C:  # backslash
+                escaped = True
+            elif byte == 0x22:  # closing quote
+                in_string = False
+        elif byte == 0x22:
+            in_string = True
+        elif byte in (0x5B, 0x7B):  # [ {
+            depth += 1
+            if depth > limit:
+                raise TooDeep(f"the JSON is nested deeper than {limit} levels")
+        elif byte in (0x5D, 0x7D):  # ] }
+            depth -= 1
+
+
+def too_large_message(size: int | None) -> str:
+    told = f"{size} bytes" if size is not None else "larger than that"
+    return f"the request body is {told}; at most {MAX_BODY_BYTES} bytes are allowed"
+
+
+async def _refuse(send: Send, status: int, detail: str) -> None:
+    body = json.dumps({"detail": detail}).encode()
+    headers = [(b"content-type", b"application/json"), (b"content-length", str(len(body)).encode())]
+    if status == 413:
+        headers.append((b"connection", b"close"))  # the unread body is not worth reading
+    await send({"type": "http.response.start", "status": status, "headers": headers})
+    await send({"type": "http.response.body", "body": body})
+
+
+class BodyLimit:
+    """Cap every request body (413) and the nesting of JSON bodies (400), then replay the body to the app."""
+
+    def __init__(self, app: ASGIApp, max_bytes: int = MAX_BODY_BYTES, max_depth: int = MAX_JSON_DEPTH):
+        self.app = app
+        self.max_bytes = max_bytes
+        self.max_depth = max_depth
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http" or scope["method"] not in _BODY_METHODS:
+            await self.app(scope, receive, send)
+            return
+        declared = [v for k, v in scope["headers"] if k == b"content-length"]
+        if declared:
+            if len(declared) > 1 or not declared[0].isdigit():
+                await _refuse(send, 400, "the Content-Length header is not a number")
+                return
+            if int(declared[0]) > self.max_bytes:
+                await _refuse(send, 413, too_large_message(int(declared[0])))
+                return
+        chunks: list[bytes] = []
+        seen = 0
+        while True:
+            message = await receive()
+            if message["type"] != "http.request":  # the client went away
+                return
+            chunk = message.get("body", b"")
+            seen += len(chunk)
+            if seen > self.max_bytes:  # a chunked body declares no length: count it as it streams in
+                await _refuse(send, 413, too_large_message(None))
+                return
+            chunks.append(chunk)
+            if not message.get("more_body", False):
+                break
+        body = b"".join(chunks)
+        try:
+            check_json_depth(body, self.max_depth)
+        except TooDeep as exc:
+            await _refuse(send, 400, f"{exc}; requests here are at most a few levels deep")
+            return
+        replayed = False
+
+        async def replay() -> Message:
+            nonlocal replayed
+            if not replayed:
+                replayed = True
+                return {"type": "http.request", "body": body, "more_body": False}
+            return await receive()
+
+        await self.app(scope, replay, send)
+
+
+def install(app: Any) -> None:
+    app.add_middleware(BodyLimit)
