@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from app.engine.budget import BudgetExceeded, pythagoras, time_limit
+from app.engine.kinks import away_from_kinks
 
 CONSTANT_DRAWS, POSITION_DRAWS, RATE_DRAWS = 2, 2, 3
 RTOL = 1e-9
@@ -80,6 +81,7 @@ def values(expr: sp.Expr, groups: Groups) -> Values:
 
 
 def _numeric(expr: sp.Expr, symbols: Sequence[sp.Symbol]) -> Callable[..., float]:
+    expr = away_from_kinks(expr)
     if not expr.free_symbols:
         constant = complex(sp.N(expr))
         return lambda *_: constant.real if abs(constant.imag) < 1e-12 else math.nan

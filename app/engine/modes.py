@@ -38,6 +38,7 @@ import sympy as sp
 
 from app.engine.budget import within_budget
 from app.engine.derive import Derivation, positive_names
+from app.engine.kinks import away_from_kinks
 
 SOLVE_SECONDS = 1.5  # symbolic equilibria
 EIGEN_SECONDS = 1.0  # symbolic omega^2
@@ -84,6 +85,7 @@ class NormalModes:
     singular: tuple[dict[str, float], ...]  # equilibria where M is singular (a coordinate singularity)
     damped: bool  # velocity terms (damping, gyroscopic) present at some equilibrium
     note: str = ""  # why there is nothing, when there is nothing
+    kinks: tuple[dict[str, float], ...] = ()  # equilibria at a kink of a piecewise-smooth U (|x|): no linearization
 
 
 def defaults(d: Derivation) -> dict[sp.Symbol, float]:
@@ -96,6 +98,8 @@ def _numeric(expr: sp.Expr, values: Mapping[sp.Symbol, float]) -> complex:
 
 def _function(exprs: list[sp.Expr], args: list[sp.Symbol]) -> Callable[..., np.ndarray]:
     # dummify: user names never reach the generated source
+    # (a piecewise-smooth U, with Abs, has Dirac deltas in its Hessian: 0 off the kinks)
+    exprs = [[away_from_kinks(x) for x in row] if isinstance(row, list) else away_from_kinks(row) for row in exprs]
     f = sp.lambdify(args, exprs, modules=["numpy"], dummify=True)
     return lambda *x: np.asarray(f(*x), dtype=float)
 
@@ -357,6 +361,7 @@ def normal_modes(d: Derivation, momenta: Mapping[str, float] | None = None) -> N
 
     equilibria: list[Equilibrium] = []
     singular: list[dict[str, float]] = []
+    kinks: list[dict[str, float]] = []
     damped = False
     for exact, x in points[:MAX_EQUILIBRIA]:
         at = {s: (exact[s] if exact is not None else sp.Float(float(v))) for s, v in zip(q, x, strict=True)}
@@ -366,6 +371,10 @@ def normal_modes(d: Derivation, momenta: Mapping[str, float] | None = None) -> N
             # found numerically at the defaults: M and K as numbers there
             M0, K0 = M.xreplace(at).xreplace(values).evalf(), J.xreplace(at).xreplace(values).evalf()
         position = {name: float(v) for name, v in zip(table.names, x, strict=True)}
+        if K0.has(sp.DiracDelta) or M0.has(sp.DiracDelta):
+            # U = |x| at x = 0: the force jumps there, so no quadratic approximation (and no omega) exists
+            kinks.append(position)
+            continue
         modes = _modes(M0, K0, values, exact is not None and len(q) <= MAX_SYMBOLIC_SIZE, _positive(d))
         if modes is None:
             singular.append(position)
@@ -383,8 +392,10 @@ def normal_modes(d: Derivation, momenta: Mapping[str, float] | None = None) -> N
             )
         )
     equilibria.extend(_relative(d, momenta or {}))
-    note = "" if equilibria or singular else "No configuration makes every generalized force vanish: no equilibrium."
-    return NormalModes(V, tuple(g_exprs), solved, tuple(equilibria), tuple(singular), damped, note)
+    note = (
+        "" if equilibria or singular or kinks else "No configuration makes every generalized force vanish: no equilibrium."
+    )
+    return NormalModes(V, tuple(g_exprs), solved, tuple(equilibria), tuple(singular), damped, note, tuple(kinks))
 
 
 def _relative(d: Derivation, momenta: Mapping[str, float]) -> list[Equilibrium]:

@@ -129,6 +129,10 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         r",\; ".join(f"{pr.tex(sym[n])} = {_number(v)}" for n, v in point.items()) + r"\quad (M \text{ singular})"
         for point in nm.singular
     ]
+    rows += [
+        r",\; ".join(f"{pr.tex(sym[n])} = {_number(v)}" for n, v in point.items()) + r"\quad (\text{at a kink of } V)"
+        for point in nm.kinks
+    ]
     why = "At rest (q̇ = 0) the state stays put where every generalized force vanishes. "
     if not plain:
         why += "V = U − T₀ includes the velocity-free part T₀ of the kinetic energy (a moving constraint's share). "
@@ -144,6 +148,11 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         why += (
             f" At {len(nm.singular)} of them the mass matrix is singular (the coordinates break down there, like "
             "polar coordinates at the origin), so no modes are computed at those points."
+        )
+    if nm.kinks:
+        why += (
+            f" At {len(nm.kinks)} of them V has a kink (an absolute value turns there), so the force jumps and no "
+            "quadratic approximation, hence no frequency of small oscillations, exists at those points."
         )
     steps = [_step("Equilibria", rows, list(nm.condition), why)]
     for e in nm.equilibria:

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from app.engine.derive import Derivation
+from app.engine.kinks import away_from_kinks
 from app.numerics.codegen import (
     ArrayPrinter,
     Block,
@@ -122,7 +123,7 @@ def jacobian_source(d: Derivation, names: Names) -> str | None:
             # dF_i/dy_j, differentiated term by term (no simplification).  A piecewise-smooth F
             # (Abs, sign) has a derivative with DiracDelta at its kinks; away from them, where every
             # step of an implicit method's Newton iteration lands almost surely, the delta is 0.
-            derivative = sp.diff(row, y).replace(lambda e: isinstance(e, sp.DiracDelta), lambda e: sp.S.Zero)
+            derivative = away_from_kinks(sp.diff(row, y))
             if derivative != 0:
                 targets.append(f"out[{i * 2 * n + j}]")
                 exprs.append(derivative)

@@ -24,7 +24,7 @@ def test_every_scene_exports_in_every_format(client, scene_id):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", ["double-pendulum", "forced-spring", "hostile"])
+@pytest.mark.parametrize("name", ["user-double-pendulum", "forced-spring", "hostile"])
 def test_user_systems_export_through_the_worker_pool_as_they_do_in_process(client, name):
     body, initial, t_end = USER_SYSTEMS[name]
     for fmt, (media_type, _) in FORMATS.items():

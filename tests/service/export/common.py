@@ -37,7 +37,8 @@ HOSTILE_TEXT = ("passwd", "script>", "javascript", "write18", "import os", "os.s
 
 # name -> (request body of POST /api/derive, initial state, t_end)
 USER_SYSTEMS: dict[str, tuple[dict[str, Any], dict[str, float], float]] = {
-    "double-pendulum": (DOUBLE_PENDULUM, {"theta1": 1.0, "theta2": 0.0}, 10.0),
+    # a user system, not the scene of the same name: the key differs so the two never mix
+    "user-double-pendulum": (DOUBLE_PENDULUM, {"theta1": 1.0, "theta2": 0.0}, 10.0),
     "forced-spring": (FORCED_SPRING, {"x": 1.0}, 5.0),
     "hostile": (HOSTILE, {"exec": 0.5, "sp_dot": 0.3}, 3.0),
 }
