@@ -33,9 +33,11 @@ const MASS_COLORS = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a"];
 const TRAIL_SECONDS = 1.5;
 const MAX_TRAIL = 90;
 const GRAB_RADIUS = 26; // CSS pixels around a body that start a drag
-// the velocity arrow: TAU seconds of motion at the initial velocity, drawn beyond a fixed
-// offset from the body's centre so that at rest the handle sits beside the body, not on it
+// the velocity arrow: TAU seconds of motion at the initial velocity (less where the fastest
+// start the controls allow would leave the view), drawn beyond a fixed offset from the
+// body's centre so that at rest the handle sits beside the body, not on it
 const TAU = 0.25;
+const REACH = 0.4; // the longest arrow, as a fraction of the canvas's shorter side
 const HANDLE_OFFSET = 24; // CSS pixels from the body's centre to the handle at rest
 const HANDLE_RADIUS = 7;
 const HANDLE_GRAB = 16;
@@ -449,6 +451,20 @@ export class Player {
     return (this.ownersOf[k] || []).map((q) => `${q}_dot`).filter((n) => this.controls(n));
   }
 
+  /** Seconds of motion the arrow of body k shows: TAU, or less so the fastest allowed start stays in view. */
+  tau(k) {
+    const s = this.initialState(), rates = Object.keys(s).filter((n) => n.endsWith("_dot"));
+    // the fastest screen speed the rate controls allow: Σ_j |∂(screen)/∂q̇_j| max|q̇_j|
+    let fastest = 0;
+    for (const name of this.rateNames(k)) {
+      const r = this.controls(name);
+      const v = this.velocity(k, Object.fromEntries(rates.map((n) => [n, n === name ? 1 : 0])));
+      fastest += Math.hypot(...v) * Math.max(Math.abs(r.min), Math.abs(r.max));
+    }
+    const reach = REACH * Math.min(this.canvas.width, this.canvas.height);
+    return fastest > 0 ? Math.min(TAU, reach / fastest) : TAU;
+  }
+
   /** The selected body's velocity handle: {k, x, y, bx, by, ux, uy, len} in device pixels, or null. */
   handle() {
     if (!this.run) return null;
@@ -458,11 +474,11 @@ export class Player {
     // the direction the body can move in: the screen image of the first owned rate
     const probe = this.velocity(k, Object.fromEntries(Object.keys(s).filter((n) => n.endsWith("_dot")).map((n) => [n, n === names[0] ? 1 : 0])));
     const [vx, vy] = this.velocity(k);
-    const dpr = window.devicePixelRatio || 1;
-    if (!Number.isFinite(bx + by + vx + vy) || Math.hypot(...probe) * TAU < 1e-3 * dpr) return null;
-    // the arrow: TAU seconds of motion, from HANDLE_OFFSET beyond the centre (the direction of
+    const dpr = window.devicePixelRatio || 1, tau = this.tau(k);
+    if (!Number.isFinite(bx + by + vx + vy) || Math.hypot(...probe) * tau < 1e-3 * dpr) return null;
+    // the arrow: tau seconds of motion, from HANDLE_OFFSET beyond the centre (the direction of
     // motion, or of the first coordinate's motion at rest)
-    const len = Math.hypot(vx, vy) * TAU, u = len > 1e-9 ? [vx, vy] : probe, n = Math.hypot(...u);
+    const len = Math.hypot(vx, vy) * tau, u = len > 1e-9 ? [vx, vy] : probe, n = Math.hypot(...u);
     const ux = u[0] / n, uy = u[1] / n, off = HANDLE_OFFSET * dpr;
     return { k, bx, by, ux, uy, len, x: bx + ux * (off + len), y: by + uy * (off + len) };
   }
@@ -500,10 +516,10 @@ export class Player {
     // (the pointer within the offset of the body's centre asks for rest)
     const dpr = window.devicePixelRatio || 1, dx = x - bx, dy = y - by, r = Math.hypot(dx, dy);
     const keep = r > 0 ? Math.max(0, r - HANDLE_OFFSET * dpr) / r : 0;
-    const tx = bx + dx * keep, ty = by + dy * keep;
+    const tx = bx + dx * keep, ty = by + dy * keep, tau = this.tau(k);
     return this.fitTo(names, tx, ty, (values) => {
       const [vx, vy] = this.velocity(k, values);
-      return [bx + TAU * vx, by + TAU * vy];
+      return [bx + tau * vx, by + tau * vy];
     });
   }
 
