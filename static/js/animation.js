@@ -18,8 +18,14 @@
  * the initial coordinates that put it nearest the pointer, found by Gauss–Newton steps on
  * the body's on-screen position as a function of the coordinates it owns.
  *
+ * At t = 0 the selected body also carries its initial velocity: an arrow ending in a round
+ * handle.  Dragging the handle (or Shift with the arrow keys) sets the initial rates q_dot of
+ * the coordinates the body owns, by least squares on the handle's screen position, clamped to
+ * the controls' ranges.  2-D views only, and only where those rate controls exist.
+ *
  * For tests and tools: root.dataset.frame is the sample shown; canvas.dataset.bodies lists
- * each body's label and position in CSS pixels of the canvas.
+ * each body's label and position in CSS pixels of the canvas; canvas.dataset.handle is the
+ * velocity handle's position in CSS pixels ("" when none is shown).
  */
 import { compile, symbolsOf } from "./expr.js";
 
@@ -27,6 +33,14 @@ const MASS_COLORS = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a"];
 const TRAIL_SECONDS = 1.5;
 const MAX_TRAIL = 90;
 const GRAB_RADIUS = 26; // CSS pixels around a body that start a drag
+// the velocity arrow: TAU seconds of motion at the initial velocity (less where the fastest
+// start the controls allow would leave the view), drawn beyond a fixed offset from the
+// body's centre so that at rest the handle sits beside the body, not on it
+const TAU = 0.25;
+const REACH = 0.4; // the longest arrow, as a fraction of the canvas's shorter side
+const HANDLE_OFFSET = 24; // CSS pixels from the body's centre to the handle at rest
+const HANDLE_RADIUS = 7;
+const HANDLE_GRAB = 16;
 
 function mix(hex, amount) {
   // blend a colour toward white: amount 0 -> white, 1 -> the colour (a fading trail without alpha)
@@ -249,6 +263,9 @@ export class Player {
       bodies.push({ label: this.spec.points[p].label, x: Math.round(x / dpr), y: Math.round(y / dpr) });
     });
     this.canvas.dataset.bodies = JSON.stringify(bodies);
+    const handle = i === 0 ? this.handle() : null;
+    if (handle) this.drawHandle(ctx, handle, dpr);
+    this.canvas.dataset.handle = handle ? JSON.stringify({ x: Math.round(handle.x / dpr), y: Math.round(handle.y / dpr) }) : "";
     this.frames++;
   }
 
@@ -351,25 +368,30 @@ export class Player {
     return best;
   }
 
-  /** The body's screen position with the initial coordinates `values` (others as they are). */
-  placed(k, values) {
-    const env = { ...this.run.envAt(0), ...values, t: 0 };
+  /** The body's screen position with the initial coordinates `values` (others as they are), at time t. */
+  placed(k, values, t = 0) {
+    const env = { ...this.run.envAt(0), ...values, t };
     return this.screenOf(this.points[this.masses[k]].map((f) => f(env)));
   }
 
-  /** Initial coordinates of body k that bring it nearest the screen point (x, y): Gauss–Newton, clamped to the controls' ranges. */
+  /** Initial coordinates of body k that bring it nearest the screen point (x, y). */
   solve(k, x, y) {
     const names = (this.ownersOf[k] || []).filter((q) => this.controls && this.controls(q));
+    return this.fitTo(names, x, y, (values) => this.placed(k, values));
+  }
+
+  /** Values of the controls `names` that bring the screen point at(values) nearest (x, y): Gauss–Newton, clamped to the controls' ranges. */
+  fitTo(names, x, y, at) {
     if (!names.length) return null;
     const ranges = names.map((q) => this.controls(q));
     const values = Object.fromEntries(names.map((q, j) => [q, ranges[j].value]));
     for (let iter = 0; iter < 12; iter++) {
-      const [px, py] = this.placed(k, values);
+      const [px, py] = at(values);
       const rx = x - px, ry = y - py;
       // columns of the Jacobian d(screen)/d(q) by central differences
       const J = names.map((q, j) => {
         const h = 1e-4 * Math.max(1, Math.abs(values[q]), ranges[j].max - ranges[j].min);
-        const a = this.placed(k, { ...values, [q]: values[q] + h }), b = this.placed(k, { ...values, [q]: values[q] - h });
+        const a = at({ ...values, [q]: values[q] + h }), b = at({ ...values, [q]: values[q] - h });
         return [(a[0] - b[0]) / (2 * h), (a[1] - b[1]) / (2 * h)];
       });
       // normal equations (J^T J + mu I) d = J^T r, for one or two unknowns
@@ -396,17 +418,127 @@ export class Player {
     return values;
   }
 
+  // ---- the initial velocity ------------------------------------------------------------
+
+  /** The initial state as the controls hold it now (the run may lag a frame behind a drag). */
+  initialState(values = {}) {
+    const state = {};
+    for (const q of this.run.data.coordinates) {
+      for (const name of [q, `${q}_dot`]) {
+        const r = this.controls && this.controls(name);
+        state[name] = r ? r.value : this.run.envAt(0)[name];
+      }
+    }
+    return { ...state, ...values };
+  }
+
+  /** Screen velocity of body k (device pixels per second) with the initial state overridden by `values`. */
+  velocity(k, values = {}) {
+    const s = this.initialState(values), h = 1e-5, ahead = {}, behind = {};
+    // v = Σ ∂r/∂q_k q̇_k + ∂r/∂t: the derivative of the screen position along (q̇, 1),
+    // a central difference of r(q ± h q̇, t ± h)
+    for (const q of this.run.data.coordinates) {
+      ahead[q] = s[q] + h * s[`${q}_dot`];
+      behind[q] = s[q] - h * s[`${q}_dot`];
+    }
+    const a = this.placed(k, { ...s, ...ahead }, h), b = this.placed(k, { ...s, ...behind }, -h);
+    return [(a[0] - b[0]) / (2 * h), (a[1] - b[1]) / (2 * h)];
+  }
+
+  /** The rate controls body k can set: those of the coordinates it owns. */
+  rateNames(k) {
+    if (this.dim === 3 || !this.controls || !this.onDrag) return [];
+    return (this.ownersOf[k] || []).map((q) => `${q}_dot`).filter((n) => this.controls(n));
+  }
+
+  /** Seconds of motion the arrow of body k shows: TAU, or less so the fastest allowed start stays in view. */
+  tau(k) {
+    const s = this.initialState(), rates = Object.keys(s).filter((n) => n.endsWith("_dot"));
+    // the fastest screen speed the rate controls allow: Σ_j |∂(screen)/∂q̇_j| max|q̇_j|
+    let fastest = 0;
+    for (const name of this.rateNames(k)) {
+      const r = this.controls(name);
+      const v = this.velocity(k, Object.fromEntries(rates.map((n) => [n, n === name ? 1 : 0])));
+      fastest += Math.hypot(...v) * Math.max(Math.abs(r.min), Math.abs(r.max));
+    }
+    const reach = REACH * Math.min(this.canvas.width, this.canvas.height);
+    return fastest > 0 ? Math.min(TAU, reach / fastest) : TAU;
+  }
+
+  /** The selected body's velocity handle: {k, x, y, bx, by, ux, uy, len} in device pixels, or null. */
+  handle() {
+    if (!this.run) return null;
+    const k = this.selected, names = this.rateNames(k);
+    if (!names.length) return null;
+    const s = this.initialState(), [bx, by] = this.placed(k, s);
+    // the direction the body can move in: the screen image of the first owned rate
+    const probe = this.velocity(k, Object.fromEntries(Object.keys(s).filter((n) => n.endsWith("_dot")).map((n) => [n, n === names[0] ? 1 : 0])));
+    const [vx, vy] = this.velocity(k);
+    const dpr = window.devicePixelRatio || 1, tau = this.tau(k);
+    if (!Number.isFinite(bx + by + vx + vy) || Math.hypot(...probe) * tau < 1e-3 * dpr) return null;
+    // the arrow: tau seconds of motion, from HANDLE_OFFSET beyond the centre (the direction of
+    // motion, or of the first coordinate's motion at rest)
+    const len = Math.hypot(vx, vy) * tau, u = len > 1e-9 ? [vx, vy] : probe, n = Math.hypot(...u);
+    const ux = u[0] / n, uy = u[1] / n, off = HANDLE_OFFSET * dpr;
+    return { k, bx, by, ux, uy, len, x: bx + ux * (off + len), y: by + uy * (off + len) };
+  }
+
+  drawHandle(ctx, h, dpr) {
+    const color = "#c2185b", r0 = 11 * dpr, x0 = h.bx + h.ux * r0, y0 = h.by + h.uy * r0;
+    ctx.strokeStyle = color; ctx.fillStyle = color; ctx.lineWidth = 2.5 * dpr;
+    ctx.beginPath(); ctx.moveTo(x0, y0); ctx.lineTo(h.x, h.y); ctx.stroke();
+    if (h.len > 2 * dpr) {
+      // an arrowhead just short of the handle, pointing along the velocity
+      const back = (HANDLE_RADIUS + 2) * dpr, tx = h.x - h.ux * back, ty = h.y - h.uy * back, s = 7 * dpr;
+      ctx.beginPath();
+      ctx.moveTo(tx, ty);
+      ctx.lineTo(tx - h.ux * s - h.uy * s * 0.6, ty - h.uy * s + h.ux * s * 0.6);
+      ctx.lineTo(tx - h.ux * s + h.uy * s * 0.6, ty - h.uy * s - h.ux * s * 0.6);
+      ctx.closePath(); ctx.fill();
+    }
+    ctx.fillStyle = "#fff";
+    ctx.beginPath(); ctx.arc(h.x, h.y, HANDLE_RADIUS * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+  }
+
+  /** Is the pointer on the velocity handle (and nearer to it than to the body's centre)? */
+  onHandle(x, y) {
+    const h = this.index === 0 ? this.handle() : null;
+    if (!h) return null;
+    const dpr = window.devicePixelRatio || 1, d = Math.hypot(x - h.x, y - h.y);
+    return d < HANDLE_GRAB * dpr && d < Math.hypot(x - h.bx, y - h.by) ? h : null;
+  }
+
+  /** Initial rates of body k that put its handle nearest the screen point (x, y). */
+  solveRates(k, x, y) {
+    const names = this.rateNames(k);
+    const [bx, by] = this.placed(k, this.initialState());
+    // undo the handle's offset: the arrow's own tip lies HANDLE_OFFSET nearer the body
+    // (the pointer within the offset of the body's centre asks for rest)
+    const dpr = window.devicePixelRatio || 1, dx = x - bx, dy = y - by, r = Math.hypot(dx, dy);
+    const keep = r > 0 ? Math.max(0, r - HANDLE_OFFSET * dpr) / r : 0;
+    const tx = bx + dx * keep, ty = by + dy * keep, tau = this.tau(k);
+    return this.fitTo(names, tx, ty, (values) => {
+      const [vx, vy] = this.velocity(k, values);
+      return [bx + tau * vx, by + tau * vy];
+    });
+  }
+
   bindPointer() {
     const c = this.canvas;
     // a touch that lands on a body drags it; any other touch scrolls the page (touch-action: pan-y)
     c.addEventListener("touchstart", (e) => {
       const t = e.touches[0];
-      if (t && this.grab(...this.pointer(t)) >= 0) e.preventDefault();
+      if (t && (this.onHandle(...this.pointer(t)) || this.grab(...this.pointer(t)) >= 0)) e.preventDefault();
     }, { passive: false });
     c.addEventListener("pointerdown", (e) => {
       const [x, y] = this.pointer(e);
-      const k = this.grab(x, y);
-      if (k >= 0 && this.onDrag) {
+      const h = this.onDrag ? this.onHandle(x, y) : null;
+      const k = h ? -1 : this.grab(x, y);
+      if (h) {
+        this.pause();
+        // the pointer's offset from the handle's centre stays put during the drag
+        this.dragging = { rates: h.k, dx: h.x - x, dy: h.y - y };
+      } else if (k >= 0 && this.onDrag) {
         this.pause();
         this.selected = k;
         this.dragging = { k };
@@ -419,7 +551,10 @@ export class Player {
     });
     c.addEventListener("pointermove", (e) => {
       if (!this.dragging) {
-        if (this.onDrag && e.pointerType === "mouse") c.style.cursor = this.grab(...this.pointer(e)) >= 0 ? "grab" : "";
+        if (this.onDrag && e.pointerType === "mouse") {
+          const [x, y] = this.pointer(e);
+          c.style.cursor = this.onHandle(x, y) || this.grab(x, y) >= 0 ? "grab" : "";
+        }
         return;
       }
       const [x, y] = this.pointer(e);
@@ -429,6 +564,11 @@ export class Player {
         this.view.pitch = Math.max(-1.4, Math.min(1.4, d.pitch + (y - d.y) / (120 * dpr)));
         this.fit();
         this.draw(this.index);
+        return;
+      }
+      if (this.dragging.rates !== undefined) {
+        const d = this.dragging, values = this.solveRates(d.rates, x + d.dx, y + d.dy);
+        if (values) this.onDrag(values);
         return;
       }
       const values = this.solve(this.dragging.k, x, y);
@@ -454,13 +594,16 @@ export class Player {
       }
       const keys = { ArrowRight: [0, 1], ArrowUp: [1, 1], ArrowLeft: [0, -1], ArrowDown: [1, -1] };
       if (!(e.key in keys)) return;
-      const names = (this.ownersOf[this.selected] || []).filter((q) => this.controls && this.controls(q));
+      // Shift: the body's initial rates instead of its initial coordinates
+      const names = e.shiftKey
+        ? this.rateNames(this.selected)
+        : (this.ownersOf[this.selected] || []).filter((q) => this.controls && this.controls(q));
       if (!names.length) return;
-      // Right/Left move the body's first coordinate, Up/Down its second (or the first if it has one)
+      // Right/Left change the body's first coordinate (or rate), Up/Down its second (or the first if it has one)
       const [which, sign] = keys[e.key];
       const q = names[Math.min(which, names.length - 1)];
       const r = this.controls(q);
-      const step = ((r.max - r.min) / 100) * (e.shiftKey ? 10 : 1);
+      const step = (r.max - r.min) / 100;
       const value = Math.min(r.max, Math.max(r.min, r.value + sign * step));
       this.pause();
       if (this.index !== 0) this.seek(0);

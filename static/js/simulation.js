@@ -224,9 +224,11 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
   const warnings = status.querySelector(".warnings");
   const post = fetchRun || ((request, signal) => simulate(urls.simulate, request, { signal }));
   let controls = null;
+  // the initial-condition controls the animation may move: each coordinate and its rate
+  const initial = new Set(data.coordinates.flatMap((q) => [q, `${q}_dot`]));
   const view = new SimulationView(root, data, urls, {
     onDrag: (values) => controls && controls.set(values),
-    controls: (name) => (data.coordinates.includes(name) ? controlRange(form, name) : null),
+    controls: (name) => (initial.has(name) ? controlRange(form, name) : null),
   });
   let controller = null;
   let generation = 0;

@@ -144,3 +144,82 @@ def test_dragging_a_body_sets_the_initial_state(page, scene_id):
     canvas.focus()
     page.keyboard.press("ArrowRight")
     page.wait_for_function(f"Number(document.querySelector('#ctl-{q}').value) !== {after}")
+
+
+HANDLE = "JSON.parse(document.querySelector('[data-panel=animation-2d] canvas').dataset.handle || 'null')"
+
+
+def test_dragging_the_velocity_handle_sets_the_initial_rate(page, artifacts):
+    page.set_viewport_size({"width": 1366, "height": 768})
+    page.goto("/scenes/simple-pendulum")
+    page.wait_for_selector(READY, state="attached")
+    painted_events(page)
+    before = float(page.input_value("#ctl-theta_dot"))
+    handle = page.evaluate(HANDLE)
+    body = page.evaluate("JSON.parse(document.querySelector('[data-panel=animation-2d] canvas').dataset.bodies)[0]")
+    assert handle is not None and (handle["x"], handle["y"]) != (body["x"], body["y"])
+    box = page.locator("[data-panel=animation-2d] canvas").bounding_box()
+    x, y = box["x"] + handle["x"], box["y"] + handle["y"]
+    # pull the handle further out along its arrow: the rate grows in the handle's direction
+    ux, uy = handle["x"] - body["x"], handle["y"] - body["y"]
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for k in range(1, 6):
+        page.mouse.move(x + ux * 0.4 * k, y + uy * 0.4 * k)
+    page.mouse.up()
+    page.wait_for_function("window.painted.includes('preview')")
+    after = float(page.input_value("#ctl-theta_dot"))
+    assert abs(after - before) > 0.1
+    # the body stays where it was; only its velocity changed
+    assert (
+        page.evaluate("JSON.parse(document.querySelector('[data-panel=animation-2d] canvas').dataset.bodies)[0]")
+        == body
+    )
+    moved = page.evaluate(HANDLE)
+    assert (moved["x"], moved["y"]) != (handle["x"], handle["y"])
+    page.wait_for_function("window.painted.includes('server')")
+    assert float(page.input_value("#ctl-theta_dot")) == after
+    page.screenshot(path=artifacts / "velocity-handle-simple-pendulum.png")
+
+
+def test_shift_and_an_arrow_key_change_the_initial_rate(page):
+    page.goto("/scenes/simple-pendulum")
+    page.wait_for_selector(READY, state="attached")
+    painted_events(page)
+    theta, rate = float(page.input_value("#ctl-theta")), float(page.input_value("#ctl-theta_dot"))
+    page.locator("[data-panel=animation-2d] canvas").focus()
+    page.keyboard.press("Shift+ArrowRight")
+    page.wait_for_function("window.painted.includes('preview')")
+    assert float(page.input_value("#ctl-theta_dot")) > rate
+    assert float(page.input_value("#ctl-theta")) == theta
+    assert "starts at" in page.inner_text("[data-panel=animation-2d] .drag-status")
+
+
+def test_a_touch_on_the_velocity_handle_drags_it(phone, artifacts):
+    phone.goto("/scenes/movable-incline")
+    phone.wait_for_selector(READY, state="attached")
+    canvas = phone.locator("[data-panel=animation-2d] canvas")
+    canvas.scroll_into_view_if_needed()
+    painted_events(phone)
+    handle = phone.evaluate(HANDLE)
+    assert handle is not None
+    phone.screenshot(path=artifacts / "phone-velocity-handle-movable-incline.png")
+    name = phone.eval_on_selector("#controls .controls-initial .control", "el => el.dataset.name")
+    rates = {
+        n: float(phone.input_value(f"#ctl-{n}"))
+        for n in phone.eval_on_selector_all(
+            "#controls .controls-initial .control", "els => els.map((e) => e.dataset.name)"
+        )
+        if n.endswith("_dot")
+    }
+    box = canvas.bounding_box()
+    x, y = box["x"] + handle["x"], box["y"] + handle["y"]
+    before = phone.evaluate("window.scrollY")
+    cdp = phone.context.new_cdp_session(phone)
+    cdp.send("Input.dispatchTouchEvent", {"type": "touchStart", "touchPoints": [{"x": x, "y": y}]})
+    for k in range(1, 8):
+        cdp.send("Input.dispatchTouchEvent", {"type": "touchMove", "touchPoints": [{"x": x + 6 * k, "y": y - 6 * k}]})
+    cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+    phone.wait_for_function("window.painted.includes('preview')")
+    assert phone.evaluate("window.scrollY") == before  # the page did not scroll under the finger
+    assert any(float(phone.input_value(f"#ctl-{n}")) != v for n, v in rates.items()), (name, rates)
