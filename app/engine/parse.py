@@ -317,7 +317,7 @@ class _Checker:
             if value is not None and f.value is not None:
                 if exact is not None and f.exact is not None:
                     exact = self.exactly(partial, exact + sign * f.exact)
-                    value = float(exact)
+                    value = self.fold(partial, lambda e=exact: float(e))
                 else:
                     exact, value = None, self.fold(partial, lambda a=value, b=f.value, s=sign: a + s * b)
             else:
@@ -343,7 +343,7 @@ class _Checker:
             if value is not None and f.value is not None:
                 if exact is not None and f.exact is not None:
                     exact = self.exactly(partial, exact * f.exact if op is ast.Mult else exact / f.exact)
-                    value = float(exact)
+                    value = self.fold(partial, lambda e=exact: float(e))
                 else:
                     exact = None
                     value = self.fold(partial, lambda a=value, b=f.value, o=op: a * b if o is ast.Mult else a / b)
@@ -391,7 +391,8 @@ class _Checker:
         terms = math.comb(whole + base.terms - 1, whole) if base.terms > 1 else 1
         value = None
         if base.value is not None:
-            value = float(exact) if exact is not None else self.fold(node, lambda: base.value**n)
+            # an exact constant of up to MAX_DIGITS digits can still be far past a float's range: fold refuses it
+            value = self.fold(node, (lambda: float(exact)) if exact is not None else (lambda: base.value**n))
         return _Facts(value, exact, _cap(terms), base.inside, degree, base.calls)
 
     def call(self, node: ast.Call, depth: int) -> _Facts:
@@ -421,7 +422,7 @@ class _Checker:
                 raise self.refuse(node, "atan2(0, 0) is undefined")
             exact = arguments[0].exact
             if arity == 1 and exact is not None and name in _DOMAINS and not _DOMAINS[name](exact):
-                raise self.refuse(node, f"this number is undefined or not real ({name} of {float(exact):g})")
+                raise self.refuse(node, f"this number is undefined or not real ({name} of {self.fold(node, lambda: float(exact)):g})")
             function = _FLOAT_FUNCTIONS[name]
             value = self.fold(node, lambda: function(*(a.value for a in arguments)))
             return _Facts(value, None, 1, inside, 0, calls)

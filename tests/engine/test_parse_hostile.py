@@ -55,6 +55,9 @@ hostile = st.recursive(leaves, _extend, max_leaves=10)
 @example("((x**60)**60)**60")
 @example("exp((10**15)*log(sin(1)))")
 @example("exp((10**15)*log(0.5))")
+# exact constants under the digit cap but past a float's range (once an OverflowError, found by this fuzzer in CI)
+@example("(10**60)**6*x")
+@example("10**60*10**60*10**60*10**60*10**60*10**60*x")
 def test_hostile_expressions_are_refused_or_built_quickly_and_real(text):
     try:
         with time_limit(HANG_GUARD):
