@@ -21,16 +21,11 @@ import numpy as np
 from CyRK import cyjit, nbsolve2_ivp
 from numba import carray, njit, types
 
-from app.engine.derive import derive
-from app.numerics.exact import pendulum
 from app.numerics.kernels.common import F64, I64, RHS, VEC
 from app.numerics.methods import METHODS, Problem
 from app.numerics.simulate import simulate
-from app.numerics.system import NumericSystem, numeric_system
-from app.scenes import SCENES
-from benchmarks.bench_numerics import GRID, TARGET, best_time
-from tests.numerics.extreme_cases import pendulum_period
-from tests.numerics.systems import DOUBLE_PENDULUM
+from app.numerics.system import NumericSystem
+from benchmarks.bench_numerics import GRID, TARGET, best_time, cases
 
 OURS = ("DOP853-compiled", "Vern8")
 CYRK = ("DOP853", "Vern7", "Vern8")
@@ -158,25 +153,8 @@ def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
 
 
 def main() -> None:
-    pend = numeric_system(derive(SCENES["simple-pendulum"].system))
-    k = np.array([1.0, 9.81, 1.0])
-    y0 = np.array([2.5, 0.0])
-    t_end = 100 * pendulum_period(2.5)
-    reference = pendulum(9.81, 2.5, 0.0)(np.array([t_end]))[0]
-    side_by_side(f"Pendulum θ0 = 2.5, 100 periods (t = {t_end:.2f} s)", pend, k, y0, t_end, reference)
-
-    dp = numeric_system(derive(DOUBLE_PENDULUM))
-    kd = np.array([1.0, 1.0, 1.0, 1.0, 9.81])
-    yd = np.array([1.0, 0.0, 0.0, 0.0])
-    ref = (
-        METHODS["DOP853-compiled"]
-        .integrate(
-            Problem(dp, kd, yd, np.array([0.0, 50.0]), 1e-13, np.full(4, 1e-16), np.full(4, 1e8), math.inf, 10**9)
-        )
-        .y[-1]
-    )
-    side_by_side("Double pendulum (θ1 = 1, θ2 = 0), t = 50 s", dp, kd, yd, 50.0, ref)
-
+    for case in cases():
+        side_by_side(*case)
 
 if __name__ == "__main__":
     main()

@@ -153,25 +153,37 @@ def energy_decades() -> None:
         )
 
 
-def main() -> None:
+def cases() -> list[tuple[str, NumericSystem, np.ndarray, np.ndarray, float, np.ndarray]]:
+    """The equal-error comparisons (title, system, parameters, start, t_end, reference final state),
+    shared with benchmarks/bench_cyrk.py: the pendulum at θ0 = 2.5 over 100 periods against its exact
+    solution, and the double pendulum (θ1 = 1, others 0) to t = 50 s against DOP853 at rtol 1e-13."""
     pend = numeric_system(derive(SCENES["simple-pendulum"].system))
     k = np.array([1.0, 9.81, 1.0])
     y0 = np.array([2.5, 0.0])
     t_end = 100 * pendulum_period(2.5)
     reference = pendulum(9.81, 2.5, 0.0)(np.array([t_end]))[0]
-    compare(f"Pendulum θ0 = 2.5, 100 periods (t = {t_end:.2f} s)", pend, k, y0, t_end, reference)
-
     dp = numeric_system(derive(DOUBLE_PENDULUM))
     kd = np.array([1.0, 1.0, 1.0, 1.0, 9.81])
     yd = np.array([1.0, 0.0, 0.0, 0.0])
-    t = np.array([0.0, 50.0])
-    problem = Problem(dp, kd, yd, t, 1e-13, np.full(4, 1e-16), np.full(4, 1e8), math.inf, 10**9)
+    problem = Problem(dp, kd, yd, np.array([0.0, 50.0]), 1e-13, np.full(4, 1e-16), np.full(4, 1e8), math.inf, 10**9)
     ref = METHODS["DOP853-compiled"].integrate(problem).y[-1]
-    check = METHODS["Gauss-Legendre"].integrate(Problem(**{**problem.__dict__, "rtol": 1e-12})).y[-1]
+    return [
+        (f"Pendulum θ0 = 2.5, 100 periods (t = {t_end:.2f} s)", pend, k, y0, t_end, reference),
+        ("Double pendulum (θ1 = 1, others 0), t = 50 s", dp, kd, yd, 50.0, ref),
+    ]
+
+
+def main() -> None:
+    (pend_case, dp_case) = cases()
+    compare(*pend_case)
+    _, dp, kd, yd, t_end, ref = dp_case
+    problem = Problem(dp, kd, yd, np.array([0.0, t_end]), 1e-12, np.full(4, 1e-16), np.full(4, 1e8), math.inf, 10**9)
+    check = METHODS["Gauss-Legendre"].integrate(problem).y[-1]
     print(
         f"\nDouble pendulum reference: DOP853 at rtol 1e-13; Gauss-Legendre agrees to {np.max(np.abs(ref - check)[:2]):.1e}"
     )
-    compare("Double pendulum (a0 = 1, others 0), t = 50 s", dp, kd, yd, 50.0, ref)
+    compare(*dp_case)
+    _, pend, k, y0, _, _ = pend_case
 
     print("\nOne right-hand-side call (from Python) and one compiled DOP853 step:")
     print("| system | lambdify(numpy) | cse'd scalar code | ratio | compiled step |")
