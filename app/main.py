@@ -8,6 +8,7 @@ from contextlib import asynccontextmanager
 from fastapi import FastAPI
 
 from app.service import simulation
+from app.settings import settings
 from app.web import api_scenes, errors, limits, pages
 from app.web.api_check import router as check_router
 from app.web.api_simulate import router as simulate_router
@@ -22,7 +23,8 @@ async def lifespan(app: FastAPI) -> AsyncIterator[None]:
     # Fill the derivation cache, then load the compiled integrators and the scenes'
     # right-hand sides, in the background: the server answers at once, with scipy
     # while a compiled integrator is not ready yet.
-    simulation.start_warming()
+    if settings().warm:
+        simulation.start_warming()
     yield
 
 

@@ -1,7 +1,7 @@
 """Where compiled code and generated sources live on disk.
 
 numba's on-disk cache goes to ``NUMBA_CACHE_DIR``; unless the environment sets
-it, that is ``<LAGRANGE_CACHE_DIR or .cache>/numba``.  Generated right-hand
+it, that is ``<settings().cache_dir>/numba``.  Generated right-hand
 sides are written as modules under ``.../generated`` (numba only caches
 functions defined in a real file).  A read-only cache directory falls back to
 a per-user folder under the system's temporary directory.
@@ -13,7 +13,7 @@ import os
 import tempfile
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+from app.settings import settings
 
 
 def _writable(path: Path) -> bool:
@@ -28,7 +28,7 @@ def _writable(path: Path) -> bool:
 
 
 def cache_root() -> Path:
-    base = Path(os.environ.get("LAGRANGE_CACHE_DIR", ROOT / ".cache"))
+    base = settings().cache_dir
     if _writable(base):
         return base
     return Path(tempfile.gettempdir()) / f"lagrange-cache-{os.getuid()}"

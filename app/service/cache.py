@@ -16,19 +16,22 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-ROOT = Path(__file__).resolve().parents[2]
+from app.settings import settings
+
+# the ``app`` package whose sources fingerprint a cache (beside site-packages once installed)
+APP_SOURCE = Path(__file__).resolve().parents[1]
 
 
 def cache_dir() -> Path:
-    return Path(os.environ.get("LAGRANGE_CACHE_DIR", ROOT / ".cache"))
+    return settings().cache_dir
 
 
 def source_fingerprint(*packages: str) -> str:
     """A hash of every Python file in the named packages of ``app``."""
     digest = hashlib.sha256()
     for package in packages:
-        for path in sorted((ROOT / "app" / package).rglob("*.py")):
-            digest.update(path.relative_to(ROOT).as_posix().encode())
+        for path in sorted((APP_SOURCE / package).rglob("*.py")):
+            digest.update(path.relative_to(APP_SOURCE.parent).as_posix().encode())
             digest.update(path.read_bytes())
     return digest.hexdigest()[:16]
 

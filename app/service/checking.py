@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import asyncio
 import json
-import os
 import threading
 from collections.abc import Callable
 from typing import Any
@@ -32,8 +31,9 @@ from app.engine.exercises import exercise_json
 from app.service import derivations
 from app.service.user_systems import InvalidSystem, ResultCache, _derive, _guarded, check_system, spec_key
 from app.service.user_systems import service as user_service
+from app.settings import settings
 
-CHECK_SECONDS = float(os.environ.get("LAGRANGE_CHECK_SECONDS", "10"))
+CHECK_SECONDS = settings().check_seconds
 MAX_ANSWER_CACHE = 4096
 
 

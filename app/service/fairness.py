@@ -35,6 +35,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from app.service.cache import cache_dir
+from app.settings import settings
 
 COOKIE = "lagrange_session"
 COOKIE_MAX_AGE = 30 * 24 * 3600
@@ -49,9 +50,8 @@ class Busy(Exception):
         self.retry_after = retry_after
 
 
-def _secret() -> bytes:
-    """The key that signs sessions: from the environment, else a file shared by the server's processes."""
-    configured = os.environ.get("LAGRANGE_SESSION_SECRET")
+def _secret(configured: str | None) -> bytes:
+    """The key that signs sessions: the configured one, else a file shared by the server's processes."""
     if configured:
         return configured.encode()
     path = Path(cache_dir()) / "session-secret"
@@ -87,12 +87,19 @@ class Ticket:
 
 
 class Fairness:
-    def __init__(self, capacity: int, workers: int = 1, per_address: int | None = None, mint_per_minute: int = 120):
+    def __init__(
+        self,
+        capacity: int,
+        workers: int = 1,
+        per_address: int | None = None,
+        mint_per_minute: int = 120,
+        secret: str | None = None,
+    ):
         self.capacity = capacity
         self.workers = workers
         self.per_address = per_address or max(1, capacity // 2)
         self.mint_per_minute = mint_per_minute
-        self._key = _secret()
+        self._key = _secret(secret or settings().session_secret)
         self._lock = threading.Lock()
         self._running: dict[str, Ticket] = {}
         self._per_address: dict[str, int] = {}

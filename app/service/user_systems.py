@@ -22,7 +22,6 @@ import hashlib
 import json
 import logging
 import math
-import os
 import threading
 from collections import OrderedDict
 from collections.abc import Callable, Iterator
@@ -39,12 +38,13 @@ from app.scenes.types import Parameter, Particle, System
 from app.service import fairness as fair
 from app.service import worker
 from app.service.encoding import dumps
+from app.settings import settings
 
 MAX_COORDINATES = 6
 MAX_PARAMETERS = 24
 MAX_PARTICLES = 8
-DERIVE_SECONDS = float(os.environ.get("LAGRANGE_DERIVE_SECONDS", "30"))
-SIMULATE_SECONDS = float(os.environ.get("LAGRANGE_SIMULATE_SECONDS", "30"))
+DERIVE_SECONDS = settings().derive_seconds
+SIMULATE_SECONDS = settings().simulate_seconds
 # the engine's own budget for one derivation, inside the worker's hard limit: over it, a refusal naming it
 ENGINE_SECONDS = DERIVE_SECONDS * 2 / 3
 

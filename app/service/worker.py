@@ -32,8 +32,8 @@ from typing import Any
 
 from pebble import ProcessExpired, ProcessPool
 
-WORKERS = int(os.environ.get("LAGRANGE_WORKERS", "0")) or min(2, os.cpu_count() or 1)
-MEMORY_MB = int(os.environ.get("LAGRANGE_WORKER_MEMORY_MB", "1024"))  # address space a job may add
+from app.settings import settings
+
 MAX_TASKS = 200  # a worker is replaced after this many jobs, so caches cannot grow without bound
 PRELOAD = ("app.service.user_systems", "app.service.simulation", "app.service.checking")  # a missing module is skipped
 
@@ -79,9 +79,9 @@ def _context(preload: Sequence[str]):
 class WorkerPool:
     """A restartable pebble process pool with per-job time limits and a memory cap."""
 
-    def __init__(self, workers: int = WORKERS, memory_mb: int = MEMORY_MB, preload: Sequence[str] = PRELOAD):
-        self.workers = workers
-        self.memory_mb = memory_mb
+    def __init__(self, workers: int | None = None, memory_mb: int | None = None, preload: Sequence[str] = PRELOAD):
+        self.workers = workers or settings().worker_count
+        self.memory_mb = memory_mb or settings().worker_memory_mb
         self.preload = tuple(preload)
         self._pool: ProcessPool | None = None
         self._lock = threading.Lock()

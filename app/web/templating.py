@@ -22,6 +22,7 @@ from starlette.datastructures import Headers
 from starlette.responses import Response
 from starlette.types import Scope
 
+from app.settings import ROOT
 from app.web.mathml import mathml
 
 
@@ -79,13 +80,6 @@ _SMALL = 512 * 1024
 _gzipped: dict[tuple[str, int, int], bytes] = {}
 
 
-def _root() -> Path:
-    # the source tree; an installed package (the Docker image) runs from its working directory
-    here = Path(__file__).resolve().parents[2]
-    return here if (here / "templates").is_dir() else Path.cwd()
-
-
-ROOT = _root()
 TEMPLATES_DIR = ROOT / "templates"
 STATIC_DIR = ROOT / "static"
 
