@@ -40,6 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.linalg import schur, solve_sylvester
 
+from app.numerics.methods import NONSTIFF, STIFF, symplectic_for
 from app.numerics.system import NumericSystem
 
 STIFF_RATIO = 1.0e3
@@ -134,13 +135,13 @@ def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
     """The method ``auto`` runs, and the reason in one sentence."""
     a = analysis
     if a.stiff:
-        return "Radau", (
+        return STIFF, (
             f"stiff: the fastest rate at the start, |λ| = {a.spectral_radius:.3g}/s, is "
             f"{a.spectral_radius / a.slow_rate:.2g} times the slow rate and its mode is not excited "
             f"(amplitude {a.fast_amplitude:.2g} of the tolerance), so the implicit Radau method steps over it"
         )
     if system.energy_name is not None and (a.characteristic_times >= LONG_RUN or a.near_saddle):
-        name = "Yoshida4" if system.separable else "Gauss-Legendre"
+        name = symplectic_for(system).name
         why = "H separates into T(p) + U(q)" if system.separable else "H(q, p) does not separate"
         if a.near_saddle:
             what = (
@@ -156,7 +157,7 @@ def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
     excited = ""
     if a.spectral_radius > STIFF_RATIO * a.slow_rate:
         excited = f" (the fast mode, |λ| = {a.spectral_radius:.3g}/s, is excited, so it must be resolved)"
-    return "DOP853-compiled", (
+    return NONSTIFF, (
         f"non-stiff{excited}: the explicit 8th-order DOP853 with a compiled step loop, which watches for stiffness "
         "on the way (and hands over to Radau if it appears)"
     )

@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from app.numerics import simulate as simulate_module
+from app.numerics import plan as plan_module
 from app.numerics.choose import analyse, choose
 from app.numerics.simulate import simulate
 from tests.numerics.extreme_cases import circular_radius, pendulum_period, system_for
@@ -60,7 +60,7 @@ def test_detected_stiffness_switches_to_radau(monkeypatch):
     s = system_for("stiff-spring")
     k = np.array([1.0, 1e6, 1.0])
     y0 = np.array([circular_radius(1e6, 1.0, 1.0) * (1 + 1e-9), 0.0, 0.0, 1.0])
-    monkeypatch.setattr(simulate_module, "choose", lambda system, analysis: ("DOP853-compiled", "forced for the test"))
+    monkeypatch.setattr(plan_module, "choose", lambda system, analysis: ("DOP853-compiled", "forced for the test"))
     out = simulate(s, k, y0, 10.0, 101, rtol=1e-4, atol=1e-4)
     assert out.method == "Radau"
     assert "detected stiffness" in out.reason
