@@ -1,7 +1,7 @@
 """One simulation: plan it (``app.numerics.plan``), run it under the budget, estimate its global error.
 
 Order of work: the plan (analyse the start, choose, name the reference), run the
-method (switching to Radau if ``auto``'s DOP853 meets stiffness on the way),
+method (switching to Radau if ``auto``'s explicit method meets stiffness on the way),
 run the reference for the error estimate, compare.  Everything shares one
 deadline.  The main run exceeding it is an error (too much work); the
 reference exceeding it only costs the estimate, with a warning.
@@ -82,7 +82,7 @@ _AHEAD = ThreadPoolExecutor(max_workers=CORES.count, thread_name_prefix="referen
 
 
 def _reference_ahead(problem: Problem) -> Future | None:
-    """Start the compiled DOP853 reference of a non-stiff adaptive run in another thread, if a core is free."""
+    """Start the compiled reference of a non-stiff adaptive run in another thread, if a core is free."""
     if not CORES.take():
         return None
     name, tight = reference_problem(problem, stiff=False, compiled=True)
@@ -161,10 +161,10 @@ def run(
     with ExitStack() as held:
         stiff = analysis.stiff
         if trajectory.stiff_detected and not trajectory.complete and options:
-            # DOP853 found h |lambda| at its stability limit for 15 steps in a row: switch to Radau
+            # the explicit run found h |lambda| at its stability limit for 15 steps in a row: switch to Radau
             reason += (
-                f"; but DOP853 detected stiffness at t = {trajectory.t_reached:.4g} s (step size held at its "
-                "stability limit), so the run was redone with the implicit Radau method"
+                f"; but {name} detected stiffness at t = {trajectory.t_reached:.4g} s (step size held at its "
+                f"stability limit), so the run was redone with the implicit {STIFF} method"
             )
             name, stiff, ahead = STIFF, True, None
             problem.max_steps = _budget_for(name)

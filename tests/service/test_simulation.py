@@ -220,13 +220,14 @@ def test_auto_stiff_handover_takes_the_python_loop_slot(monkeypatch):
     """A run that meets stiffness on the way and is redone with Radau asks for the slot then (without an
     estimate here, so that nothing else in the plan is a Python loop)."""
     from app.numerics import plan as plan_module
+    from app.numerics.methods import NONSTIFF
     from app.numerics.simulate import run
     from tests.numerics.extreme_cases import circular_radius, system_for
 
     s = system_for("stiff-spring")
     k = np.array([1.0, 1e6, 1.0])
     y0 = np.array([circular_radius(1e6, 1.0, 1.0) * (1 + 1e-9), 0.0, 0.0, 1.0])
-    monkeypatch.setattr(plan_module, "choose", lambda system, analysis: ("DOP853-compiled", "forced for the test"))
+    monkeypatch.setattr(plan_module, "choose", lambda system, analysis: (NONSTIFF, "forced for the test"))
     planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4, estimate=False)
     assert not planned.python_loop
     entered = []
