@@ -24,9 +24,9 @@ eigenvalues lambda_i and eigenvectors v_i:
   a symplectic method (Yoshida-4 when H separates, else Gauss-Legendre) keeps
   the energy error bounded instead of letting it drift;
 * otherwise the compiled DOP853 (high order, adaptive, and it detects
-  stiffness that appears on the way).  The compiled Vern8 took 6-11 % less
-  time at equal final error 1e-8 on the chapter's pendulums
-  (benchmarks/bench_cyrk.py), but at the same rtol its error is larger: past
+  stiffness that appears on the way).  The compiled Vern8 took between 1.6x
+  the time and 11 % less at equal final error 1e-8 on the chapter's pendulums
+  (benchmarks/bench_cyrk.py, from run to run), and at the same rtol its error is larger: past
   the spherical pendulum's pole its estimate was 5x DOP853's and p_phi drifted
   4e-5 of itself (DOP853: 7e-8), so a request's tolerance would mean less.
 
