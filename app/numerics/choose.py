@@ -24,9 +24,11 @@ eigenvalues lambda_i and eigenvectors v_i:
   a symplectic method (Yoshida-4 when H separates, else Gauss-Legendre) keeps
   the energy error bounded instead of letting it drift;
 * otherwise the compiled DOP853 (high order, adaptive, and it detects
-  stiffness that appears on the way).  The compiled Vern8 was within about
-  10 % of it at equal error on the chapter's pendulums (benchmarks/bench_cyrk.py),
-  not a clear enough win to give up that detection.
+  stiffness that appears on the way).  The compiled Vern8 took between 1.6x
+  the time and 11 % less at equal final error 1e-8 on the chapter's pendulums
+  (benchmarks/bench_cyrk.py, from run to run), and at the same rtol its error is larger: past
+  the spherical pendulum's pole its estimate was 5x DOP853's and p_phi drifted
+  4e-5 of itself (DOP853: 7e-8), so a request's tolerance would mean less.
 
 A stiff problem whose fast mode *is* excited must resolve that mode whatever
 the method, so it is treated as non-stiff (explicit or symplectic).
@@ -40,6 +42,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.linalg import schur, solve_sylvester
 
+from app.numerics.methods import NONSTIFF, STIFF, symplectic_for
 from app.numerics.system import NumericSystem
 
 STIFF_RATIO = 1.0e3
@@ -51,7 +54,7 @@ SADDLE_SPEED = 1.0e-2
 class Analysis:
     spectral_radius: float
     slow_rate: float
-    fast_amplitude: float  # the fast modes' amplitude, in units of the tolerance
+    fast_amplitude: float  # the fast modes' amplitude, in units of the tolerance (NaN: no stiff gap, not computed)
     stiff: bool
     characteristic_times: float
     near_saddle: bool = False
@@ -116,10 +119,15 @@ def analyse(
     fast = size >= rho / 10.0
     slow_rate = max(float(size[~fast].max()) if np.any(~fast) else 0.0, 1.0 / t_end)
     scale = atol + rtol * np.abs(y0)
-    try:
-        fast_amplitude = float(np.max(fast_swing(J, F, rho / 10.0) / scale)) if rho > 0 else 0.0
-    except (ValueError, np.linalg.LinAlgError):
-        fast_amplitude = math.inf
+    if rho <= STIFF_RATIO * slow_rate:
+        # no rate stands STIFF_RATIO above the slow ones, so the problem is not stiff whatever the fast
+        # modes' amplitude: the Schur form and Sylvester solve (most of this function's time) are skipped
+        fast_amplitude = math.nan
+    else:
+        try:
+            fast_amplitude = float(np.max(fast_swing(J, F, rho / 10.0) / scale))
+        except (ValueError, np.linalg.LinAlgError):
+            fast_amplitude = math.inf
     stiff = bool(rho > STIFF_RATIO * slow_rate and fast_amplitude <= 1.0)
     unstable = lam[(lam.real > 0) & (np.abs(lam.imag) <= 1e-8 * size)]
     creeping = float(np.linalg.norm(F)) < SADDLE_SPEED * (unstable.real.max() if unstable.size else 0.0) * max(
@@ -134,13 +142,13 @@ def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
     """The method ``auto`` runs, and the reason in one sentence."""
     a = analysis
     if a.stiff:
-        return "Radau", (
+        return STIFF, (
             f"stiff: the fastest rate at the start, |λ| = {a.spectral_radius:.3g}/s, is "
             f"{a.spectral_radius / a.slow_rate:.2g} times the slow rate and its mode is not excited "
             f"(amplitude {a.fast_amplitude:.2g} of the tolerance), so the implicit Radau method steps over it"
         )
     if system.energy_name is not None and (a.characteristic_times >= LONG_RUN or a.near_saddle):
-        name = "Yoshida4" if system.separable else "Gauss-Legendre"
+        name = symplectic_for(system).name
         why = "H separates into T(p) + U(q)" if system.separable else "H(q, p) does not separate"
         if a.near_saddle:
             what = (
@@ -156,7 +164,7 @@ def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
     excited = ""
     if a.spectral_radius > STIFF_RATIO * a.slow_rate:
         excited = f" (the fast mode, |λ| = {a.spectral_radius:.3g}/s, is excited, so it must be resolved)"
-    return "DOP853-compiled", (
+    return NONSTIFF, (
         f"non-stiff{excited}: the explicit 8th-order DOP853 with a compiled step loop, which watches for stiffness "
         "on the way (and hands over to Radau if it appears)"
     )

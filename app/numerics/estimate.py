@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from app.numerics.methods.base import Problem, Trajectory
+from app.numerics.methods import FALLBACK, REFERENCE, STIFF, Problem, Trajectory
 
 TIGHTER = 1.0e-3
 REFERENCE_RTOL_MIN = 1.0e-13
@@ -38,11 +38,16 @@ class Estimate:
     reference: str
 
 
+def reference_name(stiff: bool, compiled: bool = True) -> str:
+    """The method of an adaptive run's reference: the stiff method for a stiff problem, else the compiled
+    reference, or scipy's fallback while the kernels are not compiled (``compiled=False``)."""
+    return STIFF if stiff else (REFERENCE if compiled else FALLBACK)
+
+
 def reference_problem(problem: Problem, stiff: bool, compiled: bool = True) -> tuple[str, Problem]:
     """The tighter run.  For a stiff problem atol stays: tightening it would make round-off-sized
-    wiggles of the fast mode (which the run rightly ignores) count, and force Radau to resolve them.
-    ``compiled=False`` (kernels not compiled yet) takes scipy's DOP853 for the compiled one."""
-    method = "Radau" if stiff else ("DOP853-compiled" if compiled else "DOP853")
+    wiggles of the fast mode (which the run rightly ignores) count, and force Radau to resolve them."""
+    method = reference_name(stiff, compiled)
     atol = problem.atol if stiff else np.maximum(problem.atol * TIGHTER, REFERENCE_ATOL_MIN)
     tight = Problem(**{**problem.__dict__, "rtol": max(problem.rtol * TIGHTER, REFERENCE_RTOL_MIN), "atol": atol})
     return method, tight

@@ -1,14 +1,14 @@
-"""One simulation: choose the method, run it under the budget, estimate its global error.
+"""One simulation: plan it (``app.numerics.plan``), run it under the budget, estimate its global error.
 
-Order of work: analyse the start (stiffness, time scales), choose, run the
-method (switching to Radau if ``auto``'s DOP853 meets stiffness on the way),
+Order of work: the plan (analyse the start, choose, name the reference), run the
+method (switching to Radau if ``auto``'s explicit method meets stiffness on the way),
 run the reference for the error estimate, compare.  Everything shares one
 deadline.  The main run exceeding it is an error (too much work); the
 reference exceeding it only costs the estimate, with a warning.
 
-A server passes ``wait_for_compile=False``: when ``auto`` picks a compiled
-method whose numba code is not ready in this process yet (a background thread
-is compiling it), scipy's DOP853 on the generated scalar right-hand side
+A server passes ``wait_for_compile=False`` to the plan: when ``auto`` picks a
+compiled method whose numba code is not ready in this process yet (a background
+thread is compiling it), scipy's DOP853 on the generated scalar right-hand side
 answers instead, for the run and the reference, and ``Outcome.path`` says so.
 """
 
@@ -17,17 +17,20 @@ from __future__ import annotations
 import os
 import threading
 import time
+from collections.abc import Callable
 from concurrent.futures import Future, ThreadPoolExecutor
+from contextlib import AbstractContextManager, ExitStack, nullcontext
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from app.numerics import limits
-from app.numerics.choose import Analysis, analyse, choose
-from app.numerics.errors import SimulationError, TooMuchWork
+from app.numerics.choose import Analysis
+from app.numerics.errors import TooMuchWork
 from app.numerics.estimate import Estimate, compare, reference_problem
-from app.numerics.methods import METHODS, Problem, Trajectory
+from app.numerics.methods import AUTO, METHODS, STIFF, Problem, Trajectory
 from app.numerics.methods.symplectic import FixedStep
+from app.numerics.plan import Plan, plan
 from app.numerics.system import NumericSystem
 
 
@@ -41,8 +44,6 @@ class Outcome:
     warnings: list[str] = field(default_factory=list)
     compile_seconds: float = 0.0
     path: str = "compiled"  # "compiled", "scipy" (a scipy method was asked for or chosen), "scipy-fallback"
-
-FALLBACK = "DOP853"  # scipy's, on the generated scalar right-hand side: needs no compiler
 
 
 def _machine_load() -> float:
@@ -81,7 +82,7 @@ _AHEAD = ThreadPoolExecutor(max_workers=CORES.count, thread_name_prefix="referen
 
 
 def _reference_ahead(problem: Problem) -> Future | None:
-    """Start the compiled DOP853 reference of a non-stiff adaptive run in another thread, if a core is free."""
+    """Start the compiled reference of a non-stiff adaptive run in another thread, if a core is free."""
     if not CORES.take():
         return None
     name, tight = reference_problem(problem, stiff=False, compiled=True)
@@ -115,49 +116,40 @@ def simulate(
     y0: np.ndarray,
     t_end: float,
     samples: int,
-    method: str = "auto",
+    method: str = AUTO,
     rtol: float = limits.RTOL_DEFAULT,
     atol: float = limits.ATOL_DEFAULT,
     wall_seconds: float | None = None,
     estimate: bool = True,
     wait_for_compile: bool = True,
 ) -> Outcome:
+    """Plan and run in one call (scripts and tests); a server plans first to take its throttles (see ``run``)."""
+    return run(plan(system, k, y0, t_end, samples, method, rtol, atol, estimate, wait_for_compile), wall_seconds)
+
+
+def run(
+    plan: Plan, wall_seconds: float | None = None, python_loop: Callable[[], AbstractContextManager] = nullcontext
+) -> Outcome:
+    """Run a plan under one deadline.  ``python_loop()`` is entered around a Python step loop the plan did not
+    foresee (the stiff hand-over to Radau); the caller holds it already when ``plan.python_loop``."""
+    system, k, y0 = plan.system, plan.k, plan.y0
     wall_seconds = limits.WALL_SECONDS if wall_seconds is None else wall_seconds
-    t = np.linspace(0.0, t_end, samples)
-    m = y0.size
-    atol_vector = np.full(m, atol)
-    analysis = analyse(system, k, y0, t_end, rtol, atol_vector)
-    if method == "auto":
-        name, reason = choose(system, analysis)
-    else:
-        if method not in METHODS:
-            raise SimulationError(f"unknown method {method!r}; choose auto or one of {', '.join(METHODS)}", "method")
-        name, reason = method, "requested"
-    chosen = METHODS[name]
-    why_not = chosen.applicable(system)
-    if why_not:
-        raise SimulationError(f"method {name} cannot integrate this system: {why_not}", "method")
+    t = np.linspace(0.0, plan.t_end, plan.samples)
+    atol_vector = np.full(y0.size, plan.atol)
+    name, reason, chosen, path, analysis = plan.name, plan.reason, plan.method, plan.path, plan.analysis
+    estimate = plan.reference is not None
 
     warnings: list[str] = []
-    path = "compiled" if chosen.compiled else "scipy"
-    reference_ready = not estimate or METHODS["DOP853-compiled"].ready(system)
-    if method == "auto" and chosen.compiled and not wait_for_compile and not (chosen.ready(system) and reference_ready):
-        reason = (
-            f"scipy's {FALLBACK} (Python step loop) answered, because the compiled code that auto picks here is "
-            f"still being compiled in the background; once it is ready auto runs {name}: {reason}"
-        )
-        name, chosen, path = FALLBACK, METHODS[FALLBACK], "scipy-fallback"
     # compiling (first use in this process, or after a change) happens before the clock starts
     before = time.perf_counter()
-    if path != "scipy-fallback":
-        chosen.prepare(system)
-        if estimate:
-            METHODS["DOP853-compiled"].prepare(system)
+    for needed in (chosen, plan.reference):
+        if needed is not None and needed.compiled:
+            needed.prepare(system)
     compile_seconds = time.perf_counter() - before
     deadline = time.perf_counter() + wall_seconds
 
-    problem = Problem(system, k, y0, t, rtol, atol_vector, bounds(system, y0), deadline, _budget_for(name))
-    options = {"stop_on_stiff": True} if method == "auto" and name == "DOP853-compiled" else {}
+    problem = Problem(system, k, y0, t, plan.rtol, atol_vector, bounds(system, y0), deadline, _budget_for(name))
+    options = {"stop_on_stiff": True} if plan.watch_stiffness else {}
     # the reference of a non-stiff adaptive compiled run does not depend on the run: start it now
     adaptive = path == "compiled" and not isinstance(chosen, FixedStep)
     CORES.take(force=True)  # this run's own core
@@ -166,29 +158,31 @@ def simulate(
         trajectory = chosen.integrate(problem, **options)
     finally:
         CORES.give()
-    stiff = analysis.stiff
-    if trajectory.stiff_detected and not trajectory.complete and options:
-        # DOP853 found h |lambda| at its stability limit for 15 steps in a row: switch to Radau
-        reason += (
-            f"; but DOP853 detected stiffness at t = {trajectory.t_reached:.4g} s (step size held at its "
-            "stability limit), so the run was redone with the implicit Radau method"
+    with ExitStack() as held:
+        stiff = analysis.stiff
+        if trajectory.stiff_detected and not trajectory.complete and options:
+            # the explicit run found h |lambda| at its stability limit for 15 steps in a row: switch to Radau
+            reason += (
+                f"; but {name} detected stiffness at t = {trajectory.t_reached:.4g} s (step size held at its "
+                f"stability limit), so the run was redone with the implicit {STIFF} method"
+            )
+            name, stiff, ahead = STIFF, True, None
+            problem.max_steps = _budget_for(name)
+            held.enter_context(python_loop())
+            trajectory = METHODS[name].integrate(problem)
+        elif trajectory.stiff_detected:
+            warnings.append(
+                f"{name} detected stiffness (its step size is held at the stability limit): an implicit method "
+                "(Radau or BDF) may be much cheaper here"
+            )
+        if not trajectory.complete:
+            warnings.append(trajectory.stop_reason)
+        compiled = path != "scipy-fallback"
+        result = (
+            estimate_error(system, problem, METHODS[name], trajectory, stiff, warnings, compiled, ahead)
+            if estimate
+            else None
         )
-        name, stiff, ahead = "Radau", True, None
-        problem.max_steps = _budget_for(name)
-        trajectory = METHODS[name].integrate(problem)
-    elif trajectory.stiff_detected:
-        warnings.append(
-            f"{name} detected stiffness (its step size is held at the stability limit): an implicit method "
-            "(Radau or BDF) may be much cheaper here"
-        )
-    if not trajectory.complete:
-        warnings.append(trajectory.stop_reason)
-    compiled = path != "scipy-fallback"
-    result = (
-        estimate_error(system, problem, METHODS[name], trajectory, stiff, warnings, compiled, ahead)
-        if estimate
-        else None
-    )
     return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds, path)
 
 

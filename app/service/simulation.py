@@ -17,17 +17,19 @@ import os
 import threading
 import time
 from collections import OrderedDict
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
+from contextlib import contextmanager, nullcontext
 from typing import Any, Protocol
 
 import numpy as np
 
 from app.engine.derive import Derivation
-from app.numerics import limits
+from app.numerics import limits, methods
 from app.numerics.errors import Busy, SimulationError
-from app.numerics.methods import METHODS
+from app.numerics.methods import AUTO, METHODS, NONSTIFF
 from app.numerics.observables import Observables, build, summarize
-from app.numerics.simulate import simulate
+from app.numerics.plan import plan
+from app.numerics.simulate import run
 from app.numerics.system import NumericSystem, generated_sources, numeric_system
 from app.scenes import SCENES, Scene
 from app.service.cache import JsonCache, source_fingerprint
@@ -169,6 +171,20 @@ def _series(values: np.ndarray, precision: str = "full") -> np.ndarray:
     return display_rounded(values) if precision == "display" else values
 
 
+@contextmanager
+def _python_loop() -> Iterator[None]:
+    """Hold the one slot for a Python step loop (see ``_PYTHON_LOOP``), or refuse as busy."""
+    if not _PYTHON_LOOP.acquire(timeout=limits.WALL_SECONDS):
+        raise Busy(
+            "another scipy (Python step loop) run is in progress here; try again in a few seconds, "
+            "or ask for a compiled method"
+        )
+    try:
+        yield
+    finally:
+        _PYTHON_LOOP.release()
+
+
 def simulate_derivation(
     derivation: Derivation,
     request: SimulationInput,
@@ -184,9 +200,9 @@ def simulate_derivation(
     rtol = _setting(request.rtol, limits.RTOL_DEFAULT, limits.RTOL_MIN, limits.RTOL_MAX, "rtol")
     atol = _setting(request.atol, limits.ATOL_DEFAULT, limits.ATOL_MIN, limits.ATOL_MAX, "atol")
     samples = int(_setting(request.samples, limits.SAMPLES_DEFAULT, limits.SAMPLES_MIN, limits.SAMPLES_MAX, "samples"))
-    method = request.method or "auto"
-    if method != "auto" and method not in METHODS:
-        raise SimulationError(f"unknown method {method[:40]!r}; choose auto or one of {', '.join(METHODS)}", "method")
+    method = request.method or AUTO
+    if method != AUTO:
+        methods.method(method)  # an unknown name is refused before any work
 
     system, observables = COMPILED.get(scene_id, derivation, constraint_forces)
     try:
@@ -199,21 +215,15 @@ def simulate_derivation(
             "the coordinates are singular there, e.g. a radius of 0 or a pole of the sphere); move it slightly",
             "initial",
         )
-    python_loop = method != "auto" and not METHODS[method].compiled
-    if python_loop and not _PYTHON_LOOP.acquire(timeout=limits.WALL_SECONDS):
-        raise Busy(f"another {method} run is in progress here; try again in a few seconds, or use a compiled method")
-    try:
+    # the plan resolves auto (and the fallback while compiling) first, so the throttle sees what will run
+    planned = plan(system, k, y0, t_end, samples, method, rtol, atol, wait_for_compile=not ANSWER_WHILE_COMPILING)
+    with _python_loop() if planned.python_loop else nullcontext():
         if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
             raise Busy("too many simulations are running at once; try again in a few seconds")
         try:
-            outcome = simulate(
-                system, k, y0, t_end, samples, method, rtol, atol, wait_for_compile=not ANSWER_WHILE_COMPILING
-            )
+            outcome = run(planned, python_loop=_python_loop)
         finally:
             _SLOTS.release()
-    finally:
-        if python_loop:
-            _PYTHON_LOOP.release()
     return document(system, observables, outcome, k, rtol, getattr(request, "precision", None) or "full")
 
 
@@ -263,8 +273,11 @@ def document(
         "constraint_forces": forces,
         "stats": _finite(stats),
         # the same right-hand side as JavaScript: the page integrates a preview while an input moves
-        "preview": {"rhs": system.browser, "coordinates": list(system.coordinates),
-                    "parameters": list(system.parameter_names)},
+        "preview": {
+            "rhs": system.browser,
+            "coordinates": list(system.coordinates),
+            "parameters": list(system.parameter_names),
+        },
     }
 
 
@@ -294,7 +307,7 @@ def warm_all() -> dict[str, float]:
         for scene_id in SCENES
     ]
     spent["numeric systems"] = time.perf_counter() - start
-    first = METHODS["DOP853-compiled"]
+    first = METHODS[NONSTIFF]
     for method in (first, *(m for m in METHODS.values() if m.compiled and m is not first)):
         start = time.perf_counter()
         for system in systems:

@@ -16,6 +16,7 @@ from typing import Any
 from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, RedirectResponse
 
+from app.numerics.methods import CHOICES
 from app.service import derivations
 from app.service.derivations import UnknownScene
 from app.viz.chapter import table_of_contents
@@ -25,24 +26,8 @@ from app.web.templating import templates
 
 router = APIRouter(tags=["pages"], include_in_schema=False)
 
-FALLBACK_METHODS = ("auto", "DOP853", "RK45", "Radau", "BDF", "LSODA")
-
 _models: dict[str, tuple[int, dict[str, Any]]] = {}
 _lock = threading.Lock()
-
-
-def simulation_methods() -> tuple[str, ...]:
-    """The integration methods the simulate endpoint accepts (from its request schema when present)."""
-    try:
-        from app.web.schemas_simulate import SimulateRequest  # the numerics layer's request model
-    except ImportError:
-        return FALLBACK_METHODS
-    prop = SimulateRequest.model_json_schema().get("properties", {}).get("method", {})
-    options = prop.get("enum") or [o.get("const") for o in prop.get("anyOf", []) if "const" in o]
-    if not options:
-        options = [x for o in prop.get("anyOf", []) for x in o.get("enum", [])]
-    options = [str(o) for o in options if o]
-    return tuple(["auto", *(o for o in options if o != "auto")]) if options else FALLBACK_METHODS
 
 
 def scene_info(scene_id: str, doc: dict[str, Any]) -> dict[str, Any]:
@@ -62,7 +47,7 @@ def page_model(scene_id: str) -> dict[str, Any]:
         return cached[1]
     s = derivations.scene(scene_id)
     particles = [(p.label, p.position) for p in s.system.particles]
-    model = scene_page(doc, scene_info(scene_id, doc), particles, simulation_methods(), s.system.nonnegative)
+    model = scene_page(doc, scene_info(scene_id, doc), particles, CHOICES, s.system.nonnegative)
     with _lock:
         _models[scene_id] = (id(doc), model)
     return model

@@ -24,6 +24,7 @@ from starlette.datastructures import QueryParams
 
 from app.engine.errors import excerpt
 from app.engine.parse import FUNCTIONS
+from app.numerics.methods import CHOICES
 from app.service import user_systems
 from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
 from app.service.user_systems import InvalidSystem
@@ -32,7 +33,6 @@ from app.viz.exprtree import TreeError, tree
 from app.viz.page_model import angles, scene_page
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
 from app.web.limits import TooDeep, check_json_depth
-from app.web.pages import simulation_methods
 from app.web.schemas import SESSION_COOKIE
 from app.web.schemas_user import SystemSpec
 from app.web.templating import templates
@@ -287,7 +287,7 @@ def model_of(spec: dict[str, Any], doc: dict[str, Any]) -> dict[str, Any]:
         "initial": {q: 1.0 for q in spec["coordinates"]},
         "t_end": 10.0,
     }
-    return scene_page(doc, info, particles, simulation_methods(), spec.get("nonnegative") or ())
+    return scene_page(doc, info, particles, CHOICES, spec.get("nonnegative") or ())
 
 
 def _example_links() -> list[dict[str, str]]:

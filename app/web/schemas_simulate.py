@@ -13,10 +13,10 @@ from typing import Annotated, Literal
 from pydantic import BaseModel, ConfigDict, Field
 
 from app.numerics import limits
-from app.numerics.methods import METHODS
+from app.numerics.methods import CHOICES
 
 # "auto" and the registry's names (app/numerics/methods/__init__.py)
-Method = Literal[("auto", *METHODS)]
+Method = Literal[CHOICES]
 Precision = Literal["full", "display"]
 Values = Annotated[
     dict[Annotated[str, Field(max_length=40)], Annotated[float, Field(ge=-limits.VALUE_MAX, le=limits.VALUE_MAX)]],

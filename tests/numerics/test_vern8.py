@@ -60,9 +60,59 @@ def test_continuous_extension_is_seventh_order():
         Ks[0] = forced_pendulum(0.0, y0)
         for s in range(1, tab.N_ALL):
             Ks[s] = forced_pendulum(tab.C[s] * h, y0 + h * tab.A[s, :s] @ Ks[:s])
-        dense = y0 + h * (tab.BI @ theta ** np.arange(1, tab.DEGREE + 1)) @ Ks
+        dense = y0 + h * (tab.BIC @ (theta - 0.5) ** np.arange(tab.DEGREE + 1)) @ Ks
         errors.append(np.abs(dense - steps(y0, theta * h, 50, tab.B)).max())
     assert np.log2(errors[0] / errors[1]) > 7.4
+
+
+@pytest.mark.parametrize("p", range(1, tab.DEGREE + 1))
+def test_continuous_extension_integrates_polynomials_to_round_off(p):
+    """y' = t^(p-1) from 0: the extension's weights satisfy sum_j b_j(theta) c_j^(p-1) = theta^p / p exactly
+    (the published coefficients missed by up to 9e-13, see vern8_tableau.centred)."""
+    for theta in np.linspace(0.0, 1.0, 11):
+        weights = tab.BIC @ (theta - 0.5) ** np.arange(tab.DEGREE + 1)
+        assert abs(weights @ tab.C ** (p - 1) - theta**p / p) < 4e-15
+    assert np.abs(tab.BIC @ 0.5 ** np.arange(tab.DEGREE + 1) - tab.B).max() < 1e-12  # b_j(1) = B_j
+
+
+def test_parabola_samples_are_exact_to_round_off():
+    """Constant acceleration: every dense sample on the parabola (it was 6e-12 off before the fix)."""
+    from tests.numerics.extreme_cases import Case
+
+    case = Case("", "pulley", {}, {}, 2.0, exact="constant")
+    s, k, y0 = case.vectors()
+    t = np.linspace(0.0, 2.0, 51)
+    m = y0.size
+    problem = Problem(s, k, y0, t, 1e-11, np.full(m, 1e-13), np.full(m, 1e8), time.perf_counter() + 60, 10**8)
+    run = METHODS["Vern8"].integrate(problem)
+    assert np.abs(run.y - case.exact_solution(k, y0)(t)).max() < 1e-13
+
+
+def test_stiffness_is_detected():
+    """A stiff radial spring holds h |lambda| at the stability boundary: with stop_on_stiff the run stops and
+    says so; a pendulum never trips the test."""
+    from tests.numerics.extreme_cases import circular_radius
+
+    s = system_for("stiff-spring")
+    k = np.array([1.0, 1e6, 1.0])
+    y0 = np.array([circular_radius(1e6, 1.0, 1.0) * (1 + 1e-9), 0.0, 0.0, 1.0])
+    t = np.linspace(0.0, 10.0, 101)
+    problem = Problem(s, k, y0, t, 1e-4, np.full(4, 1e-4), np.full(4, 1e8), time.perf_counter() + 60, 10**8)
+    stiff = METHODS["Vern8"].integrate(problem, stop_on_stiff=True)
+    assert stiff.stiff_detected and not stiff.complete and stiff.steps < 1000
+    calm = Problem(
+        system_for("simple-pendulum"),
+        K,
+        np.array([2.5, 0.0]),
+        t,
+        1e-8,
+        np.full(2, 1e-10),
+        np.full(2, 1e8),
+        time.perf_counter() + 60,
+        10**8,
+    )
+    run = METHODS["Vern8"].integrate(calm, stop_on_stiff=True)
+    assert run.complete and not run.stiff_detected
 
 
 def test_kernel_follows_the_exact_pendulum():

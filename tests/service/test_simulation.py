@@ -1,7 +1,9 @@
 """The simulation service: request checks with clear messages, the JSON document, work-precision data."""
 
+from contextlib import contextmanager
 from types import SimpleNamespace
 
+import numpy as np
 import pytest
 
 from app.numerics import limits
@@ -188,3 +190,52 @@ def test_reference_run_beside_the_run_gives_the_same_estimate(monkeypatch):
     assert started == [True, False]
     assert beside["stats"]["error_estimate"] == after["stats"]["error_estimate"]
     assert beside["stats"]["error_reference"] == after["stats"]["error_reference"]
+
+
+def test_auto_choosing_radau_waits_for_the_python_loop_slot(monkeypatch):
+    """The throttle looks at the planned method: auto resolving to Radau (a stiff start) is a Python step
+    loop, so it is refused as busy while another scipy run holds the one slot, and runs once it is free."""
+    from app.engine.derive import derive
+    from app.numerics.errors import Busy
+    from tests.numerics.extreme_cases import circular_radius
+    from tests.numerics.systems import STIFF_SPRING
+
+    d = derive(STIFF_SPRING)
+    quiet = request(initial={"r": circular_radius(1e6, 1.0, 1.0), "theta_dot": 1.0}, t_end=1.0, rtol=1e-6, atol=1e-8)
+    monkeypatch.setattr(limits, "WALL_SECONDS", 0.2)
+    assert simulation._PYTHON_LOOP.acquire(timeout=1.0)  # another scipy run is in progress
+    try:
+        with pytest.raises(Busy, match="Python step loop"):
+            simulation.simulate_derivation(d, quiet)
+        # a compiled run (auto on a non-stiff start of the same system) does not wait for that slot
+        excited = simulation.simulate_derivation(d, request(initial={"r": 1.001, "theta_dot": 1.0}, t_end=0.01))
+        assert excited["stats"]["method"] != "Radau" and excited["stats"]["path"] == "compiled"
+    finally:
+        simulation._PYTHON_LOOP.release()
+    doc = simulation.simulate_derivation(d, quiet)
+    assert doc["stats"]["method"] == "Radau" and doc["stats"]["reason"].startswith("stiff")
+
+
+def test_auto_stiff_handover_takes_the_python_loop_slot(monkeypatch):
+    """A run that meets stiffness on the way and is redone with Radau asks for the slot then (without an
+    estimate here, so that nothing else in the plan is a Python loop)."""
+    from app.numerics import plan as plan_module
+    from app.numerics.methods import NONSTIFF
+    from app.numerics.simulate import run
+    from tests.numerics.extreme_cases import circular_radius, system_for
+
+    s = system_for("stiff-spring")
+    k = np.array([1.0, 1e6, 1.0])
+    y0 = np.array([circular_radius(1e6, 1.0, 1.0) * (1 + 1e-9), 0.0, 0.0, 1.0])
+    monkeypatch.setattr(plan_module, "choose", lambda system, analysis: (NONSTIFF, "forced for the test"))
+    planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4, estimate=False)
+    assert not planned.python_loop
+    entered = []
+
+    @contextmanager
+    def spy():
+        entered.append(True)
+        yield
+
+    outcome = run(planned, python_loop=spy)
+    assert outcome.method == "Radau" and entered == [True]

@@ -63,10 +63,13 @@ class Trajectory:
 class Method:
     """Base class: a named integrator with its applicability rule."""
 
+    # Class attributes describe a method (as scipy's own ``RK45`` does); a subclass with a ``name`` is a
+    # concrete method and the registry (``app.numerics.methods``) lists it.
     name = ""
-    family = ""  # "explicit", "implicit", "symplectic"
+    family = ""  # "explicit", "implicit", "symplectic", "switching"
     order = 0
-    compiled = False
+    compiled = False  # the step loop runs in numba (else in Python, holding the GIL throughout)
+    implicit = False  # solves equations per step (with the engine's Jacobian where it takes one)
     summary = ""
 
     kernel_module = ""  # the compiled loop this method runs (imported, so compiled or loaded, by prepare)

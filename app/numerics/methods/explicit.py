@@ -53,9 +53,9 @@ class CompiledVern8(Method):
     order = 8
     compiled = True
     kernel_module = "app.numerics.kernels.vern8"
-    summary = "Verner's 8(7) pair, adaptive steps, 7th-order dense output; the loop runs in numba"
+    summary = "Verner's 8(7) pair, adaptive steps, 7th-order dense output, stiffness test; the loop runs in numba"
 
-    def _run(self, problem: Problem) -> Trajectory:
+    def _run(self, problem: Problem, stop_on_stiff: bool = False) -> Trajectory:
         from app.numerics.kernels import vern8
 
         rhs = problem.system.bound("rhs")
@@ -63,7 +63,7 @@ class CompiledVern8(Method):
         fy = np.empty_like(y)
         st = np.zeros(vern8.STATE_SIZE)
         Y = np.empty((problem.t.size, y.size))
-        args = (problem.k, problem.t, problem.rtol, problem.atol, problem.bound)
+        args = (problem.k, problem.t, problem.rtol, problem.atol, problem.bound, int(stop_on_stiff))
         status = drive(lambda chunk: vern8.run(rhs, *args, chunk, y, fy, st, Y), lambda: st[vern8.STEPS], problem, self)
         trajectory = finished(
             self,
@@ -74,6 +74,7 @@ class CompiledVern8(Method):
             last=y,
             steps=int(st[vern8.STEPS]),
             rhs_evaluations=int(st[vern8.NFEV]),
+            stiff_detected=bool(st[vern8.STIFF_SEEN]),
         )
         if st[vern8.REJECTED]:
             trajectory.notes.append(f"{int(st[vern8.REJECTED])} rejected steps")

@@ -14,7 +14,7 @@ from __future__ import annotations
 import time
 
 import numpy as np
-from scipy.integrate import BDF, DOP853, LSODA, RK45, Radau
+from scipy.integrate import BDF, DOP853, LSODA, RK45, OdeSolver, Radau
 
 from app.numerics.methods.base import Method, Problem, Trajectory, outside_names
 
@@ -27,25 +27,11 @@ class _NotEvaluable(Exception):
     pass
 
 
-ORDERS = {"DOP853": 8, "RK45": 5, "Radau": 5, "BDF": 5, "LSODA": 12}
-FAMILIES = {"DOP853": "explicit", "RK45": "explicit", "Radau": "implicit", "BDF": "implicit", "LSODA": "switching"}
-SUMMARIES = {
-    "DOP853": "scipy's Dormand-Prince 8(5,3), Python step loop",
-    "RK45": "scipy's Dormand-Prince 5(4), Python step loop",
-    "Radau": "scipy's Radau IIA order 5, implicit (stiff problems)",
-    "BDF": "scipy's variable-order backward differentiation, implicit (stiff problems)",
-    "LSODA": "scipy's LSODA: Adams, switching to BDF when it detects stiffness",
-}
-
-
 class ScipyMethod(Method):
-    compiled = False
+    """A scipy ``OdeSolver`` class driven step by step; a subclass names the solver and describes it."""
 
-    def __init__(self, scipy_name: str):
-        self.name = scipy_name
-        self.order = ORDERS[scipy_name]
-        self.family = FAMILIES[scipy_name]
-        self.summary = SUMMARIES[scipy_name]
+    compiled = False
+    solver: type[OdeSolver]
 
     def _run(self, problem: Problem, **options) -> Trajectory:
         rhs = problem.system.python["rhs"]
@@ -75,10 +61,10 @@ class ScipyMethod(Method):
         solver = None
         try:
             options = {}
-            if self.family != "explicit" and "jac" in problem.system.python:
+            if self.implicit and "jac" in problem.system.python:
                 # the engine's own Jacobian (differentiated, not simplified) instead of finite differences
                 options["jac"] = lambda t, y: problem.system.jacobian(t, y, k)
-            solver = SOLVERS[self.name](
+            solver = self.solver(
                 fun, t_out[0], problem.y0, problem.t_end, rtol=problem.rtol, atol=problem.atol, **options
             )
             while solver.status == "running":
@@ -126,4 +112,44 @@ class ScipyMethod(Method):
         return trajectory
 
 
-SOLVERS = {"DOP853": DOP853, "RK45": RK45, "Radau": Radau, "BDF": BDF, "LSODA": LSODA}
+class ScipyDOP853(ScipyMethod):
+    name = "DOP853"
+    solver = DOP853
+    family = "explicit"
+    order = 8
+    summary = "scipy's Dormand-Prince 8(5,3), Python step loop"
+
+
+class ScipyRK45(ScipyMethod):
+    name = "RK45"
+    solver = RK45
+    family = "explicit"
+    order = 5
+    summary = "scipy's Dormand-Prince 5(4), Python step loop"
+
+
+class ScipyRadau(ScipyMethod):
+    name = "Radau"
+    solver = Radau
+    family = "implicit"
+    implicit = True
+    order = 5
+    summary = "scipy's Radau IIA order 5, implicit (stiff problems)"
+
+
+class ScipyBDF(ScipyMethod):
+    name = "BDF"
+    solver = BDF
+    family = "implicit"
+    implicit = True
+    order = 5
+    summary = "scipy's variable-order backward differentiation, implicit (stiff problems)"
+
+
+class ScipyLSODA(ScipyMethod):
+    name = "LSODA"
+    solver = LSODA
+    family = "switching"
+    implicit = True
+    order = 12
+    summary = "scipy's LSODA: Adams, switching to BDF when it detects stiffness"

@@ -187,6 +187,7 @@ class Yoshida4(Composition):
 class GaussLegendre(FixedStep):
     name = "Gauss-Legendre"
     kernel_module = "app.numerics.kernels.gauss"
+    implicit = True
     stages = 3
     order = 6
     summary = "3-stage Gauss-Legendre collocation on (q, p), order 6, symplectic for any Hamiltonian, fixed step"

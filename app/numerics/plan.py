@@ -1,0 +1,104 @@
+"""The plan of one simulation: which method runs, which runs the error reference, and why.
+
+Deciding comes before running, so whoever runs the plan can look at the
+concrete methods: ``auto`` resolved (``choose``), the scipy fallback taken
+while the compiled code is not ready, the reference named.  The service takes
+its "one Python step loop at a time" throttle from ``Plan.python_loop``, which
+is right whatever was asked for (``auto`` choosing Radau is a Python loop).
+
+Only a run that meets stiffness on the way (``auto``'s explicit method hands
+over to Radau) changes method after planning; ``app.numerics.simulate`` asks
+for the throttle then.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from app.numerics.choose import Analysis, analyse, choose
+from app.numerics.errors import SimulationError
+from app.numerics.estimate import reference_name
+from app.numerics.methods import AUTO, FALLBACK, METHODS, NONSTIFF, Method, method
+from app.numerics.methods.symplectic import FixedStep
+from app.numerics.system import NumericSystem
+
+
+@dataclass(frozen=True)
+class Plan:
+    system: NumericSystem
+    k: np.ndarray
+    y0: np.ndarray
+    t_end: float
+    samples: int
+    rtol: float
+    atol: float
+    requested: str  # what was asked for: "auto" or a method's name
+    method: Method  # what runs
+    reason: str  # why, in a sentence or two
+    analysis: Analysis
+    path: str  # "compiled", "scipy" (a scipy method asked for or chosen), "scipy-fallback"
+    reference: Method | None  # the error estimate's reference run, None without an estimate
+
+    @property
+    def name(self) -> str:
+        return self.method.name
+
+    @property
+    def python_loop(self) -> bool:
+        """True when the run or its reference steps in Python (scipy), holding the GIL throughout."""
+        return not self.method.compiled or (self.reference is not None and not self.reference.compiled)
+
+    @property
+    def watch_stiffness(self) -> bool:
+        """``auto``'s explicit default stops when it meets stiffness, to be redone with Radau."""
+        return self.requested == AUTO and self.method.name == NONSTIFF
+
+
+def plan(
+    system: NumericSystem,
+    k: np.ndarray,
+    y0: np.ndarray,
+    t_end: float,
+    samples: int,
+    requested: str,
+    rtol: float,
+    atol: float,
+    estimate: bool = True,
+    wait_for_compile: bool = True,
+) -> Plan:
+    """Analyse the start, resolve ``auto``, check the method applies, and fall back to scipy while compiling.
+
+    With ``wait_for_compile=False`` (a server), ``auto`` picking a compiled method whose code (or
+    whose reference's code) is not ready yet in this process runs scipy's DOP853 on the generated
+    scalar right-hand side instead, run and reference; asking for a method by name always runs it."""
+    analysis = analyse(system, k, y0, t_end, rtol, np.full(y0.size, atol))
+    if requested == AUTO:
+        name, reason = choose(system, analysis)
+    else:
+        name, reason = method(requested).name, "requested"
+    chosen = METHODS[name]
+    why_not = chosen.applicable(system)
+    if why_not:
+        raise SimulationError(f"method {name} cannot integrate this system: {why_not}", "method")
+    path = "compiled" if chosen.compiled else "scipy"
+    reference = _reference(chosen, analysis.stiff, compiled=True) if estimate else None
+    if (
+        requested == AUTO
+        and chosen.compiled
+        and not wait_for_compile
+        and not (chosen.ready(system) and (reference is None or reference.ready(system)))
+    ):
+        reason = (
+            f"scipy's {FALLBACK} (Python step loop) answered, because the compiled code that auto picks here is "
+            f"still being compiled in the background; once it is ready auto runs {name}: {reason}"
+        )
+        chosen, path = METHODS[FALLBACK], "scipy-fallback"
+        reference = _reference(chosen, analysis.stiff, compiled=False) if estimate else None
+    return Plan(system, k, y0, t_end, samples, rtol, atol, requested, chosen, reason, analysis, path, reference)
+
+
+def _reference(chosen: Method, stiff: bool, compiled: bool) -> Method:
+    # a fixed-step method is its own reference (with half the step); an adaptive one a tighter run
+    return chosen if isinstance(chosen, FixedStep) else METHODS[reference_name(stiff, compiled)]
