@@ -101,9 +101,10 @@ PANELS: tuple[Panel, ...] = (
         "phase",
         "Phase portrait",
         "A coordinate against its rate of change. For one degree of freedom (or a reduction to one) the grey "
-        "curves are level sets of the Hamiltonian, each a possible orbit; the red curve through the unstable "
-        "equilibria (crosses) is the separatrix between swinging and going over the top, and angles are wrapped "
-        "into (−π, π]. The blue curve is this run and the red dot the current state.",
+        "curves are level sets of the Hamiltonian, each a possible orbit; the dashed red curve through the "
+        "unstable equilibria (red diamonds) is the separatrix between swinging and going over the top, green dots "
+        "are stable equilibria, and angles are wrapped into (−π, π]. The blue curve is this run and the red dot "
+        "the current state.",
         "always (level sets with one degree of freedom or a reduction to one)",
         lambda f: True,
     ),

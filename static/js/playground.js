@@ -15,6 +15,7 @@
  * and #playground-system (the request the page derived).
  */
 import { foldSteps, printReady, whenTypeset } from "./derivation.js";
+import { fetchJson } from "./api.js";
 import { connectSimulation } from "./simulation.js";
 
 foldSteps(document);
@@ -129,5 +130,11 @@ if (root && dataNode) {
     status: document.getElementById("run-status"),
     fetchRun: post,
     serial: true,
+    urls: {
+      // the modes are the declared system's (its parameter values); a section is at the run's values
+      modes: () => fetchJson(root.dataset.modesUrl, system),
+      poincare: ({ parameters, initial }) =>
+        fetchJson(root.dataset.poincareUrl, { ...system, parameters: body({ parameters }).parameters, initial }),
+    },
   });
 }
