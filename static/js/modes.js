@@ -35,7 +35,6 @@ export class ModesPanel {
     this.readout = section.querySelector(".readout");
     this.player = data.mechanism ? new Player(section, data.mechanism) : null;
     this.build();
-    this.measure();
   }
 
   unit(q) { return this.data.units[q] || "m"; }
@@ -162,16 +161,17 @@ export class ModesPanel {
     const e = this.equilibria[this.which];
     const m = this.measured && e && this.measured.find((x) => Object.entries(e.equilibrium).every(([q, v]) => Math.abs((x.equilibrium[q] ?? 0) - v) < 1e-9));
     if (!m) return;
-    table(this.freq, `Predicted and measured ω about ${this.where(e)} (small-amplitude runs, amplitude ${fmt(m.modes[0]?.amplitude)})`,
-      ["mode", "predicted ω (rad/s)", "measured ω (rad/s)", "difference"],
+    table(this.freq, `ω (rad/s) about ${this.where(e)}: predicted, and measured in runs of amplitude ${fmt(m.modes[0]?.amplitude)}`,
+      ["mode", "predicted", "measured", "difference"],
       m.modes.map((x, k) => [`${k + 1}`, x.predicted === null ? `ω² = ${fmt(x.omega_squared)}` : fmt(x.predicted), x.measured === null ? "–" : fmt(x.measured),
         x.relative_difference === null ? "–" : `${fmt(100 * x.relative_difference)} %`]));
     this.freq.dataset.measured = JSON.stringify(m.modes.map((x) => [x.predicted, x.measured]));
   }
 
   draw() {
-    // the modes are the engine's, at the default parameters: a new run of the scene leaves them as they are
-    if (!this.started) { this.started = true; this.play(); }
+    // the modes are the engine's, at the default parameters: a new run of the scene leaves them as they are;
+    // the measurement is asked for after the first run has been drawn (a playground session runs one job at a time)
+    if (!this.started) { this.started = true; this.play(); this.measure(); }
   }
 
   cursor() {}
