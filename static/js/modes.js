@@ -161,10 +161,12 @@ export class ModesPanel {
     const e = this.equilibria[this.which];
     const m = this.measured && e && this.measured.find((x) => Object.entries(e.equilibrium).every(([q, v]) => Math.abs((x.equilibrium[q] ?? 0) - v) < 1e-9));
     if (!m) return;
-    table(this.freq, `ω (rad/s) about ${this.where(e)}: predicted, and measured in runs of amplitude ${fmt(m.modes[0]?.amplitude)}`,
+    // a difference below 0.001 % is rounding and integration error, not physics: say so instead of printing it
+    const percent = (x) => (Math.abs(x) < 1e-5 ? "< 0.001 %" : `${fmt(100 * x)} %`);
+    table(this.freq, `ω in rad/s: predicted, and measured in a run along each mode (amplitude ${fmt(m.modes[0]?.amplitude)})`,
       ["mode", "predicted", "measured", "difference"],
       m.modes.map((x, k) => [`${k + 1}`, x.predicted === null ? `ω² = ${fmt(x.omega_squared)}` : fmt(x.predicted), x.measured === null ? "–" : fmt(x.measured),
-        x.relative_difference === null ? "–" : `${fmt(100 * x.relative_difference)} %`]));
+        x.relative_difference === null ? "–" : percent(x.relative_difference)]));
     this.freq.dataset.measured = JSON.stringify(m.modes.map((x) => [x.predicted, x.measured]));
   }
 
