@@ -69,8 +69,11 @@ function extremes(xs, V, cyclic) {
   for (let k = 0; k < n; k++) {
     const a = cyclic ? V[(k - 1 + n) % n] : V[k - 1], b = V[k], c = cyclic ? V[(k + 1) % n] : V[k + 1];
     if (![a, b, c].every(Number.isFinite)) continue;
-    // a grid point within rounding of 0 is 0
-    const x = Math.abs(xs[k]) < 1e-9 * (xs[xs.length - 1] - xs[0]) ? 0 : xs[k];
+    // the vertex of the parabola through the three grid values, then a value within rounding of 0 is 0
+    const h = xs[1] - xs[0], curve = a - 2 * b + c;
+    let x = curve !== 0 ? xs[k] - (h * (c - a)) / (2 * curve) : xs[k];
+    if (Math.abs(x - xs[k]) > h) x = xs[k];
+    if (Math.abs(x) < 1e-3 * h) x = 0;
     if (b < a && b <= c) out.push({ x, V: b, stable: true });
     else if (b > a && b >= c) out.push({ x, V: b, stable: false });
   }
@@ -87,7 +90,7 @@ function padded(values, nonnegative) {
 /** The one-coordinate model of a run: x, V(x), m(x) on a grid, the run's rate and its level; null without one. */
 function model(run) {
   const data = run.data;
-  let r, Vf, Mf, level, whole;
+  let r, Vf, Mf, level, whole, held = "";
   if (data.reduction) {
     const red = reduced(run);
     const mass = compile(data.reduction.mass);
@@ -96,6 +99,7 @@ function model(run) {
     Mf = (x) => mass(red.at(x));
     level = red.Er;
     whole = !Object.keys(red.P).length; // no conserved momentum held: the coordinate is the whole system
+    held = Object.entries(red.P).map(([k, v]) => `${data.labels[k] || k} = ${fmt(v)}`).join(", ");
   } else if (data.coordinates.length === 1 && data.trees.hamiltonian) {
     // h = T2 − T0 + U has no term linear in the rate: V = h(q, 0), m = h(q, 1) + h(q, −1) − 2 h(q, 0)
     r = data.coordinates[0];
@@ -113,7 +117,7 @@ function model(run) {
   const xs = Array.from({ length: GRID }, (_, k) => lo + ((hi - lo) * k) / (GRID - 1));
   const V = xs.map((x) => { const y = Vf(x); return Number.isFinite(y) ? y : NaN; });
   const m = xs.map((x) => { const y = Mf(x); return Number.isFinite(y) ? y : NaN; });
-  return { r, angle, turn, xs, V, m, values, rates, level, lo, hi };
+  return { r, angle, turn, xs, V, m, values, rates, level, lo, hi, held };
 }
 
 export class PhasePanel {
@@ -191,7 +195,8 @@ export class PhasePanel {
       : ` Its level H = ${fmt(E0)} J lies below the separatrix (${fmt(Es)} J): it swings back and forth.`;
     const forced = run.data.forced ? " A non-conservative force acts, so the run crosses the level sets instead of following one." : "";
     const eq = found.length ? ` Equilibria in view: ${found.map((e) => `${lr} = ${fmt(e.x)} (${e.stable ? "stable" : "unstable"})`).join(", ")}.` : "";
-    this.readout.textContent = `${lr} against its rate${angle && m.turn ? ", the angle wrapped into (−π, π]" : ""}.${kind}${eq}${forced}`;
+    const reduction = m.held ? ` The other coordinates are cyclic: their momenta stay at ${m.held} (the initial state's), which leaves H a function of ${lr} and its rate.` : "";
+    this.readout.textContent = `${lr} against its rate${angle && m.turn ? ", the angle wrapped into (−π, π]" : ""}.${reduction}${kind}${eq}${forced}`;
     seriesTable(this.summary, `Phase portrait of ${lr}`, run.t, [{ name: lr, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[r + "_dot"], values: m.rates }]);
     this.marks();
   }
