@@ -87,3 +87,12 @@ def measure_scene(scene_id: str) -> list[dict[str, Any]]:
     return _cache.get(
         scene_id, lambda: measure(derivation(scene_id), doc, scene_id, doc.get("constraint_forces") or [])
     )
+
+
+def warm_all() -> None:
+    """Measure every scene that has an equilibrium with an oscillating mode (run at set-up, see app.service.warm)."""
+    from app.service.derivations import SCENES, derivation_document
+
+    for scene_id in SCENES:
+        if oscillating_equilibria(derivation_document(scene_id)):
+            measure_scene(scene_id)
