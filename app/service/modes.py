@@ -33,7 +33,7 @@ AMPLITUDE = 1e-4  # of the largest component, in the coordinate's own unit
 CYCLES = 20  # of the mode measured
 SAMPLES_PER_CYCLE = 200
 
-_cache = JsonCache("modes-measured", source_fingerprint("engine", "scenes", "numerics", "viz"))
+_cache = JsonCache("modes-measured", source_fingerprint("engine", "scenes", "numerics", "viz", "service"))
 
 
 def measure(
