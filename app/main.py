@@ -9,7 +9,7 @@ from fastapi import FastAPI
 
 from app.service import simulation
 from app.settings import settings
-from app.web import api_scenes, errors, limits, pages
+from app.web import api_beyond, api_scenes, errors, limits, pages
 from app.web.api_check import router as check_router
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
@@ -38,7 +38,7 @@ errors.install(app)
 app.add_middleware(ApiGzip)
 limits.install(app)  # every POST body capped before it is read
 
-ROUTERS = [api_scenes.router, pages.router, user_router, simulate_router, playground_router, check_router]
+ROUTERS = [api_scenes.router, api_beyond.router, pages.router, user_router, simulate_router, playground_router, check_router]
 app.mount("/static", static_app, name="static")
 for router in ROUTERS:
     app.include_router(router)

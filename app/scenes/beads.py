@@ -50,7 +50,6 @@ HELIX_BEAD = Scene(
     ),
     initial={"z": 0.0, "z_dot": 3.0},
     t_end=4.0,
-    panels=("animation-3d", "energy", "phase", "constraint-force", "work-precision"),
 )
 
 ROTATING_PARABOLA = Scene(
@@ -97,16 +96,7 @@ ROTATING_PARABOLA = Scene(
     ),
     initial={"rho": 0.5, "rho_dot": 0.0},
     t_end=10.0,
-    panels=(
-        "animation-2d",
-        "energy",
-        "h-vs-e",
-        "phase",
-        "effective-potential",
-        "small-oscillations",
-        "constraint-force",
-        "work-precision",
-    ),
+    panels=("effective-potential", "small-oscillations"),
     errata=(
         Erratum(
             chapter="h = E when dr/dt (partial) = 0, i.e. the particle is not moving",

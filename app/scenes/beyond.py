@@ -39,7 +39,7 @@ DOUBLE_PENDULUM = Scene(
     # chaotic from this start (nearby runs part at about e^(1.2 t)): past about 10 s no double-precision
     # run can be trusted, so the default run stops where its error estimate is still small
     t_end=10.0,
-    panels=("animation-2d", "energy", "phase", "work-precision"),
+    panels=("poincare",),
 )
 
 COUPLED_OSCILLATORS = Scene(
@@ -72,5 +72,5 @@ COUPLED_OSCILLATORS = Scene(
     ),
     initial={"x1": 0.2, "x1_dot": 0.0, "x2": 0.0, "x2_dot": 0.0},
     t_end=30.0,
-    panels=("animation-2d", "energy", "phase", "work-precision"),
+    panels=("poincare",),
 )

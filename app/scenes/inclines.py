@@ -35,7 +35,6 @@ INCLINE_BLOCK = Scene(
     ),
     initial={"X": 0.0, "X_dot": 3.0},
     t_end=2.0,
-    panels=("animation-2d", "energy", "phase", "constraint-force", "work-precision"),
     errata=(
         Erratum(
             chapter="statement: a bead on a helix (Ex. 4.2's text repeated)",
@@ -104,7 +103,6 @@ MOVABLE_INCLINE = Scene(
     ),
     initial={"X": 0.0, "X_dot": 0.0, "D": 0.0, "D_dot": 0.0},
     t_end=1.5,
-    panels=("animation-2d", "energy", "momenta", "phase", "constraint-force", "work-precision"),
     errata=(
         Erratum(
             chapter="x = X_dot + D cos(alpha)",

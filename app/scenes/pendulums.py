@@ -40,15 +40,7 @@ SIMPLE_PENDULUM = Scene(
     ),
     initial={"theta": 1.0, "theta_dot": 0.0},
     t_end=10.0,
-    panels=(
-        "animation-2d",
-        "energy",
-        "phase",
-        "effective-potential",
-        "small-oscillations",
-        "constraint-force",
-        "work-precision",
-    ),
+    panels=("effective-potential", "small-oscillations"),
     errata=(
         Erratum(
             chapter="v = x_dot^2 + y_dot^2 + z_dot^2",
@@ -106,7 +98,7 @@ SPHERICAL_PENDULUM = Scene(
     ),
     initial={"theta": 2.2, "theta_dot": 0.0, "phi": 0.0, "phi_dot": 2.0},
     t_end=10.0,
-    panels=("animation-3d", "energy", "momenta", "phase", "effective-potential", "constraint-force", "work-precision"),
+    panels=("effective-potential",),
     errata=(
         Erratum(
             chapter="s = (R, R theta, R sin(theta) phi)",
@@ -162,5 +154,4 @@ DAMPED_PENDULUM = Scene(
     ),
     initial={"theta": 1.5, "theta_dot": 0.0},
     t_end=20.0,
-    panels=("animation-2d", "energy", "phase", "constraint-force", "work-precision"),
 )

@@ -31,15 +31,7 @@ TABLETOP_SPRING = Scene(
     ),
     initial={"r": 1.0, "r_dot": 0.0, "theta": 0.0, "theta_dot": 1.0},
     t_end=10.0,
-    panels=(
-        "animation-2d",
-        "energy",
-        "momenta",
-        "phase",
-        "effective-potential",
-        "small-oscillations",
-        "work-precision",
-    ),
+    panels=("effective-potential", "small-oscillations"),
     errata=(
         Erratum(
             chapter="F(r) = k r r_hat toward the origin; later F(r) = dU/dr = -k r",
@@ -125,7 +117,6 @@ RAIL_TWO_BODY = Scene(
     ),
     initial={"x1": 0.0, "x1_dot": 0.5, "x2": 1.5, "x2_dot": 0.0},
     t_end=10.0,
-    panels=("animation-2d", "energy", "phase", "work-precision"),
     errata=(
         Erratum(
             chapter="action-reaction pairs: d/dx1 = d/dx2",
@@ -190,7 +181,6 @@ PULLEY = Scene(
     ),
     initial={"y1": 0.0, "y1_dot": 0.0, "y2": 0.0, "y2_dot": 0.0},
     t_end=2.0,
-    panels=("animation-2d", "energy", "phase", "constraint-force", "work-precision"),
     errata=(
         Erratum(
             chapter="y1_dot = -g + (-4 m2 g)/(m1 + m4m1m2/M)",

@@ -12,20 +12,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-# What a scene's page may show, in display order; a scene declares the panels it needs.
-PANELS = (
-    "animation-2d",  # the mechanism in a plane
-    "animation-3d",  # the mechanism in space (only where the motion is 3-D)
-    "energy",  # T, U, E and h against time, and their drift
-    "h-vs-e",  # h and E side by side where they differ
-    "momenta",  # conserved generalized momenta against time
-    "phase",  # phase portrait (q, q_dot)
-    "effective-potential",  # U_eff with the energy level and turning points
-    "small-oscillations",  # predicted against measured frequency
-    "constraint-force",  # forces of constraint against time, slack flagged
-    "work-precision",  # error against run time
-)
-
 
 @dataclass(frozen=True)
 class Parameter:
@@ -139,7 +125,9 @@ class Erratum:
 class Scene:
     """A chapter example: a system plus what the page and API say about it.
 
-    ``beyond_chapter`` marks a scene that goes past the chapter (normal modes of
+    ``panels`` names the optional panels the page should add (the vocabulary and
+    which panels are optional: ``app/viz/panels.py``; the others appear wherever
+    the derivation supports them).  ``beyond_chapter`` marks a scene that goes past the chapter (normal modes of
     several coordinates, chaos); its ``section`` names the chapter section it
     builds on, and the contents list it under a heading of its own.
     """

@@ -14,7 +14,10 @@ call with a derivation; ``section_of_scene`` looks the scene up.  The result:
 
 from __future__ import annotations
 
+import json
+import threading
 import time
+from collections import OrderedDict
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -112,3 +115,23 @@ def section_of_scene(scene_id: str, **options: Any) -> dict[str, Any]:
     return section_of_derivation(
         derivation(scene_id), key=scene_id, defaults=s.initial, constraint_forces=forces, **options
     )
+
+
+_sections: OrderedDict[str, dict[str, Any]] = OrderedDict()
+_sections_lock = threading.Lock()
+CACHED_SECTIONS = 32
+
+
+def cached_section_of_scene(scene_id: str, **options: Any) -> dict[str, Any]:
+    """``section_of_scene`` with the last CACHED_SECTIONS answers kept (a page asks again after each run)."""
+    key = json.dumps([scene_id, options], sort_keys=True, default=str)
+    with _sections_lock:
+        if key in _sections:
+            _sections.move_to_end(key)
+            return _sections[key]
+    result = section_of_scene(scene_id, **options)
+    with _sections_lock:
+        _sections[key] = result
+        while len(_sections) > CACHED_SECTIONS:
+            _sections.popitem(last=False)
+    return result

@@ -317,6 +317,35 @@ def simulate_job(spec: dict[str, Any], request: Any) -> bytes:
     return _guarded(run)
 
 
+def poincare_job(spec: dict[str, Any], options: dict[str, Any]) -> bytes:
+    """Worker job: the Poincaré section of a user system (app.service.poincare)."""
+    from app.numerics.errors import SimulationError
+    from app.service.poincare import section_of_derivation
+
+    def run() -> dict[str, Any]:
+        d = _derive(spec)
+        try:
+            # parameter values are the declared ones (the derivation's defaults)
+            return section_of_derivation(d, **options)
+        except SimulationError as exc:
+            raise InvalidSystem(str(exc), (exc.part,) if exc.part else (), exc.part) from None
+
+    return _guarded(run)
+
+
+def modes_job(spec: dict[str, Any], normal_modes: list[dict[str, Any]]) -> bytes:
+    """Worker job: predicted against measured normal-mode frequencies of a user system (app.service.modes).
+
+    ``normal_modes`` is the derivation document's block (the parent has the document cached).
+    """
+    from app.service.modes import measure
+
+    def run() -> list[dict[str, Any]]:
+        return measure(_derive(spec), {"normal_modes": normal_modes})
+
+    return _guarded(run)
+
+
 def export_job(
     spec: dict[str, Any], fmt: str, initial: dict[str, float], t_end: float | None, document: bytes
 ) -> bytes:
@@ -425,7 +454,9 @@ class UserSystems:
         # a client that goes away does not stop the job the others wait for
         return await asyncio.shield(running)
 
-    async def run_job(self, cache: ResultCache, key: str, client: str, address: str, timeout: float, job, *args) -> bytes:
+    async def run_job(
+        self, cache: ResultCache, key: str, client: str, address: str, timeout: float, job, *args
+    ) -> bytes:
         """Another kind of job on user text (checking a student's answer): same cache, sharing, fair share and pool."""
         return await self._run(cache, key, client, address, timeout, job, *args)
 
@@ -459,6 +490,20 @@ class UserSystems:
         check_system(spec)
         key = spec_key(spec, request.model_dump(mode="json"))
         return await self._run(self.simulations, key, client, address, SIMULATE_SECONDS, simulate_job, spec, request)
+
+    async def poincare(self, spec: dict[str, Any], options: dict[str, Any], client: str, address: str) -> bytes:
+        check_system(spec)
+        key = spec_key(spec, "poincare", options)
+        return await self._run(self.simulations, key, client, address, SIMULATE_SECONDS, poincare_job, spec, options)
+
+    async def modes(self, spec: dict[str, Any], client: str, address: str) -> bytes:
+        check_system(spec)
+        key = spec_key(spec, "modes")
+        cached = self.simulations.get(key)
+        if cached is not None:
+            return cached
+        normal_modes = json.loads(await self.derive(spec, client, address)).get("normal_modes") or []
+        return await self._run(self.simulations, key, client, address, SIMULATE_SECONDS, modes_job, spec, normal_modes)
 
     async def export(
         self, spec: dict[str, Any], fmt: str, initial: dict[str, float], t_end: float | None, client: str, address: str

@@ -1,14 +1,14 @@
 """Precompute everything the chapter's pages need: run at image build and before serving.
 
 Derivations (JSON on disk), numba's compiled kernels and each scene's right-hand
-sides (numba's disk cache), and the work-precision reports (JSON on disk).
+sides (numba's disk cache), the work-precision reports and the measured normal modes (JSON on disk).
 
     python -m app.service.warm
 """
 
 import time
 
-from app.service import derivations, simulation, work_precision
+from app.service import derivations, modes, simulation, work_precision
 
 
 def main() -> None:
@@ -16,6 +16,7 @@ def main() -> None:
         ("derivations", derivations.warm_all),
         ("compiled integrators", simulation.warm_all),
         ("work-precision reports", work_precision.warm_all),
+        ("measured normal modes", modes.warm_all),
     ):
         start = time.perf_counter()
         step()

@@ -15,11 +15,11 @@ from collections.abc import Sequence
 from typing import Any
 
 from app.engine.report import CORE_STEPS
-from app.scenes.types import PANELS
 from app.viz.diagrams import diagram
-from app.viz.exprtree import maybe_tree
+from app.viz.exprtree import TreeError, maybe_tree, tree
 from app.viz.mechanism import mechanism
 from app.viz.names import label
+from app.viz.panels import Facts, oscillating_equilibria, shown, texts
 
 LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collapsed
 RTOLS = ("1e-3", "1e-4", "1e-6", "1e-8", "1e-10", "1e-12")
@@ -257,20 +257,34 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular) -> dict[s
         ],  # fmt: skip
         "mechanism": spec,
         "methods": list(methods),
+        # equilibria at rest with an oscillating mode (numbers at the default parameters), for the modes panel
+        "normal_modes": oscillating_equilibria(doc),
     }
 
 
-def _panels(declared: Sequence[str], doc: dict[str, Any], reduction, spec) -> list[str]:
-    """The declared panels this scene has data for, in the declared order."""
-    has = {
-        "animation-2d": spec is not None and spec["dim"] == 2,
-        "animation-3d": spec is not None and spec["dim"] == 3,
-        "effective-potential": reduction is not None,
-        "small-oscillations": reduction is not None and reduction["omega_squared"] is not None,
-        "constraint-force": bool(doc.get("constraint_forces")),
-        "momenta": any(c["name"].startswith("p_") for c in doc.get("conserved", [])),
-    }
-    return [p for p in declared if p in PANELS and has.get(p, True)]
+def _panels(declared: Sequence[str], doc: dict[str, Any], reduction, spec, scene: bool) -> list[str]:
+    """The panels this page shows (app/viz/panels.py): every available one, optional ones where declared."""
+    return shown(Facts(doc, reduction, spec["dim"] if spec is not None else None, scene), declared)
+
+
+def moves_in_3d(particles: Sequence[tuple[str, Sequence[str]]], coordinates: Sequence[str]) -> bool:
+    """Some body moves along each of the three axes (so the mechanism is drawn in space)."""
+    moving = set(coordinates) | {"t"}
+
+    def names(node: Any) -> set[str]:
+        if isinstance(node, str):
+            return {node}
+        if isinstance(node, list):
+            return set().union(*(names(c) for c in node[1:])) if len(node) > 1 else set()
+        return set()
+
+    def moves(text: str) -> bool:
+        try:
+            return bool(names(tree(text)) & moving)
+        except TreeError:
+            return False
+
+    return all(any(moves(pos[i]) for _, pos in particles) for i in range(3))
 
 
 def scene_page(
@@ -279,12 +293,18 @@ def scene_page(
     particles: Sequence[tuple[str, Sequence[str]]] = (),
     methods: Sequence[str] = ("auto",),
     nonnegative: Sequence[str] = (),
+    scene: bool = True,
 ) -> dict[str, Any]:
-    """The page model of one scene; ``info`` holds title, section, summary, statement, figure, panels, initial, t_end."""
+    """The page model of one scene; ``info`` holds title, section, summary, statement, figure, panels, initial, t_end.
+
+    ``info["panels"]`` are the optional panels asked for; ``scene`` is False for a user's system.
+    """
     declared = list(info.get("panels", ()))
     reduction = _reduction(doc)
-    spec = mechanism(info.get("id", doc.get("id", "")), particles, doc["coordinates"], "animation-3d" in declared)
-    panels = _panels(declared, doc, reduction, spec)
+    spec = mechanism(
+        info.get("id", doc.get("id", "")), particles, doc["coordinates"], moves_in_3d(particles, doc["coordinates"])
+    )
+    panels = _panels(declared, doc, reduction, spec, scene)
     info = {**info, "panels": panels}
     defaults = {k: v["default"] for k, v in doc["parameters"].items()}
     angular = angles(doc, particles)
@@ -293,6 +313,7 @@ def scene_page(
         "info": info,
         "declared_panels": declared,
         "panels": panels,
+        "panel_text": texts(),
         "diagram": diagram(
             info.get("id", ""),
             f"Set-up: {info.get('title', '')}",

@@ -68,8 +68,14 @@ def _card_diagram(s: Any) -> str:
 
 @router.get("/", response_class=HTMLResponse)
 def index(request: Request) -> HTMLResponse:
+    # the panels each page shows (app/viz/panels.py) tell the contents where a section is illustrated
     scenes = [
-        {**derivations.scene_summary(s), "diagram": _card_diagram(s), "url": f"/scenes/{s.id}"}
+        {
+            **derivations.scene_summary(s),
+            "panels": page_model(s.id)["panels"],
+            "diagram": _card_diagram(s),
+            "url": f"/scenes/{s.id}",
+        }
         for s in derivations.SCENES.values()
     ]
     return templates.TemplateResponse(request, "index.html", {"toc": table_of_contents(scenes), "scenes": scenes})

@@ -29,7 +29,6 @@ from app.service import user_systems
 from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
 from app.service.user_systems import InvalidSystem
 from app.service.worker import JobFailed
-from app.viz.exprtree import TreeError, tree
 from app.viz.page_model import angles, scene_page
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
 from app.web.limits import TooDeep, check_json_depth
@@ -47,6 +46,8 @@ EXAMPLES = {
     "Bead on a spinning hoop (L alone)": SPINNING_HOOP,
 }
 AXES = ("x", "y", "z")
+# the optional panels (app/viz/panels.py) a user's system gets wherever its derivation supports them
+PANELS = ("effective-potential", "small-oscillations", "poincare")
 
 
 @dataclass
@@ -249,33 +250,9 @@ def _display_particles(spec: dict[str, Any], doc: dict[str, Any]) -> list[tuple[
     return beads
 
 
-def _moves_in_3d(particles: list[tuple[str, tuple[str, str, str]]], coordinates: list[str]) -> bool:
-    moving = set(coordinates) | {"t"}
-
-    def names(node: Any) -> set[str]:
-        if isinstance(node, str):
-            return {node}
-        if isinstance(node, list):
-            return set().union(*(names(c) for c in node[1:])) if len(node) > 1 else set()
-        return set()
-
-    def moves(text: str) -> bool:
-        try:
-            return bool(names(tree(text)) & moving)
-        except TreeError:
-            return False
-
-    return all(any(moves(pos[i]) for _, pos in particles) for i in range(3))
-
-
 def model_of(spec: dict[str, Any], doc: dict[str, Any]) -> dict[str, Any]:
     """The scene page model for a user system (pure Python: expression trees, no SymPy)."""
     particles = _display_particles(spec, doc)
-    three_d = bool(spec.get("particles")) and _moves_in_3d(particles, spec["coordinates"])
-    panels = ["animation-3d" if three_d else "animation-2d", "energy"]
-    if doc["hamiltonian_equals_energy"] is False:
-        panels.append("h-vs-e")
-    panels += ["momenta", "phase", "effective-potential", "small-oscillations"]
     info = {
         "id": "playground",
         "title": "Your system",
@@ -283,11 +260,11 @@ def model_of(spec: dict[str, Any], doc: dict[str, Any]) -> dict[str, Any]:
         "summary": "",
         "statement": "",
         "figure": "The system as declared, drawn at its initial state.",
-        "panels": panels,
+        "panels": PANELS,
         "initial": {q: 1.0 for q in spec["coordinates"]},
         "t_end": 10.0,
     }
-    return scene_page(doc, info, particles, CHOICES, spec.get("nonnegative") or ())
+    return scene_page(doc, info, particles, CHOICES, spec.get("nonnegative") or (), scene=False)
 
 
 def _example_links() -> list[dict[str, str]]:

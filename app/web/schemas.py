@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from pydantic import BaseModel, ConfigDict
+from pydantic import BaseModel, ConfigDict, Field
 
 from app.service.fairness import COOKIE
 
@@ -43,7 +43,7 @@ class SceneSummary(BaseModel):
                 "parameters": {"m": {"default": 1.0, "unit": "kg", "min": 0.01, "max": 100.0, "description": "mass"}},
                 "initial": {"theta": 1.0, "theta_dot": 0.0},
                 "t_end": 10.0,
-                "panels": ["animation-2d"],
+                "panels": ["effective-potential", "small-oscillations"],
             }
         }
     )
@@ -56,5 +56,8 @@ class SceneSummary(BaseModel):
     parameters: dict[str, ParameterInfo]
     initial: dict[str, float]
     t_end: float
-    panels: list[str]
+    panels: list[str] = Field(
+        description="The optional panels the scene asks for (app/viz/panels.py); its page also shows every panel "
+        "whose availability rule holds for the derivation."
+    )
     beyond_chapter: bool = False

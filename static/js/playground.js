@@ -15,6 +15,7 @@
  * and #playground-system (the request the page derived).
  */
 import { foldSteps, printReady, whenTypeset } from "./derivation.js";
+import { fetchJson } from "./api.js";
 import { connectSimulation } from "./simulation.js";
 
 foldSteps(document);
@@ -121,6 +122,13 @@ async function post(request, signal) {
   }
 }
 
+let queue = Promise.resolve();
+function oneAtATime(job) {
+  const next = queue.then(job, job);
+  queue = next.catch(() => null);
+  return next;
+}
+
 if (root && dataNode) {
   connectSimulation({
     form: document.getElementById("controls"),
@@ -129,5 +137,12 @@ if (root && dataNode) {
     status: document.getElementById("run-status"),
     fetchRun: post,
     serial: true,
+    urls: {
+      // the modes are the declared system's (its parameter values); a section is at the run's values.
+      // One at a time: the worker pool runs one job per session.
+      modes: () => oneAtATime(() => fetchJson(root.dataset.modesUrl, system)),
+      poincare: ({ parameters, initial }) => oneAtATime(() =>
+        fetchJson(root.dataset.poincareUrl, { ...system, parameters: body({ parameters }).parameters, initial })),
+    },
   });
 }

@@ -7,13 +7,17 @@
  *                           // an SVG overlay (plotkit.js Overlay), never a Plotly relayout
  *   panel.preview           // false for panels that need the server's run (forces, error report)
  *
- * Panels: energy, h-vs-e, momenta, phase, effective-potential, small-oscillations,
- * constraint-force (time plots with a cursor line), and work-precision (drawn from
- * GET /api/scenes/{id}/work-precision plus the current run's error estimate).
+ * Panels (their names, titles and availability: app/viz/panels.py): energy, h-vs-e, momenta,
+ * constraint-force (time plots with a cursor line), phase (phase.js), effective-potential and
+ * small-oscillations (reduction.js), modes (modes.js), poincare (poincare.js), and work-precision
+ * (drawn from GET /api/scenes/{id}/work-precision plus the current run's error estimate).
  * Each panel writes a text alternative (a data table) into its .data-summary and
  * a one-line reading into its .readout.
  */
 import { axis, capital, COLORS, CONFIG, diff, finite, layout, line, Overlay, PALETTE, parts, react } from "./plotkit.js";
+import { ModesPanel } from "./modes.js";
+import { PhasePanel } from "./phase.js";
+import { PoincarePanel } from "./poincare.js";
 import { EffectivePotentialPanel, SmallOscillationsPanel } from "./reduction.js";
 import { fmt, seriesTable, table } from "./summaries.js";
 
@@ -116,39 +120,6 @@ class ConstraintForcePanel extends TimePanel {
   }
 }
 
-class PhasePanel {
-  constructor(section, data) {
-    this.section = section; this.data = data; Object.assign(this, parts(section));
-    this.overlay = new Overlay(this.plot);
-    this.preview = true;
-    this.q = data.coordinates[0];
-    if (data.coordinates.length > 1 && this.tools) {
-      const id = `${section.id}-coordinate`;
-      const label = Object.assign(document.createElement("label"), { htmlFor: id, textContent: "Coordinate " });
-      const select = Object.assign(document.createElement("select"), { id });
-      for (const q of data.coordinates) select.append(new Option(data.labels[q] || q, q));
-      select.addEventListener("change", () => { this.q = select.value; if (this.run) this.draw(this.run); });
-      this.tools.replaceChildren(label, select);
-    }
-  }
-
-  draw(run) {
-    this.run = run;
-    const q = run.state[this.q], v = run.state[`${this.q}_dot`];
-    const lq = run.data.labels[this.q], unit = run.data.units[this.q];
-    const traces = [
-      { type: "scatter", mode: "lines", x: q, y: v, name: "trajectory", line: { color: COLORS.T, width: 1.5 } },
-    ];
-    react(this, traces, layout({ hovermode: "closest", xaxis: axis(`${lq} (${unit})`), yaxis: axis(`${run.data.labels[this.q + "_dot"]} (${unit}/s)`) }));
-    this.readout.textContent = `${lq} ranges over [${fmt(Math.min(...q))}, ${fmt(Math.max(...q))}] ${unit}; its rate over [${fmt(Math.min(...v))}, ${fmt(Math.max(...v))}] ${unit}/s.`;
-    seriesTable(this.summary, `Phase portrait of ${lq}`, run.t, [{ name: lq, values: q }, { name: run.data.labels[this.q + "_dot"], values: v }]);
-  }
-
-  cursor(i, run) {
-    this.overlay.points("now", [[run.state[this.q][i], run.state[`${this.q}_dot`][i]]]);
-  }
-}
-
 class WorkPrecisionPanel {
   // The report is measured once per scene on the server and can take seconds the first time,
   // so it is fetched only when the panel scrolls into view.
@@ -224,10 +195,12 @@ const KINDS = {
   "small-oscillations": SmallOscillationsPanel,
   "constraint-force": ConstraintForcePanel,
   "work-precision": WorkPrecisionPanel,
+  modes: ModesPanel,
+  poincare: PoincarePanel,
 };
 
 export function createPanel(kind, section, data, urls = {}) {
   const Kind = KINDS[kind];
   if (!Kind) return null;
-  return kind === "work-precision" ? new Kind(section, data, urls.workPrecision) : new Kind(section, data);
+  return Kind.needsUrls ? new Kind(section, data, urls) : kind === "work-precision" ? new Kind(section, data, urls.workPrecision) : new Kind(section, data);
 }

@@ -7,6 +7,7 @@
  * <script type="application/json" id="scene-data"> and data-* URLs on #simulation.
  */
 import { foldSteps, printReady, whenTypeset } from "./derivation.js";
+import { fetchJson } from "./api.js";
 import { connectSimulation } from "./simulation.js";
 
 const data = JSON.parse(document.getElementById("scene-data").textContent);
@@ -20,7 +21,12 @@ if (root) {
     form: document.getElementById("controls"),
     root,
     data,
-    urls: { simulate: root.dataset.simulateUrl, workPrecision: root.dataset.workPrecisionUrl },
+    urls: {
+      simulate: root.dataset.simulateUrl,
+      workPrecision: root.dataset.workPrecisionUrl,
+      modes: () => fetchJson(root.dataset.modesUrl),
+      poincare: (request) => fetchJson(root.dataset.poincareUrl, request),
+    },
     status: document.getElementById("run-status"),
   });
 }

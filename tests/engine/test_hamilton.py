@@ -67,9 +67,7 @@ def _lambdify(d, ham):
     return rhs, acc, mom
 
 
-@pytest.mark.parametrize(
-    "name", ["scene:double-pendulum", "scene:spherical-pendulum", "charge-in-field", "damped-spring", "spring-chain"]
-)
+@pytest.mark.parametrize("name", sorted(SYSTEMS))
 def test_hamiltons_equations_give_the_euler_lagrange_motion(name):
     d, ham = derived(name)
     n = len(d.table.names)

@@ -3,8 +3,9 @@
 import pytest
 
 from app.scenes import SCENES
-from app.scenes.types import PANELS
 from app.service.derivations import derivation
+from app.viz.panels import OPTIONAL
+from app.web.pages import page_model
 
 # id -> (coordinates, parameters), exactly as the API promises them
 TABLE = {
@@ -58,8 +59,9 @@ def test_texts_defaults_and_ranges(scene_id):
 def test_panels_are_what_the_scene_needs(scene_id):
     s = SCENES[scene_id]
     d = derivation(scene_id)
-    panels = set(s.panels)
-    assert panels <= set(PANELS) and len(panels) == len(s.panels)
+    # a scene declares only optional panels; the page adds every other panel its derivation supports
+    assert set(s.panels) <= set(OPTIONAL) and len(set(s.panels)) == len(s.panels)
+    panels = set(page_model(scene_id)["panels"])
     assert "work-precision" in panels and "energy" in panels and "phase" in panels
     # 3-D only where the motion is 3-D; exactly one animation
     assert ("animation-3d" in panels) == (scene_id in THREE_D)

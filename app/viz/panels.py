@@ -1,0 +1,177 @@
+"""The panels a page can show: the one list of names, titles, explanations and availability rules.
+
+A panel is shown when its rule holds for the derivation.  Most panels are shown
+wherever their rule holds; an ``optional`` one also needs the scene (or the
+playground) to ask for it in its ``panels`` declaration, because it teaches
+something only some scenes are about (the effective potential of the chapter's
+section 4.4, a Poincaré section).  The templates read titles and texts from
+here, the page model evaluates the rules, and the browser draws the names it
+is given (static/js/plots.js maps each name to its drawing).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+
+@dataclass(frozen=True)
+class Facts:
+    """What the rules look at: the derivation document and what the page model built from it."""
+
+    doc: dict[str, Any]
+    reduction: dict[str, Any] | None  # the page's one-coordinate reduction (expression trees), if any
+    mechanism_dim: int | None  # 2 or 3 when the mechanism can be drawn
+    scene: bool  # a chapter scene (with a work-precision report), not a user's system
+
+    @property
+    def dof(self) -> int:
+        return len(self.doc["coordinates"])
+
+    @property
+    def conservative(self) -> bool:
+        """No generalized force and no explicit time: h is conserved."""
+        return not self.doc.get("generalized_forces") and bool(self.doc.get("hamiltonian_conserved"))
+
+
+def oscillating_equilibria(doc: dict[str, Any]) -> list[dict[str, Any]]:
+    """Equilibria at rest (not steady motions of a reduction) with at least one mode that oscillates."""
+    return [
+        e
+        for e in doc.get("normal_modes") or []
+        if e.get("stable") and not e.get("momenta") and any(m["omega_squared"] > 0 for m in e["modes"])
+    ]
+
+
+@dataclass(frozen=True)
+class Panel:
+    name: str
+    title: str
+    text: str
+    rule: str  # the availability rule in words
+    available: Callable[[Facts], bool]
+    optional: bool = False  # shown only where declared
+
+
+PANELS: tuple[Panel, ...] = (
+    Panel(
+        "animation-2d",
+        "The mechanism",
+        "The simulated motion with a fading trail. Play, pause or drag the time slider; the dotted cursor on every "
+        "plot follows the same instant. Drag a body to choose where it starts, and the round handle at the end of "
+        "its arrow to choose how fast it starts.",
+        "the mechanism moves in a plane",
+        lambda f: f.mechanism_dim == 2,
+    ),
+    Panel(
+        "animation-3d",
+        "The mechanism in three dimensions",
+        "The simulated motion with a fading trail; drag the background to turn the view, drag a body to choose "
+        "where it starts. Play, pause or drag the time slider; the dotted cursor on every plot follows the same "
+        "instant.",
+        "the mechanism moves in space",
+        lambda f: f.mechanism_dim == 3,
+    ),
+    Panel(
+        "energy",
+        "Energy against time",
+        "Kinetic energy T, potential energy U, their sum E and the Hamiltonian h. The lower plot shows how far E "
+        "and h have moved since t = 0: numerical drift, or a real loss where a force dissipates.",
+        "always",
+        lambda f: True,
+    ),
+    Panel(
+        "h-vs-e",
+        "h and E",
+        "With a constraint that moves, or a term in T linear in the velocities, h and E differ, and when L does "
+        "not depend on time h is the one conserved; the lower plot shows the difference E − h.",
+        "h and E differ",
+        lambda f: f.doc.get("hamiltonian_equals_energy") is False,
+    ),
+    Panel(
+        "momenta",
+        "Conserved momenta",
+        "The momenta of the cyclic coordinates and, below, their change since t = 0, which only numerical error "
+        "can produce.",
+        "a generalized momentum is conserved",
+        lambda f: any(c["name"].startswith("p_") for c in f.doc.get("conserved", [])),
+    ),
+    Panel(
+        "phase",
+        "Phase portrait",
+        "A coordinate against its rate of change. For one degree of freedom (or a reduction to one) the grey "
+        "curves are level sets of the Hamiltonian, each a possible orbit; the dashed red curve through the "
+        "unstable equilibria (red diamonds) is the separatrix between swinging and going over the top, green dots "
+        "are stable equilibria, and angles are wrapped into (−π, π]. The blue curve is this run and the red dot "
+        "the current state.",
+        "always (level sets with one degree of freedom or a reduction to one)",
+        lambda f: True,
+    ),
+    Panel(
+        "effective-potential",
+        "Effective potential",
+        "U_eff of the remaining coordinate with the run's energy level (dashed). The motion stays where U_eff lies "
+        "below the level, between the turning points (diamonds).",
+        "a reduction to one coordinate",
+        lambda f: f.reduction is not None,
+        optional=True,
+    ),
+    Panel(
+        "small-oscillations",
+        "Small oscillations",
+        "The frequency the engine predicts from ω² = U_eff''/m_eff at the nearest stable equilibrium, beside the "
+        "one measured from the simulated motion.",
+        "a reduction to one coordinate with a closed-form ω²",
+        lambda f: f.reduction is not None and f.reduction.get("omega_squared") is not None,
+        optional=True,
+    ),
+    Panel(
+        "modes",
+        "Normal modes",
+        "Near a stable equilibrium every small motion is a sum of normal modes, each a fixed shape oscillating at "
+        "its own frequency. Tick the modes to superpose and set their amplitudes; the drawing plays that sum. The "
+        "table compares each predicted frequency with the one measured from a small-amplitude simulation.",
+        "two or more coordinates and an equilibrium with an oscillating mode",
+        lambda f: f.dof >= 2 and bool(oscillating_equilibria(f.doc)),
+    ),
+    Panel(
+        "poincare",
+        "Poincaré section",
+        "Several orbits with the same energy, each marked where it crosses a plane in one direction. An orbit "
+        "that keeps to a curve is regular (quasi-periodic); one whose points scatter over an area is chaotic.",
+        "two conservative degrees of freedom",
+        lambda f: f.dof == 2 and f.conservative,
+        optional=True,
+    ),
+    Panel(
+        "constraint-force",
+        "Force of constraint",
+        "The force that holds the constraint, derived with a Lagrange multiplier and evaluated along the run.",
+        "a constraint force is derived",
+        lambda f: bool(f.doc.get("constraint_forces")),
+    ),
+    Panel(
+        "work-precision",
+        "Error against run time",
+        "Every method over a sweep of tolerances: the error of the final state against the run time (lower left is "
+        "better). The star is this run's own error estimate.",
+        "a chapter scene (its report is measured once per scene)",
+        lambda f: f.scene,
+    ),
+)
+
+BY_NAME = {p.name: p for p in PANELS}
+NAMES = tuple(BY_NAME)
+OPTIONAL = tuple(p.name for p in PANELS if p.optional)
+
+
+def shown(facts: Facts, declared: Sequence[str]) -> list[str]:
+    """The panels a page shows, in the registry's order: every available one, optional ones only if declared."""
+    wanted = set(declared)
+    return [p.name for p in PANELS if (not p.optional or p.name in wanted) and p.available(facts)]
+
+
+def texts() -> dict[str, dict[str, str]]:
+    """Title and explanation of every panel (for the templates)."""
+    return {p.name: {"title": p.title, "text": p.text} for p in PANELS}

@@ -1,0 +1,96 @@
+"""Beyond the chapter: Poincaré sections and measured normal modes, for scenes and user systems.
+
+Scene routes are plain ``def`` (FastAPI's thread pool; the integration releases the GIL);
+user systems go through the worker pool with its time limit, cache and fair share.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any
+
+from fastapi import APIRouter, Body, Request
+from fastapi.responses import Response
+
+from app.numerics.errors import SimulationError
+from app.service import modes, poincare, user_systems
+from app.web.api_simulate import BODY_ERRORS, ERRORS, _refused
+from app.web.api_user import _answer, _errors
+from app.web.responses import FastJSONResponse
+from app.web.schemas import SESSION_COOKIE
+from app.web.schemas_beyond import (
+    MeasuredModes,
+    PoincareRequest,
+    PoincareResponse,
+    UserPoincareRequest,
+    poincare_options,
+)
+from app.web.schemas_user import SystemSpec
+
+router = APIRouter(prefix="/api", tags=["beyond the chapter"])
+
+POINCARE_TEXT = (
+    "Several orbits on one energy surface h = E, each recorded where the chosen coordinate crosses the plane "
+    "coordinate = value in the given direction; the points are (q, p) of the other coordinate. Needs two "
+    "conservative degrees of freedom. Orbits start on the plane, spread across its accessible part."
+)
+MODES_TEXT = (
+    "For each equilibrium at rest with an oscillating mode: every mode's predicted ω = √ω² beside the ω measured "
+    "from a simulation started at the equilibrium displaced along the mode by a small amplitude (default "
+    "parameters)."
+)
+
+
+@router.post(
+    "/scenes/{scene_id}/poincare",
+    summary="A scene's Poincaré section",
+    description=POINCARE_TEXT,
+    response_model=None,
+    responses={200: {"model": PoincareResponse}, **ERRORS, **BODY_ERRORS},
+)
+def scene_poincare(scene_id: str, request: PoincareRequest) -> Any:
+    try:
+        return FastJSONResponse(poincare.cached_section_of_scene(scene_id, **poincare_options(request)))
+    except SimulationError as exc:
+        return _refused(exc)
+
+
+@router.get(
+    "/scenes/{scene_id}/modes",
+    summary="A scene's normal modes, predicted against measured",
+    description=MODES_TEXT,
+    response_model=list[MeasuredModes],
+    responses={404: ERRORS[404], 429: ERRORS[429]},
+)
+def scene_modes(scene_id: str) -> Any:
+    try:
+        return FastJSONResponse(modes.measure_scene(scene_id))
+    except SimulationError as exc:
+        return _refused(exc)
+
+
+@router.post(
+    "/poincare",
+    summary="The Poincaré section of a system you declare",
+    description=POINCARE_TEXT + " The system is given as for POST /api/derive; it runs in the worker pool.",
+    response_model=PoincareResponse,
+    openapi_extra={"parameters": [SESSION_COOKIE]},
+    responses=_errors(400, 413, 422, 429, 503),
+)
+async def user_poincare(request: Request, body: Annotated[UserPoincareRequest, Body()]) -> Response:
+    spec = SystemSpec.model_validate(body.model_dump(include=set(SystemSpec.model_fields))).to_spec()
+    options = poincare_options(body)
+    options.pop("parameters", None)
+    return await _answer(request, lambda c, a: user_systems.service.poincare(spec, options, c, a))
+
+
+@router.post(
+    "/modes",
+    summary="Normal modes of a system you declare, predicted against measured",
+    description=MODES_TEXT + " The system is given as for POST /api/derive; it runs in the worker pool.",
+    response_model=list[MeasuredModes],
+    openapi_extra={"parameters": [SESSION_COOKIE]},
+    responses=_errors(400, 413, 422, 429, 503),
+)
+async def user_modes(request: Request, system: Annotated[SystemSpec, Body()]) -> Response:
+    spec = system.to_spec()
+    return await _answer(request, lambda c, a: user_systems.service.modes(spec, c, a))

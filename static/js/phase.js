@@ -1,0 +1,216 @@
+/**
+ * phase.js — the phase portrait panel: a coordinate against its rate, with the level sets of H.
+ *
+ *   new PhasePanel(section, data)   panel.draw(run), panel.cursor(i, run)  (the plots.js interface)
+ *   wrap(x)                         an angle into (−π, π]
+ *   levelCurve(V, m, E, xs)         the level set ½ m(x) v² + V(x) = E over the grid xs, as a polyline
+ *
+ * With one degree of freedom, or a reduction to one (the derivation's effective_potential), the
+ * Hamiltonian at fixed parameters (and fixed conserved momenta) is H(x, v) = ½ m(x) v² + V(x), so
+ * each level set is explicit: v = ±√(2 (E − V(x)) / m(x)) where E ≥ V(x).  Equilibria are the
+ * extremes of V on the grid (a maximum is unstable); the level of an unstable equilibrium is the
+ * separatrix, which parts the orbits that swing from those that go over the top.  An angle is
+ * drawn in (−π, π], the trajectory broken where it wraps.  With more coordinates and no reduction
+ * the panel shows the chosen coordinate's trajectory alone.
+ */
+import { compile } from "./expr.js";
+import { axis, COLORS, finite, layout, Overlay, parts, react } from "./plotkit.js";
+import { reduced } from "./reduction.js";
+import { fmt, seriesTable } from "./summaries.js";
+
+const TAU = 2 * Math.PI;
+const GRID = 481;
+const SEPARATRIX = "#c62828";
+
+/** x - 2πk in (−π, π]. */
+export const wrap = (x) => x - TAU * Math.ceil((x - Math.PI) / TAU);
+
+/** The run's coordinate and rate, wrapped when an angle, with a break (null) wherever it wraps. */
+function trajectory(values, rates, angle) {
+  const x = [], v = [];
+  for (let i = 0; i < values.length; i++) {
+    const xi = angle ? wrap(values[i]) : values[i];
+    if (angle && i > 0 && Math.abs(xi - x[x.length - 1]) > Math.PI) { x.push(null); v.push(null); }
+    x.push(xi); v.push(rates[i]);
+  }
+  return { x, v };
+}
+
+/** The curve ½ m v² + V = E over the grid: closed loops between turning points, else upper and lower branches. */
+export function levelCurve(V, m, E, xs) {
+  const X = [], Y = [];
+  const f = V.map((v) => E - v);
+  const speed = (k) => Math.sqrt(Math.max(0, (2 * f[k]) / m[k]));
+  let k = 0;
+  while (k < xs.length) {
+    if (!(f[k] >= 0) || !(m[k] > 0)) { k++; continue; }
+    const i0 = k;
+    while (k + 1 < xs.length && f[k + 1] >= 0 && m[k + 1] > 0) k++;
+    const i1 = k;
+    // turning points (v = 0) by linear interpolation of E − V between grid points
+    const cross = (a, b) => xs[a] + ((xs[b] - xs[a]) * f[a]) / (f[a] - f[b]);
+    const left = i0 > 0 && Number.isFinite(f[i0 - 1]) ? cross(i0, i0 - 1) : null;
+    const right = i1 < xs.length - 1 && Number.isFinite(f[i1 + 1]) ? cross(i1, i1 + 1) : null;
+    if (left !== null) { X.push(left); Y.push(0); }
+    for (let j = i0; j <= i1; j++) { X.push(xs[j]); Y.push(speed(j)); }
+    if (right !== null) { X.push(right); Y.push(0); } else { X.push(null); Y.push(null); }
+    for (let j = i1; j >= i0; j--) { X.push(xs[j]); Y.push(-speed(j)); }
+    if (left !== null) { X.push(left); Y.push(0); }
+    X.push(null); Y.push(null);
+    k = i1 + 1;
+  }
+  return { x: X, y: Y };
+}
+
+/** Local minima and maxima of V on the grid (cyclic for an angle over a whole turn). */
+function extremes(xs, V, cyclic) {
+  const n = cyclic ? xs.length - 1 : xs.length; // the last point of a whole turn repeats the first
+  const out = [];
+  for (let k = 0; k < n; k++) {
+    const a = cyclic ? V[(k - 1 + n) % n] : V[k - 1], b = V[k], c = cyclic ? V[(k + 1) % n] : V[k + 1];
+    if (![a, b, c].every(Number.isFinite)) continue;
+    // the vertex of the parabola through the three grid values, then a value within rounding of 0 is 0
+    const h = xs[1] - xs[0], curve = a - 2 * b + c;
+    let x = curve !== 0 ? xs[k] - (h * (c - a)) / (2 * curve) : xs[k];
+    if (Math.abs(x - xs[k]) > h) x = xs[k];
+    if (Math.abs(x) < 1e-3 * h) x = 0;
+    if (b < a && b <= c) out.push({ x, V: b, stable: true });
+    else if (b > a && b >= c) out.push({ x, V: b, stable: false });
+  }
+  return out;
+}
+
+function padded(values, nonnegative) {
+  const fin = finite(values);
+  const lo = Math.min(...fin), hi = Math.max(...fin);
+  const pad = Math.max(0.3 * (hi - lo), 0.15 * Math.max(Math.abs(lo), Math.abs(hi), 0.2));
+  return [nonnegative ? Math.max(lo - pad, 1e-3 * hi) : lo - pad, hi + pad];
+}
+
+/** The one-coordinate model of a run: x, V(x), m(x) on a grid, the run's rate and its level; null without one. */
+function model(run) {
+  const data = run.data;
+  let r, Vf, Mf, level, whole, held = "";
+  if (data.reduction) {
+    const red = reduced(run);
+    const mass = compile(data.reduction.mass);
+    r = red.r;
+    Vf = red.U;
+    Mf = (x) => mass(red.at(x));
+    level = red.Er;
+    whole = !Object.keys(red.P).length; // no conserved momentum held: the coordinate is the whole system
+    held = Object.entries(red.P).map(([k, v]) => `${data.labels[k] || k} = ${fmt(v)}`).join(", ");
+  } else if (data.coordinates.length === 1 && data.trees.hamiltonian) {
+    // h = T2 − T0 + U has no term linear in the rate: V = h(q, 0), m = h(q, 1) + h(q, −1) − 2 h(q, 0)
+    r = data.coordinates[0];
+    const h = compile(data.trees.hamiltonian);
+    const at = (x, v) => h({ ...run.params, [r]: x, [`${r}_dot`]: v, t: 0 });
+    Vf = (x) => at(x, 0);
+    Mf = (x) => at(x, 1) + at(x, -1) - 2 * at(x, 0);
+    level = run.hamiltonian;
+    whole = true;
+  } else return null;
+  const angle = data.units[r] === "rad";
+  const values = run.state[r], rates = run.state[`${r}_dot`];
+  const turn = angle && whole;
+  const [lo, hi] = turn ? [-Math.PI, Math.PI] : padded(angle ? values.map(wrap) : values, data.nonnegative.includes(r));
+  const xs = Array.from({ length: GRID }, (_, k) => lo + ((hi - lo) * k) / (GRID - 1));
+  const V = xs.map((x) => { const y = Vf(x); return Number.isFinite(y) ? y : NaN; });
+  const m = xs.map((x) => { const y = Mf(x); return Number.isFinite(y) ? y : NaN; });
+  return { r, angle, turn, xs, V, m, values, rates, level, lo, hi, held };
+}
+
+export class PhasePanel {
+  constructor(section, data) {
+    this.section = section; this.data = data; Object.assign(this, parts(section));
+    this.overlay = new Overlay(this.plot);
+    this.preview = true;
+    this.q = data.coordinates[0];
+    this.reducible = Boolean(data.reduction) || data.coordinates.length === 1;
+    if (!this.reducible && this.tools) {
+      const id = `${section.id}-coordinate`;
+      const label = Object.assign(document.createElement("label"), { htmlFor: id, textContent: "Coordinate " });
+      const select = Object.assign(document.createElement("select"), { id });
+      for (const q of data.coordinates) select.append(new Option(data.labels[q] || q, q));
+      select.addEventListener("change", () => { this.q = select.value; if (this.run) this.draw(this.run); });
+      this.tools.replaceChildren(label, select);
+    }
+  }
+
+  draw(run) {
+    this.run = run;
+    const m = this.reducible ? model(run) : null;
+    if (m) this.drawLevels(run, m); else this.drawProjection(run);
+  }
+
+  /** Several coordinates and no reduction: the chosen coordinate against its rate, angles wrapped. */
+  drawProjection(run) {
+    const q = this.q, angle = run.data.units[q] === "rad";
+    const path = trajectory(run.state[q], run.state[`${q}_dot`], angle);
+    this.angle = angle; this.r = q;
+    const lq = run.data.labels[q], unit = run.data.units[q];
+    react(this, [{ type: "scatter", mode: "lines", x: path.x, y: path.v, name: "this run", line: { color: COLORS.T, width: 1.5 } }],
+      layout({ hovermode: "closest", xaxis: axis(`${lq} (${unit})`, angle ? { range: [-Math.PI, Math.PI] } : {}), yaxis: axis(`${run.data.labels[q + "_dot"]} (${unit}/s)`) }));
+    this.section.dataset.separatrix = "";
+    this.readout.textContent = `${lq} against its rate (level sets of H need one degree of freedom or a reduction to one; `
+      + `here every coordinate matters).${angle ? " The angle is shown in (−π, π]." : ""}`;
+    seriesTable(this.summary, `Phase portrait of ${lq}`, run.t, [{ name: lq, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[q + "_dot"], values: run.state[`${q}_dot`] }]);
+  }
+
+  drawLevels(run, m) {
+    const { r, angle, xs, V, lo, hi } = m;
+    this.angle = angle; this.r = r;
+    const path = trajectory(m.values, m.rates, angle);
+    const E0 = m.level[0];
+    const found = extremes(xs, V, m.turn);
+    const saddles = found.filter((e) => !e.stable);
+    // the separatrix: the level of the highest unstable equilibrium in view (where the motion changes kind)
+    const Es = saddles.length ? Math.max(...saddles.map((e) => e.V)) : null;
+    const Vmin = Math.min(...finite(V));
+    const top = Math.max(E0, Es ?? E0, Vmin + 1e-9);
+    const span = Math.max(top - Vmin, 1e-9);
+    const levels = [0.12, 0.3, 0.5, 0.7, 0.88, 1.3, 1.8].map((f) => Vmin + f * span)
+      .filter((E) => Math.abs(E - E0) > 0.04 * span && (Es === null || Math.abs(E - Es) > 0.04 * span));
+    const join = (curves) => ({ x: curves.flatMap((c) => c.x), y: curves.flatMap((c) => c.y) });
+    const grey = join(levels.map((E) => levelCurve(V, m.m, E, xs)));
+    const traces = [{ type: "scatter", mode: "lines", x: grey.x, y: grey.y, name: "level sets of H", hoverinfo: "skip", line: { color: "#b8bec5", width: 1 } }];
+    let sep = null;
+    if (Es !== null) {
+      sep = levelCurve(V, m.m, Es, xs);
+      traces.push({ type: "scatter", mode: "lines", x: sep.x, y: sep.y, name: "separatrix", line: { color: SEPARATRIX, width: 2, dash: "dash" } });
+    }
+    traces.push({ type: "scatter", mode: "lines", x: path.x, y: path.v, name: "this run", line: { color: COLORS.T, width: 2 } });
+    const vmax = 1.15 * Math.max(...finite(m.rates).map(Math.abs), ...(sep ? finite(sep.y).map(Math.abs) : []), 1e-6);
+    const lr = run.data.labels[r], unit = run.data.units[r];
+    react(this, traces, layout({
+      hovermode: "closest",
+      xaxis: axis(`${lr} (${unit})`, { range: [lo, hi], ...(m.turn ? { tickvals: [-Math.PI, -Math.PI / 2, 0, Math.PI / 2, Math.PI], ticktext: ["−π", "−π/2", "0", "π/2", "π"] } : {}) }),
+      yaxis: axis(`${run.data.labels[r + "_dot"]} (${unit}/s)`, { range: [-vmax, vmax] }),
+    }));
+    this.equilibria = found;
+    this.section.dataset.separatrix = Es === null ? "" : String(Es);
+    this.section.dataset.xrange = JSON.stringify([lo, hi]);
+    const kind = Es === null ? "" : E0 > Es
+      ? (m.turn ? ` Its level H = ${fmt(E0)} J lies above the separatrix (${fmt(Es)} J): it goes over the top, round and round.` : ` Its level H = ${fmt(E0)} J lies above the separatrix (${fmt(Es)} J).`)
+      : ` Its level H = ${fmt(E0)} J lies below the separatrix (${fmt(Es)} J): it swings back and forth.`;
+    const forced = run.data.forced ? " A non-conservative force acts, so the run crosses the level sets instead of following one." : "";
+    const eq = found.length ? ` Equilibria in view: ${found.map((e) => `${lr} = ${fmt(e.x)} (${e.stable ? "stable" : "unstable"})`).join(", ")}.` : "";
+    const reduction = m.held ? ` The other coordinates are cyclic: their momenta stay at ${m.held} (the initial state's), which leaves H a function of ${lr} and its rate.` : "";
+    this.readout.textContent = `${lr} against its rate${angle && m.turn ? ", the angle wrapped into (−π, π]" : ""}.${reduction}${kind}${eq}${forced}`;
+    seriesTable(this.summary, `Phase portrait of ${lr}`, run.t, [{ name: lr, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[r + "_dot"], values: m.rates }]);
+    this.marks();
+  }
+
+  marks() {
+    const eq = this.equilibria || [];
+    const pts = (stable) => eq.filter((e) => e.stable === stable).flatMap((e) => (this.angle && Math.abs(Math.abs(e.x) - Math.PI) < 1e-6 ? [[-Math.PI, 0], [Math.PI, 0]] : [[e.x, 0]]));
+    this.overlay.points("stable", pts(true), { color: "#2e7d32", r: 5 });
+    this.overlay.points("unstable", pts(false), { color: SEPARATRIX, r: 7, shape: "diamond" });
+  }
+
+  cursor(i, run) {
+    const x = run.state[this.r][i];
+    this.overlay.points("now", [[this.angle ? wrap(x) : x, run.state[`${this.r}_dot`][i]]]);
+    if (this.reducible) this.marks();
+  }
+}

@@ -1,0 +1,88 @@
+/**
+ * poincare.js — the Poincaré-section panel (two conservative degrees of freedom).
+ *
+ *   new PoincarePanel(section, data, urls)   the plots.js interface: draw(run), cursor(i, run)
+ *
+ * urls.poincare(run) resolves to the server's section (app/service/poincare.py) on the energy
+ * surface of the run's initial state, at the run's parameters: several orbits, each a set of
+ * points (q, p) of one coordinate where the other crosses its plane upward.  Computed on the
+ * server (seconds, off the event loop) for the server's run only, and only once the panel is
+ * in view; answers are kept per request so a repeated run costs nothing.
+ */
+import { axis, layout, PALETTE, parts, react } from "./plotkit.js";
+import { wrap } from "./phase.js";
+import { fmt, table } from "./summaries.js";
+
+export class PoincarePanel {
+  static needsUrls = true;
+
+  constructor(section, data, urls = {}) {
+    this.section = section; this.data = data; this.urls = urls; Object.assign(this, parts(section));
+    this.preview = false; // the section belongs to a server run (same energy, same parameters)
+    this.answers = new Map();
+    this.visible = !("IntersectionObserver" in window);
+    if (!this.visible) {
+      const observer = new IntersectionObserver((entries) => {
+        if (!entries.some((e) => e.isIntersecting)) return;
+        observer.disconnect();
+        this.visible = true;
+        if (this.run) this.draw(this.run);
+      }, { rootMargin: "200px" });
+      observer.observe(section);
+    }
+  }
+
+  async draw(run) {
+    this.run = run;
+    if (!this.visible || !this.urls.poincare) return;
+    const request = { parameters: run.request.parameters || {}, initial: run.request.initial || {} };
+    const key = JSON.stringify(request);
+    this.section.setAttribute("aria-busy", "true");
+    this.readout.textContent = "Computing the section (several orbits on this run's energy surface)…";
+    let answer = this.answers.get(key);
+    try {
+      if (!answer) {
+        answer = this.urls.poincare(request);
+        this.answers.set(key, answer);
+      }
+      answer = await answer;
+    } catch (err) {
+      this.answers.delete(key);
+      if (this.run === run) {
+        this.readout.textContent = `No section: ${err.message}`;
+        this.section.setAttribute("aria-busy", "false");
+      }
+      return;
+    }
+    if (this.run !== run) return; // a newer run is being drawn
+    this.plotSection(answer);
+    this.section.setAttribute("aria-busy", "false");
+  }
+
+  plotSection(s) {
+    const labels = this.data.labels, units = this.data.units;
+    const q = s.axes.q, angle = units[q] === "rad";
+    const traces = s.orbits.map((o, k) => ({
+      type: "scatter", mode: "markers", name: `orbit ${k + 1}`,
+      x: angle ? o.q.map(wrap) : o.q, y: o.p,
+      marker: { size: 4, color: PALETTE[k % PALETTE.length] },
+    }));
+    const lq = labels[q] || q, lc = labels[s.coordinate] || s.coordinate;
+    react(this, traces, layout({
+      hovermode: "closest", height: 360,
+      xaxis: axis(`${lq} (${units[q] || ""})`, angle ? { range: [-Math.PI, Math.PI] } : {}),
+      yaxis: axis(`p of ${lq}`),
+    }));
+    const points = s.orbits.reduce((a, o) => a + o.q.length, 0);
+    this.section.dataset.points = String(points);
+    const cut = `${lc} = ${fmt(s.value)}, crossing ${s.direction > 0 ? "upward" : "downward"}`;
+    const short = s.orbits.filter((o) => !o.complete).length;
+    this.readout.textContent = `${s.orbits.length} orbits with h = ${fmt(s.energy)} J, ${points} points where ${cut}. `
+      + "Points of one colour on a closed curve mean a regular orbit; a colour spread over an area means chaos."
+      + (short ? ` ${short} orbit(s) stopped early at the time budget.` : "");
+    table(this.summary, `Poincaré section at ${cut}`, ["orbit", "starts at", "points", "largest relative drift of h"],
+      s.orbits.map((o, k) => [`${k + 1}`, Object.entries(o.initial).map(([n, v]) => `${labels[n] || n} = ${fmt(v)}`).join(", "), String(o.q.length), fmt(o.energy_drift)]));
+  }
+
+  cursor() {}
+}

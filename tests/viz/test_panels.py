@@ -1,0 +1,53 @@
+"""The panel registry: one list, rules evaluated on the derivation, optional panels only where declared."""
+
+import pytest
+
+from app.scenes import SCENES
+from app.service.derivations import derivation_document
+from app.viz.panels import BY_NAME, NAMES, OPTIONAL, PANELS, Facts, shown
+
+
+def facts(scene_id, scene=True):
+    doc = derivation_document(scene_id)
+    return Facts(doc, {"omega_squared": None} if doc.get("effective_potential") else None, 2, scene)
+
+
+def test_names_are_unique_and_every_panel_explains_itself():
+    assert len(NAMES) == len(PANELS)
+    for p in PANELS:
+        assert p.title and len(p.text) > 40 and p.rule
+
+
+@pytest.mark.parametrize(
+    ("scene_id", "panel", "expected"),
+    [
+        ("simple-pendulum", "modes", False),  # one coordinate
+        ("coupled-oscillators", "modes", True),
+        ("double-pendulum", "modes", True),
+        ("rail-two-body", "modes", True),  # a vibration beside the free translation
+        ("pulley", "modes", False),  # no equilibrium
+        ("double-pendulum", "poincare", True),
+        ("coupled-oscillators", "poincare", True),
+        ("simple-pendulum", "poincare", False),  # one coordinate
+        ("damped-pendulum", "poincare", False),
+        ("rotating-parabola", "h-vs-e", True),
+        ("simple-pendulum", "h-vs-e", False),
+        ("tabletop-spring", "momenta", True),
+        ("simple-pendulum", "momenta", False),
+        ("pulley", "constraint-force", True),
+    ],
+)
+def test_rules_read_the_derivation(scene_id, panel, expected):
+    assert BY_NAME[panel].available(facts(scene_id)) is expected
+
+
+def test_optional_panels_need_a_declaration_and_the_others_do_not():
+    f = facts("double-pendulum")
+    assert "poincare" in shown(f, ["poincare"]) and "poincare" not in shown(f, [])
+    assert "modes" in shown(f, []) and "energy" in shown(f, [])
+    assert "work-precision" not in shown(facts("double-pendulum", scene=False), [])
+    assert set(OPTIONAL) >= {"poincare", "effective-potential"}
+
+
+def test_the_scenes_beyond_the_chapter_ask_for_a_poincare_section():
+    assert {s.id for s in SCENES.values() if "poincare" in s.panels} == {"double-pendulum", "coupled-oscillators"}
