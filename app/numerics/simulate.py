@@ -17,11 +17,13 @@ from __future__ import annotations
 import os
 import threading
 import time
+from collections.abc import Sequence
 from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from app.numerics import events as terminal
 from app.numerics import limits
 from app.numerics.choose import Analysis, analyse, choose
 from app.numerics.errors import SimulationError, TooMuchWork
@@ -41,6 +43,8 @@ class Outcome:
     warnings: list[str] = field(default_factory=list)
     compile_seconds: float = 0.0
     path: str = "compiled"  # "compiled", "scipy" (a scipy method was asked for or chosen), "scipy-fallback"
+    event: terminal.Hit | None = None  # the terminal event that ended the run, if one did
+
 
 FALLBACK = "DOP853"  # scipy's, on the generated scalar right-hand side: needs no compiler
 
@@ -121,6 +125,7 @@ def simulate(
     wall_seconds: float | None = None,
     estimate: bool = True,
     wait_for_compile: bool = True,
+    events: Sequence[terminal.EventFunction] = (),
 ) -> Outcome:
     wall_seconds = limits.WALL_SECONDS if wall_seconds is None else wall_seconds
     t = np.linspace(0.0, t_end, samples)
@@ -181,15 +186,19 @@ def simulate(
             f"{name} detected stiffness (its step size is held at the stability limit): an implicit method "
             "(Radau or BDF) may be much cheaper here"
         )
-    if not trajectory.complete:
+    # a terminal event (the block at the foot of its ramp) ends the run there: the estimate
+    # compares the samples before it, the run keeps them and the state at the event
+    hit = terminal.first_hit(system, events, trajectory, k) if events else None
+    compared = terminal.before(trajectory, hit) if hit is not None else trajectory
+    if not trajectory.complete and hit is None:
         warnings.append(trajectory.stop_reason)
     compiled = path != "scipy-fallback"
     result = (
-        estimate_error(system, problem, METHODS[name], trajectory, stiff, warnings, compiled, ahead)
-        if estimate
-        else None
+        estimate_error(system, problem, METHODS[name], compared, stiff, warnings, compiled, ahead) if estimate else None
     )
-    return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds, path)
+    if hit is not None:
+        trajectory = terminal.ended(trajectory, hit)
+    return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds, path, hit)
 
 
 def estimate_error(

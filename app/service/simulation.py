@@ -25,6 +25,7 @@ import numpy as np
 from app.engine.derive import Derivation
 from app.numerics import limits
 from app.numerics.errors import Busy, SimulationError
+from app.numerics.events import EventFunction, compile_events
 from app.numerics.methods import METHODS
 from app.numerics.observables import Observables, build, summarize
 from app.numerics.simulate import simulate
@@ -85,6 +86,17 @@ class _Compiled:
             while len(self.items) > self.size:
                 self.items.popitem(last=False)
             return entry
+
+
+_EVENTS: dict[str, list[EventFunction]] = {}  # per scene id: its terminal events, compiled once per process
+
+
+def _events(scene: Scene | None, system: NumericSystem) -> list[EventFunction]:
+    if scene is None or not scene.events:
+        return []
+    if scene.id not in _EVENTS:
+        _EVENTS[scene.id] = compile_events(system, scene.events)
+    return _EVENTS[scene.id]
 
 
 _SOURCES = JsonCache("generated-sources", source_fingerprint("engine", "scenes", "numerics"))
@@ -207,8 +219,9 @@ def simulate_derivation(
             raise Busy("too many simulations are running at once; try again in a few seconds")
         try:
             outcome = simulate(
-                system, k, y0, t_end, samples, method, rtol, atol, wait_for_compile=not ANSWER_WHILE_COMPILING
-            )
+                system, k, y0, t_end, samples, method, rtol, atol,
+                wait_for_compile=not ANSWER_WHILE_COMPILING, events=_events(scene, system),
+            )  # fmt: skip
         finally:
             _SLOTS.release()
     finally:
@@ -251,6 +264,8 @@ def document(
         "compile_time_s": outcome.compile_seconds,
         "notes": tr.notes,
         "warnings": warnings,
+        # the terminal event that ended the run (its name, time and what it means), or null
+        "event": outcome.event.as_json() if outcome.event is not None else None,
     }
     if not all(np.isfinite(series).all() for series in (*state.values(), *conserved.values())):
         warnings.append("some values are not finite (the motion reached a singular point); they are null")
@@ -263,8 +278,11 @@ def document(
         "constraint_forces": forces,
         "stats": _finite(stats),
         # the same right-hand side as JavaScript: the page integrates a preview while an input moves
-        "preview": {"rhs": system.browser, "coordinates": list(system.coordinates),
-                    "parameters": list(system.parameter_names)},
+        "preview": {
+            "rhs": system.browser,
+            "coordinates": list(system.coordinates),
+            "parameters": list(system.parameter_names),
+        },
     }
 
 
