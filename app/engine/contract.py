@@ -4,7 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from app.engine.budget import display_budget
+import sympy as sp
+
+from app.engine.budget import display_budget, pythagoras
 from app.engine.constraints import ConstraintForce, constraint_forces
 from app.engine.derive import Derivation
 from app.engine.hamilton import hamilton
@@ -160,7 +162,15 @@ def constraint_force_json(f: ConstraintForce, pr: Printer) -> dict[str, Any]:
         "slack_when_negative": f.constraint.slack_when_negative,
         "constraint": pr.pair(f.g),
         "particle": f.constraint.on,
+        # the unit vector along grad g on that particle (the way a positive force points), for drawing
+        "direction": [sp.sstr(e) for e in unit_gradient(f)],
     }
+
+
+def unit_gradient(f: ConstraintForce) -> tuple[sp.Expr, ...]:
+    """grad_i g / |grad_i g| on the motion, with sin² + cos² = 1 collapsed in |grad_i g|²."""
+    norm = sp.sqrt(pythagoras(sp.expand(sum(e**2 for e in f.gradient))))
+    return tuple(e / norm for e in f.gradient)
 
 
 def transformed_json(tr: Transformed) -> dict[str, Any]:

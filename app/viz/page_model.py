@@ -256,6 +256,11 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular) -> dict[s
             for c in doc.get("constraint_forces") or []
         ],  # fmt: skip
         "mechanism": spec,
+        # where the set-up ends (the browser's preview stops there too, as the server's run does)
+        "events": [
+            {"name": e["name"], "message": e["message"], "tree": maybe_tree(e["expression"], names)}
+            for e in info.get("events", [])
+        ],
         "methods": list(methods),
     }
 
