@@ -14,6 +14,7 @@ from app.engine.modes import normal_modes
 from app.engine.report import Printer, build_steps, constraint_steps, new_lagrangian, transform_steps
 from app.engine.report import display as _show
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
+from app.engine.rods import fixed_distances
 from app.engine.transform import Transformed, transform
 from app.scenes.types import Parameter, Scene
 
@@ -74,6 +75,8 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],
         "forcing": [pr.pair(_show(x)) for x in eqs.forcing],
         "momenta": {name: pr.pair(_show(p)) for name, p in zip(table.names, eqs.momenta, strict=True)},
+        # particles held at a fixed distance from the origin or from each other (rods for the drawing)
+        "fixed_distances": fixed_distances(d),
         "generalized_forces": {name: pr.pair(f) for name, f in zip(table.names, d.mechanics.Q, strict=True) if f != 0},
         "cyclic": list(en.cyclic),
         "conserved": [

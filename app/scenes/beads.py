@@ -98,7 +98,7 @@ ROTATING_PARABOLA = Scene(
     initial={"rho": 0.5, "rho_dot": 0.0},
     t_end=10.0,
     panels=(
-        "animation-2d",
+        "animation-3d",  # the lab frame: the wire turning at omega is the point of the scene
         "energy",
         "h-vs-e",
         "phase",

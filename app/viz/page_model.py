@@ -288,10 +288,18 @@ def scene_page(
     """The page model of one scene; ``info`` holds title, section, summary, statement, figure, panels, initial, t_end."""
     declared = list(info.get("panels", ()))
     reduction = _reduction(doc)
-    spec = mechanism(info.get("id", doc.get("id", "")), particles, doc["coordinates"], "animation-3d" in declared)
+    defaults = {k: v["default"] for k, v in doc["parameters"].items()}
+    spec = mechanism(
+        info.get("id", doc.get("id", "")),
+        particles,
+        doc["coordinates"],
+        "animation-3d" in declared,
+        forces=doc.get("constraint_forces") or (),
+        defaults=defaults,
+        proven=doc.get("fixed_distances") or (),
+    )
     panels = _panels(declared, doc, reduction, spec)
     info = {**info, "panels": panels}
-    defaults = {k: v["default"] for k, v in doc["parameters"].items()}
     angular = angles(doc, particles)
     client = _client(doc, info, reduction, spec, methods, nonnegative, angular)
     return {
@@ -307,6 +315,10 @@ def scene_page(
             doc["coordinates"],
             particles,
         ),  # fmt: skip
+        # what the animation draws, in words (the set-up's figure text stays with the diagram)
+        "animation_caption": spec["caption"] if spec else "",
+        "animation_forces": bool(spec and spec.get("forces")),
+        "animation_none": bool(spec and spec.get("none")),
         "steps": _steps(doc),
         "summary": _summary(doc),
         "errata": doc.get("errata") or [],
