@@ -76,9 +76,7 @@ _R = f"({_W})/3"
 _HANG = f"0.8*{_R}"  # from the middle mass up to its wheel's centre
 _Y = "(-(y1 + y2)/2 - 1)"  # the middle mass's height (the scene's particle)
 # the fixed wheels' height: above both end masses and above the movable wheel's highest reach
-_TOP = (
-    _max(_max("qmax_y1", "qmax_y2"), f"-(qmin_y1 + qmin_y2)/2 - 1 + {_HANG} + 2*{_R}") + f" + {_R} + 0.5*{_R}"
-)
+_TOP = _max(_max("qmax_y1", "qmax_y2"), f"-(qmin_y1 + qmin_y2)/2 - 1 + {_HANG} + 2*{_R}") + f" + {_R} + 0.5*{_R}"
 FAMILIES: dict[str, Family] = {
     "simple-pendulum": PENDULUM,
     "damped-pendulum": PENDULUM,
@@ -130,7 +128,13 @@ FAMILIES: dict[str, Family] = {
                 ),
                 "guide",
             ),
-            ("axis of rotation", "0", "alpha*(1.2*Abs(qmax_rho) + 1.2*Abs(qmin_rho) + 0.2)**2", ("0", "0", "s"), "guide"),
+            (
+                "axis of rotation",
+                "0",
+                "alpha*(1.2*Abs(qmax_rho) + 1.2*Abs(qmin_rho) + 0.2)**2",
+                ("0", "0", "s"),
+                "guide",
+            ),
         ),
         caption=(
             "Lab frame, in three dimensions: the parabolic wire turns about the vertical axis (dashed) at the "
@@ -191,9 +195,7 @@ FAMILIES: dict[str, Family] = {
             ("right wheel", "right mount", "rod"),
         ),
         wheels=(("left wheel", _R, "top"), ("right wheel", _R, "top"), ("movable wheel", _R, "bottom")),
-        curves=(
-            ("ceiling", f"-{_W} - 0.3*{_R}", f"{_W} + 0.3*{_R}", ("s", "0", f"{_TOP} + 1.5*{_R}"), "ceiling"),
-        ),
+        curves=(("ceiling", f"-{_W} - 0.3*{_R}", f"{_W} + 0.3*{_R}", ("s", "0", f"{_TOP} + 1.5*{_R}"), "ceiling"),),
         slack="string tension",
         caption=(
             "Two fixed wheels hang from the ceiling; the string runs from the left mass over them and under the "
@@ -216,9 +218,7 @@ FAMILIES: dict[str, Family] = {
             ("left wall", "-0.12", "0.6", ("-3", "0", "s"), "wall-left"),
             ("right wall", "-0.12", "0.6", ("3", "0", "s"), "wall-right"),
         ),
-        caption=(
-            f"Side view: the two walls, the three springs (drawn stretching) and the two masses, with {TRAIL}."
-        ),
+        caption=(f"Side view: the two walls, the three springs (drawn stretching) and the two masses, with {TRAIL}."),
     ),
     "movable-incline": Family(
         # the wedge's apex is the wedge particle; its slope is long enough for the block's whole run
@@ -347,11 +347,15 @@ def mechanism(
     """The animation spec of a scene (None when its positions cannot be drawn).
 
     ``forces`` are the derivation document's constraint forces (name, particle, direction): each
-    becomes an arrow on its particle.  ``defaults`` (parameter values) let a system without a
-    family of its own have its rods inferred (app/viz/rods.py)."""
+    becomes an arrow on its particle.  A system without a family of its own is drawn from its
+    particles, with rods inferred (app/viz/rods.py) from ``proven`` (the derivation's fixed
+    distances) or numerically at the parameters ``defaults``; without particles it has no picture,
+    and the spec says so (no points, ``none`` true, the caption in words)."""
     family = FAMILIES.get(scene_id)
+    if family is None and not particles:
+        return MechanismSpec(dim=2, axis_names=[], caption=NO_PICTURE).as_json() | {"none": True}
     if family is None:
-        family = _inferred(particles, coordinates, 3 if three_d else 2, defaults or {})
+        family = _inferred(particles, coordinates, 3 if three_d else 2, defaults or {}, proven)
     # a particle without a label is "mass k" (links refer to points by label)
     own = list(family.points) or [(name or f"mass {i + 1}", pos) for i, (name, pos) in enumerate(particles)]
     spec = MechanismSpec(
