@@ -67,11 +67,13 @@ PENDULUM = Family(
 
 # The fixed incline: X is the distance up the slope from its foot at the origin; the ramp reaches a
 # little above the highest point of the run, the floor runs out on both sides of the foot.
+# the turning wire reaches a little beyond the bead's farthest distance from the axis
+_RIM = f"(1.25*{_max('Abs(qmax_rho)', 'Abs(qmin_rho)')} + 0.1)"
 _RAMP = "(1.15*(qmax_X + Abs(qmax_X))/2 + 0.5)"
 # The pulleys: end masses drawn at x = -W and W, with W growing with the run's vertical extent so
 # the device is not a sliver in a tall frame; wheels of radius r = W/3 make every string vertical
 # (end mass at -W, fixed wheel from -W to -W + 2r = -r, movable wheel from -r to r).
-_W = _max("1", "0.15*(qmax_y1 - qmin_y1 + qmax_y2 - qmin_y2)")
+_W = _max("1", "0.3*(qmax_y1 - qmin_y1 + qmax_y2 - qmin_y2)")
 _R = f"({_W})/3"
 _HANG = f"0.8*{_R}"  # from the middle mass up to its wheel's centre
 _Y = "(-(y1 + y2)/2 - 1)"  # the middle mass's height (the scene's particle)
@@ -112,8 +114,8 @@ FAMILIES: dict[str, Family] = {
         curves=(
             (
                 "wire",
-                "-1.2*Abs(qmax_rho) - 1.2*Abs(qmin_rho) - 0.2",
-                "1.2*Abs(qmax_rho) + 1.2*Abs(qmin_rho) + 0.2",
+                f"-{_RIM}",
+                _RIM,
                 ("s*cos(omega*t)", "s*sin(omega*t)", "alpha*s**2"),
                 "wire",
             ),
@@ -122,16 +124,16 @@ FAMILIES: dict[str, Family] = {
                 "0",
                 "2*pi",
                 (
-                    "(1.2*Abs(qmax_rho) + 1.2*Abs(qmin_rho) + 0.2)*cos(s)",
-                    "(1.2*Abs(qmax_rho) + 1.2*Abs(qmin_rho) + 0.2)*sin(s)",
-                    "alpha*(1.2*Abs(qmax_rho) + 1.2*Abs(qmin_rho) + 0.2)**2",
+                    f"{_RIM}*cos(s)",
+                    f"{_RIM}*sin(s)",
+                    f"alpha*{_RIM}**2",
                 ),
                 "guide",
             ),
             (
                 "axis of rotation",
                 "0",
-                "alpha*(1.2*Abs(qmax_rho) + 1.2*Abs(qmin_rho) + 0.2)**2",
+                f"alpha*{_RIM}**2",
                 ("0", "0", "s"),
                 "guide",
             ),

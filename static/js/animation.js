@@ -314,25 +314,28 @@ export class Player {
     }
     const bodies = [];
     ctx.font = `${13 * dpr}px system-ui, sans-serif`;
-    this.masses.forEach((p, k) => {
-      const [x, y] = this.at(p, i);
-      const selected = k === this.selected && this.focused;
-      ctx.fillStyle = MASS_COLORS[k % MASS_COLORS.length];
-      ctx.strokeStyle = selected ? "#ffbf47" : "#1b1f24";
-      ctx.lineWidth = (selected ? 4 : 1.5) * dpr;
-      ctx.beginPath(); ctx.arc(x, y, 10 * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
-      if (this.masses.length > 1) {
-        // labels point away from the middle of the view and alternate above and below,
-        // with a white halo, so bodies that meet keep readable labels
-        const left = x < this.canvas.width / 2;
+    const placed = this.masses.map((p) => this.at(p, i));
+    if (this.masses.length > 1) {
+      // labels first, so no label hides a body: they point away from the middle of the view and
+      // alternate above and below, with a white halo, so bodies that meet keep readable labels
+      this.masses.forEach((p, k) => {
+        const [x, y] = placed[k], left = x < this.canvas.width / 2;
         ctx.textAlign = left ? "right" : "left";
         const lx = x + (left ? -14 : 14) * dpr, ly = y + (k % 2 ? 22 : -12) * dpr;
         ctx.strokeStyle = "#fff"; ctx.lineWidth = 4 * dpr;
         ctx.strokeText(this.spec.points[p].label, lx, ly);
         ctx.fillStyle = "#1b1f24";
         ctx.fillText(this.spec.points[p].label, lx, ly);
-        ctx.textAlign = "left";
-      }
+      });
+      ctx.textAlign = "left";
+    }
+    this.masses.forEach((p, k) => {
+      const [x, y] = placed[k];
+      const selected = k === this.selected && this.focused;
+      ctx.fillStyle = MASS_COLORS[k % MASS_COLORS.length];
+      ctx.strokeStyle = selected ? "#ffbf47" : "#1b1f24";
+      ctx.lineWidth = (selected ? 4 : 1.5) * dpr;
+      ctx.beginPath(); ctx.arc(x, y, 10 * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
       bodies.push({ label: this.spec.points[p].label, x: Math.round(x / dpr), y: Math.round(y / dpr) });
     });
     if (this.showForces?.checked) drawn.forces = this.drawForces(ctx, i, dpr);
@@ -387,7 +390,7 @@ export class Player {
   drawForces(ctx, i, dpr) {
     const { list, largest } = this.forces;
     if (!list.length || !(largest > 0)) return [];
-    const env = this.run.envAt(i), longest = 0.22 * Math.min(this.canvas.width, this.canvas.height);
+    const env = this.run.envAt(i), longest = 0.3 * Math.min(this.canvas.width, this.canvas.height);
     const perNewton = longest / largest; // screen pixels per newton
     const out = [];
     list.forEach((f, j) => {
@@ -405,19 +408,24 @@ export class Player {
       this.arrow(ctx, x, y, tx, ty, color, dpr);
       out.push({ name: f.name, value, x: Math.round(x / dpr), y: Math.round(y / dpr), tx: Math.round(tx / dpr), ty: Math.round(ty / dpr) });
     });
-    // the legend: a round force and the length of its arrow, then each force's colour and name
-    const target = longest / 2 / perNewton, pow = Math.pow(10, Math.floor(Math.log10(target)));
-    const unit = [5, 2, 1].map((m) => m * pow).find((v) => v <= target) || pow;
-    const W = this.canvas.width, x1 = W - 12 * dpr, x0 = x1 - unit * perNewton;
-    let y = this.canvas.height - 14 * dpr;
-    ctx.font = `${12 * dpr}px system-ui, sans-serif`; ctx.textAlign = "right";
+    // the legend, top right on a white card: a round force (at most the largest) and its arrow,
+    // then each force's colour and name
+    const pow = Math.pow(10, Math.floor(Math.log10(largest)));
+    const unit = [5, 2, 1].map((m) => m * pow).find((v) => v <= largest) || pow;
+    ctx.font = `${12 * dpr}px system-ui, sans-serif`;
+    const names = list.map((f) => `→ ${f.name}`);
+    const width = Math.max(unit * perNewton + 60 * dpr, ...names.map((t) => ctx.measureText(t).width)) + 12 * dpr;
+    const W = this.canvas.width, x1 = W - 12 * dpr, top = 30 * dpr, rowH = 16 * dpr;
+    ctx.fillStyle = "rgba(255,255,255,0.9)";
+    ctx.fillRect(x1 - width, top - 12 * dpr, width + 6 * dpr, rowH * (names.length + 1) + 6 * dpr);
+    ctx.textAlign = "right";
+    names.forEach((text, j) => {
+      ctx.fillStyle = FORCE_COLORS[j % FORCE_COLORS.length];
+      ctx.fillText(text, x1, top + j * rowH);
+    });
+    const y = top + names.length * rowH - 4 * dpr, x0 = x1 - unit * perNewton;
     this.arrow(ctx, x0, y, x1, y, "#4b535c", dpr);
     ctx.fillStyle = "#4b535c"; ctx.fillText(`${Number(unit.toPrecision(2))} N`, x0 - 6 * dpr, y + 4 * dpr);
-    list.forEach((f, j) => {
-      y -= 16 * dpr;
-      ctx.fillStyle = FORCE_COLORS[j % FORCE_COLORS.length];
-      ctx.fillText(`→ ${f.name}`, x1, y + 4 * dpr);
-    });
     ctx.textAlign = "left";
     return out;
   }

@@ -46,8 +46,8 @@ def test_pulley_strings_are_vertical_and_keep_their_length(y1, y2):
 
 def test_pulley_is_as_wide_as_a_fraction_of_its_motion():
     spec = spec_of("pulley")
-    env = env_of("pulley", y1=0.0, y2=0.0)  # extents -3..4 on both: W = 0.15 * 14 = 2.1
-    assert at(spec, 1, env)[0] - at(spec, 0, env)[0] == pytest.approx(4.2)
+    env = env_of("pulley", y1=0.0, y2=0.0)  # extents -3..4 on both: W = 0.3 * 14 = 4.2
+    assert at(spec, 1, env)[0] - at(spec, 0, env)[0] == pytest.approx(8.4)
 
 
 def test_incline_ramp_starts_at_the_foot_and_holds_the_block():
