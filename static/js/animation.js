@@ -257,7 +257,7 @@ export class Player {
       ctx.strokeStyle = "#6b747e"; ctx.lineWidth = 2 * dpr; ctx.stroke();
     }
     for (const c of this.curveCols) this.drawCurve(ctx, c, c.moving ? c.at(run.envAt(i)) : c.cols, dpr);
-    this.scaleBar(ctx, dpr);
+    if (!this.spec.none) this.scaleBar(ctx, dpr);
     // fading trails first, so that strings, rods and springs are drawn over them
     this.masses.forEach((p, k) => {
       const color = MASS_COLORS[k % MASS_COLORS.length];
