@@ -319,7 +319,11 @@ export class Player {
       // labels first, so no label hides a body: they point away from the middle of the view and
       // alternate above and below, with a white halo, so bodies that meet keep readable labels
       this.masses.forEach((p, k) => {
-        const [x, y] = placed[k], left = x < this.canvas.width / 2;
+        const [x, y] = placed[k], label = this.spec.points[p].label, w = ctx.measureText(label).width;
+        // away from the middle, unless that side has no room for the label within the canvas
+        let left = x < this.canvas.width / 2;
+        if (left && x - 14 * dpr - w < 2 * dpr) left = false;
+        else if (!left && x + 14 * dpr + w > this.canvas.width - 2 * dpr) left = true;
         ctx.textAlign = left ? "right" : "left";
         const lx = x + (left ? -14 : 14) * dpr, ly = y + (k % 2 ? 22 : -12) * dpr;
         ctx.strokeStyle = "#fff"; ctx.lineWidth = 4 * dpr;
