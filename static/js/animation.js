@@ -316,20 +316,33 @@ export class Player {
     ctx.font = `${13 * dpr}px system-ui, sans-serif`;
     const placed = this.masses.map((p) => this.at(p, i));
     if (this.masses.length > 1) {
-      // labels first, so no label hides a body: they point away from the middle of the view and
-      // alternate above and below, with a white halo, so bodies that meet keep readable labels
+      // labels first, so no label hides a body; each goes to the corner beside its body where it
+      // covers the fewest rods, strings, springs and bodies and stays inside the canvas, with a
+      // white halo so that bodies that meet keep readable labels
+      const segments = this.spec.links.map((link) => [this.at(link.from, i), this.at(link.to, i)]);
+      const cost = (x0, y0, x1, y1) => {
+        let c = 0;
+        if (x0 < 2 * dpr || x1 > this.canvas.width - 2 * dpr || y0 < 2 * dpr || y1 > this.canvas.height - 2 * dpr) c += 100;
+        const inside = (x, y) => x >= x0 && x <= x1 && y >= y0 && y <= y1;
+        for (const [[ax, ay], [bx, by]] of segments) {
+          for (let f = 0; f <= 1; f += 0.125) if (inside(ax + (bx - ax) * f, ay + (by - ay) * f)) { c += 1; break; }
+        }
+        for (const [bx, by] of placed) if (inside(bx, by) || inside(bx - 10 * dpr, by) || inside(bx + 10 * dpr, by)) c += 2;
+        return c;
+      };
       this.masses.forEach((p, k) => {
-        const [x, y] = placed[k], label = this.spec.points[p].label, w = ctx.measureText(label).width;
-        // away from the middle, unless that side has no room for the label within the canvas
-        let left = x < this.canvas.width / 2;
-        if (left && x - 14 * dpr - w < 2 * dpr) left = false;
-        else if (!left && x + 14 * dpr + w > this.canvas.width - 2 * dpr) left = true;
-        ctx.textAlign = left ? "right" : "left";
-        const lx = x + (left ? -14 : 14) * dpr, ly = y + (k % 2 ? 22 : -12) * dpr;
+        const [x, y] = placed[k], label = this.spec.points[p].label, w = ctx.measureText(label).width, h = 13 * dpr;
+        let best = null;
+        for (const [sx, sy] of [[1, -1], [-1, -1], [1, 1], [-1, 1]]) {
+          const lx = x + sx * 14 * dpr, ly = y + (sy < 0 ? -12 : 22) * dpr;
+          const x0 = sx > 0 ? lx : lx - w, c = cost(x0, ly - h, x0 + w, ly + 3 * dpr);
+          if (!best || c < best.c) best = { c, lx, ly, align: sx > 0 ? "left" : "right" };
+        }
+        ctx.textAlign = best.align;
         ctx.strokeStyle = "#fff"; ctx.lineWidth = 4 * dpr;
-        ctx.strokeText(this.spec.points[p].label, lx, ly);
+        ctx.strokeText(label, best.lx, best.ly);
         ctx.fillStyle = "#1b1f24";
-        ctx.fillText(this.spec.points[p].label, lx, ly);
+        ctx.fillText(label, best.lx, best.ly);
       });
       ctx.textAlign = "left";
     }
