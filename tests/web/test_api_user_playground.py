@@ -47,7 +47,7 @@ def test_the_double_pendulum_is_drawn_with_a_pivot_and_two_rods(client):
     labels = [p["label"] for p in mech["points"]]
     assert labels == ["mass 1", "mass 2", "pivot"] and not mech["points"][2]["mass"]
     rods = sorted((link["from"], link["to"]) for link in mech["links"] if link["style"] == "rod")
-    assert rods == [(1, 0), (2, 0)]  # mass 2 - mass 1 and pivot - mass 1 (indices of points)
+    assert rods == [(0, 1), (2, 0)]  # mass 1 - mass 2 and pivot - mass 1 (indices of points)
     assert "rods that keep their distances fixed and the fixed pivot" in mech["caption"]
 
 
