@@ -74,7 +74,7 @@ MOVABLE_INCLINE = Scene(
     ),
     figure=(
         "A wedge of angle α on a floor, its top corner displaced by X; the block on the slope at distance D below "
-        "the corner; arrows for the block sliding down and the wedge recoiling the other way."
+        "the corner along the slope; arrows mark D along the slope and X from where the wedge started, and g."
     ),
     system=System(
         coordinates=("X", "D"),
