@@ -460,15 +460,21 @@ export class Player {
     ctx.closePath(); ctx.fill();
   }
 
-  /** A line of text across the top (or at height y) of the canvas, on a white band. */
+  /** Text across the canvas at height y (wrapped to its width), on a white band. */
   message(ctx, dpr, text, y) {
     ctx.font = `${13 * dpr}px system-ui, sans-serif`;
-    const w = Math.min(ctx.measureText(text).width, this.canvas.width - 16 * dpr);
-    const x = (this.canvas.width - w) / 2;
+    const room = this.canvas.width - 24 * dpr, lines = [];
+    for (const word of text.split(" ")) {
+      const last = lines.length ? `${lines[lines.length - 1]} ${word}` : word;
+      if (lines.length && ctx.measureText(last).width <= room) lines[lines.length - 1] = last;
+      else lines.push(word);
+    }
+    const h = 17 * dpr, w = Math.min(room, Math.max(...lines.map((l) => ctx.measureText(l).width)));
+    const x = (this.canvas.width - w) / 2, top = Math.max(4 * dpr, y - 14 * dpr - ((lines.length - 1) * h) / 2);
     ctx.fillStyle = "rgba(255,255,255,0.9)";
-    ctx.fillRect(x - 6 * dpr, y - 14 * dpr, w + 12 * dpr, 20 * dpr);
+    ctx.fillRect(x - 6 * dpr, top, w + 12 * dpr, lines.length * h + 6 * dpr);
     ctx.fillStyle = "#1b1f24";
-    ctx.fillText(text, x, y, this.canvas.width - 16 * dpr);
+    lines.forEach((line, k) => ctx.fillText(line, x, top + 14 * dpr + k * h, room));
   }
 
   zigzag(ctx, x0, y0, x1, y1, dpr) {
