@@ -4,7 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from app.engine.budget import display_budget
+import sympy as sp
+
+from app.engine.budget import display_budget, pythagoras
 from app.engine.constraints import ConstraintForce, constraint_forces
 from app.engine.derive import Derivation
 from app.engine.hamilton import hamilton
@@ -12,6 +14,7 @@ from app.engine.modes import normal_modes
 from app.engine.report import Printer, build_steps, constraint_steps, new_lagrangian, transform_steps
 from app.engine.report import display as _show
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
+from app.engine.rods import fixed_distances
 from app.engine.transform import Transformed, transform
 from app.scenes.types import Parameter, Scene
 
@@ -72,6 +75,8 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],
         "forcing": [pr.pair(_show(x)) for x in eqs.forcing],
         "momenta": {name: pr.pair(_show(p)) for name, p in zip(table.names, eqs.momenta, strict=True)},
+        # particles held at a fixed distance from the origin or from each other (rods for the drawing)
+        "fixed_distances": fixed_distances(d),
         "generalized_forces": {name: pr.pair(f) for name, f in zip(table.names, d.mechanics.Q, strict=True) if f != 0},
         "cyclic": list(en.cyclic),
         "conserved": [
@@ -160,7 +165,15 @@ def constraint_force_json(f: ConstraintForce, pr: Printer) -> dict[str, Any]:
         "slack_when_negative": f.constraint.slack_when_negative,
         "constraint": pr.pair(f.g),
         "particle": f.constraint.on,
+        # the unit vector along grad g on that particle (the way a positive force points), for drawing
+        "direction": [sp.sstr(e) for e in unit_gradient(f)],
     }
+
+
+def unit_gradient(f: ConstraintForce) -> tuple[sp.Expr, ...]:
+    """grad_i g / |grad_i g| on the motion, with sin² + cos² = 1 collapsed in |grad_i g|²."""
+    norm = sp.sqrt(pythagoras(sp.expand(sum(e**2 for e in f.gradient))))
+    return tuple(e / norm for e in f.gradient)
 
 
 def transformed_json(tr: Transformed) -> dict[str, Any]:

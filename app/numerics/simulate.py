@@ -17,13 +17,14 @@ from __future__ import annotations
 import os
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from concurrent.futures import Future, ThreadPoolExecutor
 from contextlib import AbstractContextManager, ExitStack, nullcontext
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from app.numerics import events as terminal
 from app.numerics import limits
 from app.numerics.choose import Analysis
 from app.numerics.errors import TooMuchWork
@@ -44,6 +45,8 @@ class Outcome:
     warnings: list[str] = field(default_factory=list)
     compile_seconds: float = 0.0
     path: str = "compiled"  # "compiled", "scipy" (a scipy method was asked for or chosen), "scipy-fallback"
+    event: terminal.Hit | None = None  # the terminal event that ended the run, if one did
+
 
 
 def _machine_load() -> float:
@@ -122,13 +125,18 @@ def simulate(
     wall_seconds: float | None = None,
     estimate: bool = True,
     wait_for_compile: bool = True,
+    events: Sequence[terminal.EventFunction] = (),
 ) -> Outcome:
     """Plan and run in one call (scripts and tests); a server plans first to take its throttles (see ``run``)."""
-    return run(plan(system, k, y0, t_end, samples, method, rtol, atol, estimate, wait_for_compile), wall_seconds)
+    planned = plan(system, k, y0, t_end, samples, method, rtol, atol, estimate, wait_for_compile)
+    return run(planned, wall_seconds, events=events)
 
 
 def run(
-    plan: Plan, wall_seconds: float | None = None, python_loop: Callable[[], AbstractContextManager] = nullcontext
+    plan: Plan,
+    wall_seconds: float | None = None,
+    python_loop: Callable[[], AbstractContextManager] = nullcontext,
+    events: Sequence[terminal.EventFunction] = (),
 ) -> Outcome:
     """Run a plan under one deadline.  ``python_loop()`` is entered around a Python step loop the plan did not
     foresee (the stiff hand-over to Radau); the caller holds it already when ``plan.python_loop``."""
@@ -175,15 +183,21 @@ def run(
                 f"{name} detected stiffness (its step size is held at the stability limit): an implicit method "
                 "(Radau or BDF) may be much cheaper here"
             )
-        if not trajectory.complete:
+        # a terminal event (the block at the foot of its ramp) ends the run there: the estimate
+        # compares the samples before it, the run keeps them and the state at the event
+        hit = terminal.first_hit(system, events, trajectory, k) if events else None
+        compared = terminal.before(trajectory, hit) if hit is not None else trajectory
+        if not trajectory.complete and hit is None:
             warnings.append(trajectory.stop_reason)
         compiled = path != "scipy-fallback"
         result = (
-            estimate_error(system, problem, METHODS[name], trajectory, stiff, warnings, compiled, ahead)
+            estimate_error(system, problem, METHODS[name], compared, stiff, warnings, compiled, ahead)
             if estimate
             else None
         )
-    return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds, path)
+    if hit is not None:
+        trajectory = terminal.ended(trajectory, hit)
+    return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds, path, hit)
 
 
 def estimate_error(

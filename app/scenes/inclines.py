@@ -1,7 +1,7 @@
 """Blocks on frictionless inclines: a fixed one, and a wedge free to slide on the floor."""
 
 from app.scenes.common import GRAVITY
-from app.scenes.types import Constraint, Erratum, Parameter, Particle, Scene, System
+from app.scenes.types import Constraint, Erratum, Event, Parameter, Particle, Scene, System
 
 MASS = Parameter("m", 1.0, "kg", 0.001, 1000.0, "mass of the block")
 ANGLE = Parameter("alpha", 0.5, "rad", 0.01, 1.5, "angle of the incline above the horizontal")
@@ -35,6 +35,8 @@ INCLINE_BLOCK = Scene(
     ),
     initial={"X": 0.0, "X_dot": 3.0},
     t_end=2.0,
+    # X = 0 is the foot of the ramp: below it the block would be on the floor, which the model does not have
+    events=(Event("foot of the ramp", "X", "The block reached the foot of the ramp; the run ends there."),),
     errata=(
         Erratum(
             chapter="statement: a bead on a helix (Ex. 4.2's text repeated)",
@@ -71,7 +73,7 @@ MOVABLE_INCLINE = Scene(
     ),
     figure=(
         "A wedge of angle α on a floor, its top corner displaced by X; the block on the slope at distance D below "
-        "the corner; arrows for the block sliding down and the wedge recoiling the other way."
+        "the corner along the slope; arrows mark D along the slope and X from where the wedge started, and g."
     ),
     system=System(
         coordinates=("X", "D"),

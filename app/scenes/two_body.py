@@ -95,7 +95,10 @@ RAIL_TWO_BODY = Scene(
         "of mass X and the separation x = x2 − x1 and show that X is cyclic, that the total momentum is "
         "conserved and that x oscillates like a single body of the reduced mass."
     ),
-    figure="A horizontal rail with two beads at x1 and x2, a spring between them, the centre of mass X marked.",
+    figure=(
+        "A horizontal rail with two blocks m1 and m2 at x1 and x2, measured from a fixed mark, and a spring of "
+        "stiffness k and rest length l0 between them."
+    ),
     system=System(
         coordinates=("x1", "x2"),
         parameters=(

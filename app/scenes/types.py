@@ -122,6 +122,20 @@ class Erratum:
 
 
 @dataclass(frozen=True)
+class Event:
+    """Where the set-up ends: the run stops the first time ``expression`` falls below zero.
+
+    ``expression`` is a function of the coordinates, their rates, ``t`` and the
+    parameters, positive while the set-up holds (the block still on its ramp);
+    ``message`` says in words what happened there (the page shows it with the time).
+    """
+
+    name: str
+    expression: str
+    message: str
+
+
+@dataclass(frozen=True)
 class Scene:
     """A chapter example: a system plus what the page and API say about it.
 
@@ -144,3 +158,4 @@ class Scene:
     panels: tuple[str, ...] = ()
     errata: tuple[Erratum, ...] = ()
     beyond_chapter: bool = False
+    events: tuple[Event, ...] = ()

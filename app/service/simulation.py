@@ -26,6 +26,7 @@ import numpy as np
 from app.engine.derive import Derivation
 from app.numerics import limits, methods
 from app.numerics.errors import Busy, SimulationError
+from app.numerics.events import EventFunction, compile_events
 from app.numerics.methods import AUTO, METHODS, NONSTIFF
 from app.numerics.observables import Observables, build, summarize
 from app.numerics.plan import plan
@@ -87,6 +88,17 @@ class _Compiled:
             while len(self.items) > self.size:
                 self.items.popitem(last=False)
             return entry
+
+
+_EVENTS: dict[str, list[EventFunction]] = {}  # per scene id: its terminal events, compiled once per process
+
+
+def _events(scene: Scene | None, system: NumericSystem) -> list[EventFunction]:
+    if scene is None or not scene.events:
+        return []
+    if scene.id not in _EVENTS:
+        _EVENTS[scene.id] = compile_events(system, scene.events)
+    return _EVENTS[scene.id]
 
 
 _SOURCES = JsonCache("generated-sources", source_fingerprint("engine", "scenes", "numerics"))
@@ -221,7 +233,7 @@ def simulate_derivation(
         if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
             raise Busy("too many simulations are running at once; try again in a few seconds")
         try:
-            outcome = run(planned, python_loop=_python_loop)
+            outcome = run(planned, python_loop=_python_loop, events=_events(scene, system))
         finally:
             _SLOTS.release()
     return document(system, observables, outcome, k, rtol, getattr(request, "precision", None) or "full")
@@ -261,6 +273,8 @@ def document(
         "compile_time_s": outcome.compile_seconds,
         "notes": tr.notes,
         "warnings": warnings,
+        # the terminal event that ended the run (its name, time and what it means), or null
+        "event": outcome.event.as_json() if outcome.event is not None else None,
     }
     if not all(np.isfinite(series).all() for series in (*state.values(), *conserved.values())):
         warnings.append("some values are not finite (the motion reached a singular point); they are null")

@@ -12,11 +12,12 @@ something else (the rotating wire is drawn in its own turning plane).
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 from app.viz.exprtree import TreeError, tree
+from app.viz.rods import rods
 
 
 @dataclass(frozen=True)
@@ -24,21 +25,60 @@ class Family:
     dim: int = 2
     axes: tuple[int, ...] = (0, 2)  # which Cartesian components the view shows
     fixed: tuple[tuple[str, tuple[str, str, str]], ...] = ()  # (label, position) drawn but not particles
-    links: tuple[tuple[str, str, str], ...] = ()  # (from label, to label, style: rod | spring)
-    curves: tuple[tuple[str, str, str, tuple[str, str, str]], ...] = ()  # (label, s from, s to, position of s)
+    anchors: tuple[tuple[str, tuple[str, str, str]], ...] = ()  # (label, position) used by links, not drawn
+    links: tuple[tuple[str, str, str], ...] = ()  # (from label, to label, style: rod | spring | string)
+    # (label, s from, s to, position of s, style): a guide (dashed path), a wire (solid) or the ground
+    # (solid, hatched on the side away from the motion: "ground" below, "ceiling" above); a curve whose
+    # position uses t or a coordinate moves with the run and is drawn again at every frame
+    curves: tuple[tuple[str, str, str, tuple[str, str, str], str], ...] = ()
+    solids: tuple[tuple[str, tuple[str, ...]], ...] = ()  # (label, corner labels): a filled body (a ramp, a wedge)
+    wheels: tuple[tuple[str, str, str], ...] = ()  # (centre label, radius, "top" | "bottom": where the string wraps)
     points: tuple[tuple[str, tuple[str, str, str]], ...] = ()  # replaces the particles when given
     axis_names: tuple[str, ...] = ("x", "y", "z")
+    slack: str = ""  # the constraint force whose negative value means the strings are slack
+    caption: str = ""  # what the animation shows, in words
 
 
 def _span(q: str, pad: str = "0.25") -> tuple[str, str]:
     return (f"qmin_{q} - {pad}*(qmax_{q} - qmin_{q}) - 0.2", f"qmax_{q} + {pad}*(qmax_{q} - qmin_{q}) + 0.2")
 
 
+def _max(a: str, b: str) -> str:
+    # max(a, b) = (a + b + |a - b|)/2: the figure expressions have no Max
+    return f"(({a}) + ({b}) + Abs(({a}) - ({b})))/2"
+
+
+TRAIL = "a fading trail behind each moving body"
+NO_PICTURE = (
+    "No picture: this system is given by its Lagrangian or its energies alone, with no particle positions, so "
+    "there is nothing to draw faithfully. The time slider and Play still move the cursors on the plots below; "
+    "to see it move, declare it by its particles."
+)
 PENDULUM = Family(
     fixed=(("pivot", ("0", "0", "R")),),
-    links=(("pivot", "#0", "rod"),),
-    curves=(("path", "0", "2*pi", ("R*sin(s)", "0", "R - R*cos(s)")),),
+    links=(("pivot", "#0", "string"),),
+    curves=(("path", "0", "2*pi", ("R*sin(s)", "0", "R - R*cos(s)"), "guide"),),
+    slack="string tension",
+    caption=(
+        f"Side view: the pivot, the string and the bob, the circle the bob can reach (dashed) and {TRAIL}. "
+        "Where the string's tension would be negative it is drawn slack."
+    ),
 )
+
+# The fixed incline: X is the distance up the slope from its foot at the origin; the ramp reaches a
+# little above the highest point of the run, the floor runs out on both sides of the foot.
+# the turning wire reaches a little beyond the bead's farthest distance from the axis
+_RIM = f"(1.25*{_max('Abs(qmax_rho)', 'Abs(qmin_rho)')} + 0.1)"
+_RAMP = "(1.15*(qmax_X + Abs(qmax_X))/2 + 0.5)"
+# The pulleys: end masses drawn at x = -W and W, with W growing with the run's vertical extent so
+# the device is not a sliver in a tall frame; wheels of radius r = W/3 make every string vertical
+# (end mass at -W, fixed wheel from -W to -W + 2r = -r, movable wheel from -r to r).
+_W = _max("1", "0.3*(qmax_y1 - qmin_y1 + qmax_y2 - qmin_y2)")
+_R = f"({_W})/3"
+_HANG = f"0.8*{_R}"  # from the middle mass up to its wheel's centre
+_Y = "(-(y1 + y2)/2 - 1)"  # the middle mass's height (the scene's particle)
+# the fixed wheels' height: above both end masses and above the movable wheel's highest reach
+_TOP = _max(_max("qmax_y1", "qmax_y2"), f"-(qmin_y1 + qmin_y2)/2 - 1 + {_HANG} + 2*{_R}") + f" + {_R} + 0.5*{_R}"
 FAMILIES: dict[str, Family] = {
     "simple-pendulum": PENDULUM,
     "damped-pendulum": PENDULUM,
@@ -46,84 +86,161 @@ FAMILIES: dict[str, Family] = {
         dim=3,
         axes=(0, 1, 2),
         fixed=(("pivot", ("0", "0", "0")),),
-        links=(("pivot", "#0", "rod"),),
+        links=(("pivot", "#0", "string"),),
         curves=(
-            ("equator", "0", "2*pi", ("R*cos(s)", "R*sin(s)", "0")),
-            ("meridian", "0", "2*pi", ("R*sin(s)", "0", "R*cos(s)")),
-            ("meridian", "0", "2*pi", ("0", "R*sin(s)", "R*cos(s)")),
+            ("equator", "0", "2*pi", ("R*cos(s)", "R*sin(s)", "0"), "guide"),
+            ("meridian", "0", "2*pi", ("R*sin(s)", "0", "R*cos(s)"), "guide"),
+            ("meridian", "0", "2*pi", ("0", "R*sin(s)", "R*cos(s)"), "guide"),
+        ),
+        slack="string tension",
+        caption=(
+            f"The pivot, the string and the ball on the sphere it can reach (three great circles), with {TRAIL}; "
+            "drag the background to turn the view. Where the tension would be negative the string is drawn slack."
         ),
     ),
     "helix-bead": Family(
         dim=3,
         axes=(0, 1, 2),
         curves=(
-            ("helix", *_span("z"), ("R*cos(alpha*s)", "R*sin(alpha*s)", "s")),
-            ("axis", *_span("z"), ("0", "0", "s")),
+            ("helix", *_span("z"), ("R*cos(alpha*s)", "R*sin(alpha*s)", "s"), "wire"),
+            ("axis", *_span("z"), ("0", "0", "s"), "guide"),
         ),
+        caption=f"The helical wire, its axis (dashed) and the bead, with {TRAIL}; drag the background to turn the view.",
     ),
     "rotating-parabola": Family(
-        axes=(0, 1),
-        axis_names=("ρ", "z"),
-        points=(("bead", ("rho", "alpha*rho**2", "0")),),
+        # the lab frame: the wire turns about the vertical axis at omega, carrying the bead
+        dim=3,
+        axes=(0, 1, 2),
         curves=(
             (
                 "wire",
-                "-1.2*Abs(qmax_rho) - 1.2*Abs(qmin_rho) - 0.2",
-                "1.2*Abs(qmax_rho) + 1.2*Abs(qmin_rho) + 0.2",
-                ("s", "alpha*s**2", "0"),
+                f"-{_RIM}",
+                _RIM,
+                ("s*cos(omega*t)", "s*sin(omega*t)", "alpha*s**2"),
+                "wire",
             ),
-            ("axis of rotation", "0", "alpha*(1.2*Abs(qmax_rho) + 1.2*Abs(qmin_rho) + 0.2)**2", ("0", "s", "0")),
+            (
+                "rim",
+                "0",
+                "2*pi",
+                (
+                    f"{_RIM}*cos(s)",
+                    f"{_RIM}*sin(s)",
+                    f"alpha*{_RIM}**2",
+                ),
+                "guide",
+            ),
+            (
+                "axis of rotation",
+                "0",
+                f"alpha*{_RIM}**2",
+                ("0", "0", "s"),
+                "guide",
+            ),
+        ),
+        caption=(
+            "Lab frame, in three dimensions: the parabolic wire turns about the vertical axis (dashed) at the "
+            "angular velocity ω and carries the bead round, with a fading trail behind it; the dashed circle is the "
+            "rim the wire sweeps. Drag the background to turn the view."
         ),
     ),
     "incline-block": Family(
-        curves=(("incline", *_span("X"), ("s*cos(alpha)", "0", "s*sin(alpha)")),),
+        anchors=(
+            ("foot", ("0", "0", "0")),
+            ("top", (f"{_RAMP}*cos(alpha)", "0", f"{_RAMP}*sin(alpha)")),
+            ("corner", (f"{_RAMP}*cos(alpha)", "0", "0")),
+        ),
+        solids=(("ramp", ("foot", "top", "corner")),),
+        curves=(("floor", f"-0.6*{_RAMP} - 0.3", f"{_RAMP}*cos(alpha) + 0.3", ("s", "0", "0"), "ground"),),
+        caption=(
+            f"Side view: the fixed ramp at angle α on the floor, and the block on its slope with {TRAIL}. "
+            "A run that reaches the foot of the ramp ends there."
+        ),
     ),
     "tabletop-spring": Family(
         axes=(0, 1),
         fixed=(("centre", ("0", "0", "0")),),
         links=(("centre", "#0", "spring"),),
+        caption=f"The table seen from above: the fixed centre, the spring (drawn stretching) and the particle, with {TRAIL}.",
     ),
     "rail-two-body": Family(
         links=(("#0", "#1", "spring"),),
-        curves=(("rail", "Min1 - 0.5", "Max2 + 0.5", ("s", "0", "0")),),
+        curves=(("rail", "Min1 - 0.5", "Max2 + 0.5", ("s", "0", "0"), "wire"),),
+        caption=f"The rail, the two bodies and the spring between them (drawn stretching), with {TRAIL}.",
     ),
     "pulley": Family(
-        # masses hang at x = -1, 1 (the ends) and 0 (the middle); the pulleys sit above the higher end mass
-        fixed=(
-            ("left pulley", ("-1", "0", "(qmax_y1 + qmax_y2)/2 + Abs(qmax_y1 - qmax_y2)/2 + 1")),
-            ("right pulley", ("1", "0", "(qmax_y1 + qmax_y2)/2 + Abs(qmax_y1 - qmax_y2)/2 + 1")),
+        points=(
+            ("left mass", (f"-{_W}", "0", "y1")),
+            ("right mass", (_W, "0", "y2")),
+            ("middle mass", ("0", "0", _Y)),
+        ),
+        anchors=(
+            ("left wheel", (f"-{_W} + {_R}", "0", _TOP)),
+            ("left wheel, left", (f"-{_W}", "0", _TOP)),
+            ("left wheel, right", (f"-{_R}", "0", _TOP)),
+            ("right wheel", (f"{_W} - {_R}", "0", _TOP)),
+            ("right wheel, left", (_R, "0", _TOP)),
+            ("right wheel, right", (_W, "0", _TOP)),
+            ("movable wheel", ("0", "0", f"{_Y} + {_HANG}")),
+            ("movable wheel, left", (f"-{_R}", "0", f"{_Y} + {_HANG}")),
+            ("movable wheel, right", (_R, "0", f"{_Y} + {_HANG}")),
+            ("left mount", (f"-{_W} + {_R}", "0", f"{_TOP} + 1.5*{_R}")),
+            ("right mount", (f"{_W} - {_R}", "0", f"{_TOP} + 1.5*{_R}")),
         ),
         links=(
-            ("#0", "left pulley", "string"),
-            ("left pulley", "#2", "string"),
-            ("#2", "right pulley", "string"),
-            ("right pulley", "#1", "string"),
+            ("#0", "left wheel, left", "string"),
+            ("left wheel, right", "movable wheel, left", "string"),
+            ("movable wheel, right", "right wheel, left", "string"),
+            ("right wheel, right", "#1", "string"),
+            ("movable wheel", "#2", "rod"),
+            ("left wheel", "left mount", "rod"),
+            ("right wheel", "right mount", "rod"),
+        ),
+        wheels=(("left wheel", _R, "top"), ("right wheel", _R, "top"), ("movable wheel", _R, "bottom")),
+        curves=(("ceiling", f"-{_W} - 0.3*{_R}", f"{_W} + 0.3*{_R}", ("s", "0", f"{_TOP} + 1.5*{_R}"), "ceiling"),),
+        slack="string tension",
+        caption=(
+            "Two fixed wheels hang from the ceiling; the string runs from the left mass over them and under the "
+            f"movable wheel that carries the middle mass, to the right mass; {TRAIL}. Only the heights are to "
+            "scale (the masses' horizontal places are chosen for the drawing); a string with negative tension "
+            "is drawn slack."
         ),
     ),
     "double-pendulum": Family(
         fixed=(("pivot", ("0", "0", "0")),),
         links=(("pivot", "#0", "rod"), ("#0", "#1", "rod")),
+        caption=f"Side view: the pivot, the two rods and the two bobs, with {TRAIL}.",
     ),
     "coupled-oscillators": Family(
         # walls 2 m out from the masses' rest positions (-1 m and +1 m), the three springs between
-        fixed=(("left wall", ("-3", "0", "0")), ("right wall", ("3", "0", "0"))),
+        anchors=(("left wall", ("-3", "0", "0")), ("right wall", ("3", "0", "0"))),
         links=(("left wall", "#0", "spring"), ("#0", "#1", "spring"), ("#1", "right wall", "spring")),
-        curves=(("floor", "-3", "3", ("s", "0", "0")),),
+        curves=(
+            ("floor", "-3", "3", ("s", "0", "-0.12"), "ground"),
+            ("left wall", "-0.12", "0.6", ("-3", "0", "s"), "wall-left"),
+            ("right wall", "-0.12", "0.6", ("3", "0", "s"), "wall-right"),
+        ),
+        caption=(f"Side view: the two walls, the three springs (drawn stretching) and the two masses, with {TRAIL}."),
     ),
     "movable-incline": Family(
         # the wedge's apex is the wedge particle; its slope is long enough for the block's whole run
-        fixed=(
+        anchors=(
             ("wedge foot", ("X + (1.15*Abs(qmax_D) + 0.5)*cos(alpha)", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)")),
             ("wedge corner", ("X", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)")),
         ),
-        links=(("#0", "wedge foot", "rod"), ("wedge foot", "wedge corner", "rod"), ("wedge corner", "#0", "rod")),
+        solids=(("wedge", ("#0", "wedge foot", "wedge corner")),),
         curves=(
             (
                 "floor",
                 "qmin_X - 0.5",
                 "qmax_X + (1.15*Abs(qmax_D) + 0.5)*cos(alpha) + 0.5",
                 ("s", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)"),
+                "ground",
             ),
+        ),
+        caption=(
+            f"Side view: the wedge sliding on the floor and the block on its slope, with {TRAIL} "
+            "(the wedge's trail follows its top corner)."
         ),
     ),
 }
@@ -136,6 +253,11 @@ class MechanismSpec:
     points: list[dict[str, Any]] = field(default_factory=list)
     links: list[dict[str, Any]] = field(default_factory=list)
     curves: list[dict[str, Any]] = field(default_factory=list)
+    solids: list[dict[str, Any]] = field(default_factory=list)
+    wheels: list[dict[str, Any]] = field(default_factory=list)
+    forces: list[dict[str, Any]] = field(default_factory=list)
+    slack: str = ""
+    caption: str = ""
 
     def as_json(self) -> dict[str, Any]:
         return {
@@ -144,32 +266,38 @@ class MechanismSpec:
             "points": self.points,
             "links": self.links,
             "curves": self.curves,
+            "solids": self.solids,
+            "wheels": self.wheels,
+            "forces": self.forces,
+            "slack": self.slack,
+            "caption": self.caption,
         }
+
+
+def _names_in(text: str) -> set[str]:
+    try:
+        t = tree(text)
+    except TreeError:
+        return set()
+    names: set[str] = set()
+
+    def walk(node: Any) -> None:
+        if isinstance(node, str):
+            names.add(node)
+        elif isinstance(node, list):
+            for child in node[1:]:
+                walk(child)
+
+    walk(t)
+    return names
 
 
 def _moving_axes(
     particles: Sequence[tuple[str, Sequence[str]]], coordinates: Sequence[str], dim: int
 ) -> tuple[int, ...]:
     """The Cartesian axes along which some particle moves (at most ``dim`` of them)."""
-
-    def moves(text: str) -> bool:
-        try:
-            t = tree(text)
-        except TreeError:
-            return False
-        names = set()
-
-        def walk(node: Any) -> None:
-            if isinstance(node, str):
-                names.add(node)
-            elif isinstance(node, list):
-                for child in node[1:]:
-                    walk(child)
-
-        walk(t)
-        return bool(names & (set(coordinates) | {"t"}))
-
-    moving = [i for i in range(3) if any(moves(pos[i]) for _, pos in particles)]
+    moving_names = set(coordinates) | {"t"}
+    moving = [i for i in range(3) if any(_names_in(pos[i]) & moving_names for _, pos in particles)]
     if dim == 3:
         return (0, 1, 2)
     if moving == [0, 1]:
@@ -179,37 +307,107 @@ def _moving_axes(
     return (0, 2)  # otherwise a side view: horizontal x, vertical z
 
 
+def _inferred(
+    particles: Sequence[tuple[str, Sequence[str]]],
+    coordinates: Sequence[str],
+    dim: int,
+    defaults: Mapping[str, float],
+    proven: Sequence[Mapping[str, Any]],
+) -> Family:
+    """A system without a drawing of its own: its particles, with the rods and pivot their motion implies."""
+    axes = _moving_axes(particles, coordinates, dim)
+    found = rods(particles, coordinates, defaults, proven)
+    links = tuple(("pivot" if a is None else f"#{a}", f"#{b}", "rod?" if checked else "rod") for a, b, checked in found)
+    pivot = any(a is None for a, _, _ in found)
+    what = "the particles as declared"
+    if found:
+        what += ", the rods that keep their distances fixed" + (" and the fixed pivot" if pivot else "")
+    view = "in three dimensions; drag the background to turn the view" if dim == 3 else _view_name(axes)
+    return Family(
+        dim=dim,
+        axes=axes,
+        fixed=(("pivot", ("0", "0", "0")),) if pivot else (),
+        links=links,
+        caption=f"{what[0].upper()}{what[1:]} ({view}), with {TRAIL}.",
+    )
+
+
+def _view_name(axes: tuple[int, ...]) -> str:
+    names = "xyz"
+    return f"{names[axes[0]]} across, {names[axes[1]]} up"
+
+
 def mechanism(
     scene_id: str,
     particles: Sequence[tuple[str, Sequence[str]]],
     coordinates: Sequence[str],
     three_d: bool,
+    forces: Sequence[dict[str, Any]] = (),
+    defaults: Mapping[str, float] | None = None,
+    proven: Sequence[Mapping[str, Any]] = (),
 ) -> dict[str, Any] | None:
-    """The animation spec of a scene (None when its positions cannot be drawn)."""
+    """The animation spec of a scene (None when its positions cannot be drawn).
+
+    ``forces`` are the derivation document's constraint forces (name, particle, direction): each
+    becomes an arrow on its particle.  A system without a family of its own is drawn from its
+    particles, with rods inferred (app/viz/rods.py) from ``proven`` (the derivation's fixed
+    distances) or numerically at the parameters ``defaults``; without particles it has no picture,
+    and the spec says so (no points, ``none`` true, the caption in words)."""
     family = FAMILIES.get(scene_id)
+    if family is None and not particles:
+        return MechanismSpec(dim=2, axis_names=[], caption=NO_PICTURE).as_json() | {"none": True}
     if family is None:
-        dim = 3 if three_d else 2
-        family = Family(dim=dim, axes=_moving_axes(particles, coordinates, dim))
+        family = _inferred(particles, coordinates, 3 if three_d else 2, defaults or {}, proven)
     # a particle without a label is "mass k" (links refer to points by label)
     own = list(family.points) or [(name or f"mass {i + 1}", pos) for i, (name, pos) in enumerate(particles)]
-    spec = MechanismSpec(dim=family.dim, axis_names=[family.axis_names[i] for i in family.axes])
+    spec = MechanismSpec(
+        dim=family.dim,
+        axis_names=[family.axis_names[i] for i in family.axes],
+        slack=family.slack,
+        caption=family.caption,
+    )
     try:
         for name, pos in own:
             spec.points.append({"label": name, "mass": True, "xyz": [tree(pos[i]) for i in family.axes]})
-        for name, pos in family.fixed:
-            spec.points.append({"label": name, "mass": False, "xyz": [tree(pos[i]) for i in family.axes]})
+        for drawn, group in ((True, family.fixed), (False, family.anchors)):
+            for name, pos in group:
+                point = {"label": name, "mass": False, "xyz": [tree(pos[i]) for i in family.axes]}
+                spec.points.append(point if drawn else {**point, "hidden": True})
         index = {p["label"]: i for i, p in enumerate(spec.points)}
         index.update({f"#{k}": k for k in range(len(own))})
         for a, b, style in family.links:
             if a in index and b in index:
-                spec.links.append({"from": index[a], "to": index[b], "style": style})
-        for name, lo, hi, pos in family.curves:
+                # "rod?": a rod found only numerically, which the browser confirms along the run
+                link = {"from": index[a], "to": index[b], "style": style.rstrip("?")}
+                spec.links.append({**link, "check": True} if style.endswith("?") else link)
+        for name, lo, hi, pos, style in family.curves:
             lo, hi = _rail_bounds(lo, hi, coordinates)
             spec.curves.append(
-                {"label": name, "from": tree(lo), "to": tree(hi), "xyz": [tree(pos[i]) for i in family.axes]}
+                {
+                    "label": name,
+                    "from": tree(lo),
+                    "to": tree(hi),
+                    "xyz": [tree(pos[i]) for i in family.axes],
+                    "style": style,
+                    "moving": bool(set().union(*(_names_in(pos[i]) for i in family.axes)) & ({"t", *coordinates})),
+                }
             )
+        for name, corners in family.solids:
+            spec.solids.append({"label": name, "corners": [index[c] for c in corners]})
+        for centre, radius, wrap in family.wheels:
+            spec.wheels.append({"at": index[centre], "radius": tree(radius), "wrap": wrap})
     except TreeError:
         return None
+    for f in forces:
+        k = int(f.get("particle", 1)) - 1
+        direction = f.get("direction")
+        if not direction or not 0 <= k < len(own):
+            continue
+        try:
+            arrow = [tree(direction[i]) for i in family.axes]
+        except TreeError:
+            continue  # this force is left without an arrow
+        spec.forces.append({"name": f["name"], "on": k, "direction": arrow})
     if not spec.points:
         return None
     return spec.as_json()

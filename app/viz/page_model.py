@@ -256,6 +256,11 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular) -> dict[s
             for c in doc.get("constraint_forces") or []
         ],  # fmt: skip
         "mechanism": spec,
+        # where the set-up ends (the browser's preview stops there too, as the server's run does)
+        "events": [
+            {"name": e["name"], "message": e["message"], "tree": maybe_tree(e["expression"], names)}
+            for e in info.get("events", [])
+        ],
         "methods": list(methods),
         # equilibria at rest with an oscillating mode (numbers at the default parameters), for the modes panel
         "normal_modes": oscillating_equilibria(doc),
@@ -301,12 +306,18 @@ def scene_page(
     """
     declared = list(info.get("panels", ()))
     reduction = _reduction(doc)
+    defaults = {k: v["default"] for k, v in doc["parameters"].items()}
     spec = mechanism(
-        info.get("id", doc.get("id", "")), particles, doc["coordinates"], moves_in_3d(particles, doc["coordinates"])
+        info.get("id", doc.get("id", "")),
+        particles,
+        doc["coordinates"],
+        moves_in_3d(particles, doc["coordinates"]),
+        forces=doc.get("constraint_forces") or (),
+        defaults=defaults,
+        proven=doc.get("fixed_distances") or (),
     )
     panels = _panels(declared, doc, reduction, spec, scene)
     info = {**info, "panels": panels}
-    defaults = {k: v["default"] for k, v in doc["parameters"].items()}
     angular = angles(doc, particles)
     client = _client(doc, info, reduction, spec, methods, nonnegative, angular)
     return {
@@ -323,6 +334,10 @@ def scene_page(
             doc["coordinates"],
             particles,
         ),  # fmt: skip
+        # what the animation draws, in words (the set-up's figure text stays with the diagram)
+        "animation_caption": spec["caption"] if spec else "",
+        "animation_forces": bool(spec and spec.get("forces")),
+        "animation_none": bool(spec and spec.get("none")),
         "steps": _steps(doc),
         "summary": _summary(doc),
         "errata": doc.get("errata") or [],

@@ -36,6 +36,7 @@ def scene_info(scene_id: str, doc: dict[str, Any]) -> dict[str, Any]:
     info = {"id": s.id, **derivations.scene_summary(s), "statement": s.statement, "figure": s.figure}
     info.update(doc.get("scene") or {})
     info["id"] = s.id
+    info["events"] = [{"name": e.name, "expression": e.expression, "message": e.message} for e in s.events]
     return info
 
 

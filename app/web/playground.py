@@ -29,7 +29,7 @@ from app.service import user_systems
 from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
 from app.service.user_systems import InvalidSystem
 from app.service.worker import JobFailed
-from app.viz.page_model import angles, scene_page
+from app.viz.page_model import scene_page
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
 from app.web.limits import TooDeep, check_json_depth
 from app.web.schemas import SESSION_COOKIE
@@ -235,24 +235,17 @@ def _located(form: Form, loc: tuple, message: str, start: int | None = None, end
     return FormError(message, target, _value_at(form, target), start, end)
 
 
-def _display_particles(spec: dict[str, Any], doc: dict[str, Any]) -> list[tuple[str, tuple[str, str, str]]]:
-    """What the animation draws: the particles, or else one bead per coordinate (on a circle for an angle)."""
-    if spec.get("particles"):
-        return [
-            (p.get("label") or "", tuple(p["position"]) + ("0",) * (3 - len(p["position"]))) for p in spec["particles"]
-        ]
-    angular = angles(doc)
-    beads = []
-    for k, q in enumerate(spec["coordinates"]):
-        x0, z0 = 3 * k, 0
-        position = (f"{x0} + sin({q})", "0", f"{z0} - cos({q})") if q in angular else (q, "0", f"{-1.5 * k}")
-        beads.append((q, position))
-    return beads
+def _display_particles(spec: dict[str, Any]) -> list[tuple[str, tuple[str, str, str]]]:
+    """What the animation draws: the particles as declared (none for a system given by L or by T and U)."""
+    return [
+        (p.get("label") or "", tuple(p["position"]) + ("0",) * (3 - len(p["position"])))
+        for p in spec.get("particles") or []
+    ]
 
 
 def model_of(spec: dict[str, Any], doc: dict[str, Any]) -> dict[str, Any]:
     """The scene page model for a user system (pure Python: expression trees, no SymPy)."""
-    particles = _display_particles(spec, doc)
+    particles = _display_particles(spec)
     info = {
         "id": "playground",
         "title": "Your system",

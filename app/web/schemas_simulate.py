@@ -61,6 +61,12 @@ class SimulateRequest(BaseModel):
     )
 
 
+class SimulateEvent(BaseModel):
+    name: str = Field(description="The scene's name for the event, e.g. 'foot of the ramp'.")
+    t: float = Field(description="When it happened (s); the run's last sample is the state at that instant.")
+    message: str = Field(description="What happened, in words.")
+
+
 class SimulateStats(BaseModel):
     method: str
     reason: str
@@ -77,6 +83,9 @@ class SimulateStats(BaseModel):
     warnings: list[str]
     t_end_reached: float
     complete: bool
+    event: SimulateEvent | None = Field(
+        None, description="The terminal event that ended the run before t_end (the set-up no longer holds), or null."
+    )
 
 
 class BrowserPreview(BaseModel):

@@ -30,6 +30,7 @@
 import { compile, symbolsOf } from "./expr.js";
 
 const MASS_COLORS = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a"];
+const FORCE_COLORS = ["#7b1fa2", "#00796b", "#c62828"];
 const TRAIL_SECONDS = 1.5;
 const MAX_TRAIL = 90;
 const GRAB_RADIUS = 26; // CSS pixels around a body that start a drag
@@ -70,7 +71,10 @@ export class Player {
     this.view = { yaw: -0.6, pitch: 0.35 }; // 3-D only
     this.points = spec.points.map((p) => p.xyz.map(compile));
     this.masses = spec.points.map((p, i) => (p.mass ? i : -1)).filter((i) => i >= 0);
-    this.fixed = spec.points.map((p, i) => (p.mass ? -1 : i)).filter((i) => i >= 0);
+    this.fixed = spec.points.map((p, i) => (p.mass || p.hidden ? -1 : i)).filter((i) => i >= 0);
+    this.wheels = (spec.wheels || []).map((w) => ({ ...w, r: compile(w.radius) }));
+    this.showForces = root.querySelector("input.show-forces");
+    this.showForces?.addEventListener("change", () => { if (this.run) this.draw(this.index); });
     this.selected = 0;
     this.button?.addEventListener("click", () => this.toggle());
     this.scrub?.addEventListener("input", () => { this.pause(); this.seek(Number(this.scrub.value)); });
@@ -137,17 +141,51 @@ export class Player {
   }
 
   curves(run) {
-    const env = { ...run.params, ...run.extent, t: 0 };
+    // a fixed curve is computed once per run; a moving one (its position uses t or a coordinate:
+    // the turning wire) is computed again at every frame from the frame's environment
+    const base = { ...run.params, ...run.extent, t: 0 };
     return this.spec.curves.map((c) => {
-      const lo = compile(c.from)(env), hi = compile(c.to)(env);
-      const fs = c.xyz.map(compile);
-      const cols = fs.map(() => new Float64Array(161));
-      for (let k = 0; k <= 160; k++) {
-        const e = { ...env, s: lo + ((hi - lo) * k) / 160 };
-        fs.forEach((f, a) => { cols[a][k] = f(e); });
-      }
-      return { label: c.label, cols };
+      const fs = c.xyz.map(compile), from = compile(c.from), to = compile(c.to);
+      const at = (env) => {
+        const lo = from(env), hi = to(env);
+        const cols = fs.map(() => new Float64Array(161));
+        for (let k = 0; k <= 160; k++) {
+          const e = { ...env, s: lo + ((hi - lo) * k) / 160 };
+          fs.forEach((f, a) => { cols[a][k] = f(e); });
+        }
+        return cols;
+      };
+      return { label: c.label, style: c.style || "guide", moving: !!c.moving, at, cols: at(c.moving ? run.envAt(0) : base) };
     });
+  }
+
+  /** The rods found only numerically on the server, confirmed along this run: indices of links whose length changes. */
+  unsteadyLinks(run) {
+    const out = new Set();
+    this.spec.links.forEach((link, j) => {
+      if (!link.check) return;
+      const a = this.xyz[link.from], b = this.xyz[link.to];
+      let lo = Infinity, hi = -Infinity;
+      for (let i = 0; i < run.n; i++) {
+        const d = Math.hypot(...a.map((col, k) => col[i] - b[k][i]));
+        lo = Math.min(lo, d); hi = Math.max(hi, d);
+      }
+      if (!(hi - lo <= 1e-6 * Math.max(1, hi))) out.add(j);
+    });
+    return out;
+  }
+
+  /** Per force of constraint: its values along the run and the largest size (for a common scale). */
+  forceSeries(run) {
+    const out = [];
+    let largest = 0;
+    for (const f of this.spec.forces || []) {
+      const values = run.forces[f.name];
+      if (!values || !values.length) continue;
+      for (const v of values) if (Number.isFinite(v)) largest = Math.max(largest, Math.abs(v));
+      out.push({ ...f, values, dir: f.direction.map(compile) });
+    }
+    return { list: out, largest };
   }
 
   fit() {
@@ -162,7 +200,13 @@ export class Player {
     const stride = Math.max(1, Math.floor(this.run.n / 400));
     for (const a of this.xyz) for (let i = 0; i < this.run.n; i += stride) grow(a[0][i], a[1][i], a[2] ? a[2][i] : 0);
     for (const a of this.xyz) { const i = this.run.n - 1; grow(a[0][i], a[1][i], a[2] ? a[2][i] : 0); }
-    for (const c of this.curveCols) for (let k = 0; k < c.cols[0].length; k++) grow(c.cols[0][k], c.cols[1][k], c.cols[2] ? c.cols[2][k] : 0);
+    for (const c of this.curveCols) {
+      const frames = c.moving ? Array.from({ length: 24 }, (_, j) => Math.round((j * (this.run.n - 1)) / 23)) : [null];
+      for (const f of frames) {
+        const cols = f === null ? c.cols : c.at(this.run.envAt(f));
+        for (let k = 0; k < cols[0].length; k++) grow(cols[0][k], cols[1][k], cols[2] ? cols[2][k] : 0);
+      }
+    }
     if (!Number.isFinite(ulo)) { ulo = -1; uhi = 1; vlo = -1; vhi = 1; }
     const W = this.canvas.width, H = this.canvas.height, pad = 24 * (window.devicePixelRatio || 1);
     const su = Math.max(uhi - ulo, 1e-6), sv = Math.max(vhi - vlo, 1e-6);
@@ -175,6 +219,8 @@ export class Player {
     this.run = run;
     this.xyz = this.positions(run);
     this.curveCols = this.curves(run);
+    this.unsteady = this.unsteadyLinks(run);
+    this.forces = this.forceSeries(run);
     const dt = run.n > 1 ? run.t[1] - run.t[0] : 1;
     this.dt = dt;
     this.trailLength = Math.max(2, Math.min(MAX_TRAIL, Math.round(TRAIL_SECONDS / dt)));
@@ -194,46 +240,73 @@ export class Player {
   }
 
   draw(i) {
-    const ctx = this.ctx, dpr = window.devicePixelRatio || 1;
+    const ctx = this.ctx, dpr = window.devicePixelRatio || 1, run = this.run;
     ctx.setTransform(1, 0, 0, 1, 0, 0);
     ctx.clearRect(0, 0, this.canvas.width, this.canvas.height);
     ctx.lineCap = "round"; ctx.lineJoin = "round";
-    // fixed curves: the path, the wire, the incline
-    ctx.strokeStyle = "#8c959f"; ctx.lineWidth = 2 * dpr;
-    ctx.setLineDash(this.dim === 3 ? [] : [4 * dpr, 4 * dpr]);
-    for (const c of this.curveCols) {
-      ctx.beginPath();
-      let pen = false;
-      for (let k = 0; k < c.cols[0].length; k++) {
-        const [x, y] = this.screenOf([c.cols[0][k], c.cols[1][k], c.cols[2] ? c.cols[2][k] : 0]);
-        if (!Number.isFinite(x) || !Number.isFinite(y)) { pen = false; continue; }
-        if (pen) ctx.lineTo(x, y); else ctx.moveTo(x, y);
-        pen = true;
-      }
-      ctx.stroke();
+    const drawn = { links: 0, wheels: 0, slack: false, forces: [], event: "", none: !!this.spec.none };
+    if (this.spec.none) {
+      this.message(ctx, dpr, "No picture of its own: this system has no particle positions.", this.canvas.height / 2);
     }
-    ctx.setLineDash([]);
-    this.scaleBar(ctx, dpr);
-    // links: rods, springs (a zigzag) and strings
-    for (const link of this.spec.links) {
-      const [x0, y0] = this.at(link.from, i), [x1, y1] = this.at(link.to, i);
-      ctx.strokeStyle = "#1b1f24";
-      ctx.lineWidth = (link.style === "string" ? 1.5 : 3) * dpr;
+    // fixed bodies (a ramp, a wedge), then the curves: the ground, wires, dashed guides
+    for (const solid of this.spec.solids || []) {
       ctx.beginPath();
-      if (link.style === "spring") this.zigzag(ctx, x0, y0, x1, y1, dpr);
-      else { ctx.moveTo(x0, y0); ctx.lineTo(x1, y1); }
-      ctx.stroke();
+      solid.corners.forEach((p, k) => { const [x, y] = this.at(p, i); if (k) ctx.lineTo(x, y); else ctx.moveTo(x, y); });
+      ctx.closePath();
+      ctx.fillStyle = "#e3e7ec"; ctx.fill();
+      ctx.strokeStyle = "#6b747e"; ctx.lineWidth = 2 * dpr; ctx.stroke();
     }
-    // fading trails, then the bodies on top
+    for (const c of this.curveCols) this.drawCurve(ctx, c, c.moving ? c.at(run.envAt(i)) : c.cols, dpr);
+    if (!this.spec.none) this.scaleBar(ctx, dpr);
+    // fading trails first, so that strings, rods and springs are drawn over them
     this.masses.forEach((p, k) => {
       const color = MASS_COLORS[k % MASS_COLORS.length];
       for (let j = Math.max(0, i - this.trailLength + 1); j < i; j++) {
         const age = (i - j) / this.trailLength;
         const [x, y] = this.at(p, j);
-        ctx.fillStyle = mix(color, 0.75 * (1 - age) + 0.08);
+        ctx.fillStyle = mix(color, 0.5 * (1 - age) + 0.06);
         ctx.beginPath(); ctx.arc(x, y, 2.5 * dpr, 0, 2 * Math.PI); ctx.fill();
       }
     });
+    // links: rods, springs (a zigzag that stretches with them) and strings (slack where the
+    // tension the engine derives for them is negative)
+    const tension = this.spec.slack && run.forces[this.spec.slack] ? run.forces[this.spec.slack][i] : null;
+    const slack = tension !== null && tension !== undefined && tension < 0;
+    this.spec.links.forEach((link, j) => {
+      if (this.unsteady.has(j)) return;
+      const [x0, y0] = this.at(link.from, i), [x1, y1] = this.at(link.to, i);
+      const string = link.style === "string";
+      ctx.strokeStyle = string && slack ? "#c26100" : "#1b1f24";
+      ctx.lineWidth = (string ? 1.5 : link.style === "spring" ? 1.8 : 3) * dpr;
+      ctx.setLineDash(string && slack ? [5 * dpr, 3 * dpr] : []);
+      ctx.beginPath();
+      if (link.style === "spring") this.zigzag(ctx, x0, y0, x1, y1, dpr);
+      else if (string && slack) {
+        // a slack string sags: a curve through a point below the straight line's middle
+        const len = Math.hypot(x1 - x0, y1 - y0);
+        ctx.moveTo(x0, y0);
+        ctx.quadraticCurveTo((x0 + x1) / 2 + 0.15 * len, (y0 + y1) / 2 + 0.3 * len, x1, y1);
+      } else { ctx.moveTo(x0, y0); ctx.lineTo(x1, y1); }
+      ctx.stroke();
+      drawn.links++;
+    });
+    ctx.setLineDash([]);
+    drawn.slack = slack;
+    // wheels: the rim, the hub, and the string wrapped over its top (a fixed pulley) or under its
+    // bottom (the movable one)
+    for (const w of this.wheels) {
+      const [x, y] = this.at(w.at, i);
+      const env = run.envAt(i), r = Math.abs(w.r(env)) * this.frame.scale;
+      if (!Number.isFinite(r)) continue;
+      ctx.fillStyle = "#fff"; ctx.strokeStyle = "#6b747e"; ctx.lineWidth = 2 * dpr;
+      ctx.beginPath(); ctx.arc(x, y, r, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      ctx.fillStyle = "#6b747e"; ctx.beginPath(); ctx.arc(x, y, 3 * dpr, 0, 2 * Math.PI); ctx.fill();
+      ctx.strokeStyle = slack ? "#c26100" : "#1b1f24"; ctx.lineWidth = 1.5 * dpr;
+      ctx.beginPath();
+      if (w.wrap === "top") ctx.arc(x, y, r, Math.PI, 2 * Math.PI); else ctx.arc(x, y, r, 0, Math.PI);
+      ctx.stroke();
+      drawn.wheels++;
+    }
     ctx.fillStyle = "#1b1f24";
     for (const p of this.fixed) {
       const [x, y] = this.at(p, i);
@@ -241,32 +314,167 @@ export class Player {
     }
     const bodies = [];
     ctx.font = `${13 * dpr}px system-ui, sans-serif`;
+    const placed = this.masses.map((p) => this.at(p, i));
+    if (this.masses.length > 1) {
+      // labels first, so no label hides a body; each goes to the corner beside its body where it
+      // covers the fewest rods, strings, springs and bodies and stays inside the canvas, with a
+      // white halo so that bodies that meet keep readable labels
+      const segments = this.spec.links.map((link) => [this.at(link.from, i), this.at(link.to, i)]);
+      const cost = (x0, y0, x1, y1) => {
+        let c = 0;
+        if (x0 < 2 * dpr || x1 > this.canvas.width - 2 * dpr || y0 < 2 * dpr || y1 > this.canvas.height - 2 * dpr) c += 100;
+        const inside = (x, y) => x >= x0 && x <= x1 && y >= y0 && y <= y1;
+        for (const [[ax, ay], [bx, by]] of segments) {
+          for (let f = 0; f <= 1; f += 0.125) if (inside(ax + (bx - ax) * f, ay + (by - ay) * f)) { c += 1; break; }
+        }
+        for (const [bx, by] of placed) if (inside(bx, by) || inside(bx - 10 * dpr, by) || inside(bx + 10 * dpr, by)) c += 2;
+        return c;
+      };
+      this.masses.forEach((p, k) => {
+        const [x, y] = placed[k], label = this.spec.points[p].label, w = ctx.measureText(label).width, h = 13 * dpr;
+        let best = null;
+        for (const [sx, sy] of [[1, -1], [-1, -1], [1, 1], [-1, 1]]) {
+          const lx = x + sx * 14 * dpr, ly = y + (sy < 0 ? -12 : 22) * dpr;
+          const x0 = sx > 0 ? lx : lx - w, c = cost(x0, ly - h, x0 + w, ly + 3 * dpr);
+          if (!best || c < best.c) best = { c, lx, ly, align: sx > 0 ? "left" : "right" };
+        }
+        ctx.textAlign = best.align;
+        ctx.strokeStyle = "#fff"; ctx.lineWidth = 4 * dpr;
+        ctx.strokeText(label, best.lx, best.ly);
+        ctx.fillStyle = "#1b1f24";
+        ctx.fillText(label, best.lx, best.ly);
+      });
+      ctx.textAlign = "left";
+    }
     this.masses.forEach((p, k) => {
-      const [x, y] = this.at(p, i);
+      const [x, y] = placed[k];
       const selected = k === this.selected && this.focused;
       ctx.fillStyle = MASS_COLORS[k % MASS_COLORS.length];
       ctx.strokeStyle = selected ? "#ffbf47" : "#1b1f24";
       ctx.lineWidth = (selected ? 4 : 1.5) * dpr;
       ctx.beginPath(); ctx.arc(x, y, 10 * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
-      if (this.masses.length > 1) {
-        // labels point away from the middle of the view and alternate above and below,
-        // with a white halo, so bodies that meet keep readable labels
-        const left = x < this.canvas.width / 2;
-        ctx.textAlign = left ? "right" : "left";
-        const lx = x + (left ? -14 : 14) * dpr, ly = y + (k % 2 ? 22 : -12) * dpr;
-        ctx.strokeStyle = "#fff"; ctx.lineWidth = 4 * dpr;
-        ctx.strokeText(this.spec.points[p].label, lx, ly);
-        ctx.fillStyle = "#1b1f24";
-        ctx.fillText(this.spec.points[p].label, lx, ly);
-        ctx.textAlign = "left";
-      }
       bodies.push({ label: this.spec.points[p].label, x: Math.round(x / dpr), y: Math.round(y / dpr) });
     });
+    if (this.showForces?.checked) drawn.forces = this.drawForces(ctx, i, dpr);
+    if (slack) this.message(ctx, dpr, "The string is slack (its tension would be negative).", 18 * dpr);
+    const event = run.stats && run.stats.event;
+    if (event && i === run.n - 1) {
+      drawn.event = event.name;
+      this.message(ctx, dpr, `t = ${Number(event.t.toFixed(3))} s: ${event.message}`, 18 * dpr);
+    }
     this.canvas.dataset.bodies = JSON.stringify(bodies);
+    this.canvas.dataset.drawn = JSON.stringify(drawn);
     const handle = i === 0 ? this.handle() : null;
     if (handle) this.drawHandle(ctx, handle, dpr);
     this.canvas.dataset.handle = handle ? JSON.stringify({ x: Math.round(handle.x / dpr), y: Math.round(handle.y / dpr) }) : "";
     this.frames++;
+  }
+
+  drawCurve(ctx, c, cols, dpr) {
+    const style = c.style;
+    ctx.strokeStyle = style === "guide" ? "#8c959f" : "#4b535c";
+    ctx.lineWidth = (style === "guide" ? 1.5 : 2.5) * dpr;
+    ctx.setLineDash(style === "guide" ? [4 * dpr, 4 * dpr] : []);
+    const pts = [];
+    for (let k = 0; k < cols[0].length; k++) pts.push(this.screenOf([cols[0][k], cols[1][k], cols[2] ? cols[2][k] : 0]));
+    ctx.beginPath();
+    let pen = false;
+    for (const [x, y] of pts) {
+      if (!Number.isFinite(x) || !Number.isFinite(y)) { pen = false; continue; }
+      if (pen) ctx.lineTo(x, y); else ctx.moveTo(x, y);
+      pen = true;
+    }
+    ctx.stroke();
+    ctx.setLineDash([]);
+    // the ground, a ceiling or a wall: short slanted hatches on the side away from the motion
+    const away = { ground: [-1, 1], ceiling: [1, -1], "wall-left": [-1, 1], "wall-right": [1, 1] }[style];
+    if (!away) return;
+    const [x0, y0] = pts[0], [x1, y1] = pts[pts.length - 1], len = Math.hypot(x1 - x0, y1 - y0);
+    if (!(len > 0)) return;
+    const gap = 10 * dpr, h = 7 * dpr, count = Math.floor(len / gap);
+    ctx.lineWidth = 1.2 * dpr; ctx.strokeStyle = "#8c959f";
+    ctx.beginPath();
+    for (let k = 0; k <= count; k++) {
+      const x = x0 + ((x1 - x0) * k) / count, y = y0 + ((y1 - y0) * k) / count;
+      const vertical = style.startsWith("wall");
+      ctx.moveTo(x, y);
+      ctx.lineTo(x + (vertical ? away[0] * h : away[0] * h * 0.7), y + (vertical ? away[1] * h * 0.7 : away[1] * h));
+    }
+    ctx.stroke();
+  }
+
+  /** Arrows of the forces of constraint at instant i, on one scale for the whole run, with a legend. */
+  drawForces(ctx, i, dpr) {
+    const { list, largest } = this.forces;
+    if (!list.length || !(largest > 0)) return [];
+    const env = this.run.envAt(i), longest = 0.3 * Math.min(this.canvas.width, this.canvas.height);
+    const perNewton = longest / largest; // screen pixels per newton
+    const out = [];
+    list.forEach((f, j) => {
+      const value = f.values[i];
+      if (!Number.isFinite(value)) return;
+      const p = this.masses[f.on], a = this.xyz[p];
+      const r = a.map((col) => col[i]), d = f.dir.map((g) => g(env));
+      // the arrow is the vector F (grad g / |grad g|) drawn at perNewton screen pixels per newton
+      // (a negative F points against grad g); in 3-D it is projected like everything else
+      const len = (value * perNewton) / this.frame.scale;
+      const [x, y] = this.screenOf([r[0], r[1], r[2] ?? 0]);
+      const [tx, ty] = this.screenOf([r[0] + len * d[0], r[1] + len * d[1], (r[2] ?? 0) + len * (d[2] ?? 0)]);
+      if (!Number.isFinite(tx + ty)) return;
+      const color = FORCE_COLORS[j % FORCE_COLORS.length];
+      this.arrow(ctx, x, y, tx, ty, color, dpr);
+      out.push({ name: f.name, value, x: Math.round(x / dpr), y: Math.round(y / dpr), tx: Math.round(tx / dpr), ty: Math.round(ty / dpr) });
+    });
+    // the legend, top right on a white card: a round force (at most the largest) and its arrow,
+    // then each force's colour and name
+    const pow = Math.pow(10, Math.floor(Math.log10(largest)));
+    const unit = [5, 2, 1].map((m) => m * pow).find((v) => v <= largest) || pow;
+    ctx.font = `${12 * dpr}px system-ui, sans-serif`;
+    const names = list.map((f) => `→ ${f.name}`);
+    const width = Math.max(unit * perNewton + 60 * dpr, ...names.map((t) => ctx.measureText(t).width)) + 12 * dpr;
+    const W = this.canvas.width, x1 = W - 12 * dpr, top = 30 * dpr, rowH = 16 * dpr;
+    ctx.fillStyle = "rgba(255,255,255,0.9)";
+    ctx.fillRect(x1 - width, top - 12 * dpr, width + 6 * dpr, rowH * (names.length + 1) + 6 * dpr);
+    ctx.textAlign = "right";
+    names.forEach((text, j) => {
+      ctx.fillStyle = FORCE_COLORS[j % FORCE_COLORS.length];
+      ctx.fillText(text, x1, top + j * rowH);
+    });
+    const y = top + names.length * rowH - 4 * dpr, x0 = x1 - unit * perNewton;
+    this.arrow(ctx, x0, y, x1, y, "#4b535c", dpr);
+    ctx.fillStyle = "#4b535c"; ctx.fillText(`${Number(unit.toPrecision(2))} N`, x0 - 6 * dpr, y + 4 * dpr);
+    ctx.textAlign = "left";
+    return out;
+  }
+
+  arrow(ctx, x0, y0, x1, y1, color, dpr) {
+    const len = Math.hypot(x1 - x0, y1 - y0);
+    ctx.strokeStyle = color; ctx.fillStyle = color; ctx.lineWidth = 2.5 * dpr;
+    ctx.beginPath(); ctx.moveTo(x0, y0); ctx.lineTo(x1, y1); ctx.stroke();
+    if (len < 2 * dpr) return;
+    const ux = (x1 - x0) / len, uy = (y1 - y0) / len, s = Math.min(9 * dpr, len / 2);
+    ctx.beginPath();
+    ctx.moveTo(x1, y1);
+    ctx.lineTo(x1 - ux * s - uy * s * 0.5, y1 - uy * s + ux * s * 0.5);
+    ctx.lineTo(x1 - ux * s + uy * s * 0.5, y1 - uy * s - ux * s * 0.5);
+    ctx.closePath(); ctx.fill();
+  }
+
+  /** Text across the canvas at height y (wrapped to its width), on a white band. */
+  message(ctx, dpr, text, y) {
+    ctx.font = `${13 * dpr}px system-ui, sans-serif`;
+    const room = this.canvas.width - 24 * dpr, lines = [];
+    for (const word of text.split(" ")) {
+      const last = lines.length ? `${lines[lines.length - 1]} ${word}` : word;
+      if (lines.length && ctx.measureText(last).width <= room) lines[lines.length - 1] = last;
+      else lines.push(word);
+    }
+    const h = 17 * dpr, w = Math.min(room, Math.max(...lines.map((l) => ctx.measureText(l).width)));
+    const x = (this.canvas.width - w) / 2, top = Math.max(4 * dpr, y - 14 * dpr - ((lines.length - 1) * h) / 2);
+    ctx.fillStyle = "rgba(255,255,255,0.9)";
+    ctx.fillRect(x - 6 * dpr, top, w + 12 * dpr, lines.length * h + 6 * dpr);
+    ctx.fillStyle = "#1b1f24";
+    lines.forEach((line, k) => ctx.fillText(line, x, top + 14 * dpr + k * h, room));
   }
 
   zigzag(ctx, x0, y0, x1, y1, dpr) {

@@ -12,7 +12,13 @@
  * the server's), with enough sub-steps per sample that h·ω ≤ 0.25 for the fastest frequency
  * ω estimated from the Jacobian's diagonal at the start.  It is a preview: the server's run,
  * with its error estimate and conservation audit, replaces it when the input settles.
+ *
+ * A scene's terminal events (data.events: {name, message, tree}, app/numerics/events.py) end
+ * the preview where the server's run ends: the first sub-step after which an event's g is
+ * negative; the instant between the two sub-steps is where the straight line through the two
+ * values of g crosses zero, and the state there is interpolated the same way.
  */
+import { compile } from "./expr.js";
 
 const MAX_EVALUATIONS = 400_000; // about 10-20 ms of arithmetic for a small system
 
@@ -58,9 +64,27 @@ export function integrate(preview, rhs, data, request, samples) {
   const cols = Array.from({ length: m }, () => new Float64Array(N));
   const t = new Float64Array(N);
   for (let j = 0; j < m; j++) cols[j][0] = y[j];
+  const events = (data.events || []).filter((e) => e.tree !== null).map((e) => ({ ...e, g: compile(e.tree) }));
+  const env = { ...data.parameters, ...request.parameters };
+  const gOf = (e, time, state) => {
+    preview.coordinates.forEach((q, i) => { env[q] = state[i]; env[`${q}_dot`] = state[n + i]; });
+    env.t = time;
+    return e.g(env);
+  };
+  const prev = new Float64Array(m);
+  const finish = (count, stats) => {
+    const state = {};
+    preview.coordinates.forEach((q, i) => { state[q] = cols[i].slice(0, count); state[`${q}_dot`] = cols[n + i].slice(0, count); });
+    return { t: t.slice(0, count), state, conserved: {}, constraint_forces: {}, stats };
+  };
+  const stats = (steps) => ({ method: "RK4 (browser preview)", steps, rhs_evaluations: steps * 4, step_size: h, event: null });
+  for (const e of events) {
+    if (gOf(e, 0, y) < 0) return finish(1, { ...stats(0), event: { name: e.name, t: 0, message: e.message } });
+  }
   let time = 0;
   for (let s = 1; s < N; s++) {
     for (let r = 0; r < sub; r++) {
+      prev.set(y);
       // y(t + h) = y + h/6 (k1 + 2 k2 + 2 k3 + k4)
       rhs(time, y, k, k1);
       for (let j = 0; j < m; j++) tmp[j] = y[j] + 0.5 * h * k1[j];
@@ -71,6 +95,15 @@ export function integrate(preview, rhs, data, request, samples) {
       rhs(time + h, tmp, k, k4);
       for (let j = 0; j < m; j++) y[j] += (h / 6) * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
       time += h;
+      for (const e of events) {
+        const gb = gOf(e, time, y);
+        if (!(gb < 0)) continue;
+        // g(time - h) >= 0 > g(time): the zero of the line through the two values
+        const ga = gOf(e, time - h, prev), f = ga / (ga - gb), at = time - h + f * h;
+        t[s] = at;
+        for (let j = 0; j < m; j++) cols[j][s] = prev[j] + f * (y[j] - prev[j]);
+        return finish(s + 1, { ...stats((s - 1) * sub + r + 1), event: { name: e.name, t: at, message: e.message } });
+      }
     }
     t[s] = s * dt;
     for (let j = 0; j < m; j++) {
@@ -78,10 +111,5 @@ export function integrate(preview, rhs, data, request, samples) {
       cols[j][s] = y[j];
     }
   }
-  const state = {};
-  preview.coordinates.forEach((q, i) => { state[q] = cols[i]; state[`${q}_dot`] = cols[n + i]; });
-  return {
-    t, state, conserved: {}, constraint_forces: {},
-    stats: { method: "RK4 (browser preview)", steps: (N - 1) * sub, rhs_evaluations: (N - 1) * sub * 4, step_size: h },
-  };
+  return finish(N, stats((N - 1) * sub));
 }

@@ -211,7 +211,13 @@ function describe(stats) {
   if (stats.reason) parts.push(`(${stats.reason})`);
   parts.push(`run time ${fmt((stats.wall_time_s || 0) * 1000)} ms`);
   if (stats.error_estimate !== undefined && stats.error_estimate !== null) parts.push(`estimated error ${fmt(stats.error_estimate)}`);
-  return parts.join(", ") + ".";
+  return parts.join(", ") + "." + ended(stats);
+}
+
+/** The terminal event that ended a run, in words ("" when the run reached t_end). */
+export function ended(stats) {
+  const e = stats && stats.event;
+  return e ? ` At t = ${fmt(e.t)} s: ${e.message}` : "";
 }
 
 const painted = (source) => document.dispatchEvent(new CustomEvent("lagrange:painted", { detail: { source } }));
@@ -265,7 +271,7 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
       view.draw(prepared, "preview");
       // where the preview's time goes (integrate / prepare / draw, ms): read by benchmarks/bench_browser.py
       root.dataset.previewTiming = [t1 - t0, t2 - t1, performance.now() - t2].map((x) => x.toFixed(1)).join(" ");
-      say("preview", "Preview: integrated in your browser (RK4, fixed step). The server's run, with its error estimate, replaces it when you stop.");
+      say("preview", "Preview: integrated in your browser (RK4, fixed step). The server's run, with its error estimate, replaces it when you stop." + ended(result.stats));
       painted("preview");
     });
   }

@@ -23,7 +23,9 @@ def test_the_default_system_is_derived_typeset_and_simulated(page, artifacts):
     assert page.evaluate("document.body.dataset.katexErrors") == "0"
     assert page.locator("#derivation .step").count() >= 8
     assert page.locator(".math .katex").count() == page.locator(".math").count() > 0
-    assert page.evaluate("JSON.parse(document.querySelector('[data-panel=animation-2d] canvas').dataset.bodies).length") > 0
+    # the default system is given by T and U (no particle positions): no invented picture
+    assert page.evaluate("JSON.parse(document.querySelector('[data-panel=animation-2d] canvas').dataset.drawn).none")
+    assert "No picture" in page.inner_text("[data-panel=animation-2d] .animation-caption")
     for kind in ("energy", "phase"):
         plot = page.locator(f"[data-panel={kind}] .plot")
         page.wait_for_function("(el) => el.data && el.data.length > 0", arg=plot.element_handle())

@@ -26,7 +26,8 @@ BEYOND_CHAPTER = {"double-pendulum", "coupled-oscillators"}
 # what the engine must find: cyclic coordinates and whether h = E
 CYCLIC = {"tabletop-spring": ("theta",), "spherical-pendulum": ("phi",), "movable-incline": ("X",)}
 MOVING_CONSTRAINT = {"rotating-parabola"}
-THREE_D = {"spherical-pendulum", "helix-bead"}
+# the rotating parabola too: in the lab frame its bead goes round the axis with the wire
+THREE_D = {"spherical-pendulum", "helix-bead", "rotating-parabola"}
 
 
 def test_all_scenes_are_registered_and_the_later_ones_marked():

@@ -97,6 +97,15 @@ def test_too_much_work_is_422_not_a_hang(client, monkeypatch):
     assert response.json()["detail"].startswith("too much work for LSODA")
 
 
+def test_the_incline_run_ends_at_the_foot_of_the_ramp(client):
+    doc = client.post("/api/scenes/incline-block/simulate", json={"initial": {}}).json()
+    event = doc["stats"]["event"]
+    assert event["name"] == "foot of the ramp" and event["message"].startswith("The block reached the foot")
+    assert doc["t"][-1] == event["t"] and min(doc["state"]["X"]) >= -1e-9
+    other = client.post("/api/scenes/simple-pendulum/simulate", json={"initial": {}, "samples": 20}).json()
+    assert other["stats"]["event"] is None
+
+
 def test_runaway_stops_with_a_message(client):
     body = {"initial": {"rho": 0.5}, "parameters": {"omega": 10.0}, "t_end": 1000, "samples": 500}
     doc = client.post("/api/scenes/rotating-parabola/simulate", json=body).json()

@@ -31,9 +31,24 @@ def test_the_page_derives_and_renders_the_steps(client):
     assert html.count('<li class="step') >= 8
     assert 'data-simulate-url="/api/simulate"' in html
     data = json.loads(re.search(r'<script type="application/json" id="scene-data">(.*?)</script>', html, re.S)[1])
-    assert data["coordinates"] == ["theta"] and data["mechanism"]["points"]
+    # given by L alone, with no particle positions: no invented picture, and the page says so
+    assert data["coordinates"] == ["theta"] and data["mechanism"]["none"] and data["mechanism"]["points"] == []
+    assert "No picture: this system is given by its Lagrangian or its energies alone" in html
     system = json.loads(re.search(r'id="playground-system">(.*?)</script>', html, re.S)[1])
     assert system["lagrangian"] == SPINNING_HOOP["lagrangian"]
+
+
+def test_the_double_pendulum_is_drawn_with_a_pivot_and_two_rods(client):
+    response = client.get("/playground?" + urlencode(query_of(form_of(DOUBLE_PENDULUM)), doseq=True))
+    data = json.loads(
+        re.search(r'<script type="application/json" id="scene-data">(.*?)</script>', response.text, re.S)[1]
+    )
+    mech = data["mechanism"]
+    labels = [p["label"] for p in mech["points"]]
+    assert labels == ["mass 1", "mass 2", "pivot"] and not mech["points"][2]["mass"]
+    rods = sorted((link["from"], link["to"]) for link in mech["links"] if link["style"] == "rod")
+    assert rods == [(0, 1), (2, 0)]  # mass 1 - mass 2 and pivot - mass 1 (indices of points)
+    assert "rods that keep their distances fixed and the fixed pivot" in mech["caption"]
 
 
 def test_system_json_in_the_address_works_too(client):

@@ -18,7 +18,8 @@ import sympy as sp
 from sympy.printing.pycode import SymPyPrinter
 
 from app.engine.derive import Derivation
-from app.engine.parse import ExpressionError, check_name
+from app.engine.parse import ExpressionError, check_name, parse_expression
+from app.scenes.types import Event
 
 
 class ExportError(ValueError):
@@ -169,3 +170,28 @@ def simulation_lines(naming: Naming, values: Sequence[float], y0: Sequence[float
         "",
         "",
     ]
+
+
+def event_lines(naming: Naming, d: Derivation, events: Sequence[Event]) -> list[str]:
+    """Lines defining ``events`` for solve_ivp: each a terminal event where its g falls through zero."""
+    lines: list[str] = []
+    names = []
+    n = naming.n
+    for i, event in enumerate(events):
+        try:
+            g = parse_expression(event.expression, d.table.namespace())
+        except ExpressionError as exc:
+            raise ExportError(f"event {event.name!r}: {exc}") from None
+        lines += [
+            f"# Where the set-up ends ({event.name}): the run stops the first time g{i} falls below zero",
+            f"g{i} = sp.lambdify((t, q, v, k), {naming.code(g)}, modules='math', dummify=True)",
+            "",
+            "",
+            f"def event{i}(time, y):",
+            f"    return g{i}(time, y[:{n}], y[{n}:], k_values)",
+            "",
+            "",
+            f"event{i}.terminal, event{i}.direction = True, -1",
+        ]
+        names.append(f"event{i}")
+    return [*lines, f"events = [{', '.join(names)}]"]

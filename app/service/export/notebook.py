@@ -12,7 +12,14 @@ from __future__ import annotations
 import nbformat
 from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook
 
-from app.service.export.code import ACCELERATION_LINES, DT_LINES, EULER_LAGRANGE_LINES, Naming, simulation_lines
+from app.service.export.code import (
+    ACCELERATION_LINES,
+    DT_LINES,
+    EULER_LAGRANGE_LINES,
+    Naming,
+    event_lines,
+    simulation_lines,
+)
 from app.service.export.source import Source
 from app.service.export.text import markdown_text
 from app.viz.names import label
@@ -218,7 +225,7 @@ def _simulation(source: Source, naming: Naming, energy: str) -> list:
     labels = [label(n) for n in names]
     plot = [
         f"t_samples = np.linspace(0.0, t_end, {SAMPLES})",
-        "sol = solve_ivp(rhs, (0.0, t_end), y0, method='DOP853', rtol=1e-10, atol=1e-12, t_eval=t_samples)",
+        "sol = solve_ivp(rhs, (0.0, t_end), y0, method='DOP853', rtol=1e-10, atol=1e-12, t_eval=t_samples, events=events)",
         "print(sol.message)",
         f"energy = sp.lambdify((t, q, v, k), {energy}, modules='math', dummify=True)",
         f"n = {naming.n}",
@@ -244,6 +251,9 @@ def _simulation(source: Source, naming: Naming, energy: str) -> list:
             + ("the energy E" if energy == "E" else "the Hamiltonian h")
             + " against time.",
         ),
-        _code(*simulation_lines(naming, [p.default for p in source.parameters], source.initial, source.t_end)),
+        _code(
+            *simulation_lines(naming, [p.default for p in source.parameters], source.initial, source.t_end),
+            *event_lines(naming, source.derivation, source.events),
+        ),
         _code(*plot),
     ]

@@ -2,12 +2,20 @@
 
 It needs numpy, scipy and sympy only.  Its last line of output is one JSON
 object, ``{"t": t_end, "state": {"theta": ..., "theta_dot": ...}}``, the same
-keys as the app's simulation ``state``, so the two can be compared.
+keys as the app's simulation ``state``, so the two can be compared (t is earlier
+where a terminal event of the scene ends the run, as in the app).
 """
 
 from __future__ import annotations
 
-from app.service.export.code import ACCELERATION_LINES, DT_LINES, EULER_LAGRANGE_LINES, Naming, simulation_lines
+from app.service.export.code import (
+    ACCELERATION_LINES,
+    DT_LINES,
+    EULER_LAGRANGE_LINES,
+    Naming,
+    event_lines,
+    simulation_lines,
+)
 from app.service.export.source import Source
 
 RTOL = 1e-10
@@ -22,7 +30,7 @@ def script(source: Source) -> str:
         "#!/usr/bin/env python3",
         '"""Equations of motion from a Lagrangian, derived with SymPy and integrated with scipy.',
         "",
-        "Exported by Lagrange. Needs numpy, scipy and sympy. Prints the state at t_end as JSON on its last line.",
+        "Exported by Lagrange. Needs numpy, scipy and sympy. Prints the state at t_end (or where the set-up ends) as JSON on its last line.",
         '"""',
         "",
         "import json",
@@ -46,7 +54,8 @@ def script(source: Source) -> str:
         *ACCELERATION_LINES,
         "",
         *simulation_lines(naming, [p.default for p in source.parameters], source.initial, source.t_end),
-        f'sol = solve_ivp(rhs, (0.0, t_end), y0, method="DOP853", rtol={RTOL!r}, atol={ATOL!r})',
+        *event_lines(naming, d, source.events),
+        f'sol = solve_ivp(rhs, (0.0, t_end), y0, method="DOP853", rtol={RTOL!r}, atol={ATOL!r}, events=events)',
         "if not sol.success:",
         '    raise SystemExit(f"the integration stopped: {sol.message}")',
         f"names = {state_names!r}",

@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from app.engine.derive import Derivation
-from app.scenes.types import Parameter, Scene
+from app.scenes.types import Event, Parameter, Scene
 from app.viz.names import label
 
 FORMATS = {
@@ -30,6 +30,7 @@ class Source:
     section: str = ""
     figure: str = ""
     errata: tuple[dict[str, str], ...] = field(default=())
+    events: tuple[Event, ...] = ()  # where the set-up ends (the exported run stops there, as the app's does)
 
     @property
     def parameters(self) -> tuple[Parameter, ...]:
@@ -48,6 +49,7 @@ def scene_source(scene: Scene, d: Derivation, document: dict[str, Any], initial:
         section=scene.section,
         figure=scene.figure,
         errata=tuple(document.get("errata") or ()),
+        events=scene.events,
     )
 
 

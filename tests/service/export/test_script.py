@@ -49,7 +49,7 @@ def run(script: str, tmp_path) -> dict:
 def test_the_script_lands_within_1e_6_of_the_apps_own_simulation(case, tmp_path):
     printed = run(exported(case, "py"), tmp_path)
     t_end, state = app_end_state(case)
-    assert printed["t"] == t_end
+    assert printed["t"] == pytest.approx(t_end, rel=1e-9, abs=1e-12)  # t_end, or where a terminal event ends it
     assert set(printed["state"]) == set(state)
     worst = max(abs(printed["state"][name] - value) for name, value in state.items())
     assert worst < 1e-6, (case, worst)

@@ -1,0 +1,91 @@
+"""Rods for a drawing inferred from the particles: a fixed distance is something rigid.
+
+A particle whose distance to the origin, or to another particle, stays the same
+whatever the coordinates and time gets a rod to it (to the origin: a rod from a
+drawn pivot).  The engine proves such distances on the positions
+(``fixed_distances`` of the derivation document, app/engine/rods.py); a pair it
+could not decide is tried numerically here: the squared distance
+D = |r_j − r_i|² is evaluated at ``SAMPLES`` seeded random states (coordinates
+in [−2, 2], t in [0, 10], parameters at their defaults) and counts as fixed
+when every value agrees with the first to ``TOLERANCE`` relative.  Rods found
+only this way carry ``check``: the browser confirms them along the run and
+drops one whose length changes.  No SymPy runs here.
+"""
+
+from __future__ import annotations
+
+import random
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+from app.viz.exprtree import TreeError, evaluate, tree
+
+SAMPLES = 12
+TOLERANCE = 1e-9
+Pair = tuple[int | None, int]  # (None for the origin or a particle's index, a particle's index)
+
+
+def _position(pos: Sequence[str]) -> list[Any] | None:
+    try:
+        return [tree(c) for c in pos]
+    except TreeError:
+        return None
+
+
+def _moves(trees: Sequence[Any], moving: set[str]) -> bool:
+    def names(node: Any) -> set[str]:
+        if isinstance(node, str):
+            return {node}
+        if isinstance(node, list):
+            return set().union(*(names(c) for c in node[1:])) if len(node) > 1 else set()
+        return set()
+
+    return any(names(t) & moving for t in trees)
+
+
+def _numerically_fixed(a: Sequence[Any] | None, b: Sequence[Any], envs: Sequence[dict[str, float]]) -> bool:
+    values = []
+    for env in envs:
+        try:
+            ra = [evaluate(t, env) for t in a] if a is not None else [0.0, 0.0, 0.0]
+            rb = [evaluate(t, env) for t in b]
+        except (ArithmeticError, ValueError, KeyError, RecursionError):
+            return False
+        if not all(isinstance(v, float) for v in (*ra, *rb)):
+            return False  # a complex power: not a real position here
+        # D = |r_b - r_a|^2
+        values.append(sum((x - y) ** 2 for x, y in zip(rb, ra, strict=True)))
+    first = values[0]
+    return first > 0 and all(abs(v - first) <= TOLERANCE * max(1.0, first) for v in values)
+
+
+def rods(
+    particles: Sequence[tuple[str, Sequence[str]]],
+    coordinates: Sequence[str],
+    defaults: Mapping[str, float],
+    proven: Sequence[Mapping[str, Any]] = (),
+) -> list[tuple[int | None, int, bool]]:
+    """(from, to, checked numerically) for each rod: from None is the origin (a pivot), else a particle's index."""
+    known = {(p.get("from"), p.get("to")) for p in proven}
+    positions = [_position(pos) for _, pos in particles]
+    moving = {*coordinates, "t"}
+    rng = random.Random(20261123)
+    envs = []
+    for _ in range(SAMPLES):
+        env = {name: float(value) for name, value in defaults.items()}
+        env.update({q: rng.uniform(-2.0, 2.0) for q in coordinates})
+        env["t"] = rng.uniform(0.0, 10.0)
+        envs.append(env)
+    out: list[tuple[int | None, int, bool]] = []
+    for j, b in enumerate(positions):
+        if b is None or not _moves(b, moving):
+            continue
+        for i in (None, *range(j)):
+            a = None if i is None else positions[i]
+            if i is not None and a is None:
+                continue
+            if (i, j) in known:
+                out.append((i, j, False))
+            elif _numerically_fixed(a, b, envs):
+                out.append((i, j, True))
+    return out

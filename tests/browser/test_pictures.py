@@ -1,0 +1,84 @@
+"""The animation true to the set-up: the ramp's foot ends a run, forces of constraint behind a toggle,
+the double pendulum's rods, and no invented picture for a system without particles."""
+
+from __future__ import annotations
+
+import json
+from urllib.parse import urlencode
+
+import pytest
+
+from app.web.examples_user import DOUBLE_PENDULUM, SPINNING_HOOP
+from app.web.playground import form_of, query_of
+from tests.browser.test_live import READY, painted_events
+
+pytestmark = pytest.mark.browser
+
+CANVAS = "document.querySelector('[data-panel^=animation] canvas')"
+DRAWN = f"JSON.parse({CANVAS}.dataset.drawn)"
+
+
+def to_end(page) -> None:
+    page.evaluate(
+        "() => { const s = document.querySelector('input.scrub'); s.value = s.max; s.dispatchEvent(new Event('input')); }"
+    )
+
+
+def end_time(page) -> str:
+    to_end(page)
+    return page.inner_text("[data-panel^=animation] output.time").split(" · ")[0]
+
+
+def test_the_block_stops_at_the_foot_of_the_ramp_with_a_message(page, artifacts):
+    page.goto("/scenes/incline-block")
+    page.wait_for_selector(READY, state="attached")
+    assert "At t = 1.276 s: The block reached the foot of the ramp; the run ends there." in page.inner_text(
+        "#run-status .message"
+    )
+    assert end_time(page) == "t = 1.28 s"
+    drawn = page.evaluate(DRAWN)
+    assert drawn["event"] == "foot of the ramp"
+    readout = page.inner_text("[data-panel^=animation] output.time")
+    assert float(readout.split("X = ")[1].split()[0]) == pytest.approx(0.0, abs=5e-4)
+    page.locator("[data-panel^=animation]").screenshot(path=artifacts / "incline-foot.png")
+    # the browser's preview stops at the same instant: up at 4 m/s, back at the foot at 1.70 s
+    painted_events(page)
+    page.fill("#ctl-X_dot", "4")
+    page.dispatch_event("#ctl-X_dot", "input")
+    page.wait_for_function("window.painted.includes('preview')")
+    assert "The block reached the foot of the ramp" in page.inner_text("#run-status .message")
+    preview = end_time(page)
+    page.wait_for_function("window.painted.includes('server')")
+    assert preview == end_time(page) == "t = 1.70 s"
+
+
+def test_forces_of_constraint_appear_behind_the_toggle(page, artifacts):
+    page.goto("/scenes/pulley")
+    page.wait_for_selector(READY, state="attached")
+    assert page.evaluate(DRAWN)["forces"] == [] and page.evaluate(DRAWN)["wheels"] == 3
+    page.check("#show-forces-animation-2d")
+    arrows = page.evaluate(DRAWN)["forces"]
+    assert [a["name"] for a in arrows] == ["string tension"]
+    # the tension pulls the left mass up: the arrow points up the screen from the mass
+    (arrow,) = arrows
+    assert arrow["value"] > 0 and arrow["ty"] < arrow["y"] and arrow["tx"] == arrow["x"]
+    page.locator("[data-panel^=animation]").screenshot(path=artifacts / "pulley-forces.png")
+    page.uncheck("#show-forces-animation-2d")
+    assert page.evaluate(DRAWN)["forces"] == []
+
+
+def test_the_double_pendulum_example_has_two_rods_and_a_pivot(page):
+    page.goto("/playground?" + urlencode(query_of(form_of(DOUBLE_PENDULUM)), doseq=True))
+    page.wait_for_selector(READY, state="attached")
+    drawn = page.evaluate(DRAWN)
+    assert drawn["links"] == 2 and not drawn["none"]
+    spec = json.loads(page.inner_text("#scene-data"))["mechanism"]
+    assert [p["label"] for p in spec["points"] if not p["mass"]] == ["pivot"]
+
+
+def test_a_system_given_by_l_alone_says_it_has_no_picture(page):
+    page.goto("/playground?" + urlencode(query_of(form_of(SPINNING_HOOP)), doseq=True))
+    page.wait_for_selector(READY, state="attached")
+    assert page.evaluate(DRAWN)["none"] and page.evaluate(f"{CANVAS}.dataset.bodies") == "[]"
+    assert "No picture" in page.inner_text("[data-panel^=animation] .animation-caption")
+    assert page.console_errors == []

@@ -1,0 +1,94 @@
+"""The scenes' drawings: geometry that must hold whatever the run (evaluated from the spec's trees)."""
+
+import math
+
+import pytest
+
+from app.scenes import SCENES
+from app.viz.exprtree import evaluate
+from app.viz.mechanism import FAMILIES, mechanism
+
+
+def spec_of(scene_id, forces=()):
+    s = SCENES[scene_id]
+    particles = [(p.label, p.position) for p in s.system.particles]
+    return mechanism(scene_id, particles, s.system.coordinates, "animation-3d" in s.panels, forces=forces)
+
+
+def env_of(scene_id, **state):
+    s = SCENES[scene_id]
+    env = {p.name: p.default for p in s.system.parameters} | {"t": 0.0}
+    for q in s.system.coordinates:
+        env[f"qmin_{q}"], env[f"qmax_{q}"] = -3.0, 4.0
+    return env | state
+
+
+def at(spec, index, env):
+    return [evaluate(c, env) for c in spec["points"][index]["xyz"]]
+
+
+@pytest.mark.parametrize("y1, y2", [(0.0, 0.0), (2.5, -3.0), (-1.0, 3.7)])
+def test_pulley_strings_are_vertical_and_keep_their_length(y1, y2):
+    spec = spec_of("pulley")
+    env = env_of("pulley", y1=y1, y2=y2)
+    strings = [link for link in spec["links"] if link["style"] == "string"]
+    assert len(strings) == 4 and len(spec["wheels"]) == 3
+    total = 0.0
+    for link in strings:
+        (xa, za), (xb, zb) = at(spec, link["from"], env), at(spec, link["to"], env)
+        assert xa == pytest.approx(xb, abs=1e-12)  # the radius W/3 makes every straight piece vertical
+        total += abs(za - zb)
+    # the straight pieces' total changes by nothing as the masses move (the wraps are fixed arcs)
+    rest = env_of("pulley", y1=0.0, y2=0.0)
+    total0 = sum(abs(at(spec, s["from"], rest)[1] - at(spec, s["to"], rest)[1]) for s in strings)
+    assert total == pytest.approx(total0, rel=1e-12)
+
+
+def test_pulley_is_as_wide_as_a_fraction_of_its_motion():
+    spec = spec_of("pulley")
+    env = env_of("pulley", y1=0.0, y2=0.0)  # extents -3..4 on both: W = 0.3 * 14 = 4.2
+    assert at(spec, 1, env)[0] - at(spec, 0, env)[0] == pytest.approx(8.4)
+
+
+def test_incline_ramp_starts_at_the_foot_and_holds_the_block():
+    spec = spec_of("incline-block")
+    env = env_of("incline-block", X=2.0)
+    labels = [p["label"] for p in spec["points"]]
+    foot, top = labels.index("foot"), labels.index("top")
+    assert at(spec, foot, env) == [0.0, 0.0]
+    a = env["alpha"]
+    block, summit = at(spec, 0, env), at(spec, top, env)
+    # the block lies on the ramp's slope, below its top
+    assert block[1] == pytest.approx(block[0] * math.tan(a)) and summit[1] == pytest.approx(summit[0] * math.tan(a))
+    assert summit[0] > block[0]
+    assert spec["solids"] == [{"label": "ramp", "corners": [foot, top, labels.index("corner")]}]
+    assert [c["style"] for c in spec["curves"]] == ["ground"]
+
+
+def test_rotating_parabola_is_drawn_turning_in_the_lab_frame():
+    spec = spec_of("rotating-parabola")
+    assert spec["dim"] == 3 and "Lab frame" in spec["caption"]
+    wire = next(c for c in spec["curves"] if c["label"] == "wire")
+    assert wire["moving"]
+    env = env_of("rotating-parabola", rho=0.5)
+    quarter = env | {"t": math.pi / (2 * env["omega"])}
+    x0, y0, _ = at(spec, 0, env)
+    x1, y1, _ = at(spec, 0, quarter)
+    assert (x0, y0) == pytest.approx((0.5, 0.0)) and (x1, y1) == pytest.approx((0.0, 0.5), abs=1e-12)
+
+
+def test_constraint_forces_become_arrows_on_their_particle():
+    forces = [{"name": "normal force", "particle": 1, "direction": ["-sin(alpha)", "0", "cos(alpha)"]}]
+    spec = spec_of("incline-block", forces)
+    assert spec["forces"] == [
+        {"name": "normal force", "on": 0, "direction": [["neg", ["sin", "alpha"]], ["cos", "alpha"]]}
+    ]
+
+
+@pytest.mark.parametrize("scene_id", sorted(FAMILIES))
+def test_every_family_has_a_caption_of_what_it_draws(scene_id):
+    spec = spec_of(scene_id)
+    assert spec is not None and spec["caption"]
+    assert "arrow" not in spec["caption"] and "centre of mass" not in spec["caption"]
+    springs = [link for link in spec["links"] if link["style"] == "spring"]
+    assert bool(springs) == (scene_id in {"tabletop-spring", "rail-two-body", "coupled-oscillators"})
