@@ -29,7 +29,9 @@ from app.engine.check import STEPS, CheckError, Problem, check_answer, judge, na
 from app.engine.errors import DerivationError
 from app.engine.exercises import exercise_json
 from app.service import derivations
-from app.service.user_systems import InvalidSystem, ResultCache, _derive, _guarded, check_system, spec_key
+from app.service.user_checks import InvalidSystem, check_system, spec_key
+from app.service.user_jobs import derive_checked, guarded
+from app.service.user_systems import ResultCache
 from app.service.user_systems import service as user_service
 from app.settings import settings
 
@@ -65,12 +67,12 @@ def _judged(work: Callable[[], Any]) -> Any:
 
 def scene_check_job(pb: Problem, answer: str) -> bytes:
     """Worker job: judge an answer against a scene's problem."""
-    return _guarded(lambda: _judged(lambda: judge(pb, answer)))
+    return guarded(lambda: _judged(lambda: judge(pb, answer)))
 
 
 def _system(spec: dict[str, Any]):
     try:
-        return _derive(spec)
+        return derive_checked(spec)
     except (InvalidSystem, DerivationError) as exc:
         raise _in_system(exc) from None
 
@@ -82,12 +84,12 @@ def system_check_job(spec: dict[str, Any], step: str, coordinate: str | None, an
         d = _system(spec)
         return _judged(lambda: judge(problem(d, step, coordinate), answer))
 
-    return _guarded(run)
+    return guarded(run)
 
 
 def system_practice_job(spec: dict[str, Any]) -> bytes:
     """Worker job: the exercises of a user system (each step's prompt and the engine's answer)."""
-    return _guarded(lambda: exercise_json(_system(spec)))
+    return guarded(lambda: exercise_json(_system(spec)))
 
 
 # ---- in the web process ---------------------------------------------------------------------

@@ -19,7 +19,7 @@ from fastapi.responses import JSONResponse, Response
 from app.service import user_systems
 from app.service.exporting import Exported
 from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
-from app.service.user_systems import InvalidSystem
+from app.service.user_checks import InvalidSystem
 from app.service.worker import JobFailed
 from app.web.api_scenes import EXPORT_CONTENT, download
 from app.web.examples_user import DERIVE_EXAMPLES, DERIVE_RESPONSE, ERROR_EXAMPLES, SIMULATE_EXAMPLES, SIMULATE_RESPONSE

@@ -178,12 +178,13 @@ def answer_with_time_limit(client: Any, seconds: float) -> dict[str, Any]:
     """The answer to deriving the double pendulum under a short time limit (no cached result)."""
     from app.service import user_systems
 
-    saved, cache = user_systems.DERIVE_SECONDS, user_systems.service.derivations
-    user_systems.DERIVE_SECONDS, user_systems.service.derivations = seconds, user_systems.ResultCache()
+    service = user_systems.service
+    saved, cache = service.derive_seconds, service.derivations
+    service.derive_seconds, service.derivations = seconds, user_systems.ResultCache()
     try:
         return client.post("/api/derive", json=DOUBLE_PENDULUM).json()
     finally:
-        user_systems.DERIVE_SECONDS, user_systems.service.derivations = saved, cache
+        service.derive_seconds, service.derivations = saved, cache
 
 
 if __name__ == "__main__":

@@ -26,7 +26,7 @@ from app.engine.errors import excerpt
 from app.engine.parse import FUNCTIONS
 from app.service import user_systems
 from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
-from app.service.user_systems import InvalidSystem
+from app.service.user_checks import InvalidSystem
 from app.service.worker import JobFailed
 from app.viz.exprtree import TreeError, tree
 from app.viz.page_model import angles, scene_page
