@@ -28,14 +28,12 @@ from typing import Any
 from app.engine.check import STEPS, CheckError, Problem, check_answer, judge, name_kinds, problem
 from app.engine.errors import DerivationError
 from app.engine.exercises import exercise_json
-from app.service import derivations
+from app.service import derivations, user_systems
 from app.service.user_checks import InvalidSystem, check_system, spec_key
 from app.service.user_jobs import derive_checked, guarded
-from app.service.user_systems import ResultCache
-from app.service.user_systems import service as user_service
-from app.settings import settings
+from app.service.user_systems import ResultCache, UserSystems
+from app.settings import Settings, settings
 
-CHECK_SECONDS = settings().check_seconds
 MAX_ANSWER_CACHE = 4096
 
 
@@ -45,8 +43,9 @@ def refusal(exc: CheckError) -> InvalidSystem:
 
 def _in_system(exc: DerivationError) -> InvalidSystem:
     """A refusal of the declared system, located under ``system``."""
-    loc = getattr(exc, "loc", ())
-    return InvalidSystem(
+    loc = exc.loc or ()
+    kind = type(exc) if isinstance(exc, InvalidSystem) else InvalidSystem
+    return kind(
         f"system.{exc}" if loc else f"system: {exc}",
         ("system", *loc),
         exc.part,
@@ -98,7 +97,10 @@ def system_practice_job(spec: dict[str, Any]) -> bytes:
 class Checking:
     """Scene problems and exercises (cached per process), answers through the worker pool."""
 
-    def __init__(self) -> None:
+    def __init__(self, users: UserSystems | None = None, config: Settings | None = None) -> None:
+        self.check_seconds = (config or settings()).check_seconds
+        # the jobs share the user systems' pool, fair share and request sharing
+        self.users = users or user_systems.service
         self._problems: dict[tuple[str, str, str | None], Problem] = {}
         self._exercises: dict[str, bytes] = {}
         self._lock = threading.Lock()
@@ -136,8 +138,8 @@ class Checking:
         except CheckError as exc:
             raise refusal(exc) from None
         key = spec_key("scene", scene_id, step, pb.coordinate, answer.strip())
-        return await user_service.run_job(
-            self.answers, key, client, address, CHECK_SECONDS, scene_check_job, pb, answer
+        return await self.users.run_job(
+            self.answers, key, client, address, self.check_seconds, scene_check_job, pb, answer
         )
 
     async def check_system(
@@ -158,8 +160,8 @@ class Checking:
         except CheckError as exc:
             raise refusal(exc) from None
         key = spec_key(spec, step, coordinate, answer.strip())
-        return await user_service.run_job(
-            self.answers, key, client, address, CHECK_SECONDS, system_check_job, spec, step, coordinate, answer
+        return await self.users.run_job(
+            self.answers, key, client, address, self.check_seconds, system_check_job, spec, step, coordinate, answer
         )
 
     async def system_exercises(self, spec: dict[str, Any], client: str, address: str) -> bytes:
@@ -168,8 +170,8 @@ class Checking:
         except InvalidSystem as exc:
             raise _in_system(exc) from None
         key = spec_key(spec, "practice")
-        return await user_service.run_job(
-            self.practice, key, client, address, CHECK_SECONDS * 3, system_practice_job, spec
+        return await self.users.run_job(
+            self.practice, key, client, address, self.check_seconds * 3, system_practice_job, spec
         )
 
 

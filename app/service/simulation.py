@@ -23,8 +23,9 @@ from typing import Any, Protocol
 import numpy as np
 
 from app.engine.derive import Derivation
+from app.errors import OverCapacity
 from app.numerics import limits
-from app.numerics.errors import Busy, SimulationError
+from app.numerics.errors import SimulationError
 from app.numerics.methods import METHODS
 from app.numerics.observables import Observables, build, summarize
 from app.numerics.simulate import simulate
@@ -176,7 +177,7 @@ def simulate_derivation(
     constraint_forces: Sequence[dict[str, Any]] = (),
     scene_id: str | None = None,
 ) -> dict[str, Any]:
-    """Simulate a derived system as the request asks; a refusal raises SimulationError (422/429)."""
+    """Simulate a derived system as the request asks; a refusal raises SimulationError, a full server OverCapacity."""
     scene: Scene | None = SCENES.get(scene_id) if scene_id else None
     k = parameter_vector(derivation, request.parameters or {})
     y0 = initial_state(derivation, request.initial or {}, scene.initial if scene else {})
@@ -201,10 +202,12 @@ def simulate_derivation(
         )
     python_loop = method != "auto" and not METHODS[method].compiled
     if python_loop and not _PYTHON_LOOP.acquire(timeout=limits.WALL_SECONDS):
-        raise Busy(f"another {method} run is in progress here; try again in a few seconds, or use a compiled method")
+        raise OverCapacity(
+            f"another {method} run is in progress here; try again in a few seconds, or use a compiled method", 2
+        )
     try:
         if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
-            raise Busy("too many simulations are running at once; try again in a few seconds")
+            raise OverCapacity("too many simulations are running at once; try again in a few seconds", 2)
         try:
             outcome = simulate(
                 system, k, y0, t_end, samples, method, rtol, atol, wait_for_compile=not ANSWER_WHILE_COMPILING

@@ -22,6 +22,7 @@ from typing import Any
 
 from app.engine.errors import DerivationError, excerpt
 from app.engine.parse import MAX_TERMS, ExpressionError, Size, check_name, expression_size
+from app.errors import Refused, TooMuchWork
 from app.scenes.types import Parameter, Particle, System
 
 MAX_COORDINATES = 6
@@ -30,25 +31,16 @@ MAX_PARTICLES = 8
 
 
 class InvalidSystem(DerivationError):
-    """A user system refused; ``loc`` is the path of the offending field in the request."""
+    """A user system refused; ``loc`` is the path of the offending field in the request (always set)."""
+
+    loc: tuple
 
     def __init__(self, message: str, loc: tuple = (), part: str = "", start: int | None = None, end: int | None = None):
-        super().__init__(message, part)
-        self.loc = tuple(loc)
-        self.start = start
-        self.end = end
+        Refused.__init__(self, message, part, loc, start, end)
 
-    def __reduce__(self):
-        return (type(self), (str(self), self.loc, self.part, self.start, self.end))
 
-    def as_json(self) -> dict[str, Any]:
-        return {
-            "detail": str(self)[:500],
-            "part": self.part[:80],
-            "loc": ["body", *(excerpt(x) for x in self.loc)],
-            "start": self.start,
-            "end": self.end,
-        }
+class TooCostly(InvalidSystem, TooMuchWork):
+    """A user system whose derivation or simulation would take more than its budget."""
 
 
 def _where(loc: tuple) -> str:
@@ -57,6 +49,12 @@ def _where(loc: tuple) -> str:
     for x in rest:
         text += f"[{x}]" if isinstance(x, int) else f".{excerpt(x)}"
     return text
+
+
+def located(exc: DerivationError, loc: tuple, message: str | None = None) -> InvalidSystem:
+    """A refusal of the engine or the numerics, located at ``loc`` in the request (too much work stays so)."""
+    kind = TooCostly if isinstance(exc, TooMuchWork) else InvalidSystem
+    return kind(str(exc) if message is None else message, loc, exc.part)
 
 
 def _refuse(loc: tuple, exc: ExpressionError) -> InvalidSystem:

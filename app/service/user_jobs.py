@@ -22,15 +22,18 @@ from app.engine.derive import Derivation, derive
 from app.engine.errors import DerivationError
 from app.engine.parse import ExpressionError, parse_expression
 from app.engine.symbols import SymbolTable
+from app.errors import OverCapacity
 from app.scenes.types import System
 from app.service.encoding import dumps
 from app.service.user_checks import (
     InvalidSystem,
+    TooCostly,
     _names,
     _refuse,
     check_system,
     expressions,
     form_of,
+    located,
     simulation_loc,
     spec_key,
     to_system,
@@ -73,7 +76,7 @@ def engine_budget(spec: dict[str, Any]) -> Iterator[None]:
             yield
     except BudgetExceeded:
         where = form_of(spec)
-        raise InvalidSystem(
+        raise TooCostly(
             f"{where}: deriving this system takes longer than the {seconds:g} s allowed; "
             "write it with fewer terms, lower powers or fewer nested functions",
             (where,),
@@ -98,7 +101,7 @@ def derive_checked(spec: dict[str, Any]) -> Derivation:
     except DerivationError as exc:  # a singular mass matrix and the like: the form's field is at fault
         if isinstance(exc, InvalidSystem):
             raise
-        raise InvalidSystem(f"{where}: {exc}", (where,), exc.part) from None
+        raise located(exc, (where,), f"{where}: {exc}") from None
     _derivations[key] = d
     return d
 
@@ -107,10 +110,10 @@ def guarded(job: Callable[[], Any]) -> bytes:
     """Run a job; an engine failure on user input is a refusal, never a server error."""
     try:
         return dumps(job())
-    except (InvalidSystem, MemoryError, RecursionError):
+    except (InvalidSystem, OverCapacity, MemoryError, RecursionError):
         raise
     except DerivationError as exc:
-        raise InvalidSystem(str(exc), (), exc.part) from None
+        raise located(exc, ()) from None
     except Exception:  # a SymPy or numerics failure on an odd but allowed input
         log.exception("user system failed")
         # the details are for the log; the student gets a sentence without the engine's internal names
@@ -140,7 +143,7 @@ def simulate_job(spec: dict[str, Any], request: Any) -> bytes:
         try:
             return simulate_derivation(d, request)
         except SimulationError as exc:
-            raise InvalidSystem(str(exc), simulation_loc(spec, exc.part), exc.part) from None
+            raise located(exc, simulation_loc(spec, exc.part)) from None
 
     return guarded(run)
 
@@ -160,7 +163,7 @@ def export_job(
         try:
             return system_export(d, json.loads(document), fmt, initial, t_end)
         except SimulationError as exc:
-            raise InvalidSystem(str(exc), simulation_loc(spec, exc.part), exc.part) from None
+            raise located(exc, simulation_loc(spec, exc.part)) from None
         except ExportError as exc:
             raise InvalidSystem(f"this system cannot be exported: {exc}") from None
 

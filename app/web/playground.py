@@ -24,12 +24,11 @@ from starlette.datastructures import QueryParams
 
 from app.engine.errors import excerpt
 from app.engine.parse import FUNCTIONS
-from app.service import user_systems
-from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
 from app.service.user_checks import InvalidSystem
-from app.service.worker import JobFailed
 from app.viz.exprtree import TreeError, tree
 from app.viz.page_model import angles, scene_page
+from app.web.deps import ClientDep, UserSystemsDep
+from app.web.errors import KINDS, REFUSED, Problem, problem
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
 from app.web.limits import TooDeep, check_json_depth
 from app.web.pages import simulation_methods
@@ -366,14 +365,9 @@ HTML = {"text/html": {"schema": {"type": "string"}}}
         503: {"description": "The server is busy; the page says so.", "content": HTML},
     },
 )
-async def playground(request: Request) -> Response:
-    service = user_systems.service
-    address = request.client.host if request.client else "unknown"
-    session = service.gate.verify(request.cookies.get(COOKIE))
-    minted = None if session else service.gate.mint(address)
-    client = f"session:{session}" if session else f"address:{address}"
+async def playground(request: Request, client: ClientDep, users: UserSystemsDep) -> Response:
     error: FormError | None = None
-    busy: Busy | None = None
+    failed: Problem | None = None
     model = spec = None
     form = form_of(FORCED_SPRING)
     try:
@@ -385,17 +379,18 @@ async def playground(request: Request) -> Response:
             form = read_form(request.query_params)
         if form.coordinates or form.parameters or form.lagrangian or form.kinetic or form.particles:
             spec = spec_of(form)
-            doc = json.loads(await service.derive(spec, client, address))
+            doc = json.loads(await users.derive(spec, client.key, client.address))
             model = await run_in_threadpool(model_of, spec, doc)
     except FormError as exc:
         error = exc
-    except InvalidSystem as exc:
-        error = _located(form, exc.loc, str(exc), exc.start, exc.end)
-    except JobFailed as exc:
-        error = FormError(str(exc), "f-form")
-    except Busy as exc:
-        busy = exc
-        error = FormError(f"{exc} (retry in {exc.retry_after} s)", "f-form")
+    except KINDS as exc:
+        failed = problem(exc)
+        if isinstance(exc, InvalidSystem):
+            error = _located(form, exc.loc, str(exc), exc.start, exc.end)
+        elif "retry_after" in failed.body:
+            error = FormError(f"{exc} (retry in {failed.body['retry_after']} s)", "f-form")
+        else:
+            error = FormError(str(exc), "f-form")
     context = {
         "form": form,
         "error": error.view() if error else None,
@@ -406,10 +401,8 @@ async def playground(request: Request) -> Response:
         "forms": FORMS,
         "functions": list(FUNCTIONS),
     }
-    status = 200 if error is None else (busy.status if busy else 422)
-    response = templates.TemplateResponse(request, "playground.html", context, status_code=status)
-    if busy:
-        response.headers["Retry-After"] = str(busy.retry_after)
-    if minted:
-        response.set_cookie(COOKIE, minted, max_age=COOKIE_MAX_AGE, httponly=True, samesite="lax")
-    return response
+    # the page's own mistakes (FormError) are refusals too; the rest answer as the API does
+    status = failed.status if failed else (REFUSED if error else 200)
+    headers = failed.headers if failed else {}
+    response = templates.TemplateResponse(request, "playground.html", context, status_code=status, headers=headers)
+    return client.keep(response)

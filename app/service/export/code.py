@@ -19,9 +19,10 @@ from sympy.printing.pycode import SymPyPrinter
 
 from app.engine.derive import Derivation
 from app.engine.parse import ExpressionError, check_name
+from app.errors import Refused
 
 
-class ExportError(ValueError):
+class ExportError(Refused):
     """A derivation that cannot be exported safely (an unexpected name or function)."""
 
 
