@@ -7,9 +7,13 @@ import time
 import pytest
 import sympy as sp
 
+from app.main import app
 from app.service import user_checks, user_systems
 from app.service.fairness import COOKIE
+from app.service.user_systems import UserSystems
+from app.settings import Settings
 from app.web import examples_user
+from app.web.deps import user_systems_service
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, REFUSED_REQUESTS, SPINNING_HOOP
 from tests.reference import numerically_equal, reference_accelerations
 
@@ -109,14 +113,14 @@ def test_documented_refusals_are_what_the_api_answers(client, name):
     response = client.post("/api/derive", json=REFUSED_REQUESTS[name]["value"])
     assert response.status_code == 422
     assert response.json() == examples_user.ERROR_EXAMPLES[422][name]["response"], (
-        "stale example: run python -m app.web.examples_user"
+        "stale example: run python scripts/record_examples.py"
     )
 
 
 def test_documented_derivation_is_what_the_api_answers(client):
     """The documented answer has the served keys and the same mathematics (step wording may evolve)."""
     served, documented = derive(client, FORCED_SPRING), examples_user.DERIVE_RESPONSE
-    stale = "stale example: run python -m app.web.examples_user"
+    stale = "stale example: run python scripts/record_examples.py"
     assert {k: v for k, v in served.items() if k != "steps"} == {k: v for k, v in documented.items() if k != "steps"}, (
         stale
     )
@@ -136,7 +140,13 @@ def test_other_documented_errors_are_what_the_api_answers(client):
 
 
 def test_a_job_over_the_time_limit_is_stopped_and_the_pool_recovers(client):
-    answer = examples_user.answer_with_time_limit(client, examples_user.TIMEOUT_SECONDS)
+    # a service of its own with the recorded example's short limit (and so no cached answer)
+    short = UserSystems(config=Settings(derive_seconds=examples_user.TIMEOUT_SECONDS))
+    app.dependency_overrides[user_systems_service] = lambda: short
+    try:
+        answer = client.post("/api/derive", json=DOUBLE_PENDULUM).json()
+    finally:
+        app.dependency_overrides.clear()
     assert answer == examples_user.ERROR_EXAMPLES[422]["timeout"]["response"]
     # the pool replaced the killed worker: the next job runs normally
     assert client.get("/healthz").json() == {"status": "ok"}
