@@ -161,7 +161,7 @@ def check_name(name: str, what: str = "name") -> str:
         kind = "a Python keyword" if keyword.iskeyword(name) else "a reserved function or constant name"
         kind = "time, which every expression may use" if name == "t" else kind
         raise ExpressionError(f"{what} {name!r} is {kind}; choose another name", name)
-    if _DOTTED.search(name) and name[: _DOTTED.search(name).start()]:
+    if _DOTTED.search(name) and name[: _DOTTED.search(name).start()]:  # type: ignore[union-attr]
         raise ExpressionError(f"{what} {name!r} would print like a velocity; choose another name", name)
     return name
 
@@ -269,7 +269,7 @@ class _Checker:
             if isinstance(node.op, ast.Pow):
                 base, exponent = self.check(node.left, depth + 1), self.check(node.right, depth + 1)
                 if isinstance(_strip_signs(node.right)[0], ast.BinOp) and isinstance(
-                    _strip_signs(node.right)[0].op, ast.Pow
+                    _strip_signs(node.right)[0].op, ast.Pow  # type: ignore[attr-defined]
                 ):
                     raise self.refuse(node, "towers of exponents are not allowed")
                 return self.power(node, base, exponent)
@@ -317,9 +317,9 @@ class _Checker:
             if value is not None and f.value is not None:
                 if exact is not None and f.exact is not None:
                     exact = self.exactly(partial, exact + sign * f.exact)
-                    value = self.fold(partial, lambda e=exact: float(e))
+                    value = self.fold(partial, lambda e=exact: float(e))  # type: ignore[misc]
                 else:
-                    exact, value = None, self.fold(partial, lambda a=value, b=f.value, s=sign: a + s * b)
+                    exact, value = None, self.fold(partial, lambda a=value, b=f.value, s=sign: a + s * b)  # type: ignore[misc]
             else:
                 value = exact = None
         return _Facts(
@@ -343,10 +343,10 @@ class _Checker:
             if value is not None and f.value is not None:
                 if exact is not None and f.exact is not None:
                     exact = self.exactly(partial, exact * f.exact if op is ast.Mult else exact / f.exact)
-                    value = self.fold(partial, lambda e=exact: float(e))
+                    value = self.fold(partial, lambda e=exact: float(e))  # type: ignore[misc]
                 else:
                     exact = None
-                    value = self.fold(partial, lambda a=value, b=f.value, o=op: a * b if o is ast.Mult else a / b)
+                    value = self.fold(partial, lambda a=value, b=f.value, o=op: a * b if o is ast.Mult else a / b)  # type: ignore[misc]
             else:
                 value = exact = None
         degree = sum(f.degree for f in facts)
@@ -376,11 +376,11 @@ class _Checker:
             if base.value < 0 and not whole_exponent:
                 raise self.refuse(node, "this number is not real (a fractional power of a negative number)")
             if base.exact is not None and whole_exponent:
-                p = abs(exponent.exact.numerator)
+                p = abs(exponent.exact.numerator)  # type: ignore[union-attr]
                 bits = max(base.exact.numerator.bit_length(), base.exact.denominator.bit_length())
                 if bits * p > _MAX_BITS:
                     raise self.refuse(node, f"this number is too large (more than {MAX_DIGITS} digits)")
-                exact = self.exactly(node, base.exact**exponent.exact.numerator)
+                exact = self.exactly(node, base.exact**exponent.exact.numerator)  # type: ignore[union-attr]
         degree = base.degree * abs(n)
         if degree > MAX_DEGREE:
             raise self.refuse(
@@ -392,7 +392,7 @@ class _Checker:
         value = None
         if base.value is not None:
             # an exact constant of up to MAX_DIGITS digits can still be far past a float's range: fold refuses it
-            value = self.fold(node, (lambda: float(exact)) if exact is not None else (lambda: base.value**n))
+            value = self.fold(node, (lambda: float(exact)) if exact is not None else (lambda: base.value**n))  # type: ignore[operator]
         return _Facts(value, exact, _cap(terms), base.inside, degree, base.calls)
 
     def call(self, node: ast.Call, depth: int) -> _Facts:
@@ -447,7 +447,7 @@ class _Checker:
                     break
                 divide = factor_op is ast.Div
                 value = value / f.value if divide else value * f.value
-                exact = None if exact is None or f.exact is None else (exact / f.exact if divide else exact * f.exact)
+                exact = None if exact is None or f.exact is None else (exact / f.exact if divide else exact * f.exact)  # type: ignore[assignment]
             else:
                 if len(logs) == 1:
                     u = self.check(logs[0].args[0], depth + 1)
@@ -588,7 +588,7 @@ class _Builder:
                 right = self.build(operand)
                 if op is ast.Div and right == 0:
                     raise self.checker.refuse(operand, "division by zero (this denominator is 0)")
-                result = _COMBINE[op](result, right)
+                result = _COMBINE[op](result, right)  # type: ignore[index]
             return result
         if isinstance(node, ast.BinOp):
             return self.real(node, self.build(node.left) ** self.build(node.right))

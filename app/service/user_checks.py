@@ -97,7 +97,7 @@ def check_system(spec: dict[str, Any]) -> None:
     if len(spec.get("particles") or ()) > MAX_PARTICLES:
         raise InvalidSystem(f"at most {MAX_PARTICLES} particles are allowed", ("particles",))
     seen: set[str] = set()
-    named = [(("coordinates", i), n, "coordinate") for i, n in enumerate(coordinates)]
+    named: list[tuple[tuple, str, str]] = [(("coordinates", i), n, "coordinate") for i, n in enumerate(coordinates)]
     named += [(("parameters", i, "name"), n, "parameter") for i, n in enumerate(parameters)]
     for loc, name, what in named:
         try:
@@ -201,6 +201,6 @@ def simulation_loc(spec: dict[str, Any], part: str) -> tuple:
     return (head,) if head else ()
 
 
-def spec_key(spec: dict[str, Any], *extra: Any) -> str:
+def spec_key(spec: Any, *extra: Any) -> str:
     text = json.dumps([spec, *extra], sort_keys=True, separators=(",", ":"), default=str)
     return hashlib.sha256(text.encode()).hexdigest()
