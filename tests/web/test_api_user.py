@@ -139,6 +139,7 @@ def test_other_documented_errors_are_what_the_api_answers(client):
     assert (big.status_code, big.json()) == (413, documented[413]["too-large"]["response"])
 
 
+@pytest.mark.slow  # derives the double pendulum afresh in the worker pool
 def test_a_job_over_the_time_limit_is_stopped_and_the_pool_recovers(client):
     # a service of its own with the recorded example's short limit (and so no cached answer)
     short = UserSystems(config=Settings(derive_seconds=examples_user.TIMEOUT_SECONDS))
@@ -153,6 +154,7 @@ def test_a_job_over_the_time_limit_is_stopped_and_the_pool_recovers(client):
     assert derive(client, SPINNING_HOOP)["coordinates"] == ["theta"]
 
 
+@pytest.mark.slow  # derives the double pendulum afresh in the worker pool
 def test_one_job_at_a_time_per_session(client):
     """A second request while the first still runs gets 429 with Retry-After; the first completes."""
     service = user_systems.service
@@ -186,6 +188,7 @@ def test_one_job_at_a_time_per_session(client):
         service.derivations = saved
 
 
+@pytest.mark.slow  # derives the double pendulum afresh in the worker pool
 def test_the_same_system_asked_twice_at_once_is_derived_once(client):
     """A classroom opening one link: a second session asking for a system being derived waits for that job."""
     service = user_systems.service
