@@ -37,6 +37,7 @@ import re
 from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any
 
 import sympy as sp
 
@@ -55,47 +56,41 @@ MAX_DEGREE = 256  # exponent of any one factor once SymPy combines powers ((x**8
 MAX_CALLS = 8  # functions nested inside one another (each level multiplies the size of the derivatives)
 _MAX_BITS = math.ceil(MAX_DIGITS * math.log2(10))
 
-FUNCTIONS: dict[str, type[sp.Function]] = {
-    "sin": sp.sin,
-    "cos": sp.cos,
-    "tan": sp.tan,
-    "cot": sp.cot,
-    "sec": sp.sec,
-    "csc": sp.csc,
-    "asin": sp.asin,
-    "acos": sp.acos,
-    "atan": sp.atan,
-    "atan2": sp.atan2,
-    "sinh": sp.sinh,
-    "cosh": sp.cosh,
-    "tanh": sp.tanh,
-    "exp": sp.exp,
-    "log": sp.log,
-    "sqrt": sp.sqrt,
-    "Abs": sp.Abs,
+
+@dataclass(frozen=True)
+class Allowed:
+    """A function users may write: SymPy's, the same in floating point (to bound constant
+    sub-expressions before SymPy sees them), and how many arguments it takes."""
+
+    symbolic: Callable[..., Any]
+    floating: Callable[..., float]
+    arity: int = 1
+
+
+# The function allowlist: its one home.  Everything else (the schemas' help, the pages' menus,
+# the figure trees of app/viz/exprtree.py) reads it from here.
+ALLOWED: dict[str, Allowed] = {
+    "sin": Allowed(sp.sin, math.sin),
+    "cos": Allowed(sp.cos, math.cos),
+    "tan": Allowed(sp.tan, math.tan),
+    "cot": Allowed(sp.cot, lambda x: 1.0 / math.tan(x)),
+    "sec": Allowed(sp.sec, lambda x: 1.0 / math.cos(x)),
+    "csc": Allowed(sp.csc, lambda x: 1.0 / math.sin(x)),
+    "asin": Allowed(sp.asin, math.asin),
+    "acos": Allowed(sp.acos, math.acos),
+    "atan": Allowed(sp.atan, math.atan),
+    # atan2(y, x) is the angle of the point (x, y)
+    "atan2": Allowed(sp.atan2, math.atan2, arity=2),
+    "sinh": Allowed(sp.sinh, math.sinh),
+    "cosh": Allowed(sp.cosh, math.cosh),
+    "tanh": Allowed(sp.tanh, math.tanh),
+    "exp": Allowed(sp.exp, math.exp),
+    "log": Allowed(sp.log, math.log),
+    "sqrt": Allowed(sp.sqrt, math.sqrt),
+    "Abs": Allowed(sp.Abs, abs),
 }
-# The same functions in floating point, to bound constant sub-expressions before SymPy sees them.
-_FLOAT_FUNCTIONS: dict[str, Callable[..., float]] = {
-    "sin": math.sin,
-    "cos": math.cos,
-    "tan": math.tan,
-    "cot": lambda x: 1.0 / math.tan(x),
-    "sec": lambda x: 1.0 / math.cos(x),
-    "csc": lambda x: 1.0 / math.sin(x),
-    "asin": math.asin,
-    "acos": math.acos,
-    "atan": math.atan,
-    "atan2": math.atan2,
-    "sinh": math.sinh,
-    "cosh": math.cosh,
-    "tanh": math.tanh,
-    "exp": math.exp,
-    "log": math.log,
-    "sqrt": math.sqrt,
-    "Abs": abs,
-}
-# Functions of more than one argument (atan2(y, x) is the angle of the point (x, y)); the rest take one.
-ARITY: dict[str, int] = {"atan2": 2}
+FUNCTIONS: dict[str, Callable[..., Any]] = {name: f.symbolic for name, f in ALLOWED.items()}
+ARITY: dict[str, int] = {name: f.arity for name, f in ALLOWED.items() if f.arity != 1}
 CONSTANTS: dict[str, sp.Expr] = {"pi": sp.pi}
 _FLOAT_CONSTANTS = {"pi": math.pi}
 # Names an output string may contain, or that SymPy reads as something else.
@@ -423,7 +418,7 @@ class _Checker:
             exact = arguments[0].exact
             if arity == 1 and exact is not None and name in _DOMAINS and not _DOMAINS[name](exact):
                 raise self.refuse(node, f"this number is undefined or not real ({name} of {self.fold(node, lambda: float(exact)):g})")
-            function = _FLOAT_FUNCTIONS[name]
+            function = ALLOWED[name].floating
             value = self.fold(node, lambda: function(*(a.value for a in arguments)))
             return _Facts(value, None, 1, inside, 0, calls)
         return _Facts(None, None, terms, inside, degree, calls)
