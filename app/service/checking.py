@@ -20,7 +20,6 @@ Refusals carry the field at fault: ``answer``, ``step`` or ``coordinate``, or
 from __future__ import annotations
 
 import asyncio
-import json
 import threading
 from collections.abc import Callable
 from typing import Any
@@ -29,6 +28,7 @@ from app.engine.check import STEPS, CheckError, Problem, check_answer, judge, na
 from app.engine.errors import DerivationError
 from app.engine.exercises import exercise_json
 from app.service import derivations, user_systems
+from app.service.encoding import dumps
 from app.service.user_checks import InvalidSystem, check_system, spec_key
 from app.service.user_jobs import derive_checked, guarded
 from app.service.user_systems import ResultCache, UserSystems
@@ -126,7 +126,7 @@ class Checking:
         """The exercises of a scene as JSON (in a thread)."""
         if scene_id not in self._exercises:
             document = {"id": scene_id, **exercise_json(derivations.derivation(scene_id))}
-            self._exercises[scene_id] = json.dumps(document, separators=(",", ":")).encode()
+            self._exercises[scene_id] = dumps(document)
         return self._exercises[scene_id]
 
     async def check_scene(
