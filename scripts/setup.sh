@@ -13,10 +13,11 @@ if [ ! -x .venv/bin/python ]; then
     "$python" -m venv .venv
 fi
 .venv/bin/python -m pip install --quiet --upgrade pip
+# the versions the tests passed with (requirements.lock) as constraints
 if [ "${1:-}" = "dev" ]; then
-    .venv/bin/python -m pip install --quiet -e ".[dev]"
+    .venv/bin/python -m pip install --quiet -c requirements.lock -e ".[dev]"
 else
-    .venv/bin/python -m pip install --quiet -e .
+    .venv/bin/python -m pip install --quiet -c requirements.lock -e .
 fi
 
 scripts/assets.sh

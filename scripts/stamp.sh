@@ -4,4 +4,4 @@
 # scripts/run.sh sets up again only when it changed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cat pyproject.toml package-lock.json scripts/setup.sh scripts/assets.sh scripts/stamp.sh | sha256sum | cut -c1-32
+cat pyproject.toml requirements.lock package-lock.json scripts/setup.sh scripts/assets.sh scripts/stamp.sh | sha256sum | cut -c1-32

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Set up (idempotent) and run the whole test suite: lint, then pytest
+# Set up (idempotent, dev tools included) and run the whole test suite: lint (scripts/lint.sh), then pytest
 # (engine, API, numerics, and the pages in Debian's headless Chromium; exported
 # LaTeX documents are compiled with Debian's pdflatex).
 set -euo pipefail
@@ -13,5 +13,6 @@ if ! command -v pdflatex >/dev/null; then
     apt-get update -qq
     apt-get install -y -qq --no-install-recommends texlive-latex-base texlive-latex-recommended >/dev/null
 fi
-.venv/bin/ruff check app tests benchmarks
+scripts/lint.sh
+# set-up warmed the caches (python -m app.service.warm): the tests never compile kernels meanwhile
 .venv/bin/python -m pytest "$@"

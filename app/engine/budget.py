@@ -143,7 +143,8 @@ def pythagoras(expr: sp.Expr) -> sp.Expr:
     for a in angles:
         # only the terms with sin a or cos a change: rewrite and expand those, keep the rest as it is
         # (the same result as rewriting the whole expanded sum, at a fraction of the cost for long sums)
-        touched, rest = [], []
+        touched: list[sp.Expr] = []
+        rest: list[sp.Expr] = []
         for term in sp.Add.make_args(best):
             (touched if term.has(sp.sin(a), sp.cos(a)) else rest).append(term)
         if not touched:

@@ -234,17 +234,17 @@ def problem(d: Derivation, step: str, coordinate: str | None = None) -> Problem:
     elif step == "lagrangian":
         truths = (d.mechanics.L,)
     elif step == "momentum":
-        truths = (eqs.momenta[k],)
+        truths = (eqs.momenta[k],)  # type: ignore[index]
     elif step == "equation":
-        truths = (eqs.residuals[k],)
+        truths = (eqs.residuals[k],)  # type: ignore[index]
     elif step == "acceleration":
-        truths = (eqs.accelerations[k],)
+        truths = (eqs.accelerations[k],)  # type: ignore[index]
     elif step == "hamiltonian":
         truths = (d.energetics.hamiltonian,)
     else:
         found = checkable_equilibria(d)
         truths = tuple(e.omega_squared for e in found)
-        r = d.reduction.coordinate
+        r = d.reduction.coordinate  # type: ignore[union-attr]
         where = tuple(f"{plain_name(r)} = {sp.sstr(e.position)}" for e in found)
 
     variants: list[tuple[str, str, sp.Expr]] = []

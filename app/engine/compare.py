@@ -122,7 +122,7 @@ def differ_by_constant(a: Values, b: Values) -> bool:
     groups = []
     for da, db in zip(a, b, strict=True):
         groups.append(
-            [x - y for ba, bb in zip(da, db, strict=True) for x, y in zip(ba, bb, strict=True) if None not in (x, y)]
+            [x - y for ba, bb in zip(da, db, strict=True) for x, y in zip(ba, bb, strict=True) if None not in (x, y)]  # type: ignore[operator]
         )
     return any(len(g) > 1 for g in groups) and _same_within(groups)
 
@@ -132,7 +132,7 @@ def ratio_groups(a: Values, b: Values) -> list[list[float]]:
     groups = []
     for da, db in zip(a, b, strict=True):
         for ba, bb in zip(da, db, strict=True):
-            groups.append([x / y for x, y in zip(ba, bb, strict=True) if None not in (x, y) and abs(y) > 1e-9])
+            groups.append([x / y for x, y in zip(ba, bb, strict=True) if None not in (x, y) and abs(y) > 1e-9])  # type: ignore[arg-type,operator]
     return groups
 
 

@@ -1,5 +1,7 @@
 """Errors the engine raises for declarations it cannot derive."""
 
+from app.errors import Refused
+
 
 def excerpt(text: object, limit: int = 40) -> str:
     """A short excerpt of user input for a message: never more than ``limit`` characters echoed back."""
@@ -7,16 +9,11 @@ def excerpt(text: object, limit: int = 40) -> str:
     return shown if len(shown) <= limit else shown[: limit - 3] + "..."
 
 
-class DerivationError(ValueError):
+class DerivationError(Refused):
     """A system the engine refuses; the message says what is wrong and what is allowed.
 
     ``part`` names the offending piece of the input when there is one.
     """
 
     def __init__(self, message: str, part: str = ""):
-        super().__init__(message)
-        self.part = part
-
-    def __reduce__(self):
-        # keep ``part`` when the error crosses a process boundary (worker pool)
-        return (type(self), (str(self), self.part))
+        super().__init__(message, part)

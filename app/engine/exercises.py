@@ -52,7 +52,7 @@ def _title(label: str) -> str:
 
 def _where_tex(d: Derivation, i: int, pr: Printer) -> str:
     red = d.reduction
-    r = d.table.q[d.table.names.index(red.coordinate)]
+    r = d.table.q[d.table.names.index(red.coordinate)]  # type: ignore[union-attr]
     return f"{pr.tex(r)} = {pr.tex(checkable_equilibria(d)[i].position)}"
 
 

@@ -120,7 +120,7 @@ def _negative_u(d: Derivation, step: str, k: int | None) -> sp.Expr | None:
 
 
 def _t_plus_u(d: Derivation, step: str, k: int | None) -> sp.Expr | None:
-    return None if _T(d) is None else _T(d) + _U(d)
+    return None if _T(d) is None else _T(d) + _U(d)  # type: ignore[operator]
 
 
 # ---- equations and the accelerations they would give ---------------------------------------------

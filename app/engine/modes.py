@@ -195,7 +195,7 @@ def _modes(
         w2, vectors = w2c.real[order], vectors[:, order]
     closed: list[sp.Expr] = []
     if exact:
-        found = within_budget(lambda: _exact_eigenvalues(M, K, assume or {}), [], EIGEN_SECONDS)
+        found = within_budget(lambda: _exact_eigenvalues(M, K, assume or {}), [], EIGEN_SECONDS)  # type: ignore[var-annotated]
         closed = [c for c in found if sp.count_ops(c) <= MAX_EXACT_OPS]
     modes = []
     for i, w in enumerate(w2):
@@ -363,7 +363,7 @@ def normal_modes(d: Derivation, momenta: Mapping[str, float] | None = None) -> N
     singular: list[dict[str, float]] = []
     kinks: list[dict[str, float]] = []
     damped = False
-    for exact, x in points[:MAX_EQUILIBRIA]:
+    for exact, x in points[:MAX_EQUILIBRIA]:  # type: ignore[assignment]
         at = {s: (exact[s] if exact is not None else sp.Float(float(v))) for s, v in zip(q, x, strict=True)}
         if exact is not None and len(q) <= MAX_SYMBOLIC_SIZE:
             M0, K0 = M.xreplace(at).applyfunc(_cheap), J.xreplace(at).applyfunc(_cheap)
@@ -456,7 +456,7 @@ def _roots_1d(dU: sp.Expr, r: sp.Symbol, values: Mapping[sp.Symbol, float], nonn
     grid = np.linspace(lo, hi, 2001)[1:-1]
     with np.errstate(all="ignore"):
         y = np.array([f(x)[0] for x in grid])
-    roots = []
+    roots: list[float] = []
     for a, b, ya, yb in zip(grid[:-1], grid[1:], y[:-1], y[1:], strict=True):
         if not (np.isfinite(ya) and np.isfinite(yb)) or ya * yb > 0:
             continue

@@ -37,6 +37,7 @@ import re
 from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import Any
 
 import sympy as sp
 
@@ -55,47 +56,41 @@ MAX_DEGREE = 256  # exponent of any one factor once SymPy combines powers ((x**8
 MAX_CALLS = 8  # functions nested inside one another (each level multiplies the size of the derivatives)
 _MAX_BITS = math.ceil(MAX_DIGITS * math.log2(10))
 
-FUNCTIONS: dict[str, type[sp.Function]] = {
-    "sin": sp.sin,
-    "cos": sp.cos,
-    "tan": sp.tan,
-    "cot": sp.cot,
-    "sec": sp.sec,
-    "csc": sp.csc,
-    "asin": sp.asin,
-    "acos": sp.acos,
-    "atan": sp.atan,
-    "atan2": sp.atan2,
-    "sinh": sp.sinh,
-    "cosh": sp.cosh,
-    "tanh": sp.tanh,
-    "exp": sp.exp,
-    "log": sp.log,
-    "sqrt": sp.sqrt,
-    "Abs": sp.Abs,
+
+@dataclass(frozen=True)
+class Allowed:
+    """A function users may write: SymPy's, the same in floating point (to bound constant
+    sub-expressions before SymPy sees them), and how many arguments it takes."""
+
+    symbolic: Callable[..., Any]
+    floating: Callable[..., float]
+    arity: int = 1
+
+
+# The function allowlist: its one home.  Everything else (the schemas' help, the pages' menus,
+# the figure trees of app/viz/exprtree.py) reads it from here.
+ALLOWED: dict[str, Allowed] = {
+    "sin": Allowed(sp.sin, math.sin),
+    "cos": Allowed(sp.cos, math.cos),
+    "tan": Allowed(sp.tan, math.tan),
+    "cot": Allowed(sp.cot, lambda x: 1.0 / math.tan(x)),
+    "sec": Allowed(sp.sec, lambda x: 1.0 / math.cos(x)),
+    "csc": Allowed(sp.csc, lambda x: 1.0 / math.sin(x)),
+    "asin": Allowed(sp.asin, math.asin),
+    "acos": Allowed(sp.acos, math.acos),
+    "atan": Allowed(sp.atan, math.atan),
+    # atan2(y, x) is the angle of the point (x, y)
+    "atan2": Allowed(sp.atan2, math.atan2, arity=2),
+    "sinh": Allowed(sp.sinh, math.sinh),
+    "cosh": Allowed(sp.cosh, math.cosh),
+    "tanh": Allowed(sp.tanh, math.tanh),
+    "exp": Allowed(sp.exp, math.exp),
+    "log": Allowed(sp.log, math.log),
+    "sqrt": Allowed(sp.sqrt, math.sqrt),
+    "Abs": Allowed(sp.Abs, abs),
 }
-# The same functions in floating point, to bound constant sub-expressions before SymPy sees them.
-_FLOAT_FUNCTIONS: dict[str, Callable[..., float]] = {
-    "sin": math.sin,
-    "cos": math.cos,
-    "tan": math.tan,
-    "cot": lambda x: 1.0 / math.tan(x),
-    "sec": lambda x: 1.0 / math.cos(x),
-    "csc": lambda x: 1.0 / math.sin(x),
-    "asin": math.asin,
-    "acos": math.acos,
-    "atan": math.atan,
-    "atan2": math.atan2,
-    "sinh": math.sinh,
-    "cosh": math.cosh,
-    "tanh": math.tanh,
-    "exp": math.exp,
-    "log": math.log,
-    "sqrt": math.sqrt,
-    "Abs": abs,
-}
-# Functions of more than one argument (atan2(y, x) is the angle of the point (x, y)); the rest take one.
-ARITY: dict[str, int] = {"atan2": 2}
+FUNCTIONS: dict[str, Callable[..., Any]] = {name: f.symbolic for name, f in ALLOWED.items()}
+ARITY: dict[str, int] = {name: f.arity for name, f in ALLOWED.items() if f.arity != 1}
 CONSTANTS: dict[str, sp.Expr] = {"pi": sp.pi}
 _FLOAT_CONSTANTS = {"pi": math.pi}
 # Names an output string may contain, or that SymPy reads as something else.
@@ -161,7 +156,7 @@ def check_name(name: str, what: str = "name") -> str:
         kind = "a Python keyword" if keyword.iskeyword(name) else "a reserved function or constant name"
         kind = "time, which every expression may use" if name == "t" else kind
         raise ExpressionError(f"{what} {name!r} is {kind}; choose another name", name)
-    if _DOTTED.search(name) and name[: _DOTTED.search(name).start()]:
+    if _DOTTED.search(name) and name[: _DOTTED.search(name).start()]:  # type: ignore[union-attr]
         raise ExpressionError(f"{what} {name!r} would print like a velocity; choose another name", name)
     return name
 
@@ -269,7 +264,7 @@ class _Checker:
             if isinstance(node.op, ast.Pow):
                 base, exponent = self.check(node.left, depth + 1), self.check(node.right, depth + 1)
                 if isinstance(_strip_signs(node.right)[0], ast.BinOp) and isinstance(
-                    _strip_signs(node.right)[0].op, ast.Pow
+                    _strip_signs(node.right)[0].op, ast.Pow  # type: ignore[attr-defined]
                 ):
                     raise self.refuse(node, "towers of exponents are not allowed")
                 return self.power(node, base, exponent)
@@ -317,9 +312,9 @@ class _Checker:
             if value is not None and f.value is not None:
                 if exact is not None and f.exact is not None:
                     exact = self.exactly(partial, exact + sign * f.exact)
-                    value = self.fold(partial, lambda e=exact: float(e))
+                    value = self.fold(partial, lambda e=exact: float(e))  # type: ignore[misc]
                 else:
-                    exact, value = None, self.fold(partial, lambda a=value, b=f.value, s=sign: a + s * b)
+                    exact, value = None, self.fold(partial, lambda a=value, b=f.value, s=sign: a + s * b)  # type: ignore[misc]
             else:
                 value = exact = None
         return _Facts(
@@ -343,10 +338,10 @@ class _Checker:
             if value is not None and f.value is not None:
                 if exact is not None and f.exact is not None:
                     exact = self.exactly(partial, exact * f.exact if op is ast.Mult else exact / f.exact)
-                    value = self.fold(partial, lambda e=exact: float(e))
+                    value = self.fold(partial, lambda e=exact: float(e))  # type: ignore[misc]
                 else:
                     exact = None
-                    value = self.fold(partial, lambda a=value, b=f.value, o=op: a * b if o is ast.Mult else a / b)
+                    value = self.fold(partial, lambda a=value, b=f.value, o=op: a * b if o is ast.Mult else a / b)  # type: ignore[misc]
             else:
                 value = exact = None
         degree = sum(f.degree for f in facts)
@@ -376,11 +371,11 @@ class _Checker:
             if base.value < 0 and not whole_exponent:
                 raise self.refuse(node, "this number is not real (a fractional power of a negative number)")
             if base.exact is not None and whole_exponent:
-                p = abs(exponent.exact.numerator)
+                p = abs(exponent.exact.numerator)  # type: ignore[union-attr]
                 bits = max(base.exact.numerator.bit_length(), base.exact.denominator.bit_length())
                 if bits * p > _MAX_BITS:
                     raise self.refuse(node, f"this number is too large (more than {MAX_DIGITS} digits)")
-                exact = self.exactly(node, base.exact**exponent.exact.numerator)
+                exact = self.exactly(node, base.exact**exponent.exact.numerator)  # type: ignore[union-attr]
         degree = base.degree * abs(n)
         if degree > MAX_DEGREE:
             raise self.refuse(
@@ -392,7 +387,7 @@ class _Checker:
         value = None
         if base.value is not None:
             # an exact constant of up to MAX_DIGITS digits can still be far past a float's range: fold refuses it
-            value = self.fold(node, (lambda: float(exact)) if exact is not None else (lambda: base.value**n))
+            value = self.fold(node, (lambda: float(exact)) if exact is not None else (lambda: base.value**n))  # type: ignore[operator]
         return _Facts(value, exact, _cap(terms), base.inside, degree, base.calls)
 
     def call(self, node: ast.Call, depth: int) -> _Facts:
@@ -423,7 +418,7 @@ class _Checker:
             exact = arguments[0].exact
             if arity == 1 and exact is not None and name in _DOMAINS and not _DOMAINS[name](exact):
                 raise self.refuse(node, f"this number is undefined or not real ({name} of {self.fold(node, lambda: float(exact)):g})")
-            function = _FLOAT_FUNCTIONS[name]
+            function = ALLOWED[name].floating
             value = self.fold(node, lambda: function(*(a.value for a in arguments)))
             return _Facts(value, None, 1, inside, 0, calls)
         return _Facts(None, None, terms, inside, degree, calls)
@@ -447,7 +442,7 @@ class _Checker:
                     break
                 divide = factor_op is ast.Div
                 value = value / f.value if divide else value * f.value
-                exact = None if exact is None or f.exact is None else (exact / f.exact if divide else exact * f.exact)
+                exact = None if exact is None or f.exact is None else (exact / f.exact if divide else exact * f.exact)  # type: ignore[assignment]
             else:
                 if len(logs) == 1:
                     u = self.check(logs[0].args[0], depth + 1)
@@ -588,7 +583,7 @@ class _Builder:
                 right = self.build(operand)
                 if op is ast.Div and right == 0:
                     raise self.checker.refuse(operand, "division by zero (this denominator is 0)")
-                result = _COMBINE[op](result, right)
+                result = _COMBINE[op](result, right)  # type: ignore[index]
             return result
         if isinstance(node, ast.BinOp):
             return self.real(node, self.build(node.left) ** self.build(node.right))

@@ -114,7 +114,7 @@ def transform(system: System) -> Transformed | None:
     particles = tuple(
         Particle(
             p.mass,
-            tuple(_text(collected(parse_expression(c, old_names).xreplace(inverse), new.q), names) for c in p.position),
+            tuple(_text(collected(parse_expression(c, old_names).xreplace(inverse), new.q), names) for c in p.position),  # type: ignore[arg-type]
             p.label,
         )
         for p in system.particles

@@ -1,25 +1,18 @@
-"""Errors a simulation can end with; each carries the HTTP status the API maps it to."""
+"""Errors a simulation can end with (kinds from app/errors.py; the web layer maps them to responses)."""
 
 from __future__ import annotations
 
+from app import errors
 from app.engine.errors import DerivationError
 
 
 class SimulationError(DerivationError):
     """A request the numerics refuses or cannot finish; the message says what and what to change.
 
-    A ``DerivationError``, so every layer that already maps those to a 422
+    A ``DerivationError`` (a ``Refused``), so every layer that reports those
     (the app's handlers, the user-system worker) reports it with its message.
     """
 
-    status_code = 422
 
-
-class TooMuchWork(SimulationError):
+class TooMuchWork(SimulationError, errors.TooMuchWork):
     """The run would exceed (or did exceed) its step or wall-clock budget."""
-
-
-class Busy(SimulationError):
-    """Too many simulations are running at once."""
-
-    status_code = 429

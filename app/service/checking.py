@@ -20,7 +20,6 @@ Refusals carry the field at fault: ``answer``, ``step`` or ``coordinate``, or
 from __future__ import annotations
 
 import asyncio
-import json
 import threading
 from collections.abc import Callable
 from typing import Any
@@ -28,12 +27,13 @@ from typing import Any
 from app.engine.check import STEPS, CheckError, Problem, check_answer, judge, name_kinds, problem
 from app.engine.errors import DerivationError
 from app.engine.exercises import exercise_json
-from app.service import derivations
-from app.service.user_systems import InvalidSystem, ResultCache, _derive, _guarded, check_system, spec_key
-from app.service.user_systems import service as user_service
-from app.settings import settings
+from app.service import derivations, user_systems
+from app.service.encoding import dumps
+from app.service.user_checks import InvalidSystem, check_system, spec_key
+from app.service.user_jobs import derive_checked, guarded
+from app.service.user_systems import ResultCache, UserSystems
+from app.settings import Settings, settings
 
-CHECK_SECONDS = settings().check_seconds
 MAX_ANSWER_CACHE = 4096
 
 
@@ -43,8 +43,9 @@ def refusal(exc: CheckError) -> InvalidSystem:
 
 def _in_system(exc: DerivationError) -> InvalidSystem:
     """A refusal of the declared system, located under ``system``."""
-    loc = getattr(exc, "loc", ())
-    return InvalidSystem(
+    loc = exc.loc or ()
+    kind = type(exc) if isinstance(exc, InvalidSystem) else InvalidSystem
+    return kind(
         f"system.{exc}" if loc else f"system: {exc}",
         ("system", *loc),
         exc.part,
@@ -65,12 +66,12 @@ def _judged(work: Callable[[], Any]) -> Any:
 
 def scene_check_job(pb: Problem, answer: str) -> bytes:
     """Worker job: judge an answer against a scene's problem."""
-    return _guarded(lambda: _judged(lambda: judge(pb, answer)))
+    return guarded(lambda: _judged(lambda: judge(pb, answer)))
 
 
 def _system(spec: dict[str, Any]):
     try:
-        return _derive(spec)
+        return derive_checked(spec)
     except (InvalidSystem, DerivationError) as exc:
         raise _in_system(exc) from None
 
@@ -82,12 +83,12 @@ def system_check_job(spec: dict[str, Any], step: str, coordinate: str | None, an
         d = _system(spec)
         return _judged(lambda: judge(problem(d, step, coordinate), answer))
 
-    return _guarded(run)
+    return guarded(run)
 
 
 def system_practice_job(spec: dict[str, Any]) -> bytes:
     """Worker job: the exercises of a user system (each step's prompt and the engine's answer)."""
-    return _guarded(lambda: exercise_json(_system(spec)))
+    return guarded(lambda: exercise_json(_system(spec)))
 
 
 # ---- in the web process ---------------------------------------------------------------------
@@ -96,7 +97,10 @@ def system_practice_job(spec: dict[str, Any]) -> bytes:
 class Checking:
     """Scene problems and exercises (cached per process), answers through the worker pool."""
 
-    def __init__(self) -> None:
+    def __init__(self, users: UserSystems | None = None, config: Settings | None = None) -> None:
+        self.check_seconds = (config or settings()).check_seconds
+        # the jobs share the user systems' pool, fair share and request sharing
+        self.users = users or user_systems.service
         self._problems: dict[tuple[str, str, str | None], Problem] = {}
         self._exercises: dict[str, bytes] = {}
         self._lock = threading.Lock()
@@ -122,7 +126,7 @@ class Checking:
         """The exercises of a scene as JSON (in a thread)."""
         if scene_id not in self._exercises:
             document = {"id": scene_id, **exercise_json(derivations.derivation(scene_id))}
-            self._exercises[scene_id] = json.dumps(document, separators=(",", ":")).encode()
+            self._exercises[scene_id] = dumps(document)
         return self._exercises[scene_id]
 
     async def check_scene(
@@ -134,8 +138,8 @@ class Checking:
         except CheckError as exc:
             raise refusal(exc) from None
         key = spec_key("scene", scene_id, step, pb.coordinate, answer.strip())
-        return await user_service.run_job(
-            self.answers, key, client, address, CHECK_SECONDS, scene_check_job, pb, answer
+        return await self.users.run_job(
+            self.answers, key, client, address, self.check_seconds, scene_check_job, pb, answer
         )
 
     async def check_system(
@@ -156,8 +160,8 @@ class Checking:
         except CheckError as exc:
             raise refusal(exc) from None
         key = spec_key(spec, step, coordinate, answer.strip())
-        return await user_service.run_job(
-            self.answers, key, client, address, CHECK_SECONDS, system_check_job, spec, step, coordinate, answer
+        return await self.users.run_job(
+            self.answers, key, client, address, self.check_seconds, system_check_job, spec, step, coordinate, answer
         )
 
     async def system_exercises(self, spec: dict[str, Any], client: str, address: str) -> bytes:
@@ -166,8 +170,8 @@ class Checking:
         except InvalidSystem as exc:
             raise _in_system(exc) from None
         key = spec_key(spec, "practice")
-        return await user_service.run_job(
-            self.practice, key, client, address, CHECK_SECONDS * 3, system_practice_job, spec
+        return await self.users.run_job(
+            self.practice, key, client, address, self.check_seconds * 3, system_practice_job, spec
         )
 
 

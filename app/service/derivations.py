@@ -9,19 +9,9 @@ from typing import Any
 
 from app.engine.contract import derivation_json, parameters_json
 from app.engine.derive import Derivation, derive
+from app.errors import UnknownScene
 from app.scenes import SCENES, Scene
 from app.service.cache import JsonCache, cache_dir, source_fingerprint, write_atomically
-
-
-class UnknownScene(KeyError):
-    def __init__(self, scene_id: str):
-        super().__init__(scene_id)
-        self.scene_id = scene_id
-
-    def __str__(self) -> str:
-        known = ", ".join(sorted(SCENES))
-        return f"no scene with id {self.scene_id[:60]!r}; known scenes: {known}"
-
 
 _json_cache = JsonCache("derivations", source_fingerprint("engine", "scenes"))
 
@@ -30,7 +20,7 @@ def scene(scene_id: str) -> Scene:
     try:
         return SCENES[scene_id]
     except KeyError:
-        raise UnknownScene(scene_id) from None
+        raise UnknownScene(scene_id, tuple(sorted(SCENES))) from None
 
 
 _guard = threading.Lock()

@@ -2,7 +2,7 @@
 
 A scene's export reuses its cached derivation and document and is cached per
 (scene, format).  A user system's export is a job in the worker pool
-(``app.service.user_systems.export_job``), under the derivation's time limit,
+(``app.service.user_jobs.export_job``), under the derivation's time limit,
 so an export can never do more than a derivation could.
 """
 

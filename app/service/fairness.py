@@ -34,6 +34,7 @@ from collections import deque
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from app.errors import OverCapacity
 from app.service.cache import cache_dir
 from app.settings import settings
 
@@ -41,13 +42,8 @@ COOKIE = "lagrange_session"
 COOKIE_MAX_AGE = 30 * 24 * 3600
 
 
-class Busy(Exception):
-    """A job refused for fairness: ``status`` 429 or 503, with a ``retry_after`` in seconds."""
-
-    def __init__(self, message: str, status: int, retry_after: int):
-        super().__init__(message)
-        self.status = status
-        self.retry_after = retry_after
+class Busy(OverCapacity):
+    """A job refused for fairness: this client's turn (``whole_server`` false) or a full server, with a ``retry_after``."""
 
 
 def _secret(configured: str | None) -> bytes:
@@ -144,20 +140,18 @@ class Fairness:
             if client in self._running:
                 raise Busy(
                     "you already have a derivation or simulation running; wait for it to finish",
-                    429,
                     self._retry_after(self.workers),
                 )
             if self._per_address.get(address, 0) >= self.per_address:
                 raise Busy(
                     f"{self.per_address} jobs from your network address are already running; try again shortly",
-                    429,
                     self._retry_after(1),
                 )
             if len(self._running) >= self.capacity:
                 raise Busy(
                     "the server is busy with other users' systems; try again shortly",
-                    503,
                     self._retry_after(len(self._running) - self.capacity + 1),
+                    whole_server=True,
                 )
             ticket = Ticket(self, client, address)
             self._running[client] = ticket

@@ -21,8 +21,8 @@ from typing import Any
 import numpy as np
 
 from app.engine.derive import Derivation
+from app.errors import OverCapacity
 from app.numerics import limits
-from app.numerics.errors import Busy
 from app.numerics.frequency import measured_omega
 from app.numerics.simulate import simulate
 from app.service.cache import JsonCache, source_fingerprint
@@ -58,7 +58,7 @@ def measure(
                 omega = math.sqrt(w2)
                 t_end = CYCLES * 2 * math.pi / omega
                 if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
-                    raise Busy("too many simulations are running at once; try again in a few seconds")
+                    raise OverCapacity("too many simulations are running at once; try again in a few seconds", 2)
                 try:
                     run = simulate(
                         system, k, y0, t_end, CYCLES * SAMPLES_PER_CYCLE, "DOP853-compiled",

@@ -22,8 +22,9 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from app.engine.derive import Derivation
+from app.errors import OverCapacity
 from app.numerics import limits
-from app.numerics.errors import Busy, SimulationError
+from app.numerics.errors import SimulationError
 from app.numerics.poincare import hamiltonian, section
 from app.service.simulation import _SLOTS, COMPILED, _check_number, _setting, initial_state, parameter_vector
 
@@ -67,7 +68,7 @@ def section_of_derivation(
         energy = float(hamiltonian(observables, y0, k)[0])
     energy = _check_number(energy, "energy")
     if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
-        raise Busy("too many simulations are running at once; try again in a few seconds")
+        raise OverCapacity("too many simulations are running at once; try again in a few seconds", 2)
     start = time.perf_counter()
     try:
         cut = section(

@@ -24,8 +24,9 @@ from typing import Any, Protocol
 import numpy as np
 
 from app.engine.derive import Derivation
+from app.errors import OverCapacity
 from app.numerics import limits, methods
-from app.numerics.errors import Busy, SimulationError
+from app.numerics.errors import SimulationError
 from app.numerics.events import EventFunction, compile_events
 from app.numerics.methods import AUTO, METHODS, NONSTIFF
 from app.numerics.observables import Observables, build, summarize
@@ -187,9 +188,10 @@ def _series(values: np.ndarray, precision: str = "full") -> np.ndarray:
 def _python_loop() -> Iterator[None]:
     """Hold the one slot for a Python step loop (see ``_PYTHON_LOOP``), or refuse as busy."""
     if not _PYTHON_LOOP.acquire(timeout=limits.WALL_SECONDS):
-        raise Busy(
+        raise OverCapacity(
             "another scipy (Python step loop) run is in progress here; try again in a few seconds, "
-            "or ask for a compiled method"
+            "or ask for a compiled method",
+            2,
         )
     try:
         yield
@@ -204,7 +206,7 @@ def simulate_derivation(
     constraint_forces: Sequence[dict[str, Any]] = (),
     scene_id: str | None = None,
 ) -> dict[str, Any]:
-    """Simulate a derived system as the request asks; a refusal raises SimulationError (422/429)."""
+    """Simulate a derived system as the request asks; a refusal raises SimulationError, a full server OverCapacity."""
     scene: Scene | None = SCENES.get(scene_id) if scene_id else None
     k = parameter_vector(derivation, request.parameters or {})
     y0 = initial_state(derivation, request.initial or {}, scene.initial if scene else {})
@@ -231,7 +233,7 @@ def simulate_derivation(
     planned = plan(system, k, y0, t_end, samples, method, rtol, atol, wait_for_compile=not ANSWER_WHILE_COMPILING)
     with _python_loop() if planned.python_loop else nullcontext():
         if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
-            raise Busy("too many simulations are running at once; try again in a few seconds")
+            raise OverCapacity("too many simulations are running at once; try again in a few seconds", 2)
         try:
             outcome = run(planned, python_loop=_python_loop, events=_events(scene, system))
         finally:

@@ -14,8 +14,8 @@ stopped.  So every such job runs in a separate process:
   inherits the web server's threads or locks;
 * a pool found broken (every worker gone) is replaced on the next job.
 
-Failures come back as ``JobFailed`` with a ``kind`` the web layer maps to a
-clear 4xx (``timeout``, ``memory``, ``crashed``) or 503 (``unavailable``).
+Failures come back as ``JobFailed`` (app/errors.py's ``WorkerFailed``) with a
+``kind``: ``timeout``, ``memory``, ``crashed`` or ``unavailable``.
 """
 
 from __future__ import annotations
@@ -32,21 +32,15 @@ from typing import Any
 
 from pebble import ProcessExpired, ProcessPool
 
+from app.errors import WorkerFailed
 from app.settings import settings
 
 MAX_TASKS = 200  # a worker is replaced after this many jobs, so caches cannot grow without bound
 PRELOAD = ("app.service.user_systems", "app.service.simulation", "app.service.checking")  # a missing module is skipped
 
 
-class JobFailed(Exception):
-    """A job that did not finish: ``kind`` is timeout, memory, crashed or unavailable."""
-
-    def __init__(self, message: str, kind: str):
-        super().__init__(message)
-        self.kind = kind
-
-    def __reduce__(self):
-        return (type(self), (str(self), self.kind))
+class JobFailed(WorkerFailed):
+    """A job of this pool that did not finish: ``kind`` is timeout, memory, crashed or unavailable."""
 
 
 def _address_space() -> int:

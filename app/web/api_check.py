@@ -10,11 +10,11 @@ from __future__ import annotations
 
 import asyncio
 
-from fastapi import APIRouter, Request
+from fastapi import APIRouter
 from fastapi.responses import Response
 
-from app.service.checking import service
-from app.web.api_user import _answer
+from app.web.api_user import answer
+from app.web.deps import CheckingDep, ClientDep
 from app.web.schemas import ErrorResponse
 from app.web.schemas_check import CheckRequest, CheckResponse, Exercises, SystemCheckRequest
 from app.web.schemas_user import BusyError, SystemSpec, UserError
@@ -44,10 +44,10 @@ ERRORS = {
     response_model=CheckResponse,
     responses=ERRORS,
 )
-async def check_scene_step(request: Request, scene_id: str, body: CheckRequest) -> Response:
-    return await _answer(
-        request,
-        lambda client, address: service.check_scene(scene_id, body.step, body.coordinate, body.answer, client, address),
+async def check_scene_step(client: ClientDep, checker: CheckingDep, scene_id: str, body: CheckRequest) -> Response:
+    return await answer(
+        client,
+        lambda key, address: checker.check_scene(scene_id, body.step, body.coordinate, body.answer, key, address),
     )
 
 
@@ -58,11 +58,11 @@ async def check_scene_step(request: Request, scene_id: str, body: CheckRequest) 
     response_model=CheckResponse,
     responses=ERRORS,
 )
-async def check_system_step(request: Request, body: SystemCheckRequest) -> Response:
+async def check_system_step(client: ClientDep, checker: CheckingDep, body: SystemCheckRequest) -> Response:
     spec = body.system.to_spec()
-    return await _answer(
-        request,
-        lambda client, address: service.check_system(spec, body.step, body.coordinate, body.answer, client, address),
+    return await answer(
+        client,
+        lambda key, address: checker.check_system(spec, body.step, body.coordinate, body.answer, key, address),
     )
 
 
@@ -72,8 +72,8 @@ async def check_system_step(request: Request, body: SystemCheckRequest) -> Respo
     response_model=Exercises,
     responses={404: ERRORS[404]},
 )
-async def scene_exercises(scene_id: str) -> Response:
-    return Response(await asyncio.to_thread(service.scene_exercises, scene_id), media_type="application/json")
+async def scene_exercises(checker: CheckingDep, scene_id: str) -> Response:
+    return Response(await asyncio.to_thread(checker.scene_exercises, scene_id), media_type="application/json")
 
 
 @router.post(
@@ -82,6 +82,6 @@ async def scene_exercises(scene_id: str) -> Response:
     response_model=Exercises,
     responses=ERRORS,
 )
-async def system_exercises(request: Request, system: SystemSpec) -> Response:
+async def system_exercises(client: ClientDep, checker: CheckingDep, system: SystemSpec) -> Response:
     spec = system.to_spec()
-    return await _answer(request, lambda client, address: service.system_exercises(spec, client, address))
+    return await answer(client, lambda key, address: checker.system_exercises(spec, key, address))

@@ -10,9 +10,7 @@ from __future__ import annotations
 from typing import Any
 
 from fastapi import APIRouter
-from fastapi.responses import JSONResponse
 
-from app.numerics.errors import SimulationError
 from app.service import simulation, work_precision
 from app.web.limits import MAX_BODY_BYTES
 from app.web.responses import FastJSONResponse
@@ -34,10 +32,6 @@ ERRORS = {
 BODY_ERRORS = {413: {"model": ErrorResponse, "description": f"The body is larger than {MAX_BODY_BYTES} bytes."}}
 
 
-def _refused(exc: SimulationError) -> JSONResponse:
-    return JSONResponse({"detail": str(exc)[:600], "part": exc.part[:80]}, status_code=exc.status_code)
-
-
 @router.post(
     "/scenes/{scene_id}/simulate",
     summary="Simulate a scene",
@@ -51,11 +45,8 @@ def _refused(exc: SimulationError) -> JSONResponse:
     responses={200: {"model": SimulateResponse}, **ERRORS, **BODY_ERRORS},
 )
 def simulate_scene(scene_id: str, request: SimulateRequest) -> Any:
-    try:
-        # encoded here, in the thread pool, by orjson (numpy arrays directly)
-        return FastJSONResponse(simulation.simulate_scene(scene_id, request))
-    except SimulationError as exc:
-        return _refused(exc)
+    # encoded here, in the thread pool, by orjson (numpy arrays directly); a refusal is answered by app/web/errors.py
+    return FastJSONResponse(simulation.simulate_scene(scene_id, request))
 
 
 @router.get(

@@ -13,15 +13,14 @@ import json
 from collections.abc import Callable, Coroutine
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Request
-from fastapi.responses import JSONResponse, Response
+from fastapi import APIRouter, Body
+from fastapi.responses import Response
 
-from app.service import user_systems
 from app.service.exporting import Exported
-from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
-from app.service.user_systems import InvalidSystem
-from app.service.worker import JobFailed
+from app.service.user_checks import InvalidSystem
 from app.web.api_scenes import EXPORT_CONTENT, download
+from app.web.deps import Client, ClientDep, UserSystemsDep
+from app.web.errors import KINDS, json_problem
 from app.web.examples_user import DERIVE_EXAMPLES, DERIVE_RESPONSE, ERROR_EXAMPLES, SIMULATE_EXAMPLES, SIMULATE_RESPONSE
 from app.web.limits import MAX_BODY_BYTES
 from app.web.schemas import SESSION_COOKIE, ErrorResponse
@@ -74,48 +73,24 @@ def _errors(*statuses: int) -> dict[int | str, dict[str, Any]]:
     return responses
 
 
-def _address(request: Request) -> str:
-    return request.client.host if request.client else "unknown"
-
-
 def _json(body: bytes) -> Response:
     return Response(body, media_type="application/json")
 
 
-async def _answer(
-    request: Request,
+async def answer(
+    client: Client,
     work: Callable[[str, str], Coroutine[Any, Any, bytes]],
     reply: Callable[[bytes], Response] = _json,
 ) -> Response:
-    """Identify the client, run the work, and turn refusals into their documented responses."""
-    service = user_systems.service
-    address = _address(request)
-    session = service.gate.verify(request.cookies.get(COOKIE))
-    minted = None if session else service.gate.mint(address)
-    client = f"session:{session}" if session else f"address:{address}"
+    """Run the work for the client; a failure gets its response (app/web/errors.py), with the session cookie too."""
     response: Response
     try:
-        body = await work(client, address)
-    except InvalidSystem as exc:
-        response = JSONResponse(exc.as_json(), status_code=422)
-    except Busy as exc:
-        response = JSONResponse(
-            {"detail": str(exc), "retry_after": exc.retry_after},
-            status_code=exc.status,
-            headers={"Retry-After": str(exc.retry_after)},
-        )
-    except JobFailed as exc:
-        if exc.kind == "unavailable":
-            response = JSONResponse(
-                {"detail": str(exc), "retry_after": 1}, status_code=503, headers={"Retry-After": "1"}
-            )
-        else:
-            response = JSONResponse({"detail": str(exc), "kind": exc.kind}, status_code=422)
+        body = await work(client.key, client.address)
+    except KINDS as exc:
+        response = json_problem(exc)
     else:
         response = reply(body)
-    if minted:
-        response.set_cookie(COOKIE, minted, max_age=COOKIE_MAX_AGE, httponly=True, samesite="lax")
-    return response
+    return client.keep(response)
 
 
 @router.post(
@@ -135,10 +110,10 @@ async def _answer(
     },
 )
 async def derive_system(
-    request: Request, system: Annotated[SystemSpec, Body(openapi_examples=DERIVE_EXAMPLES)]
+    client: ClientDep, users: UserSystemsDep, system: Annotated[SystemSpec, Body(openapi_examples=DERIVE_EXAMPLES)]
 ) -> Response:
     spec = system.to_spec()
-    return await _answer(request, lambda client, address: user_systems.service.derive(spec, client, address))
+    return await answer(client, lambda key, address: users.derive(spec, key, address))
 
 
 @router.post(
@@ -158,11 +133,13 @@ async def derive_system(
     },
 )
 async def simulate_system(
-    request: Request, body: Annotated[UserSimulateRequest, Body(openapi_examples=SIMULATE_EXAMPLES)]
+    client: ClientDep,
+    users: UserSystemsDep,
+    body: Annotated[UserSimulateRequest, Body(openapi_examples=SIMULATE_EXAMPLES)],
 ) -> Response:
     spec = SystemSpec.model_validate(body.model_dump(include=set(SystemSpec.model_fields))).to_spec()
     wanted = simulate_request(body)
-    return await _answer(request, lambda client, address: user_systems.service.simulate(spec, wanted, client, address))
+    return await answer(client, lambda key, address: users.simulate(spec, wanted, key, address))
 
 
 # what the numerics may complain about at the top of an export request; the rest is inside "system"
@@ -173,7 +150,7 @@ def _in_system(exc: InvalidSystem) -> InvalidSystem:
     """A refusal located in the export body: the system's fields sit under ``system``."""
     if exc.loc and exc.loc[0] in _EXPORT_TOP_LEVEL:
         return exc
-    return InvalidSystem(str(exc), ("system", *exc.loc), exc.part, exc.start, exc.end)
+    return type(exc)(str(exc), ("system", *exc.loc), exc.part, exc.start, exc.end)
 
 
 @router.post(
@@ -191,13 +168,13 @@ def _in_system(exc: InvalidSystem) -> InvalidSystem:
         **_errors(400, 413, 422, 429, 503),
     },
 )
-async def export_system(request: Request, body: ExportRequest) -> Response:
+async def export_system(client: ClientDep, users: UserSystemsDep, body: ExportRequest) -> Response:
     spec = body.system.to_spec()
     initial, t_end = dict(body.initial), body.t_end
 
-    async def work(client: str, address: str) -> bytes:
+    async def work(key: str, address: str) -> bytes:
         try:
-            return await user_systems.service.export(spec, body.format, initial, t_end, client, address)
+            return await users.export(spec, body.format, initial, t_end, key, address)
         except InvalidSystem as exc:
             raise _in_system(exc) from None
 
@@ -205,4 +182,4 @@ async def export_system(request: Request, body: ExportRequest) -> Response:
         made = json.loads(document)
         return download(Exported(made["content"].encode(), made["filename"], made["media_type"]))
 
-    return await _answer(request, work, reply)
+    return await answer(client, work, reply)

@@ -1,4 +1,10 @@
-"""Error responses: a clear 4xx with what was wrong and what is allowed, never a 500.
+"""Error responses: one mapping from the kinds of failure (app/errors.py) to HTTP, for every route.
+
+``problem(exc)`` gives the status, the JSON body and the headers of a failure;
+the JSON routes answer with it (through the app's exception handlers or
+``json_problem``), the HTML pages take its status and headers and show its
+message.  Never a 500 for bad input: a clear 4xx with what was wrong and what
+is allowed.
 
 FastAPI's default validation handler echoes the offending input back; a huge
 or non-finite input would then be repeated or break JSON encoding.  This one
@@ -8,12 +14,66 @@ dictionary key) is cut to a short excerpt.
 
 from __future__ import annotations
 
+from dataclasses import dataclass, field
+from typing import Any
+
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
 
-from app.engine.errors import DerivationError, excerpt
-from app.service.derivations import UnknownScene
+from app.engine.errors import excerpt
+from app.errors import OverCapacity, Refused, UnknownScene, WorkerFailed
+
+# what each kind of failure is, in HTTP
+REFUSED = 422  # Refused and TooMuchWork: the request as sent cannot be served
+CLIENT_BUSY = 429  # OverCapacity for this client: its own work is in the way
+SERVER_BUSY = 503  # OverCapacity of the whole server, or no worker to be had
+NOT_FOUND = 404  # UnknownScene
+UNAVAILABLE_RETRY_SECONDS = 1
+
+KINDS = (Refused, OverCapacity, WorkerFailed, UnknownScene)
+
+
+@dataclass(frozen=True)
+class Problem:
+    status: int
+    body: dict[str, Any]
+    headers: dict[str, str] = field(default_factory=dict)
+
+    @property
+    def detail(self) -> str:
+        return self.body["detail"]
+
+
+def _busy(message: str, retry_after: int, status: int) -> Problem:
+    return Problem(status, {"detail": message, "retry_after": retry_after}, {"Retry-After": str(retry_after)})
+
+
+def problem(exc: Exception) -> Problem:
+    """The response to a failure of one of the kinds in app/errors.py."""
+    if isinstance(exc, Refused):
+        body: dict[str, Any] = {"detail": str(exc)[:600], "part": exc.part[:80]}
+        if exc.loc is not None:  # a refusal located in the request body
+            body |= {"loc": ["body", *(excerpt(x) for x in exc.loc)], "start": exc.start, "end": exc.end}
+        return Problem(REFUSED, body)
+    if isinstance(exc, OverCapacity):
+        return _busy(str(exc), exc.retry_after, SERVER_BUSY if exc.whole_server else CLIENT_BUSY)
+    if isinstance(exc, WorkerFailed):
+        if exc.kind == "unavailable":
+            return _busy(str(exc), UNAVAILABLE_RETRY_SECONDS, SERVER_BUSY)
+        return Problem(REFUSED, {"detail": str(exc), "kind": exc.kind})
+    if isinstance(exc, UnknownScene):
+        return Problem(NOT_FOUND, {"detail": str(exc)})
+    raise TypeError(f"not a kind of failure: {type(exc).__name__}") from exc
+
+
+def json_problem(exc: Exception) -> JSONResponse:
+    found = problem(exc)
+    return JSONResponse(found.body, status_code=found.status, headers=found.headers)
+
+
+async def _handler(request: Request, exc: Exception) -> JSONResponse:
+    return json_problem(exc)
 
 
 def _location(loc: tuple | list) -> str:
@@ -31,18 +91,10 @@ async def validation_error(request: Request, exc: RequestValidationError) -> JSO
     ]
     first = errors[0] if errors else {"loc": [], "msg": "invalid request"}
     detail = f"{_location(first['loc'])}: {first['msg']}"
-    return JSONResponse(status_code=422, content={"detail": detail, "errors": errors})
-
-
-async def unknown_scene(request: Request, exc: UnknownScene) -> JSONResponse:
-    return JSONResponse(status_code=404, content={"detail": str(exc)})
-
-
-async def derivation_error(request: Request, exc: DerivationError) -> JSONResponse:
-    return JSONResponse(status_code=422, content={"detail": str(exc)[:500], "part": exc.part[:80]})
+    return JSONResponse(status_code=REFUSED, content={"detail": detail, "errors": errors})
 
 
 def install(app: FastAPI) -> None:
     app.add_exception_handler(RequestValidationError, validation_error)
-    app.add_exception_handler(UnknownScene, unknown_scene)
-    app.add_exception_handler(DerivationError, derivation_error)
+    for kind in KINDS:
+        app.add_exception_handler(kind, _handler)

@@ -1,8 +1,8 @@
 """Documented examples of the user-system API, requests and the answers they really get.
 
 The answers live in ``examples/user_api.json``, written by running the API on
-the requests below (``python -m app.web.examples_user``); a test checks that
-the file still matches what the API answers.
+the requests below (``python scripts/record_examples.py``, outside the app); a
+test checks that the file still matches what the API answers.
 """
 
 from __future__ import annotations
@@ -118,7 +118,7 @@ TIMEOUT_SECONDS = 1.0  # the timeout example is recorded with this limit (the se
 _ANSWERS = _load()
 DERIVE_RESPONSE: dict[str, Any] | None = _ANSWERS["derive"]
 SIMULATE_RESPONSE: dict[str, Any] | None = _ANSWERS.get("simulate")
-_SUMMARIES = {
+SUMMARIES = {
     "400": {"unreadable": "A number JSON cannot hold as a float"},
     "413": {"too-large": "A body over the size cap"},
     "422": {
@@ -134,59 +134,5 @@ ERROR_EXAMPLES: dict[int, dict[str, dict[str, Any]]] = {
         name: {"summary": summary, "response": _ANSWERS["errors"].get(status, {}).get(name, {"detail": summary})}
         for name, summary in names.items()
     }
-    for status, names in _SUMMARIES.items()
+    for status, names in SUMMARIES.items()
 }
-
-
-def record() -> dict[str, Any]:
-    """Run the API on the example requests and collect what it answers."""
-    from fastapi.testclient import TestClient
-
-    from app.main import app
-    from app.service import user_systems
-    from app.web.api_user import MAX_BODY_BYTES
-
-    errors: dict[str, dict[str, Any]] = {status: {} for status in _SUMMARIES}
-    service = user_systems.service
-    with TestClient(app) as client:
-        derived = client.post("/api/derive", json=FORCED_SPRING).json()
-        simulated = client.post("/api/simulate", json=SIMULATE_EXAMPLES["forced-spring"]["value"]).json()
-        errors["422"]["simulate"] = client.post("/api/simulate", json=SIMULATE_REFUSED["value"]).json()
-        for name, example in REFUSED_REQUESTS.items():
-            errors["422"][name] = client.post("/api/derive", json=example["value"]).json()
-        errors["400"]["unreadable"] = client.post("/api/derive", content=UNREADABLE, headers=JSON).json()
-        errors["413"]["too-large"] = client.post(
-            "/api/derive", content=b" " * (MAX_BODY_BYTES + 1), headers=JSON
-        ).json()
-        errors["422"]["timeout"] = answer_with_time_limit(client, TIMEOUT_SECONDS)
-        client.cookies.clear()  # keyed on the address from here on
-        ticket = service.gate.admit("address:testclient", "testclient")
-        try:
-            errors["429"]["one-at-a-time"] = client.post("/api/derive", json=DOUBLE_PENDULUM).json()
-        finally:
-            ticket.release()
-        tickets = [service.gate.admit(f"filler{i}", f"filler{i}") for i in range(service.gate.capacity)]
-        try:
-            errors["503"]["busy"] = client.post("/api/derive", json=DOUBLE_PENDULUM).json()
-        finally:
-            for ticket in tickets:
-                ticket.release()
-    return {"derive": derived, "simulate": simulated, "errors": errors}
-
-
-def answer_with_time_limit(client: Any, seconds: float) -> dict[str, Any]:
-    """The answer to deriving the double pendulum under a short time limit (no cached result)."""
-    from app.service import user_systems
-
-    saved, cache = user_systems.DERIVE_SECONDS, user_systems.service.derivations
-    user_systems.DERIVE_SECONDS, user_systems.service.derivations = seconds, user_systems.ResultCache()
-    try:
-        return client.post("/api/derive", json=DOUBLE_PENDULUM).json()
-    finally:
-        user_systems.DERIVE_SECONDS, user_systems.service.derivations = saved, cache
-
-
-if __name__ == "__main__":
-    EXAMPLES_FILE.parent.mkdir(exist_ok=True)
-    EXAMPLES_FILE.write_text(json.dumps(record(), indent=1, ensure_ascii=False) + "\n")
-    print(f"wrote {EXAMPLES_FILE}")

@@ -16,12 +16,13 @@ from typing import Any
 from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, RedirectResponse
 
+from app.errors import UnknownScene
 from app.numerics.methods import CHOICES
 from app.service import derivations
-from app.service.derivations import UnknownScene
 from app.viz.chapter import table_of_contents
 from app.viz.diagrams import diagram
 from app.viz.page_model import scene_page
+from app.web.errors import problem
 from app.web.templating import templates
 
 router = APIRouter(tags=["pages"], include_in_schema=False)
@@ -94,7 +95,7 @@ def scene_page_route(request: Request, scene_id: str) -> HTMLResponse:
     except UnknownScene as exc:
         known = [{"id": s.id, "title": s.title, "url": f"/scenes/{s.id}"} for s in derivations.SCENES.values()]
         return templates.TemplateResponse(
-            request, "404.html", {"missing": exc.scene_id[:60], "known": known}, status_code=404
+            request, "404.html", {"missing": exc.scene_id[:60], "known": known}, status_code=problem(exc).status
         )
     # A scene page depends only on its model: render (and compress) it once per model, then serve the bytes.
     cached = _pages.get(scene_id)

@@ -12,252 +12,31 @@ The simulation runs in the browser against POST /api/simulate (static/js/playgro
 from __future__ import annotations
 
 import json
-import re
-from dataclasses import dataclass, field
 from typing import Any
 
 from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
-from pydantic import ValidationError
 from starlette.concurrency import run_in_threadpool
-from starlette.datastructures import QueryParams
 
-from app.engine.errors import excerpt
 from app.engine.parse import FUNCTIONS
 from app.numerics.methods import CHOICES
-from app.service import user_systems
-from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
-from app.service.user_systems import InvalidSystem
-from app.service.worker import JobFailed
-from app.viz.page_model import scene_page
+from app.service.user_checks import InvalidSystem
+from app.viz.user_page import model_of
+from app.web.deps import ClientDep, UserSystemsDep
+from app.web.errors import KINDS, REFUSED, Problem, problem
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
-from app.web.limits import TooDeep, check_json_depth
+from app.web.playground_form import AXES, FORMS, Form, FormError, form_of, located_error, query_of, read_form, spec_of
 from app.web.schemas import SESSION_COOKIE
-from app.web.schemas_user import SystemSpec
 from app.web.templating import templates
 
 router = APIRouter(tags=["pages"])
 
 MAX_QUERY = 16_000  # characters of query string: far more than any system the form can hold
-FORMS = ("lagrangian", "energies", "particles")
 EXAMPLES = {
     "Forced, damped spring (T, U and a force)": FORCED_SPRING,
     "Double pendulum (particles)": DOUBLE_PENDULUM,
     "Bead on a spinning hoop (L alone)": SPINNING_HOOP,
 }
-AXES = ("x", "y", "z")
-# the optional panels (app/viz/panels.py) a user's system gets wherever its derivation supports them
-PANELS = ("effective-potential", "small-oscillations", "poincare")
-
-
-@dataclass
-class Form:
-    """What the student typed, field by field, as text (so it can be shown again as typed)."""
-
-    coordinates: str = ""
-    parameters: list[dict[str, str]] = field(default_factory=list)  # name, value, unit, min, max
-    form: str = "energies"
-    lagrangian: str = ""
-    kinetic: str = ""
-    potential: str = ""
-    particles: list[dict[str, str]] = field(default_factory=list)  # mass, x, y, z
-    forces: list[dict[str, str]] = field(default_factory=list)  # coordinate, expression
-    nonnegative: str = ""
-
-
-class FormError(Exception):
-    def __init__(
-        self, message: str, field_id: str = "", text: str = "", start: int | None = None, end: int | None = None
-    ):
-        super().__init__(message)
-        self.field_id, self.text, self.start, self.end = field_id, text, start, end
-
-    def view(self) -> dict[str, Any]:
-        marked = self.start is not None and self.end is not None and self.start < self.end <= len(self.text)
-        return {
-            "message": str(self),
-            "field_id": self.field_id,
-            "text": self.text,
-            "before": self.text[: self.start] if marked else "",
-            "part": self.text[self.start : self.end] if marked else "",
-            "after": self.text[self.end :] if marked else "",
-            "marked": marked,
-        }
-
-
-def _rows(query: QueryParams, keys: dict[str, str]) -> list[dict[str, str]]:
-    columns = {name: query.getlist(key) for name, key in keys.items()}
-    count = max((len(v) for v in columns.values()), default=0)
-    rows = [
-        {name: (values[i] if i < len(values) else "").strip() for name, values in columns.items()} for i in range(count)
-    ]
-    return [r for r in rows if any(r.values())]
-
-
-def read_form(query: QueryParams) -> Form:
-    """The form as typed, from the query string (``system`` JSON takes precedence)."""
-    if query.get("system"):
-        try:
-            # the nesting is checked by a scan before json.loads, which recurses once per level
-            check_json_depth(query["system"])
-            return form_of(json.loads(query["system"]))
-        except TooDeep as exc:
-            raise FormError(f"the system in the address is not a system: {exc}", "f-coordinates") from None
-        except (ValueError, TypeError, AttributeError, RecursionError):
-            raise FormError("the system in the address is not valid JSON in the API's shape", "f-coordinates") from None
-    return Form(
-        coordinates=query.get("q", "").strip(),
-        parameters=_rows(query, {"name": "pn", "value": "pv", "unit": "pu", "min": "plo", "max": "phi"}),
-        form=query.get("form", "energies") if query.get("form") in FORMS else "energies",
-        lagrangian=query.get("L", ""),
-        kinetic=query.get("T", ""),
-        potential=query.get("U", ""),
-        particles=_rows(query, {"mass": "m", "x": "x", "y": "y", "z": "z"}),
-        forces=_rows(query, {"coordinate": "fq", "expression": "fQ"}),
-        nonnegative=query.get("nn", "").strip(),
-    )
-
-
-def _text(value: Any) -> str:
-    return "" if value is None else str(value)
-
-
-def form_of(spec: dict[str, Any]) -> Form:
-    """The form showing a system given in the API's shape."""
-    params = []
-    for p in spec.get("parameters") or []:
-        p = {"name": p} if isinstance(p, str) else p
-        params.append(
-            {k: _text(p.get(k, "1" if k == "value" else "")) for k in ("name", "value", "unit", "min", "max")}
-        )
-    particles = [
-        {"mass": _text(p.get("mass")), **{a: _text(c) for a, c in zip(AXES, p.get("position") or [], strict=False)}}
-        for p in spec.get("particles") or []
-    ]
-    kind = "particles" if particles else ("lagrangian" if spec.get("lagrangian") is not None else "energies")
-    return Form(
-        coordinates=", ".join(map(str, spec.get("coordinates") or [])),
-        parameters=params,
-        form=kind,
-        lagrangian=_text(spec.get("lagrangian")),
-        kinetic=_text(spec.get("kinetic")),
-        potential=_text(spec.get("potential")),
-        particles=particles,
-        forces=[{"coordinate": str(k), "expression": _text(v)} for k, v in (spec.get("forces") or {}).items()],
-        nonnegative=", ".join(map(str, spec.get("nonnegative") or [])),
-    )
-
-
-def _names(text: str) -> list[str]:
-    return [n for n in re.split(r"[\s,]+", text) if n]
-
-
-def _number(text: str, field_id: str, what: str) -> float | None:
-    if not text:
-        return None
-    try:
-        return float(text)
-    except ValueError:
-        raise FormError(f"{what}: {text[:30]!r} is not a number", field_id, text) from None
-
-
-def spec_of(form: Form) -> dict[str, Any]:
-    """The API request for what was typed (validated with the API's model)."""
-    parameters = []
-    for i, p in enumerate(form.parameters):
-        entry: dict[str, Any] = {"name": p.get("name", ""), "unit": p.get("unit", "")}
-        for key, what in (("value", "value"), ("min", "lowest value"), ("max", "highest value")):
-            number = _number(p.get(key, ""), f"f-param-{i}-{key}", f"parameter {p.get('name') or i + 1}, {what}")
-            if number is not None:
-                entry[key] = number
-        parameters.append(entry)
-    spec: dict[str, Any] = {"coordinates": _names(form.coordinates), "parameters": parameters}
-    if form.form == "lagrangian":
-        spec["lagrangian"] = form.lagrangian
-    else:
-        spec["potential"] = form.potential or "0"
-        if form.form == "energies":
-            spec["kinetic"] = form.kinetic
-        else:
-            spec["particles"] = [
-                {"mass": p.get("mass", ""), "position": [p.get(a) or "0" for a in AXES]} for p in form.particles
-            ]
-    forces = {f["coordinate"]: f["expression"] for f in form.forces if f.get("expression")}
-    if forces:
-        spec["forces"] = forces
-    if form.nonnegative:
-        spec["nonnegative"] = _names(form.nonnegative)
-    try:
-        return SystemSpec.model_validate(spec).to_spec()
-    except ValidationError as exc:
-        first = exc.errors()[0]
-        # a parameter is a name or an object: drop the union member from the location
-        loc = tuple(x for x in first["loc"] if x not in ("ParameterSpec", "str"))
-        where = ".".join(excerpt(x) for x in loc)
-        raise _located(form, loc, f"{where}: {first['msg']}") from None
-
-
-def field_id(form: Form, loc: tuple) -> str:
-    """The id of the input that holds the part of the request at ``loc``."""
-    head = loc[0] if loc else ""
-    if head == "coordinates":
-        return "f-coordinates"
-    if head == "parameters" and len(loc) > 1 and isinstance(loc[1], int):
-        key = loc[2] if len(loc) > 2 and loc[2] in ("name", "value", "unit", "min", "max") else "name"
-        return f"f-param-{loc[1]}-{key}"
-    if head in ("lagrangian", "kinetic", "potential"):
-        return {"lagrangian": "f-L", "kinetic": "f-T", "potential": "f-U"}[head]
-    if head == "particles" and len(loc) > 2 and isinstance(loc[1], int):
-        column = "mass" if loc[2] == "mass" else (AXES[loc[3]] if len(loc) > 3 and isinstance(loc[3], int) else "x")
-        return f"f-particle-{loc[1]}-{column}"
-    if head == "forces" and len(loc) > 1:
-        rows = [i for i, f in enumerate(form.forces) if f.get("coordinate") == loc[1]]
-        return f"f-force-{rows[0]}-expression" if rows else "f-forces"
-    if head == "nonnegative":
-        return "f-nn"
-    return "f-form" if head == "" else f"f-{head}"
-
-
-def _value_at(form: Form, field: str) -> str:
-    if field == "f-coordinates":
-        return form.coordinates
-    if field in ("f-L", "f-T", "f-U"):
-        return {"f-L": form.lagrangian, "f-T": form.kinetic, "f-U": form.potential}[field]
-    parts = field.split("-")
-    groups = {"param": form.parameters, "particle": form.particles, "force": form.forces}
-    if len(parts) == 4 and parts[1] in groups and parts[2].isdigit() and int(parts[2]) < len(groups[parts[1]]):
-        return groups[parts[1]][int(parts[2])].get(parts[3], "")
-    return ""
-
-
-def _located(form: Form, loc: tuple, message: str, start: int | None = None, end: int | None = None) -> FormError:
-    target = field_id(form, loc)
-    return FormError(message, target, _value_at(form, target), start, end)
-
-
-def _display_particles(spec: dict[str, Any]) -> list[tuple[str, tuple[str, str, str]]]:
-    """What the animation draws: the particles as declared (none for a system given by L or by T and U)."""
-    return [
-        (p.get("label") or "", tuple(p["position"]) + ("0",) * (3 - len(p["position"])))
-        for p in spec.get("particles") or []
-    ]
-
-
-def model_of(spec: dict[str, Any], doc: dict[str, Any]) -> dict[str, Any]:
-    """The scene page model for a user system (pure Python: expression trees, no SymPy)."""
-    particles = _display_particles(spec)
-    info = {
-        "id": "playground",
-        "title": "Your system",
-        "section": "",
-        "summary": "",
-        "statement": "",
-        "figure": "The system as declared, drawn at its initial state.",
-        "panels": PANELS,
-        "initial": {q: 1.0 for q in spec["coordinates"]},
-        "t_end": 10.0,
-    }
-    return scene_page(doc, info, particles, CHOICES, spec.get("nonnegative") or (), scene=False)
 
 
 def _example_links() -> list[dict[str, str]]:
@@ -267,28 +46,6 @@ def _example_links() -> list[dict[str, str]]:
         {"title": title, "href": "/playground?" + urlencode(query_of(form_of(spec)), doseq=True)}
         for title, spec in EXAMPLES.items()
     ]
-
-
-def query_of(form: Form) -> dict[str, Any]:
-    """The query string that reproduces a form (the shareable address)."""
-    query: dict[str, Any] = {"q": form.coordinates, "form": form.form}
-    for key, name in (("pn", "name"), ("pv", "value"), ("pu", "unit"), ("plo", "min"), ("phi", "max")):
-        query[key] = [p.get(name, "") for p in form.parameters]
-    if form.form == "lagrangian":
-        query["L"] = form.lagrangian
-    else:
-        query["U"] = form.potential
-        if form.form == "energies":
-            query["T"] = form.kinetic
-        else:
-            for key in ("m", *AXES):
-                query[key] = [p.get("mass" if key == "m" else key, "") for p in form.particles]
-    if form.forces:
-        query["fq"] = [f["coordinate"] for f in form.forces]
-        query["fQ"] = [f["expression"] for f in form.forces]
-    if form.nonnegative:
-        query["nn"] = form.nonnegative
-    return {k: v for k, v in query.items() if (any(v) if isinstance(v, list) else v)}
 
 
 def _query_parameter(name: str, description: str, repeated: bool = False) -> dict[str, Any]:
@@ -336,14 +93,9 @@ HTML = {"text/html": {"schema": {"type": "string"}}}
         503: {"description": "The server is busy; the page says so.", "content": HTML},
     },
 )
-async def playground(request: Request) -> Response:
-    service = user_systems.service
-    address = request.client.host if request.client else "unknown"
-    session = service.gate.verify(request.cookies.get(COOKIE))
-    minted = None if session else service.gate.mint(address)
-    client = f"session:{session}" if session else f"address:{address}"
+async def playground(request: Request, client: ClientDep, users: UserSystemsDep) -> Response:
     error: FormError | None = None
-    busy: Busy | None = None
+    failed: Problem | None = None
     model = spec = None
     form = form_of(FORCED_SPRING)
     try:
@@ -355,17 +107,18 @@ async def playground(request: Request) -> Response:
             form = read_form(request.query_params)
         if form.coordinates or form.parameters or form.lagrangian or form.kinetic or form.particles:
             spec = spec_of(form)
-            doc = json.loads(await service.derive(spec, client, address))
-            model = await run_in_threadpool(model_of, spec, doc)
+            doc = json.loads(await users.derive(spec, client.key, client.address))
+            model = await run_in_threadpool(model_of, spec, doc, CHOICES)
     except FormError as exc:
         error = exc
-    except InvalidSystem as exc:
-        error = _located(form, exc.loc, str(exc), exc.start, exc.end)
-    except JobFailed as exc:
-        error = FormError(str(exc), "f-form")
-    except Busy as exc:
-        busy = exc
-        error = FormError(f"{exc} (retry in {exc.retry_after} s)", "f-form")
+    except KINDS as exc:
+        failed = problem(exc)
+        if isinstance(exc, InvalidSystem):
+            error = located_error(form, exc.loc, str(exc), exc.start, exc.end)
+        elif "retry_after" in failed.body:
+            error = FormError(f"{exc} (retry in {failed.body['retry_after']} s)", "f-form")
+        else:
+            error = FormError(str(exc), "f-form")
     context = {
         "form": form,
         "error": error.view() if error else None,
@@ -376,10 +129,8 @@ async def playground(request: Request) -> Response:
         "forms": FORMS,
         "functions": list(FUNCTIONS),
     }
-    status = 200 if error is None else (busy.status if busy else 422)
-    response = templates.TemplateResponse(request, "playground.html", context, status_code=status)
-    if busy:
-        response.headers["Retry-After"] = str(busy.retry_after)
-    if minted:
-        response.set_cookie(COOKIE, minted, max_age=COOKIE_MAX_AGE, httponly=True, samesite="lax")
-    return response
+    # the page's own mistakes (FormError) are refusals too; the rest answer as the API does
+    status = failed.status if failed else (REFUSED if error else 200)
+    headers = failed.headers if failed else {}
+    response = templates.TemplateResponse(request, "playground.html", context, status_code=status, headers=headers)
+    return client.keep(response)

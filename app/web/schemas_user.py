@@ -1,7 +1,7 @@
 """Request and response models of the user-system API (POST /api/derive, POST /api/simulate).
 
 Shapes only; the limits a model cannot express (names, expressions) are
-checked by ``app.service.user_systems.check_system`` with located messages.
+checked by ``app.service.user_checks.check_system`` with located messages.
 Every float is finite: JSON's ``NaN`` and ``Infinity`` (which Python's
 ``json`` accepts) are refused with a 422.
 """
@@ -13,7 +13,7 @@ from typing import Annotated, Any
 from pydantic import BaseModel, ConfigDict, Field, create_model
 
 from app.engine.parse import FUNCTIONS, MAX_LENGTH
-from app.service.user_systems import MAX_COORDINATES, MAX_PARAMETERS, MAX_PARTICLES
+from app.service.user_checks import MAX_COORDINATES, MAX_PARAMETERS, MAX_PARTICLES
 from app.web.schemas import ParameterInfo
 from app.web.schemas_simulate import SimulateRequest
 

@@ -31,6 +31,8 @@ from tests.engine.scaling import check_scaled_accelerations, factors_for, scalin
 from tests.engine.unseen_systems import UNSEEN
 from tests.reference import lagranges_method
 
+pytestmark = pytest.mark.slow  # 31 systems derived and integrated twice
+
 NAMES = sorted(UNSEEN)
 SAMPLES = 41
 

@@ -10,6 +10,7 @@ from app.numerics import limits
 from app.numerics.errors import SimulationError, TooMuchWork
 from app.service import simulation, work_precision
 from app.service.derivations import derivation
+from app.web.errors import problem
 
 
 def request(**fields):
@@ -54,7 +55,7 @@ def test_bad_requests_are_refused_with_a_message(fields, message):
     with pytest.raises(SimulationError) as info:
         simulation.simulate_scene("simple-pendulum", request(**fields))
     assert message in str(info.value)
-    assert info.value.status_code == 422
+    assert problem(info.value).status == 422
 
 
 def test_singular_start_is_refused():
@@ -73,7 +74,7 @@ def test_too_much_work_is_a_clear_refusal(monkeypatch):
         simulation.simulate_scene(
             "tabletop-spring", request(parameters={"k": 1e8}, t_end=1000.0, method="RK45", rtol=1e-10)
         )
-    assert info.value.status_code == 422
+    assert problem(info.value).status == 422
 
 
 def test_slack_string_is_flagged():

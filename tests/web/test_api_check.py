@@ -7,7 +7,9 @@ import os
 import pytest
 
 from app.engine.mistakes import RULES
+from app.main import app
 from app.service import checking
+from app.web.deps import checking_service
 from tests.engine.check_corpus import CART_PENDULUM, SPRING_ROD
 
 HINTS = {rule.mistake: rule.hint for rule in RULES}
@@ -82,9 +84,28 @@ def test_a_bad_declared_system_is_located_under_system(client):
     assert response.json()["loc"] == ["body", "system", "lagrangian"] and response.json()["part"] == "q"
 
 
-def test_code_like_answers_are_refused_before_any_job_and_run_nothing(client, monkeypatch):
-    submitted = []
-    monkeypatch.setattr(checking.user_service, "run_job", lambda *a, **k: submitted.append(a))
+class SpyPool:
+    """Stands for the user systems' pool: records every job it is asked to run."""
+
+    def __init__(self):
+        self.submitted = []
+
+    async def run_job(self, *args):
+        self.submitted.append(args)
+        return b"{}"
+
+
+def test_code_like_answers_are_refused_before_any_job_and_run_nothing(client):
+    spy = SpyPool()
+    app.dependency_overrides[checking_service] = lambda: checking.Checking(users=spy)
+    try:
+        _send_code_like_answers(client)
+    finally:
+        app.dependency_overrides.clear()
+    assert spy.submitted == [] and not os.path.exists("/tmp/lagrange-api-check-ran")
+
+
+def _send_code_like_answers(client):
     for answer in (
         "__import__('os').system('touch /tmp/lagrange-api-check-ran')",
         "sin.__globals__",
@@ -95,7 +116,6 @@ def test_code_like_answers_are_refused_before_any_job_and_run_nothing(client, mo
         response = check(client, {"step": "kinetic", "answer": answer})
         assert response.status_code == 422 and response.json()["loc"] == ["body", "answer"], answer
         assert response.json()["part"] in answer
-    assert submitted == [] and not os.path.exists("/tmp/lagrange-api-check-ran")
 
 
 def test_unknown_scene_is_404_listing_the_known_ones(client):

@@ -7,9 +7,13 @@ import time
 import pytest
 import sympy as sp
 
-from app.service import user_systems
+from app.main import app
+from app.service import user_checks, user_systems
 from app.service.fairness import COOKIE
+from app.service.user_systems import UserSystems
+from app.settings import Settings
 from app.web import examples_user
+from app.web.deps import user_systems_service
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, REFUSED_REQUESTS, SPINNING_HOOP
 from tests.reference import numerically_equal, reference_accelerations
 
@@ -36,7 +40,7 @@ def test_systems_outside_the_chapter_match_lagranges_method(client, name):
     doc = derive(client, spec)
     names = symbols_of(doc)
     ours = [sp.sympify(doc["accelerations"][q]["sympy"], locals=names) for q in doc["coordinates"]]
-    system = user_systems.to_system(_spec(spec))
+    system = user_checks.to_system(_spec(spec))
     theirs, _ = reference_accelerations(system)
     symbols = sorted(set(names.values()), key=str)
     for a, b in zip(ours, theirs, strict=True):
@@ -74,7 +78,7 @@ def test_lagrangian_form_and_same_contract_as_scenes(client):
     assert doc["steps"] and all(set(s) == {"title", "latex", "sympy", "explanation"} for s in doc["steps"])
     assert r"\dot{\theta}" in doc["lagrangian"]["latex"]
     # the bead's angular acceleration, checked against LagrangesMethod
-    theirs, _ = reference_accelerations(user_systems.to_system(_spec(SPINNING_HOOP)))
+    theirs, _ = reference_accelerations(user_checks.to_system(_spec(SPINNING_HOOP)))
     ours = sp.sympify(doc["accelerations"]["theta"]["sympy"], locals=names)
     assert numerically_equal(ours, theirs[0], sorted(names.values(), key=str))
 
@@ -109,14 +113,14 @@ def test_documented_refusals_are_what_the_api_answers(client, name):
     response = client.post("/api/derive", json=REFUSED_REQUESTS[name]["value"])
     assert response.status_code == 422
     assert response.json() == examples_user.ERROR_EXAMPLES[422][name]["response"], (
-        "stale example: run python -m app.web.examples_user"
+        "stale example: run python scripts/record_examples.py"
     )
 
 
 def test_documented_derivation_is_what_the_api_answers(client):
     """The documented answer has the served keys and the same mathematics (step wording may evolve)."""
     served, documented = derive(client, FORCED_SPRING), examples_user.DERIVE_RESPONSE
-    stale = "stale example: run python -m app.web.examples_user"
+    stale = "stale example: run python scripts/record_examples.py"
     assert {k: v for k, v in served.items() if k != "steps"} == {k: v for k, v in documented.items() if k != "steps"}, (
         stale
     )
@@ -135,14 +139,22 @@ def test_other_documented_errors_are_what_the_api_answers(client):
     assert (big.status_code, big.json()) == (413, documented[413]["too-large"]["response"])
 
 
+@pytest.mark.slow  # derives the double pendulum afresh in the worker pool
 def test_a_job_over_the_time_limit_is_stopped_and_the_pool_recovers(client):
-    answer = examples_user.answer_with_time_limit(client, examples_user.TIMEOUT_SECONDS)
+    # a service of its own with the recorded example's short limit (and so no cached answer)
+    short = UserSystems(config=Settings(derive_seconds=examples_user.TIMEOUT_SECONDS))
+    app.dependency_overrides[user_systems_service] = lambda: short
+    try:
+        answer = client.post("/api/derive", json=DOUBLE_PENDULUM).json()
+    finally:
+        app.dependency_overrides.clear()
     assert answer == examples_user.ERROR_EXAMPLES[422]["timeout"]["response"]
     # the pool replaced the killed worker: the next job runs normally
     assert client.get("/healthz").json() == {"status": "ok"}
     assert derive(client, SPINNING_HOOP)["coordinates"] == ["theta"]
 
 
+@pytest.mark.slow  # derives the double pendulum afresh in the worker pool
 def test_one_job_at_a_time_per_session(client):
     """A second request while the first still runs gets 429 with Retry-After; the first completes."""
     service = user_systems.service
@@ -176,6 +188,7 @@ def test_one_job_at_a_time_per_session(client):
         service.derivations = saved
 
 
+@pytest.mark.slow  # derives the double pendulum afresh in the worker pool
 def test_the_same_system_asked_twice_at_once_is_derived_once(client):
     """A classroom opening one link: a second session asking for a system being derived waits for that job."""
     service = user_systems.service

@@ -4,7 +4,7 @@ from urllib.parse import urlencode
 
 import pytest
 
-from app.web.playground import form_of, query_of
+from app.web.playground_form import form_of, query_of
 from tests.engine.test_energetics import KAPITZA
 
 

@@ -8,7 +8,8 @@ import pytest
 from starlette.datastructures import QueryParams
 
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
-from app.web.playground import MAX_QUERY, form_of, query_of, read_form, spec_of
+from app.web.playground import MAX_QUERY
+from app.web.playground_form import form_of, query_of, read_form, spec_of
 from app.web.schemas_user import SystemSpec
 
 

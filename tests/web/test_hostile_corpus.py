@@ -21,11 +21,13 @@ from urllib.parse import quote, urlencode
 
 import pytest
 
-from app.service import user_systems
+from app.settings import settings
 from app.web.limits import MAX_BODY_BYTES, MAX_JSON_DEPTH
 from tests.browser.conftest import live_server  # noqa: F401  (the session's uvicorn server)
 
-HANG_GUARD = user_systems.DERIVE_SECONDS  # the worker's hard limit: an answer after it would be a hang
+pytestmark = pytest.mark.slow  # every hostile probe against a live server
+
+HANG_GUARD = settings().derive_seconds  # the worker's hard limit: an answer after it would be a hang
 PARAMETERS = ["a", "b", "c", "d", "k"]
 
 

@@ -19,10 +19,11 @@ from sympy.printing.pycode import SymPyPrinter
 
 from app.engine.derive import Derivation
 from app.engine.parse import ExpressionError, check_name, parse_expression
+from app.errors import Refused
 from app.scenes.types import Event
 
 
-class ExportError(ValueError):
+class ExportError(Refused):
     """A derivation that cannot be exported safely (an unexpected name or function)."""
 
 

@@ -7,6 +7,8 @@ import pytest
 
 from tests.service.export.common import CASES, exported
 
+pytestmark = pytest.mark.slow  # documents compiled by pdflatex
+
 
 def compile_pdf(source: str, tmp_path) -> bytes:
     assert shutil.which("pdflatex"), "pdflatex is missing: scripts/test.sh installs texlive-latex-base"

@@ -5,6 +5,8 @@ import pytest
 
 from tests.service.export.common import CASES, HOSTILE_TEXT, exported
 
+pytestmark = pytest.mark.slow  # notebooks executed by a kernel
+
 STEPS = ("## Symbols", "## Lagrangian", "## Euler–Lagrange equations", "## Accelerations", "## Generalized momenta")
 
 

@@ -1,0 +1,206 @@
+"""Checks of a system a user types in: names, sizes and expressions, in pure Python (no SymPy).
+
+A request arrives as plain data (the web layer validated its shape):
+
+    {"coordinates": [...], "parameters": [{"name", "value", "unit", "min", "max"}, ...],
+     "lagrangian": ... | "kinetic": ..., "potential": ... | "particles": [...], "potential": ...,
+     "forces": {coordinate: Q}, "nonnegative": [...]}
+
+``check_system`` refuses bad names and bad expressions, each refusal carrying
+the location of the offending field (``["particles", 0, "position", 1]``) and
+the character span of the offending part.  It runs in the web process before
+any job is queued and again in the worker before SymPy sees the text.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+from collections.abc import Iterator
+from typing import Any
+
+from app.engine.errors import DerivationError, excerpt
+from app.engine.parse import MAX_TERMS, ExpressionError, Size, check_name, expression_size
+from app.errors import Refused, TooMuchWork
+from app.scenes.types import Parameter, Particle, System
+
+MAX_COORDINATES = 6
+MAX_PARAMETERS = 24
+MAX_PARTICLES = 8
+
+
+class InvalidSystem(DerivationError):
+    """A user system refused; ``loc`` is the path of the offending field in the request (always set)."""
+
+    loc: tuple
+
+    def __init__(self, message: str, loc: tuple = (), part: str = "", start: int | None = None, end: int | None = None):
+        Refused.__init__(self, message, part, loc, start, end)
+
+
+class TooCostly(InvalidSystem, TooMuchWork):
+    """A user system whose derivation or simulation would take more than its budget."""
+
+
+def _where(loc: tuple) -> str:
+    head, *rest = loc
+    text = str(head)
+    for x in rest:
+        text += f"[{x}]" if isinstance(x, int) else f".{excerpt(x)}"
+    return text
+
+
+def located(exc: DerivationError, loc: tuple, message: str | None = None) -> InvalidSystem:
+    """A refusal of the engine or the numerics, located at ``loc`` in the request (too much work stays so)."""
+    kind = TooCostly if isinstance(exc, TooMuchWork) else InvalidSystem
+    return kind(str(exc) if message is None else message, loc, exc.part)
+
+
+def _refuse(loc: tuple, exc: ExpressionError) -> InvalidSystem:
+    return InvalidSystem(f"{_where(loc)}: {exc}", loc, exc.part, getattr(exc, "start", None), getattr(exc, "end", None))
+
+
+def form_of(spec: dict[str, Any]) -> str:
+    """Which of the three forms the system is given in (the field a derivation error points at)."""
+    if spec.get("particles"):
+        return "particles"
+    return "lagrangian" if spec.get("lagrangian") is not None else "kinetic"
+
+
+def expressions(spec: dict[str, Any]) -> Iterator[tuple[tuple, str, bool]]:
+    """Every expression of a system: (location, text, whether velocities may appear)."""
+    for i, particle in enumerate(spec.get("particles") or ()):
+        yield ("particles", i, "mass"), particle["mass"], False
+        for j, component in enumerate(particle["position"]):
+            yield ("particles", i, "position", j), component, False
+    for key, velocities in (("lagrangian", True), ("kinetic", True), ("potential", False)):
+        if spec.get(key) is not None:
+            yield (key,), spec[key], velocities
+    for name, text in (spec.get("forces") or {}).items():
+        yield ("forces", name), text, True
+
+
+def _names(spec: dict[str, Any]) -> tuple[list[str], list[str]]:
+    coordinates = list(spec.get("coordinates") or ())
+    parameters = [p["name"] for p in spec.get("parameters") or ()]
+    return coordinates, parameters
+
+
+def check_system(spec: dict[str, Any]) -> None:
+    """Refuse a system whose names or expressions are not allowed (pure Python, no SymPy)."""
+    coordinates, parameters = _names(spec)
+    if not 1 <= len(coordinates) <= MAX_COORDINATES:
+        raise InvalidSystem(f"give between 1 and {MAX_COORDINATES} coordinates", ("coordinates",))
+    if len(parameters) > MAX_PARAMETERS:
+        raise InvalidSystem(f"at most {MAX_PARAMETERS} parameters are allowed", ("parameters",))
+    if len(spec.get("particles") or ()) > MAX_PARTICLES:
+        raise InvalidSystem(f"at most {MAX_PARTICLES} particles are allowed", ("particles",))
+    seen: set[str] = set()
+    named: list[tuple[tuple, str, str]] = [(("coordinates", i), n, "coordinate") for i, n in enumerate(coordinates)]
+    named += [(("parameters", i, "name"), n, "parameter") for i, n in enumerate(parameters)]
+    for loc, name, what in named:
+        try:
+            check_name(name, what)
+        except ExpressionError as exc:
+            raise _refuse(loc, exc) from None
+        if name in seen:
+            raise InvalidSystem(f"{_where(loc)}: the name {name!r} is declared twice", loc, name)
+        seen.add(name)
+    for i, p in enumerate(spec.get("parameters") or ()):
+        low, high, value = p.get("min"), p.get("max"), p.get("value", 1.0)
+        if low is not None and high is not None and low > high:
+            loc = ("parameters", i, "min")
+            raise InvalidSystem(f"{_where(loc)}: min {low:g} is larger than max {high:g}", loc)
+        if (low is not None and value < low) or (high is not None and value > high):
+            loc = ("parameters", i, "value")
+            span = f"{'-inf' if low is None else f'{low:g}'} to {'inf' if high is None else f'{high:g}'}"
+            raise InvalidSystem(f"{_where(loc)}: {value:g} is outside the allowed range, {span}", loc)
+
+    forms = [bool(spec.get("particles")), spec.get("kinetic") is not None, spec.get("lagrangian") is not None]
+    if sum(forms) != 1:
+        raise InvalidSystem(
+            "give exactly one of: particles (with a potential), kinetic and potential, or lagrangian", ()
+        )
+    if spec.get("lagrangian") is not None and spec.get("potential") is not None:
+        raise InvalidSystem("potential: a Lagrangian already contains the potential; give L alone", ("potential",))
+    if spec.get("lagrangian") is None and spec.get("potential") is None:
+        raise InvalidSystem(
+            "potential: a potential U is needed with particles or with T (write 0 if none)", ("potential",)
+        )
+    for name in spec.get("forces") or {}:
+        if name not in coordinates:
+            raise InvalidSystem(f"forces: {name[:40]!r} is not a coordinate", ("forces", name), name[:40])
+    for i, name in enumerate(spec.get("nonnegative") or ()):
+        if name not in coordinates:
+            raise InvalidSystem(f"nonnegative[{i}]: {name[:40]!r} is not a coordinate", ("nonnegative", i), name[:40])
+
+    base = set(coordinates) | set(parameters) | {"t"}
+    with_velocities = base | {f"{q}_dot" for q in coordinates}
+    sizes = {}
+    for loc, text, velocities in expressions(spec):
+        try:
+            sizes[loc] = expression_size(text, with_velocities if velocities else base)
+        except ExpressionError as exc:
+            raise _refuse(loc, exc) from None
+    _check_kinetic_size(spec, sizes)
+
+
+def _check_kinetic_size(spec: dict[str, Any], sizes: dict[tuple, Size]) -> None:
+    """Refuse particles whose kinetic energy would expand past MAX_TERMS terms (before SymPy builds it).
+
+    A position of n terms of degree d has a velocity of at most n*d terms (each
+    monomial differentiates into one term per factor); its square has at most
+    v(v + 1)/2 terms, times the terms of the mass; T sums those over particles and axes.
+    """
+    total = 0
+    for i, particle in enumerate(spec.get("particles") or ()):
+        mass = sizes[("particles", i, "mass")].terms
+        for j in range(len(particle["position"])):
+            size = sizes[("particles", i, "position", j)]
+            velocity = size.terms * max(1, math.ceil(size.degree))
+            total += mass * velocity * (velocity + 1) // 2
+        if total > MAX_TERMS:
+            loc = ("particles", i, "position")
+            raise InvalidSystem(
+                f"{_where(loc)}: the kinetic energy of these particles would expand into more than {MAX_TERMS} "
+                "terms; use fewer or simpler positions (or give T and U directly)",
+                loc,
+            )
+
+
+def to_system(spec: dict[str, Any]) -> System:
+    """The engine's declaration of a checked request."""
+    particles = []
+    for p in spec.get("particles") or ():
+        position = tuple(p["position"]) + ("0",) * (3 - len(p["position"]))
+        particles.append(Particle(p["mass"], position, p.get("label") or ""))
+    return System(
+        coordinates=tuple(spec["coordinates"]),
+        parameters=tuple(
+            Parameter(p["name"], float(p.get("value", 1.0)), p.get("unit") or "", p.get("min"), p.get("max"))
+            for p in spec.get("parameters") or ()
+        ),
+        particles=tuple(particles),
+        kinetic=spec.get("kinetic"),
+        potential=spec.get("potential"),
+        lagrangian=spec.get("lagrangian"),
+        forces=dict(spec.get("forces") or {}),
+        nonnegative=tuple(spec.get("nonnegative") or ()),
+    )
+
+
+def simulation_loc(spec: dict[str, Any], part: str) -> tuple:
+    """Where in a simulate request the numerics' complaint points ("parameters.k" is that parameter's value)."""
+    head, _, name = part.partition(".")
+    if head == "parameters":
+        names = [p["name"] for p in spec.get("parameters") or ()]
+        return ("parameters", names.index(name), "value") if name in names else ("parameters",)
+    if head == "initial":
+        return ("initial", name) if name else ("initial",)
+    return (head,) if head else ()
+
+
+def spec_key(spec: Any, *extra: Any) -> str:
+    text = json.dumps([spec, *extra], sort_keys=True, separators=(",", ":"), default=str)
+    return hashlib.sha256(text.encode()).hexdigest()

@@ -1,0 +1,199 @@
+"""The worker pool's jobs on a user system: build it in SymPy, derive, simulate, export.
+
+Each job checks the request again (``user_checks.check_system``), builds every
+expression with the allowlist parser, derives the system with the engine under
+one time budget and returns the JSON document as bytes.  A failure on user
+input comes back as a located refusal, never as a server error.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from typing import Any
+
+from cachetools import LRUCache
+
+from app.engine.budget import BudgetExceeded, time_limit
+from app.engine.contract import derivation_json
+from app.engine.derive import Derivation, derive
+from app.engine.errors import DerivationError
+from app.engine.parse import ExpressionError, parse_expression
+from app.engine.symbols import SymbolTable
+from app.errors import OverCapacity
+from app.scenes.types import System
+from app.service.encoding import dumps
+from app.service.user_checks import (
+    InvalidSystem,
+    TooCostly,
+    _names,
+    _refuse,
+    check_system,
+    expressions,
+    form_of,
+    located,
+    simulation_loc,
+    spec_key,
+    to_system,
+)
+from app.settings import settings
+
+log = logging.getLogger(__name__)
+
+
+def engine_seconds() -> float:
+    """The engine's own budget for one derivation, inside the worker's hard limit: over it, a refusal naming it."""
+    return settings().derive_seconds * 2 / 3
+
+
+def build_system(spec: dict[str, Any]) -> System:
+    """Check a request and build each expression in SymPy (gate 3), locating any refusal."""
+    check_system(spec)
+    coordinates, parameters = _names(spec)
+    namespace = SymbolTable(tuple(coordinates), tuple(parameters)).namespace()
+    positional = {k: v for k, v in namespace.items() if not k.endswith("_dot")}
+    for loc, text, velocities in expressions(spec):
+        try:
+            parse_expression(text, namespace if velocities else positional)
+        except ExpressionError as exc:
+            raise _refuse(loc, exc) from None
+    return to_system(spec)
+
+
+@contextmanager
+def engine_budget(spec: dict[str, Any]) -> Iterator[None]:
+    """One time budget for the engine's work on a user system, below the worker's hard limit.
+
+    Every expand, substitution, solve and display step inside shares it (the
+    engine's own smaller budgets nest within it); running out is a refusal that
+    names the limit, not a killed worker.
+    """
+    seconds = engine_seconds()
+    try:
+        with time_limit(seconds):
+            yield
+    except BudgetExceeded:
+        where = form_of(spec)
+        raise TooCostly(
+            f"{where}: deriving this system takes longer than the {seconds:g} s allowed; "
+            "write it with fewer terms, lower powers or fewer nested functions",
+            (where,),
+        ) from None
+
+
+# a small cache per worker: simulating after deriving is common
+_derivations: LRUCache[str, Derivation] = LRUCache(maxsize=8)
+
+
+def derive_checked(spec: dict[str, Any]) -> Derivation:
+    """Derive a checked system, once per worker."""
+    key = spec_key(spec)
+    found = _derivations.get(key)
+    if found is not None:
+        return found
+    where = form_of(spec)
+    try:
+        with engine_budget(spec):
+            system = build_system(spec)
+            d = derive(system)
+    except DerivationError as exc:  # a singular mass matrix and the like: the form's field is at fault
+        if isinstance(exc, InvalidSystem):
+            raise
+        raise located(exc, (where,), f"{where}: {exc}") from None
+    _derivations[key] = d
+    return d
+
+
+def guarded(job: Callable[[], Any]) -> bytes:
+    """Run a job; an engine failure on user input is a refusal, never a server error."""
+    try:
+        return dumps(job())
+    except (InvalidSystem, OverCapacity, MemoryError, RecursionError):
+        raise
+    except DerivationError as exc:
+        raise located(exc, ()) from None
+    except Exception:  # a SymPy or numerics failure on an odd but allowed input
+        log.exception("user system failed")
+        # the details are for the log; the student gets a sentence without the engine's internal names
+        raise InvalidSystem(
+            "the engine could not handle this system (a limit of the engine, not a mistake in what you wrote); "
+            "try writing it another way, for example without Abs or with simpler expressions"
+        ) from None
+
+
+def derive_job(spec: dict[str, Any]) -> bytes:
+    """Worker job: the derivation JSON of a user system (as for a scene)."""
+
+    def run() -> dict[str, Any]:
+        with engine_budget(spec):
+            return derivation_json(derive_checked(spec))
+
+    return guarded(run)
+
+
+def simulate_job(spec: dict[str, Any], request: Any) -> bytes:
+    """Worker job: the simulation JSON of a user system (as for a scene)."""
+    from app.numerics.errors import SimulationError
+    from app.service.simulation import simulate_derivation
+
+    def run() -> dict[str, Any]:
+        d = derive_checked(spec)
+        try:
+            return simulate_derivation(d, request)
+        except SimulationError as exc:
+            raise located(exc, simulation_loc(spec, exc.part)) from None
+
+    return guarded(run)
+
+
+def export_job(
+    spec: dict[str, Any], fmt: str, initial: dict[str, float], t_end: float | None, document: bytes
+) -> bytes:
+    """Worker job: a user system as a notebook, script or LaTeX document (JSON-wrapped).
+
+    ``document`` is the system's derivation JSON (from ``derive_job``), so only printing is left to do."""
+    from app.numerics.errors import SimulationError
+    from app.service.export.code import ExportError
+    from app.service.exporting import system_export
+
+    def run() -> dict[str, str]:
+        d = derive_checked(spec)
+        try:
+            return system_export(d, json.loads(document), fmt, initial, t_end)
+        except SimulationError as exc:
+            raise located(exc, simulation_loc(spec, exc.part)) from None
+        except ExportError as exc:
+            raise InvalidSystem(f"this system cannot be exported: {exc}") from None
+
+    return guarded(run)
+
+
+def poincare_job(spec: dict[str, Any], options: dict[str, Any]) -> bytes:
+    """Worker job: the Poincaré section of a user system (app.service.poincare)."""
+    from app.numerics.errors import SimulationError
+    from app.service.poincare import section_of_derivation
+
+    def run() -> dict[str, Any]:
+        d = derive_checked(spec)
+        try:
+            # parameter values are the declared ones (the derivation's defaults)
+            return section_of_derivation(d, **options)
+        except SimulationError as exc:
+            raise located(exc, simulation_loc(spec, exc.part)) from None
+
+    return guarded(run)
+
+
+def modes_job(spec: dict[str, Any], normal_modes: list[dict[str, Any]]) -> bytes:
+    """Worker job: predicted against measured normal-mode frequencies of a user system (app.service.modes).
+
+    ``normal_modes`` is the derivation document's block (the parent has the document cached).
+    """
+    from app.service.modes import measure
+
+    def run() -> list[dict[str, Any]]:
+        return measure(derive_checked(spec), {"normal_modes": normal_modes})
+
+    return guarded(run)

@@ -1,0 +1,60 @@
+"""What routes are given through ``Depends``: the services and who is asking.
+
+Tests replace any of them with ``app.dependency_overrides[...]`` (a fake service,
+a gate with other limits) instead of patching module globals.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Annotated
+
+from fastapi import Depends, Request
+from fastapi.responses import Response
+
+from app.service import checking, user_systems
+from app.service.checking import Checking
+from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Fairness
+from app.service.user_systems import UserSystems
+
+
+def user_systems_service() -> UserSystems:
+    return user_systems.service
+
+
+def checking_service() -> Checking:
+    return checking.service
+
+
+UserSystemsDep = Annotated[UserSystems, Depends(user_systems_service)]
+CheckingDep = Annotated[Checking, Depends(checking_service)]
+
+
+def fairness_gate(users: UserSystemsDep) -> Fairness:
+    return users.gate
+
+
+@dataclass(frozen=True)
+class Client:
+    """Who is asking: a signed session (the cookie), else the network address; fair shares are per ``key``."""
+
+    key: str
+    address: str
+    minted: str | None = None  # a new session to hand back in a cookie
+
+    def keep(self, response: Response) -> Response:
+        """Set the new session's cookie on the answer (whatever the answer is)."""
+        if self.minted:
+            response.set_cookie(COOKIE, self.minted, max_age=COOKIE_MAX_AGE, httponly=True, samesite="lax")
+        return response
+
+
+def client_identity(request: Request, gate: Annotated[Fairness, Depends(fairness_gate)]) -> Client:
+    address = request.client.host if request.client else "unknown"
+    session = gate.verify(request.cookies.get(COOKIE))
+    if session:
+        return Client(f"session:{session}", address)
+    return Client(f"address:{address}", address, gate.mint(address))
+
+
+ClientDep = Annotated[Client, Depends(client_identity)]

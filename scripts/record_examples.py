@@ -1,0 +1,78 @@
+"""Record the user-system API's documented examples: run the API on them, write what it answers.
+
+Usage: python scripts/record_examples.py   (writes app/web/examples/user_api.json;
+tests/web/test_api_user.py fails while the file is stale).  It lives outside the
+app, so no app module imports the app it runs.
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+from fastapi.testclient import TestClient
+
+from app.main import app
+from app.service import user_systems
+from app.service.user_systems import UserSystems
+from app.settings import Settings
+from app.web.deps import user_systems_service
+from app.web.examples_user import (
+    DOUBLE_PENDULUM,
+    EXAMPLES_FILE,
+    FORCED_SPRING,
+    JSON,
+    REFUSED_REQUESTS,
+    SIMULATE_EXAMPLES,
+    SIMULATE_REFUSED,
+    SUMMARIES,
+    TIMEOUT_SECONDS,
+    UNREADABLE,
+)
+from app.web.limits import MAX_BODY_BYTES
+
+
+def record() -> dict[str, Any]:
+    """Run the API on the example requests and collect what it answers."""
+    errors: dict[str, dict[str, Any]] = {status: {} for status in SUMMARIES}
+    service = user_systems.service
+    with TestClient(app) as client:
+        derived = client.post("/api/derive", json=FORCED_SPRING).json()
+        simulated = client.post("/api/simulate", json=SIMULATE_EXAMPLES["forced-spring"]["value"]).json()
+        errors["422"]["simulate"] = client.post("/api/simulate", json=SIMULATE_REFUSED["value"]).json()
+        for name, example in REFUSED_REQUESTS.items():
+            errors["422"][name] = client.post("/api/derive", json=example["value"]).json()
+        errors["400"]["unreadable"] = client.post("/api/derive", content=UNREADABLE, headers=JSON).json()
+        errors["413"]["too-large"] = client.post(
+            "/api/derive", content=b" " * (MAX_BODY_BYTES + 1), headers=JSON
+        ).json()
+        errors["422"]["timeout"] = answer_with_time_limit(client, TIMEOUT_SECONDS)
+        client.cookies.clear()  # keyed on the address from here on
+        ticket = service.gate.admit("address:testclient", "testclient")
+        try:
+            errors["429"]["one-at-a-time"] = client.post("/api/derive", json=DOUBLE_PENDULUM).json()
+        finally:
+            ticket.release()
+        tickets = [service.gate.admit(f"filler{i}", f"filler{i}") for i in range(service.gate.capacity)]
+        try:
+            errors["503"]["busy"] = client.post("/api/derive", json=DOUBLE_PENDULUM).json()
+        finally:
+            for ticket in tickets:
+                ticket.release()
+    return {"derive": derived, "simulate": simulated, "errors": errors}
+
+
+def answer_with_time_limit(client: TestClient, seconds: float) -> dict[str, Any]:
+    """The answer to deriving the double pendulum under a short time limit (a service of its own: no cached result)."""
+    short = UserSystems(config=Settings(derive_seconds=seconds))
+    app.dependency_overrides[user_systems_service] = lambda: short
+    try:
+        return client.post("/api/derive", json=DOUBLE_PENDULUM).json()
+    finally:
+        app.dependency_overrides.pop(user_systems_service)
+
+
+if __name__ == "__main__":
+    EXAMPLES_FILE.parent.mkdir(exist_ok=True)
+    EXAMPLES_FILE.write_text(json.dumps(record(), indent=1, ensure_ascii=False) + "\n")
+    print(f"wrote {EXAMPLES_FILE}")

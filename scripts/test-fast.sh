@@ -1,0 +1,6 @@
+#!/usr/bin/env bash
+# The development loop: every test but the slow ones and the browser ones (CI runs them all
+# through scripts/test.sh).  Arguments go to pytest: scripts/test-fast.sh tests/engine -x
+set -euo pipefail
+cd "$(dirname "$0")/.."
+exec "${PYTHON:-.venv/bin/python}" -m pytest -m "not slow and not browser" "$@"
