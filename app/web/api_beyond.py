@@ -8,13 +8,13 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Request
+from fastapi import APIRouter, Body
 from fastapi.responses import Response
 
-from app.numerics.errors import SimulationError
-from app.service import modes, poincare, user_systems
-from app.web.api_simulate import BODY_ERRORS, ERRORS, _refused
-from app.web.api_user import _answer, _errors
+from app.service import modes, poincare
+from app.web.api_simulate import BODY_ERRORS, ERRORS
+from app.web.api_user import _errors, answer
+from app.web.deps import ClientDep, UserSystemsDep
 from app.web.responses import FastJSONResponse
 from app.web.schemas import SESSION_COOKIE
 from app.web.schemas_beyond import (
@@ -48,10 +48,8 @@ MODES_TEXT = (
     responses={200: {"model": PoincareResponse}, **ERRORS, **BODY_ERRORS},
 )
 def scene_poincare(scene_id: str, request: PoincareRequest) -> Any:
-    try:
-        return FastJSONResponse(poincare.cached_section_of_scene(scene_id, **poincare_options(request)))
-    except SimulationError as exc:
-        return _refused(exc)
+    # a refusal (SimulationError) or an unknown scene is answered by app/web/errors.py
+    return FastJSONResponse(poincare.cached_section_of_scene(scene_id, **poincare_options(request)))
 
 
 @router.get(
@@ -62,10 +60,7 @@ def scene_poincare(scene_id: str, request: PoincareRequest) -> Any:
     responses={404: ERRORS[404], 429: ERRORS[429]},
 )
 def scene_modes(scene_id: str) -> Any:
-    try:
-        return FastJSONResponse(modes.measure_scene(scene_id))
-    except SimulationError as exc:
-        return _refused(exc)
+    return FastJSONResponse(modes.measure_scene(scene_id))
 
 
 @router.post(
@@ -76,11 +71,13 @@ def scene_modes(scene_id: str) -> Any:
     openapi_extra={"parameters": [SESSION_COOKIE]},
     responses=_errors(400, 413, 422, 429, 503),
 )
-async def user_poincare(request: Request, body: Annotated[UserPoincareRequest, Body()]) -> Response:
+async def user_poincare(
+    client: ClientDep, users: UserSystemsDep, body: Annotated[UserPoincareRequest, Body()]
+) -> Response:
     spec = SystemSpec.model_validate(body.model_dump(include=set(SystemSpec.model_fields))).to_spec()
     options = poincare_options(body)
     options.pop("parameters", None)
-    return await _answer(request, lambda c, a: user_systems.service.poincare(spec, options, c, a))
+    return await answer(client, lambda key, address: users.poincare(spec, options, key, address))
 
 
 @router.post(
@@ -91,6 +88,6 @@ async def user_poincare(request: Request, body: Annotated[UserPoincareRequest, B
     openapi_extra={"parameters": [SESSION_COOKIE]},
     responses=_errors(400, 413, 422, 429, 503),
 )
-async def user_modes(request: Request, system: Annotated[SystemSpec, Body()]) -> Response:
+async def user_modes(client: ClientDep, users: UserSystemsDep, system: Annotated[SystemSpec, Body()]) -> Response:
     spec = system.to_spec()
-    return await _answer(request, lambda c, a: user_systems.service.modes(spec, c, a))
+    return await answer(client, lambda key, address: users.modes(spec, key, address))

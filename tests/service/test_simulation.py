@@ -197,7 +197,7 @@ def test_auto_choosing_radau_waits_for_the_python_loop_slot(monkeypatch):
     """The throttle looks at the planned method: auto resolving to Radau (a stiff start) is a Python step
     loop, so it is refused as busy while another scipy run holds the one slot, and runs once it is free."""
     from app.engine.derive import derive
-    from app.numerics.errors import Busy
+    from app.errors import OverCapacity
     from tests.numerics.extreme_cases import circular_radius
     from tests.numerics.systems import STIFF_SPRING
 
@@ -208,7 +208,7 @@ def test_auto_choosing_radau_waits_for_the_python_loop_slot(monkeypatch):
     monkeypatch.setattr(simulation, "ANSWER_WHILE_COMPILING", False)
     assert simulation._PYTHON_LOOP.acquire(timeout=1.0)  # another scipy run is in progress
     try:
-        with pytest.raises(Busy, match="Python step loop"):
+        with pytest.raises(OverCapacity, match="Python step loop"):
             simulation.simulate_derivation(d, quiet)
         # a compiled run (auto on a non-stiff start of the same system) does not wait for that slot
         excited = simulation.simulate_derivation(d, request(initial={"r": 1.001, "theta_dot": 1.0}, t_end=0.01))
