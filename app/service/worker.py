@@ -319,6 +319,22 @@ class WorkerPool:
                 self._pool = None
 
 
+def ending(future: Future) -> str:
+    """How a finished job ended, for fair shares: done, refused, timeout, memory, crashed, failed or cancelled."""
+    if future.cancelled():
+        return "cancelled"
+    error = future.exception()
+    if error is None:
+        return "done"
+    if isinstance(error, TimeoutError):
+        return "timeout"
+    if isinstance(error, (MemoryError, RecursionError)):
+        return "memory"
+    if isinstance(error, ProcessExpired):
+        return "crashed"
+    return "refused" if isinstance(error, REFUSALS) else "failed"
+
+
 _shared: WorkerPool | None = None
 _shared_lock = threading.Lock()
 

@@ -22,6 +22,7 @@ from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Busy
 from app.service.user_systems import InvalidSystem
 from app.service.worker import JobFailed
 from app.web.api_scenes import EXPORT_CONTENT, download
+from app.web.disconnect import ClientGone, unless_gone
 from app.web.examples_user import DERIVE_EXAMPLES, DERIVE_RESPONSE, ERROR_EXAMPLES, SIMULATE_EXAMPLES, SIMULATE_RESPONSE
 from app.web.limits import MAX_BODY_BYTES
 from app.web.schemas import SESSION_COOKIE, ErrorResponse
@@ -95,7 +96,9 @@ async def _answer(
     client = f"session:{session}" if session else f"address:{address}"
     response: Response
     try:
-        body = await work(client, address)
+        body = await unless_gone(request, work(client, address))  # a client that left gives up its queued job
+    except ClientGone:
+        return Response(status_code=499)  # nobody reads it: nginx's code for a client that closed the request
     except InvalidSystem as exc:
         response = JSONResponse(exc.as_json(), status_code=422)
     except Busy as exc:
