@@ -13,9 +13,9 @@ expensive job (a derivation or simulation of a user system):
    which a 503 with ``Retry-After`` says the server is busy;
 4. sessions are minted at most ``mint_per_minute`` per address;
 5. a client or an address whose jobs keep running out of time or memory backs
-   off: a 429 for 5 s after such a failure, doubling with each one in a row
-   (at most 5 minutes); an address backs off once ``per_address`` of its jobs
-   failed so in a row.
+   off: after two such failures in a row a client gets a 429 for 5 s, doubling
+   with each further one (at most 5 minutes); an address backs off once
+   ``per_address`` + 1 of its jobs failed so in a row.
 
 Admitted jobs wait for one of ``workers`` run slots in this queue, never in the
 pool's.  A free slot goes to the waiting job whose address, then whose session,
@@ -53,7 +53,8 @@ from app.settings import settings
 COOKIE = "lagrange_session"
 COOKIE_MAX_AGE = 30 * 24 * 3600
 HALF_LIFE = 120.0  # seconds over which a client's used worker time halves
-BACKOFF_SECONDS = 5.0  # after a job that ran out of time or memory; doubles with each one in a row
+BACKOFF_SECONDS = 5.0  # after the second job in a row out of time or memory; doubles with each further one
+CLIENT_STRIKES = 2  # failures in a row before a client backs off
 BACKOFF_MAX = 300.0
 STRIKES = ("timeout", "memory", "crashed")  # outcomes that count against a client
 
@@ -224,7 +225,10 @@ class Fairness:
         """Admit one job for ``client`` (a session id or ``address:...``) or raise Busy."""
         now = time.monotonic()
         with self._lock:
-            wait = max(self._backing_off(client, 1, now), self._backing_off(address, self.per_address, now))
+            wait = max(
+                self._backing_off(client, CLIENT_STRIKES, now),
+                self._backing_off(address, self.per_address + 1, now),
+            )
             if wait:
                 raise Busy(
                     "your recent jobs ran out of time or memory; wait before sending more "
@@ -350,8 +354,8 @@ class Fairness:
                 self._usage.add(ticket.client, elapsed, now)
                 self._usage.add(ticket.address, elapsed, now)
                 self._mean_seconds = 0.8 * self._mean_seconds + 0.2 * elapsed
-                self._strike(ticket.client, outcome, 1, now)
-                self._strike(ticket.address, outcome, self.per_address, now)
+                self._strike(ticket.client, outcome, CLIENT_STRIKES, now)
+                self._strike(ticket.address, outcome, self.per_address + 1, now)
             self._dispatch()
 
     @property
