@@ -45,5 +45,6 @@ for router in ROUTERS:
 
 
 @app.get("/healthz", tags=["service"], summary="Liveness and readiness probe")
-def health() -> dict[str, str]:
+async def health() -> dict[str, str]:
+    # on the event loop, doing nothing: never queued behind simulations in the thread pool
     return {"status": "ok"}

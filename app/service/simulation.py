@@ -13,7 +13,6 @@ documented JSON:
 from __future__ import annotations
 
 import math
-import os
 import threading
 import time
 from collections import OrderedDict
@@ -31,9 +30,10 @@ from app.numerics.simulate import simulate
 from app.numerics.system import NumericSystem, generated_sources, numeric_system
 from app.scenes import SCENES, Scene
 from app.service.cache import JsonCache, source_fingerprint
+from app.settings import container_cpus, settings
 
 DEFAULT_T_END = 10.0
-_SLOTS = threading.BoundedSemaphore(max(2, os.cpu_count() or 2))
+_SLOTS = threading.BoundedSemaphore(max(2, container_cpus()))
 # scipy's integrators loop in Python and hold the GIL for their whole run: one at a
 # time per process, so they cannot starve the compiled runs and pages served beside them.
 _PYTHON_LOOP = threading.BoundedSemaphore(1)
@@ -200,10 +200,11 @@ def simulate_derivation(
             "initial",
         )
     python_loop = method != "auto" and not METHODS[method].compiled
-    if python_loop and not _PYTHON_LOOP.acquire(timeout=limits.WALL_SECONDS):
+    wait = settings().scene_queue_seconds  # fail fast under a flood rather than hold a server thread
+    if python_loop and not _PYTHON_LOOP.acquire(timeout=wait):
         raise Busy(f"another {method} run is in progress here; try again in a few seconds, or use a compiled method")
     try:
-        if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
+        if not _SLOTS.acquire(timeout=wait):
             raise Busy("too many simulations are running at once; try again in a few seconds")
         try:
             outcome = simulate(

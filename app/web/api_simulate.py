@@ -35,7 +35,8 @@ BODY_ERRORS = {413: {"model": ErrorResponse, "description": f"The body is larger
 
 
 def _refused(exc: SimulationError) -> JSONResponse:
-    return JSONResponse({"detail": str(exc)[:600], "part": exc.part[:80]}, status_code=exc.status_code)
+    busy = {"Retry-After": "1"} if exc.status_code == 429 else None  # all slots taken: a run takes a second or two
+    return JSONResponse({"detail": str(exc)[:600], "part": exc.part[:80]}, status_code=exc.status_code, headers=busy)
 
 
 @router.post(
