@@ -37,6 +37,7 @@ class Settings(BaseSettings):
     scene_queue_seconds: float = Field(default=0.5, ge=0, description="longest wait for a scene simulation slot (then 429)")
     user_cache_mb: int = Field(default=64, gt=0, description="disk for user systems' generated code and compiled cache")
     header_seconds: float = Field(default=10.0, gt=0, description="time a client has to send a request's headers")
+    connections: int = Field(default=400, gt=0, description="open connections and requests per web process; then 503")
     body_seconds: float = Field(default=10.0, gt=0, description="time a client has to send a request's body")
     derive_seconds: float = Field(default=30.0, gt=0, description="hard time limit of a user system's derivation")
     simulate_seconds: float = Field(default=30.0, gt=0, description="hard time limit of a user system's simulation")

@@ -2,6 +2,8 @@
 
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parents[2]
 
 
@@ -24,4 +26,10 @@ def test_kubernetes_manifest_has_probes_service_and_autoscaler():
 
 def test_serve_script_takes_port_and_workers_from_the_environment():
     text = (ROOT / "scripts" / "serve.sh").read_text()
-    assert "${PORT:-8000}" in text and "WORKERS" in text and "--timeout-keep-alive" in text
+    assert "${PORT:-8000}" in text and "WORKERS" in text and "LAGRANGE_WEB_PROCESSES" in text
+
+
+@pytest.mark.parametrize("script", ["serve.sh", "run.sh"])
+def test_the_scripts_bound_slow_clients_with_the_settings_options(script):
+    # keep-alive, connection cap and header deadline: app/web/slow_clients.py, one home for both scripts
+    assert "-m app.web.slow_clients" in (ROOT / "scripts" / script).read_text()
