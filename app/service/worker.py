@@ -30,6 +30,8 @@ The pool also heals itself (issue 18):
 * workers start from ``app.service.worker_entry``, never by re-running the
   server's ``__main__`` (a launcher script or a script fed on stdin);
 * a broken pool is stopped and joined before the next one starts;
+* users' generated code and compiled functions go to a folder bounded in size
+  (app/service/disk.py), pruned by the workers after their jobs;
 * a job's unexpected failure reaches the user as one plain sentence, never
   with a server path or an internal name (the details go to the log).
 
@@ -59,6 +61,8 @@ import pebble.pool.process
 from pebble import ProcessExpired, ProcessPool
 
 from app.engine.errors import DerivationError
+from app.numerics.paths import use_user_folder
+from app.service import disk
 from app.settings import settings
 
 log = logging.getLogger(__name__)
@@ -170,6 +174,7 @@ def initialize_worker(memory_mb: int, retire_mb: int = 0, owner: int = 0) -> Non
     signal.signal(signal.SIGTERM, _kill_group)
     _die_with_parent()
     _retire_bytes = retire_mb * 2**20
+    use_user_folder()  # users' generated code goes to the bounded folder (app/service/disk.py)
     # this pebble internal is pinned in pyproject.toml (pebble < 5.3); tests/web/test_api_user_worker.py covers it
     pebble.pool.process.worker_get_next_task = _tasks_until_retired(pebble.pool.process.worker_get_next_task)
 
@@ -187,6 +192,10 @@ def execute(function: Callable[..., Any], *args: Any) -> Any:
     finally:
         if _retire_bytes and _resident() > _retire_bytes:
             _retiring = True
+        try:
+            disk.prune_now_and_then()
+        except OSError:
+            log.exception("could not prune the cache of users' systems")
 
 
 class _EntryPopen(popen_forkserver.Popen):

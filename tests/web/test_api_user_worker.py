@@ -56,6 +56,12 @@ def keep(megabytes):
     return os.getpid()
 
 
+def generated_folder():
+    from app.numerics.paths import generated_dir
+
+    return generated_dir().name
+
+
 def signal_then_sleep(path, seconds):
     """Write this worker's pid where the test waits for it, then sleep."""
     Path(path).write_text(str(os.getpid()))
@@ -197,6 +203,11 @@ def test_a_crashed_worker_is_reported_and_replaced(pool):
         pool.run(die, 3, timeout=60)
     assert caught.value.kind == "crashed" and "exit code 3" in str(caught.value)
     assert pool.run(sleep_then_return, 0, timeout=60) == 0
+
+
+def test_workers_write_users_generated_code_to_the_bounded_folder(pool):
+    assert pool.run(generated_folder, timeout=60) == "generated-user"  # pruned by app/service/disk.py
+    assert generated_folder() == "generated"  # the chapter's, in the web process, is not
 
 
 def test_a_refusal_comes_back_as_it_is(pool):
