@@ -31,7 +31,7 @@ class Settings(BaseSettings):
     worker_memory_mb: int = Field(default=0, ge=0, description="memory one job may add to its worker; 0: from the budget")
     web_processes: int = Field(default=0, ge=0, description="uvicorn processes (scripts/serve.sh sets it); 0: from CPUs")
     memory_budget_mb: int = Field(default=0, ge=0, description="memory for the whole server; 0: 90 % of the container's")
-    web_process_mb: int = Field(default=300, gt=0, description="resident memory allowed for one web process")
+    web_process_mb: int = Field(default=350, gt=0, description="resident memory allowed for one web process")
     worker_base_mb: int = Field(default=250, gt=0, description="resident memory of an idle worker (engine and numerics loaded)")
     queue_seconds: float = Field(default=10.0, gt=0, description="longest wait for a worker before a 503 with Retry-After")
     scene_queue_seconds: float = Field(default=0.5, ge=0, description="longest wait for a scene simulation slot (then 429)")
@@ -45,22 +45,30 @@ class Settings(BaseSettings):
     session_secret: str | None = Field(default=None, description="key that signs session cookies; else a file in the cache")
     warm: bool = Field(default=True, description="compile kernels and fill caches in the background at start-up")
 
-    # The memory budget (README "Capacity").  With P web processes, W pool workers in each and a
-    # job cap J, the worst case the server can reach is
-    #     P * (web_process_mb + W * (worker_base_mb + J))  <=  budget,
-    # so J defaults to the largest value that fits (at most 1024 MB), and a configured J or W
-    # that does not fit is lowered until it does.  A worker that ends a job above
-    # worker_base_mb + J / 2 resident retires (app/service/worker.py).
+    # The memory budget (README "Capacity").  With P web processes, each with a forkserver and W
+    # pool workers, and a job cap J, the most resident memory the server can reach is
+    #     P * (web_process_mb + worker_base_mb + W * (worker_base_mb + J))  <=  budget,
+    # so J defaults to the largest value that fits (at most 1024 MB), and a W that leaves a job
+    # less than 128 MB is lowered until it does not (a configured J that does not fit, too).  A worker that ends a job above
+    # worker_base_mb + J / 2 resident retires (app/service/worker.py).  P defaults to one per
+    # CPU (at most 2), fewer if the budget cannot give each a worker with a 128 MB job.
     @property
     def web_process_count(self) -> int:
-        return self.web_processes or min(2, container_cpus())
+        if self.web_processes:
+            return self.web_processes
+        wanted = min(2, container_cpus())
+        while wanted > 1 and self._per_worker_mb(1, wanted) < MIN_JOB_MB:  # a small container: fewer processes
+            wanted -= 1
+        return wanted
 
     @property
     def budget_mb(self) -> int:
         return self.memory_budget_mb or int(0.9 * container_memory_mb())
 
-    def _per_worker_mb(self, workers: int) -> int:
-        per_process = self.budget_mb // self.web_process_count - self.web_process_mb
+    def _per_worker_mb(self, workers: int, processes: int | None = None) -> int:
+        """J for W = ``workers`` and P = ``processes`` (or the process count): the budget's inequality solved."""
+        processes = processes or self.web_process_count
+        per_process = self.budget_mb // processes - self.web_process_mb - self.worker_base_mb
         return per_process // workers - self.worker_base_mb
 
     @property
@@ -76,6 +84,12 @@ class Settings(BaseSettings):
         fits = self._per_worker_mb(self.worker_count)
         wanted = self.worker_memory_mb or MAX_JOB_MB
         return max(MIN_JOB_MB, min(wanted, fits))
+
+    @property
+    def worst_case_mb(self) -> int:
+        """The left side of the budget's inequality, for these settings."""
+        workers = self.worker_count * (self.worker_base_mb + self.job_memory_mb)
+        return self.web_process_count * (self.web_process_mb + self.worker_base_mb + workers)
 
     @property
     def retire_rss_mb(self) -> int:
