@@ -28,13 +28,27 @@ class Settings(BaseSettings):
 
     cache_dir: Path = Field(default=ROOT / ".cache", description="compiled kernels, generated code, cached derivations")
     workers: int = Field(default=0, ge=0, description="worker processes per web process; 0: from the container's CPUs")
-    worker_memory_mb: int = Field(default=0, ge=0, description="memory one job may add to its worker; 0: from the budget")
-    web_processes: int = Field(default=0, ge=0, description="uvicorn processes (scripts/serve.sh sets it); 0: from CPUs")
-    memory_budget_mb: int = Field(default=0, ge=0, description="memory for the whole server; 0: 90 % of the container's")
+    worker_memory_mb: int = Field(
+        default=0, ge=0, description="memory one job may add to its worker; 0: from the budget"
+    )
+    web_processes: int = Field(
+        default=0, ge=0, description="uvicorn processes (scripts/serve.sh sets it); 0: from CPUs"
+    )
+    memory_budget_mb: int = Field(
+        default=0, ge=0, description="memory for the whole server; 0: 90 % of the container's"
+    )
     web_process_mb: int = Field(default=350, gt=0, description="resident memory allowed for one web process")
-    worker_base_mb: int = Field(default=250, gt=0, description="resident memory of an idle worker (engine and numerics loaded)")
-    queue_seconds: float = Field(default=10.0, gt=0, description="longest wait for a worker before a 503 with Retry-After")
-    scene_queue_seconds: float = Field(default=0.5, ge=0, description="longest wait for a scene simulation slot (then 429)")
+    worker_base_mb: int = Field(
+        default=250, gt=0, description="resident memory of an idle worker (engine and numerics loaded)"
+    )
+    queue_seconds: float = Field(
+        default=35.0,
+        gt=0,
+        description="longest wait for a worker before a 503 (over the job limit: one job ends meanwhile)",
+    )
+    scene_queue_seconds: float = Field(
+        default=0.5, ge=0, description="longest wait for a scene simulation slot (then 429)"
+    )
     user_cache_mb: int = Field(default=64, gt=0, description="disk for user systems' generated code and compiled cache")
     header_seconds: float = Field(default=10.0, gt=0, description="time a client has to send a request's headers")
     connections: int = Field(default=400, gt=0, description="open connections and requests per web process; then 503")
@@ -42,7 +56,9 @@ class Settings(BaseSettings):
     derive_seconds: float = Field(default=30.0, gt=0, description="hard time limit of a user system's derivation")
     simulate_seconds: float = Field(default=30.0, gt=0, description="hard time limit of a user system's simulation")
     check_seconds: float = Field(default=10.0, gt=0, description="hard time limit of checking a student's step")
-    session_secret: str | None = Field(default=None, description="key that signs session cookies; else a file in the cache")
+    session_secret: str | None = Field(
+        default=None, description="key that signs session cookies; else a file in the cache"
+    )
     warm: bool = Field(default=True, description="compile kernels and fill caches in the background at start-up")
 
     # The memory budget (README "Capacity").  With P web processes, each with a forkserver and W

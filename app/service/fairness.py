@@ -15,7 +15,9 @@ expensive job (a derivation or simulation of a user system):
 5. a client or an address whose jobs keep running out of time or memory backs
    off: after two such failures in a row a client gets a 429 for 5 s, doubling
    with each further one (at most 5 minutes); an address backs off once
-   ``per_address`` + 1 of its jobs failed so in a row.
+   ``per_address`` + 1 of its jobs failed so in a row, except for its sessions
+   that have had a job succeed lately (a classroom behind one address keeps
+   working while one of its machines floods).
 
 Admitted jobs wait for one of ``workers`` run slots in this queue, never in the
 pool's.  A free slot goes to the waiting job whose address, then whose session,
@@ -146,6 +148,7 @@ class Fairness:
         self._slots_taken = 0
         self._usage = _Usage()
         self._strikes: dict[str, tuple[int, float]] = {}  # key -> (failures in a row, backing off until)
+        self._proven: dict[str, float] = {}  # client -> when a job of theirs last succeeded
         self._key = _secret(secret or settings().session_secret)
         self._lock = threading.Lock()
         self._running: dict[str, Ticket] = {}
@@ -225,9 +228,10 @@ class Fairness:
         """Admit one job for ``client`` (a session id or ``address:...``) or raise Busy."""
         now = time.monotonic()
         with self._lock:
+            proven = now - self._proven.get(client, -math.inf) < HALF_LIFE * 10
             wait = max(
                 self._backing_off(client, CLIENT_STRIKES, now),
-                self._backing_off(address, self.per_address + 1, now),
+                0.0 if proven else self._backing_off(address, self.per_address + 1, now),
             )
             if wait:
                 raise Busy(
@@ -337,7 +341,7 @@ class Fairness:
             count += 1
             extra = max(0, count - threshold)
             self._strikes[key] = (count, now + min(BACKOFF_MAX, BACKOFF_SECONDS * 2**extra))
-        elif outcome == "done" and count:
+        elif outcome == "done":
             self._strikes.pop(key, None)
 
     def _release(self, ticket: Ticket, outcome: str) -> None:
@@ -355,6 +359,11 @@ class Fairness:
                 self._usage.add(ticket.address, elapsed, now)
                 self._mean_seconds = 0.8 * self._mean_seconds + 0.2 * elapsed
                 self._strike(ticket.client, outcome, CLIENT_STRIKES, now)
+                if outcome == "done":
+                    self._proven[ticket.client] = now
+                    if len(self._proven) > 20000:  # forget the oldest half
+                        for stale in sorted(self._proven, key=self._proven.get)[:10000]:
+                            del self._proven[stale]
                 self._strike(ticket.address, outcome, self.per_address + 1, now)
             self._dispatch()
 

@@ -33,7 +33,11 @@ from app.service.cache import JsonCache, source_fingerprint
 from app.settings import container_cpus, settings
 
 DEFAULT_T_END = 10.0
-_SLOTS = threading.BoundedSemaphore(max(2, container_cpus()))
+SLOTS = max(2, container_cpus())
+_SLOTS = threading.BoundedSemaphore(SLOTS)
+_HEAVY = threading.BoundedSemaphore(max(1, SLOTS // 2))
+HEAVY_SPAN = 10  # times the scene's t_end (or the default 10 s)
+HEAVY_RTOL = 1e-9
 # scipy's integrators loop in Python and hold the GIL for their whole run: one at a
 # time per process, so they cannot starve the compiled runs and pages served beside them.
 _PYTHON_LOOP = threading.BoundedSemaphore(1)
@@ -200,9 +204,17 @@ def simulate_derivation(
             "initial",
         )
     python_loop = method != "auto" and not METHODS[method].compiled
+    # a run far beyond the scene's span or near the tolerance floor is heavy: those take at most half
+    # of the slots, so a flood of them leaves the others to the light runs students send
+    heavy = t_end > HEAVY_SPAN * (scene.t_end if scene else DEFAULT_T_END) or rtol < HEAVY_RTOL
+    gate = _PYTHON_LOOP if python_loop else _HEAVY if heavy else None
     wait = settings().scene_queue_seconds  # fail fast under a flood rather than hold a server thread
-    if python_loop and not _PYTHON_LOOP.acquire(timeout=wait):
-        raise Busy(f"another {method} run is in progress here; try again in a few seconds, or use a compiled method")
+    if gate is not None and not gate.acquire(timeout=wait):
+        if python_loop:
+            raise Busy(
+                f"another {method} run is in progress here; try again in a few seconds, or use a compiled method"
+            )
+        raise Busy("too many long or high-accuracy simulations are running; try again shortly, or ask for less")
     try:
         if not _SLOTS.acquire(timeout=wait):
             raise Busy("too many simulations are running at once; try again in a few seconds")
@@ -213,8 +225,8 @@ def simulate_derivation(
         finally:
             _SLOTS.release()
     finally:
-        if python_loop:
-            _PYTHON_LOOP.release()
+        if gate is not None:
+            gate.release()
     return document(system, observables, outcome, k, rtol, getattr(request, "precision", None) or "full")
 
 
@@ -264,8 +276,11 @@ def document(
         "constraint_forces": forces,
         "stats": _finite(stats),
         # the same right-hand side as JavaScript: the page integrates a preview while an input moves
-        "preview": {"rhs": system.browser, "coordinates": list(system.coordinates),
-                    "parameters": list(system.parameter_names)},
+        "preview": {
+            "rhs": system.browser,
+            "coordinates": list(system.coordinates),
+            "parameters": list(system.parameter_names),
+        },
     }
 
 

@@ -206,6 +206,27 @@ def test_a_session_whose_jobs_keep_running_out_of_time_backs_off():
     assert run(main) == [0, 5, 10]
 
 
+def test_an_address_that_keeps_failing_backs_off_except_for_its_proven_sessions():
+    async def main():
+        room = Fairness(capacity=8, workers=1, per_address=2, queue_seconds=30)
+        ticket = room.admit("session:student", "school")
+        await room.turn(ticket)
+        ticket.release()  # the student's job succeeded
+        for i in range(3):  # three jobs in a row out of time, from three new sessions at the address
+            ticket = room.admit(f"session:bomb{i}", "school")
+            await room.turn(ticket)
+            ticket.release("timeout")
+        with pytest.raises(Busy) as caught:
+            room.admit("session:new", "school")
+        ticket = room.admit("session:student", "school")  # a session with a recent success still gets in
+        ticket.release()
+        room.admit("session:other", "elsewhere").release()  # another address is not affected
+        return caught.value
+
+    refused = run(main)
+    assert refused.status == 429 and refused.retry_after >= 5
+
+
 # ---- the service and the routes, with a pool that runs nothing (a spy) ------------------------------
 
 

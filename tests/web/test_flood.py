@@ -25,3 +25,20 @@ def test_healthz_answers_and_a_simulation_is_refused_while_every_slot_is_taken(c
         for _ in range(taken):
             simulation._SLOTS.release()
     assert client.post("/api/scenes/simple-pendulum/simulate", json={"initial": {}, "t_end": 1}).status_code == 200
+
+
+def test_heavy_simulations_take_at_most_half_of_the_slots(client):
+    taken = 0
+    while simulation._HEAVY.acquire(blocking=False):
+        taken += 1
+    assert taken == max(1, simulation.SLOTS // 2)
+    try:
+        heavy = client.post("/api/scenes/simple-pendulum/simulate", json={"initial": {}, "t_end": 1e4})
+        assert heavy.status_code == 429 and "long or high-accuracy" in heavy.json()["detail"]
+        tight = client.post("/api/scenes/simple-pendulum/simulate", json={"initial": {}, "rtol": 1e-11})
+        assert tight.status_code == 429
+        light = client.post("/api/scenes/simple-pendulum/simulate", json={"initial": {}})
+        assert light.status_code == 200  # the light runs students send still find a slot
+    finally:
+        for _ in range(taken):
+            simulation._HEAVY.release()
