@@ -3,6 +3,9 @@
 * ``Content-Security-Policy``: scripts, styles, fonts, images and requests
   from this origin only (the pages load KaTeX, plotly.js and swagger-ui from
   static/vendor and have no inline scripts; the JSON data blocks are not run).
+  ``'unsafe-eval'``: the live preview (static/js/preview.js) turns the
+  right-hand side the server printed from the engine's expressions into a
+  function with ``new Function``; no inline or injected script may run.
   Inline *styles* stay allowed: KaTeX writes ``style`` attributes and plotly.js
   adds style rules as it draws. ``frame-ancestors 'none'``: no other site may
   frame a page (clickjacking); ``X-Frame-Options: DENY`` says it to old browsers.
@@ -17,7 +20,7 @@ from starlette.types import ASGIApp, Message, Receive, Scope, Send
 CSP = "; ".join(
     (
         "default-src 'self'",
-        "script-src 'self'",
+        "script-src 'self' 'unsafe-eval'",
         "style-src 'self' 'unsafe-inline'",
         "img-src 'self' data: blob:",
         "font-src 'self' data:",
