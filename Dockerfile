@@ -1,4 +1,6 @@
 # Lagrange for classrooms: one `docker run -p 8000:8000 IMAGE`, fully offline at run time.
+# scripts/serve.sh bounds slow clients (header and body deadlines, a connection cap) and derives
+# the process counts and memory caps from the container's limits: `docker run --cpus 2 --memory 2g`.
 #
 # Stage "assets" fetches KaTeX and plotly.js from npm; the final image has no node.
 # The chapter's derivations and work-precision reports are computed at build time.

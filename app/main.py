@@ -9,10 +9,11 @@ from fastapi import FastAPI
 
 from app.service import simulation
 from app.settings import settings
-from app.web import api_beyond, api_scenes, errors, limits, pages
+from app.web import api_beyond, api_scenes, docs, errors, limits, pages
 from app.web.api_check import router as check_router
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
+from app.web.headers import SecurityHeaders
 from app.web.playground import router as playground_router
 from app.web.responses import ApiGzip
 from app.web.templating import static_app
@@ -33,17 +34,30 @@ app = FastAPI(
     summary="An interactive textbook of Lagrangian mechanics: derivations, simulations and their errors.",
     version="0.1.0",
     lifespan=lifespan,
+    docs_url=None,  # app/web/docs.py serves /docs from our own copy of swagger-ui
+    redoc_url=None,  # FastAPI's ReDoc page loads from a CDN
 )
 errors.install(app)
 app.add_middleware(ApiGzip)
 limits.install(app)  # every POST body capped before it is read
+app.add_middleware(SecurityHeaders)  # outermost: on every response, errors included
 
-ROUTERS = [api_scenes.router, api_beyond.router, pages.router, user_router, simulate_router, playground_router, check_router]
+ROUTERS = [
+    api_scenes.router,
+    api_beyond.router,
+    pages.router,
+    docs.router,
+    user_router,
+    simulate_router,
+    playground_router,
+    check_router,
+]
 app.mount("/static", static_app, name="static")
 for router in ROUTERS:
     app.include_router(router)
 
 
 @app.get("/healthz", tags=["service"], summary="Liveness and readiness probe")
-def health() -> dict[str, str]:
+async def health() -> dict[str, str]:
+    # on the event loop, doing nothing: never queued behind simulations in the thread pool
     return {"status": "ok"}

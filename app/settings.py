@@ -27,17 +27,119 @@ class Settings(BaseSettings):
     model_config = SettingsConfigDict(env_prefix="LAGRANGE_", frozen=True, extra="ignore")
 
     cache_dir: Path = Field(default=ROOT / ".cache", description="compiled kernels, generated code, cached derivations")
-    workers: int = Field(default=0, ge=0, description="worker processes for users' systems; 0: min(2, CPUs)")
-    worker_memory_mb: int = Field(default=1024, gt=0, description="address space one job may add to its worker")
+    workers: int = Field(default=0, ge=0, description="worker processes per web process; 0: from the container's CPUs")
+    worker_memory_mb: int = Field(
+        default=0, ge=0, description="memory one job may add to its worker; 0: from the budget"
+    )
+    web_processes: int = Field(
+        default=0, ge=0, description="uvicorn processes (scripts/serve.sh sets it); 0: from CPUs"
+    )
+    memory_budget_mb: int = Field(
+        default=0, ge=0, description="memory for the whole server; 0: 90 % of the container's"
+    )
+    web_process_mb: int = Field(default=350, gt=0, description="resident memory allowed for one web process")
+    worker_base_mb: int = Field(
+        default=250, gt=0, description="resident memory of an idle worker (engine and numerics loaded)"
+    )
+    queue_seconds: float = Field(
+        default=35.0,
+        gt=0,
+        description="longest wait for a worker before a 503 (over the job limit: one job ends meanwhile)",
+    )
+    scene_queue_seconds: float = Field(
+        default=0.5, ge=0, description="longest wait for a scene simulation slot (then 429)"
+    )
+    user_cache_mb: int = Field(default=64, gt=0, description="disk for user systems' generated code and compiled cache")
+    header_seconds: float = Field(default=10.0, gt=0, description="time a client has to send a request's headers")
+    connections: int = Field(default=400, gt=0, description="open connections and requests per web process; then 503")
+    body_seconds: float = Field(default=10.0, gt=0, description="time a client has to send a request's body")
     derive_seconds: float = Field(default=30.0, gt=0, description="hard time limit of a user system's derivation")
     simulate_seconds: float = Field(default=30.0, gt=0, description="hard time limit of a user system's simulation")
     check_seconds: float = Field(default=10.0, gt=0, description="hard time limit of checking a student's step")
-    session_secret: str | None = Field(default=None, description="key that signs session cookies; else a file in the cache")
+    session_secret: str | None = Field(
+        default=None, description="key that signs session cookies; else a file in the cache"
+    )
     warm: bool = Field(default=True, description="compile kernels and fill caches in the background at start-up")
+
+    # The memory budget (README "Capacity").  With P web processes, each with a forkserver and W
+    # pool workers, and a job cap J, the most resident memory the server can reach is
+    #     P * (web_process_mb + worker_base_mb + W * (worker_base_mb + J))  <=  budget,
+    # so J defaults to the largest value that fits (at most 1024 MB), and a W that leaves a job
+    # less than 128 MB is lowered until it does not (a configured J that does not fit, too).  A worker that ends a job above
+    # worker_base_mb + J / 2 resident retires (app/service/worker.py).  P defaults to one per
+    # CPU (at most 2), fewer if the budget cannot give each a worker with a 128 MB job.
+    @property
+    def web_process_count(self) -> int:
+        if self.web_processes:
+            return self.web_processes
+        wanted = min(2, container_cpus())
+        while wanted > 1 and self._per_worker_mb(1, wanted) < MIN_JOB_MB:  # a small container: fewer processes
+            wanted -= 1
+        return wanted
+
+    @property
+    def budget_mb(self) -> int:
+        return self.memory_budget_mb or int(0.9 * container_memory_mb())
+
+    def _per_worker_mb(self, workers: int, processes: int | None = None) -> int:
+        """J for W = ``workers`` and P = ``processes`` (or the process count): the budget's inequality solved."""
+        processes = processes or self.web_process_count
+        per_process = self.budget_mb // processes - self.web_process_mb - self.worker_base_mb
+        return per_process // workers - self.worker_base_mb
 
     @property
     def worker_count(self) -> int:
-        return self.workers or min(2, os.cpu_count() or 1)
+        wanted = self.workers or max(1, min(2, container_cpus() // self.web_process_count))
+        # fewer workers, each able to take a useful job (128 MB), rather than many that cannot
+        while wanted > 1 and self._per_worker_mb(wanted) < MIN_JOB_MB:
+            wanted -= 1
+        return wanted
+
+    @property
+    def job_memory_mb(self) -> int:
+        fits = self._per_worker_mb(self.worker_count)
+        wanted = self.worker_memory_mb or MAX_JOB_MB
+        return max(MIN_JOB_MB, min(wanted, fits))
+
+    @property
+    def worst_case_mb(self) -> int:
+        """The left side of the budget's inequality, for these settings."""
+        workers = self.worker_count * (self.worker_base_mb + self.job_memory_mb)
+        return self.web_process_count * (self.web_process_mb + self.worker_base_mb + workers)
+
+    @property
+    def retire_rss_mb(self) -> int:
+        return self.worker_base_mb + self.job_memory_mb // 2
+
+
+MIN_JOB_MB = 128
+MAX_JOB_MB = 1024
+
+
+def _read(path: str) -> str | None:
+    try:
+        with open(path) as handle:
+            return handle.read().strip()
+    except OSError:
+        return None
+
+
+def container_cpus() -> int:
+    """CPUs this container may use: the cgroup's quota (cpu.max), else the CPUs it may run on."""
+    available = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+    quota = (_read("/sys/fs/cgroup/cpu.max") or "max").split()
+    if quota and quota[0] != "max":
+        period = int(quota[1]) if len(quota) > 1 else 100_000
+        return max(1, min(available, -(-int(quota[0]) // period)))
+    return max(1, available)
+
+
+def container_memory_mb() -> int:
+    """Memory this container may use: the cgroup's limit (memory.max), else the machine's."""
+    limit = _read("/sys/fs/cgroup/memory.max")
+    if limit and limit.isdigit():
+        return int(limit) // 2**20
+    return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") // 2**20
 
 
 @lru_cache(maxsize=1)

@@ -8,7 +8,13 @@ port, then runs bounded asyncio clients:
   reads the derivation and the work-precision report, then every few seconds
   changes a parameter and re-simulates; now and then derives a system of their own;
 * a hostile client (``--hostile N``) sends expensive jobs back to back: a
-  simulation at the limits and a derivation built to hit the worker's time limit.
+  simulation at the limits and a derivation built to hit the worker's time limit;
+* a hostile flood (``--flood N``): N sessions from this one address (a
+  classroom's NAT) send derivations built to hit the time limit back to back,
+  and 4N clients send heavy scene simulations back to back, while an honest
+  session derives a new small system every few seconds (retrying after
+  ``Retry-After``: its wait is timed until the answer) and a probe asks
+  /healthz five times a second.
 
 Every run is bounded in time (``--seconds``) and requests; it prints, per level,
 throughput, p50/p99 per endpoint, the error rate (5xx counted apart) and the
@@ -18,6 +24,7 @@ long run and reports its growth after warm-up.
     .venv/bin/python -m benchmarks.load_test --students 30 100 150 --seconds 60
     .venv/bin/python -m benchmarks.load_test --students 100 --hostile 4 --seconds 60
     .venv/bin/python -m benchmarks.load_test --students 100 --soak --seconds 600
+    .venv/bin/python -m benchmarks.load_test --students 10 --flood 10 --seconds 60
 """
 
 from __future__ import annotations
@@ -115,6 +122,48 @@ async def hostile(base: str, scenes: list[dict], rec: Recorder, stop: float) -> 
             await rec.call(c, "hostile simulate", "POST", f"/api/scenes/{scene['id']}/simulate", json=heavy)
 
 
+async def flooder(base: str, rec: Recorder, stop: float) -> None:
+    """One of the flood's sessions: a job built to run out of time, again as soon as it may."""
+    async with httpx.AsyncClient(base_url=base, timeout=90) as c:  # keeps the session cookie it is given
+        while time.monotonic() < stop:
+            answer = await rec.call(c, "flood derive", "POST", "/api/derive", json=HOSTILE_SYSTEM)
+            if answer is not None and answer.status_code in (429, 503):
+                await asyncio.sleep(0.2)  # a flood does not wait its Retry-After
+
+
+async def simulation_flood(base: str, scenes: list[dict], rec: Recorder, stop: float) -> None:
+    scene = scenes[0]
+    heavy = {"initial": scene["initial"], "t_end": 1e5, "rtol": 1e-12}
+    async with httpx.AsyncClient(base_url=base, timeout=60) as c:
+        while time.monotonic() < stop:
+            await rec.call(c, "flood simulate", "POST", f"/api/scenes/{scene['id']}/simulate", json=heavy)
+
+
+async def honest_session(base: str, rec: Recorder, stop: float) -> None:
+    """A student deriving a new small system every few seconds; the time until each answer is recorded."""
+    async with httpx.AsyncClient(base_url=base, timeout=90) as c:
+        n = 0
+        while time.monotonic() < stop:
+            n += 1
+            system = {**CUSTOM_SYSTEM, "potential": f"k*x**2/2 + x**4/{n + 3}"}  # new each time: no cached answer
+            started = time.perf_counter()
+            while True:
+                answer = await rec.call(c, "honest derive (each try)", "POST", "/api/derive", json=system)
+                if answer is None or answer.status_code not in (429, 503):
+                    break
+                await asyncio.sleep(float(answer.headers.get("Retry-After", "1")))
+            rec.times["honest derive (until answered)"].append(time.perf_counter() - started)
+            rec.status["honest derive (until answered)"][answer.status_code if answer is not None else 599] += 1
+            await asyncio.sleep(3.0)
+
+
+async def health_probe(base: str, rec: Recorder, stop: float) -> None:
+    async with httpx.AsyncClient(base_url=base, timeout=30) as c:
+        while time.monotonic() < stop:
+            await rec.call(c, "healthz", "GET", "/healthz")
+            await asyncio.sleep(0.2)
+
+
 def server_rss_mb(pid: int) -> float:
     """Resident memory of the server and all its children (uvicorn workers, pool workers)."""
     pids, frontier = {pid}, [pid]
@@ -182,7 +231,9 @@ def report(level: str, rec: Recorder, seconds: float, rss: tuple[float, float]) 
         print(f"| {name} | {len(t)} | {statistics.median(t) * 1e3:.0f} | {p99 * 1e3:.0f} | {codes} |")
 
 
-async def run_level(base: str, pid: int, students: int, hostiles: int, seconds: float, soak: bool, ramp: float) -> None:
+async def run_level(
+    base: str, pid: int, students: int, hostiles: int, seconds: float, soak: bool, ramp: float, flood: int = 0
+) -> None:
     async with httpx.AsyncClient(base_url=base, timeout=30) as c:
         scenes = (await c.get("/api/scenes")).json()
     rec = Recorder()
@@ -198,10 +249,15 @@ async def run_level(base: str, pid: int, students: int, hostiles: int, seconds: 
 
     tasks = [student(base, scenes, rec, stop, random.Random(rng.random()), ramp) for _ in range(students)]
     tasks += [hostile(base, scenes, rec, stop) for _ in range(hostiles)]
+    if flood:
+        tasks += [flooder(base, rec, stop) for _ in range(flood)]
+        tasks += [simulation_flood(base, scenes, rec, stop) for _ in range(4 * flood)]
+        tasks += [honest_session(base, rec, stop), health_probe(base, rec, stop)]
     started = time.monotonic()
     await asyncio.gather(sample_memory(), *tasks)
     elapsed = time.monotonic() - started
     label = f"{students} students" + (f" + {hostiles} hostile clients" if hostiles else "")
+    label += f" + a flood of {flood} sessions and {4 * flood} simulation clients" if flood else ""
     report(label, rec, elapsed, (before, server_rss_mb(pid)))
     if soak and len(samples) > 2:
         warm = samples[1][1]
@@ -214,6 +270,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--students", type=int, nargs="+", default=[30, 100, 150])
     parser.add_argument("--hostile", type=int, default=0)
+    parser.add_argument("--flood", type=int, default=0, help="flooding sessions (and 4x as many simulation clients)")
     parser.add_argument("--seconds", type=float, default=60.0)
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--soak", action="store_true")
@@ -233,7 +290,8 @@ def main() -> None:
             f"({os.cpu_count()} cores)"
         )
         for n in args.students:
-            asyncio.run(run_level(base, proc.pid, min(n, 500), args.hostile, args.seconds, args.soak, args.ramp))
+            level = run_level(base, proc.pid, min(n, 500), args.hostile, args.seconds, args.soak, args.ramp, args.flood)
+            asyncio.run(level)
     finally:
         os.killpg(proc.pid, signal.SIGTERM)
         proc.wait(timeout=30)

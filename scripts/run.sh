@@ -10,5 +10,8 @@ if [ ! -x .venv/bin/uvicorn ] || [ ! -d static/vendor ] \
 fi
 # The app loads the chapter's derivations and compiled integrators in the background
 # at start-up (from the caches set-up filled) and answers with scipy meanwhile.
+# One web process unless WORKERS says otherwise; the slow-client options as in scripts/serve.sh.
+export LAGRANGE_WEB_PROCESSES="${WORKERS:-1}"
+# shellcheck disable=SC2046 # the options are words
 exec .venv/bin/uvicorn app.main:app --host "${HOST:-127.0.0.1}" --port "${PORT:-8000}" \
-    --workers "${WORKERS:-1}" --timeout-keep-alive 75
+    $(.venv/bin/python -m app.web.slow_clients)

@@ -1,11 +1,13 @@
 #!/bin/sh
-# Serve the app with uvicorn: PORT (default 8000), WORKERS (0 or unset: one per CPU core),
-# HOST (default 0.0.0.0). Long keep-alive for many students behind one address;
-# uvicorn shuts down gracefully on SIGTERM (finishes requests in flight).
+# Serve the app with uvicorn: PORT (default 8000), WORKERS (web processes; 0 or unset: from the
+# container's CPUs, see app/settings.py), HOST (default 0.0.0.0). The other options come from
+# the settings (python -m app.web.slow_clients): a long keep-alive for many students behind one
+# address, a cap on open connections (then 503), a deadline on request headers (bodies: in the
+# app), a graceful shutdown on SIGTERM that finishes the requests in flight.
 set -eu
-workers=${WORKERS:-0}
-if [ "$workers" = "0" ]; then
-    workers=$(python -c "import os; print(max(1, len(os.sched_getaffinity(0))))")
+if [ "${WORKERS:-0}" != "0" ]; then
+    export LAGRANGE_WEB_PROCESSES="$WORKERS"  # the memory budget counts them
 fi
+# shellcheck disable=SC2046 # the options are words
 exec python -m uvicorn app.main:app --host "${HOST:-0.0.0.0}" --port "${PORT:-8000}" \
-    --workers "$workers" --timeout-keep-alive 75 --timeout-graceful-shutdown 20 --no-access-log
+    $(python -m app.web.slow_clients) --no-access-log

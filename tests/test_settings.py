@@ -1,9 +1,14 @@
-"""The settings: one place, read from LAGRANGE_ variables, and README's table generated from it."""
+"""The settings: one place, read from LAGRANGE_ variables, README's table generated from it; the memory
+budget and the process counts derived from the container's cgroup."""
 
+import os
 import subprocess
 import sys
 
-from app.settings import ROOT, Settings
+import pytest
+
+from app import settings as module
+from app.settings import MIN_JOB_MB, ROOT, Settings
 
 
 def test_a_setting_is_read_from_its_lagrange_variable(monkeypatch):
@@ -22,3 +27,38 @@ def test_the_readme_lists_every_setting_as_settings_defines_it():
         env={"PYTHONPATH": str(ROOT), "PATH": "/usr/bin:/bin"},
     )
     assert check.returncode == 0, check.stdout + check.stderr
+
+
+@pytest.fixture
+def cgroup(monkeypatch):
+    files = {}
+    monkeypatch.setattr(module, "_read", lambda path: files.get(path))
+    return files
+
+
+def test_cpus_come_from_the_quota_and_memory_from_the_limit(cgroup):
+    cgroup["/sys/fs/cgroup/cpu.max"] = "150000 100000"  # 1.5 CPUs: 2 to run on
+    cgroup["/sys/fs/cgroup/memory.max"] = str(2 * 2**30)
+    assert module.container_cpus() == min(2, len(os.sched_getaffinity(0)))
+    assert module.container_memory_mb() == 2048
+    s = Settings()
+    assert s.budget_mb == int(0.9 * 2048)
+    assert s.worst_case_mb <= s.budget_mb
+
+
+def test_no_limit_means_the_machines(cgroup):
+    cgroup["/sys/fs/cgroup/cpu.max"] = "max 100000"
+    assert module.container_cpus() >= 1 and module.container_memory_mb() > 0
+
+
+@pytest.mark.parametrize("budget", [1200, 2000, 4000, 16000])
+@pytest.mark.parametrize("processes", [1, 2, 4])
+def test_the_caps_fit_the_budget_or_take_the_smallest_useful_job(budget, processes):
+    s = Settings(memory_budget_mb=budget, web_processes=processes)
+    assert 128 <= s.job_memory_mb <= 1024
+    assert s.worst_case_mb <= budget or (s.worker_count == 1 and s.job_memory_mb == MIN_JOB_MB)
+
+
+def test_a_configured_job_cap_that_does_not_fit_is_lowered():
+    s = Settings(memory_budget_mb=2000, web_processes=1, workers=2, worker_memory_mb=1024)
+    assert s.job_memory_mb < 1024 and s.worst_case_mb <= 2000

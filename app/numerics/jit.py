@@ -95,7 +95,9 @@ def compiled_functions(sources: dict[str, str]) -> ModuleType:
             return _modules[key]
         folder = generated_dir()
         path = folder / f"rhs_{key}.py"
-        if not path.exists():
+        if path.exists():
+            path.touch()  # its last use, for the bounded cache of users' systems (app/service/disk.py)
+        else:
             # write then rename: a concurrent reader never sees half a file
             with tempfile.NamedTemporaryFile("w", dir=folder, delete=False, suffix=".tmp") as handle:
                 handle.write(text)

@@ -5,6 +5,10 @@ it, that is ``<settings().cache_dir>/numba``.  Generated right-hand
 sides are written as modules under ``.../generated`` (numba only caches
 functions defined in a real file).  A read-only cache directory falls back to
 a per-user folder under the system's temporary directory.
+
+The worker processes that run users' systems write theirs under
+``.../generated-user`` instead (``use_user_folder``): that folder and its numba
+cache are bounded in size (app/service/disk.py), while the chapter's stay.
 """
 
 from __future__ import annotations
@@ -48,7 +52,26 @@ def configure_numba() -> Path:
     return target
 
 
+GENERATED = "generated"
+USER_GENERATED = "generated-user"
+_folder = GENERATED
+
+
+def use_user_folder() -> None:
+    """Write this process's generated modules to the bounded folder for users' systems."""
+    global _folder
+    _folder = USER_GENERATED
+
+
 def generated_dir() -> Path:
-    path = cache_root() / "generated"
+    path = cache_root() / _folder
     path.mkdir(parents=True, exist_ok=True)
     return path
+
+
+def user_generated_dir() -> Path:
+    return cache_root() / USER_GENERATED
+
+
+def numba_dir() -> Path:
+    return Path(os.environ.get("NUMBA_CACHE_DIR") or cache_root() / "numba")

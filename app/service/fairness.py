@@ -11,18 +11,33 @@ expensive job (a derivation or simulation of a user system):
    that mints many sessions cannot take the whole pool;
 3. at most ``capacity`` jobs in flight overall (running plus queued), beyond
    which a 503 with ``Retry-After`` says the server is busy;
-4. sessions are minted at most ``mint_per_minute`` per address.
+4. sessions are minted at most ``mint_per_minute`` per address;
+5. a client or an address whose jobs keep running out of time or memory backs
+   off: after two such failures in a row a client gets a 429 for 5 s, doubling
+   with each further one (at most 5 minutes); an address backs off once
+   ``per_address`` + 1 of its jobs failed so in a row, except for its sessions
+   that have had a job succeed lately (a classroom behind one address keeps
+   working while one of its machines floods).
 
-Jobs are time-limited by the worker pool and queued first come, first served;
-since each client has at most one job waiting, the queue serves clients in
-turn and a few abusive clients hold at most a few slots.  Answers are cached,
-and a request identical to one already running waits for that job without a
-ticket of its own (app/service/user_systems.py), so a class opening one shared
-link costs one job.
+Admitted jobs wait for one of ``workers`` run slots in this queue, never in the
+pool's.  A free slot goes to the waiting job whose address, then whose session,
+has used the least worker time lately (decayed with a half-life of
+``HALF_LIFE`` s, the running jobs' time included), so a session that has not
+had a turn goes before the sessions that flood, whatever their number: within
+its address's share each session keeps a floor.  When the address's share (or
+the whole queue) is full, a newcomer that has used less takes the place of
+the heaviest job still waiting, whose client gets a 429.  A job waits at most
+``queue_seconds`` (then a 503 with ``Retry-After``), and a job whose clients
+all went away leaves the queue (app/service/user_systems.py).
+
+Answers are cached, and a request identical to one already running waits for
+that job without a ticket of its own (app/service/user_systems.py), so a class
+opening one shared link costs one job.
 """
 
 from __future__ import annotations
 
+import asyncio
 import hashlib
 import hmac
 import math
@@ -40,6 +55,11 @@ from app.settings import settings
 
 COOKIE = "lagrange_session"
 COOKIE_MAX_AGE = 30 * 24 * 3600
+HALF_LIFE = 120.0  # seconds over which a client's used worker time halves
+BACKOFF_SECONDS = 5.0  # after the second job in a row out of time or memory; doubles with each further one
+CLIENT_STRIKES = 2  # failures in a row before a client backs off
+BACKOFF_MAX = 300.0
+STRIKES = ("timeout", "memory", "crashed")  # outcomes that count against a client
 
 
 class Busy(OverCapacity):
@@ -68,18 +88,41 @@ def _secret(configured: str | None) -> bytes:
     return key
 
 
-@dataclass
+@dataclass(eq=False)
 class Ticket:
-    """An admitted job; ``release`` frees its slot (idempotent)."""
+    """An admitted job; ``release`` frees its place (idempotent), saying how the job ended."""
 
     owner: Fairness
     client: str
     address: str
     started: float = field(default_factory=time.monotonic)
+    ran_at: float | None = None  # when it got a run slot
     released: bool = False
+    wake: tuple[asyncio.AbstractEventLoop, asyncio.Future] | None = None
 
-    def release(self) -> None:
-        self.owner._release(self)
+    @property
+    def running(self) -> bool:
+        return self.ran_at is not None
+
+    def release(self, outcome: str = "done") -> None:
+        self.owner._release(self, outcome)
+
+
+class _Usage:
+    """Worker seconds per key, decaying with a half-life."""
+
+    def __init__(self) -> None:
+        self._values: dict[str, tuple[float, float]] = {}
+
+    def get(self, key: str, now: float) -> float:
+        value, stamp = self._values.get(key, (0.0, now))
+        return value * 0.5 ** ((now - stamp) / HALF_LIFE)
+
+    def add(self, key: str, seconds: float, now: float) -> None:
+        self._values[key] = (self.get(key, now) + seconds, now)
+        if len(self._values) > 20000:  # forget the ones that decayed to nothing
+            for stale in [k for k in self._values if self.get(k, now) < 0.01]:
+                del self._values[stale]
 
 
 class Fairness:
@@ -90,11 +133,18 @@ class Fairness:
         per_address: int | None = None,
         mint_per_minute: int = 120,
         secret: str | None = None,
+        queue_seconds: float | None = None,
     ):
         self.capacity = capacity
         self.workers = workers
         self.per_address = per_address or max(1, capacity // 2)
         self.mint_per_minute = mint_per_minute
+        self.queue_seconds = queue_seconds or settings().queue_seconds
+        self._waiting: list[Ticket] = []
+        self._slots_taken = 0
+        self._usage = _Usage()
+        self._strikes: dict[str, tuple[int, float]] = {}  # key -> (failures in a row, backing off until)
+        self._proven: dict[str, float] = {}  # client -> when a job of theirs last succeeded
         self._key = _secret(secret or settings().session_secret)
         self._lock = threading.Lock()
         self._running: dict[str, Ticket] = {}
@@ -134,46 +184,187 @@ class Fairness:
         """Seconds until a slot is likely free: the mean job time for each job ahead per worker."""
         return max(1, min(30, math.ceil(self._mean_seconds * max(jobs_ahead, 1) / self.workers)))
 
+    def _backing_off(self, key: str, threshold: int, now: float) -> float:
+        count, until = self._strikes.get(key, (0, 0.0))
+        return until - now if count >= threshold and until > now else 0.0
+
+    def _weight(self, ticket: Ticket, now: float) -> tuple[float, float, float]:
+        """Who goes first: least recent worker time of the address, then of the client, then arrival."""
+        live = {ticket.address: 0.0, ticket.client: 0.0}
+        for other in self._running.values():
+            if other.running:
+                for key in (other.address, other.client):
+                    if key in live:
+                        live[key] += now - other.ran_at
+        return (
+            self._usage.get(ticket.address, now) + live[ticket.address],
+            self._usage.get(ticket.client, now) + live[ticket.client],
+            ticket.started,
+        )
+
+    def _make_room(self, newcomer: Ticket, among: list[Ticket], now: float) -> bool:
+        """Give the newcomer the place of the heaviest waiting job in ``among`` if that one has used more."""
+        if not among:
+            return False
+        mine = self._weight(newcomer, now)
+        heaviest = max(among, key=lambda t: self._weight(t, now))
+        if self._weight(heaviest, now)[:2] <= mine[:2]:
+            return False
+        self._drop(
+            heaviest,
+            Busy(
+                "your place in the queue went to a session that has used the server less lately; try again shortly",
+                self._retry_after(1),
+            ),
+        )
+        return True
+
     def admit(self, client: str, address: str) -> Ticket:
         """Admit one job for ``client`` (a session id or ``address:...``) or raise Busy."""
+        now = time.monotonic()
         with self._lock:
+            proven = now - self._proven.get(client, -math.inf) < HALF_LIFE * 10
+            wait = max(
+                self._backing_off(client, CLIENT_STRIKES, now),
+                0.0 if proven else self._backing_off(address, self.per_address + 1, now),
+            )
+            if wait:
+                raise Busy(
+                    "your recent jobs ran out of time or memory; wait before sending more "
+                    "(smaller systems or shorter simulations fit the limits)",
+                    max(1, math.ceil(wait)),
+                )
             if client in self._running:
                 raise Busy(
                     "you already have a derivation or simulation running; wait for it to finish",
                     self._retry_after(self.workers),
                 )
-            if self._per_address.get(address, 0) >= self.per_address:
+            ticket = Ticket(self, client, address)
+            if self._per_address.get(address, 0) >= self.per_address and not self._make_room(
+                ticket, [t for t in self._waiting if t.address == address], now
+            ):
                 raise Busy(
                     f"{self.per_address} jobs from your network address are already running; try again shortly",
                     self._retry_after(1),
                 )
-            if len(self._running) >= self.capacity:
+            if len(self._running) >= self.capacity and not self._make_room(ticket, list(self._waiting), now):
                 raise Busy(
                     "the server is busy with other users' systems; try again shortly",
                     self._retry_after(len(self._running) - self.capacity + 1),
                     whole_server=True,
                 )
-            ticket = Ticket(self, client, address)
             self._running[client] = ticket
             self._per_address[address] = self._per_address.get(address, 0) + 1
             return ticket
 
-    def _release(self, ticket: Ticket) -> None:
+    async def turn(self, ticket: Ticket) -> None:
+        """Wait until the ticket's job may run (a free worker), or raise Busy past ``queue_seconds``.
+
+        Cancelling the wait (the client went away) gives up the ticket."""
+        loop = asyncio.get_running_loop()
+        granted: asyncio.Future = loop.create_future()
+        with self._lock:
+            if ticket.released:
+                raise Busy("the server is busy with other users' systems; try again shortly", 1, whole_server=True)
+            ticket.wake = (loop, granted)
+            self._waiting.append(ticket)
+            self._dispatch()
+        try:
+            await asyncio.wait_for(asyncio.shield(granted), self.queue_seconds)
+        except TimeoutError:
+            with self._lock:
+                if ticket.running:
+                    return  # a slot came at the last moment
+                ahead = len(self._waiting)
+            ticket.release("expired")
+            raise Busy(
+                f"no worker became free within {self.queue_seconds:g} s; the server is busy, try again shortly",
+                self._retry_after(ahead),
+                whole_server=True,
+            ) from None
+        except BaseException:  # cancelled (the client left) or dropped from the queue
+            ticket.release("cancelled")
+            raise
+
+    def _dispatch(self) -> None:
+        """Give free run slots to the lightest waiting jobs (called with the lock held)."""
+        now = time.monotonic()
+        while self._waiting and self._slots_taken < self.workers:
+            chosen = min(self._waiting, key=lambda t: self._weight(t, now))
+            self._waiting.remove(chosen)
+            chosen.ran_at = now
+            self._slots_taken += 1
+            self._wake(chosen, None)
+
+    @staticmethod
+    def _wake(ticket: Ticket, error: BaseException | None) -> None:
+        if ticket.wake is None:
+            return
+        loop, granted = ticket.wake
+
+        def resolve() -> None:
+            if not granted.done():
+                if error is None:
+                    granted.set_result(None)
+                else:
+                    granted.set_exception(error)
+
+        loop.call_soon_threadsafe(resolve)
+
+    def _drop(self, ticket: Ticket, error: Busy) -> None:
+        """Take a waiting job out of the queue; its waiter gets ``error`` (called with the lock held)."""
+        self._waiting.remove(ticket)
+        self._forget(ticket)
+        self._wake(ticket, error)
+
+    def _forget(self, ticket: Ticket) -> None:
+        ticket.released = True
+        if self._running.get(ticket.client) is ticket:
+            del self._running[ticket.client]
+        left = self._per_address.get(ticket.address, 1) - 1
+        if left > 0:
+            self._per_address[ticket.address] = left
+        else:
+            self._per_address.pop(ticket.address, None)
+
+    def _strike(self, key: str, outcome: str, threshold: int, now: float) -> None:
+        count, _ = self._strikes.get(key, (0, 0.0))
+        if outcome in STRIKES:
+            count += 1
+            extra = max(0, count - threshold)
+            self._strikes[key] = (count, now + min(BACKOFF_MAX, BACKOFF_SECONDS * 2**extra))
+        elif outcome == "done":
+            self._strikes.pop(key, None)
+
+    def _release(self, ticket: Ticket, outcome: str) -> None:
+        now = time.monotonic()
         with self._lock:
             if ticket.released:
                 return
-            ticket.released = True
-            if self._running.get(ticket.client) is ticket:
-                del self._running[ticket.client]
-            left = self._per_address.get(ticket.address, 1) - 1
-            if left > 0:
-                self._per_address[ticket.address] = left
-            else:
-                self._per_address.pop(ticket.address, None)
-            elapsed = time.monotonic() - ticket.started
-            self._mean_seconds = 0.8 * self._mean_seconds + 0.2 * elapsed
+            if ticket in self._waiting:
+                self._waiting.remove(ticket)
+            self._forget(ticket)
+            if ticket.running:
+                self._slots_taken -= 1
+                elapsed = now - ticket.ran_at
+                self._usage.add(ticket.client, elapsed, now)
+                self._usage.add(ticket.address, elapsed, now)
+                self._mean_seconds = 0.8 * self._mean_seconds + 0.2 * elapsed
+                self._strike(ticket.client, outcome, CLIENT_STRIKES, now)
+                if outcome == "done":
+                    self._proven[ticket.client] = now
+                    if len(self._proven) > 20000:  # forget the oldest half
+                        for stale in sorted(self._proven, key=self._proven.get)[:10000]:
+                            del self._proven[stale]
+                self._strike(ticket.address, outcome, self.per_address + 1, now)
+            self._dispatch()
 
     @property
     def in_flight(self) -> int:
         with self._lock:
             return len(self._running)
+
+    @property
+    def waiting(self) -> int:
+        with self._lock:
+            return len(self._waiting)

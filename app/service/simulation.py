@@ -13,12 +13,11 @@ documented JSON:
 from __future__ import annotations
 
 import math
-import os
 import threading
 import time
 from collections import OrderedDict
 from collections.abc import Iterator, Mapping, Sequence
-from contextlib import contextmanager, nullcontext
+from contextlib import AbstractContextManager, ExitStack, contextmanager
 from typing import Any, Protocol
 
 import numpy as np
@@ -35,9 +34,14 @@ from app.numerics.simulate import run
 from app.numerics.system import NumericSystem, generated_sources, numeric_system
 from app.scenes import SCENES, Scene
 from app.service.cache import JsonCache, source_fingerprint
+from app.settings import container_cpus, settings
 
 DEFAULT_T_END = 10.0
-_SLOTS = threading.BoundedSemaphore(max(2, os.cpu_count() or 2))
+SLOTS = max(2, container_cpus())
+_SLOTS = threading.BoundedSemaphore(SLOTS)
+_HEAVY = threading.BoundedSemaphore(max(1, SLOTS // 2))
+HEAVY_SPAN = 10  # times the scene's t_end (or the default 10 s)
+HEAVY_RTOL = 1e-9
 # scipy's integrators loop in Python and hold the GIL for their whole run: one at a
 # time per process, so they cannot starve the compiled runs and pages served beside them.
 _PYTHON_LOOP = threading.BoundedSemaphore(1)
@@ -185,18 +189,24 @@ def _series(values: np.ndarray, precision: str = "full") -> np.ndarray:
 
 
 @contextmanager
-def _python_loop() -> Iterator[None]:
-    """Hold the one slot for a Python step loop (see ``_PYTHON_LOOP``), or refuse as busy."""
-    if not _PYTHON_LOOP.acquire(timeout=limits.WALL_SECONDS):
-        raise OverCapacity(
-            "another scipy (Python step loop) run is in progress here; try again in a few seconds, "
-            "or ask for a compiled method",
-            2,
-        )
+def _slot(gate: threading.BoundedSemaphore, message: str) -> Iterator[None]:
+    """Hold one of a gate's slots, or refuse as busy: under a flood a request fails fast (the
+    ``scene_queue_seconds`` setting) rather than holding a server thread while it waits."""
+    if not gate.acquire(timeout=min(settings().scene_queue_seconds, limits.WALL_SECONDS)):
+        raise OverCapacity(message, 1)
     try:
         yield
     finally:
-        _PYTHON_LOOP.release()
+        gate.release()
+
+
+def _python_loop() -> AbstractContextManager[None]:
+    """Hold the one slot for a Python step loop (see ``_PYTHON_LOOP``), or refuse as busy."""
+    return _slot(
+        _PYTHON_LOOP,
+        "another scipy (Python step loop) run is in progress here; try again in a few seconds, "
+        "or ask for a compiled method",
+    )
 
 
 def simulate_derivation(
@@ -231,13 +241,18 @@ def simulate_derivation(
         )
     # the plan resolves auto (and the fallback while compiling) first, so the throttle sees what will run
     planned = plan(system, k, y0, t_end, samples, method, rtol, atol, wait_for_compile=not ANSWER_WHILE_COMPILING)
-    with _python_loop() if planned.python_loop else nullcontext():
-        if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
-            raise OverCapacity("too many simulations are running at once; try again in a few seconds", 2)
-        try:
-            outcome = run(planned, python_loop=_python_loop, events=_events(scene, system))
-        finally:
-            _SLOTS.release()
+    # a run far beyond the scene's span or near the tolerance floor is heavy: those take at most half
+    # of the slots, so a flood of them leaves the others to the light runs students send
+    heavy = t_end > HEAVY_SPAN * (scene.t_end if scene else DEFAULT_T_END) or rtol < HEAVY_RTOL
+    with ExitStack() as held:
+        if planned.python_loop:
+            held.enter_context(_python_loop())
+        elif heavy:
+            held.enter_context(
+                _slot(_HEAVY, "too many long or high-accuracy simulations are running; try again shortly, or ask for less")
+            )
+        held.enter_context(_slot(_SLOTS, "too many simulations are running at once; try again in a few seconds"))
+        outcome = run(planned, python_loop=_python_loop, events=_events(scene, system))
     return document(system, observables, outcome, k, rtol, getattr(request, "precision", None) or "full")
 
 

@@ -61,6 +61,8 @@ class UserSystems:
         self.simulations = ResultCache(entries=64)
         self.exports = ResultCache(entries=64)
         self._running: dict[tuple[int, str], asyncio.Future] = {}
+        self._queued: dict[tuple[int, str], fair.Ticket] = {}  # the ticket of each running slot
+        self._waiters: dict[tuple[int, str], int] = {}
 
     @property
     def pool(self) -> worker.WorkerPool:
@@ -80,15 +82,26 @@ class UserSystems:
         if cached is not None:
             return cached
         # a classroom opening one shared link asks for the same system at once: one job serves them all
-        running = self._running.get((id(asyncio.get_running_loop()), key))
+        slot = (id(asyncio.get_running_loop()), key)
+        running = self._running.get(slot)
         if running is None:
             ticket = self.gate.admit(client, address)
             running = asyncio.ensure_future(self._job(cache, key, ticket, timeout, job, args))
-            slot = (id(asyncio.get_running_loop()), key)
             self._running[slot] = running
+            self._queued[slot] = ticket
             running.add_done_callback(lambda done: self._finished(slot, done))
-        # a client that goes away does not stop the job the others wait for
-        return await asyncio.shield(running)
+        # a client that goes away does not stop the job the others wait for; the last one to go, while it queues, does
+        self._waiters[slot] = self._waiters.get(slot, 0) + 1
+        try:
+            return await asyncio.shield(running)
+        except asyncio.CancelledError:
+            queued = self._queued.get(slot)
+            if self._waiters.get(slot) == 1 and queued is not None and not queued.running:
+                running.cancel()
+            raise
+        finally:
+            if slot in self._waiters:
+                self._waiters[slot] -= 1
 
     async def run_job(
         self, cache: ResultCache, key: str, client: str, address: str, timeout: float, job, *args
@@ -98,6 +111,8 @@ class UserSystems:
 
     def _finished(self, slot: tuple[int, str], done: asyncio.Future) -> None:
         self._running.pop(slot, None)
+        self._queued.pop(slot, None)
+        self._waiters.pop(slot, None)
         if not done.cancelled():
             done.exception()  # retrieved here too, in case every waiter went away
 
@@ -106,12 +121,13 @@ class UserSystems:
             try:
                 future = self.pool.submit(job, *args, timeout=timeout)
             except BaseException:
-                ticket.release()
+                ticket.release("failed")
                 raise
-            # the slot is freed when the job really ends
-            future.add_done_callback(lambda _: ticket.release())
+            # the slot is freed when the job really ends; a job out of time or memory counts against its client
+            future.add_done_callback(lambda done: ticket.release(worker.ending(done)))
             return future
 
+        await self.gate.turn(ticket)  # a fair turn for a worker, within the queue deadline
         # in a thread: the first job starts the forkserver (importing the engine), which takes seconds
         future = await asyncio.to_thread(submit)
         result = await self.pool.run_async(future, timeout)

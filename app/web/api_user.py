@@ -20,6 +20,7 @@ from app.service.exporting import Exported
 from app.service.user_checks import InvalidSystem
 from app.web.api_scenes import EXPORT_CONTENT, download
 from app.web.deps import Client, ClientDep, UserSystemsDep
+from app.web.disconnect import ClientGone, unless_gone
 from app.web.errors import KINDS, json_problem
 from app.web.examples_user import DERIVE_EXAMPLES, DERIVE_RESPONSE, ERROR_EXAMPLES, SIMULATE_EXAMPLES, SIMULATE_RESPONSE
 from app.web.limits import MAX_BODY_BYTES
@@ -85,7 +86,10 @@ async def answer(
     """Run the work for the client; a failure gets its response (app/web/errors.py), with the session cookie too."""
     response: Response
     try:
-        body = await work(client.key, client.address)
+        # a client that leaves gives up its queued job
+        body = await unless_gone(client.request, work(client.key, client.address))
+    except ClientGone:
+        return Response(status_code=499)  # nobody reads it: nginx's code for a client that closed the request
     except KINDS as exc:
         response = json_problem(exc)
     else:

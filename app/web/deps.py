@@ -6,7 +6,7 @@ a gate with other limits) instead of patching module globals.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Annotated
 
 from fastapi import Depends, Request
@@ -41,6 +41,7 @@ class Client:
     key: str
     address: str
     minted: str | None = None  # a new session to hand back in a cookie
+    request: Request | None = field(default=None, compare=False, repr=False)  # to notice the client leaving
 
     def keep(self, response: Response) -> Response:
         """Set the new session's cookie on the answer (whatever the answer is)."""
@@ -53,8 +54,8 @@ def client_identity(request: Request, gate: Annotated[Fairness, Depends(fairness
     address = request.client.host if request.client else "unknown"
     session = gate.verify(request.cookies.get(COOKIE))
     if session:
-        return Client(f"session:{session}", address)
-    return Client(f"address:{address}", address, gate.mint(address))
+        return Client(f"session:{session}", address, request=request)
+    return Client(f"address:{address}", address, gate.mint(address), request)
 
 
 ClientDep = Annotated[Client, Depends(client_identity)]

@@ -4,15 +4,21 @@ A body larger than ``MAX_BODY_BYTES`` is refused with a 413 as soon as its
 ``Content-Length`` says so (or, for a chunked body, as soon as the count
 passes the cap), before the route or the JSON parser sees a byte of it.  A
 JSON text nested deeper than ``MAX_JSON_DEPTH`` is refused with a 400 before
-``json.loads`` runs (Python's parser recurses once per level).
+``json.loads`` runs (Python's parser recurses once per level).  A body that
+does not arrive within ``settings().body_seconds`` (a client sending a byte at
+a time, or one that sent ``Expect: 100-continue`` and then nothing) gets a 408
+and its connection is closed, rather than holding a socket for ever.
 """
 
 from __future__ import annotations
 
+import asyncio
 import json
 from typing import Any
 
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
+
+from app.settings import settings
 
 MAX_BODY_BYTES = 32 * 1024
 MAX_JSON_DEPTH = 32  # the deepest request the API documents is 5 levels deep
@@ -59,7 +65,7 @@ def too_large_message(size: int | None) -> str:
 async def _refuse(send: Send, status: int, detail: str) -> None:
     body = json.dumps({"detail": detail}).encode()
     headers = [(b"content-type", b"application/json"), (b"content-length", str(len(body)).encode())]
-    if status == 413:
+    if status in (408, 413):
         headers.append((b"connection", b"close"))  # the unread body is not worth reading
     await send({"type": "http.response.start", "status": status, "headers": headers})
     await send({"type": "http.response.body", "body": body})
@@ -68,10 +74,17 @@ async def _refuse(send: Send, status: int, detail: str) -> None:
 class BodyLimit:
     """Cap every request body (413) and the nesting of JSON bodies (400), then replay the body to the app."""
 
-    def __init__(self, app: ASGIApp, max_bytes: int = MAX_BODY_BYTES, max_depth: int = MAX_JSON_DEPTH):
+    def __init__(
+        self,
+        app: ASGIApp,
+        max_bytes: int = MAX_BODY_BYTES,
+        max_depth: int = MAX_JSON_DEPTH,
+        seconds: float | None = None,
+    ):
         self.app = app
         self.max_bytes = max_bytes
         self.max_depth = max_depth
+        self.seconds = seconds or settings().body_seconds
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] != "http" or scope["method"] not in _BODY_METHODS:
@@ -87,8 +100,13 @@ class BodyLimit:
                 return
         chunks: list[bytes] = []
         seen = 0
+        deadline = asyncio.get_running_loop().time() + self.seconds
         while True:
-            message = await receive()
+            try:
+                message = await asyncio.wait_for(receive(), deadline - asyncio.get_running_loop().time())
+            except TimeoutError:
+                await _refuse(send, 408, f"the request body did not arrive within {self.seconds:g} s")
+                return
             if message["type"] != "http.request":  # the client went away
                 return
             chunk = message.get("body", b"")

@@ -2,6 +2,8 @@
 
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parents[2]
 
 
@@ -24,4 +26,37 @@ def test_kubernetes_manifest_has_probes_service_and_autoscaler():
 
 def test_serve_script_takes_port_and_workers_from_the_environment():
     text = (ROOT / "scripts" / "serve.sh").read_text()
-    assert "${PORT:-8000}" in text and "WORKERS" in text and "--timeout-keep-alive" in text
+    assert "${PORT:-8000}" in text and "WORKERS" in text and "LAGRANGE_WEB_PROCESSES" in text
+
+
+@pytest.mark.parametrize("script", ["serve.sh", "run.sh"])
+def test_the_scripts_bound_slow_clients_with_the_settings_options(script):
+    # keep-alive, connection cap and header deadline: app/web/slow_clients.py, one home for both scripts
+    assert "-m app.web.slow_clients" in (ROOT / "scripts" / script).read_text()
+
+
+def _mebibytes(quantity: str) -> int:
+    units = {"Mi": 1, "Gi": 1024}
+    return int(quantity[:-2]) * units[quantity[-2:]]
+
+
+def test_the_memory_budget_fits_the_kubernetes_limits():
+    import yaml
+
+    from app.settings import Settings
+
+    deployment = next(
+        d for d in yaml.safe_load_all((ROOT / "deploy" / "kubernetes.yaml").read_text()) if d["kind"] == "Deployment"
+    )
+    container = deployment["spec"]["template"]["spec"]["containers"][0]
+    limit = _mebibytes(container["resources"]["limits"]["memory"])
+    env = {e["name"]: e["value"] for e in container["env"]}
+    cpus = int(container["resources"]["limits"]["cpu"])
+    # what the server derives inside this container (cgroup memory.max = the limit)
+    s = Settings(memory_budget_mb=int(0.9 * limit), web_processes=int(env["WORKERS"]))
+    assert s.worst_case_mb <= s.budget_mb < limit
+    assert s.web_process_count * s.worker_count <= cpus
+    assert s.job_memory_mb >= 256  # a useful derivation fits
+    for probe in ("readinessProbe", "livenessProbe"):
+        assert container[probe]["httpGet"]["path"] == "/healthz"
+        assert container[probe].get("timeoutSeconds", 1) <= container[probe]["periodSeconds"]

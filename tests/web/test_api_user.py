@@ -1,8 +1,6 @@
 """POST /api/derive: systems users declare, derived in the worker pool."""
 
 import json
-import threading
-import time
 
 import pytest
 import sympy as sp
@@ -154,71 +152,7 @@ def test_a_job_over_the_time_limit_is_stopped_and_the_pool_recovers(client):
     assert derive(client, SPINNING_HOOP)["coordinates"] == ["theta"]
 
 
-@pytest.mark.slow  # derives the double pendulum afresh in the worker pool
-def test_one_job_at_a_time_per_session(client):
-    """A second request while the first still runs gets 429 with Retry-After; the first completes."""
-    service = user_systems.service
-    saved = service.derivations
-    service.derivations = user_systems.ResultCache()  # no cached answer: the first request must work
-    client.cookies.clear()
-    client.post("/api/derive", json=SPINNING_HOOP)  # issues the session cookie both requests carry
-    assert COOKIE in client.cookies
-    results = {}
-
-    def first():
-        results["first"] = client.post("/api/derive", json=DOUBLE_PENDULUM)
-
-    worker = threading.Thread(target=first)
-    try:
-        worker.start()
-        deadline = time.monotonic() + 60
-        while service.gate.in_flight == 0 and time.monotonic() < deadline:
-            time.sleep(0.01)
-        second = client.post("/api/derive", json=FORCED_SPRING)
-        assert second.status_code == 429
-        assert int(second.headers["Retry-After"]) >= 1
-        body = second.json()
-        assert body["retry_after"] == int(second.headers["Retry-After"]) and "already" in body["detail"]
-        worker.join(120)
-        assert results["first"].status_code == 200
-        # once the first is done, the same session may go again
-        assert client.post("/api/derive", json=FORCED_SPRING).status_code == 200
-    finally:
-        worker.join(120)
-        service.derivations = saved
-
-
-@pytest.mark.slow  # derives the double pendulum afresh in the worker pool
-def test_the_same_system_asked_twice_at_once_is_derived_once(client):
-    """A classroom opening one link: a second session asking for a system being derived waits for that job."""
-    service = user_systems.service
-    saved = service.derivations
-    service.derivations = user_systems.ResultCache()
-    client.cookies.clear()
-    sessions = [service.gate.mint(f"pupil{i}") for i in range(2)]
-    results, most = {}, 0
-
-    def ask(i):
-        results[i] = client.post("/api/derive", json=DOUBLE_PENDULUM, headers={"cookie": f"{COOKIE}={sessions[i]}"})
-
-    first = threading.Thread(target=ask, args=(0,))
-    second = threading.Thread(target=ask, args=(1,))
-    try:
-        first.start()
-        deadline = time.monotonic() + 60
-        while service.gate.in_flight == 0 and time.monotonic() < deadline:
-            time.sleep(0.01)
-        second.start()
-        while second.is_alive() or first.is_alive():
-            most = max(most, service.gate.in_flight)
-            time.sleep(0.01)
-        assert results[0].status_code == results[1].status_code == 200
-        assert results[0].content == results[1].content
-        assert most == 1  # one job, one fair-share slot, for both
-    finally:
-        first.join(120)
-        second.join(120)
-        service.derivations = saved
+# one job per session and the same system asked twice at once: tests/web/test_api_user_fairness.py
 
 
 def test_busy_server_answers_503_with_retry_after(client):
