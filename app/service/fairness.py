@@ -195,7 +195,7 @@ class Fairness:
             if other.running:
                 for key in (other.address, other.client):
                     if key in live:
-                        live[key] += now - other.ran_at
+                        live[key] += now - (other.ran_at or now)
         return (
             self._usage.get(ticket.address, now) + live[ticket.address],
             self._usage.get(ticket.client, now) + live[ticket.client],
@@ -346,7 +346,7 @@ class Fairness:
             self._forget(ticket)
             if ticket.running:
                 self._slots_taken -= 1
-                elapsed = now - ticket.ran_at
+                elapsed = now - (ticket.ran_at or now)
                 self._usage.add(ticket.client, elapsed, now)
                 self._usage.add(ticket.address, elapsed, now)
                 self._mean_seconds = 0.8 * self._mean_seconds + 0.2 * elapsed
@@ -354,7 +354,7 @@ class Fairness:
                 if outcome == "done":
                     self._proven[ticket.client] = now
                     if len(self._proven) > 20000:  # forget the oldest half
-                        for stale in sorted(self._proven, key=self._proven.get)[:10000]:
+                        for stale in sorted(self._proven, key=self._proven.__getitem__)[:10000]:
                             del self._proven[stale]
                 self._strike(ticket.address, outcome, self.per_address + 1, now)
             self._dispatch()

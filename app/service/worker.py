@@ -208,7 +208,7 @@ class _EntryPopen(popen_forkserver.Popen):
 
             spawn.get_preparation_data = preparation
             try:
-                super()._launch(process_obj)
+                super()._launch(process_obj)  # type: ignore[misc]  # multiprocessing internals, untyped
             finally:
                 spawn.get_preparation_data = original
 
