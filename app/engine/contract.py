@@ -4,11 +4,14 @@ from __future__ import annotations
 
 from typing import Any
 
+import sympy as sp
+
 from app.engine.budget import display_budget
 from app.engine.constraints import ConstraintForce, constraint_forces
 from app.engine.derive import Derivation
 from app.engine.hamilton import hamilton
 from app.engine.modes import normal_modes
+from app.engine.names import display_names
 from app.engine.report import Printer, build_steps, constraint_steps, new_lagrangian, transform_steps
 from app.engine.report import display as _show
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
@@ -51,6 +54,24 @@ def held_momenta(d: Derivation, scene: Scene | None) -> dict[str, float]:
     }
 
 
+def angle_coordinates(d: Derivation) -> list[str]:
+    """Coordinates that are angles: each is, alone, the argument of sin, cos or tan in the positions or in L."""
+    exprs = [c for r in d.mechanics.positions for c in r] + [d.mechanics.L]
+    arguments = {f.args[0] for e in exprs for f in sp.sympify(e).atoms(sp.sin, sp.cos, sp.tan)}
+    return [name for name, q in zip(d.table.names, d.table.q, strict=True) if q in arguments or -q in arguments]
+
+
+def symbol_names(d: Derivation) -> dict[str, dict[str, str]]:
+    """How every name the document uses is written (LaTeX, Unicode, plain): read by pages, plots and exports."""
+    q = d.table.names
+    conserved = [c.name for c in d.energetics.conserved]
+    momenta = [f"p_{n}" for n in q]
+    return display_names(
+        dict.fromkeys([*q, *(f"{n}_dot" for n in q), *(f"{n}_ddot" for n in q), *d.table.parameter_names, "t",
+                       *momenta, *conserved])
+    )  # fmt: skip
+
+
 def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) -> dict[str, Any]:
     table, eqs, en, red = d.table, d.equations, d.energetics, d.reduction
     pr = Printer(table.latex_names())
@@ -58,6 +79,8 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     transformed = transform(d.system)
     result: dict[str, Any] = {
         "coordinates": list(table.names),
+        "angles": angle_coordinates(d),
+        "symbols": symbol_names(d),
         "parameters": parameters_json(d.system.parameters),
         "kinetic": pr.pair(d.mechanics.T) if d.mechanics.T is not None else None,
         "potential": pr.pair(d.mechanics.U) if d.mechanics.U is not None else None,

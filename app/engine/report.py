@@ -15,6 +15,7 @@ import sympy as sp
 from app.engine.budget import pythagoras, tidy
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation
+from app.engine.names import unicode
 from app.engine.transform import Transformed, collected, compact
 
 # The steps a reader needs to follow the argument: the Lagrangian, its equations of motion, the
@@ -46,7 +47,7 @@ def _aligned(rows: list[str]) -> str:
 
 def plain_name(name: str) -> str:
     """A coordinate's name as a reader writes it in running text: theta -> θ, x1 -> x₁."""
-    return sp.pretty(sp.Symbol(name), use_unicode=True)
+    return unicode(name)
 
 
 def _step(title: str, rows: list[str], sympy: Any, explanation: str) -> dict[str, str]:

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import json
 import math
-import re
 from collections.abc import Sequence
 from typing import Any
 
@@ -19,6 +18,7 @@ from app.scenes.types import PANELS
 from app.viz.diagrams import diagram
 from app.viz.exprtree import maybe_tree
 from app.viz.mechanism import mechanism
+from app.engine.names import latex
 from app.viz.names import label
 
 LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collapsed
@@ -55,11 +55,11 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         {"latex": f"{c.get('latex_name') or c['name']} = {c['latex']}", "reason": c["reason"]}
         for c in doc.get("conserved", [])
     ]
-    ddot = {c: rf"\ddot{{{_latex_symbol(c)}}}" for c in q}
+    ddot = {c: latex(f"{c}_ddot") for c in q}
     return {
         "equations": [e["latex"] for e in doc["equations_of_motion"]],
         "accelerations": [f"{ddot[c]} = {doc['accelerations'][c]['latex']}" for c in q],
-        "momenta": [f"p_{{{_latex_symbol(c)}}} = {doc['momenta'][c]['latex']}" for c in q],
+        "momenta": [f"{latex('p_' + c)} = {doc['momenta'][c]['latex']}" for c in q],
         "conserved": conserved,
         "h_equals_e": doc["hamiltonian_equals_energy"],
         "h_reason": doc["hamiltonian_energy_reason"],
@@ -70,7 +70,7 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         "effective_potential": (
             {
                 **doc["effective_potential"],
-                "coordinate_latex": _latex_symbol(doc["effective_potential"]["coordinate"]) + " = ",
+                "coordinate_latex": latex(doc["effective_potential"]["coordinate"]) + " = ",
             }
             if doc.get("effective_potential")
             else None
@@ -79,24 +79,13 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
     }
 
 
-_GREEK_TEX = {"alpha", "beta", "gamma", "delta", "theta", "phi", "psi", "rho", "omega", "lambda", "mu", "sigma", "tau",
-              "chi", "xi", "eta", "zeta", "nu", "kappa", "epsilon", "iota"}  # fmt: skip
-
-
-def _latex_symbol(name: str) -> str:
-    stem = name.rstrip("0123456789")
-    digits = name[len(stem) :]
-    tex = f"\\{stem}" if stem in _GREEK_TEX else stem
-    return f"{tex}_{{{digits}}}" if digits else tex
-
-
 def _transformed(doc: dict[str, Any]) -> list[dict[str, Any]] | None:
     """The derivation in other coordinates (the rail's centre of mass and separation), as labelled rows of LaTeX."""
     tr = doc.get("transformed")
     if not tr:
         return None
     q = tr.get("coordinates", [])
-    sym = {c: _latex_symbol(c) for c in q}
+    sym = {c: latex(c) for c in q}
     rows: list[dict[str, Any]] = []
 
     def add(title: str, items: list[str]) -> None:
@@ -104,7 +93,7 @@ def _transformed(doc: dict[str, Any]) -> list[dict[str, Any]] | None:
             rows.append({"title": title, "latex": items})
 
     add("New coordinates", [f"{sym.get(c, c)} = {e['latex']}" for c, e in tr.get("definitions", {}).items()])
-    add("Old coordinates in the new", [f"{_latex_symbol(c)} = {e['latex']}" for c, e in tr.get("inverse", {}).items()])
+    add("Old coordinates in the new", [f"{latex(c)} = {e['latex']}" for c, e in tr.get("inverse", {}).items()])
     if "lagrangian" in tr:
         add("Lagrangian", [f"L = {tr['lagrangian']['latex']}"])
     add("Cyclic coordinates", [", ".join(sym.get(c, c) for c in tr.get("cyclic", []))] if tr.get("cyclic") else [])
@@ -126,16 +115,9 @@ def _fmt(x: float) -> str:
     return f"{x:.6g}"
 
 
-def angles(doc: dict[str, Any], particles: Sequence[tuple[str, Sequence[str]]] = ()) -> set[str]:
-    """Coordinates that are angles: each appears alone as the argument of sin, cos or tan somewhere in the set-up."""
-    texts = [c for _, pos in particles for c in pos]
-    texts += [(doc.get(k) or {}).get("sympy", "") for k in ("lagrangian", "potential", "kinetic")]
-    found = set()
-    for q in doc["coordinates"]:
-        pattern = re.compile(rf"\b(sin|cos|tan)\(\s*-?{re.escape(q)}\s*\)")
-        if any(pattern.search(t or "") for t in texts):
-            found.add(q)
-    return found
+def angles(doc: dict[str, Any]) -> set[str]:
+    """Coordinates that are angles, as the derivation document records them."""
+    return set(doc.get("angles") or [])
 
 
 def _initial_controls(
@@ -156,12 +138,12 @@ def _initial_controls(
         vmax = max(10.0, 3 * abs(rate)) if angle else max(5.0, 3 * abs(rate), math.sqrt(9.81 * scale))
         unit = "rad" if angle else "m"
         controls.append(
-            {"name": q, "label": f"{label(q)}(0)", "latex": _latex_symbol(q), "unit": unit,
+            {"name": q, "label": f"{label(q)}(0)", "latex": latex(q), "unit": unit,
              "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(value), "log": False,
              "description": f"initial {'angle' if angle else 'position'} {label(q)}"}
         )  # fmt: skip
         controls.append(
-            {"name": f"{q}_dot", "label": f"{label(q + '_dot')}(0)", "latex": rf"\dot{{{_latex_symbol(q)}}}",
+            {"name": f"{q}_dot", "label": f"{label(q + '_dot')}(0)", "latex": latex(f"{q}_dot"),
              "unit": f"{unit}/s", "min": _fmt(-vmax), "max": _fmt(vmax), "value": _fmt(rate), "log": False,
              "description": f"initial rate of change of {label(q)}"}
         )  # fmt: skip
@@ -176,7 +158,7 @@ def _parameter_controls(doc: dict[str, Any]) -> list[dict[str, Any]]:
         hi = info.get("max") if info.get("max") is not None else max(0.0, default) + 10 * max(1.0, abs(default))
         log = lo > 0 and hi / lo >= 50
         controls.append(
-            {"name": name, "label": label(name), "latex": _latex_symbol(name), "unit": info.get("unit") or "",
+            {"name": name, "label": label(name), "latex": latex(name), "unit": info.get("unit") or "",
              "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(default), "log": log,
              "description": info.get("description") or name}
         )  # fmt: skip
@@ -287,7 +269,7 @@ def scene_page(
     panels = _panels(declared, doc, reduction, spec)
     info = {**info, "panels": panels}
     defaults = {k: v["default"] for k, v in doc["parameters"].items()}
-    angular = angles(doc, particles)
+    angular = angles(doc)
     client = _client(doc, info, reduction, spec, methods, nonnegative, angular)
     return {
         "info": info,
