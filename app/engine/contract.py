@@ -12,7 +12,7 @@ from app.engine.derive import Derivation
 from app.engine.hamilton import hamilton
 from app.engine.modes import normal_modes
 from app.engine.names import display_names
-from app.engine.report import Printer, build_steps, constraint_steps, new_lagrangian, transform_steps
+from app.engine.report import Printer, build_steps, constraint_steps, equation_rows, new_lagrangian, transform_steps
 from app.engine.report import display as _show
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.transform import Transformed, transform
@@ -88,8 +88,8 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "hamiltonian": pr.pair(_show(en.hamiltonian)),
         "energy": pr.pair(_show(en.energy)),
         "equations_of_motion": [
-            {"coordinate": name, **pr.pair(_show(r)), "latex": f"{pr.tex(_show(r))} = 0"}
-            for name, r in zip(table.names, eqs.residuals, strict=True)
+            {"coordinate": name, **pr.pair(_show(r)), "latex": row}
+            for name, r, row in zip(table.names, eqs.residuals, equation_rows(d, pr), strict=True)
         ],
         "accelerations": {name: pr.pair(_show(a)) for name, a in zip(table.names, eqs.accelerations, strict=True)},
         "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],
