@@ -9,6 +9,7 @@ import sympy as sp
 from app.engine.budget import display_budget
 from app.engine.constraints import ConstraintForce, constraint_forces
 from app.engine.derive import Derivation
+from app.engine.errata import errata_json
 from app.engine.hamilton import hamilton
 from app.engine.modes import normal_modes
 from app.engine.names import display_names
@@ -16,6 +17,7 @@ from app.engine.report import Printer, build_steps, constraint_steps, equation_r
 from app.engine.report import display as _show
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.transform import Transformed, transform
+from app.scenes.reasons import reason
 from app.scenes.types import Parameter, Scene
 
 
@@ -110,9 +112,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "effective_potential": None,
         "steps": build_steps(d) + constraint_steps(forces, pr) + (transform_steps(transformed) if transformed else []),
         "scene": scene_json(scene) if scene is not None else None,
-        "errata": [{"chapter": e.chapter, "correct": e.correct, "reason": e.reason} for e in scene.errata]
-        if scene
-        else [],
+        "errata": errata_json(scene, pr.names) if scene else [],
         "constraint_forces": [constraint_force_json(f, pr) for f in forces],
         "transformed": transformed_json(transformed) if transformed is not None else None,
         "hamilton": None,
@@ -134,6 +134,11 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     if beyond:
         # built last, so that they never take the chapter's steps' share of the display budget
         add_beyond(d, scene, result, pr)
+    if scene is not None:
+        # a chapter scene explains each step in its own terms; the generic sentence stays otherwise
+        result["steps"] = [
+            {**s, "explanation": reason(scene.id, s["title"]) or s["explanation"]} for s in result["steps"]
+        ]
     return result
 
 

@@ -13,7 +13,7 @@ from typing import Any
 import sympy as sp
 
 from app.engine import textbook
-from app.engine.budget import pythagoras, tidy
+from app.engine.budget import pythagoras, tidy, unbudgeted
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation
 from app.engine.names import unicode
@@ -33,7 +33,8 @@ class Printer:
 
     def tex(self, expr: Any) -> str:
         """LaTeX in a textbook's order (display only: the sympy strings are untouched)."""
-        return textbook.latex(expr, self.names)
+        with unbudgeted():  # printing must not eat the simplifications' share of the display budget
+            return textbook.latex(expr, self.names)
 
     def pair(self, expr: sp.Expr) -> dict[str, str]:
         return {"sympy": sp.sstr(expr), "latex": self.tex(expr)}
@@ -67,9 +68,10 @@ def equation_rows(d: Derivation, pr: Printer) -> list[str]:
     M, diagonal = eqs.mass_matrix, eqs.mass_matrix.is_diagonal()
     rows = []
     for k, r in enumerate(eqs.residuals):
-        own = d.table.qdd[k]
-        shown = textbook.normalised(display(r), M[k, k], diagonal, pr.names, own)
-        rows.append(f"{textbook.latex(shown, pr.names, first=own)} = 0")
+        own, residual = d.table.qdd[k], display(r)
+        with unbudgeted():
+            shown = textbook.normalised(residual, M[k, k], diagonal, pr.names, own)
+            rows.append(f"{textbook.latex(shown, pr.names, first=own)} = 0")
     return rows
 
 

@@ -80,7 +80,8 @@ class _Printer(LatexPrinter):
         if top:
             own = self.first is not None and term.has(self.first)
             return (-self.level(term), not own, negative, sp.default_sort_key(term))
-        return (self.constant(term) and not term.is_Number, negative, sp.default_sort_key(term))
+        rank = _parameter_rank(term.name) if term.is_Symbol and term not in self.moving else (9, "", "")
+        return (self.constant(term) and not term.is_Number, negative, rank, sp.default_sort_key(term))
 
     def split_sign(self, expr: sp.Expr) -> tuple[bool, sp.Expr]:
         """(negative, |expr|): a bracket of negative terms only is written positive, −(m₁ + m₂)."""

@@ -13,12 +13,12 @@ import math
 from collections.abc import Sequence
 from typing import Any
 
+from app.engine.names import latex
 from app.engine.report import CORE_STEPS
 from app.scenes.types import PANELS
 from app.viz.diagrams import diagram
 from app.viz.exprtree import maybe_tree
 from app.viz.mechanism import mechanism
-from app.engine.names import latex
 from app.viz.names import label
 
 LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collapsed
