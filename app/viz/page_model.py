@@ -16,6 +16,7 @@ from typing import Any
 from app.engine.names import latex
 from app.engine.report import CORE_STEPS
 from app.scenes.types import PANELS
+from app.viz.control_ranges import ticks, useful_range
 from app.viz.diagrams import diagram
 from app.viz.exprtree import maybe_tree
 from app.viz.mechanism import mechanism
@@ -121,8 +122,13 @@ def angles(doc: dict[str, Any]) -> set[str]:
 
 
 def _initial_controls(
-    doc: dict[str, Any], initial: dict[str, float], nonnegative: Sequence[str], angular: set[str]
+    doc: dict[str, Any],
+    initial: dict[str, float],
+    nonnegative: Sequence[str],
+    angular: set[str],
+    marks: dict[str, list[dict[str, Any]]] | None = None,
 ) -> list[dict]:
+    marks = marks or {}
     lengths = [p["default"] for p in doc["parameters"].values() if p.get("unit") == "m" and p["default"] > 0]
     scale = max([1.0, *lengths])
     controls = []
@@ -135,7 +141,9 @@ def _initial_controls(
         else:
             size = 3 * max(scale, abs(value))
             lo, hi = (0.0 if q in nonnegative else -size), size
-        vmax = max(10.0, 3 * abs(rate)) if angle else max(5.0, 3 * abs(rate), math.sqrt(9.81 * scale))
+        found = marks.get(f"{q}_dot", [])
+        reach = max([abs(m["value"]) for m in found], default=0.0)
+        vmax = max(10.0, 3 * abs(rate), 1.5 * reach) if angle else max(5.0, 3 * abs(rate), math.sqrt(9.81 * scale))
         unit = "rad" if angle else "m"
         controls.append(
             {"name": q, "label": f"{label(q)}(0)", "latex": latex(q), "unit": unit,
@@ -145,21 +153,33 @@ def _initial_controls(
         controls.append(
             {"name": f"{q}_dot", "label": f"{label(q + '_dot')}(0)", "latex": latex(f"{q}_dot"),
              "unit": f"{unit}/s", "min": _fmt(-vmax), "max": _fmt(vmax), "value": _fmt(rate), "log": False,
+             "ticks": _marks(found, f"{unit}/s"),
              "description": f"initial rate of change of {label(q)}"}
         )  # fmt: skip
     return controls
 
 
-def _parameter_controls(doc: dict[str, Any]) -> list[dict[str, Any]]:
+def _marks(found: Sequence[dict[str, Any]], unit: str) -> list[dict[str, Any]]:
+    def shown(x: float) -> str:
+        return _fmt(x).replace("-", "−")
+
+    return [{"value": _fmt(m["value"]), "label": m["label"], "text": f"{m['label']}: {shown(m['value'])} {unit}".strip()}
+            for m in found]  # fmt: skip
+
+
+def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any]]]) -> list[dict[str, Any]]:
     controls = []
     for name, info in doc["parameters"].items():
         default = float(info["default"])
         lo = info.get("min") if info.get("min") is not None else min(0.0, default) - 10 * max(1.0, abs(default))
         hi = info.get("max") if info.get("max") is not None else max(0.0, default) + 10 * max(1.0, abs(default))
-        log = lo > 0 and hi / lo >= 50
+        found = [m for m in marks.get(name, []) if lo <= m["value"] <= hi]
+        slider_lo, slider_hi, log = useful_range(default, float(lo), float(hi), found)
+        unit = info.get("unit") or ""
         controls.append(
-            {"name": name, "label": label(name), "latex": latex(name), "unit": info.get("unit") or "",
+            {"name": name, "label": label(name), "latex": latex(name), "unit": unit,
              "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(default), "log": log,
+             "slider_min": _fmt(slider_lo), "slider_max": _fmt(slider_hi), "ticks": _marks(found, unit),
              "description": info.get("description") or name}
         )  # fmt: skip
     return controls
@@ -242,6 +262,25 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular) -> dict[s
     }
 
 
+def _leaves(node: Any) -> set[str]:
+    if isinstance(node, str):
+        return {node}
+    if isinstance(node, list):
+        return set().union(*(_leaves(c) for c in node[1:])) if len(node) > 1 else set()
+    return set()
+
+
+def constant_accelerations(doc: dict[str, Any]) -> bool:
+    """Whether every acceleration is a constant (no coordinate, velocity or t in it): motion in t².
+
+    Such a motion is integrated exactly by any method of order two or more, so an error
+    against run time chart would show round-off and timing noise only."""
+    names = _names(doc)
+    moving = set(names) - set(doc["parameters"])
+    trees = [maybe_tree(pair.get("sympy"), names) for pair in doc["accelerations"].values()]
+    return all(t is not None and not (_leaves(t) & moving) for t in trees)
+
+
 def _panels(declared: Sequence[str], doc: dict[str, Any], reduction, spec) -> list[str]:
     """The declared panels this scene has data for, in the declared order."""
     has = {
@@ -251,6 +290,8 @@ def _panels(declared: Sequence[str], doc: dict[str, Any], reduction, spec) -> li
         "small-oscillations": reduction is not None and reduction["omega_squared"] is not None,
         "constraint-force": bool(doc.get("constraint_forces")),
         "momenta": any(c["name"].startswith("p_") for c in doc.get("conserved", [])),
+        # the chart teaches only where the reference motion is not a polynomial in t
+        "work-precision": not constant_accelerations(doc),
     }
     return [p for p in declared if p in PANELS and has.get(p, True)]
 
@@ -270,6 +311,7 @@ def scene_page(
     info = {**info, "panels": panels}
     defaults = {k: v["default"] for k, v in doc["parameters"].items()}
     angular = angles(doc)
+    marks = ticks(doc, info.get("initial", {}))
     client = _client(doc, info, reduction, spec, methods, nonnegative, angular)
     return {
         "info": info,
@@ -288,8 +330,8 @@ def scene_page(
         "summary": _summary(doc),
         "errata": doc.get("errata") or [],
         "transformed": _transformed(doc),
-        "parameters": _parameter_controls(doc),
-        "initial": _initial_controls(doc, info.get("initial", {}), nonnegative, angular),
+        "parameters": _parameter_controls(doc, marks),
+        "initial": _initial_controls(doc, info.get("initial", {}), nonnegative, angular, marks),
         "t_end": {
             "value": _fmt(info.get("t_end", 10.0)),
             "min": "0.5",
