@@ -101,7 +101,7 @@ def stability_marks(doc: dict[str, Any], ranges: dict[str, tuple[float, float]])
             signs = [_value(w2, doc, _env(doc, **{p: x})) for x in grid]
             for a, b, fa, fb in zip(grid, grid[1:], signs, signs[1:], strict=False):
                 if fa is not None and fb is not None and fa * fb < 0:
-                    value = _bisect(lambda x, p=p: _value(w2, doc, _env(doc, **{p: x})) or 0.0, a, b)
+                    value = _bisect(lambda x, p=p, w2=w2: _value(w2, doc, _env(doc, **{p: x})) or 0.0, a, b)
                     label = f"{formula(w2)} = 0: {unicode(coordinate)} = {formula(where)} changes stability"
                     marks.setdefault(p, []).append({"value": value, "label": label})
     return marks
