@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 
@@ -13,6 +14,7 @@ from app.web.api_check import router as check_router
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
 from app.web.playground import router as playground_router
+from app.web.playground import warm_examples
 from app.web.responses import ApiGzip
 from app.web.templating import static_app
 
@@ -23,6 +25,9 @@ async def lifespan(app: FastAPI) -> AsyncIterator[None]:
     # right-hand sides, in the background: the server answers at once, with scipy
     # while a compiled integrator is not ready yet.
     simulation.start_warming()
+    # the playground's examples too, so that a first reader of one does not wait for its derivation
+    if os.environ.get("LAGRANGE_WARM_EXAMPLES", "1") != "0":
+        warm_examples()
     yield
 
 

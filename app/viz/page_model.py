@@ -167,6 +167,16 @@ def _marks(found: Sequence[dict[str, Any]], unit: str) -> list[dict[str, Any]]:
             for m in found]  # fmt: skip
 
 
+# What a parameter without a description is, by its unit (so that a label never repeats the name: "m m").
+KIND_BY_UNIT = {"kg": "a mass", "m": "a length", "N/m": "a spring constant", "m/s^2": "an acceleration",
+                "m/s²": "an acceleration", "s": "a time", "1/s": "a rate", "rad/s": "an angular velocity",
+                "rad": "an angle", "N": "a force", "kg/s": "a drag coefficient"}  # fmt: skip
+
+
+def _described(info: dict[str, Any]) -> str:
+    return info.get("description") or KIND_BY_UNIT.get((info.get("unit") or "").strip(), "a parameter")
+
+
 def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any]]]) -> list[dict[str, Any]]:
     controls = []
     for name, info in doc["parameters"].items():
@@ -180,7 +190,7 @@ def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any
             {"name": name, "label": label(name), "latex": latex(name), "unit": unit,
              "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(default), "log": log,
              "slider_min": _fmt(slider_lo), "slider_max": _fmt(slider_hi), "ticks": _marks(found, unit),
-             "description": info.get("description") or name}
+             "description": _described(info)}
         )  # fmt: skip
     return controls
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import re
+import threading
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -160,6 +161,17 @@ def _number(text: str, field_id: str, what: str) -> float | None:
         raise FormError(f"{what}: {text[:30]!r} is not a number", field_id, text) from None
 
 
+# Quantities that are positive by nature: masses, lengths, stiffnesses and gravity, by unit or by the usual name.
+POSITIVE_UNITS = {"kg", "m", "N/m", "m/s^2", "m/s²", "m/s**2"}
+POSITIVE_NAMES = re.compile(r"(m|M|mu|l|L|R|r|k|g)\d*")
+JUST_ABOVE_ZERO = 1e-9  # the lowest value such a parameter gets when the form leaves it empty
+
+
+def positive_by_nature(name: str, unit: str) -> bool:
+    """A mass, length, spring constant or g: its lowest value defaults to just above 0 (never negative)."""
+    return unit.strip() in POSITIVE_UNITS if unit.strip() else bool(POSITIVE_NAMES.fullmatch(name.strip()))
+
+
 def spec_of(form: Form) -> dict[str, Any]:
     """The API request for what was typed (validated with the API's model)."""
     parameters = []
@@ -169,6 +181,8 @@ def spec_of(form: Form) -> dict[str, Any]:
             number = _number(p.get(key, ""), f"f-param-{i}-{key}", f"parameter {p.get('name') or i + 1}, {what}")
             if number is not None:
                 entry[key] = number
+        if "min" not in entry and positive_by_nature(entry["name"], entry["unit"]):
+            entry["min"] = JUST_ABOVE_ZERO
         parameters.append(entry)
     spec: dict[str, Any] = {"coordinates": _names(form.coordinates), "parameters": parameters}
     if form.form == "lagrangian":
@@ -290,6 +304,28 @@ def model_of(spec: dict[str, Any], doc: dict[str, Any]) -> dict[str, Any]:
     return scene_page(doc, info, particles, simulation_methods(), spec.get("nonnegative") or ())
 
 
+def warm_examples() -> threading.Thread:
+    """Derive the examples in the background at start-up, so that the first reader of each is answered at once.
+
+    The derivation runs in this process (a thread, not the worker pool: nothing waits on it)
+    and its answer goes into the service's cache under the key the page asks for."""
+
+    def warm() -> None:
+        service = user_systems.service
+        for example in EXAMPLES.values():
+            spec = spec_of(form_of(example))
+            key = user_systems.spec_key(spec)
+            if service.derivations.get(key) is None:
+                try:
+                    service.derivations.put(key, user_systems.derive_job(spec))
+                except Exception:  # noqa: BLE001 - warming is optional: the page derives on demand
+                    return
+
+    thread = threading.Thread(target=warm, name="warm-examples", daemon=True)
+    thread.start()
+    return thread
+
+
 def _example_links() -> list[dict[str, str]]:
     from urllib.parse import urlencode
 
@@ -374,6 +410,7 @@ async def playground(request: Request) -> Response:
     client = f"session:{session}" if session else f"address:{address}"
     error: FormError | None = None
     busy: Busy | None = None
+    empty = False
     model = spec = None
     form = form_of(FORCED_SPRING)
     try:
@@ -383,7 +420,9 @@ async def playground(request: Request) -> Response:
             form = Form()  # an empty form to start from
         elif request.query_params:
             form = read_form(request.query_params)
-        if form.coordinates or form.parameters or form.lagrangian or form.kinetic or form.particles:
+        if not (form.coordinates or form.parameters or form.lagrangian or form.kinetic or form.particles):
+            empty = True  # the page says what to enter
+        else:
             spec = spec_of(form)
             doc = json.loads(await service.derive(spec, client, address))
             model = await run_in_threadpool(model_of, spec, doc)
@@ -399,6 +438,8 @@ async def playground(request: Request) -> Response:
     context = {
         "form": form,
         "error": error.view() if error else None,
+        "empty": empty,
+        "submitted": "new" not in request.query_params and bool(request.query_params),
         "model": model,
         "m": model,
         "system_json": json.dumps(spec or {}, separators=(",", ":")).replace("<", "\\u003c"),
