@@ -9,6 +9,7 @@
 
 export function fmt(x) {
   if (x === null || x === undefined || Number.isNaN(x)) return "–";
+  if (x < 0) return `−${fmt(-x)}`; // a typeset minus sign, not a hyphen
   if (!Number.isFinite(x)) return x > 0 ? "∞" : "−∞";
   if (x === 0) return "0";
   const a = Math.abs(x);

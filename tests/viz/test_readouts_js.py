@@ -46,3 +46,48 @@ def test_one_sided_and_none():
     one = node("reduction.js", "(m) => m.turningPoints((x) => x - 1, -4, 4, 0)")  # a slope: turns at x = 1 only
     assert one == pytest.approx([1], abs=1e-9)
     assert node("reduction.js", "(m) => m.turningPoints((x) => 1, -4, 4, 0)") == []  # outside every well
+
+
+def test_every_axis_is_ticked_in_powers_of_ten_not_si_prefixes():
+    out = node(
+        "plotkit.js",
+        "(m) => [m.axis('t (s)'), m.axis('error (rad)', { type: 'log' }), m.momentumUnit('rad'), m.momentumUnit('m')]",
+    )
+    for ax in out[:2]:
+        assert ax["exponentformat"] == "power" and ax["showexponent"] == "all"
+    assert out[1]["type"] == "log"
+    assert out[2:] == ["kg·m²/s", "kg·m/s"]
+
+
+def test_plots_build_every_axis_through_the_shared_helper():
+    # no panel sets its own tick format (Plotly's default "B" format writes 1p for 10⁻¹²)
+    for name in ("plots.js", "reduction.js"):
+        text = (JS / name).read_text()
+        assert "exponentformat" not in text, name
+
+
+def test_constant_quantities_are_stated_as_constant():
+    out = node(
+        "summaries.js",
+        "(m) => [m.constantOrRange([0.8774, 0.8774, 0.87740000001], 'N'), m.constantOrRange([1, 2, 3], 'N')]",
+    )
+    assert out == ["constant: 0.8774 N", "ranges from 1 to 3 N"]
+
+
+def test_values_below_their_resolution_read_as_zero():
+    out = node("summaries.js", "(m) => [m.fmtResolved(-2.107e-14, 1e-9), m.fmtResolved(0.25, 1e-9), m.fmt(-5e-7)]")
+    assert out == ["≈ 0", "0.25", "−5 × 10⁻⁷"]
+
+
+def test_a_run_whose_error_is_comparable_to_the_motion_is_not_trusted():
+    out = node(
+        "summaries.js",
+        "(m) => [m.errorAgainstMotion({ error_estimate: 1.9, error_estimate_by_coordinate: { theta: 1.9 } },"
+        " { theta: [0, 3, 6] }, ['theta']), m.errorAgainstMotion({ error_estimate: 1e-8 }, { theta: [-1, 1] }, ['theta'])]",
+    )
+    assert out[0]["trusted"] is False and out[0]["coordinate"] == "theta" and out[0]["ratio"] == pytest.approx(1.9 / 6)
+    assert out[1]["trusted"] is True
+
+
+def test_the_run_time_shown_is_a_median():
+    assert node("summaries.js", "(m) => [m.median([3, 1, 2]), m.median([4, 1, 2, 3]), m.median([])]") == [2, 2.5, None]
