@@ -160,11 +160,15 @@ def _initial_controls(
 
 
 def _marks(found: Sequence[dict[str, Any]], unit: str) -> list[dict[str, Any]]:
-    def shown(x: float) -> str:
-        return _fmt(x).replace("-", "−")
-
-    return [{"value": _fmt(m["value"]), "label": m["label"], "text": f"{m['label']}: {shown(m['value'])} {unit}".strip()}
-            for m in found]  # fmt: skip
+    """Marks for a slider, each with a line of text; a pair ±v with the same meaning is said once."""
+    out = []
+    for m in found:
+        value = m["value"]
+        twin = any(o is not m and o["label"] == m["label"] and math.isclose(o["value"], -value) for o in found)
+        size = f"±{abs(value):.4g}" if twin else f"{value:.4g}".replace("-", "−")
+        text = "" if twin and value < 0 else f"{m['label']}: {size} {unit}".strip()
+        out.append({"value": _fmt(value), "label": m["label"], "text": text})
+    return out
 
 
 # What a parameter without a description is, by its unit (so that a label never repeats the name: "m m").

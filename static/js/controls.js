@@ -233,7 +233,7 @@ function control(group, c) {
   if (marks.length) {
     const list = el("datalist", { id: `${id}-ticks` });
     for (const t of marks) list.append(el("option", { "data-value": t.value, label: t.label }));
-    div.append(list, el("p", { class: "ticks" }, `Marked: ${marks.map((t) => t.text).join("; ")}`));
+    div.append(list, el("p", { class: "ticks" }, `Marked: ${marks.map((t) => t.text).filter(Boolean).join("; ")}`));
   }
   div.append(el("p", { class: "hint", id: `${id}-hint`, "aria-live": "polite" }));
   range.value = String(toSlider(div, Number(c.value)));
