@@ -73,6 +73,22 @@ def plain(name: str) -> str:
     return name
 
 
+# A symbol name inside running text: a short stem with digits (m1, x2, l0) or a name with a subscript (theta_0).
+_IN_PROSE = re.compile(r"\b(?:[A-Za-z]{1,2}\d+|[A-Za-z]+_(?:\d+|[A-Za-z]+\d*))\b")
+
+
+def prose(text: str) -> str:
+    """Running text with the symbol names in it written as a reader writes them: m1 -> m₁, theta_0 -> θ₀."""
+
+    def one(match: re.Match[str]) -> str:
+        name = match.group(0)
+        head, _, tail = name.partition("_")
+        # theta_0 is θ₀ (a subscript), p_phi is p_φ
+        return unicode(head + tail) if tail.isdigit() else unicode(name)
+
+    return _IN_PROSE.sub(one, text)
+
+
 def display_names(names: Iterable[str]) -> dict[str, dict[str, str]]:
     """Each name with its three written forms, for the derivation document."""
     return {n: {"latex": latex(n), "unicode": unicode(n), "plain": plain(n)} for n in names}

@@ -13,7 +13,7 @@ import math
 from collections.abc import Sequence
 from typing import Any
 
-from app.engine.names import latex
+from app.engine.names import latex, prose
 from app.engine.report import CORE_STEPS
 from app.scenes.types import PANELS
 from app.viz.control_ranges import ticks, useful_range
@@ -322,7 +322,8 @@ def scene_page(
     reduction = _reduction(doc)
     spec = mechanism(info.get("id", doc.get("id", "")), particles, doc["coordinates"], "animation-3d" in declared)
     panels = _panels(declared, doc, reduction, spec)
-    info = {**info, "panels": panels}
+    # symbol names in the scene's prose as a reader writes them (m₁, x₂)
+    info = {**info, "panels": panels, **{k: prose(info[k]) for k in ("statement", "figure", "summary") if info.get(k)}}
     defaults = {k: v["default"] for k, v in doc["parameters"].items()}
     angular = angles(doc)
     marks = ticks(doc, info.get("initial", {}))

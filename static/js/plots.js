@@ -112,7 +112,7 @@ class ConstraintForcePanel extends TimePanel {
     });
     this.drawSeries(run, top, null, "force (N)", null,
       { shapes: [{ type: "line", xref: "paper", x0: 0, x1: 1, y0: 0, y1: 0, line: { color: "#57606a", width: 1 } }] });
-    const ranges = top.filter((s) => !s.name.includes("slack")).map((s) => `${capital(s.name)}: ${constantOrRange(s.values, "N")}.`);
+    const ranges = top.filter((s) => !s.name.includes("slack")).map((s) => `${capital(s.name)} ${constantOrRange(s.values, "N")}.`);
     this.readout.textContent = [...notes, ...ranges].join(" ");
     seriesTable(this.summary, "Constraint forces over the run (N)", run.t, top.filter((s) => !s.name.includes("slack")));
   }

@@ -37,14 +37,14 @@ export function fmtResolved(x, floor) {
   return Number.isFinite(x) && Number.isFinite(floor) && Math.abs(x) <= floor ? "≈ 0" : fmt(x);
 }
 
-/** "constant: 0.8774 N" when a series does not vary beyond round-off, else "ranges from a to b N". */
+/** "is constant: 0.8774 N" when a series does not vary beyond round-off, else "ranges from a to b N". */
 export function constantOrRange(values, unit = "") {
   let lo = Infinity, hi = -Infinity;
   for (const v of values) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
   const u = unit ? ` ${unit}` : "";
   if (lo > hi) return "no finite value";
   // constant when the spread is below 10⁻⁹ of the size (the values' round-off) or the 4 shown digits agree
-  if (hi - lo <= 1e-9 * Math.max(Math.abs(lo), Math.abs(hi)) || fmt(lo) === fmt(hi)) return `constant: ${fmt((lo + hi) / 2)}${u}`;
+  if (hi - lo <= 1e-9 * Math.max(Math.abs(lo), Math.abs(hi)) || fmt(lo) === fmt(hi)) return `is constant: ${fmt((lo + hi) / 2)}${u}`;
   return `ranges from ${fmt(lo)} to ${fmt(hi)}${u}`;
 }
 

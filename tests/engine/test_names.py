@@ -2,7 +2,7 @@
 
 from app.engine.contract import derivation_json
 from app.engine.derive import derive
-from app.engine.names import latex, plain, unicode
+from app.engine.names import latex, plain, prose, unicode
 from app.scenes.types import Parameter, System
 from app.viz.page_model import scene_page
 
@@ -13,6 +13,11 @@ def test_forms_of_a_name():
     assert (latex("x1"), unicode("x1")) == ("x_{1}", "x₁")
     assert (latex("p_phi"), unicode("p_phi")) == (r"p_{\phi}", "p_φ")
     assert (latex("Omega"), unicode("Omega")) == (r"\Omega", "Ω")
+
+
+def test_names_in_prose_are_written_as_a_reader_writes_them():
+    text = "Two masses m1 and m2 at x1, x2 with rest length l0; start at theta_0 (section 4.5, Ex. 4.2)."
+    assert prose(text) == "Two masses m₁ and m₂ at x₁, x₂ with rest length l₀; start at θ₀ (section 4.5, Ex. 4.2)."
 
 
 def test_omega_is_the_same_letter_in_steps_controls_and_document():

@@ -71,7 +71,7 @@ def test_constant_quantities_are_stated_as_constant():
         "summaries.js",
         "(m) => [m.constantOrRange([0.8774, 0.8774, 0.87740000001], 'N'), m.constantOrRange([1, 2, 3], 'N')]",
     )
-    assert out == ["constant: 0.8774 N", "ranges from 1 to 3 N"]
+    assert out == ["is constant: 0.8774 N", "ranges from 1 to 3 N"]
 
 
 def test_values_below_their_resolution_read_as_zero():
