@@ -151,7 +151,10 @@ class _Printer(LatexPrinter):
         moving_den = [f for f in den if not self.constant(f)]
         self.depth += 1
         try:
-            if moving_den or not [f for f in num if not self.constant(f)]:
+            # one fraction when the denominator moves, when nothing moves, or when only 1 stands over the
+            # constants: (F cos ωt − b ẋ − k x)/m rather than (1/m)(…)
+            bare = p == 1 and not const_num
+            if moving_den or not [f for f in num if not self.constant(f)] or (bare and const_den):
                 # one fraction over everything: (p_φ² cos θ)/(m² R⁴ sin³ θ), or g/R alone
                 top = ([p] if p != 1 else []) + num
                 bottom = ([q] if q != 1 else []) + den
