@@ -52,7 +52,10 @@ def latex(name: str) -> str:
             return rf"\{accent}{{{stem}}}" + (f"_{{{sub}}}" if sub else "")
     if "_" in name:
         head, _, tail = name.partition("_")
-        return f"{latex(head)}_{{{latex(tail)}}}"
+        # a word as a subscript is upright text: U_eff -> U_{\text{eff}}
+        word = tail.isalpha() and len(tail) > 1 and tail not in GREEK
+        sub = r"\text{" + tail + "}" if word else latex(tail)
+        return f"{latex(head)}_{{{sub}}}"
     stem, sub = _tex_base(name)
     return stem + (f"_{{{sub}}}" if sub else "")
 

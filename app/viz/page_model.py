@@ -343,7 +343,7 @@ def scene_page(
         ),  # fmt: skip
         "steps": _steps(doc),
         "summary": _summary(doc),
-        "errata": doc.get("errata") or [],
+        "errata": [{**e, "reason": prose(e["reason"])} for e in doc.get("errata") or []],
         "transformed": _transformed(doc),
         "parameters": _parameter_controls(doc, marks),
         "initial": _initial_controls(doc, info.get("initial", {}), nonnegative, angular, marks),

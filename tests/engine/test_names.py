@@ -13,6 +13,7 @@ def test_forms_of_a_name():
     assert (latex("x1"), unicode("x1")) == ("x_{1}", "x₁")
     assert (latex("p_phi"), unicode("p_phi")) == (r"p_{\phi}", "p_φ")
     assert (latex("Omega"), unicode("Omega")) == (r"\Omega", "Ω")
+    assert latex("U_eff") == r"U_{\text{eff}}" and latex("E_r") == "E_{r}"
 
 
 def test_names_in_prose_are_written_as_a_reader_writes_them():
