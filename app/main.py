@@ -15,6 +15,7 @@ from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
 from app.web.headers import SecurityHeaders
 from app.web.playground import router as playground_router
+from app.web.playground import warm_examples
 from app.web.responses import ApiGzip
 from app.web.templating import static_app
 
@@ -26,6 +27,8 @@ async def lifespan(app: FastAPI) -> AsyncIterator[None]:
     # while a compiled integrator is not ready yet.
     if settings().warm:
         simulation.start_warming()
+        # the playground's examples too, so that a first reader of one does not wait for its derivation
+        warm_examples()
     yield
 
 

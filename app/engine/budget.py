@@ -94,6 +94,17 @@ def display_budget(seconds: float) -> Iterator[None]:
         _local.deadline = previous
 
 
+@contextmanager
+def unbudgeted() -> Iterator[None]:
+    """Work in the block (display printing) does not count against the shared display budget."""
+    started = time.monotonic()
+    try:
+        yield
+    finally:
+        if getattr(_local, "deadline", None) is not None:
+            _local.deadline += time.monotonic() - started
+
+
 def _remaining(seconds: float) -> float:
     deadline = getattr(_local, "deadline", None)
     return seconds if deadline is None else min(seconds, deadline - time.monotonic())

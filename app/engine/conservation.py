@@ -27,6 +27,7 @@ import sympy as sp
 from app.engine.budget import is_zero, tidy
 from app.engine.lagrange import Equations
 from app.engine.mechanics import Mechanics
+from app.engine.names import unicode
 
 
 @dataclass(frozen=True)
@@ -73,7 +74,7 @@ def energetics(mech: Mechanics, eqs: Equations) -> Energetics:
             f"p_{name}",
             f"p_{{{table.latex_names()[table.q[table.names.index(name)]]}}}",
             eqs.momenta[table.names.index(name)],
-            f"{name} does not appear in L and no generalized force acts on it, so dp/dt = ∂L/∂{name} = 0.",
+            f"{unicode(name)} does not appear in L and no generalized force acts on it, so dp/dt = ∂L/∂{unicode(name)} = 0.",
         )
         for name in cyclic
     ]

@@ -9,13 +9,16 @@ import sympy as sp
 from app.engine.budget import display_budget, pythagoras
 from app.engine.constraints import ConstraintForce, constraint_forces
 from app.engine.derive import Derivation
+from app.engine.errata import errata_json
 from app.engine.hamilton import hamilton
 from app.engine.modes import normal_modes
-from app.engine.report import Printer, build_steps, constraint_steps, new_lagrangian, transform_steps
+from app.engine.names import display_names
+from app.engine.report import Printer, build_steps, constraint_steps, equation_rows, new_lagrangian, transform_steps
 from app.engine.report import display as _show
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.rods import fixed_distances
 from app.engine.transform import Transformed, transform
+from app.scenes.reasons import reason
 from app.scenes.types import Parameter, Scene
 
 
@@ -54,6 +57,24 @@ def held_momenta(d: Derivation, scene: Scene | None) -> dict[str, float]:
     }
 
 
+def angle_coordinates(d: Derivation) -> list[str]:
+    """Coordinates that are angles: each is, alone, the argument of sin, cos or tan in the positions or in L."""
+    exprs = [c for r in d.mechanics.positions for c in r] + [d.mechanics.L]
+    arguments = {f.args[0] for e in exprs for f in sp.sympify(e).atoms(sp.sin, sp.cos, sp.tan)}
+    return [name for name, q in zip(d.table.names, d.table.q, strict=True) if q in arguments or -q in arguments]
+
+
+def symbol_names(d: Derivation) -> dict[str, dict[str, str]]:
+    """How every name the document uses is written (LaTeX, Unicode, plain): read by pages, plots and exports."""
+    q = d.table.names
+    conserved = [c.name for c in d.energetics.conserved]
+    momenta = [f"p_{n}" for n in q]
+    return display_names(
+        dict.fromkeys([*q, *(f"{n}_dot" for n in q), *(f"{n}_ddot" for n in q), *d.table.parameter_names, "t",
+                       *momenta, *conserved])
+    )  # fmt: skip
+
+
 def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) -> dict[str, Any]:
     table, eqs, en, red = d.table, d.equations, d.energetics, d.reduction
     pr = Printer(table.latex_names())
@@ -61,6 +82,8 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     transformed = transform(d.system)
     result: dict[str, Any] = {
         "coordinates": list(table.names),
+        "angles": angle_coordinates(d),
+        "symbols": symbol_names(d),
         "parameters": parameters_json(d.system.parameters),
         "kinetic": pr.pair(d.mechanics.T) if d.mechanics.T is not None else None,
         "potential": pr.pair(d.mechanics.U) if d.mechanics.U is not None else None,
@@ -68,8 +91,8 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "hamiltonian": pr.pair(_show(en.hamiltonian)),
         "energy": pr.pair(_show(en.energy)),
         "equations_of_motion": [
-            {"coordinate": name, **pr.pair(_show(r)), "latex": f"{pr.tex(_show(r))} = 0"}
-            for name, r in zip(table.names, eqs.residuals, strict=True)
+            {"coordinate": name, **pr.pair(_show(r)), "latex": row}
+            for name, r, row in zip(table.names, eqs.residuals, equation_rows(d, pr), strict=True)
         ],
         "accelerations": {name: pr.pair(_show(a)) for name, a in zip(table.names, eqs.accelerations, strict=True)},
         "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],
@@ -92,9 +115,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "effective_potential": None,
         "steps": build_steps(d) + constraint_steps(forces, pr) + (transform_steps(transformed) if transformed else []),
         "scene": scene_json(scene) if scene is not None else None,
-        "errata": [{"chapter": e.chapter, "correct": e.correct, "reason": e.reason} for e in scene.errata]
-        if scene
-        else [],
+        "errata": errata_json(scene, pr.names) if scene else [],
         "constraint_forces": [constraint_force_json(f, pr) for f in forces],
         "transformed": transformed_json(transformed) if transformed is not None else None,
         "hamilton": None,
@@ -116,6 +137,11 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     if beyond:
         # built last, so that they never take the chapter's steps' share of the display budget
         add_beyond(d, scene, result, pr)
+    if scene is not None:
+        # a chapter scene explains each step in its own terms; the generic sentence stays otherwise
+        result["steps"] = [
+            {**s, "explanation": reason(scene.id, s["title"]) or s["explanation"]} for s in result["steps"]
+        ]
     return result
 
 

@@ -12,9 +12,11 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine.budget import pythagoras, tidy
+from app.engine import textbook
+from app.engine.budget import pythagoras, tidy, unbudgeted
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation
+from app.engine.names import unicode
 from app.engine.transform import Transformed, collected, compact
 
 # The steps a reader needs to follow the argument: the Lagrangian, its equations of motion, the
@@ -30,7 +32,9 @@ class Printer:
     names: dict[sp.Symbol, str]
 
     def tex(self, expr: Any) -> str:
-        return sp.latex(expr, symbol_names=self.names)
+        """LaTeX in a textbook's order (display only: the sympy strings are untouched)."""
+        with unbudgeted():  # printing must not eat the simplifications' share of the display budget
+            return textbook.latex(expr, self.names)
 
     def pair(self, expr: sp.Expr) -> dict[str, str]:
         return {"sympy": sp.sstr(expr), "latex": self.tex(expr)}
@@ -46,7 +50,7 @@ def _aligned(rows: list[str]) -> str:
 
 def plain_name(name: str) -> str:
     """A coordinate's name as a reader writes it in running text: theta -> θ, x1 -> x₁."""
-    return sp.pretty(sp.Symbol(name), use_unicode=True)
+    return unicode(name)
 
 
 def _step(title: str, rows: list[str], sympy: Any, explanation: str) -> dict[str, str]:
@@ -56,6 +60,19 @@ def _step(title: str, rows: list[str], sympy: Any, explanation: str) -> dict[str
 
 def display(expr: sp.Expr) -> sp.Expr:
     return tidy(pythagoras(expr)) if expr.free_symbols else expr
+
+
+def equation_rows(d: Derivation, pr: Printer) -> list[str]:
+    """Each Euler–Lagrange equation as a textbook prints it: θ̈ + (g/R) sin θ = 0 (display only)."""
+    eqs = d.equations
+    M, diagonal = eqs.mass_matrix, eqs.mass_matrix.is_diagonal()
+    rows = []
+    for k, r in enumerate(eqs.residuals):
+        own, residual = d.table.qdd[k], display(r)
+        with unbudgeted():
+            shown = textbook.normalised(residual, M[k, k], diagonal, pr.names, own)
+            rows.append(f"{textbook.latex(shown, pr.names, first=own)} = 0")
+    return rows
 
 
 def build_steps(d: Derivation) -> list[dict[str, str]]:
@@ -152,9 +169,14 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     steps.append(
         _step(
             "Euler–Lagrange equations",
-            [f"{pr.tex(r)} = 0" for r in residuals],
+            equation_rows(d, pr),
             residuals,
-            "For each coordinate, d/dt ∂L/∂q̇ − ∂L/∂q − Q vanishes along the true motion.",
+            "For each coordinate, d/dt ∂L/∂q̇ − ∂L/∂q − Q vanishes along the true motion"
+            + (
+                "; each equation is shown divided by its acceleration's coefficient."
+                if eqs.mass_matrix.is_diagonal()
+                else "."
+            ),
         )
     )
     steps.append(
@@ -268,7 +290,8 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
                 rf"m_\text{{eff}} = {pr.tex(red.effective_mass)}",
             ],
             [red.effective_potential, red.effective_mass],
-            "With the cyclic motion folded in, the remaining coordinate moves like a particle of mass m_eff in U_eff.",
+            "With the cyclic motion folded in, the remaining coordinate moves like a particle of mass m_eff in the "
+            "potential U_eff.",
         )
     )
     out.append(
@@ -276,21 +299,23 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
             "Energy first integral",
             [rf"E_r = {pr.tex(red.radial_energy)}"],
             red.radial_energy,
-            f"The conserved h, written in {red.coordinate} alone: a first-order equation for {red.coordinate}.",
+            f"The conserved h, written in {unicode(red.coordinate)} alone: a first-order equation for "
+            f"{unicode(red.coordinate)}.",
         )
     )
     out.append(
         _step(
             "Time as an integral",
-            [rf"t = {pr.tex(red.time_integral)}"],
+            [rf"t = \int \sqrt{{\frac{{m_\text{{eff}}}}{{2\,\left(E_r - U_\text{{eff}}({rn})\right)}}}}\, d{rn}"],
             red.time_integral,
-            f"Separating variables in the energy integral gives the time to reach each {red.coordinate}.",
+            f"Separating variables in the energy integral gives the time to reach each {unicode(red.coordinate)}, "
+            "with m_eff and U_eff as in the step before.",
         )
     )
     if red.equilibria:
         rows = [rf"{rn}_0 = {pr.tex(e.position)},\quad \omega^2 = {pr.tex(e.omega_squared)}" for e in red.equilibria]
         sym: Any = [(e.position, e.omega_squared) for e in red.equilibria]
-        why = "Equilibria make U_eff' vanish; about each, ω² = U_eff''/m_eff (oscillation when positive, instability when negative)."
+        why = "Equilibria make U_eff′ vanish; about each, ω² = U_eff″/m_eff (oscillation when positive, instability when negative)."
     else:
         rows = [
             rf"U_\text{{eff}}'({rn}_0) = {pr.tex(red.equilibrium_condition.xreplace({r: sp.Symbol(r.name + '0')}))} = 0",
@@ -298,14 +323,18 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
         ]
         sym = [red.equilibrium_condition, red.omega_squared_at]
         if not red.equilibrium_condition.has(r):
-            why = f"U_eff' does not depend on {red.coordinate} and is not zero, so there is no equilibrium."
+            why = f"U_eff′ does not depend on {unicode(red.coordinate)} and is not zero, so there is no equilibrium."
         else:
             why = (
-                f"No closed-form root was found; the condition and the frequency hold at any {red.coordinate}_0 "
+                f"No closed-form root was found; the condition and the frequency hold at any {unicode(red.coordinate + '0')} "
                 "that satisfies it."
             )
     out.append(_step("Equilibria and small oscillations", rows, sym, why))
     return out
+
+
+# The constraint function's name: a calligraphic C, which no parameter (g is gravity) can be.
+CONSTRAINT = r"\mathcal{C}"
 
 
 def constraint_steps(forces: tuple[ConstraintForce, ...], pr: Printer) -> list[dict[str, str]]:
@@ -315,23 +344,23 @@ def constraint_steps(forces: tuple[ConstraintForce, ...], pr: Printer) -> list[d
     return [
         _step(
             "Constraints in Cartesian form",
-            [rf"g_{{{a + 1}}} = {pr.tex(f.g)} = 0" for a, f in enumerate(forces)],
+            [rf"{CONSTRAINT}_{{{a + 1}}} = {pr.tex(f.g)} = 0" for a, f in enumerate(forces)],
             [f.g for f in forces],
-            "Each constraint the coordinates satisfy silently is written again as a surface g = 0 in Cartesian "
-            "space; it can only push along its normal, the gradient of g.",
+            "Each constraint the coordinates satisfy silently is written again as a surface 𝒞 = 0 in Cartesian "
+            "space; it can only push along its normal, the gradient of 𝒞.",
         ),
         _step(
             "Forces of constraint",
             [
                 (rf"\lambda_{{{a + 1}}} = {pr.tex(f.multiplier)},\quad " if f.multiplier != f.force else "")
-                + rf"F_{{{a + 1}}} = \lambda_{{{a + 1}}} |\nabla g_{{{a + 1}}}| = {pr.tex(f.force)}"
+                + rf"F_{{{a + 1}}} = \lambda_{{{a + 1}}} |\nabla {CONSTRAINT}_{{{a + 1}}}| = {pr.tex(f.force)}"
                 + rf"\quad (\text{{{f.constraint.name}}})"
                 for a, f in enumerate(forces)
             ],
             [f.force for f in forces],
-            "Newton's law with the unknown push λ ∇g, m r̈ = −∇U + Σ λ ∇g, is solved for the multipliers λ with the "
-            "engine's accelerations put in for r̈; each force F = λ |∇g| is then a function of the coordinates and "
-            "velocities alone, positive along ∇g.",
+            "Newton's law with the unknown push λ ∇𝒞, m r̈ = −∇U + Σ λ ∇𝒞, is solved for the multipliers λ with the "
+            "engine's accelerations put in for r̈; each force F = λ |∇𝒞| is then a function of the coordinates and "
+            "velocities alone, positive along ∇𝒞.",
         ),
     ]
 

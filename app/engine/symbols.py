@@ -15,17 +15,8 @@ from dataclasses import dataclass
 import sympy as sp
 
 from app.engine.errors import DerivationError
+from app.engine.names import latex
 from app.engine.parse import check_name
-
-
-def _latex_name(name: str) -> str:
-    return sp.latex(sp.Symbol(name))
-
-
-def _dotted(name: str, dots: str) -> str:
-    # x_{1} -> \dot{x}_{1}: the dot sits on the stem, not on the subscript.
-    stem, _, sub = _latex_name(name).partition("_")
-    return rf"\{dots}{{{stem}}}" + (f"_{sub}" if sub else "")
 
 
 @dataclass(frozen=True)
@@ -74,9 +65,11 @@ class SymbolTable:
         """How each symbol prints: velocities with a dot, accelerations with two."""
         table: dict[sp.Symbol, str] = {}
         for name, q, qd, qdd in zip(self.names, self.q, self.qd, self.qdd, strict=True):
-            table[q] = _latex_name(name)
-            table[qd] = _dotted(name, "dot")
-            table[qdd] = _dotted(name, "ddot")
+            table[q] = latex(name)
+            table[qd] = latex(f"{name}_dot")
+            table[qdd] = latex(f"{name}_ddot")
+        for name, p in zip(self.parameter_names, self.params, strict=True):
+            table[p] = latex(name)
         return table
 
     def dt(self, expr: sp.Expr) -> sp.Expr:

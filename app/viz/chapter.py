@@ -14,6 +14,14 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
+# What "the chapter" is, said once for every page that refers to it.
+ABOUT = (
+    "The chapter is a set of lecture notes on Lagrangian mechanics (sections 4.1 to 4.9): generalized "
+    "coordinates and constraints, the Euler–Lagrange equations from Hamilton's principle, generalized momenta "
+    "and cyclic coordinates, systems of particles, and the Hamiltonian against the energy, each taught "
+    "through worked examples. Every scene here is one of those examples, derived again by the engine."
+)
+
 
 @dataclass(frozen=True)
 class Section:

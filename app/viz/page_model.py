@@ -10,11 +10,12 @@ from __future__ import annotations
 
 import json
 import math
-import re
 from collections.abc import Sequence
 from typing import Any
 
+from app.engine.names import latex, prose
 from app.engine.report import CORE_STEPS
+from app.viz.control_ranges import ticks, useful_range
 from app.viz.diagrams import diagram
 from app.viz.exprtree import TreeError, maybe_tree, tree
 from app.viz.mechanism import mechanism
@@ -55,11 +56,11 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         {"latex": f"{c.get('latex_name') or c['name']} = {c['latex']}", "reason": c["reason"]}
         for c in doc.get("conserved", [])
     ]
-    ddot = {c: rf"\ddot{{{_latex_symbol(c)}}}" for c in q}
+    ddot = {c: latex(f"{c}_ddot") for c in q}
     return {
         "equations": [e["latex"] for e in doc["equations_of_motion"]],
         "accelerations": [f"{ddot[c]} = {doc['accelerations'][c]['latex']}" for c in q],
-        "momenta": [f"p_{{{_latex_symbol(c)}}} = {doc['momenta'][c]['latex']}" for c in q],
+        "momenta": [f"{latex('p_' + c)} = {doc['momenta'][c]['latex']}" for c in q],
         "conserved": conserved,
         "h_equals_e": doc["hamiltonian_equals_energy"],
         "h_reason": doc["hamiltonian_energy_reason"],
@@ -70,7 +71,7 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         "effective_potential": (
             {
                 **doc["effective_potential"],
-                "coordinate_latex": _latex_symbol(doc["effective_potential"]["coordinate"]) + " = ",
+                "coordinate_latex": latex(doc["effective_potential"]["coordinate"]) + " = ",
             }
             if doc.get("effective_potential")
             else None
@@ -79,24 +80,13 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
     }
 
 
-_GREEK_TEX = {"alpha", "beta", "gamma", "delta", "theta", "phi", "psi", "rho", "omega", "lambda", "mu", "sigma", "tau",
-              "chi", "xi", "eta", "zeta", "nu", "kappa", "epsilon", "iota"}  # fmt: skip
-
-
-def _latex_symbol(name: str) -> str:
-    stem = name.rstrip("0123456789")
-    digits = name[len(stem) :]
-    tex = f"\\{stem}" if stem in _GREEK_TEX else stem
-    return f"{tex}_{{{digits}}}" if digits else tex
-
-
 def _transformed(doc: dict[str, Any]) -> list[dict[str, Any]] | None:
     """The derivation in other coordinates (the rail's centre of mass and separation), as labelled rows of LaTeX."""
     tr = doc.get("transformed")
     if not tr:
         return None
     q = tr.get("coordinates", [])
-    sym = {c: _latex_symbol(c) for c in q}
+    sym = {c: latex(c) for c in q}
     rows: list[dict[str, Any]] = []
 
     def add(title: str, items: list[str]) -> None:
@@ -104,7 +94,7 @@ def _transformed(doc: dict[str, Any]) -> list[dict[str, Any]] | None:
             rows.append({"title": title, "latex": items})
 
     add("New coordinates", [f"{sym.get(c, c)} = {e['latex']}" for c, e in tr.get("definitions", {}).items()])
-    add("Old coordinates in the new", [f"{_latex_symbol(c)} = {e['latex']}" for c, e in tr.get("inverse", {}).items()])
+    add("Old coordinates in the new", [f"{latex(c)} = {e['latex']}" for c, e in tr.get("inverse", {}).items()])
     if "lagrangian" in tr:
         add("Lagrangian", [f"L = {tr['lagrangian']['latex']}"])
     add("Cyclic coordinates", [", ".join(sym.get(c, c) for c in tr.get("cyclic", []))] if tr.get("cyclic") else [])
@@ -126,21 +116,19 @@ def _fmt(x: float) -> str:
     return f"{x:.6g}"
 
 
-def angles(doc: dict[str, Any], particles: Sequence[tuple[str, Sequence[str]]] = ()) -> set[str]:
-    """Coordinates that are angles: each appears alone as the argument of sin, cos or tan somewhere in the set-up."""
-    texts = [c for _, pos in particles for c in pos]
-    texts += [(doc.get(k) or {}).get("sympy", "") for k in ("lagrangian", "potential", "kinetic")]
-    found = set()
-    for q in doc["coordinates"]:
-        pattern = re.compile(rf"\b(sin|cos|tan)\(\s*-?{re.escape(q)}\s*\)")
-        if any(pattern.search(t or "") for t in texts):
-            found.add(q)
-    return found
+def angles(doc: dict[str, Any]) -> set[str]:
+    """Coordinates that are angles, as the derivation document records them."""
+    return set(doc.get("angles") or [])
 
 
 def _initial_controls(
-    doc: dict[str, Any], initial: dict[str, float], nonnegative: Sequence[str], angular: set[str]
+    doc: dict[str, Any],
+    initial: dict[str, float],
+    nonnegative: Sequence[str],
+    angular: set[str],
+    marks: dict[str, list[dict[str, Any]]] | None = None,
 ) -> list[dict]:
+    marks = marks or {}
     lengths = [p["default"] for p in doc["parameters"].values() if p.get("unit") == "m" and p["default"] > 0]
     scale = max([1.0, *lengths])
     controls = []
@@ -153,32 +141,60 @@ def _initial_controls(
         else:
             size = 3 * max(scale, abs(value))
             lo, hi = (0.0 if q in nonnegative else -size), size
-        vmax = max(10.0, 3 * abs(rate)) if angle else max(5.0, 3 * abs(rate), math.sqrt(9.81 * scale))
+        found = marks.get(f"{q}_dot", [])
+        reach = max([abs(m["value"]) for m in found], default=0.0)
+        vmax = max(10.0, 3 * abs(rate), 1.5 * reach) if angle else max(5.0, 3 * abs(rate), math.sqrt(9.81 * scale))
         unit = "rad" if angle else "m"
         controls.append(
-            {"name": q, "label": f"{label(q)}(0)", "latex": _latex_symbol(q), "unit": unit,
+            {"name": q, "label": f"{label(q)}(0)", "latex": latex(q), "unit": unit,
              "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(value), "log": False,
              "description": f"initial {'angle' if angle else 'position'} {label(q)}"}
         )  # fmt: skip
         controls.append(
-            {"name": f"{q}_dot", "label": f"{label(q + '_dot')}(0)", "latex": rf"\dot{{{_latex_symbol(q)}}}",
+            {"name": f"{q}_dot", "label": f"{label(q + '_dot')}(0)", "latex": latex(f"{q}_dot"),
              "unit": f"{unit}/s", "min": _fmt(-vmax), "max": _fmt(vmax), "value": _fmt(rate), "log": False,
+             "ticks": _marks(found, f"{unit}/s"),
              "description": f"initial rate of change of {label(q)}"}
         )  # fmt: skip
     return controls
 
 
-def _parameter_controls(doc: dict[str, Any]) -> list[dict[str, Any]]:
+def _marks(found: Sequence[dict[str, Any]], unit: str) -> list[dict[str, Any]]:
+    """Marks for a slider, each with a line of text; a pair ±v with the same meaning is said once."""
+    out = []
+    for m in found:
+        value = m["value"]
+        twin = any(o is not m and o["label"] == m["label"] and math.isclose(o["value"], -value) for o in found)
+        size = f"±{abs(value):.4g}" if twin else f"{value:.4g}".replace("-", "−")
+        text = "" if twin and value < 0 else f"{m['label']}: {size} {unit}".strip()
+        out.append({"value": _fmt(value), "label": m["label"], "text": text})
+    return out
+
+
+# What a parameter without a description is, by its unit (so that a label never repeats the name: "m m").
+KIND_BY_UNIT = {"kg": "a mass", "m": "a length", "N/m": "a spring constant", "m/s^2": "an acceleration",
+                "m/s²": "an acceleration", "s": "a time", "1/s": "a rate", "rad/s": "an angular velocity",
+                "rad": "an angle", "N": "a force", "kg/s": "a drag coefficient"}  # fmt: skip
+
+
+def _described(info: dict[str, Any]) -> str:
+    return info.get("description") or KIND_BY_UNIT.get((info.get("unit") or "").strip(), "a parameter")
+
+
+def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any]]]) -> list[dict[str, Any]]:
     controls = []
     for name, info in doc["parameters"].items():
         default = float(info["default"])
         lo = info.get("min") if info.get("min") is not None else min(0.0, default) - 10 * max(1.0, abs(default))
         hi = info.get("max") if info.get("max") is not None else max(0.0, default) + 10 * max(1.0, abs(default))
-        log = lo > 0 and hi / lo >= 50
+        found = [m for m in marks.get(name, []) if lo <= m["value"] <= hi]
+        slider_lo, slider_hi, log = useful_range(default, float(lo), float(hi), found)
+        unit = info.get("unit") or ""
         controls.append(
-            {"name": name, "label": label(name), "latex": _latex_symbol(name), "unit": info.get("unit") or "",
+            {"name": name, "label": label(name), "latex": latex(name), "unit": unit,
              "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(default), "log": log,
-             "description": info.get("description") or name}
+             "slider_min": _fmt(slider_lo), "slider_max": _fmt(slider_hi), "ticks": _marks(found, unit),
+             "description": _described(info)}
         )  # fmt: skip
     return controls
 
@@ -317,8 +333,10 @@ def scene_page(
         proven=doc.get("fixed_distances") or (),
     )
     panels = _panels(declared, doc, reduction, spec, scene)
-    info = {**info, "panels": panels}
-    angular = angles(doc, particles)
+    # symbol names in the scene's prose as a reader writes them (m₁, x₂)
+    info = {**info, "panels": panels, **{k: prose(info[k]) for k in ("statement", "figure", "summary") if info.get(k)}}
+    angular = angles(doc)
+    marks = ticks(doc, info.get("initial", {}))
     client = _client(doc, info, reduction, spec, methods, nonnegative, angular)
     return {
         "info": info,
@@ -340,10 +358,10 @@ def scene_page(
         "animation_none": bool(spec and spec.get("none")),
         "steps": _steps(doc),
         "summary": _summary(doc),
-        "errata": doc.get("errata") or [],
+        "errata": [{**e, "reason": prose(e["reason"])} for e in doc.get("errata") or []],
         "transformed": _transformed(doc),
-        "parameters": _parameter_controls(doc),
-        "initial": _initial_controls(doc, info.get("initial", {}), nonnegative, angular),
+        "parameters": _parameter_controls(doc, marks),
+        "initial": _initial_controls(doc, info.get("initial", {}), nonnegative, angular, marks),
         "t_end": {
             "value": _fmt(info.get("t_end", 10.0)),
             "min": "0.5",

@@ -15,6 +15,8 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from app.viz.exprtree import maybe_tree
+
 
 @dataclass(frozen=True)
 class Facts:
@@ -33,6 +35,26 @@ class Facts:
     def conservative(self) -> bool:
         """No generalized force and no explicit time: h is conserved."""
         return not self.doc.get("generalized_forces") and bool(self.doc.get("hamiltonian_conserved"))
+
+
+def _leaves(node: Any) -> set[str]:
+    if isinstance(node, str):
+        return {node}
+    if isinstance(node, list):
+        return set().union(*(_leaves(c) for c in node[1:])) if len(node) > 1 else set()
+    return set()
+
+
+def constant_accelerations(doc: dict[str, Any]) -> bool:
+    """Whether every acceleration is a constant (no coordinate, velocity or t in it): motion in t².
+
+    Such a motion is integrated exactly by any method of order two or more, so an error
+    against run time chart would show round-off and timing noise only."""
+    q = doc["coordinates"]
+    moving = [*q, *(f"{c}_dot" for c in q), "t"]
+    names = [*moving, *doc["parameters"]]
+    trees = [maybe_tree(pair.get("sympy"), names) for pair in doc["accelerations"].values()]
+    return all(t is not None and not (_leaves(t) & set(moving)) for t in trees)
 
 
 def oscillating_equilibria(doc: dict[str, Any]) -> list[dict[str, Any]]:
@@ -156,8 +178,9 @@ PANELS: tuple[Panel, ...] = (
         "Error against run time",
         "Every method over a sweep of tolerances: the error of the final state against the run time (lower left is "
         "better). The star is this run's own error estimate.",
-        "a chapter scene (its report is measured once per scene)",
-        lambda f: f.scene,
+        "a chapter scene (its report is measured once per scene) whose motion is not a polynomial in t",
+        # with constant accelerations every method of order two or more is exact: the chart would be noise
+        lambda f: f.scene and not constant_accelerations(f.doc),
     ),
 )
 

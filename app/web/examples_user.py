@@ -20,11 +20,12 @@ DOUBLE_PENDULUM = {
         {"name": "m2", "value": 1.0, "unit": "kg", "min": 0.01},
         {"name": "l1", "value": 1.0, "unit": "m", "min": 0.01},
         {"name": "l2", "value": 1.0, "unit": "m", "min": 0.01},
-        {"name": "g", "value": 9.81, "unit": "m/s^2", "min": 0.0},
+        {"name": "g", "value": 9.81, "unit": "m/s^2", "min": 0.01},
     ],
+    # x horizontal, z up (as the playground's form says), the pivot at the origin
     "particles": [
-        {"mass": "m1", "position": ["l1*sin(theta1)", "-l1*cos(theta1)"]},
-        {"mass": "m2", "position": ["l1*sin(theta1) + l2*sin(theta2)", "-l1*cos(theta1) - l2*cos(theta2)"]},
+        {"mass": "m1", "position": ["l1*sin(theta1)", "0", "-l1*cos(theta1)"]},
+        {"mass": "m2", "position": ["l1*sin(theta1) + l2*sin(theta2)", "0", "-l1*cos(theta1) - l2*cos(theta2)"]},
     ],
     "potential": "-(m1 + m2)*g*l1*cos(theta1) - m2*g*l2*cos(theta2)",
 }
@@ -32,7 +33,7 @@ FORCED_SPRING = {
     "coordinates": ["x"],
     "parameters": [
         {"name": "m", "value": 1.0, "unit": "kg", "min": 0.01},
-        {"name": "k", "value": 4.0, "unit": "N/m", "min": 0.0},
+        {"name": "k", "value": 4.0, "unit": "N/m", "min": 0.01},
         {"name": "b", "value": 0.1, "unit": "kg/s", "min": 0.0},
         {"name": "F", "value": 0.5, "unit": "N"},
         {"name": "w", "value": 1.5, "unit": "1/s"},

@@ -12,6 +12,7 @@ The simulation runs in the browser against POST /api/simulate (static/js/playgro
 from __future__ import annotations
 
 import json
+import threading
 from typing import Any
 
 from fastapi import APIRouter, Request
@@ -20,7 +21,9 @@ from starlette.concurrency import run_in_threadpool
 
 from app.engine.parse import FUNCTIONS
 from app.numerics.methods import CHOICES
-from app.service.user_checks import InvalidSystem
+from app.service import user_systems
+from app.service.user_checks import InvalidSystem, spec_key
+from app.service.user_jobs import derive_job
 from app.viz.user_page import model_of
 from app.web.deps import ClientDep, UserSystemsDep
 from app.web.errors import KINDS, REFUSED, Problem, problem
@@ -37,6 +40,28 @@ EXAMPLES = {
     "Double pendulum (particles)": DOUBLE_PENDULUM,
     "Bead on a spinning hoop (L alone)": SPINNING_HOOP,
 }
+
+
+def warm_examples() -> threading.Thread:
+    """Derive the examples in the background at start-up, so that the first reader of each is answered at once.
+
+    The derivation runs in this process (a thread, not the worker pool: nothing waits on it)
+    and its answer goes into the service's cache under the key the page asks for."""
+
+    def warm() -> None:
+        service = user_systems.service
+        for example in EXAMPLES.values():
+            spec = spec_of(form_of(example))
+            key = spec_key(spec)
+            if service.derivations.get(key) is None:
+                try:
+                    service.derivations.put(key, derive_job(spec))
+                except Exception:  # noqa: BLE001 - warming is optional: the page derives on demand
+                    return
+
+    thread = threading.Thread(target=warm, name="warm-examples", daemon=True)
+    thread.start()
+    return thread
 
 
 def _example_links() -> list[dict[str, str]]:
@@ -96,6 +121,7 @@ HTML = {"text/html": {"schema": {"type": "string"}}}
 async def playground(request: Request, client: ClientDep, users: UserSystemsDep) -> Response:
     error: FormError | None = None
     failed: Problem | None = None
+    empty = False
     model = spec = None
     form = form_of(FORCED_SPRING)
     try:
@@ -105,7 +131,9 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
             form = Form()  # an empty form to start from
         elif request.query_params:
             form = read_form(request.query_params)
-        if form.coordinates or form.parameters or form.lagrangian or form.kinetic or form.particles:
+        if not (form.coordinates or form.parameters or form.lagrangian or form.kinetic or form.particles):
+            empty = True  # the page says what to enter
+        else:
             spec = spec_of(form)
             doc = json.loads(await users.derive(spec, client.key, client.address))
             model = await run_in_threadpool(model_of, spec, doc, CHOICES)
@@ -122,6 +150,8 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
     context = {
         "form": form,
         "error": error.view() if error else None,
+        "empty": empty,
+        "submitted": "new" not in request.query_params and bool(request.query_params),
         "model": model,
         "m": model,
         "system_json": json.dumps(spec or {}, separators=(",", ":")).replace("<", "\\u003c"),

@@ -135,6 +135,17 @@ def _number(text: str, field_id: str, what: str) -> float | None:
         raise FormError(f"{what}: {text[:30]!r} is not a number", field_id, text) from None
 
 
+# Quantities that are positive by nature: masses, lengths, stiffnesses and gravity, by unit or by the usual name.
+POSITIVE_UNITS = {"kg", "m", "N/m", "m/s^2", "m/s²", "m/s**2"}
+POSITIVE_NAMES = re.compile(r"(m|M|mu|l|L|R|r|k|g)\d*")
+JUST_ABOVE_ZERO = 1e-9  # the lowest value such a parameter gets when the form leaves it empty
+
+
+def positive_by_nature(name: str, unit: str) -> bool:
+    """A mass, length, spring constant or g: its lowest value defaults to just above 0 (never negative)."""
+    return unit.strip() in POSITIVE_UNITS if unit.strip() else bool(POSITIVE_NAMES.fullmatch(name.strip()))
+
+
 def spec_of(form: Form) -> dict[str, Any]:
     """The API request for what was typed (validated with the API's model)."""
     parameters = []
@@ -144,6 +155,8 @@ def spec_of(form: Form) -> dict[str, Any]:
             number = _number(p.get(key, ""), f"f-param-{i}-{key}", f"parameter {p.get('name') or i + 1}, {what}")
             if number is not None:
                 entry[key] = number
+        if "min" not in entry and positive_by_nature(entry["name"], entry["unit"]):
+            entry["min"] = JUST_ABOVE_ZERO
         parameters.append(entry)
     spec: dict[str, Any] = {"coordinates": _names(form.coordinates), "parameters": parameters}
     if form.form == "lagrangian":

@@ -23,6 +23,7 @@ from starlette.responses import Response
 from starlette.types import Scope
 
 from app.settings import ROOT
+from app.viz.chapter import ABOUT
 from app.web.mathml import mathml
 
 
@@ -109,4 +110,5 @@ def vendor_ready() -> bool:
 
 templates.env.globals["static"] = static
 templates.env.globals["vendor_ready"] = vendor_ready
+templates.env.globals["chapter_about"] = ABOUT
 templates.env.filters["mathml"] = mathml

@@ -19,24 +19,52 @@
  *   readRequest(form)                the simulate request body {parameters, initial, t_end, method, rtol}
  *   resetControls(form)              back to the defaults
  *
- * A slider spanning more than a factor 50 moves on a log scale; its aria-valuetext
- * always reads the real value with its unit.
+ * The slider covers a useful range inside the allowed one (data-slider-min/-max; the number
+ * field takes any allowed value), on a log scale when that range spans decades; on a log
+ * slider whose allowed range starts at 0 the first position is 0 itself.  Its aria-valuetext
+ * always reads the real value with its unit.  Marks (a <datalist>, e.g. critical damping) sit
+ * at their values.  Arrow keys move a slider by 1/50 of its range, Page Up/Down by 1/10.
  */
 
 const STEPS = 1000;
+const ARROW = STEPS / 50, PAGE = STEPS / 10;
+
+function sliderRange(ctl) {
+  const lo = Number(ctl.dataset.sliderMin ?? ctl.dataset.min), hi = Number(ctl.dataset.sliderMax ?? ctl.dataset.max);
+  return [lo, hi, ctl.dataset.log === "true" && lo > 0, Number(ctl.dataset.min) === 0];
+}
 
 function fromSlider(ctl, position) {
-  const lo = Number(ctl.dataset.min), hi = Number(ctl.dataset.max);
+  const [lo, hi, log, zero] = sliderRange(ctl);
   const u = Number(position) / STEPS;
-  if (ctl.dataset.log === "true") return lo * Math.pow(hi / lo, u);
+  if (log) return zero && Number(position) === 0 ? 0 : lo * Math.pow(hi / lo, u);
   return lo + (hi - lo) * u;
 }
 
 function toSlider(ctl, value) {
-  const lo = Number(ctl.dataset.min), hi = Number(ctl.dataset.max);
+  const [lo, hi, log, zero] = sliderRange(ctl);
+  if (log && zero && value < lo) return 0;
   const v = Math.min(hi, Math.max(lo, value));
-  const u = ctl.dataset.log === "true" ? Math.log(v / lo) / Math.log(hi / lo) : (v - lo) / (hi - lo);
+  const u = log ? Math.log(v / lo) / Math.log(hi / lo) : (v - lo) / (hi - lo);
   return Math.round(u * STEPS);
+}
+
+/** Arrow keys step a slider by a sensible share of its range, not by one of its 1000 positions. */
+function stepKeys(ctl, range) {
+  range.addEventListener("keydown", (event) => {
+    const by = { ArrowRight: ARROW, ArrowUp: ARROW, ArrowLeft: -ARROW, ArrowDown: -ARROW, PageUp: PAGE, PageDown: -PAGE }[event.key];
+    if (by === undefined) return;
+    event.preventDefault();
+    range.value = String(Math.min(STEPS, Math.max(0, Number(range.value) + by)));
+    range.dispatchEvent(new Event("input", { bubbles: true }));
+  });
+}
+
+/** Put the marks of a control's datalist at their values on its slider. */
+function placeTicks(ctl) {
+  const list = ctl.querySelector("datalist");
+  if (!list) return;
+  for (const option of list.querySelectorAll("option")) option.value = String(toSlider(ctl, Number(option.dataset.value)));
 }
 
 /** A value rounded for display: 4 significant digits, no trailing zeros. */
@@ -138,6 +166,8 @@ export function bindControls(form, handlers, delay = 150) {
     range.value = String(toSlider(ctl, Number(number.value)));
     setValueText(ctl, Number(number.value));
     check(ctl);
+    placeTicks(ctl);
+    stepKeys(ctl, range);
     range.addEventListener("input", () => {
       const value = fromSlider(ctl, range.value);
       number.value = tidy(value);
@@ -187,16 +217,25 @@ function control(group, c) {
   const div = el("div", {
     class: "control", "data-group": group, "data-name": c.name, "data-label": c.label, "data-unit": c.unit || "",
     "data-min": c.min, "data-max": c.max, "data-log": c.log ? "true" : "false", "data-default": c.value,
+    "data-slider-min": c.slider_min ?? c.min, "data-slider-max": c.slider_max ?? c.max,
   });
   const label = el("label", { id: `${id}-label`, for: `${id}-range` });
   label.append(el("span", { class: "sym" }, c.label), " ", el("span", { class: "desc" }, c.description || ""));
   const row = el("div", { class: "control-inputs" });
   const range = el("input", { type: "range", id: `${id}-range`, min: "0", max: String(STEPS), step: "1",
     "aria-labelledby": `${id}-label`, "aria-describedby": `${id}-hint` });
+  const marks = c.ticks || [];
+  if (marks.length) range.setAttribute("list", `${id}-ticks`);
   const number = el("input", { type: "number", id, name: c.name, min: c.min, max: c.max, step: "any",
     value: c.value, inputmode: "decimal", "aria-labelledby": `${id}-label ${id}-unit`, "aria-describedby": `${id}-hint` });
   row.append(range, number, el("span", { class: "unit", id: `${id}-unit` }, c.unit || "(no unit)"));
-  div.append(label, row, el("p", { class: "hint", id: `${id}-hint`, "aria-live": "polite" }));
+  div.append(label, row);
+  if (marks.length) {
+    const list = el("datalist", { id: `${id}-ticks` });
+    for (const t of marks) list.append(el("option", { "data-value": t.value, label: t.label }));
+    div.append(list, el("p", { class: "ticks" }, `Marked: ${marks.map((t) => t.text).filter(Boolean).join("; ")}`));
+  }
+  div.append(el("p", { class: "hint", id: `${id}-hint`, "aria-live": "polite" }));
   range.value = String(toSlider(div, Number(c.value)));
   return div;
 }

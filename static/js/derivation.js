@@ -81,13 +81,9 @@ function listOf(items) {
   return ul;
 }
 
-const greek = new Set(["alpha", "beta", "gamma", "delta", "theta", "phi", "psi", "rho", "omega", "lambda", "mu",
-  "sigma", "tau", "chi", "xi", "eta", "zeta", "nu", "kappa", "epsilon", "iota"]);
-export function texName(name) {
-  const m = /^([A-Za-z]+?)(\d*)$/.exec(name);
-  if (!m) return name;
-  const stem = greek.has(m[1]) ? `\\${m[1]}` : m[1];
-  return m[2] ? `${stem}_{${m[2]}}` : stem;
+/** A name as LaTeX, from the document's symbol table (the engine's one home of display names). */
+export function texName(doc, name) {
+  return (doc.symbols && doc.symbols[name] && doc.symbols[name].latex) || name;
 }
 
 /** The summary box of a derivation JSON, as a <section class="summary-box">. */
@@ -97,8 +93,8 @@ export function summaryBox(doc) {
   const dl = h("dl");
   const add = (term, ...content) => { dl.append(h("dt", { text: term })); dl.append(h("dd", {}, ...content)); };
   add("Equations of motion", listOf(doc.equations_of_motion.map((e) => e.latex)));
-  add("Accelerations", listOf(doc.coordinates.map((q) => `\\ddot{${texName(q)}} = ${doc.accelerations[q].latex}`)));
-  add("Generalized momenta", listOf(doc.coordinates.map((q) => `p_{${texName(q)}} = ${doc.momenta[q].latex}`)));
+  add("Accelerations", listOf(doc.coordinates.map((q) => `${texName(doc, q + "_ddot")} = ${doc.accelerations[q].latex}`)));
+  add("Generalized momenta", listOf(doc.coordinates.map((q) => `${texName(doc, "p_" + q)} = ${doc.momenta[q].latex}`)));
   const conserved = h("ul", { class: "conserved" });
   for (const c of doc.conserved || []) {
     conserved.append(h("li", {}, math(`${c.latex_name || c.name} = ${c.latex}`, true), h("p", { class: "reason", text: c.reason })));

@@ -32,7 +32,15 @@ export function layout(extra = {}) {
   };
 }
 
-export const axis = (text, extra = {}) => ({ title: { text }, gridcolor: "#e6e8eb", zerolinecolor: "#b8bec5", ...extra });
+/**
+ * Every axis: its title (with the unit in brackets) and ticks in powers of ten (2×10⁻⁶), never
+ * Plotly's default SI prefixes ("1p" would read as a pico-unit).
+ */
+export const AXIS_FORMAT = { exponentformat: "power", showexponent: "all", separatethousands: false };
+export const axis = (text, extra = {}) => ({ title: { text }, gridcolor: "#e6e8eb", zerolinecolor: "#b8bec5", ...AXIS_FORMAT, ...extra });
+
+/** The SI unit of the generalized momentum of a coordinate measured in `unit` (rad or m). */
+export const momentumUnit = (unit) => (unit === "rad" ? "kg·m²/s" : unit === "m" ? "kg·m/s" : "SI units");
 export const line = (x, y, name, color, dash = "solid") => ({ type: "scatter", mode: "lines", x, y, name, line: { color, width: 2, dash } });
 export const diff = (arr) => Array.from(arr, (v) => v - arr[0]);
 export const finite = (arr) => Array.from(arr).filter((v) => Number.isFinite(v));

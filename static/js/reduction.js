@@ -12,7 +12,7 @@
  */
 import { compile } from "./expr.js";
 import { axis, COLORS, finite, layout, Overlay, parts, react } from "./plotkit.js";
-import { fmt, table } from "./summaries.js";
+import { fmt, fmtResolved, table } from "./summaries.js";
 
 /** The one-coordinate reduction evaluated for a run: U_eff, m_eff, the momenta's values, E_r(t). */
 export function reduced(run) {
@@ -48,6 +48,30 @@ function roots(f, lo, hi, n = 400) {
     x0 = x1; f0 = f1;
   }
   return out;
+}
+
+/**
+ * The turning points of the current motion: where the level meets U_eff on either side of
+ * the current position x, the ends of the allowed interval that holds x (f = U_eff − level
+ * ≤ 0 inside).  At most one on each side, so each appears once and none lies beyond the well;
+ * a side with no crossing in [lo, hi] gives none.  Returns [left, right] without the missing ones.
+ */
+export function turningPoints(f, lo, hi, x, n = 400) {
+  const h = (hi - lo) / n;
+  // a position exactly at a turning point counts as inside (rounding would put it just outside)
+  const slack = 1e-9 * Math.max(1, Math.abs(f(x)), ...[lo, hi].map((v) => Math.abs(f(v))).filter(Number.isFinite));
+  const g = (v) => f(v) - slack;
+  if (!(g(x) <= 0)) return [];
+  const side = (dir) => {
+    for (let k = 1; k <= n; k++) {
+      const v = x + dir * k * h;
+      if (v < lo - 1e-12 || v > hi + 1e-12) return null;
+      const gv = g(v);
+      if (!(gv <= 0)) return Number.isFinite(gv) ? bisect(f, v - dir * h, v) : v - dir * h;
+    }
+    return null;
+  };
+  return [side(-1), side(1)].filter((v) => v !== null);
 }
 
 function window_(values, nonnegative) {
@@ -89,9 +113,11 @@ export class EffectivePotentialPanel {
     const { U, Er, values } = this.red;
     const level = Er[i];
     // the level (dashed), the turning points (diamonds) and the current point, drawn over the plot
+    // a cached pair for this level serves only while it still brackets the current position
     let turning = this.turningCache.get(level);
-    if (!turning) {
-      turning = roots((x) => U(x) - level, this.grid[0], this.grid[this.grid.length - 1]);
+    const x = values[i];
+    if (!turning || (turning.length === 2 && (x < turning[0] - 1e-9 || x > turning[1] + 1e-9)) || turning.length < 2) {
+      turning = turningPoints((x) => U(x) - level, this.grid[0], this.grid[this.grid.length - 1], values[i]);
       if (this.turningCache.size > 512) this.turningCache.clear();
       this.turningCache.set(level, turning);
     }
@@ -99,7 +125,9 @@ export class EffectivePotentialPanel {
     this.overlay.points("turning", turning.map((x) => [x, level]), { color: COLORS.a, r: 6, shape: "diamond" });
     this.overlay.points("now", [[values[i], U(values[i])]]);
     const lr = run.data.labels[this.red.r], unit = run.data.units[this.red.r];
-    const tp = turning.length ? `turning points at ${lr} = ${turning.map(fmt).join(", ")} ${unit}` : "no turning point in view";
+    const tp = turning.length === 2
+      ? `the motion turns at ${lr} = ${fmt(turning[0])} and ${fmt(turning[1])} ${unit}`
+      : turning.length === 1 ? `one turning point in view, at ${lr} = ${fmt(turning[0])} ${unit}` : "no turning point in view";
     this.readout.textContent = `Energy level ${fmt(level)} J; ${tp}. ${this.note}`;
   }
 }
@@ -168,7 +196,10 @@ export class SmallOscillationsPanel {
     else if (!measured) this.readout.textContent = `Predicted ω = ${fmt(predicted)} rad/s about ${lr} = ${fmt(eq.x)} ${unit}; this run is too short to measure a full oscillation.`;
     else {
       const amp = Math.max(...values.map((v) => Math.abs(v - eq.x)));
-      this.readout.textContent = `About ${lr} = ${fmt(eq.x)} ${unit}: predicted ω = ${fmt(predicted)} rad/s, measured ${fmt(measured)} rad/s (${fmt((100 * (measured - predicted)) / predicted)} %) at amplitude ${fmt(amp)} ${unit}. The prediction holds as the amplitude goes to zero.`;
+      // the measurement resolves the frequency to about the sampling's share of a period, and to the run's error
+      const dt = run.t.length > 1 ? run.t[1] - run.t[0] : 0;
+      const resolution = 100 * Math.max((measured * dt / (2 * Math.PI)) ** 2, (run.stats.error_estimate || 0) / Math.max(amp, 1e-300), 1e-9);
+      this.readout.textContent = `About ${lr} = ${fmt(eq.x)} ${unit}: predicted ω = ${fmt(predicted)} rad/s, measured ${fmt(measured)} rad/s (${fmtResolved((100 * (measured - predicted)) / predicted, resolution)} %) at amplitude ${fmt(amp)} ${unit}. The prediction holds as the amplitude goes to zero.`;
     }
   }
 

@@ -31,7 +31,7 @@ import { EnergyBars } from "./energybars.js";
 import { compile } from "./expr.js";
 import { createPanel } from "./plots.js";
 import { compileRhs, integrate } from "./preview.js";
-import { fmt } from "./summaries.js";
+import { errorAgainstMotion, fmt } from "./summaries.js";
 
 export async function simulate(url, request, { signal } = {}) {
   const res = await fetch(url, {
@@ -299,7 +299,14 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
       const r = prepareRun(data, request, result);
       await view.draw(r, "server");
       if (mine !== generation) return;
-      say("ready", describe(r.stats), r.stats.warnings || []);
+      // a run whose error estimate is comparable to the motion is flagged, not shown as ready
+      const judged = errorAgainstMotion(r.stats, r.state, data.coordinates);
+      if (judged.trusted) say("ready", describe(r.stats), r.stats.warnings || []);
+      else {
+        const q = data.labels[judged.coordinate] || judged.coordinate;
+        const why = `The estimated error is ${fmt(judged.ratio * 100)} % of the range of ${q} over the run: the motion shown is not reliable. Choose a smaller tolerance (rtol) or a shorter run.`;
+        say("warning", `${describe(r.stats)} ${why}`, r.stats.warnings || []);
+      }
       root.dataset.runs = String(Number(root.dataset.runs || 0) + 1);
       painted("server");
     } catch (err) {

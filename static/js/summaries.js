@@ -9,6 +9,7 @@
 
 export function fmt(x) {
   if (x === null || x === undefined || Number.isNaN(x)) return "–";
+  if (x < 0) return `−${fmt(-x)}`; // a typeset minus sign, not a hyphen
   if (!Number.isFinite(x)) return x > 0 ? "∞" : "−∞";
   if (x === 0) return "0";
   const a = Math.abs(x);
@@ -18,6 +19,52 @@ export function fmt(x) {
     return `${Number(mantissa)} × 10${sup}`;
   }
   return String(Number(x.toPrecision(4)));
+}
+
+/** The median of finite numbers (null for none). */
+export function median(values) {
+  const v = values.filter(Number.isFinite).sort((a, b) => a - b);
+  if (!v.length) return null;
+  const k = Math.floor(v.length / 2);
+  return v.length % 2 ? v[k] : (v[k - 1] + v[k]) / 2;
+}
+
+/**
+ * A value for reading that is only resolved down to `floor` (an error estimate, the round-off
+ * of the values it comes from): below it, "≈ 0" rather than digits of noise.
+ */
+export function fmtResolved(x, floor) {
+  return Number.isFinite(x) && Number.isFinite(floor) && Math.abs(x) <= floor ? "≈ 0" : fmt(x);
+}
+
+/** "is constant: 0.8774 N" when a series does not vary beyond round-off, else "ranges from a to b N". */
+export function constantOrRange(values, unit = "") {
+  let lo = Infinity, hi = -Infinity;
+  for (const v of values) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
+  const u = unit ? ` ${unit}` : "";
+  if (lo > hi) return "no finite value";
+  // constant when the spread is below 10⁻⁹ of the size (the values' round-off) or the 4 shown digits agree
+  if (hi - lo <= 1e-9 * Math.max(Math.abs(lo), Math.abs(hi)) || fmt(lo) === fmt(hi)) return `is constant: ${fmt((lo + hi) / 2)}${u}`;
+  return `ranges from ${fmt(lo)} to ${fmt(hi)}${u}`;
+}
+
+/**
+ * Whether a run's error estimate is small against the motion it describes: the worst ratio,
+ * over coordinates, of the estimated error to the coordinate's range over the run (or its size,
+ * for a coordinate that hardly moves).  A run is to be trusted when the ratio is below `limit`.
+ */
+export function errorAgainstMotion(stats, state, coordinates, limit = 0.05) {
+  const by = stats.error_estimate_by_coordinate || {};
+  let worst = 0, where = null;
+  for (const q of coordinates) {
+    const err = Number.isFinite(by[q]) ? by[q] : stats.error_estimate;
+    if (!Number.isFinite(err)) continue;
+    let lo = Infinity, hi = -Infinity;
+    for (const v of state[q] || []) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
+    const scale = Math.max(hi - lo, 1e-3 * Math.max(Math.abs(lo), Math.abs(hi)), 1e-12);
+    if (err / scale > worst) { worst = err / scale; where = q; }
+  }
+  return { ratio: worst, coordinate: where, trusted: worst < limit };
 }
 
 export function table(container, caption, headers, rows) {

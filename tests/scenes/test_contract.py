@@ -25,7 +25,9 @@ def test_scene_block_and_errata(scene_id):
     s = SCENES[scene_id]
     assert set(doc["scene"]) == SCENE_KEYS
     assert doc["scene"]["panels"] == list(s.panels) and doc["scene"]["initial"] == s.initial
-    assert doc["errata"] == [{"chapter": e.chapter, "correct": e.correct, "reason": e.reason} for e in s.errata]
+    served = [{k: e[k] for k in ("chapter", "correct", "reason")} for e in doc["errata"]]
+    assert served == [{"chapter": e.chapter, "correct": e.correct, "reason": e.reason} for e in s.errata]
+    assert all(e["chapter_latex"] and e["correct_latex"] for e in doc["errata"])
 
 
 @pytest.mark.parametrize("scene_id", sorted(SCENES))

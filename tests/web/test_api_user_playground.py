@@ -9,7 +9,7 @@ from starlette.datastructures import QueryParams
 
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
 from app.web.playground import MAX_QUERY
-from app.web.playground_form import form_of, query_of, read_form, spec_of
+from app.web.playground_form import JUST_ABOVE_ZERO, Form, form_of, positive_by_nature, query_of, read_form, spec_of
 from app.web.schemas_user import SystemSpec
 
 
@@ -22,7 +22,33 @@ def test_the_address_holds_the_whole_system(spec):
     if "particles" in spec:  # the form always writes all three components
         for p in expected["particles"]:
             p["position"] = p["position"] + ["0"] * (3 - len(p["position"]))
+    for p in expected["parameters"]:  # the form's lowest value of a positive quantity left empty
+        if p.get("min") is None and positive_by_nature(p["name"], p.get("unit") or ""):
+            p["min"] = JUST_ABOVE_ZERO
     assert again == expected
+
+
+def test_positive_quantities_default_to_just_above_zero():
+    form = Form(coordinates="x", parameters=[
+        {"name": "m", "value": "1"}, {"name": "k", "value": "2", "unit": "N/m"}, {"name": "c", "value": "3", "unit": "kg"},
+        {"name": "F", "value": "0.5", "unit": "N"}, {"name": "w", "value": "1"},
+    ], kinetic="m*x_dot**2/2", potential="k*x**2/2")  # fmt: skip
+    lowest = {p["name"]: p.get("min") for p in spec_of(form)["parameters"]}
+    assert lowest == {"m": JUST_ABOVE_ZERO, "k": JUST_ABOVE_ZERO, "c": JUST_ABOVE_ZERO, "F": None, "w": None}
+
+
+def test_an_empty_form_says_what_to_enter(client):
+    html = client.get("/playground?q=&form=energies&T=&U=").text
+    assert 'id="outcome"' in html and "Nothing to derive yet" in html and "generalized coordinates" in html
+    assert 'action="/playground#outcome"' in html
+
+
+def test_derive_lands_on_the_result_and_labels_are_not_doubled(client):
+    html = client.get("/playground?" + urlencode(query_of(form_of(SPINNING_HOOP)), doseq=True)).text
+    # the anchor "Derive" lands on sits just before the simulation
+    assert html.index('id="outcome"') < html.index('id="simulation"')
+    labels = re.findall(r'<span class="sym">([^<]*)</span> <span class="desc">([^<]*)</span>', html)
+    assert labels and all(sym.strip() != desc.strip() for sym, desc in labels)
 
 
 def test_the_page_derives_and_renders_the_steps(client):

@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
+from app.engine.names import prose
 from app.scenes import SCENES
 from app.service.derivations import derivation_document
 from app.viz.chapter import SECTIONS, section_numbers, table_of_contents
@@ -101,7 +102,8 @@ def test_scene_page_shows_every_step_and_the_results(pages, scene_id):
         assert eq["latex"] in text
     assert doc["hamiltonian_energy_reason"] in text and doc["hamiltonian_conserved_reason"] in text
     for e in doc.get("errata") or []:
-        assert e["chapter"] in text and e["correct"] in text and e["reason"] in text
+        # typeset: the chapter's formula as written and the correct one, both as TeX; names in the reason as a reader writes them
+        assert e["chapter_latex"] in text and e["correct_latex"] in text and prose(e["reason"]) in text
     for c in doc.get("constraint_forces") or []:
         assert c["latex"] in text and c["convention"] in text
 

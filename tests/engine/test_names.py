@@ -1,0 +1,40 @@
+"""Display names have one home: LaTeX, Unicode and plain forms agree everywhere."""
+
+from app.engine.contract import derivation_json
+from app.engine.derive import derive
+from app.engine.names import latex, plain, prose, unicode
+from app.scenes.types import Parameter, System
+from app.viz.page_model import scene_page
+
+
+def test_forms_of_a_name():
+    assert (latex("theta_dot"), unicode("theta_dot"), plain("theta_dot")) == (r"\dot{\theta}", "θ̇", "theta_dot")
+    assert (latex("theta1_ddot"), unicode("theta1_ddot")) == (r"\ddot{\theta}_{1}", "θ̈₁")
+    assert (latex("x1"), unicode("x1")) == ("x_{1}", "x₁")
+    assert (latex("p_phi"), unicode("p_phi")) == (r"p_{\phi}", "p_φ")
+    assert (latex("Omega"), unicode("Omega")) == (r"\Omega", "Ω")
+    assert latex("U_eff") == r"U_{\text{eff}}" and latex("E_r") == "E_{r}"
+
+
+def test_names_in_prose_are_written_as_a_reader_writes_them():
+    text = "Two masses m1 and m2 at x1, x2 with rest length l0; start at theta_0 (section 4.5, Ex. 4.2)."
+    assert prose(text) == "Two masses m₁ and m₂ at x₁, x₂ with rest length l₀; start at θ₀ (section 4.5, Ex. 4.2)."
+
+
+def test_omega_is_the_same_letter_in_steps_controls_and_document():
+    hoop = System(
+        coordinates=("theta",),
+        parameters=(Parameter("m", 1.0, "kg", 0.01, 10.0), Parameter("R", 1.0, "m", 0.1, 10.0),
+                    Parameter("g", 9.81, "m/s²", 0.1, 30.0), Parameter("Omega", 3.0, "rad/s", 0.0, 20.0)),
+        lagrangian="m*R**2*(theta_dot**2 + Omega**2*sin(theta)**2)/2 + m*g*R*cos(theta)",
+    )  # fmt: skip
+    doc = derivation_json(derive(hoop), beyond=False)
+    assert doc["symbols"]["Omega"] == {"latex": r"\Omega", "unicode": "Ω", "plain": "Omega"}
+    assert doc["angles"] == ["theta"]
+    lagrangian = next(s for s in doc["steps"] if s["title"] == "Lagrangian")["latex"]
+    assert r"\Omega^{2}" in lagrangian and "Omega" not in lagrangian.replace(r"\Omega", "")
+    info = {"id": "hoop", "title": "Hoop", "panels": ["energy"], "initial": {"theta": 0.5}, "t_end": 5.0}
+    model = scene_page(doc, info)
+    control = next(c for c in model["parameters"] if c["name"] == "Omega")
+    assert (control["latex"], control["label"]) == (r"\Omega", "Ω")
+    assert next(c for c in model["initial"] if c["name"] == "theta")["unit"] == "rad"

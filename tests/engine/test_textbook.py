@@ -1,0 +1,67 @@
+"""The display canonicaliser: reader's order, divided equations, no nested fractions, bounded."""
+
+import sympy as sp
+
+from app.engine import textbook
+from app.engine.errata import ascii_tex, correct_tex
+from app.engine.symbols import SymbolTable
+
+TABLE = SymbolTable(("theta", "phi"), ("m", "g", "R", "b"))
+NAMES = TABLE.latex_names()
+theta, phi = TABLE.q
+thd, phd = TABLE.qd
+thdd, phdd = TABLE.qdd
+m, g, R, b = TABLE.params
+
+
+def tex(expr, **kw):
+    return textbook.latex(expr, NAMES, **kw)
+
+
+def test_numbers_then_parameters_in_a_readers_order():
+    assert tex(R**2 * m * thd**2 / 2) == r"\frac{1}{2} m R^{2} \dot{\theta}^{2}"
+    assert tex(R * g * m * (1 - sp.cos(theta))) == r"m g R \left(1 - \cos {\theta}\right)"
+
+
+def test_kinetic_terms_before_potential_ones():
+    L = R**2 * m * thd**2 / 2 - R * g * m * (1 - sp.cos(theta))
+    assert tex(L) == r"\frac{1}{2} m R^{2} \dot{\theta}^{2} - m g R \left(1 - \cos {\theta}\right)"
+
+
+def test_equation_divided_by_its_accelerations_coefficient():
+    residual = R * m * (R * thdd + g * sp.sin(theta)) + b * thd
+    shown = textbook.normalised(residual, m * R**2, True, NAMES, thdd)
+    assert sp.simplify(shown - residual / (m * R**2)) == 0  # the same equation
+    assert tex(shown, first=thdd) == r"\ddot{\theta} + \frac{b}{m R^{2}} \dot{\theta} + \frac{g}{R} \sin {\theta}"
+
+
+def test_a_coordinate_dependent_sum_is_not_divided_out():
+    residual = m * (1 + 4 * R**2 * theta**2) * thdd + m * g * theta
+    shown = textbook.normalised(residual, m * (1 + 4 * R**2 * theta**2), True, NAMES, thdd)
+    assert sp.simplify(shown - residual / m) == 0
+    assert tex(shown, first=thdd).startswith(r"\left(1 + 4 R^{2} \theta^{2}\right) \ddot{\theta}")
+
+
+def test_no_fraction_inside_a_fraction():
+    inner = 1 / sp.sqrt((2 * g - phd**2 / (m * R**2 * sp.sin(theta) ** 2)) / (m * R**2))
+    out = tex(inner)
+    assert out.count(r"\frac") == 1 and " / " in out
+
+
+def test_a_bracket_of_negative_terms_is_written_positive():
+    assert tex(g * R * (-m - b) * sp.cos(theta)) == r"- \left(m + b\right) g R \cos {\theta}"
+
+
+def test_deterministic_and_bounded():
+    expr = sp.expand((theta + phi + thd + phd + m + g) ** 7)  # far beyond the node budget
+    assert tex(expr) == sp.latex(expr, symbol_names=NAMES)
+    small = R**2 * m * thd**2 / 2 + m * g * R * sp.cos(theta)
+    assert tex(small) == tex(sp.sympify(sp.srepr(small)))
+
+
+def test_errata_formulas_are_typeset_as_written():
+    assert ascii_tex("theta_ddot + (g/R) sin(theta) = 0") == r"\ddot{\theta}  + (g /R ) \sin (\theta ) = 0"
+    assert r"\text{ is simple harmonic with }" in ascii_tex("x = 0 is simple harmonic with omega = sqrt(g/R)")
+    assert ascii_tex("omega = sqrt(g/R)").endswith(r"\sqrt{g /R}")
+    assert correct_tex("theta_ddot = -g*sin(theta)/R", NAMES) == r"\ddot{\theta} = - \frac{g}{R} \sin {\theta}"
+    assert correct_tex("tau = dL/dtheta = -m*g*R*sin(theta)", NAMES).startswith(r"\tau = \frac{dL}{d\theta}")

@@ -1,0 +1,114 @@
+"""The chapter scenes' Lagrangians and equations of motion in textbook form, pinned as LaTeX.
+
+The strings were produced by running the display canonicaliser (``app.engine.textbook``) and
+checked by eye: factors in a reader's order (½ m R² θ̇², m g R (1 − cos θ)), each
+Euler–Lagrange equation divided by its acceleration's coefficient where the mass matrix is
+diagonal (θ̈ + (g/R) sin θ = 0).  A change of the printer that changes a page shows up here.
+"""
+
+import pytest
+
+from app.scenes import SCENES
+from app.scenes.reasons import REASONS, reason
+from app.service.derivations import derivation_document
+
+PINNED = {  # fmt: skip
+    "damped-pendulum": (
+        "\\frac{1}{2} m R^{2} \\dot{\\theta}^{2} - m g R \\left(1 - \\cos {\\theta}\\right)",
+        ["\\ddot{\\theta} + \\frac{b}{m R^{2}} \\dot{\\theta} + \\frac{g}{R} \\sin {\\theta} = 0"],
+    ),
+    "helix-bead": (
+        "\\frac{1}{2} m \\dot{z}^{2} + \\frac{1}{2} m \\alpha^{2} R^{2} \\dot{z}^{2} - m g z",
+        ["\\ddot{z} + \\frac{g}{1 + \\alpha^{2} R^{2}} = 0"],
+    ),
+    "incline-block": (
+        "\\frac{1}{2} m \\dot{X}^{2} - m g X \\sin {\\alpha}",
+        ["\\ddot{X} + g \\sin {\\alpha} = 0"],
+    ),
+    "movable-incline": (
+        "\\frac{1}{2} m \\dot{D}^{2} + \\frac{1}{2} M \\dot{X}^{2} + \\frac{1}{2} m \\dot{X}^{2} + m \\dot{D} \\dot{X} \\cos {\\alpha} + m g D \\sin {\\alpha}",
+        [
+            "\\left(M + m\\right) \\ddot{X} + m \\cos {\\alpha} \\ddot{D} = 0",
+            "\\ddot{D} + \\cos {\\alpha} \\ddot{X} - g \\sin {\\alpha} = 0",
+        ],
+    ),
+    "pulley": (
+        "\\frac{1}{8} M \\dot{y}_{1}^{2} + \\frac{1}{8} M \\dot{y}_{2}^{2} + \\frac{1}{2} m_{1} \\dot{y}_{1}^{2} + \\frac{1}{2} m_{2} \\dot{y}_{2}^{2} + \\frac{1}{4} M \\dot{y}_{1} \\dot{y}_{2} + \\frac{1}{2} M g \\left(y_{1} + y_{2}\\right) - m_{1} g y_{1} - m_{2} g y_{2}",
+        [
+            "\\left(m_{1} + \\frac{M}{4}\\right) \\ddot{y}_{1} + \\frac{1}{4} M \\ddot{y}_{2} + m_{1} g - \\frac{M g}{2} = 0",
+            "\\left(m_{2} + \\frac{M}{4}\\right) \\ddot{y}_{2} + \\frac{1}{4} M \\ddot{y}_{1} + m_{2} g - \\frac{M g}{2} = 0",
+        ],
+    ),
+    "rail-two-body": (
+        "\\frac{1}{2} m_{1} \\dot{x}_{1}^{2} + \\frac{1}{2} m_{2} \\dot{x}_{2}^{2} - \\frac{1}{2} k \\left(x_{2} - x_{1} - l_{0}\\right)^{2}",
+        [
+            "\\ddot{x}_{1} + \\frac{k}{m_{1}} \\left(x_{1} - x_{2} + l_{0}\\right) = 0",
+            "\\ddot{x}_{2} + \\frac{k}{m_{2}} \\left(x_{2} - x_{1} - l_{0}\\right) = 0",
+        ],
+    ),
+    "rotating-parabola": (
+        "\\frac{1}{2} m \\dot{\\rho}^{2} + 2 m \\alpha^{2} \\rho^{2} \\dot{\\rho}^{2} + \\frac{1}{2} m \\omega^{2} \\rho^{2} - m g \\alpha \\rho^{2}",
+        [
+            "\\left(1 + 4 \\alpha^{2} \\rho^{2}\\right) \\ddot{\\rho} + 4 \\alpha^{2} \\rho \\dot{\\rho}^{2} + \\left(2 g \\alpha - \\omega^{2}\\right) \\rho = 0"
+        ],
+    ),
+    "simple-pendulum": (
+        "\\frac{1}{2} m R^{2} \\dot{\\theta}^{2} - m g R \\left(1 - \\cos {\\theta}\\right)",
+        ["\\ddot{\\theta} + \\frac{g}{R} \\sin {\\theta} = 0"],
+    ),
+    "spherical-pendulum": (
+        "\\frac{1}{2} m R^{2} \\dot{\\theta}^{2} + \\frac{1}{2} m R^{2} \\dot{\\phi}^{2} \\sin^{2} {\\theta} - m g R \\cos {\\theta}",
+        [
+            "\\ddot{\\theta} - \\dot{\\phi}^{2} \\sin {\\theta} \\cos {\\theta} - \\frac{g}{R} \\sin {\\theta} = 0",
+            "\\ddot{\\phi} + \\frac{2 \\dot{\\phi} \\dot{\\theta} \\cos {\\theta}}{\\sin {\\theta}} = 0",
+        ],
+    ),
+    "tabletop-spring": (
+        "\\frac{1}{2} m \\dot{r}^{2} + \\frac{1}{2} m r^{2} \\dot{\\theta}^{2} - \\frac{1}{2} k r^{2}",
+        [
+            "\\ddot{r} - r \\dot{\\theta}^{2} + \\frac{k}{m} r = 0",
+            "\\ddot{\\theta} + \\frac{2 \\dot{r} \\dot{\\theta}}{r} = 0",
+        ],
+    ),
+}
+
+CHAPTER = sorted(sid for sid, s in SCENES.items() if not s.beyond_chapter)
+
+
+def test_the_ten_chapter_scenes_are_pinned():
+    assert sorted(PINNED) == CHAPTER and len(CHAPTER) == 10
+
+
+@pytest.mark.parametrize("scene_id", CHAPTER)
+def test_lagrangian_and_equations_in_textbook_form(scene_id):
+    doc = derivation_document(scene_id)
+    lagrangian, equations = PINNED[scene_id]
+    assert doc["lagrangian"]["latex"] == lagrangian
+    assert [e["latex"] for e in doc["equations_of_motion"]] == equations
+    # the steps show the same forms as the results box
+    steps = {s["title"]: s["latex"] for s in doc["steps"]}
+    assert steps["Lagrangian"] == f"L = {lagrangian}"
+    for row in equations:
+        assert row.replace(" = 0", "") in steps["Euler–Lagrange equations"]
+
+
+@pytest.mark.parametrize("scene_id", CHAPTER)
+def test_every_step_has_a_reason_of_its_own(scene_id):
+    doc = derivation_document(scene_id)
+    for step in doc["steps"]:
+        own = reason(scene_id, step["title"])
+        assert own, f"{scene_id}: no reason for the step {step['title']!r}"
+        assert step["explanation"] == own
+
+
+def test_reasons_name_only_steps_that_exist():
+    for scene_id, table in REASONS.items():
+        titles = [s["title"] for s in derivation_document(scene_id)["steps"]]
+        for key in table:
+            assert any(t == key or t.startswith(key + " ") for t in titles), (scene_id, key)
+
+
+def test_reasons_differ_between_scenes():
+    # the same step is explained differently on different pages
+    potentials = {REASONS[s]["Potential energy"] for s in CHAPTER}
+    assert len(potentials) == len(CHAPTER)

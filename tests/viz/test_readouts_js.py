@@ -1,0 +1,93 @@
+"""Readouts computed in the browser: turning points, number formats, axis formats (run with node)."""
+
+import json
+import math
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+JS = Path(__file__).resolve().parents[2] / "static" / "js"
+
+pytestmark = pytest.mark.skipif(shutil.which("node") is None, reason="node is installed with the front-end assets")
+
+
+def node(module: str, body: str):
+    script = f"import * as m from {json.dumps((JS / module).as_uri())}; console.log(JSON.stringify(({body})(m)));"
+    run = subprocess.run(["node", "--input-type=module", "-e", script], capture_output=True, text=True, timeout=30)
+    assert run.returncode == 0, run.stderr
+    return json.loads(run.stdout)
+
+
+def test_pendulum_turning_points_are_unique_and_bracket_the_motion():
+    # released from rest at θ = 1: the level is U(1), the well is [−1, 1], and θ = 1 is both start and turning point
+    pts = node(
+        "reduction.js",
+        "(m) => { const U = (x) => 1 - Math.cos(x), lvl = U(1); "
+        "return [m.turningPoints((x) => U(x) - lvl, -1.6, 1.6, 1), m.turningPoints((x) => U(x) - lvl, -1.6, 1.6, 0.2)]; }",
+    )
+    for found in pts:
+        assert len(found) == 2
+        assert found[0] == pytest.approx(-1, abs=1e-9) and found[1] == pytest.approx(1, abs=1e-9)
+
+
+def test_only_the_well_that_holds_the_motion():
+    # a double well U = (x² − 4)²/16 with level 0.5: two wells; a particle at x = 2.3 turns inside the right one
+    found = node(
+        "reduction.js",
+        "(m) => m.turningPoints((x) => (x * x - 4) ** 2 / 16 - 0.5, -4, 4, 2.3)",
+    )
+    inner, outer = math.sqrt(4 - math.sqrt(8)), math.sqrt(4 + math.sqrt(8))
+    assert found == pytest.approx([inner, outer], abs=1e-9)
+
+
+def test_one_sided_and_none():
+    one = node("reduction.js", "(m) => m.turningPoints((x) => x - 1, -4, 4, 0)")  # a slope: turns at x = 1 only
+    assert one == pytest.approx([1], abs=1e-9)
+    assert node("reduction.js", "(m) => m.turningPoints((x) => 1, -4, 4, 0)") == []  # outside every well
+
+
+def test_every_axis_is_ticked_in_powers_of_ten_not_si_prefixes():
+    out = node(
+        "plotkit.js",
+        "(m) => [m.axis('t (s)'), m.axis('error (rad)', { type: 'log' }), m.momentumUnit('rad'), m.momentumUnit('m')]",
+    )
+    for ax in out[:2]:
+        assert ax["exponentformat"] == "power" and ax["showexponent"] == "all"
+    assert out[1]["type"] == "log"
+    assert out[2:] == ["kg·m²/s", "kg·m/s"]
+
+
+def test_plots_build_every_axis_through_the_shared_helper():
+    # no panel sets its own tick format (Plotly's default "B" format writes 1p for 10⁻¹²)
+    for name in ("plots.js", "reduction.js"):
+        text = (JS / name).read_text()
+        assert "exponentformat" not in text, name
+
+
+def test_constant_quantities_are_stated_as_constant():
+    out = node(
+        "summaries.js",
+        "(m) => [m.constantOrRange([0.8774, 0.8774, 0.87740000001], 'N'), m.constantOrRange([1, 2, 3], 'N')]",
+    )
+    assert out == ["is constant: 0.8774 N", "ranges from 1 to 3 N"]
+
+
+def test_values_below_their_resolution_read_as_zero():
+    out = node("summaries.js", "(m) => [m.fmtResolved(-2.107e-14, 1e-9), m.fmtResolved(0.25, 1e-9), m.fmt(-5e-7)]")
+    assert out == ["≈ 0", "0.25", "−5 × 10⁻⁷"]
+
+
+def test_a_run_whose_error_is_comparable_to_the_motion_is_not_trusted():
+    out = node(
+        "summaries.js",
+        "(m) => [m.errorAgainstMotion({ error_estimate: 1.9, error_estimate_by_coordinate: { theta: 1.9 } },"
+        " { theta: [0, 3, 6] }, ['theta']), m.errorAgainstMotion({ error_estimate: 1e-8 }, { theta: [-1, 1] }, ['theta'])]",
+    )
+    assert out[0]["trusted"] is False and out[0]["coordinate"] == "theta" and out[0]["ratio"] == pytest.approx(1.9 / 6)
+    assert out[1]["trusted"] is True
+
+
+def test_the_run_time_shown_is_a_median():
+    assert node("summaries.js", "(m) => [m.median([3, 1, 2]), m.median([4, 1, 2, 3]), m.median([])]") == [2, 2.5, None]
