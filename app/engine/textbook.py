@@ -196,7 +196,7 @@ def _moving(names: dict[sp.Symbol, str], expr: Any) -> set[sp.Symbol]:
     known = {s.name for s in names}
     rates = {n for n in known if n.endswith("_dot")}
     stems = {n[: -len("_ddot")] if n.endswith("_ddot") else n[: -len("_dot")] for n in rates}
-    free = getattr(expr, "free_symbols", set())
+    free: set[Any] = getattr(expr, "free_symbols", set())
     return {s for s in free if s.name == "t" or s.name in stems or s.name.endswith(("_dot", "_ddot"))}
 
 
