@@ -3,8 +3,8 @@
 import pytest
 
 from app.scenes import SCENES
-from app.service.derivations import derivation
-from app.viz.panels import OPTIONAL
+from app.service.derivations import derivation, derivation_document
+from app.viz.panels import OPTIONAL, constant_accelerations
 from app.web.pages import page_model
 
 # id -> (coordinates, parameters), exactly as the API promises them
@@ -63,7 +63,9 @@ def test_panels_are_what_the_scene_needs(scene_id):
     # a scene declares only optional panels; the page adds every other panel its derivation supports
     assert set(s.panels) <= set(OPTIONAL) and len(set(s.panels)) == len(s.panels)
     panels = set(page_model(scene_id)["panels"])
-    assert "work-precision" in panels and "energy" in panels and "phase" in panels
+    assert "energy" in panels and "phase" in panels
+    # the error-against-run-time chart only where the motion is not a polynomial in t
+    assert ("work-precision" in panels) == (not constant_accelerations(derivation_document(scene_id)))
     # 3-D only where the motion is 3-D; exactly one animation
     assert ("animation-3d" in panels) == (scene_id in THREE_D)
     assert ("animation-2d" in panels) != ("animation-3d" in panels)
