@@ -228,6 +228,19 @@ def maybe_tree(text: str | None, names: Iterable[str] | None = None) -> Tree | N
         return None
 
 
+def leaves(node: Tree) -> set[str]:
+    """Every name in a tree (iteratively: a tree is as deep as the expression allows)."""
+    found: set[str] = set()
+    stack = [node]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, str):
+            found.add(item)
+        elif isinstance(item, list):
+            stack.extend(item[1:])  # item[0] is the operator or function
+    return found
+
+
 def evaluate(node: Tree, env: dict[str, float]) -> float:
     """Evaluate a tree in Python (the tests compare it with the browser's evaluator)."""
     if isinstance(node, (int, float)):

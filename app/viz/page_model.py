@@ -17,7 +17,7 @@ from app.engine.names import latex, prose
 from app.engine.report import CORE_STEPS
 from app.viz.control_ranges import ticks, useful_range
 from app.viz.diagrams import diagram
-from app.viz.exprtree import TreeError, maybe_tree, tree
+from app.viz.exprtree import TreeError, leaves, maybe_tree, tree
 from app.viz.mechanism import mechanism
 from app.viz.names import label
 from app.viz.panels import Facts, oscillating_equilibria, shown, texts
@@ -292,16 +292,9 @@ def moves_in_3d(particles: Sequence[tuple[str, Sequence[str]]], coordinates: Seq
     """Some body moves along each of the three axes (so the mechanism is drawn in space)."""
     moving = set(coordinates) | {"t"}
 
-    def names(node: Any) -> set[str]:
-        if isinstance(node, str):
-            return {node}
-        if isinstance(node, list):
-            return set().union(*(names(c) for c in node[1:])) if len(node) > 1 else set()
-        return set()
-
     def moves(text: str) -> bool:
         try:
-            return bool(names(tree(text)) & moving)
+            return bool(leaves(tree(text)) & moving)
         except TreeError:
             return False
 

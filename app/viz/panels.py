@@ -15,7 +15,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from app.viz.exprtree import maybe_tree
+from app.viz.exprtree import leaves, maybe_tree
 
 
 @dataclass(frozen=True)
@@ -37,14 +37,6 @@ class Facts:
         return not self.doc.get("generalized_forces") and bool(self.doc.get("hamiltonian_conserved"))
 
 
-def _leaves(node: Any) -> set[str]:
-    if isinstance(node, str):
-        return {node}
-    if isinstance(node, list):
-        return set().union(*(_leaves(c) for c in node[1:])) if len(node) > 1 else set()
-    return set()
-
-
 def constant_accelerations(doc: dict[str, Any]) -> bool:
     """Whether every acceleration is a constant (no coordinate, velocity or t in it): motion in t².
 
@@ -54,7 +46,7 @@ def constant_accelerations(doc: dict[str, Any]) -> bool:
     moving = [*q, *(f"{c}_dot" for c in q), "t"]
     names = [*moving, *doc["parameters"]]
     trees = [maybe_tree(pair.get("sympy"), names) for pair in doc["accelerations"].values()]
-    return all(t is not None and not (_leaves(t) & set(moving)) for t in trees)
+    return all(t is not None and not (leaves(t) & set(moving)) for t in trees)
 
 
 def oscillating_equilibria(doc: dict[str, Any]) -> list[dict[str, Any]]:

@@ -18,7 +18,7 @@ import random
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from app.viz.exprtree import TreeError, evaluate, tree
+from app.viz.exprtree import TreeError, evaluate, leaves, tree
 
 SAMPLES = 12
 TOLERANCE = 1e-9
@@ -33,14 +33,7 @@ def _position(pos: Sequence[str]) -> list[Any] | None:
 
 
 def _moves(trees: Sequence[Any], moving: set[str]) -> bool:
-    def names(node: Any) -> set[str]:
-        if isinstance(node, str):
-            return {node}
-        if isinstance(node, list):
-            return set().union(*(names(c) for c in node[1:])) if len(node) > 1 else set()
-        return set()
-
-    return any(names(t) & moving for t in trees)
+    return any(leaves(t) & moving for t in trees)
 
 
 def _numerically_fixed(a: Sequence[Any] | None, b: Sequence[Any], envs: Sequence[dict[str, float]]) -> bool:

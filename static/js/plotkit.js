@@ -46,6 +46,20 @@ export const diff = (arr) => Array.from(arr, (v) => v - arr[0]);
 export const finite = (arr) => Array.from(arr).filter((v) => Number.isFinite(v));
 export const capital = (text) => text.charAt(0).toUpperCase() + text.slice(1);
 
+/** Panels that ask the server for work (a report, a section) do so only in view: ``panel.visible``
+ *  turns true when the section nears the viewport, and the last run is drawn then. */
+export function drawWhenVisible(panel, section) {
+  panel.visible = !("IntersectionObserver" in window);
+  if (panel.visible) return;
+  const observer = new IntersectionObserver((entries) => {
+    if (!entries.some((e) => e.isIntersecting)) return;
+    observer.disconnect();
+    panel.visible = true;
+    if (panel.run) panel.draw(panel.run);
+  }, { rootMargin: "200px" });
+  observer.observe(section);
+}
+
 export function parts(section) {
   return {
     plot: section.querySelector(".plot"),

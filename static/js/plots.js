@@ -14,7 +14,7 @@
  * Each panel writes a text alternative (a data table) into its .data-summary and
  * a one-line reading into its .readout.
  */
-import { axis, capital, COLORS, CONFIG, diff, finite, layout, line, momentumUnit, Overlay, PALETTE, parts, react } from "./plotkit.js";
+import { axis, capital, COLORS, CONFIG, diff, drawWhenVisible, finite, layout, line, momentumUnit, Overlay, PALETTE, parts, react } from "./plotkit.js";
 import { ModesPanel } from "./modes.js";
 import { PhasePanel } from "./phase.js";
 import { PoincarePanel } from "./poincare.js";
@@ -133,16 +133,7 @@ class WorkPrecisionPanel {
     Object.assign(this, parts(section));
     this.timings = new Map(); // request -> run times of that same request (s)
     this.preview = false; // the report and the star belong to the server's run
-    this.visible = !("IntersectionObserver" in window);
-    if (!this.visible) {
-      const observer = new IntersectionObserver((entries) => {
-        if (!entries.some((e) => e.isIntersecting)) return;
-        observer.disconnect();
-        this.visible = true;
-        if (this.run) this.draw(this.run);
-      }, { rootMargin: "200px" });
-      observer.observe(section);
-    }
+    drawWhenVisible(this, section);
   }
 
   async report() {

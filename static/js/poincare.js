@@ -9,7 +9,7 @@
  * server (seconds, off the event loop) for the server's run only, and only once the panel is
  * in view; answers are kept per request so a repeated run costs nothing.
  */
-import { axis, layout, PALETTE, parts, react } from "./plotkit.js";
+import { axis, drawWhenVisible, layout, PALETTE, parts, react } from "./plotkit.js";
 import { wrap } from "./phase.js";
 import { fmt, table } from "./summaries.js";
 
@@ -20,16 +20,7 @@ export class PoincarePanel {
     this.section = section; this.data = data; this.urls = urls; Object.assign(this, parts(section));
     this.preview = false; // the section belongs to a server run (same energy, same parameters)
     this.answers = new Map();
-    this.visible = !("IntersectionObserver" in window);
-    if (!this.visible) {
-      const observer = new IntersectionObserver((entries) => {
-        if (!entries.some((e) => e.isIntersecting)) return;
-        observer.disconnect();
-        this.visible = true;
-        if (this.run) this.draw(this.run);
-      }, { rootMargin: "200px" });
-      observer.observe(section);
-    }
+    drawWhenVisible(this, section);
   }
 
   async draw(run) {
