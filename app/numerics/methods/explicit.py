@@ -1,33 +1,35 @@
-"""The default fast path: DOP853 with its whole step loop compiled."""
+"""The compiled explicit pairs: DOP853 (the default fast path) and Verner's 8(7).
+
+Both kernels share one interface (``run``, ``STATE_SIZE`` and the state's slots), so one
+driver serves them; a method names only its kernel."""
 
 from __future__ import annotations
+
+import importlib
 
 import numpy as np
 
 from app.numerics.methods.base import Method, Problem, Trajectory, drive, finished
 
 
-class CompiledDOP853(Method):
-    name = "DOP853-compiled"
+class CompiledExplicit(Method):
+    """An adaptive explicit pair whose whole step loop runs in numba (``kernel_module``)."""
+
     family = "explicit"
-    order = 8
     compiled = True
-    kernel_module = "app.numerics.kernels.dop853"
-    summary = "Dormand-Prince 8(5,3), adaptive steps, 7th-order dense output; the loop runs in numba"
 
     def _run(self, problem: Problem, stop_on_stiff: bool = False) -> Trajectory:
-        from app.numerics.kernels import dop853
-
+        kernel = importlib.import_module(self.kernel_module)
         rhs = problem.system.bound("rhs")
         y = problem.y0.astype(float).copy()
         fy = np.empty_like(y)
-        st = np.zeros(dop853.STATE_SIZE)
+        st = np.zeros(kernel.STATE_SIZE)
         Y = np.empty((problem.t.size, y.size))
         args = (problem.k, problem.t, problem.rtol, problem.atol, problem.bound, int(stop_on_stiff))
 
         status = drive(
-            lambda chunk: dop853.run(rhs, *args, chunk, y, fy, st, Y),
-            lambda: st[dop853.STEPS],
+            lambda chunk: kernel.run(rhs, *args, chunk, y, fy, st, Y),
+            lambda: st[kernel.STEPS],
             problem,
             self,
         )
@@ -35,47 +37,27 @@ class CompiledDOP853(Method):
             self,
             problem,
             Y,
-            int(st[dop853.NEXT_OUT]),
+            int(st[kernel.NEXT_OUT]),
             status,
             last=y,
-            steps=int(st[dop853.STEPS]),
-            rhs_evaluations=int(st[dop853.NFEV]),
-            stiff_detected=bool(st[dop853.STIFF_SEEN]),
+            steps=int(st[kernel.STEPS]),
+            rhs_evaluations=int(st[kernel.NFEV]),
+            stiff_detected=bool(st[kernel.STIFF_SEEN]),
         )
-        if st[dop853.REJECTED]:
-            trajectory.notes.append(f"{int(st[dop853.REJECTED])} rejected steps")
+        if st[kernel.REJECTED]:
+            trajectory.notes.append(f"{int(st[kernel.REJECTED])} rejected steps")
         return trajectory
 
 
-class CompiledVern8(Method):
-    name = "Vern8"
-    family = "explicit"
+class CompiledDOP853(CompiledExplicit):
+    name = "DOP853-compiled"
     order = 8
-    compiled = True
+    kernel_module = "app.numerics.kernels.dop853"
+    summary = "Dormand-Prince 8(5,3), adaptive steps, 7th-order dense output; the loop runs in numba"
+
+
+class CompiledVern8(CompiledExplicit):
+    name = "Vern8"
+    order = 8
     kernel_module = "app.numerics.kernels.vern8"
     summary = "Verner's 8(7) pair, adaptive steps, 7th-order dense output, stiffness test; the loop runs in numba"
-
-    def _run(self, problem: Problem, stop_on_stiff: bool = False) -> Trajectory:
-        from app.numerics.kernels import vern8
-
-        rhs = problem.system.bound("rhs")
-        y = problem.y0.astype(float).copy()
-        fy = np.empty_like(y)
-        st = np.zeros(vern8.STATE_SIZE)
-        Y = np.empty((problem.t.size, y.size))
-        args = (problem.k, problem.t, problem.rtol, problem.atol, problem.bound, int(stop_on_stiff))
-        status = drive(lambda chunk: vern8.run(rhs, *args, chunk, y, fy, st, Y), lambda: st[vern8.STEPS], problem, self)
-        trajectory = finished(
-            self,
-            problem,
-            Y,
-            int(st[vern8.NEXT_OUT]),
-            status,
-            last=y,
-            steps=int(st[vern8.STEPS]),
-            rhs_evaluations=int(st[vern8.NFEV]),
-            stiff_detected=bool(st[vern8.STIFF_SEEN]),
-        )
-        if st[vern8.REJECTED]:
-            trajectory.notes.append(f"{int(st[vern8.REJECTED])} rejected steps")
-        return trajectory
