@@ -14,7 +14,10 @@ port, then runs bounded asyncio clients:
   and 4N clients send heavy scene simulations back to back, while an honest
   session derives a new small system every few seconds (retrying after
   ``Retry-After``: its wait is timed until the answer) and a probe asks
-  /healthz five times a second.
+  /healthz five times a second.  The probe runs in a process of its own, as a
+  kubelet's does ("healthz (own process)"); the same probe inside this client's
+  event loop ("healthz (in the load's loop)") also counts the delays of the sixty
+  clients sharing that loop, so it reads higher than the server's own latency.
 
 Every run is bounded in time (``--seconds``) and requests; it prints, per level,
 throughput, p50/p99 per endpoint, the error rate (5xx counted apart) and the
@@ -31,6 +34,7 @@ from __future__ import annotations
 
 import argparse
 import asyncio
+import multiprocessing
 import os
 import random
 import signal
@@ -40,6 +44,7 @@ import subprocess
 import sys
 import time
 from collections import defaultdict
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 import httpx2 as httpx
@@ -160,8 +165,32 @@ async def honest_session(base: str, rec: Recorder, stop: float) -> None:
 async def health_probe(base: str, rec: Recorder, stop: float) -> None:
     async with httpx.AsyncClient(base_url=base, timeout=30) as c:
         while time.monotonic() < stop:
-            await rec.call(c, "healthz", "GET", "/healthz")
+            await rec.call(c, "healthz (in the load's loop)", "GET", "/healthz")
             await asyncio.sleep(0.2)
+
+
+def probe_alone(base: str, seconds: float) -> list[tuple[float, int]]:
+    """/healthz five times a second from a process of its own: (latency in s, status; 599 for no answer)."""
+    answers = []
+    stop = time.monotonic() + seconds
+    with httpx.Client(base_url=base, timeout=30) as c:
+        while time.monotonic() < stop:
+            started = time.perf_counter()
+            try:
+                status = c.get("/healthz").status_code
+            except httpx.HTTPError:
+                status = 599
+            answers.append((time.perf_counter() - started, status))
+            time.sleep(0.2)
+    return answers
+
+
+async def health_probe_alone(base: str, rec: Recorder, seconds: float) -> None:
+    with ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn")) as one:
+        answers = await asyncio.get_running_loop().run_in_executor(one, probe_alone, base, seconds)
+    for latency, status in answers:
+        rec.times["healthz (own process)"].append(latency)
+        rec.status["healthz (own process)"][status] += 1
 
 
 def server_rss_mb(pid: int) -> float:
@@ -195,12 +224,14 @@ def start_server(workers: int) -> tuple[subprocess.Popen, str]:
     # serve.sh runs `python`: the one of this interpreter's environment (the venv)
     path = f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}"
     env = {**os.environ, "PATH": path, "PORT": str(port), "HOST": "127.0.0.1", "WORKERS": str(workers)}
+    # LOAD_TEST_SERVER_LOG=path keeps the server's output (e.g. with PYTHONASYNCIODEBUG=1: slow callbacks)
+    log = open(os.environ["LOAD_TEST_SERVER_LOG"], "wb") if os.environ.get("LOAD_TEST_SERVER_LOG") else None  # noqa: SIM115
     proc = subprocess.Popen(
         [str(ROOT / "scripts" / "serve.sh")],
         cwd=ROOT,
         env=env,
-        stdout=subprocess.DEVNULL,
-        stderr=subprocess.DEVNULL,
+        stdout=log or subprocess.DEVNULL,
+        stderr=log or subprocess.DEVNULL,
         start_new_session=True,
     )
     base = f"http://127.0.0.1:{port}"
@@ -253,6 +284,7 @@ async def run_level(
         tasks += [flooder(base, rec, stop) for _ in range(flood)]
         tasks += [simulation_flood(base, scenes, rec, stop) for _ in range(4 * flood)]
         tasks += [honest_session(base, rec, stop), health_probe(base, rec, stop)]
+        tasks += [health_probe_alone(base, rec, seconds)]
     started = time.monotonic()
     await asyncio.gather(sample_memory(), *tasks)
     elapsed = time.monotonic() - started
