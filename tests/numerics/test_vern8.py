@@ -10,6 +10,7 @@ from app.numerics.kernels import vern8_tableau as tab
 from app.numerics.kernels.vern8 import STIFF_LIMIT, interpolant_weights
 from app.numerics.methods import METHODS, Problem
 from tests.numerics.extreme_cases import system_for
+from tests.numerics.rk_trees import density, round_off, stage_weights, trees
 
 K = np.array([1.0, 9.81, 1.0])  # m, g, R of the simple pendulum
 
@@ -66,45 +67,6 @@ def test_stiffness_limit_sits_below_the_stability_boundary():
     boundary = xs[np.argmax([growth(x) > 1.0 for x in xs])]
     assert all(growth(x) <= 1.0 for x in xs[xs < boundary - 0.01])
     assert abs(STIFF_LIMIT / boundary - 0.955) < 0.01
-
-
-def grow(tree: tuple) -> set[tuple]:
-    """Every tree with one more node: a leaf added to the root or, recursively, inside one of its subtrees."""
-    out = {tuple(sorted((*tree, ())))}
-    for i, child in enumerate(tree):
-        for bigger in grow(child):
-            out.add(tuple(sorted((*tree[:i], bigger, *tree[i + 1 :]))))
-    return out
-
-
-def trees(order: int) -> list[tuple]:
-    """The rooted trees with ``order`` nodes, a tree being the sorted tuple of its subtrees (() is a node)."""
-    level = {()}
-    for _ in range(order - 1):
-        level = set().union(*(grow(t) for t in level))
-    return sorted(level)
-
-
-def size(tree: tuple) -> int:
-    return 1 + sum(size(c) for c in tree)
-
-
-def density(tree: tuple) -> int:
-    # gamma(t) = |t| prod gamma(t_k)
-    return size(tree) * int(np.prod([density(c) for c in tree]))
-
-
-def stage_weights(tree: tuple, A: np.ndarray) -> np.ndarray:
-    # g(t) = prod_k A g(t_k), componentwise; the elementary weight is b . g(t)
-    g = np.ones(A.shape[0])
-    for child in tree:
-        g = g * (A @ stage_weights(child, A))
-    return g
-
-
-def round_off(w: np.ndarray, g: np.ndarray, ulps: float = 50) -> float:
-    # what summing w . g in doubles may lose: a few ulps of the largest terms
-    return ulps * np.finfo(float).eps * float(np.abs(w) @ np.abs(g))
 
 
 def test_tree_counts():

@@ -34,13 +34,14 @@ from app.numerics.kernels.common import (
     STIFF,
     VEC,
     initial_step,
+    inverse_eighth_root,
+    min_step,
 )
 from app.numerics.kernels.vern8_stages import combine, extra, stages
 
 NODES = np.ascontiguousarray(tab.NODES)
 NODE_VALUES = np.ascontiguousarray(tab.NODE_VALUES)
 N_STEP, N_ALL, DEGREE = tab.N_STEP, tab.N_ALL, tab.DEGREE
-ERROR_EXPONENT = -1.0 / 8.0  # -1 / (embedded order 7 + 1)
 SAFETY, MIN_FACTOR, MAX_FACTOR = 0.9, 0.2, 10.0
 
 # Stiffness test (Hairer's, as in DOP853): stage 12 and K_13 are both at t + h, so
@@ -111,10 +112,10 @@ def run(f, k, t_out, rtol, atol, bound, stop_on_stiff, chunk, y, fy, st, Y):
             break
         if accepted >= chunk:
             break
-        min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
+        smallest = min_step(t)
         rejected = False
         while True:
-            if h_abs < min_step:
+            if h_abs < smallest:
                 status = STEP_TOO_SMALL
                 break
             t_new = t + h_abs
@@ -130,12 +131,12 @@ def run(f, k, t_out, rtol, atol, bound, stop_on_stiff, chunk, y, fy, st, Y):
                 rejected_total += 1
                 continue
             if err < 1.0:
-                factor = MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err**ERROR_EXPONENT)
+                factor = MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * inverse_eighth_root(err))
                 if rejected:
                     factor = min(1.0, factor)
                 h_abs *= factor
                 break
-            h_abs *= max(MIN_FACTOR, SAFETY * err**ERROR_EXPONENT)
+            h_abs *= max(MIN_FACTOR, SAFETY * inverse_eighth_root(err))
             rejected = True
             rejected_total += 1
         if status == STEP_TOO_SMALL:
@@ -150,7 +151,8 @@ def run(f, k, t_out, rtol, atol, bound, stop_on_stiff, chunk, y, fy, st, Y):
             K[N_STEP, i] = fy[i]
             num += (fy[i] - K[N_STEP - 1, i]) ** 2
             den += (y_new[i] - ys[i]) ** 2
-        if den > 0.0 and h * np.sqrt(num / den) > STIFF_LIMIT:
+        # h sqrt(num / den) > STIFF_LIMIT, squared (no division, no root)
+        if h * h * num > STIFF_LIMIT * STIFF_LIMIT * den and den > 0.0:
             calm_run = 0.0
             stiff_run += 1.0
             if stiff_run >= STIFF_STEPS:
