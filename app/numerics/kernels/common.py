@@ -66,22 +66,6 @@ def compensated_add(x, c, i, delta):
     x[i] = new
 
 
-@njit(inline="always")
-def min_step(t):
-    """The smallest step an adaptive loop may take at t: ten units in the last place of t (and never 0).
-
-    Written as 10 eps |t| instead of numpy's nextafter: a call out of the loop costs more than the
-    arithmetic, and with it and a pow gone LLVM keeps the step loop tight (measured in bench_cyrk)."""
-    return max(2.220446049250313e-15 * abs(t), 5e-323)
-
-
-@njit(inline="always")
-def inverse_eighth_root(x):
-    """x^(-1/8) as three square roots (hardware instructions) instead of a call to pow: the step-size
-    rule of the 8th-order pairs, h_new = h 0.9 err^(-1/8)."""
-    return 1.0 / np.sqrt(np.sqrt(np.sqrt(x)))
-
-
 @njit(F64(VEC, VEC), **JIT)
 def _rms(x, scale):
     # ||x / scale|| / sqrt(n)
