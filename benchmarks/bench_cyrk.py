@@ -7,10 +7,9 @@ pendulum (θ0 = 2.5, 100 periods, exact reference) and the double pendulum
 same right-hand side: the engine's generated function compiled by numba (CyRK
 through a numba cfunc wrapper).  The floor is the time of the same number of
 bare right-hand-side calls through a function pointer in a compiled loop.
-Times are the minimum of ``REPEATS`` rounds in which every path takes its turn, all
-in one process (ratios within one run: the machine is shared, absolute times
-drift; with 5 back-to-back runs per path a busy machine moved single figures by
-30 % and more from run to run).
+Times are the minimum of ``REPEATS`` runs, all in one process (ratios within one
+run: the machine is shared, absolute times drift; with 5 runs a busy machine
+moved single figures by 30 % from run to run).
 
     .venv/bin/python -m benchmarks.bench_cyrk
 """
@@ -18,7 +17,6 @@ drift; with 5 back-to-back runs per path a busy machine moved single figures by
 from __future__ import annotations
 
 import math
-import time
 
 import numpy as np
 from CyRK import cyjit, nbsolve2_ivp
@@ -28,7 +26,7 @@ from app.numerics.kernels.common import F64, I64, RHS, VEC
 from app.numerics.methods import METHODS, Problem
 from app.numerics.simulate import simulate
 from app.numerics.system import NumericSystem
-from benchmarks.bench_numerics import GRID, TARGET, cases
+from benchmarks.bench_numerics import GRID, TARGET, best_time, cases
 
 OURS = ("DOP853-compiled", "Vern8")
 CYRK = ("DOP853", "Vern7", "Vern8")
@@ -78,29 +76,14 @@ def loosest(error_of) -> float:
     raise RuntimeError("no tolerance on the grid reaches the target")
 
 
-def interleaved(runs: dict[str, object], repeats: int) -> dict[str, float]:
-    """The minimum time of each run over ``repeats`` rounds, the runs taking turns within a round: a burst of
-    load from other processes then slows one round of every path instead of all samples of one path."""
-    for run in runs.values():
-        run()  # warm-up
-    best = dict.fromkeys(runs, math.inf)
-    for _ in range(repeats):
-        for name, run in runs.items():
-            start = time.perf_counter()
-            run()
-            best[name] = min(best[name], time.perf_counter() - start)
-    return best
-
-
 def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
     n = system.n
-    rows = []  # path, rtol, final error, steps, evaluations (ours)
-    runs = {}  # path -> the timed call; "floor <path>" -> as many bare right-hand-side calls
+    rows = []
     out = np.empty(y0.size)
     rhs = system.bound("rhs")  # as the kernels get it
 
-    def floor_of(evaluations: int):
-        return lambda: bare_calls(rhs, 0.0, y0.copy(), k, out, evaluations)
+    def floor(evaluations: int) -> float:
+        return best_time(lambda: bare_calls(rhs, 0.0, y0.copy(), k, out, evaluations), REPEATS)
 
     for name in OURS:
         method = METHODS[name]
@@ -110,21 +93,40 @@ def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
             ).max()
         )
         run = method.integrate(ours_problem(system, k, y0, t_end, rtol))
-        path = f"ours {name} (kernel from Python)"
-        rows.append((path, rtol, np.abs(run.y[-1, :n] - reference[:n]).max(), run.steps, run.rhs_evaluations))
-        runs[path] = lambda rtol=rtol, method=method: method.integrate(ours_problem(system, k, y0, t_end, rtol))
-        runs[f"floor {path}"] = floor_of(run.rhs_evaluations)
+        seconds = best_time(
+            lambda rtol=rtol, method=method: method.integrate(ours_problem(system, k, y0, t_end, rtol)), REPEATS
+        )
+        error = np.abs(run.y[-1, :n] - reference[:n]).max()
+        rows.append(
+            (
+                f"ours {name} (kernel from Python)",
+                rtol,
+                error,
+                run.steps,
+                run.rhs_evaluations,
+                seconds,
+                floor(run.rhs_evaluations),
+            )
+        )
 
     def auto(r):
         return simulate(system, k, y0, t_end, 2, "auto", r, r / 100, wall_seconds=120, estimate=False)
 
     rtol = loosest(lambda r: np.abs(auto(r).trajectory.y[-1, :n] - reference[:n]).max())
     outcome = auto(rtol)
+    seconds = best_time(lambda: auto(rtol), REPEATS)
     tr = outcome.trajectory
-    path = f"ours default path (auto → {outcome.method})"
-    rows.append((path, rtol, np.abs(tr.y[-1, :n] - reference[:n]).max(), tr.steps, tr.rhs_evaluations))
-    runs[path] = lambda: auto(rtol)
-    runs[f"floor {path}"] = floor_of(tr.rhs_evaluations)
+    rows.append(
+        (
+            f"ours default path (auto → {outcome.method})",
+            rtol,
+            np.abs(tr.y[-1, :n] - reference[:n]).max(),
+            tr.steps,
+            tr.rhs_evaluations,
+            seconds,
+            floor(tr.rhs_evaluations),
+        )
+    )
 
     address = cyrk_rhs(system, k).address
     for method_id, name in enumerate(CYRK):
@@ -134,12 +136,8 @@ def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
 
         rtol = loosest(lambda r, final=final: np.abs(final(r)[0][:n] - reference[:n]).max())
         last, steps = final(rtol)
-        path = f"CyRK {name}"
-        rows.append((path, rtol, np.abs(last[:n] - reference[:n]).max(), int(steps), None))
-        runs[path] = lambda rtol=rtol, final=final: final(rtol)
-
-    times = interleaved(runs, REPEATS)
-    rows = [(*row[:5], times[row[0]], times.get(f"floor {row[0]}")) for row in rows]
+        seconds = best_time(lambda rtol=rtol, final=final: final(rtol), REPEATS)
+        rows.append((f"CyRK {name}", rtol, np.abs(last[:n] - reference[:n]).max(), int(steps), None, seconds, None))
 
     print(f"\n{label}: final-state error target {TARGET:g}")
     print("| path | rtol | final error | steps | RHS evaluations | time ms | floor ms | time / floor |")
