@@ -26,10 +26,11 @@ eigenvalues lambda_i and eigenvectors v_i:
 * otherwise Verner's efficient 8(7) pair with a compiled step loop (high order, adaptive, and it
   detects stiffness that appears on the way).  At equal final error 1e-8 it took 18 % (pendulum,
   100 periods) and 30 % (double pendulum, 50 s) fewer steps than the compiled DOP853, the same steps
-  as CyRK's Vern8, and less time (benchmarks/bench_cyrk.py).  At the same tolerance it is also the
-  more accurate: past the spherical pendulum's pole (rtol 1e-8) its true error was 5.5e-7 against
-  DOP853's 1.1e-6, the error estimate 5.6e-7 (honest), in 316 steps against 434; p_phi, conserved,
-  drifted 2.4e-6 of itself (DOP853: 7e-8), within the error.
+  as CyRK's Vern8, and 1.7x less time (benchmarks/bench_cyrk.py).  At the same tolerance its error is
+  about DOP853's, and its estimate stays honest: past the spherical pendulum's pole (rtol 1e-8) the
+  true error was 1.4e-6 against DOP853's 1.1e-6 (5.5e-7 with an earlier build of the same loop: there
+  the error hangs on the exact step sequence), the estimate 1.4e-6, in 316 steps against 434; p_phi,
+  conserved, drifted 2.5e-6 of itself (DOP853: 7e-8), within the error.
 
 A stiff problem whose fast mode *is* excited must resolve that mode whatever
 the method, so it is treated as non-stiff (explicit or symplectic).
