@@ -7,8 +7,9 @@ pendulum (θ0 = 2.5, 100 periods, exact reference) and the double pendulum
 same right-hand side: the engine's generated function compiled by numba (CyRK
 through a numba cfunc wrapper).  The floor is the time of the same number of
 bare right-hand-side calls through a function pointer in a compiled loop.
-Times are the minimum of several runs, all in one process (ratios within one
-run: the machine is shared, absolute times drift).
+Times are the minimum of ``REPEATS`` runs, all in one process (ratios within one
+run: the machine is shared, absolute times drift; with 5 runs a busy machine
+moved single figures by 30 % from run to run).
 
     .venv/bin/python -m benchmarks.bench_cyrk
 """
@@ -29,6 +30,7 @@ from benchmarks.bench_numerics import GRID, TARGET, best_time, cases
 
 OURS = ("DOP853-compiled", "Vern8")
 CYRK = ("DOP853", "Vern7", "Vern8")
+REPEATS = 25
 
 
 @njit(types.void(RHS, F64, VEC, VEC, VEC, I64))
@@ -81,7 +83,7 @@ def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
     rhs = system.bound("rhs")  # as the kernels get it
 
     def floor(evaluations: int) -> float:
-        return best_time(lambda: bare_calls(rhs, 0.0, y0.copy(), k, out, evaluations))
+        return best_time(lambda: bare_calls(rhs, 0.0, y0.copy(), k, out, evaluations), REPEATS)
 
     for name in OURS:
         method = METHODS[name]
@@ -91,7 +93,9 @@ def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
             ).max()
         )
         run = method.integrate(ours_problem(system, k, y0, t_end, rtol))
-        seconds = best_time(lambda rtol=rtol, method=method: method.integrate(ours_problem(system, k, y0, t_end, rtol)))
+        seconds = best_time(
+            lambda rtol=rtol, method=method: method.integrate(ours_problem(system, k, y0, t_end, rtol)), REPEATS
+        )
         error = np.abs(run.y[-1, :n] - reference[:n]).max()
         rows.append(
             (
@@ -110,7 +114,7 @@ def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
 
     rtol = loosest(lambda r: np.abs(auto(r).trajectory.y[-1, :n] - reference[:n]).max())
     outcome = auto(rtol)
-    seconds = best_time(lambda: auto(rtol))
+    seconds = best_time(lambda: auto(rtol), REPEATS)
     tr = outcome.trajectory
     rows.append(
         (
@@ -132,7 +136,7 @@ def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
 
         rtol = loosest(lambda r, final=final: np.abs(final(r)[0][:n] - reference[:n]).max())
         last, steps = final(rtol)
-        seconds = best_time(lambda rtol=rtol, final=final: final(rtol))
+        seconds = best_time(lambda rtol=rtol, final=final: final(rtol), REPEATS)
         rows.append((f"CyRK {name}", rtol, np.abs(last[:n] - reference[:n]).max(), int(steps), None, seconds, None))
 
     print(f"\n{label}: final-state error target {TARGET:g}")

@@ -22,7 +22,7 @@ t0 = time.perf_counter()
 import numba  # noqa: F401
 from app.numerics.kernels import common  # noqa: F401
 timings = {"numba import + shared helpers": time.perf_counter() - t0}
-for name in ("dop853", "composition", "gauss"):
+for name in ("vern8", "dop853", "composition", "gauss"):  # auto's default first, as the server warms up
     t = time.perf_counter()
     __import__(f"app.numerics.kernels.{name}")
     timings[f"kernel {name}"] = time.perf_counter() - t

@@ -2,7 +2,7 @@
 
     error_estimate = max over samples and coordinates of |q_run(t) - q_ref(t)| * factor
 
-* adaptive methods: the reference is the compiled DOP853 (scipy's while the
+* adaptive methods: the reference is the compiled ``REFERENCE`` pair (scipy's DOP853 while the
   kernels compile; Radau when the problem is stiff) at a thousand times tighter tolerances (for Radau, rtol
   only), factor 1.  With
   errors roughly proportional to the tolerance the reference's own error is

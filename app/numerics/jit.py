@@ -21,8 +21,10 @@ from collections.abc import Callable
 from types import ModuleType
 
 import numpy
+from numba.core import types
 from numba.core.types.function_type import WrapperAddressProtocol
 from numba.experimental.function_type import _get_wrapper_address
+from numba.extending import typeof_impl
 
 from app.numerics.paths import generated_dir
 
@@ -62,12 +64,20 @@ class Bound(WrapperAddressProtocol):
         self.dispatcher = dispatcher  # keeps the compiled code alive
         self.sig = signature
         self.address = _get_wrapper_address(dispatcher, signature)
+        self.numba_type = types.FunctionType(signature)  # what numba's typeof would build at every call
 
     def __wrapper_address__(self) -> int:
         return self.address
 
     def signature(self):
         return self.sig
+
+
+@typeof_impl.register(Bound)
+def _typeof_bound(value: Bound, context) -> types.FunctionType:
+    # the type found once: numba otherwise rebuilds the function type from the signature at every
+    # Python-to-kernel call (13 us of a 38 us call measured)
+    return value.numba_type
 
 
 def python_functions(sources: dict[str, str]) -> dict[str, Callable]:

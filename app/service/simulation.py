@@ -328,7 +328,7 @@ def warm_all() -> dict[str, float]:
     """Compile (or load from numba's disk cache) every kernel and every scene's right-hand sides.
 
     Run in the background at start-up and at image build (``python -m app.service.simulation``).
-    Order: every scene's numeric system, then the compiled DOP853 (what ``auto`` picks most
+    Order: every scene's numeric system, then ``auto``'s compiled default (what it picks most
     often, and the error reference) with each scene's right-hand sides, then the other compiled
     kernels; a method is used the moment it is ready.  Returns the seconds spent per item."""
     from app.service.derivations import derivation, derivation_document

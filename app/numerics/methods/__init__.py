@@ -35,7 +35,7 @@ AUTO = "auto"
 CHOICES: tuple[str, ...] = (AUTO, *METHODS)  # what a request may ask for
 
 # Roles: the methods auto, the error estimate and the server's start-up give a job to.
-NONSTIFF = "DOP853-compiled"  # auto's default; it watches for stiffness on the way
+NONSTIFF = "Vern8"  # auto's default; it watches for stiffness on the way (why this pair: choose.py)
 STIFF = "Radau"  # auto's pick for a stiff start, and where a run that meets stiffness is redone
 REFERENCE = NONSTIFF  # the tighter run behind an adaptive run's error estimate
 FALLBACK = "DOP853"  # answers while the compiled code is not ready: no compiler needed

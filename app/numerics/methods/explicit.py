@@ -1,4 +1,4 @@
-"""The compiled explicit pairs: DOP853 (the default fast path) and Verner's 8(7).
+"""The compiled explicit pairs: Verner's efficient 8(7) (auto's default) and DOP853.
 
 Both kernels share one interface (``run``, ``STATE_SIZE`` and the state's slots), so one
 driver serves them; a method names only its kernel."""
@@ -60,4 +60,4 @@ class CompiledVern8(CompiledExplicit):
     name = "Vern8"
     order = 8
     kernel_module = "app.numerics.kernels.vern8"
-    summary = "Verner's 8(7) pair, adaptive steps, 7th-order dense output, stiffness test; the loop runs in numba"
+    summary = "Verner's efficient 8(7) pair, adaptive steps, 8th-order dense output, stiffness test; the loop runs in numba"
