@@ -27,7 +27,7 @@ from typing import Any
 from app.engine.check import STEPS, CheckError, Problem, check_answer, judge, name_kinds, problem
 from app.engine.errors import DerivationError
 from app.engine.exercises import exercise_json
-from app.service import derivations, user_systems
+from app.service import derivations
 from app.service.encoding import dumps
 from app.service.user_checks import InvalidSystem, check_system, spec_key
 from app.service.user_jobs import derive_checked, guarded
@@ -97,10 +97,10 @@ def system_practice_job(spec: dict[str, Any]) -> bytes:
 class Checking:
     """Scene problems and exercises (cached per process), answers through the worker pool."""
 
-    def __init__(self, users: UserSystems | None = None, config: Settings | None = None) -> None:
+    def __init__(self, users: UserSystems, config: Settings | None = None) -> None:
         self.check_seconds = (config or settings()).check_seconds
         # the jobs share the user systems' pool, fair share and request sharing
-        self.users = users or user_systems.service
+        self.users = users
         self._problems: dict[tuple[str, str, str | None], Problem] = {}
         self._exercises: dict[str, bytes] = {}
         self._lock = threading.Lock()
@@ -174,5 +174,3 @@ class Checking:
             self.practice, key, client, address, self.check_seconds * 3, system_practice_job, spec
         )
 
-
-service = Checking()

@@ -49,32 +49,18 @@ class ResultCache:
 class UserSystems:
     """Derive and simulate user systems: caches, fairness, then the worker pool."""
 
-    def __init__(
-        self, pool: worker.WorkerPool | None = None, gate: fair.Fairness | None = None, config: Settings | None = None
-    ):
+    def __init__(self, pool: worker.WorkerPool, gate: fair.Fairness | None = None, config: Settings | None = None):
         config = config or settings()
         self.derive_seconds = config.derive_seconds
         self.simulate_seconds = config.simulate_seconds
-        self._pool = pool
-        self._gate = gate
+        self.pool = pool
+        self.gate = gate or fair.Fairness(capacity=4 * pool.workers, workers=pool.workers)
         self.derivations = ResultCache()
         self.simulations = ResultCache(entries=64)
         self.exports = ResultCache(entries=64)
         self._running: dict[tuple[int, str], asyncio.Future] = {}
         self._queued: dict[tuple[int, str], fair.Ticket] = {}  # the ticket of each running slot
         self._waiters: dict[tuple[int, str], int] = {}
-
-    @property
-    def pool(self) -> worker.WorkerPool:
-        if self._pool is None:
-            self._pool = worker.pool()
-        return self._pool
-
-    @property
-    def gate(self) -> fair.Fairness:
-        if self._gate is None:
-            self._gate = fair.Fairness(capacity=4 * self.pool.workers, workers=self.pool.workers)
-        return self._gate
 
     async def _run(self, cache: ResultCache, key: str, client: str, address: str, timeout: float, job, *args) -> bytes:
         """A cached answer, else the same request already running, else a new job (one fair-share ticket)."""
@@ -178,5 +164,3 @@ class UserSystems:
             self.exports, key, client, address, self.derive_seconds, export_job, spec, fmt, initial, t_end, document
         )
 
-
-service = UserSystems()

@@ -21,9 +21,9 @@ from starlette.concurrency import run_in_threadpool
 
 from app.engine.parse import FUNCTIONS
 from app.numerics.methods import CHOICES
-from app.service import user_systems
 from app.service.user_checks import InvalidSystem, spec_key
 from app.service.user_jobs import derive_job
+from app.service.user_systems import UserSystems
 from app.viz.user_page import model_of
 from app.web.deps import ClientDep, UserSystemsDep
 from app.web.errors import KINDS, REFUSED, Problem, problem
@@ -42,14 +42,13 @@ EXAMPLES = {
 }
 
 
-def warm_examples() -> threading.Thread:
+def warm_examples(service: UserSystems) -> threading.Thread:
     """Derive the examples in the background at start-up, so that the first reader of each is answered at once.
 
     The derivation runs in this process (a thread, not the worker pool: nothing waits on it)
     and its answer goes into the service's cache under the key the page asks for."""
 
     def warm() -> None:
-        service = user_systems.service
         for example in EXAMPLES.values():
             spec = spec_of(form_of(example))
             key = spec_key(spec)

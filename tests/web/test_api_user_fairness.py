@@ -7,8 +7,10 @@ from concurrent.futures import Future
 
 import pytest
 
+from app.main import app
 from app.service import user_systems
 from app.service.fairness import COOKIE, Busy, Fairness
+from app.web.deps import user_systems_service
 from app.web.disconnect import ClientGone, unless_gone
 from tests.web.test_api_user_worker import run_in_own_loop
 
@@ -257,11 +259,12 @@ class SpyPool:
 
 
 @pytest.fixture
-def spy(monkeypatch):
+def spy():
     pool = SpyPool()
     service = user_systems.UserSystems(pool=pool, gate=Fairness(capacity=8, workers=1, queue_seconds=30))
-    monkeypatch.setattr(user_systems, "service", service)
-    return pool, service
+    app.dependency_overrides[user_systems_service] = lambda: service
+    yield pool, service
+    app.dependency_overrides.pop(user_systems_service)
 
 
 def test_one_job_at_a_time_per_session(client, spy):

@@ -14,6 +14,7 @@ from hypothesis import HealthCheck, settings
 from schemathesis.specs.openapi.checks import positive_data_acceptance
 
 from app.main import app
+from app.web import deps
 
 # The schema comes from the app object itself: no request and no start-up (``from_asgi`` runs the app's
 # lifespan while the suite is collected).  schemathesis.pytest.from_fixture would defer it to a fixture,
@@ -29,6 +30,12 @@ _rejection.expected_statuses = [*_rejection.expected_statuses, "413"]
 @pytest.mark.slow
 @schema.parametrize()
 @settings(max_examples=40, deadline=None, suppress_health_check=list(HealthCheck), derandomize=True)
-def test_every_operation_conforms_to_its_schema(case):
-    # a derivation may take a while (the double pendulum example does); the worker bounds it
-    case.call_and_validate(excluded_checks=[positive_data_acceptance], timeout=120)
+def test_every_operation_conforms_to_its_schema(case, services):
+    # schemathesis starts the app's lifespan for each operation: its calls use the session's services
+    # (one worker pool, started once) instead of a pool of their own
+    app.dependency_overrides[deps.services] = lambda: services
+    try:
+        # a derivation may take a while (the double pendulum example does); the worker bounds it
+        case.call_and_validate(excluded_checks=[positive_data_acceptance], timeout=120)
+    finally:
+        app.dependency_overrides.pop(deps.services)
