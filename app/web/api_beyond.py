@@ -12,6 +12,7 @@ from fastapi import APIRouter, Body
 from fastapi.responses import Response
 
 from app.service import modes, poincare
+from app.service.user_checks import checked
 from app.web.api_simulate import BODY_ERRORS, ERRORS
 from app.web.api_user import _errors, answer
 from app.web.deps import ClientDep, UserSystemsDep
@@ -77,7 +78,7 @@ async def user_poincare(
     spec = SystemSpec.model_validate(body.model_dump(include=set(SystemSpec.model_fields))).to_spec()
     options = poincare_options(body)
     options.pop("parameters", None)
-    return await answer(client, lambda key, address: users.poincare(spec, options, key, address))
+    return await answer(client, lambda key, address: users.poincare(checked(spec), options, key, address))
 
 
 @router.post(
@@ -89,5 +90,4 @@ async def user_poincare(
     responses=_errors(400, 413, 422, 429, 503),
 )
 async def user_modes(client: ClientDep, users: UserSystemsDep, system: Annotated[SystemSpec, Body()]) -> Response:
-    spec = system.to_spec()
-    return await answer(client, lambda key, address: users.modes(spec, key, address))
+    return await answer(client, lambda key, address: users.modes(checked(system.to_spec()), key, address))

@@ -38,7 +38,7 @@ def test_systems_outside_the_chapter_match_lagranges_method(client, name):
     doc = derive(client, spec)
     names = symbols_of(doc)
     ours = [sp.sympify(doc["accelerations"][q]["sympy"], locals=names) for q in doc["coordinates"]]
-    system = user_checks.to_system(_spec(spec))
+    system = user_checks.checked(_spec(spec)).system()
     theirs, _ = reference_accelerations(system)
     symbols = sorted(set(names.values()), key=str)
     for a, b in zip(ours, theirs, strict=True):
@@ -76,7 +76,7 @@ def test_lagrangian_form_and_same_contract_as_scenes(client):
     assert doc["steps"] and all(set(s) == {"title", "latex", "sympy", "explanation"} for s in doc["steps"])
     assert r"\dot{\theta}" in doc["lagrangian"]["latex"]
     # the bead's angular acceleration, checked against LagrangesMethod
-    theirs, _ = reference_accelerations(user_checks.to_system(_spec(SPINNING_HOOP)))
+    theirs, _ = reference_accelerations(user_checks.checked(_spec(SPINNING_HOOP)).system())
     ours = sp.sympify(doc["accelerations"]["theta"]["sympy"], locals=names)
     assert numerically_equal(ours, theirs[0], sorted(names.values(), key=str))
 

@@ -10,6 +10,7 @@ import pytest
 from app.main import app
 from app.service import user_systems
 from app.service.fairness import COOKIE, Busy, Fairness
+from app.service.user_checks import checked
 from app.web.deps import user_systems_service
 from app.web.disconnect import ClientGone, unless_gone
 from tests.web.test_api_user_worker import run_in_own_loop
@@ -328,9 +329,9 @@ def test_a_queued_job_whose_client_left_is_never_run(spy):
     pool, service = spy
 
     async def main():
-        holder = asyncio.ensure_future(service.derive(dict(PENDULUM), "session:a", "x"))
+        holder = asyncio.ensure_future(service.derive(checked(PENDULUM), "session:a", "x"))
         await asyncio.to_thread(pool.wait_for_job)
-        queued = asyncio.ensure_future(service.derive(dict(SPRING), "session:b", "y"))
+        queued = asyncio.ensure_future(service.derive(checked(SPRING), "session:b", "y"))
         while service.gate.waiting == 0:
             await asyncio.sleep(0.01)
         queued.cancel()  # what app/web/disconnect.py does when the client disconnects
