@@ -15,7 +15,7 @@ from app.service import modes, poincare
 from app.service.user_checks import checked
 from app.web.api_simulate import BODY_ERRORS, ERRORS
 from app.web.api_user import _errors, answer
-from app.web.deps import ClientDep, UserSystemsDep
+from app.web.deps import ClientDep, GatesDep, UserSystemsDep
 from app.web.responses import FastJSONResponse
 from app.web.schemas import SESSION_COOKIE
 from app.web.schemas_beyond import (
@@ -48,9 +48,9 @@ MODES_TEXT = (
     response_model=None,
     responses={200: {"model": PoincareResponse}, **ERRORS, **BODY_ERRORS},
 )
-def scene_poincare(scene_id: str, request: PoincareRequest) -> Any:
+def scene_poincare(scene_id: str, request: PoincareRequest, gates: GatesDep) -> Any:
     # a refusal (SimulationError) or an unknown scene is answered by app/web/errors.py
-    return FastJSONResponse(poincare.cached_section_of_scene(scene_id, **poincare_options(request)))
+    return FastJSONResponse(poincare.cached_section_of_scene(scene_id, gates, **poincare_options(request)))
 
 
 @router.get(
@@ -60,8 +60,8 @@ def scene_poincare(scene_id: str, request: PoincareRequest) -> Any:
     response_model=list[MeasuredModes],
     responses={404: ERRORS[404], 429: ERRORS[429]},
 )
-def scene_modes(scene_id: str) -> Any:
-    return FastJSONResponse(modes.measure_scene(scene_id))
+def scene_modes(scene_id: str, gates: GatesDep) -> Any:
+    return FastJSONResponse(modes.measure_scene(scene_id, gates))
 
 
 @router.post(

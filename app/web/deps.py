@@ -17,6 +17,7 @@ from fastapi.responses import Response
 from app.service.checking import Checking
 from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Fairness
 from app.service.services import Services
+from app.service.simulation import Gates
 from app.service.user_systems import UserSystems
 
 
@@ -36,8 +37,13 @@ def checking_service(running: ServicesDep) -> Checking:
     return running.checking
 
 
+def simulation_gates(running: ServicesDep) -> Gates:
+    return running.gates
+
+
 UserSystemsDep = Annotated[UserSystems, Depends(user_systems_service)]
 CheckingDep = Annotated[Checking, Depends(checking_service)]
+GatesDep = Annotated[Gates, Depends(simulation_gates)]
 
 
 def fairness_gate(users: UserSystemsDep) -> Fairness:
