@@ -24,7 +24,7 @@ from app.web.templating import static_app
 
 @asynccontextmanager
 async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
-    # the services (worker pool, user systems, checking), given to the routes by app/web/deps.py
+    # the services (worker pool, user systems, checking, simulation slots), given to the routes by app/web/deps.py
     services = Services.start(settings())
     # Fill the derivation cache, then load the compiled integrators and the scenes'
     # right-hand sides, in the background: the server answers at once, with scipy
