@@ -25,7 +25,7 @@ from app.web.schemas_beyond import (
     UserPoincareRequest,
     poincare_options,
 )
-from app.web.schemas_user import SystemSpec
+from app.web.schemas_user import SystemSpec, system_of
 
 router = APIRouter(prefix="/api", tags=["beyond the chapter"])
 
@@ -75,7 +75,7 @@ def scene_modes(scene_id: str, gates: GatesDep) -> Any:
 async def user_poincare(
     client: ClientDep, users: UserSystemsDep, body: Annotated[UserPoincareRequest, Body()]
 ) -> Response:
-    spec = SystemSpec.model_validate(body.model_dump(include=set(SystemSpec.model_fields))).to_spec()
+    spec = system_of(body)
     options = poincare_options(body)
     options.pop("parameters", None)
     return await answer(client, lambda key, address: users.poincare(checked(spec), options, key, address))

@@ -34,6 +34,7 @@ from app.web.schemas_user import (
     UserError,
     UserSimulateRequest,
     simulate_request,
+    system_of,
 )
 
 router = APIRouter(prefix="/api", tags=["your systems"])
@@ -140,7 +141,7 @@ async def simulate_system(
     users: UserSystemsDep,
     body: Annotated[UserSimulateRequest, Body(openapi_examples=SIMULATE_EXAMPLES)],
 ) -> Response:
-    spec = SystemSpec.model_validate(body.model_dump(include=set(SystemSpec.model_fields))).to_spec()
+    spec = system_of(body)
     wanted = simulate_request(body)
     return await answer(client, lambda key, address: users.simulate(checked(spec), wanted, key, address))
 
