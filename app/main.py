@@ -4,10 +4,12 @@ from __future__ import annotations
 
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
+from typing import Any
 
 from fastapi import FastAPI
 
 from app.service import simulation
+from app.service.services import Services
 from app.settings import settings
 from app.web import api_beyond, api_scenes, docs, errors, limits, pages
 from app.web.api_check import router as check_router
@@ -21,15 +23,20 @@ from app.web.templating import static_app
 
 
 @asynccontextmanager
-async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
+    # the services (worker pool, user systems, checking, simulation slots), given to the routes by app/web/deps.py
+    services = Services.start(settings())
     # Fill the derivation cache, then load the compiled integrators and the scenes'
     # right-hand sides, in the background: the server answers at once, with scipy
     # while a compiled integrator is not ready yet.
     if settings().warm:
         simulation.start_warming()
         # the playground's examples too, so that a first reader of one does not wait for its derivation
-        warm_examples()
-    yield
+        warm_examples(services.users)
+    try:
+        yield {"services": services}
+    finally:
+        services.stop()  # the worker pool's processes joined
 
 
 app = FastAPI(

@@ -22,7 +22,9 @@ from fastapi.testclient import TestClient
 
 from app.main import app
 from app.service import user_systems
+from app.settings import Settings
 from app.web import examples_user
+from app.web.deps import user_systems_service
 from tests.web.test_api_user_hostile import CORPUS, _body
 from tests.web.test_hostile_corpus import PROBES, lagrangian, send
 
@@ -83,6 +85,7 @@ def main() -> None:
     refusals()
     with TestClient(app) as client:
         client.post("/api/derive", json=examples_user.SPINNING_HOOP)  # start the worker pool
+        service = client.app_state["services"].users
         cached, _ = timed(lambda: client.post("/api/derive", json=examples_user.SPINNING_HOOP))
         print(f"cached derivation (baseline): {cached * 1e3:.2f} ms")
 
@@ -90,15 +93,21 @@ def main() -> None:
         print("|---|---|---|---|")
         for name, example in examples_user.SIMULATE_EXAMPLES.items():
             spec = {k: v for k, v in example["value"].items() if k not in ("initial", "t_end", "samples")}
-            user_systems.service.derivations = user_systems.ResultCache()
+            service.derivations = user_systems.ResultCache()
             first, _ = timed(lambda spec=spec: client.post("/api/derive", json=spec))
             again, _ = timed(lambda spec=spec: client.post("/api/derive", json=spec))
-            user_systems.service.simulations = user_systems.ResultCache()
+            service.simulations = user_systems.ResultCache()
             run, response = timed(lambda example=example: client.post("/api/simulate", json=example["value"]))
             assert response.status_code == 200, response.text[:200]
             print(f"| {name} | {first:.2f} | {again * 1e3:.2f} | {run:.2f} |")
 
-        killed, answer = timed(lambda: examples_user.answer_with_time_limit(client, 1.0))
+        # a service of its own with a 1 s limit (no cached answer), on the app's worker pool
+        short = user_systems.UserSystems(service.pool, config=Settings(derive_seconds=1.0))
+        app.dependency_overrides[user_systems_service] = lambda: short
+        try:
+            killed, answer = timed(lambda: client.post("/api/derive", json=examples_user.DOUBLE_PENDULUM).json())
+        finally:
+            app.dependency_overrides.pop(user_systems_service)
         assert answer["kind"] == "timeout"
         after, response = timed(
             lambda: client.post("/api/derive", json={"coordinates": ["q"], "lagrangian": "q_dot**2"})

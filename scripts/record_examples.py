@@ -13,7 +13,6 @@ from typing import Any
 from fastapi.testclient import TestClient
 
 from app.main import app
-from app.service import user_systems
 from app.service.user_systems import UserSystems
 from app.settings import Settings
 from app.web.deps import user_systems_service
@@ -35,8 +34,8 @@ from app.web.limits import MAX_BODY_BYTES
 def record() -> dict[str, Any]:
     """Run the API on the example requests and collect what it answers."""
     errors: dict[str, dict[str, Any]] = {status: {} for status in SUMMARIES}
-    service = user_systems.service
     with TestClient(app) as client:
+        service = client.app_state["services"].users
         derived = client.post("/api/derive", json=FORCED_SPRING).json()
         simulated = client.post("/api/simulate", json=SIMULATE_EXAMPLES["forced-spring"]["value"]).json()
         errors["422"]["simulate"] = client.post("/api/simulate", json=SIMULATE_REFUSED["value"]).json()
@@ -64,7 +63,7 @@ def record() -> dict[str, Any]:
 
 def answer_with_time_limit(client: TestClient, seconds: float) -> dict[str, Any]:
     """The answer to deriving the double pendulum under a short time limit (a service of its own: no cached result)."""
-    short = UserSystems(config=Settings(derive_seconds=seconds))
+    short = UserSystems(client.app_state["services"].pool, config=Settings(derive_seconds=seconds))
     app.dependency_overrides[user_systems_service] = lambda: short
     try:
         return client.post("/api/derive", json=DOUBLE_PENDULUM).json()

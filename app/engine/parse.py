@@ -293,7 +293,8 @@ class _Checker:
         if name in self.names:
             return _Facts(None, None, 1, degree=1)
         if name in _FLOAT_CONSTANTS:
-            return _Facts(_FLOAT_CONSTANTS[name], None, 1)
+            # SymPy keeps pi symbolic and combines its powers as a symbol's: (pi**5)**c is pi**(5*c)
+            return _Facts(_FLOAT_CONSTANTS[name], None, 1, degree=1)
         if name in FUNCTIONS:
             raise self.refuse(node, f"{name} is a function: write {name}(...)")
         if name.endswith("_ddot"):

@@ -21,15 +21,17 @@ from __future__ import annotations
 
 import asyncio
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from typing import Any
 
 from app.engine.check import STEPS, CheckError, Problem, check_answer, judge, name_kinds, problem
+from app.engine.derive import Derivation
 from app.engine.errors import DerivationError
 from app.engine.exercises import exercise_json
-from app.service import derivations, user_systems
+from app.engine.user_system import UserSystem
+from app.service import derivations
 from app.service.encoding import dumps
-from app.service.user_checks import InvalidSystem, check_system, spec_key
+from app.service.user_checks import InvalidSystem, checked, spec_key
 from app.service.user_jobs import derive_checked, guarded
 from app.service.user_systems import ResultCache, UserSystems
 from app.settings import Settings, settings
@@ -69,38 +71,46 @@ def scene_check_job(pb: Problem, answer: str) -> bytes:
     return guarded(lambda: _judged(lambda: judge(pb, answer)))
 
 
-def _system(spec: dict[str, Any]):
+def _system(user: UserSystem) -> Derivation:
     try:
-        return derive_checked(spec)
+        return derive_checked(user)
     except (InvalidSystem, DerivationError) as exc:
         raise _in_system(exc) from None
 
 
-def system_check_job(spec: dict[str, Any], step: str, coordinate: str | None, answer: str) -> bytes:
+def system_check_job(user: UserSystem, step: str, coordinate: str | None, answer: str) -> bytes:
     """Worker job: derive a user system (cached per worker), then judge the answer."""
 
     def run() -> dict[str, Any]:
-        d = _system(spec)
+        d = _system(user)
         return _judged(lambda: judge(problem(d, step, coordinate), answer))
 
     return guarded(run)
 
 
-def system_practice_job(spec: dict[str, Any]) -> bytes:
+def system_practice_job(user: UserSystem) -> bytes:
     """Worker job: the exercises of a user system (each step's prompt and the engine's answer)."""
-    return guarded(lambda: exercise_json(_system(spec)))
+    return guarded(lambda: exercise_json(_system(user)))
 
 
 # ---- in the web process ---------------------------------------------------------------------
 
 
+def declared(data: Mapping[str, Any]) -> UserSystem:
+    """The checked user system of a request's ``system`` field; a refusal is located under ``system``."""
+    try:
+        return checked(data)
+    except InvalidSystem as exc:
+        raise _in_system(exc) from None
+
+
 class Checking:
     """Scene problems and exercises (cached per process), answers through the worker pool."""
 
-    def __init__(self, users: UserSystems | None = None, config: Settings | None = None) -> None:
+    def __init__(self, users: UserSystems, config: Settings | None = None) -> None:
         self.check_seconds = (config or settings()).check_seconds
         # the jobs share the user systems' pool, fair share and request sharing
-        self.users = users or user_systems.service
+        self.users = users
         self._problems: dict[tuple[str, str, str | None], Problem] = {}
         self._exercises: dict[str, bytes] = {}
         self._lock = threading.Lock()
@@ -143,36 +153,23 @@ class Checking:
         )
 
     async def check_system(
-        self, spec: dict[str, Any], step: str, coordinate: str | None, answer: str, client: str, address: str
+        self, user: UserSystem, step: str, coordinate: str | None, answer: str, client: str, address: str
     ) -> bytes:
-        try:
-            check_system(spec)
-        except InvalidSystem as exc:
-            raise _in_system(exc) from None
-        coordinates = tuple(spec["coordinates"])
-        parameters = tuple(p["name"] for p in spec.get("parameters") or ())
         if step not in STEPS:
             raise InvalidSystem(f"step: unknown step {step[:40]!r}; the steps are: {', '.join(STEPS)}", ("step",))
         # every coordinate's momentum may turn out conserved: the worker checks the names exactly
-        kinds = name_kinds(coordinates, parameters, tuple(f"p_{q}" for q in coordinates))
+        kinds = name_kinds(user.coordinates, user.parameter_names, tuple(f"p_{q}" for q in user.coordinates))
         try:
             check_answer(answer, step, kinds)
         except CheckError as exc:
             raise refusal(exc) from None
-        key = spec_key(spec, step, coordinate, answer.strip())
+        key = spec_key(user, step, coordinate, answer.strip())
         return await self.users.run_job(
-            self.answers, key, client, address, self.check_seconds, system_check_job, spec, step, coordinate, answer
+            self.answers, key, client, address, self.check_seconds, system_check_job, user, step, coordinate, answer
         )
 
-    async def system_exercises(self, spec: dict[str, Any], client: str, address: str) -> bytes:
-        try:
-            check_system(spec)
-        except InvalidSystem as exc:
-            raise _in_system(exc) from None
-        key = spec_key(spec, "practice")
+    async def system_exercises(self, user: UserSystem, client: str, address: str) -> bytes:
+        key = spec_key(user, "practice")
         return await self.users.run_job(
-            self.practice, key, client, address, self.check_seconds * 3, system_practice_job, spec
+            self.practice, key, client, address, self.check_seconds * 3, system_practice_job, user
         )
-
-
-service = Checking()

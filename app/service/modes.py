@@ -26,7 +26,7 @@ from app.numerics import limits
 from app.numerics.frequency import measured_omega
 from app.numerics.simulate import simulate
 from app.service.cache import JsonCache, source_fingerprint
-from app.service.simulation import _SLOTS, COMPILED, parameter_vector
+from app.service.simulation import COMPILED, GATES, Gates, parameter_vector
 from app.viz.panels import oscillating_equilibria
 
 AMPLITUDE = 1e-4  # of the largest component, in the coordinate's own unit
@@ -37,7 +37,11 @@ _cache = JsonCache("modes-measured", source_fingerprint("engine", "scenes", "num
 
 
 def measure(
-    d: Derivation, doc: Mapping[str, Any], key: str | None = None, forces: Sequence[dict[str, Any]] = ()
+    d: Derivation,
+    doc: Mapping[str, Any],
+    key: str | None = None,
+    forces: Sequence[dict[str, Any]] = (),
+    gates: Gates = GATES,
 ) -> list[dict[str, Any]]:
     """Predicted and measured omega of every oscillating mode at every equilibrium at rest."""
     names = list(d.table.names)
@@ -57,7 +61,7 @@ def measure(
                     y0[i] = e["equilibrium"].get(q, 0.0) + AMPLITUDE * m["shape"].get(q, 0.0)
                 omega = math.sqrt(w2)
                 t_end = CYCLES * 2 * math.pi / omega
-                if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
+                if not gates.slots.acquire(timeout=limits.WALL_SECONDS):
                     raise OverCapacity("too many simulations are running at once; try again in a few seconds", 2)
                 try:
                     run = simulate(
@@ -65,7 +69,7 @@ def measure(
                         rtol=1e-11, atol=1e-14, estimate=False,
                     )  # fmt: skip
                 finally:
-                    _SLOTS.release()
+                    gates.slots.release()
                 # the largest component of the shape oscillates most clearly
                 big = max(m["shape"], key=lambda q: abs(m["shape"][q]))
                 i = names.index(big)
@@ -79,13 +83,13 @@ def measure(
     return out
 
 
-def measure_scene(scene_id: str) -> list[dict[str, Any]]:
+def measure_scene(scene_id: str, gates: Gates = GATES) -> list[dict[str, Any]]:
     """A scene's measured modes (computed once, then from the cache)."""
     from app.service.derivations import derivation, derivation_document
 
     doc = derivation_document(scene_id)
     return _cache.get(
-        scene_id, lambda: measure(derivation(scene_id), doc, scene_id, doc.get("constraint_forces") or [])
+        scene_id, lambda: measure(derivation(scene_id), doc, scene_id, doc.get("constraint_forces") or [], gates)
     )
 
 

@@ -26,7 +26,15 @@ from app.errors import OverCapacity
 from app.numerics import limits
 from app.numerics.errors import SimulationError
 from app.numerics.poincare import hamiltonian, section
-from app.service.simulation import _SLOTS, COMPILED, _check_number, _setting, initial_state, parameter_vector
+from app.service.simulation import (
+    COMPILED,
+    GATES,
+    Gates,
+    _check_number,
+    _setting,
+    initial_state,
+    parameter_vector,
+)
 
 COUNT_MAX = 12  # orbits per section
 T_END_MAX = 2_000.0  # seconds of simulated time per orbit
@@ -48,6 +56,7 @@ def section_of_derivation(
     key: str | None = None,
     defaults: Mapping[str, float] | None = None,
     constraint_forces: Sequence[dict[str, Any]] = (),
+    gates: Gates = GATES,
 ) -> dict[str, Any]:
     """The section q_coordinate = value of orbits with h = energy (or h at ``initial``); refusals raise SimulationError."""
     names = list(d.table.names)
@@ -67,7 +76,7 @@ def section_of_derivation(
         y0 = initial_state(d, initial or {}, defaults or {})
         energy = float(hamiltonian(observables, y0, k)[0])
     energy = _check_number(energy, "energy")
-    if not _SLOTS.acquire(timeout=limits.WALL_SECONDS):
+    if not gates.slots.acquire(timeout=limits.WALL_SECONDS):
         raise OverCapacity("too many simulations are running at once; try again in a few seconds", 2)
     start = time.perf_counter()
     try:
@@ -75,7 +84,7 @@ def section_of_derivation(
             system, observables, k, energy, names.index(coordinate), value, direction, count, t_end, limits.WALL_SECONDS
         )
     finally:
-        _SLOTS.release()
+        gates.slots.release()
     other = next(n for n in names if n != coordinate)
     j = names.index(other)
     n = len(names)
@@ -107,14 +116,14 @@ def section_of_derivation(
     }
 
 
-def section_of_scene(scene_id: str, **options: Any) -> dict[str, Any]:
+def section_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict[str, Any]:
     """A scene's Poincaré section; the energy defaults to h at the scene's initial state."""
     from app.service.derivations import derivation, derivation_document, scene
 
     s = scene(scene_id)
     forces = derivation_document(scene_id).get("constraint_forces") or []
     return section_of_derivation(
-        derivation(scene_id), key=scene_id, defaults=s.initial, constraint_forces=forces, **options
+        derivation(scene_id), key=scene_id, defaults=s.initial, constraint_forces=forces, gates=gates, **options
     )
 
 
@@ -123,14 +132,14 @@ _sections_lock = threading.Lock()
 CACHED_SECTIONS = 32
 
 
-def cached_section_of_scene(scene_id: str, **options: Any) -> dict[str, Any]:
+def cached_section_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict[str, Any]:
     """``section_of_scene`` with the last CACHED_SECTIONS answers kept (a page asks again after each run)."""
     key = json.dumps([scene_id, options], sort_keys=True, default=str)
     with _sections_lock:
         if key in _sections:
             _sections.move_to_end(key)
             return _sections[key]
-    result = section_of_scene(scene_id, **options)
+    result = section_of_scene(scene_id, gates, **options)
     with _sections_lock:
         _sections[key] = result
         while len(_sections) > CACHED_SECTIONS:

@@ -39,13 +39,8 @@ from app.settings import container_cpus, settings
 
 DEFAULT_T_END = 10.0
 SLOTS = max(2, container_cpus())
-_SLOTS = threading.BoundedSemaphore(SLOTS)
-_HEAVY = threading.BoundedSemaphore(max(1, SLOTS // 2))
 HEAVY_SPAN = 10  # times the scene's t_end (or the default 10 s)
 HEAVY_RTOL = 1e-9
-# scipy's integrators loop in Python and hold the GIL for their whole run: one at a
-# time per process, so they cannot starve the compiled runs and pages served beside them.
-_PYTHON_LOOP = threading.BoundedSemaphore(1)
 # Set by ``start_warming`` (the server): while the background thread compiles, ``auto`` requests are
 # answered by scipy instead of waiting on numba; scripts and tests compile in line as before.
 ANSWER_WHILE_COMPILING = False
@@ -201,13 +196,39 @@ def _slot(gate: threading.BoundedSemaphore, message: str) -> Iterator[None]:
         gate.release()
 
 
-def _python_loop() -> AbstractContextManager[None]:
-    """Hold the one slot for a Python step loop (see ``_PYTHON_LOOP``), or refuse as busy."""
-    return _slot(
-        _PYTHON_LOOP,
-        "another scipy (Python step loop) run is in progress here; try again in a few seconds, "
-        "or ask for a compiled method",
-    )
+class Gates:
+    """How many simulations run at once in one process: ``slots`` in all, at most half of them heavy.
+
+    The app builds its own (``app.service.services``) and gives it to the routes; a worker
+    process or a script uses ``GATES``."""
+
+    def __init__(self, slots: int = SLOTS) -> None:
+        self.slots = threading.BoundedSemaphore(slots)
+        self.heavy = threading.BoundedSemaphore(max(1, slots // 2))
+        # scipy's integrators loop in Python and hold the GIL for their whole run: one at a
+        # time per process, so they cannot starve the compiled runs and pages served beside them.
+        self.python = threading.BoundedSemaphore(1)
+
+    def any(self) -> AbstractContextManager[None]:
+        """Hold one slot, or refuse as busy."""
+        return _slot(self.slots, "too many simulations are running at once; try again in a few seconds")
+
+    def heavy_run(self) -> AbstractContextManager[None]:
+        """Hold one of the heavy runs' slots, or refuse as busy."""
+        return _slot(
+            self.heavy, "too many long or high-accuracy simulations are running; try again shortly, or ask for less"
+        )
+
+    def python_loop(self) -> AbstractContextManager[None]:
+        """Hold the one slot for a Python step loop, or refuse as busy."""
+        return _slot(
+            self.python,
+            "another scipy (Python step loop) run is in progress here; try again in a few seconds, "
+            "or ask for a compiled method",
+        )
+
+
+GATES = Gates()  # this process's, where no app gives its own (a worker, a script)
 
 
 def simulate_derivation(
@@ -216,6 +237,7 @@ def simulate_derivation(
     *,
     constraint_forces: Sequence[dict[str, Any]] = (),
     scene_id: str | None = None,
+    gates: Gates = GATES,
 ) -> dict[str, Any]:
     """Simulate a derived system as the request asks; a refusal raises SimulationError, a full server OverCapacity."""
     yield_to_the_loop()
@@ -248,13 +270,11 @@ def simulate_derivation(
     heavy = t_end > HEAVY_SPAN * (scene.t_end if scene else DEFAULT_T_END) or rtol < HEAVY_RTOL
     with ExitStack() as held:
         if planned.python_loop:
-            held.enter_context(_python_loop())
+            held.enter_context(gates.python_loop())
         elif heavy:
-            held.enter_context(
-                _slot(_HEAVY, "too many long or high-accuracy simulations are running; try again shortly, or ask for less")
-            )
-        held.enter_context(_slot(_SLOTS, "too many simulations are running at once; try again in a few seconds"))
-        outcome = run(planned, python_loop=_python_loop, events=_events(scene, system))
+            held.enter_context(gates.heavy_run())
+        held.enter_context(gates.any())
+        outcome = run(planned, python_loop=gates.python_loop, events=_events(scene, system))
     return document(system, observables, outcome, k, rtol, getattr(request, "precision", None) or "full")
 
 
@@ -366,12 +386,12 @@ def start_warming() -> threading.Thread:
     return thread
 
 
-def simulate_scene(scene_id: str, request: SimulationInput) -> dict[str, Any]:
+def simulate_scene(scene_id: str, request: SimulationInput, gates: Gates = GATES) -> dict[str, Any]:
     from app.service.derivations import derivation, derivation_document, scene
 
     scene(scene_id)
     forces = derivation_document(scene_id).get("constraint_forces") or []
-    return simulate_derivation(derivation(scene_id), request, constraint_forces=forces, scene_id=scene_id)
+    return simulate_derivation(derivation(scene_id), request, constraint_forces=forces, scene_id=scene_id, gates=gates)
 
 
 if __name__ == "__main__":

@@ -6,10 +6,12 @@ A request arrives as plain data (the web layer validated its shape):
      "lagrangian": ... | "kinetic": ..., "potential": ... | "particles": [...], "potential": ...,
      "forces": {coordinate: Q}, "nonnegative": [...]}
 
-``check_system`` refuses bad names and bad expressions, each refusal carrying
-the location of the offending field (``["particles", 0, "position", 1]``) and
-the character span of the offending part.  It runs in the web process before
-any job is queued and again in the worker before SymPy sees the text.
+``checked`` turns it into the one value a user system is from then on
+(``app.engine.user_system.UserSystem``), refusing bad names and bad expressions,
+each refusal carrying the location of the offending field
+(``["particles", 0, "position", 1]``) and the character span of the offending
+part.  It runs in the web process before any job is queued; ``check_system``
+runs again in the worker before SymPy sees the text.
 """
 
 from __future__ import annotations
@@ -17,13 +19,13 @@ from __future__ import annotations
 import hashlib
 import json
 import math
-from collections.abc import Iterator
+from collections.abc import Mapping
 from typing import Any
 
 from app.engine.errors import DerivationError, excerpt
 from app.engine.parse import MAX_TERMS, ExpressionError, Size, check_name, expression_size
+from app.engine.user_system import UserSystem
 from app.errors import Refused, TooMuchWork
-from app.scenes.types import Parameter, Particle, System
 
 MAX_COORDINATES = 6
 MAX_PARAMETERS = 24
@@ -61,40 +63,21 @@ def _refuse(loc: tuple, exc: ExpressionError) -> InvalidSystem:
     return InvalidSystem(f"{_where(loc)}: {exc}", loc, exc.part, getattr(exc, "start", None), getattr(exc, "end", None))
 
 
-def form_of(spec: dict[str, Any]) -> str:
-    """Which of the three forms the system is given in (the field a derivation error points at)."""
-    if spec.get("particles"):
-        return "particles"
-    return "lagrangian" if spec.get("lagrangian") is not None else "kinetic"
+def checked(data: Mapping[str, Any]) -> UserSystem:
+    """The user system of a request's plain data, or a located refusal."""
+    system = UserSystem.of(data)
+    check_system(system)
+    return system
 
 
-def expressions(spec: dict[str, Any]) -> Iterator[tuple[tuple, str, bool]]:
-    """Every expression of a system: (location, text, whether velocities may appear)."""
-    for i, particle in enumerate(spec.get("particles") or ()):
-        yield ("particles", i, "mass"), particle["mass"], False
-        for j, component in enumerate(particle["position"]):
-            yield ("particles", i, "position", j), component, False
-    for key, velocities in (("lagrangian", True), ("kinetic", True), ("potential", False)):
-        if spec.get(key) is not None:
-            yield (key,), spec[key], velocities
-    for name, text in (spec.get("forces") or {}).items():
-        yield ("forces", name), text, True
-
-
-def _names(spec: dict[str, Any]) -> tuple[list[str], list[str]]:
-    coordinates = list(spec.get("coordinates") or ())
-    parameters = [p["name"] for p in spec.get("parameters") or ()]
-    return coordinates, parameters
-
-
-def check_system(spec: dict[str, Any]) -> None:
+def check_system(system: UserSystem) -> None:
     """Refuse a system whose names or expressions are not allowed (pure Python, no SymPy)."""
-    coordinates, parameters = _names(spec)
+    coordinates, parameters = system.coordinates, system.parameter_names
     if not 1 <= len(coordinates) <= MAX_COORDINATES:
         raise InvalidSystem(f"give between 1 and {MAX_COORDINATES} coordinates", ("coordinates",))
     if len(parameters) > MAX_PARAMETERS:
         raise InvalidSystem(f"at most {MAX_PARAMETERS} parameters are allowed", ("parameters",))
-    if len(spec.get("particles") or ()) > MAX_PARTICLES:
+    if len(system.particles) > MAX_PARTICLES:
         raise InvalidSystem(f"at most {MAX_PARTICLES} particles are allowed", ("particles",))
     seen: set[str] = set()
     named: list[tuple[tuple, str, str]] = [(("coordinates", i), n, "coordinate") for i, n in enumerate(coordinates)]
@@ -107,8 +90,8 @@ def check_system(spec: dict[str, Any]) -> None:
         if name in seen:
             raise InvalidSystem(f"{_where(loc)}: the name {name!r} is declared twice", loc, name)
         seen.add(name)
-    for i, p in enumerate(spec.get("parameters") or ()):
-        low, high, value = p.get("min"), p.get("max"), p.get("value", 1.0)
+    for i, p in enumerate(system.parameters):
+        low, high, value = p.min, p.max, p.value
         if low is not None and high is not None and low > high:
             loc = ("parameters", i, "min")
             raise InvalidSystem(f"{_where(loc)}: min {low:g} is larger than max {high:g}", loc)
@@ -117,36 +100,36 @@ def check_system(spec: dict[str, Any]) -> None:
             span = f"{'-inf' if low is None else f'{low:g}'} to {'inf' if high is None else f'{high:g}'}"
             raise InvalidSystem(f"{_where(loc)}: {value:g} is outside the allowed range, {span}", loc)
 
-    forms = [bool(spec.get("particles")), spec.get("kinetic") is not None, spec.get("lagrangian") is not None]
+    forms = [bool(system.particles), system.kinetic is not None, system.lagrangian is not None]
     if sum(forms) != 1:
         raise InvalidSystem(
             "give exactly one of: particles (with a potential), kinetic and potential, or lagrangian", ()
         )
-    if spec.get("lagrangian") is not None and spec.get("potential") is not None:
+    if system.lagrangian is not None and system.potential is not None:
         raise InvalidSystem("potential: a Lagrangian already contains the potential; give L alone", ("potential",))
-    if spec.get("lagrangian") is None and spec.get("potential") is None:
+    if system.lagrangian is None and system.potential is None:
         raise InvalidSystem(
             "potential: a potential U is needed with particles or with T (write 0 if none)", ("potential",)
         )
-    for name in spec.get("forces") or {}:
+    for name, _ in system.forces:
         if name not in coordinates:
             raise InvalidSystem(f"forces: {name[:40]!r} is not a coordinate", ("forces", name), name[:40])
-    for i, name in enumerate(spec.get("nonnegative") or ()):
+    for i, name in enumerate(system.nonnegative):
         if name not in coordinates:
             raise InvalidSystem(f"nonnegative[{i}]: {name[:40]!r} is not a coordinate", ("nonnegative", i), name[:40])
 
     base = set(coordinates) | set(parameters) | {"t"}
     with_velocities = base | {f"{q}_dot" for q in coordinates}
     sizes = {}
-    for loc, text, velocities in expressions(spec):
+    for loc, text, velocities in system.expressions():
         try:
             sizes[loc] = expression_size(text, with_velocities if velocities else base)
         except ExpressionError as exc:
             raise _refuse(loc, exc) from None
-    _check_kinetic_size(spec, sizes)
+    _check_kinetic_size(system, sizes)
 
 
-def _check_kinetic_size(spec: dict[str, Any], sizes: dict[tuple, Size]) -> None:
+def _check_kinetic_size(system: UserSystem, sizes: dict[tuple, Size]) -> None:
     """Refuse particles whose kinetic energy would expand past MAX_TERMS terms (before SymPy builds it).
 
     A position of n terms of degree d has a velocity of at most n*d terms (each
@@ -154,9 +137,9 @@ def _check_kinetic_size(spec: dict[str, Any], sizes: dict[tuple, Size]) -> None:
     v(v + 1)/2 terms, times the terms of the mass; T sums those over particles and axes.
     """
     total = 0
-    for i, particle in enumerate(spec.get("particles") or ()):
+    for i, particle in enumerate(system.particles):
         mass = sizes[("particles", i, "mass")].terms
-        for j in range(len(particle["position"])):
+        for j in range(len(particle.position)):
             size = sizes[("particles", i, "position", j)]
             velocity = size.terms * max(1, math.ceil(size.degree))
             total += mass * velocity * (velocity + 1) // 2
@@ -169,38 +152,22 @@ def _check_kinetic_size(spec: dict[str, Any], sizes: dict[tuple, Size]) -> None:
             )
 
 
-def to_system(spec: dict[str, Any]) -> System:
-    """The engine's declaration of a checked request."""
-    particles = []
-    for p in spec.get("particles") or ():
-        position = tuple(p["position"]) + ("0",) * (3 - len(p["position"]))
-        particles.append(Particle(p["mass"], position, p.get("label") or ""))
-    return System(
-        coordinates=tuple(spec["coordinates"]),
-        parameters=tuple(
-            Parameter(p["name"], float(p.get("value", 1.0)), p.get("unit") or "", p.get("min"), p.get("max"))
-            for p in spec.get("parameters") or ()
-        ),
-        particles=tuple(particles),
-        kinetic=spec.get("kinetic"),
-        potential=spec.get("potential"),
-        lagrangian=spec.get("lagrangian"),
-        forces=dict(spec.get("forces") or {}),
-        nonnegative=tuple(spec.get("nonnegative") or ()),
-    )
-
-
-def simulation_loc(spec: dict[str, Any], part: str) -> tuple:
+def simulation_loc(system: UserSystem, part: str) -> tuple:
     """Where in a simulate request the numerics' complaint points ("parameters.k" is that parameter's value)."""
     head, _, name = part.partition(".")
     if head == "parameters":
-        names = [p["name"] for p in spec.get("parameters") or ()]
+        names = list(system.parameter_names)
         return ("parameters", names.index(name), "value") if name in names else ("parameters",)
     if head == "initial":
         return ("initial", name) if name else ("initial",)
     return (head,) if head else ()
 
 
-def spec_key(spec: Any, *extra: Any) -> str:
-    text = json.dumps([spec, *extra], sort_keys=True, separators=(",", ":"), default=str)
+def _plain(value: Any) -> Any:
+    return value.as_json() if isinstance(value, UserSystem) else str(value)
+
+
+def spec_key(*parts: Any) -> str:
+    """A cache key: the hash of the parts (a user system, a request, names) as canonical JSON."""
+    text = json.dumps(parts, sort_keys=True, separators=(",", ":"), default=_plain)
     return hashlib.sha256(text.encode()).hexdigest()

@@ -1,7 +1,7 @@
 """The worker pool's jobs on a user system: build it in SymPy, derive, simulate, export.
 
-Each job checks the request again (``user_checks.check_system``), builds every
-expression with the allowlist parser, derives the system with the engine under
+Each job takes the checked system (``app.engine.user_system.UserSystem``), checks
+it again (``user_checks.check_system``), builds every expression with the allowlist parser, derives the system with the engine under
 one time budget and returns the JSON document as bytes.  A failure on user
 input comes back as a located refusal, never as a server error.
 """
@@ -22,22 +22,11 @@ from app.engine.derive import Derivation, derive
 from app.engine.errors import DerivationError
 from app.engine.parse import ExpressionError, parse_expression
 from app.engine.symbols import SymbolTable
+from app.engine.user_system import UserSystem
 from app.errors import OverCapacity
 from app.scenes.types import System
 from app.service.encoding import dumps
-from app.service.user_checks import (
-    InvalidSystem,
-    TooCostly,
-    _names,
-    _refuse,
-    check_system,
-    expressions,
-    form_of,
-    located,
-    simulation_loc,
-    spec_key,
-    to_system,
-)
+from app.service.user_checks import InvalidSystem, TooCostly, _refuse, check_system, located, simulation_loc
 from app.settings import settings
 
 log = logging.getLogger(__name__)
@@ -48,22 +37,21 @@ def engine_seconds() -> float:
     return settings().derive_seconds * 2 / 3
 
 
-def build_system(spec: dict[str, Any]) -> System:
-    """Check a request and build each expression in SymPy (gate 3), locating any refusal."""
-    check_system(spec)
-    coordinates, parameters = _names(spec)
-    namespace = SymbolTable(tuple(coordinates), tuple(parameters)).namespace()
+def build_system(user: UserSystem) -> System:
+    """Check a user system again and build each expression in SymPy (gate 3), locating any refusal."""
+    check_system(user)
+    namespace = SymbolTable(user.coordinates, user.parameter_names).namespace()
     positional = {k: v for k, v in namespace.items() if not k.endswith("_dot")}
-    for loc, text, velocities in expressions(spec):
+    for loc, text, velocities in user.expressions():
         try:
             parse_expression(text, namespace if velocities else positional)
         except ExpressionError as exc:
             raise _refuse(loc, exc) from None
-    return to_system(spec)
+    return user.system()
 
 
 @contextmanager
-def engine_budget(spec: dict[str, Any]) -> Iterator[None]:
+def engine_budget(user: UserSystem) -> Iterator[None]:
     """One time budget for the engine's work on a user system, below the worker's hard limit.
 
     Every expand, substitution, solve and display step inside shares it (the
@@ -75,7 +63,7 @@ def engine_budget(spec: dict[str, Any]) -> Iterator[None]:
         with time_limit(seconds):
             yield
     except BudgetExceeded:
-        where = form_of(spec)
+        where = user.form
         raise TooCostly(
             f"{where}: deriving this system takes longer than the {seconds:g} s allowed; "
             "write it with fewer terms, lower powers or fewer nested functions",
@@ -84,25 +72,23 @@ def engine_budget(spec: dict[str, Any]) -> Iterator[None]:
 
 
 # a small cache per worker: simulating after deriving is common
-_derivations: LRUCache[str, Derivation] = LRUCache(maxsize=8)
+_derivations: LRUCache[UserSystem, Derivation] = LRUCache(maxsize=8)
 
 
-def derive_checked(spec: dict[str, Any]) -> Derivation:
+def derive_checked(user: UserSystem) -> Derivation:
     """Derive a checked system, once per worker."""
-    key = spec_key(spec)
-    found = _derivations.get(key)
+    found = _derivations.get(user)
     if found is not None:
         return found
-    where = form_of(spec)
+    where = user.form
     try:
-        with engine_budget(spec):
-            system = build_system(spec)
-            d = derive(system)
+        with engine_budget(user):
+            d = derive(build_system(user))
     except DerivationError as exc:  # a singular mass matrix and the like: the form's field is at fault
         if isinstance(exc, InvalidSystem):
             raise
         raise located(exc, (where,), f"{where}: {exc}") from None
-    _derivations[key] = d
+    _derivations[user] = d
     return d
 
 
@@ -123,33 +109,33 @@ def guarded(job: Callable[[], Any]) -> bytes:
         ) from None
 
 
-def derive_job(spec: dict[str, Any]) -> bytes:
+def derive_job(user: UserSystem) -> bytes:
     """Worker job: the derivation JSON of a user system (as for a scene)."""
 
     def run() -> dict[str, Any]:
-        with engine_budget(spec):
-            return derivation_json(derive_checked(spec))
+        with engine_budget(user):
+            return derivation_json(derive_checked(user))
 
     return guarded(run)
 
 
-def simulate_job(spec: dict[str, Any], request: Any) -> bytes:
+def simulate_job(user: UserSystem, request: Any) -> bytes:
     """Worker job: the simulation JSON of a user system (as for a scene)."""
     from app.numerics.errors import SimulationError
     from app.service.simulation import simulate_derivation
 
     def run() -> dict[str, Any]:
-        d = derive_checked(spec)
+        d = derive_checked(user)
         try:
             return simulate_derivation(d, request)
         except SimulationError as exc:
-            raise located(exc, simulation_loc(spec, exc.part)) from None
+            raise located(exc, simulation_loc(user, exc.part)) from None
 
     return guarded(run)
 
 
 def export_job(
-    spec: dict[str, Any], fmt: str, initial: dict[str, float], t_end: float | None, document: bytes
+    user: UserSystem, fmt: str, initial: dict[str, float], t_end: float | None, document: bytes
 ) -> bytes:
     """Worker job: a user system as a notebook, script or LaTeX document (JSON-wrapped).
 
@@ -159,34 +145,34 @@ def export_job(
     from app.service.exporting import system_export
 
     def run() -> dict[str, str]:
-        d = derive_checked(spec)
+        d = derive_checked(user)
         try:
             return system_export(d, json.loads(document), fmt, initial, t_end)
         except SimulationError as exc:
-            raise located(exc, simulation_loc(spec, exc.part)) from None
+            raise located(exc, simulation_loc(user, exc.part)) from None
         except ExportError as exc:
             raise InvalidSystem(f"this system cannot be exported: {exc}") from None
 
     return guarded(run)
 
 
-def poincare_job(spec: dict[str, Any], options: dict[str, Any]) -> bytes:
+def poincare_job(user: UserSystem, options: dict[str, Any]) -> bytes:
     """Worker job: the Poincaré section of a user system (app.service.poincare)."""
     from app.numerics.errors import SimulationError
     from app.service.poincare import section_of_derivation
 
     def run() -> dict[str, Any]:
-        d = derive_checked(spec)
+        d = derive_checked(user)
         try:
             # parameter values are the declared ones (the derivation's defaults)
             return section_of_derivation(d, **options)
         except SimulationError as exc:
-            raise located(exc, simulation_loc(spec, exc.part)) from None
+            raise located(exc, simulation_loc(user, exc.part)) from None
 
     return guarded(run)
 
 
-def modes_job(spec: dict[str, Any], normal_modes: list[dict[str, Any]]) -> bytes:
+def modes_job(user: UserSystem, normal_modes: list[dict[str, Any]]) -> bytes:
     """Worker job: predicted against measured normal-mode frequencies of a user system (app.service.modes).
 
     ``normal_modes`` is the derivation document's block (the parent has the document cached).
@@ -194,6 +180,6 @@ def modes_job(spec: dict[str, Any], normal_modes: list[dict[str, Any]]) -> bytes
     from app.service.modes import measure
 
     def run() -> list[dict[str, Any]]:
-        return measure(derive_checked(spec), {"normal_modes": normal_modes})
+        return measure(derive_checked(user), {"normal_modes": normal_modes})
 
     return guarded(run)

@@ -1,6 +1,7 @@
 """Systems users type in: derive, simulate and export them through the worker pool.
 
-The event loop only checks (``user_checks``, pure Python), looks up caches and
+Each method takes a checked ``UserSystem`` (the route builds it once with
+``user_checks.checked``, pure Python); the event loop only looks up caches and
 awaits: the jobs (``user_jobs``) parse, derive and simulate in a worker process
 under a hard time limit and a memory cap, with one fair-share ticket per job,
 and a request identical to one already running waits for that job.
@@ -15,9 +16,10 @@ from typing import Any
 
 from cachetools import LRUCache
 
+from app.engine.user_system import UserSystem
 from app.service import fairness as fair
 from app.service import worker
-from app.service.user_checks import check_system, spec_key
+from app.service.user_checks import spec_key
 from app.service.user_jobs import derive_job, export_job, modes_job, poincare_job, simulate_job
 from app.settings import Settings, settings
 
@@ -49,32 +51,18 @@ class ResultCache:
 class UserSystems:
     """Derive and simulate user systems: caches, fairness, then the worker pool."""
 
-    def __init__(
-        self, pool: worker.WorkerPool | None = None, gate: fair.Fairness | None = None, config: Settings | None = None
-    ):
+    def __init__(self, pool: worker.WorkerPool, gate: fair.Fairness | None = None, config: Settings | None = None):
         config = config or settings()
         self.derive_seconds = config.derive_seconds
         self.simulate_seconds = config.simulate_seconds
-        self._pool = pool
-        self._gate = gate
+        self.pool = pool
+        self.gate = gate or fair.Fairness(capacity=4 * pool.workers, workers=pool.workers)
         self.derivations = ResultCache()
         self.simulations = ResultCache(entries=64)
         self.exports = ResultCache(entries=64)
         self._running: dict[tuple[int, str], asyncio.Future] = {}
         self._queued: dict[tuple[int, str], fair.Ticket] = {}  # the ticket of each running slot
         self._waiters: dict[tuple[int, str], int] = {}
-
-    @property
-    def pool(self) -> worker.WorkerPool:
-        if self._pool is None:
-            self._pool = worker.pool()
-        return self._pool
-
-    @property
-    def gate(self) -> fair.Fairness:
-        if self._gate is None:
-            self._gate = fair.Fairness(capacity=4 * self.pool.workers, workers=self.pool.workers)
-        return self._gate
 
     async def _run(self, cache: ResultCache, key: str, client: str, address: str, timeout: float, job, *args) -> bytes:
         """A cached answer, else the same request already running, else a new job (one fair-share ticket)."""
@@ -134,49 +122,41 @@ class UserSystems:
         cache.put(key, result)
         return result
 
-    async def derive(self, spec: dict[str, Any], client: str, address: str) -> bytes:
-        check_system(spec)
-        return await self._run(self.derivations, spec_key(spec), client, address, self.derive_seconds, derive_job, spec)
+    async def derive(self, user: UserSystem, client: str, address: str) -> bytes:
+        return await self._run(self.derivations, spec_key(user), client, address, self.derive_seconds, derive_job, user)
 
-    async def simulate(self, spec: dict[str, Any], request: Any, client: str, address: str) -> bytes:
-        check_system(spec)
-        key = spec_key(spec, request.model_dump(mode="json"))
+    async def simulate(self, user: UserSystem, request: Any, client: str, address: str) -> bytes:
+        key = spec_key(user, request.model_dump(mode="json"))
         return await self._run(
-            self.simulations, key, client, address, self.simulate_seconds, simulate_job, spec, request
+            self.simulations, key, client, address, self.simulate_seconds, simulate_job, user, request
         )
 
-    async def poincare(self, spec: dict[str, Any], options: dict[str, Any], client: str, address: str) -> bytes:
-        check_system(spec)
-        key = spec_key(spec, "poincare", options)
+    async def poincare(self, user: UserSystem, options: dict[str, Any], client: str, address: str) -> bytes:
+        key = spec_key(user, "poincare", options)
         return await self._run(
-            self.simulations, key, client, address, self.simulate_seconds, poincare_job, spec, options
+            self.simulations, key, client, address, self.simulate_seconds, poincare_job, user, options
         )
 
-    async def modes(self, spec: dict[str, Any], client: str, address: str) -> bytes:
-        check_system(spec)
-        key = spec_key(spec, "modes")
+    async def modes(self, user: UserSystem, client: str, address: str) -> bytes:
+        key = spec_key(user, "modes")
         cached = self.simulations.get(key)
         if cached is not None:
             return cached
-        normal_modes = json.loads(await self.derive(spec, client, address)).get("normal_modes") or []
+        normal_modes = json.loads(await self.derive(user, client, address)).get("normal_modes") or []
         return await self._run(
-            self.simulations, key, client, address, self.simulate_seconds, modes_job, spec, normal_modes
+            self.simulations, key, client, address, self.simulate_seconds, modes_job, user, normal_modes
         )
 
     async def export(
-        self, spec: dict[str, Any], fmt: str, initial: dict[str, float], t_end: float | None, client: str, address: str
+        self, user: UserSystem, fmt: str, initial: dict[str, float], t_end: float | None, client: str, address: str
     ) -> bytes:
         """``{"content", "filename", "media_type"}`` as JSON bytes, made in the pool under the derive limit."""
-        check_system(spec)
-        key = spec_key(spec, "export", fmt, initial, t_end)
+        key = spec_key(user, "export", fmt, initial, t_end)
         cached = self.exports.get(key)
         if cached is not None:
             return cached
         # the derivation the page already asked for (cached), or a derive job first: the export only prints
-        document = await self.derive(spec, client, address)
+        document = await self.derive(user, client, address)
         return await self._run(
-            self.exports, key, client, address, self.derive_seconds, export_job, spec, fmt, initial, t_end, document
+            self.exports, key, client, address, self.derive_seconds, export_job, user, fmt, initial, t_end, document
         )
-
-
-service = UserSystems()

@@ -336,15 +336,3 @@ def ending(future: Future) -> str:
         return "crashed"
     return "refused" if isinstance(error, REFUSALS) else "failed"
 
-
-_shared: WorkerPool | None = None
-_shared_lock = threading.Lock()
-
-
-def pool() -> WorkerPool:
-    """The process-wide pool, created on first use."""
-    global _shared
-    with _shared_lock:
-        if _shared is None:
-            _shared = WorkerPool()
-        return _shared

@@ -25,9 +25,10 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Iterable
+from functools import cache
 from typing import Any
 
-from app.engine.parse import ARITY
+from app.engine.parse import ALLOWED, ARITY
 from app.engine.parse import FUNCTIONS as INPUT_FUNCTIONS
 
 # The functions users may write (their one home is the parser), plus sign, which SymPy's derivatives add.
@@ -226,6 +227,20 @@ def maybe_tree(text: str | None, names: Iterable[str] | None = None) -> Tree | N
         return tree(text, names)
     except TreeError:
         return None
+
+
+@cache
+def function_tex() -> dict[str, str]:
+    """Each function users may write, as LaTeX with its arguments written #1, #2 (for the browser's live
+    typesetting, static/js/practice.js): SymPy's printer, with arcsin for asin as a textbook writes it."""
+    import sympy as sp
+
+    arguments = sp.symbols("a1 a2")
+    names = {a: f"#{i + 1}" for i, a in enumerate(arguments)}
+    return {
+        name: sp.latex(f.symbolic(*arguments[: f.arity]), symbol_names=names, inv_trig_style="full")
+        for name, f in ALLOWED.items()
+    }
 
 
 def leaves(node: Tree) -> set[str]:

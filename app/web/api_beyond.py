@@ -12,9 +12,10 @@ from fastapi import APIRouter, Body
 from fastapi.responses import Response
 
 from app.service import modes, poincare
+from app.service.user_checks import checked
 from app.web.api_simulate import BODY_ERRORS, ERRORS
 from app.web.api_user import _errors, answer
-from app.web.deps import ClientDep, UserSystemsDep
+from app.web.deps import ClientDep, GatesDep, UserSystemsDep
 from app.web.responses import FastJSONResponse
 from app.web.schemas import SESSION_COOKIE
 from app.web.schemas_beyond import (
@@ -24,7 +25,7 @@ from app.web.schemas_beyond import (
     UserPoincareRequest,
     poincare_options,
 )
-from app.web.schemas_user import SystemSpec
+from app.web.schemas_user import SystemSpec, system_of
 
 router = APIRouter(prefix="/api", tags=["beyond the chapter"])
 
@@ -47,9 +48,9 @@ MODES_TEXT = (
     response_model=None,
     responses={200: {"model": PoincareResponse}, **ERRORS, **BODY_ERRORS},
 )
-def scene_poincare(scene_id: str, request: PoincareRequest) -> Any:
+def scene_poincare(scene_id: str, request: PoincareRequest, gates: GatesDep) -> Any:
     # a refusal (SimulationError) or an unknown scene is answered by app/web/errors.py
-    return FastJSONResponse(poincare.cached_section_of_scene(scene_id, **poincare_options(request)))
+    return FastJSONResponse(poincare.cached_section_of_scene(scene_id, gates, **poincare_options(request)))
 
 
 @router.get(
@@ -59,8 +60,8 @@ def scene_poincare(scene_id: str, request: PoincareRequest) -> Any:
     response_model=list[MeasuredModes],
     responses={404: ERRORS[404], 429: ERRORS[429]},
 )
-def scene_modes(scene_id: str) -> Any:
-    return FastJSONResponse(modes.measure_scene(scene_id))
+def scene_modes(scene_id: str, gates: GatesDep) -> Any:
+    return FastJSONResponse(modes.measure_scene(scene_id, gates))
 
 
 @router.post(
@@ -74,10 +75,10 @@ def scene_modes(scene_id: str) -> Any:
 async def user_poincare(
     client: ClientDep, users: UserSystemsDep, body: Annotated[UserPoincareRequest, Body()]
 ) -> Response:
-    spec = SystemSpec.model_validate(body.model_dump(include=set(SystemSpec.model_fields))).to_spec()
+    spec = system_of(body)
     options = poincare_options(body)
     options.pop("parameters", None)
-    return await answer(client, lambda key, address: users.poincare(spec, options, key, address))
+    return await answer(client, lambda key, address: users.poincare(checked(spec), options, key, address))
 
 
 @router.post(
@@ -89,5 +90,4 @@ async def user_poincare(
     responses=_errors(400, 413, 422, 429, 503),
 )
 async def user_modes(client: ClientDep, users: UserSystemsDep, system: Annotated[SystemSpec, Body()]) -> Response:
-    spec = system.to_spec()
-    return await answer(client, lambda key, address: users.modes(spec, key, address))
+    return await answer(client, lambda key, address: users.modes(checked(system.to_spec()), key, address))

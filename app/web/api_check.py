@@ -13,6 +13,7 @@ import asyncio
 from fastapi import APIRouter
 from fastapi.responses import Response
 
+from app.service.checking import declared
 from app.web.api_user import answer
 from app.web.deps import CheckingDep, ClientDep
 from app.web.schemas import ErrorResponse
@@ -59,10 +60,11 @@ async def check_scene_step(client: ClientDep, checker: CheckingDep, scene_id: st
     responses=ERRORS,
 )
 async def check_system_step(client: ClientDep, checker: CheckingDep, body: SystemCheckRequest) -> Response:
-    spec = body.system.to_spec()
     return await answer(
         client,
-        lambda key, address: checker.check_system(spec, body.step, body.coordinate, body.answer, key, address),
+        lambda key, address: checker.check_system(
+            declared(body.system.to_spec()), body.step, body.coordinate, body.answer, key, address
+        ),
     )
 
 
@@ -83,5 +85,4 @@ async def scene_exercises(checker: CheckingDep, scene_id: str) -> Response:
     responses=ERRORS,
 )
 async def system_exercises(client: ClientDep, checker: CheckingDep, system: SystemSpec) -> Response:
-    spec = system.to_spec()
-    return await answer(client, lambda key, address: checker.system_exercises(spec, key, address))
+    return await answer(client, lambda key, address: checker.system_exercises(declared(system.to_spec()), key, address))

@@ -17,7 +17,7 @@ from fastapi import APIRouter, Body
 from fastapi.responses import Response
 
 from app.service.exporting import Exported
-from app.service.user_checks import InvalidSystem
+from app.service.user_checks import InvalidSystem, checked
 from app.web.api_scenes import EXPORT_CONTENT, download
 from app.web.deps import Client, ClientDep, UserSystemsDep
 from app.web.disconnect import ClientGone, unless_gone
@@ -34,6 +34,7 @@ from app.web.schemas_user import (
     UserError,
     UserSimulateRequest,
     simulate_request,
+    system_of,
 )
 
 router = APIRouter(prefix="/api", tags=["your systems"])
@@ -116,8 +117,7 @@ async def answer(
 async def derive_system(
     client: ClientDep, users: UserSystemsDep, system: Annotated[SystemSpec, Body(openapi_examples=DERIVE_EXAMPLES)]
 ) -> Response:
-    spec = system.to_spec()
-    return await answer(client, lambda key, address: users.derive(spec, key, address))
+    return await answer(client, lambda key, address: users.derive(checked(system.to_spec()), key, address))
 
 
 @router.post(
@@ -141,9 +141,9 @@ async def simulate_system(
     users: UserSystemsDep,
     body: Annotated[UserSimulateRequest, Body(openapi_examples=SIMULATE_EXAMPLES)],
 ) -> Response:
-    spec = SystemSpec.model_validate(body.model_dump(include=set(SystemSpec.model_fields))).to_spec()
+    spec = system_of(body)
     wanted = simulate_request(body)
-    return await answer(client, lambda key, address: users.simulate(spec, wanted, key, address))
+    return await answer(client, lambda key, address: users.simulate(checked(spec), wanted, key, address))
 
 
 # what the numerics may complain about at the top of an export request; the rest is inside "system"
@@ -173,12 +173,11 @@ def _in_system(exc: InvalidSystem) -> InvalidSystem:
     },
 )
 async def export_system(client: ClientDep, users: UserSystemsDep, body: ExportRequest) -> Response:
-    spec = body.system.to_spec()
     initial, t_end = dict(body.initial), body.t_end
 
     async def work(key: str, address: str) -> bytes:
         try:
-            return await users.export(spec, body.format, initial, t_end, key, address)
+            return await users.export(checked(body.system.to_spec()), body.format, initial, t_end, key, address)
         except InvalidSystem as exc:
             raise _in_system(exc) from None
 

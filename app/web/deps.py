@@ -1,7 +1,9 @@
 """What routes are given through ``Depends``: the services and who is asking.
 
-Tests replace any of them with ``app.dependency_overrides[...]`` (a fake service,
-a gate with other limits) instead of patching module globals.
+The services are built once by the app's lifespan (``app.main``) and reach the
+routes as lifespan state; tests replace any of them with
+``app.dependency_overrides[...]`` (a fake service, a gate with other limits)
+instead of patching module globals.
 """
 
 from __future__ import annotations
@@ -12,22 +14,36 @@ from typing import Annotated
 from fastapi import Depends, Request
 from fastapi.responses import Response
 
-from app.service import checking, user_systems
 from app.service.checking import Checking
 from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Fairness
+from app.service.services import Services
+from app.service.simulation import Gates
 from app.service.user_systems import UserSystems
 
 
-def user_systems_service() -> UserSystems:
-    return user_systems.service
+def services(request: Request) -> Services:
+    """The services the lifespan started for the app serving this request."""
+    return request.state.services
 
 
-def checking_service() -> Checking:
-    return checking.service
+ServicesDep = Annotated[Services, Depends(services)]
+
+
+def user_systems_service(running: ServicesDep) -> UserSystems:
+    return running.users
+
+
+def checking_service(running: ServicesDep) -> Checking:
+    return running.checking
+
+
+def simulation_gates(running: ServicesDep) -> Gates:
+    return running.gates
 
 
 UserSystemsDep = Annotated[UserSystems, Depends(user_systems_service)]
 CheckingDep = Annotated[Checking, Depends(checking_service)]
+GatesDep = Annotated[Gates, Depends(simulation_gates)]
 
 
 def fairness_gate(users: UserSystemsDep) -> Fairness:

@@ -21,9 +21,9 @@ from starlette.concurrency import run_in_threadpool
 
 from app.engine.parse import FUNCTIONS
 from app.numerics.methods import CHOICES
-from app.service import user_systems
-from app.service.user_checks import InvalidSystem, spec_key
+from app.service.user_checks import InvalidSystem, checked, spec_key
 from app.service.user_jobs import derive_job
+from app.service.user_systems import UserSystems
 from app.viz.user_page import model_of
 from app.web.deps import ClientDep, UserSystemsDep
 from app.web.errors import KINDS, REFUSED, Problem, problem
@@ -42,20 +42,19 @@ EXAMPLES = {
 }
 
 
-def warm_examples() -> threading.Thread:
+def warm_examples(service: UserSystems) -> threading.Thread:
     """Derive the examples in the background at start-up, so that the first reader of each is answered at once.
 
     The derivation runs in this process (a thread, not the worker pool: nothing waits on it)
     and its answer goes into the service's cache under the key the page asks for."""
 
     def warm() -> None:
-        service = user_systems.service
         for example in EXAMPLES.values():
-            spec = spec_of(form_of(example))
-            key = spec_key(spec)
+            user = checked(spec_of(form_of(example)))
+            key = spec_key(user)
             if service.derivations.get(key) is None:
                 try:
-                    service.derivations.put(key, derive_job(spec))
+                    service.derivations.put(key, derive_job(user))
                 except Exception:  # noqa: BLE001 - warming is optional: the page derives on demand
                     return
 
@@ -122,7 +121,7 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
     error: FormError | None = None
     failed: Problem | None = None
     empty = False
-    model = spec = None
+    model = user = None
     form = form_of(FORCED_SPRING)
     try:
         if len(str(request.url.query)) > MAX_QUERY:
@@ -134,9 +133,9 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
         if not (form.coordinates or form.parameters or form.lagrangian or form.kinetic or form.particles):
             empty = True  # the page says what to enter
         else:
-            spec = spec_of(form)
-            doc = json.loads(await users.derive(spec, client.key, client.address))
-            model = await run_in_threadpool(model_of, spec, doc, CHOICES)
+            user = checked(spec_of(form))
+            doc = json.loads(await users.derive(user, client.key, client.address))
+            model = await run_in_threadpool(model_of, user, doc, CHOICES)
     except FormError as exc:
         error = exc
     except KINDS as exc:
@@ -154,7 +153,7 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
         "submitted": "new" not in request.query_params and bool(request.query_params),
         "model": model,
         "m": model,
-        "system_json": json.dumps(spec or {}, separators=(",", ":")).replace("<", "\\u003c"),
+        "system_json": json.dumps(user.as_json() if user else {}, separators=(",", ":")).replace("<", "\\u003c"),
         "examples": _example_links(),
         "forms": FORMS,
         "functions": list(FUNCTIONS),

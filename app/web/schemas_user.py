@@ -243,10 +243,14 @@ UserSimulateRequest = create_model(
 )
 
 
+def system_of(body: BaseModel) -> dict[str, Any]:
+    """The declared system of a body that extends ``SystemSpec`` (simulate, Poincaré), as plain data."""
+    return SystemSpec.model_validate(body.model_dump(include=set(SystemSpec.model_fields))).to_spec()
+
+
 def simulate_request(body: BaseModel) -> SimulateRequest:
     """The numerics' request for a user system: parameter values from the declaration."""
-    spec = SystemSpec.model_validate(body.model_dump(include=set(SystemSpec.model_fields))).to_spec()
-    values = {p["name"]: p["value"] for p in spec["parameters"]}
+    values = {p["name"]: p["value"] for p in system_of(body)["parameters"]}
     rest = body.model_dump(include=set(SimulateRequest.model_fields) - {"parameters"})
     # every field was validated with the same rules in the body; the numerics check the values by name
     return SimulateRequest.model_construct(parameters=values, **rest)

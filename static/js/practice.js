@@ -23,8 +23,9 @@ const controls = document.getElementById("controls");
 
 // ---- the API's expression syntax, typeset -------------------------------------------------------
 
-const FUNCTIONS = new Set(["sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "exp", "log", "sqrt", "Abs"]);
-const TEX_FUNCTIONS = { asin: "\\arcsin", acos: "\\arccos", atan: "\\arctan" };
+// The functions the parser allows, each as LaTeX with its arguments written #1, #2: from the server
+// (the allowlist's one home, app/engine/parse.py, printed by SymPy; app/viz/exprtree.py function_tex).
+const FUNCTION_TEX = JSON.parse(document.getElementById("function-tex")?.textContent || "{}");
 
 function tokenize(text) {
   const tokens = [];
@@ -92,9 +93,13 @@ function parse(text) {
     if (t.kind === "name") {
       if (peek() && peek().value === "(") {
         take("(");
-        const arg = sum();
+        const args = [sum()];
+        while (peek() && peek().value === ",") {
+          take(",");
+          args.push(sum());
+        }
         take(")");
-        return { op: "call", name: t.value, args: [arg] };
+        return { op: "call", name: t.value, args };
       }
       return { leaf: "name", value: t.value };
     }
@@ -141,27 +146,28 @@ function tex(node, symbols) {
       return `\\frac{${tex(node.args[0], symbols)}}{${tex(node.args[1], symbols)}}`;
     case "pow": {
       const [base, exponent] = node.args;
-      if (base.op === "call" && base.name !== "sqrt" && base.name !== "Abs" && base.name !== "exp") {
-        return `${funcName(base.name)}^{${tex(exponent, symbols)}}\\left(${tex(base.args[0], symbols)}\\right)`;
+      // sin²(x) as a textbook writes it: the power on the function's name, before its brackets
+      const call = base.op === "call" ? callTex(base, symbols) : "";
+      const opening = call.indexOf("{\\left(");
+      if (opening > 0) {
+        return `${call.slice(0, opening)}^{${tex(exponent, symbols)}}${call.slice(opening)}`;
       }
       const shown = base.op || base.leaf === "num" && base.value.startsWith("-") ? wrap(base, 4) : tex(base, symbols);
       return `{${shown}}^{${tex(exponent, symbols)}}`;
     }
-    case "call": {
-      const arg = tex(node.args[0], symbols);
-      if (node.name === "sqrt") return `\\sqrt{${arg}}`;
-      if (node.name === "Abs") return `\\left|${arg}\\right|`;
-      if (node.name === "exp") return `e^{${arg}}`;
-      return `${funcName(node.name)}\\left(${arg}\\right)`;
-    }
+    case "call":
+      return callTex(node, symbols);
     default:
       throw new Error("cannot typeset");
   }
 }
 
-function funcName(name) {
-  if (!FUNCTIONS.has(name)) return `\\mathrm{${name}}`;
-  return TEX_FUNCTIONS[name] || `\\${name}`;
+/** A call typeset from the function's LaTeX; a name the parser does not allow stays upright (the checker refuses it). */
+function callTex(node, symbols) {
+  const args = node.args.map((a) => tex(a, symbols));
+  const template = FUNCTION_TEX[node.name];
+  if (!template) return `\\mathrm{${node.name.replace(/_/g, "\\_")}}\\left(${args.join(", ")}\\right)`;
+  return template.replace(/#(\d)/g, (_, k) => args[Number(k) - 1] ?? "");
 }
 
 /** LaTeX for what the student typed (throws while the expression is incomplete). */

@@ -58,6 +58,8 @@ hostile = st.recursive(leaves, _extend, max_leaves=10)
 # exact constants under the digit cap but past a float's range (once an OverflowError, found by this fuzzer in CI)
 @example("(10**60)**6*x")
 @example("10**60*10**60*10**60*10**60*10**60*10**60*x")
+# a power of pi combined past the degree limit (found by this fuzzer)
+@example("((pi)**(5))**-(exp(4))")
 def test_hostile_expressions_are_refused_or_built_quickly_and_real(text):
     try:
         with time_limit(HANG_GUARD):

@@ -206,7 +206,7 @@ def test_auto_choosing_radau_waits_for_the_python_loop_slot(monkeypatch):
     monkeypatch.setattr(limits, "WALL_SECONDS", 0.2)
     # a server still compiling would answer the compiled run from scipy too: this test is about the plan
     monkeypatch.setattr(simulation, "ANSWER_WHILE_COMPILING", False)
-    assert simulation._PYTHON_LOOP.acquire(timeout=1.0)  # another scipy run is in progress
+    assert simulation.GATES.python.acquire(timeout=1.0)  # another scipy run is in progress
     try:
         with pytest.raises(OverCapacity, match="Python step loop"):
             simulation.simulate_derivation(d, quiet)
@@ -214,7 +214,7 @@ def test_auto_choosing_radau_waits_for_the_python_loop_slot(monkeypatch):
         excited = simulation.simulate_derivation(d, request(initial={"r": 1.001, "theta_dot": 1.0}, t_end=0.01))
         assert excited["stats"]["method"] != "Radau" and excited["stats"]["path"] == "compiled"
     finally:
-        simulation._PYTHON_LOOP.release()
+        simulation.GATES.python.release()
     doc = simulation.simulate_derivation(d, quiet)
     assert doc["stats"]["method"] == "Radau" and doc["stats"]["reason"].startswith("stiff")
 

@@ -72,3 +72,14 @@ def test_agrees_with_python_on_generated_expressions(text):
         # but a figure, like the browser, cannot draw
         return
     assert math.isclose(got, expected, rel_tol=1e-9, abs_tol=1e-12), text
+
+
+def test_every_allowed_function_has_its_latex_with_one_slot_per_argument():
+    from app.engine.parse import ALLOWED
+    from app.viz.exprtree import function_tex
+
+    tex = function_tex()
+    assert set(tex) == set(ALLOWED)
+    for name, f in ALLOWED.items():
+        assert [f"#{i + 1}" in tex[name] for i in range(3)] == [i < f.arity for i in range(3)], name
+    assert tex["asin"].startswith(r"\arcsin") and tex["sqrt"] == r"\sqrt{#1}"

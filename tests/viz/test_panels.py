@@ -51,3 +51,15 @@ def test_optional_panels_need_a_declaration_and_the_others_do_not():
 
 def test_the_scenes_beyond_the_chapter_ask_for_a_poincare_section():
     assert {s.id for s in SCENES.values() if "poincare" in s.panels} == {"double-pendulum", "coupled-oscillators"}
+
+
+def test_every_panel_has_a_drawing_in_the_browser_and_every_drawing_a_panel():
+    import re
+    from pathlib import Path
+
+    plots = (Path(__file__).resolve().parents[2] / "static" / "js" / "plots.js").read_text()
+    block = re.search(r"const KINDS = \{(.*?)\n\};", plots, re.S)
+    assert block, "plots.js no longer maps panel names to drawings in KINDS"
+    drawn = set(re.findall(r'^\s*"?([a-z0-9-]+)"?:', block.group(1), re.M))
+    # the animations are drawn by static/js/animation.js (simulation.js hands it every animation-* panel)
+    assert drawn == {name for name in NAMES if not name.startswith("animation")}

@@ -6,7 +6,7 @@ import pytest
 import sympy as sp
 
 from app.main import app
-from app.service import user_checks, user_systems
+from app.service import user_checks
 from app.service.fairness import COOKIE
 from app.service.user_systems import UserSystems
 from app.settings import Settings
@@ -38,7 +38,7 @@ def test_systems_outside_the_chapter_match_lagranges_method(client, name):
     doc = derive(client, spec)
     names = symbols_of(doc)
     ours = [sp.sympify(doc["accelerations"][q]["sympy"], locals=names) for q in doc["coordinates"]]
-    system = user_checks.to_system(_spec(spec))
+    system = user_checks.checked(_spec(spec)).system()
     theirs, _ = reference_accelerations(system)
     symbols = sorted(set(names.values()), key=str)
     for a, b in zip(ours, theirs, strict=True):
@@ -76,7 +76,7 @@ def test_lagrangian_form_and_same_contract_as_scenes(client):
     assert doc["steps"] and all(set(s) == {"title", "latex", "sympy", "explanation"} for s in doc["steps"])
     assert r"\dot{\theta}" in doc["lagrangian"]["latex"]
     # the bead's angular acceleration, checked against LagrangesMethod
-    theirs, _ = reference_accelerations(user_checks.to_system(_spec(SPINNING_HOOP)))
+    theirs, _ = reference_accelerations(user_checks.checked(_spec(SPINNING_HOOP)).system())
     ours = sp.sympify(doc["accelerations"]["theta"]["sympy"], locals=names)
     assert numerically_equal(ours, theirs[0], sorted(names.values(), key=str))
 
@@ -138,9 +138,9 @@ def test_other_documented_errors_are_what_the_api_answers(client):
 
 
 @pytest.mark.slow  # derives the double pendulum afresh in the worker pool
-def test_a_job_over_the_time_limit_is_stopped_and_the_pool_recovers(client):
-    # a service of its own with the recorded example's short limit (and so no cached answer)
-    short = UserSystems(config=Settings(derive_seconds=examples_user.TIMEOUT_SECONDS))
+def test_a_job_over_the_time_limit_is_stopped_and_the_pool_recovers(client, services):
+    # a service of its own with the recorded example's short limit (and so no cached answer), on the app's pool
+    short = UserSystems(services.pool, config=Settings(derive_seconds=examples_user.TIMEOUT_SECONDS))
     app.dependency_overrides[user_systems_service] = lambda: short
     try:
         answer = client.post("/api/derive", json=DOUBLE_PENDULUM).json()
@@ -155,8 +155,8 @@ def test_a_job_over_the_time_limit_is_stopped_and_the_pool_recovers(client):
 # one job per session and the same system asked twice at once: tests/web/test_api_user_fairness.py
 
 
-def test_busy_server_answers_503_with_retry_after(client):
-    gate = user_systems.service.gate
+def test_busy_server_answers_503_with_retry_after(client, services):
+    gate = services.users.gate
     tickets = [gate.admit(f"other{i}", f"10.0.0.{i}") for i in range(gate.capacity)]
     try:
         client.cookies.clear()

@@ -7,8 +7,11 @@ from concurrent.futures import Future
 
 import pytest
 
+from app.main import app
 from app.service import user_systems
 from app.service.fairness import COOKIE, Busy, Fairness
+from app.service.user_checks import checked
+from app.web.deps import user_systems_service
 from app.web.disconnect import ClientGone, unless_gone
 from tests.web.test_api_user_worker import run_in_own_loop
 
@@ -257,11 +260,12 @@ class SpyPool:
 
 
 @pytest.fixture
-def spy(monkeypatch):
+def spy():
     pool = SpyPool()
     service = user_systems.UserSystems(pool=pool, gate=Fairness(capacity=8, workers=1, queue_seconds=30))
-    monkeypatch.setattr(user_systems, "service", service)
-    return pool, service
+    app.dependency_overrides[user_systems_service] = lambda: service
+    yield pool, service
+    app.dependency_overrides.pop(user_systems_service)
 
 
 def test_one_job_at_a_time_per_session(client, spy):
@@ -325,9 +329,9 @@ def test_a_queued_job_whose_client_left_is_never_run(spy):
     pool, service = spy
 
     async def main():
-        holder = asyncio.ensure_future(service.derive(dict(PENDULUM), "session:a", "x"))
+        holder = asyncio.ensure_future(service.derive(checked(PENDULUM), "session:a", "x"))
         await asyncio.to_thread(pool.wait_for_job)
-        queued = asyncio.ensure_future(service.derive(dict(SPRING), "session:b", "y"))
+        queued = asyncio.ensure_future(service.derive(checked(SPRING), "session:b", "y"))
         while service.gate.waiting == 0:
             await asyncio.sleep(0.01)
         queued.cancel()  # what app/web/disconnect.py does when the client disconnects

@@ -12,9 +12,9 @@ def test_healthz_runs_on_the_event_loop_and_does_no_work():
     assert "await" not in inspect.getsource(main.health)
 
 
-def test_healthz_answers_and_a_simulation_is_refused_while_every_slot_is_taken(client):
+def test_healthz_answers_and_a_simulation_is_refused_while_every_slot_is_taken(client, services):
     taken = 0
-    while simulation._SLOTS.acquire(blocking=False):
+    while services.gates.slots.acquire(blocking=False):
         taken += 1
     try:
         assert client.get("/healthz").json() == {"status": "ok"}
@@ -23,13 +23,13 @@ def test_healthz_answers_and_a_simulation_is_refused_while_every_slot_is_taken(c
         assert "too many simulations" in response.json()["detail"]
     finally:
         for _ in range(taken):
-            simulation._SLOTS.release()
+            services.gates.slots.release()
     assert client.post("/api/scenes/simple-pendulum/simulate", json={"initial": {}, "t_end": 1}).status_code == 200
 
 
-def test_heavy_simulations_take_at_most_half_of_the_slots(client):
+def test_heavy_simulations_take_at_most_half_of_the_slots(client, services):
     taken = 0
-    while simulation._HEAVY.acquire(blocking=False):
+    while services.gates.heavy.acquire(blocking=False):
         taken += 1
     assert taken == max(1, simulation.SLOTS // 2)
     try:
@@ -41,4 +41,4 @@ def test_heavy_simulations_take_at_most_half_of_the_slots(client):
         assert light.status_code == 200  # the light runs students send still find a slot
     finally:
         for _ in range(taken):
-            simulation._HEAVY.release()
+            services.gates.heavy.release()

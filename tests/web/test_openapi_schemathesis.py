@@ -14,6 +14,11 @@ from hypothesis import HealthCheck, settings
 from schemathesis.specs.openapi.checks import positive_data_acceptance
 
 from app.main import app
+from app.service.checking import Checking
+from app.service.services import Services
+from app.service.simulation import Gates
+from app.service.user_systems import UserSystems
+from app.web import deps
 
 # The schema comes from the app object itself: no request and no start-up (``from_asgi`` runs the app's
 # lifespan while the suite is collected).  schemathesis.pytest.from_fixture would defer it to a fixture,
@@ -26,9 +31,23 @@ _rejection = schema.config.checks.negative_data_rejection
 _rejection.expected_statuses = [*_rejection.expected_statuses, "413"]
 
 
+@pytest.fixture(scope="module")
+def generated_requests_services(client):
+    """Services of their own (fair shares, session minting, caches) on the session's worker pool."""
+    pool = client.app_state["services"].pool
+    users = UserSystems(pool)
+    return Services(pool, users, Checking(users), Gates())
+
+
 @pytest.mark.slow
 @schema.parametrize()
 @settings(max_examples=40, deadline=None, suppress_health_check=list(HealthCheck), derandomize=True)
-def test_every_operation_conforms_to_its_schema(case):
-    # a derivation may take a while (the double pendulum example does); the worker bounds it
-    case.call_and_validate(excluded_checks=[positive_data_acceptance], timeout=120)
+def test_every_operation_conforms_to_its_schema(case, generated_requests_services):
+    # schemathesis starts the app's lifespan for each operation: its calls use services on the session's
+    # pool (started once) instead of a pool of their own, and leave the session's fair shares alone
+    app.dependency_overrides[deps.services] = lambda: generated_requests_services
+    try:
+        # a derivation may take a while (the double pendulum example does); the worker bounds it
+        case.call_and_validate(excluded_checks=[positive_data_acceptance], timeout=120)
+    finally:
+        app.dependency_overrides.pop(deps.services)

@@ -230,3 +230,11 @@ def test_a_scene_page_is_sent_compressed(client):
     assert "content-encoding" not in plain.headers and plain.text == response.text
     module = client.get("/static/js/simulation.js", headers={"Accept-Encoding": "gzip"})
     assert module.headers["content-encoding"] == "gzip" and "connectSimulation" in module.text
+
+
+def test_a_scene_page_gives_the_browser_the_parsers_functions(pages):
+    from app.viz.exprtree import function_tex
+
+    html = pages[f"/scenes/{next(iter(SCENES))}"].text
+    found = re.search(r'<script type="application/json" id="function-tex">(.*?)</script>', html, re.S)
+    assert found and json.loads(found.group(1)) == function_tex()

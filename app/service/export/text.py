@@ -9,9 +9,10 @@ as the characters it is.
 
 from __future__ import annotations
 
-import re
 import string
 import unicodedata
+
+from app.engine.names import GREEK
 
 # CommonMark lets any ASCII punctuation be escaped with a backslash; escaping all of it
 # leaves no emphasis, link, HTML tag, heading, list, table or math ($) to open.
@@ -55,7 +56,6 @@ _LATEX_SYMBOLS = {
     "±": r"\pm",
     "√": r"\surd",
     "∫": r"\int",
-    "Σ": r"\Sigma",
     "°": r"^\circ",
     "ϕ": r"\phi",
     "ϑ": r"\vartheta",
@@ -63,23 +63,11 @@ _LATEX_SYMBOLS = {
 _LATEX_TEXT = {"–": "--", "—": "---", "‘": "`", "’": "'", "“": "``", "”": "''", "…": r"\ldots{}", "\u00a0": "~"}
 _SUPERSCRIPTS = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹", "0123456789", strict=True))
 _SUBSCRIPTS = dict(zip("₀₁₂₃₄₅₆₇₈₉", "0123456789", strict=True))
-_GREEK_CAPITALS = {"Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi", "Psi", "Omega"}
 _ACCENTS = {"\u0307": "dot", "\u0308": "ddot", "\u0302": "hat", "\u0303": "tilde", "\u0304": "bar"}
-
-
-def _greek(char: str) -> str | None:
-    """A Greek letter as a math command (θ -> \\theta; capitals without one are Latin letters)."""
-    name = unicodedata.name(char, "")
-    match = re.fullmatch(r"GREEK (SMALL|CAPITAL) LETTER (\w+)", name)
-    if not match:
-        return None
-    letter = match.group(2).lower().replace("lamda", "lambda")
-    if letter == "final sigma":
-        return r"\varsigma"
-    if match.group(1) == "SMALL":
-        return "o" if letter == "omicron" else "\\" + letter
-    title = letter.capitalize()
-    return "\\" + title if title in _GREEK_CAPITALS else unicodedata.lookup(f"LATIN CAPITAL LETTER {name[-1]}")
+# A Greek letter as a math command, from the one table of names (θ -> \theta); the letters with
+# no command are written as the Latin letters they look like (Α -> A, ο -> o), ς as \varsigma.
+_GREEK_MATH = {char: "\\" + name for name, char in GREEK.items()}
+_GREEK_MATH |= dict(zip("ΑΒΕΖΗΙΚΜΝΟΡΤΧο", "ABEZHIKMNOPTXo", strict=True)) | {"ς": r"\varsigma"}
 
 
 def _math_of(char: str) -> str | None:
@@ -89,7 +77,7 @@ def _math_of(char: str) -> str | None:
         return "^{" + _SUPERSCRIPTS[char] + "}"
     if char in _SUBSCRIPTS:
         return "_{" + _SUBSCRIPTS[char] + "}"
-    return _greek(char)
+    return _GREEK_MATH.get(char)
 
 
 def _plain(char: str) -> str:

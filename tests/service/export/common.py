@@ -10,6 +10,7 @@ from app.engine.contract import derivation_json
 from app.engine.derive import Derivation, derive
 from app.scenes import SCENES
 from app.service import exporting, simulation, user_jobs
+from app.service.user_checks import checked
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING
 from app.web.schemas_user import SystemSpec
 
@@ -51,7 +52,7 @@ def spec_of(body: dict[str, Any]) -> dict[str, Any]:
 
 @cache
 def user_derivation(name: str) -> Derivation:
-    return derive(user_jobs.build_system(spec_of(USER_SYSTEMS[name][0])))
+    return derive(user_jobs.build_system(checked(spec_of(USER_SYSTEMS[name][0]))))
 
 
 @cache

@@ -1,0 +1,124 @@
+"""A system a user declared, once checked: one frozen, picklable value from the route to the worker.
+
+A user system arrives in one of two input shapes, the API's request
+(``app/web/schemas_user.py``) or the playground's form (``app/web/playground_form.py``);
+``app.service.user_checks.checked`` turns either's plain data into a ``UserSystem``
+after refusing what is not allowed.  From there on the cache keys, the worker's
+jobs, the exports and the page model all take this one value; the worker builds
+the engine's declaration (``system()``, app/scenes/types.py) from it.  No SymPy here.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+from dataclasses import asdict, dataclass
+from typing import Any
+
+from app.scenes.types import Parameter, Particle, System
+
+
+@dataclass(frozen=True)
+class DeclaredParameter:
+    name: str
+    value: float = 1.0  # used to simulate, and shown as the default
+    unit: str = ""
+    min: float | None = None
+    max: float | None = None
+    description: str = ""
+
+
+@dataclass(frozen=True)
+class DeclaredParticle:
+    mass: str
+    position: tuple[str, ...]  # (x, y) or (x, y, z), expressions of the coordinates and t
+    label: str = ""
+
+
+def _in_space(position: tuple[str, ...]) -> tuple[str, str, str]:
+    x, y, *z = position
+    return x, y, z[0] if z else "0"
+
+
+@dataclass(frozen=True)
+class UserSystem:
+    coordinates: tuple[str, ...]
+    parameters: tuple[DeclaredParameter, ...] = ()
+    lagrangian: str | None = None
+    kinetic: str | None = None
+    potential: str | None = None
+    particles: tuple[DeclaredParticle, ...] = ()
+    forces: tuple[tuple[str, str], ...] = ()  # (coordinate, Q), in the order given
+    nonnegative: tuple[str, ...] = ()
+
+    @classmethod
+    def of(cls, data: Mapping[str, Any]) -> UserSystem:
+        """From plain data in the request's shape (a parameter may be a bare name)."""
+        return cls(
+            coordinates=tuple(data.get("coordinates") or ()),
+            parameters=tuple(
+                DeclaredParameter(p) if isinstance(p, str) else DeclaredParameter(**p)
+                for p in data.get("parameters") or ()
+            ),
+            lagrangian=data.get("lagrangian"),
+            kinetic=data.get("kinetic"),
+            potential=data.get("potential"),
+            particles=tuple(
+                DeclaredParticle(p["mass"], tuple(p["position"]), p.get("label") or "")
+                for p in data.get("particles") or ()
+            ),
+            forces=tuple((data.get("forces") or {}).items()),
+            nonnegative=tuple(data.get("nonnegative") or ()),
+        )
+
+    def as_json(self) -> dict[str, Any]:
+        """Plain data in the request's shape (what the page sends back to the API, and the cache keys' text)."""
+        return {
+            "coordinates": list(self.coordinates),
+            "parameters": [asdict(p) for p in self.parameters],
+            "lagrangian": self.lagrangian,
+            "kinetic": self.kinetic,
+            "potential": self.potential,
+            "particles": [{"mass": p.mass, "position": list(p.position), "label": p.label} for p in self.particles],
+            "forces": dict(self.forces),
+            "nonnegative": list(self.nonnegative),
+        }
+
+    @property
+    def parameter_names(self) -> tuple[str, ...]:
+        return tuple(p.name for p in self.parameters)
+
+    @property
+    def form(self) -> str:
+        """Which of the three forms the system is given in (the field a derivation error points at)."""
+        if self.particles:
+            return "particles"
+        return "lagrangian" if self.lagrangian is not None else "kinetic"
+
+    def expressions(self) -> Iterator[tuple[tuple, str, bool]]:
+        """Every expression: (its location in the request, the text, whether velocities may appear)."""
+        for i, particle in enumerate(self.particles):
+            yield ("particles", i, "mass"), particle.mass, False
+            for j, component in enumerate(particle.position):
+                yield ("particles", i, "position", j), component, False
+        for key, text, velocities in (
+            ("lagrangian", self.lagrangian, True),
+            ("kinetic", self.kinetic, True),
+            ("potential", self.potential, False),
+        ):
+            if text is not None:
+                yield (key,), text, velocities
+        for name, text in self.forces:
+            yield ("forces", name), text, True
+
+    def system(self) -> System:
+        """The engine's declaration (a planar particle moves in z = 0)."""
+        return System(
+            coordinates=self.coordinates,
+            parameters=tuple(Parameter(p.name, float(p.value), p.unit, p.min, p.max) for p in self.parameters),
+            particles=tuple(Particle(p.mass, _in_space(p.position), p.label) for p in self.particles),
+            kinetic=self.kinetic,
+            potential=self.potential,
+            lagrangian=self.lagrangian,
+            forces=dict(self.forces),
+            nonnegative=self.nonnegative,
+        )
