@@ -25,7 +25,6 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from app.numerics import limits
 from app.numerics.errors import SimulationError, TooMuchWork
@@ -132,7 +131,10 @@ def crossings(
         if angle:
             bracket = bracket[np.cos(Y[bracket, index] - value) > 0]
         for i in bracket:
-            # located to the run's tolerance by a short adaptive run with event detection
+            # located to the run's tolerance by a short adaptive run with event detection (scipy imported
+            # here, on first use, not when the server starts)
+            from scipy.integrate import solve_ivp
+
             sol = solve_ivp(
                 lambda s, z: system.f(s, z, k),
                 (t[i], t[i + 1]),

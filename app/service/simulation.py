@@ -64,35 +64,57 @@ class SimulationInput(Protocol):
 
 
 class _Compiled:
-    """Numeric systems per scene id (or per generated source for user systems), per process."""
+    """Numeric systems per scene id (or per generated source for user systems), per process.
+
+    One lock per key: a request for one scene never waits while another scene's system is built
+    (by the warm-up thread or another request); two requests for the same scene build it once."""
 
     def __init__(self, size: int = 32):
         self.size = size
         self.items: OrderedDict[str, tuple[NumericSystem, Observables]] = OrderedDict()
-        self.lock = threading.Lock()
+        self.lock = threading.Lock()  # guards ``items`` and ``_building``, held only briefly
+        self._building: dict[str, threading.Lock] = {}
         self.build_seconds: dict[str, float] = {}
+
+    def _cached(self, key: str) -> tuple[NumericSystem, Observables] | None:
+        with self.lock:
+            if key in self.items:
+                self.items.move_to_end(key)
+                return self.items[key]
+            return None
 
     def get(
         self, key: str | None, d: Derivation, forces: Sequence[dict[str, Any]]
     ) -> tuple[NumericSystem, Observables]:
+        if key is None:
+            return self._build(None, d, forces)
+        found = self._cached(key)
+        if found is not None:
+            return found
         with self.lock:
-            if key is not None and key in self.items:
-                self.items.move_to_end(key)
-                return self.items[key]
-            start = time.perf_counter()
-            # a scene's generated sources come from the disk cache (keyed by the engine's, scenes' and
-            # numerics' source), so a new worker skips the code generation
-            sources = _SOURCES.get(key, lambda: generated_sources(d)) if key is not None else None
-            system = numeric_system(d, sources)
-            key = key or system.key
-            if key in self.items:
-                return self.items[key]
-            entry = (system, build(system, forces))
+            building = self._building.setdefault(key, threading.Lock())
+        with building:
+            return self._cached(key) or self._build(key, d, forces)
+
+    def _build(
+        self, key: str | None, d: Derivation, forces: Sequence[dict[str, Any]]
+    ) -> tuple[NumericSystem, Observables]:
+        start = time.perf_counter()
+        # a scene's generated sources come from the disk cache (keyed by the engine's, scenes' and
+        # numerics' source), so a new worker skips the code generation
+        sources = _SOURCES.get(key, lambda: generated_sources(d)) if key is not None else None
+        system = numeric_system(d, sources)
+        key = key or system.key
+        found = self._cached(key)
+        if found is not None:
+            return found
+        entry = (system, build(system, forces))
+        with self.lock:
             self.build_seconds[key] = time.perf_counter() - start
             self.items[key] = entry
             while len(self.items) > self.size:
                 self.items.popitem(last=False)
-            return entry
+        return entry
 
 
 _EVENTS: dict[str, list[EventFunction]] = {}  # per scene id: its terminal events, compiled once per process
