@@ -117,7 +117,7 @@ def run_server(cache: Path, label: str) -> None:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--empty", action="store_true", help="first start on an empty cache (set-up's warm step skipped)")
+    parser.add_argument("--empty", action="store_true", help="first start on an empty cache (set-up skipped)")
     parser.add_argument("--cache", type=Path, help="a cache folder set-up filled: restarts only, the folder is kept")
     args = parser.parse_args()
     print(f"load average at the start: {_load()}")

@@ -21,6 +21,6 @@ else
 fi
 
 scripts/assets.sh
-.venv/bin/python -m app.service.warm
+.venv/bin/python -m app.web.warm
 mkdir -p .cache
 scripts/stamp.sh > .cache/setup.stamp

@@ -42,6 +42,7 @@ def time_limit(seconds: float) -> Iterator[None]:
     # halfway (leaving every later simplification to retry it and be cut short again); a process that
     # never simplifies (the web process serving from the caches) never pays for it.
     import sympy.physics.units  # noqa: F401
+
     if threading.current_thread() is not threading.main_thread():
         yield
         return

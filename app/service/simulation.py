@@ -16,7 +16,7 @@ import math
 import threading
 import time
 from collections import OrderedDict
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import AbstractContextManager, ExitStack, contextmanager
 from typing import Any, Protocol
 
@@ -344,26 +344,64 @@ def _finite(value: Any) -> Any:
     return value
 
 
-def warm_all() -> dict[str, float]:
+class _InFlight:
+    """Simulations running in this process: the warm-up thread gives way to them between its steps."""
+
+    def __init__(self) -> None:
+        self._count = 0
+        self._changed = threading.Condition()
+
+    @contextmanager
+    def serving(self) -> Iterator[None]:
+        with self._changed:
+            self._count += 1
+        try:
+            yield
+        finally:
+            with self._changed:
+                self._count -= 1
+                self._changed.notify_all()
+
+    def wait_quiet(self, timeout: float) -> bool:
+        """Wait until no simulation runs, at most ``timeout`` seconds; True when quiet."""
+        with self._changed:
+            return self._changed.wait_for(lambda: self._count == 0, timeout)
+
+
+IN_FLIGHT = _InFlight()
+# The longest the warm-up waits for quiet before its next step: under steady traffic it still advances.
+GIVE_WAY_SECONDS = 0.5
+
+
+def warm_all(give_way: Callable[[], object] = lambda: None) -> dict[str, float]:
     """Compile (or load from numba's disk cache) every kernel and every scene's right-hand sides.
 
     Run in the background at start-up and at image build (``python -m app.service.simulation``).
-    Order: every scene's numeric system, then the compiled DOP853 (what ``auto`` picks most
-    often, and the error reference) with each scene's right-hand sides, then the other compiled
-    kernels; a method is used the moment it is ready.  Returns the seconds spent per item."""
+    Order: scene by scene (in the chapter's order), its derivation and numeric system, then the
+    compiled DOP853 (what ``auto`` picks most often, and the error reference) on it; then the other
+    compiled kernels.  A method is used the moment it is ready.  ``give_way`` runs between steps
+    (the server's: wait while requests are being served).  Returns the seconds spent per item."""
     from app.service.derivations import derivation, derivation_document
 
     spent: dict[str, float] = {}
-    start = time.perf_counter()
-    systems = [
-        COMPILED.get(scene_id, derivation(scene_id), derivation_document(scene_id).get("constraint_forces") or [])[0]
-        for scene_id in SCENES
-    ]
-    spent["numeric systems"] = time.perf_counter() - start
     first = METHODS[NONSTIFF]
-    for method in (first, *(m for m in METHODS.values() if m.compiled and m is not first)):
+    systems = []
+    for scene_id in SCENES:
+        give_way()
+        start = time.perf_counter()
+        forces = derivation_document(scene_id).get("constraint_forces") or []
+        system = COMPILED.get(scene_id, derivation(scene_id), forces)[0]
+        systems.append(system)
+        spent["numeric systems"] = spent.get("numeric systems", 0.0) + time.perf_counter() - start
+        give_way()
+        start = time.perf_counter()
+        if first.applicable(system) is None:
+            first.prepare(system)
+        spent[first.name] = spent.get(first.name, 0.0) + time.perf_counter() - start
+    for method in (m for m in METHODS.values() if m.compiled and m is not first):
         start = time.perf_counter()
         for system in systems:
+            give_way()
             if method.applicable(system) is None:
                 method.prepare(system)
         spent[method.name] = time.perf_counter() - start
@@ -371,17 +409,16 @@ def warm_all() -> dict[str, float]:
 
 
 def start_warming() -> threading.Thread:
-    """The server's start: answer at once (scipy while compiling), derive and compile in the background."""
-    from app.service import derivations
+    """The server's start: answer at once (scipy while compiling), load and compile in the background.
 
+    The thread gives way to the requests being served (``IN_FLIGHT``) between its steps, so that a
+    first request shares the processor with at most one step of it (one scene's system or one kernel)."""
     global ANSWER_WHILE_COMPILING
     ANSWER_WHILE_COMPILING = True
 
-    def warm() -> None:
-        derivations.warm_all()
-        warm_all()
-
-    thread = threading.Thread(target=warm, name="warm-up", daemon=True)
+    thread = threading.Thread(
+        target=warm_all, args=(lambda: IN_FLIGHT.wait_quiet(GIVE_WAY_SECONDS),), name="warm-up", daemon=True
+    )
     thread.start()
     return thread
 
@@ -390,8 +427,9 @@ def simulate_scene(scene_id: str, request: SimulationInput) -> dict[str, Any]:
     from app.service.derivations import derivation, derivation_document, scene
 
     scene(scene_id)
-    forces = derivation_document(scene_id).get("constraint_forces") or []
-    return simulate_derivation(derivation(scene_id), request, constraint_forces=forces, scene_id=scene_id)
+    with IN_FLIGHT.serving():  # the warm-up thread waits meanwhile
+        forces = derivation_document(scene_id).get("constraint_forces") or []
+        return simulate_derivation(derivation(scene_id), request, constraint_forces=forces, scene_id=scene_id)
 
 
 if __name__ == "__main__":
