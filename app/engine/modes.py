@@ -33,6 +33,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.linalg
+import scipy.optimize
 import sympy as sp
 
 from app.engine.budget import within_budget
@@ -265,8 +266,6 @@ def _search(
     starts = itertools.product(*axes) if n <= 4 else (np.random.default_rng(5).uniform(-3, 3, n) for _ in range(120))
     found: list[np.ndarray] = []
     deadline = time.monotonic() + SEARCH_SECONDS
-    import scipy.optimize  # here, not at import: the web process serving from the caches never needs it
-
     for start in starts:
         if time.monotonic() > deadline:
             break
@@ -458,8 +457,6 @@ def _roots_1d(dU: sp.Expr, r: sp.Symbol, values: Mapping[sp.Symbol, float], nonn
     with np.errstate(all="ignore"):
         y = np.array([f(x)[0] for x in grid])
     roots: list[float] = []
-    import scipy.optimize  # see _search: imported on first use
-
     for a, b, ya, yb in zip(grid[:-1], grid[1:], y[:-1], y[1:], strict=True):
         if not (np.isfinite(ya) and np.isfinite(yb)) or ya * yb > 0:
             continue

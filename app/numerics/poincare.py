@@ -29,6 +29,7 @@ import numpy as np
 from app.numerics import limits
 from app.numerics.errors import SimulationError, TooMuchWork
 from app.numerics.methods import METHODS, Problem
+from app.numerics.methods.scipy_ivp import scipy_integrate
 from app.numerics.observables import Observables
 from app.numerics.system import NumericSystem
 
@@ -131,11 +132,8 @@ def crossings(
         if angle:
             bracket = bracket[np.cos(Y[bracket, index] - value) > 0]
         for i in bracket:
-            # located to the run's tolerance by a short adaptive run with event detection (scipy imported
-            # here, on first use, not when the server starts)
-            from scipy.integrate import solve_ivp
-
-            sol = solve_ivp(
+            # located to the run's tolerance by a short adaptive run with event detection
+            sol = scipy_integrate().solve_ivp(
                 lambda s, z: system.f(s, z, k),
                 (t[i], t[i + 1]),
                 Y[i],

@@ -28,6 +28,7 @@ from app.numerics import limits, methods
 from app.numerics.errors import SimulationError
 from app.numerics.events import EventFunction, compile_events
 from app.numerics.methods import AUTO, METHODS, NONSTIFF
+from app.numerics.methods.scipy_ivp import scipy_integrate
 from app.numerics.observables import Observables, build, summarize
 from app.numerics.plan import plan
 from app.numerics.simulate import run
@@ -377,13 +378,18 @@ def warm_all(give_way: Callable[[], object] = lambda: None) -> dict[str, float]:
     """Compile (or load from numba's disk cache) every kernel and every scene's right-hand sides.
 
     Run in the background at start-up and at image build (``python -m app.service.simulation``).
-    Order: scene by scene (in the chapter's order), its derivation and numeric system, then the
-    compiled DOP853 (what ``auto`` picks most often, and the error reference) on it; then the other
-    compiled kernels.  A method is used the moment it is ready.  ``give_way`` runs between steps
+    Order: scipy.integrate (the fallback); then scene by scene (in the chapter's order), its
+    derivation and numeric system, then the compiled DOP853 (what ``auto`` picks most often, and the
+    error reference) on it; then the other compiled kernels.  A method is used the moment it is ready.  ``give_way`` runs between steps
     (the server's: wait while requests are being served).  Returns the seconds spent per item."""
     from app.service.derivations import derivation, derivation_document
 
     spent: dict[str, float] = {}
+    # scipy first: it answers while the kernels load, and once imported here (under its lock) no kernel
+    # module that reads scipy's tables can be importing it half-way beside a request's fallback
+    start = time.perf_counter()
+    scipy_integrate()
+    spent["scipy.integrate"] = time.perf_counter() - start
     first = METHODS[NONSTIFF]
     systems = []
     for scene_id in SCENES:

@@ -12,11 +12,23 @@ dense output; a state outside its bound ends the run (a runaway).
 from __future__ import annotations
 
 import importlib
+import threading
 import time
+from types import ModuleType
 
 import numpy as np
 
 from app.numerics.methods.base import Method, Problem, Trajectory, outside_names
+
+_IMPORTING = threading.Lock()
+
+
+def scipy_integrate() -> ModuleType:
+    """scipy.integrate, imported on first use (0.5-1 s, which a server answering from its compiled
+    kernels need not pay at start) and by one thread at a time: two threads importing it at once can
+    each meet the other's half-initialised submodules and fail."""
+    with _IMPORTING:
+        return importlib.import_module("scipy.integrate")
 
 
 class _OutOfBudget(Exception):
@@ -34,9 +46,7 @@ class ScipyMethod(Method):
     solver: str  # the OdeSolver class's name in scipy.integrate
 
     def solver_class(self) -> type:
-        """The scipy class, imported on first use: scipy.integrate costs 0.5-1 s to import, which a
-        server answering from the compiled kernels never needs to pay at start."""
-        return getattr(importlib.import_module("scipy.integrate"), self.solver)
+        return getattr(scipy_integrate(), self.solver)
 
     def _run(self, problem: Problem, **options) -> Trajectory:
         rhs = problem.system.python["rhs"]
