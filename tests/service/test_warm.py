@@ -13,9 +13,9 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_the_web_process_imports_no_integrator_or_units_library_at_start():
-    """scipy.integrate (the scipy fallback and methods) and sympy.physics.units (simplify's first call)
-    are imported where first used, not by app.main."""
-    code = "import sys, app.main; print(' '.join(m for m in ('scipy.integrate', 'sympy.physics.units') if m in sys.modules))"
+    """scipy.integrate (the scipy fallback and methods), sympy.physics.units (simplify's first call) and
+    nbformat (notebook exports) are imported where first used, not by app.main."""
+    code = "import sys, app.main; print(' '.join(m for m in ('scipy.integrate', 'sympy.physics.units', 'nbformat') if m in sys.modules))"
     env = {**os.environ, "LAGRANGE_WARM": "0", "PYTHONPATH": str(ROOT)}
     out = subprocess.run([sys.executable, "-c", code], env=env, cwd=ROOT, capture_output=True, text=True, check=True)
     assert out.stdout.split() == []
