@@ -89,3 +89,29 @@ def test_a_scene_simulation_counts_as_in_flight(monkeypatch):
     request = {"parameters": {}, "initial": {}, "t_end": 0.5, "method": "auto", "rtol": None, "atol": None}
     simulation.simulate_scene("simple-pendulum", type("R", (), {**request, "samples": 10})())
     assert seen == [False] and simulation.IN_FLIGHT.wait_quiet(0.0)
+
+
+def test_a_scene_does_not_wait_while_another_scene_is_being_built(monkeypatch):
+    from app.service.derivations import derivation
+
+    compiled = simulation._Compiled()
+    release = threading.Event()
+    original = simulation.numeric_system
+    slow, quick = derivation("simple-pendulum"), derivation("pulley")
+
+    def numeric_system(d, sources=None):
+        if d is slow:
+            assert release.wait(30.0)
+        return original(d, sources)
+
+    monkeypatch.setattr(simulation, "numeric_system", numeric_system)
+    building = threading.Thread(target=compiled.get, args=("simple-pendulum", slow, []))
+    building.start()
+    try:
+        system, _ = compiled.get("pulley", quick, [])  # while the pendulum's build is held
+        assert system.coordinates == ("y1", "y2") and building.is_alive()
+    finally:
+        release.set()
+        building.join(30.0)
+    assert compiled.get("simple-pendulum", slow, [])[0].coordinates == ("theta",)
+    assert list(compiled.items) == ["pulley", "simple-pendulum"]
