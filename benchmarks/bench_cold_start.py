@@ -1,7 +1,7 @@
 """Cold start and restart of the server: how long until each scene's first simulation and work-precision report.
 
-Fills an empty cache folder as set-up does (``python -m app.service.warm``: derivations,
-numba's compiled kernels, work-precision reports), then starts uvicorn (one worker) on a
+Fills an empty cache folder as set-up does (``python -m app.web.warm``: derivations,
+numba's compiled kernels, work-precision reports, playground examples), then starts uvicorn (one worker) on a
 free loopback port on it (a fresh clone after set-up), waits for /healthz, asks every
 scene for its default simulation (one after the other, as a class opening the pages
 would) and two scenes for their work-precision reports, timing each request and noting
@@ -46,8 +46,8 @@ def _request(url: str, body: dict | None = None, timeout: float = 120.0) -> tupl
     req = urllib.request.Request(url, data=data, headers={"Content-Type": "application/json"})
     start = time.perf_counter()
     with urllib.request.urlopen(req, timeout=timeout) as response:
-        payload = json.loads(response.read())
-    return time.perf_counter() - start, payload
+        raw = response.read()
+    return time.perf_counter() - start, json.loads(raw) if response.headers.get_content_type() == "application/json" else {}
 
 
 def _env(cache: Path) -> dict[str, str]:
@@ -63,8 +63,8 @@ def _load() -> str:
 def set_up(cache: Path) -> None:
     """What scripts/setup.sh runs after installing: fill the caches."""
     start = time.perf_counter()
-    subprocess.run([sys.executable, "-m", "app.service.warm"], cwd=ROOT, env=_env(cache), check=True)
-    print(f"\nset-up's warm step (python -m app.service.warm): {time.perf_counter() - start:.1f} s")
+    subprocess.run([sys.executable, "-m", "app.web.warm"], cwd=ROOT, env=_env(cache), check=True)
+    print(f"\nset-up's warm step (python -m app.web.warm): {time.perf_counter() - start:.1f} s")
 
 
 def run_server(cache: Path, label: str) -> None:
@@ -89,6 +89,9 @@ def run_server(cache: Path, label: str) -> None:
         print(f"/healthz answered {ready - spawned:.2f} s after the process started\n")
         print("| request | latency s | since /healthz s | path |")
         print("|---|---|---|---|")
+        for page in ("/", f"/scenes/{next(iter(SCENES))}"):
+            latency, _ = _request(base + page)
+            print(f"| page {page} | {latency:.2f} | {time.perf_counter() - ready:.2f} | |")
         for sid in SCENES:
             latency, doc = _request(f"{base}/api/scenes/{sid}/simulate", {"initial": {}})
             path = f"{doc['stats']['path']} ({doc['stats']['method']})"
