@@ -47,7 +47,8 @@ def _request(url: str, body: dict | None = None, timeout: float = 120.0) -> tupl
     start = time.perf_counter()
     with urllib.request.urlopen(req, timeout=timeout) as response:
         raw = response.read()
-    return time.perf_counter() - start, json.loads(raw) if response.headers.get_content_type() == "application/json" else {}
+        is_json = response.headers.get_content_type() == "application/json"
+    return time.perf_counter() - start, json.loads(raw) if is_json else {}
 
 
 def _env(cache: Path) -> dict[str, str]:
