@@ -29,6 +29,9 @@ WORKDIR /app
 COPY pyproject.toml README.md ./
 COPY app app
 RUN pip install --no-cache-dir --disable-pip-version-check . && rm -rf build *.egg-info
+# the server imports ./app (the working directory comes first on the path): its bytecode, compiled once
+# here, since PYTHONDONTWRITEBYTECODE would have every start compile every module again
+RUN python -m compileall -q app
 COPY templates templates
 COPY static static
 COPY --from=assets /src/static/vendor static/vendor
