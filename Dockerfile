@@ -29,6 +29,9 @@ WORKDIR /app
 COPY pyproject.toml README.md ./
 COPY app app
 RUN pip install --no-cache-dir --disable-pip-version-check . && rm -rf build *.egg-info
+# the server imports ./app (the working directory comes first on the path): its bytecode, compiled once
+# here, since PYTHONDONTWRITEBYTECODE would have every start compile every module again
+RUN python -m compileall -q app
 COPY templates templates
 COPY static static
 COPY --from=assets /src/static/vendor static/vendor
@@ -36,7 +39,7 @@ COPY scripts/serve.sh scripts/serve.sh
 RUN useradd --create-home --uid 10001 lagrange && mkdir -p .cache && chown -R lagrange /app/.cache
 USER lagrange
 # Derive the chapter (and precompute its reports) so the first student waits for nothing.
-RUN python -m app.service.warm
+RUN python -m app.web.warm
 EXPOSE 8000
 HEALTHCHECK --interval=30s --timeout=5s --start-period=20s --retries=3 \
     CMD python -c "import os, urllib.request; urllib.request.urlopen('http://127.0.0.1:%s/healthz' % os.environ.get('PORT', '8000'), timeout=4)"

@@ -30,9 +30,10 @@ async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
     # right-hand sides, in the background: the server answers at once, with scipy
     # while a compiled integrator is not ready yet.
     if settings().warm:
-        simulation.start_warming()
-        # the playground's examples too, so that a first reader of one does not wait for its derivation
-        warm_examples(services.users)
+        warming = simulation.start_warming()
+        # then the playground's examples (from the disk cache set-up filled), so that a first reader of one
+        # does not wait for its derivation
+        warm_examples(services.users, after=warming)
     try:
         yield {"services": services}
     finally:

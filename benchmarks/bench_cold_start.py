@@ -1,18 +1,21 @@
 """Cold start and restart of the server: how long until each scene's first simulation and work-precision report.
 
-Starts uvicorn (one worker) on a free loopback port with an empty cache folder
-(no derivations, no numba cache, no work-precision reports), waits for
-/healthz, then asks every scene for its default simulation (one after the
-other, as a class opening the pages would) and two scenes for their
-work-precision reports, timing each request and noting which path answered
-(``stats.path``: scipy while the kernels compile, compiled after).  Then stops
-the server and starts it again on the now-filled cache (a restart).
+Fills an empty cache folder as set-up does (``python -m app.web.warm``: derivations,
+numba's compiled kernels, work-precision reports, playground examples), then starts uvicorn (one worker) on a
+free loopback port on it (a fresh clone after set-up), waits for /healthz, asks every
+scene for its default simulation (one after the other, as a class opening the pages
+would) and two scenes for their work-precision reports, timing each request and noting
+which path answered (``stats.path``: scipy while the kernels compile, compiled after).
+Then stops the server and starts it again on the same cache (a restart).
 
-    .venv/bin/python -m benchmarks.bench_cold_start
+    .venv/bin/python -m benchmarks.bench_cold_start            # set-up, first start, restart
+    .venv/bin/python -m benchmarks.bench_cold_start --empty    # first a start on an empty cache (set-up skipped)
+    .venv/bin/python -m benchmarks.bench_cold_start --cache DIR  # restarts only, on a cache set-up filled
 """
 
 from __future__ import annotations
 
+import argparse
 import json
 import os
 import shutil
@@ -43,14 +46,31 @@ def _request(url: str, body: dict | None = None, timeout: float = 120.0) -> tupl
     req = urllib.request.Request(url, data=data, headers={"Content-Type": "application/json"})
     start = time.perf_counter()
     with urllib.request.urlopen(req, timeout=timeout) as response:
-        payload = json.loads(response.read())
-    return time.perf_counter() - start, payload
+        raw = response.read()
+        is_json = response.headers.get_content_type() == "application/json"
+    return time.perf_counter() - start, json.loads(raw) if is_json else {}
+
+
+def _env(cache: Path) -> dict[str, str]:
+    env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    env.update(LAGRANGE_CACHE_DIR=str(cache), PYTHONPATH=str(ROOT))
+    return env
+
+
+def _load() -> str:
+    return " ".join(f"{x:.1f}" for x in os.getloadavg())
+
+
+def set_up(cache: Path) -> None:
+    """What scripts/setup.sh runs after installing: fill the caches."""
+    start = time.perf_counter()
+    subprocess.run([sys.executable, "-m", "app.web.warm"], cwd=ROOT, env=_env(cache), check=True)
+    print(f"\nset-up's warm step (python -m app.web.warm): {time.perf_counter() - start:.1f} s")
 
 
 def run_server(cache: Path, label: str) -> None:
     port = _port()
-    env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
-    env.update(LAGRANGE_CACHE_DIR=str(cache), PYTHONPATH=str(ROOT))
+    env = _env(cache)
     spawned = time.perf_counter()
     server = subprocess.Popen(
         [sys.executable, "-m", "uvicorn", "app.main:app", "--port", str(port), "--log-level", "warning"],
@@ -66,9 +86,13 @@ def run_server(cache: Path, label: str) -> None:
             except OSError:
                 time.sleep(0.05)
         ready = time.perf_counter()
-        print(f"\n### {label}\n\n/healthz answered {ready - spawned:.2f} s after the process started\n")
+        print(f"\n### {label} (load average {_load()})\n")
+        print(f"/healthz answered {ready - spawned:.2f} s after the process started\n")
         print("| request | latency s | since /healthz s | path |")
         print("|---|---|---|---|")
+        for page in ("/", f"/scenes/{next(iter(SCENES))}"):
+            latency, _ = _request(base + page)
+            print(f"| page {page} | {latency:.2f} | {time.perf_counter() - ready:.2f} | |")
         for sid in SCENES:
             latency, doc = _request(f"{base}/api/scenes/{sid}/simulate", {"initial": {}})
             path = f"{doc['stats']['path']} ({doc['stats']['method']})"
@@ -96,10 +120,23 @@ def run_server(cache: Path, label: str) -> None:
 
 
 def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--empty", action="store_true", help="first start on an empty cache (set-up skipped)")
+    parser.add_argument("--cache", type=Path, help="a cache folder set-up filled: restarts only, the folder is kept")
+    args = parser.parse_args()
+    print(f"load average at the start: {_load()}")
+    if args.cache:
+        run_server(args.cache, "start on the given cache")
+        run_server(args.cache, "restart")
+        return
     cache = Path(tempfile.mkdtemp(prefix="lagrange-cold-"))
     try:
-        run_server(cache, "empty cache (a fresh clone that skipped set-up's warm step)")
-        run_server(cache, "restart on the cache the first run filled")
+        if args.empty:
+            run_server(cache, "empty cache (a fresh clone that skipped set-up's warm step)")
+        else:
+            set_up(cache)
+            run_server(cache, "first start after set-up")
+        run_server(cache, "restart")
     finally:
         shutil.rmtree(cache, ignore_errors=True)
 

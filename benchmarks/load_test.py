@@ -308,13 +308,13 @@ def main() -> None:
     parser.add_argument("--soak", action="store_true")
     parser.add_argument("--ramp", type=float, default=10.0, help="seconds over which students arrive")
     parser.add_argument(
-        "--no-warm", action="store_true", help="skip `python -m app.service.warm` (the image runs it at build)"
+        "--no-warm", action="store_true", help="skip `python -m app.web.warm` (the image runs it at build)"
     )
     args = parser.parse_args()
     if args.seconds > 1800:
         sys.exit("--seconds is capped at 1800")
     if not args.no_warm:
-        subprocess.run([sys.executable, "-m", "app.service.warm"], cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
+        subprocess.run([sys.executable, "-m", "app.web.warm"], cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
     proc, base = start_server(args.workers)
     try:
         print(

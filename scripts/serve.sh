@@ -1,7 +1,7 @@
 #!/bin/sh
 # Serve the app with uvicorn: PORT (default 8000), WORKERS (web processes; 0 or unset: from the
 # container's CPUs, see app/settings.py), HOST (default 0.0.0.0). The other options come from
-# the settings (python -m app.web.slow_clients): a long keep-alive for many students behind one
+# the settings (python -m app.web.server_options): a long keep-alive for many students behind one
 # address, a cap on open connections (then 503), a deadline on request headers (bodies: in the
 # app), a graceful shutdown on SIGTERM that finishes the requests in flight.
 set -eu
@@ -10,4 +10,4 @@ if [ "${WORKERS:-0}" != "0" ]; then
 fi
 # shellcheck disable=SC2046 # the options are words
 exec python -m uvicorn app.main:app --host "${HOST:-0.0.0.0}" --port "${PORT:-8000}" \
-    $(python -m app.web.slow_clients) --no-access-log
+    $(python -m app.web.server_options) --no-access-log

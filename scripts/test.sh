@@ -14,5 +14,5 @@ if ! command -v pdflatex >/dev/null; then
     apt-get install -y -qq --no-install-recommends texlive-latex-base texlive-latex-recommended >/dev/null
 fi
 scripts/lint.sh
-# set-up warmed the caches (python -m app.service.warm): the tests never compile kernels meanwhile
+# set-up warmed the caches (python -m app.web.warm): the tests never compile kernels meanwhile
 .venv/bin/python -m pytest "$@"

@@ -18,11 +18,6 @@ from typing import TypeVar
 
 import sympy as sp
 
-# sp.simplify imports sympy.physics.units on its first call (0.5 s or more on a busy machine); imported
-# here, at start-up, so that no time budget ever interrupts that import halfway and leaves every later
-# simplification to retry it and be cut short again.
-import sympy.physics.units  # noqa: F401, E402
-
 T = TypeVar("T")
 
 SIMPLIFY_SECONDS = 0.5
@@ -42,6 +37,12 @@ def time_limit(seconds: float) -> Iterator[None]:
     (at once, if it ran out meanwhile), so a whole derivation can have a budget
     while its optional refinements have smaller ones.
     """
+    # sp.simplify imports sympy.physics.units on its first call (0.4 s, more on a busy machine). The
+    # outermost limit imports it before arming its timer, so that no budget ever interrupts that import
+    # halfway (leaving every later simplification to retry it and be cut short again); a process that
+    # never simplifies (the web process serving from the caches) never pays for it.
+    import sympy.physics.units  # noqa: F401
+
     if threading.current_thread() is not threading.main_thread():
         yield
         return

@@ -25,11 +25,11 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from app.numerics import limits
 from app.numerics.errors import SimulationError, TooMuchWork
 from app.numerics.methods import METHODS, Problem
+from app.numerics.methods.scipy_ivp import scipy_integrate
 from app.numerics.observables import Observables
 from app.numerics.system import NumericSystem
 
@@ -133,7 +133,7 @@ def crossings(
             bracket = bracket[np.cos(Y[bracket, index] - value) > 0]
         for i in bracket:
             # located to the run's tolerance by a short adaptive run with event detection
-            sol = solve_ivp(
+            sol = scipy_integrate().solve_ivp(
                 lambda s, z: system.f(s, z, k),
                 (t[i], t[i + 1]),
                 Y[i],

@@ -50,6 +50,8 @@ def write_atomically(path: Path, data: bytes) -> None:
 class JsonCache:
     """Memory and disk cache of JSON-serialisable results."""
 
+    suffix = ".json"
+
     def __init__(self, namespace: str, fingerprint: str):
         self.namespace = namespace
         self.fingerprint = fingerprint
@@ -58,7 +60,7 @@ class JsonCache:
         self._guard = threading.Lock()
 
     def _path(self, key: str) -> Path:
-        return cache_dir() / self.namespace / f"{key}-{self.fingerprint}.json"
+        return cache_dir() / self.namespace / f"{key}-{self.fingerprint}{self.suffix}"
 
     def _lock(self, key: str) -> threading.Lock:
         with self._guard:
@@ -72,13 +74,34 @@ class JsonCache:
                 return self._memory[key]
             path = self._path(key)
             try:
-                value = json.loads(path.read_text())
+                value = self.decode(path.read_bytes())
             except (OSError, ValueError):
                 value = compute()
                 self._write(path, value)
             self._memory[key] = value
             return value
 
+    def _write(self, path: Path, value: Any) -> None:
+        write_atomically(path, self.encode(value))
+
     @staticmethod
-    def _write(path: Path, value: Any) -> None:
-        write_atomically(path, json.dumps(value).encode())
+    def decode(data: bytes) -> Any:
+        return json.loads(data)
+
+    @staticmethod
+    def encode(value: Any) -> bytes:
+        return json.dumps(value).encode()
+
+
+class BytesCache(JsonCache):
+    """Memory and disk cache of documents already encoded (JSON bytes, stored as they are)."""
+
+    @staticmethod
+    def decode(data: bytes) -> bytes:
+        if not data:
+            raise ValueError("an empty file is no document")
+        return data
+
+    @staticmethod
+    def encode(value: bytes) -> bytes:
+        return value

@@ -16,7 +16,7 @@ import math
 import threading
 import time
 from collections import OrderedDict
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import AbstractContextManager, ExitStack, contextmanager
 from typing import Any, Protocol
 
@@ -28,6 +28,7 @@ from app.numerics import limits, methods
 from app.numerics.errors import SimulationError
 from app.numerics.events import EventFunction, compile_events
 from app.numerics.methods import AUTO, METHODS, NONSTIFF
+from app.numerics.methods.scipy_ivp import scipy_integrate
 from app.numerics.observables import Observables, build, summarize
 from app.numerics.plan import plan
 from app.numerics.simulate import run
@@ -60,35 +61,57 @@ class SimulationInput(Protocol):
 
 
 class _Compiled:
-    """Numeric systems per scene id (or per generated source for user systems), per process."""
+    """Numeric systems per scene id (or per generated source for user systems), per process.
+
+    One lock per key: a request for one scene never waits while another scene's system is built
+    (by the warm-up thread or another request); two requests for the same scene build it once."""
 
     def __init__(self, size: int = 32):
         self.size = size
         self.items: OrderedDict[str, tuple[NumericSystem, Observables]] = OrderedDict()
-        self.lock = threading.Lock()
+        self.lock = threading.Lock()  # guards ``items`` and ``_building``, held only briefly
+        self._building: dict[str, threading.Lock] = {}
         self.build_seconds: dict[str, float] = {}
+
+    def _cached(self, key: str) -> tuple[NumericSystem, Observables] | None:
+        with self.lock:
+            if key in self.items:
+                self.items.move_to_end(key)
+                return self.items[key]
+            return None
 
     def get(
         self, key: str | None, d: Derivation, forces: Sequence[dict[str, Any]]
     ) -> tuple[NumericSystem, Observables]:
+        if key is None:
+            return self._build(None, d, forces)
+        found = self._cached(key)
+        if found is not None:
+            return found
         with self.lock:
-            if key is not None and key in self.items:
-                self.items.move_to_end(key)
-                return self.items[key]
-            start = time.perf_counter()
-            # a scene's generated sources come from the disk cache (keyed by the engine's, scenes' and
-            # numerics' source), so a new worker skips the code generation
-            sources = _SOURCES.get(key, lambda: generated_sources(d)) if key is not None else None
-            system = numeric_system(d, sources)
-            key = key or system.key
-            if key in self.items:
-                return self.items[key]
-            entry = (system, build(system, forces))
+            building = self._building.setdefault(key, threading.Lock())
+        with building:
+            return self._cached(key) or self._build(key, d, forces)
+
+    def _build(
+        self, key: str | None, d: Derivation, forces: Sequence[dict[str, Any]]
+    ) -> tuple[NumericSystem, Observables]:
+        start = time.perf_counter()
+        # a scene's generated sources come from the disk cache (keyed by the engine's, scenes' and
+        # numerics' source), so a new worker skips the code generation
+        sources = _SOURCES.get(key, lambda: generated_sources(d)) if key is not None else None
+        system = numeric_system(d, sources)
+        key = key or system.key
+        found = self._cached(key)
+        if found is not None:
+            return found
+        entry = (system, build(system, forces))
+        with self.lock:
             self.build_seconds[key] = time.perf_counter() - start
             self.items[key] = entry
             while len(self.items) > self.size:
                 self.items.popitem(last=False)
-            return entry
+        return entry
 
 
 _EVENTS: dict[str, list[EventFunction]] = {}  # per scene id: its terminal events, compiled once per process
@@ -344,26 +367,70 @@ def _finite(value: Any) -> Any:
     return value
 
 
-def warm_all() -> dict[str, float]:
+class _InFlight:
+    """Simulations running in this process: the warm-up thread gives way to them between its steps."""
+
+    def __init__(self) -> None:
+        self._count = 0
+        self._changed = threading.Condition()
+
+    @contextmanager
+    def serving(self) -> Iterator[None]:
+        with self._changed:
+            self._count += 1
+        try:
+            yield
+        finally:
+            with self._changed:
+                self._count -= 1
+                self._changed.notify_all()
+
+    def wait_quiet(self, timeout: float) -> bool:
+        """Wait until no simulation runs, at most ``timeout`` seconds; True when quiet."""
+        with self._changed:
+            return self._changed.wait_for(lambda: self._count == 0, timeout)
+
+
+IN_FLIGHT = _InFlight()
+# The longest the warm-up waits for quiet before its next step: under steady traffic it still advances.
+GIVE_WAY_SECONDS = 0.5
+
+
+def warm_all(give_way: Callable[[], object] = lambda: None) -> dict[str, float]:
     """Compile (or load from numba's disk cache) every kernel and every scene's right-hand sides.
 
     Run in the background at start-up and at image build (``python -m app.service.simulation``).
-    Order: every scene's numeric system, then ``auto``'s compiled default (what it picks most
-    often, and the error reference) with each scene's right-hand sides, then the other compiled
-    kernels; a method is used the moment it is ready.  Returns the seconds spent per item."""
+    Order: scipy.integrate (the fallback); then scene by scene (in the chapter's order), its
+    derivation and numeric system, then ``auto``'s compiled default (``NONSTIFF``: what it picks most
+    often, and the error reference) on it; then the other compiled kernels.  A method is used the
+    moment it is ready.  ``give_way`` runs between steps (the server's: wait while requests are being
+    served).  Returns the seconds spent per item."""
     from app.service.derivations import derivation, derivation_document
 
     spent: dict[str, float] = {}
+    # scipy first: it answers while the kernels load, and once imported here (under its lock) no kernel
+    # module that reads scipy's tables can be importing it half-way beside a request's fallback
     start = time.perf_counter()
-    systems = [
-        COMPILED.get(scene_id, derivation(scene_id), derivation_document(scene_id).get("constraint_forces") or [])[0]
-        for scene_id in SCENES
-    ]
-    spent["numeric systems"] = time.perf_counter() - start
+    scipy_integrate()
+    spent["scipy.integrate"] = time.perf_counter() - start
     first = METHODS[NONSTIFF]
-    for method in (first, *(m for m in METHODS.values() if m.compiled and m is not first)):
+    systems = []
+    for scene_id in SCENES:
+        give_way()
+        start = time.perf_counter()
+        forces = derivation_document(scene_id).get("constraint_forces") or []
+        system = COMPILED.get(scene_id, derivation(scene_id), forces)[0]
+        systems.append(system)
+        spent["numeric systems"] = spent.get("numeric systems", 0.0) + time.perf_counter() - start
+        give_way()
+        start = time.perf_counter()
+        if first.applicable(system) is None:
+            first.prepare(system)
+        spent[first.name] = spent.get(first.name, 0.0) + time.perf_counter() - start
+    for method in (m for m in METHODS.values() if m.compiled and m is not first):
         start = time.perf_counter()
         for system in systems:
+            give_way()
             if method.applicable(system) is None:
                 method.prepare(system)
         spent[method.name] = time.perf_counter() - start
@@ -371,17 +438,16 @@ def warm_all() -> dict[str, float]:
 
 
 def start_warming() -> threading.Thread:
-    """The server's start: answer at once (scipy while compiling), derive and compile in the background."""
-    from app.service import derivations
+    """The server's start: answer at once (scipy while compiling), load and compile in the background.
 
+    The thread gives way to the requests being served (``IN_FLIGHT``) between its steps, so that a
+    first request shares the processor with at most one step of it (one scene's system or one kernel)."""
     global ANSWER_WHILE_COMPILING
     ANSWER_WHILE_COMPILING = True
 
-    def warm() -> None:
-        derivations.warm_all()
-        warm_all()
-
-    thread = threading.Thread(target=warm, name="warm-up", daemon=True)
+    thread = threading.Thread(
+        target=warm_all, args=(lambda: IN_FLIGHT.wait_quiet(GIVE_WAY_SECONDS),), name="warm-up", daemon=True
+    )
     thread.start()
     return thread
 
@@ -390,8 +456,11 @@ def simulate_scene(scene_id: str, request: SimulationInput, gates: Gates = GATES
     from app.service.derivations import derivation, derivation_document, scene
 
     scene(scene_id)
-    forces = derivation_document(scene_id).get("constraint_forces") or []
-    return simulate_derivation(derivation(scene_id), request, constraint_forces=forces, scene_id=scene_id, gates=gates)
+    with IN_FLIGHT.serving():  # the warm-up thread waits meanwhile
+        forces = derivation_document(scene_id).get("constraint_forces") or []
+        return simulate_derivation(
+            derivation(scene_id), request, constraint_forces=forces, scene_id=scene_id, gates=gates
+        )
 
 
 if __name__ == "__main__":

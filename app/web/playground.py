@@ -21,6 +21,7 @@ from starlette.concurrency import run_in_threadpool
 
 from app.engine.parse import FUNCTIONS
 from app.numerics.methods import CHOICES
+from app.service.cache import BytesCache, source_fingerprint
 from app.service.user_checks import InvalidSystem, checked, spec_key
 from app.service.user_jobs import derive_job
 from app.service.user_systems import UserSystems
@@ -42,21 +43,41 @@ EXAMPLES = {
 }
 
 
-def warm_examples(service: UserSystems) -> threading.Thread:
-    """Derive the examples in the background at start-up, so that the first reader of each is answered at once.
+# The examples' derivation documents on disk (set-up fills them: python -m app.web.warm), keyed by the
+# engine's and the service's source, so a restarted server loads them instead of deriving them again.
+_EXAMPLES_CACHE = BytesCache("example-derivations", source_fingerprint("engine", "service"))
 
-    The derivation runs in this process (a thread, not the worker pool: nothing waits on it)
-    and its answer goes into the service's cache under the key the page asks for."""
+
+def example_derivations() -> dict[str, bytes]:
+    """Each example's derivation document by its cache key: from the disk cache, else derived here and stored."""
+    found = {}
+    for example in EXAMPLES.values():
+        user = checked(spec_of(form_of(example)))
+        found[spec_key(user)] = _EXAMPLES_CACHE.get(spec_key(user), lambda user=user: derive_job(user))
+    return found
+
+
+def load_examples(service: UserSystems) -> None:
+    """Put each example's derivation into the service's cache (``example_derivations``)."""
+    for key, document in example_derivations().items():
+        if service.derivations.get(key) is None:
+            service.derivations.put(key, document)
+
+
+def warm_examples(service: UserSystems, after: threading.Thread | None = None) -> threading.Thread:
+    """Load the examples in the background at start-up, so that the first reader of each is answered at once.
+
+    A derivation the disk cache lacks runs in this process (a thread, not the worker pool: nothing
+    waits on it), after ``after`` (the scenes' warm-up) has finished, so it never slows a first
+    simulation down; its answer goes into the service's cache under the key the page asks for."""
 
     def warm() -> None:
-        for example in EXAMPLES.values():
-            user = checked(spec_of(form_of(example)))
-            key = spec_key(user)
-            if service.derivations.get(key) is None:
-                try:
-                    service.derivations.put(key, derive_job(user))
-                except Exception:  # noqa: BLE001 - warming is optional: the page derives on demand
-                    return
+        if after is not None:
+            after.join()
+        try:
+            load_examples(service)
+        except Exception:  # noqa: BLE001 - warming is optional: the page derives on demand
+            return
 
     thread = threading.Thread(target=warm, name="warm-examples", daemon=True)
     thread.start()

@@ -9,21 +9,18 @@ app.web.slow_clients:HeaderDeadline``) closes a connection whose request
 headers are not complete ``header_seconds`` after its first byte (or after it
 opened).  Bodies have their own deadline in app/web/limits.py.
 
-``python -m app.web.slow_clients`` prints the uvicorn options that
-scripts/serve.sh, scripts/run.sh and the Dockerfile pass, from ``settings()``.
+The uvicorn options that select it (and the keep-alive and connection cap) are
+printed by ``python -m app.web.server_options``.
 """
 
 from __future__ import annotations
 
 import asyncio
-import sys
 from typing import Any
 
 from uvicorn.protocols.http.auto import AutoHTTPProtocol
 
 from app.settings import settings
-
-KEEP_ALIVE_SECONDS = 75  # many students behind one address reuse their connections
 
 
 class HeaderDeadline(AutoHTTPProtocol):  # type: ignore[misc, valid-type]
@@ -61,19 +58,3 @@ class HeaderDeadline(AutoHTTPProtocol):  # type: ignore[misc, valid-type]
             self._deadline.cancel()
             self._deadline = None
         super().connection_lost(exc)
-
-
-def options() -> list[str]:
-    """uvicorn's command-line options for this machine's settings."""
-    s = settings()
-    return [
-        "--workers", str(s.web_process_count),
-        "--timeout-keep-alive", str(KEEP_ALIVE_SECONDS),
-        "--limit-concurrency", str(s.connections),
-        "--http", "app.web.slow_clients:HeaderDeadline",
-        "--timeout-graceful-shutdown", "20",
-    ]  # fmt: skip
-
-
-if __name__ == "__main__":
-    sys.stdout.write(" ".join(options()) + "\n")

@@ -11,7 +11,7 @@ def test_dockerfile_is_offline_non_root_and_healthchecked():
     text = (ROOT / "Dockerfile").read_text()
     assert "HEALTHCHECK" in text and "/healthz" in text
     assert "USER lagrange" in text
-    assert "python -m app.service.warm" in text
+    assert "python -m app.web.warm" in text
     # node only in the asset stage
     final = text[text.rindex("\nFROM ") :]
     assert "npm" not in final and "nodejs" not in final
@@ -31,8 +31,8 @@ def test_serve_script_takes_port_and_workers_from_the_environment():
 
 @pytest.mark.parametrize("script", ["serve.sh", "run.sh"])
 def test_the_scripts_bound_slow_clients_with_the_settings_options(script):
-    # keep-alive, connection cap and header deadline: app/web/slow_clients.py, one home for both scripts
-    assert "-m app.web.slow_clients" in (ROOT / "scripts" / script).read_text()
+    # keep-alive, connection cap and header deadline: app/web/server_options.py, one home for both scripts
+    assert "-m app.web.server_options" in (ROOT / "scripts" / script).read_text()
 
 
 def _mebibytes(quantity: str) -> int:

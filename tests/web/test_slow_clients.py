@@ -9,7 +9,8 @@ import uvicorn
 from starlette.responses import PlainTextResponse
 
 from app.web.limits import BodyLimit
-from app.web.slow_clients import HeaderDeadline, options
+from app.web.server_options import options
+from app.web.slow_clients import HeaderDeadline
 
 SECONDS = 0.5
 

@@ -11,12 +11,24 @@ dense output; a state outside its bound ends the run (a runaway).
 
 from __future__ import annotations
 
+import importlib
+import threading
 import time
+from types import ModuleType
 
 import numpy as np
-from scipy.integrate import BDF, DOP853, LSODA, RK45, OdeSolver, Radau
 
 from app.numerics.methods.base import Method, Problem, Trajectory, outside_names
+
+_IMPORTING = threading.Lock()
+
+
+def scipy_integrate() -> ModuleType:
+    """scipy.integrate, imported on first use (0.5-1 s, which a server answering from its compiled
+    kernels need not pay at start) and by one thread at a time: two threads importing it at once can
+    each meet the other's half-initialised submodules and fail."""
+    with _IMPORTING:
+        return importlib.import_module("scipy.integrate")
 
 
 class _OutOfBudget(Exception):
@@ -31,7 +43,10 @@ class ScipyMethod(Method):
     """A scipy ``OdeSolver`` class driven step by step; a subclass names the solver and describes it."""
 
     compiled = False
-    solver: type[OdeSolver]
+    solver: str  # the OdeSolver class's name in scipy.integrate
+
+    def solver_class(self) -> type:
+        return getattr(scipy_integrate(), self.solver)
 
     def _run(self, problem: Problem, **options) -> Trajectory:
         rhs = problem.system.python["rhs"]
@@ -64,7 +79,7 @@ class ScipyMethod(Method):
             if self.implicit and "jac" in problem.system.python:
                 # the engine's own Jacobian (differentiated, not simplified) instead of finite differences
                 options["jac"] = lambda t, y: problem.system.jacobian(t, y, k)
-            solver = self.solver(
+            solver = self.solver_class()(
                 fun, t_out[0], problem.y0, problem.t_end, rtol=problem.rtol, atol=problem.atol, **options
             )
             while solver.status == "running":
@@ -114,7 +129,7 @@ class ScipyMethod(Method):
 
 class ScipyDOP853(ScipyMethod):
     name = "DOP853"
-    solver = DOP853
+    solver = "DOP853"
     family = "explicit"
     order = 8
     summary = "scipy's Dormand-Prince 8(5,3), Python step loop"
@@ -122,7 +137,7 @@ class ScipyDOP853(ScipyMethod):
 
 class ScipyRK45(ScipyMethod):
     name = "RK45"
-    solver = RK45
+    solver = "RK45"
     family = "explicit"
     order = 5
     summary = "scipy's Dormand-Prince 5(4), Python step loop"
@@ -130,7 +145,7 @@ class ScipyRK45(ScipyMethod):
 
 class ScipyRadau(ScipyMethod):
     name = "Radau"
-    solver = Radau
+    solver = "Radau"
     family = "implicit"
     implicit = True
     order = 5
@@ -139,7 +154,7 @@ class ScipyRadau(ScipyMethod):
 
 class ScipyBDF(ScipyMethod):
     name = "BDF"
-    solver = BDF
+    solver = "BDF"
     family = "implicit"
     implicit = True
     order = 5
@@ -148,7 +163,7 @@ class ScipyBDF(ScipyMethod):
 
 class ScipyLSODA(ScipyMethod):
     name = "LSODA"
-    solver = LSODA
+    solver = "LSODA"
     family = "switching"
     implicit = True
     order = 12

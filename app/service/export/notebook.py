@@ -9,9 +9,8 @@ energy.  It needs ``pip install sympy scipy matplotlib`` and nothing of this pro
 
 from __future__ import annotations
 
-import nbformat
-from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook
-
+# nbformat (with jsonschema, 0.1-0.2 s) is imported by the functions that write a notebook, not when
+# the server starts.
 from app.service.export.code import (
     ACCELERATION_LINES,
     DT_LINES,
@@ -70,10 +69,14 @@ CHECK_LINES = [
 
 
 def _code(*lines: str):
+    from nbformat.v4 import new_code_cell
+
     return new_code_cell("\n".join(lines).strip("\n"))
 
 
 def _md(*lines: str):
+    from nbformat.v4 import new_markdown_cell
+
     return new_markdown_cell("\n".join(lines))
 
 
@@ -162,6 +165,9 @@ def notebook(source: Source) -> str:
     cells.append(_md(*_conserved(source)))
 
     cells += _simulation(source, naming, "E" if m.T is not None else "h")
+    import nbformat
+    from nbformat.v4 import new_notebook
+
     for i, cell in enumerate(cells):
         cell.id = f"cell-{i}"  # fixed ids: the same derivation always gives the same file
     book = new_notebook(

@@ -1,0 +1,117 @@
+"""The server's start: what the web process imports, and a warm-up that gives way to requests."""
+
+import os
+import subprocess
+import sys
+import threading
+from pathlib import Path
+
+from app.numerics.methods import NONSTIFF
+from app.service import simulation
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def test_the_web_process_imports_no_integrator_or_units_library_at_start():
+    """scipy.integrate (the scipy fallback and methods), sympy.physics.units (simplify's first call) and
+    nbformat (notebook exports) are imported where first used, not by app.main."""
+    code = "import sys, app.main; print(' '.join(m for m in ('scipy.integrate', 'sympy.physics.units', 'nbformat') if m in sys.modules))"
+    env = {**os.environ, "LAGRANGE_WARM": "0", "PYTHONPATH": str(ROOT)}
+    out = subprocess.run([sys.executable, "-c", code], env=env, cwd=ROOT, capture_output=True, text=True, check=True)
+    assert out.stdout.split() == []
+
+
+class FakeMethod:
+    """A compiled method that records what the warm-up prepares, in order."""
+
+    compiled = True
+
+    def __init__(self, name, log):
+        self.name, self.log = name, log
+
+    def applicable(self, system):
+        return None
+
+    def prepare(self, system):
+        self.log.append(f"{self.name}:{system.coordinates}")
+
+
+def fake_methods(monkeypatch, log):
+    methods = {NONSTIFF: FakeMethod("first", log), "other": FakeMethod("other", log)}
+    monkeypatch.setattr(simulation, "METHODS", methods)
+    monkeypatch.setattr(simulation, "SCENES", {k: simulation.SCENES[k] for k in ("simple-pendulum", "pulley")})
+
+
+def test_warm_up_goes_scene_by_scene_with_the_first_method_and_gives_way_between_steps(monkeypatch):
+    log: list[str] = []
+    fake_methods(monkeypatch, log)
+    spent = simulation.warm_all(give_way=lambda: log.append("give way"))
+    assert log == [
+        "give way",  # before the simple pendulum's system
+        "give way",
+        "first:('theta',)",
+        "give way",  # before the pulley's system
+        "give way",
+        "first:('y1', 'y2')",
+        "give way",
+        "other:('theta',)",
+        "give way",
+        "other:('y1', 'y2')",
+    ]
+    assert set(spent) == {"scipy.integrate", "numeric systems", "first", "other"}
+
+
+def test_the_warm_up_waits_while_a_simulation_is_being_served(monkeypatch):
+    log: list[str] = []
+    fake_methods(monkeypatch, log)
+    simulation.warm_all()  # the systems are built: what is left to do is preparing the methods
+    log.clear()
+    gate = simulation.IN_FLIGHT
+    with gate.serving():
+        warming = threading.Thread(target=simulation.warm_all, args=(lambda: gate.wait_quiet(30.0),))
+        warming.start()
+        warming.join(timeout=0.5)
+        assert warming.is_alive() and log == []  # waiting for the request to finish
+    warming.join(timeout=30.0)
+    assert not warming.is_alive() and len(log) == 4
+    assert gate.wait_quiet(0.0)
+
+
+def test_a_scene_simulation_counts_as_in_flight(monkeypatch):
+    seen = []
+    original = simulation.simulate_derivation
+
+    def spy(*args, **kwargs):
+        seen.append(simulation.IN_FLIGHT.wait_quiet(0.0))
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(simulation, "simulate_derivation", spy)
+    request = {"parameters": {}, "initial": {}, "t_end": 0.5, "method": "auto", "rtol": None, "atol": None}
+    simulation.simulate_scene("simple-pendulum", type("R", (), {**request, "samples": 10})())
+    assert seen == [False] and simulation.IN_FLIGHT.wait_quiet(0.0)
+
+
+def test_a_scene_does_not_wait_while_another_scene_is_being_built(monkeypatch):
+    from app.service.derivations import derivation
+
+    compiled = simulation._Compiled()
+    release = threading.Event()
+    original = simulation.numeric_system
+    slow, quick = derivation("simple-pendulum"), derivation("pulley")
+
+    def numeric_system(d, sources=None):
+        if d is slow:
+            assert release.wait(30.0)
+        return original(d, sources)
+
+    monkeypatch.setattr(simulation, "numeric_system", numeric_system)
+    building = threading.Thread(target=compiled.get, args=("simple-pendulum", slow, []))
+    building.start()
+    try:
+        system, _ = compiled.get("pulley", quick, [])  # while the pendulum's build is held
+        assert system.coordinates == ("y1", "y2") and building.is_alive()
+    finally:
+        release.set()
+        building.join(30.0)
+    assert compiled.get("simple-pendulum", slow, [])[0].coordinates == ("theta",)
+    assert list(compiled.items) == ["pulley", "simple-pendulum"]

@@ -1,0 +1,43 @@
+"""The playground examples at start: loaded from the disk cache set-up filled, derived only when it lacks them."""
+
+import threading
+
+from app.service import cache, user_systems
+from app.service.cache import BytesCache
+from app.web import playground
+
+
+def test_examples_are_derived_once_then_loaded_from_disk(monkeypatch, tmp_path):
+    monkeypatch.setattr(cache, "cache_dir", lambda: tmp_path)
+    derived = []
+
+    def derive(spec):
+        derived.append(spec)
+        return b'{"derived": %d}' % len(derived)
+
+    def start():
+        """A new process: empty memory caches, the same disk."""
+        service = user_systems.UserSystems(pool=object())
+        monkeypatch.setattr(playground, "_EXAMPLES_CACHE", BytesCache("example-derivations", "test"))
+        monkeypatch.setattr(playground, "derive_job", derive)
+        playground.load_examples(service)
+        return [service.derivations.get(key) for key in keys]
+
+    keys = [
+        playground.spec_key(playground.checked(playground.spec_of(playground.form_of(e))))
+        for e in playground.EXAMPLES.values()
+    ]
+    first = start()
+    assert len(derived) == len(playground.EXAMPLES) and all(first)
+    assert len(list((tmp_path / "example-derivations").iterdir())) == len(playground.EXAMPLES)
+    again = start()  # a restart: nothing derived, the same documents
+    assert len(derived) == len(playground.EXAMPLES) and again == first
+
+
+def test_examples_wait_for_the_scenes_warm_up(monkeypatch):
+    order = []
+    monkeypatch.setattr(playground, "load_examples", lambda service: order.append("examples"))
+    scenes = threading.Thread(target=lambda: (threading.Event().wait(0.2), order.append("scenes")))
+    scenes.start()
+    playground.warm_examples(object(), after=scenes).join(timeout=10)
+    assert order == ["scenes", "examples"]
