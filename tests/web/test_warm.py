@@ -17,7 +17,7 @@ def test_examples_are_derived_once_then_loaded_from_disk(monkeypatch, tmp_path):
 
     def start():
         """A new process: empty memory caches, the same disk."""
-        service = user_systems.UserSystems(pool=object())
+        service = user_systems.UserSystems(pool=object(), gate=object())
         monkeypatch.setattr(playground, "_EXAMPLES_CACHE", BytesCache("example-derivations", "test"))
         monkeypatch.setattr(playground, "derive_job", derive)
         playground.load_examples(service)
