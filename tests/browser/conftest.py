@@ -1,14 +1,10 @@
 """Fixtures for real-browser tests: the app served by uvicorn in a thread, and Debian's headless Chromium.
 
 ``live_server`` (session) yields the base URL of the app on a free loopback
-port.  ``page`` is a new Playwright page (``page.console_errors`` collects
-console errors and uncaught exceptions) of one browser shared by the package's
-tests (``/usr/bin/chromium`` through ``executable_path``; never ``playwright
-install``).  Its context is shared too, so the second page on a worker finds
-KaTeX and plotly.js in the HTTP cache and compiled in V8's code cache; what a
-test could leave for the next (cookies, local storage) is cleared after each
-test.  ``fresh_page`` has a context of its own, for tests that watch every
-request a first visit makes.  Screenshots go to ``test-artifacts/``.
+port.  ``page`` is a Playwright page in a fresh context of one browser shared
+by the package's tests (``/usr/bin/chromium`` through ``executable_path``;
+never ``playwright install``); ``page.console_errors`` collects console errors
+and uncaught exceptions.  Screenshots go to ``test-artifacts/``.
 """
 
 from __future__ import annotations
@@ -63,78 +59,14 @@ def browser():
         chromium.close()
 
 
-class SharedContext:
-    """One browser context reused by consecutive tests, given back to the next test as if new.
-
-    After a test its cookies (the server's client identity) are cleared; if the test left anything in an
-    origin's storage (practice answers in localStorage), the context is closed and the next test gets a new one.
-    """
-
-    def __init__(self, browser, **options):
-        self.browser, self.options, self.context = browser, options, None
-
-    def new_page(self):
-        if self.context is None:
-            self.context = self.browser.new_context(**self.options)
-        page = self.context.new_page()
-        page.set_default_timeout(60_000)
-        return page
-
-    def release(self, page) -> None:
-        page.close()
-        if any(origin.get("localStorage") for origin in self.context.storage_state()["origins"]):
-            self.close()
-        else:
-            self.context.clear_cookies()
-
-    def close(self) -> None:
-        if self.context is not None:
-            self.context.close()
-            self.context = None
-
-
-def watch_errors(page):
+@pytest.fixture
+def page(browser, live_server):
+    context = browser.new_context(base_url=live_server, viewport={"width": 1280, "height": 900})
+    page = context.new_page()
+    page.set_default_timeout(60_000)
     page.console_errors = []
     page.on("console", lambda msg: page.console_errors.append(msg.text) if msg.type == "error" else None)
     page.on("pageerror", lambda exc: page.console_errors.append(f"uncaught: {exc}"))
-    return page
-
-
-@pytest.fixture(scope="package")
-def desktop(browser, live_server) -> Iterator[SharedContext]:
-    shared = SharedContext(browser, base_url=live_server, viewport={"width": 1280, "height": 900})
-    yield shared
-    shared.close()
-
-
-@pytest.fixture(scope="package")
-def handheld(browser, live_server) -> Iterator[SharedContext]:
-    shared = SharedContext(
-        browser, base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True
-    )
-    yield shared
-    shared.close()
-
-
-@pytest.fixture
-def page(desktop):
-    page = watch_errors(desktop.new_page())
-    yield page
-    desktop.release(page)
-
-
-@pytest.fixture
-def phone(handheld):
-    page = handheld.new_page()
-    yield page
-    handheld.release(page)
-
-
-@pytest.fixture
-def fresh_page(browser, live_server):
-    context = browser.new_context(base_url=live_server, viewport={"width": 1280, "height": 900})
-    page = watch_errors(context.new_page())
-    page.set_default_timeout(60_000)
     yield page
     context.close()
 

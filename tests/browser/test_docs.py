@@ -6,8 +6,7 @@ import pytest
 
 
 @pytest.mark.parametrize("path", ["/docs", "/scenes/simple-pendulum", "/playground"])
-def test_no_request_leaves_the_server_and_the_policy_blocks_nothing(fresh_page, path):
-    page = fresh_page
+def test_no_request_leaves_the_server_and_the_policy_blocks_nothing(page, path):
     requested = []
     page.on("request", lambda request: requested.append(request.url))
     page.goto(path)

@@ -14,6 +14,17 @@ READY = '#run-status[data-state="ready"]'
 PAGES = ["/", "/playground", *(f"/scenes/{s}" for s in sorted(SCENES))]
 
 
+@pytest.fixture
+def phone(browser, live_server):
+    context = browser.new_context(
+        base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True
+    )
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    yield page
+    context.close()
+
+
 @pytest.mark.parametrize("path", PAGES)
 def test_no_horizontal_overflow_on_a_phone(phone, artifacts, path):
     phone.goto(path)
@@ -52,8 +63,7 @@ def test_a_swipe_on_a_plot_scrolls_the_page(phone):
     assert phone.evaluate("(el) => el.layout.xaxis.autorange", plot.element_handle()) is True
 
 
-def test_nothing_leaves_the_machine_and_nothing_offers_to_upload(fresh_page, live_server):
-    page = fresh_page
+def test_nothing_leaves_the_machine_and_nothing_offers_to_upload(page, live_server):
     hosts = set()
     page.on("request", lambda request: hosts.add(urlsplit(request.url).hostname))
     page.set_viewport_size({"width": 1280, "height": 2400})
