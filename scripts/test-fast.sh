@@ -3,4 +3,5 @@
 # through scripts/test.sh).  Arguments go to pytest: scripts/test-fast.sh tests/engine -x
 set -euo pipefail
 cd "$(dirname "$0")/.."
-exec "${PYTHON:-.venv/bin/python}" -m pytest -m "not slow and not browser" "$@"
+# one worker per core, as scripts/test.sh (TEST_WORKERS=0: in this process, e.g. for a debugger)
+exec "${PYTHON:-.venv/bin/python}" -m pytest -m "not slow and not browser" -n "${TEST_WORKERS:-auto}" --dist worksteal "$@"

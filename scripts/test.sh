@@ -14,5 +14,7 @@ if ! command -v pdflatex >/dev/null; then
     apt-get install -y -qq --no-install-recommends texlive-latex-base texlive-latex-recommended >/dev/null
 fi
 scripts/lint.sh
-# set-up warmed the caches (python -m app.web.warm): the tests never compile kernels meanwhile
-.venv/bin/python -m pytest "$@"
+# set-up warmed the caches (python -m app.web.warm): the tests never compile kernels meanwhile.
+# One pytest worker per core (pytest-xdist; TEST_WORKERS=0 runs in this process); worksteal hands the
+# tests left to an idle worker, so one long module does not keep the other core waiting.
+.venv/bin/python -m pytest -n "${TEST_WORKERS:-auto}" --dist worksteal "$@"

@@ -24,3 +24,20 @@ if os.environ.get("CI"):
 def client():
     with TestClient(app) as c:
         yield c
+
+
+@pytest.fixture
+def fresh_mint_budget():
+    """Sessions minted by a gate of their own, so the per-address budget (mint_per_minute) starts untouched.
+
+    Every in-process request comes from the address "testclient", and many tests clear their cookies: how much
+    of the shared gate's budget is left would depend on how many tests ran in the last minute, and how fast.
+    The gate signs with the same secret as the app's, so the sessions it mints verify everywhere.
+    """
+    from app.service.fairness import Fairness
+    from app.web.deps import fairness_gate
+
+    gate = Fairness(capacity=4)
+    app.dependency_overrides[fairness_gate] = lambda: gate
+    yield gate
+    app.dependency_overrides.pop(fairness_gate, None)

@@ -16,9 +16,15 @@ READY = '#run-status[data-state="ready"]'
 
 
 def painted_events(page) -> None:
+    # the phase panel's preview lines as each paint is announced: read in a microtask, after the panels in
+    # view have drawn (also in microtasks) and before the server's run can replace the preview
     page.evaluate(
-        """window.painted = []; document.addEventListener('lagrange:painted',
-             (e) => window.painted.push(e.detail.source))"""
+        """window.painted = []; window.lines = {}; document.addEventListener('lagrange:painted', (e) => {
+             window.painted.push(e.detail.source);
+             queueMicrotask(() => {
+               window.lines[e.detail.source] ??= document.querySelector('#panel-phase canvas.plot-preview')?.dataset.lines;
+             });
+           })"""
     )
 
 
@@ -71,8 +77,7 @@ def test_an_over_the_top_pendulum_has_a_separatrix_and_wrapped_angles(page):
     painted_events(page)
     page.fill("#ctl-theta_dot", "3")
     page.wait_for_function("window.painted.includes('preview')")
-    lines = page.evaluate("document.querySelector('#panel-phase canvas.plot-preview')?.dataset.lines")
-    assert lines == "3"
+    assert page.evaluate("window.lines.preview") == "3"
     page.wait_for_function("window.painted.includes('server')")
     page.wait_for_function("/below the separatrix/.test(document.querySelector('#panel-phase .readout').textContent)")
     assert page.console_errors == []

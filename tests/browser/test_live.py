@@ -94,9 +94,16 @@ def test_the_derivation_reads_without_javascript(browser, live_server):
 
 
 def painted_events(page) -> None:
+    # what the page shows at the moment each paint is announced (the server's run may follow the preview
+    # within milliseconds, before the test could look)
     page.evaluate(
-        """window.painted = []; document.addEventListener('lagrange:painted',
-             (e) => window.painted.push(e.detail.source))"""
+        """window.painted = []; window.shown = {}; document.addEventListener('lagrange:painted', (e) => {
+             window.painted.push(e.detail.source);
+             window.shown[e.detail.source] ??= {
+               source: document.getElementById('simulation')?.dataset.source,
+               bodies: document.querySelector('[data-panel=animation-2d] canvas')?.dataset.bodies,
+               message: document.querySelector('#run-status .message')?.textContent};
+           })"""
     )
 
 
@@ -108,9 +115,10 @@ def test_an_input_is_painted_first_by_the_preview_then_by_the_server(page):
     page.focus("#ctl-theta-range")
     page.keyboard.press("ArrowLeft")
     page.wait_for_function("window.painted.includes('preview')")
-    assert page.get_attribute("#simulation", "data-source") == "preview"
-    assert page.evaluate("document.querySelector('[data-panel=animation-2d] canvas').dataset.bodies") != start
-    assert page.inner_text("#run-status .message").startswith("Preview:")
+    preview = page.evaluate("window.shown.preview")
+    assert preview["source"] == "preview"
+    assert preview["bodies"] != start
+    assert preview["message"].startswith("Preview:")
     page.wait_for_function("window.painted.includes('server')")
     page.wait_for_selector(READY, state="attached")
     assert page.get_attribute("#simulation", "data-source") == "server"

@@ -14,6 +14,8 @@ from app.engine.modes import NEUTRAL, STABLE, UNSTABLE, defaults, normal_modes
 from app.numerics.simulate import simulate
 from app.numerics.system import numeric_system
 from app.scenes import SCENES
+from tests.cases import case_list
+from tests.engine import systems
 from tests.engine.systems import TEST_SYSTEMS
 from tests.reference import lagranges_method
 
@@ -61,7 +63,13 @@ def numbers(matrix, values):
     return np.array(matrix.xreplace(subs).evalf(), dtype=float)
 
 
-EQUILIBRIA = [(name, i) for name in sorted(SYSTEMS) for i, e in enumerate(modes(name).equilibria) if not e.momenta]
+# (system, equilibrium) for each equilibrium the engine finds (the list kept on disk between runs: tests/cases.py)
+EQUILIBRIA = case_list(
+    "modes-equilibria",
+    lambda: [(name, i) for name in sorted(SYSTEMS) for i, e in enumerate(modes(name).equilibria) if not e.momenta],
+    __file__,
+    systems.__file__,
+)
 
 
 def test_every_system_with_a_fixed_point_has_one():
@@ -193,7 +201,9 @@ def _small_runs():
 
 
 @pytest.mark.slow  # compiles each system's right-hand side on first use
-@pytest.mark.parametrize(("name", "index", "mode"), _small_runs())
+@pytest.mark.parametrize(
+    ("name", "index", "mode"), case_list("modes-small-runs", _small_runs, __file__, systems.__file__)
+)
 def test_small_amplitude_runs_oscillate_at_the_predicted_frequency(name, index, mode):
     d = derived(name)
     e = modes(name).equilibria[index]

@@ -27,6 +27,9 @@ from app.engine.derive import Derivation, derive
 from app.numerics.methods import METHODS
 from app.numerics.simulate import simulate
 from app.numerics.system import numeric_system
+from tests import reference as reference_module
+from tests.cases import stored
+from tests.engine import unseen_systems
 from tests.engine.scaling import check_scaled_accelerations, factors_for, scaling_cases
 from tests.engine.unseen_systems import UNSEEN
 from tests.reference import lagranges_method
@@ -55,8 +58,8 @@ def ours(name: str) -> Derivation:
     return derive(UNSEEN[name].system)
 
 
-@cache
-def reference(name: str) -> Reference:
+def reference_expressions(name: str) -> dict[str, str | None]:
+    """M, forcing + Q, momenta, h, E (None for an L-only system) and L from LagrangesMethod, as ``srepr``."""
     system = UNSEEN[name].system
     lm, qs, read = lagranges_method(system)
     t = me.dynamicsymbols._t
@@ -75,15 +78,30 @@ def reference(name: str) -> Reference:
         # E = T + U with T = L + U
         U = plain(read(system.potential))
         energy = L + 2 * U
+    found = {"M": plain(lm.mass_matrix), "forcing": plain(lm.forcing) + plain(Q), "momenta": sp.Matrix(p)}
+    found.update({"h": h, "energy": energy, "L": L})
+    return {key: None if e is None else sp.srepr(e) for key, e in found.items()}
+
+
+@cache
+def reference(name: str) -> Reference:
+    # LagrangesMethod's results are kept on disk between runs, keyed by this file's and the reference's source
+    # (tests/cases.py): it is the slow half of the independent route and never changes on its own
+    sources = (__file__, reference_module.__file__, unseen_systems.__file__)
+    found = stored(f"unseen-reference-{name}", lambda: reference_expressions(name), sources, ("scenes",))
+    e = {key: None if text is None else sp.sympify(text) for key, text in found.items()}
+    system = UNSEEN[name].system
+    plain_q = tuple(sp.Symbol(n, real=True) for n in system.coordinates)
+    plain_v = tuple(sp.Symbol(f"{n}_dot", real=True) for n in system.coordinates)
     args = [sp.Symbol("t", real=True), *plain_q, *plain_v, *(sp.Symbol(p.name, real=True) for p in system.parameters)]
     f = lambda e: sp.lambdify(args, e, modules="numpy", cse=True)  # noqa: E731
     return Reference(
-        f(plain(lm.mass_matrix)),
-        f(plain(lm.forcing) + plain(Q)),
-        f(sp.Matrix(p)),
-        f(h),
-        f(energy) if energy is not None else None,
-        L,
+        f(e["M"]),
+        f(e["forcing"]),
+        f(e["momenta"]),
+        f(e["h"]),
+        f(e["energy"]) if e["energy"] is not None else None,
+        e["L"],
         plain_q,
     )
 

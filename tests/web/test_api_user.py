@@ -98,6 +98,7 @@ def test_parameters_given_by_name_default_to_one(client):
     assert doc["parameters"]["m"]["default"] == 1.0
 
 
+@pytest.mark.usefixtures("fresh_mint_budget")
 def test_a_session_cookie_is_issued_and_kept(client):
     client.cookies.clear()
     first = client.post("/api/derive", json=SPINNING_HOOP)

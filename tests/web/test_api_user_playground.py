@@ -128,6 +128,7 @@ def test_an_overlong_address_is_refused(client):
     assert response.status_code == 422 and "longer than" in response.text
 
 
+@pytest.mark.usefixtures("fresh_mint_budget")
 def test_the_page_issues_a_session(client):
     client.cookies.clear()
     response = client.get("/playground?new")

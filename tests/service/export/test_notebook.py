@@ -2,6 +2,9 @@
 
 import nbformat
 import pytest
+from jupyter_client.manager import AsyncKernelManager
+from jupyter_client.utils import run_sync
+from nbclient import NotebookClient
 
 from tests.service.export.common import CASES, HOSTILE_TEXT, exported
 
@@ -40,13 +43,37 @@ def test_typed_prose_reaches_markdown_escaped_and_code_not_at_all():
     assert "$\\input" not in markdown and "<script>" not in markdown
 
 
+@pytest.fixture(scope="module")
+def kernel():
+    """One IPython kernel for the module's notebooks (a new kernel per notebook re-imports numpy, scipy, sympy and
+    matplotlib, most of a notebook's time)."""
+    km = AsyncKernelManager(kernel_name="python3")
+    run_sync(km.start_kernel)()
+    yield km
+    run_sync(km.shutdown_kernel)(now=True)
+
+
+def run_in_a_clean_namespace(book, km) -> None:
+    """Run every cell of the notebook in order, in the shared kernel emptied first by ``%reset -f``.
+
+    The notebook sees no name a previous notebook defined, so it runs top to bottom on its own; only modules
+    already imported (and their caches) are shared, as in any kernel after its first import.
+    """
+    reset = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("%reset -f")])
+    for notebook in (reset, book):
+        client = NotebookClient(notebook, km=km, timeout=180)
+        try:
+            client.execute()
+        finally:
+            if client.kc is not None:
+                client.kc.stop_channels()
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("case", CASES)
-def test_the_notebook_runs_top_to_bottom_and_agrees_with_the_engine(case):
-    from nbclient import NotebookClient
-
+def test_the_notebook_runs_top_to_bottom_and_agrees_with_the_engine(case, kernel):
     book = cells(case)
-    NotebookClient(book, timeout=180, kernel_name="python3").execute()
+    run_in_a_clean_namespace(book, kernel)
     printed = [
         o.get("text", "") for c in book.cells if c.cell_type == "code" for o in c.outputs if o.output_type == "stream"
     ]

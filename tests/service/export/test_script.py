@@ -2,6 +2,7 @@
 
 import ast
 import json
+import select
 import subprocess
 import sys
 
@@ -36,18 +37,72 @@ def test_nothing_typed_reaches_the_script_but_checked_names():
     assert "exec(" not in script and "print(" in script.splitlines()[-1]
 
 
-def run(script: str, tmp_path) -> dict:
-    path = tmp_path / "exported.py"
-    path.write_text(script)
-    done = subprocess.run([sys.executable, str(path)], capture_output=True, text=True, timeout=120, cwd=tmp_path)
-    assert done.returncode == 0, done.stderr[-2000:]
-    return json.loads(done.stdout.strip().splitlines()[-1])
+# Runs each script it is sent (a path per line) as __main__ in a namespace of its own, and answers with one JSON
+# line: what the script printed, and its traceback if it failed.
+RUNNER = """
+import contextlib, io, json, runpy, sys, traceback
+for path in sys.stdin:
+    printed, error = io.StringIO(), None
+    try:
+        with contextlib.redirect_stdout(printed):
+            runpy.run_path(path.strip(), run_name="__main__")
+    except SystemExit as done:
+        if done.code not in (None, 0):
+            error = f"exit status {done.code}"
+    except BaseException:
+        error = traceback.format_exc()
+    print(json.dumps({"stdout": printed.getvalue(), "error": error}), flush=True)
+"""
+
+
+class ScriptRunner:
+    """One Python process that runs the exported scripts one after another.
+
+    A process per script spends most of its time importing numpy, scipy and sympy; here each script still runs
+    top to bottom as __main__ with nothing but its own names, only the imported modules are shared.
+    """
+
+    def __init__(self, folder):
+        self.folder = folder
+        self.start()
+
+    def start(self) -> None:
+        self.process = subprocess.Popen(
+            [sys.executable, "-c", RUNNER], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, cwd=self.folder
+        )
+
+    def run(self, name: str, script: str, timeout: float = 120) -> dict:
+        path = self.folder / f"{name}.py"
+        path.write_text(script)
+        self.process.stdin.write(f"{path}\n")
+        self.process.stdin.flush()
+        ready, _, _ = select.select([self.process.stdout], [], [], timeout)
+        if not ready:
+            self.close()
+            self.start()  # the next script gets a process that is not busy with this one
+            raise AssertionError(f"the script ran for more than {timeout} s")
+        answer = json.loads(self.process.stdout.readline())
+        assert answer["error"] is None, answer["error"][-2000:]
+        return json.loads(answer["stdout"].strip().splitlines()[-1])
+
+    def close(self) -> None:
+        self.process.kill()
+        self.process.wait()
+        self.process.stdin.close()
+        self.process.stdout.close()
+
+
+@pytest.fixture(scope="module")
+def runner(tmp_path_factory):
+    scripts = ScriptRunner(tmp_path_factory.mktemp("scripts"))
+    yield scripts
+    scripts.close()
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("case", CASES)
-def test_the_script_lands_within_1e_6_of_the_apps_own_simulation(case, tmp_path):
-    printed = run(exported(case, "py"), tmp_path)
+def test_the_script_lands_within_1e_6_of_the_apps_own_simulation(case, runner):
+    printed = runner.run(case, exported(case, "py"))
     t_end, state = app_end_state(case)
     assert printed["t"] == pytest.approx(t_end, rel=1e-9, abs=1e-12)  # t_end, or where a terminal event ends it
     assert set(printed["state"]) == set(state)
