@@ -9,6 +9,7 @@ from typing import Any
 from fastapi import FastAPI
 
 from app.service import simulation
+from app.service.memory import freeze_when_done
 from app.service.services import Services
 from app.settings import settings
 from app.web import api_beyond, api_scenes, docs, errors, limits, pages
@@ -33,7 +34,9 @@ async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
         warming = simulation.start_warming()
         # then the playground's examples (from the disk cache set-up filled), so that a first reader of one
         # does not wait for its derivation
-        warm_examples(services.users, after=warming)
+        examples = warm_examples(services.users, after=warming)
+        # then what they loaded lives for the process: out of the garbage collector's full scans
+        freeze_when_done(warming, examples)
     try:
         yield {"services": services}
     finally:

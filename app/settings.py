@@ -60,9 +60,6 @@ class Settings(BaseSettings):
         default=None, description="key that signs session cookies; else a file in the cache"
     )
     warm: bool = Field(default=True, description="compile kernels and fill caches in the background at start-up")
-    work_niceness: int = Field(
-        default=5, ge=0, le=19, description="nice value of threads that simulate: the event loop runs first; 0: off"
-    )
 
     # The memory budget (README "Capacity").  With P web processes, each with a forkserver and W
     # pool workers, and a job cap J, the most resident memory the server can reach is

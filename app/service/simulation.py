@@ -35,7 +35,6 @@ from app.numerics.simulate import run
 from app.numerics.system import NumericSystem, generated_sources, numeric_system
 from app.scenes import SCENES, Scene
 from app.service.cache import JsonCache, source_fingerprint
-from app.service.priority import yield_to_the_loop
 from app.settings import container_cpus, settings
 
 DEFAULT_T_END = 10.0
@@ -263,7 +262,6 @@ def simulate_derivation(
     gates: Gates = GATES,
 ) -> dict[str, Any]:
     """Simulate a derived system as the request asks; a refusal raises SimulationError, a full server OverCapacity."""
-    yield_to_the_loop()
     scene: Scene | None = SCENES.get(scene_id) if scene_id else None
     k = parameter_vector(derivation, request.parameters or {})
     y0 = initial_state(derivation, request.initial or {}, scene.initial if scene else {})

@@ -22,7 +22,6 @@ from app.numerics.exact import exact_solution
 from app.numerics.methods import METHODS, NONSTIFF, Problem, symplectic_for
 from app.service.cache import JsonCache, source_fingerprint
 from app.service.derivations import derivation, derivation_document, scene
-from app.service.priority import yield_to_the_loop
 from app.service.simulation import COMPILED
 
 SWEEP = [10.0**-e for e in range(3, 13)]
@@ -73,7 +72,6 @@ def methods_for(system) -> list[str]:
 
 
 def compute(scene_id: str, sweep: list[float] | None = None, methods: list[str] | None = None) -> dict[str, Any]:
-    yield_to_the_loop()
     s = scene(scene_id)
     d = derivation(scene_id)
     system, _ = COMPILED.get(scene_id, d, derivation_document(scene_id).get("constraint_forces") or [])

@@ -1,0 +1,26 @@
+"""After the warm-up, the objects alive are frozen: a full collection no longer scans them."""
+
+from __future__ import annotations
+
+import gc
+import threading
+
+from app.service.memory import freeze_when_done
+
+
+def test_the_long_lived_objects_are_frozen_once_the_warm_up_ends():
+    gc.unfreeze()
+    release = threading.Event()
+    warming = threading.Thread(target=release.wait)
+    warming.start()
+    try:
+        settle = freeze_when_done(warming)
+        settle.join(timeout=0.2)
+        assert settle.is_alive() and gc.get_freeze_count() == 0  # waits for the warm-up
+        release.set()
+        settle.join(timeout=30)
+        assert not settle.is_alive()
+        assert gc.get_freeze_count() > 10_000  # the modules and everything loaded
+    finally:
+        release.set()
+        gc.unfreeze()
