@@ -224,7 +224,7 @@ def start_server(workers: int) -> tuple[subprocess.Popen, str]:
     # serve.sh runs `python`: the one of this interpreter's environment (the venv)
     path = f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}"
     env = {**os.environ, "PATH": path, "PORT": str(port), "HOST": "127.0.0.1", "WORKERS": str(workers)}
-    # LOAD_TEST_SERVER_LOG=path keeps the server's output (e.g. with PYTHONASYNCIODEBUG=1: slow callbacks)
+    # LOAD_TEST_SERVER_LOG=path keeps the server's output (its log and any traceback) in that file
     log = open(os.environ["LOAD_TEST_SERVER_LOG"], "wb") if os.environ.get("LOAD_TEST_SERVER_LOG") else None  # noqa: SIM115
     proc = subprocess.Popen(
         [str(ROOT / "scripts" / "serve.sh")],
