@@ -11,20 +11,10 @@ the engine's declaration (``system()``, app/scenes/types.py) from it.  No SymPy 
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
-from dataclasses import asdict, dataclass
+from dataclasses import dataclass
 from typing import Any
 
 from app.scenes.types import Parameter, Particle, System
-
-
-@dataclass(frozen=True)
-class DeclaredParameter:
-    name: str
-    value: float = 1.0  # used to simulate, and shown as the default
-    unit: str = ""
-    min: float | None = None
-    max: float | None = None
-    description: str = ""
 
 
 @dataclass(frozen=True)
@@ -32,6 +22,15 @@ class DeclaredParticle:
     mass: str
     position: tuple[str, ...]  # (x, y) or (x, y, z), expressions of the coordinates and t
     label: str = ""
+
+
+def _parameter(p: str | Mapping[str, Any]) -> Parameter:
+    """A declared parameter: a bare name (value 1), or the request's fields."""
+    if isinstance(p, str):
+        return Parameter(p, 1.0)
+    return Parameter(
+        p["name"], float(p.get("value", 1.0)), p.get("unit", ""), p.get("min"), p.get("max"), p.get("description", "")
+    )
 
 
 def _in_space(position: tuple[str, ...]) -> tuple[str, str, str]:
@@ -42,7 +41,7 @@ def _in_space(position: tuple[str, ...]) -> tuple[str, str, str]:
 @dataclass(frozen=True)
 class UserSystem:
     coordinates: tuple[str, ...]
-    parameters: tuple[DeclaredParameter, ...] = ()
+    parameters: tuple[Parameter, ...] = ()  # the request's "value" is the parameter's default
     lagrangian: str | None = None
     kinetic: str | None = None
     potential: str | None = None
@@ -55,10 +54,7 @@ class UserSystem:
         """From plain data in the request's shape (a parameter may be a bare name)."""
         return cls(
             coordinates=tuple(data.get("coordinates") or ()),
-            parameters=tuple(
-                DeclaredParameter(p) if isinstance(p, str) else DeclaredParameter(**p)
-                for p in data.get("parameters") or ()
-            ),
+            parameters=tuple(_parameter(p) for p in data.get("parameters") or ()),
             lagrangian=data.get("lagrangian"),
             kinetic=data.get("kinetic"),
             potential=data.get("potential"),
@@ -74,7 +70,17 @@ class UserSystem:
         """Plain data in the request's shape (what the page sends back to the API, and the cache keys' text)."""
         return {
             "coordinates": list(self.coordinates),
-            "parameters": [asdict(p) for p in self.parameters],
+            "parameters": [
+                {
+                    "name": p.name,
+                    "value": p.default,
+                    "unit": p.unit,
+                    "min": p.min,
+                    "max": p.max,
+                    "description": p.description,
+                }
+                for p in self.parameters
+            ],
             "lagrangian": self.lagrangian,
             "kinetic": self.kinetic,
             "potential": self.potential,
@@ -114,7 +120,7 @@ class UserSystem:
         """The engine's declaration (a planar particle moves in z = 0)."""
         return System(
             coordinates=self.coordinates,
-            parameters=tuple(Parameter(p.name, float(p.value), p.unit, p.min, p.max) for p in self.parameters),
+            parameters=tuple(Parameter(p.name, p.default, p.unit, p.min, p.max) for p in self.parameters),
             particles=tuple(Particle(p.mass, _in_space(p.position), p.label) for p in self.particles),
             kinetic=self.kinetic,
             potential=self.potential,

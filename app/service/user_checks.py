@@ -91,7 +91,7 @@ def check_system(system: UserSystem) -> None:
             raise InvalidSystem(f"{_where(loc)}: the name {name!r} is declared twice", loc, name)
         seen.add(name)
     for i, p in enumerate(system.parameters):
-        low, high, value = p.min, p.max, p.value
+        low, high, value = p.min, p.max, p.default
         if low is not None and high is not None and low > high:
             loc = ("parameters", i, "min")
             raise InvalidSystem(f"{_where(loc)}: min {low:g} is larger than max {high:g}", loc)
