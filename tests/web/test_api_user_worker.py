@@ -249,6 +249,9 @@ def test_cancelling_the_await_kills_the_job(pool, tmp_path):
     async def main():
         future = pool.submit(signal_then_sleep, str(started), 60, timeout=90)
         task = asyncio.ensure_future(pool.run_async(future, 90))
+        # at least one turn of the loop: the task is inside its await before it is cancelled (a worker
+        # that writes the file before this coroutine first yields must not let it cancel a task never started)
+        await asyncio.sleep(0)
         while not started.exists() or not started.read_text():  # the job is running in its worker
             await asyncio.sleep(0.02)
         task.cancel()
