@@ -44,15 +44,19 @@ class EventFunction:
 
 @dataclass(frozen=True)
 class Hit:
-    """An event that happened: its index among the samples (the first sample past it), time and state."""
+    """An event that happened: its index among the samples (the first sample past it), time and state.
 
-    event: EventFunction
+    Plain data (the event's name and message, not its function), so that an outcome computed in a
+    worker process can be sent back."""
+
+    name: str
+    message: str
     index: int
     t: float
     y: np.ndarray
 
     def as_json(self) -> dict[str, Any]:
-        return {"name": self.event.name, "t": self.t, "message": self.event.message}
+        return {"name": self.name, "t": self.t, "message": self.message}
 
 
 def compile_events(system: NumericSystem, events: Sequence[Any]) -> list[EventFunction]:
@@ -94,7 +98,7 @@ def first_hit(
         if best is not None and i >= best.index:
             continue
         if i == 0:
-            best = Hit(event, 0, float(t[0]), y[0].copy())
+            best = Hit(event.name, event.message, 0, float(t[0]), y[0].copy())
             continue
         ta, tb, h = float(t[i - 1]), float(t[i]), float(t[i] - t[i - 1])
         ya, yb = y[i - 1], y[i]
@@ -112,7 +116,7 @@ def first_hit(
             lo, hi, g_lo, g_hi = float(s[j - 1]), float(s[j]), float(values[j - 1]), float(values[j])
         # the zero of the line through (lo, g_lo) and (hi, g_hi)
         root = lo + (hi - lo) * g_lo / (g_lo - g_hi) if g_lo > g_hi else hi
-        best = Hit(event, i, ta + root * h, _hermite(root, h, ya, fa, yb, fb))
+        best = Hit(event.name, event.message, i, ta + root * h, _hermite(root, h, ya, fa, yb, fb))
     return best
 
 

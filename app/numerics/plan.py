@@ -7,20 +7,24 @@ its "one Python step loop at a time" throttle from ``Plan.python_loop``, which
 is right whatever was asked for (``auto`` choosing Radau is a Python loop).
 
 Only a run that meets stiffness on the way (``auto``'s explicit method hands
-over to Radau) changes method after planning; ``app.numerics.simulate`` asks
-for the throttle then.
+over to Radau) changes method after planning: ``Plan.handed_over`` is the plan
+it continues with, and ``app.numerics.simulate`` asks for the throttle then.
+
+A plan travels to a worker process by ``portable`` (everything but the system,
+methods by name) and ``rebuilt`` there on that process's own copy of the system.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields, replace
+from typing import Any
 
 import numpy as np
 
 from app.numerics.choose import Analysis, analyse, choose
 from app.numerics.errors import SimulationError
 from app.numerics.estimate import reference_name
-from app.numerics.methods import AUTO, FALLBACK, METHODS, NONSTIFF, Method, method
+from app.numerics.methods import AUTO, FALLBACK, METHODS, NONSTIFF, STIFF, Method, method
 from app.numerics.methods.symplectic import FixedStep
 from app.numerics.system import NumericSystem
 
@@ -40,6 +44,7 @@ class Plan:
     analysis: Analysis
     path: str  # "compiled", "scipy" (a scipy method asked for or chosen), "scipy-fallback"
     reference: Method | None  # the error estimate's reference run, None without an estimate
+    stiff: bool = False  # estimated as a stiff problem (the reference keeps atol); True after a hand-over
 
     @property
     def name(self) -> str:
@@ -54,6 +59,32 @@ class Plan:
     def watch_stiffness(self) -> bool:
         """``auto``'s explicit default stops when it meets stiffness, to be redone with Radau."""
         return self.requested == AUTO and self.method.name == NONSTIFF
+
+    def handed_over(self, t: float) -> Plan:
+        """The plan after ``auto``'s explicit run met stiffness at ``t``: the whole run redone with the
+        implicit method, estimated as a stiff problem (its reference is the stiff method, tighter)."""
+        reason = (
+            f"{self.reason}; but {self.name} detected stiffness at t = {t:.4g} s (step size held at its "
+            f"stability limit), so the run was redone with the implicit {STIFF} method"
+        )
+        reference = METHODS[reference_name(stiff=True)] if self.reference is not None else None
+        return replace(self, method=METHODS[STIFF], reason=reason, reference=reference, stiff=True)
+
+    def portable(self) -> dict[str, Any]:
+        """Everything but the system, the methods by name: what a worker process needs to run this plan."""
+        out = {f.name: getattr(self, f.name) for f in fields(self) if f.name != "system"}
+        out["method"] = self.method.name
+        out["reference"] = self.reference.name if self.reference is not None else None
+        return out
+
+    @classmethod
+    def rebuilt(cls, system: NumericSystem, portable: dict[str, Any]) -> Plan:
+        """The plan ``portable`` describes, on this process's copy of its system."""
+        reference = portable["reference"]
+        return cls(
+            system=system,
+            **{**portable, "method": METHODS[portable["method"]], "reference": reference and METHODS[reference]},
+        )
 
 
 def plan(
@@ -96,7 +127,9 @@ def plan(
         )
         chosen, path = METHODS[FALLBACK], "scipy-fallback"
         reference = _reference(chosen, analysis.stiff, compiled=False) if estimate else None
-    return Plan(system, k, y0, t_end, samples, rtol, atol, requested, chosen, reason, analysis, path, reference)
+    return Plan(
+        system, k, y0, t_end, samples, rtol, atol, requested, chosen, reason, analysis, path, reference, analysis.stiff
+    )
 
 
 def _reference(chosen: Method, stiff: bool, compiled: bool) -> Method:

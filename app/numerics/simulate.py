@@ -19,7 +19,7 @@ import threading
 import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import Future, ThreadPoolExecutor
-from contextlib import AbstractContextManager, ExitStack, nullcontext
+from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -29,7 +29,7 @@ from app.numerics import limits
 from app.numerics.choose import Analysis
 from app.numerics.errors import TooMuchWork
 from app.numerics.estimate import Estimate, compare, reference_problem
-from app.numerics.methods import AUTO, METHODS, STIFF, Problem, Trajectory
+from app.numerics.methods import AUTO, METHODS, Problem, Trajectory
 from app.numerics.methods.symplectic import FixedStep
 from app.numerics.plan import Plan, plan
 from app.numerics.system import NumericSystem
@@ -137,11 +137,19 @@ def run(
     wall_seconds: float | None = None,
     python_loop: Callable[[], AbstractContextManager] = nullcontext,
     events: Sequence[terminal.EventFunction] = (),
+    elsewhere: Callable[[Plan, float], Outcome] | None = None,
 ) -> Outcome:
     """Run a plan under one deadline.  ``python_loop()`` is entered around a Python step loop the plan did not
-    foresee (the stiff hand-over to Radau); the caller holds it already when ``plan.python_loop``."""
-    system, k, y0 = plan.system, plan.k, plan.y0
+    foresee (the stiff hand-over to Radau); the caller holds it already when ``plan.python_loop``.
+
+    ``elsewhere(plan, wall_seconds)``, when given, runs a plan that steps in Python (a scipy method, as
+    asked for or chosen, or after the hand-over) in another process and returns its outcome: a server
+    keeps such loops out of its web process, where they would hold the GIL the event loop needs.  The
+    scipy fallback while compiling stays here (short runs, and a worker would first have to start)."""
     wall_seconds = limits.WALL_SECONDS if wall_seconds is None else wall_seconds
+    if elsewhere is not None and plan.python_loop and plan.path != "scipy-fallback":
+        return elsewhere(plan, wall_seconds)
+    system, k, y0 = plan.system, plan.k, plan.y0
     t = np.linspace(0.0, plan.t_end, plan.samples)
     atol_vector = np.full(y0.size, plan.atol)
     name, reason, chosen, path, analysis = plan.name, plan.reason, plan.method, plan.path, plan.analysis
@@ -161,40 +169,34 @@ def run(
     # the reference of a non-stiff adaptive compiled run does not depend on the run: start it now
     adaptive = path == "compiled" and not isinstance(chosen, FixedStep)
     CORES.take(force=True)  # this run's own core
-    ahead = _reference_ahead(problem) if estimate and adaptive and not analysis.stiff else None
+    ahead = _reference_ahead(problem) if estimate and adaptive and not plan.stiff else None
     try:
         trajectory = chosen.integrate(problem, **options)
     finally:
         CORES.give()
-    with ExitStack() as held:
-        stiff = analysis.stiff
-        if trajectory.stiff_detected and not trajectory.complete and options:
-            # the explicit run found h |lambda| at its stability limit for 15 steps in a row: switch to Radau
-            reason += (
-                f"; but {name} detected stiffness at t = {trajectory.t_reached:.4g} s (step size held at its "
-                f"stability limit), so the run was redone with the implicit {STIFF} method"
-            )
-            name, stiff, ahead = STIFF, True, None
-            problem.max_steps = _budget_for(name)
-            held.enter_context(python_loop())
-            trajectory = METHODS[name].integrate(problem)
-        elif trajectory.stiff_detected:
-            warnings.append(
-                f"{name} detected stiffness (its step size is held at the stability limit): an implicit method "
-                "(Radau or BDF) may be much cheaper here"
-            )
-        # a terminal event (the block at the foot of its ramp) ends the run there: the estimate
-        # compares the samples before it, the run keeps them and the state at the event
-        hit = terminal.first_hit(system, events, trajectory, k) if events else None
-        compared = terminal.before(trajectory, hit) if hit is not None else trajectory
-        if not trajectory.complete and hit is None:
-            warnings.append(trajectory.stop_reason)
-        compiled = path != "scipy-fallback"
-        result = (
-            estimate_error(system, problem, METHODS[name], compared, stiff, warnings, compiled, ahead)
-            if estimate
-            else None
+    if trajectory.stiff_detected and not trajectory.complete and options:
+        # the explicit run found h |lambda| at its stability limit for 15 steps in a row: redo it with Radau
+        # in what is left of the deadline (the reference started beside it is dropped)
+        handed = plan.handed_over(trajectory.t_reached)
+        with python_loop():
+            outcome = run(handed, max(deadline - time.perf_counter(), 0.0), events=events, elsewhere=elsewhere)
+        outcome.compile_seconds += compile_seconds
+        return outcome
+    if trajectory.stiff_detected:
+        warnings.append(
+            f"{name} detected stiffness (its step size is held at the stability limit): an implicit method "
+            "(Radau or BDF) may be much cheaper here"
         )
+    # a terminal event (the block at the foot of its ramp) ends the run there: the estimate
+    # compares the samples before it, the run keeps them and the state at the event
+    hit = terminal.first_hit(system, events, trajectory, k) if events else None
+    compared = terminal.before(trajectory, hit) if hit is not None else trajectory
+    if not trajectory.complete and hit is None:
+        warnings.append(trajectory.stop_reason)
+    compiled = path != "scipy-fallback"
+    result = (
+        estimate_error(system, problem, chosen, compared, plan.stiff, warnings, compiled, ahead) if estimate else None
+    )
     if hit is not None:
         trajectory = terminal.ended(trajectory, hit)
     return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds, path, hit)

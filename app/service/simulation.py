@@ -30,8 +30,8 @@ from app.numerics.events import EventFunction, compile_events
 from app.numerics.methods import AUTO, METHODS, NONSTIFF
 from app.numerics.methods.scipy_ivp import scipy_integrate
 from app.numerics.observables import Observables, build, summarize
-from app.numerics.plan import plan
-from app.numerics.simulate import run
+from app.numerics.plan import Plan, plan
+from app.numerics.simulate import Outcome, run
 from app.numerics.system import NumericSystem, generated_sources, numeric_system
 from app.scenes import SCENES, Scene
 from app.service.cache import JsonCache, source_fingerprint
@@ -44,6 +44,12 @@ HEAVY_RTOL = 1e-9
 # Set by ``start_warming`` (the server): while the background thread compiles, ``auto`` requests are
 # answered by scipy instead of waiting on numba; scripts and tests compile in line as before.
 ANSWER_WHILE_COMPILING = False
+
+
+class Offload(Protocol):
+    """Runs ``job(*args)`` in a worker process and returns its result (``WorkerPool.run``)."""
+
+    def __call__(self, job: Callable[..., Any], /, *args: Any, timeout: float) -> Any: ...
 
 
 class SimulationInput(Protocol):
@@ -221,10 +227,18 @@ def _slot(gate: threading.BoundedSemaphore, message: str) -> Iterator[None]:
 class Gates:
     """How many simulations run at once in one process: ``slots`` in all, at most half of them heavy.
 
-    The app builds its own (``app.service.services``) and gives it to the routes; a worker
-    process or a script uses ``GATES``."""
+    The app builds its own (``app.service.services``) and gives it to the routes, with ``offload``
+    (its worker pool's ``run``) and ``worker_free`` (no user job is waiting for a worker): a scene's
+    run that steps in Python then runs in a worker process when one is free, else here as before, so
+    that a flood of such runs never keeps the students' own derivations from the pool (they wait
+    for at most the one run that holds a worker).  A worker process or a script uses ``GATES``, which
+    runs everything in line."""
 
-    def __init__(self, slots: int = SLOTS) -> None:
+    def __init__(
+        self, slots: int = SLOTS, offload: Offload | None = None, worker_free: Callable[[], bool] = lambda: True
+    ) -> None:
+        self.offload = offload
+        self.worker_free = worker_free
         self.slots = threading.BoundedSemaphore(slots)
         self.heavy = threading.BoundedSemaphore(max(1, slots // 2))
         # scipy's integrators loop in Python and hold the GIL for their whole run: one at a
@@ -289,13 +303,27 @@ def simulate_derivation(
     # a run far beyond the scene's span or near the tolerance floor is heavy: those take at most half
     # of the slots, so a flood of them leaves the others to the light runs students send
     heavy = t_end > HEAVY_SPAN * (scene.t_end if scene else DEFAULT_T_END) or rtol < HEAVY_RTOL
+    elsewhere = None
+    if scene_id is not None and gates.offload is not None:
+        offload = gates.offload
+
+        def elsewhere(python_plan: Plan, wall_seconds: float) -> Outcome:
+            if not gates.worker_free():  # users' jobs come first: the run stays here
+                return run(python_plan, wall_seconds, events=_events(scene, system))
+            # a Python step loop holds the GIL of the process it runs in: in a worker, not beside the
+            # event loop; the worker may first load the scene (from the disk caches), hence the margin
+            return offload(
+                run_scene_plan, scene_id, python_plan.portable(), wall_seconds,
+                timeout=wall_seconds + settings().simulate_seconds,
+            )  # fmt: skip
+
     with ExitStack() as held:
         if planned.python_loop:
             held.enter_context(gates.python_loop())
         elif heavy:
             held.enter_context(gates.heavy_run())
         held.enter_context(gates.any())
-        outcome = run(planned, python_loop=gates.python_loop, events=_events(scene, system))
+        outcome = run(planned, python_loop=gates.python_loop, events=_events(scene, system), elsewhere=elsewhere)
     return document(system, observables, outcome, k, rtol, getattr(request, "precision", None) or "full")
 
 
@@ -448,6 +476,15 @@ def start_warming() -> threading.Thread:
     )
     thread.start()
     return thread
+
+
+def run_scene_plan(scene_id: str, portable: dict[str, Any], wall_seconds: float) -> Outcome:
+    """A worker process's job: run a scene's plan (``Plan.portable``) on this process's copy of its system."""
+    from app.service.derivations import derivation, derivation_document
+
+    forces = derivation_document(scene_id).get("constraint_forces") or []
+    system, _ = COMPILED.get(scene_id, derivation(scene_id), forces)
+    return run(Plan.rebuilt(system, portable), wall_seconds, events=_events(SCENES[scene_id], system))
 
 
 def simulate_scene(scene_id: str, request: SimulationInput, gates: Gates = GATES) -> dict[str, Any]:

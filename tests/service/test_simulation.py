@@ -242,3 +242,92 @@ def test_auto_stiff_handover_takes_the_python_loop_slot(monkeypatch):
 
     outcome = run(planned, python_loop=spy)
     assert outcome.method == "Radau" and entered == [True]
+
+
+def _same_document(a, b):
+    """Two result documents equal in everything but the wall-clock times."""
+    for doc in (a, b):
+        doc["stats"].pop("wall_time_s")
+        doc["stats"].pop("compile_time_s")
+    assert a.keys() == b.keys() and a["stats"] == b["stats"]
+    np.testing.assert_array_equal(a["t"], b["t"])
+    for q in a["state"]:
+        np.testing.assert_array_equal(a["state"][q], b["state"][q])
+
+
+def test_a_scenes_python_loop_runs_in_a_worker_process_with_the_same_result():
+    """A scipy method asked for by name runs in the pool's worker (off the web process's GIL); the event
+    that ends the block's run on its ramp crosses the process boundary, and the answer is the one in line."""
+    from app.service.worker import WorkerPool
+
+    ran_in = []
+    pool = WorkerPool(workers=1, memory_mb=1024)
+
+    def offload(job, *args, timeout):
+        ran_in.append(job.__name__)
+        return pool.run(job, *args, timeout=timeout)
+
+    try:
+        asked = request(method="RK45", t_end=5.0)
+        away = simulation.simulate_scene("incline-block", asked, simulation.Gates(offload=offload))
+    finally:
+        pool.stop()
+    here = simulation.simulate_scene("incline-block", asked)
+    assert ran_in == ["run_scene_plan"]
+    assert away["stats"]["event"] is not None and away["stats"]["method"] == "RK45"
+    _same_document(away, here)
+
+
+def test_a_python_loop_stays_here_while_users_jobs_wait_for_the_worker():
+    def offload(job, *args, timeout):
+        raise AssertionError("the run took a worker that users' jobs were waiting for")
+
+    gates = simulation.Gates(offload=offload, worker_free=lambda: False)
+    doc = simulation.simulate_scene("incline-block", request(method="RK45", t_end=5.0), gates)
+    assert doc["stats"]["method"] == "RK45" and doc["stats"]["event"] is not None
+
+
+def test_a_compiled_run_stays_in_the_web_process():
+    def offload(job, *args, timeout):
+        raise AssertionError("a compiled run was sent to a worker")
+
+    doc = simulation.simulate_scene("simple-pendulum", request(t_end=2.0), simulation.Gates(offload=offload))
+    assert doc["stats"]["path"] == "compiled"
+
+
+def test_the_stiff_hand_over_is_run_elsewhere_as_a_stiff_plan(monkeypatch):
+    """The plan a run hands over to Radau travels (``portable``, pickled) and is rebuilt on the system;
+    its outcome, pickled back, is what the run in line gives."""
+    import pickle
+
+    from app.numerics import plan as plan_module
+    from app.numerics.methods import NONSTIFF
+    from app.numerics.plan import Plan
+    from app.numerics.simulate import run
+    from tests.numerics.extreme_cases import circular_radius, system_for
+
+    s = system_for("stiff-spring")
+    k = np.array([1.0, 1e6, 1.0])
+    y0 = np.array([circular_radius(1e6, 1.0, 1.0) * (1 + 1e-9), 0.0, 0.0, 1.0])
+    monkeypatch.setattr(plan_module, "choose", lambda system, analysis: (NONSTIFF, "forced for the test"))
+    sent = []
+
+    def elsewhere(handed, wall_seconds):
+        sent.append(handed)
+        rebuilt = Plan.rebuilt(s, pickle.loads(pickle.dumps(handed.portable())))
+        return pickle.loads(pickle.dumps(run(rebuilt, wall_seconds)))
+
+    # without an estimate the explicit run is compiled and stays; what it hands over goes
+    planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4, estimate=False)
+    away, here = run(planned, elsewhere=elsewhere), run(planned)
+    assert [p.name for p in sent] == ["Radau"] and sent[0].stiff and sent[0].python_loop
+    assert away.method == here.method == "Radau" and "detected stiffness" in away.reason
+    assert away.reason == here.reason
+    np.testing.assert_array_equal(away.trajectory.y, here.trajectory.y)
+    # with one, the reference of a stiff start is Radau: the whole plan goes, and hands over there
+    sent.clear()
+    planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4)
+    away, here = run(planned, elsewhere=elsewhere), run(planned)
+    assert [(p.name, p.reference.name) for p in sent] == [(NONSTIFF, "Radau")]
+    assert away.method == here.method == "Radau" and away.reason == here.reason
+    assert away.estimate.value == here.estimate.value and away.estimate.reference == here.estimate.reference
