@@ -228,10 +228,10 @@ class Gates:
     """How many simulations run at once in one process: ``slots`` in all, at most half of them heavy.
 
     The app builds its own (``app.service.services``) and gives it to the routes, with ``offload``
-    (its worker pool's ``run``) and ``worker_free`` (no user job is waiting for a worker): a scene's
-    run that steps in Python then runs in a worker process when one is free, else here as before, so
-    that a flood of such runs never keeps the students' own derivations from the pool (they wait
-    for at most the one run that holds a worker).  A worker process or a script uses ``GATES``, which
+    (its worker pool's ``run``) and ``worker_free`` (no user job is running or waiting in the pool):
+    a scene's run that steps in Python then runs in a worker process when one is free, else here as
+    before, so that it never makes a student's own derivation wait, nor waits behind one (measured
+    in README.md, "Hostile flood").  A worker process or a script uses ``GATES``, which
     runs everything in line."""
 
     def __init__(
