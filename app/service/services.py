@@ -28,8 +28,8 @@ class Services:
     def start(cls, config: Settings) -> Services:
         pool = WorkerPool(config.worker_count, config.job_memory_mb, retire_mb=config.retire_rss_mb)
         users = UserSystems(pool, config=config)
-        # a scene's run that steps in Python (scipy) goes to the pool while no user job waits for it:
-        # in the web process it would hold the GIL the event loop needs
+        # a scene's run that steps in Python (scipy) goes to the pool while no user job runs or waits
+        # there: in the web process it would hold the GIL the event loop needs
         gates = Gates(offload=pool.run, worker_free=lambda: users.gate.in_flight + users.gate.waiting < pool.workers)
         return cls(pool, users, Checking(users, config), gates)
 

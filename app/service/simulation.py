@@ -230,8 +230,8 @@ class Gates:
     The app builds its own (``app.service.services``) and gives it to the routes, with ``offload``
     (its worker pool's ``run``) and ``worker_free`` (no user job is running or waiting in the pool):
     a scene's run that steps in Python then runs in a worker process when one is free, else here as
-    before, so that it never makes a student's own derivation wait, nor waits behind one (measured
-    in README.md, "Hostile flood").  A worker process or a script uses ``GATES``, which
+    before: it never waits behind a student's own derivation, and a derivation that arrives while
+    it runs waits for that one run at most (measured in README.md, "Hostile flood").  A worker process or a script uses ``GATES``, which
     runs everything in line."""
 
     def __init__(
