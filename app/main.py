@@ -35,6 +35,8 @@ async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
         # then the playground's examples (from the disk cache set-up filled), so that a first reader of one
         # does not wait for its derivation
         examples = warm_examples(services.users, after=warming)
+        # and the scenes' worker process, with the chapter's systems loaded
+        services.warm(after=warming)
         # then what they loaded lives for the process: out of the garbage collector's full scans
         freeze_when_done(warming, examples)
     try:

@@ -41,6 +41,9 @@ class Settings(BaseSettings):
     worker_base_mb: int = Field(
         default=250, gt=0, description="resident memory of an idle worker (engine and numerics loaded)"
     )
+    scene_worker_mb: int = Field(
+        default=128, ge=64, description="memory a scene's Python-loop run (scipy) may add to its worker"
+    )
     queue_seconds: float = Field(
         default=35.0,
         gt=0,
@@ -61,9 +64,10 @@ class Settings(BaseSettings):
     )
     warm: bool = Field(default=True, description="compile kernels and fill caches in the background at start-up")
 
-    # The memory budget (README "Capacity").  With P web processes, each with a forkserver and W
-    # pool workers, and a job cap J, the most resident memory the server can reach is
-    #     P * (web_process_mb + worker_base_mb + W * (worker_base_mb + J))  <=  budget,
+    # The memory budget (README "Capacity").  With P web processes, each with a forkserver, one
+    # worker for the scenes' Python-loop runs (capped at S = scene_worker_mb) and W pool workers for
+    # users' jobs, and a job cap J, the most resident memory the server can reach is
+    #     P * (web_process_mb + worker_base_mb + (worker_base_mb + S) + W * (worker_base_mb + J))  <=  budget,
     # so J defaults to the largest value that fits (at most 1024 MB), and a W that leaves a job
     # less than 128 MB is lowered until it does not (a configured J that does not fit, too).  A worker that ends a job above
     # worker_base_mb + J / 2 resident retires (app/service/worker.py).  P defaults to one per
@@ -84,7 +88,7 @@ class Settings(BaseSettings):
     def _per_worker_mb(self, workers: int, processes: int | None = None) -> int:
         """J for W = ``workers`` and P = ``processes`` (or the process count): the budget's inequality solved."""
         processes = processes or self.web_process_count
-        per_process = self.budget_mb // processes - self.web_process_mb - self.worker_base_mb
+        per_process = self.budget_mb // processes - self.web_process_mb - self.worker_base_mb - self._scene_worker_mb
         return per_process // workers - self.worker_base_mb
 
     @property
@@ -105,7 +109,12 @@ class Settings(BaseSettings):
     def worst_case_mb(self) -> int:
         """The left side of the budget's inequality, for these settings."""
         workers = self.worker_count * (self.worker_base_mb + self.job_memory_mb)
-        return self.web_process_count * (self.web_process_mb + self.worker_base_mb + workers)
+        return self.web_process_count * (self.web_process_mb + self.worker_base_mb + self._scene_worker_mb + workers)
+
+    @property
+    def _scene_worker_mb(self) -> int:
+        """The scenes' worker at its most: an idle worker and one run's cap."""
+        return self.worker_base_mb + self.scene_worker_mb
 
     @property
     def retire_rss_mb(self) -> int:

@@ -8,13 +8,17 @@ The worker pool's processes start with the first user job, not here.
 
 from __future__ import annotations
 
+import logging
+import threading
 from dataclasses import dataclass
 
 from app.service.checking import Checking
-from app.service.simulation import Gates
+from app.service.simulation import Gates, load_scenes
 from app.service.user_systems import UserSystems
 from app.service.worker import WorkerPool
 from app.settings import Settings
+
+log = logging.getLogger(__name__)
 
 
 @dataclass(frozen=True)
@@ -23,16 +27,38 @@ class Services:
     users: UserSystems  # derive, simulate and export user systems (caches, fair share, the pool)
     checking: Checking  # judge students' steps (the same pool and fair share)
     gates: Gates  # how many scene simulations, Poincaré sections and mode measurements run at once
+    scenes: WorkerPool  # one process for the scenes' runs that step in Python (scipy), off the event loop's GIL
 
     @classmethod
     def start(cls, config: Settings) -> Services:
         pool = WorkerPool(config.worker_count, config.job_memory_mb, retire_mb=config.retire_rss_mb)
         users = UserSystems(pool, config=config)
-        # a scene's run that steps in Python (scipy) goes to the pool while no user job runs or waits
-        # there: in the web process it would hold the GIL the event loop needs
-        gates = Gates(offload=pool.run, worker_free=lambda: users.gate.in_flight + users.gate.waiting < pool.workers)
-        return cls(pool, users, Checking(users, config), gates)
+        # a scene's run that steps in Python (scipy) holds the GIL for its whole run: in the web
+        # process it would delay the event loop.  It goes to a worker of its own (in the memory
+        # budget, app/settings.py), never queued behind users' derivations in the pool.
+        scenes = WorkerPool(
+            1, config.scene_worker_mb, retire_mb=config.worker_base_mb + config.scene_worker_mb // 2, users=False
+        )
+        return cls(pool, users, Checking(users, config), Gates(offload=scenes.run), scenes)
+
+    def warm(self, after: threading.Thread | None = None) -> threading.Thread:
+        """Start the scenes' worker and load the chapter's systems in it (after ``after``, the
+        server's own warm-up, which fills the disk caches it reads), so that a first scipy run
+        does not wait for a process to start."""
+
+        def warm() -> None:
+            if after is not None:
+                after.join()
+            try:
+                self.scenes.run(load_scenes, timeout=120)
+            except Exception:  # noqa: BLE001 - optional: the first run starts the worker itself
+                log.warning("the scenes' worker could not be warmed", exc_info=True)
+
+        thread = threading.Thread(target=warm, name="warm-scenes-worker", daemon=True)
+        thread.start()
+        return thread
 
     def stop(self) -> None:
-        """Stop the worker pool and join its processes (a job still running is killed)."""
+        """Stop the worker pools and join their processes (a job still running is killed)."""
         self.pool.stop()
+        self.scenes.stop()

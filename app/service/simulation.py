@@ -227,18 +227,15 @@ def _slot(gate: threading.BoundedSemaphore, message: str) -> Iterator[None]:
 class Gates:
     """How many simulations run at once in one process: ``slots`` in all, at most half of them heavy.
 
-    The app builds its own (``app.service.services``) and gives it to the routes, with ``offload``
-    (its worker pool's ``run``) and ``worker_free`` (no user job is running or waiting in the pool):
-    a scene's run that steps in Python then runs in a worker process when one is free, else here as
-    before: it never waits behind a student's own derivation, and a derivation that arrives while
-    it runs waits for that one run at most (measured in README.md, "Hostile flood").  A worker process or a script uses ``GATES``, which
-    runs everything in line."""
+    The app builds its own (``app.service.services``) and gives it to the routes, with ``offload``:
+    the ``run`` of a worker process of its own for the scenes' runs that step in Python (scipy's
+    loops hold the GIL for their whole run; there they cannot delay the event loop, ``/healthz``
+    included, and they never wait behind a user's derivation).  One such run at a time per web
+    process (``python_loop``), so that worker is free whenever a run is sent to it.  A worker
+    process or a script uses ``GATES``, which runs everything in line."""
 
-    def __init__(
-        self, slots: int = SLOTS, offload: Offload | None = None, worker_free: Callable[[], bool] = lambda: True
-    ) -> None:
+    def __init__(self, slots: int = SLOTS, offload: Offload | None = None) -> None:
         self.offload = offload
-        self.worker_free = worker_free
         self.slots = threading.BoundedSemaphore(slots)
         self.heavy = threading.BoundedSemaphore(max(1, slots // 2))
         # scipy's integrators loop in Python and hold the GIL for their whole run: one at a
@@ -308,10 +305,9 @@ def simulate_derivation(
         offload = gates.offload
 
         def elsewhere(python_plan: Plan, wall_seconds: float) -> Outcome:
-            if not gates.worker_free():  # users' jobs come first: the run stays here
-                return run(python_plan, wall_seconds, events=_events(scene, system))
-            # a Python step loop holds the GIL of the process it runs in: in a worker, not beside the
-            # event loop; the worker may first load the scene (from the disk caches), hence the margin
+            # a Python step loop holds the GIL of the process it runs in: in the scenes' worker, not
+            # beside the event loop; the worker may first start and load the scene (from the disk
+            # caches), hence the margin
             return offload(
                 run_scene_plan, scene_id, python_plan.portable(), wall_seconds,
                 timeout=wall_seconds + settings().simulate_seconds,
@@ -476,6 +472,16 @@ def start_warming() -> threading.Thread:
     )
     thread.start()
     return thread
+
+
+def load_scenes() -> int:
+    """A worker process's job at start-up: load every scene's numeric system (from the disk caches)."""
+    from app.service.derivations import derivation, derivation_document
+
+    for scene_id in SCENES:
+        forces = derivation_document(scene_id).get("constraint_forces") or []
+        COMPILED.get(scene_id, derivation(scene_id), forces)
+    return len(SCENES)
 
 
 def run_scene_plan(scene_id: str, portable: dict[str, Any], wall_seconds: float) -> Outcome:

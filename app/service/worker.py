@@ -152,11 +152,12 @@ def _tasks_until_retired(tasks: Callable[..., Any]) -> Callable[..., Any]:
     return until_retired
 
 
-def initialize_worker(memory_mb: int, retire_mb: int = 0, owner: int = 0) -> None:
+def initialize_worker(memory_mb: int, retire_mb: int = 0, owner: int = 0, users: bool = True) -> None:
     """Run in each new worker: cap its address space at what it has plus ``memory_mb``,
     yield the CPU to the web processes (users' long derivations never slow the pages and
     scene simulations of everyone else), lead a process group, die with the parent, and
-    retire once above ``retire_mb`` resident."""
+    retire once above ``retire_mb`` resident.  A worker for ``users``' systems writes their
+    generated code to the bounded folder; the scenes' worker keeps the chapter's."""
     global _retire_bytes
     if owner:  # first: the watching thread's stack counts in the address space measured below
         _watch_owner(owner)
@@ -167,7 +168,8 @@ def initialize_worker(memory_mb: int, retire_mb: int = 0, owner: int = 0) -> Non
     signal.signal(signal.SIGTERM, _kill_group)
     _die_with_parent()
     _retire_bytes = retire_mb * 2**20
-    use_user_folder()  # users' generated code goes to the bounded folder (app/service/disk.py)
+    if users:
+        use_user_folder()  # users' generated code goes to the bounded folder (app/service/disk.py)
     # this pebble internal is pinned in pyproject.toml (pebble < 5.3); tests/web/test_api_user_worker.py covers it
     pebble.pool.process.worker_get_next_task = _tasks_until_retired(pebble.pool.process.worker_get_next_task)
 
@@ -238,7 +240,9 @@ class WorkerPool:
         memory_mb: int | None = None,
         preload: Sequence[str] = PRELOAD,
         retire_mb: int | None = None,
+        users: bool = True,
     ):
+        self.users = users
         self.workers = workers or settings().worker_count
         self.memory_mb = memory_mb or settings().job_memory_mb
         self.retire_mb = retire_mb if retire_mb is not None else settings().retire_rss_mb
@@ -256,7 +260,7 @@ class WorkerPool:
                     max_workers=self.workers,
                     max_tasks=MAX_TASKS,
                     initializer=initialize_worker,
-                    initargs=(self.memory_mb, self.retire_mb, os.getpid()),
+                    initargs=(self.memory_mb, self.retire_mb, os.getpid(), self.users),
                     context=_context(self.preload),
                 )
             return self._pool

@@ -278,13 +278,22 @@ def test_a_scenes_python_loop_runs_in_a_worker_process_with_the_same_result():
     _same_document(away, here)
 
 
-def test_a_python_loop_stays_here_while_users_jobs_wait_for_the_worker():
-    def offload(job, *args, timeout):
-        raise AssertionError("the run took a worker that users' jobs were waiting for")
+def test_the_apps_scene_runs_go_to_a_worker_of_their_own_never_to_the_users_pool():
+    """The app's gates send a scipy run to the scenes' worker (warmed with every scene's system): the users'
+    pool, where derivations queue, is never started, and the answer is the one in line."""
+    from app.service.services import Services
+    from app.settings import Settings
 
-    gates = simulation.Gates(offload=offload, worker_free=lambda: False)
-    doc = simulation.simulate_scene("incline-block", request(method="RK45", t_end=5.0), gates)
-    assert doc["stats"]["method"] == "RK45" and doc["stats"]["event"] is not None
+    services = Services.start(Settings(memory_budget_mb=4000, warm=False))
+    try:
+        services.warm().join()
+        asked = request(method="RK45", t_end=5.0)
+        away = simulation.simulate_scene("incline-block", asked, services.gates)
+        assert services.pool._pool is None  # noqa: SLF001 - the users' pool never started
+        assert services.scenes._pool is not None and services.scenes.users is False  # noqa: SLF001
+    finally:
+        services.stop()
+    _same_document(away, simulation.simulate_scene("incline-block", asked))
 
 
 def test_a_compiled_run_stays_in_the_web_process():

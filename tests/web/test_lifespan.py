@@ -27,10 +27,11 @@ def test_each_lifespan_has_its_own_services_and_joins_its_workers_at_shutdown(cl
         assert services.users.pool is services.pool and services.checking.users is services.users
         assert other.get("/healthz").status_code == 200
         worker = services.pool.run(os.getpid, timeout=60)
-        assert worker != os.getpid() and _alive(worker)
-    # shutdown stopped the pool and joined its processes; the session's services still serve
+        scenes_worker = services.scenes.run(os.getpid, timeout=60)
+        assert len({worker, scenes_worker, os.getpid()}) == 3 and _alive(worker) and _alive(scenes_worker)
+    # shutdown stopped the pools and joined their processes; the session's services still serve
     deadline = time.monotonic() + 10
-    while _alive(worker) and time.monotonic() < deadline:
+    while (_alive(worker) or _alive(scenes_worker)) and time.monotonic() < deadline:
         time.sleep(0.05)
-    assert not _alive(worker)
+    assert not _alive(worker) and not _alive(scenes_worker)
     assert client.app_state["services"] is session and client.get("/healthz").status_code == 200

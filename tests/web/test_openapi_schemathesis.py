@@ -34,9 +34,9 @@ _rejection.expected_statuses = [*_rejection.expected_statuses, "413"]
 @pytest.fixture(scope="module")
 def generated_requests_services(client):
     """Services of their own (fair shares, session minting, caches) on the session's worker pool."""
-    pool = client.app_state["services"].pool
-    users = UserSystems(pool)
-    return Services(pool, users, Checking(users), Gates())
+    session = client.app_state["services"]
+    users = UserSystems(session.pool)
+    return Services(session.pool, users, Checking(users), Gates(), session.scenes)
 
 
 @pytest.mark.slow
