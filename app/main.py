@@ -9,7 +9,7 @@ from typing import Any
 from fastapi import FastAPI
 
 from app.service import simulation
-from app.service.memory import freeze_when_done
+from app.service.memory import freeze_imported, freeze_when_done
 from app.service.services import Services
 from app.settings import settings
 from app.web import api_beyond, api_scenes, docs, errors, limits, pages
@@ -31,6 +31,8 @@ async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
     # right-hand sides, in the background: the server answers at once, with scipy
     # while a compiled integrator is not ready yet.
     if settings().warm:
+        # the imported modules out of the collector's full scans before the warm-up's allocations trigger some
+        freeze_imported()
         warming = simulation.start_warming()
         # then the playground's examples (from the disk cache set-up filled), so that a first reader of one
         # does not wait for its derivation

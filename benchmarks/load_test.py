@@ -78,6 +78,7 @@ class Recorder:
     def __init__(self) -> None:
         self.times: dict[str, list[float]] = defaultdict(list)
         self.status: dict[str, dict[int, int]] = defaultdict(lambda: defaultdict(int))
+        self.slowest_probes: list[tuple[float, float, int]] = []
 
     async def call(self, client: httpx.AsyncClient, name: str, method: str, url: str, **kw) -> httpx.Response | None:
         start = time.perf_counter()
@@ -169,10 +170,12 @@ async def health_probe(base: str, rec: Recorder, stop: float) -> None:
             await asyncio.sleep(0.2)
 
 
-def probe_alone(base: str, seconds: float) -> list[tuple[float, int]]:
-    """/healthz five times a second from a process of its own: (latency in s, status; 599 for no answer)."""
+def probe_alone(base: str, seconds: float) -> list[tuple[float, float, int]]:
+    """/healthz five times a second from a process of its own: (seconds into the run, latency in s,
+    status; 599 for no answer)."""
     answers = []
-    stop = time.monotonic() + seconds
+    begun = time.monotonic()
+    stop = begun + seconds
     with httpx.Client(base_url=base, timeout=30) as c:
         while time.monotonic() < stop:
             started = time.perf_counter()
@@ -180,7 +183,7 @@ def probe_alone(base: str, seconds: float) -> list[tuple[float, int]]:
                 status = c.get("/healthz").status_code
             except httpx.HTTPError:
                 status = 599
-            answers.append((time.perf_counter() - started, status))
+            answers.append((time.monotonic() - begun, time.perf_counter() - started, status))
             time.sleep(0.2)
     return answers
 
@@ -188,9 +191,11 @@ def probe_alone(base: str, seconds: float) -> list[tuple[float, int]]:
 async def health_probe_alone(base: str, rec: Recorder, seconds: float) -> None:
     with ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn")) as one:
         answers = await asyncio.get_running_loop().run_in_executor(one, probe_alone, base, seconds)
-    for latency, status in answers:
+    for _, latency, status in answers:
         rec.times["healthz (own process)"].append(latency)
         rec.status["healthz (own process)"][status] += 1
+    # when the slowest answers came (a pause at the server's start, or spread over the flood)
+    rec.slowest_probes = sorted(answers, key=lambda a: -a[1])[:3]
 
 
 def server_rss_mb(pid: int) -> float:
@@ -260,6 +265,9 @@ def report(level: str, rec: Recorder, seconds: float, rss: tuple[float, float]) 
         p99 = t[min(len(t) - 1, int(0.99 * len(t)))]
         codes = ", ".join(f"{code}: {n}" for code, n in sorted(rec.status[name].items()))
         print(f"| {name} | {len(t)} | {statistics.median(t) * 1e3:.0f} | {p99 * 1e3:.0f} | {codes} |")
+    if rec.slowest_probes:
+        slowest = ", ".join(f"{latency * 1e3:.0f} ms at {at:.1f} s" for at, latency, _ in rec.slowest_probes)
+        print(f"slowest own-process /healthz answers: {slowest}")
 
 
 async def run_level(

@@ -5,7 +5,18 @@ from __future__ import annotations
 import gc
 import threading
 
-from app.service.memory import freeze_when_done
+from app.service.memory import freeze_imported, freeze_when_done
+
+
+def test_what_the_imports_left_is_frozen_at_the_start():
+    gc.unfreeze()
+    try:
+        freeze_imported()
+        frozen = gc.get_freeze_count()
+        assert frozen > 10_000  # the modules, their classes and functions
+        assert len(gc.get_objects()) < frozen  # a full collection scans only what came after
+    finally:
+        gc.unfreeze()
 
 
 def test_the_long_lived_objects_are_frozen_once_the_warm_up_ends():
