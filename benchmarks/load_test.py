@@ -27,7 +27,7 @@ long run and reports its growth after warm-up.
     .venv/bin/python -m benchmarks.load_test --students 30 100 150 --seconds 60
     .venv/bin/python -m benchmarks.load_test --students 100 --hostile 4 --seconds 60
     .venv/bin/python -m benchmarks.load_test --students 100 --soak --seconds 600
-    .venv/bin/python -m benchmarks.load_test --students 10 --flood 10 --seconds 60
+    .venv/bin/python -m benchmarks.load_test --students 10 --flood 10 --seconds 60 --settle 20
 """
 
 from __future__ import annotations
@@ -316,6 +316,13 @@ def main() -> None:
     parser.add_argument("--soak", action="store_true")
     parser.add_argument("--ramp", type=float, default=10.0, help="seconds over which students arrive")
     parser.add_argument(
+        "--settle",
+        type=float,
+        default=0.0,
+        help="seconds between the server's first answer and the load (its own warm-up ends meanwhile), "
+        "as a liveness probe's initialDelaySeconds waits (deploy/kubernetes.yaml: 20)",
+    )
+    parser.add_argument(
         "--no-warm", action="store_true", help="skip `python -m app.web.warm` (the image runs it at build)"
     )
     args = parser.parse_args()
@@ -328,7 +335,9 @@ def main() -> None:
         print(
             f"server: {args.workers} uvicorn workers at {base}; client and server share this machine "
             f"({os.cpu_count()} cores)"
+            + (f"; the load starts {args.settle:g} s after its first answer" if args.settle else "")
         )
+        time.sleep(args.settle)
         for n in args.students:
             level = run_level(base, proc.pid, min(n, 500), args.hostile, args.seconds, args.soak, args.ramp, args.flood)
             asyncio.run(level)
