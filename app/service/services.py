@@ -39,7 +39,9 @@ class Services:
         scenes = WorkerPool(
             1, config.scene_worker_mb, retire_mb=config.worker_base_mb + config.scene_worker_mb // 2, users=False
         )
-        return cls(pool, users, Checking(users, config), Gates(offload=scenes.run), scenes)
+        # a server that compiles in the background (the warm setting) answers from scipy meanwhile
+        gates = Gates(offload=scenes.run, answer_while_compiling=config.warm)
+        return cls(pool, users, Checking(users, config), gates, scenes)
 
     def warm(self, after: threading.Thread | None = None) -> threading.Thread:
         """Start the scenes' worker and load the chapter's systems in it (after ``after``, the

@@ -41,9 +41,6 @@ DEFAULT_T_END = 10.0
 SLOTS = max(2, container_cpus())
 HEAVY_SPAN = 10  # times the scene's t_end (or the default 10 s)
 HEAVY_RTOL = 1e-9
-# Set by ``start_warming`` (the server): while the background thread compiles, ``auto`` requests are
-# answered by scipy instead of waiting on numba; scripts and tests compile in line as before.
-ANSWER_WHILE_COMPILING = False
 
 
 class Offload(Protocol):
@@ -231,11 +228,17 @@ class Gates:
     the ``run`` of a worker process of its own for the scenes' runs that step in Python (scipy's
     loops hold the GIL for their whole run; there they cannot delay the event loop, ``/healthz``
     included, and they never wait behind a user's derivation).  One such run at a time per web
-    process (``python_loop``), so that worker is free whenever a run is sent to it.  A worker
-    process or a script uses ``GATES``, which runs everything in line."""
+    process (``python_loop``), so that worker is free whenever a run is sent to it.
 
-    def __init__(self, slots: int = SLOTS, offload: Offload | None = None) -> None:
+    ``answer_while_compiling`` (a server that compiles its kernels in the background): an ``auto``
+    request whose compiled method is not ready yet is answered by scipy instead of waiting on numba.
+    A worker process or a script uses ``GATES``, which runs everything in line and compiles first."""
+
+    def __init__(
+        self, slots: int = SLOTS, offload: Offload | None = None, answer_while_compiling: bool = False
+    ) -> None:
         self.offload = offload
+        self.answer_while_compiling = answer_while_compiling
         self.slots = threading.BoundedSemaphore(slots)
         self.heavy = threading.BoundedSemaphore(max(1, slots // 2))
         # scipy's integrators loop in Python and hold the GIL for their whole run: one at a
@@ -296,7 +299,7 @@ def simulate_derivation(
             "initial",
         )
     # the plan resolves auto (and the fallback while compiling) first, so the throttle sees what will run
-    planned = plan(system, k, y0, t_end, samples, method, rtol, atol, wait_for_compile=not ANSWER_WHILE_COMPILING)
+    planned = plan(system, k, y0, t_end, samples, method, rtol, atol, wait_for_compile=not gates.answer_while_compiling)
     # a run far beyond the scene's span or near the tolerance floor is heavy: those take at most half
     # of the slots, so a flood of them leaves the others to the light runs students send
     heavy = t_end > HEAVY_SPAN * (scene.t_end if scene else DEFAULT_T_END) or rtol < HEAVY_RTOL
@@ -463,10 +466,8 @@ def start_warming() -> threading.Thread:
     """The server's start: answer at once (scipy while compiling), load and compile in the background.
 
     The thread gives way to the requests being served (``IN_FLIGHT``) between its steps, so that a
-    first request shares the processor with at most one step of it (one scene's system or one kernel)."""
-    global ANSWER_WHILE_COMPILING
-    ANSWER_WHILE_COMPILING = True
-
+    first request shares the processor with at most one step of it (one scene's system or one kernel);
+    the app's ``Gates`` answer from scipy meanwhile (``answer_while_compiling``, app/service/services.py)."""
     thread = threading.Thread(
         target=warm_all, args=(lambda: IN_FLIGHT.wait_quiet(GIVE_WAY_SECONDS),), name="warm-up", daemon=True
     )

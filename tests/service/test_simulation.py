@@ -147,14 +147,14 @@ def test_while_kernels_compile_scipy_answers_and_says_so(monkeypatch, scene_id):
 
     from app.numerics import jit
 
-    monkeypatch.setattr(simulation, "ANSWER_WHILE_COMPILING", True)
+    server = simulation.Gates(answer_while_compiling=True)
     with monkeypatch.context() as m:
         m.setattr(jit, "ready", lambda name: False)
-        fallback = simulation.simulate_scene(scene_id, request(t_end=3.0))
+        fallback = simulation.simulate_scene(scene_id, request(t_end=3.0), server)
     stats = fallback["stats"]
     assert stats["path"] == "scipy-fallback" and stats["method"] == "DOP853"
     assert "still being compiled" in stats["reason"] and stats["error_reference"].startswith("DOP853 at")
-    compiled = simulation.simulate_scene(scene_id, request(t_end=3.0))
+    compiled = simulation.simulate_scene(scene_id, request(t_end=3.0), server)
     assert compiled["stats"]["path"] == "compiled"
     # the same motion within the two runs' error estimates
     bound = stats["error_estimate"] + compiled["stats"]["error_estimate"]
@@ -166,7 +166,10 @@ SCENES_COORDINATES = {"simple-pendulum": ["theta"], "spherical-pendulum": ["thet
 
 
 def test_scripts_without_a_server_compile_in_line(monkeypatch):
-    monkeypatch.setattr(simulation, "ANSWER_WHILE_COMPILING", False)
+    from app.numerics import jit
+
+    monkeypatch.setattr(jit, "ready", lambda name: False)  # not compiled yet: a script waits for it
+    assert simulation.GATES.answer_while_compiling is False
     doc = simulation.simulate_scene("simple-pendulum", request(t_end=1.0))
     assert doc["stats"]["path"] == "compiled"
 
@@ -204,8 +207,7 @@ def test_auto_choosing_radau_waits_for_the_python_loop_slot(monkeypatch):
     d = derive(STIFF_SPRING)
     quiet = request(initial={"r": circular_radius(1e6, 1.0, 1.0), "theta_dot": 1.0}, t_end=1.0, rtol=1e-6, atol=1e-8)
     monkeypatch.setattr(limits, "WALL_SECONDS", 0.2)
-    # a server still compiling would answer the compiled run from scipy too: this test is about the plan
-    monkeypatch.setattr(simulation, "ANSWER_WHILE_COMPILING", False)
+    # (GATES compiles in line: a server still compiling would answer the compiled run from scipy too)
     assert simulation.GATES.python.acquire(timeout=1.0)  # another scipy run is in progress
     try:
         with pytest.raises(OverCapacity, match="Python step loop"):

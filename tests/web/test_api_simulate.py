@@ -160,11 +160,10 @@ def test_api_responses_are_gzipped_for_clients_that_accept_it(client):
     assert int(zipped.headers["content-length"]) < len(plain.content) / 2
 
 
-def test_a_request_while_kernels_compile_is_answered_by_scipy(client, monkeypatch):
+def test_a_request_while_kernels_compile_is_answered_by_scipy(client, services, monkeypatch):
     from app.numerics import jit
-    from app.service import simulation
 
-    monkeypatch.setattr(simulation, "ANSWER_WHILE_COMPILING", True)  # as the server's start-up sets it
+    monkeypatch.setattr(services.gates, "answer_while_compiling", True)  # as a server that warms up in the background
     monkeypatch.setattr(jit, "ready", lambda name: False)  # nothing compiled yet
     response = client.post("/api/scenes/damped-pendulum/simulate", json={"initial": {}, "samples": 30})
     assert response.status_code == 200, response.text
