@@ -32,10 +32,9 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
-import scipy.linalg
-import scipy.optimize
 import sympy as sp
 
+from app import late
 from app.engine.budget import within_budget
 from app.engine.derive import Derivation, positive_names
 from app.engine.kinks import away_from_kinks
@@ -188,9 +187,9 @@ def _modes(
         return None
     if np.allclose(Kn, Kn.T, rtol=1e-10, atol=1e-12 * max(np.abs(Kn).max(), 1e-300)):
         # symmetric K, positive M: real omega^2 and M-orthogonal shapes
-        w2, vectors = scipy.linalg.eigh((Kn + Kn.T) / 2, (Mn + Mn.T) / 2)
+        w2, vectors = late.module("scipy.linalg").eigh((Kn + Kn.T) / 2, (Mn + Mn.T) / 2)
     else:
-        w2c, vectors = scipy.linalg.eig(Kn, Mn)
+        w2c, vectors = late.module("scipy.linalg").eig(Kn, Mn)
         order = np.argsort(w2c.real)
         w2, vectors = w2c.real[order], vectors[:, order]
     closed: list[sp.Expr] = []
@@ -271,7 +270,7 @@ def _search(
             break
         with np.errstate(all="ignore"):
             try:
-                sol = scipy.optimize.root(
+                sol = late.module("scipy.optimize").root(
                     lambda x: g(*x, *k).ravel(), np.array(start, dtype=float), jac=lambda x: jac(*x, *k), method="hybr"
                 )
             except (ValueError, ZeroDivisionError, FloatingPointError):
@@ -460,7 +459,7 @@ def _roots_1d(dU: sp.Expr, r: sp.Symbol, values: Mapping[sp.Symbol, float], nonn
     for a, b, ya, yb in zip(grid[:-1], grid[1:], y[:-1], y[1:], strict=True):
         if not (np.isfinite(ya) and np.isfinite(yb)) or ya * yb > 0:
             continue
-        x0 = a if ya == 0 else scipy.optimize.brentq(lambda x: f(x)[0], a, b, xtol=1e-14)
+        x0 = a if ya == 0 else late.module("scipy.optimize").brentq(lambda x: f(x)[0], a, b, xtol=1e-14)
         scale = max(abs(ya), abs(yb), 1.0)
         # a sign change across a pole is not a root
         if abs(f(x0)[0]) <= 1e-8 * scale and all(abs(x0 - z) > 1e-9 for z in roots):

@@ -42,8 +42,8 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.linalg import schur, solve_sylvester
 
+from app import late
 from app.numerics.methods import NONSTIFF, STIFF, symplectic_for
 from app.numerics.system import NumericSystem
 
@@ -90,14 +90,15 @@ def jacobian(system: NumericSystem, t: float, y: np.ndarray, k: np.ndarray) -> n
 
 def fast_swing(J: np.ndarray, F: np.ndarray, threshold: float) -> np.ndarray:
     """Per component, how far the fast modes (|lambda| >= threshold) swing the state about the slow motion."""
-    T, Q, slow_count = schur(J, output="complex", sort=lambda x: abs(x) < threshold)
+    linalg = late.module("scipy.linalg")  # imported with the first analysis, not with the app
+    T, Q, slow_count = linalg.schur(J, output="complex", sort=lambda x: abs(x) < threshold)
     m = J.shape[0]
     if slow_count == m:
         return np.zeros(m)
     z = Q.conj().T @ F.astype(complex)
     T11, T12, T22 = T[:slow_count, :slow_count], T[:slow_count, slow_count:], T[slow_count:, slow_count:]
     # T11 X - X T22 = -T12 decouples the blocks (their spectra are disjoint)
-    X = solve_sylvester(T11, -T22, -T12) if slow_count else np.zeros((0, m - slow_count))
+    X = linalg.solve_sylvester(T11, -T22, -T12) if slow_count else np.zeros((0, m - slow_count))
     basis = Q @ np.vstack([X, np.eye(m - slow_count)])  # the fast invariant subspace
     # fast displacement d = T22^-1 z_fast; its modes T22 w_i = lambda_i w_i swing with amplitude |c_i| |basis w_i|
     lam, W = np.linalg.eig(T22)

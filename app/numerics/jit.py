@@ -1,5 +1,8 @@
 """Generated source to callable functions: plain Python now, numba on first need.
 
+numba itself is imported on first need too (``compiled_functions``; ``app.numerics.bound`` hands
+the compiled functions to the kernels): a server answers before it has loaded it.
+
 numba caches compiled code only for functions defined in a real file, so the
 generated functions are written to ``<cache>/generated/rhs_<hash>.py`` (named
 by a hash of their text, written once, never rewritten) and imported from
@@ -21,10 +24,6 @@ from collections.abc import Callable
 from types import ModuleType
 
 import numpy
-from numba.core import types
-from numba.core.types.function_type import WrapperAddressProtocol
-from numba.experimental.function_type import _get_wrapper_address
-from numba.extending import typeof_impl
 
 from app.numerics.paths import generated_dir
 
@@ -51,33 +50,6 @@ def mark_ready(name: str) -> None:
 
 def ready(name: str) -> bool:
     return name in _ready
-
-
-class Bound(WrapperAddressProtocol):
-    """A compiled generated function as a first-class function argument of the kernels, resolved once.
-
-    Handing numba a dispatcher makes it look up the function's wrapper address at
-    every Python-to-kernel call (hundreds of microseconds); this object hands over the
-    address found once, per system and function."""
-
-    def __init__(self, dispatcher, signature):
-        self.dispatcher = dispatcher  # keeps the compiled code alive
-        self.sig = signature
-        self.address = _get_wrapper_address(dispatcher, signature)
-        self.numba_type = types.FunctionType(signature)  # what numba's typeof would build at every call
-
-    def __wrapper_address__(self) -> int:
-        return self.address
-
-    def signature(self):
-        return self.sig
-
-
-@typeof_impl.register(Bound)
-def _typeof_bound(value: Bound, context) -> types.FunctionType:
-    # the type found once: numba otherwise rebuilds the function type from the signature at every
-    # Python-to-kernel call (13 us of a 38 us call measured)
-    return value.numba_type
 
 
 def python_functions(sources: dict[str, str]) -> dict[str, Callable]:

@@ -6,6 +6,7 @@ import threading
 from dataclasses import dataclass, field
 from functools import cached_property
 from types import ModuleType
+from typing import TYPE_CHECKING
 
 import numpy as np
 import sympy as sp
@@ -13,6 +14,9 @@ import sympy as sp
 from app.engine.derive import Derivation
 from app.numerics import jit
 from app.numerics.generate import Names, browser_source, hamilton_source, jacobian_source, momenta_source, rhs_source
+
+if TYPE_CHECKING:
+    from app.numerics.bound import Bound
 
 
 @dataclass
@@ -61,14 +65,15 @@ class NumericSystem:
                 self._compiled = jit.compiled_functions(self._compiled_sources())
             return self._compiled
 
-    def bound(self, name: str) -> jit.Bound:
+    def bound(self, name: str) -> Bound:
         """``rhs`` or ``ham`` compiled, ready to hand to a kernel (the address looked up once per system)."""
         with self._lock:
             found = self._bound.get(name)
         if found is None:
+            from app.numerics.bound import Bound
             from app.numerics.kernels.common import RHS_SIG
 
-            found = jit.Bound(getattr(self.compiled(), name), RHS_SIG)
+            found = Bound(getattr(self.compiled(), name), RHS_SIG)
             with self._lock:
                 self._bound[name] = found
         return found

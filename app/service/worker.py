@@ -68,7 +68,17 @@ from app.settings import settings
 log = logging.getLogger(__name__)
 
 MAX_TASKS = 200  # a worker is replaced after this many jobs, so caches cannot grow without bound
-PRELOAD = ("app.service.user_systems", "app.service.simulation", "app.service.checking")  # a missing module is skipped
+# what the forkserver imports once for every worker it forks (a missing module is skipped); numba
+# (with its cache folder set) and scipy too, which the web process itself imports on first use (app/late.py)
+PRELOAD = (
+    "app.service.user_systems",
+    "app.service.simulation",
+    "app.service.checking",
+    "app.numerics.kernels.common",
+    "scipy.integrate",
+    "scipy.linalg",
+    "scipy.optimize",
+)
 ENTRY = "app.service.worker_entry"
 # a job's failure that is about the input, already worded for the user; anything else is the server's
 REFUSALS: tuple[type[BaseException], ...] = (Refused, OverCapacity)  # app/errors.py: the input's or the load's

@@ -13,9 +13,11 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_the_web_process_imports_no_integrator_or_units_library_at_start():
-    """scipy.integrate (the scipy fallback and methods), sympy.physics.units (simplify's first call) and
-    nbformat (notebook exports) are imported where first used, not by app.main."""
-    code = "import sys, app.main; print(' '.join(m for m in ('scipy.integrate', 'sympy.physics.units', 'nbformat') if m in sys.modules))"
+    """scipy (the scipy fallback and methods, the stiffness analysis, normal modes), sympy.physics.units
+    (simplify's first call), nbformat (notebook exports) and numba (the first compiled run, or the
+    warm-up) are imported where first used (app/late.py), not by app.main."""
+    late = ("scipy", "sympy.physics.units", "nbformat", "numba", "llvmlite")
+    code = f"import sys, app.main; print(' '.join(m for m in {late!r} if m in sys.modules))"
     env = {**os.environ, "LAGRANGE_WARM": "0", "PYTHONPATH": str(ROOT)}
     out = subprocess.run([sys.executable, "-c", code], env=env, cwd=ROOT, capture_output=True, text=True, check=True)
     assert out.stdout.split() == []

@@ -11,24 +11,19 @@ dense output; a state outside its bound ends the run (a runaway).
 
 from __future__ import annotations
 
-import importlib
-import threading
 import time
 from types import ModuleType
 
 import numpy as np
 
+from app import late
 from app.numerics.methods.base import Method, Problem, Trajectory, outside_names
-
-_IMPORTING = threading.Lock()
 
 
 def scipy_integrate() -> ModuleType:
     """scipy.integrate, imported on first use (0.5-1 s, which a server answering from its compiled
-    kernels need not pay at start) and by one thread at a time: two threads importing it at once can
-    each meet the other's half-initialised submodules and fail."""
-    with _IMPORTING:
-        return importlib.import_module("scipy.integrate")
+    kernels need not pay at start) and by one thread at a time (``app.late``)."""
+    return late.module("scipy.integrate")
 
 
 class _OutOfBudget(Exception):
