@@ -207,8 +207,8 @@ export class SimulationView {
 }
 
 function describe(stats) {
-  const parts = [`Server run: method ${stats.method}`];
-  if (stats.reason) parts.push(`(${stats.reason})`);
+  // "method Vern8 (non-stiff: ...)": the reason belongs to the method, not to the list after it
+  const parts = [`Server run: method ${stats.method}` + (stats.reason ? ` (${stats.reason})` : "")];
   parts.push(`run time ${fmt((stats.wall_time_s || 0) * 1000)} ms`);
   if (stats.error_estimate !== undefined && stats.error_estimate !== null) parts.push(`estimated error ${fmt(stats.error_estimate)}`);
   return parts.join(", ") + "." + ended(stats);
