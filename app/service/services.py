@@ -3,7 +3,8 @@
 ``app.main``'s lifespan builds one ``Services`` and hands it to the routes as
 lifespan state (``app.web.deps`` reads it from the request); nothing here is a
 module global, so two apps (or a test's own service) never share a pool by accident.
-The worker pool's processes start with the first user job, not here.
+The users' pool starts its processes with its first job, the scenes' worker with
+the warm-up (``warm``) or its first run; none starts here.
 """
 
 from __future__ import annotations
