@@ -248,6 +248,10 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
   }
 
   function preview(request) {
+    // a server run asked for before this input is out of date: it is not drawn (drawing every
+    // plot, a 3-D one among them, blocked the next preview frames for up to 0.3 s); the run
+    // for the latest settings follows when the input settles
+    ++generation;
     // at most one preview per displayed frame: the latest input wins
     const first = pendingPreview === null;
     pendingPreview = request;
