@@ -257,44 +257,33 @@ def _same_document(a, b):
         np.testing.assert_array_equal(a["state"][q], b["state"][q])
 
 
-def test_a_scenes_python_loop_runs_in_a_worker_process_with_the_same_result():
-    """A scipy method asked for by name runs in the pool's worker (off the web process's GIL); the event
-    that ends the block's run on its ramp crosses the process boundary, and the answer is the one in line."""
-    from app.service.worker import WorkerPool
-
-    ran_in = []
-    pool = WorkerPool(workers=1, memory_mb=1024)
-
-    def offload(job, *args, timeout):
-        ran_in.append(job.__name__)
-        return pool.run(job, *args, timeout=timeout)
-
-    try:
-        asked = request(method="RK45", t_end=5.0)
-        away = simulation.simulate_scene("incline-block", asked, simulation.Gates(offload=offload))
-    finally:
-        pool.stop()
-    here = simulation.simulate_scene("incline-block", asked)
-    assert ran_in == ["run_scene_plan"]
-    assert away["stats"]["event"] is not None and away["stats"]["method"] == "RK45"
-    _same_document(away, here)
-
-
-def test_the_apps_scene_runs_go_to_a_worker_of_their_own_never_to_the_users_pool():
-    """The app's gates send a scipy run to the scenes' worker (warmed with every scene's system): the users'
-    pool, where derivations queue, is never started, and the answer is the one in line."""
+def test_the_apps_scene_runs_go_to_a_worker_of_their_own_never_to_the_users_pool(caplog):
+    """The app's gates send a scipy method asked for by name to the scenes' worker process (warmed with
+    every scene's system), off the web process's GIL: the users' pool, where derivations queue, is never
+    started; the event that ends the block's run on its ramp crosses the process boundary, and the
+    answer is the one in line."""
     from app.service.services import Services
     from app.settings import Settings
 
     services = Services.start(Settings(memory_budget_mb=4000, warm=False))
+    sent = []
+    to_worker = services.gates.offload
+
+    def spy(job, *args, timeout):
+        sent.append(job.__name__)
+        return to_worker(job, *args, timeout=timeout)
+
+    services.gates.offload = spy
     try:
         services.warm().join()
+        assert "could not be warmed" not in caplog.text
         asked = request(method="RK45", t_end=5.0)
         away = simulation.simulate_scene("incline-block", asked, services.gates)
+        assert sent == ["run_scene_plan"] and to_worker.__self__ is services.scenes
         assert services.pool._pool is None  # noqa: SLF001 - the users' pool never started
-        assert services.scenes._pool is not None and services.scenes.users is False  # noqa: SLF001
     finally:
         services.stop()
+    assert away["stats"]["event"] is not None and away["stats"]["method"] == "RK45"
     _same_document(away, simulation.simulate_scene("incline-block", asked))
 
 
