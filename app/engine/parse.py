@@ -421,7 +421,8 @@ class _Checker:
                 raise self.refuse(node, f"this number is undefined or not real ({name} of {self.fold(node, lambda: float(exact)):g})")
             function = ALLOWED[name].floating
             value = self.fold(node, lambda: function(*(a.value for a in arguments)))
-            return _Facts(value, None, 1, inside, 0, calls)
+            # SymPy keeps sin(1) unevaluated and combines its powers as a symbol's ((sin(1)**5)**52 is sin(1)**260)
+            return _Facts(value, None, 1, inside, 1, calls)
         return _Facts(None, None, terms, inside, degree, calls)
 
     def exp_log_powers(self, argument: ast.AST, depth: int) -> list[tuple[ast.AST, _Facts, _Facts]]:
