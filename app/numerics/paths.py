@@ -13,6 +13,7 @@ cache are bounded in size (app/service/disk.py), while the chapter's stay.
 
 from __future__ import annotations
 
+import hashlib
 import os
 import tempfile
 from pathlib import Path
@@ -49,7 +50,54 @@ def configure_numba() -> Path:
 
     if numba.core.config.CACHE_DIR != str(target):
         numba.core.config.reload_config()
+    drop_stale_kernels(target)
     return target
+
+
+KERNELS = Path(__file__).resolve().with_name("kernels")
+STAMP = "sources.sha256"
+
+
+def kernels_cache(numba_cache: Path) -> Path:
+    """The kernels' folder in numba's cache: the source folder's name and the SHA-1 of its path
+    (the rule of numba's ``_CacheLocator.get_suitable_cache_subpath``, copied: that class is private)."""
+    folder = str(KERNELS)
+    return numba_cache / f"{KERNELS.name}_{hashlib.sha1(folder.encode()).hexdigest()}"
+
+
+def kernels_stamp() -> str:
+    """A hash of every source file of the kernels' package."""
+    digest = hashlib.sha256()
+    for source in sorted(KERNELS.glob("*.py")):
+        digest.update(source.name.encode())
+        digest.update(source.read_bytes())
+    return digest.hexdigest()
+
+
+def drop_stale_kernels(numba_cache: Path) -> None:
+    """Empty the kernels' cache when any of their sources changed since it was filled.
+
+    numba checks only the date and size of the file that defines a cached function, but a kernel's
+    machine code also holds what it inlined from its sibling modules (the unrolled stages, the
+    tableaux as constants, common's helpers): after a change there, the cache would keep serving
+    the old code.  So the folder carries the hash of all the kernels' sources, and a different
+    hash (or none, from a cache filled before this rule) empties it; the kernels then compile again."""
+    folder = kernels_cache(numba_cache)
+    stamp = folder / STAMP
+    now = kernels_stamp()
+    try:
+        if stamp.read_text() == now:
+            return
+    except OSError:
+        pass
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        for cached in folder.iterdir():
+            if cached.suffix in (".nbi", ".nbc"):
+                cached.unlink(missing_ok=True)
+        stamp.write_text(now)
+    except OSError:  # a read-only cache: numba compiles in memory and cannot save anyway
+        pass
 
 
 GENERATED = "generated"
