@@ -20,9 +20,9 @@ import math
 
 import numpy as np
 from CyRK import cyjit, nbsolve2_ivp
-from numba import carray, njit, types
+from numba import njit, types
 
-from app.numerics.kernels.common import F64, I64, RHS, VEC
+from app.numerics.kernels.common import F64, I64, RHS, VEC, address
 from app.numerics.methods import METHODS, Problem
 from app.numerics.simulate import simulate
 from app.numerics.system import NumericSystem
@@ -36,17 +36,17 @@ REPEATS = 25
 @njit(types.void(RHS, F64, VEC, VEC, VEC, I64))
 def bare_calls(f, t, y, k, out, count):
     for _ in range(count):
-        f(t, y, k, out)
+        f(t, address(y), address(k), address(out))
         y[0] += 1e-300 * out[0]  # a data dependence, so the calls cannot be hoisted
 
 
-def cyrk_rhs(system: NumericSystem, k: np.ndarray):
+def cyrk_rhs(system: NumericSystem):
+    # CyRK's callback takes raw pointers too (dy, t, y, args): the generated function is called as the kernels call it
     rhs = system.compiled().rhs
-    m, nk = 2 * system.n, k.size
 
     @cyjit
     def f(dy, t, y, args):
-        rhs(t, carray(y, (m,)), carray(args, (nk,)), carray(dy, (m,)))
+        rhs(t, y, args, dy)
 
     return f
 
@@ -128,7 +128,7 @@ def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
         )
     )
 
-    address = cyrk_rhs(system, k).address
+    address = cyrk_rhs(system).address
     for method_id, name in enumerate(CYRK):
 
         def final(r, method_id=method_id):

@@ -5,10 +5,15 @@ Kept apart from ``app.numerics.jit`` so that importing the app does not import n
 
 from __future__ import annotations
 
+import ctypes
+
+import numpy as np
 from numba.core import types
 from numba.core.types.function_type import WrapperAddressProtocol
 from numba.experimental.function_type import _get_wrapper_address
 from numba.extending import typeof_impl
+
+_C_RHS = ctypes.CFUNCTYPE(None, ctypes.c_double, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p)
 
 
 class Bound(WrapperAddressProtocol):
@@ -23,6 +28,16 @@ class Bound(WrapperAddressProtocol):
         self.sig = signature
         self.address = _get_wrapper_address(dispatcher, signature)
         self.numba_type = types.FunctionType(signature)  # what numba's typeof would build at every call
+        # the same machine code called from Python, through its C entry (the RHS_SIG convention: a
+        # double and three addresses); kept here so that it lives as long as the address does
+        self._c_function = _C_RHS(self.address)
+
+    def __call__(self, t: float, y: np.ndarray, k: np.ndarray, out: np.ndarray) -> None:
+        """The function called from Python: out = f(t, y, k), for contiguous float64 arrays (checked)."""
+        for a in (y, k, out):
+            if a.dtype != np.float64 or not a.flags.c_contiguous:
+                raise TypeError("a compiled generated function takes contiguous float64 arrays")
+        self._c_function(float(t), y.ctypes.data, k.ctypes.data, out.ctypes.data)
 
     def __wrapper_address__(self) -> int:
         return self.address

@@ -84,7 +84,7 @@ class NumericSystem:
         out = np.empty(2 * self.n)
         if self._compiled is not None:
             # the numba twin once loaded: a long expression costs it about 1 us instead of 10-100 us
-            self._compiled.rhs(
+            self.bound("rhs")(
                 float(t), np.ascontiguousarray(y, dtype=float), np.ascontiguousarray(k, dtype=float), out
             )
             return out

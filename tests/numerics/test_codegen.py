@@ -43,7 +43,7 @@ def test_rhs_matches_the_engine(key):
         np.testing.assert_allclose(got[: s.n], y[s.n :])
         np.testing.assert_allclose(got[s.n :], expected, rtol=1e-11, atol=1e-11)
         compiled = np.empty(2 * s.n)
-        s.compiled().rhs(t, y, k, compiled)
+        s.bound("rhs")(t, y, k, compiled)
         np.testing.assert_allclose(compiled, got, rtol=1e-13, atol=1e-13)
 
 

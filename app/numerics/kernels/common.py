@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 from numba import njit, types
+from numba.extending import intrinsic
 
 from app.numerics.paths import configure_numba
 
@@ -14,8 +15,14 @@ I64 = types.int64
 VEC = types.float64[::1]
 MAT = types.float64[:, ::1]
 
-# rhs(t, y, k, out): out = dy/dt at (t, y) for the parameter vector k
-RHS_SIG = types.void(F64, VEC, VEC, VEC)
+P64 = types.CPointer(types.float64)
+
+# rhs(t, y, k, out): out = dy/dt at (t, y) for the parameter vector k, each vector as the address of
+# its first element.  Raw addresses, not arrays: an array crosses a first-class call as a structure
+# of seven fields, and with them the kernels' step loops were slow or fast by accidents of the
+# compiler (the same Vern8 loop took 1.6 or 2.4 ms for bench_cyrk's pendulum after edits that added
+# no work); with addresses the call is four machine words, as CyRK's and scipy's C callbacks are.
+RHS_SIG = types.void(F64, P64, P64, P64)
 RHS = types.FunctionType(RHS_SIG)
 
 JIT = {"cache": True, "nogil": True, "error_model": "numpy"}
@@ -38,6 +45,23 @@ STATUS_NAMES = {
     STIFF: "stiffness detected",
     NO_CONVERGENCE: "implicit stage equations did not converge",
 }
+
+
+@intrinsic
+def address(typingctx, array):
+    """The address of a float64 array's first element, to hand to a right-hand side (``RHS_SIG``).
+
+    Nothing keeps the array alive through the address: pass an argument of the kernel, or an array
+    (or a view of one) that the kernel uses again after the call, as numba frees an array after its
+    last use."""
+    if not (isinstance(array, types.Array) and array.dtype == types.float64 and array.layout == "C"):
+        return None
+    signature = P64(array)
+
+    def codegen(context, builder, sig, args):
+        return context.make_array(sig.args[0])(context, builder, args[0]).data
+
+    return signature, codegen
 
 
 @njit(types.boolean(VEC, VEC), **JIT)
@@ -86,11 +110,12 @@ def initial_step(f, t0, y0, f0, k, t_end, rtol, atol, order):
     d1 = _rms(f0, scale)
     h0 = 1e-6 if d0 < 1e-5 or d1 < 1e-5 else 0.01 * d0 / d1
     h0 = min(h0, t_end - t0)
-    y1 = np.empty(n)
+    # y1 and f1 share one buffer: f1 is used after the call, which keeps y1 alive through it (see address)
+    trial = np.empty((2, n))
+    y1, f1 = trial[0], trial[1]
     for i in range(n):
         y1[i] = y0[i] + h0 * f0[i]
-    f1 = np.empty(n)
-    f(t0 + h0, y1, k, f1)
+    f(t0 + h0, address(y1), address(k), address(f1))
     for i in range(n):
         f1[i] -= f0[i]
     d2 = _rms(f1, scale) / h0

@@ -31,6 +31,7 @@ from app.numerics.kernels.common import (
     RHS,
     RUNNING,
     VEC,
+    address,
     all_finite,
     compensated_add,
     outside,
@@ -51,7 +52,7 @@ def composed_step(f, k, t, h, weights, y, acc, comp, work):
             compensated_add(y, comp, n + i, 0.5 * hw * acc[i])
         for i in range(n):
             compensated_add(y, comp, i, hw * y[n + i])
-        f(t, y, k, work)
+        f(t, address(y), address(k), address(work))
         acc[:] = work[n:]
         for i in range(n):
             compensated_add(y, comp, n + i, 0.5 * hw * acc[i])
@@ -68,7 +69,7 @@ def local_errors(f, k, weights, times, states, h, atol, rtol, order, out):
         one = states[s].copy()
         two = states[s].copy()
         acc1 = np.empty(n)
-        f(t, one, k, work)
+        f(t, address(one), address(k), address(work))
         acc1[:] = work[n:]
         acc2 = acc1.copy()
         composed_step(f, k, t, h, weights, one, acc1, np.zeros(m), work)
@@ -92,7 +93,7 @@ def run(f, k, t_out, weights, substeps, bound, chunk, y, acc, comp, st, Y):
     work = np.empty(m)
     if st[STARTED] == 0.0:
         Y[0, :] = y
-        f(t_out[0], y, k, work)
+        f(t_out[0], address(y), address(k), address(work))
         acc[:] = work[n:]
         st[NFEV] += 1
         st[STARTED] = 1.0

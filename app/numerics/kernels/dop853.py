@@ -33,6 +33,7 @@ from app.numerics.kernels.common import (
     STEP_TOO_SMALL,
     STIFF,
     VEC,
+    address,
     initial_step,
     outside,
 )
@@ -79,7 +80,7 @@ def run(f, k, t_out, rtol, atol, bound, stop_on_stiff, chunk, y, fy, st, Y):
     F = np.empty((7, n))
     if st[STARTED] == 0.0:
         st[T] = t_out[0]
-        f(st[T], y, k, fy)
+        f(st[T], address(y), address(k), address(fy))
         st[H] = initial_step(f, st[T], y, fy, k, t_end, rtol, atol, 7.0)
         st[NFEV] += 2
         st[STARTED] = 1.0
@@ -115,13 +116,13 @@ def run(f, k, t_out, rtol, atol, bound, stop_on_stiff, chunk, y, fy, st, Y):
                 _stage_state(K, y, h, s, ys)
                 if s == N_STAGES - 1:
                     y12[:] = ys
-                f(t + C[s] * h, ys, k, K[s])
+                f(t + C[s] * h, address(ys), address(k), address(K[s]))
             for i in range(n):
                 acc = 0.0
                 for j in range(N_STAGES):
                     acc += B[j] * K[j, i]
                 y_new[i] = y[i] + h * acc
-            f(t_new, y_new, k, K[N_STAGES])
+            f(t_new, address(y_new), address(k), address(K[N_STAGES]))
             st[NFEV] += N_STAGES
             # error norm: combined 5th- and 3rd-order estimates
             for i in range(n):
@@ -161,7 +162,7 @@ def run(f, k, t_out, rtol, atol, bound, stop_on_stiff, chunk, y, fy, st, Y):
         if j_out < n_out and t_out[j_out] < t_new:
             for s in range(N_STAGES + 1, N_EXTENDED):
                 _stage_state(K, y, h, s, ys)
-                f(t + C[s] * h, ys, k, K[s])
+                f(t + C[s] * h, address(ys), address(k), address(K[s]))
             st[NFEV] += N_EXTENDED - N_STAGES - 1
             for i in range(n):
                 dy = y_new[i] - y[i]

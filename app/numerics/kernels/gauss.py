@@ -33,6 +33,7 @@ from app.numerics.kernels.common import (
     RHS,
     RUNNING,
     VEC,
+    address,
     all_finite,
     compensated_add,
     outside,
@@ -59,7 +60,7 @@ def gl_step(f, k, t, h, A, b, c, E, scale_floor, z, comp, K, Kprev, st):
                     acc += E[i, jj] * Kprev[jj, col]
                 K[i, col] = acc
     else:
-        f(t, z, k, Z)
+        f(t, address(z), address(k), address(Z))
         st[NFEV] += 1
         for i in range(s):
             K[i, :] = Z
@@ -72,7 +73,7 @@ def gl_step(f, k, t, h, A, b, c, E, scale_floor, z, comp, K, Kprev, st):
                 for jj in range(s):
                     acc += A[i, jj] * K[jj, col]
                 Z[col] = z[col] + h * acc
-            f(t + c[i] * h, Z, k, Knew[i])
+            f(t + c[i] * h, address(Z), address(k), address(Knew[i]))
         st[NFEV] += s
         st[SWEEPS] += 1
         change = 0.0
@@ -136,7 +137,7 @@ def run(f, k, t_out, A, b, c, E, substeps, bound, scale_floor, chunk, z, comp, K
     K = np.empty((s, m))
     work = np.empty(m)
     if st[STARTED] == 0.0:
-        f(t_out[0], z, k, work)
+        f(t_out[0], address(z), address(k), address(work))
         Y[0, :n] = z[:n]
         Y[0, n:] = work[:n]
         st[NFEV] += 1
@@ -160,7 +161,7 @@ def run(f, k, t_out, A, b, c, E, substeps, bound, scale_floor, chunk, z, comp, K
             done_here += 1
         sub = 0
         j += 1
-        f(t_out[j], z, k, work)
+        f(t_out[j], address(z), address(k), address(work))
         st[NFEV] += 1
         Y[j, :n] = z[:n]
         Y[j, n:] = work[:n]

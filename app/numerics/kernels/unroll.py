@@ -50,7 +50,7 @@ def _stage_block(tab: ModuleType, s: int, previous: int | None) -> list[str]:
     if previous is not None:
         lines.append(f"        K[{previous}, i] = ks[i]")
     lines.append(f"        ys[i] = y[i] + h * ({_sum(tab.A[s], row_of)})")
-    lines.append(f"    f(t + {_literal(tab.C[s])} * h, ys, k, ks)")
+    lines.append(f"    f(t + {_literal(tab.C[s])} * h, address(ys), address(k), address(ks))")
     return lines
 
 
@@ -59,6 +59,8 @@ def source(tab: ModuleType = vern8_tableau) -> str:
         f'"""{tab.__name__.rsplit(".", 1)[-1]} written out by app.numerics.kernels.unroll: do not edit, re-run it."""',
         "",
         "from numba import njit",
+        "",
+        "from app.numerics.kernels.common import address",
         "",
         "",
         '@njit(inline="always")',
