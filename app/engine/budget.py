@@ -131,6 +131,11 @@ def tidy(expr: sp.Expr, seconds: float = SIMPLIFY_SECONDS) -> sp.Expr:
         left = _remaining(seconds)
         full = within_budget(lambda: sp.simplify(cheap), None, left) if left > 0.01 else None
         if full is None:
+            # simplify failed or ran out of its own time (not a shared budget's rest): it would again, so the
+            # cheap form is remembered (a derivation shows its accelerations twice, and the double
+            # pendulum's document spent 0.5 s on each attempt)
+            if left >= seconds and len(_TIDY_CACHE) < _TIDY_CACHE_SIZE:
+                _TIDY_CACHE[expr] = cheap
             return cheap
         # Keep the angles the reader wrote: reject forms that trade sin θ cos θ for sin 2θ.
         if not (_angles(full) - _angles(cheap)) and sp.count_ops(full) <= sp.count_ops(cheap):

@@ -1,0 +1,48 @@
+"""Display simplification under time budgets: what is remembered and what is tried again."""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+import sympy as sp
+
+from app.engine import budget
+
+x, y = sp.symbols("x y")
+
+
+@pytest.fixture
+def slow_simplify(monkeypatch):
+    """sympy.simplify as the budget calls it: SymPy work for 2 s (the budget's signal is raised only in
+    SymPy's or the app's frames), counting its calls."""
+    calls = []
+    budget.tidy((x + 3) ** 2 / (x + y))  # first calls load code (SymPy's units, the cheap step's): not in the budgets
+
+    def slow(expr, *args, **kwargs):
+        calls.append(expr)
+        end = time.monotonic() + 2.0
+        while time.monotonic() < end:
+            sp.expand((x + y) ** 3)
+        return expr
+
+    monkeypatch.setattr(budget.sp, "simplify", slow)
+    monkeypatch.setattr(budget, "_TIDY_CACHE", {})
+    return calls
+
+
+def test_a_simplification_out_of_its_own_time_is_not_tried_again(slow_simplify):
+    expr = (x + 1) ** 2 / (x + y)
+    first = budget.tidy(expr, seconds=0.1)
+    assert len(slow_simplify) == 1
+    assert budget.tidy(expr, seconds=0.1) == first
+    assert len(slow_simplify) == 1  # remembered: the same attempt would run out again
+
+
+def test_one_cut_short_by_a_shared_budget_is_tried_again_later(slow_simplify):
+    expr = (x + 2) ** 2 / (x - y)
+    with budget.display_budget(0.1):  # less than the expression's own 0.2 s: the shared budget cut it
+        budget.tidy(expr, seconds=0.2)
+    assert len(slow_simplify) == 1
+    budget.tidy(expr, seconds=0.2)
+    assert len(slow_simplify) == 2
