@@ -68,7 +68,7 @@ class Allowed:
 
 
 # The function allowlist: its one home.  Everything else (the schemas' help, the pages' menus,
-# the figure trees of app/viz/exprtree.py) reads it from here.
+# the figure trees of app/engine/trees.py) reads it from here.
 ALLOWED: dict[str, Allowed] = {
     "sin": Allowed(sp.sin, math.sin),
     "cos": Allowed(sp.cos, math.cos),
@@ -406,6 +406,7 @@ class _Checker:
             raise self.refuse(node, f"functions nested more than {MAX_CALLS} deep")
         inside = max(max(a.inside, a.terms) for a in arguments)
         terms, degree = 1, 1.0
+        powers: list[_Facts] = []
         if name == "exp":
             # SymPy rewrites exp(c*log(u) + rest) as u**c * exp(rest), also for a constant u
             # (exp(10**15*log(0.5)) is 2**-10**15): bound those powers as powers
@@ -421,9 +422,24 @@ class _Checker:
                 raise self.refuse(node, f"this number is undefined or not real ({name} of {self.fold(node, lambda: float(exact)):g})")
             function = ALLOWED[name].floating
             value = self.fold(node, lambda: function(*(a.value for a in arguments)))
+            rational = self.exact_call(node, name, powers, depth)
+            if rational is not None:
+                return _Facts(value, rational, 1, inside, 0, calls)
             # SymPy keeps sin(1) unevaluated and combines its powers as a symbol's ((sin(1)**5)**52 is sin(1)**260)
             return _Facts(value, None, 1, inside, 1, calls)
         return _Facts(None, None, terms, inside, degree, calls)
+
+    def exact_call(self, node: ast.Call, name: str, powers: list[_Facts], depth: int) -> Fraction | None:
+        """The exact rational SymPy turns a constant call into, when it does: exp(c*log(u)) is u**c, and
+        log(exp(v)) is v (then ``((10**15 - 1))**-exp(-log(10**15))`` meets the root-index cap instead of
+        sending SymPy after a root of index 10**15)."""
+        argument = node.args[0]
+        if name == "exp" and len(powers) == 1 and len(_chain(_strip_signs(argument)[0], _SUMS)) == 1:
+            return powers[0].exact
+        inner = _strip_signs(argument)[0] if name == "log" else None
+        if isinstance(inner, ast.Call) and getattr(inner.func, "id", "") == "exp" and inner is argument:
+            return self.check(inner.args[0], depth + 2).exact if len(inner.args) == 1 else None
+        return None
 
     def exp_log_powers(self, argument: ast.AST, depth: int) -> list[tuple[ast.AST, _Facts, _Facts]]:
         """The summands c*log(u) (c constant) of an exp's argument, each as (summand, u, c)."""

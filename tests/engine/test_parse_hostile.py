@@ -62,6 +62,8 @@ hostile = st.recursive(leaves, _extend, max_leaves=10)
 @example("((pi)**(5))**-(exp(4))")
 # the same with a constant function value, which SymPy keeps as a symbol too (found by this fuzzer in CI)
 @example("((sin(1))**(5))**(52)")
+# a root whose index only SymPy's exp(c*log(u)) = u**c reveals (found by this fuzzer: a 5 s hang)
+@example("((-1)+(10**15))**-(exp((-1)*log(10**15)))")
 def test_hostile_expressions_are_refused_or_built_quickly_and_real(text):
     try:
         with time_limit(HANG_GUARD):
