@@ -17,7 +17,6 @@ from app.service.user_systems import UserSystems
 from app.settings import Settings
 from app.web.deps import user_systems_service
 from app.web.examples_user import (
-    DOUBLE_PENDULUM,
     EXAMPLES_FILE,
     FORCED_SPRING,
     JSON,
@@ -26,6 +25,7 @@ from app.web.examples_user import (
     SIMULATE_REFUSED,
     SUMMARIES,
     TIMEOUT_SECONDS,
+    UNCACHED_DOUBLE_PENDULUM,
     UNREADABLE,
 )
 from app.web.limits import MAX_BODY_BYTES
@@ -62,13 +62,8 @@ def record() -> dict[str, Any]:
 
 
 def refused(client: TestClient, status: int) -> dict[str, Any]:
-    """The refusal of a derivation no cache holds (a cached answer is served before the fair-share gate,
-    and the app's warm-up derives the double pendulum): its g differs from every example's."""
-    fresh = {
-        **DOUBLE_PENDULUM,
-        "parameters": [{**p, "value": 9.80665} if p["name"] == "g" else p for p in DOUBLE_PENDULUM["parameters"]],
-    }
-    response = client.post("/api/derive", json=fresh)
+    """The refusal of a derivation no cache holds (a cached answer is served before the fair-share gate)."""
+    response = client.post("/api/derive", json=UNCACHED_DOUBLE_PENDULUM)
     if response.status_code != status:
         raise RuntimeError(
             f"expected {status} for the gate's example, got {response.status_code}: {response.text[:200]}"
@@ -81,9 +76,12 @@ def answer_with_time_limit(client: TestClient, seconds: float) -> dict[str, Any]
     short = UserSystems(client.app_state["services"].pool, config=Settings(derive_seconds=seconds))
     app.dependency_overrides[user_systems_service] = lambda: short
     try:
-        return client.post("/api/derive", json=DOUBLE_PENDULUM).json()
+        answer = client.post("/api/derive", json=UNCACHED_DOUBLE_PENDULUM).json()
     finally:
         app.dependency_overrides.pop(user_systems_service)
+    if answer.get("kind") != "timeout":
+        raise RuntimeError(f"expected the time limit's refusal, got {str(answer)[:200]}")
+    return answer
 
 
 if __name__ == "__main__":

@@ -18,6 +18,7 @@ from app.engine.report import display as _show
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.rods import fixed_distances
 from app.engine.transform import Transformed, transform
+from app.engine.trees import maybe_of_sympy
 from app.scenes.reasons import reason
 from app.scenes.types import Parameter, Scene
 
@@ -184,6 +185,7 @@ def scene_json(scene: Scene) -> dict[str, Any]:
 
 def constraint_force_json(f: ConstraintForce, pr: Printer) -> dict[str, Any]:
     """One force of constraint: a function of q, q_dot, t and parameters, with its sign convention."""
+    direction = unit_gradient(f)
     return {
         "name": f.constraint.name,
         **pr.pair(f.force),
@@ -192,7 +194,8 @@ def constraint_force_json(f: ConstraintForce, pr: Printer) -> dict[str, Any]:
         "constraint": pr.pair(f.g),
         "particle": f.constraint.on,
         # the unit vector along grad g on that particle (the way a positive force points), for drawing
-        "direction": [sp.sstr(e) for e in unit_gradient(f)],
+        "direction": [sp.sstr(e) for e in direction],
+        "direction_trees": [maybe_of_sympy(e) for e in direction],
     }
 
 

@@ -18,6 +18,7 @@ from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation
 from app.engine.names import unicode
 from app.engine.transform import Transformed, collected, compact
+from app.engine.trees import maybe_of_sympy
 
 # The steps a reader needs to follow the argument: the Lagrangian, its equations of motion, the
 # accelerations and what is conserved.  The others are bookkeeping a page may fold away.
@@ -36,8 +37,10 @@ class Printer:
         with unbudgeted():  # printing must not eat the simplifications' share of the display budget
             return textbook.latex(expr, self.names)
 
-    def pair(self, expr: sp.Expr) -> dict[str, str]:
-        return {"sympy": sp.sstr(expr), "latex": self.tex(expr)}
+    def pair(self, expr: sp.Expr) -> dict[str, Any]:
+        """An expression in the document: SymPy's text, the LaTeX shown, and the tree the browser evaluates
+        (None when it has none: a function outside the allowlist, or too large for a figure)."""
+        return {"sympy": sp.sstr(expr), "latex": self.tex(expr), "tree": maybe_of_sympy(expr)}
 
 
 def _aligned(rows: list[str]) -> str:

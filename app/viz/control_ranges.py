@@ -22,7 +22,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from app.engine.names import unicode
-from app.viz.exprtree import evaluate, maybe_tree
+from app.viz.exprtree import document_tree, evaluate
 
 DECADE = 10.0  # the useful range reaches this factor either side of a positive default
 LOG_SPAN = 50.0  # a useful range wider than this factor moves on a log scale
@@ -49,8 +49,9 @@ def _names(doc: dict[str, Any]) -> list[str]:
     return [*q, *(f"{c}_dot" for c in q), *doc["parameters"], "t"]
 
 
-def _value(text: str | None, doc: dict[str, Any], env: dict[str, float]) -> float | None:
-    node = maybe_tree(text, _names(doc))
+def _value(pair: dict[str, Any] | None, doc: dict[str, Any], env: dict[str, float]) -> float | None:
+    """A document expression's value at ``env`` (None when it has no tree or no finite value there)."""
+    node = document_tree(pair, _names(doc))
     if node is None:
         return None
     try:
@@ -76,7 +77,7 @@ def damping_marks(doc: dict[str, Any]) -> dict[str, list[dict[str, Any]]]:
         e = stable[0]
         k = names.index(q)
         env = _env(doc, **{c: float(v) for c, v in e["equilibrium"].items()})
-        mass = _value(doc["mass_matrix"][k][k]["sympy"], doc, env)
+        mass = _value(doc["mass_matrix"][k][k], doc, env)
         w2 = e["modes"][0]["omega_squared"] if len(e["modes"]) == 1 else None
         if mass and w2 and w2 > 0:
             value = 2 * mass * math.sqrt(w2)
@@ -90,18 +91,18 @@ def stability_marks(doc: dict[str, Any], ranges: dict[str, tuple[float, float]])
     marks: dict[str, list[dict[str, Any]]] = {}
     coordinate = red.get("coordinate")
     for e in red.get("equilibria") or []:
-        w2 = e.get("omega_squared", {}).get("sympy")
-        where = e.get("position", {}).get("sympy")
+        w2_pair = e.get("omega_squared") or {}
+        w2, where = w2_pair.get("sympy"), (e.get("position") or {}).get("sympy")
         if not w2 or where is None:
             continue
         for p, (lo, hi) in ranges.items():
             if not re.search(rf"\b{re.escape(p)}\b", w2):
                 continue
             grid = _grid(lo, hi)
-            signs = [_value(w2, doc, _env(doc, **{p: x})) for x in grid]
+            signs = [_value(w2_pair, doc, _env(doc, **{p: x})) for x in grid]
             for a, b, fa, fb in zip(grid, grid[1:], signs, signs[1:], strict=False):
                 if fa is not None and fb is not None and fa * fb < 0:
-                    value = _bisect(lambda x, p=p, w2=w2: _value(w2, doc, _env(doc, **{p: x})) or 0.0, a, b)
+                    value = _bisect(lambda x, p=p, w=w2_pair: _value(w, doc, _env(doc, **{p: x})) or 0.0, a, b)
                     label = f"{formula(w2)} = 0: {unicode(coordinate)} = {formula(where)} changes stability"
                     marks.setdefault(p, []).append({"value": value, "label": label})
     return marks
@@ -117,12 +118,12 @@ def separatrix_marks(doc: dict[str, Any], initial: dict[str, float]) -> dict[str
         return {}
     q0 = float(initial.get(q, 0.0))
     start = _env(doc, **{q: q0})
-    u0 = _value(doc["potential"]["sympy"], doc, start)
-    mass = _value(doc["mass_matrix"][0][0]["sympy"], doc, start)
+    u0 = _value(doc["potential"], doc, start)
+    mass = _value(doc["mass_matrix"][0][0], doc, start)
     marks = []
     for e in tops:
         top = float(e["equilibrium"][q])
-        u_top = _value(doc["potential"]["sympy"], doc, _env(doc, **{q: top}))
+        u_top = _value(doc["potential"], doc, _env(doc, **{q: top}))
         if u0 is None or u_top is None or not mass or mass <= 0 or u_top <= u0:
             continue
         # E = ½ M q̇₀² + U(q₀) = U(q_top)

@@ -12,9 +12,10 @@ import math
 from collections.abc import Callable, Sequence
 from functools import partial
 
+from app.engine.trees import TreeError, of_text
 from app.viz import diagrams_blocks as blocks
 from app.viz import diagrams_swing as swing
-from app.viz.exprtree import TreeError, evaluate, tree
+from app.viz.exprtree import evaluate
 from app.viz.names import label
 from app.viz.svg import ACCENT, GUIDE, PARAM, Svg
 
@@ -43,7 +44,7 @@ def particle_points(particles: Sequence[Particle], env: dict[str, float]) -> lis
     points = []
     for name, position in particles:
         try:
-            points.append((name, tuple(evaluate(tree(c), env) for c in position)))
+            points.append((name, tuple(evaluate(of_text(c), env) for c in position)))
         except (TreeError, KeyError, ValueError, ZeroDivisionError, OverflowError):
             continue
     return points

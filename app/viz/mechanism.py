@@ -16,7 +16,8 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from app.viz.exprtree import TreeError, tree
+from app.engine.trees import TreeError, of_text
+from app.viz.exprtree import leaves
 from app.viz.rods import rods
 
 
@@ -276,20 +277,9 @@ class MechanismSpec:
 
 def _names_in(text: str) -> set[str]:
     try:
-        t = tree(text)
+        return leaves(of_text(text))
     except TreeError:
         return set()
-    names: set[str] = set()
-
-    def walk(node: Any) -> None:
-        if isinstance(node, str):
-            names.add(node)
-        elif isinstance(node, list):
-            for child in node[1:]:
-                walk(child)
-
-    walk(t)
-    return names
 
 
 def _moving_axes(
@@ -368,10 +358,10 @@ def mechanism(
     )
     try:
         for name, pos in own:
-            spec.points.append({"label": name, "mass": True, "xyz": [tree(pos[i]) for i in family.axes]})
+            spec.points.append({"label": name, "mass": True, "xyz": [of_text(pos[i]) for i in family.axes]})
         for drawn, group in ((True, family.fixed), (False, family.anchors)):
             for name, pos in group:
-                point = {"label": name, "mass": False, "xyz": [tree(pos[i]) for i in family.axes]}
+                point = {"label": name, "mass": False, "xyz": [of_text(pos[i]) for i in family.axes]}
                 spec.points.append(point if drawn else {**point, "hidden": True})
         index = {p["label"]: i for i, p in enumerate(spec.points)}
         index.update({f"#{k}": k for k in range(len(own))})
@@ -385,9 +375,9 @@ def mechanism(
             spec.curves.append(
                 {
                     "label": name,
-                    "from": tree(lo),
-                    "to": tree(hi),
-                    "xyz": [tree(pos[i]) for i in family.axes],
+                    "from": of_text(lo),
+                    "to": of_text(hi),
+                    "xyz": [of_text(pos[i]) for i in family.axes],
                     "style": style,
                     "moving": bool(set().union(*(_names_in(pos[i]) for i in family.axes)) & ({"t", *coordinates})),
                 }
@@ -395,17 +385,16 @@ def mechanism(
         for name, corners in family.solids:
             spec.solids.append({"label": name, "corners": [index[c] for c in corners]})
         for centre, radius, wrap in family.wheels:
-            spec.wheels.append({"at": index[centre], "radius": tree(radius), "wrap": wrap})
+            spec.wheels.append({"at": index[centre], "radius": of_text(radius), "wrap": wrap})
     except TreeError:
         return None
     for f in forces:
         k = int(f.get("particle", 1)) - 1
-        direction = f.get("direction")
+        direction = f.get("direction_trees")
         if not direction or not 0 <= k < len(own):
             continue
-        try:
-            arrow = [tree(direction[i]) for i in family.axes]
-        except TreeError:
+        arrow = [direction[i] for i in family.axes]
+        if any(a is None for a in arrow):
             continue  # this force is left without an arrow
         spec.forces.append({"name": f["name"], "on": k, "direction": arrow})
     if not spec.points:

@@ -15,9 +15,10 @@ from typing import Any
 
 from app.engine.names import latex, prose
 from app.engine.report import CORE_STEPS
+from app.engine.trees import TreeError, maybe_of_text, of_text
 from app.viz.control_ranges import ticks, useful_range
 from app.viz.diagrams import diagram
-from app.viz.exprtree import TreeError, leaves, maybe_tree, tree
+from app.viz.exprtree import document_tree, leaves
 from app.viz.mechanism import mechanism
 from app.viz.names import label
 from app.viz.panels import Facts, oscillating_equilibria, shown, texts
@@ -33,7 +34,7 @@ def _names(doc: dict[str, Any], extra: Sequence[str] = ()) -> list[str]:
 
 
 def _pair_tree(pair: dict[str, Any] | None, names: Sequence[str]) -> Any:
-    return maybe_tree(pair.get("sympy"), names) if isinstance(pair, dict) else None
+    return document_tree(pair, names)
 
 
 def _steps(doc: dict[str, Any]) -> list[dict[str, Any]]:
@@ -237,7 +238,7 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular) -> dict[s
     names = _names(doc)
     units = {q: "rad" if q in angular else "m" for q in doc["coordinates"]}
     conserved = [
-        {"name": c["name"], "label": label(c["name"]), "tree": maybe_tree(c.get("sympy"), names)}
+        {"name": c["name"], "label": label(c["name"]), "tree": document_tree(c, names)}
         for c in doc.get("conserved", [])
     ]
     return {
@@ -274,7 +275,7 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular) -> dict[s
         "mechanism": spec,
         # where the set-up ends (the browser's preview stops there too, as the server's run does)
         "events": [
-            {"name": e["name"], "message": e["message"], "tree": maybe_tree(e["expression"], names)}
+            {"name": e["name"], "message": e["message"], "tree": maybe_of_text(e["expression"], names)}
             for e in info.get("events", [])
         ],
         "methods": list(methods),
@@ -294,7 +295,7 @@ def moves_in_3d(particles: Sequence[tuple[str, Sequence[str]]], coordinates: Seq
 
     def moves(text: str) -> bool:
         try:
-            return bool(leaves(tree(text)) & moving)
+            return bool(leaves(of_text(text)) & moving)
         except TreeError:
             return False
 

@@ -15,7 +15,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from app.viz.exprtree import leaves, maybe_tree
+from app.viz.exprtree import document_tree, leaves
 
 
 @dataclass(frozen=True)
@@ -45,7 +45,7 @@ def constant_accelerations(doc: dict[str, Any]) -> bool:
     q = doc["coordinates"]
     moving = [*q, *(f"{c}_dot" for c in q), "t"]
     names = [*moving, *doc["parameters"]]
-    trees = [maybe_tree(pair.get("sympy"), names) for pair in doc["accelerations"].values()]
+    trees = [document_tree(pair, names) for pair in doc["accelerations"].values()]
     return all(t is not None and not (leaves(t) & set(moving)) for t in trees)
 
 

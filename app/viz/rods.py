@@ -18,7 +18,8 @@ import random
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from app.viz.exprtree import TreeError, evaluate, leaves, tree
+from app.engine.trees import TreeError, of_text
+from app.viz.exprtree import evaluate, leaves
 
 SAMPLES = 12
 TOLERANCE = 1e-9
@@ -27,7 +28,7 @@ Pair = tuple[int | None, int]  # (None for the origin or a particle's index, a p
 
 def _position(pos: Sequence[str]) -> list[Any] | None:
     try:
-        return [tree(c) for c in pos]
+        return [of_text(c) for c in pos]
     except TreeError:
         return None
 

@@ -13,6 +13,7 @@ from typing import Annotated, Any
 from pydantic import BaseModel, ConfigDict, Field, create_model
 
 from app.engine.parse import FUNCTIONS, MAX_LENGTH
+from app.engine.trees import FUNCTIONS as TREE_FUNCTIONS
 from app.service.user_checks import MAX_COORDINATES, MAX_PARAMETERS, MAX_PARTICLES
 from app.web.schemas import ParameterInfo
 from app.web.schemas_simulate import SimulateRequest
@@ -98,6 +99,15 @@ class ExprPair(BaseModel):
     model_config = OPEN
     sympy: str = Field(description="In the symbol convention: q, q_dot, q_ddot, t, parameters by name.")
     latex: str
+    tree: Any = Field(
+        default=None,
+        description=(
+            "The same expression as a JSON tree, to evaluate without a parser (the pages do): a number, a "
+            "symbol's name, or [op, ...arguments] with op one of '+', '*', 'neg', '/', 'pow' or a function "
+            f"({', '.join(sorted(TREE_FUNCTIONS))}; atan2 takes y then x). null when it has none (another "
+            "function, or too large)."
+        ),
+    )
 
 
 class EquationOfMotion(ExprPair):

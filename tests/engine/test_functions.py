@@ -8,9 +8,10 @@ import sympy as sp
 
 from app.engine.derive import derive
 from app.engine.parse import FUNCTIONS, ExpressionError, parse_expression
+from app.engine.trees import of_sympy, of_text
 from app.numerics.system import numeric_system
 from app.scenes.types import Parameter, Particle, System
-from app.viz.exprtree import evaluate, tree
+from app.viz.exprtree import evaluate
 from tests.reference import numerically_equal, reference_accelerations
 
 x, y, a = (sp.Symbol(n, real=True) for n in ("x", "y", "a"))
@@ -111,5 +112,7 @@ def test_every_allowed_function_has_a_figure_tree_and_a_value():
     env = {"x": 0.7, "y": -0.4}
     for name in FUNCTIONS:
         text = "atan2(y, x)" if name == "atan2" else f"{name}(x)"
-        expected = float(sp.N(parse_expression(text, NAMES).xreplace({x: 0.7, y: -0.4})))
-        assert evaluate(tree(text, ["x", "y"]), env) == pytest.approx(expected, rel=1e-12), name
+        expr = parse_expression(text, NAMES)
+        expected = float(sp.N(expr.xreplace({x: 0.7, y: -0.4})))
+        assert evaluate(of_text(text, ["x", "y"]), env) == pytest.approx(expected, rel=1e-12), name
+        assert evaluate(of_sympy(expr), env) == pytest.approx(expected, rel=1e-12), name

@@ -7,7 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from app.viz.exprtree import FUNCTIONS, evaluate, tree
+from app.engine.trees import FUNCTIONS
+from app.viz.exprtree import evaluate
 
 EXPR_JS = Path(__file__).resolve().parents[2] / "static" / "js" / "expr.js"
 
@@ -16,8 +17,9 @@ pytestmark = pytest.mark.skipif(shutil.which("node") is None, reason="node is in
 
 def test_expr_js_evaluates_every_function_like_python():
     env = {"x": 0.7, "y": -0.4}
-    texts = ["atan2(y, x)" if name == "atan2" else f"{name}(x)" for name in sorted(FUNCTIONS)]
-    trees = [tree(text, ["x", "y"]) for text in texts]
+    # one node of each function the engine's trees may hold (app/engine/trees.py), x = 0.7, y = -0.4
+    trees = [["atan2", "y", "x"] if name == "atan2" else [name, "x"] for name in sorted(FUNCTIONS)]
+    texts = [f"{t[0]}({', '.join(t[1:])})" for t in trees]
     script = (
         f"import {{ evaluate }} from {json.dumps(EXPR_JS.as_uri())};"
         f"const trees = {json.dumps(trees)}; const env = {json.dumps(env)};"

@@ -3,7 +3,9 @@
 import math
 
 import pytest
+import sympy as sp
 
+from app.engine.trees import of_sympy
 from app.scenes import SCENES
 from app.viz.exprtree import evaluate
 from app.viz.mechanism import FAMILIES, mechanism
@@ -78,7 +80,9 @@ def test_rotating_parabola_is_drawn_turning_in_the_lab_frame():
 
 
 def test_constraint_forces_become_arrows_on_their_particle():
-    forces = [{"name": "normal force", "particle": 1, "direction": ["-sin(alpha)", "0", "cos(alpha)"]}]
+    alpha = sp.Symbol("alpha")
+    unit = [-sp.sin(alpha), sp.Integer(0), sp.cos(alpha)]  # as the document carries it: trees the engine wrote
+    forces = [{"name": "normal force", "particle": 1, "direction_trees": [of_sympy(e) for e in unit]}]
     spec = spec_of("incline-block", forces)
     assert spec["forces"] == [
         {"name": "normal force", "on": 0, "direction": [["neg", ["sin", "alpha"]], ["cos", "alpha"]]}

@@ -26,7 +26,11 @@ def test_a_scene_answer_gets_its_verdict_difference_and_hint(client):
     body = wrong.json()
     assert set(body) == {"verdict", "message", "difference", "hint"}
     assert body["verdict"] == "incorrect" and body["hint"] == HINTS["missing_half"]
-    assert body["difference"] == {"sympy": "R**2*m*theta_dot**2/2", "latex": r"\frac{1}{2} m R^{2} \dot{\theta}^{2}"}  # textbook order
+    assert body["difference"] == {
+        "sympy": "R**2*m*theta_dot**2/2",
+        "latex": r"\frac{1}{2} m R^{2} \dot{\theta}^{2}",  # textbook order
+        "tree": ["*", 0.5, "m", ["pow", "R", 2], ["pow", "theta_dot", 2]],  # as every expression the engine gives
+    }
     right = check(client, {"step": "equation", "coordinate": "theta", "answer": "theta_ddot + g*sin(theta)/R"}).json()
     assert right["verdict"] == "equivalent" and right["difference"] is None and right["hint"] is None
     scene = check(client, {"step": "momentum", "coordinate": "phi", "answer": "m*R**2*phi_dot"}, "spherical-pendulum")
