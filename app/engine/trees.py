@@ -29,7 +29,7 @@ from typing import Any
 import sympy as sp
 
 from app.engine.parse import FUNCTIONS as INPUT_FUNCTIONS
-from app.engine.parse import ExpressionError, check_expression
+from app.engine.parse import MAX_LENGTH, ExpressionError, check_expression
 
 Tree = float | int | str | list[Any]
 
@@ -122,12 +122,14 @@ def of_text(text: str, names: Collection[str] | None = None) -> Tree:
 
     ``names`` are the names it may use; None allows every name that is not a function or
     ``pi`` (the figures' own expressions, written in this repository, name their helpers freely)."""
+    if not isinstance(text, str) or len(text) > MAX_LENGTH:
+        raise TreeError(f"an expression of at most {MAX_LENGTH} characters is needed")
     if names is None:
         try:
-            parsed = ast.parse(text.strip(), mode="eval") if isinstance(text, str) else None
+            parsed = ast.parse(text.strip(), mode="eval")
         except SyntaxError as exc:
             raise TreeError(f"not an expression: {text!r}") from exc
-        names = {n.id for n in ast.walk(parsed) if isinstance(n, ast.Name)} - set(FUNCTIONS) - {"pi"} if parsed else ()
+        names = {n.id for n in ast.walk(parsed) if isinstance(n, ast.Name)} - set(FUNCTIONS) - {"pi"}
     try:
         checked = check_expression(text, names)
     except ExpressionError as exc:

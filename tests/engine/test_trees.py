@@ -68,6 +68,13 @@ def test_what_the_browser_cannot_evaluate_has_no_tree(expr):
         of_sympy(expr)
 
 
+def test_text_beyond_the_parsers_length_is_refused_before_it_is_parsed():
+    with pytest.raises(TreeError, match="at most"):
+        of_text("x + " * 100_000 + "x")
+    with pytest.raises(TreeError):
+        of_text(None)  # type: ignore[arg-type]
+
+
 def test_any_name_when_none_are_given():
     assert of_text("qmin_x - 0.25*(qmax_x - qmin_x)") == [
         "+", "qmin_x", ["neg", ["*", 0.25, ["+", "qmax_x", ["neg", "qmin_x"]]]]
