@@ -16,9 +16,7 @@ from functools import cache
 from typing import Any
 
 from app.engine.parse import ALLOWED
-from app.engine.trees import FUNCTIONS, Tree
-
-__all__ = ["FUNCTIONS", "Tree", "document_tree", "evaluate", "function_tex", "leaves"]
+from app.engine.trees import Tree
 
 _RECIPROCALS = {"cot": "tan", "sec": "cos", "csc": "sin"}
 
