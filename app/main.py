@@ -16,10 +16,10 @@ from app.web import api_beyond, api_scenes, docs, errors, limits, pages
 from app.web.api_check import router as check_router
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
+from app.web.compression import ApiCompression
 from app.web.headers import SecurityHeaders
 from app.web.playground import router as playground_router
 from app.web.playground import warm_examples
-from app.web.responses import ApiGzip
 from app.web.templating import static_app
 
 
@@ -56,7 +56,7 @@ app = FastAPI(
     redoc_url=None,  # FastAPI's ReDoc page loads from a CDN
 )
 errors.install(app)
-app.add_middleware(ApiGzip)
+app.add_middleware(ApiCompression)
 limits.install(app)  # every POST body capped before it is read
 app.add_middleware(SecurityHeaders)  # outermost: on every response, errors included
 

@@ -1,42 +1,40 @@
-"""Lean JSON responses, and gzip for API clients that accept it.
+"""Lean JSON responses for the documents the service produces (simulations, sections, modes).
 
 ``FastJSONResponse`` encodes with orjson (app.service.encoding) when it is
 built: inside a plain ``def`` route that is FastAPI's thread pool, never the
 event loop, and there is no ``jsonable_encoder`` pass over thousands of floats.
+It compresses there too, in the coding app/web/compression.py chose for the
+request.
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
-from starlette.middleware.gzip import GZipMiddleware
+from starlette.background import BackgroundTask
 from starlette.responses import Response
-from starlette.types import ASGIApp, Receive, Scope, Send
 
 from app.service.encoding import dumps
-
-# Below about a kilobyte gzip saves less than a packet.  On a 184 kB simulation document level 1
-# gave 69 kB in 2.6 ms against level 5's 64 kB in 8-15 ms: the fastest level keeps nearly all the saving.
-GZIP_MINIMUM_BYTES = 1024
-GZIP_LEVEL = 1
+from app.web.compression import CHOSEN, compress, mark
 
 
 class FastJSONResponse(Response):
     media_type = "application/json"
 
+    def __init__(
+        self,
+        content: Any,
+        status_code: int = 200,
+        headers: Mapping[str, str] | None = None,
+        background: BackgroundTask | None = None,
+    ) -> None:
+        super().__init__(content, status_code, headers, background=background)
+        coding = CHOSEN.get()
+        compressed = compress(self.body, coding)
+        if compressed is not None and coding is not None:
+            self.body = compressed
+            mark(self.headers, coding, len(compressed))
+
     def render(self, content: Any) -> bytes:
         return dumps(content)
-
-
-class ApiGzip:
-    """gzip for ``/api`` responses (pages' static files come precompressed from assets.sh)."""
-
-    def __init__(self, app: ASGIApp):
-        self.app = app
-        self.gzip = GZipMiddleware(app, minimum_size=GZIP_MINIMUM_BYTES, compresslevel=GZIP_LEVEL)
-
-    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
-        if scope["type"] == "http" and scope["path"].startswith("/api/"):
-            await self.gzip(scope, receive, send)
-        else:
-            await self.app(scope, receive, send)

@@ -151,13 +151,15 @@ def test_precision_must_be_full_or_display(client):
     assert response.status_code == 422 and "precision" in response.json()["detail"]
 
 
-def test_api_responses_are_gzipped_for_clients_that_accept_it(client):
+@pytest.mark.parametrize("coding", ["zstd", "gzip"])
+def test_api_responses_are_compressed_for_clients_that_accept_it(client, coding):
     url = "/api/scenes/simple-pendulum/simulate"
-    zipped = client.post(url, json={"initial": {}}, headers={"Accept-Encoding": "gzip"})
+    packed = client.post(url, json={"initial": {}}, headers={"Accept-Encoding": coding})
     plain = client.post(url, json={"initial": {}}, headers={"Accept-Encoding": "identity"})
-    assert zipped.headers["content-encoding"] == "gzip" and "content-encoding" not in plain.headers
-    assert zipped.json()["t"] == plain.json()["t"]
-    assert int(zipped.headers["content-length"]) < len(plain.content) / 2
+    assert packed.headers["content-encoding"] == coding and "content-encoding" not in plain.headers
+    assert packed.headers["vary"] == plain.headers["vary"] == "Accept-Encoding"
+    assert packed.json()["t"] == plain.json()["t"]
+    assert int(packed.headers["content-length"]) < len(plain.content) / 2
 
 
 def test_a_request_while_kernels_compile_is_answered_by_scipy(client, services, monkeypatch):
