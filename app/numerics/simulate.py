@@ -21,6 +21,7 @@ from collections.abc import Callable, Sequence
 from concurrent.futures import Future, ThreadPoolExecutor
 from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -46,6 +47,7 @@ class Outcome:
     compile_seconds: float = 0.0
     path: str = "compiled"  # "compiled", "scipy" (a scipy method was asked for or chosen), "scipy-fallback"
     event: terminal.Hit | None = None  # the terminal event that ended the run, if one did
+    alongside: Any = None  # what ``run``'s ``alongside`` returned for the final trajectory (None if not called)
 
 
 
@@ -56,12 +58,18 @@ def _machine_load() -> float:
         return 0.0
 
 
+IDLE_NEEDED = 0.5  # of a core, on average over the last minute, for a reference to run beside its run
+
+
 class _Cores:
     """Busy threads of this module (runs and references) against the machine's cores: a reference
     runs beside its run only while a core is free, since the compiled kernels release the GIL.
     A core is free when this module's threads leave one and the machine's load average (other
-    processes included) is below cores - 1: on a busy shared machine a second thread only adds
-    switching (measured: 4.0-6.1x /healthz instead of 2.9-4.0x at a load average of 7 on 2 cores)."""
+    processes included) leaves at least half a core idle: on a busy shared machine a second thread
+    only adds switching (measured: 4.0-6.1x /healthz instead of 2.9-4.0x at a load average of 7 on
+    2 cores).  The load average counts this server's own runs of the last minute, so one client
+    sending requests back to back holds it near 1; a threshold of cores - 1 (the rule before) took
+    the second core from that client on a 2-core machine, and its estimate ran after its run."""
 
     def __init__(self) -> None:
         self.count = os.cpu_count() or 1
@@ -70,7 +78,7 @@ class _Cores:
 
     def take(self, force: bool = False) -> bool:
         with self.lock:
-            if not force and (self.busy >= self.count or _machine_load() > self.count - 1):
+            if not force and (self.busy >= self.count or _machine_load() > self.count - IDLE_NEEDED):
                 return False
             self.busy += 1
             return True
@@ -138,6 +146,7 @@ def run(
     python_loop: Callable[[], AbstractContextManager] = nullcontext,
     events: Sequence[terminal.EventFunction] = (),
     elsewhere: Callable[[Plan, float], Outcome] | None = None,
+    alongside: Callable[[Trajectory], Any] | None = None,
 ) -> Outcome:
     """Run a plan under one deadline.  ``python_loop()`` is entered around a Python step loop the plan did not
     foresee (the stiff hand-over to Radau); the caller holds it already when ``plan.python_loop``.
@@ -145,7 +154,11 @@ def run(
     ``elsewhere(plan, wall_seconds)``, when given, runs a plan that steps in Python (a scipy method, as
     asked for or chosen, or after the hand-over) in another process and returns its outcome: a server
     keeps such loops out of its web process, where they would hold the GIL the event loop needs.  The
-    scipy fallback while compiling stays here (short runs, and a worker would first have to start)."""
+    scipy fallback while compiling stays here (short runs, and a worker would first have to start).
+
+    ``alongside(trajectory)``, when given, is called on the final trajectory while the reference that
+    started beside the main run is still finishing (a server computes the observables there); its
+    result is ``Outcome.alongside``.  A run handed to ``elsewhere`` does not call it."""
     wall_seconds = limits.WALL_SECONDS if wall_seconds is None else wall_seconds
     if elsewhere is not None and plan.python_loop and plan.path != "scipy-fallback":
         return elsewhere(plan, wall_seconds)
@@ -179,7 +192,10 @@ def run(
         # in what is left of the deadline (the reference started beside it is dropped)
         handed = plan.handed_over(trajectory.t_reached)
         with python_loop():
-            outcome = run(handed, max(deadline - time.perf_counter(), 0.0), events=events, elsewhere=elsewhere)
+            outcome = run(
+                handed, max(deadline - time.perf_counter(), 0.0), events=events, elsewhere=elsewhere,
+                alongside=alongside,
+            )  # fmt: skip
         outcome.compile_seconds += compile_seconds
         return outcome
     if trajectory.stiff_detected:
@@ -193,13 +209,15 @@ def run(
     compared = terminal.before(trajectory, hit) if hit is not None else trajectory
     if not trajectory.complete and hit is None:
         warnings.append(trajectory.stop_reason)
+    if hit is not None:
+        trajectory = terminal.ended(trajectory, hit)
+    # the caller's work on the final trajectory, on this core while the reference finishes on the other
+    done_alongside = alongside(trajectory) if alongside is not None else None
     compiled = path != "scipy-fallback"
     result = (
         estimate_error(system, problem, chosen, compared, plan.stiff, warnings, compiled, ahead) if estimate else None
     )
-    if hit is not None:
-        trajectory = terminal.ended(trajectory, hit)
-    return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds, path, hit)
+    return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds, path, hit, done_alongside)
 
 
 def estimate_error(

@@ -322,8 +322,20 @@ def simulate_derivation(
         elif heavy:
             held.enter_context(gates.heavy_run())
         held.enter_context(gates.any())
-        outcome = run(planned, python_loop=gates.python_loop, events=_events(scene, system), elsewhere=elsewhere)
+        outcome = run(
+            planned, python_loop=gates.python_loop, events=_events(scene, system), elsewhere=elsewhere,
+            # the observables while the error estimate's reference run finishes beside
+            alongside=lambda trajectory: observe(observables, trajectory, k, rtol),
+        )  # fmt: skip
     return document(system, observables, outcome, k, rtol, getattr(request, "precision", None) or "full")
+
+
+def observe(
+    observables: Observables, trajectory, k: np.ndarray, rtol: float
+) -> tuple[dict[str, np.ndarray], dict[str, Any]]:
+    """The energy, h, conserved quantities and constraint forces along a trajectory, and their drifts."""
+    values = observables.evaluate(trajectory.t, trajectory.y, k)
+    return values, summarize(observables, trajectory.t, values, rtol)
 
 
 def document(
@@ -332,8 +344,8 @@ def document(
     """The result document; ``precision="display"`` rounds the series (never ``stats``) to DISPLAY_DIGITS."""
     tr = outcome.trajectory
     n = system.n
-    values = observables.evaluate(tr.t, tr.y, k)
-    summary = summarize(observables, tr.t, values, rtol)
+    # evaluated already while the reference ran (see simulate_derivation), unless the run went elsewhere
+    values, summary = outcome.alongside if outcome.alongside is not None else observe(observables, tr, k, rtol)
     warnings = [*outcome.warnings, *summary.pop("warnings")]
     state: dict[str, np.ndarray] = {}
     for i, q in enumerate(system.coordinates):

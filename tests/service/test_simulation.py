@@ -1,5 +1,6 @@
 """The simulation service: request checks with clear messages, the JSON document, work-precision data."""
 
+import json
 from contextlib import contextmanager
 from types import SimpleNamespace
 
@@ -10,6 +11,7 @@ from app.numerics import limits
 from app.numerics.errors import SimulationError, TooMuchWork
 from app.service import simulation, work_precision
 from app.service.derivations import derivation
+from app.service.encoding import dumps
 from app.web.errors import problem
 
 
@@ -194,6 +196,45 @@ def test_reference_run_beside_the_run_gives_the_same_estimate(monkeypatch):
     assert started == [True, False]
     assert beside["stats"]["error_estimate"] == after["stats"]["error_estimate"]
     assert beside["stats"]["error_reference"] == after["stats"]["error_reference"]
+
+
+@pytest.mark.parametrize(("load", "busy", "free"), [(0.0, 0, True), (1.2, 0, True), (1.6, 0, False), (0.0, 2, False)])
+def test_a_reference_runs_beside_only_while_half_a_core_is_idle(monkeypatch, load, busy, free):
+    from app.numerics import simulate as numerics_simulate
+
+    cores = numerics_simulate._Cores()
+    cores.count, cores.busy = 2, busy
+    monkeypatch.setattr(numerics_simulate, "_machine_load", lambda: load)
+    assert cores.take() is free
+    assert cores.take(force=True) and cores.busy == busy + 1 + free  # a run's own core is always taken
+
+
+@pytest.mark.parametrize("scene_id", ["double-pendulum", "incline-block"])  # the block's run ends at an event
+def test_observables_computed_while_the_reference_runs_are_those_of_the_final_trajectory(monkeypatch, scene_id):
+    original = simulation.run
+    calls = []
+
+    def after(*args, alongside=None, **kwargs):  # the document computes them itself
+        return original(*args, **kwargs)
+
+    def spy(*args, alongside=None, **kwargs):
+        def observe(trajectory):
+            calls.append(trajectory.t.size)
+            return alongside(trajectory)
+
+        return original(*args, alongside=observe, **kwargs)
+
+    monkeypatch.setattr(simulation, "run", spy)
+    beside = json.loads(dumps(simulation.simulate_scene(scene_id, request())))
+    monkeypatch.setattr(simulation, "run", after)
+    later = json.loads(dumps(simulation.simulate_scene(scene_id, request())))
+    assert calls == [len(beside["t"])]
+    for key in ("t", "energy", "hamiltonian", "conserved", "constraint_forces", "state"):
+        assert beside[key] == later[key], key
+    drop = {"wall_time_s", "compile_time_s"}
+    assert {k: v for k, v in beside["stats"].items() if k not in drop} == {
+        k: v for k, v in later["stats"].items() if k not in drop
+    }
 
 
 def test_auto_choosing_radau_waits_for_the_python_loop_slot(monkeypatch):
