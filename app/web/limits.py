@@ -103,7 +103,9 @@ class BodyLimit:
         deadline = asyncio.get_running_loop().time() + self.seconds
         while True:
             try:
-                message = await asyncio.wait_for(receive(), deadline - asyncio.get_running_loop().time())
+                # a deadline on this task (no task of its own per message, as wait_for would create)
+                async with asyncio.timeout_at(deadline):
+                    message = await receive()
             except TimeoutError:
                 await _refuse(send, 408, f"the request body did not arrive within {self.seconds:g} s")
                 return
