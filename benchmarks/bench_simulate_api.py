@@ -2,20 +2,20 @@
 
 Each scene's default simulation (POST /api/scenes/{id}/simulate with
 ``{"initial": {}}``: the scene's defaults, full precision) is requested through
-the ASGI app in process (Starlette's TestClient, which accepts gzip as a
-browser does), interleaved with /healthz so a slow moment of the shared
+the ASGI app in process (Starlette's TestClient, which accepts zstd and gzip
+as Chromium does, so the answers come in zstd), interleaved with /healthz so a slow moment of the shared
 machine hits both alike.  Also the same request at ``"precision": "display"``
 (what the pages ask for) and the bytes on the wire.  Target: every scene's p50
 at most 3x the /healthz p50.  Then, for the slowest scene, where one request's
 time goes, in process (best of 40): the simulation with its error estimate, the
-JSON encoding the route uses, and gzip at the API's level.
+JSON encoding the route uses, and each coding at the API's level.
 
     .venv/bin/python -m benchmarks.bench_simulate_api
 """
 
 from __future__ import annotations
 
-import gzip
+import os
 import statistics
 import time
 
@@ -25,7 +25,7 @@ from app.main import app
 from app.scenes import SCENES
 from app.service import simulation
 from app.service.encoding import dumps
-from app.web.responses import GZIP_LEVEL
+from app.web.compression import CODINGS
 from app.web.schemas_simulate import SimulateRequest
 
 ROUNDS = 60
@@ -33,6 +33,7 @@ WARMUP = 5
 
 
 def main() -> None:
+    print(f"load average at the start: {os.getloadavg()[0]:.2f}")
     with TestClient(app) as client:
         requests = [("GET", "/healthz", None, "")]
         for sid in SCENES:
@@ -41,6 +42,7 @@ def main() -> None:
             requests.append(("POST", url, {"initial": {}, "precision": "display"}, f"{sid} (display)"))
         times: dict[str, list[float]] = {label or url: [] for _, url, _, label in requests}
         sizes: dict[str, tuple[int, int]] = {}
+        codings: set[str] = set()
         for round_ in range(WARMUP + ROUNDS):
             for verb, url, body, label in requests:
                 start = time.perf_counter()
@@ -52,9 +54,12 @@ def main() -> None:
                 if round_ == 0 and body is not None:
                     wire = int(response.headers.get("content-length", len(response.content)))
                     sizes[label] = (len(response.content), wire)
+                    codings.add(response.headers.get("content-encoding", "none"))
+        print(f"load average at the end: {os.getloadavg()[0]:.2f}")
         base = statistics.median(times["/healthz"])
         print(f"{ROUNDS} interleaved rounds after {WARMUP} warm-up; GET /healthz p50 = {base * 1e3:.2f} ms\n")
-        print("| request | p50 ms | p50 / healthz | JSON kB | gzipped kB |")
+        print(f"content coding of the answers: {', '.join(sorted(codings))}\n")
+        print("| request | p50 ms | p50 / healthz | JSON kB | on the wire kB |")
         print("|---|---|---|---|---|")
         worst = 0.0
         for _, _, _, label in requests[1:]:
@@ -81,12 +86,14 @@ def breakdown(scene_id: str) -> None:
     request = SimulateRequest.model_validate({"initial": {}})
     document = simulation.simulate_scene(scene_id, request)
     body = dumps(document)
+    packed = {name: best_ms(lambda coder=coder: coder(body)) for name, coder in CODINGS.items()}
+    sizes = ", ".join(f"{name} {len(coder(body)) / 1024:.0f} kB" for name, coder in CODINGS.items())
     print(
         f"{scene_id} in process, best of 40: simulation with its estimate "
         f"{best_ms(lambda: simulation.simulate_scene(scene_id, request)):.2f} ms, "
-        f"JSON encoding {best_ms(lambda: dumps(document)):.2f} ms, gzip level {GZIP_LEVEL} "
-        f"{best_ms(lambda: gzip.compress(body, GZIP_LEVEL)):.2f} ms "
-        f"({len(body) / 1024:.0f} -> {len(gzip.compress(body, GZIP_LEVEL)) / 1024:.0f} kB)"
+        f"JSON encoding {best_ms(lambda: dumps(document)):.2f} ms, "
+        + ", ".join(f"{name} {ms:.2f} ms" for name, ms in packed.items())
+        + f" ({len(body) / 1024:.0f} kB of JSON -> {sizes})"
     )
 
 
