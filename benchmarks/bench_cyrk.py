@@ -7,9 +7,11 @@ pendulum (θ0 = 2.5, 100 periods, exact reference) and the double pendulum
 same right-hand side: the engine's generated function compiled by numba (CyRK
 through a numba cfunc wrapper).  The floor is the time of the same number of
 bare right-hand-side calls through a function pointer in a compiled loop.
-Times are the minimum of ``REPEATS`` runs, all in one process (ratios within one
-run: the machine is shared, absolute times drift; with 5 runs a busy machine
-moved single figures by 30 % from run to run).
+Times are the minimum of ``REPEATS`` rounds, each round running every path and
+floor once in turn, all in one process (ratios within one run: the machine is
+shared, absolute times drift; with 5 runs a busy machine moved single figures
+by 30 % from run to run, and timing one path after another let a slow minute
+fall on one of them).
 
     .venv/bin/python -m benchmarks.bench_cyrk
 """
@@ -17,6 +19,8 @@ moved single figures by 30 % from run to run).
 from __future__ import annotations
 
 import math
+import time
+from collections.abc import Callable
 
 import numpy as np
 from CyRK import cyjit, nbsolve2_ivp
@@ -26,7 +30,7 @@ from app.numerics.kernels.common import F64, I64, RHS, VEC, address
 from app.numerics.methods import METHODS, Problem
 from app.numerics.simulate import simulate
 from app.numerics.system import NumericSystem
-from benchmarks.bench_numerics import GRID, TARGET, best_time, cases
+from benchmarks.bench_numerics import GRID, TARGET, cases
 
 OURS = ("DOP853-compiled", "Vern8")
 CYRK = ("DOP853", "Vern7", "Vern8")
@@ -76,14 +80,30 @@ def loosest(error_of) -> float:
     raise RuntimeError("no tolerance on the grid reaches the target")
 
 
+def interleaved_best(runs: dict[str, Callable[[], object]], rounds: int = REPEATS) -> dict[str, float]:
+    """The minimum time of each callable over ``rounds`` rounds that run every one once, in turn: a slow
+    moment of the shared machine hits every path alike (timed one path after another, a pendulum's
+    CyRK Vern8 moved between 1.55 and 2.38 ms from run to run, and the ratios with it)."""
+    for run in runs.values():
+        run()  # warm-up
+    best = dict.fromkeys(runs, math.inf)
+    for _ in range(rounds):
+        for name, run in runs.items():
+            start = time.perf_counter()
+            run()
+            best[name] = min(best[name], time.perf_counter() - start)
+    return best
+
+
 def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
     n = system.n
-    rows = []
+    rows = []  # path, rtol, final error, steps, evaluations (ours)
+    runs: dict[str, Callable[[], object]] = {}
     out = np.empty(y0.size)
     rhs = system.bound("rhs")  # as the kernels get it
 
-    def floor(evaluations: int) -> float:
-        return best_time(lambda: bare_calls(rhs, 0.0, y0.copy(), k, out, evaluations), REPEATS)
+    def floor_of(evaluations: int) -> Callable[[], object]:
+        return lambda: bare_calls(rhs, 0.0, y0.copy(), k, out, evaluations)
 
     for name in OURS:
         method = METHODS[name]
@@ -93,40 +113,21 @@ def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
             ).max()
         )
         run = method.integrate(ours_problem(system, k, y0, t_end, rtol))
-        seconds = best_time(
-            lambda rtol=rtol, method=method: method.integrate(ours_problem(system, k, y0, t_end, rtol)), REPEATS
-        )
-        error = np.abs(run.y[-1, :n] - reference[:n]).max()
-        rows.append(
-            (
-                f"ours {name} (kernel from Python)",
-                rtol,
-                error,
-                run.steps,
-                run.rhs_evaluations,
-                seconds,
-                floor(run.rhs_evaluations),
-            )
-        )
+        path = f"ours {name} (kernel from Python)"
+        runs[path] = lambda rtol=rtol, method=method: method.integrate(ours_problem(system, k, y0, t_end, rtol))
+        runs[f"floor of {path}"] = floor_of(run.rhs_evaluations)
+        rows.append((path, rtol, np.abs(run.y[-1, :n] - reference[:n]).max(), run.steps, run.rhs_evaluations))
 
     def auto(r):
         return simulate(system, k, y0, t_end, 2, "auto", r, r / 100, wall_seconds=120, estimate=False)
 
     rtol = loosest(lambda r: np.abs(auto(r).trajectory.y[-1, :n] - reference[:n]).max())
     outcome = auto(rtol)
-    seconds = best_time(lambda: auto(rtol), REPEATS)
     tr = outcome.trajectory
-    rows.append(
-        (
-            f"ours default path (auto → {outcome.method})",
-            rtol,
-            np.abs(tr.y[-1, :n] - reference[:n]).max(),
-            tr.steps,
-            tr.rhs_evaluations,
-            seconds,
-            floor(tr.rhs_evaluations),
-        )
-    )
+    path = f"ours default path (auto → {outcome.method})"
+    runs[path] = lambda rtol=rtol: auto(rtol)
+    runs[f"floor of {path}"] = floor_of(tr.rhs_evaluations)
+    rows.append((path, rtol, np.abs(tr.y[-1, :n] - reference[:n]).max(), tr.steps, tr.rhs_evaluations))
 
     address = cyrk_rhs(system).address
     for method_id, name in enumerate(CYRK):
@@ -136,8 +137,11 @@ def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
 
         rtol = loosest(lambda r, final=final: np.abs(final(r)[0][:n] - reference[:n]).max())
         last, steps = final(rtol)
-        seconds = best_time(lambda rtol=rtol, final=final: final(rtol), REPEATS)
-        rows.append((f"CyRK {name}", rtol, np.abs(last[:n] - reference[:n]).max(), int(steps), None, seconds, None))
+        runs[f"CyRK {name}"] = lambda rtol=rtol, final=final: final(rtol)
+        rows.append((f"CyRK {name}", rtol, np.abs(last[:n] - reference[:n]).max(), int(steps), None))
+
+    best = interleaved_best(runs)
+    rows = [(*row, best[row[0]], best.get(f"floor of {row[0]}")) for row in rows]
 
     print(f"\n{label}: final-state error target {TARGET:g}")
     print("| path | rtol | final error | steps | RHS evaluations | time ms | floor ms | time / floor |")
@@ -159,6 +163,7 @@ def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
 def main() -> None:
     for case in cases():
         side_by_side(*case)
+
 
 if __name__ == "__main__":
     main()
