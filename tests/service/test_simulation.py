@@ -142,6 +142,21 @@ def test_display_rounding_keeps_seven_significant_digits():
     assert np.isnan(r[5]) and r[6] == np.inf
 
 
+def test_display_rounding_prints_as_seven_digits_at_every_scale():
+    import numpy as np
+
+    rng = np.random.default_rng(7)
+    magnitudes = 10.0 ** rng.uniform(-250, 250, 20000)
+    x = rng.choice([-1.0, 1.0], magnitudes.size) * magnitudes
+    decades = 10.0 ** np.arange(-250.0, 251.0)  # the edges of the exponent's two candidates, and their neighbours
+    x = np.concatenate([x, decades, np.nextafter(decades, 0.0), np.nextafter(decades, np.inf), [0.5, 1.0, 9.9999999]])
+    r = simulation.display_rounded(x)
+    # where 10^|s| is not exact (|s| > 22) the last bit may differ from the literal's
+    assert np.allclose(r, [float(f"{v:.7g}") for v in x], rtol=4e-16, atol=0.0)
+    exact = (np.abs(x) >= 1e-16) & (np.abs(x) < 1e22)
+    assert exact.sum() > 1000 and r[exact].tolist() == [float(f"{v:.7g}") for v in x[exact]]
+
+
 @pytest.mark.parametrize("scene_id", ["simple-pendulum", "spherical-pendulum"])
 def test_while_kernels_compile_scipy_answers_and_says_so(monkeypatch, scene_id):
     """The server's state before its background thread has compiled anything: nothing is ready."""
@@ -210,7 +225,8 @@ def test_a_reference_runs_beside_only_while_half_a_core_is_idle(monkeypatch, loa
 
 
 @pytest.mark.parametrize("scene_id", ["double-pendulum", "incline-block"])  # the block's run ends at an event
-def test_observables_computed_while_the_reference_runs_are_those_of_the_final_trajectory(monkeypatch, scene_id):
+@pytest.mark.parametrize("precision", ["full", "display"])
+def test_series_made_while_the_reference_runs_are_those_of_the_final_trajectory(monkeypatch, scene_id, precision):
     original = simulation.run
     calls = []
 
@@ -225,9 +241,9 @@ def test_observables_computed_while_the_reference_runs_are_those_of_the_final_tr
         return original(*args, alongside=observe, **kwargs)
 
     monkeypatch.setattr(simulation, "run", spy)
-    beside = json.loads(dumps(simulation.simulate_scene(scene_id, request())))
+    beside = json.loads(dumps(simulation.simulate_scene(scene_id, request(precision=precision))))
     monkeypatch.setattr(simulation, "run", after)
-    later = json.loads(dumps(simulation.simulate_scene(scene_id, request())))
+    later = json.loads(dumps(simulation.simulate_scene(scene_id, request(precision=precision))))
     assert calls == [len(beside["t"])]
     for key in ("t", "energy", "hamiltonian", "conserved", "constraint_forces", "state"):
         assert beside[key] == later[key], key
