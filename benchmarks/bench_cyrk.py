@@ -19,6 +19,7 @@ fall on one of them).
 from __future__ import annotations
 
 import math
+import statistics
 import time
 from collections.abc import Callable
 
@@ -26,8 +27,10 @@ import numpy as np
 from CyRK import cyjit, nbsolve2_ivp
 from numba import njit, types
 
+from app.numerics import choose
 from app.numerics.kernels.common import F64, I64, RHS, VEC, address
 from app.numerics.methods import METHODS, Problem
+from app.numerics.plan import plan
 from app.numerics.simulate import simulate
 from app.numerics.system import NumericSystem
 from benchmarks.bench_numerics import GRID, TARGET, cases
@@ -157,7 +160,35 @@ def side_by_side(label, system, k, y0, t_end, reference) -> dict[str, float]:
         f"\ndefault path / fastest CyRK: {default[5] / fastest_cyrk:.2f} (target <= 1); "
         f"default path / its floor: {default[5] / default[6]:.2f} (target <= 1.3)"
     )
+    our_kernel = next(r for r in rows if r[0] == "ours Vern8 (kernel from Python)")
+    print(f"default path - our Vern8 kernel: {(default[5] - our_kernel[5]) * 1e3:.3f} ms; of it:")
+    plan_costs(system, k, y0, t_end, default[1], runs["CyRK Vern8"])
     return {r[0]: r[5] for r in rows}
+
+
+def plan_costs(system, k, y0, t_end, rtol, between: Callable[[], object], rounds: int = REPEATS) -> None:
+    """The plan (``auto``'s analysis of the start and its choice) and the analysis alone, each timed right
+    after a CyRK run, as in the interleaved rounds (cold caches), and back to back (warm)."""
+    atol = np.full(y0.size, rtol / 100)
+    jacobian = choose.jacobian(system, 0.0, y0, k)
+    parts = {
+        "the plan": lambda: plan(system, k, y0, t_end, 2, "auto", rtol, rtol / 100, False, True),
+        "the analysis of the start": lambda: choose.analyse(system, k, y0, t_end, rtol, atol),
+        "its eigenvalues": lambda: np.linalg.eigvals(jacobian),
+        "its right-hand side call": lambda: system.f(0.0, y0, k),
+    }
+    for name, part in parts.items():
+        cold, warm = [], []
+        for _ in range(rounds):
+            between()
+            start = time.perf_counter()
+            part()
+            cold.append(time.perf_counter() - start)
+        for _ in range(rounds):
+            start = time.perf_counter()
+            part()
+            warm.append(time.perf_counter() - start)
+        print(f"  {name}: {statistics.median(cold) * 1e6:.0f} us after a CyRK run, {min(warm) * 1e6:.0f} us warm")
 
 
 def main() -> None:

@@ -119,7 +119,7 @@ def _responder(app: ASGIApp, coding: str | None) -> ASGIApp:
         return ZstdResponder(app, MINIMUM_BYTES)
     if coding == "gzip":
         return GZipResponder(app, MINIMUM_BYTES, compresslevel=GZIP_LEVEL, thread_minimum_size=THREAD_MINIMUM_BYTES)
-    return IdentityResponder(app, MINIMUM_BYTES)  # adds Vary: Accept-Encoding, as the others do
+    return IdentityResponder(app, MINIMUM_BYTES)  # adds Vary: Accept-Encoding where another coding would compress
 
 
 class ApiCompression:
