@@ -64,7 +64,7 @@ class Settings(BaseSettings):
     )
     warm: bool = Field(default=True, description="compile kernels and fill caches in the background at start-up")
 
-    # The memory budget (README "Capacity").  With P web processes, each with a forkserver, one
+    # The memory budget (docs/deployment.md, "Capacity").  With P web processes, each with a forkserver, one
     # worker for the scenes' Python-loop runs (capped at S = scene_worker_mb) and W pool workers for
     # users' jobs, and a job cap J, the most resident memory the server can reach is
     #     P * (web_process_mb + worker_base_mb + (worker_base_mb + S) + W * (worker_base_mb + J))  <=  budget,

@@ -2,7 +2,7 @@
 # The rules of the house, executable: ruff; the layer contract (import-linter:
 # settings/errors -> scenes -> engine -> numerics -> viz -> service -> web -> main);
 # deptry (every import declared, every declared package used); mypy on the typed
-# packages (pyproject.toml's [tool.mypy] files); the README's settings table.
+# packages (pyproject.toml's [tool.mypy] files); the settings table in docs/deployment.md.
 # Usage: scripts/lint.sh   (from a set-up checkout: .venv, or PYTHON=...)
 set -euo pipefail
 cd "$(dirname "$0")/.."

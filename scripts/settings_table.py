@@ -1,8 +1,8 @@
-"""The README's table of settings, generated from ``app.settings.Settings``.
+"""The table of settings in docs/deployment.md, generated from ``app.settings.Settings``.
 
 Usage: python scripts/settings_table.py           print the table
-       python scripts/settings_table.py --write   rewrite it in README.md (between the markers)
-       python scripts/settings_table.py --check   fail if README.md's table differs (scripts/lint.sh)
+       python scripts/settings_table.py --write   rewrite it in docs/deployment.md (between the markers)
+       python scripts/settings_table.py --check   fail if docs/deployment.md's table differs (scripts/lint.sh)
 """
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ from pathlib import Path
 
 from app.settings import ROOT, Settings
 
-README = ROOT / "README.md"
+DOC = ROOT / "docs" / "deployment.md"
 BEGIN, END = "<!-- settings:begin -->", "<!-- settings:end -->"
 
 
@@ -38,17 +38,17 @@ def with_table(readme: str) -> str:
     head, _, rest = readme.partition(BEGIN)
     _, _, tail = rest.partition(END)
     if not rest or not tail:
-        raise SystemExit(f"README.md has no {BEGIN} ... {END} block")
+        raise SystemExit(f"docs/deployment.md has no {BEGIN} ... {END} block")
     return f"{head}{BEGIN}\n{table()}\n{END}{tail}"
 
 
 def main(argv: list[str]) -> int:
-    readme = README.read_text()
+    readme = DOC.read_text()
     if "--write" in argv:
-        README.write_text(with_table(readme))
+        DOC.write_text(with_table(readme))
     elif "--check" in argv:
         if with_table(readme) != readme:
-            print("README.md's settings table differs from app/settings.py: run python scripts/settings_table.py --write")
+            print("docs/deployment.md's settings table differs from app/settings.py: run python scripts/settings_table.py --write")
             return 1
     else:
         print(table())

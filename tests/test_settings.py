@@ -1,4 +1,4 @@
-"""The settings: one place, read from LAGRANGE_ variables, README's table generated from it; the memory
+"""The settings: one place, read from LAGRANGE_ variables, the table in docs/deployment.md generated from it; the memory
 budget and the process counts derived from the container's cgroup."""
 
 import os
@@ -18,7 +18,7 @@ def test_a_setting_is_read_from_its_lagrange_variable(monkeypatch):
     assert read.derive_seconds == 12.5 and read.warm is False
 
 
-def test_the_readme_lists_every_setting_as_settings_defines_it():
+def test_the_docs_list_every_setting_as_settings_defines_it():
     check = subprocess.run(
         [sys.executable, "scripts/settings_table.py", "--check"],
         cwd=ROOT,

@@ -1,4 +1,4 @@
-"""Deployment files say what the README promises."""
+"""Deployment files say what docs/deployment.md promises."""
 
 from pathlib import Path
 

@@ -196,7 +196,7 @@ def test_simulation_agrees_with_the_independent_trajectory_within_its_estimate(n
     assert out.trajectory.complete, out.trajectory.stop_reason
     error = float(np.max(np.abs(out.trajectory.y[:, :n] - y[:, :n])))
     estimate = out.estimate.value
-    # the estimate may overstate the error, never understate it by more than 10x (README, Numerics)
+    # the estimate may overstate the error, never understate it by more than 10x (docs/numerics.md)
     assert error <= 10 * estimate + 1e-11 * max(1.0, float(np.max(np.abs(y[:, :n])))), (out.method, error, estimate)
     assert estimate < 1e-5, (out.method, estimate)
 
