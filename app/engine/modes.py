@@ -205,7 +205,9 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
     kinks: list[dict[str, float]] = []
     unclassified: list[dict[str, float]] = []
     damped = False
-    for exact, x in points[:MAX_EQUILIBRIA]:
+    # over the cap: the ones nearest q = 0, listed in order
+    shown = sorted(sorted(points, key=lambda p: float(np.abs(p[1]).sum()))[:MAX_EQUILIBRIA], key=lambda p: tuple(p[1]))
+    for exact, x in shown:
         position = {name: float(v) for name, v in zip(table.names, x, strict=True)}
         if timed_g or timed_lin:
             # at rest for all t, but M, G or K change with t: no constant-coefficient linearization
@@ -338,12 +340,16 @@ def _on_family(
 
 
 def _vanishes(g: Callable[..., np.ndarray], jac: Callable[..., np.ndarray], x: np.ndarray, k: list[float]) -> bool:
-    """The equilibrium condition holds at a point (relative to the size of K there)."""
+    """The equilibrium condition holds at a point (each equation relative to its own row of K there)."""
     with np.errstate(all="ignore"):
-        r, j = np.asarray(g(*x, *k)), np.asarray(jac(*x, *k))
+        r, j = np.asarray(g(*x, *k), dtype=float).ravel(), np.asarray(jac(*x, *k), dtype=float)
     if not (np.all(np.isfinite(r)) and np.all(np.isfinite(j))):
         return False
-    return bool(np.abs(r).max() <= 1e-9 * max(1.0, float(np.abs(j).max())))
+    j = j.reshape(len(r), -1)
+    rows = np.abs(j).max(axis=1)
+    rows = np.where(rows > 0, rows, max(float(rows.max()), 1.0))
+    size = max(1.0, float(np.abs(x).max())) if len(x) else 1.0
+    return bool(np.all(np.abs(r) <= 1e-9 * rows * size + 1e-300))
 
 
 def _linearized(
@@ -422,6 +428,9 @@ def _relative(d: Derivation, momenta: Mapping[str, float]) -> list[Equilibrium]:
     if not dU.has(r):
         return []
     nonnegative = {0} if red.coordinate in d.system.nonnegative else set()
+    # the cyclic coordinates may still appear in an unsimplified form (sin² ψ + cos² ψ): any value will do
+    others = {s: sp.Integer(0) for s in table.q if s != r}
+    values.update(others)
     at_values = sp.sympify(dU).xreplace(dict(values))
     g = _function([at_values], [r])
     jac = _function([[sp.diff(at_values, r)]], [r])
@@ -438,14 +447,22 @@ def _relative(d: Derivation, momenta: Mapping[str, float]) -> list[Equilibrium]:
             roots.same_point(x, np.array([y]), periodic) for _, y in points
         ):
             points.append((e.position, v.real))
-    points += [(None, float(x[0])) for x in found if not any(roots.same_point(x, np.array([y]), periodic) for _, y in points)]
+    for x in found:
+        # a root a rounding error away from 0 or pi, where U_eff' is 0/0 (a sleeping top): the exact point
+        snapped = _snap(at_values, r, float(x[0]))
+        if snapped is not None:
+            x = np.array([float(snapped)])
+        if not any(roots.same_point(x, np.array([y]), periodic) for _, y in points):
+            points.append((snapped, float(x[0])))
     points.sort(key=lambda p: p[1])
     out = []
     for exact, x0 in points[:MAX_EQUILIBRIA]:
         at = {r: exact if exact is not None else sp.Float(x0)}
-        m0 = sp.sympify(red.effective_mass).xreplace(at)
-        k0 = sp.diff(red.effective_potential, r, 2).xreplace(at)
+        mass = sp.sympify(red.effective_mass).xreplace(others)
+        potential = sp.sympify(red.effective_potential).xreplace(others)
+        m0, k0 = mass.xreplace(at), sp.diff(potential, r, 2).xreplace(at)
         if exact is not None:
+            m0, k0 = _finite(mass, r, exact, values), _finite(potential, r, exact, values, second=True)
             m0, k0 = modes_exact.cheap(m0), modes_exact.cheap(k0)
         else:
             m0, k0 = sp.sympify(m0.xreplace(values)).evalf(), sp.sympify(k0.xreplace(values)).evalf()
@@ -468,3 +485,45 @@ def _relative(d: Derivation, momenta: Mapping[str, float]) -> list[Equilibrium]:
             )
         )
     return out
+
+
+def _snap(condition: sp.Expr, r: sp.Symbol, x0: float) -> sp.Expr | None:
+    """0 or +-pi when x0 is within rounding of it and the condition's limit there is 0."""
+    for c in (sp.Integer(0), sp.pi, -sp.pi):
+        if abs(x0 - float(c)) < 1e-5:
+            value = abs(_numeric(condition, {r: c}))
+            if not math.isfinite(value):
+                # 0/0 at c: the values just beside it, against those a step away (continuity)
+                # (a root there shrinks in proportion: a thousandth of the step, a thousandth of the value)
+                near = max(abs(_numeric(condition, {r: c + s * sp.Float(1e-4)})) for s in (1, -1))
+                far = max(abs(_numeric(condition, {r: c + s * sp.Float(0.1)})) for s in (1, -1))
+                if math.isfinite(far) and near <= 1e-2 * far:
+                    return c
+            elif value <= 1e-9:
+                return c
+    return None
+
+
+def _finite(
+    expr: sp.Expr, r: sp.Symbol, at: sp.Expr, values: Mapping[sp.Symbol, float], second: bool = False
+) -> sp.Expr:
+    """expr (or its second derivative in r, when ``second``) at r = at.
+
+    Where the value is 0/0 (a removable singularity of U_eff, as at a sleeping top) it is the limit,
+    taken numerically from both sides with Richardson's extrapolation (no point at r = at is used).
+    """
+    value = sp.diff(expr, r, 2).xreplace({r: at}) if second else sp.sympify(expr).xreplace({r: at})
+    number = _numeric(value, values)
+    if math.isfinite(number.real) and math.isfinite(number.imag):
+        return value
+    f = _function([sp.sympify(expr).xreplace(dict(values))], [r])
+    x0 = float(at)
+
+    def estimate(h: float) -> float:
+        with np.errstate(all="ignore"):
+            a, b, c, e = (float(f(x0 + s * h)[0]) for s in (2, 1, -1, -2))
+        # (f(2h) - f(h) - f(-h) + f(-2h)) / 3h^2 = f'' + O(h^2); (f(h) + f(-h))/2 = f + O(h^2)
+        return (a - b - c + e) / (3 * h * h) if second else (b + c) / 2
+
+    h = 1e-2
+    return sp.Float((4 * estimate(h / 2) - estimate(h)) / 3)

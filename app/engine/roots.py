@@ -81,10 +81,14 @@ def _axis(periodic: bool, nonnegative: bool, count: int, scales: Sequence[float]
     return np.unique(np.concatenate([base, np.array(extra, dtype=float)]))
 
 
-def _is_root(g: Callable[[np.ndarray], np.ndarray], x: np.ndarray, scale: float) -> bool:
+def _is_root(g: Callable[[np.ndarray], np.ndarray], x: np.ndarray, rows: np.ndarray) -> bool:
+    """|g_i(x)| small relative to its own row of the Jacobian (so equations of very different sizes each count)."""
     with np.errstate(all="ignore"):
         r = g(x)
-    return bool(np.all(np.isfinite(r)) and np.abs(r).max() <= 1e-9 * max(scale, 1.0))
+    if not np.all(np.isfinite(r)):
+        return False
+    size = max(1.0, float(np.abs(x).max()))
+    return bool(np.all(np.abs(r) <= 1e-9 * np.maximum(rows, 1e-300) * size + 1e-300))
 
 
 def _scan_1d(g: Callable[[np.ndarray], np.ndarray], lo: float, hi: float) -> list[float]:
@@ -134,10 +138,14 @@ def search(
     G = lambda x: np.asarray(g(*x, *k), dtype=float).ravel()  # noqa: E731
     J = lambda x: np.asarray(jac(*x, *k), dtype=float).reshape(n, n)  # noqa: E731
 
-    def scale_at(x: np.ndarray) -> float:
+    def rows_at(x: np.ndarray) -> np.ndarray:
+        """The size of each equation near x: its largest Jacobian entry (1 where unknown)."""
         with np.errstate(all="ignore"):
             j = J(x)
-        return float(np.abs(j).max()) if np.all(np.isfinite(j)) else 1.0
+        if not np.all(np.isfinite(j)):
+            return np.ones(n)
+        rows = np.abs(j).max(axis=1)
+        return np.where(rows > 0, rows, max(float(rows.max()), 1.0))
 
     candidates: list[np.ndarray] = []
     if n == 1:
@@ -169,9 +177,10 @@ def search(
             candidates.append(sol.x)
     found: list[np.ndarray] = []
     for x in candidates:
-        if any(x[i] < -1e-12 for i in nonnegative) or not _is_root(G, x, scale_at(x)):
-            continue
         y = wrap(x, periodic)
+        # checked after wrapping: an iterate far out (theta = 1e6) has a residual large in absolute terms
+        if any(y[i] < -1e-12 for i in nonnegative) or not _is_root(G, y, rows_at(y)):
+            continue
         if not any(same_point(y, z, periodic) for z in found):
             found.append(y)
     return sorted(found, key=lambda x: tuple(x)), periodic
