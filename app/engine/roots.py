@@ -57,6 +57,8 @@ def wrap(x: np.ndarray, periodic: Sequence[bool]) -> np.ndarray:
     for i, p in enumerate(periodic):
         if p:
             y[i] = math.pi - (math.pi - y[i]) % (2 * math.pi)
+            if y[i] < -math.pi + 1e-9:  # -pi and pi are one angle: the end of the interval that is kept
+                y[i] = math.pi
     y[np.abs(y) < 1e-12] = 0.0
     return y
 
