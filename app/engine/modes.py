@@ -223,7 +223,10 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
             damped = damped or bool(e.linear and e.linear.moving)
             equilibria.append(e)
     if not (timed_g or timed_lin):
-        equilibria.extend(_relative(d, momenta))
+        # (imported here: the steady motions build on this module's Equilibrium and helpers)
+        from app.engine.steady import relative
+
+        equilibria.extend(relative(d, momenta))
     note = ""
     if not (equilibria or singular or kinks or unclassified):
         note = (
@@ -289,7 +292,9 @@ def _equilibria(
             found = [
                 x
                 for x in found
-                if all(np.abs(every(*x, *k, s)).max() <= 1e-8 * max(1.0, float(np.abs(jac(*x, *k)).max())) for s in TIMES)
+                if all(
+                    np.abs(every(*x, *k, s)).max() <= 1e-8 * max(1.0, float(np.abs(jac(*x, *k)).max())) for s in TIMES
+                )
             ]
         return [(None, x) for x in found], False, periodic
     solutions = modes_exact.solve(g_exprs, q, d)
@@ -328,7 +333,11 @@ def _equilibria(
 
 
 def _on_family(
-    sol: dict[sp.Symbol, sp.Expr], q: list[sp.Symbol], x: np.ndarray, values: Mapping[sp.Symbol, float], periodic: list[bool]
+    sol: dict[sp.Symbol, sp.Expr],
+    q: list[sp.Symbol],
+    x: np.ndarray,
+    values: Mapping[sp.Symbol, float],
+    periodic: list[bool],
 ) -> bool:
     """A root of the search lies on a closed-form family of equilibria (a coordinate left free)."""
     point = {**values, **dict(zip(q, (float(v) for v in x), strict=True))}
@@ -412,118 +421,3 @@ def _modes(
                 break
         out.append(Mode(float(w), shape, match))
     return tuple(out)
-
-
-def _relative(d: Derivation, momenta: Mapping[str, float]) -> list[Equilibrium]:
-    """Relative equilibria of the one-coordinate reduction: U_eff'(r0) = 0 at the given conserved momenta."""
-    red = d.reduction
-    if red is None or not red.momenta:
-        return []
-    table = d.table
-    r = table.q[table.names.index(red.coordinate)]
-    values = defaults(d)
-    values.update({P: float(momenta.get(P.name, 1.0)) for P in red.momenta})
-    held = {P.name: values[P] for P in red.momenta}
-    dU = red.equilibrium_condition
-    if not dU.has(r):
-        return []
-    nonnegative = {0} if red.coordinate in d.system.nonnegative else set()
-    # the cyclic coordinates may still appear in an unsimplified form (sin² ψ + cos² ψ): any value will do
-    others = {s: sp.Integer(0) for s in table.q if s != r}
-    values.update(others)
-    at_values = sp.sympify(dU).xreplace(dict(values))
-    g = _function([at_values], [r])
-    jac = _function([[sp.diff(at_values, r)]], [r])
-    found, periodic = roots.search(g, jac, 1, [], nonnegative, SEARCH_SECONDS)
-    points: list[tuple[sp.Expr | None, float]] = []
-    for e in red.equilibria:
-        v = _numeric(e.position, values)
-        if abs(v.imag) > 1e-12 * max(1.0, abs(v)) or not math.isfinite(v.real):
-            continue
-        x = np.array([v.real])
-        if (nonnegative and v.real < -1e-12) or not _vanishes(g, jac, x, []):
-            continue
-        if np.allclose(roots.wrap(x, periodic), x, atol=1e-12) and not any(
-            roots.same_point(x, np.array([y]), periodic) for _, y in points
-        ):
-            points.append((e.position, v.real))
-    for x in found:
-        # a root a rounding error away from 0 or pi, where U_eff' is 0/0 (a sleeping top): the exact point
-        snapped = _snap(at_values, r, float(x[0]))
-        if snapped is not None:
-            x = np.array([float(snapped)])
-        if not any(roots.same_point(x, np.array([y]), periodic) for _, y in points):
-            points.append((snapped, float(x[0])))
-    points.sort(key=lambda p: p[1])
-    out = []
-    for exact, x0 in points[:MAX_EQUILIBRIA]:
-        at = {r: exact if exact is not None else sp.Float(x0)}
-        mass = sp.sympify(red.effective_mass).xreplace(others)
-        potential = sp.sympify(red.effective_potential).xreplace(others)
-        m0, k0 = mass.xreplace(at), sp.diff(potential, r, 2).xreplace(at)
-        if exact is not None:
-            m0, k0 = _finite(mass, r, exact, values), _finite(potential, r, exact, values, second=True)
-            m0, k0 = modes_exact.cheap(m0), modes_exact.cheap(k0)
-        else:
-            m0, k0 = sp.sympify(m0.xreplace(values)).evalf(), sp.sympify(k0.xreplace(values)).evalf()
-        Mm, Km = sp.Matrix([[m0]]), sp.Matrix([[k0]])
-        # the reduced motion has no velocity term (a linear one is a total derivative in one dimension)
-        lin = linearize(_array(Mm, values), _array(Km, values), np.zeros((1, 1)))
-        if lin is None:
-            continue
-        out.append(
-            Equilibrium(
-                {red.coordinate: float(x0)},
-                {red.coordinate: exact} if exact is not None else None,
-                lin.kind,
-                Mm,
-                Km,
-                _modes(Mm, Km, lin, values, exact is not None, modes_exact.positive(d)),
-                (red.coordinate,),
-                held,
-                lin,
-            )
-        )
-    return out
-
-
-def _snap(condition: sp.Expr, r: sp.Symbol, x0: float) -> sp.Expr | None:
-    """0 or +-pi when x0 is within rounding of it and the condition's limit there is 0."""
-    for c in (sp.Integer(0), sp.pi, -sp.pi):
-        if abs(x0 - float(c)) < 1e-5:
-            value = abs(_numeric(condition, {r: c}))
-            if not math.isfinite(value):
-                # 0/0 at c: the values just beside it, against those a step away (continuity)
-                # (a root there shrinks in proportion: a thousandth of the step, a thousandth of the value)
-                near = max(abs(_numeric(condition, {r: c + s * sp.Float(1e-4)})) for s in (1, -1))
-                far = max(abs(_numeric(condition, {r: c + s * sp.Float(0.1)})) for s in (1, -1))
-                if math.isfinite(far) and near <= 1e-2 * far:
-                    return c
-            elif value <= 1e-9:
-                return c
-    return None
-
-
-def _finite(
-    expr: sp.Expr, r: sp.Symbol, at: sp.Expr, values: Mapping[sp.Symbol, float], second: bool = False
-) -> sp.Expr:
-    """expr (or its second derivative in r, when ``second``) at r = at.
-
-    Where the value is 0/0 (a removable singularity of U_eff, as at a sleeping top) it is the limit,
-    taken numerically from both sides with Richardson's extrapolation (no point at r = at is used).
-    """
-    value = sp.diff(expr, r, 2).xreplace({r: at}) if second else sp.sympify(expr).xreplace({r: at})
-    number = _numeric(value, values)
-    if math.isfinite(number.real) and math.isfinite(number.imag):
-        return value
-    f = _function([sp.sympify(expr).xreplace(dict(values))], [r])
-    x0 = float(at)
-
-    def estimate(h: float) -> float:
-        with np.errstate(all="ignore"):
-            a, b, c, e = (float(f(x0 + s * h)[0]) for s in (2, 1, -1, -2))
-        # (f(2h) - f(h) - f(-h) + f(-2h)) / 3h^2 = f'' + O(h^2); (f(h) + f(-h))/2 = f + O(h^2)
-        return (a - b - c + e) / (3 * h * h) if second else (b + c) / 2
-
-    h = 1e-2
-    return sp.Float((4 * estimate(h / 2) - estimate(h)) / 3)

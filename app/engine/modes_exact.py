@@ -102,5 +102,5 @@ def eigenvalues(M: sp.Matrix, K: sp.Matrix, assume: Mapping[sp.Symbol, sp.Symbol
         Ma, Ka = M.xreplace(dict(assume)), K.xreplace(dict(assume))
         return [r.xreplace(back) for r in _roots(Ma, Ka)]
 
-    found = within_budget(work, [], EIGEN_SECONDS)
+    found: list[sp.Expr] = within_budget(work, [], EIGEN_SECONDS)
     return [c for c in found if sp.count_ops(c) <= MAX_EXACT_OPS]

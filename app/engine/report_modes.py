@@ -115,9 +115,12 @@ def _points(points: tuple[dict[str, float], ...], sym: dict[str, sp.Symbol], pr:
 def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
     """How the list was found, and how far it can be trusted (never "exactly" unless provably complete)."""
     if nm.solved:
-        free = any(len(e.position) > 1 for e in found) and any(e.exact and len(e.exact) < len(e.position) for e in found)
-        return "The conditions are polynomial in the coordinates and were solved exactly, so these are all the equilibria" + (
-            "; a coordinate they leave free is set to 0." if free else "."
+        free = any(len(e.position) > 1 for e in found) and any(
+            e.exact and len(e.exact) < len(e.position) for e in found
+        )
+        return (
+            "The conditions are polynomial in the coordinates and were solved exactly, so these are all the equilibria"
+            + ("; a coordinate they leave free is set to 0." if free else ".")
         )
     some_exact = any(e.exact for e in found)
     where = f" (searched: {nm.searched})" if nm.searched else ""
@@ -126,7 +129,9 @@ def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
             "SymPy's closed forms are shown where it found them; a numerical search at the default parameters"
             f"{where} completed the list, so equilibria outside that range may exist."
         )
-    return f"The equilibria were found numerically at the default parameters{where}; others may exist outside that range."
+    return (
+        f"The equilibria were found numerically at the default parameters{where}; others may exist outside that range."
+    )
 
 
 def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:

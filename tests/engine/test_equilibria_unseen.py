@@ -87,7 +87,9 @@ def test_the_fast_hoop_has_four_equilibria_the_side_ones_stable():
     found = rest("hoop-fast")
     side = math.acos(-g / 25)
     assert set(found) == {(0.0,), (round(math.pi, 6),), (round(side, 6),), (round(-side, 6),)}
-    assert found[(round(math.pi, 6),)].kind == UNSTABLE and omegas(found[(round(math.pi, 6),)]) == pytest.approx([g - 25])
+    assert found[(round(math.pi, 6),)].kind == UNSTABLE and omegas(found[(round(math.pi, 6),)]) == pytest.approx(
+        [g - 25]
+    )
     for s in (side, -side):
         e = found[(round(s, 6),)]
         assert e.kind == STABLE and omegas(e) == pytest.approx([25 - g**2 / 25])
@@ -122,7 +124,9 @@ def test_the_free_hoop_at_p_phi_1_turns_steadily_at_plus_and_minus_theta_star():
         theta = e.position["theta"]
         assert e.momenta == {"p_phi": 1.0}
         assert omegas(e)[0] == pytest.approx(second(free_hoop_u, theta), rel=1e-4)
-        assert e.kind == (STABLE if abs(theta) in (abs(star[0]),) or abs(abs(theta) - abs(star[0])) < 1e-9 else UNSTABLE)
+        assert e.kind == (
+            STABLE if abs(theta) in (abs(star[0]),) or abs(abs(theta) - abs(star[0])) < 1e-9 else UNSTABLE
+        )
     # at rest: hanging (phi free, so one neutral direction) and upside down
     at_rest = rest("free-hoop")
     assert at_rest[(0.0, 0.0)].kind == NEUTRAL and at_rest[(round(math.pi, 6), 0.0)].kind == UNSTABLE
@@ -135,13 +139,13 @@ def test_a_support_moving_on_a_circle_leaves_no_equilibrium():
 
 
 def test_the_pendulum_in_an_accelerating_car_hangs_back_at_atan_a_over_g():
-    A, l = 3.0, 1.0
+    A, length = 3.0, 1.0
     lean = -math.atan(A / g)
     found = rest("accelerating-car")
     assert set(found) == {(round(lean, 6),), (round(lean + math.pi, 6),)}
     assert found[(round(lean, 6),)].kind == STABLE
-    assert omegas(found[(round(lean, 6),)]) == pytest.approx([math.hypot(g, A) / l])
-    assert omegas(found[(round(lean + math.pi, 6),)]) == pytest.approx([-math.hypot(g, A) / l])
+    assert omegas(found[(round(lean, 6),)]) == pytest.approx([math.hypot(g, A) / length])
+    assert omegas(found[(round(lean + math.pi, 6),)]) == pytest.approx([-math.hypot(g, A) / length])
     assert modes("accelerating-car").moving_frame  # the db/dt term is what tilts it
 
 
@@ -227,7 +231,9 @@ def test_masses_a_million_and_a_millionth_still_get_modes():
     assert set(found) == {(0.0, 0.0), (0.0, round(math.pi, 6)), (round(math.pi, 6), 0.0), (round(math.pi, 6),) * 2}
     assert not modes("double-pendulum-extreme-masses").singular
     for (a, b), e in found.items():
-        M = np.array([[(m1 + m2) * l1**2, m2 * l1 * l2 * math.cos(a - b)], [m2 * l1 * l2 * math.cos(a - b), m2 * l2**2]])
+        M = np.array(
+            [[(m1 + m2) * l1**2, m2 * l1 * l2 * math.cos(a - b)], [m2 * l1 * l2 * math.cos(a - b), m2 * l2**2]]
+        )
         K = np.diag([(m1 + m2) * g * l1 * math.cos(a), m2 * g * l2 * math.cos(b)])
         expected = np.sort(scipy.linalg.eigvals(K, M).real)
         assert omegas(e) == pytest.approx(expected, rel=1e-8)
@@ -236,7 +242,11 @@ def test_masses_a_million_and_a_millionth_still_get_modes():
 
 def top_u(theta, I1=1.0, I3=0.5, Mgh=9.81 * 0.2, p_phi=1.0, p_psi=1.0):
     # U_eff = (p_phi - p_psi cos)^2 / (2 I1 sin^2) + p_psi^2 / (2 I3) + M g h cos
-    return (p_phi - p_psi * math.cos(theta)) ** 2 / (2 * I1 * math.sin(theta) ** 2) + p_psi**2 / (2 * I3) + Mgh * math.cos(theta)
+    return (
+        (p_phi - p_psi * math.cos(theta)) ** 2 / (2 * I1 * math.sin(theta) ** 2)
+        + p_psi**2 / (2 * I3)
+        + Mgh * math.cos(theta)
+    )
 
 
 def test_the_symmetric_top_written_with_body_rates_precesses_steadily():
@@ -329,6 +339,25 @@ def test_a_vertically_driven_support_keeps_both_rest_points_without_constant_fre
     nm = modes("vertically-driven-pendulum")
     assert not nm.equilibria
     assert sorted(p["theta"] for p in nm.unclassified) == pytest.approx([0.0, math.pi])
+
+
+@pytest.mark.parametrize("name", ["hoop-fast", "accelerating-car", "penning-trap", "support-on-a-circle"])
+def test_the_document_keeps_its_shape_and_claims_nothing_it_cannot_show(name):
+    doc = derivation_json(derived(name))
+    nm = modes(name)
+    assert len(doc["normal_modes"]) == len(nm.equilibria)
+    for entry, e in zip(doc["normal_modes"], nm.equilibria, strict=True):
+        # the fields the page and API read, and the new ones added beside them
+        assert {"equilibrium", "exact", "momenta", "stable", "kind", "coordinates", "modes"} <= set(entry)
+        assert entry["frequencies"] == pytest.approx(list(e.linear.frequencies))
+        assert len(entry["exponents"]) == 2 * len(e.coordinates) and isinstance(entry["gyroscopic"], bool)
+    step = next(s for s in doc["steps"] if s["title"] == "Equilibria")
+    assert ("exactly" in step["explanation"]) == nm.solved
+    if name == "support-on-a-circle":
+        assert "No equilibrium" in step["explanation"]
+    if name == "penning-trap":
+        modes_step = next(s for s in doc["steps"] if s["title"].startswith("Normal modes about"))
+        assert "gyroscopically stable" in modes_step["explanation"]
 
 
 # --- every listed equilibrium is one ------------------------------------------------------------------
