@@ -234,3 +234,17 @@ def test_small_amplitude_runs_oscillate_at_the_predicted_frequency(name, index, 
     x = outcome.trajectory.y[:, i] - e.position[table.names[i]]
     measured = 2 * np.pi / _period(outcome.trajectory.t, x)
     assert measured == pytest.approx(omega, rel=0.01)
+
+
+def test_a_failing_equilibria_step_leaves_the_rest_of_the_document(monkeypatch):
+    from app.engine import modes as modes_module
+    from app.engine.contract import derivation_json
+
+    def broken(*args):
+        raise AttributeError("'float' object has no attribute 'evalf'")
+
+    monkeypatch.setattr(modes_module, "_normal_modes", broken)
+    doc = derivation_json(derive(SYSTEMS["scene:simple-pendulum"]))
+    assert doc["normal_modes"] == [] and doc["accelerations"] and doc["hamilton"]
+    (step,) = [s for s in doc["steps"] if s["title"] == "Equilibria"]
+    assert "left out" in step["explanation"] and "rest of the derivation is complete" in step["explanation"]
