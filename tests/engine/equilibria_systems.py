@@ -47,7 +47,8 @@ SYSTEMS: dict[str, System] = {
     "free-hoop": System(
         # a hoop (moment of inertia J about the vertical) turning freely, a bead on it; theta from the bottom
         coordinates=("theta", "phi"),
-        parameters=(p("m", 1.0), p("R", 1.0), p("J", 0.1), G),
+        # (the values: its steady motions at p_phi = 1 are theta = +-1.1632 with omega^2 = 50.9)
+        parameters=(p("m", 0.2), p("R", 0.5), p("J", 0.1), G),
         kinetic="(J + m*R**2*sin(theta)**2)*phi_dot**2/2 + m*R**2*theta_dot**2/2",
         potential="-m*g*R*cos(theta)",
     ),

@@ -108,25 +108,28 @@ def test_the_elastic_pendulum_in_cartesian_coordinates_hangs_below_its_natural_l
     assert found[(0.0, round(stand, 6))].kind == UNSTABLE
 
 
-def free_hoop_u(theta, p=1.0, J=0.1):
-    # U_eff = p^2 / (2 (J + m R^2 sin^2)) - m g R cos(theta), m = R = 1
-    return p**2 / (2 * (J + math.sin(theta) ** 2)) - g * math.cos(theta)
+def free_hoop_u(theta, p=1.0, m=0.2, R=0.5, J=0.1):
+    # U_eff = p^2 / (2 (J + m R^2 sin^2)) - m g R cos(theta)
+    return p**2 / (2 * (J + m * R**2 * math.sin(theta) ** 2)) - m * g * R * math.cos(theta)
 
 
 def test_the_free_hoop_at_p_phi_1_turns_steadily_at_plus_and_minus_theta_star():
+    m, R = 0.2, 0.5
     roots = brent_roots(lambda x: (free_hoop_u(x + 1e-6) - free_hoop_u(x - 1e-6)) / 2e-6, -3.0, 3.0)
     star = [x for x in roots if abs(x) > 1e-3]
-    assert len(star) == 2
+    assert len(star) == 2 and star == pytest.approx([-1.1632, 1.1632], abs=1e-4)  # the figures
     found = steady("free-hoop")
     positions = [e.position["theta"] for e in found]
     assert positions == pytest.approx(sorted([*star, 0.0, math.pi]), abs=1e-7)
     for e in found:
         theta = e.position["theta"]
         assert e.momenta == {"p_phi": 1.0}
-        assert omegas(e)[0] == pytest.approx(second(free_hoop_u, theta), rel=1e-4)
-        assert e.kind == (
-            STABLE if abs(theta) in (abs(star[0]),) or abs(abs(theta) - abs(star[0])) < 1e-9 else UNSTABLE
-        )
+        # omega^2 = U_eff'' / (m R^2)
+        assert omegas(e)[0] == pytest.approx(second(free_hoop_u, theta) / (m * R**2), rel=1e-4)
+        tilted = min(abs(abs(theta) - abs(s)) for s in star) < 1e-9
+        assert e.kind == (STABLE if tilted else UNSTABLE)
+        if tilted:
+            assert omegas(e)[0] == pytest.approx(50.9, abs=0.05)
     # at rest: hanging (phi free, so one neutral direction) and upside down
     at_rest = rest("free-hoop")
     assert at_rest[(0.0, 0.0)].kind == NEUTRAL and at_rest[(round(math.pi, 6), 0.0)].kind == UNSTABLE
