@@ -104,6 +104,8 @@ class NormalModes:
     failed: str = ""  # the step could not be completed: why (the rest of the document stands)
     unclassified: tuple[dict[str, float], ...] = ()  # at rest for all t, but the linearization changes with t
     found: int = 0  # equilibria found (more than listed when capped at MAX_EQUILIBRIA)
+    angles_only: bool = False  # every coordinate is an angle, so the search covered all of configuration space
+    family: bool = False  # a closed-form solution leaves a coordinate free (shown at 0)
 
 
 def defaults(d: Derivation) -> dict[sp.Symbol, float]:
@@ -197,7 +199,7 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
         M, G = M.xreplace({t: 0}), G.xreplace({t: 0})
     nonnegative = {i for i, name in enumerate(table.names) if name in d.system.nonnegative}
 
-    points, complete, periodic = _equilibria(d, g_exprs, q, t, timed_g, nonnegative, values, k)
+    points, complete, periodic, family = _equilibria(d, g_exprs, q, t, timed_g, nonnegative, values, k)
     # K = dg/dq
     J = sp.Matrix([[sp.diff(e, s) for s in q] for e in g_exprs])
     equilibria: list[Equilibrium] = []
@@ -250,6 +252,8 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
         "",
         tuple(unclassified),
         len(points),
+        bool(periodic) and all(periodic),
+        family,
     )
 
 
@@ -274,11 +278,12 @@ def _equilibria(
     nonnegative: set[int],
     values: Mapping[sp.Symbol, float],
     k: list[float],
-) -> tuple[list[tuple[dict[sp.Symbol, sp.Expr] | None, np.ndarray]], bool, list[bool]]:
-    """Closed-form and numerical roots merged, whether the list is provably complete, and which q are angles."""
+) -> tuple[list[tuple[dict[sp.Symbol, sp.Expr] | None, np.ndarray]], bool, list[bool], bool]:
+    """Closed-form and numerical roots merged, whether the list is provably complete, which q are angles,
+    and whether a closed form leaves a coordinate free."""
     if all(e == 0 for e in g_exprs):
         # nothing ever pushes: every configuration is an equilibrium (shown at q = 0)
-        return [({s: sp.Integer(0) for s in q}, np.zeros(len(q)))], True, [False] * len(q)
+        return [({s: sp.Integer(0) for s in q}, np.zeros(len(q)))], True, [False] * len(q), True
     args = [*q, *d.table.params]
     at_zero = [e.xreplace({t: 0}) for e in g_exprs]
     J = [[sp.diff(e, s) for s in q] for e in at_zero]
@@ -296,7 +301,7 @@ def _equilibria(
                     np.abs(every(*x, *k, s)).max() <= 1e-8 * max(1.0, float(np.abs(jac(*x, *k)).max())) for s in TIMES
                 )
             ]
-        return [(None, x) for x in found], False, periodic
+        return [(None, x) for x in found], False, periodic, False
     solutions = modes_exact.solve(g_exprs, q, d)
     exact_points: list[tuple[dict[sp.Symbol, sp.Expr], np.ndarray]] = []
     for sol in solutions or []:
@@ -326,10 +331,9 @@ def _equilibria(
     ]
     merged += [(None, x) for x in extra]
     # the numerical search may miss exact ones that it did not reach, never the other way round
-    free = solutions is not None and any(len(s) < len(q) for s in solutions)
-    complete = solutions is not None and not extra and not free and modes_exact.polynomial(g_exprs, q)
+    complete = solutions is not None and not extra and modes_exact.polynomial(g_exprs, q)
     merged.sort(key=lambda p: tuple(p[1]))
-    return merged, complete, periodic
+    return merged, complete, periodic, bool(families)
 
 
 def _on_family(

@@ -115,15 +115,20 @@ def _points(points: tuple[dict[str, float], ...], sym: dict[str, sp.Symbol], pr:
 def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
     """How the list was found, and how far it can be trusted (never "exactly" unless provably complete)."""
     if nm.solved:
-        free = any(len(e.position) > 1 for e in found) and any(
-            e.exact and len(e.exact) < len(e.position) for e in found
-        )
         return (
             "The conditions are polynomial in the coordinates and were solved exactly, so these are all the equilibria"
-            + ("; a coordinate they leave free is set to 0." if free else ".")
+            + ("; a coordinate they leave free is set to 0." if nm.family else ".")
         )
     some_exact = any(e.exact for e in found)
     where = f" (searched: {nm.searched})" if nm.searched else ""
+    if nm.angles_only:
+        # the whole configuration space was searched; only roots closer together than the search can tell apart escape
+        return (
+            ("SymPy's closed forms are shown where it found them; " if some_exact else "")
+            + "a numerical search over a full period of every angle, at the default parameters, found "
+            + (("no others" if all(e.exact for e in found) else "the rest") if some_exact else "them")
+            + " (roots lying very close together could still escape it)."
+        )
     if some_exact:
         return (
             "SymPy's closed forms are shown where it found them; a numerical search at the default parameters"

@@ -107,6 +107,8 @@ def linearize(M: np.ndarray, K: np.ndarray, G: np.ndarray) -> Linear | None:
     still = any(abs(x) <= ZERO * size for x in s)
     kind = UNSTABLE if grows else (NEUTRAL if still else STABLE)
     w_size = max(float(np.abs(w2).max()), 1e-300)
+    # an omega^2 that is zero to rounding (a free translation) is shown as 0
+    w2 = np.where(np.abs(w2) <= ZERO * w_size, 0.0, w2)
     negative = any(w < -ZERO * w_size for w in w2)
     moving = bool(np.abs(Gs).max() > 0)
     sym = (Gs + Gs.T) / 2
