@@ -162,13 +162,17 @@ def search(
     axes = [_axis(periodic[i], i in nonnegative, per_axis, scales) for i in range(n)]
     if n <= 3:
         starts: list[np.ndarray] = [np.array(s, dtype=float) for s in itertools.product(*axes)]
+        # nearest the origin first: when the time runs out, the far-out starts (the parameters' scales) are the ones cut
+        starts.sort(key=lambda x: float(np.abs(x).max()))
     else:
         rng = np.random.default_rng(5)
         starts = [np.array([rng.choice(a) for a in axes]) for _ in range(200)]
-    deadline = time.monotonic() + seconds
-    opt = late.module("scipy.optimize")
+    opt = late.module("scipy.optimize")  # imported before the clock starts
+    # CPU seconds of this process, so that a loaded machine does not shorten the search (and change its result);
+    # the step's own wall-clock budget still bounds it
+    deadline = time.process_time() + seconds
     for start in starts:
-        if time.monotonic() > deadline:
+        if time.process_time() > deadline:
             break
         with np.errstate(all="ignore"):
             try:
