@@ -7,6 +7,7 @@ and ``normal_modes``, with numbers at the default parameters.
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import sympy as sp
@@ -290,6 +291,15 @@ def normal_modes_json(nm: NormalModes, pr: Printer) -> list[dict[str, Any]]:
             "exponents": [[s.real, s.imag] for s in e.linear.exponents] if e.linear else [],
             "frequencies": list(e.linear.frequencies) if e.linear else [],
             "gyroscopic": bool(e.linear and e.linear.gyroscopic),
+            # with velocity terms: each oscillation's exponent and complex shape (amplitude, phase in radians)
+            "complex_modes": [
+                {
+                    "exponent": [s.real, s.imag],
+                    "amplitude": {q: abs(a) for q, a in zip(e.coordinates, shape, strict=True)},
+                    "phase": {q: math.atan2(a.imag, a.real) for q, a in zip(e.coordinates, shape, strict=True)},
+                }
+                for s, shape in (e.linear.complex_modes if e.linear else ())
+            ],
             "modes": [
                 {
                     "omega_squared": m.omega_squared,

@@ -46,6 +46,9 @@ class Linear:
     damped: bool  # G has a symmetric (dissipative or anti-dissipative) part
     moving: bool  # G != 0 at all
     definite: int  # +1: M positive definite, -1: negative definite (L = U - T), 0: indefinite
+    # with G != 0: each oscillating exponent (Im s > 0) and the coordinates' part of its eigenvector,
+    # largest component 1 (amplitudes |a|, phases arg a): the complex modes
+    complex_modes: tuple[tuple[complex, tuple[complex, ...]], ...] = ()
 
     @property
     def frequencies(self) -> tuple[float, ...]:
@@ -101,7 +104,7 @@ def linearize(M: np.ndarray, K: np.ndarray, G: np.ndarray) -> Linear | None:
     # the first-order system's matrix, in the scaled coordinates (same eigenvalues)
     Minv = np.linalg.inv(Ms)
     A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ Ks, -Minv @ Gs]])
-    s = np.linalg.eigvals(A)
+    s, vectors_a = np.linalg.eig(A)
     size = max(float(np.abs(s).max()), 1e-300)
     grows = any(x.real > ZERO * size for x in s)
     still = any(abs(x) <= ZERO * size for x in s)
@@ -114,6 +117,15 @@ def linearize(M: np.ndarray, K: np.ndarray, G: np.ndarray) -> Linear | None:
     sym = (Gs + Gs.T) / 2
     damped = bool(np.abs(sym).max() > 1e-12 * max(np.abs(Gs).max(), 1e-300))
     exponents = tuple(sorted((complex(x) for x in s), key=lambda z: (round(z.imag, 12), z.real)))
+    complex_modes = []
+    if moving:
+        for j in np.argsort(s.imag):
+            if s[j].imag <= ZERO * size:
+                continue
+            # back from the scaled coordinates, e = D^-1 u
+            a = vectors_a[:n, j] / d
+            a = a / a[int(np.argmax(np.abs(a)))]
+            complex_modes.append((complex(s[j]), tuple(complex(x) for x in a)))
     return Linear(
         kind,
         exponents,
@@ -123,4 +135,5 @@ def linearize(M: np.ndarray, K: np.ndarray, G: np.ndarray) -> Linear | None:
         damped=damped,
         moving=moving,
         definite=definite,
+        complex_modes=tuple(complex_modes),
     )

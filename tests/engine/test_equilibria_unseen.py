@@ -354,6 +354,8 @@ def test_the_document_keeps_its_shape_and_claims_nothing_it_cannot_show(name):
         assert {"equilibrium", "exact", "momenta", "stable", "kind", "coordinates", "modes"} <= set(entry)
         assert entry["frequencies"] == pytest.approx(list(e.linear.frequencies))
         assert len(entry["exponents"]) == 2 * len(e.coordinates) and isinstance(entry["gyroscopic"], bool)
+        # complex modes only where velocity terms act (the Penning trap's three oscillations)
+        assert len(entry["complex_modes"]) == (3 if name == "penning-trap" else 0)
     step = next(s for s in doc["steps"] if s["title"] == "Equilibria")
     assert ("exactly" in step["explanation"]) == nm.solved
     if name == "support-on-a-circle":
@@ -420,3 +422,24 @@ def test_every_listed_equilibrium_satisfies_the_equations_at_all_times(name, ind
     scale = max(1.0, float(np.abs(acc(q + 0.1, v, 0.0)).max()))
     for t in (0.0, 1.3, 2.9):
         assert np.abs(acc(q, v, t)).max() <= 1e-8 * scale, (name, found[index].position, t)
+
+
+def test_gyroscopic_modes_are_complex_and_solve_the_full_linearization():
+    for name in ("penning-trap", "rotating-frame-oscillator", "restricted-three-body"):
+        for e in modes(name).equilibria:
+            d = derived(name)
+            M = np.array(e.mass.xreplace(defaults(d)).evalf().tolist(), dtype=float)
+            K = np.array(e.stiffness.xreplace(defaults(d)).evalf().tolist(), dtype=float)
+            # G from the equations of motion written out independently: M q'' = f, G = -df/dq_dot at rest
+            zero = dict.fromkeys(d.table.qd, 0)
+            at = {**defaults(d), **dict(zip(d.table.q, e.position.values(), strict=True))}
+            G = np.array(
+                [[float(-sp.diff(f, v).xreplace(zero).xreplace(at)) for v in d.table.qd] for f in d.equations.forcing]
+            )
+            assert len(e.linear.complex_modes) == len(e.linear.frequencies)
+            for s, a in e.linear.complex_modes:
+                a = np.array(a)
+                # (s^2 M + s G + K) a = 0
+                residual = (s**2 * M + s * G + K) @ a
+                assert np.abs(residual).max() <= 1e-8 * max(1.0, np.abs(K).max(), abs(s) ** 2 * np.abs(M).max())
+                assert np.abs(a).max() == pytest.approx(1.0)
