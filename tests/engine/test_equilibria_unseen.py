@@ -443,3 +443,28 @@ def test_gyroscopic_modes_are_complex_and_solve_the_full_linearization():
                 residual = (s**2 * M + s * G + K) @ a
                 assert np.abs(residual).max() <= 1e-8 * max(1.0, np.abs(K).max(), abs(s) ** 2 * np.abs(M).max())
                 assert np.abs(a).max() == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("name", ["yukawa", "symmetric-top-body-rates"])
+def test_the_user_path_derives_what_it_used_to_refuse(name):
+    # these crashed in the steady-motion step ('float' object has no attribute 'evalf') and were refused
+    # as "a limit of the engine"; the whole document is served now, steady motions included
+    import json
+
+    from app.engine.user_system import UserSystem
+    from app.service.user_jobs import derive_job
+
+    s = SYSTEMS[name]
+    body = {
+        "coordinates": list(s.coordinates),
+        "parameters": [{"name": p.name, "value": p.default} for p in s.parameters],
+        "potential": s.potential,
+        "nonnegative": list(s.nonnegative),
+    }
+    if s.kinetic:
+        body["kinetic"] = s.kinetic
+    else:
+        body["particles"] = [{"mass": p.mass, "position": list(p.position[:2])} for p in s.particles]
+    doc = json.loads(derive_job(UserSystem.of(body)))
+    served = [e for e in doc["normal_modes"] if e["momenta"]]
+    assert len(served) == len(steady(name)) >= 2
