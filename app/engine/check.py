@@ -51,6 +51,7 @@ from app.engine.compare import (
 from app.engine.derive import Derivation
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, OMEGA_HINT, POINTERS, RULES
 from app.engine.parse import ExpressionError, check_expression, parse_expression
+from app.engine.reality import real_somewhere
 from app.engine.report import Printer, display, plain_name
 
 STEPS = ("kinetic", "potential", "lagrangian", "momentum", "equation", "acceleration", "hamiltonian", "omega_squared")
@@ -283,7 +284,7 @@ def parse_answer(pb: Problem, text: str) -> sp.Expr:
     check_answer(text, pb.step, pb.kinds)
     allowed = set(allowed_names(pb.step, pb.kinds))
     try:
-        return parse_expression(text, {n: s for n, s in pb.namespace.items() if n in allowed})
+        return real_somewhere(text, parse_expression(text, {n: s for n, s in pb.namespace.items() if n in allowed}))
     except ExpressionError as exc:
         raise CheckError(f"answer: {exc}", "answer", exc.part, exc.start, exc.end) from None
 

@@ -81,7 +81,8 @@ def reduce_to_one(
     solution: dict[sp.Symbol, sp.Expr] = {}
     if unknowns:
         system = [sp.Eq(eqs.momenta[i], Pc) for i, Pc in zip(cyc, P, strict=True)]
-        found = sp.solve(system, unknowns, dict=True)
+        # linear in the unknowns, but a large M can still make SymPy slow: bounded, and no reduction without it
+        found: list[dict] = within_budget(lambda: sp.solve(system, unknowns, dict=True), [], SOLVE_SECONDS)
         if len(found) != 1:
             return None
         solution = {k: sp.factor_terms(v) for k, v in found[0].items()}

@@ -7,13 +7,14 @@ and ``normal_modes``, with numbers at the default parameters.
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import sympy as sp
 
 from app.engine.derive import Derivation
 from app.engine.hamilton import Hamilton
-from app.engine.modes import NEUTRAL, STABLE, Equilibrium, NormalModes
+from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, NormalModes
 from app.engine.report import Printer, _step, display, plain_name
 
 
@@ -108,15 +109,49 @@ _KIND = {
 }
 
 
+def _points(points: tuple[dict[str, float], ...], sym: dict[str, sp.Symbol], pr: Printer, label: str) -> list[str]:
+    return [r",\; ".join(f"{pr.tex(sym[n])} = {_number(v)}" for n, v in p.items()) + label for p in points]
+
+
+def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
+    """How the list was found, and how far it can be trusted (never "exactly" unless provably complete)."""
+    if nm.solved:
+        return (
+            "The conditions are polynomial in the coordinates and were solved exactly, so these are all the equilibria"
+            + ("; a coordinate they leave free is set to 0." if nm.family else ".")
+        )
+    some_exact = any(e.exact for e in found)
+    where = f" (searched: {nm.searched})" if nm.searched else ""
+    if nm.angles_only:
+        # the whole configuration space was searched; only roots closer together than the search can tell apart escape
+        return (
+            ("SymPy's closed forms are shown where it found them; " if some_exact else "")
+            + "a numerical search over a full period of every angle, at the default parameters, found "
+            + (("no others" if all(e.exact for e in found) else "the rest") if some_exact else "them")
+            + " (roots lying very close together could still escape it)."
+        )
+    if some_exact:
+        return (
+            "SymPy's closed forms are shown where it found them; a numerical search at the default parameters"
+            f"{where} completed the list, so equilibria outside that range may exist."
+        )
+    return (
+        f"The equilibria were found numerically at the default parameters{where}; others may exist outside that range."
+    )
+
+
 def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
     table = d.table
     pr = Printer(table.latex_names())
+    if nm.failed:
+        return [_step("Equilibria", [r"\text{not computed}"], [], nm.failed)]
     qn = [pr.tex(s) for s in table.q]
     plain = d.mechanics.T is not None and d.mechanics.U is not None and sp.expand(d.mechanics.U - nm.potential) == 0
     vname = "U" if plain else "V"
     forced = any(f.xreplace(dict.fromkeys(table.qd, 0)) != 0 for f in d.mechanics.Q)
+    frame = r" + \frac{\partial b}{\partial t}" if nm.moving_frame else ""
     rows = [
-        rf"\frac{{\partial {vname}}}{{\partial {qn[k]}}}{' - Q' if forced else ''} = {pr.tex(display(g))}"
+        rf"\frac{{\partial {vname}}}{{\partial {qn[k]}}}{frame}{' - Q' if forced else ''} = {pr.tex(display(g))}"
         + (" = 0" if g != 0 else "")
         for k, g in enumerate(nm.condition)
     ]
@@ -125,25 +160,23 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
     found = [e for e in nm.equilibria if not e.momenta]
     rows += [_where(e, pr, d) for e in found]
     sym = {s.name: s for s in table.q}
-    rows += [
-        r",\; ".join(f"{pr.tex(sym[n])} = {_number(v)}" for n, v in point.items()) + r"\quad (M \text{ singular})"
-        for point in nm.singular
-    ]
-    rows += [
-        r",\; ".join(f"{pr.tex(sym[n])} = {_number(v)}" for n, v in point.items()) + r"\quad (\text{at a kink of } V)"
-        for point in nm.kinks
-    ]
-    why = "At rest (q̇ = 0) the state stays put where every generalized force vanishes. "
+    rows += _points(nm.singular, sym, pr, r"\quad (M \text{ singular})")
+    rows += _points(nm.kinks, sym, pr, r"\quad (\text{at a kink of } V)")
+    rows += _points(nm.unclassified, sym, pr, r"\quad (\text{coefficients change with } t)")
+    why = "At rest (q̇ = 0) the state stays put where the Euler–Lagrange equations give q̈ = 0. "
     if not plain:
         why += "V = U − T₀ includes the velocity-free part T₀ of the kinetic energy (a moving constraint's share). "
+    if nm.moving_frame:
+        why += (
+            "L has a term b·q̇ whose b depends on t (a moving support), so d/dt of the momentum at rest, ∂b/∂t, "
+            "enters the condition as well. "
+        )
     if nm.note:
         why += nm.note
-    elif nm.solved:
-        why += "The conditions were solved exactly" + (
-            "; a coordinate they leave free is set to 0." if any(len(e.position) > 1 for e in found) else "."
-        )
     else:
-        why += "No closed form was found in time, so the equilibria were found numerically at the default parameters."
+        why += _how_found(nm, found)
+    if nm.found > MAX_EQUILIBRIA:
+        why += f" {nm.found} were found; the first {MAX_EQUILIBRIA} are shown."
     if nm.singular:
         why += (
             f" At {len(nm.singular)} of them the mass matrix is singular (the coordinates break down there, like "
@@ -154,13 +187,56 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
             f" At {len(nm.kinks)} of them V has a kink (an absolute value turns there), so the force jumps and no "
             "quadratic approximation, hence no frequency of small oscillations, exists at those points."
         )
+    if nm.unclassified:
+        why += (
+            " The system stays at rest there at all times, but its linearized equations change with time, so "
+            "there are no constant frequencies to report."
+        )
     steps = [_step("Equilibria", rows, list(nm.condition), why)]
     for e in nm.equilibria:
-        steps.append(_equilibrium_step(e, pr, d, nm.damped))
+        steps.append(_equilibrium_step(e, pr, d))
     return steps
 
 
-def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, damped: bool) -> dict[str, str]:
+def _exponents(e: Equilibrium) -> str:
+    lin = e.linear
+    assert lin is not None
+    shown = []
+    for s in lin.exponents:
+        if s.imag < -1e-12 * max(1.0, abs(s)):
+            continue  # each pair once
+        re = _number(s.real) if abs(s.real) > 1e-9 * max(1.0, abs(s)) else "0"
+        shown.append(re + (rf" \pm {_number(s.imag)}\,i" if s.imag > 1e-12 * max(1.0, abs(s)) else ""))
+    return r"s = " + r",\; ".join(shown)
+
+
+def _verdict(e: Equilibrium) -> str:
+    lin = e.linear
+    if lin is None or not lin.moving:
+        text = _KIND[e.kind]
+        return text[0].upper() + text[1:] + "."
+    freq = ", ".join(_number(f) for f in lin.frequencies)
+    out = (
+        "The velocity terms (G, from damping, Coriolis or magnetic forces) enter the motion near it: with ε = v e^{st} "
+        "the exponents s are the eigenvalues of [[0, I], [−M⁻¹K, −M⁻¹G]]. "
+    )
+    if e.kind == "unstable":
+        out += "One has a positive real part, so small displacements grow: an unstable equilibrium."
+    elif lin.damped and all(s.real < 0 for s in lin.exponents):
+        out += "Every one has a negative real part, so small motions die away: an asymptotically stable equilibrium."
+    elif e.kind == NEUTRAL:
+        out += "One is zero (a free drift) and none grows: a neutral direction."
+    else:
+        out += "Every one is imaginary, so small motions oscillate" + (f" (frequencies {freq})" if freq else "") + "."
+        if lin.gyroscopic:
+            out += (
+                " K alone has a negative ω² (the potential is not a minimum there): the gyroscopic terms hold it, "
+                "a gyroscopically stable equilibrium."
+            )
+    return out
+
+
+def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation) -> dict[str, str]:
     sym = {s.name: s for s in d.table.q}
     where = _where(e, pr, d)
     rows = [rf"M = {pr.tex(e.mass)},\quad K = {pr.tex(e.stiffness)}"]
@@ -172,6 +248,9 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, damped: bool) 
         )
         shape = ", ".join(f"{pr.tex(sym[n])}: {_number(a)}" for n, a in zip(e.coordinates, m.shape, strict=True))
         rows.append(rf"\omega_{{{i}}}^2 = {value},\quad \text{{shape }} ({shape})")
+    moving = e.linear is not None and e.linear.moving
+    if moving:
+        rows.append(_exponents(e))
     if e.momenta:
         title = f"Small oscillations about the steady motion at {plain_name(e.coordinates[0])} = {_number(e.position[e.coordinates[0]])}"
         why = (
@@ -183,11 +262,17 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, damped: bool) 
         why = (
             "Near the equilibrium M ε̈ + K ε = 0 with M the mass matrix and K the Hessian of the potential there; "
             "ε = a cos ωt solves it when (K − ω² M) a = 0, so each ω² is an eigenvalue of K relative to M and a its shape "
-            "(numbers at the default parameters). "
+            "(numbers at the default parameters)"
+            + (", the shapes of the motion without its velocity terms. " if moving else ". ")
         )
-    why += _KIND[e.kind][0].upper() + _KIND[e.kind][1:] + "."
-    if damped:
-        why += " Velocity terms (damping or gyroscopic forces) are left out of these frequencies."
+    if e.linear is not None and e.linear.definite < 0:
+        why += (
+            "The mass matrix is negative definite here (L = U − T, or a negative mass): the equations are the same as "
+            "for −L, so ω² and the verdict are unchanged. "
+        )
+    elif e.linear is not None and e.linear.definite == 0:
+        why += "The mass matrix is indefinite here (the kinetic energy is not positive for every velocity). "
+    why += _verdict(e)
     return _step(
         title, [where, *rows], [e.mass.tolist(), e.stiffness.tolist(), [m.omega_squared for m in e.modes]], why
     )
@@ -202,6 +287,19 @@ def normal_modes_json(nm: NormalModes, pr: Printer) -> list[dict[str, Any]]:
             "stable": e.stable,
             "kind": e.kind,
             "coordinates": list(e.coordinates),
+            # the full linearization's exponents s (velocity terms included), as [Re s, Im s]
+            "exponents": [[s.real, s.imag] for s in e.linear.exponents] if e.linear else [],
+            "frequencies": list(e.linear.frequencies) if e.linear else [],
+            "gyroscopic": bool(e.linear and e.linear.gyroscopic),
+            # with velocity terms: each oscillation's exponent and complex shape (amplitude, phase in radians)
+            "complex_modes": [
+                {
+                    "exponent": [s.real, s.imag],
+                    "amplitude": {q: abs(a) for q, a in zip(e.coordinates, shape, strict=True)},
+                    "phase": {q: math.atan2(a.imag, a.real) for q, a in zip(e.coordinates, shape, strict=True)},
+                }
+                for s, shape in (e.linear.complex_modes if e.linear else ())
+            ],
             "modes": [
                 {
                     "omega_squared": m.omega_squared,

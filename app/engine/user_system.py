@@ -116,6 +116,29 @@ class UserSystem:
         for name, text in self.forces:
             yield ("forces", name), text, True
 
+    def never_real(self) -> tuple[tuple, Exception] | None:
+        """The first expression that is a real number nowhere, located, with its refusal (app.engine.reality).
+
+        Called by the worker before deriving (SymPy is imported here, not at import time).
+        """
+        from app.engine.parse import ExpressionError, parse_expression
+        from app.engine.reality import refuse_if_nowhere_real
+        from app.engine.symbols import SymbolTable
+
+        table = SymbolTable(self.coordinates, self.parameter_names)
+        names = table.namespace()
+        fixed = {s: p.default for s, p in zip(table.params, self.parameters, strict=True)}
+        free = [*table.q, *table.qd, table.t]
+        for loc, text, velocities in self.expressions():
+            if loc[0] == "forces":
+                continue  # a generalized force is not an energy (a complex one is refused by the numerics)
+            try:
+                expr = parse_expression(text, names)
+                refuse_if_nowhere_real(text, expr, free if velocities else [*table.q, table.t], fixed)
+            except ExpressionError as exc:
+                return loc, exc
+        return None
+
     def system(self) -> System:
         """The engine's declaration (a planar particle moves in z = 0)."""
         return System(

@@ -47,6 +47,8 @@ def build_system(user: UserSystem) -> System:
             parse_expression(text, namespace if velocities else positional)
         except ExpressionError as exc:
             raise _refuse(loc, exc) from None
+    if (nowhere := user.never_real()) is not None:  # issue 32: an energy that is real nowhere
+        raise _refuse(*nowhere)  # type: ignore[arg-type]
     return user.system()
 
 

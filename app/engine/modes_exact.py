@@ -1,0 +1,106 @@
+"""Closed forms for the equilibria step: the equilibria solved by SymPy, and omega^2 at an exact equilibrium.
+
+Each is bounded by its own time budget and returns nothing (rather than
+waiting) when SymPy cannot answer in time; the numerical search in
+``app.engine.roots`` and the numbers in ``app.engine.stability`` stand
+without them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import sympy as sp
+
+from app.engine.budget import within_budget
+from app.engine.derive import Derivation, positive_names
+
+SOLVE_SECONDS = 1.5  # symbolic equilibria
+EIGEN_SECONDS = 1.0  # symbolic omega^2
+MAX_SOLVE_OPS = 400  # larger conditions go straight to the numeric search
+MAX_EXACT_OPS = 80  # closed forms of omega^2 longer than this are given as numbers only
+
+
+def positive(d: Derivation) -> dict[sp.Symbol, sp.Symbol]:
+    """Stand-ins carrying the declared signs (positive parameters, nonnegative distances)."""
+    names = positive_names(d.system)
+    table = d.table
+    nonnegative = {p.name for p in d.system.parameters if p.min is not None and p.min == 0}
+    out = {s: sp.Symbol(s.name, nonnegative=True) for s in table.params if s.name in nonnegative}
+    out.update({s: sp.Symbol(s.name, positive=True) for s in table.params if s.name in names})
+    out.update({s: sp.Symbol(s.name, nonnegative=True) for s in table.q if s.name in names})
+    return out
+
+
+def polynomial(g_exprs: list[sp.Expr], q: list[sp.Symbol]) -> bool:
+    """Every condition is a ratio of polynomials in the coordinates: SymPy's solve then finds every root."""
+    for e in g_exprs:
+        num, den = sp.fraction(sp.together(e))
+        if not (num.is_polynomial(*q) and den.is_polynomial(*q)):
+            return False
+    return True
+
+
+def solve(g_exprs: list[sp.Expr], q: list[sp.Symbol], d: Derivation) -> list[dict[sp.Symbol, sp.Expr]] | None:
+    """Closed-form equilibria (free coordinates left out), or None if SymPy cannot tell in time."""
+    if all(e == 0 for e in g_exprs):
+        return [{}]
+    if sp.count_ops(g_exprs) > MAX_SOLVE_OPS:
+        return None
+    assume = positive(d)
+    back = {v: k for k, v in assume.items()}
+    unknowns = [assume.get(s, s) for s in q]
+    found = within_budget(
+        # unchecked and unsimplified (much faster); each root is checked numerically by the caller
+        lambda: sp.solve(
+            [e.xreplace(assume) for e in g_exprs if e != 0], unknowns, dict=True, check=False, simplify=False
+        ),
+        None,
+        SOLVE_SECONDS,
+    )
+    if found is None:
+        return None
+    return [{k.xreplace(back): v.xreplace(back) for k, v in sol.items()} for sol in found]
+
+
+def cheap(expr: sp.Expr) -> sp.Expr:
+    """A quick normal form for entries of M and K at an equilibrium (no full simplification)."""
+    return within_budget(lambda: sp.factor_terms(sp.cancel(expr)), expr, 0.2)
+
+
+def _neat(expr: sp.Expr) -> sp.Expr:
+    if any(not e.exp.is_integer for e in expr.atoms(sp.Pow)):
+        return sp.factor_terms(expr)
+    return sp.factor(expr)
+
+
+def _roots(M: sp.Matrix, K: sp.Matrix) -> list[sp.Expr]:
+    n = M.shape[0]
+    if M.is_diagonal() and K.is_diagonal():
+        return [sp.cancel(K[i, i] / M[i, i]) for i in range(n)]
+    if n == 2:
+        # det(K - l M) = a l^2 + b l + c = 0
+        a = M.det()
+        b = -(K[0, 0] * M[1, 1] + K[1, 1] * M[0, 0] - K[0, 1] * M[1, 0] - K[1, 0] * M[0, 1])
+        c = K.det()
+        root = sp.sqrt(sp.factor(sp.expand(b**2 - 4 * a * c)))
+        # a rational result (the square root came out) is put over one factored denominator
+        return [_neat((-b - root) / (2 * a)), _neat((-b + root) / (2 * a))]
+    lam = sp.Dummy("lambda")
+    poly = sp.Poly(sp.expand((K - lam * M).det(method="berkowitz")), lam)
+    roots = sp.roots(poly, multiple=True)
+    if len(roots) != M.shape[0]:
+        return []
+    return [sp.factor_terms(r) for r in roots]
+
+
+def eigenvalues(M: sp.Matrix, K: sp.Matrix, assume: Mapping[sp.Symbol, sp.Symbol]) -> list[sp.Expr]:
+    """Closed forms of the roots of det(K - lambda M) = 0 (under the declared signs), when small and in time."""
+    back = {v: k for k, v in assume.items()}
+
+    def work() -> list[sp.Expr]:
+        Ma, Ka = M.xreplace(dict(assume)), K.xreplace(dict(assume))
+        return [r.xreplace(back) for r in _roots(Ma, Ka)]
+
+    found: list[sp.Expr] = within_budget(work, [], EIGEN_SECONDS)
+    return [c for c in found if sp.count_ops(c) <= MAX_EXACT_OPS]
