@@ -216,29 +216,32 @@ def jacobi_determinant(t: np.ndarray, P: np.ndarray, C: np.ndarray, R: np.ndarra
     return dets, fields
 
 
+def _zero_between(J0: np.ndarray, D0: np.ndarray, J1: np.ndarray, D1: np.ndarray, H: float) -> float:
+    """Where in [0, 1] det J changes sign, J the cubic Hermite interpolant of (J, J') at a step's two ends."""
+
+    def det_at(x: float) -> float:
+        h00, h10, h01, h11 = 2 * x**3 - 3 * x**2 + 1, x**3 - 2 * x**2 + x, -2 * x**3 + 3 * x**2, x**3 - x**2
+        return float(np.linalg.det(h00 * J0 + h10 * H * D0 + h01 * J1 + h11 * H * D1))
+
+    low, high = 0.0, 1.0
+    for _ in range(60):
+        mid = (low + high) / 2
+        if det_at(mid) > 0:
+            low = mid
+        else:
+            high = mid
+    return (low + high) / 2
+
+
 def conjugate_time(t: np.ndarray, P: np.ndarray, C: np.ndarray, R: np.ndarray) -> float | None:
     """The first t* > 0 where det J = 0 (the first kinetic focus), or None before the grid's end."""
     dets, fields = jacobi_determinant(t, P, C, R)
     H = 2 * (t[1] - t[0])
     # det J ~ t^n > 0 just after 0: the first step at which it is no longer positive
     for s in range(2, dets.size):
-        if dets[s] > 0:
-            continue
-        (J0, D0), (J1, D1) = fields[s - 1], fields[s]
-
-        def det_at(x: float) -> float:
-            # cubic Hermite interpolant of J on [t_{s-1}, t_s], x in [0, 1]
-            h00, h10, h01, h11 = 2 * x**3 - 3 * x**2 + 1, x**3 - 2 * x**2 + x, -2 * x**3 + 3 * x**2, x**3 - x**2
-            return float(np.linalg.det(h00 * J0 + h10 * H * D0 + h01 * J1 + h11 * H * D1))
-
-        low, high = 0.0, 1.0
-        for _ in range(60):
-            mid = (low + high) / 2
-            if det_at(mid) > 0:
-                low = mid
-            else:
-                high = mid
-        return float((s - 1) * H + (low + high) / 2 * H)
+        if dets[s] <= 0:
+            (J0, D0), (J1, D1) = fields[s - 1], fields[s]
+            return float((s - 1 + _zero_between(J0, D0, J1, D1, H)) * H)
     return None
 
 
@@ -269,7 +272,9 @@ def action_of(
         values = terms.evaluate(path.t, path.y[:, :n].T, path.y[:, n:].T, k)
         L, Lq, Lv, P, C, R = terms.split(values)
         if not np.all(np.isfinite(L)):
-            raise SimulationError("L cannot be evaluated along the true path (a singular point of the coordinates)", "initial")
+            raise SimulationError(
+                "L cannot be evaluated along the true path (a singular point of the coordinates)", "initial"
+            )
         h = path.h
         size, _ = integral(np.abs(L), h)
         true, quad_error = integral(L, h)
