@@ -5,7 +5,7 @@
      "conjugate_time": t* | null, "error_estimate": absolute error of each S,
      "coordinate", "shape", "k", "t_end", "eigenvalues": the second variation on η_1 … η_K,
      "path": {"t", "q", "L"} (the true path's chosen coordinate and L, SHOWN samples),
-     "preview": {"lagrangian", "coordinates", "parameters"} (L as browser JavaScript), "warnings": [...]}
+     "preview": {"lagrangian", "rhs", "coordinates", "parameters"} (L and the equations as browser JavaScript), "warnings": [...]}
 
 The numbers come from ``app.numerics.action`` (no SymPy on a warm system); a refusal is a
 SimulationError naming the field, as for a simulation.  A user system's job runs in the worker pool.
@@ -117,6 +117,7 @@ def action_of_derivation(
         },
         "preview": {
             "lagrangian": terms.browser,
+            "rhs": system.browser,
             "coordinates": names,
             "parameters": list(system.parameter_names),
         },

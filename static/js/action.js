@@ -1,0 +1,369 @@
+/**
+ * action.js — the panel "The action": S = ∫ L dt along the true path and along varied paths.
+ *
+ *   new ActionPanel(section, data, urls)   the plots.js interface: draw(run), cursor(i, run)
+ *
+ * The true path q(t) on [0, T] starts from the run's initial state; a varied path moves one
+ * coordinate by ε η(t), η = sin(kπt/T), zero at both ends.  Three plots in one figure: q against
+ * t (the varied path is dragged up and down, which sets ε), L(t) along both paths, and S(ε) with
+ * the current ε marked and the flat tangent at ε = 0.  A T slider moves the end time; past the
+ * first kinetic focus t* (where the Jacobi fields from t = 0 vanish) the readout says the true
+ * path is no longer a minimum of S, and t* is marked on the time axis.
+ *
+ * Live: everything is computed in the browser from engine-generated JavaScript: the equations
+ * of motion (preview.js compileRhs) and L (app/numerics/action.py), both printed on the server
+ * from the engine's expressions.  They arrive with the first answer of POST .../action; after
+ * each change the server's numbers (S(ε) on the same ε's, the second variation, the kind, t*)
+ * replace the browser's (section.dataset.source says which are shown).
+ *
+ *   liveAction(functions, setup)   the browser's numbers alone (tests and benchmarks call it)
+ */
+import { axis, CONFIG, layout, PALETTE } from "./plotkit.js";
+import { compileRhs } from "./preview.js";
+import { fmt, table } from "./summaries.js";
+
+const STEPS = 400; // RK4 steps of the browser's true path (an even number: Simpson)
+const CURVE = 41; // ε values on the S(ε) curve
+const SHAPES = 8; // k = 1 … SHAPES tried for the kind
+const SETTLE_MS = 250; // the server's numbers are asked for once the input has rested this long
+
+export function compileLagrangian(preview) {
+  // printed on the server from the engine's L with every symbol renamed (q0, v0, k0, t)
+  return new Function("t", "y", "k", `"use strict";\n${preview.lagrangian}`);
+}
+
+/** y(t) on STEPS + 1 even times by RK4 (sub-steps so that h·ω stays small); null if it leaves the finite numbers. */
+export function path(rhs, y0, k, T, steps = STEPS, sub = 4) {
+  const m = y0.length, h = T / (steps * sub);
+  const y = Float64Array.from(y0), k1 = new Float64Array(m), k2 = new Float64Array(m), k3 = new Float64Array(m), k4 = new Float64Array(m), tmp = new Float64Array(m);
+  const Y = [Float64Array.from(y)];
+  let time = 0;
+  for (let s = 0; s < steps; s++) {
+    for (let r = 0; r < sub; r++) {
+      rhs(time, y, k, k1);
+      for (let j = 0; j < m; j++) tmp[j] = y[j] + 0.5 * h * k1[j];
+      rhs(time + 0.5 * h, tmp, k, k2);
+      for (let j = 0; j < m; j++) tmp[j] = y[j] + 0.5 * h * k2[j];
+      rhs(time + 0.5 * h, tmp, k, k3);
+      for (let j = 0; j < m; j++) tmp[j] = y[j] + h * k3[j];
+      rhs(time + h, tmp, k, k4);
+      for (let j = 0; j < m; j++) y[j] += (h / 6) * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
+      time += h;
+    }
+    if (!y.every(Number.isFinite)) return null;
+    Y.push(Float64Array.from(y));
+  }
+  return { t: Float64Array.from({ length: steps + 1 }, (_, i) => (i * T) / steps), Y };
+}
+
+/** L along q + ε η e_c (η = sin(kπt/T)), and S by Simpson's rule. */
+export function varied(L, p, k, c, shape, eps) {
+  const n = p.Y[0].length / 2, N = p.t.length - 1, T = p.t[N], w = (shape * Math.PI) / T;
+  const values = new Float64Array(N + 1), y = new Float64Array(2 * n);
+  let S = 0;
+  for (let i = 0; i <= N; i++) {
+    const t = p.t[i];
+    y.set(p.Y[i]);
+    y[c] += eps * Math.sin(w * t);
+    y[n + c] += eps * w * Math.cos(w * t);
+    values[i] = L(t, y, k);
+    // Simpson: h/3 (f0 + 4 f1 + 2 f2 + … + f_N)
+    S += values[i] * (i === 0 || i === N ? 1 : i % 2 ? 4 : 2);
+  }
+  return { L: values, S: (S * T) / N / 3 };
+}
+
+/** The first t* where det J = 0, J the Jacobi fields ∂q/∂q̇(0) (differences of neighbouring paths); null before T. */
+export function focus(rhs, y0, k, T, steps = STEPS) {
+  const n = y0.length / 2, d = 1e-6;
+  const base = path(rhs, y0, k, T, steps);
+  if (!base) return null;
+  const fields = [];
+  for (let j = 0; j < n; j++) {
+    const up = Float64Array.from(y0), down = Float64Array.from(y0);
+    up[n + j] += d; down[n + j] -= d;
+    const a = path(rhs, up, k, T, steps), b = path(rhs, down, k, T, steps);
+    if (!a || !b) return null;
+    fields.push(a.Y.map((y, i) => Array.from({ length: n }, (_, r) => (y[r] - b.Y[i][r]) / (2 * d))));
+  }
+  const det = (i) => determinant(fields.map((f) => f[i]));
+  let previous = det(1);
+  for (let i = 2; i <= steps; i++) {
+    const now = det(i);
+    if (previous > 0 && now <= 0) return base.t[i - 1] + (previous / (previous - now)) * (base.t[i] - base.t[i - 1]);
+    previous = now;
+  }
+  return null;
+}
+
+function determinant(rows) {
+  const a = rows.map((r) => [...r]), n = a.length;
+  let det = 1;
+  for (let c = 0; c < n; c++) {
+    let p = c;
+    for (let r = c + 1; r < n; r++) if (Math.abs(a[r][c]) > Math.abs(a[p][c])) p = r;
+    if (a[p][c] === 0) return 0;
+    if (p !== c) { [a[p], a[c]] = [a[c], a[p]]; det = -det; }
+    det *= a[c][c];
+    for (let r = c + 1; r < n; r++) {
+      const f = a[r][c] / a[c][c];
+      for (let q = c; q < n; q++) a[r][q] -= f * a[c][q];
+    }
+  }
+  return det;
+}
+
+/**
+ * The browser's numbers for one setup {y0, k, T, c, shape, eps, epsilons, focusSpan}: the true and varied
+ * paths with L along them, S on the ε curve, the second variation per shape k (central differences),
+ * the kind, and t* up to focusSpan.
+ */
+export function liveAction(fns, s) {
+  const p = s.path || path(fns.rhs, s.y0, s.k, s.T);
+  if (!p) return { error: "the true path leaves the region where the equations can be evaluated" };
+  const truth = varied(fns.L, p, s.k, s.c, s.shape, 0);
+  const now = varied(fns.L, p, s.k, s.c, s.shape, s.eps);
+  const curve = s.epsilons.map((e) => (e === 0 ? truth.S : varied(fns.L, p, s.k, s.c, s.shape, e).S));
+  const h = 1e-3;
+  const second = [];
+  for (let j = 1; j <= SHAPES; j++) {
+    const plus = varied(fns.L, p, s.k, s.c, j, h).S, minus = varied(fns.L, p, s.k, s.c, j, -h).S;
+    second.push((plus + minus - 2 * truth.S) / (h * h));
+  }
+  const lowest = Math.min(...second);
+  const kind = lowest >= 0 ? "minimum" : second.every((x) => x < 0) ? "maximum" : "saddle";
+  return { path: p, truth, now, curve, second, kind, secondVariation: second[s.shape - 1] };
+}
+
+export class ActionPanel {
+  static needsUrls = true;
+
+  constructor(section, data, urls = {}) {
+    this.section = section; this.data = data;
+    this.plot = section.querySelector(".plot");
+    this.readout = section.querySelector(".readout");
+    this.summary = section.querySelector(".data-summary .table");
+    this.preview = true;
+    const sim = section.closest("#simulation") || document.getElementById("simulation");
+    const simulateUrl = urls.simulate || sim?.dataset.simulateUrl || "/api/simulate";
+    this.url = simulateUrl.replace(/simulate$/, "action");
+    const declared = document.getElementById("playground-system");
+    this.system = declared ? JSON.parse(declared.textContent || "{}") : null;
+    this.fns = null; this.answers = new Map(); this.serial = 0;
+    this.coordinate = 0; this.shape = 1; this.eps = 0;
+    this.tEnd = data.t_end || 10;
+    this.T = this.tEnd / 10;
+    this.controls();
+    this.bindDrag();
+  }
+
+  controls() {
+    const tools = this.section.querySelector(".panel-tools");
+    const id = (x) => `action-${x}`;
+    const names = this.data.coordinates;
+    const group = (html) => `<span style="white-space:nowrap">${html}</span>`;
+    tools.insertAdjacentHTML("beforeend", `
+      <div class="action-controls" style="display:flex;flex-wrap:wrap;gap:0.4rem 1rem;align-items:center">
+        ${names.length > 1 ? group(`<label for="${id("coordinate")}">Vary</label> <select id="${id("coordinate")}">${names.map((q, i) => `<option value="${i}">${this.label(q)}</option>`).join("")}</select>`) : ""}
+        ${group(`<label for="${id("k")}">Shape k</label> <select id="${id("k")}">${Array.from({ length: 6 }, (_, j) => `<option value="${j + 1}">${j + 1}</option>`).join("")}</select>`)}
+        ${group(`<label for="${id("eps")}">ε</label> <input type="range" id="${id("eps")}" min="-1" max="1" step="0.01" value="0">`)}
+        ${group(`<label for="${id("T")}">T</label> <input type="range" id="${id("T")}" min="${this.tEnd / 200}" max="${this.tEnd}" step="${this.tEnd / 200}" value="${this.T}"> <output id="${id("T-value")}" for="${id("T")}"></output>`)}
+      </div>`);
+    this.epsInput = tools.querySelector(`#${id("eps")}`);
+    this.TInput = tools.querySelector(`#${id("T")}`);
+    this.TOut = tools.querySelector(`#${id("T-value")}`);
+    tools.querySelector(`#${id("k")}`).addEventListener("change", (e) => { this.shape = Number(e.target.value); this.update(true); });
+    tools.querySelector(`#${id("coordinate")}`)?.addEventListener("change", (e) => { this.coordinate = Number(e.target.value); this.eps = 0; this.epsInput.value = "0"; this.update(true); });
+    this.epsInput.addEventListener("input", () => { this.eps = Number(this.epsInput.value) * this.epsMax; this.update(false); });
+    this.TInput.addEventListener("input", () => { this.T = Number(this.TInput.value); this.update(true); });
+  }
+
+  label(q) { return (this.data.labels && this.data.labels[q]) || q; }
+
+  bindDrag() {
+    // dragging the varied path: ε = (y − q(t)) / η(t) at the pointer, where |η| is not small
+    let dragging = false;
+    const at = (event) => {
+      const full = this.plot._fullLayout;
+      if (!full || !this.live) return;
+      const xa = full.xaxis, ya = full.yaxis, box = this.plot.getBoundingClientRect();
+      const t = xa.p2d(event.clientX - box.left - xa._offset), y = ya.p2d(event.clientY - box.top - ya._offset);
+      const eta = Math.sin((this.shape * Math.PI * t) / this.T);
+      if (!(t > 0 && t < this.T) || Math.abs(eta) < 0.3) return;
+      const i = Math.round((t / this.T) * (this.live.path.t.length - 1));
+      const q = this.live.path.Y[i][this.coordinate];
+      this.eps = Math.max(-this.epsMax, Math.min(this.epsMax, (y - q) / eta));
+      this.epsInput.value = String(this.eps / this.epsMax);
+      this.update(false);
+    };
+    this.plot.addEventListener("pointerdown", (e) => {
+      const full = this.plot._fullLayout;
+      if (!full) return;
+      const ya = full.yaxis, box = this.plot.getBoundingClientRect(), y = e.clientY - box.top;
+      if (y < ya._offset || y > ya._offset + ya._length) return; // only on the upper plot (the paths)
+      dragging = true; this.plot.setPointerCapture?.(e.pointerId); e.preventDefault(); at(e);
+    });
+    this.plot.addEventListener("pointermove", (e) => { if (dragging) at(e); });
+    const stop = () => { if (dragging) { dragging = false; this.settle(); } };
+    this.plot.addEventListener("pointerup", stop);
+    this.plot.addEventListener("pointercancel", stop);
+    this.epsInput.addEventListener("change", () => this.settle());
+  }
+
+  setup() {
+    const run = this.run, data = this.data, n = data.coordinates.length;
+    const params = { ...data.parameters, ...(run?.request?.parameters || {}) };
+    const initial = { ...data.initial, ...(run?.request?.initial || {}) };
+    const names = this.fns.spec.coordinates;
+    const y0 = new Float64Array(2 * n);
+    names.forEach((q, i) => { y0[i] = initial[q] ?? 0; y0[n + i] = initial[`${q}_dot`] ?? 0; });
+    const k = Float64Array.from(this.fns.spec.parameters, (p) => params[p] ?? 0);
+    return { y0, k, params, initial };
+  }
+
+  async draw(run) {
+    this.run = run;
+    if (!this.fns) await this.ask(true); // the first answer brings the generated functions
+    else this.update(true);
+  }
+
+  /** Recompute in the browser; a new path (T, k, start) also asks the server once the input rests. */
+  update(newPath) {
+    if (!this.fns) return;
+    const started = performance.now();
+    const { y0, k } = this.setup();
+    const key = `${this.T}|${Array.from(y0)}|${Array.from(k)}`;
+    if (newPath || !this.live || this.pathKey !== key) {
+      const p = path(this.fns.rhs, y0, k, this.T);
+      if (!p) { this.readout.textContent = "The true path leaves the region where L can be evaluated; choose a shorter T."; return; }
+      let lo = Infinity, hi = -Infinity;
+      for (const y of p.Y) { lo = Math.min(lo, y[this.coordinate]); hi = Math.max(hi, y[this.coordinate]); }
+      this.epsMax = Math.max(0.2, 0.6 * (hi - lo));
+      this.eps = Math.max(-this.epsMax, Math.min(this.epsMax, this.eps));
+      this.pathKey = key; this.cachedPath = p;
+      if (this.focusKey !== `${Array.from(y0)}|${Array.from(k)}`) {
+        this.focusKey = `${Array.from(y0)}|${Array.from(k)}`;
+        this.focusAt = focus(this.fns.rhs, y0, k, this.tEnd, 800);
+      }
+      this.server = null;
+      clearTimeout(this.timer);
+      this.timer = setTimeout(() => this.ask(false), SETTLE_MS);
+    }
+    const epsilons = Array.from({ length: CURVE }, (_, i) => ((2 * i) / (CURVE - 1) - 1) * this.epsMax);
+    this.live = liveAction(this.fns, { y0, k, T: this.T, c: this.coordinate, shape: this.shape, eps: this.eps, epsilons, path: this.cachedPath });
+    this.epsilons = epsilons;
+    this.paint();
+    this.section.dataset.recompute = (performance.now() - started).toFixed(1);
+  }
+
+  settle() {
+    clearTimeout(this.timer);
+    this.timer = setTimeout(() => this.ask(false), SETTLE_MS);
+  }
+
+  async ask(first) {
+    const serial = ++this.serial;
+    const { params, initial } = this.fns ? this.setup() : { params: { ...this.data.parameters, ...(this.run?.request?.parameters || {}) }, initial: { ...this.data.initial, ...(this.run?.request?.initial || {}) } };
+    const names = this.data.coordinates;
+    const epsilons = this.epsilons || [0];
+    const request = { initial, t_end: this.T, coordinate: names[this.coordinate], shape: "sine", k: this.shape, epsilons };
+    let body;
+    if (this.system) {
+      const parameters = (this.system.parameters || []).map((p) => ({ ...p, value: params[p.name] ?? p.value }));
+      body = { system: { ...this.system, parameters }, ...request };
+    } else body = { parameters: params, ...request };
+    const key = JSON.stringify(body);
+    this.section.setAttribute("aria-busy", "true");
+    let answer;
+    try {
+      answer = this.answers.get(key);
+      if (!answer) {
+        answer = fetch(this.url, { method: "POST", headers: { "Content-Type": "application/json", Accept: "application/json" }, body: key })
+          .then(async (res) => {
+            const b = await res.json().catch(() => ({}));
+            if (!res.ok) throw new Error(typeof b.detail === "string" ? b.detail : `the server answered ${res.status}`);
+            return b;
+          });
+        this.answers.set(key, answer);
+        if (this.answers.size > 32) this.answers.delete(this.answers.keys().next().value);
+      }
+      answer = await answer;
+    } catch (err) {
+      this.answers.delete(key);
+      if (serial === this.serial) { this.readout.textContent = `No action: ${err.message}`; this.section.setAttribute("aria-busy", "false"); }
+      return;
+    }
+    if (serial !== this.serial) return; // a newer request is on its way
+    if (!this.fns || this.fns.spec.lagrangian !== answer.preview.lagrangian) {
+      this.fns = { spec: answer.preview, rhs: compileRhs(answer.preview), L: compileLagrangian(answer.preview) };
+    }
+    this.section.setAttribute("aria-busy", "false");
+    if (first) { this.update(true); clearTimeout(this.timer); }
+    if (answer.t_end === this.T && answer.k === this.shape && answer.coordinate === names[this.coordinate] && this.epsilons && answer.epsilons.length === this.epsilons.length) {
+      this.server = answer;
+      this.paint();
+    } else if (first) this.settle();
+  }
+
+  paint() {
+    const live = this.live, s = this.server;
+    if (!live || live.error) { this.readout.textContent = live?.error || ""; return; }
+    const q = this.data.coordinates[this.coordinate], lq = this.label(q), unit = this.data.units?.[q] || "";
+    const t = Array.from(live.path.t), T = this.T, w = (this.shape * Math.PI) / T;
+    const trueQ = live.path.Y.map((y) => y[this.coordinate]);
+    const variedQ = trueQ.map((v, i) => v + this.eps * Math.sin(w * t[i]));
+    const curve = s ? s.action : live.curve, S0 = s ? s.true : live.truth.S;
+    const kind = s ? s.kind : live.kind;
+    const tStar = s && s.conjugate_time !== null ? s.conjugate_time : this.focusAt;
+    // the browser's S(ε) - S(0) (the same quadrature for both) on top of the shown S(0)
+    const Snow = S0 + (live.now.S - live.truth.S);
+    const traces = [
+      { type: "scatter", mode: "lines", x: t, y: trueQ, name: "true path", line: { color: PALETTE[0], width: 2 } },
+      { type: "scatter", mode: "lines", x: t, y: variedQ, name: "your path (drag it)", line: { color: PALETTE[1], width: 3, dash: "dash" } },
+      { type: "scatter", mode: "lines", x: t, y: Array.from(live.truth.L), name: "L on the true path", xaxis: "x2", yaxis: "y2", line: { color: PALETTE[0], width: 1.5 }, showlegend: false },
+      { type: "scatter", mode: "lines", x: t, y: Array.from(live.now.L), name: "L on your path", xaxis: "x2", yaxis: "y2", line: { color: PALETTE[1], width: 1.5, dash: "dash" }, showlegend: false },
+      { type: "scatter", mode: "lines", x: this.epsilons, y: curve, name: "S(ε)", xaxis: "x3", yaxis: "y3", line: { color: PALETTE[2], width: 2 }, showlegend: false },
+      { type: "scatter", mode: "lines", x: [-0.35 * this.epsMax, 0.35 * this.epsMax], y: [S0, S0], name: "tangent at ε = 0", xaxis: "x3", yaxis: "y3", line: { color: "#57606a", width: 1, dash: "dot" }, showlegend: false },
+      { type: "scatter", mode: "markers", x: [this.eps], y: [Snow], name: "S of your path", xaxis: "x3", yaxis: "y3", marker: { color: PALETTE[1], size: 10 }, showlegend: false },
+    ];
+    const shapes = [];
+    if (tStar !== null && tStar !== undefined && tStar <= T * 1.0001) {
+      shapes.push({ type: "line", xref: "x", yref: "paper", x0: tStar, x1: tStar, y0: 0.62, y1: 1, line: { color: "#c62828", width: 2, dash: "dot" } });
+    }
+    const lay = layout({
+      height: 520, hovermode: false, dragmode: false, showlegend: true,
+      xaxis: axis("t (s)", { domain: [0, 1], anchor: "y", range: [0, T] }), yaxis: axis(`${lq} (${unit})`, { domain: [0.62, 1] }),
+      xaxis2: axis("t (s)", { domain: [0, 0.42], anchor: "y2", range: [0, T] }), yaxis2: axis("L (J)", { domain: [0, 0.4], anchor: "x2" }),
+      xaxis3: axis("ε", { domain: [0.64, 1], anchor: "y3" }), yaxis3: axis("S (J·s)", { domain: [0, 0.4], anchor: "x3" }),
+      shapes,
+      annotations: tStar !== null && tStar !== undefined && tStar <= T ? [{ x: tStar, y: 1, xref: "x", yref: "paper", text: "kinetic focus t*", showarrow: false, font: { color: "#c62828", size: 12 }, yanchor: "bottom" }] : [],
+    });
+    window.Plotly?.react(this.plot, traces, lay, { ...CONFIG, responsive: true });
+    this.TOut.textContent = `${fmt(T)} s`;
+    const source = s ? "server" : "preview";
+    this.section.dataset.source = source;
+    this.section.dataset.kind = kind;
+    this.section.dataset.s0 = String(S0);
+    this.section.dataset.sNow = String(Snow);
+    const focusWords = tStar === null || tStar === undefined
+      ? `No kinetic focus before ${fmt(this.tEnd)} s.`
+      : `The first kinetic focus (conjugate point) of this start is at t* = ${fmt(tStar)} s${tStar <= T ? ", marked on the time axis" : ""}.`;
+    let verdict;
+    if (kind === "minimum") verdict = `With T = ${fmt(T)} s the true path is a minimum of S: every variation with the same ends raises it.`;
+    else if (kind === "saddle") verdict = `With T = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S: it is a saddle, and some variation (k = ${Math.max(1, live.second.findIndex((x) => x < 0) + 1)} among the sine shapes) lowers S. S is still stationary: its tangent at ε = 0 stays flat.`;
+    else verdict = `With T = ${fmt(T)} s every variation tried lowers S: the true path is a maximum among them.`;
+    const second = s ? s.second_variation : live.secondVariation;
+    const diff = Snow - S0;
+    const yours = this.eps === 0
+      ? "your path is the true path (drag it, or move ε, to vary it)"
+      : `S of your path (ε = ${fmt(this.eps)}, k = ${this.shape}) = ${fmt(Snow)} J·s, ${diff >= 0 ? "higher" : "lower"} by ${fmt(Math.abs(diff))}`;
+    this.readout.textContent = `S of the true path = ${fmt(S0)} J·s; ${yours}. `
+      + `d²S/dε² at ε = 0 is ${fmt(second)}. ${verdict} ${focusWords}`
+      + (s ? ` Server: S to ±${fmt(s.error_estimate)}, dS/dε at 0 = ${fmt(s.first_variation)}.${s.warnings?.length ? " " + s.warnings.join(" ") : ""}` : " Computed in your browser; the server's numbers follow.");
+    if (this.summary && s) {
+      table(this.summary, `S(ε) for the shape k = ${this.shape}, T = ${fmt(T)} s`, ["ε", "S (J·s)"], s.epsilons.map((e, i) => [fmt(e), fmt(s.action[i])]));
+    }
+  }
+
+  cursor() {}
+}
