@@ -19,7 +19,15 @@ from app.web.api_user import _errors, answer
 from app.web.deps import ClientDep, GatesDep, UserSystemsDep
 from app.web.responses import FastJSONResponse
 from app.web.schemas import SESSION_COOKIE
-from app.web.schemas_action import ActionRequest, ActionResponse, UserActionRequest, action_options
+from app.web.schemas_action import (
+    ActionRequest,
+    ActionResponse,
+    RelaxRequest,
+    UserActionRequest,
+    UserRelaxRequest,
+    action_options,
+    relax_options,
+)
 
 router = APIRouter(prefix="/api", tags=["the action"])
 
@@ -61,6 +69,46 @@ async def user_action(client: ClientDep, users: UserSystemsDep, body: Annotated[
         return await users.run_job(
             users.simulations, spec_key(user, "action", options), key, address, users.simulate_seconds,
             action.action_job, user, options,
+        )  # fmt: skip
+
+    return await answer(client, work)
+
+
+RELAX_TEXT = (
+    "Fix q(0) and q(T) (by default the true path's, from `initial`) and give a trial path between them (by default "
+    "the straight line): the path that makes the discretised action stationary is found by Newton's method on the "
+    "discrete Euler-Lagrange equations (a variational integrator, midpoint rule, on `steps` and twice as many steps, "
+    "extrapolated). The answer has the path, some of the iterates (for an animation), whether it is a minimum or a "
+    "saddle of the discrete action (its Hessian's negative directions), and the shooting solution to compare."
+)
+
+
+@router.post(
+    "/scenes/{scene_id}/action/relax",
+    summary="Find a scene's path between two ends by making the action stationary",
+    description=RELAX_TEXT,
+    responses={**ERRORS, **BODY_ERRORS},
+)
+def scene_relax(scene_id: str, request: RelaxRequest, gates: GatesDep) -> Any:
+    return FastJSONResponse(action.relax_of_scene(scene_id, gates, **relax_options(request)))
+
+
+@router.post(
+    "/action/relax",
+    summary="Find the path of a system you declare between two ends",
+    description=RELAX_TEXT + " The system is given under `system` as for POST /api/derive; it runs in the worker pool.",
+    openapi_extra={"parameters": [SESSION_COOKIE]},
+    responses=_errors(400, 413, 422, 429, 503),
+)
+async def user_relax(client: ClientDep, users: UserSystemsDep, body: Annotated[UserRelaxRequest, Body()]) -> Response:
+    spec = body.system.to_spec()
+    options = relax_options(body)
+
+    async def work(key: str, address: str) -> bytes:
+        user = checked(spec)
+        return await users.run_job(
+            users.simulations, spec_key(user, "relax", options), key, address, users.simulate_seconds,
+            action.relax_job, user, options,
         )  # fmt: skip
 
     return await answer(client, work)

@@ -11,7 +11,7 @@ from typing import Any
 from pydantic import BaseModel, ConfigDict, Field
 
 from app.numerics import limits
-from app.service.action import EPSILONS_MAX, K_MAX, T_SPAN
+from app.service.action import EPSILONS_MAX, K_MAX, STEPS_DEFAULT, STEPS_MAX, T_SPAN
 from app.web.schemas_simulate import Values
 from app.web.schemas_user import SystemSpec
 
@@ -82,6 +82,36 @@ class ActionResponse(BaseModel):
     path: ActionPath
     preview: dict[str, Any]
     warnings: list[str]
+
+
+class RelaxRequest(BaseModel):
+    """Two fixed ends and a trial path between them; the ends default to the true path's from ``initial``."""
+
+    model_config = ConfigDict(
+        extra="forbid",
+        allow_inf_nan=False,
+        json_schema_extra={"example": {"t_end": 0.9, "start": {"theta": 1.0}, "end": {"theta": -0.7}, "steps": 200}},
+    )
+
+    parameters: Values = Field(default_factory=dict, description="Parameter values by name (default: the system's).")
+    initial: Values = Field(default_factory=dict, description="A start whose true path sets the ends not given.")
+    t_end: float = Field(ge=-limits.VALUE_MAX, le=limits.VALUE_MAX, description="T: the path runs from 0 to T.")
+    start: Values | None = Field(None, description="q(0) by name (default: the true path's).")
+    end: Values | None = Field(None, description="q(T) by name (default: the true path's).")
+    trial: dict[str, list[float]] | None = Field(
+        None, max_length=8, description="The trial path: for some coordinates, steps + 1 values at even times."
+    )
+    steps: int = Field(STEPS_DEFAULT, description=f"Steps of the discrete path, 4 to {STEPS_MAX}.")
+
+
+class UserRelaxRequest(RelaxRequest):
+    """A system as for POST /api/derive, under ``system``."""
+
+    system: SystemSpec
+
+
+def relax_options(body: BaseModel) -> dict[str, Any]:
+    return body.model_dump(include=set(RelaxRequest.model_fields))
 
 
 def action_options(body: BaseModel) -> dict[str, Any]:

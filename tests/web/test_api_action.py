@@ -67,3 +67,36 @@ def test_unknown_scene_and_user_refusals(client):
     assert client.post("/api/scenes/nope/action", json={"t_end": 1}).status_code == 404
     r = client.post("/api/action", json={"system": OSCILLATOR, "t_end": 1, "coordinate": "y"})
     assert r.status_code == 422 and "choose one of x" in r.json()["detail"]
+
+
+def test_relax_finds_the_pendulum_path_and_a_saddle_past_the_focus(client):
+    r = client.post("/api/scenes/simple-pendulum/action/relax", json={"t_end": 0.9, "initial": {"theta": 1.0}})
+    assert r.status_code == 200, r.text
+    a = r.json()
+    assert a["kind"] == "minimum" and a["difference"] < 1e-6 and len(a["iterations"]) >= 2
+    assert abs(a["shooting"]["velocity"]["theta_dot"]) < 1e-8  # the true path starts at rest
+    r = client.post("/api/scenes/simple-pendulum/action/relax", json={"t_end": 1.5, "initial": {"theta": 1.0}})
+    assert r.json()["kind"] == "saddle" and r.json()["negative_directions"] == 1
+
+
+@pytest.mark.parametrize(
+    ("body", "words"),
+    [
+        ({"t_end": 1, "steps": 2}, "steps must be a whole number from 4 to 1000"),
+        ({"t_end": 1, "trial": {"theta": [0.0, 1.0]}}, "must hold steps + 1 = 201 values"),
+        ({"t_end": 1, "start": {"phi": 0.0}, "end": {"theta": 0.0}}, "unknown coordinate 'phi' in start"),
+        ({"t_end": 0}, "t_end must be in (0, 100] s"),
+    ],
+)
+def test_bad_relax_requests_are_refused(client, body, words):
+    r = client.post("/api/scenes/simple-pendulum/action/relax", json=body)
+    assert r.status_code == 422 and words in r.json()["detail"], r.text
+
+
+def test_user_system_relax_runs_in_the_pool(client):
+    r = client.post("/api/action/relax", json={"system": OSCILLATOR, "t_end": 0.5, "start": {"x": 0}, "end": {"x": 1}})
+    assert r.status_code == 200, r.text
+    a = r.json()
+    # x(t) = sin(ωt)/sin(ωT) between x(0) = 0 and x(T) = 1
+    t = a["t"][len(a["t"]) // 2]
+    assert a["q"]["x"][len(a["t"]) // 2] == pytest.approx(math.sin(3 * t) / math.sin(1.5), abs=1e-7)
