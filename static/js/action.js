@@ -26,6 +26,9 @@ const STEPS = 400; // RK4 steps of the browser's true path (an even number: Simp
 const CURVE = 41; // ε values on the S(ε) curve
 const SHAPES = 8; // k = 1 … SHAPES tried for the kind
 const SETTLE_MS = 250; // the server's numbers are asked for once the input has rested this long
+const CONTROLS = 4; // points of a trial path besides its two ends
+const RELAX_STEPS = 200; // steps of the relaxed path
+const FRAME_MS = 350; // per Newton step in the animation
 
 export function compileLagrangian(preview) {
   // printed on the server from the engine's L with every symbol renamed (q0, v0, k0, t)
@@ -167,11 +170,16 @@ export class ActionPanel {
         ${names.length > 1 ? group(`<label for="${id("coordinate")}">Vary</label> <select id="${id("coordinate")}">${names.map((q, i) => `<option value="${i}">${this.label(q)}</option>`).join("")}</select>`) : ""}
         ${group(`<label for="${id("k")}">Shape k</label> <select id="${id("k")}">${Array.from({ length: 6 }, (_, j) => `<option value="${j + 1}">${j + 1}</option>`).join("")}</select>`)}
         ${group(`<label for="${id("eps")}">ε</label> <input type="range" id="${id("eps")}" min="-1" max="1" step="0.01" value="0">`)}
+        ${group(`<button type="button" id="${id("find")}" aria-pressed="false">Find the path</button> <button type="button" id="${id("relax")}" hidden>Relax</button>`)}
         ${group(`<label for="${id("T")}">T</label> <input type="range" id="${id("T")}" min="${this.tEnd / 200}" max="${this.tEnd}" step="${this.tEnd / 200}" value="${this.T}"> <output id="${id("T-value")}" for="${id("T")}"></output>`)}
       </div>`);
     this.epsInput = tools.querySelector(`#${id("eps")}`);
     this.TInput = tools.querySelector(`#${id("T")}`);
     this.TOut = tools.querySelector(`#${id("T-value")}`);
+    this.findButton = tools.querySelector(`#${id("find")}`);
+    this.relaxButton = tools.querySelector(`#${id("relax")}`);
+    this.findButton.addEventListener("click", () => this.toggleFind());
+    this.relaxButton.addEventListener("click", () => this.relax());
     tools.querySelector(`#${id("k")}`).addEventListener("change", (e) => { this.shape = Number(e.target.value); this.update(true); });
     tools.querySelector(`#${id("coordinate")}`)?.addEventListener("change", (e) => { this.coordinate = Number(e.target.value); this.eps = 0; this.epsInput.value = "0"; this.update(true); });
     this.epsInput.addEventListener("input", () => { this.eps = Number(this.epsInput.value) * this.epsMax; this.update(false); });
@@ -186,6 +194,7 @@ export class ActionPanel {
     const at = (event) => {
       const full = this.plot._fullLayout;
       if (!full || !this.live) return;
+      if (this.finding) { this.moveControl(event, full); return; }
       const xa = full.xaxis, ya = full.yaxis, box = this.plot.getBoundingClientRect();
       const t = xa.p2d(event.clientX - box.left - xa._offset), y = ya.p2d(event.clientY - box.top - ya._offset);
       const eta = Math.sin((this.shape * Math.PI * t) / this.T);
@@ -201,10 +210,12 @@ export class ActionPanel {
       if (!full) return;
       const ya = full.yaxis, box = this.plot.getBoundingClientRect(), y = e.clientY - box.top;
       if (y < ya._offset || y > ya._offset + ya._length) return; // only on the upper plot (the paths)
-      dragging = true; this.plot.setPointerCapture?.(e.pointerId); e.preventDefault(); at(e);
+      dragging = true; this.plot.setPointerCapture?.(e.pointerId); e.preventDefault();
+      if (this.finding) this.pickControl(e, full);
+      at(e);
     });
     this.plot.addEventListener("pointermove", (e) => { if (dragging) at(e); });
-    const stop = () => { if (dragging) { dragging = false; this.settle(); } };
+    const stop = () => { if (dragging) { dragging = false; if (!this.finding) this.settle(); } };
     this.plot.addEventListener("pointerup", stop);
     this.plot.addEventListener("pointercancel", stop);
     this.epsInput.addEventListener("change", () => this.settle());
@@ -306,6 +317,7 @@ export class ActionPanel {
   }
 
   paint() {
+    if (this.finding) { this.paintFind(); return; }
     const live = this.live, s = this.server;
     if (!live || live.error) { this.readout.textContent = live?.error || ""; return; }
     const q = this.data.coordinates[this.coordinate], lq = this.label(q), unit = this.data.units?.[q] || "";
@@ -363,6 +375,119 @@ export class ActionPanel {
     if (this.summary && s) {
       table(this.summary, `S(ε) for the shape k = ${this.shape}, T = ${fmt(T)} s`, ["ε", "S (J·s)"], s.epsilons.map((e, i) => [fmt(e), fmt(s.action[i])]));
     }
+  }
+
+  // ---- "Find the path": fixed ends, a trial path through a few dragged points, relaxed on the server ----
+
+  toggleFind() {
+    this.finding = !this.finding;
+    this.findButton.setAttribute("aria-pressed", String(this.finding));
+    this.findButton.textContent = this.finding ? "Back to ε" : "Find the path";
+    this.relaxButton.hidden = !this.finding;
+    this.epsInput.disabled = this.finding;
+    this.found = null; this.frame = null;
+    if (this.finding) this.resetControls();
+    this.paint();
+  }
+
+  resetControls() {
+    // the ends of the true path, and CONTROLS points on the straight line between them lifted by a bump
+    const p = this.live.path, c = this.coordinate, N = p.t.length - 1;
+    const a = p.Y[0][c], b = p.Y[N][c], lift = 0.5 * this.epsMax;
+    this.controlsT = Array.from({ length: CONTROLS + 2 }, (_, j) => (j * this.T) / (CONTROLS + 1));
+    this.controlsQ = this.controlsT.map((t, j) => a + ((b - a) * t) / this.T + (j === 0 || j === CONTROLS + 1 ? 0 : lift * Math.sin((Math.PI * t) / this.T)));
+  }
+
+  trial(times) {
+    // straight between neighbouring control points
+    const T = this.controlsT, Q = this.controlsQ;
+    return Array.from(times, (t) => {
+      let j = 1;
+      while (j < T.length - 1 && t > T[j]) j++;
+      const f = (t - T[j - 1]) / (T[j] - T[j - 1]);
+      return Q[j - 1] + f * (Q[j] - Q[j - 1]);
+    });
+  }
+
+  pickControl(event, full) {
+    const xa = full.xaxis, ya = full.yaxis, box = this.plot.getBoundingClientRect();
+    const x = event.clientX - box.left, y = event.clientY - box.top;
+    let best = null, distance = 30;
+    this.controlsT.forEach((t, j) => {
+      const d = Math.hypot(xa.d2p(t) + xa._offset - x, ya.d2p(this.controlsQ[j]) + ya._offset - y);
+      if (d < distance) { best = j; distance = d; }
+    });
+    this.picked = best;
+  }
+
+  moveControl(event, full) {
+    if (this.picked === null || this.picked === undefined) return;
+    const ya = full.yaxis, box = this.plot.getBoundingClientRect();
+    this.controlsQ[this.picked] = ya.p2d(event.clientY - box.top - ya._offset);
+    this.found = null; this.frame = null;
+    this.paintFind();
+  }
+
+  async relax() {
+    const names = this.data.coordinates, c = this.coordinate, steps = RELAX_STEPS;
+    const { params, initial } = this.setup();
+    const p = this.live.path, N = p.t.length - 1;
+    const start = {}, end = {};
+    names.forEach((q, i) => { start[q] = p.Y[0][i]; end[q] = p.Y[N][i]; });
+    start[names[c]] = this.controlsQ[0]; end[names[c]] = this.controlsQ[this.controlsQ.length - 1];
+    const times = Array.from({ length: steps + 1 }, (_, i) => (i * this.T) / steps);
+    const request = { initial, t_end: this.T, start, end, steps, trial: { [names[c]]: this.trial(times) } };
+    const body = this.system
+      ? { system: { ...this.system, parameters: (this.system.parameters || []).map((x) => ({ ...x, value: params[x.name] ?? x.value })) }, ...request }
+      : { parameters: params, ...request };
+    this.relaxButton.disabled = true;
+    this.readout.textContent = "Relaxing: Newton's method on the discrete Euler–Lagrange equations…";
+    try {
+      const res = await fetch(`${this.url}/relax`, { method: "POST", headers: { "Content-Type": "application/json", Accept: "application/json" }, body: JSON.stringify(body) });
+      const answer = await res.json().catch(() => ({}));
+      if (!res.ok) throw new Error(typeof answer.detail === "string" ? answer.detail : `the server answered ${res.status}`);
+      this.found = answer;
+      // the iterates one after another, then the result beside the shooting solution
+      for (let f = 0; f < answer.iterations.length && this.finding && this.found === answer; f++) {
+        this.frame = f; this.paintFind();
+        await new Promise((resolve) => setTimeout(resolve, FRAME_MS));
+      }
+      this.frame = null;
+      if (this.found === answer) this.paintFind();
+    } catch (err) {
+      this.readout.textContent = `No relaxed path: ${err.message}`;
+    } finally {
+      this.relaxButton.disabled = false;
+    }
+  }
+
+  paintFind() {
+    const q = this.data.coordinates[this.coordinate], lq = this.label(q), unit = this.data.units?.[q] || "";
+    const p = this.live.path, t = Array.from(p.t);
+    const traces = [
+      { type: "scatter", mode: "lines", x: t, y: p.Y.map((y) => y[this.coordinate]), name: "true path from the start", line: { color: "#b8bec5", width: 2 } },
+      { type: "scatter", mode: "lines+markers", x: this.controlsT, y: this.controlsQ, name: "your trial path (drag its points)", line: { color: PALETTE[1], width: 2, dash: "dash" }, marker: { size: 12, color: PALETTE[1] } },
+    ];
+    const f = this.found;
+    if (f) {
+      const shown = this.frame === null || this.frame === undefined ? f.q[q] : f.iterations[this.frame][q];
+      traces.push({ type: "scatter", mode: "lines", x: f.t, y: shown, name: this.frame === null || this.frame === undefined ? "relaxed path" : `Newton step ${this.frame}`, line: { color: PALETTE[2], width: 3 } });
+      if (this.frame === null || this.frame === undefined) traces.push({ type: "scatter", mode: "lines", x: f.t, y: f.shooting.q[q], name: "shooting solution", line: { color: PALETTE[3], width: 2, dash: "dot" } });
+    }
+    const lay = layout({ height: 420, hovermode: false, dragmode: false, xaxis: axis("t (s)", { range: [0, this.T] }), yaxis: axis(`${lq} (${unit})`) });
+    window.Plotly?.react(this.plot, traces, lay, CONFIG);
+    this.section.dataset.source = f ? "server" : "preview";
+    if (!f) {
+      this.readout.textContent = `Find the path: the ends are fixed at t = 0 and t = T = ${fmt(this.T)} s. Drag the points of the trial path (the ends too), then press Relax: the app makes the discretised action stationary and shows each Newton step.`;
+      return;
+    }
+    this.section.dataset.relaxed = f.kind;
+    const steps = f.iterations.length - 1;
+    const what = f.kind === "minimum"
+      ? "It is a minimum of the discrete action: every small change of it raises S."
+      : `It is a saddle of the discrete action, not a minimum: ${f.negative_directions} direction${f.negative_directions > 1 ? "s" : ""} lower${f.negative_directions > 1 ? "" : "s"} S, because T = ${fmt(this.T)} s is past the kinetic focus.`;
+    this.readout.textContent = `Relaxed in ${steps} Newton step${steps === 1 ? "" : "s"} onto the path that makes S stationary between these ends (the ${2 * RELAX_STEPS}-step path is within about ${fmt(f.error_estimate)} of it; extrapolating with the ${RELAX_STEPS}-step one removes most of that). `
+      + `The shooting solution (the motion starting with ${lq}̇(0) = ${fmt(f.shooting.velocity[`${q}_dot`])}) differs from it by at most ${fmt(f.difference)} ${unit}. ${what}`;
   }
 
   cursor() {}
