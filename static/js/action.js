@@ -346,7 +346,7 @@ export class ActionPanel {
       height: 520, hovermode: false, dragmode: false, showlegend: true,
       xaxis: axis("t (s)", { domain: [0, 1], anchor: "y", range: [0, T] }), yaxis: axis(`${lq} (${unit})`, { domain: [0.62, 1] }),
       xaxis2: axis("t (s)", { domain: [0, 0.42], anchor: "y2", range: [0, T] }), yaxis2: axis("L (J)", { domain: [0, 0.4], anchor: "x2" }),
-      xaxis3: axis("ε", { domain: [0.64, 1], anchor: "y3" }), yaxis3: axis("S (J·s)", { domain: [0, 0.4], anchor: "x3" }),
+      xaxis3: axis("ε", { domain: [0.64, 1], anchor: "y3", nticks: 5 }), yaxis3: axis("S (J·s)", { domain: [0, 0.4], anchor: "x3" }),
       shapes,
       annotations: tStar !== null && tStar !== undefined && tStar <= T ? [{ x: tStar, y: 1, xref: "x", yref: "paper", text: "kinetic focus t*", showarrow: false, font: { color: "#c62828", size: 12 }, yanchor: "bottom" }] : [],
     });
@@ -364,6 +364,10 @@ export class ActionPanel {
     if (kind === "minimum") verdict = `With T = ${fmt(T)} s the true path is a minimum of S: every variation with the same ends raises it.`;
     else if (kind === "saddle") verdict = `With T = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S: it is a saddle, and some variation (k = ${Math.max(1, live.second.findIndex((x) => x < 0) + 1)} among the sine shapes) lowers S. S is still stationary: its tangent at ε = 0 stays flat.`;
     else verdict = `With T = ${fmt(T)} s every variation tried lowers S: the true path is a maximum among them.`;
+    if (this.data.forced) {
+      verdict = "Forces Q that no potential describes act here, so the true path makes δS + ∫ Q·δq dt vanish rather than "
+        + `making S stationary: S(ε) is not flat at ε = 0. Its curvature still shows how S bends (here ${kind === "minimum" ? "upward for every shape tried" : "downward for some shape"}).`;
+    }
     const second = s ? s.second_variation : live.secondVariation;
     const diff = Snow - S0;
     const yours = this.eps === 0
@@ -371,7 +375,7 @@ export class ActionPanel {
       : `S of your path (ε = ${fmt(this.eps)}, k = ${this.shape}) = ${fmt(Snow)} J·s, ${diff >= 0 ? "higher" : "lower"} by ${fmt(Math.abs(diff))}`;
     this.readout.textContent = `S of the true path = ${fmt(S0)} J·s; ${yours}. `
       + `d²S/dε² at ε = 0 is ${fmt(second)}. ${verdict} ${focusWords}`
-      + (s ? ` Server: S to ±${fmt(s.error_estimate)}, dS/dε at 0 = ${fmt(s.first_variation)}.${s.warnings?.length ? " " + s.warnings.join(" ") : ""}` : " Computed in your browser; the server's numbers follow.");
+      + (s ? ` Server: S to ±${fmt(s.error_estimate)}, dS/dε at 0 = ${fmt(s.first_variation)}.${s.warnings?.length && !this.data.forced ? ` Note: ${s.warnings.join("; ")}.` : ""}` : " Computed in your browser; the server's numbers follow.");
     if (this.summary && s) {
       table(this.summary, `S(ε) for the shape k = ${this.shape}, T = ${fmt(T)} s`, ["ε", "S (J·s)"], s.epsilons.map((e, i) => [fmt(e), fmt(s.action[i])]));
     }
@@ -477,8 +481,15 @@ export class ActionPanel {
     const lay = layout({ height: 420, hovermode: false, dragmode: false, xaxis: axis("t (s)", { range: [0, this.T] }), yaxis: axis(`${lq} (${unit})`) });
     window.Plotly?.react(this.plot, traces, lay, CONFIG);
     this.section.dataset.source = f ? "server" : "preview";
+    delete this.section.dataset.relaxed;
     if (!f) {
       this.readout.textContent = `Find the path: the ends are fixed at t = 0 and t = T = ${fmt(this.T)} s. Drag the points of the trial path (the ends too), then press Relax: the app makes the discretised action stationary and shows each Newton step.`;
+      return;
+    }
+    if (this.frame !== null && this.frame !== undefined) {
+      this.readout.textContent = this.frame === 0
+        ? "Relaxing: the trial path, sampled on the discrete grid…"
+        : `Relaxing: after Newton step ${this.frame} the path moves toward the one that makes the discrete action stationary…`;
       return;
     }
     this.section.dataset.relaxed = f.kind;
