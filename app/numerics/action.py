@@ -56,13 +56,15 @@ class ActionTerms:
     n: int
     function: Any  # (t, Q, V, k) -> [L, L_q (n), L_v (n), P (n²), C (n²), R (n²)]
     browser: str  # body of a JavaScript (t, y, k) returning L
+    only_L: Any = None  # (t, Q, V, k) -> [L]: the varied paths need nothing else
 
     def evaluate(self, t: np.ndarray, Q: np.ndarray, V: np.ndarray, k: np.ndarray) -> list[np.ndarray]:
         with np.errstate(all="ignore"):
             return self.function(t, Q, V, k)
 
     def lagrangian(self, t: np.ndarray, Q: np.ndarray, V: np.ndarray, k: np.ndarray) -> np.ndarray:
-        return self.evaluate(t, Q, V, k)[0]
+        with np.errstate(all="ignore"):
+            return (self.only_L or self.function)(t, Q, V, k)[0]
 
     def split(self, values: list[np.ndarray]) -> tuple[np.ndarray, ...]:
         n = self.n
@@ -74,8 +76,8 @@ class ActionTerms:
         return L, Lq, Lv, P, C, R
 
 
-def terms_sources(system: NumericSystem) -> tuple[str, str]:
-    """The Python source of the terms (for ``ActionTerms.function``) and the JavaScript body of L."""
+def terms_sources(system: NumericSystem) -> tuple[str, str, str]:
+    """The Python source of the terms (``ActionTerms.function``), of L alone, and the JavaScript body of L."""
     d = system.derivation
     names = Names.of(d)
     table = d.table
@@ -94,7 +96,7 @@ def terms_sources(system: NumericSystem) -> tuple[str, str]:
     block.raw(*(f"let {line};" for line in unpack("k", names.k)))
     block.assign(["_L"], [names(L)], BrowserPrinter(), "l_")
     block.raw("return _L;")
-    return python, "\n".join(block.lines)
+    return python, observables_source(names, [L]).replace("def observe(", "def lagrangian("), "\n".join(block.lines)
 
 
 _TERMS: dict[str, ActionTerms] = {}
@@ -106,9 +108,9 @@ def action_terms(system: NumericSystem) -> ActionTerms:
     with _TERMS_LOCK:
         found = _TERMS.get(system.key)
     if found is None:
-        python, browser = terms_sources(system)
-        function = jit.python_functions({"observe": python})["observe"]
-        found = ActionTerms(system.n, function, browser)
+        python, alone, browser = terms_sources(system)
+        functions = jit.python_functions({"observe": python, "lagrangian": alone})
+        found = ActionTerms(system.n, functions["observe"], browser, functions["lagrangian"])
         with _TERMS_LOCK:
             _TERMS[system.key] = found
     return found
@@ -186,34 +188,39 @@ def _varied_L(terms: ActionTerms, path: TruePath, k: np.ndarray, c: int, eps: fl
 
 
 def jacobi_determinant(t: np.ndarray, P: np.ndarray, C: np.ndarray, R: np.ndarray) -> tuple[np.ndarray, list]:
-    """det J at every other grid time, and (J, J') there, for J(0) = 0, J'(0) = 1 (RK4 with step 2h)."""
+    """det J at every other grid time, and (J, J') there, for J(0) = 0, J'(0) = 1 (RK4 with step 2h).
+
+    The Jacobi equation is linear, z' = A(t) z for z = (J, Π), with
+        A = [[-P⁻¹Cᵀ, P⁻¹], [R - C P⁻¹ Cᵀ, C P⁻¹]]
+    so one RK4 step is a matrix Φ built from A at the step's start, middle and end; every Φ is built at
+    once on the stacked samples, and only the products z_s+1 = Φ_s z_s run in order."""
     n = P.shape[0]
     Pt, Ct, Rt = (np.moveaxis(x, -1, 0) for x in (P, C, R))  # (samples, n, n)
     Pinv = np.linalg.inv(Pt)
-
-    def slope(i: int, J: np.ndarray, Pi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        # J' = P⁻¹ (Π - Cᵀ J),  Π' = C J' + R J
-        dJ = Pinv[i] @ (Pi - Ct[i].T @ J)
-        return dJ, Ct[i] @ dJ + Rt[i] @ J
-
+    CT = np.swapaxes(Ct, 1, 2)
+    A = np.empty((t.size, 2 * n, 2 * n))
+    A[:, :n, :n] = -Pinv @ CT
+    A[:, :n, n:] = Pinv
+    A[:, n:, :n] = Rt - Ct @ Pinv @ CT
+    A[:, n:, n:] = Ct @ Pinv
     H = 2 * (t[1] - t[0])
-    J = np.zeros((n, n))
-    Pi = Pt[0].copy()  # Π(0) = P J'(0) = P
-    steps = (t.size - 1) // 2
-    dets = np.empty(steps + 1)
-    fields = [(J.copy(), np.eye(n))]
-    dets[0] = 0.0
-    for s in range(steps):
-        a, m, b = 2 * s, 2 * s + 1, 2 * s + 2
-        k1 = slope(a, J, Pi)
-        k2 = slope(m, J + H / 2 * k1[0], Pi + H / 2 * k1[1])
-        k3 = slope(m, J + H / 2 * k2[0], Pi + H / 2 * k2[1])
-        k4 = slope(b, J + H * k3[0], Pi + H * k3[1])
-        J = J + H / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
-        Pi = Pi + H / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
-        fields.append((J.copy(), Pinv[b] @ (Pi - Ct[b].T @ J)))
-        dets[s + 1] = np.linalg.det(J)
-    return dets, fields
+    identity = np.eye(2 * n)
+    # RK4 on z' = A z: k1 = A_a z, k2 = A_m (z + H/2 k1), k3 = A_m (z + H/2 k2), k4 = A_b (z + H k3)
+    k1 = A[0:-1:2]
+    k2 = A[1::2] @ (identity + H / 2 * k1)
+    k3 = A[1::2] @ (identity + H / 2 * k2)
+    k4 = A[2::2] @ (identity + H * k3)
+    step = identity + H / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+    z = np.zeros((2 * n, n))
+    z[n:] = Pt[0]  # J(0) = 0, J'(0) = 1: Π(0) = P(0)
+    Z = [z]
+    for s in range(step.shape[0]):
+        z = step[s] @ z
+        Z.append(z)
+    stacked = np.array(Z)
+    J = stacked[:, :n]
+    dJ = (A[::2] @ stacked)[:, :n]
+    return np.linalg.det(J), list(zip(J, dJ, strict=True))
 
 
 def _zero_between(J0: np.ndarray, D0: np.ndarray, J1: np.ndarray, D1: np.ndarray, H: float) -> float:
