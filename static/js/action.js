@@ -124,8 +124,12 @@ function determinant(rows) {
 export function liveAction(fns, s) {
   const p = s.path || path(fns.rhs, s.y0, s.k, s.T);
   if (!p) return { error: "the true path leaves the region where the equations can be evaluated" };
-  const truth = varied(fns.L, p, s.k, s.c, s.shape, 0);
   const now = varied(fns.L, p, s.k, s.c, s.shape, s.eps);
+  // a drag moves ε only: the true path's S, the curve and the second variations are kept from the last setup
+  const same = s.previous && s.previous.path === p && s.previous.shape === s.shape && s.previous.c === s.c
+    && s.previous.epsilons === s.epsilons;
+  if (same) return { ...s.previous, now };
+  const truth = varied(fns.L, p, s.k, s.c, s.shape, 0);
   const curve = s.epsilons.map((e) => (e === 0 ? truth.S : varied(fns.L, p, s.k, s.c, s.shape, e).S));
   const h = 1e-3;
   const second = [];
@@ -135,7 +139,10 @@ export function liveAction(fns, s) {
   }
   const lowest = Math.min(...second);
   const kind = lowest >= 0 ? "minimum" : second.every((x) => x < 0) ? "maximum" : "saddle";
-  return { path: p, truth, now, curve, second, kind, secondVariation: second[s.shape - 1] };
+  return {
+    path: p, truth, now, curve, second, kind, secondVariation: second[s.shape - 1],
+    shape: s.shape, c: s.c, epsilons: s.epsilons,
+  };
 }
 
 export class ActionPanel {
@@ -260,9 +267,13 @@ export class ActionPanel {
       clearTimeout(this.timer);
       this.timer = setTimeout(() => this.ask(false), SETTLE_MS);
     }
-    const epsilons = Array.from({ length: CURVE }, (_, i) => ((2 * i) / (CURVE - 1) - 1) * this.epsMax);
-    this.live = liveAction(this.fns, { y0, k, T: this.T, c: this.coordinate, shape: this.shape, eps: this.eps, epsilons, path: this.cachedPath });
-    this.epsilons = epsilons;
+    if (newPath || !this.epsilons || this.epsilons[0] !== -this.epsMax) {
+      this.epsilons = Array.from({ length: CURVE }, (_, i) => ((2 * i) / (CURVE - 1) - 1) * this.epsMax);
+    }
+    this.live = liveAction(this.fns, {
+      y0, k, T: this.T, c: this.coordinate, shape: this.shape, eps: this.eps, epsilons: this.epsilons,
+      path: this.cachedPath, previous: newPath ? null : this.live,
+    });
     this.paint();
     this.section.dataset.recompute = (performance.now() - started).toFixed(1);
   }
@@ -350,7 +361,14 @@ export class ActionPanel {
       shapes,
       annotations: tStar !== null && tStar !== undefined && tStar <= T ? [{ x: tStar, y: 1, xref: "x", yref: "paper", text: "kinetic focus t*", showarrow: false, font: { color: "#c62828", size: 12 }, yanchor: "bottom" }] : [],
     });
-    window.Plotly?.react(this.plot, traces, lay, { ...CONFIG, responsive: true });
+    const moved = this.drawn && this.drawn.path === live.path && this.drawn.curve === curve && this.drawn.T === T;
+    if (moved && this.plot.data?.length === traces.length) {
+      // only ε changed: the varied path, its L and the mark on S(ε)
+      window.Plotly?.restyle(this.plot, { x: [traces[1].x, traces[3].x, traces[6].x], y: [traces[1].y, traces[3].y, traces[6].y] }, [1, 3, 6]);
+    } else {
+      window.Plotly?.react(this.plot, traces, lay, CONFIG);
+      this.drawn = { path: live.path, curve, T };
+    }
     this.TOut.textContent = `${fmt(T)} s`;
     const source = s ? "server" : "preview";
     this.section.dataset.source = source;
@@ -385,6 +403,7 @@ export class ActionPanel {
 
   toggleFind() {
     this.finding = !this.finding;
+    this.drawn = null;
     this.findButton.setAttribute("aria-pressed", String(this.finding));
     this.findButton.textContent = this.finding ? "Back to ε" : "Find the path";
     this.relaxButton.hidden = !this.finding;
