@@ -74,6 +74,17 @@ def test_phone_layout_and_relaxing_a_trial_path(browser, live_server, artifacts)
     phone.set_default_timeout(60_000)
     try:
         _open(phone)
+        # a swipe over the panel's plot scrolls the page (ε has its slider on a phone)
+        box = phone.locator(f"{PANEL} .plot").bounding_box()
+        x, y = box["x"] + box["width"] / 2, box["y"] + min(box["height"] / 2, 300)
+        before = phone.evaluate("window.scrollY")
+        cdp = phone.context.new_cdp_session(phone)
+        cdp.send("Input.dispatchTouchEvent", {"type": "touchStart", "touchPoints": [{"x": x, "y": y}]})
+        for k in range(1, 11):
+            cdp.send("Input.dispatchTouchEvent", {"type": "touchMove", "touchPoints": [{"x": x, "y": y - 15 * k}]})
+        cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+        phone.wait_for_timeout(300)
+        assert phone.evaluate("window.scrollY") > before
         phone.locator("#action-find").click()
         phone.locator("#action-relax").click()
         phone.wait_for_function(f"document.querySelector('{PANEL}').dataset.relaxed === 'minimum'")
