@@ -18,7 +18,7 @@
  *
  *   liveAction(functions, setup)   the browser's numbers alone (tests and benchmarks call it)
  */
-import { axis, CONFIG, layout, PALETTE } from "./plotkit.js";
+import { axis, CONFIG, drawWhenVisible, layout, PALETTE } from "./plotkit.js";
 import { compileRhs } from "./preview.js";
 import { fmt, table } from "./summaries.js";
 
@@ -165,6 +165,7 @@ export class ActionPanel {
     this.T = this.tEnd / 10;
     this.controls();
     this.bindDrag();
+    drawWhenVisible(this, section); // the server is asked only once the panel is in view
   }
 
   controls() {
@@ -241,6 +242,7 @@ export class ActionPanel {
 
   async draw(run) {
     this.run = run;
+    if (!this.visible) return;
     if (!this.fns) await this.ask(true); // the first answer brings the generated functions
     else this.update(true);
   }
@@ -380,7 +382,7 @@ export class ActionPanel {
       : `The first kinetic focus (conjugate point) of this start is at t* = ${fmt(tStar)} s${tStar <= T ? ", marked on the time axis" : ""}.`;
     let verdict;
     if (kind === "minimum") verdict = `With T = ${fmt(T)} s the true path is a minimum of S: every variation with the same ends raises it.`;
-    else if (kind === "saddle") verdict = `With T = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S: it is a saddle, and some variation (k = ${Math.max(1, live.second.findIndex((x) => x < 0) + 1)} among the sine shapes) lowers S. S is still stationary: its tangent at ε = 0 stays flat.`;
+    else if (kind === "saddle") verdict = `With T = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S: it is a saddle, and ${live.second.some((x) => x < 0) ? `the variation with k = ${live.second.findIndex((x) => x < 0) + 1}` : "a combination of the sine shapes"} lowers S. S is still stationary: its tangent at ε = 0 stays flat.`;
     else verdict = `With T = ${fmt(T)} s every variation tried lowers S: the true path is a maximum among them.`;
     if (this.data.forced) {
       verdict = "Forces Q that no potential describes act here, so the true path makes δS + ∫ Q·δq dt vanish rather than "
