@@ -12,7 +12,7 @@ from app.service import simulation
 from app.service.memory import freeze_imported, freeze_when_done
 from app.service.services import Services
 from app.settings import settings
-from app.web import api_beyond, api_scenes, docs, errors, limits, pages
+from app.web import api_action, api_beyond, api_scenes, docs, errors, limits, pages
 from app.web.api_check import router as check_router
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
@@ -63,6 +63,7 @@ app.add_middleware(SecurityHeaders)  # outermost: on every response, errors incl
 ROUTERS = [
     api_scenes.router,
     api_beyond.router,
+    api_action.router,
     pages.router,
     docs.router,
     user_router,

@@ -13,6 +13,8 @@ from typing import Any
 import sympy as sp
 
 from app.engine import textbook
+from app.engine.action_step import TITLE as ACTION_TITLE
+from app.engine.action_step import action_step
 from app.engine.budget import pythagoras, tidy, unbudgeted
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation
@@ -24,7 +26,7 @@ from app.engine.trees import maybe_of_sympy
 # accelerations and what is conserved.  The others are bookkeeping a page may fold away.
 CORE_STEPS = frozenset(
     {"Lagrangian", "Generalized forces", "Euler–Lagrange equations", "Accelerations", "Cyclic coordinates",
-     "Is h equal to E?", "Energy first integral"}
+     "Is h equal to E?", "Energy first integral", ACTION_TITLE}
 )  # fmt: skip
 
 
@@ -85,6 +87,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     qdn = [pr.tex(s) for s in table.qd]
     qddn = [pr.tex(s) for s in table.qdd]
     steps: list[dict[str, str]] = []
+    steps.append(action_step(d))  # Hamilton's principle first (app/engine/action_step.py)
 
     if m.positions:
         n = len(m.positions)

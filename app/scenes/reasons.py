@@ -22,6 +22,7 @@ def _hamiltonian(what: str) -> dict[str, str]:
 
 REASONS: dict[str, dict[str, str]] = {
     "simple-pendulum": {
+        "The action S = ∫ L dt is stationary on the true path": "Of all the ways the bob could swing from one angle to another in the same time, the real swing makes ∫ (T − U) dt stationary; once the time passes the first kinetic focus (about half a small swing) it is a saddle, not the least.",
         "Positions": "The bob is R from the pivot at angle θ from the downward vertical; the origin is at the lowest point.",
         "Velocities": "Only θ changes, so the bob moves along the circle with speed R θ̇.",
         "Squared speeds": "On a circle of radius R the squared speed is R² θ̇², whatever the angle.",
@@ -48,6 +49,7 @@ REASONS: dict[str, dict[str, str]] = {
         "Forces of constraint": "The tension must supply the centripetal force m R θ̇² plus gravity's pull along the string.",
     },
     "damped-pendulum": {
+        "The action S = ∫ L dt is stationary on the true path": "With friction the principle needs the friction's virtual work beside δS: the real swing makes δS + ∫ Q δθ dt vanish, not S alone stationary.",
         "Positions": "The bob is R from the pivot at angle θ from the downward vertical, as in the simple pendulum.",
         "Velocities": "Only θ changes, so the bob moves along the circle with speed R θ̇.",
         "Squared speeds": "On the circle the squared speed is R² θ̇².",
@@ -72,6 +74,7 @@ REASONS: dict[str, dict[str, str]] = {
         "Forces of constraint": "The tension holds the bob on its circle: centripetal force plus gravity along the string.",
     },
     "helix-bead": {
+        "The action S = ∫ L dt is stationary on the true path": "Of all the ways the bead could slide between two heights in the same time, the real one makes ∫ L dt stationary; in uniform gravity there is no kinetic focus, so it is the least for any time.",
         "Positions": "The bead's height z fixes its turn φ = α z, so it sits at (R cos αz, R sin αz, z).",
         "Velocities": "Going up by ż the bead also turns by α ż, moving R α ż around the axis.",
         "Squared speeds": "Vertical and circular motions are perpendicular: v² = (1 + α² R²) ż².",
@@ -97,6 +100,7 @@ REASONS: dict[str, dict[str, str]] = {
         "Forces of constraint": "The wire pushes toward the axis for the circular motion and across the helix to turn the bead.",
     },
     "incline-block": {
+        "The action S = ∫ L dt is stationary on the true path": "Of all the ways the block could slide between two points of the incline in the same time, the real one makes ∫ L dt stationary; with a constant force it is the least for any time.",
         "Positions": "The block is X along the slope, so X cos α across and X sin α up.",
         "Velocities": "The block moves along the slope only, at speed Ẋ.",
         "Squared speeds": "cos² α + sin² α = 1: the squared speed is Ẋ².",
@@ -122,6 +126,7 @@ REASONS: dict[str, dict[str, str]] = {
         "Forces of constraint": "The normal force balances gravity's component into the plane: m g cos α.",
     },
     "tabletop-spring": {
+        "The action S = ∫ L dt is stationary on the true path": "Of all the paths across the table between two positions in the same time, the real one makes ∫ L dt stationary; the spring pulls like an oscillator, so after half its period π √(m/k) the true path is a saddle.",
         "Positions": "Polar coordinates about the spring's anchor on the table: (r cos θ, r sin θ, 0).",
         "Velocities": "ṙ along the radius and r θ̇ around it.",
         "Squared speeds": "The radial and angular motions are perpendicular: v² = ṙ² + r² θ̇².",
@@ -149,6 +154,7 @@ REASONS: dict[str, dict[str, str]] = {
         "Small oscillations about": "About the circular orbit r oscillates at ω² = 4k/m, twice the spring's own frequency.",
     },
     "spherical-pendulum": {
+        "The action S = ∫ L dt is stationary on the true path": "Of all the ways over the sphere between two points in the same time, the real one makes ∫ L dt stationary; gravity pulls back toward the bottom, so long enough stretches of motion are saddles of S.",
         "Positions": "Spherical coordinates about the pivot, with θ from the upward vertical.",
         "Velocities": "R θ̇ along a meridian and R sin θ φ̇ along a parallel.",
         "Squared speeds": "The two directions are perpendicular: v² = R² θ̇² + R² sin² θ φ̇².",
@@ -178,6 +184,7 @@ REASONS: dict[str, dict[str, str]] = {
         "Forces of constraint": "The tension supplies the centripetal force of the motion on the sphere plus gravity's pull.",
     },
     "rail-two-body": {
+        "The action S = ∫ L dt is stationary on the true path": "The two cars move so that ∫ L dt is stationary between two configurations; the spring gives their relative motion a kinetic focus half its period after the start, past which S has a saddle there.",
         "Positions": "Both masses are on the rail, so each is given by its own x.",
         "Velocities": "Each mass moves with its own ẋ along the rail.",
         "Squared speeds": "On a line the squared speed is ẋ² for each mass.",
@@ -205,6 +212,7 @@ REASONS: dict[str, dict[str, str]] = {
         "Conserved p_X": "The total momentum (m₁ + m₂) Ẋ = m₁ ẋ₁ + m₂ ẋ₂ never changes.",
     },
     "pulley": {
+        "The action S = ∫ L dt is stationary on the true path": "The masses move so that ∫ L dt is stationary between two positions; with constant gravity and no spring there is no kinetic focus, and the motion is the least for any time.",
         "Positions": "The end masses hang at heights y₁ and y₂; the string fixes the middle mass at −(y₁ + y₂)/2.",
         "Velocities": "The middle mass moves at −(ẏ₁ + ẏ₂)/2, half the sum of the ends' speeds.",
         "Squared speeds": "Each mass moves vertically only.",
@@ -227,6 +235,7 @@ REASONS: dict[str, dict[str, str]] = {
         "Forces of constraint": "The tension is the same along the whole string and pulls each end mass up.",
     },
     "movable-incline": {
+        "The action S = ∫ L dt is stationary on the true path": "Block and wedge move so that ∫ L dt is stationary between two configurations; every force is constant, so there is no kinetic focus and the motion is the least for any time.",
         "Positions": "The wedge is at X; the block is D down its slope: (X + D cos α, −D sin α).",
         "Velocities": "The block's velocity adds the wedge's Ẋ to its own slide Ḋ along the slope.",
         "Squared speeds": "The slide and the wedge's motion are at angle α, hence the cross term 2 Ẋ Ḋ cos α.",
@@ -255,6 +264,7 @@ REASONS: dict[str, dict[str, str]] = {
         "Forces of constraint": "The wedge's push on the block is less than m g cos α, because the wedge recoils.",
     },
     "rotating-parabola": {
+        "The action S = ∫ L dt is stationary on the true path": "Along the turning wire the bead moves so that ∫ L dt is stationary, the wire's rotation built into L; whether it stays the least for long times depends on whether gravity or the spin wins.",
         "Positions": "The bead is ρ from the axis on the parabola z = α ρ², turned by the angle ω t.",
         "Velocities": "ρ̇ along the wire, ω ρ around the axis, and 2 α ρ ρ̇ up.",
         "Squared speeds": "The three directions are perpendicular: (1 + 4 α² ρ²) ρ̇² + ω² ρ².",

@@ -166,6 +166,16 @@ PANELS: tuple[Panel, ...] = (
         lambda f: bool(f.doc.get("constraint_forces")),
     ),
     Panel(
+        "action",
+        "The action",
+        "Hamilton's principle: the true motion makes the action S = ∫ L dt stationary among paths with the same "
+        "ends. Drag the dashed path (or use ε) to vary one coordinate by ε sin(kπt/T); the lower plots show L "
+        "along both paths and S against ε, flat at ε = 0. Move T past the kinetic focus and the true path stops "
+        "being a minimum: it becomes a saddle of S.",
+        "always (every system has an L)",
+        lambda f: True,
+    ),
+    Panel(
         "work-precision",
         "Error against run time",
         "Every method over a sweep of tolerances: the error of the final state against the run time (lower left is "

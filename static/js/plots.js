@@ -14,6 +14,7 @@
  * Each panel writes a text alternative (a data table) into its .data-summary and
  * a one-line reading into its .readout.
  */
+import { ActionPanel } from "./action.js";
 import { axis, capital, COLORS, CONFIG, diff, drawWhenVisible, finite, layout, line, momentumUnit, Overlay, PALETTE, parts, react } from "./plotkit.js";
 import { ModesPanel } from "./modes.js";
 import { PhasePanel } from "./phase.js";
@@ -216,6 +217,7 @@ const KINDS = {
   "work-precision": WorkPrecisionPanel,
   modes: ModesPanel,
   poincare: PoincarePanel,
+  action: ActionPanel,
 };
 
 export function createPanel(kind, section, data, urls = {}) {

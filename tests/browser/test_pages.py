@@ -54,8 +54,8 @@ def test_scene_page_loads_typesets_and_draws_every_panel(page, artifacts, scene_
     for section in page.locator("[data-panel]").all():
         kind = section.get_attribute("data-panel")
         plot = section.locator(".plot")
-        if kind in ("work-precision", "poincare"):
-            continue  # drawn when scrolled into view: see test_work_precision_chart, test_beyond.py
+        if kind in ("work-precision", "poincare", "action"):
+            continue  # drawn when scrolled into view: see test_work_precision_chart, test_beyond.py, test_action.py
         if kind == "modes":
             continue  # its own animation and table: see test_beyond.py
         if kind.startswith("animation"):

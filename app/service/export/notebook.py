@@ -11,6 +11,7 @@ from __future__ import annotations
 
 # nbformat (with jsonschema, 0.1-0.2 s) is imported by the functions that write a notebook, not when
 # the server starts.
+from app.service.export.action_cells import action_cells
 from app.service.export.code import (
     ACCELERATION_LINES,
     DT_LINES,
@@ -165,6 +166,7 @@ def notebook(source: Source) -> str:
     cells.append(_md(*_conserved(source)))
 
     cells += _simulation(source, naming, "E" if m.T is not None else "h")
+    cells += action_cells(source, _code, _md)  # S(ε) (app/service/export/action_cells.py)
     import nbformat
     from nbformat.v4 import new_notebook
 

@@ -1,0 +1,410 @@
+/**
+ * action.js — the panel "The action": S = ∫ L dt along the true path and along varied paths.
+ *
+ *   new ActionPanel(section, data, urls)   the plots.js interface: draw(run), cursor(i, run)
+ *
+ * The true path q(t) on [0, T] starts from the run's initial state; a varied path moves one
+ * coordinate by ε η(t), η = sin(kπt/T), zero at both ends.  Three plots in one figure: q against
+ * t (the varied path is dragged up and down, which sets ε), L(t) along both paths, and S(ε) with
+ * the current ε marked and the flat tangent at ε = 0.  A T slider moves the end time; past the
+ * first kinetic focus t* (where the Jacobi fields from t = 0 vanish) the readout says the true
+ * path is no longer a minimum of S, and t* is marked on the time axis.
+ *
+ * Live: everything is computed in the browser from engine-generated JavaScript: the equations
+ * of motion (preview.js compileRhs) and L (app/numerics/action.py), both printed on the server
+ * from the engine's expressions.  They arrive with the first answer of POST .../action; after
+ * each change the server's numbers (S(ε) on the same ε's, the second variation, the kind, t*)
+ * replace the browser's (section.dataset.source says which are shown).
+ *
+ * The browser's numbers: static/js/action-live.js.
+ */
+import { axis, CONFIG, drawWhenVisible, layout, PALETTE } from "./plotkit.js";
+import { compileLagrangian, focus, liveAction, path } from "./action-live.js";
+import { compileRhs } from "./preview.js";
+import { fmt, table } from "./summaries.js";
+
+const CURVE = 41; // ε values on the S(ε) curve
+const SETTLE_MS = 250; // the server's numbers are asked for once the input has rested this long
+const CONTROLS = 4; // points of a trial path besides its two ends
+const RELAX_STEPS = 200; // steps of the relaxed path
+const FRAME_MS = 350; // per Newton step in the animation
+
+export class ActionPanel {
+  static needsUrls = true;
+
+  constructor(section, data, urls = {}) {
+    this.section = section; this.data = data;
+    this.plot = section.querySelector(".plot");
+    this.readout = section.querySelector(".readout");
+    this.summary = section.querySelector(".data-summary .table");
+    this.preview = true;
+    const sim = section.closest("#simulation") || document.getElementById("simulation");
+    const simulateUrl = urls.simulate || sim?.dataset.simulateUrl || "/api/simulate";
+    this.url = simulateUrl.replace(/simulate$/, "action");
+    const declared = document.getElementById("playground-system");
+    this.system = declared ? JSON.parse(declared.textContent || "{}") : null;
+    this.fns = null; this.answers = new Map(); this.serial = 0;
+    this.coordinate = 0; this.shape = 1; this.eps = 0;
+    this.tEnd = data.t_end || 10;
+    this.T = this.tEnd / 10;
+    this.controls();
+    this.bindDrag();
+    drawWhenVisible(this, section); // the server is asked only once the panel is in view
+  }
+
+  controls() {
+    const tools = this.section.querySelector(".panel-tools");
+    const id = (x) => `action-${x}`;
+    const names = this.data.coordinates;
+    const group = (html) => `<span style="white-space:nowrap">${html}</span>`;
+    tools.insertAdjacentHTML("beforeend", `
+      <div class="action-controls" style="display:flex;flex-wrap:wrap;gap:0.4rem 1rem;align-items:center">
+        ${names.length > 1 ? group(`<label for="${id("coordinate")}">Vary</label> <select id="${id("coordinate")}">${names.map((q, i) => `<option value="${i}">${this.label(q)}</option>`).join("")}</select>`) : ""}
+        ${group(`<label for="${id("k")}">Shape k</label> <select id="${id("k")}">${Array.from({ length: 6 }, (_, j) => `<option value="${j + 1}">${j + 1}</option>`).join("")}</select>`)}
+        ${group(`<label for="${id("eps")}">ε</label> <input type="range" id="${id("eps")}" min="-1" max="1" step="0.01" value="0">`)}
+        ${group(`<button type="button" id="${id("find")}" aria-pressed="false">Find the path</button> <button type="button" id="${id("relax")}" hidden>Relax</button>`)}
+        ${group(`<label for="${id("T")}">T</label> <input type="range" id="${id("T")}" min="${this.tEnd / 200}" max="${this.tEnd}" step="${this.tEnd / 200}" value="${this.T}"> <output id="${id("T-value")}" for="${id("T")}"></output>`)}
+      </div>`);
+    this.epsInput = tools.querySelector(`#${id("eps")}`);
+    this.TInput = tools.querySelector(`#${id("T")}`);
+    this.TOut = tools.querySelector(`#${id("T-value")}`);
+    this.findButton = tools.querySelector(`#${id("find")}`);
+    this.relaxButton = tools.querySelector(`#${id("relax")}`);
+    this.findButton.addEventListener("click", () => this.toggleFind());
+    this.relaxButton.addEventListener("click", () => this.relax());
+    tools.querySelector(`#${id("k")}`).addEventListener("change", (e) => { this.shape = Number(e.target.value); this.update(true); });
+    tools.querySelector(`#${id("coordinate")}`)?.addEventListener("change", (e) => { this.coordinate = Number(e.target.value); this.eps = 0; this.epsInput.value = "0"; this.update(true); });
+    this.epsInput.addEventListener("input", () => { this.eps = Number(this.epsInput.value) * this.epsMax; this.update(false); });
+    this.TInput.addEventListener("input", () => { this.T = Number(this.TInput.value); this.update(true); });
+  }
+
+  label(q) { return (this.data.labels && this.data.labels[q]) || q; }
+
+  bindDrag() {
+    // dragging the varied path: ε = (y − q(t)) / η(t) at the pointer, where |η| is not small
+    let dragging = false;
+    const at = (event) => {
+      const full = this.plot._fullLayout;
+      if (!full || !this.live) return;
+      if (this.finding) { this.moveControl(event, full); return; }
+      const xa = full.xaxis, ya = full.yaxis, box = this.plot.getBoundingClientRect();
+      const t = xa.p2d(event.clientX - box.left - xa._offset), y = ya.p2d(event.clientY - box.top - ya._offset);
+      const eta = Math.sin((this.shape * Math.PI * t) / this.T);
+      if (!(t > 0 && t < this.T) || Math.abs(eta) < 0.3) return;
+      const i = Math.round((t / this.T) * (this.live.path.t.length - 1));
+      const q = this.live.path.Y[i][this.coordinate];
+      this.eps = Math.max(-this.epsMax, Math.min(this.epsMax, (y - q) / eta));
+      this.epsInput.value = String(this.eps / this.epsMax);
+      this.update(false);
+    };
+    this.plot.addEventListener("pointerdown", (e) => {
+      const full = this.plot._fullLayout;
+      if (!full) return;
+      const ya = full.yaxis, box = this.plot.getBoundingClientRect(), y = e.clientY - box.top;
+      if (y < ya._offset || y > ya._offset + ya._length) return; // only on the upper plot (the paths)
+      dragging = true; this.plot.setPointerCapture?.(e.pointerId); e.preventDefault();
+      if (this.finding) this.pickControl(e, full);
+      at(e);
+    });
+    this.plot.addEventListener("pointermove", (e) => { if (dragging) at(e); });
+    const stop = () => { if (dragging) { dragging = false; if (!this.finding) this.settle(); } };
+    this.plot.addEventListener("pointerup", stop);
+    this.plot.addEventListener("pointercancel", stop);
+    this.epsInput.addEventListener("change", () => this.settle());
+  }
+
+  setup() {
+    const run = this.run, data = this.data, n = data.coordinates.length;
+    const params = { ...data.parameters, ...(run?.request?.parameters || {}) };
+    const initial = { ...data.initial, ...(run?.request?.initial || {}) };
+    const names = this.fns.spec.coordinates;
+    const y0 = new Float64Array(2 * n);
+    names.forEach((q, i) => { y0[i] = initial[q] ?? 0; y0[n + i] = initial[`${q}_dot`] ?? 0; });
+    const k = Float64Array.from(this.fns.spec.parameters, (p) => params[p] ?? 0);
+    return { y0, k, params, initial };
+  }
+
+  async draw(run) {
+    this.run = run;
+    if (!this.visible) return;
+    if (!this.fns) await this.ask(true); // the first answer brings the generated functions
+    else this.update(true);
+  }
+
+  /** Recompute in the browser; a new path (T, k, start) also asks the server once the input rests. */
+  update(newPath) {
+    if (!this.fns) return;
+    const started = performance.now();
+    const { y0, k } = this.setup();
+    const key = `${this.T}|${Array.from(y0)}|${Array.from(k)}`;
+    if (newPath || !this.live || this.pathKey !== key) {
+      const p = path(this.fns.rhs, y0, k, this.T);
+      if (!p) { this.readout.textContent = "The true path leaves the region where L can be evaluated; choose a shorter T."; return; }
+      let lo = Infinity, hi = -Infinity;
+      for (const y of p.Y) { lo = Math.min(lo, y[this.coordinate]); hi = Math.max(hi, y[this.coordinate]); }
+      this.epsMax = Math.max(0.2, 0.6 * (hi - lo));
+      this.eps = Math.max(-this.epsMax, Math.min(this.epsMax, this.eps));
+      this.pathKey = key; this.cachedPath = p;
+      if (this.focusKey !== `${Array.from(y0)}|${Array.from(k)}`) {
+        this.focusKey = `${Array.from(y0)}|${Array.from(k)}`;
+        this.focusAt = focus(this.fns.rhs, y0, k, this.tEnd, 800);
+      }
+      this.server = null;
+      clearTimeout(this.timer);
+      this.timer = setTimeout(() => this.ask(false), SETTLE_MS);
+    }
+    if (newPath || !this.epsilons || this.epsilons[0] !== -this.epsMax) {
+      this.epsilons = Array.from({ length: CURVE }, (_, i) => ((2 * i) / (CURVE - 1) - 1) * this.epsMax);
+    }
+    this.live = liveAction(this.fns, {
+      y0, k, T: this.T, c: this.coordinate, shape: this.shape, eps: this.eps, epsilons: this.epsilons,
+      path: this.cachedPath, previous: newPath ? null : this.live,
+    });
+    this.paint();
+    this.section.dataset.recompute = (performance.now() - started).toFixed(1);
+  }
+
+  settle() {
+    clearTimeout(this.timer);
+    this.timer = setTimeout(() => this.ask(false), SETTLE_MS);
+  }
+
+  async ask(first) {
+    const serial = ++this.serial;
+    const { params, initial } = this.fns ? this.setup() : { params: { ...this.data.parameters, ...(this.run?.request?.parameters || {}) }, initial: { ...this.data.initial, ...(this.run?.request?.initial || {}) } };
+    const names = this.data.coordinates;
+    const epsilons = this.epsilons || [0];
+    const request = { initial, t_end: this.T, coordinate: names[this.coordinate], shape: "sine", k: this.shape, epsilons };
+    let body;
+    if (this.system) {
+      const parameters = (this.system.parameters || []).map((p) => ({ ...p, value: params[p.name] ?? p.value }));
+      body = { system: { ...this.system, parameters }, ...request };
+    } else body = { parameters: params, ...request };
+    const key = JSON.stringify(body);
+    this.section.setAttribute("aria-busy", "true");
+    let answer;
+    try {
+      answer = this.answers.get(key);
+      if (!answer) {
+        answer = fetch(this.url, { method: "POST", headers: { "Content-Type": "application/json", Accept: "application/json" }, body: key })
+          .then(async (res) => {
+            const b = await res.json().catch(() => ({}));
+            if (!res.ok) throw new Error(typeof b.detail === "string" ? b.detail : `the server answered ${res.status}`);
+            return b;
+          });
+        this.answers.set(key, answer);
+        if (this.answers.size > 32) this.answers.delete(this.answers.keys().next().value);
+      }
+      answer = await answer;
+    } catch (err) {
+      this.answers.delete(key);
+      if (serial === this.serial) { this.readout.textContent = `No action: ${err.message}`; this.section.setAttribute("aria-busy", "false"); }
+      return;
+    }
+    if (serial !== this.serial) return; // a newer request is on its way
+    if (!this.fns || this.fns.spec.lagrangian !== answer.preview.lagrangian) {
+      this.fns = { spec: answer.preview, rhs: compileRhs(answer.preview), L: compileLagrangian(answer.preview) };
+    }
+    this.section.setAttribute("aria-busy", "false");
+    if (first) { this.update(true); clearTimeout(this.timer); }
+    if (answer.t_end === this.T && answer.k === this.shape && answer.coordinate === names[this.coordinate] && this.epsilons && answer.epsilons.length === this.epsilons.length) {
+      this.server = answer;
+      this.paint();
+    } else if (first) this.settle();
+  }
+
+  paint() {
+    if (this.finding) { this.paintFind(); return; }
+    const live = this.live, s = this.server;
+    if (!live || live.error) { this.readout.textContent = live?.error || ""; return; }
+    const q = this.data.coordinates[this.coordinate], lq = this.label(q), unit = this.data.units?.[q] || "";
+    const t = Array.from(live.path.t), T = this.T, w = (this.shape * Math.PI) / T;
+    const trueQ = live.path.Y.map((y) => y[this.coordinate]);
+    const variedQ = trueQ.map((v, i) => v + this.eps * Math.sin(w * t[i]));
+    const curve = s ? s.action : live.curve, S0 = s ? s.true : live.truth.S;
+    const kind = s ? s.kind : live.kind;
+    const tStar = s && s.conjugate_time !== null ? s.conjugate_time : this.focusAt;
+    // the browser's S(ε) - S(0) (the same quadrature for both) on top of the shown S(0)
+    const Snow = S0 + (live.now.S - live.truth.S);
+    const traces = [
+      { type: "scatter", mode: "lines", x: t, y: trueQ, name: "true path", line: { color: PALETTE[0], width: 2 } },
+      { type: "scatter", mode: "lines", x: t, y: variedQ, name: "your path (drag it)", line: { color: PALETTE[1], width: 3, dash: "dash" } },
+      { type: "scatter", mode: "lines", x: t, y: Array.from(live.truth.L), name: "L on the true path", xaxis: "x2", yaxis: "y2", line: { color: PALETTE[0], width: 1.5 }, showlegend: false },
+      { type: "scatter", mode: "lines", x: t, y: Array.from(live.now.L), name: "L on your path", xaxis: "x2", yaxis: "y2", line: { color: PALETTE[1], width: 1.5, dash: "dash" }, showlegend: false },
+      { type: "scatter", mode: "lines", x: this.epsilons, y: curve, name: "S(ε)", xaxis: "x3", yaxis: "y3", line: { color: PALETTE[2], width: 2 }, showlegend: false },
+      { type: "scatter", mode: "lines", x: [-0.35 * this.epsMax, 0.35 * this.epsMax], y: [S0, S0], name: "tangent at ε = 0", xaxis: "x3", yaxis: "y3", line: { color: "#57606a", width: 1, dash: "dot" }, showlegend: false },
+      { type: "scatter", mode: "markers", x: [this.eps], y: [Snow], name: "S of your path", xaxis: "x3", yaxis: "y3", marker: { color: PALETTE[1], size: 10 }, showlegend: false },
+    ];
+    const shapes = [];
+    if (tStar !== null && tStar !== undefined && tStar <= T * 1.0001) {
+      shapes.push({ type: "line", xref: "x", yref: "paper", x0: tStar, x1: tStar, y0: 0.62, y1: 1, line: { color: "#c62828", width: 2, dash: "dot" } });
+    }
+    const lay = layout({
+      height: 520, hovermode: false, dragmode: false, showlegend: true,
+      xaxis: axis("t (s)", { domain: [0, 1], anchor: "y", range: [0, T] }), yaxis: axis(`${lq} (${unit})`, { domain: [0.62, 1] }),
+      xaxis2: axis("t (s)", { domain: [0, 0.42], anchor: "y2", range: [0, T] }), yaxis2: axis("L (J)", { domain: [0, 0.4], anchor: "x2" }),
+      xaxis3: axis("ε", { domain: [0.64, 1], anchor: "y3", nticks: 5 }), yaxis3: axis("S (J·s)", { domain: [0, 0.4], anchor: "x3" }),
+      shapes,
+      annotations: tStar !== null && tStar !== undefined && tStar <= T ? [{ x: tStar, y: 1, xref: "x", yref: "paper", text: "kinetic focus t*", showarrow: false, font: { color: "#c62828", size: 12 }, yanchor: "bottom" }] : [],
+    });
+    const moved = this.drawn && this.drawn.path === live.path && this.drawn.curve === curve && this.drawn.T === T;
+    if (moved && this.plot.data?.length === traces.length) {
+      // only ε changed: the varied path, its L and the mark on S(ε)
+      window.Plotly?.restyle(this.plot, { x: [traces[1].x, traces[3].x, traces[6].x], y: [traces[1].y, traces[3].y, traces[6].y] }, [1, 3, 6]);
+    } else {
+      window.Plotly?.react(this.plot, traces, lay, CONFIG);
+      this.drawn = { path: live.path, curve, T };
+    }
+    this.TOut.textContent = `${fmt(T)} s`;
+    const source = s ? "server" : "preview";
+    this.section.dataset.source = source;
+    this.section.dataset.kind = kind;
+    this.section.dataset.s0 = String(S0);
+    this.section.dataset.sNow = String(Snow);
+    const focusWords = tStar === null || tStar === undefined
+      ? `No kinetic focus before ${fmt(this.tEnd)} s.`
+      : `The first kinetic focus (conjugate point) of this start is at t* = ${fmt(tStar)} s${tStar <= T ? ", marked on the time axis" : ""}.`;
+    let verdict;
+    if (kind === "minimum") verdict = `With T = ${fmt(T)} s the true path is a minimum of S: every variation with the same ends raises it.`;
+    else if (kind === "saddle") verdict = `With T = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S: it is a saddle, and ${live.second.some((x) => x < 0) ? `the variation with k = ${live.second.findIndex((x) => x < 0) + 1}` : "a combination of the sine shapes"} lowers S. S is still stationary: its tangent at ε = 0 stays flat.`;
+    else verdict = `With T = ${fmt(T)} s every variation tried lowers S: the true path is a maximum among them.`;
+    if (this.data.forced) {
+      verdict = "Forces Q that no potential describes act here, so the true path makes δS + ∫ Q·δq dt vanish rather than "
+        + `making S stationary: S(ε) is not flat at ε = 0. Its curvature still shows how S bends (here ${kind === "minimum" ? "upward for every shape tried" : "downward for some shape"}).`;
+    }
+    const second = s ? s.second_variation : live.secondVariation;
+    const diff = Snow - S0;
+    const yours = this.eps === 0
+      ? "your path is the true path (drag it, or move ε, to vary it)"
+      : `S of your path (ε = ${fmt(this.eps)}, k = ${this.shape}) = ${fmt(Snow)} J·s, ${diff >= 0 ? "higher" : "lower"} by ${fmt(Math.abs(diff))}`;
+    this.readout.textContent = `S of the true path = ${fmt(S0)} J·s; ${yours}. `
+      + `d²S/dε² at ε = 0 is ${fmt(second)}. ${verdict} ${focusWords}`
+      + (s ? ` Server: S to ±${fmt(s.error_estimate)}, dS/dε at 0 = ${fmt(s.first_variation)}.${s.warnings?.length && !this.data.forced ? ` Note: ${s.warnings.join("; ")}.` : ""}` : " Computed in your browser; the server's numbers follow.");
+    if (this.summary && s) {
+      table(this.summary, `S(ε) for the shape k = ${this.shape}, T = ${fmt(T)} s`, ["ε", "S (J·s)"], s.epsilons.map((e, i) => [fmt(e), fmt(s.action[i])]));
+    }
+  }
+
+  // ---- "Find the path": fixed ends, a trial path through a few dragged points, relaxed on the server ----
+
+  toggleFind() {
+    this.finding = !this.finding;
+    this.drawn = null;
+    this.findButton.setAttribute("aria-pressed", String(this.finding));
+    this.findButton.textContent = this.finding ? "Back to ε" : "Find the path";
+    this.relaxButton.hidden = !this.finding;
+    this.epsInput.disabled = this.finding;
+    this.found = null; this.frame = null;
+    if (this.finding) this.resetControls();
+    this.paint();
+  }
+
+  resetControls() {
+    // the ends of the true path, and CONTROLS points on the straight line between them lifted by a bump
+    const p = this.live.path, c = this.coordinate, N = p.t.length - 1;
+    const a = p.Y[0][c], b = p.Y[N][c], lift = 0.5 * this.epsMax;
+    this.controlsT = Array.from({ length: CONTROLS + 2 }, (_, j) => (j * this.T) / (CONTROLS + 1));
+    this.controlsQ = this.controlsT.map((t, j) => a + ((b - a) * t) / this.T + (j === 0 || j === CONTROLS + 1 ? 0 : lift * Math.sin((Math.PI * t) / this.T)));
+  }
+
+  trial(times) {
+    // straight between neighbouring control points
+    const T = this.controlsT, Q = this.controlsQ;
+    return Array.from(times, (t) => {
+      let j = 1;
+      while (j < T.length - 1 && t > T[j]) j++;
+      const f = (t - T[j - 1]) / (T[j] - T[j - 1]);
+      return Q[j - 1] + f * (Q[j] - Q[j - 1]);
+    });
+  }
+
+  pickControl(event, full) {
+    const xa = full.xaxis, ya = full.yaxis, box = this.plot.getBoundingClientRect();
+    const x = event.clientX - box.left, y = event.clientY - box.top;
+    let best = null, distance = 30;
+    this.controlsT.forEach((t, j) => {
+      const d = Math.hypot(xa.d2p(t) + xa._offset - x, ya.d2p(this.controlsQ[j]) + ya._offset - y);
+      if (d < distance) { best = j; distance = d; }
+    });
+    this.picked = best;
+  }
+
+  moveControl(event, full) {
+    if (this.picked === null || this.picked === undefined) return;
+    const ya = full.yaxis, box = this.plot.getBoundingClientRect();
+    this.controlsQ[this.picked] = ya.p2d(event.clientY - box.top - ya._offset);
+    this.found = null; this.frame = null;
+    this.paintFind();
+  }
+
+  async relax() {
+    const names = this.data.coordinates, c = this.coordinate, steps = RELAX_STEPS;
+    const { params, initial } = this.setup();
+    const p = this.live.path, N = p.t.length - 1;
+    const start = {}, end = {};
+    names.forEach((q, i) => { start[q] = p.Y[0][i]; end[q] = p.Y[N][i]; });
+    start[names[c]] = this.controlsQ[0]; end[names[c]] = this.controlsQ[this.controlsQ.length - 1];
+    const times = Array.from({ length: steps + 1 }, (_, i) => (i * this.T) / steps);
+    const request = { initial, t_end: this.T, start, end, steps, trial: { [names[c]]: this.trial(times) } };
+    const body = this.system
+      ? { system: { ...this.system, parameters: (this.system.parameters || []).map((x) => ({ ...x, value: params[x.name] ?? x.value })) }, ...request }
+      : { parameters: params, ...request };
+    this.relaxButton.disabled = true;
+    this.readout.textContent = "Relaxing: Newton's method on the discrete Euler–Lagrange equations…";
+    try {
+      const res = await fetch(`${this.url}/relax`, { method: "POST", headers: { "Content-Type": "application/json", Accept: "application/json" }, body: JSON.stringify(body) });
+      const answer = await res.json().catch(() => ({}));
+      if (!res.ok) throw new Error(typeof answer.detail === "string" ? answer.detail : `the server answered ${res.status}`);
+      this.found = answer;
+      // the iterates one after another, then the result beside the shooting solution
+      for (let f = 0; f < answer.iterations.length && this.finding && this.found === answer; f++) {
+        this.frame = f; this.paintFind();
+        await new Promise((resolve) => setTimeout(resolve, FRAME_MS));
+      }
+      this.frame = null;
+      if (this.found === answer) this.paintFind();
+    } catch (err) {
+      this.readout.textContent = `No relaxed path: ${err.message}`;
+    } finally {
+      this.relaxButton.disabled = false;
+    }
+  }
+
+  paintFind() {
+    const q = this.data.coordinates[this.coordinate], lq = this.label(q), unit = this.data.units?.[q] || "";
+    const p = this.live.path, t = Array.from(p.t);
+    const traces = [
+      { type: "scatter", mode: "lines", x: t, y: p.Y.map((y) => y[this.coordinate]), name: "true path from the start", line: { color: "#b8bec5", width: 2 } },
+      { type: "scatter", mode: "lines+markers", x: this.controlsT, y: this.controlsQ, name: "your trial path (drag its points)", line: { color: PALETTE[1], width: 2, dash: "dash" }, marker: { size: 12, color: PALETTE[1] } },
+    ];
+    const f = this.found;
+    if (f) {
+      const shown = this.frame === null || this.frame === undefined ? f.q[q] : f.iterations[this.frame][q];
+      traces.push({ type: "scatter", mode: "lines", x: f.t, y: shown, name: this.frame === null || this.frame === undefined ? "relaxed path" : `Newton step ${this.frame}`, line: { color: PALETTE[2], width: 3 } });
+      if (this.frame === null || this.frame === undefined) traces.push({ type: "scatter", mode: "lines", x: f.t, y: f.shooting.q[q], name: "shooting solution", line: { color: PALETTE[3], width: 2, dash: "dot" } });
+    }
+    const lay = layout({ height: 420, hovermode: false, dragmode: false, xaxis: axis("t (s)", { range: [0, this.T] }), yaxis: axis(`${lq} (${unit})`) });
+    window.Plotly?.react(this.plot, traces, lay, CONFIG);
+    this.section.dataset.source = f ? "server" : "preview";
+    delete this.section.dataset.relaxed;
+    if (!f) {
+      this.readout.textContent = `Find the path: the ends are fixed at t = 0 and t = T = ${fmt(this.T)} s. Drag the points of the trial path (the ends too), then press Relax: the app makes the discretised action stationary and shows each Newton step.`;
+      return;
+    }
+    if (this.frame !== null && this.frame !== undefined) {
+      this.readout.textContent = this.frame === 0
+        ? "Relaxing: the trial path, sampled on the discrete grid…"
+        : `Relaxing: after Newton step ${this.frame} the path moves toward the one that makes the discrete action stationary…`;
+      return;
+    }
+    this.section.dataset.relaxed = f.kind;
+    const steps = f.iterations.length - 1;
+    const what = f.kind === "minimum"
+      ? "It is a minimum of the discrete action: every small change of it raises S."
+      : `It is a saddle of the discrete action, not a minimum: ${f.negative_directions} direction${f.negative_directions > 1 ? "s" : ""} lower${f.negative_directions > 1 ? "" : "s"} S, because T = ${fmt(this.T)} s is past the kinetic focus.`;
+    this.readout.textContent = `Relaxed in ${steps} Newton step${steps === 1 ? "" : "s"} onto the path that makes S stationary between these ends (the ${2 * RELAX_STEPS}-step path is within about ${fmt(f.error_estimate)} of it; extrapolating with the ${RELAX_STEPS}-step one removes most of that). `
+      + `The shooting solution (the motion starting with ${lq}̇(0) = ${fmt(f.shooting.velocity[`${q}_dot`])}) differs from it by at most ${fmt(f.difference)} ${unit}. ${what}`;
+  }
+
+  cursor() {}
+}

@@ -1,0 +1,103 @@
+"""The action panel in a real browser: drag the varied path and S rises on both sides of the true one; move T past
+the kinetic focus and the panel says the true path is no longer a minimum; relax a trial path onto the true one."""
+
+from __future__ import annotations
+
+import pytest
+
+pytestmark = pytest.mark.browser
+
+PANEL = "#panel-action"
+SERVER = f"document.querySelector('{PANEL}')?.dataset.source === 'server'"
+
+
+def _open(page, path="/scenes/simple-pendulum"):
+    page.goto(path)
+    page.locator(PANEL).scroll_into_view_if_needed()
+    page.wait_for_function(SERVER)
+
+
+def _drag(page, fraction_of_height):
+    """Press on the true path half-way along and move the pointer up or down by a fraction of the plot's height."""
+    plot = page.locator(f"{PANEL} .plot")
+    box = plot.bounding_box()
+    geo = page.evaluate(
+        """(el) => { const f = el._fullLayout, d = el.data[0], i = Math.floor(d.x.length / 2);
+             return {x: f.xaxis.d2p(d.x[i]) + f.xaxis._offset, y: f.yaxis.d2p(d.y[i]) + f.yaxis._offset,
+                     h: f.yaxis._length}; }""",
+        plot.element_handle(),
+    )
+    x, y = box["x"] + geo["x"], box["y"] + geo["y"]
+    page.mouse.move(x, y)
+    page.mouse.down()
+    page.mouse.move(x, y + fraction_of_height * geo["h"], steps=6)
+    page.mouse.up()
+    section = page.locator(PANEL)
+    return float(section.get_attribute("data-s-now")) - float(section.get_attribute("data-s0"))
+
+
+def test_dragging_the_varied_path_raises_S_on_both_sides(page, artifacts):
+    _open(page)
+    page.set_viewport_size({"width": 1366, "height": 768})
+    # up the screen: ε > 0; then down past the true path: ε < 0.  S rises either way.
+    above = _drag(page, -0.2)
+    eps_above = float(page.locator("#action-eps").input_value())
+    below = _drag(page, 0.2)
+    eps_below = float(page.locator("#action-eps").input_value())
+    assert eps_above > 0 > eps_below, (eps_above, eps_below)
+    assert above > 0 and below > 0, (above, below)
+    assert page.locator(PANEL).get_attribute("data-kind") == "minimum"
+    readout = page.locator(f"{PANEL} .readout").text_content()
+    assert "higher by" in readout and "a minimum of S" in readout
+    page.locator(PANEL).screenshot(path=artifacts / "action-drag-1366.png")
+    assert not page.console_errors
+
+
+def test_T_past_the_kinetic_focus_is_a_saddle(page, artifacts):
+    _open(page)
+    page.locator("#action-T").fill("2")
+    page.dispatch_event("#action-T", "input")
+    page.wait_for_function(f"{SERVER} && document.querySelector('{PANEL}').dataset.kind === 'saddle'")
+    readout = page.locator(f"{PANEL} .readout").text_content()
+    assert "no longer a minimum" in readout and "kinetic focus" in readout
+    shapes = page.evaluate(f"document.querySelector('{PANEL} .plot').layout.shapes.length")
+    assert shapes == 1  # the focus marked on the time axis
+    page.locator(PANEL).screenshot(path=artifacts / "action-saddle.png")
+    assert not page.console_errors
+
+
+def test_phone_layout_and_relaxing_a_trial_path(browser, live_server, artifacts):
+    context = browser.new_context(
+        base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True
+    )
+    phone = context.new_page()
+    phone.set_default_timeout(60_000)
+    try:
+        _open(phone)
+        # a swipe over the panel's plot scrolls the page (ε has its slider on a phone)
+        box = phone.locator(f"{PANEL} .plot").bounding_box()
+        x, y = box["x"] + box["width"] / 2, box["y"] + min(box["height"] / 2, 300)
+        before = phone.evaluate("window.scrollY")
+        cdp = phone.context.new_cdp_session(phone)
+        cdp.send("Input.dispatchTouchEvent", {"type": "touchStart", "touchPoints": [{"x": x, "y": y}]})
+        for k in range(1, 11):
+            cdp.send("Input.dispatchTouchEvent", {"type": "touchMove", "touchPoints": [{"x": x, "y": y - 15 * k}]})
+        cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+        phone.wait_for_timeout(300)
+        assert phone.evaluate("window.scrollY") > before
+        phone.locator("#action-find").click()
+        phone.locator("#action-relax").click()
+        phone.wait_for_function(f"document.querySelector('{PANEL}').dataset.relaxed === 'minimum'")
+        phone.wait_for_timeout(200)
+        readout = phone.locator(f"{PANEL} .readout").text_content()
+        assert "shooting solution" in readout and "minimum of the discrete action" in readout
+        width = phone.evaluate("document.documentElement.scrollWidth")
+        assert width <= 390
+        phone.locator(PANEL).screenshot(path=artifacts / "action-relax-390.png")
+    finally:
+        context.close()
+
+
+def test_the_playground_shows_the_panel(page):
+    _open(page, "/playground")
+    assert page.locator(f"{PANEL} .readout").text_content().startswith("S of the true path")

@@ -1,0 +1,102 @@
+"""The action over the API: a scene and a user system, the documented answer, refusals with reasons."""
+
+import math
+
+import pytest
+
+OSCILLATOR = {
+    "coordinates": ["x"],
+    "parameters": [{"name": "m", "value": 2}, {"name": "w", "value": 3}],
+    "lagrangian": "m*x_dot**2/2 - m*w**2*x**2/2",
+}
+KEYS = {
+    "epsilons", "action", "true", "first_variation", "second_variation", "kind", "conjugate_time", "error_estimate",
+}  # fmt: skip
+
+
+def test_scene_action_rises_on_both_sides_below_the_conjugate_time(client):
+    body = {"initial": {"theta": 1.0, "theta_dot": 0.0}, "t_end": 0.6, "coordinate": "theta", "k": 1,
+            "epsilons": [-0.2, 0.0, 0.2]}  # fmt: skip
+    r = client.post("/api/scenes/simple-pendulum/action", json=body)
+    assert r.status_code == 200
+    a = r.json()
+    assert KEYS <= set(a)
+    assert a["action"][1] == a["true"] and a["action"][0] > a["true"] < a["action"][2]
+    assert a["kind"] == "minimum" and a["conjugate_time"] is None and abs(a["first_variation"]) < 1e-8
+    assert "return _L;" in a["preview"]["lagrangian"] and len(a["path"]["t"]) == len(a["path"]["L"])
+
+
+def test_scene_action_is_a_saddle_past_the_focus(client):
+    r = client.post("/api/scenes/simple-pendulum/action", json={"initial": {"theta": 0.01}, "t_end": 2.0})
+    a = r.json()
+    assert a["kind"] == "saddle" and a["second_variation"] < 0
+    assert a["conjugate_time"] == pytest.approx(math.pi / math.sqrt(9.81), rel=1e-4)
+
+
+def test_user_system_action_runs_in_the_pool(client):
+    T = 1.5
+    r = client.post(
+        "/api/action",
+        json={"system": OSCILLATOR, "initial": {"x": 0.5}, "t_end": T, "epsilons": [0.1]},
+    )
+    assert r.status_code == 200, r.text
+    a = r.json()
+    assert a["action"][0] - a["true"] == pytest.approx(0.01 * (T / 2) * ((math.pi / T) ** 2 - 9), rel=1e-8)
+    assert a["conjugate_time"] == pytest.approx(math.pi / 3, rel=1e-8) and a["kind"] == "saddle"
+
+
+@pytest.mark.parametrize(
+    ("body", "words"),
+    [
+        ({"t_end": 1, "coordinate": "phi"}, "unknown coordinate 'phi'; choose one of theta"),
+        ({"t_end": 0}, "t_end must be positive"),
+        ({"t_end": -2}, "t_end must be positive"),
+        ({"t_end": 500}, "beyond this system's limit for the action, 100 s"),
+        ({"t_end": 1, "epsilons": [0.1] * 102}, "at most 101"),
+        ({"t_end": 1, "shape": "bump"}, "shapes are sine"),
+        ({"t_end": 1, "k": 0}, "k must be a whole number from 1 to 50"),
+        ({"t_end": 1, "initial": {"zeta": 1}}, "unknown initial value 'zeta'"),
+    ],
+)
+def test_bad_requests_are_refused_with_a_reason(client, body, words):
+    r = client.post("/api/scenes/simple-pendulum/action", json=body)
+    assert r.status_code == 422 and words in r.json()["detail"], r.text
+
+
+def test_unknown_scene_and_user_refusals(client):
+    assert client.post("/api/scenes/nope/action", json={"t_end": 1}).status_code == 404
+    r = client.post("/api/action", json={"system": OSCILLATOR, "t_end": 1, "coordinate": "y"})
+    assert r.status_code == 422 and "choose one of x" in r.json()["detail"]
+
+
+def test_relax_finds_the_pendulum_path_and_a_saddle_past_the_focus(client):
+    r = client.post("/api/scenes/simple-pendulum/action/relax", json={"t_end": 0.9, "initial": {"theta": 1.0}})
+    assert r.status_code == 200, r.text
+    a = r.json()
+    assert a["kind"] == "minimum" and a["difference"] < 1e-6 and len(a["iterations"]) >= 2
+    assert abs(a["shooting"]["velocity"]["theta_dot"]) < 1e-8  # the true path starts at rest
+    r = client.post("/api/scenes/simple-pendulum/action/relax", json={"t_end": 1.5, "initial": {"theta": 1.0}})
+    assert r.json()["kind"] == "saddle" and r.json()["negative_directions"] == 1
+
+
+@pytest.mark.parametrize(
+    ("body", "words"),
+    [
+        ({"t_end": 1, "steps": 2}, "steps must be a whole number from 4 to 1000"),
+        ({"t_end": 1, "trial": {"theta": [0.0, 1.0]}}, "must hold steps + 1 = 201 values"),
+        ({"t_end": 1, "start": {"phi": 0.0}, "end": {"theta": 0.0}}, "unknown coordinate 'phi' in start"),
+        ({"t_end": 0}, "t_end must be in (0, 100] s"),
+    ],
+)
+def test_bad_relax_requests_are_refused(client, body, words):
+    r = client.post("/api/scenes/simple-pendulum/action/relax", json=body)
+    assert r.status_code == 422 and words in r.json()["detail"], r.text
+
+
+def test_user_system_relax_runs_in_the_pool(client):
+    r = client.post("/api/action/relax", json={"system": OSCILLATOR, "t_end": 0.5, "start": {"x": 0}, "end": {"x": 1}})
+    assert r.status_code == 200, r.text
+    a = r.json()
+    # x(t) = sin(ωt)/sin(ωT) between x(0) = 0 and x(T) = 1
+    t = a["t"][len(a["t"]) // 2]
+    assert a["q"]["x"][len(a["t"]) // 2] == pytest.approx(math.sin(3 * t) / math.sin(1.5), abs=1e-7)
