@@ -19,7 +19,7 @@ from typing import Any
 
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
-from fastapi.responses import JSONResponse
+from fastapi.responses import HTMLResponse, JSONResponse, Response
 
 from app.engine.errors import excerpt
 from app.errors import OverCapacity, Refused, UnknownScene, WorkerFailed
@@ -94,7 +94,24 @@ async def validation_error(request: Request, exc: RequestValidationError) -> JSO
     return JSONResponse(status_code=REFUSED, content={"detail": detail, "errors": errors})
 
 
+UNENCODABLE = (
+    "the request holds text that cannot be shown: a lone surrogate escape (\\ud800 to \\udfff without its pair) "
+    "is not a character; send the character itself"
+)
+
+
+async def unencodable_text(request: Request, exc: Exception) -> Response:
+    """A text the request gave that no page can encode (a lone surrogate from a JSON escape): a refusal, never a 500.
+
+    The pages that echo input check their own fields first (app/web/playground.py); this is the net under them."""
+    if request.url.path.startswith("/api/"):
+        return JSONResponse({"detail": UNENCODABLE}, status_code=REFUSED)
+    page = f"<!doctype html><html lang=en><title>Refused</title><main><h1>Refused</h1><p>{UNENCODABLE}</p></main>"
+    return HTMLResponse(page, status_code=REFUSED)
+
+
 def install(app: FastAPI) -> None:
     app.add_exception_handler(RequestValidationError, validation_error)
+    app.add_exception_handler(UnicodeEncodeError, unencodable_text)
     for kind in KINDS:
         app.add_exception_handler(kind, _handler)
