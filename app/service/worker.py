@@ -203,6 +203,25 @@ def execute(function: Callable[..., Any], *args: Any) -> Any:
             log.exception("could not prune the cache of users' systems")
 
 
+def stopped(exitcode: int | None) -> str:
+    """What ended a worker before its job did, from its exit code: a signal (negative code) or an exit.
+
+    A worker that runs out of its memory cap gets a MemoryError (reported as such), so an end by a
+    signal is something outside the job: an operator, the container's own memory limit (SIGKILL from
+    the kernel), or the server shutting down."""
+    if exitcode is not None and exitcode < 0:
+        try:
+            name = signal.Signals(-exitcode).name
+        except ValueError:
+            name = f"signal {-exitcode}"
+        return (
+            f"the worker running this job was stopped by {name} before it finished (from outside the job: "
+            "an operator, the server restarting, or the machine's own limits); try again"
+        )
+    code = "" if exitcode is None else f" (exit code {exitcode})"
+    return f"the worker running this job ended unexpectedly{code} before it finished; try again"
+
+
 class _EntryPopen(popen_forkserver.Popen):
     """Start a worker from ``ENTRY`` instead of re-running the parent's ``__main__``."""
 
@@ -299,11 +318,7 @@ class WorkerPool:
         except RecursionError:
             raise JobFailed("the expressions are nested too deeply to work with", "memory") from None
         except ProcessExpired as exc:
-            raise JobFailed(
-                f"the worker stopped unexpectedly (exit code {exc.exitcode}); the work may need more "
-                f"than the limit of {self.memory_mb} MB of memory",
-                "crashed",
-            ) from None
+            raise JobFailed(stopped(exc.exitcode), "crashed") from None
         except BrokenProcessPool:  # the next submit stops and joins this pool, then starts another
             raise JobFailed("the worker pool was restarting; try again", "unavailable") from None
         except REFUSALS:
@@ -349,4 +364,3 @@ def ending(future: Future) -> str:
     if isinstance(error, ProcessExpired):
         return "crashed"
     return "refused" if isinstance(error, REFUSALS) else "failed"
-
