@@ -59,6 +59,12 @@ class Settings(BaseSettings):
     derive_seconds: float = Field(default=30.0, gt=0, description="hard time limit of a user system's derivation")
     simulate_seconds: float = Field(default=30.0, gt=0, description="hard time limit of a user system's simulation")
     check_seconds: float = Field(default=10.0, gt=0, description="hard time limit of checking a student's step")
+    proxy_header: str = Field(
+        default="", description="header naming the client behind a trusted reverse proxy (X-Forwarded-For); empty: none"
+    )
+    trusted_proxies: str = Field(
+        default="127.0.0.1,::1", description="addresses of the reverse proxies whose proxy_header is believed"
+    )
     session_secret: str | None = Field(
         default=None, description="key that signs session cookies; else a file in the cache"
     )

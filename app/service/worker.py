@@ -336,6 +336,11 @@ class WorkerPool:
         try:
             await asyncio.wrap_future(future)
         except asyncio.CancelledError:
+            task = asyncio.current_task()
+            gave_way = getattr(future, "gave_way", None)
+            if gave_way and not (task is not None and task.cancelling()):
+                # the job, not this await, was cancelled: fair shares gave its slot to someone else
+                raise OverCapacity(gave_way, 1) from None
             future.cancel()  # pebble kills the worker of a running job that is cancelled
             raise
         except BaseException:  # noqa: S110 - the job's own failure, read by outcome()

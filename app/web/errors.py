@@ -14,6 +14,7 @@ dictionary key) is cut to a short excerpt.
 
 from __future__ import annotations
 
+import asyncio
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -72,7 +73,15 @@ def json_problem(exc: Exception) -> JSONResponse:
     return JSONResponse(found.body, status_code=found.status, headers=found.headers)
 
 
+async def held(exc: Exception) -> None:
+    """Wait as long as a refusal asks before it is answered (a flood's refusals: app/service/fairness.py)."""
+    hold = getattr(exc, "hold", 0.0)
+    if isinstance(exc, OverCapacity) and hold > 0:
+        await asyncio.sleep(hold)
+
+
 async def _handler(request: Request, exc: Exception) -> JSONResponse:
+    await held(exc)
     return json_problem(exc)
 
 

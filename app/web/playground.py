@@ -27,7 +27,7 @@ from app.service.user_jobs import derive_job
 from app.service.user_systems import UserSystems
 from app.viz.user_page import model_of
 from app.web.deps import ClientDep, UserSystemsDep
-from app.web.errors import KINDS, REFUSED, Problem, problem
+from app.web.errors import KINDS, REFUSED, Problem, held, problem
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
 from app.web.playground_form import AXES, FORMS, Form, FormError, form_of, located_error, query_of, read_form, spec_of
 from app.web.schemas import SESSION_COOKIE
@@ -201,6 +201,7 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
     except FormError as exc:
         error = exc
     except KINDS as exc:
+        await held(exc)
         failed = problem(exc)
         if isinstance(exc, InvalidSystem):
             error = located_error(form, exc.loc, str(exc), exc.start, exc.end)
