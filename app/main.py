@@ -12,7 +12,7 @@ from app.service import simulation
 from app.service.memory import freeze_imported, freeze_when_done
 from app.service.services import Services
 from app.settings import settings
-from app.web import api_beyond, api_scenes, docs, errors, limits, pages
+from app.web import api_beyond, api_scenes, docs, errors, limits, pages, slow_clients
 from app.web.api_check import router as check_router
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
@@ -58,6 +58,7 @@ app = FastAPI(
 errors.install(app)
 app.add_middleware(ApiCompression)
 limits.install(app)  # every POST body capped before it is read
+slow_clients.install()  # connection caps and deadlines on uvicorn's protocols, however the app is served
 app.add_middleware(SecurityHeaders)  # outermost: on every response, errors included
 
 ROUTERS = [
