@@ -8,7 +8,7 @@ from typing import Any
 
 from fastapi import FastAPI
 
-from app.service import simulation
+from app.service import resident, simulation
 from app.service.memory import freeze_imported, freeze_when_done
 from app.service.services import Services
 from app.settings import settings
@@ -27,6 +27,7 @@ from app.web.templating import static_app
 async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
     # the services (worker pool, user systems, checking, simulation slots), given to the routes by app/web/deps.py
     services = Services.start(settings())
+    recording = resident.start_recording()  # this process's size, for the memory budget of the workers it starts
     # Fill the derivation cache, then load the compiled integrators and the scenes'
     # right-hand sides, in the background: the server answers at once, with scipy
     # while a compiled integrator is not ready yet.
@@ -44,6 +45,7 @@ async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
     try:
         yield {"services": services}
     finally:
+        recording.set()
         services.stop()  # the worker pool's processes joined
 
 

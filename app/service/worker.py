@@ -62,7 +62,7 @@ from pebble import ProcessExpired, ProcessPool
 
 from app.errors import OverCapacity, Refused, WorkerFailed
 from app.numerics.paths import use_user_folder
-from app.service import disk
+from app.service import disk, resident
 from app.settings import settings
 
 log = logging.getLogger(__name__)
@@ -171,6 +171,8 @@ def initialize_worker(memory_mb: int, retire_mb: int = 0, owner: int = 0, users:
     global _retire_bytes
     if owner:  # first: the watching thread's stack counts in the address space measured below
         _watch_owner(owner)
+    if users:  # the budget with the web processes' measured size (app/service/resident.py)
+        memory_mb = min(memory_mb, resident.job_memory_mb())
     limit = _address_space() + memory_mb * 1024 * 1024
     resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
     os.nice(WORKER_NICENESS)
