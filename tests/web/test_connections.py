@@ -97,6 +97,7 @@ def test_slowloris_beyond_the_cap_leaves_another_address_served(plain_server):
         time.sleep(0.3)
         assert GUARD.open["127.0.0.1"] <= CAP
         times = served_elsewhere(plain_server, 1.5)
+        print(f"slowloris: {GUARD.open['127.0.0.1']} of {ATTACK} held open; other address max {max(times):.3f} s")
         assert max(times) < 1.0, times
         time.sleep(HEADER_SECONDS + 0.5)
         assert still_open(sockets) == 0  # the header deadline closed the rest
@@ -118,6 +119,7 @@ def test_unread_answers_beyond_the_cap_leave_another_address_served(plain_server
         assert GUARD.open["127.0.0.1"] <= CAP
         assert GUARD.paused["127.0.0.1"] <= 5
         times = served_elsewhere(plain_server, 1.5)
+        print(f"slow-read: {GUARD.open['127.0.0.1']} of {ATTACK} held open; other address max {max(times):.3f} s")
         assert max(times) < 1.0, times
     finally:
         for s in sockets:
