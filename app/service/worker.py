@@ -316,7 +316,9 @@ class WorkerPool:
                 f"the work took longer than the limit of {timeout:g} s and was stopped", "timeout"
             ) from None
         except MemoryError:
-            raise JobFailed(f"the work needed more than the limit of {self.memory_mb} MB of memory", "memory") from None
+            # the cap as the worker had it (the budget with the measured web size)
+            cap = min(self.memory_mb, resident.job_memory_mb()) if self.users else self.memory_mb
+            raise JobFailed(f"the work needed more than the limit of {cap} MB of memory", "memory") from None
         except RecursionError:
             raise JobFailed("the expressions are nested too deeply to work with", "memory") from None
         except ProcessExpired as exc:
