@@ -8,11 +8,11 @@ from typing import Any
 
 from fastapi import FastAPI
 
-from app.service import simulation
+from app.service import resident, simulation
 from app.service.memory import freeze_imported, freeze_when_done
 from app.service.services import Services
 from app.settings import settings
-from app.web import api_action, api_beyond, api_scenes, docs, errors, limits, pages
+from app.web import api_action, api_beyond, api_scenes, docs, errors, limits, pages, slow_clients
 from app.web.api_check import router as check_router
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
@@ -27,6 +27,7 @@ from app.web.templating import static_app
 async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
     # the services (worker pool, user systems, checking, simulation slots), given to the routes by app/web/deps.py
     services = Services.start(settings())
+    recording = resident.start_recording()  # this process's size, for the memory budget of the workers it starts
     # Fill the derivation cache, then load the compiled integrators and the scenes'
     # right-hand sides, in the background: the server answers at once, with scipy
     # while a compiled integrator is not ready yet.
@@ -44,6 +45,7 @@ async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
     try:
         yield {"services": services}
     finally:
+        recording.set()
         services.stop()  # the worker pool's processes joined
 
 
@@ -58,6 +60,7 @@ app = FastAPI(
 errors.install(app)
 app.add_middleware(ApiCompression)
 limits.install(app)  # every POST body capped before it is read
+slow_clients.install()  # connection caps and deadlines on uvicorn's protocols, however the app is served
 app.add_middleware(SecurityHeaders)  # outermost: on every response, errors included
 
 ROUTERS = [

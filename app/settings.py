@@ -55,10 +55,25 @@ class Settings(BaseSettings):
     user_cache_mb: int = Field(default=64, gt=0, description="disk for user systems' generated code and compiled cache")
     header_seconds: float = Field(default=10.0, gt=0, description="time a client has to send a request's headers")
     connections: int = Field(default=400, gt=0, description="open connections and requests per web process; then 503")
+    connections_per_address: int = Field(
+        default=150, gt=0, description="open connections from one address per web process; then 503"
+    )
+    slow_per_address: int = Field(
+        default=32, gt=0, description="answers one address may leave unread at once (beyond: closed)"
+    )
+    write_seconds: float = Field(
+        default=20.0, gt=0, description="time an answer may wait for a client that does not read it"
+    )
     body_seconds: float = Field(default=10.0, gt=0, description="time a client has to send a request's body")
     derive_seconds: float = Field(default=30.0, gt=0, description="hard time limit of a user system's derivation")
     simulate_seconds: float = Field(default=30.0, gt=0, description="hard time limit of a user system's simulation")
     check_seconds: float = Field(default=10.0, gt=0, description="hard time limit of checking a student's step")
+    proxy_header: str = Field(
+        default="", description="header naming the client behind a trusted reverse proxy (X-Forwarded-For); empty: none"
+    )
+    trusted_proxies: str = Field(
+        default="127.0.0.1,::1", description="addresses of the reverse proxies whose proxy_header is believed"
+    )
     session_secret: str | None = Field(
         default=None, description="key that signs session cookies; else a file in the cache"
     )

@@ -1,34 +1,51 @@
 """Fair shares of the worker pool between clients.
 
 A classroom shares one network address, so the unit of fairness is a session
-the server issues (a signed cookie), not an address.  Admission rules for an
-expensive job (a derivation or simulation of a user system):
+the server issues (a signed cookie), not an address.  Sessions are free to
+issue: every request without a valid cookie gets one.  Who a request counts as
+(``Fairness.key``):
 
-1. one job in flight per client: a client whose job is still running gets a
-   429 with ``Retry-After`` (a request without a session cookie is keyed on
-   its address, so cookie-less scripts share one slot per address);
-2. at most ``per_address`` jobs in flight from one address, so one machine
-   that mints many sessions cannot take the whole pool;
+* a request that presents a session's cookie counts as that session, for the
+  first ``mint_per_minute`` sessions an address presents each minute (after
+  that, further sessions of the address share one key, ``many:<address>``, so
+  an address that hoards cookies gains nothing by it);
+* a request without one (a first visit, or a script that drops cookies and so
+  floods with a fresh session per request) counts as the address's newcomers,
+  ``new:<address>``: one shared weight for all of them.
+
+Admission rules for an expensive job (a derivation or simulation of a user
+system):
+
+1. one job in flight per session: a session whose job is still running gets a
+   429 with ``Retry-After``;
+2. at most ``per_address`` jobs in flight from one address (the shared keys
+   included), so one machine cannot take the whole pool; but a session that
+   has used less worker time lately than the key
+   of some job the address has in flight is admitted beyond it (up to twice
+   the cap), after taking the place of the heaviest waiting job when there is
+   one: a well-behaved student behind a flooding neighbour's address is not
+   refused for the neighbour's share;
 3. at most ``capacity`` jobs in flight overall (running plus queued), beyond
-   which a 503 with ``Retry-After`` says the server is busy;
-4. sessions are minted at most ``mint_per_minute`` per address;
-5. a client or an address whose jobs keep running out of time or memory backs
-   off: after two such failures in a row a client gets a 429 for 5 s, doubling
-   with each further one (at most 5 minutes); an address backs off once
-   ``per_address`` + 1 of its jobs failed so in a row, except for its sessions
-   that have had a job succeed lately (a classroom behind one address keeps
-   working while one of its machines floods).
+   which a newcomer that has used less takes the place of the heaviest job
+   still waiting, or else a 503 with ``Retry-After`` says the server is busy;
+4. a key whose jobs keep running out of time or memory backs off: after two
+   such failures in a row it gets a 429 for 5 s, doubling with each further one
+   (at most 5 minutes); an address backs off, for its shared keys only, once
+   ``per_address`` + 1 of its jobs failed so in a row (a student's own session
+   is held back only by its own failures).
 
 Admitted jobs wait for one of ``workers`` run slots in this queue, never in the
-pool's.  A free slot goes to the waiting job whose address, then whose session,
-has used the least worker time lately (decayed with a half-life of
-``HALF_LIFE`` s, the running jobs' time included), so a session that has not
-had a turn goes before the sessions that flood, whatever their number: within
-its address's share each session keeps a floor.  When the address's share (or
-the whole queue) is full, a newcomer that has used less takes the place of
-the heaviest job still waiting, whose client gets a 429.  A job waits at most
-``queue_seconds`` (then a 503 with ``Retry-After``), and a job whose clients
-all went away leaves the queue (app/service/user_systems.py).
+pool's.  A free slot goes to the waiting job whose address, then whose key, has
+used the least worker time lately (decayed with a half-life of ``HALF_LIFE`` s,
+the running jobs' time included): weighted fair queueing across addresses and,
+within an address, across sessions, the newcomers counting as one.  A session
+that has to wait while a heavier shared key's job runs takes that job's slot:
+the job is stopped (``GAVE_WAY``), so a student never waits behind a flood of
+cookie-less requests for more than their own job.  So a flood
+from one address raises the wait of the others by at most the jobs already
+running.  A job waits at most ``queue_seconds`` (its deadline; then a 503 with
+``Retry-After``), and a job whose clients all went away leaves the queue
+(app/service/user_systems.py).
 
 Answers are cached, and a request identical to one already running waits for
 that job without a ticket of its own (app/service/user_systems.py), so a class
@@ -45,9 +62,9 @@ import os
 import secrets
 import threading
 import time
-from collections import deque
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from app.errors import OverCapacity
 from app.service.cache import cache_dir
@@ -60,10 +77,29 @@ BACKOFF_SECONDS = 5.0  # after the second job in a row out of time or memory; do
 CLIENT_STRIKES = 2  # failures in a row before a client backs off
 BACKOFF_MAX = 300.0
 STRIKES = ("timeout", "memory", "crashed")  # outcomes that count against a client
+SHARED = ("new:", "many:", "address:")  # keys that many requests share (no one-at-a-time rule for them)
+NEW_SESSION_SECONDS = 60.0  # the window of ``mint_per_minute``
+# A refusal of an address's shared key (a script dropping its cookies) is answered this late: a flood
+# that retries at once would otherwise cost the server hundreds of refusals a second (each request
+# is read and checked first); held, twenty flooding threads send about twenty requests a second.
+HOLD_SECONDS = 1.0
+GAVE_WAY = (
+    "your job gave way to a student's session: requests without the session cookie run only while no session "
+    "waits; send the cookie this answer sets (a browser does) and try again"
+)
+
+
+def shared(key: str) -> bool:
+    """Whether ``key`` stands for many requests at once (an address's newcomers), not one session."""
+    return key.startswith(SHARED)
 
 
 class Busy(OverCapacity):
-    """A job refused for fairness: this client's turn (``whole_server`` false) or a full server, with a ``retry_after``."""
+    """A job refused for fairness: this client's turn (``whole_server`` false) or a full server, with a ``retry_after``.
+
+    ``hold`` is how long the answer should wait before it is sent (see ``HOLD_SECONDS``)."""
+
+    hold: float = 0.0
 
 
 def _secret(configured: str | None) -> bytes:
@@ -99,6 +135,7 @@ class Ticket:
     ran_at: float | None = None  # when it got a run slot
     released: bool = False
     wake: tuple[asyncio.AbstractEventLoop, asyncio.Future] | None = None
+    job: Any = None  # the running job's future (set by the service), which a shared key's job may have to give up
 
     @property
     def running(self) -> bool:
@@ -144,12 +181,12 @@ class Fairness:
         self._slots_taken = 0
         self._usage = _Usage()
         self._strikes: dict[str, tuple[int, float]] = {}  # key -> (failures in a row, backing off until)
-        self._proven: dict[str, float] = {}  # client -> when a job of theirs last succeeded
         self._key = _secret(secret or settings().session_secret)
         self._lock = threading.Lock()
-        self._running: dict[str, Ticket] = {}
+        self._in_flight: set[Ticket] = set()  # admitted and not released: running or waiting
+        self._per_client: dict[str, int] = {}
         self._per_address: dict[str, int] = {}
-        self._minted: dict[str, deque[float]] = {}
+        self._presented: dict[str, dict[str, float]] = {}  # address -> its sessions seen this minute -> first seen
         self._mean_seconds = 2.0  # a running mean of job durations, for Retry-After
 
     # sessions -------------------------------------------------------------------------------
@@ -163,21 +200,30 @@ class Fairness:
         session, _, signature = token.partition(".")
         return session if hmac.compare_digest(self._sign(session), signature) else None
 
-    def mint(self, address: str) -> str | None:
-        """A new signed cookie value, or None when this address minted too many this minute."""
-        now = time.monotonic()
-        with self._lock:
-            recent = self._minted.setdefault(address, deque())
-            while recent and now - recent[0] > 60:
-                recent.popleft()
-            if len(recent) >= self.mint_per_minute:
-                return None
-            recent.append(now)
-            if len(self._minted) > 10000:  # forget idle addresses
-                for stale in [a for a, q in self._minted.items() if not q or now - q[-1] > 60]:
-                    del self._minted[stale]
+    def mint(self, address: str = "") -> str:
+        """A new signed cookie value: sessions cost nothing to issue (what they count as is ``key``'s business)."""
         session = secrets.token_urlsafe(12)
         return f"{session}.{self._sign(session)}"
+
+    def key(self, session: str | None, address: str) -> str:
+        """Who a request counts as: its session while the address presents few enough, else a shared key."""
+        if session is None:
+            return f"new:{address}"
+        now = time.monotonic()
+        with self._lock:
+            seen = self._presented.setdefault(address, {})
+            if session in seen:
+                seen[session] = now
+                return f"session:{session}"
+            for stale in [s for s, t in seen.items() if now - t > NEW_SESSION_SECONDS]:
+                del seen[stale]
+            if len(seen) >= self.mint_per_minute:
+                return f"many:{address}"
+            seen[session] = now
+            if len(self._presented) > 10000:  # forget idle addresses
+                for idle in [a for a, q in self._presented.items() if not q or now - max(q.values()) > 60]:
+                    del self._presented[idle]
+            return f"session:{session}"
 
     # admission ------------------------------------------------------------------------------
     def _retry_after(self, jobs_ahead: int) -> int:
@@ -191,7 +237,7 @@ class Fairness:
     def _weight(self, ticket: Ticket, now: float) -> tuple[float, float, float]:
         """Who goes first: least recent worker time of the address, then of the client, then arrival."""
         live = {ticket.address: 0.0, ticket.client: 0.0}
-        for other in self._running.values():
+        for other in self._in_flight:
             if other.running:
                 for key in (other.address, other.client):
                     if key in live:
@@ -219,14 +265,31 @@ class Fairness:
         )
         return True
 
+    def _lighter_than_the_address(self, newcomer: Ticket, now: float) -> bool:
+        """Whether the newcomer's key has used less than the key of some job its address has in flight."""
+        mine = self._weight(newcomer, now)[1]
+        return any(mine < self._weight(t, now)[1] for t in self._in_flight if t.address == newcomer.address)
+
     def admit(self, client: str, address: str) -> Ticket:
-        """Admit one job for ``client`` (a session id or ``address:...``) or raise Busy."""
+        """Admit one job for ``client`` (``Fairness.key``: a session, or an address's shared key) or raise Busy.
+
+        A refusal of a shared key is held (``Busy.hold``) for ``HOLD_SECONDS``, at most its ``retry_after``."""
+        try:
+            return self._admit(client, address)
+        except Busy as refused:
+            if shared(client):
+                refused.hold = min(HOLD_SECONDS, float(refused.retry_after))
+            raise
+
+    def _admit(self, client: str, address: str) -> Ticket:
         now = time.monotonic()
+        many = shared(client)
         with self._lock:
-            proven = now - self._proven.get(client, -math.inf) < HALF_LIFE * 10
-            wait = max(
-                self._backing_off(client, CLIENT_STRIKES, now),
-                0.0 if proven else self._backing_off(address, self.per_address + 1, now),
+            # a session backs off for its own failures, an address's shared keys for the address's
+            wait = (
+                self._backing_off(address, self.per_address + 1, now)
+                if many
+                else self._backing_off(client, CLIENT_STRIKES, now)
             )
             if wait:
                 raise Busy(
@@ -234,26 +297,30 @@ class Fairness:
                     "(smaller systems or shorter simulations fit the limits)",
                     max(1, math.ceil(wait)),
                 )
-            if client in self._running:
+            if not many and self._per_client.get(client):
                 raise Busy(
                     "you already have a derivation or simulation running; wait for it to finish",
                     self._retry_after(self.workers),
                 )
             ticket = Ticket(self, client, address)
-            if self._per_address.get(address, 0) >= self.per_address and not self._make_room(
-                ticket, [t for t in self._waiting if t.address == address], now
+            from_address = self._per_address.get(address, 0)
+            if (
+                from_address >= self.per_address
+                and not self._make_room(ticket, [t for t in self._waiting if t.address == address], now)
+                and (many or from_address >= 2 * self.per_address or not self._lighter_than_the_address(ticket, now))
             ):
                 raise Busy(
                     f"{self.per_address} jobs from your network address are already running; try again shortly",
                     self._retry_after(1),
                 )
-            if len(self._running) >= self.capacity and not self._make_room(ticket, list(self._waiting), now):
+            if len(self._in_flight) >= self.capacity and not self._make_room(ticket, list(self._waiting), now):
                 raise Busy(
                     "the server is busy with other users' systems; try again shortly",
-                    self._retry_after(len(self._running) - self.capacity + 1),
+                    self._retry_after(len(self._in_flight) - self.capacity + 1),
                     whole_server=True,
                 )
-            self._running[client] = ticket
+            self._in_flight.add(ticket)
+            self._per_client[client] = self._per_client.get(client, 0) + 1
             self._per_address[address] = self._per_address.get(address, 0) + 1
             return ticket
 
@@ -269,6 +336,9 @@ class Fairness:
             ticket.wake = (loop, granted)
             self._waiting.append(ticket)
             self._dispatch()
+            victim = None if ticket.running or shared(ticket.client) else self._preempted_for(ticket)
+        if victim is not None:
+            victim.cancel()  # outside the lock: its done callback releases its ticket
         try:
             await asyncio.wait_for(asyncio.shield(granted), self.queue_seconds)
         except TimeoutError:
@@ -285,6 +355,25 @@ class Fairness:
         except BaseException:  # cancelled (the client left) or dropped from the queue
             ticket.release("cancelled")
             raise
+
+    def _preempted_for(self, ticket: Ticket) -> Any:
+        """The heaviest running job of a shared key heavier than ``ticket``'s session, marked to give way (lock held).
+
+        A session never waits behind an address's newcomers: their job is cancelled (its worker is killed and
+        replaced in a fraction of a second), its requests are answered with ``GAVE_WAY``, and the freed slot
+        goes to the lightest waiting job."""
+        now = time.monotonic()
+        mine = self._weight(ticket, now)[:2]
+        running = [
+            t for t in self._in_flight
+            if t.running and t.job is not None and shared(t.client) and self._weight(t, now)[:2] > mine
+            and not getattr(t.job, "gave_way", None)
+        ]  # fmt: skip
+        if not running:
+            return None
+        victim = max(running, key=lambda t: self._weight(t, now)).job
+        victim.gave_way = GAVE_WAY
+        return victim
 
     def _dispatch(self) -> None:
         """Give free run slots to the lightest waiting jobs (called with the lock held)."""
@@ -319,13 +408,14 @@ class Fairness:
 
     def _forget(self, ticket: Ticket) -> None:
         ticket.released = True
-        if self._running.get(ticket.client) is ticket:
-            del self._running[ticket.client]
-        left = self._per_address.get(ticket.address, 1) - 1
-        if left > 0:
-            self._per_address[ticket.address] = left
-        else:
-            self._per_address.pop(ticket.address, None)
+        if ticket in self._in_flight:
+            self._in_flight.discard(ticket)
+            for counts, key in ((self._per_client, ticket.client), (self._per_address, ticket.address)):
+                left = counts.get(key, 1) - 1
+                if left > 0:
+                    counts[key] = left
+                else:
+                    counts.pop(key, None)
 
     def _strike(self, key: str, outcome: str, threshold: int, now: float) -> None:
         count, _ = self._strikes.get(key, (0, 0.0))
@@ -335,6 +425,9 @@ class Fairness:
             self._strikes[key] = (count, now + min(BACKOFF_MAX, BACKOFF_SECONDS * 2**extra))
         elif outcome == "done":
             self._strikes.pop(key, None)
+        if len(self._strikes) > 20000:  # forget the keys whose back-off has passed
+            for stale in [k for k, (_, until) in self._strikes.items() if until < now]:
+                del self._strikes[stale]
 
     def _release(self, ticket: Ticket, outcome: str) -> None:
         now = time.monotonic()
@@ -351,18 +444,13 @@ class Fairness:
                 self._usage.add(ticket.address, elapsed, now)
                 self._mean_seconds = 0.8 * self._mean_seconds + 0.2 * elapsed
                 self._strike(ticket.client, outcome, CLIENT_STRIKES, now)
-                if outcome == "done":
-                    self._proven[ticket.client] = now
-                    if len(self._proven) > 20000:  # forget the oldest half
-                        for stale in sorted(self._proven, key=self._proven.__getitem__)[:10000]:
-                            del self._proven[stale]
                 self._strike(ticket.address, outcome, self.per_address + 1, now)
             self._dispatch()
 
     @property
     def in_flight(self) -> int:
         with self._lock:
-            return len(self._running)
+            return len(self._in_flight)
 
     @property
     def waiting(self) -> int:

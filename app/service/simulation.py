@@ -33,6 +33,7 @@ from app.numerics.methods.scipy_ivp import scipy_integrate
 from app.numerics.observables import Observables, build, summarize
 from app.numerics.plan import Plan, plan
 from app.numerics.simulate import Outcome, run
+from app.numerics.start import why_not_at_start
 from app.numerics.system import NumericSystem, generated_sources, numeric_system
 from app.scenes import SCENES, Scene
 from app.service.cache import JsonCache, source_fingerprint
@@ -319,11 +320,7 @@ def simulate_derivation(
     except (ArithmeticError, ValueError):
         start = np.array([math.nan])
     if not np.all(np.isfinite(start)):
-        raise SimulationError(
-            "the equations of motion cannot be evaluated at this initial state (a division by zero: "
-            "the coordinates are singular there, e.g. a radius of 0 or a pole of the sphere); move it slightly",
-            "initial",
-        )
+        raise SimulationError(why_not_at_start(derivation, y0, k), "initial")  # the cause, named
     # the plan resolves auto (and the fallback while compiling) first, so the throttle sees what will run
     planned = plan(system, k, y0, t_end, samples, method, rtol, atol, wait_for_compile=not gates.answer_while_compiling)
     # a run far beyond the scene's span or near the tolerance floor is heavy: those take at most half

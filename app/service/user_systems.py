@@ -118,6 +118,7 @@ class UserSystems:
         await self.gate.turn(ticket)  # a fair turn for a worker, within the queue deadline
         # in a thread: the first job starts the forkserver (importing the engine), which takes seconds
         future = await asyncio.to_thread(submit)
+        ticket.job = future  # a shared key's job may have to give way to a session's (app/service/fairness.py)
         result = await self.pool.run_async(future, timeout)
         cache.put(key, result)
         return result

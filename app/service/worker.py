@@ -62,7 +62,7 @@ from pebble import ProcessExpired, ProcessPool
 
 from app.errors import OverCapacity, Refused, WorkerFailed
 from app.numerics.paths import use_user_folder
-from app.service import disk
+from app.service import disk, resident
 from app.settings import settings
 
 log = logging.getLogger(__name__)
@@ -171,6 +171,8 @@ def initialize_worker(memory_mb: int, retire_mb: int = 0, owner: int = 0, users:
     global _retire_bytes
     if owner:  # first: the watching thread's stack counts in the address space measured below
         _watch_owner(owner)
+    if users:  # the budget with the web processes' measured size (app/service/resident.py)
+        memory_mb = min(memory_mb, resident.job_memory_mb())
     limit = _address_space() + memory_mb * 1024 * 1024
     resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
     os.nice(WORKER_NICENESS)
@@ -201,6 +203,25 @@ def execute(function: Callable[..., Any], *args: Any) -> Any:
             disk.prune_now_and_then()
         except OSError:
             log.exception("could not prune the cache of users' systems")
+
+
+def stopped(exitcode: int | None) -> str:
+    """What ended a worker before its job did, from its exit code: a signal (negative code) or an exit.
+
+    A worker that runs out of its memory cap gets a MemoryError (reported as such), so an end by a
+    signal is something outside the job: an operator, the container's own memory limit (SIGKILL from
+    the kernel), or the server shutting down."""
+    if exitcode is not None and exitcode < 0:
+        try:
+            name = signal.Signals(-exitcode).name
+        except ValueError:
+            name = f"signal {-exitcode}"
+        return (
+            f"the worker running this job was stopped by {name} before it finished (from outside the job: "
+            "an operator, the server restarting, or the machine's own limits); try again"
+        )
+    code = "" if exitcode is None else f" (exit code {exitcode})"
+    return f"the worker running this job ended unexpectedly{code} before it finished; try again"
 
 
 class _EntryPopen(popen_forkserver.Popen):
@@ -295,15 +316,13 @@ class WorkerPool:
                 f"the work took longer than the limit of {timeout:g} s and was stopped", "timeout"
             ) from None
         except MemoryError:
-            raise JobFailed(f"the work needed more than the limit of {self.memory_mb} MB of memory", "memory") from None
+            # the cap as the worker had it (the budget with the measured web size)
+            cap = min(self.memory_mb, resident.job_memory_mb()) if self.users else self.memory_mb
+            raise JobFailed(f"the work needed more than the limit of {cap} MB of memory", "memory") from None
         except RecursionError:
             raise JobFailed("the expressions are nested too deeply to work with", "memory") from None
         except ProcessExpired as exc:
-            raise JobFailed(
-                f"the worker stopped unexpectedly (exit code {exc.exitcode}); the work may need more "
-                f"than the limit of {self.memory_mb} MB of memory",
-                "crashed",
-            ) from None
+            raise JobFailed(stopped(exc.exitcode), "crashed") from None
         except BrokenProcessPool:  # the next submit stops and joins this pool, then starts another
             raise JobFailed("the worker pool was restarting; try again", "unavailable") from None
         except REFUSALS:
@@ -321,6 +340,11 @@ class WorkerPool:
         try:
             await asyncio.wrap_future(future)
         except asyncio.CancelledError:
+            task = asyncio.current_task()
+            gave_way = getattr(future, "gave_way", None)
+            if gave_way and not (task is not None and task.cancelling()):
+                # the job, not this await, was cancelled: fair shares gave its slot to someone else
+                raise OverCapacity(gave_way, 1) from None
             future.cancel()  # pebble kills the worker of a running job that is cancelled
             raise
         except BaseException:  # noqa: S110 - the job's own failure, read by outcome()
@@ -349,4 +373,3 @@ def ending(future: Future) -> str:
     if isinstance(error, ProcessExpired):
         return "crashed"
     return "refused" if isinstance(error, REFUSALS) else "failed"
-

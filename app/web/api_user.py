@@ -21,7 +21,7 @@ from app.service.user_checks import InvalidSystem, checked
 from app.web.api_scenes import EXPORT_CONTENT, download
 from app.web.deps import Client, ClientDep, UserSystemsDep
 from app.web.disconnect import ClientGone, unless_gone
-from app.web.errors import KINDS, json_problem
+from app.web.errors import KINDS, held, json_problem
 from app.web.examples_user import DERIVE_EXAMPLES, DERIVE_RESPONSE, ERROR_EXAMPLES, SIMULATE_EXAMPLES, SIMULATE_RESPONSE
 from app.web.limits import MAX_BODY_BYTES
 from app.web.schemas import SESSION_COOKIE, ErrorResponse
@@ -92,6 +92,7 @@ async def answer(
     except ClientGone:
         return Response(status_code=499)  # nobody reads it: nginx's code for a client that closed the request
     except KINDS as exc:
+        await held(exc)  # a flood's refusals are answered late (app/service/fairness.py HOLD_SECONDS)
         response = json_problem(exc)
     else:
         response = reply(body)

@@ -24,6 +24,7 @@ from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Fairness
 from app.service.services import Services
 from app.service.simulation import Gates
 from app.service.user_systems import UserSystems
+from app.web.address import client_address
 
 
 async def services(request: Request) -> Services:
@@ -72,11 +73,10 @@ class Client:
 
 
 async def client_identity(request: Request, gate: Annotated[Fairness, Depends(fairness_gate)]) -> Client:
-    address = request.client.host if request.client else "unknown"
+    """The request's session (app/service/fairness.py's ``key``), and a new one for a request without one."""
+    address = client_address(request.scope)  # the peer, or a trusted proxy's word for it (app/web/address.py)
     session = gate.verify(request.cookies.get(COOKIE))
-    if session:
-        return Client(f"session:{session}", address, request=request)
-    return Client(f"address:{address}", address, gate.mint(address), request)
+    return Client(gate.key(session, address), address, None if session else gate.mint(address), request)
 
 
 ClientDep = Annotated[Client, Depends(client_identity)]

@@ -14,12 +14,13 @@ dictionary key) is cut to a short excerpt.
 
 from __future__ import annotations
 
+import asyncio
 from dataclasses import dataclass, field
 from typing import Any
 
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
-from fastapi.responses import JSONResponse
+from fastapi.responses import HTMLResponse, JSONResponse, Response
 
 from app.engine.errors import excerpt
 from app.errors import OverCapacity, Refused, UnknownScene, WorkerFailed
@@ -72,7 +73,15 @@ def json_problem(exc: Exception) -> JSONResponse:
     return JSONResponse(found.body, status_code=found.status, headers=found.headers)
 
 
+async def held(exc: Exception) -> None:
+    """Wait as long as a refusal asks before it is answered (a flood's refusals: app/service/fairness.py)."""
+    hold = getattr(exc, "hold", 0.0)
+    if isinstance(exc, OverCapacity) and hold > 0:
+        await asyncio.sleep(hold)
+
+
 async def _handler(request: Request, exc: Exception) -> JSONResponse:
+    await held(exc)
     return json_problem(exc)
 
 
@@ -94,7 +103,24 @@ async def validation_error(request: Request, exc: RequestValidationError) -> JSO
     return JSONResponse(status_code=REFUSED, content={"detail": detail, "errors": errors})
 
 
+UNENCODABLE = (
+    "the request holds text that cannot be shown: a lone surrogate escape (\\ud800 to \\udfff without its pair) "
+    "is not a character; send the character itself"
+)
+
+
+async def unencodable_text(request: Request, exc: Exception) -> Response:
+    """A text the request gave that no page can encode (a lone surrogate from a JSON escape): a refusal, never a 500.
+
+    The pages that echo input check their own fields first (app/web/playground.py); this is the net under them."""
+    if request.url.path.startswith("/api/"):
+        return JSONResponse({"detail": UNENCODABLE}, status_code=REFUSED)
+    page = f"<!doctype html><html lang=en><title>Refused</title><main><h1>Refused</h1><p>{UNENCODABLE}</p></main>"
+    return HTMLResponse(page, status_code=REFUSED)
+
+
 def install(app: FastAPI) -> None:
     app.add_exception_handler(RequestValidationError, validation_error)
+    app.add_exception_handler(UnicodeEncodeError, unencodable_text)
     for kind in KINDS:
         app.add_exception_handler(kind, _handler)

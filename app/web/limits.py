@@ -29,12 +29,24 @@ class TooDeep(ValueError):
     """A JSON text nested deeper than allowed."""
 
 
+def _as_utf8(data: bytes) -> bytes:
+    """The bytes of a JSON text re-encoded as UTF-8, in the encoding ``json.loads`` would detect for them."""
+    encoding = json.detect_encoding(data)
+    if encoding == "utf-8":
+        return data
+    # utf-8-sig, utf-16(-le/-be), utf-32(-le/-be): what the parser would decode; undecodable bytes count
+    # for nothing here (the parser refuses them anyway)
+    return data.decode(encoding, "replace").encode("utf-8", "surrogatepass")
+
+
 def check_json_depth(text: str | bytes, limit: int = MAX_JSON_DEPTH) -> None:
     """Refuse a JSON text whose arrays and objects nest deeper than ``limit``, by scanning (not parsing) it.
 
-    Brackets inside strings do not count; raises TooDeep as soon as ``limit`` is passed.
+    Brackets inside strings do not count; raises TooDeep as soon as ``limit`` is passed.  Bytes are scanned
+    as the document ``json.loads`` would read: a body in UTF-16 or UTF-32 (which ``json.loads`` detects from
+    its first bytes) is decoded first, so its nesting cannot hide between zero bytes.
     """
-    data = text.encode("utf-8", "surrogatepass") if isinstance(text, str) else text
+    data = text.encode("utf-8", "surrogatepass") if isinstance(text, str) else _as_utf8(text)
     if data.count(b"[") + data.count(b"{") <= limit:  # the common case, decided at C speed
         return
     depth = 0

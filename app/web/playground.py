@@ -27,7 +27,7 @@ from app.service.user_jobs import derive_job
 from app.service.user_systems import UserSystems
 from app.viz.user_page import model_of
 from app.web.deps import ClientDep, UserSystemsDep
-from app.web.errors import KINDS, REFUSED, Problem, problem
+from app.web.errors import KINDS, REFUSED, Problem, held, problem
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
 from app.web.playground_form import AXES, FORMS, Form, FormError, form_of, located_error, query_of, read_form, spec_of
 from app.web.schemas import SESSION_COOKIE
@@ -82,6 +82,45 @@ def warm_examples(service: UserSystems, after: threading.Thread | None = None) -
     thread = threading.Thread(target=warm, name="warm-examples", daemon=True)
     thread.start()
     return thread
+
+
+# Where each of the form's texts is shown (the ids of playground_form.field_id), for a refusal of its characters.
+_SCALAR_FIELDS = {"coordinates": "f-coordinates", "lagrangian": "f-L", "kinetic": "f-T", "potential": "f-U",
+                  "nonnegative": "f-nn", "form": "f-form"}  # fmt: skip
+_ROW_FIELDS = {"parameters": "f-param-{i}-{key}", "particles": "f-particle-{i}-{key}", "forces": "f-force-{i}-{key}"}
+
+
+def _lone_surrogates(text: str) -> bool:
+    return any("\ud800" <= c <= "\udfff" for c in text)
+
+
+def _without_surrogates(text: str) -> str:
+    """The text with each lone surrogate (a JSON escape such as \\ud800 decodes to one) replaced by U+FFFD."""
+    return "".join("\ufffd" if "\ud800" <= c <= "\udfff" else c for c in text)
+
+
+def unencodable(form: Form) -> FormError | None:
+    """A refusal of the first text in the form that holds a lone surrogate, which no page can encode; the
+    form is mended in place (U+FFFD for each), so the page that shows the refusal can show the form too."""
+    found: FormError | None = None
+    for name, field_id in _SCALAR_FIELDS.items():
+        text = getattr(form, name)
+        if isinstance(text, str) and _lone_surrogates(text):
+            setattr(form, name, _without_surrogates(text))
+            found = found or FormError(_SURROGATE_MESSAGE, field_id)
+    for name, pattern in _ROW_FIELDS.items():
+        for i, row in enumerate(getattr(form, name)):
+            for key, text in row.items():
+                if isinstance(text, str) and _lone_surrogates(text):
+                    row[key] = _without_surrogates(text)
+                    found = found or FormError(_SURROGATE_MESSAGE, pattern.format(i=i, key=key))
+    return found
+
+
+_SURROGATE_MESSAGE = (
+    "the system in the address holds a lone surrogate escape (\\ud800 to \\udfff without its pair), "
+    "which is not a character; it is shown here as \ufffd: type the character itself or remove it"
+)
 
 
 def _example_links() -> list[dict[str, str]]:
@@ -151,6 +190,8 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
             form = Form()  # an empty form to start from
         elif request.query_params:
             form = read_form(request.query_params)
+            if (mended := unencodable(form)) is not None:
+                raise mended
         if not (form.coordinates or form.parameters or form.lagrangian or form.kinetic or form.particles):
             empty = True  # the page says what to enter
         else:
@@ -160,6 +201,7 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
     except FormError as exc:
         error = exc
     except KINDS as exc:
+        await held(exc)
         failed = problem(exc)
         if isinstance(exc, InvalidSystem):
             error = located_error(form, exc.loc, str(exc), exc.start, exc.end)

@@ -25,6 +25,7 @@ def options() -> list[str]:
         "--limit-concurrency", str(s.connections),
         "--http", "app.web.slow_clients:HeaderDeadline",
         "--timeout-graceful-shutdown", "20",
+        "--no-proxy-headers",  # the client's address is app/web/address.py's decision (LAGRANGE_PROXY_HEADER)
     ]  # fmt: skip
 
 

@@ -75,10 +75,87 @@ def test_sessions_are_signed(gate):
     assert Fairness(capacity=1, secret="another key").verify(token) is None
 
 
-def test_minting_is_rate_limited_per_address(gate):
-    assert all(gate.mint("10.0.0.1") for _ in range(3))
-    assert gate.mint("10.0.0.1") is None
-    assert gate.mint("10.0.0.2") is not None
+def test_sessions_cost_nothing_to_issue_and_an_address_that_hoards_them_shares_one_key(gate):
+    tokens = [gate.mint("10.0.0.1") for _ in range(5)]
+    assert all(gate.verify(t) for t in tokens)  # minting is never refused
+    keys = [gate.key(gate.verify(t), "10.0.0.1") for t in tokens]
+    assert keys[:3] == [f"session:{gate.verify(t)}" for t in tokens[:3]]
+    assert keys[3:] == ["many:10.0.0.1"] * 2  # beyond mint_per_minute sessions presented in a minute
+    assert gate.key(gate.verify(tokens[0]), "10.0.0.1") == keys[0]  # a session already seen keeps its key
+    assert gate.key(gate.verify(tokens[4]), "10.0.0.2").startswith("session:")  # another address has its own
+    assert gate.key(None, "10.0.0.1") == "new:10.0.0.1"  # no cookie: the address's newcomers
+
+
+def test_the_newcomers_of_an_address_share_its_cap_but_not_the_one_job_rule(gate):
+    tickets = [gate.admit("new:school", "school") for _ in range(2)]
+    with pytest.raises(Busy) as caught:
+        gate.admit("new:school", "school")
+    assert "network address" in str(caught.value)
+    for ticket in tickets:
+        ticket.release()
+
+
+def test_a_session_lighter_than_the_flood_of_its_address_is_admitted_beyond_the_cap():
+    async def main():
+        room = Fairness(capacity=8, workers=1, per_address=2, queue_seconds=30)
+        flood = room.admit("new:school", "school")
+        await room.turn(flood)
+        await asyncio.sleep(0.05)  # the newcomers' job has run a while
+        second = room.admit("new:school", "school")
+        await asyncio.sleep(0)
+        waits = asyncio.ensure_future(room.turn(second))
+        await asyncio.sleep(0.01)
+        student = room.admit("session:student", "school")  # takes the waiting flood job's place
+        with pytest.raises(Busy):
+            await waits
+        with pytest.raises(Busy):
+            room.admit("new:school", "school")  # the flood itself stays within the cap
+        third = room.admit("session:student2", "school")  # a second student: beyond the cap, lighter than the flood
+        student_turn = asyncio.ensure_future(room.turn(student))
+        third_turn = asyncio.ensure_future(room.turn(third))
+        await asyncio.sleep(0.01)
+        flood.release()
+        await student_turn  # a free slot goes to a student
+        student.release()
+        await third_turn
+        third.release()
+        return room.in_flight, room.waiting
+
+    assert run(main) == (0, 0)
+
+
+class FakeJob:
+    """A running job's future: cancelling it ends the job (the pool kills its worker), releasing its ticket."""
+
+    def __init__(self, ticket):
+        self.ticket, self.cancelled = ticket, False
+
+    def cancel(self):
+        self.cancelled = True
+        self.ticket.release("cancelled")
+        return True
+
+
+def test_a_session_takes_the_slot_of_a_running_newcomers_job():
+    async def main():
+        room = Fairness(capacity=8, workers=1, per_address=2, queue_seconds=30)
+        flood = room.admit("new:school", "school")
+        await room.turn(flood)
+        flood.job = FakeJob(flood)
+        await asyncio.sleep(0.02)
+        student = room.admit("session:student", "school")
+        await asyncio.wait_for(room.turn(student), 1)  # at once: the newcomers' job gave way
+        assert flood.job.cancelled and "gave way" in flood.job.gave_way
+        other = room.admit("new:school", "school")
+        waiting = asyncio.ensure_future(room.turn(other))
+        await asyncio.sleep(0.02)
+        assert not waiting.done()  # a shared key never stops a session's job
+        student.release()
+        await waiting
+        other.release()
+        return room.in_flight
+
+    assert run(main) == 0
 
 
 PENDULUM = {"coordinates": ["q"], "parameters": [{"name": "k", "value": 1.0}], "lagrangian": "q_dot**2/2 - k*q**2/2"}
@@ -209,21 +286,18 @@ def test_a_session_whose_jobs_keep_running_out_of_time_backs_off():
     assert run(main) == [0, 5, 10]
 
 
-def test_an_address_that_keeps_failing_backs_off_except_for_its_proven_sessions():
+def test_an_address_that_keeps_failing_backs_off_for_its_newcomers_but_not_for_its_sessions():
     async def main():
         room = Fairness(capacity=8, workers=1, per_address=2, queue_seconds=30)
-        ticket = room.admit("session:student", "school")
-        await room.turn(ticket)
-        ticket.release()  # the student's job succeeded
-        for i in range(3):  # three jobs in a row out of time, from three new sessions at the address
-            ticket = room.admit(f"session:bomb{i}", "school")
+        for _ in range(3):  # three jobs in a row out of time, from the address's newcomers (no cookie)
+            ticket = room.admit("new:school", "school")
             await room.turn(ticket)
             ticket.release("timeout")
         with pytest.raises(Busy) as caught:
-            room.admit("session:new", "school")
-        ticket = room.admit("session:student", "school")  # a session with a recent success still gets in
+            room.admit("new:school", "school")
+        ticket = room.admit("session:student", "school")  # a student's own session is held back only by its own
         ticket.release()
-        room.admit("session:other", "elsewhere").release()  # another address is not affected
+        room.admit("new:elsewhere", "elsewhere").release()  # another address is not affected
         return caught.value
 
     refused = run(main)

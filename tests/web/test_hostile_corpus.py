@@ -24,6 +24,7 @@ import pytest
 from app.settings import settings
 from app.web.limits import MAX_BODY_BYTES, MAX_JSON_DEPTH
 from tests.browser.conftest import live_server  # noqa: F401  (the session's uvicorn server)
+from tests.web.hostile_issue_34 import issue_34_probes
 
 pytestmark = pytest.mark.slow  # every hostile probe against a live server
 
@@ -41,6 +42,7 @@ class Probe:
     content: bytes | None = None
     headers: list[tuple[bytes, bytes]] = field(default_factory=list)
     fresh_cookie: bool = False  # the answer must issue a new session
+    says: str = ""  # words the answer must contain (a refusal that names its real cause)
 
 
 def lagrangian(text: str) -> dict:
@@ -363,6 +365,7 @@ def _probes() -> list[Probe]:
         Probe("exp-log-small", "POST", "/api/derive", (200,), json=lagrangian("x_dot**2/2 - exp(2*log(x**2 + 1))"))
     )
     probes.append(Probe("abs-playground", "GET", playground(lagrangian("x_dot**2/2 - Abs(x)")), (200,)))
+    probes += issue_34_probes(Probe, json_headers)  # tests/web/hostile_issue_34.py
     return probes
 
 
@@ -445,6 +448,7 @@ def test_hostile_probe(live_server, canary, probe):  # noqa: F811
         assert json.loads(answer.body)["detail"]
         assert len(answer.body) < 4000, (probe.id, len(answer.body))
     assert answer.status < 400 or not any(name in text for name in INTERNAL_NAMES), probe.id
+    assert probe.says in text, (probe.id, text[:300])
     if probe.fresh_cookie:
         assert "lagrange_session=" in answer.headers.get("set-cookie", ""), probe.id
     assert send(live_server, "GET", "/healthz", None, []).status == 200
