@@ -14,6 +14,7 @@ from app.service.services import Services
 from app.settings import settings
 from app.web import api_beyond, api_scenes, docs, errors, limits, pages
 from app.web.api_check import router as check_router
+from app.web.api_classes import router as classes_router
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
 from app.web.compression import ApiCompression
@@ -69,6 +70,7 @@ ROUTERS = [
     simulate_router,
     playground_router,
     check_router,
+    classes_router,
 ]
 app.mount("/static", static_app, name="static")
 for router in ROUTERS:
