@@ -14,11 +14,11 @@ from app.service.services import Services
 from app.settings import settings
 from app.web import api_beyond, api_scenes, docs, errors, limits, pages
 from app.web.api_check import router as check_router
-from app.web.api_classes import router as classes_router
 from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
 from app.web.compression import ApiCompression
 from app.web.headers import SecurityHeaders
+from app.web.pages_classes import router as classes_router
 from app.web.playground import router as playground_router
 from app.web.playground import warm_examples
 from app.web.templating import static_app
