@@ -42,13 +42,3 @@ def digest(key: str) -> str:
     """What the database keeps of a key."""
     return hashlib.sha256(key.encode("utf-8", "surrogatepass")).hexdigest()
 
-
-def bearer(header: str | None) -> str | None:
-    """The key of an ``Authorization: Bearer <key>`` header; None when there is none."""
-    if not header:
-        return None
-    scheme, _, key = header.strip().partition(" ")
-    key = key.strip()
-    if scheme.lower() != "bearer" or not key:
-        return None
-    return key[:MAX_KEY_LENGTH]
