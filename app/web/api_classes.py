@@ -22,6 +22,7 @@ from app.service.classroom.keys import MAX_KEY_LENGTH
 from app.service.classroom.service import Classroom
 from app.web.api_user import answer
 from app.web.deps import ClientDep, ServicesDep
+from app.web.limits import MAX_BODY_BYTES
 from app.web.schemas import ErrorResponse
 from app.web.schemas_check import CheckResponse
 from app.web.schemas_classes import (
@@ -56,6 +57,8 @@ async def class_key(credentials: Annotated[HTTPAuthorizationCredentials | None, 
 KeyDep = Annotated[str | None, Depends(class_key)]
 
 ERRORS: dict[int | str, dict[str, Any]] = {
+    400: {"model": ErrorResponse, "description": "The body could not be read (not JSON, or nested too deeply)."},
+    413: {"model": ErrorResponse, "description": f"The body is larger than {MAX_BODY_BYTES} bytes."},
     401: {"model": ErrorResponse, "description": "No key: send `Authorization: Bearer <key>`."},
     403: {"model": ErrorResponse, "description": "This key does not open this route of this class."},
     422: {"model": UserError, "description": "Refused: the field at fault is in `loc`."},
@@ -67,7 +70,8 @@ def _json(data: Any, status: int = 200) -> JSONResponse:
     return JSONResponse(data, status_code=status, headers=NO_STORE)
 
 
-@router.post("", status_code=201, summary="Create a class", response_model=ClassCreated, responses={422: ERRORS[422]})
+@router.post("", status_code=201, summary="Create a class", response_model=ClassCreated,
+             responses={k: ERRORS[k] for k in (400, 413, 422)})
 async def create_class(classes: ClassroomDep, body: NewClass) -> JSONResponse:
     return _json(await classes.create(body.title), 201)
 
@@ -76,14 +80,14 @@ async def create_class(classes: ClassroomDep, body: NewClass) -> JSONResponse:
     "/{code}/join",
     summary="Join a class with a pseudonym",
     response_model=Joined,
-    responses={404: {"model": ErrorResponse, "description": "No class has this code."}, 422: ERRORS[422],
-               429: ERRORS[429]},
+    responses={404: {"model": ErrorResponse, "description": "No class has this code."},
+               **{k: ERRORS[k] for k in (400, 413, 422, 429)}},
 )
 async def join_class(classes: ClassroomDep, client: ClientDep, code: str, body: JoinRequest) -> Response:
     return client.keep(_json(await classes.join(code, body.name, client.key)))
 
 
-@router.get("/{code}", summary="The class as your key sees it", response_model=ClassView,
+@router.get("/{code}/me", summary="The class as your key sees it", response_model=ClassView,
             responses={401: ERRORS[401], 403: ERRORS[403]})
 async def view_class(classes: ClassroomDep, code: str, key: KeyDep) -> JSONResponse:
     return _json(await classes.view(code, key))
@@ -109,7 +113,8 @@ async def check_step(classes: ClassroomDep, client: ClientDep, code: str, key: K
     return response
 
 
-@router.put("/{code}/assignment", summary="Set the class's assignment", responses=ERRORS)
+@router.put("/{code}/assignment", summary="Set the class's assignment",
+            responses={k: ERRORS[k] for k in (400, 401, 403, 413, 422)})
 async def set_assignment(classes: ClassroomDep, code: str, key: KeyDep, body: Assignment) -> JSONResponse:
     return _json(await classes.assign(code, key, [item.to_item() for item in body.items]))
 
@@ -130,7 +135,7 @@ async def class_students(classes: ClassroomDep, code: str, key: KeyDep) -> JSONR
     "/{code}/export",
     summary="Every recorded attempt, as CSV",
     response_class=Response,
-    responses={200: {"content": {"text/csv": {}}}, 401: ERRORS[401], 403: ERRORS[403]},
+    responses={200: {"content": {"text/csv": {}}}, 401: ERRORS[401], 403: ERRORS[403], 422: ERRORS[422]},
 )
 async def export_class(
     classes: ClassroomDep, code: str, key: KeyDep, format: Annotated[Literal["csv"], Query()] = "csv"

@@ -119,7 +119,7 @@ async function drawItems() {
 async function load() {
   let r;
   try {
-    r = await api("GET", `/api/classes/${current.code}`, { key: current.key });
+    r = await api("GET", `/api/classes/${current.code}/me`, { key: current.key });
   } catch {
     $("joined-progress").textContent = "The server cannot be reached; retrying…";
     setTimeout(load, 5000);

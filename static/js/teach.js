@@ -28,7 +28,7 @@ function show() {
 async function open(code, key) {
   let r;
   try {
-    r = await api("GET", `/api/classes/${encodeURIComponent(code)}`, { key });
+    r = await api("GET", `/api/classes/${encodeURIComponent(code)}/me`, { key });
   } catch {
     $("start-status").textContent = "The server cannot be reached.";
     return "unreachable";
