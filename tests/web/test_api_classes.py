@@ -7,7 +7,7 @@ import csv
 import io
 
 import pytest
-from sqlalchemy import create_engine, text
+from sqlalchemy import text
 
 from app.main import app
 from app.web.api_classes import classroom as classroom_dep
@@ -22,7 +22,7 @@ RIGHT_T = "m*R**2*theta_dot**2/2"
 @pytest.fixture(params=BACKENDS)
 def classes(request, services, tmp_path):
     postgres = request.getfixturevalue("postgres_server") if request.param == "postgresql" else None
-    room = classroom(services.checking, request.param, tmp_path, postgres, **getattr(request, "param_extra", {}))
+    room = classroom(services.checking, request.param, tmp_path, postgres)
     app.dependency_overrides[classroom_dep] = lambda: room
     yield room
     app.dependency_overrides.pop(classroom_dep, None)
@@ -205,4 +205,3 @@ def test_a_key_is_compared_as_a_digest_in_constant_time(monkeypatch, tmp_path, s
             pass
     assert compared == [(64, 64)] * 3  # one comparison of two digests, whether the code exists or not
     room.stop()
-    create_engine  # noqa: B018 - imported for the other tests' helpers
