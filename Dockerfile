@@ -22,6 +22,7 @@ ARG PIP_CERT=/etc/ssl/certs/ca-certificates.crt
 ENV PYTHONDONTWRITEBYTECODE=1 \
     PYTHONUNBUFFERED=1 \
     LAGRANGE_CACHE_DIR=/app/.cache \
+    LAGRANGE_DATA_DIR=/app/data \
     NUMBA_CACHE_DIR=/app/.cache/numba \
     PORT=8000 \
     WORKERS=0
@@ -36,10 +37,13 @@ COPY templates templates
 COPY static static
 COPY --from=assets /src/static/vendor static/vendor
 COPY scripts/serve.sh scripts/serve.sh
-RUN useradd --create-home --uid 10001 lagrange && mkdir -p .cache && chown -R lagrange /app/.cache
+RUN useradd --create-home --uid 10001 lagrange && mkdir -p .cache data && chown -R lagrange /app/.cache /app/data
 USER lagrange
 # Derive the chapter (and precompute its reports) so the first student waits for nothing.
 RUN python -m app.web.warm
+# The classes' database (SQLite) lives here: `docker run -v lagrange-data:/app/data ...` keeps classes across
+# restarts and upgrades (LAGRANGE_DATABASE_URL names a PostgreSQL instead).
+VOLUME ["/app/data"]
 EXPOSE 8000
 HEALTHCHECK --interval=30s --timeout=5s --start-period=20s --retries=3 \
     CMD python -c "import os, urllib.request; urllib.request.urlopen('http://127.0.0.1:%s/healthz' % os.environ.get('PORT', '8000'), timeout=4)"

@@ -13,7 +13,11 @@ routes alike (app/web/errors.py):
   server is full (``whole_server`` true);
 * ``WorkerFailed``: a worker process did not finish a job (``kind``: timeout,
   memory, crashed, or unavailable when no worker could be had);
-* ``UnknownScene``: no scene has this id.
+* ``UnknownScene``: no scene has this id;
+* ``NoKey``: a class's route was asked without a key (``Authorization: Bearer``);
+* ``WrongKey``: the key given does not open this route of this class (a wrong key,
+  a student's key on an instructor's route, another class's key, or an unknown code);
+* ``UnknownClass``: no class has this code (joining only: a keyed route says WrongKey).
 """
 
 from __future__ import annotations
@@ -94,3 +98,18 @@ class UnknownScene(KeyError):
 
     def __str__(self) -> str:
         return f"no scene with id {self.scene_id[:60]!r}; known scenes: {', '.join(self.known)}"
+
+
+class NoKey(Exception):
+    """A class's route asked without a key; the message says which key it needs."""
+
+
+class WrongKey(Exception):
+    """The key does not open this route of this class; the same answer whether the code or the key is wrong."""
+
+
+class UnknownClass(KeyError):
+    """No class has this code (to join); the message says what a code looks like."""
+
+    def __str__(self) -> str:
+        return str(self.args[0]) if self.args else "no class has this code"

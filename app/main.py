@@ -18,6 +18,7 @@ from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
 from app.web.compression import ApiCompression
 from app.web.headers import SecurityHeaders
+from app.web.pages_classes import router as classes_router
 from app.web.playground import router as playground_router
 from app.web.playground import warm_examples
 from app.web.templating import static_app
@@ -73,6 +74,7 @@ ROUTERS = [
     simulate_router,
     playground_router,
     check_router,
+    classes_router,
 ]
 app.mount("/static", static_app, name="static")
 for router in ROUTERS:

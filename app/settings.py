@@ -78,6 +78,15 @@ class Settings(BaseSettings):
         default=None, description="key that signs session cookies; else a file in the cache"
     )
     warm: bool = Field(default=True, description="compile kernels and fill caches in the background at start-up")
+    data_dir: Path = Field(default=ROOT / ".data", description="classes' SQLite database (a volume in the image)")
+    database_url: str | None = Field(
+        default=None, description="a PostgreSQL URL for the classes (shared by replicas); else SQLite in data_dir"
+    )
+    class_days: int = Field(default=180, gt=0, description="days a class and its record are kept, then deleted")
+    class_joins_per_minute: int = Field(default=300, gt=0, description="joins one class accepts per minute")
+    class_checks_per_minute: int = Field(default=3000, gt=0, description="checks one class records per minute")
+    client_joins_per_minute: int = Field(default=20, gt=0, description="joins one client may make per minute")
+    student_checks_per_minute: int = Field(default=30, gt=0, description="checks one student may make per minute")
 
     # The memory budget (docs/deployment.md, "Capacity").  With P web processes, each with a forkserver, one
     # worker for the scenes' Python-loop runs (capped at S = scene_worker_mb) and W pool workers for

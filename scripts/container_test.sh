@@ -7,7 +7,8 @@
 # same name is made from Debian bookworm (debootstrap + podman import + Python in
 # a venv on PATH).  The container then runs with --network none and is checked
 # from inside: /, a scene page, the static assets, a derivation, a simulation,
-# and that no network but loopback exists.
+# and that no network but loopback exists; then a class recorded in one container is
+# read back from a second one on the same volume (the classes' SQLite in /app/data).
 #
 # Usage: scripts/container_test.sh        (about 3-6 minutes; needs root and apt)
 set -euo pipefail
@@ -138,4 +139,56 @@ fi
 pm exec lagrange sh -c 'ls /sys/class/net' | tr '\n' ' ' | sed 's/^/interfaces: /'; echo
 echo "== graceful stop"
 pm stop -t 20 lagrange >/dev/null 2> >(grep -v "systemd connection" >&2)
+
+echo "== classes kept on a volume across containers"
+cat >"$work/classes.py" <<'PY'
+import json, sys, time, urllib.error, urllib.request
+
+base = "http://127.0.0.1:8000"
+for _ in range(120):
+    try:
+        urllib.request.urlopen(base + "/healthz", timeout=2)
+        break
+    except OSError:
+        time.sleep(0.5)
+else:
+    sys.exit("the app did not start")
+
+def call(method, path, body=None, key=None):
+    headers = {"Content-Type": "application/json"}
+    if key:
+        headers["Authorization"] = "Bearer " + key
+    data = None if body is None else json.dumps(body).encode()
+    request = urllib.request.Request(base + path, data=data, headers=headers, method=method)
+    with urllib.request.urlopen(request, timeout=120) as r:
+        return json.loads(r.read())
+
+if sys.argv[1] == "record":
+    created = call("POST", "/api/classes", {"title": "kept on a volume"})
+    student = call("POST", f"/api/classes/{created['code']}/join", {"name": "Ada"})["student_key"]
+    verdict = call("POST", f"/api/classes/{created['code']}/check",
+                   {"scene": "simple-pendulum", "step": "kinetic", "answer": "m*R**2*theta_dot**2"}, student)
+    assert verdict["verdict"] == "incorrect", verdict
+    print(created["code"], created["teacher_key"])
+else:
+    code, key = sys.argv[2], sys.argv[3]
+    summary = call("GET", f"/api/classes/{code}/summary", key=key)
+    kept = summary["students"] == 1 and summary["attempts"] == 1
+    print(("ok   " if kept else "FAIL ") + "classes kept on a volume", json.dumps(summary)[:200])
+    sys.exit(0 if kept else 1)
+PY
+pm volume create lagrange-data >/dev/null
+for round in 1 2; do
+    pm run -d --name "classes$round" --network none -v lagrange-data:/app/data -e WORKERS=1 localhost/lagrange:test \
+        >/dev/null 2> >(grep -v "systemd connection" >&2)
+    pm cp "$work/classes.py" "classes$round:/tmp/classes.py"
+    if [ "$round" = 1 ]; then
+        kept=$(pm exec classes1 python /tmp/classes.py record) || { pm logs classes1 | tail -40; exit 1; }
+    elif ! pm exec classes2 python /tmp/classes.py read $kept; then
+        pm logs classes2 | tail -40
+        exit 1
+    fi
+    pm stop -t 20 "classes$round" >/dev/null 2> >(grep -v "systemd connection" >&2)
+    pm rm "classes$round" >/dev/null
+done
 echo "container test passed"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Set up (idempotent, dev tools included) and run the whole test suite: lint (scripts/lint.sh), then pytest
 # (engine, API, numerics, and the pages in Debian's headless Chromium; exported
-# LaTeX documents are compiled with Debian's pdflatex).
+# LaTeX documents are compiled with Debian's pdflatex; the classes' database also on Debian's PostgreSQL).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh dev
@@ -12,6 +12,11 @@ fi
 if ! command -v pdflatex >/dev/null; then
     apt-get update -qq
     apt-get install -y -qq --no-install-recommends texlive-latex-base texlive-latex-recommended >/dev/null
+fi
+# the classes' tests start a throwaway PostgreSQL cluster (tests/postgres.py) with Debian's binaries
+if ! ls /usr/lib/postgresql/*/bin/initdb >/dev/null 2>&1; then
+    apt-get update -qq
+    apt-get install -y -qq --no-install-recommends postgresql >/dev/null
 fi
 scripts/lint.sh
 # set-up warmed the caches (python -m app.web.warm): the tests never compile kernels meanwhile.

@@ -14,6 +14,7 @@ import threading
 from dataclasses import dataclass
 
 from app.service.checking import Checking
+from app.service.classroom.service import Classroom
 from app.service.simulation import Gates, load_scenes
 from app.service.user_systems import UserSystems
 from app.service.worker import WorkerPool
@@ -29,6 +30,7 @@ class Services:
     checking: Checking  # judge students' steps (the same pool and fair share)
     gates: Gates  # how many scene simulations, Poincaré sections and mode measurements run at once
     scenes: WorkerPool  # one process for the scenes' runs that step in Python (scipy), off the event loop's GIL
+    classes: Classroom  # classes and their recorded attempts (a database, connected at first use)
 
     @classmethod
     def start(cls, config: Settings) -> Services:
@@ -42,7 +44,8 @@ class Services:
         )
         # a server that compiles in the background (the warm setting) answers from scipy meanwhile
         gates = Gates(offload=scenes.run, answer_while_compiling=config.warm)
-        return cls(pool, users, Checking(users, config), gates, scenes)
+        checking = Checking(users, config)
+        return cls(pool, users, checking, gates, scenes, Classroom(checking, config))
 
     def warm(self, after: threading.Thread | None = None) -> threading.Thread:
         """Start the scenes' worker and load the chapter's systems in it (after ``after``, the
@@ -65,3 +68,4 @@ class Services:
         """Stop the worker pools and join their processes (a job still running is killed)."""
         self.pool.stop()
         self.scenes.stop()
+        self.classes.stop()

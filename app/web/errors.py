@@ -23,16 +23,18 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.responses import HTMLResponse, JSONResponse, Response
 
 from app.engine.errors import excerpt
-from app.errors import OverCapacity, Refused, UnknownScene, WorkerFailed
+from app.errors import NoKey, OverCapacity, Refused, UnknownClass, UnknownScene, WorkerFailed, WrongKey
 
 # what each kind of failure is, in HTTP
 REFUSED = 422  # Refused and TooMuchWork: the request as sent cannot be served
 CLIENT_BUSY = 429  # OverCapacity for this client: its own work is in the way
 SERVER_BUSY = 503  # OverCapacity of the whole server, or no worker to be had
-NOT_FOUND = 404  # UnknownScene
+NOT_FOUND = 404  # UnknownScene, UnknownClass
+NO_KEY = 401  # NoKey
+WRONG_KEY = 403  # WrongKey
 UNAVAILABLE_RETRY_SECONDS = 1
 
-KINDS = (Refused, OverCapacity, WorkerFailed, UnknownScene)
+KINDS = (Refused, OverCapacity, WorkerFailed, UnknownScene, NoKey, WrongKey, UnknownClass)
 
 
 @dataclass(frozen=True)
@@ -63,8 +65,12 @@ def problem(exc: Exception) -> Problem:
         if exc.kind == "unavailable":
             return _busy(str(exc), UNAVAILABLE_RETRY_SECONDS, SERVER_BUSY)
         return Problem(REFUSED, {"detail": str(exc), "kind": exc.kind})
-    if isinstance(exc, UnknownScene):
+    if isinstance(exc, UnknownScene | UnknownClass):
         return Problem(NOT_FOUND, {"detail": str(exc)})
+    if isinstance(exc, NoKey):
+        return Problem(NO_KEY, {"detail": str(exc)}, {"WWW-Authenticate": "Bearer"})
+    if isinstance(exc, WrongKey):
+        return Problem(WRONG_KEY, {"detail": str(exc)})
     raise TypeError(f"not a kind of failure: {type(exc).__name__}") from exc
 
 

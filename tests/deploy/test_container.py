@@ -20,5 +20,5 @@ def test_image_builds_and_serves_offline():
     )
     assert run.returncode == 0, run.stdout[-4000:] + run.stderr[-4000:]
     assert "container test passed" in run.stdout
-    for check in ("/", "no network", "simulate", "work-precision"):
+    for check in ("/", "no network", "simulate", "work-precision", "classes kept on a volume"):
         assert f"ok   {check}" in run.stdout

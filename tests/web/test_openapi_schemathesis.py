@@ -15,9 +15,11 @@ from schemathesis.specs.openapi.checks import positive_data_acceptance
 
 from app.main import app
 from app.service.checking import Checking
+from app.service.classroom.service import Classroom
 from app.service.services import Services
 from app.service.simulation import Gates
 from app.service.user_systems import UserSystems
+from app.settings import Settings
 from app.web import deps
 
 # The schema comes from the app object itself: no request and no start-up (``from_asgi`` runs the app's
@@ -32,11 +34,14 @@ _rejection.expected_statuses = [*_rejection.expected_statuses, "413"]
 
 
 @pytest.fixture(scope="module")
-def generated_requests_services(client):
-    """Services of their own (fair shares, session minting, caches) on the session's worker pool."""
+def generated_requests_services(client, tmp_path_factory):
+    """Services of their own (fair shares, session minting, caches, classes in a temporary database) on the
+    session's worker pool."""
     session = client.app_state["services"]
     users = UserSystems(session.pool)
-    return Services(session.pool, users, Checking(users), Gates(), session.scenes)
+    checking = Checking(users)
+    classes = Classroom(checking, Settings(data_dir=tmp_path_factory.mktemp("classes")))
+    return Services(session.pool, users, checking, Gates(), session.scenes, classes)
 
 
 @pytest.mark.slow

@@ -1,0 +1,168 @@
+"""A class on one server: 150 students join and answer 10 steps each; recorded checks against unrecorded ones.
+
+Starts one web process (scripts/serve.sh, WORKERS=1: the process count of a
+2-core container, its worker pool sized from the CPUs) on a loopback port with
+the classes' SQLite database in a temporary data directory.  An instructor
+creates a class and assigns the double pendulum's ten steps; 150 students join
+(each from an address of its own, 127.0.0.2 …, as on a campus network) and
+answer every step twice, in a random order per step: once through the class's
+POST /api/classes/{code}/check (judged, then recorded and committed before the
+answer) and once through practice mode's POST /api/scenes/{id}/check (judged
+only), under the same load at the same moment.  Every answer text is unique
+(``+ 0*k``), so none comes from the answer cache: each is judged in the worker
+pool, as a class typing its own answers would make it.  About one answer in
+three is the engine's step doubled (for T, the named mistake ``missing_half``).
+A student thinks 2-6 s between steps and honours ``Retry-After`` on a 429/503;
+latency is timed on answered (200) requests.
+
+Reports: the summary's counts against what the students were told (must be
+exact), p50/p95 of each kind and the ratio of the p95s (goal: at most 1.5).
+
+    .venv/bin/python -m benchmarks.bench_classroom [--students 150]
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import os
+import random
+import socket
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from collections import Counter
+from pathlib import Path
+
+import httpx2 as httpx
+
+ROOT = Path(__file__).resolve().parents[1]
+SCENE = "double-pendulum"
+GOAL = 1.5
+
+
+def percentile(values: list[float], q: float) -> float:
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, int(q * len(ordered)))]
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def start_server(data_dir: str) -> tuple[subprocess.Popen, str]:
+    port = free_port()
+    env = {**os.environ, "PORT": str(port), "HOST": "127.0.0.1", "WORKERS": "1", "LAGRANGE_DATA_DIR": data_dir,
+           "LAGRANGE_WARM": "0", "PYTHONPATH": str(ROOT), "PATH": f"{Path(sys.executable).parent}:{os.environ['PATH']}"}
+    process = subprocess.Popen([str(ROOT / "scripts" / "serve.sh")], cwd=ROOT, env=env)
+    url = f"http://127.0.0.1:{port}"
+    deadline = time.monotonic() + 90
+    while time.monotonic() < deadline:
+        try:
+            if httpx.get(f"{url}/healthz", timeout=2).status_code == 200:
+                return process, url
+        except httpx.HTTPError:
+            time.sleep(0.3)
+    process.kill()
+    raise RuntimeError("the server did not start")
+
+
+async def send(client: httpx.AsyncClient, url: str, body: dict, headers: dict, timings: list[float]) -> dict:
+    """POST until answered (honouring Retry-After); the answered request's time goes to ``timings``."""
+    while True:
+        started = time.perf_counter()
+        r = await client.post(url, json=body, headers=headers, timeout=120)
+        elapsed = time.perf_counter() - started
+        if r.status_code == 200:
+            timings.append(elapsed)
+            return r.json()
+        if r.status_code in (429, 503):
+            await asyncio.sleep(float(r.headers.get("Retry-After", "1")))
+            continue
+        raise RuntimeError(f"{url}: {r.status_code} {r.text[:300]}")
+
+
+async def student(n: int, url: str, code: str, exercises: list[dict], out: dict, rng: random.Random) -> None:
+    transport = httpx.AsyncHTTPTransport(local_address=f"127.0.{(n + 2) // 250}.{(n + 2) % 250 + 1}")
+    async with httpx.AsyncClient(transport=transport, base_url=url) as client:
+        await asyncio.sleep(rng.uniform(0, 10))  # arriving over ten seconds
+        while True:
+            r = await client.post(f"/api/classes/{code}/join", json={"name": f"student {n}"})
+            if r.status_code == 200:
+                break
+            await asyncio.sleep(float(r.headers.get("Retry-After", "1")))
+        key = {"Authorization": f"Bearer {r.json()['student_key']}"}
+        for k, e in enumerate(exercises):
+            await asyncio.sleep(rng.uniform(2, 6))
+            base = e["answer"]["sympy"]
+            wrong = rng.random() < 1 / 3
+            texts = [f"{'2*(' + base + ')' if wrong else base} + 0*{n * 100 + k * 2 + i}" for i in range(2)]
+            step = {"step": e["step"], **({"coordinate": e["coordinate"]} if e["coordinate"] else {})}
+            kinds = ["recorded", "unrecorded"]
+            rng.shuffle(kinds)
+            for kind, text in zip(kinds, texts, strict=True):
+                if kind == "recorded":
+                    verdict = await send(client, f"/api/classes/{code}/check", {"scene": SCENE, **step, "answer": text},
+                                         key, out["recorded"])
+                    out["told"][(e["step"], e["coordinate"], verdict["verdict"] in ("correct", "equivalent"))] += 1
+                else:
+                    await send(client, f"/api/scenes/{SCENE}/check", {**step, "answer": text}, {}, out["unrecorded"])
+
+
+async def run(url: str, students: int) -> dict:
+    async with httpx.AsyncClient(base_url=url) as client:
+        exercises = (await client.get(f"/api/scenes/{SCENE}/practice", timeout=120)).json()["exercises"][:10]
+        created = (await client.post("/api/classes", json={"title": "benchmark"})).json()
+        code, teacher = created["code"], {"Authorization": f"Bearer {created['teacher_key']}"}
+        items = [{"scene": SCENE, "steps": [{"step": e["step"], "coordinate": e["coordinate"]} for e in exercises]}]
+        assert (await client.put(f"/api/classes/{code}/assignment", json={"items": items}, headers=teacher)).status_code == 200
+        # warm-up: each step's problem built and the workers started, outside the class
+        for e in exercises:
+            step = {"step": e["step"], **({"coordinate": e["coordinate"]} if e["coordinate"] else {})}
+            await send(client, f"/api/scenes/{SCENE}/check", {**step, "answer": e["answer"]["sympy"]}, {}, [])
+        out: dict = {"recorded": [], "unrecorded": [], "told": Counter()}
+        rng = random.Random(33)
+        started = time.perf_counter()
+        await asyncio.gather(*(student(n, url, code, exercises, out, random.Random(rng.random())) for n in range(students)))
+        out["seconds"] = time.perf_counter() - started
+        out["summary"] = (await client.get(f"/api/classes/{code}/summary", headers=teacher)).json()
+        out["exercises"] = exercises
+        return out
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--students", type=int, default=150)
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory() as data:
+        process, url = start_server(data)
+        try:
+            out = asyncio.run(run(url, args.students))
+        finally:
+            process.terminate()
+            process.wait(30)
+    summary, told = out["summary"], out["told"]
+    exact = summary["students"] == args.students and summary["attempts"] == args.students * len(out["exercises"])
+    for entry in summary["steps"]:
+        key = (entry["step"], entry["coordinate"])
+        exact &= entry["correct"] == told[(*key, True)] and entry["incorrect"] == told[(*key, False)]
+    print(f"{args.students} students × {len(out['exercises'])} steps in {out['seconds']:.0f} s; "
+          f"load average {open('/proc/loadavg').read().split()[0]} (1 min) at the end")
+    print(f"summary: {summary['students']} students, {summary['attempts']} attempts; "
+          f"counts per step {'exact' if exact else 'NOT exact'}; missing_half named "
+          f"{summary['steps'][0]['mistakes'].get('missing_half', 0)} times")
+    for kind in ("recorded", "unrecorded"):
+        t = out[kind]
+        print(f"{kind:>10}: {len(t)} answered, p50 {1000 * statistics.median(t):.0f} ms, p95 {1000 * percentile(t, 0.95):.0f} ms")
+    ratio = percentile(out["recorded"], 0.95) / percentile(out["unrecorded"], 0.95)
+    print(f"p95 recorded / unrecorded = {ratio:.2f} (goal ≤ {GOAL}) {'ok' if ratio <= GOAL else 'MISSED'}")
+    if not exact:
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,178 @@
+/**
+ * join.js — a student's page (templates/join.html): join with the class code and a pseudonym, then
+ * practise the assignment's steps. Each answer goes to POST /api/classes/{code}/check (practice
+ * mode's checker; the verdict is recorded for the instructor) and the verdict, the difference
+ * typeset and the hint come back as in practice mode. The student's own progress is counted from
+ * the server's record. The student key stays in localStorage; a reload goes on where it was.
+ */
+import { api, el, exerciseOf, practiceOf, sleep, stepTex, stored, typeset } from "./classroom.js";
+
+const memory = stored("lagrange-join");
+const scenes = JSON.parse(document.getElementById("class-scenes").textContent);
+const titleOf = Object.fromEntries(scenes.map((s) => [s.id, s.title]));
+const $ = (id) => document.getElementById(id);
+let current = memory.get(); // {code, key, name, title}
+let assignment = null;
+const done = new Set(); // "item|step|coordinate" of the steps this student has done
+
+const stepId = (item, step, coordinate) => `${item}|${step}|${coordinate || ""}`;
+
+function show() {
+  $("join-start").hidden = Boolean(current);
+  $("join-live").hidden = !current;
+  if (!current) return;
+  $("joined-title").textContent = current.title;
+  $("joined-name").textContent = current.name;
+}
+
+function progress() {
+  const steps = (assignment || []).flatMap((item) => item.steps.map((s) => stepId(item.scene || item.name, s.step, s.coordinate)));
+  const count = steps.filter((s) => done.has(s)).length;
+  $("joined-progress").textContent = steps.length ? `${count} of ${steps.length} steps done` : "";
+}
+
+function verdictView(box, r) {
+  box.replaceChildren();
+  if (r.status === 200) {
+    const v = r.data;
+    box.dataset.verdict = v.verdict;
+    box.append(el("p", {}, el("strong", { text: { correct: "Correct", equivalent: "Equivalent", incorrect: "Not yet" }[v.verdict] || v.verdict }), ` ${v.message}`));
+    if (v.difference) box.append(el("p", { className: "verdict-difference" }, typeset(el("span"), v.difference.latex, true)));
+    if (v.hint) box.append(el("p", { className: "verdict-hint", text: v.hint }));
+    return;
+  }
+  box.dataset.verdict = "refused";
+  const detail = r.data?.detail || `The answer could not be checked (${r.status}).`;
+  box.append(el("p", {}, el("strong", { text: r.status === 429 || r.status === 503 ? "Busy" : "Not checked" }), ` ${detail}`));
+}
+
+function stepView(item, practice, s, index) {
+  const exercise = exerciseOf(practice, s.step, s.coordinate);
+  const id = `answer-${index}`;
+  const input = el("input", { id, autocomplete: "off", autocapitalize: "off", spellcheck: "false", inputmode: "text" });
+  const button = el("button", { type: "submit", text: "Check" });
+  const box = el("div", { className: "practice-verdict", role: "status", "aria-live": "polite" });
+  const lhs = s.step === "equation" ? "0 =" : `${stepTex(practice, s.step, s.coordinate)} =`;
+  const form = el("form", { className: "practice-step", "data-step": s.step },
+    el("h3", { text: exercise ? exercise.title : s.step }),
+    el("label", { for: id }, typeset(el("span", { className: "practice-lhs" }), s.step === "equation" ? "0 \\;=" : lhs)),
+    el("div", { className: "practice-row" }, input, button),
+    exercise ? el("p", { className: "practice-names help", text: `Names: ${exercise.names.join(", ")}` }) : null,
+    box);
+  const key = stepId(item.scene || item.name, s.step, s.coordinate);
+  if (done.has(key)) form.classList.add("step-done");
+  form.addEventListener("submit", async (event) => {
+    event.preventDefault();
+    const answer = input.value.trim();
+    if (!answer) return;
+    button.disabled = true;
+    const body = { ...(item.scene ? { scene: item.scene } : { system: item.name }), step: s.step, answer,
+      ...(s.coordinate ? { coordinate: s.coordinate } : {}) };
+    try {
+      let r;
+      for (let attempt = 0; attempt < 3; attempt++) {
+        r = await api("POST", `/api/classes/${current.code}/check`, { key: current.key, body });
+        if (r.status !== 429 || r.retryAfter > 5) break;
+        await sleep(1000 * Math.max(1, r.retryAfter)); // one check at a time: a previous one is still running
+      }
+      verdictView(box, r);
+      if (r.status === 200 && (r.data.verdict === "correct" || r.data.verdict === "equivalent")) {
+        done.add(key);
+        form.classList.add("step-done");
+        progress();
+      }
+      if (r.status === 403) leave("This class no longer exists, or your key no longer opens it.");
+    } catch {
+      verdictView(box, { status: 0, data: { detail: "The server cannot be reached; try again." } });
+    } finally {
+      button.disabled = false;
+    }
+  });
+  return form;
+}
+
+async function drawItems() {
+  const holder = $("join-items");
+  const parts = [];
+  let index = 0;
+  for (const item of assignment) {
+    const section = el("section", { className: "class-panel join-item" });
+    const heading = item.scene ? titleOf[item.scene] || item.scene : item.name;
+    section.append(el("h2", { text: heading }));
+    if (item.scene) section.append(el("p", {}, el("a", { href: `/scenes/${item.scene}`, text: "The scene's page" }), " (its set-up and figure)."));
+    const values = Object.entries(item.parameters || {});
+    if (values.length) section.append(el("p", { className: "help", text: `Take ${values.map(([k, v]) => `${k} = ${v}`).join(", ")}.` }));
+    try {
+      const practice = await practiceOf(item);
+      const steps = item.steps.length ? item.steps : practice.exercises.map((e) => ({ step: e.step, coordinate: e.coordinate }));
+      item.steps = steps;
+      for (const s of steps) section.append(stepView(item, practice, s, index++));
+    } catch (error) {
+      section.append(el("p", { className: "class-status", text: error.message }));
+    }
+    parts.push(section);
+  }
+  holder.replaceChildren(...parts);
+  progress();
+}
+
+async function load() {
+  let r;
+  try {
+    r = await api("GET", `/api/classes/${current.code}/me`, { key: current.key });
+  } catch {
+    $("joined-progress").textContent = "The server cannot be reached; retrying…";
+    setTimeout(load, 5000);
+    return;
+  }
+  if (r.status === 403 || r.status === 401) {
+    leave("This class no longer exists, or your key no longer opens it.");
+    return;
+  }
+  if (r.status !== 200) {
+    setTimeout(load, 5000);
+    return;
+  }
+  for (const s of r.data.progress?.steps || []) if (s.done) done.add(stepId(s.item, s.step, s.coordinate));
+  const changed = JSON.stringify(r.data.assignment) !== JSON.stringify(assignment);
+  assignment = r.data.assignment;
+  $("join-waiting").hidden = assignment.length > 0;
+  if (changed) await drawItems();
+  if (!assignment.length) setTimeout(load, 5000); // until the instructor sets one
+}
+
+function leave(message) {
+  current = null;
+  memory.set(null);
+  show();
+  $("join-status").textContent = message || "";
+}
+
+$("join-form").addEventListener("submit", async (event) => {
+  event.preventDefault();
+  const code = $("join-code").value.trim();
+  const name = $("join-name").value.trim();
+  let r;
+  try {
+    r = await api("POST", `/api/classes/${encodeURIComponent(code)}/join`, { body: { name } });
+  } catch {
+    $("join-status").textContent = "The server cannot be reached.";
+    return;
+  }
+  if (r.status !== 200) {
+    $("join-status").textContent = r.data?.detail || `Not joined (${r.status}).`;
+    return;
+  }
+  current = { code: r.data.code, key: r.data.student_key, name: r.data.name, title: r.data.title };
+  memory.set(current);
+  show();
+  await load();
+});
+
+$("leave-class").addEventListener("click", () => leave("You left the class on this device."));
+
+const asked = new URLSearchParams(window.location.search).get("code");
+if (asked) $("join-code").value = asked;
+if (asked && current && current.code !== asked.trim().toUpperCase()) leave(""); // a link to another class
+show();
+if (current) load();

@@ -1,0 +1,234 @@
+/**
+ * teach.js — the instructor's page (templates/teach.html): create or open a class, project its code,
+ * set the assignment, and watch the class live: the summary and the students are polled every
+ * two seconds; bars per step (right and wrong answers, students done), the most common named
+ * mistakes with the step typeset, one row per student. The instructor key stays in localStorage.
+ */
+import { api, el, mistakeWords, practiceOf, stepTex, stored, typeset } from "./classroom.js";
+
+const POLL_MS = 2000;
+const memory = stored("lagrange-teach");
+const scenes = JSON.parse(document.getElementById("class-scenes").textContent);
+const titleOf = Object.fromEntries(scenes.map((s) => [s.id, s.title]));
+const $ = (id) => document.getElementById(id);
+let current = memory.get(); // {code, key, title}
+let timer = null;
+let assignment = [];
+
+function show() {
+  $("class-start").hidden = Boolean(current);
+  $("class-live").hidden = !current;
+  if (!current) return;
+  $("class-title").textContent = current.title;
+  $("class-code").textContent = current.code;
+  $("class-join-url").textContent = `${window.location.host}/join`;
+  $("class-key-text").textContent = current.key;
+}
+
+async function open(code, key) {
+  let r;
+  try {
+    r = await api("GET", `/api/classes/${encodeURIComponent(code)}/me`, { key });
+  } catch {
+    $("start-status").textContent = "The server cannot be reached.";
+    return "unreachable";
+  }
+  if (r.status !== 200 || r.data.role !== "instructor") {
+    $("start-status").textContent = r.status === 200 ? "That is a student's key, not the instructor's." : (r.data?.detail || `Not opened (${r.status}).`);
+    return r.status === 403 || r.status === 200 ? "refused" : "error";
+  }
+  current = { code: r.data.code, key, title: r.data.title };
+  memory.set(current);
+  assignment = r.data.assignment;
+  show();
+  buildEditor();
+  poll();
+  return "open";
+}
+
+$("create-form").addEventListener("submit", async (event) => {
+  event.preventDefault();
+  const title = $("create-title").value.trim();
+  const r = await api("POST", "/api/classes", { body: { title } });
+  if (r.status !== 201) {
+    $("start-status").textContent = r.data?.detail || `The class was not created (${r.status}).`;
+    return;
+  }
+  await open(r.data.code, r.data.teacher_key);
+});
+
+$("open-form").addEventListener("submit", async (event) => {
+  event.preventDefault();
+  await open($("open-code").value, $("open-key").value.trim());
+});
+
+// ---- the live dashboard --------------------------------------------------------------------------
+
+async function labelOf(entry) {
+  const item = entry.scene ? { scene: entry.scene } : assignment.find((i) => i.name === entry.system) || { name: entry.system };
+  let practice = null;
+  try {
+    if (item.scene || item.system) practice = await practiceOf(item);
+  } catch {
+    /* the label falls back to the step's name */
+  }
+  return { tex: stepTex(practice, entry.step, entry.coordinate), where: entry.scene ? titleOf[entry.scene] || entry.scene : entry.system };
+}
+
+async function drawSteps(summary) {
+  const list = $("dash-steps");
+  const rows = [];
+  for (const entry of summary.steps) {
+    const label = await labelOf(entry);
+    const total = entry.correct + entry.incorrect;
+    const bar = el("div", { className: "dash-bar", role: "img",
+      "aria-label": `${entry.correct} right, ${entry.incorrect} wrong` });
+    const good = el("span", { className: "dash-good" });
+    const bad = el("span", { className: "dash-bad" });
+    good.style.width = total ? `${(100 * entry.correct) / total}%` : "0";
+    bad.style.width = total ? `${(100 * entry.incorrect) / total}%` : "0";
+    bar.append(good, bad);
+    const mistakes = Object.entries(entry.mistakes);
+    rows.push(el("li", { className: "dash-step" },
+      el("div", { className: "dash-label" }, typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` })),
+      bar,
+      el("p", { className: "dash-numbers",
+        text: `${entry.students_done} of ${summary.students} done · ${entry.correct} right · ${entry.incorrect} wrong`
+          + (mistakes.length ? ` · most often: ${mistakeWords(mistakes[0][0]).toLowerCase()}` : "") })));
+  }
+  list.replaceChildren(...rows);
+  if (!rows.length) list.replaceChildren(el("li", { className: "help", text: "No steps yet: set an assignment, or wait for the first answer." }));
+}
+
+async function drawMistakes(summary) {
+  const all = [];
+  for (const entry of summary.steps) {
+    for (const [name, count] of Object.entries(entry.mistakes)) all.push({ entry, name, count });
+  }
+  all.sort((a, b) => b.count - a.count);
+  const rows = [];
+  for (const { entry, name, count } of all.slice(0, 8)) {
+    const label = await labelOf(entry);
+    rows.push(el("li", { className: "dash-mistake", "data-mistake": name },
+      el("span", { className: "dash-count", text: `${count}×` }),
+      el("strong", { text: mistakeWords(name) }),
+      el("span", { text: " in " }), typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` (${label.where})` })));
+  }
+  $("dash-mistakes").replaceChildren(...rows);
+  if (!rows.length) $("dash-mistakes").replaceChildren(el("li", { className: "help", text: "No named mistake so far." }));
+}
+
+function drawStudents(students) {
+  const body = $("dash-students").tBodies[0];
+  body.replaceChildren(...students.map((s) => {
+    const last = [...s.steps].sort((a, b) => (a.last < b.last ? 1 : -1))[0];
+    return el("tr", {},
+      el("th", { scope: "row", text: s.name }),
+      el("td", { text: s.assigned ? `${s.done} of ${s.assigned}` : String(s.done) }),
+      el("td", { text: String(s.attempts) }),
+      el("td", { text: last ? `${last.step}${last.coordinate ? ` (${last.coordinate})` : ""} ${last.done ? "✓" : "…"}` : "—" }));
+  }));
+}
+
+async function poll() {
+  clearTimeout(timer);
+  if (!current) return;
+  try {
+    const [summary, students] = await Promise.all([
+      api("GET", `/api/classes/${current.code}/summary`, { key: current.key }),
+      api("GET", `/api/classes/${current.code}/students`, { key: current.key }),
+    ]);
+    if (summary.status === 403) {
+      $("dash-counts").textContent = "This class no longer exists (deleted, or past its retention).";
+      return;
+    }
+    if (summary.status === 200 && students.status === 200) {
+      const s = summary.data;
+      $("dash-counts").textContent = `${s.students} student${s.students === 1 ? "" : "s"} · ${s.attempts} answer${s.attempts === 1 ? "" : "s"} · updated ${new Date().toLocaleTimeString()}`;
+      await drawSteps(s);
+      await drawMistakes(s);
+      drawStudents(students.data.students);
+    }
+  } catch {
+    $("dash-counts").textContent = "The server cannot be reached; retrying…";
+  }
+  timer = setTimeout(poll, POLL_MS);
+}
+
+// ---- the assignment editor -----------------------------------------------------------------------
+
+function buildEditor() {
+  const list = $("assign-scenes");
+  list.replaceChildren(...scenes.map((scene) => {
+    const chosen = assignment.find((i) => i.scene === scene.id);
+    const box = el("input", { type: "checkbox", id: `assign-${scene.id}`, "data-scene": scene.id });
+    box.checked = Boolean(chosen);
+    const steps = el("ul", { className: "assign-steps" });
+    const item = el("li", { className: "assign-scene" }, box, el("label", { for: `assign-${scene.id}`, text: scene.title }), steps);
+    const fill = async () => {
+      if (!box.checked) {
+        steps.replaceChildren();
+        return;
+      }
+      const practice = await practiceOf({ scene: scene.id });
+      steps.replaceChildren(...practice.exercises.map((e, k) => {
+        const id = `assign-${scene.id}-${k}`;
+        const tick = el("input", { type: "checkbox", id, "data-step": e.step, "data-coordinate": e.coordinate || "" });
+        tick.checked = Boolean(chosen?.steps.some((s) => s.step === e.step && (s.coordinate || "") === (e.coordinate || "")));
+        return el("li", {}, tick, typeset(el("label", { for: id }), stepTex(practice, e.step, e.coordinate)));
+      }));
+    };
+    box.addEventListener("change", fill);
+    fill();
+    return item;
+  }));
+}
+
+$("assign-save").addEventListener("click", async () => {
+  const items = [];
+  for (const box of document.querySelectorAll("#assign-scenes > li > input[data-scene]")) {
+    if (!box.checked) continue;
+    const steps = [...box.parentElement.querySelectorAll(".assign-steps input:checked")].map((t) => ({
+      step: t.dataset.step, ...(t.dataset.coordinate ? { coordinate: t.dataset.coordinate } : {}) }));
+    items.push({ scene: box.dataset.scene, steps });
+  }
+  const r = await api("PUT", `/api/classes/${current.code}/assignment`, { key: current.key, body: { items } });
+  $("assign-status").textContent = r.status === 200 ? `Saved: ${items.length} scene${items.length === 1 ? "" : "s"}.` : r.data?.detail || `Not saved (${r.status}).`;
+  if (r.status === 200) {
+    assignment = r.data.assignment;
+    poll();
+  }
+});
+
+// ---- the record ----------------------------------------------------------------------------------
+
+$("export-csv").addEventListener("click", async () => {
+  const res = await fetch(`/api/classes/${current.code}/export?format=csv`, { headers: { Authorization: `Bearer ${current.key}` } });
+  if (!res.ok) {
+    $("data-status").textContent = `The export failed (${res.status}).`;
+    return;
+  }
+  const link = el("a", { href: URL.createObjectURL(await res.blob()), download: `class-${current.code}.csv` });
+  document.body.append(link);
+  link.click();
+  link.remove();
+});
+
+function forget() {
+  clearTimeout(timer);
+  current = null;
+  memory.set(null);
+  show();
+}
+
+$("forget-class").addEventListener("click", forget);
+$("delete-class").addEventListener("click", async () => {
+  if (!window.confirm(`Delete the class ${current.code} and every answer recorded for it? This cannot be undone.`)) return;
+  const r = await api("DELETE", `/api/classes/${current.code}`, { key: current.key });
+  if (r.status === 204) forget();
+  else $("data-status").textContent = r.data?.detail || `Not deleted (${r.status}).`;
+});
+
+show();
+// a class this browser kept: reopened, and forgotten only when the server says the key no longer opens it
+if (current) open(current.code, current.key).then((how) => how === "refused" && forget());

@@ -1,0 +1,98 @@
+"""The classes' database: untouched until used, migrated from empty and from the previous schema, WAL mode,
+commits on disk, retention."""
+
+from __future__ import annotations
+
+import sqlite3
+from datetime import timedelta
+
+import pytest
+from sqlalchemy import inspect, select, text
+
+from app.service.classroom import store
+from app.service.classroom.database import Database, database_url, make_engine, migrate, now
+from app.service.classroom.models import AttemptRow, ClassRow
+from app.settings import Settings
+from tests.postgres import postgres_server  # noqa: F401 - the session fixture
+
+TABLES = {"classes", "students", "assignments", "attempts", "alembic_version"}
+
+
+@pytest.fixture(params=["sqlite", "postgresql"])
+def url(request, tmp_path):
+    if request.param == "sqlite":
+        return database_url(Settings(data_dir=tmp_path))
+    return request.getfixturevalue("postgres_server")()
+
+
+def test_nothing_is_touched_before_first_use(tmp_path):
+    db = Database(Settings(data_dir=tmp_path / "data"))
+    assert not db.started
+    assert not (tmp_path / "data").exists()
+    code, _ = store.create_class(db, "first use")
+    assert db.started and (tmp_path / "data" / "classes.sqlite3").is_file()
+    assert len(code) == 6
+    db.stop()
+
+
+def test_migrates_an_empty_database_to_the_models(url):
+    engine = make_engine(url)
+    try:
+        migrate(engine)
+        found = inspect(engine)
+        assert TABLES <= set(found.get_table_names())
+        assert "mistake" in {c["name"] for c in found.get_columns("attempts")}
+        with engine.connect() as c:
+            assert c.execute(text("SELECT version_num FROM alembic_version")).scalar() == "0002"
+        migrate(engine)  # again: nothing to do
+    finally:
+        engine.dispose()
+
+
+def test_migrates_the_previous_schema_keeping_its_rows(url):
+    engine = make_engine(url)
+    try:
+        migrate(engine, "0001")
+        assert "assignments" not in inspect(engine).get_table_names()
+        with engine.begin() as c:
+            c.execute(text("INSERT INTO classes (id, code, title, teacher_hash, created_at) "
+                           "VALUES (1, 'ACEFHK', 'old', :h, :t)"), {"h": "0" * 64, "t": now()})
+            c.execute(text("INSERT INTO students (id, class_id, name, key_hash, joined_at) "
+                           "VALUES (1, 1, 'Ada', :h, :t)"), {"h": "1" * 64, "t": now()})
+            c.execute(text("INSERT INTO attempts (class_id, student_id, item, step, coordinate, verdict, answer, at) "
+                           "VALUES (1, 1, 'simple-pendulum', 'kinetic', NULL, 'incorrect', 'm*x', :t)"), {"t": now()})
+        migrate(engine)
+        with engine.connect() as c:
+            row = c.execute(text("SELECT item, verdict, mistake, answer FROM attempts")).one()
+            assert tuple(row) == ("simple-pendulum", "incorrect", None, "m*x")
+            assert c.execute(text("SELECT count(*) FROM assignments")).scalar() == 0
+    finally:
+        engine.dispose()
+
+
+def test_sqlite_runs_in_wal_mode_and_commits_reach_the_file(tmp_path):
+    db = Database(Settings(data_dir=tmp_path))
+    code, key = store.create_class(db, "wal")
+    with db.session() as session:
+        assert session.execute(text("PRAGMA journal_mode")).scalar() == "wal"
+        assert session.execute(text("PRAGMA synchronous")).scalar() == 2  # FULL
+    # another connection (as another process would open) sees the committed row at once
+    with sqlite3.connect(tmp_path / "classes.sqlite3") as other:
+        assert other.execute("SELECT code FROM classes").fetchall() == [(code,)]
+    db.stop()
+
+
+def test_classes_older_than_the_retention_are_deleted(url, tmp_path):
+    db = Database(Settings(data_dir=tmp_path, database_url=url, class_days=30))
+    old, _ = store.create_class(db, "last year")
+    new, _ = store.create_class(db, "this week")
+    _, who = store.join(db, old, "Ada")
+    store.record(db, who, "simple-pendulum", "kinetic", None, "correct", None, "T")
+    with db.session() as session:
+        session.execute(ClassRow.__table__.update().where(ClassRow.code == old).values(created_at=now() - timedelta(days=31)))
+    db._purged_at = None  # the hourly look is due
+    assert db.purge_expired() == 1
+    with db.session() as session:
+        assert session.scalars(select(ClassRow.code)).all() == [new]
+        assert session.scalars(select(AttemptRow.id)).all() == []
+    db.stop()

@@ -1,0 +1,207 @@
+"""The classes' API on SQLite and on a real PostgreSQL: create, assign, join, check (recorded), summary,
+students, export, delete; the 401/403 matrix; rate limits; refusals."""
+
+from __future__ import annotations
+
+import csv
+import io
+
+import pytest
+from sqlalchemy import text
+
+from app.main import app
+from app.web.api_classes import classroom as classroom_dep
+from tests.classes import BACKENDS, classroom
+from tests.postgres import postgres_server  # noqa: F401 - the session fixture
+
+SCENE = "simple-pendulum"
+WRONG_T = "m*R**2*theta_dot**2"  # twice T: the named mistake missing_half
+RIGHT_T = "m*R**2*theta_dot**2/2"
+
+
+@pytest.fixture(params=BACKENDS)
+def classes(request, services, tmp_path):
+    postgres = request.getfixturevalue("postgres_server") if request.param == "postgresql" else None
+    room = classroom(services.checking, request.param, tmp_path, postgres)
+    app.dependency_overrides[classroom_dep] = lambda: room
+    yield room
+    app.dependency_overrides.pop(classroom_dep, None)
+    room.stop()
+
+
+def bearer(key: str) -> dict[str, str]:
+    return {"Authorization": f"Bearer {key}"}
+
+
+def new_class(client, title="Mechanics") -> tuple[str, str]:
+    r = client.post("/api/classes", json={"title": title})
+    assert r.status_code == 201, r.text
+    return r.json()["code"], r.json()["teacher_key"]
+
+
+def join(client, code: str, name: str) -> str:
+    r = client.post(f"/api/classes/{code}/join", json={"name": name})
+    assert r.status_code == 200, r.text
+    return r.json()["student_key"]
+
+
+def check(client, code, key, answer, step="kinetic", scene=SCENE, **extra):
+    return client.post(
+        f"/api/classes/{code}/check", json={"scene": scene, "step": step, "answer": answer, **extra}, headers=bearer(key)
+    )
+
+
+def test_a_class_from_creation_to_deletion(client, classes):
+    code, teacher = new_class(client)
+    assert len(code) == 6 and len(teacher) >= 40
+    items = {"items": [{"scene": SCENE, "steps": [{"step": "kinetic"}, {"step": "potential"}], "parameters": {"g": 9.81}}]}
+    r = client.put(f"/api/classes/{code}/assignment", json=items, headers=bearer(teacher))
+    assert r.status_code == 200, r.text
+    joined = client.post(f"/api/classes/{code.lower()}/join", json={"name": "Ada"}).json()  # a lower-case code works
+    assert joined["assignment"][0]["scene"] == SCENE and joined["assignment"][0]["parameters"] == {"g": 9.81}
+    ada, bo = joined["student_key"], join(client, code, "Bo")
+
+    wrong = check(client, code, ada, WRONG_T)
+    practice = client.post(f"/api/scenes/{SCENE}/check", json={"step": "kinetic", "answer": WRONG_T})
+    assert wrong.status_code == 200 and wrong.json() == practice.json()  # practice mode's verdict
+    assert check(client, code, ada, RIGHT_T).json()["verdict"] == "correct"
+    assert check(client, code, bo, WRONG_T).json()["verdict"] == "incorrect"
+
+    summary = client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).json()
+    assert summary["students"] == 2 and summary["attempts"] == 3
+    kinetic, potential = summary["steps"]
+    assert kinetic == {"scene": SCENE, "step": "kinetic", "coordinate": None, "correct": 1, "incorrect": 2,
+                       "students_done": 1, "mistakes": {"missing_half": 2}}
+    assert potential["correct"] == potential["incorrect"] == 0
+
+    rows = client.get(f"/api/classes/{code}/students", headers=bearer(teacher)).json()["students"]
+    assert [(s["name"], s["attempts"], s["done"], s["assigned"]) for s in rows] == [("Ada", 2, 1, 2), ("Bo", 1, 0, 2)]
+    mine = client.get(f"/api/classes/{code}/me", headers=bearer(bo)).json()
+    assert mine["role"] == "student" and mine["progress"]["attempts"] == 1
+
+    export = client.get(f"/api/classes/{code}/export?format=csv", headers=bearer(teacher))
+    assert export.headers["content-type"].startswith("text/csv") and export.headers["cache-control"] == "no-store"
+    table = list(csv.DictReader(io.StringIO(export.text)))
+    assert [(r["student"], r["verdict"], r["mistake"], r["answer"]) for r in table] == [
+        ("Ada", "incorrect", "missing_half", WRONG_T), ("Ada", "correct", "", RIGHT_T), ("Bo", "incorrect", "missing_half", WRONG_T)]
+
+    assert client.delete(f"/api/classes/{code}", headers=bearer(teacher)).status_code == 204
+    assert client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).status_code == 403
+    assert client.post(f"/api/classes/{code}/join", json={"name": "Cy"}).status_code == 404
+    with classes.db.session() as session:
+        for table_name in ("classes", "students", "assignments", "attempts"):
+            assert session.execute(text(f"SELECT count(*) FROM {table_name}")).scalar() == 0
+
+
+TEACHER_ROUTES = [
+    ("GET", "/summary", None), ("GET", "/students", None), ("GET", "/export?format=csv", None), ("GET", "/me", None),
+    ("PUT", "/assignment", {"items": []}), ("DELETE", "", None),
+]
+
+
+def test_who_may_do_what(client, classes):
+    code, teacher = new_class(client)
+    other_code, other_teacher = new_class(client, "another class")
+    student, other_student = join(client, code, "Ada"), join(client, other_code, "Bo")
+    refused = {"no key": (None, 401), "student's key": (student, 403), "other class's key": (other_teacher, 403),
+               "other class's student": (other_student, 403), "made-up key": ("x" * 43, 403)}
+    for method, path, body in TEACHER_ROUTES:
+        for why, (key, status) in refused.items():
+            if path == "/me" and key == student:
+                continue  # a student reads their own view of the class
+            r = client.request(method, f"/api/classes/{code}{path}", json=body, headers=bearer(key) if key else {})
+            assert r.status_code == status, (method, path, why, r.text)
+            if status == 401:
+                assert r.headers["www-authenticate"] == "Bearer"
+    for why, key, status in [("no key", None, 401), ("instructor's key", teacher, 403),
+                             ("other class's student", other_student, 403), ("made-up", "y" * 43, 403)]:
+        r = client.post(f"/api/classes/{code}/check", json={"scene": SCENE, "step": "kinetic", "answer": RIGHT_T},
+                        headers=bearer(key) if key else {})
+        assert r.status_code == status, (why, r.text)
+    # an unknown code and a wrong key: the same answer
+    unknown = client.get("/api/classes/ACEFHK/summary", headers=bearer(teacher))
+    wrong = client.get(f"/api/classes/{code}/summary", headers=bearer("z" * 43))
+    assert unknown.status_code == wrong.status_code == 403 and unknown.json() == wrong.json()
+    assert client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).status_code == 200
+
+
+def test_the_database_keeps_no_key(client, classes):
+    code, teacher = new_class(client)
+    student = join(client, code, "Ada")
+    with classes.db.session() as session:
+        dumped = repr(session.execute(text("SELECT * FROM classes")).all()) + repr(
+            session.execute(text("SELECT * FROM students")).all())
+    assert code in dumped and teacher not in dumped and student not in dumped
+
+
+def test_refusals_say_what_is_wrong(client, classes):
+    code, teacher = new_class(client)
+    r = client.put(f"/api/classes/{code}/assignment", json={"items": [{"scene": "no-such-scene"}]},
+                   headers=bearer(teacher))
+    assert r.status_code == 422 and r.json()["loc"] == ["body", "items", "0", "scene"] and "known scenes" in r.text
+    r = client.put(f"/api/classes/{code}/assignment",
+                   json={"items": [{"scene": SCENE, "steps": [{"step": "equation", "coordinate": "phi"}]}]},
+                   headers=bearer(teacher))
+    assert r.status_code == 422 and "its steps are" in r.json()["detail"]
+    system = {"coordinates": ["x"], "parameters": ["m", "k"], "kinetic": "m*x_dot**2/2", "potential": "k*x**2/2"}
+    r = client.put(f"/api/classes/{code}/assignment", headers=bearer(teacher), json={"items": [
+        {"scene": SCENE, "steps": [{"step": "kinetic"}]},
+        {"system": system, "name": "spring", "steps": [{"step": "acceleration", "coordinate": "x"}]}]})
+    assert r.status_code == 200, r.text
+    ada = join(client, code, "Ada")
+    assert client.post(f"/api/classes/{code}/join", json={"name": "Ada"}).status_code == 422  # the name is taken
+    assert client.post("/api/classes/ACEFHK/join", json={"name": "Bo"}).status_code == 404
+    assert client.post("/api/classes/not-a-code/join", json={"name": "Bo"}).status_code == 404
+    assert check(client, code, ada, "m*g", scene="double-pendulum").status_code == 422  # not assigned
+    assert check(client, code, ada, "m*g", step="potential").status_code == 422  # step not assigned
+    r = client.post(f"/api/classes/{code}/check", headers=bearer(ada),
+                    json={"system": "spring", "step": "acceleration", "coordinate": "x", "answer": "-k*x/m"})
+    assert r.status_code == 200 and r.json()["verdict"] == "correct", r.text
+    summary = client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).json()
+    assert summary["steps"][1] | {"mistakes": None} == {"system": "spring", "step": "acceleration", "coordinate": "x",
+                                                        "correct": 1, "incorrect": 0, "students_done": 1,
+                                                        "mistakes": None}
+
+
+@pytest.mark.parametrize("backend", ["sqlite"])
+def test_joins_and_checks_are_rate_limited(client, services, tmp_path, backend):
+    room = classroom(services.checking, backend, tmp_path, None, client_joins_per_minute=2, student_checks_per_minute=1,
+                     class_joins_per_minute=4)
+    app.dependency_overrides[classroom_dep] = lambda: room
+    try:
+        code, teacher = new_class(client)
+        client.cookies.clear()
+        ada = join(client, code, "Ada")  # without a cookie: counted on the address; a session cookie comes back
+        join(client, code, "Bo")  # the session's first
+        join(client, code, "Cy")  # and second
+        r = client.post(f"/api/classes/{code}/join", json={"name": "Di"})  # the session's third this minute
+        assert r.status_code == 429 and int(r.headers["retry-after"]) >= 1 and "a minute" in r.json()["detail"]
+        client.cookies.clear()  # another client: the class's fourth join
+        join(client, code, "Di")
+        assert client.post(f"/api/classes/{code}/join", json={"name": "Ed"}).status_code == 429  # the class's fifth
+        assert check(client, code, ada, RIGHT_T).status_code == 200
+        assert check(client, code, ada, WRONG_T).status_code == 429
+        assert client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).json()["attempts"] == 1
+    finally:
+        app.dependency_overrides.pop(classroom_dep, None)
+        room.stop()
+        client.cookies.clear()
+
+
+def test_a_key_is_compared_as_a_digest_in_constant_time(monkeypatch, tmp_path, services):
+    import hmac
+
+    from app.service.classroom import store
+
+    room = classroom(services.checking, "sqlite", tmp_path, None)
+    code, teacher = store.create_class(room.db, "timing")
+    compared = []
+    real = hmac.compare_digest
+    monkeypatch.setattr(store.hmac, "compare_digest", lambda a, b: compared.append((len(a), len(b))) or real(a, b))
+    for c, k in [(code, teacher), ("ACEFHK", teacher), (code, "wrong")]:
+        try:
+            store.access(room.db, c, k)
+        except Exception:  # noqa: BLE001
+            pass
+    assert compared == [(64, 64)] * 3  # one comparison of two digests, whether the code exists or not
+    room.stop()
