@@ -24,8 +24,9 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import sympy as sp
+from sympy.simplify.fu import fu
 
-from app.engine.budget import BudgetExceeded, pythagoras, time_limit
+from app.engine.budget import BudgetExceeded, pythagoras, time_limit, within_budget
 from app.engine.kinks import away_from_kinks
 
 CONSTANT_DRAWS, POSITION_DRAWS, RATE_DRAWS = 2, 2, 3
@@ -174,3 +175,28 @@ def without_constant(expr: sp.Expr, dynamic: frozenset[sp.Symbol]) -> tuple[sp.E
         else:
             constant += term
     return varying, constant
+
+
+def mistake_only(expr: sp.Expr, seconds: float) -> sp.Expr:
+    """expr with whatever cancels identically gone, and its trigonometry recombined where that is shorter.
+
+    Expanding every sine and cosine of a sum into products of single angles makes a
+    difference's cancellation exact (θ̈₁ [cos(θ₁ − θ₂) − sin θ₁ sin θ₂ − cos θ₁ cos θ₂]
+    is 0), and sin² + cos² = 1 is collected; products are then recombined
+    (trigsimp, then Fu's rules) within the budget, keeping the shortest form.
+    """
+
+    def canonical() -> sp.Expr:
+        return pythagoras(sp.expand(sp.expand_trig(expr)))
+
+    flat = within_budget(canonical, expr, seconds / 2)
+
+    def recombined() -> sp.Expr:
+        best = flat
+        for simplify in (sp.trigsimp, fu):
+            tried = sp.factor_terms(simplify(best))
+            if sp.count_ops(tried) < sp.count_ops(best):
+                best = tried
+        return best
+
+    return within_budget(recombined, flat, seconds / 2) if flat.free_symbols else flat
