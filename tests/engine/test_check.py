@@ -233,3 +233,59 @@ def test_the_half_lost_in_differentiating_the_square_is_not_a_force_counted_twic
         problem(derivation("simple-pendulum"), "equation", "theta"), "m*R**2*theta_ddot/2 + m*g*R*sin(theta)"
     )
     assert "counted twice" not in result["hint"] and "differentiating the square" in result["hint"]
+
+
+def student_text(expr: sp.Expr, step: str) -> str:
+    """A mistaken expression as a student would type it: collected, in the API's syntax, at their own scale
+    (an equation with the opposite sign, U with its zero moved)."""
+    shown = sp.factor_terms(sp.collect(sp.expand(expr), sorted(expr.free_symbols, key=lambda s: s.name)))
+    if step == "equation":
+        shown = -shown
+    text = sp.sstr(shown)
+    return f"{text} + 3" if step == "potential" else text
+
+
+FAMILY_STEPS = [
+    (name, step, coordinate)
+    for name in (*SCENES, *USER_SYSTEMS)
+    for step, coordinate in exercises(derivation(name))
+    if step in ("kinetic", "potential", "equation")
+]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    ("system", "step", "coordinate"), FAMILY_STEPS, ids=["-".join(filter(None, c)) for c in FAMILY_STEPS]
+)
+def test_every_generated_mistake_typed_back_is_named(system, step, coordinate):
+    pb = problem(derivation(system), step, coordinate)
+    generated = [(m, hint) for m, hint, _ in pb.mistakes if "." in m.key]
+    assert generated or step == "potential"
+    for mistake, hint in generated:
+        result = judge(pb, student_text(mistake.expr, step))
+        assert result["verdict"] == "incorrect", (mistake.key, result)
+        assert result["mistake"] and result["mistake"]["key"] == mistake.key, (mistake.key, result)
+        assert result["hint"] == hint and result["partial"]["message"]
+
+
+def test_the_double_pendulums_missing_velocity_squared_term_is_the_whole_difference():
+    d = derivation("double-pendulum")
+    # the θ̇₂² term of the θ₁ equation left out, the rest typed as a textbook has it (cos(θ₁ − θ₂))
+    result = judge(
+        problem(d, "equation", "theta1"),
+        "(m1 + m2)*l1**2*theta1_ddot + m2*l1*l2*cos(theta1 - theta2)*theta2_ddot + (m1 + m2)*g*l1*sin(theta1)",
+    )
+    names = {**d.table.namespace(), **{s.name: s for s in d.table.qdd}}
+    shown = parse_expression(result["difference"]["sympy"], names)
+    missing = parse_expression("m2*l1*l2*sin(theta1 - theta2)*theta2_dot**2", names)
+    # the whole difference is that term (up to scale), nothing about the accelerations
+    assert not shown.has(*d.table.qdd) and "ddot" not in result["difference"]["latex"]
+    assert sp.simplify(shown / missing).is_number
+    assert len(sp.Add.make_args(shown)) == 1
+    # and the θ̇₁² term of the θ₂ equation
+    result = judge(
+        problem(d, "equation", "theta2"),
+        "m2*l2**2*theta2_ddot + m2*l1*l2*cos(theta1 - theta2)*theta1_ddot + m2*g*l2*sin(theta2)",
+    )
+    shown = parse_expression(result["difference"]["sympy"], names)
+    assert sp.simplify(shown / parse_expression("l1*l2*m2*sin(theta1 - theta2)*theta1_dot**2", names)).is_number
