@@ -26,10 +26,9 @@ from __future__ import annotations
 
 import asyncio
 import threading
+from collections import OrderedDict
 from collections.abc import Callable, Mapping
 from typing import Any
-
-from collections import OrderedDict
 
 from app.engine.check import STEPS, CheckError, Problem, check_answer, judge, judge_follow_up, name_kinds, problem
 from app.engine.derive import Derivation
