@@ -386,7 +386,7 @@ def judge(pb: Problem, text: str) -> dict[str, Any]:
             message,
             shown,
             hint,
-            mistake=mistake_json(mistake, printer.tex),
+            mistake=mistake_json(mistake, printer.tex, shown["latex"]),
             partial=partial_json(mistake, _short_label(pb.step, pb.label)),
             follow_up=follow_up_json(mistake, allowed_names(mistake.follow_up.kind, pb.kinds))
             if mistake.follow_up

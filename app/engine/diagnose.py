@@ -70,7 +70,9 @@ def _legacy(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> list[tup
         hint = rule.hint
         if rule.mistake == "h_is_e":
             hint += _why_h_is_not_e(d)
-        out.append((Mistake(rule.mistake, rule.mistake, rule.name, sp.expand(built - truth), rule.hint, built), hint))
+        # the piece of an acceleration's mistake is too long to name: the difference shows it
+        piece = None if step == "acceleration" else sp.expand(built - truth)
+        out.append((Mistake(rule.mistake, rule.mistake, rule.name, piece, rule.hint, built), hint))
     return out
 
 
@@ -162,13 +164,14 @@ def match(
     return None
 
 
-def mistake_json(m: Mistake, tex) -> dict[str, Any]:
-    """The API's ``mistake``: a stable key for records, display text, the piece typeset and where it comes from."""
+def mistake_json(m: Mistake, tex, difference: str = "") -> dict[str, Any]:
+    """The API's ``mistake``: a stable key for records, display text, the piece typeset (the difference's
+    LaTeX where the piece is not named) and where it comes from."""
     return {
         "key": m.key,
         "family": m.family,
         "name": m.name,
-        "latex": tex(m.piece),
+        "latex": tex(m.piece) if m.piece is not None else difference,
         "where": m.where,
         "approximation": m.approximation,
         "count": m.count,

@@ -77,7 +77,22 @@ def _through(p: sp.Expr, q: sp.Symbol) -> str:
     return ", ".join(spoken(f) for f in found) if found else spoken(q)
 
 
-def equation_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
+_EQUATIONS: dict[tuple[int, int], tuple[Derivation, list[Mistake]]] = {}
+
+
+def equation_mistakes(d: Derivation, k: int) -> list[Mistake]:
+    """The mistakes of q_k's equation (remembered per derivation: each acceleration's catalogue uses them all)."""
+    found = _EQUATIONS.get((id(d), k))
+    if found is not None and found[0] is d:
+        return found[1]
+    made = list(_equation_mistakes(d, k))
+    if len(_EQUATIONS) > 256:
+        _EQUATIONS.clear()
+    _EQUATIONS[(id(d), k)] = (d, made)
+    return made
+
+
+def _equation_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
     eqs, m, table = d.equations, d.mechanics, d.table
     E, p = eqs.residuals[k], eqs.momenta[k]
     qdot = unicode(table.qd[k].name)

@@ -56,7 +56,7 @@ class Mistake:
     key: str  # stable, for records: "<step>.<family>[.<detail>…]"
     family: str
     name: str  # what went wrong, in the system's words (plain text with Unicode mathematics)
-    piece: sp.Expr  # the piece the name speaks of (left out, extra, or of the wrong sign)
+    piece: sp.Expr | None  # the piece the name speaks of (left out, extra, or of the wrong sign); None: the difference
     where: str  # where in the set-up the piece comes from
     expr: sp.Expr  # the whole wrong answer
     approximation: bool = False
@@ -95,15 +95,24 @@ def term_key(term: sp.Expr) -> str:
     return "_".join(sorted(s.name for s in term.free_symbols))
 
 
+_SHORT: dict[sp.Expr, sp.Expr] = {}
+
+
 def short_form(expr: sp.Expr) -> sp.Expr:
-    """A shorter form to name a piece with (products of sines and cosines recombined), within a small budget."""
+    """A shorter form to name a piece with (products of sines and cosines recombined), within a small budget
+    (remembered: the equations' mistakes name the same pieces again for the accelerations)."""
+    if expr in _SHORT:
+        return _SHORT[expr]
 
     def work() -> sp.Expr:
         best = sp.factor_terms(pythagoras(sp.expand(expr)))
         tried = sp.factor_terms(sp.trigsimp(best))
         return tried if sp.count_ops(tried) < sp.count_ops(best) else best
 
-    return within_budget(work, expr, NAME_SECONDS)
+    found = within_budget(work, expr, NAME_SECONDS)
+    if len(_SHORT) < 4096:
+        _SHORT[expr] = found
+    return found
 
 
 def _magnitude(squared: sp.Expr) -> sp.Expr:

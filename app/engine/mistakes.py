@@ -159,7 +159,8 @@ def _equation(mistake: str) -> Callable[[Derivation, str, int | None], sp.Expr |
         zero = dict.fromkeys(d.table.qdd, sp.Integer(0))
         forcing = sp.Matrix([-sp.expand(r).xreplace(zero) for r in wrong])
         M = d.equations.mass_matrix
-        return sp.cancel(M.LUsolve(forcing)[k]) if M.shape[0] <= 3 else M.LUsolve(forcing)[k]
+        # left unsimplified: only its values are compared, and what is shown is the difference
+        return M.LUsolve(forcing)[k]
 
     return build
 
