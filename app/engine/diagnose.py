@@ -213,7 +213,8 @@ def agreement(answer: sp.Expr, truth: sp.Expr, groups: Groups, step: str) -> dic
     monomials = sorted(set(mine) | set(theirs), key=sp.default_sort_key)
     if len(monomials) < 2:
         return None
-    agree, differ = [], []
+    agree: list[str] = []
+    differ: list[str] = []
     zero = sp.Integer(0)
     for monomial in monomials:
         a = values(mine.get(monomial, zero), groups)

@@ -289,3 +289,20 @@ def test_the_double_pendulums_missing_velocity_squared_term_is_the_whole_differe
     )
     shown = parse_expression(result["difference"]["sympy"], names)
     assert sp.simplify(shown / parse_expression("l1*l2*m2*sin(theta1 - theta2)*theta1_dot**2", names)).is_number
+
+
+def test_names_of_pieces_read_as_mathematics_not_code():
+    from app.engine.mistake_families import spoken
+
+    names = {**derivation("double-pendulum").table.namespace()}
+    expr = parse_expression(
+        "m2*l1*l2*sin(theta1 - theta2)*theta2_dot**2 + R**2*sin(theta1)**2", {**names, "R": sp.Symbol("R")}
+    )
+    text = spoken(expr)
+    assert "*" not in text and "theta" not in text and "sin²(θ₁)" in text and "θ̇₂²" in text and "θ₁ − θ₂" in text
+
+
+def test_an_unmatched_answer_is_compared_part_by_part():
+    result = judge(problem(derivation("double-pendulum"), "kinetic"), "m1*l1**2*theta1_dot**2/2 + 7*theta2_dot**2")
+    assert result["mistake"] is None
+    assert result["partial"]["differ"] and "the θ̇₁ θ̇₂ terms" in result["partial"]["differ"]
