@@ -69,7 +69,7 @@ PER_COORDINATE = frozenset({"momentum", "equation", "acceleration"})
 RELATIONS = {"potential": "constant", "lagrangian": "constant", "hamiltonian": "constant", "equation": "factor"}
 MIN_POINTS = 6  # sample points where both sides are defined, for a numeric verdict
 DISPLAY_SECONDS = 0.12  # for typesetting a difference: past it, the difference is shown expanded
-DIFFERENCE_SECONDS = 0.1  # for recombining a difference's trigonometry, so that what cancels never shows
+DIFFERENCE_SECONDS = 0.5  # at most: a difference's cancelling and trigonometry (what cancels never shows)
 PARTS_SECONDS = 0.1  # for comparing an unmatched answer part by part
 FACTOR_SECONDS = 0.2
 

@@ -24,7 +24,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import sympy as sp
-from sympy.simplify.fu import fu
+from sympy.simplify.fu import TR10i
 
 from app.engine.budget import BudgetExceeded, pythagoras, time_limit, within_budget
 from app.engine.kinks import away_from_kinks
@@ -183,20 +183,21 @@ def mistake_only(expr: sp.Expr, seconds: float) -> sp.Expr:
     Expanding every sine and cosine of a sum into products of single angles makes a
     difference's cancellation exact (θ̈₁ [cos(θ₁ − θ₂) − sin θ₁ sin θ₂ − cos θ₁ cos θ₂]
     is 0), and sin² + cos² = 1 is collected; products are then recombined
-    (trigsimp, then Fu's rules) within the budget, keeping the shortest form.
+    (Fu's TR10i, then trigsimp) within the budget, keeping the shortest form.
     """
 
     def canonical() -> sp.Expr:
         return pythagoras(sp.expand(sp.expand_trig(expr)))
 
-    flat = within_budget(canonical, expr, seconds / 2)
+    # the canonical form is cheap and decides what is shown at all: it gets most of the budget
+    flat = within_budget(canonical, expr, seconds * 0.7)
 
-    def recombined() -> sp.Expr:
-        best = flat
-        for simplify in (sp.trigsimp, fu):
-            tried = sp.factor_terms(simplify(best))
-            if sp.count_ops(tried) < sp.count_ops(best):
-                best = tried
-        return best
+    if not flat.free_symbols:
+        return flat
 
-    return within_budget(recombined, flat, seconds / 2) if flat.free_symbols else flat
+    def shorter(best: sp.Expr, tried: sp.Expr) -> sp.Expr:
+        return tried if sp.count_ops(tried) < sp.count_ops(best) else best
+
+    # sums of products into sines and cosines of sums (Fu's TR10i: cheap and targeted), then trigsimp
+    best = within_budget(lambda: shorter(flat, sp.factor_terms(TR10i(flat))), flat, seconds * 0.15)
+    return within_budget(lambda: shorter(best, sp.factor_terms(sp.trigsimp(best))), best, seconds * 0.15)

@@ -31,12 +31,13 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 import sympy as sp
+from sympy.simplify.fu import TR10i
 
 from app.engine.budget import pythagoras, within_budget
 from app.engine.derive import Derivation
 from app.engine.names import unicode
 
-NAME_SECONDS = 0.1  # for recombining a factor's trigonometry to name it
+NAME_SECONDS = 0.4  # for recombining a factor's trigonometry to name it (once per catalogue)
 MAX_PER_STEP = 60
 
 
@@ -106,11 +107,13 @@ def short_form(expr: sp.Expr) -> sp.Expr:
 
     def work() -> sp.Expr:
         best = sp.factor_terms(pythagoras(sp.expand(expr)))
+        quick = sp.factor_terms(TR10i(best))  # cos θ₁ cos θ₂ + sin θ₁ sin θ₂ → cos(θ₁ − θ₂), cheaply
+        best = quick if sp.count_ops(quick) < sp.count_ops(best) else best
         tried = sp.factor_terms(sp.trigsimp(best))
         return tried if sp.count_ops(tried) < sp.count_ops(best) else best
 
     found = within_budget(work, expr, NAME_SECONDS)
-    if len(_SHORT) < 4096:
+    if found is not expr and len(_SHORT) < 4096:  # (a form cut short by a busy machine is not remembered)
         _SHORT[expr] = found
     return found
 
