@@ -74,7 +74,8 @@ _FUNCTIONS = frozenset({"sin", "cos", "tan", "exp", "log", "sqrt", "Abs", "sinh"
 
 def spoken(expr: sp.Expr) -> str:
     """An expression as running text prints it: R sin(θ) φ̇, m₂ l₁ l₂ cos(θ₁ − θ₂) (never ** or *)."""
-    text = sp.sstr(expr)
+    # a sign pulled out of a sum: −g l₁ (m₁ + m₂), not g l₁ (−m₁ − m₂)
+    text = sp.sstr(sp.factor_terms(expr) if isinstance(expr, sp.Expr) else expr)
     # sin(θ)**2 as sin²(θ)
     text = re.sub(
         r"\b(sin|cos|tan)(\([^()]*\))\*\*(\d+)",
