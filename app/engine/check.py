@@ -71,6 +71,8 @@ MIN_POINTS = 6  # sample points where both sides are defined, for a numeric verd
 DISPLAY_SECONDS = 0.12  # for typesetting a difference: past it, the difference is shown expanded
 DIFFERENCE_SECONDS = 0.5  # at most: a difference's cancelling and trigonometry (what cancels never shows)
 PARTS_SECONDS = 0.1  # for comparing an unmatched answer part by part
+# the steps whose answers are polynomials in the rates, compared part by part when no mistake matches
+PARTED = frozenset({"kinetic", "lagrangian", "momentum", "equation", "hamiltonian"})
 FACTOR_SECONDS = 0.2
 
 # which kinds of name each step's answer may use
@@ -393,7 +395,11 @@ def judge(pb: Problem, text: str) -> dict[str, Any]:
             else None,
         )
     # no known mistake: say which parts agree (against the truth at the answer's scale)
-    partial = _budgeted(lambda: agreement(answer, answer - difference, pb.groups, pb.step), None, PARTS_SECONDS)
+    partial = (
+        _budgeted(lambda: agreement(answer, answer - difference, pb.groups, pb.step), None, PARTS_SECONDS)
+        if pb.step in PARTED
+        else None
+    )
     return _verdict("incorrect", message, shown, _hint(pb, answer, a, b, truth), partial=partial)
 
 

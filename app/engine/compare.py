@@ -32,6 +32,7 @@ from app.engine.kinks import away_from_kinks
 CONSTANT_DRAWS, POSITION_DRAWS, RATE_DRAWS = 2, 2, 3
 RTOL = 1e-9
 SYMBOLIC_SECONDS = 0.25
+MISTAKE_ONLY_MAX_OPS = 300
 SEED = 20261123
 
 
@@ -185,6 +186,13 @@ def mistake_only(expr: sp.Expr, seconds: float) -> sp.Expr:
     is 0), and sin² + cos² = 1 is collected; products are then recombined
     (Fu's TR10i, then trigsimp) within the budget, keeping the shortest form.
     """
+
+    if sp.count_ops(expr) > MISTAKE_ONLY_MAX_OPS or any(
+        p.exp.is_negative and p.base.has(sp.sin, sp.cos) for p in expr.atoms(sp.Pow)
+    ):
+        # a long difference, or one over a trigonometric denominator (an acceleration's): expanding it would
+        # only make it longer, and the display's own simplification has it
+        return expr
 
     def canonical() -> sp.Expr:
         return pythagoras(sp.expand(sp.expand_trig(expr)))
