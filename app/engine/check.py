@@ -378,7 +378,10 @@ def judge(pb: Problem, text: str) -> dict[str, Any]:
     truth, b = results[0]
     with display_budget(DISPLAY_SECONDS):
         difference, how = _difference(pb, answer, truth)
-        shown = printer.pair(display(mistake_only(difference, DIFFERENCE_SECONDS)))
+        # the mistake only: what cancels identically gone, trigonometry recombined; where that did not apply
+        # (a long difference, an acceleration's), the display's own simplification
+        only = mistake_only(difference, DIFFERENCE_SECONDS)
+        shown = printer.pair(display(difference) if only is difference else only)
     message = f"Incorrect: this is not {_noun(pb)}{how}. The difference (yours − the engine's) is shown."
     found = match(pb.mistakes, a, b, pb.relation)
     if found is not None:
