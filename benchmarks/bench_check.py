@@ -1,9 +1,11 @@
 """The step checker's response time on a warm server, against GET /healthz in the same run.
 
-For every scene and every step of its practice exercises, three answers go to
+For every scene and every step of its practice exercises, four answers go to
 POST /api/scenes/{id}/check: the engine's own step (correct), twice it
-(incorrect: the difference is typeset and every hint rule is tried, the slowest
-path) and it plus one (equivalent for U, L and h, incorrect elsewhere). Each
+(incorrect: the difference is typeset and every mistake of the step's catalogue
+is tried, the slowest path), it plus one (equivalent for U, L and h, incorrect
+elsewhere) and, where the step has one, the first mistake generated from the
+scene's derivation (named, with its piece typeset and what else is right). Each
 answer text is made unique with a harmless ``+ 0*pi*k``, so no answer is served
 from the cache: every request parses, judges and typesets in the worker pool,
 as a class of students typing their own answers would make it. A warm-up round
@@ -20,8 +22,10 @@ from collections import defaultdict
 
 from fastapi.testclient import TestClient
 
+from app.engine.check import problem
 from app.main import app
 from app.scenes import SCENES
+from app.service import derivations
 
 ROUNDS = 2
 HEALTH_ROUNDS = 200
@@ -44,6 +48,9 @@ def answers(client: TestClient, scene_id: str) -> list[tuple[dict, str]]:
             ({**base, "answer": f"2*({truth})"}, "twice it"),
             ({**base, "answer": f"{truth} + 1"}, "plus one"),
         ]
+        named = [m for m, _, _ in problem(derivations.derivation(scene_id), e["step"], e["coordinate"]).mistakes]
+        if named and len(str(named[0].expr)) < 2000:
+            out.append(({**base, "answer": str(named[0].expr)}, "a generated mistake"))
     return out
 
 

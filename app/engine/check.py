@@ -43,13 +43,23 @@ from app.engine.compare import (
     differ_by_factor,
     equal,
     factor_is_constant,
+    mistake_only,
     symbolically_zero,
     usable,
     values,
     without_constant,
 )
 from app.engine.derive import Derivation
-from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, OMEGA_HINT, POINTERS, RULES
+from app.engine.diagnose import (
+    agreement,
+    catalogue,
+    follow_up_json,
+    match,
+    mistake_json,
+    partial_json,
+)
+from app.engine.mistake_families import Mistake
+from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, POINTERS
 from app.engine.parse import ExpressionError, check_expression, parse_expression
 from app.engine.reality import real_somewhere
 from app.engine.report import Printer, display, plain_name
@@ -60,6 +70,10 @@ PER_COORDINATE = frozenset({"momentum", "equation", "acceleration"})
 RELATIONS = {"potential": "constant", "lagrangian": "constant", "hamiltonian": "constant", "equation": "factor"}
 MIN_POINTS = 6  # sample points where both sides are defined, for a numeric verdict
 DISPLAY_SECONDS = 0.12  # for typesetting a difference: past it, the difference is shown expanded
+DIFFERENCE_SECONDS = 0.5  # at most: a difference's cancelling and trigonometry (what cancels never shows)
+PARTS_SECONDS = 0.1  # for comparing an unmatched answer part by part
+# the steps whose answers are polynomials in the rates, compared part by part when no mistake matches
+PARTED = frozenset({"kinetic", "lagrangian", "momentum", "equation", "hamiltonian"})
 FACTOR_SECONDS = 0.2
 
 # which kinds of name each step's answer may use
@@ -149,9 +163,12 @@ class Problem:
     kinds: dict[str, str]
     namespace: dict[str, sp.Symbol]
     groups: Groups
-    variants: tuple[tuple[str, str, sp.Expr], ...]  # (mistake, hint, expression)
+    mistakes: tuple[tuple[Mistake, str, Values], ...]  # (mistake, hint, its values at the sample points)
     latex_names: dict[sp.Symbol, str]
     acceleration: sp.Symbol | None = None
+
+    def mistake(self, key: str) -> Mistake | None:
+        return next((m for m, _, _ in self.mistakes if m.key == key), None)
 
 
 def conserved_momenta(d: Derivation) -> tuple[sp.Symbol, ...]:
@@ -199,8 +216,12 @@ def _label(step: str, name: str | None, d: Derivation) -> str:
     }[step]
 
 
-def problem(d: Derivation, step: str, coordinate: str | None = None) -> Problem:
-    """The problem for one step (a CheckError naming the field when the step or coordinate does not apply)."""
+def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: bool = True) -> Problem:
+    """The problem for one step (a CheckError naming the field when the step or coordinate does not apply).
+
+    With ``mistakes`` the step's catalogue of mistakes is generated and evaluated at the sample points
+    (``app.engine.diagnose``): the costly part, done once per system and step by the service.
+    """
     table, eqs = d.table, d.equations
     available = exercises(d)
     steps = list(dict.fromkeys(s for s, _ in available))
@@ -248,41 +269,42 @@ def problem(d: Derivation, step: str, coordinate: str | None = None) -> Problem:
         r = d.reduction.coordinate  # type: ignore[union-attr]
         where = tuple(f"{plain_name(r)} = {sp.sstr(e.position)}" for e in found)
 
-    variants: list[tuple[str, str, sp.Expr]] = []
-    for rule in RULES:
-        if step in rule.steps:
-            built = rule.build(d, step, k)
-            if built is not None and sp.expand(built - truths[0]) != 0:
-                variants.append((rule.mistake, rule.hint, built))
-    if step == "omega_squared":
-        # ω in place of ω²
-        variants += [("omega_not_squared", OMEGA_HINT, sp.sqrt(w2)) for w2 in truths]
-
     momenta = conserved_momenta(d)
     kinds = name_kinds(table.names, table.parameter_names, tuple(p.name for p in momenta))
     namespace = {**table.namespace(), **{s.name: s for s in table.qdd}, **{p.name: p for p in momenta}}
     groups = Groups((*table.params, *momenta), (*table.q, table.t), (*table.qd, *table.qdd))
     latex_names = {**table.latex_names(), **{p: sp.latex(p) for p in momenta}}
+    label = _label(step, coordinate, d)
+    relation = RELATIONS.get(step, "exact")
     return Problem(
         step,
         coordinate,
-        _label(step, coordinate, d),
+        label,
         truths,
         where,
-        RELATIONS.get(step, "exact"),
+        relation,
         kinds,
         namespace,
         groups,
-        tuple(variants),
+        catalogue(d, step, k, truths, groups, relation, _short_label(step, label)) if mistakes else (),
         latex_names,
         table.qdd[k] if step == "equation" else None,
     )
 
 
-def parse_answer(pb: Problem, text: str) -> sp.Expr:
-    """The answer in SymPy (CheckError on the ``answer`` field when it is not allowed)."""
-    check_answer(text, pb.step, pb.kinds)
-    allowed = set(allowed_names(pb.step, pb.kinds))
+def _short_label(step: str, label: str) -> str:
+    """The label as a hint names it: 'T', 'U', 'equation for θ'."""
+    return {"kinetic": "T", "potential": "U", "lagrangian": "L", "hamiltonian": "h"}.get(
+        step, label.replace("Euler–Lagrange ", "")
+    )
+
+
+def parse_answer(pb: Problem, text: str, kind: str | None = None) -> sp.Expr:
+    """The answer in SymPy (CheckError on the ``answer`` field when it is not allowed); ``kind`` is the step
+    whose names it may use (a follow-up question's), by default the problem's own."""
+    kind = kind or pb.step
+    check_answer(text, kind, pb.kinds)
+    allowed = set(allowed_names(kind, pb.kinds))
     try:
         return real_somewhere(text, parse_expression(text, {n: s for n, s in pb.namespace.items() if n in allowed}))
     except ExpressionError as exc:
@@ -297,8 +319,18 @@ def _budgeted(work, fallback, seconds: float):
         return fallback
 
 
-def _verdict(verdict: str, message: str, difference: dict[str, str] | None = None, hint: str | None = None):
-    return {"verdict": verdict, "message": message, "difference": difference, "hint": hint}
+def _verdict(
+    verdict: str, message: str, difference: dict[str, str] | None = None, hint: str | None = None, **more: Any
+) -> dict[str, Any]:
+    return {
+        "verdict": verdict,
+        "message": message,
+        "difference": difference,
+        "hint": hint,
+        "mistake": more.get("mistake"),
+        "partial": more.get("partial"),
+        "follow_up": more.get("follow_up"),
+    }
 
 
 def _noun(pb: Problem) -> str:
@@ -347,9 +379,68 @@ def judge(pb: Problem, text: str) -> dict[str, Any]:
     truth, b = results[0]
     with display_budget(DISPLAY_SECONDS):
         difference, how = _difference(pb, answer, truth)
-        shown = printer.pair(display(difference))
+        # the mistake only: what cancels identically gone, trigonometry recombined; where that did not apply
+        # (a long difference, an acceleration's), the display's own simplification
+        only = mistake_only(difference, DIFFERENCE_SECONDS)
+        shown = printer.pair(display(difference) if only is difference else only)
     message = f"Incorrect: this is not {_noun(pb)}{how}. The difference (yours − the engine's) is shown."
-    return _verdict("incorrect", message, shown, _hint(pb, answer, a, b, truth))
+    found = match(pb.mistakes, a, b, pb.relation)
+    if found is not None:
+        mistake, hint = found
+        return _verdict(
+            "incorrect",
+            message,
+            shown,
+            hint,
+            mistake=mistake_json(mistake, printer.tex, shown["latex"]),
+            partial=partial_json(mistake, _short_label(pb.step, pb.label)),
+            follow_up=follow_up_json(mistake, allowed_names(mistake.follow_up.kind, pb.kinds))
+            if mistake.follow_up
+            else None,
+        )
+    # no known mistake: say which parts agree (against the truth at the answer's scale)
+    partial = (
+        _budgeted(lambda: agreement(answer, answer - difference, pb.groups, pb.step), None, PARTS_SECONDS)
+        if pb.step in PARTED
+        else None
+    )
+    return _verdict("incorrect", message, shown, _hint(pb, answer, a, b, truth), partial=partial)
+
+
+def judge_follow_up(pb: Problem, key: str, text: str) -> dict[str, Any]:
+    """The verdict on the answer to a named mistake's follow-up question (a CheckError when it has none)."""
+    mistake = pb.mistake(key)
+    if mistake is None or mistake.follow_up is None:
+        keys = [m.key for m, _, _ in pb.mistakes if m.follow_up is not None]
+        raise CheckError(
+            f"follow_up: {key[:80]!r} is not a mistake of this step with a question; "
+            + (f"the ones with a question are: {', '.join(keys)}" if keys else "this step has none"),
+            "follow_up",
+            key[:80],
+        )
+    fu = mistake.follow_up
+    answer = parse_answer(pb, text, fu.kind)
+    if fu.relation == "magnitude":
+        # a speed or a stretch: either sign is the same size
+        mine, theirs = values(answer**2, pb.groups), _known(fu.truth**2, pb.groups)
+    else:
+        mine, theirs = values(answer, pb.groups), _known(fu.truth, pb.groups)
+    right = usable(mine, theirs) >= MIN_POINTS and equal(mine, theirs)
+    printer = Printer(pb.latex_names)
+    if right:
+        return _verdict(
+            "correct",
+            f"Correct: {fu.answer_text or sp.sstr(fu.truth)}. Now put it back into your {pb.label}.",
+            hint=None,
+            mistake=mistake_json(mistake, printer.tex),
+        )
+    return _verdict(
+        "incorrect",
+        f"Not yet: that is not the answer to “{fu.question}”",
+        hint=f"Think of where it comes from: {mistake.where}.",
+        mistake=mistake_json(mistake, printer.tex),
+        follow_up=follow_up_json(mistake, allowed_names(fu.kind, pb.kinds)),
+    )
 
 
 def _constant_message(pb: Problem, difference: sp.Expr) -> str:
@@ -397,16 +488,7 @@ def _difference(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[sp.Expr, 
 
 
 def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str:
-    for _, hint, variant in pb.variants:
-        v = _known(variant, pb.groups)
-        if usable(a, v) < MIN_POINTS or equal(v, b):
-            continue
-        if (
-            equal(a, v)
-            or (pb.relation == "constant" and differ_by_constant(a, v))
-            or (pb.relation == "factor" and differ_by_factor(a, v))
-        ):
-            return hint
+    """The hint when no known mistake matches: a missing factor of a momentum, else the step's rule."""
     if pb.step == "momentum" and differ_by_factor(b, a):
         # the engine's momentum is the answer times a factor free of the velocities: a factor is missing
         factor = _budgeted(lambda: tidy(sp.cancel(truth / answer), FACTOR_SECONDS), None, FACTOR_SECONDS * 2)

@@ -24,13 +24,16 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import sympy as sp
+from sympy.simplify.fu import TR10i
 
-from app.engine.budget import BudgetExceeded, pythagoras, time_limit
+from app.engine.budget import BudgetExceeded, pythagoras, time_limit, within_budget
 from app.engine.kinks import away_from_kinks
 
 CONSTANT_DRAWS, POSITION_DRAWS, RATE_DRAWS = 2, 2, 3
 RTOL = 1e-9
 SYMBOLIC_SECONDS = 0.25
+MISTAKE_ONLY_MAX_OPS = 300
+TRIGSIMP_MAX_OPS = 40
 SEED = 20261123
 
 
@@ -174,3 +177,38 @@ def without_constant(expr: sp.Expr, dynamic: frozenset[sp.Symbol]) -> tuple[sp.E
         else:
             constant += term
     return varying, constant
+
+
+def mistake_only(expr: sp.Expr, seconds: float) -> sp.Expr:
+    """expr with whatever cancels identically gone, and its trigonometry recombined where that is shorter.
+
+    Expanding every sine and cosine of a sum into products of single angles makes a
+    difference's cancellation exact (θ̈₁ [cos(θ₁ − θ₂) − sin θ₁ sin θ₂ − cos θ₁ cos θ₂]
+    is 0), and sin² + cos² = 1 is collected; products are then recombined
+    (Fu's TR10i, then trigsimp) within the budget, keeping the shortest form.
+    """
+
+    if sp.count_ops(expr) > MISTAKE_ONLY_MAX_OPS or any(
+        p.exp.is_negative and p.base.has(sp.sin, sp.cos) for p in expr.atoms(sp.Pow)
+    ):
+        # a long difference, or one over a trigonometric denominator (an acceleration's): expanding it would
+        # only make it longer, and the display's own simplification has it
+        return expr
+
+    def canonical() -> sp.Expr:
+        return pythagoras(sp.expand(sp.expand_trig(expr)))
+
+    # the canonical form is cheap and decides what is shown at all: it gets most of the budget
+    flat = within_budget(canonical, expr, seconds * 0.7)
+
+    if not flat.free_symbols:
+        return flat
+
+    def shorter(best: sp.Expr, tried: sp.Expr) -> sp.Expr:
+        return tried if sp.count_ops(tried) < sp.count_ops(best) else best
+
+    # sums of products into sines and cosines of sums (Fu's TR10i: cheap and targeted), then trigsimp
+    best = within_budget(lambda: shorter(flat, sp.factor_terms(TR10i(flat))), flat, seconds * 0.15)
+    if sp.count_ops(best) > TRIGSIMP_MAX_OPS:
+        return best  # trigsimp on a long sum seldom finishes within the budget: the time would be lost
+    return within_budget(lambda: shorter(best, sp.factor_terms(sp.trigsimp(best))), best, seconds * 0.15)

@@ -19,7 +19,7 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
     pr = Printer({**d.table.latex_names(), **{p: sp.latex(p) for p in conserved_momenta(d)}})
     items = []
     for step, name in exercises(d):
-        pb = problem(d, step, name)
+        pb = problem(d, step, name, mistakes=False)  # the prompts need no catalogue of mistakes
         shown = [display(t) for t in pb.truths]
         if step == "equation":
             latex = f"{pr.tex(shown[0])} = 0"

@@ -40,6 +40,7 @@ class Rule:
     steps: tuple[str, ...]
     hint: str
     build: Callable[[Derivation, str, int | None], sp.Expr | None]
+    name: str = ""  # what went wrong, in a few words (the hint says why)
 
 
 POINTERS = {
@@ -158,7 +159,8 @@ def _equation(mistake: str) -> Callable[[Derivation, str, int | None], sp.Expr |
         zero = dict.fromkeys(d.table.qdd, sp.Integer(0))
         forcing = sp.Matrix([-sp.expand(r).xreplace(zero) for r in wrong])
         M = d.equations.mass_matrix
-        return sp.cancel(M.LUsolve(forcing)[k]) if M.shape[0] <= 3 else M.LUsolve(forcing)[k]
+        # left unsimplified: only its values are compared, and what is shown is the difference
+        return M.LUsolve(forcing)[k]
 
     return build
 
@@ -178,6 +180,7 @@ RULES: tuple[Rule, ...] = (
         ("kinetic", "lagrangian"),
         "Your T is twice the engine's: the kinetic energy of each mass is ½ m v², and the factor ½ seems to be missing.",
         _times_two,
+        "the ½ of ½ m v² left out",
     ),
     Rule(
         "speed_not_squared",
@@ -185,12 +188,14 @@ RULES: tuple[Rule, ...] = (
         "It looks as if you used the speed v where T needs the squared speed v² = v·v (the sum of the squared "
         "velocity components).",
         _speed,
+        "the speed where T needs its square",
     ),
     Rule(
         "t_plus_u",
         ("lagrangian",),
         "You added U to T; the Lagrangian is L = T − U.",
         _t_plus_u,
+        "L written as T + U",
     ),
     Rule(
         "sign_of_u",
@@ -198,6 +203,7 @@ RULES: tuple[Rule, ...] = (
         "The sign of U is reversed: U is +m g × height with height measured upward, against gravity (and "
         "+½ k × stretch² for a spring). Check which way your height axis points.",
         _negative_u,
+        "the sign of U",
     ),
     Rule(
         "missing_cross_term",
@@ -205,6 +211,7 @@ RULES: tuple[Rule, ...] = (
         "A cross term is missing: when a position depends on several coordinates (or on t), squaring its velocity "
         "gives mixed products such as 2 Ẋ ṡ cos α. Forgetting the chain rule through one of them drops those terms.",
         _no_cross,
+        "the cross terms of T left out",
     ),
     Rule(
         "force_counted_twice",
@@ -212,6 +219,7 @@ RULES: tuple[Rule, ...] = (
         "A force is counted twice: a force that comes from U (such as gravity) is already in ∂L/∂q, so it must not "
         "be added again as a generalized force Q.",
         _equation("double_force"),
+        "a force of U counted again as a generalized force",
     ),
     Rule(
         "chain_rule_in_ddt",
@@ -219,6 +227,7 @@ RULES: tuple[Rule, ...] = (
         "The d/dt of ∂L/∂q̇ is missing its chain-rule terms: ∂L/∂q̇ depends on the coordinates too, so its time "
         "derivative has terms (∂/∂q of ∂L/∂q̇)·q̇ besides the q̈ ones.",
         _equation("chain_rule"),
+        "the chain-rule terms of d/dt(∂L/∂q̇) left out",
     ),
     Rule(
         "forgot_force",
@@ -226,24 +235,28 @@ RULES: tuple[Rule, ...] = (
         "The generalized force is missing: the equation is d/dt(∂L/∂q̇) − ∂L/∂q = Q, and this system has a Q that "
         "no potential describes.",
         _equation("forgot_force"),
+        "the generalized force left out",
     ),
     Rule(
         "sign_of_dl_dq",
         ("equation", "acceleration"),
         "A sign is off between the two terms: the equation is d/dt(∂L/∂q̇) − ∂L/∂q = Q, with a minus before ∂L/∂q.",
         _equation("sign_of_dl_dq"),
+        "the sign of ∂L/∂q",
     ),
     Rule(
         "h_is_l",
         ("hamiltonian",),
         "That is L. The Hamiltonian is h = Σ p q̇ − L; for T quadratic in the velocities it comes to T + U, not T − U.",
         _h_as_l,
+        "h written as L",
     ),
     Rule(
         "h_is_e",
         ("hamiltonian",),
         "That is the energy E = T + U. Here h ≠ E because a constraint moves with time: h = Σ p q̇ − L = T₂ − T₀ + U.",
         _h_as_e,
+        "h written as the energy E = T + U",
     ),
 )
 

@@ -11,7 +11,12 @@ with identical requests answered from a cache.
   variants) is built once per process from the scene's cached derivation, in a
   thread, and sent to the worker with the answer: the worker does no derivation.
 * A user system is derived in the worker (its per-worker cache makes repeated
-  checks of one system cheap), then judged there.
+  checks of one system cheap), then judged there; its problems, with the
+  catalogue of mistakes generated from its derivation (app/engine/diagnose.py),
+  are kept per worker too, so a class typing answers to one system generates
+  them once.
+* An answer to a named mistake's follow-up question (``follow_up``: the
+  mistake's key) is judged against that question's truth, by the same engine.
 
 Refusals carry the field at fault: ``answer``, ``step`` or ``coordinate``, or
 ``system.…`` for the declared system of ``POST /api/check``.
@@ -21,10 +26,11 @@ from __future__ import annotations
 
 import asyncio
 import threading
+from collections import OrderedDict
 from collections.abc import Callable, Mapping
 from typing import Any
 
-from app.engine.check import STEPS, CheckError, Problem, check_answer, judge, name_kinds, problem
+from app.engine.check import STEPS, CheckError, Problem, check_answer, judge, judge_follow_up, name_kinds, problem
 from app.engine.derive import Derivation
 from app.engine.errors import DerivationError
 from app.engine.exercises import exercise_json
@@ -37,6 +43,7 @@ from app.service.user_systems import ResultCache, UserSystems
 from app.settings import Settings, settings
 
 MAX_ANSWER_CACHE = 4096
+MAX_WORKER_PROBLEMS = 64
 
 
 def refusal(exc: CheckError) -> InvalidSystem:
@@ -66,9 +73,29 @@ def _judged(work: Callable[[], Any]) -> Any:
 # ---- in the worker --------------------------------------------------------------------------
 
 
-def scene_check_job(pb: Problem, answer: str) -> bytes:
-    """Worker job: judge an answer against a scene's problem."""
-    return guarded(lambda: _judged(lambda: judge(pb, answer)))
+def _judge(pb: Problem, answer: str, follow_up: str | None) -> dict[str, Any]:
+    return judge(pb, answer) if follow_up is None else judge_follow_up(pb, follow_up, answer)
+
+
+def scene_check_job(pb: Problem, answer: str, follow_up: str | None = None) -> bytes:
+    """Worker job: judge an answer (or an answer to a mistake's follow-up question) against a scene's problem."""
+    return guarded(lambda: _judged(lambda: _judge(pb, answer, follow_up)))
+
+
+# a worker's problems of user systems, with their catalogues of mistakes: generated once per system and step
+_problems: OrderedDict[tuple, Problem] = OrderedDict()
+
+
+def _user_problem(user: UserSystem, d: Derivation, step: str, coordinate: str | None) -> Problem:
+    key = (user, step, coordinate)
+    found = _problems.get(key)
+    if found is None:
+        found = _problems[key] = problem(d, step, coordinate)
+        while len(_problems) > MAX_WORKER_PROBLEMS:
+            _problems.popitem(last=False)
+    else:
+        _problems.move_to_end(key)
+    return found
 
 
 def _system(user: UserSystem) -> Derivation:
@@ -78,12 +105,14 @@ def _system(user: UserSystem) -> Derivation:
         raise _in_system(exc) from None
 
 
-def system_check_job(user: UserSystem, step: str, coordinate: str | None, answer: str) -> bytes:
+def system_check_job(
+    user: UserSystem, step: str, coordinate: str | None, answer: str, follow_up: str | None = None
+) -> bytes:
     """Worker job: derive a user system (cached per worker), then judge the answer."""
 
     def run() -> dict[str, Any]:
         d = _system(user)
-        return _judged(lambda: judge(problem(d, step, coordinate), answer))
+        return _judged(lambda: _judge(_user_problem(user, d, step, coordinate), answer, follow_up))
 
     return guarded(run)
 
@@ -140,32 +169,70 @@ class Checking:
         return self._exercises[scene_id]
 
     async def check_scene(
-        self, scene_id: str, step: str, coordinate: str | None, answer: str, client: str, address: str
+        self,
+        scene_id: str,
+        step: str,
+        coordinate: str | None,
+        answer: str,
+        client: str,
+        address: str,
+        follow_up: str | None = None,
     ) -> bytes:
         pb = await asyncio.to_thread(self.scene_problem, scene_id, step, coordinate)
+        kind = step
+        if follow_up is not None:
+            mistake = pb.mistake(follow_up)
+            if mistake is None or mistake.follow_up is None:
+                keys = [m.key for m, _, _ in pb.mistakes if m.follow_up is not None]
+                raise InvalidSystem(
+                    f"follow_up: {follow_up[:80]!r} is not a mistake of this step with a question; "
+                    + (f"the ones with a question are: {', '.join(keys)}" if keys else "this step has none"),
+                    ("follow_up",),
+                    follow_up[:80],
+                )
+            kind = mistake.follow_up.kind
         try:
-            check_answer(answer, step, pb.kinds)
+            check_answer(answer, kind, pb.kinds)
         except CheckError as exc:
             raise refusal(exc) from None
-        key = spec_key("scene", scene_id, step, pb.coordinate, answer.strip())
+        key = spec_key("scene", scene_id, step, pb.coordinate, answer.strip(), follow_up)
         return await self.users.run_job(
-            self.answers, key, client, address, self.check_seconds, scene_check_job, pb, answer
+            self.answers, key, client, address, self.check_seconds, scene_check_job, pb, answer, follow_up
         )
 
     async def check_system(
-        self, user: UserSystem, step: str, coordinate: str | None, answer: str, client: str, address: str
+        self,
+        user: UserSystem,
+        step: str,
+        coordinate: str | None,
+        answer: str,
+        client: str,
+        address: str,
+        follow_up: str | None = None,
     ) -> bytes:
         if step not in STEPS:
             raise InvalidSystem(f"step: unknown step {step[:40]!r}; the steps are: {', '.join(STEPS)}", ("step",))
         # every coordinate's momentum may turn out conserved: the worker checks the names exactly
         kinds = name_kinds(user.coordinates, user.parameter_names, tuple(f"p_{q}" for q in user.coordinates))
-        try:
-            check_answer(answer, step, kinds)
-        except CheckError as exc:
-            raise refusal(exc) from None
-        key = spec_key(user, step, coordinate, answer.strip())
+        if follow_up is None:
+            # (a follow-up's names are the question's: the worker checks them against the mistake)
+            try:
+                check_answer(answer, step, kinds)
+            except CheckError as exc:
+                raise refusal(exc) from None
+        key = spec_key(user, step, coordinate, answer.strip(), follow_up)
         return await self.users.run_job(
-            self.answers, key, client, address, self.check_seconds, system_check_job, user, step, coordinate, answer
+            self.answers,
+            key,
+            client,
+            address,
+            self.check_seconds,
+            system_check_job,
+            user,
+            step,
+            coordinate,
+            answer,
+            follow_up,
         )
 
     async def system_exercises(self, user: UserSystem, client: str, address: str) -> bytes:

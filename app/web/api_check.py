@@ -41,14 +41,19 @@ ERRORS = {
     "/scenes/{scene_id}/check",
     summary="Check a step of a scene",
     description="Judge a student's expression for one step against the engine's: `correct`, `equivalent` (a "
-    "constant added to U, L or h; an equation times a nonzero factor) or `incorrect` with the difference and a hint.",
+    "constant added to U, L or h; an equation times a nonzero factor) or `incorrect` with the difference and a hint. "
+    "An incorrect answer that matches a mistake generated from the system's derivation names it (`mistake`), says "
+    "what else is right (`partial`) and may ask a follow-up question (`follow_up`), answered by sending its `key` "
+    "as `follow_up` with the same step.",
     response_model=CheckResponse,
     responses=ERRORS,
 )
 async def check_scene_step(client: ClientDep, checker: CheckingDep, scene_id: str, body: CheckRequest) -> Response:
     return await answer(
         client,
-        lambda key, address: checker.check_scene(scene_id, body.step, body.coordinate, body.answer, key, address),
+        lambda key, address: checker.check_scene(
+            scene_id, body.step, body.coordinate, body.answer, key, address, body.follow_up
+        ),
     )
 
 
@@ -63,7 +68,7 @@ async def check_system_step(client: ClientDep, checker: CheckingDep, body: Syste
     return await answer(
         client,
         lambda key, address: checker.check_system(
-            declared(body.system.to_spec()), body.step, body.coordinate, body.answer, key, address
+            declared(body.system.to_spec()), body.step, body.coordinate, body.answer, key, address, body.follow_up
         ),
     )
 

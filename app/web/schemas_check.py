@@ -36,6 +36,12 @@ class CheckRequest(BaseModel):
     )
     coordinate: Name | None = Field(None, description="The coordinate, for momentum, equation and acceleration.")
     answer: Expression
+    follow_up: str | None = Field(
+        None,
+        max_length=200,
+        description="To answer a named mistake's follow-up question: the `key` of `follow_up` from the verdict "
+        "(with the same step and coordinate); `answer` is then judged against that question's answer.",
+    )
 
 
 class SystemCheckRequest(CheckRequest):
@@ -61,6 +67,32 @@ class SystemCheckRequest(CheckRequest):
     system: SystemSpec
 
 
+class Mistake(BaseModel):
+    key: str = Field(
+        description="Stable machine key for records: `<step>.<family>[.<detail>…]` for a generated mistake "
+        "(`kinetic.velocity_part.ball.phi`, `equation.chain_rule.theta2`), a rule's name otherwise "
+        "(`missing_half`); two mistakes at once are joined by `+`."
+    )
+    family: str = Field(description="The kind of mistake (`velocity_part`, `natural_length`, `chain_rule`, …).")
+    name: str = Field(description="What went wrong, in the system's words (display text, Unicode mathematics).")
+    latex: str = Field(description="The piece the name speaks of (left out, extra or of the wrong sign), typeset.")
+    where: str = Field(description="Where in the set-up that piece comes from.")
+    approximation: bool = Field(description="True when it is an approximation (small angles), not a slip.")
+    count: int = Field(description="How many mistakes at once (1 or 2).")
+
+
+class Partial(BaseModel):
+    message: str
+    agree: list[str] = Field(description="The parts that agree with the engine's (empty after a named mistake).")
+    differ: list[str] = Field(description="The parts that do not.")
+
+
+class FollowUp(BaseModel):
+    key: str = Field(description="Send it back as the request's `follow_up` with the answer to the question.")
+    question: str
+    names: list[str] = Field(description="The names the answer may use.")
+
+
 class CheckResponse(BaseModel):
     verdict: Literal["correct", "equivalent", "incorrect"]
     message: str = Field(
@@ -72,6 +104,19 @@ class CheckResponse(BaseModel):
         "equation, against the engine's scaled to the answer's coefficient of the acceleration).",
     )
     hint: str | None = Field(None, description="For an incorrect answer: the likely mistake, or the step's rule.")
+    mistake: Mistake | None = Field(
+        None,
+        description="For an incorrect answer that matches a mistake generated from this system's derivation (or a "
+        "rule every system invites): which one. None when no known mistake matches.",
+    )
+    partial: Partial | None = Field(
+        None,
+        description="For an incorrect answer: what is right. After a named mistake, that everything else is; "
+        "otherwise which parts (the terms of each product of velocities and accelerations) agree.",
+    )
+    follow_up: FollowUp | None = Field(
+        None, description="A short question after a named mistake, answerable through this endpoint."
+    )
 
 
 class Exercise(BaseModel):

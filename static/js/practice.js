@@ -5,7 +5,8 @@
  * per step takes the student's own expression, in the chapter's order. As they type, the
  * expression is typeset live (a small converter from the API's syntax to LaTeX; the server
  * stays the judge); Enter or "Check" sends it to the checker and shows the verdict, the
- * difference typeset and the hint; "Show this step" reveals the engine's step.
+ * difference typeset and the hint; a named mistake with its piece typeset, what else is right,
+ * and a follow-up question answered in place; "Show this step" reveals the engine's step.
  *
  * What the student typed, the verdicts and the switch are kept in localStorage, one record per
  * scene and per declared system, so a reload loses nothing. A link with ?practice opens the
@@ -260,7 +261,12 @@ function showVerdict(item, result, answer) {
       katexInto(diff, `\\text{yours} - \\text{engine's} = ${result.difference.latex}`, true);
       box.append(diff);
     }
-    if (result.hint) box.append(element("p", { class: "verdict-hint" }, `Hint: ${result.hint}`));
+    if (result.mistake) box.append(mistakeBox(result.mistake));
+    // after a named mistake, where it comes from (the hint would repeat its name); else the hint
+    const why = result.mistake ? sentenceOf(result.mistake.where) : result.hint;
+    if (why) box.append(element("p", { class: "verdict-hint" }, `${result.mistake ? "Why: " : "Hint: "}${why}`));
+    if (result.partial) box.append(element("p", { class: "verdict-partial" }, result.partial.message));
+    if (result.follow_up && result.verdict === "incorrect") box.append(followUpBox(item, result.follow_up));
   } else {
     // a refusal: say what was wrong and mark the offending part of what was typed
     const head = element("p", { class: "verdict-head" });
@@ -276,6 +282,66 @@ function showVerdict(item, result, answer) {
   const stale = record.verdicts[item.dataset.key]?.answer !== undefined && record.verdicts[item.dataset.key].answer !== input.value;
   if (stale) box.append(element("p", { class: "help" }, `(for your earlier answer: ${record.verdicts[item.dataset.key].answer})`));
   input.setAttribute("aria-invalid", result.verdict ? String(result.verdict === "incorrect") : "true");
+}
+
+function sentenceOf(text) {
+  const t = text.trim();
+  return t ? `${t[0].toUpperCase()}${t.slice(1)}${/[.!?]$/.test(t) ? "" : "."}` : "";
+}
+
+/** The named mistake: its name, and the piece it speaks of typeset. */
+function mistakeBox(mistake) {
+  const box = element("div", { class: "verdict-mistake", "data-key": mistake.key });
+  const head = element("p");
+  head.append(element("strong", {}, mistake.approximation ? "An approximation: " : "The mistake: "), mistake.name);
+  const piece = element("div", { class: "verdict-piece", "aria-label": `the piece: ${mistake.name}` });
+  katexInto(piece, mistake.latex, true);
+  box.append(head, piece);
+  return box;
+}
+
+/** A follow-up question after a named mistake, answered and checked by the same checker (not a nested form:
+ * Enter in its box or its button sends it). */
+function followUpBox(item, followUp) {
+  const id = `${item.querySelector("input").id}-follow`;
+  const box = element("div", { class: "verdict-follow-up", "data-key": followUp.key });
+  const label = element("label", { for: id }, followUp.question);
+  const row = element("div", { class: "practice-row" });
+  const input = element("input", { type: "text", id, autocomplete: "off", spellcheck: "false", autocapitalize: "off" });
+  const send = element("button", { type: "button" }, "Answer");
+  const status = element("p", { class: "follow-up-verdict", role: "status", "aria-live": "polite" });
+  row.append(input, send);
+  box.append(label, row, element("p", { class: "help" }, `Names you may use: ${followUp.names.join(", ")}, pi.`), status);
+  const ask = async () => {
+    const answer = input.value.trim();
+    if (!answer) {
+      status.textContent = "Type an expression first.";
+      return;
+    }
+    send.disabled = true;
+    status.textContent = "Checking…";
+    const body = { step: item.dataset.step, follow_up: followUp.key, answer };
+    if (item.dataset.coordinate) body.coordinate = item.dataset.coordinate;
+    if (system) body.system = system;
+    try {
+      const { answer: result } = await request(root.dataset.checkUrl, body);
+      status.dataset.verdict = result?.verdict || "refused";
+      status.textContent = result?.verdict ? `${result.message}${result.hint ? ` ${result.hint}` : ""}` : result?.detail || "No answer from the server.";
+    } catch {
+      status.textContent = "The server could not be reached; try again.";
+    } finally {
+      send.disabled = false;
+    }
+  };
+  send.addEventListener("click", ask);
+  input.addEventListener("keydown", (event) => {
+    if (event.key === "Enter") {
+      event.preventDefault();
+      event.stopPropagation();
+      ask();
+    }
+  });
+  return box;
 }
 
 function preview(item, symbols) {
@@ -299,6 +365,7 @@ function buildItem(exercise, index, doc) {
   const key = keyOf(exercise);
   const id = `practice-${index}`;
   const item = element("li", { class: "practice-step", "data-key": key, "data-step": exercise.step, "data-lhs": exercise.lhs });
+  if (exercise.coordinate) item.dataset.coordinate = exercise.coordinate;
   const form = element("form", { class: "practice-form", novalidate: "" });
   const title = element("h3", { id: `${id}-title` }, exercise.title);
   const label = element("label", { for: `${id}-answer` }, `Your answer: ${exercise.title}`);

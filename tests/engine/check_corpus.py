@@ -3,9 +3,13 @@
 Each entry: (system, step, coordinate, answer, verdict, difference, hint).
 ``system`` is a scene id or one of the two systems below; ``difference`` is
 answer − truth as an expression in the API's syntax (``None`` when there is
-none); ``hint`` is a mistake of ``app.engine.mistakes.RULES``, ``"pointer"``
-(the step's general rule), ``"omega"``, ``"missing_factor:<factor>"`` or
-``"constant_factor:<factor>"``, or ``None``.
+none); ``hint`` is ``"key:<mistake key>"`` (a mistake generated from the
+system's derivation, app/engine/mistake_families.py, which the answer must be
+diagnosed as), a mistake of ``app.engine.mistakes.RULES``, ``"pointer"`` (the
+step's general rule), ``"omega"``, ``"missing_factor:<factor>"`` or
+``"constant_factor:<factor>"``, or ``None``.  ``TYPICAL`` adds at least three
+typical mistakes for every scene and both systems, each with the diagnosis it must
+name: (system, step, coordinate, answer, mistake key).
 """
 
 from __future__ import annotations
@@ -15,8 +19,8 @@ CART_PENDULUM = {
     "coordinates": ["x", "phi"],
     "parameters": [{"name": n, "value": 1.0, "min": 0.1} for n in ("M", "m", "l", "k", "g", "c")],
     "particles": [
-        {"mass": "M", "position": ["x", "0", "0"]},
-        {"mass": "m", "position": ["x + l*sin(phi)", "0", "-l*cos(phi)"]},
+        {"mass": "M", "position": ["x", "0", "0"], "label": "cart"},
+        {"mass": "m", "position": ["x + l*sin(phi)", "0", "-l*cos(phi)"], "label": "bob"},
     ],
     "potential": "k*x**2/2 - m*g*l*cos(phi)",
     "forces": {"x": "-c*x_dot"},
@@ -145,7 +149,15 @@ CORPUS = [
     ("incline-block", "acceleration", "X", "-g*sin(alpha)", "correct", None, None),
     ("incline-block", "acceleration", "X", "g*sin(alpha)", "incorrect", "2*g*sin(alpha)", "sign_of_dl_dq"),
     # tabletop spring
-    ("tabletop-spring", "acceleration", "theta", "0", "incorrect", "2*r_dot*theta_dot/r", "chain_rule_in_ddt"),
+    (
+        "tabletop-spring",
+        "acceleration",
+        "theta",
+        "0",
+        "incorrect",
+        "2*r_dot*theta_dot/r",
+        "key:acceleration.chain_rule.r.theta",
+    ),
     ("tabletop-spring", "acceleration", "theta", "-2*r_dot*theta_dot/r", "correct", None, None),
     (
         "tabletop-spring",
@@ -175,7 +187,7 @@ CORPUS = [
         "m*R**2*sin(theta)**2*phi_ddot",
         "incorrect",
         "-2*m*R**2*sin(theta)*cos(theta)*theta_dot*phi_dot",
-        "chain_rule_in_ddt",
+        "key:equation.chain_rule.theta",
     ),
     (
         "spherical-pendulum",
@@ -199,7 +211,7 @@ CORPUS = [
         "M*(y1_dot**2 + y2_dot**2)/8 + m1*y1_dot**2/2 + m2*y2_dot**2/2",
         "incorrect",
         "-M*y1_dot*y2_dot/4",
-        "missing_cross_term",
+        "key:kinetic.cross_term.y1_dot.y2_dot",
     ),
     ("pulley", "kinetic", None, "M*(y1_dot + y2_dot)**2/8 + m1*y1_dot**2/2 + m2*y2_dot**2/2", "correct", None, None),
     # movable incline
@@ -210,7 +222,7 @@ CORPUS = [
         "M*X_dot**2/2 + m*(X_dot**2 + D_dot**2)/2",
         "incorrect",
         "-m*X_dot*D_dot*cos(alpha)",
-        "missing_cross_term",
+        "key:kinetic.cross_term.X_dot.D_dot",
     ),
     (
         "movable-incline",
@@ -250,7 +262,7 @@ CORPUS = [
         "(M + m)*x_dot**2/2 + m*l**2*phi_dot**2/2",
         "incorrect",
         "-m*l*cos(phi)*x_dot*phi_dot",
-        "missing_cross_term",
+        "key:kinetic.cross_term.x_dot.phi_dot",
     ),
     (
         "cart-pendulum",
@@ -269,7 +281,7 @@ CORPUS = [
         "m*l**2*phi_ddot + m*l*cos(phi)*x_ddot + m*g*l*sin(phi) - m*l*sin(phi)*x_dot*phi_dot",
         "incorrect",
         "-m*l*sin(phi)*x_dot*phi_dot",
-        "pointer",
+        "key:equation.dl_dq_part.phi_dot_x_dot",
     ),
     (
         "cart-pendulum",
@@ -278,7 +290,7 @@ CORPUS = [
         "(M + m)*x_ddot + m*l*cos(phi)*phi_ddot + k*x + c*x_dot",
         "incorrect",
         "m*l*sin(phi)*phi_dot**2",
-        "chain_rule_in_ddt",
+        "key:equation.chain_rule.phi",
     ),
     (
         "cart-pendulum",
@@ -313,7 +325,7 @@ CORPUS = [
         "(m1 + m2)*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2",
         "incorrect",
         "-m2*l1*l2*theta1_dot*theta2_dot*cos(theta1 - theta2)",
-        "missing_cross_term",
+        "key:kinetic.cross_term.theta1_dot.theta2_dot",
     ),
     (
         "double-pendulum",
@@ -324,7 +336,116 @@ CORPUS = [
         None,
         None,
     ),
-    ("coupled-oscillators", "potential", None, "k*(x1**2 + x2**2)/2 + kappa*(x2 - x1)**2/2 + 7", "equivalent", None, None),
+    (
+        "coupled-oscillators",
+        "potential",
+        None,
+        "k*(x1**2 + x2**2)/2 + kappa*(x2 - x1)**2/2 + 7",
+        "equivalent",
+        None,
+        None,
+    ),
     ("coupled-oscillators", "equation", "x1", "m*x1_ddot + (k + kappa)*x1 - kappa*x2", "correct", None, None),
-    ("coupled-oscillators", "equation", "x1", "m*x1_ddot + k*x1", "incorrect", "kappa*(x2 - x1)", "pointer"),
+    (
+        "coupled-oscillators",
+        "equation",
+        "x1",
+        "m*x1_ddot + k*x1",
+        "incorrect",
+        "kappa*(x2 - x1)",
+        "key:equation.force_left_out.kappa_x1_x2",
+    ),
+]
+
+# Typical mistakes, each with the diagnosis (the mistake's key) the checker must name.
+TYPICAL = [
+    ("simple-pendulum", "equation", "theta", "m*R**2*theta_ddot + m*g*R*theta", "equation.small_angle"),
+    # d/dt(½ m R² θ̇²) taken as ½ m R² θ̈: the 2 of the square lost, not a force counted twice
+    ("simple-pendulum", "equation", "theta", "m*R**2*theta_ddot/2 + m*g*R*sin(theta)", "equation.half_momentum"),
+    ("simple-pendulum", "potential", None, "m*g*R*cos(theta)", "sign_of_u"),
+    (
+        "damped-pendulum",
+        "equation",
+        "theta",
+        "m*R**2*theta_ddot + m*g*R*sin(theta) - b*theta_dot",
+        "equation.force_sign",
+    ),
+    ("damped-pendulum", "equation", "theta", "m*R**2*theta_ddot + b*theta_dot", "equation.force_left_out.R_g_m_theta"),
+    ("damped-pendulum", "equation", "theta", "m*R**2*theta_ddot + m*g*R*sin(theta)", "forgot_force"),
+    ("helix-bead", "kinetic", None, "m*z_dot**2/2", "kinetic.velocity_axis.bead.xy"),
+    ("helix-bead", "kinetic", None, "m*R**2*alpha**2*z_dot**2/2", "kinetic.velocity_axis.bead.z"),
+    ("helix-bead", "potential", None, "-m*g*z", "sign_of_u"),
+    ("incline-block", "kinetic", None, "m*X_dot**2*cos(alpha)**2/2", "kinetic.velocity_axis.block.z"),
+    ("incline-block", "equation", "X", "m*X_ddot", "equation.force_left_out.X_alpha_g_m"),
+    ("incline-block", "acceleration", "X", "g*sin(alpha)", "sign_of_dl_dq"),
+    ("tabletop-spring", "kinetic", None, "m*r_dot**2/2", "kinetic.velocity_part.particle.theta"),
+    ("tabletop-spring", "equation", "r", "m*r_ddot + k*r", "equation.dl_dq_part.theta_dot_2"),
+    ("tabletop-spring", "equation", "theta", "m*r**2*theta_ddot", "equation.chain_rule.r"),
+    # the spherical pendulum without the φ̇ part of the ball's velocity, R sin θ φ̇
+    ("spherical-pendulum", "kinetic", None, "m*R**2*theta_dot**2/2", "kinetic.velocity_part.ball.phi"),
+    (
+        "spherical-pendulum",
+        "equation",
+        "theta",
+        "m*R**2*theta_ddot - m*g*R*sin(theta)",
+        "equation.dl_dq_part.phi_dot_2",
+    ),
+    ("spherical-pendulum", "equation", "phi", "R**2*m*sin(theta)**2*phi_ddot", "equation.chain_rule.theta"),
+    ("rail-two-body", "potential", None, "k*(x2 - x1)**2/2", "potential.natural_length.k_l0_x1_x2"),
+    ("rail-two-body", "kinetic", None, "m1*x1_dot**2/2", "kinetic.body_forgotten.body_2"),
+    ("rail-two-body", "equation", "x1", "m1*x1_ddot", "equation.force_left_out.k_l0_x1_x2"),
+    ("pulley", "kinetic", None, "m1*y1_dot**2/2 + m2*y2_dot**2/2", "kinetic.body_forgotten.middle_mass"),
+    ("pulley", "potential", None, "m1*g*y1 + m2*g*y2 + M*g*(y1 + y2)/2", "potential.term_sign.M_g_y1_y2"),
+    ("pulley", "potential", None, "m1*g*y1 + m2*g*y2", "potential.term_left_out.M_g_y1_y2"),
+    # the wedge's Ẋ left out of the block's velocity
+    ("movable-incline", "kinetic", None, "M*X_dot**2/2 + m*D_dot**2/2", "kinetic.velocity_part.block.X"),
+    ("movable-incline", "kinetic", None, "M*X_dot**2/2", "kinetic.body_forgotten.block"),
+    ("movable-incline", "potential", None, "m*g*D*sin(alpha)", "sign_of_u"),
+    # the rotating parabola without ω ρ, the example's whole point
+    ("rotating-parabola", "kinetic", None, "m*rho_dot**2*(1 + 4*alpha**2*rho**2)/2", "kinetic.moving_constraint.bead"),
+    ("rotating-parabola", "kinetic", None, "m*(rho_dot**2 + omega**2*rho**2)/2", "kinetic.velocity_axis.bead.z"),
+    (
+        "rotating-parabola",
+        "hamiltonian",
+        None,
+        "m*rho_dot**2*(1 + 4*alpha**2*rho**2)/2 + m*omega**2*rho**2/2 + alpha*g*m*rho**2",
+        "h_is_e",
+    ),
+    ("coupled-oscillators", "potential", None, "k*(x1**2 + x2**2)/2", "potential.term_left_out.kappa_x1_x2"),
+    ("coupled-oscillators", "kinetic", None, "m*x1_dot**2/2", "kinetic.body_forgotten.right_mass"),
+    ("coupled-oscillators", "equation", "x2", "m*x2_ddot + k*x2", "equation.force_left_out.kappa_x1_x2"),
+    (
+        "double-pendulum",
+        "kinetic",
+        None,
+        "m1*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2",
+        "kinetic.velocity_part.lower_bob.theta1",
+    ),
+    # the θ̇₁² term of the θ₂ equation, and the θ̇₂² term of the θ₁ equation, left out
+    (
+        "double-pendulum",
+        "equation",
+        "theta2",
+        "m2*l2**2*theta2_ddot + m2*l1*l2*cos(theta1 - theta2)*theta1_ddot + m2*g*l2*sin(theta2)",
+        "equation.chain_rule.theta1",
+    ),
+    (
+        "double-pendulum",
+        "equation",
+        "theta1",
+        "(m1 + m2)*l1**2*theta1_ddot + m2*l1*l2*cos(theta1 - theta2)*theta2_ddot + (m1 + m2)*g*l1*sin(theta1)",
+        "equation.chain_rule.theta2",
+    ),
+    ("cart-pendulum", "kinetic", None, "M*x_dot**2/2 + m*l**2*phi_dot**2/2", "kinetic.velocity_part.bob.x"),
+    (
+        "cart-pendulum",
+        "equation",
+        "x",
+        "(M + m)*x_ddot + m*l*cos(phi)*phi_ddot - m*l*sin(phi)*phi_dot**2 + k*x",
+        "forgot_force",
+    ),
+    ("cart-pendulum", "equation", "phi", "m*l**2*phi_ddot + m*l*x_ddot + m*g*l*phi", "equation.small_angle"),
+    ("spring-rod", "equation", "r", "m*r_ddot + k*(r - a)", "equation.dl_dq_part.m_r_r_dot_w"),
+    ("spring-rod", "hamiltonian", None, "m*(r_dot**2 + w**2*r**2)/2 - k*(r - a)**2/2", "h_is_l"),
+    ("spring-rod", "omega_squared", None, "sqrt(k/m - w**2)", "omega_not_squared"),
 ]

@@ -24,7 +24,7 @@ def test_a_scene_answer_gets_its_verdict_difference_and_hint(client):
     wrong = check(client, {"step": "kinetic", "answer": "m*R**2*theta_dot**2"})
     assert wrong.status_code == 200, wrong.text
     body = wrong.json()
-    assert set(body) == {"verdict", "message", "difference", "hint"}
+    assert set(body) == {"verdict", "message", "difference", "hint", "mistake", "partial", "follow_up"}
     assert body["verdict"] == "incorrect" and body["hint"] == HINTS["missing_half"]
     assert body["difference"] == {
         "sympy": "R**2*m*theta_dot**2/2",
@@ -44,7 +44,7 @@ def test_a_declared_system_is_checked_like_a_scene(client):
         scene=None,
     )
     assert cross.status_code == 200, cross.text
-    assert cross.json()["hint"] == HINTS["missing_cross_term"]
+    assert cross.json()["mistake"]["key"] == "kinetic.cross_term.x_dot.phi_dot"
     omega = check(client, {"system": SPRING_ROD, "step": "omega_squared", "answer": "k/m - w**2"}, scene=None)
     assert omega.status_code == 200, omega.text
     assert omega.json()["verdict"] == "correct"
