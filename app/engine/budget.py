@@ -9,11 +9,14 @@ serve user systems).  Elsewhere the budget degrades to a size gate alone.
 
 from __future__ import annotations
 
+import math
+import random
 import signal
 import threading
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from dataclasses import dataclass
 from typing import TypeVar
 
 import sympy as sp
@@ -22,6 +25,9 @@ T = TypeVar("T")
 
 SIMPLIFY_SECONDS = 0.5
 SIMPLIFY_MAX_OPS = 300
+# pythagoras expands its argument; above this many nodes (counted before expanding) it leaves it as it is:
+# an LU-solved acceleration of the triple pendulum (a few thousand nodes) did not expand in 300 s
+PYTHAGORAS_MAX_NODES = 600
 
 
 class BudgetExceeded(Exception):
@@ -79,6 +85,42 @@ def within_budget(work: Callable[[], T], fallback: T, seconds: float) -> T:
         return fallback
 
 
+@dataclass(frozen=True)
+class Skipped:
+    """A member of the document left out, and why (shown in its place; never a refusal of the system)."""
+
+    member: str
+    reason: str
+
+
+# Time kept back from a member's bound for the rest of the document when an outer limit is near.
+MEMBER_RESERVE_SECONDS = 1.0
+
+
+def bounded(member: str, what: str, seconds: float, work: Callable[[], T], fallback: T, skipped: list[Skipped]) -> T:
+    """``work()`` within its own time bound; past it, ``fallback`` and a note in ``skipped``.
+
+    The bound never reaches into an enclosing limit's last MEMBER_RESERVE_SECONDS, so a slow member
+    leaves time for the rest of the document instead of turning into a refusal of the whole system.
+    ``what`` names the part in the note ("Hamilton's equations").
+    """
+    outer, _ = signal.getitimer(signal.ITIMER_REAL)
+    if outer > 0 and threading.current_thread() is threading.main_thread():
+        seconds = min(seconds, outer - MEMBER_RESERVE_SECONDS)
+    if seconds <= 0.01:
+        skipped.append(Skipped(member, f"{what} left out: the time for this document was used up by the parts above."))
+        return fallback
+    try:
+        with time_limit(seconds):
+            return work()
+    except BudgetExceeded:
+        skipped.append(
+            Skipped(member, f"{what} left out: working it out took longer than its {seconds:.3g} s bound. "
+                    "The rest of the derivation is complete; this is a limit of the engine, not of the system.")
+        )  # fmt: skip
+        return fallback
+
+
 _local = threading.local()
 _TIDY_CACHE: dict[sp.Expr, sp.Expr] = {}
 _TIDY_CACHE_SIZE = 2048
@@ -104,6 +146,11 @@ def unbudgeted() -> Iterator[None]:
     finally:
         if getattr(_local, "deadline", None) is not None:
             _local.deadline += time.monotonic() - started
+
+
+def display_seconds_left(seconds: float) -> float:
+    """What is left of the shared display budget (at most ``seconds``)."""
+    return _remaining(seconds)
 
 
 def _remaining(seconds: float) -> float:
@@ -149,12 +196,29 @@ def _angles(expr: sp.Expr) -> set[sp.Expr]:
     return {f.args[0] for f in expr.atoms(sp.sin, sp.cos, sp.tan)}
 
 
+def larger_than(expr: sp.Basic, nodes: int) -> bool:
+    """True when the expression tree has more than ``nodes`` nodes, found without walking past that many.
+
+    Solved accelerations share their subexpressions (LU elimination reuses each pivot's row), so a
+    full walk (count_ops, has, free_symbols, printing) of a six-link chain visits millions of nodes;
+    this walk stops at the limit.
+    """
+    for seen, _ in enumerate(sp.preorder_traversal(expr), start=1):
+        if seen > nodes:
+            return True
+    return False
+
+
 def pythagoras(expr: sp.Expr) -> sp.Expr:
     """Collapse sin²a + cos²a = 1 for every angle a, cheaply and deterministically.
 
     For each angle both rewritings (sin² → 1 − cos², cos² → 1 − sin²) are tried
     and the shorter result kept, so a kinetic energy keeps its natural form.
+    An expression larger than PYTHAGORAS_MAX_NODES is returned as it is (expanding it is the
+    cost, and it can exceed any time bound: SymPy's expand never looks at the clock).
     """
+    if larger_than(expr, PYTHAGORAS_MAX_NODES):
+        return expr
     angles = sorted({f.args[0] for f in expr.atoms(sp.sin, sp.cos)}, key=sp.default_sort_key)
     best = sp.expand(expr)
     for a in angles:
@@ -178,9 +242,32 @@ def pythagoras(expr: sp.Expr) -> sp.Expr:
 
 def is_zero(expr: sp.Expr) -> bool:
     """Decide expr == 0: exact cancellation first, then a budgeted simplification."""
+    if larger_than(expr, PYTHAGORAS_MAX_NODES):
+        return tidy(expr) == 0
     expanded = sp.expand(expr)
     if expanded == 0:
         return True
+    if nonzero_somewhere(expanded):
+        return False
     if pythagoras(expanded) == 0:
         return True
     return tidy(expanded) == 0
+
+
+def nonzero_somewhere(expr: sp.Expr, digits: int = 30) -> bool:
+    """True when expr is certainly not identically zero: its value at a random point is clearly nonzero.
+
+    The value is computed to ``digits`` digits and compared with the size of the terms it sums, so
+    rounding in a sum that cancels exactly (about 10⁻³⁰ of its terms) is never taken for a nonzero
+    value.  False says nothing (the point may be a zero, or outside the domain): the caller goes on
+    to simplify.  This spares the simplification of every derivative that is plainly nonzero.
+    """
+    rng = random.Random(20261126)
+    point = {s: sp.Float(rng.uniform(0.3, 1.7), digits) for s in expr.free_symbols}
+    try:
+        terms = [complex(sp.N(term.xreplace(point), digits)) for term in sp.Add.make_args(expr)]
+    except (TypeError, ValueError, ArithmeticError):
+        return False
+    scale = sum(abs(x) for x in terms)
+    value = abs(sum(terms))
+    return bool(math.isfinite(scale) and scale > 0 and value > 1e-12 * scale)

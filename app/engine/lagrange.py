@@ -21,12 +21,15 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from app.engine.budget import pythagoras
+from app.engine.budget import larger_than, pythagoras
 from app.engine.errors import DerivationError
 from app.engine.mechanics import Mechanics
 
 # Closed forms by Cramer's rule up to this many coordinates; LU elimination beyond.
 CRAMER_MAX = 2
+# A solved acceleration with more nodes than this is not a closed form worth showing or compiling:
+# the document shows M q_ddot = f, and the numerics solve M q_ddot = f by LU at each step.
+CLOSED_FORM_MAX_NODES = 400
 
 
 @dataclass(frozen=True)
@@ -38,6 +41,9 @@ class Equations:
     mass_matrix: sp.Matrix
     forcing: sp.Matrix
     accelerations: tuple[sp.Expr, ...]
+    # whether the accelerations are short enough to show and compile; otherwise they are M⁻¹f, left
+    # unexpanded (their tree shares subexpressions: never walk it whole, nor expand it)
+    closed_form: bool = True
 
 
 # Smallest singular value, relative to the largest, below which an equilibrated M counts as singular.
@@ -139,4 +145,5 @@ def euler_lagrange(mech: Mechanics) -> Equations:
         # q_ddot = M^-1 f by LU elimination, untidied: a 3x3 adjugate tidied term by term cost more
         # than the whole 4-coordinate elimination (the display tidies what it shows, in its own budget)
         solved = list(M.LUsolve(forcing))
-    return Equations(dL_dq, momenta, ddt, residuals, M, forcing, tuple(solved))
+    closed_form = not any(larger_than(a, CLOSED_FORM_MAX_NODES) for a in solved)
+    return Equations(dL_dq, momenta, ddt, residuals, M, forcing, tuple(solved), closed_form)

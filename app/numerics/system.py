@@ -106,6 +106,11 @@ class NumericSystem:
         return out
 
 
+def _mass_and_forcing(eqs):
+    """The entries of M and f, whose symbols are those of M⁻¹f."""
+    return (*eqs.mass_matrix, *eqs.forcing)
+
+
 def _free(expr, symbols) -> bool:
     return not sp.sympify(expr).has(*symbols)
 
@@ -130,10 +135,14 @@ def numeric_system(d: Derivation, sources: dict[str, str] | None = None) -> Nume
     separable = (
         mass_constant
         and not forced
-        and all(_free(a, (*table.qd, table.t)) for a in eqs.accelerations)
+        and (
+            all(_free(a, (*table.qd, table.t)) for a in eqs.accelerations)
+            if eqs.closed_form  # M⁻¹f: free of q_dot and t when M (constant here) and f are
+            else all(_free(x, (*table.qd, table.t)) for x in eqs.forcing)
+        )
         and all(_free(p.xreplace(dict.fromkeys(table.qd, 0)), (*table.q, table.t)) for p in eqs.momenta)
     )
-    autonomous = all(_free(a, (table.t,)) for a in eqs.accelerations)
+    autonomous = all(_free(a, (table.t,)) for a in (eqs.accelerations if eqs.closed_form else (*_mass_and_forcing(eqs),)))
     conserved = tuple(c.name for c in en.conserved)
     energy_name = next((c.name for c in en.conserved if c.name in ("E", "h")), None)
     system = NumericSystem(
