@@ -146,8 +146,14 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "hamiltonian_conserved_reason": en.h_conserved_reason,
         "energy_minus_hamiltonian": pr.pair(en.energy_minus_h),
         "effective_potential": None,
-        "steps": bounded("steps", "The step-by-step derivation", seconds["steps"], lambda: _steps(d, forces, pr,
-                         transformed), [], skipped),  # fmt: skip
+        "steps": bounded(
+            "steps",
+            "The step-by-step derivation",
+            seconds["steps"],
+            lambda: _steps(d, forces, pr, transformed),
+            [],
+            skipped,
+        ),  # fmt: skip
         "scene": scene_json(scene) if scene is not None else None,
         "errata": errata_json(scene, pr.names) if scene else [],
         "constraint_forces": [constraint_force_json(f, pr) for f in forces],
@@ -190,9 +196,7 @@ def _transformed(d: Derivation) -> tuple[Transformed, dict[str, Any]] | None:
 def _steps(
     d: Derivation, forces: list[ConstraintForce], pr: Printer, transformed: tuple[Transformed, Any] | None
 ) -> list[dict[str, str]]:
-    return (
-        build_steps(d) + constraint_steps(forces, pr) + (transform_steps(transformed[0]) if transformed else [])
-    )
+    return build_steps(d) + constraint_steps(forces, pr) + (transform_steps(transformed[0]) if transformed else [])
 
 
 def add_beyond(

@@ -13,7 +13,6 @@ from app.engine.mechanics import Mechanics, build_mechanics
 from app.engine.reduction import Reduction, reduce_to_one
 from app.scenes.types import System
 
-
 REDUCTION_SECONDS = 4.0
 
 
