@@ -392,9 +392,7 @@ def normal_modes(d: Derivation, momenta: Mapping[str, float] | None = None) -> N
         )
     equilibria.extend(_relative(d, momenta or {}))
     note = (
-        ""
-        if equilibria or singular or kinks
-        else "No configuration makes every generalized force vanish: no equilibrium."
+        "" if equilibria or singular or kinks else "No configuration makes every generalized force vanish: no equilibrium."
     )
     return NormalModes(V, tuple(g_exprs), solved, tuple(equilibria), tuple(singular), damped, note, tuple(kinks))
 
