@@ -28,6 +28,8 @@ SIMPLIFY_MAX_OPS = 300
 # pythagoras expands its argument; above this many nodes (counted before expanding) it leaves it as it is:
 # an LU-solved acceleration of the triple pendulum (a few thousand nodes) did not expand in 300 s
 PYTHAGORAS_MAX_NODES = 600
+# below this many nodes it always runs (milliseconds), even once a shared display budget is spent
+PYTHAGORAS_SMALL_NODES = 150
 
 
 class BudgetExceeded(Exception):
@@ -124,6 +126,7 @@ def bounded(member: str, what: str, seconds: float, work: Callable[[], T], fallb
 _local = threading.local()
 _TIDY_CACHE: dict[sp.Expr, sp.Expr] = {}
 _TIDY_CACHE_SIZE = 2048
+_PYTHAGORAS_CACHE: dict[sp.Expr, sp.Expr] = {}
 
 
 @contextmanager
@@ -192,6 +195,33 @@ def tidy(expr: sp.Expr, seconds: float = SIMPLIFY_SECONDS) -> sp.Expr:
     return result
 
 
+def _merge_pairs(expr: sp.Expr, a: sp.Expr) -> sp.Expr:
+    """expr with every pair c sin²a + c cos²a (the same c) replaced by c."""
+    sin2, cos2 = sp.sin(a) ** 2, sp.cos(a) ** 2
+    by_sin: dict[sp.Expr, int] = {}
+    terms = list(sp.Add.make_args(expr))
+    for i, term in enumerate(terms):
+        if term.as_powers_dict().get(sp.sin(a)) == 2:
+            by_sin.setdefault(term / sin2, i)
+    if not by_sin:
+        return expr
+    merged = False
+    for i, term in enumerate(terms):
+        if term.as_powers_dict().get(sp.cos(a)) == 2:
+            j = by_sin.pop(term / cos2, None)
+            if j is not None:
+                terms[j], terms[i], merged = term / cos2, sp.Integer(0), True
+    return sp.Add(*terms) if merged else expr
+
+
+def _even_power(term: sp.Expr, a: sp.Expr) -> bool:
+    """Whether the product ``term`` has sin(a) or cos(a) to an even power (what sin² → 1 − cos² rewrites)."""
+    return any(
+        isinstance(base, (sp.sin, sp.cos)) and base.args[0] == a and e.is_Integer and e % 2 == 0
+        for base, e in term.as_powers_dict().items()
+    )
+
+
 def _angles(expr: sp.Expr) -> set[sp.Expr]:
     return {f.args[0] for f in expr.atoms(sp.sin, sp.cos, sp.tan)}
 
@@ -217,19 +247,35 @@ def pythagoras(expr: sp.Expr) -> sp.Expr:
     An expression larger than PYTHAGORAS_MAX_NODES is returned as it is (expanding it is the
     cost, and it can exceed any time bound: SymPy's expand never looks at the clock).
     """
-    if larger_than(expr, PYTHAGORAS_MAX_NODES):
-        return expr
+    if expr in _PYTHAGORAS_CACHE:
+        return _PYTHAGORAS_CACHE[expr]
+    if larger_than(expr, PYTHAGORAS_MAX_NODES) or (
+        larger_than(expr, PYTHAGORAS_SMALL_NODES) and _remaining(1.0) <= 0.01
+    ):
+        return expr  # too large to expand, or not small once the shared display budget is spent: as it is
+    result, complete = _pythagoras(expr)
+    if complete and len(_PYTHAGORAS_CACHE) < _TIDY_CACHE_SIZE:
+        _PYTHAGORAS_CACHE[expr] = result  # the document shows each residual and force two or three times
+    return result
+
+
+def _pythagoras(expr: sp.Expr) -> tuple[sp.Expr, bool]:
     angles = sorted({f.args[0] for f in expr.atoms(sp.sin, sp.cos)}, key=sp.default_sort_key)
     best = sp.expand(expr)
     for a in angles:
+        # c sin²a + c cos²a = c, pair by pair: what particles' speeds are made of, found without expanding
+        best = _merge_pairs(best, a)
         # only the terms with sin a or cos a change: rewrite and expand those, keep the rest as it is
         # (the same result as rewriting the whole expanded sum, at a fraction of the cost for long sums)
         touched: list[sp.Expr] = []
         rest: list[sp.Expr] = []
         for term in sp.Add.make_args(best):
             (touched if term.has(sp.sin(a), sp.cos(a)) else rest).append(term)
-        if not touched:
+        # only even powers of sin a or cos a change under the rewriting: none, nothing to try
+        if not touched or not any(_even_power(term, a) for term in touched):
             continue
+        if _remaining(1.0) <= 0.01 and larger_than(best, PYTHAGORAS_SMALL_NODES):
+            return best, False  # the shared display budget ran out: what is collapsed so far
         part, others = sp.Add(*touched), sp.Add(*rest)
         options = [
             best,
@@ -237,13 +283,13 @@ def pythagoras(expr: sp.Expr) -> sp.Expr:
             others + sp.expand(part.subs(sp.cos(a) ** 2, 1 - sp.sin(a) ** 2)),
         ]
         best = min(options, key=sp.count_ops)
-    return best
+    return best, True
 
 
 def is_zero(expr: sp.Expr) -> bool:
     """Decide expr == 0: exact cancellation first, then a budgeted simplification."""
     if larger_than(expr, PYTHAGORAS_MAX_NODES):
-        return tidy(expr) == 0
+        return not nonzero_somewhere(expr) and tidy(expr) == 0
     expanded = sp.expand(expr)
     if expanded == 0:
         return True
@@ -265,6 +311,11 @@ def nonzero_somewhere(expr: sp.Expr, digits: int = 30) -> bool:
     rng = random.Random(20261126)
     point = {s: sp.Float(rng.uniform(0.3, 1.7), digits) for s in expr.free_symbols}
     try:
+        if larger_than(expr, PYTHAGORAS_MAX_NODES):
+            # too large to expand into terms: its value to ``digits`` digits against an absolute floor far
+            # above the rounding (about 10^-digits of the intermediate values, which are of order one here)
+            value = abs(complex(sp.N(expr.xreplace(point), digits)))
+            return bool(math.isfinite(value) and value > 10.0 ** (8 - digits // 2))
         terms = [complex(sp.N(term.xreplace(point), digits)) for term in sp.Add.make_args(expr)]
     except (TypeError, ValueError, ArithmeticError):
         return False

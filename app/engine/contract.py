@@ -32,6 +32,10 @@ def parameters_json(parameters: tuple[Parameter, ...]) -> dict[str, dict[str, An
 
 
 DISPLAY_SECONDS = 6.0
+# From three coordinates on (no chapter scene has more than two), the display simplifications share less:
+# the residuals and forces of a chain rarely simplify beyond sin² + cos² = 1, and the user waits for them.
+LARGE_DISPLAY_SECONDS = 1.5
+LARGE_FROM = 3
 # Each member of the document beyond the equations has its own time bound (seconds); one that runs out
 # is left out with a note in "skipped", never a refusal of the system (app.engine.budget.bounded).
 MEMBER_SECONDS = {
@@ -51,7 +55,8 @@ def derivation_json(d: Derivation, scene: Scene | None = None, beyond: bool = Tr
     All display simplification shares one time budget (DISPLAY_SECONDS); each member beyond the
     equations has its own bound (MEMBER_SECONDS), and ``skipped`` lists those left out and why.
     """
-    with display_budget(DISPLAY_SECONDS):
+    seconds = DISPLAY_SECONDS if len(d.table.names) < LARGE_FROM else LARGE_DISPLAY_SECONDS
+    with display_budget(seconds):
         return _derivation_json(d, scene, beyond)
 
 
@@ -205,7 +210,12 @@ def add_beyond(
     """Hamilton's equations after h, the normal modes after them: steps and JSON, each within its own bound."""
     skipped = [] if skipped is None else skipped
     seconds = MEMBER_SECONDS
-    ham = bounded("hamilton", "Hamilton's equations", seconds["hamilton"],
+    ham = None
+    if not d.equations.closed_form and not d.equations.mass_matrix.is_diagonal():
+        skipped.append(Skipped("hamilton", "Hamilton's equations are left out: q̇ = M⁻¹(p − b) has no closed form "
+                               "short enough to read for this many coordinates (as with the accelerations)."))  # fmt: skip
+    else:
+        ham = bounded("hamilton", "Hamilton's equations", seconds["hamilton"],
                   lambda: (lambda h: (h, hamilton_steps(d, h), hamilton_json(d, h)))(hamilton(d)), None, skipped)  # fmt: skip
     modes = bounded("normal_modes", "The equilibria and normal modes", seconds["normal_modes"],
                     lambda: (lambda m: (normal_mode_steps(d, m), normal_modes_json(m, pr)))(
