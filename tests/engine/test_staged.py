@@ -114,3 +114,18 @@ def test_the_triple_pendulum_document_is_never_refused():
     assert any(s["title"] == "Accelerations" and "M^{-1}" in s["latex"] for s in doc["steps"])
     for member in notes:
         assert doc.get(member) in (None, [], {}), member
+
+
+def test_the_size_limit_admits_the_twelve_link_chain():
+    from app.engine.user_system import UserSystem
+    from app.service.user_checks import MAX_COORDINATES, MAX_PARTICLES, check_system
+
+    assert MAX_COORDINATES >= 12 and MAX_PARTICLES >= 12
+    system = chain(12)
+    data = {
+        "coordinates": list(system.coordinates),
+        "parameters": [{"name": p.name, "value": p.default} for p in system.parameters],
+        "particles": [{"mass": p.mass, "position": list(p.position)} for p in system.particles],
+        "potential": system.potential,
+    }
+    check_system(UserSystem.of(data))  # no refusal
