@@ -45,6 +45,8 @@ MEMBER_SECONDS = {
     "hamilton": 3.0,
     "normal_modes": 4.0,
 }
+# From LARGE_FROM coordinates on each bound is this share of its own: the equations come first
+LARGE_SHARE = 0.5
 
 
 def derivation_json(d: Derivation, scene: Scene | None = None, beyond: bool = True) -> dict[str, Any]:
@@ -96,6 +98,17 @@ def _shown(expr: sp.Expr) -> sp.Expr:
     return within_budget(lambda: _show(expr), expr, max(display_seconds_left(DISPLAY_SECONDS), 0.05))
 
 
+def _member_seconds(d: Derivation) -> dict[str, float]:
+    share = 1.0 if len(d.table.names) < LARGE_FROM else LARGE_SHARE
+    return {member: share * seconds for member, seconds in MEMBER_SECONDS.items()}
+
+
+def _equation_rows(d: Derivation, pr: Printer) -> list[str]:
+    """The textbook rows of the equations within what is left of the display budget, else each residual = 0."""
+    rows = within_budget(lambda: equation_rows(d, pr), None, max(display_seconds_left(DISPLAY_SECONDS), 0.5))
+    return rows if rows is not None else [f"{pr.tex(r)} = 0" for r in d.equations.residuals]
+
+
 def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[str, Any]:
     """Each q_ddot in closed form, or none (with a note) when the engine kept it as M⁻¹f."""
     eqs = d.equations
@@ -113,7 +126,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     table, eqs, en, red = d.table, d.equations, d.energetics, d.reduction
     pr = Printer(table.latex_names())
     skipped: list[Skipped] = list(d.skipped)
-    seconds = MEMBER_SECONDS
+    seconds = _member_seconds(d)
     forces = bounded("constraint_forces", "The forces of constraint", seconds["constraint_forces"],
                      lambda: constraint_forces(d), [], skipped)  # fmt: skip
     transformed = bounded("transformed", "The derivation in the declared new coordinates", seconds["transformed"],
@@ -130,7 +143,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "energy": pr.pair(_shown(en.energy)),
         "equations_of_motion": [
             {"coordinate": name, **pr.pair(_shown(r)), "latex": row}
-            for name, r, row in zip(table.names, eqs.residuals, equation_rows(d, pr), strict=True)
+            for name, r, row in zip(table.names, eqs.residuals, _equation_rows(d, pr), strict=True)
         ],
         "accelerations": _accelerations(d, pr, skipped),
         "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],
@@ -209,7 +222,7 @@ def add_beyond(
 ) -> None:
     """Hamilton's equations after h, the normal modes after them: steps and JSON, each within its own bound."""
     skipped = [] if skipped is None else skipped
-    seconds = MEMBER_SECONDS
+    seconds = _member_seconds(d)
     ham = None
     if not d.equations.closed_form and not d.equations.mass_matrix.is_diagonal():
         skipped.append(Skipped("hamilton", "Hamilton's equations are left out: q̇ = M⁻¹(p − b) has no closed form "
