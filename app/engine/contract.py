@@ -127,10 +127,12 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     pr = Printer(table.latex_names())
     skipped: list[Skipped] = list(d.skipped)
     seconds = _member_seconds(d)
+    none: tuple[ConstraintForce, ...] = ()
     forces = bounded("constraint_forces", "The forces of constraint", seconds["constraint_forces"],
-                     lambda: constraint_forces(d), [], skipped)  # fmt: skip
+                     lambda: constraint_forces(d), none, skipped)  # fmt: skip
     transformed = bounded("transformed", "The derivation in the declared new coordinates", seconds["transformed"],
                           lambda: _transformed(d), None, skipped)  # fmt: skip
+    no_steps: list[dict[str, str]] = []
     result: dict[str, Any] = {
         "coordinates": list(table.names),
         "angles": angle_coordinates(d),
@@ -169,7 +171,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
             "The step-by-step derivation",
             seconds["steps"],
             lambda: _steps(d, forces, pr, transformed),
-            [],
+            no_steps,
             skipped,
         ),  # fmt: skip
         "scene": scene_json(scene) if scene is not None else None,
@@ -212,7 +214,7 @@ def _transformed(d: Derivation) -> tuple[Transformed, dict[str, Any]] | None:
 
 
 def _steps(
-    d: Derivation, forces: list[ConstraintForce], pr: Printer, transformed: tuple[Transformed, Any] | None
+    d: Derivation, forces: tuple[ConstraintForce, ...], pr: Printer, transformed: tuple[Transformed, Any] | None
 ) -> list[dict[str, str]]:
     return build_steps(d) + constraint_steps(forces, pr) + (transform_steps(transformed[0]) if transformed else [])
 

@@ -91,14 +91,14 @@ class _Compiled:
         # a user system's key is its declaration (and its constraint forces), known before any code
         # generation: a warm system is found here without printing a line of its source again
         scene = key is not None
-        key = key if scene else system_key(d, forces)
-        found = self._cached(key)
+        found_key = key if key is not None else system_key(d, forces)
+        found = self._cached(found_key)
         if found is not None:
             return found
         with self.lock:
-            building = self._building.setdefault(key, threading.Lock())
+            building = self._building.setdefault(found_key, threading.Lock())
         with building:
-            return self._cached(key) or self._build(key, d, forces, scene)
+            return self._cached(found_key) or self._build(found_key, d, forces, scene)
 
     def _build(
         self, key: str, d: Derivation, forces: Sequence[dict[str, Any]], scene: bool
