@@ -1,6 +1,6 @@
 """Systems as large as a course needs (issue 35), measured in one run.
 
-    PYTHONPATH=$PWD .venv/bin/python -m benchmarks.bench_scale [N_MAX]
+    PYTHONPATH=$PWD .venv/bin/python -m benchmarks.bench_scale [N_MAX]   (N_MAX = 0: the simulations only)
 
 1. The N-link planar pendulum declared as particles (as the playground and the API invite it), N = 1..N_MAX
    (8 by default): the whole document through ``POST /api/derive`` (the app in-process, its worker pool as
@@ -122,7 +122,7 @@ def warm_simulation(client: TestClient) -> None:
         assert response.status_code == 200, response.text[:300]
 
     def scene(i: int) -> None:
-        body = {"initial": {"a": 1.0 + 0.01 * i, "b": 2.0}, "t_end": 10.0, "samples": 200}
+        body = {"initial": {"theta1": 1.0 + 0.01 * i, "theta2": 2.0}, "t_end": 10.0, "samples": 200}
         response = client.post("/api/scenes/double-pendulum/simulate", json=body)
         assert response.status_code == 200, response.text[:300]
 
