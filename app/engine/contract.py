@@ -117,7 +117,7 @@ def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[s
     skipped.append(Skipped(
         "accelerations",
         "The accelerations in closed form are left out: solving M q̈ = f symbolically for this many coordinates "
-        "gives expressions too long to read, so they stay M⁻¹f (mass_matrix and forcing), solved numerically.",
+        "gives expressions too long to read, so they stay M⁻¹f, with the mass matrix M and the forcing f shown, solved numerically.",
     ))  # fmt: skip
     return {}
 

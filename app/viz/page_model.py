@@ -65,6 +65,8 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         if doc["accelerations"]
         else [r"\ddot{q} = M^{-1} f"],
         "momenta": [f"{latex('p_' + c)} = {doc['momenta'][c]['latex']}" for c in q],
+        # members of the document left out within their own bounds, each with its reason (issue 35)
+        "skipped": [s["reason"] for s in doc.get("skipped") or []],
         "conserved": conserved,
         "h_equals_e": doc["hamiltonian_equals_energy"],
         "h_reason": doc["hamiltonian_energy_reason"],
