@@ -27,7 +27,7 @@ class Settings(BaseSettings):
     model_config = SettingsConfigDict(env_prefix="LAGRANGE_", frozen=True, extra="ignore")
 
     cache_dir: Path = Field(default=ROOT / ".cache", description="compiled kernels, generated code, cached derivations")
-    workers: int = Field(default=0, ge=0, description="worker processes per web process; 0: from the container's CPUs")
+    workers: int = Field(default=0, ge=0, description="worker processes per web process; 0: two where memory allows")
     worker_memory_mb: int = Field(
         default=0, ge=0, description="memory one job may add to its worker; 0: from the budget"
     )
@@ -117,7 +117,9 @@ class Settings(BaseSettings):
 
     @property
     def worker_count(self) -> int:
-        wanted = self.workers or max(1, min(2, container_cpus() // self.web_process_count))
+        # two by default (where memory allows), whatever the CPUs: with one, a job that runs to its time limit
+        # held every other session's derivation behind it (19 s for a one-link pendulum; issue 35)
+        wanted = self.workers or 2
         # fewer workers, each able to take a useful job (128 MB), rather than many that cannot
         while wanted > 1 and self._per_worker_mb(wanted) < MIN_JOB_MB:
             wanted -= 1

@@ -9,11 +9,14 @@ serve user systems).  Elsewhere the budget degrades to a size gate alone.
 
 from __future__ import annotations
 
+import math
+import random
 import signal
 import threading
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from dataclasses import dataclass
 from typing import TypeVar
 
 import sympy as sp
@@ -22,6 +25,11 @@ T = TypeVar("T")
 
 SIMPLIFY_SECONDS = 0.5
 SIMPLIFY_MAX_OPS = 300
+# pythagoras expands its argument; above this many nodes (counted before expanding) it leaves it as it is:
+# an LU-solved acceleration of the triple pendulum (a few thousand nodes) did not expand in 300 s
+PYTHAGORAS_MAX_NODES = 600
+# below this many nodes it always runs (milliseconds), even once a shared display budget is spent
+PYTHAGORAS_SMALL_NODES = 150
 
 
 class BudgetExceeded(Exception):
@@ -79,9 +87,46 @@ def within_budget(work: Callable[[], T], fallback: T, seconds: float) -> T:
         return fallback
 
 
+@dataclass(frozen=True)
+class Skipped:
+    """A member of the document left out, and why (shown in its place; never a refusal of the system)."""
+
+    member: str
+    reason: str
+
+
+# Time kept back from a member's bound for the rest of the document when an outer limit is near.
+MEMBER_RESERVE_SECONDS = 1.0
+
+
+def bounded(member: str, what: str, seconds: float, work: Callable[[], T], fallback: T, skipped: list[Skipped]) -> T:
+    """``work()`` within its own time bound; past it, ``fallback`` and a note in ``skipped``.
+
+    The bound never reaches into an enclosing limit's last MEMBER_RESERVE_SECONDS, so a slow member
+    leaves time for the rest of the document instead of turning into a refusal of the whole system.
+    ``what`` names the part in the note ("Hamilton's equations").
+    """
+    outer, _ = signal.getitimer(signal.ITIMER_REAL)
+    if outer > 0 and threading.current_thread() is threading.main_thread():
+        seconds = min(seconds, outer - MEMBER_RESERVE_SECONDS)
+    if seconds <= 0.01:
+        skipped.append(Skipped(member, f"{what} left out: the time for this document was used up by the parts above."))
+        return fallback
+    try:
+        with time_limit(seconds):
+            return work()
+    except BudgetExceeded:
+        skipped.append(
+            Skipped(member, f"{what} left out: working it out took longer than its {seconds:.3g} s bound. "
+                    "The rest of the derivation is complete; this is a limit of the engine, not of the system.")
+        )  # fmt: skip
+        return fallback
+
+
 _local = threading.local()
 _TIDY_CACHE: dict[sp.Expr, sp.Expr] = {}
 _TIDY_CACHE_SIZE = 2048
+_PYTHAGORAS_CACHE: dict[sp.Expr, sp.Expr] = {}
 
 
 @contextmanager
@@ -104,6 +149,11 @@ def unbudgeted() -> Iterator[None]:
     finally:
         if getattr(_local, "deadline", None) is not None:
             _local.deadline += time.monotonic() - started
+
+
+def display_seconds_left(seconds: float) -> float:
+    """What is left of the shared display budget (at most ``seconds``)."""
+    return _remaining(seconds)
 
 
 def _remaining(seconds: float) -> float:
@@ -145,8 +195,48 @@ def tidy(expr: sp.Expr, seconds: float = SIMPLIFY_SECONDS) -> sp.Expr:
     return result
 
 
+def _merge_pairs(expr: sp.Expr, a: sp.Expr) -> sp.Expr:
+    """expr with every pair c sin²a + c cos²a (the same c) replaced by c."""
+    sin2, cos2 = sp.sin(a) ** 2, sp.cos(a) ** 2
+    by_sin: dict[sp.Expr, int] = {}
+    terms = list(sp.Add.make_args(expr))
+    for i, term in enumerate(terms):
+        if term.as_powers_dict().get(sp.sin(a)) == 2:
+            by_sin.setdefault(term / sin2, i)
+    if not by_sin:
+        return expr
+    merged = False
+    for i, term in enumerate(terms):
+        if term.as_powers_dict().get(sp.cos(a)) == 2:
+            j = by_sin.pop(term / cos2, None)
+            if j is not None:
+                terms[j], terms[i], merged = term / cos2, sp.Integer(0), True
+    return sp.Add(*terms) if merged else expr
+
+
+def _even_power(term: sp.Expr, a: sp.Expr) -> bool:
+    """Whether the product ``term`` has sin(a) or cos(a) to an even power (what sin² → 1 − cos² rewrites)."""
+    return any(
+        isinstance(base, (sp.sin, sp.cos)) and base.args[0] == a and e.is_Integer and e % 2 == 0
+        for base, e in term.as_powers_dict().items()
+    )
+
+
 def _angles(expr: sp.Expr) -> set[sp.Expr]:
     return {f.args[0] for f in expr.atoms(sp.sin, sp.cos, sp.tan)}
+
+
+def larger_than(expr: sp.Basic, nodes: int) -> bool:
+    """True when the expression tree has more than ``nodes`` nodes, found without walking past that many.
+
+    Solved accelerations share their subexpressions (LU elimination reuses each pivot's row), so a
+    full walk (count_ops, has, free_symbols, printing) of a six-link chain visits millions of nodes;
+    this walk stops at the limit.
+    """
+    for seen, _ in enumerate(sp.preorder_traversal(expr), start=1):
+        if seen > nodes:
+            return True
+    return False
 
 
 def pythagoras(expr: sp.Expr) -> sp.Expr:
@@ -154,18 +244,38 @@ def pythagoras(expr: sp.Expr) -> sp.Expr:
 
     For each angle both rewritings (sin² → 1 − cos², cos² → 1 − sin²) are tried
     and the shorter result kept, so a kinetic energy keeps its natural form.
+    An expression larger than PYTHAGORAS_MAX_NODES is returned as it is (expanding it is the
+    cost, and it can exceed any time bound: SymPy's expand never looks at the clock).
     """
+    if expr in _PYTHAGORAS_CACHE:
+        return _PYTHAGORAS_CACHE[expr]
+    if larger_than(expr, PYTHAGORAS_MAX_NODES) or (
+        larger_than(expr, PYTHAGORAS_SMALL_NODES) and _remaining(1.0) <= 0.01
+    ):
+        return expr  # too large to expand, or not small once the shared display budget is spent: as it is
+    result, complete = _pythagoras(expr)
+    if complete and len(_PYTHAGORAS_CACHE) < _TIDY_CACHE_SIZE:
+        _PYTHAGORAS_CACHE[expr] = result  # the document shows each residual and force two or three times
+    return result
+
+
+def _pythagoras(expr: sp.Expr) -> tuple[sp.Expr, bool]:
     angles = sorted({f.args[0] for f in expr.atoms(sp.sin, sp.cos)}, key=sp.default_sort_key)
     best = sp.expand(expr)
     for a in angles:
+        # c sin²a + c cos²a = c, pair by pair: what particles' speeds are made of, found without expanding
+        best = _merge_pairs(best, a)
         # only the terms with sin a or cos a change: rewrite and expand those, keep the rest as it is
         # (the same result as rewriting the whole expanded sum, at a fraction of the cost for long sums)
         touched: list[sp.Expr] = []
         rest: list[sp.Expr] = []
         for term in sp.Add.make_args(best):
             (touched if term.has(sp.sin(a), sp.cos(a)) else rest).append(term)
-        if not touched:
+        # only even powers of sin a or cos a change under the rewriting: none, nothing to try
+        if not touched or not any(_even_power(term, a) for term in touched):
             continue
+        if _remaining(1.0) <= 0.01 and larger_than(best, PYTHAGORAS_SMALL_NODES):
+            return best, False  # the shared display budget ran out: what is collapsed so far
         part, others = sp.Add(*touched), sp.Add(*rest)
         options = [
             best,
@@ -173,14 +283,42 @@ def pythagoras(expr: sp.Expr) -> sp.Expr:
             others + sp.expand(part.subs(sp.cos(a) ** 2, 1 - sp.sin(a) ** 2)),
         ]
         best = min(options, key=sp.count_ops)
-    return best
+    return best, True
 
 
 def is_zero(expr: sp.Expr) -> bool:
     """Decide expr == 0: exact cancellation first, then a budgeted simplification."""
+    if larger_than(expr, PYTHAGORAS_MAX_NODES):
+        return not nonzero_somewhere(expr) and tidy(expr) == 0
     expanded = sp.expand(expr)
     if expanded == 0:
         return True
+    if nonzero_somewhere(expanded):
+        return False
     if pythagoras(expanded) == 0:
         return True
     return tidy(expanded) == 0
+
+
+def nonzero_somewhere(expr: sp.Expr, digits: int = 30) -> bool:
+    """True when expr is certainly not identically zero: its value at a random point is clearly nonzero.
+
+    The value is computed to ``digits`` digits and compared with the size of the terms it sums, so
+    rounding in a sum that cancels exactly (about 10⁻³⁰ of its terms) is never taken for a nonzero
+    value.  False says nothing (the point may be a zero, or outside the domain): the caller goes on
+    to simplify.  This spares the simplification of every derivative that is plainly nonzero.
+    """
+    rng = random.Random(20261126)
+    point = {s: sp.Float(rng.uniform(0.3, 1.7), digits) for s in expr.free_symbols}
+    try:
+        if larger_than(expr, PYTHAGORAS_MAX_NODES):
+            # too large to expand into terms: its value to ``digits`` digits against an absolute floor far
+            # above the rounding (about 10^-digits of the intermediate values, which are of order one here)
+            value = abs(complex(sp.N(expr.xreplace(point), digits)))
+            return bool(math.isfinite(value) and value > 10.0 ** (8 - digits // 2))
+        terms = [complex(sp.N(term.xreplace(point), digits)) for term in sp.Add.make_args(expr)]
+    except (TypeError, ValueError, ArithmeticError):
+        return False
+    scale = sum(abs(x) for x in terms)
+    value = abs(sum(terms))
+    return bool(math.isfinite(scale) and scale > 0 and value > 1e-12 * scale)

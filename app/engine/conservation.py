@@ -55,11 +55,21 @@ class Energetics:
 
 def velocity_degrees(expr: sp.Expr, velocities: tuple[sp.Symbol, ...]) -> dict[int, sp.Expr]:
     """Split a polynomial in the velocities into its homogeneous parts by degree."""
-    parts: dict[int, sp.Expr] = {}
+    parts: dict[int, list[sp.Expr]] = {}
     for term in sp.Add.make_args(sp.expand(expr)):
-        degree = sum(sp.degree(term, v) for v in velocities) if term.has(*velocities) else 0
-        parts[degree] = parts.get(degree, sp.Integer(0)) + term
-    return parts
+        degree = _degree(term, velocities)
+        parts.setdefault(degree, []).append(term)
+    return {degree: sp.Add(*terms) for degree, terms in parts.items()}
+
+
+def _degree(term: sp.Expr, velocities: tuple[sp.Symbol, ...]) -> int:
+    """The degree of one product in the velocities: read off its powers, else (a velocity inside a function) SymPy's."""
+    powers = term.as_powers_dict()
+    plain = sum(int(e) for v, e in powers.items() if v in velocities and e.is_Integer)
+    inside = [b for b, e in powers.items() if b not in velocities or not e.is_Integer]
+    if any(b.has(*velocities) for b in inside):
+        return sum(sp.degree(term, v) for v in velocities)
+    return plain
 
 
 def energetics(mech: Mechanics, eqs: Equations) -> Energetics:

@@ -6,7 +6,7 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine.budget import display_budget, pythagoras
+from app.engine.budget import Skipped, bounded, display_budget, display_seconds_left, pythagoras, within_budget
 from app.engine.constraints import ConstraintForce, constraint_forces
 from app.engine.derive import Derivation
 from app.engine.errata import errata_json
@@ -32,6 +32,21 @@ def parameters_json(parameters: tuple[Parameter, ...]) -> dict[str, dict[str, An
 
 
 DISPLAY_SECONDS = 6.0
+# From three coordinates on (no chapter scene has more than two), the display simplifications share less:
+# the residuals and forces of a chain rarely simplify beyond sin² + cos² = 1, and the user waits for them.
+LARGE_DISPLAY_SECONDS = 1.5
+LARGE_FROM = 3
+# Each member of the document beyond the equations has its own time bound (seconds); one that runs out
+# is left out with a note in "skipped", never a refusal of the system (app.engine.budget.bounded).
+MEMBER_SECONDS = {
+    "steps": 8.0,
+    "constraint_forces": 3.0,
+    "transformed": 3.0,
+    "hamilton": 3.0,
+    "normal_modes": 4.0,
+}
+# From LARGE_FROM coordinates on each bound is this share of its own: the equations come first
+LARGE_SHARE = 0.5
 
 
 def derivation_json(d: Derivation, scene: Scene | None = None, beyond: bool = True) -> dict[str, Any]:
@@ -39,9 +54,11 @@ def derivation_json(d: Derivation, scene: Scene | None = None, beyond: bool = Tr
 
     ``scene``, for a chapter scene, adds the scene block and the chapter's errata.
     ``beyond`` adds Hamilton's equations and the normal modes (steps and JSON).
-    All display simplification shares one time budget (DISPLAY_SECONDS).
+    All display simplification shares one time budget (DISPLAY_SECONDS); each member beyond the
+    equations has its own bound (MEMBER_SECONDS), and ``skipped`` lists those left out and why.
     """
-    with display_budget(DISPLAY_SECONDS):
+    seconds = DISPLAY_SECONDS if len(d.table.names) < LARGE_FROM else LARGE_DISPLAY_SECONDS
+    with display_budget(seconds):
         return _derivation_json(d, scene, beyond)
 
 
@@ -76,11 +93,46 @@ def symbol_names(d: Derivation) -> dict[str, dict[str, str]]:
     )  # fmt: skip
 
 
+def _shown(expr: sp.Expr) -> sp.Expr:
+    """The display form within what is left of the display budget; SymPy's own form when it runs out."""
+    return within_budget(lambda: _show(expr), expr, max(display_seconds_left(DISPLAY_SECONDS), 0.05))
+
+
+def _member_seconds(d: Derivation) -> dict[str, float]:
+    share = 1.0 if len(d.table.names) < LARGE_FROM else LARGE_SHARE
+    return {member: share * seconds for member, seconds in MEMBER_SECONDS.items()}
+
+
+def _equation_rows(d: Derivation, pr: Printer) -> list[str]:
+    """The textbook rows of the equations within what is left of the display budget, else each residual = 0."""
+    rows = within_budget(lambda: equation_rows(d, pr), None, max(display_seconds_left(DISPLAY_SECONDS), 0.5))
+    return rows if rows is not None else [f"{pr.tex(r)} = 0" for r in d.equations.residuals]
+
+
+def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[str, Any]:
+    """Each q_ddot in closed form, or none (with a note) when the engine kept it as M⁻¹f."""
+    eqs = d.equations
+    if eqs.closed_form:
+        return {name: pr.pair(_shown(a)) for name, a in zip(d.table.names, eqs.accelerations, strict=True)}
+    skipped.append(Skipped(
+        "accelerations",
+        "The accelerations in closed form are left out: solving M q̈ = f symbolically for this many coordinates "
+        "gives expressions too long to read, so they stay M⁻¹f, with the mass matrix M and the forcing f shown, solved numerically.",
+    ))  # fmt: skip
+    return {}
+
+
 def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) -> dict[str, Any]:
     table, eqs, en, red = d.table, d.equations, d.energetics, d.reduction
     pr = Printer(table.latex_names())
-    forces = constraint_forces(d)
-    transformed = transform(d.system)
+    skipped: list[Skipped] = list(d.skipped)
+    seconds = _member_seconds(d)
+    none: tuple[ConstraintForce, ...] = ()
+    forces = bounded("constraint_forces", "The forces of constraint", seconds["constraint_forces"],
+                     lambda: constraint_forces(d), none, skipped)  # fmt: skip
+    transformed = bounded("transformed", "The derivation in the declared new coordinates", seconds["transformed"],
+                          lambda: _transformed(d), None, skipped)  # fmt: skip
+    no_steps: list[dict[str, str]] = []
     result: dict[str, Any] = {
         "coordinates": list(table.names),
         "angles": angle_coordinates(d),
@@ -89,22 +141,22 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "kinetic": pr.pair(d.mechanics.T) if d.mechanics.T is not None else None,
         "potential": pr.pair(d.mechanics.U) if d.mechanics.U is not None else None,
         "lagrangian": pr.pair(d.mechanics.L),
-        "hamiltonian": pr.pair(_show(en.hamiltonian)),
-        "energy": pr.pair(_show(en.energy)),
+        "hamiltonian": pr.pair(_shown(en.hamiltonian)),
+        "energy": pr.pair(_shown(en.energy)),
         "equations_of_motion": [
-            {"coordinate": name, **pr.pair(_show(r)), "latex": row}
-            for name, r, row in zip(table.names, eqs.residuals, equation_rows(d, pr), strict=True)
+            {"coordinate": name, **pr.pair(_shown(r)), "latex": row}
+            for name, r, row in zip(table.names, eqs.residuals, _equation_rows(d, pr), strict=True)
         ],
-        "accelerations": {name: pr.pair(_show(a)) for name, a in zip(table.names, eqs.accelerations, strict=True)},
+        "accelerations": _accelerations(d, pr, skipped),
         "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],
-        "forcing": [pr.pair(_show(x)) for x in eqs.forcing],
-        "momenta": {name: pr.pair(_show(p)) for name, p in zip(table.names, eqs.momenta, strict=True)},
+        "forcing": [pr.pair(_shown(x)) for x in eqs.forcing],
+        "momenta": {name: pr.pair(_shown(p)) for name, p in zip(table.names, eqs.momenta, strict=True)},
         # particles held at a fixed distance from the origin or from each other (rods for the drawing)
         "fixed_distances": fixed_distances(d),
         "generalized_forces": {name: pr.pair(f) for name, f in zip(table.names, d.mechanics.Q, strict=True) if f != 0},
         "cyclic": list(en.cyclic),
         "conserved": [
-            {"name": c.name, "latex_name": c.latex_name, **pr.pair(_show(c.expr)), "reason": c.reason}
+            {"name": c.name, "latex_name": c.latex_name, **pr.pair(_shown(c.expr)), "reason": c.reason}
             for c in en.conserved
         ],
         "explicit_time_derivative": pr.pair(en.dL_dt),
@@ -114,13 +166,21 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "hamiltonian_conserved_reason": en.h_conserved_reason,
         "energy_minus_hamiltonian": pr.pair(en.energy_minus_h),
         "effective_potential": None,
-        "steps": build_steps(d) + constraint_steps(forces, pr) + (transform_steps(transformed) if transformed else []),
+        "steps": bounded(
+            "steps",
+            "The step-by-step derivation",
+            seconds["steps"],
+            lambda: _steps(d, forces, pr, transformed),
+            no_steps,
+            skipped,
+        ),  # fmt: skip
         "scene": scene_json(scene) if scene is not None else None,
         "errata": errata_json(scene, pr.names) if scene else [],
         "constraint_forces": [constraint_force_json(f, pr) for f in forces],
-        "transformed": transformed_json(transformed) if transformed is not None else None,
+        "transformed": transformed[1] if transformed is not None else None,
         "hamilton": None,
         "normal_modes": [],
+        "skipped": [],
     }
     if red is not None:
         result["effective_potential"] = {
@@ -137,36 +197,64 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         }
     if beyond:
         # built last, so that they never take the chapter's steps' share of the display budget
-        add_beyond(d, scene, result, pr)
+        add_beyond(d, scene, result, pr, skipped)
     if scene is not None:
         # a chapter scene explains each step in its own terms; the generic sentence stays otherwise
         result["steps"] = [
             {**s, "explanation": reason(scene.id, s["title"]) or s["explanation"]} for s in result["steps"]
         ]
+    result["skipped"] = [{"member": s.member, "reason": s.reason} for s in skipped]
     return result
 
 
-def add_beyond(d: Derivation, scene: Scene | None, result: dict[str, Any], pr: Printer) -> None:
-    """Hamilton's equations after h, the normal modes after them: steps and JSON."""
-    ham = hamilton(d)
-    modes = normal_modes(d, held_momenta(d, scene))
+def _transformed(d: Derivation) -> tuple[Transformed, dict[str, Any]] | None:
+    """The declared change of coordinates, derived and printed (None when none is declared)."""
+    tr = transform(d.system)
+    return (tr, transformed_json(tr)) if tr is not None else None
+
+
+def _steps(
+    d: Derivation, forces: tuple[ConstraintForce, ...], pr: Printer, transformed: tuple[Transformed, Any] | None
+) -> list[dict[str, str]]:
+    return build_steps(d) + constraint_steps(forces, pr) + (transform_steps(transformed[0]) if transformed else [])
+
+
+def add_beyond(
+    d: Derivation, scene: Scene | None, result: dict[str, Any], pr: Printer, skipped: list[Skipped] | None = None
+) -> None:
+    """Hamilton's equations after h, the normal modes after them: steps and JSON, each within its own bound."""
+    skipped = [] if skipped is None else skipped
+    seconds = _member_seconds(d)
+    ham = None
+    if not d.equations.closed_form and not d.equations.mass_matrix.is_diagonal():
+        skipped.append(Skipped("hamilton", "Hamilton's equations are left out: q̇ = M⁻¹(p − b) has no closed form "
+                               "short enough to read for this many coordinates (as with the accelerations)."))  # fmt: skip
+    else:
+        ham = bounded("hamilton", "Hamilton's equations", seconds["hamilton"],
+                  lambda: (lambda h: (h, hamilton_steps(d, h), hamilton_json(d, h)))(hamilton(d)), None, skipped)  # fmt: skip
+    modes = bounded("normal_modes", "The equilibria and normal modes", seconds["normal_modes"],
+                    lambda: (lambda m: (normal_mode_steps(d, m), normal_modes_json(m, pr)))(
+                        normal_modes(d, held_momenta(d, scene))), None, skipped)  # fmt: skip
     steps = result["steps"]
     titles = [s["title"] for s in steps]
     # Hamilton's equations right after h (and after the power of the forces when there is one)
     after = max(
-        i + 1
-        for i, t in enumerate(titles)
-        if t in ("Hamiltonian", "Is h equal to E?", "Power of the non-conservative forces")
+        (
+            i + 1
+            for i, t in enumerate(titles)
+            if t in ("Hamiltonian", "Is h equal to E?", "Power of the non-conservative forces")
+        ),
+        default=len(steps),
     )
     # the normal modes after the chapter's own steps, before constraint forces and coordinate changes
     end = next(
         (i for i, t in enumerate(titles) if t in ("Constraints in Cartesian form", "Change of coordinates")), len(steps)
     )
     result["steps"] = (
-        steps[:after] + hamilton_steps(d, ham) + steps[after:end] + normal_mode_steps(d, modes) + steps[end:]
+        steps[:after] + (ham[1] if ham else []) + steps[after:end] + (modes[0] if modes else []) + steps[end:]
     )
-    result["hamilton"] = hamilton_json(d, ham)
-    result["normal_modes"] = normal_modes_json(modes, pr)
+    result["hamilton"] = ham[2] if ham else None
+    result["normal_modes"] = modes[1] if modes else []
 
 
 def scene_json(scene: Scene) -> dict[str, Any]:

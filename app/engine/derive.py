@@ -6,11 +6,14 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from app.engine.budget import Skipped, bounded
 from app.engine.conservation import Energetics, energetics
 from app.engine.lagrange import Equations, euler_lagrange
 from app.engine.mechanics import Mechanics, build_mechanics
 from app.engine.reduction import Reduction, reduce_to_one
 from app.scenes.types import System
+
+REDUCTION_SECONDS = 4.0
 
 
 @dataclass(frozen=True)
@@ -22,6 +25,8 @@ class Derivation:
     equations: Equations
     energetics: Energetics
     reduction: Reduction | None
+    # members left out of the derivation itself, each with its reason (the document adds its own)
+    skipped: tuple[Skipped, ...] = ()
 
     @property
     def table(self):
@@ -44,8 +49,13 @@ def derive(system: System) -> Derivation:
     mech = build_mechanics(system)
     eqs = euler_lagrange(mech)
     en = energetics(mech, eqs)
-    red = reduce_to_one(mech, eqs, en, positive_names(system))
-    return Derivation(system, mech, eqs, en, red)
+    skipped: list[Skipped] = []
+    # the one-coordinate reduction (effective potential, equilibria) is a refinement with its own bound
+    red = bounded(
+        "effective_potential", "The reduction to one coordinate (effective potential and its equilibria)",
+        REDUCTION_SECONDS, lambda: reduce_to_one(mech, eqs, en, positive_names(system)), None, skipped,
+    )  # fmt: skip
+    return Derivation(system, mech, eqs, en, red, tuple(skipped))
 
 
 def substitute_cyclic(expr: sp.Expr, red: Reduction) -> sp.Expr:

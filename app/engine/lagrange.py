@@ -21,12 +21,18 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from app.engine.budget import pythagoras
+from app.engine.budget import larger_than, pythagoras
 from app.engine.errors import DerivationError
+from app.engine.fast import Fast, convertible, diff, expand
 from app.engine.mechanics import Mechanics
 
 # Closed forms by Cramer's rule up to this many coordinates; LU elimination beyond.
 CRAMER_MAX = 2
+# A solved acceleration with more nodes than this is not a closed form worth showing or compiling:
+# the document shows M q_ddot = f, and the numerics solve M q_ddot = f by LU at each step.
+CLOSED_FORM_MAX_NODES = 400
+# From this many coordinates on, the derivatives are taken on symengine (app.engine.fast).
+SYMENGINE_FROM = 3
 
 
 @dataclass(frozen=True)
@@ -38,6 +44,9 @@ class Equations:
     mass_matrix: sp.Matrix
     forcing: sp.Matrix
     accelerations: tuple[sp.Expr, ...]
+    # whether the accelerations are short enough to show and compile; otherwise they are M⁻¹f, left
+    # unexpanded (their tree shares subexpressions: never walk it whole, nor expand it)
+    closed_form: bool = True
 
 
 # Smallest singular value, relative to the largest, below which an equilibrated M counts as singular.
@@ -97,7 +106,8 @@ def _numerically_singular(M: sp.Matrix, symbols: list[sp.Symbol], trials: int = 
     return conclusive > 0
 
 
-def euler_lagrange(mech: Mechanics) -> Equations:
+def _on_sympy(mech: Mechanics) -> tuple[tuple[sp.Expr, ...], ...]:
+    """dL/dq, p, dp/dt, the residuals E, the rows of M and f, in SymPy (any allowed function)."""
     table = mech.table
     L = mech.L
     q, qd, qdd = table.q, table.qd, table.qdd
@@ -108,9 +118,47 @@ def euler_lagrange(mech: Mechanics) -> Equations:
     ddt = tuple(table.dt(p) for p in momenta)
     # E_k = d/dt p_k - dL/dq_k - Q_k  (= 0 on the motion)
     residuals = tuple(d - g - f for d, g, f in zip(ddt, dL_dq, mech.Q, strict=True))
-
     # M_jk = dp_j/dq_dot_k: the coefficient of q_ddot_k in E_j
-    M = sp.Matrix([[sp.diff(p, s) for s in qd] for p in momenta])
+    M = tuple(sp.diff(p, s) for p in momenta for s in qd)
+    # f = -E|_{q_ddot = 0}, so that M q_ddot = f
+    zero_acc = dict.fromkeys(qdd, sp.Integer(0))
+    forcing = tuple(-sp.expand(r).xreplace(zero_acc) for r in residuals)
+    return dL_dq, momenta, ddt, residuals, M, forcing
+
+
+def _on_symengine(mech: Mechanics) -> tuple[tuple[sp.Expr, ...], ...]:
+    """The same as _on_sympy, each derivative taken by symengine, each result converted back once."""
+    table = mech.table
+    fast = Fast((*table.q, *table.qd, *table.qdd, *table.params, table.t))
+    q, qd, qdd = ([fast.to(s) for s in group] for group in (table.q, table.qd, table.qdd))
+    t, L = fast.to(table.t), fast.to(mech.L)
+
+    def dt(e):
+        # d/dt e = de/dt + sum_k (de/dq_k) q_dot_k + (de/dq_dot_k) q_ddot_k
+        return diff(e, t) + sum((diff(e, a) * b + diff(e, b) * c for a, b, c in zip(q, qd, qdd, strict=True)), 0)
+
+    dL_dq = [diff(L, s) for s in q]
+    momenta = [diff(L, s) for s in qd]
+    ddt = [dt(p) for p in momenta]
+    residuals = [d - g - fast.to(f) for d, g, f in zip(ddt, dL_dq, mech.Q, strict=True)]
+    M = [diff(p, s) for p in momenta for s in qd]
+    zero_acc = dict.fromkeys(qdd, 0)
+    forcing = [-expand(r).subs(zero_acc) for r in residuals]
+    return tuple(fast.back_all(x) for x in (dL_dq, momenta, ddt, residuals, M, forcing))
+
+
+def euler_lagrange(mech: Mechanics) -> Equations:
+    table = mech.table
+    q, qd, qdd = table.q, table.qd, table.qdd
+    # the derivatives on symengine for the larger systems, when every function in L and Q is one it
+    # differentiates as SymPy does; the small ones (every chapter scene) keep SymPy's forms, which the
+    # document shows as they come (symengine's are equal but grouped differently)
+    fast = len(q) >= SYMENGINE_FROM and convertible((mech.L, *mech.Q))
+    work = _on_symengine if fast else _on_sympy
+    dL_dq, momenta, ddt, residuals, entries, forcing_entries = work(mech)
+    n = len(q)
+    # M_jk = dp_j/dq_dot_k: the coefficient of q_ddot_k in E_j
+    M = sp.Matrix(n, n, entries)
     if any(M.has(s) for s in (*qd, *qdd)):
         raise DerivationError(
             "the mass matrix d²L/dq̇² depends on the velocities, so L is not quadratic in them; "
@@ -127,9 +175,7 @@ def euler_lagrange(mech: Mechanics) -> Equations:
             "the mass matrix d²L/dq̇² is singular: the Euler-Lagrange equations do not determine "
             "every acceleration (is a coordinate missing from T, or are two coordinates redundant?)"
         )
-    # f = -E|_{q_ddot = 0}, so that M q_ddot = f
-    zero_acc = dict.fromkeys(qdd, sp.Integer(0))
-    forcing = sp.Matrix([-sp.expand(r).xreplace(zero_acc) for r in residuals])
+    forcing = sp.Matrix(forcing_entries)
     if M.shape[0] <= CRAMER_MAX:
         # Cramer's rule, q_ddot = adj(M) f / det M, with sin² + cos² = 1 collected:
         # compact closed forms that display without further simplification
@@ -139,4 +185,5 @@ def euler_lagrange(mech: Mechanics) -> Equations:
         # q_ddot = M^-1 f by LU elimination, untidied: a 3x3 adjugate tidied term by term cost more
         # than the whole 4-coordinate elimination (the display tidies what it shows, in its own budget)
         solved = list(M.LUsolve(forcing))
-    return Equations(dL_dq, momenta, ddt, residuals, M, forcing, tuple(solved))
+    closed_form = not any(larger_than(a, CLOSED_FORM_MAX_NODES) for a in solved)
+    return Equations(dL_dq, momenta, ddt, residuals, M, forcing, tuple(solved), closed_form)

@@ -193,13 +193,22 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             "The equations are linear in the accelerations, M q̈ = f, with M the Hessian of L in the velocities.",
         )
     )
-    acc = [display(a) for a in eqs.accelerations]
+    acc = [display(a) for a in eqs.accelerations] if eqs.closed_form else []
     steps.append(
         _step(
             "Accelerations",
             [f"{qddn[k]} = {pr.tex(a)}" for k, a in enumerate(acc)],
             acc,
             "Solving M q̈ = f gives each acceleration explicitly, ready for numerical integration.",
+        )
+        if eqs.closed_form  # else M⁻¹f stays factored (app.engine.lagrange.CLOSED_FORM_MAX_NODES)
+        else _step(
+            "Accelerations",
+            [r"\ddot{q} = M^{-1} f"],
+            "M**(-1)*f",
+            "Solved symbolically, M q̈ = f gives "
+            "expressions too long to read for this many coordinates: the accelerations stay M⁻¹f, and the "
+            "numerics solve M q̈ = f by LU at every step.",
         )
     )
     steps.append(

@@ -26,6 +26,7 @@ import sympy as sp
 
 from app.engine.derive import Derivation
 from app.engine.kinks import away_from_kinks
+from app.engine.lagrange import Equations
 from app.numerics.codegen import (
     ArrayPrinter,
     Block,
@@ -65,9 +66,11 @@ class Names:
         return sp.sympify(expr).xreplace(self.rename)
 
 
-def _compact(accelerations: Sequence[sp.Expr], M: sp.Matrix, f: sp.Matrix) -> bool:
-    """Use the solved accelerations unless they are much larger than M and f together."""
-    return sp.count_ops(list(accelerations)) <= 3 * (sp.count_ops(M) + sp.count_ops(f)) + 60
+def _compact(eqs: Equations) -> bool:
+    """Use the solved accelerations when the engine kept a closed form and it is not much larger than M and f."""
+    if not eqs.closed_form:
+        return False
+    return sp.count_ops(list(eqs.accelerations)) <= 3 * (sp.count_ops(eqs.mass_matrix) + sp.count_ops(eqs.forcing)) + 60
 
 
 def _rhs_block(d: Derivation, names: Names, block: Block, printer) -> Block:
@@ -80,7 +83,7 @@ def _rhs_block(d: Derivation, names: Names, block: Block, printer) -> Block:
     outs = [f"out[{n + i}]" for i in range(n)]
     for i, v in enumerate(names.v):
         block.set(f"out[{i}]", v)
-    if _compact(eqs.accelerations, eqs.mass_matrix, eqs.forcing):
+    if _compact(eqs):
         block.assign(outs, [names(a) for a in eqs.accelerations], printer, "a_")
     else:
         # M q_ddot = f, solved numerically
@@ -110,7 +113,7 @@ def browser_source(d: Derivation, names: Names) -> str:
 def jacobian_source(d: Derivation, names: Names) -> str | None:
     """``jac(t, y, k, out)``: out[i*2n + j] = dF_i/dy_j, for the implicit methods; None when q_ddot is not compact."""
     eqs = d.equations
-    if not _compact(eqs.accelerations, eqs.mass_matrix, eqs.forcing):
+    if not _compact(eqs):
         return None
     n = len(names.q)
     ys = [sp.Symbol(x, real=True) for x in (*names.q, *names.v)]

@@ -68,7 +68,16 @@ class Plan:
             f"stability limit), so the run was redone with the implicit {STIFF} method"
         )
         reference = METHODS[reference_name(stiff=True)] if self.reference is not None else None
-        return replace(self, method=METHODS[STIFF], reason=reason, reference=reference, stiff=True)
+        # the path says what ran: scipy's Radau steps in Python, never "compiled"
+        path = "compiled" if METHODS[STIFF].compiled else "scipy"
+        return replace(self, method=METHODS[STIFF], reason=reason, reference=reference, stiff=True, path=path)
+
+    def instead_of_symplectic(self, why: str) -> Plan:
+        """The plan after ``auto``'s symplectic pick could not finish (its step limit): Verner's adaptive
+        pair instead, which watches for stiffness, rather than a refusal."""
+        reason = f"{self.reason}; but {self.name} {why}, so auto ran {NONSTIFF} instead (adaptive step)"
+        reference = _reference(METHODS[NONSTIFF], self.stiff, compiled=True) if self.reference is not None else None
+        return replace(self, method=METHODS[NONSTIFF], reason=reason, reference=reference, path="compiled")
 
     def portable(self) -> dict[str, Any]:
         """Everything but the system, the methods by name: what a worker process needs to run this plan."""

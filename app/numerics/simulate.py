@@ -50,7 +50,6 @@ class Outcome:
     alongside: Any = None  # what ``run``'s ``alongside`` returned for the final trajectory (None if not called)
 
 
-
 def _machine_load() -> float:
     try:
         return os.getloadavg()[0]
@@ -185,6 +184,14 @@ def run(
     ahead = _reference_ahead(problem) if estimate and adaptive and not plan.stiff else None
     try:
         trajectory = chosen.integrate(problem, **options)
+    except TooMuchWork as exc:
+        if plan.requested != AUTO or not isinstance(chosen, FixedStep):
+            raise
+        # auto never refuses what another method can do: its symplectic pick past its step limit
+        # hands the run to the adaptive default in what is left of the deadline
+        instead = plan.instead_of_symplectic(_why(exc))
+        return run(instead, max(deadline - time.perf_counter(), 0.0), events=events, elsewhere=elsewhere,
+                   alongside=alongside)  # fmt: skip
     finally:
         CORES.give()
     if trajectory.stiff_detected and not trajectory.complete and options:
@@ -218,6 +225,12 @@ def run(
         estimate_error(system, problem, chosen, compared, plan.stiff, warnings, compiled, ahead) if estimate else None
     )
     return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds, path, hit, done_alongside)
+
+
+def _why(exc: TooMuchWork) -> str:
+    """The step limit's sentence, without the advice that follows it (auto is taking that advice)."""
+    text = str(exc).split(". ")[0]
+    return "stopped: " + text.removeprefix("too much work for ").split(": ", 1)[-1]
 
 
 def estimate_error(

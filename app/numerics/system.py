@@ -84,9 +84,7 @@ class NumericSystem:
         out = np.empty(2 * self.n)
         if self._compiled is not None:
             # the numba twin once loaded: a long expression costs it about 1 us instead of 10-100 us
-            self.bound("rhs")(
-                float(t), np.ascontiguousarray(y, dtype=float), np.ascontiguousarray(k, dtype=float), out
-            )
+            self.bound("rhs")(float(t), np.ascontiguousarray(y, dtype=float), np.ascontiguousarray(k, dtype=float), out)
             return out
         self.python["rhs"](float(t), np.asarray(y, dtype=float).tolist(), np.asarray(k, dtype=float).tolist(), out)
         return out
@@ -104,6 +102,11 @@ class NumericSystem:
         out = np.empty(self.n)
         self.python["momenta"](float(t), np.asarray(y, dtype=float).tolist(), np.asarray(k, dtype=float).tolist(), out)
         return out
+
+
+def _mass_and_forcing(eqs):
+    """The entries of M and f, whose symbols are those of M⁻¹f."""
+    return (*eqs.mass_matrix, *eqs.forcing)
 
 
 def _free(expr, symbols) -> bool:
@@ -130,10 +133,16 @@ def numeric_system(d: Derivation, sources: dict[str, str] | None = None) -> Nume
     separable = (
         mass_constant
         and not forced
-        and all(_free(a, (*table.qd, table.t)) for a in eqs.accelerations)
+        and (
+            all(_free(a, (*table.qd, table.t)) for a in eqs.accelerations)
+            if eqs.closed_form  # M⁻¹f: free of q_dot and t when M (constant here) and f are
+            else all(_free(x, (*table.qd, table.t)) for x in eqs.forcing)
+        )
         and all(_free(p.xreplace(dict.fromkeys(table.qd, 0)), (*table.q, table.t)) for p in eqs.momenta)
     )
-    autonomous = all(_free(a, (table.t,)) for a in eqs.accelerations)
+    autonomous = all(
+        _free(a, (table.t,)) for a in (eqs.accelerations if eqs.closed_form else (*_mass_and_forcing(eqs),))
+    )
     conserved = tuple(c.name for c in en.conserved)
     energy_name = next((c.name for c in en.conserved if c.name in ("E", "h")), None)
     system = NumericSystem(

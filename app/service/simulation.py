@@ -12,6 +12,8 @@ documented JSON:
 
 from __future__ import annotations
 
+import hashlib
+import json
 import math
 import threading
 import time
@@ -87,28 +89,26 @@ class _Compiled:
     def get(
         self, key: str | None, d: Derivation, forces: Sequence[dict[str, Any]]
     ) -> tuple[NumericSystem, Observables]:
-        if key is None:
-            return self._build(None, d, forces)
-        found = self._cached(key)
+        # a user system's key is its declaration (and its constraint forces), known before any code
+        # generation: a warm system is found here without printing a line of its source again
+        scene = key is not None
+        found_key = key if key is not None else system_key(d, forces)
+        found = self._cached(found_key)
         if found is not None:
             return found
         with self.lock:
-            building = self._building.setdefault(key, threading.Lock())
+            building = self._building.setdefault(found_key, threading.Lock())
         with building:
-            return self._cached(key) or self._build(key, d, forces)
+            return self._cached(found_key) or self._build(found_key, d, forces, scene)
 
     def _build(
-        self, key: str | None, d: Derivation, forces: Sequence[dict[str, Any]]
+        self, key: str, d: Derivation, forces: Sequence[dict[str, Any]], scene: bool
     ) -> tuple[NumericSystem, Observables]:
         start = time.perf_counter()
         # a scene's generated sources come from the disk cache (keyed by the engine's, scenes' and
         # numerics' source), so a new worker skips the code generation
-        sources = _SOURCES.get(key, lambda: generated_sources(d)) if key is not None else None
+        sources = _SOURCES.get(key, lambda: generated_sources(d)) if scene else None
         system = numeric_system(d, sources)
-        key = key or system.key
-        found = self._cached(key)
-        if found is not None:
-            return found
         entry = (system, build(system, forces))
         with self.lock:
             self.build_seconds[key] = time.perf_counter() - start
@@ -116,6 +116,12 @@ class _Compiled:
             while len(self.items) > self.size:
                 self.items.popitem(last=False)
         return entry
+
+
+def system_key(d: Derivation, forces: Sequence[dict[str, Any]]) -> str:
+    """A user system's cache key: a digest of its declaration (the parsed System) and its constraint forces."""
+    text = repr(d.system) + json.dumps(list(forces), sort_keys=True, default=str)
+    return "system:" + hashlib.sha256(text.encode()).hexdigest()
 
 
 _EVENTS: dict[str, list[EventFunction]] = {}  # per scene id: its terminal events, compiled once per process

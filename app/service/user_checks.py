@@ -27,9 +27,14 @@ from app.engine.parse import MAX_TERMS, ExpressionError, Size, check_name, expre
 from app.engine.user_system import UserSystem
 from app.errors import Refused, TooMuchWork
 
-MAX_COORDINATES = 6
-MAX_PARAMETERS = 24
-MAX_PARTICLES = 8
+# the one home of the size limits: the N-link chain as particles derives up to N = 12 within the engine's
+# budget (the heavy algebra on symengine; docs/scale.md, benchmarks/bench_scale.py)
+MAX_COORDINATES = 12
+MAX_PARAMETERS = 40
+MAX_PARTICLES = 12
+# the bound on the terms of T from particles: the 12-link chain's bound is 2,768 (its T, built, has far fewer
+# once sin² + cos² = 1 collapses; it derives in about 2 s)
+MAX_KINETIC_TERMS = 2 * MAX_TERMS
 
 
 class InvalidSystem(DerivationError):
@@ -130,7 +135,7 @@ def check_system(system: UserSystem) -> None:
 
 
 def _check_kinetic_size(system: UserSystem, sizes: dict[tuple, Size]) -> None:
-    """Refuse particles whose kinetic energy would expand past MAX_TERMS terms (before SymPy builds it).
+    """Refuse particles whose kinetic energy would expand past MAX_KINETIC_TERMS terms (before SymPy builds it).
 
     A position of n terms of degree d has a velocity of at most n*d terms (each
     monomial differentiates into one term per factor); its square has at most
@@ -143,10 +148,10 @@ def _check_kinetic_size(system: UserSystem, sizes: dict[tuple, Size]) -> None:
             size = sizes[("particles", i, "position", j)]
             velocity = size.terms * max(1, math.ceil(size.degree))
             total += mass * velocity * (velocity + 1) // 2
-        if total > MAX_TERMS:
+        if total > MAX_KINETIC_TERMS:
             loc = ("particles", i, "position")
             raise InvalidSystem(
-                f"{_where(loc)}: the kinetic energy of these particles would expand into more than {MAX_TERMS} "
+                f"{_where(loc)}: the kinetic energy of these particles would expand into more than {MAX_KINETIC_TERMS} "
                 "terms; use fewer or simpler positions (or give T and U directly)",
                 loc,
             )

@@ -67,8 +67,8 @@ def engine_budget(user: UserSystem) -> Iterator[None]:
     except BudgetExceeded:
         where = user.form
         raise TooCostly(
-            f"{where}: deriving this system takes longer than the {seconds:g} s allowed; "
-            "write it with fewer terms, lower powers or fewer nested functions",
+            f"{where}: the equations of motion of this system take longer to derive than the {seconds:g} s "
+            "allowed (a limit of this server's engine, not a mistake in the system)",
             (where,),
         ) from None
 

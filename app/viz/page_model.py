@@ -60,8 +60,13 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
     ddot = {c: latex(f"{c}_ddot") for c in q}
     return {
         "equations": [e["latex"] for e in doc["equations_of_motion"]],
-        "accelerations": [f"{ddot[c]} = {doc['accelerations'][c]['latex']}" for c in q],
+        # none in closed form for a large system (listed in "skipped"): M⁻¹f
+        "accelerations": [f"{ddot[c]} = {doc['accelerations'][c]['latex']}" for c in q]
+        if doc["accelerations"]
+        else [r"\ddot{q} = M^{-1} f"],
         "momenta": [f"{latex('p_' + c)} = {doc['momenta'][c]['latex']}" for c in q],
+        # members of the document left out within their own bounds, each with its reason (issue 35)
+        "skipped": [s["reason"] for s in doc.get("skipped") or []],
         "conserved": conserved,
         "h_equals_e": doc["hamiltonian_equals_energy"],
         "h_reason": doc["hamiltonian_energy_reason"],

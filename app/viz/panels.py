@@ -46,7 +46,8 @@ def constant_accelerations(doc: dict[str, Any]) -> bool:
     moving = [*q, *(f"{c}_dot" for c in q), "t"]
     names = [*moving, *doc["parameters"]]
     trees = [document_tree(pair, names) for pair in doc["accelerations"].values()]
-    return all(t is not None and not (leaves(t) & set(moving)) for t in trees)
+    # no closed form (M⁻¹f kept factored, a large system) is never constant here
+    return bool(trees) and all(t is not None and not (leaves(t) & set(moving)) for t in trees)
 
 
 def oscillating_equilibria(doc: dict[str, Any]) -> list[dict[str, Any]]:

@@ -178,6 +178,15 @@ class Hamilton(BaseModel):
     equations: list[HamiltonEquation]
 
 
+class SkippedMember(BaseModel):
+    model_config = OPEN
+    member: str = Field(
+        description="The member left out: accelerations (closed form), steps, effective_potential, "
+        "constraint_forces, transformed, hamilton or normal_modes; it is then null or empty in the document."
+    )
+    reason: str = Field(description="Which part was left out and why (its own time bound, or a closed form too long).")
+
+
 class DerivationDocument(BaseModel):
     """The derivation JSON, the same document as GET /api/scenes/{id}/derivation."""
 
@@ -210,6 +219,11 @@ class DerivationDocument(BaseModel):
     steps: list[Step]
     hamilton: Hamilton | None = None
     normal_modes: list[NormalModesAt] = Field(default_factory=list)
+    skipped: list[SkippedMember] = Field(
+        default_factory=list,
+        description="Members of the document left out, each with its reason: every member beyond the equations "
+        "of motion has its own time bound, and one that runs out is skipped here instead of refusing the system.",
+    )
 
 
 class ValidationIssue(BaseModel):

@@ -93,8 +93,13 @@ export function summaryBox(doc) {
   const dl = h("dl");
   const add = (term, ...content) => { dl.append(h("dt", { text: term })); dl.append(h("dd", {}, ...content)); };
   add("Equations of motion", listOf(doc.equations_of_motion.map((e) => e.latex)));
-  add("Accelerations", listOf(doc.coordinates.map((q) => `${texName(doc, q + "_ddot")} = ${doc.accelerations[q].latex}`)));
+  // a large system keeps M⁻¹f factored (its closed form is listed in doc.skipped)
+  add("Accelerations", listOf(Object.keys(doc.accelerations).length
+    ? doc.coordinates.map((q) => `${texName(doc, q + "_ddot")} = ${doc.accelerations[q].latex}`)
+    : ["\\ddot{q} = M^{-1} f"]));
   add("Generalized momenta", listOf(doc.coordinates.map((q) => `${texName(doc, "p_" + q)} = ${doc.momenta[q].latex}`)));
+  // members of the document left out within their own time bounds, each with its reason (issue 35)
+  if ((doc.skipped || []).length) add("Left out", h("ul", { class: "skipped" }, ...doc.skipped.map((s) => h("li", { text: s.reason }))));
   const conserved = h("ul", { class: "conserved" });
   for (const c of doc.conserved || []) {
     conserved.append(h("li", {}, math(`${c.latex_name || c.name} = ${c.latex}`, true), h("p", { class: "reason", text: c.reason })));

@@ -108,7 +108,7 @@ CASES = [
         rtol=1e-6,
         atol=1e-8,
         exact="pendulum",
-        expect={"method": "Yoshida4"},
+        expect={"method": "Gauss-Legendre"},
     ),
     Case(
         "stiff radial spring k/m = 1e6, slow orbit",

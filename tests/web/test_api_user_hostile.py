@@ -86,10 +86,10 @@ CORPUS = [
     ("deep-signs", sys_l("-" * 1900 + "x_dot")),
     ("deep-calls", sys_l("sin(" * 60 + "x" + ")" * 60 + " + x_dot**2")),
     ("long-expression", sys_l("+".join(["x_dot**2"] * 300))),
-    ("too-many-coordinates", sys_l("a_dot**2", coordinates=tuple("abcdefgh"))),
+    ("too-many-coordinates", sys_l("a_dot**2", coordinates=tuple("abcdefghijklm"))),
     (
         "too-many-particles",
-        {"coordinates": ["x"], "particles": [{"mass": "1", "position": ["x", "0"]}] * 9, "potential": "0"},
+        {"coordinates": ["x"], "particles": [{"mass": "1", "position": ["x", "0"]}] * 13, "potential": "0"},
     ),
     # singular and malformed systems
     ("no-velocity", sys_l("x**2")),
