@@ -264,8 +264,7 @@ class _Checker:
             if isinstance(node.op, ast.Pow):
                 base, exponent = self.check(node.left, depth + 1), self.check(node.right, depth + 1)
                 if isinstance(_strip_signs(node.right)[0], ast.BinOp) and isinstance(
-                    _strip_signs(node.right)[0].op,
-                    ast.Pow,  # type: ignore[attr-defined]
+                    _strip_signs(node.right)[0].op, ast.Pow  # type: ignore[attr-defined]
                 ):
                     raise self.refuse(node, "towers of exponents are not allowed")
                 return self.power(node, base, exponent)
@@ -420,9 +419,7 @@ class _Checker:
                 raise self.refuse(node, "atan2(0, 0) is undefined")
             exact = arguments[0].exact
             if arity == 1 and exact is not None and name in _DOMAINS and not _DOMAINS[name](exact):
-                raise self.refuse(
-                    node, f"this number is undefined or not real ({name} of {self.fold(node, lambda: float(exact)):g})"
-                )
+                raise self.refuse(node, f"this number is undefined or not real ({name} of {self.fold(node, lambda: float(exact)):g})")
             function = ALLOWED[name].floating
             value = self.fold(node, lambda: function(*(a.value for a in arguments)))
             rational = self.exact_call(node, name, powers, depth)
