@@ -13,7 +13,8 @@ from app.engine.errata import errata_json
 from app.engine.hamilton import hamilton
 from app.engine.modes import normal_modes
 from app.engine.names import display_names
-from app.engine.report import Printer, build_steps, constraint_steps, equation_rows, new_lagrangian, transform_steps
+from app.engine.report import Printer, build_steps, constraint_steps, energies, equation_pairs, lagrangian
+from app.engine.report import new_lagrangian, transform_steps
 from app.engine.report import display as _show
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.rods import fixed_distances
@@ -88,12 +89,11 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "parameters": parameters_json(d.system.parameters),
         "kinetic": pr.pair(d.mechanics.T) if d.mechanics.T is not None else None,
         "potential": pr.pair(d.mechanics.U) if d.mechanics.U is not None else None,
-        "lagrangian": pr.pair(d.mechanics.L),
-        "hamiltonian": pr.pair(_show(en.hamiltonian)),
-        "energy": pr.pair(_show(en.energy)),
+        "lagrangian": pr.pair(lagrangian(d, pr)),
+        # h and E from the same pieces as T and U; each equation's text is the scaled residual its row shows
+        **dict(zip(("hamiltonian", "energy"), map(pr.pair, energies(d, pr)), strict=True)),
         "equations_of_motion": [
-            {"coordinate": name, **pr.pair(_show(r)), "latex": row}
-            for name, r, row in zip(table.names, eqs.residuals, equation_rows(d, pr), strict=True)
+            {"coordinate": name, **pair} for name, pair in zip(table.names, equation_pairs(d, pr), strict=True)
         ],
         "accelerations": {name: pr.pair(_show(a)) for name, a in zip(table.names, eqs.accelerations, strict=True)},
         "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],

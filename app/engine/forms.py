@@ -1,0 +1,228 @@
+"""Textbook forms: the same expression, rewritten the way a careful textbook prints it.
+
+``textbook_form(expr, names)`` returns an expression equal to ``expr`` (identically, for every
+value of its symbols) in the shortest of a few forms a reader recognises:
+
+* trigonometric products recombined.  Every product of sines and cosines is written as a sum of
+  single sines and cosines (sin a sin b = ½[cos(a − b) − cos(a + b)], sin² a = ½[1 − cos 2a], …), so
+  that sin θ₁ sin θ₂ + cos θ₁ cos θ₂ collapses to cos(θ₁ − θ₂) and sin² + cos² to 1;
+* a quotient as one numerator over one denominator, the denominator's numbers made whole and its
+  leading term positive: the double pendulum's θ̈₁ over l₁(2m₁ + m₂ − m₂ cos(2θ₁ − 2θ₂));
+* terms collected by what moves (accelerations, velocities, coordinates and their functions), each
+  with its constant coefficient in its shortest form: ½(m₁ + m₂) l₁² θ̇₁²;
+* squares of sums recovered where a parameter multiplies a perfect square: k(x₁ − x₂ + l₀)²/2,
+  M(ẏ₁ + ẏ₂)²/8, κ(x₁ − x₂)²/2.
+
+Among the candidates the one with the fewest operations wins (one extra operation charged for each
+angle the engine's form did not have, so sin θ cos θ stays unless sin 2θ is really shorter); ties keep
+the earlier, more conservative candidate.  The work is bounded: each expression gets FORM_SECONDS
+(no more than the shared display budget has left, but at least LATE_SECONDS); beyond it, or beyond NODE_BUDGET nodes, the
+engine's own cheap display form (sin² + cos² = 1 collapsed, SymPy's ``simplify`` when small) is kept.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Mapping
+from typing import Any
+
+import sympy as sp
+from sympy.simplify.fu import TR8
+
+from app.engine import budget
+from app.engine.budget import pythagoras, tidy, within_budget
+
+FORM_SECONDS = 0.5
+# once the shared display budget is spent, each expression still gets this much (the results' forms are cheap)
+LATE_SECONDS = 0.15
+FALLBACK_SECONDS = 0.2
+ENGINE_BONUS = 1.5
+NODE_BUDGET = 1500
+_CACHE: dict[tuple[sp.Expr, frozenset[sp.Symbol]], sp.Expr] = {}
+_CACHE_SIZE = 4096
+_local = threading.local()
+
+
+def use_names(names: Mapping[sp.Symbol, str]) -> None:
+    """The names ``textbook_form`` reads coordinates from when it is given none (the last printer made in
+    this thread: a derivation's steps are formed with its own table's names)."""
+    _local.names = names
+
+
+def settle(form: sp.Expr, names: Mapping[sp.Symbol, str] | None = None) -> sp.Expr:
+    """Declare ``form`` a textbook form as it stands (h and E built from T's and U's forms): forming it
+    again returns it unchanged."""
+    if isinstance(form, sp.Expr) and len(_CACHE) < _CACHE_SIZE:
+        _CACHE[(form, frozenset(moving_symbols(form, names)))] = form
+    return form
+
+
+def moving_symbols(expr: Any, names: Mapping[sp.Symbol, str] | None = None) -> set[sp.Symbol]:
+    """The symbols of ``expr`` that change along a motion: coordinates (those with a velocity), rates and t."""
+    free: set[Any] = getattr(expr, "free_symbols", set())
+    known = {s.name for s in (names or {})} | {s.name for s in free}
+    rates = {n for n in known if n.endswith("_dot")}
+    stems = {n[: -len("_dot")] for n in rates}
+    return {s for s in free if s.name == "t" or s.name in stems or s.name.endswith(("_dot", "_ddot"))}
+
+
+def _nodes(expr: sp.Basic, limit: int) -> int:
+    count = 0
+    for _ in sp.preorder_traversal(expr):
+        count += 1
+        if count > limit:
+            break
+    return count
+
+
+def _angles(expr: sp.Expr) -> set[sp.Expr]:
+    return {f.args[0] for f in expr.atoms(sp.sin, sp.cos, sp.tan)}
+
+
+def _score(form: sp.Expr, angles: set[sp.Expr]) -> float:
+    # operations, and one more for every angle the engine's form did not have (cos 2θ for sin² θ)
+    return float(sp.count_ops(form)) + len(_angles(form) - angles)
+
+
+def _simplest(const: sp.Expr) -> sp.Expr:
+    """A constant coefficient in its shortest form: as it is, common factors out, or cancelled."""
+    if not isinstance(const, sp.Add):
+        return const
+    forms = [const, sp.factor_terms(const), sp.factor(const)]
+    return min(forms, key=lambda e: (sp.count_ops(e), forms.index(e)))
+
+
+def collected(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
+    """Terms with the same moving part added, each coefficient in its shortest form (½(m₁ + m₂) l₁² θ̇₁²)."""
+    groups: dict[sp.Expr, sp.Expr] = {}
+    for term in sp.Add.make_args(sp.expand(expr)):
+        const, part = term.as_independent(*moving, as_Add=False) if moving else (term, sp.Integer(1))
+        groups[part] = groups.get(part, sp.Integer(0)) + const
+    return sp.Add(*(_simplest(c) * part for part, c in groups.items()))
+
+
+def linearised(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
+    """Products of sines and cosines as sums of single ones, over one denominator made whole.
+
+    sin a sin b + cos a cos b = cos(a − b) and sin² a + cos² a = 1 follow from the product-to-sum
+    rules (SymPy's ``TR8``); the denominator's rational numbers are cleared by multiplying above and
+    below by their common denominator, and its sign chosen so that it reads positively.
+    """
+    num, den = sp.fraction(sp.cancel(sp.together(expr)))
+    num, den = sp.expand(TR8(sp.expand(num))), sp.expand(TR8(sp.expand(den)))
+    # the numbers in the denominator made whole: l₁(m₁ + m₂/2 − m₂ cos 2Δ/2) -> l₁(2m₁ + m₂ − m₂ cos 2Δ)
+    scale = sp.ilcm(1, *(sp.fraction(t.as_coeff_Mul()[0])[1] for t in sp.Add.make_args(den)))
+    num, den = sp.expand(num * scale), sp.expand(den * scale)
+    if den.could_extract_minus_sign():
+        num, den = -num, -den
+    top, bottom = collected(num, moving), sp.factor_terms(collected(den, moving))
+    if bottom != 1 or _factorable(top, moving):
+        top = sp.factor_terms(top)
+    return top / bottom if bottom != 1 else top
+
+
+def squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
+    """Perfect squares recovered under each parameter that multiplies one: k(x₂ − x₁ − l₀)²/2.
+
+    For each parameter c, the terms linear in c are split by their degree in the velocities, and each
+    part is factored; a part that factors with a squared sum replaces its terms.
+    """
+    if not moving:
+        return expr
+    velocities = sorted((s for s in moving if s.name.endswith("_dot")), key=sp.default_sort_key)
+    params = sorted(expr.free_symbols - moving, key=sp.default_sort_key)
+    out = sp.expand(expr)
+    for c in params:
+        parts = sp.collect(out, c, evaluate=False)
+        inner = parts.get(c)
+        if inner is None or inner.has(c):
+            continue
+        rest = out - sp.expand(c * inner)
+        by_degree: dict[int, sp.Expr] = {}
+        for term in sp.Add.make_args(sp.expand(inner)):
+            degree = sp.Poly(term, *velocities).total_degree() if velocities else 0
+            by_degree[degree] = by_degree.get(degree, sp.Integer(0)) + term
+        found = False
+        pieces = []
+        for part in by_degree.values():
+            factored = sp.factor(part)
+            if any(isinstance(b, sp.Add) and e == 2 for b, e in (f.as_base_exp() for f in sp.Mul.make_args(factored))):
+                pieces.append(factored)
+                found = True
+            else:
+                pieces.append(part)
+        if found:
+            out = sp.Add(rest, *(c * p for p in pieces))
+    return out
+
+
+def _factorable(expr: sp.Expr, moving: set[sp.Symbol]) -> bool:
+    """Whether a textbook pulls the common factors out of this sum: an equation's terms (R m (R θ̈ + g sin θ)),
+    or a kinetic energy's (½ m R² (θ̇² + sin² θ φ̇²)); never across kinetic and potential terms, nor out of a
+    potential's, which a reader compares term by term."""
+    velocities = [s for s in moving if s.name.endswith(("_dot", "_ddot"))]
+    if any(s.name.endswith("_ddot") for s in velocities):
+        return True
+    if not velocities:
+        return False
+    degrees = {sp.Poly(t, *velocities).total_degree() for t in sp.Add.make_args(expr)}
+    return len(degrees) == 1 and 0 not in degrees
+
+
+def _candidates(expr: sp.Expr, moving: set[sp.Symbol]) -> list[sp.Expr]:
+    """The engine's form first (ties keep it), then the rewritten ones."""
+    trig = bool(expr.atoms(sp.sin, sp.cos))
+    num, den = sp.fraction(sp.together(expr))
+    if den.free_symbols:
+        # a quotient: one numerator over one denominator, products of sines and cosines linearised
+        if trig:
+            return [expr, linearised(expr, moving)]
+        num, den = sp.fraction(sp.cancel(sp.together(expr)))
+        return [expr, sp.factor_terms(collected(num, moving)) / sp.factor_terms(den)]
+    grouped = collected(pythagoras(expr) if trig else expr, moving)
+    out = [expr, grouped]
+    if _factorable(grouped, moving):
+        out.append(sp.factor_terms(grouped))
+    if trig:
+        out.append(linearised(expr, moving))
+    out.append(squares(grouped, moving))
+    return out
+
+
+def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, seconds: float = FORM_SECONDS) -> Any:
+    """``expr`` in its textbook form (an equal expression; see the module's docstring).
+
+    ``names``: the symbol table's names (coordinates are recognised by having a velocity there).
+    Bounded by ``seconds`` and by the shared display budget; beyond them the engine's cheap display
+    form is returned.
+    """
+    if not isinstance(expr, sp.Expr) or not expr.free_symbols or isinstance(expr, sp.Symbol):
+        return expr
+    names = names if names is not None else getattr(_local, "names", None)
+    moving = moving_symbols(expr, names)
+    key = (expr, frozenset(moving))
+    if key in _CACHE:
+        return _CACHE[key]
+    left = max(budget._remaining(seconds), min(seconds, LATE_SECONDS))
+    if _nodes(expr, NODE_BUDGET) > NODE_BUDGET:
+        return _fallback(expr)
+    angles = _angles(expr)
+
+    def best() -> sp.Expr:
+        forms = _candidates(expr, moving)
+        # the engine's form (often the declaration's own) stays unless another is shorter by two operations
+        return min(forms, key=lambda e: (_score(e, angles) - (ENGINE_BONUS if e is forms[0] else 0), forms.index(e)))
+
+    found = within_budget(best, None, left)
+    if found is None:
+        found = _fallback(expr)
+        if left < seconds:  # the shared budget ran out, not this expression's own time: try again another time
+            return found
+    if len(_CACHE) < _CACHE_SIZE:
+        _CACHE[key] = found
+    return settle(found, names)  # a form, formed again, stays as it is
+
+
+def _fallback(expr: sp.Expr) -> sp.Expr:
+    """The engine's own display form: sin² + cos² = 1 collapsed, then SymPy's simplification when small."""
+    return within_budget(lambda: tidy(pythagoras(expr), FALLBACK_SECONDS), expr, FALLBACK_SECONDS)
