@@ -118,7 +118,15 @@ def linearised(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     top, bottom = collected(num, moving), sp.factor_terms(collected(den, moving))
     if bottom != 1 or _factorable(top, moving):
         top = sp.factor_terms(top)
-    return top / bottom if bottom != 1 else top
+    return _angles_expanded(top / bottom if bottom != 1 else top)
+
+
+def _angles_expanded(expr: sp.Expr) -> sp.Expr:
+    """cos 2(θ₁ − θ₂) written cos(2θ₁ − 2θ₂), as the textbooks print it (pulling factors out reaches the angles)."""
+    return expr.replace(
+        lambda e: isinstance(e, (sp.sin, sp.cos)) and isinstance(e.args[0], sp.Mul),
+        lambda e: e.func(sp.expand(e.args[0])),
+    )
 
 
 def squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:

@@ -161,8 +161,8 @@ PINNED = {  # fmt: skip
             "g*sin(theta2) + l1*theta1_ddot*cos(theta1 - theta2) - l1*theta1_dot**2*sin(theta1 - theta2) + l2*theta2_ddot",
         ],
         "accelerations": {
-            "theta1": "-(g*m2*sin(theta1 - 2*theta2) + g*(2*m1 + m2)*sin(theta1) + l1*m2*theta1_dot**2*sin(2*(theta1 - theta2)) + 2*l2*m2*theta2_dot**2*sin(theta1 - theta2))/(l1*(2*m1 - m2*cos(2*(theta1 - theta2)) + m2))",
-            "theta2": "(-g*(m1 + m2)*sin(theta2) + g*(m1 + m2)*sin(2*theta1 - theta2) + 2*l1*theta1_dot**2*(m1 + m2)*sin(theta1 - theta2) + l2*m2*theta2_dot**2*sin(2*(theta1 - theta2)))/(l2*(2*m1 - m2*cos(2*(theta1 - theta2)) + m2))",
+            "theta1": "-(g*m2*sin(theta1 - 2*theta2) + g*(2*m1 + m2)*sin(theta1) + l1*m2*theta1_dot**2*sin(2*theta1 - 2*theta2) + 2*l2*m2*theta2_dot**2*sin(theta1 - theta2))/(l1*(2*m1 - m2*cos(2*theta1 - 2*theta2) + m2))",
+            "theta2": "(-g*(m1 + m2)*sin(theta2) + g*(m1 + m2)*sin(2*theta1 - theta2) + 2*l1*theta1_dot**2*(m1 + m2)*sin(theta1 - theta2) + l2*m2*theta2_dot**2*sin(2*theta1 - 2*theta2))/(l2*(2*m1 - m2*cos(2*theta1 - 2*theta2) + m2))",
         },
     },
     "user:double-pendulum": {
@@ -174,8 +174,8 @@ PINNED = {  # fmt: skip
             "a_ddot*l1*cos(a - b) - a_dot**2*l1*sin(a - b) + b_ddot*l2 + g*sin(b)",
         ],
         "accelerations": {
-            "a": "-(a_dot**2*l1*m2*sin(2*(a - b)) + 2*b_dot**2*l2*m2*sin(a - b) + g*m2*sin(a - 2*b) + g*(2*m1 + m2)*sin(a))/(l1*(2*m1 - m2*cos(2*(a - b)) + m2))",
-            "b": "(2*a_dot**2*l1*(m1 + m2)*sin(a - b) + b_dot**2*l2*m2*sin(2*(a - b)) - g*(m1 + m2)*sin(b) + g*(m1 + m2)*sin(2*a - b))/(l2*(2*m1 - m2*cos(2*(a - b)) + m2))",
+            "a": "-(a_dot**2*l1*m2*sin(2*a - 2*b) + 2*b_dot**2*l2*m2*sin(a - b) + g*m2*sin(a - 2*b) + g*(2*m1 + m2)*sin(a))/(l1*(2*m1 - m2*cos(2*a - 2*b) + m2))",
+            "b": "(2*a_dot**2*l1*(m1 + m2)*sin(a - b) + b_dot**2*l2*m2*sin(2*a - 2*b) - g*(m1 + m2)*sin(b) + g*(m1 + m2)*sin(2*a - b))/(l2*(2*m1 - m2*cos(2*a - 2*b) + m2))",
         },
     },
     "user:spring-pendulum": {
