@@ -23,11 +23,11 @@ engine's own cheap display form (sin² + cos² = 1 collapsed, SymPy's ``simplify
 from __future__ import annotations
 
 import threading
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from typing import Any
 
 import sympy as sp
-from sympy.simplify.fu import TR8
+from sympy.simplify.fu import TR8, TR10i
 
 from app.engine import budget
 from app.engine.budget import pythagoras, tidy, within_budget
@@ -63,7 +63,11 @@ def moving_symbols(expr: Any, names: Mapping[sp.Symbol, str] | None = None) -> s
     known = {s.name for s in (names or {})} | {s.name for s in free}
     rates = {n for n in known if n.endswith("_dot")}
     stems = {n[: -len("_dot")] for n in rates}
-    return {s for s in free if s.name == "t" or s.name in stems or s.name.endswith(("_dot", "_ddot"))}
+    # a coordinate, its rates, time, and a coordinate's momentum in Hamilton's equations (p_θ₁)
+    return {
+        s for s in free if s.name == "t" or s.name in stems or s.name.endswith(("_dot", "_ddot"))
+        or (s.name.startswith("p_") and s.name[2:] in stems)
+    }  # fmt: skip
 
 
 def _nodes(expr: sp.Basic, limit: int) -> int:
@@ -177,24 +181,54 @@ def _factorable(expr: sp.Expr, moving: set[sp.Symbol]) -> bool:
     return len(degrees) == 1 and 0 not in degrees
 
 
-def _candidates(expr: sp.Expr, moving: set[sp.Symbol]) -> list[sp.Expr]:
-    """The engine's form first (ties keep it), then the rewritten ones."""
+def recombined(expr: sp.Expr) -> sp.Expr:
+    """Sums of products recombined where they stand, without expanding anything (cheap on any size):
+    sin a sin b + cos a cos b -> cos(a − b) (SymPy's ``TR10i``), and a bracket raised to a power
+    (a denominator's square) linearised when that shortens it."""
+
+    def shorter(base: sp.Expr) -> sp.Expr:
+        lin = sp.expand(TR8(sp.expand(base)))
+        return lin if sp.count_ops(lin) < sp.count_ops(base) else base
+
+    out = TR10i(expr)
+    return out.replace(
+        lambda e: e.is_Pow and isinstance(e.base, sp.Add) and e.base.has(sp.sin, sp.cos) and _nodes(e.base, 200) < 200,
+        lambda e: sp.Pow(shorter(e.base), e.exp),
+    )
+
+
+def _candidates(expr: sp.Expr, moving: set[sp.Symbol]) -> Iterator[sp.Expr]:
+    """The engine's form first (ties keep it), then the rewritten ones, cheapest first."""
+    yield expr
     trig = bool(expr.atoms(sp.sin, sp.cos))
+    if trig:
+        yield recombined(expr)
+    if isinstance(expr, sp.Add):
+        # a sum of a quotient and plain terms (Hamilton's H = kinetic part over its denominator − the potential):
+        # the quotients over one denominator, the plain terms as they are
+        over = [t for t in expr.args if sp.denom(t).free_symbols & moving]
+        if over and len(over) < len(expr.args):
+            rest = sp.Add(*(t for t in expr.args if t not in over))
+            quotient = sp.Add(*over)
+            shown = linearised(quotient, moving) if trig else quotient
+            yield shown + collected(pythagoras(rest) if trig else rest, moving)
+            return
     num, den = sp.fraction(sp.together(expr))
     if den.free_symbols:
         # a quotient: one numerator over one denominator, products of sines and cosines linearised
         if trig:
-            return [expr, linearised(expr, moving)]
+            yield linearised(expr, moving)
+            return
         num, den = sp.fraction(sp.cancel(sp.together(expr)))
-        return [expr, sp.factor_terms(collected(num, moving)) / sp.factor_terms(den)]
+        yield sp.factor_terms(collected(num, moving)) / sp.factor_terms(den)
+        return
     grouped = collected(pythagoras(expr) if trig else expr, moving)
-    out = [expr, grouped]
+    yield grouped
     if _factorable(grouped, moving):
-        out.append(sp.factor_terms(grouped))
+        yield sp.factor_terms(grouped)
     if trig:
-        out.append(linearised(expr, moving))
-    out.append(squares(grouped, moving))
-    return out
+        yield linearised(expr, moving)
+    yield squares(grouped, moving)
 
 
 def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, seconds: float = FORM_SECONDS) -> Any:
@@ -216,16 +250,23 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, secon
         return _fallback(expr)
     angles = _angles(expr)
 
-    def best() -> sp.Expr:
-        forms = _candidates(expr, moving)
-        # the engine's form (often the declaration's own) stays unless another is shorter by two operations
-        return min(forms, key=lambda e: (_score(e, angles) - (ENGINE_BONUS if e is forms[0] else 0), forms.index(e)))
+    # the best form so far: what a timeout leaves (the engine's form, often the declaration's own, stays
+    # unless another is shorter by two operations; ties keep the earlier)
+    best: list[Any] = [expr, _score(expr, angles) - ENGINE_BONUS]
 
-    found = within_budget(best, None, left)
-    if found is None:
-        found = _fallback(expr)
+    def search() -> bool:
+        for form in _candidates(expr, moving):
+            score = _score(form, angles)
+            if score < best[1]:
+                best[:] = [form, score]
+        return True
+
+    if within_budget(search, False, left) is False and best[0] is expr:
+        fallback = _fallback(expr)
         if left < seconds:  # the shared budget ran out, not this expression's own time: try again another time
-            return found
+            return fallback
+        best[0] = fallback
+    found = best[0]
     if len(_CACHE) < _CACHE_SIZE:
         _CACHE[key] = found
     return settle(found, names)  # a form, formed again, stays as it is

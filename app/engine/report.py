@@ -13,6 +13,7 @@ from typing import Any
 import sympy as sp
 
 from app.engine import textbook
+from app.engine.breaking import broken, broken_row, single
 from app.engine.budget import unbudgeted
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation
@@ -54,18 +55,25 @@ class Printer:
         shown = self.form(expr)
         with unbudgeted():
             tex = textbook.latex(shown, self.names)
-        return {"sympy": sp.sstr(shown), "latex": tex, "tree": maybe_of_sympy(expr)}
+        # a long result broken across lines, as in the steps (the results box is narrower than a step)
+        return {"sympy": sp.sstr(shown), "latex": broken(tex), "tree": maybe_of_sympy(expr)}
 
     def shown(self, form: sp.Expr, tex: str, expr: sp.Expr) -> dict[str, Any]:
         """A pair for an expression already put in a display form of its own (an equation's scaled residual)."""
-        return {"sympy": sp.sstr(form), "latex": tex, "tree": maybe_of_sympy(expr)}
+        return {"sympy": sp.sstr(form), "latex": single(tex), "tree": maybe_of_sympy(expr)}
 
 
 def _aligned(rows: list[str]) -> str:
-    """One row as it is; several rows stacked and aligned at their first '='."""
+    """One row as it is; several rows stacked and aligned at their first '='.  A row wider than a page's box
+    is broken across lines first (app.engine.breaking): its continuations (``\\quad + …``) and blocks of
+    lines start at the alignment column."""
+    rows = [line for row in rows for line in broken_row(row)]
     if len(rows) == 1:
         return rows[0]
-    marked = [row.replace(" = ", " &= ", 1) if " = " in row else "&" + row for row in rows]
+    marked = [
+        row.replace(" = ", " &= ", 1) if " = " in row and not row.startswith(("\\quad", "\\begin")) else "&" + row
+        for row in rows
+    ]
     return r"\begin{aligned}" + r" \\ ".join(marked) + r"\end{aligned}"
 
 

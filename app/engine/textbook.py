@@ -81,6 +81,8 @@ class _Printer(LatexPrinter):
             own = self.first is not None and term.has(self.first)
             return (-self.level(term), not own, negative, sp.default_sort_key(term))
         rank = _parameter_rank(term.name) if term.is_Symbol and term not in self.moving else (9, "", "")
+        if getattr(self, "_constants_first", False):
+            return (negative, not self.constant(term), rank, sp.default_sort_key(term))
         return (self.constant(term) and not term.is_Number, negative, rank, sp.default_sort_key(term))
 
     def split_sign(self, expr: sp.Expr) -> tuple[bool, sp.Expr]:
@@ -103,7 +105,10 @@ class _Printer(LatexPrinter):
     def _print_Add(self, expr: sp.Add, order: Any = None) -> str:
         top = getattr(self, "_top", False)
         self._top = False
-        terms = sorted((self.split_sign(t) for t in expr.args), key=lambda st: self._term_key(st, top))
+        signed = [self.split_sign(t) for t in expr.args]
+        # a bracket whose moving terms are all negative starts with its constants: (2m₁ + m₂ − m₂ cos 2Δ)
+        self._constants_first = not top and all(neg for neg, t in signed if not self.constant(t))
+        terms = sorted(signed, key=lambda st: self._term_key(st, top))
         out = ""
         for i, (negative, term) in enumerate(terms):
             if negative:
