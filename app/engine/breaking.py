@@ -16,8 +16,9 @@ from __future__ import annotations
 import re
 
 # ems of display math a formula may take before it is broken: a step's box at 1366 px holds about 65 (17-18 px
-# an em), a page of the LaTeX export (11 pt, 2 cm margins) about 44
-LIMIT = 44.0
+# an em), the results box less, a page of the LaTeX export (11 pt, 2 cm margins) about 44 less its indents;
+# one limit for all, so the page and the export break at the same places
+LIMIT = 36.0
 _COMMAND = re.compile(r"\\([A-Za-z]+|.)")
 _ZERO = {"left", "right", "big", "Big", "bigg", "Bigg", "displaystyle", "limits", "mathrm", "mathbf", "vec", "dot",
          "ddot", "hat", "bar", "tilde", "begin", "end", "text"}  # fmt: skip
@@ -136,12 +137,13 @@ def _stacked_fraction(rhs: str, limit: float) -> str | None:
         return None
     num, i = _group(rhs, m.end())
     den, j = _group(rhs, i)
-    if j != len(rhs):
+    tail = rhs[j:]  # what may follow the quotient on its line: "\approx 5.75"
+    if width(tail) > 12 or _top_level_signs(tail):
         return None
     lines = _lines(num, limit)
     if len(lines) < 2:
         return None
-    return rf"{m.group(1) or ''}\frac{{{_block(lines)}}}{{{den}}}"
+    return rf"{m.group(1) or ''}\frac{{{_block(lines)}}}{{{den}}}{tail}"
 
 
 def broken(tex: str, limit: float = LIMIT) -> str:
@@ -161,11 +163,34 @@ def _block(lines: list[str]) -> str:
     return rf"\begin{{aligned}}{body}\end{{aligned}}"
 
 
+def _clauses(row: str) -> list[str]:
+    """A row cut after each top-level ",\\quad" (ω² = …, shape (…)): the clauses a line may end after."""
+    out, depth, start, i = [], 0, 0, 0
+    while i < len(row):
+        if row.startswith("\\left", i) or row[i] == "{":
+            depth += 1
+        elif row.startswith("\\right", i) or row[i] == "}":
+            depth -= 1
+        elif depth == 0 and row.startswith(",\\quad ", i):
+            out.append(row[start : i + 1])
+            start = i + len(",\\quad ")
+            i = start
+            continue
+        i += 2 if row[i] == "\\" else 1
+    return [*out, row[start:]]
+
+
 def broken_row(row: str, limit: float = LIMIT) -> list[str]:
     """A step's row ``lhs = rhs`` as rows to align: the first ``lhs = part``, the rest continuing under the
     right-hand side (``\\quad + …``); a stacked numerator when the right-hand side is one long quotient; an
     equation ``… = 0`` with a long left side as one block of lines ending in ``= 0``."""
-    if width(row) <= limit or r"\begin" in row:
+    if width(row) <= limit:
+        return [row]
+    clauses = _clauses(row)
+    if len(clauses) > 1:
+        first = broken_row(clauses[0], limit)
+        return [*first, *(rf"\quad {c}" for clause in clauses[1:] for c in broken_row(clause, limit))]
+    if r"\begin" in row:
         return [row]
     head, sep, rhs = row.rpartition(" = ")
     if not sep:

@@ -70,8 +70,10 @@ def _aligned(rows: list[str]) -> str:
     rows = [line for row in rows for line in broken_row(row)]
     if len(rows) == 1:
         return rows[0]
+    # rows holding a block of lines (an equation broken across lines) are set flush left, not at their '='
+    flush = any(row.startswith("\\begin{aligned}") for row in rows)
     marked = [
-        row.replace(" = ", " &= ", 1) if " = " in row and not row.startswith(("\\quad", "\\begin")) else "&" + row
+        row.replace(" = ", " &= ", 1) if " = " in row and not flush and not row.startswith("\\quad") else "&" + row
         for row in rows
     ]
     return r"\begin{aligned}" + r" \\ ".join(marked) + r"\end{aligned}"

@@ -42,7 +42,36 @@ export function typeset(root = document) {
       el.dataset.typeset = "1";
     }
   }
+  markWide(root);
   return root.querySelectorAll(".katex-error").length;
+}
+
+const WIDE_LABEL = "Wide formula: scroll sideways to read all of it";
+let widths = null;
+
+/**
+ * A display formula wider than its box (on a phone) scrolls inside that box: the box is then a labelled
+ * region the keyboard can reach (tabindex 0), and stops being one when it fits again.  Boxes are watched
+ * as they appear (a step unfolded, an "all steps" toggle) and as the window changes width.
+ */
+export function markWide(root = document) {
+  if (typeof ResizeObserver === "undefined") return;
+  widths ??= new ResizeObserver((entries) => { for (const e of entries) fitOrScroll(e.target); });
+  for (const el of root.querySelectorAll(".math-display")) widths.observe(el);
+}
+
+function fitOrScroll(el) {
+  if (el.offsetParent === null) return; // hidden: decided when it shows
+  const wide = el.scrollWidth > el.clientWidth + 1;
+  if (wide) {
+    el.tabIndex = 0;
+    el.setAttribute("role", "region");
+    el.setAttribute("aria-label", WIDE_LABEL);
+  } else if (el.getAttribute("aria-label") === WIDE_LABEL) {
+    el.removeAttribute("tabindex");
+    el.removeAttribute("role");
+    el.removeAttribute("aria-label");
+  }
 }
 
 function h(tag, attrs = {}, ...children) {

@@ -16,9 +16,11 @@ READY = "body[data-katex-errors]"
 
 # Each typeset display formula: its own width, the width of the box it sits in, and whether that box scrolls
 # and can be focused (tabindex, label) -- the one place a wide formula may go on a phone.
-MEASURE = """() => {
+MEASURE = """async () => {
   for (const d of document.querySelectorAll('details')) d.open = true;
   for (const b of document.querySelectorAll('button.all-steps[aria-expanded=false]')) b.click();
+  // the page marks wide boxes as they appear (a ResizeObserver): let it see them
+  for (let i = 0; i < 3; i++) await new Promise((r) => requestAnimationFrame(r));
   const out = [];
   for (const el of document.querySelectorAll('.math-display')) {
     if (!el.querySelector('.katex') || el.offsetParent === null) continue;
