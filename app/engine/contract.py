@@ -13,8 +13,16 @@ from app.engine.errata import errata_json
 from app.engine.hamilton import hamilton
 from app.engine.modes import normal_modes
 from app.engine.names import display_names
-from app.engine.report import Printer, build_steps, constraint_steps, energies, equation_pairs, lagrangian
-from app.engine.report import new_lagrangian, transform_steps
+from app.engine.report import (
+    Printer,
+    build_steps,
+    constraint_steps,
+    energies,
+    equation_pairs,
+    lagrangian,
+    new_lagrangian,
+    transform_steps,
+)
 from app.engine.report import display as _show
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.rods import fixed_distances

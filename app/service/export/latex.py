@@ -82,7 +82,7 @@ def _display(rows: list[str]) -> str:
         blocks.append("\\begin{align*}\n" + " \\\\\n".join(marked) + "\n\\end{align*}")
         run.clear()
 
-    for row in map(_braced, (line for row in rows for line in broken_row(row, PAGE_EMS))):
+    for row in map(_braced, (line for given in rows for line in broken_row(given, PAGE_EMS))):
         if len(row) > LONG_ROW and "\\begin{" not in row:
             if run:
                 close()
