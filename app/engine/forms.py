@@ -34,9 +34,10 @@ from app.engine.budget import pythagoras, tidy, within_budget
 
 FORM_SECONDS = 0.5
 # once the shared display budget is spent, each expression still gets this much (the results' forms are cheap)
-LATE_SECONDS = 0.15
+LATE_SECONDS = 0.3
 FALLBACK_SECONDS = 0.2
 ENGINE_BONUS = 1.5
+SMALL = 120  # nodes below which expanding first is cheap
 NODE_BUDGET = 1500
 _CACHE: dict[tuple[sp.Expr, frozenset[sp.Symbol]], sp.Expr] = {}
 _CACHE_SIZE = 4096
@@ -200,9 +201,22 @@ def recombined(expr: sp.Expr) -> sp.Expr:
 def _candidates(expr: sp.Expr, moving: set[sp.Symbol]) -> Iterator[sp.Expr]:
     """The engine's form first (ties keep it), then the rewritten ones, cheapest first."""
     yield expr
+    moving_denominator = any(p.exp.is_negative and p.base.free_symbols & moving for p in expr.atoms(sp.Pow))
+    if _nodes(expr, SMALL) < SMALL and not moving_denominator:
+        # a small expression expanded and collected: what cancels goes first (a checker's difference)
+        yield collected(expr, moving)
     trig = bool(expr.atoms(sp.sin, sp.cos))
-    if trig:
+    big = _nodes(expr, 4 * SMALL) >= 4 * SMALL
+    if trig and big:
+        # cheap on any size: first for a large expression, whose other candidates may not finish in time
         yield recombined(expr)
+    yield from _rewritten(expr, moving, trig)
+    if trig and not big:
+        yield recombined(expr)
+
+
+def _rewritten(expr: sp.Expr, moving: set[sp.Symbol], trig: bool) -> Iterator[sp.Expr]:
+    """The candidates that expand, put over one denominator or factor."""
     if isinstance(expr, sp.Add):
         # a sum of a quotient and plain terms (Hamilton's H = kinetic part over its denominator − the potential):
         # the quotients over one denominator, the plain terms as they are

@@ -76,3 +76,17 @@ def test_bounded_with_the_engines_display_form_as_fallback():
     shown = textbook_form(big, NAMES)
     assert time.monotonic() - started < 3 * (forms.FORM_SECONDS + forms.FALLBACK_SECONDS) + 5
     _equal(shown, big)
+
+
+def test_the_practice_difference_is_the_mistake_alone():
+    # the double pendulum's θ₂ equation without its θ̇₁² term: the difference shown is that term, nothing else
+    from app.engine.check import judge, problem
+    from app.service.derivations import derivation
+
+    d = derivation("double-pendulum")
+    result = judge(
+        problem(d, "equation", "theta2"), "l2*theta2_ddot + l1*cos(theta1 - theta2)*theta1_ddot + g*sin(theta2)"
+    )
+    assert result["verdict"] == "incorrect"
+    assert result["difference"]["sympy"] == "l1*theta1_dot**2*sin(theta1 - theta2)"
+    assert "ddot" not in result["difference"]["sympy"]
