@@ -346,7 +346,8 @@ class _Unicode(StrPrinter):
         coeff, rest = expr.as_coeff_Mul()
         sign = "−" if coeff < 0 else ""
         coeff = abs(coeff)
-        num, den = [], []
+        num: list[sp.Expr] = []
+        den: list[sp.Expr] = []
         for f in sp.Mul.make_args(rest):
             base, exp = f.as_base_exp()
             (den if exp.is_Number and exp < 0 else num).append(base ** (-exp) if exp.is_Number and exp < 0 else f)
