@@ -164,7 +164,7 @@ def _block(lines: list[str]) -> str:
 
 
 def _clauses(row: str) -> list[str]:
-    """A row cut after each top-level ",\\quad" (ω² = …, shape (…)): the clauses a line may end after."""
+    """A row cut after each top-level ",\\quad" (ω² = …, shape (…)) and before words (\\text): its clauses."""
     out, depth, start, i = [], 0, 0, 0
     while i < len(row):
         if row.startswith("\\left", i) or row[i] == "{":
@@ -175,6 +175,12 @@ def _clauses(row: str) -> list[str]:
             out.append(row[start : i + 1])
             start = i + len(",\\quad ")
             i = start
+            continue
+        elif depth == 0 and row.startswith(" \\text{", i) and i > start:
+            # words between formulas (an erratum's "is simple harmonic with") begin a line of their own
+            out.append(row[start:i])
+            start = i + 1
+            i = start + 1
             continue
         i += 2 if row[i] == "\\" else 1
     return [*out, row[start:]]

@@ -57,7 +57,10 @@ let widths = null;
 export function markWide(root = document) {
   if (typeof ResizeObserver === "undefined") return;
   widths ??= new ResizeObserver((entries) => { for (const e of entries) fitOrScroll(e.target); });
-  for (const el of root.querySelectorAll(".math-display")) widths.observe(el);
+  const boxes = [...root.querySelectorAll(".math-display")];
+  for (const el of boxes) widths.observe(el);
+  // KaTeX's fonts widen a formula without resizing its box: decide again once they are in
+  if (document.fonts) document.fonts.ready.then(() => boxes.forEach(fitOrScroll));
 }
 
 function fitOrScroll(el) {

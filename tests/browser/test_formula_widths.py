@@ -19,7 +19,8 @@ READY = "body[data-katex-errors]"
 MEASURE = """async () => {
   for (const d of document.querySelectorAll('details')) d.open = true;
   for (const b of document.querySelectorAll('button.all-steps[aria-expanded=false]')) b.click();
-  // the page marks wide boxes as they appear (a ResizeObserver): let it see them
+  // the page marks wide boxes as they appear (a ResizeObserver) and once the fonts are in: let it see them
+  await document.fonts.ready;
   for (let i = 0; i < 3; i++) await new Promise((r) => requestAnimationFrame(r));
   const out = [];
   for (const el of document.querySelectorAll('.math-display')) {
