@@ -16,7 +16,8 @@ value of its symbols) in the shortest of a few forms a reader recognises:
 Among the candidates the one with the fewest operations wins (one extra operation charged for each
 angle the engine's form did not have, so sin θ cos θ stays unless sin 2θ is really shorter); ties keep
 the earlier, more conservative candidate.  The work is bounded: each expression gets FORM_SECONDS
-(no more than the shared display budget has left, but at least LATE_SECONDS); beyond it, or beyond NODE_BUDGET nodes, the
+(no more than the shared display budget has left; a small one at least LATE_SECONDS) and keeps the best
+form found in that time; with none found, or beyond NODE_BUDGET nodes, the
 engine's own cheap display form (sin² + cos² = 1 collapsed, SymPy's ``simplify`` when small) is kept.
 """
 
@@ -32,7 +33,7 @@ from sympy.simplify.fu import TR8, TR10i
 from app.engine import budget
 from app.engine.budget import pythagoras, tidy, within_budget
 
-FORM_SECONDS = 0.5
+FORM_SECONDS = 1.0
 # once the shared display budget is spent, each expression still gets this much (the results' forms are cheap)
 LATE_SECONDS = 0.3
 FALLBACK_SECONDS = 0.2
@@ -259,8 +260,10 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, secon
     key = (expr, frozenset(moving))
     if key in _CACHE:
         return _CACHE[key]
-    left = max(budget._remaining(seconds), min(seconds, LATE_SECONDS))
-    if _nodes(expr, NODE_BUDGET) > NODE_BUDGET:
+    nodes = _nodes(expr, NODE_BUDGET)
+    # once the shared budget is spent, a small expression still gets LATE_SECONDS; a large one only its fallback
+    left = max(budget._remaining(seconds), min(seconds, LATE_SECONDS) if nodes < 4 * SMALL else 0.0)
+    if nodes > NODE_BUDGET or left <= 0.01:
         return _fallback(expr)
     angles = _angles(expr)
 
