@@ -86,7 +86,7 @@ def width(tex: str) -> float:
 
 
 def _top_level_signs(tex: str) -> list[int]:
-    """Indices of the binary ' + ' and ' - ' of tex at brace depth 0 and outside \\left … \\right."""
+    """Indices of the binary ' + ' and ' - ' of tex outside braces and brackets (\\left( … \\right) or plain)."""
     out, depth, i = [], 0, 0
     while i < len(tex):
         if tex.startswith("\\left", i):
@@ -101,9 +101,9 @@ def _top_level_signs(tex: str) -> list[int]:
         if c == "\\":
             i += 2
             continue
-        if c == "{":
+        if c in "{(":
             depth += 1
-        elif c == "}":
+        elif c in "})":
             depth -= 1
         elif depth == 0 and c in "+-" and tex[i - 1 : i] == " " and tex[i + 1 : i + 2] == " " and i > 1:
             out.append(i - 1)
@@ -164,26 +164,29 @@ def _block(lines: list[str]) -> str:
 
 
 def _clauses(row: str) -> list[str]:
-    """A row cut after each top-level ",\\quad" (ω² = …, shape (…)) and before words (\\text): its clauses."""
+    """A row cut after each top-level ",\\quad" (ω² = …, shape (…)) and around words (\\text): its clauses."""
     out, depth, start, i = [], 0, 0, 0
     while i < len(row):
-        if row.startswith("\\left", i) or row[i] == "{":
-            depth += 1
-        elif row.startswith("\\right", i) or row[i] == "}":
-            depth -= 1
-        elif depth == 0 and row.startswith(",\\quad ", i):
+        if depth == 0 and row.startswith(",\\quad ", i):
             out.append(row[start : i + 1])
-            start = i + len(",\\quad ")
-            i = start
+            start = i = i + len(",\\quad ")
             continue
-        elif depth == 0 and row.startswith(" \\text{", i) and i > start:
-            # words between formulas (an erratum's "is simple harmonic with") begin a line of their own
-            out.append(row[start:i])
-            start = i + 1
-            i = start + 1
+        if depth == 0 and row.startswith("\\text{", i):
+            # words between formulas (an erratum's "toward the origin; later") are a line of their own
+            _, end = _group(row, i + len("\\text"))
+            if row[start:i].strip():
+                out.append(row[start:i].rstrip())
+            out.append(row[i:end])
+            start = i = end
             continue
-        i += 2 if row[i] == "\\" else 1
-    return [*out, row[start:]]
+        c = row[i]
+        if c in "{(":
+            depth += 1
+        elif c in "})":
+            depth -= 1
+        i += 2 if c == "\\" else 1
+    rest = row[start:].strip()
+    return [c for c in out if c.strip()] + ([rest] if rest else [])
 
 
 def broken_row(row: str, limit: float = LIMIT) -> list[str]:
@@ -192,10 +195,17 @@ def broken_row(row: str, limit: float = LIMIT) -> list[str]:
     equation ``… = 0`` with a long left side as one block of lines ending in ``= 0``."""
     if width(row) <= limit:
         return [row]
-    clauses = _clauses(row)
+    clauses: list[str] = []
+    for clause in _clauses(row):
+        # clauses side by side while they fit: "≈ 5.75, shape (…)" stays on one line when it can
+        if clauses and width(clauses[-1] + " " + clause) <= limit:
+            clauses[-1] += " " + clause
+        else:
+            clauses.append(clause)
     if len(clauses) > 1:
         first = broken_row(clauses[0], limit)
-        return [*first, *(rf"\quad {c}" for clause in clauses[1:] for c in broken_row(clause, limit))]
+        rest = (c.removeprefix("\\quad ") for clause in clauses[1:] for c in broken_row(clause, limit))
+        return [*first, *(rf"\quad {c}" for c in rest)]
     if r"\begin" in row:
         return [row]
     head, sep, rhs = row.rpartition(" = ")

@@ -126,7 +126,7 @@ def correct_tex(text: str, names: dict[sp.Symbol, str]) -> str:
     return " = ".join(_side(part.strip(), names) for part in text.split(" = "))
 
 
-CELL_EMS = 22.0  # ems of a formula in the errata table's cells (about 470 px at 1366 px, 17-18 px an em)
+CELL_EMS = 18.0  # ems of a formula in the errata table's cells (about 400-470 px at 1366 px, 17-18 px an em)
 
 
 def errata_json(scene: Scene, names: dict[sp.Symbol, str]) -> list[dict[str, Any]]:

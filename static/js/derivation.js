@@ -56,7 +56,9 @@ let widths = null;
  */
 export function markWide(root = document) {
   if (typeof ResizeObserver === "undefined") return;
-  widths ??= new ResizeObserver((entries) => { for (const e of entries) fitOrScroll(e.target); });
+  // a box that just appeared may first be typeset with a font still loading: decide again once it is in
+  const again = (el) => { fitOrScroll(el); if (document.fonts) document.fonts.ready.then(() => fitOrScroll(el)); };
+  widths ??= new ResizeObserver((entries) => { for (const e of entries) again(e.target); });
   const boxes = [...root.querySelectorAll(".math-display")];
   for (const el of boxes) widths.observe(el);
   // KaTeX's fonts widen a formula without resizing its box: decide again once they are in
