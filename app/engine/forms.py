@@ -189,14 +189,21 @@ def recombined(expr: sp.Expr) -> sp.Expr:
     (a denominator's square) linearised when that shortens it."""
 
     def shorter(base: sp.Expr) -> sp.Expr:
-        lin = sp.expand(TR8(sp.expand(base)))
+        # the numbers made whole, the half taken out: (2m₁ + m₂ − m₂ cos 2Δ)/2
+        lin = _angles_expanded(sp.factor_terms(sp.expand(TR8(sp.expand(base))), clear=True))
         return lin if sp.count_ops(lin) < sp.count_ops(base) else base
 
-    out = TR10i(expr)
-    return out.replace(
+    out = TR10i(expr).replace(
         lambda e: e.is_Pow and isinstance(e.base, sp.Add) and e.base.has(sp.sin, sp.cos) and _nodes(e.base, 200) < 200,
         lambda e: sp.Pow(shorter(e.base), e.exp),
     )
+    # a denominator's numbers made whole: 1/(m₁ + m₂/2 − m₂ cos 2Δ/2) -> 2/(2m₁ + m₂ − m₂ cos 2Δ)
+    out = out.replace(
+        lambda e: e.is_Pow and e.exp.is_negative and isinstance(e.base, sp.Add)
+        and any(not t.as_coeff_Mul()[0].is_Integer for t in e.base.args),
+        lambda e: sp.Pow(sp.factor_terms(e.base, clear=True), e.exp),
+    )  # fmt: skip
+    return _angles_expanded(out)
 
 
 def _candidates(expr: sp.Expr, moving: set[sp.Symbol]) -> Iterator[sp.Expr]:
