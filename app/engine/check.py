@@ -63,6 +63,7 @@ from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, POINT
 from app.engine.parse import ExpressionError, check_expression, parse_expression
 from app.engine.reality import real_somewhere
 from app.engine.report import Printer, display, plain_name
+from app.engine.textbook import unicode_text
 
 STEPS = ("kinetic", "potential", "lagrangian", "momentum", "equation", "acceleration", "hamiltonian", "omega_squared")
 PER_COORDINATE = frozenset({"momentum", "equation", "acceleration"})
@@ -267,7 +268,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         found = checkable_equilibria(d)
         truths = tuple(e.omega_squared for e in found)
         r = d.reduction.coordinate  # type: ignore[union-attr]
-        where = tuple(f"{plain_name(r)} = {sp.sstr(e.position)}" for e in found)
+        where = tuple(f"{plain_name(r)} = {unicode_text(e.position)}" for e in found)
 
     momenta = conserved_momenta(d)
     kinds = name_kinds(table.names, table.parameter_names, tuple(p.name for p in momenta))
@@ -446,7 +447,7 @@ def judge_follow_up(pb: Problem, key: str, text: str) -> dict[str, Any]:
 def _constant_message(pb: Problem, difference: sp.Expr) -> str:
     varying, constant = without_constant(difference, pb.groups.dynamic())
     shown = constant if symbolically_zero(varying) else None
-    amount = f"the constant {sp.sstr(shown)}" if shown is not None else "a constant"
+    amount = f"the constant {unicode_text(shown)}" if shown is not None else "a constant"
     why = {
         "potential": "a different zero of height, which changes no force and no equation of motion",
         "lagrangian": "a constant drops out of every Euler–Lagrange equation",
@@ -458,7 +459,7 @@ def _constant_message(pb: Problem, difference: sp.Expr) -> str:
 def _factor_message(pb: Problem, answer: sp.Expr, truth: sp.Expr, constant: bool) -> str:
     factor = _budgeted(lambda: tidy(sp.cancel(answer / truth), FACTOR_SECONDS), None, FACTOR_SECONDS * 2)
     rates = set(pb.groups.rates)
-    named = f"{sp.sstr(factor)}" if factor is not None and not (factor.free_symbols & rates) else "a factor"
+    named = f"{unicode_text(factor)}" if factor is not None and not (factor.free_symbols & rates) else "a factor"
     if constant:
         return (
             f"Equivalent: your equation is the engine's {pb.label} multiplied by {named}, "
@@ -482,7 +483,7 @@ def _difference(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[sp.Expr, 
         if mine != 0 and theirs != 0:
             scale = _budgeted(lambda: sp.cancel(mine / theirs), None, FACTOR_SECONDS)
             if scale is not None and scale != 1 and not (scale.free_symbols & set(pb.groups.rates)):
-                how = f", even after scaling it by {sp.sstr(scale)} to match your coefficient of the acceleration"
+                how = f", even after scaling it by {unicode_text(scale)} to match your coefficient of the acceleration"
                 return answer - scale * truth, how
     return answer - truth, ""
 
@@ -494,5 +495,5 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str:
         factor = _budgeted(lambda: tidy(sp.cancel(truth / answer), FACTOR_SECONDS), None, FACTOR_SECONDS * 2)
         if factor is not None:
             template = CONSTANT_FACTOR_HINT if factor_is_constant(b, a) else MISSING_FACTOR_HINT
-            return template.format(factor=sp.sstr(factor))
+            return template.format(factor=unicode_text(factor))
     return POINTERS[pb.step]

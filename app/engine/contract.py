@@ -13,7 +13,16 @@ from app.engine.errata import errata_json
 from app.engine.hamilton import hamilton
 from app.engine.modes import normal_modes
 from app.engine.names import display_names
-from app.engine.report import Printer, build_steps, constraint_steps, equation_rows, new_lagrangian, transform_steps
+from app.engine.report import (
+    Printer,
+    build_steps,
+    constraint_steps,
+    energies,
+    equation_pairs,
+    lagrangian,
+    new_lagrangian,
+    transform_steps,
+)
 from app.engine.report import display as _show
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.rods import fixed_distances
@@ -103,10 +112,12 @@ def _member_seconds(d: Derivation) -> dict[str, float]:
     return {member: share * seconds for member, seconds in MEMBER_SECONDS.items()}
 
 
-def _equation_rows(d: Derivation, pr: Printer) -> list[str]:
-    """The textbook rows of the equations within what is left of the display budget, else each residual = 0."""
-    rows = within_budget(lambda: equation_rows(d, pr), None, max(display_seconds_left(DISPLAY_SECONDS), 0.5))
-    return rows if rows is not None else [f"{pr.tex(r)} = 0" for r in d.equations.residuals]
+def _equation_pairs(d: Derivation, pr: Printer) -> list[dict[str, Any]]:
+    """The equations in their textbook rows within what is left of the display budget, else each residual = 0."""
+    pairs = within_budget(lambda: equation_pairs(d, pr), None, max(display_seconds_left(DISPLAY_SECONDS), 0.5))
+    if pairs is not None:
+        return pairs
+    return [pr.shown(r, f"{pr.tex(r)} = 0", r) for r in d.equations.residuals]
 
 
 def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[str, Any]:
@@ -140,12 +151,11 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "parameters": parameters_json(d.system.parameters),
         "kinetic": pr.pair(d.mechanics.T) if d.mechanics.T is not None else None,
         "potential": pr.pair(d.mechanics.U) if d.mechanics.U is not None else None,
-        "lagrangian": pr.pair(d.mechanics.L),
-        "hamiltonian": pr.pair(_shown(en.hamiltonian)),
-        "energy": pr.pair(_shown(en.energy)),
+        "lagrangian": pr.pair(lagrangian(d, pr)),
+        # h and E from the same pieces as T and U; each equation's text is the scaled residual its row shows
+        **dict(zip(("hamiltonian", "energy"), map(pr.pair, energies(d, pr)), strict=True)),
         "equations_of_motion": [
-            {"coordinate": name, **pr.pair(_shown(r)), "latex": row}
-            for name, r, row in zip(table.names, eqs.residuals, _equation_rows(d, pr), strict=True)
+            {"coordinate": name, **pair} for name, pair in zip(table.names, _equation_pairs(d, pr), strict=True)
         ],
         "accelerations": _accelerations(d, pr, skipped),
         "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],

@@ -15,6 +15,7 @@ from typing import Any
 import sympy as sp
 
 from app.engine import textbook
+from app.engine.breaking import single
 from app.engine.budget import unbudgeted
 from app.engine.names import GREEK, latex
 from app.scenes.types import Scene
@@ -125,6 +126,9 @@ def correct_tex(text: str, names: dict[sp.Symbol, str]) -> str:
     return " = ".join(_side(part.strip(), names) for part in text.split(" = "))
 
 
+CELL_EMS = 18.0  # ems of a formula in the errata table's cells (about 400-470 px at 1366 px, 17-18 px an em)
+
+
 def errata_json(scene: Scene, names: dict[sp.Symbol, str]) -> list[dict[str, Any]]:
     """Each erratum with its two formulas typeset as LaTeX next to the ASCII originals."""
     with unbudgeted():
@@ -137,8 +141,9 @@ def _errata(scene: Scene, names: dict[sp.Symbol, str]) -> list[dict[str, Any]]:
             "chapter": e.chapter,
             "correct": e.correct,
             "reason": e.reason,
-            "chapter_latex": ascii_tex(e.chapter),
-            "correct_latex": correct_tex(e.correct, names),
+            # each formula sits in a table cell, a third of the page: broken to fit it
+            "chapter_latex": single(ascii_tex(e.chapter), CELL_EMS),
+            "correct_latex": single(correct_tex(e.correct, names), CELL_EMS),
         }
         for e in scene.errata
     ]

@@ -15,9 +15,11 @@ import sympy as sp
 from app.engine import textbook
 from app.engine.action_step import TITLE as ACTION_TITLE
 from app.engine.action_step import action_step
-from app.engine.budget import pythagoras, tidy, unbudgeted
+from app.engine.breaking import broken, broken_row, single
+from app.engine.budget import unbudgeted
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation
+from app.engine.forms import settle, textbook_form, use_names
 from app.engine.names import unicode
 from app.engine.transform import Transformed, collected, compact
 from app.engine.trees import maybe_of_sympy
@@ -34,22 +36,48 @@ CORE_STEPS = frozenset(
 class Printer:
     names: dict[sp.Symbol, str]
 
+    def __post_init__(self) -> None:
+        # expressions formed without a printer at hand (a step's sympy text) read coordinates from these names
+        use_names(self.names)
+
+    def form(self, expr: Any) -> Any:
+        """The expression's textbook form (app.engine.forms): what both its text and its LaTeX show."""
+        return textbook_form(expr, self.names)
+
     def tex(self, expr: Any) -> str:
-        """LaTeX in a textbook's order (display only: the sympy strings are untouched)."""
+        """LaTeX of the textbook form, in a textbook's order."""
+        shown = self.form(expr)
         with unbudgeted():  # printing must not eat the simplifications' share of the display budget
-            return textbook.latex(expr, self.names)
+            return textbook.latex(shown, self.names)
 
     def pair(self, expr: sp.Expr) -> dict[str, Any]:
-        """An expression in the document: SymPy's text, the LaTeX shown, and the tree the browser evaluates
-        (None when it has none: a function outside the allowlist, or too large for a figure)."""
-        return {"sympy": sp.sstr(expr), "latex": self.tex(expr), "tree": maybe_of_sympy(expr)}
+        """An expression in the document: the text of its textbook form, the LaTeX of the same form, and the
+        tree the browser evaluates (of the engine's own expression; None when it has none: a function
+        outside the allowlist, or too large for a figure)."""
+        shown = self.form(expr)
+        with unbudgeted():
+            tex = textbook.latex(shown, self.names)
+        # a long result broken across lines, as in the steps (the results box is narrower than a step)
+        return {"sympy": sp.sstr(shown), "latex": broken(tex), "tree": maybe_of_sympy(expr)}
+
+    def shown(self, form: sp.Expr, tex: str, expr: sp.Expr) -> dict[str, Any]:
+        """A pair for an expression already put in a display form of its own (an equation's scaled residual)."""
+        return {"sympy": sp.sstr(form), "latex": single(tex), "tree": maybe_of_sympy(expr)}
 
 
 def _aligned(rows: list[str]) -> str:
-    """One row as it is; several rows stacked and aligned at their first '='."""
+    """One row as it is; several rows stacked and aligned at their first '='.  A row wider than a page's box
+    is broken across lines first (app.engine.breaking): its continuations (``\\quad + …``) and blocks of
+    lines start at the alignment column."""
+    rows = [line for row in rows for line in broken_row(row)]
     if len(rows) == 1:
         return rows[0]
-    marked = [row.replace(" = ", " &= ", 1) if " = " in row else "&" + row for row in rows]
+    # rows holding a block of lines (an equation broken across lines) are set flush left, not at their '='
+    flush = any(row.startswith("\\begin{aligned}") for row in rows)
+    marked = [
+        row.replace(" = ", " &= ", 1) if " = " in row and not flush and not row.startswith("\\quad") else "&" + row
+        for row in rows
+    ]
     return r"\begin{aligned}" + r" \\ ".join(marked) + r"\end{aligned}"
 
 
@@ -58,26 +86,65 @@ def plain_name(name: str) -> str:
     return unicode(name)
 
 
-def _step(title: str, rows: list[str], sympy: Any, explanation: str) -> dict[str, str]:
-    text = sp.sstr(sympy) if not isinstance(sympy, str) else sympy
+def _formed(sympy: Any) -> Any:
+    """Every expression in a step's data in its textbook form (the form its LaTeX rows typeset)."""
+    if isinstance(sympy, (list, tuple)):
+        return type(sympy)(_formed(x) for x in sympy)
+    return textbook_form(sympy)
+
+
+def _step(title: str, rows: list[str], sympy: Any, explanation: str, formed: bool = False) -> dict[str, str]:
+    """``formed``: the data is already in the form the rows show (else each expression is put in its textbook
+    form, as ``Printer.tex`` does for the rows)."""
+    text = sympy if isinstance(sympy, str) else sp.sstr(sympy if formed else _formed(sympy))
     return {"title": title, "latex": _aligned(rows), "sympy": text, "explanation": explanation}
 
 
 def display(expr: sp.Expr) -> sp.Expr:
-    return tidy(pythagoras(expr)) if expr.free_symbols else expr
+    """The textbook form of an expression (app.engine.forms), with the current printer's names."""
+    return textbook_form(expr) if isinstance(expr, sp.Expr) and expr.free_symbols else expr
+
+
+def equations(d: Derivation, pr: Printer) -> list[tuple[sp.Expr, str]]:
+    """Each Euler–Lagrange equation as a textbook prints it, θ̈ + (g/R) sin θ = 0: the residual in its
+    textbook form scaled for display (the equation residual = 0 is unchanged), and its LaTeX row."""
+    eqs = d.equations
+    M, diagonal = eqs.mass_matrix, eqs.mass_matrix.is_diagonal()
+    out = []
+    for k, r in enumerate(eqs.residuals):
+        own, residual = d.table.qdd[k], pr.form(r)
+        with unbudgeted():
+            shown = textbook.normalised(residual, M[k, k], diagonal, pr.names, own)
+            out.append((shown, f"{textbook.latex(shown, pr.names, first=own)} = 0"))
+    return out
 
 
 def equation_rows(d: Derivation, pr: Printer) -> list[str]:
-    """Each Euler–Lagrange equation as a textbook prints it: θ̈ + (g/R) sin θ = 0 (display only)."""
-    eqs = d.equations
-    M, diagonal = eqs.mass_matrix, eqs.mass_matrix.is_diagonal()
-    rows = []
-    for k, r in enumerate(eqs.residuals):
-        own, residual = d.table.qdd[k], display(r)
-        with unbudgeted():
-            shown = textbook.normalised(residual, M[k, k], diagonal, pr.names, own)
-            rows.append(f"{textbook.latex(shown, pr.names, first=own)} = 0")
-    return rows
+    return [row for _, row in equations(d, pr)]
+
+
+def equation_pairs(d: Derivation, pr: Printer) -> list[dict[str, Any]]:
+    """The equations for the document: each one's text is the scaled residual its row typesets."""
+    return [pr.shown(shown, row, r) for (shown, row), r in zip(equations(d, pr), d.equations.residuals, strict=True)]
+
+
+def lagrangian(d: Derivation, pr: Printer) -> sp.Expr:
+    """L printed from the same pieces as T and U (T's form minus U's), or its own form when declared alone."""
+    m = d.mechanics
+    if m.T is None or m.U is None:
+        return pr.form(m.L)
+    return settle(pr.form(m.T) - pr.form(m.U), pr.names)
+
+
+def energies(d: Derivation, pr: Printer) -> tuple[sp.Expr, sp.Expr]:
+    """h and E printed from the same pieces as T and U: E = (T's form) + (U's form), and h the same sum
+    when h = E (else h's own textbook form)."""
+    m, en = d.mechanics, d.energetics
+    if m.T is None or m.U is None:
+        return pr.form(en.hamiltonian), pr.form(en.energy)
+    energy = settle(pr.form(m.T) + pr.form(m.U), pr.names)
+    same = en.h_equals_e and sp.expand(en.hamiltonian - en.energy) == 0
+    return (energy if same else pr.form(en.hamiltonian)), energy
 
 
 def build_steps(d: Derivation) -> list[dict[str, str]]:
@@ -142,8 +209,8 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     steps.append(
         _step(
             "Lagrangian",
-            [f"L = {pr.tex(m.L)}"],
-            m.L,
+            [f"L = {pr.tex(lagrangian(d, pr))}"],
+            lagrangian(d, pr),
             "The Lagrangian is kinetic minus potential energy." if m.T is not None else "The Lagrangian as declared.",
         )
     )
@@ -171,24 +238,25 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
                 "Forces that no potential describes enter on the right: d/dt ∂L/∂q̇ − ∂L/∂q = Q.",
             )
         )
-    residuals = [display(r) for r in eqs.residuals]
+    shown_equations = equations(d, pr)
     steps.append(
         _step(
             "Euler–Lagrange equations",
-            equation_rows(d, pr),
-            residuals,
+            [row for _, row in shown_equations],
+            [shown for shown, _ in shown_equations],
             "For each coordinate, d/dt ∂L/∂q̇ − ∂L/∂q − Q vanishes along the true motion"
             + (
                 "; each equation is shown divided by its acceleration's coefficient."
                 if eqs.mass_matrix.is_diagonal()
                 else "."
             ),
+            formed=True,
         )
     )
     steps.append(
         _step(
             "Mass matrix and forcing",
-            [rf"M = {pr.tex(eqs.mass_matrix)}", rf"f = {pr.tex(eqs.forcing.applyfunc(display))}"],
+            [rf"M = {pr.tex(eqs.mass_matrix.applyfunc(pr.form))}", rf"f = {pr.tex(eqs.forcing.applyfunc(pr.form))}"],
             [eqs.mass_matrix.tolist(), [display(x) for x in eqs.forcing]],
             "The equations are linear in the accelerations, M q̈ = f, with M the Hessian of L in the velocities.",
         )
@@ -240,11 +308,12 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             "If L does not contain t explicitly, the Hamiltonian is conserved (absent non-conservative forces).",
         )
     )
+    h_form, e_form = energies(d, pr)
     steps.append(
         _step(
             "Hamiltonian",
-            [rf"h = \sum_k p_k \dot{{q}}_k - L = {pr.tex(display(en.hamiltonian))}"],
-            display(en.hamiltonian),
+            [rf"h = \sum_k p_k \dot{{q}}_k - L = {pr.tex(h_form)}"],
+            h_form,
             "The Hamiltonian is the sum of momenta times velocities minus the Lagrangian.",
         )
     )
@@ -252,8 +321,8 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         steps.append(
             _step(
                 "Energy",
-                [f"E = T + U = {pr.tex(display(en.energy))}"],
-                display(en.energy),
+                [f"E = T + U = {pr.tex(e_form)}"],
+                e_form,
                 "The mechanical energy, for comparison with h.",
             )
         )

@@ -25,6 +25,9 @@ from typing import Any
 
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
+from sympy.printing.str import StrPrinter
+
+from app.engine.names import unicode
 
 NODE_BUDGET = 600
 
@@ -81,6 +84,8 @@ class _Printer(LatexPrinter):
             own = self.first is not None and term.has(self.first)
             return (-self.level(term), not own, negative, sp.default_sort_key(term))
         rank = _parameter_rank(term.name) if term.is_Symbol and term not in self.moving else (9, "", "")
+        if getattr(self, "_constants_first", False):
+            return (negative, not self.constant(term), rank, sp.default_sort_key(term))
         return (self.constant(term) and not term.is_Number, negative, rank, sp.default_sort_key(term))
 
     def split_sign(self, expr: sp.Expr) -> tuple[bool, sp.Expr]:
@@ -103,7 +108,10 @@ class _Printer(LatexPrinter):
     def _print_Add(self, expr: sp.Add, order: Any = None) -> str:
         top = getattr(self, "_top", False)
         self._top = False
-        terms = sorted((self.split_sign(t) for t in expr.args), key=lambda st: self._term_key(st, top))
+        signed = [self.split_sign(t) for t in expr.args]
+        # a bracket whose moving terms are all negative starts with its constants: (2m₁ + m₂ − m₂ cos 2Δ)
+        self._constants_first = not top and all(neg for neg, t in signed if not self.constant(t))
+        terms = sorted(signed, key=lambda st: self._term_key(st, top))
         out = ""
         for i, (negative, term) in enumerate(terms):
             if negative:
@@ -279,3 +287,96 @@ def normalised(
     if leading and leading[0].could_extract_minus_sign():
         out = [-e for e in out]
     return sp.Add(*out, evaluate=False) if len(out) > 1 else out[0]
+
+
+_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+class _Unicode(StrPrinter):
+    """One line of Unicode a reader writes in running text: −mgR, 1/(mR²), (g/R) sin θ, never ** or *."""
+
+    def __init__(self, order: _Printer):
+        super().__init__({"order": None})
+        self.tex = order  # the textbook printer, for its order of factors (masses, g, then the rest)
+
+    def _print_Symbol(self, expr: sp.Symbol) -> str:
+        return unicode(expr.name)
+
+    def _print_Rational(self, expr: sp.Rational) -> str:
+        return f"{expr.p}/{expr.q}" if expr.q != 1 else str(expr.p)
+
+    def _print_Function(self, expr: sp.Function) -> str:
+        (arg,) = expr.args if len(expr.args) == 1 else (None,)
+        if arg is not None and (arg.is_Symbol or arg.is_Number):
+            return f"{expr.func.__name__} {self._print(arg)}"
+        return f"{expr.func.__name__}({', '.join(self._print(a) for a in expr.args)})"
+
+    def _factor(self, f: sp.Expr) -> str:
+        text = self._print(f)
+        return f"({text})" if isinstance(f, sp.Add) else text
+
+    def _print_Pow(self, expr: sp.Pow, rational: bool = False) -> str:
+        base, exp = expr.as_base_exp()
+        if exp == sp.Rational(1, 2):
+            return f"√({self._print(base)})" if isinstance(base, (sp.Add, sp.Mul)) else f"√{self._print(base)}"
+        if exp.is_Integer and exp > 0 and base.is_Function and len(base.args) == 1:
+            # sin² θ, cos²(θ₁ − θ₂)
+            arg = self._print(base.args[0])
+            simple = base.args[0].is_Symbol or base.args[0].is_Number
+            return f"{base.func.__name__}{str(exp).translate(_SUPERSCRIPT)}" + (f" {arg}" if simple else f"({arg})")
+        if exp.is_Integer and exp > 0:
+            inner = self._print(base)
+            wrapped = f"({inner})" if isinstance(base, (sp.Add, sp.Mul, sp.Pow)) or base.is_Function else inner
+            return wrapped + str(exp).translate(_SUPERSCRIPT)
+        if exp.is_Integer and exp < 0:
+            return self._print_Mul(expr)
+        return f"{self._factor(base)}^({self._print(exp)})"
+
+    def _product(self, factors: Sequence[sp.Expr]) -> str:
+        ordered = sorted(factors, key=self.tex._factor_key)
+        out, previous_function = "", False
+        for f in ordered:
+            text = self._factor(f)
+            # names are written side by side (mgR); a function is set apart by a space (m g sin θ -> mg sin θ)
+            out += (" " if out and (f.is_Function or previous_function) else "") + text
+            previous_function = f.is_Function
+        return out
+
+    def _print_Mul(self, expr: sp.Expr) -> str:
+        coeff, rest = expr.as_coeff_Mul()
+        sign = "−" if coeff < 0 else ""
+        coeff = abs(coeff)
+        num: list[sp.Expr] = []
+        den: list[sp.Expr] = []
+        for f in sp.Mul.make_args(rest):
+            base, exp = f.as_base_exp()
+            (den if exp.is_Number and exp < 0 else num).append(base ** (-exp) if exp.is_Number and exp < 0 else f)
+        p, q = (coeff.p, coeff.q) if coeff.is_Rational else (coeff, 1)
+        top = ("" if p == 1 and num else self._print(sp.Integer(p) if coeff.is_Rational else p)) + self._product(num)
+        bottom = [*([sp.Integer(q)] if q != 1 else []), *den]
+        if not bottom:
+            return sign + top
+        below = self._product(bottom)
+        if len(bottom) > 1 or isinstance(bottom[0], sp.Add):
+            below = f"({below})" if not below.startswith("(") or len(bottom) > 1 else below
+        top = f"({top})" if isinstance(rest, sp.Add) and not num else top
+        return f"{sign}{top or '1'}/{below}"
+
+    def _print_Add(self, expr: sp.Add, order: Any = None) -> str:
+        out = ""
+        # positive terms first, as in the page's brackets: (x₂ − x₁ − l₀)
+        terms = sorted(expr.as_ordered_terms(), key=lambda t: t.could_extract_minus_sign())
+        for i, term in enumerate(terms):
+            text = self._print(term)
+            if text.startswith("−"):
+                out += (" − " if i else "−") + text[1:]
+            else:
+                out += (" + " if i else "") + text
+        return out
+
+
+def unicode_text(expr: Any, names: dict[sp.Symbol, str] | None = None) -> str:
+    """An expression as one line of Unicode for prose (messages, reasons, captions): −mgR, 1/(mR²)."""
+    expr = sp.sympify(expr)
+    names = names or {}
+    return _Unicode(_Printer(names, _moving(names, expr))).doprint(expr)

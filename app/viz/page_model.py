@@ -44,7 +44,8 @@ def _steps(doc: dict[str, Any]) -> list[dict[str, Any]]:
             "title": s["title"],
             "latex": s["latex"],
             "explanation": s["explanation"],
-            "long": len(s["latex"]) > LONG_STEP,
+            # a core step (L, the equations, the accelerations) is never folded: long ones are broken across lines
+            "long": len(s["latex"]) > LONG_STEP and s["title"] not in CORE_STEPS,
             "core": s["title"] in CORE_STEPS,
         }
         for i, s in enumerate(doc["steps"])

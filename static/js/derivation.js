@@ -42,7 +42,41 @@ export function typeset(root = document) {
       el.dataset.typeset = "1";
     }
   }
+  markWide(root);
   return root.querySelectorAll(".katex-error").length;
+}
+
+const WIDE_LABEL = "Wide formula: scroll sideways to read all of it";
+let widths = null;
+
+/**
+ * A display formula wider than its box (on a phone) scrolls inside that box: the box is then a labelled
+ * region the keyboard can reach (tabindex 0), and stops being one when it fits again.  Boxes are watched
+ * as they appear (a step unfolded, an "all steps" toggle) and as the window changes width.
+ */
+export function markWide(root = document) {
+  if (typeof ResizeObserver === "undefined") return;
+  // a box that just appeared may first be typeset with a font still loading: decide again once it is in
+  const again = (el) => { fitOrScroll(el); if (document.fonts) document.fonts.ready.then(() => fitOrScroll(el)); };
+  widths ??= new ResizeObserver((entries) => { for (const e of entries) again(e.target); });
+  const boxes = [...root.querySelectorAll(".math-display")];
+  for (const el of boxes) widths.observe(el);
+  // KaTeX's fonts widen a formula without resizing its box: decide again once they are in
+  if (document.fonts) document.fonts.ready.then(() => boxes.forEach(fitOrScroll));
+}
+
+function fitOrScroll(el) {
+  if (el.offsetParent === null) return; // hidden: decided when it shows
+  const wide = el.scrollWidth > el.clientWidth + 1;
+  if (wide) {
+    el.tabIndex = 0;
+    el.setAttribute("role", "region");
+    el.setAttribute("aria-label", WIDE_LABEL);
+  } else if (el.getAttribute("aria-label") === WIDE_LABEL) {
+    el.removeAttribute("tabindex");
+    el.removeAttribute("role");
+    el.removeAttribute("aria-label");
+  }
 }
 
 function h(tag, attrs = {}, ...children) {

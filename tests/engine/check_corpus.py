@@ -166,7 +166,7 @@ CORPUS = [
         "m*theta_dot",
         "incorrect",
         "m*theta_dot - m*r**2*theta_dot",
-        "missing_factor:r**2",
+        "missing_factor:r²",
     ),
     ("tabletop-spring", "omega_squared", None, "4*k/m", "correct", None, None),
     ("tabletop-spring", "omega_squared", None, "2*sqrt(k/m)", "incorrect", "2*sqrt(k/m) - 4*k/m", "omega"),
@@ -178,7 +178,7 @@ CORPUS = [
         "m*R**2*phi_dot",
         "incorrect",
         "m*R**2*phi_dot*cos(theta)**2",
-        "missing_factor:sin(theta)**2",
+        "missing_factor:sin² θ",
     ),
     (
         "spherical-pendulum",

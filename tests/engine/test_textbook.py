@@ -65,3 +65,18 @@ def test_errata_formulas_are_typeset_as_written():
     assert ascii_tex("omega = sqrt(g/R)").endswith(r"\sqrt{g /R}")
     assert correct_tex("theta_ddot = -g*sin(theta)/R", NAMES) == r"\ddot{\theta} = - \frac{g}{R} \sin {\theta}"
     assert correct_tex("tau = dL/dtheta = -m*g*R*sin(theta)", NAMES).startswith(r"\tau = \frac{dL}{d\theta}")
+
+
+def test_prose_formulas_are_unicode_never_code():
+    x1, x2 = sp.symbols("x1 x2")
+    k, l0 = sp.symbols("k l0")
+    assert textbook.unicode_text(1 / (R**2 * m), NAMES) == "1/(mR²)"
+    assert textbook.unicode_text(-R * g * m, NAMES) == "−mgR"
+    assert textbook.unicode_text(sp.sin(theta) ** 2, NAMES) == "sin² θ"
+    assert textbook.unicode_text(sp.sqrt(g / R), NAMES) == "√(g/R)"
+    assert textbook.unicode_text(m * g * sp.sin(theta) * sp.cos(theta), NAMES) == "mg sin θ cos θ"
+    square = textbook.unicode_text(k * (x2 - x1 - l0) ** 2 / 2, {x1: "x_1", x2: "x_2", sp.Symbol("x1_dot"): ""})
+    assert square.startswith("k(x₂ − ") and square.endswith(")²/2")
+    for expr in (thd**2 * R**2 * m / 2, (m + b) * g / (R * sp.sin(theta) ** 3), -g * sp.cos(theta - phi)):
+        text = textbook.unicode_text(expr, NAMES)
+        assert "*" not in text and "**" not in text and "-" not in text, text

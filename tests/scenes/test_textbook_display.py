@@ -15,25 +15,31 @@ from app.service.derivations import derivation_document
 PINNED = {  # fmt: skip
     "damped-pendulum": (
         "\\frac{1}{2} m R^{2} \\dot{\\theta}^{2} - m g R \\left(1 - \\cos {\\theta}\\right)",
-        ["\\ddot{\\theta} + \\frac{b}{m R^{2}} \\dot{\\theta} + \\frac{g}{R} \\sin {\\theta} = 0"],
+        [
+            "\\ddot{\\theta} + \\frac{b}{m R^{2}} \\dot{\\theta} + \\frac{g}{R} \\sin {\\theta} = 0",
+        ],
     ),
     "helix-bead": (
-        "\\frac{1}{2} m \\dot{z}^{2} + \\frac{1}{2} m \\alpha^{2} R^{2} \\dot{z}^{2} - m g z",
-        ["\\ddot{z} + \\frac{g}{1 + \\alpha^{2} R^{2}} = 0"],
+        "\\frac{1}{2} \\left(1 + \\alpha^{2} R^{2}\\right) m \\dot{z}^{2} - m g z",
+        [
+            "\\ddot{z} + \\frac{g}{1 + \\alpha^{2} R^{2}} = 0",
+        ],
     ),
     "incline-block": (
         "\\frac{1}{2} m \\dot{X}^{2} - m g X \\sin {\\alpha}",
-        ["\\ddot{X} + g \\sin {\\alpha} = 0"],
+        [
+            "\\ddot{X} + g \\sin {\\alpha} = 0",
+        ],
     ),
     "movable-incline": (
-        "\\frac{1}{2} m \\dot{D}^{2} + \\frac{1}{2} M \\dot{X}^{2} + \\frac{1}{2} m \\dot{X}^{2} + m \\dot{D} \\dot{X} \\cos {\\alpha} + m g D \\sin {\\alpha}",
+        "\\frac{1}{2} m \\dot{D}^{2} + \\frac{1}{2} \\left(M + m\\right) \\dot{X}^{2} + m \\dot{D} \\dot{X} \\cos {\\alpha} + m g D \\sin {\\alpha}",
         [
             "\\left(M + m\\right) \\ddot{X} + m \\cos {\\alpha} \\ddot{D} = 0",
             "\\ddot{D} + \\cos {\\alpha} \\ddot{X} - g \\sin {\\alpha} = 0",
         ],
     ),
     "pulley": (
-        "\\frac{1}{8} M \\dot{y}_{1}^{2} + \\frac{1}{8} M \\dot{y}_{2}^{2} + \\frac{1}{2} m_{1} \\dot{y}_{1}^{2} + \\frac{1}{2} m_{2} \\dot{y}_{2}^{2} + \\frac{1}{4} M \\dot{y}_{1} \\dot{y}_{2} + \\frac{1}{2} M g \\left(y_{1} + y_{2}\\right) - m_{1} g y_{1} - m_{2} g y_{2}",
+        "\\frac{1}{8} M \\left(\\dot{y}_{1} + \\dot{y}_{2}\\right)^{2} + \\frac{1}{2} m_{1} \\dot{y}_{1}^{2} + \\frac{1}{2} m_{2} \\dot{y}_{2}^{2} + \\frac{1}{2} M g \\left(y_{1} + y_{2}\\right) - m_{1} g y_{1} - m_{2} g y_{2}",
         [
             "\\left(m_{1} + \\frac{M}{4}\\right) \\ddot{y}_{1} + \\frac{1}{4} M \\ddot{y}_{2} + m_{1} g - \\frac{M g}{2} = 0",
             "\\left(m_{2} + \\frac{M}{4}\\right) \\ddot{y}_{2} + \\frac{1}{4} M \\ddot{y}_{1} + m_{2} g - \\frac{M g}{2} = 0",
@@ -49,22 +55,24 @@ PINNED = {  # fmt: skip
     "rotating-parabola": (
         "\\frac{1}{2} m \\dot{\\rho}^{2} + 2 m \\alpha^{2} \\rho^{2} \\dot{\\rho}^{2} + \\frac{1}{2} m \\omega^{2} \\rho^{2} - m g \\alpha \\rho^{2}",
         [
-            "\\left(1 + 4 \\alpha^{2} \\rho^{2}\\right) \\ddot{\\rho} + 4 \\alpha^{2} \\rho \\dot{\\rho}^{2} + \\left(2 g \\alpha - \\omega^{2}\\right) \\rho = 0"
+            "\\left(1 + 4 \\alpha^{2} \\rho^{2}\\right) \\ddot{\\rho} + 4 \\alpha^{2} \\rho \\dot{\\rho}^{2} + \\left(2 g \\alpha - \\omega^{2}\\right) \\rho = 0",
         ],
     ),
     "simple-pendulum": (
         "\\frac{1}{2} m R^{2} \\dot{\\theta}^{2} - m g R \\left(1 - \\cos {\\theta}\\right)",
-        ["\\ddot{\\theta} + \\frac{g}{R} \\sin {\\theta} = 0"],
+        [
+            "\\ddot{\\theta} + \\frac{g}{R} \\sin {\\theta} = 0",
+        ],
     ),
     "spherical-pendulum": (
-        "\\frac{1}{2} m R^{2} \\dot{\\theta}^{2} + \\frac{1}{2} m R^{2} \\dot{\\phi}^{2} \\sin^{2} {\\theta} - m g R \\cos {\\theta}",
+        "\\frac{1}{2} m R^{2} \\left(\\dot{\\theta}^{2} + \\dot{\\phi}^{2} \\sin^{2} {\\theta}\\right) - m g R \\cos {\\theta}",
         [
             "\\ddot{\\theta} - \\dot{\\phi}^{2} \\sin {\\theta} \\cos {\\theta} - \\frac{g}{R} \\sin {\\theta} = 0",
             "\\ddot{\\phi} + \\frac{2 \\dot{\\phi} \\dot{\\theta} \\cos {\\theta}}{\\sin {\\theta}} = 0",
         ],
     ),
     "tabletop-spring": (
-        "\\frac{1}{2} m \\dot{r}^{2} + \\frac{1}{2} m r^{2} \\dot{\\theta}^{2} - \\frac{1}{2} k r^{2}",
+        "\\frac{1}{2} m \\left(\\dot{r}^{2} + r^{2} \\dot{\\theta}^{2}\\right) - \\frac{1}{2} k r^{2}",
         [
             "\\ddot{r} - r \\dot{\\theta}^{2} + \\frac{k}{m} r = 0",
             "\\ddot{\\theta} + \\frac{2 \\dot{r} \\dot{\\theta}}{r} = 0",

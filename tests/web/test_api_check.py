@@ -34,7 +34,7 @@ def test_a_scene_answer_gets_its_verdict_difference_and_hint(client):
     right = check(client, {"step": "equation", "coordinate": "theta", "answer": "theta_ddot + g*sin(theta)/R"}).json()
     assert right["verdict"] == "equivalent" and right["difference"] is None and right["hint"] is None
     scene = check(client, {"step": "momentum", "coordinate": "phi", "answer": "m*R**2*phi_dot"}, "spherical-pendulum")
-    assert "sin(theta)**2" in scene.json()["hint"]
+    assert "sin² θ" in scene.json()["hint"]
 
 
 def test_a_declared_system_is_checked_like_a_scene(client):

@@ -1,18 +1,22 @@
 """SymPy source for exported notebooks and scripts, under the code generator's rule.
 
-As in ``app.numerics.codegen``, no name a user declared becomes a Python
-identifier: coordinates are ``q0, q1, ...``, their velocities ``v0, ...``, their
-accelerations ``a0, ...``, parameters ``k0, ...`` and time ``t``.  The declared
-names appear only as the *names* of those SymPy symbols (string literals, so
-printed results read ``theta``), and only after ``check_name`` accepted them
-again here.  Expressions are the engine's validated SymPy objects, renamed and
-printed by a SymPy printer; no text a user typed is pasted into code.
+The code reads like the system: its variables are the system's own names
+(``theta1``, ``theta1_dot``, ``theta1_ddot``, ``l1``, ``m2``), each accepted again
+by ``check_name`` (letters and digits) before it is written.  A name that would
+clash with Python (a keyword, a builtin), with the script's own names (``sp``,
+``t``, ``L``, ``q``, …) or with another of the system's names is written with a
+trailing underscore (``print_``), and the file says so in a comment.  The declared
+names are also the *names* of the SymPy symbols (string literals, so printed
+results read ``theta``).  Expressions are the engine's validated SymPy objects,
+renamed and printed by a SymPy printer; no text a user typed is pasted into code.
 """
 
 from __future__ import annotations
 
+import builtins
+import keyword
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy as sp
 from sympy.printing.pycode import SymPyPrinter
@@ -68,13 +72,42 @@ def checked_name(name: str, what: str) -> str:
         raise ExportError(str(exc)) from None
 
 
+# Every name the exported script and notebook define or import themselves: a system's name equal to one of
+# these (or to a Python keyword or builtin) is written with a trailing underscore.
+RESERVED = frozenset(
+    """sp np json solve_ivp nbformat t q v a k L Q p EL M f acc dt T U h E r masses velocities show same check
+    show_engine LATEX sol names end y0 t_end k_values accelerations rhs events time y e k_ vk pk qk ak Qk ri mi vi
+    x tries mine engine name value expr point diff values plt fig ax random matplotlib numpy sympy scipy IPython
+    Math display symbols rng i t_samples energy n E_t ti yi top bottom T_engine L_engine EL_engine acc_engine
+    p_engine h_engine E_engine""".split()
+)
+
+
+def _free(name: str, used: set[str]) -> str:
+    """name, or name with trailing underscores until it clashes with nothing."""
+    out = name
+    while (
+        out in used
+        or out in RESERVED
+        or keyword.iskeyword(out)
+        or keyword.issoftkeyword(out)
+        or hasattr(builtins, out)
+        or out.startswith(("g", "event"))
+        and out.removeprefix("g").removeprefix("event").isdigit()
+    ):
+        out += "_"
+    used.add(out)
+    return out
+
+
 @dataclass(frozen=True)
 class Naming:
-    """The fixed code names of one derivation's symbols, and a printer that uses them."""
+    """The code names of one derivation's symbols (the system's own, renamed only on a clash), and a printer."""
 
     coordinates: tuple[str, ...]
     parameters: tuple[str, ...]
     renamed: dict[sp.Symbol, sp.Symbol]
+    code_names: dict[str, str] = field(default_factory=dict)  # declared name -> name in the code
 
     @classmethod
     def of(cls, d: Derivation) -> Naming:
@@ -82,13 +115,16 @@ class Naming:
         coordinates = tuple(checked_name(n, "coordinate") for n in table.names)
         parameters = tuple(checked_name(n, "parameter") for n in table.parameter_names)
         renamed: dict[sp.Symbol, sp.Symbol] = {table.t: sp.Symbol("t", real=True)}
-        for i, (q, qd, qdd) in enumerate(zip(table.q, table.qd, table.qdd, strict=True)):
-            renamed[q] = sp.Symbol(f"q{i}", real=True)
-            renamed[qd] = sp.Symbol(f"v{i}", real=True)
-            renamed[qdd] = sp.Symbol(f"a{i}", real=True)
-        for i, k in enumerate(table.params):
-            renamed[k] = sp.Symbol(f"k{i}", real=True)
-        return cls(coordinates, parameters, renamed)
+        used: set[str] = set()
+        code_names: dict[str, str] = {}
+        for name, q, qd, qdd in zip(coordinates, table.q, table.qd, table.qdd, strict=True):
+            for declared, symbol in ((name, q), (f"{name}_dot", qd), (f"{name}_ddot", qdd)):
+                code_names[declared] = _free(declared, used)
+                renamed[symbol] = sp.Symbol(code_names[declared], real=True)
+        for name, k in zip(parameters, table.params, strict=True):
+            code_names[name] = _free(name, used)
+            renamed[k] = sp.Symbol(code_names[name], real=True)
+        return cls(coordinates, parameters, renamed, code_names)
 
     @property
     def n(self) -> int:
@@ -111,21 +147,24 @@ class Naming:
         return "[" + ", ".join(self.code(e) for e in exprs) + "]"
 
     def symbol_lines(self) -> list[str]:
-        """Lines declaring t and every code name as a real SymPy symbol named as declared."""
+        """Lines declaring t and every name as a real SymPy symbol named as declared (a comment lists renamings)."""
         lines = ['t = sp.Symbol("t", real=True)']
-        for i, name in enumerate(self.coordinates):
-            lines.append(f"q{i} = sp.Symbol({name!r}, real=True)")
-        for i, name in enumerate(self.coordinates):
-            lines.append(f"v{i} = sp.Symbol({name + '_dot'!r}, real=True)")
-        for i, name in enumerate(self.coordinates):
-            lines.append(f"a{i} = sp.Symbol({name + '_ddot'!r}, real=True)")
-        for i, name in enumerate(self.parameters):
-            lines.append(f"k{i} = sp.Symbol({name!r}, real=True)")
-        n, m = self.n, len(self.parameters)
-        lines.append(f"q = [{', '.join(f'q{i}' for i in range(n))}]  # coordinates")
-        lines.append(f"v = [{', '.join(f'v{i}' for i in range(n))}]  # their velocities")
-        lines.append(f"a = [{', '.join(f'a{i}' for i in range(n))}]  # their accelerations")
-        lines.append(f"k = [{', '.join(f'k{i}' for i in range(m))}]  # parameters")
+        clashes = [f"{declared} as {code}" for declared, code in self.code_names.items() if declared != code]
+        if clashes:
+            lines.append(
+                "# written with a trailing underscore, since the plain name is Python's or this file's own: "
+                + ", ".join(clashes)
+            )
+        c = self.code_names
+        for suffix in ("", "_dot", "_ddot"):
+            for name in self.coordinates:
+                lines.append(f"{c[name + suffix]} = sp.Symbol({name + suffix!r}, real=True)")
+        for name in self.parameters:
+            lines.append(f"{c[name]} = sp.Symbol({name!r}, real=True)")
+        lines.append(f"q = [{', '.join(c[n] for n in self.coordinates)}]  # coordinates")
+        lines.append(f"v = [{', '.join(c[n + '_dot'] for n in self.coordinates)}]  # their velocities")
+        lines.append(f"a = [{', '.join(c[n + '_ddot'] for n in self.coordinates)}]  # their accelerations")
+        lines.append(f"k = [{', '.join(c[n] for n in self.parameters)}]  # parameters")
         return lines
 
 

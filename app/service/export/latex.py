@@ -12,6 +12,7 @@ import re
 
 import sympy as sp
 
+from app.engine.breaking import LIMIT, broken_row
 from app.service.export.source import Source
 from app.service.export.text import latex_text
 
@@ -28,17 +29,32 @@ PREAMBLE = r"""\documentclass[11pt]{article}
 """
 
 
-# A row longer than this (characters of LaTeX) is set with breqn's dmath*, which breaks it across lines;
-# breqn comes with texlive-latex-recommended.  Rows holding an environment (a matrix) stay in align*.
+# A row longer than this (characters of LaTeX) that the engine's line breaking could not break is set with
+# breqn's dmath*, which breaks it across lines; breqn comes with texlive-latex-recommended.  Rows holding an
+# environment (a matrix, a stacked numerator) stay in align*.
 LONG_ROW = 250
+# ems a row may take on the page (11 pt, 2 cm margins): the engine's own limit, so that the export breaks
+# rows where the page does (app.engine.breaking)
+PAGE_EMS = LIMIT
 
 
 def _split(latex: str) -> list[str]:
-    """The engine's rows, without their alignment marks (its aligned block joins them with ' \\\\ ')."""
+    """The engine's rows, without their alignment marks (its aligned block joins them with ' \\\\ '; an
+    environment inside a row, a matrix or a stacked numerator, keeps its own rows)."""
     opening, closing = r"\begin{aligned}", r"\end{aligned}"
     if not (latex.startswith(opening) and latex.endswith(closing)):
         return [latex]
-    rows = latex[len(opening) : -len(closing)].split(" \\\\ ")
+    body = latex[len(opening) : -len(closing)]
+    rows, depth, start = [], 0, 0
+    for m in re.finditer(r"\\begin\{|\\end\{| \\\\ ", body):
+        if m.group(0) == r"\begin{":
+            depth += 1
+        elif m.group(0) == r"\end{":
+            depth -= 1
+        elif depth == 0:
+            rows.append(body[start : m.start()])
+            start = m.end()
+    rows.append(body[start:])
     return [row.replace(" &= ", " = ", 1) if " &= " in row else row.removeprefix("&") for row in rows]
 
 
@@ -48,23 +64,33 @@ def _braced(row: str) -> str:
 
 
 def _marked(row: str) -> str:
-    return row.replace(" = ", " &= ", 1) if " = " in row else "&" + row
+    # a continuation (\quad + …) or a block of lines starts at the alignment column
+    if " = " in row and not row.startswith(("\\quad", "\\begin")):
+        return row.replace(" = ", " &= ", 1)
+    return "&" + row
 
 
 def _display(rows: list[str]) -> str:
     """Rows as displays: runs of short rows in one align* (aligned at their first '='), long rows broken by dmath*."""
     blocks: list[str] = []
     run: list[str] = []
-    for row in map(_braced, rows):
+
+    def close() -> None:
+        # a run holding a block of lines (an equation broken across lines) is set flush left, not at its '='
+        flush = any(r.startswith("\\begin{aligned}") for r in run)
+        marked = ["&" + r for r in run] if flush else [_marked(r) for r in run]
+        blocks.append("\\begin{align*}\n" + " \\\\\n".join(marked) + "\n\\end{align*}")
+        run.clear()
+
+    for row in map(_braced, (line for given in rows for line in broken_row(given, PAGE_EMS))):
         if len(row) > LONG_ROW and "\\begin{" not in row:
             if run:
-                blocks.append("\\begin{align*}\n" + " \\\\\n".join(run) + "\n\\end{align*}")
-                run = []
+                close()
             blocks.append("\\begin{dmath*}\n" + row + "\n\\end{dmath*}")
         else:
-            run.append(_marked(row))
+            run.append(row)
     if run:
-        blocks.append("\\begin{align*}\n" + " \\\\\n".join(run) + "\n\\end{align*}")
+        close()
     return "\n".join(blocks)
 
 
@@ -155,10 +181,18 @@ def latex(source: Source) -> str:
         body.append(r"\section*{Errata: where the chapter goes wrong}")
         body.append(r"\begin{itemize}")
         for e in source.errata:
-            body.append(
-                rf"\item The chapter writes \texttt{{{latex_text(e['chapter'])}}}; correct is "
-                rf"\texttt{{{latex_text(e['correct'])}}}. {latex_text(e['reason'])}"
-            )
+            # both formulas typeset, as on the page (never as code)
+            chapter, correct = e.get("chapter_latex"), e.get("correct_latex")
+            if chapter and correct:
+                body.append(
+                    rf"\item The chapter writes {_display([chapter])} correct is {_display([correct])}"
+                    + latex_text(e["reason"])
+                )
+            else:
+                body.append(
+                    rf"\item The chapter writes \texttt{{{latex_text(e['chapter'])}}}; correct is "
+                    rf"\texttt{{{latex_text(e['correct'])}}}. {latex_text(e['reason'])}"
+                )
         body.append(r"\end{itemize}")
     body.append(r"\end{document}")
     return PREAMBLE + "\n\n".join(body) + "\n"

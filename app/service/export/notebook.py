@@ -11,6 +11,9 @@ from __future__ import annotations
 
 # nbformat (with jsonschema, 0.1-0.2 s) is imported by the functions that write a notebook, not when
 # the server starts.
+import sympy as sp
+
+from app.engine.forms import textbook_form
 from app.service.export.action_cells import action_cells
 from app.service.export.code import (
     ACCELERATION_LINES,
@@ -87,6 +90,12 @@ def notebook(source: Source) -> str:
     naming = Naming.of(d)
     table = d.table
     latex = {naming.renamed[s]: tex for s, tex in table.latex_names().items()}
+    # the engine's results in the textbook forms the page shows (cos(θ₁ − θ₂), one quotient per acceleration)
+    names = table.latex_names()
+
+    def form(expr: sp.Expr) -> sp.Expr:
+        return textbook_form(expr, names)
+
     latex_entries = ", ".join(f"{s.name}: {tex!r}" for s, tex in latex.items())
     cells = [_md(*_problem(source))]
 
@@ -120,13 +129,13 @@ def notebook(source: Source) -> str:
         cells.append(_md("## Kinetic and potential energy", "T and U as declared."))
         cells.append(_code(f"T = {naming.code(m.T)}", f"U = {naming.code(m.U)}", "show('T', T)", "show('U', U)"))
     if m.T is not None:
-        cells.append(_engine("T", naming.code(m.T), "T"))
+        cells.append(_engine("T", naming.code(form(m.T)), "T"))
         cells.append(_md("## Lagrangian", "L = T − U."))
         cells.append(_code("L = T - U", "show('L', L)"))
     else:
         cells.append(_md("## Lagrangian", "L as declared."))
         cells.append(_code(f"L = {naming.code(m.L)}", "show('L', L)"))
-    cells.append(_engine("L", naming.code(m.L), "L"))
+    cells.append(_engine("L", naming.code(form(m.L)), "L"))
 
     cells.append(
         _md(
@@ -143,26 +152,27 @@ def notebook(source: Source) -> str:
             "    show(f'EL_{k_}', e)",
         )
     )
-    cells.append(_engine("EL", naming.code_list(eqs.residuals), "EL"))
+    cells.append(_engine("EL", naming.code_list(map(form, eqs.residuals)), "EL"))
 
     cells.append(_md("## Accelerations", "Solving M q̈ = f for the accelerations."))
     cells.append(
         _code(*ACCELERATION_LINES, "for ak, x in zip(a, acc):", "    show(sp.latex(ak, symbol_names=LATEX), x)")
     )
-    cells.append(_engine("accelerations", naming.code_list(eqs.accelerations), "acc"))
+    cells.append(_engine("accelerations", naming.code_list(map(form, eqs.accelerations)), "acc"))
 
     cells.append(_md("## Generalized momenta", "p = ∂L/∂q̇ for each coordinate."))
-    cells.append(_code("for vk, pk in zip(v, p):", "    show('p_{' + sp.latex(vk, symbol_names=LATEX) + '}', pk)"))
-    cells.append(_engine("momenta", naming.code_list(eqs.momenta), "p"))
+    # each momentum named after its coordinate, as on the page: p_θ₁ (not after the velocity)
+    cells.append(_code("for qk, pk in zip(q, p):", "    show('p_{' + sp.latex(qk, symbol_names=LATEX) + '}', pk)"))
+    cells.append(_engine("momenta", naming.code_list(map(form, eqs.momenta)), "p"))
 
     energy_lines = ["h = sum(pk * vk for pk, vk in zip(p, v)) - L", "show('h', h)"]
     if m.T is not None:
         energy_lines += ["E = T + U", "show('E', E)"]
     cells.append(_md("## Hamiltonian and energy", "h = Σ p q̇ − L" + (", and E = T + U." if m.T is not None else ".")))
     cells.append(_code(*energy_lines))
-    cells.append(_engine("h", naming.code(en.hamiltonian), "h"))
+    cells.append(_engine("h", naming.code(form(en.hamiltonian)), "h"))
     if m.T is not None:
-        cells.append(_engine("E", naming.code(en.energy), "E"))
+        cells.append(_engine("E", naming.code(form(en.energy)), "E"))
     cells.append(_md(*_conserved(source)))
 
     cells += _simulation(source, naming, "E" if m.T is not None else "h")

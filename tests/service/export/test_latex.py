@@ -1,5 +1,6 @@
 """The exported LaTeX document compiles with pdflatex (Debian's texlive-latex-base + -recommended)."""
 
+import re
 import shutil
 import subprocess
 
@@ -40,8 +41,15 @@ def test_typed_prose_is_escaped():
     assert r"\$\textbackslash{}input\{/etc/passwd\}\$" in tex
 
 
+# how far a line may stick out of the text block (pdflatex's "Overfull \\hbox (NNpt too wide)")
+OVERFULL_PT = 10.0
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("case", CASES)
-def test_the_document_compiles_with_pdflatex(case, tmp_path):
+def test_the_document_compiles_with_pdflatex_and_nothing_sticks_out(case, tmp_path):
     pdf = compile_pdf(exported(case, "tex"), tmp_path)
     assert pdf.startswith(b"%PDF")
+    log = (tmp_path / "doc.log").read_text(errors="replace")
+    overfull = [float(x) for x in re.findall(r"Overfull \\hbox \(([\d.]+)pt too wide\)", log)]
+    assert max(overfull, default=0.0) <= OVERFULL_PT, sorted(overfull)[-5:]

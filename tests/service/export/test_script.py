@@ -32,8 +32,10 @@ def test_nothing_typed_reaches_the_script_but_checked_names():
     script = exported("hostile", "py")
     for text in HOSTILE_TEXT:
         assert text not in script
-    # the names are string literals naming SymPy symbols; the code itself uses q0, v0, k0, ...
-    assert "q0 = sp.Symbol('exec', real=True)" in script and "k2 = sp.Symbol('q0', real=True)" in script
+    # the code uses the system's own names, with a trailing underscore where one is Python's or the file's own
+    assert "exec_ = sp.Symbol('exec', real=True)" in script and "q0 = sp.Symbol('q0', real=True)" in script
+    assert "print_ = sp.Symbol('print', real=True)" in script and "sp_ = sp.Symbol('sp', real=True)" in script
+    assert "# written with a trailing underscore" in script and "exec as exec_" in script
     assert "exec(" not in script and "print(" in script.splitlines()[-1]
 
 
@@ -116,3 +118,12 @@ def test_the_user_systems_cover_each_way_of_declaring_mechanics():
         for name, (body, _, _) in USER_SYSTEMS.items()
     }
     assert set(forms.values()) >= {"particles", "kinetic"}
+
+
+def test_the_script_reads_like_the_system():
+    script = exported("double-pendulum", "py")
+    for line in ("theta1 = sp.Symbol('theta1', real=True)", "theta2_dot = sp.Symbol('theta2_dot', real=True)",
+                 "l1 = sp.Symbol('l1', real=True)", "m2 = sp.Symbol('m2', real=True)"):  # fmt: skip
+        assert line in script
+    assert "q0" not in script and "k0" not in script and "trailing underscore" not in script
+    assert "sp.cos(theta1)" in script

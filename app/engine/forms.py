@@ -1,0 +1,301 @@
+"""Textbook forms: the same expression, rewritten the way a careful textbook prints it.
+
+``textbook_form(expr, names)`` returns an expression equal to ``expr`` (identically, for every
+value of its symbols) in the shortest of a few forms a reader recognises:
+
+* trigonometric products recombined.  Every product of sines and cosines is written as a sum of
+  single sines and cosines (sin a sin b = ½[cos(a − b) − cos(a + b)], sin² a = ½[1 − cos 2a], …), so
+  that sin θ₁ sin θ₂ + cos θ₁ cos θ₂ collapses to cos(θ₁ − θ₂) and sin² + cos² to 1;
+* a quotient as one numerator over one denominator, the denominator's numbers made whole and its
+  leading term positive: the double pendulum's θ̈₁ over l₁(2m₁ + m₂ − m₂ cos(2θ₁ − 2θ₂));
+* terms collected by what moves (accelerations, velocities, coordinates and their functions), each
+  with its constant coefficient in its shortest form: ½(m₁ + m₂) l₁² θ̇₁²;
+* squares of sums recovered where a parameter multiplies a perfect square: k(x₁ − x₂ + l₀)²/2,
+  M(ẏ₁ + ẏ₂)²/8, κ(x₁ − x₂)²/2.
+
+Among the candidates the one with the fewest operations wins (one extra operation charged for each
+angle the engine's form did not have, so sin θ cos θ stays unless sin 2θ is really shorter); ties keep
+the earlier, more conservative candidate.  The work is bounded: each expression gets FORM_SECONDS
+(no more than the shared display budget has left; a small one at least LATE_SECONDS) and keeps the best
+form found in that time; with none found, or beyond NODE_BUDGET nodes, the
+engine's own cheap display form (sin² + cos² = 1 collapsed, SymPy's ``simplify`` when small) is kept.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Iterator, Mapping
+from typing import Any
+
+import sympy as sp
+from sympy.simplify.fu import TR8, TR10i
+
+from app.engine import budget
+from app.engine.budget import pythagoras, tidy, within_budget
+
+FORM_SECONDS = 1.0
+# once the shared display budget is spent, each expression still gets this much (the results' forms are cheap)
+LATE_SECONDS = 0.3
+FALLBACK_SECONDS = 0.2
+ENGINE_BONUS = 1.5
+SMALL = 120  # nodes below which expanding first is cheap
+NODE_BUDGET = 1500
+_CACHE: dict[tuple[sp.Expr, frozenset[sp.Symbol]], sp.Expr] = {}
+_CACHE_SIZE = 4096
+_local = threading.local()
+
+
+def use_names(names: Mapping[sp.Symbol, str]) -> None:
+    """The names ``textbook_form`` reads coordinates from when it is given none (the last printer made in
+    this thread: a derivation's steps are formed with its own table's names)."""
+    _local.names = names
+
+
+def settle(form: sp.Expr, names: Mapping[sp.Symbol, str] | None = None) -> sp.Expr:
+    """Declare ``form`` a textbook form as it stands (h and E built from T's and U's forms): forming it
+    again returns it unchanged."""
+    if isinstance(form, sp.Expr) and len(_CACHE) < _CACHE_SIZE:
+        _CACHE[(form, frozenset(moving_symbols(form, names)))] = form
+    return form
+
+
+def moving_symbols(expr: Any, names: Mapping[sp.Symbol, str] | None = None) -> set[sp.Symbol]:
+    """The symbols of ``expr`` that change along a motion: coordinates (those with a velocity), rates and t."""
+    free: set[Any] = getattr(expr, "free_symbols", set())
+    known = {s.name for s in (names or {})} | {s.name for s in free}
+    rates = {n for n in known if n.endswith("_dot")}
+    stems = {n[: -len("_dot")] for n in rates}
+    # a coordinate, its rates, time, and a coordinate's momentum in Hamilton's equations (p_θ₁)
+    return {
+        s for s in free if s.name == "t" or s.name in stems or s.name.endswith(("_dot", "_ddot"))
+        or (s.name.startswith("p_") and s.name[2:] in stems)
+    }  # fmt: skip
+
+
+def _nodes(expr: sp.Basic, limit: int) -> int:
+    count = 0
+    for _ in sp.preorder_traversal(expr):
+        count += 1
+        if count > limit:
+            break
+    return count
+
+
+def _angles(expr: sp.Expr) -> set[sp.Expr]:
+    return {f.args[0] for f in expr.atoms(sp.sin, sp.cos, sp.tan)}
+
+
+def _score(form: sp.Expr, angles: set[sp.Expr]) -> float:
+    # operations, and one more for every angle the engine's form did not have (cos 2θ for sin² θ)
+    return float(sp.count_ops(form)) + len(_angles(form) - angles)
+
+
+def _simplest(const: sp.Expr) -> sp.Expr:
+    """A constant coefficient in its shortest form: as it is, common factors out, or cancelled."""
+    if not isinstance(const, sp.Add):
+        return const
+    forms = [const, sp.factor_terms(const), sp.factor(const)]
+    return min(forms, key=lambda e: (sp.count_ops(e), forms.index(e)))
+
+
+def collected(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
+    """Terms with the same moving part added, each coefficient in its shortest form (½(m₁ + m₂) l₁² θ̇₁²)."""
+    groups: dict[sp.Expr, sp.Expr] = {}
+    for term in sp.Add.make_args(sp.expand(expr)):
+        const, part = term.as_independent(*moving, as_Add=False) if moving else (term, sp.Integer(1))
+        groups[part] = groups.get(part, sp.Integer(0)) + const
+    return sp.Add(*(_simplest(c) * part for part, c in groups.items()))
+
+
+def linearised(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
+    """Products of sines and cosines as sums of single ones, over one denominator made whole.
+
+    sin a sin b + cos a cos b = cos(a − b) and sin² a + cos² a = 1 follow from the product-to-sum
+    rules (SymPy's ``TR8``); the denominator's rational numbers are cleared by multiplying above and
+    below by their common denominator, and its sign chosen so that it reads positively.
+    """
+    num, den = sp.fraction(sp.cancel(sp.together(expr)))
+    num, den = sp.expand(TR8(sp.expand(num))), sp.expand(TR8(sp.expand(den)))
+    # the numbers in the denominator made whole: l₁(m₁ + m₂/2 − m₂ cos 2Δ/2) -> l₁(2m₁ + m₂ − m₂ cos 2Δ)
+    scale = sp.ilcm(1, *(sp.fraction(t.as_coeff_Mul()[0])[1] for t in sp.Add.make_args(den)))
+    num, den = sp.expand(num * scale), sp.expand(den * scale)
+    if den.could_extract_minus_sign():
+        num, den = -num, -den
+    top, bottom = collected(num, moving), sp.factor_terms(collected(den, moving))
+    if bottom != 1 or _factorable(top, moving):
+        top = sp.factor_terms(top)
+    return _angles_expanded(top / bottom if bottom != 1 else top)
+
+
+def _angles_expanded(expr: sp.Expr) -> sp.Expr:
+    """cos 2(θ₁ − θ₂) written cos(2θ₁ − 2θ₂), as the textbooks print it (pulling factors out reaches the angles)."""
+    return expr.replace(
+        lambda e: isinstance(e, (sp.sin, sp.cos)) and isinstance(e.args[0], sp.Mul),
+        lambda e: e.func(sp.expand(e.args[0])),
+    )
+
+
+def squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
+    """Perfect squares recovered under each parameter that multiplies one: k(x₂ − x₁ − l₀)²/2.
+
+    For each parameter c, the terms linear in c are split by their degree in the velocities, and each
+    part is factored; a part that factors with a squared sum replaces its terms.
+    """
+    if not moving:
+        return expr
+    velocities = sorted((s for s in moving if s.name.endswith("_dot")), key=sp.default_sort_key)
+    params = sorted(expr.free_symbols - moving, key=sp.default_sort_key)
+    out = sp.expand(expr)
+    for c in params:
+        parts = sp.collect(out, c, evaluate=False)
+        inner = parts.get(c)
+        if inner is None or inner.has(c):
+            continue
+        rest = out - sp.expand(c * inner)
+        by_degree: dict[int, sp.Expr] = {}
+        for term in sp.Add.make_args(sp.expand(inner)):
+            degree = sp.Poly(term, *velocities).total_degree() if velocities else 0
+            by_degree[degree] = by_degree.get(degree, sp.Integer(0)) + term
+        found = False
+        pieces = []
+        for part in by_degree.values():
+            factored = sp.factor(part)
+            if any(isinstance(b, sp.Add) and e == 2 for b, e in (f.as_base_exp() for f in sp.Mul.make_args(factored))):
+                pieces.append(factored)
+                found = True
+            else:
+                pieces.append(part)
+        if found:
+            out = sp.Add(rest, *(c * p for p in pieces))
+    return out
+
+
+def _factorable(expr: sp.Expr, moving: set[sp.Symbol]) -> bool:
+    """Whether a textbook pulls the common factors out of this sum: an equation's terms (R m (R θ̈ + g sin θ)),
+    or a kinetic energy's (½ m R² (θ̇² + sin² θ φ̇²)); never across kinetic and potential terms, nor out of a
+    potential's, which a reader compares term by term."""
+    velocities = [s for s in moving if s.name.endswith(("_dot", "_ddot"))]
+    if any(s.name.endswith("_ddot") for s in velocities):
+        return True
+    if not velocities:
+        return False
+    degrees = {sp.Poly(t, *velocities).total_degree() for t in sp.Add.make_args(expr)}
+    return len(degrees) == 1 and 0 not in degrees
+
+
+def recombined(expr: sp.Expr) -> sp.Expr:
+    """Sums of products recombined where they stand, without expanding anything (cheap on any size):
+    sin a sin b + cos a cos b -> cos(a − b) (SymPy's ``TR10i``), and a bracket raised to a power
+    (a denominator's square) linearised when that shortens it."""
+
+    def shorter(base: sp.Expr) -> sp.Expr:
+        # the numbers made whole, the half taken out: (2m₁ + m₂ − m₂ cos 2Δ)/2
+        lin = _angles_expanded(sp.factor_terms(sp.expand(TR8(sp.expand(base))), clear=True))
+        return lin if sp.count_ops(lin) < sp.count_ops(base) else base
+
+    out = TR10i(expr).replace(
+        lambda e: e.is_Pow and isinstance(e.base, sp.Add) and e.base.has(sp.sin, sp.cos) and _nodes(e.base, 200) < 200,
+        lambda e: sp.Pow(shorter(e.base), e.exp),
+    )
+    # a denominator's numbers made whole: 1/(m₁ + m₂/2 − m₂ cos 2Δ/2) -> 2/(2m₁ + m₂ − m₂ cos 2Δ)
+    out = out.replace(
+        lambda e: e.is_Pow and e.exp.is_negative and isinstance(e.base, sp.Add)
+        and any(not t.as_coeff_Mul()[0].is_Integer for t in e.base.args),
+        lambda e: sp.Pow(sp.factor_terms(e.base, clear=True), e.exp),
+    )  # fmt: skip
+    return _angles_expanded(out)
+
+
+def _candidates(expr: sp.Expr, moving: set[sp.Symbol]) -> Iterator[sp.Expr]:
+    """The engine's form first (ties keep it), then the rewritten ones, cheapest first."""
+    yield expr
+    moving_denominator = any(p.exp.is_negative and p.base.free_symbols & moving for p in expr.atoms(sp.Pow))
+    if _nodes(expr, SMALL) < SMALL and not moving_denominator:
+        # a small expression expanded and collected: what cancels goes first (a checker's difference)
+        yield collected(expr, moving)
+    trig = bool(expr.atoms(sp.sin, sp.cos))
+    big = _nodes(expr, 4 * SMALL) >= 4 * SMALL
+    if trig and big:
+        # cheap on any size: first for a large expression, whose other candidates may not finish in time
+        yield recombined(expr)
+    yield from _rewritten(expr, moving, trig)
+    if trig and not big:
+        yield recombined(expr)
+
+
+def _rewritten(expr: sp.Expr, moving: set[sp.Symbol], trig: bool) -> Iterator[sp.Expr]:
+    """The candidates that expand, put over one denominator or factor."""
+    if isinstance(expr, sp.Add):
+        # a sum of a quotient and plain terms (Hamilton's H = kinetic part over its denominator − the potential):
+        # the quotients over one denominator, the plain terms as they are
+        over = [t for t in expr.args if sp.denom(t).free_symbols & moving]
+        if over and len(over) < len(expr.args):
+            rest = sp.Add(*(t for t in expr.args if t not in over))
+            quotient = sp.Add(*over)
+            shown = linearised(quotient, moving) if trig else quotient
+            yield shown + collected(pythagoras(rest) if trig else rest, moving)
+            return
+    num, den = sp.fraction(sp.together(expr))
+    if den.free_symbols:
+        # a quotient: one numerator over one denominator, products of sines and cosines linearised
+        if trig:
+            yield linearised(expr, moving)
+            return
+        num, den = sp.fraction(sp.cancel(sp.together(expr)))
+        yield sp.factor_terms(collected(num, moving)) / sp.factor_terms(den)
+        return
+    grouped = collected(pythagoras(expr) if trig else expr, moving)
+    yield grouped
+    if _factorable(grouped, moving):
+        yield sp.factor_terms(grouped)
+    if trig:
+        yield linearised(expr, moving)
+    yield squares(grouped, moving)
+
+
+def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, seconds: float = FORM_SECONDS) -> Any:
+    """``expr`` in its textbook form (an equal expression; see the module's docstring).
+
+    ``names``: the symbol table's names (coordinates are recognised by having a velocity there).
+    Bounded by ``seconds`` and by the shared display budget; beyond them the engine's cheap display
+    form is returned.
+    """
+    if not isinstance(expr, sp.Expr) or not expr.free_symbols or isinstance(expr, sp.Symbol):
+        return expr
+    names = names if names is not None else getattr(_local, "names", None)
+    moving = moving_symbols(expr, names)
+    key = (expr, frozenset(moving))
+    if key in _CACHE:
+        return _CACHE[key]
+    nodes = _nodes(expr, NODE_BUDGET)
+    # once the shared budget is spent, a small expression still gets LATE_SECONDS; a large one only its fallback
+    left = max(budget._remaining(seconds), min(seconds, LATE_SECONDS) if nodes < 4 * SMALL else 0.0)
+    if nodes > NODE_BUDGET or left <= 0.01:
+        return _fallback(expr)
+    angles = _angles(expr)
+
+    # the best form so far: what a timeout leaves (the engine's form, often the declaration's own, stays
+    # unless another is shorter by two operations; ties keep the earlier)
+    best: list[Any] = [expr, _score(expr, angles) - ENGINE_BONUS]
+
+    def search() -> bool:
+        for form in _candidates(expr, moving):
+            score = _score(form, angles)
+            if score < best[1]:
+                best[:] = [form, score]
+        return True
+
+    if within_budget(search, False, left) is False and best[0] is expr:
+        fallback = _fallback(expr)
+        if left < seconds:  # the shared budget ran out, not this expression's own time: try again another time
+            return fallback
+        best[0] = fallback
+    found = best[0]
+    if len(_CACHE) < _CACHE_SIZE:
+        _CACHE[key] = found
+    return settle(found, names)  # a form, formed again, stays as it is
+
+
+def _fallback(expr: sp.Expr) -> sp.Expr:
+    """The engine's own display form: sin² + cos² = 1 collapsed, then SymPy's simplification when small."""
+    return within_budget(lambda: tidy(pythagoras(expr), FALLBACK_SECONDS), expr, FALLBACK_SECONDS)

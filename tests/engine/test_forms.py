@@ -1,0 +1,92 @@
+"""The textbook-form simplifier: each rewriting on its own, equality with the input, and its bounds."""
+
+import random
+import time
+
+import sympy as sp
+
+from app.engine import forms
+from app.engine.forms import textbook_form
+from app.engine.symbols import SymbolTable
+
+TABLE = SymbolTable(("a", "b", "x1", "x2"), ("m1", "m2", "l1", "l2", "g", "k", "l0", "M"))
+NAMES = TABLE.latex_names()
+a, b, x1, x2 = TABLE.q
+ad, bd, x1d, x2d = TABLE.qd
+add, bdd, _, _ = TABLE.qdd
+m1, m2, l1, l2, g, k, l0, M = TABLE.params
+
+
+def _equal(x, y):
+    rng = random.Random(1)
+    for _ in range(5):
+        at = {s: rng.uniform(0.2, 1.8) for s in x.free_symbols | y.free_symbols}
+        assert abs(complex((x - y).evalf(subs=at))) < 1e-10
+
+
+def test_products_of_sines_and_cosines_recombine():
+    T = l1 * l2 * m2 * ad * bd * (sp.sin(a) * sp.sin(b) + sp.cos(a) * sp.cos(b))
+    shown = textbook_form(sp.expand(T), NAMES)
+    assert shown == l1 * l2 * m2 * ad * bd * sp.cos(a - b)
+
+
+def test_pythagoras():
+    expr = sp.expand(l1**2 * ad**2 * (sp.sin(a) ** 2 + sp.cos(a) ** 2) * m1 / 2)
+    assert textbook_form(expr, NAMES) == l1**2 * ad**2 * m1 / 2
+
+
+def test_a_square_of_a_sum_is_recovered():
+    U = sp.expand(k * (x2 - x1 - l0) ** 2 / 2)
+    shown = textbook_form(U, NAMES)
+    assert sp.count_ops(shown) < sp.count_ops(U) and shown.has(sp.Pow(x1 - x2 + l0, 2))
+    kinetic = sp.expand(M * (x1d + x2d) ** 2 / 8 + m1 * x1d**2 / 2)
+    assert textbook_form(kinetic, NAMES) == M * (x1d + x2d) ** 2 / 8 + m1 * x1d**2 / 2
+
+
+def test_a_quotient_over_a_whole_denominator():
+    D = m1 + m2 - m2 * (sp.sin(a) * sp.sin(b) + sp.cos(a) * sp.cos(b)) ** 2
+    acc = sp.expand(g * m2 * sp.sin(b) * sp.cos(a - b).expand(trig=True)) / sp.expand(l1 * D)
+    shown = textbook_form(acc, NAMES)
+    _equal(shown, acc)
+    assert sp.denom(shown) == l1 * (2 * m1 + m2 - m2 * sp.cos(2 * a - 2 * b))
+
+
+def test_the_engines_form_stays_when_nothing_is_shorter():
+    pendulum = m1 * l1**2 * ad**2 / 2 - m1 * g * l1 * (1 - sp.cos(a))
+    assert textbook_form(pendulum, NAMES) == pendulum
+    # sin a cos a is not traded for sin 2a / 2
+    assert textbook_form(ad**2 * sp.sin(a) * sp.cos(a), NAMES) == ad**2 * sp.sin(a) * sp.cos(a)
+
+
+def test_common_factors_out_of_an_equation_not_out_of_an_energy():
+    residual = sp.expand(m1 * l1 * (l1 * add + g * sp.sin(a)))
+    assert textbook_form(residual, NAMES) == m1 * l1 * (l1 * add + g * sp.sin(a))
+    assert isinstance(textbook_form(sp.expand(m1 * l1 * (l1 * ad**2 / 2 - g * sp.cos(a))), NAMES), sp.Add)
+
+
+def test_forming_twice_changes_nothing():
+    T = sp.expand(l1 * l2 * m2 * ad * bd * sp.cos(a - b).expand(trig=True) + m1 * l1**2 * ad**2 / 2)
+    once = textbook_form(T, NAMES)
+    assert textbook_form(once, NAMES) is once
+
+
+def test_bounded_with_the_engines_display_form_as_fallback():
+    big = sp.expand((sp.sin(a) + sp.cos(b) + ad + bd + m1 + m2) ** 9)  # beyond the node budget
+    started = time.monotonic()
+    shown = textbook_form(big, NAMES)
+    assert time.monotonic() - started < 3 * (forms.FORM_SECONDS + forms.FALLBACK_SECONDS) + 5
+    _equal(shown, big)
+
+
+def test_the_practice_difference_is_the_mistake_alone():
+    # the double pendulum's θ₂ equation without its θ̇₁² term: the difference shown is that term, nothing else
+    from app.engine.check import judge, problem
+    from app.service.derivations import derivation
+
+    d = derivation("double-pendulum")
+    result = judge(
+        problem(d, "equation", "theta2"), "l2*theta2_ddot + l1*cos(theta1 - theta2)*theta1_ddot + g*sin(theta2)"
+    )
+    assert result["verdict"] == "incorrect"
+    assert result["difference"]["sympy"] == "l1*theta1_dot**2*sin(theta1 - theta2)"
+    assert "ddot" not in result["difference"]["sympy"]
