@@ -248,6 +248,7 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular) -> dict[s
         "units": units,
         "nonnegative": list(nonnegative),
         "parameters": {k: v["default"] for k, v in doc["parameters"].items()},
+        "parameter_units": {k: v.get("unit", "") for k, v in doc["parameters"].items()},
         "initial": info.get("initial", {}),
         "t_end": info.get("t_end", 10.0),
         "panels": info["panels"],

@@ -141,6 +141,7 @@ if (root && dataNode) {
       // the modes are the declared system's (its parameter values); a section is at the run's values.
       // One at a time: the worker pool runs one job per session.
       modes: () => oneAtATime(() => fetchJson(root.dataset.modesUrl, system)),
+      modesFollow: false,
       poincare: ({ parameters, initial }) => oneAtATime(() =>
         fetchJson(root.dataset.poincareUrl, { ...system, parameters: body({ parameters }).parameters, initial })),
     },

@@ -196,7 +196,9 @@ class WorkPrecisionPanel {
     }
     Plotly.react(this.plot, traces, layout({ hovermode: "closest", height: 360, xaxis: axis("run time (s)", { type: "log" }), yaxis: axis(`error at t_end (${errorUnit(run.data)})`, { type: "log" }) }), CONFIG);
     if (this.run !== run) return; // a newer run is being drawn
-    this.readout.textContent = `${here} Reference: ${report.reference}`;
+    const moved = Object.entries(run.data.parameters).filter(([p, v]) => run.params[p] !== v).map(([p, v]) => `${run.data.labels[p] || p} = ${fmt(v)}`);
+    const at = moved.length ? ` The chart is for the default values (${moved.join(", ")}), not this run's; the star is this run.` : "";
+    this.readout.textContent = `${here} Reference: ${report.reference}${at}`;
     table(this.summary, "Error against run time", ["method", "rtol", "error", "run time (s)", "rhs evaluations"],
       report.runs.map((r) => [r.method, String(r.rtol), r.error, r.wall_time_s, String(r.rhs_evaluations ?? "–")]));
     this.section.setAttribute("aria-busy", "false");

@@ -24,7 +24,7 @@ if (root) {
     urls: {
       simulate: root.dataset.simulateUrl,
       workPrecision: root.dataset.workPrecisionUrl,
-      modes: () => fetchJson(root.dataset.modesUrl),
+      modes: (parameters) => fetchJson(root.dataset.modesUrl, { parameters }),
       poincare: (request) => fetchJson(root.dataset.poincareUrl, request),
     },
     status: document.getElementById("run-status"),
