@@ -66,7 +66,7 @@ def scene_modes(scene_id: str, gates: GatesDep) -> Any:
 
 
 @router.post(
-    "/scenes/{scene_id}/modes",
+    "/scenes/{scene_id}/modes-at",
     summary="A scene's normal modes at given parameter values, predicted against measured",
     description=MODES_CORE
     + ", at the parameter values given (each missing one at the scene's default): the equilibria and M, K follow "

@@ -13,7 +13,7 @@
  * with a_k the mode's shape (largest component 1), ω_k = √ω²_k and A_k the amplitude the student
  * sets.  Modes with ω² ≤ 0 (a free drift, or growth at an unstable equilibrium) are listed, not played.
  * urls.modes(parameters) resolves to the server's modes at those parameter values, each mode with ω
- * measured from a small-amplitude simulation along it (POST /api/scenes/{id}/modes; the playground's
+ * measured from a small-amplitude simulation along it (POST /api/scenes/{id}/modes-at; the playground's
  * POST /api/modes answers at the declared values only, which urls.modesFollow = false says).  The
  * panel asks again after every server run whose parameters differ from the last answer's (the
  * simulation's own debounce paces it); a preview greys it until then, and the readout names the

@@ -44,7 +44,7 @@ def test_scene_modes_measured_match_predicted(client):
 
 def test_scene_modes_follow_the_parameters(client):
     # coupled oscillators: omega^2 = k/m and k/m + 2 kappa/m; with k = 10, m = 1, kappa = 0.1: 10 and 10.2
-    r = client.post("/api/scenes/coupled-oscillators/modes", json={"parameters": {"kappa": 0.1}})
+    r = client.post("/api/scenes/coupled-oscillators/modes-at", json={"parameters": {"kappa": 0.1}})
     assert r.status_code == 200
     (eq,) = r.json()
     assert eq["parameters"] == {"m": 1.0, "k": 10.0, "kappa": 0.1}
@@ -59,7 +59,7 @@ def test_scene_modes_follow_the_parameters(client):
     [({"parameters": {"kappa": -5}}, 422, "outside its allowed range"), ({"parameters": {"zz": 1}}, 422, "unknown parameter")],
 )
 def test_scene_modes_refuse_bad_parameters(client, body, status, words):
-    r = client.post("/api/scenes/coupled-oscillators/modes", json=body)
+    r = client.post("/api/scenes/coupled-oscillators/modes-at", json=body)
     assert r.status_code == status and words in r.text
 
 
