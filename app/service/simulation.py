@@ -36,6 +36,7 @@ from app.numerics.simulate import Outcome, run
 from app.numerics.system import NumericSystem, generated_sources, numeric_system
 from app.scenes import SCENES, Scene
 from app.service.cache import JsonCache, source_fingerprint
+from app.service.trust import judge
 from app.settings import container_cpus, settings
 
 DEFAULT_T_END = 10.0
@@ -429,6 +430,7 @@ def document(
     return {
         **observed.series,
         "stats": _finite(stats),
+        "trust": _finite(judge(stats["error_estimate"], stats["error_estimate_by_coordinate"], system.coordinates, tr.y)),
         # the same right-hand side as JavaScript: the page integrates a preview while an input moves
         "preview": {
             "rhs": system.browser,

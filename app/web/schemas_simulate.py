@@ -98,6 +98,18 @@ class BrowserPreview(BaseModel):
     parameters: list[str] = Field(description="The order of the parameters in k")
 
 
+class Trust(BaseModel):
+    """Whether the run's error estimate is small against the motion (app/service/trust.py)."""
+
+    trusted: bool | None = Field(
+        description="False when the estimated error is 5 % or more of the range of some coordinate over the run "
+        "(the motion shown is not reliable); null when the run has no error estimate."
+    )
+    ratio: float | None = Field(description="The worst estimated error / range of motion over the coordinates.")
+    coordinate: str | None = Field(description="The coordinate where that ratio is worst.")
+    message: str | None = Field(description="A plain-language warning when not trusted, else null.")
+
+
 class SimulateResponse(BaseModel):
     t: list[float]
     state: dict[str, list[float | None]]
@@ -106,6 +118,7 @@ class SimulateResponse(BaseModel):
     conserved: dict[str, list[float | None]]
     constraint_forces: dict[str, list[float | None]]
     stats: SimulateStats
+    trust: Trust
     preview: BrowserPreview | None = None
 
 

@@ -33,7 +33,7 @@ def test_the_block_stops_at_the_foot_of_the_ramp_with_a_message(page, artifacts)
     page.goto("/scenes/incline-block")
     page.wait_for_selector(READY, state="attached")
     assert "At t = 1.276 s: The block reached the foot of the ramp; the run ends there." in page.inner_text(
-        "#run-status .message"
+        "#run-status .warnings"
     )
     assert end_time(page) == "t = 1.28 s"
     drawn = page.evaluate(DRAWN)
