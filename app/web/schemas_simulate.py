@@ -56,8 +56,9 @@ class SimulateRequest(BaseModel):
     )
     precision: Precision = Field(
         "full",
-        description="'full': every float as computed; 'display': the series rounded to 7 significant digits "
-        "(what a plot needs; about half the bytes), stats unchanged.",
+        description="'full': every float as computed; 'display': the state and constraint forces rounded to 7 "
+        "significant digits (what a plot needs; fewer bytes); energy, h, conserved momenta and stats unchanged "
+        "(their changes since t = 0 are plotted).",
     )
 
 

@@ -37,7 +37,8 @@ export function layout(extra = {}) {
  * Plotly's default SI prefixes ("1p" would read as a pico-unit).
  */
 export const AXIS_FORMAT = { exponentformat: "power", showexponent: "all", separatethousands: false };
-export const axis = (text, extra = {}) => ({ title: { text }, gridcolor: "#e6e8eb", zerolinecolor: "#b8bec5", ...AXIS_FORMAT, ...extra });
+// automargin with a standoff keeps the title clear of the tick labels, however wide they are (10⁻⁹ on a phone)
+export const axis = (text, extra = {}) => ({ title: { text, standoff: 6 }, automargin: true, gridcolor: "#e6e8eb", zerolinecolor: "#b8bec5", ...AXIS_FORMAT, ...extra });
 
 /** The SI unit of the generalized momentum of a coordinate measured in `unit` (rad or m). */
 export const momentumUnit = (unit) => (unit === "rad" ? "kg·m²/s" : unit === "m" ? "kg·m/s" : "SI units");

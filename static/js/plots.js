@@ -55,11 +55,12 @@ class EnergyPanel extends TimePanel {
     this.drawSeries(run, top, bottom, "energy (J)", "change (J)");
     // relative to the run's energy scale (E itself may be zero, as when U is measured from the start)
     const scale = Math.max(...finite([...run.energy, ...(run.T || []), ...(run.U || [])]).map(Math.abs), 1e-300);
-    const rel = (d) => Math.max(...finite(d).map(Math.abs)) / scale;
     let what = { true: "h = E here.", false: "h and E differ here." }[run.data.h_equals_e]
       ?? "Only L was given, so E cannot be told apart from h: the curve labelled E is h.";
     if (run.data.forced) what += " A non-conservative generalized force acts, so the change is physical, not numerical.";
-    this.readout.textContent = `Largest change since t = 0, relative to the energy scale ${fmt(scale)} J: E by ${fmt(rel(dE))}, h by ${fmt(rel(dh))}. ${what}`;
+    // a change within the run's energy resolution is the integration's error, not a number to read
+    const change = (d) => { const big = Math.max(...finite(d).map(Math.abs)); return big <= run.resolution ? "≈ 0 (within the error)" : fmt(big / scale); };
+    this.readout.textContent = `Largest change since t = 0, relative to the energy scale ${fmt(scale)} J: E by ${change(dE)}, h by ${change(dh)}. ${what}`;
     seriesTable(this.summary, "Energies over the run (J)", run.t, [...top, ...bottom]);
   }
 }

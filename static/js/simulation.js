@@ -92,8 +92,15 @@ export function prepareRun(data, request, result) {
     if (!c.name.startsWith("p_")) continue;
     momenta[c.name] = (result.conserved && result.conserved[c.name]) || seriesOrNull(c.tree, envs);
   }
+  // the energy resolution (J): the run's size of energy times its relative error (the server's verdict
+  // compares the error estimate with the motion; a preview has none, so a fixed-step RK4's 10⁻⁶), never
+  // below round-off.  Energies within it are read as "≈ 0", not as digits of noise.
+  let scale = 0;
+  for (const s of [energy, U, T]) if (s) for (const v of s) if (Number.isFinite(v)) scale = Math.max(scale, Math.abs(v));
+  const relative = result.trust ? result.trust.ratio : 1e-6;
+  const resolution = scale * Math.max(1e-9, Number.isFinite(relative) ? relative : 1e-6);
   return {
-    data, request, n, t, params, state, energy, hamiltonian, U, T, momenta, extent,
+    data, request, n, t, params, state, energy, hamiltonian, U, T, momenta, extent, resolution,
     forces: result.constraint_forces || {}, stats: result.stats || {}, envAt: (i) => envs[i],
   };
 }
