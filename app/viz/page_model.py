@@ -22,6 +22,7 @@ from app.viz.exprtree import document_tree, leaves
 from app.viz.mechanism import mechanism
 from app.viz.names import label
 from app.viz.panels import Facts, oscillating_equilibria, shown, texts
+from app.viz.units import coordinate_units
 
 LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collapsed
 RTOLS = ("1e-3", "1e-4", "1e-6", "1e-8", "1e-10", "1e-12")
@@ -128,13 +129,15 @@ def _initial_controls(
     nonnegative: Sequence[str],
     angular: set[str],
     marks: dict[str, list[dict[str, Any]]] | None = None,
+    units: dict[str, str] | None = None,
 ) -> list[dict]:
     marks = marks or {}
+    units = units or {}
     lengths = [p["default"] for p in doc["parameters"].values() if p.get("unit") == "m" and p["default"] > 0]
     scale = max([1.0, *lengths])
     controls = []
     for q in doc["coordinates"]:
-        angle = q in angular
+        angle = q in angular or units.get(q) == "rad"
         value, rate = float(initial.get(q, 0.0)), float(initial.get(f"{q}_dot", 0.0))
         if angle:
             lo, hi = -math.pi, math.pi
@@ -145,7 +148,8 @@ def _initial_controls(
         found = marks.get(f"{q}_dot", [])
         reach = max([abs(m["value"]) for m in found], default=0.0)
         vmax = max(10.0, 3 * abs(rate), 1.5 * reach) if angle else max(5.0, 3 * abs(rate), math.sqrt(9.81 * scale))
-        unit = "rad" if angle else "m"
+        unit = units.get(q, "rad" if angle else "m")
+        rate_unit = f"{unit}/s" if unit else "1/s"
         controls.append(
             {"name": q, "label": f"{label(q)}(0)", "latex": latex(q), "unit": unit,
              "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(value), "log": False,
@@ -153,8 +157,8 @@ def _initial_controls(
         )  # fmt: skip
         controls.append(
             {"name": f"{q}_dot", "label": f"{label(q + '_dot')}(0)", "latex": latex(f"{q}_dot"),
-             "unit": f"{unit}/s", "min": _fmt(-vmax), "max": _fmt(vmax), "value": _fmt(rate), "log": False,
-             "ticks": _marks(found, f"{unit}/s"),
+             "unit": rate_unit, "min": _fmt(-vmax), "max": _fmt(vmax), "value": _fmt(rate), "log": False,
+             "ticks": _marks(found, rate_unit),
              "description": f"initial rate of change of {label(q)}"}
         )  # fmt: skip
     return controls
@@ -234,9 +238,11 @@ def _reduction(doc: dict[str, Any]) -> dict[str, Any] | None:
     return out if all(x is not None for x in essential) else None
 
 
-def _client(doc, info, reduction, spec, methods, nonnegative, angular) -> dict[str, Any]:
+def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bool = True) -> dict[str, Any]:
     names = _names(doc)
-    units = {q: "rad" if q in angular else "m" for q in doc["coordinates"]}
+    # rad for an angle, m where the dimensions say so, nothing where they cannot tell (app/viz/units.py)
+    known = coordinate_units(doc, scene)
+    units = known["units"]
     conserved = [
         {"name": c["name"], "label": label(c["name"]), "tree": document_tree(c, names)}
         for c in doc.get("conserved", [])
@@ -246,6 +252,8 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular) -> dict[s
         "coordinates": doc["coordinates"],
         "labels": {n: label(n) for n in [*names, *(c["name"] for c in doc.get("conserved", []))] if n != "t"},
         "units": units,
+        "rate_units": known["rate_units"],
+        "momentum_units": known["momentum_units"],
         "nonnegative": list(nonnegative),
         "parameters": {k: v["default"] for k, v in doc["parameters"].items()},
         "parameter_units": {k: v.get("unit", "") for k, v in doc["parameters"].items()},
@@ -332,7 +340,7 @@ def scene_page(
     info = {**info, "panels": panels, **{k: prose(info[k]) for k in ("statement", "figure", "summary") if info.get(k)}}
     angular = angles(doc)
     marks = ticks(doc, info.get("initial", {}))
-    client = _client(doc, info, reduction, spec, methods, nonnegative, angular)
+    client = _client(doc, info, reduction, spec, methods, nonnegative, angular, scene)
     return {
         "info": info,
         "declared_panels": declared,
@@ -356,7 +364,9 @@ def scene_page(
         "errata": [{**e, "reason": prose(e["reason"])} for e in doc.get("errata") or []],
         "transformed": _transformed(doc),
         "parameters": _parameter_controls(doc, marks),
-        "initial": _initial_controls(doc, info.get("initial", {}), nonnegative, angular, marks),
+        "initial": _initial_controls(
+            doc, info.get("initial", {}), nonnegative, angular, marks, coordinate_units(doc, scene)["units"]
+        ),
         "t_end": {
             "value": _fmt(info.get("t_end", 10.0)),
             "min": "0.5",

@@ -43,7 +43,7 @@ export class ModesPanel {
     this.build();
   }
 
-  unit(q) { return this.data.units[q] || "m"; }
+  unit(q) { return this.data.units[q] || ""; }
 
   /** The equilibrium picker, then one row per mode: a checkbox and an amplitude slider. */
   build() {

@@ -87,7 +87,7 @@ class MomentaPanel extends TimePanel {
     const drift = Math.max(...finite(bottom.flatMap((s) => Array.from(s.values))).map(Math.abs), 0);
     const lo = Math.min(...all), hi = Math.max(...all);
     const pad = Math.max(0.05 * Math.max(Math.abs(lo), Math.abs(hi)), 5 * drift, 1e-12);
-    const units = [...new Set(names.map((n) => momentumUnit(run.data.units[n.slice(2)])))];
+    const units = [...new Set(names.map((n) => (run.data.momentum_units && run.data.momentum_units[n.slice(2)]) || momentumUnit(run.data.units[n.slice(2)])))];
     const unit = units.length === 1 ? units[0] : "SI units";
     this.drawSeries(run, top, bottom, `momentum (${unit})`, `change (${unit})`, { yaxis: { range: [lo - pad, hi + pad] } });
     this.readout.textContent = top.map((s, k) => `${s.name} stays at ${fmt(s.values[0])} within ${fmt(Math.max(...finite(bottom[k].values).map(Math.abs)))}.`).join(" ");

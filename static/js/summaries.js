@@ -89,7 +89,8 @@ export function table(container, caption, headers, rows) {
     row.forEach((cell, k) => {
       const c = k === 0 ? document.createElement("th") : document.createElement("td");
       if (k === 0) c.scope = "row";
-      c.textContent = typeof cell === "number" ? fmt(cell) : String(cell);
+      // a missing value reads as a dash, never as "null" or "undefined"
+      c.textContent = typeof cell === "number" ? fmt(cell) : cell === null || cell === undefined ? "–" : String(cell);
       tr.append(c);
     });
   }
