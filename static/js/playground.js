@@ -17,10 +17,12 @@
 import { foldSteps, printReady, whenTypeset } from "./derivation.js";
 import { fetchJson } from "./api.js";
 import { connectSimulation } from "./simulation.js";
+import { keyboardScroll } from "./scrollboxes.js";
 
 foldSteps(document);
 printReady();
 whenTypeset(document);
+keyboardScroll(document);
 
 // ---- the system form -----------------------------------------------------------------------
 

@@ -9,11 +9,13 @@
 import { foldSteps, printReady, whenTypeset } from "./derivation.js";
 import { fetchJson } from "./api.js";
 import { connectSimulation } from "./simulation.js";
+import { keyboardScroll } from "./scrollboxes.js";
 
 const data = JSON.parse(document.getElementById("scene-data").textContent);
 foldSteps(document);
 printReady();
 whenTypeset(document);
+keyboardScroll(document);
 
 const root = document.getElementById("simulation");
 if (root) {
