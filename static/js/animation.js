@@ -802,22 +802,37 @@ export class Player {
       }
       const keys = { ArrowRight: [0, 1], ArrowUp: [1, 1], ArrowLeft: [0, -1], ArrowDown: [1, -1] };
       if (!(e.key in keys)) return;
-      // Shift: the body's initial rates instead of its initial coordinates
-      const names = e.shiftKey
-        ? this.rateNames(this.selected)
-        : (this.ownersOf[this.selected] || []).filter((q) => this.controls && this.controls(q));
+      e.preventDefault();
+      if (!e.shiftKey) {
+        // the body moves the way the arrow points on screen: the initial coordinates that bring it
+        // nearest a point a few pixels that way (along its constraint, if it has one)
+        const names = (this.ownersOf[this.selected] || []).filter((q) => this.controls && this.controls(q));
+        if (!names.length) return;
+        const now = Object.fromEntries(names.map((q) => [q, this.controls(q).value]));
+        const [px, py] = this.placed(this.selected, now);
+        const dx = { ArrowRight: 1, ArrowLeft: -1 }[e.key] || 0, dy = { ArrowDown: 1, ArrowUp: -1 }[e.key] || 0;
+        const PIXELS = 6;
+        const values = this.solve(this.selected, px + PIXELS * dx, py + PIXELS * dy);
+        const moved = values && names.filter((q) => Math.abs(values[q] - now[q]) > 1e-9 * Math.max(1, Math.abs(now[q])));
+        if (!moved || !moved.length) { this.say("This body cannot move that way from here; try another arrow."); return; }
+        this.pause();
+        if (this.index !== 0) this.seek(0);
+        this.onDrag(Object.fromEntries(moved.map((q) => [q, values[q]])));
+        this.say(moved.map((q) => `${this.run.data.labels[q] || q} starts at ${Number(values[q].toPrecision(4))}`).join(", "));
+        return;
+      }
+      // Shift: the body's initial rates, Right/Left the first, Up/Down the second (or the first if it has one)
+      const names = this.rateNames(this.selected);
       if (!names.length) return;
-      // Right/Left change the body's first coordinate (or rate), Up/Down its second (or the first if it has one)
       const [which, sign] = keys[e.key];
       const q = names[Math.min(which, names.length - 1)];
       const r = this.controls(q);
-      const step = (r.max - r.min) / 100;
+      const step = (r.max - r.min) / 200;
       const value = Math.min(r.max, Math.max(r.min, r.value + sign * step));
       this.pause();
       if (this.index !== 0) this.seek(0);
       this.onDrag({ [q]: value });
       this.say(`${this.run.data.labels[q] || q} starts at ${Number(value.toPrecision(4))}`);
-      e.preventDefault();
     });
   }
 
