@@ -38,6 +38,9 @@ class Family:
     axis_names: tuple[str, ...] = ("x", "y", "z")
     slack: str = ""  # the constraint force whose negative value means the strings are slack
     caption: str = ""  # what the animation shows, in words
+    # (particle index, slope angle in the view, counter-clockwise): a block drawn as a rectangle whose base
+    # rests on that slope at the particle (the particle is the middle of its base, where the slope pushes)
+    blocks: tuple[tuple[int, str], ...] = ()
 
 
 def _span(q: str, pad: str = "0.25") -> tuple[str, str]:
@@ -76,7 +79,7 @@ _RAMP = "(1.15*(qmax_X + Abs(qmax_X))/2 + 0.5)"
 # (end mass at -W, fixed wheel from -W to -W + 2r = -r, movable wheel from -r to r).
 _W = _max("1", "0.3*(qmax_y1 - qmin_y1 + qmax_y2 - qmin_y2)")
 _R = f"({_W})/3"
-_HANG = f"0.8*{_R}"  # from the middle mass up to its wheel's centre
+_HANG = f"1.6*{_R}"  # from the middle mass up to its wheel's centre: the mass hangs clear below the rim
 _Y = "(-(y1 + y2)/2 - 1)"  # the middle mass's height (the scene's particle)
 # the fixed wheels' height: above both end masses and above the movable wheel's highest reach
 _TOP = _max(_max("qmax_y1", "qmax_y2"), f"-(qmin_y1 + qmin_y2)/2 - 1 + {_HANG} + 2*{_R}") + f" + {_R} + 0.5*{_R}"
@@ -152,6 +155,7 @@ FAMILIES: dict[str, Family] = {
             ("corner", (f"{_RAMP}*cos(alpha)", "0", "0")),
         ),
         solids=(("ramp", ("foot", "top", "corner")),),
+        blocks=((0, "alpha"),),
         curves=(("floor", f"-0.6*{_RAMP} - 0.3", f"{_RAMP}*cos(alpha) + 0.3", ("s", "0", "0"), "ground"),),
         caption=(
             f"Side view: the fixed ramp at angle α on the floor, and the block on its slope with {TRAIL}. "
@@ -230,6 +234,8 @@ FAMILIES: dict[str, Family] = {
             ("wedge corner", ("X", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)")),
         ),
         solids=(("wedge", ("#0", "wedge foot", "wedge corner")),),
+        # the block rests on the wedge's slope, which falls to the right at alpha
+        blocks=((1, "-alpha"),),
         curves=(
             (
                 "floor",
@@ -357,8 +363,12 @@ def mechanism(
         caption=family.caption,
     )
     try:
-        for name, pos in own:
-            spec.points.append({"label": name, "mass": True, "xyz": [of_text(pos[i]) for i in family.axes]})
+        tilt = dict(family.blocks)
+        for k, (name, pos) in enumerate(own):
+            point = {"label": name, "mass": True, "xyz": [of_text(pos[i]) for i in family.axes]}
+            if k in tilt:
+                point["block"] = of_text(tilt[k])
+            spec.points.append(point)
         for drawn, group in ((True, family.fixed), (False, family.anchors)):
             for name, pos in group:
                 point = {"label": name, "mass": False, "xyz": [of_text(pos[i]) for i in family.axes]}

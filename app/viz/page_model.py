@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import json
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 from app.engine.names import latex, prose
@@ -130,9 +130,13 @@ def _initial_controls(
     angular: set[str],
     marks: dict[str, list[dict[str, Any]]] | None = None,
     units: dict[str, str] | None = None,
+    events: Sequence[Mapping[str, Any]] = (),
 ) -> list[dict]:
     marks = marks or {}
     units = units or {}
+    # a set-up that ends where a coordinate falls below zero (the block at the foot of its ramp) starts
+    # only where it holds: that coordinate's slider begins at 0
+    held = {e["expression"].strip() for e in events}
     lengths = [p["default"] for p in doc["parameters"].values() if p.get("unit") == "m" and p["default"] > 0]
     scale = max([1.0, *lengths])
     controls = []
@@ -144,7 +148,7 @@ def _initial_controls(
             lo, hi = min(lo, value), max(hi, value)
         else:
             size = 3 * max(scale, abs(value))
-            lo, hi = (0.0 if q in nonnegative else -size), size
+            lo, hi = (0.0 if q in nonnegative or q in held else -size), size
         found = marks.get(f"{q}_dot", [])
         reach = max([abs(m["value"]) for m in found], default=0.0)
         vmax = max(10.0, 3 * abs(rate), 1.5 * reach) if angle else max(5.0, 3 * abs(rate), math.sqrt(9.81 * scale))
@@ -365,7 +369,13 @@ def scene_page(
         "transformed": _transformed(doc),
         "parameters": _parameter_controls(doc, marks),
         "initial": _initial_controls(
-            doc, info.get("initial", {}), nonnegative, angular, marks, coordinate_units(doc, scene)["units"]
+            doc,
+            info.get("initial", {}),
+            nonnegative,
+            angular,
+            marks,
+            coordinate_units(doc, scene)["units"],
+            info.get("events", ()),
         ),
         "t_end": {
             "value": _fmt(info.get("t_end", 10.0)),

@@ -70,6 +70,7 @@ export class Player {
     this.dim = spec.dim;
     this.view = { yaw: -0.6, pitch: 0.35 }; // 3-D only
     this.points = spec.points.map((p) => p.xyz.map(compile));
+    this.tilts = spec.points.map((p) => (p.block ? compile(p.block) : null)); // blocks: the slope they rest on
     this.masses = spec.points.map((p, i) => (p.mass ? i : -1)).filter((i) => i >= 0);
     this.fixed = spec.points.map((p, i) => (p.mass || p.hidden ? -1 : i)).filter((i) => i >= 0);
     this.wheels = (spec.wheels || []).map((w) => ({ ...w, r: compile(w.radius) }));
@@ -352,7 +353,18 @@ export class Player {
       ctx.fillStyle = MASS_COLORS[k % MASS_COLORS.length];
       ctx.strokeStyle = selected ? "#ffbf47" : "#1b1f24";
       ctx.lineWidth = (selected ? 4 : 1.5) * dpr;
-      ctx.beginPath(); ctx.arc(x, y, 10 * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      const tilt = this.tilts[p];
+      if (tilt) {
+        // a block: a rectangle whose base lies on its slope, the particle at the middle of the base
+        const a = tilt(run.envAt(i)), W = 15 * dpr, H = 18 * dpr;
+        const dx = Math.cos(a), dy = -Math.sin(a), nx = -Math.sin(a), ny = -Math.cos(a); // along, and up from, the slope on screen
+        ctx.beginPath();
+        ctx.moveTo(x - W * dx, y - W * dy); ctx.lineTo(x + W * dx, y + W * dy);
+        ctx.lineTo(x + W * dx + H * nx, y + W * dy + H * ny); ctx.lineTo(x - W * dx + H * nx, y - W * dy + H * ny);
+        ctx.closePath(); ctx.fill(); ctx.stroke();
+      } else {
+        ctx.beginPath(); ctx.arc(x, y, 10 * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      }
       bodies.push({ label: this.spec.points[p].label, x: Math.round(x / dpr), y: Math.round(y / dpr) });
     });
     if (this.showForces?.checked) drawn.forces = this.drawForces(ctx, i, dpr);

@@ -82,3 +82,29 @@ def test_a_system_given_by_l_alone_says_it_has_no_picture(page):
     assert page.evaluate(DRAWN)["none"] and page.evaluate(f"{CANVAS}.dataset.bodies") == "[]"
     assert "No picture" in page.inner_text("[data-panel^=animation] .animation-caption")
     assert page.console_errors == []
+
+
+@pytest.mark.parametrize(("scene_id", "slope"), [("incline-block", 1), ("movable-incline", -1)])
+def test_blocks_are_rectangles_resting_on_their_slopes(page, artifacts, scene_id, slope):
+    page.goto(f"/scenes/{scene_id}")
+    page.wait_for_selector(READY, state="attached")
+    canvas = page.locator("[data-panel^=animation] canvas")
+    # the pixel just above the middle of the block's base, off the slope's normal, is the block's colour,
+    # and so is one a block's height less a little further up; a disc of radius 10 px would not reach it
+    bodies = page.evaluate("JSON.parse(document.querySelector('[data-panel^=animation] canvas').dataset.bodies)")
+    block = bodies[-1]
+    colour = page.evaluate(
+        """([x, y]) => { const c = document.querySelector('[data-panel^=animation] canvas'), r = c.width / c.clientWidth;
+                        return Array.from(c.getContext('2d').getImageData(Math.round(x * r), Math.round(y * r), 1, 1).data); }""",
+        [block["x"], block["y"] - 15],
+    )
+    assert colour[3] == 255 and colour[:3] != [255, 255, 255]
+    canvas.screenshot(path=artifacts / f"block-{scene_id}.png")
+
+
+def test_the_middle_mass_hangs_clear_of_its_wheel(page, artifacts):
+    page.goto("/scenes/pulley")
+    page.wait_for_selector(READY, state="attached")
+    spec = page.evaluate("JSON.parse(document.getElementById('scene-data').textContent).mechanism")
+    assert spec["wheels"][2]["wrap"] == "bottom"
+    page.locator("[data-panel^=animation] canvas").screenshot(path=artifacts / "pulley-wheels.png")
