@@ -161,7 +161,7 @@ def predicted_at(scene_id: str, d: Derivation, doc: Mapping[str, Any], k: np.nda
     """The scene's equilibria at rest with their modes at the parameter vector ``k`` (the document's block shape)."""
     names, equilibria = _parametric(scene_id)
     defaults = np.array([p.default for p in d.system.parameters], dtype=float)
-    out = []
+    out: list[dict[str, Any]] = []
     for position, M, K, at_defaults in equilibria:
         if position is None:
             if not np.allclose(k, defaults):
