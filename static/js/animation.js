@@ -329,16 +329,25 @@ export class Player {
           for (let f = 0; f <= 1; f += 0.125) if (inside(ax + (bx - ax) * f, ay + (by - ay) * f)) { c += 1; break; }
         }
         for (const [bx, by] of placed) if (inside(bx, by) || inside(bx - 10 * dpr, by) || inside(bx + 10 * dpr, by)) c += 2;
+        // labels already placed, and the velocity handle (drawn at the first instant), weigh most
+        for (const [a0, b0, a1, b1] of boxes) if (x0 < a1 && x1 > a0 && y0 < b1 && y1 > b0) c += 5;
+        if (grip) {
+          const r = (HANDLE_RADIUS + 2) * dpr;
+          if (grip.x + r > x0 && grip.x - r < x1 && grip.y + r > y0 && grip.y - r < y1) c += 4;
+        }
         return c;
       };
+      const boxes = [];
+      const grip = i === 0 ? this.handle() : null;
       this.masses.forEach((p, k) => {
         const [x, y] = placed[k], label = this.spec.points[p].label, w = ctx.measureText(label).width, h = 13 * dpr;
         let best = null;
         for (const [sx, sy] of [[1, -1], [-1, -1], [1, 1], [-1, 1]]) {
           const lx = x + sx * 14 * dpr, ly = y + (sy < 0 ? -12 : 22) * dpr;
           const x0 = sx > 0 ? lx : lx - w, c = cost(x0, ly - h, x0 + w, ly + 3 * dpr);
-          if (!best || c < best.c) best = { c, lx, ly, align: sx > 0 ? "left" : "right" };
+          if (!best || c < best.c) best = { c, lx, ly, align: sx > 0 ? "left" : "right", box: [x0, ly - h, x0 + w, ly + 3 * dpr] };
         }
+        boxes.push(best.box);
         ctx.textAlign = best.align;
         ctx.strokeStyle = "#fff"; ctx.lineWidth = 4 * dpr;
         ctx.strokeText(label, best.lx, best.ly);

@@ -46,7 +46,7 @@ def test_the_block_stops_at_the_foot_of_the_ramp_with_a_message(page, artifacts)
     page.fill("#ctl-X_dot", "4")
     page.dispatch_event("#ctl-X_dot", "input")
     page.wait_for_function("window.painted.includes('preview')")
-    assert "The block reached the foot of the ramp" in page.inner_text("#run-status .message")
+    assert "The block reached the foot of the ramp" in page.inner_text("#run-status")
     preview = end_time(page)
     page.wait_for_function("window.painted.includes('server')")
     assert preview == end_time(page) == "t = 1.70 s"
