@@ -18,7 +18,7 @@ from typing import Any
 
 from app.engine.trees import TreeError, of_text
 from app.viz.exprtree import leaves
-from app.viz.rods import rods
+from app.viz.rods import rods, springs
 
 
 @dataclass(frozen=True)
@@ -309,15 +309,22 @@ def _inferred(
     dim: int,
     defaults: Mapping[str, float],
     proven: Sequence[Mapping[str, Any]],
+    potential: Any = None,
 ) -> Family:
-    """A system without a drawing of its own: its particles, with the rods and pivot their motion implies."""
+    """A system without a drawing of its own: its particles, with the rods, springs and pivot their motion implies."""
     axes = _moving_axes(particles, coordinates, dim)
     found = rods(particles, coordinates, defaults, proven)
     links = tuple(("pivot" if a is None else f"#{a}", f"#{b}", "rod?" if checked else "rod") for a, b, checked in found)
-    pivot = any(a is None for a, _, _ in found)
+    # a particle at distance r from the origin, with r squared in U (a spring's energy): a spring from a pivot
+    held = {b for a, b, _ in found if a is None}
+    coiled = [(j, q) for j, q in springs(particles, coordinates, defaults, potential) if j not in held]
+    links += tuple(("pivot", f"#{j}", "spring") for j, _ in coiled)
+    pivot = any(a is None for a, _, _ in found) or bool(coiled)
     what = "the particles as declared"
     if found:
         what += ", the rods that keep their distances fixed" + (" and the fixed pivot" if pivot else "")
+    if coiled:
+        what += f", the spring{'s' if len(coiled) > 1 else ''} from the fixed pivot (its length is {', '.join(q for _, q in coiled)})"
     view = "in three dimensions; drag the background to turn the view" if dim == 3 else _view_name(axes)
     return Family(
         dim=dim,
@@ -341,6 +348,7 @@ def mechanism(
     forces: Sequence[dict[str, Any]] = (),
     defaults: Mapping[str, float] | None = None,
     proven: Sequence[Mapping[str, Any]] = (),
+    potential: Any = None,
 ) -> dict[str, Any] | None:
     """The animation spec of a scene (None when its positions cannot be drawn).
 
@@ -353,7 +361,7 @@ def mechanism(
     if family is None and not particles:
         return MechanismSpec(dim=2, axis_names=[], caption=NO_PICTURE).as_json() | {"none": True}
     if family is None:
-        family = _inferred(particles, coordinates, 3 if three_d else 2, defaults or {}, proven)
+        family = _inferred(particles, coordinates, 3 if three_d else 2, defaults or {}, proven, potential)
     # a particle without a label is "mass k" (links refer to points by label)
     own = list(family.points) or [(name or f"mass {i + 1}", pos) for i, (name, pos) in enumerate(particles)]
     spec = MechanismSpec(

@@ -338,6 +338,7 @@ def scene_page(
         forces=doc.get("constraint_forces") or (),
         defaults=defaults,
         proven=doc.get("fixed_distances") or (),
+        potential=document_tree(doc.get("potential")),
     )
     panels = _panels(declared, doc, reduction, spec, scene)
     # symbol names in the scene's prose as a reader writes them (m₁, x₂)

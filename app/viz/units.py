@@ -47,7 +47,7 @@ def _add(a: Dims, b: Dims, times: Fraction = Fraction(1)) -> Dims:
 
 
 def parse_unit(text: str) -> Dims | None:
-    """"N/m" -> kg s⁻²; "kg·m²" -> kg m²; "" or anything not understood -> None."""
+    """ "N/m" -> kg s⁻²; "kg·m²" -> kg m²; "" or anything not understood -> None."""
     text = text.strip().translate(_SUPERSCRIPTS).replace("·", "*").replace("⋅", "*").replace(" ", "*")
     if not text:
         return None

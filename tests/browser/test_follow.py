@@ -25,11 +25,15 @@ def test_the_modes_follow_the_coupling(page):
     page.wait_for_selector(READY, state="attached")
     page.locator("#panel-modes").scroll_into_view_if_needed()
     # the scene's k = 10 N/m, m = 1 kg: at the default kappa = 1 N/m mode 2 is sqrt(k/m + 2 kappa/m) = sqrt(12)
-    page.wait_for_function("/ω = 3.464 rad\\/s/.test(document.querySelector('label[for=panel-modes-mode-1]').textContent)")
+    page.wait_for_function(
+        "/ω = 3.464 rad\\/s/.test(document.querySelector('label[for=panel-modes-mode-1]').textContent)"
+    )
     settle(page, "#ctl-kappa", "0.1")
     expected = math.sqrt(10 / 1 + 2 * 0.1 / 1)
     assert f"{expected:.4g}" == "3.194"
-    page.wait_for_function("/ω = 3.194 rad\\/s/.test(document.querySelector('label[for=panel-modes-mode-1]').textContent)")
+    page.wait_for_function(
+        "/ω = 3.194 rad\\/s/.test(document.querySelector('label[for=panel-modes-mode-1]').textContent)"
+    )
     assert "ω = 3.162 rad/s" in page.inner_text("label[for=panel-modes-mode-0]")
     # the panel names the values it was computed at, and measures at them too
     assert "κ = 0.1 N/m" in page.inner_text("#panel-modes .frequencies caption")

@@ -34,7 +34,9 @@ def test_the_pulley_energy_reads_zero_within_the_error(page):
 
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
 def test_no_noise_after_play(browser, live_server, scene_id):
-    context = browser.new_context(base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True)
+    context = browser.new_context(
+        base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True
+    )
     page = context.new_page()
     page.set_default_timeout(60_000)
     page.goto(f"/scenes/{scene_id}")

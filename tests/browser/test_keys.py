@@ -49,7 +49,9 @@ def test_slider_arrows_are_fine_and_shift_is_coarse(page):
 
 
 def test_tap_targets_on_a_phone_are_at_least_24_px(browser, live_server):
-    context = browser.new_context(base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True)
+    context = browser.new_context(
+        base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True
+    )
     page = context.new_page()
     page.goto("/scenes/pulley")
     page.wait_for_selector(READY, state="attached")

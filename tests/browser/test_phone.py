@@ -10,12 +10,23 @@ from app.scenes import SCENES
 pytestmark = pytest.mark.browser
 
 READY = '#run-status[data-state="ready"], #run-status[data-state="untrusted"]'
-ORDER = ["h1", ".statement", "canvas.mechanism", "#controls", "figure.setup", "table.parameters", "#derivation", ".panels"]
+ORDER = [
+    "h1",
+    ".statement",
+    "canvas.mechanism",
+    "#controls",
+    "figure.setup",
+    "table.parameters",
+    "#derivation",
+    ".panels",
+]
 
 
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
 def test_a_phone_reads_in_order(browser, live_server, artifacts, scene_id):
-    context = browser.new_context(base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True)
+    context = browser.new_context(
+        base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True
+    )
     page = context.new_page()
     page.set_default_timeout(60_000)
     page.goto(f"/scenes/{scene_id}")

@@ -108,3 +108,19 @@ def test_the_middle_mass_hangs_clear_of_its_wheel(page, artifacts):
     spec = page.evaluate("JSON.parse(document.getElementById('scene-data').textContent).mechanism")
     assert spec["wheels"][2]["wrap"] == "bottom"
     page.locator("[data-panel^=animation] canvas").screenshot(path=artifacts / "pulley-wheels.png")
+
+
+def test_the_playground_draws_an_elastic_pendulum_on_its_spring(page, artifacts):
+    query = {
+        "q": "r, theta", "form": "particles",
+        "pn": ["m", "k", "l", "g"], "pv": ["1", "20", "1", "9.81"], "pu": ["kg", "N/m", "m", "m/s^2"],
+        "m": "m", "x": "r*sin(theta)", "y": "0", "z": "-r*cos(theta)",
+        "U": "k*(r - l)**2/2 - m*g*r*cos(theta)",
+    }  # fmt: skip
+    page.goto("/playground?" + urlencode(query, doseq=True))
+    page.wait_for_selector(READY, state="attached")
+    drawn = page.evaluate("JSON.parse(document.querySelector('[data-panel=animation-2d] canvas').dataset.drawn)")
+    assert drawn["links"] == 1
+    assert "spring from the fixed pivot" in page.inner_text("[data-panel=animation-2d] .animation-caption")
+    assert page.inner_text("#ctl-r-unit") == "m" and page.inner_text("#ctl-theta-unit") == "rad"
+    page.locator("[data-panel=animation-2d] canvas").screenshot(path=artifacts / "playground-elastic-pendulum.png")

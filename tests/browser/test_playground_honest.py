@@ -36,7 +36,9 @@ def test_kepler_radial_fall_shows_units_and_no_raw_values(browser, live_server, 
     assert page.inner_text("#ctl-r-unit") == "m"
     runs = int(page.get_attribute("#simulation", "data-runs") or 0)
     page.fill("#ctl-theta_dot", "0")
-    page.wait_for_function(f"Number(document.getElementById('simulation').dataset.runs || 0) > {runs} || document.getElementById('run-status').dataset.state === 'error'")
+    page.wait_for_function(
+        f"Number(document.getElementById('simulation').dataset.runs || 0) > {runs} || document.getElementById('run-status').dataset.state === 'error'"
+    )
     page.wait_for_selector(DONE, state="attached")
     page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
     page.wait_for_timeout(1500)
