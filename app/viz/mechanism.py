@@ -41,6 +41,7 @@ class Family:
     # (particle index, slope angle in the view, counter-clockwise): a block drawn as a rectangle whose base
     # rests on that slope at the particle (the particle is the middle of its base, where the slope pushes)
     blocks: tuple[tuple[int, str], ...] = ()
+    applied: tuple[tuple[str, str], ...] = ()  # (constraint force, anchor label): where its arrow starts
 
 
 def _span(q: str, pad: str = "0.25") -> tuple[str, str]:
@@ -232,7 +233,10 @@ FAMILIES: dict[str, Family] = {
         anchors=(
             ("wedge foot", ("X + (1.15*Abs(qmax_D) + 0.5)*cos(alpha)", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)")),
             ("wedge corner", ("X", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)")),
+            # the floor pushes on the whole base; its resultant is drawn from the base's middle
+            ("wedge base", ("X + (1.15*Abs(qmax_D) + 0.5)*cos(alpha)/2", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)")),
         ),
+        applied=(("floor force on the wedge", "wedge base"),),
         solids=(("wedge", ("#0", "wedge foot", "wedge corner")),),
         # the block rests on the wedge's slope, which falls to the right at alpha
         blocks=((1, "-alpha"),),
@@ -406,6 +410,7 @@ def mechanism(
             spec.wheels.append({"at": index[centre], "radius": of_text(radius), "wrap": wrap})
     except TreeError:
         return None
+    where = dict(family.applied)
     for f in forces:
         k = int(f.get("particle", 1)) - 1
         direction = f.get("direction_trees")
@@ -414,7 +419,10 @@ def mechanism(
         arrow = [direction[i] for i in family.axes]
         if any(a is None for a in arrow):
             continue  # this force is left without an arrow
-        spec.forces.append({"name": f["name"], "on": k, "direction": arrow})
+        force = {"name": f["name"], "on": k, "direction": arrow}
+        if f["name"] in where and where[f["name"]] in index:
+            force["at"] = index[where[f["name"]]]
+        spec.forces.append(force)
     if not spec.points:
         return None
     return spec.as_json()

@@ -434,7 +434,8 @@ export class Player {
     list.forEach((f, j) => {
       const value = f.values[i];
       if (!Number.isFinite(value)) return;
-      const p = this.masses[f.on], a = this.xyz[p];
+      // from its point of application where the spec names one (the middle of the wedge's base), else its body
+      const p = Number.isInteger(f.at) ? f.at : this.masses[f.on], a = this.xyz[p];
       const r = a.map((col) => col[i]), d = f.dir.map((g) => g(env));
       // the arrow is the vector F (grad g / |grad g|) drawn at perNewton screen pixels per newton
       // (a negative F points against grad g); in 3-D it is projected like everything else

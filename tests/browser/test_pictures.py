@@ -124,3 +124,20 @@ def test_the_playground_draws_an_elastic_pendulum_on_its_spring(page, artifacts)
     assert "spring from the fixed pivot" in page.inner_text("[data-panel=animation-2d] .animation-caption")
     assert page.inner_text("#ctl-r-unit") == "m" and page.inner_text("#ctl-theta-unit") == "rad"
     page.locator("[data-panel=animation-2d] canvas").screenshot(path=artifacts / "playground-elastic-pendulum.png")
+
+
+def test_the_floor_pushes_the_wedge_at_its_base(page, artifacts):
+    page.goto("/scenes/movable-incline")
+    page.wait_for_selector(READY, state="attached")
+    page.check("[data-panel^=animation] input.show-forces")
+    page.wait_for_function("JSON.parse(document.querySelector('[data-panel^=animation] canvas').dataset.drawn).forces.length === 2")
+    drawn = page.evaluate("JSON.parse(document.querySelector('[data-panel^=animation] canvas').dataset.drawn)")
+    bodies = page.evaluate("JSON.parse(document.querySelector('[data-panel^=animation] canvas').dataset.bodies)")
+    floor = next(f for f in drawn["forces"] if f["name"] == "floor force on the wedge")
+    normal = next(f for f in drawn["forces"] if f["name"] == "normal force on the block")
+    apex, block = bodies[0], bodies[1]
+    # the floor's arrow starts on the floor, right of the apex (the base's middle), and points up
+    assert floor["y"] > apex["y"] + 20 and floor["x"] > apex["x"] + 20 and floor["ty"] < floor["y"]
+    # the slope's push on the block starts at the block (the middle of its base)
+    assert (normal["x"], normal["y"]) == (block["x"], block["y"])
+    page.locator("[data-panel^=animation] canvas").screenshot(path=artifacts / "wedge-forces.png")
