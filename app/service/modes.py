@@ -29,9 +29,9 @@ from functools import lru_cache
 from typing import Any
 
 import numpy as np
-import scipy.linalg
 import sympy as sp
 
+from app import late
 from app.engine.derive import Derivation
 from app.engine.modes import normal_modes
 from app.errors import OverCapacity
@@ -122,7 +122,7 @@ def _eigen(M: np.ndarray, K: np.ndarray) -> list[dict[str, Any]] | None:
     """(K - omega^2 M) a = 0: omega^2 ascending, each shape scaled so its largest component is 1."""
     if not (np.all(np.isfinite(M)) and np.all(np.isfinite(K))) or abs(np.linalg.det(M)) < 1e-12:
         return None
-    w2, vectors = scipy.linalg.eig(K, M)
+    w2, vectors = late.module("scipy.linalg").eig(K, M)
     order = np.argsort(w2.real)
     out = []
     for i in order:
