@@ -233,3 +233,4 @@ def warm_all() -> None:
     for scene_id in SCENES:
         if oscillating_equilibria(derivation_document(scene_id)):
             measure_scene(scene_id)
+            _parametric(scene_id)  # the closed forms the sliders' modes are evaluated from
