@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 if ! command -v npm >/dev/null 2>&1; then
     apt-get update -qq && apt-get install -y -qq --no-install-recommends nodejs npm >/dev/null
 fi
+# (npm ci also installs the dev dependencies: axe-core, which the accessibility tests load into the browser; it is never served)
 SCARF_ANALYTICS=false npm ci --ignore-scripts --no-audit --no-fund --loglevel=error >/dev/null
 
 vendor=static/vendor

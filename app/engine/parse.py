@@ -31,9 +31,11 @@ hostile text without touching SymPy; ``parse_expression`` runs all three.
 from __future__ import annotations
 
 import ast
+import io
 import keyword
 import math
 import re
+import tokenize
 from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass
 from fractions import Fraction
@@ -394,6 +396,15 @@ class _Checker:
     def call(self, node: ast.Call, depth: int) -> _Facts:
         if not isinstance(node.func, ast.Name) or node.func.id not in FUNCTIONS:
             allowed = ", ".join(sorted(FUNCTIONS))
+            if isinstance(node.func, ast.Constant | ast.Call | ast.BinOp) or (
+                isinstance(node.func, ast.Name) and node.func.id in self.names
+            ):
+                # "2(x+1)", "k(x+1)", "(a+b)(a-b)": factors side by side, not a call
+                source = ast.get_source_segment(self.text, node) or ""
+                head = ast.get_source_segment(self.text, node.func) or ""
+                starred = head + "*" + source[len(head) :].lstrip() if source.startswith(head) else ""
+                hint = f"write {starred} (a * between factors)" if starred else "a * between factors is needed"
+                raise self.refuse(node.func, f"{head or 'this'} is not a function: {hint}")
             raise self.refuse(node.func, f"only these functions may be called: {allowed}")
         name = node.func.id
         arity = ARITY.get(name, 1)
@@ -501,6 +512,8 @@ def _character_error(text: str, i: int) -> ExpressionError:
     ch = text[i]
     if ch == "^":
         why = "'^' is not a power here: write x**2"
+    elif ch == "=":
+        why = "an equation is not an expression: write it as one expression equal to zero, e.g. a - (b) for a = b"
     elif ch in "'\"":
         why = "quotes are not allowed: an expression holds no strings"
     elif ord(ch) > 127:
@@ -508,6 +521,40 @@ def _character_error(text: str, i: int) -> ExpressionError:
     else:
         why = "only letters, digits, spaces, _ . , ( ) and + - * / ** are allowed"
     return ExpressionError(f"character {ch!r} at column {i + 1} is not allowed: {why}", ch, i, i + 1)
+
+
+def _with_stars(text: str) -> str | None:
+    """The text with a * put between factors written side by side ("m R**2 theta_dot"), if that makes it read.
+
+    Two factors meet where a name, number or closing bracket is followed, after spaces, by a name, a number
+    or an opening bracket; a name directly followed by "(" is a call and stays one."""
+    out, last_end, gaps = [], 0, 0
+    previous: tokenize.TokenInfo | None = None
+    try:
+        tokens = list(tokenize.generate_tokens(io.StringIO(text).readline))
+    except (tokenize.TokenError, SyntaxError, IndentationError):
+        return None
+    for tok in tokens:
+        if tok.type in (tokenize.NEWLINE, tokenize.NL, tokenize.ENDMARKER):
+            continue
+        ends = previous is not None and (
+            previous.type in (tokenize.NAME, tokenize.NUMBER) or previous.string == ")"
+        )
+        starts = tok.type in (tokenize.NAME, tokenize.NUMBER) or tok.string == "("
+        call = tok.string == "(" and previous is not None and previous.type == tokenize.NAME and previous.end == tok.start
+        if ends and starts and not call and previous is not None:
+            out.append(text[last_end : previous.end[1]] + "*")
+            last_end = tok.start[1]
+            gaps += 1
+        previous = tok
+    if not gaps:
+        return None
+    fixed = "".join(out) + text[last_end:]
+    try:
+        ast.parse(fixed, mode="eval")
+    except SyntaxError:
+        return None
+    return fixed
 
 
 def check_expression(text: str, names: Collection[str]) -> ast.Expression:
@@ -553,8 +600,10 @@ def _checked(text: str, names: Collection[str]) -> tuple[ast.Expression, _Facts]
         column = min(max((exc.offset or 1) - 1, 0), len(stripped))
         first, last = max(column - 10, 0), min(column + 10, len(stripped))
         near = stripped[first:last]
+        starred = _with_stars(stripped)
+        hint = f"write {starred} (a * between factors)" if starred else exc.msg
         raise ExpressionError(
-            f"syntax error at column {offset + column + 1} ({exc.msg}), near {near!r}",
+            f"syntax error at column {offset + column + 1} ({hint}), near {near!r}",
             near,
             offset + first,
             offset + last,

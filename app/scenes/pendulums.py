@@ -154,4 +154,6 @@ DAMPED_PENDULUM = Scene(
     ),
     initial={"theta": 1.5, "theta_dot": 0.0},
     t_end=20.0,
+    # ours, not one of the chapter's examples: it illustrates 4.1's generalized forces on a system the chapter has
+    beyond_chapter=True,
 )

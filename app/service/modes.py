@@ -4,23 +4,36 @@ For each equilibrium at rest with an oscillating mode (``app.viz.panels.oscillat
 of the derivation document) and each of its modes with omega^2 > 0, the system starts at the
 equilibrium displaced by a small amplitude along the mode's shape, at rest; it then moves in that
 mode alone (to first order in the amplitude), and the period of the largest component, measured
-over CYCLES cycles, gives the measured omega.  Numbers are at the default parameters, like the
-engine's.  A scene's result is computed once (memory and disk cache); a user system's runs in the
-worker pool (``app.service.user_systems``).
+over CYCLES cycles, gives the measured omega.  A scene's result at the default parameters is
+computed once (memory and disk cache); a user system's runs in the worker pool
+(``app.service.user_systems``) at its declared values.
 
-    [{"equilibrium": {q: x}, "kind": str,
-      "modes": [{"omega_squared", "predicted", "measured", "relative_difference", "amplitude"}]}]
+A scene's modes also follow the page's sliders (``modes_at``): the engine's ``normal_modes``
+gives every equilibrium at rest in closed form, its position and its M and K as expressions of
+the parameters; these are turned into numeric functions once per scene, so that a new set of
+parameter values costs an evaluation and a small eigenproblem, (K - omega^2 M) a = 0, then the
+measurement above.  An equilibrium found only numerically (at the defaults) cannot follow; it is
+reported with ``"at_defaults": true``.
+
+    [{"equilibrium": {q: x}, "kind": str, "parameters": {name: value},
+      "modes": [{"omega_squared", "shape", "predicted", "measured", "relative_difference", "amplitude"}]}]
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+import threading
+from collections import OrderedDict
+from collections.abc import Callable, Mapping, Sequence
+from functools import lru_cache
 from typing import Any
 
 import numpy as np
+import sympy as sp
 
+from app import late
 from app.engine.derive import Derivation
+from app.engine.modes import normal_modes
 from app.errors import OverCapacity
 from app.numerics import limits
 from app.numerics.frequency import measured_omega
@@ -42,18 +55,24 @@ def measure(
     key: str | None = None,
     forces: Sequence[dict[str, Any]] = (),
     gates: Gates = GATES,
+    parameters: Mapping[str, float] | None = None,
 ) -> list[dict[str, Any]]:
-    """Predicted and measured omega of every oscillating mode at every equilibrium at rest."""
+    """Predicted and measured omega of every oscillating mode at every equilibrium at rest.
+
+    ``doc`` holds ``normal_modes`` (the derivation document's block, or ``predicted_at``'s) at
+    ``parameters`` (default: the declared values)."""
     names = list(d.table.names)
     n = len(names)
-    k = parameter_vector(d, {})
+    k = parameter_vector(d, parameters or {})
+    used = dict(zip((p.name for p in d.system.parameters), map(float, k), strict=True))
     system, _ = COMPILED.get(key, d, forces)
     out = []
     for e in oscillating_equilibria(dict(doc)):
         modes = []
         for m in e["modes"]:
             w2 = m["omega_squared"]
-            entry: dict[str, Any] = {"omega_squared": w2, "predicted": math.sqrt(w2) if w2 > 0 else None}
+            entry: dict[str, Any] = {"omega_squared": w2, "shape": dict(m["shape"])}
+            entry["predicted"] = math.sqrt(w2) if w2 > 0 else None
             entry.update(measured=None, relative_difference=None, amplitude=AMPLITUDE)
             if w2 > 0:
                 y0 = np.zeros(2 * n)
@@ -79,8 +98,122 @@ def measure(
                     entry["measured"] = float(measured)
                     entry["relative_difference"] = float(measured / omega - 1)
             modes.append(entry)
-        out.append({"equilibrium": e["equilibrium"], "kind": e["kind"], "modes": modes})
+        found = {"equilibrium": e["equilibrium"], "kind": e["kind"], "parameters": used, "modes": modes}
+        if e.get("at_defaults"):
+            found["at_defaults"] = True
+        out.append(found)
     return out
+
+
+# omega^2 within this fraction of the largest |omega^2| counts as zero (the engine's classification)
+ZERO = 1e-9
+
+
+def _kind(omega_squared: Sequence[float]) -> str:
+    scale = max([abs(w) for w in omega_squared] + [1e-300])
+    if any(w < -ZERO * scale for w in omega_squared):
+        return "unstable"
+    if any(abs(w) <= ZERO * scale for w in omega_squared):
+        return "neutral"
+    return "stable"
+
+
+def _eigen(M: np.ndarray, K: np.ndarray) -> list[dict[str, Any]] | None:
+    """(K - omega^2 M) a = 0: omega^2 ascending, each shape scaled so its largest component is 1."""
+    if not (np.all(np.isfinite(M)) and np.all(np.isfinite(K))) or abs(np.linalg.det(M)) < 1e-12:
+        return None
+    w2, vectors = late.module("scipy.linalg").eig(K, M)
+    order = np.argsort(w2.real)
+    out = []
+    for i in order:
+        a = vectors[:, i].real
+        a = a / a[np.argmax(np.abs(a))]
+        out.append({"omega_squared": float(w2[i].real), "shape": [float(x) + 0.0 for x in np.where(abs(a) < 1e-12, 0, a)]})
+    return out
+
+
+@lru_cache(maxsize=64)
+def _parametric(scene_id: str) -> tuple[tuple[str, ...], list[tuple[Callable[..., Any] | None, Any, Any, dict]]]:
+    """Each equilibrium at rest of a scene as numeric functions of the parameters: (position, M, K, at defaults).
+
+    Built once per scene from the engine's closed forms (the scene is fixed, so this SymPy work
+    does not depend on what a user sends)."""
+    from app.service.derivations import derivation
+
+    d = derivation(scene_id)
+    params = list(d.table.params)
+    names = tuple(d.table.names)
+    out: list[tuple[Callable[..., Any] | None, Any, Any, dict]] = []
+    for e in normal_modes(d).equilibria:
+        if e.momenta or tuple(e.coordinates) != names:
+            continue  # a relative equilibrium of a reduction: not a state at rest
+        if e.exact is None or e.mass.free_symbols - set(params) or e.stiffness.free_symbols - set(params):
+            out.append((None, None, None, dict(e.position)))  # numeric only, at the default values
+            continue
+        position = sp.lambdify(params, [sp.sympify(e.exact.get(n, 0)) for n in names], "numpy", dummify=True)
+        M = sp.lambdify(params, e.mass, "numpy", dummify=True)
+        K = sp.lambdify(params, e.stiffness, "numpy", dummify=True)
+        out.append((position, M, K, dict(e.position)))
+    return names, out
+
+
+def predicted_at(scene_id: str, d: Derivation, doc: Mapping[str, Any], k: np.ndarray) -> list[dict[str, Any]]:
+    """The scene's equilibria at rest with their modes at the parameter vector ``k`` (the document's block shape)."""
+    names, equilibria = _parametric(scene_id)
+    defaults = np.array([p.default for p in d.system.parameters], dtype=float)
+    out: list[dict[str, Any]] = []
+    for position, M, K, at_defaults in equilibria:
+        if position is None:
+            if not np.allclose(k, defaults):
+                continue  # found numerically at the defaults: it says nothing about these values
+            same = [e for e in doc.get("normal_modes") or [] if e["equilibrium"] == at_defaults and not e.get("momenta")]
+            out.extend({**e, "at_defaults": True} for e in same)
+            continue
+        with np.errstate(all="ignore"):
+            x = np.asarray(position(*k), dtype=complex)
+            if np.any(abs(x.imag) > 1e-12 * np.maximum(1, abs(x.real))) or not np.all(np.isfinite(x.real)):
+                continue  # this root is not real at these values
+            modes = _eigen(np.asarray(M(*k), dtype=float), np.asarray(K(*k), dtype=float))
+        if modes is None:
+            continue  # M singular there: a coordinate singularity, no modes
+        kind = _kind([m["omega_squared"] for m in modes])
+        out.append(
+            {
+                "equilibrium": dict(zip(names, map(float, x.real), strict=True)),
+                "kind": kind,
+                "stable": kind != "unstable",
+                "momenta": {},
+                "modes": [{"omega_squared": m["omega_squared"], "shape": dict(zip(names, m["shape"], strict=True))} for m in modes],
+            }
+        )
+    return out
+
+
+_at_lock = threading.Lock()
+_at_cache: OrderedDict[tuple[str, tuple[float, ...]], list[dict[str, Any]]] = OrderedDict()
+AT_CACHE_SIZE = 256
+
+
+def modes_at(scene_id: str, parameters: Mapping[str, float], gates: Gates = GATES) -> list[dict[str, Any]]:
+    """A scene's modes, predicted and measured, at the given parameter values (the rest at their defaults)."""
+    from app.service.derivations import derivation, derivation_document
+
+    d = derivation(scene_id)
+    k = parameter_vector(d, parameters)  # refuses unknown names and values out of range
+    key = (scene_id, tuple(map(float, k)))
+    with _at_lock:
+        if key in _at_cache:
+            _at_cache.move_to_end(key)
+            return _at_cache[key]
+    doc = derivation_document(scene_id)
+    given = dict(zip((p.name for p in d.system.parameters), map(float, k), strict=True))
+    predicted = {"normal_modes": predicted_at(scene_id, d, doc, k)}
+    result = measure(d, predicted, scene_id, doc.get("constraint_forces") or [], gates, given)
+    with _at_lock:
+        _at_cache[key] = result
+        while len(_at_cache) > AT_CACHE_SIZE:
+            _at_cache.popitem(last=False)
+    return result
 
 
 def measure_scene(scene_id: str, gates: Gates = GATES) -> list[dict[str, Any]]:
@@ -100,3 +233,4 @@ def warm_all() -> None:
     for scene_id in SCENES:
         if oscillating_equilibria(derivation_document(scene_id)):
             measure_scene(scene_id)
+            _parametric(scene_id)  # the closed forms the sliders' modes are evaluated from

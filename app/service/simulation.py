@@ -39,6 +39,7 @@ from app.numerics.start import why_not_at_start
 from app.numerics.system import NumericSystem, generated_sources, numeric_system
 from app.scenes import SCENES, Scene
 from app.service.cache import JsonCache, source_fingerprint
+from app.service.trust import judge
 from app.settings import container_cpus, settings
 
 DEFAULT_T_END = 10.0
@@ -380,13 +381,14 @@ def observe(
     for i, q in enumerate(system.coordinates):
         state[q] = _series(tr.y[:, i], precision)
         state[f"{q}_dot"] = _series(tr.y[:, n + i], precision)
-    conserved = {c: _series(values[f"conserved:{c}"], precision) for c in system.conserved}
+    # quantities whose change since t = 0 is plotted keep every digit (rounded, the change is a staircase)
+    conserved = {c: _series(values[f"conserved:{c}"]) for c in system.conserved}
     forces = {f["name"]: _series(values[f"force:{i}"], precision) for i, f in enumerate(observables.forces)}
     series = {
         "t": _series(tr.t),
         "state": state,
-        "energy": _series(values["energy"], precision),
-        "hamiltonian": _series(values["hamiltonian"], precision),
+        "energy": _series(values["energy"]),
+        "hamiltonian": _series(values["hamiltonian"]),
         "conserved": conserved,
         "constraint_forces": forces,
     }
@@ -397,7 +399,8 @@ def observe(
 def document(
     system: NumericSystem, observables: Observables, outcome, k: np.ndarray, rtol: float, precision: str = "full"
 ) -> dict[str, Any]:
-    """The result document; ``precision="display"`` rounds the series (never ``stats``) to DISPLAY_DIGITS."""
+    """The result document; ``precision="display"`` rounds the state and forces (never ``stats``, E, h or the
+    conserved momenta, whose changes are plotted) to DISPLAY_DIGITS."""
     tr = outcome.trajectory
     # the series, made while the reference ran (see simulate_derivation) unless the run went elsewhere
     observed = outcome.alongside
@@ -432,6 +435,7 @@ def document(
     return {
         **observed.series,
         "stats": _finite(stats),
+        "trust": _finite(judge(stats["error_estimate"], stats["error_estimate_by_coordinate"], system.coordinates, tr.y)),
         # the same right-hand side as JavaScript: the page integrates a preview while an input moves
         "preview": {
             "rhs": system.browser,

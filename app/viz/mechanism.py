@@ -18,7 +18,7 @@ from typing import Any
 
 from app.engine.trees import TreeError, of_text
 from app.viz.exprtree import leaves
-from app.viz.rods import rods
+from app.viz.rods import rods, springs
 
 
 @dataclass(frozen=True)
@@ -38,6 +38,10 @@ class Family:
     axis_names: tuple[str, ...] = ("x", "y", "z")
     slack: str = ""  # the constraint force whose negative value means the strings are slack
     caption: str = ""  # what the animation shows, in words
+    # (particle index, slope angle in the view, counter-clockwise): a block drawn as a rectangle whose base
+    # rests on that slope at the particle (the particle is the middle of its base, where the slope pushes)
+    blocks: tuple[tuple[int, str], ...] = ()
+    applied: tuple[tuple[str, str], ...] = ()  # (constraint force, anchor label): where its arrow starts
 
 
 def _span(q: str, pad: str = "0.25") -> tuple[str, str]:
@@ -76,7 +80,7 @@ _RAMP = "(1.15*(qmax_X + Abs(qmax_X))/2 + 0.5)"
 # (end mass at -W, fixed wheel from -W to -W + 2r = -r, movable wheel from -r to r).
 _W = _max("1", "0.3*(qmax_y1 - qmin_y1 + qmax_y2 - qmin_y2)")
 _R = f"({_W})/3"
-_HANG = f"0.8*{_R}"  # from the middle mass up to its wheel's centre
+_HANG = f"1.6*{_R}"  # from the middle mass up to its wheel's centre: the mass hangs clear below the rim
 _Y = "(-(y1 + y2)/2 - 1)"  # the middle mass's height (the scene's particle)
 # the fixed wheels' height: above both end masses and above the movable wheel's highest reach
 _TOP = _max(_max("qmax_y1", "qmax_y2"), f"-(qmin_y1 + qmin_y2)/2 - 1 + {_HANG} + 2*{_R}") + f" + {_R} + 0.5*{_R}"
@@ -152,6 +156,7 @@ FAMILIES: dict[str, Family] = {
             ("corner", (f"{_RAMP}*cos(alpha)", "0", "0")),
         ),
         solids=(("ramp", ("foot", "top", "corner")),),
+        blocks=((0, "alpha"),),
         curves=(("floor", f"-0.6*{_RAMP} - 0.3", f"{_RAMP}*cos(alpha) + 0.3", ("s", "0", "0"), "ground"),),
         caption=(
             f"Side view: the fixed ramp at angle α on the floor, and the block on its slope with {TRAIL}. "
@@ -228,8 +233,13 @@ FAMILIES: dict[str, Family] = {
         anchors=(
             ("wedge foot", ("X + (1.15*Abs(qmax_D) + 0.5)*cos(alpha)", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)")),
             ("wedge corner", ("X", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)")),
+            # the floor pushes on the whole base; its resultant is drawn from the base's middle
+            ("wedge base", ("X + (1.15*Abs(qmax_D) + 0.5)*cos(alpha)/2", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)")),
         ),
+        applied=(("floor force on the wedge", "wedge base"),),
         solids=(("wedge", ("#0", "wedge foot", "wedge corner")),),
+        # the block rests on the wedge's slope, which falls to the right at alpha
+        blocks=((1, "-alpha"),),
         curves=(
             (
                 "floor",
@@ -303,15 +313,22 @@ def _inferred(
     dim: int,
     defaults: Mapping[str, float],
     proven: Sequence[Mapping[str, Any]],
+    potential: Any = None,
 ) -> Family:
-    """A system without a drawing of its own: its particles, with the rods and pivot their motion implies."""
+    """A system without a drawing of its own: its particles, with the rods, springs and pivot their motion implies."""
     axes = _moving_axes(particles, coordinates, dim)
     found = rods(particles, coordinates, defaults, proven)
     links = tuple(("pivot" if a is None else f"#{a}", f"#{b}", "rod?" if checked else "rod") for a, b, checked in found)
-    pivot = any(a is None for a, _, _ in found)
+    # a particle at distance r from the origin, with r squared in U (a spring's energy): a spring from a pivot
+    held = {b for a, b, _ in found if a is None}
+    coiled = [(j, q) for j, q in springs(particles, coordinates, defaults, potential) if j not in held]
+    links += tuple(("pivot", f"#{j}", "spring") for j, _ in coiled)
+    pivot = any(a is None for a, _, _ in found) or bool(coiled)
     what = "the particles as declared"
     if found:
         what += ", the rods that keep their distances fixed" + (" and the fixed pivot" if pivot else "")
+    if coiled:
+        what += f", the spring{'s' if len(coiled) > 1 else ''} from the fixed pivot (its length is {', '.join(q for _, q in coiled)})"
     view = "in three dimensions; drag the background to turn the view" if dim == 3 else _view_name(axes)
     return Family(
         dim=dim,
@@ -335,6 +352,7 @@ def mechanism(
     forces: Sequence[dict[str, Any]] = (),
     defaults: Mapping[str, float] | None = None,
     proven: Sequence[Mapping[str, Any]] = (),
+    potential: Any = None,
 ) -> dict[str, Any] | None:
     """The animation spec of a scene (None when its positions cannot be drawn).
 
@@ -347,7 +365,7 @@ def mechanism(
     if family is None and not particles:
         return MechanismSpec(dim=2, axis_names=[], caption=NO_PICTURE).as_json() | {"none": True}
     if family is None:
-        family = _inferred(particles, coordinates, 3 if three_d else 2, defaults or {}, proven)
+        family = _inferred(particles, coordinates, 3 if three_d else 2, defaults or {}, proven, potential)
     # a particle without a label is "mass k" (links refer to points by label)
     own = list(family.points) or [(name or f"mass {i + 1}", pos) for i, (name, pos) in enumerate(particles)]
     spec = MechanismSpec(
@@ -357,8 +375,12 @@ def mechanism(
         caption=family.caption,
     )
     try:
-        for name, pos in own:
-            spec.points.append({"label": name, "mass": True, "xyz": [of_text(pos[i]) for i in family.axes]})
+        tilt = dict(family.blocks)
+        for k, (name, pos) in enumerate(own):
+            point = {"label": name, "mass": True, "xyz": [of_text(pos[i]) for i in family.axes]}
+            if k in tilt:
+                point["block"] = of_text(tilt[k])
+            spec.points.append(point)
         for drawn, group in ((True, family.fixed), (False, family.anchors)):
             for name, pos in group:
                 point = {"label": name, "mass": False, "xyz": [of_text(pos[i]) for i in family.axes]}
@@ -388,6 +410,7 @@ def mechanism(
             spec.wheels.append({"at": index[centre], "radius": of_text(radius), "wrap": wrap})
     except TreeError:
         return None
+    where = dict(family.applied)
     for f in forces:
         k = int(f.get("particle", 1)) - 1
         direction = f.get("direction_trees")
@@ -396,7 +419,10 @@ def mechanism(
         arrow = [direction[i] for i in family.axes]
         if any(a is None for a in arrow):
             continue  # this force is left without an arrow
-        spec.forces.append({"name": f["name"], "on": k, "direction": arrow})
+        force = {"name": f["name"], "on": k, "direction": arrow}
+        if f["name"] in where and where[f["name"]] in index:
+            force["at"] = index[where[f["name"]]]
+        spec.forces.append(force)
     if not spec.points:
         return None
     return spec.as_json()

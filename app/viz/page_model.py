@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import json
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 from app.engine.names import latex, prose
@@ -22,6 +22,7 @@ from app.viz.exprtree import document_tree, leaves
 from app.viz.mechanism import mechanism
 from app.viz.names import label
 from app.viz.panels import Facts, oscillating_equilibria, shown, texts
+from app.viz.units import coordinate_units
 
 LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collapsed
 RTOLS = ("1e-3", "1e-4", "1e-6", "1e-8", "1e-10", "1e-12")
@@ -134,24 +135,31 @@ def _initial_controls(
     nonnegative: Sequence[str],
     angular: set[str],
     marks: dict[str, list[dict[str, Any]]] | None = None,
+    units: dict[str, str] | None = None,
+    events: Sequence[Mapping[str, Any]] = (),
 ) -> list[dict]:
     marks = marks or {}
+    units = units or {}
+    # a set-up that ends where a coordinate falls below zero (the block at the foot of its ramp) starts
+    # only where it holds: that coordinate's slider begins at 0
+    held = {e["expression"].strip() for e in events}
     lengths = [p["default"] for p in doc["parameters"].values() if p.get("unit") == "m" and p["default"] > 0]
     scale = max([1.0, *lengths])
     controls = []
     for q in doc["coordinates"]:
-        angle = q in angular
+        angle = q in angular or units.get(q) == "rad"
         value, rate = float(initial.get(q, 0.0)), float(initial.get(f"{q}_dot", 0.0))
         if angle:
             lo, hi = -math.pi, math.pi
             lo, hi = min(lo, value), max(hi, value)
         else:
             size = 3 * max(scale, abs(value))
-            lo, hi = (0.0 if q in nonnegative else -size), size
+            lo, hi = (0.0 if q in nonnegative or q in held else -size), size
         found = marks.get(f"{q}_dot", [])
         reach = max([abs(m["value"]) for m in found], default=0.0)
         vmax = max(10.0, 3 * abs(rate), 1.5 * reach) if angle else max(5.0, 3 * abs(rate), math.sqrt(9.81 * scale))
-        unit = "rad" if angle else "m"
+        unit = units.get(q, "rad" if angle else "m")
+        rate_unit = f"{unit}/s" if unit else "1/s"
         controls.append(
             {"name": q, "label": f"{label(q)}(0)", "latex": latex(q), "unit": unit,
              "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(value), "log": False,
@@ -159,8 +167,8 @@ def _initial_controls(
         )  # fmt: skip
         controls.append(
             {"name": f"{q}_dot", "label": f"{label(q + '_dot')}(0)", "latex": latex(f"{q}_dot"),
-             "unit": f"{unit}/s", "min": _fmt(-vmax), "max": _fmt(vmax), "value": _fmt(rate), "log": False,
-             "ticks": _marks(found, f"{unit}/s"),
+             "unit": rate_unit, "min": _fmt(-vmax), "max": _fmt(vmax), "value": _fmt(rate), "log": False,
+             "ticks": _marks(found, rate_unit),
              "description": f"initial rate of change of {label(q)}"}
         )  # fmt: skip
     return controls
@@ -240,9 +248,11 @@ def _reduction(doc: dict[str, Any]) -> dict[str, Any] | None:
     return out if all(x is not None for x in essential) else None
 
 
-def _client(doc, info, reduction, spec, methods, nonnegative, angular) -> dict[str, Any]:
+def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bool = True) -> dict[str, Any]:
     names = _names(doc)
-    units = {q: "rad" if q in angular else "m" for q in doc["coordinates"]}
+    # rad for an angle, m where the dimensions say so, nothing where they cannot tell (app/viz/units.py)
+    known = coordinate_units(doc, scene)
+    units = known["units"]
     conserved = [
         {"name": c["name"], "label": label(c["name"]), "tree": document_tree(c, names)}
         for c in doc.get("conserved", [])
@@ -252,8 +262,11 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular) -> dict[s
         "coordinates": doc["coordinates"],
         "labels": {n: label(n) for n in [*names, *(c["name"] for c in doc.get("conserved", []))] if n != "t"},
         "units": units,
+        "rate_units": known["rate_units"],
+        "momentum_units": known["momentum_units"],
         "nonnegative": list(nonnegative),
         "parameters": {k: v["default"] for k, v in doc["parameters"].items()},
+        "parameter_units": {k: v.get("unit", "") for k, v in doc["parameters"].items()},
         "initial": info.get("initial", {}),
         "t_end": info.get("t_end", 10.0),
         "panels": info["panels"],
@@ -331,13 +344,14 @@ def scene_page(
         forces=doc.get("constraint_forces") or (),
         defaults=defaults,
         proven=doc.get("fixed_distances") or (),
+        potential=document_tree(doc.get("potential")),
     )
     panels = _panels(declared, doc, reduction, spec, scene)
     # symbol names in the scene's prose as a reader writes them (m₁, x₂)
     info = {**info, "panels": panels, **{k: prose(info[k]) for k in ("statement", "figure", "summary") if info.get(k)}}
     angular = angles(doc)
     marks = ticks(doc, info.get("initial", {}))
-    client = _client(doc, info, reduction, spec, methods, nonnegative, angular)
+    client = _client(doc, info, reduction, spec, methods, nonnegative, angular, scene)
     return {
         "info": info,
         "declared_panels": declared,
@@ -361,7 +375,15 @@ def scene_page(
         "errata": [{**e, "reason": prose(e["reason"])} for e in doc.get("errata") or []],
         "transformed": _transformed(doc),
         "parameters": _parameter_controls(doc, marks),
-        "initial": _initial_controls(doc, info.get("initial", {}), nonnegative, angular, marks),
+        "initial": _initial_controls(
+            doc,
+            info.get("initial", {}),
+            nonnegative,
+            angular,
+            marks,
+            coordinate_units(doc, scene)["units"],
+            info.get("events", ()),
+        ),
         "t_end": {
             "value": _fmt(info.get("t_end", 10.0)),
             "min": "0.5",

@@ -180,7 +180,8 @@ PANELS: tuple[Panel, ...] = (
         "work-precision",
         "Error against run time",
         "Every method over a sweep of tolerances: the error of the final state against the run time (lower left is "
-        "better). The star is this run's own error estimate.",
+        "better), measured once for the scene's default parameters and initial state (it takes seconds, so it does "
+        "not follow the sliders). The star is this run's own error estimate.",
         "a chapter scene (its report is measured once per scene) whose motion is not a polynomial in t",
         # with constant accelerations every method of order two or more is exact: the chart would be noise
         lambda f: f.scene and not constant_accelerations(f.doc),

@@ -83,3 +83,54 @@ def rods(
             elif _numerically_fixed(a, b, envs):
                 out.append((i, j, True))
     return out
+
+
+def _squares_of(tree: Any) -> set[str]:
+    """Coordinates-or-names inside a base raised to the power 2 somewhere in a tree (a spring's (r - l)**2)."""
+    found: set[str] = set()
+    if isinstance(tree, list):
+        op, *args = tree
+        if op == "pow" and len(args) == 2 and args[1] == 2:
+            found |= leaves(args[0])
+        for a in args:
+            found |= _squares_of(a)
+    return found
+
+
+def springs(
+    particles: Sequence[tuple[str, Sequence[str]]],
+    coordinates: Sequence[str],
+    defaults: Mapping[str, float],
+    potential: Any,
+) -> list[tuple[int, str]]:
+    """(particle, coordinate) for each particle whose distance from the origin is a coordinate r that U holds
+    squared, as a spring's energy ½ k (r − l)² does: the particle hangs from a pivot at the origin on a spring.
+
+    |r_j|² = r² is checked at the same seeded random states as the rods."""
+    if potential is None:
+        return []
+    squared = _squares_of(potential) & set(coordinates)
+    positions = [_position(pos) for _, pos in particles]
+    rng = random.Random(20261124)
+    envs = []
+    for _ in range(SAMPLES):
+        env = {name: float(value) for name, value in defaults.items()}
+        env.update({q: rng.uniform(0.2, 2.0) for q in coordinates})
+        env["t"] = rng.uniform(0.0, 10.0)
+        envs.append(env)
+    out = []
+    for j, b in enumerate(positions):
+        if b is None:
+            continue
+        for q in sorted(squared):
+            try:
+                same = all(
+                    abs(sum(evaluate(t, env) ** 2 for t in b) - env[q] ** 2) <= TOLERANCE * max(1.0, env[q] ** 2)
+                    for env in envs
+                )
+            except (ArithmeticError, ValueError, KeyError, RecursionError, TypeError):
+                same = False
+            if same:
+                out.append((j, q))
+                break
+    return out

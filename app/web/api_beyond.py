@@ -20,6 +20,7 @@ from app.web.responses import FastJSONResponse
 from app.web.schemas import SESSION_COOKIE
 from app.web.schemas_beyond import (
     MeasuredModes,
+    ModesRequest,
     PoincareRequest,
     PoincareResponse,
     UserPoincareRequest,
@@ -34,11 +35,11 @@ POINCARE_TEXT = (
     "coordinate = value in the given direction; the points are (q, p) of the other coordinate. Needs two "
     "conservative degrees of freedom. Orbits start on the plane, spread across its accessible part."
 )
-MODES_TEXT = (
-    "For each equilibrium at rest with an oscillating mode: every mode's predicted ω = √ω² beside the ω measured "
-    "from a simulation started at the equilibrium displaced along the mode by a small amplitude (default "
-    "parameters)."
+MODES_CORE = (
+    "For each equilibrium at rest with an oscillating mode: every mode's predicted ω = √ω² and shape beside the ω "
+    "measured from a simulation started at the equilibrium displaced along the mode by a small amplitude"
 )
+MODES_TEXT = MODES_CORE + " (default parameters)."
 
 
 @router.post(
@@ -62,6 +63,21 @@ def scene_poincare(scene_id: str, request: PoincareRequest, gates: GatesDep) -> 
 )
 def scene_modes(scene_id: str, gates: GatesDep) -> Any:
     return FastJSONResponse(modes.measure_scene(scene_id, gates))
+
+
+@router.post(
+    "/scenes/{scene_id}/modes-at",
+    summary="A scene's normal modes at given parameter values, predicted against measured",
+    description=MODES_CORE
+    + ", at the parameter values given (each missing one at the scene's default): the equilibria and M, K follow "
+    "them from the engine's closed forms. An equilibrium the engine found only numerically is given at the "
+    "defaults alone, with at_defaults true.",
+    response_model=list[MeasuredModes],
+    responses={**ERRORS, **BODY_ERRORS},
+)
+def scene_modes_at(scene_id: str, request: ModesRequest, gates: GatesDep) -> Any:
+    # a value out of range or an unknown name (SimulationError) is answered by app/web/errors.py
+    return FastJSONResponse(modes.modes_at(scene_id, request.parameters, gates))
 
 
 @router.post(

@@ -146,10 +146,32 @@ def positive_by_nature(name: str, unit: str) -> bool:
     return unit.strip() in POSITIVE_UNITS if unit.strip() else bool(POSITIVE_NAMES.fullmatch(name.strip()))
 
 
+def _where(loc: tuple) -> str:
+    """A refusal's place in the form's own words: ("parameters", 0, "name") -> "parameter 1, name"."""
+    words = {"parameters": "parameter", "particles": "particle", "coordinates": "coordinate", "forces": "force on"}
+    out: list[str] = []
+    for x in loc:
+        if isinstance(x, int) and out:
+            out[-1] = f"{out[-1]} {x + 1}"
+        else:
+            out.append(words.get(str(x), excerpt(x)))
+    return ", ".join(out)
+
+
 def spec_of(form: Form) -> dict[str, Any]:
-    """The API request for what was typed (validated with the API's model)."""
+    """The API request for what was typed (validated with the API's model).
+
+    What the form itself can tell (no coordinate, a parameter without a name or a value) is said in
+    its own words at the field; a blank value is never filled in silently."""
+    if not _names(form.coordinates):
+        raise FormError("add at least one coordinate (for example theta, or x, y)", "f-coordinates", form.coordinates)
     parameters = []
     for i, p in enumerate(form.parameters):
+        if not p.get("name", "").strip():
+            raise FormError(f"parameter {i + 1}: a name is needed", f"f-param-{i}-name")
+        if not p.get("value", "").strip():
+            name = p["name"].strip()
+            raise FormError(f"parameter {i + 1} ({excerpt(name)}): a value is needed", f"f-param-{i}-value")
         entry: dict[str, Any] = {"name": p.get("name", ""), "unit": p.get("unit", "")}
         for key, what in (("value", "value"), ("min", "lowest value"), ("max", "highest value")):
             number = _number(p.get(key, ""), f"f-param-{i}-{key}", f"parameter {p.get('name') or i + 1}, {what}")
@@ -180,8 +202,8 @@ def spec_of(form: Form) -> dict[str, Any]:
         first = exc.errors()[0]
         # a parameter is a name or an object: drop the union member from the location
         loc = tuple(x for x in first["loc"] if x not in ("ParameterSpec", "str"))
-        where = ".".join(excerpt(x) for x in loc)
-        raise located_error(form, loc, f"{where}: {first['msg']}") from None
+        message = str(first["msg"]).removeprefix("Value error, ")
+        raise located_error(form, loc, f"{_where(loc)}: {message}" if loc else message) from None
 
 
 def field_id(form: Form, loc: tuple) -> str:

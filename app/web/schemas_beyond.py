@@ -60,8 +60,17 @@ class PoincareResponse(BaseModel):
     stats: dict[str, Any]
 
 
+class ModesRequest(BaseModel):
+    """The parameter values the modes are wanted at (the rest at the scene's defaults)."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, json_schema_extra={"example": {"parameters": {"kappa": 0.1}}})
+
+    parameters: Values = Field(default_factory=dict, description="Parameter values by name (default: the scene's).")
+
+
 class MeasuredMode(BaseModel):
     omega_squared: float
+    shape: dict[str, float] = Field(description="The mode's shape, by coordinate, its largest component 1.")
     predicted: float | None = Field(description="√ω² where ω² > 0.")
     measured: float | None = Field(description="ω from a small-amplitude run started along the mode.")
     relative_difference: float | None
@@ -71,6 +80,10 @@ class MeasuredMode(BaseModel):
 class MeasuredModes(BaseModel):
     equilibrium: dict[str, float]
     kind: str
+    parameters: dict[str, float] = Field(description="The parameter values these modes were computed at.")
+    at_defaults: bool = Field(
+        False, description="Found only numerically at the default parameters, so it does not follow other values."
+    )
     modes: list[MeasuredMode]
 
 

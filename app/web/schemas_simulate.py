@@ -56,8 +56,9 @@ class SimulateRequest(BaseModel):
     )
     precision: Precision = Field(
         "full",
-        description="'full': every float as computed; 'display': the series rounded to 7 significant digits "
-        "(what a plot needs; about half the bytes), stats unchanged.",
+        description="'full': every float as computed; 'display': the state and constraint forces rounded to 7 "
+        "significant digits (what a plot needs; fewer bytes); energy, h, conserved momenta and stats unchanged "
+        "(their changes since t = 0 are plotted).",
     )
 
 
@@ -102,6 +103,18 @@ class BrowserPreview(BaseModel):
     parameters: list[str] = Field(description="The order of the parameters in k")
 
 
+class Trust(BaseModel):
+    """Whether the run's error estimate is small against the motion (app/service/trust.py)."""
+
+    trusted: bool | None = Field(
+        description="False when the estimated error is 5 % or more of the range of some coordinate over the run "
+        "(the motion shown is not reliable); null when the run has no error estimate."
+    )
+    ratio: float | None = Field(description="The worst estimated error / range of motion over the coordinates.")
+    coordinate: str | None = Field(description="The coordinate where that ratio is worst.")
+    message: str | None = Field(description="A plain-language warning when not trusted, else null.")
+
+
 class SimulateResponse(BaseModel):
     t: list[float]
     state: dict[str, list[float | None]]
@@ -110,6 +123,7 @@ class SimulateResponse(BaseModel):
     conserved: dict[str, list[float | None]]
     constraint_forces: dict[str, list[float | None]]
     stats: SimulateStats
+    trust: Trust
     preview: BrowserPreview | None = None
 
 

@@ -70,6 +70,7 @@ export class Player {
     this.dim = spec.dim;
     this.view = { yaw: -0.6, pitch: 0.35 }; // 3-D only
     this.points = spec.points.map((p) => p.xyz.map(compile));
+    this.tilts = spec.points.map((p) => (p.block ? compile(p.block) : null)); // blocks: the slope they rest on
     this.masses = spec.points.map((p, i) => (p.mass ? i : -1)).filter((i) => i >= 0);
     this.fixed = spec.points.map((p, i) => (p.mass || p.hidden ? -1 : i)).filter((i) => i >= 0);
     this.wheels = (spec.wheels || []).map((w) => ({ ...w, r: compile(w.radius) }));
@@ -328,16 +329,25 @@ export class Player {
           for (let f = 0; f <= 1; f += 0.125) if (inside(ax + (bx - ax) * f, ay + (by - ay) * f)) { c += 1; break; }
         }
         for (const [bx, by] of placed) if (inside(bx, by) || inside(bx - 10 * dpr, by) || inside(bx + 10 * dpr, by)) c += 2;
+        // labels already placed, and the velocity handle (drawn at the first instant), weigh most
+        for (const [a0, b0, a1, b1] of boxes) if (x0 < a1 && x1 > a0 && y0 < b1 && y1 > b0) c += 5;
+        if (grip) {
+          const r = (HANDLE_RADIUS + 2) * dpr;
+          if (grip.x + r > x0 && grip.x - r < x1 && grip.y + r > y0 && grip.y - r < y1) c += 4;
+        }
         return c;
       };
+      const boxes = [];
+      const grip = i === 0 ? this.handle() : null;
       this.masses.forEach((p, k) => {
         const [x, y] = placed[k], label = this.spec.points[p].label, w = ctx.measureText(label).width, h = 13 * dpr;
         let best = null;
         for (const [sx, sy] of [[1, -1], [-1, -1], [1, 1], [-1, 1]]) {
           const lx = x + sx * 14 * dpr, ly = y + (sy < 0 ? -12 : 22) * dpr;
           const x0 = sx > 0 ? lx : lx - w, c = cost(x0, ly - h, x0 + w, ly + 3 * dpr);
-          if (!best || c < best.c) best = { c, lx, ly, align: sx > 0 ? "left" : "right" };
+          if (!best || c < best.c) best = { c, lx, ly, align: sx > 0 ? "left" : "right", box: [x0, ly - h, x0 + w, ly + 3 * dpr] };
         }
+        boxes.push(best.box);
         ctx.textAlign = best.align;
         ctx.strokeStyle = "#fff"; ctx.lineWidth = 4 * dpr;
         ctx.strokeText(label, best.lx, best.ly);
@@ -352,7 +362,18 @@ export class Player {
       ctx.fillStyle = MASS_COLORS[k % MASS_COLORS.length];
       ctx.strokeStyle = selected ? "#ffbf47" : "#1b1f24";
       ctx.lineWidth = (selected ? 4 : 1.5) * dpr;
-      ctx.beginPath(); ctx.arc(x, y, 10 * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      const tilt = this.tilts[p];
+      if (tilt) {
+        // a block: a rectangle whose base lies on its slope, the particle at the middle of the base
+        const a = tilt(run.envAt(i)), W = 15 * dpr, H = 18 * dpr;
+        const dx = Math.cos(a), dy = -Math.sin(a), nx = -Math.sin(a), ny = -Math.cos(a); // along, and up from, the slope on screen
+        ctx.beginPath();
+        ctx.moveTo(x - W * dx, y - W * dy); ctx.lineTo(x + W * dx, y + W * dy);
+        ctx.lineTo(x + W * dx + H * nx, y + W * dy + H * ny); ctx.lineTo(x - W * dx + H * nx, y - W * dy + H * ny);
+        ctx.closePath(); ctx.fill(); ctx.stroke();
+      } else {
+        ctx.beginPath(); ctx.arc(x, y, 10 * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      }
       bodies.push({ label: this.spec.points[p].label, x: Math.round(x / dpr), y: Math.round(y / dpr) });
     });
     if (this.showForces?.checked) drawn.forces = this.drawForces(ctx, i, dpr);
@@ -413,7 +434,8 @@ export class Player {
     list.forEach((f, j) => {
       const value = f.values[i];
       if (!Number.isFinite(value)) return;
-      const p = this.masses[f.on], a = this.xyz[p];
+      // from its point of application where the spec names one (the middle of the wedge's base), else its body
+      const p = Number.isInteger(f.at) ? f.at : this.masses[f.on], a = this.xyz[p];
       const r = a.map((col) => col[i]), d = f.dir.map((g) => g(env));
       // the arrow is the vector F (grad g / |grad g|) drawn at perNewton screen pixels per newton
       // (a negative F points against grad g); in 3-D it is projected like everything else
@@ -802,22 +824,37 @@ export class Player {
       }
       const keys = { ArrowRight: [0, 1], ArrowUp: [1, 1], ArrowLeft: [0, -1], ArrowDown: [1, -1] };
       if (!(e.key in keys)) return;
-      // Shift: the body's initial rates instead of its initial coordinates
-      const names = e.shiftKey
-        ? this.rateNames(this.selected)
-        : (this.ownersOf[this.selected] || []).filter((q) => this.controls && this.controls(q));
+      e.preventDefault();
+      if (!e.shiftKey) {
+        // the body moves the way the arrow points on screen: the initial coordinates that bring it
+        // nearest a point a few pixels that way (along its constraint, if it has one)
+        const names = (this.ownersOf[this.selected] || []).filter((q) => this.controls && this.controls(q));
+        if (!names.length) return;
+        const now = Object.fromEntries(names.map((q) => [q, this.controls(q).value]));
+        const [px, py] = this.placed(this.selected, now);
+        const dx = { ArrowRight: 1, ArrowLeft: -1 }[e.key] || 0, dy = { ArrowDown: 1, ArrowUp: -1 }[e.key] || 0;
+        const PIXELS = 6;
+        const values = this.solve(this.selected, px + PIXELS * dx, py + PIXELS * dy);
+        const moved = values && names.filter((q) => Math.abs(values[q] - now[q]) > 1e-9 * Math.max(1, Math.abs(now[q])));
+        if (!moved || !moved.length) { this.say("This body cannot move that way from here; try another arrow."); return; }
+        this.pause();
+        if (this.index !== 0) this.seek(0);
+        this.onDrag(Object.fromEntries(moved.map((q) => [q, values[q]])));
+        this.say(moved.map((q) => `${this.run.data.labels[q] || q} starts at ${Number(values[q].toPrecision(4))}`).join(", "));
+        return;
+      }
+      // Shift: the body's initial rates, Right/Left the first, Up/Down the second (or the first if it has one)
+      const names = this.rateNames(this.selected);
       if (!names.length) return;
-      // Right/Left change the body's first coordinate (or rate), Up/Down its second (or the first if it has one)
       const [which, sign] = keys[e.key];
       const q = names[Math.min(which, names.length - 1)];
       const r = this.controls(q);
-      const step = (r.max - r.min) / 100;
+      const step = (r.max - r.min) / 200;
       const value = Math.min(r.max, Math.max(r.min, r.value + sign * step));
       this.pause();
       if (this.index !== 0) this.seek(0);
       this.onDrag({ [q]: value });
       this.say(`${this.run.data.labels[q] || q} starts at ${Number(value.toPrecision(4))}`);
-      e.preventDefault();
     });
   }
 

@@ -23,11 +23,12 @@
  * field takes any allowed value), on a log scale when that range spans decades; on a log
  * slider whose allowed range starts at 0 the first position is 0 itself.  Its aria-valuetext
  * always reads the real value with its unit.  Marks (a <datalist>, e.g. critical damping) sit
- * at their values.  Arrow keys move a slider by 1/50 of its range, Page Up/Down by 1/10.
+ * at their values.  Arrow keys move a slider by 1/200 of its range (Shift with them: 1/20), Page Up/Down by 1/10.
  */
 
 const STEPS = 1000;
-const ARROW = STEPS / 50, PAGE = STEPS / 10;
+// an arrow key is a fine step (1/200 of the range), Shift with it a coarse one (1/20), Page Up/Down 1/10
+const ARROW = STEPS / 200, COARSE = STEPS / 20, PAGE = STEPS / 10;
 
 function sliderRange(ctl) {
   const lo = Number(ctl.dataset.sliderMin ?? ctl.dataset.min), hi = Number(ctl.dataset.sliderMax ?? ctl.dataset.max);
@@ -52,7 +53,8 @@ function toSlider(ctl, value) {
 /** Arrow keys step a slider by a sensible share of its range, not by one of its 1000 positions. */
 function stepKeys(ctl, range) {
   range.addEventListener("keydown", (event) => {
-    const by = { ArrowRight: ARROW, ArrowUp: ARROW, ArrowLeft: -ARROW, ArrowDown: -ARROW, PageUp: PAGE, PageDown: -PAGE }[event.key];
+    const arrow = event.shiftKey ? COARSE : ARROW;
+    const by = { ArrowRight: arrow, ArrowUp: arrow, ArrowLeft: -arrow, ArrowDown: -arrow, PageUp: PAGE, PageDown: -PAGE }[event.key];
     if (by === undefined) return;
     event.preventDefault();
     range.value = String(Math.min(STEPS, Math.max(0, Number(range.value) + by)));

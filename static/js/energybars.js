@@ -6,10 +6,11 @@
  *   bars.set(i);      // the values at sample i (a few style writes: cheap enough for every frame)
  *
  * Every bar starts at zero on one shared axis, so a negative U points left and the bars of
- * T and U add up to the bar of E.  Each row carries its value as text.
+ * T and U add up to the bar of E.  Each row carries its value as text; a value within the run's
+ * energy resolution (simulation.js prepareRun) reads "≈ 0 J", not digits of rounding noise.
  */
 import { COLORS } from "./plotkit.js";
-import { fmt } from "./summaries.js";
+import { fmtResolved } from "./summaries.js";
 
 export class EnergyBars {
   constructor(container) {
@@ -26,6 +27,7 @@ export class EnergyBars {
     for (const r of rows) for (const v of r.values) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
     this.lo = lo; this.span = Math.max(hi - lo, 1e-300);
     this.rows = rows;
+    this.resolution = run.resolution; // below it an energy reads "≈ 0" (within the run's error)
     const zero = (100 * -lo) / this.span;
     this.container.replaceChildren(...rows.map((r) => {
       const row = document.createElement("div");
@@ -49,7 +51,7 @@ export class EnergyBars {
       const a = (100 * (Math.min(0, v) - this.lo)) / this.span, w = (100 * Math.abs(v)) / this.span;
       r.fill.style.left = `${a}%`;
       r.fill.style.width = `${w}%`;
-      r.text.textContent = `${fmt(v)} J`;
+      r.text.textContent = `${fmtResolved(v, this.resolution)} J`;
     }
   }
 }

@@ -5,14 +5,19 @@
  *   new ModesPanel(section, data, urls)   the plots.js interface: draw(run), cursor(i, run)
  *
  * data.normal_modes: equilibria at rest with an oscillating mode (app/viz/panels.py), numbers at the
- * default parameters.  Near the equilibrium q0 the linear motion started at rest is
+ * default parameters, shown until the server answers for the run's parameters.  Near the
+ * equilibrium q0 the linear motion started at rest is
  *
  *     q(t) = q0 + Σ_k A_k a_k cos(ω_k t)
  *
  * with a_k the mode's shape (largest component 1), ω_k = √ω²_k and A_k the amplitude the student
  * sets.  Modes with ω² ≤ 0 (a free drift, or growth at an unstable equilibrium) are listed, not played.
- * urls.modes() resolves to the server's measurement (GET /api/scenes/{id}/modes or POST /api/modes):
- * ω measured from a small-amplitude simulation along each mode.
+ * urls.modes(parameters) resolves to the server's modes at those parameter values, each mode with ω
+ * measured from a small-amplitude simulation along it (POST /api/scenes/{id}/modes-at; the playground's
+ * POST /api/modes answers at the declared values only, which urls.modesFollow = false says).  The
+ * panel asks again after every server run whose parameters differ from the last answer's (the
+ * simulation's own debounce paces it); a preview greys it until then, and the readout names the
+ * parameter values the modes shown were computed at.
  */
 import { Player } from "./animation.js";
 import { fmt, table } from "./summaries.js";
@@ -27,8 +32,9 @@ export class ModesPanel {
 
   constructor(section, data, urls = {}) {
     this.section = section; this.data = data; this.urls = urls;
-    this.preview = true;
+    this.preview = false; // the modes belong to the server's answer at the run's parameters
     this.equilibria = data.normal_modes || [];
+    this.computedAt = { ...data.parameters }; // the page's numbers are at the defaults
     this.which = 0;
     this.choice = section.querySelector(".mode-choice");
     this.freq = section.querySelector(".frequencies");
@@ -37,7 +43,7 @@ export class ModesPanel {
     this.build();
   }
 
-  unit(q) { return this.data.units[q] || "m"; }
+  unit(q) { return this.data.units[q] || ""; }
 
   /** The equilibrium picker, then one row per mode: a checkbox and an amplitude slider. */
   build() {
@@ -56,6 +62,7 @@ export class ModesPanel {
       rows.push(div);
     }
     const e = this.equilibria[this.which];
+    const before = (this.inputs || []).map((x) => ({ checked: x.box.checked, value: x.amp.value }));
     this.inputs = [];
     (e ? e.modes : []).forEach((m, k) => {
       const row = document.createElement("div");
@@ -72,6 +79,7 @@ export class ModesPanel {
       });
       amp.setAttribute("aria-label", `Amplitude of mode ${k + 1} (${u})`);
       const out = Object.assign(document.createElement("output"), { htmlFor: amp.id, textContent: `${amp.value} ${u}` });
+      if (before[k] && m.omega_squared > 0) { box.checked = before[k].checked; amp.value = before[k].value; out.textContent = `${amp.value} ${u}`; }
       if (!(m.omega_squared > 0)) { box.disabled = true; amp.disabled = true; }
       const changed = () => { out.textContent = `${amp.value} ${u}`; this.play(); };
       box.addEventListener("change", changed);
@@ -80,8 +88,20 @@ export class ModesPanel {
       rows.push(row);
       this.inputs.push({ box, amp, mode: m });
     });
+    if (!e) {
+      const none = document.createElement("p");
+      none.textContent = `At ${this.values()} no equilibrium at rest has a mode that oscillates (every equilibrium is unstable, or there is none).`;
+      rows.push(none);
+    }
     const legend = this.choice.querySelector("legend");
     this.choice.replaceChildren(legend, ...rows);
+  }
+
+  /** "m = 1 kg, k = 10 N/m, κ = 0.1 N/m": the parameter values the modes shown were computed at. */
+  values() {
+    const units = this.data.parameter_units || {};
+    const list = Object.entries(this.computedAt).map(([p, v]) => `${this.data.labels[p] || p} = ${fmt(v)}${units[p] ? ` ${units[p]}` : ""}`);
+    return list.length ? list.join(", ") : "the declared values";
   }
 
   where(e) {
@@ -137,7 +157,7 @@ export class ModesPanel {
     };
     const run = { data, request: {}, n: t.length, t, params, state, extent, envAt, momenta: {}, forces: {}, stats: {} };
     this.readout.textContent = picked.length
-      ? `Playing ${picked.length === 1 ? "mode" : "modes"} ${this.section.dataset.modes} about ${this.where(this.equilibria[this.which])} (default parameters, linear motion).`
+      ? `Playing ${picked.length === 1 ? "mode" : "modes"} ${this.section.dataset.modes} about ${this.where(this.equilibria[this.which])}, computed at ${this.values()}${this.note || ""} (linear motion).`
         + (picked.length > 1 ? " Each mode keeps its own frequency, so the shape of the motion changes as they drift in and out of step." : "")
       : "Tick a mode (with an amplitude above 0) to play it.";
     if (!this.player) return;
@@ -145,35 +165,70 @@ export class ModesPanel {
     if (picked.length) this.player.play(); else this.player.pause();
   }
 
-  async measure() {
+  /** Ask the server for the modes at these parameter values; the latest request wins. */
+  async measure(params) {
     if (!this.urls.modes) return;
+    const mine = (this.asked = (this.asked || 0) + 1);
+    this.section.setAttribute("aria-busy", "true");
+    let answer;
     try {
-      this.measured = await this.urls.modes();
+      answer = await this.urls.modes(params);
     } catch (err) {
+      if (mine !== this.asked) return;
       this.measured = null;
-      this.freq.textContent = `The measured frequencies could not be fetched: ${err.message}`;
+      this.section.setAttribute("aria-busy", "false");
+      this.freq.textContent = `The modes at these parameter values could not be computed: ${err.message}. Shown: the modes at ${this.values()}.`;
       return;
     }
+    if (mine !== this.asked) return;
+    this.section.setAttribute("aria-busy", "false");
+    this.measured = answer;
+    const follows = this.urls.modesFollow !== false;
+    if (follows) {
+      // the server's equilibria and modes at the run's parameters replace the page's (at the defaults)
+      const shown = this.equilibria[this.which];
+      this.equilibria = answer.map((x) => ({ ...x, stable: x.kind !== "unstable", momenta: {} }));
+      this.computedAt = answer[0]?.parameters || { ...params };
+      const same = shown ? this.equilibria.findIndex((x) => this.near(x, shown)) : -1;
+      this.which = same >= 0 ? same : 0;
+      this.note = answer.some((x) => x.at_defaults) ? " (found numerically at the default parameters only)" : "";
+      this.build();
+      this.play();
+    } else {
+      this.computedAt = answer[0]?.parameters || this.computedAt;
+      const differ = Object.entries(params).some(([p, v]) => this.computedAt[p] !== undefined && Math.abs(this.computedAt[p] - v) > 1e-12 * Math.max(1, Math.abs(v)));
+      this.note = differ ? "; the sliders' values differ: apply them to the declaration to recompute the modes" : "";
+      this.play();
+    }
+    this.section.dataset.computedAt = JSON.stringify(this.computedAt);
     this.table();
+  }
+
+  near(a, b) {
+    return Object.entries(b.equilibrium).every(([q, v]) => Math.abs((a.equilibrium[q] ?? 0) - v) < 1e-9 * Math.max(1, Math.abs(v)));
   }
 
   table() {
     const e = this.equilibria[this.which];
-    const m = this.measured && e && this.measured.find((x) => Object.entries(e.equilibrium).every(([q, v]) => Math.abs((x.equilibrium[q] ?? 0) - v) < 1e-9));
-    if (!m) return;
+    const m = this.measured && e && this.measured.find((x) => this.near(x, e));
+    if (!m) { this.freq.replaceChildren(); return; }
     // a difference below 0.001 % is rounding and integration error, not physics: say so instead of printing it
     const percent = (x) => (Math.abs(x) < 1e-5 ? "< 0.001 %" : `${fmt(100 * x)} %`);
-    table(this.freq, `ω in rad/s: predicted, and measured in a run along each mode (amplitude ${fmt(m.modes[0]?.amplitude)})`,
+    table(this.freq, `ω in rad/s at ${this.values()}: predicted, and measured in a run along each mode (amplitude ${fmt(m.modes[0]?.amplitude)})`,
       ["mode", "predicted", "measured", "difference"],
       m.modes.map((x, k) => [`${k + 1}`, x.predicted === null ? `ω² = ${fmt(x.omega_squared)}` : fmt(x.predicted), x.measured === null ? "–" : fmt(x.measured),
         x.relative_difference === null ? "–" : percent(x.relative_difference)]));
     this.freq.dataset.measured = JSON.stringify(m.modes.map((x) => [x.predicted, x.measured]));
   }
 
-  draw() {
-    // the modes are the engine's, at the default parameters: a new run of the scene leaves them as they are;
-    // the measurement is asked for after the first run has been drawn (a playground session runs one job at a time)
-    if (!this.started) { this.started = true; this.play(); this.measure(); }
+  draw(run) {
+    // a server run at parameter values the modes were not computed for asks for them again (after the
+    // run has been drawn: a playground session runs one job at a time)
+    if (!this.started) { this.started = true; this.play(); }
+    const params = {};
+    for (const p of Object.keys(this.data.parameters)) params[p] = run.params[p];
+    const key = JSON.stringify(params);
+    if (key !== this.key) { this.key = key; this.measure(params); }
   }
 
   cursor() {}

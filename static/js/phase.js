@@ -14,7 +14,7 @@
  * the panel shows the chosen coordinate's trajectory alone.
  */
 import { compile } from "./expr.js";
-import { axis, COLORS, finite, layout, Overlay, parts, react } from "./plotkit.js";
+import { axis, COLORS, finite, layout, Overlay, parts, rateUnit, react, titled } from "./plotkit.js";
 import { reduced } from "./reduction.js";
 import { fmt, seriesTable } from "./summaries.js";
 
@@ -150,7 +150,7 @@ export class PhasePanel {
     this.angle = angle; this.r = q;
     const lq = run.data.labels[q], unit = run.data.units[q];
     react(this, [{ type: "scatter", mode: "lines", x: path.x, y: path.v, name: "this run", line: { color: COLORS.T, width: 1.5 } }],
-      layout({ hovermode: "closest", xaxis: axis(`${lq} (${unit})`, angle ? { range: [-Math.PI, Math.PI] } : {}), yaxis: axis(`${run.data.labels[q + "_dot"]} (${unit}/s)`) }));
+      layout({ hovermode: "closest", xaxis: axis(titled(lq, unit), angle ? { range: [-Math.PI, Math.PI] } : {}), yaxis: axis(titled(run.data.labels[q + "_dot"], rateUnit(run.data, q))) }));
     this.section.dataset.separatrix = "";
     this.readout.textContent = `${lq} against its rate (level sets of H need one degree of freedom or a reduction to one; `
       + `here every coordinate matters).${angle ? " The angle is shown in (−π, π]." : ""}`;
@@ -184,8 +184,8 @@ export class PhasePanel {
     const lr = run.data.labels[r], unit = run.data.units[r];
     react(this, traces, layout({
       hovermode: "closest",
-      xaxis: axis(`${lr} (${unit})`, { range: [lo, hi], ...(m.turn ? { tickvals: [-Math.PI, -Math.PI / 2, 0, Math.PI / 2, Math.PI], ticktext: ["−π", "−π/2", "0", "π/2", "π"] } : {}) }),
-      yaxis: axis(`${run.data.labels[r + "_dot"]} (${unit}/s)`, { range: [-vmax, vmax] }),
+      xaxis: axis(titled(lr, unit), { range: [lo, hi], ...(m.turn ? { tickvals: [-Math.PI, -Math.PI / 2, 0, Math.PI / 2, Math.PI], ticktext: ["−π", "−π/2", "0", "π/2", "π"] } : {}) }),
+      yaxis: axis(titled(run.data.labels[r + "_dot"], rateUnit(run.data, r)), { range: [-vmax, vmax] }),
     }));
     this.equilibria = found;
     this.section.dataset.separatrix = Es === null ? "" : String(Es);

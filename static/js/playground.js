@@ -17,10 +17,12 @@
 import { foldSteps, printReady, whenTypeset } from "./derivation.js";
 import { fetchJson } from "./api.js";
 import { connectSimulation } from "./simulation.js";
+import { keyboardScroll } from "./scrollboxes.js";
 
 foldSteps(document);
 printReady();
 whenTypeset(document);
+keyboardScroll(document);
 
 // ---- the system form -----------------------------------------------------------------------
 
@@ -141,6 +143,7 @@ if (root && dataNode) {
       // the modes are the declared system's (its parameter values); a section is at the run's values.
       // One at a time: the worker pool runs one job per session.
       modes: () => oneAtATime(() => fetchJson(root.dataset.modesUrl, system)),
+      modesFollow: false,
       poincare: ({ parameters, initial }) => oneAtATime(() =>
         fetchJson(root.dataset.poincareUrl, { ...system, parameters: body({ parameters }).parameters, initial })),
     },

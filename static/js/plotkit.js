@@ -37,10 +37,15 @@ export function layout(extra = {}) {
  * Plotly's default SI prefixes ("1p" would read as a pico-unit).
  */
 export const AXIS_FORMAT = { exponentformat: "power", showexponent: "all", separatethousands: false };
-export const axis = (text, extra = {}) => ({ title: { text }, gridcolor: "#e6e8eb", zerolinecolor: "#b8bec5", ...AXIS_FORMAT, ...extra });
+// automargin with a standoff keeps the title clear of the tick labels, however wide they are (10⁻⁹ on a phone)
+export const axis = (text, extra = {}) => ({ title: { text, standoff: 6 }, automargin: true, gridcolor: "#e6e8eb", zerolinecolor: "#b8bec5", ...AXIS_FORMAT, ...extra });
 
 /** The SI unit of the generalized momentum of a coordinate measured in `unit` (rad or m). */
 export const momentumUnit = (unit) => (unit === "rad" ? "kg·m²/s" : unit === "m" ? "kg·m/s" : "SI units");
+/** "x (m)", or "x" alone where the unit is not known (never a wrong unit; app/viz/units.py). */
+export const titled = (name, unit) => (unit ? `${name} (${unit})` : name);
+/** The unit of a coordinate's rate: the page's rate_units, else from its unit. */
+export const rateUnit = (data, q) => (data.rate_units && data.rate_units[q]) || (data.units[q] ? `${data.units[q]}/s` : "1/s");
 export const line = (x, y, name, color, dash = "solid") => ({ type: "scatter", mode: "lines", x, y, name, line: { color, width: 2, dash } });
 export const diff = (arr) => Array.from(arr, (v) => v - arr[0]);
 export const finite = (arr) => Array.from(arr).filter((v) => Number.isFinite(v));

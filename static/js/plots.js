@@ -56,11 +56,12 @@ class EnergyPanel extends TimePanel {
     this.drawSeries(run, top, bottom, "energy (J)", "change (J)");
     // relative to the run's energy scale (E itself may be zero, as when U is measured from the start)
     const scale = Math.max(...finite([...run.energy, ...(run.T || []), ...(run.U || [])]).map(Math.abs), 1e-300);
-    const rel = (d) => Math.max(...finite(d).map(Math.abs)) / scale;
     let what = { true: "h = E here.", false: "h and E differ here." }[run.data.h_equals_e]
       ?? "Only L was given, so E cannot be told apart from h: the curve labelled E is h.";
     if (run.data.forced) what += " A non-conservative generalized force acts, so the change is physical, not numerical.";
-    this.readout.textContent = `Largest change since t = 0, relative to the energy scale ${fmt(scale)} J: E by ${fmt(rel(dE))}, h by ${fmt(rel(dh))}. ${what}`;
+    // a change within the run's energy resolution is the integration's error, not a number to read
+    const change = (d) => { const big = Math.max(...finite(d).map(Math.abs)); return big <= run.resolution ? "≈ 0 (within the error)" : fmt(big / scale); };
+    this.readout.textContent = `Largest change since t = 0, relative to the energy scale ${fmt(scale)} J: E by ${change(dE)}, h by ${change(dh)}. ${what}`;
     seriesTable(this.summary, "Energies over the run (J)", run.t, [...top, ...bottom]);
   }
 }
@@ -87,7 +88,7 @@ class MomentaPanel extends TimePanel {
     const drift = Math.max(...finite(bottom.flatMap((s) => Array.from(s.values))).map(Math.abs), 0);
     const lo = Math.min(...all), hi = Math.max(...all);
     const pad = Math.max(0.05 * Math.max(Math.abs(lo), Math.abs(hi)), 5 * drift, 1e-12);
-    const units = [...new Set(names.map((n) => momentumUnit(run.data.units[n.slice(2)])))];
+    const units = [...new Set(names.map((n) => (run.data.momentum_units && run.data.momentum_units[n.slice(2)]) || momentumUnit(run.data.units[n.slice(2)])))];
     const unit = units.length === 1 ? units[0] : "SI units";
     this.drawSeries(run, top, bottom, `momentum (${unit})`, `change (${unit})`, { yaxis: { range: [lo - pad, hi + pad] } });
     this.readout.textContent = top.map((s, k) => `${s.name} stays at ${fmt(s.values[0])} within ${fmt(Math.max(...finite(bottom[k].values).map(Math.abs)))}.`).join(" ");
@@ -197,7 +198,9 @@ class WorkPrecisionPanel {
     }
     Plotly.react(this.plot, traces, layout({ hovermode: "closest", height: 360, xaxis: axis("run time (s)", { type: "log" }), yaxis: axis(`error at t_end (${errorUnit(run.data)})`, { type: "log" }) }), CONFIG);
     if (this.run !== run) return; // a newer run is being drawn
-    this.readout.textContent = `${here} Reference: ${report.reference}`;
+    const moved = Object.entries(run.data.parameters).filter(([p, v]) => run.params[p] !== v).map(([p, v]) => `${run.data.labels[p] || p} = ${fmt(v)}`);
+    const at = moved.length ? ` The chart is for the default values (${moved.join(", ")}), not this run's; the star is this run.` : "";
+    this.readout.textContent = `${here} Reference: ${report.reference}${at}`;
     table(this.summary, "Error against run time", ["method", "rtol", "error", "run time (s)", "rhs evaluations"],
       report.runs.map((r) => [r.method, String(r.rtol), r.error, r.wall_time_s, String(r.rhs_evaluations ?? "–")]));
     this.section.setAttribute("aria-busy", "false");

@@ -11,7 +11,7 @@
  * coordinates take their values from the initial state.
  */
 import { compile } from "./expr.js";
-import { axis, COLORS, finite, layout, Overlay, parts, react } from "./plotkit.js";
+import { axis, COLORS, finite, layout, Overlay, parts, react, titled } from "./plotkit.js";
 import { fmt, fmtResolved, table } from "./summaries.js";
 
 /** The one-coordinate reduction evaluated for a run: U_eff, m_eff, the momenta's values, E_r(t). */
@@ -99,12 +99,12 @@ export class EffectivePotentialPanel {
     const traces = [
       { type: "scatter", mode: "lines", x: this.grid, y: u, name: "U_eff", line: { color: COLORS.U, width: 2.5 } },
     ];
-    const lay = layout({ hovermode: "closest", xaxis: axis(`${lr} (${unit})`, { range: [lo, hi] }), yaxis: axis("U_eff (J)", { range: [bottom - 0.1 * d, top + 0.6 * d] }) });
+    const lay = layout({ hovermode: "closest", xaxis: axis(titled(lr, unit), { range: [lo, hi] }), yaxis: axis("U_eff (J)", { range: [bottom - 0.1 * d, top + 0.6 * d] }) });
     react(this, traces, lay);
     this.turningCache = new Map();
     const momenta = Object.entries(this.red.P).map(([k, v]) => `${run.data.labels[k] || k} = ${fmt(v)}`).join(", ");
     this.cursor(0, run);
-    table(this.summary, "Effective potential on a grid (every 30th point)", [`${lr} (${unit})`, "U_eff (J)"],
+    table(this.summary, "Effective potential on a grid (every 30th point)", [titled(lr, unit), "U_eff (J)"],
       this.grid.filter((_, k) => k % 30 === 0).map((x) => [fmt(x), U(x)]));
     this.note = momenta ? `With ${momenta} (fixed by the initial state).` : "";
   }
@@ -183,16 +183,18 @@ export class SmallOscillationsPanel {
       const w = Math.sqrt(eq.w2), a = values[0] - eq.x, b = run.state[`${r}_dot`][0] / w;
       traces.push({ type: "scatter", mode: "lines", x: run.t, y: Array.from(run.t, (t) => eq.x + a * Math.cos(w * t) + b * Math.sin(w * t)), name: "small-oscillation prediction", line: { color: COLORS.U, width: 2, dash: "dash" } });
     }
-    react(this, traces, layout({ xaxis: axis("t (s)"), yaxis: axis(`${lr} (${unit})`) }));
+    react(this, traces, layout({ xaxis: axis("t (s)"), yaxis: axis(titled(lr, unit)) }));
     const predicted = eq ? Math.sqrt(eq.w2) : null;
+    // words, never a raw null, where there is nothing to show
     const rows = [
-      ["predicted by the engine (ω² = U_eff''/m_eff)", predicted, predicted ? (2 * Math.PI) / predicted : null],
-      ["measured from this run", measured, measured ? (2 * Math.PI) / measured : null],
+      ["predicted by the engine (ω² = U_eff''/m_eff)", predicted ?? "none: no stable equilibrium", predicted ? (2 * Math.PI) / predicted : "–"],
+      ["measured from this run", measured ?? "none: no full oscillation in the run", measured ? (2 * Math.PI) / measured : "–"],
     ];
     table(this.summary, "Small-oscillation frequency", ["", "ω (rad/s)", "period (s)"], rows);
     const tableEl = this.section.querySelector(".frequencies");
     if (tableEl) table(tableEl, "Frequency: prediction and measurement", ["", "ω (rad/s)", "period (s)"], rows);
-    if (!eq) this.readout.textContent = "No stable equilibrium near this motion, so no small-oscillation prediction.";
+    const held = Object.entries(red.P).map(([k, v]) => `${run.data.labels[k] || k} = ${fmt(v)}`).join(", ");
+    if (!eq) this.readout.textContent = `No stable equilibrium: U_eff${held ? ` (with ${held}, from the initial state)` : ""} has no minimum near this motion, so there is no small-oscillation prediction.`;
     else if (!measured) this.readout.textContent = `Predicted ω = ${fmt(predicted)} rad/s about ${lr} = ${fmt(eq.x)} ${unit}; this run is too short to measure a full oscillation.`;
     else {
       const amp = Math.max(...values.map((v) => Math.abs(v - eq.x)));

@@ -9,11 +9,13 @@
 import { foldSteps, printReady, whenTypeset } from "./derivation.js";
 import { fetchJson } from "./api.js";
 import { connectSimulation } from "./simulation.js";
+import { keyboardScroll } from "./scrollboxes.js";
 
 const data = JSON.parse(document.getElementById("scene-data").textContent);
 foldSteps(document);
 printReady();
 whenTypeset(document);
+keyboardScroll(document);
 
 const root = document.getElementById("simulation");
 if (root) {
@@ -24,7 +26,7 @@ if (root) {
     urls: {
       simulate: root.dataset.simulateUrl,
       workPrecision: root.dataset.workPrecisionUrl,
-      modes: () => fetchJson(root.dataset.modesUrl),
+      modes: (parameters) => fetchJson(root.dataset.modesUrl, { parameters }),
       poincare: (request) => fetchJson(root.dataset.poincareUrl, request),
     },
     status: document.getElementById("run-status"),

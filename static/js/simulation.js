@@ -31,7 +31,7 @@ import { EnergyBars } from "./energybars.js";
 import { compile } from "./expr.js";
 import { createPanel } from "./plots.js";
 import { compileRhs, integrate } from "./preview.js";
-import { errorAgainstMotion, fmt } from "./summaries.js";
+import { fmt, statusLine } from "./summaries.js";
 
 export async function simulate(url, request, { signal } = {}) {
   const res = await fetch(url, {
@@ -92,8 +92,15 @@ export function prepareRun(data, request, result) {
     if (!c.name.startsWith("p_")) continue;
     momenta[c.name] = (result.conserved && result.conserved[c.name]) || seriesOrNull(c.tree, envs);
   }
+  // the energy resolution (J): the run's size of energy times its relative error (the server's verdict
+  // compares the error estimate with the motion; a preview has none, so a fixed-step RK4's 10⁻⁶), never
+  // below round-off.  Energies within it are read as "≈ 0", not as digits of noise.
+  let scale = 0;
+  for (const s of [energy, U, T]) if (s) for (const v of s) if (Number.isFinite(v)) scale = Math.max(scale, Math.abs(v));
+  const relative = result.trust ? result.trust.ratio : 1e-6;
+  const resolution = scale * Math.max(1e-9, Number.isFinite(relative) ? relative : 1e-6);
   return {
-    data, request, n, t, params, state, energy, hamiltonian, U, T, momenta, extent,
+    data, request, n, t, params, state, energy, hamiltonian, U, T, momenta, extent, resolution,
     forces: result.constraint_forces || {}, stats: result.stats || {}, envAt: (i) => envs[i],
   };
 }
@@ -206,12 +213,12 @@ export class SimulationView {
   }
 }
 
-function describe(stats) {
-  // "method Vern8 (non-stiff: ...)": the reason belongs to the method, not to the list after it
-  const parts = [`Server run: method ${stats.method}` + (stats.reason ? ` (${stats.reason})` : "")];
-  parts.push(`run time ${fmt((stats.wall_time_s || 0) * 1000)} ms`);
-  if (stats.error_estimate !== undefined && stats.error_estimate !== null) parts.push(`estimated error ${fmt(stats.error_estimate)}`);
-  return parts.join(", ") + "." + ended(stats);
+/** The figures behind the run status's "details": method and why, steps, evaluations, the exact error estimate. */
+function details(stats) {
+  const parts = [`Method ${stats.method}` + (stats.reason ? ` (${stats.reason})` : "") + "."];
+  parts.push(`${stats.steps ?? "–"} steps, ${stats.rhs_evaluations ?? "–"} right-hand-side evaluations, run time ${fmt((stats.wall_time_s || 0) * 1000)} ms.`);
+  if (Number.isFinite(stats.error_estimate)) parts.push(`Estimated error ${fmt(stats.error_estimate)} (the largest |q − q_exact| over the samples, in the coordinates' units).`);
+  return parts.join(" ");
 }
 
 /** The terminal event that ended a run, in words ("" when the run reached t_end). */
@@ -241,10 +248,12 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
   let rhs = null, previewSpec = null;
   let pendingPreview = null;
 
-  function say(state, text, list) {
+  const more = status.querySelector(".run-details");
+  function say(state, text, list, detail = "") {
     status.dataset.state = state;
     message.textContent = text;
     if (list) warnings.replaceChildren(...list.map((w) => Object.assign(document.createElement("li"), { textContent: w })));
+    if (more) { more.hidden = !detail; more.querySelector(".details-text").textContent = detail; }
   }
 
   function preview(request) {
@@ -275,7 +284,8 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
       view.draw(prepared, "preview");
       // where the preview's time goes (integrate / prepare / draw, ms): read by benchmarks/bench_browser.py
       root.dataset.previewTiming = [t1 - t0, t2 - t1, performance.now() - t2].map((x) => x.toFixed(1)).join(" ");
-      say("preview", "Preview: integrated in your browser (RK4, fixed step). The server's run, with its error estimate, replaces it when you stop." + ended(result.stats));
+      say("preview", "Preview: in your browser; the server's run follows when you stop." + ended(result.stats), null,
+        "The preview is integrated in your browser with a fixed-step RK4; the server's run, with its error estimate, replaces it.");
       painted("preview");
     });
   }
@@ -303,14 +313,13 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
       const r = prepareRun(data, request, result);
       await view.draw(r, "server");
       if (mine !== generation) return;
-      // a run whose error estimate is comparable to the motion is flagged, not shown as ready
-      const judged = errorAgainstMotion(r.stats, r.state, data.coordinates);
-      if (judged.trusted) say("ready", describe(r.stats), r.stats.warnings || []);
-      else {
-        const q = data.labels[judged.coordinate] || judged.coordinate;
-        const why = `The estimated error is ${fmt(judged.ratio * 100)} % of the range of ${q} over the run: the motion shown is not reliable. Choose a smaller tolerance (rtol) or a shorter run.`;
-        say("warning", `${describe(r.stats)} ${why}`, r.stats.warnings || []);
-      }
+      // one line at a glance; the method and its figures behind "details"; the server's verdict on the
+      // error against the motion (result.trust) turns it into a plain warning
+      const line = statusLine(r.stats);
+      const notes = [...(r.stats.event ? [ended(r.stats).trim()] : []), ...(r.stats.warnings || [])];
+      const trust = result.trust || {};
+      if (trust.trusted === false) say("untrusted", `${line}. ${trust.message}`, notes, details(r.stats));
+      else say("ready", line, notes, details(r.stats));
       root.dataset.runs = String(Number(root.dataset.runs || 0) + 1);
       painted("server");
     } catch (err) {

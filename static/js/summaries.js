@@ -48,23 +48,26 @@ export function constantOrRange(values, unit = "") {
   return `ranges from ${fmt(lo)} to ${fmt(hi)}${u}`;
 }
 
+/** "10⁻⁸": the power of ten nearest a positive number (an order of magnitude, for a glance). */
+export function magnitude(x) {
+  if (!(x > 0) || !Number.isFinite(x)) return fmt(x);
+  const e = Math.round(Math.log10(x));
+  if (e === 0) return "1";
+  return "10" + String(e).replace("-", "⁻").replace(/\d/g, (d) => "⁰¹²³⁴⁵⁶⁷⁸⁹"[d]);
+}
+
+/** A number with 2 significant digits (run times: more digits would be timing noise). */
+export const short = (x) => (Number.isFinite(x) ? fmt(Number(x.toPrecision(2))) : "–");
+
 /**
- * Whether a run's error estimate is small against the motion it describes: the worst ratio,
- * over coordinates, of the estimated error to the coordinate's range over the run (or its size,
- * for a coordinate that hardly moves).  A run is to be trusted when the ratio is below `limit`.
+ * The run status a student reads at a glance: "Simulated 10 s · error ≈ 10⁻⁸ · 0.3 ms".
+ * stats: the simulate API's stats (t_end_reached, error_estimate, wall_time_s).
  */
-export function errorAgainstMotion(stats, state, coordinates, limit = 0.05) {
-  const by = stats.error_estimate_by_coordinate || {};
-  let worst = 0, where = null;
-  for (const q of coordinates) {
-    const err = Number.isFinite(by[q]) ? by[q] : stats.error_estimate;
-    if (!Number.isFinite(err)) continue;
-    let lo = Infinity, hi = -Infinity;
-    for (const v of state[q] || []) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
-    const scale = Math.max(hi - lo, 1e-3 * Math.max(Math.abs(lo), Math.abs(hi)), 1e-12);
-    if (err / scale > worst) { worst = err / scale; where = q; }
-  }
-  return { ratio: worst, coordinate: where, trusted: worst < limit };
+export function statusLine(stats) {
+  const parts = [`Simulated ${short(stats.t_end_reached)} s`];
+  if (Number.isFinite(stats.error_estimate)) parts.push(stats.error_estimate > 0 ? `error ≈ ${magnitude(stats.error_estimate)}` : "error ≈ 0");
+  if (Number.isFinite(stats.wall_time_s)) parts.push(`${short(stats.wall_time_s * 1000)} ms`);
+  return parts.join(" · ");
 }
 
 export function table(container, caption, headers, rows) {
@@ -86,7 +89,8 @@ export function table(container, caption, headers, rows) {
     row.forEach((cell, k) => {
       const c = k === 0 ? document.createElement("th") : document.createElement("td");
       if (k === 0) c.scope = "row";
-      c.textContent = typeof cell === "number" ? fmt(cell) : String(cell);
+      // a missing value reads as a dash, never as "null" or "undefined"
+      c.textContent = typeof cell === "number" ? fmt(cell) : cell === null || cell === undefined ? "–" : String(cell);
       tr.append(c);
     });
   }

@@ -33,7 +33,7 @@ def test_the_block_stops_at_the_foot_of_the_ramp_with_a_message(page, artifacts)
     page.goto("/scenes/incline-block")
     page.wait_for_selector(READY, state="attached")
     assert "At t = 1.276 s: The block reached the foot of the ramp; the run ends there." in page.inner_text(
-        "#run-status .message"
+        "#run-status .warnings"
     )
     assert end_time(page) == "t = 1.28 s"
     drawn = page.evaluate(DRAWN)
@@ -46,7 +46,7 @@ def test_the_block_stops_at_the_foot_of_the_ramp_with_a_message(page, artifacts)
     page.fill("#ctl-X_dot", "4")
     page.dispatch_event("#ctl-X_dot", "input")
     page.wait_for_function("window.painted.includes('preview')")
-    assert "The block reached the foot of the ramp" in page.inner_text("#run-status .message")
+    assert "The block reached the foot of the ramp" in page.inner_text("#run-status")
     preview = end_time(page)
     page.wait_for_function("window.painted.includes('server')")
     assert preview == end_time(page) == "t = 1.70 s"
@@ -82,3 +82,62 @@ def test_a_system_given_by_l_alone_says_it_has_no_picture(page):
     assert page.evaluate(DRAWN)["none"] and page.evaluate(f"{CANVAS}.dataset.bodies") == "[]"
     assert "No picture" in page.inner_text("[data-panel^=animation] .animation-caption")
     assert page.console_errors == []
+
+
+@pytest.mark.parametrize(("scene_id", "slope"), [("incline-block", 1), ("movable-incline", -1)])
+def test_blocks_are_rectangles_resting_on_their_slopes(page, artifacts, scene_id, slope):
+    page.goto(f"/scenes/{scene_id}")
+    page.wait_for_selector(READY, state="attached")
+    canvas = page.locator("[data-panel^=animation] canvas")
+    # the pixel just above the middle of the block's base, off the slope's normal, is the block's colour,
+    # and so is one a block's height less a little further up; a disc of radius 10 px would not reach it
+    bodies = page.evaluate("JSON.parse(document.querySelector('[data-panel^=animation] canvas').dataset.bodies)")
+    block = bodies[-1]
+    colour = page.evaluate(
+        """([x, y]) => { const c = document.querySelector('[data-panel^=animation] canvas'), r = c.width / c.clientWidth;
+                        return Array.from(c.getContext('2d').getImageData(Math.round(x * r), Math.round(y * r), 1, 1).data); }""",
+        [block["x"], block["y"] - 15],
+    )
+    assert colour[3] == 255 and colour[:3] != [255, 255, 255]
+    canvas.screenshot(path=artifacts / f"block-{scene_id}.png")
+
+
+def test_the_middle_mass_hangs_clear_of_its_wheel(page, artifacts):
+    page.goto("/scenes/pulley")
+    page.wait_for_selector(READY, state="attached")
+    spec = page.evaluate("JSON.parse(document.getElementById('scene-data').textContent).mechanism")
+    assert spec["wheels"][2]["wrap"] == "bottom"
+    page.locator("[data-panel^=animation] canvas").screenshot(path=artifacts / "pulley-wheels.png")
+
+
+def test_the_playground_draws_an_elastic_pendulum_on_its_spring(page, artifacts):
+    query = {
+        "q": "r, theta", "form": "particles",
+        "pn": ["m", "k", "l", "g"], "pv": ["1", "20", "1", "9.81"], "pu": ["kg", "N/m", "m", "m/s^2"],
+        "m": "m", "x": "r*sin(theta)", "y": "0", "z": "-r*cos(theta)",
+        "U": "k*(r - l)**2/2 - m*g*r*cos(theta)",
+    }  # fmt: skip
+    page.goto("/playground?" + urlencode(query, doseq=True))
+    page.wait_for_selector(READY, state="attached")
+    drawn = page.evaluate("JSON.parse(document.querySelector('[data-panel=animation-2d] canvas').dataset.drawn)")
+    assert drawn["links"] == 1
+    assert "spring from the fixed pivot" in page.inner_text("[data-panel=animation-2d] .animation-caption")
+    assert page.inner_text("#ctl-r-unit") == "m" and page.inner_text("#ctl-theta-unit") == "rad"
+    page.locator("[data-panel=animation-2d] canvas").screenshot(path=artifacts / "playground-elastic-pendulum.png")
+
+
+def test_the_floor_pushes_the_wedge_at_its_base(page, artifacts):
+    page.goto("/scenes/movable-incline")
+    page.wait_for_selector(READY, state="attached")
+    page.check("[data-panel^=animation] input.show-forces")
+    page.wait_for_function("JSON.parse(document.querySelector('[data-panel^=animation] canvas').dataset.drawn).forces.length === 2")
+    drawn = page.evaluate("JSON.parse(document.querySelector('[data-panel^=animation] canvas').dataset.drawn)")
+    bodies = page.evaluate("JSON.parse(document.querySelector('[data-panel^=animation] canvas').dataset.bodies)")
+    floor = next(f for f in drawn["forces"] if f["name"] == "floor force on the wedge")
+    normal = next(f for f in drawn["forces"] if f["name"] == "normal force on the block")
+    apex, block = bodies[0], bodies[1]
+    # the floor's arrow starts on the floor, right of the apex (the base's middle), and points up
+    assert floor["y"] > apex["y"] + 20 and floor["x"] > apex["x"] + 20 and floor["ty"] < floor["y"]
+    # the slope's push on the block starts at the block (the middle of its base)
+    assert (normal["x"], normal["y"]) == (block["x"], block["y"])
+    page.locator("[data-panel^=animation] canvas").screenshot(path=artifacts / "wedge-forces.png")

@@ -156,3 +156,25 @@ def test_error_survives_a_process_boundary():
     error = ExpressionError("msg", "part", 3, 7)
     copy = pickle.loads(pickle.dumps(error))
     assert (str(copy), copy.part, copy.start, copy.end) == ("msg", "part", 3, 7)
+
+
+@pytest.mark.parametrize(
+    ("text", "words"),
+    [
+        ("m R**2 theta_dot", "write m*R**2*theta_dot (a * between factors)"),
+        ("sin(x) cos(x)", "write sin(x)*cos(x) (a * between factors)"),
+        ("2(x+1)", "write 2*(x+1) (a * between factors)"),
+        ("m(x+1)", "write m*(x+1) (a * between factors)"),
+        ("m*x = 2", "write it as one expression equal to zero, e.g. a - (b) for a = b"),
+    ],
+)
+def test_input_help_says_what_to_write(text, words):
+    with pytest.raises(ExpressionError) as e:
+        check_expression(text, ["m", "R", "theta_dot", "x"])
+    assert words in str(e.value)
+
+
+def test_a_plain_syntax_error_gets_no_made_up_hint():
+    with pytest.raises(ExpressionError) as e:
+        check_expression("x +* 2", ["x"])
+    assert "between factors" not in str(e.value)

@@ -4,7 +4,7 @@ import pytest
 
 from app.scenes import SCENES
 from app.service.derivations import derivation_document
-from app.service.modes import measure_scene
+from app.service.modes import measure_scene, modes_at
 from app.viz.panels import oscillating_equilibria
 
 WITH_MODES = sorted(s for s in SCENES if oscillating_equilibria(derivation_document(s)))
@@ -26,3 +26,20 @@ def test_measured_frequencies_are_within_one_percent(scene_id):
                 assert abs(m["relative_difference"]) < 0.01
             else:
                 assert m["measured"] is None and m["predicted"] is None
+
+
+@pytest.mark.slow  # compiles each scene's right-hand side on first use
+@pytest.mark.parametrize("scene_id", WITH_MODES)
+def test_modes_at_the_defaults_are_the_engines(scene_id):
+    at = modes_at(scene_id, {})
+    doc = oscillating_equilibria(derivation_document(scene_id))
+    assert len(at) == len(doc)
+    for mine, engine in zip(at, doc, strict=True):
+        assert mine["equilibrium"] == pytest.approx(engine["equilibrium"])
+        assert [m["omega_squared"] for m in mine["modes"]] == pytest.approx([m["omega_squared"] for m in engine["modes"]])
+
+
+def test_double_pendulum_modes_follow_its_lengths():
+    # equal masses m, lengths l1 = l2 = l: omega^2 = (2 +- sqrt 2) g / l
+    (low,) = [e for e in modes_at("double-pendulum", {"l1": 2.0, "l2": 2.0}) if e["kind"] == "stable"]
+    assert [m["omega_squared"] for m in low["modes"]] == pytest.approx([(2 - 2**0.5) * 9.81 / 2, (2 + 2**0.5) * 9.81 / 2])

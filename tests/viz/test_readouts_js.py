@@ -79,14 +79,13 @@ def test_values_below_their_resolution_read_as_zero():
     assert out == ["≈ 0", "0.25", "−5 × 10⁻⁷"]
 
 
-def test_a_run_whose_error_is_comparable_to_the_motion_is_not_trusted():
+def test_the_run_status_is_one_short_line():
     out = node(
         "summaries.js",
-        "(m) => [m.errorAgainstMotion({ error_estimate: 1.9, error_estimate_by_coordinate: { theta: 1.9 } },"
-        " { theta: [0, 3, 6] }, ['theta']), m.errorAgainstMotion({ error_estimate: 1e-8 }, { theta: [-1, 1] }, ['theta'])]",
+        "(m) => [m.statusLine({ t_end_reached: 10, error_estimate: 8.08e-9, wall_time_s: 3.115e-4 }),"
+        " m.statusLine({ t_end_reached: 3.21, error_estimate: 0.04, wall_time_s: 0.0123 }), m.magnitude(1)]",
     )
-    assert out[0]["trusted"] is False and out[0]["coordinate"] == "theta" and out[0]["ratio"] == pytest.approx(1.9 / 6)
-    assert out[1]["trusted"] is True
+    assert out == ["Simulated 10 s · error ≈ 10⁻⁸ · 0.31 ms", "Simulated 3.2 s · error ≈ 10⁻¹ · 12 ms", "1"]
 
 
 def test_the_run_time_shown_is_a_median():

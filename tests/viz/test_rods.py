@@ -66,3 +66,32 @@ def test_a_system_without_particles_has_no_picture():
     spec = mechanism("playground", [], ["theta"], False, defaults={"R": 1.0})
     assert spec["none"] and spec["points"] == [] and spec["caption"] == NO_PICTURE
     assert "no particle positions" in NO_PICTURE
+
+
+def test_an_elastic_pendulum_hangs_on_a_spring_from_a_pivot():
+    from app.engine.trees import of_text
+    from app.viz.mechanism import mechanism
+
+    particles = [("bob", ("r*sin(theta)", "0", "-r*cos(theta)"))]
+    potential = of_text("k*(r - l)**2/2 - m*g*r*cos(theta)")
+    spec = mechanism(
+        "playground",
+        particles,
+        ["r", "theta"],
+        False,
+        defaults={"k": 10, "l": 1, "m": 1, "g": 9.81},
+        potential=potential,
+    )
+    assert [p["label"] for p in spec["points"]] == ["bob", "pivot"]
+    assert spec["links"] == [{"from": 1, "to": 0, "style": "spring"}]
+    assert "spring from the fixed pivot (its length is r)" in spec["caption"]
+    # without a spring's energy in U the same positions get no spring: nothing is invented
+    plain = mechanism(
+        "playground",
+        particles,
+        ["r", "theta"],
+        False,
+        defaults={"m": 1, "g": 9.81},
+        potential=of_text("-m*g*r*cos(theta)"),
+    )
+    assert plain["links"] == []

@@ -42,6 +42,27 @@ def test_scene_modes_measured_match_predicted(client):
         assert m["measured"] == pytest.approx(m["predicted"], rel=0.01)
 
 
+def test_scene_modes_follow_the_parameters(client):
+    # coupled oscillators: omega^2 = k/m and k/m + 2 kappa/m; with k = 10, m = 1, kappa = 0.1: 10 and 10.2
+    r = client.post("/api/scenes/coupled-oscillators/modes-at", json={"parameters": {"kappa": 0.1}})
+    assert r.status_code == 200
+    (eq,) = r.json()
+    assert eq["parameters"] == {"m": 1.0, "k": 10.0, "kappa": 0.1}
+    assert [m["predicted"] for m in eq["modes"]] == pytest.approx([10**0.5, 10.2**0.5])
+    assert eq["modes"][1]["shape"] == pytest.approx({"x1": -1.0, "x2": 1.0})
+    for m in eq["modes"]:
+        assert m["measured"] == pytest.approx(m["predicted"], rel=1e-4)
+
+
+@pytest.mark.parametrize(
+    ("body", "status", "words"),
+    [({"parameters": {"kappa": -5}}, 422, "outside its allowed range"), ({"parameters": {"zz": 1}}, 422, "unknown parameter")],
+)
+def test_scene_modes_refuse_bad_parameters(client, body, status, words):
+    r = client.post("/api/scenes/coupled-oscillators/modes-at", json=body)
+    assert r.status_code == status and words in r.text
+
+
 def test_user_system_modes_and_section_run_in_the_pool(client):
     r = client.post("/api/modes", json=SYSTEM)
     assert r.status_code == 200

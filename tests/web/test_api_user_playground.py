@@ -98,7 +98,10 @@ def test_an_empty_form_derives_nothing(client):
             "f-param-0-value",
             "not a number",
         ),
-        ({"q": "x", "form": "energies", "pn": "sin", "T": "x_dot**2", "U": "0"}, "f-param-0-name", "reserved"),
+        ({"q": "x", "form": "energies", "pn": "sin", "pv": "1", "T": "x_dot**2", "U": "0"}, "f-param-0-name", "reserved"),
+        # a blank value is an error at its field, never a silent 1; a row without a name says so in the form's words
+        ({"q": "x", "form": "energies", "pn": "k", "T": "x_dot**2", "U": "k*x"}, "f-param-0-value", "parameter 1 (k): a value is needed"),
+        ({"q": "x", "form": "energies", "pv": "2", "T": "x_dot**2", "U": "x"}, "f-param-0-name", "parameter 1: a name is needed"),
         (
             {"q": "x", "form": "particles", "m": "1", "x": "x", "z": "__class__", "U": "0"},
             "f-particle-0-z",
@@ -110,7 +113,7 @@ def test_an_empty_form_derives_nothing(client):
             "functions",
         ),
         ({"q": "x", "form": "lagrangian", "L": "x_dot*x"}, "f-L", "mass matrix"),
-        ({"q": "", "form": "lagrangian", "L": "x_dot**2"}, "f-coordinates", "at least 1"),
+        ({"q": "", "form": "lagrangian", "L": "x_dot**2"}, "f-coordinates", "add at least one coordinate"),
         ({"system": "{not json"}, "f-coordinates", "not valid JSON"),
     ],
 )

@@ -240,3 +240,11 @@ def test_a_scene_page_gives_the_browser_the_parsers_functions(pages):
     html = pages[f"/scenes/{next(iter(SCENES))}"].text
     found = re.search(r'<script type="application/json" id="function-tex">(.*?)</script>', html, re.S)
     assert found and json.loads(found.group(1)) == function_tex()
+
+
+def test_the_damped_pendulum_is_marked_as_ours(client):
+    # the chapter has no damped pendulum: it builds on 4.1's generalized forces, as our own example
+    assert SCENES["damped-pendulum"].beyond_chapter and SCENES["damped-pendulum"].section == "4.1"
+    page = client.get("/scenes/damped-pendulum").text
+    assert "Beyond the chapter (our example), building on section 4.1" in page
+    assert "Beyond the chapter" not in client.get("/scenes/simple-pendulum").text.split("<main")[1].split("</header>")[0]

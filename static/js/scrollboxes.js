@@ -1,0 +1,59 @@
+/**
+ * scrollboxes.js — boxes that scroll sideways (a long formula, a wide table) can be scrolled from the keyboard.
+ *
+ *   keyboardScroll(root = document)   watch root: every box whose content overflows it sideways gets
+ *                                     tabindex="0", role="group" and a label ("Formula, scrolls sideways"),
+ *                                     so Tab reaches it and the arrow keys scroll it; a box that stops
+ *                                     overflowing (a wider window) loses them again
+ *
+ * Checked after the page has loaded (KaTeX has typeset by then), when the window is resized, when a
+ * <details> opens, and when elements are added under root (tables built from a server answer), at
+ * most twice a second (readouts change text every animation frame).
+ */
+const BOXES = ".math-display, .table-scroll, .summary-box dd, .data-summary .table, .frequencies, .practice-engine";
+
+function label(box) {
+  if (box.matches(".math-display, .summary-box dd")) return "Formula, scrolls sideways";
+  const caption = box.querySelector("caption");
+  return `${caption ? caption.textContent.trim() : "Table"}, scrolls sideways`;
+}
+
+function check(root) {
+  for (const box of root.querySelectorAll(BOXES)) {
+    const overflows = box.scrollWidth > box.clientWidth + 1;
+    // a box holding something focusable is reached through it already
+    const inner = box.querySelector("a[href], button, input, select, textarea, [tabindex]:not([data-scroll-box])");
+    if (overflows && !inner) {
+      if (!box.hasAttribute("tabindex")) {
+        box.tabIndex = 0;
+        box.dataset.scrollBox = "true";
+        box.setAttribute("role", "group");
+        box.setAttribute("aria-label", label(box));
+      }
+    } else if (box.dataset.scrollBox) {
+      box.removeAttribute("tabindex");
+      box.removeAttribute("role");
+      box.removeAttribute("aria-label");
+      delete box.dataset.scrollBox;
+    }
+  }
+}
+
+export function keyboardScroll(root = document) {
+  let pending = false;
+  const soon = () => {
+    if (pending) return;
+    pending = true;
+    requestAnimationFrame(() => { pending = false; check(root); });
+  };
+  if (document.readyState === "complete") soon(); else window.addEventListener("load", soon, { once: true });
+  window.addEventListener("resize", soon);
+  document.addEventListener("toggle", soon, true);
+  let timer = null;
+  const later = () => { if (timer === null) timer = setTimeout(() => { timer = null; soon(); }, 500); };
+  new MutationObserver((records) => { if (records.some((r) => [...r.addedNodes].some((n) => n.nodeType === 1))) later(); })
+    .observe(root === document ? document.body : root, { childList: true, subtree: true });
+  // KaTeX may finish after load (fonts): look once more a little later
+  setTimeout(soon, 1500);
+  return soon;
+}

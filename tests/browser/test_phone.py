@@ -1,0 +1,44 @@
+"""A phone (390×844) in the order a student reads: title, problem statement, animation and controls, set-up
+figure with parameters, derivation, then the plots; the statement on the first screen."""
+
+from __future__ import annotations
+
+import pytest
+
+from app.scenes import SCENES
+
+pytestmark = pytest.mark.browser
+
+READY = '#run-status[data-state="ready"], #run-status[data-state="untrusted"]'
+ORDER = [
+    "h1",
+    ".statement",
+    "canvas.mechanism",
+    "#controls",
+    "figure.setup",
+    "table.parameters",
+    "#derivation",
+    ".panels",
+]
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_a_phone_reads_in_order(browser, live_server, artifacts, scene_id):
+    context = browser.new_context(
+        base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True
+    )
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    page.goto(f"/scenes/{scene_id}")
+    page.wait_for_selector(READY, state="attached")
+    tops = page.evaluate(
+        "(sels) => sels.map((s) => { const e = document.querySelector('.scene ' + s); return e ? e.getBoundingClientRect().top + scrollY : null; })",
+        ORDER,
+    )
+    present = [(s, t) for s, t in zip(ORDER, tops, strict=True) if t is not None]
+    assert [s for s, _ in sorted(present, key=lambda x: x[1])] == [s for s, _ in present], present
+    # the problem statement is on the first screen
+    statement = page.locator(".scene .statement").bounding_box()
+    assert statement["y"] < 844
+    page.screenshot(path=artifacts / f"phone-{scene_id}.png")
+    context.close()

@@ -1,0 +1,50 @@
+"""Units of a user's coordinates: rad for angles, m where the dimensions say so, nothing where they cannot tell."""
+
+from fractions import Fraction
+
+import pytest
+
+from app.viz.units import coordinate_units, parse_unit
+
+
+@pytest.mark.parametrize(
+    ("text", "dims"),
+    [
+        ("kg", {"kg": 1}),
+        ("N/m", {"kg": 1, "s": -2}),
+        ("m/s²", {"m": 1, "s": -2}),
+        ("m/s**2", {"m": 1, "s": -2}),
+        ("kg·m²", {"kg": 1, "m": 2}),
+        ("rad", {}),
+        ("furlong", None),
+        ("", None),
+    ],
+)
+def test_units_are_read_as_dimensions(text, dims):
+    got = parse_unit(text)
+    assert got == (None if dims is None else {k: Fraction(v) for k, v in dims.items()})
+
+
+def doc(coordinates, parameters, mass_matrix, angles=()):
+    return {
+        "coordinates": coordinates,
+        "angles": list(angles),
+        "parameters": {n: {"unit": u} for n, u in parameters.items()},
+        "mass_matrix": [[{"tree": t} for t in row] for row in mass_matrix],
+    }
+
+
+def test_kepler_r_in_metres_theta_in_radians():
+    # T = m/2 (r_dot² + r² theta_dot²): theta is cyclic (no trig function), named as an angle
+    d = doc(["r", "theta"], {"m": "kg", "k": "N*m"}, [["m", 0], [0, ["*", "m", ["pow", "r", 2]]]])
+    out = coordinate_units(d, scene=False)
+    assert out["units"] == {"r": "m", "theta": "rad"}
+    assert out["rate_units"] == {"r": "m/s", "theta": "rad/s"}
+    assert out["momentum_units"] == {"r": "kg·m/s", "theta": "kg·m²/s"}
+
+
+def test_an_angle_not_named_as_one_follows_from_its_mass_matrix_entry_and_unknown_stays_unitless():
+    # u with M = m R² (R in m) is dimensionless but not named or used as an angle: no unit, never "m"
+    d = doc(["u", "x"], {"m": "kg", "R": "m", "c": ""}, [[["*", "m", ["pow", "R", 2]], 0], [0, "c"]])
+    assert coordinate_units(d, scene=False)["units"] == {"u": "", "x": ""}
+    assert coordinate_units(d, scene=False)["rate_units"] == {"u": "1/s", "x": "1/s"}
