@@ -13,6 +13,7 @@ from typing import Any
 from fastapi.testclient import TestClient
 
 from app.main import app
+from app.service.fairness import COOKIE
 from app.service.user_systems import UserSystems
 from app.settings import Settings
 from app.web.deps import user_systems_service
@@ -46,8 +47,11 @@ def record() -> dict[str, Any]:
             "/api/derive", content=b" " * (MAX_BODY_BYTES + 1), headers=JSON
         ).json()
         errors["422"]["timeout"] = answer_with_time_limit(client, TIMEOUT_SECONDS)
-        client.cookies.clear()  # keyed on the address from here on
-        ticket = service.gate.admit("address:testclient", "testclient")
+        # a session of its own (any answer sets its cookie), whose one job is still running
+        client.cookies.clear()
+        client.post("/api/derive", json=FORCED_SPRING)  # cached: answered at once
+        session = service.gate.verify(client.cookies.get(COOKIE))
+        ticket = service.gate.admit(service.gate.key(session, "testclient"), "testclient")
         try:
             errors["429"]["one-at-a-time"] = refused(client, 429)
         finally:
