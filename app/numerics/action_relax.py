@@ -22,8 +22,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.linalg import eig_banded, solve_banded
 
+from app import late
 from app.numerics.action import ActionTerms
 from app.numerics.errors import SimulationError
 from app.numerics.simulate import simulate
@@ -103,7 +103,7 @@ def _solve(band: np.ndarray, rhs: np.ndarray) -> np.ndarray:
     full[width:] = band
     for d in range(1, width + 1):
         full[width - d, d:] = band[d, : m - d]
-    return solve_banded((width, width), full, rhs)
+    return late.module("scipy.linalg").solve_banded((width, width), full, rhs)
 
 
 def relax(
@@ -142,7 +142,7 @@ def relax(
         Q, S, grad, diagonal, upper, norm = candidate, S_new, g_new, d_new, u_new, new_norm
         history.append(Q.copy())
     # the directions that lower S_d: the Hessian's negative eigenvalues
-    negative = eig_banded(
+    negative = late.module("scipy.linalg").eig_banded(
         _band(diagonal, upper, n), lower=True, eigvals_only=True, select="v", select_range=(-np.inf, 0.0)
     ).size
     warnings = [] if converged else ["the discrete Euler-Lagrange equations were not solved to full accuracy"]

@@ -22,7 +22,7 @@ TABLE = {
     "double-pendulum": (("theta1", "theta2"), ("m1", "m2", "l1", "l2", "g")),
     "coupled-oscillators": (("x1", "x2"), ("m", "k", "kappa")),
 }
-BEYOND_CHAPTER = {"double-pendulum", "coupled-oscillators"}
+BEYOND_CHAPTER = {"double-pendulum", "coupled-oscillators", "damped-pendulum"}
 # what the engine must find: cyclic coordinates and whether h = E
 CYCLIC = {"tabletop-spring": ("theta",), "spherical-pendulum": ("phi",), "movable-incline": ("X",)}
 MOVING_CONSTRAINT = {"rotating-parabola"}
