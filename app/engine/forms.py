@@ -153,7 +153,10 @@ def squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
             continue
         rest = out - sp.expand(c * inner)
         by_degree: dict[int, sp.Expr] = {}
-        for term in sp.Add.make_args(sp.expand(inner)):
+        terms = sp.Add.make_args(sp.expand(inner))
+        if not all(t.is_polynomial(*velocities) for t in terms):
+            continue  # a speed under a root (sqrt(ρ̇² + ω²ρ²)): no degrees to split by
+        for term in terms:
             degree = sp.Poly(term, *velocities).total_degree() if velocities else 0
             by_degree[degree] = by_degree.get(degree, sp.Integer(0)) + term
         found = False
@@ -179,7 +182,11 @@ def _factorable(expr: sp.Expr, moving: set[sp.Symbol]) -> bool:
         return True
     if not velocities:
         return False
-    degrees = {sp.Poly(t, *velocities).total_degree() for t in sp.Add.make_args(expr)}
+    terms = sp.Add.make_args(expr)
+    # a term that is no polynomial in the velocities (a speed, sqrt(ρ̇² + ω²ρ²)) has no degree to share
+    if not all(t.is_polynomial(*velocities) for t in terms):
+        return False
+    degrees = {sp.Poly(t, *velocities).total_degree() for t in terms}
     return len(degrees) == 1 and 0 not in degrees
 
 

@@ -90,3 +90,11 @@ def test_the_practice_difference_is_the_mistake_alone():
     assert result["verdict"] == "incorrect"
     assert result["difference"]["sympy"] == "l1*theta1_dot**2*sin(theta1 - theta2)"
     assert "ddot" not in result["difference"]["sympy"]
+
+
+def test_a_speed_under_a_root_is_formed_without_a_polynomial_error():
+    # a generated mistake's piece can be a speed, sqrt(ρ̇² + ω²ρ²): no degree in the velocities to factor by
+    rho, rho_dot, omega, m = sp.symbols("rho rho_dot omega m", positive=True)
+    speed = m * sp.sqrt(omega**2 * rho**2 + rho_dot**2) / 2 + m * rho_dot**2
+    form = textbook_form(speed)
+    assert sp.simplify(form - speed) == 0
