@@ -94,7 +94,12 @@ class StepSummary(BaseModel):
     correct: int = Field(description="Answers judged correct or equivalent.")
     incorrect: int
     students_done: int = Field(description="Students with a correct or equivalent answer to the step.")
-    mistakes: dict[str, int] = Field(description="Named mistakes among the incorrect answers, most common first.")
+    mistakes: dict[str, int] = Field(
+        description="Named mistakes among the incorrect answers, by the tutor's stable key, most common first."
+    )
+    mistake_names: dict[str, str] = Field(
+        default_factory=dict, description="Each named mistake's key in words, as the student was told it."
+    )
 
 
 class Summary(BaseModel):

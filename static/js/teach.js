@@ -94,7 +94,7 @@ async function drawSteps(summary) {
       bar,
       el("p", { className: "dash-numbers",
         text: `${entry.students_done} of ${summary.students} done · ${entry.correct} right · ${entry.incorrect} wrong`
-          + (mistakes.length ? ` · most often: ${mistakeWords(mistakes[0][0]).toLowerCase()}` : "") })));
+          + (mistakes.length ? ` · most often: ${(entry.mistake_names?.[mistakes[0][0]] || mistakeWords(mistakes[0][0])).toLowerCase()}` : "") })));
   }
   list.replaceChildren(...rows);
   if (!rows.length) list.replaceChildren(el("li", { className: "help", text: "No steps yet: set an assignment, or wait for the first answer." }));
@@ -111,7 +111,7 @@ async function drawMistakes(summary) {
     const label = await labelOf(entry);
     rows.push(el("li", { className: "dash-mistake", "data-mistake": name },
       el("span", { className: "dash-count", text: `${count}×` }),
-      el("strong", { text: mistakeWords(name) }),
+      el("strong", { text: entry.mistake_names?.[name] || mistakeWords(name) }),
       el("span", { text: " in " }), typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` (${label.where})` })));
   }
   $("dash-mistakes").replaceChildren(...rows);

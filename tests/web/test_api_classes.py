@@ -71,7 +71,8 @@ def test_a_class_from_creation_to_deletion(client, classes):
     assert summary["students"] == 2 and summary["attempts"] == 3
     kinetic, potential = summary["steps"]
     assert kinetic == {"scene": SCENE, "step": "kinetic", "coordinate": None, "correct": 1, "incorrect": 2,
-                       "students_done": 1, "mistakes": {"missing_half": 2}}
+                       "students_done": 1, "mistakes": {"missing_half": 2},
+                       "mistake_names": {"missing_half": "the ½ of ½ m v² left out"}}
     assert potential["correct"] == potential["incorrect"] == 0
 
     rows = client.get(f"/api/classes/{code}/students", headers=bearer(teacher)).json()["students"]
@@ -160,7 +161,7 @@ def test_refusals_say_what_is_wrong(client, classes):
     summary = client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).json()
     assert summary["steps"][1] | {"mistakes": None} == {"system": "spring", "step": "acceleration", "coordinate": "x",
                                                         "correct": 1, "incorrect": 0, "students_done": 1,
-                                                        "mistakes": None}
+                                                        "mistakes": None, "mistake_names": {}}
 
 
 @pytest.mark.parametrize("backend", ["sqlite"])

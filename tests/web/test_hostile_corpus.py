@@ -71,7 +71,9 @@ def in_every_field(text: str) -> list[tuple[str, dict]]:
 
 def playground(spec: dict) -> str:
     """The playground's GET form for a system (the query string a student's link carries)."""
-    query: dict[str, object] = {"q": ",".join(spec["coordinates"]), "pn": spec.get("parameters", [])}
+    names = spec.get("parameters", [])
+    # every parameter with a value: a blank value is an error at its field (issue 29), never a silent 1
+    query: dict[str, object] = {"q": ",".join(spec["coordinates"]), "pn": names, "pv": ["1"] * len(names)}
     if "lagrangian" in spec:
         query |= {"form": "lagrangian", "L": spec["lagrangian"]}
     elif "kinetic" in spec:

@@ -64,6 +64,7 @@ class AttemptRow(Base):
     step: Mapped[str] = mapped_column(String(20))
     coordinate: Mapped[str | None] = mapped_column(String(40), nullable=True)
     verdict: Mapped[str] = mapped_column(String(12))
-    mistake: Mapped[str | None] = mapped_column(String(60), nullable=True)
+    mistake: Mapped[str | None] = mapped_column(String(60), nullable=True)  # the tutor's stable key
+    mistake_name: Mapped[str | None] = mapped_column(String(200), nullable=True)  # and its display text
     answer: Mapped[str] = mapped_column(Text)
     at: Mapped[datetime] = mapped_column(DateTime)

@@ -36,7 +36,7 @@ def _step_entry(key: Key, items: list[dict[str, Any]]) -> dict[str, Any]:
     item, step, coordinate = key
     kind = "scene" if any(i.get("scene") == item for i in items) or not items else "system"
     return {kind: item, "step": step, "coordinate": coordinate, "correct": 0, "incorrect": 0, "students_done": 0,
-            "mistakes": {}}
+            "mistakes": {}, "mistake_names": {}}
 
 
 def summary(db: Database, class_id: int, items: list[dict[str, Any]]) -> dict[str, Any]:
@@ -46,7 +46,7 @@ def summary(db: Database, class_id: int, items: list[dict[str, Any]]) -> dict[st
         students = session.scalar(select(func.count()).select_from(StudentRow).where(StudentRow.class_id == class_id))
         counted = session.execute(
             select(AttemptRow.item, AttemptRow.step, AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake,
-                   func.count())
+                   func.count(), func.max(AttemptRow.mistake_name))
             .where(AttemptRow.class_id == class_id)
             .group_by(AttemptRow.item, AttemptRow.step, AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake)
         ).all()
@@ -57,12 +57,14 @@ def summary(db: Database, class_id: int, items: list[dict[str, Any]]) -> dict[st
         ).all()
     steps: dict[Key, dict[str, Any]] = {key: _step_entry(key, items) for key in _assigned_keys(items)}
     attempts = 0
-    for item, step, coordinate, verdict, mistake, n in counted:
+    for item, step, coordinate, verdict, mistake, n, text in counted:
         entry = steps.setdefault((item, step, coordinate), _step_entry((item, step, coordinate), items))
         entry["correct" if verdict in DONE else "incorrect"] += n
         attempts += n
         if mistake:
             entry["mistakes"][mistake] = entry["mistakes"].get(mistake, 0) + n
+            if text:  # the mistake in words (one system's mistakes are worded alike)
+                entry["mistake_names"][mistake] = text
     for item, step, coordinate, n in finished:
         steps[(item, step, coordinate)]["students_done"] = n
     for entry in steps.values():  # the most common mistake first

@@ -37,10 +37,17 @@ def named_mistake(result: dict[str, Any]) -> str | None:
         return None
     named = result.get("mistake")
     if isinstance(named, dict):
-        named = named.get("name") or named.get("id") or named.get("mistake")
+        named = named.get("key") or named.get("name")
     if isinstance(named, str) and named:
         return named[:60]
     return _NAMED_BY_HINT.get(result.get("hint") or "")
+
+
+def mistake_text(result: dict[str, Any]) -> str | None:
+    """The named mistake's display text (the tutor's ``mistake.name``), when the verdict carries one."""
+    named = result.get("mistake") if result.get("verdict") == "incorrect" else None
+    text = named.get("name") if isinstance(named, dict) else None
+    return text[:200] if isinstance(text, str) and text else None
 
 
 class Classroom:
@@ -154,7 +161,8 @@ class Classroom:
         result = orjson.loads(body)
         recorded = coordinate if step in PER_COORDINATE else None
         await self._db(
-            store.record, who, name, step, recorded, result["verdict"], named_mistake(result), answer.strip()
+            store.record, who, name, step, recorded, result["verdict"], named_mistake(result), answer.strip(),
+            mistake_text(result),
         )
         return body
 

@@ -150,6 +150,7 @@ def record(
     verdict: str,
     mistake: str | None,
     answer: str,
+    mistake_name: str | None = None,
 ) -> int:
     """Record one judged answer; committed (on disk) when this returns.  The attempt's id."""
     if who.student is None:
@@ -163,6 +164,7 @@ def record(
             coordinate=coordinate,
             verdict=verdict,
             mistake=mistake,
+            mistake_name=mistake_name,
             answer=answer,
             at=now(),
         )

@@ -41,9 +41,9 @@ def test_migrates_an_empty_database_to_the_models(url):
         migrate(engine)
         found = inspect(engine)
         assert TABLES <= set(found.get_table_names())
-        assert "mistake" in {c["name"] for c in found.get_columns("attempts")}
+        assert {"mistake", "mistake_name"} <= {c["name"] for c in found.get_columns("attempts")}
         with engine.connect() as c:
-            assert c.execute(text("SELECT version_num FROM alembic_version")).scalar() == "0002"
+            assert c.execute(text("SELECT version_num FROM alembic_version")).scalar() == "0003"
         migrate(engine)  # again: nothing to do
     finally:
         engine.dispose()
@@ -66,6 +66,26 @@ def test_migrates_the_previous_schema_keeping_its_rows(url):
             row = c.execute(text("SELECT item, verdict, mistake, answer FROM attempts")).one()
             assert tuple(row) == ("simple-pendulum", "incorrect", None, "m*x")
             assert c.execute(text("SELECT count(*) FROM assignments")).scalar() == 0
+    finally:
+        engine.dispose()
+
+
+def test_migrates_the_schema_before_mistake_names_keeping_the_keys(url):
+    engine = make_engine(url)
+    try:
+        migrate(engine, "0002")
+        with engine.begin() as c:
+            c.execute(text("INSERT INTO classes (id, code, title, teacher_hash, created_at) "
+                           "VALUES (1, 'ACEFHK', 'old', :h, :t)"), {"h": "0" * 64, "t": now()})
+            c.execute(text("INSERT INTO students (id, class_id, name, key_hash, joined_at) "
+                           "VALUES (1, 1, 'Ada', :h, :t)"), {"h": "1" * 64, "t": now()})
+            c.execute(text("INSERT INTO attempts (class_id, student_id, item, step, coordinate, verdict, mistake, "
+                           "answer, at) VALUES (1, 1, 'simple-pendulum', 'kinetic', NULL, 'incorrect', 'missing_half', "
+                           "'m*x', :t)"), {"t": now()})
+        migrate(engine)
+        with engine.connect() as c:
+            row = c.execute(text("SELECT mistake, mistake_name FROM attempts")).one()
+            assert tuple(row) == ("missing_half", None)
     finally:
         engine.dispose()
 
