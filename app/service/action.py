@@ -15,8 +15,6 @@ from __future__ import annotations
 
 import json
 import math
-import threading
-from collections import OrderedDict
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -27,6 +25,7 @@ from app.numerics.action import K_SHAPES, SHAPES, SHOWN, action_of, action_terms
 from app.numerics.action_relax import find_path
 from app.numerics.errors import SimulationError
 from app.numerics.simulate import simulate
+from app.service.cache import Recent
 from app.service.simulation import (
     COMPILED,
     DEFAULT_T_END,
@@ -257,24 +256,14 @@ def action_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict
     )  # fmt: skip
 
 
-_answers: OrderedDict[str, dict[str, Any]] = OrderedDict()
-_answers_lock = threading.Lock()
 CACHED_ANSWERS = 64
+_answers = Recent(CACHED_ANSWERS)
 
 
 def cached_action_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict[str, Any]:
     """``action_of_scene`` with the last CACHED_ANSWERS answers kept (a panel asks again for the same T)."""
     key = json.dumps([scene_id, options], sort_keys=True, default=str)
-    with _answers_lock:
-        if key in _answers:
-            _answers.move_to_end(key)
-            return _answers[key]
-    result = action_of_scene(scene_id, gates, **options)
-    with _answers_lock:
-        _answers[key] = result
-        while len(_answers) > CACHED_ANSWERS:
-            _answers.popitem(last=False)
-    return result
+    return _answers.get(key, lambda: action_of_scene(scene_id, gates, **options))
 
 
 def action_job(user: Any, options: dict[str, Any]) -> bytes:

@@ -16,7 +16,32 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from cachetools import LRUCache
+
 from app.settings import settings
+
+
+class Recent:
+    """The last ``size`` answers of a computation, by key, shared by threads (the least recently used goes
+    first).  Two threads asking for the same new key may both compute it: these answers are cheap enough
+    that a lock per key would cost more than it saves."""
+
+    def __init__(self, size: int) -> None:
+        self._answers: LRUCache[Any, Any] = LRUCache(size)
+        self._lock = threading.Lock()
+
+    def get(self, key: Any, compute: Callable[[], Any]) -> Any:
+        with self._lock:
+            found = self._answers.get(key, _MISSING)
+        if found is not _MISSING:
+            return found
+        value = compute()
+        with self._lock:
+            self._answers[key] = value
+        return value
+
+
+_MISSING = object()
 
 # the ``app`` package whose sources fingerprint a cache (beside site-packages once installed)
 APP_SOURCE = Path(__file__).resolve().parents[1]

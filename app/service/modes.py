@@ -22,8 +22,6 @@ reported with ``"at_defaults": true``.
 from __future__ import annotations
 
 import math
-import threading
-from collections import OrderedDict
 from collections.abc import Callable, Mapping, Sequence
 from functools import lru_cache
 from typing import Any
@@ -38,7 +36,7 @@ from app.errors import OverCapacity
 from app.numerics import limits
 from app.numerics.frequency import measured_omega
 from app.numerics.simulate import simulate
-from app.service.cache import JsonCache, source_fingerprint
+from app.service.cache import JsonCache, Recent, source_fingerprint
 from app.service.simulation import COMPILED, GATES, Gates, parameter_vector
 from app.viz.panels import oscillating_equilibria
 
@@ -189,9 +187,8 @@ def predicted_at(scene_id: str, d: Derivation, doc: Mapping[str, Any], k: np.nda
     return out
 
 
-_at_lock = threading.Lock()
-_at_cache: OrderedDict[tuple[str, tuple[float, ...]], list[dict[str, Any]]] = OrderedDict()
 AT_CACHE_SIZE = 256
+_at_cache = Recent(AT_CACHE_SIZE)
 
 
 def modes_at(scene_id: str, parameters: Mapping[str, float], gates: Gates = GATES) -> list[dict[str, Any]]:
@@ -200,20 +197,14 @@ def modes_at(scene_id: str, parameters: Mapping[str, float], gates: Gates = GATE
 
     d = derivation(scene_id)
     k = parameter_vector(d, parameters)  # refuses unknown names and values out of range
-    key = (scene_id, tuple(map(float, k)))
-    with _at_lock:
-        if key in _at_cache:
-            _at_cache.move_to_end(key)
-            return _at_cache[key]
-    doc = derivation_document(scene_id)
-    given = dict(zip((p.name for p in d.system.parameters), map(float, k), strict=True))
-    predicted = {"normal_modes": predicted_at(scene_id, d, doc, k)}
-    result = measure(d, predicted, scene_id, doc.get("constraint_forces") or [], gates, given)
-    with _at_lock:
-        _at_cache[key] = result
-        while len(_at_cache) > AT_CACHE_SIZE:
-            _at_cache.popitem(last=False)
-    return result
+
+    def compute() -> list[dict[str, Any]]:
+        doc = derivation_document(scene_id)
+        given = dict(zip((p.name for p in d.system.parameters), map(float, k), strict=True))
+        predicted = {"normal_modes": predicted_at(scene_id, d, doc, k)}
+        return measure(d, predicted, scene_id, doc.get("constraint_forces") or [], gates, given)
+
+    return _at_cache.get((scene_id, tuple(map(float, k))), compute)
 
 
 def measure_scene(scene_id: str, gates: Gates = GATES) -> list[dict[str, Any]]:

@@ -15,9 +15,7 @@ call with a derivation; ``section_of_scene`` looks the scene up.  The result:
 from __future__ import annotations
 
 import json
-import threading
 import time
-from collections import OrderedDict
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -26,6 +24,7 @@ from app.errors import OverCapacity
 from app.numerics import limits
 from app.numerics.errors import SimulationError
 from app.numerics.poincare import hamiltonian, section
+from app.service.cache import Recent
 from app.service.simulation import (
     COMPILED,
     GATES,
@@ -127,21 +126,11 @@ def section_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dic
     )
 
 
-_sections: OrderedDict[str, dict[str, Any]] = OrderedDict()
-_sections_lock = threading.Lock()
 CACHED_SECTIONS = 32
+_sections = Recent(CACHED_SECTIONS)
 
 
 def cached_section_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict[str, Any]:
     """``section_of_scene`` with the last CACHED_SECTIONS answers kept (a page asks again after each run)."""
     key = json.dumps([scene_id, options], sort_keys=True, default=str)
-    with _sections_lock:
-        if key in _sections:
-            _sections.move_to_end(key)
-            return _sections[key]
-    result = section_of_scene(scene_id, gates, **options)
-    with _sections_lock:
-        _sections[key] = result
-        while len(_sections) > CACHED_SECTIONS:
-            _sections.popitem(last=False)
-    return result
+    return _sections.get(key, lambda: section_of_scene(scene_id, gates, **options))

@@ -8,6 +8,8 @@
  *   liveAction(fns, setup)        all of it for one setup (a drag reuses what only ε leaves alone)
  */
 
+import { rk4Scratch, rk4Step } from "./rk4.js";
+
 export const STEPS = 400; // RK4 steps of the browser's true path (an even number: Simpson)
 export const SHAPES = 8; // k = 1 … SHAPES tried for the kind
 
@@ -19,19 +21,12 @@ export function compileLagrangian(preview) {
 /** y(t) on STEPS + 1 even times by RK4 (sub-steps so that h·ω stays small); null if it leaves the finite numbers. */
 export function path(rhs, y0, k, T, steps = STEPS, sub = 4) {
   const m = y0.length, h = T / (steps * sub);
-  const y = Float64Array.from(y0), k1 = new Float64Array(m), k2 = new Float64Array(m), k3 = new Float64Array(m), k4 = new Float64Array(m), tmp = new Float64Array(m);
+  const y = Float64Array.from(y0), scratch = rk4Scratch(m);
   const Y = [Float64Array.from(y)];
   let time = 0;
   for (let s = 0; s < steps; s++) {
     for (let r = 0; r < sub; r++) {
-      rhs(time, y, k, k1);
-      for (let j = 0; j < m; j++) tmp[j] = y[j] + 0.5 * h * k1[j];
-      rhs(time + 0.5 * h, tmp, k, k2);
-      for (let j = 0; j < m; j++) tmp[j] = y[j] + 0.5 * h * k2[j];
-      rhs(time + 0.5 * h, tmp, k, k3);
-      for (let j = 0; j < m; j++) tmp[j] = y[j] + h * k3[j];
-      rhs(time + h, tmp, k, k4);
-      for (let j = 0; j < m; j++) y[j] += (h / 6) * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
+      rk4Step(rhs, time, y, k, h, scratch);
       time += h;
     }
     if (!y.every(Number.isFinite)) return null;

@@ -19,6 +19,7 @@
  * values of g crosses zero, and the state there is interpolated the same way.
  */
 import { compile } from "./expr.js";
+import { rk4Scratch, rk4Step } from "./rk4.js";
 
 const MAX_EVALUATIONS = 400_000; // about 10-20 ms of arithmetic for a small system
 
@@ -60,7 +61,7 @@ export function integrate(preview, rhs, data, request, samples) {
   if ((N - 1) * sub * 4 > MAX_EVALUATIONS) return { error: "the motion is too fast for a preview" };
   const h = dt / sub;
   const m = 2 * n;
-  const k1 = new Float64Array(m), k2 = new Float64Array(m), k3 = new Float64Array(m), k4 = new Float64Array(m), tmp = new Float64Array(m);
+  const scratch = rk4Scratch(m);
   const cols = Array.from({ length: m }, () => new Float64Array(N));
   const t = new Float64Array(N);
   for (let j = 0; j < m; j++) cols[j][0] = y[j];
@@ -85,15 +86,7 @@ export function integrate(preview, rhs, data, request, samples) {
   for (let s = 1; s < N; s++) {
     for (let r = 0; r < sub; r++) {
       prev.set(y);
-      // y(t + h) = y + h/6 (k1 + 2 k2 + 2 k3 + k4)
-      rhs(time, y, k, k1);
-      for (let j = 0; j < m; j++) tmp[j] = y[j] + 0.5 * h * k1[j];
-      rhs(time + 0.5 * h, tmp, k, k2);
-      for (let j = 0; j < m; j++) tmp[j] = y[j] + 0.5 * h * k2[j];
-      rhs(time + 0.5 * h, tmp, k, k3);
-      for (let j = 0; j < m; j++) tmp[j] = y[j] + h * k3[j];
-      rhs(time + h, tmp, k, k4);
-      for (let j = 0; j < m; j++) y[j] += (h / 6) * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
+      rk4Step(rhs, time, y, k, h, scratch);
       time += h;
       for (const e of events) {
         const gb = gOf(e, time, y);
