@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import json
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -219,41 +219,44 @@ def relax_of_derivation(
     }
 
 
-def relax_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict[str, Any]:
+def _of_scene(compute: Callable[..., dict[str, Any]], scene_id: str, gates: Gates, options: dict[str, Any]):
+    """``compute`` (the action, or a relaxed path) on a chapter scene: its derivation, defaults and run length."""
     from app.service.derivations import derivation, derivation_document, scene
 
     s = scene(scene_id)
     forces = derivation_document(scene_id).get("constraint_forces") or []
-    return relax_of_derivation(
+    return compute(
         derivation(scene_id), key=scene_id, defaults=s.initial, span=s.t_end, constraint_forces=forces, gates=gates,
         **options,
     )  # fmt: skip
 
 
-def relax_job(user: Any, options: dict[str, Any]) -> bytes:
-    """Worker job: the relaxed path of a user system."""
+def _of_user(compute: Callable[..., dict[str, Any]], user: Any, options: dict[str, Any]) -> bytes:
+    """``compute`` on a user system, in a pool worker: a refusal names the part of the declaration it is about."""
     from app.service.user_checks import located, simulation_loc
     from app.service.user_jobs import derive_checked, guarded
 
     def run() -> dict[str, Any]:
         d = derive_checked(user)
         try:
-            return relax_of_derivation(d, **options)
+            return compute(d, **options)
         except SimulationError as exc:
             raise located(exc, simulation_loc(user, exc.part)) from None
 
     return guarded(run)
 
 
-def action_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict[str, Any]:
-    from app.service.derivations import derivation, derivation_document, scene
+def relax_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict[str, Any]:
+    return _of_scene(relax_of_derivation, scene_id, gates, options)
 
-    s = scene(scene_id)
-    forces = derivation_document(scene_id).get("constraint_forces") or []
-    return action_of_derivation(
-        derivation(scene_id), key=scene_id, defaults=s.initial, span=s.t_end, constraint_forces=forces, gates=gates,
-        **options,
-    )  # fmt: skip
+
+def relax_job(user: Any, options: dict[str, Any]) -> bytes:
+    """Worker job: the relaxed path of a user system."""
+    return _of_user(relax_of_derivation, user, options)
+
+
+def action_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict[str, Any]:
+    return _of_scene(action_of_derivation, scene_id, gates, options)
 
 
 CACHED_ANSWERS = 64
@@ -268,14 +271,4 @@ def cached_action_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) 
 
 def action_job(user: Any, options: dict[str, Any]) -> bytes:
     """Worker job: the action of a user system (parameter values from its declaration unless given)."""
-    from app.service.user_checks import located, simulation_loc
-    from app.service.user_jobs import derive_checked, guarded
-
-    def run() -> dict[str, Any]:
-        d = derive_checked(user)
-        try:
-            return action_of_derivation(d, **options)
-        except SimulationError as exc:
-            raise located(exc, simulation_loc(user, exc.part)) from None
-
-    return guarded(run)
+    return _of_user(action_of_derivation, user, options)
