@@ -70,10 +70,15 @@ def sanitised(tree: Element) -> str:
     return _REFERENCE.sub(r"&\1", markup)
 
 
+# latex2mathml reads ``aligned`` as plain text (each & shown, each \\ a line break browsers ignore) but ``split``,
+# the same rows aligned at & (right, then left), as a table: the MathML is made from the latter
+_ALIGNED = re.compile(r"\\(begin|end)\{aligned\}")
+
+
 @lru_cache(maxsize=4096)
 def _convert(tex: str, display: bool) -> str | None:
     try:
-        tree = convert_to_element(tex, display="block" if display else "inline")
+        tree = convert_to_element(_ALIGNED.sub(r"\\\1{split}", tex), display="block" if display else "inline")
     except Exception:  # noqa: BLE001 -- any failure of the converter leaves the TeX source readable
         return None
     return sanitised(tree)

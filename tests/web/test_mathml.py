@@ -63,3 +63,10 @@ def test_an_element_outside_the_allowlist_becomes_its_text():
 def test_the_converters_symbols_stay_character_references():
     out = str(mathml(r"\dot{\theta} = \alpha"))
     assert "&#x003B8;" in out and "&#x003B1;" in out and "&amp;#x" not in out
+
+
+def test_aligned_rows_become_a_table_with_no_ampersand_shown():
+    # the derivation's multi-row steps and broken long results (app/engine/breaking.py) read with JavaScript off
+    out = str(mathml(r"\begin{aligned}L &= \frac{1}{2} m \dot{x}^{2} \\ &\quad - \frac{1}{2} k x^{2}\end{aligned}"))
+    assert out.count("<mtr>") == 2 and "<mtable" in out
+    assert "&amp;" not in out and "linebreak" not in out
