@@ -133,11 +133,12 @@ def interactive(browser, base: str, path: str, height: int) -> dict[str, float]:
     page = context.new_page()
     page.goto(path)
     page.wait_for_selector(READY, state="attached", timeout=120_000)
-    # every plot drawn (those out of view are drawn while the browser is idle; the error report and the
-    # Poincaré section only when scrolled into view), then a quiet second
+    # every plot drawn (those out of view are drawn while the browser is idle; the error report, the
+    # Poincaré section and the action only when scrolled into view), then a quiet second
     page.wait_for_function(
         """[...document.querySelectorAll('[data-panel] .plot')]
-             .every((p) => p.closest('[data-panel=work-precision], [data-panel=poincare]') || (p.data && p.data.length))""",
+             .every((p) => p.closest('[data-panel=work-precision], [data-panel=poincare], [data-panel=action]')
+                           || (p.data && p.data.length))""",
         timeout=120_000,
     )
     page.wait_for_timeout(1000)
