@@ -23,6 +23,12 @@ import { compileLagrangian, focus, liveAction, path } from "./action-live.js";
 import { compileRhs } from "./preview.js";
 import { fmt, table } from "./summaries.js";
 
+/** Whether the server's dS/dε at ε = 0 is zero within its quadrature's error (it is, on the true path of an
+ *  unforced system): rounding noise is not shown as a number. */
+function flatWithin(s) {
+  return Math.abs(s.first_variation) <= Math.max(10 * s.error_estimate, 1e-9 * Math.abs(s.true));
+}
+
 const CURVE = 41; // ε values on the S(ε) curve
 const SETTLE_MS = 250; // the server's numbers are asked for once the input has rested this long
 const CONTROLS = 4; // points of a trial path besides its two ends
@@ -279,7 +285,7 @@ export class ActionPanel {
       : `S of your path (ε = ${fmt(this.eps)}, k = ${this.shape}) = ${fmt(Snow)} J·s, ${diff >= 0 ? "higher" : "lower"} by ${fmt(Math.abs(diff))}`;
     this.readout.textContent = `S of the true path = ${fmt(S0)} J·s; ${yours}. `
       + `d²S/dε² at ε = 0 is ${fmt(second)}. ${verdict} ${focusWords}`
-      + (s ? ` Server: S to ±${fmt(s.error_estimate)}, dS/dε at 0 = ${fmt(s.first_variation)}.${s.warnings?.length && !this.data.forced ? ` Note: ${s.warnings.join("; ")}.` : ""}` : " Computed in your browser; the server's numbers follow.");
+      + (s ? ` Server: S to ±${fmt(s.error_estimate)}, dS/dε at 0 ${flatWithin(s) ? "≈ 0 (within the error)" : `= ${fmt(s.first_variation)}`}.${s.warnings?.length && !this.data.forced ? ` Note: ${s.warnings.join("; ")}.` : ""}` : " Computed in your browser; the server's numbers follow.");
     if (this.summary && s) {
       table(this.summary, `S(ε) for the shape k = ${this.shape}, T = ${fmt(T)} s`, ["ε", "S (J·s)"], s.epsilons.map((e, i) => [fmt(e), fmt(s.action[i])]));
     }
