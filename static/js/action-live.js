@@ -8,7 +8,7 @@
  *   liveAction(fns, setup)        all of it for one setup (a drag reuses what only ε leaves alone)
  */
 
-import { rk4Scratch, rk4Step } from "./rk4.js";
+import { rk4Scratch, rk4Step } from "./preview.js";
 
 export const STEPS = 400; // RK4 steps of the browser's true path (an even number: Simpson)
 export const SHAPES = 8; // k = 1 … SHAPES tried for the kind
