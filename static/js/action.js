@@ -30,6 +30,7 @@ function flatWithin(s) {
 }
 
 const CURVE = 41; // ε values on the S(ε) curve
+const REST_MS = 120; // a scene's preview inputs this far apart count as resting (the panel then follows)
 const SETTLE_MS = 250; // the server's numbers are asked for once the input has rested this long
 const CONTROLS = 4; // points of a trial path besides its two ends
 const RELAX_STEPS = 200; // steps of the relaxed path
@@ -133,7 +134,11 @@ export class ActionPanel {
   async draw(run) {
     this.run = run;
     if (!this.visible) return;
-    if (!this.fns) await this.ask(true); // the first answer brings the generated functions
+    if (!this.fns) { await this.ask(true); return; } // the first answer brings the generated functions
+    clearTimeout(this.restTimer);
+    // while a slider is dragged every panel repaints from the browser's preview on each input; this one,
+    // the costliest (a new true path and its S(ε) curve), follows once the input rests
+    if (this.previewing) this.restTimer = setTimeout(() => this.update(true), REST_MS);
     else this.update(true);
   }
 
