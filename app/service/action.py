@@ -232,18 +232,9 @@ def _of_scene(compute: Callable[..., dict[str, Any]], scene_id: str, gates: Gate
 
 
 def _of_user(compute: Callable[..., dict[str, Any]], user: Any, options: dict[str, Any]) -> bytes:
-    """``compute`` on a user system, in a pool worker: a refusal names the part of the declaration it is about."""
-    from app.service.user_checks import located, simulation_loc
-    from app.service.user_jobs import derive_checked, guarded
+    from app.service.user_jobs import derived_job
 
-    def run() -> dict[str, Any]:
-        d = derive_checked(user)
-        try:
-            return compute(d, **options)
-        except SimulationError as exc:
-            raise located(exc, simulation_loc(user, exc.part)) from None
-
-    return guarded(run)
+    return derived_job(user, compute, options)
 
 
 def relax_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict[str, Any]:

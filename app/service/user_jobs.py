@@ -158,20 +158,27 @@ def export_job(
     return guarded(run)
 
 
-def poincare_job(user: UserSystem, options: dict[str, Any]) -> bytes:
-    """Worker job: the Poincaré section of a user system (app.service.poincare)."""
+def derived_job(user: UserSystem, compute: Callable[..., dict[str, Any]], options: dict[str, Any]) -> bytes:
+    """``compute(derivation, **options)`` on a user system in a pool worker (parameter values are the declared
+    ones, the derivation's defaults, unless ``options`` gives others): a refusal names the part of the
+    declaration it is about."""
     from app.numerics.errors import SimulationError
-    from app.service.poincare import section_of_derivation
 
     def run() -> dict[str, Any]:
         d = derive_checked(user)
         try:
-            # parameter values are the declared ones (the derivation's defaults)
-            return section_of_derivation(d, **options)
+            return compute(d, **options)
         except SimulationError as exc:
             raise located(exc, simulation_loc(user, exc.part)) from None
 
     return guarded(run)
+
+
+def poincare_job(user: UserSystem, options: dict[str, Any]) -> bytes:
+    """Worker job: the Poincaré section of a user system (app.service.poincare)."""
+    from app.service.poincare import section_of_derivation
+
+    return derived_job(user, section_of_derivation, options)
 
 
 def modes_job(user: UserSystem, normal_modes: list[dict[str, Any]]) -> bytes:
