@@ -408,8 +408,8 @@ def judge(pb: Problem, text: str) -> dict[str, Any]:
     return _verdict("incorrect", message, shown, _hint(pb, answer, a, b, truth), partial=partial)
 
 
-def judge_follow_up(pb: Problem, key: str, text: str) -> dict[str, Any]:
-    """The verdict on the answer to a named mistake's follow-up question (a CheckError when it has none)."""
+def follow_up_mistake(pb: Problem, key: str) -> Mistake:
+    """The named mistake of this step that asks a follow-up question (a CheckError naming the ones that do)."""
     mistake = pb.mistake(key)
     if mistake is None or mistake.follow_up is None:
         keys = [m.key for m, _, _ in pb.mistakes if m.follow_up is not None]
@@ -419,7 +419,14 @@ def judge_follow_up(pb: Problem, key: str, text: str) -> dict[str, Any]:
             "follow_up",
             key[:80],
         )
+    return mistake
+
+
+def judge_follow_up(pb: Problem, key: str, text: str) -> dict[str, Any]:
+    """The verdict on the answer to a named mistake's follow-up question (a CheckError when it has none)."""
+    mistake = follow_up_mistake(pb, key)
     fu = mistake.follow_up
+    assert fu is not None  # follow_up_mistake refuses a mistake without a question
     answer = parse_answer(pb, text, fu.kind)
     if fu.relation == "magnitude":
         # a speed or a stretch: either sign is the same size

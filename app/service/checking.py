@@ -30,7 +30,17 @@ from collections import OrderedDict
 from collections.abc import Callable, Mapping
 from typing import Any
 
-from app.engine.check import STEPS, CheckError, Problem, check_answer, judge, judge_follow_up, name_kinds, problem
+from app.engine.check import (
+    STEPS,
+    CheckError,
+    Problem,
+    check_answer,
+    follow_up_mistake,
+    judge,
+    judge_follow_up,
+    name_kinds,
+    problem,
+)
 from app.engine.derive import Derivation
 from app.engine.errors import DerivationError
 from app.engine.exercises import exercise_json
@@ -181,16 +191,12 @@ class Checking:
         pb = await asyncio.to_thread(self.scene_problem, scene_id, step, coordinate)
         kind = step
         if follow_up is not None:
-            mistake = pb.mistake(follow_up)
-            if mistake is None or mistake.follow_up is None:
-                keys = [m.key for m, _, _ in pb.mistakes if m.follow_up is not None]
-                raise InvalidSystem(
-                    f"follow_up: {follow_up[:80]!r} is not a mistake of this step with a question; "
-                    + (f"the ones with a question are: {', '.join(keys)}" if keys else "this step has none"),
-                    ("follow_up",),
-                    follow_up[:80],
-                )
-            kind = mistake.follow_up.kind
+            try:
+                fu = follow_up_mistake(pb, follow_up).follow_up
+            except CheckError as exc:
+                raise refusal(exc) from None
+            assert fu is not None
+            kind = fu.kind
         try:
             check_answer(answer, kind, pb.kinds)
         except CheckError as exc:
