@@ -18,6 +18,7 @@ from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
 from app.web.compression import ApiCompression
 from app.web.headers import SecurityHeaders
+from app.web.page_cache import PageCache
 from app.web.pages_classes import router as classes_router
 from app.web.playground import router as playground_router
 from app.web.playground import warm_examples
@@ -38,13 +39,14 @@ async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
         warming = simulation.start_warming()
         # then the playground's examples (from the disk cache set-up filled), so that a first reader of one
         # does not wait for its derivation
-        examples = warm_examples(services.users, after=warming)
+        examples = warm_examples(services.users, services.answers.examples, after=warming)
         # and the scenes' worker process, with the chapter's systems loaded
         services.warm(after=warming)
         # then what they loaded lives for the process: out of the garbage collector's full scans
         freeze_when_done(warming, examples)
     try:
-        yield {"services": services}
+        # the scene pages' models and rendered bytes beside them (app/web/page_cache.py, app/web/deps.py)
+        yield {"services": services, "pages": PageCache()}
     finally:
         recording.set()
         services.stop()  # the worker pool's processes joined

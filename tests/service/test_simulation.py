@@ -122,13 +122,15 @@ def test_work_precision_without_an_exact_solution_checks_its_reference():
     assert all(r["error"] is not None and r["error"] < 1e-3 for r in data["runs"])
 
 
-def test_work_precision_is_cached_per_scene(monkeypatch):
+def test_work_precision_is_cached_per_scene(monkeypatch, tmp_path):
     calls = []
     monkeypatch.setattr(work_precision, "compute", lambda scene_id: calls.append(scene_id) or {"runs": []})
-    monkeypatch.setattr(work_precision, "_cache", work_precision.JsonCache("wp-test", "x"))
-    monkeypatch.setattr(work_precision._cache, "_write", lambda path, value: None)
-    work_precision.for_scene("pulley")
-    work_precision.for_scene("pulley")
+    cache = work_precision.report_cache(tmp_path)  # the app's is given by its services (app/service/answers.py)
+    work_precision.for_scene("pulley", cache)
+    work_precision.for_scene("pulley", cache)
+    assert calls == ["pulley"]
+    # a new process (a new cache on the same disk) reads the report instead of computing it
+    assert work_precision.for_scene("pulley", work_precision.report_cache(tmp_path)) == {"runs": []}
     assert calls == ["pulley"]
 
 

@@ -5,6 +5,8 @@ import pytest
 from app.numerics import limits
 from app.scenes import SCENES
 from app.service import work_precision
+from app.service.answers import Answers
+from app.web.deps import remembered_answers
 
 
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
@@ -113,11 +115,16 @@ def test_runaway_stops_with_a_message(client):
     assert len(doc["t"]) < 500 and any("ran away" in w for w in doc["stats"]["warnings"])
 
 
-def test_work_precision_endpoint(client, monkeypatch):
+def test_work_precision_endpoint(client, monkeypatch, tmp_path):
     monkeypatch.setattr(work_precision, "SWEEP", [1e-3, 1e-6])
-    monkeypatch.setattr(work_precision, "_cache", work_precision.JsonCache("wp-api-test", "x"))
-    monkeypatch.setattr(work_precision._cache, "_write", lambda path, value: None)
-    doc = client.get("/api/scenes/incline-block/work-precision").json()
+    answers = Answers.start(tmp_path)  # the route's caches, empty, on a disk of their own
+    client.app.dependency_overrides[remembered_answers] = lambda: answers
+    try:
+        doc = client.get("/api/scenes/incline-block/work-precision").json()
+    finally:
+        client.app.dependency_overrides.pop(remembered_answers)
+    # the report went to the app's cache, not to a module's
+    assert [p.name.startswith("incline-block-") for p in (tmp_path / "work-precision").iterdir()] == [True]
     assert "constant-acceleration" in doc["reference"]
     methods = {run["method"] for run in doc["runs"]}
     assert len(methods) >= 4
