@@ -28,8 +28,9 @@ from app.web.templating import static_app
 @asynccontextmanager
 async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
     # the services (worker pool, user systems, checking, simulation slots), given to the routes by app/web/deps.py
-    services = Services.start(settings())
-    recording = resident.start_recording()  # this process's size, for the memory budget of the workers it starts
+    config = settings()
+    services = Services.start(config)
+    recording = resident.start_recording(config)  # this process's size, for the memory budget of the workers it starts
     # Fill the derivation cache, then load the compiled integrators and the scenes'
     # right-hand sides, in the background: the server answers at once, with scipy
     # while a compiled integrator is not ready yet.
