@@ -216,12 +216,11 @@ def test_reference_run_beside_the_run_gives_the_same_estimate(monkeypatch):
 
 
 @pytest.mark.parametrize(("load", "busy", "free"), [(0.0, 0, True), (1.2, 0, True), (1.6, 0, False), (0.0, 2, False)])
-def test_a_reference_runs_beside_only_while_half_a_core_is_idle(monkeypatch, load, busy, free):
+def test_a_reference_runs_beside_only_while_half_a_core_is_idle(load, busy, free):
     from app.numerics import simulate as numerics_simulate
 
-    cores = numerics_simulate._Cores()
-    cores.count, cores.busy = 2, busy
-    monkeypatch.setattr(numerics_simulate, "_machine_load", lambda: load)
+    cores = numerics_simulate._Cores(2, load=lambda: load)
+    cores.busy = busy
     assert cores.take() is free
     assert cores.take(force=True) and cores.busy == busy + 1 + free  # a run's own core is always taken
 
