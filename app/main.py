@@ -79,7 +79,7 @@ ROUTERS = [
     check_router,
     classes_router,
 ]
-app.mount("/static", static_app, name="static")
+app.mount("/static", static_app(), name="static")
 for router in ROUTERS:
     app.include_router(router)
 

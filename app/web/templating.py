@@ -1,7 +1,7 @@
 """The Jinja2 templates object and the /static files app, shared by every page.
 
-``templates`` renders files under ``templates/`` (autoescaped); ``static_app``
-serves ``static/`` (our CSS and JS modules, and ``static/vendor`` -- KaTeX and
+``templates`` renders files under ``templates/`` (autoescaped); ``static_app()``,
+the app's own (mounted by ``app.main``, with its cache of compressed files), serves ``static/`` (our CSS and JS modules, and ``static/vendor`` -- KaTeX and
 plotly.js copied from npm by scripts/assets.sh, never from a CDN).
 Templates get ``static(path)``, a URL with a version stamp so a browser never
 keeps a stale module after an upgrade.
@@ -91,7 +91,11 @@ TEMPLATES_DIR = ROOT / "templates"
 STATIC_DIR = ROOT / "static"
 
 templates = Jinja2Templates(directory=str(TEMPLATES_DIR))
-static_app = ClassroomStaticFiles(directory=str(STATIC_DIR), check_dir=False)
+
+
+def static_app() -> ClassroomStaticFiles:
+    """A new /static files app (each app mounts its own: its compressed files are its own)."""
+    return ClassroomStaticFiles(directory=str(STATIC_DIR), check_dir=False)
 
 
 @cache
