@@ -36,5 +36,5 @@ def test_a_new_model_renders_the_page_again():
     renders = []
     one, two = {"m": 1}, {"m": 2}
     for model in (one, one, two):
-        pages.page("s", model, lambda: renders.append(model) or b"page %d" % len(renders))
+        pages.page("s", model, lambda model=model: renders.append(model) or b"page %d" % len(renders))
     assert renders == [one, two]
