@@ -1,7 +1,8 @@
 """What routes are given through ``Depends``: the services and who is asking.
 
-The services are built once by the app's lifespan (``app.main``) and reach the
-routes as lifespan state; tests replace any of them with
+The services are built once by the app's lifespan (``app.main``), with the scene
+pages' cache beside them (``PageCache``), and reach the routes as lifespan state;
+what a running app remembers is theirs (docs/state.md).  Tests replace any of them with
 ``app.dependency_overrides[...]`` (a fake service, a gate with other limits)
 instead of patching module globals.
 
