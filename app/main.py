@@ -18,6 +18,7 @@ from app.web.api_simulate import router as simulate_router
 from app.web.api_user import router as user_router
 from app.web.compression import ApiCompression
 from app.web.headers import SecurityHeaders
+from app.web.page_cache import PageCache
 from app.web.pages_classes import router as classes_router
 from app.web.playground import router as playground_router
 from app.web.playground import warm_examples
@@ -27,8 +28,9 @@ from app.web.templating import static_app
 @asynccontextmanager
 async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
     # the services (worker pool, user systems, checking, simulation slots), given to the routes by app/web/deps.py
-    services = Services.start(settings())
-    recording = resident.start_recording()  # this process's size, for the memory budget of the workers it starts
+    config = settings()
+    services = Services.start(config)
+    recording = resident.start_recording(config)  # this process's size, for the memory budget of the workers it starts
     # Fill the derivation cache, then load the compiled integrators and the scenes'
     # right-hand sides, in the background: the server answers at once, with scipy
     # while a compiled integrator is not ready yet.
@@ -38,13 +40,14 @@ async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
         warming = simulation.start_warming()
         # then the playground's examples (from the disk cache set-up filled), so that a first reader of one
         # does not wait for its derivation
-        examples = warm_examples(services.users, after=warming)
+        examples = warm_examples(services.users, services.answers.examples, after=warming)
         # and the scenes' worker process, with the chapter's systems loaded
         services.warm(after=warming)
         # then what they loaded lives for the process: out of the garbage collector's full scans
         freeze_when_done(warming, examples)
     try:
-        yield {"services": services}
+        # the scene pages' models and rendered bytes beside them (app/web/page_cache.py, app/web/deps.py)
+        yield {"services": services, "pages": PageCache()}
     finally:
         recording.set()
         services.stop()  # the worker pool's processes joined
@@ -76,7 +79,7 @@ ROUTERS = [
     check_router,
     classes_router,
 ]
-app.mount("/static", static_app, name="static")
+app.mount("/static", static_app(), name="static")
 for router in ROUTERS:
     app.include_router(router)
 

@@ -65,10 +65,10 @@ def kernels_cache(numba_cache: Path) -> Path:
     return numba_cache / f"{KERNELS.name}_{hashlib.sha1(folder.encode()).hexdigest()}"
 
 
-def kernels_stamp() -> str:
-    """A hash of every source file of the kernels' package."""
+def kernels_stamp(folder: Path = KERNELS) -> str:
+    """A hash of every source file of the kernels' package (``folder``)."""
     digest = hashlib.sha256()
-    for source in sorted(KERNELS.glob("*.py")):
+    for source in sorted(folder.glob("*.py")):
         digest.update(source.name.encode())
         digest.update(source.read_bytes())
     return digest.hexdigest()

@@ -70,14 +70,16 @@ class _Cores:
     sending requests back to back holds it near 1; a threshold of cores - 1 (the rule before) took
     the second core from that client on a 2-core machine, and its estimate ran after its run."""
 
-    def __init__(self) -> None:
-        self.count = os.cpu_count() or 1
+    def __init__(self, count: int | None = None, load: Callable[[], float] | None = None) -> None:
+        self.count = count or os.cpu_count() or 1
+        self.load = load  # the machine's load average (``_machine_load`` when not given)
         self.busy = 0
         self.lock = threading.Lock()
 
     def take(self, force: bool = False) -> bool:
         with self.lock:
-            if not force and (self.busy >= self.count or _machine_load() > self.count - IDLE_NEEDED):
+            load = (self.load or _machine_load)()
+            if not force and (self.busy >= self.count or load > self.count - IDLE_NEEDED):
                 return False
             self.busy += 1
             return True

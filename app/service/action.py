@@ -250,14 +250,14 @@ def action_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict
     return _of_scene(action_of_derivation, scene_id, gates, options)
 
 
-CACHED_ANSWERS = 64
-_answers = Recent(CACHED_ANSWERS)
+CACHED_ANSWERS = 64  # the size of the app's ``Recent`` of actions (app/service/answers.py)
 
 
-def cached_action_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict[str, Any]:
-    """``action_of_scene`` with the last CACHED_ANSWERS answers kept (a panel asks again for the same T)."""
+def cached_action_of_scene(scene_id: str, gates: Gates, remembered: Recent, **options: Any) -> dict[str, Any]:
+    """``action_of_scene`` through ``remembered``, the app's last CACHED_ANSWERS answers (a panel asks again
+    for the same T)."""
     key = json.dumps([scene_id, options], sort_keys=True, default=str)
-    return _answers.get(key, lambda: action_of_scene(scene_id, gates, **options))
+    return remembered.get(key, lambda: action_of_scene(scene_id, gates, **options))
 
 
 def action_job(user: Any, options: dict[str, Any]) -> bytes:

@@ -77,15 +77,16 @@ class JsonCache:
 
     suffix = ".json"
 
-    def __init__(self, namespace: str, fingerprint: str):
+    def __init__(self, namespace: str, fingerprint: str, folder: Path | None = None):
         self.namespace = namespace
         self.fingerprint = fingerprint
+        self.folder = folder  # the cache's root (``settings().cache_dir`` when not given)
         self._memory: dict[str, Any] = {}
         self._locks: dict[str, threading.Lock] = {}
         self._guard = threading.Lock()
 
     def _path(self, key: str) -> Path:
-        return cache_dir() / self.namespace / f"{key}-{self.fingerprint}{self.suffix}"
+        return (self.folder or cache_dir()) / self.namespace / f"{key}-{self.fingerprint}{self.suffix}"
 
     def _lock(self, key: str) -> threading.Lock:
         with self._guard:

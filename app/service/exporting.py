@@ -10,11 +10,11 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
-from functools import lru_cache
 from typing import Any
 
 from app.engine.derive import Derivation
 from app.service import derivations
+from app.service.cache import Recent
 from app.service.export import filename, render
 from app.service.export.source import FORMATS, scene_source, system_source
 from app.service.simulation import DEFAULT_T_END, initial_state
@@ -33,15 +33,22 @@ def _check_format(fmt: str) -> str:
     return fmt
 
 
-@lru_cache(maxsize=64)
-def scene_export(scene_id: str, fmt: str) -> Exported:
-    """A scene's derivation as a file (run in a thread: the first call may derive)."""
+CACHED_EXPORTS = 64  # the size of the app's ``Recent`` of exports (app/service/answers.py)
+
+
+def scene_export(scene_id: str, fmt: str, remembered: Recent | None = None) -> Exported:
+    """A scene's derivation as a file (run in a thread: the first call may derive), through ``remembered``
+    (the app's recent exports) when given."""
     _check_format(fmt)
-    scene = derivations.scene(scene_id)
-    d = derivations.derivation(scene_id)
-    y0 = initial_state(d, {}, scene.initial)
-    source = scene_source(scene, d, derivations.derivation_document(scene_id), tuple(y0.tolist()))
-    return Exported(render(source, fmt).encode(), filename(source, fmt), FORMATS[fmt][0])
+
+    def make() -> Exported:
+        scene = derivations.scene(scene_id)
+        d = derivations.derivation(scene_id)
+        y0 = initial_state(d, {}, scene.initial)
+        source = scene_source(scene, d, derivations.derivation_document(scene_id), tuple(y0.tolist()))
+        return Exported(render(source, fmt).encode(), filename(source, fmt), FORMATS[fmt][0])
+
+    return make() if remembered is None else remembered.get((scene_id, fmt), make)
 
 
 def system_export(

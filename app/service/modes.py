@@ -24,6 +24,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 from functools import lru_cache
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -44,7 +45,10 @@ AMPLITUDE = 1e-4  # of the largest component, in the coordinate's own unit
 CYCLES = 20  # of the mode measured
 SAMPLES_PER_CYCLE = 200
 
-_cache = JsonCache("modes-measured", source_fingerprint("engine", "scenes", "numerics", "viz", "service"))
+
+def measured_cache(folder: Path | None = None) -> JsonCache:
+    """The measured modes' cache (memory, then disk): the app's services hold one (app/service/answers.py)."""
+    return JsonCache("modes-measured", source_fingerprint("engine", "scenes", "numerics", "viz", "service"), folder)
 
 
 def measure(
@@ -187,12 +191,14 @@ def predicted_at(scene_id: str, d: Derivation, doc: Mapping[str, Any], k: np.nda
     return out
 
 
-AT_CACHE_SIZE = 256
-_at_cache = Recent(AT_CACHE_SIZE)
+AT_CACHE_SIZE = 256  # the size of the app's ``Recent`` of modes at given values (app/service/answers.py)
 
 
-def modes_at(scene_id: str, parameters: Mapping[str, float], gates: Gates = GATES) -> list[dict[str, Any]]:
-    """A scene's modes, predicted and measured, at the given parameter values (the rest at their defaults)."""
+def modes_at(
+    scene_id: str, parameters: Mapping[str, float], gates: Gates = GATES, remembered: Recent | None = None
+) -> list[dict[str, Any]]:
+    """A scene's modes, predicted and measured, at the given parameter values (the rest at their defaults),
+    through ``remembered`` (the app's recent answers) when given."""
     from app.service.derivations import derivation, derivation_document
 
     d = derivation(scene_id)
@@ -204,15 +210,15 @@ def modes_at(scene_id: str, parameters: Mapping[str, float], gates: Gates = GATE
         predicted = {"normal_modes": predicted_at(scene_id, d, doc, k)}
         return measure(d, predicted, scene_id, doc.get("constraint_forces") or [], gates, given)
 
-    return _at_cache.get((scene_id, tuple(map(float, k))), compute)
+    return compute() if remembered is None else remembered.get((scene_id, tuple(map(float, k))), compute)
 
 
-def measure_scene(scene_id: str, gates: Gates = GATES) -> list[dict[str, Any]]:
-    """A scene's measured modes (computed once, then from the cache)."""
+def measure_scene(scene_id: str, gates: Gates = GATES, cache: JsonCache | None = None) -> list[dict[str, Any]]:
+    """A scene's measured modes (computed once, then from ``cache``, by default the disk's)."""
     from app.service.derivations import derivation, derivation_document
 
     doc = derivation_document(scene_id)
-    return _cache.get(
+    return (cache or measured_cache()).get(
         scene_id, lambda: measure(derivation(scene_id), doc, scene_id, doc.get("constraint_forces") or [], gates)
     )
 
@@ -221,7 +227,8 @@ def warm_all() -> None:
     """Measure every scene that has an equilibrium with an oscillating mode (run at set-up, see app.service.warm)."""
     from app.service.derivations import SCENES, derivation_document
 
+    cache = measured_cache()
     for scene_id in SCENES:
         if oscillating_equilibria(derivation_document(scene_id)):
-            measure_scene(scene_id)
+            measure_scene(scene_id, cache=cache)
             _parametric(scene_id)  # the closed forms the sliders' modes are evaluated from

@@ -126,11 +126,11 @@ def section_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dic
     )
 
 
-CACHED_SECTIONS = 32
-_sections = Recent(CACHED_SECTIONS)
+CACHED_SECTIONS = 32  # the size of the app's ``Recent`` of sections (app/service/answers.py)
 
 
-def cached_section_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict[str, Any]:
-    """``section_of_scene`` with the last CACHED_SECTIONS answers kept (a page asks again after each run)."""
+def cached_section_of_scene(scene_id: str, gates: Gates, remembered: Recent, **options: Any) -> dict[str, Any]:
+    """``section_of_scene`` through ``remembered``, the app's last CACHED_SECTIONS answers (a page asks again
+    after each run)."""
     key = json.dumps([scene_id, options], sort_keys=True, default=str)
-    return _sections.get(key, lambda: section_of_scene(scene_id, gates, **options))
+    return remembered.get(key, lambda: section_of_scene(scene_id, gates, **options))

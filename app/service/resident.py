@@ -17,7 +17,6 @@ import os
 import threading
 from pathlib import Path
 
-from app.service.cache import cache_dir
 from app.settings import Settings, settings
 
 EVERY = 30.0  # seconds between two records of a web process's size
@@ -33,14 +32,14 @@ def resident_mb(pid: int | None = None) -> int:
         return 0
 
 
-def _folder() -> Path:
-    return Path(cache_dir()) / FOLDER
+def _folder(config: Settings | None) -> Path:
+    return Path((config or settings()).cache_dir) / FOLDER
 
 
-def record(pid: int | None = None) -> None:
-    """Write this web process's resident size where the workers read it."""
+def record(pid: int | None = None, config: Settings | None = None) -> None:
+    """Write this web process's resident size where the workers read it (``config``'s cache folder)."""
     pid = pid or os.getpid()
-    folder = _folder()
+    folder = _folder(config)
     try:
         folder.mkdir(parents=True, exist_ok=True)
         temporary = folder / f".{pid}.tmp"
@@ -50,11 +49,11 @@ def record(pid: int | None = None) -> None:
         pass  # a read-only disk: the budget keeps its configured size
 
 
-def measured_web_mb() -> int:
+def measured_web_mb(config: Settings | None = None) -> int:
     """The largest resident size recorded by a live web process (0 when none is recorded); stale files go."""
     largest = 0
     try:
-        entries = list(_folder().iterdir())
+        entries = list(_folder(config).iterdir())
     except OSError:
         return 0
     for entry in entries:
@@ -73,20 +72,20 @@ def measured_web_mb() -> int:
 def job_memory_mb(config: Settings | None = None) -> int:
     """The per-job memory cap with the measured web size in the budget (when larger than the configured one)."""
     config = config or settings()
-    measured = measured_web_mb()
+    measured = measured_web_mb(config)
     if measured > config.web_process_mb:
         config = config.model_copy(update={"web_process_mb": measured})
     return config.job_memory_mb
 
 
-def start_recording() -> threading.Event:
+def start_recording(config: Settings | None = None) -> threading.Event:
     """Record this process's size now and every ``EVERY`` seconds (a daemon thread), until the event is set."""
     stop = threading.Event()
 
     def loop() -> None:
-        record()
+        record(config=config)
         while not stop.wait(EVERY):
-            record()
+            record(config=config)
 
     threading.Thread(target=loop, name="record-resident", daemon=True).start()
     return stop

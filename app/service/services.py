@@ -13,6 +13,7 @@ import logging
 import threading
 from dataclasses import dataclass
 
+from app.service.answers import Answers
 from app.service.checking import Checking
 from app.service.classroom.service import Classroom
 from app.service.simulation import Gates, load_scenes
@@ -31,6 +32,7 @@ class Services:
     gates: Gates  # how many scene simulations, Poincaré sections and mode measurements run at once
     scenes: WorkerPool  # one process for the scenes' runs that step in Python (scipy), off the event loop's GIL
     classes: Classroom  # classes and their recorded attempts (a database, connected at first use)
+    answers: Answers  # what the app remembers of scenes' answers and the examples (app/service/answers.py)
 
     @classmethod
     def start(cls, config: Settings) -> Services:
@@ -45,7 +47,7 @@ class Services:
         # a server that compiles in the background (the warm setting) answers from scipy meanwhile
         gates = Gates(offload=scenes.run, answer_while_compiling=config.warm)
         checking = Checking(users, config)
-        return cls(pool, users, checking, gates, scenes, Classroom(checking, config))
+        return cls(pool, users, checking, gates, scenes, Classroom(checking, config), Answers.start(config.cache_dir))
 
     def warm(self, after: threading.Thread | None = None) -> threading.Thread:
         """Start the scenes' worker and load the chapter's systems in it (after ``after``, the

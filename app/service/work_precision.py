@@ -13,6 +13,7 @@ single run takes longer than ``REPEAT_BELOW`` seconds).
 from __future__ import annotations
 
 import time
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -31,7 +32,10 @@ REPEAT_BELOW = 0.25  # seconds
 RUN_SECONDS = 2.0  # budget of one run; slower tolerances of that method are skipped
 BOUND = 1.0e8
 
-_cache = JsonCache("work-precision", source_fingerprint("engine", "scenes", "numerics"))
+
+def report_cache(folder: Path | None = None) -> JsonCache:
+    """The reports' cache (memory, then disk): the app's services hold one (app/service/answers.py)."""
+    return JsonCache("work-precision", source_fingerprint("engine", "scenes", "numerics"), folder)
 
 
 def _problem(system, k, y0, t_end, rtol, seconds) -> Problem:
@@ -133,17 +137,19 @@ def _skipped(name: str, rtol: float, note: str) -> dict[str, Any]:
     return {"method": name, "rtol": rtol, "error": None, "wall_time_s": None, "rhs_evaluations": None, "note": note}
 
 
-def for_scene(scene_id: str) -> dict[str, Any]:
-    """The scene's work-precision data (memory and disk cached; computed once per engine/numerics version)."""
+def for_scene(scene_id: str, cache: JsonCache | None = None) -> dict[str, Any]:
+    """The scene's work-precision data through ``cache`` (memory and disk, by default the disk's: computed once
+    per engine/numerics version)."""
     scene(scene_id)
-    return _cache.get(scene_id, lambda: compute(scene_id))
+    return (cache or report_cache()).get(scene_id, lambda: compute(scene_id))
 
 
 def warm_all() -> None:
     from app.scenes import SCENES
 
+    cache = report_cache()
     for scene_id in SCENES:
-        for_scene(scene_id)
+        for_scene(scene_id, cache)
 
 
 if __name__ == "__main__":

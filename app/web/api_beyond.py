@@ -15,7 +15,7 @@ from app.service import modes, poincare
 from app.service.user_checks import checked
 from app.web.api_simulate import BODY_ERRORS, ERRORS
 from app.web.api_user import _errors, answer
-from app.web.deps import ClientDep, GatesDep, UserSystemsDep
+from app.web.deps import AnswersDep, ClientDep, GatesDep, UserSystemsDep
 from app.web.responses import FastJSONResponse
 from app.web.schemas import SESSION_COOKIE
 from app.web.schemas_beyond import (
@@ -49,9 +49,10 @@ MODES_TEXT = MODES_CORE + " (default parameters)."
     response_model=None,
     responses={200: {"model": PoincareResponse}, **ERRORS, **BODY_ERRORS},
 )
-def scene_poincare(scene_id: str, request: PoincareRequest, gates: GatesDep) -> Any:
+def scene_poincare(scene_id: str, request: PoincareRequest, gates: GatesDep, answers: AnswersDep) -> Any:
     # a refusal (SimulationError) or an unknown scene is answered by app/web/errors.py
-    return FastJSONResponse(poincare.cached_section_of_scene(scene_id, gates, **poincare_options(request)))
+    options = poincare_options(request)
+    return FastJSONResponse(poincare.cached_section_of_scene(scene_id, gates, answers.sections, **options))
 
 
 @router.get(
@@ -61,8 +62,8 @@ def scene_poincare(scene_id: str, request: PoincareRequest, gates: GatesDep) -> 
     response_model=list[MeasuredModes],
     responses={404: ERRORS[404], 429: ERRORS[429]},
 )
-def scene_modes(scene_id: str, gates: GatesDep) -> Any:
-    return FastJSONResponse(modes.measure_scene(scene_id, gates))
+def scene_modes(scene_id: str, gates: GatesDep, answers: AnswersDep) -> Any:
+    return FastJSONResponse(modes.measure_scene(scene_id, gates, answers.measured_modes))
 
 
 @router.post(
@@ -75,9 +76,9 @@ def scene_modes(scene_id: str, gates: GatesDep) -> Any:
     response_model=list[MeasuredModes],
     responses={**ERRORS, **BODY_ERRORS},
 )
-def scene_modes_at(scene_id: str, request: ModesRequest, gates: GatesDep) -> Any:
+def scene_modes_at(scene_id: str, request: ModesRequest, gates: GatesDep, answers: AnswersDep) -> Any:
     # a value out of range or an unknown name (SimulationError) is answered by app/web/errors.py
-    return FastJSONResponse(modes.modes_at(scene_id, request.parameters, gates))
+    return FastJSONResponse(modes.modes_at(scene_id, request.parameters, gates, answers.modes_at))
 
 
 @router.post(

@@ -10,6 +10,7 @@ from fastapi.responses import Response
 from app.service import derivations, exporting
 from app.service.export.source import FORMATS
 from app.service.exporting import Exported
+from app.web.deps import AnswersDep
 from app.web.schemas import ErrorResponse, SceneSummary
 from app.web.schemas_export import FORMAT_HELP, ExportFormat
 
@@ -62,7 +63,7 @@ EXPORT_CONTENT = {media: {"schema": {"type": "string"}} for media, _ in FORMATS.
     },
 )
 def scene_export(
-    scene_id: str, fmt: Annotated[ExportFormat, Query(alias="format", description=FORMAT_HELP)]
+    scene_id: str, fmt: Annotated[ExportFormat, Query(alias="format", description=FORMAT_HELP)], answers: AnswersDep
 ) -> Response:
     # a plain `def`: the first export of a scene may derive it, in FastAPI's thread pool
-    return download(exporting.scene_export(scene_id, fmt))
+    return download(exporting.scene_export(scene_id, fmt, answers.exports))

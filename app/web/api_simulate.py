@@ -12,7 +12,7 @@ from typing import Any
 from fastapi import APIRouter
 
 from app.service import simulation, work_precision
-from app.web.deps import GatesDep
+from app.web.deps import AnswersDep, GatesDep
 from app.web.limits import MAX_BODY_BYTES
 from app.web.responses import FastJSONResponse
 from app.web.schemas import ErrorResponse
@@ -61,5 +61,5 @@ def simulate_scene(scene_id: str, request: SimulateRequest, gates: GatesDep) -> 
     response_model=WorkPrecision,
     responses={404: ERRORS[404]},
 )
-def scene_work_precision(scene_id: str) -> dict[str, Any]:
-    return work_precision.for_scene(scene_id)
+def scene_work_precision(scene_id: str, answers: AnswersDep) -> dict[str, Any]:
+    return work_precision.for_scene(scene_id, answers.work_precision)

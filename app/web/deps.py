@@ -1,7 +1,8 @@
 """What routes are given through ``Depends``: the services and who is asking.
 
-The services are built once by the app's lifespan (``app.main``) and reach the
-routes as lifespan state; tests replace any of them with
+The services are built once by the app's lifespan (``app.main``), with the scene
+pages' cache beside them (``PageCache``), and reach the routes as lifespan state;
+what a running app remembers is theirs (docs/state.md).  Tests replace any of them with
 ``app.dependency_overrides[...]`` (a fake service, a gate with other limits)
 instead of patching module globals.
 
@@ -19,12 +20,14 @@ from typing import Annotated
 from fastapi import Depends, Request
 from fastapi.responses import Response
 
+from app.service.answers import Answers
 from app.service.checking import Checking
 from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Fairness
 from app.service.services import Services
 from app.service.simulation import Gates
 from app.service.user_systems import UserSystems
 from app.web.address import client_address
+from app.web.page_cache import PageCache
 
 
 async def services(request: Request) -> Services:
@@ -47,9 +50,20 @@ async def simulation_gates(running: ServicesDep) -> Gates:
     return running.gates
 
 
+async def remembered_answers(running: ServicesDep) -> Answers:
+    return running.answers
+
+
+async def page_cache(request: Request) -> PageCache:
+    """The scene pages' models and rendered bytes, built by the lifespan beside the services."""
+    return request.state.pages
+
+
 UserSystemsDep = Annotated[UserSystems, Depends(user_systems_service)]
 CheckingDep = Annotated[Checking, Depends(checking_service)]
 GatesDep = Annotated[Gates, Depends(simulation_gates)]
+AnswersDep = Annotated[Answers, Depends(remembered_answers)]
+PagesDep = Annotated[PageCache, Depends(page_cache)]
 
 
 async def fairness_gate(users: UserSystemsDep) -> Fairness:

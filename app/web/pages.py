@@ -2,15 +2,13 @@
 
 Pages are rendered on the server from the derivation JSON (cached by the
 service layer) through the page model of ``app.viz.page_model``; the model of
-each scene is built once per process, so a warm request only renders the
-template.  Routes are plain ``def``: a first, uncached derivation runs in the
+each scene is built once per app (its ``PageCache``, app/web/page_cache.py), so a
+warm request only renders the template.  Routes are plain ``def``: a first, uncached derivation runs in the
 thread pool, never on the event loop.
 """
 
 from __future__ import annotations
 
-import gzip
-import threading
 from typing import Any
 
 from fastapi import APIRouter, Request
@@ -22,13 +20,12 @@ from app.service import derivations
 from app.viz.chapter import table_of_contents
 from app.viz.diagrams import diagram
 from app.viz.page_model import scene_page
+from app.web.deps import PagesDep
 from app.web.errors import problem
+from app.web.page_cache import PageCache
 from app.web.templating import templates
 
 router = APIRouter(tags=["pages"], include_in_schema=False)
-
-_models: dict[str, tuple[int, dict[str, Any]]] = {}
-_lock = threading.Lock()
 
 
 def scene_info(scene_id: str, doc: dict[str, Any]) -> dict[str, Any]:
@@ -41,41 +38,34 @@ def scene_info(scene_id: str, doc: dict[str, Any]) -> dict[str, Any]:
     return info
 
 
-def page_model(scene_id: str) -> dict[str, Any]:
-    """The scene's page model, rebuilt only if its derivation document changed."""
+def page_model(scene_id: str, pages: PageCache | None = None) -> dict[str, Any]:
+    """The scene's page model, through the app's ``pages`` (rebuilt there only if its derivation document changed)."""
     doc = derivations.derivation_document(scene_id)
-    cached = _models.get(scene_id)
-    if cached and cached[0] == id(doc):
-        return cached[1]
-    s = derivations.scene(scene_id)
-    particles = [(p.label, p.position) for p in s.system.particles]
-    model = scene_page(doc, scene_info(scene_id, doc), particles, CHOICES, s.system.nonnegative)
-    with _lock:
-        _models[scene_id] = (id(doc), model)
-    return model
 
+    def build() -> dict[str, Any]:
+        s = derivations.scene(scene_id)
+        particles = [(p.label, p.position) for p in s.system.particles]
+        return scene_page(doc, scene_info(scene_id, doc), particles, CHOICES, s.system.nonnegative)
 
-_cards: dict[str, str] = {}
+    return build() if pages is None else pages.model(scene_id, doc, build)
 
 
 def _card_diagram(s: Any) -> str:
-    if s.id not in _cards:
-        defaults = {p.name: p.default for p in s.system.parameters}
-        particles = [(p.label, p.position) for p in s.system.particles]
-        _cards[s.id] = diagram(
-            s.id, s.title, s.figure, defaults, dict(s.initial), s.system.coordinates, particles, ident=f"card-{s.id}"
-        )
-    return _cards[s.id]
+    defaults = {p.name: p.default for p in s.system.parameters}
+    particles = [(p.label, p.position) for p in s.system.particles]
+    return diagram(
+        s.id, s.title, s.figure, defaults, dict(s.initial), s.system.coordinates, particles, ident=f"card-{s.id}"
+    )
 
 
 @router.get("/", response_class=HTMLResponse)
-def index(request: Request) -> HTMLResponse:
+def index(request: Request, pages: PagesDep) -> HTMLResponse:
     # the panels each page shows (app/viz/panels.py) tell the contents where a section is illustrated
     scenes = [
         {
             **derivations.scene_summary(s),
-            "panels": page_model(s.id)["panels"],
-            "diagram": _card_diagram(s),
+            "panels": page_model(s.id, pages)["panels"],
+            "diagram": pages.card(s.id, lambda s=s: _card_diagram(s)),
             "url": f"/scenes/{s.id}",
         }
         for s in derivations.SCENES.values()
@@ -89,22 +79,20 @@ def scenes_index() -> RedirectResponse:
 
 
 @router.get("/scenes/{scene_id}", response_class=HTMLResponse)
-def scene_page_route(request: Request, scene_id: str) -> HTMLResponse:
+def scene_page_route(request: Request, scene_id: str, pages: PagesDep) -> HTMLResponse:
     try:
-        model = page_model(scene_id)
+        model = page_model(scene_id, pages)
     except UnknownScene as exc:
         known = [{"id": s.id, "title": s.title, "url": f"/scenes/{s.id}"} for s in derivations.SCENES.values()]
         return templates.TemplateResponse(
             request, "404.html", {"missing": exc.scene_id[:60], "known": known}, status_code=problem(exc).status
         )
     # A scene page depends only on its model: render (and compress) it once per model, then serve the bytes.
-    cached = _pages.get(scene_id)
-    if cached is None or cached[0] is not model:
-        body = bytes(templates.TemplateResponse(request, "scene.html", {"m": model, "scene": model["info"]}).body)
-        cached = _pages[scene_id] = (model, body, gzip.compress(body, 9))
+    plain, compressed = pages.page(
+        scene_id,
+        model,
+        lambda: bytes(templates.TemplateResponse(request, "scene.html", {"m": model, "scene": model["info"]}).body),
+    )
     if "gzip" in request.headers.get("accept-encoding", ""):
-        return HTMLResponse(cached[2], headers={"Content-Encoding": "gzip", "Vary": "Accept-Encoding"})
-    return HTMLResponse(cached[1], headers={"Vary": "Accept-Encoding"})
-
-
-_pages: dict[str, tuple[dict[str, Any], bytes, bytes]] = {}
+        return HTMLResponse(compressed, headers={"Content-Encoding": "gzip", "Vary": "Accept-Encoding"})
+    return HTMLResponse(plain, headers={"Vary": "Accept-Encoding"})

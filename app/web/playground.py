@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import threading
+from collections.abc import Callable
 from typing import Any
 
 from fastapi import APIRouter, Request
@@ -20,8 +21,10 @@ from fastapi.responses import HTMLResponse, Response
 from starlette.concurrency import run_in_threadpool
 
 from app.engine.parse import FUNCTIONS
+from app.engine.user_system import UserSystem
 from app.numerics.methods import CHOICES
-from app.service.cache import BytesCache, source_fingerprint
+from app.service.answers import examples_cache
+from app.service.cache import BytesCache
 from app.service.user_checks import InvalidSystem, checked, spec_key
 from app.service.user_jobs import derive_job
 from app.service.user_systems import UserSystems
@@ -43,28 +46,34 @@ EXAMPLES = {
 }
 
 
-# The examples' derivation documents on disk (set-up fills them: python -m app.web.warm), keyed by the
-# engine's and the service's source, so a restarted server loads them instead of deriving them again.
-_EXAMPLES_CACHE = BytesCache("example-derivations", source_fingerprint("engine", "service"))
-
-
-def example_derivations() -> dict[str, bytes]:
-    """Each example's derivation document by its cache key: from the disk cache, else derived here and stored."""
+def example_derivations(
+    cache: BytesCache | None = None, derive: Callable[[UserSystem], bytes] = derive_job
+) -> dict[str, bytes]:
+    """Each example's derivation document by its cache key: from ``cache`` (the examples' documents on disk, which
+    set-up fills: python -m app.web.warm; app/service/answers.py), else derived here by ``derive`` and stored."""
+    cache = cache or examples_cache()
     found = {}
     for example in EXAMPLES.values():
         user = checked(spec_of(form_of(example)))
-        found[spec_key(user)] = _EXAMPLES_CACHE.get(spec_key(user), lambda user=user: derive_job(user))
+        found[spec_key(user)] = cache.get(spec_key(user), lambda user=user: derive(user))
     return found
 
 
-def load_examples(service: UserSystems) -> None:
+def load_examples(
+    service: UserSystems, cache: BytesCache | None = None, derive: Callable[[UserSystem], bytes] = derive_job
+) -> None:
     """Put each example's derivation into the service's cache (``example_derivations``)."""
-    for key, document in example_derivations().items():
+    for key, document in example_derivations(cache, derive).items():
         if service.derivations.get(key) is None:
             service.derivations.put(key, document)
 
 
-def warm_examples(service: UserSystems, after: threading.Thread | None = None) -> threading.Thread:
+def warm_examples(
+    service: UserSystems,
+    cache: BytesCache | None = None,
+    after: threading.Thread | None = None,
+    load: Callable[[UserSystems, BytesCache | None], None] = load_examples,
+) -> threading.Thread:
     """Load the examples in the background at start-up, so that the first reader of each is answered at once.
 
     A derivation the disk cache lacks runs in this process (a thread, not the worker pool: nothing
@@ -75,7 +84,7 @@ def warm_examples(service: UserSystems, after: threading.Thread | None = None) -
         if after is not None:
             after.join()
         try:
-            load_examples(service)
+            load(service, cache)
         except Exception:  # noqa: BLE001 - warming is optional: the page derives on demand
             return
 

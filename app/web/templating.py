@@ -1,7 +1,7 @@
 """The Jinja2 templates object and the /static files app, shared by every page.
 
-``templates`` renders files under ``templates/`` (autoescaped); ``static_app``
-serves ``static/`` (our CSS and JS modules, and ``static/vendor`` -- KaTeX and
+``templates`` renders files under ``templates/`` (autoescaped); ``static_app()``,
+the app's own (mounted by ``app.main``, with its cache of compressed files), serves ``static/`` (our CSS and JS modules, and ``static/vendor`` -- KaTeX and
 plotly.js copied from npm by scripts/assets.sh, never from a CDN).
 Templates get ``static(path)``, a URL with a version stamp so a browser never
 keeps a stale module after an upgrade.
@@ -14,6 +14,7 @@ import hashlib
 import stat as stat_mode
 from functools import cache
 from pathlib import Path
+from typing import Any
 
 import anyio
 from fastapi.staticfiles import StaticFiles
@@ -36,6 +37,11 @@ class ClassroomStaticFiles(StaticFiles):
     without compressing anything per request; a URL stamped with a content hash
     (``?v=...``, see ``static()``) may be kept by the browser for a year.
     """
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        # our own small modules and styles, gzipped, by (path, modification time, size): this app's, not a module's
+        self._gzipped: dict[tuple[str, int, int], bytes] = {}
 
     async def get_response(self, path: str, scope: Scope) -> Response:
         response = await self._compressed(path, scope) or await super().get_response(path, scope)
@@ -70,23 +76,26 @@ class ClassroomStaticFiles(StaticFiles):
         if found is None or not stat_mode.S_ISREG(found.st_mode) or found.st_size > _SMALL:
             return None
         key = (full_path, found.st_mtime_ns, found.st_size)
-        body = _gzipped.get(key)
+        body = self._gzipped.get(key)
         if body is None:
             body = await anyio.to_thread.run_sync(lambda: gzip.compress(Path(full_path).read_bytes(), 9))
-            _gzipped[key] = body
+            self._gzipped[key] = body
         media = {"js": "text/javascript", "css": "text/css", "svg": "image/svg+xml"}[path.rsplit(".", 1)[1]]
         return Response(body, media_type=media, headers={"Content-Encoding": "gzip", "Vary": "Accept-Encoding"})
 
 
 _SMALL = 512 * 1024
-_gzipped: dict[tuple[str, int, int], bytes] = {}
 
 
 TEMPLATES_DIR = ROOT / "templates"
 STATIC_DIR = ROOT / "static"
 
 templates = Jinja2Templates(directory=str(TEMPLATES_DIR))
-static_app = ClassroomStaticFiles(directory=str(STATIC_DIR), check_dir=False)
+
+
+def static_app() -> ClassroomStaticFiles:
+    """A new /static files app (each app mounts its own: its compressed files are its own)."""
+    return ClassroomStaticFiles(directory=str(STATIC_DIR), check_dir=False)
 
 
 @cache

@@ -11,28 +11,33 @@ from app.settings import Settings
 
 
 @pytest.fixture
-def folder(tmp_path, monkeypatch):
-    monkeypatch.setattr(resident, "_folder", lambda: tmp_path / resident.FOLDER)
-    return tmp_path / resident.FOLDER
+def config(tmp_path):
+    """Settings whose cache folder (where the sizes are recorded) is the test's own."""
+    return Settings(cache_dir=tmp_path)
 
 
-def test_a_web_process_records_its_resident_size(folder):
-    resident.record()
+@pytest.fixture
+def folder(config):
+    return config.cache_dir / resident.FOLDER
+
+
+def test_a_web_process_records_its_resident_size(config, folder):
+    resident.record(config=config)
     written = int((folder / str(os.getpid())).read_text())
     assert written == resident.resident_mb() > 10
-    assert resident.measured_web_mb() == written
+    assert resident.measured_web_mb(config) == written
 
 
-def test_an_ended_process_no_longer_counts(folder):
+def test_an_ended_process_no_longer_counts(config, folder):
     ended = subprocess.Popen([sys.executable, "-c", "pass"])
     ended.wait()
     folder.mkdir(parents=True)
     (folder / str(ended.pid)).write_text("9999")
-    assert resident.measured_web_mb() == 0 and not (folder / str(ended.pid)).exists()
+    assert resident.measured_web_mb(config) == 0 and not (folder / str(ended.pid)).exists()
 
 
-def test_the_job_cap_uses_the_measured_size_when_it_is_larger(folder):
-    config = Settings(memory_budget_mb=4000, web_processes=2, workers=1, web_process_mb=350)
+def test_the_job_cap_uses_the_measured_size_when_it_is_larger(tmp_path, folder):
+    config = Settings(memory_budget_mb=4000, web_processes=2, workers=1, web_process_mb=350, cache_dir=tmp_path)
     assumed = config.job_memory_mb
     folder.mkdir(parents=True)
     (folder / str(os.getpid())).write_text("500")  # this (live) process grew to 500 MB

@@ -122,13 +122,15 @@ def test_work_precision_without_an_exact_solution_checks_its_reference():
     assert all(r["error"] is not None and r["error"] < 1e-3 for r in data["runs"])
 
 
-def test_work_precision_is_cached_per_scene(monkeypatch):
+def test_work_precision_is_cached_per_scene(monkeypatch, tmp_path):
     calls = []
     monkeypatch.setattr(work_precision, "compute", lambda scene_id: calls.append(scene_id) or {"runs": []})
-    monkeypatch.setattr(work_precision, "_cache", work_precision.JsonCache("wp-test", "x"))
-    monkeypatch.setattr(work_precision._cache, "_write", lambda path, value: None)
-    work_precision.for_scene("pulley")
-    work_precision.for_scene("pulley")
+    cache = work_precision.report_cache(tmp_path)  # the app's is given by its services (app/service/answers.py)
+    work_precision.for_scene("pulley", cache)
+    work_precision.for_scene("pulley", cache)
+    assert calls == ["pulley"]
+    # a new process (a new cache on the same disk) reads the report instead of computing it
+    assert work_precision.for_scene("pulley", work_precision.report_cache(tmp_path)) == {"runs": []}
     assert calls == ["pulley"]
 
 
@@ -214,12 +216,11 @@ def test_reference_run_beside_the_run_gives_the_same_estimate(monkeypatch):
 
 
 @pytest.mark.parametrize(("load", "busy", "free"), [(0.0, 0, True), (1.2, 0, True), (1.6, 0, False), (0.0, 2, False)])
-def test_a_reference_runs_beside_only_while_half_a_core_is_idle(monkeypatch, load, busy, free):
+def test_a_reference_runs_beside_only_while_half_a_core_is_idle(load, busy, free):
     from app.numerics import simulate as numerics_simulate
 
-    cores = numerics_simulate._Cores()
-    cores.count, cores.busy = 2, busy
-    monkeypatch.setattr(numerics_simulate, "_machine_load", lambda: load)
+    cores = numerics_simulate._Cores(2, load=lambda: load)
+    cores.busy = busy
     assert cores.take() is free
     assert cores.take(force=True) and cores.busy == busy + 1 + free  # a run's own core is always taken
 

@@ -1,7 +1,11 @@
 """Fixtures of the web tests."""
 
+from collections.abc import Callable, Iterator
+from typing import Any
+
 import pytest
 
+from app.main import app
 from app.service.services import Services
 
 
@@ -9,3 +13,19 @@ from app.service.services import Services
 def services(client) -> Services:
     """The services the app's lifespan started for the session's client."""
     return client.app_state["services"]
+
+
+@pytest.fixture
+def override() -> Iterator[Callable[[Callable[..., Any], Any], Any]]:
+    """``override(dependency, value)``: the routes are given ``value`` for ``dependency`` (a function of
+    app/web/deps.py) during the test, through ``app.dependency_overrides``, instead of a patched module."""
+    given: list[Callable[..., Any]] = []
+
+    def give(dependency: Callable[..., Any], value: Any) -> Any:
+        app.dependency_overrides[dependency] = lambda: value
+        given.append(dependency)
+        return value
+
+    yield give
+    for dependency in given:
+        app.dependency_overrides.pop(dependency, None)

@@ -5,6 +5,9 @@ import pytest
 from app.numerics import limits
 from app.scenes import SCENES
 from app.service import work_precision
+from app.service.answers import Answers
+from app.service.simulation import Gates
+from app.web.deps import remembered_answers, simulation_gates
 
 
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
@@ -113,11 +116,12 @@ def test_runaway_stops_with_a_message(client):
     assert len(doc["t"]) < 500 and any("ran away" in w for w in doc["stats"]["warnings"])
 
 
-def test_work_precision_endpoint(client, monkeypatch):
+def test_work_precision_endpoint(client, monkeypatch, tmp_path, override):
     monkeypatch.setattr(work_precision, "SWEEP", [1e-3, 1e-6])
-    monkeypatch.setattr(work_precision, "_cache", work_precision.JsonCache("wp-api-test", "x"))
-    monkeypatch.setattr(work_precision._cache, "_write", lambda path, value: None)
+    override(remembered_answers, Answers.start(tmp_path))  # the route's caches, empty, on a disk of their own
     doc = client.get("/api/scenes/incline-block/work-precision").json()
+    # the report went to the app's cache, not to a module's
+    assert [p.name.startswith("incline-block-") for p in (tmp_path / "work-precision").iterdir()] == [True]
     assert "constant-acceleration" in doc["reference"]
     methods = {run["method"] for run in doc["runs"]}
     assert len(methods) >= 4
@@ -164,10 +168,11 @@ def test_api_responses_are_compressed_for_clients_that_accept_it(client, coding)
     assert int(packed.headers["content-length"]) < len(plain.content) / 2
 
 
-def test_a_request_while_kernels_compile_is_answered_by_scipy(client, services, monkeypatch):
+def test_a_request_while_kernels_compile_is_answered_by_scipy(client, services, monkeypatch, override):
     from app.numerics import jit
 
-    monkeypatch.setattr(services.gates, "answer_while_compiling", True)  # as a server that warms up in the background
+    # the gates of a server that warms up in the background
+    override(simulation_gates, Gates(offload=services.scenes.run, answer_while_compiling=True))
     monkeypatch.setattr(jit, "ready", lambda name: False)  # nothing compiled yet
     response = client.post("/api/scenes/damped-pendulum/simulate", json={"initial": {}, "samples": 30})
     assert response.status_code == 200, response.text

@@ -41,7 +41,7 @@ def generated_requests_services(client, tmp_path_factory):
     users = UserSystems(session.pool)
     checking = Checking(users)
     classes = Classroom(checking, Settings(data_dir=tmp_path_factory.mktemp("classes")))
-    return Services(session.pool, users, checking, Gates(), session.scenes, classes)
+    return Services(session.pool, users, checking, Gates(), session.scenes, classes, session.answers)
 
 
 @pytest.mark.slow

@@ -2,13 +2,12 @@
 
 import threading
 
-from app.service import cache, user_systems
-from app.service.cache import BytesCache
+from app.service import user_systems
+from app.service.answers import examples_cache
 from app.web import playground
 
 
-def test_examples_are_derived_once_then_loaded_from_disk(monkeypatch, tmp_path):
-    monkeypatch.setattr(cache, "cache_dir", lambda: tmp_path)
+def test_examples_are_derived_once_then_loaded_from_disk(tmp_path):
     derived = []
 
     def derive(spec):
@@ -16,11 +15,9 @@ def test_examples_are_derived_once_then_loaded_from_disk(monkeypatch, tmp_path):
         return b'{"derived": %d}' % len(derived)
 
     def start():
-        """A new process: empty memory caches, the same disk."""
+        """A new process: empty memory caches (the app's services build its own), the same disk."""
         service = user_systems.UserSystems(pool=object(), gate=object())
-        monkeypatch.setattr(playground, "_EXAMPLES_CACHE", BytesCache("example-derivations", "test"))
-        monkeypatch.setattr(playground, "derive_job", derive)
-        playground.load_examples(service)
+        playground.load_examples(service, examples_cache(tmp_path), derive)
         return [service.derivations.get(key) for key in keys]
 
     keys = [
@@ -34,10 +31,11 @@ def test_examples_are_derived_once_then_loaded_from_disk(monkeypatch, tmp_path):
     assert len(derived) == len(playground.EXAMPLES) and again == first
 
 
-def test_examples_wait_for_the_scenes_warm_up(monkeypatch):
+def test_examples_wait_for_the_scenes_warm_up():
     order = []
-    monkeypatch.setattr(playground, "load_examples", lambda service: order.append("examples"))
     scenes = threading.Thread(target=lambda: (threading.Event().wait(0.2), order.append("scenes")))
     scenes.start()
-    playground.warm_examples(object(), after=scenes).join(timeout=10)
-    assert order == ["scenes", "examples"]
+    cache = examples_cache()
+    loaded = playground.warm_examples(object(), cache, after=scenes, load=lambda service, given: order.append(given))
+    loaded.join(timeout=10)
+    assert order == ["scenes", cache]

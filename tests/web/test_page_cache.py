@@ -1,0 +1,40 @@
+"""The scene pages' models and rendered bytes are the app's (its lifespan's ``PageCache``), given to the page
+routes through ``Depends``: a test gives them a cache of its own."""
+
+import pytest
+
+from app.service import derivations
+from app.web.deps import page_cache
+from app.web.page_cache import PageCache
+
+
+def _never():
+    pytest.fail("built again although the app's cache holds it")
+
+
+def test_a_scene_page_fills_the_cache_the_route_is_given(client, override):
+    pages = override(page_cache, PageCache())
+    first = client.get("/scenes/simple-pendulum", headers={"Accept-Encoding": "identity"})
+    assert first.status_code == 200
+    doc = derivations.derivation_document("simple-pendulum")
+    model = pages.model("simple-pendulum", doc, _never)  # the route's model, kept
+    plain, compressed = pages.page("simple-pendulum", model, _never)
+    assert plain == first.content and len(compressed) < len(plain) / 2
+    zipped = client.get("/scenes/simple-pendulum", headers={"Accept-Encoding": "gzip"})
+    assert zipped.content == plain  # the client decodes the kept gzip bytes into the same page
+
+
+def test_the_contents_page_keeps_each_cards_diagram(client, override):
+    pages = override(page_cache, PageCache())
+    assert client.get("/").status_code == 200
+    for scene_id in derivations.SCENES:
+        assert "<svg" in pages.card(scene_id, _never)
+
+
+def test_a_new_model_renders_the_page_again():
+    pages = PageCache()
+    renders = []
+    one, two = {"m": 1}, {"m": 2}
+    for model in (one, one, two):
+        pages.page("s", model, lambda model=model: renders.append(model) or b"page %d" % len(renders))
+    assert renders == [one, two]
