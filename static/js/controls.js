@@ -23,9 +23,8 @@
  * at their values.  Arrow keys move a slider by 1/200 of its range (Shift with them: 1/20), Page Up/Down by 1/10.
  */
 
-const STEPS = 1000;
-// an arrow key is a fine step (1/200 of the range), Shift with it a coarse one (1/20), Page Up/Down 1/10
-const ARROW = STEPS / 200, COARSE = STEPS / 20, PAGE = STEPS / 10;
+// A slider's positions run from 0 to its max, which the server sets (app/viz/page_model.py SLIDER_STEPS).
+const stepsOf = (ctl) => Number(ctl.querySelector('input[type="range"]').max);
 
 function sliderRange(ctl) {
   const lo = Number(ctl.dataset.sliderMin ?? ctl.dataset.min), hi = Number(ctl.dataset.sliderMax ?? ctl.dataset.max);
@@ -34,7 +33,7 @@ function sliderRange(ctl) {
 
 function fromSlider(ctl, position) {
   const [lo, hi, log, zero] = sliderRange(ctl);
-  const u = Number(position) / STEPS;
+  const u = Number(position) / stepsOf(ctl);
   if (log) return zero && Number(position) === 0 ? 0 : lo * Math.pow(hi / lo, u);
   return lo + (hi - lo) * u;
 }
@@ -44,17 +43,18 @@ function toSlider(ctl, value) {
   if (log && zero && value < lo) return 0;
   const v = Math.min(hi, Math.max(lo, value));
   const u = log ? Math.log(v / lo) / Math.log(hi / lo) : (v - lo) / (hi - lo);
-  return Math.round(u * STEPS);
+  return Math.round(u * stepsOf(ctl));
 }
 
-/** Arrow keys step a slider by a sensible share of its range, not by one of its 1000 positions. */
+/** Arrow keys step a slider by a sensible share of its range, not by one of its many positions: a fine
+ * step (1/200 of the range), Shift with it a coarse one (1/20), Page Up/Down 1/10. */
 function stepKeys(ctl, range) {
   range.addEventListener("keydown", (event) => {
-    const arrow = event.shiftKey ? COARSE : ARROW;
-    const by = { ArrowRight: arrow, ArrowUp: arrow, ArrowLeft: -arrow, ArrowDown: -arrow, PageUp: PAGE, PageDown: -PAGE }[event.key];
+    const steps = stepsOf(ctl), arrow = event.shiftKey ? steps / 20 : steps / 200, page = steps / 10;
+    const by = { ArrowRight: arrow, ArrowUp: arrow, ArrowLeft: -arrow, ArrowDown: -arrow, PageUp: page, PageDown: -page }[event.key];
     if (by === undefined) return;
     event.preventDefault();
-    range.value = String(Math.min(STEPS, Math.max(0, Number(range.value) + by)));
+    range.value = String(Math.min(steps, Math.max(0, Number(range.value) + by)));
     range.dispatchEvent(new Event("input", { bubbles: true }));
   });
 }
