@@ -108,4 +108,6 @@ class Typesetter:
         except CheckError as exc:
             raise _refusal(exc) from None
         key = spec_key("typeset", step, kinds, text.strip())
-        return await self.users.run_job(self.results, key, client, address, self.seconds, typeset_job, text, step, kinds)
+        return await self.users.run_job(
+            self.results, key, client, address, self.seconds, typeset_job, text, step, kinds
+        )

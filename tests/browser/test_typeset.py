@@ -32,7 +32,10 @@ def test_the_box_accepts_and_refuses_the_corpus_as_the_parser_does(page, artifac
     preview = page.locator(BOX + " .practice-preview")
     for text in CORPUS["accepted"]:
         assert typed(page, text) == "read", text
-        assert preview.locator(".practice-preview-math .katex").count() == 1 and preview.locator(".katex-error").count() == 0
+        assert (
+            preview.locator(".practice-preview-math .katex").count() == 1
+            and preview.locator(".katex-error").count() == 0
+        )
         assert preview.locator(".practice-preview-note").inner_text() == ""
     for case in CORPUS["refused"]:
         assert typed(page, case["text"]) == "refused", case
