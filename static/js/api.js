@@ -7,8 +7,9 @@
  *       else after a backoff that doubles (0.5 s, 1 s, 2 s … at most 8 s), at most `tries` times
  *       in all (6 unless told).  Any other refusal rejects with RequestError: its message is the
  *       API's "detail", with .status and .answer (the refusal's JSON: loc, part, start, end …).
- *   fetchRetrying(url, init, {tries, signal})
- *       the same retries for a request whose answer is not JSON (a download): the Response.
+ *   fetchRetrying(url, init, {tries, patience})
+ *       the same retries for any request (a download, a call that reads the status itself): the
+ *       Response; a Retry-After longer than `patience` seconds is not waited for.
  *   sleep(ms, signal)  a promise resolved after ms (rejected when the signal aborts).
  */
 export const sleep = (ms, signal) => new Promise((resolve, reject) => {
@@ -35,11 +36,13 @@ function delay(response, attempt) {
   return asked > 0 ? 1000 * asked : Math.min(8000, 500 * 2 ** attempt);
 }
 
-export async function fetchRetrying(url, init = {}, { tries = 6 } = {}) {
+export async function fetchRetrying(url, init = {}, { tries = 6, patience = Infinity } = {}) {
   for (let attempt = 1; ; attempt++) {
     const response = await fetch(url, init);
     if (!BUSY.has(response.status) || attempt >= tries) return response;
-    await sleep(delay(response, attempt - 1), init.signal);
+    const wait = delay(response, attempt - 1);
+    if (wait > 1000 * patience) return response;
+    await sleep(wait, init.signal);
   }
 }
 

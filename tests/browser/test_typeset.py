@@ -59,3 +59,17 @@ def test_a_refused_text_keeps_the_last_good_rendering_beside_the_parsers_message
     for width, height in ((1366, 768), (390, 844)):
         page.set_viewport_size({"width": width, "height": height})
         page.locator(BOX).screenshot(path=artifacts / f"typeset-{width}.png")
+
+
+def test_the_playgrounds_box_reads_the_declared_systems_names(page):
+    page.goto("/playground")
+    page.locator("#practice-switch").check()
+    box = '.practice-step[data-key="acceleration:x"]'
+    page.wait_for_selector(box)
+    page.locator(box + " input[name]").fill("(F*cos(w*t) - b*x_dot - k*x)/m")
+    page.wait_for_function(f"document.querySelector('{box}').dataset.typeset === 'read'")
+    shown = page.locator(box + " .practice-preview-math annotation").text_content()
+    assert shown.startswith(r"\ddot{x} =") and r"\dot{x}" in shown
+    page.locator(box + " input[name]").fill("k*y")  # y is no name of this system
+    page.wait_for_function(f"document.querySelector('{box}').dataset.typeset === 'refused'")
+    assert "unknown name" in page.locator(box + " .practice-preview-note").inner_text()
