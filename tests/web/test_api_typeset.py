@@ -101,3 +101,18 @@ def spy_key(service):
 
     kinds = service.typesetter._scenes[CORPUS["scene"]]
     return spec_key("typeset", CORPUS["step"], kinds, "m1*g")
+
+
+def test_a_busy_server_turns_new_texts_away_as_it_does_every_job(client, services):
+    known = "m1*g*l1 + m2*g*l2"
+    assert typeset(client, known).status_code == 200
+    gate = services.users.gate
+    tickets = [gate.admit(f"other{i}", f"10.0.0.{i}") for i in range(gate.capacity)]
+    try:
+        busy = typeset(client, "m1*g*l1 + 3*m2*g*l2")  # a new text needs a job: the pool is full
+        assert busy.status_code == 503 and int(busy.headers["Retry-After"]) >= 1
+        assert typeset(client, known).status_code == 200  # typeset before: from the LRU, no job
+        assert typeset(client, "m1 g").status_code == 422  # refused in the web process, no job
+    finally:
+        for ticket in tickets:
+            ticket.release()
