@@ -47,6 +47,7 @@ from app.engine.exercises import exercise_json
 from app.engine.user_system import UserSystem
 from app.service import derivations
 from app.service.encoding import dumps
+from app.service.typesetting import Typesetter
 from app.service.user_checks import InvalidSystem, checked, spec_key
 from app.service.user_jobs import derive_checked, guarded
 from app.service.user_systems import ResultCache, UserSystems
@@ -155,6 +156,7 @@ class Checking:
         self._lock = threading.Lock()
         self.answers = ResultCache(entries=MAX_ANSWER_CACHE, total_bytes=16 * 2**20)
         self.practice = ResultCache(entries=64)
+        self.typesetter = Typesetter(users, self.check_seconds)  # answers typeset as they are typed
 
     def scene_problem(self, scene_id: str, step: str, coordinate: str | None) -> Problem:
         """The problem of a scene's step (in a thread: SymPy on the engine's own expressions)."""

@@ -12,10 +12,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
-from functools import cache
 from typing import Any
 
-from app.engine.parse import ALLOWED
 from app.engine.trees import Tree
 
 _RECIPROCALS = {"cot": "tan", "sec": "cos", "csc": "sin"}
@@ -28,20 +26,6 @@ def document_tree(pair: dict[str, Any] | None, names: Iterable[str] | None = Non
         return None
     tree = pair["tree"]
     return tree if names is None or leaves(tree) <= set(names) else None
-
-
-@cache
-def function_tex() -> dict[str, str]:
-    """Each function users may write, as LaTeX with its arguments written #1, #2 (for the browser's live
-    typesetting, static/js/practice.js): SymPy's printer, with arcsin for asin as a textbook writes it."""
-    import sympy as sp
-
-    arguments = sp.symbols("a1 a2")
-    names = {a: f"#{i + 1}" for i, a in enumerate(arguments)}
-    return {
-        name: sp.latex(f.symbolic(*arguments[: f.arity]), symbol_names=names, inv_trig_style="full")
-        for name, f in ALLOWED.items()
-    }
 
 
 def leaves(node: Tree) -> set[str]:

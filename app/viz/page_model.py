@@ -25,6 +25,7 @@ from app.viz.panels import Facts, oscillating_equilibria, shown, texts
 from app.viz.units import coordinate_units
 
 LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collapsed
+SLIDER_STEPS = 1000  # positions of a control's slider (the page's range inputs; static/js/controls.js reads them)
 RTOLS = ("1e-3", "1e-4", "1e-6", "1e-8", "1e-10", "1e-12")
 DEFAULT_RTOL = "1e-8"
 

@@ -25,7 +25,7 @@ from starlette.types import Scope
 
 from app.settings import ROOT
 from app.viz.chapter import ABOUT
-from app.viz.exprtree import function_tex
+from app.viz.page_model import SLIDER_STEPS
 from app.web.mathml import mathml
 
 
@@ -121,6 +121,5 @@ def vendor_ready() -> bool:
 templates.env.globals["static"] = static
 templates.env.globals["vendor_ready"] = vendor_ready
 templates.env.globals["chapter_about"] = ABOUT
-# the expression language's functions for the browser, from the parser's allowlist (its one home)
-templates.env.globals["function_tex"] = function_tex
+templates.env.globals["slider_steps"] = SLIDER_STEPS  # the controls' slider resolution, for the browser
 templates.env.filters["mathml"] = mathml

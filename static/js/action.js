@@ -18,6 +18,7 @@
  *
  * The browser's numbers: static/js/action-live.js.
  */
+import { fetchJSON } from "./api.js";
 import { axis, CONFIG, drawWhenVisible, layout, PALETTE } from "./plotkit.js";
 import { compileLagrangian, focus, liveAction, path } from "./action-live.js";
 import { compileRhs } from "./preview.js";
@@ -197,12 +198,7 @@ export class ActionPanel {
     try {
       answer = this.answers.get(key);
       if (!answer) {
-        answer = fetch(this.url, { method: "POST", headers: { "Content-Type": "application/json", Accept: "application/json" }, body: key })
-          .then(async (res) => {
-            const b = await res.json().catch(() => ({}));
-            if (!res.ok) throw new Error(typeof b.detail === "string" ? b.detail : `the server answered ${res.status}`);
-            return b;
-          });
+        answer = fetchJSON(this.url, { body });
         this.answers.set(key, answer);
         if (this.answers.size > 32) this.answers.delete(this.answers.keys().next().value);
       }
@@ -363,9 +359,7 @@ export class ActionPanel {
     this.relaxButton.disabled = true;
     this.readout.textContent = "Relaxing: Newton's method on the discrete Euler–Lagrange equations…";
     try {
-      const res = await fetch(`${this.url}/relax`, { method: "POST", headers: { "Content-Type": "application/json", Accept: "application/json" }, body: JSON.stringify(body) });
-      const answer = await res.json().catch(() => ({}));
-      if (!res.ok) throw new Error(typeof answer.detail === "string" ? answer.detail : `the server answered ${res.status}`);
+      const answer = await fetchJSON(`${this.url}/relax`, { body });
       this.found = answer;
       // the iterates one after another, then the result beside the shooting solution
       for (let f = 0; f < answer.iterations.length && this.finding && this.found === answer; f++) {

@@ -1,25 +1,59 @@
 /**
- * api.js — JSON requests to our own API for panels that fetch their own data (modes.js, poincare.js).
+ * api.js — requests to our own API: the one retry loop of the pages.
  *
- *   fetchJson(url, body?)   GET (no body) or POST the body; resolves to the JSON answer.  A 429 or
- *                           503 is retried after its Retry-After (a few times); any other refusal
- *                           rejects with Error(the API's "detail").
+ *   fetchJSON(url, {body, signal, tries, precision})
+ *       GET (no body) or POST the body as JSON; resolves to the JSON answer.  A 429 or 503 (a
+ *       job of this session still running, the server busy) is retried: after its Retry-After,
+ *       else after a backoff that doubles (0.5 s, 1 s, 2 s … at most 8 s), at most `tries` times
+ *       in all (6 unless told).  Any other refusal rejects with RequestError: its message is the
+ *       API's "detail", with .status and .answer (the refusal's JSON: loc, part, start, end …).
+ *   fetchRetrying(url, init, {tries, patience})
+ *       the same retries for any request (a download, a call that reads the status itself): the
+ *       Response; a Retry-After longer than `patience` seconds is not waited for.
+ *   sleep(ms, signal)  a promise resolved after ms (rejected when the signal aborts).
  */
-const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+export const sleep = (ms, signal) => new Promise((resolve, reject) => {
+  const timer = setTimeout(resolve, ms);
+  signal?.addEventListener("abort", () => {
+    clearTimeout(timer);
+    reject(signal.reason ?? new DOMException("aborted", "AbortError"));
+  }, { once: true });
+});
 
-export async function fetchJson(url, body = undefined) {
-  for (let attempt = 0; ; attempt++) {
-    const res = await fetch(url, body === undefined
-      ? { headers: { Accept: "application/json" } }
-      : { method: "POST", headers: { "Content-Type": "application/json", Accept: "application/json" }, body: JSON.stringify(body) });
-    let answer = null;
-    try { answer = await res.json(); } catch { answer = null; }
-    if (res.ok) return answer;
-    if ((res.status === 429 || res.status === 503) && attempt < 8) {
-      await sleep(1000 * Number(res.headers.get("Retry-After") || 1));
-      continue;
-    }
-    const detail = answer && answer.detail ? answer.detail : `the server answered ${res.status}`;
-    throw new Error(typeof detail === "string" ? detail : JSON.stringify(detail));
+export class RequestError extends Error {
+  constructor(message, status, answer) {
+    super(message);
+    this.status = status;
+    this.answer = answer;
   }
+}
+
+const BUSY = new Set([429, 503]);
+
+/** How long to wait before try number `attempt` + 1: the server's Retry-After, else a doubling backoff. */
+function delay(response, attempt) {
+  const asked = Number(response.headers.get("Retry-After"));
+  return asked > 0 ? 1000 * asked : Math.min(8000, 500 * 2 ** attempt);
+}
+
+export async function fetchRetrying(url, init = {}, { tries = 6, patience = Infinity } = {}) {
+  for (let attempt = 1; ; attempt++) {
+    const response = await fetch(url, init);
+    if (!BUSY.has(response.status) || attempt >= tries) return response;
+    const wait = delay(response, attempt - 1);
+    if (wait > 1000 * patience) return response;
+    await sleep(wait, init.signal);
+  }
+}
+
+export async function fetchJSON(url, { body, signal, tries } = {}) {
+  const init = body === undefined
+    ? { headers: { Accept: "application/json" }, signal }
+    : { method: "POST", headers: { "Content-Type": "application/json", Accept: "application/json" }, body: JSON.stringify(body), signal };
+  const response = await fetchRetrying(url, init, { tries });
+  let answer = null;
+  try { answer = await response.json(); } catch { answer = null; }
+  if (response.ok) return answer;
+  const detail = answer && answer.detail ? answer.detail : `the server answered ${response.status}`;
+  throw new RequestError(typeof detail === "string" ? detail : JSON.stringify(detail), response.status, answer);
 }

@@ -2,13 +2,16 @@
  * classroom.js — what the instructor's page (teach.js) and the students' page (join.js) share:
  * calls to /api/classes with a key, KaTeX typesetting, a step's label and a mistake's name.
  */
+import { fetchRetrying } from "./api.js";
 
-/** Call the API; answers {status, data, retryAfter}. A key goes as "Authorization: Bearer <key>". */
-export async function api(method, path, { key, body } = {}) {
+/** Call the API; answers {status, data, retryAfter}. A key goes as "Authorization: Bearer <key>". With `tries`,
+ * a 429 or 503 is retried (api.js), as long as the server asks for at most `patience` seconds. */
+export async function api(method, path, { key, body, tries = 1, patience } = {}) {
   const headers = { Accept: "application/json" };
   if (key) headers.Authorization = `Bearer ${key}`;
   if (body !== undefined) headers["Content-Type"] = "application/json";
-  const res = await fetch(path, { method, headers, body: body === undefined ? undefined : JSON.stringify(body) });
+  const init = { method, headers, body: body === undefined ? undefined : JSON.stringify(body) };
+  const res = await fetchRetrying(path, init, { tries, patience });
   let data = null;
   const type = res.headers.get("Content-Type") || "";
   if (type.includes("json")) data = await res.json();
@@ -77,8 +80,6 @@ export function stepTex(practice, step, coordinate) {
 export function mistakeWords(name) {
   return name.replace(/_/g, " ").replace(/^\w/, (c) => c.toUpperCase());
 }
-
-export const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 
 /** Read and write one JSON record in localStorage (nothing kept when storage is off). */
 export function stored(key) {

@@ -1,7 +1,7 @@
 /**
  * controls.js — the parameter and initial-condition controls of a simulation.
  *
- * Markup (rendered by templates/_controls.html, or built here by buildControls):
+ * Markup (rendered by templates/_controls.html):
  *   <div class="control" data-group="parameters|initial|run" data-name="m"
  *        data-min="0.01" data-max="100" data-log="true" data-default="1">
  *     <label id="ctl-m-label" for="ctl-m-range">…</label>
@@ -10,9 +10,6 @@
  *   </div>
  * plus <select name="method"> and <select name="rtol">.
  *
- *   buildControls(container, spec)   build that markup from a spec
- *                                    {parameters: [...], initial: [...], t_end, methods, rtols}
- *                                    (each control {name, label, unit, min, max, value, log, description})
  *   bindControls(form, handlers)     keep each slider and number field in step, check
  *                                    ranges (aria-invalid + message); onInput(request) on
  *                                    every change, onSettle(request) 150 ms after the last
@@ -26,9 +23,8 @@
  * at their values.  Arrow keys move a slider by 1/200 of its range (Shift with them: 1/20), Page Up/Down by 1/10.
  */
 
-const STEPS = 1000;
-// an arrow key is a fine step (1/200 of the range), Shift with it a coarse one (1/20), Page Up/Down 1/10
-const ARROW = STEPS / 200, COARSE = STEPS / 20, PAGE = STEPS / 10;
+// A slider's positions run from 0 to its max, which the server sets (app/viz/page_model.py SLIDER_STEPS).
+const stepsOf = (ctl) => Number(ctl.querySelector('input[type="range"]').max);
 
 function sliderRange(ctl) {
   const lo = Number(ctl.dataset.sliderMin ?? ctl.dataset.min), hi = Number(ctl.dataset.sliderMax ?? ctl.dataset.max);
@@ -37,7 +33,7 @@ function sliderRange(ctl) {
 
 function fromSlider(ctl, position) {
   const [lo, hi, log, zero] = sliderRange(ctl);
-  const u = Number(position) / STEPS;
+  const u = Number(position) / stepsOf(ctl);
   if (log) return zero && Number(position) === 0 ? 0 : lo * Math.pow(hi / lo, u);
   return lo + (hi - lo) * u;
 }
@@ -47,17 +43,18 @@ function toSlider(ctl, value) {
   if (log && zero && value < lo) return 0;
   const v = Math.min(hi, Math.max(lo, value));
   const u = log ? Math.log(v / lo) / Math.log(hi / lo) : (v - lo) / (hi - lo);
-  return Math.round(u * STEPS);
+  return Math.round(u * stepsOf(ctl));
 }
 
-/** Arrow keys step a slider by a sensible share of its range, not by one of its 1000 positions. */
+/** Arrow keys step a slider by a sensible share of its range, not by one of its many positions: a fine
+ * step (1/200 of the range), Shift with it a coarse one (1/20), Page Up/Down 1/10. */
 function stepKeys(ctl, range) {
   range.addEventListener("keydown", (event) => {
-    const arrow = event.shiftKey ? COARSE : ARROW;
-    const by = { ArrowRight: arrow, ArrowUp: arrow, ArrowLeft: -arrow, ArrowDown: -arrow, PageUp: PAGE, PageDown: -PAGE }[event.key];
+    const steps = stepsOf(ctl), arrow = event.shiftKey ? steps / 20 : steps / 200, page = steps / 10;
+    const by = { ArrowRight: arrow, ArrowUp: arrow, ArrowLeft: -arrow, ArrowDown: -arrow, PageUp: page, PageDown: -page }[event.key];
     if (by === undefined) return;
     event.preventDefault();
-    range.value = String(Math.min(STEPS, Math.max(0, Number(range.value) + by)));
+    range.value = String(Math.min(steps, Math.max(0, Number(range.value) + by)));
     range.dispatchEvent(new Event("input", { bubbles: true }));
   });
 }
@@ -205,68 +202,4 @@ export function controlRange(form, name) {
   const ctl = form.querySelector(`.control[data-name="${CSS.escape(name)}"]`);
   if (!ctl) return null;
   return { value: Number(parts(ctl).number.value), min: Number(ctl.dataset.min), max: Number(ctl.dataset.max) };
-}
-
-function el(tag, attrs = {}, text = "") {
-  const node = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs)) node.setAttribute(k, v);
-  if (text) node.textContent = text;
-  return node;
-}
-
-function control(group, c) {
-  const id = `ctl-${c.name}`;
-  const div = el("div", {
-    class: "control", "data-group": group, "data-name": c.name, "data-label": c.label, "data-unit": c.unit || "",
-    "data-min": c.min, "data-max": c.max, "data-log": c.log ? "true" : "false", "data-default": c.value,
-    "data-slider-min": c.slider_min ?? c.min, "data-slider-max": c.slider_max ?? c.max,
-  });
-  const label = el("label", { id: `${id}-label`, for: `${id}-range` });
-  label.append(el("span", { class: "sym" }, c.label), " ", el("span", { class: "desc" }, c.description || ""));
-  const row = el("div", { class: "control-inputs" });
-  const range = el("input", { type: "range", id: `${id}-range`, min: "0", max: String(STEPS), step: "1",
-    "aria-labelledby": `${id}-label`, "aria-describedby": `${id}-hint` });
-  const marks = c.ticks || [];
-  if (marks.length) range.setAttribute("list", `${id}-ticks`);
-  const number = el("input", { type: "number", id, name: c.name, min: c.min, max: c.max, step: "any",
-    value: c.value, inputmode: "decimal", "aria-labelledby": `${id}-label ${id}-unit`, "aria-describedby": `${id}-hint` });
-  row.append(range, number, el("span", { class: "unit", id: `${id}-unit` }, c.unit || "(no unit)"));
-  div.append(label, row);
-  if (marks.length) {
-    const list = el("datalist", { id: `${id}-ticks` });
-    for (const t of marks) list.append(el("option", { "data-value": t.value, label: t.label }));
-    div.append(list, el("p", { class: "ticks" }, `Marked: ${marks.map((t) => t.text).filter(Boolean).join("; ")}`));
-  }
-  div.append(el("p", { class: "hint", id: `${id}-hint`, "aria-live": "polite" }));
-  range.value = String(toSlider(div, Number(c.value)));
-  return div;
-}
-
-function select(name, labelText, options, value) {
-  const wrap = el("div", { class: "select" });
-  wrap.append(el("label", { for: `ctl-${name}` }, labelText));
-  const sel = el("select", { id: `ctl-${name}`, name, "data-default": value });
-  for (const o of options) sel.append(el("option", { value: o }, o));
-  sel.value = value;
-  wrap.append(sel);
-  return wrap;
-}
-
-export function buildControls(container, spec) {
-  container.replaceChildren();
-  const groups = [["parameters", "Parameters", spec.parameters], ["initial", "Initial conditions", spec.initial]];
-  for (const [group, legend, list] of groups) {
-    const fs = el("fieldset", { class: `controls-${group}` });
-    fs.append(el("legend", {}, legend));
-    for (const c of list) fs.append(control(group, c));
-    container.append(fs);
-  }
-  const run = el("fieldset", { class: "controls-run" });
-  run.append(el("legend", {}, "Integration"));
-  run.append(control("run", { name: "t_end", label: "t_end", unit: "s", description: "duration", ...spec.t_end }));
-  run.append(select("method", "Method", spec.methods, spec.methods[0]));
-  run.append(select("rtol", "Relative tolerance", spec.rtols, spec.default_rtol));
-  run.append(el("button", { type: "button", "data-action": "reset" }, "Reset to defaults"));
-  container.append(run);
-  for (const ctl of container.querySelectorAll(".control")) check(ctl);
 }

@@ -2,6 +2,7 @@
  * Playground downloads: POST the system on the page (#playground-system) with the values the
  * simulation controls now hold to /api/export, and save the answer as a file.
  */
+import { fetchRetrying } from "./api.js";
 import { readRequest } from "./controls.js";
 
 const status = document.getElementById("export-status");
@@ -21,19 +22,13 @@ function fileName(response, format) {
   return match ? match[1] : `system.${format}`;
 }
 
-const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
-
-async function post(body) {
+function post(body) {
   // one job at a time per session: while a simulation of this page runs, wait as the server asks
-  for (let attempt = 0; ; attempt += 1) {
-    const response = await fetch("/api/export", {
-      method: "POST",
-      headers: { "content-type": "application/json" },
-      body: JSON.stringify(body),
-    });
-    if (![429, 503].includes(response.status) || attempt >= 5) return response;
-    await sleep(1000 * Math.min(5, Number(response.headers.get("retry-after")) || 1));
-  }
+  return fetchRetrying("/api/export", {
+    method: "POST",
+    headers: { "content-type": "application/json" },
+    body: JSON.stringify(body),
+  });
 }
 
 async function download(format, button) {

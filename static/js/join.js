@@ -5,7 +5,7 @@
  * typeset and the hint come back as in practice mode. The student's own progress is counted from
  * the server's record. The student key stays in localStorage; a reload goes on where it was.
  */
-import { api, el, exerciseOf, practiceOf, sleep, stepTex, stored, typeset } from "./classroom.js";
+import { api, el, exerciseOf, practiceOf, stepTex, stored, typeset } from "./classroom.js";
 
 const memory = stored("lagrange-join");
 const scenes = JSON.parse(document.getElementById("class-scenes").textContent);
@@ -69,12 +69,8 @@ function stepView(item, practice, s, index) {
     const body = { ...(item.scene ? { scene: item.scene } : { system: item.name }), step: s.step, answer,
       ...(s.coordinate ? { coordinate: s.coordinate } : {}) };
     try {
-      let r;
-      for (let attempt = 0; attempt < 3; attempt++) {
-        r = await api("POST", `/api/classes/${current.code}/check`, { key: current.key, body });
-        if (r.status !== 429 || r.retryAfter > 5) break;
-        await sleep(1000 * Math.max(1, r.retryAfter)); // one check at a time: a previous one is still running
-      }
+      // one check at a time: while a previous one still runs the server asks to wait, a few seconds at most
+      const r = await api("POST", `/api/classes/${current.code}/check`, { key: current.key, body, tries: 3, patience: 5 });
       verdictView(box, r);
       if (r.status === 200 && (r.data.verdict === "correct" || r.data.verdict === "equivalent")) {
         done.add(key);

@@ -10,12 +10,12 @@
  *   - simulates the derived system through POST /api/simulate (the declared system with
  *     the controls' parameter values, plus initial, t_end, method, rtol, samples) and draws
  *     it with simulation.js's connectSimulation (the same live preview as a scene page);
- *     a 429/503 is retried after its Retry-After.
+ *     a 429/503 is retried (api.js fetchJSON).
  * Everything it needs is in the page: #scene-data (the client JSON of app/viz/page_model.py)
  * and #playground-system (the request the page derived).
  */
 import { foldSteps, printReady, whenTypeset } from "./derivation.js";
-import { fetchJson } from "./api.js";
+import { fetchJSON } from "./api.js";
 import { connectSimulation } from "./simulation.js";
 import { keyboardScroll } from "./scrollboxes.js";
 
@@ -102,26 +102,8 @@ function body(request) {
   return { ...system, parameters, initial, t_end, method, rtol, samples, precision: "display" };
 }
 
-const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
-
-async function post(request, signal) {
-  for (let attempt = 0; ; attempt++) {
-    const res = await fetch(root.dataset.simulateUrl, {
-      method: "POST",
-      headers: { "Content-Type": "application/json", Accept: "application/json" },
-      body: JSON.stringify(body(request)),
-      signal,
-    });
-    let answer = null;
-    try { answer = await res.json(); } catch { answer = null; }
-    if (res.ok) return answer;
-    if ((res.status === 429 || res.status === 503) && attempt < 5) {
-      await sleep(1000 * Number(res.headers.get("Retry-After") || 1));
-      continue;
-    }
-    const detail = answer && answer.detail ? answer.detail : `the server answered ${res.status}`;
-    throw new Error(typeof detail === "string" ? detail : JSON.stringify(detail));
-  }
+function post(request, signal) {
+  return fetchJSON(root.dataset.simulateUrl, { body: body(request), signal });
 }
 
 let queue = Promise.resolve();
@@ -142,10 +124,10 @@ if (root && dataNode) {
     urls: {
       // the modes are the declared system's (its parameter values); a section is at the run's values.
       // One at a time: the worker pool runs one job per session.
-      modes: () => oneAtATime(() => fetchJson(root.dataset.modesUrl, system)),
+      modes: () => oneAtATime(() => fetchJSON(root.dataset.modesUrl, { body: system })),
       modesFollow: false,
       poincare: ({ parameters, initial }) => oneAtATime(() =>
-        fetchJson(root.dataset.poincareUrl, { ...system, parameters: body({ parameters }).parameters, initial })),
+        fetchJSON(root.dataset.poincareUrl, { body: { ...system, parameters: body({ parameters }).parameters, initial } })),
     },
   });
 }

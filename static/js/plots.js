@@ -14,6 +14,7 @@
  * Each panel writes a text alternative (a data table) into its .data-summary and
  * a one-line reading into its .readout.
  */
+import { fetchJSON } from "./api.js";
 import { ActionPanel } from "./action.js";
 import { axis, capital, COLORS, CONFIG, diff, drawWhenVisible, finite, layout, line, momentumUnit, Overlay, PALETTE, parts, react } from "./plotkit.js";
 import { ModesPanel } from "./modes.js";
@@ -140,11 +141,7 @@ class WorkPrecisionPanel {
 
   async report() {
     if (!this.pending) {
-      this.pending = fetch(this.url, { headers: { Accept: "application/json" } }).then(async (res) => {
-        const body = await res.json().catch(() => ({}));
-        if (!res.ok) throw new Error(body.detail || `the work-precision report failed (${res.status})`);
-        return body;
-      });
+      this.pending = fetchJSON(this.url);
       this.pending.catch(() => { this.pending = null; });
     }
     return this.pending;
@@ -160,8 +157,8 @@ class WorkPrecisionPanel {
     if (!this.timings.has(key)) { this.timings.clear(); this.timings.set(key, times); }
     if (Number.isFinite(run.stats.wall_time_s) && times.length < REPEATS) times.push(run.stats.wall_time_s);
     while (this.simulateUrl && times.length < REPEATS && this.run === run) {
-      const res = await fetch(this.simulateUrl, { method: "POST", headers: { "Content-Type": "application/json" }, body: key }).catch(() => null);
-      const body = res && res.ok ? await res.json().catch(() => null) : null;
+      // a repeat is a measurement, not a need: one try, nothing when the server is busy
+      const body = await fetchJSON(this.simulateUrl, { body: run.request, tries: 1 }).catch(() => null);
       if (!body || !Number.isFinite(body.stats?.wall_time_s)) break;
       times.push(body.stats.wall_time_s);
     }

@@ -3,8 +3,10 @@
  *
  * With the switch on, the page's derivation and results are hidden (body.practising) and a box
  * per step takes the student's own expression, in the chapter's order. As they type, the
- * expression is typeset live (a small converter from the API's syntax to LaTeX; the server
- * stays the judge); Enter or "Check" sends it to the checker and shows the verdict, the
+ * expression is typeset live by the checker's own parser (POST /api/typeset, 150 ms after the
+ * last keystroke: the LaTeX as the checker reads it, or the parser's refusal in the checker's
+ * words, the last good rendering kept meanwhile); the browser has no expression grammar of its
+ * own. Enter or "Check" sends it to the checker and shows the verdict, the
  * difference typeset and the hint; a named mistake with its piece typeset, what else is right,
  * and a follow-up question answered in place; "Show this step" reveals the engine's step.
  *
@@ -13,6 +15,7 @@
  * page in practice mode; on a scene page it also carries the simulation's parameter values
  * (?practice&m=2&R=0.5), which are set on the controls before the first run.
  */
+import { RequestError, fetchJSON } from "./api.js";
 import { readRequest, setControl } from "./controls.js";
 
 const root = document.getElementById("practice");
@@ -21,160 +24,6 @@ const sceneId = root?.dataset.scene || "";
 const systemNode = document.getElementById("playground-system");
 const system = sceneId ? null : JSON.parse(systemNode?.textContent || "{}");
 const controls = document.getElementById("controls");
-
-// ---- the API's expression syntax, typeset -------------------------------------------------------
-
-// The functions the parser allows, each as LaTeX with its arguments written #1, #2: from the server
-// (the allowlist's one home, app/engine/parse.py, printed by SymPy; app/viz/exprtree.py function_tex).
-const FUNCTION_TEX = JSON.parse(document.getElementById("function-tex")?.textContent || "{}");
-
-function tokenize(text) {
-  const tokens = [];
-  const pattern = /\s*(?:(\d+\.?\d*(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?)|([A-Za-z_][A-Za-z0-9_]*)|(\*\*|[-+*/(),]))/y;
-  let at = 0;
-  while (at < text.length) {
-    if (/^\s*$/.test(text.slice(at))) break;
-    pattern.lastIndex = at;
-    const m = pattern.exec(text);
-    if (!m) throw new Error(`cannot read ${text.slice(at).trim().slice(0, 12)}`);
-    tokens.push(m[1] ? { kind: "num", value: m[1] } : m[2] ? { kind: "name", value: m[2] } : { kind: "op", value: m[3] });
-    at = pattern.lastIndex;
-  }
-  return tokens;
-}
-
-/** Parse to a small tree: {op: "+", args}, {op: "*"}, {op: "/"}, {op: "neg"}, {op: "pow"}, {op: "call", name}, leaves. */
-function parse(text) {
-  const tokens = tokenize(text);
-  let i = 0;
-  const peek = () => tokens[i];
-  const take = (value) => {
-    const t = tokens[i];
-    if (!t || (value && t.value !== value)) throw new Error(value ? `expected ${value}` : "unexpected end");
-    i += 1;
-    return t;
-  };
-  function sum() {
-    const args = [product()];
-    while (peek() && (peek().value === "+" || peek().value === "-")) {
-      const sign = take().value;
-      const term = product();
-      args.push(sign === "-" ? { op: "neg", args: [term], minus: true } : term);
-    }
-    return args.length === 1 ? args[0] : { op: "+", args };
-  }
-  function product() {
-    let left = unary();
-    while (peek() && (peek().value === "*" || peek().value === "/")) {
-      const op = take().value;
-      const right = unary();
-      left = op === "*" ? { op: "*", args: [left, right] } : { op: "/", args: [left, right] };
-    }
-    return left;
-  }
-  function unary() {
-    if (peek() && (peek().value === "-" || peek().value === "+")) {
-      const sign = take().value;
-      const inner = unary();
-      return sign === "-" ? { op: "neg", args: [inner] } : inner;
-    }
-    return power();
-  }
-  function power() {
-    const base = atom();
-    if (peek() && peek().value === "**") {
-      take();
-      return { op: "pow", args: [base, unary()] };
-    }
-    return base;
-  }
-  function atom() {
-    const t = take();
-    if (t.kind === "num") return { leaf: "num", value: t.value };
-    if (t.kind === "name") {
-      if (peek() && peek().value === "(") {
-        take("(");
-        const args = [sum()];
-        while (peek() && peek().value === ",") {
-          take(",");
-          args.push(sum());
-        }
-        take(")");
-        return { op: "call", name: t.value, args };
-      }
-      return { leaf: "name", value: t.value };
-    }
-    if (t.value === "(") {
-      const inner = sum();
-      take(")");
-      return inner;
-    }
-    throw new Error(`unexpected ${t.value}`);
-  }
-  const tree = sum();
-  if (i < tokens.length) throw new Error(`unexpected ${tokens[i].value}`);
-  return tree;
-}
-
-const LEVEL = { "+": 1, neg: 1, "*": 2, "/": 2, pow: 3 };
-
-function nameTex(name, symbols) {
-  if (symbols[name]) return symbols[name];
-  if (name === "pi") return "\\pi";
-  return `\\mathrm{${name.replace(/_/g, "\\_")}}`;
-}
-
-function tex(node, symbols) {
-  const wrap = (child, level) => {
-    const inner = tex(child, symbols);
-    return child.op && LEVEL[child.op] !== undefined && LEVEL[child.op] < level ? `\\left(${inner}\\right)` : inner;
-  };
-  if (node.leaf === "num") return node.value.replace(/[eE]([+-]?\d+)$/, "\\times 10^{$1}");
-  if (node.leaf === "name") return nameTex(node.value, symbols);
-  switch (node.op) {
-    case "+":
-      return node.args
-        .map((a, k) => (k > 0 && a.minus ? `- ${wrap(a.args[0], 2)}` : k > 0 ? `+ ${tex(a, symbols)}` : tex(a, symbols)))
-        .join(" ");
-    case "neg":
-      return `-${wrap(node.args[0], 2)}`;
-    case "*": {
-      const [a, b] = node.args;
-      const numeric = (n) => n.leaf === "num" || (n.op === "pow" && n.args[0].leaf === "num");
-      return `${wrap(a, 2)} ${numeric(b) ? "\\cdot " : ""}${wrap(b, 2)}`;
-    }
-    case "/":
-      return `\\frac{${tex(node.args[0], symbols)}}{${tex(node.args[1], symbols)}}`;
-    case "pow": {
-      const [base, exponent] = node.args;
-      // sin²(x) as a textbook writes it: the power on the function's name, before its brackets
-      const call = base.op === "call" ? callTex(base, symbols) : "";
-      const opening = call.indexOf("{\\left(");
-      if (opening > 0) {
-        return `${call.slice(0, opening)}^{${tex(exponent, symbols)}}${call.slice(opening)}`;
-      }
-      const shown = base.op || base.leaf === "num" && base.value.startsWith("-") ? wrap(base, 4) : tex(base, symbols);
-      return `{${shown}}^{${tex(exponent, symbols)}}`;
-    }
-    case "call":
-      return callTex(node, symbols);
-    default:
-      throw new Error("cannot typeset");
-  }
-}
-
-/** A call typeset from the function's LaTeX; a name the parser does not allow stays upright (the checker refuses it). */
-function callTex(node, symbols) {
-  const args = node.args.map((a) => tex(a, symbols));
-  const template = FUNCTION_TEX[node.name];
-  if (!template) return `\\mathrm{${node.name.replace(/_/g, "\\_")}}\\left(${args.join(", ")}\\right)`;
-  return template.replace(/#(\d)/g, (_, k) => args[Number(k) - 1] ?? "");
-}
-
-/** LaTeX for what the student typed (throws while the expression is incomplete). */
-export function toTex(text, symbols = {}) {
-  return tex(parse(text), symbols);
-}
 
 // ---- storage ------------------------------------------------------------------------------------
 
@@ -209,23 +58,23 @@ const record = Object.assign({ on: false, answers: {}, verdicts: {} }, load());
 
 // ---- the page -----------------------------------------------------------------------------------
 
-const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
-
-async function request(url, body) {
-  for (let attempt = 0; ; attempt++) {
-    const res = await fetch(url, body === undefined ? { headers: { Accept: "application/json" } } : {
-      method: "POST",
-      headers: { "Content-Type": "application/json", Accept: "application/json" },
-      body: JSON.stringify(body),
-    });
-    let answer = null;
-    try { answer = await res.json(); } catch { answer = null; }
-    if ((res.status === 429 || res.status === 503) && attempt < 4) {
-      await sleep(1000 * Number(res.headers.get("Retry-After") || 1));
-      continue;
-    }
-    return { ok: res.ok, status: res.status, answer };
+/** The API's answer {ok, status, answer}: a refusal's JSON is an answer too (its message is shown in place). */
+async function request(url, body, signal) {
+  try {
+    return { ok: true, status: 200, answer: await fetchJSON(url, { body, signal }) };
+  } catch (error) {
+    if (!(error instanceof RequestError)) throw error;
+    return { ok: false, status: error.status, answer: error.answer };
   }
+}
+
+// The session runs one job at a time on the server: the page's typesetting and checking wait their turn
+// here rather than be told to wait (429) there.
+let turn = Promise.resolve();
+function inTurn(job) {
+  const next = turn.then(job, job);
+  turn = next.catch(() => null);
+  return next;
 }
 
 function katexInto(el, latex, display = false) {
@@ -324,7 +173,7 @@ function followUpBox(item, followUp) {
     if (item.dataset.coordinate) body.coordinate = item.dataset.coordinate;
     if (system) body.system = system;
     try {
-      const { answer: result } = await request(root.dataset.checkUrl, body);
+      const { answer: result } = await inTurn(() => request(root.dataset.checkUrl, body));
       status.dataset.verdict = result?.verdict || "refused";
       status.textContent = result?.verdict ? `${result.message}${result.hint ? ` ${result.hint}` : ""}` : result?.detail || "No answer from the server.";
     } catch {
@@ -344,24 +193,44 @@ function followUpBox(item, followUp) {
   return box;
 }
 
-function preview(item, symbols) {
-  const input = item.querySelector("input");
-  const out = item.querySelector(".practice-preview");
-  const text = input.value.trim();
-  if (!text) {
-    out.replaceChildren(element("span", { class: "help" }, "What you type appears here, typeset."));
+// what the typesetter needs besides the text: the scene, or the declared system's names
+const typesetContext = sceneId
+  ? { scene: sceneId }
+  : { coordinates: system?.coordinates || [], parameters: (system?.parameters || []).map((p) => (typeof p === "string" ? p : p.name)) };
+
+/** Typeset what is typed, as the checker reads it; while the server answers, the last good rendering stays. */
+async function preview(item, signal) {
+  const text = item.querySelector("input").value;
+  const math = item.querySelector(".practice-preview-math");
+  const note = item.querySelector(".practice-preview-note");
+  if (!text.trim()) {
+    math.replaceChildren();
+    note.textContent = "What you type appears here, typeset.";
+    delete item.dataset.typeset;
     return;
   }
+  let reply;
   try {
-    const latex = toTex(text, symbols);
+    reply = await inTurn(() => (signal.aborted ? null
+      : request(root.dataset.typesetUrl, { text, step: item.dataset.step, ...typesetContext }, signal)));
+  } catch {
+    reply = null; // aborted by the next keystroke, or the server out of reach: the last rendering stays
+  }
+  if (!reply || signal.aborted) return;
+  if (reply.ok) {
     const lhs = item.dataset.lhs;
-    katexInto(out, item.dataset.step === "equation" ? `${latex} = 0` : `${lhs} = ${latex}`, true);
-  } catch (error) {
-    out.replaceChildren(element("span", { class: "help" }, `Not a complete expression yet (${error.message}).`));
+    katexInto(math, item.dataset.step === "equation" ? `${reply.answer.latex} = 0` : `${lhs} = ${reply.answer.latex}`, true);
+    note.textContent = "";
+    item.dataset.typeset = "read";
+  } else if (reply.status === 422) {
+    note.textContent = `Not read yet: ${reply.answer?.detail?.replace(/^answer: /, "") || "the checker could not read this"}.`;
+    item.dataset.typeset = "refused";
   }
 }
 
-function buildItem(exercise, index, doc) {
+const TYPESET_DELAY_MS = 150; // after the last keystroke
+
+function buildItem(exercise, index) {
   const key = keyOf(exercise);
   const id = `practice-${index}`;
   const item = element("li", { class: "practice-step", "data-key": key, "data-step": exercise.step, "data-lhs": exercise.lhs });
@@ -387,6 +256,7 @@ function buildItem(exercise, index, doc) {
   row.append(lhs, input, rhs);
   const names = element("p", { class: "help practice-names", id: `${id}-names` }, `Names you may use: ${exercise.names.join(", ")}, pi.`);
   const previewBox = element("div", { class: "practice-preview", id: `${id}-preview`, "aria-label": "Your answer, typeset" });
+  previewBox.append(element("div", { class: "practice-preview-math" }), element("p", { class: "help practice-preview-note" }));
   const actions = element("div", { class: "practice-actions" });
   const check = element("button", { type: "submit" }, "Check");
   const reveal = element("button", { type: "button", "aria-expanded": "false", "aria-controls": `${id}-engine` }, "Show this step");
@@ -400,11 +270,17 @@ function buildItem(exercise, index, doc) {
   item.append(form);
 
   let timer = null;
+  let typing = new AbortController();
+  const typeset = () => {
+    typing.abort();
+    typing = new AbortController();
+    preview(item, typing.signal);
+  };
   input.addEventListener("input", () => {
     record.answers[key] = input.value;
     save(record);
     clearTimeout(timer);
-    timer = setTimeout(() => preview(item, doc.symbols), 120);
+    timer = setTimeout(typeset, TYPESET_DELAY_MS);
   });
   reveal.addEventListener("click", () => {
     const open = engine.hidden;
@@ -426,7 +302,7 @@ function buildItem(exercise, index, doc) {
     if (exercise.coordinate) body.coordinate = exercise.coordinate;
     if (system) body.system = system;
     try {
-      const { answer: result } = await request(root.dataset.checkUrl, body);
+      const { answer: result } = await inTurn(() => request(root.dataset.checkUrl, body));
       record.verdicts[key] = { answer: input.value, result: result || { detail: "No answer from the server." } };
       save(record);
       showVerdict(item, record.verdicts[key].result, input.value);
@@ -437,7 +313,7 @@ function buildItem(exercise, index, doc) {
     }
   });
 
-  preview(item, doc.symbols);
+  typeset();
   if (record.verdicts[key]) showVerdict(item, record.verdicts[key].result, record.verdicts[key].answer);
   return item;
 }
@@ -445,12 +321,12 @@ function buildItem(exercise, index, doc) {
 async function loadSteps() {
   const status = document.getElementById("practice-status");
   const list = document.getElementById("practice-steps");
-  const { ok, answer } = await request(root.dataset.practiceUrl, system || undefined);
+  const { ok, answer } = await inTurn(() => request(root.dataset.practiceUrl, system || undefined));
   if (!ok) {
     status.textContent = `The steps could not be loaded: ${answer?.detail || "no answer from the server"}.`;
     return;
   }
-  list.replaceChildren(...answer.exercises.map((exercise, index) => buildItem(exercise, index, answer)));
+  list.replaceChildren(...answer.exercises.map((exercise, index) => buildItem(exercise, index)));
   status.textContent = `${answer.exercises.length} steps to derive, in the chapter's order.`;
 }
 

@@ -7,7 +7,7 @@
  * <script type="application/json" id="scene-data"> and data-* URLs on #simulation.
  */
 import { foldSteps, printReady, whenTypeset } from "./derivation.js";
-import { fetchJson } from "./api.js";
+import { fetchJSON } from "./api.js";
 import { connectSimulation } from "./simulation.js";
 import { keyboardScroll } from "./scrollboxes.js";
 
@@ -26,8 +26,8 @@ if (root) {
     urls: {
       simulate: root.dataset.simulateUrl,
       workPrecision: root.dataset.workPrecisionUrl,
-      modes: (parameters) => fetchJson(root.dataset.modesUrl, { parameters }),
-      poincare: (request) => fetchJson(root.dataset.poincareUrl, request),
+      modes: (parameters) => fetchJSON(root.dataset.modesUrl, { body: { parameters } }),
+      poincare: (request) => fetchJSON(root.dataset.poincareUrl, { body: request }),
     },
     status: document.getElementById("run-status"),
   });

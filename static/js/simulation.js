@@ -1,9 +1,9 @@
 /**
  * simulation.js — run a simulation through the API and draw it into panels.
  *
- *   simulate(url, request, {signal})   POST the request; resolves to the result JSON,
- *                                      rejects with Error(message) carrying the API's
- *                                      4xx "detail" (so it can be shown in place)
+ *   simulate(url, request, {signal})   POST the request (api.js fetchJSON: a 429/503 retried);
+ *                                      resolves to the result JSON, rejects with RequestError
+ *                                      carrying the API's 4xx "detail" (shown in place)
  *   prepareRun(data, request, result)  the result plus what the panels derive from it
  *                                      (T and U from the engine's expressions, momenta,
  *                                      the run's extent), as plain arrays
@@ -25,6 +25,7 @@
  * data is the page's client JSON (app/viz/page_model.py): coordinates, labels, units,
  * parameters, trees, conserved, reduction, constraint_forces, mechanism, panels.
  */
+import { fetchJSON } from "./api.js";
 import { Player } from "./animation.js";
 import { bindControls, controlRange, readRequest } from "./controls.js";
 import { EnergyBars } from "./energybars.js";
@@ -33,23 +34,8 @@ import { createPanel } from "./plots.js";
 import { compileRhs, integrate } from "./preview.js";
 import { fmt, statusLine } from "./summaries.js";
 
-export async function simulate(url, request, { signal } = {}) {
-  const res = await fetch(url, {
-    method: "POST",
-    headers: { "Content-Type": "application/json", Accept: "application/json" },
-    body: JSON.stringify({ ...request, precision: "display" }),
-    signal,
-  });
-  let body = null;
-  try { body = await res.json(); } catch { body = null; }
-  if (!res.ok) {
-    const detail = body && body.detail ? body.detail : `the server answered ${res.status}`;
-    const error = new Error(typeof detail === "string" ? detail : JSON.stringify(detail));
-    error.status = res.status;
-    error.errors = body && body.errors;
-    throw error;
-  }
-  return body;
+export function simulate(url, request, { signal } = {}) {
+  return fetchJSON(url, { body: { ...request, precision: "display" }, signal });
 }
 
 function seriesOrNull(tree, envs) {

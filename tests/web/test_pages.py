@@ -234,14 +234,6 @@ def test_a_scene_page_is_sent_compressed(client):
     assert module.headers["content-encoding"] == "gzip" and "connectSimulation" in module.text
 
 
-def test_a_scene_page_gives_the_browser_the_parsers_functions(pages):
-    from app.viz.exprtree import function_tex
-
-    html = pages[f"/scenes/{next(iter(SCENES))}"].text
-    found = re.search(r'<script type="application/json" id="function-tex">(.*?)</script>', html, re.S)
-    assert found and json.loads(found.group(1)) == function_tex()
-
-
 def test_the_damped_pendulum_is_marked_as_ours(client):
     # the chapter has no damped pendulum: it builds on 4.1's generalized forces, as our own example
     assert SCENES["damped-pendulum"].beyond_chapter and SCENES["damped-pendulum"].section == "4.1"

@@ -1,0 +1,97 @@
+/**
+ * arrows.js — vectors drawn over a mechanism (animation.js): the forces of constraint at an instant,
+ * on one scale for the whole run with a legend, and the velocity handle of the selected body.
+ */
+import { HANDLE_RADIUS } from "./drag.js";
+
+const FORCE_COLORS = ["#7b1fa2", "#00796b", "#c62828"];
+
+/** Per force of constraint: its values along the run and the largest size (for a common scale). */
+export function forceSeries(spec, run, compile) {
+  const out = [];
+  let largest = 0;
+  for (const f of spec.forces || []) {
+    const values = run.forces[f.name];
+    if (!values || !values.length) continue;
+    for (const v of values) if (Number.isFinite(v)) largest = Math.max(largest, Math.abs(v));
+    out.push({ ...f, values, dir: f.direction.map(compile) });
+  }
+  return { list: out, largest };
+}
+
+/** Arrows of the forces of constraint at instant i, on one scale for the whole run, with a legend. */
+export function drawForces(player, ctx, i, dpr) {
+  const { list, largest } = player.forces;
+  const canvas = player.canvas, camera = player.camera;
+  if (!list.length || !(largest > 0)) return [];
+  const env = player.run.envAt(i), longest = 0.3 * Math.min(canvas.width, canvas.height);
+  const perNewton = longest / largest; // screen pixels per newton
+  const out = [];
+  list.forEach((f, j) => {
+    const value = f.values[i];
+    if (!Number.isFinite(value)) return;
+    // from its point of application where the spec names one (the middle of the wedge's base), else its body
+    const p = Number.isInteger(f.at) ? f.at : player.masses[f.on], a = player.xyz[p];
+    const r = a.map((col) => col[i]), d = f.dir.map((g) => g(env));
+    // the arrow is the vector F (grad g / |grad g|) drawn at perNewton screen pixels per newton
+    // (a negative F points against grad g); in 3-D it is projected like everything else
+    const len = (value * perNewton) / camera.frame.scale;
+    const [x, y] = camera.screenOf([r[0], r[1], r[2] ?? 0]);
+    const [tx, ty] = camera.screenOf([r[0] + len * d[0], r[1] + len * d[1], (r[2] ?? 0) + len * (d[2] ?? 0)]);
+    if (!Number.isFinite(tx + ty)) return;
+    const color = FORCE_COLORS[j % FORCE_COLORS.length];
+    arrow(ctx, x, y, tx, ty, color, dpr);
+    out.push({ name: f.name, value, x: Math.round(x / dpr), y: Math.round(y / dpr), tx: Math.round(tx / dpr), ty: Math.round(ty / dpr) });
+  });
+  // the legend, top right on a white card: a round force (at most the largest) and its arrow,
+  // then each force's colour and name
+  const pow = Math.pow(10, Math.floor(Math.log10(largest)));
+  const unit = [5, 2, 1].map((m) => m * pow).find((v) => v <= largest) || pow;
+  ctx.font = `${12 * dpr}px system-ui, sans-serif`;
+  const names = list.map((f) => `→ ${f.name}`);
+  const width = Math.max(unit * perNewton + 60 * dpr, ...names.map((t) => ctx.measureText(t).width)) + 12 * dpr;
+  const W = canvas.width, x1 = W - 12 * dpr, top = 30 * dpr, rowH = 16 * dpr;
+  ctx.fillStyle = "rgba(255,255,255,0.9)";
+  ctx.fillRect(x1 - width, top - 12 * dpr, width + 6 * dpr, rowH * (names.length + 1) + 6 * dpr);
+  ctx.textAlign = "right";
+  names.forEach((text, j) => {
+    ctx.fillStyle = FORCE_COLORS[j % FORCE_COLORS.length];
+    ctx.fillText(text, x1, top + j * rowH);
+  });
+  const y = top + names.length * rowH - 4 * dpr, x0 = x1 - unit * perNewton;
+  arrow(ctx, x0, y, x1, y, "#4b535c", dpr);
+  ctx.fillStyle = "#4b535c"; ctx.fillText(`${Number(unit.toPrecision(2))} N`, x0 - 6 * dpr, y + 4 * dpr);
+  ctx.textAlign = "left";
+  return out;
+}
+
+function arrow(ctx, x0, y0, x1, y1, color, dpr) {
+  const len = Math.hypot(x1 - x0, y1 - y0);
+  ctx.strokeStyle = color; ctx.fillStyle = color; ctx.lineWidth = 2.5 * dpr;
+  ctx.beginPath(); ctx.moveTo(x0, y0); ctx.lineTo(x1, y1); ctx.stroke();
+  if (len < 2 * dpr) return;
+  const ux = (x1 - x0) / len, uy = (y1 - y0) / len, s = Math.min(9 * dpr, len / 2);
+  ctx.beginPath();
+  ctx.moveTo(x1, y1);
+  ctx.lineTo(x1 - ux * s - uy * s * 0.5, y1 - uy * s + ux * s * 0.5);
+  ctx.lineTo(x1 - ux * s + uy * s * 0.5, y1 - uy * s - ux * s * 0.5);
+  ctx.closePath(); ctx.fill();
+}
+
+/** The velocity handle h (drag.js handle()): an arrow from the body ending in a round grip. */
+export function drawHandle(ctx, h, dpr) {
+  const color = "#c2185b", r0 = 11 * dpr, x0 = h.bx + h.ux * r0, y0 = h.by + h.uy * r0;
+  ctx.strokeStyle = color; ctx.fillStyle = color; ctx.lineWidth = 2.5 * dpr;
+  ctx.beginPath(); ctx.moveTo(x0, y0); ctx.lineTo(h.x, h.y); ctx.stroke();
+  if (h.len > 2 * dpr) {
+    // an arrowhead just short of the handle, pointing along the velocity
+    const back = (HANDLE_RADIUS + 2) * dpr, tx = h.x - h.ux * back, ty = h.y - h.uy * back, s = 7 * dpr;
+    ctx.beginPath();
+    ctx.moveTo(tx, ty);
+    ctx.lineTo(tx - h.ux * s - h.uy * s * 0.6, ty - h.uy * s + h.ux * s * 0.6);
+    ctx.lineTo(tx - h.ux * s + h.uy * s * 0.6, ty - h.uy * s - h.ux * s * 0.6);
+    ctx.closePath(); ctx.fill();
+  }
+  ctx.fillStyle = "#fff";
+  ctx.beginPath(); ctx.arc(h.x, h.y, HANDLE_RADIUS * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+}

@@ -1,0 +1,105 @@
+/**
+ * bodies.js — a mechanism's bodies drawn on the canvas (animation.js): fading trails, fixed points,
+ * the moving bodies (balls, or blocks on their slope) and their labels, placed where they hide least.
+ */
+import { HANDLE_RADIUS } from "./drag.js";
+
+export const MASS_COLORS = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a"];
+
+function mix(hex, amount) {
+  // blend a colour toward white: amount 0 -> white, 1 -> the colour (a fading trail without alpha)
+  const n = parseInt(hex.slice(1), 16);
+  const c = [(n >> 16) & 255, (n >> 8) & 255, n & 255].map((v) => Math.round(255 + (v - 255) * amount));
+  return `rgb(${c.join(",")})`;
+}
+
+/** Each body's trail up to instant i, fading with age. */
+export function drawTrails(player, ctx, i, dpr) {
+  player.masses.forEach((p, k) => {
+    const color = MASS_COLORS[k % MASS_COLORS.length];
+    for (let j = Math.max(0, i - player.trailLength + 1); j < i; j++) {
+      const age = (i - j) / player.trailLength;
+      const [x, y] = player.at(p, j);
+      ctx.fillStyle = mix(color, 0.5 * (1 - age) + 0.06);
+      ctx.beginPath(); ctx.arc(x, y, 2.5 * dpr, 0, 2 * Math.PI); ctx.fill();
+    }
+  });
+}
+
+/** The fixed points (pivots, anchors) at instant i. */
+export function drawFixed(player, ctx, i, dpr) {
+  ctx.fillStyle = "#1b1f24";
+  for (const p of player.fixed) {
+    const [x, y] = player.at(p, i);
+    ctx.beginPath(); ctx.arc(x, y, 4 * dpr, 0, 2 * Math.PI); ctx.fill();
+  }
+}
+
+/** Labels of two or more bodies (at their screen positions `placed`), before the bodies, so no label hides a
+ * body; `grip` is the velocity handle drawn at the first instant (or null). */
+export function drawLabels(player, ctx, i, dpr, placed, grip) {
+  const canvas = player.canvas;
+  // each label goes to the corner beside its body where it covers the fewest rods, strings, springs and
+  // bodies and stays inside the canvas, with a white halo so that bodies that meet keep readable labels
+  const segments = player.spec.links.map((link) => [player.at(link.from, i), player.at(link.to, i)]);
+  const boxes = [];
+  const cost = (x0, y0, x1, y1) => {
+    let c = 0;
+    if (x0 < 2 * dpr || x1 > canvas.width - 2 * dpr || y0 < 2 * dpr || y1 > canvas.height - 2 * dpr) c += 100;
+    const inside = (x, y) => x >= x0 && x <= x1 && y >= y0 && y <= y1;
+    for (const [[ax, ay], [bx, by]] of segments) {
+      for (let f = 0; f <= 1; f += 0.125) if (inside(ax + (bx - ax) * f, ay + (by - ay) * f)) { c += 1; break; }
+    }
+    for (const [bx, by] of placed) if (inside(bx, by) || inside(bx - 10 * dpr, by) || inside(bx + 10 * dpr, by)) c += 2;
+    // labels already placed, and the velocity handle (drawn at the first instant), weigh most
+    for (const [a0, b0, a1, b1] of boxes) if (x0 < a1 && x1 > a0 && y0 < b1 && y1 > b0) c += 5;
+    if (grip) {
+      const r = (HANDLE_RADIUS + 2) * dpr;
+      if (grip.x + r > x0 && grip.x - r < x1 && grip.y + r > y0 && grip.y - r < y1) c += 4;
+    }
+    return c;
+  };
+  player.masses.forEach((p, k) => {
+    const [x, y] = placed[k], label = player.spec.points[p].label, w = ctx.measureText(label).width, h = 13 * dpr;
+    let best = null;
+    for (const [sx, sy] of [[1, -1], [-1, -1], [1, 1], [-1, 1]]) {
+      const lx = x + sx * 14 * dpr, ly = y + (sy < 0 ? -12 : 22) * dpr;
+      const x0 = sx > 0 ? lx : lx - w, c = cost(x0, ly - h, x0 + w, ly + 3 * dpr);
+      if (!best || c < best.c) best = { c, lx, ly, align: sx > 0 ? "left" : "right", box: [x0, ly - h, x0 + w, ly + 3 * dpr] };
+    }
+    boxes.push(best.box);
+    ctx.textAlign = best.align;
+    ctx.strokeStyle = "#fff"; ctx.lineWidth = 4 * dpr;
+    ctx.strokeText(label, best.lx, best.ly);
+    ctx.fillStyle = "#1b1f24";
+    ctx.fillText(label, best.lx, best.ly);
+  });
+  ctx.textAlign = "left";
+}
+
+/** The bodies at their screen positions `placed` (the selected one ringed while the canvas has focus);
+ * returns each body's label and position in CSS pixels. */
+export function drawBodies(player, ctx, i, dpr, placed) {
+  const bodies = [];
+  player.masses.forEach((p, k) => {
+    const [x, y] = placed[k];
+    const selected = k === player.selected && player.focused;
+    ctx.fillStyle = MASS_COLORS[k % MASS_COLORS.length];
+    ctx.strokeStyle = selected ? "#ffbf47" : "#1b1f24";
+    ctx.lineWidth = (selected ? 4 : 1.5) * dpr;
+    const tilt = player.tilts[p];
+    if (tilt) {
+      // a block: a rectangle whose base lies on its slope, the particle at the middle of the base
+      const a = tilt(player.run.envAt(i)), W = 15 * dpr, H = 18 * dpr;
+      const dx = Math.cos(a), dy = -Math.sin(a), nx = -Math.sin(a), ny = -Math.cos(a); // along, and up from, the slope on screen
+      ctx.beginPath();
+      ctx.moveTo(x - W * dx, y - W * dy); ctx.lineTo(x + W * dx, y + W * dy);
+      ctx.lineTo(x + W * dx + H * nx, y + W * dy + H * ny); ctx.lineTo(x - W * dx + H * nx, y - W * dy + H * ny);
+      ctx.closePath(); ctx.fill(); ctx.stroke();
+    } else {
+      ctx.beginPath(); ctx.arc(x, y, 10 * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+    }
+    bodies.push({ label: player.spec.points[p].label, x: Math.round(x / dpr), y: Math.round(y / dpr) });
+  });
+  return bodies;
+}

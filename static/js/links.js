@@ -1,0 +1,61 @@
+/**
+ * links.js — what joins a mechanism's points, drawn on the canvas (animation.js): rods, springs (a
+ * zigzag that stretches with them), strings (slack where the tension the engine derives for them is
+ * negative) and wheels (a pulley's rim and hub with the string wrapped over or under it).
+ */
+
+/** The links at instant i (those whose length the run confirms); the number drawn. */
+export function drawLinks(player, ctx, i, dpr, slack) {
+  let count = 0;
+  player.spec.links.forEach((link, j) => {
+    if (player.unsteady.has(j)) return;
+    const [x0, y0] = player.at(link.from, i), [x1, y1] = player.at(link.to, i);
+    const string = link.style === "string";
+    ctx.strokeStyle = string && slack ? "#c26100" : "#1b1f24";
+    ctx.lineWidth = (string ? 1.5 : link.style === "spring" ? 1.8 : 3) * dpr;
+    ctx.setLineDash(string && slack ? [5 * dpr, 3 * dpr] : []);
+    ctx.beginPath();
+    if (link.style === "spring") zigzag(ctx, x0, y0, x1, y1, dpr);
+    else if (string && slack) {
+      // a slack string sags: a curve through a point below the straight line's middle
+      const len = Math.hypot(x1 - x0, y1 - y0);
+      ctx.moveTo(x0, y0);
+      ctx.quadraticCurveTo((x0 + x1) / 2 + 0.15 * len, (y0 + y1) / 2 + 0.3 * len, x1, y1);
+    } else { ctx.moveTo(x0, y0); ctx.lineTo(x1, y1); }
+    ctx.stroke();
+    count++;
+  });
+  ctx.setLineDash([]);
+  return count;
+}
+
+function zigzag(ctx, x0, y0, x1, y1, dpr) {
+  const dx = x1 - x0, dy = y1 - y0, len = Math.hypot(dx, dy) || 1;
+  const nx = -dy / len, ny = dx / len, turns = 10, amp = 6 * dpr;
+  ctx.moveTo(x0, y0);
+  for (let k = 1; k < 2 * turns; k++) {
+    const f = 0.1 + (0.8 * k) / (2 * turns), s = k % 2 ? amp : -amp;
+    ctx.lineTo(x0 + dx * f + nx * s, y0 + dy * f + ny * s);
+  }
+  ctx.lineTo(x1, y1);
+}
+
+/** The wheels at instant i: the rim, the hub, and the string wrapped over its top (a fixed pulley) or
+ * under its bottom (the movable one); the number drawn. */
+export function drawWheels(player, ctx, i, dpr, slack) {
+  let count = 0;
+  for (const w of player.wheels) {
+    const [x, y] = player.at(w.at, i);
+    const env = player.run.envAt(i), r = Math.abs(w.r(env)) * player.camera.frame.scale;
+    if (!Number.isFinite(r)) continue;
+    ctx.fillStyle = "#fff"; ctx.strokeStyle = "#6b747e"; ctx.lineWidth = 2 * dpr;
+    ctx.beginPath(); ctx.arc(x, y, r, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+    ctx.fillStyle = "#6b747e"; ctx.beginPath(); ctx.arc(x, y, 3 * dpr, 0, 2 * Math.PI); ctx.fill();
+    ctx.strokeStyle = slack ? "#c26100" : "#1b1f24"; ctx.lineWidth = 1.5 * dpr;
+    ctx.beginPath();
+    if (w.wrap === "top") ctx.arc(x, y, r, Math.PI, 2 * Math.PI); else ctx.arc(x, y, r, 0, Math.PI);
+    ctx.stroke();
+    count++;
+  }
+  return count;
+}

@@ -1,0 +1,50 @@
+/**
+ * render.js — one frame of a mechanism on its canvas (animation.js): the scenery, trails, links and
+ * wheels, fixed points, labels and bodies, forces, messages and the velocity handle, in that order
+ * (later ones over earlier ones).
+ *
+ * For tests and tools it records what it drew: canvas.dataset.bodies (each body's label and position
+ * in CSS pixels), canvas.dataset.drawn (counts, the slack string, forces, the run's event) and
+ * canvas.dataset.handle (the velocity handle's position in CSS pixels, "" when none is shown).
+ */
+import { drawForces, drawHandle } from "./arrows.js";
+import { drawBodies, drawFixed, drawLabels, drawTrails } from "./bodies.js";
+import { drawLinks, drawWheels } from "./links.js";
+import { drawCurve, drawSolids, message, scaleBar } from "./scenery.js";
+
+export function drawFrame(player, i) {
+  const canvas = player.canvas, ctx = player.ctx, dpr = window.devicePixelRatio || 1, run = player.run, spec = player.spec;
+  ctx.setTransform(1, 0, 0, 1, 0, 0);
+  ctx.clearRect(0, 0, canvas.width, canvas.height);
+  ctx.lineCap = "round"; ctx.lineJoin = "round";
+  const drawn = { links: 0, wheels: 0, slack: false, forces: [], event: "", none: !!spec.none };
+  if (spec.none) message(ctx, canvas, dpr, "No picture of its own: this system has no particle positions.", canvas.height / 2);
+  // fixed bodies (a ramp, a wedge), then the curves: the ground, wires, dashed guides
+  drawSolids(player, ctx, i, dpr);
+  for (const c of player.curveCols) drawCurve(player.camera, ctx, c, c.moving ? c.at(run.envAt(i)) : c.cols, dpr);
+  if (!spec.none) scaleBar(ctx, canvas, player.camera.frame.scale, dpr);
+  // fading trails first, so that strings, rods and springs are drawn over them
+  drawTrails(player, ctx, i, dpr);
+  const tension = spec.slack && run.forces[spec.slack] ? run.forces[spec.slack][i] : null;
+  const slack = tension !== null && tension !== undefined && tension < 0;
+  drawn.links = drawLinks(player, ctx, i, dpr, slack);
+  drawn.slack = slack;
+  drawn.wheels = drawWheels(player, ctx, i, dpr, slack);
+  drawFixed(player, ctx, i, dpr);
+  ctx.font = `${13 * dpr}px system-ui, sans-serif`;
+  const placed = player.masses.map((p) => player.at(p, i));
+  if (player.masses.length > 1) drawLabels(player, ctx, i, dpr, placed, i === 0 ? player.drag.handle() : null);
+  const bodies = drawBodies(player, ctx, i, dpr, placed);
+  if (player.showForces?.checked) drawn.forces = drawForces(player, ctx, i, dpr);
+  if (slack) message(ctx, canvas, dpr, "The string is slack (its tension would be negative).", 18 * dpr);
+  const event = run.stats && run.stats.event;
+  if (event && i === run.n - 1) {
+    drawn.event = event.name;
+    message(ctx, canvas, dpr, `t = ${Number(event.t.toFixed(3))} s: ${event.message}`, 18 * dpr);
+  }
+  canvas.dataset.bodies = JSON.stringify(bodies);
+  canvas.dataset.drawn = JSON.stringify(drawn);
+  const handle = i === 0 ? player.drag.handle() : null;
+  if (handle) drawHandle(ctx, handle, dpr);
+  canvas.dataset.handle = handle ? JSON.stringify({ x: Math.round(handle.x / dpr), y: Math.round(handle.y / dpr) }) : "";
+}

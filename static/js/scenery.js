@@ -1,0 +1,77 @@
+/**
+ * scenery.js — what a mechanism moves in, drawn on the canvas (animation.js): fixed solids (a ramp, a
+ * wedge), curves (the ground, walls, wires, dashed guides), the scale bar, and a message band.
+ */
+
+/** Fixed bodies: polygons through points of the mechanism, at instant i. */
+export function drawSolids(player, ctx, i, dpr) {
+  for (const solid of player.spec.solids || []) {
+    ctx.beginPath();
+    solid.corners.forEach((p, k) => { const [x, y] = player.at(p, i); if (k) ctx.lineTo(x, y); else ctx.moveTo(x, y); });
+    ctx.closePath();
+    ctx.fillStyle = "#e3e7ec"; ctx.fill();
+    ctx.strokeStyle = "#6b747e"; ctx.lineWidth = 2 * dpr; ctx.stroke();
+  }
+}
+
+export function drawCurve(camera, ctx, c, cols, dpr) {
+  const style = c.style;
+  ctx.strokeStyle = style === "guide" ? "#8c959f" : "#4b535c";
+  ctx.lineWidth = (style === "guide" ? 1.5 : 2.5) * dpr;
+  ctx.setLineDash(style === "guide" ? [4 * dpr, 4 * dpr] : []);
+  const pts = [];
+  for (let k = 0; k < cols[0].length; k++) pts.push(camera.screenOf([cols[0][k], cols[1][k], cols[2] ? cols[2][k] : 0]));
+  ctx.beginPath();
+  let pen = false;
+  for (const [x, y] of pts) {
+    if (!Number.isFinite(x) || !Number.isFinite(y)) { pen = false; continue; }
+    if (pen) ctx.lineTo(x, y); else ctx.moveTo(x, y);
+    pen = true;
+  }
+  ctx.stroke();
+  ctx.setLineDash([]);
+  // the ground, a ceiling or a wall: short slanted hatches on the side away from the motion
+  const away = { ground: [-1, 1], ceiling: [1, -1], "wall-left": [-1, 1], "wall-right": [1, 1] }[style];
+  if (!away) return;
+  const [x0, y0] = pts[0], [x1, y1] = pts[pts.length - 1], len = Math.hypot(x1 - x0, y1 - y0);
+  if (!(len > 0)) return;
+  const gap = 10 * dpr, h = 7 * dpr, count = Math.floor(len / gap);
+  ctx.lineWidth = 1.2 * dpr; ctx.strokeStyle = "#8c959f";
+  ctx.beginPath();
+  for (let k = 0; k <= count; k++) {
+    const x = x0 + ((x1 - x0) * k) / count, y = y0 + ((y1 - y0) * k) / count;
+    const vertical = style.startsWith("wall");
+    ctx.moveTo(x, y);
+    ctx.lineTo(x + (vertical ? away[0] * h : away[0] * h * 0.7), y + (vertical ? away[1] * h * 0.7 : away[1] * h));
+  }
+  ctx.stroke();
+}
+
+/** Text across the canvas at height y (wrapped to its width), on a white band. */
+export function message(ctx, canvas, dpr, text, y) {
+  ctx.font = `${13 * dpr}px system-ui, sans-serif`;
+  const room = canvas.width - 24 * dpr, lines = [];
+  for (const word of text.split(" ")) {
+    const last = lines.length ? `${lines[lines.length - 1]} ${word}` : word;
+    if (lines.length && ctx.measureText(last).width <= room) lines[lines.length - 1] = last;
+    else lines.push(word);
+  }
+  const h = 17 * dpr, w = Math.min(room, Math.max(...lines.map((l) => ctx.measureText(l).width)));
+  const x = (canvas.width - w) / 2, top = Math.max(4 * dpr, y - 14 * dpr - ((lines.length - 1) * h) / 2);
+  ctx.fillStyle = "rgba(255,255,255,0.9)";
+  ctx.fillRect(x - 6 * dpr, top, w + 12 * dpr, lines.length * h + 6 * dpr);
+  ctx.fillStyle = "#1b1f24";
+  lines.forEach((line, k) => ctx.fillText(line, x, top + 14 * dpr + k * h, room));
+}
+
+export function scaleBar(ctx, canvas, scale, dpr) {
+  // a bar of a round length (1, 2 or 5 times a power of ten metres) in the lower left corner
+  const target = 90 * dpr / scale;
+  const p = Math.pow(10, Math.floor(Math.log10(target)));
+  const len = [5, 2, 1].map((m) => m * p).find((v) => v <= target) || p;
+  const x = 12 * dpr, y = canvas.height - 10 * dpr, w = len * scale;
+  ctx.strokeStyle = "#4b535c"; ctx.lineWidth = 2 * dpr;
+  ctx.beginPath(); ctx.moveTo(x, y - 5 * dpr); ctx.lineTo(x, y); ctx.lineTo(x + w, y); ctx.lineTo(x + w, y - 5 * dpr); ctx.stroke();
+  ctx.fillStyle = "#4b535c"; ctx.font = `${12 * dpr}px system-ui, sans-serif`;
+  ctx.fillText(`${Number(len.toPrecision(2))} m`, x + w + 6 * dpr, y);
+}

@@ -1,0 +1,75 @@
+"""The practice box typesets through the checker's parser: the shared corpus (tests/data/expressions.json) typed
+into the page is accepted and refused exactly as app/engine/parse.py accepts and refuses it (the Python side:
+tests/service/test_typesetting.py, tests/web/test_api_typeset.py)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+pytestmark = pytest.mark.browser
+
+CORPUS = json.loads((Path(__file__).parents[1] / "data" / "expressions.json").read_text())
+BOX = f'.practice-step[data-key="{CORPUS["step"]}"]'
+
+
+def typed(page, text: str) -> str:
+    """Type the text into the step's box; the preview's verdict once the server has answered for it."""
+    box = page.locator(BOX + " input[name]")
+    box.fill("")
+    page.wait_for_function(f"!document.querySelector('{BOX}').dataset.typeset")
+    box.fill(text)
+    page.wait_for_function(f"document.querySelector('{BOX}').dataset.typeset")
+    return page.locator(BOX).get_attribute("data-typeset")
+
+
+def test_the_box_accepts_and_refuses_the_corpus_as_the_parser_does(page, artifacts):
+    page.set_viewport_size({"width": 1366, "height": 768})
+    page.goto(f"/scenes/{CORPUS['scene']}?practice")
+    page.wait_for_selector(BOX)
+    preview = page.locator(BOX + " .practice-preview")
+    for text in CORPUS["accepted"]:
+        assert typed(page, text) == "read", text
+        assert (
+            preview.locator(".practice-preview-math .katex").count() == 1
+            and preview.locator(".katex-error").count() == 0
+        )
+        assert preview.locator(".practice-preview-note").inner_text() == ""
+    for case in CORPUS["refused"]:
+        assert typed(page, case["text"]) == "refused", case
+        assert case["says"] in preview.locator(".practice-preview-note").inner_text(), case
+    assert [e for e in page.console_errors if "status of 422" not in e] == []
+
+
+def test_a_refused_text_keeps_the_last_good_rendering_beside_the_parsers_message(page, artifacts):
+    page.goto(f"/scenes/{CORPUS['scene']}?practice")
+    page.wait_for_selector(BOX)
+    box = page.locator(BOX + " input[name]")
+    box.fill("m1*l1**2*theta1_dot**2/2")
+    page.wait_for_function(f"document.querySelector('{BOX}').dataset.typeset === 'read'")
+    shown = page.locator(BOX + " .practice-preview-math annotation").text_content()
+    assert r"\dot{\theta}_{1}^{2}" in shown and shown.startswith("L =")
+    box.press_sequentially(" + m1 l1", delay=30)
+    page.wait_for_function(f"document.querySelector('{BOX}').dataset.typeset === 'refused'")
+    note = page.locator(BOX + " .practice-preview-note").inner_text()
+    assert "+ m1*l1 (a * between factors)" in note
+    assert page.locator(BOX + " .practice-preview-math annotation").text_content() == shown
+    for width, height in ((1366, 768), (390, 844)):
+        page.set_viewport_size({"width": width, "height": height})
+        page.locator(BOX).screenshot(path=artifacts / f"typeset-{width}.png")
+
+
+def test_the_playgrounds_box_reads_the_declared_systems_names(page):
+    page.goto("/playground")
+    page.locator("#practice-switch").check()
+    box = '.practice-step[data-key="acceleration:x"]'
+    page.wait_for_selector(box)
+    page.locator(box + " input[name]").fill("(F*cos(w*t) - b*x_dot - k*x)/m")
+    page.wait_for_function(f"document.querySelector('{box}').dataset.typeset === 'read'")
+    shown = page.locator(box + " .practice-preview-math annotation").text_content()
+    assert shown.startswith(r"\ddot{x} =") and r"\dot{x}" in shown
+    page.locator(box + " input[name]").fill("k*y")  # y is no name of this system
+    page.wait_for_function(f"document.querySelector('{box}').dataset.typeset === 'refused'")
+    assert "unknown name" in page.locator(box + " .practice-preview-note").inner_text()
