@@ -211,7 +211,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     if scene is not None:
         # a chapter scene explains each step in its own terms; the generic sentence stays otherwise
         result["steps"] = [
-            {**s, "explanation": reason(scene.id, s["title"]) or s["explanation"]} for s in result["steps"]
+            {**s, "explanation": reason(scene.id, s["key"]) or s["explanation"]} for s in result["steps"]
         ]
     result["skipped"] = [{"member": s.member, "reason": s.reason} for s in skipped]
     return result
@@ -246,19 +246,19 @@ def add_beyond(
                     lambda: (lambda m: (normal_mode_steps(d, m), normal_modes_json(m, pr)))(
                         normal_modes(d, held_momenta(d, scene))), None, skipped)  # fmt: skip
     steps = result["steps"]
-    titles = [s["title"] for s in steps]
+    keys = [s["key"] for s in steps]
     # Hamilton's equations right after h (and after the power of the forces when there is one)
     after = max(
         (
             i + 1
-            for i, t in enumerate(titles)
-            if t in ("Hamiltonian", "Is h equal to E?", "Power of the non-conservative forces")
+            for i, k in enumerate(keys)
+            if k in ("hamiltonian", "h-vs-e", "power")
         ),
         default=len(steps),
     )
     # the normal modes after the chapter's own steps, before constraint forces and coordinate changes
     end = next(
-        (i for i, t in enumerate(titles) if t in ("Constraints in Cartesian form", "Change of coordinates")), len(steps)
+        (i for i, k in enumerate(keys) if k in ("constraints", "change-of-coordinates")), len(steps)
     )
     result["steps"] = (
         steps[:after] + (ham[1] if ham else []) + steps[after:end] + (modes[0] if modes else []) + steps[end:]

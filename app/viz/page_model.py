@@ -46,8 +46,8 @@ def _steps(doc: dict[str, Any]) -> list[dict[str, Any]]:
             "latex": s["latex"],
             "explanation": s["explanation"],
             # a core step (L, the equations, the accelerations) is never folded: long ones are broken across lines
-            "long": len(s["latex"]) > LONG_STEP and s["title"] not in CORE_STEPS,
-            "core": s["title"] in CORE_STEPS,
+            "long": len(s["latex"]) > LONG_STEP and s["key"] not in CORE_STEPS,
+            "core": s["key"] in CORE_STEPS,
         }
         for i, s in enumerate(doc["steps"])
     ]

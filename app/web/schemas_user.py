@@ -122,6 +122,7 @@ class ConservedQuantity(ExprPair):
 
 class Step(BaseModel):
     model_config = OPEN
+    key: str = Field(description="What the step is (euler-lagrange; derivatives:theta), whatever its title reads.")
     title: str
     latex: str
     sympy: str
