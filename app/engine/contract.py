@@ -211,7 +211,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     if scene is not None:
         # a chapter scene explains each step in its own terms; the generic sentence stays otherwise
         result["steps"] = [
-            {**s, "explanation": reason(scene.id, s["key"]) or s["explanation"]} for s in result["steps"]
+            {**s, "explanation": reason(scene.reasons, s["key"]) or s["explanation"]} for s in result["steps"]
         ]
     result["skipped"] = [{"member": s.member, "reason": s.reason} for s in skipped]
     return result
@@ -249,17 +249,11 @@ def add_beyond(
     keys = [s["key"] for s in steps]
     # Hamilton's equations right after h (and after the power of the forces when there is one)
     after = max(
-        (
-            i + 1
-            for i, k in enumerate(keys)
-            if k in ("hamiltonian", "h-vs-e", "power")
-        ),
+        (i + 1 for i, k in enumerate(keys) if k in ("hamiltonian", "h-vs-e", "power")),
         default=len(steps),
     )
     # the normal modes after the chapter's own steps, before constraint forces and coordinate changes
-    end = next(
-        (i for i, k in enumerate(keys) if k in ("constraints", "change-of-coordinates")), len(steps)
-    )
+    end = next((i for i, k in enumerate(keys) if k in ("constraints", "change-of-coordinates")), len(steps))
     result["steps"] = (
         steps[:after] + (ham[1] if ham else []) + steps[after:end] + (modes[0] if modes else []) + steps[end:]
     )
@@ -268,16 +262,24 @@ def add_beyond(
 
 
 def scene_json(scene: Scene) -> dict[str, Any]:
-    """What the page says about the scene: statement, figure, panels and defaults."""
+    """The scene as data, the one place it is written out: what the API lists, the document's ``scene`` block
+    and the page's facts (statement, figure, panels, defaults, events, the family it is drawn as)."""
     return {
+        "id": scene.id,
         "title": scene.title,
         "section": scene.section,
         "summary": scene.summary,
         "statement": scene.statement,
         "figure": scene.figure,
-        "panels": list(scene.panels),
+        "coordinates": list(scene.system.coordinates),
+        "parameters": parameters_json(scene.system.parameters),
         "initial": dict(scene.initial),
         "t_end": scene.t_end,
+        "panels": list(scene.panels),
+        "beyond_chapter": scene.beyond_chapter,
+        "events": [{"name": e.name, "expression": e.expression, "message": e.message} for e in scene.events],
+        "family": scene.family,
+        "marks": list(scene.marks),
     }
 
 

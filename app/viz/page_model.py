@@ -337,7 +337,7 @@ def scene_page(
     reduction = _reduction(doc)
     defaults = {k: v["default"] for k, v in doc["parameters"].items()}
     spec = mechanism(
-        info.get("id", doc.get("id", "")),
+        info.get("family", ""),
         particles,
         doc["coordinates"],
         moves_in_3d(particles, doc["coordinates"]),
@@ -358,13 +358,14 @@ def scene_page(
         "panels": panels,
         "panel_text": texts(),
         "diagram": diagram(
-            info.get("id", ""),
+            info.get("family", ""),
             f"Set-up: {info.get('title', '')}",
             info.get("figure", ""),
             defaults,
             info.get("initial", {}),
             doc["coordinates"],
             particles,
+            marks=info.get("marks", ()),
         ),  # fmt: skip
         # what the animation draws, in words (the set-up's figure text stays with the diagram)
         "animation_caption": spec["caption"] if spec else "",

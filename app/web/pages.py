@@ -16,6 +16,7 @@ from typing import Any
 from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, RedirectResponse
 
+from app.engine.contract import scene_json
 from app.errors import UnknownScene
 from app.numerics.methods import CHOICES
 from app.service import derivations
@@ -32,13 +33,8 @@ _lock = threading.Lock()
 
 
 def scene_info(scene_id: str, doc: dict[str, Any]) -> dict[str, Any]:
-    """Title, section, statement, figure, panels, initial state and t_end of a scene."""
-    s = derivations.scene(scene_id)
-    info = {"id": s.id, **derivations.scene_summary(s), "statement": s.statement, "figure": s.figure}
-    info.update(doc.get("scene") or {})
-    info["id"] = s.id
-    info["events"] = [{"name": e.name, "expression": e.expression, "message": e.message} for e in s.events]
-    return info
+    """Title, section, statement, figure, panels, initial state, t_end, events and family of a scene."""
+    return {**scene_json(derivations.scene(scene_id)), **(doc.get("scene") or {})}
 
 
 def page_model(scene_id: str) -> dict[str, Any]:
@@ -62,9 +58,8 @@ def _card_diagram(s: Any) -> str:
     if s.id not in _cards:
         defaults = {p.name: p.default for p in s.system.parameters}
         particles = [(p.label, p.position) for p in s.system.particles]
-        _cards[s.id] = diagram(
-            s.id, s.title, s.figure, defaults, dict(s.initial), s.system.coordinates, particles, ident=f"card-{s.id}"
-        )
+        drawn = (s.family, s.title, s.figure, defaults, dict(s.initial), s.system.coordinates, particles)
+        _cards[s.id] = diagram(*drawn, ident=f"card-{s.id}", marks=s.marks)
     return _cards[s.id]
 
 
@@ -73,7 +68,7 @@ def index(request: Request) -> HTMLResponse:
     # the panels each page shows (app/viz/panels.py) tell the contents where a section is illustrated
     scenes = [
         {
-            **derivations.scene_summary(s),
+            **scene_json(s),
             "panels": page_model(s.id)["panels"],
             "diagram": _card_diagram(s),
             "url": f"/scenes/{s.id}",
