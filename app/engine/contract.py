@@ -28,6 +28,7 @@ from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_s
 from app.engine.rods import fixed_distances
 from app.engine.transform import Transformed, transform
 from app.engine.trees import maybe_of_sympy
+from app.limits import DISPLAY_SECONDS, LARGE_DISPLAY_SECONDS, MEMBER_SECONDS
 from app.scenes.reasons import reason
 from app.scenes.types import Parameter, Scene
 
@@ -40,20 +41,7 @@ def parameters_json(parameters: tuple[Parameter, ...]) -> dict[str, dict[str, An
     }
 
 
-DISPLAY_SECONDS = 6.0
-# From three coordinates on (no chapter scene has more than two), the display simplifications share less:
-# the residuals and forces of a chain rarely simplify beyond sin² + cos² = 1, and the user waits for them.
-LARGE_DISPLAY_SECONDS = 1.5
 LARGE_FROM = 3
-# Each member of the document beyond the equations has its own time bound (seconds); one that runs out
-# is left out with a note in "skipped", never a refusal of the system (app.engine.budget.bounded).
-MEMBER_SECONDS = {
-    "steps": 8.0,
-    "constraint_forces": 3.0,
-    "transformed": 3.0,
-    "hamilton": 3.0,
-    "normal_modes": 4.0,
-}
 # From LARGE_FROM coordinates on each bound is this share of its own: the equations come first
 LARGE_SHARE = 0.5
 

@@ -13,6 +13,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
+from app.limits import DEFAULT_T_END
+
 
 @dataclass(frozen=True)
 class Parameter:
@@ -161,7 +163,7 @@ class Scene:
     statement: str = ""
     figure: str = ""
     initial: dict[str, float] = field(default_factory=dict)
-    t_end: float = 10.0
+    t_end: float = DEFAULT_T_END
     panels: tuple[str, ...] = ()
     errata: tuple[Erratum, ...] = ()
     beyond_chapter: bool = False
