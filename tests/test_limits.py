@@ -61,3 +61,15 @@ def test_no_module_of_the_app_defines_a_time_bound_of_its_own():
     # file's short limit is an example's, not the program's
     allowed = ("app/limits.py:", "app/numerics/limits.py:", "app/web/examples_user.py:")
     assert [line for line in found if not line.startswith(allowed)] == []
+
+
+def test_a_changed_limit_changes_the_caches_fingerprint(monkeypatch, tmp_path):
+    from app.service import cache
+
+    (tmp_path / "engine").mkdir()
+    (tmp_path / "engine" / "a.py").write_text("X = 1\n")
+    (tmp_path / "limits.py").write_text("SOLVE_SECONDS = 2.0\n")
+    monkeypatch.setattr(cache, "APP_SOURCE", tmp_path)
+    before = cache.source_fingerprint("engine")
+    (tmp_path / "limits.py").write_text("SOLVE_SECONDS = 3.0\n")
+    assert cache.source_fingerprint("engine") != before
