@@ -23,6 +23,7 @@ from app.service import derivations
 from app.viz.chapter import table_of_contents
 from app.viz.diagrams import diagram
 from app.viz.page_model import scene_page
+from app.web.compression import negotiate
 from app.web.errors import problem
 from app.web.templating import templates
 
@@ -97,7 +98,7 @@ def scene_page_route(request: Request, scene_id: str) -> HTMLResponse:
     if cached is None or cached[0] is not model:
         body = bytes(templates.TemplateResponse(request, "scene.html", {"m": model, "scene": model["info"]}).body)
         cached = _pages[scene_id] = (model, body, gzip.compress(body, 9))
-    if "gzip" in request.headers.get("accept-encoding", ""):
+    if negotiate(request.headers.get("accept-encoding", ""), offered=("gzip",)):
         return HTMLResponse(cached[2], headers={"Content-Encoding": "gzip", "Vary": "Accept-Encoding"})
     return HTMLResponse(cached[1], headers={"Vary": "Accept-Encoding"})
 

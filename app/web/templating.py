@@ -25,6 +25,7 @@ from starlette.types import Scope
 from app.settings import ROOT
 from app.viz.chapter import ABOUT
 from app.viz.exprtree import function_tex
+from app.web.compression import negotiate
 from app.web.mathml import mathml
 
 
@@ -44,7 +45,8 @@ class ClassroomStaticFiles(StaticFiles):
         return response
 
     async def _compressed(self, path: str, scope: Scope) -> Response | None:
-        if scope["method"] not in ("GET", "HEAD") or "gzip" not in Headers(scope=scope).get("accept-encoding", ""):
+        gzip_accepted = negotiate(Headers(scope=scope).get("accept-encoding", ""), ("gzip",))
+        if scope["method"] not in ("GET", "HEAD") or not gzip_accepted:
             return None
         try:
             full_path, found = await anyio.to_thread.run_sync(self.lookup_path, path + ".gz")
