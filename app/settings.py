@@ -54,6 +54,7 @@ class Settings(BaseSettings):
     )
     user_cache_mb: int = Field(default=64, gt=0, description="disk for user systems' generated code and compiled cache")
     header_seconds: float = Field(default=10.0, gt=0, description="time a client has to send a request's headers")
+    keep_alive_seconds: int = Field(default=75, gt=0, description="time an idle connection waits for its next request")
     connections: int = Field(default=400, gt=0, description="open connections and requests per web process; then 503")
     connections_per_address: int = Field(
         default=150, gt=0, description="open connections from one address per web process; then 503"

@@ -12,6 +12,7 @@ import sympy as sp
 
 from app.engine.derive import Derivation
 
+KEY = "action"
 TITLE = "The action S = ∫ L dt is stationary on the true path"
 
 
@@ -34,4 +35,4 @@ def action_step(d: Derivation) -> dict[str, str]:
     if forced:
         text += " Here forces Q that no potential describes act, so they join the condition as the work ∫ Q·δq dt."
     integral: Any = sp.Integral(d.mechanics.L, d.table.t)
-    return {"title": TITLE, "latex": latex, "sympy": sp.sstr(integral), "explanation": text}
+    return {"key": KEY, "title": TITLE, "latex": latex, "sympy": sp.sstr(integral), "explanation": text}

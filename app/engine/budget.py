@@ -21,9 +21,10 @@ from typing import TypeVar
 
 import sympy as sp
 
+from app.limits import MEMBER_RESERVE_SECONDS, SIMPLIFY_SECONDS
+
 T = TypeVar("T")
 
-SIMPLIFY_SECONDS = 0.5
 SIMPLIFY_MAX_OPS = 300
 # pythagoras expands its argument; above this many nodes (counted before expanding) it leaves it as it is:
 # an LU-solved acceleration of the triple pendulum (a few thousand nodes) did not expand in 300 s
@@ -93,10 +94,6 @@ class Skipped:
 
     member: str
     reason: str
-
-
-# Time kept back from a member's bound for the rest of the document when an outer limit is near.
-MEMBER_RESERVE_SECONDS = 1.0
 
 
 def bounded(member: str, what: str, seconds: float, work: Callable[[], T], fallback: T, skipped: list[Skipped]) -> T:

@@ -64,18 +64,16 @@ from app.engine.parse import ExpressionError, check_expression, parse_expression
 from app.engine.reality import real_somewhere
 from app.engine.report import Printer, display, plain_name
 from app.engine.textbook import unicode_text
+from app.limits import CHECK_DISPLAY_SECONDS as DISPLAY_SECONDS
+from app.limits import DIFFERENCE_SECONDS, FACTOR_SECONDS, PARTS_SECONDS
 
 STEPS = ("kinetic", "potential", "lagrangian", "momentum", "equation", "acceleration", "hamiltonian", "omega_squared")
 PER_COORDINATE = frozenset({"momentum", "equation", "acceleration"})
 # how an answer may differ from the truth and still be physically the same
 RELATIONS = {"potential": "constant", "lagrangian": "constant", "hamiltonian": "constant", "equation": "factor"}
 MIN_POINTS = 6  # sample points where both sides are defined, for a numeric verdict
-DISPLAY_SECONDS = 0.12  # for typesetting a difference: past it, the difference is shown expanded
-DIFFERENCE_SECONDS = 0.5  # at most: a difference's cancelling and trigonometry (what cancels never shows)
-PARTS_SECONDS = 0.1  # for comparing an unmatched answer part by part
 # the steps whose answers are polynomials in the rates, compared part by part when no mistake matches
 PARTED = frozenset({"kinetic", "lagrangian", "momentum", "equation", "hamiltonian"})
-FACTOR_SECONDS = 0.2
 
 # which kinds of name each step's answer may use
 _KINDS = {

@@ -28,10 +28,10 @@ from sympy.simplify.fu import TR10i
 
 from app.engine.budget import BudgetExceeded, pythagoras, time_limit, within_budget
 from app.engine.kinks import away_from_kinks
+from app.limits import SYMBOLIC_SECONDS
 
 CONSTANT_DRAWS, POSITION_DRAWS, RATE_DRAWS = 2, 2, 3
 RTOL = 1e-9
-SYMBOLIC_SECONDS = 0.25
 MISTAKE_ONLY_MAX_OPS = 300
 TRIGSIMP_MAX_OPS = 40
 SEED = 20261123

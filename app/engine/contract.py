@@ -28,6 +28,7 @@ from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_s
 from app.engine.rods import fixed_distances
 from app.engine.transform import Transformed, transform
 from app.engine.trees import maybe_of_sympy
+from app.limits import DISPLAY_SECONDS, LARGE_DISPLAY_SECONDS, MEMBER_SECONDS
 from app.scenes.reasons import reason
 from app.scenes.types import Parameter, Scene
 
@@ -40,20 +41,7 @@ def parameters_json(parameters: tuple[Parameter, ...]) -> dict[str, dict[str, An
     }
 
 
-DISPLAY_SECONDS = 6.0
-# From three coordinates on (no chapter scene has more than two), the display simplifications share less:
-# the residuals and forces of a chain rarely simplify beyond sin² + cos² = 1, and the user waits for them.
-LARGE_DISPLAY_SECONDS = 1.5
 LARGE_FROM = 3
-# Each member of the document beyond the equations has its own time bound (seconds); one that runs out
-# is left out with a note in "skipped", never a refusal of the system (app.engine.budget.bounded).
-MEMBER_SECONDS = {
-    "steps": 8.0,
-    "constraint_forces": 3.0,
-    "transformed": 3.0,
-    "hamilton": 3.0,
-    "normal_modes": 4.0,
-}
 # From LARGE_FROM coordinates on each bound is this share of its own: the equations come first
 LARGE_SHARE = 0.5
 
@@ -211,7 +199,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     if scene is not None:
         # a chapter scene explains each step in its own terms; the generic sentence stays otherwise
         result["steps"] = [
-            {**s, "explanation": reason(scene.id, s["title"]) or s["explanation"]} for s in result["steps"]
+            {**s, "explanation": reason(scene.reasons, s["key"]) or s["explanation"]} for s in result["steps"]
         ]
     result["skipped"] = [{"member": s.member, "reason": s.reason} for s in skipped]
     return result
@@ -246,20 +234,14 @@ def add_beyond(
                     lambda: (lambda m: (normal_mode_steps(d, m), normal_modes_json(m, pr)))(
                         normal_modes(d, held_momenta(d, scene))), None, skipped)  # fmt: skip
     steps = result["steps"]
-    titles = [s["title"] for s in steps]
+    keys = [s["key"] for s in steps]
     # Hamilton's equations right after h (and after the power of the forces when there is one)
     after = max(
-        (
-            i + 1
-            for i, t in enumerate(titles)
-            if t in ("Hamiltonian", "Is h equal to E?", "Power of the non-conservative forces")
-        ),
+        (i + 1 for i, k in enumerate(keys) if k in ("hamiltonian", "h-vs-e", "power")),
         default=len(steps),
     )
     # the normal modes after the chapter's own steps, before constraint forces and coordinate changes
-    end = next(
-        (i for i, t in enumerate(titles) if t in ("Constraints in Cartesian form", "Change of coordinates")), len(steps)
-    )
+    end = next((i for i, k in enumerate(keys) if k in ("constraints", "change-of-coordinates")), len(steps))
     result["steps"] = (
         steps[:after] + (ham[1] if ham else []) + steps[after:end] + (modes[0] if modes else []) + steps[end:]
     )
@@ -268,16 +250,24 @@ def add_beyond(
 
 
 def scene_json(scene: Scene) -> dict[str, Any]:
-    """What the page says about the scene: statement, figure, panels and defaults."""
+    """The scene as data, the one place it is written out: what the API lists, the document's ``scene`` block
+    and the page's facts (statement, figure, panels, defaults, events, the family it is drawn as)."""
     return {
+        "id": scene.id,
         "title": scene.title,
         "section": scene.section,
         "summary": scene.summary,
         "statement": scene.statement,
         "figure": scene.figure,
-        "panels": list(scene.panels),
+        "coordinates": list(scene.system.coordinates),
+        "parameters": parameters_json(scene.system.parameters),
         "initial": dict(scene.initial),
         "t_end": scene.t_end,
+        "panels": list(scene.panels),
+        "beyond_chapter": scene.beyond_chapter,
+        "events": [{"name": e.name, "expression": e.expression, "message": e.message} for e in scene.events],
+        "family": scene.family,
+        "marks": list(scene.marks),
     }
 
 

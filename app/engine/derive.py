@@ -11,9 +11,8 @@ from app.engine.conservation import Energetics, energetics
 from app.engine.lagrange import Equations, euler_lagrange
 from app.engine.mechanics import Mechanics, build_mechanics
 from app.engine.reduction import Reduction, reduce_to_one
+from app.limits import REDUCTION_SECONDS
 from app.scenes.types import System
-
-REDUCTION_SECONDS = 4.0
 
 
 @dataclass(frozen=True)

@@ -32,11 +32,8 @@ from sympy.simplify.fu import TR8, TR10i
 
 from app.engine import budget
 from app.engine.budget import pythagoras, tidy, within_budget
+from app.limits import FALLBACK_SECONDS, FORM_SECONDS, LATE_SECONDS
 
-FORM_SECONDS = 1.0
-# once the shared display budget is spent, each expression still gets this much (the results' forms are cheap)
-LATE_SECONDS = 0.3
-FALLBACK_SECONDS = 0.2
 ENGINE_BONUS = 1.5
 SMALL = 120  # nodes below which expanding first is cheap
 NODE_BUDGET = 1500

@@ -36,8 +36,8 @@ from sympy.simplify.fu import TR10i
 from app.engine.budget import pythagoras, within_budget
 from app.engine.derive import Derivation
 from app.engine.names import unicode
+from app.limits import NAME_SECONDS
 
-NAME_SECONDS = 0.4  # for recombining a factor's trigonometry to name it (once per catalogue)
 MAX_PER_STEP = 60
 
 

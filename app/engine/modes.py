@@ -52,13 +52,12 @@ from app.engine.budget import BudgetExceeded, time_limit
 from app.engine.derive import Derivation
 from app.engine.kinks import away_from_kinks
 from app.engine.stability import NEUTRAL, STABLE, UNSTABLE, Linear, linearize
+from app.limits import MODES_SECONDS, SEARCH_SECONDS
 
 __all__ = ["NEUTRAL", "STABLE", "UNSTABLE", "Equilibrium", "Mode", "NormalModes", "defaults", "normal_modes"]
 
 log = logging.getLogger(__name__)
 
-MODES_SECONDS = 12.0  # the whole step, closed forms and search included (wall clock; typically under 1 s of CPU)
-SEARCH_SECONDS = 1.5  # numeric equilibria
 MAX_EQUILIBRIA = 8  # equilibria linearized (a polynomial condition can have many roots)
 MAX_SYMBOLIC_SIZE = 3  # coordinates up to which M and K are kept symbolic at an exact equilibrium
 TIMES = (0.0, 0.61, 1.7, 4.3)  # instants at which a time-dependent condition is tested

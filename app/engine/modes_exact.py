@@ -14,9 +14,9 @@ import sympy as sp
 
 from app.engine.budget import within_budget
 from app.engine.derive import Derivation, positive_names
+from app.limits import EIGEN_SECONDS
+from app.limits import EQUILIBRIA_SOLVE_SECONDS as SOLVE_SECONDS
 
-SOLVE_SECONDS = 1.5  # symbolic equilibria
-EIGEN_SECONDS = 1.0  # symbolic omega^2
 MAX_SOLVE_OPS = 400  # larger conditions go straight to the numeric search
 MAX_EXACT_OPS = 80  # closed forms of omega^2 longer than this are given as numbers only
 

@@ -26,8 +26,7 @@ from app.engine.budget import tidy, within_budget
 from app.engine.conservation import Energetics
 from app.engine.lagrange import Equations
 from app.engine.mechanics import Mechanics
-
-SOLVE_SECONDS = 2.0
+from app.limits import SOLVE_SECONDS
 
 
 @dataclass(frozen=True)

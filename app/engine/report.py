@@ -1,7 +1,9 @@
 """The derivation as data: ordered steps and the API's JSON contract.
 
-Every step is ``{"title", "latex", "sympy", "explanation"}``; templates only
-loop over them.  ``sympy`` strings use the symbol convention (``q``, ``q_dot``,
+Every step is ``{"key", "title", "latex", "sympy", "explanation"}``; templates only
+loop over them.  ``key`` identifies the step (``euler-lagrange``; ``derivatives:theta`` for one of a kind,
+the part after the colon naming which), stable whatever its ``title`` says: the title is display text,
+and a scene's reasons (app/scenes/reasons.py) and the document's placement of steps go by key.  ``sympy`` strings use the symbol convention (``q``, ``q_dot``,
 ``q_ddot``, ``t``, parameters by name) and parse with ``sympy.sympify``.
 """
 
@@ -13,7 +15,7 @@ from typing import Any
 import sympy as sp
 
 from app.engine import textbook
-from app.engine.action_step import TITLE as ACTION_TITLE
+from app.engine.action_step import KEY as ACTION_KEY
 from app.engine.action_step import action_step
 from app.engine.breaking import broken, broken_row, single
 from app.engine.budget import unbudgeted
@@ -24,11 +26,11 @@ from app.engine.names import unicode
 from app.engine.transform import Transformed, collected, compact
 from app.engine.trees import maybe_of_sympy
 
-# The steps a reader needs to follow the argument: the Lagrangian, its equations of motion, the
+# The steps (by key) a reader needs to follow the argument: the Lagrangian, its equations of motion, the
 # accelerations and what is conserved.  The others are bookkeeping a page may fold away.
 CORE_STEPS = frozenset(
-    {"Lagrangian", "Generalized forces", "Euler–Lagrange equations", "Accelerations", "Cyclic coordinates",
-     "Is h equal to E?", "Energy first integral", ACTION_TITLE}
+    {"lagrangian", "generalized-forces", "euler-lagrange", "accelerations", "cyclic", "h-vs-e", "energy-integral",
+     ACTION_KEY}
 )  # fmt: skip
 
 
@@ -93,11 +95,11 @@ def _formed(sympy: Any) -> Any:
     return textbook_form(sympy)
 
 
-def _step(title: str, rows: list[str], sympy: Any, explanation: str, formed: bool = False) -> dict[str, str]:
-    """``formed``: the data is already in the form the rows show (else each expression is put in its textbook
+def _step(key: str, title: str, rows: list[str], sympy: Any, explanation: str, formed: bool = False) -> dict[str, str]:
+    """``key`` names the step whatever its title reads (see the module's docstring).  ``formed``: the data is already in the form the rows show (else each expression is put in its textbook
     form, as ``Printer.tex`` does for the rows)."""
     text = sympy if isinstance(sympy, str) else sp.sstr(sympy if formed else _formed(sympy))
-    return {"title": title, "latex": _aligned(rows), "sympy": text, "explanation": explanation}
+    return {"key": key, "title": title, "latex": _aligned(rows), "sympy": text, "explanation": explanation}
 
 
 def display(expr: sp.Expr) -> sp.Expr:
@@ -161,6 +163,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         label = (lambda i: rf"_{{{i + 1}}}") if n > 1 else (lambda i: "")
         steps.append(
             _step(
+                "positions",
                 "Positions",
                 [
                     rf"\vec r{label(i)} = \left({', '.join(pr.tex(c) for c in r)}\right)"
@@ -177,6 +180,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         )
         steps.append(
             _step(
+                "velocities",
                 "Velocities",
                 [
                     rf"\vec v{label(i)} = \left({', '.join(pr.tex(c) for c in v)}\right)"
@@ -188,6 +192,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         )
         steps.append(
             _step(
+                "squared-speeds",
                 "Squared speeds",
                 [rf"v{label(i)}^2 = {pr.tex(v2)}" for i, v2 in enumerate(m.speeds_squared)],
                 list(m.speeds_squared),
@@ -197,6 +202,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     if m.T is not None:
         steps.append(
             _step(
+                "kinetic",
                 "Kinetic energy",
                 [f"T = {pr.tex(m.T)}"],
                 m.T,
@@ -204,10 +210,17 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             )
         )
         steps.append(
-            _step("Potential energy", [f"U = {pr.tex(m.U)}"], m.U, "The potential energy depends on positions only.")
+            _step(
+                "potential",
+                "Potential energy",
+                [f"U = {pr.tex(m.U)}"],
+                m.U,
+                "The potential energy depends on positions only.",
+            )
         )
     steps.append(
         _step(
+            "lagrangian",
             "Lagrangian",
             [f"L = {pr.tex(lagrangian(d, pr))}"],
             lagrangian(d, pr),
@@ -219,6 +232,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         g, p, dp = eqs.dL_dq[k], eqs.momenta[k], eqs.ddt_momenta[k]
         steps.append(
             _step(
+                f"derivatives:{name}",
                 f"Derivatives for {plain_name(name)}",
                 [
                     rf"\frac{{\partial L}}{{\partial {qn[k]}}} = {pr.tex(display(g))}",
@@ -232,6 +246,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     if any(f != 0 for f in m.Q):
         steps.append(
             _step(
+                "generalized-forces",
                 "Generalized forces",
                 [f"Q_{{{qn[k]}}} = {pr.tex(f)}" for k, f in enumerate(m.Q)],
                 list(m.Q),
@@ -241,6 +256,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     shown_equations = equations(d, pr)
     steps.append(
         _step(
+            "euler-lagrange",
             "Euler–Lagrange equations",
             [row for _, row in shown_equations],
             [shown for shown, _ in shown_equations],
@@ -255,6 +271,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     )
     steps.append(
         _step(
+            "mass-matrix",
             "Mass matrix and forcing",
             [rf"M = {pr.tex(eqs.mass_matrix.applyfunc(pr.form))}", rf"f = {pr.tex(eqs.forcing.applyfunc(pr.form))}"],
             [eqs.mass_matrix.tolist(), [display(x) for x in eqs.forcing]],
@@ -264,6 +281,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     acc = [display(a) for a in eqs.accelerations] if eqs.closed_form else []
     steps.append(
         _step(
+            "accelerations",
             "Accelerations",
             [f"{qddn[k]} = {pr.tex(a)}" for k, a in enumerate(acc)],
             acc,
@@ -271,6 +289,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         )
         if eqs.closed_form  # else M⁻¹f stays factored (app.engine.lagrange.CLOSED_FORM_MAX_NODES)
         else _step(
+            "accelerations",
             "Accelerations",
             [r"\ddot{q} = M^{-1} f"],
             "M**(-1)*f",
@@ -281,6 +300,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     )
     steps.append(
         _step(
+            "momenta",
             "Generalized momenta",
             [f"p_{{{qn[k]}}} = {pr.tex(display(p))}" for k, p in enumerate(eqs.momenta)],
             [display(p) for p in eqs.momenta],
@@ -290,6 +310,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     if en.cyclic:
         steps.append(
             _step(
+                "cyclic",
                 "Cyclic coordinates",
                 [
                     rf"\frac{{\partial L}}{{\partial {qn[table.names.index(c)]}}} = 0 \;\Rightarrow\; "
@@ -302,6 +323,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         )
     steps.append(
         _step(
+            "time-dependence",
             "Explicit time dependence",
             [rf"\frac{{\partial L}}{{\partial t}} = {pr.tex(display(en.dL_dt))}"],
             display(en.dL_dt),
@@ -311,6 +333,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     h_form, e_form = energies(d, pr)
     steps.append(
         _step(
+            "hamiltonian",
             "Hamiltonian",
             [rf"h = \sum_k p_k \dot{{q}}_k - L = {pr.tex(h_form)}"],
             h_form,
@@ -320,6 +343,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     if m.T is not None:
         steps.append(
             _step(
+                "energy",
                 "Energy",
                 [f"E = T + U = {pr.tex(e_form)}"],
                 e_form,
@@ -328,6 +352,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         )
         steps.append(
             _step(
+                "h-vs-e",
                 "Is h equal to E?",
                 [f"E - h = {pr.tex(en.energy_minus_h)}"],
                 en.energy_minus_h,
@@ -337,6 +362,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     if any(f != 0 for f in m.Q):
         steps.append(
             _step(
+                "power",
                 "Power of the non-conservative forces",
                 [
                     rf"\frac{{dh}}{{dt}} = -\frac{{\partial L}}{{\partial t}} + \sum_k Q_k \dot{{q}}_k = {pr.tex(display(en.power - en.dL_dt))}"
@@ -360,6 +386,7 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
     if red.cyclic_velocities:
         out.append(
             _step(
+                "cyclic-velocities",
                 "Eliminating the cyclic velocities",
                 [f"{pr.tex(k)} = {pr.tex(v)}" for k, v in red.cyclic_velocities.items()],
                 list(red.cyclic_velocities.values()),
@@ -368,6 +395,7 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
         )
     out.append(
         _step(
+            "effective-potential",
             "Effective potential",
             [
                 rf"U_\text{{eff}}({rn}) = {pr.tex(red.effective_potential)}",
@@ -380,6 +408,7 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
     )
     out.append(
         _step(
+            "energy-integral",
             "Energy first integral",
             [rf"E_r = {pr.tex(red.radial_energy)}"],
             red.radial_energy,
@@ -389,6 +418,7 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
     )
     out.append(
         _step(
+            "time-integral",
             "Time as an integral",
             [rf"t = \int \sqrt{{\frac{{m_\text{{eff}}}}{{2\,\left(E_r - U_\text{{eff}}({rn})\right)}}}}\, d{rn}"],
             red.time_integral,
@@ -413,7 +443,7 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
                 f"No closed-form root was found; the condition and the frequency hold at any {unicode(red.coordinate + '0')} "
                 "that satisfies it."
             )
-    out.append(_step("Equilibria and small oscillations", rows, sym, why))
+    out.append(_step("reduced-equilibria", "Equilibria and small oscillations", rows, sym, why))
     return out
 
 
@@ -427,6 +457,7 @@ def constraint_steps(forces: tuple[ConstraintForce, ...], pr: Printer) -> list[d
         return []
     return [
         _step(
+            "constraints",
             "Constraints in Cartesian form",
             [rf"{CONSTRAINT}_{{{a + 1}}} = {pr.tex(f.g)} = 0" for a, f in enumerate(forces)],
             [f.g for f in forces],
@@ -434,6 +465,7 @@ def constraint_steps(forces: tuple[ConstraintForce, ...], pr: Printer) -> list[d
             "space; it can only push along its normal, the gradient of 𝒞.",
         ),
         _step(
+            "constraint-forces",
             "Forces of constraint",
             [
                 (rf"\lambda_{{{a + 1}}} = {pr.tex(f.multiplier)},\quad " if f.multiplier != f.force else "")
@@ -456,18 +488,21 @@ def transform_steps(tr: Transformed) -> list[dict[str, str]]:
     pr = Printer(d.table.latex_names())
     steps = [
         _step(
+            "change-of-coordinates",
             "Change of coordinates",
             [f"{pr.tex(Q)} = {old.tex(f)}" for Q, f in zip(d.table.q, tr.definitions, strict=True)],
             list(tr.definitions),
             tr.change.explanation or "New generalized coordinates, defined from the old ones.",
         ),
         _step(
+            "inverse-map",
             "Inverse map",
             [f"{old.tex(q)} = {pr.tex(e)}" for q, e in tr.inverse.items()],
             list(tr.inverse.values()),
             "Solving the definitions for the old coordinates gives the map that is substituted into the declaration.",
         ),
         _step(
+            "new-lagrangian",
             "Lagrangian in the new coordinates",
             [f"L = {pr.tex(new_lagrangian(tr))}"],
             new_lagrangian(tr),
@@ -482,10 +517,11 @@ def transform_steps(tr: Transformed) -> list[dict[str, str]]:
     if tr.reduced_mass is not None:
         rows.append(rf"\mu = {pr.tex(tr.reduced_mass)}")
         why += f" The inertia of {tr.change.relative} is the reduced mass μ."
-    steps.append(_step("Inertia of the new coordinates", rows, M.applyfunc(display).tolist(), why))
+    steps.append(_step("new-inertia", "Inertia of the new coordinates", rows, M.applyfunc(display).tolist(), why))
     acc = [display(a) for a in d.equations.accelerations]
     steps.append(
         _step(
+            "new-equations",
             "Equations in the new coordinates",
             [f"{pr.tex(s)} = {pr.tex(a)}" for s, a in zip(d.table.qdd, acc, strict=True)],
             acc,
@@ -497,6 +533,7 @@ def transform_steps(tr: Transformed) -> list[dict[str, str]]:
             original = display(tr.to_original(c.expr))
             steps.append(
                 _step(
+                    f"conserved:{c.name}",
                     f"Conserved {c.name}",
                     [f"{c.latex_name} = {pr.tex(display(c.expr))} = {old.tex(original)}"],
                     [display(c.expr), original],

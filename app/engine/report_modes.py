@@ -1,6 +1,6 @@
 """Hamilton's equations and the normal modes as derivation steps and as JSON.
 
-Steps follow ``app.engine.report`` (``{"title", "latex", "sympy",
+Steps follow ``app.engine.report`` (``{"key", "title", "latex", "sympy",
 "explanation"}``); the JSON blocks are the derivation document's ``hamilton``
 and ``normal_modes``, with numbers at the default parameters.
 """
@@ -44,6 +44,7 @@ def hamilton_steps(d: Derivation, ham: Hamilton) -> list[dict[str, str]]:
     offsets = any(b != 0 for b in ham.offsets)
     return [
         _step(
+            "legendre",
             "Velocities from the momenta",
             [f"{vn[k]} = {pr.tex(v)}" for k, v in enumerate(velocities)],
             velocities,
@@ -52,12 +53,14 @@ def hamilton_steps(d: Derivation, ham: Hamilton) -> list[dict[str, str]]:
             + "; solving for the velocities gives q̇ = M⁻¹ (p − b).",
         ),
         _step(
+            "hamiltonian-pq",
             "Hamiltonian H(q, p)",
             [rf"H = \sum_k p_k \dot{{q}}_k - L = {pr.tex(H)}"],
             H,
             "The same h, now written in the coordinates and momenta: H = ½ (p − b)·M⁻¹(p − b) − L(q, q̇ = 0).",
         ),
         _step(
+            "hamilton-equations",
             "Hamilton's equations",
             [rf"{vn[k]} = \frac{{\partial H}}{{\partial {pn[k]}}} = {pr.tex(v)}" for k, v in enumerate(velocities)]
             + [
@@ -144,7 +147,7 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
     table = d.table
     pr = Printer(table.latex_names())
     if nm.failed:
-        return [_step("Equilibria", [r"\text{not computed}"], [], nm.failed)]
+        return [_step("equilibria", "Equilibria", [r"\text{not computed}"], [], nm.failed)]
     qn = [pr.tex(s) for s in table.q]
     plain = d.mechanics.T is not None and d.mechanics.U is not None and sp.expand(d.mechanics.U - nm.potential) == 0
     vname = "U" if plain else "V"
@@ -192,9 +195,9 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
             " The system stays at rest there at all times, but its linearized equations change with time, so "
             "there are no constant frequencies to report."
         )
-    steps = [_step("Equilibria", rows, list(nm.condition), why)]
-    for e in nm.equilibria:
-        steps.append(_equilibrium_step(e, pr, d))
+    steps = [_step("equilibria", "Equilibria", rows, list(nm.condition), why)]
+    for i, e in enumerate(nm.equilibria, start=1):
+        steps.append(_equilibrium_step(e, pr, d, i))
     return steps
 
 
@@ -236,7 +239,9 @@ def _verdict(e: Equilibrium) -> str:
     return out
 
 
-def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation) -> dict[str, str]:
+def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int) -> dict[str, str]:
+    """The modes about the ``number``-th equilibrium (key ``normal-modes:number``, or ``steady-motion:number``
+    about a steady motion of a reduction)."""
     sym = {s.name: s for s in d.table.q}
     where = _where(e, pr, d)
     rows = [rf"M = {pr.tex(e.mass)},\quad K = {pr.tex(e.stiffness)}"]
@@ -252,12 +257,14 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation) -> dict[str, s
     if moving:
         rows.append(_exponents(e))
     if e.momenta:
+        key = f"steady-motion:{number}"
         title = f"Small oscillations about the steady motion at {plain_name(e.coordinates[0])} = {_number(e.position[e.coordinates[0]])}"
         why = (
             "With the conserved momenta held at the values shown, the reduced coordinate sits at a minimum or maximum of "
             "U_eff: the body moves steadily (a circular or conical orbit), and ω² = U_eff''/m_eff. "
         )
     else:
+        key = f"normal-modes:{number}"
         title = "Normal modes about " + ", ".join(f"{plain_name(n)} = {_number(v)}" for n, v in e.position.items())
         why = (
             "Near the equilibrium M ε̈ + K ε = 0 with M the mass matrix and K the Hessian of the potential there; "
@@ -274,7 +281,7 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation) -> dict[str, s
         why += "The mass matrix is indefinite here (the kinetic energy is not positive for every velocity). "
     why += _verdict(e)
     return _step(
-        title, [where, *rows], [e.mass.tolist(), e.stiffness.tolist(), [m.omega_squared for m in e.modes]], why
+        key, title, [where, *rows], [e.mass.tolist(), e.stiffness.tolist(), [m.omega_squared for m in e.modes]], why
     )
 
 

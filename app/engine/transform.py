@@ -26,9 +26,8 @@ from app.engine.derive import Derivation, derive
 from app.engine.errors import DerivationError
 from app.engine.parse import ExpressionError, parse_expression
 from app.engine.symbols import SymbolTable
+from app.limits import SOLVE_SECONDS
 from app.scenes.types import CoordinateChange, Particle, System
-
-SOLVE_SECONDS = 2.0
 
 
 @dataclass(frozen=True)

@@ -13,6 +13,7 @@ SAMPLES_DEFAULT = 1_000
 RTOL_MIN = 1.0e-12
 RTOL_MAX = 1.0e-2
 RTOL_DEFAULT = 1.0e-8
+RTOL_MENU = (1.0e-3, 1.0e-4, 1.0e-6, 1.0e-8, 1.0e-10, 1.0e-12)  # what a page offers, loose to tight
 ATOL_MIN = 1.0e-15
 ATOL_MAX = 1.0
 ATOL_DEFAULT = 1.0e-10

@@ -26,6 +26,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from app.limits import POINCARE_PIECE as PIECE_SECONDS
+from app.limits import POINCARE_T_END
 from app.numerics import limits
 from app.numerics.errors import SimulationError, TooMuchWork
 from app.numerics.methods import METHODS, Problem
@@ -53,7 +55,6 @@ class Section:
     orbits: list[Orbit]
 
 
-PIECE_SECONDS = 50.0  # simulated time per compiled run (a budget that ends the run keeps earlier pieces)
 MAX_SAMPLES = 400_000  # samples per piece
 
 
@@ -221,8 +222,8 @@ def section(
     value: float = 0.0,
     direction: int = 1,
     count: int = 6,
-    t_end: float = 200.0,
-    wall_seconds: float = 8.0,
+    t_end: float = POINCARE_T_END,
+    wall_seconds: float = limits.WALL_SECONDS,
     starts: list[np.ndarray] | None = None,
     span: tuple[float, float] | None = None,
 ) -> Section:

@@ -1,5 +1,6 @@
 """Beads on wires: a fixed helix, and a parabola spun about its axis (a moving constraint)."""
 
+from app.scenes import reasons
 from app.scenes.common import GRAVITY
 from app.scenes.types import Constraint, Erratum, Parameter, Particle, Scene, System
 
@@ -9,6 +10,8 @@ HELIX_BEAD = Scene(
     id="helix-bead",
     title="Bead on a vertical helix",
     section="4.3",
+    family="helix",
+    reasons=reasons.HELIX_BEAD,
     summary="A wire leaves one degree of freedom: the height z, with gravity diluted by the helix's pitch.",
     statement=(
         "A bead of mass m slides without friction along a wire bent into a helix of radius R whose axis is "
@@ -56,6 +59,8 @@ ROTATING_PARABOLA = Scene(
     id="rotating-parabola",
     title="Bead on a rotating parabolic wire",
     section="4.6–4.7",
+    family="rotating-wire",
+    reasons=reasons.ROTATING_PARABOLA,
     summary="A constraint that moves with time: the Hamiltonian h is conserved while the energy E is not.",
     statement=(
         "A wire shaped as the parabola z = α ρ² (ρ the distance from the vertical axis) is turned about that axis "

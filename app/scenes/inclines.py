@@ -1,5 +1,6 @@
 """Blocks on frictionless inclines: a fixed one, and a wedge free to slide on the floor."""
 
+from app.scenes import reasons
 from app.scenes.common import GRAVITY
 from app.scenes.types import Constraint, Erratum, Event, Parameter, Particle, Scene, System
 
@@ -10,6 +11,8 @@ INCLINE_BLOCK = Scene(
     id="incline-block",
     title="Block on a fixed incline",
     section="4.3",
+    family="incline",
+    reasons=reasons.INCLINE_BLOCK,
     summary="Newton's law along a slope recovered from L = T − U with a single coordinate.",
     statement=(
         "A block of mass m slides without friction on a plane tilted at the angle α to the horizontal; the plane "
@@ -63,6 +66,8 @@ MOVABLE_INCLINE = Scene(
     id="movable-incline",
     title="Block on a sliding wedge",
     section="4.5",
+    family="wedge",
+    reasons=reasons.MOVABLE_INCLINE,
     summary="Two bodies, two coordinates: the wedge recoils, and its conserved momentum shapes the block's fall.",
     statement=(
         "A block of mass m slides without friction down the slope of a wedge of mass M and angle α; the wedge "

@@ -1,5 +1,6 @@
 """Pendulum scenes: a bob on a string, in a plane, on a sphere, and with damping."""
 
+from app.scenes import reasons
 from app.scenes.common import GRAVITY
 from app.scenes.types import Constraint, Erratum, Parameter, Particle, Scene, System
 
@@ -23,6 +24,8 @@ SIMPLE_PENDULUM = Scene(
     id="simple-pendulum",
     title="Simple pendulum",
     section="4.3",
+    family="pendulum",
+    reasons=reasons.SIMPLE_PENDULUM,
     summary="One angle, one equation: the Lagrangian recipe on the smallest example.",
     statement=(
         "A small bob of mass m hangs from a fixed pivot on a string of length R and swings in a "
@@ -74,6 +77,8 @@ SPHERICAL_PENDULUM = Scene(
     id="spherical-pendulum",
     title="Spherical pendulum",
     section="4.4",
+    family="spherical-pendulum",
+    reasons=reasons.SPHERICAL_PENDULUM,
     summary="A cyclic azimuth, a conserved angular momentum and an effective potential.",
     statement=(
         "A ball of mass m on an inextensible string of length R moves anywhere on the sphere the "
@@ -134,6 +139,9 @@ DAMPED_PENDULUM = Scene(
     id="damped-pendulum",
     title="Damped pendulum",
     section="4.1",
+    family="pendulum",
+    marks=("drag",),
+    reasons=reasons.DAMPED_PENDULUM,
     summary="A force no potential describes enters as a generalized force Q and drains the energy.",
     statement=(
         "The simple pendulum again (bob of mass m, string of length R, θ from the bottom), now slowed by a drag "

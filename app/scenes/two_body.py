@@ -1,5 +1,6 @@
 """Central forces and systems of particles: the tabletop spring, the two-body rail, the pulleys."""
 
+from app.scenes import reasons
 from app.scenes.common import GRAVITY
 from app.scenes.types import Constraint, CoordinateChange, Erratum, Parameter, Particle, Scene, System
 
@@ -10,6 +11,8 @@ TABLETOP_SPRING = Scene(
     id="tabletop-spring",
     title="Particle on a tabletop with a central spring",
     section="4.4",
+    family="tabletop-spring",
+    reasons=reasons.TABLETOP_SPRING,
     summary="A cyclic angle conserves angular momentum and folds the orbit into one radial coordinate.",
     statement=(
         "A particle of mass m moves on a frictionless horizontal table, tied to a fixed point of the table by a "
@@ -88,6 +91,8 @@ RAIL_TWO_BODY = Scene(
     id="rail-two-body",
     title="Two masses on a rail joined by a spring",
     section="4.5",
+    family="two-body-rail",
+    reasons=reasons.RAIL_TWO_BODY,
     summary="Centre of mass and relative coordinate: one cyclic, one oscillating with the reduced mass.",
     statement=(
         "Two masses m1 and m2 slide without friction on a straight horizontal rail, at positions x1 and x2, joined "
@@ -143,6 +148,8 @@ PULLEY = Scene(
     id="pulley",
     title="Three masses on pulleys",
     section="4.5",
+    family="pulleys",
+    reasons=reasons.PULLEY,
     summary="A string's fixed length removes a coordinate; two Euler–Lagrange equations give all three accelerations.",
     statement=(
         "A string runs over two fixed pulleys; its ends carry masses m1 and m2, and the loop between the pulleys "

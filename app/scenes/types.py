@@ -10,7 +10,10 @@ this module computes anything.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
+
+from app.limits import DEFAULT_T_END
 
 
 @dataclass(frozen=True)
@@ -144,6 +147,12 @@ class Scene:
     the derivation supports them).  ``beyond_chapter`` marks a scene that goes past the chapter (normal modes of
     several coordinates, chaos); its ``section`` names the chapter section it
     builds on, and the contents list it under a heading of its own.
+
+    How the scene is drawn and explained is its own data too: ``family`` names its drawing (the set-up
+    diagram of ``app/viz/diagrams.py`` and the animation of ``app/viz/mechanism.py``, both kept per family,
+    so scenes drawn alike share one), ``marks`` the family's optional marks it adds (``drag``: the damping
+    force's arrow), and ``reasons`` (from ``app/scenes/reasons.py``) explains its derivation's steps in its
+    own terms, by step key.  A scene without a family is drawn from its particles, like a user's system.
     """
 
     id: str
@@ -154,8 +163,11 @@ class Scene:
     statement: str = ""
     figure: str = ""
     initial: dict[str, float] = field(default_factory=dict)
-    t_end: float = 10.0
+    t_end: float = DEFAULT_T_END
     panels: tuple[str, ...] = ()
     errata: tuple[Erratum, ...] = ()
     beyond_chapter: bool = False
     events: tuple[Event, ...] = ()
+    family: str = ""
+    marks: tuple[str, ...] = ()
+    reasons: Mapping[str, str] = field(default_factory=dict)

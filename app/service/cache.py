@@ -52,10 +52,11 @@ def cache_dir() -> Path:
 
 
 def source_fingerprint(*packages: str) -> str:
-    """A hash of every Python file in the named packages of ``app``."""
+    """A hash of every Python file in the named packages of ``app``, and of ``app/limits.py`` (the time bounds
+    and defaults every layer reads, which shape what is cached as much as the packages' own code)."""
     digest = hashlib.sha256()
-    for package in packages:
-        for path in sorted((APP_SOURCE / package).rglob("*.py")):
+    for paths in ([APP_SOURCE / "limits.py"], *(sorted((APP_SOURCE / p).rglob("*.py")) for p in packages)):
+        for path in paths:
             digest.update(path.relative_to(APP_SOURCE.parent).as_posix().encode())
             digest.update(path.read_bytes())
     return digest.hexdigest()[:16]

@@ -7,7 +7,7 @@ import threading
 from functools import cache
 from typing import Any
 
-from app.engine.contract import derivation_json, parameters_json
+from app.engine.contract import derivation_json
 from app.engine.derive import Derivation, derive
 from app.errors import UnknownScene
 from app.scenes import SCENES, Scene
@@ -57,21 +57,6 @@ def derivation_document(scene_id: str) -> dict[str, Any]:
     """The contract JSON of a scene's derivation (memory and disk cached)."""
     s = scene(scene_id)
     return _json_cache.get(scene_id, lambda: {"id": s.id, **derivation_json(derivation(scene_id), scene=s)})
-
-
-def scene_summary(s: Scene) -> dict[str, Any]:
-    return {
-        "id": s.id,
-        "title": s.title,
-        "section": s.section,
-        "summary": s.summary,
-        "coordinates": list(s.system.coordinates),
-        "parameters": parameters_json(s.system.parameters),
-        "initial": dict(s.initial),
-        "t_end": s.t_end,
-        "panels": list(s.panels),
-        "beyond_chapter": s.beyond_chapter,
-    }
 
 
 def warm_all() -> None:

@@ -67,22 +67,18 @@ from pathlib import Path
 from typing import Any
 
 from app.errors import OverCapacity
+from app.limits import BACKOFF_SECONDS, HOLD_SECONDS
+from app.limits import RATE_WINDOW_SECONDS as NEW_SESSION_SECONDS
 from app.service.cache import cache_dir
 from app.settings import settings
 
 COOKIE = "lagrange_session"
 COOKIE_MAX_AGE = 30 * 24 * 3600
 HALF_LIFE = 120.0  # seconds over which a client's used worker time halves
-BACKOFF_SECONDS = 5.0  # after the second job in a row out of time or memory; doubles with each further one
 CLIENT_STRIKES = 2  # failures in a row before a client backs off
 BACKOFF_MAX = 300.0
 STRIKES = ("timeout", "memory", "crashed")  # outcomes that count against a client
 SHARED = ("new:", "many:", "address:")  # keys that many requests share (no one-at-a-time rule for them)
-NEW_SESSION_SECONDS = 60.0  # the window of ``mint_per_minute``
-# A refusal of an address's shared key (a script dropping its cookies) is answered this late: a flood
-# that retries at once would otherwise cost the server hundreds of refusals a second (each request
-# is read and checked first); held, twenty flooding threads send about twenty requests a second.
-HOLD_SECONDS = 1.0
 GAVE_WAY = (
     "your job gave way to a student's session: requests without the session cookie run only while no session "
     "waits; send the cookie this answer sets (a browser does) and try again"

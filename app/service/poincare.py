@@ -21,6 +21,7 @@ from typing import Any
 
 from app.engine.derive import Derivation
 from app.errors import OverCapacity
+from app.limits import POINCARE_T_END as DEFAULT_T_END
 from app.numerics import limits
 from app.numerics.errors import SimulationError
 from app.numerics.poincare import hamiltonian, section
@@ -38,7 +39,6 @@ from app.service.simulation import (
 COUNT_MAX = 12  # orbits per section
 T_END_MAX = 2_000.0  # seconds of simulated time per orbit
 DEFAULT_COUNT = 6
-DEFAULT_T_END = 200.0
 
 
 def section_of_derivation(

@@ -27,6 +27,7 @@ import numpy as np
 
 from app.engine.derive import Derivation
 from app.errors import OverCapacity
+from app.limits import DEFAULT_T_END, GIVE_WAY_SECONDS
 from app.numerics import limits, methods
 from app.numerics.errors import SimulationError
 from app.numerics.events import EventFunction, compile_events
@@ -42,7 +43,6 @@ from app.service.cache import JsonCache, source_fingerprint
 from app.service.trust import judge
 from app.settings import container_cpus, settings
 
-DEFAULT_T_END = 10.0
 SLOTS = max(2, container_cpus())
 HEAVY_SPAN = 10  # times the scene's t_end (or the default 10 s)
 HEAVY_RTOL = 1e-9
@@ -480,8 +480,6 @@ class _InFlight:
 
 
 IN_FLIGHT = _InFlight()
-# The longest the warm-up waits for quiet before its next step: under steady traffic it still advances.
-GIVE_WAY_SECONDS = 0.5
 
 
 def warm_all(give_way: Callable[[], object] = lambda: None) -> dict[str, float]:

@@ -1,16 +1,16 @@
 """The set-up diagram of a scene, as inline SVG with a title and a description.
 
-``diagram(...)`` picks the drawing for a scene's family (one function per
-family in ``diagrams_swing`` and ``diagrams_blocks``); a system without a
-family (a user's own system) gets a generic drawing: its particles placed at
-the initial state, projected onto the plane where they move.
+``diagram(...)`` picks the drawing of the family a scene names (``Scene.family``;
+one function per family in ``diagrams_swing`` and ``diagrams_blocks``, told the
+scene's optional ``marks``); a system without a family (a user's own system)
+gets a generic drawing: its particles placed at the initial state, projected
+onto the plane where they move.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from functools import partial
 
 from app.engine.trees import TreeError, of_text
 from app.viz import diagrams_blocks as blocks
@@ -19,21 +19,22 @@ from app.viz.exprtree import evaluate
 from app.viz.names import label
 from app.viz.svg import ACCENT, GUIDE, PARAM, Svg
 
-Family = Callable[[dict[str, float], dict[str, float]], Svg]
+# a family's drawing: parameters, initial state and the scene's optional marks -> the figure
+Family = Callable[[dict[str, float], dict[str, float], Sequence[str]], Svg]
 
+# by family (the name a scene gives as ``Scene.family``), never by scene
 FAMILIES: dict[str, Family] = {
-    "simple-pendulum": swing.pendulum,
-    "damped-pendulum": partial(swing.pendulum, damped=True),
+    "pendulum": swing.pendulum,
     "spherical-pendulum": swing.spherical,
-    "helix-bead": swing.helix,
-    "rotating-parabola": swing.rotating_parabola,
-    "incline-block": blocks.incline,
-    "movable-incline": blocks.movable_incline,
+    "helix": swing.helix,
+    "rotating-wire": swing.rotating_parabola,
+    "incline": blocks.incline,
+    "wedge": blocks.movable_incline,
     "tabletop-spring": blocks.tabletop,
-    "rail-two-body": blocks.rail_two_body,
-    "pulley": blocks.pulley,
+    "two-body-rail": blocks.rail_two_body,
+    "pulleys": blocks.pulley,
     "double-pendulum": swing.double_pendulum,
-    "coupled-oscillators": blocks.coupled_oscillators,
+    "three-springs": blocks.coupled_oscillators,
 }
 
 Particle = tuple[str, Sequence[str]]  # (label, (x, y, z) expression strings)
@@ -79,7 +80,7 @@ def generic(particles: Sequence[Particle], coordinates: Sequence[str], p: dict[s
 
 
 def diagram(
-    scene_id: str,
+    family: str,
     title: str,
     description: str,
     parameters: dict[str, float],
@@ -87,9 +88,11 @@ def diagram(
     coordinates: Sequence[str] = (),
     particles: Sequence[Particle] = (),
     ident: str = "setup",
+    marks: Sequence[str] = (),
 ) -> str:
-    """Inline SVG markup of the set-up (accessible: role img, title and description)."""
-    family = FAMILIES.get(scene_id)
+    """Inline SVG markup of the set-up (accessible: role img, title and description); ``family`` and ``marks``
+    are the scene's (a name no family has, or none, gets the generic drawing)."""
+    draw = FAMILIES.get(family)
     values = {k: v for k, v in parameters.items() if isinstance(v, (int, float)) and math.isfinite(v)}
-    svg = family(values, initial) if family else generic(particles, coordinates, values, initial)
+    svg = draw(values, initial, marks) if draw else generic(particles, coordinates, values, initial)
     return svg.render(title, description or title, ident)

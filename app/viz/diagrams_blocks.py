@@ -7,6 +7,7 @@ coordinates blue, parameters brown; drawing only, no mechanics.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 from app.viz.svg import ACCENT, GUIDE, INK, PARAM, Svg
 
@@ -31,7 +32,7 @@ def _block_on_slope(svg: Svg, x: float, y: float, alpha: float, size: float = 26
     return x + nx * h, y + ny * h
 
 
-def incline(p: dict[str, float], q: dict[str, float]) -> Svg:
+def incline(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
     svg = Svg()
     alpha = p.get("alpha", math.pi / 6)
     x0, y0, base = 30.0, 210.0, 250.0
@@ -51,7 +52,7 @@ def incline(p: dict[str, float], q: dict[str, float]) -> Svg:
     return svg
 
 
-def movable_incline(p: dict[str, float], q: dict[str, float]) -> Svg:
+def movable_incline(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
     svg = Svg()
     alpha = p.get("alpha", math.pi / 6)
     floor = 206.0
@@ -85,7 +86,7 @@ def movable_incline(p: dict[str, float], q: dict[str, float]) -> Svg:
     return svg
 
 
-def tabletop(p: dict[str, float], q: dict[str, float]) -> Svg:
+def tabletop(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
     svg = Svg()
     theta = q.get("theta", 0.7) or 0.7
     ox, oy, r = 110.0, 150.0, 130.0
@@ -104,7 +105,7 @@ def tabletop(p: dict[str, float], q: dict[str, float]) -> Svg:
     return svg
 
 
-def rail_two_body(p: dict[str, float], q: dict[str, float]) -> Svg:
+def rail_two_body(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
     svg = Svg()
     rail = 150.0
     svg.line(10, rail, 310, rail, INK, 3)
@@ -128,7 +129,7 @@ def rail_two_body(p: dict[str, float], q: dict[str, float]) -> Svg:
     return svg
 
 
-def pulley(p: dict[str, float], q: dict[str, float]) -> Svg:
+def pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
     svg = Svg()
     ceiling, r = 22.0, 20.0
     left, right = 80.0, 240.0
@@ -161,7 +162,7 @@ def pulley(p: dict[str, float], q: dict[str, float]) -> Svg:
     return svg
 
 
-def coupled_oscillators(p: dict[str, float], q: dict[str, float]) -> Svg:
+def coupled_oscillators(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
     svg = Svg()
     floor, w = 150.0, 36.0
     svg.line(10, floor, 310, floor, INK, 3)

@@ -3,12 +3,14 @@
 Each function draws the scene at its default parameters and initial
 condition, labels the coordinates (blue) and the parameters (brown), and
 returns the ``Svg``.  ``p`` maps parameter names to values, ``q`` the initial
-state.  Geometry is only drawing: nothing here is mechanics.
+state, ``marks`` the optional marks the scene asks for (the pendulum's ``drag``,
+the damping force's arrow; a family without options ignores them).  Geometry is only drawing: nothing here is mechanics.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 from app.viz.svg import ACCENT, GUIDE, INK, PARAM, Svg
 
@@ -24,7 +26,7 @@ def _drawing_angle(value: float, lo: float = 0.45, hi: float = 1.0) -> float:
     return sign * min(max(abs(value), lo), hi)
 
 
-def pendulum(p: dict[str, float], q: dict[str, float], damped: bool = False) -> Svg:
+def pendulum(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
     svg = Svg()
     theta = _drawing_angle(q.get("theta", 0.8))
     px, py, length = 150.0, 28.0, 150.0
@@ -41,7 +43,7 @@ def pendulum(p: dict[str, float], q: dict[str, float], damped: bool = False) -> 
     svg.circle(bx, by, 12, fill="#c9d8ea")
     svg.text(bx + 24, by + 4, "m", PARAM)
     _gravity(svg, 40, 150)
-    if damped:
+    if "drag" in marks:
         # the damping force acts along the path, against the velocity: drawn pointing back toward the bottom
         tx, ty = -math.cos(theta), math.sin(theta)
         svg.arrow(bx + 16 * tx, by + 16 * ty, bx + 52 * tx, by + 52 * ty, color=PARAM)
@@ -59,7 +61,7 @@ def _view(x: float, y: float, z: float, scale: float, ox: float, oy: float) -> t
 GAMMA, EPS = 0.75, 0.35
 
 
-def spherical(p: dict[str, float], q: dict[str, float]) -> Svg:
+def spherical(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
     svg = Svg()
     theta = q.get("theta", 2.2)
     phi = _drawing_angle(q.get("phi", 0.0), 0.9, 1.3)
@@ -99,7 +101,7 @@ def spherical(p: dict[str, float], q: dict[str, float]) -> Svg:
     return svg
 
 
-def helix(p: dict[str, float], q: dict[str, float]) -> Svg:
+def helix(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
     svg = Svg()
     turns, ox, bottom, top, radius, tilt = 2.5, 150.0, 212.0, 24.0, 62.0, 12.0
     pts = []
@@ -129,7 +131,7 @@ def helix(p: dict[str, float], q: dict[str, float]) -> Svg:
     return svg
 
 
-def rotating_parabola(p: dict[str, float], q: dict[str, float]) -> Svg:
+def rotating_parabola(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
     svg = Svg()
     ox, oy, sx = 150.0, 200.0, 110.0
     half = 1.3
@@ -151,7 +153,7 @@ def rotating_parabola(p: dict[str, float], q: dict[str, float]) -> Svg:
     return svg
 
 
-def double_pendulum(p: dict[str, float], q: dict[str, float]) -> Svg:
+def double_pendulum(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
     svg = Svg()
     t1 = _drawing_angle(q.get("theta1", 0.6), 0.35, 0.7)
     t2 = _drawing_angle(q.get("theta2", 0.9), 0.5, 1.0)

@@ -84,9 +84,9 @@ _HANG = f"1.6*{_R}"  # from the middle mass up to its wheel's centre: the mass h
 _Y = "(-(y1 + y2)/2 - 1)"  # the middle mass's height (the scene's particle)
 # the fixed wheels' height: above both end masses and above the movable wheel's highest reach
 _TOP = _max(_max("qmax_y1", "qmax_y2"), f"-(qmin_y1 + qmin_y2)/2 - 1 + {_HANG} + 2*{_R}") + f" + {_R} + 0.5*{_R}"
+# by family (the name a scene gives as ``Scene.family``), never by scene
 FAMILIES: dict[str, Family] = {
-    "simple-pendulum": PENDULUM,
-    "damped-pendulum": PENDULUM,
+    "pendulum": PENDULUM,
     "spherical-pendulum": Family(
         dim=3,
         axes=(0, 1, 2),
@@ -103,7 +103,7 @@ FAMILIES: dict[str, Family] = {
             "drag the background to turn the view. Where the tension would be negative the string is drawn slack."
         ),
     ),
-    "helix-bead": Family(
+    "helix": Family(
         dim=3,
         axes=(0, 1, 2),
         curves=(
@@ -112,7 +112,7 @@ FAMILIES: dict[str, Family] = {
         ),
         caption=f"The helical wire, its axis (dashed) and the bead, with {TRAIL}; drag the background to turn the view.",
     ),
-    "rotating-parabola": Family(
+    "rotating-wire": Family(
         # the lab frame: the wire turns about the vertical axis at omega, carrying the bead
         dim=3,
         axes=(0, 1, 2),
@@ -149,7 +149,7 @@ FAMILIES: dict[str, Family] = {
             "rim the wire sweeps. Drag the background to turn the view."
         ),
     ),
-    "incline-block": Family(
+    "incline": Family(
         anchors=(
             ("foot", ("0", "0", "0")),
             ("top", (f"{_RAMP}*cos(alpha)", "0", f"{_RAMP}*sin(alpha)")),
@@ -169,12 +169,12 @@ FAMILIES: dict[str, Family] = {
         links=(("centre", "#0", "spring"),),
         caption=f"The table seen from above: the fixed centre, the spring (drawn stretching) and the particle, with {TRAIL}.",
     ),
-    "rail-two-body": Family(
+    "two-body-rail": Family(
         links=(("#0", "#1", "spring"),),
         curves=(("rail", "Min1 - 0.5", "Max2 + 0.5", ("s", "0", "0"), "wire"),),
         caption=f"The rail, the two bodies and the spring between them (drawn stretching), with {TRAIL}.",
     ),
-    "pulley": Family(
+    "pulleys": Family(
         points=(
             ("left mass", (f"-{_W}", "0", "y1")),
             ("right mass", (_W, "0", "y2")),
@@ -217,7 +217,7 @@ FAMILIES: dict[str, Family] = {
         links=(("pivot", "#0", "rod"), ("#0", "#1", "rod")),
         caption=f"Side view: the pivot, the two rods and the two bobs, with {TRAIL}.",
     ),
-    "coupled-oscillators": Family(
+    "three-springs": Family(
         # walls 2 m out from the masses' rest positions (-1 m and +1 m), the three springs between
         anchors=(("left wall", ("-3", "0", "0")), ("right wall", ("3", "0", "0"))),
         links=(("left wall", "#0", "spring"), ("#0", "#1", "spring"), ("#1", "right wall", "spring")),
@@ -228,7 +228,7 @@ FAMILIES: dict[str, Family] = {
         ),
         caption=(f"Side view: the two walls, the three springs (drawn stretching) and the two masses, with {TRAIL}."),
     ),
-    "movable-incline": Family(
+    "wedge": Family(
         # the wedge's apex is the wedge particle; its slope is long enough for the block's whole run
         anchors=(
             ("wedge foot", ("X + (1.15*Abs(qmax_D) + 0.5)*cos(alpha)", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)")),
@@ -345,7 +345,7 @@ def _view_name(axes: tuple[int, ...]) -> str:
 
 
 def mechanism(
-    scene_id: str,
+    family_name: str,
     particles: Sequence[tuple[str, Sequence[str]]],
     coordinates: Sequence[str],
     three_d: bool,
@@ -354,14 +354,15 @@ def mechanism(
     proven: Sequence[Mapping[str, Any]] = (),
     potential: Any = None,
 ) -> dict[str, Any] | None:
-    """The animation spec of a scene (None when its positions cannot be drawn).
+    """The animation spec of a scene drawn as ``family_name`` (its ``Scene.family``; None when its positions
+    cannot be drawn).
 
     ``forces`` are the derivation document's constraint forces (name, particle, direction): each
     becomes an arrow on its particle.  A system without a family of its own is drawn from its
     particles, with rods inferred (app/viz/rods.py) from ``proven`` (the derivation's fixed
     distances) or numerically at the parameters ``defaults``; without particles it has no picture,
     and the spec says so (no points, ``none`` true, the caption in words)."""
-    family = FAMILIES.get(scene_id)
+    family = FAMILIES.get(family_name)
     if family is None and not particles:
         return MechanismSpec(dim=2, axis_names=[], caption=NO_PICTURE).as_json() | {"none": True}
     if family is None:

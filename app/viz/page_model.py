@@ -16,6 +16,8 @@ from typing import Any
 from app.engine.names import latex, prose
 from app.engine.report import CORE_STEPS
 from app.engine.trees import TreeError, maybe_of_text, of_text
+from app.limits import DEFAULT_T_END
+from app.numerics import limits
 from app.viz.control_ranges import ticks, useful_range
 from app.viz.diagrams import diagram
 from app.viz.exprtree import document_tree, leaves
@@ -26,8 +28,9 @@ from app.viz.units import coordinate_units
 
 LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collapsed
 SLIDER_STEPS = 1000  # positions of a control's slider (the page's range inputs; static/js/controls.js reads them)
-RTOLS = ("1e-3", "1e-4", "1e-6", "1e-8", "1e-10", "1e-12")
-DEFAULT_RTOL = "1e-8"
+# the page's menu of tolerances, written as powers of ten (1e-8)
+RTOLS = tuple(f"1e{round(math.log10(r))}" for r in limits.RTOL_MENU)
+DEFAULT_RTOL = f"1e{round(math.log10(limits.RTOL_DEFAULT))}"
 
 
 def _names(doc: dict[str, Any], extra: Sequence[str] = ()) -> list[str]:
@@ -47,8 +50,8 @@ def _steps(doc: dict[str, Any]) -> list[dict[str, Any]]:
             "latex": s["latex"],
             "explanation": s["explanation"],
             # a core step (L, the equations, the accelerations) is never folded: long ones are broken across lines
-            "long": len(s["latex"]) > LONG_STEP and s["title"] not in CORE_STEPS,
-            "core": s["title"] in CORE_STEPS,
+            "long": len(s["latex"]) > LONG_STEP and s["key"] not in CORE_STEPS,
+            "core": s["key"] in CORE_STEPS,
         }
         for i, s in enumerate(doc["steps"])
     ]
@@ -269,7 +272,7 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bo
         "parameters": {k: v["default"] for k, v in doc["parameters"].items()},
         "parameter_units": {k: v.get("unit", "") for k, v in doc["parameters"].items()},
         "initial": info.get("initial", {}),
-        "t_end": info.get("t_end", 10.0),
+        "t_end": info.get("t_end", DEFAULT_T_END),
         "panels": info["panels"],
         "trees": {
             "kinetic": _pair_tree(doc.get("kinetic"), names),
@@ -338,7 +341,7 @@ def scene_page(
     reduction = _reduction(doc)
     defaults = {k: v["default"] for k, v in doc["parameters"].items()}
     spec = mechanism(
-        info.get("id", doc.get("id", "")),
+        info.get("family", ""),
         particles,
         doc["coordinates"],
         moves_in_3d(particles, doc["coordinates"]),
@@ -359,13 +362,14 @@ def scene_page(
         "panels": panels,
         "panel_text": texts(),
         "diagram": diagram(
-            info.get("id", ""),
+            info.get("family", ""),
             f"Set-up: {info.get('title', '')}",
             info.get("figure", ""),
             defaults,
             info.get("initial", {}),
             doc["coordinates"],
             particles,
+            marks=info.get("marks", ()),
         ),  # fmt: skip
         # what the animation draws, in words (the set-up's figure text stays with the diagram)
         "animation_caption": spec["caption"] if spec else "",
@@ -386,9 +390,9 @@ def scene_page(
             info.get("events", ()),
         ),
         "t_end": {
-            "value": _fmt(info.get("t_end", 10.0)),
+            "value": _fmt(info.get("t_end", DEFAULT_T_END)),
             "min": "0.5",
-            "max": _fmt(max(60.0, 10 * info.get("t_end", 10.0))),
+            "max": _fmt(max(60.0, 10 * info.get("t_end", DEFAULT_T_END))),
         },
         "methods": list(methods),
         "rtols": RTOLS,

@@ -7,6 +7,7 @@ from typing import Annotated, Any
 from fastapi import APIRouter, Query
 from fastapi.responses import Response
 
+from app.engine.contract import scene_json
 from app.service import derivations, exporting
 from app.service.export.source import FORMATS
 from app.service.exporting import Exported
@@ -19,7 +20,7 @@ router = APIRouter(prefix="/api", tags=["scenes"])
 
 @router.get("/scenes", response_model=list[SceneSummary], summary="List the chapter's scenes")
 def list_scenes() -> list[dict[str, Any]]:
-    return [derivations.scene_summary(s) for s in derivations.SCENES.values()]
+    return [scene_json(s) for s in derivations.SCENES.values()]
 
 
 @router.get(

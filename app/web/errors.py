@@ -24,6 +24,7 @@ from fastapi.responses import HTMLResponse, JSONResponse, Response
 
 from app.engine.errors import excerpt
 from app.errors import NoKey, OverCapacity, Refused, UnknownClass, UnknownScene, WorkerFailed, WrongKey
+from app.limits import RETRY_SECONDS as UNAVAILABLE_RETRY_SECONDS
 
 # what each kind of failure is, in HTTP
 REFUSED = 422  # Refused and TooMuchWork: the request as sent cannot be served
@@ -32,7 +33,6 @@ SERVER_BUSY = 503  # OverCapacity of the whole server, or no worker to be had
 NOT_FOUND = 404  # UnknownScene, UnknownClass
 NO_KEY = 401  # NoKey
 WRONG_KEY = 403  # WrongKey
-UNAVAILABLE_RETRY_SECONDS = 1
 
 KINDS = (Refused, OverCapacity, WorkerFailed, UnknownScene, NoKey, WrongKey, UnknownClass)
 

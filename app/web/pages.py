@@ -14,12 +14,14 @@ from typing import Any
 from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, RedirectResponse
 
+from app.engine.contract import scene_json
 from app.errors import UnknownScene
 from app.numerics.methods import CHOICES
 from app.service import derivations
 from app.viz.chapter import table_of_contents
 from app.viz.diagrams import diagram
 from app.viz.page_model import scene_page
+from app.web.compression import negotiate
 from app.web.deps import PagesDep
 from app.web.errors import problem
 from app.web.page_cache import PageCache
@@ -29,13 +31,8 @@ router = APIRouter(tags=["pages"], include_in_schema=False)
 
 
 def scene_info(scene_id: str, doc: dict[str, Any]) -> dict[str, Any]:
-    """Title, section, statement, figure, panels, initial state and t_end of a scene."""
-    s = derivations.scene(scene_id)
-    info = {"id": s.id, **derivations.scene_summary(s), "statement": s.statement, "figure": s.figure}
-    info.update(doc.get("scene") or {})
-    info["id"] = s.id
-    info["events"] = [{"name": e.name, "expression": e.expression, "message": e.message} for e in s.events]
-    return info
+    """Title, section, statement, figure, panels, initial state, t_end, events and family of a scene."""
+    return {**scene_json(derivations.scene(scene_id)), **(doc.get("scene") or {})}
 
 
 def page_model(scene_id: str, pages: PageCache | None = None) -> dict[str, Any]:
@@ -53,9 +50,8 @@ def page_model(scene_id: str, pages: PageCache | None = None) -> dict[str, Any]:
 def _card_diagram(s: Any) -> str:
     defaults = {p.name: p.default for p in s.system.parameters}
     particles = [(p.label, p.position) for p in s.system.particles]
-    return diagram(
-        s.id, s.title, s.figure, defaults, dict(s.initial), s.system.coordinates, particles, ident=f"card-{s.id}"
-    )
+    drawn = (s.family, s.title, s.figure, defaults, dict(s.initial), s.system.coordinates, particles)
+    return diagram(*drawn, ident=f"card-{s.id}", marks=s.marks)
 
 
 @router.get("/", response_class=HTMLResponse)
@@ -63,7 +59,7 @@ def index(request: Request, pages: PagesDep) -> HTMLResponse:
     # the panels each page shows (app/viz/panels.py) tell the contents where a section is illustrated
     scenes = [
         {
-            **derivations.scene_summary(s),
+            **scene_json(s),
             "panels": page_model(s.id, pages)["panels"],
             "diagram": pages.card(s.id, lambda s=s: _card_diagram(s)),
             "url": f"/scenes/{s.id}",
@@ -93,6 +89,6 @@ def scene_page_route(request: Request, scene_id: str, pages: PagesDep) -> HTMLRe
         model,
         lambda: bytes(templates.TemplateResponse(request, "scene.html", {"m": model, "scene": model["info"]}).body),
     )
-    if "gzip" in request.headers.get("accept-encoding", ""):
+    if negotiate(request.headers.get("accept-encoding", ""), offered=("gzip",)):
         return HTMLResponse(compressed, headers={"Content-Encoding": "gzip", "Vary": "Accept-Encoding"})
     return HTMLResponse(plain, headers={"Vary": "Accept-Encoding"})

@@ -6,6 +6,7 @@ from typing import Literal
 
 from pydantic import BaseModel, Field
 
+from app.limits import DEFAULT_T_END
 from app.numerics import limits
 from app.service.export.source import FORMATS
 from app.web.schemas_simulate import Values
@@ -26,5 +27,5 @@ class ExportRequest(BaseModel):
         default_factory=dict, description="Initial q and q_dot by name for the exported simulation (missing ones: 0)."
     )
     t_end: float | None = Field(
-        None, gt=0, le=limits.T_END_MAX, description="End time of the exported simulation (default 10 s)."
+        None, gt=0, le=limits.T_END_MAX, description=f"End time of the exported simulation (default {DEFAULT_T_END:g} s)."
     )

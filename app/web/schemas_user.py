@@ -14,6 +14,7 @@ from pydantic import BaseModel, ConfigDict, Field, create_model
 
 from app.engine.parse import FUNCTIONS, MAX_LENGTH
 from app.engine.trees import FUNCTIONS as TREE_FUNCTIONS
+from app.numerics import limits
 from app.service.user_checks import MAX_COORDINATES, MAX_PARAMETERS, MAX_PARTICLES
 from app.web.schemas import ParameterInfo
 from app.web.schemas_simulate import SimulateRequest
@@ -31,7 +32,7 @@ Name = Annotated[
     str,
     Field(min_length=1, max_length=40, description="A letter then up to 15 ASCII letters or digits."),
 ]
-Number = Annotated[float, Field(ge=-1e15, le=1e15)]
+Number = Annotated[float, Field(ge=-limits.VALUE_MAX, le=limits.VALUE_MAX)]
 
 STRICT = ConfigDict(extra="forbid", allow_inf_nan=False)
 
@@ -122,6 +123,7 @@ class ConservedQuantity(ExprPair):
 
 class Step(BaseModel):
     model_config = OPEN
+    key: str = Field(description="What the step is (euler-lagrange; derivatives:theta), whatever its title reads.")
     title: str
     latex: str
     sympy: str

@@ -13,15 +13,13 @@ import sys
 
 from app.settings import settings
 
-KEEP_ALIVE_SECONDS = 75  # many students behind one address reuse their connections
-
 
 def options() -> list[str]:
     """uvicorn's command-line options: worker processes, keep-alive, connection cap, header deadline."""
     s = settings()
     return [
         "--workers", str(s.web_process_count),
-        "--timeout-keep-alive", str(KEEP_ALIVE_SECONDS),
+        "--timeout-keep-alive", str(s.keep_alive_seconds),  # long: many students behind one address reuse theirs
         "--limit-concurrency", str(s.connections),
         "--http", "app.web.slow_clients:HeaderDeadline",
         "--timeout-graceful-shutdown", "20",

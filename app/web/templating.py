@@ -26,6 +26,7 @@ from starlette.types import Scope
 from app.settings import ROOT
 from app.viz.chapter import ABOUT
 from app.viz.page_model import SLIDER_STEPS
+from app.web.compression import negotiate
 from app.web.mathml import mathml
 
 
@@ -50,7 +51,8 @@ class ClassroomStaticFiles(StaticFiles):
         return response
 
     async def _compressed(self, path: str, scope: Scope) -> Response | None:
-        if scope["method"] not in ("GET", "HEAD") or "gzip" not in Headers(scope=scope).get("accept-encoding", ""):
+        gzip_accepted = negotiate(Headers(scope=scope).get("accept-encoding", ""), ("gzip",))
+        if scope["method"] not in ("GET", "HEAD") or not gzip_accepted:
             return None
         try:
             full_path, found = await anyio.to_thread.run_sync(self.lookup_path, path + ".gz")
@@ -62,7 +64,6 @@ class ClassroomStaticFiles(StaticFiles):
         response.headers["Content-Encoding"] = "gzip"
         response.headers["Vary"] = "Accept-Encoding"
         return response
-
 
     async def _compress_small(self, path: str) -> Response | None:
         """Our own modules and styles (no .gz sibling, which could go stale while they are edited),

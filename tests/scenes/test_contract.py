@@ -9,7 +9,10 @@ from app.service.derivations import derivation, derivation_document
 from tests.reference import numerically_equal
 from tests.scenes.common import forces
 
-SCENE_KEYS = {"title", "section", "summary", "statement", "figure", "panels", "initial", "t_end"}
+SCENE_KEYS = {
+    *("id", "title", "section", "summary", "statement", "figure", "coordinates", "parameters", "initial", "t_end"),
+    *("panels", "beyond_chapter", "events", "family", "marks"),
+}
 
 
 def state_names(doc):

@@ -43,7 +43,7 @@ def test_derivation_contract(client, scene_id):
     for c in doc["conserved"]:
         assert {"name", "sympy", "latex", "reason"} <= set(c)
     assert isinstance(doc["hamiltonian_equals_energy"], bool) and doc["hamiltonian_energy_reason"]
-    assert doc["steps"] and all(set(s) == {"title", "latex", "sympy", "explanation"} for s in doc["steps"])
+    assert doc["steps"] and all(set(s) == {"key", "title", "latex", "sympy", "explanation"} for s in doc["steps"])
     # velocities print with dots, never as q_dot
     assert "_dot" not in doc["lagrangian"]["latex"] and r"\dot" in doc["lagrangian"]["latex"]
     # every equation of motion, evaluated with the served accelerations, vanishes (at random states:

@@ -73,7 +73,7 @@ def test_lagrangian_form_and_same_contract_as_scenes(client):
     for key in ("lagrangian", "hamiltonian", "energy"):
         sp.sympify(doc[key]["sympy"], locals=names)
     assert [e["coordinate"] for e in doc["equations_of_motion"]] == ["theta"]
-    assert doc["steps"] and all(set(s) == {"title", "latex", "sympy", "explanation"} for s in doc["steps"])
+    assert doc["steps"] and all(set(s) == {"key", "title", "latex", "sympy", "explanation"} for s in doc["steps"])
     assert r"\dot{\theta}" in doc["lagrangian"]["latex"]
     # the bead's angular acceleration, checked against LagrangesMethod
     theirs, _ = reference_accelerations(user_checks.checked(_spec(SPINNING_HOOP)).system())

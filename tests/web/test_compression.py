@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import gzip
+import zlib
 
+import anyio
 import pytest
 from fastapi.testclient import TestClient
 from starlette.responses import Response, StreamingResponse
@@ -22,14 +24,39 @@ from app.web.compression import ApiCompression, negotiate, zstd
         ("*", "zstd"),
         ("*, zstd;q=0", "gzip"),  # named with q=0 beats the wildcard
         ("gzip;q=nonsense", None),  # a malformed weight accepts nothing
+        ("gzip;q=1.5", None),  # so does one outside RFC 9110's 0 to 1 with three decimals
+        ("gzip;q=0.0001", None),
+        ("gzip;q=0", None),
+        ("gzip;q=0.000", None),
+        ("gzip; q=0.001", "gzip"),
+        ("gzip;q=0.5, zstd;q=0.4", "gzip"),  # the client's higher weight wins
+        ("zstd;q=0.5, gzip;q=0.5", "zstd"),  # a tie goes to our preference
+        ("gzip;q=0, *", "zstd"),
+        ("gzip;q=0, zstd;q=0, *", None),
         ("identity", None),
+        ("identity;q=0", None),  # nothing we can send is accepted: the body goes as it is
         ("br", None),
         ("", None),
         (",,;", None),
     ],
 )
-def test_negotiate_picks_our_preference_among_what_the_client_accepts(header, chosen):
+def test_negotiate_picks_what_the_client_weighs_highest_then_our_preference(header, chosen):
     assert negotiate(header) == chosen
+
+
+@pytest.mark.parametrize(
+    ("header", "chosen"),
+    [
+        ("gzip", "gzip"),
+        ("zstd", None),
+        ("gzip;q=0", None),
+        ("*", "gzip"),
+        ("*;q=0", None),
+        ("gzip;q=0.5, zstd", "gzip"),
+    ],
+)
+def test_negotiate_among_what_a_caller_offers(header, chosen):
+    assert negotiate(header, offered=("gzip",)) == chosen
 
 
 def test_small_bodies_stay_as_they_are():
@@ -43,13 +70,13 @@ def test_small_bodies_stay_as_they_are():
 def test_a_simulation_is_compressed_in_its_route_not_by_the_middleware(client, monkeypatch):
     # the route's thread inherits the chosen coding, so the middleware sees a body already compressed
     seen: list[int] = []
-    original = compression.ZstdResponder.apply_compression
+    original = compression._Response._encode
 
-    async def spy(self, body, *, more_body):
+    async def spy(self, body, more):
         seen.append(len(body))
-        return await original(self, body, more_body=more_body)
+        return await original(self, body, more)
 
-    monkeypatch.setattr(compression.ZstdResponder, "apply_compression", spy)
+    monkeypatch.setattr(compression._Response, "_encode", spy)
     response = client.post(
         "/api/scenes/double-pendulum/simulate", json={"initial": {}}, headers={"Accept-Encoding": "zstd"}
     )
@@ -63,6 +90,26 @@ def test_a_simulation_is_compressed_in_its_route_not_by_the_middleware(client, m
 def test_pages_are_left_to_their_own_precompressed_copies(client):
     page = client.get("/scenes/simple-pendulum", headers={"Accept-Encoding": "zstd"})
     assert page.status_code == 200 and "content-encoding" not in page.headers
+
+
+@pytest.mark.parametrize(
+    ("header", "coded"),
+    [
+        ("gzip", True),
+        ("gzip;q=0.5", True),
+        ("*", True),
+        ("gzip;q=0", False),
+        ("*, gzip;q=0", False),
+        ("identity", False),
+    ],
+)
+@pytest.mark.parametrize("path", ["/scenes/simple-pendulum", "/static/js/derivation.js"])
+def test_pages_and_static_files_come_compressed_unless_gzip_is_refused(client, path, header, coded):
+    response = client.get(path, headers={"Accept-Encoding": header})
+    assert response.status_code == 200 and response.headers.get("content-encoding") == ("gzip" if coded else None)
+    assert response.headers.get("vary") == "Accept-Encoding" or not coded
+    plain = client.get(path, headers={"Accept-Encoding": "identity"})
+    assert response.content == plain.content  # the client decoded the gzip copy to the same bytes
 
 
 async def _streamed(scope, receive, send):
@@ -91,3 +138,79 @@ def test_streamed_and_small_api_responses(coding):
     outside = client.get("/elsewhere", headers={"Accept-Encoding": coding})
     assert small.content == b'{"ok": true}' and "content-encoding" not in small.headers
     assert outside.content == small.content and "content-encoding" not in outside.headers
+
+
+PAD = b"ab" * 2000
+
+
+def _served(app, headers: dict[str, str], path: str = "/api/x") -> list[dict]:
+    """The ASGI messages ``app`` sends through the middleware for a GET of ``path``."""
+    scope = {"type": "http", "method": "GET", "path": path, "query_string": b"",
+             "headers": [(k.lower().encode(), v.encode()) for k, v in headers.items()]}  # fmt: skip
+    sent: list[dict] = []
+
+    requested = []
+
+    async def receive():
+        if requested:  # the request was read: wait, like a client that stays connected
+            await anyio.sleep_forever()
+        requested.append(True)
+        return {"type": "http.request", "body": b"", "more_body": False}
+
+    async def send(message):
+        sent.append(message)
+
+    anyio.run(ApiCompression(app), scope, receive, send)
+    return sent
+
+
+def _decoder(coding):
+    if coding == "gzip":
+        d = zlib.decompressobj(16 + zlib.MAX_WBITS)
+        return d.decompress
+    return zstd.ZstdDecompressor().decompress
+
+
+@pytest.mark.parametrize("coding", ["zstd", "gzip"])
+def test_each_streamed_chunk_reaches_the_client_readable_at_once(coding):
+    sent = _served(_streamed, {"Accept-Encoding": coding})
+    start, bodies = sent[0], [m for m in sent if m["type"] == "http.response.body"]
+    headers = dict(start["headers"])
+    assert headers[b"content-encoding"] == coding.encode() and headers[b"vary"] == b"Accept-Encoding"
+    decode = _decoder(coding)
+    # every chunk decodes, on its own arrival, to the whole line the route sent with it
+    lines = [decode(m["body"]) for m in bodies if m["body"]]
+    assert [line[:12] for line in lines[:5]] == [b'{"chunk": %d,' % i for i in range(5)]
+    assert all(len(m["body"]) < len(PAD) / 10 for m in bodies)
+
+
+async def _large(scope, receive, send, headers=None, status=200, media="application/json"):
+    await Response(b'{"pad": "%s"}' % PAD, status_code=status, media_type=media, headers=headers)(scope, receive, send)
+
+
+@pytest.mark.parametrize(
+    "app",
+    [
+        lambda s, r, w: _large(s, r, w, headers={"Content-Encoding": "br"}),  # encoded by the route
+        lambda s, r, w: _large(s, r, w, status=206),  # a range of the body
+        lambda s, r, w: _large(s, r, w, media="image/png"),
+        lambda s, r, w: _large(s, r, w, media="text/event-stream"),
+    ],
+)
+def test_what_is_encoded_already_or_streams_events_passes_untouched(app):
+    sent = _served(app, {"Accept-Encoding": "gzip, zstd"})
+    body = b"".join(m.get("body", b"") for m in sent if m["type"] == "http.response.body")
+    assert body == b'{"pad": "%s"}' % PAD and dict(sent[0]["headers"]).get(b"content-encoding") in (None, b"br")
+
+
+@pytest.mark.parametrize(
+    ("header", "coding"), [("gzip;q=0, zstd;q=0", None), ("identity", None), ("gzip;q=0.5", "gzip")]
+)
+def test_a_large_api_body_honours_the_weights(header, coding):
+    sent = _served(_large, {"Accept-Encoding": header})
+    headers = dict(sent[0]["headers"])
+    assert headers.get(b"content-encoding") == (coding.encode() if coding else None)
+    assert headers[b"vary"] == b"Accept-Encoding"  # another client's coding would have compressed it
+    body = sent[1]["body"]
+    assert int(headers[b"content-length"]) == len(body)
+    assert (_decoder(coding)(body) if coding else body) == b'{"pad": "%s"}' % PAD

@@ -16,8 +16,8 @@ import time
 from collections import deque
 
 from app.errors import OverCapacity
+from app.limits import RATE_WINDOW_SECONDS as WINDOW_SECONDS
 
-WINDOW_SECONDS = 60.0
 MAX_KEYS = 20000
 
 

@@ -1,0 +1,75 @@
+"""Defaults and limits defined once: every module that means the same number reads the same definition."""
+
+import subprocess
+import sys
+
+import pytest
+from pydantic import ValidationError
+
+from app import limits as shared
+from app.engine import reduction, transform
+from app.numerics import limits
+from app.scenes import SCENES, Scene
+from app.service import poincare, simulation
+from app.settings import ROOT
+from app.viz.page_model import DEFAULT_RTOL, RTOLS
+from app.web.schemas_user import ParameterSpec
+
+
+def test_the_page_offers_the_tolerances_the_api_accepts_with_its_default_chosen():
+    offered = [float(r) for r in RTOLS]
+    assert offered == list(limits.RTOL_MENU) == sorted(offered, reverse=True)
+    assert all(limits.RTOL_MIN <= r <= limits.RTOL_MAX for r in offered)
+    assert float(DEFAULT_RTOL) == limits.RTOL_DEFAULT and DEFAULT_RTOL in RTOLS
+
+
+@pytest.mark.parametrize("value", [limits.VALUE_MAX, -limits.VALUE_MAX])
+def test_a_declared_parameter_may_be_as_large_as_a_simulation_accepts(value):
+    assert ParameterSpec(name="k", value=value, min=value, max=value).value == value
+
+
+@pytest.mark.parametrize("field", ["value", "min", "max"])
+def test_a_declared_parameter_beyond_the_largest_value_is_refused(field):
+    with pytest.raises(ValidationError, match="less than or equal to 1000000000000|greater than or equal to -1000"):
+        ParameterSpec(name="k", **{field: 10 * limits.VALUE_MAX})
+
+
+def test_the_default_end_time_is_one_number():
+    assert Scene.__dataclass_fields__["t_end"].default == simulation.DEFAULT_T_END == shared.DEFAULT_T_END
+    assert poincare.DEFAULT_T_END == shared.POINCARE_T_END
+    assert all(s.t_end > 0 for s in SCENES.values())
+
+
+def test_modules_meaning_the_same_budget_share_it():
+    assert reduction.SOLVE_SECONDS is transform.SOLVE_SECONDS is shared.SOLVE_SECONDS
+
+
+def test_the_keep_alive_is_a_setting_the_server_options_pass_on():
+    env = {"PYTHONPATH": str(ROOT), "PATH": "/usr/bin:/bin", "LAGRANGE_KEEP_ALIVE_SECONDS": "31"}
+    given = subprocess.run(
+        [sys.executable, "-m", "app.web.server_options"], cwd=ROOT, capture_output=True, text=True, env=env, check=True
+    ).stdout.split()
+    assert given[given.index("--timeout-keep-alive") + 1] == "31"
+
+
+def test_no_module_of_the_app_defines_a_time_bound_of_its_own():
+    found = subprocess.run(
+        ["grep", "-rnE", "^[A-Z_]*_SECONDS *(: *[a-z]+)? *=", "app", "--include=*.py"],
+        cwd=ROOT, capture_output=True, text=True,
+    ).stdout.splitlines()  # fmt: skip
+    # numerics/limits.py holds the bounds of a simulation request (its WALL_SECONDS among them); the example
+    # file's short limit is an example's, not the program's
+    allowed = ("app/limits.py:", "app/numerics/limits.py:", "app/web/examples_user.py:")
+    assert [line for line in found if not line.startswith(allowed)] == []
+
+
+def test_a_changed_limit_changes_the_caches_fingerprint(monkeypatch, tmp_path):
+    from app.service import cache
+
+    (tmp_path / "engine").mkdir()
+    (tmp_path / "engine" / "a.py").write_text("X = 1\n")
+    (tmp_path / "limits.py").write_text("SOLVE_SECONDS = 2.0\n")
+    monkeypatch.setattr(cache, "APP_SOURCE", tmp_path)
+    before = cache.source_fingerprint("engine")
+    (tmp_path / "limits.py").write_text("SOLVE_SECONDS = 3.0\n")
+    assert cache.source_fingerprint("engine") != before

@@ -1,0 +1,33 @@
+"""Each scene names its drawing family; the diagrams and the animations are kept per family, not per scene."""
+
+import pytest
+
+from app.scenes import SCENES
+from app.viz import diagrams, mechanism
+
+
+def card(scene_id: str) -> str:
+    s = SCENES[scene_id]
+    defaults = {p.name: p.default for p in s.system.parameters}
+    particles = [(p.label, p.position) for p in s.system.particles]
+    return diagrams.diagram(s.family, s.title, s.figure, defaults, dict(s.initial), s.system.coordinates, particles,
+                            marks=s.marks)  # fmt: skip
+
+
+def test_every_family_is_drawn_both_ways_and_used_by_a_scene():
+    used = {s.family for s in SCENES.values()}
+    assert used == set(diagrams.FAMILIES) == set(mechanism.FAMILIES)
+    # the tables are keyed by family: two scenes drawn alike share one entry
+    assert SCENES["simple-pendulum"].family == SCENES["damped-pendulum"].family
+
+
+def test_a_mark_adds_to_the_family_drawing():
+    assert "−b θ̇" in card("damped-pendulum") and "−b θ̇" not in card("simple-pendulum")
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_each_scene_draws_its_family_not_the_generic_figure(scene_id):
+    s = SCENES[scene_id]
+    particles = [(p.label, p.position) for p in s.system.particles]
+    generic = diagrams.diagram("", s.title, s.figure, {}, dict(s.initial), s.system.coordinates, particles)
+    assert card(scene_id) != generic and "coordinates: " in generic and "coordinates: " not in card(scene_id)
