@@ -17,7 +17,7 @@ from app.engine.derive import Derivation
 from app.service import derivations
 from app.service.export import filename, render
 from app.service.export.source import FORMATS, scene_source, system_source
-from app.service.simulation import DEFAULT_T_END, initial_state
+from app.service.simulate_request import DEFAULT_T_END, initial_state
 
 
 @dataclass(frozen=True)
