@@ -80,7 +80,7 @@ class Derivation:
         A Skipped because an enclosing limit (a worker job's, a document's) had little time left is
         not remembered: with more time the member may well be computed."""
         if key in self._members:
-            return self._members[key]  # type: ignore[no-any-return]
+            return self._members[key]
         seconds = self.member_seconds(member)
         outer, _ = signal.getitimer(signal.ITIMER_REAL)
         constrained = (
@@ -89,8 +89,9 @@ class Derivation:
             and outer - MEMBER_RESERVE_SECONDS < seconds
         )
         notes: list[Skipped] = []
-        value = bounded(member, what, seconds, work, None, notes)
-        result: T | Skipped = notes[0] if notes else value  # type: ignore[assignment]
+        # the value in a 1-tuple, told apart from the fallback (a member's value may itself be None)
+        value = bounded(member, what, seconds, lambda: (work(),), None, notes)
+        result: T | Skipped = notes[0] if notes or value is None else value[0]
         if not (notes and constrained):
             self._members[key] = result
         return result

@@ -44,7 +44,7 @@ def _derivation(scene_id: str) -> Derivation:
     # loads it (the web process's threads, where no time limit can interrupt SymPy) computes them again.
     path = _object_path(scene_id)
     try:
-        return pickle.loads(path.read_bytes())  # type: ignore[no-any-return]
+        return pickle.loads(path.read_bytes())
     except Exception:  # absent, or written by another version of SymPy: derive again
         s = SCENES[scene_id]
         d = derive(s.system)

@@ -89,7 +89,7 @@ def stability_marks(doc: dict[str, Any], ranges: dict[str, tuple[float, float]])
     """Parameter values at which an equilibrium of the reduction changes stability (its ω² changes sign)."""
     red = doc.get("effective_potential") or {}
     marks: dict[str, list[dict[str, Any]]] = {}
-    coordinate = red.get("coordinate")
+    coordinate = str(red.get("coordinate") or "")
     for e in red.get("equilibria") or []:
         w2_pair = e.get("omega_squared") or {}
         w2, where = w2_pair.get("sympy"), (e.get("position") or {}).get("sympy")
