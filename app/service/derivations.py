@@ -75,7 +75,9 @@ def derivation_document(scene_id: str) -> dict[str, Any]:
         d = derivation(scene_id)
         return _printed.pop(scene_id, None) or _document(s, d)
 
-    return _json_cache.get(scene_id, printed)
+    document = _json_cache.get(scene_id, printed)
+    _printed.pop(scene_id, None)  # printed again while the document came from the disk: not needed
+    return document
 
 
 def scene_summary(s: Scene) -> dict[str, Any]:
