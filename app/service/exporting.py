@@ -8,7 +8,7 @@ so an export can never do more than a derivation could.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any
@@ -34,13 +34,16 @@ def _check_format(fmt: str) -> str:
 
 
 @lru_cache(maxsize=64)
-def scene_export(scene_id: str, fmt: str) -> Exported:
-    """A scene's derivation as a file (run in a thread: the first call may derive)."""
+def scene_export(scene_id: str, fmt: str, printed: Callable[[str], dict[str, Any]]) -> Exported:
+    """A scene's derivation as a file (run in a thread: the first call may derive).
+
+    An export prints the derivation's printed document (its LaTeX, its steps) again in another format;
+    ``printed`` gives a scene's document (the web layer's ``derivation_document``)."""
     _check_format(fmt)
     scene = derivations.scene(scene_id)
     d = derivations.derivation(scene_id)
     y0 = initial_state(d, {}, scene.initial)
-    source = scene_source(scene, d, derivations.derivation_document(scene_id), tuple(y0.tolist()))
+    source = scene_source(scene, d, printed(scene_id), tuple(y0.tolist()))
     return Exported(render(source, fmt).encode(), filename(source, fmt), FORMATS[fmt][0])
 
 

@@ -65,4 +65,4 @@ def scene_export(
     scene_id: str, fmt: Annotated[ExportFormat, Query(alias="format", description=FORMAT_HELP)]
 ) -> Response:
     # a plain `def`: the first export of a scene may derive it, in FastAPI's thread pool
-    return download(exporting.scene_export(scene_id, fmt))
+    return download(exporting.scene_export(scene_id, fmt, derivations.derivation_document))
