@@ -14,14 +14,12 @@ from app.engine.names import display_names
 from app.engine.report import (
     Printer,
     build_steps,
-    constraint_steps,
     energies,
     equation_pairs,
     lagrangian,
-    new_lagrangian,
-    transform_steps,
 )
 from app.engine.report import display as _show
+from app.engine.report_members import constraint_steps, new_lagrangian, transform_steps
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.rods import fixed_distances
 from app.engine.transform import Transformed
