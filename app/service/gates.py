@@ -103,5 +103,3 @@ class InFlight:
 
 
 IN_FLIGHT = InFlight()
-# The longest the warm-up waits for quiet before its next step: under steady traffic it still advances.
-GIVE_WAY_SECONDS = 0.5

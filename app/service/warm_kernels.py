@@ -10,7 +10,10 @@ from app.numerics.methods import METHODS, NONSTIFF
 from app.numerics.methods.scipy_ivp import scipy_integrate
 from app.scenes import SCENES
 from app.service.compiled import COMPILED
-from app.service.gates import GIVE_WAY_SECONDS, IN_FLIGHT
+from app.service.gates import IN_FLIGHT
+
+# The longest the warm-up waits for quiet before its next step: under steady traffic it still advances.
+GIVE_WAY_SECONDS = 0.5
 
 
 def warm_all(give_way: Callable[[], object] = lambda: None) -> dict[str, float]:
