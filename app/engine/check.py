@@ -287,7 +287,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         groups,
         catalogue(d, step, k, truths, groups, relation, _short_label(step, label)) if mistakes else (),
         latex_names,
-        table.qdd[k] if step == "equation" else None,
+        table.qdd[k] if step == "equation" and k is not None else None,
     )
 
 

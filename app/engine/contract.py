@@ -2,35 +2,33 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, TypeVar
 
 import sympy as sp
 
 from app.engine.budget import Skipped, bounded, display_budget, display_seconds_left, pythagoras, within_budget
-from app.engine.constraints import ConstraintForce, constraint_forces
-from app.engine.derive import Derivation
+from app.engine.constraints import ConstraintForce
+from app.engine.derive import LARGE_FROM, Derivation
 from app.engine.errata import errata_json
-from app.engine.hamilton import hamilton
-from app.engine.modes import normal_modes
 from app.engine.names import display_names
 from app.engine.report import (
     Printer,
     build_steps,
-    constraint_steps,
     energies,
     equation_pairs,
     lagrangian,
-    new_lagrangian,
-    transform_steps,
 )
 from app.engine.report import display as _show
+from app.engine.report_members import constraint_steps, new_lagrangian, transform_steps
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.rods import fixed_distances
-from app.engine.transform import Transformed, transform
+from app.engine.transform import Transformed
 from app.engine.trees import maybe_of_sympy
-from app.limits import DISPLAY_SECONDS, LARGE_DISPLAY_SECONDS, MEMBER_SECONDS
+from app.limits import DISPLAY_SECONDS, LARGE_DISPLAY_SECONDS
 from app.scenes.reasons import reason
 from app.scenes.types import Parameter, Scene
+
+T = TypeVar("T")
 
 
 def parameters_json(parameters: tuple[Parameter, ...]) -> dict[str, dict[str, Any]]:
@@ -41,9 +39,9 @@ def parameters_json(parameters: tuple[Parameter, ...]) -> dict[str, dict[str, An
     }
 
 
-LARGE_FROM = 3
-# From LARGE_FROM coordinates on each bound is this share of its own: the equations come first
-LARGE_SHARE = 0.5
+# Each member of the document beyond the equations is computed within its own bound (the derivation's
+# MEMBER_SECONDS, app.engine.derive); printing it has a bound of the same length. One that runs out is left
+# out with a note in "skipped", never a refusal of the system.
 
 
 def derivation_json(d: Derivation, scene: Scene | None = None, beyond: bool = True) -> dict[str, Any]:
@@ -95,9 +93,12 @@ def _shown(expr: sp.Expr) -> sp.Expr:
     return within_budget(lambda: _show(expr), expr, max(display_seconds_left(DISPLAY_SECONDS), 0.05))
 
 
-def _member_seconds(d: Derivation) -> dict[str, float]:
-    share = 1.0 if len(d.table.names) < LARGE_FROM else LARGE_SHARE
-    return {member: share * seconds for member, seconds in MEMBER_SECONDS.items()}
+def _member(value: T | Skipped, fallback: T, skipped: list[Skipped]) -> T:
+    """A member's value; a skipped one's note goes to ``skipped`` and ``fallback`` is printed."""
+    if isinstance(value, Skipped):
+        skipped.append(value)
+        return fallback
+    return value
 
 
 def _equation_pairs(d: Derivation, pr: Printer) -> list[dict[str, Any]]:
@@ -125,12 +126,9 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     table, eqs, en, red = d.table, d.equations, d.energetics, d.reduction
     pr = Printer(table.latex_names())
     skipped: list[Skipped] = list(d.skipped)
-    seconds = _member_seconds(d)
     none: tuple[ConstraintForce, ...] = ()
-    forces = bounded("constraint_forces", "The forces of constraint", seconds["constraint_forces"],
-                     lambda: constraint_forces(d), none, skipped)  # fmt: skip
-    transformed = bounded("transformed", "The derivation in the declared new coordinates", seconds["transformed"],
-                          lambda: _transformed(d), None, skipped)  # fmt: skip
+    forces = _member(d.constraint_forces, none, skipped)
+    transformed = _transformed(d, skipped)
     no_steps: list[dict[str, str]] = []
     result: dict[str, Any] = {
         "coordinates": list(table.names),
@@ -167,7 +165,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "steps": bounded(
             "steps",
             "The step-by-step derivation",
-            seconds["steps"],
+            d.member_seconds("steps"),
             lambda: _steps(d, forces, pr, transformed),
             no_steps,
             skipped,
@@ -205,10 +203,14 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     return result
 
 
-def _transformed(d: Derivation) -> tuple[Transformed, dict[str, Any]] | None:
-    """The declared change of coordinates, derived and printed (None when none is declared)."""
-    tr = transform(d.system)
-    return (tr, transformed_json(tr)) if tr is not None else None
+def _transformed(d: Derivation, skipped: list[Skipped]) -> tuple[Transformed, dict[str, Any]] | None:
+    """The declared change of coordinates and its print (None when none is declared), each within its bound."""
+    tr = _member(d.transformed, None, skipped)
+    if tr is None:
+        return None
+    what = "The derivation in the declared new coordinates"
+    printed = bounded("transformed", what, d.member_seconds("transformed"), lambda: transformed_json(tr), None, skipped)
+    return (tr, printed) if printed is not None else None
 
 
 def _steps(
@@ -222,17 +224,16 @@ def add_beyond(
 ) -> None:
     """Hamilton's equations after h, the normal modes after them: steps and JSON, each within its own bound."""
     skipped = [] if skipped is None else skipped
-    seconds = _member_seconds(d)
     ham = None
-    if not d.equations.closed_form and not d.equations.mass_matrix.is_diagonal():
-        skipped.append(Skipped("hamilton", "Hamilton's equations are left out: q̇ = M⁻¹(p − b) has no closed form "
-                               "short enough to read for this many coordinates (as with the accelerations)."))  # fmt: skip
-    else:
-        ham = bounded("hamilton", "Hamilton's equations", seconds["hamilton"],
-                  lambda: (lambda h: (h, hamilton_steps(d, h), hamilton_json(d, h)))(hamilton(d)), None, skipped)  # fmt: skip
-    modes = bounded("normal_modes", "The equilibria and normal modes", seconds["normal_modes"],
-                    lambda: (lambda m: (normal_mode_steps(d, m), normal_modes_json(m, pr)))(
-                        normal_modes(d, held_momenta(d, scene))), None, skipped)  # fmt: skip
+    h = _member(d.hamilton, None, skipped)
+    if h is not None:
+        ham = bounded("hamilton", "Hamilton's equations", d.member_seconds("hamilton"),
+                      lambda: (h, hamilton_steps(d, h), hamilton_json(d, h)), None, skipped)  # fmt: skip
+    modes = None
+    nm = _member(d.normal_modes(held_momenta(d, scene)), None, skipped)
+    if nm is not None:
+        modes = bounded("normal_modes", "The equilibria and normal modes", d.member_seconds("normal_modes"),
+                        lambda: (normal_mode_steps(d, nm), normal_modes_json(nm, pr)), None, skipped)  # fmt: skip
     steps = result["steps"]
     keys = [s["key"] for s in steps]
     # Hamilton's equations right after h (and after the power of the forces when there is one)

@@ -19,11 +19,9 @@ from app.engine.action_step import KEY as ACTION_KEY
 from app.engine.action_step import action_step
 from app.engine.breaking import broken, broken_row, single
 from app.engine.budget import unbudgeted
-from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation
 from app.engine.forms import settle, textbook_form, use_names
 from app.engine.names import unicode
-from app.engine.transform import Transformed, collected, compact
 from app.engine.trees import maybe_of_sympy
 
 # The steps (by key) a reader needs to follow the argument: the Lagrangian, its equations of motion, the
@@ -445,107 +443,3 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
             )
     out.append(_step("reduced-equilibria", "Equilibria and small oscillations", rows, sym, why))
     return out
-
-
-# The constraint function's name: a calligraphic C, which no parameter (g is gravity) can be.
-CONSTRAINT = r"\mathcal{C}"
-
-
-def constraint_steps(forces: tuple[ConstraintForce, ...], pr: Printer) -> list[dict[str, str]]:
-    """The constraints in Cartesian form and the forces the multipliers give."""
-    if not forces:
-        return []
-    return [
-        _step(
-            "constraints",
-            "Constraints in Cartesian form",
-            [rf"{CONSTRAINT}_{{{a + 1}}} = {pr.tex(f.g)} = 0" for a, f in enumerate(forces)],
-            [f.g for f in forces],
-            "Each constraint the coordinates satisfy silently is written again as a surface 𝒞 = 0 in Cartesian "
-            "space; it can only push along its normal, the gradient of 𝒞.",
-        ),
-        _step(
-            "constraint-forces",
-            "Forces of constraint",
-            [
-                (rf"\lambda_{{{a + 1}}} = {pr.tex(f.multiplier)},\quad " if f.multiplier != f.force else "")
-                + rf"F_{{{a + 1}}} = \lambda_{{{a + 1}}} |\nabla {CONSTRAINT}_{{{a + 1}}}| = {pr.tex(f.force)}"
-                + rf"\quad (\text{{{f.constraint.name}}})"
-                for a, f in enumerate(forces)
-            ],
-            [f.force for f in forces],
-            "Newton's law with the unknown push λ ∇𝒞, m r̈ = −∇U + Σ λ ∇𝒞, is solved for the multipliers λ with the "
-            "engine's accelerations put in for r̈; each force F = λ |∇𝒞| is then a function of the coordinates and "
-            "velocities alone, positive along ∇𝒞.",
-        ),
-    ]
-
-
-def transform_steps(tr: Transformed) -> list[dict[str, str]]:
-    """The change of coordinates, the Lagrangian in the new ones and what it reveals."""
-    d = tr.derivation
-    old = Printer(tr.original.latex_names())
-    pr = Printer(d.table.latex_names())
-    steps = [
-        _step(
-            "change-of-coordinates",
-            "Change of coordinates",
-            [f"{pr.tex(Q)} = {old.tex(f)}" for Q, f in zip(d.table.q, tr.definitions, strict=True)],
-            list(tr.definitions),
-            tr.change.explanation or "New generalized coordinates, defined from the old ones.",
-        ),
-        _step(
-            "inverse-map",
-            "Inverse map",
-            [f"{old.tex(q)} = {pr.tex(e)}" for q, e in tr.inverse.items()],
-            list(tr.inverse.values()),
-            "Solving the definitions for the old coordinates gives the map that is substituted into the declaration.",
-        ),
-        _step(
-            "new-lagrangian",
-            "Lagrangian in the new coordinates",
-            [f"L = {pr.tex(new_lagrangian(tr))}"],
-            new_lagrangian(tr),
-            "The same Lagrangian, now a function of the new coordinates and their velocities.",
-        ),
-    ]
-    M = d.equations.mass_matrix
-    rows = [rf"M = {pr.tex(M.applyfunc(display))}"]
-    why = "The mass matrix in the new coordinates."
-    if tr.decoupled:
-        why = "The mass matrix is diagonal: each new coordinate moves with its own inertia, unmixed with the others."
-    if tr.reduced_mass is not None:
-        rows.append(rf"\mu = {pr.tex(tr.reduced_mass)}")
-        why += f" The inertia of {tr.change.relative} is the reduced mass μ."
-    steps.append(_step("new-inertia", "Inertia of the new coordinates", rows, M.applyfunc(display).tolist(), why))
-    acc = [display(a) for a in d.equations.accelerations]
-    steps.append(
-        _step(
-            "new-equations",
-            "Equations in the new coordinates",
-            [f"{pr.tex(s)} = {pr.tex(a)}" for s, a in zip(d.table.qdd, acc, strict=True)],
-            acc,
-            "The Euler–Lagrange equations derived again from the new Lagrangian.",
-        )
-    )
-    for c in d.energetics.conserved:
-        if c.name.startswith("p_"):
-            original = display(tr.to_original(c.expr))
-            steps.append(
-                _step(
-                    f"conserved:{c.name}",
-                    f"Conserved {c.name}",
-                    [f"{c.latex_name} = {pr.tex(display(c.expr))} = {old.tex(original)}"],
-                    [display(c.expr), original],
-                    f"{c.reason} Written in the original coordinates it is the quantity on the right.",
-                )
-            )
-    return steps
-
-
-def new_lagrangian(tr: Transformed) -> sp.Expr:
-    """L in the new coordinates, grouped by powers of the velocities (T) minus a compact U."""
-    m = tr.derivation.mechanics
-    if m.T is None:
-        return collected(m.L, tr.derivation.table.qd)
-    return collected(m.T, tr.derivation.table.qd) - compact(m.U)

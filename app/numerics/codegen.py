@@ -120,7 +120,7 @@ def ldl_solve(
             num = entry[i, j] - sum((L[i, k] * L[j, k] * D[k] for k in range(j)), sp.Integer(0))
             L[i, j] = define(f"{tag}l{i}_{j}", num / D[j])
     # forward: z_i = r_i - sum_{k<i} L_ik z_k
-    z = []
+    z: list[sp.Expr] = []
     for i in range(n):
         z.append(define(f"{tag}z{i}", sp.Symbol(rhs[i]) - sum((L[i, k] * z[k] for k in range(i)), sp.Integer(0))))
     # back: x_i = z_i / d_i - sum_{k>i} L_ki x_k

@@ -22,6 +22,7 @@ import tempfile
 import threading
 from collections.abc import Callable
 from types import ModuleType
+from typing import Any
 
 import numpy
 
@@ -54,7 +55,7 @@ def ready(name: str) -> bool:
 
 def python_functions(sources: dict[str, str]) -> dict[str, Callable]:
     """Execute generated source (our own printer's output, never user text) as plain Python."""
-    namespace: dict[str, object] = {"math": math, "numpy": numpy}
+    namespace: dict[str, Any] = {"math": math, "numpy": numpy}
     for name, source in sources.items():
         exec(compile(source, f"<generated {name}>", "exec"), namespace)
     return {name: namespace[name] for name in sources}
@@ -86,6 +87,8 @@ def compiled_functions(sources: dict[str, str]) -> ModuleType:
             os.replace(handle.name, path)
         name = f"_lagrange_generated.rhs_{key}"
         spec = importlib.util.spec_from_file_location(name, path)
+        if spec is None or spec.loader is None:
+            raise ImportError(f"no loader for the generated module {path}")
         module = importlib.util.module_from_spec(spec)
         sys.modules[name] = module
         spec.loader.exec_module(module)

@@ -1,9 +1,8 @@
 """Energy, Hamiltonian, conserved quantities and constraint forces along a trajectory.
 
 Every quantity is the engine's own expression (E = T + U, h = sum p q_dot - L,
-each conserved quantity, det M, and the derivation JSON's constraint forces,
-whose "sympy" strings are read back with the safe parser), printed as one
-vectorised function over all samples.  The drift of each quantity the engine
+each conserved quantity, det M, and the derivation's constraint forces, as
+SymPy expressions), printed as one vectorised function over all samples.  The drift of each quantity the engine
 calls conserved is measured, and warnings are raised where the numbers say
 something the reader should know: a conserved quantity that drifted, a path
 that passes close to a singular point of the coordinates (det M -> 0), a
@@ -13,14 +12,13 @@ string or surface force that would have to pull the wrong way.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 import sympy as sp
 
-from app.engine.errors import DerivationError
-from app.engine.parse import parse_expression
+from app.engine.constraints import ConstraintForce
 from app.numerics import jit
 from app.numerics.generate import Names, observables_source
 from app.numerics.system import NumericSystem
@@ -33,8 +31,7 @@ SINGULAR_RATIO = 1e-6  # det M falling below this fraction of its value at the s
 class Observables:
     system: NumericSystem
     labels: list[str]  # "energy", "hamiltonian", "det", "T", "U", "conserved:<name>", "force:<i>"
-    forces: list[dict[str, Any]]
-    skipped: list[str] = field(default_factory=list)
+    forces: tuple[ConstraintForce, ...]  # force:<i> is the i-th
     function: Any = None
 
     def evaluate(self, t: np.ndarray, y: np.ndarray, k: np.ndarray) -> dict[str, np.ndarray]:
@@ -44,7 +41,7 @@ class Observables:
         return dict(zip(self.labels, values, strict=True))
 
 
-def build(system: NumericSystem, constraint_forces: Sequence[dict[str, Any]] = ()) -> Observables:
+def build(system: NumericSystem, constraint_forces: Sequence[ConstraintForce] = ()) -> Observables:
     d = system.derivation
     en = d.energetics
     exprs: list[sp.Expr] = [en.energy, en.hamiltonian]
@@ -57,21 +54,13 @@ def build(system: NumericSystem, constraint_forces: Sequence[dict[str, Any]] = (
         # the quantity, and the sum of its terms' sizes: the scale its drift is measured against
         exprs += [c.expr, sum((sp.Abs(term) for term in sp.Add.make_args(c.expr)), sp.Integer(0))]
         labels += [f"conserved:{c.name}", f"scale:{c.name}"]
-    forces, skipped = [], []
-    namespace = d.table.namespace()
-    for i, entry in enumerate(constraint_forces):
-        name = str(entry.get("name", f"force {i + 1}"))
-        try:
-            expr = parse_expression(str(entry.get("sympy", "")), namespace)
-        except DerivationError as exc:
-            skipped.append(f"constraint force {name!r} not evaluated: {exc}")
-            continue
-        exprs.append(expr)
-        labels.append(f"force:{len(forces)}")
-        forces.append({"name": name, "slack_when_negative": bool(entry.get("slack_when_negative", False))})
+    for i, f in enumerate(constraint_forces):
+        # the force along grad g on its particle, a function of q, q_dot, t and the parameters
+        exprs.append(f.force)
+        labels.append(f"force:{i}")
     source = observables_source(Names.of(d), exprs)
     function = jit.python_functions({"observe": source})["observe"]
-    return Observables(system, labels, forces, skipped, function)
+    return Observables(system, labels, tuple(constraint_forces), function)
 
 
 def _drift(values: np.ndarray) -> float:
@@ -81,7 +70,7 @@ def _drift(values: np.ndarray) -> float:
 
 def summarize(obs: Observables, t: np.ndarray, values: dict[str, np.ndarray], rtol: float) -> dict[str, Any]:
     """Drifts and warnings; the per-sample series stay in ``values``."""
-    warnings = list(obs.skipped)
+    warnings: list[str] = []
     drifts: dict[str, dict[str, float]] = {}
     d = obs.system.derivation
     for c in d.energetics.conserved:
@@ -109,10 +98,10 @@ def summarize(obs: Observables, t: np.ndarray, values: dict[str, np.ndarray], rt
             )
     for i, force in enumerate(obs.forces):
         series = values[f"force:{i}"]
-        if force["slack_when_negative"] and series.size and np.nanmin(series) < 0:
+        if force.constraint.slack_when_negative and series.size and np.nanmin(series) < 0:
             at = float(t[int(np.argmax(series < 0))])
             warnings.append(
-                f"{force['name']} becomes negative at t = {at:.4g} s: a string or surface cannot pull that way, "
+                f"{force.constraint.name} becomes negative at t = {at:.4g} s: a string or surface cannot pull that way, "
                 "so the real motion would leave the constraint there (the simulation keeps it)"
             )
     return {

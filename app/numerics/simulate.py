@@ -248,6 +248,8 @@ def estimate_error(
     """Run the reference (see ``estimate``) in what is left of the budget and compare."""
     if isinstance(method, FixedStep):
         ref_name, ref_problem, factor = method.name, problem, 1.0 / (1.0 - 2.0**-method.order)
+        # a fixed-step run records its substeps and step size
+        assert trajectory.substeps is not None and trajectory.step_size is not None
         options = {"substeps": 2 * trajectory.substeps}
         label = (
             f"{method.name} with half the step (h = {trajectory.step_size / 2:.3g} s), Richardson factor {factor:.3g}"

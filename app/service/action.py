@@ -21,21 +21,15 @@ from typing import Any
 import numpy as np
 
 from app.engine.derive import Derivation
+from app.limits import DEFAULT_T_END
 from app.numerics.action import K_SHAPES, SHAPES, SHOWN, action_of, action_terms
 from app.numerics.action_relax import find_path
 from app.numerics.errors import SimulationError
 from app.numerics.simulate import simulate
 from app.service.cache import Recent
-from app.service.simulation import (
-    COMPILED,
-    DEFAULT_T_END,
-    GATES,
-    Gates,
-    _check_number,
-    _slot,
-    initial_state,
-    parameter_vector,
-)
+from app.service.compiled import COMPILED
+from app.service.gates import GATES, Gates, slot
+from app.service.simulate_request import check_number, initial_state, parameter_vector
 
 EPSILONS_MAX = 101  # varied paths per request
 K_MAX = 50  # the highest sine shape k offered
@@ -60,7 +54,6 @@ def action_of_derivation(
     key: str | None = None,
     defaults: Mapping[str, float] | None = None,
     span: float = DEFAULT_T_END,
-    constraint_forces: Sequence[dict[str, Any]] = (),
     gates: Gates = GATES,
 ) -> dict[str, Any]:
     """S(ε) of the varied paths of one coordinate, and what the second variation says; refusals raise SimulationError."""
@@ -75,7 +68,7 @@ def action_of_derivation(
     if isinstance(k, bool) or not isinstance(k, int) or not 1 <= k <= K_MAX:
         raise SimulationError(f"k must be a whole number from 1 to {K_MAX}", "k")
     limit = T_SPAN * span
-    T = _check_number(t_end, "t_end")
+    T = check_number(t_end, "t_end")
     if T <= 0:
         raise SimulationError(f"t_end must be positive (the path runs from 0 to t_end); got {T:g}", "t_end")
     if T > limit:
@@ -85,11 +78,11 @@ def action_of_derivation(
         )
     if len(epsilons) > EPSILONS_MAX:
         raise SimulationError(f"too many epsilons ({len(epsilons)}); at most {EPSILONS_MAX} per request", "epsilons")
-    eps = [_check_number(e, f"epsilons.{i}") for i, e in enumerate(epsilons)]
+    eps = [check_number(e, f"epsilons.{i}") for i, e in enumerate(epsilons)]
     kv = parameter_vector(d, parameters or {})
     y0 = initial_state(d, initial or {}, defaults or {})
-    system, _ = COMPILED.get(key, d, constraint_forces)
-    with _slot(gates.slots, "too many simulations are running at once; try again in a few seconds"):
+    system, _ = COMPILED.get(key, d)
+    with slot(gates.slots, "too many simulations are running at once; try again in a few seconds"):
         result = action_of(
             system, kv, y0, T, names.index(coordinate), k, eps, wait_for_compile=not gates.answer_while_compiling
         )
@@ -139,7 +132,7 @@ def _ends(d: Derivation, given: Mapping[str, float] | None, fallback: np.ndarray
         raise SimulationError(
             f"unknown coordinate {unknown[0][:40]!r} in {where}; choose among {', '.join(names)}", where
         )
-    return np.array([_check_number(given.get(q, fallback[i]), f"{where}.{q}") for i, q in enumerate(names)])
+    return np.array([check_number(given.get(q, fallback[i]), f"{where}.{q}") for i, q in enumerate(names)])
 
 
 def relax_of_derivation(
@@ -155,23 +148,22 @@ def relax_of_derivation(
     key: str | None = None,
     defaults: Mapping[str, float] | None = None,
     span: float = DEFAULT_T_END,
-    constraint_forces: Sequence[dict[str, Any]] = (),
     gates: Gates = GATES,
 ) -> dict[str, Any]:
     """The path between two fixed ends that makes the discrete action stationary, beside the shooting solution.
 
     The ends default to those of the true path from ``initial``; the trial path to the straight line."""
     names = list(d.table.names)
-    T = _check_number(t_end, "t_end")
+    T = check_number(t_end, "t_end")
     if not 0 < T <= T_SPAN * span:
         raise SimulationError(f"t_end must be in (0, {T_SPAN * span:g}] s; got {T:g}", "t_end")
     if isinstance(steps, bool) or not isinstance(steps, int) or not 4 <= steps <= STEPS_MAX:
         raise SimulationError(f"steps must be a whole number from 4 to {STEPS_MAX}", "steps")
     kv = parameter_vector(d, parameters or {})
-    system, _ = COMPILED.get(key, d, constraint_forces)
+    system, _ = COMPILED.get(key, d)
     terms = action_terms(system)
     n = system.n
-    with _slot(gates.slots, "too many simulations are running at once; try again in a few seconds"):
+    with slot(gates.slots, "too many simulations are running at once; try again in a few seconds"):
         if start is None or end is None:
             y0 = initial_state(d, initial or {}, defaults or {})
             run = simulate(system, kv, y0, T, 2, rtol=1e-12, atol=1e-14, estimate=False).trajectory
@@ -192,7 +184,7 @@ def relax_of_derivation(
                 raise SimulationError(
                     f"trial.{q} must hold steps + 1 = {steps + 1} values (even times 0 … t_end)", "trial"
                 )
-            path[names.index(q)] = [_check_number(v, f"trial.{q}") for v in values]
+            path[names.index(q)] = [check_number(v, f"trial.{q}") for v in values]
         found = find_path(system, terms, kv, q0, q1, T, path)
     frames = found.coarse.iterations
     chosen = sorted({round(i) for i in np.linspace(0, len(frames) - 1, min(FRAMES, len(frames)))})
@@ -221,14 +213,10 @@ def relax_of_derivation(
 
 def _of_scene(compute: Callable[..., dict[str, Any]], scene_id: str, gates: Gates, options: dict[str, Any]):
     """``compute`` (the action, or a relaxed path) on a chapter scene: its derivation, defaults and run length."""
-    from app.service.derivations import derivation, derivation_document, scene
+    from app.service.derivations import derivation, scene
 
     s = scene(scene_id)
-    forces = derivation_document(scene_id).get("constraint_forces") or []
-    return compute(
-        derivation(scene_id), key=scene_id, defaults=s.initial, span=s.t_end, constraint_forces=forces, gates=gates,
-        **options,
-    )  # fmt: skip
+    return compute(derivation(scene_id), key=scene_id, defaults=s.initial, span=s.t_end, gates=gates, **options)
 
 
 def _of_user(compute: Callable[..., dict[str, Any]], user: Any, options: dict[str, Any]) -> bytes:

@@ -8,16 +8,17 @@ so an export can never do more than a derivation could.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
 from app.engine.derive import Derivation
+from app.limits import DEFAULT_T_END
 from app.service import derivations
 from app.service.cache import Recent
 from app.service.export import filename, render
 from app.service.export.source import FORMATS, scene_source, system_source
-from app.service.simulation import DEFAULT_T_END, initial_state
+from app.service.simulate_request import initial_state
 
 
 @dataclass(frozen=True)
@@ -36,16 +37,21 @@ def _check_format(fmt: str) -> str:
 CACHED_EXPORTS = 64  # the size of the app's ``Recent`` of exports (app/service/answers.py)
 
 
-def scene_export(scene_id: str, fmt: str, remembered: Recent | None = None) -> Exported:
+def scene_export(
+    scene_id: str, fmt: str, printed: Callable[[str], dict[str, Any]], remembered: Recent | None = None
+) -> Exported:
     """A scene's derivation as a file (run in a thread: the first call may derive), through ``remembered``
-    (the app's recent exports) when given."""
+    (the app's recent exports) when given.
+
+    An export prints the derivation's printed document (its LaTeX, its steps) again in another format;
+    ``printed`` gives a scene's document (the web layer's ``derivation_document``)."""
     _check_format(fmt)
 
     def make() -> Exported:
         scene = derivations.scene(scene_id)
         d = derivations.derivation(scene_id)
         y0 = initial_state(d, {}, scene.initial)
-        source = scene_source(scene, d, derivations.derivation_document(scene_id), tuple(y0.tolist()))
+        source = scene_source(scene, d, printed(scene_id), tuple(y0.tolist()))
         return Exported(render(source, fmt).encode(), filename(source, fmt), FORMATS[fmt][0])
 
     return make() if remembered is None else remembered.get((scene_id, fmt), make)

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import json
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from typing import Any
 
 from app.engine.derive import Derivation
@@ -26,15 +26,9 @@ from app.numerics import limits
 from app.numerics.errors import SimulationError
 from app.numerics.poincare import hamiltonian, section
 from app.service.cache import Recent
-from app.service.simulation import (
-    COMPILED,
-    GATES,
-    Gates,
-    _check_number,
-    _setting,
-    initial_state,
-    parameter_vector,
-)
+from app.service.compiled import COMPILED
+from app.service.gates import GATES, Gates
+from app.service.simulate_request import check_number, initial_state, parameter_vector, setting
 
 COUNT_MAX = 12  # orbits per section
 T_END_MAX = 2_000.0  # seconds of simulated time per orbit
@@ -54,7 +48,6 @@ def section_of_derivation(
     t_end: float = DEFAULT_T_END,
     key: str | None = None,
     defaults: Mapping[str, float] | None = None,
-    constraint_forces: Sequence[dict[str, Any]] = (),
     gates: Gates = GATES,
 ) -> dict[str, Any]:
     """The section q_coordinate = value of orbits with h = energy (or h at ``initial``); refusals raise SimulationError."""
@@ -66,15 +59,15 @@ def section_of_derivation(
         raise SimulationError(f"unknown coordinate {coordinate[:40]!r}; choose one of {', '.join(names)}", "coordinate")
     if direction not in (1, -1):
         raise SimulationError("direction must be 1 (crossing upward) or -1 (downward)", "direction")
-    value = _check_number(value, "value")
-    count = int(_setting(count, DEFAULT_COUNT, 1, COUNT_MAX, "count"))
-    t_end = _setting(t_end, DEFAULT_T_END, 1e-6, T_END_MAX, "t_end")
+    value = check_number(value, "value")
+    count = int(setting(count, DEFAULT_COUNT, 1, COUNT_MAX, "count"))
+    t_end = setting(t_end, DEFAULT_T_END, 1e-6, T_END_MAX, "t_end")
     k = parameter_vector(d, parameters or {})
-    system, observables = COMPILED.get(key, d, constraint_forces)
+    system, observables = COMPILED.get(key, d)
     if energy is None:
         y0 = initial_state(d, initial or {}, defaults or {})
         energy = float(hamiltonian(observables, y0, k)[0])
-    energy = _check_number(energy, "energy")
+    energy = check_number(energy, "energy")
     if not gates.slots.acquire(timeout=limits.WALL_SECONDS):
         raise OverCapacity("too many simulations are running at once; try again in a few seconds", 2)
     start = time.perf_counter()
@@ -117,13 +110,10 @@ def section_of_derivation(
 
 def section_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict[str, Any]:
     """A scene's Poincaré section; the energy defaults to h at the scene's initial state."""
-    from app.service.derivations import derivation, derivation_document, scene
+    from app.service.derivations import derivation, scene
 
     s = scene(scene_id)
-    forces = derivation_document(scene_id).get("constraint_forces") or []
-    return section_of_derivation(
-        derivation(scene_id), key=scene_id, defaults=s.initial, constraint_forces=forces, gates=gates, **options
-    )
+    return section_of_derivation(derivation(scene_id), key=scene_id, defaults=s.initial, gates=gates, **options)
 
 
 CACHED_SECTIONS = 32  # the size of the app's ``Recent`` of sections (app/service/answers.py)

@@ -22,7 +22,8 @@ from collections.abc import Sequence
 from typing import Any
 
 from app.engine.names import unicode
-from app.viz.exprtree import document_tree, evaluate
+from app.engine.trees import Tree
+from app.viz.exprtree import document_tree, evaluate, leaves
 
 DECADE = 10.0  # the useful range reaches this factor either side of a positive default
 LOG_SPAN = 50.0  # a useful range wider than this factor moves on a log scale
@@ -65,14 +66,29 @@ def _stable_modes(doc: dict[str, Any]) -> list[dict[str, Any]]:
     return [e for e in doc.get("normal_modes") or [] if e.get("kind") == "stable" and e.get("modes")]
 
 
+def drag_coefficient(tree: Tree | None, q: str) -> str | None:
+    """c when the tree is the drag −c q̇ (c a single name), else None."""
+    if not (isinstance(tree, list) and len(tree) == 2 and tree[0] == "neg"):
+        return None
+    product = tree[1]
+    if not (isinstance(product, list) and len(product) == 3 and product[0] == "*"):
+        return None
+    factors = product[1:]
+    rate = f"{q}_dot"
+    if rate not in factors:
+        return None
+    (c,) = [f for f in factors if f != rate] or [None]
+    return c if isinstance(c, str) else None
+
+
 def damping_marks(doc: dict[str, Any]) -> dict[str, list[dict[str, Any]]]:
     """Critical damping of each drag force Q_q = −c q̇ whose c is a single parameter."""
     marks: dict[str, list[dict[str, Any]]] = {}
     stable = _stable_modes(doc)
     names = doc["coordinates"]
     for q, force in (doc.get("generalized_forces") or {}).items():
-        match = re.fullmatch(rf"-(\w+)\*{re.escape(q)}_dot", force.get("sympy", "").replace(" ", ""))
-        if not match or match.group(1) not in doc["parameters"] or not stable:
+        c = drag_coefficient(document_tree(force), q)
+        if c is None or c not in doc["parameters"] or not stable:
             continue
         e = stable[0]
         k = names.index(q)
@@ -81,7 +97,7 @@ def damping_marks(doc: dict[str, Any]) -> dict[str, list[dict[str, Any]]]:
         w2 = e["modes"][0]["omega_squared"] if len(e["modes"]) == 1 else None
         if mass and w2 and w2 > 0:
             value = 2 * mass * math.sqrt(w2)
-            marks.setdefault(match.group(1), []).append({"value": value, "label": "critical damping"})
+            marks.setdefault(c, []).append({"value": value, "label": "critical damping"})
     return marks
 
 
@@ -89,15 +105,16 @@ def stability_marks(doc: dict[str, Any], ranges: dict[str, tuple[float, float]])
     """Parameter values at which an equilibrium of the reduction changes stability (its ω² changes sign)."""
     red = doc.get("effective_potential") or {}
     marks: dict[str, list[dict[str, Any]]] = {}
-    coordinate = red.get("coordinate")
+    coordinate = str(red.get("coordinate") or "")
     for e in red.get("equilibria") or []:
         w2_pair = e.get("omega_squared") or {}
         w2, where = w2_pair.get("sympy"), (e.get("position") or {}).get("sympy")
         if not w2 or where is None:
             continue
+        tree = document_tree(w2_pair)
         for p, (lo, hi) in ranges.items():
-            if not re.search(rf"\b{re.escape(p)}\b", w2):
-                continue
+            if tree is None or p not in leaves(tree):
+                continue  # omega^2 does not depend on this parameter
             grid = _grid(lo, hi)
             signs = [_value(w2_pair, doc, _env(doc, **{p: x})) for x in grid]
             for a, b, fa, fb in zip(grid, grid[1:], signs, signs[1:], strict=False):

@@ -368,7 +368,9 @@ def mechanism(
     if family is None:
         family = _inferred(particles, coordinates, 3 if three_d else 2, defaults or {}, proven, potential)
     # a particle without a label is "mass k" (links refer to points by label)
-    own = list(family.points) or [(name or f"mass {i + 1}", pos) for i, (name, pos) in enumerate(particles)]
+    own: list[tuple[str, Sequence[str]]] = list(family.points) or [
+        (name or f"mass {i + 1}", pos) for i, (name, pos) in enumerate(particles)
+    ]
     spec = MechanismSpec(
         dim=family.dim,
         axis_names=[family.axis_names[i] for i in family.axes],

@@ -67,4 +67,4 @@ def scene_export(
     scene_id: str, fmt: Annotated[ExportFormat, Query(alias="format", description=FORMAT_HELP)], answers: AnswersDep
 ) -> Response:
     # a plain `def`: the first export of a scene may derive it, in FastAPI's thread pool
-    return download(exporting.scene_export(scene_id, fmt, answers.exports))
+    return download(exporting.scene_export(scene_id, fmt, derivations.derivation_document, answers.exports))

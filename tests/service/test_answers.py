@@ -5,6 +5,7 @@ import pytest
 
 from app.service import exporting
 from app.service.answers import Answers
+from app.service.derivations import derivation_document
 from app.service.services import Services
 from app.settings import Settings
 
@@ -14,9 +15,11 @@ def test_each_app_remembers_its_own_answers(tmp_path):
     first, second = Services.start(config), Services.start(config)
     try:
         assert first.answers is not second.answers
-        exported = exporting.scene_export("simple-pendulum", "py", first.answers.exports)
-        assert exporting.scene_export("simple-pendulum", "py", first.answers.exports) is exported  # remembered
-        again = exporting.scene_export("simple-pendulum", "py", second.answers.exports)
+        exported = exporting.scene_export("simple-pendulum", "py", derivation_document, first.answers.exports)
+        assert (
+            exporting.scene_export("simple-pendulum", "py", derivation_document, first.answers.exports) is exported
+        )  # remembered
+        again = exporting.scene_export("simple-pendulum", "py", derivation_document, second.answers.exports)
         assert again is not exported and again == exported  # the other app made its own, the same file
     finally:
         first.stop()

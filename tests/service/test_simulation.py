@@ -9,7 +9,7 @@ import pytest
 
 from app.numerics import limits
 from app.numerics.errors import SimulationError, TooMuchWork
-from app.service import simulation, work_precision
+from app.service import rounding, simulation, work_precision
 from app.service.derivations import derivation
 from app.service.encoding import dumps
 from app.web.errors import problem
@@ -95,13 +95,21 @@ def test_user_systems_go_through_the_same_function():
     assert doc["stats"]["error_estimate"] is not None
 
 
-def test_constraint_force_that_does_not_parse_is_skipped_with_a_warning():
-    forces = [{"name": "bad", "sympy": "__import__('os')", "slack_when_negative": False}]
-    doc = simulation.simulate_derivation(
-        derivation("simple-pendulum"), request(t_end=1.0), constraint_forces=forces, scene_id=None
-    )
-    assert doc["constraint_forces"] == {}
-    assert any("constraint force 'bad' not evaluated" in w for w in doc["stats"]["warnings"])
+def test_constraint_forces_are_the_derivations_typed_members():
+    from app.engine.derive import value_or
+
+    d = derivation("simple-pendulum")
+    (force,) = value_or(d.constraint_forces, ())
+    doc = simulation.simulate_derivation(d, request(t_end=1.0), scene_id=None)
+    assert list(doc["constraint_forces"]) == [force.constraint.name]
+    # the series is the engine's expression itself, evaluated along the run (no text read back)
+    values = {s.name: s for s in (*d.table.q, *d.table.qd, *d.table.params)}
+    at_start = {values[n]: doc["state"][n][0] for n in doc["state"]}
+    at_start.update({s: p.default for s, p in zip(d.table.params, d.system.parameters, strict=True)})
+    assert doc["constraint_forces"][force.constraint.name][0] == pytest.approx(float(force.force.xreplace(at_start)))
+    # none asked for, none observed
+    none = simulation.simulate_derivation(d, request(t_end=1.0), constraint_forces=(), scene_id=None)
+    assert none["constraint_forces"] == {}
 
 
 def test_work_precision_data():
@@ -138,7 +146,7 @@ def test_display_rounding_keeps_seven_significant_digits():
     import numpy as np
 
     x = np.array([0.0, -1.23456789e-12, 3.14159265358979, 98765.4321987, -7.0e15 / 3.0, np.nan, np.inf])
-    r = simulation.display_rounded(x)
+    r = rounding.display_rounded(x)
     expected = [0.0, -1.234568e-12, 3.141593, 98765.43, -2.333333e15]
     assert r[:5].tolist() == expected and [repr(v) for v in r[:5].tolist()] == [repr(v) for v in expected]
     assert np.isnan(r[5]) and r[6] == np.inf
@@ -152,7 +160,7 @@ def test_display_rounding_prints_as_seven_digits_at_every_scale():
     x = rng.choice([-1.0, 1.0], magnitudes.size) * magnitudes
     decades = 10.0 ** np.arange(-250.0, 251.0)  # the edges of the exponent's two candidates, and their neighbours
     x = np.concatenate([x, decades, np.nextafter(decades, 0.0), np.nextafter(decades, np.inf), [0.5, 1.0, 9.9999999]])
-    r = simulation.display_rounded(x)
+    r = rounding.display_rounded(x)
     # where 10^|s| is not exact (|s| > 22) the last bit may differ from the literal's
     assert np.allclose(r, [float(f"{v:.7g}") for v in x], rtol=4e-16, atol=0.0)
     exact = (np.abs(x) >= 1e-16) & (np.abs(x) < 1e22)

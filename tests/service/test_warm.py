@@ -7,7 +7,8 @@ import threading
 from pathlib import Path
 
 from app.numerics.methods import NONSTIFF
-from app.service import simulation
+from app.service import compiled as compiled_systems
+from app.service import gates, simulation, warm_kernels
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -40,14 +41,14 @@ class FakeMethod:
 
 def fake_methods(monkeypatch, log):
     methods = {NONSTIFF: FakeMethod("first", log), "other": FakeMethod("other", log)}
-    monkeypatch.setattr(simulation, "METHODS", methods)
-    monkeypatch.setattr(simulation, "SCENES", {k: simulation.SCENES[k] for k in ("simple-pendulum", "pulley")})
+    monkeypatch.setattr(warm_kernels, "METHODS", methods)
+    monkeypatch.setattr(warm_kernels, "SCENES", {k: warm_kernels.SCENES[k] for k in ("simple-pendulum", "pulley")})
 
 
 def test_warm_up_goes_scene_by_scene_with_the_first_method_and_gives_way_between_steps(monkeypatch):
     log: list[str] = []
     fake_methods(monkeypatch, log)
-    spent = simulation.warm_all(give_way=lambda: log.append("give way"))
+    spent = warm_kernels.warm_all(give_way=lambda: log.append("give way"))
     assert log == [
         "give way",  # before the simple pendulum's system
         "give way",
@@ -66,11 +67,11 @@ def test_warm_up_goes_scene_by_scene_with_the_first_method_and_gives_way_between
 def test_the_warm_up_waits_while_a_simulation_is_being_served(monkeypatch):
     log: list[str] = []
     fake_methods(monkeypatch, log)
-    simulation.warm_all()  # the systems are built: what is left to do is preparing the methods
+    warm_kernels.warm_all()  # the systems are built: what is left to do is preparing the methods
     log.clear()
-    gate = simulation.IN_FLIGHT
+    gate = gates.IN_FLIGHT
     with gate.serving():
-        warming = threading.Thread(target=simulation.warm_all, args=(lambda: gate.wait_quiet(30.0),))
+        warming = threading.Thread(target=warm_kernels.warm_all, args=(lambda: gate.wait_quiet(30.0),))
         warming.start()
         warming.join(timeout=0.5)
         assert warming.is_alive() and log == []  # waiting for the request to finish
@@ -84,21 +85,21 @@ def test_a_scene_simulation_counts_as_in_flight(monkeypatch):
     original = simulation.simulate_derivation
 
     def spy(*args, **kwargs):
-        seen.append(simulation.IN_FLIGHT.wait_quiet(0.0))
+        seen.append(gates.IN_FLIGHT.wait_quiet(0.0))
         return original(*args, **kwargs)
 
     monkeypatch.setattr(simulation, "simulate_derivation", spy)
     request = {"parameters": {}, "initial": {}, "t_end": 0.5, "method": "auto", "rtol": None, "atol": None}
     simulation.simulate_scene("simple-pendulum", type("R", (), {**request, "samples": 10})())
-    assert seen == [False] and simulation.IN_FLIGHT.wait_quiet(0.0)
+    assert seen == [False] and gates.IN_FLIGHT.wait_quiet(0.0)
 
 
 def test_a_scene_does_not_wait_while_another_scene_is_being_built(monkeypatch):
     from app.service.derivations import derivation
 
-    compiled = simulation._Compiled()
+    compiled = compiled_systems.Compiled()
     release = threading.Event()
-    original = simulation.numeric_system
+    original = compiled_systems.numeric_system
     slow, quick = derivation("simple-pendulum"), derivation("pulley")
 
     def numeric_system(d, sources=None):
@@ -106,7 +107,7 @@ def test_a_scene_does_not_wait_while_another_scene_is_being_built(monkeypatch):
             assert release.wait(30.0)
         return original(d, sources)
 
-    monkeypatch.setattr(simulation, "numeric_system", numeric_system)
+    monkeypatch.setattr(compiled_systems, "numeric_system", numeric_system)
     building = threading.Thread(target=compiled.get, args=("simple-pendulum", slow, []))
     building.start()
     try:

@@ -13,6 +13,7 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -106,7 +107,7 @@ class Method:
         trajectory.wall_time_s = time.perf_counter() - start
         return trajectory
 
-    def _run(self, problem: Problem, **options) -> Trajectory:
+    def _run(self, problem: Problem, **options: Any) -> Trajectory:
         raise NotImplementedError
 
     def too_much(self, problem: Problem, what: str) -> TooMuchWork:

@@ -6,6 +6,7 @@ driver serves them; a method names only its kernel."""
 from __future__ import annotations
 
 import importlib
+from typing import Any
 
 import numpy as np
 
@@ -18,7 +19,9 @@ class CompiledExplicit(Method):
     family = "explicit"
     compiled = True
 
-    def _run(self, problem: Problem, stop_on_stiff: bool = False) -> Trajectory:
+    def _run(self, problem: Problem, **options: Any) -> Trajectory:
+        # stop_on_stiff: give up at the first sign of stiffness (auto then tries an implicit method)
+        stop_on_stiff = bool(options.get("stop_on_stiff", False))
         kernel = importlib.import_module(self.kernel_module)
         rhs = problem.system.bound("rhs")
         y = problem.y0.astype(float).copy()

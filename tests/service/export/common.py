@@ -9,7 +9,7 @@ from typing import Any
 from app.engine.contract import derivation_json
 from app.engine.derive import Derivation, derive
 from app.scenes import SCENES
-from app.service import exporting, simulation, user_jobs
+from app.service import derivations, exporting, simulation, user_jobs
 from app.service.user_checks import checked
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING
 from app.web.schemas_user import SystemSpec
@@ -59,7 +59,7 @@ def user_derivation(name: str) -> Derivation:
 def exported(case: str, fmt: str) -> str:
     """The file for a scene (as the scene route serves it) or a user system (as the worker job makes it)."""
     if case in SCENES:
-        return exporting.scene_export(case, fmt).content.decode()
+        return exporting.scene_export(case, fmt, derivations.derivation_document).content.decode()
     _, initial, t_end = USER_SYSTEMS[case]
     d = user_derivation(case)
     return exporting.system_export(d, derivation_json(d), fmt, initial, t_end)["content"]

@@ -1,0 +1,95 @@
+"""Numeric systems (right-hand sides and observables) compiled once per scene or user system, per process."""
+
+from __future__ import annotations
+
+import hashlib
+import threading
+import time
+from collections import OrderedDict
+from collections.abc import Sequence
+
+import sympy as sp
+
+from app.engine.constraints import ConstraintForce
+from app.engine.derive import Derivation, value_or
+from app.numerics.events import EventFunction, compile_events
+from app.numerics.observables import Observables, build
+from app.numerics.system import NumericSystem, generated_sources, numeric_system
+from app.scenes import Scene
+from app.service.cache import JsonCache, source_fingerprint
+
+
+class Compiled:
+    """Numeric systems per scene id (or per generated source for user systems), per process.
+
+    One lock per key: a request for one scene never waits while another scene's system is built
+    (by the warm-up thread or another request); two requests for the same scene build it once."""
+
+    def __init__(self, size: int = 32):
+        self.size = size
+        self.items: OrderedDict[str, tuple[NumericSystem, Observables]] = OrderedDict()
+        self.lock = threading.Lock()  # guards ``items`` and ``_building``, held only briefly
+        self._building: dict[str, threading.Lock] = {}
+        self.build_seconds: dict[str, float] = {}
+
+    def _cached(self, key: str) -> tuple[NumericSystem, Observables] | None:
+        with self.lock:
+            if key in self.items:
+                self.items.move_to_end(key)
+                return self.items[key]
+            return None
+
+    def get(
+        self, key: str | None, d: Derivation, forces: Sequence[ConstraintForce] | None = None
+    ) -> tuple[NumericSystem, Observables]:
+        """The numeric system and its observables; ``forces``: the constraint forces observed (by default the
+        derivation's own, a typed member computed with the derivation)."""
+        forces = value_or(d.constraint_forces, ()) if forces is None else tuple(forces)
+        # a user system's key is its declaration (and its constraint forces), known before any code
+        # generation: a warm system is found here without printing a line of its source again
+        scene = key is not None
+        found_key = key if key is not None else system_key(d, forces)
+        found = self._cached(found_key)
+        if found is not None:
+            return found
+        with self.lock:
+            building = self._building.setdefault(found_key, threading.Lock())
+        with building:
+            return self._cached(found_key) or self._build(found_key, d, forces, scene)
+
+    def _build(
+        self, key: str, d: Derivation, forces: Sequence[ConstraintForce], scene: bool
+    ) -> tuple[NumericSystem, Observables]:
+        start = time.perf_counter()
+        # a scene's generated sources come from the disk cache (keyed by the engine's, scenes' and
+        # numerics' source), so a new worker skips the code generation
+        sources = _SOURCES.get(key, lambda: generated_sources(d)) if scene else None
+        system = numeric_system(d, sources)
+        entry = (system, build(system, forces))
+        with self.lock:
+            self.build_seconds[key] = time.perf_counter() - start
+            self.items[key] = entry
+            while len(self.items) > self.size:
+                self.items.popitem(last=False)
+        return entry
+
+
+def system_key(d: Derivation, forces: Sequence[ConstraintForce]) -> str:
+    """A user system's cache key: a digest of its declaration (the parsed System) and its constraint forces."""
+    text = repr(d.system) + "".join(f"|{f.constraint!r}={sp.srepr(f.force)}" for f in forces)
+    return "system:" + hashlib.sha256(text.encode()).hexdigest()
+
+
+_EVENTS: dict[str, list[EventFunction]] = {}  # per scene id: its terminal events, compiled once per process
+
+
+def scene_events(scene: Scene | None, system: NumericSystem) -> list[EventFunction]:
+    if scene is None or not scene.events:
+        return []
+    if scene.id not in _EVENTS:
+        _EVENTS[scene.id] = compile_events(system, scene.events)
+    return _EVENTS[scene.id]
+
+
+_SOURCES = JsonCache("generated-sources", source_fingerprint("engine", "scenes", "numerics"))
+COMPILED = Compiled()

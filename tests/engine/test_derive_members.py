@@ -1,0 +1,89 @@
+"""The derivation's members beyond the equations: typed, computed on first use, kept, bounded, pickled."""
+
+import pickle
+import signal
+
+import sympy as sp
+
+from app.engine import derive as derive_module
+from app.engine.budget import Skipped, time_limit
+from app.engine.constraints import ConstraintForce
+from app.engine.contract import derivation_json
+from app.engine.derive import derive, value_or
+from app.engine.hamilton import Hamilton
+from app.engine.modes import NormalModes
+from app.scenes import SCENES
+
+
+def test_members_are_typed_and_computed_once():
+    d = derive(SCENES["pulley"].system)
+    forces = d.constraint_forces
+    assert isinstance(forces, tuple) and forces and all(isinstance(f, ConstraintForce) for f in forces)
+    assert all(isinstance(f.force, sp.Expr) for f in forces)
+    assert d.constraint_forces is forces  # kept, not computed again
+    assert isinstance(d.hamilton, Hamilton) and d.hamilton is d.hamilton
+    assert d.transformed is None  # the pulley declares no change of coordinates
+    modes = d.normal_modes()
+    assert isinstance(modes, NormalModes) and d.normal_modes({}) is modes
+
+
+def test_normal_modes_are_kept_per_set_of_held_momenta():
+    d = derive(SCENES["spherical-pendulum"].system)
+    one, two = d.normal_modes({"p_phi": 1.0}), d.normal_modes({"p_phi": 2.0})
+    assert isinstance(one, NormalModes) and isinstance(two, NormalModes)
+    assert one is not two and d.normal_modes({"p_phi": 1.0}) is one
+    assert one.equilibria != two.equilibria  # the relative equilibria move with the held momentum
+
+
+def _endless(d):
+    x = sp.Symbol("x")
+    while True:
+        sp.expand((x + 1) ** 40)
+
+
+def test_a_member_past_its_bound_is_skipped_with_its_reason(monkeypatch):
+    monkeypatch.setitem(derive_module.MEMBER_SECONDS, "constraint_forces", 0.2)
+    monkeypatch.setattr("app.engine.constraints.constraint_forces", _endless)
+    d = derive(SCENES["pulley"].system)
+    skipped = d.constraint_forces
+    assert isinstance(skipped, Skipped) and skipped.member == "constraint_forces"
+    assert "bound" in skipped.reason
+    assert d.constraint_forces is skipped  # its own bound would run out again: kept
+    assert value_or(d.constraint_forces, ()) == ()
+    # the document prints the reason in the member's place
+    doc = derivation_json(d, beyond=False)
+    assert doc["constraint_forces"] == []
+    assert {"member": "constraint_forces", "reason": skipped.reason} in doc["skipped"]
+
+
+def test_a_member_skipped_for_want_of_an_enclosing_limits_time_is_tried_again():
+    d = derive(SCENES["pulley"].system)
+    assert signal.getitimer(signal.ITIMER_REAL)[0] == 0
+    with time_limit(0.5):  # less than the member reserve: nothing left for the member
+        skipped = d.constraint_forces
+    assert isinstance(skipped, Skipped) and "used up" in skipped.reason
+    assert isinstance(d.constraint_forces, tuple)  # with time, computed
+
+
+def test_computed_members_survive_pickling():
+    scene = SCENES["pulley"]
+    d = derive(scene.system)
+    derivation_json(d, scene=scene)  # printing computes every member
+    loaded = pickle.loads(pickle.dumps(d, protocol=pickle.HIGHEST_PROTOCOL))
+    assert loaded._members.keys() == d._members.keys()
+    assert [f.force for f in value_or(loaded.constraint_forces, ())] == [f.force for f in value_or(d.constraint_forces, ())]
+    assert isinstance(loaded.hamilton, Hamilton)
+
+
+def test_the_document_prints_the_members():
+    scene = SCENES["pulley"]
+    d = derive(scene.system)
+    doc = derivation_json(d, scene=scene)
+    forces = value_or(d.constraint_forces, ())
+    assert [f["name"] for f in doc["constraint_forces"]] == [f.constraint.name for f in forces]
+    assert [f["sympy"] for f in doc["constraint_forces"]] == [sp.sstr(f.force) for f in forces]
+    ham = d.hamilton
+    assert isinstance(ham, Hamilton)
+    assert doc["hamilton"]["momenta"] == {q: p.name for q, p in zip(d.table.names, ham.momenta, strict=True)}
+    p_dot = [sp.sympify(e["p_dot"]["sympy"], locals=d.table.namespace()) for e in doc["hamilton"]["equations"]]
+    assert all(sp.simplify(a - b) == 0 for a, b in zip(p_dot, ham.p_dot, strict=True))
