@@ -27,14 +27,14 @@ def test_each_app_remembers_its_own_answers(tmp_path):
 
 
 def test_without_an_apps_memory_nothing_is_kept():
-    exported = exporting.scene_export("simple-pendulum", "tex")
-    assert exporting.scene_export("simple-pendulum", "tex") is not exported
+    exported = exporting.scene_export("simple-pendulum", "tex", derivation_document)
+    assert exporting.scene_export("simple-pendulum", "tex", derivation_document) is not exported
 
 
 def test_a_refused_format_is_refused_before_any_memory_is_touched(tmp_path):
     answers = Answers.start(tmp_path)
     with pytest.raises(ValueError, match="unknown export format"):
-        exporting.scene_export("simple-pendulum", "docx", answers.exports)
+        exporting.scene_export("simple-pendulum", "docx", derivation_document, answers.exports)
 
 
 def test_the_disk_caches_are_under_the_folder_given(tmp_path):
