@@ -22,6 +22,7 @@ from starlette.concurrency import run_in_threadpool
 from app.engine.parse import FUNCTIONS
 from app.numerics.methods import CHOICES
 from app.service.cache import BytesCache, source_fingerprint
+from app.service.staged import equations_or_whole
 from app.service.user_checks import InvalidSystem, checked, spec_key
 from app.service.user_jobs import derive_job
 from app.service.user_systems import UserSystems
@@ -30,6 +31,7 @@ from app.web.deps import ClientDep, UserSystemsDep
 from app.web.errors import KINDS, REFUSED, Problem, held, problem
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
 from app.web.playground_form import AXES, FORMS, Form, FormError, form_of, located_error, query_of, read_form, spec_of
+from app.web.playground_stages import STAGE_PARAMETER, first_view, whole_href
 from app.web.schemas import SESSION_COOKIE
 from app.web.templating import templates
 
@@ -156,6 +158,7 @@ QUERY_PARAMETERS = [
     _query_parameter("nn", "Coordinates that are distances (never negative)."),
     _query_parameter("system", "The whole system as JSON in the shape of POST /api/derive (takes precedence)."),
     _query_parameter("new", "Present (any value) for an empty form."),
+    STAGE_PARAMETER,
     SESSION_COOKIE,
 ]
 HTML = {"text/html": {"schema": {"type": "string"}}}
@@ -181,7 +184,7 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
     error: FormError | None = None
     failed: Problem | None = None
     empty = False
-    model = user = None
+    model = user = first = None
     form = form_of(FORCED_SPRING)
     try:
         if len(str(request.url.query)) > MAX_QUERY:
@@ -196,8 +199,14 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
             empty = True  # the page says what to enter
         else:
             user = checked(spec_of(form))
-            doc = json.loads(await users.derive(user, client.key, client.address))
-            model = await run_in_threadpool(model_of, user, doc, CHOICES)
+            if request.query_params.get("stage") == "whole":
+                doc = json.loads(await users.derive(user, client.key, client.address))
+            else:  # the equations first, unless the whole document is ready (the page asks for the rest)
+                doc = await equations_or_whole(users, user, client.key, client.address)
+            if doc.get("stage") == "equations":
+                first = first_view(doc, whole_href(request.url.query))
+            else:
+                model = await run_in_threadpool(model_of, user, doc, CHOICES)
     except FormError as exc:
         error = exc
     except KINDS as exc:
@@ -216,6 +225,7 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
         "submitted": "new" not in request.query_params and bool(request.query_params),
         "model": model,
         "m": model,
+        "first": first,
         "system_json": json.dumps(user.as_json() if user else {}, separators=(",", ":")).replace("<", "\\u003c"),
         "examples": _example_links(),
         "forms": FORMS,
