@@ -6,7 +6,7 @@ import re
 from urllib.parse import urlencode
 
 from app.service.user_checks import checked, spec_key
-from app.web.playground_form import form_of, query_of
+from app.web.playground_form import form_of, query_of, spec_of
 from app.web.playground_stages import first_view, whole_href
 
 TRIPLE = {
@@ -51,7 +51,7 @@ def test_the_page_shows_the_equations_first_then_the_whole_derivation(client, se
     assert 'data-stage="whole"' in whole.text and 'id="simulation"' in whole.text
     assert whole.text.count('<li class="step') >= 8 and "Still working on" not in whole.text
     # once the whole document is cached, the page shows it at once
-    assert services.users.derivations.get(spec_key(checked(TRIPLE))) is not None
+    assert services.users.derivations.get(spec_key(checked(spec_of(form_of(TRIPLE))))) is not None
     assert 'data-stage="whole"' in client.get(_address(TRIPLE)).text
 
 
