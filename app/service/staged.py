@@ -42,7 +42,7 @@ PENDING = (
     ("conserved", "the conserved quantities"),
     ("momenta", "the generalized momenta"),
     ("hamilton", "Hamilton's equations"),
-    ("normal_modes", "the equilibria and normal modes"),
+    ("normal_modes", "the normal modes"),
     ("simulation", "the simulation"),
 )
 

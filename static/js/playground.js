@@ -231,8 +231,8 @@ async function fillIn() {
   // a line in place of "still working on": what was left out is listed under Results, each with its reason
   const done = Object.assign(document.createElement("p"), {
     id: "derive-progress", className: "derive-progress",
-    textContent: left ? `The whole derivation is below. ${left === 1 ? "One part was" : `${left} parts were`} left out within `
-      + "its time bound; the reason is under Results, “Left out”." : "The whole derivation is below.",
+    textContent: "The whole derivation is below." + (left ? ` ${left === 1 ? "One part was" : `${left} parts were`} left out; `
+      + "the reason for each is under Results, “Left out”." : ""),
   });
   done.setAttribute("role", "status");
   next.prepend(done);
