@@ -12,6 +12,7 @@ Only the web layer's routes call this; SymPy runs in the worker pool, never here
 
 from __future__ import annotations
 
+import asyncio
 import json
 from typing import Any
 
@@ -28,6 +29,7 @@ from app.engine.contract import (
 from app.engine.derive import Derivation
 from app.engine.report import Printer, lagrangian
 from app.engine.user_system import UserSystem
+from app.service.encoding import dumps
 from app.service.user_checks import spec_key
 from app.service.user_jobs import derive_checked, engine_budget, guarded
 from app.service.user_systems import UserSystems
@@ -96,3 +98,25 @@ async def equations_or_whole(users: UserSystems, user: UserSystem, client: str, 
         users.derivations, spec_key(user, "equations"), client, address, users.derive_seconds, equations_job, user
     )
     return json.loads(body)
+
+
+# The members of the first stage, which a whole document holds too (an API caller gets the same shape either way).
+FIRST_MEMBERS = ("coordinates", "angles", "symbols", "parameters", "lagrangian", "equations_of_motion",
+                 "accelerations", "mass_matrix", "forcing", "skipped")  # fmt: skip
+
+
+def _from_whole(whole: bytes) -> bytes:
+    """The first stage's members of a whole document (``"stage": "whole"``, nothing pending), as JSON bytes."""
+    document = json.loads(whole)
+    return dumps({"stage": "whole", **{key: document[key] for key in FIRST_MEMBERS}, "pending": []})
+
+
+async def equations_bytes(users: UserSystems, user: UserSystem, client: str, address: str) -> bytes:
+    """POST /api/derive/equations: the first stage as JSON bytes; taken from the whole document when it is cached
+    (then ``stage`` is ``whole`` and ``pending`` empty), decoded and encoded off the event loop."""
+    whole = users.derivations.get(spec_key(user))
+    if whole is not None:
+        return await asyncio.to_thread(_from_whole, whole)
+    return await users.run_job(
+        users.derivations, spec_key(user, "equations"), client, address, users.derive_seconds, equations_job, user
+    )

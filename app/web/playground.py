@@ -6,6 +6,9 @@ derivation has a shareable address (``/playground?q=x&form=energies&T=...``);
 through the same service as POST /api/derive (checks, cache, fair share, worker
 pool: no SymPy here) and renders the derivation with the scene page's markup.
 A refusal is shown next to the field it concerns, with the offending part marked.
+The derivation comes in two stages (app/service/staged.py, app/web/playground_stages.py): unless the
+whole document is ready, the page answers with the equations and accelerations and the page's script
+fetches the same address with ``stage=whole`` for the rest.
 The simulation runs in the browser against POST /api/simulate (static/js/playground.js).
 """
 

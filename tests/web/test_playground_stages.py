@@ -86,3 +86,27 @@ def test_the_first_view_lists_what_is_pending_and_links_to_the_rest():
     assert view["pending"] == "the steps, Hamilton's equations and the normal modes"
     assert view["accelerations"] == ["\\ddot{x} = - \\frac{k x}{m}"] and view["mass_matrix"] is None
     assert view["whole_href"] == "/playground?q=x&T=m&stage=whole#outcome"
+
+
+def test_the_api_answers_the_equations_first_then_the_same_members_from_the_whole_document(client):
+    spec = {**TRIPLE, "parameters": [{**p, "value": 9.79} if p["name"] == "g" else p for p in TRIPLE["parameters"]]}
+    first = client.post("/api/derive/equations", json=spec)
+    assert first.status_code == 200
+    doc = first.json()
+    assert doc["stage"] == "equations" and len(doc["equations_of_motion"]) == 3
+    assert {p["member"] for p in doc["pending"]} >= {"steps", "hamilton", "normal_modes"}
+    # a chain's accelerations stay M⁻¹f: M and f instead, and the note saying why
+    assert doc["accelerations"] == {} and len(doc["mass_matrix"]) == 3 and len(doc["forcing"]) == 3
+    assert [s["member"] for s in doc["skipped"]] == ["accelerations"]
+    whole = client.post("/api/derive", json=spec).json()
+    # the first stage's equations are the whole document's (the same display budget's rows for a chain)
+    assert [e["sympy"] for e in doc["equations_of_motion"]] == [e["sympy"] for e in whole["equations_of_motion"]]
+    again = client.post("/api/derive/equations", json=spec).json()
+    assert again["stage"] == "whole" and again["pending"] == [] and again["skipped"] == whole["skipped"]
+    assert again["equations_of_motion"] == whole["equations_of_motion"]
+
+
+def test_the_api_refuses_the_equations_of_a_bad_system_where_it_is_wrong(client):
+    refused = client.post("/api/derive/equations", json={**SPRING, "potential": "k*x**2/2 + sin("})
+    assert refused.status_code == 422
+    assert refused.json()["loc"] == ["body", "potential"] and "sin(" in refused.json()["part"]
