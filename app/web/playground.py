@@ -17,6 +17,7 @@ from __future__ import annotations
 import json
 import threading
 from typing import Any
+from urllib.parse import urlencode
 
 from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
@@ -129,8 +130,6 @@ _SURROGATE_MESSAGE = (
 
 
 def _example_links() -> list[dict[str, str]]:
-    from urllib.parse import urlencode
-
     return [
         {"title": title, "href": "/playground?" + urlencode(query_of(form_of(spec)), doseq=True)}
         for title, spec in EXAMPLES.items()
@@ -207,7 +206,8 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
             else:  # the equations first, unless the whole document is ready (the page asks for the rest)
                 doc = await equations_or_whole(users, user, client.key, client.address)
             if doc.get("stage") == "equations":
-                first = first_view(doc, whole_href(request.url.query))
+                # the rest is asked for with the form's own query (the default system's page has none)
+                first = first_view(doc, whole_href(urlencode(query_of(form), doseq=True)))
             else:
                 model = await run_in_threadpool(model_of, user, doc, CHOICES)
     except FormError as exc:

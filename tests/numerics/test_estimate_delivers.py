@@ -20,7 +20,7 @@ import pytest
 from app.numerics.estimate import SAFETY, Estimate, above_tolerance
 from app.numerics.methods.base import Trajectory
 from app.numerics.simulate import simulate
-from tests.numerics.extreme_cases import CASES, Case, pendulum_period, run, system_for
+from tests.numerics.extreme_cases import CASES, Case, pendulum_period, run
 
 SAYS_WHY = "times the requested tolerance"
 EXCITED = next(c for c in CASES if c.name == "stiff radial spring k/m = 1e8, fast mode excited")

@@ -110,3 +110,16 @@ def test_the_api_refuses_the_equations_of_a_bad_system_where_it_is_wrong(client)
     refused = client.post("/api/derive/equations", json={**SPRING, "potential": "k*x**2/2 + sin("})
     assert refused.status_code == 422
     assert refused.json()["loc"] == ["body", "potential"] and "sin(" in refused.json()["part"]
+
+
+def test_the_rest_is_asked_for_with_the_forms_own_address(client):
+    """A system given as ?system=JSON (or the default system, with no query at all) is asked for again by the
+    form's fields, so that stage=whole derives the same system."""
+    import json
+
+    spec = {**SPRING, "parameters": [{**p, "value": 4.75} if p["name"] == "k" else p for p in SPRING["parameters"]]}
+    html = client.get("/playground?" + urlencode({"system": json.dumps(spec)})).text
+    href = re.search(r'data-whole-url="([^"]+)"', html)[1].replace("&amp;", "&")
+    assert "system=" not in href and "q=x" in href and "pv=4.75" in href
+    whole = client.get(href.split("#")[0])
+    assert whole.status_code == 200 and 'data-stage="whole"' in whole.text
