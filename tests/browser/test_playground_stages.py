@@ -8,6 +8,8 @@ from urllib.parse import urlencode
 
 import pytest
 
+from tests.browser.test_axe import AXE, violations
+
 pytestmark = pytest.mark.browser
 
 VIEWPORTS = {
@@ -62,6 +64,8 @@ def test_a_triple_pendulum_shows_its_equations_before_the_rest(sized, artifacts)
     assert page.locator("#results dd").first.locator(".katex").count() == 3
     assert page.locator(".katex-error").count() == 0
     page.screenshot(path=artifacts / f"playground-stages-equations-{name}.png", full_page=False)
+    if AXE.exists():  # the first stage's view on its own: no serious or critical violation (tests/browser/test_axe.py)
+        assert violations(page) == []
     # then the whole derivation in its place, the line replaced by what was left out and where it says why
     page.wait_for_selector(WHOLE)
     assert page.locator('#derived[data-stage="equations"]').count() == 0
@@ -76,7 +80,7 @@ def test_a_triple_pendulum_shows_its_equations_before_the_rest(sized, artifacts)
     assert page.console_errors == []
 
 
-def test_a_refusal_of_the_rest_lands_at_its_field_and_keeps_what_was_typed(page, live_server):
+def test_a_refusal_of_the_rest_lands_at_its_field_and_keeps_what_was_typed(page, artifacts):
     spring = {"q": "x", "form": "energies", "pn": ["m", "k"], "pv": ["1.5", "2.5"], "T": "m*x_dot**2/2", "U": "k*x**2/2"}
     refused = page.request.get("/playground?" + urlencode({**spring, "T": "m*x_dot**2/2 + ((", "stage": "whole"},
                                                           doseq=True))  # fmt: skip
@@ -97,3 +101,5 @@ def test_a_refusal_of_the_rest_lands_at_its_field_and_keeps_what_was_typed(page,
     assert "refused" in page.inner_text("#derive-progress")
     # the form is untouched: what the reader typed meanwhile is still there
     assert page.input_value("#f-U") == "k*x**2/2 + x**4" and page.input_value("#f-T") == "m*x_dot**2/2"
+    page.locator("#form-error").scroll_into_view_if_needed()
+    page.screenshot(path=artifacts / "playground-stages-refused.png")
