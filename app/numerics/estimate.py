@@ -110,5 +110,5 @@ def above_tolerance(estimate: Estimate, run: Trajectory, rtol: float, atol: np.n
     return (
         f"the error of {name} (about {measured[worst]:.2g}) is {ratio[worst]:.2g} times the requested tolerance "
         f"({asked[worst]:.2g} = atol + rtol max|{name}|): {how}, and over this run's {run.steps:,} steps those "
-        "errors add up; a smaller rtol brings the whole run within it"
+        "errors accumulate (and the motion itself may amplify them); a smaller rtol brings the run closer to it"
     )

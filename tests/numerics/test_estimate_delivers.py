@@ -46,7 +46,7 @@ def test_the_stiff_excited_spring_is_bounded_and_delivers_or_says_why():
     # delivered, or a warning that says by how much it missed and why (and only then)
     assert within or warned, (out.method, per)
     if warned:
-        assert not within and "steps those errors add up" in warned[0]
+        assert not within and "steps those errors accumulate" in warned[0]
 
 
 @pytest.mark.slow
