@@ -211,7 +211,6 @@ async function fetchWhole() {
 }
 
 async function fillIn() {
-  const started = performance.now();
   let answer;
   try {
     answer = await fetchWhole();
@@ -236,7 +235,6 @@ async function fillIn() {
   });
   done.setAttribute("role", "status");
   next.prepend(done);
-  document.body.dataset.wholeMs = String(Math.round(performance.now() - started));
   foldSteps(next);
   whenTypeset(next);
   connect();
