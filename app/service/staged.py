@@ -45,7 +45,6 @@ PENDING = (
     ("momenta", "the generalized momenta"),
     ("hamilton", "Hamilton's equations"),
     ("normal_modes", "the normal modes"),
-    ("simulation", "the simulation"),
 )
 
 

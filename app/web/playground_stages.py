@@ -47,7 +47,8 @@ def first_view(doc: dict[str, Any], href: str) -> dict[str, Any]:
         "mass_matrix": None,
         "forcing": [],
         "skipped": [s["reason"] for s in doc.get("skipped") or []],
-        "pending": _listed([p["name"] for p in doc.get("pending") or []]),
+        # the page shows the simulation with the whole document too
+        "pending": _listed([*(p["name"] for p in doc.get("pending") or []), "the simulation"]),
         "whole_href": href,
     }
     if not accelerations:

@@ -83,7 +83,7 @@ def test_the_first_view_lists_what_is_pending_and_links_to_the_rest():
                     {"member": "normal_modes", "name": "the normal modes"}],
     }  # fmt: skip
     view = first_view(doc, whole_href("q=x&stage=whole&T=m"))
-    assert view["pending"] == "the steps, Hamilton's equations and the normal modes"
+    assert view["pending"] == "the steps, Hamilton's equations, the normal modes and the simulation"
     assert view["accelerations"] == ["\\ddot{x} = - \\frac{k x}{m}"] and view["mass_matrix"] is None
     assert view["whole_href"] == "/playground?q=x&T=m&stage=whole#outcome"
 
