@@ -27,7 +27,7 @@ from app.engine.contract import (
     symbol_names,
 )
 from app.engine.derive import Derivation
-from app.engine.report import Printer, lagrangian
+from app.engine.report import Printer
 from app.engine.user_system import UserSystem
 from app.service.encoding import dumps
 from app.service.user_checks import spec_key
@@ -63,7 +63,6 @@ def first_stage(d: Derivation) -> dict[str, Any]:
             "angles": angle_coordinates(d),
             "symbols": symbol_names(d),
             "parameters": parameters_json(d.system.parameters),
-            "lagrangian": pr.pair(lagrangian(d, pr)),
             "equations_of_motion": [
                 {"coordinate": name, **pair} for name, pair in zip(table.names, equations, strict=True)
             ],
@@ -100,8 +99,8 @@ async def equations_or_whole(users: UserSystems, user: UserSystem, client: str, 
 
 
 # The members of the first stage, which a whole document holds too (an API caller gets the same shape either way).
-FIRST_MEMBERS = ("coordinates", "angles", "symbols", "parameters", "lagrangian", "equations_of_motion",
-                 "accelerations", "mass_matrix", "forcing", "skipped")  # fmt: skip
+FIRST_MEMBERS = ("coordinates", "angles", "symbols", "parameters", "equations_of_motion", "accelerations",
+                 "mass_matrix", "forcing", "skipped")  # fmt: skip
 
 
 def _from_whole(whole: bytes) -> bytes:

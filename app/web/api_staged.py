@@ -39,7 +39,6 @@ class FirstStage(BaseModel):
     )
     coordinates: list[str]
     parameters: dict[str, ParameterInfo]
-    lagrangian: ExprPair
     equations_of_motion: list[EquationOfMotion]
     accelerations: dict[str, ExprPair] = Field(description="Empty when they stay M⁻¹f (see `skipped`).")
     mass_matrix: list[list[ExprPair]]
