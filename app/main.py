@@ -15,6 +15,7 @@ from app.settings import settings
 from app.web import api_action, api_beyond, api_scenes, docs, errors, limits, pages, slow_clients
 from app.web.api_check import router as check_router
 from app.web.api_simulate import router as simulate_router
+from app.web.api_staged import router as staged_router
 from app.web.api_typeset import router as typeset_router
 from app.web.api_user import router as user_router
 from app.web.compression import ApiCompression
@@ -75,6 +76,7 @@ ROUTERS = [
     pages.router,
     docs.router,
     user_router,
+    staged_router,
     simulate_router,
     playground_router,
     check_router,

@@ -81,3 +81,34 @@ def compare(
     floor = eps * np.max(np.abs(run.y[:common, :n]), axis=0) * np.sqrt(max(run.steps, 1))
     per = np.maximum(np.max(diff, axis=0), floor)
     return Estimate(float(per.max()), {name: float(v) for name, v in zip(coordinates, per, strict=True)}, label)
+
+
+def above_tolerance(estimate: Estimate, run: Trajectory, rtol: float, atol: np.ndarray, fixed_step: bool) -> str | None:
+    """A warning when the run's error is above what was asked for, and why; None when it is within.
+
+    What was asked for, per coordinate i: atol_i + rtol max_t |q_i(t)|.  The run's error is the estimate
+    without its safety factor (the measured difference, about the true error: the factor only makes the
+    reported value a bound), so a run whose true error is within the tolerance is not warned about.
+    """
+    n = len(estimate.by_coordinate)
+    if n == 0 or run.t.size == 0 or not np.isfinite(estimate.value):
+        return None
+    safety = SAFETY_FIXED_STEP if fixed_step else SAFETY
+    measured = np.array(list(estimate.by_coordinate.values())) / safety
+    # the tolerance in each coordinate's own scale over the whole run
+    asked = np.asarray(atol, dtype=float)[:n] + rtol * np.max(np.abs(run.y[:, :n]), axis=0)
+    ratio = measured / asked
+    worst = int(np.argmax(ratio))
+    if not ratio[worst] > 1.0:
+        return None
+    name = list(estimate.by_coordinate)[worst]
+    how = (
+        "the fixed step was chosen so that each step's own error is about the tolerance"
+        if fixed_step
+        else "rtol and atol bound the error each step makes"
+    )
+    return (
+        f"the error of {name} (about {measured[worst]:.2g}) is {ratio[worst]:.2g} times the requested tolerance "
+        f"({asked[worst]:.2g} = atol + rtol max|{name}|): {how}, and over this run's {run.steps:,} steps those "
+        "errors accumulate (and the motion itself may amplify them); a smaller rtol brings the run closer to it"
+    )

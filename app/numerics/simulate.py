@@ -29,7 +29,7 @@ from app.numerics import events as terminal
 from app.numerics import limits
 from app.numerics.choose import Analysis
 from app.numerics.errors import TooMuchWork
-from app.numerics.estimate import Estimate, compare, reference_problem
+from app.numerics.estimate import Estimate, above_tolerance, compare, reference_problem
 from app.numerics.methods import AUTO, METHODS, Problem, Trajectory
 from app.numerics.methods.symplectic import FixedStep
 from app.numerics.plan import Plan, plan
@@ -226,6 +226,9 @@ def run(
     result = (
         estimate_error(system, problem, chosen, compared, plan.stiff, warnings, compiled, ahead) if estimate else None
     )
+    fixed = isinstance(chosen, FixedStep)
+    if result is not None and (note := above_tolerance(result, compared, problem.rtol, problem.atol, fixed)):
+        warnings.append(note)  # the run did not deliver the tolerance asked for: say so, and why
     return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds, path, hit, done_alongside)
 
 

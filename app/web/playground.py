@@ -6,6 +6,9 @@ derivation has a shareable address (``/playground?q=x&form=energies&T=...``);
 through the same service as POST /api/derive (checks, cache, fair share, worker
 pool: no SymPy here) and renders the derivation with the scene page's markup.
 A refusal is shown next to the field it concerns, with the offending part marked.
+The derivation comes in two stages (app/service/staged.py, app/web/playground_stages.py): unless the
+whole document is ready, the page answers with the equations and accelerations and the page's script
+fetches the same address with ``stage=whole`` for the rest.
 The simulation runs in the browser against POST /api/simulate (static/js/playground.js).
 """
 
@@ -15,6 +18,7 @@ import json
 import threading
 from collections.abc import Callable
 from typing import Any
+from urllib.parse import urlencode
 
 from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
@@ -25,6 +29,7 @@ from app.engine.user_system import UserSystem
 from app.numerics.methods import CHOICES
 from app.service.answers import examples_cache
 from app.service.cache import BytesCache
+from app.service.staged import equations_or_whole
 from app.service.user_checks import InvalidSystem, checked, spec_key
 from app.service.user_jobs import derive_job
 from app.service.user_systems import UserSystems
@@ -33,6 +38,7 @@ from app.web.deps import ClientDep, UserSystemsDep
 from app.web.errors import KINDS, REFUSED, Problem, held, problem
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
 from app.web.playground_form import AXES, FORMS, Form, FormError, form_of, located_error, query_of, read_form, spec_of
+from app.web.playground_stages import STAGE_PARAMETER, first_view, whole_href
 from app.web.schemas import SESSION_COOKIE
 from app.web.templating import templates
 
@@ -133,8 +139,6 @@ _SURROGATE_MESSAGE = (
 
 
 def _example_links() -> list[dict[str, str]]:
-    from urllib.parse import urlencode
-
     return [
         {"title": title, "href": "/playground?" + urlencode(query_of(form_of(spec)), doseq=True)}
         for title, spec in EXAMPLES.items()
@@ -165,6 +169,7 @@ QUERY_PARAMETERS = [
     _query_parameter("nn", "Coordinates that are distances (never negative)."),
     _query_parameter("system", "The whole system as JSON in the shape of POST /api/derive (takes precedence)."),
     _query_parameter("new", "Present (any value) for an empty form."),
+    STAGE_PARAMETER,
     SESSION_COOKIE,
 ]
 HTML = {"text/html": {"schema": {"type": "string"}}}
@@ -190,7 +195,7 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
     error: FormError | None = None
     failed: Problem | None = None
     empty = False
-    model = user = None
+    model = user = first = None
     form = form_of(FORCED_SPRING)
     try:
         if len(str(request.url.query)) > MAX_QUERY:
@@ -205,8 +210,15 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
             empty = True  # the page says what to enter
         else:
             user = checked(spec_of(form))
-            doc = json.loads(await users.derive(user, client.key, client.address))
-            model = await run_in_threadpool(model_of, user, doc, CHOICES)
+            if request.query_params.get("stage") == "whole":
+                doc = json.loads(await users.derive(user, client.key, client.address))
+            else:  # the equations first, unless the whole document is ready (the page asks for the rest)
+                doc = await equations_or_whole(users, user, client.key, client.address)
+            if doc.get("stage") == "equations":
+                # the rest is asked for with the form's own query (the default system's page has none)
+                first = first_view(doc, whole_href(urlencode(query_of(form), doseq=True)))
+            else:
+                model = await run_in_threadpool(model_of, user, doc, CHOICES)
     except FormError as exc:
         error = exc
     except KINDS as exc:
@@ -225,6 +237,7 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
         "submitted": "new" not in request.query_params and bool(request.query_params),
         "model": model,
         "m": model,
+        "first": first,
         "system_json": json.dumps(user.as_json() if user else {}, separators=(",", ":")).replace("<", "\\u003c"),
         "examples": _example_links(),
         "forms": FORMS,

@@ -13,6 +13,12 @@
  *     a 429/503 is retried (api.js fetchJSON).
  * Everything it needs is in the page: #scene-data (the client JSON of app/viz/page_model.py)
  * and #playground-system (the request the page derived).
+ *
+ * The derivation comes in two stages (issue 35): when the whole document is not ready, the page
+ * arrives with the equations and accelerations in #derived[data-stage="equations"] and a "still
+ * working on" line; this module asks for the same address with stage=whole and puts its #derived
+ * (steps, results, simulation, skipped notes) in place, or shows its refusal at the field it
+ * concerns.  The form is never touched: whatever the reader typed meanwhile stays.
  */
 import { foldSteps, printReady, whenTypeset } from "./derivation.js";
 import { fetchJSON } from "./api.js";
@@ -88,8 +94,7 @@ if (systemForm) {
 
 // ---- the simulation ------------------------------------------------------------------------
 
-const root = document.getElementById("simulation");
-const dataNode = document.getElementById("scene-data");
+let root = document.getElementById("simulation");
 const system = JSON.parse(document.getElementById("playground-system").textContent || "{}");
 
 function body(request) {
@@ -113,7 +118,10 @@ function oneAtATime(job) {
   return next;
 }
 
-if (root && dataNode) {
+function connect() {
+  root = document.getElementById("simulation");
+  const dataNode = document.getElementById("scene-data");
+  if (!root || !dataNode) return;
   connectSimulation({
     form: document.getElementById("controls"),
     root,
@@ -131,3 +139,88 @@ if (root && dataNode) {
     },
   });
 }
+
+// ---- the derivation, in stages -------------------------------------------------------------
+
+const derived = document.getElementById("derived");
+const pause = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+
+/** Run the module scripts of a fragment put in with innerHTML (the browser runs none of those). */
+function runScripts(container) {
+  for (const old of container.querySelectorAll('script[type="module"][src]')) {
+    const script = document.createElement("script");
+    script.type = "module";
+    script.src = old.src;
+    old.replaceWith(script);
+  }
+}
+
+/** Show a refusal of the whole derivation as the server renders it: the box above the form and the note at its field. */
+function showRefusal(page, status) {
+  const box = page.getElementById("form-error");
+  const progress = document.getElementById("derive-progress");
+  if (!box) {
+    progress.textContent = `The rest of the derivation could not be fetched (the server answered ${status}); reload the page to try again.`;
+    return;
+  }
+  document.getElementById("form-error")?.remove();
+  systemForm.before(document.importNode(box, true));
+  const invalid = page.querySelector('[aria-invalid="true"]');
+  const field = invalid && document.getElementById(invalid.id);
+  const note = invalid && page.getElementById(`${invalid.id}-error`);
+  if (field && note && !document.getElementById(note.id)) {
+    field.setAttribute("aria-invalid", "true");
+    field.setAttribute("aria-describedby", note.id);
+    field.insertAdjacentElement("afterend", document.importNode(note, true));
+    const kindBlock = field.closest("[data-kind]");
+    if (kindBlock && kindBlock.hidden) kindBlock.hidden = false;
+  }
+  progress.textContent = "The rest of the derivation was refused: the reason is shown above the form, at the field it concerns.";
+  progress.setAttribute("role", "alert");
+}
+
+/** The same address with stage=whole: the whole derivation, or its refusal, as a page. */
+async function fetchWhole() {
+  const url = derived.dataset.wholeUrl.split("#")[0];
+  for (let attempt = 0; ; attempt++) {
+    const res = await fetch(url, { headers: { Accept: "text/html" } });
+    if ((res.status === 429 || res.status === 503) && attempt < 8) {
+      await pause(1000 * Number(res.headers.get("Retry-After") || 1));
+      continue;
+    }
+    return { status: res.status, page: new DOMParser().parseFromString(await res.text(), "text/html") };
+  }
+}
+
+async function fillIn() {
+  let answer;
+  try {
+    answer = await fetchWhole();
+  } catch {
+    document.getElementById("derive-progress").textContent =
+      "The rest of the derivation could not be fetched (the connection failed); reload the page to try again.";
+    return;
+  }
+  const next = answer.page.getElementById("derived");
+  if (answer.status !== 200 || !next) {
+    showRefusal(answer.page, answer.status);
+    return;
+  }
+  const left = next.querySelectorAll(".skipped li").length;
+  derived.replaceWith(next);
+  runScripts(next);
+  // a line in place of "still working on": what was left out is listed under Results, each with its reason
+  const done = Object.assign(document.createElement("p"), {
+    id: "derive-progress", className: "derive-progress",
+    textContent: "The whole derivation is below." + (left ? ` ${left === 1 ? "One part was" : `${left} parts were`} left out; `
+      + "the reason for each is under Results, “Left out”." : ""),
+  });
+  done.setAttribute("role", "status");
+  next.prepend(done);
+  foldSteps(next);
+  whenTypeset(next);
+  connect();
+}
+
+if (derived?.dataset.stage === "equations") fillIn();
+else connect();

@@ -99,7 +99,7 @@ def test_scene_pages_link_the_exports_and_the_playground_posts_them(client):
     page = client.get("/scenes/helix-bead").text
     for fmt, text in (("ipynb", "Open as notebook"), ("py", "Python script"), ("tex", "LaTeX")):
         assert f'href="/api/scenes/helix-bead/export?format={fmt}" download>{text}</a>' in page
-    playground = client.get("/playground?q=x&pn=m&pv=1&form=lagrangian&L=m*x_dot**2/2").text
+    playground = client.get("/playground?q=x&pn=m&pv=1&form=lagrangian&L=m*x_dot**2/2&stage=whole").text
     for fmt in FORMATS:
         assert f'<button type="button" data-export-format="{fmt}">' in playground
     assert "js/export.js" in playground

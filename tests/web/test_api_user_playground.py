@@ -44,7 +44,7 @@ def test_an_empty_form_says_what_to_enter(client):
 
 
 def test_derive_lands_on_the_result_and_labels_are_not_doubled(client):
-    html = client.get("/playground?" + urlencode(query_of(form_of(SPINNING_HOOP)), doseq=True)).text
+    html = client.get("/playground?" + urlencode({**query_of(form_of(SPINNING_HOOP)), "stage": "whole"}, doseq=True)).text
     # the anchor "Derive" lands on sits just before the simulation
     assert html.index('id="outcome"') < html.index('id="simulation"')
     labels = re.findall(r'<span class="sym">([^<]*)</span> <span class="desc">([^<]*)</span>', html)
@@ -52,7 +52,7 @@ def test_derive_lands_on_the_result_and_labels_are_not_doubled(client):
 
 
 def test_the_page_derives_and_renders_the_steps(client):
-    response = client.get("/playground?" + urlencode(query_of(form_of(SPINNING_HOOP)), doseq=True))
+    response = client.get("/playground?" + urlencode({**query_of(form_of(SPINNING_HOOP)), "stage": "whole"}, doseq=True))
     assert response.status_code == 200
     html = response.text
     assert html.count('<li class="step') >= 8
@@ -66,7 +66,7 @@ def test_the_page_derives_and_renders_the_steps(client):
 
 
 def test_the_double_pendulum_is_drawn_with_a_pivot_and_two_rods(client):
-    response = client.get("/playground?" + urlencode(query_of(form_of(DOUBLE_PENDULUM)), doseq=True))
+    response = client.get("/playground?" + urlencode({**query_of(form_of(DOUBLE_PENDULUM)), "stage": "whole"}, doseq=True))
     data = json.loads(
         re.search(r'<script type="application/json" id="scene-data">(.*?)</script>', response.text, re.S)[1]
     )
