@@ -21,7 +21,7 @@
  * concerns.  The form is never touched: whatever the reader typed meanwhile stays.
  */
 import { foldSteps, printReady, whenTypeset } from "./derivation.js";
-import { fetchJSON } from "./api.js";
+import { fetchJSON, fetchRetrying } from "./api.js";
 import { connectSimulation } from "./simulation.js";
 import { keyboardScroll } from "./scrollboxes.js";
 
@@ -143,7 +143,6 @@ function connect() {
 // ---- the derivation, in stages -------------------------------------------------------------
 
 const derived = document.getElementById("derived");
-const pause = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 
 /** Run the module scripts of a fragment put in with innerHTML (the browser runs none of those). */
 function runScripts(container) {
@@ -182,14 +181,8 @@ function showRefusal(page, status) {
 /** The same address with stage=whole: the whole derivation, or its refusal, as a page. */
 async function fetchWhole() {
   const url = derived.dataset.wholeUrl.split("#")[0];
-  for (let attempt = 0; ; attempt++) {
-    const res = await fetch(url, { headers: { Accept: "text/html" } });
-    if ((res.status === 429 || res.status === 503) && attempt < 8) {
-      await pause(1000 * Number(res.headers.get("Retry-After") || 1));
-      continue;
-    }
-    return { status: res.status, page: new DOMParser().parseFromString(await res.text(), "text/html") };
-  }
+  const res = await fetchRetrying(url, { headers: { Accept: "text/html" } }, { tries: 9 });
+  return { status: res.status, page: new DOMParser().parseFromString(await res.text(), "text/html") };
 }
 
 async function fillIn() {
