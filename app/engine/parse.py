@@ -26,6 +26,9 @@ names the offending part and where it starts:
 
 ``check_expression`` runs gates 1 and 2 only, so a web process can refuse
 hostile text without touching SymPy; ``parse_expression`` runs all three.
+``read`` (gates 1 and 2) keeps what it read as a picklable ``Parsed`` and
+``build`` (gate 3) makes SymPy of it, so that text read in one process is built
+in another without being read again (docs/parsing.md).
 """
 
 from __future__ import annotations
@@ -37,7 +40,7 @@ import math
 import re
 import tokenize
 from collections.abc import Callable, Collection, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
 
@@ -563,7 +566,7 @@ def check_expression(text: str, names: Collection[str]) -> ast.Expression:
     ``names`` are the names the expression may use (``pi`` is always allowed).
     Returns the checked tree (of the text with surrounding spaces removed).
     """
-    return _checked(text, names)[0]
+    return read(text, names).tree
 
 
 @dataclass(frozen=True)
@@ -574,10 +577,30 @@ class Size:
     degree: float
 
 
+@dataclass(frozen=True)
+class Parsed:
+    """An expression's text read once (gates 1 and 2): its checked tree and size bounds, picklable.
+
+    ``build`` turns it into SymPy (gate 3) without reading the text again, so a web process can read a
+    user's text in pure Python and a worker build what it read.  ``names`` are the names it was checked
+    against; only a namespace giving each of them a symbol may build it.
+    """
+
+    text: str  # as given
+    tree: ast.Expression = field(repr=False, compare=False)
+    size: Size
+    names: frozenset[str] = field(repr=False)
+
+
+def read(text: str, names: Collection[str]) -> Parsed:
+    """Gates 1 and 2 on ``text``: the one place an expression's text is read (``ast.parse``)."""
+    tree, facts = _checked(text, names)
+    return Parsed(text, tree, Size(facts.terms, facts.degree), frozenset(names))
+
+
 def expression_size(text: str, names: Collection[str]) -> Size:
     """Check an expression as ``check_expression`` does and return its size bounds."""
-    facts = _checked(text, names)[1]
-    return Size(facts.terms, facts.degree)
+    return read(text, names).size
 
 
 def _checked(text: str, names: Collection[str]) -> tuple[ast.Expression, _Facts]:
@@ -674,11 +697,18 @@ _COMBINE: dict[type, Callable[[sp.Expr, sp.Expr], sp.Expr]] = {
 
 def parse_expression(text: str, names: Mapping[str, sp.Symbol]) -> sp.Expr:
     """Parse ``text`` into a SymPy expression over the symbols in ``names``."""
-    tree = check_expression(text, names)
-    spaced = text.translate({9: " ", 10: " ", 13: " "})
+    return build(read(text, names), names)
+
+
+def build(parsed: Parsed, names: Mapping[str, sp.Symbol]) -> sp.Expr:
+    """Gate 3: an expression read by ``read`` built into SymPy over the symbols in ``names``."""
+    if not parsed.names <= names.keys():
+        missing = ", ".join(sorted(parsed.names - names.keys()))
+        raise ValueError(f"{parsed.text[:60]!r} was checked against names this namespace lacks: {missing}")
+    spaced = parsed.text.translate({9: " ", 10: " ", 13: " "})
     stripped = spaced.strip()
     offset = len(spaced) - len(spaced.lstrip())
-    expr = _Builder(stripped, offset, names).build(tree.body)
+    expr = _Builder(stripped, offset, names).build(parsed.tree.body)
     if expr.has(sp.zoo, sp.oo, sp.nan, -sp.oo):
         raise ExpressionError(f"the expression is undefined (a division by zero?): {stripped[:60]!r}", stripped[:60])
     if expr.has(sp.I):
