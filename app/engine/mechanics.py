@@ -29,7 +29,9 @@ class Mechanics:
     Q: tuple[sp.Expr, ...]
 
 
-def _parse(text: str, names: dict[str, sp.Symbol], where: str, allow_velocity: bool, built: Mapping[str, sp.Expr]) -> sp.Expr:
+def _parse(
+    text: str, names: dict[str, sp.Symbol], where: str, allow_velocity: bool, built: Mapping[str, sp.Expr]
+) -> sp.Expr:
     if text in built:  # built from this text once already (System.built: docs/parsing.md)
         return built[text]
     allowed = names if allow_velocity else {k: v for k, v in names.items() if not k.endswith("_dot")}

@@ -107,3 +107,26 @@ def test_each_expression_of_a_double_pendulum_is_read_once_per_derive(client, po
     assert {text: reads[text] for text in texts} == texts
     assert {text: builds[text] for text in texts} == texts
     assert not any(sympy_reads[text] for text in texts)
+
+
+def test_checking_a_step_of_a_declared_system_reads_the_system_once(client, pool, counted):
+    """POST /api/check with a declared system shares the path: each expression read once, built once."""
+    from app.service.checking import Checking
+    from app.web.deps import checking_service
+
+    reads, builds, _ = counted
+    body = {**PENDULUM, "parameters": [{**p, "value": 2.5} if p["name"] == "m2" else p for p in PENDULUM["parameters"]]}
+    texts = Counter(text.strip() for _, text, _ in checked(SystemSpec.model_validate(body).to_spec()).expressions())
+    service = app.dependency_overrides[user_systems_service]()
+    app.dependency_overrides[checking_service] = lambda: Checking(service)
+    try:
+        reads.clear()
+        answer = "-(m1+m2)*g*l1*cos(theta1) - m2*g*l2*cos(theta2)"  # not written as the declaration writes it
+        response = client.post("/api/check", json={"system": body, "step": "potential", "answer": answer})
+    finally:
+        app.dependency_overrides.pop(checking_service)
+    assert response.status_code == 200, response.text
+    assert response.json()["verdict"] == "correct"
+    assert pool.jobs == ["system_check_job"]
+    assert {text: reads[text] for text in texts} == texts
+    assert {text: builds[text] for text in texts} == texts

@@ -1,0 +1,85 @@
+"""What reading a user system's text costs in one POST /api/derive of a double pendulum (issue 30, docs/parsing.md).
+
+    PYTHONPATH=$PWD .venv/bin/python -m benchmarks.bench_parse_once
+
+Through the app in-process (TestClient) with the real worker pool: after one derivation has started the
+pool (the forkserver imports the engine), each round derives a double pendulum that no cache holds (its l2
+differs every round) and the median of the rounds is printed.  Then, in this process, the same request's
+stages: the web process's check (``checked``); in the worker, from the checked system to T, U and L
+(``user_jobs.build_system``, then ``build_mechanics``: every reading and building of the text) and the
+whole derivation (``derive``), each with SymPy's cache cleared first, as a worker meeting a new system
+does; each a median, and the first's share of the second.
+"""
+
+from __future__ import annotations
+
+import statistics
+import time
+
+from fastapi.testclient import TestClient
+from sympy.core.cache import clear_cache
+
+from app.engine.derive import derive
+from app.engine.mechanics import build_mechanics
+from app.main import app
+from app.service import user_jobs
+from app.service.user_checks import checked
+from app.web.examples_user import DOUBLE_PENDULUM, SPINNING_HOOP
+from app.web.schemas_user import SystemSpec
+
+ROUNDS = 7
+
+
+def pendulum(i: int) -> dict:
+    """The example double pendulum with l2 = 1 + i/1000 m: a request no cache holds."""
+    return {
+        **DOUBLE_PENDULUM,
+        "parameters": [{**p, "value": 1 + i / 1000} if p["name"] == "l2" else p for p in DOUBLE_PENDULUM["parameters"]],
+    }
+
+
+def median_seconds(call, rounds: int = ROUNDS) -> float:
+    times = []
+    for i in range(rounds):
+        start = time.perf_counter()
+        call(i)
+        times.append(time.perf_counter() - start)
+    return statistics.median(times)
+
+
+def main() -> None:
+    with open("/proc/loadavg") as f:
+        print("load average:", f.read().split()[:3])
+    with TestClient(app) as client:
+        assert client.post("/api/derive", json=SPINNING_HOOP).status_code == 200  # starts the pool
+
+        def post(i: int) -> None:
+            response = client.post("/api/derive", json=pendulum(100 + i))
+            assert response.status_code == 200, response.text
+
+        whole = median_seconds(post)
+    print(f"POST /api/derive, double pendulum, uncached, pool warm: median {whole * 1000:.0f} ms of {ROUNDS}")
+
+    spec = SystemSpec.model_validate(pendulum(0)).to_spec()
+    check = median_seconds(lambda i: checked(spec), 50)
+    users = [checked(SystemSpec.model_validate(pendulum(200 + i)).to_spec()) for i in range(15)]
+
+    def mechanics(i: int) -> None:
+        clear_cache()
+        build_mechanics(user_jobs.build_system(users[i]))
+
+    def derivation(i: int) -> None:
+        clear_cache()
+        derive(user_jobs.build_system(users[i]))
+
+    to_mechanics, whole_derivation = median_seconds(mechanics, 15), median_seconds(derivation, 15)
+    print(f"web process, checked(): median {check * 1000:.2f} ms")
+    print(f"worker, build_mechanics(build_system()): median {to_mechanics * 1000:.1f} ms")
+    print(
+        f"worker, derive(build_system()): median {whole_derivation * 1000:.0f} ms "
+        f"(the text's reading and building to T, U, L: {to_mechanics / whole_derivation:.1%})"
+    )
+
+
+if __name__ == "__main__":
+    main()
