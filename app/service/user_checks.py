@@ -125,7 +125,7 @@ def check_system(system: UserSystem) -> dict[tuple, Parsed]:
         if name not in coordinates:
             raise InvalidSystem(f"nonnegative[{i}]: {name[:40]!r} is not a coordinate", ("nonnegative", i), name[:40])
 
-    base = set(coordinates) | set(parameters) | {"t"}
+    base = frozenset(coordinates) | frozenset(parameters) | {"t"}
     with_velocities = base | {f"{q}_dot" for q in coordinates}
     parsed = {}
     for loc, text, velocities in system.expressions():
