@@ -8,11 +8,16 @@ differs every round) and the median of the rounds is printed.  Then, in this pro
 stages: the web process's check (``checked``); in the worker, from the checked system to T, U and L
 (``user_jobs.build_system``, then ``build_mechanics``: every reading and building of the text) and the
 whole derivation (``derive``), each with SymPy's cache cleared first, as a worker meeting a new system
-does; each a median, and the first's share of the second.
+does; each a median, and the first's share of the second.  Last, what carrying the read expressions to
+the worker costs: a pickle round trip of the checked system, with its compact trees, with nothing read, and
+with the same expressions as Python ``ast`` trees instead.
 """
 
 from __future__ import annotations
 
+import ast
+import dataclasses
+import pickle
 import statistics
 import time
 
@@ -79,6 +84,17 @@ def main() -> None:
         f"worker, derive(build_system()): median {whole_derivation * 1000:.0f} ms "
         f"(the text's reading and building to T, U, L: {to_mechanics / whole_derivation:.1%})"
     )
+
+    user = users[0]
+    if getattr(user, "parsed", None) is None:
+        return  # the code before docs/parsing.md: nothing read is carried
+    bare = dataclasses.replace(user, parsed=None)
+    trees = {loc: ast.parse(text.strip(), mode="eval") for loc, text, _ in user.expressions()}
+    for what, value in (("compact trees", user), ("nothing read", bare), ("ast trees", (bare, trees))):
+        seconds = median_seconds(lambda i, value=value: pickle.loads(pickle.dumps(value)), 2000)
+        print(
+            f"pickle round trip, checked system with {what}: {len(pickle.dumps(value))} bytes, {seconds * 1e6:.0f} us"
+        )
 
 
 if __name__ == "__main__":
