@@ -62,3 +62,20 @@ def test_the_workers_declaration_carries_what_it_built_and_derives_the_same():
     unbuilt = UserSystem.of(spec).system()
     assert unbuilt.built == {} and unbuilt == built
     assert derive(built).equations.accelerations == derive(unbuilt).equations.accelerations
+
+
+@pytest.mark.parametrize("check", [checked, UserSystem.of])
+def test_the_worker_builds_what_was_read_or_checks_what_was_not_with_the_same_refusals(check):
+    from app.service.user_jobs import build_system
+
+    # refused by gate 2 (an undeclared name): by the web process's check, or by the worker's when unchecked
+    bad_name = {"coordinates": ["x"], "parameters": ["m"], "lagrangian": "m*x_dot**2/2 - y"}
+    with pytest.raises(InvalidSystem) as refused:
+        build_system(check(bad_name))
+    assert refused.value.loc == ("lagrangian",) and refused.value.part == "y"
+    # passes gates 1 and 2, refused when built (gate 3), located at its field with its span in the text
+    undefined = {"coordinates": ["x"], "parameters": ["m"], "kinetic": "m*x_dot**2/2", "potential": "m/(x - x)"}
+    with pytest.raises(InvalidSystem) as refused:
+        build_system(check(undefined))
+    assert refused.value.loc == ("potential",) and "division by zero" in str(refused.value)
+    assert (refused.value.start, refused.value.end, refused.value.part) == (3, 8, "x - x")
