@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import sympy as sp
@@ -28,7 +29,11 @@ class Mechanics:
     Q: tuple[sp.Expr, ...]
 
 
-def _parse(text: str, names: dict[str, sp.Symbol], where: str, allow_velocity: bool) -> sp.Expr:
+def _parse(
+    text: str, names: dict[str, sp.Symbol], where: str, allow_velocity: bool, built: Mapping[str, sp.Expr]
+) -> sp.Expr:
+    if text in built:  # built from this text once already (System.built: docs/parsing.md)
+        return built[text]
     allowed = names if allow_velocity else {k: v for k, v in names.items() if not k.endswith("_dot")}
     try:
         return parse_expression(text, allowed)
@@ -53,8 +58,8 @@ def build_mechanics(system: System) -> Mechanics:
     for i, particle in enumerate(system.particles, start=1):
         if len(particle.position) != 3:
             raise DerivationError(f"particle {i}: a position has three components (x, y, z)")
-        mass = _parse(particle.mass, names, f"particle {i} mass", False)
-        r = tuple(_parse(c, names, f"particle {i} position", False) for c in particle.position)
+        mass = _parse(particle.mass, names, f"particle {i} mass", False, system.built)
+        r = tuple(_parse(c, names, f"particle {i} position", False, system.built) for c in particle.position)
         # v = dr/dt = dr/dt|_q + sum_k (dr/dq_k) q_dot_k
         v = tuple(table.dt(c) for c in r)
         masses.append(mass)
@@ -64,7 +69,9 @@ def build_mechanics(system: System) -> Mechanics:
         speeds.append(pythagoras(sum(c**2 for c in v)))
 
     Q = tuple(
-        _parse(system.forces[name], names, f"force on {name}", True) if name in system.forces else sp.Integer(0)
+        _parse(system.forces[name], names, f"force on {name}", True, system.built)
+        if name in system.forces
+        else sp.Integer(0)
         for name in table.names
     )
     unknown = set(system.forces) - set(table.names)
@@ -72,15 +79,15 @@ def build_mechanics(system: System) -> Mechanics:
         raise DerivationError(f"forces are given for {sorted(unknown)}, which are not coordinates")
 
     if system.lagrangian is not None:
-        L = _parse(system.lagrangian, names, "lagrangian", True)
+        L = _parse(system.lagrangian, names, "lagrangian", True, system.built)
         return Mechanics(table, (), (), (), (), None, None, L, Q)
 
     if system.particles:
         # T = sum_i 1/2 m_i v_i^2
         T = sp.expand(sum(sp.Rational(1, 2) * m * v2 for m, v2 in zip(masses, speeds, strict=True)))
     else:
-        T = _parse(system.kinetic or "", names, "kinetic energy", True)
-    U = _parse(system.potential or "0", names, "potential", False)
+        T = _parse(system.kinetic or "", names, "kinetic energy", True, system.built)
+    U = _parse(system.potential or "0", names, "potential", False, system.built)
     # L = T - U
     L = T - U
     return Mechanics(table, tuple(positions), tuple(masses), tuple(velocities), tuple(speeds), T, U, L, Q)

@@ -26,6 +26,9 @@ names the offending part and where it starts:
 
 ``check_expression`` runs gates 1 and 2 only, so a web process can refuse
 hostile text without touching SymPy; ``parse_expression`` runs all three.
+``read`` (gates 1 and 2) keeps what it read as a picklable ``Parsed`` and
+``build`` (gate 3) makes SymPy of it, so that text read in one process is built
+in another without being read again (docs/parsing.md).
 """
 
 from __future__ import annotations
@@ -37,7 +40,7 @@ import math
 import re
 import tokenize
 from collections.abc import Callable, Collection, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
 
@@ -574,6 +577,57 @@ class Size:
     degree: float
 
 
+# A checked tree in our own compact form, plain tuples (quick to pickle to a worker, and only these kinds can
+# be built): ("num", start, end, value), ("name", start, end, name), ("neg" or "pos", start, end, operand),
+# ("chain", start, end, first, ((operator, operand), ...)) for a left-deep run of + and - or of * and /,
+# ("pow", start, end, base, exponent) and ("call", start, end, function, (argument, ...)); start and end are
+# the node's columns in the stripped text.
+Node = tuple
+
+
+def _compact(node: ast.AST) -> Node:
+    """A checked ``ast`` tree in the compact form."""
+    start, end = getattr(node, "col_offset", 0), getattr(node, "end_col_offset", None)
+    if isinstance(node, ast.Constant):
+        return ("num", start, end, node.value)
+    if isinstance(node, ast.Name):
+        return ("name", start, end, node.id)
+    if isinstance(node, ast.UnaryOp):
+        return ("neg" if isinstance(node.op, ast.USub) else "pos", start, end, _compact(node.operand))
+    if isinstance(node, ast.BinOp) and isinstance(node.op, (*_SUMS, *_PRODUCTS)):
+        # a long sum or product is a flat list, not a recursion as deep as it is long
+        items = _chain(node, _SUMS if isinstance(node.op, _SUMS) else _PRODUCTS)
+        rest = tuple((_OPERATORS[op], _compact(operand)) for op, operand, _ in items[1:])  # type: ignore[index]
+        return ("chain", start, end, _compact(items[0][1]), rest)
+    if isinstance(node, ast.BinOp):
+        return ("pow", start, end, _compact(node.left), _compact(node.right))
+    assert isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
+    return ("call", start, end, node.func.id, tuple(_compact(a) for a in node.args))
+
+
+@dataclass(frozen=True)
+class Parsed:
+    """An expression's text read once (gates 1 and 2): its checked tree and size bounds, picklable.
+
+    ``build`` turns it into SymPy (gate 3) without reading the text again, so a web process can read a
+    user's text in pure Python and a worker build what it read.  ``names`` are the names it was checked
+    against; only a namespace giving each of them a symbol may build it.
+    """
+
+    text: str  # as given
+    tree: Node = field(repr=False, compare=False)  # the checked tree in the compact form
+    size: Size
+    names: frozenset[str] = field(repr=False)
+
+
+def read(text: str, names: Collection[str]) -> Parsed:
+    """Gates 1 and 2 on ``text``: the one place an expression's text is read (``ast.parse``)."""
+    tree, facts = _checked(text, names)
+    # one set shared by many texts is pickled once
+    allowed = names if isinstance(names, frozenset) else frozenset(names)
+    return Parsed(text, _compact(tree.body), Size(facts.terms, facts.degree), allowed)
+
+
 def expression_size(text: str, names: Collection[str]) -> Size:
     """Check an expression as ``check_expression`` does and return its size bounds."""
     facts = _checked(text, names)[1]
@@ -625,60 +679,76 @@ def _checked(text: str, names: Collection[str]) -> tuple[ast.Expression, _Facts]
     return tree, facts
 
 
+@dataclass(frozen=True)
+class _Span:
+    """Where a compact node stands, as a refusal reads it from an ``ast`` node."""
+
+    col_offset: int
+    end_col_offset: int | None
+
+
 class _Builder:
-    """Gate 3: a checked tree into SymPy."""
+    """Gate 3: a checked tree (in the compact form) into SymPy."""
 
     def __init__(self, text: str, offset: int, names: Mapping[str, sp.Symbol]):
         self.checker = _Checker(text, offset, names)
         self.names = names
 
-    def build(self, node: ast.AST) -> sp.Expr:
-        if isinstance(node, ast.Constant):
+    def build(self, node: Node) -> sp.Expr:
+        kind = node[0]
+        if kind == "num":
             # A decimal literal becomes the exact rational it names, so derivations stay exact.
-            value = node.value
+            value = node[3]
             return sp.Integer(value) if isinstance(value, int) else sp.Rational(repr(value))
-        if isinstance(node, ast.Name):
-            return self.names[node.id] if node.id in self.names else CONSTANTS[node.id]
-        if isinstance(node, ast.UnaryOp):
-            inner = self.build(node.operand)
-            return -inner if isinstance(node.op, ast.USub) else inner
-        if isinstance(node, ast.BinOp) and isinstance(node.op, (*_SUMS, *_PRODUCTS)):
-            # a long sum or product is a flat list here too, not a recursion as deep as it is long
-            items = _chain(node, _SUMS if isinstance(node.op, _SUMS) else _PRODUCTS)
-            result = self.build(items[0][1])
-            for op, operand, _ in items[1:]:
+        if kind == "name":
+            return self.names[node[3]] if node[3] in self.names else CONSTANTS[node[3]]
+        if kind in ("neg", "pos"):
+            return -self.build(node[3]) if kind == "neg" else self.build(node[3])
+        if kind == "chain":
+            result = self.build(node[3])
+            for op, operand in node[4]:
                 right = self.build(operand)
-                if op is ast.Div and right == 0:
-                    raise self.checker.refuse(operand, "division by zero (this denominator is 0)")
-                result = _COMBINE[op](result, right)  # type: ignore[index]
+                if op == "/" and right == 0:
+                    raise self.refuse(operand, "division by zero (this denominator is 0)")
+                result = _COMBINE[op](result, right)
             return result
-        if isinstance(node, ast.BinOp):
-            return self.real(node, self.build(node.left) ** self.build(node.right))
-        assert isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
-        return self.real(node, FUNCTIONS[node.func.id](*(self.build(a) for a in node.args)))
+        if kind == "pow":
+            return self.real(node, self.build(node[3]) ** self.build(node[4]))
+        assert kind == "call"
+        return self.real(node, FUNCTIONS[node[3]](*(self.build(a) for a in node[4])))
 
-    def real(self, node: ast.AST, value: sp.Expr) -> sp.Expr:
+    def refuse(self, node: Node, why: str) -> ExpressionError:
+        return self.checker.refuse(_Span(node[1], node[2]), why)  # type: ignore[arg-type]
+
+    def real(self, node: Node, value: sp.Expr) -> sp.Expr:
         """A power or function value, refused when it is a constant that is not real (asin(2 + x - x))."""
         if value.is_number and value.is_finite is not False and value.is_extended_real is False:
-            raise self.checker.refuse(node, "this number is not real")
+            raise self.refuse(node, "this number is not real")
         return value
 
 
-_COMBINE: dict[type, Callable[[sp.Expr, sp.Expr], sp.Expr]] = {
-    ast.Add: lambda a, b: a + b,
-    ast.Sub: lambda a, b: a - b,
-    ast.Mult: lambda a, b: a * b,
-    ast.Div: lambda a, b: a / b,
+_COMBINE: dict[str, Callable[[sp.Expr, sp.Expr], sp.Expr]] = {
+    "+": lambda a, b: a + b,
+    "-": lambda a, b: a - b,
+    "*": lambda a, b: a * b,
+    "/": lambda a, b: a / b,
 }
 
 
 def parse_expression(text: str, names: Mapping[str, sp.Symbol]) -> sp.Expr:
     """Parse ``text`` into a SymPy expression over the symbols in ``names``."""
-    tree = check_expression(text, names)
-    spaced = text.translate({9: " ", 10: " ", 13: " "})
+    return build(read(text, names), names)
+
+
+def build(parsed: Parsed, names: Mapping[str, sp.Symbol]) -> sp.Expr:
+    """Gate 3: an expression read by ``read`` built into SymPy over the symbols in ``names``."""
+    if not parsed.names <= names.keys():
+        missing = ", ".join(sorted(parsed.names - names.keys()))
+        raise ValueError(f"{parsed.text[:60]!r} was checked against names this namespace lacks: {missing}")
+    spaced = parsed.text.translate({9: " ", 10: " ", 13: " "})
     stripped = spaced.strip()
     offset = len(spaced) - len(spaced.lstrip())
-    expr = _Builder(stripped, offset, names).build(tree.body)
+    expr = _Builder(stripped, offset, names).build(parsed.tree)
     if expr.has(sp.zoo, sp.oo, sp.nan, -sp.oo):
         raise ExpressionError(f"the expression is undefined (a division by zero?): {stripped[:60]!r}", stripped[:60])
     if expr.has(sp.I):

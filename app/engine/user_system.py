@@ -3,18 +3,25 @@
 A user system arrives in one of two input shapes, the API's request
 (``app/web/schemas_user.py``) or the playground's form (``app/web/playground_form.py``);
 ``app.service.user_checks.checked`` turns either's plain data into a ``UserSystem``
-after refusing what is not allowed.  From there on the cache keys, the worker's
-jobs, the exports and the page model all take this one value; the worker builds
-the engine's declaration (``system()``, app/scenes/types.py) from it.  No SymPy here.
+after refusing what is not allowed, and keeps each expression as it read it
+(``parsed``: the checked trees of ``app.engine.parse.read``, pure Python).  From
+there on the cache keys, the worker's jobs, the exports and the page model all
+take this one value; the worker builds each read expression in SymPy once
+(``app.service.user_jobs.build_system``) and the engine's declaration
+(``system()``, app/scenes/types.py) carries what it built, so no text is read
+twice (docs/parsing.md).  No SymPy here.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
-from dataclasses import dataclass
-from typing import Any
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
 
 from app.scenes.types import Parameter, Particle, System
+
+if TYPE_CHECKING:
+    from app.engine.parse import Parsed
 
 
 @dataclass(frozen=True)
@@ -48,6 +55,9 @@ class UserSystem:
     particles: tuple[DeclaredParticle, ...] = ()
     forces: tuple[tuple[str, str], ...] = ()  # (coordinate, Q), in the order given
     nonnegative: tuple[str, ...] = ()
+    # each expression as the check read it, by its location (``expressions()``); None until checked.  Not part
+    # of the value (equality, hashes and cache keys are the declaration's), but pickled with it to the worker.
+    parsed: Mapping[tuple, Parsed] | None = field(default=None, compare=False, repr=False)
 
     @classmethod
     def of(cls, data: Mapping[str, Any]) -> UserSystem:
@@ -116,31 +126,37 @@ class UserSystem:
         for name, text in self.forces:
             yield ("forces", name), text, True
 
-    def never_real(self) -> tuple[tuple, Exception] | None:
+    def never_real(self, built: Mapping[tuple, Any]) -> tuple[tuple, Exception] | None:
         """The first expression that is a real number nowhere, located, with its refusal (app.engine.reality).
 
-        Called by the worker before deriving (SymPy is imported here, not at import time).
+        ``built`` holds each expression built in SymPy, by location; called by the worker before deriving
+        (SymPy is imported here, not at import time).
         """
-        from app.engine.parse import ExpressionError, parse_expression
+        from app.engine.parse import ExpressionError
         from app.engine.reality import refuse_if_nowhere_real
         from app.engine.symbols import SymbolTable
 
         table = SymbolTable(self.coordinates, self.parameter_names)
-        names = table.namespace()
         fixed = {s: p.default for s, p in zip(table.params, self.parameters, strict=True)}
         free = [*table.q, *table.qd, table.t]
         for loc, text, velocities in self.expressions():
             if loc[0] == "forces":
                 continue  # a generalized force is not an energy (a complex one is refused by the numerics)
             try:
-                expr = parse_expression(text, names)
-                refuse_if_nowhere_real(text, expr, free if velocities else [*table.q, table.t], fixed)
+                refuse_if_nowhere_real(text, built[loc], free if velocities else [*table.q, table.t], fixed)
             except ExpressionError as exc:
                 return loc, exc
         return None
 
-    def system(self) -> System:
-        """The engine's declaration (a planar particle moves in z = 0)."""
+    def system(self, built: Mapping[tuple, Any] | None = None) -> System:
+        """The engine's declaration (a planar particle moves in z = 0), carrying the expressions ``built`` in
+        SymPy by location, if given, so that the engine builds none of them again."""
+        expressions: dict[str, Any] = {}
+        if built:
+            from sympy import Integer
+
+            expressions = {text: built[loc] for loc, text, _ in self.expressions()}
+            expressions.setdefault("0", Integer(0))  # the z of a planar particle
         return System(
             coordinates=self.coordinates,
             parameters=tuple(Parameter(p.name, p.default, p.unit, p.min, p.max) for p in self.parameters),
@@ -150,4 +166,5 @@ class UserSystem:
             lagrangian=self.lagrangian,
             forces=dict(self.forces),
             nonnegative=self.nonnegative,
+            built=expressions,
         )

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
 from app.limits import DEFAULT_T_END
 
@@ -107,6 +108,9 @@ class System:
     constraints: tuple[Constraint, ...] = ()
     cartesian_potential: str | None = None
     coordinate_change: CoordinateChange | None = None
+    # SymPy expressions already built from this declaration's texts, by text (a user system's, built once in the
+    # worker from what the web process read: docs/parsing.md); the engine reads any other text itself
+    built: Mapping[str, Any] = field(default_factory=dict, compare=False, repr=False)
 
 
 @dataclass(frozen=True)

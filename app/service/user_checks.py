@@ -10,8 +10,9 @@ A request arrives as plain data (the web layer validated its shape):
 (``app.engine.user_system.UserSystem``), refusing bad names and bad expressions,
 each refusal carrying the location of the offending field
 (``["particles", 0, "position", 1]``) and the character span of the offending
-part.  It runs in the web process before any job is queued; ``check_system``
-runs again in the worker before SymPy sees the text.
+part.  It runs in the web process before any job is queued, and the value keeps
+each expression as it was read (``UserSystem.parsed``): the worker builds SymPy
+from those without reading the text again (docs/parsing.md).
 """
 
 from __future__ import annotations
@@ -20,10 +21,11 @@ import hashlib
 import json
 import math
 from collections.abc import Mapping
+from dataclasses import replace
 from typing import Any
 
 from app.engine.errors import DerivationError, excerpt
-from app.engine.parse import MAX_TERMS, ExpressionError, Size, check_name, expression_size
+from app.engine.parse import MAX_TERMS, ExpressionError, Parsed, check_name, read
 from app.engine.user_system import UserSystem
 from app.errors import Refused, TooMuchWork
 
@@ -69,14 +71,14 @@ def _refuse(loc: tuple, exc: ExpressionError) -> InvalidSystem:
 
 
 def checked(data: Mapping[str, Any]) -> UserSystem:
-    """The user system of a request's plain data, or a located refusal."""
+    """The user system of a request's plain data, with its expressions as read, or a located refusal."""
     system = UserSystem.of(data)
-    check_system(system)
-    return system
+    return replace(system, parsed=check_system(system))
 
 
-def check_system(system: UserSystem) -> None:
-    """Refuse a system whose names or expressions are not allowed (pure Python, no SymPy)."""
+def check_system(system: UserSystem) -> dict[tuple, Parsed]:
+    """Refuse a system whose names or expressions are not allowed (pure Python, no SymPy); else each
+    expression as read (``app.engine.parse.read``), by its location in the request."""
     coordinates, parameters = system.coordinates, system.parameter_names
     if not 1 <= len(coordinates) <= MAX_COORDINATES:
         raise InvalidSystem(f"give between 1 and {MAX_COORDINATES} coordinates", ("coordinates",))
@@ -123,18 +125,19 @@ def check_system(system: UserSystem) -> None:
         if name not in coordinates:
             raise InvalidSystem(f"nonnegative[{i}]: {name[:40]!r} is not a coordinate", ("nonnegative", i), name[:40])
 
-    base = set(coordinates) | set(parameters) | {"t"}
+    base = frozenset(coordinates) | frozenset(parameters) | {"t"}
     with_velocities = base | {f"{q}_dot" for q in coordinates}
-    sizes = {}
+    parsed = {}
     for loc, text, velocities in system.expressions():
         try:
-            sizes[loc] = expression_size(text, with_velocities if velocities else base)
+            parsed[loc] = read(text, with_velocities if velocities else base)
         except ExpressionError as exc:
             raise _refuse(loc, exc) from None
-    _check_kinetic_size(system, sizes)
+    _check_kinetic_size(system, parsed)
+    return parsed
 
 
-def _check_kinetic_size(system: UserSystem, sizes: dict[tuple, Size]) -> None:
+def _check_kinetic_size(system: UserSystem, parsed: dict[tuple, Parsed]) -> None:
     """Refuse particles whose kinetic energy would expand past MAX_KINETIC_TERMS terms (before SymPy builds it).
 
     A position of n terms of degree d has a velocity of at most n*d terms (each
@@ -143,9 +146,9 @@ def _check_kinetic_size(system: UserSystem, sizes: dict[tuple, Size]) -> None:
     """
     total = 0
     for i, particle in enumerate(system.particles):
-        mass = sizes[("particles", i, "mass")].terms
+        mass = parsed[("particles", i, "mass")].size.terms
         for j in range(len(particle.position)):
-            size = sizes[("particles", i, "position", j)]
+            size = parsed[("particles", i, "position", j)].size
             velocity = size.terms * max(1, math.ceil(size.degree))
             total += mass * velocity * (velocity + 1) // 2
         if total > MAX_KINETIC_TERMS:

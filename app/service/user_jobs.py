@@ -1,7 +1,8 @@
 """The worker pool's jobs on a user system: build it in SymPy, derive, simulate, export.
 
-Each job takes the checked system (``app.engine.user_system.UserSystem``), checks
-it again (``user_checks.check_system``), builds every expression with the allowlist parser, derives the system with the engine under
+Each job takes the checked system (``app.engine.user_system.UserSystem``), builds
+each expression the web process read (``UserSystem.parsed``) in SymPy once, without
+reading its text again (docs/parsing.md), derives the system with the engine under
 one time budget and returns the JSON document as bytes.  A failure on user
 input comes back as a located refusal, never as a server error.
 """
@@ -20,7 +21,7 @@ from app.engine.budget import BudgetExceeded, time_limit
 from app.engine.contract import derivation_json
 from app.engine.derive import Derivation, derive
 from app.engine.errors import DerivationError
-from app.engine.parse import ExpressionError, parse_expression
+from app.engine.parse import ExpressionError, build
 from app.engine.symbols import SymbolTable
 from app.engine.user_system import UserSystem
 from app.errors import OverCapacity
@@ -38,18 +39,20 @@ def engine_seconds() -> float:
 
 
 def build_system(user: UserSystem) -> System:
-    """Check a user system again and build each expression in SymPy (gate 3), locating any refusal."""
-    check_system(user)
+    """The engine's declaration of a checked user system, each expression built in SymPy once (gate 3) from
+    what the check read, locating any refusal.  A system that was not checked (no ``parsed``) is checked here."""
+    parsed = user.parsed if user.parsed is not None else check_system(user)
     namespace = SymbolTable(user.coordinates, user.parameter_names).namespace()
     positional = {k: v for k, v in namespace.items() if not k.endswith("_dot")}
-    for loc, text, velocities in user.expressions():
+    built = {}
+    for loc, _, velocities in user.expressions():
         try:
-            parse_expression(text, namespace if velocities else positional)
+            built[loc] = build(parsed[loc], namespace if velocities else positional)
         except ExpressionError as exc:
             raise _refuse(loc, exc) from None
-    if (nowhere := user.never_real()) is not None:  # issue 32: an energy that is real nowhere
+    if (nowhere := user.never_real(built)) is not None:  # issue 32: an energy that is real nowhere
         raise _refuse(*nowhere)  # type: ignore[arg-type]
-    return user.system()
+    return user.system(built)
 
 
 @contextmanager

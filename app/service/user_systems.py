@@ -1,8 +1,9 @@
 """Systems users type in: derive, simulate and export them through the worker pool.
 
 Each method takes a checked ``UserSystem`` (the route builds it once with
-``user_checks.checked``, pure Python); the event loop only looks up caches and
-awaits: the jobs (``user_jobs``) parse, derive and simulate in a worker process
+``user_checks.checked``, pure Python, which reads each expression's text once);
+the event loop only looks up caches and awaits: the jobs (``user_jobs``) build
+what was read in SymPy, derive and simulate in a worker process
 under a hard time limit and a memory cap, with one fair-share ticket per job,
 and a request identical to one already running waits for that job.
 """

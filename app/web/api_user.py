@@ -1,9 +1,10 @@
 """POST /api/derive, POST /api/simulate and POST /api/export: systems users type in.
 
-The routes are ``async`` but never run SymPy: they check the request's shape
-and names in pure Python, look up a cache, take a fair-share ticket and await
-a job in the worker pool (app/service/worker.py), which parses, derives and
-simulates under a hard time limit and a memory cap.  Bodies are capped in
+The routes are ``async`` but never run SymPy: they check the request's shape,
+names and expressions in pure Python (reading each expression's text, once:
+docs/parsing.md), look up a cache, take a fair-share ticket and await a job in
+the worker pool (app/service/worker.py), which builds what was read in SymPy,
+derives and simulates under a hard time limit and a memory cap.  Bodies are capped in
 size before they are read (app/web/limits.py, for every route).
 """
 

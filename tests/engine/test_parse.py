@@ -8,9 +8,12 @@ from app.engine.parse import (
     MAX_LENGTH,
     MAX_NODES,
     ExpressionError,
+    build,
     check_expression,
     check_name,
+    expression_size,
     parse_expression,
+    read,
 )
 
 NAMES = {n: sp.Symbol(n, real=True) for n in ("x", "x_dot", "y", "m", "g", "t")}
@@ -178,3 +181,33 @@ def test_a_plain_syntax_error_gets_no_made_up_hint():
     with pytest.raises(ExpressionError) as e:
         check_expression("x +* 2", ["x"])
     assert "between factors" not in str(e.value)
+
+
+@pytest.mark.parametrize("text", ["m*x_dot**2/2 - m*g*x", "  m *\n x\t", "exp(-t/m)*Abs(y)", "1e-20*x"])
+def test_what_is_read_builds_after_pickling_as_parsing_does(text):
+    import pickle
+
+    parsed = pickle.loads(pickle.dumps(read(text, set(NAMES))))
+    assert parsed.text == text and parsed.size == expression_size(text, set(NAMES))
+    assert build(parsed, NAMES) == parse_expression(text, NAMES)
+
+
+def test_what_is_read_builds_only_over_the_names_it_was_checked_against():
+    parsed = read("m*x_dot", set(NAMES))
+    positional = {k: v for k, v in NAMES.items() if not k.endswith("_dot")}
+    with pytest.raises(ValueError, match="x_dot"):
+        build(parsed, positional)
+
+
+def test_building_refuses_what_only_sympy_finds_with_the_same_message():
+    # 1/(x - x) passes gates 1 and 2; gate 3, run on what was read, refuses it as parse_expression does
+    parsed = read(" 1/(x - x)", {"x"})
+    with pytest.raises(ExpressionError) as built:
+        build(parsed, NAMES)
+    with pytest.raises(ExpressionError) as parsed_whole:
+        parse_expression(" 1/(x - x)", NAMES)
+    assert (str(built.value), built.value.start, built.value.end) == (
+        str(parsed_whole.value),
+        parsed_whole.value.start,
+        parsed_whole.value.end,
+    )
