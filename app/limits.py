@@ -21,6 +21,10 @@ DISPLAY_SECONDS = 6.0  # the display simplifications of one document, shared
 # From three coordinates on (no chapter scene has more than two), the display simplifications share less:
 # the residuals and forces of a chain rarely simplify beyond sin² + cos² = 1, and the user waits for them.
 LARGE_DISPLAY_SECONDS = 1.5
+# The display simplifications of the playground's first stage (the equations and accelerations) share at
+# most this much: the equations are shown in their textbook rows when that is quick, else as the engine
+# wrote them; the whole document shows them again with its own, larger budget (app/service/staged.py).
+FIRST_DISPLAY_SECONDS = LARGE_DISPLAY_SECONDS
 # Each member of the document beyond the equations has its own time bound; one that runs out is left out
 # with a note in "skipped" (app/engine/contract.py).
 MEMBER_SECONDS = {

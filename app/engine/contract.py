@@ -24,7 +24,7 @@ from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_s
 from app.engine.rods import fixed_distances
 from app.engine.transform import Transformed
 from app.engine.trees import maybe_of_sympy
-from app.limits import DISPLAY_SECONDS, LARGE_DISPLAY_SECONDS
+from app.limits import DISPLAY_SECONDS, FIRST_DISPLAY_SECONDS, LARGE_DISPLAY_SECONDS
 from app.scenes.reasons import reason
 from app.scenes.types import Parameter, Scene
 
@@ -314,3 +314,41 @@ def transformed_json(tr: Transformed) -> dict[str, Any]:
         "inertia": {n: pr.pair(m) for n, m in zip(names, tr.inertia, strict=True)},
         "reduced_mass": pr.pair(tr.reduced_mass) if tr.reduced_mass is not None else None,
     }
+
+
+# What the whole document adds to the first stage, as the page names it while it waits.
+PENDING = (
+    ("steps", "the step-by-step derivation"),
+    ("conserved", "the conserved quantities"),
+    ("momenta", "the generalized momenta"),
+    ("hamilton", "Hamilton's equations"),
+    ("normal_modes", "the normal modes"),
+)
+
+
+def first_stage(d: Derivation) -> dict[str, Any]:
+    """The first stage of a document (the playground shows it while the rest is derived): the equations of
+    motion and the accelerations (or M and f when they stay M⁻¹f), printed, with what is still pending."""
+    table, eqs = d.table, d.equations
+    pr = Printer(table.latex_names())
+    skipped: list[Skipped] = []
+    with display_budget(FIRST_DISPLAY_SECONDS):
+        # the equations first: what the student waits for; the rest of this stage shares what is left
+        equations = _equation_pairs(d, pr)
+        accelerations = _accelerations(d, pr, skipped)
+        document = {
+            "stage": "equations",
+            "coordinates": list(table.names),
+            "angles": angle_coordinates(d),
+            "symbols": symbol_names(d),
+            "parameters": parameters_json(d.system.parameters),
+            "equations_of_motion": [
+                {"coordinate": name, **pair} for name, pair in zip(table.names, equations, strict=True)
+            ],
+            "accelerations": accelerations,
+            "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],
+            "forcing": [pr.pair(_shown(x)) for x in eqs.forcing] if not eqs.closed_form else [],
+            "skipped": [{"member": s.member, "reason": s.reason} for s in skipped],
+            "pending": [{"member": member, "name": name} for member, name in PENDING],
+        }
+    return document

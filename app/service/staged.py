@@ -16,63 +16,12 @@ import asyncio
 import json
 from typing import Any
 
-from app.engine.budget import Skipped, display_budget
-from app.engine.contract import (
-    LARGE_DISPLAY_SECONDS,
-    _accelerations,
-    _equation_pairs,
-    _shown,
-    angle_coordinates,
-    parameters_json,
-    symbol_names,
-)
-from app.engine.derive import Derivation
-from app.engine.report import Printer
+from app.engine.contract import first_stage
 from app.engine.user_system import UserSystem
 from app.service.encoding import dumps
 from app.service.user_checks import spec_key
 from app.service.user_jobs import derive_checked, engine_budget, guarded
 from app.service.user_systems import UserSystems
-
-# The display simplifications of the first stage share at most this much (seconds): the equations are
-# shown in their textbook rows when that is quick, else as the engine wrote them; the full document
-# shows them again with its own, larger budget.
-FIRST_DISPLAY_SECONDS = LARGE_DISPLAY_SECONDS
-# What the whole document adds to the first stage, as the page names it while it waits.
-PENDING = (
-    ("steps", "the step-by-step derivation"),
-    ("conserved", "the conserved quantities"),
-    ("momenta", "the generalized momenta"),
-    ("hamilton", "Hamilton's equations"),
-    ("normal_modes", "the normal modes"),
-)
-
-
-def first_stage(d: Derivation) -> dict[str, Any]:
-    """The equations of motion and the accelerations (or M and f when they stay M⁻¹f), printed."""
-    table, eqs = d.table, d.equations
-    pr = Printer(table.latex_names())
-    skipped: list[Skipped] = []
-    with display_budget(FIRST_DISPLAY_SECONDS):
-        # the equations first: what the student waits for; the rest of this stage shares what is left
-        equations = _equation_pairs(d, pr)
-        accelerations = _accelerations(d, pr, skipped)
-        document = {
-            "stage": "equations",
-            "coordinates": list(table.names),
-            "angles": angle_coordinates(d),
-            "symbols": symbol_names(d),
-            "parameters": parameters_json(d.system.parameters),
-            "equations_of_motion": [
-                {"coordinate": name, **pair} for name, pair in zip(table.names, equations, strict=True)
-            ],
-            "accelerations": accelerations,
-            "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],
-            "forcing": [pr.pair(_shown(x)) for x in eqs.forcing] if not eqs.closed_form else [],
-            "skipped": [{"member": s.member, "reason": s.reason} for s in skipped],
-            "pending": [{"member": member, "name": name} for member, name in PENDING],
-        }
-    return document
 
 
 def equations_job(user: UserSystem) -> bytes:
@@ -91,11 +40,11 @@ async def equations_or_whole(users: UserSystems, user: UserSystem, client: str, 
     The whole document carries ``"stage": "whole"`` so that a caller knows it need not ask again."""
     whole = users.derivations.get(spec_key(user))
     if whole is not None:
-        return {**json.loads(whole), "stage": "whole"}
+        return {**await asyncio.to_thread(json.loads, whole), "stage": "whole"}
     body = await users.run_job(
         users.derivations, spec_key(user, "equations"), client, address, users.derive_seconds, equations_job, user
     )
-    return json.loads(body)
+    return await asyncio.to_thread(json.loads, body)
 
 
 # The members of the first stage, which a whole document holds too (an API caller gets the same shape either way).

@@ -200,6 +200,8 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
     try:
         if len(str(request.url.query)) > MAX_QUERY:
             raise FormError(f"the system in the address is longer than {MAX_QUERY} characters", "f-form")
+        if (stage := request.query_params.get("stage")) not in (None, "whole"):
+            raise FormError(f"stage: {stage[:20]!r} is not a stage; the only one is 'whole' (or leave it out)", "f-form")
         if "new" in request.query_params:
             form = Form()  # an empty form to start from
         elif request.query_params:

@@ -17,7 +17,7 @@ VIEWPORTS = {
     "phone": {"viewport": {"width": 390, "height": 844}, "has_touch": True, "is_mobile": True},
 }
 FIRST = '#derived[data-stage="equations"] #results .math .katex'
-WHOLE = '#derived[data-stage="whole"] #derivation .step'
+WHOLE = '#derived[data-stage="whole"] #derivation .step:not(.bookkeeping)'
 
 
 @pytest.fixture(params=list(VIEWPORTS))

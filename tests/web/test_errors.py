@@ -25,8 +25,13 @@ class Failing:
 
     def __init__(self, exc: Exception):
         self.exc = exc
+        self.derivations: dict = {}  # nothing derived before: the page's first stage is a job of its own
+        self.derive_seconds = 1.0
 
     async def derive(self, spec, client, address):
+        raise self.exc
+
+    async def run_job(self, *args, **kwargs):  # the first stage's job (app/service/staged.py)
         raise self.exc
 
 
@@ -68,11 +73,13 @@ def test_the_api_answers_each_kind_of_failure_as_mapped(client, failing, kind):
     assert fields.items() <= body.items()
 
 
+@pytest.mark.parametrize("stage", [None, "whole"])
 @pytest.mark.parametrize("kind", KINDS)
-def test_the_playground_page_answers_each_kind_of_failure_as_the_api_does(client, failing, kind):
+def test_the_playground_page_answers_each_kind_of_failure_as_the_api_does(client, failing, kind, stage):
     exc, status, retry_after, _ = KINDS[kind]
     failing(exc)
-    page = client.get("/playground", params={"system": json.dumps(SPINNING_HOOP)})
+    params = {"system": json.dumps(SPINNING_HOOP), **({"stage": stage} if stage else {})}
+    page = client.get("/playground", params=params)
     assert page.status_code == status
     assert page.headers.get("Retry-After") == retry_after
     assert page.headers["content-type"].startswith("text/html")
