@@ -28,10 +28,11 @@ from collections.abc import Iterator, Mapping
 from typing import Any
 
 import sympy as sp
+from sympy.polys.polyerrors import BasePolynomialError
 from sympy.simplify.fu import TR8, TR10i
 
 from app.engine import budget
-from app.engine.budget import pythagoras, tidy, within_budget
+from app.engine.budget import memoized, pythagoras, tidy, within_budget
 
 FORM_SECONDS = 1.0
 # once the shared display budget is spent, each expression still gets this much (the results' forms are cheap)
@@ -87,19 +88,29 @@ def _angles(expr: sp.Expr) -> set[sp.Expr]:
 
 def _score(form: sp.Expr, angles: set[sp.Expr]) -> float:
     # operations, and one more for every angle the engine's form did not have (cos 2θ for sin² θ)
-    return float(sp.count_ops(form)) + len(_angles(form) - angles)
+    ops, own = memoized("ops", form, lambda: (float(sp.count_ops(form)), frozenset(_angles(form))))
+    return ops + len(own - angles)
 
 
 def _simplest(const: sp.Expr) -> sp.Expr:
     """A constant coefficient in its shortest form: as it is, common factors out, or cancelled."""
     if not isinstance(const, sp.Add):
         return const
-    forms = [const, sp.factor_terms(const), sp.factor(const)]
-    return min(forms, key=lambda e: (sp.count_ops(e), forms.index(e)))
+
+    def shortest() -> sp.Expr:
+        forms = [const, sp.factor_terms(const), sp.factor(const)]
+        return min(forms, key=lambda e: (sp.count_ops(e), forms.index(e)))
+
+    # a document meets the same coefficient in many candidates (m₁ + m₂ in every row of the double pendulum)
+    return memoized("simplest", const, shortest)
 
 
 def collected(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     """Terms with the same moving part added, each coefficient in its shortest form (½(m₁ + m₂) l₁² θ̇₁²)."""
+    return memoized("collected", (expr, frozenset(moving)), lambda: _collected(expr, moving))
+
+
+def _collected(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     groups: dict[sp.Expr, sp.Expr] = {}
     for term in sp.Add.make_args(sp.expand(expr)):
         const, part = term.as_independent(*moving, as_Add=False) if moving else (term, sp.Integer(1))
@@ -114,8 +125,12 @@ def linearised(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     rules (SymPy's ``TR8``); the denominator's rational numbers are cleared by multiplying above and
     below by their common denominator, and its sign chosen so that it reads positively.
     """
+    return memoized("linearised", (expr, frozenset(moving)), lambda: _linearised(expr, moving))
+
+
+def _linearised(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     num, den = sp.fraction(sp.cancel(sp.together(expr)))
-    num, den = sp.expand(TR8(sp.expand(num))), sp.expand(TR8(sp.expand(den)))
+    num, den = _products_to_sums(num), _products_to_sums(den)
     # the numbers in the denominator made whole: l₁(m₁ + m₂/2 − m₂ cos 2Δ/2) -> l₁(2m₁ + m₂ − m₂ cos 2Δ)
     scale = sp.ilcm(1, *(sp.fraction(t.as_coeff_Mul()[0])[1] for t in sp.Add.make_args(den)))
     num, den = sp.expand(num * scale), sp.expand(den * scale)
@@ -125,6 +140,35 @@ def linearised(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     if bottom != 1 or _factorable(top, moving):
         top = sp.factor_terms(top)
     return _angles_expanded(top / bottom if bottom != 1 else top)
+
+
+def _products_to_sums(expr: sp.Expr) -> sp.Expr:
+    """Every product of sines and cosines as a sum of single ones (SymPy's TR8), expanded.
+
+    TR8 works term by term on a sum, and a term's product of sines and cosines turns into the same sum
+    whatever it multiplies; so each distinct product is turned once per document (a chain's terms share a
+    handful: sin θ₁ sin θ₂, cos θ₁ cos θ₂, …) and multiplied back, and the expanded result is the one TR8
+    gives on the whole (both are sums of single sines and cosines of the same angles: one such sum only).
+    """
+    return memoized("products", expr, lambda: sp.expand(sp.Add(*map(_term_to_sums, sp.Add.make_args(sp.expand(expr))))))
+
+
+def _trig_factor(f: sp.Expr) -> bool:
+    """sin a or cos a, or a positive whole power of one, with an angle free of sines and cosines."""
+    base = f.base if f.is_Pow and f.exp.is_Integer and f.exp > 0 else f
+    return isinstance(base, (sp.sin, sp.cos)) and not base.args[0].has(sp.sin, sp.cos)
+
+
+def _term_to_sums(term: sp.Expr) -> sp.Expr:
+    factors = sp.Mul.make_args(term)
+    trig = [f for f in factors if _trig_factor(f)]
+    rest = [f for f in factors if not _trig_factor(f)]
+    if any(f.has(sp.sin, sp.cos) for f in rest):
+        return memoized("tr8", term, lambda: TR8(term))  # sines inside another factor: the term as a whole
+    if not trig or (len(trig) == 1 and not trig[0].is_Pow):
+        return term
+    product = sp.Mul(*trig)
+    return sp.Mul(*rest) * memoized("tr8", product, lambda: TR8(product))
 
 
 def _angles_expanded(expr: sp.Expr) -> sp.Expr:
@@ -141,6 +185,10 @@ def squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     For each parameter c, the terms linear in c are split by their degree in the velocities, and each
     part is factored; a part that factors with a squared sum replaces its terms.
     """
+    return memoized("squares", (expr, frozenset(moving)), lambda: _squares(expr, moving))
+
+
+def _squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     if not moving:
         return expr
     velocities = sorted((s for s in moving if s.name.endswith("_dot")), key=sp.default_sort_key)
@@ -162,7 +210,7 @@ def squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
         found = False
         pieces = []
         for part in by_degree.values():
-            factored = sp.factor(part)
+            factored = memoized("factor", part, lambda part=part: _squared_factors(part))
             if any(isinstance(b, sp.Add) and e == 2 for b, e in (f.as_base_exp() for f in sp.Mul.make_args(factored))):
                 pieces.append(factored)
                 found = True
@@ -171,6 +219,22 @@ def squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
         if found:
             out = sp.Add(rest, *(c * p for p in pieces))
     return out
+
+
+def _squared_factors(part: sp.Expr) -> sp.Expr:
+    """``part`` factored when a factor of it is repeated, else ``part`` itself.
+
+    A squared sum in the factorisation is a repeated factor, which the square-free decomposition (a gcd with
+    the derivatives, far cheaper than factoring) finds; with none repeated, factoring cannot give a square
+    and ``part`` stays as it is (as it would after factoring: ``squares`` keeps only squared sums).
+    """
+    try:
+        _, factors = sp.sqf_list(part)
+    except (BasePolynomialError, NotImplementedError):
+        return sp.factor(part)
+    if not any(k >= 2 and f.free_symbols for f, k in factors):
+        return part
+    return sp.factor(part)
 
 
 def _factorable(expr: sp.Expr, moving: set[sp.Symbol]) -> bool:
