@@ -41,6 +41,9 @@ FALLBACK_SECONDS = 0.2
 ENGINE_BONUS = 1.5
 SMALL = 120  # nodes below which expanding first is cheap
 NODE_BUDGET = 1500
+# products of at most this many sines and cosines are turned to sums here; TR8 takes longer ones (where it
+# leaves powers of its own sums unexpanded: cos⁸(x/2), sin²a sin²2a cos b)
+MAX_SUM_DEGREE = 3
 _CACHE: dict[tuple[sp.Expr, frozenset[sp.Symbol]], sp.Expr] = {}
 _CACHE_SIZE = 4096
 _local = threading.local()
@@ -168,7 +171,56 @@ def _term_to_sums(term: sp.Expr) -> sp.Expr:
     if not trig or (len(trig) == 1 and not trig[0].is_Pow):
         return term
     product = sp.Mul(*trig)
-    return sp.Mul(*rest) * memoized("tr8", product, lambda: TR8(product))
+    return sp.Mul(*rest) * memoized("tr8", product, lambda: _product_to_sum(product, trig))
+
+
+def _linear_angle(angle: sp.Expr) -> bool:
+    """A sum of symbols with rational coefficients (θ₁ − θ₂, 2θ): no number or constant of its own."""
+    terms = sp.Add.make_args(angle)
+    return all(
+        t.is_Symbol or (t.is_Mul and len(t.args) == 2 and t.args[0].is_Rational and t.args[1].is_Symbol) for t in terms
+    )
+
+
+def _times(trig: sp.Expr | None, factor: sp.Expr) -> sp.Expr:
+    """A single sine or cosine (or 1) times another, as a sum of single ones."""
+    if trig is None:
+        return factor
+    a, b = trig.args[0], factor.args[0]
+    if isinstance(trig, sp.sin):
+        # sin a sin b = ½[cos(a − b) − cos(a + b)],  sin a cos b = ½[sin(a + b) + sin(a − b)]
+        if isinstance(factor, sp.sin):
+            return (sp.cos(a - b) - sp.cos(a + b)) / 2
+        return (sp.sin(a + b) + sp.sin(a - b)) / 2
+    # cos a sin b = ½[sin(a + b) − sin(a − b)],  cos a cos b = ½[cos(a − b) + cos(a + b)]
+    if isinstance(factor, sp.sin):
+        return (sp.sin(a + b) - sp.sin(a - b)) / 2
+    return (sp.cos(a - b) + sp.cos(a + b)) / 2
+
+
+def _product_to_sum(product: sp.Expr, factors: list[sp.Expr]) -> sp.Expr:
+    """A product of sines and cosines of linear angles as a sum of single ones, one factor at a time.
+
+    Expanded, a sum of single sines and cosines of distinct linear angles is one expression only (they are
+    linearly independent), so this is what TR8 gives, without its gcd_terms between the steps; any other
+    angle (a number, π in it) is left to TR8.
+    """
+    degree = sum(int(f.exp) if f.is_Pow else 1 for f in factors)
+    if degree > MAX_SUM_DEGREE or not all(_linear_angle((f.base if f.is_Pow else f).args[0]) for f in factors):
+        return TR8(product)  # TR8 leaves powers of its own sums unexpanded there (cos⁸(x/2) gives cos⁴ x)
+    result: sp.Expr = sp.Integer(1)
+    for f in factors:
+        base, power = (f.base, int(f.exp)) if f.is_Pow else (f, 1)
+        for _ in range(power):
+            terms = []
+            for term in sp.Add.make_args(result):
+                trig = [g for g in sp.Mul.make_args(term) if isinstance(g, (sp.sin, sp.cos))]
+                if len(trig) > 1 or term.has(sp.Pow) and any(isinstance(p.base, (sp.sin, sp.cos)) for p in term.atoms(sp.Pow)):
+                    return TR8(product)  # not a sum of single ones (cannot happen with linear angles)
+                one = trig[0] if trig else None
+                terms.append((term / one if one is not None else term) * _times(one, base))
+            result = sp.expand(sp.Add(*terms))
+    return result
 
 
 def _angles_expanded(expr: sp.Expr) -> sp.Expr:
