@@ -143,6 +143,12 @@ def display_budget(seconds: float) -> Iterator[None]:
         _local.deadline, _local.memo = previous, memo
 
 
+def document_memo() -> dict[Any, Any] | None:
+    """The current document's memo (None outside any ``display_budget`` block)."""
+    memo: dict[Any, Any] | None = getattr(_local, "memo", None)
+    return memo
+
+
 def memoized(kind: str, key: Hashable, compute: Callable[[], T]) -> T:
     """``compute()``, remembered under (kind, key) for the rest of the current document (the outermost
     ``display_budget`` block); outside any document, computed every time.  Only for pure work: a result that

@@ -47,6 +47,7 @@ MAX_SUM_DEGREE = 3
 _CACHE: dict[tuple[sp.Expr, frozenset[sp.Symbol]], sp.Expr] = {}
 _CACHE_SIZE = 4096
 _local = threading.local()
+_LATE_LIMIT = ("forms", "late limit")  # in the document's memo: the smallest size whose late search ran out
 
 
 def use_names(names: Mapping[sp.Symbol, str]) -> None:
@@ -392,8 +393,12 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, secon
         return _CACHE[key]
     nodes = _nodes(expr, NODE_BUDGET)
     # once the shared budget is spent, a small expression still gets LATE_SECONDS; a large one only its fallback
-    left = max(budget._remaining(seconds), min(seconds, LATE_SECONDS) if nodes < 4 * SMALL else 0.0)
-    if nodes > NODE_BUDGET or left <= 0.01:
+    shared = budget._remaining(seconds)
+    late = shared < min(seconds, LATE_SECONDS)
+    left = max(shared, min(seconds, LATE_SECONDS) if nodes < 4 * SMALL else 0.0)
+    memo = budget.document_memo()
+    # a late search that ran out of time at this size in this document would again at any larger size
+    if nodes > NODE_BUDGET or left <= 0.01 or (late and memo is not None and nodes >= memo.get(_LATE_LIMIT, nodes + 1)):
         return _fallback(expr)
     angles = _angles(expr)
 
@@ -408,7 +413,10 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, secon
                 best[:] = [form, score]
         return True
 
-    if within_budget(search, False, left) is False and best[0] is expr:
+    finished = within_budget(search, False, left)
+    if finished is False and late and memo is not None:
+        memo[_LATE_LIMIT] = min(nodes, memo.get(_LATE_LIMIT, nodes))
+    if finished is False and best[0] is expr:
         fallback = _fallback(expr)
         if left < seconds:  # the shared budget ran out, not this expression's own time: try again another time
             return fallback
