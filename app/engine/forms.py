@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Iterator, Mapping
+from functools import partial
 from typing import Any
 
 import sympy as sp
@@ -216,7 +217,11 @@ def _product_to_sum(product: sp.Expr, factors: list[sp.Expr]) -> sp.Expr:
             terms = []
             for term in sp.Add.make_args(result):
                 trig = [g for g in sp.Mul.make_args(term) if isinstance(g, (sp.sin, sp.cos))]
-                if len(trig) > 1 or term.has(sp.Pow) and any(isinstance(p.base, (sp.sin, sp.cos)) for p in term.atoms(sp.Pow)):
+                if (
+                    len(trig) > 1
+                    or term.has(sp.Pow)
+                    and any(isinstance(p.base, (sp.sin, sp.cos)) for p in term.atoms(sp.Pow))
+                ):
                     return TR8(product)  # not a sum of single ones (cannot happen with linear angles)
                 one = trig[0] if trig else None
                 terms.append((term / one if one is not None else term) * _times(one, base))
@@ -263,7 +268,7 @@ def _squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
         found = False
         pieces = []
         for part in by_degree.values():
-            factored = memoized("factor", part, lambda part=part: _squared_factors(part))
+            factored = memoized("factor", part, partial(_squared_factors, part))
             if any(isinstance(b, sp.Add) and e == 2 for b, e in (f.as_base_exp() for f in sp.Mul.make_args(factored))):
                 pieces.append(factored)
                 found = True

@@ -103,9 +103,12 @@ def _irreducible(poly: sp.Poly) -> bool:
     """The polynomial (in lambda, coefficients polynomial in the parameters) has no factor of lower degree:
     a factorisation would survive setting the parameters to numbers that keep the leading coefficient, so
     one such point where it is irreducible over the rationals proves it."""
-    if not poly.get_domain().is_PolynomialRing or not poly.get_domain().dom.is_QQ | poly.get_domain().dom.is_ZZ:
+    domain = poly.get_domain()
+    if not (domain.is_PolynomialRing and (domain.dom.is_ZZ or domain.dom.is_QQ)):
         return False
-    point = {s: sp.Rational(7 + 3 * i, 11 + 2 * i) for i, s in enumerate(sorted(poly.free_symbols - {poly.gen}, key=str))}
+    point = {
+        s: sp.Rational(7 + 3 * i, 11 + 2 * i) for i, s in enumerate(sorted(poly.free_symbols - {poly.gen}, key=str))
+    }
     if poly.LC().xreplace(point) == 0:
         return False
     return sp.Poly(poly.as_expr().xreplace(point), poly.gen).is_irreducible
