@@ -286,6 +286,8 @@ def _squared_factors(part: sp.Expr) -> sp.Expr:
     the derivatives, far cheaper than factoring) finds; with none repeated, factoring cannot give a square
     and ``part`` stays as it is (as it would after factoring: ``squares`` keeps only squared sums).
     """
+    if _square_free_at_a_point(part):
+        return part
     try:
         _, factors = sp.sqf_list(part)
     except (BasePolynomialError, NotImplementedError):
@@ -293,6 +295,30 @@ def _squared_factors(part: sp.Expr) -> sp.Expr:
     if not any(k >= 2 and f.free_symbols for f, k in factors):
         return part
     return sp.factor(part)
+
+
+def _square_free_at_a_point(part: sp.Expr) -> bool:
+    """True when ``part`` (a polynomial in its symbols, sines and cosines) provably has no repeated factor.
+
+    A factor A² with A containing x survives setting the other generators to numbers that keep the leading
+    coefficient in x, as a repeated root of one variable (a gcd with the derivative); so a point where every
+    variable of degree ≥ 2 gives a square-free polynomial proves it.  False: not shown (the full test decides).
+    """
+    try:
+        poly = sp.Poly(part)
+    except (BasePolynomialError, NotImplementedError):
+        return False
+    if not poly.get_domain().is_QQ and not poly.get_domain().is_ZZ:
+        return False
+    gens = poly.gens
+    point = {g: sp.Rational(13 + 5 * i, 7 + 3 * i) for i, g in enumerate(gens)}
+    for x in gens:
+        if poly.degree(x) < 2:
+            continue  # A² would give degree 2 at least
+        one = poly.eval({g: point[g] for g in gens if g != x})
+        if one.degree() != poly.degree(x) or one.gcd(one.diff()).degree() > 0:
+            return False
+    return True
 
 
 def _factorable(expr: sp.Expr, moving: set[sp.Symbol]) -> bool:

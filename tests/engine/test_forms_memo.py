@@ -78,3 +78,24 @@ def test_a_late_search_that_ran_out_stops_larger_ones() -> None:
         assert memo is not None
         memo[forms._LATE_LIMIT] = 10
         assert forms.textbook_form(expr, {}) == forms._fallback(expr)
+
+
+def _squared(e: sp.Expr) -> bool:
+    return any(isinstance(b, sp.Add) and n == 2 for b, n in (f.as_base_exp() for f in sp.Mul.make_args(e)))
+
+
+def test_square_free_at_a_point_proves_only_square_free() -> None:
+    """The shortcut past factoring says square-free only where factoring finds no squared sum."""
+    k, l0 = sp.symbols("k l0")
+    rng = random.Random(3)
+    atoms = [x, y, z, a, sp.sin(x), sp.cos(y), sp.Rational(1, 2), x + y, a - k, sp.sqrt(z), sp.cos(x - y)]
+    for _ in range(150):
+        e = _random_sum(rng, atoms)
+        if rng.random() < 0.4:
+            e = sp.expand(e * rng.choice([x + y, a - k, sp.sin(x) + 1, x]) ** 2)
+        factored, got = sp.factor(e), forms._squared_factors(e)
+        # what squares() reads: a squared sum among the factors, and then that factorisation
+        assert _squared(got) == _squared(factored), e
+        assert got == factored or not _squared(factored), e
+    assert not forms._square_free_at_a_point(sp.expand(k * (x - y + l0) ** 2))
+    assert forms._square_free_at_a_point(sp.expand(x**2 + y**2))
