@@ -14,10 +14,10 @@ import random
 import signal
 import threading
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Hashable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
-from typing import TypeVar
+from typing import Any, TypeVar
 
 import sympy as sp
 
@@ -128,13 +128,36 @@ _PYTHAGORAS_CACHE: dict[sp.Expr, sp.Expr] = {}
 
 @contextmanager
 def display_budget(seconds: float) -> Iterator[None]:
-    """Share one time budget among all display simplifications in the block."""
-    previous = getattr(_local, "deadline", None)
+    """Share one time budget among all display simplifications in the block, and one memo (``memoized``):
+    the outermost block is one document, and what it remembers ends with it."""
+    previous, memo = getattr(_local, "deadline", None), getattr(_local, "memo", None)
     _local.deadline = time.monotonic() + seconds
+    if memo is None:
+        _local.memo = {}
     try:
         yield
     finally:
-        _local.deadline = previous
+        _local.deadline, _local.memo = previous, memo
+
+
+def document_memo() -> dict[Any, Any] | None:
+    """The current document's memo (None outside any ``display_budget`` block)."""
+    memo: dict[Any, Any] | None = getattr(_local, "memo", None)
+    return memo
+
+
+def memoized(kind: str, key: Hashable, compute: Callable[[], T]) -> T:
+    """``compute()``, remembered under (kind, key) for the rest of the current document (the outermost
+    ``display_budget`` block); outside any document, computed every time.  Only for pure work: a result that
+    depends on the clock must not be remembered here."""
+    memo: dict[tuple[str, Hashable], Any] | None = getattr(_local, "memo", None)
+    if memo is None:
+        return compute()
+    if (kind, key) in memo:
+        return memo[(kind, key)]
+    value = compute()
+    memo[(kind, key)] = value
+    return value
 
 
 @contextmanager

@@ -25,21 +25,27 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Iterator, Mapping
+from functools import partial
 from typing import Any
 
 import sympy as sp
+from sympy.polys.polyerrors import BasePolynomialError
 from sympy.simplify.fu import TR8, TR10i
 
 from app.engine import budget
-from app.engine.budget import pythagoras, tidy, within_budget
+from app.engine.budget import memoized, pythagoras, tidy, within_budget
 from app.limits import FALLBACK_SECONDS, FORM_SECONDS, LATE_SECONDS
 
 ENGINE_BONUS = 1.5
 SMALL = 120  # nodes below which expanding first is cheap
 NODE_BUDGET = 1500
+# products of at most this many sines and cosines are turned to sums here; TR8 takes longer ones (where it
+# leaves powers of its own sums unexpanded: cos⁸(x/2), sin²a sin²2a cos b)
+MAX_SUM_DEGREE = 3
 _CACHE: dict[tuple[sp.Expr, frozenset[sp.Symbol]], sp.Expr] = {}
 _CACHE_SIZE = 4096
 _local = threading.local()
+_LATE_LIMIT = ("forms", "late limit")  # in the document's memo: the smallest size whose late search ran out
 
 
 def use_names(names: Mapping[sp.Symbol, str]) -> None:
@@ -84,19 +90,29 @@ def _angles(expr: sp.Expr) -> set[sp.Expr]:
 
 def _score(form: sp.Expr, angles: set[sp.Expr]) -> float:
     # operations, and one more for every angle the engine's form did not have (cos 2θ for sin² θ)
-    return float(sp.count_ops(form)) + len(_angles(form) - angles)
+    ops, own = memoized("ops", form, lambda: (float(sp.count_ops(form)), frozenset(_angles(form))))
+    return ops + len(own - angles)
 
 
 def _simplest(const: sp.Expr) -> sp.Expr:
     """A constant coefficient in its shortest form: as it is, common factors out, or cancelled."""
     if not isinstance(const, sp.Add):
         return const
-    forms = [const, sp.factor_terms(const), sp.factor(const)]
-    return min(forms, key=lambda e: (sp.count_ops(e), forms.index(e)))
+
+    def shortest() -> sp.Expr:
+        forms = [const, sp.factor_terms(const), sp.factor(const)]
+        return min(forms, key=lambda e: (sp.count_ops(e), forms.index(e)))
+
+    # a document meets the same coefficient in many candidates (m₁ + m₂ in every row of the double pendulum)
+    return memoized("simplest", const, shortest)
 
 
 def collected(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     """Terms with the same moving part added, each coefficient in its shortest form (½(m₁ + m₂) l₁² θ̇₁²)."""
+    return memoized("collected", (expr, frozenset(moving)), lambda: _collected(expr, moving))
+
+
+def _collected(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     groups: dict[sp.Expr, sp.Expr] = {}
     for term in sp.Add.make_args(sp.expand(expr)):
         const, part = term.as_independent(*moving, as_Add=False) if moving else (term, sp.Integer(1))
@@ -111,8 +127,12 @@ def linearised(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     rules (SymPy's ``TR8``); the denominator's rational numbers are cleared by multiplying above and
     below by their common denominator, and its sign chosen so that it reads positively.
     """
+    return memoized("linearised", (expr, frozenset(moving)), lambda: _linearised(expr, moving))
+
+
+def _linearised(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     num, den = sp.fraction(sp.cancel(sp.together(expr)))
-    num, den = sp.expand(TR8(sp.expand(num))), sp.expand(TR8(sp.expand(den)))
+    num, den = _products_to_sums(num), _products_to_sums(den)
     # the numbers in the denominator made whole: l₁(m₁ + m₂/2 − m₂ cos 2Δ/2) -> l₁(2m₁ + m₂ − m₂ cos 2Δ)
     scale = sp.ilcm(1, *(sp.fraction(t.as_coeff_Mul()[0])[1] for t in sp.Add.make_args(den)))
     num, den = sp.expand(num * scale), sp.expand(den * scale)
@@ -122,6 +142,88 @@ def linearised(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     if bottom != 1 or _factorable(top, moving):
         top = sp.factor_terms(top)
     return _angles_expanded(top / bottom if bottom != 1 else top)
+
+
+def _products_to_sums(expr: sp.Expr) -> sp.Expr:
+    """Every product of sines and cosines as a sum of single ones (SymPy's TR8), expanded.
+
+    TR8 works term by term on a sum, and a term's product of sines and cosines turns into the same sum
+    whatever it multiplies; so each distinct product is turned once per document (a chain's terms share a
+    handful: sin θ₁ sin θ₂, cos θ₁ cos θ₂, …) and multiplied back, and the expanded result is the one TR8
+    gives on the whole (both are sums of single sines and cosines of the same angles: one such sum only).
+    """
+    return memoized("products", expr, lambda: sp.expand(sp.Add(*map(_term_to_sums, sp.Add.make_args(sp.expand(expr))))))
+
+
+def _trig_factor(f: sp.Expr) -> bool:
+    """sin a or cos a, or a positive whole power of one, with an angle free of sines and cosines."""
+    base = f.base if f.is_Pow and f.exp.is_Integer and f.exp > 0 else f
+    return isinstance(base, (sp.sin, sp.cos)) and not base.args[0].has(sp.sin, sp.cos)
+
+
+def _term_to_sums(term: sp.Expr) -> sp.Expr:
+    factors = sp.Mul.make_args(term)
+    trig = [f for f in factors if _trig_factor(f)]
+    rest = [f for f in factors if not _trig_factor(f)]
+    if any(f.has(sp.sin, sp.cos) for f in rest):
+        return memoized("tr8", term, lambda: TR8(term))  # sines inside another factor: the term as a whole
+    if not trig or (len(trig) == 1 and not trig[0].is_Pow):
+        return term
+    product = sp.Mul(*trig)
+    return sp.Mul(*rest) * memoized("tr8", product, lambda: _product_to_sum(product, trig))
+
+
+def _linear_angle(angle: sp.Expr) -> bool:
+    """A sum of symbols with rational coefficients (θ₁ − θ₂, 2θ): no number or constant of its own."""
+    terms = sp.Add.make_args(angle)
+    return all(
+        t.is_Symbol or (t.is_Mul and len(t.args) == 2 and t.args[0].is_Rational and t.args[1].is_Symbol) for t in terms
+    )
+
+
+def _times(trig: sp.Expr | None, factor: sp.Expr) -> sp.Expr:
+    """A single sine or cosine (or 1) times another, as a sum of single ones."""
+    if trig is None:
+        return factor
+    a, b = trig.args[0], factor.args[0]
+    if isinstance(trig, sp.sin):
+        # sin a sin b = ½[cos(a − b) − cos(a + b)],  sin a cos b = ½[sin(a + b) + sin(a − b)]
+        if isinstance(factor, sp.sin):
+            return (sp.cos(a - b) - sp.cos(a + b)) / 2
+        return (sp.sin(a + b) + sp.sin(a - b)) / 2
+    # cos a sin b = ½[sin(a + b) − sin(a − b)],  cos a cos b = ½[cos(a − b) + cos(a + b)]
+    if isinstance(factor, sp.sin):
+        return (sp.sin(a + b) - sp.sin(a - b)) / 2
+    return (sp.cos(a - b) + sp.cos(a + b)) / 2
+
+
+def _product_to_sum(product: sp.Expr, factors: list[sp.Expr]) -> sp.Expr:
+    """A product of sines and cosines of linear angles as a sum of single ones, one factor at a time.
+
+    Expanded, a sum of single sines and cosines of distinct linear angles is one expression only (they are
+    linearly independent), so this is what TR8 gives, without its gcd_terms between the steps; any other
+    angle (a number, π in it) is left to TR8.
+    """
+    degree = sum(int(f.exp) if f.is_Pow else 1 for f in factors)
+    if degree > MAX_SUM_DEGREE or not all(_linear_angle((f.base if f.is_Pow else f).args[0]) for f in factors):
+        return TR8(product)  # TR8 leaves powers of its own sums unexpanded there (cos⁸(x/2) gives cos⁴ x)
+    result: sp.Expr = sp.Integer(1)
+    for f in factors:
+        base, power = (f.base, int(f.exp)) if f.is_Pow else (f, 1)
+        for _ in range(power):
+            terms = []
+            for term in sp.Add.make_args(result):
+                trig = [g for g in sp.Mul.make_args(term) if isinstance(g, (sp.sin, sp.cos))]
+                if (
+                    len(trig) > 1
+                    or term.has(sp.Pow)
+                    and any(isinstance(p.base, (sp.sin, sp.cos)) for p in term.atoms(sp.Pow))
+                ):
+                    return TR8(product)  # not a sum of single ones (cannot happen with linear angles)
+                one = trig[0] if trig else None
+                terms.append((term / one if one is not None else term) * _times(one, base))
+            result = sp.expand(sp.Add(*terms))
+    return result
 
 
 def _angles_expanded(expr: sp.Expr) -> sp.Expr:
@@ -138,6 +240,10 @@ def squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     For each parameter c, the terms linear in c are split by their degree in the velocities, and each
     part is factored; a part that factors with a squared sum replaces its terms.
     """
+    return memoized("squares", (expr, frozenset(moving)), lambda: _squares(expr, moving))
+
+
+def _squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     if not moving:
         return expr
     velocities = sorted((s for s in moving if s.name.endswith("_dot")), key=sp.default_sort_key)
@@ -159,7 +265,7 @@ def squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
         found = False
         pieces = []
         for part in by_degree.values():
-            factored = sp.factor(part)
+            factored = memoized("factor", part, partial(_squared_factors, part))
             if any(isinstance(b, sp.Add) and e == 2 for b, e in (f.as_base_exp() for f in sp.Mul.make_args(factored))):
                 pieces.append(factored)
                 found = True
@@ -168,6 +274,48 @@ def squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
         if found:
             out = sp.Add(rest, *(c * p for p in pieces))
     return out
+
+
+def _squared_factors(part: sp.Expr) -> sp.Expr:
+    """``part`` factored when a factor of it is repeated, else ``part`` itself.
+
+    A squared sum in the factorisation is a repeated factor, which the square-free decomposition (a gcd with
+    the derivatives, far cheaper than factoring) finds; with none repeated, factoring cannot give a square
+    and ``part`` stays as it is (as it would after factoring: ``squares`` keeps only squared sums).
+    """
+    if _square_free_at_a_point(part):
+        return part
+    try:
+        _, factors = sp.sqf_list(part)
+    except (BasePolynomialError, NotImplementedError):
+        return sp.factor(part)
+    if not any(k >= 2 and f.free_symbols for f, k in factors):
+        return part
+    return sp.factor(part)
+
+
+def _square_free_at_a_point(part: sp.Expr) -> bool:
+    """True when ``part`` (a polynomial in its symbols, sines and cosines) provably has no repeated factor.
+
+    A factor A² with A containing x survives setting the other generators to numbers that keep the leading
+    coefficient in x, as a repeated root of one variable (a gcd with the derivative); so a point where every
+    variable of degree ≥ 2 gives a square-free polynomial proves it.  False: not shown (the full test decides).
+    """
+    try:
+        poly = sp.Poly(part)
+    except (BasePolynomialError, NotImplementedError):
+        return False
+    if not poly.get_domain().is_QQ and not poly.get_domain().is_ZZ:
+        return False
+    gens = poly.gens
+    point = {g: sp.Rational(13 + 5 * i, 7 + 3 * i) for i, g in enumerate(gens)}
+    for x in gens:
+        if poly.degree(x) < 2:
+            continue  # A² would give degree 2 at least
+        one = poly.eval({g: point[g] for g in gens if g != x})
+        if one.degree() != poly.degree(x) or one.gcd(one.diff()).degree() > 0:
+            return False
+    return True
 
 
 def _factorable(expr: sp.Expr, moving: set[sp.Symbol]) -> bool:
@@ -273,8 +421,12 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, secon
         return _CACHE[key]
     nodes = _nodes(expr, NODE_BUDGET)
     # once the shared budget is spent, a small expression still gets LATE_SECONDS; a large one only its fallback
-    left = max(budget._remaining(seconds), min(seconds, LATE_SECONDS) if nodes < 4 * SMALL else 0.0)
-    if nodes > NODE_BUDGET or left <= 0.01:
+    shared = budget._remaining(seconds)
+    late = shared < min(seconds, LATE_SECONDS)
+    left = max(shared, min(seconds, LATE_SECONDS) if nodes < 4 * SMALL else 0.0)
+    memo = budget.document_memo()
+    # a late search that ran out of time at this size in this document would again at any larger size
+    if nodes > NODE_BUDGET or left <= 0.01 or (late and memo is not None and nodes >= memo.get(_LATE_LIMIT, nodes + 1)):
         return _fallback(expr)
     angles = _angles(expr)
 
@@ -289,7 +441,10 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, secon
                 best[:] = [form, score]
         return True
 
-    if within_budget(search, False, left) is False and best[0] is expr:
+    finished = within_budget(search, False, left)
+    if finished is False and late and memo is not None:
+        memo[_LATE_LIMIT] = min(nodes, memo.get(_LATE_LIMIT, nodes))
+    if finished is False and best[0] is expr:
         fallback = _fallback(expr)
         if left < seconds:  # the shared budget ran out, not this expression's own time: try again another time
             return fallback

@@ -88,10 +88,30 @@ def _roots(M: sp.Matrix, K: sp.Matrix) -> list[sp.Expr]:
         return [_neat((-b - root) / (2 * a)), _neat((-b + root) / (2 * a))]
     lam = sp.Dummy("lambda")
     poly = sp.Poly(sp.expand((K - lam * M).det(method="berkowitz")), lam)
-    roots = sp.roots(poly, multiple=True)
+    # with parameters in the coefficients, Cardano's and Ferrari's formulas run far past MAX_EXACT_OPS (and
+    # past EIGEN_SECONDS at every equilibrium of a triple pendulum): only roots from factors of degree ≤ 2
+    general = not any(c.free_symbols for c in poly.all_coeffs())
+    if not general and _irreducible(poly):
+        return []  # no factor of degree ≤ 2: every root would need those formulas
+    roots = sp.roots(poly, multiple=True, cubics=general, quartics=general)
     if len(roots) != M.shape[0]:
         return []
     return [sp.factor_terms(r) for r in roots]
+
+
+def _irreducible(poly: sp.Poly) -> bool:
+    """The polynomial (in lambda, coefficients polynomial in the parameters) has no factor of lower degree:
+    a factorisation would survive setting the parameters to numbers that keep the leading coefficient, so
+    one such point where it is irreducible over the rationals proves it."""
+    domain = poly.get_domain()
+    if not (domain.is_PolynomialRing and (domain.dom.is_ZZ or domain.dom.is_QQ)):
+        return False
+    point = {
+        s: sp.Rational(7 + 3 * i, 11 + 2 * i) for i, s in enumerate(sorted(poly.free_symbols - {poly.gen}, key=str))
+    }
+    if poly.LC().xreplace(point) == 0:
+        return False
+    return sp.Poly(poly.as_expr().xreplace(point), poly.gen).is_irreducible
 
 
 def eigenvalues(M: sp.Matrix, K: sp.Matrix, assume: Mapping[sp.Symbol, sp.Symbol]) -> list[sp.Expr]:

@@ -1,0 +1,101 @@
+"""The display forms' shortcuts give what the long way gives (issue 35: the whole document's time)."""
+
+from __future__ import annotations
+
+import random
+
+import sympy as sp
+from sympy.simplify.fu import TR8
+
+from app.engine import budget, forms
+from app.engine.budget import display_budget, memoized
+
+x, y, z, a = sp.symbols("x y z a")
+ANGLES = [x, y, z, x - y, 2 * x - 2 * y, x + y - z, 3 * z, x / 2]
+
+
+def _random_sum(rng: random.Random, atoms: list[sp.Expr]) -> sp.Expr:
+    return sp.Add(*(
+        sp.Mul(*(rng.choice(atoms) ** rng.randint(1, 3) for _ in range(rng.randint(1, 4))))
+        for _ in range(rng.randint(1, 4))
+    ))  # fmt: skip
+
+
+def test_products_to_sums_is_what_tr8_gives() -> None:
+    """Term by term, with each product turned once: the same expanded sum as TR8 on the whole (sines inside
+    other factors, numbers and π in angles, tangents and reciprocals included)."""
+    atoms = [sp.sin(x), sp.cos(x), sp.sin(y), sp.cos(x - y), sp.cos(2 * x - z), sp.sin(z), a, x, sp.Rational(1, 2),
+             sp.sin(1), sp.cos(sp.pi / 5 + x), sp.sqrt(1 + sp.sin(x) ** 2), 1 / sp.cos(y), sp.tan(x)]  # fmt: skip
+    rng = random.Random(1)
+    with display_budget(600):
+        for _ in range(120):
+            e = _random_sum(rng, atoms)
+            assert forms._products_to_sums(e) == sp.expand(TR8(sp.expand(e))), e
+
+
+def test_short_products_turned_directly_agree_with_tr8() -> None:
+    rng = random.Random(5)
+    checked = 0
+    for _ in range(300):
+        product = sp.Mul(*(rng.choice([sp.sin, sp.cos])(rng.choice(ANGLES)) for _ in range(rng.randint(2, 4))))
+        factors = [f for f in sp.Mul.make_args(product) if not f.is_Number]
+        product = sp.Mul(*factors)
+        if sum(int(f.exp) if f.is_Pow else 1 for f in factors) <= forms.MAX_SUM_DEGREE:
+            checked += 1
+        assert sp.expand(forms._product_to_sum(product, factors)) == sp.expand(TR8(product)), product
+    assert checked > 100
+
+
+def test_tr8_leaves_powers_of_its_sums_beyond_the_direct_degree() -> None:
+    """Why longer products stay with TR8: there it does not give one sum of single sines and cosines."""
+    assert sp.expand(TR8(sp.sin(x) ** 4)).has(sp.cos(2 * x) ** 2)
+    assert forms.MAX_SUM_DEGREE < 4
+
+
+def test_memo_lives_within_one_document() -> None:
+    calls: list[int] = []
+
+    def work() -> int:
+        calls.append(1)
+        return len(calls)
+
+    assert memoized("test", "key", work) == 1 and memoized("test", "key", work) == 2  # no document: every time
+    with display_budget(10):
+        assert memoized("test", "key", work) == 3
+        with display_budget(5):  # a document inside a document (the transformed derivation) shares it
+            assert memoized("test", "key", work) == 3
+        assert memoized("test", "key", work) == 3
+    assert budget.document_memo() is None
+    with display_budget(10):
+        assert memoized("test", "key", work) == 4  # the next document starts empty
+
+
+def test_a_late_search_that_ran_out_stops_larger_ones() -> None:
+    """Past the shared budget, once a search ran out at some size, larger expressions take the cheap form."""
+    expr = sp.expand((x + y + a) ** 3 * sp.sin(x) * sp.cos(y))
+    with display_budget(0.0):
+        memo = budget.document_memo()
+        assert memo is not None
+        memo[forms._LATE_LIMIT] = 10
+        assert forms.textbook_form(expr, {}) == forms._fallback(expr)
+
+
+def _squared(e: sp.Expr) -> bool:
+    return any(isinstance(b, sp.Add) and n == 2 for b, n in (f.as_base_exp() for f in sp.Mul.make_args(e)))
+
+
+def test_square_free_at_a_point_proves_only_square_free() -> None:
+    """The shortcut past factoring says square-free only where factoring finds no squared sum."""
+    k, l0 = sp.symbols("k l0")
+    rng = random.Random(3)
+    atoms = [x, y, z, a, sp.sin(x), sp.cos(y), sp.Rational(1, 2), x + y, a - k, sp.sqrt(z), sp.cos(x - y)]
+    for _ in range(150):
+        e = _random_sum(rng, atoms)
+        if rng.random() < 0.4:
+            e = sp.expand(e * rng.choice([x + y, a - k, sp.sin(x) + 1, x]) ** 2)
+        factored, got = sp.factor(e), forms._squared_factors(e)
+        # what squares() reads: a squared sum among the factors, and then that factorisation
+        assert _squared(got) == _squared(factored), e
+        assert got == factored or not _squared(factored), e
+    assert not forms._square_free_at_a_point(sp.expand(k * (x - y + l0) ** 2))
+    assert forms._square_free_at_a_point(sp.expand(x**2 + y**2))

@@ -1,0 +1,40 @@
+"""omega^2 in closed form: roots from low-degree factors only when the coefficients hold parameters."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from app.engine import modes_exact
+
+
+def test_irreducible_characteristic_polynomial_gives_no_closed_form() -> None:
+    """The triple pendulum at rest: det(K - lambda M) has no factor, so no root is attempted (Cardano's would
+    run past MAX_EXACT_OPS and the time this step is given)."""
+    m1, m2, m3, l1, l2, l3, g = sp.symbols("m1 m2 m3 l1 l2 l3 g", positive=True)
+    s1, s2 = m1 + m2 + m3, m2 + m3
+    M = sp.Matrix([[l1**2 * s1, l1 * l2 * s2, l1 * l3 * m3], [l1 * l2 * s2, l2**2 * s2, l2 * l3 * m3],
+                   [l1 * l3 * m3, l2 * l3 * m3, l3**2 * m3]])  # fmt: skip
+    K = sp.diag(g * l1 * s1, g * l2 * s2, g * l3 * m3)
+    lam = sp.Dummy("lambda")
+    poly = sp.Poly(sp.expand((K - lam * M).det(method="berkowitz")), lam)
+    assert modes_exact._irreducible(poly)
+    assert modes_exact._roots(M, K) == []
+
+
+def test_a_cubic_that_factors_still_has_its_closed_forms() -> None:
+    """A block of two coupled coordinates beside a free one: a linear times a quadratic factor, all three found."""
+    m, k, c = sp.symbols("m k c", positive=True)
+    M = sp.Matrix([[2 * m, m, 0], [m, 2 * m, 0], [0, 0, m]])
+    K = sp.diag(k, k, c)
+    roots = modes_exact._roots(M, K)
+    assert len(roots) == 3
+    assert {sp.simplify(r) for r in roots} == {c / m, k / m, k / (3 * m)}
+
+
+def test_numeric_cubic_keeps_cardano() -> None:
+    """Without parameters the general formulas still run (their results may be short)."""
+    M = sp.eye(3)
+    K = sp.Matrix([[2, -1, 0], [-1, 2, -1], [0, -1, 2]])
+    roots = modes_exact._roots(M, K)
+    assert len(roots) == 3
+    assert sorted(float(sp.re(sp.N(r))) for r in roots) == sorted(float(v) for v in (2 - sp.sqrt(2), 2, 2 + sp.sqrt(2)))
