@@ -15,7 +15,7 @@ from concurrent.futures import ThreadPoolExecutor
 import pytest
 from sympy.parsing import sympy_parser
 
-from app.engine import parse
+from app.engine import parse_build
 from app.main import app
 from app.service.fairness import Fairness
 from app.service.user_checks import checked
@@ -71,7 +71,7 @@ def counted(monkeypatch):
     reads: Counter[str] = Counter()
     builds: Counter[str] = Counter()
     sympy_reads: Counter[str] = Counter()
-    real_parse, real_init, real_parse_expr = ast.parse, parse._Builder.__init__, sympy_parser.parse_expr
+    real_parse, real_init, real_parse_expr = ast.parse, parse_build.Builder.__init__, sympy_parser.parse_expr
 
     def reading(source, *args, **kwargs):
         reads[source] += 1
@@ -86,7 +86,7 @@ def counted(monkeypatch):
         return real_parse_expr(text, *args, **kwargs)
 
     monkeypatch.setattr(ast, "parse", reading)
-    monkeypatch.setattr(parse._Builder, "__init__", building)
+    monkeypatch.setattr(parse_build.Builder, "__init__", building)
     monkeypatch.setattr(sympy_parser, "parse_expr", sympy_reading)
     return reads, builds, sympy_reads
 
