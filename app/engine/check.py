@@ -43,6 +43,7 @@ from app.engine.check_answers import (
     STEPS,
     CheckError,
     allowed_names,
+    answer_error,
     check_answer,
     name_kinds,
     parse_answer,
@@ -72,6 +73,7 @@ from app.engine.compare import (
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json
 from app.engine.mistake_families import Mistake
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, POINTERS
+from app.engine.parse import Parsed
 from app.engine.report import Printer, display
 from app.engine.textbook import unicode_text
 from app.limits import CHECK_DISPLAY_SECONDS as DISPLAY_SECONDS
@@ -86,6 +88,7 @@ __all__ = [
     "CheckError",
     "Problem",
     "allowed_names",
+    "answer_error",
     "check_answer",
     "checkable_equilibria",
     "conserved_momenta",
@@ -144,8 +147,9 @@ def _known(expr: sp.Expr, groups: Groups) -> Values:
     return found
 
 
-def judge(pb: Problem, text: str) -> dict[str, Any]:
-    """The verdict on one answer: ``{"verdict", "message", "difference", "hint"}``."""
+def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
+    """The verdict on one answer (as ``check_answer`` read it, or its text): ``{"verdict", "message",
+    "difference", "hint"}``."""
     answer = parse_answer(pb, text)
     printer = Printer(pb.latex_names)
     a = values(answer, pb.groups)
@@ -213,7 +217,7 @@ def follow_up_mistake(pb: Problem, key: str) -> Mistake:
     return mistake
 
 
-def judge_follow_up(pb: Problem, key: str, text: str) -> dict[str, Any]:
+def judge_follow_up(pb: Problem, key: str, text: Parsed | str) -> dict[str, Any]:
     """The verdict on the answer to a named mistake's follow-up question (a CheckError when it has none)."""
     mistake = follow_up_mistake(pb, key)
     fu = mistake.follow_up

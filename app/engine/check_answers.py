@@ -2,8 +2,9 @@
 
 Each step's answer may name some kinds of name only (U no velocity, an acceleration only in the equation
 step, ω² only the parameters and conserved momenta); ``check_answer`` refuses any other in pure Python,
-with the reason, before the parser's first two gates, so a web process can refuse bad text without SymPy.
-``parse_answer`` gives the answer in SymPy, for the worker that judges it.
+with the reason, before the parser's first two gates, so a web process can refuse bad text without SymPy;
+what it read (``app.engine.parse.Parsed``) goes to the worker, where ``parse_answer`` builds it in SymPy
+without reading the text again (docs/parsing.md).
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from typing import TYPE_CHECKING
 
 import sympy as sp
 
-from app.engine.parse import ExpressionError, check_expression, parse_expression
+from app.engine.parse import ExpressionError, Parsed, build, narrowed, read
 from app.engine.reality import real_somewhere
 
 if TYPE_CHECKING:  # the problem an answer is read for (imported for its type only)
@@ -72,8 +73,14 @@ def allowed_names(step: str, kinds: dict[str, str]) -> list[str]:
     return sorted(name for name, kind in kinds.items() if kind in _KINDS[step])
 
 
-def check_answer(text: str, step: str, kinds: dict[str, str]) -> None:
-    """Refuse an answer the step cannot take, in pure Python (the parser's gates 1 and 2 plus name rules)."""
+def answer_error(exc: ExpressionError) -> CheckError:
+    """The parser's refusal of an answer, on the ``answer`` field, word for word."""
+    return CheckError(f"answer: {exc}", "answer", exc.part, exc.start, exc.end)
+
+
+def check_answer(text: str, step: str, kinds: dict[str, str]) -> Parsed:
+    """Read an answer the step can take, in pure Python (the step's name rules, then the parser's gates 1 and
+    2): what was read, for a worker to build without reading the text again; else a CheckError."""
     if isinstance(text, str):
         for match in _IDENTIFIER.finditer(text[:4000]):
             kind = kinds.get(match.group())
@@ -91,19 +98,29 @@ def check_answer(text: str, step: str, kinds: dict[str, str]) -> None:
                     match.end(),
                 )
     try:
-        check_expression(text, allowed_names(step, kinds))
+        return read(text, allowed_names(step, kinds))
     except ExpressionError as exc:
-        raise CheckError(f"answer: {exc}", "answer", exc.part, exc.start, exc.end) from None
+        raise answer_error(exc) from None
 
 
-def parse_answer(pb: Problem, text: str, kind: str | None = None) -> sp.Expr:
+def parse_answer(pb: Problem, answer: Parsed | str, kind: str | None = None) -> sp.Expr:
     """The answer in SymPy (CheckError on the ``answer`` field when it is not allowed); ``kind`` is the step
-    whose names it may use (a follow-up question's), by default the problem's own."""
-    kind = kind or pb.step
-    check_answer(text, kind, pb.kinds)
-    allowed = set(allowed_names(kind, pb.kinds))
-    try:
-        return real_somewhere(text, parse_expression(text, {n: s for n, s in pb.namespace.items() if n in allowed}))
-    except ExpressionError as exc:
-        raise CheckError(f"answer: {exc}", "answer", exc.part, exc.start, exc.end) from None
+    whose names it may use (a follow-up question's), by default the problem's own.
 
+    ``answer`` is what ``check_answer`` read in the web process, built here without reading the text again;
+    or the text itself, read here, when the web process could not know which names it may use (the answer
+    to a follow-up question on a declared system, whose mistakes only the derivation tells).
+
+    A declared system's answer is read in the web process before the system is derived, with a momentum
+    ``p_q`` for every coordinate (any may turn out conserved), where the problem knows the conserved ones
+    only; every other name has the same kind in both.  So the step's name rules refuse nothing more here,
+    and the reading is held to the problem's own names by ``narrowed``: the answer the reading against them
+    would give, or the same refusal (an ω² naming the momentum of a coordinate that is not cyclic).
+    """
+    kind = kind or pb.step
+    parsed = check_answer(answer, kind, pb.kinds) if isinstance(answer, str) else answer
+    try:
+        parsed = narrowed(parsed, allowed_names(kind, pb.kinds))
+        return real_somewhere(parsed.text, build(parsed, pb.namespace))
+    except ExpressionError as exc:
+        raise answer_error(exc) from None
