@@ -227,7 +227,8 @@ class Checking:
     ) -> bytes:
         if step not in STEPS:
             raise InvalidSystem(f"step: unknown step {step[:40]!r}; the steps are: {', '.join(STEPS)}", ("step",))
-        # every coordinate's momentum may turn out conserved: the worker checks the names exactly
+        # every coordinate's momentum may turn out conserved: the worker holds what was read to the conserved
+        # ones (app.engine.check_answers.parse_answer)
         kinds = name_kinds(user.coordinates, user.parameter_names, tuple(f"p_{q}" for q in user.coordinates))
         read: Parsed | str = answer
         if follow_up is None:
