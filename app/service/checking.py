@@ -1,11 +1,12 @@
 """Check a student's step: the scenes' and users' systems, through the user-system worker pool.
 
 An answer is text a user typed, so checking it is user-driven SymPy work and
-runs where /api/derive's does: the web process refuses bad text in pure Python
-(``app.engine.check.check_answer``: the parser's first two gates and the step's
-name rules), then one job in the worker pool with its hard time limit parses
-and judges it, under the same fair share per session (one job at a time) and
-with identical requests answered from a cache.
+runs where /api/derive's does: the web process reads it once, in pure Python
+(``app.engine.check.check_answer``: the step's name rules and the parser's first
+two gates), refusing bad text at once; what it read (a ``Parsed``) goes to one
+job in the worker pool, which builds it in SymPy without reading the text again
+and judges it, under the hard time limit and the same fair share per session
+(one job at a time), with identical requests answered from a cache.
 
 * A scene's problem (the engine's expression for the step and the mistaken
   variants) is built once per process from the scene's cached derivation, in a
@@ -17,6 +18,9 @@ with identical requests answered from a cache.
   them once.
 * An answer to a named mistake's follow-up question (``follow_up``: the
   mistake's key) is judged against that question's truth, by the same engine.
+  Its names are the question's: a scene's problem tells them in the web process;
+  a declared system's only once derived, so that answer is read in the worker
+  (once, too).
 
 Refusals carry the field at fault: ``answer``, ``step`` or ``coordinate``, or
 ``system.…`` for the declared system of ``POST /api/check``.
@@ -44,6 +48,7 @@ from app.engine.check import (
 from app.engine.derive import Derivation
 from app.engine.errors import DerivationError
 from app.engine.exercises import exercise_json
+from app.engine.parse import Parsed
 from app.engine.user_system import UserSystem
 from app.service import derivations
 from app.service.encoding import dumps
@@ -84,12 +89,13 @@ def _judged(work: Callable[[], Any]) -> Any:
 # ---- in the worker --------------------------------------------------------------------------
 
 
-def _judge(pb: Problem, answer: str, follow_up: str | None) -> dict[str, Any]:
+def _judge(pb: Problem, answer: Parsed | str, follow_up: str | None) -> dict[str, Any]:
     return judge(pb, answer) if follow_up is None else judge_follow_up(pb, follow_up, answer)
 
 
-def scene_check_job(pb: Problem, answer: str, follow_up: str | None = None) -> bytes:
-    """Worker job: judge an answer (or an answer to a mistake's follow-up question) against a scene's problem."""
+def scene_check_job(pb: Problem, answer: Parsed, follow_up: str | None = None) -> bytes:
+    """Worker job: judge an answer (or an answer to a mistake's follow-up question), as the web process read it,
+    against a scene's problem."""
     return guarded(lambda: _judged(lambda: _judge(pb, answer, follow_up)))
 
 
@@ -117,9 +123,10 @@ def _system(user: UserSystem) -> Derivation:
 
 
 def system_check_job(
-    user: UserSystem, step: str, coordinate: str | None, answer: str, follow_up: str | None = None
+    user: UserSystem, step: str, coordinate: str | None, answer: Parsed | str, follow_up: str | None = None
 ) -> bytes:
-    """Worker job: derive a user system (cached per worker), then judge the answer."""
+    """Worker job: derive a user system (cached per worker), then judge the answer (as the web process read it;
+    a follow-up's answer as typed, read here)."""
 
     def run() -> dict[str, Any]:
         d = _system(user)
@@ -200,12 +207,12 @@ class Checking:
             assert fu is not None
             kind = fu.kind
         try:
-            check_answer(answer, kind, pb.kinds)
+            parsed = check_answer(answer, kind, pb.kinds)
         except CheckError as exc:
             raise refusal(exc) from None
         key = spec_key("scene", scene_id, step, pb.coordinate, answer.strip(), follow_up)
         return await self.users.run_job(
-            self.answers, key, client, address, self.check_seconds, scene_check_job, pb, answer, follow_up
+            self.answers, key, client, address, self.check_seconds, scene_check_job, pb, parsed, follow_up
         )
 
     async def check_system(
@@ -220,12 +227,14 @@ class Checking:
     ) -> bytes:
         if step not in STEPS:
             raise InvalidSystem(f"step: unknown step {step[:40]!r}; the steps are: {', '.join(STEPS)}", ("step",))
-        # every coordinate's momentum may turn out conserved: the worker checks the names exactly
+        # every coordinate's momentum may turn out conserved: the worker holds what was read to the conserved
+        # ones (app.engine.check_answers.parse_answer)
         kinds = name_kinds(user.coordinates, user.parameter_names, tuple(f"p_{q}" for q in user.coordinates))
+        read: Parsed | str = answer
         if follow_up is None:
-            # (a follow-up's names are the question's: the worker checks them against the mistake)
+            # (a follow-up's names are the question's: the worker reads it against the mistake)
             try:
-                check_answer(answer, step, kinds)
+                read = check_answer(answer, step, kinds)
             except CheckError as exc:
                 raise refusal(exc) from None
         key = spec_key(user, step, coordinate, answer.strip(), follow_up)
@@ -239,7 +248,7 @@ class Checking:
             user,
             step,
             coordinate,
-            answer,
+            read,
             follow_up,
         )
 

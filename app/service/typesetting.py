@@ -6,10 +6,11 @@ preview refuses is refused by the checker with the same words, and one it typese
 reads (the browser has no grammar of its own):
 
 * in the web process, pure Python: the step's name rules and the parser's first two gates
-  (``app.engine.check.check_answer``), answered at once with the checker's message;
-* in the worker pool, under the checker's hard time limit and fair share: gate 3 (the text built into
-  SymPy, refused when undefined or nowhere real) and the engine's textbook LaTeX of the result, names
-  written as ``app.engine.names`` writes them.
+  (``app.engine.check.check_answer``), answered at once with the checker's message; this is the one
+  reading of the text;
+* in the worker pool, under the checker's hard time limit and fair share: gate 3 (what was read built
+  into SymPy, refused when undefined or nowhere real) and the engine's textbook LaTeX of the result,
+  names written as ``app.engine.names`` writes them.
 
 What an answer may name depends on the step and the system: a scene's names come from its cached
 derivation (a thread, once per scene), a declared system's from its coordinates and parameters (as
@@ -26,9 +27,9 @@ from typing import TYPE_CHECKING, Any
 import sympy as sp
 
 from app.engine import textbook
-from app.engine.check import CheckError, allowed_names, check_answer, conserved_momenta, name_kinds
+from app.engine.check import CheckError, answer_error, check_answer, conserved_momenta, name_kinds
 from app.engine.names import latex
-from app.engine.parse import ExpressionError, parse_expression
+from app.engine.parse import ExpressionError, Parsed, build
 from app.engine.reality import real_somewhere
 from app.service import derivations
 from app.service.user_checks import InvalidSystem, spec_key
@@ -58,16 +59,17 @@ def scene_kinds(scene_id: str) -> dict[str, str]:
     return name_kinds(d.table.names, d.table.parameter_names, tuple(p.name for p in conserved_momenta(d)))
 
 
-def typeset_job(text: str, step: str, kinds: dict[str, str]) -> bytes:
-    """Worker job: the answer through all three gates, as the checker parses it, then its LaTeX."""
+def typeset_job(parsed: Parsed) -> bytes:
+    """Worker job: the answer the web process read (``check_answer``) through gate 3, as the checker builds
+    it, then its LaTeX."""
 
     def run() -> dict[str, Any]:
-        # every name is a real symbol, as in the derivation's table (the checker's namespace)
-        symbols = {name: sp.Symbol(name, real=True) for name in allowed_names(step, kinds)}
+        # every name the step allows is a real symbol, as in the derivation's table (the checker's namespace)
+        symbols = {name: sp.Symbol(name, real=True) for name in sorted(parsed.names)}
         try:
-            expr = real_somewhere(text, parse_expression(text, symbols))
+            expr = real_somewhere(parsed.text, build(parsed, symbols))
         except ExpressionError as exc:
-            raise _refusal(CheckError(f"answer: {exc}", "answer", exc.part, exc.start, exc.end)) from None
+            raise _refusal(answer_error(exc)) from None
         return {"latex": textbook.latex(expr, {s: latex(name) for name, s in symbols.items()})}
 
     return guarded(run)
@@ -104,10 +106,8 @@ class Typesetter:
         """``{"latex"}`` of the answer, or InvalidSystem with the checker's message and the offending part."""
         kinds = await asyncio.to_thread(self._scene_kinds, scene) if scene is not None else system_kinds(*names)
         try:
-            check_answer(text, step, kinds)
+            parsed = check_answer(text, step, kinds)
         except CheckError as exc:
             raise _refusal(exc) from None
         key = spec_key("typeset", step, kinds, text.strip())
-        return await self.users.run_job(
-            self.results, key, client, address, self.seconds, typeset_job, text, step, kinds
-        )
+        return await self.users.run_job(self.results, key, client, address, self.seconds, typeset_job, parsed)

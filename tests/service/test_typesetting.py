@@ -22,10 +22,10 @@ def kinds():
 def read(text: str, kinds: dict[str, str]) -> str:
     """The LaTeX of an answer by the route's two stages (the web process's gates, then the worker job's)."""
     try:
-        check_answer(text, CORPUS["step"], kinds)
+        parsed = check_answer(text, CORPUS["step"], kinds)
     except CheckError as exc:
         raise InvalidSystem(str(exc)) from None
-    return json.loads(typeset_job(text, CORPUS["step"], kinds))["latex"]
+    return json.loads(typeset_job(parsed))["latex"]
 
 
 @pytest.mark.parametrize("text", CORPUS["accepted"])
@@ -48,6 +48,6 @@ def test_names_print_as_the_engine_writes_them(kinds):
 def test_a_declared_systems_names_are_its_coordinates_and_parameters():
     kinds = system_kinds(("x", "phi"), ("m", "k"))
     assert kinds["x_dot"] == "velocity" and kinds["p_phi"] == "momentum" and kinds["k"] == "parameter"
-    assert json.loads(typeset_job("m*x_dot**2/2 + k*x**2/2", "lagrangian", kinds))["latex"] == (
+    assert json.loads(typeset_job(check_answer("m*x_dot**2/2 + k*x**2/2", "lagrangian", kinds)))["latex"] == (
         r"\frac{1}{2} m \dot{x}^{2} + \frac{1}{2} k x^{2}"
     )

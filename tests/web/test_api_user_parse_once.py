@@ -6,16 +6,10 @@ replaced by one in this process, so that the counters see the worker's work too.
 result still cross a pickle boundary, as they do on their way to a worker process and back.
 """
 
-import ast
-import asyncio
-import pickle
 from collections import Counter
-from concurrent.futures import ThreadPoolExecutor
 
 import pytest
-from sympy.parsing import sympy_parser
 
-from app.engine import parse
 from app.main import app
 from app.service.fairness import Fairness
 from app.service.user_checks import checked
@@ -23,35 +17,13 @@ from app.service.user_systems import UserSystems
 from app.web.deps import user_systems_service
 from app.web.examples_user import DOUBLE_PENDULUM
 from app.web.schemas_user import SystemSpec
+from tests.web.parse_counting import Counted, PicklingPool
 
 # a double pendulum no cache holds (a worker keeps its last derivations, and this process is the worker here)
 PENDULUM = {
     **DOUBLE_PENDULUM,
     "parameters": [{**p, "value": 1.25} if p["name"] == "l2" else p for p in DOUBLE_PENDULUM["parameters"]],
 }
-
-
-class PicklingPool:
-    """The worker pool, in this process: a job's arguments and result are pickled as for a worker process."""
-
-    workers = 1
-
-    def __init__(self):
-        self.executor = ThreadPoolExecutor(1)
-        self.jobs: list[str] = []
-
-    def submit(self, job, *args, timeout):
-        sent = pickle.dumps((job, args))
-        self.jobs.append(job.__name__)
-
-        def run():
-            function, arguments = pickle.loads(sent)
-            return pickle.loads(pickle.dumps(function(*arguments)))
-
-        return self.executor.submit(run)
-
-    async def run_async(self, future, timeout):
-        return await asyncio.wrap_future(future)
 
 
 @pytest.fixture
@@ -66,37 +38,15 @@ def pool():
 
 @pytest.fixture
 def counted(monkeypatch):
-    """Every reading of text into a tree (``ast.parse``, which the parser's gates call), every construction of
-    SymPy from a checked tree (the parser's gate 3) and every reading by SymPy's own parser, by text."""
-    reads: Counter[str] = Counter()
-    builds: Counter[str] = Counter()
-    sympy_reads: Counter[str] = Counter()
-    real_parse, real_init, real_parse_expr = ast.parse, parse._Builder.__init__, sympy_parser.parse_expr
-
-    def reading(source, *args, **kwargs):
-        reads[source] += 1
-        return real_parse(source, *args, **kwargs)
-
-    def building(self, text, *args, **kwargs):
-        builds[text] += 1
-        real_init(self, text, *args, **kwargs)
-
-    def sympy_reading(text, *args, **kwargs):
-        sympy_reads[text] += 1
-        return real_parse_expr(text, *args, **kwargs)
-
-    monkeypatch.setattr(ast, "parse", reading)
-    monkeypatch.setattr(parse._Builder, "__init__", building)
-    monkeypatch.setattr(sympy_parser, "parse_expr", sympy_reading)
-    return reads, builds, sympy_reads
+    return Counted(monkeypatch)
 
 
 def test_each_expression_of_a_double_pendulum_is_read_once_per_derive(client, pool, counted):
-    reads, builds, sympy_reads = counted
+    reads, builds, sympy_reads = counted.reads, counted.builds, counted.sympy_reads
     user = checked(SystemSpec.model_validate(PENDULUM).to_spec())
     texts = Counter(text.strip() for _, text, _ in user.expressions())
     assert len(texts) >= 6  # masses, positions and the potential (the two y = 0 are one text, given twice)
-    reads.clear()
+    counted.clear()
 
     response = client.post("/api/derive", json=PENDULUM)
 
@@ -114,13 +64,13 @@ def test_checking_a_step_of_a_declared_system_reads_the_system_once(client, pool
     from app.service.checking import Checking
     from app.web.deps import checking_service
 
-    reads, builds, _ = counted
+    reads, builds = counted.reads, counted.builds
     body = {**PENDULUM, "parameters": [{**p, "value": 2.5} if p["name"] == "m2" else p for p in PENDULUM["parameters"]]}
     texts = Counter(text.strip() for _, text, _ in checked(SystemSpec.model_validate(body).to_spec()).expressions())
     service = app.dependency_overrides[user_systems_service]()
     app.dependency_overrides[checking_service] = lambda: Checking(service)
     try:
-        reads.clear()
+        counted.clear()
         answer = "-(m1+m2)*g*l1*cos(theta1) - m2*g*l2*cos(theta2)"  # not written as the declaration writes it
         response = client.post("/api/check", json={"system": body, "step": "potential", "answer": answer})
     finally:
@@ -130,3 +80,6 @@ def test_checking_a_step_of_a_declared_system_reads_the_system_once(client, pool
     assert pool.jobs == ["system_check_job"]
     assert {text: reads[text] for text in texts} == texts
     assert {text: builds[text] for text in texts} == texts
+    # the answer too: read in the web process, built in the worker, once each
+    assert counted.reads_at[answer, "web"] == 1 and reads[answer] == 1
+    assert counted.builds_at[answer, "worker"] == 1 and builds[answer] == 1

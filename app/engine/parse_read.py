@@ -1,0 +1,186 @@
+"""Gates 1 and 2 of the parser (app/engine/parse.py): an expression's text read once, in pure Python.
+
+``read`` checks the characters (``app.engine.parse_help`` explains a refused one), reads the text with
+``ast.parse`` (the one place it is read), walks the tree against the allowlist (``app.engine.parse_checker``)
+and keeps what it read as a picklable ``Parsed``: the checked tree in a compact form of plain tuples, its
+size bounds and the names it was checked against.  ``narrowed`` holds a ``Parsed`` to fewer names without
+reading the text again (docs/parsing.md).
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Collection, Iterator
+from dataclasses import dataclass, field
+
+from app.engine.parse_checker import OPERATORS, PRODUCTS, SUMS, Checker, Facts, chain
+from app.engine.parse_help import character_error, first_bad_character, with_stars
+from app.engine.parse_rules import MAX_LENGTH, MAX_NODES, MAX_TERMS, ExpressionError
+
+# tabs and line breaks count as spaces (one for one, so columns stay right)
+SPACES = {9: " ", 10: " ", 13: " "}
+
+
+def check_expression(text: str, names: Collection[str]) -> ast.Expression:
+    """Gates 1 and 2: refuse anything but an allowed expression, without SymPy.
+
+    ``names`` are the names the expression may use (``pi`` is always allowed).
+    Returns the checked tree (of the text with surrounding spaces removed).
+    """
+    return _checked(text, names)[0]
+
+
+@dataclass(frozen=True)
+class Size:
+    """Upper bounds for a checked expression: terms of its full expansion, and its degree (x**2*y: 3)."""
+
+    terms: int
+    degree: float
+
+
+# A checked tree in our own compact form, plain tuples (quick to pickle to a worker, and only these kinds can
+# be built): ("num", start, end, value), ("name", start, end, name), ("neg" or "pos", start, end, operand),
+# ("chain", start, end, first, ((operator, operand), ...)) for a left-deep run of + and - or of * and /,
+# ("pow", start, end, base, exponent) and ("call", start, end, function, (argument, ...)); start and end are
+# the node's columns in the stripped text.
+Node = tuple
+
+
+def _compact(node: ast.AST) -> Node:
+    """A checked ``ast`` tree in the compact form."""
+    start, end = getattr(node, "col_offset", 0), getattr(node, "end_col_offset", None)
+    if isinstance(node, ast.Constant):
+        return ("num", start, end, node.value)
+    if isinstance(node, ast.Name):
+        return ("name", start, end, node.id)
+    if isinstance(node, ast.UnaryOp):
+        return ("neg" if isinstance(node.op, ast.USub) else "pos", start, end, _compact(node.operand))
+    if isinstance(node, ast.BinOp) and isinstance(node.op, (*SUMS, *PRODUCTS)):
+        # a long sum or product is a flat list, not a recursion as deep as it is long
+        items = chain(node, SUMS if isinstance(node.op, SUMS) else PRODUCTS)
+        rest = tuple((OPERATORS[op], _compact(operand)) for op, operand, _ in items[1:])  # type: ignore[index]
+        return ("chain", start, end, _compact(items[0][1]), rest)
+    if isinstance(node, ast.BinOp):
+        return ("pow", start, end, _compact(node.left), _compact(node.right))
+    assert isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
+    return ("call", start, end, node.func.id, tuple(_compact(a) for a in node.args))
+
+
+@dataclass(frozen=True)
+class Parsed:
+    """An expression's text read once (gates 1 and 2): its checked tree and size bounds, picklable.
+
+    ``build`` turns it into SymPy (gate 3) without reading the text again, so a web process can read a
+    user's text in pure Python and a worker build what it read.  ``names`` are the names it was checked
+    against; only a namespace giving each of them a symbol may build it.
+    """
+
+    text: str  # as given
+    tree: Node = field(repr=False, compare=False)  # the checked tree in the compact form
+    size: Size
+    names: frozenset[str] = field(repr=False)
+
+
+def read(text: str, names: Collection[str]) -> Parsed:
+    """Gates 1 and 2 on ``text``: the one place an expression's text is read (``ast.parse``)."""
+    tree, facts = _checked(text, names)
+    # one set shared by many texts is pickled once
+    allowed = names if isinstance(names, frozenset) else frozenset(names)
+    return Parsed(text, _compact(tree.body), Size(facts.terms, facts.degree), allowed)
+
+
+def expression_size(text: str, names: Collection[str]) -> Size:
+    """Check an expression as ``check_expression`` does and return its size bounds."""
+    facts = _checked(text, names)[1]
+    return Size(facts.terms, facts.degree)
+
+
+def _checked(text: str, names: Collection[str]) -> tuple[ast.Expression, Facts]:
+    if not isinstance(text, str):
+        raise ExpressionError("an expression must be a string")
+    if len(text) > MAX_LENGTH:
+        raise ExpressionError(f"expression is {len(text)} characters long; at most {MAX_LENGTH} are allowed")
+    text = text.translate(SPACES)
+    bad = first_bad_character(text)
+    if bad is not None:
+        raise character_error(text, bad)
+    stripped = text.strip()
+    if not stripped:
+        raise ExpressionError("empty expression (write 0 for nothing)")
+    offset = len(text) - len(text.lstrip())
+    try:
+        tree = ast.parse(stripped, mode="eval")
+    except SyntaxError as exc:
+        column = min(max((exc.offset or 1) - 1, 0), len(stripped))
+        first, last = max(column - 10, 0), min(column + 10, len(stripped))
+        near = stripped[first:last]
+        starred = with_stars(stripped)
+        hint = f"write {starred} (a * between factors)" if starred else exc.msg
+        raise ExpressionError(
+            f"syntax error at column {offset + column + 1} ({hint}), near {near!r}",
+            near,
+            offset + first,
+            offset + last,
+        ) from None
+    except (RecursionError, MemoryError, ValueError):
+        raise ExpressionError("expression could not be read (too deeply nested?)") from None
+    count = sum(isinstance(node, ast.expr) for node in ast.walk(tree))
+    if count > MAX_NODES:
+        raise ExpressionError(f"expression has {count} parts; at most {MAX_NODES} are allowed")
+    facts = Checker(stripped, offset, names).check(tree.body)
+    if facts.terms > MAX_TERMS or facts.inside > MAX_TERMS:
+        where = "expression" if facts.terms > MAX_TERMS else "a function's argument"
+        raise ExpressionError(
+            f"{where} would expand into more than {MAX_TERMS} terms; write it in a smaller form",
+            stripped[:60],
+            offset,
+            offset + len(stripped),
+        )
+    return tree, facts
+
+
+def placed(text: str) -> tuple[str, int]:
+    """The text as the gates read it (spaces stripped) and the column it starts at in the text as given."""
+    spaced = text.translate(SPACES)
+    return spaced.strip(), len(spaced) - len(spaced.lstrip())
+
+
+def names_in_order(node: Node) -> Iterator[Node]:
+    """The ("name", ...) nodes of a compact tree, left to right: the order in which the checker meets them."""
+    kind = node[0]
+    if kind == "name":
+        yield node
+    elif kind in ("neg", "pos"):
+        yield from names_in_order(node[3])
+    elif kind == "chain":
+        yield from names_in_order(node[3])
+        for _, operand in node[4]:
+            yield from names_in_order(operand)
+    elif kind == "pow":
+        yield from names_in_order(node[3])
+        yield from names_in_order(node[4])
+    elif kind == "call":
+        for argument in node[4]:
+            yield from names_in_order(argument)
+
+
+def narrowed(parsed: Parsed, names: Collection[str]) -> Parsed:
+    """``read(parsed.text, names)`` for ``names`` among those ``parsed`` was read against, without reading the
+    text again: the same ``Parsed``, or the same refusal.
+
+    Every node's facts depend on the names only through its leaves, and a declared name's facts are the
+    same whichever names are declared, so the walk against fewer names goes as the first walk went until it
+    meets the first name (left to right) it no longer allows, and refuses that name as the checker refuses it.
+    """
+    allowed = names if isinstance(names, frozenset) else frozenset(names)
+    if allowed == parsed.names:
+        return parsed
+    if not allowed <= parsed.names:
+        extra = ", ".join(sorted(allowed - parsed.names))
+        raise ValueError(f"{parsed.text[:60]!r} was not read against these names: {extra}")
+    stripped, offset = placed(parsed.text)
+    checker = Checker(stripped, offset, allowed)
+    for _, start, end, name in names_in_order(parsed.tree):
+        if name not in allowed:
+            checker.name(ast.Name(id=name, ctx=ast.Load(), col_offset=start, end_col_offset=end))
+    return Parsed(parsed.text, parsed.tree, parsed.size, allowed)
