@@ -23,11 +23,9 @@ ROOT = _HERE if (_HERE / "templates").is_dir() else Path.cwd()
 
 
 class Settings(BaseSettings):
-    """The server's settings; ``LAGRANGE_`` + the field's name in capitals sets each one.
+    """The server's settings; ``LAGRANGE_`` + the field's name in capitals sets each one."""
 
-    Each field's docstring is its description (the settings table in docs/deployment.md shows it).
-    """
-
+    # each field's docstring is its description (the settings table in docs/deployment.md shows it)
     model_config = SettingsConfigDict(
         env_prefix="LAGRANGE_", frozen=True, extra="ignore", use_attribute_docstrings=True
     )
