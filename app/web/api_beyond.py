@@ -14,10 +14,9 @@ from fastapi.responses import Response
 from app.service import modes, poincare
 from app.service.user_checks import checked
 from app.web.api_simulate import BODY_ERRORS, ERRORS
-from app.web.api_user import _errors, answer
+from app.web.api_user import answer, system_route
 from app.web.deps import AnswersDep, ClientDep, GatesDep, UserSystemsDep
 from app.web.responses import FastJSONResponse
-from app.web.schemas import SESSION_COOKIE
 from app.web.schemas_beyond import (
     MeasuredModes,
     ModesRequest,
@@ -81,13 +80,12 @@ def scene_modes_at(scene_id: str, request: ModesRequest, gates: GatesDep, answer
     return FastJSONResponse(modes.modes_at(scene_id, request.parameters, gates, answers.modes_at))
 
 
-@router.post(
+@system_route(
+    router,
     "/poincare",
     summary="The Poincaré section of a system you declare",
     description=POINCARE_TEXT + " The system is given as for POST /api/derive; it runs in the worker pool.",
     response_model=PoincareResponse,
-    openapi_extra={"parameters": [SESSION_COOKIE]},
-    responses=_errors(400, 413, 422, 429, 503),
 )
 async def user_poincare(
     client: ClientDep, users: UserSystemsDep, body: Annotated[UserPoincareRequest, Body()]
@@ -98,13 +96,12 @@ async def user_poincare(
     return await answer(client, lambda key, address: users.poincare(checked(spec), options, key, address))
 
 
-@router.post(
+@system_route(
+    router,
     "/modes",
     summary="Normal modes of a system you declare, predicted against measured",
     description=MODES_TEXT + " The system is given as for POST /api/derive; it runs in the worker pool.",
     response_model=list[MeasuredModes],
-    openapi_extra={"parameters": [SESSION_COOKIE]},
-    responses=_errors(400, 413, 422, 429, 503),
 )
 async def user_modes(client: ClientDep, users: UserSystemsDep, system: Annotated[SystemSpec, Body()]) -> Response:
     return await answer(client, lambda key, address: users.modes(checked(system.to_spec()), key, address))
