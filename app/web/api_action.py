@@ -14,7 +14,7 @@ from fastapi.responses import Response
 
 from app.service import action
 from app.service.user_checks import checked
-from app.web.api_simulate import BODY_ERRORS, ERRORS
+from app.web.api_simulate import scene_route
 from app.web.api_user import answer, system_route
 from app.web.deps import AnswersDep, ClientDep, GatesDep, UserSystemsDep
 from app.web.responses import FastJSONResponse
@@ -39,12 +39,12 @@ TEXT = (
 )
 
 
-@router.post(
+@scene_route(
+    router,
     "/scenes/{scene_id}/action",
     summary="The action of a scene's true path and of its variations",
     description=TEXT,
-    response_model=None,
-    responses={200: {"model": ActionResponse}, **ERRORS, **BODY_ERRORS},
+    document=ActionResponse,
 )
 def scene_action(scene_id: str, request: ActionRequest, gates: GatesDep, answers: AnswersDep) -> Any:
     # a refusal (SimulationError) or an unknown scene is answered by app/web/errors.py
@@ -74,11 +74,11 @@ RELAX_TEXT = (
 )
 
 
-@router.post(
+@scene_route(
+    router,
     "/scenes/{scene_id}/action/relax",
     summary="Find a scene's path between two ends by making the action stationary",
     description=RELAX_TEXT,
-    responses={**ERRORS, **BODY_ERRORS},
 )
 def scene_relax(scene_id: str, request: RelaxRequest, gates: GatesDep) -> Any:
     return FastJSONResponse(action.relax_of_scene(scene_id, gates, **relax_options(request)))

@@ -13,7 +13,7 @@ from fastapi.responses import Response
 
 from app.service import modes, poincare
 from app.service.user_checks import checked
-from app.web.api_simulate import BODY_ERRORS, ERRORS
+from app.web.api_simulate import ERRORS, scene_route
 from app.web.api_user import answer, system_route
 from app.web.deps import AnswersDep, ClientDep, GatesDep, UserSystemsDep
 from app.web.responses import FastJSONResponse
@@ -41,12 +41,12 @@ MODES_CORE = (
 MODES_TEXT = MODES_CORE + " (default parameters)."
 
 
-@router.post(
+@scene_route(
+    router,
     "/scenes/{scene_id}/poincare",
     summary="A scene's Poincaré section",
     description=POINCARE_TEXT,
-    response_model=None,
-    responses={200: {"model": PoincareResponse}, **ERRORS, **BODY_ERRORS},
+    document=PoincareResponse,
 )
 def scene_poincare(scene_id: str, request: PoincareRequest, gates: GatesDep, answers: AnswersDep) -> Any:
     # a refusal (SimulationError) or an unknown scene is answered by app/web/errors.py
@@ -65,7 +65,8 @@ def scene_modes(scene_id: str, gates: GatesDep, answers: AnswersDep) -> Any:
     return FastJSONResponse(modes.measure_scene(scene_id, gates, answers.measured_modes))
 
 
-@router.post(
+@scene_route(
+    router,
     "/scenes/{scene_id}/modes-at",
     summary="A scene's normal modes at given parameter values, predicted against measured",
     description=MODES_CORE
@@ -73,7 +74,6 @@ def scene_modes(scene_id: str, gates: GatesDep, answers: AnswersDep) -> Any:
     "them from the engine's closed forms. An equilibrium the engine found only numerically is given at the "
     "defaults alone, with at_defaults true.",
     response_model=list[MeasuredModes],
-    responses={**ERRORS, **BODY_ERRORS},
 )
 def scene_modes_at(scene_id: str, request: ModesRequest, gates: GatesDep, answers: AnswersDep) -> Any:
     # a value out of range or an unknown name (SimulationError) is answered by app/web/errors.py
