@@ -11,8 +11,9 @@ from __future__ import annotations
 import os
 from functools import lru_cache
 from pathlib import Path
+from typing import Annotated
 
-from pydantic import Field
+from pydantic import Field, NonNegativeFloat, NonNegativeInt, PositiveFloat, PositiveInt
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
 # The source tree: templates, static files and the default cache live beside ``app``.  An
@@ -24,70 +25,75 @@ ROOT = _HERE if (_HERE / "templates").is_dir() else Path.cwd()
 class Settings(BaseSettings):
     """The server's settings; ``LAGRANGE_`` + the field's name in capitals sets each one."""
 
-    model_config = SettingsConfigDict(env_prefix="LAGRANGE_", frozen=True, extra="ignore")
+    # each field's docstring is its description (the settings table in docs/deployment.md shows it)
+    model_config = SettingsConfigDict(
+        env_prefix="LAGRANGE_", frozen=True, extra="ignore", use_attribute_docstrings=True
+    )
 
-    cache_dir: Path = Field(default=ROOT / ".cache", description="compiled kernels, generated code, cached derivations")
-    workers: int = Field(default=0, ge=0, description="worker processes per web process; 0: two where memory allows")
-    worker_memory_mb: int = Field(
-        default=0, ge=0, description="memory one job may add to its worker; 0: from the budget"
-    )
-    web_processes: int = Field(
-        default=0, ge=0, description="uvicorn processes (scripts/serve.sh sets it); 0: from CPUs"
-    )
-    memory_budget_mb: int = Field(
-        default=0, ge=0, description="memory for the whole server; 0: 90 % of the container's"
-    )
-    web_process_mb: int = Field(default=350, gt=0, description="resident memory allowed for one web process")
-    worker_base_mb: int = Field(
-        default=250, gt=0, description="resident memory of an idle worker (engine and numerics loaded)"
-    )
-    scene_worker_mb: int = Field(
-        default=128, ge=64, description="memory a scene's Python-loop run (scipy) may add to its worker"
-    )
-    queue_seconds: float = Field(
-        default=35.0,
-        gt=0,
-        description="longest wait for a worker before a 503 (over the job limit: one job ends meanwhile)",
-    )
-    scene_queue_seconds: float = Field(
-        default=0.5, ge=0, description="longest wait for a scene simulation slot (then 429)"
-    )
-    user_cache_mb: int = Field(default=64, gt=0, description="disk for user systems' generated code and compiled cache")
-    header_seconds: float = Field(default=10.0, gt=0, description="time a client has to send a request's headers")
-    keep_alive_seconds: int = Field(default=75, gt=0, description="time an idle connection waits for its next request")
-    connections: int = Field(default=400, gt=0, description="open connections and requests per web process; then 503")
-    connections_per_address: int = Field(
-        default=150, gt=0, description="open connections from one address per web process; then 503"
-    )
-    slow_per_address: int = Field(
-        default=32, gt=0, description="answers one address may leave unread at once (beyond: closed)"
-    )
-    write_seconds: float = Field(
-        default=20.0, gt=0, description="time an answer may wait for a client that does not read it"
-    )
-    body_seconds: float = Field(default=10.0, gt=0, description="time a client has to send a request's body")
-    derive_seconds: float = Field(default=30.0, gt=0, description="hard time limit of a user system's derivation")
-    simulate_seconds: float = Field(default=30.0, gt=0, description="hard time limit of a user system's simulation")
-    check_seconds: float = Field(default=10.0, gt=0, description="hard time limit of checking a student's step")
-    proxy_header: str = Field(
-        default="", description="header naming the client behind a trusted reverse proxy (X-Forwarded-For); empty: none"
-    )
-    trusted_proxies: str = Field(
-        default="127.0.0.1,::1", description="addresses of the reverse proxies whose proxy_header is believed"
-    )
-    session_secret: str | None = Field(
-        default=None, description="key that signs session cookies; else a file in the cache"
-    )
-    warm: bool = Field(default=True, description="compile kernels and fill caches in the background at start-up")
-    data_dir: Path = Field(default=ROOT / ".data", description="classes' SQLite database (a volume in the image)")
-    database_url: str | None = Field(
-        default=None, description="a PostgreSQL URL for the classes (shared by replicas); else SQLite in data_dir"
-    )
-    class_days: int = Field(default=180, gt=0, description="days a class and its record are kept, then deleted")
-    class_joins_per_minute: int = Field(default=300, gt=0, description="joins one class accepts per minute")
-    class_checks_per_minute: int = Field(default=3000, gt=0, description="checks one class records per minute")
-    client_joins_per_minute: int = Field(default=20, gt=0, description="joins one client may make per minute")
-    student_checks_per_minute: int = Field(default=30, gt=0, description="checks one student may make per minute")
+    cache_dir: Path = ROOT / ".cache"
+    """compiled kernels, generated code, cached derivations"""
+    workers: NonNegativeInt = 0
+    """worker processes per web process; 0: two where memory allows"""
+    worker_memory_mb: NonNegativeInt = 0
+    """memory one job may add to its worker; 0: from the budget"""
+    web_processes: NonNegativeInt = 0
+    """uvicorn processes (scripts/serve.sh sets it); 0: from CPUs"""
+    memory_budget_mb: NonNegativeInt = 0
+    """memory for the whole server; 0: 90 % of the container's"""
+    web_process_mb: PositiveInt = 350
+    """resident memory allowed for one web process"""
+    worker_base_mb: PositiveInt = 250
+    """resident memory of an idle worker (engine and numerics loaded)"""
+    scene_worker_mb: Annotated[int, Field(ge=64)] = 128
+    """memory a scene's Python-loop run (scipy) may add to its worker"""
+    queue_seconds: PositiveFloat = 35.0
+    """longest wait for a worker before a 503 (over the job limit: one job ends meanwhile)"""
+    scene_queue_seconds: NonNegativeFloat = 0.5
+    """longest wait for a scene simulation slot (then 429)"""
+    user_cache_mb: PositiveInt = 64
+    """disk for user systems' generated code and compiled cache"""
+    header_seconds: PositiveFloat = 10.0
+    """time a client has to send a request's headers"""
+    keep_alive_seconds: PositiveInt = 75
+    """time an idle connection waits for its next request"""
+    connections: PositiveInt = 400
+    """open connections and requests per web process; then 503"""
+    connections_per_address: PositiveInt = 150
+    """open connections from one address per web process; then 503"""
+    slow_per_address: PositiveInt = 32
+    """answers one address may leave unread at once (beyond: closed)"""
+    write_seconds: PositiveFloat = 20.0
+    """time an answer may wait for a client that does not read it"""
+    body_seconds: PositiveFloat = 10.0
+    """time a client has to send a request's body"""
+    derive_seconds: PositiveFloat = 30.0
+    """hard time limit of a user system's derivation"""
+    simulate_seconds: PositiveFloat = 30.0
+    """hard time limit of a user system's simulation"""
+    check_seconds: PositiveFloat = 10.0
+    """hard time limit of checking a student's step"""
+    proxy_header: str = ""
+    """header naming the client behind a trusted reverse proxy (X-Forwarded-For); empty: none"""
+    trusted_proxies: str = "127.0.0.1,::1"
+    """addresses of the reverse proxies whose proxy_header is believed"""
+    session_secret: str | None = None
+    """key that signs session cookies; else a file in the cache"""
+    warm: bool = True
+    """compile kernels and fill caches in the background at start-up"""
+    data_dir: Path = ROOT / ".data"
+    """classes' SQLite database (a volume in the image)"""
+    database_url: str | None = None
+    """a PostgreSQL URL for the classes (shared by replicas); else SQLite in data_dir"""
+    class_days: PositiveInt = 180
+    """days a class and its record are kept, then deleted"""
+    class_joins_per_minute: PositiveInt = 300
+    """joins one class accepts per minute"""
+    class_checks_per_minute: PositiveInt = 3000
+    """checks one class records per minute"""
+    client_joins_per_minute: PositiveInt = 20
+    """joins one client may make per minute"""
+    student_checks_per_minute: PositiveInt = 30
+    """checks one student may make per minute"""
 
     # The memory budget (docs/deployment.md, "Capacity").  With P web processes, each with a forkserver, one
     # worker for the scenes' Python-loop runs (capped at S = scene_worker_mb) and W pool workers for

@@ -100,6 +100,16 @@ def _step(key: str, title: str, rows: list[str], sympy: Any, explanation: str, f
     return {"key": key, "title": title, "latex": _aligned(rows), "sympy": text, "explanation": explanation}
 
 
+def _mapping_step(
+    key: str, title: str, mapping: dict[Any, Any], explanation: str, names: Printer, values: Printer | None = None
+) -> dict[str, str]:
+    """A step of rows ``name = value``, one for each pair of ``mapping``: the names printed by ``names``, the
+    values by ``values`` (the same printer unless given)."""
+    values = values or names
+    rows = [f"{names.tex(name)} = {values.tex(value)}" for name, value in mapping.items()]
+    return _step(key, title, rows, list(mapping.values()), explanation)
+
+
 def display(expr: sp.Expr) -> sp.Expr:
     """The textbook form of an expression (app.engine.forms), with the current printer's names."""
     return textbook_form(expr) if isinstance(expr, sp.Expr) and expr.free_symbols else expr
@@ -159,15 +169,20 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     if m.positions:
         n = len(m.positions)
         label = (lambda i: rf"_{{{i + 1}}}") if n > 1 else (lambda i: "")
+
+        def vectors(letter: str, of_masses: Any) -> tuple[list[str], list[tuple[sp.Expr, ...]]]:
+            """Each mass's vector (its position or its velocity) as a LaTeX row and as data."""
+            rows = [
+                rf"\vec {letter}{label(i)} = \left({', '.join(pr.tex(c) for c in vector)}\right)"
+                for i, vector in enumerate(of_masses)
+            ]
+            return rows, [tuple(vector) for vector in of_masses]
+
         steps.append(
             _step(
                 "positions",
                 "Positions",
-                [
-                    rf"\vec r{label(i)} = \left({', '.join(pr.tex(c) for c in r)}\right)"
-                    for i, r in enumerate(m.positions)
-                ],
-                [tuple(r) for r in m.positions],
+                *vectors("r", m.positions),
                 "Each mass is placed in Cartesian coordinates as a function of the generalized coordinates"
                 + (
                     " and of time, because a constraint moves."
@@ -180,11 +195,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             _step(
                 "velocities",
                 "Velocities",
-                [
-                    rf"\vec v{label(i)} = \left({', '.join(pr.tex(c) for c in v)}\right)"
-                    for i, v in enumerate(m.velocities)
-                ],
-                [tuple(v) for v in m.velocities],
+                *vectors("v", m.velocities),
                 "Differentiating each position along the motion (chain rule through every coordinate) gives its velocity.",
             )
         )
@@ -383,12 +394,12 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
     out: list[dict[str, str]] = []
     if red.cyclic_velocities:
         out.append(
-            _step(
+            _mapping_step(
                 "cyclic-velocities",
                 "Eliminating the cyclic velocities",
-                [f"{pr.tex(k)} = {pr.tex(v)}" for k, v in red.cyclic_velocities.items()],
-                list(red.cyclic_velocities.values()),
+                red.cyclic_velocities,
                 "Each conserved momentum is solved for its velocity, leaving one coordinate to follow.",
+                pr,
             )
         )
     out.append(

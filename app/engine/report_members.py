@@ -5,7 +5,7 @@ from __future__ import annotations
 import sympy as sp
 
 from app.engine.constraints import ConstraintForce
-from app.engine.report import Printer, _step, display
+from app.engine.report import Printer, _mapping_step, _step, display
 from app.engine.transform import Transformed, collected, compact
 
 # The constraint function's name: a calligraphic C, which no parameter (g is gravity) can be.
@@ -55,12 +55,13 @@ def transform_steps(tr: Transformed) -> list[dict[str, str]]:
             list(tr.definitions),
             tr.change.explanation or "New generalized coordinates, defined from the old ones.",
         ),
-        _step(
+        _mapping_step(
             "inverse-map",
             "Inverse map",
-            [f"{old.tex(q)} = {pr.tex(e)}" for q, e in tr.inverse.items()],
-            list(tr.inverse.values()),
+            tr.inverse,
             "Solving the definitions for the old coordinates gives the map that is substituted into the declaration.",
+            old,
+            pr,
         ),
         _step(
             "new-lagrangian",

@@ -27,6 +27,7 @@ import sympy as sp
 from sympy.printing.latex import LatexPrinter
 from sympy.printing.str import StrPrinter
 
+from app.engine.budget import larger_than
 from app.engine.names import unicode
 
 NODE_BUDGET = 600
@@ -208,28 +209,19 @@ def _moving(names: dict[sp.Symbol, str], expr: Any) -> set[sp.Symbol]:
     return {s for s in free if s.name == "t" or s.name in stems or s.name.endswith(("_dot", "_ddot"))}
 
 
-def _nodes(expr: Any) -> int:
-    count = 0
-    for _ in sp.preorder_traversal(expr):
-        count += 1
-        if count > NODE_BUDGET:
-            break
-    return count
-
-
 def latex(expr: Any, names: dict[sp.Symbol, str], first: sp.Symbol | None = None) -> str:
     """``expr`` as LaTeX in textbook order (SymPy's ``latex`` beyond the node budget).
 
     ``first``: in a sum, the term holding this symbol comes first (an equation's own acceleration).
     """
-    if not isinstance(expr, sp.Basic) or _nodes(expr) > NODE_BUDGET:
+    if not isinstance(expr, sp.Basic) or larger_than(expr, NODE_BUDGET):
         return sp.latex(expr, symbol_names=names)
     return _Printer(names, _moving(names, expr), first).doprint(expr)
 
 
 def _simplest(const: sp.Expr) -> sp.Expr:
     """The shortest of a constant coefficient's forms: as it is, common factors out, or cancelled."""
-    if not isinstance(const, sp.Add) or _nodes(const) > NODE_BUDGET // 4:
+    if not isinstance(const, sp.Add) or larger_than(const, NODE_BUDGET // 4):
         return const
     forms = [const, sp.factor_terms(const), sp.cancel(const)]
     return min(forms, key=lambda e: (sp.count_ops(e), forms.index(e)))
@@ -253,7 +245,7 @@ def normalised(
     terms; terms with the same acceleration collected ((1 + 4α²ρ²) ρ̈), like terms added
     ((2gα − ω²) ρ), a common parameter factor of the rest taken out ((k/m₁)(x₁ − x₂ + l₀)).
     """
-    if _nodes(residual) > NODE_BUDGET:
+    if larger_than(residual, NODE_BUDGET):
         return residual
     moving = _moving(names, residual) | _moving(names, coefficient)
     expanded = sp.expand(residual)

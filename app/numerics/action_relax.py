@@ -25,6 +25,7 @@ import numpy as np
 
 from app import late
 from app.numerics.action import ActionTerms
+from app.numerics.choose import central_differences
 from app.numerics.errors import SimulationError
 from app.numerics.simulate import simulate
 from app.numerics.system import NumericSystem
@@ -169,13 +170,7 @@ def shoot(
         if np.abs(miss).max() < 1e-12 * max(1.0, float(np.abs(end).max())):
             return v, q
         # the Jacobi matrix ∂q(T)/∂q̇(0) from neighbouring runs
-        J = np.empty((n, n))
-        for j in range(n):
-            d = 1e-6 * max(1.0, abs(v[j]))
-            up, down = v.copy(), v.copy()
-            up[j] += d
-            down[j] -= d
-            J[:, j] = (run(up)[:, -1] - run(down)[:, -1]) / (2 * d)
+        J = central_differences(lambda w: run(w)[:, -1], v, 1e-6)
         v = v - np.linalg.solve(J, miss)
     raise SimulationError("shooting did not converge onto the end point", "end")
 

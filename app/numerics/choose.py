@@ -41,6 +41,7 @@ the method, so it is treated as non-stiff (explicit or symplectic).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -81,14 +82,20 @@ def jacobian(system: NumericSystem, t: float, y: np.ndarray, k: np.ndarray) -> n
     exact = system.jacobian(t, y, k)
     if exact is not None:
         return exact
-    m = y.size
-    J = np.empty((m, m))
-    for j in range(m):
-        h = 6e-6 * max(1.0, abs(y[j]))
-        up, down = y.copy(), y.copy()
+    return central_differences(lambda x: system.f(t, x, k), y, 6e-6)
+
+
+def central_differences(f: Callable[[np.ndarray], np.ndarray], x: np.ndarray, step: float) -> np.ndarray:
+    """The square matrix df/dx at x, column j from f(x ± h e_j) with h = step · max(1, |x_j|)."""
+    n = x.size
+    J = np.empty((n, n))
+    for j in range(n):
+        h = step * max(1.0, abs(x[j]))
+        up, down = x.copy(), x.copy()
         up[j] += h
         down[j] -= h
-        J[:, j] = (system.f(t, up, k) - system.f(t, down, k)) / (2 * h)
+        # f'(x) ≈ (f(x + h) - f(x - h)) / 2h, its error O(h²)
+        J[:, j] = (f(up) - f(down)) / (2 * h)
     return J
 
 

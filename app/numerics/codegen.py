@@ -17,40 +17,39 @@ from sympy.printing.numpy import NumPyPrinter
 from sympy.printing.pycode import PythonCodePrinter
 
 
-class ScalarPrinter(PythonCodePrinter):
+class _Floats:
+    """A printer's numbers as Python floats: a Float by its shortest repr."""
+
+    def _print_Float(self, expr: sp.Float) -> str:
+        return repr(float(expr))
+
+
+class _FloatRationals(_Floats):
+    """... and a Rational as the float p / q (plain float arithmetic, no ``Rational`` in the code)."""
+
+    def _print_Rational(self, expr: sp.Rational) -> str:
+        return repr(float(expr.p) / float(expr.q))
+
+
+class ScalarPrinter(_FloatRationals, PythonCodePrinter):
     """Prints ``math.sin(x)`` and plain float arithmetic (works in Python and in numba)."""
 
     def __init__(self) -> None:
         super().__init__({"standard": "python3", "fully_qualified_modules": True, "strict": True})
 
-    def _print_Float(self, expr: sp.Float) -> str:
-        return repr(float(expr))
 
-    def _print_Rational(self, expr: sp.Rational) -> str:
-        return repr(float(expr.p) / float(expr.q))
-
-
-class ArrayPrinter(NumPyPrinter):
+class ArrayPrinter(_FloatRationals, NumPyPrinter):
     """Prints ``numpy.sin(x)`` for expressions evaluated on whole arrays of samples."""
 
     def __init__(self) -> None:
         super().__init__({"fully_qualified_modules": True, "strict": True})
 
-    def _print_Float(self, expr: sp.Float) -> str:
-        return repr(float(expr))
 
-    def _print_Rational(self, expr: sp.Rational) -> str:
-        return repr(float(expr.p) / float(expr.q))
-
-
-class BrowserPrinter(JavascriptCodePrinter):
+class BrowserPrinter(_Floats, JavascriptCodePrinter):
     """Prints ``Math.sin(x)`` for the browser's live preview; like the others, refuses what it cannot print."""
 
     def __init__(self) -> None:
         super().__init__({"strict": True})
-
-    def _print_Float(self, expr: sp.Float) -> str:
-        return repr(float(expr))
 
 
 @dataclass

@@ -13,6 +13,7 @@ from __future__ import annotations
 import asyncio
 import json
 import threading
+from collections.abc import Callable
 from typing import Any
 
 from cachetools import LRUCache
@@ -133,11 +134,16 @@ class UserSystems:
             self.simulations, key, client, address, self.simulate_seconds, simulate_job, user, request
         )
 
+    async def simulation_job(
+        self, kind: str, job: Callable[..., bytes], user: UserSystem, options: dict[str, Any], client: str, address: str
+    ) -> bytes:
+        """``job(user, options)`` of a simulation's kind (a Poincaré section, the action, a relaxation): cached with
+        the simulations under ``kind`` and the options, under the simulation's time limit."""
+        key = spec_key(user, kind, options)
+        return await self._run(self.simulations, key, client, address, self.simulate_seconds, job, user, options)
+
     async def poincare(self, user: UserSystem, options: dict[str, Any], client: str, address: str) -> bytes:
-        key = spec_key(user, "poincare", options)
-        return await self._run(
-            self.simulations, key, client, address, self.simulate_seconds, poincare_job, user, options
-        )
+        return await self.simulation_job("poincare", poincare_job, user, options, client, address)
 
     async def modes(self, user: UserSystem, client: str, address: str) -> bytes:
         key = spec_key(user, "modes")

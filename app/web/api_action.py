@@ -13,12 +13,11 @@ from fastapi import APIRouter, Body
 from fastapi.responses import Response
 
 from app.service import action
-from app.service.user_checks import checked, spec_key
-from app.web.api_simulate import BODY_ERRORS, ERRORS
-from app.web.api_user import _errors, answer
+from app.service.user_checks import checked
+from app.web.api_simulate import scene_route
+from app.web.api_user import answer, system_route
 from app.web.deps import AnswersDep, ClientDep, GatesDep, UserSystemsDep
 from app.web.responses import FastJSONResponse
-from app.web.schemas import SESSION_COOKIE
 from app.web.schemas_action import (
     ActionRequest,
     ActionResponse,
@@ -40,38 +39,30 @@ TEXT = (
 )
 
 
-@router.post(
+@scene_route(
+    router,
     "/scenes/{scene_id}/action",
     summary="The action of a scene's true path and of its variations",
     description=TEXT,
-    response_model=None,
-    responses={200: {"model": ActionResponse}, **ERRORS, **BODY_ERRORS},
+    document=ActionResponse,
 )
 def scene_action(scene_id: str, request: ActionRequest, gates: GatesDep, answers: AnswersDep) -> Any:
     # a refusal (SimulationError) or an unknown scene is answered by app/web/errors.py
     return FastJSONResponse(action.cached_action_of_scene(scene_id, gates, answers.actions, **action_options(request)))
 
 
-@router.post(
+@system_route(
+    router,
     "/action",
     summary="The action of a system you declare",
     description=TEXT + " The system is given under `system` as for POST /api/derive; it runs in the worker pool.",
     response_model=ActionResponse,
-    openapi_extra={"parameters": [SESSION_COOKIE]},
-    responses=_errors(400, 413, 422, 429, 503),
 )
 async def user_action(client: ClientDep, users: UserSystemsDep, body: Annotated[UserActionRequest, Body()]) -> Response:
-    spec = body.system.to_spec()
-    options = action_options(body)
-
-    async def work(key: str, address: str) -> bytes:
-        user = checked(spec)
-        return await users.run_job(
-            users.simulations, spec_key(user, "action", options), key, address, users.simulate_seconds,
-            action.action_job, user, options,
-        )  # fmt: skip
-
-    return await answer(client, work)
+    spec, options = body.system.to_spec(), action_options(body)
+    return await answer(
+        client, lambda key, address: users.simulation_job("action", action.action_job, checked(spec), options, key, address)
+    )
 
 
 RELAX_TEXT = (
@@ -83,32 +74,24 @@ RELAX_TEXT = (
 )
 
 
-@router.post(
+@scene_route(
+    router,
     "/scenes/{scene_id}/action/relax",
     summary="Find a scene's path between two ends by making the action stationary",
     description=RELAX_TEXT,
-    responses={**ERRORS, **BODY_ERRORS},
 )
 def scene_relax(scene_id: str, request: RelaxRequest, gates: GatesDep) -> Any:
     return FastJSONResponse(action.relax_of_scene(scene_id, gates, **relax_options(request)))
 
 
-@router.post(
+@system_route(
+    router,
     "/action/relax",
     summary="Find the path of a system you declare between two ends",
     description=RELAX_TEXT + " The system is given under `system` as for POST /api/derive; it runs in the worker pool.",
-    openapi_extra={"parameters": [SESSION_COOKIE]},
-    responses=_errors(400, 413, 422, 429, 503),
 )
 async def user_relax(client: ClientDep, users: UserSystemsDep, body: Annotated[UserRelaxRequest, Body()]) -> Response:
-    spec = body.system.to_spec()
-    options = relax_options(body)
-
-    async def work(key: str, address: str) -> bytes:
-        user = checked(spec)
-        return await users.run_job(
-            users.simulations, spec_key(user, "relax", options), key, address, users.simulate_seconds,
-            action.relax_job, user, options,
-        )  # fmt: skip
-
-    return await answer(client, work)
+    spec, options = body.system.to_spec(), relax_options(body)
+    return await answer(
+        client, lambda key, address: users.simulation_job("relax", action.relax_job, checked(spec), options, key, address)
+    )

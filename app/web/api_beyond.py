@@ -13,11 +13,10 @@ from fastapi.responses import Response
 
 from app.service import modes, poincare
 from app.service.user_checks import checked
-from app.web.api_simulate import BODY_ERRORS, ERRORS
-from app.web.api_user import _errors, answer
+from app.web.api_simulate import ERRORS, scene_route
+from app.web.api_user import answer, system_route
 from app.web.deps import AnswersDep, ClientDep, GatesDep, UserSystemsDep
 from app.web.responses import FastJSONResponse
-from app.web.schemas import SESSION_COOKIE
 from app.web.schemas_beyond import (
     MeasuredModes,
     ModesRequest,
@@ -42,12 +41,12 @@ MODES_CORE = (
 MODES_TEXT = MODES_CORE + " (default parameters)."
 
 
-@router.post(
+@scene_route(
+    router,
     "/scenes/{scene_id}/poincare",
     summary="A scene's Poincaré section",
     description=POINCARE_TEXT,
-    response_model=None,
-    responses={200: {"model": PoincareResponse}, **ERRORS, **BODY_ERRORS},
+    document=PoincareResponse,
 )
 def scene_poincare(scene_id: str, request: PoincareRequest, gates: GatesDep, answers: AnswersDep) -> Any:
     # a refusal (SimulationError) or an unknown scene is answered by app/web/errors.py
@@ -66,7 +65,8 @@ def scene_modes(scene_id: str, gates: GatesDep, answers: AnswersDep) -> Any:
     return FastJSONResponse(modes.measure_scene(scene_id, gates, answers.measured_modes))
 
 
-@router.post(
+@scene_route(
+    router,
     "/scenes/{scene_id}/modes-at",
     summary="A scene's normal modes at given parameter values, predicted against measured",
     description=MODES_CORE
@@ -74,20 +74,18 @@ def scene_modes(scene_id: str, gates: GatesDep, answers: AnswersDep) -> Any:
     "them from the engine's closed forms. An equilibrium the engine found only numerically is given at the "
     "defaults alone, with at_defaults true.",
     response_model=list[MeasuredModes],
-    responses={**ERRORS, **BODY_ERRORS},
 )
 def scene_modes_at(scene_id: str, request: ModesRequest, gates: GatesDep, answers: AnswersDep) -> Any:
     # a value out of range or an unknown name (SimulationError) is answered by app/web/errors.py
     return FastJSONResponse(modes.modes_at(scene_id, request.parameters, gates, answers.modes_at))
 
 
-@router.post(
+@system_route(
+    router,
     "/poincare",
     summary="The Poincaré section of a system you declare",
     description=POINCARE_TEXT + " The system is given as for POST /api/derive; it runs in the worker pool.",
     response_model=PoincareResponse,
-    openapi_extra={"parameters": [SESSION_COOKIE]},
-    responses=_errors(400, 413, 422, 429, 503),
 )
 async def user_poincare(
     client: ClientDep, users: UserSystemsDep, body: Annotated[UserPoincareRequest, Body()]
@@ -98,13 +96,12 @@ async def user_poincare(
     return await answer(client, lambda key, address: users.poincare(checked(spec), options, key, address))
 
 
-@router.post(
+@system_route(
+    router,
     "/modes",
     summary="Normal modes of a system you declare, predicted against measured",
     description=MODES_TEXT + " The system is given as for POST /api/derive; it runs in the worker pool.",
     response_model=list[MeasuredModes],
-    openapi_extra={"parameters": [SESSION_COOKIE]},
-    responses=_errors(400, 413, 422, 429, 503),
 )
 async def user_modes(client: ClientDep, users: UserSystemsDep, system: Annotated[SystemSpec, Body()]) -> Response:
     return await answer(client, lambda key, address: users.modes(checked(system.to_spec()), key, address))

@@ -12,6 +12,7 @@ in the worker pool (app/service/classroom/service.py).
 
 from __future__ import annotations
 
+from collections.abc import Awaitable, Callable
 from typing import Annotated, Any, Literal
 
 from fastapi import APIRouter, Depends, Query
@@ -66,12 +67,30 @@ ERRORS: dict[int | str, dict[str, Any]] = {
 }
 
 
+def _errors(*statuses: int) -> dict[int | str, dict[str, Any]]:
+    return {status: ERRORS[status] for status in statuses}
+
+
+KEYED = _errors(401, 403)  # a route that needs a key
+
+
+def _keyed_read(
+    path: str, name: str, summary: str, model: type, read: Callable[[Classroom, str, str | None], Awaitable[Any]]
+) -> None:
+    """GET ``path``: what ``read`` gives the key's holder (a student or the instructor), answered no-store."""
+
+    async def endpoint(classes: ClassroomDep, code: str, key: KeyDep) -> JSONResponse:
+        return _json(await read(classes, code, key))
+
+    router.get(path, name=name, summary=summary, response_model=model, responses=KEYED)(endpoint)
+
+
 def _json(data: Any, status: int = 200) -> JSONResponse:
     return JSONResponse(data, status_code=status, headers=NO_STORE)
 
 
 @router.post("", status_code=201, summary="Create a class", response_model=ClassCreated,
-             responses={k: ERRORS[k] for k in (400, 413, 422)})
+             responses=_errors(400, 413, 422))
 async def create_class(classes: ClassroomDep, body: NewClass) -> JSONResponse:
     return _json(await classes.create(body.title), 201)
 
@@ -80,17 +99,13 @@ async def create_class(classes: ClassroomDep, body: NewClass) -> JSONResponse:
     "/{code}/join",
     summary="Join a class with a pseudonym",
     response_model=Joined,
-    responses={404: {"model": ErrorResponse, "description": "No class has this code."},
-               **{k: ERRORS[k] for k in (400, 413, 422, 429)}},
+    responses={404: {"model": ErrorResponse, "description": "No class has this code."}, **_errors(400, 413, 422, 429)},
 )
 async def join_class(classes: ClassroomDep, client: ClientDep, code: str, body: JoinRequest) -> Response:
     return client.keep(_json(await classes.join(code, body.name, client.key)))
 
 
-@router.get("/{code}/me", summary="The class as your key sees it", response_model=ClassView,
-            responses={401: ERRORS[401], 403: ERRORS[403]})
-async def view_class(classes: ClassroomDep, code: str, key: KeyDep) -> JSONResponse:
-    return _json(await classes.view(code, key))
+_keyed_read("/{code}/me", "view_class", "The class as your key sees it", ClassView, Classroom.view)
 
 
 @router.post(
@@ -114,28 +129,21 @@ async def check_step(classes: ClassroomDep, client: ClientDep, code: str, key: K
 
 
 @router.put("/{code}/assignment", summary="Set the class's assignment",
-            responses={k: ERRORS[k] for k in (400, 401, 403, 413, 422)})
+            responses=_errors(400, 401, 403, 413, 422))
 async def set_assignment(classes: ClassroomDep, code: str, key: KeyDep, body: Assignment) -> JSONResponse:
     return _json(await classes.assign(code, key, [item.to_item() for item in body.items]))
 
 
-@router.get("/{code}/summary", summary="Each step: answers, students done, named mistakes", response_model=Summary,
-            responses={401: ERRORS[401], 403: ERRORS[403]})
-async def class_summary(classes: ClassroomDep, code: str, key: KeyDep) -> JSONResponse:
-    return _json(await classes.summary(code, key))
-
-
-@router.get("/{code}/students", summary="Each student's progress", response_model=Students,
-            responses={401: ERRORS[401], 403: ERRORS[403]})
-async def class_students(classes: ClassroomDep, code: str, key: KeyDep) -> JSONResponse:
-    return _json(await classes.students(code, key))
+_keyed_read("/{code}/summary", "class_summary", "Each step: answers, students done, named mistakes", Summary,
+            Classroom.summary)
+_keyed_read("/{code}/students", "class_students", "Each student's progress", Students, Classroom.students)
 
 
 @router.get(
     "/{code}/export",
     summary="Every recorded attempt, as CSV",
     response_class=Response,
-    responses={200: {"content": {"text/csv": {}}}, 401: ERRORS[401], 403: ERRORS[403], 422: ERRORS[422]},
+    responses={200: {"content": {"text/csv": {}}}, **_errors(401, 403, 422)},
 )
 async def export_class(
     classes: ClassroomDep, code: str, key: KeyDep, format: Annotated[Literal["csv"], Query()] = "csv"
@@ -147,7 +155,7 @@ async def export_class(
 
 
 @router.delete("/{code}", status_code=204, summary="Delete the class and all it recorded",
-               responses={401: ERRORS[401], 403: ERRORS[403]})
+               responses=KEYED)
 async def delete_class(classes: ClassroomDep, code: str, key: KeyDep) -> Response:
     await classes.delete(code, key)
     return Response(status_code=204, headers=NO_STORE)

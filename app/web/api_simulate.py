@@ -7,6 +7,7 @@ block the event loop; the response is encoded there too (orjson).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 from fastapi import APIRouter
@@ -33,7 +34,20 @@ ERRORS = {
 BODY_ERRORS = {413: {"model": ErrorResponse, "description": f"The body is larger than {MAX_BODY_BYTES} bytes."}}
 
 
-@router.post(
+def scene_route(
+    router: APIRouter, path: str, summary: str, description: str, document: Any = None, **route: Any
+) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """POST ``path`` for a scene with a request body: documented with the scenes' errors and, for a route that
+    answers encoded JSON (FastJSONResponse, which FastAPI does not check), its ``document``'s model."""
+    responses: dict[int | str, dict[str, Any]] = {**ERRORS, **BODY_ERRORS}
+    if document is not None:
+        responses = {200: {"model": document}, **responses}
+        route["response_model"] = None
+    return router.post(path, summary=summary, description=description, responses=responses, **route)
+
+
+@scene_route(
+    router,
     "/scenes/{scene_id}/simulate",
     summary="Simulate a scene",
     description=(
@@ -42,8 +56,7 @@ BODY_ERRORS = {413: {"model": ErrorResponse, "description": f"The body is larger
         "the method (and why 'auto' chose it), steps, right-hand-side evaluations, wall time, an estimate of the "
         "global error of the coordinates (from a second, more accurate run), drifts and warnings."
     ),
-    response_model=None,
-    responses={200: {"model": SimulateResponse}, **ERRORS, **BODY_ERRORS},
+    document=SimulateResponse,
 )
 def simulate_scene(scene_id: str, request: SimulateRequest, gates: GatesDep) -> Any:
     # encoded here, in the thread pool, by orjson (numpy arrays directly); a refusal is answered by app/web/errors.py

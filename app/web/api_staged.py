@@ -16,10 +16,10 @@ from pydantic import BaseModel, Field
 
 from app.service.staged import equations_bytes
 from app.service.user_checks import checked
-from app.web.api_user import _errors, answer
+from app.web.api_user import answer, system_route
 from app.web.deps import ClientDep, UserSystemsDep
 from app.web.examples_user import DERIVE_EXAMPLES
-from app.web.schemas import SESSION_COOKIE, ParameterInfo
+from app.web.schemas import ParameterInfo
 from app.web.schemas_user import OPEN, EquationOfMotion, ExprPair, SkippedMember, SystemSpec
 
 router = APIRouter(prefix="/api", tags=["your systems"])
@@ -47,7 +47,8 @@ class FirstStage(BaseModel):
     pending: list[PendingMember] = Field(description="What POST /api/derive adds (empty when `stage` is whole).")
 
 
-@router.post(
+@system_route(
+    router,
     "/derive/equations",
     summary="The equations of a system you declare, first",
     description=(
@@ -56,8 +57,6 @@ class FirstStage(BaseModel):
         "`skipped` so far and `pending` (what POST /api/derive adds). A worker job under the derivation's limits."
     ),
     response_model=FirstStage,
-    openapi_extra={"parameters": [SESSION_COOKIE]},
-    responses=_errors(400, 413, 422, 429, 503),
 )
 async def derive_equations(
     client: ClientDep, users: UserSystemsDep, system: Annotated[SystemSpec, Body(openapi_examples=DERIVE_EXAMPLES)]

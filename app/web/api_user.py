@@ -76,6 +76,24 @@ def _errors(*statuses: int) -> dict[int | str, dict[str, Any]]:
     return responses
 
 
+def system_route(
+    router: APIRouter, path: str, summary: str, description: str, response_model: Any = None, example: Any = None
+) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """POST ``path`` for a system the user declares, run in the worker pool: documented with the session cookie,
+    the pool's errors and, if given, an ``example`` answer."""
+    responses = _errors(400, 413, 422, 429, 503)
+    if example is not None:
+        responses = {200: {"content": {"application/json": {"example": example}}}, **responses}
+    return router.post(
+        path,
+        summary=summary,
+        description=description,
+        response_model=response_model,
+        openapi_extra={"parameters": [SESSION_COOKIE]},
+        responses=responses,
+    )
+
+
 def _json(body: bytes) -> Response:
     return Response(body, media_type="application/json")
 
@@ -100,7 +118,8 @@ async def answer(
     return client.keep(response)
 
 
-@router.post(
+@system_route(
+    router,
     "/derive",
     summary="Derive a system you declare",
     description=(
@@ -110,11 +129,7 @@ async def answer(
         "(never evaluated as code); the derivation runs in a worker process with a time and memory limit."
     ),
     response_model=DerivationDocument,
-    openapi_extra={"parameters": [SESSION_COOKIE]},
-    responses={
-        200: {"content": {"application/json": {"example": DERIVE_RESPONSE}}},
-        **_errors(400, 413, 422, 429, 503),
-    },
+    example=DERIVE_RESPONSE,
 )
 async def derive_system(
     client: ClientDep, users: UserSystemsDep, system: Annotated[SystemSpec, Body(openapi_examples=DERIVE_EXAMPLES)]
@@ -122,7 +137,8 @@ async def derive_system(
     return await answer(client, lambda key, address: users.derive(checked(system.to_spec()), key, address))
 
 
-@router.post(
+@system_route(
+    router,
     "/simulate",
     summary="Simulate a system you declare",
     description=(
@@ -132,11 +148,7 @@ async def derive_system(
         "E, h, conserved quantities, and stats with the method, an error estimate, drifts and warnings."
     ),
     response_model=SimulateResponse,
-    openapi_extra={"parameters": [SESSION_COOKIE]},
-    responses={
-        200: {"content": {"application/json": {"example": SIMULATE_RESPONSE}}},
-        **_errors(400, 413, 422, 429, 503),
-    },
+    example=SIMULATE_RESPONSE,
 )
 async def simulate_system(
     client: ClientDep,

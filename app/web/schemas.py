@@ -19,6 +19,10 @@ SESSION_COOKIE: dict[str, Any] = {
 }
 
 
+# A request model refuses fields it does not know, and NaN and Infinity (JSON has neither; Python's json reads them).
+STRICT = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+
 class ErrorResponse(BaseModel):
     detail: str
 

@@ -12,6 +12,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from app.numerics import limits
 from app.service.action import EPSILONS_MAX, K_MAX, STEPS_DEFAULT, STEPS_MAX, T_SPAN
+from app.web.schemas import STRICT
 from app.web.schemas_simulate import Values
 from app.web.schemas_user import SystemSpec
 
@@ -20,8 +21,7 @@ class ActionRequest(BaseModel):
     """Which varied paths: the start and length of the true path, the coordinate varied, the shape, the ε's."""
 
     model_config = ConfigDict(
-        extra="forbid",
-        allow_inf_nan=False,
+        **STRICT,
         json_schema_extra={
             "example": {
                 "initial": {"theta": 1.0, "theta_dot": 0.0},
@@ -88,8 +88,7 @@ class RelaxRequest(BaseModel):
     """Two fixed ends and a trial path between them; the ends default to the true path's from ``initial``."""
 
     model_config = ConfigDict(
-        extra="forbid",
-        allow_inf_nan=False,
+        **STRICT,
         json_schema_extra={"example": {"t_end": 0.9, "start": {"theta": 1.0}, "end": {"theta": -0.7}, "steps": 200}},
     )
 

@@ -8,6 +8,7 @@ from pydantic import BaseModel, ConfigDict, Field, create_model
 
 from app.numerics import limits
 from app.service.poincare import COUNT_MAX, DEFAULT_COUNT, DEFAULT_T_END, T_END_MAX
+from app.web.schemas import STRICT
 from app.web.schemas_simulate import Values
 from app.web.schemas_user import SystemSpec
 
@@ -16,8 +17,7 @@ class PoincareRequest(BaseModel):
     """Which section: the energy (or the state whose h sets it), the plane, how many orbits, how long."""
 
     model_config = ConfigDict(
-        extra="forbid",
-        allow_inf_nan=False,
+        **STRICT,
         json_schema_extra={"example": {"initial": {"theta1": 2.0, "theta2": 2.0}, "count": 6, "t_end": 200.0}},
     )
 
@@ -63,7 +63,7 @@ class PoincareResponse(BaseModel):
 class ModesRequest(BaseModel):
     """The parameter values the modes are wanted at (the rest at the scene's defaults)."""
 
-    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, json_schema_extra={"example": {"parameters": {"kappa": 0.1}}})
+    model_config = ConfigDict(**STRICT, json_schema_extra={"example": {"parameters": {"kappa": 0.1}}})
 
     parameters: Values = Field(default_factory=dict, description="Parameter values by name (default: the scene's).")
 

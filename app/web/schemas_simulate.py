@@ -14,6 +14,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from app.numerics import limits
 from app.numerics.methods import CHOICES
+from app.web.schemas import STRICT
 
 # "auto" and the registry's names (app/numerics/methods/__init__.py)
 Method = Literal[CHOICES]
@@ -28,8 +29,7 @@ class SimulateRequest(BaseModel):
     """What to simulate; only ``initial`` is required, the rest defaults from the scene."""
 
     model_config = ConfigDict(
-        extra="forbid",
-        allow_inf_nan=False,
+        **STRICT,
         json_schema_extra={
             "example": {
                 "parameters": {"m": 1.0, "g": 9.81, "R": 1.0},

@@ -16,7 +16,7 @@ from app.engine.parse import FUNCTIONS, MAX_LENGTH
 from app.engine.trees import FUNCTIONS as TREE_FUNCTIONS
 from app.numerics import limits
 from app.service.user_checks import MAX_COORDINATES, MAX_PARAMETERS, MAX_PARTICLES
-from app.web.schemas import ParameterInfo
+from app.web.schemas import STRICT, ParameterInfo
 from app.web.schemas_simulate import SimulateRequest
 
 Expression = Annotated[
@@ -33,9 +33,6 @@ Name = Annotated[
     Field(min_length=1, max_length=40, description="A letter then up to 15 ASCII letters or digits."),
 ]
 Number = Annotated[float, Field(ge=-limits.VALUE_MAX, le=limits.VALUE_MAX)]
-
-STRICT = ConfigDict(extra="forbid", allow_inf_nan=False)
-
 
 class ParameterSpec(BaseModel):
     model_config = STRICT

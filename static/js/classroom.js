@@ -81,6 +81,14 @@ export function mistakeWords(name) {
   return name.replace(/_/g, " ").replace(/^\w/, (c) => c.toUpperCase());
 }
 
+/** A class page's two panes: `start` while no class is open (no `fields`), else `live`, each element named in
+ * `fields` given its text. */
+export function showPanes(start, live, fields) {
+  document.getElementById(start).hidden = Boolean(fields);
+  document.getElementById(live).hidden = !fields;
+  for (const [id, text] of Object.entries(fields || {})) document.getElementById(id).textContent = text;
+}
+
 /** Read and write one JSON record in localStorage (nothing kept when storage is off). */
 export function stored(key) {
   return {

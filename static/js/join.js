@@ -5,7 +5,7 @@
  * typeset and the hint come back as in practice mode. The student's own progress is counted from
  * the server's record. The student key stays in localStorage; a reload goes on where it was.
  */
-import { api, el, exerciseOf, practiceOf, stepTex, stored, typeset } from "./classroom.js";
+import { api, el, exerciseOf, practiceOf, showPanes, stepTex, stored, typeset } from "./classroom.js";
 
 const memory = stored("lagrange-join");
 const scenes = JSON.parse(document.getElementById("class-scenes").textContent);
@@ -18,11 +18,7 @@ const done = new Set(); // "item|step|coordinate" of the steps this student has 
 const stepId = (item, step, coordinate) => `${item}|${step}|${coordinate || ""}`;
 
 function show() {
-  $("join-start").hidden = Boolean(current);
-  $("join-live").hidden = !current;
-  if (!current) return;
-  $("joined-title").textContent = current.title;
-  $("joined-name").textContent = current.name;
+  showPanes("join-start", "join-live", current && { "joined-title": current.title, "joined-name": current.name });
 }
 
 function progress() {

@@ -14,7 +14,7 @@
  * the panel shows the chosen coordinate's trajectory alone.
  */
 import { compile } from "./expr.js";
-import { axis, COLORS, finite, layout, Overlay, parts, rateUnit, react, titled } from "./plotkit.js";
+import { axis, COLORS, finite, layout, PreviewPanel, rateUnit, react, titled } from "./plotkit.js";
 import { reduced } from "./reduction.js";
 import { fmt, seriesTable } from "./summaries.js";
 
@@ -120,11 +120,9 @@ function model(run) {
   return { r, angle, turn, xs, V, m, values, rates, level, lo, hi, held };
 }
 
-export class PhasePanel {
+export class PhasePanel extends PreviewPanel {
   constructor(section, data) {
-    this.section = section; this.data = data; Object.assign(this, parts(section));
-    this.overlay = new Overlay(this.plot);
-    this.preview = true;
+    super(section, data);
     this.q = data.coordinates[0];
     this.reducible = Boolean(data.reduction) || data.coordinates.length === 1;
     if (!this.reducible && this.tools) {

@@ -74,6 +74,15 @@ export function parts(section) {
   };
 }
 
+/** A panel drawn from each run in the browser (a preview while a run is dragged): its section's parts and an overlay. */
+export class PreviewPanel {
+  constructor(section, data) {
+    this.section = section; this.data = data; Object.assign(this, parts(section));
+    this.overlay = new Overlay(this.plot);
+    this.preview = true;
+  }
+}
+
 const SVG = "http://www.w3.org/2000/svg";
 
 export function react(panel, traces, lay) {

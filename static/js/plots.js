@@ -16,7 +16,7 @@
  */
 import { fetchJSON } from "./api.js";
 import { ActionPanel } from "./action.js";
-import { axis, capital, COLORS, CONFIG, diff, drawWhenVisible, finite, layout, line, momentumUnit, Overlay, PALETTE, parts, react } from "./plotkit.js";
+import { axis, capital, COLORS, CONFIG, diff, drawWhenVisible, finite, layout, line, momentumUnit, PALETTE, parts, PreviewPanel, react } from "./plotkit.js";
 import { ModesPanel } from "./modes.js";
 import { PhasePanel } from "./phase.js";
 import { PoincarePanel } from "./poincare.js";
@@ -24,13 +24,7 @@ import { EffectivePotentialPanel, SmallOscillationsPanel } from "./reduction.js"
 import { constantOrRange, fmt, median, seriesTable, table } from "./summaries.js";
 
 /** A panel of quantities against time, with a second row for their change since t = 0. */
-class TimePanel {
-  constructor(section, data) {
-    this.section = section; this.data = data; Object.assign(this, parts(section));
-    this.overlay = new Overlay(this.plot);
-    this.preview = true;
-  }
-
+class TimePanel extends PreviewPanel {
   drawSeries(run, top, bottom, yTitle, bottomTitle, extra = {}) {
     const traces = top.map((s) => line(run.t, s.values, s.name, s.color, s.dash));
     for (const s of bottom || []) traces.push({ ...line(run.t, s.values, s.name, s.color, s.dash), yaxis: "y2", showlegend: false });

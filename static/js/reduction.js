@@ -11,7 +11,7 @@
  * coordinates take their values from the initial state.
  */
 import { compile } from "./expr.js";
-import { axis, COLORS, finite, layout, Overlay, parts, react, titled } from "./plotkit.js";
+import { axis, COLORS, finite, layout, PreviewPanel, react, titled } from "./plotkit.js";
 import { fmt, fmtResolved, table } from "./summaries.js";
 
 /** The one-coordinate reduction evaluated for a run: U_eff, m_eff, the momenta's values, E_r(t). */
@@ -80,13 +80,7 @@ function window_(values, nonnegative) {
   return [nonnegative ? Math.max(lo - pad, 1e-3 * hi) : lo - pad, hi + pad];
 }
 
-export class EffectivePotentialPanel {
-  constructor(section, data) {
-    this.section = section; this.data = data; Object.assign(this, parts(section));
-    this.overlay = new Overlay(this.plot);
-    this.preview = true;
-  }
-
+export class EffectivePotentialPanel extends PreviewPanel {
   draw(run) {
     this.red = reduced(run);
     const { r, U, Er, values } = this.red;
@@ -165,13 +159,7 @@ export function measuredOmega(t, values) {
   return (2 * Math.PI) / period;
 }
 
-export class SmallOscillationsPanel {
-  constructor(section, data) {
-    this.section = section; this.data = data; Object.assign(this, parts(section));
-    this.overlay = new Overlay(this.plot);
-    this.preview = true;
-  }
-
+export class SmallOscillationsPanel extends PreviewPanel {
   draw(run) {
     const red = reduced(run);
     const eq = equilibrium(run, red);

@@ -4,7 +4,7 @@
  * two seconds; bars per step (right and wrong answers, students done), the most common named
  * mistakes with the step typeset, one row per student. The instructor key stays in localStorage.
  */
-import { api, el, mistakeWords, practiceOf, stepTex, stored, typeset } from "./classroom.js";
+import { api, el, mistakeWords, practiceOf, showPanes, stepTex, stored, typeset } from "./classroom.js";
 
 const POLL_MS = 2000;
 const memory = stored("lagrange-teach");
@@ -16,13 +16,12 @@ let timer = null;
 let assignment = [];
 
 function show() {
-  $("class-start").hidden = Boolean(current);
-  $("class-live").hidden = !current;
-  if (!current) return;
-  $("class-title").textContent = current.title;
-  $("class-code").textContent = current.code;
-  $("class-join-url").textContent = `${window.location.host}/join`;
-  $("class-key-text").textContent = current.key;
+  showPanes("class-start", "class-live", current && {
+    "class-title": current.title,
+    "class-code": current.code,
+    "class-join-url": `${window.location.host}/join`,
+    "class-key-text": current.key,
+  });
 }
 
 async function open(code, key) {
