@@ -34,6 +34,10 @@ MEMBER_SECONDS = {
     "hamilton": 3.0,
     "normal_modes": 4.0,
 }
+# The chapter's scenes are derived with every bound this many times as long (app/engine/budget.patience):
+# their documents are made once per version and kept on disk, so a loaded machine must not change what
+# the book prints; a user's system keeps the bounds as they are.
+SCENE_PATIENCE = 10.0
 MEMBER_RESERVE_SECONDS = 1.0  # kept back from a member's bound for the rest of the document near an outer limit
 SIMPLIFY_SECONDS = 0.5  # one tidy-up of an expression
 FORM_SECONDS = 1.0  # one expression's textbook form

@@ -57,6 +57,7 @@ def time_limit(seconds: float) -> Iterator[None]:
         return
     outer, _ = signal.getitimer(signal.ITIMER_REAL)
     started = time.monotonic()
+    seconds *= _patience()
     seconds = min(seconds, outer) if outer > 0 else seconds
 
     def _expire(signum: int, frame: object) -> None:
@@ -104,13 +105,14 @@ def bounded(member: str, what: str, seconds: float, work: Callable[[], T], fallb
     ``what`` names the part in the note ("Hamilton's equations").
     """
     outer, _ = signal.getitimer(signal.ITIMER_REAL)
+    seconds *= _patience()
     if outer > 0 and threading.current_thread() is threading.main_thread():
         seconds = min(seconds, outer - MEMBER_RESERVE_SECONDS)
     if seconds <= 0.01:
         skipped.append(Skipped(member, f"{what} left out: the time for this document was used up by the parts above."))
         return fallback
     try:
-        with time_limit(seconds):
+        with time_limit(seconds / _patience()):  # time_limit scales it again
             return work()
     except BudgetExceeded:
         skipped.append(
@@ -131,7 +133,7 @@ def display_budget(seconds: float) -> Iterator[None]:
     """Share one time budget among all display simplifications in the block, and one memo (``memoized``):
     the outermost block is one document, and what it remembers ends with it."""
     previous, memo = getattr(_local, "deadline", None), getattr(_local, "memo", None)
-    _local.deadline = time.monotonic() + seconds
+    _local.deadline = time.monotonic() + seconds * _patience()
     if memo is None:
         _local.memo = {}
     try:
@@ -178,7 +180,27 @@ def display_seconds_left(seconds: float) -> float:
 
 def _remaining(seconds: float) -> float:
     deadline = getattr(_local, "deadline", None)
+    seconds *= _patience()
     return seconds if deadline is None else min(seconds, deadline - time.monotonic())
+
+
+def _patience() -> float:
+    return getattr(_local, "patience", 1.0)
+
+
+@contextmanager
+def patience(factor: float) -> Iterator[None]:
+    """Every time bound in the block (limits, members, the display budget) is ``factor`` times as long.
+
+    For the chapter's scenes: their documents are derived once per version of the program and kept on disk,
+    so what the book prints must not depend on how loaded the machine was that built them; a user's
+    system keeps the bounds as they are."""
+    previous = _patience()
+    _local.patience = previous * factor
+    try:
+        yield
+    finally:
+        _local.patience = previous
 
 
 def tidy(expr: sp.Expr, seconds: float = SIMPLIFY_SECONDS) -> sp.Expr:

@@ -46,3 +46,25 @@ def test_one_cut_short_by_a_shared_budget_is_tried_again_later(slow_simplify):
     assert len(slow_simplify) == 1
     budget.tidy(expr, seconds=0.2)
     assert len(slow_simplify) == 2
+
+
+def _busy(seconds: float) -> str:
+    """SymPy work for ``seconds`` (the budget's signal is raised only in SymPy's or the app's frames)."""
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        sp.expand((x + y) ** 12)
+    return "done"
+
+
+def test_patience_lengthens_every_bound_in_its_block_and_only_there():
+    from app.engine.budget import bounded, display_budget, display_seconds_left, patience
+
+    skipped: list = []
+    assert bounded("m", "A member", 0.02, lambda: _busy(0.1), "fallback", skipped) == "fallback"
+    assert [s.member for s in skipped] == ["m"]
+    with patience(50):
+        assert bounded("m", "A member", 0.02, lambda: _busy(0.1), "fallback", skipped) == "done"
+        with display_budget(0.01):
+            assert display_seconds_left(0.01) > 0.1  # the shared display budget is as patient
+    assert len(skipped) == 1
+    assert bounded("m", "A member", 0.02, lambda: _busy(0.1), "fallback", skipped) == "fallback"
