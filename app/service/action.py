@@ -27,7 +27,7 @@ from app.numerics.action_relax import find_path
 from app.numerics.errors import SimulationError
 from app.numerics.simulate import simulate
 from app.service.cache import Recent
-from app.service.compiled import COMPILED
+from app.service.derivations import PROCESS_SCENES
 from app.service.gates import GATES, Gates, slot
 from app.service.simulate_request import check_number, initial_state, parameter_vector
 
@@ -81,7 +81,7 @@ def action_of_derivation(
     eps = [check_number(e, f"epsilons.{i}") for i, e in enumerate(epsilons)]
     kv = parameter_vector(d, parameters or {})
     y0 = initial_state(d, initial or {}, defaults or {})
-    system, _ = COMPILED.get(key, d)
+    system, _ = PROCESS_SCENES.compiled.get(key, d)
     with slot(gates.slots, "too many simulations are running at once; try again in a few seconds"):
         result = action_of(
             system, kv, y0, T, names.index(coordinate), k, eps, wait_for_compile=not gates.answer_while_compiling
@@ -160,7 +160,7 @@ def relax_of_derivation(
     if isinstance(steps, bool) or not isinstance(steps, int) or not 4 <= steps <= STEPS_MAX:
         raise SimulationError(f"steps must be a whole number from 4 to {STEPS_MAX}", "steps")
     kv = parameter_vector(d, parameters or {})
-    system, _ = COMPILED.get(key, d)
+    system, _ = PROCESS_SCENES.compiled.get(key, d)
     terms = action_terms(system)
     n = system.n
     with slot(gates.slots, "too many simulations are running at once; try again in a few seconds"):

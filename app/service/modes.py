@@ -41,7 +41,7 @@ from app.numerics import limits
 from app.numerics.frequency import measured_omega
 from app.numerics.simulate import simulate
 from app.service.cache import JsonCache, Recent, source_fingerprint
-from app.service.compiled import COMPILED
+from app.service.derivations import PROCESS_SCENES
 from app.service.gates import GATES, Gates
 from app.service.simulate_request import parameter_vector
 from app.viz.panels import oscillating_equilibria
@@ -111,7 +111,7 @@ def measured(
     n = len(names)
     k = parameter_vector(d, parameters or {})
     used = dict(zip((p.name for p in d.system.parameters), map(float, k), strict=True))
-    system, _ = COMPILED.get(key, d)
+    system, _ = PROCESS_SCENES.compiled.get(key, d)
     out = []
     for e in equilibria:
         modes = []

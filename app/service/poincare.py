@@ -26,7 +26,7 @@ from app.numerics import limits
 from app.numerics.errors import SimulationError
 from app.numerics.poincare import hamiltonian, section
 from app.service.cache import Recent
-from app.service.compiled import COMPILED
+from app.service.derivations import PROCESS_SCENES
 from app.service.gates import GATES, Gates
 from app.service.simulate_request import check_number, initial_state, parameter_vector, setting
 
@@ -63,7 +63,7 @@ def section_of_derivation(
     count = int(setting(count, DEFAULT_COUNT, 1, COUNT_MAX, "count"))
     t_end = setting(t_end, DEFAULT_T_END, 1e-6, T_END_MAX, "t_end")
     k = parameter_vector(d, parameters or {})
-    system, observables = COMPILED.get(key, d)
+    system, observables = PROCESS_SCENES.compiled.get(key, d)
     if energy is None:
         y0 = initial_state(d, initial or {}, defaults or {})
         energy = float(hamiltonian(observables, y0, k)[0])

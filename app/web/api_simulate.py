@@ -12,7 +12,7 @@ from typing import Any
 from fastapi import APIRouter
 
 from app.service import simulation, work_precision
-from app.web.deps import AnswersDep, GatesDep
+from app.web.deps import AnswersDep, ChapterDep, GatesDep
 from app.web.limits import MAX_BODY_BYTES
 from app.web.responses import FastJSONResponse
 from app.web.schemas import ErrorResponse
@@ -45,9 +45,9 @@ BODY_ERRORS = {413: {"model": ErrorResponse, "description": f"The body is larger
     response_model=None,
     responses={200: {"model": SimulateResponse}, **ERRORS, **BODY_ERRORS},
 )
-def simulate_scene(scene_id: str, request: SimulateRequest, gates: GatesDep) -> Any:
+def simulate_scene(scene_id: str, request: SimulateRequest, gates: GatesDep, chapter: ChapterDep) -> Any:
     # encoded here, in the thread pool, by orjson (numpy arrays directly); a refusal is answered by app/web/errors.py
-    return FastJSONResponse(simulation.simulate_scene(scene_id, request, gates))
+    return FastJSONResponse(simulation.simulate_scene(scene_id, request, gates, chapter))
 
 
 @router.get(
