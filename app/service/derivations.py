@@ -112,6 +112,11 @@ class Scenes:
 PROCESS_SCENES = Scenes()
 
 
+def held(chapter: Scenes | None) -> Scenes:
+    """The ``Scenes`` a service function was given (the app's), else this process's."""
+    return PROCESS_SCENES if chapter is None else chapter
+
+
 def derivation(scene_id: str) -> Derivation:
     """The process's derivation of a scene (``Scenes.derivation``)."""
     return PROCESS_SCENES.derivation(scene_id)

@@ -16,7 +16,7 @@ from app.service import action
 from app.service.user_checks import checked, spec_key
 from app.web.api_simulate import BODY_ERRORS, ERRORS
 from app.web.api_user import _errors, answer
-from app.web.deps import AnswersDep, ClientDep, GatesDep, UserSystemsDep
+from app.web.deps import AnswersDep, ChapterDep, ClientDep, GatesDep, UserSystemsDep
 from app.web.responses import FastJSONResponse
 from app.web.schemas import SESSION_COOKIE
 from app.web.schemas_action import (
@@ -47,9 +47,13 @@ TEXT = (
     response_model=None,
     responses={200: {"model": ActionResponse}, **ERRORS, **BODY_ERRORS},
 )
-def scene_action(scene_id: str, request: ActionRequest, gates: GatesDep, answers: AnswersDep) -> Any:
+def scene_action(
+    scene_id: str, request: ActionRequest, gates: GatesDep, answers: AnswersDep, chapter: ChapterDep
+) -> Any:
     # a refusal (SimulationError) or an unknown scene is answered by app/web/errors.py
-    return FastJSONResponse(action.cached_action_of_scene(scene_id, gates, answers.actions, **action_options(request)))
+    return FastJSONResponse(
+        action.cached_action_of_scene(scene_id, gates, answers.actions, chapter, **action_options(request))
+    )
 
 
 @router.post(
@@ -89,8 +93,8 @@ RELAX_TEXT = (
     description=RELAX_TEXT,
     responses={**ERRORS, **BODY_ERRORS},
 )
-def scene_relax(scene_id: str, request: RelaxRequest, gates: GatesDep) -> Any:
-    return FastJSONResponse(action.relax_of_scene(scene_id, gates, **relax_options(request)))
+def scene_relax(scene_id: str, request: RelaxRequest, gates: GatesDep, chapter: ChapterDep) -> Any:
+    return FastJSONResponse(action.relax_of_scene(scene_id, gates, chapter, **relax_options(request)))
 
 
 @router.post(

@@ -15,7 +15,7 @@ from app.service import modes, poincare
 from app.service.user_checks import checked
 from app.web.api_simulate import BODY_ERRORS, ERRORS
 from app.web.api_user import _errors, answer
-from app.web.deps import AnswersDep, ClientDep, GatesDep, UserSystemsDep
+from app.web.deps import AnswersDep, ChapterDep, ClientDep, GatesDep, UserSystemsDep
 from app.web.responses import FastJSONResponse
 from app.web.schemas import SESSION_COOKIE
 from app.web.schemas_beyond import (
@@ -49,10 +49,12 @@ MODES_TEXT = MODES_CORE + " (default parameters)."
     response_model=None,
     responses={200: {"model": PoincareResponse}, **ERRORS, **BODY_ERRORS},
 )
-def scene_poincare(scene_id: str, request: PoincareRequest, gates: GatesDep, answers: AnswersDep) -> Any:
+def scene_poincare(
+    scene_id: str, request: PoincareRequest, gates: GatesDep, answers: AnswersDep, chapter: ChapterDep
+) -> Any:
     # a refusal (SimulationError) or an unknown scene is answered by app/web/errors.py
     options = poincare_options(request)
-    return FastJSONResponse(poincare.cached_section_of_scene(scene_id, gates, answers.sections, **options))
+    return FastJSONResponse(poincare.cached_section_of_scene(scene_id, gates, answers.sections, chapter, **options))
 
 
 @router.get(
@@ -62,8 +64,8 @@ def scene_poincare(scene_id: str, request: PoincareRequest, gates: GatesDep, ans
     response_model=list[MeasuredModes],
     responses={404: ERRORS[404], 429: ERRORS[429]},
 )
-def scene_modes(scene_id: str, gates: GatesDep, answers: AnswersDep) -> Any:
-    return FastJSONResponse(modes.measure_scene(scene_id, gates, answers.measured_modes))
+def scene_modes(scene_id: str, gates: GatesDep, answers: AnswersDep, chapter: ChapterDep) -> Any:
+    return FastJSONResponse(modes.measure_scene(scene_id, gates, answers.measured_modes, chapter))
 
 
 @router.post(
@@ -76,9 +78,11 @@ def scene_modes(scene_id: str, gates: GatesDep, answers: AnswersDep) -> Any:
     response_model=list[MeasuredModes],
     responses={**ERRORS, **BODY_ERRORS},
 )
-def scene_modes_at(scene_id: str, request: ModesRequest, gates: GatesDep, answers: AnswersDep) -> Any:
+def scene_modes_at(
+    scene_id: str, request: ModesRequest, gates: GatesDep, answers: AnswersDep, chapter: ChapterDep
+) -> Any:
     # a value out of range or an unknown name (SimulationError) is answered by app/web/errors.py
-    return FastJSONResponse(modes.modes_at(scene_id, request.parameters, gates, answers.modes_at))
+    return FastJSONResponse(modes.modes_at(scene_id, request.parameters, gates, answers.modes_at, chapter))
 
 
 @router.post(
