@@ -39,7 +39,7 @@ async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
     if settings().warm:
         # the imported modules out of the collector's full scans before the warm-up's allocations trigger some
         freeze_imported()
-        warming = simulation.start_warming()
+        warming = simulation.start_warming(services.chapter, services.gates)
         # then the playground's examples (from the disk cache set-up filled), so that a first reader of one
         # does not wait for its derivation
         examples = warm_examples(services.users, services.answers.examples, after=warming)

@@ -16,6 +16,7 @@ methods by name) and ``rebuilt`` there on that process's own copy of the system.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, fields, replace
 from typing import Any
 
@@ -107,12 +108,16 @@ def plan(
     atol: float,
     estimate: bool = True,
     wait_for_compile: bool = True,
+    ready: Callable[[Method, NumericSystem], bool] | None = None,
 ) -> Plan:
     """Analyse the start, resolve ``auto``, check the method applies, and fall back to scipy while compiling.
 
     With ``wait_for_compile=False`` (a server), ``auto`` picking a compiled method whose code (or
     whose reference's code) is not ready yet in this process runs scipy's DOP853 on the generated
-    scalar right-hand side instead, run and reference; asking for a method by name always runs it."""
+    scalar right-hand side instead, run and reference; asking for a method by name always runs it.
+    ``ready(method, system)``: whether that code is ready (by default the method's own ``ready``, what this
+    process has compiled; a server's gates may give another, app/service/gates.py)."""
+    is_ready = ready or (lambda m, s: m.ready(s))
     analysis = analyse(system, k, y0, t_end, rtol, np.full(y0.size, atol))
     if requested == AUTO:
         name, reason = choose(system, analysis)
@@ -128,7 +133,7 @@ def plan(
         requested == AUTO
         and chosen.compiled
         and not wait_for_compile
-        and not (chosen.ready(system) and (reference is None or reference.ready(system)))
+        and not (is_ready(chosen, system) and (reference is None or is_ready(reference, system)))
     ):
         reason = (
             f"scipy's {FALLBACK} (Python step loop) answered, because the compiled code that auto picks here is "

@@ -1,4 +1,7 @@
-"""Numeric systems (right-hand sides and observables) compiled once per scene or user system, per process."""
+"""Numeric systems (right-hand sides and observables) compiled once per scene or user system, per holder.
+
+A ``Compiled`` is held by the scenes' state of a process (``app.service.derivations.Scenes``: the app's
+services in the web process, the process's own in a worker or a script); none is a module global."""
 
 from __future__ import annotations
 
@@ -7,6 +10,7 @@ import threading
 import time
 from collections import OrderedDict
 from collections.abc import Sequence
+from pathlib import Path
 
 import sympy as sp
 
@@ -19,18 +23,27 @@ from app.scenes import Scene
 from app.service.cache import JsonCache, source_fingerprint
 
 
+def scene_sources(folder: Path | None = None) -> JsonCache:
+    """The scenes' generated sources on disk (keyed by the engine's, scenes' and numerics' source), so a new
+    process skips the code generation; under ``folder`` (by default the settings' ``cache_dir``)."""
+    return JsonCache("generated-sources", source_fingerprint("engine", "scenes", "numerics"), folder)
+
+
 class Compiled:
-    """Numeric systems per scene id (or per generated source for user systems), per process.
+    """Numeric systems per scene id (or per generated source for user systems), and the scenes' terminal events.
 
     One lock per key: a request for one scene never waits while another scene's system is built
-    (by the warm-up thread or another request); two requests for the same scene build it once."""
+    (by the warm-up thread or another request); two requests for the same scene build it once.
+    ``sources``: where a scene's generated sources are kept (``scene_sources()``)."""
 
-    def __init__(self, size: int = 32):
+    def __init__(self, size: int = 32, sources: JsonCache | None = None):
         self.size = size
+        self.sources = scene_sources() if sources is None else sources
         self.items: OrderedDict[str, tuple[NumericSystem, Observables]] = OrderedDict()
         self.lock = threading.Lock()  # guards ``items`` and ``_building``, held only briefly
         self._building: dict[str, threading.Lock] = {}
         self.build_seconds: dict[str, float] = {}
+        self._events: dict[str, list[EventFunction]] = {}  # per scene id: its terminal events, compiled once
 
     def _cached(self, key: str) -> tuple[NumericSystem, Observables] | None:
         with self.lock:
@@ -63,7 +76,7 @@ class Compiled:
         start = time.perf_counter()
         # a scene's generated sources come from the disk cache (keyed by the engine's, scenes' and
         # numerics' source), so a new worker skips the code generation
-        sources = _SOURCES.get(key, lambda: generated_sources(d)) if scene else None
+        sources = self.sources.get(key, lambda: generated_sources(d)) if scene else None
         system = numeric_system(d, sources)
         entry = (system, build(system, forces))
         with self.lock:
@@ -73,23 +86,20 @@ class Compiled:
                 self.items.popitem(last=False)
         return entry
 
+    def events(self, scene: Scene | None, system: NumericSystem) -> list[EventFunction]:
+        """A scene's terminal events compiled for its system (once); none for a user system."""
+        if scene is None or not scene.events:
+            return []
+        with self.lock:
+            found = self._events.get(scene.id)
+        if found is None:
+            found = compile_events(system, scene.events)
+            with self.lock:
+                found = self._events.setdefault(scene.id, found)
+        return found
+
 
 def system_key(d: Derivation, forces: Sequence[ConstraintForce]) -> str:
     """A user system's cache key: a digest of its declaration (the parsed System) and its constraint forces."""
     text = repr(d.system) + "".join(f"|{f.constraint!r}={sp.srepr(f.force)}" for f in forces)
     return "system:" + hashlib.sha256(text.encode()).hexdigest()
-
-
-_EVENTS: dict[str, list[EventFunction]] = {}  # per scene id: its terminal events, compiled once per process
-
-
-def scene_events(scene: Scene | None, system: NumericSystem) -> list[EventFunction]:
-    if scene is None or not scene.events:
-        return []
-    if scene.id not in _EVENTS:
-        _EVENTS[scene.id] = compile_events(system, scene.events)
-    return _EVENTS[scene.id]
-
-
-_SOURCES = JsonCache("generated-sources", source_fingerprint("engine", "scenes", "numerics"))
-COMPILED = Compiled()

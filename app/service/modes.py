@@ -41,7 +41,8 @@ from app.numerics import limits
 from app.numerics.frequency import measured_omega
 from app.numerics.simulate import simulate
 from app.service.cache import JsonCache, Recent, source_fingerprint
-from app.service.compiled import COMPILED
+from app.service.compiled import Compiled
+from app.service.derivations import PROCESS_SCENES, Scenes, held
 from app.service.gates import GATES, Gates
 from app.service.simulate_request import parameter_vector
 from app.viz.panels import oscillating_equilibria
@@ -103,15 +104,17 @@ def measured(
     key: str | None = None,
     gates: Gates = GATES,
     parameters: Mapping[str, float] | None = None,
+    compiled: Compiled | None = None,
 ) -> list[dict[str, Any]]:
     """Predicted and measured omega of every oscillating mode at every equilibrium at rest.
 
-    ``equilibria`` are at ``parameters`` (default: the declared values)."""
+    ``equilibria`` are at ``parameters`` (default: the declared values); ``compiled``: where the numeric
+    system is kept (the app's scenes', by default this process's)."""
     names = list(d.table.names)
     n = len(names)
     k = parameter_vector(d, parameters or {})
     used = dict(zip((p.name for p in d.system.parameters), map(float, k), strict=True))
-    system, _ = COMPILED.get(key, d)
+    system, _ = (PROCESS_SCENES.compiled if compiled is None else compiled).get(key, d)
     out = []
     for e in equilibria:
         modes = []
@@ -249,29 +252,38 @@ AT_CACHE_SIZE = 256  # the size of the app's ``Recent`` of modes at given values
 
 
 def modes_at(
-    scene_id: str, parameters: Mapping[str, float], gates: Gates = GATES, remembered: Recent | None = None
+    scene_id: str,
+    parameters: Mapping[str, float],
+    gates: Gates = GATES,
+    remembered: Recent | None = None,
+    chapter: Scenes | None = None,
 ) -> list[dict[str, Any]]:
     """A scene's modes, predicted and measured, at the given parameter values (the rest at their defaults),
-    through ``remembered`` (the app's recent answers) when given."""
-    from app.service.derivations import derivation
-
-    d = derivation(scene_id)
+    through ``remembered`` (the app's recent answers) when given; ``chapter``: the app's scenes (by default
+    this process's)."""
+    chapter = held(chapter)
+    d = chapter.derivation(scene_id)
     k = parameter_vector(d, parameters)  # refuses unknown names and values out of range
 
     def compute() -> list[dict[str, Any]]:
         given = dict(zip((p.name for p in d.system.parameters), map(float, k), strict=True))
-        return measured(d, predicted_at(scene_id, d, k), scene_id, gates, given)
+        return measured(d, predicted_at(scene_id, d, k), scene_id, gates, given, chapter.compiled)
 
     return compute() if remembered is None else remembered.get((scene_id, tuple(map(float, k))), compute)
 
 
-def measure_scene(scene_id: str, gates: Gates = GATES, cache: JsonCache | None = None) -> list[dict[str, Any]]:
-    """A scene's measured modes (computed once, then from ``cache``, by default the disk's)."""
-    from app.service.derivations import derivation
+def measure_scene(
+    scene_id: str, gates: Gates = GATES, cache: JsonCache | None = None, chapter: Scenes | None = None
+) -> list[dict[str, Any]]:
+    """A scene's measured modes (computed once, then from ``cache``, by default the disk's); ``chapter``: the
+    app's scenes (by default this process's)."""
+    chapter = held(chapter)
 
-    return (cache or measured_cache()).get(
-        scene_id, lambda: measured(derivation(scene_id), at_rest(scene_modes(scene_id)), scene_id, gates)
-    )
+    def compute() -> list[dict[str, Any]]:
+        d = chapter.derivation(scene_id)
+        return measured(d, at_rest(scene_modes(scene_id)), scene_id, gates, compiled=chapter.compiled)
+
+    return (cache or measured_cache()).get(scene_id, compute)
 
 
 def warm_all() -> None:

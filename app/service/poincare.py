@@ -26,7 +26,8 @@ from app.numerics import limits
 from app.numerics.errors import SimulationError
 from app.numerics.poincare import hamiltonian, section
 from app.service.cache import Recent
-from app.service.compiled import COMPILED
+from app.service.compiled import Compiled
+from app.service.derivations import PROCESS_SCENES, Scenes, held
 from app.service.gates import GATES, Gates
 from app.service.simulate_request import check_number, initial_state, parameter_vector, setting
 
@@ -49,8 +50,11 @@ def section_of_derivation(
     key: str | None = None,
     defaults: Mapping[str, float] | None = None,
     gates: Gates = GATES,
+    compiled: Compiled | None = None,
 ) -> dict[str, Any]:
-    """The section q_coordinate = value of orbits with h = energy (or h at ``initial``); refusals raise SimulationError."""
+    """The section q_coordinate = value of orbits with h = energy (or h at ``initial``); refusals raise SimulationError.
+
+    ``compiled``: where the numeric system is kept (the app's scenes', by default this process's)."""
     names = list(d.table.names)
     if len(names) < 2:
         raise SimulationError("a Poincaré section needs at least two coordinates; this system has one", "coordinate")
@@ -63,7 +67,7 @@ def section_of_derivation(
     count = int(setting(count, DEFAULT_COUNT, 1, COUNT_MAX, "count"))
     t_end = setting(t_end, DEFAULT_T_END, 1e-6, T_END_MAX, "t_end")
     k = parameter_vector(d, parameters or {})
-    system, observables = COMPILED.get(key, d)
+    system, observables = (PROCESS_SCENES.compiled if compiled is None else compiled).get(key, d)
     if energy is None:
         y0 = initial_state(d, initial or {}, defaults or {})
         energy = float(hamiltonian(observables, y0, k)[0])
@@ -108,19 +112,25 @@ def section_of_derivation(
     }
 
 
-def section_of_scene(scene_id: str, gates: Gates = GATES, **options: Any) -> dict[str, Any]:
-    """A scene's Poincaré section; the energy defaults to h at the scene's initial state."""
-    from app.service.derivations import derivation, scene
+def section_of_scene(
+    scene_id: str, gates: Gates = GATES, chapter: Scenes | None = None, **options: Any
+) -> dict[str, Any]:
+    """A scene's Poincaré section; the energy defaults to h at the scene's initial state.  ``chapter``: the
+    app's scenes (by default this process's)."""
+    from app.service.derivations import scene
 
-    s = scene(scene_id)
-    return section_of_derivation(derivation(scene_id), key=scene_id, defaults=s.initial, gates=gates, **options)
+    s, chapter = scene(scene_id), held(chapter)
+    d = chapter.derivation(scene_id)
+    return section_of_derivation(d, key=scene_id, defaults=s.initial, gates=gates, compiled=chapter.compiled, **options)
 
 
 CACHED_SECTIONS = 32  # the size of the app's ``Recent`` of sections (app/service/answers.py)
 
 
-def cached_section_of_scene(scene_id: str, gates: Gates, remembered: Recent, **options: Any) -> dict[str, Any]:
+def cached_section_of_scene(
+    scene_id: str, gates: Gates, remembered: Recent, chapter: Scenes | None = None, **options: Any
+) -> dict[str, Any]:
     """``section_of_scene`` through ``remembered``, the app's last CACHED_SECTIONS answers (a page asks again
     after each run)."""
     key = json.dumps([scene_id, options], sort_keys=True, default=str)
-    return remembered.get(key, lambda: section_of_scene(scene_id, gates, **options))
+    return remembered.get(key, lambda: section_of_scene(scene_id, gates, chapter, **options))

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from contextlib import ExitStack
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -30,8 +30,8 @@ from app.numerics.plan import Plan, plan
 from app.numerics.simulate import Outcome, run
 from app.numerics.start import why_not_at_start
 from app.scenes import SCENES, Scene
-from app.service.compiled import COMPILED, scene_events
-from app.service.gates import GATES, IN_FLIGHT, SLOTS, Gates
+from app.service.compiled import Compiled
+from app.service.gates import GATES, SLOTS, Gates
 from app.service.scene_jobs import load_scenes, run_scene_plan
 from app.service.simulate_request import (
     SimulationInput,
@@ -42,6 +42,9 @@ from app.service.simulate_request import (
 from app.service.simulation_result import document, observe
 from app.service.warm_kernels import start_warming, warm_all
 from app.settings import settings
+
+if TYPE_CHECKING:
+    from app.service.derivations import Scenes
 
 # Where the pieces live (simulation.py was split by idea): the request's checks (simulate_request), display
 # rounding (rounding), the gates and the in-flight count (gates), the compiled systems (compiled), the result
@@ -62,10 +65,16 @@ def simulate_derivation(
     constraint_forces: Sequence[ConstraintForce] | None = None,
     scene_id: str | None = None,
     gates: Gates = GATES,
+    compiled: Compiled | None = None,
 ) -> dict[str, Any]:
     """Simulate a derived system as the request asks; a refusal raises SimulationError, a full server OverCapacity.
 
-    ``constraint_forces``: the forces observed along the run (by default the derivation's own)."""
+    ``constraint_forces``: the forces observed along the run (by default the derivation's own); ``compiled``:
+    where its numeric system is kept (the scenes' of the app, by default this process's)."""
+    if compiled is None:
+        from app.service.derivations import PROCESS_SCENES
+
+        compiled = PROCESS_SCENES.compiled
     scene: Scene | None = SCENES.get(scene_id) if scene_id else None
     k = parameter_vector(derivation, request.parameters or {})
     y0 = initial_state(derivation, request.initial or {}, scene.initial if scene else {})
@@ -78,7 +87,7 @@ def simulate_derivation(
     if method != AUTO:
         methods.method(method)  # an unknown name is refused before any work
 
-    system, observables = COMPILED.get(scene_id, derivation, constraint_forces)
+    system, observables = compiled.get(scene_id, derivation, constraint_forces)
     try:
         start = system.f(0.0, y0, k)
     except (ArithmeticError, ValueError):
@@ -86,7 +95,10 @@ def simulate_derivation(
     if not np.all(np.isfinite(start)):
         raise SimulationError(why_not_at_start(derivation, y0, k), "initial")  # the cause, named
     # the plan resolves auto (and the fallback while compiling) first, so the throttle sees what will run
-    planned = plan(system, k, y0, t_end, samples, method, rtol, atol, wait_for_compile=not gates.answer_while_compiling)
+    planned = plan(
+        system, k, y0, t_end, samples, method, rtol, atol,
+        wait_for_compile=not gates.answer_while_compiling, ready=gates.compiled,
+    )  # fmt: skip
     # a run far beyond the scene's span or near the tolerance floor is heavy: those take at most half
     # of the slots, so a flood of them leaves the others to the light runs students send
     heavy = t_end > HEAVY_SPAN * (scene.t_end if scene else DEFAULT_T_END) or rtol < HEAVY_RTOL
@@ -110,19 +122,27 @@ def simulate_derivation(
             held.enter_context(gates.heavy_run())
         held.enter_context(gates.any())
         outcome = run(
-            planned, python_loop=gates.python_loop, events=scene_events(scene, system), elsewhere=elsewhere,
+            planned, gates.wall_seconds, python_loop=gates.python_loop, events=compiled.events(scene, system),
+            elsewhere=elsewhere,
             # the series while the error estimate's reference run finishes beside
             alongside=lambda trajectory: observe(system, observables, trajectory, k, rtol, precision),
         )  # fmt: skip
     return document(system, observables, outcome, k, rtol, precision)
 
 
-def simulate_scene(scene_id: str, request: SimulationInput, gates: Gates = GATES) -> dict[str, Any]:
-    from app.service.derivations import derivation, scene
+def simulate_scene(
+    scene_id: str, request: SimulationInput, gates: Gates = GATES, scenes: Scenes | None = None
+) -> dict[str, Any]:
+    """Simulate a chapter scene; ``scenes``: where its derivation and system are kept (the app's, by default
+    this process's)."""
+    from app.service.derivations import PROCESS_SCENES, scene
 
     scene(scene_id)
-    with IN_FLIGHT.serving():  # the warm-up thread waits meanwhile
-        return simulate_derivation(derivation(scene_id), request, scene_id=scene_id, gates=gates)
+    scenes = PROCESS_SCENES if scenes is None else scenes
+    with gates.in_flight.serving():  # the warm-up thread waits meanwhile
+        return simulate_derivation(
+            scenes.derivation(scene_id), request, scene_id=scene_id, gates=gates, compiled=scenes.compiled
+        )
 
 
 if __name__ == "__main__":  # at image build: python -m app.service.simulation

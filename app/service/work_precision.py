@@ -23,8 +23,7 @@ from app.numerics.errors import TooMuchWork
 from app.numerics.exact import exact_solution
 from app.numerics.methods import METHODS, NONSTIFF, Problem, symplectic_for
 from app.service.cache import JsonCache, source_fingerprint
-from app.service.compiled import COMPILED
-from app.service.derivations import derivation, scene
+from app.service.derivations import PROCESS_SCENES, derivation, scene
 
 SWEEP = [10.0**-e for e in range(3, 13)]
 SCIPY_METHODS = ["DOP853", "RK45", "Radau", "LSODA"]
@@ -78,7 +77,7 @@ def methods_for(system) -> list[str]:
 def compute(scene_id: str, sweep: list[float] | None = None, methods: list[str] | None = None) -> dict[str, Any]:
     s = scene(scene_id)
     d = derivation(scene_id)
-    system, _ = COMPILED.get(scene_id, d)
+    system, _ = PROCESS_SCENES.compiled.get(scene_id, d)
     system.compiled()
     k = np.array([p.default for p in s.system.parameters], dtype=float)
     names = list(system.coordinates)

@@ -16,7 +16,7 @@ from app.service import action
 from app.service.user_checks import checked
 from app.web.api_simulate import scene_route
 from app.web.api_user import answer, system_route
-from app.web.deps import AnswersDep, ClientDep, GatesDep, UserSystemsDep
+from app.web.deps import AnswersDep, ChapterDep, ClientDep, GatesDep, UserSystemsDep
 from app.web.responses import FastJSONResponse
 from app.web.schemas_action import (
     ActionRequest,
@@ -46,9 +46,13 @@ TEXT = (
     description=TEXT,
     document=ActionResponse,
 )
-def scene_action(scene_id: str, request: ActionRequest, gates: GatesDep, answers: AnswersDep) -> Any:
+def scene_action(
+    scene_id: str, request: ActionRequest, gates: GatesDep, answers: AnswersDep, chapter: ChapterDep
+) -> Any:
     # a refusal (SimulationError) or an unknown scene is answered by app/web/errors.py
-    return FastJSONResponse(action.cached_action_of_scene(scene_id, gates, answers.actions, **action_options(request)))
+    return FastJSONResponse(
+        action.cached_action_of_scene(scene_id, gates, answers.actions, chapter, **action_options(request))
+    )
 
 
 @system_route(
@@ -61,7 +65,8 @@ def scene_action(scene_id: str, request: ActionRequest, gates: GatesDep, answers
 async def user_action(client: ClientDep, users: UserSystemsDep, body: Annotated[UserActionRequest, Body()]) -> Response:
     spec, options = body.system.to_spec(), action_options(body)
     return await answer(
-        client, lambda key, address: users.simulation_job("action", action.action_job, checked(spec), options, key, address)
+        client,
+        lambda key, address: users.simulation_job("action", action.action_job, checked(spec), options, key, address),
     )
 
 
@@ -80,8 +85,8 @@ RELAX_TEXT = (
     summary="Find a scene's path between two ends by making the action stationary",
     description=RELAX_TEXT,
 )
-def scene_relax(scene_id: str, request: RelaxRequest, gates: GatesDep) -> Any:
-    return FastJSONResponse(action.relax_of_scene(scene_id, gates, **relax_options(request)))
+def scene_relax(scene_id: str, request: RelaxRequest, gates: GatesDep, chapter: ChapterDep) -> Any:
+    return FastJSONResponse(action.relax_of_scene(scene_id, gates, chapter, **relax_options(request)))
 
 
 @system_route(
@@ -93,5 +98,6 @@ def scene_relax(scene_id: str, request: RelaxRequest, gates: GatesDep) -> Any:
 async def user_relax(client: ClientDep, users: UserSystemsDep, body: Annotated[UserRelaxRequest, Body()]) -> Response:
     spec, options = body.system.to_spec(), relax_options(body)
     return await answer(
-        client, lambda key, address: users.simulation_job("relax", action.relax_job, checked(spec), options, key, address)
+        client,
+        lambda key, address: users.simulation_job("relax", action.relax_job, checked(spec), options, key, address),
     )

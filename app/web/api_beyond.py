@@ -15,7 +15,7 @@ from app.service import modes, poincare
 from app.service.user_checks import checked
 from app.web.api_simulate import ERRORS, scene_route
 from app.web.api_user import answer, system_route
-from app.web.deps import AnswersDep, ClientDep, GatesDep, UserSystemsDep
+from app.web.deps import AnswersDep, ChapterDep, ClientDep, GatesDep, UserSystemsDep
 from app.web.responses import FastJSONResponse
 from app.web.schemas_beyond import (
     MeasuredModes,
@@ -48,10 +48,12 @@ MODES_TEXT = MODES_CORE + " (default parameters)."
     description=POINCARE_TEXT,
     document=PoincareResponse,
 )
-def scene_poincare(scene_id: str, request: PoincareRequest, gates: GatesDep, answers: AnswersDep) -> Any:
+def scene_poincare(
+    scene_id: str, request: PoincareRequest, gates: GatesDep, answers: AnswersDep, chapter: ChapterDep
+) -> Any:
     # a refusal (SimulationError) or an unknown scene is answered by app/web/errors.py
     options = poincare_options(request)
-    return FastJSONResponse(poincare.cached_section_of_scene(scene_id, gates, answers.sections, **options))
+    return FastJSONResponse(poincare.cached_section_of_scene(scene_id, gates, answers.sections, chapter, **options))
 
 
 @router.get(
@@ -61,8 +63,8 @@ def scene_poincare(scene_id: str, request: PoincareRequest, gates: GatesDep, ans
     response_model=list[MeasuredModes],
     responses={404: ERRORS[404], 429: ERRORS[429]},
 )
-def scene_modes(scene_id: str, gates: GatesDep, answers: AnswersDep) -> Any:
-    return FastJSONResponse(modes.measure_scene(scene_id, gates, answers.measured_modes))
+def scene_modes(scene_id: str, gates: GatesDep, answers: AnswersDep, chapter: ChapterDep) -> Any:
+    return FastJSONResponse(modes.measure_scene(scene_id, gates, answers.measured_modes, chapter))
 
 
 @scene_route(
@@ -75,9 +77,11 @@ def scene_modes(scene_id: str, gates: GatesDep, answers: AnswersDep) -> Any:
     "defaults alone, with at_defaults true.",
     response_model=list[MeasuredModes],
 )
-def scene_modes_at(scene_id: str, request: ModesRequest, gates: GatesDep, answers: AnswersDep) -> Any:
+def scene_modes_at(
+    scene_id: str, request: ModesRequest, gates: GatesDep, answers: AnswersDep, chapter: ChapterDep
+) -> Any:
     # a value out of range or an unknown name (SimulationError) is answered by app/web/errors.py
-    return FastJSONResponse(modes.modes_at(scene_id, request.parameters, gates, answers.modes_at))
+    return FastJSONResponse(modes.modes_at(scene_id, request.parameters, gates, answers.modes_at, chapter))
 
 
 @system_route(

@@ -11,7 +11,7 @@ from app.engine.contract import scene_json
 from app.service import derivations, exporting
 from app.service.export.source import FORMATS
 from app.service.exporting import Exported
-from app.web.deps import AnswersDep
+from app.web.deps import AnswersDep, ChapterDep
 from app.web.schemas import ErrorResponse, SceneSummary
 from app.web.schemas_export import FORMAT_HELP, ExportFormat
 
@@ -28,10 +28,10 @@ def list_scenes() -> list[dict[str, Any]]:
     summary="The step-by-step derivation of a scene",
     responses={404: {"model": ErrorResponse, "description": "No scene has this id."}},
 )
-def scene_derivation(scene_id: str) -> dict[str, Any]:
+def scene_derivation(scene_id: str, chapter: ChapterDep) -> dict[str, Any]:
     # A plain `def`: FastAPI runs it in its thread pool, so a first (uncached)
     # derivation never blocks the event loop.
-    return derivations.derivation_document(scene_id)
+    return chapter.document(scene_id)
 
 
 def download(exported: Exported) -> Response:
@@ -64,7 +64,10 @@ EXPORT_CONTENT = {media: {"schema": {"type": "string"}} for media, _ in FORMATS.
     },
 )
 def scene_export(
-    scene_id: str, fmt: Annotated[ExportFormat, Query(alias="format", description=FORMAT_HELP)], answers: AnswersDep
+    scene_id: str,
+    fmt: Annotated[ExportFormat, Query(alias="format", description=FORMAT_HELP)],
+    answers: AnswersDep,
+    chapter: ChapterDep,
 ) -> Response:
     # a plain `def`: the first export of a scene may derive it, in FastAPI's thread pool
-    return download(exporting.scene_export(scene_id, fmt, derivations.derivation_document, answers.exports))
+    return download(exporting.scene_export(scene_id, fmt, chapter.document, answers.exports))

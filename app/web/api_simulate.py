@@ -13,7 +13,7 @@ from typing import Any
 from fastapi import APIRouter
 
 from app.service import simulation, work_precision
-from app.web.deps import AnswersDep, GatesDep
+from app.web.deps import AnswersDep, ChapterDep, GatesDep
 from app.web.limits import MAX_BODY_BYTES
 from app.web.responses import FastJSONResponse
 from app.web.schemas import ErrorResponse
@@ -58,9 +58,9 @@ def scene_route(
     ),
     document=SimulateResponse,
 )
-def simulate_scene(scene_id: str, request: SimulateRequest, gates: GatesDep) -> Any:
+def simulate_scene(scene_id: str, request: SimulateRequest, gates: GatesDep, chapter: ChapterDep) -> Any:
     # encoded here, in the thread pool, by orjson (numpy arrays directly); a refusal is answered by app/web/errors.py
-    return FastJSONResponse(simulation.simulate_scene(scene_id, request, gates))
+    return FastJSONResponse(simulation.simulate_scene(scene_id, request, gates, chapter))
 
 
 @router.get(

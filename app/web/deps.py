@@ -22,6 +22,7 @@ from fastapi.responses import Response
 
 from app.service.answers import Answers
 from app.service.checking import Checking
+from app.service.derivations import Scenes
 from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Fairness
 from app.service.services import Services
 from app.service.simulation import Gates
@@ -54,6 +55,11 @@ async def remembered_answers(running: ServicesDep) -> Answers:
     return running.answers
 
 
+async def scenes_chapter(running: ServicesDep) -> Scenes:
+    """The scenes' derivations, documents and compiled systems the app serves (app/service/derivations.py)."""
+    return running.chapter
+
+
 async def page_cache(request: Request) -> PageCache:
     """The scene pages' models and rendered bytes, built by the lifespan beside the services."""
     return request.state.pages
@@ -64,6 +70,7 @@ CheckingDep = Annotated[Checking, Depends(checking_service)]
 GatesDep = Annotated[Gates, Depends(simulation_gates)]
 AnswersDep = Annotated[Answers, Depends(remembered_answers)]
 PagesDep = Annotated[PageCache, Depends(page_cache)]
+ChapterDep = Annotated[Scenes, Depends(scenes_chapter)]
 
 
 async def fairness_gate(users: UserSystemsDep) -> Fairness:

@@ -18,11 +18,12 @@ from app.engine.contract import scene_json
 from app.errors import UnknownScene
 from app.numerics.methods import CHOICES
 from app.service import derivations
+from app.service.derivations import Scenes
 from app.viz.chapter import table_of_contents
 from app.viz.diagrams import diagram
 from app.viz.page_model import scene_page
 from app.web.compression import negotiate
-from app.web.deps import PagesDep
+from app.web.deps import ChapterDep, PagesDep
 from app.web.errors import problem
 from app.web.page_cache import PageCache
 from app.web.templating import templates
@@ -35,9 +36,10 @@ def scene_info(scene_id: str, doc: dict[str, Any]) -> dict[str, Any]:
     return {**scene_json(derivations.scene(scene_id)), **(doc.get("scene") or {})}
 
 
-def page_model(scene_id: str, pages: PageCache | None = None) -> dict[str, Any]:
-    """The scene's page model, through the app's ``pages`` (rebuilt there only if its derivation document changed)."""
-    doc = derivations.derivation_document(scene_id)
+def page_model(scene_id: str, pages: PageCache | None = None, chapter: Scenes | None = None) -> dict[str, Any]:
+    """The scene's page model, through the app's ``pages`` (rebuilt there only if its derivation document changed);
+    the document from the app's ``chapter`` (by default this process's)."""
+    doc = (derivations.PROCESS_SCENES if chapter is None else chapter).document(scene_id)
 
     def build() -> dict[str, Any]:
         s = derivations.scene(scene_id)
@@ -55,12 +57,12 @@ def _card_diagram(s: Any) -> str:
 
 
 @router.get("/", response_class=HTMLResponse)
-def index(request: Request, pages: PagesDep) -> HTMLResponse:
+def index(request: Request, pages: PagesDep, chapter: ChapterDep) -> HTMLResponse:
     # the panels each page shows (app/viz/panels.py) tell the contents where a section is illustrated
     scenes = [
         {
             **scene_json(s),
-            "panels": page_model(s.id, pages)["panels"],
+            "panels": page_model(s.id, pages, chapter)["panels"],
             "diagram": pages.card(s.id, lambda s=s: _card_diagram(s)),
             "url": f"/scenes/{s.id}",
         }
@@ -75,9 +77,9 @@ def scenes_index() -> RedirectResponse:
 
 
 @router.get("/scenes/{scene_id}", response_class=HTMLResponse)
-def scene_page_route(request: Request, scene_id: str, pages: PagesDep) -> HTMLResponse:
+def scene_page_route(request: Request, scene_id: str, pages: PagesDep, chapter: ChapterDep) -> HTMLResponse:
     try:
-        model = page_model(scene_id, pages)
+        model = page_model(scene_id, pages, chapter)
     except UnknownScene as exc:
         known = [{"id": s.id, "title": s.title, "url": f"/scenes/{s.id}"} for s in derivations.SCENES.values()]
         return templates.TemplateResponse(

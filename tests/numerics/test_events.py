@@ -49,8 +49,9 @@ def test_scenes_without_events_run_to_the_end():
 
 def test_every_method_stops_at_the_same_instant():
     d = derivation("incline-block")
-    system, _ = compiled.COMPILED.get("incline-block", d, [])
-    events = compiled.scene_events(SCENES["incline-block"], system)
+    systems = compiled.Compiled()
+    system, _ = systems.get("incline-block", d, [])
+    events = systems.events(SCENES["incline-block"], system)
     k, y0 = np.array([1.0, G, ALPHA]), np.array([0.0, 3.0])
     for method in ("DOP853-compiled", "Yoshida4", "RK45"):
         out = simulate(system, k, y0, 2.0, 200, method=method, events=events)

@@ -1,17 +1,18 @@
-"""A scene's derivation is pickled with its members, so a process that loads it never computes them again."""
+"""A scene's derivation is pickled with its members, so a process that loads it never computes them again;
+each ``Scenes`` (an app's, or this test's on a temporary disk) holds its own."""
 
 import pickle
 
 from app.engine.constraints import ConstraintForce
 from app.engine.hamilton import Hamilton
-from app.service import derivations
+from app.service.derivations import PROCESS_SCENES, Scenes
 
 
 def test_the_pickled_derivation_carries_the_members_its_document_printed(tmp_path, monkeypatch):
-    monkeypatch.setattr(derivations, "cache_dir", lambda: tmp_path)
-    monkeypatch.setattr(derivations, "_printed", {})
-    made = derivations._derivation.__wrapped__("pulley")  # a miss: derived, printed, pickled
-    assert derivations._printed["pulley"]["id"] == "pulley"  # the document printed with it, for derivation_document
+    scenes = Scenes(tmp_path)
+    made = scenes.derived("pulley")  # a miss: derived, printed, pickled
+    printed = scenes._printed["pulley"]  # the document printed with it, for ``document``
+    assert printed["id"] == "pulley"
     (path,) = (tmp_path / "derivation-objects").glob("pulley-*.pickle")
     loaded = pickle.loads(path.read_bytes())
     assert set(loaded._members) == set(made._members) >= {"constraint_forces", "hamilton", "transformed"}
@@ -21,8 +22,22 @@ def test_the_pickled_derivation_carries_the_members_its_document_printed(tmp_pat
 
     monkeypatch.setattr("app.engine.constraints.constraint_forces", never)
     monkeypatch.setattr("app.engine.hamilton.hamilton", never)
-    again = derivations._derivation.__wrapped__("pulley")  # a hit: from the disk
+    again = Scenes(tmp_path).derived("pulley")  # a hit: from the disk
     forces = again.constraint_forces
     assert isinstance(forces, tuple) and all(isinstance(f, ConstraintForce) for f in forces) and forces
     assert isinstance(again.hamilton, Hamilton)
     assert [f.force for f in forces] == [f.force for f in made.constraint_forces]
+    # the document is the one printed with the derivation (taken, not printed again), then on the disk
+    assert scenes.document("pulley") is printed and "pulley" not in scenes._printed
+    assert list((tmp_path / "derivations").glob("pulley-*.json"))
+
+
+def test_each_holder_remembers_its_own():
+    """Two holders never share a derivation or a system; one holder derives and builds a scene once."""
+    mine = Scenes()  # on the same disk: loaded from the pickles, not derived again
+    d = mine.derivation("simple-pendulum")
+    assert mine.derivation("simple-pendulum") is d and d is not PROCESS_SCENES.derivation("simple-pendulum")
+    system, _ = mine.system("simple-pendulum")
+    assert mine.system("simple-pendulum")[0] is system and list(mine.compiled.items) == ["simple-pendulum"]
+    assert PROCESS_SCENES.compiled.items.get("simple-pendulum", (None,))[0] is not system
+    assert mine.document("simple-pendulum") == PROCESS_SCENES.document("simple-pendulum")

@@ -70,11 +70,12 @@ def test_method_that_does_not_apply_is_refused():
         simulation.simulate_scene("spherical-pendulum", request(method="Yoshida4"))
 
 
-def test_too_much_work_is_a_clear_refusal(monkeypatch):
-    monkeypatch.setattr(limits, "WALL_SECONDS", 0.3)
+def test_too_much_work_is_a_clear_refusal():
     with pytest.raises(TooMuchWork, match="too much work for RK45") as info:
         simulation.simulate_scene(
-            "tabletop-spring", request(parameters={"k": 1e8}, t_end=1000.0, method="RK45", rtol=1e-10)
+            "tabletop-spring",
+            request(parameters={"k": 1e8}, t_end=1000.0, method="RK45", rtol=1e-10),
+            simulation.Gates(wall_seconds=0.3),  # a short time budget
         )
     assert problem(info.value).status == 422
 
@@ -168,16 +169,13 @@ def test_display_rounding_prints_as_seven_digits_at_every_scale():
 
 
 @pytest.mark.parametrize("scene_id", ["simple-pendulum", "spherical-pendulum"])
-def test_while_kernels_compile_scipy_answers_and_says_so(monkeypatch, scene_id):
+def test_while_kernels_compile_scipy_answers_and_says_so(scene_id):
     """The server's state before its background thread has compiled anything: nothing is ready."""
     import numpy as np
 
-    from app.numerics import jit
-
-    server = simulation.Gates(answer_while_compiling=True)
-    with monkeypatch.context() as m:
-        m.setattr(jit, "ready", lambda name: False)
-        fallback = simulation.simulate_scene(scene_id, request(t_end=3.0), server)
+    nothing_compiled = simulation.Gates(answer_while_compiling=True, compiled=lambda method, system: False)
+    fallback = simulation.simulate_scene(scene_id, request(t_end=3.0), nothing_compiled)
+    server = simulation.Gates(answer_while_compiling=True)  # the same server once compiled (what jit has loaded)
     stats = fallback["stats"]
     assert stats["path"] == "scipy-fallback" and stats["method"] == "DOP853"
     assert "still being compiled" in stats["reason"] and stats["error_reference"].startswith("DOP853 at")
@@ -192,12 +190,10 @@ def test_while_kernels_compile_scipy_answers_and_says_so(monkeypatch, scene_id):
 SCENES_COORDINATES = {"simple-pendulum": ["theta"], "spherical-pendulum": ["theta", "phi"]}
 
 
-def test_scripts_without_a_server_compile_in_line(monkeypatch):
-    from app.numerics import jit
-
-    monkeypatch.setattr(jit, "ready", lambda name: False)  # not compiled yet: a script waits for it
-    assert simulation.GATES.answer_while_compiling is False
-    doc = simulation.simulate_scene("simple-pendulum", request(t_end=1.0))
+def test_scripts_without_a_server_compile_in_line():
+    assert simulation.GATES.answer_while_compiling is False  # a script's gates
+    script = simulation.Gates(compiled=lambda method, system: False)  # not compiled yet: a script waits for it
+    doc = simulation.simulate_scene("simple-pendulum", request(t_end=1.0), script)
     assert doc["stats"]["path"] == "compiled"
 
 
@@ -262,7 +258,7 @@ def test_series_made_while_the_reference_runs_are_those_of_the_final_trajectory(
     }
 
 
-def test_auto_choosing_radau_waits_for_the_python_loop_slot(monkeypatch):
+def test_auto_choosing_radau_waits_for_the_python_loop_slot():
     """The throttle looks at the planned method: auto resolving to Radau (a stiff start) is a Python step
     loop, so it is refused as busy while another scipy run holds the one slot, and runs once it is free."""
     from app.engine.derive import derive
@@ -272,18 +268,20 @@ def test_auto_choosing_radau_waits_for_the_python_loop_slot(monkeypatch):
 
     d = derive(STIFF_SPRING)
     quiet = request(initial={"r": circular_radius(1e6, 1.0, 1.0), "theta_dot": 1.0}, t_end=1.0, rtol=1e-6, atol=1e-8)
-    monkeypatch.setattr(limits, "WALL_SECONDS", 0.2)
-    # (GATES compiles in line: a server still compiling would answer the compiled run from scipy too)
-    assert simulation.GATES.python.acquire(timeout=1.0)  # another scipy run is in progress
+    # (a script's gates compile in line: a server still compiling would answer the compiled run from scipy too)
+    gates = simulation.Gates(wall_seconds=0.2)
+    assert gates.python.acquire(timeout=1.0)  # another scipy run is in progress
     try:
         with pytest.raises(OverCapacity, match="Python step loop"):
-            simulation.simulate_derivation(d, quiet)
+            simulation.simulate_derivation(d, quiet, gates=gates)
         # a compiled run (auto on a non-stiff start of the same system) does not wait for that slot
-        excited = simulation.simulate_derivation(d, request(initial={"r": 1.001, "theta_dot": 1.0}, t_end=0.01))
+        excited = simulation.simulate_derivation(
+            d, request(initial={"r": 1.001, "theta_dot": 1.0}, t_end=0.01), gates=gates
+        )
         assert excited["stats"]["method"] != "Radau" and excited["stats"]["path"] == "compiled"
     finally:
-        simulation.GATES.python.release()
-    doc = simulation.simulate_derivation(d, quiet)
+        gates.python.release()
+    doc = simulation.simulate_derivation(d, quiet, gates=gates)
     assert doc["stats"]["method"] == "Radau" and doc["stats"]["reason"].startswith("stiff")
 
 

@@ -69,7 +69,7 @@ def test_the_warm_up_waits_while_a_simulation_is_being_served(monkeypatch):
     fake_methods(monkeypatch, log)
     warm_kernels.warm_all()  # the systems are built: what is left to do is preparing the methods
     log.clear()
-    gate = gates.IN_FLIGHT
+    gate = gates.Gates().in_flight  # an app's
     with gate.serving():
         warming = threading.Thread(target=warm_kernels.warm_all, args=(lambda: gate.wait_quiet(30.0),))
         warming.start()
@@ -83,15 +83,16 @@ def test_the_warm_up_waits_while_a_simulation_is_being_served(monkeypatch):
 def test_a_scene_simulation_counts_as_in_flight(monkeypatch):
     seen = []
     original = simulation.simulate_derivation
+    served = gates.Gates()  # an app's
 
     def spy(*args, **kwargs):
-        seen.append(gates.IN_FLIGHT.wait_quiet(0.0))
+        seen.append(served.in_flight.wait_quiet(0.0))
         return original(*args, **kwargs)
 
     monkeypatch.setattr(simulation, "simulate_derivation", spy)
     request = {"parameters": {}, "initial": {}, "t_end": 0.5, "method": "auto", "rtol": None, "atol": None}
-    simulation.simulate_scene("simple-pendulum", type("R", (), {**request, "samples": 10})())
-    assert seen == [False] and gates.IN_FLIGHT.wait_quiet(0.0)
+    simulation.simulate_scene("simple-pendulum", type("R", (), {**request, "samples": 10})(), served)
+    assert seen == [False] and served.in_flight.wait_quiet(0.0)
 
 
 def test_a_scene_does_not_wait_while_another_scene_is_being_built(monkeypatch):

@@ -92,8 +92,8 @@ def test_unknown_scene_is_404(client):
     assert client.get("/api/scenes/nope/work-precision").status_code == 404
 
 
-def test_too_much_work_is_422_not_a_hang(client, monkeypatch):
-    monkeypatch.setattr(limits, "WALL_SECONDS", 0.3)
+def test_too_much_work_is_422_not_a_hang(client, services, override):
+    override(simulation_gates, Gates(offload=services.scenes.run, wall_seconds=0.3))  # a short time budget
     body = {"initial": {}, "parameters": {"k": 1e8}, "t_end": 1000, "method": "LSODA", "rtol": 1e-10}
     response = client.post("/api/scenes/tabletop-spring/simulate", json=body)
     assert response.status_code == 422
@@ -168,12 +168,10 @@ def test_api_responses_are_compressed_for_clients_that_accept_it(client, coding)
     assert int(packed.headers["content-length"]) < len(plain.content) / 2
 
 
-def test_a_request_while_kernels_compile_is_answered_by_scipy(client, services, monkeypatch, override):
-    from app.numerics import jit
-
-    # the gates of a server that warms up in the background
-    override(simulation_gates, Gates(offload=services.scenes.run, answer_while_compiling=True))
-    monkeypatch.setattr(jit, "ready", lambda name: False)  # nothing compiled yet
+def test_a_request_while_kernels_compile_is_answered_by_scipy(client, services, override):
+    # the gates of a server that warms up in the background, where nothing is compiled yet
+    nothing_compiled = Gates(offload=services.scenes.run, answer_while_compiling=True, compiled=lambda m, s: False)
+    override(simulation_gates, nothing_compiled)
     response = client.post("/api/scenes/damped-pendulum/simulate", json={"initial": {}, "samples": 30})
     assert response.status_code == 200, response.text
     stats = response.json()["stats"]
