@@ -15,9 +15,11 @@ import threading
 from pathlib import Path
 from typing import Any
 
+from app.engine.budget import patience
 from app.engine.contract import derivation_json
 from app.engine.derive import Derivation, derive
 from app.errors import UnknownScene
+from app.limits import SCENE_PATIENCE
 from app.numerics.observables import Observables
 from app.numerics.system import NumericSystem
 from app.scenes import SCENES, Scene
@@ -33,7 +35,10 @@ def scene(scene_id: str) -> Scene:
 
 
 def _document(s: Scene, d: Derivation) -> dict[str, Any]:
-    return {"id": s.id, **derivation_json(d, scene=s)}
+    # a scene's document is printed once per version and kept on disk: its bounds are patient, so what the
+    # book prints does not depend on how loaded the machine was (members, Hamilton's forms, the modes)
+    with patience(SCENE_PATIENCE):
+        return {"id": s.id, **derivation_json(d, scene=s)}
 
 
 class Scenes:
@@ -68,7 +73,8 @@ class Scenes:
             return pickle.loads(path.read_bytes())
         except Exception:  # absent, or written by another version of SymPy: derive again
             s = SCENES[scene_id]
-            d = derive(s.system)
+            with patience(SCENE_PATIENCE):
+                d = derive(s.system)
             self._printed[scene_id] = _document(s, d)  # taken by document
             write_atomically(path, pickle.dumps(d, protocol=pickle.HIGHEST_PROTOCOL))
             return d
