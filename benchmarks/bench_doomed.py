@@ -1,7 +1,7 @@
 """How much a doomed request delays another session's small derivation (issue 35: at most 2 s).
 
 The scenario of tests/service/test_doomed_session.py (the service path: cache, fair-share gate, a pool of
-two workers): session A sends an eight-link chain that runs into its hard limit; one second into it, session
+two workers): session A sends a twelve-link chain that runs into its hard limit; one second into it, session
 B derives a one-link pendulum no cache holds.  Printed: B's derivation alone and beside the doomed job, and
 the difference (the delay), for each of REPEATS fresh pools, with the load average.
 
