@@ -92,6 +92,14 @@ def test_pages_are_left_to_their_own_precompressed_copies(client):
     assert page.status_code == 200 and "content-encoding" not in page.headers
 
 
+@pytest.mark.parametrize(("header", "coding"), [("zstd, gzip", "zstd"), ("gzip", "gzip"), ("gzip;q=0", None)])
+def test_the_playground_page_made_per_request_is_compressed_as_the_api_is(client, header, coding):
+    page = client.get("/playground", headers={"Accept-Encoding": header})
+    assert page.status_code == 200 and page.headers.get("content-encoding") == coding
+    plain = client.get("/playground", headers={"Accept-Encoding": "identity"})
+    assert "content-encoding" not in plain.headers and page.text == plain.text
+
+
 @pytest.mark.parametrize(
     ("header", "coded"),
     [
