@@ -10,14 +10,9 @@ the difference (the delay), for each of REPEATS fresh pools, with the load avera
 
 from __future__ import annotations
 
-import asyncio
 import statistics
 
-from app.service.fairness import Fairness
-from app.service.user_systems import UserSystems
-from app.service.worker import WorkerPool
-from app.settings import Settings
-from tests.service.test_doomed_session import DOOMED_SECONDS, small_beside_doomed
+from tests.service.test_doomed_session import beside_doomed
 
 REPEATS = 3
 
@@ -25,13 +20,7 @@ REPEATS = 3
 def main() -> None:
     delays = []
     for _ in range(REPEATS):
-        pool = WorkerPool(workers=2)
-        users = UserSystems(pool, gate=Fairness(capacity=8, workers=2, queue_seconds=30),
-                            config=Settings(derive_seconds=DOOMED_SECONDS))  # fmt: skip
-        try:
-            seen = asyncio.run(small_beside_doomed(users))
-        finally:
-            pool.stop()
+        seen = beside_doomed()
         delays.append(float(seen["beside"]) - float(seen["alone"]))
         print(f"alone {seen['alone']:.2f} s, beside the doomed job {seen['beside']:.2f} s, "
               f"doomed still running when answered: {seen['doomed_running']}")  # fmt: skip

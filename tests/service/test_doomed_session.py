@@ -81,15 +81,20 @@ async def small_beside_doomed(users: UserSystems) -> dict[str, float | bool]:
     }
 
 
-@pytest.mark.slow
-def test_a_doomed_system_does_not_hold_another_sessions_small_derivation():
+def beside_doomed() -> dict[str, float | bool]:
+    """``small_beside_doomed`` on a service of its own: two workers, the fair share, the doomed hard limit."""
     pool = WorkerPool(workers=2)
     users = UserSystems(pool, gate=Fairness(capacity=8, workers=2, queue_seconds=30),
                         config=Settings(derive_seconds=DOOMED_SECONDS))  # fmt: skip
     try:
-        seen = asyncio.run(small_beside_doomed(users))
+        return asyncio.run(small_beside_doomed(users))
     finally:
         pool.stop()
+
+
+@pytest.mark.slow
+def test_a_doomed_system_does_not_hold_another_sessions_small_derivation():
+    seen = beside_doomed()
     print(f"small derivation alone {seen['alone']:.2f} s, beside the doomed one {seen['beside']:.2f} s")
     # answered while the doomed job still ran: it was never queued behind it
     assert seen["doomed_running"], seen
