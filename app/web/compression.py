@@ -179,7 +179,7 @@ class _Response:
 
 
 # The paths whose responses are made per request and compressed here: the API and the playground's page (a
-# derivation rendered for the system in its address: 58 kB of HTML for the default system, 10 kB sent).
+# derivation rendered for the system in its address: 58 kB of HTML for the default system, 13 kB sent in zstd).
 COMPRESSED_PATHS = ("/api/", "/playground")
 
 
