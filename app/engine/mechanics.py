@@ -11,6 +11,7 @@ from app.engine.budget import pythagoras
 from app.engine.errors import DerivationError
 from app.engine.parse import ExpressionError, parse_expression
 from app.engine.symbols import SymbolTable
+from app.engine.trig import merged
 from app.scenes.types import System
 
 
@@ -65,8 +66,8 @@ def build_mechanics(system: System) -> Mechanics:
         masses.append(mass)
         positions.append(r)
         velocities.append(v)
-        # v^2 = v . v, with sin^2 + cos^2 = 1 applied
-        speeds.append(pythagoras(sum(c**2 for c in v)))
+        # v^2 = v . v, with sin^2 + cos^2 = 1 applied and sin a sin b + cos a cos b = cos(a - b) (app/engine/trig.py)
+        speeds.append(merged(pythagoras(sum(c**2 for c in v))))
 
     Q = tuple(
         _parse(system.forces[name], names, f"force on {name}", True, system.built)
@@ -84,7 +85,7 @@ def build_mechanics(system: System) -> Mechanics:
 
     if system.particles:
         # T = sum_i 1/2 m_i v_i^2
-        T = sp.expand(sum(sp.Rational(1, 2) * m * v2 for m, v2 in zip(masses, speeds, strict=True)))
+        T = merged(sp.expand(sum(sp.Rational(1, 2) * m * v2 for m, v2 in zip(masses, speeds, strict=True))))
     else:
         T = _parse(system.kinetic or "", names, "kinetic energy", True, system.built)
     U = _parse(system.potential or "0", names, "potential", False, system.built)
