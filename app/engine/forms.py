@@ -37,6 +37,10 @@ from app.engine.budget import memoized, pythagoras, tidy, within_budget
 from app.limits import FALLBACK_SECONDS, FORM_SECONDS, LATE_SECONDS
 
 ENGINE_BONUS = 1.5
+# a quotient with sines or cosines below is shown linearised (``Linearised``) when that has at most this many
+# times the operations of the shortest other form: the double pendulum's θ̈₁ (39 against 38), not Hamilton's
+# ṗ₁ of the double pendulum, whose products multiplied out run to three times the length
+LINEARISED_SLACK = 1.1
 SMALL = 120  # nodes below which expanding first is cheap
 NODE_BUDGET = 1500
 # products of at most this many sines and cosines are turned to sums here; TR8 takes longer ones (where it
@@ -250,17 +254,22 @@ def _squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     params = sorted(expr.free_symbols - moving, key=sp.default_sort_key)
     out = sp.expand(expr)
     for c in params:
-        parts = sp.collect(out, c, evaluate=False)
-        inner = parts.get(c)
-        if inner is None or inner.has(c):
+        # the terms linear in c (c times a part free of c) and the rest, in one pass over the sum
+        linear, others = [], []
+        for term in sp.Add.make_args(out):
+            powers = term.as_powers_dict()
+            if powers.get(c) == 1 and not (term / c).has(c):
+                linear.append(term / c)
+            else:
+                others.append(term)
+        if not linear:
             continue
-        rest = out - sp.expand(c * inner)
-        by_degree: dict[int, sp.Expr] = {}
-        terms = sp.Add.make_args(sp.expand(inner))
+        terms = sp.Add.make_args(sp.expand(sp.Add(*linear)))
         if not all(t.is_polynomial(*velocities) for t in terms):
             continue  # a speed under a root (sqrt(ρ̇² + ω²ρ²)): no degrees to split by
+        by_degree: dict[int, sp.Expr] = {}
         for term in terms:
-            degree = sp.Poly(term, *velocities).total_degree() if velocities else 0
+            degree = sum(int(e) for b, e in term.as_powers_dict().items() if b in velocities)
             by_degree[degree] = by_degree.get(degree, sp.Integer(0)) + term
         found = False
         pieces = []
@@ -272,7 +281,7 @@ def _squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
             else:
                 pieces.append(part)
         if found:
-            out = sp.Add(rest, *(c * p for p in pieces))
+            out = sp.Add(*others, *(c * p for p in pieces))
     return out
 
 
@@ -358,14 +367,15 @@ def recombined(expr: sp.Expr) -> sp.Expr:
     return _angles_expanded(out)
 
 
-def _candidates(expr: sp.Expr, moving: set[sp.Symbol]) -> Iterator[sp.Expr]:
+def _candidates(expr: sp.Expr, moving: set[sp.Symbol]) -> Iterator[sp.Expr | Linearised]:
     """The engine's form first (ties keep it), then the rewritten ones, cheapest first."""
     yield expr
     moving_denominator = any(p.exp.is_negative and p.base.free_symbols & moving for p in expr.atoms(sp.Pow))
     if _nodes(expr, SMALL) < SMALL and not moving_denominator:
         # a small expression expanded and collected: what cancels goes first (a checker's difference)
         yield collected(expr, moving)
-    trig = bool(expr.atoms(sp.sin, sp.cos))
+    # a sum of terms with one sine or cosine each at most has no product to turn into a sum or recombine
+    trig = bool(expr.atoms(sp.sin, sp.cos)) and not _trig_linear(expr)
     big = _nodes(expr, 4 * SMALL) >= 4 * SMALL
     if trig and big:
         # cheap on any size: first for a large expression, whose other candidates may not finish in time
@@ -375,7 +385,43 @@ def _candidates(expr: sp.Expr, moving: set[sp.Symbol]) -> Iterator[sp.Expr]:
         yield recombined(expr)
 
 
-def _rewritten(expr: sp.Expr, moving: set[sp.Symbol], trig: bool) -> Iterator[sp.Expr]:
+class Linearised:
+    """A quotient whose denominator holds sines or cosines of what moves, with every product of them written as
+    a sum of single ones over a whole-number denominator: the form a textbook prints such a quotient in
+    (the double pendulum's θ̈₁ over l₁(2m₁ + m₂ − m₂ cos(2θ₁ − 2θ₂))), taken when it is found and not much
+    longer (LINEARISED_SLACK), even where sin²(θ₁ − θ₂) below counts a few operations fewer: both accelerations
+    then share one denominator."""
+
+    def __init__(self, form: sp.Expr):
+        self.form = form
+
+
+def den_moves(expr: sp.Expr, moving: set[sp.Symbol]) -> bool:
+    """Whether the denominator of ``expr`` holds a sine or cosine of something that moves."""
+    return any(
+        p.exp.is_negative and any(f.free_symbols & moving for f in p.base.atoms(sp.sin, sp.cos)) for p in expr.atoms(sp.Pow)
+    )
+
+
+def _trig_linear(expr: sp.Expr) -> bool:
+    """True when no product or power of sines and cosines can appear on expanding ``expr``: no product holds
+    two factors with sines or cosines in them, and no sine or cosine is raised to a power (nor divided by).
+
+    Then the product-to-sum rules and their inverse (``linearised``, ``recombined``) find nothing to do, and
+    sin² + cos² = 1 nothing to collapse: the candidates that try them would only repeat the plain ones."""
+
+    def trig(e: sp.Basic) -> bool:
+        return e.has(sp.sin, sp.cos)
+
+    for node in sp.preorder_traversal(expr):
+        if node.is_Mul and sum(1 for f in node.args if trig(f)) > 1:
+            return False
+        if node.is_Pow and trig(node.base):
+            return False
+    return True
+
+
+def _rewritten(expr: sp.Expr, moving: set[sp.Symbol], trig: bool) -> Iterator[sp.Expr | Linearised]:
     """The candidates that expand, put over one denominator or factor."""
     if isinstance(expr, sp.Add):
         # a sum of a quotient and plain terms (Hamilton's H = kinetic part over its denominator − the potential):
@@ -391,7 +437,7 @@ def _rewritten(expr: sp.Expr, moving: set[sp.Symbol], trig: bool) -> Iterator[sp
     if den.free_symbols:
         # a quotient: one numerator over one denominator, products of sines and cosines linearised
         if trig:
-            yield linearised(expr, moving)
+            yield Linearised(linearised(expr, moving))
             return
         num, den = sp.fraction(sp.cancel(sp.together(expr)))
         yield sp.factor_terms(collected(num, moving)) / sp.factor_terms(den)
@@ -436,6 +482,13 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, secon
 
     def search() -> bool:
         for form in _candidates(expr, moving):
+            if isinstance(form, Linearised):
+                # within a tenth of the operations of the best so far (the angle charge aside), it is the form
+                ops = memoized("ops", form.form, lambda f=form.form: (float(sp.count_ops(f)), frozenset(_angles(f))))[0]
+                if den_moves(expr, moving) and ops <= LINEARISED_SLACK * _score(best[0], _angles(best[0])):
+                    best[:] = [form.form, float("-inf")]
+                    continue
+                form = form.form
             score = _score(form, angles)
             if score < best[1]:
                 best[:] = [form, score]
