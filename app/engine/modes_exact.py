@@ -14,6 +14,7 @@ import sympy as sp
 
 from app.engine.budget import within_budget
 from app.engine.derive import Derivation, positive_names
+from app.engine.forms import settle
 from app.limits import EIGEN_SECONDS
 from app.limits import EQUILIBRIA_SOLVE_SECONDS as SOLVE_SECONDS
 
@@ -123,4 +124,6 @@ def eigenvalues(M: sp.Matrix, K: sp.Matrix, assume: Mapping[sp.Symbol, sp.Symbol
         return [r.xreplace(back) for r in _roots(Ma, Ka)]
 
     found: list[sp.Expr] = within_budget(work, [], EIGEN_SECONDS)
-    return [c for c in found if sp.count_ops(c) <= MAX_EXACT_OPS]
+    # each root is already in its neat form (factored, or its common factors out around the square root):
+    # the document prints it as it stands (a search for a shorter one would expand products of square roots)
+    return [settle(c) for c in found if sp.count_ops(c) <= MAX_EXACT_OPS]
