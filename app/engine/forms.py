@@ -92,9 +92,14 @@ def _angles(expr: sp.Expr) -> set[sp.Expr]:
     return {f.args[0] for f in expr.atoms(sp.sin, sp.cos, sp.tan)}
 
 
+def _ops(form: sp.Expr) -> tuple[float, frozenset[sp.Expr]]:
+    """The operations of ``form`` and its angles, once per document."""
+    return memoized("ops", form, lambda: (float(sp.count_ops(form)), frozenset(_angles(form))))
+
+
 def _score(form: sp.Expr, angles: set[sp.Expr]) -> float:
     # operations, and one more for every angle the engine's form did not have (cos 2θ for sin² θ)
-    ops, own = memoized("ops", form, lambda: (float(sp.count_ops(form)), frozenset(_angles(form))))
+    ops, own = _ops(form)
     return ops + len(own - angles)
 
 
@@ -484,8 +489,7 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, secon
         for form in _candidates(expr, moving):
             if isinstance(form, Linearised):
                 # within a tenth of the operations of the best so far (the angle charge aside), it is the form
-                ops = memoized("ops", form.form, lambda f=form.form: (float(sp.count_ops(f)), frozenset(_angles(f))))[0]
-                if den_moves(expr, moving) and ops <= LINEARISED_SLACK * _score(best[0], _angles(best[0])):
+                if den_moves(expr, moving) and _ops(form.form)[0] <= LINEARISED_SLACK * _ops(best[0])[0]:
                     best[:] = [form.form, float("-inf")]
                     continue
                 form = form.form
