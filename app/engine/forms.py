@@ -408,6 +408,14 @@ def den_moves(expr: sp.Expr, moving: set[sp.Symbol]) -> bool:
     )
 
 
+def _squared_trig_sum(den: sp.Expr) -> bool:
+    """Whether ``den`` has a factor (a + b cos θ + …)ⁿ with n ≥ 2: a sum with sines or cosines, raised to a power."""
+    return any(
+        f.is_Pow and f.exp.is_Integer and f.exp >= 2 and isinstance(f.base, sp.Add) and f.base.has(sp.sin, sp.cos)
+        for f in sp.Mul.make_args(den)
+    )
+
+
 def _trig_linear(expr: sp.Expr) -> bool:
     """True when no product or power of sines and cosines can appear on expanding ``expr``: no product holds
     two factors with sines or cosines in them, and no sine or cosine is raised to a power (nor divided by).
@@ -442,7 +450,10 @@ def _rewritten(expr: sp.Expr, moving: set[sp.Symbol], trig: bool) -> Iterator[sp
     if den.free_symbols:
         # a quotient: one numerator over one denominator, products of sines and cosines linearised
         if trig:
-            yield Linearised(linearised(expr, moving))
+            # a squared denominator (Hamilton's ṗ, over det M²) multiplied out runs to several times the length:
+            # textbooks keep it as a power (the double pendulum's ṗ over l₁²l₂²(m₁ + m₂ sin²(θ₁ − θ₂))²)
+            if not _squared_trig_sum(den):
+                yield Linearised(linearised(expr, moving))
             return
         num, den = sp.fraction(sp.cancel(sp.together(expr)))
         yield sp.factor_terms(collected(num, moving)) / sp.factor_terms(den)

@@ -88,6 +88,8 @@ def _roots(M: sp.Matrix, K: sp.Matrix) -> list[sp.Expr]:
         # a rational result (the square root came out) is put over one factored denominator
         return [_neat((-b - root) / (2 * a)), _neat((-b + root) / (2 * a))]
     lam = sp.Dummy("lambda")
+    if _irreducible_at_a_point(M, K, lam):
+        return []  # no factor of degree ≤ 2, known before the symbolic determinant is expanded
     poly = sp.Poly(sp.expand((K - lam * M).det(method="berkowitz")), lam)
     # with parameters in the coefficients, Cardano's and Ferrari's formulas run far past MAX_EXACT_OPS (and
     # past EIGEN_SECONDS at every equilibrium of a triple pendulum): only roots from factors of degree ≤ 2
@@ -98,6 +100,25 @@ def _roots(M: sp.Matrix, K: sp.Matrix) -> list[sp.Expr]:
     if len(roots) != M.shape[0]:
         return []
     return [sp.factor_terms(r) for r in roots]
+
+
+def _irreducible_at_a_point(M: sp.Matrix, K: sp.Matrix, lam: sp.Dummy) -> bool:
+    """det(K − λM) has no factor of lower degree in λ, shown at one rational point of the parameters.
+
+    A factorisation A(λ)·B(λ) over the parameters survives setting them to numbers that keep the degree in λ
+    (the leading coefficient, det M, nonzero there); so if the determinant of the matrices with numbers put
+    in is irreducible over the rationals with its full degree, the symbolic one is too.  This costs a
+    determinant of numbers, where expanding the symbolic one costs most of the time of a chain's modes.
+    False: not shown (the symbolic test decides)."""
+    symbols = sorted((M.free_symbols | K.free_symbols), key=str)
+    point = {s: sp.Rational(7 + 3 * i, 11 + 2 * i) for i, s in enumerate(symbols)}
+    try:
+        poly = sp.Poly(sp.expand((K.xreplace(point) - lam * M.xreplace(point)).det(method="berkowitz")), lam)
+    except sp.PolynomialError:
+        return False
+    if poly.degree() != M.shape[0] or not poly.get_domain().is_QQ and not poly.get_domain().is_ZZ:
+        return False
+    return bool(poly.is_irreducible)
 
 
 def _irreducible(poly: sp.Poly) -> bool:
