@@ -314,20 +314,31 @@ def _square_free_at_a_point(part: sp.Expr) -> bool:
     A factor A² with A containing x survives setting the other generators to numbers that keep the leading
     coefficient in x, as a repeated root of one variable (a gcd with the derivative); so a point where every
     variable of degree ≥ 2 gives a square-free polynomial proves it.  False: not shown (the full test decides).
+    The degrees are read term by term and each test is a polynomial in one variable: no polynomial in all
+    the generators is built (that was most of the time of a chain's squares).
     """
-    try:
-        poly = sp.Poly(part)
-    except (BasePolynomialError, NotImplementedError):
-        return False
-    if not poly.get_domain().is_QQ and not poly.get_domain().is_ZZ:
-        return False
-    gens = poly.gens
+    degrees: dict[sp.Expr, int] = {}
+    for term in sp.Add.make_args(part):
+        for base, exp in term.as_powers_dict().items():
+            if base.is_Number:
+                if not base.is_Rational:
+                    return False  # a float or a root among the numbers: the full test
+                continue
+            if not (exp.is_Integer and exp > 0 and (base.is_Symbol or isinstance(base, (sp.sin, sp.cos)))):
+                return False
+            degrees[base] = max(degrees.get(base, 0), int(exp))
+    gens = sorted(degrees, key=sp.default_sort_key)
     point = {g: sp.Rational(13 + 5 * i, 7 + 3 * i) for i, g in enumerate(gens)}
     for x in gens:
-        if poly.degree(x) < 2:
+        if degrees[x] < 2:
             continue  # A² would give degree 2 at least
-        one = poly.eval({g: point[g] for g in gens if g != x})
-        if one.degree() != poly.degree(x) or one.gcd(one.diff()).degree() > 0:
+        try:
+            one = sp.Poly(part.xreplace({g: point[g] for g in gens if g != x}), x)
+        except (BasePolynomialError, NotImplementedError):
+            return False
+        if not one.get_domain().is_QQ and not one.get_domain().is_ZZ:
+            return False
+        if one.degree() != degrees[x] or one.gcd(one.diff()).degree() > 0:
             return False
     return True
 

@@ -18,7 +18,7 @@ from app.engine import textbook
 from app.engine.action_step import KEY as ACTION_KEY
 from app.engine.action_step import action_step
 from app.engine.breaking import broken, broken_row, single
-from app.engine.budget import unbudgeted
+from app.engine.budget import memoized, unbudgeted
 from app.engine.derive import Derivation
 from app.engine.forms import settle, textbook_form, use_names
 from app.engine.names import unicode
@@ -118,6 +118,12 @@ def display(expr: sp.Expr) -> sp.Expr:
 def equations(d: Derivation, pr: Printer) -> list[tuple[sp.Expr, str]]:
     """Each Euler–Lagrange equation as a textbook prints it, θ̈ + (g/R) sin θ = 0: the residual in its
     textbook form scaled for display (the equation residual = 0 is unchanged), and its LaTeX row."""
+    # the results box and the steps show the same rows: worked out once per document
+    key = (tuple(d.equations.residuals), tuple(d.table.qdd), tuple(pr.names.items()))
+    return memoized("equations", key, lambda: _equations(d, pr))
+
+
+def _equations(d: Derivation, pr: Printer) -> list[tuple[sp.Expr, str]]:
     eqs = d.equations
     M, diagonal = eqs.mass_matrix, eqs.mass_matrix.is_diagonal()
     out = []

@@ -99,3 +99,16 @@ def test_square_free_at_a_point_proves_only_square_free() -> None:
         assert got == factored or not _squared(factored), e
     assert not forms._square_free_at_a_point(sp.expand(k * (x - y + l0) ** 2))
     assert forms._square_free_at_a_point(sp.expand(x**2 + y**2))
+
+
+def test_hamiltons_p_dot_keeps_its_squared_denominator() -> None:
+    """ṗ₁ of the double pendulum over (m₁ + m₂ sin²(θ₁ − θ₂))²: a textbook keeps the power; multiplied out into
+    sums of single sines and cosines it runs to several times the length."""
+    from app.engine.contract import derivation_json
+    from app.engine.derive import derive
+    from tests.engine.test_staged import chain
+
+    ham = derivation_json(derive(chain(2)))["hamilton"]
+    assert ham is not None
+    text = ham["equations"][0]["p_dot"]["sympy"]
+    assert "3*q1" not in text and ")**2" in text, text

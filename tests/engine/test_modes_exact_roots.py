@@ -38,3 +38,18 @@ def test_numeric_cubic_keeps_cardano() -> None:
     roots = modes_exact._roots(M, K)
     assert len(roots) == 3
     assert sorted(float(sp.re(sp.N(r))) for r in roots) == sorted(float(v) for v in (2 - sp.sqrt(2), 2, 2 + sp.sqrt(2)))
+
+
+def test_irreducible_at_a_point_decides_before_the_symbolic_determinant() -> None:
+    """The triple pendulum's det(K − λM) is shown irreducible from numbers put in; a determinant that factors
+    (a coupled pair beside a free coordinate) never is."""
+    m1, m2, m3, l1, l2, l3, g = sp.symbols("m1 m2 m3 l1 l2 l3 g", positive=True)
+    s1, s2 = m1 + m2 + m3, m2 + m3
+    M = sp.Matrix([[l1**2 * s1, l1 * l2 * s2, l1 * l3 * m3], [l1 * l2 * s2, l2**2 * s2, l2 * l3 * m3],
+                   [l1 * l3 * m3, l2 * l3 * m3, l3**2 * m3]])  # fmt: skip
+    K = sp.diag(g * l1 * s1, g * l2 * s2, g * l3 * m3)
+    lam = sp.Dummy("lambda")
+    assert modes_exact._irreducible_at_a_point(M, K, lam)
+    m, k, c = sp.symbols("m k c", positive=True)
+    assert not modes_exact._irreducible_at_a_point(sp.Matrix([[2 * m, m, 0], [m, 2 * m, 0], [0, 0, m]]),
+                                                   sp.diag(k, k, c), lam)  # fmt: skip
