@@ -21,6 +21,7 @@ from app.web.examples_user import (
     EXAMPLES_FILE,
     FORCED_SPRING,
     JSON,
+    LONG_CHAIN,
     REFUSED_REQUESTS,
     SIMULATE_EXAMPLES,
     SIMULATE_REFUSED,
@@ -76,11 +77,11 @@ def refused(client: TestClient, status: int) -> dict[str, Any]:
 
 
 def answer_with_time_limit(client: TestClient, seconds: float) -> dict[str, Any]:
-    """The answer to deriving the double pendulum under a short time limit (a service of its own: no cached result)."""
+    """The answer to deriving a four-link chain under a short time limit (a service of its own: no cached result)."""
     short = UserSystems(client.app_state["services"].pool, config=Settings(derive_seconds=seconds))
     app.dependency_overrides[user_systems_service] = lambda: short
     try:
-        answer = client.post("/api/derive", json=UNCACHED_DOUBLE_PENDULUM).json()
+        answer = client.post("/api/derive", json=LONG_CHAIN).json()
     finally:
         app.dependency_overrides.pop(user_systems_service)
     if answer.get("kind") != "timeout":

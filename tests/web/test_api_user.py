@@ -144,7 +144,7 @@ def test_a_job_over_the_time_limit_is_stopped_and_the_pool_recovers(client, serv
     short = UserSystems(services.pool, config=Settings(derive_seconds=examples_user.TIMEOUT_SECONDS))
     app.dependency_overrides[user_systems_service] = lambda: short
     try:
-        answer = client.post("/api/derive", json=examples_user.UNCACHED_DOUBLE_PENDULUM).json()
+        answer = client.post("/api/derive", json=examples_user.LONG_CHAIN).json()
     finally:
         app.dependency_overrides.clear()
     assert answer == examples_user.ERROR_EXAMPLES[422]["timeout"]["response"]
