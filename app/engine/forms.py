@@ -258,18 +258,18 @@ def _squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     velocities = sorted((s for s in moving if s.name.endswith("_dot")), key=sp.default_sort_key)
     params = sorted(expr.free_symbols - moving, key=sp.default_sort_key)
     out = sp.expand(expr)
+    split = _by_power(out)
     for c in params:
-        # the terms linear in c (c times a part free of c) and the rest, in one pass over the sum
+        # the terms linear in c (c times a part free of c) and the rest, read from each term's powers
         linear, others = [], []
-        for term in sp.Add.make_args(out):
-            powers = term.as_powers_dict()
-            if powers.get(c) == 1 and not (term / c).has(c):
+        for term, powers, inside in split:
+            if powers.get(c) == 1 and c not in inside:
                 linear.append(term / c)
             else:
                 others.append(term)
         if not linear:
             continue
-        terms = sp.Add.make_args(sp.expand(sp.Add(*linear)))
+        terms = sp.Add.make_args(sp.Add(*linear))  # already expanded: each is a term of ``out`` over c
         if not all(t.is_polynomial(*velocities) for t in terms):
             continue  # a speed under a root (sqrt(ρ̇² + ω²ρ²)): no degrees to split by
         by_degree: dict[int, sp.Expr] = {}
@@ -287,6 +287,21 @@ def _squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
                 pieces.append(part)
         if found:
             out = sp.Add(*others, *(c * p for p in pieces))
+            split = _by_power(out)
+    return out
+
+
+def _by_power(expr: sp.Expr) -> list[tuple[sp.Expr, dict[sp.Expr, Any], set[sp.Symbol]]]:
+    """Each term of ``expr`` with its powers (base -> exponent) and the symbols inside a base that is not a
+    symbol itself (sin(ωt) holds ω): a term is linear in c when c has exponent 1 and is in no other base."""
+    out = []
+    for term in sp.Add.make_args(expr):
+        powers = term.as_powers_dict()
+        inside: set[sp.Symbol] = set()
+        for base in powers:
+            if not base.is_Symbol:
+                inside |= base.free_symbols
+        out.append((term, powers, inside))
     return out
 
 
