@@ -427,7 +427,7 @@ class Linearised:
         self.form = form
 
 
-def den_moves(expr: sp.Expr, moving: set[sp.Symbol]) -> bool:
+def _den_moves(expr: sp.Expr, moving: set[sp.Symbol]) -> bool:
     """Whether the denominator of ``expr`` holds a sine or cosine of something that moves."""
     return any(
         p.exp.is_negative and any(f.free_symbols & moving for f in p.base.atoms(sp.sin, sp.cos)) for p in expr.atoms(sp.Pow)
@@ -526,7 +526,7 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, secon
         for form in _candidates(expr, moving):
             if isinstance(form, Linearised):
                 # within a tenth of the operations of the best so far (the angle charge aside), it is the form
-                if den_moves(expr, moving) and _ops(form.form)[0] <= LINEARISED_SLACK * _ops(best[0])[0]:
+                if _den_moves(expr, moving) and _ops(form.form)[0] <= LINEARISED_SLACK * _ops(best[0])[0]:
                     best[:] = [form.form, float("-inf")]
                     continue
                 form = form.form
