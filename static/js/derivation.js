@@ -54,7 +54,9 @@ export function markWide(root = document) {
   const again = (el) => { fitOrScroll(el); if (document.fonts) document.fonts.ready.then(() => fitOrScroll(el)); };
   widths ??= new ResizeObserver((entries) => { for (const e of entries) again(e.target); });
   const boxes = [...root.querySelectorAll(".math-display")];
-  for (const el of boxes) widths.observe(el);
+  // decided at once as well (the observer reports only at the next frame): a box typeset here is a keyboard
+  // region by the time typeset() returns, not a frame later
+  for (const el of boxes) { widths.observe(el); fitOrScroll(el); }
   // KaTeX's fonts widen a formula without resizing its box: decide again once they are in
   if (document.fonts) document.fonts.ready.then(() => boxes.forEach(fitOrScroll));
 }
