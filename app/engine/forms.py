@@ -469,7 +469,9 @@ def _rewritten(expr: sp.Expr, moving: set[sp.Symbol], trig: bool) -> Iterator[sp
         if over and len(over) < len(expr.args):
             rest = sp.Add(*(t for t in expr.args if t not in over))
             quotient = sp.Add(*over)
-            shown = linearised(quotient, moving) if trig else quotient
+            # over a squared trigonometric sum (Hamilton's ṗ, over det M²) the quotient stays as it is (below)
+            squared = any(_squared_trig_sum(sp.denom(t)) for t in over)
+            shown = linearised(quotient, moving) if trig and not squared else quotient
             yield shown + collected(pythagoras(rest) if trig else rest, moving)
             return
     num, den = sp.fraction(sp.together(expr))
