@@ -88,8 +88,10 @@ def _roots(M: sp.Matrix, K: sp.Matrix) -> list[sp.Expr]:
         # a rational result (the square root came out) is put over one factored denominator
         return [_neat((-b - root) / (2 * a)), _neat((-b + root) / (2 * a))]
     lam = sp.Dummy("lambda")
-    if _irreducible_at_a_point(M, K, lam):
-        return []  # no factor of degree ≤ 2, known before the symbolic determinant is expanded
+    if (M.free_symbols | K.free_symbols) and _irreducible_at_a_point(M, K, lam):
+        # with parameters: no factor of degree ≤ 2, known before the symbolic determinant is expanded (numbers
+        # alone keep the general formulas below, whose results may be short)
+        return []
     poly = sp.Poly(sp.expand((K - lam * M).det(method="berkowitz")), lam)
     # with parameters in the coefficients, Cardano's and Ferrari's formulas run far past MAX_EXACT_OPS (and
     # past EIGEN_SECONDS at every equilibrium of a triple pendulum): only roots from factors of degree ≤ 2

@@ -53,3 +53,16 @@ def test_irreducible_at_a_point_decides_before_the_symbolic_determinant() -> Non
     m, k, c = sp.symbols("m k c", positive=True)
     assert not modes_exact._irreducible_at_a_point(sp.Matrix([[2 * m, m, 0], [m, 2 * m, 0], [0, 0, m]]),
                                                    sp.diag(k, k, c), lam)  # fmt: skip
+
+
+def test_an_irreducible_numeric_cubic_keeps_its_closed_forms() -> None:
+    """Numbers only: the shortcut for parameters never applies, so Cardano's formulas still give three roots."""
+    M = sp.eye(3)
+    K = sp.Matrix([[3, -1, 0], [-1, 3, -1], [0, -1, 2]])
+    lam = sp.Dummy("lambda")
+    assert sp.Poly((K - lam * M).det(), lam).is_irreducible
+    roots = modes_exact._roots(M, K)
+    assert len(roots) == 3
+    values = sorted(complex(sp.N(r)).real for r in roots)
+    expected = sorted(complex(sp.N(v)).real for v in K.eigenvals(multiple=True))
+    assert all(abs(a - b) < 1e-9 for a, b in zip(values, expected, strict=True))
