@@ -88,16 +88,14 @@ def _roots(M: sp.Matrix, K: sp.Matrix) -> list[sp.Expr]:
         # a rational result (the square root came out) is put over one factored denominator
         return [_neat((-b - root) / (2 * a)), _neat((-b + root) / (2 * a))]
     lam = sp.Dummy("lambda")
+    # with parameters in the coefficients, Cardano's and Ferrari's formulas run far past MAX_EXACT_OPS (and
+    # past EIGEN_SECONDS at every equilibrium of a triple pendulum): only roots from factors of degree ≤ 2, and
+    # none when there is no such factor, known before the symbolic determinant is expanded (numbers alone keep
+    # the general formulas, whose results may be short)
     if (M.free_symbols | K.free_symbols) and _irreducible_at_a_point(M, K, lam):
-        # with parameters: no factor of degree ≤ 2, known before the symbolic determinant is expanded (numbers
-        # alone keep the general formulas below, whose results may be short)
         return []
     poly = sp.Poly(sp.expand((K - lam * M).det(method="berkowitz")), lam)
-    # with parameters in the coefficients, Cardano's and Ferrari's formulas run far past MAX_EXACT_OPS (and
-    # past EIGEN_SECONDS at every equilibrium of a triple pendulum): only roots from factors of degree ≤ 2
     general = not any(c.free_symbols for c in poly.all_coeffs())
-    if not general and _irreducible(poly):
-        return []  # no factor of degree ≤ 2: every root would need those formulas
     roots = sp.roots(poly, multiple=True, cubics=general, quartics=general)
     if len(roots) != M.shape[0]:
         return []
@@ -111,7 +109,7 @@ def _irreducible_at_a_point(M: sp.Matrix, K: sp.Matrix, lam: sp.Dummy) -> bool:
     (the leading coefficient, det M, nonzero there); so if the determinant of the matrices with numbers put
     in is irreducible over the rationals with its full degree, the symbolic one is too.  This costs a
     determinant of numbers, where expanding the symbolic one costs most of the time of a chain's modes.
-    False: not shown (the symbolic test decides)."""
+    False: not shown (the roots are then looked for in the symbolic determinant)."""
     symbols = sorted((M.free_symbols | K.free_symbols), key=str)
     point = {s: sp.Rational(7 + 3 * i, 11 + 2 * i) for i, s in enumerate(symbols)}
     try:
@@ -121,21 +119,6 @@ def _irreducible_at_a_point(M: sp.Matrix, K: sp.Matrix, lam: sp.Dummy) -> bool:
     if poly.degree() != M.shape[0] or not poly.get_domain().is_QQ and not poly.get_domain().is_ZZ:
         return False
     return bool(poly.is_irreducible)
-
-
-def _irreducible(poly: sp.Poly) -> bool:
-    """The polynomial (in lambda, coefficients polynomial in the parameters) has no factor of lower degree:
-    a factorisation would survive setting the parameters to numbers that keep the leading coefficient, so
-    one such point where it is irreducible over the rationals proves it."""
-    domain = poly.get_domain()
-    if not (domain.is_PolynomialRing and (domain.dom.is_ZZ or domain.dom.is_QQ)):
-        return False
-    point = {
-        s: sp.Rational(7 + 3 * i, 11 + 2 * i) for i, s in enumerate(sorted(poly.free_symbols - {poly.gen}, key=str))
-    }
-    if poly.LC().xreplace(point) == 0:
-        return False
-    return sp.Poly(poly.as_expr().xreplace(point), poly.gen).is_irreducible
 
 
 def eigenvalues(M: sp.Matrix, K: sp.Matrix, assume: Mapping[sp.Symbol, sp.Symbol]) -> list[sp.Expr]:

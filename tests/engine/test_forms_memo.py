@@ -9,6 +9,9 @@ from sympy.simplify.fu import TR8
 
 from app.engine import budget, forms
 from app.engine.budget import display_budget, memoized
+from app.engine.contract import derivation_json
+from app.engine.derive import derive
+from tests.engine.test_staged import chain
 
 x, y, z, a = sp.symbols("x y z a")
 ANGLES = [x, y, z, x - y, 2 * x - 2 * y, x + y - z, 3 * z, x / 2]
@@ -104,10 +107,6 @@ def test_square_free_at_a_point_proves_only_square_free() -> None:
 def test_hamiltons_p_dot_keeps_its_squared_denominator() -> None:
     """ṗ₁ of the double pendulum over (m₁ + m₂ sin²(θ₁ − θ₂))²: a textbook keeps the power; multiplied out into
     sums of single sines and cosines it runs to several times the length."""
-    from app.engine.contract import derivation_json
-    from app.engine.derive import derive
-    from tests.engine.test_staged import chain
-
     ham = derivation_json(derive(chain(2)))["hamilton"]
     assert ham is not None
     text = ham["equations"][0]["p_dot"]["sympy"]

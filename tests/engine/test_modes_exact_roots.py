@@ -7,25 +7,32 @@ import sympy as sp
 from app.engine import modes_exact
 
 
-def test_irreducible_characteristic_polynomial_gives_no_closed_form() -> None:
-    """The triple pendulum at rest: det(K - lambda M) has no factor, so no root is attempted (Cardano's would
-    run past MAX_EXACT_OPS and the time this step is given)."""
+def _triple_pendulum() -> tuple[sp.Matrix, sp.Matrix]:
+    """M and K of the triple pendulum hanging at rest (links l₁, l₂, l₃, bobs m₁, m₂, m₃)."""
     m1, m2, m3, l1, l2, l3, g = sp.symbols("m1 m2 m3 l1 l2 l3 g", positive=True)
     s1, s2 = m1 + m2 + m3, m2 + m3
     M = sp.Matrix([[l1**2 * s1, l1 * l2 * s2, l1 * l3 * m3], [l1 * l2 * s2, l2**2 * s2, l2 * l3 * m3],
                    [l1 * l3 * m3, l2 * l3 * m3, l3**2 * m3]])  # fmt: skip
-    K = sp.diag(g * l1 * s1, g * l2 * s2, g * l3 * m3)
-    lam = sp.Dummy("lambda")
-    poly = sp.Poly(sp.expand((K - lam * M).det(method="berkowitz")), lam)
-    assert modes_exact._irreducible(poly)
+    return M, sp.diag(g * l1 * s1, g * l2 * s2, g * l3 * m3)
+
+
+def _coupled_pair_beside_a_free_one() -> tuple[sp.Matrix, sp.Matrix, tuple[sp.Symbol, ...]]:
+    """Two coupled coordinates beside a free one: det(K − λM) is a linear times a quadratic factor."""
+    m, k, c = sp.symbols("m k c", positive=True)
+    return sp.Matrix([[2 * m, m, 0], [m, 2 * m, 0], [0, 0, m]]), sp.diag(k, k, c), (m, k, c)
+
+
+def test_irreducible_characteristic_polynomial_gives_no_closed_form() -> None:
+    """The triple pendulum at rest: det(K - lambda M) has no factor, so no root is attempted (Cardano's would
+    run past MAX_EXACT_OPS and the time this step is given)."""
+    M, K = _triple_pendulum()
+    assert modes_exact._irreducible_at_a_point(M, K, sp.Dummy("lambda"))
     assert modes_exact._roots(M, K) == []
 
 
 def test_a_cubic_that_factors_still_has_its_closed_forms() -> None:
     """A block of two coupled coordinates beside a free one: a linear times a quadratic factor, all three found."""
-    m, k, c = sp.symbols("m k c", positive=True)
-    M = sp.Matrix([[2 * m, m, 0], [m, 2 * m, 0], [0, 0, m]])
-    K = sp.diag(k, k, c)
+    M, K, (m, k, c) = _coupled_pair_beside_a_free_one()
     roots = modes_exact._roots(M, K)
     assert len(roots) == 3
     assert {sp.simplify(r) for r in roots} == {c / m, k / m, k / (3 * m)}
@@ -43,16 +50,11 @@ def test_numeric_cubic_keeps_cardano() -> None:
 def test_irreducible_at_a_point_decides_before_the_symbolic_determinant() -> None:
     """The triple pendulum's det(K − λM) is shown irreducible from numbers put in; a determinant that factors
     (a coupled pair beside a free coordinate) never is."""
-    m1, m2, m3, l1, l2, l3, g = sp.symbols("m1 m2 m3 l1 l2 l3 g", positive=True)
-    s1, s2 = m1 + m2 + m3, m2 + m3
-    M = sp.Matrix([[l1**2 * s1, l1 * l2 * s2, l1 * l3 * m3], [l1 * l2 * s2, l2**2 * s2, l2 * l3 * m3],
-                   [l1 * l3 * m3, l2 * l3 * m3, l3**2 * m3]])  # fmt: skip
-    K = sp.diag(g * l1 * s1, g * l2 * s2, g * l3 * m3)
+    M, K = _triple_pendulum()
     lam = sp.Dummy("lambda")
     assert modes_exact._irreducible_at_a_point(M, K, lam)
-    m, k, c = sp.symbols("m k c", positive=True)
-    assert not modes_exact._irreducible_at_a_point(sp.Matrix([[2 * m, m, 0], [m, 2 * m, 0], [0, 0, m]]),
-                                                   sp.diag(k, k, c), lam)  # fmt: skip
+    M, K, _ = _coupled_pair_beside_a_free_one()
+    assert not modes_exact._irreducible_at_a_point(M, K, lam)
 
 
 def test_an_irreducible_numeric_cubic_keeps_its_closed_forms() -> None:
