@@ -7,8 +7,8 @@
  *                                     overflowing (a wider window) loses them again
  *
  * Checked after the page has loaded (KaTeX has typeset by then), when the window is resized, when a
- * <details> opens, and when elements are added under root (tables built from a server answer), at
- * most twice a second (readouts change text every animation frame).
+ * <details> opens, and when elements are added under root (tables built from a server answer): at the
+ * next frame, then at most twice a second while elements keep coming (readouts change every frame).
  */
 const BOXES = ".math-display, .table-scroll, .summary-box dd, .data-summary .table, .frequencies, .practice-engine";
 
@@ -49,8 +49,15 @@ export function keyboardScroll(root = document) {
   if (document.readyState === "complete") soon(); else window.addEventListener("load", soon, { once: true });
   window.addEventListener("resize", soon);
   document.addEventListener("toggle", soon, true);
+  // elements added: a check at the next frame (a table just built is a keyboard region at once), then at
+  // most one more per half second however often elements come (readouts redrawn every frame)
   let timer = null;
-  const later = () => { if (timer === null) timer = setTimeout(() => { timer = null; soon(); }, 500); };
+  let again = false;
+  const later = () => {
+    if (timer !== null) { again = true; return; }
+    soon();
+    timer = setTimeout(() => { timer = null; if (again) { again = false; later(); } }, 500);
+  };
   new MutationObserver((records) => { if (records.some((r) => [...r.addedNodes].some((n) => n.nodeType === 1))) later(); })
     .observe(root === document ? document.body : root, { childList: true, subtree: true });
   // KaTeX may finish after load (fonts): look once more a little later
