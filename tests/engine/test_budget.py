@@ -68,3 +68,33 @@ def test_patience_lengthens_every_bound_in_its_block_and_only_there():
             assert display_seconds_left(0.01) > 0.1  # the shared display budget is as patient
     assert len(skipped) == 1
     assert bounded("m", "A member", 0.02, lambda: _busy(0.1), "fallback", skipped) == "fallback"
+
+
+def _random_products(count: int) -> list[sp.Expr]:
+    import random
+
+    rng = random.Random(7)
+    g, l, m, q = sp.symbols("g l m q")  # noqa: E741
+    factors = [g, l, m, q, sp.Rational(-3, 2), sp.Integer(4)]
+    functions = [sp.sin(q), sp.cos(q), sp.tan(q), sp.exp(q), sp.cos(2 * q), sp.sin(q / 2)]
+    out = []
+    for _ in range(count):
+        expr = sp.Mul(*(f ** rng.choice([-2, -1, 1, 2, 3]) for f in rng.sample(factors, rng.randint(1, 4))))
+        out.append(expr * rng.choice(functions) ** rng.choice([-1, 1, 2]) if rng.random() < 0.8 else expr)
+    return out
+
+
+def test_a_product_with_one_function_is_not_simplified_and_simplify_would_not_change_it(monkeypatch):
+    products = _random_products(120)
+    assert all(budget._product(e) for e in products)
+    # what the shortcut leaves out: simplify would have returned each one as it is
+    assert [e for e in products if sp.simplify(e) != e] == []
+    calls = []
+    monkeypatch.setattr(budget, "_TIDY_CACHE", {})
+    monkeypatch.setattr(budget.sp, "simplify", lambda e, *a, **k: calls.append(e) or e)
+    assert [budget.tidy(e) for e in products] == products and calls == []
+    # a sum, two functions or a root still go to simplify
+    for expr in (x + y, sp.sin(x) * sp.cos(x), sp.sqrt(x**2 * y)):
+        assert not budget._product(expr)
+        budget.tidy(expr)
+    assert len(calls) == 3
