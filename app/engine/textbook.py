@@ -27,7 +27,7 @@ import sympy as sp
 from sympy.printing.latex import LatexPrinter
 from sympy.printing.str import StrPrinter
 
-from app.engine.budget import larger_than
+from app.engine.budget import larger_than, memoized
 from app.engine.names import unicode
 
 NODE_BUDGET = 600
@@ -216,7 +216,12 @@ def latex(expr: Any, names: dict[sp.Symbol, str], first: sp.Symbol | None = None
     """
     if not isinstance(expr, sp.Basic) or larger_than(expr, NODE_BUDGET):
         return sp.latex(expr, symbol_names=names)
-    return _Printer(names, _moving(names, expr), first).doprint(expr)
+    if isinstance(expr, sp.MatrixBase):  # mutable: printed each time
+        return _Printer(names, _moving(names, expr), first).doprint(expr)
+    # a document prints most expressions several times (the steps and the results box; a double pendulum's
+    # 161 printings are of 62 expressions): each once per document and set of names
+    key = (expr, tuple(names.items()), first)
+    return memoized("latex", key, lambda: _Printer(names, _moving(names, expr), first).doprint(expr))
 
 
 def _simplest(const: sp.Expr) -> sp.Expr:

@@ -3,6 +3,7 @@
 import sympy as sp
 
 from app.engine import textbook
+from app.engine.budget import display_budget
 from app.engine.errata import ascii_tex, correct_tex
 from app.engine.symbols import SymbolTable
 
@@ -80,3 +81,21 @@ def test_prose_formulas_are_unicode_never_code():
     for expr in (thd**2 * R**2 * m / 2, (m + b) * g / (R * sp.sin(theta) ** 3), -g * sp.cos(theta - phi)):
         text = textbook.unicode_text(expr, NAMES)
         assert "*" not in text and "**" not in text and "-" not in text, text
+
+
+def test_a_document_prints_each_expression_once_for_each_set_of_names(monkeypatch) -> None:
+    th, l, g = sp.symbols("theta l g")  # noqa: E741
+    printed: list[sp.Expr] = []
+    doprint = textbook._Printer.doprint
+    monkeypatch.setattr(textbook._Printer, "doprint", lambda self, e: printed.append(e) or doprint(self, e))
+    expr = -g * sp.sin(th) / l
+    names = {th: r"\theta", l: "l", g: "g"}
+    with display_budget(10):
+        first = textbook.latex(expr, names)
+        assert textbook.latex(expr, names) == first and len(printed) == 1
+        # other names, or another term first, print again
+        assert textbook.latex(expr, {**names, th: r"\phi"}) == first.replace(r"\theta", r"\phi")
+        textbook.latex(expr, names, first=g)
+        assert len(printed) == 3
+    textbook.latex(expr, names)  # outside a document: printed each time
+    assert len(printed) == 4
