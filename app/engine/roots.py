@@ -93,11 +93,24 @@ def _is_root(g: Callable[[np.ndarray], np.ndarray], x: np.ndarray, rows: np.ndar
     return bool(np.all(np.abs(r) <= 1e-9 * np.maximum(rows, 1e-300) * size + 1e-300))
 
 
+def _on_grid(g: Callable[[np.ndarray], np.ndarray], grid: np.ndarray) -> np.ndarray:
+    """g at every point of the grid: in one call where g's expression broadcasts over an array (a lambdified
+    NumPy expression does; 4,001 calls one point at a time were a tenth of a single pendulum's document),
+    else point by point (an expression free of the coordinate gives one number, not one per point)."""
+    with np.errstate(all="ignore"):
+        try:
+            y = np.asarray(g(grid[np.newaxis, :]), dtype=float).ravel()
+        except (TypeError, ValueError):
+            y = np.empty(0)
+        if y.shape == grid.shape:
+            return y
+        return np.array([float(g(np.array([x]))[0]) for x in grid])
+
+
 def _scan_1d(g: Callable[[np.ndarray], np.ndarray], lo: float, hi: float) -> list[float]:
     """Sign changes and touching minima of a scalar g on [lo, hi]."""
     grid = np.linspace(lo, hi, SCAN_POINTS)
-    with np.errstate(all="ignore"):
-        y = np.array([float(g(np.array([x]))[0]) for x in grid])
+    y = _on_grid(g, grid)
     opt = late.module("scipy.optimize")
     found: list[float] = []
     size = float(np.nanmax(np.abs(y[np.isfinite(y)]))) if np.any(np.isfinite(y)) else 1.0
