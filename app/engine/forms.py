@@ -279,6 +279,9 @@ def _squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
         found = False
         pieces = []
         for part in by_degree.values():
+            if not isinstance(part, sp.Add):  # one term of an expanded sum: no squared sum to find in it
+                pieces.append(part)
+                continue
             factored = memoized("factor", part, partial(_squared_factors, part))
             if any(isinstance(b, sp.Add) and e == 2 for b, e in (f.as_base_exp() for f in sp.Mul.make_args(factored))):
                 pieces.append(factored)
@@ -371,8 +374,17 @@ def _factorable(expr: sp.Expr, moving: set[sp.Symbol]) -> bool:
     # a term that is no polynomial in the velocities (a speed, sqrt(ρ̇² + ω²ρ²)) has no degree to share
     if not all(t.is_polynomial(*velocities) for t in terms):
         return False
-    degrees = {sp.Poly(t, *velocities).total_degree() for t in terms}
+    degrees = {_degree_in(t, velocities) for t in terms}
     return len(degrees) == 1 and 0 not in degrees
+
+
+def _degree_in(term: sp.Expr, velocities: list[sp.Symbol]) -> int:
+    """The total degree of a term (a polynomial in the velocities) in them: read from its powers when each
+    factor is a velocity or free of them, else from its polynomial."""
+    powers = term.as_powers_dict()
+    if all(b in velocities or not b.has(*velocities) for b in powers):
+        return sum(int(e) for b, e in powers.items() if b in velocities)
+    return sp.Poly(term, *velocities).total_degree()
 
 
 def recombined(expr: sp.Expr) -> sp.Expr:

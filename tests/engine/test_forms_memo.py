@@ -111,3 +111,13 @@ def test_hamiltons_p_dot_keeps_its_squared_denominator() -> None:
     assert ham is not None
     text = ham["equations"][0]["p_dot"]["sympy"]
     assert "3*q1" not in text and ")**2" in text, text
+
+
+def test_a_terms_degree_in_the_velocities_is_its_polynomials() -> None:
+    rng = random.Random(3)
+    a, b, m, th = sp.symbols("a b m theta")
+    ad, bd = sp.symbols("a_dot b_dot")
+    factors = [a, b, m, sp.cos(th), sp.sin(a - b), ad, bd, ad + bd, m * ad - bd, sp.Rational(1, 2)]
+    for _ in range(300):
+        term = sp.Mul(*(f ** rng.randint(1, 3) for f in rng.sample(factors, rng.randint(1, 4))))
+        assert forms._degree_in(term, [ad, bd]) == sp.Poly(term, ad, bd).total_degree(), term
