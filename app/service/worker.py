@@ -79,6 +79,7 @@ PRELOAD = (
     "scipy.integrate",
     "scipy.linalg",
     "scipy.optimize",
+    "app.service.worker_warmup",  # last: a small derivation, so that no worker's first job pays for first calls
 )
 ENTRY = "app.service.worker_entry"
 # a job's failure that is about the input, already worded for the user; anything else is the server's

@@ -69,6 +69,14 @@ def collector():
     return gc.isenabled(), gc.get_freeze_count()
 
 
+def warmed():
+    """The size of the warm-up document this worker inherited from its forkserver (0: it failed)."""
+    import sys
+
+    warmup = sys.modules.get("app.service.worker_warmup")
+    return warmup.DOCUMENT_BYTES if warmup is not None else None
+
+
 def signal_then_sleep(path, seconds):
     """Write this worker's pid where the test waits for it, then sleep."""
     Path(path).write_text(str(os.getpid()))
@@ -159,6 +167,11 @@ def test_a_worker_leaves_what_the_forkserver_imported_out_of_the_collectors_walk
     enabled, frozen = pool.submit(collector, timeout=30).result(timeout=60)
     # the preloaded SymPy, SciPy, numba and engine (about 180,000 objects); cycles made by jobs are still collected
     assert enabled and frozen > 50_000, frozen
+
+
+def test_every_worker_starts_from_a_forkserver_that_derived_a_small_system(pool):
+    # the swing of app/service/worker_warmup.py, derived before any worker was forked: a full document
+    assert pool.submit(warmed, timeout=30).result(timeout=60) > 10_000
 
 
 def test_a_job_over_its_time_limit_is_killed_and_the_pool_recovers(pool):
