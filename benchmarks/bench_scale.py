@@ -16,6 +16,11 @@
 
 from __future__ import annotations
 
+import os
+
+# no background warm-up of the chapter's pages beside the measurement (its threads share the two cores)
+os.environ.setdefault("LAGRANGE_WARM", "0")
+
 import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
