@@ -39,6 +39,25 @@ def _value(f, point: list[complex]) -> complex | None:
     return v if math.isfinite(v.real) and math.isfinite(v.imag) else None
 
 
+# functions that take real numbers to real numbers (where they are finite)
+_REAL_FUNCTIONS = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc, sp.exp, sp.sinh, sp.cosh, sp.tanh, sp.Abs, sp.sign)
+
+
+def _real_wherever_finite(expr: sp.Basic) -> bool:
+    """Built of symbols, real numbers, sums, products, whole powers and the functions above only: real at
+    every real point where it is finite, so the sampling (a lambdified function, a few ms for each of T, U
+    and L) can only find it real.  Anything else (a root, a logarithm, asin, i, ∞) is sampled."""
+    for node in sp.preorder_traversal(expr):
+        if node.is_Symbol or (node.is_Number and node.is_extended_real and node.is_finite) or node in (sp.pi, sp.E):
+            continue
+        if node.is_Add or node.is_Mul or isinstance(node, _REAL_FUNCTIONS):
+            continue
+        if node.is_Pow and node.exp.is_Integer:
+            continue
+        return False
+    return True
+
+
 def nowhere_real(
     expr: sp.Expr, free: Iterable[sp.Symbol], fixed: Mapping[sp.Symbol, float] | None = None, seed: int = 3
 ) -> dict[str, float] | None:
@@ -48,6 +67,8 @@ def nowhere_real(
     (1 for any symbol neither lists).
     """
     expr = sp.sympify(expr)
+    if _real_wherever_finite(expr):
+        return None
     fixed = dict(fixed or {})
     free = [s for s in free if s not in fixed]
     rest = sorted(expr.free_symbols - set(free) - set(fixed), key=lambda s: s.name)

@@ -70,3 +70,18 @@ def test_l_equal_to_u_minus_t_derives_and_its_modes_say_so():
     assert e["kind"] == "stable" and e["modes"][0]["omega_squared"] == pytest.approx(8.0 / 2.0)
     step = next(s for s in doc["steps"] if s["title"].startswith("Normal modes about"))
     assert "negative definite" in step["explanation"]
+
+
+def test_an_expression_of_real_functions_is_not_sampled_and_sampling_would_find_it_real(monkeypatch):
+    from app.engine import reality
+
+    x, k, t = sp.symbols("x k t")
+    real = [x**2 / 2 - k * sp.cos(x), sp.exp(-t) * sp.tan(x) ** 3 / (1 + x**2), sp.Abs(x) - sp.sinh(k * x) + sp.pi]
+    assert all(reality._real_wherever_finite(e) for e in real)
+    # sampled anyway (the shortcut off), each is real at a sampled point: the same answer
+    monkeypatch.setattr(reality, "_real_wherever_finite", lambda e: False)
+    assert [nowhere_real(e, [x, t]) for e in real] == [None, None, None]
+    monkeypatch.undo()
+    # roots, logarithms, inverse sines, i and infinities go to the sampling
+    for text in [*NEVER_REAL, *SOMEWHERE[:3], "I*x", "x + zoo", "x**k"]:
+        assert not reality._real_wherever_finite(sp.sympify(text)), text
