@@ -12,6 +12,7 @@ from typing import Any
 
 import sympy as sp
 
+from app.engine.budget import memoized
 from app.engine.derive import Derivation
 from app.engine.hamilton import Hamilton
 from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, NormalModes
@@ -19,8 +20,9 @@ from app.engine.report import Printer, _step, display, plain_name
 
 
 def _show(expr: sp.Expr) -> sp.Expr:
-    """Hamilton's expressions are compact as built: only common factors are pulled out."""
-    return sp.factor_terms(expr)
+    """Hamilton's expressions are compact as built: only common factors are pulled out (once per document:
+    the steps and the JSON block show the same ones)."""
+    return memoized("hamilton-shown", expr, lambda: sp.factor_terms(expr))
 
 
 def hamilton_printer(d: Derivation, ham: Hamilton) -> Printer:

@@ -121,3 +121,27 @@ def test_a_terms_degree_in_the_velocities_is_its_polynomials() -> None:
     for _ in range(300):
         term = sp.Mul(*(f ** rng.randint(1, 3) for f in rng.sample(factors, rng.randint(1, 4))))
         assert forms._degree_in(term, [ad, bd]) == sp.Poly(term, ad, bd).total_degree(), term
+
+
+def test_lowest_terms_is_cancels_up_to_a_constant() -> None:
+    rng = random.Random(11)
+    a, b, m1, m2, l1 = sp.symbols("a b m1 m2 l1")
+    pieces = [a, b, m1, m2, l1, sp.sin(a - b), sp.cos(a - b), sp.sin(a), m1 + m2 * sp.sin(a - b) ** 2, m1 - 2 * m2]
+
+    def poly(terms: int) -> sp.Expr:
+        return sp.Add(*(rng.randint(-3, 3) * sp.Mul(*rng.sample(pieces, rng.randint(1, 3))) for _ in range(terms)))
+
+    checked = 0
+    for _ in range(150):
+        common = sp.Mul(*rng.sample(pieces, rng.randint(0, 2)))  # a factor above and below, sometimes squared
+        # multiplied out, so that SymPy's own products do not cancel the common factor on sight
+        expr = sp.expand(poly(4) * common) / sp.expand(rng.choice([1, 2, -3]) * poly(2) * common ** rng.randint(1, 2))
+        if expr.is_zero or not sp.denom(sp.together(expr)).free_symbols:
+            continue
+        num, den = forms.lowest_terms(expr)
+        ref_num, ref_den = sp.fraction(sp.cancel(sp.together(expr)))
+        # the same numerator and the same denominator, each up to the same constant
+        ratio = sp.cancel(num / ref_num)
+        assert ratio.is_Number and sp.cancel(den / ref_den) == ratio, expr
+        checked += 1
+    assert checked > 100
