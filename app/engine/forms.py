@@ -308,7 +308,9 @@ def _squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
         found = False
         pieces = []
         for part in by_degree.values():
-            if not isinstance(part, sp.Add):  # one term of an expanded sum: no squared sum to find in it
+            # a squared sum needs three terms at least: one term has none, and two, m₁ + m₂ = m₁(1 + m₂/m₁),
+            # are square-free up to a monomial (1 + cxⁿ has no repeated root, its derivative none but 0)
+            if len(sp.Add.make_args(part)) < 3:
                 pieces.append(part)
                 continue
             factored = memoized("factor", part, partial(_squared_factors, part))

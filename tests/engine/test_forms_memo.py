@@ -145,3 +145,19 @@ def test_lowest_terms_is_cancels_up_to_a_constant() -> None:
         assert ratio.is_Number and sp.cancel(den / ref_den) == ratio, expr
         checked += 1
     assert checked > 100
+
+
+def test_a_sum_of_two_terms_has_no_squared_sum_in_it() -> None:
+    # why squares() leaves parts of fewer than three terms alone: m₁ + m₂ = m₁(1 + m₂/m₁) is square-free
+    # up to a monomial; checked against SymPy's square-free decomposition on random ones
+    rng = random.Random(5)
+    x, y, k = sp.symbols("x y k")
+    gens = [x, y, k, sp.sin(x), sp.cos(y)]
+
+    def monomial() -> sp.Expr:
+        return sp.Mul(*(g ** rng.randint(0, 4) for g in gens))
+
+    for _ in range(300):
+        part = rng.choice([1, -2, 3]) * monomial() + rng.choice([1, -1, 4, sp.Rational(1, 2)]) * monomial()
+        _, factors = sp.sqf_list(part)
+        assert not any(k >= 2 and isinstance(f, sp.Add) for f, k in factors), part
