@@ -12,7 +12,7 @@ from collections.abc import Mapping
 
 import sympy as sp
 
-from app.engine.budget import within_budget
+from app.engine.budget import memoized, within_budget
 from app.engine.derive import Derivation, positive_names
 from app.engine.forms import settle
 from app.limits import EIGEN_SECONDS
@@ -84,7 +84,10 @@ def _roots(M: sp.Matrix, K: sp.Matrix) -> list[sp.Expr]:
         a = M.det()
         b = -(K[0, 0] * M[1, 1] + K[1, 1] * M[0, 0] - K[0, 1] * M[1, 0] - K[1, 0] * M[0, 1])
         c = K.det()
-        root = sp.sqrt(sp.factor(sp.expand(b**2 - 4 * a * c)))
+        # the same discriminant at pairs of equilibria (K → −K: a double pendulum's (0, 0) and (π, π)), factored
+        # once: b² written with b's sign chosen, as SymPy leaves (−x − y)² and (x + y)² apart
+        discriminant = (-b if b.could_extract_minus_sign() else b) ** 2 - 4 * a * c
+        root = sp.sqrt(memoized("discriminant", discriminant, lambda: sp.factor(sp.expand(discriminant))))
         # a rational result (the square root came out) is put over one factored denominator
         return [_neat((-b - root) / (2 * a)), _neat((-b + root) / (2 * a))]
     lam = sp.Dummy("lambda")

@@ -68,3 +68,21 @@ def test_an_irreducible_numeric_cubic_keeps_its_closed_forms() -> None:
     values = sorted(complex(sp.N(r)).real for r in roots)
     expected = sorted(complex(sp.N(v)).real for v in K.eigenvals(multiple=True))
     assert all(abs(a - b) < 1e-9 for a, b in zip(values, expected, strict=True))
+
+
+def test_equilibria_with_opposite_stiffness_factor_one_discriminant(monkeypatch) -> None:
+    from app.engine.budget import display_budget
+
+    # the double pendulum at (0, 0) and at (π, π): the same M, K → −K
+    g, l1, l2, m1, m2 = sp.symbols("g l1 l2 m1 m2", positive=True)
+    M = sp.Matrix([[l1**2 * (m1 + m2), l1 * l2 * m2], [l1 * l2 * m2, l2**2 * m2]])
+    K = sp.Matrix([[g * l1 * (m1 + m2), 0], [0, g * l2 * m2]])
+    factored = []
+    factor = sp.factor
+    monkeypatch.setattr(modes_exact.sp, "factor", lambda e, *a, **k: factored.append(e) or factor(e, *a, **k))
+    with display_budget(10):
+        down, up = modes_exact._roots(M, K), modes_exact._roots(M, -K)
+    discriminants = [e for e in factored if e.has(g**2)]
+    assert len(discriminants) == 1
+    # ω² at (π, π) is −ω² at (0, 0)
+    assert {sp.simplify(x) for x in up} == {sp.simplify(-x) for x in down}
