@@ -572,8 +572,9 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, secon
             if isinstance(form, Linearised):
                 # within a tenth of the operations of the best so far (the angle charge aside), it is the form
                 if _den_moves(expr, moving) and _ops(form.form)[0] <= LINEARISED_SLACK * _ops(best[0])[0]:
+                    # nothing scores below it: the candidates still to come are not worked out
                     best[:] = [form.form, float("-inf")]
-                    continue
+                    break
                 form = form.form
             score = _score(form, angles)
             if score < best[1]:
