@@ -110,9 +110,11 @@ def reduce_to_one(
     # a conserved momentum is taken nonzero when solving (p = 0 reduces to the system without rotation)
     assume.update({Pc: sp.Symbol(Pc.name, real=True, nonzero=True) for Pc in P})
     back = {v: k for k, v in assume.items()}
-    # U_eff'(r0) = 0, solved under the declared positivity (a radius has no negative root)
+    # U_eff'(r0) = 0, solved under the declared positivity (a radius has no negative root); the roots are
+    # printed in their textbook forms, so SymPy's own simplification of each is not asked for (a third of the
+    # single pendulum's reduction; every scene's and example's document is the same without it)
     r_assumed = assume.get(r, r)
-    roots = within_budget(lambda: sp.solve(dU.xreplace(assume), r_assumed), None, SOLVE_SECONDS)
+    roots = within_budget(lambda: sp.solve(dU.xreplace(assume), r_assumed, simplify=False), None, SOLVE_SECONDS)
     equilibria: list[Equilibrium] = []
     solved = roots is not None
     for root in roots or []:
