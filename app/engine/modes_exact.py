@@ -12,7 +12,7 @@ from collections.abc import Mapping
 
 import sympy as sp
 
-from app.engine.budget import memoized, within_budget
+from app.engine.budget import document_memo, memoized, within_budget
 from app.engine.derive import Derivation, positive_names
 from app.engine.forms import settle
 from app.limits import EIGEN_SECONDS
@@ -65,8 +65,18 @@ def solve(g_exprs: list[sp.Expr], q: list[sp.Symbol], d: Derivation) -> list[dic
 
 
 def cheap(expr: sp.Expr) -> sp.Expr:
-    """A quick normal form for entries of M and K at an equilibrium (no full simplification)."""
-    return within_budget(lambda: sp.factor_terms(sp.cancel(expr)), expr, 0.2)
+    """A quick normal form for entries of M and K at an equilibrium (no full simplification); once per
+    document for each entry (M is the same at a double pendulum's (0, 0) and (π, π), and m₂l₁l₂ recurs)."""
+    memo = document_memo()
+    key = ("cheap", expr)
+    if memo is not None and key in memo:
+        return memo[key]
+    found = within_budget(lambda: sp.factor_terms(sp.cancel(expr)), None, 0.2)
+    if found is None:
+        return expr  # out of time: not remembered (the next try may have more)
+    if memo is not None:
+        memo[key] = found
+    return found
 
 
 def _neat(expr: sp.Expr) -> sp.Expr:

@@ -86,3 +86,17 @@ def test_equilibria_with_opposite_stiffness_factor_one_discriminant(monkeypatch)
     assert len(discriminants) == 1
     # ω² at (π, π) is −ω² at (0, 0)
     assert {sp.simplify(x) for x in up} == {sp.simplify(-x) for x in down}
+
+
+def test_an_entry_is_put_in_its_normal_form_once_per_document(monkeypatch) -> None:
+    from app.engine.budget import display_budget
+
+    x, y = sp.symbols("x y")
+    cancelled = []
+    cancel = sp.cancel
+    monkeypatch.setattr(modes_exact.sp, "cancel", lambda e, *a, **k: cancelled.append(e) or cancel(e, *a, **k))
+    entry = (x**2 - y**2) / (x + y)
+    with display_budget(10):
+        assert modes_exact.cheap(entry) == x - y and modes_exact.cheap(entry) == x - y
+    assert len(cancelled) == 1
+    assert modes_exact.cheap(entry) == x - y and len(cancelled) == 2  # outside a document: every time
