@@ -163,9 +163,10 @@ def lowest_terms(expr: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
     denominator (the accelerations' l₁(m₁ + m₂ sin²(θ₁ − θ₂))) factoring it and dividing the numerator by
     each factor is about half the time of the gcd that ``cancel`` takes of the whole numerator with it.
     Sines and cosines are independent generators in both, as in ``cancel``."""
-    num, den = sp.fraction(sp.together(expr))
+    together = sp.together(expr)
+    num, den = sp.fraction(together)
     if not den.free_symbols or _nodes(den, SMALL_DENOMINATOR) >= SMALL_DENOMINATOR:
-        return sp.fraction(sp.cancel(sp.together(expr)))
+        return sp.fraction(sp.cancel(together))
     try:
         constant, factors = sp.factor_list(den)
         kept = []
@@ -178,7 +179,7 @@ def lowest_terms(expr: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
                 num, left = quotient, left - 1
             kept.append(factor**left)
     except (BasePolynomialError, NotImplementedError):
-        return sp.fraction(sp.cancel(sp.together(expr)))
+        return sp.fraction(sp.cancel(together))
     return num, constant * sp.Mul(*kept)
 
 
@@ -303,7 +304,7 @@ def _squares(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
             continue  # a speed under a root (sqrt(ρ̇² + ω²ρ²)): no degrees to split by
         by_degree: dict[int, sp.Expr] = {}
         for term in terms:
-            degree = sum(int(e) for b, e in term.as_powers_dict().items() if b in velocities)
+            degree = _degree_in(term, velocities)
             by_degree[degree] = by_degree.get(degree, sp.Integer(0)) + term
         found = False
         pieces = []
