@@ -1,10 +1,11 @@
-"""Time budgets for SymPy work whose cost cannot be known in advance.
+"""Bounds by work for SymPy work whose cost cannot be known in advance (issue 43).
 
-Simplification and equation solving are optional refinements: when they run out
-of time the engine keeps the unrefined (still correct) expression.  The budget
-uses an interval timer, which only works in a process's main thread; that is
-where derivations run (the start-up cache builder and the worker processes that
-serve user systems).  Elsewhere the budget degrades to a size gate alone.
+Simplification and equation solving are optional refinements: when they use up their bound the engine
+keeps the unrefined (still correct) expression, and a member of the document that does is left out with a
+note.  Every such bound counts work (app/engine/work.py: SymPy expressions built), never the clock, so what a
+document holds is a function of its input alone: the same on an idle machine and on a loaded one, in the
+worker's main thread and in any other.  The one clock is at the edge (``clock_limit``, the worker job's limit
+on a user's system): when it fires the request is refused, never answered with a poorer document.
 """
 
 from __future__ import annotations
@@ -21,7 +22,9 @@ from typing import Any, TypeVar
 
 import sympy as sp
 
-from app.limits import MEMBER_RESERVE_SECONDS, SIMPLIFY_SECONDS
+from app.engine import work as counted
+from app.engine.work import WorkExceeded
+from app.limits import MEMBER_RESERVE_WORK, SIMPLIFY_WORK
 
 T = TypeVar("T")
 
@@ -31,34 +34,32 @@ SIMPLIFY_MAX_OPS = 300
 PYTHAGORAS_MAX_NODES = 600
 # below this many nodes it always runs (milliseconds), even once a shared display budget is spent
 PYTHAGORAS_SMALL_NODES = 150
+# what is left of a bound below which no refinement starts (units of work: about 0.01 s on this machine)
+SPENT = 200
 
 
-class BudgetExceeded(Exception):
-    """Raised inside a budgeted block when its time is up."""
+class OutOfTime(Exception):
+    """Raised inside a ``clock_limit`` block when its wall-clock time is up: the request is refused.
+
+    Not a ``WorkExceeded``: no bound inside the engine catches it, so a fired clock never turns into a
+    member left out or a plainer form (a poorer document that a busy machine would cause)."""
 
 
 @contextmanager
-def time_limit(seconds: float) -> Iterator[None]:
-    """Raise BudgetExceeded in the block after ``seconds`` (main thread only).
+def clock_limit(seconds: float) -> Iterator[None]:
+    """Raise OutOfTime in the block after ``seconds`` of wall-clock time (main thread only; elsewhere no limit).
 
-    Limits nest: an inner block gets at most the time the outer one has left,
-    and the outer limit is re-armed with what remains when the inner block ends
-    (at once, if it ran out meanwhile), so a whole derivation can have a budget
-    while its optional refinements have smaller ones.
+    The one clock of a user's request, at its edge: what it cuts short is refused, never shown.  Clocks
+    nest: an inner block gets at most the time the outer one has left, and the outer clock is re-armed with
+    what remains when the inner block ends (at once, if it ran out meanwhile).
     """
-    # sp.simplify imports sympy.physics.units on its first call (0.4 s, more on a busy machine). The
-    # outermost limit imports it before arming its timer, so that no budget ever interrupts that import
-    # halfway (leaving every later simplification to retry it and be cut short again); a process that
-    # never simplifies (the web process serving from the caches) never pays for it.
+    # sp.simplify imports sympy.physics.units on its first call (0.4 s, more on a busy machine): imported
+    # before the timer starts, so that the clock never interrupts that import halfway
     import sympy.physics.units  # noqa: F401
 
     if threading.current_thread() is not threading.main_thread():
         yield
         return
-    outer, _ = signal.getitimer(signal.ITIMER_REAL)
-    started = time.monotonic()
-    seconds *= _patience()
-    seconds = min(seconds, outer) if outer > 0 else seconds
 
     def _expire(signum: int, frame: object) -> None:
         # A signal landing in an interpreter callback (a gc callback, a finaliser)
@@ -67,8 +68,11 @@ def time_limit(seconds: float) -> Iterator[None]:
         if not module.startswith(("sympy", "app.", "mpmath")):
             signal.setitimer(signal.ITIMER_REAL, 0.001)
             return
-        raise BudgetExceeded
+        raise OutOfTime
 
+    outer, _ = signal.getitimer(signal.ITIMER_REAL)
+    started = time.monotonic()
+    seconds = min(seconds, outer) if outer > 0 else seconds
     previous = signal.signal(signal.SIGALRM, _expire)
     signal.setitimer(signal.ITIMER_REAL, seconds)
     try:
@@ -80,12 +84,23 @@ def time_limit(seconds: float) -> Iterator[None]:
             signal.setitimer(signal.ITIMER_REAL, max(outer - (time.monotonic() - started), 0.001))
 
 
-def within_budget(work: Callable[[], T], fallback: T, seconds: float) -> T:
-    """Run ``work``; on timeout (or a SymPy failure) return ``fallback``."""
+@contextmanager
+def work_limit(units: float) -> Iterator[None]:
+    """Raise WorkExceeded in the block after ``units`` units of work (times the patience in force).
+
+    Limits nest: an inner block gets at most the work the outer one has left, so a whole step can have a
+    bound while its optional refinements have smaller ones.
+    """
+    with counted.limit(units * _patience()):
+        yield
+
+
+def within_budget(work: Callable[[], T], fallback: T, units: float) -> T:
+    """Run ``work`` within ``units`` of work; past it (or on a SymPy failure) return ``fallback``."""
     try:
-        with time_limit(seconds):
+        with work_limit(units):
             return work()
-    except (BudgetExceeded, NotImplementedError, RecursionError, TypeError, ValueError):
+    except (WorkExceeded, NotImplementedError, RecursionError, TypeError, ValueError):
         return fallback
 
 
@@ -97,26 +112,26 @@ class Skipped:
     reason: str
 
 
-def bounded(member: str, what: str, seconds: float, work: Callable[[], T], fallback: T, skipped: list[Skipped]) -> T:
-    """``work()`` within its own time bound; past it, ``fallback`` and a note in ``skipped``.
+def bounded(member: str, what: str, units: float, work: Callable[[], T], fallback: T, skipped: list[Skipped]) -> T:
+    """``work()`` within its own bound of work; past it, ``fallback`` and a note in ``skipped``.
 
-    The bound never reaches into an enclosing limit's last MEMBER_RESERVE_SECONDS, so a slow member
-    leaves time for the rest of the document instead of turning into a refusal of the whole system.
-    ``what`` names the part in the note ("Hamilton's equations").
+    The bound never reaches into an enclosing bound's last MEMBER_RESERVE_WORK, so a costly member leaves
+    work for the rest of the step instead of using it all.  ``what`` names the part in the note
+    ("Hamilton's equations").
     """
-    outer, _ = signal.getitimer(signal.ITIMER_REAL)
-    seconds *= _patience()
-    if outer > 0 and threading.current_thread() is threading.main_thread():
-        seconds = min(seconds, outer - MEMBER_RESERVE_SECONDS)
-    if seconds <= 0.01:
-        skipped.append(Skipped(member, f"{what} left out: the time for this document was used up by the parts above."))
+    units *= _patience()
+    outer = counted.left()
+    if outer is not None:
+        units = min(units, outer - MEMBER_RESERVE_WORK)
+    if units <= 0:
+        skipped.append(Skipped(member, f"{what} left out: the work allowed for this document was used up by the parts above."))
         return fallback
     try:
-        with time_limit(seconds / _patience()):  # time_limit scales it again
+        with counted.limit(units):
             return work()
-    except BudgetExceeded:
+    except WorkExceeded:
         skipped.append(
-            Skipped(member, f"{what} left out: working it out took longer than its {seconds:.3g} s bound. "
+            Skipped(member, f"{what} left out: working it out needs more than the engine allows for it. "
                     "The rest of the derivation is complete; this is a limit of the engine, not of the system.")
         )  # fmt: skip
         return fallback
@@ -129,11 +144,11 @@ _PYTHAGORAS_CACHE: dict[sp.Expr, sp.Expr] = {}
 
 
 @contextmanager
-def display_budget(seconds: float) -> Iterator[None]:
-    """Share one time budget among all display simplifications in the block, and one memo (``memoized``):
+def display_budget(units: float) -> Iterator[None]:
+    """Share one bound of work among all display simplifications in the block, and one memo (``memoized``):
     the outermost block is one document, and what it remembers ends with it."""
     previous, memo = getattr(_local, "deadline", None), getattr(_local, "memo", None)
-    _local.deadline = time.monotonic() + seconds * _patience()
+    _local.deadline = counted.done() + units * _patience()
     if memo is None:
         _local.memo = {}
     try:
@@ -151,7 +166,7 @@ def document_memo() -> dict[Any, Any] | None:
 def memoized(kind: str, key: Hashable, compute: Callable[[], T]) -> T:
     """``compute()``, remembered under (kind, key) for the rest of the current document (the outermost
     ``display_budget`` block); outside any document, computed every time.  Only for pure work: a result that
-    depends on the clock must not be remembered here."""
+    depends on a bound must not be remembered here."""
     memo: dict[tuple[str, Hashable], Any] | None = getattr(_local, "memo", None)
     if memo is None:
         return compute()
@@ -165,23 +180,25 @@ def memoized(kind: str, key: Hashable, compute: Callable[[], T]) -> T:
 @contextmanager
 def unbudgeted() -> Iterator[None]:
     """Work in the block (display printing) does not count against the shared display budget."""
-    started = time.monotonic()
+    started = counted.done()
     try:
         yield
     finally:
         if getattr(_local, "deadline", None) is not None:
-            _local.deadline += time.monotonic() - started
+            _local.deadline += counted.done() - started
 
 
-def display_seconds_left(seconds: float) -> float:
-    """What is left of the shared display budget (at most ``seconds``)."""
-    return _remaining(seconds)
+def display_work_left(units: float) -> float:
+    """What is left of the shared display budget (at most ``units``, times the patience in force)."""
+    return _remaining(units)
 
 
-def _remaining(seconds: float) -> float:
+def _remaining(units: float) -> float:
+    """At most ``units`` (times the patience), no more than the shared display budget has left (the units of
+    work before its end; the name ``deadline`` is the end of the document's share, counted in work)."""
     deadline = getattr(_local, "deadline", None)
-    seconds *= _patience()
-    return seconds if deadline is None else min(seconds, deadline - time.monotonic())
+    units *= _patience()
+    return units if deadline is None else min(units, deadline - counted.done())
 
 
 def _patience() -> float:
@@ -190,11 +207,10 @@ def _patience() -> float:
 
 @contextmanager
 def patience(factor: float) -> Iterator[None]:
-    """Every time bound in the block (limits, members, the display budget) is ``factor`` times as long.
+    """Every bound of work in the block (limits, members, the display budget) is ``factor`` times as large.
 
     For the chapter's scenes: their documents are derived once per version of the program and kept on disk,
-    so what the book prints must not depend on how loaded the machine was that built them; a user's
-    system keeps the bounds as they are."""
+    and the book prints each of them whole; a user's system keeps the bounds as they are."""
     previous = _patience()
     _local.patience = previous * factor
     try:
@@ -203,30 +219,30 @@ def patience(factor: float) -> Iterator[None]:
         _local.patience = previous
 
 
-def tidy(expr: sp.Expr, seconds: float = SIMPLIFY_SECONDS) -> sp.Expr:
+def tidy(expr: sp.Expr, units: float = SIMPLIFY_WORK) -> sp.Expr:
     """A display form: cheap normalisation always, full simplify when small and quick.
 
-    Results reached within budget are remembered (derivations repeat many
+    Results reached within their bound of work are remembered (derivations repeat many
     expressions); once a shared display budget is spent, expressions are shown
     as they are.
     """
     if expr in _TIDY_CACHE:
         return _TIDY_CACHE[expr]
-    left = _remaining(seconds)
-    if left <= 0.01:
+    left = _remaining(units)
+    if left <= SPENT:
         return expr
     cheap = within_budget(lambda: sp.factor_terms(sp.cancel(expr)), None, left)
     if cheap is None:
         return expr
     result = cheap
     if sp.count_ops(cheap) <= SIMPLIFY_MAX_OPS and not _product(cheap):
-        left = _remaining(seconds)
-        full = within_budget(lambda: sp.simplify(cheap), None, left) if left > 0.01 else None
+        left = _remaining(units)
+        full = within_budget(lambda: sp.simplify(cheap), None, left) if left > SPENT else None
         if full is None:
-            # simplify failed or ran out of its own time (not a shared budget's rest): it would again, so the
+            # simplify failed or used up its own bound (not a shared budget's rest): it would again, so the
             # cheap form is remembered (a derivation shows its accelerations twice, and the double
             # pendulum's document spent 0.5 s on each attempt)
-            if left >= seconds and len(_TIDY_CACHE) < _TIDY_CACHE_SIZE:
+            if left >= units and len(_TIDY_CACHE) < _TIDY_CACHE_SIZE:
                 _TIDY_CACHE[expr] = cheap
             return cheap
         # Keep the angles the reader wrote: reject forms that trade sin θ cos θ for sin 2θ.
@@ -298,12 +314,12 @@ def pythagoras(expr: sp.Expr) -> sp.Expr:
     For each angle both rewritings (sin² → 1 − cos², cos² → 1 − sin²) are tried
     and the shorter result kept, so a kinetic energy keeps its natural form.
     An expression larger than PYTHAGORAS_MAX_NODES is returned as it is (expanding it is the
-    cost, and it can exceed any time bound: SymPy's expand never looks at the clock).
+    cost, and it can exceed any bound: SymPy's expand of a large sum builds few expressions per term).
     """
     if expr in _PYTHAGORAS_CACHE:
         return _PYTHAGORAS_CACHE[expr]
     if larger_than(expr, PYTHAGORAS_MAX_NODES) or (
-        larger_than(expr, PYTHAGORAS_SMALL_NODES) and _remaining(1.0) <= 0.01
+        larger_than(expr, PYTHAGORAS_SMALL_NODES) and _remaining(SPENT + 1) <= SPENT
     ):
         return expr  # too large to expand, or not small once the shared display budget is spent: as it is
     result, complete = _pythagoras(expr)
@@ -327,7 +343,7 @@ def _pythagoras(expr: sp.Expr) -> tuple[sp.Expr, bool]:
         # only even powers of sin a or cos a change under the rewriting: none, nothing to try
         if not touched or not any(_even_power(term, a) for term in touched):
             continue
-        if _remaining(1.0) <= 0.01 and larger_than(best, PYTHAGORAS_SMALL_NODES):
+        if _remaining(SPENT + 1) <= SPENT and larger_than(best, PYTHAGORAS_SMALL_NODES):
             return best, False  # the shared display budget ran out: what is collapsed so far
         part, others = sp.Add(*touched), sp.Add(*rest)
         options = [

@@ -37,7 +37,8 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine.budget import BudgetExceeded, display_budget, tidy, time_limit
+from app.engine.budget import display_budget, tidy, work_limit
+from app.engine.work import WorkExceeded
 from app.engine.check_answers import (
     PER_COORDINATE,
     STEPS,
@@ -76,8 +77,8 @@ from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, POINT
 from app.engine.parse import Parsed
 from app.engine.report import Printer, display
 from app.engine.textbook import unicode_text
-from app.limits import CHECK_DISPLAY_SECONDS as DISPLAY_SECONDS
-from app.limits import DIFFERENCE_SECONDS, FACTOR_SECONDS, PARTS_SECONDS
+from app.limits import CHECK_DISPLAY_WORK as DISPLAY_WORK
+from app.limits import DIFFERENCE_WORK, FACTOR_WORK, PARTS_WORK
 
 __all__ = [
     "MIN_POINTS",
@@ -106,11 +107,11 @@ MIN_POINTS = 6  # sample points where both sides are defined, for a numeric verd
 PARTED = frozenset({"kinetic", "lagrangian", "momentum", "equation", "hamiltonian"})
 
 
-def _budgeted(work, fallback, seconds: float):
+def _budgeted(work, fallback, units: float):
     try:
-        with time_limit(seconds):
+        with work_limit(units):
             return work()
-    except (BudgetExceeded, RecursionError, TypeError, ValueError, NotImplementedError, ZeroDivisionError):
+    except (WorkExceeded, RecursionError, TypeError, ValueError, NotImplementedError, ZeroDivisionError):
         return fallback
 
 
@@ -173,11 +174,11 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
             return _verdict("equivalent", _factor_message(pb, answer, truth, factor_is_constant(a, b)))
 
     truth, b = results[0]
-    with display_budget(DISPLAY_SECONDS):
+    with display_budget(DISPLAY_WORK):
         difference, how = _difference(pb, answer, truth)
         # the mistake only: what cancels identically gone, trigonometry recombined; where that did not apply
         # (a long difference, an acceleration's), the display's own simplification
-        only = mistake_only(difference, DIFFERENCE_SECONDS)
+        only = mistake_only(difference, DIFFERENCE_WORK)
         shown = printer.pair(display(difference) if only is difference else only)
     message = f"Incorrect: this is not {_noun(pb)}{how}. The difference (yours − the engine's) is shown."
     found = match(pb.mistakes, a, b, pb.relation)
@@ -196,7 +197,7 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         )
     # no known mistake: say which parts agree (against the truth at the answer's scale)
     partial = (
-        _budgeted(lambda: agreement(answer, answer - difference, pb.groups, pb.step), None, PARTS_SECONDS)
+        _budgeted(lambda: agreement(answer, answer - difference, pb.groups, pb.step), None, PARTS_WORK)
         if pb.step in PARTED
         else None
     )
@@ -259,7 +260,7 @@ def _constant_message(pb: Problem, difference: sp.Expr) -> str:
 
 
 def _factor_message(pb: Problem, answer: sp.Expr, truth: sp.Expr, constant: bool) -> str:
-    factor = _budgeted(lambda: tidy(sp.cancel(answer / truth), FACTOR_SECONDS), None, FACTOR_SECONDS * 2)
+    factor = _budgeted(lambda: tidy(sp.cancel(answer / truth), FACTOR_WORK), None, FACTOR_WORK * 2)
     rates = set(pb.groups.rates)
     named = f"{unicode_text(factor)}" if factor is not None and not (factor.free_symbols & rates) else "a factor"
     if constant:
@@ -283,7 +284,7 @@ def _difference(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[sp.Expr, 
     if pb.relation == "factor" and pb.acceleration is not None:
         mine, theirs = sp.diff(answer, pb.acceleration), sp.diff(truth, pb.acceleration)
         if mine != 0 and theirs != 0:
-            scale = _budgeted(lambda: sp.cancel(mine / theirs), None, FACTOR_SECONDS)
+            scale = _budgeted(lambda: sp.cancel(mine / theirs), None, FACTOR_WORK)
             if scale is not None and scale != 1 and not (scale.free_symbols & set(pb.groups.rates)):
                 how = f", even after scaling it by {unicode_text(scale)} to match your coefficient of the acceleration"
                 return answer - scale * truth, how
@@ -294,7 +295,7 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str:
     """The hint when no known mistake matches: a missing factor of a momentum, else the step's rule."""
     if pb.step == "momentum" and differ_by_factor(b, a):
         # the engine's momentum is the answer times a factor free of the velocities: a factor is missing
-        factor = _budgeted(lambda: tidy(sp.cancel(truth / answer), FACTOR_SECONDS), None, FACTOR_SECONDS * 2)
+        factor = _budgeted(lambda: tidy(sp.cancel(truth / answer), FACTOR_WORK), None, FACTOR_WORK * 2)
         if factor is not None:
             template = CONSTANT_FACTOR_HINT if factor_is_constant(b, a) else MISSING_FACTOR_HINT
             return template.format(factor=unicode_text(factor))

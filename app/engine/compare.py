@@ -26,9 +26,10 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
-from app.engine.budget import BudgetExceeded, pythagoras, time_limit, within_budget
+from app.engine.budget import pythagoras, within_budget, work_limit
+from app.engine.work import WorkExceeded
 from app.engine.kinks import away_from_kinks
-from app.limits import SYMBOLIC_SECONDS
+from app.limits import SYMBOLIC_WORK
 
 CONSTANT_DRAWS, POSITION_DRAWS, RATE_DRAWS = 2, 2, 3
 RTOL = 1e-9
@@ -156,15 +157,15 @@ def factor_is_constant(a: Values, b: Values) -> bool:
     return _same_within(per_constants)
 
 
-def symbolically_zero(expr: sp.Expr, seconds: float = SYMBOLIC_SECONDS) -> bool | None:
-    """True when expr simplifies to 0 within the budget; None when undecided (never a proof of nonzero)."""
+def symbolically_zero(expr: sp.Expr, units: float = SYMBOLIC_WORK) -> bool | None:
+    """True when expr simplifies to 0 within its bound of work; None when undecided (never a proof of nonzero)."""
     try:
-        with time_limit(seconds):
+        with work_limit(units):
             expanded = sp.expand(expr)
             if expanded == 0 or pythagoras(expanded) == 0:
                 return True
             return sp.simplify(expanded) == 0 or None
-    except (BudgetExceeded, RecursionError, TypeError, ValueError, NotImplementedError):
+    except (WorkExceeded, RecursionError, TypeError, ValueError, NotImplementedError):
         return None
 
 
@@ -179,7 +180,7 @@ def without_constant(expr: sp.Expr, dynamic: frozenset[sp.Symbol]) -> tuple[sp.E
     return varying, constant
 
 
-def mistake_only(expr: sp.Expr, seconds: float) -> sp.Expr:
+def mistake_only(expr: sp.Expr, units: float) -> sp.Expr:
     """expr with whatever cancels identically gone, and its trigonometry recombined where that is shorter.
 
     Expanding every sine and cosine of a sum into products of single angles makes a
@@ -199,7 +200,7 @@ def mistake_only(expr: sp.Expr, seconds: float) -> sp.Expr:
         return pythagoras(sp.expand(sp.expand_trig(expr)))
 
     # the canonical form is cheap and decides what is shown at all: it gets most of the budget
-    flat = within_budget(canonical, expr, seconds * 0.7)
+    flat = within_budget(canonical, expr, units * 0.7)
 
     if not flat.free_symbols:
         return flat
@@ -208,7 +209,7 @@ def mistake_only(expr: sp.Expr, seconds: float) -> sp.Expr:
         return tried if sp.count_ops(tried) < sp.count_ops(best) else best
 
     # sums of products into sines and cosines of sums (Fu's TR10i: cheap and targeted), then trigsimp
-    best = within_budget(lambda: shorter(flat, sp.factor_terms(TR10i(flat))), flat, seconds * 0.15)
+    best = within_budget(lambda: shorter(flat, sp.factor_terms(TR10i(flat))), flat, units * 0.15)
     if sp.count_ops(best) > TRIGSIMP_MAX_OPS:
-        return best  # trigsimp on a long sum seldom finishes within the budget: the time would be lost
-    return within_budget(lambda: shorter(best, sp.factor_terms(sp.trigsimp(best))), best, seconds * 0.15)
+        return best  # trigsimp on a long sum seldom finishes within the budget: the work would be lost
+    return within_budget(lambda: shorter(best, sp.factor_terms(sp.trigsimp(best))), best, units * 0.15)

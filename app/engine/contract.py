@@ -6,7 +6,7 @@ from typing import Any, TypeVar
 
 import sympy as sp
 
-from app.engine.budget import Skipped, bounded, display_budget, display_seconds_left, pythagoras, within_budget
+from app.engine.budget import Skipped, bounded, display_budget, display_work_left, pythagoras, within_budget
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import LARGE_FROM, Derivation
 from app.engine.errata import errata_json
@@ -24,7 +24,7 @@ from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_s
 from app.engine.rods import fixed_distances
 from app.engine.transform import Transformed
 from app.engine.trees import maybe_of_sympy
-from app.limits import DISPLAY_SECONDS, FIRST_DISPLAY_SECONDS, LARGE_DISPLAY_SECONDS
+from app.limits import DISPLAY_WORK, FIRST_DISPLAY_WORK, LARGE_DISPLAY_WORK
 from app.scenes.reasons import reason
 from app.scenes.types import Parameter, Scene
 
@@ -40,7 +40,7 @@ def parameters_json(parameters: tuple[Parameter, ...]) -> dict[str, dict[str, An
 
 
 # Each member of the document beyond the equations is computed within its own bound (the derivation's
-# MEMBER_SECONDS, app.engine.derive); printing it has a bound of the same length. One that runs out is left
+# MEMBER_WORK, app.engine.derive); printing it has a bound of the same length. One that runs out is left
 # out with a note in "skipped", never a refusal of the system.
 
 
@@ -49,11 +49,11 @@ def derivation_json(d: Derivation, scene: Scene | None = None, beyond: bool = Tr
 
     ``scene``, for a chapter scene, adds the scene block and the chapter's errata.
     ``beyond`` adds Hamilton's equations and the normal modes (steps and JSON).
-    All display simplification shares one time budget (DISPLAY_SECONDS); each member beyond the
-    equations has its own bound (MEMBER_SECONDS), and ``skipped`` lists those left out and why.
+    All display simplification shares one bound of work (DISPLAY_WORK); each member beyond the
+    equations has its own bound (MEMBER_WORK), and ``skipped`` lists those left out and why.
     """
-    seconds = DISPLAY_SECONDS if len(d.table.names) < LARGE_FROM else LARGE_DISPLAY_SECONDS
-    with display_budget(seconds):
+    units = DISPLAY_WORK if len(d.table.names) < LARGE_FROM else LARGE_DISPLAY_WORK
+    with display_budget(units):
         return _derivation_json(d, scene, beyond)
 
 
@@ -90,7 +90,7 @@ def symbol_names(d: Derivation) -> dict[str, dict[str, str]]:
 
 def _shown(expr: sp.Expr) -> sp.Expr:
     """The display form within what is left of the display budget; SymPy's own form when it runs out."""
-    return within_budget(lambda: _show(expr), expr, max(display_seconds_left(DISPLAY_SECONDS), 0.05))
+    return within_budget(lambda: _show(expr), expr, max(display_work_left(DISPLAY_WORK), 1_000))
 
 
 def _member(value: T | Skipped, fallback: T, skipped: list[Skipped]) -> T:
@@ -103,7 +103,7 @@ def _member(value: T | Skipped, fallback: T, skipped: list[Skipped]) -> T:
 
 def _equation_pairs(d: Derivation, pr: Printer) -> list[dict[str, Any]]:
     """The equations in their textbook rows within what is left of the display budget, else each residual = 0."""
-    pairs = within_budget(lambda: equation_pairs(d, pr), None, max(display_seconds_left(DISPLAY_SECONDS), 0.5))
+    pairs = within_budget(lambda: equation_pairs(d, pr), None, max(display_work_left(DISPLAY_WORK), 10_000))
     if pairs is not None:
         return pairs
     return [pr.shown(r, f"{pr.tex(r)} = 0", r) for r in d.equations.residuals]
@@ -165,7 +165,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "steps": bounded(
             "steps",
             "The step-by-step derivation",
-            d.member_seconds("steps"),
+            d.member_work("steps"),
             lambda: _steps(d, forces, pr, transformed),
             no_steps,
             skipped,
@@ -209,7 +209,7 @@ def _transformed(d: Derivation, skipped: list[Skipped]) -> tuple[Transformed, di
     if tr is None:
         return None
     what = "The derivation in the declared new coordinates"
-    printed = bounded("transformed", what, d.member_seconds("transformed"), lambda: transformed_json(tr), None, skipped)
+    printed = bounded("transformed", what, d.member_work("transformed"), lambda: transformed_json(tr), None, skipped)
     return (tr, printed) if printed is not None else None
 
 
@@ -227,12 +227,12 @@ def add_beyond(
     ham = None
     h = _member(d.hamilton, None, skipped)
     if h is not None:
-        ham = bounded("hamilton", "Hamilton's equations", d.member_seconds("hamilton"),
+        ham = bounded("hamilton", "Hamilton's equations", d.member_work("hamilton"),
                       lambda: (h, hamilton_steps(d, h), hamilton_json(d, h)), None, skipped)  # fmt: skip
     modes = None
     nm = _member(d.normal_modes(held_momenta(d, scene)), None, skipped)
     if nm is not None:
-        modes = bounded("normal_modes", "The equilibria and normal modes", d.member_seconds("normal_modes"),
+        modes = bounded("normal_modes", "The equilibria and normal modes", d.member_work("normal_modes"),
                         lambda: (normal_mode_steps(d, nm), normal_modes_json(nm, pr)), None, skipped)  # fmt: skip
     steps = result["steps"]
     keys = [s["key"] for s in steps]
@@ -332,7 +332,7 @@ def first_stage(d: Derivation) -> dict[str, Any]:
     table, eqs = d.table, d.equations
     pr = Printer(table.latex_names())
     skipped: list[Skipped] = []
-    with display_budget(FIRST_DISPLAY_SECONDS):
+    with display_budget(FIRST_DISPLAY_WORK):
         # the equations first: what the student waits for; the rest of this stage shares what is left
         equations = _equation_pairs(d, pr)
         accelerations = _accelerations(d, pr, skipped)

@@ -3,28 +3,27 @@
 ``derive`` builds the core (T, U, L, the Euler-Lagrange equations, the conservation laws and the
 reduction).  The members beyond it (the forces of constraint, the derivation in declared new
 coordinates, Hamilton's equations, the equilibria and normal modes) are computed on first use, each
-within its own time bound (MEMBER_SECONDS), and kept on the derivation: each is either its value or a
+within its own bound of work (MEMBER_WORK), and kept on the derivation: each is either its value or a
 ``Skipped`` saying why it is left out.  The document (``app.engine.contract``) prints them; numerics,
 viz, the service and the exports read them from here.
 """
 
 from __future__ import annotations
 
-import signal
-import threading
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, TypeVar
 
 import sympy as sp
 
-from app.engine.budget import MEMBER_RESERVE_SECONDS, Skipped, bounded
+from app.engine import work as counted
+from app.engine.budget import Skipped, bounded
 from app.engine.conservation import Energetics, energetics
 from app.engine.lagrange import Equations, euler_lagrange
 from app.engine.mechanics import Mechanics, build_mechanics
 from app.engine.reduction import Reduction, reduce_to_one
 from app.engine.symbols import SymbolTable
-from app.limits import MEMBER_SECONDS, REDUCTION_SECONDS
+from app.limits import MEMBER_RESERVE_WORK, MEMBER_WORK, REDUCTION_WORK
 from app.scenes.types import System
 
 if TYPE_CHECKING:
@@ -60,28 +59,24 @@ class Derivation:
     def table(self) -> SymbolTable:
         return self.mechanics.table
 
-    def member_seconds(self, member: str) -> float:
-        """The time bound of a member: its own, a share of it from LARGE_FROM coordinates on."""
+    def member_work(self, member: str) -> float:
+        """The bound of work of a member: its own, a share of it from LARGE_FROM coordinates on."""
         share = 1.0 if len(self.table.names) < LARGE_FROM else LARGE_SHARE
-        return share * MEMBER_SECONDS[member]
+        return share * MEMBER_WORK[member]
 
     def _member(self, key: Any, member: str, what: str, work: Callable[[], T]) -> T | Skipped:
         """``work()`` within the member's bound, remembered; past the bound, a Skipped with its reason.
 
-        A Skipped because an enclosing limit (a worker job's, a document's) had little time left is
-        not remembered: with more time the member may well be computed."""
+        A Skipped because an enclosing bound had little work left is not remembered: within another
+        enclosing bound the member may well be computed."""
         if key in self._members:
             return self._members[key]
-        seconds = self.member_seconds(member)
-        outer, _ = signal.getitimer(signal.ITIMER_REAL)
-        constrained = (
-            outer > 0
-            and threading.current_thread() is threading.main_thread()
-            and outer - MEMBER_RESERVE_SECONDS < seconds
-        )
+        units = self.member_work(member)
+        outer = counted.left()
+        constrained = outer is not None and outer - MEMBER_RESERVE_WORK < units
         notes: list[Skipped] = []
         # the value in a 1-tuple, told apart from the fallback (a member's value may itself be None)
-        value = bounded(member, what, seconds, lambda: (work(),), None, notes)
+        value = bounded(member, what, units, lambda: (work(),), None, notes)
         result: T | Skipped = notes[0] if notes or value is None else value[0]
         if not (notes and constrained):
             self._members[key] = result
@@ -152,7 +147,7 @@ def derive(system: System) -> Derivation:
     # the one-coordinate reduction (effective potential, equilibria) is a refinement with its own bound
     red = bounded(
         "effective_potential", "The reduction to one coordinate (effective potential and its equilibria)",
-        REDUCTION_SECONDS, lambda: reduce_to_one(mech, eqs, en, positive_names(system)), None, skipped,
+        REDUCTION_WORK, lambda: reduce_to_one(mech, eqs, en, positive_names(system)), None, skipped,
     )  # fmt: skip
     return Derivation(system, mech, eqs, en, red, tuple(skipped))
 

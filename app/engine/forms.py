@@ -15,9 +15,9 @@ value of its symbols) in the shortest of a few forms a reader recognises:
 
 Among the candidates the one with the fewest operations wins (one extra operation charged for each
 angle the engine's form did not have, so sin θ cos θ stays unless sin 2θ is really shorter); ties keep
-the earlier, more conservative candidate.  The work is bounded: each expression gets FORM_SECONDS
-(no more than the shared display budget has left; a small one at least LATE_SECONDS) and keeps the best
-form found in that time; with none found, or beyond NODE_BUDGET nodes, the
+the earlier, more conservative candidate.  The work is bounded: each expression gets FORM_WORK
+(no more than the shared display budget has left; a small one at least LATE_WORK) and keeps the best
+form found within it; with none found, or beyond NODE_BUDGET nodes, the
 engine's own cheap display form (sin² + cos² = 1 collapsed, SymPy's ``simplify`` when small) is kept.
 """
 
@@ -34,7 +34,7 @@ from sympy.simplify.fu import TR8, TR10i
 
 from app.engine import budget
 from app.engine.budget import memoized, pythagoras, tidy, within_budget
-from app.limits import FALLBACK_SECONDS, FORM_SECONDS, LATE_SECONDS
+from app.limits import FALLBACK_WORK, FORM_WORK, LATE_WORK
 
 ENGINE_BONUS = 1.5
 # a quotient with sines or cosines below is shown linearised (``Linearised``) when that has at most this many
@@ -539,11 +539,11 @@ def _rewritten(expr: sp.Expr, moving: set[sp.Symbol], trig: bool) -> Iterator[sp
     yield squares(grouped, moving)
 
 
-def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, seconds: float = FORM_SECONDS) -> Any:
+def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, units: float = FORM_WORK) -> Any:
     """``expr`` in its textbook form (an equal expression; see the module's docstring).
 
     ``names``: the symbol table's names (coordinates are recognised by having a velocity there).
-    Bounded by ``seconds`` and by the shared display budget; beyond them the engine's cheap display
+    Bounded by ``units`` of work and by the shared display budget; beyond them the engine's cheap display
     form is returned.
     """
     if not isinstance(expr, sp.Expr) or not expr.free_symbols or isinstance(expr, sp.Symbol):
@@ -554,13 +554,13 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, secon
     if key in _CACHE:
         return _CACHE[key]
     nodes = _nodes(expr, NODE_BUDGET)
-    # once the shared budget is spent, a small expression still gets LATE_SECONDS; a large one only its fallback
-    shared = budget._remaining(seconds)
-    late = shared < min(seconds, LATE_SECONDS)
-    left = max(shared, min(seconds, LATE_SECONDS) if nodes < 4 * SMALL else 0.0)
+    # once the shared budget is spent, a small expression still gets LATE_WORK; a large one only its fallback
+    shared = budget._remaining(units)
+    late = shared < min(units, LATE_WORK)
+    left = max(shared, min(units, LATE_WORK) if nodes < 4 * SMALL else 0.0)
     memo = budget.document_memo()
     # a late search that ran out of time at this size in this document would again at any larger size
-    if nodes > NODE_BUDGET or left <= 0.01 or (late and memo is not None and nodes >= memo.get(_LATE_LIMIT, nodes + 1)):
+    if nodes > NODE_BUDGET or left <= budget.SPENT or (late and memo is not None and nodes >= memo.get(_LATE_LIMIT, nodes + 1)):
         return _fallback(expr)
     angles = _angles(expr)
 
@@ -587,7 +587,7 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, secon
         memo[_LATE_LIMIT] = min(nodes, memo.get(_LATE_LIMIT, nodes))
     if finished is False and best[0] is expr:
         fallback = _fallback(expr)
-        if left < seconds:  # the shared budget ran out, not this expression's own time: try again another time
+        if left < units:  # the shared budget ran out, not this expression's own time: try again another time
             return fallback
         best[0] = fallback
     found = best[0]
@@ -598,4 +598,4 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, secon
 
 def _fallback(expr: sp.Expr) -> sp.Expr:
     """The engine's own display form: sin² + cos² = 1 collapsed, then SymPy's simplification when small."""
-    return within_budget(lambda: tidy(pythagoras(expr), FALLBACK_SECONDS), expr, FALLBACK_SECONDS)
+    return within_budget(lambda: tidy(pythagoras(expr), FALLBACK_WORK), expr, FALLBACK_WORK)

@@ -26,7 +26,7 @@ from app.engine.budget import within_budget
 from app.engine.derive import Derivation
 from app.engine.mistake_families import (
     MAX_PER_STEP,
-    NAME_SECONDS,
+    NAME_WORK,
     FollowUp,
     Mistake,
     kind_of_term,
@@ -62,7 +62,7 @@ def momentum_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
 def _factors_with(expr: sp.Expr, q: sp.Symbol) -> list[sp.Expr]:
     """The factors of expr's terms that hold q (cos(θ₁ − θ₂), sin²θ, r²): its terms with q, recombined."""
     holding = sp.Add(*(t for t in sp.Add.make_args(sp.expand(expr)) if t.has(q)))
-    short = within_budget(lambda: sp.factor(sp.trigsimp(holding)), holding, NAME_SECONDS)
+    short = within_budget(lambda: sp.factor(sp.trigsimp(holding)), holding, NAME_WORK)
     found: dict[str, sp.Expr] = {}
     for term in sp.Add.make_args(short):
         for factor in sp.Mul.make_args(term):

@@ -36,7 +36,7 @@ from sympy.simplify.fu import TR10i
 from app.engine.budget import pythagoras, within_budget
 from app.engine.derive import Derivation
 from app.engine.names import unicode
-from app.limits import NAME_SECONDS
+from app.limits import NAME_WORK
 
 MAX_PER_STEP = 60
 
@@ -113,7 +113,7 @@ def short_form(expr: sp.Expr) -> sp.Expr:
         tried = sp.factor_terms(sp.trigsimp(best))
         return tried if sp.count_ops(tried) < sp.count_ops(best) else best
 
-    found = within_budget(work, expr, NAME_SECONDS)
+    found = within_budget(work, expr, NAME_WORK)
     if found is not expr and len(_SHORT) < 4096:  # (a form cut short by a busy machine is not remembered)
         _SHORT[expr] = found
     return found

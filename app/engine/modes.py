@@ -48,11 +48,12 @@ import numpy as np
 import sympy as sp
 
 from app.engine import modes_exact, roots
-from app.engine.budget import BudgetExceeded, time_limit
+from app.engine.budget import work_limit
+from app.engine.work import WorkExceeded
 from app.engine.derive import Derivation
 from app.engine.kinks import away_from_kinks
 from app.engine.stability import NEUTRAL, STABLE, UNSTABLE, Linear, linearize
-from app.limits import MODES_SECONDS, SEARCH_SECONDS
+from app.limits import MODES_WORK, SEARCH_EVALUATIONS
 
 __all__ = ["NEUTRAL", "STABLE", "UNSTABLE", "Equilibrium", "Mode", "NormalModes", "defaults", "normal_modes"]
 
@@ -156,11 +157,11 @@ def normal_modes(d: Derivation, momenta: Mapping[str, float] | None = None) -> N
     equilibria (1 each when not given).  Never raises: a failure is reported in ``failed``.
     """
     try:
-        with time_limit(MODES_SECONDS):
+        with work_limit(MODES_WORK):
             return _normal_modes(d, momenta or {})
-    except BudgetExceeded:
+    except WorkExceeded:
         return _failed(
-            f"Finding the equilibria took longer than the {MODES_SECONDS:g} s this step is given, so they are left out; "
+            "Finding the equilibria needs more work than the engine allows this step, so they are left out; "
             "the rest of the derivation is complete."
         )
     except (ArithmeticError, ValueError, TypeError, AttributeError, np.linalg.LinAlgError, NotImplementedError) as exc:
@@ -288,7 +289,7 @@ def _equilibria(
     J = [[sp.diff(e, s) for s in q] for e in at_zero]
     g = _function(at_zero, args)
     jac = _function(J, args)
-    found, periodic = roots.search(g, jac, len(q), k, nonnegative, SEARCH_SECONDS)
+    found, periodic = roots.search(g, jac, len(q), k, nonnegative, SEARCH_EVALUATIONS)
     if timed:
         # at rest for all t: the condition holds at every one of several instants
         every = _function(g_exprs, [*args, t])

@@ -15,8 +15,8 @@ import sympy as sp
 from app.engine.budget import document_memo, memoized, within_budget
 from app.engine.derive import Derivation, positive_names
 from app.engine.forms import settle
-from app.limits import EIGEN_SECONDS
-from app.limits import EQUILIBRIA_SOLVE_SECONDS as SOLVE_SECONDS
+from app.limits import CANCEL_WORK, EIGEN_WORK
+from app.limits import EQUILIBRIA_SOLVE_WORK as SOLVE_WORK
 
 MAX_SOLVE_OPS = 400  # larger conditions go straight to the numeric search
 MAX_EXACT_OPS = 80  # closed forms of omega^2 longer than this are given as numbers only
@@ -57,7 +57,7 @@ def solve(g_exprs: list[sp.Expr], q: list[sp.Symbol], d: Derivation) -> list[dic
             [e.xreplace(assume) for e in g_exprs if e != 0], unknowns, dict=True, check=False, simplify=False
         ),
         None,
-        SOLVE_SECONDS,
+        SOLVE_WORK,
     )
     if found is None:
         return None
@@ -71,9 +71,9 @@ def cheap(expr: sp.Expr) -> sp.Expr:
     key = ("cheap", expr)
     if memo is not None and key in memo:
         return memo[key]
-    found = within_budget(lambda: sp.factor_terms(sp.cancel(expr)), None, 0.2)
+    found = within_budget(lambda: sp.factor_terms(sp.cancel(expr)), None, CANCEL_WORK)
     if found is None:
-        return expr  # out of time: not remembered (the next try may have more)
+        return expr  # past its bound: not remembered (the next try may have more)
     if memo is not None:
         memo[key] = found
     return found
@@ -102,7 +102,7 @@ def _roots(M: sp.Matrix, K: sp.Matrix) -> list[sp.Expr]:
         return [_neat((-b - root) / (2 * a)), _neat((-b + root) / (2 * a))]
     lam = sp.Dummy("lambda")
     # with parameters in the coefficients, Cardano's and Ferrari's formulas run far past MAX_EXACT_OPS (and
-    # past EIGEN_SECONDS at every equilibrium of a triple pendulum): only roots from factors of degree ≤ 2, and
+    # past EIGEN_WORK at every equilibrium of a triple pendulum): only roots from factors of degree ≤ 2, and
     # none when there is no such factor, known before the symbolic determinant is expanded (numbers alone keep
     # the general formulas, whose results may be short)
     if (M.free_symbols | K.free_symbols) and _irreducible_at_a_point(M, K, lam):
@@ -142,7 +142,7 @@ def eigenvalues(M: sp.Matrix, K: sp.Matrix, assume: Mapping[sp.Symbol, sp.Symbol
         Ma, Ka = M.xreplace(dict(assume)), K.xreplace(dict(assume))
         return [r.xreplace(back) for r in _roots(Ma, Ka)]
 
-    found: list[sp.Expr] = within_budget(work, [], EIGEN_SECONDS)
+    found: list[sp.Expr] = within_budget(work, [], EIGEN_WORK)
     # each root is already in its neat form (factored, or its common factors out around the square root):
     # the document prints it as it stands (a search for a shorter one would expand products of square roots)
     return [settle(c) for c in found if sp.count_ops(c) <= MAX_EXACT_OPS]

@@ -26,7 +26,7 @@ from app.engine.budget import tidy, within_budget
 from app.engine.conservation import Energetics
 from app.engine.lagrange import Equations
 from app.engine.mechanics import Mechanics
-from app.limits import SOLVE_SECONDS
+from app.limits import SOLVE_WORK
 
 
 @dataclass(frozen=True)
@@ -81,7 +81,7 @@ def reduce_to_one(
     if unknowns:
         system = [sp.Eq(eqs.momenta[i], Pc) for i, Pc in zip(cyc, P, strict=True)]
         # linear in the unknowns, but a large M can still make SymPy slow: bounded, and no reduction without it
-        found: list[dict] = within_budget(lambda: sp.solve(system, unknowns, dict=True), [], SOLVE_SECONDS)
+        found: list[dict] = within_budget(lambda: sp.solve(system, unknowns, dict=True), [], SOLVE_WORK)
         if len(found) != 1:
             return None
         solution = {k: sp.factor_terms(v) for k, v in found[0].items()}
@@ -114,7 +114,7 @@ def reduce_to_one(
     # printed in their textbook forms, so SymPy's own simplification of each is not asked for (a third of the
     # single pendulum's reduction; every scene's and example's document is the same without it)
     r_assumed = assume.get(r, r)
-    roots = within_budget(lambda: sp.solve(dU.xreplace(assume), r_assumed, simplify=False), None, SOLVE_SECONDS)
+    roots = within_budget(lambda: sp.solve(dU.xreplace(assume), r_assumed, simplify=False), None, SOLVE_WORK)
     equilibria: list[Equilibrium] = []
     solved = roots is not None
     for root in roots or []:

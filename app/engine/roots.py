@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import itertools
 import math
-import time
 from collections.abc import Callable, Sequence
 
 import numpy as np
@@ -145,9 +144,13 @@ def search(
     n: int,
     k: Sequence[float],
     nonnegative: set[int],
-    seconds: float,
+    evaluations: int,
 ) -> tuple[list[np.ndarray], list[bool]]:
-    """Roots of g(q, k) = 0 (wrapped and merged), and which coordinates are angles."""
+    """Roots of g(q, k) = 0 (wrapped and merged), and which coordinates are angles.
+
+    The Newton searches from the starts, nearest the origin first, stop after the one at which ``evaluations``
+    evaluations of g and its Jacobian have been used: a count, not a clock, so the roots found are a
+    function of the system alone."""
     periodic = periodic_axes(g, n, k)
     scales = [abs(float(v)) for v in k if math.isfinite(v) and v != 0]
     G = lambda x: np.asarray(g(*x, *k), dtype=float).ravel()  # noqa: E731
@@ -175,23 +178,24 @@ def search(
     axes = [_axis(periodic[i], i in nonnegative, per_axis, scales) for i in range(n)]
     if n <= 3:
         starts: list[np.ndarray] = [np.array(s, dtype=float) for s in itertools.product(*axes)]
-        # nearest the origin first: when the time runs out, the far-out starts (the parameters' scales) are the ones cut
+        # nearest the origin first: when the evaluations run out, the far-out starts (the parameters' scales) are the ones cut
         starts.sort(key=lambda x: float(np.abs(x).max()))
     else:
         rng = np.random.default_rng(5)
         starts = [np.array([rng.choice(a) for a in axes]) for _ in range(200)]
     opt = late.module("scipy.optimize")  # imported before the clock starts
-    # CPU seconds of this process, so that a loaded machine does not shorten the search (and change its result);
-    # the step's own wall-clock budget still bounds it
-    deadline = time.process_time() + seconds
+    used = 0
     for start in starts:
-        if time.process_time() > deadline:
+        if used >= evaluations:
             break
         with np.errstate(all="ignore"):
             try:
                 sol = opt.root(G, start, jac=J, method="hybr")
             except (ValueError, ZeroDivisionError, FloatingPointError, np.linalg.LinAlgError):
+                used += 1
                 continue
+        # each start's Newton steps: the evaluations of g and of its Jacobian it used
+        used += int(getattr(sol, "nfev", 1)) + int(getattr(sol, "njev", 0))
         if np.all(np.isfinite(sol.x)):
             candidates.append(sol.x)
     found: list[np.ndarray] = []

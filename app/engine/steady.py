@@ -20,7 +20,7 @@ from app.engine import modes_exact, roots
 from app.engine.derive import Derivation
 from app.engine.modes import (
     MAX_EQUILIBRIA,
-    SEARCH_SECONDS,
+    SEARCH_EVALUATIONS,
     Equilibrium,
     _array,
     _function,
@@ -52,7 +52,7 @@ def relative(d: Derivation, momenta: Mapping[str, float]) -> list[Equilibrium]:
     at_values = sp.sympify(dU).xreplace(dict(values))
     g = _function([at_values], [r])
     jac = _function([[sp.diff(at_values, r)]], [r])
-    found, periodic = roots.search(g, jac, 1, [], nonnegative, SEARCH_SECONDS)
+    found, periodic = roots.search(g, jac, 1, [], nonnegative, SEARCH_EVALUATIONS)
     points: list[tuple[sp.Expr | None, float]] = []
     for e in red.equilibria:
         v = _numeric(e.position, values)

@@ -26,7 +26,7 @@ from app.engine.derive import Derivation, derive
 from app.engine.errors import DerivationError
 from app.engine.parse import ExpressionError, parse_expression
 from app.engine.symbols import SymbolTable
-from app.limits import SOLVE_SECONDS
+from app.limits import SOLVE_WORK
 from app.scenes.types import CoordinateChange, Particle, System
 
 
@@ -74,7 +74,7 @@ def collected(expr: sp.Expr, symbols) -> sp.Expr:
 
 def compact(expr: sp.Expr) -> sp.Expr:
     """The shorter of the budgeted display form and the factored form (k (x - l0)^2 / 2 stays a square)."""
-    factored = within_budget(lambda: sp.factor(sp.cancel(expr)), expr, SOLVE_SECONDS)
+    factored = within_budget(lambda: sp.factor(sp.cancel(expr)), expr, SOLVE_WORK)
     return min((tidy(expr), factored), key=sp.count_ops)
 
 
@@ -101,7 +101,7 @@ def transform(system: System) -> Transformed | None:
 
     # Solve Q_j = f_j(q, t) for the old coordinates: the inverse map q = q(Q, t)
     equations = [sp.Eq(Q, f) for Q, f in zip(new.q, defs, strict=True)]
-    found = within_budget(lambda: sp.solve(equations, list(old.q), dict=True), None, SOLVE_SECONDS)
+    found = within_budget(lambda: sp.solve(equations, list(old.q), dict=True), None, SOLVE_WORK)
     if not found or len(found) != 1 or set(found[0]) != set(old.q):
         raise DerivationError("the change of coordinates could not be inverted to a single map q = q(Q, t)")
     inverse = {q: collected(found[0][q], new.q) for q in old.q}

@@ -17,7 +17,7 @@ from typing import Any
 
 from cachetools import LRUCache
 
-from app.engine.budget import BudgetExceeded, time_limit
+from app.engine.budget import OutOfTime, clock_limit
 from app.engine.contract import derivation_json
 from app.engine.derive import Derivation, derive
 from app.engine.errors import DerivationError
@@ -57,17 +57,17 @@ def build_system(user: UserSystem) -> System:
 
 @contextmanager
 def engine_budget(user: UserSystem) -> Iterator[None]:
-    """One time budget for the engine's work on a user system, below the worker's hard limit.
+    """The one clock of the engine's work on a user system, below the worker's hard limit.
 
-    Every expand, substitution, solve and display step inside shares it (the
-    engine's own smaller budgets nest within it); running out is a refusal that
-    names the limit, not a killed worker.
+    The engine's own bounds count work, never time (app/engine/work.py), so what it computes does not depend
+    on the machine's load; this clock only stops a job that a loaded machine makes too slow, and its
+    firing is a refusal that names the limit (never a poorer document, never a killed worker).
     """
     seconds = engine_seconds()
     try:
-        with time_limit(seconds):
+        with clock_limit(seconds):
             yield
-    except BudgetExceeded:
+    except OutOfTime:
         where = user.form
         raise TooCostly(
             f"{where}: the equations of motion of this system take longer to derive than the {seconds:g} s "
