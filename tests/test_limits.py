@@ -41,7 +41,19 @@ def test_the_default_end_time_is_one_number():
 
 
 def test_modules_meaning_the_same_budget_share_it():
-    assert reduction.SOLVE_SECONDS is transform.SOLVE_SECONDS is shared.SOLVE_SECONDS
+    assert reduction.SOLVE_WORK is transform.SOLVE_WORK is shared.SOLVE_WORK
+
+
+def test_no_bound_inside_the_engine_reads_a_clock():
+    # what a document holds must be a function of its input (issue 43): the engine's bounds count work; the one
+    # clock of a request (budget.clock_limit, at the worker job's edge) refuses, and is the only reader of one
+    found = subprocess.run(
+        ["grep", "-rnE", r"time\.(monotonic|perf_counter|process_time|time|thread_time)\(|getitimer", "app/engine",
+         "--include=*.py"], cwd=ROOT, capture_output=True, text=True,
+    ).stdout.splitlines()  # fmt: skip
+    assert [line for line in found if not line.startswith("app/engine/budget.py:")] == []
+    budget_lines = [line for line in found if line.startswith("app/engine/budget.py:")]
+    assert len(budget_lines) == 3  # clock_limit's: the outer clock, its start, the re-armed outer one
 
 
 def test_the_keep_alive_is_a_setting_the_server_options_pass_on():
@@ -68,8 +80,8 @@ def test_a_changed_limit_changes_the_caches_fingerprint(monkeypatch, tmp_path):
 
     (tmp_path / "engine").mkdir()
     (tmp_path / "engine" / "a.py").write_text("X = 1\n")
-    (tmp_path / "limits.py").write_text("SOLVE_SECONDS = 2.0\n")
+    (tmp_path / "limits.py").write_text("SOLVE_WORK = 40_000\n")
     monkeypatch.setattr(cache, "APP_SOURCE", tmp_path)
     before = cache.source_fingerprint("engine")
-    (tmp_path / "limits.py").write_text("SOLVE_SECONDS = 3.0\n")
+    (tmp_path / "limits.py").write_text("SOLVE_WORK = 50_000\n")
     assert cache.source_fingerprint("engine") != before

@@ -131,7 +131,7 @@ def bounded(member: str, what: str, units: float, work: Callable[[], T], fallbac
             return work()
     except WorkExceeded:
         skipped.append(
-            Skipped(member, f"{what} left out: working it out needs more than the engine allows for it. "
+            Skipped(member, f"{what} left out: working it out needs more than the bound of work the engine allows it. "
                     "The rest of the derivation is complete; this is a limit of the engine, not of the system.")
         )  # fmt: skip
         return fallback

@@ -1,4 +1,4 @@
-"""Display simplification under time budgets: what is remembered and what is tried again."""
+"""Display simplification under bounds of work: what is remembered and what is tried again."""
 
 from __future__ import annotations
 
@@ -14,8 +14,8 @@ x, y = sp.symbols("x y")
 
 @pytest.fixture
 def slow_simplify(monkeypatch):
-    """sympy.simplify as the budget calls it: SymPy work for 2 s (the budget's signal is raised only in
-    SymPy's or the app's frames), counting its calls."""
+    """sympy.simplify as the budget calls it: SymPy work for up to 2 s (far more than the bounds below allow,
+    so the bound ends it), counting its calls."""
     calls = []
     budget.tidy((x + 3) ** 2 / (x + y))  # first calls load code (SymPy's units, the cheap step's): not in the budgets
 
@@ -33,41 +33,41 @@ def slow_simplify(monkeypatch):
 
 def test_a_simplification_out_of_its_own_time_is_not_tried_again(slow_simplify):
     expr = (x + 1) ** 2 / (x + y)
-    first = budget.tidy(expr, seconds=0.1)
+    first = budget.tidy(expr, units=2_000)
     assert len(slow_simplify) == 1
-    assert budget.tidy(expr, seconds=0.1) == first
+    assert budget.tidy(expr, units=2_000) == first
     assert len(slow_simplify) == 1  # remembered: the same attempt would run out again
 
 
 def test_one_cut_short_by_a_shared_budget_is_tried_again_later(slow_simplify):
     expr = (x + 2) ** 2 / (x - y)
-    with budget.display_budget(0.1):  # less than the expression's own 0.2 s: the shared budget cut it
-        budget.tidy(expr, seconds=0.2)
+    with budget.display_budget(2_000):  # less than the expression's own 4,000 units: the shared budget cut it
+        budget.tidy(expr, units=4_000)
     assert len(slow_simplify) == 1
-    budget.tidy(expr, seconds=0.2)
+    budget.tidy(expr, units=4_000)
     assert len(slow_simplify) == 2
 
 
-def _busy(seconds: float) -> str:
-    """SymPy work for ``seconds`` (the budget's signal is raised only in SymPy's or the app's frames)."""
-    end = time.monotonic() + seconds
-    while time.monotonic() < end:
-        sp.expand((x + y) ** 12)
+def _busy(times: int) -> str:
+    """New SymPy work (a fresh symbol: nothing from SymPy's cache) ``times`` times over (about 2,300 units each)."""
+    z = sp.Dummy()
+    for i in range(times):
+        sp.expand((x + z + i) ** 14)
     return "done"
 
 
 def test_patience_lengthens_every_bound_in_its_block_and_only_there():
-    from app.engine.budget import bounded, display_budget, display_seconds_left, patience
+    from app.engine.budget import bounded, display_budget, display_work_left, patience
 
     skipped: list = []
-    assert bounded("m", "A member", 0.02, lambda: _busy(0.1), "fallback", skipped) == "fallback"
+    assert bounded("m", "A member", 2_000, lambda: _busy(5), "fallback", skipped) == "fallback"
     assert [s.member for s in skipped] == ["m"]
     with patience(50):
-        assert bounded("m", "A member", 0.02, lambda: _busy(0.1), "fallback", skipped) == "done"
-        with display_budget(0.01):
-            assert display_seconds_left(0.01) > 0.1  # the shared display budget is as patient
+        assert bounded("m", "A member", 2_000, lambda: _busy(5), "fallback", skipped) == "done"
+        with display_budget(100):
+            assert display_work_left(100) == 5_000  # the shared display budget is as patient
     assert len(skipped) == 1
-    assert bounded("m", "A member", 0.02, lambda: _busy(0.1), "fallback", skipped) == "fallback"
+    assert bounded("m", "A member", 2_000, lambda: _busy(5), "fallback", skipped) == "fallback"
 
 
 def _random_products(count: int) -> list[sp.Expr]:
