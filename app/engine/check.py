@@ -38,7 +38,6 @@ from typing import Any
 import sympy as sp
 
 from app.engine.budget import display_budget, tidy, work_limit
-from app.engine.work import WorkExceeded
 from app.engine.check_answers import (
     PER_COORDINATE,
     STEPS,
@@ -77,6 +76,7 @@ from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, POINT
 from app.engine.parse import Parsed
 from app.engine.report import Printer, display
 from app.engine.textbook import unicode_text
+from app.engine.work import WorkExceeded
 from app.limits import CHECK_DISPLAY_WORK as DISPLAY_WORK
 from app.limits import DIFFERENCE_WORK, FACTOR_WORK, PARTS_WORK
 

@@ -27,8 +27,8 @@ import sympy as sp
 from sympy.simplify.fu import TR10i
 
 from app.engine.budget import pythagoras, within_budget, work_limit
-from app.engine.work import WorkExceeded
 from app.engine.kinks import away_from_kinks
+from app.engine.work import WorkExceeded
 from app.limits import SYMBOLIC_WORK
 
 CONSTANT_DRAWS, POSITION_DRAWS, RATE_DRAWS = 2, 2, 3

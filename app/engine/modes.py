@@ -49,10 +49,10 @@ import sympy as sp
 
 from app.engine import modes_exact, roots
 from app.engine.budget import work_limit
-from app.engine.work import WorkExceeded
 from app.engine.derive import Derivation
 from app.engine.kinks import away_from_kinks
 from app.engine.stability import NEUTRAL, STABLE, UNSTABLE, Linear, linearize
+from app.engine.work import WorkExceeded
 from app.limits import MODES_WORK, SEARCH_EVALUATIONS
 
 __all__ = ["NEUTRAL", "STABLE", "UNSTABLE", "Equilibrium", "Mode", "NormalModes", "defaults", "normal_modes"]

@@ -1,7 +1,6 @@
 """The derivation's members beyond the equations: typed, computed on first use, kept, bounded, pickled."""
 
 import pickle
-import signal
 
 import sympy as sp
 

@@ -1,7 +1,6 @@
 """The textbook-form simplifier: each rewriting on its own, equality with the input, and its bounds."""
 
 import random
-import time
 
 import sympy as sp
 

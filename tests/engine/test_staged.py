@@ -13,11 +13,11 @@ from app.engine.budget import (
     OutOfTime,
     Skipped,
     bounded,
+    clock_limit,
     is_zero,
     larger_than,
     nonzero_somewhere,
     pythagoras,
-    clock_limit,
     work_limit,
 )
 from app.engine.contract import derivation_json
