@@ -108,6 +108,9 @@ def _free_port() -> int:
 def fresh_server() -> Iterator[str]:
     """A new web process with empty cache and data folders and no warm-up, until the block ends.
 
+    The server runs in a session of its own, as a deployed server does: the load it meets is that of other
+    programs, not a share of this one's.
+
     Only numba's cache of compiled kernels (machine code, not answers) is shared between the servers of a run,
     so that each does not spend a minute compiling the same integrators."""
     with tempfile.TemporaryDirectory(prefix="i43-") as folder:
@@ -119,7 +122,7 @@ def fresh_server() -> Iterator[str]:
                "NUMBA_CACHE_DIR": str(NUMBA_CACHE)}  # fmt: skip
         process = subprocess.Popen(
             [sys.executable, "-m", "uvicorn", "app.main:app", "--host", "127.0.0.1", "--port", str(port),
-             "--log-level", "warning"], cwd=ROOT, env=env)  # fmt: skip
+             "--log-level", "warning"], cwd=ROOT, env=env, start_new_session=True)  # fmt: skip
         url = f"http://127.0.0.1:{port}"
         try:
             deadline = time.monotonic() + 120
