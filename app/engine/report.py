@@ -14,7 +14,7 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine import textbook
+from app.engine import notation, textbook
 from app.engine.action_step import KEY as ACTION_KEY
 from app.engine.action_step import action_step
 from app.engine.breaking import broken, broken_row, single
@@ -269,6 +269,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             )
         )
     shown_equations = equations(d, pr)
+    Mt, Mu = notation.letter("mass_matrix", d), notation.text("mass_matrix", d)
     steps.append(
         _step(
             "euler-lagrange",
@@ -288,9 +289,9 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         _step(
             "mass-matrix",
             "Mass matrix and forcing",
-            [rf"M = {pr.tex(eqs.mass_matrix.applyfunc(pr.form))}", rf"f = {pr.tex(eqs.forcing.applyfunc(pr.form))}"],
+            [rf"{Mt} = {pr.tex(eqs.mass_matrix.applyfunc(pr.form))}", rf"f = {pr.tex(eqs.forcing.applyfunc(pr.form))}"],
             [eqs.mass_matrix.tolist(), [display(x) for x in eqs.forcing]],
-            "The equations are linear in the accelerations, M q̈ = f, with M the Hessian of L in the velocities.",
+            f"The equations are linear in the accelerations, {Mu} q̈ = f, with {Mu} the Hessian of L in the velocities.",
         )
     )
     acc = [display(a) for a in eqs.accelerations] if eqs.closed_form else []
@@ -300,17 +301,17 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             "Accelerations",
             [f"{qddn[k]} = {pr.tex(a)}" for k, a in enumerate(acc)],
             acc,
-            "Solving M q̈ = f gives each acceleration explicitly, ready for numerical integration.",
+            f"Solving {Mu} q̈ = f gives each acceleration explicitly, ready for numerical integration.",
         )
         if eqs.closed_form  # else M⁻¹f stays factored (app.engine.lagrange.CLOSED_FORM_MAX_NODES)
         else _step(
             "accelerations",
             "Accelerations",
-            [r"\ddot{q} = M^{-1} f"],
+            [rf"\ddot{{q}} = {Mt}^{{-1}} f"],
             "M**(-1)*f",
-            "Solved symbolically, M q̈ = f gives "
-            "expressions too long to read for this many coordinates: the accelerations stay M⁻¹f, and the "
-            "numerics solve M q̈ = f by LU at every step.",
+            f"Solved symbolically, {Mu} q̈ = f gives "
+            f"expressions too long to read for this many coordinates: the accelerations stay {Mu}⁻¹f, and the "
+            f"numerics solve {Mu} q̈ = f by LU at every step.",
         )
     )
     steps.append(
@@ -441,19 +442,23 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
             "with m_eff and U_eff as in the step before.",
         )
     )
+    omega = notation.letter("frequency", d)
     if red.equilibria:
-        rows = [rf"{rn}_0 = {pr.tex(e.position)},\quad \omega^2 = {pr.tex(e.omega_squared)}" for e in red.equilibria]
+        rows = [rf"{rn}_0 = {pr.tex(e.position)},\quad {omega}^2 = {pr.tex(e.omega_squared)}" for e in red.equilibria]
         sym: Any = [(e.position, e.omega_squared) for e in red.equilibria]
         why = "Equilibria make U_eff′ vanish; about each, ω² = U_eff″/m_eff (oscillation when positive, instability when negative)."
     else:
-        rows = [
-            rf"U_\text{{eff}}'({rn}_0) = {pr.tex(red.equilibrium_condition.xreplace({r: sp.Symbol(r.name + '0')}))} = 0",
-            rf"\omega^2 = \frac{{U_\text{{eff}}''}}{{m_\text{{eff}}}} = {pr.tex(red.omega_squared_at)}",
-        ]
-        sym = [red.equilibrium_condition, red.omega_squared_at]
         if not red.equilibrium_condition.has(r):
+            # a force that never vanishes: no equilibrium, so no frequency about one either
+            rows = [rf"U_\text{{eff}}' = {pr.tex(red.equilibrium_condition)} \neq 0", r"\text{no equilibrium}"]
+            sym = [red.equilibrium_condition]
             why = f"U_eff′ does not depend on {unicode(red.coordinate)} and is not zero, so there is no equilibrium."
         else:
+            rows = [
+                rf"U_\text{{eff}}'({rn}_0) = {pr.tex(red.equilibrium_condition.xreplace({r: sp.Symbol(r.name + '0')}))} = 0",
+                rf"{omega}^2 = \frac{{U_\text{{eff}}''}}{{m_\text{{eff}}}} = {pr.tex(red.omega_squared_at)}",
+            ]
+            sym = [red.equilibrium_condition, red.omega_squared_at]
             why = (
                 f"No closed-form root was found; the condition and the frequency hold at any {unicode(red.coordinate + '0')} "
                 "that satisfies it."

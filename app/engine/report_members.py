@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from app.engine import notation
 from app.engine.constraints import ConstraintForce
 from app.engine.report import Printer, _mapping_step, _step, display
 from app.engine.transform import Transformed, collected, compact
@@ -72,7 +73,7 @@ def transform_steps(tr: Transformed) -> list[dict[str, str]]:
         ),
     ]
     M = d.equations.mass_matrix
-    rows = [rf"M = {pr.tex(M.applyfunc(display))}"]
+    rows = [rf"{notation.letter('mass_matrix', d)} = {pr.tex(M.applyfunc(display))}"]
     why = "The mass matrix in the new coordinates."
     if tr.decoupled:
         why = "The mass matrix is diagonal: each new coordinate moves with its own inertia, unmixed with the others."

@@ -214,10 +214,11 @@ def latex(expr: Any, names: dict[sp.Symbol, str], first: sp.Symbol | None = None
 
     ``first``: in a sum, the term holding this symbol comes first (an equation's own acceleration).
     """
+    if isinstance(expr, sp.MatrixBase):
+        # a mutable matrix is no sp.Basic: each entry in textbook order all the same (m R², not R² m)
+        return _Printer(names, _moving(names, sp.ImmutableMatrix(expr)), first).doprint(expr)
     if not isinstance(expr, sp.Basic) or larger_than(expr, NODE_BUDGET):
         return sp.latex(expr, symbol_names=names)
-    if isinstance(expr, sp.MatrixBase):  # mutable: printed each time
-        return _Printer(names, _moving(names, expr), first).doprint(expr)
     # a document prints most expressions several times (the steps and the results box; a double pendulum's
     # 161 printings are of 62 expressions): each once per document and set of names
     key = (expr, tuple(names.items()), first)
@@ -301,6 +302,9 @@ class _Unicode(StrPrinter):
 
     def _print_Rational(self, expr: sp.Rational) -> str:
         return f"{expr.p}/{expr.q}" if expr.q != 1 else str(expr.p)
+
+    def _print_Pi(self, expr: sp.Expr) -> str:
+        return "π"
 
     def _print_Function(self, expr: sp.Function) -> str:
         (arg,) = expr.args if len(expr.args) == 1 else (None,)

@@ -306,9 +306,9 @@ ROTATING_PARABOLA: dict[str, str] = {
     "effective-potential": "Gravity's m g α ρ² minus the centrifugal ½ m ω² ρ², with the inertia of the slope.",
     "energy-integral": "The conserved h gives ρ̇ from ρ.",
     "time-integral": "The integral gives the period of the oscillation along the wire when ω² < 2 g α.",
-    "reduced-equilibria": "The bottom holds the bead with ω_ρ² = 2 g α − ω² when that is positive.",
+    "reduced-equilibria": "The bottom holds the bead with Ω² = 2 g α − ω² when that is positive (Ω, the frequency along the wire; ω is the turning rate).",
     "equilibria": "ρ = 0 is the only equilibrium unless ω² = 2 g α, when every ρ is one.",
-    "normal-modes": "At the bottom the small oscillations have ω_ρ² = 2 g α − ω².",
+    "normal-modes": "At the bottom the small oscillations along the wire have Ω² = 2 g α − ω².",
     "constraints": "The wire lies on the paraboloid z = α ρ² and in the plane turned by ω t.",
     "constraint-forces": "The wire pushes normal to itself in its plane and, across it, drives the bead around.",
 }
