@@ -6,6 +6,7 @@ from typing import Any, TypeVar
 
 import sympy as sp
 
+from app.engine import notation
 from app.engine.budget import Skipped, bounded, display_budget, display_seconds_left, pythagoras, within_budget
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import LARGE_FROM, Derivation
@@ -134,6 +135,8 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "coordinates": list(table.names),
         "angles": angle_coordinates(d),
         "symbols": symbol_names(d),
+        # every letter of the document once, with what it stands for (app/engine/notation.py)
+        "notation": notation.table(d),
         "parameters": parameters_json(d.system.parameters),
         "kinetic": pr.pair(d.mechanics.T) if d.mechanics.T is not None else None,
         "potential": pr.pair(d.mechanics.U) if d.mechanics.U is not None else None,
@@ -341,6 +344,7 @@ def first_stage(d: Derivation) -> dict[str, Any]:
             "coordinates": list(table.names),
             "angles": angle_coordinates(d),
             "symbols": symbol_names(d),
+            "notation": notation.table(d),
             "parameters": parameters_json(d.system.parameters),
             "equations_of_motion": [
                 {"coordinate": name, **pair} for name, pair in zip(table.names, equations, strict=True)
