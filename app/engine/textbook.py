@@ -83,7 +83,8 @@ class _Printer(LatexPrinter):
         negative, term = signed
         if top:
             own = self.first is not None and term.has(self.first)
-            return (-self.level(term), not own, negative, sp.default_sort_key(term))
+            # the term holding ``first`` leads whatever its level (U_eff's centrifugal piece before −mgD sin α)
+            return (not own, -self.level(term), negative, sp.default_sort_key(term))
         rank = _parameter_rank(term.name) if term.is_Symbol and term not in self.moving else (9, "", "")
         if getattr(self, "_constants_first", False):
             return (negative, not self.constant(term), rank, sp.default_sort_key(term))
