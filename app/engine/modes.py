@@ -339,11 +339,36 @@ def _equilibria(
         if not any(roots.same_point(x, y, periodic) for _, y in exact_points)
         and not any(_on_family(sol, q, x, values, periodic) for sol in families)
     ]
-    merged += [(None, x) for x in extra]
+    merged += [(_snapped(g_exprs, q, x, periodic), x) for x in extra]
     # the numerical search may miss exact ones that it did not reach, never the other way round
     complete = solutions is not None and not extra and modes_exact.polynomial(g_exprs, q)
     merged.sort(key=lambda p: tuple(p[1]))
     return merged, complete, periodic, families
+
+
+# values a numerical root is tried at exactly: 0 and, for an angle, the quarter turns
+_ROUND = (sp.Integer(0), sp.pi, -sp.pi, sp.pi / 2, -sp.pi / 2)
+
+
+def _snapped(
+    g_exprs: list[sp.Expr], q: list[sp.Symbol], x: np.ndarray, periodic: list[bool]
+) -> dict[sp.Symbol, sp.Expr] | None:
+    """A numerical root in closed form when every coordinate is within rounding of 0 (or of a quarter turn, for an
+    angle) and every condition there is exactly zero for all parameter values (θ = π, not 3.14159); else None."""
+    at: dict[sp.Symbol, sp.Expr] = {}
+    for i, s in enumerate(q):
+        near = [c for c in (_ROUND if i < len(periodic) and periodic[i] else _ROUND[:1]) if abs(float(x[i]) - float(c)) < 1e-9]
+        if not near:
+            return None
+        at[s] = near[0]
+    try:
+        # exactly zero, symbolically (with the parameters left as symbols; sin π and cos(π/2) evaluate to 0
+        # on substitution): no tolerance decides it
+        if all(sp.expand(sp.sympify(e).xreplace(at)) == 0 for e in g_exprs):
+            return at
+    except (TypeError, ValueError, NotImplementedError):
+        return None
+    return None
 
 
 def _on_family(

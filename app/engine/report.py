@@ -18,7 +18,7 @@ from app.engine import meaning, notation, textbook
 from app.engine.action_step import KEY as ACTION_KEY
 from app.engine.action_step import action_step
 from app.engine.breaking import broken, broken_row, single
-from app.engine.budget import memoized, unbudgeted
+from app.engine.budget import memoized, pythagoras, unbudgeted
 from app.engine.derive import Derivation
 from app.engine.forms import settle, textbook_form, use_names
 from app.engine.names import unicode
@@ -481,9 +481,9 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
         else:
             rows = [
                 rf"U_\text{{eff}}'({rn}_0) = {pr.tex(red.equilibrium_condition.xreplace({r: sp.Symbol(r.name + '0')}))} = 0",
-                rf"{omega}^2 = \frac{{U_\text{{eff}}''}}{{m_\text{{eff}}}} = {pr.tex(red.omega_squared_at)}",
+                rf"{omega}^2 = \frac{{U_\text{{eff}}''}}{{m_\text{{eff}}}} = {pr.tex(pythagoras(red.omega_squared_at))}",
             ]
-            sym = [red.equilibrium_condition, red.omega_squared_at]
+            sym = [red.equilibrium_condition, pythagoras(red.omega_squared_at)]
             why = (
                 f"No closed-form root was found; the condition and the frequency hold at any {unicode(red.coordinate + '0')} "
                 "that satisfies it."

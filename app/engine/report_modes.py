@@ -13,7 +13,7 @@ from typing import Any
 import sympy as sp
 
 from app.engine import notation
-from app.engine.budget import memoized
+from app.engine.budget import memoized, pythagoras
 from app.engine.derive import Derivation
 from app.engine.hamilton import Hamilton
 from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, NormalModes
@@ -24,7 +24,8 @@ from app.engine.textbook import unicode_text
 def _show(expr: sp.Expr) -> sp.Expr:
     """Hamilton's expressions are compact as built: only common factors are pulled out (once per document:
     the steps and the JSON block show the same ones)."""
-    return memoized("hamilton-shown", expr, lambda: sp.factor_terms(expr))
+    # (sin² + cos² of one argument collapsed first: p_θ/(mR²), not p_θ/(mR² sin² θ + mR² cos² θ))
+    return memoized("hamilton-shown", expr, lambda: sp.factor_terms(pythagoras(expr)))
 
 
 def hamilton_printer(d: Derivation, ham: Hamilton) -> Printer:

@@ -27,7 +27,7 @@ import sympy as sp
 from sympy.printing.latex import LatexPrinter
 from sympy.printing.str import StrPrinter
 
-from app.engine.budget import larger_than, memoized
+from app.engine.budget import larger_than, memoized, pythagoras
 from app.engine.names import unicode
 
 NODE_BUDGET = 600
@@ -254,6 +254,9 @@ def normalised(
     """
     if larger_than(residual, NODE_BUDGET):
         return residual
+    # sin²α + cos²α = 1 of one argument never survives into an equation (a particle on a cone: r̈, not
+    # r̈/(sin²α + cos²α)): collapsed in the residual and in the coefficient it is divided by
+    residual, coefficient = pythagoras(residual), pythagoras(coefficient)
     moving = _moving(names, residual) | _moving(names, coefficient)
     expanded = sp.expand(residual)
     scaled_by = sp.factor_terms(coefficient)

@@ -101,3 +101,33 @@ def test_every_scene_serves_a_table_with_each_letter_once():
         assert {r["unicode"] for r in doc["notation"] if r["kind"] == "coordinate"} == {
             doc["symbols"][q]["unicode"] for q in doc["coordinates"]
         }
+
+
+@pytest.mark.slow
+def test_a_bead_on_a_turning_hoop_sits_at_acos_without_trigonometry_of_atan():
+    import sympy as sp
+
+    from app.engine.derive import derive
+    from app.engine.modes import normal_modes
+    from app.engine.report_modes import normal_mode_steps
+    from app.scenes.types import Parameter, Particle, System
+
+    system = System(
+        coordinates=("theta",),
+        parameters=(Parameter("m", 1.0), Parameter("g", 9.81), Parameter("R", 1.0), Parameter("w", 5.0)),
+        particles=(Particle("m", ("R*sin(theta)*cos(w*t)", "R*sin(theta)*sin(w*t)", "-R*cos(theta)")),),
+        potential="-m*g*R*cos(theta)",
+    )
+    d = derive(system)
+    nm = normal_modes(d)
+    assert not nm.failed
+    m, g, R, w = (sp.Symbol(n, real=True) for n in ("m", "g", "R", "w"))
+    tilted = [e for e in nm.equilibria if abs(e.position["theta"]) not in (0.0, pytest.approx(3.141592653589793))]
+    assert len(tilted) == 2
+    for e in tilted:
+        # cos θ₀ = g/(Rω²) (here ω is w): the closed form is ±acos(g/(R w²)), and M is m R²
+        assert sp.simplify(sp.cos(e.exact["theta"]) - g / (R * w**2)) == 0
+        assert not e.exact["theta"].has(sp.atan)
+        assert sp.simplify(e.mass[0, 0] - m * R**2) == 0
+    text = " ".join(s["latex"] for s in normal_mode_steps(d, nm))
+    assert "atan" not in text and r"\pi" in text and "3.14159" not in text

@@ -71,3 +71,19 @@ def test_a_typed_pendulum_names_the_top_pi(client):
     # the letters of the page, each once, served with the document
     letters = [row["unicode"] for row in doc["notation"]]
     assert len(letters) == len(set(letters)) and {"θ", "m", "g", "l", "M", "K", "ω"} <= set(letters)
+
+
+def test_a_typed_particle_on_a_cone_keeps_no_sin_squared_plus_cos_squared(client):
+    doc = derive(
+        client,
+        {
+            "coordinates": ["r", "phi"],
+            "parameters": ["m", "g", "alpha"],
+            "particles": [{"mass": "m", "position": ["r*sin(alpha)*cos(phi)", "r*sin(alpha)*sin(phi)", "r*cos(alpha)"]}],
+            "potential": "m*g*r*cos(alpha)",
+        },
+    )
+    for s in doc["steps"]:
+        assert not (r"\sin^{2} {\alpha} + \cos^{2} {\alpha}" in s["latex"]), (s["key"], s["latex"])
+    (radial,) = [e["latex"] for e in doc["equations_of_motion"] if e["coordinate"] == "r"]
+    assert radial.startswith(r"\ddot{r}")
