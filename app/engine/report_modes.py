@@ -176,7 +176,7 @@ def _points(
     """Points listed without modes, each coordinate in closed form where one is known (π, not 3.14159)."""
     rows = []
     for i, p in enumerate(points):
-        known = exact[i] if i < len(exact) and exact[i] else {}
+        known: dict[str, sp.Expr] = (exact[i] or {}) if i < len(exact) else {}
         rows.append(
             r",\; ".join(
                 f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(v)}" for n, v in p.items()

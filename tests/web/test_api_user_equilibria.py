@@ -84,6 +84,6 @@ def test_a_typed_particle_on_a_cone_keeps_no_sin_squared_plus_cos_squared(client
         },
     )
     for s in doc["steps"]:
-        assert not (r"\sin^{2} {\alpha} + \cos^{2} {\alpha}" in s["latex"]), (s["key"], s["latex"])
+        assert r"\sin^{2} {\alpha} + \cos^{2} {\alpha}" not in s["latex"], (s["key"], s["latex"])
     (radial,) = [e["latex"] for e in doc["equations_of_motion"] if e["coordinate"] == "r"]
     assert radial.startswith(r"\ddot{r}")
