@@ -198,15 +198,15 @@ def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
     if nm.angles_only:
         # the whole configuration space was searched; only roots closer together than the search can tell apart escape
         return (
-            ("SymPy's closed forms are shown where it found them; " if some_exact else "")
+            ("Closed forms are shown where they are known; " if some_exact else "")
             + "a numerical search over a full period of every angle, at the default parameters, found "
             + (("no others" if all(e.exact for e in found) else "the rest") if some_exact else "them")
             + " (roots lying very close together could still escape it)."
         )
     if some_exact:
         return (
-            "SymPy's closed forms are shown where it found them; a numerical search at the default parameters"
-            f"{where} completed the list, so equilibria outside that range may exist."
+            "Closed forms are shown where they are known; a numerical search at the default parameters"
+            f"{where} completed the list, so others may exist outside that range."
         )
     return (
         f"The equilibria were found numerically at the default parameters{where}; others may exist outside that range."
