@@ -6,6 +6,7 @@ from typing import Any, TypeVar
 
 import sympy as sp
 
+from app.engine import meaning, notation
 from app.engine.budget import Skipped, bounded, display_budget, display_work_left, pythagoras, within_budget
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import LARGE_FROM, Derivation
@@ -14,9 +15,12 @@ from app.engine.names import display_names
 from app.engine.report import (
     Printer,
     build_steps,
+    conserved_form,
+    effective_potential,
     energies,
     equation_pairs,
     lagrangian,
+    momentum,
 )
 from app.engine.report import display as _show
 from app.engine.report_members import constraint_steps, new_lagrangian, transform_steps
@@ -134,6 +138,8 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "coordinates": list(table.names),
         "angles": angle_coordinates(d),
         "symbols": symbol_names(d),
+        # every letter of the document once, with what it stands for (app/engine/notation.py)
+        "notation": notation.table(d),
         "parameters": parameters_json(d.system.parameters),
         "kinetic": pr.pair(d.mechanics.T) if d.mechanics.T is not None else None,
         "potential": pr.pair(d.mechanics.U) if d.mechanics.U is not None else None,
@@ -146,13 +152,13 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "accelerations": _accelerations(d, pr, skipped),
         "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],
         "forcing": [pr.pair(_shown(x)) for x in eqs.forcing],
-        "momenta": {name: pr.pair(_shown(p)) for name, p in zip(table.names, eqs.momenta, strict=True)},
+        "momenta": {name: pr.pair(momentum(d, k)) for k, name in enumerate(table.names)},
         # particles held at a fixed distance from the origin or from each other (rods for the drawing)
         "fixed_distances": fixed_distances(d),
         "generalized_forces": {name: pr.pair(f) for name, f in zip(table.names, d.mechanics.Q, strict=True) if f != 0},
         "cyclic": list(en.cyclic),
         "conserved": [
-            {"name": c.name, "latex_name": c.latex_name, **pr.pair(_shown(c.expr)), "reason": c.reason}
+            {"name": c.name, "latex_name": c.latex_name, **pr.pair(conserved_form(d, pr, c.expr)), "reason": c.reason}
             for c in en.conserved
         ],
         "explicit_time_derivative": pr.pair(en.dL_dt),
@@ -182,7 +188,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         result["effective_potential"] = {
             "coordinate": red.coordinate,
             "momenta": [s.name for s in red.momenta],
-            "potential": pr.pair(red.effective_potential),
+            "potential": pr.pair(effective_potential(d), red.momenta[0] if red.momenta else None),
             "mass": pr.pair(red.effective_mass),
             "condition": pr.pair(red.equilibrium_condition),
             "omega_squared": pr.pair(red.omega_squared_at),
@@ -294,6 +300,16 @@ def unit_gradient(f: ConstraintForce) -> tuple[sp.Expr, ...]:
     return tuple(e / norm for e in f.gradient)
 
 
+def _original(tr: Transformed, expr: sp.Expr) -> sp.Expr:
+    """A conserved quantity of the new coordinates in the original ones, by meaning: a momentum grouped by
+    velocity, an energy with its springs' squares (½k(x₂ − x₁ − l₀)², never multiplied out)."""
+    back = tr.to_original(expr)
+    velocities = sorted((s for s in back.free_symbols if s.name.endswith("_dot")), key=str)
+    if sp.Poly(back, *velocities).total_degree() <= 1 if velocities else False:
+        return _show(meaning.by_velocity(back, velocities))
+    return _show(meaning.springs(back, tr.original.q))
+
+
 def transformed_json(tr: Transformed) -> dict[str, Any]:
     """The derivation again in the declared new coordinates, with the maps between the two sets."""
     d = tr.derivation
@@ -309,7 +325,7 @@ def transformed_json(tr: Transformed) -> dict[str, Any]:
         "lagrangian": pr.pair(new_lagrangian(tr)),
         **{key: full[key] for key in ("accelerations", "momenta", "mass_matrix", "cyclic", "effective_potential")},
         "conserved": [
-            {**c, "original": old.pair(_show(tr.to_original(by_name[c["name"]].expr)))} for c in full["conserved"]
+            {**c, "original": old.pair(_original(tr, by_name[c["name"]].expr))} for c in full["conserved"]
         ],
         "inertia": {n: pr.pair(m) for n, m in zip(names, tr.inertia, strict=True)},
         "reduced_mass": pr.pair(tr.reduced_mass) if tr.reduced_mass is not None else None,
@@ -341,6 +357,7 @@ def first_stage(d: Derivation) -> dict[str, Any]:
             "coordinates": list(table.names),
             "angles": angle_coordinates(d),
             "symbols": symbol_names(d),
+            "notation": notation.table(d),
             "parameters": parameters_json(d.system.parameters),
             "equations_of_motion": [
                 {"coordinate": name, **pair} for name, pair in zip(table.names, equations, strict=True)

@@ -106,6 +106,10 @@ class NormalModes:
     found: int = 0  # equilibria found (more than listed when capped at MAX_EQUILIBRIA)
     angles_only: bool = False  # every coordinate is an angle, so the search covered all of configuration space
     family: bool = False  # a closed-form solution leaves a coordinate free (shown at 0)
+    # the closed-form families: each a coordinate's name -> its value in the coordinates left free
+    families: tuple[dict[str, sp.Expr], ...] = ()
+    everywhere: bool = False  # V is constant and nothing else pushes: every configuration is an equilibrium
+    singular_exact: tuple[dict[str, sp.Expr] | None, ...] = ()  # the closed forms of ``singular``, where known
 
 
 def defaults(d: Derivation) -> dict[sp.Symbol, float]:
@@ -199,11 +203,12 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
         M, G = M.xreplace({t: 0}), G.xreplace({t: 0})
     nonnegative = {i for i, name in enumerate(table.names) if name in d.system.nonnegative}
 
-    points, complete, periodic, family = _equilibria(d, g_exprs, q, t, timed_g, nonnegative, values, k)
+    points, complete, periodic, families = _equilibria(d, g_exprs, q, t, timed_g, nonnegative, values, k)
     # K = dg/dq
     J = sp.Matrix([[sp.diff(e, s) for s in q] for e in g_exprs])
     equilibria: list[Equilibrium] = []
     singular: list[dict[str, float]] = []
+    singular_exact: list[dict[str, sp.Expr] | None] = []
     kinks: list[dict[str, float]] = []
     unclassified: list[dict[str, float]] = []
     damped = False
@@ -218,6 +223,7 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
         e = _linearized(d, M, J, G, exact, x, values)
         if e is None:
             singular.append(position)
+            singular_exact.append({s.name: v for s, v in exact.items()} if exact is not None else None)
         elif e == "kink":
             kinks.append(position)
         else:
@@ -228,7 +234,7 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
         # (imported here: the steady motions build on this module's Equilibrium and helpers)
         from app.engine.steady import relative
 
-        equilibria.extend(relative(d, momenta))
+        equilibria.extend(_without_mirrors(d, relative(d, momenta)))
     note = ""
     if not (equilibria or singular or kinks or unclassified):
         note = (
@@ -253,7 +259,10 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
         tuple(unclassified),
         len(points),
         bool(periodic) and all(periodic),
-        family,
+        bool(families),
+        tuple({s.name: v for s, v in sol.items()} for sol in families),
+        all(e == 0 for e in g_exprs),
+        tuple(singular_exact),
     )
 
 
@@ -278,12 +287,14 @@ def _equilibria(
     nonnegative: set[int],
     values: Mapping[sp.Symbol, float],
     k: list[float],
-) -> tuple[list[tuple[dict[sp.Symbol, sp.Expr] | None, np.ndarray]], bool, list[bool], bool]:
+) -> tuple[
+    list[tuple[dict[sp.Symbol, sp.Expr] | None, np.ndarray]], bool, list[bool], list[dict[sp.Symbol, sp.Expr]]
+]:
     """Closed-form and numerical roots merged, whether the list is provably complete, which q are angles,
-    and whether a closed form leaves a coordinate free."""
+    and the closed-form families (solutions that leave a coordinate free)."""
     if all(e == 0 for e in g_exprs):
         # nothing ever pushes: every configuration is an equilibrium (shown at q = 0)
-        return [({s: sp.Integer(0) for s in q}, np.zeros(len(q)))], True, [False] * len(q), True
+        return [({s: sp.Integer(0) for s in q}, np.zeros(len(q)))], True, [False] * len(q), [{}]
     args = [*q, *d.table.params]
     at_zero = [e.xreplace({t: 0}) for e in g_exprs]
     J = [[sp.diff(e, s) for s in q] for e in at_zero]
@@ -301,7 +312,7 @@ def _equilibria(
                     np.abs(every(*x, *k, s)).max() <= 1e-8 * max(1.0, float(np.abs(jac(*x, *k)).max())) for s in TIMES
                 )
             ]
-        return [(None, x) for x in found], False, periodic, False
+        return [(None, x) for x in found], False, periodic, []
     solutions = modes_exact.solve(g_exprs, q, d)
     exact_points: list[tuple[dict[sp.Symbol, sp.Expr], np.ndarray]] = []
     for sol in solutions or []:
@@ -329,11 +340,36 @@ def _equilibria(
         if not any(roots.same_point(x, y, periodic) for _, y in exact_points)
         and not any(_on_family(sol, q, x, values, periodic) for sol in families)
     ]
-    merged += [(None, x) for x in extra]
+    merged += [(_snapped(g_exprs, q, x, periodic), x) for x in extra]
     # the numerical search may miss exact ones that it did not reach, never the other way round
     complete = solutions is not None and not extra and modes_exact.polynomial(g_exprs, q)
     merged.sort(key=lambda p: tuple(p[1]))
-    return merged, complete, periodic, bool(families)
+    return merged, complete, periodic, families
+
+
+# values a numerical root is tried at exactly: 0 and, for an angle, the quarter turns
+_ROUND = (sp.Integer(0), sp.pi, -sp.pi, sp.pi / 2, -sp.pi / 2)
+
+
+def _snapped(
+    g_exprs: list[sp.Expr], q: list[sp.Symbol], x: np.ndarray, periodic: list[bool]
+) -> dict[sp.Symbol, sp.Expr] | None:
+    """A numerical root in closed form when every coordinate is within rounding of 0 (or of a quarter turn, for an
+    angle) and every condition there is exactly zero for all parameter values (θ = π, not 3.14159); else None."""
+    at: dict[sp.Symbol, sp.Expr] = {}
+    for i, s in enumerate(q):
+        near = [c for c in (_ROUND if i < len(periodic) and periodic[i] else _ROUND[:1]) if abs(float(x[i]) - float(c)) < 1e-9]
+        if not near:
+            return None
+        at[s] = near[0]
+    try:
+        # exactly zero, symbolically (with the parameters left as symbols; sin π and cos(π/2) evaluate to 0
+        # on substitution): no tolerance decides it
+        if all(sp.expand(sp.sympify(e).xreplace(at)) == 0 for e in g_exprs):
+            return at
+    except (TypeError, ValueError, NotImplementedError):
+        return None
+    return None
 
 
 def _on_family(
@@ -425,3 +461,35 @@ def _modes(
                 break
         out.append(Mode(float(w), shape, match))
     return tuple(out)
+
+
+def _without_mirrors(d: Derivation, steady: list[Equilibrium]) -> list[Equilibrium]:
+    """Each steady motion once: r₀ < 0 is left out when r₀ > 0 is listed and every body is at the same place at
+    (−r, φ + π) as at (r, φ), φ each cyclic angle (the spherical pendulum's cone at −θ₀ is the cone at θ₀ traced
+    from the other side).  Decided on the bodies' positions, so only for systems declared by their particles."""
+    particles = d.system.particles
+    if not particles or not steady:
+        return steady
+    table = d.table
+    r = table.q[table.names.index(steady[0].coordinates[0])]
+    shift = {s: s + sp.pi for s in table.q if s != r}
+    flip = {r: -r, **shift}
+    values = defaults(d)
+    rng = np.random.default_rng(11)
+    for particle in particles:
+        for axis in particle.position:
+            x = sp.sympify(axis, locals={s.name: s for s in (*table.q, *table.params, table.t)})
+            # the same position after the map, at a few random configurations
+            for _ in range(3):
+                point = {**values, **{s: float(v) for s, v in zip(table.q, rng.uniform(-1.3, 1.3, len(table.q)), strict=True)}}
+                if abs(_numeric(x.xreplace(flip), point) - _numeric(x, point)) > 1e-9 * max(1.0, abs(_numeric(x, point))):
+                    return steady
+    kept = []
+    for e in steady:
+        x0 = e.position[e.coordinates[0]]
+        mirrored = any(
+            f is not e and abs(f.position[f.coordinates[0]] + x0) <= 1e-9 * max(1.0, abs(x0)) for f in steady
+        )
+        if not (mirrored and x0 < 0):
+            kept.append(e)
+    return kept

@@ -61,7 +61,25 @@ def solve(g_exprs: list[sp.Expr], q: list[sp.Symbol], d: Derivation) -> list[dic
     )
     if found is None:
         return None
-    return [{k.xreplace(back): v.xreplace(back) for k, v in sol.items()} for sol in found]
+    return [{k.xreplace(back): without_atan(v.xreplace(back)) for k, v in sol.items()} for sol in found]
+
+
+def without_atan(value: sp.Expr) -> sp.Expr:
+    """SymPy's half-angle roots 2 atan(√a) written as a textbook does, acos((1 − a)/(1 + a)).
+
+    For u ≥ 0, tan(φ/2) = u gives cos φ = (1 − u²)/(1 + u²) with φ = 2 atan u in [0, π), where acos is the
+    inverse: the same angle.  A principal square root is never negative; where it is not real, the root is
+    not real either and is dropped by the caller.  So the bead on a turning hoop sits at acos(g/(Rω²)), and
+    sin² + cos² of it collapses in M and K (cos(acos c) = c, sin(acos c) = √(1 − c²))."""
+
+    def half_angle(e: sp.Expr) -> bool:
+        return isinstance(e, sp.atan) and isinstance(e.args[0], sp.Pow) and e.args[0].exp == sp.Rational(1, 2)
+
+    def acos_half(e: sp.Expr) -> sp.Expr:
+        u2 = e.args[0].base
+        return sp.acos(sp.factor(sp.cancel(sp.together((1 - u2) / (1 + u2))))) / 2
+
+    return value.replace(half_angle, acos_half) if value.has(sp.atan) else value
 
 
 def cheap(expr: sp.Expr) -> sp.Expr:

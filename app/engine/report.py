@@ -14,11 +14,11 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine import textbook
+from app.engine import meaning, notation, textbook
 from app.engine.action_step import KEY as ACTION_KEY
 from app.engine.action_step import action_step
 from app.engine.breaking import broken, broken_row, single
-from app.engine.budget import memoized, unbudgeted
+from app.engine.budget import memoized, pythagoras, unbudgeted
 from app.engine.derive import Derivation
 from app.engine.forms import settle, textbook_form, use_names
 from app.engine.names import unicode
@@ -44,19 +44,19 @@ class Printer:
         """The expression's textbook form (app.engine.forms): what both its text and its LaTeX show."""
         return textbook_form(expr, self.names)
 
-    def tex(self, expr: Any) -> str:
-        """LaTeX of the textbook form, in a textbook's order."""
+    def tex(self, expr: Any, first: sp.Symbol | None = None) -> str:
+        """LaTeX of the textbook form, in a textbook's order (``first``: the term holding it leads a sum)."""
         shown = self.form(expr)
         with unbudgeted():  # printing must not eat the simplifications' share of the display budget
-            return textbook.latex(shown, self.names)
+            return textbook.latex(shown, self.names, first)
 
-    def pair(self, expr: sp.Expr) -> dict[str, Any]:
+    def pair(self, expr: sp.Expr, first: sp.Symbol | None = None) -> dict[str, Any]:
         """An expression in the document: the text of its textbook form, the LaTeX of the same form, and the
         tree the browser evaluates (of the engine's own expression; None when it has none: a function
         outside the allowlist, or too large for a figure)."""
         shown = self.form(expr)
         with unbudgeted():
-            tex = textbook.latex(shown, self.names)
+            tex = textbook.latex(shown, self.names, first)
         # a long result broken across lines, as in the steps (the results box is narrower than a step)
         return {"sympy": sp.sstr(shown), "latex": broken(tex), "tree": maybe_of_sympy(expr)}
 
@@ -161,6 +161,30 @@ def energies(d: Derivation, pr: Printer) -> tuple[sp.Expr, sp.Expr]:
     energy = settle(pr.form(m.T) + pr.form(m.U), pr.names)
     same = en.h_equals_e and sp.expand(en.hamiltonian - en.energy) == 0
     return (energy if same else pr.form(en.hamiltonian)), energy
+
+
+def momentum(d: Derivation, k: int) -> sp.Expr:
+    """The k-th generalized momentum grouped by velocity, each coefficient factored: (M + m)Ẋ + mḊ cos α."""
+    return display(meaning.by_velocity(d.equations.momenta[k], d.table.qd))
+
+
+def effective_potential(d: Derivation) -> sp.Expr:
+    """U_eff as its centrifugal piece plus the potential's: p_θ²/(2mr²) + ½kr²."""
+    red = d.reduction
+    assert red is not None
+    return meaning.pieces(red.effective_potential, red.momenta, d.table.q)
+
+
+def conserved_form(d: Derivation, pr: Printer, expr: sp.Expr) -> sp.Expr:
+    """A conserved quantity as a textbook writes it: the energy as the document's E (its bodies' and springs'
+    pieces, T's form plus U's), h as the document's h, a momentum grouped by velocity."""
+    en = d.energetics
+    h, energy = energies(d, pr)
+    if sp.expand(expr - en.energy) == 0:
+        return energy
+    if sp.expand(expr - en.hamiltonian) == 0:
+        return h
+    return display(meaning.by_velocity(expr, d.table.qd))
 
 
 def build_steps(d: Derivation) -> list[dict[str, str]]:
@@ -269,6 +293,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             )
         )
     shown_equations = equations(d, pr)
+    Mt, Mu = notation.letter("mass_matrix", d), notation.text("mass_matrix", d)
     steps.append(
         _step(
             "euler-lagrange",
@@ -288,9 +313,9 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         _step(
             "mass-matrix",
             "Mass matrix and forcing",
-            [rf"M = {pr.tex(eqs.mass_matrix.applyfunc(pr.form))}", rf"f = {pr.tex(eqs.forcing.applyfunc(pr.form))}"],
+            [rf"{Mt} = {pr.tex(eqs.mass_matrix.applyfunc(pr.form))}", rf"f = {pr.tex(eqs.forcing.applyfunc(pr.form))}"],
             [eqs.mass_matrix.tolist(), [display(x) for x in eqs.forcing]],
-            "The equations are linear in the accelerations, M q̈ = f, with M the Hessian of L in the velocities.",
+            f"The equations are linear in the accelerations, {Mu} q̈ = f, with {Mu} the Hessian of L in the velocities.",
         )
     )
     acc = [display(a) for a in eqs.accelerations] if eqs.closed_form else []
@@ -300,25 +325,25 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             "Accelerations",
             [f"{qddn[k]} = {pr.tex(a)}" for k, a in enumerate(acc)],
             acc,
-            "Solving M q̈ = f gives each acceleration explicitly, ready for numerical integration.",
+            f"Solving {Mu} q̈ = f gives each acceleration explicitly, ready for numerical integration.",
         )
         if eqs.closed_form  # else M⁻¹f stays factored (app.engine.lagrange.CLOSED_FORM_MAX_NODES)
         else _step(
             "accelerations",
             "Accelerations",
-            [r"\ddot{q} = M^{-1} f"],
+            [rf"\ddot{{q}} = {Mt}^{{-1}} f"],
             "M**(-1)*f",
-            "Solved symbolically, M q̈ = f gives "
-            "expressions too long to read for this many coordinates: the accelerations stay M⁻¹f, and the "
-            "numerics solve M q̈ = f by LU at every step.",
+            f"Solved symbolically, {Mu} q̈ = f gives "
+            f"expressions too long to read for this many coordinates: the accelerations stay {Mu}⁻¹f, and the "
+            f"numerics solve {Mu} q̈ = f by LU at every step.",
         )
     )
     steps.append(
         _step(
             "momenta",
             "Generalized momenta",
-            [f"p_{{{qn[k]}}} = {pr.tex(display(p))}" for k, p in enumerate(eqs.momenta)],
-            [display(p) for p in eqs.momenta],
+            [f"p_{{{qn[k]}}} = {pr.tex(momentum(d, k))}" for k in range(len(eqs.momenta))],
+            [momentum(d, k) for k in range(len(eqs.momenta))],
             "Each generalized momentum is the derivative of L with respect to that coordinate's velocity.",
         )
     )
@@ -329,10 +354,10 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
                 "Cyclic coordinates",
                 [
                     rf"\frac{{\partial L}}{{\partial {qn[table.names.index(c)]}}} = 0 \;\Rightarrow\; "
-                    rf"p_{{{qn[table.names.index(c)]}}} = {pr.tex(display(eqs.momenta[table.names.index(c)]))} = \text{{const}}"
+                    rf"p_{{{qn[table.names.index(c)]}}} = {pr.tex(momentum(d, table.names.index(c)))} = \text{{const}}"
                     for c in en.cyclic
                 ],
-                [display(eqs.momenta[table.names.index(c)]) for c in en.cyclic],
+                [momentum(d, table.names.index(c)) for c in en.cyclic],
                 "A coordinate missing from L (with no force on it) has a momentum that never changes.",
             )
         )
@@ -413,10 +438,11 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
             "effective-potential",
             "Effective potential",
             [
-                rf"U_\text{{eff}}({rn}) = {pr.tex(red.effective_potential)}",
+                # the centrifugal piece first, as a textbook writes U_eff
+                rf"U_\text{{eff}}({rn}) = {pr.tex(effective_potential(d), red.momenta[0] if red.momenta else None)}",
                 rf"m_\text{{eff}} = {pr.tex(red.effective_mass)}",
             ],
-            [red.effective_potential, red.effective_mass],
+            [effective_potential(d), red.effective_mass],
             "With the cyclic motion folded in, the remaining coordinate moves like a particle of mass m_eff in the "
             "potential U_eff.",
         )
@@ -441,19 +467,23 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
             "with m_eff and U_eff as in the step before.",
         )
     )
+    omega = notation.letter("frequency", d)
     if red.equilibria:
-        rows = [rf"{rn}_0 = {pr.tex(e.position)},\quad \omega^2 = {pr.tex(e.omega_squared)}" for e in red.equilibria]
+        rows = [rf"{rn}_0 = {pr.tex(e.position)},\quad {omega}^2 = {pr.tex(e.omega_squared)}" for e in red.equilibria]
         sym: Any = [(e.position, e.omega_squared) for e in red.equilibria]
         why = "Equilibria make U_eff′ vanish; about each, ω² = U_eff″/m_eff (oscillation when positive, instability when negative)."
     else:
-        rows = [
-            rf"U_\text{{eff}}'({rn}_0) = {pr.tex(red.equilibrium_condition.xreplace({r: sp.Symbol(r.name + '0')}))} = 0",
-            rf"\omega^2 = \frac{{U_\text{{eff}}''}}{{m_\text{{eff}}}} = {pr.tex(red.omega_squared_at)}",
-        ]
-        sym = [red.equilibrium_condition, red.omega_squared_at]
         if not red.equilibrium_condition.has(r):
+            # a force that never vanishes: no equilibrium, so no frequency about one either
+            rows = [rf"U_\text{{eff}}' = {pr.tex(red.equilibrium_condition)} \neq 0", r"\text{no equilibrium}"]
+            sym = [red.equilibrium_condition]
             why = f"U_eff′ does not depend on {unicode(red.coordinate)} and is not zero, so there is no equilibrium."
         else:
+            rows = [
+                rf"U_\text{{eff}}'({rn}_0) = {pr.tex(red.equilibrium_condition.xreplace({r: sp.Symbol(r.name + '0')}))} = 0",
+                rf"{omega}^2 = \frac{{U_\text{{eff}}''}}{{m_\text{{eff}}}} = {pr.tex(pythagoras(red.omega_squared_at))}",
+            ]
+            sym = [red.equilibrium_condition, pythagoras(red.omega_squared_at)]
             why = (
                 f"No closed-form root was found; the condition and the frequency hold at any {unicode(red.coordinate + '0')} "
                 "that satisfies it."

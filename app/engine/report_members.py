@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from app.engine import meaning, notation
 from app.engine.constraints import ConstraintForce
 from app.engine.report import Printer, _mapping_step, _step, display
 from app.engine.transform import Transformed, collected, compact
@@ -72,7 +73,7 @@ def transform_steps(tr: Transformed) -> list[dict[str, str]]:
         ),
     ]
     M = d.equations.mass_matrix
-    rows = [rf"M = {pr.tex(M.applyfunc(display))}"]
+    rows = [rf"{notation.letter('mass_matrix', d)} = {pr.tex(M.applyfunc(display))}"]
     why = "The mass matrix in the new coordinates."
     if tr.decoupled:
         why = "The mass matrix is diagonal: each new coordinate moves with its own inertia, unmixed with the others."
@@ -92,13 +93,16 @@ def transform_steps(tr: Transformed) -> list[dict[str, str]]:
     )
     for c in d.energetics.conserved:
         if c.name.startswith("p_"):
-            original = display(tr.to_original(c.expr))
+            back = tr.to_original(c.expr)
+            # each side grouped by its own velocities: (m₁ + m₂)Ẋ = m₁ẋ₁ + m₂ẋ₂
+            original = display(meaning.by_velocity(back, sorted((s for s in back.free_symbols if s.name.endswith("_dot")), key=str)))
+            new = display(meaning.by_velocity(c.expr, d.table.qd))
             steps.append(
                 _step(
                     f"conserved:{c.name}",
                     f"Conserved {c.name}",
-                    [f"{c.latex_name} = {pr.tex(display(c.expr))} = {old.tex(original)}"],
-                    [display(c.expr), original],
+                    [f"{c.latex_name} = {pr.tex(new)} = {old.tex(original)}"],
+                    [new, original],
                     f"{c.reason} Written in the original coordinates it is the quantity on the right.",
                 )
             )

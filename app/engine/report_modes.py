@@ -12,17 +12,20 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine.budget import memoized
+from app.engine import notation
+from app.engine.budget import memoized, pythagoras
 from app.engine.derive import Derivation
 from app.engine.hamilton import Hamilton
 from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, NormalModes
 from app.engine.report import Printer, _step, display, plain_name
+from app.engine.textbook import unicode_text
 
 
 def _show(expr: sp.Expr) -> sp.Expr:
     """Hamilton's expressions are compact as built: only common factors are pulled out (once per document:
     the steps and the JSON block show the same ones)."""
-    return memoized("hamilton-shown", expr, lambda: sp.factor_terms(expr))
+    # (sin² + cos² of one argument collapsed first: p_θ/(mR²), not p_θ/(mR² sin² θ + mR² cos² θ))
+    return memoized("hamilton-shown", expr, lambda: sp.factor_terms(pythagoras(expr)))
 
 
 def hamilton_printer(d: Derivation, ham: Hamilton) -> Printer:
@@ -44,22 +47,23 @@ def hamilton_steps(d: Derivation, ham: Hamilton) -> list[dict[str, str]]:
     p_dot = [_show(x) for x in ham.p_dot]
     forced = any(f != 0 for f in d.mechanics.Q)
     offsets = any(b != 0 for b in ham.offsets)
+    Mu = notation.text("mass_matrix", d)
     return [
         _step(
             "legendre",
             "Velocities from the momenta",
             [f"{vn[k]} = {pr.tex(v)}" for k, v in enumerate(velocities)],
             velocities,
-            "The momenta are linear in the velocities, p = M q̇ + b"
+            f"The momenta are linear in the velocities, p = {Mu} q̇ + b"
             + (" (b, the momenta at rest, comes from the terms of L linear in q̇)" if offsets else "")
-            + "; solving for the velocities gives q̇ = M⁻¹ (p − b).",
+            + f"; solving for the velocities gives q̇ = {Mu}⁻¹ (p − b).",
         ),
         _step(
             "hamiltonian-pq",
             "Hamiltonian H(q, p)",
             [rf"H = \sum_k p_k \dot{{q}}_k - L = {pr.tex(H)}"],
             H,
-            "The same h, now written in the coordinates and momenta: H = ½ (p − b)·M⁻¹(p − b) − L(q, q̇ = 0).",
+            f"The same h, now written in the coordinates and momenta: H = ½ (p − b)·{Mu}⁻¹(p − b) − L(q, q̇ = 0).",
         ),
         _step(
             "hamilton-equations",
@@ -105,6 +109,54 @@ def _where(e: Equilibrium, pr: Printer, d: Derivation) -> str:
     return r",\; ".join(parts + held)
 
 
+def _family_of(e: Equilibrium, nm: NormalModes, d: Derivation) -> dict[str, sp.Expr] | None:
+    """The closed-form family of equilibria (a coordinate left free) that ``e`` was picked from, if any."""
+    if not e.exact or e.momenta:
+        return None
+    sym = {s.name: s for s in d.table.q}
+    for family in nm.families:
+        free = [n for n in e.exact if n not in family]
+        if not family or not free:
+            continue
+        zero = {sym[n]: sp.Integer(0) for n in free}
+        if all(sp.simplify(family[n].xreplace(zero) - e.exact[n]) == 0 for n in family):
+            return family
+    return None
+
+
+def _relations(family: dict[str, sp.Expr], d: Derivation) -> list[tuple[sp.Expr, sp.Expr]]:
+    """A family's conditions as a textbook writes them: the coordinates on the left, the rest on the right,
+    the right side positive (x₂ − x₁ = l₀, not x₁ = x₂ − l₀)."""
+    sym = {s.name: s for s in d.table.q}
+    q = set(d.table.q)
+    out = []
+    for name, value in family.items():
+        gap = sp.expand(sym[name] - value)
+        left = sp.Add(*[t for t in sp.Add.make_args(gap) if t.free_symbols & q])
+        right = left - gap
+        if right.could_extract_minus_sign() or (right == 0 and left.could_extract_minus_sign()):
+            left, right = -left, -right
+        out.append((left, right))
+    return out
+
+
+def _family_tex(family: dict[str, sp.Expr], pr: Printer, d: Derivation) -> str:
+    return r",\; ".join(f"{pr.tex(a)} = {pr.tex(b)}" for a, b in _relations(family, d))
+
+
+def _family_text(family: dict[str, sp.Expr], d: Derivation) -> str:
+    return ", ".join(f"{unicode_text(a)} = {unicode_text(b)}" for a, b in _relations(family, d))
+
+
+def _any(d: Derivation, pr: Printer) -> str:
+    return r"\text{any } " + r",\; ".join(pr.tex(s) for s in d.table.q)
+
+
+def _rounded(matrix: sp.Matrix) -> sp.Matrix:
+    """Numbers found numerically (a steady motion's K) to the six figures the rest of the step shows."""
+    return matrix.applyfunc(lambda x: sp.sympify(x).xreplace({f: sp.Float(f, 6) for f in sp.sympify(x).atoms(sp.Float)}))
+
+
 _KIND = {
     STABLE: "every ω² is positive, so each mode oscillates: a stable equilibrium",
     NEUTRAL: "one ω² is zero: along that mode nothing pulls back and the system drifts at constant speed "
@@ -114,8 +166,24 @@ _KIND = {
 }
 
 
-def _points(points: tuple[dict[str, float], ...], sym: dict[str, sp.Symbol], pr: Printer, label: str) -> list[str]:
-    return [r",\; ".join(f"{pr.tex(sym[n])} = {_number(v)}" for n, v in p.items()) + label for p in points]
+def _points(
+    points: tuple[dict[str, float], ...],
+    sym: dict[str, sp.Symbol],
+    pr: Printer,
+    label: str,
+    exact: tuple[dict[str, sp.Expr] | None, ...] = (),
+) -> list[str]:
+    """Points listed without modes, each coordinate in closed form where one is known (π, not 3.14159)."""
+    rows = []
+    for i, p in enumerate(points):
+        known: dict[str, sp.Expr] = (exact[i] or {}) if i < len(exact) else {}
+        rows.append(
+            r",\; ".join(
+                f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(v)}" for n, v in p.items()
+            )
+            + label
+        )
+    return rows
 
 
 def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
@@ -123,22 +191,22 @@ def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
     if nm.solved:
         return (
             "The conditions are polynomial in the coordinates and were solved exactly, so these are all the equilibria"
-            + ("; a coordinate they leave free is set to 0." if nm.family else ".")
+            + ("; where they leave a coordinate free, every state that satisfies them is one." if nm.family else ".")
         )
     some_exact = any(e.exact for e in found)
     where = f" (searched: {nm.searched})" if nm.searched else ""
     if nm.angles_only:
         # the whole configuration space was searched; only roots closer together than the search can tell apart escape
         return (
-            ("SymPy's closed forms are shown where it found them; " if some_exact else "")
+            ("Closed forms are shown where they are known; " if some_exact else "")
             + "a numerical search over a full period of every angle, at the default parameters, found "
             + (("no others" if all(e.exact for e in found) else "the rest") if some_exact else "them")
             + " (roots lying very close together could still escape it)."
         )
     if some_exact:
         return (
-            "SymPy's closed forms are shown where it found them; a numerical search at the default parameters"
-            f"{where} completed the list, so equilibria outside that range may exist."
+            "Closed forms are shown where they are known; a numerical search at the default parameters"
+            f"{where} completed the list, so others may exist outside that range."
         )
     return (
         f"The equilibria were found numerically at the default parameters{where}; others may exist outside that range."
@@ -155,17 +223,34 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
     vname = "U" if plain else "V"
     forced = any(f.xreplace(dict.fromkeys(table.qd, 0)) != 0 for f in d.mechanics.Q)
     frame = r" + \frac{\partial b}{\partial t}" if nm.moving_frame else ""
+    found = [e for e in nm.equilibria if not e.momenta]
+    # with no equilibrium, a condition is never written "= 0": a force free of q is "≠ 0", one that depends on q
+    # is shown as it is (its sentence says it has no root)
+    none = not (found or nm.singular or nm.kinks or nm.unclassified)
+    q_set = set(table.q)
     rows = [
         rf"\frac{{\partial {vname}}}{{\partial {qn[k]}}}{frame}{' - Q' if forced else ''} = {pr.tex(display(g))}"
-        + (" = 0" if g != 0 else "")
+        + ("" if g == 0 else (r" \neq 0" if not (sp.sympify(g).free_symbols & q_set) else "") if none else " = 0")
         for k, g in enumerate(nm.condition)
     ]
     if not plain:
         rows.insert(0, rf"V = -L\big|_{{\dot q = 0}} = {pr.tex(display(nm.potential))}")
-    found = [e for e in nm.equilibria if not e.momenta]
-    rows += [_where(e, pr, d) for e in found]
+    listed: list[str] = []
+    for e in found:
+        family = _family_of(e, nm, d)
+        if nm.everywhere:
+            row = r"\text{every configuration is an equilibrium}"
+        elif family is not None:
+            row = r"\text{every state with } " + _family_tex(family, pr, d)
+        else:
+            row = _where(e, pr, d)
+        if row not in listed:
+            listed.append(row)
+    if none:
+        listed.append(r"\text{no equilibrium}")
+    rows += listed
     sym = {s.name: s for s in table.q}
-    rows += _points(nm.singular, sym, pr, r"\quad (M \text{ singular})")
+    rows += _points(nm.singular, sym, pr, rf"\quad ({notation.letter('mass_matrix', d)} \text{{ singular}})", nm.singular_exact)
     rows += _points(nm.kinks, sym, pr, r"\quad (\text{at a kink of } V)")
     rows += _points(nm.unclassified, sym, pr, r"\quad (\text{coefficients change with } t)")
     why = "At rest (q̇ = 0) the state stays put where the Euler–Lagrange equations give q̈ = 0. "
@@ -176,7 +261,17 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
             "L has a term b·q̇ whose b depends on t (a moving support), so d/dt of the momentum at rest, ∂b/∂t, "
             "enters the condition as well. "
         )
-    if nm.note:
+    if nm.everywhere:
+        why += (
+            "V does not depend on the coordinates and nothing else acts on a body at rest, so every configuration "
+            "is an equilibrium"
+            + (
+                "; the velocity terms (a magnetic field, a Coriolis force) act only on moving bodies and turn them."
+                if nm.damped
+                else "."
+            )
+        )
+    elif nm.note:
         why += nm.note
     else:
         why += _how_found(nm, found)
@@ -199,7 +294,7 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         )
     steps = [_step("equilibria", "Equilibria", rows, list(nm.condition), why)]
     for i, e in enumerate(nm.equilibria, start=1):
-        steps.append(_equilibrium_step(e, pr, d, i))
+        steps.append(_equilibrium_step(e, pr, d, i, nm))
     return steps
 
 
@@ -215,15 +310,16 @@ def _exponents(e: Equilibrium) -> str:
     return r"s = " + r",\; ".join(shown)
 
 
-def _verdict(e: Equilibrium) -> str:
+def _verdict(e: Equilibrium, d: Derivation) -> str:
     lin = e.linear
+    Mu, Ku, wu = (notation.text(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
     if lin is None or not lin.moving:
-        text = _KIND[e.kind]
+        text = _KIND[e.kind].replace("ω", wu)
         return text[0].upper() + text[1:] + "."
     freq = ", ".join(_number(f) for f in lin.frequencies)
     out = (
         "The velocity terms (G, from damping, Coriolis or magnetic forces) enter the motion near it: with ε = v e^{st} "
-        "the exponents s are the eigenvalues of [[0, I], [−M⁻¹K, −M⁻¹G]]. "
+        f"the exponents s are the eigenvalues of [[0, I], [−{Mu}⁻¹{Ku}, −{Mu}⁻¹G]]. "
     )
     if e.kind == "unstable":
         out += "One has a positive real part, so small displacements grow: an unstable equilibrium."
@@ -235,18 +331,38 @@ def _verdict(e: Equilibrium) -> str:
         out += "Every one is imaginary, so small motions oscillate" + (f" (frequencies {freq})" if freq else "") + "."
         if lin.gyroscopic:
             out += (
-                " K alone has a negative ω² (the potential is not a minimum there): the gyroscopic terms hold it, "
+                f" {Ku} alone has a negative {wu}² (the potential is not a minimum there): the gyroscopic terms hold it, "
                 "a gyroscopically stable equilibrium."
             )
     return out
 
 
-def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int) -> dict[str, str]:
+def _equilibrium_step(
+    e: Equilibrium, pr: Printer, d: Derivation, number: int, nm: NormalModes
+) -> dict[str, str]:
     """The modes about the ``number``-th equilibrium (key ``normal-modes:number``, or ``steady-motion:number``
     about a steady motion of a reduction)."""
     sym = {s.name: s for s in d.table.q}
-    where = _where(e, pr, d)
-    rows = [rf"M = {pr.tex(e.mass)},\quad K = {pr.tex(e.stiffness)}"]
+    family = _family_of(e, nm, d)
+    if nm.everywhere:
+        where, about = _any(d, pr), "any configuration"
+    elif family is not None:
+        where, about = r"\text{every state with } " + _family_tex(family, pr, d), "the equilibria " + _family_text(family, d)
+        free = [sym[n] for n in e.coordinates if n not in family]
+        at = {sym[n]: v for n, v in family.items()}
+        # M and K the same all along the family, or given where it was picked (the free coordinates at 0)
+        if any((x.xreplace(at)).has(*free) for x in [*d.equations.mass_matrix, *nm.condition]):
+            where += r"\quad (\text{at } " + r",\; ".join(f"{pr.tex(s)} = 0" for s in free) + ")"
+            about += " (at " + ", ".join(f"{plain_name(s.name)} = 0" for s in free) + ")"
+    else:
+        where = _where(e, pr, d)
+        about = ", ".join(
+            f"{plain_name(n)} = {unicode_text(e.exact[n]) if e.exact and n in e.exact else _number(v)}"
+            for n, v in e.position.items()
+        )
+    Mt, Kt, wt = (notation.letter(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
+    Mu, Ku, wu = (notation.text(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
+    rows = [rf"{Mt} = {pr.tex(_rounded(e.mass))},\quad {Kt} = {pr.tex(_rounded(e.stiffness))}"]
     for i, m in enumerate(e.modes, start=1):
         value = (
             pr.tex(m.exact) + r" \approx " + _number(m.omega_squared)
@@ -254,7 +370,7 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int) -
             else _number(m.omega_squared)
         )
         shape = ", ".join(f"{pr.tex(sym[n])}: {_number(a)}" for n, a in zip(e.coordinates, m.shape, strict=True))
-        rows.append(rf"\omega_{{{i}}}^2 = {value},\quad \text{{shape }} ({shape})")
+        rows.append(rf"{wt}_{{{i}}}^2 = {value},\quad \text{{shape }} ({shape})")
     moving = e.linear is not None and e.linear.moving
     if moving:
         rows.append(_exponents(e))
@@ -263,25 +379,25 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int) -
         title = f"Small oscillations about the steady motion at {plain_name(e.coordinates[0])} = {_number(e.position[e.coordinates[0]])}"
         why = (
             "With the conserved momenta held at the values shown, the reduced coordinate sits at a minimum or maximum of "
-            "U_eff: the body moves steadily (a circular or conical orbit), and ω² = U_eff''/m_eff. "
+            f"U_eff: the body moves steadily (a circular or conical orbit), and {wu}² = U_eff''/m_eff. "
         )
     else:
         key = f"normal-modes:{number}"
-        title = "Normal modes about " + ", ".join(f"{plain_name(n)} = {_number(v)}" for n, v in e.position.items())
+        title = "Normal modes about " + about
         why = (
-            "Near the equilibrium M ε̈ + K ε = 0 with M the mass matrix and K the Hessian of the potential there; "
-            "ε = a cos ωt solves it when (K − ω² M) a = 0, so each ω² is an eigenvalue of K relative to M and a its shape "
-            "(numbers at the default parameters)"
+            f"Near the equilibrium {Mu} ε̈ + {Ku} ε = 0 with {Mu} the mass matrix and {Ku} the Hessian of the potential "
+            f"there; ε = a cos {wu}t solves it when ({Ku} − {wu}² {Mu}) a = 0, so each {wu}² is an eigenvalue of {Ku} "
+            f"relative to {Mu} and a its shape (numbers at the default parameters)"
             + (", the shapes of the motion without its velocity terms. " if moving else ". ")
         )
     if e.linear is not None and e.linear.definite < 0:
         why += (
             "The mass matrix is negative definite here (L = U − T, or a negative mass): the equations are the same as "
-            "for −L, so ω² and the verdict are unchanged. "
+            f"for −L, so {wu}² and the verdict are unchanged. "
         )
     elif e.linear is not None and e.linear.definite == 0:
         why += "The mass matrix is indefinite here (the kinetic energy is not positive for every velocity). "
-    why += _verdict(e)
+    why += _verdict(e, d)
     return _step(
         key, title, [where, *rows], [e.mass.tolist(), e.stiffness.tolist(), [m.omega_squared for m in e.modes]], why
     )

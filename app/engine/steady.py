@@ -83,7 +83,9 @@ def relative(d: Derivation, momenta: Mapping[str, float]) -> list[Equilibrium]:
             m0, k0 = _finite(mass, r, exact, values), _finite(potential, r, exact, values, second=True)
             m0, k0 = modes_exact.cheap(m0), modes_exact.cheap(k0)
         else:
-            m0, k0 = sp.sympify(m0.xreplace(values)).evalf(), sp.sympify(k0.xreplace(values)).evalf()
+            # an effective mass free of r (m R² of a spherical pendulum) stays as the reader knows it
+            m0 = m0 if not mass.has(r) else sp.sympify(m0.xreplace(values)).evalf()
+            k0 = sp.sympify(k0.xreplace(values)).evalf()
         Mm, Km = sp.Matrix([[m0]]), sp.Matrix([[k0]])
         # the reduced motion has no velocity term (a linear one is a total derivative in one dimension)
         lin = linearize(_array(Mm, values), _array(Km, values), np.zeros((1, 1)))

@@ -27,7 +27,7 @@ import sympy as sp
 from sympy.printing.latex import LatexPrinter
 from sympy.printing.str import StrPrinter
 
-from app.engine.budget import larger_than, memoized
+from app.engine.budget import larger_than, memoized, pythagoras
 from app.engine.names import unicode
 
 NODE_BUDGET = 600
@@ -83,7 +83,8 @@ class _Printer(LatexPrinter):
         negative, term = signed
         if top:
             own = self.first is not None and term.has(self.first)
-            return (-self.level(term), not own, negative, sp.default_sort_key(term))
+            # the term holding ``first`` leads whatever its level (U_eff's centrifugal piece before −mgD sin α)
+            return (not own, -self.level(term), negative, sp.default_sort_key(term))
         rank = _parameter_rank(term.name) if term.is_Symbol and term not in self.moving else (9, "", "")
         if getattr(self, "_constants_first", False):
             return (negative, not self.constant(term), rank, sp.default_sort_key(term))
@@ -214,10 +215,11 @@ def latex(expr: Any, names: dict[sp.Symbol, str], first: sp.Symbol | None = None
 
     ``first``: in a sum, the term holding this symbol comes first (an equation's own acceleration).
     """
+    if isinstance(expr, sp.MatrixBase):
+        # a mutable matrix is no sp.Basic: each entry in textbook order all the same (m R², not R² m)
+        return _Printer(names, _moving(names, sp.ImmutableMatrix(expr)), first).doprint(expr)
     if not isinstance(expr, sp.Basic) or larger_than(expr, NODE_BUDGET):
         return sp.latex(expr, symbol_names=names)
-    if isinstance(expr, sp.MatrixBase):  # mutable: printed each time
-        return _Printer(names, _moving(names, expr), first).doprint(expr)
     # a document prints most expressions several times (the steps and the results box; a double pendulum's
     # 161 printings are of 62 expressions): each once per document and set of names
     key = (expr, tuple(names.items()), first)
@@ -252,6 +254,9 @@ def normalised(
     """
     if larger_than(residual, NODE_BUDGET):
         return residual
+    # sin²α + cos²α = 1 of one argument never survives into an equation (a particle on a cone: r̈, not
+    # r̈/(sin²α + cos²α)): collapsed in the residual and in the coefficient it is divided by
+    residual, coefficient = pythagoras(residual), pythagoras(coefficient)
     moving = _moving(names, residual) | _moving(names, coefficient)
     expanded = sp.expand(residual)
     scaled_by = sp.factor_terms(coefficient)
@@ -301,6 +306,9 @@ class _Unicode(StrPrinter):
 
     def _print_Rational(self, expr: sp.Rational) -> str:
         return f"{expr.p}/{expr.q}" if expr.q != 1 else str(expr.p)
+
+    def _print_Pi(self, expr: sp.Expr) -> str:
+        return "π"
 
     def _print_Function(self, expr: sp.Function) -> str:
         (arg,) = expr.args if len(expr.args) == 1 else (None,)

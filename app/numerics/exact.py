@@ -1,4 +1,5 @@
-"""Exact solutions, for checking errors: the pendulum (Jacobi elliptic functions) and constant acceleration.
+"""Exact solutions, for checking errors: the pendulum (Jacobi elliptic functions), constant acceleration,
+and linear systems with constant coefficients (their normal modes, through the matrix exponential).
 
 Which solution applies is found by probing the generated right-hand side, not
 by trusting a scene's name: a one-coordinate system whose acceleration is
@@ -13,6 +14,12 @@ Pendulum, with k^2 = sin^2(q0/2) + q_dot0^2 / (4 w0^2) (the energy level):
 * rotation (k > 1): q/2 = am(w, m'), q_dot = 2 k w0 dn(w, m') (signed), w = k w0 t + w0',
   m' = 1 / k^2.
 
+Linear with constant coefficients (coupled oscillators, two masses on a spring): the state y = (q, q̇)
+obeys ẏ = A y + c with A and c constant, probed the same way (the right-hand side is affine in y at
+every probed time).  With z = (y, 1), ż = B z and B = [[A, c], [0, 0]], so z(t) = exp(B t) z(0): the
+superposition of the normal modes e^{st} (s = ±iω for each oscillation, and a drift t for a zero ω),
+including the free drift, whose Jordan block has no basis of modes of its own.
+
 ``scipy.special.ellipj`` loses all accuracy when m is within ~1e-12 of 1 (near
 the separatrix), so everything is evaluated in mpmath at 40 digits, with
 1 - m computed from the float inputs in that precision.
@@ -25,6 +32,7 @@ from collections.abc import Callable
 
 import mpmath
 import numpy as np
+import scipy.linalg
 
 from app.numerics.system import NumericSystem
 
@@ -144,6 +152,37 @@ def constant_accelerations(system: NumericSystem, k: np.ndarray) -> np.ndarray |
     return a if all(np.max(np.abs(v - a)) <= 1e-13 * scale for v in values) else None
 
 
+def linear_motion(B: np.ndarray, y0: np.ndarray) -> Solution:
+    """y(t) from ż = B z, z = (y, 1): z(t) = exp(B t) z(0), for each t (scaling and squaring)."""
+    z0 = np.append(y0, 1.0)
+
+    def solution(t: np.ndarray) -> np.ndarray:
+        return np.array([(scipy.linalg.expm(B * float(ti)) @ z0)[:-1] for ti in np.asarray(t, dtype=float)])
+
+    return solution
+
+
+def linear_coefficients(system: NumericSystem, k: np.ndarray) -> np.ndarray | None:
+    """B = [[A, c], [0, 0]] when ẏ = A y + c with A, c constant (checked at the probe states); else None."""
+    m = 2 * system.n
+    try:
+        c = np.asarray(system.f(0.0, np.zeros(m), k), dtype=float)
+        # an affine f: each column of A is f(e_j) − f(0) exactly (up to rounding), for any step
+        A = np.column_stack([np.asarray(system.f(0.0, np.eye(m)[j], k), dtype=float) - c for j in range(m)])
+        probes = [(t, y, np.asarray(system.f(t, y, k), dtype=float)) for t, y in _probe_states(system)]
+    except (ArithmeticError, ValueError):
+        return None
+    if not (np.all(np.isfinite(A)) and np.all(np.isfinite(c))):
+        return None
+    for _, y, f in probes:
+        scale = max(float(np.max(np.abs(f))), float(np.max(np.abs(A) @ np.abs(y))), float(np.max(np.abs(c))), 1e-300)
+        if np.max(np.abs(f - (A @ y + c))) > 1e-11 * scale:
+            return None
+    B = np.zeros((m + 1, m + 1))
+    B[:m, :m], B[:m, m] = A, c
+    return B
+
+
 def exact_solution(system: NumericSystem, k: np.ndarray, y0: np.ndarray) -> tuple[Solution, str] | None:
     """An exact solution for this system and start, with a sentence saying which; None when none is known."""
     w2 = pendulum_frequency(system, k)
@@ -154,4 +193,10 @@ def exact_solution(system: NumericSystem, k: np.ndarray, y0: np.ndarray) -> tupl
     a = constant_accelerations(system, k)
     if a is not None:
         return constant_acceleration(a, y0), "exact constant-acceleration motion q = q0 + q̇0 t + a t²/2"
+    B = linear_coefficients(system, k)
+    if B is not None:
+        return linear_motion(B, np.asarray(y0, dtype=float)), (
+            "exact solution of the linear equations (constant coefficients): the superposition of the normal "
+            "modes, y(t) = exp(Bt) y(0)"
+        )
     return None

@@ -57,6 +57,14 @@ def _steps(doc: dict[str, Any]) -> list[dict[str, Any]]:
     ]
 
 
+def letter_of(doc: dict[str, Any], meaning: str, default: str) -> str:
+    """The document's letter (LaTeX) for a derived quantity, from its Symbols table (app/engine/notation.py)."""
+    return next(
+        (r["latex"] for r in doc.get("notation") or [] if r["kind"] == "derived" and r["meaning"].startswith(meaning)),
+        default,
+    )
+
+
 def _summary(doc: dict[str, Any]) -> dict[str, Any]:
     q = doc["coordinates"]
     conserved = [
@@ -69,7 +77,7 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         # none in closed form for a large system (listed in "skipped"): M⁻¹f
         "accelerations": [f"{ddot[c]} = {doc['accelerations'][c]['latex']}" for c in q]
         if doc["accelerations"]
-        else [r"\ddot{q} = M^{-1} f"],
+        else [rf"\ddot{{q}} = {letter_of(doc, 'mass matrix', 'M')}^{{-1}} f"],
         "momenta": [f"{latex('p_' + c)} = {doc['momenta'][c]['latex']}" for c in q],
         # members of the document left out within their own bounds, each with its reason (issue 35)
         "skipped": [s["reason"] for s in doc.get("skipped") or []],
@@ -84,11 +92,14 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
             {
                 **doc["effective_potential"],
                 "coordinate_latex": latex(doc["effective_potential"]["coordinate"]) + " = ",
+                "frequency_latex": letter_of(doc, "angular frequency", r"\omega"),
             }
             if doc.get("effective_potential")
             else None
         ),
         "constraint_forces": doc.get("constraint_forces") or [],
+        # every letter of the page once, with what it stands for
+        "symbols": doc.get("notation") or [],
     }
 
 

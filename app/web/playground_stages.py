@@ -12,6 +12,7 @@ from typing import Any
 from urllib.parse import parse_qsl, urlencode
 
 from app.engine.names import latex
+from app.viz.page_model import letter_of
 
 STAGE_PARAMETER = {
     "name": "stage",
@@ -54,6 +55,7 @@ def first_view(doc: dict[str, Any], href: str) -> dict[str, Any]:
     if not accelerations:
         # M q̈ = f, with M and f printed: what the numerics solves at each step
         rows = [" & ".join(x["latex"] for x in row) for row in doc["mass_matrix"]]
-        view["mass_matrix"] = r"M = \begin{pmatrix} " + r" \\ ".join(rows) + r" \end{pmatrix}"
+        # the page's letter for the mass matrix (𝓜 where a parameter is named M): app/engine/notation.py
+        view["mass_matrix"] = letter_of(doc, "mass matrix", "M") + r" = \begin{pmatrix} " + r" \\ ".join(rows) + r" \end{pmatrix}"
         view["forcing"] = [f"f_{{{latex(c)}}} = {f['latex']}" for c, f in zip(q, doc["forcing"], strict=True)]
     return view

@@ -8,7 +8,7 @@ Every float is finite: JSON's ``NaN`` and ``Infinity`` (which Python's
 
 from __future__ import annotations
 
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, create_model
 
@@ -186,11 +186,26 @@ class SkippedMember(BaseModel):
     reason: str = Field(description="Which part was left out and why (its own time bound, or a closed form too long).")
 
 
+class NotationEntry(BaseModel):
+    """One letter of a document's "Symbols" table: each letter means one quantity on its page."""
+
+    model_config = OPEN
+    latex: str
+    unicode: str
+    meaning: str = Field(description="what the letter stands for (a parameter's own description)")
+    unit: str = Field(description="a parameter's unit; empty for the others")
+    kind: Literal["coordinate", "parameter", "derived"]
+
+
 class DerivationDocument(BaseModel):
     """The derivation JSON, the same document as GET /api/scenes/{id}/derivation."""
 
     model_config = OPEN
     coordinates: list[str]
+    notation: list[NotationEntry] = Field(
+        description="the page's letters, each once: coordinates, parameters, then the derived quantities (the mass "
+        "matrix is 𝓜 where a body's mass is M, a small-oscillation frequency Ω where ω is a parameter)"
+    )
     parameters: dict[str, ParameterInfo]
     kinetic: ExprPair | None
     potential: ExprPair | None

@@ -156,9 +156,8 @@ def test_coordinate_singularities_are_reported_not_linearized():
 
 def test_the_conical_pendulum_is_a_steady_motion_of_the_reduction():
     d = derived("scene:spherical-pendulum")
-    # the cone at theta0 and its mirror image at -theta0 (the same motion with phi + pi)
-    mirror, e = modes("scene:spherical-pendulum").equilibria
-    assert mirror.position["theta"] == pytest.approx(-e.position["theta"], rel=1e-9)
+    # the cone at theta0, once: its mirror image at -theta0 is the same motion with phi + pi
+    (e,) = modes("scene:spherical-pendulum").equilibria
     assert e.momenta and e.coordinates == ("theta",) and e.kind == STABLE
     theta0 = e.position["theta"]
     m, g, R = 1.0, 9.81, 1.0

@@ -68,11 +68,10 @@ def test_which_scenes_have_which_equilibria():
     assert kinds["rail-two-body"] == ["neutral"]
     assert kinds["double-pendulum"] == ["stable", "unstable", "unstable", "unstable"]
     assert kinds["coupled-oscillators"] == ["stable"]
-    # the conical orbit of the spherical pendulum, at the scene's own p_phi
-    # (theta0 and its mirror -theta0: the same cone, described with phi + pi)
-    mirror, conical = derivation_document("spherical-pendulum")["normal_modes"]
+    # the conical orbit of the spherical pendulum, at the scene's own p_phi, listed once: its mirror -theta0 is
+    # the same cone described with phi + pi (the ball is at the same place), so it is not listed again
+    (conical,) = derivation_document("spherical-pendulum")["normal_modes"]
     assert conical["momenta"] == {"p_phi": pytest.approx(2.0 * math.sin(2.2) ** 2)}
-    assert mirror["equilibrium"]["theta"] == pytest.approx(-conical["equilibrium"]["theta"], rel=1e-9)
-    assert mirror["modes"][0]["omega_squared"] == pytest.approx(conical["modes"][0]["omega_squared"], rel=1e-9)
+    assert conical["equilibrium"]["theta"] > 0
     for sid in ("helix-bead", "incline-block", "pulley", "movable-incline"):
         assert kinds[sid] == []

@@ -72,3 +72,36 @@ def test_recognising_the_exact_cases():
         s = system_for(key)
         assert constant_accelerations(s, np.ones(len(s.parameter_names))) is None, key
     assert exact_solution(system_for("tabletop-spring"), np.ones(2), np.array([1.0, 0, 0, 1.0])) is None
+
+
+def test_linear_systems_are_recognised_and_solved_by_their_normal_modes():
+    from app.numerics.exact import linear_coefficients
+
+    # coupled oscillators, m = 2, k = 3, kappa = 0.7: from x1 = 1, x2 = 0 at rest the two modes, ω₁² = k/m (in
+    # phase) and ω₂² = (k + 2κ)/m (opposite), each carry half: x₁ = (cos ω₁t + cos ω₂t)/2, x₂ = (cos ω₁t − cos ω₂t)/2
+    k = np.array([2.0, 3.0, 0.7])
+    system = system_for("coupled-oscillators")
+    found = exact_solution(system, k, np.array([1.0, 0.0, 0.0, 0.0]))
+    assert found is not None and "normal modes" in found[1]
+    t = np.linspace(0.0, 40.0, 17)
+    w1, w2 = math.sqrt(3.0 / 2.0), math.sqrt((3.0 + 1.4) / 2.0)
+    y = found[0](t)
+    np.testing.assert_allclose(y[:, 0], (np.cos(w1 * t) + np.cos(w2 * t)) / 2, atol=1e-12)
+    np.testing.assert_allclose(y[:, 1], (np.cos(w1 * t) - np.cos(w2 * t)) / 2, atol=1e-12)
+    np.testing.assert_allclose(y[:, 2], -(w1 * np.sin(w1 * t) + w2 * np.sin(w2 * t)) / 2, atol=1e-12)
+    # two masses on a spring along a rail (m1 = 1, m2 = 3, k = 2, l0 = 0.5): the centre of mass drifts at its
+    # start velocity, the extension oscillates at ω² = k/μ about l0 — the zero ω's drift is in the solution too
+    k = np.array([1.0, 3.0, 2.0, 0.5])
+    y0 = np.array([0.0, 0.8, 0.4, 0.0])
+    found = exact_solution(system_for("rail-two-body"), k, y0)
+    assert found is not None
+    y = found[0](t)
+    centre = (1.0 * y[:, 0] + 3.0 * y[:, 1]) / 4.0
+    np.testing.assert_allclose(centre, (0.8 * 3.0) / 4.0 + 0.1 * t, atol=1e-11)
+    w = math.sqrt(2.0 * (1.0 + 3.0) / 3.0)
+    extension = y[:, 1] - y[:, 0] - 0.5
+    np.testing.assert_allclose(extension, 0.3 * np.cos(w * t) - 0.4 / w * np.sin(w * t), atol=1e-11)
+    # a system that is not linear is not taken for one
+    for key in ("simple-pendulum", "tabletop-spring", "rotating-parabola", "double-pendulum"):
+        s = system_for(key)
+        assert linear_coefficients(s, np.ones(len(s.parameter_names))) is None, key

@@ -131,6 +131,15 @@ def test_work_precision_without_an_exact_solution_checks_its_reference():
     assert all(r["error"] is not None and r["error"] < 1e-3 for r in data["runs"])
 
 
+@pytest.mark.parametrize("scene_id", ["coupled-oscillators", "rail-two-body"])
+def test_work_precision_of_a_linear_scene_measures_against_its_exact_solution(scene_id):
+    data = work_precision.compute(scene_id, sweep=[1e-6, 1e-10], methods=["DOP853-compiled"])
+    assert data["reference"].startswith("exact solution of the linear equations") and "no exact" not in data["reference"]
+    by = {r["rtol"]: r["error"] for r in data["runs"]}
+    # errors against the exact motion fall with the tolerance, and the tight run is far below the loose one
+    assert by[1e-10] < 1e-2 * by[1e-6]
+
+
 def test_work_precision_is_cached_per_scene(monkeypatch, tmp_path):
     calls = []
     monkeypatch.setattr(work_precision, "compute", lambda scene_id: calls.append(scene_id) or {"runs": []})

@@ -240,3 +240,18 @@ def test_the_damped_pendulum_is_marked_as_ours(client):
     page = client.get("/scenes/damped-pendulum").text
     assert "Beyond the chapter (our example), building on section 4.1" in page
     assert "Beyond the chapter" not in client.get("/scenes/simple-pendulum").text.split("<main")[1].split("</header>")[0]
+
+
+@pytest.mark.parametrize("scene_id", ["pulley", "rotating-parabola"])
+def test_the_symbols_table_is_on_the_page(client, scene_id):
+    html = client.get(f"/scenes/{scene_id}").text
+    tags = parse(html)
+    assert ("dt", {"id": "symbols"}) in tags.tags
+    text = "".join(tags.text) + "".join(a["data-tex"] for t, a in tags.tags if "data-tex" in a)
+    for row in derivation_document(scene_id)["notation"]:
+        assert row["latex"] in text and row["meaning"] in text
+    if scene_id == "rotating-parabola":
+        # ω is the turning rate, so the frequency along the wire is Ω, in the results box as in the steps
+        assert r"\Omega^2 = " in text and r"\omega^2 = 2" not in text
+    else:
+        assert r"\mathcal{M}" in text
