@@ -173,7 +173,8 @@ def shoot(
     raise SimulationError("shooting did not converge onto the end point", "end")
 
 
-AGREEMENT = 1e-6  # relative to the path's size: the relaxed and the shot path agree within this, or within the grid's error
+# relative to the path's size: the relaxed and the shot path agree within this (or within the grid's error)
+AGREEMENT = 1e-6
 COARSE = 1e-2  # relative to the path's size: a grid whose halving moves the path by more is too coarse to judge
 
 

@@ -67,8 +67,9 @@ def linear_equations(doc: dict[str, Any]) -> bool:
     q = doc["coordinates"]
     moving = [*q, *(f"{c}_dot" for c in q)]
     names = [*moving, "t", *doc["parameters"]]
-    trees = [document_tree(pair, names) for pair in doc["accelerations"].values()]
-    if not trees or any(t is None for t in trees):
+    found = [document_tree(pair, names) for pair in doc["accelerations"].values()]
+    trees = [t for t in found if t is not None]
+    if not trees or len(trees) < len(found):
         return False
     base = {k: float(v.get("default", 1.0)) for k, v in doc["parameters"].items()} | {"t": 0.0}
     zero = base | dict.fromkeys(moving, 0.0)
@@ -242,7 +243,8 @@ def shown(facts: Facts, declared: Sequence[str]) -> list[str]:
 
 def folded(facts: Facts, names: Sequence[str]) -> list[str]:
     """Those of the shown panels ``names`` that sit closed under "details" on this page (their open rule fails)."""
-    return [n for n in names if BY_NAME[n].open_when is not None and not BY_NAME[n].open_when(facts)]
+    rules = {n: BY_NAME[n].open_when for n in names}
+    return [n for n, rule in rules.items() if rule is not None and not rule(facts)]
 
 
 def texts() -> dict[str, dict[str, str]]:

@@ -133,7 +133,9 @@ def test_relax_refuses_a_path_no_motion_follows_and_starts_again_from_shooting(p
     assert "minimum" not in readout and "about 0" not in readout
     page.locator(PANEL).screenshot(path=artifacts / "action-relax-refused.png")
     page.locator("#action-from-shooting").click()
-    page.wait_for_function(f"document.querySelector('{PANEL} .readout').textContent.startsWith(\"Newton's method made\")")
+    page.wait_for_function(
+        f"document.querySelector('{PANEL} .readout').textContent.startsWith(\"Newton's method made\")"
+    )
     assert page.locator(PANEL).get_attribute("data-relaxed") == "saddle"  # the true path, past the focus
     assert "θ̇(0) = 0 rad/s" in page.locator(f"{PANEL} .readout").text_content()
     assert not page.console_errors

@@ -28,7 +28,9 @@ LOG_WORDS = re.compile(r"about 0\b|\d[eE][+-]?\d|NaN|undefined|null")
 
 def _said(lift: float) -> tuple[dict, dict]:
     true = relax_of_scene("simple-pendulum", t_end=T, initial={"theta": 1.0})
-    trial = [q + lift * math.sin(math.pi * t / T) for t, q in zip(true["t"], true["shooting"]["q"]["theta"], strict=True)]
+    trial = [
+        q + lift * math.sin(math.pi * t / T) for t, q in zip(true["t"], true["shooting"]["q"]["theta"], strict=True)
+    ]
     answer = relax_of_scene("simple-pendulum", t_end=T, initial={"theta": 1.0}, trial={"theta": trial})
     run = subprocess.run(
         [NODE, "--input-type=module", "-e", RUN, VERDICT.as_uri()],
