@@ -240,3 +240,12 @@ def test_the_damped_pendulum_is_marked_as_ours(client):
     page = client.get("/scenes/damped-pendulum").text
     assert "Beyond the chapter (our example), building on section 4.1" in page
     assert "Beyond the chapter" not in client.get("/scenes/simple-pendulum").text.split("<main")[1].split("</header>")[0]
+
+
+@pytest.mark.parametrize("scene_id", ["simple-pendulum", "double-pendulum", "pulley"])
+def test_T_and_U_are_shown_without_asking_for_all_steps(client, scene_id):
+    html = client.get(f"/scenes/{scene_id}").text
+    for title in ("Kinetic energy", "Potential energy"):
+        # the step's list item is a core step: not folded behind "Show all steps"
+        head = html.split(f">{title}<", 1)[0].rsplit("<li ", 1)[1]
+        assert 'class="step"' in head and "bookkeeping" not in head, head
