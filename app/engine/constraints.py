@@ -48,6 +48,8 @@ class ConstraintForce:
     gradient: tuple[sp.Expr, sp.Expr, sp.Expr]
     multiplier: sp.Expr
     force: sp.Expr
+    # grad_i g on the motion for every particle i (index from 0): the force on particle i is multiplier * grad_i g
+    gradients: tuple[tuple[sp.Expr, sp.Expr, sp.Expr], ...] = ()
 
 
 def cartesian_symbols(count: int) -> tuple[tuple[sp.Symbol, sp.Symbol, sp.Symbol], ...]:
@@ -170,5 +172,6 @@ def constraint_forces(d: Derivation) -> tuple[ConstraintForce, ...]:
         force = _display(multipliers[a] * norm, positive)
         if force.has(*table.qdd):
             raise DerivationError(f"constraint {c.name!r}: accelerations remained in the force")
-        forces.append(ConstraintForce(c, g, grad_on, lam, force))
+        every = tuple(tuple(G[3 * i + j, a] for j in range(3)) for i in range(len(mech.positions)))
+        forces.append(ConstraintForce(c, g, grad_on, lam, force, every))
     return tuple(forces)

@@ -7,7 +7,7 @@ from typing import Any, TypeVar
 import sympy as sp
 
 from app.engine import meaning, notation
-from app.engine.budget import Skipped, bounded, display_budget, display_work_left, pythagoras, within_budget
+from app.engine.budget import Skipped, bounded, display_budget, display_work_left, is_zero, pythagoras, within_budget
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import LARGE_FROM, Derivation
 from app.engine.errata import errata_json
@@ -291,7 +291,26 @@ def constraint_force_json(f: ConstraintForce, pr: Printer) -> dict[str, Any]:
         # the unit vector along grad g on that particle (the way a positive force points), for drawing
         "direction": [sp.sstr(e) for e in direction],
         "direction_trees": [maybe_of_sympy(e) for e in direction],
+        # every particle the force acts on (a string's tension pulls each mass it holds), for drawing
+        "acts_on": acting_on(f),
     }
+
+
+def acting_on(f: ConstraintForce) -> list[dict[str, Any]]:
+    """Each particle i with grad_i g ≠ 0: its number (from 1), the unit vector along grad_i g, and the ratio
+    |grad_i g| / |grad_on g|: the force on i is the reported signed size times that ratio along that vector."""
+    out = []
+    norm_on = sp.sqrt(pythagoras(sp.expand(sum(e**2 for e in f.gradient))))
+    for i, grad in enumerate(f.gradients, start=1):
+        if all(e == 0 or is_zero(e) for e in grad):
+            continue
+        norm = sp.sqrt(pythagoras(sp.expand(sum(e**2 for e in grad))))
+        out.append({
+            "particle": i,
+            "ratio_tree": maybe_of_sympy(norm / norm_on),
+            "direction_trees": [maybe_of_sympy(e / norm) for e in grad],
+        })  # fmt: skip
+    return out
 
 
 def unit_gradient(f: ConstraintForce) -> tuple[sp.Expr, ...]:

@@ -24,11 +24,12 @@ from app.engine.forms import settle, textbook_form, use_names
 from app.engine.names import unicode
 from app.engine.trees import maybe_of_sympy
 
-# The steps (by key) a reader needs to follow the argument: the Lagrangian, its equations of motion, the
-# accelerations and what is conserved.  The others are bookkeeping a page may fold away.
+# The steps (by key) a reader needs to follow the argument: T and U (where students go wrong most), the
+# Lagrangian, its equations of motion, the accelerations and what is conserved.  The others are bookkeeping a
+# page may fold away.
 CORE_STEPS = frozenset(
-    {"lagrangian", "generalized-forces", "euler-lagrange", "accelerations", "cyclic", "h-vs-e", "energy-integral",
-     ACTION_KEY}
+    {"kinetic", "potential", "lagrangian", "generalized-forces", "euler-lagrange", "accelerations", "cyclic",
+     "h-vs-e", "energy-integral", ACTION_KEY}
 )  # fmt: skip
 
 

@@ -42,8 +42,7 @@ class Relaxed:
     iterations: list[np.ndarray]  # the interior path after each Newton step (the first is the trial)
     negative: int  # negative eigenvalues of the discrete action's Hessian
     converged: bool
-    gradient: float
-    warnings: list[str] = field(default_factory=list)
+    gradient: float  # the discrete Euler-Lagrange residual at the end, relative to the scale of its terms
 
     @property
     def kind(self) -> str:
@@ -146,8 +145,7 @@ def relax(
     negative = late.module("scipy.linalg").eig_banded(
         _band(diagonal, upper, n), lower=True, eigvals_only=True, select="v", select_range=(-np.inf, 0.0)
     ).size
-    warnings = [] if converged else ["the discrete Euler-Lagrange equations were not solved to full accuracy"]
-    return Relaxed(t, Q, S, history, negative, converged, norm, warnings)
+    return Relaxed(t, Q, S, history, negative, converged, norm / scale)
 
 
 def shoot(
@@ -175,17 +173,46 @@ def shoot(
     raise SimulationError("shooting did not converge onto the end point", "end")
 
 
+# relative to the path's size: the relaxed and the shot path agree within this (or within the grid's error)
+AGREEMENT = 1e-6
+COARSE = 1e-2  # relative to the path's size: a grid whose halving moves the path by more is too coarse to judge
+
+
 @dataclass
 class Found:
-    """The relaxed path on N steps, its Richardson extrapolation with 2N, and the shooting solution."""
+    """The relaxed path on N steps, its Richardson extrapolation with 2N, and the shooting solution (if any)."""
 
     coarse: Relaxed
     fine: Relaxed
     q: np.ndarray  # (4 q_2N - q_N) / 3 at the N + 1 nodes: fourth order
     error_estimate: float  # max |q_2N - q_N| / 3: the error of q_2N, which the extrapolated path improves on
-    velocity: np.ndarray  # q̇(0) of the shooting solution
-    shot: np.ndarray  # the shooting run's q at the N + 1 nodes
-    difference: float  # max |extrapolated - shot|
+    velocity: np.ndarray | None  # q̇(0) of the shooting solution; None when no shooting run reached the end
+    shot: np.ndarray | None  # the shooting run's q at the N + 1 nodes
+    difference: float | None  # max |extrapolated - shot|
+    reasons: list[str] = field(default_factory=list)  # why the relaxed path is not the true one (empty: it is)
+
+    @property
+    def found(self) -> bool:
+        return not self.reasons
+
+
+def _verdict(coarse: Relaxed, fine: Relaxed, q: np.ndarray, estimate: float, difference: float | None) -> list[str]:
+    """Why the relaxed path is not the path of the true motion between these ends, as codes (none: it is).
+
+    A stationary discrete path is the true one only if (1) Newton's method solved the discrete Euler-Lagrange
+    equations on both grids, (2) the grid resolves it, and (3) a motion from q(0), shot to q(T), runs along it:
+    Newton on S_d can stop short, or land on a stationary point of S_d that no motion follows."""
+    scale = max(1.0, float(np.abs(q).max()))
+    reasons = []
+    if not (coarse.converged and fine.converged):
+        reasons.append("not-stationary")
+    elif not estimate <= COARSE * scale:
+        reasons.append("too-coarse")
+    if difference is None:
+        reasons.append("no-shooting")
+    elif not difference <= max(AGREEMENT * scale, estimate):
+        reasons.append("disagrees")
+    return reasons
 
 
 def find_path(
@@ -196,8 +223,12 @@ def find_path(
     end: np.ndarray,
     T: float,
     trial: np.ndarray,
+    velocities: tuple[np.ndarray, ...] = (),
 ) -> Found:
-    """Relax a trial path (n, N + 1) on N steps and on 2N steps, extrapolate, and compare with shooting."""
+    """Relax a trial path (n, N + 1) on N steps and on 2N steps, extrapolate, and compare with shooting.
+
+    Shooting starts from the extrapolated path's initial slope, then from each of ``velocities`` (e.g. the
+    true path's q̇(0)), then from the chord (q(T) - q(0))/T, until one run reaches q(T)."""
     coarse = relax(terms, k, start, end, T, trial)
     nodes = trial.shape[1]
     t_fine = np.linspace(0.0, T, 2 * nodes - 1)
@@ -208,6 +239,16 @@ def find_path(
     estimate = float(np.abs(fine.q[:, ::2] - coarse.q).max() / 3)
     h = T / (nodes - 1)
     # a start for shooting: the one-sided slope of the extrapolated path, second order
-    v0 = (-3 * q[:, 0] + 4 * q[:, 1] - q[:, 2]) / (2 * h)
-    velocity, shot = shoot(system, k, start, end, T, v0, nodes)
-    return Found(coarse, fine, q, estimate, velocity, shot, float(np.abs(q - shot).max()))
+    slope = (-3 * q[:, 0] + 4 * q[:, 1] - q[:, 2]) / (2 * h)
+    velocity = shot = difference = None
+    for v0 in (slope, *velocities, (end - start) / T):
+        if not np.all(np.isfinite(v0)):
+            continue
+        try:
+            velocity, shot = shoot(system, k, start, end, T, v0, nodes)
+        except (SimulationError, np.linalg.LinAlgError):
+            continue
+        difference = float(np.abs(q - shot).max())
+        break
+    reasons = _verdict(coarse, fine, q, estimate, difference)
+    return Found(coarse, fine, q, estimate, velocity, shot, difference, reasons)

@@ -169,8 +169,8 @@ def relax_of_derivation(
     terms = action_terms(system)
     n = system.n
     with slot(gates.slots, "too many simulations are running at once; try again in a few seconds"):
+        y0 = initial_state(d, initial or {}, defaults or {})
         if start is None or end is None:
-            y0 = initial_state(d, initial or {}, defaults or {})
             run = simulate(system, kv, y0, T, 2, rtol=1e-12, atol=1e-14, estimate=False).trajectory
             if not run.complete:
                 raise SimulationError("the true path from this start does not reach t_end; give start and end", "t_end")
@@ -190,30 +190,48 @@ def relax_of_derivation(
                     f"trial.{q} must hold steps + 1 = {steps + 1} values (even times 0 … t_end)", "trial"
                 )
             path[names.index(q)] = [check_number(v, f"trial.{q}") for v in values]
-        found = find_path(system, terms, kv, q0, q1, T, path)
+        # shooting may also start from the true path's q̇(0) (the panel's ends are near the true path's)
+        found = find_path(system, terms, kv, q0, q1, T, path, velocities=(np.asarray(y0[n:], dtype=float),))
     frames = found.coarse.iterations
     chosen = sorted({round(i) for i in np.linspace(0, len(frames) - 1, min(FRAMES, len(frames)))})
 
     def by_name(Q: np.ndarray) -> dict[str, list[float]]:
         return {q: Q[i].tolist() for i, q in enumerate(names)}
 
+    shooting = None
+    if found.shot is not None and found.velocity is not None:
+        shooting = {
+            "velocity": {f"{q}_dot": float(found.velocity[i]) for i, q in enumerate(names)},
+            "q": by_name(found.shot),
+        }
     return {
+        "found": found.found,
+        "reasons": found.reasons,
+        "advice": advice(found.reasons, shooting is not None),
         "t": found.coarse.t.tolist(),
         "q": by_name(found.q),
         "iterations": [by_name(frames[i]) for i in chosen],
         "kind": found.fine.kind,
         "negative_directions": found.fine.negative,
         "converged": found.coarse.converged and found.fine.converged,
+        "residual": max(found.coarse.gradient, found.fine.gradient),
         "error_estimate": found.error_estimate,
         "action": found.fine.action,
-        "shooting": {
-            "velocity": {f"{q}_dot": float(found.velocity[i]) for i, q in enumerate(names)},
-            "q": by_name(found.shot),
-        },
+        "shooting": shooting,
         "difference": found.difference,
         "steps": steps,
-        "warnings": found.coarse.warnings + found.fine.warnings,
     }
+
+
+def advice(reasons: Sequence[str], shot: bool) -> list[str]:
+    """What to try when the relaxed path is not the true one, as codes the page words:
+
+    "closer-trial" (a trial path nearer the true one: a smaller ε), "shorter-t" (a shorter T: fewer stationary
+    paths, a Newton start nearer one), "from-shooting" (relax from the shooting solution, when there is one)."""
+    if not reasons:
+        return []
+    tips = ["shorter-t"] if reasons == ["no-shooting"] or reasons == ["too-coarse"] else ["closer-trial", "shorter-t"]
+    return tips + (["from-shooting"] if shot else [])
 
 
 def _of_scene(

@@ -38,9 +38,10 @@ class Family:
     axis_names: tuple[str, ...] = ("x", "y", "z")
     slack: str = ""  # the constraint force whose negative value means the strings are slack
     caption: str = ""  # what the animation shows, in words
-    # (particle index, slope angle in the view, counter-clockwise): a block drawn as a rectangle whose base
-    # rests on that slope at the particle (the particle is the middle of its base, where the slope pushes)
-    blocks: tuple[tuple[int, str], ...] = ()
+    # (particle index, slope angle in the view, counter-clockwise, base): a block drawn as a rectangle whose
+    # base rests on that slope at the particle: "middle" (the particle is the middle of its base) or "ahead"
+    # (the base runs from the particle along the slope's direction, so a block at the end of a ramp stays on it)
+    blocks: tuple[tuple[int, str, str], ...] = ()
     applied: tuple[tuple[str, str], ...] = ()  # (constraint force, anchor label): where its arrow starts
 
 
@@ -84,6 +85,10 @@ _HANG = f"1.6*{_R}"  # from the middle mass up to its wheel's centre: the mass h
 _Y = "(-(y1 + y2)/2 - 1)"  # the middle mass's height (the scene's particle)
 # the fixed wheels' height: above both end masses and above the movable wheel's highest reach
 _TOP = _max(_max("qmax_y1", "qmax_y2"), f"-(qmin_y1 + qmin_y2)/2 - 1 + {_HANG} + 2*{_R}") + f" + {_R} + 0.5*{_R}"
+# The sliding wedge: D along its slope from the top corner; the top is at D = min(qmin_D, 0) (a run that starts
+# above the corner still has slope under it), the foot a little beyond the block's farthest reach.
+_WEDGE_TOP = "((qmin_D - Abs(qmin_D))/2)"
+_WEDGE_FOOT = "(1.15*Abs(qmax_D) + 0.5)"
 # by family (the name a scene gives as ``Scene.family``), never by scene
 FAMILIES: dict[str, Family] = {
     "pendulum": PENDULUM,
@@ -156,7 +161,8 @@ FAMILIES: dict[str, Family] = {
             ("corner", (f"{_RAMP}*cos(alpha)", "0", "0")),
         ),
         solids=(("ramp", ("foot", "top", "corner")),),
-        blocks=((0, "alpha"),),
+        # the block lies up the slope from X: at X = 0 it sits on the foot, not half below the floor
+        blocks=((0, "alpha", "ahead"),),
         curves=(("floor", f"-0.6*{_RAMP} - 0.3", f"{_RAMP}*cos(alpha) + 0.3", ("s", "0", "0"), "ground"),),
         caption=(
             f"Side view: the fixed ramp at angle α on the floor, and the block on its slope with {TRAIL}. "
@@ -229,29 +235,43 @@ FAMILIES: dict[str, Family] = {
         caption=(f"Side view: the two walls, the three springs (drawn stretching) and the two masses, with {TRAIL}."),
     ),
     "wedge": Family(
-        # the wedge's apex is the wedge particle; its slope is long enough for the block's whole run
+        # The wedge's top corner is where D = 0 (higher when a run has D < 0); its slope is long enough for the
+        # block's whole run. The wedge is drawn at its middle (the centroid of the triangle), the block on
+        # the slope below the top corner, so the two labels sit by their own bodies.
+        points=(
+            (
+                "wedge",
+                (
+                    f"X + ({_WEDGE_TOP} + {_WEDGE_TOP} + {_WEDGE_FOOT})*cos(alpha)/3",
+                    "0",
+                    f"-({_WEDGE_TOP} + 2*{_WEDGE_FOOT})*sin(alpha)/3",
+                ),
+            ),
+            ("block", ("X + D*cos(alpha)", "0", "-D*sin(alpha)")),
+        ),
         anchors=(
-            ("wedge foot", ("X + (1.15*Abs(qmax_D) + 0.5)*cos(alpha)", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)")),
-            ("wedge corner", ("X", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)")),
+            ("wedge top", (f"X + {_WEDGE_TOP}*cos(alpha)", "0", f"-{_WEDGE_TOP}*sin(alpha)")),
+            ("wedge foot", (f"X + {_WEDGE_FOOT}*cos(alpha)", "0", f"-{_WEDGE_FOOT}*sin(alpha)")),
+            ("wedge corner", (f"X + {_WEDGE_TOP}*cos(alpha)", "0", f"-{_WEDGE_FOOT}*sin(alpha)")),
             # the floor pushes on the whole base; its resultant is drawn from the base's middle
-            ("wedge base", ("X + (1.15*Abs(qmax_D) + 0.5)*cos(alpha)/2", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)")),
+            ("wedge base", (f"X + ({_WEDGE_TOP} + {_WEDGE_FOOT})*cos(alpha)/2", "0", f"-{_WEDGE_FOOT}*sin(alpha)")),
         ),
         applied=(("floor force on the wedge", "wedge base"),),
-        solids=(("wedge", ("#0", "wedge foot", "wedge corner")),),
-        # the block rests on the wedge's slope, which falls to the right at alpha
-        blocks=((1, "-alpha"),),
+        solids=(("wedge", ("wedge top", "wedge foot", "wedge corner")),),
+        # the block rests on the wedge's slope, which falls to the right at alpha; it lies down the slope from D
+        blocks=((1, "-alpha", "ahead"),),
         curves=(
             (
                 "floor",
-                "qmin_X - 0.5",
-                "qmax_X + (1.15*Abs(qmax_D) + 0.5)*cos(alpha) + 0.5",
-                ("s", "0", "-(1.15*Abs(qmax_D) + 0.5)*sin(alpha)"),
+                f"qmin_X + {_WEDGE_TOP}*cos(alpha) - 0.5",
+                f"qmax_X + {_WEDGE_FOOT}*cos(alpha) + 0.5",
+                ("s", "0", f"-{_WEDGE_FOOT}*sin(alpha)"),
                 "ground",
             ),
         ),
         caption=(
             f"Side view: the wedge sliding on the floor and the block on its slope, with {TRAIL} "
-            "(the wedge's trail follows its top corner)."
+            "(the wedge's trail follows its middle)."
         ),
     ),
 }
@@ -378,11 +398,12 @@ def mechanism(
         caption=family.caption,
     )
     try:
-        tilt = dict(family.blocks)
+        tilt = {k: (angle, base) for k, angle, base in family.blocks}
         for k, (name, pos) in enumerate(own):
             point = {"label": name, "mass": True, "xyz": [of_text(pos[i]) for i in family.axes]}
             if k in tilt:
-                point["block"] = of_text(tilt[k])
+                point["block"] = of_text(tilt[k][0])
+                point["base"] = tilt[k][1]
             spec.points.append(point)
         for drawn, group in ((True, family.fixed), (False, family.anchors)):
             for name, pos in group:
@@ -415,17 +436,26 @@ def mechanism(
         return None
     where = dict(family.applied)
     for f in forces:
-        k = int(f.get("particle", 1)) - 1
-        direction = f.get("direction_trees")
-        if not direction or not 0 <= k < len(own):
-            continue
-        arrow = [direction[i] for i in family.axes]
-        if any(a is None for a in arrow):
-            continue  # this force is left without an arrow
-        force = {"name": f["name"], "on": k, "direction": arrow}
-        if f["name"] in where and where[f["name"]] in index:
-            force["at"] = index[where[f["name"]]]
-        spec.forces.append(force)
+        # every body the force acts on (a string pulls each mass it holds, twice as hard where it runs round a
+        # movable wheel); a document without "acts_on" gives the force on its own particle only
+        acting = f.get("acts_on") or [
+            {"particle": f.get("particle", 1), "direction_trees": f.get("direction_trees"), "ratio_tree": None}
+        ]
+        for share in acting:
+            k = int(share.get("particle", 1)) - 1
+            direction = share.get("direction_trees")
+            if not direction or not 0 <= k < len(own):
+                continue
+            arrow = [direction[i] for i in family.axes]
+            if any(a is None for a in arrow):
+                continue  # this force is left without an arrow
+            force = {"name": f["name"], "on": k, "direction": arrow}
+            ratio = share.get("ratio_tree")
+            if ratio is not None and ratio != 1:
+                force["ratio"] = ratio
+            if k == int(f.get("particle", 1)) - 1 and f["name"] in where and where[f["name"]] in index:
+                force["at"] = index[where[f["name"]]]
+            spec.forces.append(force)
     if not spec.points:
         return None
     return spec.as_json()

@@ -23,7 +23,7 @@ from app.viz.diagrams import diagram
 from app.viz.exprtree import document_tree, leaves
 from app.viz.mechanism import mechanism
 from app.viz.names import label
-from app.viz.panels import Facts, oscillating_equilibria, shown, texts
+from app.viz.panels import Facts, folded, oscillating_equilibria, shown, texts
 from app.viz.units import coordinate_units
 
 LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collapsed
@@ -318,9 +318,12 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bo
     }
 
 
-def _panels(declared: Sequence[str], doc: dict[str, Any], reduction, spec, scene: bool) -> list[str]:
-    """The panels this page shows (app/viz/panels.py): every available one, optional ones where declared."""
-    return shown(Facts(doc, reduction, spec["dim"] if spec is not None else None, scene), declared)
+def _panels(declared: Sequence[str], doc: dict[str, Any], reduction, spec, scene: bool) -> tuple[list[str], list[str]]:
+    """The panels this page shows (app/viz/panels.py): every available one, optional ones where declared; and
+    those of them that sit closed under "details" (the method comparison where the method does not matter)."""
+    facts = Facts(doc, reduction, spec["dim"] if spec is not None else None, scene)
+    names = shown(facts, declared)
+    return names, folded(facts, names)
 
 
 def moves_in_3d(particles: Sequence[tuple[str, Sequence[str]]], coordinates: Sequence[str]) -> bool:
@@ -361,7 +364,7 @@ def scene_page(
         proven=doc.get("fixed_distances") or (),
         potential=document_tree(doc.get("potential")),
     )
-    panels = _panels(declared, doc, reduction, spec, scene)
+    panels, closed = _panels(declared, doc, reduction, spec, scene)
     # symbol names in the scene's prose as a reader writes them (m₁, x₂)
     info = {**info, "panels": panels, **{k: prose(info[k]) for k in ("statement", "figure", "summary") if info.get(k)}}
     angular = angles(doc)
@@ -371,6 +374,7 @@ def scene_page(
         "info": info,
         "declared_panels": declared,
         "panels": panels,
+        "folded_panels": closed,
         "panel_text": texts(),
         "diagram": diagram(
             info.get("family", ""),

@@ -15,7 +15,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from app.viz.exprtree import document_tree, leaves
+from app.viz.exprtree import document_tree, evaluate, leaves
 
 
 @dataclass(frozen=True)
@@ -59,6 +59,45 @@ def oscillating_equilibria(doc: dict[str, Any]) -> list[dict[str, Any]]:
     ]
 
 
+def linear_equations(doc: dict[str, Any]) -> bool:
+    """Whether every acceleration is linear (affine) in the coordinates and velocities, at the default parameters.
+
+    Tested on the document's own trees: an affine a(y) satisfies a(u + v) = a(u) + a(v) - a(0) at any u, v;
+    three pairs of points in general position, to 10⁻⁹ of the values' size."""
+    q = doc["coordinates"]
+    moving = [*q, *(f"{c}_dot" for c in q)]
+    names = [*moving, "t", *doc["parameters"]]
+    found = [document_tree(pair, names) for pair in doc["accelerations"].values()]
+    trees = [t for t in found if t is not None]
+    if not trees or len(trees) < len(found):
+        return False
+    base = {k: float(v.get("default", 1.0)) for k, v in doc["parameters"].items()} | {"t": 0.0}
+    zero = base | dict.fromkeys(moving, 0.0)
+    for k in range(3):
+        u = base | {n: 0.31 + 0.17 * k + 0.07 * i for i, n in enumerate(moving)}
+        v = base | {n: -0.23 + 0.11 * k - 0.05 * i for i, n in enumerate(moving)}
+        w = base | {n: u[n] + v[n] for n in moving}
+        for t in trees:
+            try:
+                a, b, c, d = (evaluate(t, e) for e in (w, u, v, zero))
+            except (ArithmeticError, ValueError, KeyError):
+                return False
+            if not abs(a - (b + c - d)) <= 1e-9 * max(1.0, abs(a), abs(b), abs(c), abs(d)):
+                return False
+    return True
+
+
+def method_matters(f: Facts) -> bool:
+    """Whether the choice of integrator teaches something about this system: a dissipative run (no conserved
+    energy, where a symplectic method loses its advantage), or a nonlinear system with two or more degrees of
+    freedom and no conserved momentum to reduce it (a candidate for chaos, like the double pendulum).  A linear
+    system, or one a conserved momentum reduces to one degree of freedom, is integrated well by every method."""
+    if not f.conservative:
+        return True
+    momenta = any(c["name"].startswith("p_") for c in f.doc.get("conserved", []))
+    return f.dof >= 2 and not momenta and not linear_equations(f.doc)
+
+
 @dataclass(frozen=True)
 class Panel:
     name: str
@@ -67,6 +106,8 @@ class Panel:
     rule: str  # the availability rule in words
     available: Callable[[Facts], bool]
     optional: bool = False  # shown only where declared
+    # shown open only where this holds; elsewhere it is one click away, under "details" (None: always open)
+    open_when: Callable[[Facts], bool] | None = None
 
 
 PANELS: tuple[Panel, ...] = (
@@ -185,6 +226,7 @@ PANELS: tuple[Panel, ...] = (
         "a chapter scene (its report is measured once per scene) whose motion is not a polynomial in t",
         # with constant accelerations every method of order two or more is exact: the chart would be noise
         lambda f: f.scene and not constant_accelerations(f.doc),
+        open_when=method_matters,
     ),
 )
 
@@ -197,6 +239,12 @@ def shown(facts: Facts, declared: Sequence[str]) -> list[str]:
     """The panels a page shows, in the registry's order: every available one, optional ones only if declared."""
     wanted = set(declared)
     return [p.name for p in PANELS if (not p.optional or p.name in wanted) and p.available(facts)]
+
+
+def folded(facts: Facts, names: Sequence[str]) -> list[str]:
+    """Those of the shown panels ``names`` that sit closed under "details" on this page (their open rule fails)."""
+    rules = {n: BY_NAME[n].open_when for n in names}
+    return [n for n, rule in rules.items() if rule is not None and not rule(facts)]
 
 
 def texts() -> dict[str, dict[str, str]]:

@@ -19,8 +19,9 @@
  * The browser's numbers: static/js/action-live.js.
  */
 import { fetchJSON } from "./api.js";
-import { axis, CONFIG, drawWhenVisible, layout, PALETTE } from "./plotkit.js";
+import { axis, CONFIG, drawWhenVisible, layout, PALETTE, rateUnit } from "./plotkit.js";
 import { compileLagrangian, focus, liveAction, path } from "./action-live.js";
+import { verdict } from "./action-verdict.js";
 import { compileRhs } from "./preview.js";
 import { fmt, table } from "./summaries.js";
 
@@ -71,6 +72,7 @@ export class ActionPanel {
         ${group(`<label for="${id("k")}">Shape k</label> <select id="${id("k")}">${Array.from({ length: 6 }, (_, j) => `<option value="${j + 1}">${j + 1}</option>`).join("")}</select>`)}
         ${group(`<label for="${id("eps")}">ε</label> <input type="range" id="${id("eps")}" min="-1" max="1" step="0.01" value="0">`)}
         ${group(`<button type="button" id="${id("find")}" aria-pressed="false">Find the path</button> <button type="button" id="${id("relax")}" hidden>Relax</button>`)}
+        <button type="button" id="${id("from-shooting")}" hidden>Start from the shooting solution</button>
         ${group(`<label for="${id("T")}">T</label> <input type="range" id="${id("T")}" min="${this.tEnd / 200}" max="${this.tEnd}" step="${this.tEnd / 200}" value="${this.T}"> <output id="${id("T-value")}" for="${id("T")}"></output>`)}
       </div>`);
     this.epsInput = tools.querySelector(`#${id("eps")}`);
@@ -80,6 +82,8 @@ export class ActionPanel {
     this.relaxButton = tools.querySelector(`#${id("relax")}`);
     this.findButton.addEventListener("click", () => this.toggleFind());
     this.relaxButton.addEventListener("click", () => this.relax());
+    this.shootButton = tools.querySelector(`#${id("from-shooting")}`);
+    this.shootButton.addEventListener("click", () => this.fromShooting());
     tools.querySelector(`#${id("k")}`).addEventListener("change", (e) => { this.shape = Number(e.target.value); this.update(true); });
     tools.querySelector(`#${id("coordinate")}`)?.addEventListener("change", (e) => { this.coordinate = Number(e.target.value); this.eps = 0; this.epsInput.value = "0"; this.update(true); });
     this.epsInput.addEventListener("input", () => { this.eps = Number(this.epsInput.value) * this.epsMax; this.update(false); });
@@ -301,7 +305,8 @@ export class ActionPanel {
     this.findButton.textContent = this.finding ? "Back to ε" : "Find the path";
     this.relaxButton.hidden = !this.finding;
     this.epsInput.disabled = this.finding;
-    this.found = null; this.frame = null;
+    this.found = null; this.frame = null; this.seed = null;
+    this.shootButton.hidden = true;
     if (this.finding) this.resetControls();
     this.paint();
   }
@@ -340,7 +345,8 @@ export class ActionPanel {
     if (this.picked === null || this.picked === undefined) return;
     const ya = full.yaxis, box = this.plot.getBoundingClientRect();
     this.controlsQ[this.picked] = ya.p2d(event.clientY - box.top - ya._offset);
-    this.found = null; this.frame = null;
+    this.found = null; this.frame = null; this.seed = null;
+    this.shootButton.hidden = true;
     this.paintFind();
   }
 
@@ -352,11 +358,13 @@ export class ActionPanel {
     names.forEach((q, i) => { start[q] = p.Y[0][i]; end[q] = p.Y[N][i]; });
     start[names[c]] = this.controlsQ[0]; end[names[c]] = this.controlsQ[this.controlsQ.length - 1];
     const times = Array.from({ length: steps + 1 }, (_, i) => (i * this.T) / steps);
-    const request = { initial, t_end: this.T, start, end, steps, trial: { [names[c]]: this.trial(times) } };
+    // the trial: the dragged points, or (after "Start from the shooting solution") that solution, every coordinate
+    const trial = this.seed || { [names[c]]: this.trial(times) };
+    const request = { initial, t_end: this.T, start, end, steps, trial };
     const body = this.system
       ? { system: { ...this.system, parameters: (this.system.parameters || []).map((x) => ({ ...x, value: params[x.name] ?? x.value })) }, ...request }
       : { parameters: params, ...request };
-    this.relaxButton.disabled = true;
+    this.relaxButton.disabled = true; this.shootButton.hidden = true;
     this.readout.textContent = "Relaxing: Newton's method on the discrete Euler–Lagrange equations…";
     try {
       const answer = await fetchJSON(`${this.url}/relax`, { body });
@@ -375,6 +383,17 @@ export class ActionPanel {
     }
   }
 
+  fromShooting() {
+    // the shooting solution becomes the trial path; its values at the control times become the points
+    const f = this.found, q = this.data.coordinates[this.coordinate];
+    if (!f?.shooting) return;
+    this.seed = f.shooting.q;
+    const shot = f.shooting.q[q];
+    this.controlsQ = this.controlsT.map((t) => shot[Math.round((t / this.T) * (shot.length - 1))]);
+    this.found = null; this.frame = null;
+    this.relax();
+  }
+
   paintFind() {
     const q = this.data.coordinates[this.coordinate], lq = this.label(q), unit = this.data.units?.[q] || "";
     const p = this.live.path, t = Array.from(p.t);
@@ -385,8 +404,8 @@ export class ActionPanel {
     const f = this.found;
     if (f) {
       const shown = this.frame === null || this.frame === undefined ? f.q[q] : f.iterations[this.frame][q];
-      traces.push({ type: "scatter", mode: "lines", x: f.t, y: shown, name: this.frame === null || this.frame === undefined ? "relaxed path" : `Newton step ${this.frame}`, line: { color: PALETTE[2], width: 3 } });
-      if (this.frame === null || this.frame === undefined) traces.push({ type: "scatter", mode: "lines", x: f.t, y: f.shooting.q[q], name: "shooting solution", line: { color: PALETTE[3], width: 2, dash: "dot" } });
+      traces.push({ type: "scatter", mode: "lines", x: f.t, y: shown, name: this.frame === null || this.frame === undefined ? (f.found ? "relaxed path" : "where Newton's method stopped") : `Newton step ${this.frame}`, line: { color: PALETTE[2], width: 3 } });
+      if ((this.frame === null || this.frame === undefined) && f.shooting) traces.push({ type: "scatter", mode: "lines", x: f.t, y: f.shooting.q[q], name: "shooting solution", line: { color: PALETTE[3], width: 2, dash: "dot" } });
     }
     const lay = layout({ height: 420, hovermode: false, dragmode: false, xaxis: axis("t (s)", { range: [0, this.T] }), yaxis: axis(`${lq} (${unit})`) });
     window.Plotly?.react(this.plot, traces, lay, CONFIG);
@@ -402,13 +421,10 @@ export class ActionPanel {
         : `Relaxing: after Newton step ${this.frame} the path moves toward the one that makes the discrete action stationary…`;
       return;
     }
-    this.section.dataset.relaxed = f.kind;
-    const steps = f.iterations.length - 1;
-    const what = f.kind === "minimum"
-      ? "It is a minimum of the discrete action: every small change of it raises S."
-      : `It is a saddle of the discrete action, not a minimum: ${f.negative_directions} direction${f.negative_directions > 1 ? "s" : ""} lower${f.negative_directions > 1 ? "" : "s"} S, because T = ${fmt(this.T)} s is past the kinetic focus.`;
-    this.readout.textContent = `Relaxed in ${steps} Newton step${steps === 1 ? "" : "s"} onto the path that makes S stationary between these ends (the ${2 * RELAX_STEPS}-step path is within about ${fmt(f.error_estimate)} of it; extrapolating with the ${RELAX_STEPS}-step one removes most of that). `
-      + `The shooting solution (the motion starting with ${lq}̇(0) = ${fmt(f.shooting.velocity[`${q}_dot`])}) differs from it by at most ${fmt(f.difference)} ${unit}. ${what}`;
+    const said = verdict(f, { q, label: lq, unit, rateUnit: rateUnit(this.data, q), T: this.T, steps: RELAX_STEPS });
+    this.section.dataset.relaxed = said.found ? f.kind : "not-found";
+    this.shootButton.hidden = !said.advice.includes("from-shooting");
+    this.readout.textContent = said.text;
   }
 
   cursor() {}

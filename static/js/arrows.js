@@ -2,6 +2,7 @@
  * arrows.js — vectors drawn over a mechanism (animation.js): the forces of constraint at an instant,
  * on one scale for the whole run with a legend, and the velocity handle of the selected body.
  */
+import { blockBase } from "./bodies.js";
 import { HANDLE_RADIUS } from "./drag.js";
 
 const FORCE_COLORS = ["#7b1fa2", "#00796b", "#c62828"];
@@ -13,8 +14,10 @@ export function forceSeries(spec, run, compile) {
   for (const f of spec.forces || []) {
     const values = run.forces[f.name];
     if (!values || !values.length) continue;
-    for (const v of values) if (Number.isFinite(v)) largest = Math.max(largest, Math.abs(v));
-    out.push({ ...f, values, dir: f.direction.map(compile) });
+    const ratio = f.ratio === undefined ? null : compile(f.ratio);
+    // the largest force drawn sets the scale: the reported size times this body's share of it
+    values.forEach((v, k) => { if (Number.isFinite(v)) largest = Math.max(largest, Math.abs(v * (ratio ? ratio(run.envAt(k)) : 1))); });
+    out.push({ ...f, values, dir: f.direction.map(compile), ratio });
   }
   return { list: out, largest };
 }
@@ -27,8 +30,12 @@ export function drawForces(player, ctx, i, dpr) {
   const env = player.run.envAt(i), longest = 0.3 * Math.min(canvas.width, canvas.height);
   const perNewton = longest / largest; // screen pixels per newton
   const out = [];
-  list.forEach((f, j) => {
-    const value = f.values[i];
+  // one colour per force, however many bodies it acts on
+  const names = [...new Set(list.map((f) => f.name))];
+  list.forEach((f) => {
+    const j = names.indexOf(f.name);
+    // the force on this body: the reported signed size times |grad_i g| / |grad_on g|
+    const value = f.values[i] * (f.ratio ? f.ratio(env) : 1);
     if (!Number.isFinite(value)) return;
     // from its point of application where the spec names one (the middle of the wedge's base), else its body
     const p = Number.isInteger(f.at) ? f.at : player.masses[f.on], a = player.xyz[p];
@@ -36,29 +43,34 @@ export function drawForces(player, ctx, i, dpr) {
     // the arrow is the vector F (grad g / |grad g|) drawn at perNewton screen pixels per newton
     // (a negative F points against grad g); in 3-D it is projected like everything else
     const len = (value * perNewton) / camera.frame.scale;
-    const [x, y] = camera.screenOf([r[0], r[1], r[2] ?? 0]);
-    const [tx, ty] = camera.screenOf([r[0] + len * d[0], r[1] + len * d[1], (r[2] ?? 0) + len * (d[2] ?? 0)]);
+    let [x, y] = camera.screenOf([r[0], r[1], r[2] ?? 0]);
+    // on a block, from the middle of its base (where the slope pushes), wherever the particle sits on it
+    const base = Number.isInteger(f.at) ? null : blockBase(player, p, i, dpr, x, y);
+    const shift = base ? [base.middle[0] - x, base.middle[1] - y] : [0, 0];
+    [x, y] = [x + shift[0], y + shift[1]];
+    let [tx, ty] = camera.screenOf([r[0] + len * d[0], r[1] + len * d[1], (r[2] ?? 0) + len * (d[2] ?? 0)]);
+    [tx, ty] = [tx + shift[0], ty + shift[1]];
     if (!Number.isFinite(tx + ty)) return;
     const color = FORCE_COLORS[j % FORCE_COLORS.length];
     arrow(ctx, x, y, tx, ty, color, dpr);
-    out.push({ name: f.name, value, x: Math.round(x / dpr), y: Math.round(y / dpr), tx: Math.round(tx / dpr), ty: Math.round(ty / dpr) });
+    out.push({ name: f.name, on: f.on, value, x: Math.round(x / dpr), y: Math.round(y / dpr), tx: Math.round(tx / dpr), ty: Math.round(ty / dpr) });
   });
   // the legend, top right on a white card: a round force (at most the largest) and its arrow,
   // then each force's colour and name
   const pow = Math.pow(10, Math.floor(Math.log10(largest)));
   const unit = [5, 2, 1].map((m) => m * pow).find((v) => v <= largest) || pow;
   ctx.font = `${12 * dpr}px system-ui, sans-serif`;
-  const names = list.map((f) => `→ ${f.name}`);
-  const width = Math.max(unit * perNewton + 60 * dpr, ...names.map((t) => ctx.measureText(t).width)) + 12 * dpr;
+  const rows = names.map((name) => `→ ${name}`);
+  const width = Math.max(unit * perNewton + 60 * dpr, ...rows.map((t) => ctx.measureText(t).width)) + 12 * dpr;
   const W = canvas.width, x1 = W - 12 * dpr, top = 30 * dpr, rowH = 16 * dpr;
   ctx.fillStyle = "rgba(255,255,255,0.9)";
-  ctx.fillRect(x1 - width, top - 12 * dpr, width + 6 * dpr, rowH * (names.length + 1) + 6 * dpr);
+  ctx.fillRect(x1 - width, top - 12 * dpr, width + 6 * dpr, rowH * (rows.length + 1) + 6 * dpr);
   ctx.textAlign = "right";
-  names.forEach((text, j) => {
+  rows.forEach((text, j) => {
     ctx.fillStyle = FORCE_COLORS[j % FORCE_COLORS.length];
     ctx.fillText(text, x1, top + j * rowH);
   });
-  const y = top + names.length * rowH - 4 * dpr, x0 = x1 - unit * perNewton;
+  const y = top + rows.length * rowH - 4 * dpr, x0 = x1 - unit * perNewton;
   arrow(ctx, x0, y, x1, y, "#4b535c", dpr);
   ctx.fillStyle = "#4b535c"; ctx.fillText(`${Number(unit.toPrecision(2))} N`, x0 - 6 * dpr, y + 4 * dpr);
   ctx.textAlign = "left";

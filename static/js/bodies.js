@@ -77,6 +77,23 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
   ctx.textAlign = "left";
 }
 
+const BLOCK_HALF = 15; // half a block's length along its slope, CSS pixels
+
+/**
+ * A block's base on screen at instant i (null for a ball): its ends a and b along the slope, its middle, and
+ * the unit normal (nx, ny) out of the slope.  The particle (screen point x, y) is the middle of the base,
+ * or with base "ahead" its first end, the base running along the slope's direction from it.
+ */
+export function blockBase(player, p, i, dpr, x, y) {
+  const tilt = player.tilts[p];
+  if (!tilt) return null;
+  const angle = tilt(player.run.envAt(i)), W = BLOCK_HALF * dpr;
+  const dx = Math.cos(angle), dy = -Math.sin(angle), nx = -Math.sin(angle), ny = -Math.cos(angle); // along, and up from, the slope on screen
+  const ahead = player.spec.points[p].base === "ahead";
+  const a = ahead ? [x, y] : [x - W * dx, y - W * dy], b = ahead ? [x + 2 * W * dx, y + 2 * W * dy] : [x + W * dx, y + W * dy];
+  return { a, b, middle: [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2], nx, ny };
+}
+
 /** The bodies at their screen positions `placed` (the selected one ringed while the canvas has focus);
  * returns each body's label and position in CSS pixels. */
 export function drawBodies(player, ctx, i, dpr, placed) {
@@ -87,19 +104,21 @@ export function drawBodies(player, ctx, i, dpr, placed) {
     ctx.fillStyle = MASS_COLORS[k % MASS_COLORS.length];
     ctx.strokeStyle = selected ? "#ffbf47" : "#1b1f24";
     ctx.lineWidth = (selected ? 4 : 1.5) * dpr;
-    const tilt = player.tilts[p];
-    if (tilt) {
-      // a block: a rectangle whose base lies on its slope, the particle at the middle of the base
-      const a = tilt(player.run.envAt(i)), W = 15 * dpr, H = 18 * dpr;
-      const dx = Math.cos(a), dy = -Math.sin(a), nx = -Math.sin(a), ny = -Math.cos(a); // along, and up from, the slope on screen
+    const base = blockBase(player, p, i, dpr, x, y);
+    if (base) {
+      // a block: a rectangle whose base lies on its slope (from a to b), standing up from it by H
+      const { a, b, nx, ny } = base, H = 18 * dpr;
       ctx.beginPath();
-      ctx.moveTo(x - W * dx, y - W * dy); ctx.lineTo(x + W * dx, y + W * dy);
-      ctx.lineTo(x + W * dx + H * nx, y + W * dy + H * ny); ctx.lineTo(x - W * dx + H * nx, y - W * dy + H * ny);
+      ctx.moveTo(a[0], a[1]); ctx.lineTo(b[0], b[1]);
+      ctx.lineTo(b[0] + H * nx, b[1] + H * ny); ctx.lineTo(a[0] + H * nx, a[1] + H * ny);
       ctx.closePath(); ctx.fill(); ctx.stroke();
     } else {
       ctx.beginPath(); ctx.arc(x, y, 10 * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
     }
-    bodies.push({ label: player.spec.points[p].label, x: Math.round(x / dpr), y: Math.round(y / dpr) });
+    const body = { label: player.spec.points[p].label, x: Math.round(x / dpr), y: Math.round(y / dpr) };
+    // a block's base, in CSS pixels (the geometry a test checks against its slope)
+    if (base) body.base = [base.a, base.b].map(([u, v]) => [Math.round(u / dpr), Math.round(v / dpr)]);
+    bodies.push(body);
   });
   return bodies;
 }

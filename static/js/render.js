@@ -20,7 +20,7 @@ export function drawFrame(player, i) {
   const drawn = { links: 0, wheels: 0, slack: false, forces: [], event: "", none: !!spec.none };
   if (spec.none) message(ctx, canvas, dpr, "No picture of its own: this system has no particle positions.", canvas.height / 2);
   // fixed bodies (a ramp, a wedge), then the curves: the ground, wires, dashed guides
-  drawSolids(player, ctx, i, dpr);
+  drawn.solids = drawSolids(player, ctx, i, dpr);
   for (const c of player.curveCols) drawCurve(player.camera, ctx, c, c.moving ? c.at(run.envAt(i)) : c.cols, dpr);
   if (!spec.none) scaleBar(ctx, canvas, player.camera.frame.scale, dpr);
   // fading trails first, so that strings, rods and springs are drawn over them

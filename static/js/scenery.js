@@ -3,15 +3,19 @@
  * wedge), curves (the ground, walls, wires, dashed guides), the scale bar, and a message band.
  */
 
-/** Fixed bodies: polygons through points of the mechanism, at instant i. */
+/** Fixed bodies: polygons through points of the mechanism, at instant i; returns their corners in CSS pixels. */
 export function drawSolids(player, ctx, i, dpr) {
+  const drawn = [];
   for (const solid of player.spec.solids || []) {
     ctx.beginPath();
-    solid.corners.forEach((p, k) => { const [x, y] = player.at(p, i); if (k) ctx.lineTo(x, y); else ctx.moveTo(x, y); });
+    const corners = solid.corners.map((p) => player.at(p, i));
+    corners.forEach(([x, y], k) => { if (k) ctx.lineTo(x, y); else ctx.moveTo(x, y); });
+    drawn.push(corners.map(([x, y]) => [Math.round(x / dpr), Math.round(y / dpr)]));
     ctx.closePath();
     ctx.fillStyle = "#e3e7ec"; ctx.fill();
     ctx.strokeStyle = "#6b747e"; ctx.lineWidth = 2 * dpr; ctx.stroke();
   }
+  return drawn;
 }
 
 export function drawCurve(camera, ctx, c, cols, dpr) {

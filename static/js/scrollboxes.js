@@ -6,6 +6,10 @@
  *                                     so Tab reaches it and the arrow keys scroll it; a box that stops
  *                                     overflowing (a wider window) loses them again
  *
+ * Every such box also shows that it scrolls: data-more says on which sides content is hidden ("right",
+ * "left", "left right"), kept up to date as the box scrolls, and site.css fades that edge and puts an
+ * arrow there (a phone has no scroll bar to tell the reader).
+ *
  * Checked after the page has loaded (KaTeX has typeset by then), when the window is resized, when a
  * <details> opens, and when elements are added under root (tables built from a server answer): at the
  * next frame, then at most twice a second while elements keep coming (readouts change every frame).
@@ -18,11 +22,31 @@ function label(box) {
   return `${caption ? caption.textContent.trim() : "Table"}, scrolls sideways`;
 }
 
+/** Which sides of a box hide content: "left", "right", both, or "" (1 px of rounding allowed). */
+function hidden(box) {
+  const sides = [];
+  if (box.scrollLeft > 1) sides.push("left");
+  if (box.scrollLeft + box.clientWidth < box.scrollWidth - 1) sides.push("right");
+  return sides.join(" ");
+}
+
+function mark(box) {
+  const more = hidden(box);
+  if (box.dataset.more !== more) box.dataset.more = more;
+}
+
 function check(root) {
   for (const box of root.querySelectorAll(BOXES)) {
     const overflows = box.scrollWidth > box.clientWidth + 1;
     // a box holding something focusable is reached through it already
     const inner = box.querySelector("a[href], button, input, select, textarea, [tabindex]:not([data-scroll-box])");
+    // the cue, whether or not the box is reached by the keyboard through something inside it
+    if (overflows) {
+      mark(box);
+      if (!box.dataset.cue) { box.dataset.cue = "true"; box.addEventListener("scroll", () => mark(box), { passive: true }); }
+    } else if (box.dataset.more) {
+      delete box.dataset.more;
+    }
     if (overflows && !inner) {
       if (!box.hasAttribute("tabindex")) {
         box.tabIndex = 0;

@@ -103,3 +103,39 @@ def test_phone_layout_and_relaxing_a_trial_path(browser, live_server, artifacts)
 def test_the_playground_shows_the_panel(page):
     _open(page, "/playground")
     assert page.locator(f"{PANEL} .readout").text_content().startswith("S of the true path")
+
+
+def test_relax_refuses_a_path_no_motion_follows_and_starts_again_from_shooting(page, artifacts):
+    # the issue's report: T = 2 s, a trial path far above the true one; the page must not certify the result
+    _open(page)
+    page.locator("#action-T").fill("2")
+    page.dispatch_event("#action-T", "input")
+    page.wait_for_function(f"{SERVER} && document.querySelector('{PANEL}').dataset.kind === 'saddle'")
+    page.locator("#action-find").click()
+    plot = page.locator(f"{PANEL} .plot")
+    for _ in range(4):  # each drag to the top of the window raises the axis, so the next one goes further
+        for j in (2, 3):
+            g = page.evaluate(
+                """([el, j]) => { const f = el._fullLayout, d = el.data[1];
+                     return {x: f.xaxis.d2p(d.x[j]) + f.xaxis._offset, y: f.yaxis.d2p(d.y[j]) + f.yaxis._offset}; }""",
+                [plot.element_handle(), j],
+            )
+            box = plot.bounding_box()
+            page.mouse.move(box["x"] + g["x"], box["y"] + g["y"])
+            page.mouse.down()
+            page.mouse.move(box["x"] + g["x"], 2, steps=5)
+            page.mouse.up()
+    page.locator("#action-relax").click()
+    page.wait_for_function(f"document.querySelector('{PANEL}').dataset.relaxed === 'not-found'")
+    readout = page.locator(f"{PANEL} .readout").text_content()
+    assert readout.startswith("The path was not found.") and "No true motion runs along it" in readout
+    assert "To find it:" in readout and "a shorter T" in readout
+    assert "minimum" not in readout and "about 0" not in readout
+    page.locator(PANEL).screenshot(path=artifacts / "action-relax-refused.png")
+    page.locator("#action-from-shooting").click()
+    page.wait_for_function(
+        f"document.querySelector('{PANEL} .readout').textContent.startsWith(\"Newton's method made\")"
+    )
+    assert page.locator(PANEL).get_attribute("data-relaxed") == "saddle"  # the true path, past the focus
+    assert "θ̇(0) = 0 rad/s" in page.locator(f"{PANEL} .readout").text_content()
+    assert not page.console_errors

@@ -1,6 +1,6 @@
 """No typeset formula wider than its box: every scene page with every step shown, and the playground's
 double pendulum, at 1366×768 (nothing may overflow) and 390×844 with touch (a formula may only be wider
-than its box inside a box that scrolls and that the keyboard can reach)."""
+than its box inside a box that scrolls, that the keyboard can reach and that shows it goes on)."""
 
 from __future__ import annotations
 
@@ -32,6 +32,8 @@ MEASURE = """async () => {
       box: el.clientWidth,
       scrolls: ['auto', 'scroll'].includes(style.overflowX),
       focusable: el.tabIndex >= 0 && !!el.getAttribute('aria-label'),
+      // the visible cue that it goes on: the right edge faded (data-more, site.css)
+      cue: (el.dataset.more || '').includes('right') && (style.maskImage || style.webkitMaskImage || 'none') !== 'none',
     });
   }
   return out;
@@ -82,5 +84,8 @@ def test_no_formula_wider_than_its_box(browser, live_server, artifacts, path):
                 assert wide == [], [(f["tex"][:60], f["formula"], f["box"]) for f in wide]
             else:
                 assert all(f["scrolls"] and f["focusable"] for f in wide), [f for f in wide if not f["focusable"]][:5]
+                # every one shows that it scrolls, and a formula that fits shows nothing
+                assert all(f["cue"] for f in wide), [f["tex"] for f in wide if not f["cue"]][:5]
+                assert not any(f["cue"] for f in found if f["formula"] <= f["box"] + 1)
         finally:
             context.close()

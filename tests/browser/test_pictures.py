@@ -4,6 +4,7 @@ the double pendulum's rods, and no invented picture for a system without particl
 from __future__ import annotations
 
 import json
+import math
 from urllib.parse import urlencode
 
 import pytest
@@ -93,10 +94,11 @@ def test_blocks_are_rectangles_resting_on_their_slopes(page, artifacts, scene_id
     # and so is one a block's height less a little further up; a disc of radius 10 px would not reach it
     bodies = page.evaluate("JSON.parse(document.querySelector('[data-panel^=animation] canvas').dataset.bodies)")
     block = bodies[-1]
+    middle = [(a + b) / 2 for a, b in zip(*block["base"], strict=True)]
     colour = page.evaluate(
         """([x, y]) => { const c = document.querySelector('[data-panel^=animation] canvas'), r = c.width / c.clientWidth;
                         return Array.from(c.getContext('2d').getImageData(Math.round(x * r), Math.round(y * r), 1, 1).data); }""",
-        [block["x"], block["y"] - 15],
+        [middle[0], middle[1] - 15],
     )
     assert colour[3] == 255 and colour[:3] != [255, 255, 255]
     canvas.screenshot(path=artifacts / f"block-{scene_id}.png")
@@ -130,14 +132,59 @@ def test_the_floor_pushes_the_wedge_at_its_base(page, artifacts):
     page.goto("/scenes/movable-incline")
     page.wait_for_selector(READY, state="attached")
     page.check("[data-panel^=animation] input.show-forces")
-    page.wait_for_function("JSON.parse(document.querySelector('[data-panel^=animation] canvas').dataset.drawn).forces.length === 2")
+    page.wait_for_function("JSON.parse(document.querySelector('[data-panel^=animation] canvas').dataset.drawn).forces.length === 3")
     drawn = page.evaluate("JSON.parse(document.querySelector('[data-panel^=animation] canvas').dataset.drawn)")
     bodies = page.evaluate("JSON.parse(document.querySelector('[data-panel^=animation] canvas').dataset.bodies)")
     floor = next(f for f in drawn["forces"] if f["name"] == "floor force on the wedge")
-    normal = next(f for f in drawn["forces"] if f["name"] == "normal force on the block")
-    apex, block = bodies[0], bodies[1]
-    # the floor's arrow starts on the floor, right of the apex (the base's middle), and points up
-    assert floor["y"] > apex["y"] + 20 and floor["x"] > apex["x"] + 20 and floor["ty"] < floor["y"]
-    # the slope's push on the block starts at the block (the middle of its base)
-    assert (normal["x"], normal["y"]) == (block["x"], block["y"])
+    normal = next(f for f in drawn["forces"] if f["name"] == "normal force on the block" and f["on"] == 1)
+    wedge, block = bodies[0], bodies[1]
+    (top, foot, corner), = drawn["solids"]
+    # the floor's arrow starts on the floor (the wedge's base), right of its vertical side, and points up
+    assert floor["y"] == pytest.approx(foot[1], abs=1) and floor["x"] > corner[0] + 20 and floor["ty"] < floor["y"]
+    # the slope's push on the block starts at the middle of the block's base
+    middle = [(a + b) / 2 for a, b in zip(*block["base"], strict=True)]
+    assert [normal["x"], normal["y"]] == pytest.approx(middle, abs=1)
+    # and pushes the wedge back, at the wedge, the opposite way
+    back = next(f for f in drawn["forces"] if f["name"] == "normal force on the block" and f["on"] == 0)
+    assert (back["x"], back["y"]) == (wedge["x"], wedge["y"])
+    assert (back["tx"] - back["x"]) * (normal["tx"] - normal["x"]) < 0
     page.locator("[data-panel^=animation] canvas").screenshot(path=artifacts / "wedge-forces.png")
+
+
+@pytest.mark.parametrize(("width", "height"), [(1366, 768), (390, 844)])
+@pytest.mark.parametrize(("scene_id", "start"), [("incline-block", {}), ("movable-incline", {}), ("movable-incline", {"D": "2"})])
+def test_the_block_lies_on_its_slope_at_both_sizes(browser, live_server, artifacts, width, height, scene_id, start):
+    # at the default start (X = 0: the foot of the ramp; D = 0: the top corner of the wedge) and further down
+    context = browser.new_context(base_url=live_server, viewport={"width": width, "height": height})
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    try:
+        page.goto(f"/scenes/{scene_id}")
+        page.wait_for_selector(READY, state="attached")
+        canvas = page.locator("[data-panel^=animation] canvas")
+        for q, value in start.items():
+            before = canvas.get_attribute("data-bodies")
+            page.fill(f"#ctl-{q}", value)
+            page.wait_for_function(f"{CANVAS}.dataset.bodies !== {json.dumps(before)}")
+            page.wait_for_selector(READY, state="attached")
+        drawn = json.loads(canvas.get_attribute("data-drawn"))
+        bodies = json.loads(canvas.get_attribute("data-bodies"))
+        block = next(b for b in bodies if b["label"] == "block")
+        (solid,) = drawn["solids"]
+        # the sloping side: the two corners that are neither vertically nor horizontally aligned
+        (ax, ay), (bx, by) = next(
+            (p, q) for p in solid for q in solid if abs(p[0] - q[0]) > 2 and abs(p[1] - q[1]) > 2
+        )
+        length = math.hypot(bx - ax, by - ay)
+        floor = max(y for _, y in solid)
+        for x, y in block["base"]:
+            # each end of the block's base is on the slope (within rounding) and between its ends
+            assert abs((x - ax) * (by - ay) - (y - ay) * (bx - ax)) / length <= 1.5
+            assert min(ax, bx) - 1.5 <= x <= max(ax, bx) + 1.5 and y <= floor + 1
+        if scene_id == "movable-incline":
+            wedge = next(b for b in bodies if b["label"] == "wedge")
+            assert min(p[0] for p in solid) < wedge["x"] < max(p[0] for p in solid)  # its label's body is inside it
+        name = "-".join(f"{q}{v}" for q, v in start.items()) or "start"
+        canvas.screenshot(path=artifacts / f"slope-{scene_id}-{name}-{width}.png")
+    finally:
+        context.close()

@@ -97,3 +97,71 @@ def test_every_family_has_a_caption_of_what_it_draws(scene_id):
     assert "arrow" not in spec["caption"] and "centre of mass" not in spec["caption"]
     springs = [link for link in spec["links"] if link["style"] == "spring"]
     assert bool(springs) == (scene_id in {"tabletop-spring", "rail-two-body", "coupled-oscillators"})
+
+
+def _ranges(name, lo, hi):
+    return {f"qmin_{name}": lo, f"qmax_{name}": hi}
+
+
+ALPHAS = [0.01, 0.3, 0.5, 1.0, 1.5]  # across the scenes' allowed range of α
+
+
+@pytest.mark.parametrize("alpha", ALPHAS)
+@pytest.mark.parametrize(("dmin", "dmax"), [(0.0, 0.0), (0.0, 2.5), (-1.0, 3.0), (-3.0, -0.5), (0.2, 8.0)])
+def test_the_wedge_holds_the_block_on_its_slope_wherever_the_run_takes_it(alpha, dmin, dmax):
+    spec = spec_of("movable-incline")
+    labels = [p["label"] for p in spec["points"]]
+    assert labels[:2] == ["wedge", "block"]  # the names sit by their own bodies
+    block = spec["points"][1]
+    assert block["block"] == ["neg", "alpha"] and block["base"] == "ahead"  # the block lies down the slope from D
+    top, foot, corner = (labels.index(c) for c in ("wedge top", "wedge foot", "wedge corner"))
+    assert spec["solids"] == [{"label": "wedge", "corners": [top, foot, corner]}]
+    for X in (-2.0, 0.0, 1.5):
+        env = env_of("movable-incline", X=X, alpha=alpha) | _ranges("D", dmin, dmax) | _ranges("X", -2.0, 1.5)
+        (tx, tz), (fx, fz), (cx, cz) = (at(spec, i, env) for i in (top, foot, corner))
+        assert cz == pytest.approx(fz) and cx == pytest.approx(tx)  # a right-angled wedge standing on its base
+        slope = math.hypot(fx - tx, fz - tz)
+        floor = next(c for c in spec["curves"] if c["label"] == "floor")
+        assert evaluate(floor["xyz"][1], env | {"s": 0.0}) == pytest.approx(fz)  # the floor is the wedge's base
+        # the wedge's own point is inside the triangle: right of the vertical side, above the base, under the slope
+        wx, wz = at(spec, 0, env)
+        assert tx < wx < fx and fz < wz < tz - (wx - tx) * math.tan(alpha)
+        for D in [dmin + (dmax - dmin) * f for f in (0.0, 0.5, 1.0)]:
+            bx, bz = at(spec, 1, env | {"D": D})
+            along = math.hypot(bx - tx, bz - tz)
+            # on the slope line, between the top corner and the foot, with room below it for the block's base
+            assert abs((bx - tx) * (fz - tz) - (bz - tz) * (fx - tx)) <= 1e-9 * slope**2
+            assert bx >= tx - 1e-12 and along <= slope - 0.15 * abs(dmax) - 0.5 + 1e-9
+            assert bz >= fz  # never below the floor
+
+
+@pytest.mark.parametrize("alpha", ALPHAS)
+@pytest.mark.parametrize("xmax", [0.0, 0.5, 3.0, 10.0])
+def test_the_ramp_holds_the_block_from_its_foot_to_the_top_of_the_run(alpha, xmax):
+    spec = spec_of("incline-block")
+    labels = [p["label"] for p in spec["points"]]
+    assert spec["points"][0]["block"] == "alpha" and spec["points"][0]["base"] == "ahead"  # it lies up the slope
+    foot, top = labels.index("foot"), labels.index("top")
+    env = env_of("incline-block", alpha=alpha) | _ranges("X", 0.0, xmax)
+    (fx, fz), (tx, tz) = at(spec, foot, env), at(spec, top, env)
+    slope = math.hypot(tx - fx, tz - fz)
+    for X in [xmax * f for f in (0.0, 0.5, 1.0)]:
+        bx, bz = at(spec, 0, env | {"X": X})
+        # at X = 0 the block's base starts at the foot: nothing of it below the floor; above, room for the block
+        assert bz >= fz - 1e-12 and bx >= fx - 1e-12
+        assert math.hypot(bx - fx, bz - fz) <= slope - 0.15 * xmax - 0.5 + 1e-9
+
+
+def test_the_string_pulls_every_mass_it_holds():
+    from app.service.derivations import derivation_document
+
+    doc = derivation_document("pulley")
+    spec = spec_of("pulley", doc["constraint_forces"])
+    tension = [f for f in spec["forces"] if f["name"] == "string tension"]
+    assert sorted(f["on"] for f in tension) == [0, 1, 2]  # the left, right and middle masses
+    env = env_of("pulley", y1=0.3, y2=-0.2)
+    for f in tension:
+        up = [evaluate(c, env) for c in f["direction"]]
+        assert up == pytest.approx([0.0, 1.0])  # every piece of string pulls upward
+        # the middle mass hangs from the wheel on two pieces of string: twice the tension
+        assert evaluate(f["ratio"], env) == pytest.approx(2.0) if f["on"] == 2 else "ratio" not in f

@@ -4,7 +4,7 @@ import pytest
 
 from app.scenes import SCENES
 from app.service.derivations import derivation_document
-from app.viz.panels import BY_NAME, NAMES, OPTIONAL, PANELS, Facts, shown
+from app.viz.panels import BY_NAME, NAMES, OPTIONAL, PANELS, Facts, linear_equations, shown
 
 
 def facts(scene_id, scene=True):
@@ -63,3 +63,26 @@ def test_every_panel_has_a_drawing_in_the_browser_and_every_drawing_a_panel():
     drawn = set(re.findall(r'^\s*"?([a-z0-9-]+)"?:', block.group(1), re.M))
     # the animations are drawn by static/js/animation.js (simulation.js hands it every animation-* panel)
     assert drawn == {name for name in NAMES if not name.startswith("animation")}
+
+
+# the scenes where the choice of integrator teaches something: a dissipative run, and a nonlinear system with two
+# degrees of freedom and no conserved momentum (chaos); linear ones and those a momentum reduces fold it away
+METHOD_MATTERS = {"damped-pendulum", "double-pendulum"}
+
+
+def test_linear_equations_are_told_from_nonlinear_ones():
+    linear = {sid for sid in SCENES if linear_equations(derivation_document(sid))}
+    assert {"coupled-oscillators", "rail-two-body", "pulley", "incline-block", "movable-incline"} <= linear
+    assert not linear & {"simple-pendulum", "double-pendulum", "damped-pendulum", "spherical-pendulum"}
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_the_method_comparison_is_open_only_where_the_method_matters(client, scene_id):
+    html = client.get(f"/scenes/{scene_id}").text
+    if 'id="panel-work-precision"' not in html:
+        return  # a motion in t² has no comparison at all
+    folded = '<details class="panel-details" id="details-work-precision">' in html
+    assert folded == (scene_id not in METHOD_MATTERS), scene_id
+    if folded:
+        summary = html.split('id="details-work-precision"><summary>', 1)[1].split("</summary>", 1)[0]
+        assert summary.startswith("details: error against run time")

@@ -100,3 +100,35 @@ def test_user_system_relax_runs_in_the_pool(client):
     # x(t) = sin(ωt)/sin(ωT) between x(0) = 0 and x(T) = 1
     t = a["t"][len(a["t"]) // 2]
     assert a["q"]["x"][len(a["t"]) // 2] == pytest.approx(math.sin(3 * t) / math.sin(1.5), abs=1e-7)
+
+
+def _pendulum_trial(client, T, lift, k):
+    """The true pendulum path from θ = 1 rad over [0, T] on 200 steps, lifted by lift · sin(kπt/T)."""
+    a = client.post("/api/scenes/simple-pendulum/action/relax", json={"t_end": T, "initial": {"theta": 1.0}}).json()
+    return [q + lift * math.sin(k * math.pi * t / T) for t, q in zip(a["t"], a["shooting"]["q"]["theta"], strict=True)]
+
+
+def test_relax_says_when_it_found_the_true_path(client):
+    T = 2.0
+    trial = _pendulum_trial(client, T, 3.0, 1)
+    a = client.post("/api/scenes/simple-pendulum/action/relax",
+                    json={"t_end": T, "initial": {"theta": 1.0}, "trial": {"theta": trial}}).json()  # fmt: skip
+    assert a["found"] is True and a["reasons"] == [] and a["advice"] == []
+    assert a["converged"] and a["residual"] < 1e-11 and a["difference"] < 1e-6
+    assert a["kind"] == "saddle"  # T = 2 s is past the kinetic focus t* = 1.07 s
+
+
+def test_relax_refuses_a_path_no_motion_follows(client):
+    # a trial path far above the true one (the issue's report: the page certified a curve climbing to 8 rad)
+    T = 2.0
+    trial = _pendulum_trial(client, T, 12.0, 1)
+    a = client.post("/api/scenes/simple-pendulum/action/relax",
+                    json={"t_end": T, "initial": {"theta": 1.0}, "trial": {"theta": trial}}).json()  # fmt: skip
+    assert a["found"] is False and not a["converged"]
+    assert a["reasons"] == ["not-stationary", "disagrees"] and a["difference"] > 1.0
+    assert a["advice"] == ["closer-trial", "shorter-t", "from-shooting"]
+    # the shooting solution offered as the new start is the true motion, which starts at rest
+    assert abs(a["shooting"]["velocity"]["theta_dot"]) < 1e-8
+    start = client.post("/api/scenes/simple-pendulum/action/relax",
+                        json={"t_end": T, "initial": {"theta": 1.0}, "trial": a["shooting"]["q"]}).json()  # fmt: skip
+    assert start["found"] is True and start["difference"] < 1e-6

@@ -255,3 +255,12 @@ def test_the_symbols_table_is_on_the_page(client, scene_id):
         assert r"\Omega^2 = " in text and r"\omega^2 = 2" not in text
     else:
         assert r"\mathcal{M}" in text
+
+
+@pytest.mark.parametrize("scene_id", ["simple-pendulum", "double-pendulum", "pulley"])
+def test_T_and_U_are_shown_without_asking_for_all_steps(client, scene_id):
+    html = client.get(f"/scenes/{scene_id}").text
+    for title in ("Kinetic energy", "Potential energy"):
+        # the step's list item is a core step: not folded behind "Show all steps"
+        head = html.split(f">{title}<", 1)[0].rsplit("<li ", 1)[1]
+        assert 'class="step"' in head and "bookkeeping" not in head, head
