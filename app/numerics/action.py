@@ -329,8 +329,10 @@ def conjugate_time(t: np.ndarray, P: np.ndarray, C: np.ndarray, R: np.ndarray) -
             (J0, D0), (J1, D1) = fields[s - 1], fields[s]
             return float((s - 1 + _zero_between(J0, D0, J1, D1, H)) * H)
         last = s + 1 >= dets.size
-        if smallest[s] <= smallest[s - 1] and (last or smallest[s] <= smallest[s + 1]) and (
-            smallest[s] < FOCUS_NEAR * size[s]
+        if (
+            smallest[s] <= smallest[s - 1]
+            and (last or smallest[s] <= smallest[s + 1])
+            and (smallest[s] < FOCUS_NEAR * size[s])
         ):
             at = _smallest_at(fields, H, s)
             first = min(int(at), len(fields) - 2)
