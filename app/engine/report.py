@@ -308,8 +308,8 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             "Accelerations",
             [r"\ddot{q} = M^{-1} f"],
             "M**(-1)*f",
-            "Solved symbolically, M q̈ = f gives "
-            "expressions too long to read for this many coordinates: the accelerations stay M⁻¹f, and the "
+            "Solved symbolically, M q̈ = f gives expressions too long to read "
+            f"({eqs.closed_form_reason}): the accelerations stay M⁻¹f, and the "
             "numerics solve M q̈ = f by LU at every step.",
         )
     )
