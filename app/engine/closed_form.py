@@ -7,7 +7,7 @@ characters.  So the decision is made on the result's length, not on the number o
 
     q̈_k = det M_k / det M   (M_k: M with its k-th column replaced by f),
 
-each determinant expanded on symengine, brought back to SymPy with sin² + cos² = 1 collected and common
+each determinant expanded on symengine (one past EXPANDED_MAX_CHARS is not tidied), brought back to SymPy with sin² + cos² = 1 collected and common
 factors taken out, and the closed form kept when every acceleration's plain form is at most
 CLOSED_FORM_MAX_CHARS characters.  Before anything is expanded, the number of terms det M can have is
 bounded by the product over M's rows of the terms in each row (each term of the determinant takes one
@@ -29,6 +29,8 @@ from app.engine.fast import Fast, convertible, expand
 # The longest acceleration, in characters of its plain form, still shown as a closed form (the double
 # pendulum's longer one is 306).
 CLOSED_FORM_MAX_CHARS = 400
+# Longest expanded numerator or det M (symengine's plain form) that is tidied and measured.
+EXPANDED_MAX_CHARS = 3 * CLOSED_FORM_MAX_CHARS
 # At most this many terms in the expanded det M before Cramer's rule is tried at all.
 DET_TERMS_MAX = 200
 
@@ -59,16 +61,24 @@ def by_cramer(M: sp.Matrix, forcing: sp.Matrix, symbols: tuple[sp.Symbol, ...]) 
         return ClosedForms(
             None, f"det M, the common denominator, can expand to as many as {bound} terms (more than {DET_TERMS_MAX})"
         )
-    det = pythagoras(fast.back(expand(A.det())))
+    det = expand(A.det())
     if det == 0:
         return ClosedForms(None, "det M expands to 0 symbolically")
-    denominator = sp.factor_terms(det)
-    solved: list[sp.Expr] = []
-    for k in range(n):
-        # Cramer: M_k is M with its k-th column replaced by f
-        Mk = se.Matrix([[f[i] if j == k else A[i, j] for j in range(n)] for i in range(n)])
-        numerator = sp.factor_terms(pythagoras(fast.back(expand(Mk.det()))))
-        solved.append(numerator / denominator)
+    # Cramer: M_k is M with its k-th column replaced by f
+    numerators = [
+        expand(se.Matrix([[f[i] if j == k else A[i, j] for j in range(n)] for i in range(n)]).det()) for k in range(n)
+    ]
+    # tidying (sin² + cos² = 1, common factors) shortens a form by a third at most on the systems measured; an
+    # expanded form past EXPANDED_MAX_CHARS is not tidied at all (tidying a three-link chain's took seconds)
+    expanded = max(len(str(x)) for x in (det, *numerators))
+    if expanded > EXPANDED_MAX_CHARS:
+        return ClosedForms(
+            None,
+            f"expanded, a numerator or det M is {expanded} characters (more than {CLOSED_FORM_MAX_CHARS} are too "
+            "long to read)",
+        )
+    denominator = sp.factor_terms(pythagoras(fast.back(det)))
+    solved = [sp.factor_terms(pythagoras(fast.back(x))) / denominator for x in numerators]
     longest = max(len(str(a)) for a in solved)
     if longest > CLOSED_FORM_MAX_CHARS:
         return ClosedForms(
