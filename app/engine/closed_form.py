@@ -53,7 +53,6 @@ def by_cramer(M: sp.Matrix, forcing: sp.Matrix, symbols: tuple[sp.Symbol, ...]) 
         return ClosedForms(None, "M or f has a function that is not solved symbolically for three or more coordinates")
     fast = Fast(symbols)
     A = se.Matrix([[expand(fast.to(x)) for x in row] for row in M.tolist()])
-    f = [expand(fast.to(x)) for x in forcing]
     n = A.rows
     # every term of det M is ± a product of one term from each row's entries
     bound = prod(sum(_terms(A[i, j]) for j in range(n)) for i in range(n))
@@ -61,6 +60,7 @@ def by_cramer(M: sp.Matrix, forcing: sp.Matrix, symbols: tuple[sp.Symbol, ...]) 
         return ClosedForms(
             None, f"det M, the common denominator, can expand to as many as {bound} terms (more than {DET_TERMS_MAX})"
         )
+    f = [expand(fast.to(x)) for x in forcing]
     det = expand(A.det())
     if det == 0:
         return ClosedForms(None, "det M expands to 0 symbolically")
