@@ -52,6 +52,7 @@ from app.engine.budget import BudgetExceeded, time_limit
 from app.engine.derive import Derivation
 from app.engine.kinks import away_from_kinks
 from app.engine.stability import NEUTRAL, STABLE, UNSTABLE, Linear, linearize
+from app.engine.time_factor import common_factor_time
 from app.limits import MODES_SECONDS, SEARCH_SECONDS
 
 __all__ = ["NEUTRAL", "STABLE", "UNSTABLE", "Equilibrium", "Mode", "NormalModes", "defaults", "normal_modes"]
@@ -105,6 +106,7 @@ class NormalModes:
     found: int = 0  # equilibria found (more than listed when capped at MAX_EQUILIBRIA)
     angles_only: bool = False  # every coordinate is an angle, so the search covered all of configuration space
     family: bool = False  # a closed-form solution leaves a coordinate free (shown at 0)
+    common_factor: bool = False  # M, G, K change with t by one common factor, divided out (app.engine.time_factor)
 
 
 def defaults(d: Derivation) -> dict[sp.Symbol, float]:
@@ -205,16 +207,22 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
     singular: list[dict[str, float]] = []
     kinks: list[dict[str, float]] = []
     unclassified: list[dict[str, float]] = []
+    common_factor = False
     damped = False
     # over the cap: the ones nearest q = 0, listed in order
     shown = sorted(sorted(points, key=lambda p: float(np.abs(p[1]).sum()))[:MAX_EQUILIBRIA], key=lambda p: tuple(p[1]))
     for exact, x in shown:
         position = {name: float(v) for name, v in zip(table.names, x, strict=True)}
+        at = {}
         if timed_g or timed_lin:
-            # at rest for all t, but M, G or K change with t: no constant-coefficient linearization
-            unclassified.append(position)
-            continue
-        e = _linearized(d, M, J, G, exact, x, values)
+            # at rest for all t, and M, G, K change with t: constant after dividing by a common factor c(t),
+            # or no constant-coefficient linearization at all
+            t0 = common_factor_time((M, G, J), args, t, [*x, *k])
+            if t0 is None:
+                unclassified.append(position)
+                continue
+            at, common_factor = {t: sp.nsimplify(t0)}, True
+        e = _linearized(d, M.xreplace(at), J.xreplace(at), G.xreplace(at), exact, x, values)
         if e is None:
             singular.append(position)
         elif e == "kink":
@@ -253,6 +261,7 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
         len(points),
         bool(periodic) and all(periodic),
         family,
+        common_factor,
     )
 
 
