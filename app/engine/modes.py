@@ -52,7 +52,7 @@ from app.engine.budget import BudgetExceeded, time_limit
 from app.engine.derive import Derivation
 from app.engine.kinks import away_from_kinks
 from app.engine.stability import NEUTRAL, STABLE, UNSTABLE, Linear, linearize
-from app.engine.time_factor import common_factor_time
+from app.engine.time_factor import TIMES, common_factor_time
 from app.limits import MODES_SECONDS, SEARCH_SECONDS
 
 __all__ = ["NEUTRAL", "STABLE", "UNSTABLE", "Equilibrium", "Mode", "NormalModes", "defaults", "normal_modes"]
@@ -61,7 +61,6 @@ log = logging.getLogger(__name__)
 
 MAX_EQUILIBRIA = 8  # equilibria linearized (a polynomial condition can have many roots)
 MAX_SYMBOLIC_SIZE = 3  # coordinates up to which M and K are kept symbolic at an exact equilibrium
-TIMES = (0.0, 0.61, 1.7, 4.3)  # instants at which a time-dependent condition is tested
 
 
 @dataclass(frozen=True)

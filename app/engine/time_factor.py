@@ -17,7 +17,8 @@ from collections.abc import Sequence
 import numpy as np
 import sympy as sp
 
-# instants at which the coefficients are compared (as modes.TIMES, away from special values)
+# instants at which a time-dependent condition or coefficient is tested (away from special values); one home,
+# used by app.engine.modes too
 TIMES = (0.0, 0.61, 1.7, 4.3)
 
 
