@@ -120,8 +120,9 @@ def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[s
         return {name: pr.pair(_shown(a)) for name, a in zip(d.table.names, eqs.accelerations, strict=True)}
     skipped.append(Skipped(
         "accelerations",
-        "The accelerations in closed form are left out: solving M q̈ = f symbolically for this many coordinates "
-        "gives expressions too long to read, so they stay M⁻¹f, with the mass matrix M and the forcing f shown, solved numerically.",
+        "The accelerations in closed form are left out: solving M q̈ = f symbolically gives expressions too long "
+        f"to read ({eqs.closed_form_reason}), so they stay M⁻¹f, with the mass matrix M and the forcing f shown, "
+        "solved numerically.",
     ))  # fmt: skip
     return {}
 

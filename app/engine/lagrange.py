@@ -22,6 +22,7 @@ import numpy as np
 import sympy as sp
 
 from app.engine.budget import larger_than, pythagoras
+from app.engine.closed_form import by_cramer
 from app.engine.errors import DerivationError
 from app.engine.fast import Fast, convertible, diff, expand
 from app.engine.mechanics import Mechanics
@@ -47,6 +48,8 @@ class Equations:
     # whether the accelerations are short enough to show and compile; otherwise they are M⁻¹f, left
     # unexpanded (their tree shares subexpressions: never walk it whole, nor expand it)
     closed_form: bool = True
+    # why the accelerations are or are not shown in closed form, with their measured size (empty: no question)
+    closed_form_reason: str = ""
 
 
 # Smallest singular value, relative to the largest, below which an equilibrated M counts as singular.
@@ -186,4 +189,13 @@ def euler_lagrange(mech: Mechanics) -> Equations:
         # than the whole 4-coordinate elimination (the display tidies what it shows, in its own budget)
         solved = list(M.LUsolve(forcing))
     closed_form = not any(larger_than(a, CLOSED_FORM_MAX_NODES) for a in solved)
-    return Equations(dL_dq, momenta, ddt, residuals, M, forcing, tuple(solved), closed_form)
+    reason = ""
+    if not closed_form and M.shape[0] > CRAMER_MAX:
+        # LU's forms are too long: Cramer's rule, kept when its forms are short enough to read
+        cramer = by_cramer(M, forcing, (*q, *qd, *table.params, table.t))
+        reason = cramer.reason
+        if cramer.accelerations is not None:
+            solved, closed_form = list(cramer.accelerations), True
+    elif not closed_form:
+        reason = f"one has more than {CLOSED_FORM_MAX_NODES} operations"
+    return Equations(dL_dq, momenta, ddt, residuals, M, forcing, tuple(solved), closed_form, reason)

@@ -52,6 +52,7 @@ from app.engine.budget import work_limit
 from app.engine.derive import Derivation
 from app.engine.kinks import away_from_kinks
 from app.engine.stability import NEUTRAL, STABLE, UNSTABLE, Linear, linearize
+from app.engine.time_factor import TIMES, common_factor_time
 from app.engine.work import WorkExceeded
 from app.limits import MODES_WORK, SEARCH_EVALUATIONS
 
@@ -61,7 +62,6 @@ log = logging.getLogger(__name__)
 
 MAX_EQUILIBRIA = 8  # equilibria linearized (a polynomial condition can have many roots)
 MAX_SYMBOLIC_SIZE = 3  # coordinates up to which M and K are kept symbolic at an exact equilibrium
-TIMES = (0.0, 0.61, 1.7, 4.3)  # instants at which a time-dependent condition is tested
 
 
 @dataclass(frozen=True)
@@ -110,6 +110,7 @@ class NormalModes:
     families: tuple[dict[str, sp.Expr], ...] = ()
     everywhere: bool = False  # V is constant and nothing else pushes: every configuration is an equilibrium
     singular_exact: tuple[dict[str, sp.Expr] | None, ...] = ()  # the closed forms of ``singular``, where known
+    common_factor: bool = False  # M, G, K change with t by one common factor, divided out (app.engine.time_factor)
 
 
 def defaults(d: Derivation) -> dict[sp.Symbol, float]:
@@ -211,16 +212,22 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
     singular_exact: list[dict[str, sp.Expr] | None] = []
     kinks: list[dict[str, float]] = []
     unclassified: list[dict[str, float]] = []
+    common_factor = False
     damped = False
     # over the cap: the ones nearest q = 0, listed in order
     shown = sorted(sorted(points, key=lambda p: float(np.abs(p[1]).sum()))[:MAX_EQUILIBRIA], key=lambda p: tuple(p[1]))
     for exact, x in shown:
         position = {name: float(v) for name, v in zip(table.names, x, strict=True)}
+        at = {}
         if timed_g or timed_lin:
-            # at rest for all t, but M, G or K change with t: no constant-coefficient linearization
-            unclassified.append(position)
-            continue
-        e = _linearized(d, M, J, G, exact, x, values)
+            # at rest for all t, and M, G, K change with t: constant after dividing by a common factor c(t),
+            # or no constant-coefficient linearization at all
+            t0 = common_factor_time((M, G, J), args, t, [*x, *k])
+            if t0 is None:
+                unclassified.append(position)
+                continue
+            at, common_factor = {t: sp.nsimplify(t0)}, True
+        e = _linearized(d, M.xreplace(at), J.xreplace(at), G.xreplace(at), exact, x, values)
         if e is None:
             singular.append(position)
             singular_exact.append({s.name: v for s, v in exact.items()} if exact is not None else None)
@@ -263,6 +270,7 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
         tuple({s.name: v for s, v in sol.items()} for sol in families),
         all(e == 0 for e in g_exprs),
         tuple(singular_exact),
+        common_factor,
     )
 
 

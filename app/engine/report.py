@@ -334,8 +334,8 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             "Accelerations",
             [rf"\ddot{{q}} = {Mt}^{{-1}} f"],
             "M**(-1)*f",
-            f"Solved symbolically, {Mu} q̈ = f gives "
-            f"expressions too long to read for this many coordinates: the accelerations stay {Mu}⁻¹f, and the "
+            f"Solved symbolically, {Mu} q̈ = f gives expressions too long to read "
+            f"({eqs.closed_form_reason}): the accelerations stay {Mu}⁻¹f, and the "
             f"numerics solve {Mu} q̈ = f by LU at every step.",
         )
     )

@@ -287,6 +287,11 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
             f" At {len(nm.kinks)} of them V has a kink (an absolute value turns there), so the force jumps and no "
             "quadratic approximation, hence no frequency of small oscillations, exists at those points."
         )
+    if nm.common_factor:
+        why += (
+            " Its linearized equations change with time only through a factor common to all their coefficients; "
+            "divided by it, their coefficients are constant, and the exponents and frequencies below are theirs."
+        )
     if nm.unclassified:
         why += (
             " The system stays at rest there at all times, but its linearized equations change with time, so "

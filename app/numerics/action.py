@@ -20,7 +20,9 @@ times, spacing h.
   matrix J of Jacobi fields, J(0) = 0, J'(0) = 1, written with Π = P J' + Cᵀ J:
       J' = P⁻¹ (Π - Cᵀ J),   Π' = C J' + R J      (P, C, R now the full n×n matrices, C_ij = ∂²L/∂q_i∂q̇_j)
   integrated by RK4 with step 2h (its half-steps are grid times); t* is the first zero of det J after
-  0, placed by bisection on the cubic Hermite interpolant of J between two steps.
+  0: a sign change placed by bisection on the cubic Hermite interpolant of J between two steps, or a
+  touch (a minimum of J's smallest singular value that reaches 0, several fields vanishing at once)
+  confirmed by the second variation turning negative past it.
 """
 
 from __future__ import annotations
@@ -227,8 +229,7 @@ def _zero_between(J0: np.ndarray, D0: np.ndarray, J1: np.ndarray, D1: np.ndarray
     """Where in [0, 1] det J changes sign, J the cubic Hermite interpolant of (J, J') at a step's two ends."""
 
     def det_at(x: float) -> float:
-        h00, h10, h01, h11 = 2 * x**3 - 3 * x**2 + 1, x**3 - 2 * x**2 + x, -2 * x**3 + 3 * x**2, x**3 - x**2
-        return float(np.linalg.det(h00 * J0 + h10 * H * D0 + h01 * J1 + h11 * H * D1))
+        return float(np.linalg.det(_hermite(J0, D0, J1, D1, H, x)))
 
     low, high = 0.0, 1.0
     for _ in range(60):
@@ -240,15 +241,105 @@ def _zero_between(J0: np.ndarray, D0: np.ndarray, J1: np.ndarray, D1: np.ndarray
     return (low + high) / 2
 
 
+FOCUS_DIP = 1e-5  # σ_min(J) below this fraction of the fields' size so far: a candidate zero where det J only touches 0
+FOCUS_NEAR = 0.1  # a sampled minimum of σ_min(J) below this fraction is located between the samples first
+FOCUS_MARGIN = 0.05  # the second variation is compared on [0, t*(1 - m)] and [0, t*(1 + m)]
+
+
+def _hermite(J0: np.ndarray, D0: np.ndarray, J1: np.ndarray, D1: np.ndarray, H: float, x: float) -> np.ndarray:
+    """J at the fraction x of a step, the cubic Hermite interpolant of (J, J') at the step's two ends."""
+    h00, h10, h01, h11 = 2 * x**3 - 3 * x**2 + 1, x**3 - 2 * x**2 + x, -2 * x**3 + 3 * x**2, x**3 - x**2
+    return h00 * J0 + h10 * H * D0 + h01 * J1 + h11 * H * D1
+
+
+def _smallest_at(fields: list, H: float, s: int) -> float:
+    """Where σ_min(J) is least between steps s - 1 and s + 1 (golden section on the Hermite interpolant), in steps."""
+
+    def smallest(u: float) -> float:
+        first = min(max(int(math.floor(u)), 0), len(fields) - 2)
+        (J0, D0), (J1, D1) = fields[first], fields[first + 1]
+        return float(np.linalg.svd(_hermite(J0, D0, J1, D1, H, u - first), compute_uv=False)[-1])
+
+    golden = (math.sqrt(5) - 1) / 2
+    low, high = float(s - 1), float(min(s + 1, len(fields) - 1))
+    a, b = high - golden * (high - low), low + golden * (high - low)
+    fa, fb = smallest(a), smallest(b)
+    for _ in range(80):
+        if fa <= fb:
+            high, b, fb = b, a, fa
+            a = high - golden * (high - low)
+            fa = smallest(a)
+        else:
+            low, a, fa = a, b, fb
+            b = low + golden * (high - low)
+            fb = smallest(b)
+    return (low + high) / 2
+
+
+def second_variation_form(t: np.ndarray, P: np.ndarray, C: np.ndarray, R: np.ndarray, end: int) -> np.ndarray:
+    """The second variation on [0, t_end] over every coordinate and the sine shapes k = 1 … K (Simpson, end even).
+
+    For η = Σ a_ki sin(kπt/T) e_i, δ²S = ∫ (η'ᵀ P η' + 2 ηᵀ C η' + ηᵀ R η) dt, whose symmetric matrix has entries
+        ∫ (η_a' η_b' P_ij + η_a η_b' C_ij + η_a' η_b C_ji + η_a η_b R_ij) dt."""
+    tt = t[: end + 1]
+    h = float(t[1] - t[0])
+    weights = np.full(tt.size, 2.0)
+    weights[1:-1:2] = 4.0
+    weights[0] = weights[-1] = 1.0
+    weights *= h / 3  # composite Simpson
+    sines, slopes = zip(*(shape(k, tt, float(tt[-1])) for k in range(1, K_SHAPES + 1)), strict=True)
+    S, D = np.array(sines) * weights, np.array(slopes)
+    Pw, Cw, Rw = (x[:, :, : end + 1] for x in (P, C, R))
+    form = np.einsum("am,bm,ijm->aibj", D * weights, D, Pw)
+    form += np.einsum("am,bm,ijm->aibj", S, D, Cw)
+    form += np.einsum("am,bm,jim->aibj", D * weights, np.array(sines), Cw)
+    form += np.einsum("am,bm,ijm->aibj", S, np.array(sines), Rw)
+    size = K_SHAPES * P.shape[0]
+    return form.reshape(size, size)
+
+
+def _focus_confirmed(t: np.ndarray, P: np.ndarray, C: np.ndarray, R: np.ndarray, t_star: float) -> bool:
+    """A touching zero of det J is a focus when the second variation, positive on [0, t* - δ], has a negative
+    direction on [0, t* + δ] (δ = 5 % of t*): the Jacobi field that vanishes at t* can then be lowered."""
+    h = float(t[1] - t[0])
+    before = 2 * math.floor(t_star * (1 - FOCUS_MARGIN) / h / 2)
+    after = 2 * math.ceil(t_star * (1 + FOCUS_MARGIN) / h / 2)
+    if before < 8 or after > t.size - 1:
+        return False
+    low, high = (np.linalg.eigvalsh(second_variation_form(t, P, C, R, end)) for end in (before, after))
+    tol = 1e-9 * max(np.abs(low).max(), np.abs(high).max())
+    return bool(low.min() > tol and high.min() < -tol)
+
+
 def conjugate_time(t: np.ndarray, P: np.ndarray, C: np.ndarray, R: np.ndarray) -> float | None:
-    """The first t* > 0 where det J = 0 (the first kinetic focus), or None before the grid's end."""
+    """The first t* > 0 where det J = 0 (the first kinetic focus), or None before the grid's end.
+
+    A zero is either a sign change of det J, or a touch: a local minimum of the smallest singular value of J
+    below FOCUS_DIP of the fields' largest size so far (every field of a charge in a uniform magnetic field
+    returns to 0 together, and det J = 2(1 - cos ω_c t)/ω_c² ≥ 0), kept when the second variation confirms it."""
     dets, fields = jacobi_determinant(t, P, C, R)
     H = 2 * (t[1] - t[0])
-    # det J ~ t^n > 0 just after 0: the first step at which it is no longer positive
+    Js = np.array([J for J, _ in fields])
+    values = np.linalg.svd(Js, compute_uv=False)  # (steps, n), largest first
+    size = np.maximum.accumulate(values[:, 0])
+    smallest = values[:, -1]
+    # det J ~ t^n > 0 just after 0: the first step at which it is no longer positive, or a dip to 0 before it
     for s in range(2, dets.size):
         if dets[s] <= 0:
             (J0, D0), (J1, D1) = fields[s - 1], fields[s]
             return float((s - 1 + _zero_between(J0, D0, J1, D1, H)) * H)
+        last = s + 1 >= dets.size
+        if (
+            smallest[s] <= smallest[s - 1]
+            and (last or smallest[s] <= smallest[s + 1])
+            and (smallest[s] < FOCUS_NEAR * size[s])
+        ):
+            at = _smallest_at(fields, H, s)
+            first = min(int(at), len(fields) - 2)
+            (J0, D0), (J1, D1) = fields[first], fields[first + 1]
+            least = np.linalg.svd(_hermite(J0, D0, J1, D1, H, at - first), compute_uv=False)[-1]
+            if least < FOCUS_DIP * size[s] and _focus_confirmed(t, P, C, R, at * H):
+                return float(at * H)
     return None
 
 

@@ -145,3 +145,38 @@ def test_browser_lagrangian_is_the_engine_L(oscillator):
     source = action_terms(oscillator).browser
     assert "return _L;" in source and "Math.pow" in source
     assert "x" not in source.replace("Math", "").replace("k0", "").replace("max", "")
+
+
+def test_jacobi_fields_of_two_equal_oscillators_touch_zero_together():
+    # P = 1, C = 0, R = -ω² 1: J = (sin ωt / ω) 1, det J = sin² ωt / ω² ≥ 0 touches 0 at π/ω without changing sign
+    w = 2.0
+    t = np.linspace(0.0, 2.5, 4 * 512 + 1)
+    ones, zeros = np.ones_like(t), np.zeros_like(t)
+    P = np.array([[ones, zeros], [zeros, ones]])
+    R = -(w**2) * P
+    assert conjugate_time(t, P, np.zeros_like(P), R) == pytest.approx(math.pi / w, rel=1e-8)
+
+
+def _cyclotron(wc: float, T: float) -> tuple[np.ndarray, ...]:
+    """L = ½(ẋ² + ẏ²) + (ω_c/2)(x ẏ − y ẋ): P = 1, C_xẏ = ω_c/2, C_yẋ = −ω_c/2, R = 0 (m = qB/ω_c = 1)."""
+    t = np.linspace(0.0, T, 4 * 512 + 1)
+    ones, zeros = np.ones_like(t), np.zeros_like(t)
+    P = np.array([[ones, zeros], [zeros, ones]])
+    C = np.array([[zeros, wc / 2 * ones], [-wc / 2 * ones, zeros]])
+    return t, P, C, np.zeros_like(P)
+
+
+def test_cyclotron_focus_where_every_jacobi_field_vanishes():
+    # every path from a point returns to it after one turn, 2π/ω_c; det J = 2(1 − cos ω_c t)/ω_c² never goes negative
+    wc = 2.0
+    assert conjugate_time(*_cyclotron(wc, 4.0)) == pytest.approx(2 * math.pi / wc, rel=1e-8)
+    assert conjugate_time(*_cyclotron(wc, 3.0)) is None  # before the focus: no minimum of |det J| is a zero
+
+
+def test_magnetron_focus_with_an_outward_spring():
+    # add -½κ(x² + y²) to L (R = κ 1): with z = x + iy, z̈ + iω_c ż - κz = 0 has the roots -i(ω_c ∓ s)/2,
+    # s = √(ω_c² - 4κ), so the fields from 0 are ∝ e^{-iω_c t/2} sin(st/2): they all return to 0 at 2π/s
+    wc, kappa = 2.0, 0.05
+    t, P, C, _ = _cyclotron(wc, 4.0)
+    found = conjugate_time(t, P, C, kappa * P)
+    assert found == pytest.approx(2 * math.pi / math.sqrt(wc**2 - 4 * kappa), rel=1e-8)

@@ -45,6 +45,23 @@ def test_user_system_action_runs_in_the_pool(client):
     assert a["conjugate_time"] == pytest.approx(math.pi / 3, rel=1e-8) and a["kind"] == "saddle"
 
 
+CYCLOTRON = {
+    "coordinates": ["x", "y"],
+    "parameters": [{"name": "m", "value": 1}, {"name": "w", "value": 2}],
+    "lagrangian": "m*(x_dot**2 + y_dot**2)/2 + m*w*(x*y_dot - y*x_dot)/2",
+}
+
+
+def test_cyclotron_focus_where_det_j_only_touches_zero(client):
+    # a charge in a uniform field, ω_c = qB/m = 2: every path from a point meets it again after 2π/ω_c = π,
+    # while det J = 2(1 - cos ω_c t)/ω_c² never turns negative
+    body = {"system": CYCLOTRON, "initial": {"x": 0.3, "y_dot": 0.5}, "t_end": 4.0, "coordinate": "x"}
+    a = client.post("/api/action", json=body).json()
+    assert a["conjugate_time"] == pytest.approx(math.pi, rel=1e-8)
+    short = client.post("/api/action", json={**body, "t_end": 3.0}).json()
+    assert short["conjugate_time"] is None and short["kind"] == "minimum"
+
+
 @pytest.mark.parametrize(
     ("body", "words"),
     [
