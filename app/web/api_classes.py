@@ -102,7 +102,7 @@ async def create_class(classes: ClassroomDep, body: NewClass) -> JSONResponse:
     responses={404: {"model": ErrorResponse, "description": "No class has this code."}, **_errors(400, 413, 422, 429)},
 )
 async def join_class(classes: ClassroomDep, client: ClientDep, code: str, body: JoinRequest) -> Response:
-    return client.keep(_json(await classes.join(code, body.name, client.key)))
+    return client.keep(_json(await classes.join(code, body.name, client.key, client.address)))
 
 
 _keyed_read("/{code}/me", "view_class", "The class as your key sees it", ClassView, Classroom.view)

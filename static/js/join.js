@@ -140,21 +140,43 @@ function leave(message) {
   $("join-status").textContent = message || "";
 }
 
+const JOIN_TRIES = 12; // a full minute of waiting and more: a hall of students joining at once is let in
+
+/** Count down the seconds the server asked to wait before the next try, in the status line. */
+async function waitShown(seconds, why) {
+  for (let left = seconds; left > 0; left--) {
+    $("join-status").textContent = `${why} Trying again in ${left} s…`;
+    await new Promise((resolve) => setTimeout(resolve, 1000));
+  }
+  $("join-status").textContent = "Joining…";
+}
+
 $("join-form").addEventListener("submit", async (event) => {
   event.preventDefault();
   const code = $("join-code").value.trim();
   const name = $("join-name").value.trim();
+  const button = $("join-form").querySelector("button[type=submit]");
+  button.disabled = true;
+  $("join-status").textContent = "Joining…";
   let r;
   try {
-    r = await api("POST", `/api/classes/${encodeURIComponent(code)}/join`, { body: { name } });
+    // a 429 or 503 (many joining at once) is tried again after the Retry-After the server gives, shown counting down
+    for (let attempt = 1; ; attempt++) {
+      r = await api("POST", `/api/classes/${encodeURIComponent(code)}/join`, { body: { name } });
+      if ((r.status !== 429 && r.status !== 503) || attempt >= JOIN_TRIES) break;
+      await waitShown(Math.max(1, r.retryAfter || 2), r.status === 429 ? "Many are joining at once." : "The server is busy.");
+    }
   } catch {
     $("join-status").textContent = "The server cannot be reached.";
     return;
+  } finally {
+    button.disabled = false;
   }
   if (r.status !== 200) {
     $("join-status").textContent = r.data?.detail || `Not joined (${r.status}).`;
     return;
   }
+  $("join-status").textContent = "";
   current = { code: r.data.code, key: r.data.student_key, name: r.data.name, title: r.data.title };
   memory.set(current);
   show();

@@ -23,6 +23,7 @@ from app.service.classroom import keys, reports, store
 from app.service.classroom.assignments import checked_items, find_item
 from app.service.classroom.database import Database
 from app.service.classroom.rates import Window
+from app.service.fairness import shared
 from app.settings import Settings
 
 T = TypeVar("T")
@@ -110,10 +111,14 @@ class Classroom:
         await self._db(store.delete_whole_class, who.class_id)
 
     # ---- students ------------------------------------------------------------------------------
-    async def join(self, code: str, name: str, client: str) -> dict[str, Any]:
-        # a request without a session (the first from each browser of a classroom behind one NAT address)
-        # counts against its address, which may bring a whole class
-        (self.class_joins_by_address if client.startswith("address:") else self.client_joins).hit(client)
+    async def join(self, code: str, name: str, client: str, address: str) -> dict[str, Any]:
+        # a session joins at most client_joins_per_minute times; a request that counts as one of its address's
+        # shared keys (no cookie: ``new:``, or beyond the address's sessions this minute: ``many:``) counts
+        # against its network, which may bring a whole class (class_joins_per_minute)
+        if shared(client):
+            self.class_joins_by_address.hit(address)
+        else:
+            self.client_joins.hit(client)
         self.class_joins.hit(keys.normal_code(code) or "?")
         student_key, who = await self._db(store.join, code, name)
         items = await self._db(store.assignment, who.class_id)
