@@ -113,7 +113,8 @@ _keyed_read("/{code}/me", "view_class", "The class as your key sees it", ClassVi
     summary="Check a step, recorded for the class",
     description="As POST /api/scenes/{id}/check (the same verdict), plus `scene` or `system` (an assigned "
     "system's name), with a student's key. The verdict, the named mistake if any, the step and the answer are "
-    "recorded, on disk before the answer is sent.",
+    "recorded, on disk before the answer is sent. With an `attempt` id, a retry of the same press returns the "
+    "first verdict and records nothing new.",
     response_model=CheckResponse,
     responses={**ERRORS, 503: {"model": BusyError, "description": "The server is busy."}},
 )
@@ -121,7 +122,7 @@ async def check_step(classes: ClassroomDep, client: ClientDep, code: str, key: K
     target = {"scene": body.scene, "system": body.system}
 
     async def work(_session: str, address: str) -> bytes:
-        return await classes.check(code, key, target, body.step, body.coordinate, body.answer, address)
+        return await classes.check(code, key, target, body.step, body.coordinate, body.answer, address, body.attempt)
 
     response = await answer(client, work)
     response.headers.update(NO_STORE)
