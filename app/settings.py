@@ -94,6 +94,8 @@ class Settings(BaseSettings):
     """joins one client may make per minute"""
     student_checks_per_minute: PositiveInt = 30
     """checks one student may make per minute"""
+    class_check_slots: PositiveInt = 24
+    """a class's checks in flight at once (judged or queued), whatever its network"""
 
     # The memory budget (docs/deployment.md, "Capacity").  With P web processes, each with a forkserver, one
     # worker for the scenes' Python-loop runs (capped at S = scene_worker_mb) and W pool workers for

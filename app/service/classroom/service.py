@@ -23,7 +23,7 @@ from app.service.classroom import keys, reports, store
 from app.service.classroom.assignments import checked_items, find_item
 from app.service.classroom.database import Database
 from app.service.classroom.rates import Window
-from app.service.fairness import shared
+from app.service.fairness import CLASS, shared
 from app.settings import Settings
 
 T = TypeVar("T")
@@ -158,7 +158,6 @@ class Classroom:
         step: str,
         coordinate: str | None,
         answer: str,
-        address: str,
         attempt_id: str | None = None,
     ) -> bytes:
         """Judge a student's answer as practice mode does, record the verdict, then answer with it.
@@ -174,7 +173,8 @@ class Classroom:
             return _same_attempt(first, this, attempt_id)
         self.student_checks.hit(f"{who.class_id}:{who.student}")
         self.class_checks.hit(who.code)
-        client = f"class-student:{who.class_id}:{who.student}"  # the fair share is the student's
+        # the student is the unit of fairness, their class's budget of check slots the bound (not their network's)
+        client, address = f"class-student:{who.class_id}:{who.student}", f"{CLASS}{who.class_id}"
         if item.get("system") is not None:
             body = await self.checking.check_system(declared(item["system"]), step, coordinate, answer, client, address)
         else:
