@@ -6,7 +6,8 @@ pendulum's T two are stuck with the cross term forgotten while three are done.  
 at 1024×768), without scrolling, the dashboard names the double pendulum's U as the step most are stuck on and
 "The sign of U" (its case kept), totalled over both scenes, as the most common mistake with its count, 6×; one
 click shows the students concerned.  Projector mode enlarges the type.  An answer recorded later shows without
-a reload.
+a reload.  And a student's side of a busy lecture hall: /join brings the session cookie, and a join refused
+with 429 is tried again after its Retry-After, the wait shown.
 """
 
 from __future__ import annotations
@@ -126,4 +127,33 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
         _within_first_screen(page, selector, 768)
     page.screenshot(path=artifacts / "teach-projector-1024.png")
     assert errors == []
+    context.close()
+
+
+def test_the_join_page_brings_a_session_and_waits_out_a_busy_minute(browser, live_server, classes, artifacts):
+    """/join sets the session cookie before the student joins; a join answered 429 with Retry-After is tried
+    again after that wait, counted down on the page, and then goes through."""
+    context = browser.new_context(base_url=live_server, viewport={"width": 390, "height": 844})
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    code = page.request.post("/api/classes", data={"title": "Busy minute"}).json()["code"]
+    refused: list[str] = []
+
+    def once_busy(route):
+        if not refused:  # the first try meets a full minute
+            refused.append(route.request.url)
+            route.fulfill(status=429, headers={"Retry-After": "2", "Content-Type": "application/json"},
+                          body='{"detail": "joins from your network address: at most 300 a minute; try again in 2 s"}')
+        else:
+            route.continue_()
+
+    page.route("**/api/classes/*/join", once_busy)
+    page.goto(f"/join?code={code}")
+    assert any(c["name"] == "lagrange_session" for c in context.cookies())  # the session, before joining
+    page.fill("#join-name", "Ada")
+    page.click("#join-form button[type=submit]")
+    page.wait_for_function("document.getElementById('join-status').textContent.includes('Trying again in')")
+    assert "Many are joining at once" in page.locator("#join-status").inner_text()
+    page.wait_for_selector("#join-live:not([hidden])", timeout=15_000)
+    assert len(refused) == 1 and page.locator("#joined-name").inner_text() == "Ada"
     context.close()
