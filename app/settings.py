@@ -8,12 +8,21 @@ This module sits left of every layer: it imports nothing from ``app``.
 
 from __future__ import annotations
 
+import ipaddress
 import os
 from functools import lru_cache
 from pathlib import Path
 from typing import Annotated
 
-from pydantic import Field, NonNegativeFloat, NonNegativeInt, PositiveFloat, PositiveInt
+from pydantic import (
+    Field,
+    NonNegativeFloat,
+    NonNegativeInt,
+    PositiveFloat,
+    PositiveInt,
+    field_validator,
+    model_validator,
+)
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
 # The source tree: templates, static files and the default cache live beside ``app``.  An
@@ -75,9 +84,11 @@ class Settings(BaseSettings):
     proxy_header: str = ""
     """header naming the client behind a trusted reverse proxy (X-Forwarded-For); empty: none"""
     trusted_proxies: str = "127.0.0.1,::1"
-    """addresses of the reverse proxies whose proxy_header is believed"""
+    """addresses or CIDR ranges of the reverse proxies whose proxy_header is believed"""
     session_secret: str | None = None
-    """key that signs session cookies; else a file in the cache"""
+    """key that signs session cookies (the same for every replica); else a file in the cache"""
+    replicas: PositiveInt = 1
+    """servers sharing the classes (more than 1 needs database_url and session_secret)"""
     warm: bool = True
     """compile kernels and fill caches in the background at start-up"""
     data_dir: Path = ROOT / ".data"
@@ -94,6 +105,35 @@ class Settings(BaseSettings):
     """joins one client may make per minute"""
     student_checks_per_minute: PositiveInt = 30
     """checks one student may make per minute"""
+    class_check_slots: PositiveInt = 24
+    """a class's checks in flight at once (judged or queued), whatever its network"""
+
+    @field_validator("trusted_proxies")
+    @classmethod
+    def _proxies_are_addresses(cls, listed: str) -> str:
+        for entry in (a.strip() for a in listed.split(",") if a.strip()):
+            try:
+                ipaddress.ip_network(entry, strict=False)
+            except ValueError:
+                raise ValueError(
+                    f"trusted_proxies: {entry!r} is not an address or a CIDR range (e.g. 10.0.0.0/8, fd00::/8)"
+                ) from None
+        return listed
+
+    @model_validator(mode="after")
+    def _replicas_share_the_classes(self) -> Settings:
+        # replicas must see one record of the classes and honour each other's session cookies
+        if self.replicas > 1 and (not self.database_url or self.database_url.startswith("sqlite")):
+            raise ValueError(
+                f"replicas={self.replicas} needs database_url (PostgreSQL): on SQLite each replica would keep a "
+                "record of its own, and a teacher and her students could land in different classes"
+            )
+        if self.replicas > 1 and not self.session_secret:
+            raise ValueError(
+                f"replicas={self.replicas} needs session_secret, the same on every replica: else a session cookie "
+                "made by one replica is a stranger to the others"
+            )
+        return self
 
     # The memory budget (docs/deployment.md, "Capacity").  With P web processes, each with a forkserver, one
     # worker for the scenes' Python-loop runs (capped at S = scene_worker_mb) and W pool workers for

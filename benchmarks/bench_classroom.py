@@ -19,6 +19,13 @@ Reports: the summary's counts against what the students were told (must be
 exact), p50/p95 of each kind and the ratio of the p95s (goal: at most 1.5).
 
     .venv/bin/python -m benchmarks.bench_classroom [--students 150]
+
+With ``--hall AT_ONCE`` it is a lecture hall instead: the students all behind one address (127.0.0.44), each
+opening /join (its session) before joining, then checking every step once (recorded, with an attempt id),
+every answer distinct, AT_ONCE students checking at a time.  Reports the answers by status (goal: no 429)
+and p50/p95/p99 of a recorded check (goal: p95 ≤ 1 s).
+
+    .venv/bin/python -m benchmarks.bench_classroom --students 60 --hall 20
 """
 
 from __future__ import annotations
@@ -134,10 +141,80 @@ async def run(url: str, students: int) -> dict:
         return out
 
 
+HALL_ADDRESS = "127.0.0.44"  # the lecture hall's one network address
+
+
+async def hall_student(n: int, url: str, code: str, exercises: list[dict], gate: asyncio.Semaphore, out: dict) -> None:
+    """One student of the hall: opens /join (the session), joins, then checks every step once, recorded, with
+    an answer no one else sends (right, or one in three doubled); at most ``gate`` students check at a time."""
+    transport = httpx.AsyncHTTPTransport(local_address=HALL_ADDRESS)
+    async with httpx.AsyncClient(transport=transport, base_url=url, timeout=120) as client:
+        await client.get(f"/join?code={code}")
+        r = await client.post(f"/api/classes/{code}/join", json={"name": f"student {n}"})
+        out["statuses"][r.status_code] += 1
+        if r.status_code != 200:
+            return
+        key = {"Authorization": f"Bearer {r.json()['student_key']}"}
+        for k, e in enumerate(exercises):
+            base = e["answer"]["sympy"]
+            text = f"{'2*(' + base + ')' if (n + k) % 3 == 0 else base} + 0*{n * 100 + k}"
+            step = {"step": e["step"], **({"coordinate": e["coordinate"]} if e["coordinate"] else {})}
+            async with gate:
+                started = time.perf_counter()
+                r = await client.post(f"/api/classes/{code}/check", json={"scene": SCENE, **step, "answer": text,
+                                                                          "attempt": f"s{n}-step{k}-bench"},
+                                      headers=key)
+                out["statuses"][r.status_code] += 1
+                if r.status_code == 200:
+                    out["recorded"].append(time.perf_counter() - started)
+
+
+async def hall(url: str, students: int, at_once: int) -> dict:
+    async with httpx.AsyncClient(base_url=url) as client:
+        exercises = (await client.get(f"/api/scenes/{SCENE}/practice", timeout=120)).json()["exercises"][:10]
+        created = (await client.post("/api/classes", json={"title": "lecture hall"})).json()
+        code, teacher = created["code"], {"Authorization": f"Bearer {created['teacher_key']}"}
+        for e in exercises:  # warm-up: each step's problem built and the workers started, outside the class
+            step = {"step": e["step"], **({"coordinate": e["coordinate"]} if e["coordinate"] else {})}
+            await send(client, f"/api/scenes/{SCENE}/check", {**step, "answer": e["answer"]["sympy"]}, {}, [])
+        out: dict = {"recorded": [], "statuses": Counter()}
+        gate = asyncio.Semaphore(at_once)
+        started = time.perf_counter()
+        await asyncio.gather(*(hall_student(n, url, code, exercises, gate, out) for n in range(students)))
+        out["seconds"] = time.perf_counter() - started
+        out["summary"] = (await client.get(f"/api/classes/{code}/summary", headers=teacher)).json()
+        out["exercises"] = exercises
+        return out
+
+
+def report_hall(out: dict, students: int, at_once: int) -> bool:
+    t, statuses, summary = out["recorded"], out["statuses"], out["summary"]
+    print(f"lecture hall: {students} students from {HALL_ADDRESS}, {len(out['exercises'])} steps each, "
+          f"{at_once} checking at a time, in {out['seconds']:.0f} s; load average "
+          f"{open('/proc/loadavg').read().split()[0]} (1 min) at the end")
+    print(f"answers by status: {dict(sorted(statuses.items()))}; summary: {summary['students']} students, "
+          f"{summary['attempts']} attempts")
+    p95 = percentile(t, 0.95) if t else float("inf")
+    print(f"recorded checks: {len(t)} answered, p50 {1000 * statistics.median(t):.0f} ms, p95 {1000 * p95:.0f} ms "
+          f"(goal ≤ 1000 ms), p99 {1000 * percentile(t, 0.99):.0f} ms")
+    return set(statuses) == {200} and summary["attempts"] == students * len(out["exercises"])
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--students", type=int, default=150)
+    parser.add_argument("--hall", type=int, default=0, metavar="AT_ONCE",
+                        help="a lecture hall instead: the students behind one address, AT_ONCE checking at a time")
     args = parser.parse_args()
+    if args.hall:
+        with tempfile.TemporaryDirectory() as data:
+            process, url = start_server(data)
+            try:
+                out = asyncio.run(hall(url, args.students, args.hall))
+            finally:
+                process.terminate()
+                process.wait(30)
+        sys.exit(0 if report_hall(out, args.students, args.hall) else 1)
     with tempfile.TemporaryDirectory() as data:
         process, url = start_server(data)
         try:

@@ -62,3 +62,27 @@ def test_the_caps_fit_the_budget_or_take_the_smallest_useful_job(budget, process
 def test_a_configured_job_cap_that_does_not_fit_is_lowered():
     s = Settings(memory_budget_mb=2000, web_processes=1, workers=2, worker_memory_mb=1024)
     assert s.job_memory_mb < 1024 and s.worst_case_mb <= 2000
+
+
+def test_several_replicas_need_a_shared_database_and_secret():
+    from pydantic import ValidationError
+
+    from app.settings import Settings
+
+    with pytest.raises(ValidationError, match="replicas=2 needs database_url"):
+        Settings(replicas=2, session_secret="s" * 32)
+    with pytest.raises(ValidationError, match="replicas=2 needs database_url"):
+        Settings(replicas=2, session_secret="s" * 32, database_url="sqlite:///x.sqlite3")
+    with pytest.raises(ValidationError, match="replicas=3 needs session_secret"):
+        Settings(replicas=3, database_url="postgresql://db/lagrange")
+    assert Settings(replicas=2, database_url="postgresql://db/lagrange", session_secret="s" * 32).replicas == 2
+
+
+def test_trusted_proxies_are_addresses_or_ranges():
+    from pydantic import ValidationError
+
+    from app.settings import Settings
+
+    assert Settings(trusted_proxies="10.0.0.0/8, fd00::/8, 127.0.0.1").trusted_proxies
+    with pytest.raises(ValidationError, match="'proxy.local' is not an address or a CIDR range"):
+        Settings(trusted_proxies="127.0.0.1,proxy.local")

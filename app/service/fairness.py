@@ -14,7 +14,7 @@ issue: every request without a valid cookie gets one.  Who a request counts as
   ``new:<address>``: one shared weight for all of them.
 
 Admission rules for an expensive job (a derivation or simulation of a user
-system):
+system, a student's check):
 
 1. one job in flight per session: a session whose job is still running gets a
    429 with ``Retry-After``;
@@ -25,6 +25,12 @@ system):
    the cap), after taking the place of the heaviest waiting job when there is
    one: a well-behaved student behind a flooding neighbour's address is not
    refused for the neighbour's share;
+   a class's checks come with the "address" ``class:<id>`` and each student's
+   own key: the class has ``class_check_slots`` (a setting) in flight in place
+   of a network's share, so a lecture hall behind one address is not refused
+   for sharing it; those slots come beside ``capacity`` (the classes' checks
+   in flight are not counted against the other users' capacity, and all
+   together stop at ``capacity + class_check_slots``);
 3. at most ``capacity`` jobs in flight overall (running plus queued), beyond
    which a newcomer that has used less takes the place of the heaviest job
    still waiting, or else a 503 with ``Retry-After`` says the server is busy;
@@ -79,6 +85,7 @@ CLIENT_STRIKES = 2  # failures in a row before a client backs off
 BACKOFF_MAX = 300.0
 STRIKES = ("timeout", "memory", "crashed")  # outcomes that count against a client
 SHARED = ("new:", "many:", "address:")  # keys that many requests share (no one-at-a-time rule for them)
+CLASS = "class:"  # the "address" of a class's checks: its students share the class's budget, not a network's
 GAVE_WAY = (
     "your job gave way to a student's session: requests without the session cookie run only while no session "
     "waits; send the cookie this answer sets (a browser does) and try again"
@@ -171,6 +178,7 @@ class Fairness:
         self.capacity = capacity
         self.workers = workers
         self.per_address = per_address or max(1, capacity // 2)
+        self.class_slots = settings().class_check_slots
         self.mint_per_minute = mint_per_minute
         self.queue_seconds = queue_seconds or settings().queue_seconds
         self._waiting: list[Ticket] = []
@@ -300,7 +308,16 @@ class Fairness:
                 )
             ticket = Ticket(self, client, address)
             from_address = self._per_address.get(address, 0)
-            if (
+            if address.startswith(CLASS):
+                # a class's students are people, each with their own key (one check at a time, above): the class
+                # has a budget of its own, sized for a lecture, in place of a network's share and beyond the
+                # server's capacity; its checks still take their fair turn for a worker
+                if from_address >= self.class_slots:
+                    raise Busy(
+                        f"{self.class_slots} checks of your class are already running; try again shortly",
+                        self._retry_after(1),
+                    )
+            elif (
                 from_address >= self.per_address
                 and not self._make_room(ticket, [t for t in self._waiting if t.address == address], now)
                 and (many or from_address >= 2 * self.per_address or not self._lighter_than_the_address(ticket, now))
@@ -309,7 +326,13 @@ class Fairness:
                     f"{self.per_address} jobs from your network address are already running; try again shortly",
                     self._retry_after(1),
                 )
-            if len(self._in_flight) >= self.capacity and not self._make_room(ticket, list(self._waiting), now):
+            # classes' checks have their slots beside the capacity: they do not crowd out the other users
+            classes = sum(n for key, n in self._per_address.items() if key.startswith(CLASS))
+            crowd, room = (
+                (len(self._in_flight), self.capacity + self.class_slots) if address.startswith(CLASS)
+                else (len(self._in_flight) - classes, self.capacity)
+            )
+            if crowd >= room and not self._make_room(ticket, list(self._waiting), now):
                 raise Busy(
                     "the server is busy with other users' systems; try again shortly",
                     self._retry_after(len(self._in_flight) - self.capacity + 1),

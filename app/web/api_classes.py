@@ -102,7 +102,7 @@ async def create_class(classes: ClassroomDep, body: NewClass) -> JSONResponse:
     responses={404: {"model": ErrorResponse, "description": "No class has this code."}, **_errors(400, 413, 422, 429)},
 )
 async def join_class(classes: ClassroomDep, client: ClientDep, code: str, body: JoinRequest) -> Response:
-    return client.keep(_json(await classes.join(code, body.name, client.key)))
+    return client.keep(_json(await classes.join(code, body.name, client.key, client.address)))
 
 
 _keyed_read("/{code}/me", "view_class", "The class as your key sees it", ClassView, Classroom.view)
@@ -113,15 +113,16 @@ _keyed_read("/{code}/me", "view_class", "The class as your key sees it", ClassVi
     summary="Check a step, recorded for the class",
     description="As POST /api/scenes/{id}/check (the same verdict), plus `scene` or `system` (an assigned "
     "system's name), with a student's key. The verdict, the named mistake if any, the step and the answer are "
-    "recorded, on disk before the answer is sent.",
+    "recorded, on disk before the answer is sent. With an `attempt` id, a retry of the same press returns the "
+    "first verdict and records nothing new.",
     response_model=CheckResponse,
     responses={**ERRORS, 503: {"model": BusyError, "description": "The server is busy."}},
 )
 async def check_step(classes: ClassroomDep, client: ClientDep, code: str, key: KeyDep, body: ClassCheckRequest):
     target = {"scene": body.scene, "system": body.system}
 
-    async def work(_session: str, address: str) -> bytes:
-        return await classes.check(code, key, target, body.step, body.coordinate, body.answer, address)
+    async def work(_session: str, _address: str) -> bytes:  # the student and their class are the fair share's units
+        return await classes.check(code, key, target, body.step, body.coordinate, body.answer, body.attempt)
 
     response = await answer(client, work)
     response.headers.update(NO_STORE)

@@ -16,6 +16,7 @@ from app.web.schemas_user import STRICT, Name, SystemSpec
 Title = Annotated[str, StringConstraints(strip_whitespace=True, min_length=1, max_length=200, pattern=r"^[^\x00-\x1f\x7f]+$")]
 Pseudonym = Annotated[str, StringConstraints(strip_whitespace=True, min_length=1, max_length=40, pattern=r"^[^\x00-\x1f\x7f]+$")]
 SceneId = Annotated[str, Field(min_length=1, max_length=40, pattern=r"^[a-z0-9_-]+$")]
+AttemptId = Annotated[str, Field(min_length=8, max_length=64, pattern=r"^[A-Za-z0-9_-]+$")]
 
 
 class NewClass(BaseModel):
@@ -80,11 +81,18 @@ class ClassCheckRequest(CheckRequest):
     model_config = ConfigDict(
         **STRICT,
         json_schema_extra={
-            "example": {"scene": "simple-pendulum", "step": "kinetic", "answer": "m*R**2*theta_dot**2/2"}
+            "example": {"scene": "simple-pendulum", "step": "kinetic", "answer": "m*R**2*theta_dot**2/2",
+                        "attempt": "k3v9Qx2mTa7Lw0pZ"}
         },
     )
     scene: SceneId | None = Field(None, description="The scene's id (or `system`).")
     system: Name | None = Field(None, description="The name of a system the instructor assigned.")
+    attempt: AttemptId | None = Field(
+        None,
+        description="An id the page makes for this press of Check (8-64 letters, digits, `-` or `_`), sent again "
+        "with any retry of it: a retry gets the first verdict and records nothing new. Another answer under an "
+        "id already used is refused.",
+    )
 
 
 class StepSummary(BaseModel):
@@ -100,12 +108,25 @@ class StepSummary(BaseModel):
     mistake_names: dict[str, str] = Field(
         default_factory=dict, description="Each named mistake's key in words, as the student was told it."
     )
+    stuck: int = Field(description="Students who answered the step and have no correct answer to it yet.")
+    students_stuck: list[str] = Field(description="Their names, in alphabetical order.")
+
+
+class MistakeTotal(BaseModel):
+    key: str = Field(description="The tutor's stable key of the mistake (of its first step, most common first).")
+    name: str = Field(description="The mistake in words, as the students were told it (empty when it has none).")
+    count: int = Field(description="Incorrect answers with this mistake, over every step and scene.")
+    steps: list[dict[str, Any]] = Field(description="Where it was made: `scene` or `system`, step, coordinate, count.")
+    students: list[str] = Field(description="The students who made it, in alphabetical order.")
 
 
 class Summary(BaseModel):
     students: int
     attempts: int
     steps: list[StepSummary] = Field(description="Each step: `scene` or `system`, then the counts.")
+    mistakes: list[MistakeTotal] = Field(
+        description="Each named mistake totalled over steps and scenes (by its words), most common first."
+    )
 
 
 class StudentStep(BaseModel):

@@ -17,6 +17,13 @@ const done = new Set(); // "item|step|coordinate" of the steps this student has 
 
 const stepId = (item, step, coordinate) => `${item}|${step}|${coordinate || ""}`;
 
+/** A new attempt id (22 random URL-safe characters): the server records one answer per id, so a press of
+ * Check sent twice (a retry after a lost answer) is judged and counted once. */
+function attemptId() {
+  const bytes = crypto.getRandomValues(new Uint8Array(16));
+  return btoa(String.fromCharCode(...bytes)).replace(/\+/g, "-").replace(/\//g, "_").replace(/=+$/, "");
+}
+
 function show() {
   showPanes("join-start", "join-live", current && { "joined-title": current.title, "joined-name": current.name });
 }
@@ -57,17 +64,20 @@ function stepView(item, practice, s, index) {
     box);
   const key = stepId(item.scene || item.name, s.step, s.coordinate);
   if (done.has(key)) form.classList.add("step-done");
+  let pending = null; // {answer, attempt}: a press of Check not yet answered; pressing again sends the same id
   form.addEventListener("submit", async (event) => {
     event.preventDefault();
     const answer = input.value.trim();
     if (!answer) return;
     button.disabled = true;
+    if (!pending || pending.answer !== answer) pending = { answer, attempt: attemptId() };
     const body = { ...(item.scene ? { scene: item.scene } : { system: item.name }), step: s.step, answer,
-      ...(s.coordinate ? { coordinate: s.coordinate } : {}) };
+      attempt: pending.attempt, ...(s.coordinate ? { coordinate: s.coordinate } : {}) };
     try {
       // one check at a time: while a previous one still runs the server asks to wait, a few seconds at most
       const r = await api("POST", `/api/classes/${current.code}/check`, { key: current.key, body, tries: 3, patience: 5 });
       verdictView(box, r);
+      if (r.status !== 429 && r.status !== 503) pending = null; // answered: the next press is a new attempt
       if (r.status === 200 && (r.data.verdict === "correct" || r.data.verdict === "equivalent")) {
         done.add(key);
         form.classList.add("step-done");
@@ -75,7 +85,7 @@ function stepView(item, practice, s, index) {
       }
       if (r.status === 403) leave("This class no longer exists, or your key no longer opens it.");
     } catch {
-      verdictView(box, { status: 0, data: { detail: "The server cannot be reached; try again." } });
+      verdictView(box, { status: 0, data: { detail: "The server cannot be reached; press Check again (an answer is never counted twice)." } });
     } finally {
       button.disabled = false;
     }
@@ -140,21 +150,43 @@ function leave(message) {
   $("join-status").textContent = message || "";
 }
 
+const JOIN_TRIES = 12; // a full minute of waiting and more: a hall of students joining at once is let in
+
+/** Count down the seconds the server asked to wait before the next try, in the status line. */
+async function waitShown(seconds, why) {
+  for (let left = seconds; left > 0; left--) {
+    $("join-status").textContent = `${why} Trying again in ${left} s…`;
+    await new Promise((resolve) => setTimeout(resolve, 1000));
+  }
+  $("join-status").textContent = "Joining…";
+}
+
 $("join-form").addEventListener("submit", async (event) => {
   event.preventDefault();
   const code = $("join-code").value.trim();
   const name = $("join-name").value.trim();
+  const button = $("join-form").querySelector("button[type=submit]");
+  button.disabled = true;
+  $("join-status").textContent = "Joining…";
   let r;
   try {
-    r = await api("POST", `/api/classes/${encodeURIComponent(code)}/join`, { body: { name } });
+    // a 429 or 503 (many joining at once) is tried again after the Retry-After the server gives, shown counting down
+    for (let attempt = 1; ; attempt++) {
+      r = await api("POST", `/api/classes/${encodeURIComponent(code)}/join`, { body: { name } });
+      if ((r.status !== 429 && r.status !== 503) || attempt >= JOIN_TRIES) break;
+      await waitShown(Math.max(1, r.retryAfter || 2), r.status === 429 ? "Many are joining at once." : "The server is busy.");
+    }
   } catch {
     $("join-status").textContent = "The server cannot be reached.";
     return;
+  } finally {
+    button.disabled = false;
   }
   if (r.status !== 200) {
     $("join-status").textContent = r.data?.detail || `Not joined (${r.status}).`;
     return;
   }
+  $("join-status").textContent = "";
   current = { code: r.data.code, key: r.data.student_key, name: r.data.name, title: r.data.title };
   memory.set(current);
   show();

@@ -1,8 +1,11 @@
 /**
  * teach.js — the instructor's page (templates/teach.html): create or open a class, project its code,
  * set the assignment, and watch the class live: the summary and the students are polled every
- * two seconds; bars per step (right and wrong answers, students done), the most common named
- * mistakes with the step typeset, one row per student. The instructor key stays in localStorage.
+ * two seconds. The first screen answers "which step is the class stuck on, and which mistake": the
+ * step with the most students stuck (answered, not yet right) and the most common named mistake,
+ * totalled over every scene, each one click from the students concerned; then the steps, most stuck
+ * first (bars of right and wrong answers), every mistake, one row per student. Projector mode enlarges
+ * the type and hides the editing. The instructor key stays in localStorage.
  */
 import { api, el, mistakeWords, practiceOf, showPanes, stepTex, stored, typeset } from "./classroom.js";
 
@@ -74,10 +77,56 @@ async function labelOf(entry) {
   return { tex: stepTex(practice, entry.step, entry.coordinate), where: entry.scene ? titleOf[entry.scene] || entry.scene : entry.system };
 }
 
+/** The steps, the one with the most students stuck first (then the most wrong answers; else in assignment order). */
+function byStuck(steps) {
+  return steps.map((entry, i) => ({ entry, i }))
+    .sort((a, b) => b.entry.stuck - a.entry.stuck || b.entry.incorrect - a.entry.incorrect || a.i - b.i)
+    .map(({ entry }) => entry);
+}
+
+/** One click to the students concerned: a disclosure listing their names. */
+function whoList(names, what) {
+  if (!names.length) return null;
+  return el("details", { className: "now-who" },
+    el("summary", { text: `${what} (${names.length})` }),
+    el("p", { className: "now-names", text: names.join(", ") }));
+}
+
+async function drawNow(summary) {
+  const [top] = byStuck(summary.steps);
+  const stuck = $("now-stuck").querySelector(".now-body");
+  if (top && top.stuck) {
+    const label = await labelOf(top);
+    $("now-stuck").dataset.step = top.step;
+    stuck.replaceChildren(
+      el("p", { className: "now-what" }, typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` })),
+      el("p", { className: "now-figure", text: `${top.stuck} of ${summary.students} stuck · ${top.students_done} done` }),
+      whoList(top.students_stuck, "Show the students stuck"));
+  } else {
+    delete $("now-stuck").dataset.step;
+    stuck.replaceChildren(el("p", { className: "help", text: "Nobody is stuck yet." }));
+  }
+  const [mistake] = summary.mistakes;
+  const body = $("now-mistake").querySelector(".now-body");
+  if (mistake) {
+    const where = mistake.steps[0];
+    const label = await labelOf(where);
+    $("now-mistake").dataset.count = mistake.count;
+    body.replaceChildren(
+      el("p", { className: "now-what" }, el("strong", { text: mistake.name || mistakeWords(mistake.key) })),
+      el("p", { className: "now-figure" }, `${mistake.count}× · in `, typeset(el("span"), label.tex),
+        el("span", { className: "dash-where", text: ` ${label.where}${mistake.steps.length > 1 ? ` and ${mistake.steps.length - 1} more` : ""}` })),
+      whoList(mistake.students, "Show the students who made it"));
+  } else {
+    delete $("now-mistake").dataset.count;
+    body.replaceChildren(el("p", { className: "help", text: "No named mistake so far." }));
+  }
+}
+
 async function drawSteps(summary) {
   const list = $("dash-steps");
   const rows = [];
-  for (const entry of summary.steps) {
+  for (const entry of byStuck(summary.steps)) {
     const label = await labelOf(entry);
     const total = entry.correct + entry.incorrect;
     const bar = el("div", { className: "dash-bar", role: "img",
@@ -92,26 +141,28 @@ async function drawSteps(summary) {
       el("div", { className: "dash-label" }, typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` })),
       bar,
       el("p", { className: "dash-numbers",
-        text: `${entry.students_done} of ${summary.students} done · ${entry.correct} right · ${entry.incorrect} wrong`
-          + (mistakes.length ? ` · most often: ${(entry.mistake_names?.[mistakes[0][0]] || mistakeWords(mistakes[0][0])).toLowerCase()}` : "") })));
+        text: `${entry.stuck} stuck · ${entry.students_done} of ${summary.students} done · ${entry.correct} right · ${entry.incorrect} wrong`
+          + (mistakes.length ? ` · most often: ${entry.mistake_names?.[mistakes[0][0]] || mistakeWords(mistakes[0][0])}` : "") }),
+      whoList(entry.students_stuck, "Show the students stuck")));
   }
   list.replaceChildren(...rows);
   if (!rows.length) list.replaceChildren(el("li", { className: "help", text: "No steps yet: set an assignment, or wait for the first answer." }));
 }
 
 async function drawMistakes(summary) {
-  const all = [];
-  for (const entry of summary.steps) {
-    for (const [name, count] of Object.entries(entry.mistakes)) all.push({ entry, name, count });
-  }
-  all.sort((a, b) => b.count - a.count);
   const rows = [];
-  for (const { entry, name, count } of all.slice(0, 8)) {
-    const label = await labelOf(entry);
-    rows.push(el("li", { className: "dash-mistake", "data-mistake": name },
-      el("span", { className: "dash-count", text: `${count}×` }),
-      el("strong", { text: entry.mistake_names?.[name] || mistakeWords(name) }),
-      el("span", { text: " in " }), typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` (${label.where})` })));
+  for (const mistake of summary.mistakes.slice(0, 8)) {
+    const pieces = [];
+    for (const where of mistake.steps) {
+      const label = await labelOf(where);
+      pieces.push(el("span", { className: "dash-piece" }, typeset(el("span"), label.tex),
+        el("span", { className: "dash-where", text: ` (${label.where}${mistake.steps.length > 1 ? `, ${where.count}×` : ""})` })));
+    }
+    rows.push(el("li", { className: "dash-mistake", "data-mistake": mistake.key },
+      el("span", { className: "dash-count", text: `${mistake.count}×` }),
+      el("strong", { text: mistake.name || mistakeWords(mistake.key) }),
+      el("span", { text: " in " }), ...pieces,
+      whoList(mistake.students, "Show the students")));
   }
   $("dash-mistakes").replaceChildren(...rows);
   if (!rows.length) $("dash-mistakes").replaceChildren(el("li", { className: "help", text: "No named mistake so far." }));
@@ -144,6 +195,7 @@ async function poll() {
     if (summary.status === 200 && students.status === 200) {
       const s = summary.data;
       $("dash-counts").textContent = `${s.students} student${s.students === 1 ? "" : "s"} · ${s.attempts} answer${s.attempts === 1 ? "" : "s"} · updated ${new Date().toLocaleTimeString()}`;
+      await drawNow(s);
       await drawSteps(s);
       await drawMistakes(s);
       drawStudents(students.data.students);
@@ -227,6 +279,18 @@ $("delete-class").addEventListener("click", async () => {
   if (r.status === 204) forget();
   else $("data-status").textContent = r.data?.detail || `Not deleted (${r.status}).`;
 });
+
+// ---- projector mode: large type, only what the class should see -----------------------------------
+
+const projector = stored("lagrange-teach-projector");
+function project(on) {
+  document.body.classList.toggle("projector", on);
+  $("projector").setAttribute("aria-pressed", String(on));
+  $("projector").textContent = on ? "Leave projector mode" : "Projector mode";
+  projector.set(on || null);
+}
+$("projector").addEventListener("click", () => project(!document.body.classList.contains("projector")));
+project(Boolean(projector.get()));
 
 show();
 // a class this browser kept: reopened, and forgotten only when the server says the key no longer opens it

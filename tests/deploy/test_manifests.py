@@ -62,3 +62,32 @@ def test_the_memory_budget_fits_the_kubernetes_limits():
     for probe in ("readinessProbe", "livenessProbe"):
         assert container[probe]["httpGet"]["path"] == "/healthz"
         assert container[probe].get("timeoutSeconds", 1) <= container[probe]["periodSeconds"]
+
+
+def test_the_kubernetes_manifest_validates_against_the_api_schemas():
+    """Every document of deploy/kubernetes.yaml against the Kubernetes API's own schemas (kubernetes-validate,
+    offline), strictly: a misspelt or misplaced field fails."""
+    import kubernetes_validate
+    import yaml
+
+    documents = list(yaml.safe_load_all((ROOT / "deploy" / "kubernetes.yaml").read_text()))
+    assert {d["kind"] for d in documents} == {"Deployment", "Service", "HorizontalPodAutoscaler", "PodDisruptionBudget"}
+    for document in documents:
+        kubernetes_validate.validate(document, "1.30", strict=True)
+
+
+def test_the_replicas_share_postgresql_and_the_session_secret():
+    import yaml
+
+    documents = list(yaml.safe_load_all((ROOT / "deploy" / "kubernetes.yaml").read_text()))
+    deployment = next(d for d in documents if d["kind"] == "Deployment")
+    container = deployment["spec"]["template"]["spec"]["containers"][0]
+    env = {e["name"]: e.get("value") for e in container["env"]}
+    assert int(env["LAGRANGE_REPLICAS"]) > 1 and env["LAGRANGE_PROXY_HEADER"]
+    secrets = [s["secretRef"] for s in container["envFrom"]]
+    assert {s["name"] for s in secrets} == {"lagrange-database", "lagrange-session"}
+    assert not any(s.get("optional") for s in secrets)  # without them a pod would keep classes of its own
+    service = next(d for d in documents if d["kind"] == "Service")
+    assert "sessionAffinity" not in service["spec"]  # ingress controllers ignore it; nothing relies on it
+    budget = next(d for d in documents if d["kind"] == "PodDisruptionBudget")
+    assert budget["spec"]["selector"] == deployment["spec"]["selector"] and budget["spec"]["minAvailable"] >= 1

@@ -44,3 +44,12 @@ def test_a_single_address_header_works_too():
 
 def test_no_peer_is_unknown():
     assert client_address({"headers": []}, header="", trusted="") == "unknown"
+
+
+def test_trusted_proxies_may_be_cidr_ranges():
+    behind = scope("10.42.3.17", ("X-Forwarded-For", "203.0.113.7, 10.42.0.5"))  # an ingress pod, then another hop
+    assert client_address(behind, header="X-Forwarded-For", trusted="10.42.0.0/16") == "203.0.113.7"
+    outside = scope("10.43.0.1", ("X-Forwarded-For", "203.0.113.7"))  # not in the range: its header proves nothing
+    assert client_address(outside, header="X-Forwarded-For", trusted="10.42.0.0/16") == "10.43.0.1"
+    six = scope("fd00::5", ("X-Forwarded-For", "2001:db8::9"))
+    assert client_address(six, header="X-Forwarded-For", trusted="fd00::/8,127.0.0.1") == "2001:db8::9"

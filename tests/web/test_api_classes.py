@@ -72,8 +72,12 @@ def test_a_class_from_creation_to_deletion(client, classes):
     kinetic, potential = summary["steps"]
     assert kinetic == {"scene": SCENE, "step": "kinetic", "coordinate": None, "correct": 1, "incorrect": 2,
                        "students_done": 1, "mistakes": {"missing_half": 2},
-                       "mistake_names": {"missing_half": "the ½ of ½ m v² left out"}}
+                       "mistake_names": {"missing_half": "the ½ of ½ m v² left out"},
+                       "stuck": 1, "students_stuck": ["Bo"]}  # Ada got it right after her mistake
     assert potential["correct"] == potential["incorrect"] == 0
+    assert summary["mistakes"] == [{"key": "missing_half", "name": "the ½ of ½ m v² left out", "count": 2,
+                                    "steps": [{"scene": SCENE, "step": "kinetic", "coordinate": None, "count": 2}],
+                                    "students": ["Ada", "Bo"]}]
 
     rows = client.get(f"/api/classes/{code}/students", headers=bearer(teacher)).json()["students"]
     assert [(s["name"], s["attempts"], s["done"], s["assigned"]) for s in rows] == [("Ada", 2, 1, 2), ("Bo", 1, 0, 2)]
@@ -161,7 +165,8 @@ def test_refusals_say_what_is_wrong(client, classes):
     summary = client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).json()
     assert summary["steps"][1] | {"mistakes": None} == {"system": "spring", "step": "acceleration", "coordinate": "x",
                                                         "correct": 1, "incorrect": 0, "students_done": 1,
-                                                        "mistakes": None, "mistake_names": {}}
+                                                        "mistakes": None, "mistake_names": {},
+                                                        "stuck": 0, "students_stuck": []}
 
 
 @pytest.mark.parametrize("backend", ["sqlite"])
@@ -206,3 +211,22 @@ def test_a_key_is_compared_as_a_digest_in_constant_time(monkeypatch, tmp_path, s
             pass
     assert compared == [(64, 64)] * 3  # one comparison of two digests, whether the code exists or not
     room.stop()
+
+
+def test_a_retried_check_returns_the_first_verdict_and_records_nothing_new(client, classes):
+    code, teacher = new_class(client)
+    ada = join(client, code, "Ada")
+    first = check(client, code, ada, WRONG_T, attempt="press-0001-ada")
+    assert first.status_code == 200 and first.json()["verdict"] == "incorrect"
+    again = check(client, code, ada, WRONG_T, attempt="press-0001-ada")  # the page sends the same press again
+    assert again.status_code == 200 and again.json() == first.json()
+    other = check(client, code, ada, RIGHT_T, attempt="press-0001-ada")  # another answer under a used id
+    assert other.status_code == 422 and other.json()["loc"][-1] == "attempt" and "another answer" in other.text
+    assert check(client, code, ada, RIGHT_T, attempt="press-0002-ada").json()["verdict"] == "correct"
+    bo = join(client, code, "Bo")  # ids are per student: Bo's press with the same id is his own
+    assert check(client, code, bo, RIGHT_T, attempt="press-0001-ada").json()["verdict"] == "correct"
+    summary = client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).json()
+    assert summary["attempts"] == 3 and summary["steps"][0]["mistakes"] == {"missing_half": 1}
+    assert check(client, code, ada, RIGHT_T, attempt="short").status_code == 422  # 8 to 64 characters
+    assert check(client, code, ada, RIGHT_T, attempt="no spaces here").status_code == 422
+

@@ -5,7 +5,9 @@ SHA-256 (``teacher_hash``); each student a pseudonym and a key kept the same
 way.  The assignment is a list of items (a scene, or a system the instructor
 declared), each with its steps.  An attempt is one judged answer: who, which
 item and step, the verdict, the named mistake when the checker found one, the
-answer's text and when.  Times are naive UTC.
+answer's text and when, and, when the page sent one, the attempt's id (unique
+per student: a retry records nothing new) with the verdict it was answered.
+Times are naive UTC.
 """
 
 from __future__ import annotations
@@ -56,6 +58,7 @@ class AssignmentRow(Base):
 
 class AttemptRow(Base):
     __tablename__ = "attempts"
+    __table_args__ = (UniqueConstraint("student_id", "attempt_id", name="uq_attempts_student_attempt"),)
 
     id: Mapped[int] = mapped_column(Integer, primary_key=True)
     class_id: Mapped[int] = mapped_column(ForeignKey("classes.id", ondelete="CASCADE"), index=True)
@@ -68,3 +71,6 @@ class AttemptRow(Base):
     mistake_name: Mapped[str | None] = mapped_column(String(200), nullable=True)  # and its display text
     answer: Mapped[str] = mapped_column(Text)
     at: Mapped[datetime] = mapped_column(DateTime)
+    # the id the student's page gave this press of Check (a retry sends it again), and the verdict answered
+    attempt_id: Mapped[str | None] = mapped_column(String(64), nullable=True)
+    response: Mapped[str | None] = mapped_column(Text, nullable=True)

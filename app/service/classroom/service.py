@@ -17,12 +17,13 @@ import orjson
 
 from app.engine.check import PER_COORDINATE
 from app.engine.mistakes import RULES
-from app.errors import NoKey, WrongKey
+from app.errors import NoKey, Refused, WrongKey
 from app.service.checking import Checking, declared
 from app.service.classroom import keys, reports, store
 from app.service.classroom.assignments import checked_items, find_item
 from app.service.classroom.database import Database
 from app.service.classroom.rates import Window
+from app.service.fairness import CLASS, shared
 from app.settings import Settings
 
 T = TypeVar("T")
@@ -48,6 +49,16 @@ def mistake_text(result: dict[str, Any]) -> str | None:
     named = result.get("mistake") if result.get("verdict") == "incorrect" else None
     text = named.get("name") if isinstance(named, dict) else None
     return text[:200] if isinstance(text, str) and text else None
+
+
+def _same_attempt(first: store.Recorded, this: tuple[str, str, str | None, str], attempt_id: str) -> bytes:
+    """The first verdict of an attempt sent again; refused when the id comes back with another answer."""
+    if (first.item, first.step, first.coordinate, first.answer) != this:
+        raise Refused(
+            "attempt: this attempt id was already used for another answer; send a new id with a new answer",
+            attempt_id, ("attempt",),
+        )
+    return first.response
 
 
 class Classroom:
@@ -110,10 +121,14 @@ class Classroom:
         await self._db(store.delete_whole_class, who.class_id)
 
     # ---- students ------------------------------------------------------------------------------
-    async def join(self, code: str, name: str, client: str) -> dict[str, Any]:
-        # a request without a session (the first from each browser of a classroom behind one NAT address)
-        # counts against its address, which may bring a whole class
-        (self.class_joins_by_address if client.startswith("address:") else self.client_joins).hit(client)
+    async def join(self, code: str, name: str, client: str, address: str) -> dict[str, Any]:
+        # a session joins at most client_joins_per_minute times; a request that counts as one of its address's
+        # shared keys (no cookie: ``new:``, or beyond the address's sessions this minute: ``many:``) counts
+        # against its network, which may bring a whole class (class_joins_per_minute)
+        if shared(client):
+            self.class_joins_by_address.hit(address)
+        else:
+            self.client_joins.hit(client)
         self.class_joins.hit(keys.normal_code(code) or "?")
         student_key, who = await self._db(store.join, code, name)
         items = await self._db(store.assignment, who.class_id)
@@ -143,28 +158,33 @@ class Classroom:
         step: str,
         coordinate: str | None,
         answer: str,
-        address: str,
+        attempt_id: str | None = None,
     ) -> bytes:
-        """Judge a student's answer as practice mode does, record the verdict, then answer with it."""
+        """Judge a student's answer as practice mode does, record the verdict, then answer with it.
+
+        A press of Check the page already sent (the same ``attempt_id``) gets the verdict first answered for it,
+        judged and recorded once."""
         who, items = await self._db(self._with_items, code, key, False)
+        item = find_item(items, target, step, coordinate)
+        name = item["name"] if item.get("system") is not None else item["scene"]
+        recorded = coordinate if step in PER_COORDINATE else None
+        this = (name, step, recorded, answer.strip())
+        if attempt_id is not None and (first := await self._db(store.recorded, who, attempt_id)) is not None:
+            return _same_attempt(first, this, attempt_id)
         self.student_checks.hit(f"{who.class_id}:{who.student}")
         self.class_checks.hit(who.code)
-        item = find_item(items, target, step, coordinate)
-        client = f"class-student:{who.class_id}:{who.student}"  # the fair share is the student's
+        # the student is the unit of fairness, their class's budget of check slots the bound (not their network's)
+        client, address = f"class-student:{who.class_id}:{who.student}", f"{CLASS}{who.class_id}"
         if item.get("system") is not None:
-            user = declared(item["system"])
-            body = await self.checking.check_system(user, step, coordinate, answer, client, address)
-            name = item["name"]
+            body = await self.checking.check_system(declared(item["system"]), step, coordinate, answer, client, address)
         else:
-            name = item["scene"]
             body = await self.checking.check_scene(name, step, coordinate, answer, client, address)
         result = orjson.loads(body)
-        recorded = coordinate if step in PER_COORDINATE else None
-        await self._db(
+        raced = await self._db(
             store.record, who, name, step, recorded, result["verdict"], named_mistake(result), answer.strip(),
-            mistake_text(result),
+            mistake_text(result), attempt_id, body if attempt_id is not None else None,
         )
-        return body
+        return body if raced is None else _same_attempt(raced, this, attempt_id or "")
 
     def stop(self) -> None:
         self.db.stop()

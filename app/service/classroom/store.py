@@ -141,6 +141,29 @@ def assignment(db: Database, class_id: int) -> list[dict[str, Any]]:
     return items
 
 
+@dataclass(frozen=True)
+class Recorded:
+    """An attempt already recorded under a page's attempt id: what it was for, and the verdict it was answered."""
+
+    item: str
+    step: str
+    coordinate: str | None
+    answer: str
+    response: bytes
+
+
+def recorded(db: Database, who: Access, attempt_id: str) -> Recorded | None:
+    """The student's attempt with this id, if one is recorded (a retried Check), else None."""
+    with db.session() as session:
+        row = session.execute(
+            select(AttemptRow.item, AttemptRow.step, AttemptRow.coordinate, AttemptRow.answer, AttemptRow.response)
+            .where(AttemptRow.student_id == who.student, AttemptRow.attempt_id == attempt_id)
+        ).first()
+    if row is None or row.response is None:
+        return None
+    return Recorded(row.item, row.step, row.coordinate, row.answer, row.response.encode())
+
+
 def record(
     db: Database,
     who: Access,
@@ -151,26 +174,37 @@ def record(
     mistake: str | None,
     answer: str,
     mistake_name: str | None = None,
-) -> int:
-    """Record one judged answer; committed (on disk) when this returns.  The attempt's id."""
+    attempt_id: str | None = None,
+    response: bytes | None = None,
+) -> Recorded | None:
+    """Record one judged answer; committed (on disk) when this returns.
+
+    With an ``attempt_id`` (and the ``response`` answered), an attempt of the student already recorded under
+    that id is kept and returned instead (a retry that raced the first press to the database); else None."""
     if who.student is None:
         raise WrongKey("only a student's key records answers")
-    with db.session() as session:
-        row = AttemptRow(
-            class_id=who.class_id,
-            student_id=who.student,
-            item=item,
-            step=step,
-            coordinate=coordinate,
-            verdict=verdict,
-            mistake=mistake,
-            mistake_name=mistake_name,
-            answer=answer,
-            at=now(),
-        )
-        session.add(row)
-        session.flush()
-        return row.id
+    try:
+        with db.session() as session:
+            session.add(AttemptRow(
+                class_id=who.class_id,
+                student_id=who.student,
+                item=item,
+                step=step,
+                coordinate=coordinate,
+                verdict=verdict,
+                mistake=mistake,
+                mistake_name=mistake_name,
+                answer=answer,
+                at=now(),
+                attempt_id=attempt_id,
+                response=None if response is None else response.decode(),
+            ))
+    except IntegrityError:
+        first = recorded(db, who, attempt_id) if attempt_id is not None else None
+        if first is None:
+            raise
+        return first
+    return None
 
 
 def delete_whole_class(db: Database, class_id: int) -> None:

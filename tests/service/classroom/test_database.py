@@ -7,7 +7,8 @@ import sqlite3
 from datetime import timedelta
 
 import pytest
-from sqlalchemy import inspect, select, text
+from sqlalchemy import func, inspect, select, text
+from sqlalchemy.exc import IntegrityError
 
 from app.service.classroom import store
 from app.service.classroom.database import Database, database_url, make_engine, migrate, now
@@ -43,7 +44,7 @@ def test_migrates_an_empty_database_to_the_models(url):
         assert TABLES <= set(found.get_table_names())
         assert {"mistake", "mistake_name"} <= {c["name"] for c in found.get_columns("attempts")}
         with engine.connect() as c:
-            assert c.execute(text("SELECT version_num FROM alembic_version")).scalar() == "0003"
+            assert c.execute(text("SELECT version_num FROM alembic_version")).scalar() == "0004"
         migrate(engine)  # again: nothing to do
     finally:
         engine.dispose()
@@ -115,4 +116,47 @@ def test_classes_older_than_the_retention_are_deleted(url, tmp_path):
     with db.session() as session:
         assert session.scalars(select(ClassRow.code)).all() == [new]
         assert session.scalars(select(AttemptRow.id)).all() == []
+    db.stop()
+
+
+def test_migrates_the_schema_before_attempt_ids_keeping_the_attempts(url):
+    engine = make_engine(url)
+    try:
+        migrate(engine, "0003")
+        with engine.begin() as c:
+            c.execute(text("INSERT INTO classes (id, code, title, teacher_hash, created_at) "
+                           "VALUES (1, 'ACEFHK', 'old', :h, :t)"), {"h": "0" * 64, "t": now()})
+            c.execute(text("INSERT INTO students (id, class_id, name, key_hash, joined_at) "
+                           "VALUES (1, 1, 'Ada', :h, :t)"), {"h": "1" * 64, "t": now()})
+            for _ in range(2):  # two attempts recorded before ids: both stay
+                c.execute(text("INSERT INTO attempts (class_id, student_id, item, step, coordinate, verdict, answer, "
+                               "at) VALUES (1, 1, 'simple-pendulum', 'kinetic', NULL, 'incorrect', 'm*x', :t)"),
+                          {"t": now()})
+        migrate(engine)
+        insert = text("INSERT INTO attempts (class_id, student_id, item, step, verdict, answer, at, attempt_id) "
+                      "VALUES (1, 1, 'simple-pendulum', 'kinetic', 'correct', 'T', :t, 'press-one')")
+        with engine.begin() as c:
+            assert c.execute(text("SELECT count(*) FROM attempts WHERE attempt_id IS NULL")).scalar() == 2
+            c.execute(insert, {"t": now()})
+        with pytest.raises(IntegrityError), engine.begin() as c:  # the same student's id twice: refused by the table
+            c.execute(insert, {"t": now()})
+        with engine.connect() as c:
+            assert c.execute(text("SELECT version_num FROM alembic_version")).scalar() == "0004"
+    finally:
+        engine.dispose()
+
+
+def test_a_press_recorded_twice_at_once_keeps_the_first(tmp_path):
+    """Two copies of one press that both were judged (a retry racing the first to the database): the second
+    insert meets the unique id, records nothing and gets the first verdict back."""
+    db = Database(Settings(data_dir=tmp_path))
+    code, _ = store.create_class(db, "race")
+    _, who = store.join(db, code, "Ada")
+    first = store.record(db, who, "simple-pendulum", "kinetic", None, "incorrect", "missing_half", "T", None,
+                         "press-0001", b'{"verdict":"incorrect"}')
+    second = store.record(db, who, "simple-pendulum", "kinetic", None, "incorrect", "missing_half", "T", None,
+                          "press-0001", b'{"verdict":"incorrect","second":true}')
+    assert first is None and second is not None and second.response == b'{"verdict":"incorrect"}'
+    with db.session() as session:
+        assert session.scalar(select(func.count()).select_from(AttemptRow)) == 1
     db.stop()

@@ -1,0 +1,159 @@
+"""The instructor's first screen answers "which step is the class stuck on, and which mistake" (issue 44, item 5).
+
+A class of six is scripted into the record (answers as a check records them): on the double pendulum's U four
+students are stuck with the sign of U, on the simple pendulum's U two more make the same slip, and on the double
+pendulum's T two are stuck with the cross term forgotten while three are done.  At 1366×768 (and on a projector
+at 1024×768), without scrolling, the dashboard names the double pendulum's U as the step most are stuck on and
+"The sign of U" (its case kept), totalled over both scenes, as the most common mistake with its count, 6×; one
+click shows the students concerned.  Projector mode enlarges the type.  An answer recorded later shows without
+a reload.  And a student's side of a busy lecture hall: /join brings the session cookie, and a join refused
+with 429 is tried again after its Retry-After, the wait shown.
+"""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from app.main import app
+from app.service.classroom import store
+from app.service.classroom.service import Classroom
+from app.settings import Settings
+from app.web.api_classes import classroom as classroom_dep
+from app.web.deps import ServicesDep
+
+pytestmark = pytest.mark.browser
+
+SIGN = ("potential.sign", "The sign of U")  # (the tutor's key, its words); U is a symbol: the case stays
+CROSS = ("kinetic.cross_term.theta1_dot.theta2_dot", "the cross term l₁ l₂ m₂ θ̇₁ θ̇₂ cos(θ₁ − θ₂)")
+
+
+@pytest.fixture(scope="module")
+def classes(tmp_path_factory):
+    made: list[Classroom] = []
+
+    async def own(running: ServicesDep) -> Classroom:
+        if not made:
+            made.append(Classroom(running.checking, Settings(data_dir=tmp_path_factory.mktemp("dashboard"))))
+        return made[0]
+
+    app.dependency_overrides[classroom_dep] = own
+    yield made
+    app.dependency_overrides.pop(classroom_dep, None)
+    for room in made:
+        room.stop()
+
+
+def _scripted_class(room: Classroom) -> tuple[str, str, list[store.Access]]:
+    db = room.db
+    code, key = store.create_class(db, "Mechanics II, Tuesday")
+    items = [{"item": "double-pendulum", "system": None, "parameters": {},
+              "steps": [{"step": "kinetic", "coordinate": None}, {"step": "potential", "coordinate": None}]},
+             {"item": "simple-pendulum", "system": None, "parameters": {},
+              "steps": [{"step": "potential", "coordinate": None}]}]
+    store.set_assignment(db, store.access(db, code, key).class_id, items)
+    people = [store.join(db, code, name)[1] for name in ("Ada", "Bo", "Cy", "Di", "Ed", "Flo")]
+    wrong = lambda who, item, step, mistake: store.record(db, who, item, step, None, "incorrect", mistake[0], "x",  # noqa: E731
+                                                          mistake[1])
+    for who in people[:4]:
+        wrong(who, "double-pendulum", "potential", SIGN)
+    for who in people[4:]:
+        wrong(who, "simple-pendulum", "potential", SIGN)
+    for who in people[:2]:
+        wrong(who, "double-pendulum", "kinetic", CROSS)
+    for who in people[2:5]:
+        store.record(db, who, "double-pendulum", "kinetic", None, "correct", None, "T")
+    return code, key, people
+
+
+def _within_first_screen(page, selector: str, height: int) -> None:
+    box = page.locator(selector).bounding_box()
+    assert box is not None and box["y"] >= 0 and box["y"] + box["height"] <= height, (selector, box)
+
+
+def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_server, classes, artifacts):
+    context = browser.new_context(base_url=live_server, viewport={"width": 1366, "height": 768})
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    errors: list[str] = []
+    page.on("pageerror", lambda exc: errors.append(str(exc)))
+    assert page.request.post("/api/classes", data={"title": "first"}).status == 201  # the classroom starts
+    room = classes[0]
+    page.goto("/teach")
+    code, key, people = _scripted_class(room)
+    kept = json.dumps({"code": code, "key": key, "title": "Mechanics II, Tuesday"})
+    page.evaluate(f"localStorage.setItem('lagrange-teach', {json.dumps(kept)})")
+    page.reload()
+    page.wait_for_selector("#now-stuck[data-step]")
+    page.wait_for_selector("#now-mistake[data-count]")
+    assert page.evaluate("window.scrollY") == 0
+
+    stuck, mistake = page.locator("#now-stuck"), page.locator("#now-mistake")
+    assert stuck.get_attribute("data-step") == "potential"
+    assert "Double pendulum" in stuck.inner_text() and "4 of 6 stuck" in stuck.inner_text()
+    assert stuck.locator(".now-what").inner_text().startswith("U")  # the step by its symbol
+    assert mistake.get_attribute("data-count") == "6"
+    assert "The sign of U" in mistake.inner_text() and "6×" in mistake.inner_text()  # totalled over two scenes
+    for selector in ("#now-stuck .now-what", "#now-stuck .now-figure", "#now-mistake .now-what",
+                     "#now-mistake .now-figure"):
+        _within_first_screen(page, selector, 768)
+    page.screenshot(path=artifacts / "teach-first-screen-1366.png")
+
+    # one click to the students concerned
+    page.click("#now-mistake .now-who summary")
+    assert page.locator("#now-mistake .now-names").inner_text() == "Ada, Bo, Cy, Di, Ed, Flo"
+    page.click("#now-stuck .now-who summary")
+    assert page.locator("#now-stuck .now-names").inner_text() == "Ada, Bo, Cy, Di"
+
+    # the steps, most stuck first; mistake names keep their case
+    labels = page.locator(".dash-step .dash-numbers").all_inner_texts()
+    assert [t.split(" stuck")[0] for t in labels] == ["4", "2", "2"]
+    assert page.locator(".dash-mistake").first.locator("strong").inner_text() == "The sign of U"
+
+    # live: an answer recorded now shows without a reload (Ada gets U right: 3 stuck)
+    store.record(room.db, people[0], "double-pendulum", "potential", None, "correct", None, "U")
+    page.wait_for_function("document.querySelector('#now-stuck .now-figure')?.textContent.startsWith('3 of 6 stuck')",
+                           timeout=10_000)
+
+    # a projector at 1024×768, in projector mode: larger type, the answer still on the first screen
+    page.set_viewport_size({"width": 1024, "height": 768})
+    plain = page.eval_on_selector("#now-mistake .now-what", "e => parseFloat(getComputedStyle(e).fontSize)")
+    page.click("#projector")
+    large = page.eval_on_selector("#now-mistake .now-what", "e => parseFloat(getComputedStyle(e).fontSize)")
+    assert large >= 1.4 * plain
+    page.evaluate("window.scrollTo(0, 0)")
+    for selector in ("#now-stuck .now-what", "#now-mistake .now-what", "#now-mistake .now-figure"):
+        _within_first_screen(page, selector, 768)
+    page.screenshot(path=artifacts / "teach-projector-1024.png")
+    assert errors == []
+    context.close()
+
+
+def test_the_join_page_brings_a_session_and_waits_out_a_busy_minute(browser, live_server, classes, artifacts):
+    """/join sets the session cookie before the student joins; a join answered 429 with Retry-After is tried
+    again after that wait, counted down on the page, and then goes through."""
+    context = browser.new_context(base_url=live_server, viewport={"width": 390, "height": 844})
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    code = page.request.post("/api/classes", data={"title": "Busy minute"}).json()["code"]
+    refused: list[str] = []
+
+    def once_busy(route):
+        if not refused:  # the first try meets a full minute
+            refused.append(route.request.url)
+            route.fulfill(status=429, headers={"Retry-After": "2", "Content-Type": "application/json"},
+                          body='{"detail": "joins from your network address: at most 300 a minute; try again in 2 s"}')
+        else:
+            route.continue_()
+
+    page.route("**/api/classes/*/join", once_busy)
+    page.goto(f"/join?code={code}")
+    assert any(c["name"] == "lagrange_session" for c in context.cookies())  # the session, before joining
+    page.fill("#join-name", "Ada")
+    page.click("#join-form button[type=submit]")
+    page.wait_for_function("document.getElementById('join-status').textContent.includes('Trying again in')")
+    assert "Many are joining at once" in page.locator("#join-status").inner_text()
+    page.wait_for_selector("#join-live:not([hidden])", timeout=15_000)
+    assert len(refused) == 1 and page.locator("#joined-name").inner_text() == "Ada"
+    context.close()
