@@ -33,8 +33,9 @@ from dataclasses import dataclass, field
 from app.engine.parse_help import character_error
 from app.engine.parse_rules import ALLOWED_CHARACTERS, FUNCTIONS, ExpressionError
 
-# a number as Python writes one (1, 2.5, .5, 1_000, 1e-3, and 1j, which gate 2 refuses as imaginary)
-_NUMBER = re.compile(r"(?:[0-9](?:_?[0-9])*(?:\.(?:[0-9](?:_?[0-9])*)?)?|\.[0-9](?:_?[0-9])*)(?:[eE][+-]?[0-9](?:_?[0-9])*)?(?:[jJ](?![A-Za-z0-9_]))?")
+# a number as Python writes one (1, 2.5, .5, 1_000, 1e-3: 2e1 is twenty; 2 times a name e1 is 2 e1)
+_NUMBER = re.compile(r"(?:[0-9](?:_?[0-9])*(?:\.(?:[0-9](?:_?[0-9])*)?)?|\.[0-9](?:_?[0-9])*)(?:[eE][+-]?[0-9](?:_?[0-9])*)?")
+_SPACES = {9: " ", 10: " ", 13: " "}
 _DIGITS = frozenset("0123456789")
 _PRIMES = {"'": 1, "\u2032": 1, "\u2019": 1, "\u2033": 2}  # ' ′ ’ (a phone's apostrophe) ″
 _DOTS = {"\u0307": 1, "\u0308": 2}  # combining dot above, combining diaeresis (two dots)
@@ -142,8 +143,14 @@ def _word(given: str, i: int) -> tuple[list[Token], int]:
             else:
                 parts.append({"letters": name, "start": j, "end": j + 1, "dots": 0, "apart": True})
         elif ch in _SUBSCRIPTS or (ch.isascii() and (ch.isalnum() or ch == "_")):
-            velocity = re.match(r"d?dot(?![A-Za-z0-9])", given[j:]) is not None
-            if last is None or (ch.isalpha() and last["apart"] and not (velocity and not last["dots"])):
+            velocity = re.match(r"d?dot(?![A-Za-z0-9])", given[j:])
+            if velocity and last is not None and last["apart"] and not last["dots"]:
+                # θdot, θddot: the Greek name's velocity or acceleration
+                last["letters"] += velocity.group()
+                last["end"] = j + len(velocity.group())
+                j += len(velocity.group())
+                continue
+            if last is None or (ch.isalpha() and last["apart"]):
                 parts.append({"letters": _SUBSCRIPTS.get(ch, ch), "start": j, "end": j + 1, "dots": dots, "apart": dots > 0})
             else:
                 last["letters"] += _SUBSCRIPTS.get(ch, ch)
@@ -414,7 +421,9 @@ class _Reader:
 
 
 def typed(given: str) -> Typed:
-    """``given`` (tabs and line breaks already spaces) in gate 2's grammar, with the columns of each character."""
+    """``given`` in gate 2's grammar, with the columns of each character (tabs and line breaks count as
+    spaces, one for one)."""
+    given = given.translate(_SPACES)
     reader = _Reader(given, lex(given))
     reader.functions()
     reader.towers()

@@ -58,6 +58,8 @@ def problem(exc: Exception) -> Problem:
         body: dict[str, Any] = {"detail": str(exc)[:600], "part": exc.part[:80]}
         if exc.loc is not None:  # a refusal located in the request body
             body |= {"loc": ["body", *(excerpt(x) for x in exc.loc)], "start": exc.start, "end": exc.end}
+        if getattr(exc, "readings", ()):  # an expression that reads two ways: both readings, to choose from
+            body["readings"] = [excerpt(r, 200) for r in exc.readings]
         return Problem(REFUSED, body)
     if isinstance(exc, OverCapacity):
         return _busy(str(exc), exc.retry_after, SERVER_BUSY if exc.whole_server else CLIENT_BUSY)
