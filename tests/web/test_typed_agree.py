@@ -39,7 +39,8 @@ def _id(case: dict) -> str:
 def _refusal(answer) -> tuple:
     body = answer.json()
     detail = body["detail"].split(": ", 1)[1]  # without the field's name ("answer: ", "forces.x: ")
-    return answer.status_code, detail, body.get("start"), body.get("end"), body.get("readings")
+    readings = body.get("readings")
+    return answer.status_code, detail, body.get("start"), body.get("end"), tuple(readings) if readings else None
 
 
 @pytest.mark.slow
@@ -56,7 +57,7 @@ def test_checker_preview_and_playground_read_alike(client, case):
         says = case.get("refused") or f"could be read as {case['readings'][0]} or as {case['readings'][1]}"
         for status, detail, start, end, readings in refusals:
             assert status == 422 and says in detail, (status, detail)
-            assert text[start:end] and readings == case.get("readings")
+            assert text[start:end] and readings == (tuple(case["readings"]) if "readings" in case else None)
         if case.get("refused") != "acceleration":  # the step's name rules and a declaration's differ in words only
             assert len(refusals) == 1, refusals
         else:
