@@ -44,15 +44,20 @@ def _as_problem(content: dict[str, Any]) -> dict[str, Any]:
     return {PROBLEM_JSON: shown}
 
 
+def _completed(example: dict[str, Any], status: int) -> dict[str, Any]:
+    """An example error body as the problem the API sends (type, title and status first)."""
+    fields = {k: v for k, v in example.items() if k not in ("type", "title", "status", "detail")}
+    return problem_body(status, example["detail"], **fields)
+
+
 def _complete_examples(content: dict[str, Any], status: int) -> None:
     shown = content[PROBLEM_JSON]
     if "example" in shown:
-        example = shown["example"]
-        shown["example"] = problem_body(status, example["detail"], **{k: v for k, v in example.items() if k != "detail"})
+        shown["example"] = _completed(shown["example"], status)
     for example in shown.get("examples", {}).values():
         value = example.get("value")
         if isinstance(value, dict) and "detail" in value:
-            example["value"] = problem_body(status, value["detail"], **{k: v for k, v in value.items() if k != "detail"})
+            example["value"] = _completed(value, status)
 
 
 def conventions(schema: dict[str, Any]) -> dict[str, Any]:
@@ -66,9 +71,8 @@ def conventions(schema: dict[str, Any]) -> dict[str, Any]:
                     response["content"] = _as_problem(response.get("content", {}))
                     _complete_examples(response["content"], int(code))
             if "requestBody" in operation:
-                responses.setdefault(
-                    "415", {"description": f"Not JSON: {NOT_JSON}.", "content": {PROBLEM_JSON: {"schema": PROBLEM_REF}}}
-                )
+                unsupported = {"schema": PROBLEM_REF, "example": problem_body(415, NOT_JSON)}
+                responses.setdefault("415", {"description": f"Not JSON: {NOT_JSON}.", "content": {PROBLEM_JSON: unsupported}})
             if "201" in responses:
                 responses["201"].setdefault("headers", {})["Location"] = {
                     "description": "The address of what was created.",
