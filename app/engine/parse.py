@@ -44,7 +44,6 @@ from __future__ import annotations
 
 from app.engine.parse_build import build, parse_expression
 from app.engine.parse_read import Node, Parsed, Size, check_expression, expression_size, narrowed, read
-from app.engine.parse_typed import Typed, typed
 from app.engine.parse_rules import (
     ALLOWED,
     ALLOWED_CHARACTERS,
@@ -68,6 +67,7 @@ from app.engine.parse_rules import (
     ExpressionError,
     check_name,
 )
+from app.engine.parse_typed import Typed, typed
 
 __all__ = [
     "ALLOWED",

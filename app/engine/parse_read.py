@@ -15,8 +15,8 @@ from dataclasses import dataclass, field
 
 from app.engine.parse_checker import OPERATORS, PRODUCTS, SUMS, Checker, Facts, chain
 from app.engine.parse_help import character_error, first_bad_character
-from app.engine.parse_typed import Typed, typed
 from app.engine.parse_rules import MAX_LENGTH, MAX_NODES, MAX_TERMS, ExpressionError
+from app.engine.parse_typed import Typed, typed
 
 # tabs and line breaks count as spaces (one for one, so columns stay right)
 SPACES = {9: " ", 10: " ", 13: " "}

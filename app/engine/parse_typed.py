@@ -34,15 +34,26 @@ from app.engine.parse_help import character_error
 from app.engine.parse_rules import ALLOWED_CHARACTERS, FUNCTIONS, ExpressionError
 
 # a number as Python writes one (1, 2.5, .5, 1_000, 1e-3: 2e1 is twenty; 2 times a name e1 is 2 e1)
-_NUMBER = re.compile(r"(?:[0-9](?:_?[0-9])*(?:\.(?:[0-9](?:_?[0-9])*)?)?|\.[0-9](?:_?[0-9])*)(?:[eE][+-]?[0-9](?:_?[0-9])*)?")
+_NUMBER = re.compile(
+    r"(?:[0-9](?:_?[0-9])*(?:\.(?:[0-9](?:_?[0-9])*)?)?|\.[0-9](?:_?[0-9])*)(?:[eE][+-]?[0-9](?:_?[0-9])*)?"
+)
 _SPACES = {9: " ", 10: " ", 13: " "}
 _DIGITS = frozenset("0123456789")
 _PRIMES = {"'": 1, "\u2032": 1, "\u2019": 1, "\u2033": 2}  # ' ′ ’ (a phone's apostrophe) ″
 _DOTS = {"\u0307": 1, "\u0308": 2}  # combining dot above, combining diaeresis (two dots)
 _TIMES = {"\u00b7": "*", "\u22c5": "*", "\u2219": "*", "\u00d7": "*", "\u2212": "-", "\u2013": "-", "\u00f7": "/"}
 _SUBSCRIPTS = {chr(0x2080 + d): str(d) for d in range(10)}
-_SUPERSCRIPTS = {"\u00b9": "1", "\u00b2": "2", "\u00b3": "3", "\u207b": "-"} | {chr(0x2070 + d): str(d) for d in (0, 4, 5, 6, 7, 8, 9)}
-_GREEK_EXTRA = {"\u03d1": "theta", "\u03d5": "phi", "\u03f5": "epsilon", "\u03d6": "pi", "\u00b5": "mu", "\u03c2": "sigma"}
+_SUPERSCRIPTS = {"\u00b9": "1", "\u00b2": "2", "\u00b3": "3", "\u207b": "-"} | {
+    chr(0x2070 + d): str(d) for d in (0, 4, 5, 6, 7, 8, 9)
+}
+_GREEK_EXTRA = {
+    "\u03d1": "theta",
+    "\u03d5": "phi",
+    "\u03f5": "epsilon",
+    "\u03d6": "pi",
+    "\u00b5": "mu",
+    "\u03c2": "sigma",
+}
 # a name ending in dot or ddot is a velocity or an acceleration (names may not end so: app/engine/parse_rules.py)
 _DOTTED = re.compile(r"(?P<base>[A-Za-z][A-Za-z0-9_]*?)_?(?P<dots>d?dot)\Z")
 _SUBSCRIPTED = re.compile(r"(?<=[A-Za-z])_(?=\d+(?:_|\Z))")
@@ -151,7 +162,9 @@ def _word(given: str, i: int) -> tuple[list[Token], int]:
                 j += len(velocity.group())
                 continue
             if last is None or (ch.isalpha() and last["apart"]):
-                parts.append({"letters": _SUBSCRIPTS.get(ch, ch), "start": j, "end": j + 1, "dots": dots, "apart": dots > 0})
+                parts.append(
+                    {"letters": _SUBSCRIPTS.get(ch, ch), "start": j, "end": j + 1, "dots": dots, "apart": dots > 0}
+                )
             else:
                 last["letters"] += _SUBSCRIPTS.get(ch, ch)
                 last["end"], last["dots"] = j + 1, last["dots"] + dots
@@ -309,10 +322,16 @@ class _Reader:
             if not one:
                 f, head = t.text, self.typed(k, k + 1)
                 rest = self.typed(k + 1, end)
-                first = f"{f}({head}){rest}" if rest.startswith(("^", "*", "\u00b2", "\u00b3")) else f"{f}({head}) {rest}"
+                first = (
+                    f"{f}({head}){rest}" if rest.startswith(("^", "*", "\u00b2", "\u00b3")) else f"{f}({head}) {rest}"
+                )
                 if end == k + 1:
-                    raise _refuse(self.given, t.start, tokens[k].end, f"a function's argument is written in brackets: {f}({head})")
-                raise self.ambiguous(i, end, "a function without brackets is ambiguous", first, f"{f}({self.typed(k, end)})")
+                    raise _refuse(
+                        self.given, t.start, tokens[k].end, f"a function's argument is written in brackets: {f}({head})"
+                    )
+                raise self.ambiguous(
+                    i, end, "a function without brackets is ambiguous", first, f"{f}({self.typed(k, end)})"
+                )
             name = tokens[k]
             out += [
                 t,
@@ -337,7 +356,9 @@ class _Reader:
                 inverse = f"; the inverse is a{f}(x)" if f in ("sin", "cos", "tan") else ""
                 last = tokens[end - 1].end if end > i + 2 else tokens[i + 1].end
                 raise _refuse(
-                    self.given, tokens[i].start, last,
+                    self.given,
+                    tokens[i].start,
+                    last,
                     f"a power of a function is a whole number, written {f}^2(x) or {f}(x)^2{inverse}",
                 )
             return tokens[i + 1 : end], end
@@ -350,11 +371,17 @@ class _Reader:
             if t.kind != "pow":
                 continue
             end = _atom(tokens, i + 1)
-            if end < len(tokens) and tokens[end].kind == "pow" and "^" in self.given[t.start : t.end] + self.given[tokens[end].start : tokens[end].end]:
+            if (
+                end < len(tokens)
+                and tokens[end].kind == "pow"
+                and "^" in self.given[t.start : t.end] + self.given[tokens[end].start : tokens[end].end]
+            ):
                 base = self._base(i)
                 last = _atom(tokens, end + 1)
                 b, e1, e2 = self.typed(base, i), self.typed(i + 1, end), self.typed(end + 1, last)
-                raise self.ambiguous(base, last, "a power of a power is ambiguous", f"({b}^{e1})^{e2}", f"{b}^({e1}^{e2})")
+                raise self.ambiguous(
+                    base, last, "a power of a power is ambiguous", f"({b}^{e1})^{e2}", f"{b}^({e1}^{e2})"
+                )
             if end < len(tokens) and _side_by_side(tokens, end) and not tokens[end].spaced:
                 base = self._base(i)
                 factor = _powered(tokens, end)
@@ -391,7 +418,9 @@ class _Reader:
                 last = _powered(tokens, last)
             first = self._term(i)
             n, d, f = self.typed(first, i), self.typed(i + 1, end), self.typed(end, last)
-            raise self.ambiguous(first, last, "a factor after a quotient is ambiguous", f"({n}/{d}) {f}", f"{n}/({d} {f})")
+            raise self.ambiguous(
+                first, last, "a factor after a quotient is ambiguous", f"({n}/{d}) {f}", f"{n}/({d} {f})"
+            )
 
     def _term(self, i: int) -> int:
         """The index of the first token of the product a "/" at ``i`` divides."""
@@ -414,7 +443,9 @@ class _Reader:
                 if tokens[j - 1].kind == "num" and tokens[j].kind == "num":
                     a, b = tokens[j - 1].text, tokens[j].text
                     raise _refuse(
-                        self.given, tokens[j - 1].start, tokens[j].end,
+                        self.given,
+                        tokens[j - 1].start,
+                        tokens[j].end,
                         f"two numbers side by side: write {a}*{b} for a product or {a}{b} for one number",
                     )
                 tokens[j].star = True

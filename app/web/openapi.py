@@ -72,7 +72,9 @@ def conventions(schema: dict[str, Any]) -> dict[str, Any]:
                     _complete_examples(response["content"], int(code))
             if "requestBody" in operation:
                 unsupported = {"schema": PROBLEM_REF, "example": problem_body(415, NOT_JSON)}
-                responses.setdefault("415", {"description": f"Not JSON: {NOT_JSON}.", "content": {PROBLEM_JSON: unsupported}})
+                responses.setdefault(
+                    "415", {"description": f"Not JSON: {NOT_JSON}.", "content": {PROBLEM_JSON: unsupported}}
+                )
             if "201" in responses:
                 responses["201"].setdefault("headers", {})["Location"] = {
                     "description": "The address of what was created.",
@@ -80,11 +82,18 @@ def conventions(schema: dict[str, Any]) -> dict[str, Any]:
                 }
             if method == "get" and cacheable(path):
                 responses["200"].setdefault("headers", {})["ETag"] = ETAG
-                responses["304"] = {"description": "Not modified: the ETag sent in If-None-Match is still current.",
-                                    "headers": {"ETag": ETAG}}
+                responses["304"] = {
+                    "description": "Not modified: the ETag sent in If-None-Match is still current.",
+                    "headers": {"ETag": ETAG},
+                }
                 operation.setdefault("parameters", []).append(
-                    {"name": "If-None-Match", "in": "header", "required": False, "schema": {"type": "string"},
-                     "description": "ETags of answers you hold: a 304 without a body when one is still current."}
+                    {
+                        "name": "If-None-Match",
+                        "in": "header",
+                        "required": False,
+                        "schema": {"type": "string"},
+                        "description": "ETags of answers you hold: a 304 without a body when one is still current.",
+                    }
                 )
     for name in UNSENT:
         components.pop(name, None)

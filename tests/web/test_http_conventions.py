@@ -14,7 +14,12 @@ from app.web.api_classes import classroom as classroom_dep
 from tests.classes import classroom
 
 PROBLEM = "application/problem+json"
-SYSTEM = {"coordinates": ["x"], "parameters": [{"name": "k", "value": 2.0}], "kinetic": "x'^2/2", "potential": "k x^2/2"}
+SYSTEM = {
+    "coordinates": ["x"],
+    "parameters": [{"name": "k", "value": 2.0}],
+    "kinetic": "x'^2/2",
+    "potential": "k x^2/2",
+}
 
 
 def assert_problem(response, status: int) -> dict:
@@ -37,7 +42,9 @@ def classes(services, tmp_path):
 def test_a_refused_expression_is_a_problem_with_its_location_and_readings(client):
     body = assert_problem(client.post("/api/derive", json={**SYSTEM, "potential": "k x^2/2m"}), 422)
     # the fields the pages read (static/js/api.js: detail; the forms: loc, part, start, end) are all there
-    assert body["loc"] == ["body", "potential"] and body["part"] == "k x^2/2m" and (body["start"], body["end"]) == (0, 8)
+    assert (
+        body["loc"] == ["body", "potential"] and body["part"] == "k x^2/2m" and (body["start"], body["end"]) == (0, 8)
+    )
     assert body["readings"] == ["(k x^2/2) m", "k x^2/(2 m)"]
     assert body["detail"].startswith("potential: a factor after a quotient is ambiguous")
 
@@ -52,9 +59,20 @@ def test_a_refused_expression_is_a_problem_with_its_location_and_readings(client
         ("get", "/api/scenes/nope/derivation", {}, 404, set()),
         ("get", "/api/no-such-address", {}, 404, set()),
         ("delete", "/api/scenes", {}, 405, set()),
-        ("post", "/api/scenes/simple-pendulum/check", {"json": {"step": "kinetic", "answer": "m q"}}, 422, {"loc", "part"}),
-        ("post", "/api/typeset", {"json": {"text": "2^x^2", "step": "kinetic", "scene": "simple-pendulum"}}, 422,
-         {"loc", "part", "start", "end", "readings"}),
+        (
+            "post",
+            "/api/scenes/simple-pendulum/check",
+            {"json": {"step": "kinetic", "answer": "m q"}},
+            422,
+            {"loc", "part"},
+        ),
+        (
+            "post",
+            "/api/typeset",
+            {"json": {"text": "2^x^2", "step": "kinetic", "scene": "simple-pendulum"}},
+            422,
+            {"loc", "part", "start", "end", "readings"},
+        ),
     ],
 )
 def test_every_error_is_a_problem(client, method, path, kwargs, status, fields):
@@ -81,7 +99,9 @@ def test_a_busy_answer_keeps_retry_after(client, services):
     assert body["retry_after"] >= 1 and response.headers["retry-after"] == str(body["retry_after"])
 
 
-@pytest.mark.parametrize("media", ["application/x-www-form-urlencoded", "text/plain", "multipart/form-data; boundary=x"])
+@pytest.mark.parametrize(
+    "media", ["application/x-www-form-urlencoded", "text/plain", "multipart/form-data; boundary=x"]
+)
 def test_a_body_that_is_not_json_gets_415(client, media):
     response = client.post("/api/derive", content=b"coordinates=x&kinetic=x", headers={"content-type": media})
     body = assert_problem(response, 415)
@@ -89,8 +109,11 @@ def test_a_body_that_is_not_json_gets_415(client, media):
 
 
 def test_json_under_another_json_media_type_is_read(client):
-    response = client.post("/api/typeset", content=b'{"text": "m R^2", "step": "kinetic", "scene": "simple-pendulum"}',
-                           headers={"content-type": "application/json; charset=utf-8"})
+    response = client.post(
+        "/api/typeset",
+        content=b'{"text": "m R^2", "step": "kinetic", "scene": "simple-pendulum"}',
+        headers={"content-type": "application/json; charset=utf-8"},
+    )
     assert response.status_code == 200, response.text
 
 
@@ -127,7 +150,9 @@ def test_a_compressed_answer_has_the_same_etag(client):
 
 def test_class_answers_are_never_given_an_etag(client, classes):
     created = client.post("/api/classes", json={"title": "Mechanics"}).json()
-    view = client.get(f"/api/classes/{created['code']}/summary", headers={"Authorization": f"Bearer {created['teacher_key']}"})
+    view = client.get(
+        f"/api/classes/{created['code']}/summary", headers={"Authorization": f"Bearer {created['teacher_key']}"}
+    )
     assert view.headers["cache-control"] == "no-store" and "etag" not in view.headers
 
 

@@ -25,7 +25,9 @@ SYSTEM = {
     "kinetic": KINETIC,
     "potential": "k x^2/2",
 }
-LAGRANGIAN = SYMBOLS["m"] * sum(SYMBOLS[f"{q}_dot"] ** 2 for q in COORDINATES) / 2 - SYMBOLS["k"] * SYMBOLS["x"] ** 2 / 2
+LAGRANGIAN = (
+    SYMBOLS["m"] * sum(SYMBOLS[f"{q}_dot"] ** 2 for q in COORDINATES) / 2 - SYMBOLS["k"] * SYMBOLS["x"] ** 2 / 2
+)
 
 
 def meant(text: str) -> sp.Expr:
