@@ -56,6 +56,7 @@ _GREEK_EXTRA = {
 }
 # a name ending in dot or ddot is a velocity or an acceleration (names may not end so: app/engine/parse_rules.py)
 _DOTTED = re.compile(r"(?P<base>[A-Za-z][A-Za-z0-9_]*?)_?(?P<dots>d?dot)\Z")
+_VELOCITY = re.compile(r"d?dot(?![A-Za-z0-9])")  # θdot: a Greek name's velocity
 _SUBSCRIPTED = re.compile(r"(?<=[A-Za-z])_(?=\d+(?:_|\Z))")
 
 
@@ -154,7 +155,7 @@ def _word(given: str, i: int) -> tuple[list[Token], int]:
             else:
                 parts.append({"letters": name, "start": j, "end": j + 1, "dots": 0, "apart": True})
         elif ch in _SUBSCRIPTS or (ch.isascii() and (ch.isalnum() or ch == "_")):
-            velocity = re.match(r"d?dot(?![A-Za-z0-9])", given[j:])
+            velocity = _VELOCITY.match(given, j)
             if velocity and last is not None and last["apart"] and not last["dots"]:
                 # θdot, θddot: the Greek name's velocity or acceleration
                 last["letters"] += velocity.group()

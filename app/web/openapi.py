@@ -67,8 +67,10 @@ def conventions(schema: dict[str, Any]) -> dict[str, Any]:
         for method, operation in operations.items():
             responses = operation.setdefault("responses", {})
             for code, response in responses.items():
-                if code.isdigit() and int(code) >= 400:
-                    response["content"] = _as_problem(response.get("content", {}))
+                content = response.get("content", {})
+                if code.isdigit() and int(code) >= 400 and (not content or "application/json" in content):
+                    # (a page's errors are pages: their HTML is left as documented)
+                    response["content"] = _as_problem(content)
                     _complete_examples(response["content"], int(code))
             if "requestBody" in operation:
                 unsupported = {"schema": PROBLEM_REF, "example": problem_body(415, NOT_JSON)}
