@@ -12,13 +12,14 @@ from app.service import resident, simulation
 from app.service.memory import freeze_imported, freeze_when_done
 from app.service.services import Services
 from app.settings import settings
-from app.web import api_action, api_beyond, api_scenes, docs, errors, limits, pages, slow_clients
+from app.web import api_action, api_beyond, api_scenes, docs, errors, limits, openapi, pages, slow_clients
 from app.web.api_check import router as check_router
 from app.web.api_simulate import router as simulate_router
 from app.web.api_staged import router as staged_router
 from app.web.api_typeset import router as typeset_router
 from app.web.api_user import router as user_router
 from app.web.compression import ApiCompression
+from app.web.etags import ETags
 from app.web.headers import SecurityHeaders
 from app.web.page_cache import PageCache
 from app.web.pages_classes import router as classes_router
@@ -62,8 +63,11 @@ app = FastAPI(
     lifespan=lifespan,
     docs_url=None,  # app/web/docs.py serves /docs from our own copy of swagger-ui
     redoc_url=None,  # FastAPI's ReDoc page loads from a CDN
+    generate_unique_id_function=openapi.operation_id,
 )
 errors.install(app)
+openapi.install(app)  # the document with the API's HTTP conventions (problems, 415, Location, ETags)
+app.add_middleware(ETags)  # inside the compression: the digest of the answer's own bytes
 app.add_middleware(ApiCompression)
 limits.install(app)  # every POST body capped before it is read
 slow_clients.install()  # connection caps and deadlines on uvicorn's protocols, however the app is served

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 import sympy as sp
 
-from app.engine.parse import ExpressionError, Parsed, build, narrowed, read
+from app.engine.parse import MAX_LENGTH, ExpressionError, Parsed, build, narrowed, read, typed
 from app.engine.reality import real_somewhere
 
 if TYPE_CHECKING:  # the problem an answer is read for (imported for its type only)
@@ -56,7 +56,13 @@ class CheckError(ExpressionError):
         self.field = field
 
     def __reduce__(self):
-        return (type(self), (str(self), self.field, self.part, self.start, self.end))
+        return (_checkerror, (str(self), self.field, self.part, self.start, self.end, self.readings))
+
+
+def _checkerror(message: str, field: str, part: str, start: int | None, end: int | None, readings: tuple) -> CheckError:
+    error = CheckError(message, field, part, start, end)
+    error.readings = readings
+    return error
 
 
 def name_kinds(coordinates: tuple[str, ...], parameters: tuple[str, ...], momenta: tuple[str, ...]) -> dict[str, str]:
@@ -74,15 +80,23 @@ def allowed_names(step: str, kinds: dict[str, str]) -> list[str]:
 
 
 def answer_error(exc: ExpressionError) -> CheckError:
-    """The parser's refusal of an answer, on the ``answer`` field, word for word."""
-    return CheckError(f"answer: {exc}", "answer", exc.part, exc.start, exc.end)
+    """The parser's refusal of an answer, on the ``answer`` field, word for word (with its two readings, when
+    the text could be read two ways)."""
+    error = CheckError(f"answer: {exc}", "answer", exc.part, exc.start, exc.end)
+    error.readings = exc.readings
+    return error
 
 
 def check_answer(text: str, step: str, kinds: dict[str, str]) -> Parsed:
     """Read an answer the step can take, in pure Python (the step's name rules, then the parser's gates 1 and
     2): what was read, for a worker to build without reading the text again; else a CheckError."""
-    if isinstance(text, str):
-        for match in _IDENTIFIER.finditer(text[:4000]):
+    if isinstance(text, str) and len(text) <= MAX_LENGTH:
+        try:
+            # the names as the parser reads them (θ' is theta_dot), at the columns they were typed
+            written = typed(text)
+        except ExpressionError as exc:
+            raise answer_error(exc) from None
+        for match in _IDENTIFIER.finditer(written.text):
             kind = kinds.get(match.group())
             if kind is not None and kind not in _KINDS[step]:
                 why = _WHY_NOT.get((step, kind)) or (
@@ -90,12 +104,9 @@ def check_answer(text: str, step: str, kinds: dict[str, str]) -> Parsed:
                     if kind == "acceleration"
                     else f"a {kind} cannot appear in this step"
                 )
+                start, end = written.span(match.start(), match.end())
                 raise CheckError(
-                    f"answer: {why}: {match.group()!r} at column {match.start() + 1}",
-                    "answer",
-                    match.group(),
-                    match.start(),
-                    match.end(),
+                    f"answer: {why}: {written.given[start:end]!r} at column {start + 1}", "answer", written.given[start:end], start, end
                 )
     try:
         return read(text, allowed_names(step, kinds))

@@ -30,7 +30,11 @@ hostile text without touching SymPy; ``parse_expression`` runs all three.
 ``build`` (gate 3) makes SymPy of it, so that text read in one process is built
 in another without being read again (docs/parsing.md).
 
-The parser lives in five modules, one idea each: ``parse_rules`` (the limits, the function allowlist, the
+Before gate 1, gate 0 (``parse_typed``) writes text as students type it (``x^2``, ``2x``, ``m g l``,
+``θ'``, ``θ̇``, ``sin θ``) in the grammar of gate 2, keeping the columns of what was typed, and refuses
+what could be read two ways (``2^x^2``, ``1/2m``) with both readings.
+
+The parser lives in six modules, one idea each: ``parse_typed`` (gate 0), ``parse_rules`` (the limits, the function allowlist, the
 names a user may declare, ``ExpressionError``), ``parse_help`` (what a refused character or a missing ``*``
 should have been), ``parse_checker`` (gate 2's walk), ``parse_read`` (gates 1 and 2: ``read`` and
 ``Parsed``) and ``parse_build`` (gate 3: ``build``).  This module is their one door: import from here.
@@ -63,6 +67,7 @@ from app.engine.parse_rules import (
     ExpressionError,
     check_name,
 )
+from app.engine.parse_typed import Typed, typed
 
 __all__ = [
     "ALLOWED",
@@ -88,6 +93,7 @@ __all__ = [
     "Node",
     "Parsed",
     "Size",
+    "Typed",
     "build",
     "check_expression",
     "check_name",
@@ -95,4 +101,5 @@ __all__ = [
     "narrowed",
     "parse_expression",
     "read",
+    "typed",
 ]

@@ -32,6 +32,7 @@ from app.engine.parse_rules import (
     MAX_TERMS,
     ExpressionError,
 )
+from app.engine.parse_typed import Typed
 
 OPERATORS = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/", ast.Pow: "**"}
 _REFUSED_OPERATORS = {
@@ -53,6 +54,21 @@ _REFUSED_NODES = {
     ast.NamedExpr: "':=' is not allowed",
     ast.GeneratorExp: "a generator is not allowed",
 }
+
+
+def product_of_names(word: str, names: Collection[str]) -> list[str] | None:
+    """``word`` as a product of the fewest of ``names`` written together (mgl: m, g, l), if it is one."""
+    if "_" in word or len(word) > 16:
+        return None
+    # best[i]: the fewest names spelling word[:i]
+    best: list[list[str] | None] = [[]] + [None] * len(word)
+    for i in range(1, len(word) + 1):
+        for j in range(i):
+            name, before = word[j:i], best[j]
+            if before is not None and name in names and (best[i] is None or len(before) + 1 < len(best[i])):  # type: ignore[arg-type]
+                best[i] = [*before, name]
+    found = best[len(word)]
+    return found if found is not None and len(found) > 1 else None
 
 
 @dataclass(frozen=True)
@@ -113,23 +129,25 @@ class Checker:
     nesting (parentheses, calls, signs, powers), which MAX_DEPTH bounds.
     """
 
-    def __init__(self, text: str, offset: int, names: Collection[str]):
+    def __init__(self, text: str, offset: int, names: Collection[str], typed: Typed | None = None):
         self.text = text
         self.offset = offset
         self.names = names
+        self.typed = typed  # the text as typed, when ``text`` is its rewriting (app/engine/parse_typed.py)
         self.memo: dict[int, Facts] = {}
 
     def refuse(self, node: ast.AST, why: str) -> ExpressionError:
         start = getattr(node, "col_offset", 0)
         end = getattr(node, "end_col_offset", None) or len(self.text)
-        part = self.text[start:end]
+        if self.typed is not None:
+            # the columns and the words of what the student typed, not of its rewriting
+            start, end = self.typed.span(start, end)
+            part = self.typed.given[start:end]
+        else:
+            part = self.text[start:end]
+            start, end = self.offset + start, self.offset + end
         shown = part if len(part) <= 60 else part[:57] + "..."
-        return ExpressionError(
-            f"{why}: {shown!r} at column {self.offset + start + 1}",
-            shown,
-            self.offset + start,
-            self.offset + end,
-        )
+        return ExpressionError(f"{why}: {shown!r} at column {start + 1}", shown, start, end)
 
     def check(self, node: ast.AST, depth: int = 0) -> Facts:
         if id(node) not in self.memo:
@@ -196,7 +214,14 @@ class Checker:
         if name.endswith("_dot") and name[:-4] in self.names:
             raise self.refuse(node, "a velocity is not allowed here (only in T, L and forces)")
         declared = ", ".join(sorted(self.names)) or "none"
-        raise self.refuse(node, f"unknown name (allowed here: {declared}, pi)")
+        hint = ""
+        split = product_of_names(name, {*self.names, *FLOAT_CONSTANTS})
+        if split:
+            # letters written together are one name, never split: say how to write the product
+            hint = f"; letters written together are one name: for a product write {' '.join(split)}"
+        elif name == "e":
+            hint = "; write exp(x) for e^x"
+        raise self.refuse(node, f"unknown name (allowed here: {declared}, pi{hint})")
 
     def sum(self, node: ast.BinOp, depth: int) -> Facts:
         items = chain(node, SUMS)
@@ -291,11 +316,13 @@ class Checker:
             if isinstance(node.func, ast.Constant | ast.Call | ast.BinOp) or (
                 isinstance(node.func, ast.Name) and node.func.id in self.names
             ):
-                # "2(x+1)", "k(x+1)", "(a+b)(a-b)": factors side by side, not a call
+                # "k(x+1)": a name directly followed by "(" reads as a call; "θ(t)" as the coordinate in time
+                if [getattr(a, "id", None) for a in node.args] == ["t"] and isinstance(node.func, ast.Name):
+                    raise self.refuse(node, "a coordinate already depends on time: write it alone, without (t)")
                 source = ast.get_source_segment(self.text, node) or ""
                 head = ast.get_source_segment(self.text, node.func) or ""
                 starred = head + "*" + source[len(head) :].lstrip() if source.startswith(head) else ""
-                hint = f"write {starred} (a * between factors)" if starred else "a * between factors is needed"
+                hint = f"write {starred} (or a space before the bracket)" if starred else "a * between factors is needed"
                 raise self.refuse(node.func, f"{head or 'this'} is not a function: {hint}")
             raise self.refuse(node.func, f"only these functions may be called: {allowed}")
         name = node.func.id

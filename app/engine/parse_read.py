@@ -10,12 +10,13 @@ reading the text again (docs/parsing.md).
 from __future__ import annotations
 
 import ast
-from collections.abc import Collection, Iterator
+from collections.abc import Callable, Collection, Iterator
 from dataclasses import dataclass, field
 
 from app.engine.parse_checker import OPERATORS, PRODUCTS, SUMS, Checker, Facts, chain
-from app.engine.parse_help import character_error, first_bad_character, with_stars
+from app.engine.parse_help import character_error, first_bad_character
 from app.engine.parse_rules import MAX_LENGTH, MAX_NODES, MAX_TERMS, ExpressionError
+from app.engine.parse_typed import Typed, typed
 
 # tabs and line breaks count as spaces (one for one, so columns stay right)
 SPACES = {9: " ", 10: " ", 13: " "}
@@ -46,24 +47,25 @@ class Size:
 Node = tuple
 
 
-def _compact(node: ast.AST) -> Node:
-    """A checked ``ast`` tree in the compact form."""
-    start, end = getattr(node, "col_offset", 0), getattr(node, "end_col_offset", None)
+def _compact(node: ast.AST, place: Callable[[int, int | None], tuple[int, int]]) -> Node:
+    """A checked ``ast`` tree in the compact form; ``place`` gives a node's columns in the stripped text as
+    typed from its columns in the text gate 2 read."""
+    start, end = place(getattr(node, "col_offset", 0), getattr(node, "end_col_offset", None))
     if isinstance(node, ast.Constant):
         return ("num", start, end, node.value)
     if isinstance(node, ast.Name):
         return ("name", start, end, node.id)
     if isinstance(node, ast.UnaryOp):
-        return ("neg" if isinstance(node.op, ast.USub) else "pos", start, end, _compact(node.operand))
+        return ("neg" if isinstance(node.op, ast.USub) else "pos", start, end, _compact(node.operand, place))
     if isinstance(node, ast.BinOp) and isinstance(node.op, (*SUMS, *PRODUCTS)):
         # a long sum or product is a flat list, not a recursion as deep as it is long
         items = chain(node, SUMS if isinstance(node.op, SUMS) else PRODUCTS)
-        rest = tuple((OPERATORS[op], _compact(operand)) for op, operand, _ in items[1:])  # type: ignore[index]
-        return ("chain", start, end, _compact(items[0][1]), rest)
+        rest = tuple((OPERATORS[op], _compact(operand, place)) for op, operand, _ in items[1:])  # type: ignore[index]
+        return ("chain", start, end, _compact(items[0][1], place), rest)
     if isinstance(node, ast.BinOp):
-        return ("pow", start, end, _compact(node.left), _compact(node.right))
+        return ("pow", start, end, _compact(node.left, place), _compact(node.right, place))
     assert isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
-    return ("call", start, end, node.func.id, tuple(_compact(a) for a in node.args))
+    return ("call", start, end, node.func.id, tuple(_compact(a, place) for a in node.args))
 
 
 @dataclass(frozen=True)
@@ -83,10 +85,16 @@ class Parsed:
 
 def read(text: str, names: Collection[str]) -> Parsed:
     """Gates 1 and 2 on ``text``: the one place an expression's text is read (``ast.parse``)."""
-    tree, facts = _checked(text, names)
+    tree, facts, written = _checked(text, names)
     # one set shared by many texts is pickled once
     allowed = names if isinstance(names, frozenset) else frozenset(names)
-    return Parsed(text, _compact(tree.body), Size(facts.terms, facts.degree), allowed)
+    offset = placed(text)[1]
+
+    def place(start: int, end: int | None) -> tuple[int, int]:
+        first, last = written.span(start, end)
+        return first - offset, last - offset
+
+    return Parsed(text, _compact(tree.body, place), Size(facts.terms, facts.degree), allowed)
 
 
 def expression_size(text: str, names: Collection[str]) -> Size:
@@ -95,48 +103,45 @@ def expression_size(text: str, names: Collection[str]) -> Size:
     return Size(facts.terms, facts.degree)
 
 
-def _checked(text: str, names: Collection[str]) -> tuple[ast.Expression, Facts]:
+def _checked(text: str, names: Collection[str]) -> tuple[ast.Expression, Facts, Typed]:
     if not isinstance(text, str):
         raise ExpressionError("an expression must be a string")
     if len(text) > MAX_LENGTH:
         raise ExpressionError(f"expression is {len(text)} characters long; at most {MAX_LENGTH} are allowed")
     text = text.translate(SPACES)
-    bad = first_bad_character(text)
-    if bad is not None:
-        raise character_error(text, bad)
-    stripped = text.strip()
-    if not stripped:
+    if not text.strip():
         raise ExpressionError("empty expression (write 0 for nothing)")
+    # gate 0: the text as students type it (^, θ, θ', 2x, m g l) in the grammar the allowlist walk reads
+    written = typed(text)
+    stripped = written.text
+    bad = first_bad_character(stripped)
+    if bad is not None:  # never: gate 0 writes only these characters
+        raise character_error(text, written.span(bad, bad + 1)[0])
     offset = len(text) - len(text.lstrip())
     try:
         tree = ast.parse(stripped, mode="eval")
     except SyntaxError as exc:
-        column = min(max((exc.offset or 1) - 1, 0), len(stripped))
-        first, last = max(column - 10, 0), min(column + 10, len(stripped))
-        near = stripped[first:last]
-        starred = with_stars(stripped)
-        hint = f"write {starred} (a * between factors)" if starred else exc.msg
-        raise ExpressionError(
-            f"syntax error at column {offset + column + 1} ({hint}), near {near!r}",
-            near,
-            offset + first,
-            offset + last,
-        ) from None
+        column = min(max((exc.offset or 1) - 1, 0), max(len(stripped) - 1, 0))
+        at = written.span(column, column + 1)[0]
+        first, last = max(at - 10, 0), min(at + 10, len(text))
+        near = text[first:last]
+        raise ExpressionError(f"syntax error at column {at + 1} ({exc.msg}), near {near!r}", near, first, last) from None
     except (RecursionError, MemoryError, ValueError):
         raise ExpressionError("expression could not be read (too deeply nested?)") from None
     count = sum(isinstance(node, ast.expr) for node in ast.walk(tree))
     if count > MAX_NODES:
         raise ExpressionError(f"expression has {count} parts; at most {MAX_NODES} are allowed")
-    facts = Checker(stripped, offset, names).check(tree.body)
+    facts = Checker(stripped, offset, names, written).check(tree.body)
     if facts.terms > MAX_TERMS or facts.inside > MAX_TERMS:
         where = "expression" if facts.terms > MAX_TERMS else "a function's argument"
+        whole = text.strip()
         raise ExpressionError(
             f"{where} would expand into more than {MAX_TERMS} terms; write it in a smaller form",
-            stripped[:60],
+            whole[:60],
             offset,
-            offset + len(stripped),
+            offset + len(whole),
         )
-    return tree, facts
+    return tree, facts, written
 
 
 def placed(text: str) -> tuple[str, int]:

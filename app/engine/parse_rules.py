@@ -85,16 +85,25 @@ class ExpressionError(DerivationError):
 
     ``part`` is the offending piece of the text; ``start`` and ``end`` are its
     character offsets in the text as given (``None`` when no single piece is at
-    fault, such as a text that is too long).
+    fault, such as a text that is too long).  ``readings`` are the two ways an
+    ambiguous text could be read (``1/2m``: ``(1/2) m`` and ``1/(2 m)``), else empty.
     """
 
-    def __init__(self, message: str, part: str = "", start: int | None = None, end: int | None = None):
+    def __init__(
+        self,
+        message: str,
+        part: str = "",
+        start: int | None = None,
+        end: int | None = None,
+        readings: tuple[str, ...] = (),
+    ):
         super().__init__(message, part)
         self.start = start
         self.end = end
+        self.readings = tuple(readings)
 
-    def __reduce__(self):  # keep part and offsets across a process boundary
-        return (type(self), (str(self), self.part, self.start, self.end))
+    def __reduce__(self):  # keep part, offsets and readings across a process boundary
+        return (type(self), (str(self), self.part, self.start, self.end, self.readings))
 
 
 def check_name(name: str, what: str = "name") -> str:

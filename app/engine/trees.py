@@ -29,7 +29,7 @@ from typing import Any
 import sympy as sp
 
 from app.engine.parse import FUNCTIONS as INPUT_FUNCTIONS
-from app.engine.parse import MAX_LENGTH, ExpressionError, check_expression
+from app.engine.parse import MAX_LENGTH, ExpressionError, check_expression, typed
 
 Tree = float | int | str | list[Any]
 
@@ -126,8 +126,8 @@ def of_text(text: str, names: Collection[str] | None = None) -> Tree:
         raise TreeError(f"an expression of at most {MAX_LENGTH} characters is needed")
     if names is None:
         try:
-            parsed = ast.parse(text.strip(), mode="eval")
-        except SyntaxError as exc:
+            parsed = ast.parse(typed(text).text, mode="eval")
+        except (SyntaxError, ExpressionError) as exc:
             raise TreeError(f"not an expression: {text!r}") from exc
         names = {n.id for n in ast.walk(parsed) if isinstance(n, ast.Name)} - set(FUNCTIONS) - {"pi"}
     try:

@@ -63,7 +63,7 @@ MAX_WORKER_PROBLEMS = 64
 
 
 def refusal(exc: CheckError) -> InvalidSystem:
-    return InvalidSystem(str(exc), (exc.field,), exc.part, exc.start, exc.end)
+    return InvalidSystem(str(exc), (exc.field,), exc.part, exc.start, exc.end, exc.readings)
 
 
 def _in_system(exc: DerivationError) -> InvalidSystem:
@@ -76,6 +76,7 @@ def _in_system(exc: DerivationError) -> InvalidSystem:
         exc.part,
         getattr(exc, "start", None),
         getattr(exc, "end", None),
+        getattr(exc, "readings", ()),
     )
 
 

@@ -44,7 +44,7 @@ MAX_TYPESET = 2048  # typeset answers kept (each a few hundred bytes of LaTeX)
 
 def _refusal(exc: CheckError) -> InvalidSystem:
     """The checker's refusal, word for word, located at the request's ``text``."""
-    return InvalidSystem(str(exc), ("text",), exc.part, exc.start, exc.end)
+    return InvalidSystem(str(exc), ("text",), exc.part, exc.start, exc.end, exc.readings)
 
 
 def system_kinds(coordinates: tuple[str, ...], parameters: tuple[str, ...]) -> dict[str, str]:

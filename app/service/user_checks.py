@@ -44,8 +44,17 @@ class InvalidSystem(DerivationError):
 
     loc: tuple
 
-    def __init__(self, message: str, loc: tuple = (), part: str = "", start: int | None = None, end: int | None = None):
+    def __init__(
+        self,
+        message: str,
+        loc: tuple = (),
+        part: str = "",
+        start: int | None = None,
+        end: int | None = None,
+        readings: tuple[str, ...] = (),
+    ):
         Refused.__init__(self, message, part, loc, start, end)
+        self.readings = tuple(readings)  # the two readings of an ambiguous expression (app/engine/parse_typed.py)
 
 
 class TooCostly(InvalidSystem, TooMuchWork):
@@ -67,7 +76,9 @@ def located(exc: DerivationError, loc: tuple, message: str | None = None) -> Inv
 
 
 def _refuse(loc: tuple, exc: ExpressionError) -> InvalidSystem:
-    return InvalidSystem(f"{_where(loc)}: {exc}", loc, exc.part, getattr(exc, "start", None), getattr(exc, "end", None))
+    return InvalidSystem(
+        f"{_where(loc)}: {exc}", loc, exc.part, getattr(exc, "start", None), getattr(exc, "end", None), exc.readings
+    )
 
 
 def checked(data: Mapping[str, Any]) -> UserSystem:

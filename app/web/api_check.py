@@ -16,24 +16,24 @@ from fastapi.responses import Response
 from app.service.checking import declared
 from app.web.api_user import answer
 from app.web.deps import CheckingDep, ClientDep
-from app.web.schemas import ErrorResponse
+from app.web.schemas import Problem
 from app.web.schemas_check import CheckRequest, CheckResponse, Exercises, SystemCheckRequest
-from app.web.schemas_user import BusyError, SystemSpec, UserError
+from app.web.schemas_user import SystemSpec
 
 router = APIRouter(prefix="/api", tags=["practice"])
 
 ERRORS = {
-    400: {"model": ErrorResponse, "description": "The body could not be read (not JSON, or not UTF-8)."},
-    404: {"model": ErrorResponse, "description": "No scene has this id (the message lists the known ones)."},
-    413: {"model": ErrorResponse, "description": "The body is larger than 32 KiB."},
+    400: {"model": Problem, "description": "The body could not be read (not JSON, or not UTF-8)."},
+    404: {"model": Problem, "description": "No scene has this id (the message lists the known ones)."},
+    413: {"model": Problem, "description": "The body is larger than 32 KiB."},
     422: {
-        "model": UserError,
+        "model": Problem,
         "description": "Refused: `loc` names the field (`answer`, `step`, `coordinate`, or `system.…`); for an "
         "answer, `part` and `start`/`end` locate the offending part; an unknown step or coordinate lists the "
         "allowed ones.",
     },
-    429: {"model": BusyError, "description": "You already have a job running (one at a time per session)."},
-    503: {"model": BusyError, "description": "The server is busy with other users' jobs."},
+    429: {"model": Problem, "description": "You already have a job running (one at a time per session)."},
+    503: {"model": Problem, "description": "The server is busy with other users' jobs."},
 }
 
 

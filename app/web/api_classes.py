@@ -24,7 +24,7 @@ from app.service.classroom.service import Classroom
 from app.web.api_user import answer
 from app.web.deps import ClientDep, ServicesDep
 from app.web.limits import MAX_BODY_BYTES
-from app.web.schemas import ErrorResponse
+from app.web.schemas import Problem
 from app.web.schemas_check import CheckResponse
 from app.web.schemas_classes import (
     Assignment,
@@ -37,7 +37,6 @@ from app.web.schemas_classes import (
     Students,
     Summary,
 )
-from app.web.schemas_user import BusyError, UserError
 
 router = APIRouter(prefix="/api/classes", tags=["classes"])
 bearer = HTTPBearer(auto_error=False, description="The instructor's key, or a student's key from joining.")
@@ -58,12 +57,12 @@ async def class_key(credentials: Annotated[HTTPAuthorizationCredentials | None, 
 KeyDep = Annotated[str | None, Depends(class_key)]
 
 ERRORS: dict[int | str, dict[str, Any]] = {
-    400: {"model": ErrorResponse, "description": "The body could not be read (not JSON, or nested too deeply)."},
-    413: {"model": ErrorResponse, "description": f"The body is larger than {MAX_BODY_BYTES} bytes."},
-    401: {"model": ErrorResponse, "description": "No key: send `Authorization: Bearer <key>`."},
-    403: {"model": ErrorResponse, "description": "This key does not open this route of this class."},
-    422: {"model": UserError, "description": "Refused: the field at fault is in `loc`."},
-    429: {"model": BusyError, "description": "Too many joins or checks this minute, or your check is running."},
+    400: {"model": Problem, "description": "The body could not be read (not JSON, or nested too deeply)."},
+    413: {"model": Problem, "description": f"The body is larger than {MAX_BODY_BYTES} bytes."},
+    401: {"model": Problem, "description": "No key: send `Authorization: Bearer <key>`."},
+    403: {"model": Problem, "description": "This key does not open this route of this class."},
+    422: {"model": Problem, "description": "Refused: the field at fault is in `loc`."},
+    429: {"model": Problem, "description": "Too many joins or checks this minute, or your check is running."},
 }
 
 
@@ -92,14 +91,17 @@ def _json(data: Any, status: int = 200) -> JSONResponse:
 @router.post("", status_code=201, summary="Create a class", response_model=ClassCreated,
              responses=_errors(400, 413, 422))
 async def create_class(classes: ClassroomDep, body: NewClass) -> JSONResponse:
-    return _json(await classes.create(body.title), 201)
+    created = await classes.create(body.title)
+    response = _json(created, 201)
+    response.headers["Location"] = f"/api/classes/{created['code']}/summary"  # the class, as its instructor reads it
+    return response
 
 
 @router.post(
     "/{code}/join",
     summary="Join a class with a pseudonym",
     response_model=Joined,
-    responses={404: {"model": ErrorResponse, "description": "No class has this code."}, **_errors(400, 413, 422, 429)},
+    responses={404: {"model": Problem, "description": "No class has this code."}, **_errors(400, 413, 422, 429)},
 )
 async def join_class(classes: ClassroomDep, client: ClientDep, code: str, body: JoinRequest) -> Response:
     return client.keep(_json(await classes.join(code, body.name, client.key, client.address)))
@@ -116,7 +118,7 @@ _keyed_read("/{code}/me", "view_class", "The class as your key sees it", ClassVi
     "recorded, on disk before the answer is sent. With an `attempt` id, a retry of the same press returns the "
     "first verdict and records nothing new.",
     response_model=CheckResponse,
-    responses={**ERRORS, 503: {"model": BusyError, "description": "The server is busy."}},
+    responses={**ERRORS, 503: {"model": Problem, "description": "The server is busy."}},
 )
 async def check_step(classes: ClassroomDep, client: ClientDep, code: str, key: KeyDep, body: ClassCheckRequest):
     target = {"scene": body.scene, "system": body.system}

@@ -12,7 +12,7 @@ from app.service import derivations, exporting
 from app.service.export.source import FORMATS
 from app.service.exporting import Exported
 from app.web.deps import AnswersDep, ChapterDep
-from app.web.schemas import ErrorResponse, SceneSummary
+from app.web.schemas import Problem, SceneSummary
 from app.web.schemas_export import FORMAT_HELP, ExportFormat
 
 router = APIRouter(prefix="/api", tags=["scenes"])
@@ -26,7 +26,7 @@ def list_scenes() -> list[dict[str, Any]]:
 @router.get(
     "/scenes/{scene_id}/derivation",
     summary="The step-by-step derivation of a scene",
-    responses={404: {"model": ErrorResponse, "description": "No scene has this id."}},
+    responses={404: {"model": Problem, "description": "No scene has this id."}},
 )
 def scene_derivation(scene_id: str, chapter: ChapterDep) -> dict[str, Any]:
     # A plain `def`: FastAPI runs it in its thread pool, so a first (uncached)
@@ -59,8 +59,8 @@ EXPORT_CONTENT = {media: {"schema": {"type": "string"}} for media, _ in FORMATS.
     response_class=Response,
     responses={
         200: {"content": EXPORT_CONTENT, "description": "The file, as an attachment."},
-        404: {"model": ErrorResponse, "description": "No scene has this id."},
-        422: {"model": ErrorResponse, "description": "The format is missing or not one of ipynb, py, tex."},
+        404: {"model": Problem, "description": "No scene has this id."},
+        422: {"model": Problem, "description": "The format is missing or not one of ipynb, py, tex."},
     },
 )
 def scene_export(

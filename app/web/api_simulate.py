@@ -16,22 +16,22 @@ from app.service import simulation, work_precision
 from app.web.deps import AnswersDep, ChapterDep, GatesDep
 from app.web.limits import MAX_BODY_BYTES
 from app.web.responses import FastJSONResponse
-from app.web.schemas import ErrorResponse
+from app.web.schemas import Problem
 from app.web.schemas_simulate import SimulateRequest, SimulateResponse, WorkPrecision
 
 router = APIRouter(prefix="/api", tags=["simulation"])
 
 ERRORS = {
-    400: {"model": ErrorResponse, "description": "The body is not JSON (or not UTF-8, or nested too deeply)."},
-    404: {"model": ErrorResponse, "description": "No scene has this id."},
+    400: {"model": Problem, "description": "The body is not JSON (or not UTF-8, or nested too deeply)."},
+    404: {"model": Problem, "description": "No scene has this id."},
     422: {
-        "model": ErrorResponse,
+        "model": Problem,
         "description": "A value outside its range, NaN or Infinity, an unknown name, a method that does not apply, "
         "or too much work for the time and step budget (the message says which and what to change).",
     },
-    429: {"model": ErrorResponse, "description": "Too many simulations are running at once."},
+    429: {"model": Problem, "description": "Too many simulations are running at once."},
 }
-BODY_ERRORS = {413: {"model": ErrorResponse, "description": f"The body is larger than {MAX_BODY_BYTES} bytes."}}
+BODY_ERRORS = {413: {"model": Problem, "description": f"The body is larger than {MAX_BODY_BYTES} bytes."}}
 
 
 def scene_route(

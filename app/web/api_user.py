@@ -25,14 +25,12 @@ from app.web.disconnect import ClientGone, unless_gone
 from app.web.errors import KINDS, held, json_problem
 from app.web.examples_user import DERIVE_EXAMPLES, DERIVE_RESPONSE, ERROR_EXAMPLES, SIMULATE_EXAMPLES, SIMULATE_RESPONSE
 from app.web.limits import MAX_BODY_BYTES
-from app.web.schemas import SESSION_COOKIE, ErrorResponse
+from app.web.schemas import SESSION_COOKIE, Problem
 from app.web.schemas_export import ExportRequest
 from app.web.schemas_simulate import SimulateResponse
 from app.web.schemas_user import (
-    BusyError,
     DerivationDocument,
     SystemSpec,
-    UserError,
     UserSimulateRequest,
     simulate_request,
     system_of,
@@ -47,17 +45,17 @@ def _errors(*statuses: int) -> dict[int | str, dict[str, Any]]:
     """The documented error responses, each with its model and examples."""
     described = {
         400: (
-            ErrorResponse,
+            Problem,
             "The body could not be read (not UTF-8, a number JSON cannot hold, or nested too deeply).",
         ),
-        413: (ErrorResponse, f"The body is larger than {MAX_BODY_BYTES} bytes."),
+        413: (Problem, f"The body is larger than {MAX_BODY_BYTES} bytes."),
         422: (
-            UserError,
+            Problem,
             "The system was refused: a bad shape, name or expression (located by `loc`, `part`, "
             "`start`/`end`), a singular mass matrix, NaN or Infinity, or work beyond the time or memory limit.",
         ),
-        429: (BusyError, "You already have a derivation or simulation running (one at a time per session)."),
-        503: (BusyError, "The server is busy with other users' systems."),
+        429: (Problem, "You already have a derivation or simulation running (one at a time per session)."),
+        503: (Problem, "The server is busy with other users' systems."),
     }
     responses: dict[int | str, dict[str, Any]] = {}
     for status in statuses:

@@ -6,6 +6,14 @@ the JSON routes answer with it (through the app's exception handlers or
 message.  Never a 500 for bad input: a clear 4xx with what was wrong and what
 is allowed.
 
+Every error the API sends is an RFC 9457 problem (``problem_body``): media type
+``application/problem+json``, with ``type`` (``about:blank``: the status says
+what kind of problem it is), ``title`` (the status's phrase), ``status`` and
+``detail`` (what was wrong and what is allowed), and the fields clients read
+besides (``loc``, ``part``, ``start``/``end``, ``readings``, ``errors``,
+``retry_after``, ``kind``).  The OpenAPI document describes them with one
+schema (app/web/openapi.py).
+
 FastAPI's default validation handler echoes the offending input back; a huge
 or non-finite input would then be repeated or break JSON encoding.  This one
 reports where and what, and never the input itself; a name in a location (a
@@ -16,11 +24,14 @@ from __future__ import annotations
 
 import asyncio
 from dataclasses import dataclass, field
+from http import HTTPStatus
 from typing import Any
 
 from fastapi import FastAPI, Request
+from fastapi.exception_handlers import http_exception_handler
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import HTMLResponse, JSONResponse, Response
+from starlette.exceptions import HTTPException as StarletteHTTPException
 
 from app.engine.errors import excerpt
 from app.errors import NoKey, OverCapacity, Refused, UnknownClass, UnknownScene, WorkerFailed, WrongKey
@@ -37,8 +48,22 @@ WRONG_KEY = 403  # WrongKey
 KINDS = (Refused, OverCapacity, WorkerFailed, UnknownScene, NoKey, WrongKey, UnknownClass)
 
 
+PROBLEM_JSON = "application/problem+json"
+
+
+def problem_body(status: int, detail: str, **fields: Any) -> dict[str, Any]:
+    """An RFC 9457 problem: ``type``, ``title``, ``status`` and ``detail``, then the route's own fields."""
+    return {"type": "about:blank", "title": HTTPStatus(status).phrase, "status": status, "detail": detail, **fields}
+
+
+def problem_response(status: int, detail: str, headers: dict[str, str] | None = None, **fields: Any) -> JSONResponse:
+    return JSONResponse(problem_body(status, detail, **fields), status_code=status, headers=headers, media_type=PROBLEM_JSON)
+
+
 @dataclass(frozen=True)
-class Problem:
+class Failure:
+    """A failure as HTTP: its status, its problem's fields and its headers."""
+
     status: int
     body: dict[str, Any]
     headers: dict[str, str] = field(default_factory=dict)
@@ -48,35 +73,38 @@ class Problem:
         return self.body["detail"]
 
 
-def _busy(message: str, retry_after: int, status: int) -> Problem:
-    return Problem(status, {"detail": message, "retry_after": retry_after}, {"Retry-After": str(retry_after)})
+def _busy(message: str, retry_after: int, status: int) -> Failure:
+    return Failure(status, {"detail": message, "retry_after": retry_after}, {"Retry-After": str(retry_after)})
 
 
-def problem(exc: Exception) -> Problem:
+def problem(exc: Exception) -> Failure:
     """The response to a failure of one of the kinds in app/errors.py."""
     if isinstance(exc, Refused):
         body: dict[str, Any] = {"detail": str(exc)[:600], "part": exc.part[:80]}
         if exc.loc is not None:  # a refusal located in the request body
             body |= {"loc": ["body", *(excerpt(x) for x in exc.loc)], "start": exc.start, "end": exc.end}
-        return Problem(REFUSED, body)
+        if getattr(exc, "readings", ()):  # an expression that reads two ways: both readings, to choose from
+            body["readings"] = [excerpt(r, 200) for r in exc.readings]
+        return Failure(REFUSED, body)
     if isinstance(exc, OverCapacity):
         return _busy(str(exc), exc.retry_after, SERVER_BUSY if exc.whole_server else CLIENT_BUSY)
     if isinstance(exc, WorkerFailed):
         if exc.kind == "unavailable":
             return _busy(str(exc), UNAVAILABLE_RETRY_SECONDS, SERVER_BUSY)
-        return Problem(REFUSED, {"detail": str(exc), "kind": exc.kind})
+        return Failure(REFUSED, {"detail": str(exc), "kind": exc.kind})
     if isinstance(exc, UnknownScene | UnknownClass):
-        return Problem(NOT_FOUND, {"detail": str(exc)})
+        return Failure(NOT_FOUND, {"detail": str(exc)})
     if isinstance(exc, NoKey):
-        return Problem(NO_KEY, {"detail": str(exc)}, {"WWW-Authenticate": "Bearer"})
+        return Failure(NO_KEY, {"detail": str(exc)}, {"WWW-Authenticate": "Bearer"})
     if isinstance(exc, WrongKey):
-        return Problem(WRONG_KEY, {"detail": str(exc)})
+        return Failure(WRONG_KEY, {"detail": str(exc)})
     raise TypeError(f"not a kind of failure: {type(exc).__name__}") from exc
 
 
 def json_problem(exc: Exception) -> JSONResponse:
     found = problem(exc)
-    return JSONResponse(found.body, status_code=found.status, headers=found.headers)
+    fields = {k: v for k, v in found.body.items() if k != "detail"}
+    return problem_response(found.status, found.detail, found.headers, **fields)
 
 
 async def held(exc: Exception) -> None:
@@ -106,7 +134,7 @@ async def validation_error(request: Request, exc: RequestValidationError) -> JSO
     ]
     first = errors[0] if errors else {"loc": [], "msg": "invalid request"}
     detail = f"{_location(first['loc'])}: {first['msg']}"
-    return JSONResponse(status_code=REFUSED, content={"detail": detail, "errors": errors})
+    return problem_response(REFUSED, detail, errors=errors)
 
 
 UNENCODABLE = (
@@ -120,12 +148,22 @@ async def unencodable_text(request: Request, exc: Exception) -> Response:
 
     The pages that echo input check their own fields first (app/web/playground.py); this is the net under them."""
     if request.url.path.startswith("/api/"):
-        return JSONResponse({"detail": UNENCODABLE}, status_code=REFUSED)
+        return problem_response(REFUSED, UNENCODABLE)
     page = f"<!doctype html><html lang=en><title>Refused</title><main><h1>Refused</h1><p>{UNENCODABLE}</p></main>"
     return HTMLResponse(page, status_code=REFUSED)
 
 
+async def http_error(request: Request, exc: Exception) -> Response:
+    """Starlette's own refusals (no such address: 404, a method the address does not take: 405) as problems."""
+    assert isinstance(exc, StarletteHTTPException)
+    headers = dict(exc.headers or {})
+    if exc.status_code < 400 or not request.url.path.startswith(("/api/", "/openapi.json", "/healthz")):
+        return await http_exception_handler(request, exc)
+    return problem_response(exc.status_code, str(exc.detail), headers)
+
+
 def install(app: FastAPI) -> None:
+    app.add_exception_handler(StarletteHTTPException, http_error)
     app.add_exception_handler(RequestValidationError, validation_error)
     app.add_exception_handler(UnicodeEncodeError, unencodable_text)
     for kind in KINDS:

@@ -7,7 +7,10 @@ JSON text nested deeper than ``MAX_JSON_DEPTH`` is refused with a 400 before
 ``json.loads`` runs (Python's parser recurses once per level).  A body that
 does not arrive within ``settings().body_seconds`` (a client sending a byte at
 a time, or one that sent ``Expect: 100-continue`` and then nothing) gets a 408
-and its connection is closed, rather than holding a socket for ever.
+and its connection is closed, rather than holding a socket for ever.  A body
+sent to the API under a media type other than JSON (a form's
+``application/x-www-form-urlencoded``, ``text/plain``) gets a 415 before it is
+read.  Every refusal is an RFC 9457 problem (app/web/errors.py).
 """
 
 from __future__ import annotations
@@ -19,11 +22,18 @@ from typing import Any
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from app.settings import settings
+from app.web.errors import PROBLEM_JSON, problem_body
 
 MAX_BODY_BYTES = 32 * 1024
 MAX_JSON_DEPTH = 32  # the deepest request the API documents is 5 levels deep
 _BODY_METHODS = frozenset({"POST", "PUT", "PATCH"})
+NOT_JSON = "the body must be JSON: send it with Content-Type: application/json"
 
+
+def _json_media(value: bytes) -> bool:
+    """Whether a Content-Type names JSON (application/json, or a +json type such as application/merge-patch+json)."""
+    media = value.decode("latin-1").partition(";")[0].strip().lower()
+    return media == "application/json" or (media.startswith("application/") and media.endswith("+json"))
 
 class TooDeep(ValueError):
     """A JSON text nested deeper than allowed."""
@@ -74,9 +84,10 @@ def too_large_message(size: int | None) -> str:
     return f"the request body is {told}; at most {MAX_BODY_BYTES} bytes are allowed"
 
 
-async def _refuse(send: Send, status: int, detail: str) -> None:
-    body = json.dumps({"detail": detail}).encode()
-    headers = [(b"content-type", b"application/json"), (b"content-length", str(len(body)).encode())]
+async def _refuse(send: Send, status: int, detail: str, extra: dict[str, str] | None = None) -> None:
+    body = json.dumps(problem_body(status, detail)).encode()
+    headers = [(b"content-type", PROBLEM_JSON.encode()), (b"content-length", str(len(body)).encode())]
+    headers += [(k.lower().encode(), v.encode()) for k, v in (extra or {}).items()]
     if status in (408, 413):
         headers.append((b"connection", b"close"))  # the unread body is not worth reading
     await send({"type": "http.response.start", "status": status, "headers": headers})
@@ -103,6 +114,12 @@ class BodyLimit:
             await self.app(scope, receive, send)
             return
         declared = [v for k, v in scope["headers"] if k == b"content-length"]
+        media = [v for k, v in scope["headers"] if k == b"content-type"]
+        # every API route with a body reads JSON: a form or text body is the wrong media type, not a bad value
+        has_body = any(k == b"transfer-encoding" for k, _ in scope["headers"]) or any(v != b"0" for v in declared)
+        if scope["path"].startswith("/api/") and media and has_body and not _json_media(media[0]):
+            await _refuse(send, 415, NOT_JSON, {"Accept-Post": "application/json"})
+            return
         if declared:
             if len(declared) > 1 or not declared[0].isdigit():
                 await _refuse(send, 400, "the Content-Length header is not a number")

@@ -35,7 +35,7 @@ from app.service.user_jobs import derive_job
 from app.service.user_systems import UserSystems
 from app.viz.user_page import model_of
 from app.web.deps import ClientDep, UserSystemsDep
-from app.web.errors import KINDS, REFUSED, Problem, held, problem
+from app.web.errors import KINDS, REFUSED, Failure, held, problem
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
 from app.web.playground_form import AXES, FORMS, Form, FormError, form_of, located_error, query_of, read_form, spec_of
 from app.web.playground_stages import STAGE_PARAMETER, first_view, whole_href
@@ -193,7 +193,7 @@ HTML = {"text/html": {"schema": {"type": "string"}}}
 )
 async def playground(request: Request, client: ClientDep, users: UserSystemsDep) -> Response:
     error: FormError | None = None
-    failed: Problem | None = None
+    failed: Failure | None = None
     empty = False
     model = user = first = None
     form = form_of(FORCED_SPRING)

@@ -23,8 +23,31 @@ SESSION_COOKIE: dict[str, Any] = {
 STRICT = ConfigDict(extra="forbid", allow_inf_nan=False)
 
 
-class ErrorResponse(BaseModel):
-    detail: str
+class ValidationIssue(BaseModel):
+    loc: list[str]
+    msg: str
+    type: str
+
+
+class Problem(BaseModel):
+    """Every error the API sends: an RFC 9457 problem (media type application/problem+json), with the fields
+    that locate what was refused, or say when to try again (app/web/errors.py)."""
+
+    model_config = ConfigDict(extra="allow")
+    type: str = Field(description="`about:blank`: the status says what kind of problem it is.")
+    title: str = Field(description="The status's phrase (Unprocessable Content, Too Many Requests, …).")
+    status: int = Field(description="The HTTP status, repeated.")
+    detail: str = Field(description="What was wrong, and what is allowed.")
+    part: str | None = Field(None, description="The offending piece of the input.")
+    loc: list[str] | None = Field(None, description="Path of the offending field, e.g. body.particles.0.mass.")
+    start: int | None = Field(None, description="Offset of the offending part in that field's text.")
+    end: int | None = None
+    readings: list[str] | None = Field(
+        None, description="An expression that reads two ways (`1/2m`): both readings, to write the one meant."
+    )
+    kind: str | None = Field(None, description="timeout or memory when the work exceeded a limit.")
+    errors: list[ValidationIssue] | None = Field(None, description="Shape errors (never echoing the input).")
+    retry_after: int | None = Field(None, description="Seconds to wait (429, 503); also in the Retry-After header.")
 
 
 class ParameterInfo(BaseModel):

@@ -240,29 +240,6 @@ class DerivationDocument(BaseModel):
     )
 
 
-class ValidationIssue(BaseModel):
-    loc: list[str]
-    msg: str
-    type: str
-
-
-class UserError(BaseModel):
-    """Why a system was refused; ``loc`` and ``start``/``end`` point at the offending part."""
-
-    detail: str
-    part: str | None = Field(None, description="The offending piece of the input.")
-    loc: list[str] | None = Field(None, description="Path of the offending field, e.g. body.particles.0.mass.")
-    start: int | None = Field(None, description="Offset of the offending part in that field's text.")
-    end: int | None = None
-    kind: str | None = Field(None, description="timeout or memory when the work exceeded a limit.")
-    errors: list[ValidationIssue] | None = Field(None, description="Shape errors (never echoing the input).")
-
-
-class BusyError(BaseModel):
-    detail: str
-    retry_after: int = Field(description="Seconds to wait; also in the Retry-After header.")
-
-
 # ---- simulate ----------------------------------------------------------------------------
 
 

@@ -129,7 +129,7 @@ def test_an_incorrect_equation_is_compared_at_the_students_scale():
     [
         ("m*(R*theta_dot**2/2", "m*(R*theta_d"),  # syntax
         ("m*v**2/2", "v"),  # an unknown name
-        ("m*R^2*theta_dot**2/2", "^"),
+        ("m*R^2^2*theta_dot**2/2", "R^2^2"),  # read two ways
         ("__import__('os').system('touch /tmp/lagrange-check-ran')", "'"),
         ("theta_dot.__class__", "theta_dot.__class__"),
         ("(lambda x: x)(1)", ":"),

@@ -174,9 +174,10 @@ def test_busy_server_answers_503_with_retry_after(client, services):
 def test_openapi_documents_every_answer(client, path):
     schema = client.get("/openapi.json").json()
     operation = schema["paths"][path]["post"]
-    assert set(operation["responses"]) == {"200", "400", "413", "422", "429", "503"}
+    assert set(operation["responses"]) == {"200", "400", "413", "415", "422", "429", "503"}
     for status, response in operation["responses"].items():
-        content = response["content"]["application/json"]
+        # an error is an RFC 9457 problem (app/web/errors.py)
+        content = response["content"]["application/json" if status == "200" else "application/problem+json"]
         assert "schema" in content and ("example" in content or "examples" in content), status
         assert content.get("example", True) is not None, f"{status}: the recorded example is missing"
     for status in ("429", "503"):

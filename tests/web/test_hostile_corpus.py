@@ -446,7 +446,7 @@ def test_hostile_probe(live_server, canary, probe):  # noqa: F811
     assert answer.status in probe.expect, (probe.id, answer.status, text[:300])
     assert answer.seconds < HANG_GUARD, (probe.id, answer.seconds)
     # refusals say what was wrong, briefly, in the student's terms, and never repeat a big input
-    if answer.status >= 400 and answer.headers.get("content-type", "").startswith("application/json"):
+    if answer.status >= 400 and answer.headers.get("content-type", "").startswith(("application/json", "application/problem+json")):
         assert json.loads(answer.body)["detail"]
         assert len(answer.body) < 4000, (probe.id, len(answer.body))
     assert answer.status < 400 or not any(name in text for name in INTERNAL_NAMES), probe.id

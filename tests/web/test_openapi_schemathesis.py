@@ -3,7 +3,8 @@
 Every operation is called with generated requests (valid and invalid by the
 schema) and every answer is checked: not a 5xx, a documented status code and
 content type, a body that matches the documented schema, documented headers,
-and invalid requests rejected.  ``positive_data_acceptance`` is left out: an
+and invalid requests rejected (errors are RFC 9457 problems, application/problem+json, one schema for all:
+app/web/openapi.py).  ``positive_data_acceptance`` is left out: an
 expression field is a string in the schema, and most schema-valid strings are
 not expressions, so a 422 for them is the right answer.
 """
@@ -44,15 +45,37 @@ def generated_requests_services(client, tmp_path_factory):
     return Services(session.pool, users, checking, Gates(), session.scenes, classes, session.answers)
 
 
-@pytest.mark.slow
-@schema.parametrize()
-@settings(max_examples=40, deadline=None, suppress_health_check=list(HealthCheck), derandomize=True)
-def test_every_operation_conforms_to_its_schema(case, generated_requests_services):
+# operations that derive, simulate or judge (each case a worker job of up to seconds): few examples each, so
+# that the run stays within minutes on a shared machine; the rest answer from caches or the database
+HEAVY = (
+    "derive_system|derive_equations|simulate_system|export_system|user_poincare|user_modes|user_action|user_relax"
+    "|scene_poincare|scene_modes|scene_modes_at|scene_action|scene_relax|simulate_scene|scene_work_precision"
+    "|scene_export|check_scene_step|check_system_step|system_exercises|typeset|playground|check_step"
+)
+heavy = schema.include(operation_id_regex=f"^({HEAVY})$")
+light = schema.exclude(operation_id_regex=f"^({HEAVY})$")
+
+
+def _conforms(case, services) -> None:
     # schemathesis starts the app's lifespan for each operation: its calls use services on the session's
     # pool (started once) instead of a pool of their own, and leave the session's fair shares alone
-    app.dependency_overrides[deps.services] = lambda: generated_requests_services
+    app.dependency_overrides[deps.services] = lambda: services
     try:
         # a derivation may take a while (the double pendulum example does); the worker bounds it
         case.call_and_validate(excluded_checks=[positive_data_acceptance], timeout=120)
     finally:
         app.dependency_overrides.pop(deps.services)
+
+
+@pytest.mark.slow
+@light.parametrize()
+@settings(max_examples=30, deadline=None, suppress_health_check=list(HealthCheck), derandomize=True)
+def test_every_light_operation_conforms_to_its_schema(case, generated_requests_services):
+    _conforms(case, generated_requests_services)
+
+
+@pytest.mark.slow
+@heavy.parametrize()
+@settings(max_examples=6, deadline=None, suppress_health_check=list(HealthCheck), derandomize=True)
+def test_every_heavy_operation_conforms_to_its_schema(case, generated_requests_services):
+    _conforms(case, generated_requests_services)
