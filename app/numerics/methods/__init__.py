@@ -13,7 +13,7 @@ adding its class.
 from __future__ import annotations
 
 from app.numerics.errors import SimulationError
-from app.numerics.methods import explicit, scipy_ivp, symplectic
+from app.numerics.methods import explicit, implicit, scipy_ivp, symplectic
 from app.numerics.methods.base import Method, Problem, Trajectory
 from app.numerics.system import NumericSystem
 
@@ -27,7 +27,7 @@ def _concrete(cls: type[Method]) -> list[type[Method]]:
     return found
 
 
-FAMILIES = (explicit, symplectic, scipy_ivp)  # menu order: compiled first, then scipy's
+FAMILIES = (explicit, implicit, symplectic, scipy_ivp)  # menu order: compiled first, then scipy's
 METHODS: dict[str, Method] = {
     cls.name: cls() for family in FAMILIES for cls in _concrete(Method) if cls.__module__ == family.__name__
 }
