@@ -13,7 +13,7 @@ eigenvalues lambda_i and eigenvectors v_i:
   that subspace).  Split into the modes of T22 (T22 w_i = lambda_i w_i,
   d = sum_i c_i w_i), mode i swings component l by |c_i| |(Q [X; I] w_i)_l|.
   When that swing is below the tolerance (atol + rtol |y|) in every component,
-  only the slow motion matters and an implicit method (Radau) steps over the
+  only the slow motion matters and an implicit method (the compiled Radau IIA) steps over the
   fast one.  (The Schur form copes with a defective J, e.g. a cyclic angle
   whose eigenvalue 0 is doubled, where a full eigenvector basis does not exist.)
 * conservative (the engine says E or h is conserved) and either long (more
@@ -161,7 +161,8 @@ def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
         return STIFF, (
             f"stiff: the fastest rate at the start, |λ| = {a.spectral_radius:.3g}/s, is "
             f"{a.spectral_radius / a.slow_rate:.2g} times the slow rate and its mode is not excited "
-            f"(amplitude {a.fast_amplitude:.2g} of the tolerance), so the implicit Radau method steps over it"
+            f"(amplitude {a.fast_amplitude:.2g} of the tolerance), so the implicit Radau IIA method (order 5, compiled, "
+            "with the engine's exact Jacobian) steps over it"
         )
     # symplectic methods step at a fixed size: only where no fast mode (excited, since not stiff) would force
     # that size down over the whole run -- a chain with masses 1e-9 and 1e9 took Yoshida-4 past its step limit
@@ -187,5 +188,5 @@ def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
         excited = f" (the fast mode, |λ| = {a.spectral_radius:.3g}/s, is excited, so it must be resolved)"
     return NONSTIFF, (
         f"non-stiff{excited}: Verner's explicit 8(7) pair with a compiled step loop (the fewest evaluations per "
-        "digit among ours here), which watches for stiffness on the way (and hands over to Radau if it appears)"
+        "digit among ours here), which watches for stiffness on the way (and hands over to the implicit Radau IIA if it appears)"
     )
