@@ -33,3 +33,19 @@ DOUBLE_PENDULUM = System(
     ),
     potential="-m1*g*l1*cos(a) - m2*g*(l1*cos(a) + l2*cos(c))",
 )
+
+# Two decoupled damped oscillators, k/m = 1 (slow) and 1e8 (fast): a linear stiff system whose exact
+# motion is the matrix exponential, y(t) = exp(A t) y0 with A the 4 x 4 first-order matrix.
+TWO_MODES = System(
+    coordinates=("x1", "x2"),
+    parameters=(
+        Parameter("m", 1.0, "kg", 1e-3, 1e3),
+        Parameter("k1", 1.0, "N/m", 1e-3, 1e12),
+        Parameter("k2", 1e8, "N/m", 1e-3, 1e12),
+        Parameter("b1", 0.1, "N s/m", 0.0, 1e6),
+        Parameter("b2", 2e3, "N s/m", 0.0, 1e6),
+    ),
+    kinetic="m*x1_dot**2/2 + m*x2_dot**2/2",
+    potential="k1*x1**2/2 + k2*x2**2/2",
+    forces={"x1": "-b1*x1_dot", "x2": "-b2*x2_dot"},
+)
