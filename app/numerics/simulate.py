@@ -170,6 +170,12 @@ def run(
     estimate = plan.reference is not None
 
     warnings: list[str] = []
+    if analysis.unresolvable and chosen.implicit:
+        warnings.append(
+            f"a fast mode (|λ| = {analysis.spectral_radius:.3g}/s) swings at the start by about "
+            f"{analysis.fast_amplitude:.2g} times the tolerance; the implicit method damps it, so the samples show "
+            "the slow motion without that swing"
+        )
     # compiling (first use in this process, or after a change) happens before the clock starts
     before = time.perf_counter()
     for needed in (chosen, plan.reference):
