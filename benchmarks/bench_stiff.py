@@ -42,9 +42,10 @@ from tests.numerics.systems import LOPSIDED_CHAIN, STIFF_SOFT_CHAIN, TWO_MODES
 
 OURS = STIFF
 SCIPYS = ("Radau", "BDF")
-RTOLS = [10.0 ** (-k / 2) for k in range(6, 21)]
-TARGETS = (1e-5, 1e-7, 1e-9)
+RTOLS = [10.0 ** (-k / 2) for k in range(6, 19)]
+TARGETS = (1e-4, 1e-6, 1e-8)
 REPEATS = 3
+GIVE_UP = 10.0  # seconds for one run
 SAMPLES = 201
 
 
@@ -71,11 +72,20 @@ def cases() -> dict[str, tuple[NumericSystem, np.ndarray, np.ndarray, float]]:
 
 
 def exact(system: NumericSystem, k: np.ndarray, y0: np.ndarray, t: np.ndarray) -> np.ndarray:
-    from scipy.linalg import expm
+    """exp(A t) y0 on the evenly spaced samples t, in 60-digit arithmetic: y_{i+1} = exp(A dt) y_i.  (scipy's
+    expm in double precision was off by 4e-8 at t = 10 s on the chain, whose A holds 1e18 beside 1.)"""
+    import mpmath
 
+    mpmath.mp.dps = 60
     # a linear system: F(y) = A y with A = dF/dy anywhere
-    A = system.jacobian(0.0, y0, k)
-    return np.array([expm(A * ti) @ y0 for ti in t])
+    A = mpmath.matrix(system.jacobian(0.0, y0, k).tolist())
+    step = mpmath.expm(A * mpmath.mpf(float(t[1] - t[0])))
+    y = mpmath.matrix(y0.tolist())
+    out = [y0.copy()]
+    for _ in t[1:]:
+        y = step * y
+        out.append(np.array([float(v) for v in y]))
+    return np.array(out)
 
 
 def time_at(points: list[tuple[float, float]], target: float) -> float:
@@ -105,7 +115,7 @@ def work_precision() -> None:
                 for _ in range(REPEATS):
                     problem = Problem(
                         system, k, y0, t, rtol, np.full(y0.size, rtol * 1e-3), np.full(y0.size, 1e12),
-                        time.perf_counter() + 30.0, 10**7,
+                        time.perf_counter() + GIVE_UP, 10**7,
                     )  # fmt: skip
                     try:
                         trajectory = METHODS[name].integrate(problem)
@@ -114,7 +124,7 @@ def work_precision() -> None:
                         break
                     best = min(best, trajectory.wall_time_s)
                 if trajectory is None or not trajectory.complete:
-                    print(f"  {name:16} {rtol:8.1e} did not finish in 30 s")
+                    print(f"  {name:16} {rtol:8.1e} did not finish in {GIVE_UP:g} s")
                     break
                 error = float((np.abs(trajectory.y[:, : system.n] - truth[:, : system.n]) / scale).max())
                 curve.append((error, best))

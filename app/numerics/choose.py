@@ -54,13 +54,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from app import late
+from app.numerics import limits
 from app.numerics.methods import NONSTIFF, STIFF, symplectic_for
 from app.numerics.system import NumericSystem
 
 STIFF_RATIO = 1.0e3
 EXPLICIT_STABILITY = 5.864  # |R(-x)| = 1 for Vern8 at x = 5.864 (app/numerics/kernels/vern8.py)
-# a tenth of the compiled step limit: about 0.5 s of Vern8 on a small system, a few seconds under load
-RESOLVABLE_STEPS = 2.0e6
+# beyond the compiled step limit an explicit run is refused: only the implicit method can finish then
+RESOLVABLE_STEPS = float(limits.COMPILED_STEPS)
 LONG_RUN = 1.0e3  # characteristic times
 SADDLE_SPEED = 1.0e-2
 

@@ -193,13 +193,18 @@ def run(
     try:
         trajectory = chosen.integrate(problem, **options)
     except TooMuchWork as exc:
-        if plan.requested != AUTO or not isinstance(chosen, FixedStep):
+        if plan.requested != AUTO:
             raise
-        # auto never refuses what another method can do: its symplectic pick past its step limit
-        # hands the run to the adaptive default in what is left of the deadline
-        instead = plan.instead_of_symplectic(_why(exc))
-        return run(instead, max(deadline - time.perf_counter(), 0.0), events=events, elsewhere=elsewhere,
-                   alongside=alongside)  # fmt: skip
+        if isinstance(chosen, FixedStep):
+            # auto never refuses what another method can do: its symplectic pick past its step limit
+            # hands the run to the adaptive default in what is left of the deadline
+            instead = plan.instead_of_symplectic(_why(exc))
+            return run(instead, max(deadline - time.perf_counter(), 0.0), events=events, elsewhere=elsewhere,
+                       alongside=alongside)  # fmt: skip
+        if exc.partial is None:
+            raise
+        # auto's adaptive run out of budget: it answers with the samples it reached, saying how far it got
+        trajectory = exc.partial
     finally:
         CORES.give()
     if trajectory.stiff_detected and not trajectory.complete and options:

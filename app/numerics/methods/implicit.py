@@ -14,7 +14,8 @@ from typing import Any
 
 import numpy as np
 
-from app.numerics.methods.base import Method, Problem, Trajectory, drive, finished
+from app.numerics.errors import TooMuchWork
+from app.numerics.methods.base import Method, Problem, Trajectory, cut_short, drive, finished
 from app.numerics.system import NumericSystem
 
 
@@ -53,12 +54,16 @@ class CompiledRadau(Method):
         Q = np.zeros((4, m))
         args = (problem.k, problem.t, problem.rtol, problem.atol, problem.bound)
 
-        status = drive(
-            lambda chunk: kernel.run(rhs, jac, int(has_jac), *args, chunk, y, fy, st, Y, J, Q),
-            lambda: st[kernel.STEPS],
-            problem,
-            self,
-        )
+        try:
+            status = drive(
+                lambda chunk: kernel.run(rhs, jac, int(has_jac), *args, chunk, y, fy, st, Y, J, Q),
+                lambda: st[kernel.STEPS],
+                problem,
+                self,
+            )
+        except TooMuchWork as exc:
+            stats = {"steps": int(st[kernel.STEPS]), "rhs_evaluations": int(st[kernel.NFEV])}
+            raise cut_short(exc, self, problem, Y, int(st[kernel.NEXT_OUT]), **stats) from None
         trajectory = finished(
             self,
             problem,
