@@ -19,8 +19,8 @@ import mpmath
 import numpy as np
 
 from app.engine.derive import derive
-from app.numerics.methods import STIFF as STIFF_METHOD
 from app.numerics.exact import constant_acceleration, constant_accelerations, pendulum
+from app.numerics.methods import STIFF as STIFF_METHOD
 from app.numerics.observables import build, summarize
 from app.numerics.simulate import Outcome, simulate
 from app.numerics.system import NumericSystem, numeric_system
