@@ -13,7 +13,7 @@ eigenvalues lambda_i and eigenvectors v_i:
   that subspace).  Split into the modes of T22 (T22 w_i = lambda_i w_i,
   d = sum_i c_i w_i), mode i swings component l by |c_i| |(Q [X; I] w_i)_l|.
   When that swing is below the tolerance (atol + rtol |y|) in every component,
-  only the slow motion matters and an implicit method (Radau) steps over the
+  only the slow motion matters and an implicit method (the compiled Radau IIA) steps over the
   fast one.  (The Schur form copes with a defective J, e.g. a cyclic angle
   whose eigenvalue 0 is doubled, where a full eigenvector basis does not exist.)
 * conservative (the engine says E or h is conserved) and either long (more
@@ -35,7 +35,14 @@ eigenvalues lambda_i and eigenvectors v_i:
   conserved, drifted 2.5e-6 of itself (DOP853: 7e-8), within the error.
 
 A stiff problem whose fast mode *is* excited must resolve that mode whatever
-the method, so it is treated as non-stiff (explicit or symplectic).
+the method, so it is treated as non-stiff (explicit or symplectic) -- as long as
+resolving it fits in the budget: an explicit step is held at h |lambda|_max <=
+``EXPLICIT_STABILITY`` (Vern8's stability boundary, about 5.9), so the run needs
+about |lambda|_max t_end / 5.9 steps.  Beyond ``RESOLVABLE_STEPS`` no explicit or
+symplectic run could finish (the chain of masses 1e-9 and 1e9 kg on springs of
+1e9 N/m: |lambda| = 1.4e9/s, 2.4e9 steps over 10 s), and auto runs the implicit
+method anyway, which damps the fast swing and follows the slow motion; the reason
+and a warning say how large the swing it leaves out was.
 """
 
 from __future__ import annotations
@@ -47,10 +54,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from app import late
+from app.numerics import limits
 from app.numerics.methods import NONSTIFF, STIFF, symplectic_for
 from app.numerics.system import NumericSystem
 
 STIFF_RATIO = 1.0e3
+EXPLICIT_STABILITY = 5.864  # |R(-x)| = 1 for Vern8 at x = 5.864 (app/numerics/kernels/vern8.py)
+# beyond the compiled step limit an explicit run is refused: only the implicit method can finish then
+RESOLVABLE_STEPS = float(limits.COMPILED_STEPS)
 LONG_RUN = 1.0e3  # characteristic times
 SADDLE_SPEED = 1.0e-2
 
@@ -65,6 +76,8 @@ class Analysis:
     near_saddle: bool = False
     # |λ|max over the largest smaller nonzero |λ| of J (1 when the spectrum has one size): a fast mode's lead
     mode_gap: float = 1.0
+    # an excited fast mode too fast to resolve in the budget (then ``stiff`` too: the implicit method damps it)
+    unresolvable: bool = False
 
     def as_dict(self) -> dict[str, float | bool]:
         return {
@@ -142,7 +155,10 @@ def analyse(
             fast_amplitude = float(np.max(fast_swing(J, F, rho / 10.0) / (atol + rtol * np.abs(y0))))
         except (ValueError, np.linalg.LinAlgError):
             fast_amplitude = math.inf
-    stiff = bool(rho > STIFF_RATIO * slow_rate and fast_amplitude <= 1.0)
+    gap_over_slow = rho > STIFF_RATIO * slow_rate
+    # excited, but an explicit run would need more than RESOLVABLE_STEPS steps at its stability limit
+    unresolvable = bool(gap_over_slow and fast_amplitude > 1.0 and rho * t_end / EXPLICIT_STABILITY > RESOLVABLE_STEPS)
+    stiff = bool(gap_over_slow and fast_amplitude <= 1.0) or unresolvable
     # real eigenvalues lambda > 0: a saddle; the motion creeps when |F| < SADDLE_SPEED lambda max(|y0|, 1)
     unstable = [re for size, re, im in pairs if re > 0 and abs(im) <= 1e-8 * size]
     creeping = bool(unstable) and math.sqrt(float(F @ F)) < SADDLE_SPEED * max(unstable) * max(
@@ -151,17 +167,29 @@ def analyse(
     # the fast modes' lead over the slower modes of the spectrum itself (not over 1 / t_end)
     slower = [size for size, _, _ in pairs if 1e-12 * rho < size < rho / 10.0]
     gap = rho / max(slower) if slower else 1.0
-    return Analysis(rho, slow_rate, fast_amplitude, stiff, rho * t_end / (2 * math.pi), bool(creeping), gap)
+    return Analysis(
+        rho, slow_rate, fast_amplitude, stiff, rho * t_end / (2 * math.pi), bool(creeping), gap, unresolvable
+    )
 
 
 def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
     """The method ``auto`` runs, and the reason in one sentence."""
     a = analysis
+    if a.unresolvable:
+        return STIFF, (
+            f"stiff: the fastest rate at the start, |λ| = {a.spectral_radius:.3g}/s, is "
+            f"{a.spectral_radius / a.slow_rate:.2g} times the slow rate; its mode is excited (amplitude "
+            f"{a.fast_amplitude:.2g} of the tolerance), but resolving it would take an explicit method about "
+            f"{a.characteristic_times * 2 * math.pi / EXPLICIT_STABILITY:.2g} "
+            "steps, far beyond the budget, so the implicit Radau IIA method (order 5, compiled, with the engine's exact "
+            "Jacobian) follows the slow motion and damps that fast swing"
+        )
     if a.stiff:
         return STIFF, (
             f"stiff: the fastest rate at the start, |λ| = {a.spectral_radius:.3g}/s, is "
             f"{a.spectral_radius / a.slow_rate:.2g} times the slow rate and its mode is not excited "
-            f"(amplitude {a.fast_amplitude:.2g} of the tolerance), so the implicit Radau method steps over it"
+            f"(amplitude {a.fast_amplitude:.2g} of the tolerance), so the implicit Radau IIA method (order 5, compiled, "
+            "with the engine's exact Jacobian) steps over it"
         )
     # symplectic methods step at a fixed size: only where no fast mode (excited, since not stiff) would force
     # that size down over the whole run -- a chain with masses 1e-9 and 1e9 took Yoshida-4 past its step limit
@@ -187,5 +215,5 @@ def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
         excited = f" (the fast mode, |λ| = {a.spectral_radius:.3g}/s, is excited, so it must be resolved)"
     return NONSTIFF, (
         f"non-stiff{excited}: Verner's explicit 8(7) pair with a compiled step loop (the fewest evaluations per "
-        "digit among ours here), which watches for stiffness on the way (and hands over to Radau if it appears)"
+        "digit among ours here), which watches for stiffness on the way (and hands over to the implicit Radau IIA if it appears)"
     )

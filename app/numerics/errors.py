@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from app import errors
 from app.engine.errors import DerivationError
 
@@ -15,4 +17,10 @@ class SimulationError(DerivationError):
 
 
 class TooMuchWork(SimulationError, errors.TooMuchWork):
-    """The run would exceed (or did exceed) its step or wall-clock budget."""
+    """The run would exceed (or did exceed) its step or wall-clock budget.
+
+    ``partial``: the samples the run had reached when it stopped (a ``Trajectory``, incomplete, saying how
+    far it got), when the method keeps them; ``auto`` answers with them instead of refusing."""
+
+    partial: Any = None
+    what: str = ""  # what ran out, e.g. "the wall-clock budget ran out" (set by ``Method.too_much``)

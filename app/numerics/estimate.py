@@ -3,7 +3,7 @@
     error_estimate = max over samples and coordinates of |q_run(t) - q_ref(t)| * factor
 
 * adaptive methods: the reference is the compiled ``REFERENCE`` pair (scipy's DOP853 while the
-  kernels compile; Radau when the problem is stiff) at a thousand times tighter tolerances (for Radau, rtol
+  kernels compile; when the problem is stiff, the compiled Radau IIA, scipy's Radau while it compiles) at a thousand times tighter tolerances (for Radau, rtol
   only), factor 1.  With
   errors roughly proportional to the tolerance the reference's own error is
   about 1/1000 of the run's, so the difference is the run's error.
@@ -32,7 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from app.numerics.methods import FALLBACK, REFERENCE, STIFF, Problem, Trajectory
+from app.numerics.methods import FALLBACK, FALLBACK_STIFF, REFERENCE, STIFF, Problem, Trajectory
 
 TIGHTER = 1.0e-3
 # The estimate's safety factor: the reported value is SAFETY times the measured difference (a bound).
@@ -53,8 +53,10 @@ class Estimate:
 
 def reference_name(stiff: bool, compiled: bool = True) -> str:
     """The method of an adaptive run's reference: the stiff method for a stiff problem, else the compiled
-    reference, or scipy's fallback while the kernels are not compiled (``compiled=False``)."""
-    return STIFF if stiff else (REFERENCE if compiled else FALLBACK)
+    reference; scipy's fallbacks while the kernels are not compiled (``compiled=False``)."""
+    if stiff:
+        return STIFF if compiled else FALLBACK_STIFF
+    return REFERENCE if compiled else FALLBACK
 
 
 def reference_problem(problem: Problem, stiff: bool, compiled: bool = True) -> tuple[str, Problem]:

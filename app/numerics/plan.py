@@ -4,10 +4,10 @@ Deciding comes before running, so whoever runs the plan can look at the
 concrete methods: ``auto`` resolved (``choose``), the scipy fallback taken
 while the compiled code is not ready, the reference named.  The service takes
 its "one Python step loop at a time" throttle from ``Plan.python_loop``, which
-is right whatever was asked for (``auto`` choosing Radau is a Python loop).
+is right whatever was asked for (``auto`` choosing a scipy method is a Python loop).
 
 Only a run that meets stiffness on the way (``auto``'s explicit method hands
-over to Radau) changes method after planning: ``Plan.handed_over`` is the plan
+over to the compiled Radau IIA) changes method after planning: ``Plan.handed_over`` is the plan
 it continues with, and ``app.numerics.simulate`` asks for the throttle then.
 
 A plan travels to a worker process by ``portable`` (everything but the system,
@@ -22,10 +22,11 @@ from typing import Any
 
 import numpy as np
 
+from app.numerics import jit
 from app.numerics.choose import Analysis, analyse, choose
 from app.numerics.errors import SimulationError
 from app.numerics.estimate import reference_name
-from app.numerics.methods import AUTO, FALLBACK, METHODS, NONSTIFF, STIFF, Method, method
+from app.numerics.methods import AUTO, FALLBACK, FALLBACK_STIFF, METHODS, NONSTIFF, STIFF, Method, method
 from app.numerics.methods.symplectic import FixedStep
 from app.numerics.system import NumericSystem
 
@@ -46,6 +47,7 @@ class Plan:
     path: str  # "compiled", "scipy" (a scipy method asked for or chosen), "scipy-fallback"
     reference: Method | None  # the error estimate's reference run, None without an estimate
     stiff: bool = False  # estimated as a stiff problem (the reference keeps atol); True after a hand-over
+    wait_for_compile: bool = True  # False (a server): a hand-over takes scipy's Radau while the kernel compiles
 
     @property
     def name(self) -> str:
@@ -64,14 +66,19 @@ class Plan:
     def handed_over(self, t: float) -> Plan:
         """The plan after ``auto``'s explicit run met stiffness at ``t``: the whole run redone with the
         implicit method, estimated as a stiff problem (its reference is the stiff method, tighter)."""
+        stiff = METHODS[STIFF]
+        if not self.wait_for_compile and not jit.ready(stiff.kernel_module):
+            stiff = METHODS[FALLBACK_STIFF]  # the kernel is still compiling (about a minute from an empty cache)
         reason = (
             f"{self.reason}; but {self.name} detected stiffness at t = {t:.4g} s (step size held at its "
-            f"stability limit), so the run was redone with the implicit {STIFF} method"
+            f"stability limit), so the run was redone with the implicit {stiff.name} method"
         )
-        reference = METHODS[reference_name(stiff=True)] if self.reference is not None else None
+        reference = (
+            METHODS[reference_name(stiff=True, compiled=stiff.compiled)] if self.reference is not None else None
+        )
         # the path says what ran: scipy's Radau steps in Python, never "compiled"
-        path = "compiled" if METHODS[STIFF].compiled else "scipy"
-        return replace(self, method=METHODS[STIFF], reason=reason, reference=reference, stiff=True, path=path)
+        path = "compiled" if stiff.compiled else "scipy"
+        return replace(self, method=stiff, reason=reason, reference=reference, stiff=True, path=path)
 
     def instead_of_symplectic(self, why: str) -> Plan:
         """The plan after ``auto``'s symplectic pick could not finish (its step limit): Verner's adaptive
@@ -135,14 +142,30 @@ def plan(
         and not wait_for_compile
         and not (is_ready(chosen, system) and (reference is None or is_ready(reference, system)))
     ):
+        # the same kind of method as the pick: an explicit pair on a stiff problem would crawl
+        fallback = FALLBACK_STIFF if analysis.stiff else FALLBACK
         reason = (
-            f"scipy's {FALLBACK} (Python step loop) answered, because the compiled code that auto picks here is "
+            f"scipy's {fallback} (Python step loop) answered, because the compiled code that auto picks here is "
             f"still being compiled in the background; once it is ready auto runs {name}: {reason}"
         )
-        chosen, path = METHODS[FALLBACK], "scipy-fallback"
+        chosen, path = METHODS[fallback], "scipy-fallback"
         reference = _reference(chosen, analysis.stiff, compiled=False) if estimate else None
     return Plan(
-        system, k, y0, t_end, samples, rtol, atol, requested, chosen, reason, analysis, path, reference, analysis.stiff
+        system,
+        k,
+        y0,
+        t_end,
+        samples,
+        rtol,
+        atol,
+        requested,
+        chosen,
+        reason,
+        analysis,
+        path,
+        reference,
+        analysis.stiff,
+        wait_for_compile,
     )
 
 

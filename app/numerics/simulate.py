@@ -1,7 +1,7 @@
 """One simulation: plan it (``app.numerics.plan``), run it under the budget, estimate its global error.
 
 Order of work: the plan (analyse the start, choose, name the reference), run the
-method (switching to Radau if ``auto``'s explicit method meets stiffness on the way),
+method (switching to the compiled Radau IIA if ``auto``'s explicit method meets stiffness on the way),
 run the reference for the error estimate, compare.  Everything shares one
 deadline.  The main run exceeding it is an error (too much work); the
 reference exceeding it only costs the estimate, with a warning.
@@ -150,7 +150,7 @@ def run(
     alongside: Callable[[Trajectory], Any] | None = None,
 ) -> Outcome:
     """Run a plan under one deadline.  ``python_loop()`` is entered around a Python step loop the plan did not
-    foresee (the stiff hand-over to Radau); the caller holds it already when ``plan.python_loop``.
+    foresee (the stiff hand-over to scipy's Radau while the compiled one is not ready); the caller holds it already when ``plan.python_loop``.
 
     ``elsewhere(plan, wall_seconds)``, when given, runs a plan that steps in Python (a scipy method, as
     asked for or chosen, or after the hand-over) in another process and returns its outcome: a server
@@ -170,6 +170,12 @@ def run(
     estimate = plan.reference is not None
 
     warnings: list[str] = []
+    if analysis.unresolvable and chosen.implicit:
+        warnings.append(
+            f"a fast mode (|λ| = {analysis.spectral_radius:.3g}/s) swings at the start by about "
+            f"{analysis.fast_amplitude:.2g} times the tolerance; the implicit method damps it, so the samples show "
+            "the slow motion without that swing"
+        )
     # compiling (first use in this process, or after a change) happens before the clock starts
     before = time.perf_counter()
     for needed in (chosen, plan.reference):
@@ -187,20 +193,25 @@ def run(
     try:
         trajectory = chosen.integrate(problem, **options)
     except TooMuchWork as exc:
-        if plan.requested != AUTO or not isinstance(chosen, FixedStep):
+        if plan.requested != AUTO:
             raise
-        # auto never refuses what another method can do: its symplectic pick past its step limit
-        # hands the run to the adaptive default in what is left of the deadline
-        instead = plan.instead_of_symplectic(_why(exc))
-        return run(instead, max(deadline - time.perf_counter(), 0.0), events=events, elsewhere=elsewhere,
-                   alongside=alongside)  # fmt: skip
+        if isinstance(chosen, FixedStep):
+            # auto never refuses what another method can do: its symplectic pick past its step limit
+            # hands the run to the adaptive default in what is left of the deadline
+            instead = plan.instead_of_symplectic(_why(exc))
+            return run(instead, max(deadline - time.perf_counter(), 0.0), events=events, elsewhere=elsewhere,
+                       alongside=alongside)  # fmt: skip
+        if exc.partial is None:
+            raise
+        # auto's adaptive run out of budget: it answers with the samples it reached, saying how far it got
+        trajectory = exc.partial
     finally:
         CORES.give()
     if trajectory.stiff_detected and not trajectory.complete and options:
-        # the explicit run found h |lambda| at its stability limit for 15 steps in a row: redo it with Radau
+        # the explicit run found h |lambda| at its stability limit for 15 steps in a row: redo it with Radau IIA
         # in what is left of the deadline (the reference started beside it is dropped)
         handed = plan.handed_over(trajectory.t_reached)
-        with python_loop():
+        with python_loop() if handed.python_loop else nullcontext():
             outcome = run(
                 handed, max(deadline - time.perf_counter(), 0.0), events=events, elsewhere=elsewhere,
                 alongside=alongside,

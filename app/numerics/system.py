@@ -35,6 +35,7 @@ class NumericSystem:
     key: str
     periodic: tuple[bool, ...] = ()  # coordinates that are angles: F(q + 2 pi e_i) = F(q)
     _compiled: ModuleType | None = field(default=None, repr=False)
+    _compiled_jacobian: ModuleType | None = field(default=None, repr=False)
     _lock: threading.Lock = field(default_factory=threading.Lock, repr=False)
     _bound: dict = field(default_factory=dict, repr=False)
 
@@ -65,15 +66,41 @@ class NumericSystem:
                 self._compiled = jit.compiled_functions(self._compiled_sources())
             return self._compiled
 
+    @property
+    def has_jacobian(self) -> bool:
+        """True when the engine's Jacobian dF/dy is generated (q_ddot compact enough to differentiate)."""
+        return "jac" in self.sources
+
+    @cached_property
+    def jacobian_key(self) -> str:
+        return jit.source_key(jit.compiled_source({"jac": self.sources["jac"]})) if self.has_jacobian else ""
+
+    def is_jacobian_compiled(self) -> bool:
+        """True when ``compiled_jacobian()`` would return at once (or there is no Jacobian to compile)."""
+        return not self.has_jacobian or jit.ready(self.jacobian_key)
+
+    def compiled_jacobian(self) -> ModuleType | None:
+        """The numba module with ``jac`` (a module of its own: only the implicit methods need it, and the
+        Jacobian's source is several times the right-hand side's); None when no Jacobian is generated."""
+        if not self.has_jacobian:
+            return None
+        with self._lock:
+            if self._compiled_jacobian is None:
+                self._compiled_jacobian = jit.compiled_functions({"jac": self.sources["jac"]})
+            return self._compiled_jacobian
+
     def bound(self, name: str) -> Bound:
-        """``rhs`` or ``ham`` compiled, ready to hand to a kernel (the address looked up once per system)."""
+        """``rhs``, ``ham`` or ``jac`` compiled, ready to hand to a kernel (the address looked up once per system)."""
         with self._lock:
             found = self._bound.get(name)
         if found is None:
             from app.numerics.bound import Bound
             from app.numerics.kernels.common import RHS_SIG
 
-            found = Bound(getattr(self.compiled(), name), RHS_SIG)
+            module = self.compiled_jacobian() if name == "jac" else self.compiled()
+            if module is None:
+                raise KeyError(f"no generated {name} for this system")
+            found = Bound(getattr(module, name), RHS_SIG)
             with self._lock:
                 self._bound[name] = found
         return found

@@ -33,3 +33,50 @@ DOUBLE_PENDULUM = System(
     ),
     potential="-m1*g*l1*cos(a) - m2*g*(l1*cos(a) + l2*cos(c))",
 )
+
+# Two decoupled damped oscillators, k/m = 1 (slow) and 1e8 (fast): a linear stiff system whose exact
+# motion is the matrix exponential, y(t) = exp(A t) y0 with A the 4 x 4 first-order matrix.
+TWO_MODES = System(
+    coordinates=("x1", "x2"),
+    parameters=(
+        Parameter("m", 1.0, "kg", 1e-3, 1e3),
+        Parameter("k1", 1.0, "N/m", 1e-3, 1e12),
+        Parameter("k2", 1e8, "N/m", 1e-3, 1e12),
+        Parameter("b1", 0.1, "N s/m", 0.0, 1e6),
+        Parameter("b2", 2e3, "N s/m", 0.0, 1e6),
+    ),
+    kinetic="m*x1_dot**2/2 + m*x2_dot**2/2",
+    potential="k1*x1**2/2 + k2*x2**2/2",
+    forces={"x1": "-b1*x1_dot", "x2": "-b2*x2_dot"},
+)
+
+
+# The stiff user systems of issue 47, as a request to POST /api/simulate declares them (auto refused both
+# with scipy's Radau under load): their fast modes start quiet, so auto steps over them.
+LOPSIDED_CHAIN = {  # wall - spring - 1e-9 kg - spring - 1e9 kg - spring - wall, springs of 1e9 N/m
+    # (the heavy mass swings at about 1.2 rad/s, the light one would at 1.4e9 rad/s)
+    "coordinates": ["x1", "x2"],
+    "parameters": [
+        {"name": "m1", "value": 1e-9, "min": 1e-12},
+        {"name": "m2", "value": 1e9, "min": 1e-12},
+        {"name": "k", "value": 1e9, "min": 1e-3},
+    ],
+    "kinetic": "m1*x1_dot**2/2 + m2*x2_dot**2/2",
+    "potential": "k*x1**2/2 + k*(x2 - x1)**2/2 + k*x2**2/2",
+    # the light mass where the springs balance it (k x1 = k (x2 - x1)), both at rest
+    "initial": {"x1": 0.5, "x2": 1.0, "x1_dot": 0.0, "x2_dot": 0.0},
+    "t_end": 10.0,
+}
+STIFF_SOFT_CHAIN = {  # wall - stiff spring (1e8) - 1 kg - soft spring (1) - 1 kg
+    "coordinates": ["x1", "x2"],
+    "parameters": [
+        {"name": "m", "value": 1.0, "min": 1e-3},
+        {"name": "k1", "value": 1e8, "min": 1e-3},
+        {"name": "k2", "value": 1.0, "min": 1e-3},
+    ],
+    "kinetic": "m*x1_dot**2/2 + m*x2_dot**2/2",
+    "potential": "k1*x1**2/2 + k2*(x2 - x1)**2/2",
+    # x1 where the springs balance (k1 x1 = k2 (x2 - x1)): the stiff mode at rest
+    "initial": {"x1": 1.0 / (1e8 + 1.0), "x2": 1.0, "x1_dot": 0.0, "x2_dot": 0.0},
+    "t_end": 5.0,
+}

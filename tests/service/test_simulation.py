@@ -267,38 +267,40 @@ def test_series_made_while_the_reference_runs_are_those_of_the_final_trajectory(
     }
 
 
-def test_auto_choosing_radau_waits_for_the_python_loop_slot():
-    """The throttle looks at the planned method: auto resolving to Radau (a stiff start) is a Python step
-    loop, so it is refused as busy while another scipy run holds the one slot, and runs once it is free."""
+def test_auto_choosing_the_compiled_radau_does_not_wait_for_the_python_loop_slot():
+    """The throttle looks at the planned method: auto resolving to the compiled Radau IIA (a stiff start)
+    steps in numba, so it runs while another scipy run holds the one Python-loop slot; scipy's Radau asked
+    for by name is refused as busy meanwhile."""
     from app.engine.derive import derive
     from app.errors import OverCapacity
+    from app.numerics.methods import STIFF
     from tests.numerics.extreme_cases import circular_radius
     from tests.numerics.systems import STIFF_SPRING
 
     d = derive(STIFF_SPRING)
-    quiet = request(initial={"r": circular_radius(1e6, 1.0, 1.0), "theta_dot": 1.0}, t_end=1.0, rtol=1e-6, atol=1e-8)
-    # (a script's gates compile in line: a server still compiling would answer the compiled run from scipy too)
-    gates = simulation.Gates(wall_seconds=0.2)
+    initial = {"r": circular_radius(1e6, 1.0, 1.0), "theta_dot": 1.0}
+    quiet = request(initial=initial, t_end=1.0, rtol=1e-6, atol=1e-8)
+    # (a script's gates compile in line: a server still compiling would answer from scipy's Radau)
+    gates = simulation.Gates(wall_seconds=2.0)
     assert gates.python.acquire(timeout=1.0)  # another scipy run is in progress
     try:
+        doc = simulation.simulate_derivation(d, quiet, gates=gates)
+        assert doc["stats"]["method"] == STIFF and doc["stats"]["path"] == "compiled"
+        assert doc["stats"]["reason"].startswith("stiff")
+        by_name = request(initial=initial, t_end=1.0, rtol=1e-6, atol=1e-8, method="Radau")
         with pytest.raises(OverCapacity, match="Python step loop"):
-            simulation.simulate_derivation(d, quiet, gates=gates)
-        # a compiled run (auto on a non-stiff start of the same system) does not wait for that slot
-        excited = simulation.simulate_derivation(
-            d, request(initial={"r": 1.001, "theta_dot": 1.0}, t_end=0.01), gates=gates
-        )
-        assert excited["stats"]["method"] != "Radau" and excited["stats"]["path"] == "compiled"
+            simulation.simulate_derivation(d, by_name, gates=gates)
     finally:
         gates.python.release()
-    doc = simulation.simulate_derivation(d, quiet, gates=gates)
-    assert doc["stats"]["method"] == "Radau" and doc["stats"]["reason"].startswith("stiff")
 
 
-def test_auto_stiff_handover_takes_the_python_loop_slot(monkeypatch):
-    """A run that meets stiffness on the way and is redone with Radau asks for the slot then (without an
-    estimate here, so that nothing else in the plan is a Python loop)."""
+def test_auto_stiff_handover_takes_the_python_loop_slot_only_for_scipy(monkeypatch):
+    """A run that meets stiffness on the way is redone with the compiled Radau IIA without the Python-loop
+    slot; a server still compiling that kernel hands over to scipy's Radau, which asks for the slot then
+    (without an estimate here, so that nothing else in the plan is a Python loop)."""
+    from app.numerics import jit
     from app.numerics import plan as plan_module
-    from app.numerics.methods import NONSTIFF
+    from app.numerics.methods import FALLBACK_STIFF, METHODS, NONSTIFF, STIFF
     from app.numerics.simulate import run
     from tests.numerics.extreme_cases import circular_radius, system_for
 
@@ -306,8 +308,6 @@ def test_auto_stiff_handover_takes_the_python_loop_slot(monkeypatch):
     k = np.array([1.0, 1e6, 1.0])
     y0 = np.array([circular_radius(1e6, 1.0, 1.0) * (1 + 1e-9), 0.0, 0.0, 1.0])
     monkeypatch.setattr(plan_module, "choose", lambda system, analysis: (NONSTIFF, "forced for the test"))
-    planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4, estimate=False)
-    assert not planned.python_loop
     entered = []
 
     @contextmanager
@@ -315,8 +315,15 @@ def test_auto_stiff_handover_takes_the_python_loop_slot(monkeypatch):
         entered.append(True)
         yield
 
+    planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4, estimate=False)
+    assert not planned.python_loop
     outcome = run(planned, python_loop=spy)
-    assert outcome.method == "Radau" and entered == [True]
+    assert outcome.method == STIFF and "detected stiffness" in outcome.reason and entered == []
+    serving = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4, estimate=False, wait_for_compile=False)
+    ready = jit.ready
+    monkeypatch.setattr(jit, "ready", lambda name: name != METHODS[STIFF].kernel_module and ready(name))
+    outcome = run(serving, python_loop=spy)
+    assert outcome.method == FALLBACK_STIFF and entered == [True]
 
 
 def _same_document(a, b):
@@ -369,12 +376,14 @@ def test_a_compiled_run_stays_in_the_web_process():
 
 
 def test_the_stiff_hand_over_is_run_elsewhere_as_a_stiff_plan(monkeypatch):
-    """The plan a run hands over to Radau travels (``portable``, pickled) and is rebuilt on the system;
-    its outcome, pickled back, is what the run in line gives."""
+    """The plan a run hands over to scipy's Radau (a server still compiling the compiled one) travels
+    (``portable``, pickled) and is rebuilt on the system; its outcome, pickled back, is what the run in
+    line gives.  A hand-over to the compiled Radau IIA stays in line."""
     import pickle
 
+    from app.numerics import jit
     from app.numerics import plan as plan_module
-    from app.numerics.methods import NONSTIFF
+    from app.numerics.methods import FALLBACK_STIFF, METHODS, NONSTIFF, STIFF
     from app.numerics.plan import Plan
     from app.numerics.simulate import run
     from tests.numerics.extreme_cases import circular_radius, system_for
@@ -390,17 +399,16 @@ def test_the_stiff_hand_over_is_run_elsewhere_as_a_stiff_plan(monkeypatch):
         rebuilt = Plan.rebuilt(s, pickle.loads(pickle.dumps(handed.portable())))
         return pickle.loads(pickle.dumps(run(rebuilt, wall_seconds)))
 
-    # without an estimate the explicit run is compiled and stays; what it hands over goes
-    planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4, estimate=False)
+    planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4)
+    away = run(planned, elsewhere=elsewhere)
+    assert sent == [] and away.method == STIFF and away.path == "compiled"
+    # a server still compiling the Radau kernel: the explicit run is compiled and stays, what it hands over goes
+    ready = jit.ready
+    monkeypatch.setattr(jit, "ready", lambda name: name != METHODS[STIFF].kernel_module and ready(name))
+    planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4, estimate=False, wait_for_compile=False)
+    assert planned.path == "compiled"  # Vern8 loaded by the run above
     away, here = run(planned, elsewhere=elsewhere), run(planned)
-    assert [p.name for p in sent] == ["Radau"] and sent[0].stiff and sent[0].python_loop
-    assert away.method == here.method == "Radau" and "detected stiffness" in away.reason
+    assert [p.name for p in sent] == [FALLBACK_STIFF] and sent[0].stiff and sent[0].python_loop
+    assert away.method == here.method == FALLBACK_STIFF and "detected stiffness" in away.reason
     assert away.reason == here.reason
     np.testing.assert_array_equal(away.trajectory.y, here.trajectory.y)
-    # with one, the reference of a stiff start is Radau: the whole plan goes, and hands over there
-    sent.clear()
-    planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4)
-    away, here = run(planned, elsewhere=elsewhere), run(planned)
-    assert [(p.name, p.reference.name) for p in sent] == [(NONSTIFF, "Radau")]
-    assert away.method == here.method == "Radau" and away.reason == here.reason
-    assert away.estimate.value == here.estimate.value and away.estimate.reference == here.estimate.reference

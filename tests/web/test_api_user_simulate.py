@@ -2,11 +2,14 @@
 
 import math
 
+import numpy as np
 import pytest
 import sympy as sp
 
+from app.numerics.methods import STIFF
 from app.web import examples_user
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SIMULATE_EXAMPLES, SIMULATE_REFUSED
+from tests.numerics.systems import LOPSIDED_CHAIN, STIFF_SOFT_CHAIN
 
 
 def simulate(client, body):
@@ -102,3 +105,28 @@ def test_hostile_expressions_are_refused_before_simulating(client):
     body = {**DOUBLE_PENDULUM, "potential": "__import__('os').system('true')", "initial": {"theta1": 1.0}}
     response = client.post("/api/simulate", json=body)
     assert response.status_code == 422 and response.json()["loc"] == ["body", "potential"]
+
+
+@pytest.mark.parametrize("body", [LOPSIDED_CHAIN, STIFF_SOFT_CHAIN], ids=["masses 1e-9 and 1e9", "stiff-soft chain"])
+def test_auto_runs_the_stiff_chains_with_the_compiled_radau(client, body):
+    """Issue 47: both were refused (out of time); auto now steps over the fast mode with the compiled Radau IIA,
+    the whole run, with an error estimate from the same method.  The light mass of the lopsided chain cannot
+    start quiet to the last digit (its acceleration must be -0.75 m/s^2 at once, x1 0.5 + 4e-19 m): the fast
+    velocity swings by 5e-10 m/s, five times atol, which no explicit method could follow for 10 s (2.4e9
+    steps), so auto says that the implicit method damps it."""
+    result = simulate(client, {**body, "samples": 201})
+    stats = result["stats"]
+    assert stats["method"] == STIFF and stats["path"] == "compiled", stats["reason"]
+    assert stats["reason"].startswith("stiff") and stats["t_end_reached"] == body["t_end"]
+    assert stats["error_estimate"] is not None and STIFF in stats["error_reference"]
+    assert stats["steps"] < 1000
+    if body is LOPSIDED_CHAIN:
+        assert "beyond the budget" in stats["reason"]
+        assert len(stats["warnings"]) == 1 and "damps it" in stats["warnings"][0]
+    else:
+        assert not stats["warnings"]
+    # the slow motion: x2 follows its own oscillator, x1 stays where the springs balance it
+    x1, x2 = np.array(result["state"]["x1"]), np.array(result["state"]["x2"])
+    balance = 0.5 if body is LOPSIDED_CHAIN else 1.0 / (1e8 + 1.0)
+    assert np.abs(x1 - balance * x2).max() < 1e-6 * np.abs(x2).max()
+    assert np.ptp(x2) > 0.5  # it does move: over a swing of the slow mode

@@ -13,7 +13,7 @@ adding its class.
 from __future__ import annotations
 
 from app.numerics.errors import SimulationError
-from app.numerics.methods import explicit, scipy_ivp, symplectic
+from app.numerics.methods import explicit, implicit, scipy_ivp, symplectic
 from app.numerics.methods.base import Method, Problem, Trajectory
 from app.numerics.system import NumericSystem
 
@@ -27,7 +27,7 @@ def _concrete(cls: type[Method]) -> list[type[Method]]:
     return found
 
 
-FAMILIES = (explicit, symplectic, scipy_ivp)  # menu order: compiled first, then scipy's
+FAMILIES = (explicit, implicit, symplectic, scipy_ivp)  # menu order: compiled first, then scipy's
 METHODS: dict[str, Method] = {
     cls.name: cls() for family in FAMILIES for cls in _concrete(Method) if cls.__module__ == family.__name__
 }
@@ -36,9 +36,10 @@ CHOICES: tuple[str, ...] = (AUTO, *METHODS)  # what a request may ask for
 
 # Roles: the methods auto, the error estimate and the server's start-up give a job to.
 NONSTIFF = "Vern8"  # auto's default; it watches for stiffness on the way (why this pair: choose.py)
-STIFF = "Radau"  # auto's pick for a stiff start, and where a run that meets stiffness is redone
+STIFF = "Radau-compiled"  # auto's pick for a stiff start, and where a run that meets stiffness is redone
 REFERENCE = NONSTIFF  # the tighter run behind an adaptive run's error estimate
 FALLBACK = "DOP853"  # answers while the compiled code is not ready: no compiler needed
+FALLBACK_STIFF = "Radau"  # ... and for a stiff problem (scipy's Radau IIA: the same scheme, a Python step loop)
 
 
 def method(name: str) -> Method:
@@ -60,6 +61,7 @@ __all__ = [
     "AUTO",
     "CHOICES",
     "FALLBACK",
+    "FALLBACK_STIFF",
     "METHODS",
     "NONSTIFF",
     "REFERENCE",

@@ -111,11 +111,13 @@ class Method:
         raise NotImplementedError
 
     def too_much(self, problem: Problem, what: str) -> TooMuchWork:
-        return TooMuchWork(
+        exc = TooMuchWork(
             f"too much work for {self.name}: {what} before t = {problem.t_end:g} s. "
             "Shorten t_end, loosen rtol/atol, or choose another method (method 'auto' picks one for the problem).",
             "t_end",
         )
+        exc.what = what
+        return exc
 
 
 def drive(step: Callable[[int], int], steps_done: Callable[[], float], problem: Problem, method: Method) -> int:
@@ -138,6 +140,20 @@ def drive(step: Callable[[int], int], steps_done: Callable[[], float], problem: 
         if time.perf_counter() >= problem.deadline:
             raise method.too_much(problem, "the wall-clock budget ran out")
         chunk = int(min(max(chunk * 0.05 / max(elapsed, 1e-6), 100), 2_000_000))
+
+
+def cut_short(exc: TooMuchWork, method: Method, problem: Problem, Y: np.ndarray, filled: int, **stats) -> TooMuchWork:
+    """``exc`` carrying the samples reached before the budget ran out (``TooMuchWork.partial``), if any."""
+    if filled >= 2:
+        t = problem.t[:filled]
+        reason = (
+            f"{method.name} stopped ({exc.what or 'out of budget'}) at t = {t[-1]:.6g} s of {problem.t_end:g} s: "
+            "the motion up to there is shown (a shorter t_end or a looser rtol/atol gives the whole run)"
+        )
+        exc.partial = Trajectory(
+            method.name, t, Y[:filled], complete=False, stop_reason=reason, wall_time_s=0.0, **stats
+        )
+    return exc
 
 
 def outside_names(problem: Problem, y: np.ndarray) -> str:

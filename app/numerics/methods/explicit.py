@@ -10,7 +10,8 @@ from typing import Any
 
 import numpy as np
 
-from app.numerics.methods.base import Method, Problem, Trajectory, drive, finished
+from app.numerics.errors import TooMuchWork
+from app.numerics.methods.base import Method, Problem, Trajectory, cut_short, drive, finished
 
 
 class CompiledExplicit(Method):
@@ -30,12 +31,16 @@ class CompiledExplicit(Method):
         Y = np.empty((problem.t.size, y.size))
         args = (problem.k, problem.t, problem.rtol, problem.atol, problem.bound, int(stop_on_stiff))
 
-        status = drive(
-            lambda chunk: kernel.run(rhs, *args, chunk, y, fy, st, Y),
-            lambda: st[kernel.STEPS],
-            problem,
-            self,
-        )
+        try:
+            status = drive(
+                lambda chunk: kernel.run(rhs, *args, chunk, y, fy, st, Y),
+                lambda: st[kernel.STEPS],
+                problem,
+                self,
+            )
+        except TooMuchWork as exc:
+            stats = {"steps": int(st[kernel.STEPS]), "rhs_evaluations": int(st[kernel.NFEV])}
+            raise cut_short(exc, self, problem, Y, int(st[kernel.NEXT_OUT]), **stats) from None
         trajectory = finished(
             self,
             problem,

@@ -17,7 +17,7 @@ from types import ModuleType
 import numpy as np
 
 from app import late
-from app.numerics.methods.base import Method, Problem, Trajectory, outside_names
+from app.numerics.methods.base import Method, Problem, Trajectory, cut_short, outside_names
 
 
 def scipy_integrate() -> ModuleType:
@@ -103,7 +103,8 @@ class ScipyMethod(Method):
                     )
                     break
         except _OutOfBudget as exc:
-            raise self.too_much(problem, str(exc)) from None
+            stats = {"steps": steps, "rhs_evaluations": calls[0]}
+            raise cut_short(self.too_much(problem, str(exc)), self, problem, Y, filled, **stats) from None
         except _NotEvaluable as exc:
             stop = f"the right-hand side could not be evaluated ({exc})"
         trajectory = Trajectory(
