@@ -70,6 +70,7 @@ from app.engine.compare import (
     values,
     without_constant,
 )
+from app.engine.dimensions import dimension, mismatch
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json
 from app.engine.mistake_families import Mistake
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, POINTERS
@@ -180,7 +181,9 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         only = mistake_only(difference, DIFFERENCE_SECONDS)
         shown = printer.pair(display(difference) if only is difference else only)
     message = f"Incorrect: this is not {_noun(pb)}{how}. The difference (yours − the engine's) is shown."
-    found = match(pb.mistakes, a, b, pb.relation)
+    found = match(pb.mistakes, a, b, pb.relation, _at_engines_scale(pb, answer, a, truth))
+    if found is None:
+        found = _units(pb, answer, truth)
     if found is not None:
         mistake, hint = found
         return _verdict(
@@ -201,6 +204,38 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         else None
     )
     return _verdict("incorrect", message, shown, _hint(pb, answer, a, b, truth), partial=partial)
+
+
+def _at_engines_scale(pb: Problem, answer: sp.Expr, a: Values, truth: sp.Expr) -> Values | None:
+    """An equation's values rescaled to the engine's coefficient of the acceleration (the student's own terms,
+    at the engine's scale), or None."""
+    if pb.relation != "factor" or pb.acceleration is None:
+        return None
+    mine = values(sp.diff(answer, pb.acceleration), pb.groups)
+    theirs = _known(sp.diff(truth, pb.acceleration), pb.groups)
+    out = []
+    for xa, xm, xt in zip(a, mine, theirs, strict=True):
+        out.append([
+            [x * t / m if x is not None and m and t is not None else None for x, m, t in zip(pa, pm, pt, strict=True)]
+            for pa, pm, pt in zip(xa, xm, xt, strict=True)
+        ])  # fmt: skip
+    return out
+
+
+def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[Mistake, str] | None:
+    """An answer whose terms have different units, or whose whole has other units than the step's, named so."""
+    if not pb.dimensions:
+        return None
+    # an equation may be scaled by anything: only its terms must agree; every other step has the truth's units
+    want = None if pb.relation == "factor" else dimension(truth, pb.dimensions)
+    what = short_label(pb.step, pb.label)
+    offence = mismatch(answer, pb.dimensions, want, what)
+    if offence is None:
+        return None
+    where = "every term of an expression has the same units; checking them finds a slip before any algebra"
+    mistake = Mistake("units.mismatch", "units", f"units that do not agree: {offence.words}", offence.piece, where,
+                      answer)  # fmt: skip
+    return mistake, f"Check the units: {offence.words}."
 
 
 def follow_up_mistake(pb: Problem, key: str) -> Mistake:

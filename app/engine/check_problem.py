@@ -7,7 +7,7 @@ process with the student's answer.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy as sp
 
@@ -15,6 +15,8 @@ from app.engine.check_answers import PER_COORDINATE, STEPS, CheckError, name_kin
 from app.engine.compare import Groups, Values
 from app.engine.derive import Derivation
 from app.engine.diagnose import catalogue
+from app.engine.dimensions import Dims
+from app.engine.mistake_pieces import system_dimensions
 from app.engine.mistake_families import Mistake
 from app.engine.report import plain_name
 from app.engine.textbook import unicode_text
@@ -39,6 +41,7 @@ class Problem:
     mistakes: tuple[tuple[Mistake, str, Values], ...]  # (mistake, hint, its values at the sample points)
     latex_names: dict[sp.Symbol, str]
     acceleration: sp.Symbol | None = None
+    dimensions: dict[sp.Symbol, Dims] = field(default_factory=dict)  # what the declared units tell
 
     def mistake(self, key: str) -> Mistake | None:
         return next((m for m, _, _ in self.mistakes if m.key == key), None)
@@ -162,6 +165,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         catalogue(d, step, k, truths, groups, relation, short_label(step, label)) if mistakes else (),
         latex_names,
         table.qdd[k] if step == "equation" and k is not None else None,
+        system_dimensions(d),
     )
 
 
