@@ -181,8 +181,12 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         only = mistake_only(difference, DIFFERENCE_SECONDS)
         shown = printer.pair(display(difference) if only is difference else only)
     message = f"Incorrect: this is not {_noun(pb)}{how}. The difference (yours − the engine's) is shown."
-    found = match(pb.mistakes, a, b, pb.relation, _at_engines_scale(pb, answer, a, truth))
+    # terms whose units disagree are named first, at any step: no algebra explains them; then the catalogue,
+    # then a whole of the wrong units
+    found = _units(pb, answer, None)
     if found is None:
+        found = match(pb.mistakes, a, b, pb.relation, _at_engines_scale(pb, answer, a, truth))
+    if found is None and pb.relation != "factor":
         found = _units(pb, answer, truth)
     if found is not None:
         mistake, hint = found
@@ -222,12 +226,12 @@ def _at_engines_scale(pb: Problem, answer: sp.Expr, a: Values, truth: sp.Expr) -
     return out
 
 
-def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[Mistake, str] | None:
-    """An answer whose terms have different units, or whose whole has other units than the step's, named so."""
+def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake, str] | None:
+    """An answer whose terms have different units, or (given the truth) whose whole has other units than the
+    step's, named so."""
     if not pb.dimensions:
         return None
-    # an equation may be scaled by anything: only its terms must agree; every other step has the truth's units
-    want = None if pb.relation == "factor" else dimension(truth, pb.dimensions)
+    want = None if truth is None else dimension(truth, pb.dimensions)
     what = short_label(pb.step, pb.label)
     offence = mismatch(answer, pb.dimensions, want, what)
     if offence is None:

@@ -51,6 +51,8 @@ _OPENINGS = {
     "sin_cos": "Your {what} has {name}",
     "travelled": "Your {what} follows from {name}",
     "rigid": "Your {what} takes {name}",
+    "factor_left_out": "Your {what} has {name}",
+    "units": "Your {what} has {name}",
 }
 
 

@@ -189,9 +189,21 @@ def mismatch(expr: sp.Expr, known: Mapping[sp.Symbol, Dims], want: Dims | None, 
         return e.offence
     if got is None or want is None or got == want:
         return None
+    # the factor that would make it right, in words: a mass missing, a length too many
+    missing = add_dims(want, got, Fraction(-1))
+    extra = add_dims(got, want, Fraction(-1))
+    factor = (
+        f"a factor of {quantity(missing).removeprefix('a ').removeprefix('an ')} ({unit_text(missing)}) is missing"
+        if all(v > 0 for v in missing.values())
+        else f"it has a factor of {quantity(extra).removeprefix('a ').removeprefix('an ')} ({unit_text(extra)}) "
+        "too many"
+        if all(v > 0 for v in extra.values())
+        else f"they differ by {unit_text(missing)}"
+    )
     return Offence(
         expr,
-        f"your {what} is {quantity(got)} ({unit_text(got)}), but {what} is {quantity(want)} ({unit_text(want)})",
+        f"your {what} is {quantity(got)} ({unit_text(got)}), but {what} is {quantity(want)} ({unit_text(want)}): "
+        f"{factor}",
     )
 
 

@@ -91,6 +91,8 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
     if step == "omega_squared":
         return
     base = f"{step}.piece"
+    yield from _sums(truth, base)
+    rates = (*d.table.qd, *d.table.qdd)
     for p in _terms(truth):
         shown = spoken(short_form(p))
         key = slug(sp.sstr(p))[:48]
@@ -117,8 +119,15 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
         )  # fmt: skip
         yield Mistake(f"{base}.left_out.{term_key(p)}", "left_out", shown, p, "this term belongs in the answer",
                       truth - p)  # fmt: skip
+        if step == "hamiltonian" and not p.has(*rates):
+            yield Mistake(
+                f"{base}.sign_of_velocity_free.{key}", "term_sign", f"the sign of {shown}", p,
+                "in h = Σ p q̇ − L the part of L free of the velocities changes sign, so h is not the energy T + U "
+                "when T has such a part", truth - 2 * p,
+            )  # fmt: skip
         yield Mistake(f"{base}.sign.{key}", "term_sign", f"the sign of {shown}", p,
                       "each term's sign follows from the derivation", truth - 2 * p)  # fmt: skip
+        yield from _factors(p, truth, base, key, rates, d.table.params)
         if p.has(sp.sin, sp.cos):
             swapped = _swap(p)
             yield Mistake(
@@ -126,7 +135,11 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
                 p, "check which component of the position has the sine and which the cosine, at a small angle",
                 truth - p + swapped,
             )  # fmt: skip
-    yield from _sums(truth, base)
+            yield Mistake(
+                f"{base}.sin_cos_height.{key}", "sin_cos", f"{spoken(-swapped)} in place of {shown}: sin and cos "
+                "swapped", p, "check which component of the position has the sine and which the cosine, at a small "
+                "angle", truth - p - swapped,
+            )  # fmt: skip
     yield from _whole(d, step, truth, base)
     for s, group in _groups(truth, d.table.params):
         shown = spoken(short_form(group))
@@ -145,6 +158,30 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
         )  # fmt: skip
         yield Mistake(f"{base}.group_left_out.{s.name}", "left_out", f"the {name} terms, {shown}", group,
                       f"every body's part belongs in the answer, {name}'s too", truth - group)  # fmt: skip
+
+
+def _factors(
+    p: sp.Expr, truth: sp.Expr, base: str, key: str, rates: tuple, params: tuple
+) -> Iterator[Mistake]:
+    """One piece without one of its factors (sin α, sin²θ, 1/(1 + R² α²)), or with a parameter's square written
+    as the parameter itself (R for R²)."""
+    factors = [f for f in sp.Mul.make_args(p) if not f.is_Number and not f.has(*rates)]
+    for f in sorted(set(factors), key=sp.default_sort_key)[:MAX_SUMS]:
+        if f.is_Symbol:
+            continue  # a single parameter dropped is a matter of units (app.engine.dimensions)
+        yield Mistake(
+            f"{base}.factor_left_out.{key}.{slug(sp.sstr(f))[:24]}", "factor_left_out",
+            f"{spoken(p)} without its factor {spoken(f)}", p,
+            "this factor comes from the geometry (a component of the position, or the chain rule)", truth - p + p / f,
+        )  # fmt: skip
+    for s in params:
+        squared = s**2
+        if squared in factors:
+            yield Mistake(
+                f"{base}.not_squared.{key}.{s.name}", "factor_left_out",
+                f"{unicode(s.name)} in place of {unicode(s.name)}² in {spoken(p)}", p,
+                "a velocity's part is squared whole in v², its length or rate included", truth - p + p / s,
+            )  # fmt: skip
 
 
 def _sums(truth: sp.Expr, base: str) -> Iterator[Mistake]:
@@ -283,8 +320,10 @@ def travelled(
                 yield Mistake(f"{step}.{key}", "rigid", name, None,
                               "a rigid body's T is ½ m v_centre² + ½ I ω², with I about its centre", truth + change)  # fmt: skip
         return
-    if step not in ("equation", "omega_squared"):
+    if step not in ("equation", "acceleration", "omega_squared"):
         return
+    if step == "acceleration" and len(d.table.q) != 1:
+        return  # coupled accelerations: the equations' mistakes are carried by mistake_equations
     changes: list[tuple[str, str, sp.Expr, sp.Expr]] = list(rigid)
     T, U = d.mechanics.T, d.mechanics.U
     for m in list(kinetic_mistakes(d))[:MAX_TRAVEL]:
@@ -299,6 +338,15 @@ def travelled(
             family = "rigid" if key.startswith("rigid") else "travelled"
             yield Mistake(f"equation.{key}", family, name, None,
                           "your equation follows from it: fix that step and derive again", wrong)  # fmt: skip
+        elif step == "acceleration":
+            # one coordinate: E' = a q̈ + f, so q̈ = −f/a
+            E = d.equations.residuals[0] + _euler_lagrange(d, 0, dT - dU)
+            a = sp.diff(E, d.table.qdd[0])
+            if a != 0:
+                family = "rigid" if key.startswith("rigid") else "travelled"
+                yield Mistake(f"acceleration.{key}", family, name, None,
+                              "your acceleration follows from it: fix that step and derive again",
+                              sp.cancel(-E.subs(d.table.qdd[0], 0) / a))  # fmt: skip
         elif step == "omega_squared":
             for w in _omega_changed(d, dT, dU, asked):
                 family = "rigid" if key.startswith("rigid") else "travelled"

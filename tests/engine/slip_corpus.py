@@ -155,7 +155,7 @@ SLIPS = [
         "M*X_dot**2/2 + m*(X_dot**2 + D_dot**2 + 2*X_dot*D_dot*sin(alpha))/2",
         SWAP,
     ),
-    ("movable-incline", "equation", "D", "m*D_ddot - m*g*sin(alpha)", r"Ẍ|wedge"),
+    ("movable-incline", "equation", "D", "m*D_ddot - m*g*sin(alpha)", r"Ẍ|Ẋ|wedge"),
     ("movable-incline", "equation", "X", "(M + m)*X_ddot", r"D̈|block"),
     ("movable-incline", "momentum", "X", "M*X_dot + m*X_dot", r"Ḋ"),
     ("movable-incline", "equation", "D", "m*D_ddot + m*X_ddot*cos(alpha) - m*g*cos(alpha)", SWAP),
