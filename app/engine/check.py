@@ -186,7 +186,8 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
     found = _units(pb, answer, None)
     if found is None:
         found = match(pb.mistakes, a, b, pb.relation, _at_engines_scale(pb, answer, a, truth))
-    if found is None and pb.relation != "factor":
+    if found is None and pb.relation != "factor" and pb.step != "momentum":
+        # (a momentum short of a factor is named by that factor, below)
         found = _units(pb, answer, truth)
     if found is not None:
         mistake, hint = found

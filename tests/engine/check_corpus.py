@@ -79,7 +79,7 @@ CORPUS = [
         "theta_ddot + g*sin(theta)",
         "incorrect",
         "g*sin(theta) - g*sin(theta)/R",
-        "pointer",
+        "units",
     ),
     ("simple-pendulum", "acceleration", "theta", "-2*g*sin(theta/2)*cos(theta/2)/R", "correct", None, None),
     ("simple-pendulum", "omega_squared", None, "sqrt(g/R)", "incorrect", "sqrt(g/R) - g/R", "omega"),
