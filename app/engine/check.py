@@ -171,7 +171,10 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         if pb.relation == "constant" and differ_by_constant(a, b):
             return _verdict("equivalent", _constant_message(pb, answer - truth))
         if pb.relation == "factor" and differ_by_factor(a, b):
-            return _verdict("equivalent", _factor_message(pb, answer, truth, factor_is_constant(a, b)))
+            constant = factor_is_constant(a, b)
+            # the same equation divided through by a constant (θ̈ + (g/R) sin θ, as the page prints it) is right;
+            # a factor that depends on the coordinates makes it the same only where that factor is not zero
+            return _verdict("correct" if constant else "equivalent", _factor_message(pb, answer, truth, constant))
 
     truth, b = results[0]
     with display_budget(DISPLAY_SECONDS):
@@ -304,8 +307,8 @@ def _factor_message(pb: Problem, answer: sp.Expr, truth: sp.Expr, constant: bool
     named = f"{unicode_text(factor)}" if factor is not None and not (factor.free_symbols & rates) else "a factor"
     if constant:
         return (
-            f"Equivalent: your equation is the engine's {pb.label} multiplied by {named}, "
-            "which is not zero, so it has the same solutions."
+            f"Correct: this is the engine's {pb.label} multiplied by {named}, "
+            "which is not zero, so it is the same equation."
         )
     return (
         f"Equivalent: your equation is the engine's {pb.label} multiplied by {named}, which depends on the "

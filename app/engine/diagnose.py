@@ -25,6 +25,7 @@ import sympy as sp
 
 from app.engine.compare import Groups, Values, differ_by_constant, differ_by_factor, equal, usable, values
 from app.engine.derive import Derivation
+from app.engine.dimensions import mismatch
 from app.engine.mistake_equations import generated
 from app.engine.mistake_families import Mistake, monomial_words, spoken
 from app.engine.mistake_pieces import effective_terms, piece_mistakes, system_dimensions, travelled
@@ -129,13 +130,20 @@ def catalogue(
     kept: list[tuple[Mistake, str, Values]] = []
     truth_values = [values(t, groups) for t in truths]
     for mistake, hint in found:
+        if mismatch(mistake.expr, known, None, label) is not None:
+            continue  # terms whose units disagree: the units name it first (app.engine.check)
         v = values(mistake.expr, groups)
         if any(usable(v, b) < MIN_POINTS or _same(v, b, relation) for b in truth_values):
             continue
         # a repeat of an earlier mistake's values is dropped; one equal to it only up to a factor is kept, since
         # the answer's own scale tells them apart (2 m g R sin θ beside m R² θ̈ is gravity counted twice, not
         # the ½ of m R² θ̈ lost)
-        if any(equal(v, w) or (relation == "constant" and differ_by_constant(v, w)) for _, _, w in kept):
+        if any(
+            equal(v, w)
+            or (relation == "constant" and differ_by_constant(v, w))
+            or (relation == "factor" and equal(_negated(v), w))  # the same equation moved to the other side
+            for _, _, w in kept
+        ):
             continue
         kept.append((mistake, hint, v))
     return tuple(kept)
@@ -187,12 +195,18 @@ def match(
     at the engine's coefficient of the acceleration (``scaled``), then the first up to the step's accepted
     constant or factor."""
     tried = [(m, h, v) for m, h, v in catalogue_ if usable(a, v) >= MIN_POINTS and not equal(v, b)]
-    for test in (lambda v: equal(a, v), lambda v: scaled is not None and equal(scaled, v),
-                 lambda v: _same(a, v, relation)):  # fmt: skip
+    negated = _negated(a) if relation == "factor" else None
+    for test in (lambda v: equal(a, v), lambda v: negated is not None and equal(negated, v),
+                 lambda v: scaled is not None and equal(scaled, v), lambda v: _same(a, v, relation)):  # fmt: skip
         for mistake, hint, v in tried:
             if test(v):
                 return mistake, hint
     return None
+
+
+def _negated(a: Values) -> Values:
+    """An equation moved to the other side: every value's sign reversed."""
+    return [[[None if x is None else -x for x in block] for block in draw] for draw in a]
 
 
 def mistake_json(m: Mistake, tex, difference: str = "") -> dict[str, Any]:

@@ -127,7 +127,8 @@ def _dims(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Dims | None:
     if expr.is_Symbol:
         return known.get(expr)  # type: ignore[call-overload]
     if expr.is_Add:
-        found = [(a, _dims(a, known)) for a in expr.args]
+        # a bare number beside other terms takes their units (a constant of U, written without its unit)
+        found = [(a, _dims(a, known)) for a in expr.args if not a.is_Number]
         told = [(a, d) for a, d in found if d is not None]
         for a, d in told[1:]:
             if d != told[0][1]:

@@ -90,6 +90,8 @@ def test_corpus(system, step, coordinate, answer, verdict, difference, hint):
     if verdict == "equivalent":
         message = result["message"]
         assert message.startswith("Equivalent:") and ("multiplied by" in message or "plus" in message)
+    if verdict == "correct" and step == "equation":
+        assert result["message"].startswith("Correct:")
 
 
 def test_the_corpus_covers_every_scene_both_systems_and_every_common_mistake():
@@ -115,8 +117,9 @@ def test_equivalent_messages_say_how():
     d = derivation("simple-pendulum")
     potential = judge(problem(d, "potential"), "-m*g*R*cos(theta)")
     assert "plus the constant −mgR" in potential["message"] and "zero of height" in potential["message"]
+    # the page's own form, the engine's equation divided through by m R², is right, and says so
     equation = judge(problem(d, "equation", "theta"), "theta_ddot + g*sin(theta)/R")
-    assert "multiplied by 1/(mR²)" in equation["message"]
+    assert equation["verdict"] == "correct" and "multiplied by 1/(mR²)" in equation["message"]
     spherical = judge(
         problem(derivation("spherical-pendulum"), "equation", "phi"),
         "sin(theta)*phi_ddot + 2*cos(theta)*theta_dot*phi_dot",

@@ -75,6 +75,26 @@ def test_every_correct_answer_in_an_unusual_form_is_accepted(system, step, coord
     assert result["verdict"] in ("correct", "equivalent"), result
 
 
+@pytest.mark.parametrize(
+    ("system", "step", "coordinate", "answer"),
+    [
+        ("simple-pendulum", "equation", "theta", "theta_ddot + (g/R)*sin(theta)"),
+        ("rod-pendulum", "equation", "theta", "theta_ddot + 3*g*sin(theta)/(2*l)"),
+        ("pulley", "equation", "y1", "(4*m1 + M)*y1_ddot + M*y2_ddot + 4*g*m1 - 2*M*g"),
+    ],
+)
+def test_the_pages_own_form_and_any_constant_multiple_is_correct(system, step, coordinate, answer):
+    result = judge(step_problem(system, step, coordinate), answer)
+    assert result["verdict"] == "correct" and result["message"].startswith("Correct:"), result
+
+
+def test_an_equation_multiplied_by_a_coordinate_is_equivalent_and_says_where():
+    result = judge(
+        step_problem("spherical-pendulum", "equation", "phi"), "sin(theta)*phi_ddot + 2*cos(theta)*theta_dot*phi_dot"
+    )
+    assert result["verdict"] == "equivalent" and "depends on the coordinates" in result["message"]
+
+
 @pytest.mark.parametrize("slip", SLIPS, ids=[f"{s[0]}-{s[1]}-{i}" for i, s in enumerate(SLIPS)])
 def test_a_named_slip_is_named_rightly(slip):
     kind, result = outcome(slip)
