@@ -194,6 +194,12 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         found = _units(pb, answer, truth)
     if found is not None:
         mistake, hint = found
+        if pb.relation == "exact" or equal(a, _known(mistake.expr, pb.groups)):
+            # the answer is this mistake as written: show the difference as the change to the engine's own
+            # pieces (m₂ l₁ l₂ θ̇₁ θ̇₂ (sin(θ₁ − θ₂) − cos(θ₁ − θ₂)), not its sines and cosines expanded)
+            own = sp.factor_terms(mistake.expr - truth)
+            if own != 0 and own.free_symbols and sp.count_ops(own) <= sp.count_ops(sp.sympify(shown["sympy"])):
+                shown = printer.pair(own)
         return _verdict(
             "incorrect",
             message,

@@ -51,7 +51,7 @@ _OPENINGS = {
     "inner_sign": "Your {what} has {name}",
     "sin_cos": "Your {what} has {name}",
     "travelled": "Your {what} follows from {name}",
-    "rigid": "Your {what} takes {name}",
+    "rigid": "Your {what} has {name}",
     "factor_left_out": "Your {what} has {name}",
     "units": "Your {what} has {name}",
 }

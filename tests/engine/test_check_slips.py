@@ -106,3 +106,57 @@ def test_nine_slips_in_ten_are_named():
     kinds = [outcome(slip)[0] for slip in SLIPS]
     named = kinds.count("named")
     assert named >= 0.9 * len(SLIPS), f"{named}/{len(SLIPS)} named"
+
+
+def test_gravity_added_again_as_a_force_is_counted_twice_not_the_lost_2_of_a_square():
+    result = judge(step_problem("simple-pendulum", "equation", "theta"), "m*R**2*theta_ddot + 2*m*g*R*sin(theta)")
+    assert "counted twice" in result["hint"] and "differentiating the square" not in result["hint"]
+    # and the ½ of m R² θ̈ lost is still that
+    result = judge(step_problem("simple-pendulum", "equation", "theta"), "m*R**2*theta_ddot/2 + m*g*R*sin(theta)")
+    assert "differentiating the square" in result["hint"]
+
+
+def test_terms_whose_units_disagree_are_named_at_any_step():
+    result = judge(step_problem("simple-pendulum", "omega_squared", None), "(m + g)/R")
+    assert result["mistake"]["key"] == "units.mismatch"
+    assert "adds an acceleration (g) to a mass (m)" in result["hint"], result["hint"]
+    typed = judge(step_problem("rolling-disc", "kinetic", None), "M*x_dot**2/2 + M*R**2*x_dot**2/4")
+    assert typed["mistake"]["key"] == "units.mismatch" and "an energy" in typed["hint"]
+    # a whole of the wrong units names the missing factor
+    whole = judge(step_problem("simple-pendulum", "kinetic", None), "R**2*theta_dot**2/2")
+    assert "a factor of mass (kg) is missing" in whole["hint"], whole["hint"]
+
+
+def test_a_rod_typed_with_t_and_u_is_named_as_a_rod():
+    point = judge(step_problem("rod-pendulum", "kinetic", None), "m*l**2*theta_dot**2/2")
+    assert point["mistake"]["key"] == "kinetic.rigid.rod_point_mass" and "point mass" in point["hint"]
+    centre = judge(step_problem("rod-pendulum", "potential", None), "-m*g*l*cos(theta)")
+    assert centre["mistake"]["key"] == "potential.rigid.rod_centre_at_end"
+    # carried into ω²: the simple pendulum's g/l is the rod taken as a point mass at its end
+    omega = judge(step_problem("rod-pendulum", "omega_squared", None), "g/l")
+    assert omega["mistake"]["key"] == "omega_squared.rigid.rod_as_point_mass"
+
+
+def test_a_swapped_sine_shows_the_change_to_the_piece_not_a_phase_shift():
+    result = judge(
+        step_problem("double-pendulum", "kinetic", None),
+        "(m1 + m2)*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2"
+        " + m2*l1*l2*theta1_dot*theta2_dot*sin(theta1 - theta2)",
+    )
+    shown = result["difference"]["sympy"]
+    assert "pi" not in shown and "sqrt" not in shown, shown
+    assert "sin(theta1 - theta2) - cos(theta1 - theta2)" in shown, shown
+
+
+def test_an_equilibrium_is_written_without_abs_or_fractional_powers():
+    result = judge(step_problem("tabletop-spring", "omega_squared", None), "k/m")
+    assert "r⁴ = p_θ²/(mk)" in result["message"] and "Abs" not in result["message"], result["message"]
+    assert "centrifugal" in result["hint"]
+
+
+def test_the_diagnosis_does_not_depend_on_the_order_answers_arrive():
+    # the backward diagnosis is bounded by counts: judged again (warm caches), the same words
+    slips = [s for s in SLIPS if s[0] == "pulley"]
+    first = [judge(step_problem(*s[:3]), s[3]) for s in slips]
+    again = [judge(step_problem(*s[:3]), s[3]) for s in reversed(slips)][::-1]
+    assert [(r["hint"], r["mistake"]) for r in first] == [(r["hint"], r["mistake"]) for r in again]
