@@ -70,8 +70,8 @@ from app.engine.compare import (
     values,
     without_constant,
 )
-from app.engine.dimensions import dimension, mismatch
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json
+from app.engine.dimensions import dimension, mismatch
 from app.engine.mistake_families import Mistake
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, POINTERS
 from app.engine.parse import Parsed

@@ -125,7 +125,7 @@ def _dims(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Dims | None:
     if expr.is_Number or expr is sp.pi or expr is sp.E:
         return {}
     if expr.is_Symbol:
-        return known.get(expr)  # type: ignore[call-overload]
+        return known.get(expr)
     if expr.is_Add:
         # a bare number beside other terms takes their units (a constant of U, written without its unit)
         found = [(a, _dims(a, known)) for a in expr.args if not a.is_Number]
@@ -142,10 +142,10 @@ def _dims(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Dims | None:
     if expr.is_Mul:
         out: Dims = {}
         for a in expr.args:
-            d = _dims(a, known)
-            if d is None:
+            factor = _dims(a, known)
+            if factor is None:
                 return None
-            out = add_dims(out, d)
+            out = add_dims(out, factor)
         return out
     if expr.is_Pow:
         base = _dims(expr.base, known)
@@ -161,10 +161,10 @@ def _dims(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Dims | None:
         if isinstance(expr, sp.Abs):
             return _dims(expr.args[0], known)
         for a in expr.args:
-            d = _dims(a, known)
-            if d:
+            inside = _dims(a, known)
+            if inside:
                 raise _Mismatch(
-                    Offence(expr, f"{spoken(expr)} takes {quantity(d)} ({spoken(a)}) as its argument, which must "
+                    Offence(expr, f"{spoken(expr)} takes {quantity(inside)} ({spoken(a)}) as its argument, which must "
                             "be a pure number (an angle)")
                 )  # fmt: skip
         return {}

@@ -66,7 +66,7 @@ def _groups(truth: sp.Expr, params: tuple[sp.Symbol, ...]) -> list[tuple[sp.Symb
 
 def _has_half(p: sp.Expr) -> bool:
     coefficient, _ = p.as_coeff_Mul()
-    return coefficient.is_Rational and abs(coefficient.q) == 2  # type: ignore[union-attr]
+    return bool(coefficient.is_Rational) and abs(coefficient.q) == 2
 
 
 def _swap(expr: sp.Expr) -> sp.Expr:
@@ -162,9 +162,7 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
                       f"every body's part belongs in the answer, {name}'s too", truth - group)  # fmt: skip
 
 
-def _factors(
-    p: sp.Expr, truth: sp.Expr, base: str, key: str, rates: tuple, params: tuple
-) -> Iterator[Mistake]:
+def _factors(p: sp.Expr, truth: sp.Expr, base: str, key: str, rates: tuple, params: tuple) -> Iterator[Mistake]:
     """One piece without one of its factors (sin α, sin²θ, 1/(1 + R² α²)), or with a parameter's square written
     as the parameter itself (R for R²)."""
     factors = [f for f in sp.Mul.make_args(p) if not f.is_Number and not f.has(*rates)]
@@ -255,7 +253,7 @@ def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp
     T, U = d.mechanics.T, d.mechanics.U
     if T is None or d.system.particles or len(d.table.q) != 1:
         return []
-    q, v = d.table.q[0], d.table.qd[0]
+    v = d.table.qd[0]
     lengths, masses = _lengths_and_masses(d, known)
     a = sp.expand(sp.diff(T, v, 2))  # I or m_eff
     out: list[tuple[str, str, sp.Expr, sp.Expr]] = []
@@ -307,9 +305,7 @@ def _euler_lagrange(d: Derivation, k: int, L: sp.Expr) -> sp.Expr:
     return sp.expand(dp - sp.diff(L, t.q[k]))
 
 
-def travelled(
-    d: Derivation, step: str, k: int | None, truth: sp.Expr, known, asked: list
-) -> Iterator[Mistake]:
+def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, asked: list) -> Iterator[Mistake]:
     """A rigid body's slips in T and U, and the mistakes of T and U (generated, and a rigid body's) carried
     into the equation and into ω²."""
     if d.mechanics.T is None:

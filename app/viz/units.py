@@ -19,10 +19,9 @@ from collections.abc import Mapping
 from fractions import Fraction
 from typing import Any
 
-from app.viz.exprtree import document_tree
-
 from app.engine.dimensions import Dims, parse_unit
 from app.engine.dimensions import add_dims as _add
+from app.viz.exprtree import document_tree
 
 __all__ = ["Dims", "coordinate_units", "dims_of", "parse_unit"]
 

@@ -145,7 +145,13 @@ SLIPS = [
     ),
     ("pulley", "potential", None, "m1*g*y1 + m2*g*y2 - M*g*(y1 + y2)", r"half|½|pulley|middle"),
     ("pulley", "equation", "y1", "m1*y1_ddot + g*m1 - M*g/2", r"middle|pulley|\bM\b"),
-    ("pulley", "kinetic", None, "M*(y1_dot**2 + y2_dot**2)/8 + m1*y1_dot**2/2 + m2*y2_dot**2/2", r"cross|ẏ₁ ẏ₂|product"),
+    (
+        "pulley",
+        "kinetic",
+        None,
+        "M*(y1_dot**2 + y2_dot**2)/8 + m1*y1_dot**2/2 + m2*y2_dot**2/2",
+        r"cross|ẏ₁ ẏ₂|product",
+    ),
     # ---- the block on a movable wedge
     ("movable-incline", "kinetic", None, "M*X_dot**2/2 + m*D_dot**2/2", r"wedge|Ẋ"),
     (
@@ -178,7 +184,13 @@ SLIPS = [
         r"chain|ρ̇²|along the motion",
     ),
     # ---- two masses between three springs
-    ("coupled-oscillators", "potential", None, "k*(x1**2 + x2**2)/2 + kappa*(x1 + x2)**2/2", r"stretch|x₂ − x₁|x₁ \+ x₂"),
+    (
+        "coupled-oscillators",
+        "potential",
+        None,
+        "k*(x1**2 + x2**2)/2 + kappa*(x1 + x2)**2/2",
+        r"stretch|x₂ − x₁|x₁ \+ x₂",
+    ),
     ("coupled-oscillators", "equation", "x1", "m*x1_ddot + k*x1 + kappa*(x2 - x1)", SIGN),
     ("coupled-oscillators", "equation", "x1", "m*x1_ddot + (k + kappa)*x1", r"κ|x₂|coupling"),
     ("coupled-oscillators", "kinetic", None, "m*(x1_dot**2 + x2_dot**2)", HALF),

@@ -311,6 +311,8 @@ def test_names_of_pieces_read_as_mathematics_not_code():
 
 
 def test_an_unmatched_answer_is_compared_part_by_part():
-    result = judge(problem(derivation("double-pendulum"), "kinetic"), "(m1 + m2)*l1**2*theta1_dot**2/2 + 7*m2*l2**2*theta2_dot**2")
+    result = judge(
+        problem(derivation("double-pendulum"), "kinetic"), "(m1 + m2)*l1**2*theta1_dot**2/2 + 7*m2*l2**2*theta2_dot**2"
+    )
     assert result["mistake"] is None
     assert result["partial"]["differ"] and "the θ̇₁ θ̇₂ terms" in result["partial"]["differ"]

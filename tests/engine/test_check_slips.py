@@ -69,7 +69,9 @@ def test_the_corpus_spans_every_scene_and_four_typed_systems():
     assert {c[0] for c in CORRECT} == set(SCENES) | set(SYSTEMS)
 
 
-@pytest.mark.parametrize(("system", "step", "coordinate", "answer"), CORRECT, ids=[f"{c[0]}-{c[1]}-{i}" for i, c in enumerate(CORRECT)])
+@pytest.mark.parametrize(
+    ("system", "step", "coordinate", "answer"), CORRECT, ids=[f"{c[0]}-{c[1]}-{i}" for i, c in enumerate(CORRECT)]
+)
 def test_every_correct_answer_in_an_unusual_form_is_accepted(system, step, coordinate, answer):
     result = judge(step_problem(system, step, coordinate), answer)
     assert result["verdict"] in ("correct", "equivalent"), result
