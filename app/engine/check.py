@@ -197,7 +197,10 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         if pb.relation == "exact" or equal(a, _known(mistake.expr, pb.groups)):
             # the answer is this mistake as written: show the difference as the change to the engine's own
             # pieces (m₂ l₁ l₂ θ̇₁ θ̇₂ (sin(θ₁ − θ₂) − cos(θ₁ − θ₂)), not its sines and cosines expanded)
-            own = sp.factor_terms(mistake.expr - truth)
+            own = mistake.expr - truth
+            if pb.relation == "constant":  # less the constant the shown difference leaves out
+                own = without_constant(own, pb.groups.dynamic())[0]
+            own = sp.factor_terms(own)
             if own != 0 and own.free_symbols and sp.count_ops(own) <= sp.count_ops(sp.sympify(shown["sympy"])):
                 shown = printer.pair(own)
         return _verdict(
