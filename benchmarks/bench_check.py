@@ -8,8 +8,10 @@ elsewhere) and, where the step has one, the first mistake generated from the
 scene's derivation (named, with its piece typeset and what else is right). Each
 answer text is made unique with a harmless ``+ 0*pi*k``, so no answer is served
 from the cache: every request parses, judges and typesets in the worker pool,
-as a class of students typing their own answers would make it. A warm-up round
-first fills the scene problems and starts the workers. Goal: p95 at most 300 ms.
+as a class of students typing their own answers would make it. The realistic slips
+and the correct answers in unusual forms of the tutor's corpus (tests/engine/slip_corpus.py,
+the twelve scenes' entries) go with them. A warm-up round first fills the scene problems and
+starts the workers. Goal: p95 at most 300 ms.
 
     .venv/bin/python -m benchmarks.bench_check
 """
@@ -26,6 +28,7 @@ from app.engine.check import problem
 from app.main import app
 from app.scenes import SCENES
 from app.service import derivations
+from tests.engine.slip_corpus import CORRECT, SLIPS
 
 ROUNDS = 2
 HEALTH_ROUNDS = 200
@@ -51,6 +54,14 @@ def answers(client: TestClient, scene_id: str) -> list[tuple[dict, str]]:
         named = [m for m, _, _ in problem(derivations.derivation(scene_id), e["step"], e["coordinate"]).mistakes]
         if named and len(str(named[0].expr)) < 2000:
             out.append(({**base, "answer": str(named[0].expr)}, "a generated mistake"))
+    for system, step, coordinate, answer, *_ in SLIPS:
+        if system == scene_id:
+            out.append(({"step": step, **({"coordinate": coordinate} if coordinate else {}), "answer": answer},
+                        "a realistic slip"))  # fmt: skip
+    for system, step, coordinate, answer in CORRECT:
+        if system == scene_id:
+            out.append(({"step": step, **({"coordinate": coordinate} if coordinate else {}), "answer": answer},
+                        "a correct unusual form"))  # fmt: skip
     return out
 
 

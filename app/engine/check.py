@@ -71,6 +71,7 @@ from app.engine.compare import (
     without_constant,
 )
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json
+from app.engine.dimensions import dimension, mismatch
 from app.engine.mistake_families import Mistake
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, POINTERS
 from app.engine.parse import Parsed
@@ -171,7 +172,10 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         if pb.relation == "constant" and differ_by_constant(a, b):
             return _verdict("equivalent", _constant_message(pb, answer - truth))
         if pb.relation == "factor" and differ_by_factor(a, b):
-            return _verdict("equivalent", _factor_message(pb, answer, truth, factor_is_constant(a, b)))
+            constant = factor_is_constant(a, b)
+            # the same equation divided through by a constant (θ̈ + (g/R) sin θ, as the page prints it) is right;
+            # a factor that depends on the coordinates makes it the same only where that factor is not zero
+            return _verdict("correct" if constant else "equivalent", _factor_message(pb, answer, truth, constant))
 
     truth, b = results[0]
     with display_budget(DISPLAY_WORK):
@@ -181,9 +185,25 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         only = mistake_only(difference, DIFFERENCE_WORK)
         shown = printer.pair(display(difference) if only is difference else only)
     message = f"Incorrect: this is not {_noun(pb)}{how}. The difference (yours − the engine's) is shown."
-    found = match(pb.mistakes, a, b, pb.relation)
+    # terms whose units disagree are named first, at any step: no algebra explains them; then the catalogue,
+    # then a whole of the wrong units
+    found = _units(pb, answer, None)
+    if found is None:
+        found = match(pb.mistakes, a, b, pb.relation, _at_engines_scale(pb, answer, a, truth))
+    if found is None and pb.relation != "factor" and pb.step != "momentum":
+        # (a momentum short of a factor is named by that factor, below)
+        found = _units(pb, answer, truth)
     if found is not None:
         mistake, hint = found
+        if pb.relation == "exact" or equal(a, _known(mistake.expr, pb.groups)):
+            # the answer is this mistake as written: show the difference as the change to the engine's own
+            # pieces (m₂ l₁ l₂ θ̇₁ θ̇₂ (sin(θ₁ − θ₂) − cos(θ₁ − θ₂)), not its sines and cosines expanded)
+            own = mistake.expr - truth
+            if pb.relation == "constant":  # less the constant the shown difference leaves out
+                own = without_constant(own, pb.groups.dynamic())[0]
+            own = sp.factor_terms(own)
+            if own != 0 and own.free_symbols and sp.count_ops(own) <= sp.count_ops(sp.sympify(shown["sympy"])):
+                shown = printer.pair(own)
         return _verdict(
             "incorrect",
             message,
@@ -202,6 +222,38 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         else None
     )
     return _verdict("incorrect", message, shown, _hint(pb, answer, a, b, truth), partial=partial)
+
+
+def _at_engines_scale(pb: Problem, answer: sp.Expr, a: Values, truth: sp.Expr) -> Values | None:
+    """An equation's values rescaled to the engine's coefficient of the acceleration (the student's own terms,
+    at the engine's scale), or None."""
+    if pb.relation != "factor" or pb.acceleration is None:
+        return None
+    mine = values(sp.diff(answer, pb.acceleration), pb.groups)
+    theirs = _known(sp.diff(truth, pb.acceleration), pb.groups)
+    out = []
+    for xa, xm, xt in zip(a, mine, theirs, strict=True):
+        out.append([
+            [x * t / m if x is not None and m and t is not None else None for x, m, t in zip(pa, pm, pt, strict=True)]
+            for pa, pm, pt in zip(xa, xm, xt, strict=True)
+        ])  # fmt: skip
+    return out
+
+
+def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake, str] | None:
+    """An answer whose terms have different units, or (given the truth) whose whole has other units than the
+    step's, named so."""
+    if not pb.dimensions:
+        return None
+    want = None if truth is None else dimension(truth, pb.dimensions)
+    what = short_label(pb.step, pb.label)
+    offence = mismatch(answer, pb.dimensions, want, what)
+    if offence is None:
+        return None
+    where = "every term of an expression has the same units; checking them finds a slip before any algebra"
+    mistake = Mistake("units.mismatch", "units", f"units that do not agree: {offence.words}", offence.piece, where,
+                      answer)  # fmt: skip
+    return mistake, f"Check the units: {offence.words}."
 
 
 def follow_up_mistake(pb: Problem, key: str) -> Mistake:
@@ -265,8 +317,8 @@ def _factor_message(pb: Problem, answer: sp.Expr, truth: sp.Expr, constant: bool
     named = f"{unicode_text(factor)}" if factor is not None and not (factor.free_symbols & rates) else "a factor"
     if constant:
         return (
-            f"Equivalent: your equation is the engine's {pb.label} multiplied by {named}, "
-            "which is not zero, so it has the same solutions."
+            f"Correct: this is the engine's {pb.label} multiplied by {named}, "
+            "which is not zero, so it is the same equation."
         )
     return (
         f"Equivalent: your equation is the engine's {pb.label} multiplied by {named}, which depends on the "

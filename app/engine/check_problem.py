@@ -7,7 +7,7 @@ process with the student's answer.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy as sp
 
@@ -15,7 +15,9 @@ from app.engine.check_answers import PER_COORDINATE, STEPS, CheckError, name_kin
 from app.engine.compare import Groups, Values
 from app.engine.derive import Derivation
 from app.engine.diagnose import catalogue
+from app.engine.dimensions import Dims
 from app.engine.mistake_families import Mistake
+from app.engine.mistake_pieces import system_dimensions
 from app.engine.report import plain_name
 from app.engine.textbook import unicode_text
 
@@ -39,6 +41,7 @@ class Problem:
     mistakes: tuple[tuple[Mistake, str, Values], ...]  # (mistake, hint, its values at the sample points)
     latex_names: dict[sp.Symbol, str]
     acceleration: sp.Symbol | None = None
+    dimensions: dict[sp.Symbol, Dims] = field(default_factory=dict)  # what the declared units tell
 
     def mistake(self, key: str) -> Mistake | None:
         return next((m for m, _, _ in self.mistakes if m.key == key), None)
@@ -140,7 +143,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         found = checkable_equilibria(d)
         truths = tuple(e.omega_squared for e in found)
         r = d.reduction.coordinate  # type: ignore[union-attr]
-        where = tuple(f"{plain_name(r)} = {unicode_text(e.position)}" for e in found)
+        where = tuple(_at(plain_name(r), e.position) for e in found)
 
     momenta = conserved_momenta(d)
     kinds = name_kinds(table.names, table.parameter_names, tuple(p.name for p in momenta))
@@ -162,7 +165,24 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         catalogue(d, step, k, truths, groups, relation, short_label(step, label)) if mistakes else (),
         latex_names,
         table.qdd[k] if step == "equation" and k is not None else None,
+        system_dimensions(d),
     )
+
+
+def _at(r: str, position: sp.Expr) -> str:
+    """The equilibrium as a reader writes it: r = 0, or r⁴ = p_θ²/(k m) where the position is a root of an
+    absolute value (never √Abs p_θ/(m^(1/4) k^(1/4)))."""
+    roots = [p.exp.q for p in position.atoms(sp.Pow) if p.exp.is_Rational and p.exp.q > 1]
+    if not roots and not position.has(sp.Abs):
+        return f"{r} = {unicode_text(position)}"
+    n = int(sp.ilcm(*roots, 2)) if roots else 2
+    # an even power of |x| is that power of x
+    power = sp.powsimp(sp.expand_power_base(position**n, force=True), force=True).replace(sp.Abs, lambda x: x)
+    power = sp.factor(sp.powsimp(power, force=True))
+    if power.has(sp.Abs) or any(p.exp.is_Rational and p.exp.q > 1 for p in power.atoms(sp.Pow)):
+        return f"the equilibrium of {r}"
+    superscript = str(n).translate(str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹"))
+    return f"{r}{superscript} = {unicode_text(power)}"
 
 
 def short_label(step: str, label: str) -> str:

@@ -25,8 +25,10 @@ import sympy as sp
 
 from app.engine.compare import Groups, Values, differ_by_constant, differ_by_factor, equal, usable, values
 from app.engine.derive import Derivation
+from app.engine.dimensions import mismatch
 from app.engine.mistake_equations import generated
 from app.engine.mistake_families import Mistake, monomial_words, spoken
+from app.engine.mistake_pieces import effective_terms, piece_mistakes, system_dimensions, travelled
 from app.engine.mistakes import OMEGA_HINT, RULES
 
 MIN_POINTS = 6
@@ -42,6 +44,16 @@ _OPENINGS = {
     "small_angle": "Your {what} uses {name}. That is an approximation, not a slip of algebra",
     "other_equilibrium": "This is {name}",
     "pair": "Your {what} has two mistakes: {name}",
+    "counted_twice": "Your {what} has {name}",
+    "doubled": "Your {what} has {name}",
+    "halved": "Your {what} has {name}",
+    "velocity_doubled": "Your {what} has {name}",
+    "inner_sign": "Your {what} has {name}",
+    "sin_cos": "Your {what} has {name}",
+    "travelled": "Your {what} follows from {name}",
+    "rigid": "Your {what} has {name}",
+    "factor_left_out": "Your {what} has {name}",
+    "units": "Your {what} has {name}",
 }
 
 
@@ -92,11 +104,21 @@ def catalogue(
 ) -> tuple[tuple[Mistake, str, Values], ...]:
     """(mistake, hint, values) for every distinct mistake of the step, in the order they are tried."""
     truth = truths[0]
-    made = [(m, sentence(m, label)) for m in generated(d, step, k, _asked(d, truths))]
-    # the specific ones first, then the rules every system invites, then a term's sign (which for a short
-    # expression is also the sign of everything else, and would hide a rule's better name)
+    asked = _asked(d, truths)
+    made = [(m, sentence(m, label)) for m in generated(d, step, k, asked)]
+    known = system_dimensions(d)
+    # the mistakes of T and U carried into this step, and a rigid body's (backward: from the system's pieces)
+    carried = [(m, sentence(m, label)) for m in travelled(d, step, k, truth, known, asked)]
+    carried += [(m, sentence(m, label)) for m in effective_terms(d, asked)] if step == "omega_squared" else []
+    pieces = [(m, sentence(m, label)) for m in piece_mistakes(d, step, k, truth)]
+    # the specific ones first, then the rules every system invites, then the truth's own pieces changed one at a
+    # time, then a term's sign (which for a short expression is also the sign of everything else, and would hide
+    # a rule's better name)
     found = [x for x in made if x[0].family not in GENERIC]
+    found += [x for x in carried if x[0].key.startswith(f"{step}.rigid")]
     found += _legacy(d, step, k, truth)
+    found += [x for x in carried if not x[0].key.startswith(f"{step}.rigid")]
+    found += pieces
     found += [x for x in made if x[0].family in GENERIC]
     if step == "omega_squared":
         found += [
@@ -108,10 +130,20 @@ def catalogue(
     kept: list[tuple[Mistake, str, Values]] = []
     truth_values = [values(t, groups) for t in truths]
     for mistake, hint in found:
+        if mismatch(mistake.expr, known, None, label) is not None:
+            continue  # terms whose units disagree: the units name it first (app.engine.check)
         v = values(mistake.expr, groups)
         if any(usable(v, b) < MIN_POINTS or _same(v, b, relation) for b in truth_values):
             continue
-        if any(_same(v, w, relation) for _, _, w in kept):
+        # a repeat of an earlier mistake's values is dropped; one equal to it only up to a factor is kept, since
+        # the answer's own scale tells them apart (2 m g R sin θ beside m R² θ̈ is gravity counted twice, not
+        # the ½ of m R² θ̈ lost)
+        if any(
+            equal(v, w)
+            or (relation == "constant" and differ_by_constant(v, w))
+            or (relation == "factor" and equal(_negated(v), w))  # the same equation moved to the other side
+            for _, _, w in kept
+        ):
             continue
         kept.append((mistake, hint, v))
     return tuple(kept)
@@ -153,15 +185,28 @@ def _pairs(d: Derivation, step: str, found: list[tuple[Mistake, str]], label: st
 
 
 def match(
-    catalogue_: tuple[tuple[Mistake, str, Values], ...], a: Values, b: Values, relation: str
+    catalogue_: tuple[tuple[Mistake, str, Values], ...],
+    a: Values,
+    b: Values,
+    relation: str,
+    scaled: Values | None = None,
 ) -> tuple[Mistake, str] | None:
-    """The first mistake the answer's values match (up to the step's accepted constant or factor)."""
-    for mistake, hint, v in catalogue_:
-        if usable(a, v) < MIN_POINTS or equal(v, b):
-            continue
-        if _same(a, v, relation):
-            return mistake, hint
+    """The mistake the answer's values match: first one it equals as written, then (an equation) one it equals
+    at the engine's coefficient of the acceleration (``scaled``), then the first up to the step's accepted
+    constant or factor."""
+    tried = [(m, h, v) for m, h, v in catalogue_ if usable(a, v) >= MIN_POINTS and not equal(v, b)]
+    negated = _negated(a) if relation == "factor" else None
+    for test in (lambda v: equal(a, v), lambda v: negated is not None and equal(negated, v),
+                 lambda v: scaled is not None and equal(scaled, v), lambda v: _same(a, v, relation)):  # fmt: skip
+        for mistake, hint, v in tried:
+            if test(v):
+                return mistake, hint
     return None
+
+
+def _negated(a: Values) -> Values:
+    """An equation moved to the other side: every value's sign reversed."""
+    return [[[None if x is None else -x for x in block] for block in draw] for draw in a]
 
 
 def mistake_json(m: Mistake, tex, difference: str = "") -> dict[str, Any]:

@@ -19,48 +19,11 @@ from collections.abc import Mapping
 from fractions import Fraction
 from typing import Any
 
+from app.engine.dimensions import Dims, parse_unit
+from app.engine.dimensions import add_dims as _add
 from app.viz.exprtree import document_tree
 
-Dims = dict[str, Fraction]  # exponents of kg, m, s
-
-_BASE: dict[str, Dims] = {
-    "kg": {"kg": Fraction(1)},
-    "m": {"m": Fraction(1)},
-    "s": {"s": Fraction(1)},
-    "N": {"kg": Fraction(1), "m": Fraction(1), "s": Fraction(-2)},
-    "J": {"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-2)},
-    "W": {"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-3)},
-    "Pa": {"kg": Fraction(1), "m": Fraction(-1), "s": Fraction(-2)},
-    "Hz": {"s": Fraction(-1)},
-    "rad": {},
-    "1": {},
-}
-_SUPERSCRIPTS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻", "0123456789-")
-_FACTOR = re.compile(r"^([A-Za-z]+|1)(?:\^|\*\*)?(-?\d+)?$")
-
-
-def _add(a: Dims, b: Dims, times: Fraction = Fraction(1)) -> Dims:
-    out = dict(a)
-    for k, v in b.items():
-        out[k] = out.get(k, Fraction(0)) + times * v
-    return {k: v for k, v in out.items() if v}
-
-
-def parse_unit(text: str) -> Dims | None:
-    """ "N/m" -> kg s⁻²; "kg·m²" -> kg m²; "" or anything not understood -> None."""
-    text = text.strip().translate(_SUPERSCRIPTS).replace("·", "*").replace("⋅", "*").replace(" ", "*")
-    if not text:
-        return None
-    parts = text.split("/")
-    out: Dims = {}
-    for i, part in enumerate(parts):
-        for factor in filter(None, part.replace("**", "^").split("*")):
-            m = _FACTOR.match(factor)
-            if not m or m.group(1) not in _BASE:
-                return None
-            power = Fraction(int(m.group(2) or 1))
-            out = _add(out, _BASE[m.group(1)], power if i == 0 else -power)
-    return out
+__all__ = ["Dims", "coordinate_units", "dims_of", "parse_unit"]
 
 
 def dims_of(tree: Any, known: Mapping[str, Dims | None]) -> Dims | None:

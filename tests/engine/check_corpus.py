@@ -61,8 +61,8 @@ CORPUS = [
         "-2*m*g*R*cos(theta)",
         "t_plus_u",
     ),
-    ("simple-pendulum", "equation", "theta", "theta_ddot + g*sin(theta)/R", "equivalent", None, None),
-    ("simple-pendulum", "equation", "theta", "-m*R*theta_ddot - m*g*sin(theta)", "equivalent", None, None),
+    ("simple-pendulum", "equation", "theta", "theta_ddot + g*sin(theta)/R", "correct", None, None),
+    ("simple-pendulum", "equation", "theta", "-m*R*theta_ddot - m*g*sin(theta)", "correct", None, None),
     (
         "simple-pendulum",
         "equation",
@@ -79,7 +79,7 @@ CORPUS = [
         "theta_ddot + g*sin(theta)",
         "incorrect",
         "g*sin(theta) - g*sin(theta)/R",
-        "pointer",
+        "units",
     ),
     ("simple-pendulum", "acceleration", "theta", "-2*g*sin(theta/2)*cos(theta/2)/R", "correct", None, None),
     ("simple-pendulum", "omega_squared", None, "sqrt(g/R)", "incorrect", "sqrt(g/R) - g/R", "omega"),
@@ -273,7 +273,7 @@ CORPUS = [
         None,
         None,
     ),
-    ("cart-pendulum", "equation", "phi", "l*phi_ddot + cos(phi)*x_ddot + g*sin(phi)", "equivalent", None, None),
+    ("cart-pendulum", "equation", "phi", "l*phi_ddot + cos(phi)*x_ddot + g*sin(phi)", "correct", None, None),
     (
         "cart-pendulum",
         "equation",
@@ -314,7 +314,7 @@ CORPUS = [
         "h_is_l",
     ),
     ("spring-rod", "momentum", "r", "m*r_dot", "correct", None, None),
-    ("spring-rod", "equation", "r", "r_ddot + (k/m - w**2)*r - k*a/m", "equivalent", None, None),
+    ("spring-rod", "equation", "r", "r_ddot + (k/m - w**2)*r - k*a/m", "correct", None, None),
     ("spring-rod", "omega_squared", None, "(k - m*w**2)/m", "correct", None, None),
     ("spring-rod", "omega_squared", None, "sqrt(k/m - w**2)", "incorrect", "sqrt(k/m - w**2) - k/m + w**2", "omega"),
     # beyond the chapter: the double pendulum and two masses between three springs

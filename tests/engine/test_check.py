@@ -46,6 +46,8 @@ def expected_hint(step: str, hint: str | None) -> str | None:
     kind, _, factor = hint.partition(":")
     if kind == "key":
         return None  # a generated mistake: checked by its key
+    if kind == "units":
+        return "units"
     if kind == "pointer":
         return POINTERS[step]
     if kind == "omega":
@@ -72,6 +74,9 @@ def test_corpus(system, step, coordinate, answer, verdict, difference, hint):
     elif hint in HINTS:
         # a rule's hint, with the system's own reason added where it has one (h ≠ E)
         assert result["hint"].startswith(HINTS[hint]) and result["mistake"]["key"] == hint, result
+    elif hint == "units":
+        # terms whose units disagree (θ̈ is 1/s², g sin θ an acceleration) are named as such
+        assert result["hint"].startswith("Check the units") and result["mistake"]["key"] == "units.mismatch", result
     else:
         assert result["hint"] == expected_hint(step, hint)
     if difference is None:
@@ -85,6 +90,8 @@ def test_corpus(system, step, coordinate, answer, verdict, difference, hint):
     if verdict == "equivalent":
         message = result["message"]
         assert message.startswith("Equivalent:") and ("multiplied by" in message or "plus" in message)
+    if verdict == "correct" and step == "equation":
+        assert result["message"].startswith("Correct:")
 
 
 def test_the_corpus_covers_every_scene_both_systems_and_every_common_mistake():
@@ -110,8 +117,9 @@ def test_equivalent_messages_say_how():
     d = derivation("simple-pendulum")
     potential = judge(problem(d, "potential"), "-m*g*R*cos(theta)")
     assert "plus the constant −mgR" in potential["message"] and "zero of height" in potential["message"]
+    # the page's own form, the engine's equation divided through by m R², is right, and says so
     equation = judge(problem(d, "equation", "theta"), "theta_ddot + g*sin(theta)/R")
-    assert "multiplied by 1/(mR²)" in equation["message"]
+    assert equation["verdict"] == "correct" and "multiplied by 1/(mR²)" in equation["message"]
     spherical = judge(
         problem(derivation("spherical-pendulum"), "equation", "phi"),
         "sin(theta)*phi_ddot + 2*cos(theta)*theta_dot*phi_dot",
@@ -303,6 +311,8 @@ def test_names_of_pieces_read_as_mathematics_not_code():
 
 
 def test_an_unmatched_answer_is_compared_part_by_part():
-    result = judge(problem(derivation("double-pendulum"), "kinetic"), "m1*l1**2*theta1_dot**2/2 + 7*theta2_dot**2")
+    result = judge(
+        problem(derivation("double-pendulum"), "kinetic"), "(m1 + m2)*l1**2*theta1_dot**2/2 + 7*m2*l2**2*theta2_dot**2"
+    )
     assert result["mistake"] is None
     assert result["partial"]["differ"] and "the θ̇₁ θ̇₂ terms" in result["partial"]["differ"]

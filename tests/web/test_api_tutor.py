@@ -52,7 +52,7 @@ def test_a_declared_system_gets_the_same_tutor(client):
 def test_an_unmatched_answer_says_which_parts_agree(client):
     body = client.post(
         "/api/scenes/spherical-pendulum/check",
-        json={"step": "kinetic", "answer": "m*R**2*theta_dot**2/2 + m*R**2*phi_dot**2/2"},
+        json={"step": "kinetic", "answer": "m*R**2*theta_dot**2/2 + 5*m*R**2*cos(theta)*phi_dot**2"},
     ).json()
     assert body["mistake"] is None
     assert body["partial"]["agree"] == ["the θ̇² terms"] and body["partial"]["differ"] == ["the φ̇² terms"]

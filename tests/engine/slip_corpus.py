@@ -1,0 +1,371 @@
+"""Realistic slips: what second-year students write, each with the mistake a teacher would name.
+
+Written before the code that names them (issue 41), from the kinds of slip students make rather than
+from the engine's own mistake families.  Each slip: (system, step, coordinate, answer, named) where
+``named`` is a regular expression, matched case-insensitively against the mistake's key, name and
+hint together, that a right naming must contain.  ``CORRECT`` lists correct answers in unusual forms
+(trigonometric identities, other zeros of U, equations scaled through): every one must be accepted.
+
+The systems beyond the twelve scenes are ``tests.engine.check_corpus.USER_SYSTEMS`` (a cart with a
+pendulum, given as particles; a bead on a spun rod, given by L alone) and two typed with T and U
+here: a uniform rod pivoted at one end (a physical pendulum) and a disc rolling down an incline on a
+spring.
+"""
+
+from __future__ import annotations
+
+from tests.engine.check_corpus import CART_PENDULUM, SPRING_ROD
+
+# A uniform rod of mass m and length l pivoted at one end: I about the pivot m l²/3, centre at l/2.
+ROD_PENDULUM = {
+    "coordinates": ["theta"],
+    "parameters": [
+        {"name": "m", "value": 1.0, "min": 0.1, "unit": "kg"},
+        {"name": "l", "value": 1.0, "min": 0.1, "unit": "m"},
+        {"name": "g", "value": 9.81, "min": 0.1, "unit": "m/s²"},
+    ],
+    "kinetic": "m*l**2*theta_dot**2/6",
+    "potential": "-m*g*l*cos(theta)/2",
+}
+
+# A uniform disc (mass M, radius R) rolling without slipping down an incline of angle alpha, held by a
+# spring k from the top: x along the incline, downward.  T = ½ M ẋ² + ½ (½ M R²)(ẋ/R)².
+ROLLING_DISC = {
+    "coordinates": ["x"],
+    "parameters": [
+        {"name": "M", "value": 1.0, "min": 0.1, "unit": "kg"},
+        {"name": "R", "value": 0.5, "min": 0.1, "unit": "m"},
+        {"name": "k", "value": 10.0, "min": 0.1, "unit": "N/m"},
+        {"name": "g", "value": 9.81, "min": 0.1, "unit": "m/s²"},
+        {"name": "alpha", "value": 0.5, "min": 0.1, "max": 1.5, "unit": "rad"},
+    ],
+    "kinetic": "3*M*x_dot**2/4",
+    "potential": "k*x**2/2 - M*g*x*sin(alpha)",
+}
+
+UNITS = {
+    "cart-pendulum": {"M": "kg", "m": "kg", "l": "m", "k": "N/m", "g": "m/s²", "c": "kg/s"},
+    "spring-rod": {"m": "kg", "k": "N/m", "a": "m", "w": "rad/s"},
+}
+
+
+def _with_units(spec: dict, units: dict[str, str]) -> dict:
+    return {**spec, "parameters": [{**p, "unit": units[p["name"]]} for p in spec["parameters"]]}
+
+
+SYSTEMS = {
+    "cart-pendulum": _with_units(CART_PENDULUM, UNITS["cart-pendulum"]),
+    "spring-rod": _with_units(SPRING_ROD, UNITS["spring-rod"]),
+    "rod-pendulum": ROD_PENDULUM,
+    "rolling-disc": ROLLING_DISC,
+}
+
+TWICE = r"twice|doubled"
+SWAP = r"sin.*cos|cos.*sin|swapp"
+SIGN = r"sign|revers"
+UNITS_WORDS = r"unit|dimension"
+HALF = r"½|half"
+SMALL = r"small|approximat"
+
+SLIPS = [
+    # ---- the simple pendulum: T = ½ m R² θ̇², U = m g R (1 − cos θ)
+    ("simple-pendulum", "equation", "theta", "m*R**2*theta_ddot + 2*m*g*R*sin(theta)", TWICE),
+    ("simple-pendulum", "equation", "theta", "theta_ddot + 2*g*sin(theta)/R", TWICE),
+    ("simple-pendulum", "kinetic", None, "R**2*theta_dot**2/2", r"divid|mass|\bm\b"),
+    ("simple-pendulum", "kinetic", None, "m*R*theta_dot**2/2", UNITS_WORDS + r"|R²"),
+    ("simple-pendulum", "potential", None, "m*g*R*sin(theta)", SWAP),
+    ("simple-pendulum", "equation", "theta", "m*R**2*theta_ddot + m*g*R*cos(theta)", SWAP),
+    ("simple-pendulum", "omega_squared", None, "(m + g)/R", UNITS_WORDS),
+    ("simple-pendulum", "omega_squared", None, "R/g", UNITS_WORDS + r"|upside|invert"),
+    ("simple-pendulum", "equation", "theta", "m*R**2*theta_ddot + m*g*sin(theta)", UNITS_WORDS),
+    ("simple-pendulum", "equation", "theta", "m*R**2*theta_ddot - m*g*R*sin(theta)", SIGN),
+    ("simple-pendulum", "acceleration", "theta", "-g*theta/R", SMALL),
+    # ---- the damped pendulum: the same with Q = −b θ̇
+    ("damped-pendulum", "equation", "theta", "theta_ddot + g*sin(theta)/R + b*theta_dot", UNITS_WORDS),
+    ("damped-pendulum", "equation", "theta", "m*R**2*theta_ddot + m*g*R*theta + b*theta_dot", SMALL),
+    ("damped-pendulum", "equation", "theta", "m*R**2*theta_ddot + m*g*R*sin(theta) + 2*b*theta_dot", TWICE),
+    ("damped-pendulum", "acceleration", "theta", "-g*sin(theta)/R - b*theta_dot/m", UNITS_WORDS),
+    ("damped-pendulum", "kinetic", None, "m*R**2*theta_dot**2", HALF),
+    # ---- the bead on a helix: x = R cos(α z), y = R sin(α z)
+    ("helix-bead", "kinetic", None, "m*(1 + R*alpha)*z_dot**2/2", r"R² ?α²|square|chain"),
+    ("helix-bead", "kinetic", None, "m*(1 + alpha**2)*z_dot**2/2", UNITS_WORDS),
+    ("helix-bead", "kinetic", None, "m*(1 + R**2)*z_dot**2/2", UNITS_WORDS),
+    ("helix-bead", "equation", "z", "m*(1 + R**2*alpha**2)*z_ddot - m*g", SIGN),
+    ("helix-bead", "acceleration", "z", "-g", r"circle|around|horizontal|R α ż|xy|x and y"),
+    ("helix-bead", "potential", None, "m*g*alpha*z", UNITS_WORDS),
+    # ---- the block on a fixed incline: X along the slope
+    ("incline-block", "equation", "X", "m*X_ddot + m*g*cos(alpha)", SWAP),
+    ("incline-block", "equation", "X", "m*X_ddot + 2*m*g*sin(alpha)", TWICE),
+    ("incline-block", "potential", None, "m*g*X*cos(alpha)", SWAP),
+    ("incline-block", "potential", None, "m*g*X", r"sin ?\(?α"),
+    ("incline-block", "acceleration", "X", "-g", r"sin ?\(?α"),
+    ("incline-block", "equation", "X", "X_ddot + m*g*sin(alpha)", UNITS_WORDS),
+    # ---- the puck on a table held by a spring through a hole
+    ("tabletop-spring", "equation", "r", "m*r_ddot + k*r + m*r*theta_dot**2", SIGN + r"|centrifugal"),
+    ("tabletop-spring", "equation", "r", "m*r_ddot + k*r - m*r**2*theta_dot**2", UNITS_WORDS),
+    ("tabletop-spring", "omega_squared", None, "k/m", r"centrifugal|U_eff|angular momentum|p_θ"),
+    ("tabletop-spring", "kinetic", None, "m*(r_dot**2 + r*theta_dot**2)/2", UNITS_WORDS),
+    ("tabletop-spring", "momentum", "theta", "m*r*theta_dot", r"factor|\br\b"),
+    ("tabletop-spring", "equation", "theta", "m*r**2*theta_ddot + m*r*r_dot*theta_dot", HALF + r"|chain"),
+    ("tabletop-spring", "potential", None, "k*r**2", HALF),
+    # ---- the spherical pendulum: T = ½ m R² (θ̇² + sin²θ φ̇²), U = m g R cos θ
+    ("spherical-pendulum", "kinetic", None, "m*R**2*(theta_dot**2 + phi_dot**2)/2", r"sin²|sin\(θ\)"),
+    ("spherical-pendulum", "kinetic", None, "m*R**2*(theta_dot**2 + cos(theta)**2*phi_dot**2)/2", SWAP),
+    (
+        "spherical-pendulum",
+        "equation",
+        "theta",
+        "m*R**2*theta_ddot - m*R**2*sin(theta)*cos(theta)*phi_dot**2 + m*g*R*sin(theta)",
+        SIGN,
+    ),
+    (
+        "spherical-pendulum",
+        "equation",
+        "phi",
+        "m*R**2*sin(theta)**2*phi_ddot + m*R**2*sin(theta)*cos(theta)*theta_dot*phi_dot",
+        HALF + r"|chain",
+    ),
+    ("spherical-pendulum", "momentum", "phi", "m*R**2*phi_dot", r"sin²|factor"),
+    ("spherical-pendulum", "equation", "theta", "m*R**2*theta_ddot - m*g*R*sin(theta)", r"φ̇|sin²|T depends"),
+    ("spherical-pendulum", "potential", None, "m*g*R*sin(theta)", SWAP),
+    # ---- two bodies on a rail joined by a spring of natural length l0
+    ("rail-two-body", "potential", None, "k*(x2 - x1 + l0)**2/2", r"natural length|l₀"),
+    ("rail-two-body", "equation", "x1", "m1*x1_ddot + k*(x2 - x1 - l0)", SIGN),
+    ("rail-two-body", "potential", None, "k*(x1 + x2 - l0)**2/2", r"stretch|x₂ − x₁|x₁ \+ x₂"),
+    ("rail-two-body", "kinetic", None, "m1*x1_dot**2 + m2*x2_dot**2", HALF),
+    ("rail-two-body", "equation", "x2", "m2*x2_ddot + k*(x2 - x1)", r"natural length|l₀"),
+    ("rail-two-body", "potential", None, "k*(x2 - x1 - l0)", r"square|" + UNITS_WORDS),
+    # ---- the movable pulley: it moves half as far as the masses
+    (
+        "pulley",
+        "kinetic",
+        None,
+        "M*(y1_dot + y2_dot)**2/2 + m1*y1_dot**2/2 + m2*y2_dot**2/2",
+        r"half|½|pulley|middle",
+    ),
+    ("pulley", "potential", None, "m1*g*y1 + m2*g*y2 - M*g*(y1 + y2)", r"half|½|pulley|middle"),
+    ("pulley", "equation", "y1", "m1*y1_ddot + g*m1 - M*g/2", r"middle|pulley|\bM\b"),
+    (
+        "pulley",
+        "kinetic",
+        None,
+        "M*(y1_dot**2 + y2_dot**2)/8 + m1*y1_dot**2/2 + m2*y2_dot**2/2",
+        r"cross|ẏ₁ ẏ₂|product",
+    ),
+    # ---- the block on a movable wedge
+    ("movable-incline", "kinetic", None, "M*X_dot**2/2 + m*D_dot**2/2", r"wedge|Ẋ"),
+    (
+        "movable-incline",
+        "kinetic",
+        None,
+        "M*X_dot**2/2 + m*(X_dot**2 + D_dot**2 + 2*X_dot*D_dot*sin(alpha))/2",
+        SWAP,
+    ),
+    ("movable-incline", "equation", "D", "m*D_ddot - m*g*sin(alpha)", r"Ẍ|Ẋ|wedge"),
+    ("movable-incline", "equation", "X", "(M + m)*X_ddot", r"D̈|block"),
+    ("movable-incline", "momentum", "X", "M*X_dot + m*X_dot", r"Ḋ"),
+    ("movable-incline", "equation", "D", "m*D_ddot + m*X_ddot*cos(alpha) - m*g*cos(alpha)", SWAP),
+    # ---- the bead on a spinning parabola z = α ρ²
+    ("rotating-parabola", "omega_squared", None, "2*alpha*g", r"centrifugal|U_eff|ω²|rotation"),
+    ("rotating-parabola", "omega_squared", None, "2*alpha*g + omega**2", SIGN + r"|centrifugal"),
+    ("rotating-parabola", "equation", "rho", "m*rho_ddot + 2*alpha*g*m*rho - m*omega**2*rho", r"ż|vertical|height|z"),
+    (
+        "rotating-parabola",
+        "kinetic",
+        None,
+        "m*(rho_dot**2*(1 + 2*alpha*rho) + omega**2*rho**2)/2",
+        r"square|4 ?α² ?ρ²|chain|ż",
+    ),
+    (
+        "rotating-parabola",
+        "equation",
+        "rho",
+        "m*(1 + 4*alpha**2*rho**2)*rho_ddot + 2*alpha*g*m*rho - m*omega**2*rho",
+        r"chain|ρ̇²|along the motion",
+    ),
+    # ---- two masses between three springs
+    (
+        "coupled-oscillators",
+        "potential",
+        None,
+        "k*(x1**2 + x2**2)/2 + kappa*(x1 + x2)**2/2",
+        r"stretch|x₂ − x₁|x₁ \+ x₂",
+    ),
+    ("coupled-oscillators", "equation", "x1", "m*x1_ddot + k*x1 + kappa*(x2 - x1)", SIGN),
+    ("coupled-oscillators", "equation", "x1", "m*x1_ddot + (k + kappa)*x1", r"κ|x₂|coupling"),
+    ("coupled-oscillators", "kinetic", None, "m*(x1_dot**2 + x2_dot**2)", HALF),
+    ("coupled-oscillators", "potential", None, "k*(x1**2 + x2**2)/2 + kappa*(x2 - x1)/2", r"square|" + UNITS_WORDS),
+    # ---- the double pendulum
+    (
+        "double-pendulum",
+        "kinetic",
+        None,
+        "(m1 + m2)*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2"
+        " + 2*m2*l1*l2*theta1_dot*theta2_dot*cos(theta1 - theta2)",
+        r"cross|doubled|twice",
+    ),
+    (
+        "double-pendulum",
+        "kinetic",
+        None,
+        "(m1 + m2)*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2"
+        " + m2*l1*l2*theta1_dot*theta2_dot*sin(theta1 - theta2)",
+        SWAP,
+    ),
+    (
+        "double-pendulum",
+        "kinetic",
+        None,
+        "m1*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2 + m2*l1*l2*theta1_dot*theta2_dot*cos(theta1 - theta2)",
+        r"m₂|m₁ \+ m₂|lower",
+    ),
+    ("double-pendulum", "potential", None, "-m1*g*l1*cos(theta1) - m2*g*l2*cos(theta2)", r"m₂|m₁ \+ m₂|lower"),
+    ("double-pendulum", "potential", None, "-(m1 + m2)*g*l1*sin(theta1) - m2*g*l2*sin(theta2)", SWAP),
+    (
+        "double-pendulum",
+        "equation",
+        "theta1",
+        "(m1 + m2)*l1**2*theta1_ddot + m2*l1*l2*cos(theta1 - theta2)*theta2_ddot"
+        " + m2*l1*l2*sin(theta1 - theta2)*theta2_dot**2 + m1*g*l1*sin(theta1)",
+        r"m₂|m₁ \+ m₂|lower",
+    ),
+    (
+        "double-pendulum",
+        "equation",
+        "theta2",
+        "m2*l2**2*theta2_ddot + m2*l1*l2*theta1_ddot + m2*g*l2*theta2",
+        SMALL,
+    ),
+    # ---- a cart on a spring with a pendulum and drag (particles)
+    (
+        "cart-pendulum",
+        "kinetic",
+        None,
+        "(M + m)*x_dot**2/2 + m*l**2*phi_dot**2/2 + m*l*sin(phi)*x_dot*phi_dot",
+        SWAP,
+    ),
+    (
+        "cart-pendulum",
+        "equation",
+        "x",
+        "(M + m)*x_ddot + m*l*cos(phi)*phi_ddot - m*l*sin(phi)*phi_dot**2 + k*x - c*x_dot",
+        SIGN,
+    ),
+    ("cart-pendulum", "equation", "phi", "m*l**2*phi_ddot + m*l*cos(phi)*x_ddot + m*g*sin(phi)", UNITS_WORDS),
+    (
+        "cart-pendulum",
+        "kinetic",
+        None,
+        "M*x_dot**2/2 + m*l**2*phi_dot**2/2 + m*l*cos(phi)*x_dot*phi_dot",
+        r"ẋ²|M \+ m|bob",
+    ),
+    ("cart-pendulum", "potential", None, "k*x**2/2 + m*g*l*cos(phi)", SIGN),
+    # ---- a bead on a spun rod with a spring (L alone)
+    ("spring-rod", "omega_squared", None, "k/m", r"centrifugal|w|rotation|U_eff"),
+    ("spring-rod", "omega_squared", None, "k/m + w**2", SIGN + r"|centrifugal"),
+    ("spring-rod", "equation", "r", "m*r_ddot + k*(r - a)", r"w|centrifugal|∂L/∂r"),
+    ("spring-rod", "equation", "r", "m*r_ddot - m*w**2*r + k*(r + a)", r"natural length|\ba\b"),
+    ("spring-rod", "hamiltonian", None, "m*(r_dot**2 + w**2*r**2)/2 + k*(r - a)**2/2", r"h_is_e|energy|\bE\b"),
+    # ---- a rod pivoted at one end (T and U typed)
+    ("rod-pendulum", "kinetic", None, "m*l**2*theta_dot**2/2", r"point mass|moment of inertia|rod"),
+    ("rod-pendulum", "kinetic", None, "m*l**2*theta_dot**2/24", r"centre|pivot|axis"),
+    ("rod-pendulum", "potential", None, "-m*g*l*cos(theta)", r"l/2|centre|half"),
+    ("rod-pendulum", "equation", "theta", "m*l**2*theta_ddot/3 + m*g*l*sin(theta)", r"l/2|centre|half"),
+    ("rod-pendulum", "omega_squared", None, "g/l", r"point mass|rod|moment of inertia|centre"),
+    ("rod-pendulum", "kinetic", None, "m*(l/2)**2*theta_dot**2/2", r"spin|moment of inertia|centre"),
+    ("rod-pendulum", "equation", "theta", "m*l**2*theta_ddot/12 + m*g*l*sin(theta)/2", r"centre|pivot|axis"),
+    ("rod-pendulum", "kinetic", None, "m*l**2*theta_dot**2/12", r"centre|pivot|axis|½|half"),
+    # ---- a disc rolling on an incline, on a spring (T and U typed)
+    ("rolling-disc", "kinetic", None, "M*x_dot**2/2", r"spin|roll|rotation|moment of inertia"),
+    ("rolling-disc", "kinetic", None, "M*x_dot**2/2 + M*R**2*x_dot**2/4", UNITS_WORDS),
+    ("rolling-disc", "kinetic", None, "M*x_dot**2", r"ring|disc|moment of inertia"),
+    ("rolling-disc", "omega_squared", None, "k/M", r"spin|roll|rotation|moment of inertia|effective mass"),
+    ("rolling-disc", "equation", "x", "3*M*x_ddot/2 + k*x + M*g*sin(alpha)", SIGN),
+    ("rolling-disc", "potential", None, "k*x**2/2 - M*g*x*cos(alpha)", SWAP),
+]
+
+# Correct answers in unusual forms: every one must be accepted ("correct", or "equivalent" where the
+# step's relation allows another zero of U or a nonzero factor).
+CORRECT = [
+    ("simple-pendulum", "equation", "theta", "theta_ddot + (g/R)*sin(theta)"),
+    ("simple-pendulum", "equation", "theta", "-R*theta_ddot - g*sin(theta)"),
+    ("simple-pendulum", "potential", None, "-m*g*R*cos(theta)"),
+    ("simple-pendulum", "potential", None, "2*m*g*R*sin(theta/2)**2"),
+    ("simple-pendulum", "kinetic", None, "m*(R*theta_dot)**2/2"),
+    ("simple-pendulum", "acceleration", "theta", "-g*sin(theta)/R"),
+    ("simple-pendulum", "omega_squared", None, "g/R"),
+    ("simple-pendulum", "hamiltonian", None, "m*R**2*theta_dot**2/2 + m*g*R*(1 - cos(theta))"),
+    ("simple-pendulum", "lagrangian", None, "m*R**2*theta_dot**2/2 + m*g*R*cos(theta)"),
+    ("damped-pendulum", "equation", "theta", "theta_ddot + b*theta_dot/(m*R**2) + g*sin(theta)/R"),
+    ("damped-pendulum", "acceleration", "theta", "-(b*theta_dot + m*g*R*sin(theta))/(m*R**2)"),
+    ("helix-bead", "kinetic", None, "m*(R**2*alpha**2*z_dot**2 + z_dot**2)/2"),
+    ("helix-bead", "equation", "z", "z_ddot + g/(1 + R**2*alpha**2)"),
+    ("helix-bead", "potential", None, "m*g*(z - 5)"),
+    ("incline-block", "equation", "X", "X_ddot + g*sin(alpha)"),
+    ("incline-block", "potential", None, "m*g*X*cos(pi/2 - alpha)"),
+    ("incline-block", "kinetic", None, "m*X_dot**2*(sin(alpha)**2 + cos(alpha)**2)/2"),
+    ("tabletop-spring", "equation", "r", "r_ddot - r*theta_dot**2 + k*r/m"),
+    ("tabletop-spring", "equation", "theta", "r*theta_ddot + 2*r_dot*theta_dot"),
+    ("tabletop-spring", "momentum", "theta", "m*r**2*theta_dot"),
+    ("tabletop-spring", "kinetic", None, "m*(r_dot**2 + (r*theta_dot)**2)/2"),
+    ("spherical-pendulum", "kinetic", None, "m*R**2*(theta_dot**2 + (1 - cos(theta)**2)*phi_dot**2)/2"),
+    ("spherical-pendulum", "equation", "phi", "sin(theta)*phi_ddot + 2*cos(theta)*theta_dot*phi_dot"),
+    ("spherical-pendulum", "equation", "theta", "theta_ddot - sin(2*theta)*phi_dot**2/2 - g*sin(theta)/R"),
+    ("spherical-pendulum", "potential", None, "m*g*R*(cos(theta) + 1)"),
+    ("rail-two-body", "potential", None, "k*(x1 - x2 + l0)**2/2"),
+    ("rail-two-body", "equation", "x2", "m2*x2_ddot + k*(x2 - x1 - l0)"),
+    ("rail-two-body", "kinetic", None, "(m1*x1_dot**2 + m2*x2_dot**2)/2"),
+    ("pulley", "kinetic", None, "M*(y1_dot + y2_dot)**2/8 + m1*y1_dot**2/2 + m2*y2_dot**2/2"),
+    ("pulley", "potential", None, "g*(m1*y1 + m2*y2) - M*g*(y1 + y2)/2 + 10"),
+    ("pulley", "equation", "y1", "(4*m1 + M)*y1_ddot + M*y2_ddot + 4*g*m1 - 2*M*g"),
+    ("movable-incline", "momentum", "X", "(M + m)*X_dot + m*D_dot*cos(alpha)"),
+    ("movable-incline", "equation", "D", "D_ddot + X_ddot*cos(alpha) - g*sin(alpha)"),
+    (
+        "movable-incline",
+        "kinetic",
+        None,
+        "M*X_dot**2/2 + m*((X_dot + D_dot*cos(alpha))**2 + D_dot**2*sin(alpha)**2)/2",
+    ),
+    ("rotating-parabola", "omega_squared", None, "2*alpha*g - omega**2"),
+    ("rotating-parabola", "kinetic", None, "m*(rho_dot**2 + (2*alpha*rho*rho_dot)**2 + (omega*rho)**2)/2"),
+    ("rotating-parabola", "potential", None, "m*g*alpha*rho**2"),
+    ("coupled-oscillators", "potential", None, "(k + kappa)*(x1**2 + x2**2)/2 - kappa*x1*x2"),
+    ("coupled-oscillators", "equation", "x2", "m*x2_ddot + (k + kappa)*x2 - kappa*x1"),
+    (
+        "double-pendulum",
+        "kinetic",
+        None,
+        "m1*l1**2*theta1_dot**2/2 + m2*((l1*theta1_dot*cos(theta1) + l2*theta2_dot*cos(theta2))**2"
+        " + (l1*theta1_dot*sin(theta1) + l2*theta2_dot*sin(theta2))**2)/2",
+    ),
+    ("double-pendulum", "potential", None, "-(m1 + m2)*g*l1*cos(theta1) - m2*g*l2*cos(theta2)"),
+    (
+        "double-pendulum",
+        "equation",
+        "theta2",
+        "l2*theta2_ddot + l1*cos(theta1 - theta2)*theta1_ddot - l1*sin(theta1 - theta2)*theta1_dot**2 + g*sin(theta2)",
+    ),
+    (
+        "double-pendulum",
+        "kinetic",
+        None,
+        "(m1 + m2)*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2"
+        " + m2*l1*l2*theta1_dot*theta2_dot*(cos(theta1)*cos(theta2) + sin(theta1)*sin(theta2))",
+    ),
+    ("cart-pendulum", "equation", "phi", "l*phi_ddot + cos(phi)*x_ddot + g*sin(phi)"),
+    (
+        "cart-pendulum",
+        "kinetic",
+        None,
+        "M*x_dot**2/2 + m*((x_dot + l*cos(phi)*phi_dot)**2 + (l*sin(phi)*phi_dot)**2)/2",
+    ),
+    ("spring-rod", "equation", "r", "r_ddot + (k/m - w**2)*r - k*a/m"),
+    ("spring-rod", "omega_squared", None, "k/m - w**2"),
+    ("rod-pendulum", "kinetic", None, "(m*l**2/3)*theta_dot**2/2"),
+    ("rod-pendulum", "equation", "theta", "2*l*theta_ddot + 3*g*sin(theta)"),
+    ("rod-pendulum", "omega_squared", None, "3*g/(2*l)"),
+    ("rod-pendulum", "potential", None, "m*g*l*(1 - cos(theta))/2"),
+    ("rolling-disc", "kinetic", None, "M*x_dot**2/2 + (M*R**2/2)*(x_dot/R)**2/2"),
+    ("rolling-disc", "omega_squared", None, "2*k/(3*M)"),
+    ("rolling-disc", "equation", "x", "x_ddot + 2*k*x/(3*M) - 2*g*sin(alpha)/3"),
+]
