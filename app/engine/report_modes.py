@@ -24,8 +24,15 @@ from app.engine.textbook import unicode_text
 def _show(expr: sp.Expr) -> sp.Expr:
     """Hamilton's expressions are compact as built: only common factors are pulled out (once per document:
     the steps and the JSON block show the same ones)."""
-    # (sin² + cos² of one argument collapsed first: p_θ/(mR²), not p_θ/(mR² sin² θ + mR² cos² θ))
-    return memoized("hamilton-shown", expr, lambda: sp.factor_terms(pythagoras(expr)))
+    return memoized("hamilton-shown", expr, lambda: sp.factor_terms(_collapsed(expr)))
+
+
+def _collapsed(expr: sp.Expr) -> sp.Expr:
+    """sin² + cos² of one argument collapsed (p_θ/(mR²), not p_θ/(mR² sin² θ + mR² cos² θ)), kept only when that
+    shortens the expression: collapsing expands, and the double pendulum's ṗ₁ over (m₁ + m₂ sin²(θ₁ − θ₂))² would
+    come back multiplied out, several times as long."""
+    collapsed = pythagoras(expr)
+    return collapsed if sp.count_ops(collapsed) < sp.count_ops(expr) else expr
 
 
 def hamilton_printer(d: Derivation, ham: Hamilton) -> Printer:

@@ -32,8 +32,8 @@ from collections.abc import Callable
 
 import mpmath
 import numpy as np
-import scipy.linalg
 
+from app import late
 from app.numerics.system import NumericSystem
 
 Solution = Callable[[np.ndarray], np.ndarray]  # t -> array of shape (len(t), 2n): (q, q_dot)
@@ -155,9 +155,10 @@ def constant_accelerations(system: NumericSystem, k: np.ndarray) -> np.ndarray |
 def linear_motion(B: np.ndarray, y0: np.ndarray) -> Solution:
     """y(t) from ż = B z, z = (y, 1): z(t) = exp(B t) z(0), for each t (scaling and squaring)."""
     z0 = np.append(y0, 1.0)
+    expm = late.module("scipy.linalg").expm  # imported with the first linear run, not with the app
 
     def solution(t: np.ndarray) -> np.ndarray:
-        return np.array([(scipy.linalg.expm(B * float(ti)) @ z0)[:-1] for ti in np.asarray(t, dtype=float)])
+        return np.array([(expm(B * float(ti)) @ z0)[:-1] for ti in np.asarray(t, dtype=float)])
 
     return solution
 

@@ -92,7 +92,7 @@ def test_an_empty_form_derives_nothing(client):
 @pytest.mark.parametrize(
     ("query", "field", "words"),
     [
-        ({"q": "x", "form": "energies", "T": "x_dot**2", "U": "x^2"}, "f-U", "write x**2"),
+        ({"q": "x", "form": "energies", "T": "x_dot**2", "U": "2^x^2"}, "f-U", "2^(x^2)"),
         (
             {"q": "x", "form": "energies", "pn": "k", "pv": "lots", "T": "x_dot**2", "U": "k*x"},
             "f-param-0-value",
