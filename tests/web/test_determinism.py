@@ -20,7 +20,7 @@ import pytest
 
 from tests.web.determinism import differences, three_runs
 
-pytestmark = pytest.mark.slow
+pytestmark = [pytest.mark.slow, pytest.mark.load]
 
 
 def test_the_same_requests_get_the_same_bodies_idle_under_load_and_after():
