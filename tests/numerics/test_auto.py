@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 
 from app.engine.derive import derive
-from app.numerics.choose import analyse, choose
 from app.numerics import limits as numerics_limits
+from app.numerics.choose import analyse, choose
 from app.numerics.errors import TooMuchWork
 from app.numerics.methods import FALLBACK_STIFF, METHODS, NONSTIFF, STIFF
 from app.numerics.simulate import simulate
