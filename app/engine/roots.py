@@ -200,6 +200,11 @@ def search(
             candidates.append(sol.x)
     found: list[np.ndarray] = []
     for x in candidates:
+        # merging costs a comparison with each root kept: counted with the evaluations, so a system whose
+        # conditions vanish along a whole curve (thousands of roots) ends its merge where its search would
+        used += len(found)
+        if used >= 2 * evaluations:
+            break
         y = wrap(x, periodic)
         # checked after wrapping: an iterate far out (theta = 1e6) has a residual large in absolute terms
         if any(y[i] < -1e-12 for i in nonnegative) or not _is_root(G, y, rows_at(y)):

@@ -92,7 +92,8 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
     stuck, mistake = page.locator("#now-stuck"), page.locator("#now-mistake")
     assert stuck.get_attribute("data-step") == "potential"
     assert "Double pendulum" in stuck.inner_text() and "4 of 6 stuck" in stuck.inner_text()
-    assert stuck.locator(".now-what").inner_text().startswith("U")  # the step by its symbol
+    # the step by its symbol: U as typeset (KaTeX's italic 𝑈), or as plain text before the fonts arrive
+    assert stuck.locator(".now-what").inner_text().split()[0] in ("U", "\N{MATHEMATICAL ITALIC CAPITAL U}")
     assert mistake.get_attribute("data-count") == "6"
     assert "The sign of U" in mistake.inner_text() and "6×" in mistake.inner_text()  # totalled over two scenes
     for selector in ("#now-stuck .now-what", "#now-stuck .now-figure", "#now-mistake .now-what",

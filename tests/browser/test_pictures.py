@@ -59,10 +59,11 @@ def test_forces_of_constraint_appear_behind_the_toggle(page, artifacts):
     assert page.evaluate(DRAWN)["forces"] == [] and page.evaluate(DRAWN)["wheels"] == 3
     page.check("#show-forces-animation-2d")
     arrows = page.evaluate(DRAWN)["forces"]
-    assert [a["name"] for a in arrows] == ["string tension"]
-    # the tension pulls the left mass up: the arrow points up the screen from the mass
-    (arrow,) = arrows
-    assert arrow["value"] > 0 and arrow["ty"] < arrow["y"] and arrow["tx"] == arrow["x"]
+    # the one string pulls each of the three masses it holds: an arrow on each
+    assert [a["name"] for a in arrows] == ["string tension"] * 3
+    # the tension pulls every mass up: each arrow points straight up the screen from its mass
+    for arrow in arrows:
+        assert arrow["value"] > 0 and arrow["ty"] < arrow["y"] and arrow["tx"] == arrow["x"]
     page.locator("[data-panel^=animation]").screenshot(path=artifacts / "pulley-forces.png")
     page.uncheck("#show-forces-animation-2d")
     assert page.evaluate(DRAWN)["forces"] == []
