@@ -122,11 +122,14 @@ def _patch(cls: Any) -> None:
         self._lg_paused_total = 0.0
         self._lg_address = _peer(transport)
         if self._lg_address is not None:
-            GUARD.open[self._lg_address] += 1
-            if GUARD.open[self._lg_address] > GUARD.limit("per_address"):
+            if GUARD.open[self._lg_address] >= GUARD.limit("per_address"):
+                # Refused and never counted: the count is of connections served, so it never
+                # exceeds the cap even while a refused socket's close is still under way.
+                self._lg_address = None
                 transport.write(REFUSAL)
                 transport.close()
                 return
+            GUARD.open[self._lg_address] += 1
         _arm(self)
 
     def data_received(self: Any, data: bytes) -> None:
