@@ -103,6 +103,40 @@ def expression_size(text: str, names: Collection[str]) -> Size:
     return Size(facts.terms, facts.degree)
 
 
+# an operator that needs something after it: a formula cannot end with one
+_DANGLING = ("**", "+", "-", "*", "/", "^")
+
+
+def _unreadable(text: str, stripped: str, written: Typed, exc: SyntaxError) -> ExpressionError:
+    """Python's complaint about a formula, in a student's words and at the place it names (issue 40).
+
+    Python reports a formula that ends with an operator (``m g l +``) at its first column; the place that
+    is wrong is the operator at the end, so that one is named.
+    """
+    end = stripped.rstrip()
+    dangling = next((op for op in _DANGLING if end.endswith(op)), None)
+    if dangling is not None:
+        column = len(end) - len(dangling)
+    else:
+        column = min(max((exc.offset or 1) - 1, 0), max(len(stripped) - 1, 0))
+    at = written.span(column, column + 1)[0]
+    first, last = max(at - 10, 0), min(at + 10, len(text))
+    near = text[first:last]
+    if dangling is not None:
+        typed_end = text.rstrip()
+        op = dangling if typed_end.endswith(dangling) else typed_end[-1]  # ^ as typed, not the ** it became
+        why = f"the formula ends with {op!r} at column {at + 1}: something is missing after it"
+    elif "was never closed" in exc.msg:
+        why = f"the {text[at]!r} at column {at + 1} is never closed: a ')' is missing"
+    elif exc.msg.startswith("unmatched"):
+        why = f"the {text[at]!r} at column {at + 1} has no opening bracket before it"
+    elif exc.msg in ("invalid syntax", "invalid decimal literal"):
+        why = f"this cannot be read as a formula at column {at + 1}"
+    else:  # gate 0's own advice (write m1*l1: a * between factors) or Python's plain reason
+        why = f"this cannot be read as a formula at column {at + 1} ({exc.msg})"
+    return ExpressionError(f"{why}, near {near!r}", near, first, last)
+
+
 def _checked(text: str, names: Collection[str]) -> tuple[ast.Expression, Facts, Typed]:
     if not isinstance(text, str):
         raise ExpressionError("an expression must be a string")
@@ -121,11 +155,7 @@ def _checked(text: str, names: Collection[str]) -> tuple[ast.Expression, Facts, 
     try:
         tree = ast.parse(stripped, mode="eval")
     except SyntaxError as exc:
-        column = min(max((exc.offset or 1) - 1, 0), max(len(stripped) - 1, 0))
-        at = written.span(column, column + 1)[0]
-        first, last = max(at - 10, 0), min(at + 10, len(text))
-        near = text[first:last]
-        raise ExpressionError(f"syntax error at column {at + 1} ({exc.msg}), near {near!r}", near, first, last) from None
+        raise _unreadable(text, stripped, written, exc) from None
     except (RecursionError, MemoryError, ValueError):
         raise ExpressionError("expression could not be read (too deeply nested?)") from None
     count = sum(isinstance(node, ast.expr) for node in ast.walk(tree))

@@ -423,6 +423,14 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
     table = d.table
     r = table.q[table.names.index(red.coordinate)]
     rn = pr.tex(r)
+    # The constant of this first integral is the conserved energy E where h = E, else h itself (a rotating
+    # frame's bead): the page's own letter for it, never a new E_r (issue 40).
+    level = "E" if d.energetics.h_equals_e else "h"
+    # ½ m_eff ṙ² followed by U_eff exactly as the step before prints it (centrifugal piece first)
+    rd = table.qd[table.names.index(red.coordinate)]
+    u_eff = pr.tex(effective_potential(d), red.momenta[0] if red.momenta else None)
+    kinetic = pr.tex(sp.factor_terms(red.radial_energy - red.effective_potential), rd)
+    radial = f"{kinetic} {u_eff}" if u_eff.startswith("-") else f"{kinetic} + {u_eff}"
     out: list[dict[str, str]] = []
     if red.cyclic_velocities:
         out.append(
@@ -452,9 +460,9 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
         _step(
             "energy-integral",
             "Energy first integral",
-            [rf"E_r = {pr.tex(red.radial_energy)}"],
+            [rf"{level} = {radial}"],
             red.radial_energy,
-            f"The conserved h, written in {unicode(red.coordinate)} alone: a first-order equation for "
+            f"The conserved {level}, written in {unicode(red.coordinate)} alone: a first-order equation for "
             f"{unicode(red.coordinate)}.",
         )
     )
@@ -462,7 +470,7 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
         _step(
             "time-integral",
             "Time as an integral",
-            [rf"t = \int \sqrt{{\frac{{m_\text{{eff}}}}{{2\,\left(E_r - U_\text{{eff}}({rn})\right)}}}}\, d{rn}"],
+            [rf"t = \int \sqrt{{\frac{{m_\text{{eff}}}}{{2\,\left({level} - U_\text{{eff}}({rn})\right)}}}}\, d{rn}"],
             red.time_integral,
             f"Separating variables in the energy integral gives the time to reach each {unicode(red.coordinate)}, "
             "with m_eff and U_eff as in the step before.",

@@ -29,7 +29,7 @@ HELIX_BEAD = Scene(
             MASS,
             GRAVITY,
             Parameter("R", 0.5, "m", 0.01, 10.0, "radius of the helix"),
-            Parameter("alpha", 4.0, "rad/m", 0.01, 100.0, "turns of the helix per height: φ = α z"),
+            Parameter("alpha", 4.0, "rad/m", 0.01, 100.0, "winding of the helix: φ = α z, in radians of turn per metre of height"),
         ),
         particles=(Particle("m", ("R*cos(alpha*z)", "R*sin(alpha*z)", "z"), "bead"),),
         potential="m*g*z",

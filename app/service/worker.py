@@ -61,6 +61,7 @@ from typing import Any
 import pebble.pool.process
 from pebble import ProcessExpired, ProcessPool
 
+from app.engine import work
 from app.errors import OverCapacity, Refused, WorkerFailed
 from app.numerics.paths import use_user_folder
 from app.service import disk, resident
@@ -195,6 +196,7 @@ def initialize_worker(memory_mb: int, retire_mb: int = 0, owner: int = 0, users:
 def execute(function: Callable[..., Any], *args: Any) -> Any:
     """Run a job in the worker, deciding whether the worker retires after it."""
     global _retiring
+    work.start_afresh()  # each job's count of work, and so what its bounds let through, is its own
     try:
         return function(*args)
     except REFUSALS:

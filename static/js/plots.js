@@ -55,8 +55,14 @@ class EnergyPanel extends TimePanel {
       ?? "Only L was given, so E cannot be told apart from h: the curve labelled E is h.";
     if (run.data.forced) what += " A non-conservative generalized force acts, so the change is physical, not numerical.";
     // a change within the run's energy resolution is the integration's error, not a number to read
-    const change = (d) => { const big = Math.max(...finite(d).map(Math.abs)); return big <= run.resolution ? "≈ 0 (within the error)" : fmt(big / scale); };
-    this.readout.textContent = `Largest change since t = 0, relative to the energy scale ${fmt(scale)} J: E by ${change(dE)}, h by ${change(dh)}. ${what}`;
+    // each change named with its unit, and as a share of the run's largest energy (so 0.9 reads as 90 %)
+    const change = (d) => {
+      const big = Math.max(...finite(d).map(Math.abs));
+      if (big <= run.resolution) return "≈ 0 (within the integration's error)";
+      const share = big / scale;
+      return `${fmt(big)} J (${share >= 0.01 ? `${fmt(100 * share)} %` : `${fmt(share)}`} of the largest energy in the run, ${fmt(scale)} J)`;
+    };
+    this.readout.textContent = `Largest change since t = 0: E changed by ${change(dE)}; h changed by ${change(dh)}. ${what}`;
     seriesTable(this.summary, "Energies over the run (J)", run.t, [...top, ...bottom]);
   }
 }

@@ -92,7 +92,7 @@ REFUSALS = [
     ("ｓｉｎ(x)", "beyond ASCII only Greek letters", "ｓ"),
     ("x[0]", "not allowed", "["),
     ("x;y", "not allowed", ";"),
-    ("x +", "syntax error", "x +"),
+    ("x +", "ends with '+' at column 3", "x +"),
     ("", "empty", ""),
     ("(x+y+m+g)**64", "expand into more than", "(x+y+m+g)**64"),
     ("((x+1)**64)**64", "grow too large", "((x+1)**64)**64"),

@@ -54,7 +54,7 @@ def test_a_declared_system_is_checked_like_a_scene(client):
 @pytest.mark.parametrize(
     ("body", "loc", "detail"),
     [
-        ({"step": "kinetic", "answer": "m*R**2*theta_dot**2/"}, ["body", "answer"], "syntax error"),
+        ({"step": "kinetic", "answer": "m*R**2*theta_dot**2/"}, ["body", "answer"], "ends with '/' at column 20"),
         ({"step": "kinetic", "answer": "m*v**2/2"}, ["body", "answer"], "unknown name (allowed here: R, g, m, t"),
         ({"step": "potential", "answer": "m*g*theta_dot"}, ["body", "answer"], "U depends on positions only"),
         ({"step": "momentum", "answer": "m*R**2*theta_dot"}, ["body", "coordinate"], "give one of: theta"),
