@@ -72,14 +72,15 @@ from app.engine.compare import (
 )
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json
 from app.engine.dimensions import dimension, mismatch
+from app.engine.mistake_answer import linearised, missing_square
 from app.engine.mistake_families import Mistake
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, POINTERS
 from app.engine.parse import Parsed
 from app.engine.report import Printer, display
 from app.engine.textbook import unicode_text
 from app.engine.work import WorkExceeded
+from app.limits import ANSWER_SLIP_WORK, DIFFERENCE_WORK, FACTOR_WORK, PARTS_WORK
 from app.limits import CHECK_DISPLAY_WORK as DISPLAY_WORK
-from app.limits import DIFFERENCE_WORK, FACTOR_WORK, PARTS_WORK
 
 __all__ = [
     "MIN_POINTS",
@@ -351,4 +352,13 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str:
         if factor is not None:
             template = CONSTANT_FACTOR_HINT if factor_is_constant(b, a) else MISSING_FACTOR_HINT
             return template.format(factor=unicode_text(factor))
+    # slips read from the answer itself (app/engine/mistake_answer.py)
+    if pb.step in ("kinetic", "lagrangian", "hamiltonian"):
+        found = _budgeted(lambda: missing_square(answer, b, pb.groups), None, ANSWER_SLIP_WORK)
+        if found is not None:
+            return found
+    if pb.step == "equation":
+        found = _budgeted(lambda: linearised(a, truth, pb.groups), None, ANSWER_SLIP_WORK)
+        if found is not None:
+            return found
     return POINTERS[pb.step]

@@ -190,22 +190,26 @@ def mismatch(expr: sp.Expr, known: Mapping[sp.Symbol, Dims], want: Dims | None, 
         return e.offence
     if got is None or want is None or got == want:
         return None
-    # the factor that would make it right, in words: a mass missing, a length too many
+    # the factor that would make it right, in words: a mass missing, a length too many; or upside down
     missing = add_dims(want, got, Fraction(-1))
     extra = add_dims(got, want, Fraction(-1))
+    inverted = bool(want) and got == {k: -v for k, v in want.items()}
     factor = (
-        f"a factor of {quantity(missing).removeprefix('a ').removeprefix('an ')} ({unit_text(missing)}) is missing"
+        "it is upside down: the reciprocal of what is asked for (numerator and denominator swapped)"
+        if inverted
+        else f"a factor of {described(missing).removeprefix('a ').removeprefix('an ')} is missing"
         if all(v > 0 for v in missing.values())
-        else f"it has a factor of {quantity(extra).removeprefix('a ').removeprefix('an ')} ({unit_text(extra)}) "
-        "too many"
+        else f"it has a factor of {described(extra).removeprefix('a ').removeprefix('an ')} too many"
         if all(v > 0 for v in extra.values())
         else f"they differ by {unit_text(missing)}"
     )
-    return Offence(
-        expr,
-        f"your {what} is {quantity(got)} ({unit_text(got)}), but {what} is {quantity(want)} ({unit_text(want)}): "
-        f"{factor}",
-    )
+    return Offence(expr, f"your {what} is {described(got)}, but {what} is {described(want)}: {factor}")
+
+
+def described(d: Dims) -> str:
+    """A dimension in words with its unit, once: "a mass (kg)", "a squared rate (1/s²)", "a quantity in s⁴"."""
+    words = quantity(d)
+    return words if "(" in words or words.startswith("a quantity in") or not d else f"{words} ({unit_text(d)})"
 
 
 def known_dimensions(

@@ -165,7 +165,8 @@ def kinetic_mistakes(d: Derivation) -> Iterator[Mistake]:
                 yield Mistake(
                     f"kinetic.velocity_part.{key}.{q.name}",
                     "velocity_part",
-                    f"the part of the {body}'s velocity that comes from {unicode(qd.name)}, {shown}",
+                    # not its size: the piece shows it, and the follow-up asks for it
+                    f"the part of the {body}'s velocity that comes from {unicode(qd.name)}",
                     speed,
                     f"the {body}'s position depends on {unicode(q.name)}, so the {body} also moves when "
                     f"{unicode(q.name)} changes: its velocity has the part (∂r/∂{unicode(q.name)}) "
@@ -192,7 +193,7 @@ def kinetic_mistakes(d: Derivation) -> Iterator[Mistake]:
                 yield Mistake(
                     f"kinetic.moving_constraint.{key}",
                     "moving_constraint",
-                    f"the part of the {body}'s velocity that comes from the moving constraint, {shown}",
+                    f"the part of the {body}'s velocity that comes from the moving constraint",
                     speed,
                     f"the {body}'s position depends on t itself (the constraint moves), so its velocity has the "
                     f"part ∂r/∂t, of size {shown}, even when no coordinate changes",

@@ -244,19 +244,21 @@ RULES: tuple[Rule, ...] = (
         _equation("sign_of_dl_dq"),
         "the sign of ∂L/∂q",
     ),
-    Rule(
-        "h_is_l",
-        ("hamiltonian",),
-        "That is L. The Hamiltonian is h = Σ p q̇ − L; for T quadratic in the velocities it comes to T + U, not T − U.",
-        _h_as_l,
-        "h written as L",
-    ),
+    # h written as E is tried first: where h ≠ E and U = 0, L and E are one expression, and the h-is-L
+    # hint ("it comes to T + U") would teach the very slip the student made
     Rule(
         "h_is_e",
         ("hamiltonian",),
         "That is the energy E = T + U. Here h ≠ E because a constraint moves with time: h = Σ p q̇ − L = T₂ − T₀ + U.",
         _h_as_e,
         "h written as the energy E = T + U",
+    ),
+    Rule(
+        "h_is_l",
+        ("hamiltonian",),
+        "That is L. The Hamiltonian is h = Σ p q̇ − L; for T quadratic in the velocities it comes to T + U, not T − U.",
+        _h_as_l,
+        "h written as L",
     ),
 )
 

@@ -207,8 +207,9 @@ def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
         return (
             ("Closed forms are shown where they are known; " if some_exact else "")
             + "a numerical search over a full period of every angle, at the default parameters, found "
-            + (("no others" if all(e.exact for e in found) else "the rest") if some_exact else "them")
-            + " (roots lying very close together could still escape it)."
+            + (("no others." if all(e.exact for e in found) else "the rest") if some_exact else "them")
+            # a caveat only where some equilibrium rests on the search alone
+            + ("" if some_exact and all(e.exact for e in found) else " (roots lying very close together could still escape it).")
         )
     if some_exact:
         return (

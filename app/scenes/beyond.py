@@ -11,14 +11,14 @@ DOUBLE_PENDULUM = Scene(
     beyond_chapter=True,
     summary="Two normal modes at the bottom, three unstable equilibria above it, and chaos at high energy.",
     statement=(
-        "A bob of mass m1 hangs from a fixed pivot on a rigid massless rod of length l1; a second bob of mass m2 "
-        "hangs from the first on a rod of length l2. Both swing in one vertical plane, with θ1 and θ2 measured "
+        "A bob of mass m₁ hangs from a fixed pivot on a rigid massless rod of length l₁; a second bob of mass m₂ "
+        "hangs from the first on a rod of length l₂. Both swing in one vertical plane, with θ₁ and θ₂ measured "
         "from the downward vertical. Derive the equations of motion, find the four equilibria and the normal "
         "modes about each, and follow a swing wide enough that the motion becomes chaotic."
     ),
     figure=(
-        "A pivot at the top, a rod of length l1 to the first bob at angle θ1 from the downward vertical, a rod "
-        "of length l2 from it to the second bob at angle θ2."
+        "A pivot at the top, a rod of length l₁ to the first bob at angle θ₁ from the downward vertical, a rod "
+        "of length l₂ from it to the second bob at angle θ₂."
     ),
     system=System(
         coordinates=("theta1", "theta2"),

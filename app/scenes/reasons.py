@@ -13,7 +13,10 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 # Steps every scene shares whose reason depends only on the scene's conservative, autonomous L.
-_LEGENDRE = "Inverting p = M q̇ for the velocities is the first step of writing h as a function of q and p."
+_LEGENDRE = (
+    "Solving the momenta, which are linear in the velocities, for the velocities is the first step of writing h "
+    "as a function of q and p."
+)
 
 
 def _hamiltonian(what: str) -> dict[str, str]:
@@ -45,7 +48,7 @@ SIMPLE_PENDULUM: dict[str, str] = {
     **_hamiltonian("p_θ²/(2 m R²) + m g R (1 − cos θ)"),
     "effective-potential": "With a single coordinate there is nothing to fold in: U_eff is U itself.",
     "energy-integral": "Energy conservation gives θ̇ as a function of θ, one integration from the motion.",
-    "time-integral": "The period of a wide swing is this integral between the turning points, an elliptic integral.",
+    "time-integral": "Taken between the turning points, this integral is half the period of a wide swing (there and back is a whole one): an elliptic integral.",
     "reduced-equilibria": "The bottom (θ = 0) is stable with ω² = g/R; the top (θ = π) is unstable.",
     "equilibria": "sin θ = 0 at the bottom and at the top of the circle, and nowhere else.",
     "normal-modes": "Linearising sin θ about each equilibrium gives ω² = g/R at the bottom and −g/R at the top.",
@@ -160,7 +163,7 @@ TABLETOP_SPRING: dict[str, str] = {
     "cyclic-velocities": "θ̇ = p_θ/(m r²) with p_θ fixed by the initial push.",
     "effective-potential": "The spring's ½ k r² plus the centrifugal barrier p_θ²/(2 m r²).",
     "energy-integral": "The radial motion alone, at fixed p_θ, conserves this energy.",
-    "time-integral": "Integrating between the turning points of U_eff gives the radial period.",
+    "time-integral": "Integrating between the turning points of U_eff gives half the radial period: out and back in again is a whole one.",
     "reduced-equilibria": "The circular orbit sits where the spring balances the centrifugal force.",
     "equilibria": "No position of rest other than at the anchor: the spring pulls everything else in.",
     "steady-motion": "About the circular orbit r oscillates at ω² = 4k/m, twice the spring's own frequency.",
@@ -190,7 +193,7 @@ SPHERICAL_PENDULUM: dict[str, str] = {
     "cyclic-velocities": "φ̇ = p_φ/(m R² sin² θ) with p_φ fixed by the initial push.",
     "effective-potential": "Gravity plus the barrier p_φ²/(2 m R² sin² θ) that keeps the ball off the axis.",
     "energy-integral": "At fixed p_φ, θ moves in U_eff between two turning angles.",
-    "time-integral": "The time between the turning angles is the period of the nodding motion.",
+    "time-integral": "The time between the turning angles is half the period of the nodding motion: down and up again is a whole one.",
     "reduced-equilibria": "The conical motion sits at the bottom of U_eff, below the horizontal.",
     "equilibria": "At rest the ball can hang at the bottom or balance at the top.",
     "steady-motion": "About the conical motion θ nods with the frequency given by U_eff″ at its bottom.",
@@ -230,7 +233,7 @@ RAIL_TWO_BODY: dict[str, str] = {
 
 
 PULLEY: dict[str, str] = {
-    "action": "The masses move so that ∫ L dt is stationary between two positions; with constant gravity and no spring there is no kinetic focus, and the motion is the least for any time.",
+    "action": "The masses move so that ∫ L dt is stationary between two positions; with constant gravity and no spring there is no kinetic focus, and the true path is a minimum of the action for every duration.",
     "positions": "The end masses hang at heights y₁ and y₂; the string fixes the middle mass at −(y₁ + y₂)/2.",
     "velocities": "The middle mass moves at −(ẏ₁ + ẏ₂)/2, half the sum of the ends' speeds.",
     "squared-speeds": "Each mass moves vertically only.",
@@ -255,7 +258,7 @@ PULLEY: dict[str, str] = {
 
 
 MOVABLE_INCLINE: dict[str, str] = {
-    "action": "Block and wedge move so that ∫ L dt is stationary between two configurations; every force is constant, so there is no kinetic focus and the motion is the least for any time.",
+    "action": "Block and wedge move so that ∫ L dt is stationary between two configurations; every force is constant, so there is no kinetic focus and the true path is a minimum of the action for every duration.",
     "positions": "The wedge is at X; the block is D down its slope: (X + D cos α, −D sin α).",
     "velocities": "The block's velocity adds the wedge's Ẋ to its own slide Ḋ along the slope.",
     "squared-speeds": "The slide and the wedge's motion are at angle α, hence the cross term 2 Ẋ Ḋ cos α.",

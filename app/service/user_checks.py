@@ -115,8 +115,14 @@ def check_system(system: UserSystem) -> dict[tuple, Parsed]:
             raise InvalidSystem(f"{_where(loc)}: min {low:g} is larger than max {high:g}", loc)
         if (low is not None and value < low) or (high is not None and value > high):
             loc = ("parameters", i, "value")
-            span = f"{'-inf' if low is None else f'{low:g}'} to {'inf' if high is None else f'{high:g}'}"
-            raise InvalidSystem(f"{_where(loc)}: {value:g} is outside the allowed range, {span}", loc)
+            # which end it passes, in words: "below its least value, 1e-09" rather than a range to infinity
+            if low is not None and value < low:
+                edge = f"is below the least value allowed for {p.name}, {low:g}" + (
+                    " (it must be positive)" if low > 0 and low < 1e-6 else ""
+                )
+            else:
+                edge = f"is above the largest value allowed for {p.name}, {high:g}"
+            raise InvalidSystem(f"{_where(loc)}: {value:g} {edge}", loc)
 
     forms = [bool(system.particles), system.kinetic is not None, system.lagrangian is not None]
     if sum(forms) != 1:

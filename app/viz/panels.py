@@ -156,11 +156,10 @@ PANELS: tuple[Panel, ...] = (
     Panel(
         "phase",
         "Phase portrait",
-        "A coordinate against its rate of change. For one degree of freedom (or a reduction to one) the grey "
-        "curves are level sets of the Hamiltonian, each a possible orbit; the dashed red curve through the "
-        "unstable equilibria (red diamonds) is the separatrix between swinging and going over the top, green dots "
-        "are stable equilibria, and angles are wrapped into (−π, π]. The blue curve is this run and the red dot "
-        "the current state.",
+        "A coordinate against its rate of change: the blue curve is this run and the red dot the current state. "
+        "With one degree of freedom (or a reduction to one) the grey curves are level sets of the Hamiltonian, "
+        "each a possible orbit; green dots mark stable equilibria, red diamonds unstable ones, and the dashed red "
+        "curve through an unstable one separates motions of different kinds. An angle is shown in (−π, π].",
         "always (level sets with one degree of freedom or a reduction to one)",
         lambda f: True,
     ),
@@ -211,8 +210,8 @@ PANELS: tuple[Panel, ...] = (
         "action",
         "The action",
         "Hamilton's principle: the true motion makes the action S = ∫ L dt stationary among paths with the same "
-        "ends. Drag the dashed path (or use ε) to vary one coordinate by ε sin(kπt/T); the lower plots show L "
-        "along both paths and S against ε, flat at ε = 0. Move T past the kinetic focus and the true path stops "
+        "ends. Drag the dashed path (or use ε) to vary one coordinate by ε sin(nπt/τ) over a time τ (n = 1, 2, …: the shape); the lower plots show L "
+        "along both paths and S against ε, flat at ε = 0. Move τ past the kinetic focus and the true path stops "
         "being a minimum: it becomes a saddle of S.",
         "always (every system has an L)",
         lambda f: True,

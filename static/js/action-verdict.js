@@ -21,7 +21,7 @@ function bound(x, unit) {
 
 const ADVICE = {
   "closer-trial": "drag the trial path nearer the true path (a smaller ε)",
-  "shorter-t": "choose a shorter T",
+  "shorter-t": "choose a shorter τ",
   "from-shooting": "start from the shooting solution (the button “Start from the shooting solution”)",
 };
 
@@ -34,7 +34,7 @@ export function verdict(f, { q, label, unit, rateUnit, T, steps: gridSteps }) {
   if (f.found) {
     const what = f.kind === "minimum"
       ? "It is a minimum of the discrete action: every small change of the path raises S."
-      : `It is a saddle of the discrete action, not a minimum: ${f.negative_directions} direction${f.negative_directions > 1 ? "s" : ""} of change lower${f.negative_directions > 1 ? "" : "s"} S, because T = ${fmt(T)} s is past the kinetic focus.`;
+      : `It is a saddle of the discrete action, not a minimum: ${f.negative_directions} direction${f.negative_directions > 1 ? "s" : ""} of change lower${f.negative_directions > 1 ? "" : "s"} S, because τ = ${fmt(T)} s is past the kinetic focus.`;
     const text = `Newton's method made the discrete action stationary in ${newton} step${newton === 1 ? "" : "s"}, and the path it found is the path of a true motion between these ends. `
       + `The shooting solution (${start}) runs along it to within ${bound(f.difference, unit)}; `
       + `halving the time step of the ${gridSteps}-step grid moves the path by at most ${bound(3 * f.error_estimate, unit)}, and the extrapolated path shown is closer still. ${what}`;
@@ -51,7 +51,7 @@ export function verdict(f, { q, label, unit, rateUnit, T, steps: gridSteps }) {
     why.push(`No true motion runs along it: the shooting solution between the same ends (${start}) differs from it by up to ${bound(f.difference, unit)}.`);
   }
   if (f.reasons.includes("no-shooting")) {
-    why.push(`No motion from the start reaches the end point at T = ${fmt(T)} s by shooting, so there is nothing to check the curve against.`);
+    why.push(`No motion from the start reaches the end point at τ = ${fmt(T)} s by shooting, so there is nothing to check the curve against.`);
   }
   const tips = f.advice.map((a) => ADVICE[a]).filter(Boolean);
   const todo = tips.length ? ` To find it: ${tips.length > 1 ? `${tips.slice(0, -1).join(", ")}, or ${tips[tips.length - 1]}` : tips[0]}.` : "";

@@ -69,11 +69,11 @@ export class ActionPanel {
     tools.insertAdjacentHTML("beforeend", `
       <div class="action-controls" style="display:flex;flex-wrap:wrap;gap:0.4rem 1rem;align-items:center">
         ${names.length > 1 ? group(`<label for="${id("coordinate")}">Vary</label> <select id="${id("coordinate")}">${names.map((q, i) => `<option value="${i}">${this.label(q)}</option>`).join("")}</select>`) : ""}
-        ${group(`<label for="${id("k")}">Shape k</label> <select id="${id("k")}">${Array.from({ length: 6 }, (_, j) => `<option value="${j + 1}">${j + 1}</option>`).join("")}</select>`)}
+        ${group(`<label for="${id("k")}">Shape n</label> <select id="${id("k")}">${Array.from({ length: 6 }, (_, j) => `<option value="${j + 1}">${j + 1}</option>`).join("")}</select>`)}
         ${group(`<label for="${id("eps")}">ε</label> <input type="range" id="${id("eps")}" min="-1" max="1" step="0.01" value="0">`)}
         ${group(`<button type="button" id="${id("find")}" aria-pressed="false">Find the path</button> <button type="button" id="${id("relax")}" hidden>Relax</button>`)}
         <button type="button" id="${id("from-shooting")}" hidden>Start from the shooting solution</button>
-        ${group(`<label for="${id("T")}">T</label> <input type="range" id="${id("T")}" min="${this.tEnd / 200}" max="${this.tEnd}" step="${this.tEnd / 200}" value="${this.T}"> <output id="${id("T-value")}" for="${id("T")}"></output>`)}
+        ${group(`<label for="${id("T")}">Duration τ</label> <input type="range" id="${id("T")}" min="${this.tEnd / 200}" max="${this.tEnd}" step="${this.tEnd / 200}" value="${this.T}"> <output id="${id("T-value")}" for="${id("T")}"></output>`)}
       </div>`);
     this.epsInput = tools.querySelector(`#${id("eps")}`);
     this.TInput = tools.querySelector(`#${id("T")}`);
@@ -155,7 +155,7 @@ export class ActionPanel {
     const key = `${this.T}|${Array.from(y0)}|${Array.from(k)}`;
     if (newPath || !this.live || this.pathKey !== key) {
       const p = path(this.fns.rhs, y0, k, this.T);
-      if (!p) { this.readout.textContent = "The true path leaves the region where L can be evaluated; choose a shorter T."; return; }
+      if (!p) { this.readout.textContent = "The true path leaves the region where L can be evaluated; choose a shorter τ."; return; }
       let lo = Infinity, hi = -Infinity;
       for (const y of p.Y) { lo = Math.min(lo, y[this.coordinate]); hi = Math.max(hi, y[this.coordinate]); }
       this.epsMax = Math.max(0.2, 0.6 * (hi - lo));
@@ -234,7 +234,9 @@ export class ActionPanel {
     const variedQ = trueQ.map((v, i) => v + this.eps * Math.sin(w * t[i]));
     const curve = s ? s.action : live.curve, S0 = s ? s.true : live.truth.S;
     const kind = s ? s.kind : live.kind;
-    const tStar = s && s.conjugate_time !== null ? s.conjugate_time : this.focusAt;
+    // the server looks for the focus up to τ only; the browser's search reaches the end of the run, so a focus
+    // past τ comes from it (else the panel said "no kinetic focus before 10 s" at τ = 1 s and t* = 1.57 s at τ = 2 s)
+    const tStar = s && s.conjugate_time !== null && s.conjugate_time !== undefined ? s.conjugate_time : this.focusAt;
     // the browser's S(ε) - S(0) (the same quadrature for both) on top of the shown S(0)
     const Snow = S0 + (live.now.S - live.truth.S);
     const traces = [
@@ -276,9 +278,14 @@ export class ActionPanel {
       ? `No kinetic focus before ${fmt(this.tEnd)} s.`
       : `The first kinetic focus (conjugate point) of this start is at t* = ${fmt(tStar)} s${tStar <= T ? ", marked on the time axis" : ""}.`;
     let verdict;
-    if (kind === "minimum") verdict = `With T = ${fmt(T)} s the true path is a minimum of S: every variation with the same ends raises it.`;
-    else if (kind === "saddle") verdict = `With T = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S: it is a saddle, and ${live.second.some((x) => x < 0) ? `the variation with k = ${live.second.findIndex((x) => x < 0) + 1}` : "a combination of the sine shapes"} lowers S. S is still stationary: its tangent at ε = 0 stays flat.`;
-    else verdict = `With T = ${fmt(T)} s every variation tried lowers S: the true path is a maximum among them.`;
+    const pastFocus = tStar !== null && tStar !== undefined && tStar < T;
+    if (kind === "minimum" && pastFocus) {
+      // the shapes tried all raise S, but past the focus some variation lowers it: never call it a minimum there
+      verdict = `With τ = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S: the sine shapes tried `
+        + "all raise S, but some other variation with the same ends lowers it. S is still stationary: its tangent at ε = 0 stays flat.";
+    } else if (kind === "minimum") verdict = `With τ = ${fmt(T)} s, before any kinetic focus, the true path is a minimum of S: every variation with the same ends raises it.`;
+    else if (kind === "saddle") verdict = `With τ = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S: it is a saddle, and ${live.second.some((x) => x < 0) ? `the variation with n = ${live.second.findIndex((x) => x < 0) + 1}` : "a combination of the sine shapes"} lowers S. S is still stationary: its tangent at ε = 0 stays flat.`;
+    else verdict = `With τ = ${fmt(T)} s every variation tried lowers S: the true path is a maximum among them.`;
     if (this.data.forced) {
       verdict = "Forces Q that no potential describes act here, so the true path makes δS + ∫ Q·δq dt vanish rather than "
         + `making S stationary: S(ε) is not flat at ε = 0. Its curvature still shows how S bends (here ${kind === "minimum" ? "upward for every shape tried" : "downward for some shape"}).`;
@@ -287,12 +294,14 @@ export class ActionPanel {
     const diff = Snow - S0;
     const yours = this.eps === 0
       ? "your path is the true path (drag it, or move ε, to vary it)"
-      : `S of your path (ε = ${fmt(this.eps)}, k = ${this.shape}) = ${fmt(Snow)} J·s, ${diff >= 0 ? "higher" : "lower"} by ${fmt(Math.abs(diff))}`;
+      : `S of your path (ε = ${fmt(this.eps)}${unit ? ` ${unit}` : ""}, n = ${this.shape}) = ${fmt(Snow)} J·s, ${diff >= 0 ? "higher" : "lower"} by ${fmt(Math.abs(diff))} J·s`;
+    // every number with its unit: ε is in the coordinate's unit, so d²S/dε² is in J·s per unit²
+    const curvature = unit ? ` J·s/${unit}²` : "";
     this.readout.textContent = `S of the true path = ${fmt(S0)} J·s; ${yours}. `
-      + `d²S/dε² at ε = 0 is ${fmt(second)}. ${verdict} ${focusWords}`
-      + (s ? ` Server: S to ±${fmt(s.error_estimate)}, dS/dε at 0 ${flatWithin(s) ? "≈ 0 (within the error)" : `= ${fmt(s.first_variation)}`}.${s.warnings?.length && !this.data.forced ? ` Note: ${s.warnings.join("; ")}.` : ""}` : " Computed in your browser; the server's numbers follow.");
+      + `d²S/dε² at ε = 0 is ${fmt(second)}${curvature}. ${verdict} ${focusWords}`
+      + (s ? ` The server's more accurate figures: S to within ±${fmt(s.error_estimate)} J·s, and dS/dε at ε = 0 ${flatWithin(s) ? "≈ 0 (within that error)" : `= ${fmt(s.first_variation)} J·s${unit ? `/${unit}` : ""}`}.${s.warnings?.length && !this.data.forced ? ` Note: ${s.warnings.join("; ")}.` : ""}` : " Computed in your browser; the server's more accurate figures follow.");
     if (this.summary && s) {
-      table(this.summary, `S(ε) for the shape k = ${this.shape}, T = ${fmt(T)} s`, ["ε", "S (J·s)"], s.epsilons.map((e, i) => [fmt(e), fmt(s.action[i])]));
+      table(this.summary, `S(ε) for the shape n = ${this.shape}, τ = ${fmt(T)} s`, ["ε", "S (J·s)"], s.epsilons.map((e, i) => [fmt(e), fmt(s.action[i])]));
     }
   }
 
@@ -412,7 +421,7 @@ export class ActionPanel {
     this.section.dataset.source = f ? "server" : "preview";
     delete this.section.dataset.relaxed;
     if (!f) {
-      this.readout.textContent = `Find the path: the ends are fixed at t = 0 and t = T = ${fmt(this.T)} s. Drag the points of the trial path (the ends too), then press Relax: the app makes the discretised action stationary and shows each Newton step.`;
+      this.readout.textContent = `Find the path: the ends are fixed at t = 0 and t = τ = ${fmt(this.T)} s. Drag the points of the trial path (the ends too), then press Relax: the app makes the discretised action stationary and shows each Newton step.`;
       return;
     }
     if (this.frame !== null && this.frame !== undefined) {

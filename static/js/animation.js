@@ -212,7 +212,8 @@ export class Player {
     if (this.timeOut) {
       // the current state in words: a text alternative that follows the animation
       const { data, state } = this.run;
-      const parts = data.coordinates.map((q) => `${data.labels[q] || q} = ${state[q][this.index].toFixed(3)} ${data.units[q] || ""}`.trim());
+      // a typeset minus sign, as everywhere else on the page
+      const parts = data.coordinates.map((q) => `${data.labels[q] || q} = ${state[q][this.index].toFixed(3).replace("-", "−")} ${data.units[q] || ""}`.trim());
       this.timeOut.textContent = [`t = ${this.run.t[this.index].toFixed(2)} s`, ...parts].join(" · ");
     }
     this.onFrame(this.index);

@@ -150,8 +150,8 @@ export class PhasePanel extends PreviewPanel {
     react(this, [{ type: "scatter", mode: "lines", x: path.x, y: path.v, name: "this run", line: { color: COLORS.T, width: 1.5 } }],
       layout({ hovermode: "closest", xaxis: axis(titled(lq, unit), angle ? { range: [-Math.PI, Math.PI] } : {}), yaxis: axis(titled(run.data.labels[q + "_dot"], rateUnit(run.data, q))) }));
     this.section.dataset.separatrix = "";
-    this.readout.textContent = `${lq} against its rate (level sets of H need one degree of freedom or a reduction to one; `
-      + `here every coordinate matters).${angle ? " The angle is shown in (−π, π]." : ""}`;
+    this.readout.textContent = `${lq} against its rate, for this run: with more than one coordinate moving, the orbit may `
+      + `cross itself, and no curves of constant energy can be drawn in this plane.${angle ? " The angle is shown in (−π, π]." : ""}`;
     seriesTable(this.summary, `Phase portrait of ${lq}`, run.t, [{ name: lq, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[q + "_dot"], values: run.state[`${q}_dot`] }]);
   }
 

@@ -9,7 +9,7 @@
  * server (seconds, off the event loop) for the server's run only, and only once the panel is
  * in view; answers are kept per request so a repeated run costs nothing.
  */
-import { axis, drawWhenVisible, layout, PALETTE, parts, react } from "./plotkit.js";
+import { axis, drawWhenVisible, layout, momentumUnit, PALETTE, parts, react } from "./plotkit.js";
 import { wrap } from "./phase.js";
 import { fmt, table } from "./summaries.js";
 
@@ -62,7 +62,7 @@ export class PoincarePanel {
     react(this, traces, layout({
       hovermode: "closest", height: 360,
       xaxis: axis(`${lq} (${units[q] || ""})`, angle ? { range: [-Math.PI, Math.PI] } : {}),
-      yaxis: axis(`p of ${lq}`),
+      yaxis: axis(`momentum p of ${lq} (${momentumUnit(units[q])})`),
     }));
     const points = s.orbits.reduce((a, o) => a + o.q.length, 0);
     this.section.dataset.points = String(points);

@@ -14,10 +14,13 @@
  * <details> opens, and when elements are added under root (tables built from a server answer): at the
  * next frame, then at most twice a second while elements keep coming (readouts change every frame).
  */
-const BOXES = ".math-display, .table-scroll, .summary-box dd, .data-summary .table, .frequencies, .practice-engine";
+const BOXES = ".math-display, .table-scroll, .summary-box dd, .data-summary .table, .frequencies, .practice-engine, "
+  + ".practice-preview, .verdict-difference, .verdict-piece";
 
 function label(box) {
-  if (box.matches(".math-display, .summary-box dd")) return "Formula, scrolls sideways";
+  if (box.matches(".math-display, .summary-box dd, .practice-preview, .verdict-difference, .verdict-piece")) {
+    return "Formula, scrolls sideways";
+  }
   const caption = box.querySelector("caption");
   return `${caption ? caption.textContent.trim() : "Table"}, scrolls sideways`;
 }

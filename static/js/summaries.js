@@ -65,8 +65,9 @@ export const short = (x) => (Number.isFinite(x) ? fmt(Number(x.toPrecision(2))) 
  */
 export function statusLine(stats) {
   const parts = [`Simulated ${short(stats.t_end_reached)} s`];
+  // what each number is: the error bound in the coordinates' own units, the server's time to compute the run
   if (Number.isFinite(stats.error_estimate)) parts.push(stats.error_estimate > 0 ? `error ≈ ${magnitude(stats.error_estimate)}` : "error ≈ 0");
-  if (Number.isFinite(stats.wall_time_s)) parts.push(`${short(stats.wall_time_s * 1000)} ms`);
+  if (Number.isFinite(stats.wall_time_s)) parts.push(`computed in ${short(stats.wall_time_s * 1000)} ms`);
   return parts.join(" · ");
 }
 

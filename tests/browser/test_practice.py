@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import unicodedata
+
 import pytest
 
 pytestmark = pytest.mark.browser
@@ -137,3 +139,47 @@ def test_a_named_mistake_its_piece_and_its_follow_up(page, artifacts):
     assert verdict.locator(".verdict-mistake").count() == 0
     assert page.locator("#practice .katex-error").count() == 0
     assert [e for e in page.console_errors if "status of 429" not in e] == []
+
+
+# A slip with a follow-up question on two more scenes, at the desktop size and on a phone with touch:
+# (scene, step, the slip, the mistake's key, words of its name, the follow-up's answer)
+NAMED_WITH_FOLLOW_UP = [
+    ("movable-incline", "kinetic", "M*X_dot**2/2 + m*D_dot**2/2", "kinetic.velocity_part.block.X",
+     "the part of the block's velocity that comes from Ẋ", "X_dot"),
+    ("rail-two-body", "potential", "k*(x2 - x1)**2/2", "potential.natural_length.k_l0_x1_x2",
+     "the spring's natural length l₀", "x2 - x1 - l0"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("size", ["desktop", "phone"])
+@pytest.mark.parametrize(("scene", "step", "slip", "key", "name", "follow"), NAMED_WITH_FOLLOW_UP)
+def test_the_named_slip_its_piece_and_follow_up_at_both_sizes(browser, live_server, artifacts, size, scene, step,
+                                                              slip, key, name, follow):  # fmt: skip
+    phone = size == "phone"
+    viewport = {"width": 390, "height": 844} if phone else {"width": 1366, "height": 768}
+    context = browser.new_context(base_url=live_server, viewport=viewport, has_touch=phone, is_mobile=phone)
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    try:
+        page.goto(f"/scenes/{scene}?practice")
+        page.wait_for_selector(STEP.format(step))
+        box = page.locator(STEP.format(step)).locator("input[name]")
+        box.fill(slip)
+        box.press("Enter")
+        verdict = verdict_of(page, step)
+        mistake = verdict.locator(".verdict-mistake")
+        mistake.wait_for()
+        assert verdict.get_attribute("data-verdict") == "incorrect"
+        shown = unicodedata.normalize("NFC", mistake.inner_text())
+        assert mistake.get_attribute("data-key") == key and unicodedata.normalize("NFC", name) in shown
+        assert mistake.locator(".verdict-piece .katex").is_visible()  # the piece, typeset
+        # nothing of the verdict is cut off on the phone: it fits the screen's width
+        assert verdict.evaluate("e => e.getBoundingClientRect().right") <= viewport["width"] + 1
+        follow_up = verdict.locator(".verdict-follow-up")
+        follow_up.locator("input").fill(follow)
+        follow_up.locator("input").press("Enter")
+        page.wait_for_selector(STEP.format(step) + ' .follow-up-verdict[data-verdict="correct"]')
+        verdict.screenshot(path=artifacts / f"practice-{scene}-{size}.png")
+        assert page.locator("#practice .katex-error").count() == 0
+    finally:
+        context.close()
