@@ -84,10 +84,10 @@ def _label(step: str, name: str | None, d: Derivation) -> str:
         "kinetic": "kinetic energy T",
         "potential": "potential energy U",
         "lagrangian": "Lagrangian L",
-        "momentum": f"momentum p_{shown}",
+        "momentum": f"momentum conjugate to {shown}",  # no p_θ in running text: an underscore is code
         "equation": f"Euler–Lagrange equation for {shown}",
         "acceleration": f"acceleration of {shown}",
-        "hamiltonian": "Hamiltonian h",
+        "hamiltonian": "energy function h",
         "omega_squared": "ω² of small oscillations",
     }[step]
 

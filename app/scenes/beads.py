@@ -61,11 +61,11 @@ ROTATING_PARABOLA = Scene(
     section="4.6–4.7",
     family="rotating-wire",
     reasons=reasons.ROTATING_PARABOLA,
-    summary="A constraint that moves with time: the Hamiltonian h is conserved while the energy E is not.",
+    summary="A constraint that moves with time: the energy function h is conserved while the energy E is not.",
     statement=(
         "A wire shaped as the parabola z = α ρ² (ρ the distance from the vertical axis) is turned about that axis "
         "by a motor at the constant rate ω. A bead of mass m slides on it without friction. With ρ as the "
-        "coordinate, derive the equation of motion, compare the Hamiltonian h with the energy E, and explain "
+        "coordinate, derive the equation of motion, compare the energy function h with the energy E, and explain "
         "which one is conserved."
     ),
     figure=(

@@ -66,7 +66,7 @@ SECTIONS: tuple[Section, ...] = (
     ),
     Section(
         "4.6",
-        "The Hamiltonian h = Σ p q̇ − L",
+        "The energy function h = Σ p q̇ − L",
         "The quantity conserved when L does not depend on time explicitly, built from the momenta and the Lagrangian.",
     ),
     Section(

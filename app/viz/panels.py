@@ -132,7 +132,7 @@ PANELS: tuple[Panel, ...] = (
     Panel(
         "energy",
         "Energy against time",
-        "Kinetic energy T, potential energy U, their sum E and the Hamiltonian h. The lower plot shows how far E "
+        "Kinetic energy T, potential energy U, their sum E and the energy function h. The lower plot shows how far E "
         "and h have moved since t = 0: numerical drift, or a real loss where a force dissipates.",
         "always",
         lambda f: True,

@@ -52,7 +52,7 @@ def scene_route(
     summary="Simulate a scene",
     description=(
         "Integrate the engine's equations of motion from the given initial state. Returns evenly spaced samples "
-        "of the state, the energy E, the Hamiltonian h, each conserved quantity and constraint force, and stats: "
+        "of the state, the energy E, the energy function h, each conserved quantity and constraint force, and stats: "
         "the method (and why 'auto' chose it), steps, right-hand-side evaluations, wall time, an estimate of the "
         "global error of the coordinates (from a second, more accurate run), drifts and warnings."
     ),

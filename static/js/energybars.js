@@ -22,7 +22,7 @@ export class EnergyBars {
     if (run.T) rows.push({ key: "T", name: "T", title: "kinetic energy", values: run.T, color: COLORS.T });
     if (run.U) rows.push({ key: "U", name: "U", title: "potential energy", values: run.U, color: COLORS.U });
     if (run.energy) rows.push({ key: "E", name: "E", title: "T + U", values: run.energy, color: COLORS.E });
-    if (run.hamiltonian && !run.data.h_equals_e) rows.push({ key: "h", name: "h", title: "the Hamiltonian", values: run.hamiltonian, color: COLORS.h });
+    if (run.hamiltonian && !run.data.h_equals_e) rows.push({ key: "h", name: "h", title: "the energy function", values: run.hamiltonian, color: COLORS.h });
     let lo = 0, hi = 0;
     for (const r of rows) for (const v of r.values) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
     this.lo = lo; this.span = Math.max(hi - lo, 1e-300);

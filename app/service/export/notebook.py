@@ -266,7 +266,7 @@ def _simulation(source: Source, naming: Naming, energy: str) -> list:
             "## Simulation",
             "The accelerations above, integrated with scipy's DOP853 (rtol 1e-10, atol 1e-12) from the start "
             "given in the problem; then the coordinates and the change of "
-            + ("the energy E" if energy == "E" else "the Hamiltonian h")
+            + ("the energy E" if energy == "E" else "the energy function h")
             + " against time.",
         ),
         _code(
