@@ -211,7 +211,9 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
             shown,
             hint,
             mistake=mistake_json(mistake, printer.tex, shown["latex"]),
-            partial=partial_json(mistake, short_label(pb.step, pb.label)),
+            # "everything else is right" only where the answer is this mistake and nothing more (never for a
+            # whole of the wrong units: a second slip may hide behind it)
+            partial=partial_json(mistake, short_label(pb.step, pb.label)) if _whole_mistake(pb, a, mistake) else None,
             follow_up=follow_up_json(mistake, allowed_names(mistake.follow_up.kind, pb.kinds))
             if mistake.follow_up
             else None,
@@ -223,6 +225,18 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         else None
     )
     return _verdict("incorrect", message, shown, _hint(pb, answer, a, b, truth), partial=partial)
+
+
+def _whole_mistake(pb: Problem, a: Values, mistake: Mistake) -> bool:
+    """Whether the answer is the mistake's own wrong answer (up to the step's accepted constant or factor)."""
+    if mistake.family == "units" or mistake.expr is None:
+        return False
+    v = _known(mistake.expr, pb.groups)
+    return (
+        equal(a, v)
+        or (pb.relation == "constant" and differ_by_constant(a, v))
+        or (pb.relation == "factor" and differ_by_factor(a, v))
+    )
 
 
 def _at_engines_scale(pb: Problem, answer: sp.Expr, a: Values, truth: sp.Expr) -> Values | None:

@@ -117,8 +117,8 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
             "the whole of this piece belongs in the answer (a factor 2 from differentiating a square, or from "
             "the chain rule, is easily lost)", truth - p / 2,
         )  # fmt: skip
-        yield Mistake(f"{base}.left_out.{term_key(p)}", "left_out", shown, p, "this term belongs in the answer",
-                      truth - p)  # fmt: skip
+        yield Mistake(f"{base}.left_out.{term_key(p)}", "left_out", shown, p,
+                      LEFT_OUT_WHY.get(step, "this term belongs in the answer"), truth - p)  # fmt: skip
         if step == "hamiltonian" and not p.has(*rates):
             yield Mistake(
                 f"{base}.sign_of_velocity_free.{key}", "term_sign", f"the sign of {shown}", p,
@@ -127,7 +127,7 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
             )  # fmt: skip
         if not (step == "equation" and p.has(*d.table.qdd)):  # (that sign is the rest's, a rule names it)
             yield Mistake(f"{base}.sign.{key}", "term_sign", f"the sign of {shown}", p,
-                          "each term's sign follows from the derivation", truth - 2 * p)  # fmt: skip
+                          SIGN_WHY.get(step, "each term's sign follows from the derivation"), truth - 2 * p)  # fmt: skip
         if step != "momentum":  # a momentum short of a factor is named by that factor (app.engine.check)
             yield from _factors(p, truth, base, key, rates, d.table.params)
         if p.has(sp.sin, sp.cos):
@@ -184,6 +184,29 @@ def _factors(p: sp.Expr, truth: sp.Expr, base: str, key: str, rates: tuple, para
             )  # fmt: skip
 
 
+# Why a term left out, or a term's sign, is wrong, in the words of the step it belongs to
+LEFT_OUT_WHY = {
+    "kinetic": "every body's ½ m v² gives all of its terms, one for each coordinate that moves it and the cross terms "
+    "between them",
+    "potential": "U adds m g × height for every mass and ½ k × stretch² for every spring",
+    "lagrangian": "L = T − U keeps every term of T and of U",
+    "momentum": "p = ∂L/∂q̇ takes every term of L that holds this velocity",
+    "equation": "d/dt(∂L/∂q̇) and ∂L/∂q each give terms: differentiate every term of L that holds this coordinate or "
+    "its velocity",
+    "acceleration": "solving the equations for q̈ keeps every term they hold",
+    "hamiltonian": "h = Σ p q̇ − L keeps every term of L, some with their sign changed",
+}
+SIGN_WHY = {
+    "kinetic": "½ m v² is a sum of squares: its terms are positive, and a cross term takes the sign of its cosine",
+    "potential": "U is +m g × height with the height measured upward: check which way the coordinate moves the mass",
+    "lagrangian": "L = T − U: U's terms change sign in L",
+    "momentum": "p = ∂L/∂q̇ keeps the sign each term has in L",
+    "equation": "in d/dt(∂L/∂q̇) − ∂L/∂q = Q the terms of ∂L/∂q change sign",
+    "acceleration": "moving a term across the equals sign changes its sign",
+    "hamiltonian": "in h = Σ p q̇ − L the part of L free of velocities changes sign",
+}
+
+
 def _sums(truth: sp.Expr, base: str) -> Iterator[Mistake]:
     """The sign of one term inside a sum held in a square or a product: (x₂ − x₁ − l₀) as (x₁ + x₂ − l₀)."""
     inner = [a for a in sp.preorder_traversal(truth) if isinstance(a, sp.Add) and a != truth]
@@ -195,11 +218,19 @@ def _sums(truth: sp.Expr, base: str) -> Iterator[Mistake]:
             if wrong in seen:
                 continue
             seen.append(wrong)
+            # the reason fits where the sum sits: inside a sine or cosine it is an angle between two directions
+            # (the rods' θ₁ − θ₂), elsewhere a stretch or a distance between two ends
+            angle = any(isinstance(f, sp.sin | sp.cos) and a in f.args for f in truth.atoms(sp.sin, sp.cos))
+            why = (
+                "the angle between two directions is the difference of their angles from the same reference"
+                if angle
+                else "a stretch is the change in length, the far end minus the near end, less the natural length"
+            )
             yield Mistake(
                 f"{base}.inner_sign.{slug(sp.sstr(a))[:32]}.{slug(sp.sstr(term))[:16]}", "inner_sign",
-                f"{spoken(changed)} in place of {spoken(a)}: the sign of {spoken(term)} (a stretch is the change in "
-                "length, the far end minus the near end, less the natural length)", a,
-                "draw the two ends and ask which way each coordinate moves them", wrong,
+                f"{spoken(changed)} in place of {spoken(a)}: the sign of {spoken(term)} ({why})", a,
+                "draw the two directions and measure both angles from the same line" if angle
+                else "draw the two ends and ask which way each coordinate moves them", wrong,
             )  # fmt: skip
 
 

@@ -193,7 +193,8 @@ RULES: tuple[Rule, ...] = (
     Rule(
         "t_plus_u",
         ("lagrangian",),
-        "You added U to T; the Lagrangian is L = T − U.",
+        "Your L is T + U, and the Lagrangian is L = T − U: either U was added to T, or U's sign is reversed (U is "
+        "+m g × height with the height measured upward, so check which way each coordinate moves a mass up or down).",
         _t_plus_u,
         "L written as T + U",
     ),
