@@ -72,10 +72,57 @@ _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _FUNCTIONS = frozenset({"sin", "cos", "tan", "exp", "log", "sqrt", "Abs", "sinh", "cosh", "tanh", "pi"})
 
 
+_GREEK = frozenset(
+    "alpha beta gamma delta epsilon zeta eta theta iota kappa lambda mu nu xi pi rho sigma tau upsilon phi chi psi "
+    "omega".split()
+)
+
+
+def _rank(factor: sp.Expr) -> tuple[int, int, str]:
+    """A factor's place in a product as a textbook writes it: numbers, masses, sums of masses, other constants
+    (Latin letters before Greek), rates, then functions: m₂ l₁ l₂ θ̇₁ θ̇₂ cos(θ₁ − θ₂), 2 g α, m g R cos θ,
+    (M + m) Ẋ²/2."""
+    if factor.is_number:
+        return (0, 0, "")
+    if factor.is_Add:
+        return (1, 1, sp.sstr(factor))
+    base = factor.base if factor.is_Pow else factor
+    if isinstance(base, sp.Symbol):
+        name = base.name
+        if name.endswith("_dot") or name.endswith("_ddot"):
+            return (3, 0, name.lower())
+        stem = name.rstrip("0123456789_").lower()
+        if stem == "m":
+            return (1, 0, name.lower())
+        return (2, int(stem in _GREEK), name.lower())
+    return (4, 0, sp.sstr(factor))
+
+
+def _arranged(expr: sp.Basic) -> sp.Basic:
+    """The same expression, unevaluated, with each product's factors in ``_rank`` order and each sum's positive
+    terms first (x₂ − x₁ − l₀ rather than −l₀ − x₁ + x₂)."""
+    if not isinstance(expr, sp.Basic) or expr.is_Atom:
+        return expr
+    args = [_arranged(a) for a in expr.args]
+    if expr.is_Mul:
+        return sp.Mul(*sorted(args, key=_rank), evaluate=False)
+    if expr.is_Add:
+        positive = [a for a in args if not a.could_extract_minus_sign()]
+        return sp.Add(*positive, *(a for a in args if a.could_extract_minus_sign()), evaluate=False)
+    try:
+        return expr.func(*args, evaluate=False)
+    except TypeError:  # a class that takes no evaluate flag
+        return expr.func(*args)
+
+
 def spoken(expr: sp.Expr) -> str:
-    """An expression as running text prints it: R sin(θ) φ̇, m₂ l₁ l₂ cos(θ₁ − θ₂) (never ** or *)."""
+    """An expression as running text prints it: R φ̇ sin(θ), m₂ l₁ l₂ cos(θ₁ − θ₂) (never ** or *)."""
     # a sign pulled out of a sum: −g l₁ (m₁ + m₂), not g l₁ (−m₁ − m₂)
-    text = sp.sstr(sp.factor_terms(expr) if isinstance(expr, sp.Expr) else expr)
+    shown = sp.factor_terms(expr) if isinstance(expr, sp.Expr) else expr
+    try:
+        text = sp.sstr(_arranged(shown), order="none")
+    except (TypeError, ValueError, AttributeError):  # an expression the rearranging cannot rebuild: SymPy's order
+        text = sp.sstr(shown)
     # sin(θ)**2 as sin²(θ)
     text = re.sub(
         r"\b(sin|cos|tan)(\([^()]*\))\*\*(\d+)",

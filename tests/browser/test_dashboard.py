@@ -26,7 +26,7 @@ from app.web.deps import ServicesDep
 pytestmark = pytest.mark.browser
 
 SIGN = ("potential.sign", "The sign of U")  # (the tutor's key, its words); U is a symbol: the case stays
-CROSS = ("kinetic.cross_term.theta1_dot.theta2_dot", "the cross term l₁ l₂ m₂ θ̇₁ θ̇₂ cos(θ₁ − θ₂)")
+CROSS = ("kinetic.cross_term.theta1_dot.theta2_dot", "the cross term m₂ l₁ l₂ θ̇₁ θ̇₂ cos(θ₁ − θ₂)")
 
 
 @pytest.fixture(scope="module")
