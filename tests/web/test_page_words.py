@@ -23,7 +23,9 @@ def test_the_energy_integral_uses_the_pages_own_letter(client, scene):
 
 def test_the_tabletop_energy_integral_is_kinetic_then_u_eff_as_printed_a_step_before(client):
     shown = steps(client, "tabletop-spring")
-    u_eff = shown["effective-potential"]["latex"][0] if isinstance(shown["effective-potential"]["latex"], list) else None
+    u_eff = (
+        shown["effective-potential"]["latex"][0] if isinstance(shown["effective-potential"]["latex"], list) else None
+    )
     energy = shown["energy-integral"]["latex"]
     assert energy == r"E = \frac{1}{2} m \dot{r}^{2} + \frac{p_{\theta}^{2}}{2 m r^{2}} + \frac{1}{2} k r^{2}"
     assert u_eff is None or u_eff.endswith(r"\frac{p_{\theta}^{2}}{2 m r^{2}} + \frac{1}{2} k r^{2}")
