@@ -196,6 +196,18 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         found = _units(pb, answer, truth)
     if found is not None:
         mistake, hint = found
+        if mistake.family == "units":
+            # a difference whose terms have different units reads as nonsense ((1 − R/2) m R θ̇²): the units
+            # are the mistake, and nothing else is shown
+            return _verdict(
+                "incorrect",
+                f"Incorrect: this is not {_noun(pb)}: its units do not agree, as said below.",
+                None,
+                hint,
+                mistake=mistake_json(mistake, printer.tex, ""),
+                partial=None,
+                follow_up=None,
+            )
         if pb.relation == "exact" or equal(a, _known(mistake.expr, pb.groups)):
             # the answer is this mistake as written: show the difference as the change to the engine's own
             # pieces (m₂ l₁ l₂ θ̇₁ θ̇₂ (sin(θ₁ − θ₂) − cos(θ₁ − θ₂)), not its sines and cosines expanded)

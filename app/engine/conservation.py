@@ -124,7 +124,8 @@ def energetics(mech: Mechanics, eqs: Equations) -> Energetics:
             reason = "T is not a polynomial of degree at most two in the velocities, so h differs from E."
         else:
             causes = "; and ".join(_sources_of_t1_t0(mech, parts))
-            reason = f"{causes}. So E − h = T₁ + 2T₀ ≠ 0."
+            # E − h = T₁ + 2T₀, naming only the parts this T has (a bead on a spun wire has T₀ and no T₁)
+            reason = f"{causes}. So E − h = {_t1_t0(parts)} ≠ 0."
 
     # dh/dt = -dL/dt|explicit + sum_k Q_k q_dot_k
     working = forced and not is_zero(power)
@@ -150,16 +151,37 @@ def energetics(mech: Mechanics, eqs: Equations) -> Energetics:
     return Energetics(cyclic, tuple(conserved), dL_dt, h, E, diff, equal, reason, power, h_conserved, h_why)
 
 
+def _present(parts: dict[int, sp.Expr], degree: int) -> bool:
+    return not is_zero(parts.get(degree, sp.Integer(0)))
+
+
+def _degrees(parts: dict[int, sp.Expr]) -> str:
+    """Which of T's parts of degree 1 and 0 are there, in words."""
+    one, zero = _present(parts, 1), _present(parts, 0)
+    if one and zero:
+        return "parts of degree 1 and 0"
+    return "a part of degree 1 (T₁)" if one else "a part of degree 0 (T₀)"
+
+
+def _t1_t0(parts: dict[int, sp.Expr]) -> str:
+    """E − h = T₁ + 2T₀ with only the parts that are there."""
+    one, zero = _present(parts, 1), _present(parts, 0)
+    return "T₁ + 2T₀" if one and zero or not (one or zero) else ("T₁" if one else "2T₀")
+
+
 def _sources_of_t1_t0(mech: Mechanics, parts: dict[int, sp.Expr]) -> list[str]:
     """Where T's parts of degree 1 and 0 in the velocities come from, each in a sentence."""
     t = mech.table.t
     # with particles, T1 and T0 come only from dr/dt: positions that depend on time
     moving = [str(i) for i, r in enumerate(mech.positions, start=1) if any(c.has(t) for c in r)]
     if moving:
-        which = "particle " + moving[0] if len(moving) == 1 else "particles " + ", ".join(moving)
+        if len(mech.positions) == 1:
+            which = "the particle"
+        else:
+            which = "particle " + moving[0] if len(moving) == 1 else "particles " + ", ".join(moving)
         return [
             f"The positions depend explicitly on time (a moving constraint: the position of {which} contains t), "
-            "so T has parts of degree 1 and 0 in the velocities"
+            f"so T has {_degrees(parts)} in the velocities"
         ]
     # T written by the user: sort the terms of T1 and T0 by whether they contain t
     timed, linear, free = False, False, False

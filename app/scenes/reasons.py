@@ -89,7 +89,7 @@ HELIX_BEAD: dict[str, str] = {
     "positions": "The bead's height z fixes its turn φ = α z, so it sits at (R cos αz, R sin αz, z).",
     "velocities": "Going up by ż the bead also turns by α ż, moving R α ż around the axis.",
     "squared-speeds": "Vertical and circular motions are perpendicular: v² = (1 + α² R²) ż².",
-    "kinetic": "The winding makes the bead heavier along z by the factor 1 + α² R².",
+    "kinetic": "The winding gives the bead more inertia along z, not more weight: its effective mass for motion in z is m(1 + α² R²).",
     "potential": "Only the height matters for gravity: U = m g z.",
     "lagrangian": "A free fall along z with an enlarged inertia.",
     "derivatives:z": "∂L/∂z = −m g is the weight; ∂L/∂ż = m (1 + α² R²) ż is the momentum along the wire.",

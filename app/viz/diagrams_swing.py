@@ -47,7 +47,8 @@ def pendulum(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()
         # the damping force acts along the path, against the velocity: drawn pointing back toward the bottom
         tx, ty = -math.cos(theta), math.sin(theta)
         svg.arrow(bx + 16 * tx, by + 16 * ty, bx + 52 * tx, by + 52 * ty, color=PARAM)
-        svg.text(bx + 40 * tx + 6, by + 40 * ty + 18, "−b θ̇", PARAM, 14, anchor="start")
+        # the force on the bob: Q_θ = −b θ̇ is its torque about the pivot, so the force along the path is −(b/R) θ̇
+        svg.text(bx + 40 * tx + 6, by + 40 * ty + 18, "−(b/R) θ̇", PARAM, 14, anchor="start")
     return svg
 
 

@@ -78,7 +78,7 @@ CORPUS = [
         "theta",
         "theta_ddot + g*sin(theta)",
         "incorrect",
-        "g*sin(theta) - g*sin(theta)/R",
+        None,  # terms of different units: the units are the mistake, and no difference is shown
         "units",
     ),
     ("simple-pendulum", "acceleration", "theta", "-2*g*sin(theta/2)*cos(theta/2)/R", "correct", None, None),
