@@ -28,8 +28,17 @@ def test_a_moving_constraint_is_named_with_the_particle_that_moves():
         coordinates=("r",), particles=(Particle("m", ("r*cos(omega*t)", "r*sin(omega*t)", "0")),), potential="0"
     )
     assert en.h_equals_e is False
-    assert "moving constraint" in en.reason and "particle 1" in en.reason
+    # one body: "the particle", not "particle 1"; the spun rod gives T a part T₀ and no T₁
+    assert "moving constraint" in en.reason and "the position of the particle" in en.reason
+    assert "E − h = 2T₀" in en.reason and "T₁" not in en.reason
     assert "magnetic" not in en.reason
+    # two bodies, one of them on the spun rod: that one is named by its number
+    two = energetics(
+        coordinates=("r", "x"),
+        particles=(Particle("m", ("r*cos(omega*t)", "r*sin(omega*t)", "0")), Particle("m", ("x", "0", "0"))),
+        potential="0",
+    )
+    assert "the position of particle 1 contains t" in two.reason
 
 
 def test_both_sources_are_named():
