@@ -21,9 +21,9 @@ from __future__ import annotations
 import sympy as sp
 
 from app.engine.compare import Groups, Values, differ_by_factor, equal, factor_is_constant, usable, values
+from app.engine.diagnose import MIN_POINTS  # the points a comparison needs: one home with the catalogue's
 from app.engine.textbook import unicode_text
 
-MIN_POINTS = 6  # sample points where both sides are defined, as the checker asks of any comparison
 MAX_CANDIDATES = 24  # products and symbols of an answer tried as the one left unsquared
 
 SQUARE_HINT = (
