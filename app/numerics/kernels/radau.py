@@ -249,6 +249,21 @@ def _newton(f, k, t, y, h, Z, W, F, dr, dc, ys, fs, scale, tol, LUr, LUc, piv_r,
     return converged
 
 
+@njit(**JIT)
+def _newton_start(have_sol, t, t_old, h, Q, y, Z):
+    """Z = u(t + c_s h) - y at the three nodes, u the last step's collocation polynomial
+    u(t_old + x h_prev) = Q_3 + x (Q_0 + x (Q_1 + x Q_2)) extrapolated; zero at the first step."""
+    m = y.size
+    if not have_sol:
+        Z[:, :] = 0.0
+        return
+    h_prev = t - t_old
+    for s in range(3):
+        x = (t + C[s] * h - t_old) / h_prev
+        for i in range(m):
+            Z[s, i] = Q[3, i] + x * (Q[0, i] + x * (Q[1, i] + x * Q[2, i])) - y[i]
+
+
 @njit(types.float64(F64, F64, F64, F64), **JIT)
 def _predict_factor(h_abs, h_old, err, err_old):
     """Gustafsson's factor min(1, (h / h_prev) (err_prev / err)^(1/4)) err^(-1/4); the plain err^(-1/4) on the
@@ -340,16 +355,7 @@ def run(f, jac, has_jac, k, t_out, rtol, atol, bound, chunk, y, fy, st, Y, J, Q)
             h = t_new - t
             h_abs = h
             # Newton's start: the last step's polynomial extrapolated to the new nodes, minus y
-            if have_sol:
-                h_prev = t - t_old
-                for s in range(3):
-                    x = (t + C[s] * h - t_old) / h_prev
-                    for i in range(m):
-                        Z[s, i] = Q[3, i] + x * (Q[0, i] + x * (Q[1, i] + x * Q[2, i])) - y[i]
-            else:
-                for s in range(3):
-                    for i in range(m):
-                        Z[s, i] = 0.0
+            _newton_start(have_sol, t, t_old, h, Q, y, Z)
             for i in range(m):
                 scale[i] = atol[i] + abs(y[i]) * rtol
             converged = False
@@ -372,16 +378,7 @@ def run(f, jac, has_jac, k, t_out, rtol, atol, bound, chunk, y, fy, st, Y, J, Q)
                 njev += 1
                 current_jac = True
                 factored = False
-                if have_sol:
-                    h_prev = t - t_old
-                    for s in range(3):
-                        x = (t + C[s] * h - t_old) / h_prev
-                        for i in range(m):
-                            Z[s, i] = Q[3, i] + x * (Q[0, i] + x * (Q[1, i] + x * Q[2, i])) - y[i]
-                else:
-                    for s in range(3):
-                        for i in range(m):
-                            Z[s, i] = 0.0
+                _newton_start(have_sol, t, t_old, h, Q, y, Z)
             if not converged:
                 h_abs *= 0.5
                 factored = False

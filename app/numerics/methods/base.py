@@ -142,6 +142,36 @@ def drive(step: Callable[[int], int], steps_done: Callable[[], float], problem: 
         chunk = int(min(max(chunk * 0.05 / max(elapsed, 1e-6), 100), 2_000_000))
 
 
+def run_kernel(
+    method: Method,
+    problem: Problem,
+    kernel: Any,
+    call: Callable[[int], int],
+    arrays: tuple[np.ndarray, np.ndarray, np.ndarray],
+    **stats_from_state: int,
+) -> Trajectory:
+    """Drive a compiled kernel (``call(chunk)``) to the end of ``problem`` and read its result.
+
+    ``arrays`` are the kernel's work arrays ``(state, samples, last y)``. ``stats_from_state``
+    names further slots of the state to report as booleans (e.g. ``stiff_detected=STIFF_SEEN``).
+    The samples reached are kept when the budget runs out (``TooMuchWork.partial``).
+    """
+    st, Y, y = arrays
+
+    def stats() -> dict[str, int]:
+        return {"steps": int(st[kernel.STEPS]), "rhs_evaluations": int(st[kernel.NFEV])}
+
+    try:
+        status = drive(call, lambda: st[kernel.STEPS], problem, method)
+    except TooMuchWork as exc:
+        raise cut_short(exc, method, problem, Y, int(st[kernel.NEXT_OUT]), **stats()) from None
+    flags = {name: bool(st[slot]) for name, slot in stats_from_state.items()}
+    trajectory = finished(method, problem, Y, int(st[kernel.NEXT_OUT]), status, last=y, **stats(), **flags)
+    if st[kernel.REJECTED]:
+        trajectory.notes.append(f"{int(st[kernel.REJECTED])} rejected steps")
+    return trajectory
+
+
 def cut_short(exc: TooMuchWork, method: Method, problem: Problem, Y: np.ndarray, filled: int, **stats) -> TooMuchWork:
     """``exc`` carrying the samples reached before the budget ran out (``TooMuchWork.partial``), if any."""
     if filled >= 2:

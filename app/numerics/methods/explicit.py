@@ -10,8 +10,7 @@ from typing import Any
 
 import numpy as np
 
-from app.numerics.errors import TooMuchWork
-from app.numerics.methods.base import Method, Problem, Trajectory, cut_short, drive, finished
+from app.numerics.methods.base import Method, Problem, Trajectory, run_kernel
 
 
 class CompiledExplicit(Method):
@@ -31,30 +30,14 @@ class CompiledExplicit(Method):
         Y = np.empty((problem.t.size, y.size))
         args = (problem.k, problem.t, problem.rtol, problem.atol, problem.bound, int(stop_on_stiff))
 
-        try:
-            status = drive(
-                lambda chunk: kernel.run(rhs, *args, chunk, y, fy, st, Y),
-                lambda: st[kernel.STEPS],
-                problem,
-                self,
-            )
-        except TooMuchWork as exc:
-            stats = {"steps": int(st[kernel.STEPS]), "rhs_evaluations": int(st[kernel.NFEV])}
-            raise cut_short(exc, self, problem, Y, int(st[kernel.NEXT_OUT]), **stats) from None
-        trajectory = finished(
+        return run_kernel(
             self,
             problem,
-            Y,
-            int(st[kernel.NEXT_OUT]),
-            status,
-            last=y,
-            steps=int(st[kernel.STEPS]),
-            rhs_evaluations=int(st[kernel.NFEV]),
-            stiff_detected=bool(st[kernel.STIFF_SEEN]),
+            kernel,
+            lambda chunk: kernel.run(rhs, *args, chunk, y, fy, st, Y),
+            (st, Y, y),
+            stiff_detected=kernel.STIFF_SEEN,
         )
-        if st[kernel.REJECTED]:
-            trajectory.notes.append(f"{int(st[kernel.REJECTED])} rejected steps")
-        return trajectory
 
 
 class CompiledDOP853(CompiledExplicit):
@@ -68,4 +51,6 @@ class CompiledVern8(CompiledExplicit):
     name = "Vern8"
     order = 8
     kernel_module = "app.numerics.kernels.vern8"
-    summary = "Verner's efficient 8(7) pair, adaptive steps, 8th-order dense output, stiffness test; the loop runs in numba"
+    summary = (
+        "Verner's efficient 8(7) pair, adaptive steps, 8th-order dense output, stiffness test; the loop runs in numba"
+    )

@@ -14,8 +14,7 @@ from typing import Any
 
 import numpy as np
 
-from app.numerics.errors import TooMuchWork
-from app.numerics.methods.base import Method, Problem, Trajectory, cut_short, drive, finished
+from app.numerics.methods.base import Method, Problem, Trajectory, run_kernel
 from app.numerics.system import NumericSystem
 
 
@@ -54,30 +53,15 @@ class CompiledRadau(Method):
         Q = np.zeros((4, m))
         args = (problem.k, problem.t, problem.rtol, problem.atol, problem.bound)
 
-        try:
-            status = drive(
-                lambda chunk: kernel.run(rhs, jac, int(has_jac), *args, chunk, y, fy, st, Y, J, Q),
-                lambda: st[kernel.STEPS],
-                problem,
-                self,
-            )
-        except TooMuchWork as exc:
-            stats = {"steps": int(st[kernel.STEPS]), "rhs_evaluations": int(st[kernel.NFEV])}
-            raise cut_short(exc, self, problem, Y, int(st[kernel.NEXT_OUT]), **stats) from None
-        trajectory = finished(
+        trajectory = run_kernel(
             self,
             problem,
-            Y,
-            int(st[kernel.NEXT_OUT]),
-            status,
-            last=y,
-            steps=int(st[kernel.STEPS]),
-            rhs_evaluations=int(st[kernel.NFEV]),
+            kernel,
+            lambda chunk: kernel.run(rhs, jac, int(has_jac), *args, chunk, y, fy, st, Y, J, Q),
+            (st, Y, y),
         )
         source = "the engine's" if has_jac else "forward differences"
-        trajectory.notes.append(
-            f"{int(st[kernel.NJEV])} Jacobian evaluations ({source}), {int(st[kernel.NLU])} LU decompositions"
+        trajectory.notes.insert(
+            0, f"{int(st[kernel.NJEV])} Jacobian evaluations ({source}), {int(st[kernel.NLU])} LU decompositions"
         )
-        if st[kernel.REJECTED]:
-            trajectory.notes.append(f"{int(st[kernel.REJECTED])} rejected steps")
         return trajectory
