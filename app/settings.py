@@ -87,6 +87,8 @@ class Settings(BaseSettings):
     """addresses or CIDR ranges of the reverse proxies whose proxy_header is believed"""
     session_secret: str | None = None
     """key that signs session cookies (the same for every replica); else a file in the cache"""
+    shared_store_url: str | None = None
+    """Redis URL (redis://host:6379/0) where all replicas count the classes' joins and checks; else each its own"""
     replicas: PositiveInt = 1
     """servers sharing the classes (more than 1 needs database_url and session_secret)"""
     warm: bool = True
@@ -119,6 +121,15 @@ class Settings(BaseSettings):
                     f"trusted_proxies: {entry!r} is not an address or a CIDR range (e.g. 10.0.0.0/8, fd00::/8)"
                 ) from None
         return listed
+
+    @field_validator("shared_store_url")
+    @classmethod
+    def _store_is_redis(cls, url: str | None) -> str | None:
+        if url and not url.startswith(("redis://", "rediss://", "unix://")):
+            raise ValueError(
+                f"shared_store_url: {url[:60]!r} is not a Redis URL (redis://host:6379/0, rediss://… or unix://…)"
+            )
+        return url or None
 
     @model_validator(mode="after")
     def _replicas_share_the_classes(self) -> Settings:

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Set up (idempotent, dev tools included) and run the whole test suite: lint (scripts/lint.sh), then pytest
 # (engine, API, numerics, and the pages in Debian's headless Chromium; exported
-# LaTeX documents are compiled with Debian's pdflatex; the classes' database also on Debian's PostgreSQL).
+# LaTeX documents are compiled with Debian's pdflatex; the classes' database also on Debian's PostgreSQL,
+# their limits across replicas on Debian's redis-server).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh dev
@@ -17,6 +18,11 @@ fi
 if ! ls /usr/lib/postgresql/*/bin/initdb >/dev/null 2>&1; then
     apt-get update -qq
     apt-get install -y -qq --no-install-recommends postgresql >/dev/null
+fi
+# the classes' limits across replicas are tested against a throwaway Redis (tests/redis.py)
+if ! command -v redis-server >/dev/null; then
+    apt-get update -qq
+    apt-get install -y -qq --no-install-recommends redis-server >/dev/null
 fi
 scripts/lint.sh
 # set-up warmed the caches (python -m app.web.warm): the tests never compile kernels meanwhile.

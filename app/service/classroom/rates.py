@@ -5,7 +5,8 @@ check in flight per student and a few per address; these windows bound the
 rate of what the classes' database records: a class accepts at most so many
 joins and checks a minute (one code cannot flood the disk), and each client
 (a session or an address for a join, a student for a check) at most so many.
-Counted per web process, like the fair share.
+Counted per web process, like the fair share; with a shared store, across replicas
+(app/service/classroom/shared_rates.py).
 """
 
 from __future__ import annotations
@@ -29,6 +30,10 @@ class Window:
         self.what = what
         self._events: dict[str, deque[float]] = {}
         self._lock = threading.Lock()
+
+    async def take(self, key: str) -> None:
+        """Count one event of ``key`` (the routes' way in; a shared window asks the store)."""
+        self.hit(key)
 
     def hit(self, key: str) -> None:
         now = time.monotonic()

@@ -23,6 +23,7 @@ from app.service.classroom import keys, reports, store
 from app.service.classroom.assignments import checked_items, find_item
 from app.service.classroom.database import Database
 from app.service.classroom.rates import Window
+from app.service.classroom.shared_rates import SharedWindow, Store
 from app.service.fairness import CLASS, shared
 from app.settings import Settings
 
@@ -67,11 +68,19 @@ class Classroom:
     def __init__(self, checking: Checking, config: Settings) -> None:
         self.db = Database(config)
         self.checking = checking
-        self.class_joins = Window(config.class_joins_per_minute, "joins to this class")
-        self.client_joins = Window(config.client_joins_per_minute, "joins from you")
-        self.class_joins_by_address = Window(config.class_joins_per_minute, "joins from your network address")
-        self.class_checks = Window(config.class_checks_per_minute, "checks in this class")
-        self.student_checks = Window(config.student_checks_per_minute, "your checks")
+        # with a shared store every replica counts the same windows; else each counts its own
+        self.store = Store(config.shared_store_url) if config.shared_store_url else None
+
+        def window(limit: int, what: str, name: str) -> Window:
+            return SharedWindow(limit, what, self.store, name) if self.store else Window(limit, what)
+
+        self.class_joins = window(config.class_joins_per_minute, "joins to this class", "class-joins")
+        self.client_joins = window(config.client_joins_per_minute, "joins from you", "client-joins")
+        self.class_joins_by_address = window(
+            config.class_joins_per_minute, "joins from your network address", "address-joins"
+        )
+        self.class_checks = window(config.class_checks_per_minute, "checks in this class", "class-checks")
+        self.student_checks = window(config.student_checks_per_minute, "your checks", "student-checks")
 
     async def _db(self, work: Callable[..., T], *args: Any) -> T:
         return await asyncio.to_thread(work, self.db, *args)
@@ -126,10 +135,10 @@ class Classroom:
         # shared keys (no cookie: ``new:``, or beyond the address's sessions this minute: ``many:``) counts
         # against its network, which may bring a whole class (class_joins_per_minute)
         if shared(client):
-            self.class_joins_by_address.hit(address)
+            await self.class_joins_by_address.take(address)
         else:
-            self.client_joins.hit(client)
-        self.class_joins.hit(keys.normal_code(code) or "?")
+            await self.client_joins.take(client)
+        await self.class_joins.take(keys.normal_code(code) or "?")
         student_key, who = await self._db(store.join, code, name)
         items = await self._db(store.assignment, who.class_id)
         return {"student_key": student_key, "code": who.code, "title": who.title, "name": name, "assignment": items}
@@ -171,8 +180,8 @@ class Classroom:
         this = (name, step, recorded, answer.strip())
         if attempt_id is not None and (first := await self._db(store.recorded, who, attempt_id)) is not None:
             return _same_attempt(first, this, attempt_id)
-        self.student_checks.hit(f"{who.class_id}:{who.student}")
-        self.class_checks.hit(who.code)
+        await self.student_checks.take(f"{who.class_id}:{who.student}")
+        await self.class_checks.take(who.code)
         # the student is the unit of fairness, their class's budget of check slots the bound (not their network's)
         client, address = f"class-student:{who.class_id}:{who.student}", f"{CLASS}{who.class_id}"
         if item.get("system") is not None:
