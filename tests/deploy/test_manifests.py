@@ -84,10 +84,17 @@ def test_the_replicas_share_postgresql_and_the_session_secret():
     container = deployment["spec"]["template"]["spec"]["containers"][0]
     env = {e["name"]: e.get("value") for e in container["env"]}
     assert int(env["LAGRANGE_REPLICAS"]) > 1 and env["LAGRANGE_PROXY_HEADER"]
+    # the rate windows are counted together in the manifest's own Redis, reached through its Service
+    store = env["LAGRANGE_SHARED_STORE_URL"]
+    redis_service = next(d for d in documents if d["kind"] == "Service" and d["metadata"]["name"] == "lagrange-redis")
+    assert store == f"redis://lagrange-redis:{redis_service['spec']['ports'][0]['port']}/0"
+    from app.settings import Settings
+
+    assert Settings(shared_store_url=store).shared_store_url == store  # the setting accepts it
     secrets = [s["secretRef"] for s in container["envFrom"]]
     assert {s["name"] for s in secrets} == {"lagrange-database", "lagrange-session"}
     assert not any(s.get("optional") for s in secrets)  # without them a pod would keep classes of its own
-    service = next(d for d in documents if d["kind"] == "Service")
+    service = next(d for d in documents if d["kind"] == "Service" and d["metadata"]["name"] == "lagrange")
     assert "sessionAffinity" not in service["spec"]  # ingress controllers ignore it; nothing relies on it
     budget = next(d for d in documents if d["kind"] == "PodDisruptionBudget")
     assert budget["spec"]["selector"] == deployment["spec"]["selector"] and budget["spec"]["minAvailable"] >= 1
