@@ -19,10 +19,10 @@ if ! ls /usr/lib/postgresql/*/bin/initdb >/dev/null 2>&1; then
     apt-get update -qq
     apt-get install -y -qq --no-install-recommends postgresql >/dev/null
 fi
-# the classes' limits across replicas are tested against a throwaway Redis (tests/redis.py)
-if ! command -v redis-server >/dev/null; then
+# the classes across replicas are tested against a throwaway Redis (tests/redis.py) behind Debian's nginx
+if ! command -v redis-server >/dev/null || [ ! -x /usr/sbin/nginx ]; then
     apt-get update -qq
-    apt-get install -y -qq --no-install-recommends redis-server >/dev/null
+    apt-get install -y -qq --no-install-recommends redis-server nginx >/dev/null
 fi
 scripts/lint.sh
 # set-up warmed the caches (python -m app.web.warm): the tests never compile kernels meanwhile.

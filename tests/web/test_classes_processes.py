@@ -34,9 +34,10 @@ def _free_port() -> int:
 
 
 @contextmanager
-def server(env: dict[str, str]) -> Iterator[tuple[str, subprocess.Popen]]:
-    """One web process (uvicorn) with these settings, until the block ends (or the test kills it)."""
-    port = _free_port()
+def server(env: dict[str, str], port: int | None = None) -> Iterator[tuple[str, subprocess.Popen]]:
+    """One web process (uvicorn) with these settings, on ``port`` (else a free one), until the block ends (or
+    the test kills it)."""
+    port = port or _free_port()
     environment = {**os.environ, "PYTHONPATH": str(ROOT), "LAGRANGE_WARM": "0", "LAGRANGE_WORKERS": "1",
                    "LAGRANGE_STUDENT_CHECKS_PER_MINUTE": "100000", **env}
     process = subprocess.Popen(
