@@ -1,5 +1,6 @@
 """Deployment files say what docs/deployment.md promises."""
 
+import re
 from pathlib import Path
 
 import pytest
@@ -98,3 +99,31 @@ def test_the_replicas_share_postgresql_and_the_session_secret():
     assert "sessionAffinity" not in service["spec"]  # ingress controllers ignore it; nothing relies on it
     budget = next(d for d in documents if d["kind"] == "PodDisruptionBudget")
     assert budget["spec"]["selector"] == deployment["spec"]["selector"] and budget["spec"]["minAvailable"] >= 1
+
+
+def test_the_compose_file_runs_two_replicas_behind_nginx_with_what_they_must_share():
+    import yaml
+
+    from app.settings import Settings
+
+    compose = yaml.safe_load((ROOT / "deploy" / "compose" / "compose.yaml").read_text())
+    services = compose["services"]
+    replicas = [name for name, s in services.items() if "build" in s]
+    assert len(replicas) == 2 and services[replicas[0]] == services[replicas[1]]  # one definition, twice
+    env = services[replicas[0]]["environment"]
+    assert int(env["LAGRANGE_REPLICAS"]) == len(replicas)
+    # what the compose file fills in from the shell, given values; the settings must accept the result
+    filled = {
+        k: re.sub(r"\$\{(\w+):\?[^}]*\}", lambda m: {"POSTGRES_PASSWORD": "pw"}.get(m.group(1), "secret"), v)
+        for k, v in env.items()
+    }
+    s = Settings(**{k.removeprefix("LAGRANGE_").lower(): v for k, v in filled.items()})
+    assert s.replicas == 2 and s.database_url.startswith("postgresql://") and s.session_secret
+    assert s.shared_store_url == "redis://redis:6379/0" and "redis" in services and "postgres" in services
+    # nginx's upstream is exactly the replicas, on the port the image serves
+    nginx = (ROOT / "deploy" / "compose" / "nginx.conf").read_text()
+    upstream = re.search(r"upstream lagrange \{([^}]*)\}", nginx).group(1)
+    port = re.search(r"EXPOSE (\d+)", (ROOT / "Dockerfile").read_text()).group(1)
+    assert sorted(re.findall(r"server (\S+?):(\d+)", upstream)) == [(r, port) for r in sorted(replicas)]
+    assert "proxy_next_upstream error timeout non_idempotent" in nginx  # retried presses: exactly once by attempt id
+    assert services["balancer"]["volumes"] == ["./nginx.conf:/etc/nginx/conf.d/default.conf:ro"]

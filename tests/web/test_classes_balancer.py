@@ -10,6 +10,7 @@ once, not once per replica.
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -26,7 +27,7 @@ import pytest
 
 from tests.postgres import postgres_server  # noqa: F401 - the session fixture
 from tests.redis import redis_server  # noqa: F401 - the session fixture
-from tests.web.test_classes_processes import RIGHT_T, SCENE, _exported, _free_port, bearer, server
+from tests.web.test_classes_processes import RIGHT_T, ROOT, SCENE, _exported, _free_port, bearer, server
 
 pytestmark = pytest.mark.slow
 STUDENTS = 60
@@ -36,8 +37,8 @@ FLOOD_LIMIT = 6  # one student's checks per minute in this test
 
 @contextmanager
 def balancer(upstreams: list[str]) -> Iterator[str]:
-    """nginx in front of ``upstreams`` (round robin). A POST that cannot reach a replica goes to the next
-    one (``non_idempotent``): safe here because a check carries its attempt id and is recorded once."""
+    """Debian's nginx in front of ``upstreams``, configured as deploy/compose/nginx.conf (round robin; a POST
+    that cannot reach a replica goes to the next one, safe because a check carries its attempt id)."""
     nginx = shutil.which("nginx") or "/usr/sbin/nginx"
     if not os.path.exists(nginx):
         if os.environ.get("CI"):
@@ -46,7 +47,12 @@ def balancer(upstreams: list[str]) -> Iterator[str]:
     root = tempfile.mkdtemp(prefix="lagrange-nginx-")
     os.chmod(root, 0o755)
     port = _free_port()
+    # the shipped configuration (deploy/compose/nginx.conf), with this test's replicas and port
+    shipped = (ROOT / "deploy" / "compose" / "nginx.conf").read_text()
     servers = "\n".join(f"server {u.removeprefix('http://')} max_fails=0;" for u in upstreams)
+    site = re.sub(r"(upstream lagrange \{)[^}]*\}", lambda m: f"{m.group(1)}\n{servers}\n}}", shipped)
+    site = site.replace("listen 80;", f"listen 127.0.0.1:{port};")
+    assert site.count("max_fails=0;") == len(upstreams) and f"127.0.0.1:{port}" in site
     user = "user root;" if os.geteuid() == 0 else ""
     conf = f"""
 {user}
@@ -58,17 +64,7 @@ http {{
   access_log off;
   client_body_temp_path {root}/body;
   proxy_temp_path {root}/proxy;
-  upstream app {{ {servers} }}
-  server {{
-    listen 127.0.0.1:{port};
-    location / {{
-      proxy_pass http://app;
-      proxy_set_header X-Forwarded-For $remote_addr;
-      proxy_next_upstream error timeout non_idempotent;
-      proxy_connect_timeout 2s;
-      proxy_read_timeout 60s;
-    }}
-  }}
+  {site}
 }}
 """
     with open(f"{root}/nginx.conf", "w") as f:
