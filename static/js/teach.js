@@ -24,7 +24,15 @@ function show() {
     "class-code": current.code,
     "class-join-url": `${window.location.host}/join`,
     "class-key-text": current.key,
+    "class-short-link": `${window.location.host}/j/${current.code}`,
   });
+  // the short link as a QR code, drawn by this server (GET /j/{code}/qr.svg)
+  const qr = $("class-qr");
+  qr.hidden = !current;
+  if (current) {
+    qr.src = `/j/${encodeURIComponent(current.code)}/qr.svg`;
+    qr.alt = `QR code of the link ${window.location.host}/j/${current.code}`;
+  }
 }
 
 async function open(code, key) {

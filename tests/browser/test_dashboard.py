@@ -99,6 +99,10 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
     for selector in ("#now-stuck .now-what", "#now-stuck .now-figure", "#now-mistake .now-what",
                      "#now-mistake .now-figure"):
         _within_first_screen(page, selector, 768)
+    # the short link and its QR code, drawn by this server, beside the code for a slide or a projector
+    assert page.locator("#class-short-link").inner_text().endswith(f"/j/{code}")
+    page.wait_for_function("() => { const i = document.getElementById('class-qr'); return i.complete && i.naturalWidth > 0; }")
+    _within_first_screen(page, "#class-qr", 768)
     page.screenshot(path=artifacts / "teach-first-screen-1366.png")
 
     # one click to the students concerned

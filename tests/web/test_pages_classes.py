@@ -13,3 +13,26 @@ def test_the_pages_are_shells_that_need_no_database(client, services):
         scenes = json.loads(re.search(r'id="class-scenes">(.*?)</script>', page.text, re.S).group(1))
         assert [s["id"] for s in scenes] == list(derivations.SCENES)
     assert not services.classes.db.started  # no class route used: the database was never opened
+
+
+def test_a_short_link_opens_the_join_page_with_its_code(client):
+    r = client.get("/j/ack-3x7", follow_redirects=False)  # typed loosely: the code as stored
+    assert r.status_code == 303 and r.headers["location"] == "/join?code=ACK3X7"
+    assert client.get("/join?code=ACK3X7").status_code == 200
+
+
+def test_a_short_link_that_is_no_code_says_what_a_code_is(client):
+    for bad in ("nope", "ABC12", "A" * 300):
+        r = client.get(f"/j/{bad}")
+        assert r.status_code == 404 and "is not a class code" in r.text and "6 letters and digits" in r.text
+        assert client.get(f"/j/{bad}/qr.svg").status_code == 404
+
+
+def test_the_qr_code_is_the_short_link_on_this_server(client):
+    from app.viz.qr import qr_svg
+
+    r = client.get("/j/ack3x7/qr.svg")
+    assert r.status_code == 200 and r.headers["content-type"] == "image/svg+xml"
+    # the code of the absolute short link as this server is reached (the Host the browser used)
+    assert r.content == qr_svg("http://testserver/j/ACK3X7", "QR code of http://testserver/j/ACK3X7")
+    assert r.content != qr_svg("http://testserver/j/ACK3X9", "QR code of http://testserver/j/ACK3X7")
