@@ -5,7 +5,7 @@ diagrams, exports) reads it from here, so ``Omega`` is Ω everywhere:
 
     latex("theta_dot") -> \\dot{\\theta}    unicode("theta_dot") -> θ̇    plain("theta_dot") -> theta_dot
     latex("x1") -> x_{1}                   unicode("x1") -> x₁
-    latex("p_phi") -> p_{\\phi}             unicode("p_phi") -> p_φ
+    latex("p_phi") -> p_{\\varphi}          unicode("p_phi") -> p_φ
 """
 
 from __future__ import annotations
