@@ -35,7 +35,7 @@ _TEX_GREEK = {"phi": "varphi"}
 def tex_greek(tex: str) -> str:
     """LaTeX printed elsewhere (SymPy's printer) with each Greek command as this module writes it: \\phi -> \\varphi."""
     for stem, command in _TEX_GREEK.items():
-        tex = re.sub(rf"\\{stem}(?![A-Za-z])", lambda _m, c=command: "\\" + c, tex)
+        tex = re.sub(rf"\\{stem}(?![A-Za-z])", "\\\\" + command, tex)
     return tex
 
 
