@@ -263,13 +263,19 @@ export class ActionPanel {
     const tStar = forced ? null : s && s.conjugate_time !== null && s.conjugate_time !== undefined ? s.conjugate_time : this.focusAt;
     // the browser's S(ε) - S(0) (the same quadrature for both) on top of the shown S(0)
     const Snow = S0 + (live.now.S - live.truth.S);
+    // the tangent at ε = 0: flat by Hamilton's principle, but with a force Q its slope is dS/dε = −∫ Q η dt
+    // (the server's figure, else the curve's central difference at ε = 0)
+    const mid = (this.epsilons.length - 1) / 2;
+    const slope = !forced ? 0 : s ? s.first_variation
+      : (curve[mid + 1] - curve[mid - 1]) / (this.epsilons[mid + 1] - this.epsilons[mid - 1]);
+    const reach = 0.35 * this.epsMax;
     const traces = [
       { type: "scatter", mode: "lines", x: t, y: trueQ, name: "true path", line: { color: PALETTE[0], width: 2 } },
       { type: "scatter", mode: "lines", x: t, y: variedQ, name: "your path (drag it)", line: { color: PALETTE[1], width: 3, dash: "dash" } },
       { type: "scatter", mode: "lines", x: t, y: Array.from(live.truth.L), name: "L on the true path", xaxis: "x2", yaxis: "y2", line: { color: PALETTE[0], width: 1.5 }, showlegend: false },
       { type: "scatter", mode: "lines", x: t, y: Array.from(live.now.L), name: "L on your path", xaxis: "x2", yaxis: "y2", line: { color: PALETTE[1], width: 1.5, dash: "dash" }, showlegend: false },
       { type: "scatter", mode: "lines", x: this.epsilons, y: curve, name: "S(ε)", xaxis: "x3", yaxis: "y3", line: { color: PALETTE[2], width: 2 }, showlegend: false },
-      { type: "scatter", mode: "lines", x: [-0.35 * this.epsMax, 0.35 * this.epsMax], y: [S0, S0], name: "tangent at ε = 0", xaxis: "x3", yaxis: "y3", line: { color: "#57606a", width: 1, dash: "dot" }, showlegend: false },
+      { type: "scatter", mode: "lines", x: [-reach, reach], y: [S0 - slope * reach, S0 + slope * reach], name: "tangent at ε = 0", xaxis: "x3", yaxis: "y3", line: { color: "#57606a", width: 1, dash: "dot" }, showlegend: false },
       { type: "scatter", mode: "markers", x: [this.eps], y: [Snow], name: "S of your path", xaxis: "x3", yaxis: "y3", marker: { color: PALETTE[1], size: 10 }, showlegend: false },
     ];
     const shapes = [];
@@ -322,7 +328,7 @@ export class ActionPanel {
     // every number with its unit: ε is in the coordinate's unit, so d²S/dε² is in J·s per unit²
     const curvature = unit ? ` J·s/${unit}²` : "";
     this.readout.textContent = `S of the true path = ${fmt(S0)} J·s; ${yours}. `
-      + `d²S/dε² at ε = 0 is ${fmt(second)}${curvature}. ${verdict} ${focusWords}`
+      + `d²S/dε² at ε = 0 is ${fmt(second)}${curvature}. ${verdict}${focusWords ? ` ${focusWords}` : ""}`
       + (s ? ` The server's more accurate figures: S to within ±${fmt(s.error_estimate)} J·s, and dS/dε at ε = 0 ${flatWithin(s) ? "≈ 0 (within that error)" : `= ${fmt(s.first_variation)} J·s${unit ? `/${unit}` : ""}`}.${s.warnings?.length && !this.data.forced ? ` Note: ${s.warnings.join("; ")}.` : ""}` : " Computed in your browser; the server's more accurate figures follow.");
     if (this.summary && s) {
       table(this.summary, `S(ε) for the shape n = ${this.shape}, τ = ${fmt(T)} s`, ["ε", "S (J·s)"], s.epsilons.map((e, i) => [fmt(e), fmt(s.action[i])]));

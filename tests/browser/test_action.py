@@ -204,4 +204,10 @@ def test_a_forced_system_claims_no_stationary_S_and_no_kinetic_focus(page):
     assert "kinetic focus" not in readout and "minimum" not in readout
     assert page.evaluate(f"document.querySelector('{PANEL} .plot').layout.shapes.length") == 0
     assert page.locator("#action-find").is_hidden()  # relaxing would make S alone stationary
+    # the tangent at ε = 0 is drawn with the slope the readout gives (not flat), and the readout has no double space
+    tangent = page.evaluate(f"document.querySelector('{PANEL} .plot').data[5]")
+    slope = (tangent["y"][1] - tangent["y"][0]) / (tangent["x"][1] - tangent["x"][0])
+    stated = float(readout.split("dS/dε at ε = 0 = ")[1].split(" J·s/rad")[0].replace("−", "-"))
+    assert slope == pytest.approx(stated, rel=1e-3) and slope != 0
+    assert "  " not in readout
     assert not page.console_errors
