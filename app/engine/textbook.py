@@ -56,6 +56,8 @@ class _Printer(LatexPrinter):
 
     def _print_Symbol(self, expr: sp.Symbol, style: str = "plain") -> str:
         # a name missing from the table is still written as app/engine/names.py writes it (φ, not ϕ)
+        if expr in self._settings["symbol_names"]:
+            return self._settings["symbol_names"][expr]  # the caller's table is kept as given
         return tex_greek(super()._print_Symbol(expr, style))
 
     # --- classification -------------------------------------------------------
