@@ -5,7 +5,7 @@ diagrams, exports) reads it from here, so ``Omega`` is Ω everywhere:
 
     latex("theta_dot") -> \\dot{\\theta}    unicode("theta_dot") -> θ̇    plain("theta_dot") -> theta_dot
     latex("x1") -> x_{1}                   unicode("x1") -> x₁
-    latex("p_phi") -> p_{\\phi}             unicode("p_phi") -> p_φ
+    latex("p_phi") -> p_{\\varphi}          unicode("p_phi") -> p_φ
 """
 
 from __future__ import annotations
@@ -25,7 +25,18 @@ GREEK = {
 SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 DOT, DDOT = "\u0307", "\u0308"
 _TRAILING_DIGITS = re.compile(r"([A-Za-z]+?)(\d+)")
-_DOTS = (("_ddot", "ddot", DDOT), ("_dot", "dot", DOT))
+HAT = "\u0302"
+# accents written as a suffix of the name: a velocity's dots, and a unit vector's hat (r_hat -> r̂)
+_DOTS = (("_ddot", "ddot", DDOT), ("_dot", "dot", DOT), ("_hat", "hat", HAT))
+# LaTeX's \phi is the closed ϕ; the φ of running text (U+03C6) is LaTeX's \varphi: one glyph on a page
+_TEX_GREEK = {"phi": "varphi"}
+
+
+def tex_greek(tex: str) -> str:
+    """LaTeX printed elsewhere (SymPy's printer) with each Greek command as this module writes it: \\phi -> \\varphi."""
+    for stem, command in _TEX_GREEK.items():
+        tex = re.sub(rf"\\{stem}(?![A-Za-z])", "\\\\" + command, tex)
+    return tex
 
 
 def _split(name: str) -> tuple[str, str]:
@@ -36,7 +47,7 @@ def _split(name: str) -> tuple[str, str]:
 def _tex_base(name: str) -> tuple[str, str]:
     """(stem, subscript) in LaTeX: theta1 -> (\\theta, 1)."""
     stem, digits = _split(name)
-    return ("\\" + stem if stem in GREEK else stem), digits
+    return ("\\" + _TEX_GREEK.get(stem, stem) if stem in GREEK else stem), digits
 
 
 def _uni_base(name: str, mark: str = "") -> str:

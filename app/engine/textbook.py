@@ -28,7 +28,7 @@ from sympy.printing.latex import LatexPrinter
 from sympy.printing.str import StrPrinter
 
 from app.engine.budget import larger_than, memoized, pythagoras
-from app.engine.names import unicode
+from app.engine.names import tex_greek, unicode
 
 NODE_BUDGET = 600
 
@@ -53,6 +53,12 @@ class _Printer(LatexPrinter):
         self.moving = moving  # coordinates, velocities, accelerations and time
         self.first = first  # the term holding this symbol leads a top-level sum (an equation's own acceleration)
         self.depth = 0  # fractions open around what is being printed
+
+    def _print_Symbol(self, expr: sp.Symbol, style: str = "plain") -> str:
+        # a name missing from the table is still written as app/engine/names.py writes it (φ, not ϕ)
+        if expr in self._settings["symbol_names"]:
+            return self._settings["symbol_names"][expr]  # the caller's table is kept as given
+        return tex_greek(super()._print_Symbol(expr, style))
 
     # --- classification -------------------------------------------------------
     def constant(self, expr: sp.Expr) -> bool:
@@ -219,7 +225,7 @@ def latex(expr: Any, names: dict[sp.Symbol, str], first: sp.Symbol | None = None
         # a mutable matrix is no sp.Basic: each entry in textbook order all the same (m R², not R² m)
         return _Printer(names, _moving(names, sp.ImmutableMatrix(expr)), first).doprint(expr)
     if not isinstance(expr, sp.Basic) or larger_than(expr, NODE_BUDGET):
-        return sp.latex(expr, symbol_names=names)
+        return tex_greek(sp.latex(expr, symbol_names=names))
     # a document prints most expressions several times (the steps and the results box; a double pendulum's
     # 161 printings are of 62 expressions): each once per document and set of names
     key = (expr, tuple(names.items()), first)

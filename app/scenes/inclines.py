@@ -42,10 +42,11 @@ INCLINE_BLOCK = Scene(
     events=(Event("foot of the ramp", "X", "The block reached the foot of the ramp; the run ends there."),),
     errata=(
         Erratum(
-            chapter="statement: a bead on a helix (Ex. 4.2's text repeated)",
+            # words only: the chapter's mistake here is its statement, not a formula
+            chapter="the statement repeats the helix bead problem word for word",
             correct="L = m*X_dot**2/2 - m*g*X*sin(alpha)",
             reason=(
-                "The example's statement repeats the helix of Example 4.2 word for word, while its solution treats "
+                "The example's statement repeats the helix bead problem before it word for word, while its solution treats "
                 "a block on a fixed frictionless incline; that block's Lagrangian is the one given here."
             ),
             check="lagrangian",

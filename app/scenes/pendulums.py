@@ -145,7 +145,7 @@ DAMPED_PENDULUM = Scene(
     summary="A force no potential describes enters as a generalized force Q and drains the energy.",
     statement=(
         "The simple pendulum again (bob of mass m, string of length R, θ from the bottom), now slowed by a drag "
-        "force that opposes the bob's velocity in proportion to it, F = −(b/R²) v. Drag has no potential energy, "
+        "force −(b/R²) v that opposes the bob's velocity v in proportion to it. Drag has no potential energy, "
         "so it cannot sit in L; projected on the coordinate it becomes the generalized force Q_θ = −b θ̇ on the "
         "right-hand side of the Euler–Lagrange equation. Find the equation of motion and the rate at which the "
         "energy decays."

@@ -24,6 +24,7 @@ from typing import Any
 from app.engine.names import unicode
 from app.engine.trees import Tree
 from app.viz.exprtree import document_tree, evaluate, leaves
+from app.viz.units import coordinate_units
 
 DECADE = 10.0  # the useful range reaches this factor either side of a positive default
 LOG_SPAN = 50.0  # a useful range wider than this factor moves on a log scale
@@ -129,6 +130,9 @@ def separatrix_marks(doc: dict[str, Any], initial: dict[str, float]) -> dict[str
     """The initial rate that just reaches an unstable equilibrium, for a one-coordinate system."""
     if len(doc["coordinates"]) != 1 or not doc.get("potential"):
         return {}
+    if doc.get("generalized_forces"):
+        # a force Q drains E on the way up: the undamped ½ M q̇₀² = U(q_top) − U(q₀) falls short of the top
+        return {}
     q = doc["coordinates"][0]
     tops = [e for e in doc.get("normal_modes") or [] if e.get("kind") == "unstable"]
     if not tops:
@@ -146,10 +150,11 @@ def separatrix_marks(doc: dict[str, Any], initial: dict[str, float]) -> dict[str
         # E = ½ M q̇₀² + U(q₀) = U(q_top)
         rate = math.sqrt(2 * (u_top - u0) / mass)
         where = f"{unicode(q)} = {formula(e['exact'][q]['sympy']) if e.get('exact') else f'{top:.4g}'}"
-        marks += [
-            {"value": rate, "label": f"separatrix: just reaches {where}"},
-            {"value": -rate, "label": f"separatrix: just reaches {where}"},
-        ]
+        # the rate depends on where the run starts: the mark says which start it is for
+        unit = coordinate_units(doc, scene=True)["units"].get(q, "")
+        start_text = f"from {unicode(q)}(0) = {q0:.4g}{f' {unit}' if unit else ''}"
+        label = f"separatrix {start_text}: just reaches {where}"
+        marks += [{"value": rate, "label": label}, {"value": -rate, "label": label}]
     return {f"{q}_dot": marks} if marks else {}
 
 

@@ -375,7 +375,7 @@ def scene_page(
         "declared_panels": declared,
         "panels": panels,
         "folded_panels": closed,
-        "panel_text": texts(),
+        "panel_text": texts(bool(doc.get("generalized_forces"))),
         "diagram": diagram(
             info.get("family", ""),
             f"Set-up: {info.get('title', '')}",

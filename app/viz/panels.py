@@ -108,6 +108,8 @@ class Panel:
     optional: bool = False  # shown only where declared
     # shown open only where this holds; elsewhere it is one click away, under "details" (None: always open)
     open_when: Callable[[Facts], bool] | None = None
+    # the explanation where generalized forces Q act (no potential describes them), if it differs
+    forced_text: str | None = None
 
 
 PANELS: tuple[Panel, ...] = (
@@ -215,6 +217,13 @@ PANELS: tuple[Panel, ...] = (
         "being a minimum: it becomes a saddle of S.",
         "always (every system has an L)",
         lambda f: True,
+        # with a force Q no potential describes, Hamilton's principle reads δS + ∫ Q δq dt = 0: S alone is not
+        # stationary, and there is no kinetic focus of S to speak of
+        forced_text="With a force that no potential describes, the true motion does not make S = ∫ L dt "
+        "stationary: Hamilton's principle becomes δS + ∫ Q δq dt = 0, where Q is the generalized force. Drag the "
+        "dashed path (or use ε) to vary one coordinate by ε sin(nπt/τ) over a time τ; the lower plots show L along "
+        "both paths and S against ε. Its slope at ε = 0 is not zero: it equals −∫ Q η dt, the work the force "
+        "does along the variation, with the sign reversed.",
     ),
     Panel(
         "work-precision",
@@ -246,6 +255,6 @@ def folded(facts: Facts, names: Sequence[str]) -> list[str]:
     return [n for n, rule in rules.items() if rule is not None and not rule(facts)]
 
 
-def texts() -> dict[str, dict[str, str]]:
-    """Title and explanation of every panel (for the templates)."""
-    return {p.name: {"title": p.title, "text": p.text} for p in PANELS}
+def texts(forced: bool = False) -> dict[str, dict[str, str]]:
+    """Title and explanation of every panel (for the templates); ``forced``: generalized forces Q act."""
+    return {p.name: {"title": p.title, "text": (p.forced_text if forced and p.forced_text else p.text)} for p in PANELS}

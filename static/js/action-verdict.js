@@ -20,12 +20,25 @@ function bound(x, unit) {
 }
 
 const ADVICE = {
-  "closer-trial": "drag the trial path nearer the true path (a smaller ε)",
+  "closer-trial": "drag the points of the trial path nearer the true path",
   "shorter-t": "choose a shorter τ",
   "from-shooting": "start from the shooting solution (the button “Start from the shooting solution”)",
 };
 
-export function verdict(f, { q, label, unit, rateUnit, T, steps: gridSteps }) {
+/** When the shooting solution is not the grey path from the run's start (same ends, another starting rate): both are
+ *  true motions, and the reader is told why there can be several (else three different "true" paths go unexplained). */
+function several(f, { q, label, rateUnit, T, startRate, sameEnds }) {
+  const shot = f.shooting?.velocity?.[`${q}_dot`];
+  if (!sameEnds || startRate === undefined || shot === undefined) return "";
+  if (Math.abs(shot - startRate) <= 1e-6 * Math.max(1, Math.abs(startRate))) return "";
+  const u = rateUnit ? ` ${rateUnit}` : "";
+  const start = Math.abs(startRate) < RATE_FLOOR ? "0" : fmt(startRate);
+  return ` It is not the grey path from the start, which leaves with ${label}̇(0) = ${start}${u}, and both are true motions: `
+    + `more than one motion can join the same two positions in the same time τ = ${fmt(T)} s, each leaving with its `
+    + `own starting rate, and each makes S stationary. Which one Newton's method settles on depends on the trial path it starts from.`;
+}
+
+export function verdict(f, { q, label, unit, rateUnit, T, steps: gridSteps, startRate, sameEnds }) {
   const newton = f.iterations.length - 1;
   // the shooting solution's starting rate of the shown coordinate; below the shooting's accuracy it is 0
   const v = f.shooting ? f.shooting.velocity[`${q}_dot`] : null;
@@ -38,7 +51,7 @@ export function verdict(f, { q, label, unit, rateUnit, T, steps: gridSteps }) {
     const text = `Newton's method made the discrete action stationary in ${newton} step${newton === 1 ? "" : "s"}, and the path it found is the path of a true motion between these ends. `
       + `The shooting solution (${start}) runs along it to within ${bound(f.difference, unit)}; `
       + `halving the time step of the ${gridSteps}-step grid moves the path by at most ${bound(3 * f.error_estimate, unit)}, and the extrapolated path shown is closer still. ${what}`;
-    return { found: true, text, advice: [] };
+    return { found: true, text: text + several(f, { q, label, rateUnit, T, startRate, sameEnds }), advice: [] };
   }
   const why = [];
   if (f.reasons.includes("not-stationary")) {
@@ -51,7 +64,8 @@ export function verdict(f, { q, label, unit, rateUnit, T, steps: gridSteps }) {
     why.push(`No true motion runs along it: the shooting solution between the same ends (${start}) differs from it by up to ${bound(f.difference, unit)}.`);
   }
   if (f.reasons.includes("no-shooting")) {
-    why.push(`No motion from the start reaches the end point at τ = ${fmt(T)} s by shooting, so there is nothing to check the curve against.`);
+    // shooting failing to converge proves nothing about existence: say what was tried, not that no motion exists
+    why.push(`Shooting (adjusting the starting rate until the run ends at the end point at τ = ${fmt(T)} s) did not converge from the starting rates it tried, so there is no true motion to check the curve against.`);
   }
   const tips = f.advice.map((a) => ADVICE[a]).filter(Boolean);
   const todo = tips.length ? ` To find it: ${tips.length > 1 ? `${tips.slice(0, -1).join(", ")}, or ${tips[tips.length - 1]}` : tips[0]}.` : "";

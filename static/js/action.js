@@ -70,7 +70,7 @@ export class ActionPanel {
       <div class="action-controls" style="display:flex;flex-wrap:wrap;gap:0.4rem 1rem;align-items:center">
         ${names.length > 1 ? group(`<label for="${id("coordinate")}">Vary</label> <select id="${id("coordinate")}">${names.map((q, i) => `<option value="${i}">${this.label(q)}</option>`).join("")}</select>`) : ""}
         ${group(`<label for="${id("k")}">Shape n</label> <select id="${id("k")}">${Array.from({ length: 6 }, (_, j) => `<option value="${j + 1}">${j + 1}</option>`).join("")}</select>`)}
-        ${group(`<label for="${id("eps")}">ε</label> <input type="range" id="${id("eps")}" min="-1" max="1" step="0.01" value="0">`)}
+        ${group(`<label for="${id("eps")}">ε</label> <input type="range" id="${id("eps")}" min="-1" max="1" step="0.01" value="0"> <output id="${id("eps-value")}" for="${id("eps")}"></output>`)}
         ${group(`<button type="button" id="${id("find")}" aria-pressed="false">Find the path</button> <button type="button" id="${id("relax")}" hidden>Relax</button>`)}
         <button type="button" id="${id("from-shooting")}" hidden>Start from the shooting solution</button>
         ${group(`<label for="${id("T")}">Duration τ</label> <input type="range" id="${id("T")}" min="${this.tEnd / 200}" max="${this.tEnd}" step="${this.tEnd / 200}" value="${this.T}"> <output id="${id("T-value")}" for="${id("T")}"></output>`)}
@@ -78,6 +78,7 @@ export class ActionPanel {
     this.epsInput = tools.querySelector(`#${id("eps")}`);
     this.TInput = tools.querySelector(`#${id("T")}`);
     this.TOut = tools.querySelector(`#${id("T-value")}`);
+    this.epsOut = tools.querySelector(`#${id("eps-value")}`);
     this.findButton = tools.querySelector(`#${id("find")}`);
     this.relaxButton = tools.querySelector(`#${id("relax")}`);
     this.findButton.addEventListener("click", () => this.toggleFind());
@@ -86,11 +87,27 @@ export class ActionPanel {
     this.shootButton.addEventListener("click", () => this.fromShooting());
     tools.querySelector(`#${id("k")}`).addEventListener("change", (e) => { this.shape = Number(e.target.value); this.update(true); });
     tools.querySelector(`#${id("coordinate")}`)?.addEventListener("change", (e) => { this.coordinate = Number(e.target.value); this.eps = 0; this.epsInput.value = "0"; this.update(true); });
-    this.epsInput.addEventListener("input", () => { this.eps = Number(this.epsInput.value) * this.epsMax; this.update(false); });
-    this.TInput.addEventListener("input", () => { this.T = Number(this.TInput.value); this.update(true); });
+    // the slider holds ε itself, in the coordinate's unit (its range follows the path: ±epsMax)
+    this.epsInput.addEventListener("input", () => { this.eps = Number(this.epsInput.value); this.update(false); });
+    this.TInput.addEventListener("input", () => {
+      this.T = Number(this.TInput.value);
+      // in "Find the path" a new τ moves the fixed end: the trial path and any relaxed answer belong to the old τ
+      if (this.finding) { this.found = null; this.frame = null; this.seed = null; this.shootButton.hidden = true; this.controlsT = null; }
+      this.update(true);
+    });
+    if (this.data.forced) this.findButton.hidden = true; // relaxing makes S alone stationary: not the motion here
   }
 
   label(q) { return (this.data.labels && this.data.labels[q]) || q; }
+
+  /** Which sine shape lowers S, naming the one on screen first (second[j] = d²S/dε² for n = j + 1). */
+  lowering(second) {
+    const n = this.shape, here = second[n - 1];
+    const first = second.findIndex((x) => x < 0) + 1;
+    if (here < 0) return `The variation on screen, n = ${n}, lowers S: drag it and S falls on both sides of the true path.`;
+    if (first > 0) return `The variation on screen, n = ${n}, still raises S, but the shape n = ${first} lowers it.`;
+    return `The variation on screen, n = ${n}, raises S, and so does every single sine shape tried; a combination of them lowers it.`;
+  }
 
   bindDrag() {
     // dragging the varied path: ε = (y − q(t)) / η(t) at the pointer, where |η| is not small
@@ -106,7 +123,7 @@ export class ActionPanel {
       const i = Math.round((t / this.T) * (this.live.path.t.length - 1));
       const q = this.live.path.Y[i][this.coordinate];
       this.eps = Math.max(-this.epsMax, Math.min(this.epsMax, (y - q) / eta));
-      this.epsInput.value = String(this.eps / this.epsMax);
+      this.epsInput.value = String(this.eps);
       this.update(false);
     };
     this.plot.addEventListener("pointerdown", (e) => {
@@ -160,6 +177,8 @@ export class ActionPanel {
       for (const y of p.Y) { lo = Math.min(lo, y[this.coordinate]); hi = Math.max(hi, y[this.coordinate]); }
       this.epsMax = Math.max(0.2, 0.6 * (hi - lo));
       this.eps = Math.max(-this.epsMax, Math.min(this.epsMax, this.eps));
+      this.epsInput.min = String(-this.epsMax); this.epsInput.max = String(this.epsMax);
+      this.epsInput.step = String(this.epsMax / 100); this.epsInput.value = String(this.eps);
       this.pathKey = key; this.cachedPath = p;
       if (this.focusKey !== `${Array.from(y0)}|${Array.from(k)}`) {
         this.focusKey = `${Array.from(y0)}|${Array.from(k)}`;
@@ -176,6 +195,9 @@ export class ActionPanel {
       y0, k, T: this.T, c: this.coordinate, shape: this.shape, eps: this.eps, epsilons: this.epsilons,
       path: this.cachedPath, previous: newPath ? null : this.live,
     });
+    const q = this.data.coordinates[this.coordinate], unit = this.data.units?.[q] || "";
+    this.TOut.textContent = `${fmt(this.T)} s`;
+    this.epsOut.textContent = `${fmt(this.eps)}${unit ? ` ${unit}` : ""}`;
     this.paint();
     this.section.dataset.recompute = (performance.now() - started).toFixed(1);
   }
@@ -236,16 +258,24 @@ export class ActionPanel {
     const kind = s ? s.kind : live.kind;
     // the server looks for the focus up to τ only; the browser's search reaches the end of the run, so a focus
     // past τ comes from it (else the panel said "no kinetic focus before 10 s" at τ = 1 s and t* = 1.57 s at τ = 2 s)
-    const tStar = s && s.conjugate_time !== null && s.conjugate_time !== undefined ? s.conjugate_time : this.focusAt;
+    const forced = Boolean(this.data.forced);
+    // with a force Q, S alone is not stationary and its kinetic focus means nothing: none is marked or named
+    const tStar = forced ? null : s && s.conjugate_time !== null && s.conjugate_time !== undefined ? s.conjugate_time : this.focusAt;
     // the browser's S(ε) - S(0) (the same quadrature for both) on top of the shown S(0)
     const Snow = S0 + (live.now.S - live.truth.S);
+    // the tangent at ε = 0: flat by Hamilton's principle, but with a force Q its slope is dS/dε = −∫ Q η dt
+    // (the server's figure, else the curve's central difference at ε = 0)
+    const mid = (this.epsilons.length - 1) / 2;
+    const slope = !forced ? 0 : s ? s.first_variation
+      : (curve[mid + 1] - curve[mid - 1]) / (this.epsilons[mid + 1] - this.epsilons[mid - 1]);
+    const reach = 0.35 * this.epsMax;
     const traces = [
       { type: "scatter", mode: "lines", x: t, y: trueQ, name: "true path", line: { color: PALETTE[0], width: 2 } },
       { type: "scatter", mode: "lines", x: t, y: variedQ, name: "your path (drag it)", line: { color: PALETTE[1], width: 3, dash: "dash" } },
       { type: "scatter", mode: "lines", x: t, y: Array.from(live.truth.L), name: "L on the true path", xaxis: "x2", yaxis: "y2", line: { color: PALETTE[0], width: 1.5 }, showlegend: false },
       { type: "scatter", mode: "lines", x: t, y: Array.from(live.now.L), name: "L on your path", xaxis: "x2", yaxis: "y2", line: { color: PALETTE[1], width: 1.5, dash: "dash" }, showlegend: false },
       { type: "scatter", mode: "lines", x: this.epsilons, y: curve, name: "S(ε)", xaxis: "x3", yaxis: "y3", line: { color: PALETTE[2], width: 2 }, showlegend: false },
-      { type: "scatter", mode: "lines", x: [-0.35 * this.epsMax, 0.35 * this.epsMax], y: [S0, S0], name: "tangent at ε = 0", xaxis: "x3", yaxis: "y3", line: { color: "#57606a", width: 1, dash: "dot" }, showlegend: false },
+      { type: "scatter", mode: "lines", x: [-reach, reach], y: [S0 - slope * reach, S0 + slope * reach], name: "tangent at ε = 0", xaxis: "x3", yaxis: "y3", line: { color: "#57606a", width: 1, dash: "dot" }, showlegend: false },
       { type: "scatter", mode: "markers", x: [this.eps], y: [Snow], name: "S of your path", xaxis: "x3", yaxis: "y3", marker: { color: PALETTE[1], size: 10 }, showlegend: false },
     ];
     const shapes = [];
@@ -268,13 +298,12 @@ export class ActionPanel {
       window.Plotly?.react(this.plot, traces, lay, CONFIG);
       this.drawn = { path: live.path, curve, T };
     }
-    this.TOut.textContent = `${fmt(T)} s`;
     const source = s ? "server" : "preview";
     this.section.dataset.source = source;
     this.section.dataset.kind = kind;
     this.section.dataset.s0 = String(S0);
     this.section.dataset.sNow = String(Snow);
-    const focusWords = tStar === null || tStar === undefined
+    const focusWords = forced ? "" : tStar === null || tStar === undefined
       ? `No kinetic focus before ${fmt(this.tEnd)} s.`
       : `The first kinetic focus (conjugate point) of this start is at t* = ${fmt(tStar)} s${tStar <= T ? ", marked on the time axis" : ""}.`;
     let verdict;
@@ -284,11 +313,12 @@ export class ActionPanel {
       verdict = `With τ = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S: the sine shapes tried `
         + "all raise S, but some other variation with the same ends lowers it. S is still stationary: its tangent at ε = 0 stays flat.";
     } else if (kind === "minimum") verdict = `With τ = ${fmt(T)} s, before any kinetic focus, the true path is a minimum of S: every variation with the same ends raises it.`;
-    else if (kind === "saddle") verdict = `With τ = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S: it is a saddle, and ${live.second.some((x) => x < 0) ? `the variation with n = ${live.second.findIndex((x) => x < 0) + 1}` : "a combination of the sine shapes"} lowers S. S is still stationary: its tangent at ε = 0 stays flat.`;
+    else if (kind === "saddle") verdict = `With τ = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S: it is a saddle. ${this.lowering(live.second)} S is still stationary: its tangent at ε = 0 stays flat.`;
     else verdict = `With τ = ${fmt(T)} s every variation tried lowers S: the true path is a maximum among them.`;
     if (this.data.forced) {
-      verdict = "Forces Q that no potential describes act here, so the true path makes δS + ∫ Q·δq dt vanish rather than "
-        + `making S stationary: S(ε) is not flat at ε = 0. Its curvature still shows how S bends (here ${kind === "minimum" ? "upward for every shape tried" : "downward for some shape"}).`;
+      // δS + ∫ Q δq dt = 0 on the true path, so with δq = ε η: dS/dε at ε = 0 is −∫ Q η dt, not zero
+      verdict = "A force that no potential describes acts here, so the true path makes δS + ∫ Q δq dt vanish rather than "
+        + "making S stationary: S(ε) is not flat at ε = 0, and its slope there is −∫ Q η dt, the work of Q along the variation with the sign reversed.";
     }
     const second = s ? s.second_variation : live.secondVariation;
     const diff = Snow - S0;
@@ -298,7 +328,7 @@ export class ActionPanel {
     // every number with its unit: ε is in the coordinate's unit, so d²S/dε² is in J·s per unit²
     const curvature = unit ? ` J·s/${unit}²` : "";
     this.readout.textContent = `S of the true path = ${fmt(S0)} J·s; ${yours}. `
-      + `d²S/dε² at ε = 0 is ${fmt(second)}${curvature}. ${verdict} ${focusWords}`
+      + `d²S/dε² at ε = 0 is ${fmt(second)}${curvature}. ${verdict}${focusWords ? ` ${focusWords}` : ""}`
       + (s ? ` The server's more accurate figures: S to within ±${fmt(s.error_estimate)} J·s, and dS/dε at ε = 0 ${flatWithin(s) ? "≈ 0 (within that error)" : `= ${fmt(s.first_variation)} J·s${unit ? `/${unit}` : ""}`}.${s.warnings?.length && !this.data.forced ? ` Note: ${s.warnings.join("; ")}.` : ""}` : " Computed in your browser; the server's more accurate figures follow.");
     if (this.summary && s) {
       table(this.summary, `S(ε) for the shape n = ${this.shape}, τ = ${fmt(T)} s`, ["ε", "S (J·s)"], s.epsilons.map((e, i) => [fmt(e), fmt(s.action[i])]));
@@ -404,6 +434,7 @@ export class ActionPanel {
   }
 
   paintFind() {
+    if (!this.controlsT) this.resetControls(); // τ moved: the ends follow the true path to the new τ
     const q = this.data.coordinates[this.coordinate], lq = this.label(q), unit = this.data.units?.[q] || "";
     const p = this.live.path, t = Array.from(p.t);
     const traces = [
@@ -430,7 +461,10 @@ export class ActionPanel {
         : `Relaxing: after Newton step ${this.frame} the path moves toward the one that makes the discrete action stationary…`;
       return;
     }
-    const said = verdict(f, { q, label: lq, unit, rateUnit: rateUnit(this.data, q), T: this.T, steps: RELAX_STEPS });
+    // the grey path's ends and starting rate: a relaxed motion with the same ends but another rate is a second true motion
+    const Y = p.Y, last = Y.length - 1, n = this.data.coordinates.length, c = this.coordinate, size = Math.max(1, Math.abs(Y[last][c]));
+    const sameEnds = Math.abs(this.controlsQ[0] - Y[0][c]) <= 1e-9 * size && Math.abs(this.controlsQ[this.controlsQ.length - 1] - Y[last][c]) <= 1e-9 * size;
+    const said = verdict(f, { q, label: lq, unit, rateUnit: rateUnit(this.data, q), T: this.T, steps: RELAX_STEPS, startRate: Y[0][n + c], sameEnds });
     this.section.dataset.relaxed = said.found ? f.kind : "not-found";
     this.shootButton.hidden = !said.advice.includes("from-shooting");
     this.readout.textContent = said.text;

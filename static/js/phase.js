@@ -192,7 +192,15 @@ export class PhasePanel extends PreviewPanel {
       ? (m.turn ? ` Its level H = ${fmt(E0)} J lies above the separatrix (${fmt(Es)} J): it goes over the top, round and round.` : ` Its level H = ${fmt(E0)} J lies above the separatrix (${fmt(Es)} J).`)
       : ` Its level H = ${fmt(E0)} J lies below the separatrix (${fmt(Es)} J): it swings back and forth.`;
     const forced = run.data.forced ? " A non-conservative force acts, so the run crosses the level sets instead of following one." : "";
-    const eq = found.length ? ` Equilibria in view: ${found.map((e) => `${lr} = ${fmt(e.x)} (${e.stable ? "stable" : "unstable"})`).join(", ")}.` : "";
+    // an angle's top is at θ = π, inside the wrapped interval (−π, π] (−π is the same point, outside it)
+    const at = (x) => (m.turn && Math.abs(Math.abs(x) - Math.PI) < 1e-6 ? "π" : fmt(x));
+    const listed = found.map((e) => `${lr} = ${at(e.x)} (${e.stable ? "stable" : "unstable"})`)
+      .filter((text, i, all) => all.indexOf(text) === i);
+    // with cyclic coordinates held at their momenta, a rest point of this plane is a steady motion (a circular orbit,
+    // a conical swing), an equilibrium of the reduced problem only: the other coordinates keep turning
+    const eq = !listed.length ? "" : m.held
+      ? ` Steady motions in view (rest points of the reduced problem in ${lr}; the other coordinates keep turning): ${listed.join(", ")}.`
+      : ` Equilibria in view: ${listed.join(", ")}.`;
     const reduction = m.held ? ` The other coordinates are cyclic: their momenta stay at ${m.held} (the initial state's), which leaves H a function of ${lr} and its rate.` : "";
     this.readout.textContent = `${lr} against its rate${angle && m.turn ? ", the angle wrapped into (−π, π]" : ""}.${reduction}${kind}${eq}${forced}`;
     seriesTable(this.summary, `Phase portrait of ${lr}`, run.t, [{ name: lr, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[r + "_dot"], values: m.rates }]);

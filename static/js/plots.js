@@ -126,6 +126,7 @@ class ConstraintForcePanel extends TimePanel {
 }
 
 const REPEATS = 3;
+const SLOW_MS = 4000; // a work-precision report still loading after this long is being measured
 const errorUnit = (data) => [...new Set(data.coordinates.map((q) => data.units[q]))].join(" or ");
 
 class WorkPrecisionPanel {
@@ -172,14 +173,25 @@ class WorkPrecisionPanel {
     if (!this.visible) { this.readout.textContent = `${here} The chart loads when this panel is in view.`; return; }
     this.readout.textContent = `${here} Loading the error-against-run-time chart…`;
     this.section.setAttribute("aria-busy", "true");
+    // the report is measured once per engine version (at the server's warm-up, else on the first request): a reader
+    // who waits longer than a moment is told what is being done, not left with "Loading…"
+    const slow = setTimeout(() => {
+      if (this.run === run && this.section.getAttribute("aria-busy") === "true") {
+        this.readout.textContent = `${here} The chart is being measured on the server: every method at each tolerance of `
+          + "the sweep, each timed several times. The server measures it once after an update, which can take minutes "
+          + "while it is busy; it then stays ready for every reader, and the chart appears here when it is done.";
+      }
+    }, SLOW_MS);
     let report;
     try {
       report = await this.report();
     } catch (err) {
+      clearTimeout(slow);
       this.readout.textContent = `${here} ${err.message}`;
       this.section.setAttribute("aria-busy", "false");
       return;
     }
+    clearTimeout(slow);
     const methods = [...new Set(report.runs.map((r) => r.method))];
     const traces = methods.map((m, k) => {
       const runs = report.runs.filter((r) => r.method === m && r.error > 0 && r.wall_time_s > 0);

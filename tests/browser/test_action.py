@@ -147,3 +147,67 @@ def test_relax_refuses_a_path_no_motion_follows_and_starts_again_from_shooting(p
     assert page.locator(PANEL).get_attribute("data-relaxed") == "saddle"  # the true path, past the focus
     assert "θ̇(0) = 0 rad/s" in page.locator(f"{PANEL} .readout").text_content()
     assert not page.console_errors
+
+
+def test_find_the_path_follows_a_moved_tau(page, artifacts):
+    # prof-a A3: τ moved after "Find the path" was pressed kept the old τ's label and trial path, and Relax failed
+    _open(page)
+    page.locator("#action-find").click()
+    page.locator("#action-T").fill("2.75")
+    page.dispatch_event("#action-T", "input")
+    assert page.locator("#action-T-value").text_content() == "2.75 s"
+    trial_end = page.evaluate(f"document.querySelector('{PANEL} .plot').data[1].x.slice(-1)[0]")
+    assert abs(trial_end - 2.75) < 1e-9
+    page.locator("#action-relax").click()
+    page.wait_for_function(f"document.querySelector('{PANEL}').dataset.relaxed !== undefined", timeout=120_000)
+    readout = page.locator(f"{PANEL} .readout").text_content()
+    page.locator(PANEL).screenshot(path=artifacts / "action-find-moved-tau.png")
+    assert page.locator(PANEL).get_attribute("data-relaxed") in ("minimum", "saddle"), readout
+    assert "τ = 2.75 s" in readout
+    # the relaxed motion leaves with another rate than the grey one from rest: the page says both are true motions
+    if "It is not the grey path from the start" in readout:
+        assert "more than one motion can join the same two positions" in readout
+    assert not page.console_errors
+
+
+def test_the_eps_slider_shows_the_eps_the_text_reports(page):
+    # prof-a A6: the slider had no number beside it, and the text reported another ε than its position
+    _open(page)
+    page.locator("#action-eps").fill("0.5")
+    page.dispatch_event("#action-eps", "input")
+    shown = page.locator("#action-eps-value").text_content()
+    assert shown.endswith(" rad") and abs(float(shown.split()[0]) - 0.5) <= 0.01, shown
+    assert abs(float(page.locator("#action-eps").input_value()) - float(shown.split()[0])) < 1e-3  # the slider's own ε
+    assert f"(ε = {shown}, n = 1)" in page.locator(f"{PANEL} .readout").text_content()
+    assert not page.console_errors
+
+
+def test_the_saddle_names_the_shape_on_screen(page):
+    # prof-a A5: with shape n = 6 on screen the text said "the variation with n = 1 lowers S"
+    _open(page)
+    page.locator("#action-T").fill("2")
+    page.dispatch_event("#action-T", "input")
+    page.wait_for_function(f"{SERVER} && document.querySelector('{PANEL}').dataset.kind === 'saddle'")
+    assert "The variation on screen, n = 1, lowers S" in page.locator(f"{PANEL} .readout").text_content()
+    page.locator("#action-k").select_option("6")
+    page.wait_for_function(f"document.querySelector('{PANEL} .readout').textContent.includes('n = 6')")
+    readout = page.locator(f"{PANEL} .readout").text_content()
+    assert "The variation on screen, n = 6, still raises S, but the shape n = 1 lowers it" in readout, readout
+    assert not page.console_errors
+
+
+def test_a_forced_system_claims_no_stationary_S_and_no_kinetic_focus(page):
+    # prof-a A7: the damped pendulum's panel said S is stationary and marked a kinetic focus of S
+    _open(page, "/scenes/damped-pendulum")
+    readout = page.locator(f"{PANEL} .readout").text_content()
+    assert "δS + ∫ Q δq dt vanish" in readout and "−∫ Q η dt" in readout
+    assert "kinetic focus" not in readout and "minimum" not in readout
+    assert page.evaluate(f"document.querySelector('{PANEL} .plot').layout.shapes.length") == 0
+    assert page.locator("#action-find").is_hidden()  # relaxing would make S alone stationary
+    # the tangent at ε = 0 is drawn with the slope the readout gives (not flat), and the readout has no double space
+    tangent = page.evaluate(f"document.querySelector('{PANEL} .plot').data[5]")
+    slope = (tangent["y"][1] - tangent["y"][0]) / (tangent["x"][1] - tangent["x"][0])
+    stated = float(readout.split("dS/dε at ε = 0 = ")[1].split(" J·s/rad")[0].replace("−", "-"))
+    assert slope == pytest.approx(stated, rel=1e-3) and slope != 0
+    assert "  " not in readout
+    assert not page.console_errors

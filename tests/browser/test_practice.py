@@ -119,7 +119,7 @@ def test_a_named_mistake_its_piece_and_its_follow_up(page, artifacts):
     assert "the part of the ball's velocity that comes from φ̇" in mistake.inner_text()
     # the missing piece, R sin θ φ̇, typeset
     piece = mistake.locator(".verdict-piece annotation").text_content()
-    assert "\\dot{\\phi}" in piece and "\\sin" in piece and mistake.locator(".verdict-piece .katex").is_visible()
+    assert "\\dot{\\varphi}" in piece and "\\sin" in piece and mistake.locator(".verdict-piece .katex").is_visible()
     assert "Everything else in your T is right." in verdict.locator(".verdict-partial").inner_text()
     verdict.screenshot(path=artifacts / "practice-mistake-1366.png")
 

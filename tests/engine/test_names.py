@@ -11,7 +11,7 @@ def test_forms_of_a_name():
     assert (latex("theta_dot"), unicode("theta_dot"), plain("theta_dot")) == (r"\dot{\theta}", "θ̇", "theta_dot")
     assert (latex("theta1_ddot"), unicode("theta1_ddot")) == (r"\ddot{\theta}_{1}", "θ̈₁")
     assert (latex("x1"), unicode("x1")) == ("x_{1}", "x₁")
-    assert (latex("p_phi"), unicode("p_phi")) == (r"p_{\phi}", "p_φ")
+    assert (latex("p_phi"), unicode("p_phi")) == (r"p_{\varphi}", "p_φ")  # one glyph: KaTeX \varphi is φ
     assert (latex("Omega"), unicode("Omega")) == (r"\Omega", "Ω")
     assert latex("U_eff") == r"U_{\text{eff}}" and latex("E_r") == "E_{r}"
 

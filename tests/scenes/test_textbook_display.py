@@ -65,10 +65,10 @@ PINNED = {  # fmt: skip
         ],
     ),
     "spherical-pendulum": (
-        "\\frac{1}{2} m R^{2} \\left(\\dot{\\theta}^{2} + \\dot{\\phi}^{2} \\sin^{2} {\\theta}\\right) - m g R \\cos {\\theta}",
+        "\\frac{1}{2} m R^{2} \\left(\\dot{\\theta}^{2} + \\dot{\\varphi}^{2} \\sin^{2} {\\theta}\\right) - m g R \\cos {\\theta}",
         [
-            "\\ddot{\\theta} - \\dot{\\phi}^{2} \\sin {\\theta} \\cos {\\theta} - \\frac{g}{R} \\sin {\\theta} = 0",
-            "\\ddot{\\phi} + \\frac{2 \\dot{\\phi} \\dot{\\theta} \\cos {\\theta}}{\\sin {\\theta}} = 0",
+            "\\ddot{\\theta} - \\dot{\\varphi}^{2} \\sin {\\theta} \\cos {\\theta} - \\frac{g}{R} \\sin {\\theta} = 0",
+            "\\ddot{\\varphi} + \\frac{2 \\dot{\\varphi} \\dot{\\theta} \\cos {\\theta}}{\\sin {\\theta}} = 0",
         ],
     ),
     "tabletop-spring": (

@@ -39,7 +39,9 @@ def test_the_pendulums_rate_marks_the_separatrix():
     # ½ m R² θ̇₀² + m g R (1 − cos θ₀) = 2 m g R
     v = math.sqrt(2 * p["g"] / p["R"] * (1 + math.cos(theta0)))
     assert sorted(float(t["value"]) for t in rate["ticks"]) == pytest.approx([-v, v], rel=1e-5)
-    assert [t["text"] for t in rate["ticks"] if t["text"]] == [f"separatrix: just reaches θ = π: ±{v:.4g} rad/s"]
+    assert [t["text"] for t in rate["ticks"] if t["text"]] == [
+        f"separatrix from θ(0) = {theta0:.4g} rad: just reaches θ = π: ±{v:.4g} rad/s"
+    ]
     assert float(rate["max"]) >= 1.5 * v
 
 

@@ -61,7 +61,7 @@ def test_a_wrong_path_is_refused_with_the_reason_and_what_to_do():
     assert "so the curve shown is not a stationary path of S" in text
     assert "No true motion runs along it: the shooting solution between the same ends" in text
     assert text.endswith(
-        "To find it: drag the trial path nearer the true path (a smaller ε), choose a shorter τ, or start from the "
+        "To find it: drag the points of the trial path nearer the true path, choose a shorter τ, or start from the "
         "shooting solution (the button “Start from the shooting solution”)."
     )
     assert "minimum" not in text and "saddle" not in text  # nothing is said of a path that was not found

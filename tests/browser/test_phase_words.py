@@ -1,0 +1,29 @@
+"""The phase portrait's words: a steady motion is not called an equilibrium, and the top of a swing is at π."""
+
+from __future__ import annotations
+
+import pytest
+
+pytestmark = pytest.mark.browser
+
+LEVELS = "document.querySelector('#panel-phase')?.dataset.xrange"
+
+
+def _readout(page, scene_id):
+    page.goto(f"/scenes/{scene_id}")
+    page.locator("#panel-phase").scroll_into_view_if_needed()
+    page.wait_for_function(LEVELS)
+    return page.locator("#panel-phase .readout").text_content()
+
+
+def test_a_circular_orbit_is_a_steady_motion(page):
+    # prof-a A10: "Equilibria in view: r = 0.7071 (stable)" while the page says no rest position but the anchor
+    text = _readout(page, "tabletop-spring")
+    assert "Equilibria" not in text
+    assert "Steady motions in view (rest points of the reduced problem in r" in text and "r = 0.7071 (stable)" in text
+
+
+def test_the_top_is_at_pi_inside_the_wrapped_interval(page):
+    # prof-a A10: "θ = −3.142 (unstable)" beside "angles are wrapped into (−π, π]"
+    text = _readout(page, "simple-pendulum")
+    assert "Equilibria in view: θ = π (unstable), θ = 0 (stable)." in text and "3.142" not in text
