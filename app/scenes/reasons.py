@@ -203,7 +203,7 @@ SPHERICAL_PENDULUM: dict[str, str] = {
 
 
 RAIL_TWO_BODY: dict[str, str] = {
-    "action": "The two cars move so that ∫ L dt is stationary between two configurations; the spring gives their relative motion a kinetic focus half its period after the start, past which S has a saddle there.",
+    "action": "The two masses move so that ∫ L dt is stationary between two configurations; the spring gives their relative motion a kinetic focus half its period after the start, past which S has a saddle there.",
     "positions": "Both masses are on the rail, so each is given by its own x.",
     "velocities": "Each mass moves with its own ẋ along the rail.",
     "squared-speeds": "On a line the squared speed is ẋ² for each mass.",
@@ -215,12 +215,12 @@ RAIL_TWO_BODY: dict[str, str] = {
     "euler-lagrange": "Newton's law for each mass with equal and opposite spring forces.",
     "mass-matrix": "M is diagonal, m₁ and m₂: the masses are coupled only through the spring.",
     "accelerations": "Each acceleration is the spring force over that mass.",
-    "momenta": "p₁ = m₁ ẋ₁ and p₂ = m₂ ẋ₂; their sum is conserved.",
+    "momenta": "p_x₁ = m₁ ẋ₁ and p_x₂ = m₂ ẋ₂ are the two masses' momenta; their sum p_x₁ + p_x₂ is conserved.",
     "time-dependence": "Rail and spring are fixed, so L has no t.",
     "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
     "energy": "Both kinetic energies plus the spring's.",
     "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
-    **_hamiltonian("p₁²/(2m₁) + p₂²/(2m₂) + ½ k (x₂ − x₁ − l₀)²"),
+    **_hamiltonian("p_x₁²/(2m₁) + p_x₂²/(2m₂) + ½ k (x₂ − x₁ − l₀)²"),
     "equilibria": "At rest the spring is at its rest length, x₂ − x₁ = l₀, anywhere on the rail.",
     "normal-modes": "One mode is a free drift of both masses (ω = 0); the other is the spring's oscillation, ω² = k/μ.",
     "change-of-coordinates": "The centre of mass X and the separation x split the motion into two independent parts.",
@@ -235,13 +235,13 @@ RAIL_TWO_BODY: dict[str, str] = {
 PULLEY: dict[str, str] = {
     "action": "The masses move so that ∫ L dt is stationary between two positions; with constant gravity and no spring there is no kinetic focus, and the true path is a minimum of the action for every duration.",
     "positions": "The end masses hang at heights y₁ and y₂; the string fixes the middle mass at −(y₁ + y₂)/2.",
-    "velocities": "The middle mass moves at −(ẏ₁ + ẏ₂)/2, half the sum of the ends' speeds.",
+    "velocities": "The middle mass moves at Ẏ = −(ẏ₁ + ẏ₂)/2, minus half the sum of the end masses' velocities.",
     "squared-speeds": "Each mass moves vertically only.",
     "kinetic": "The middle mass couples the two coordinates through the term in ẏ₁ ẏ₂.",
     "potential": "Gravity on all three masses; the middle one is lower when the ends are higher.",
     "lagrangian": "Two coordinates for three masses: the string removed one.",
-    "derivatives:y1": "∂L/∂y₁ is the net weight felt through the string by mass 1.",
-    "derivatives:y2": "∂L/∂y₂ is the same for mass 2.",
+    "derivatives:y1": "∂L/∂y₁ = M g/2 − m₁ g is the generalized force on y₁: half the middle weight, pulled through the string, less mass 1's own weight.",
+    "derivatives:y2": "∂L/∂y₂ = M g/2 − m₂ g, the same for mass 2.",
     "euler-lagrange": "The two equations share the middle mass's inertia M/4.",
     "mass-matrix": "The mass matrix 𝓜 (M is the middle body's mass) is not diagonal: the middle mass responds to both ends.",
     "accelerations": "Constant accelerations: every force here is a constant weight.",
@@ -251,15 +251,15 @@ PULLEY: dict[str, str] = {
     "energy": "Kinetic plus gravitational energy of all three masses.",
     "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
     **_hamiltonian("the kinetic energy written with the inverse mass matrix, plus the weights"),
-    "equilibria": "Constant weights balance only when m₁ = m₂ = M/2; otherwise there is no equilibrium.",
-    "constraints": "The string's length fixes z₁ + z₂ + 2 z₃.",
-    "constraint-forces": "The tension is the same along the whole string and pulls each end mass up.",
+    "equilibria": "The generalized forces are constant: with m₁ = m₂ = M/2 they vanish and every position is an equilibrium; otherwise (at the default masses, too) there is none.",
+    "constraints": "With z₁, z₂, z₃ the heights of m₁, m₂ and M (z₁ = y₁, z₂ = y₂, z₃ = Y, all in m), the string's length fixes z₁ + z₂ + 2 z₃; the constant 2 m places M below the pulleys.",
+    "constraint-forces": "λ times ∂𝒞/∂z₁ = 1 is the string's upward pull on mass 1, the tension, the same along the whole string; on the movable pulley it pulls with twice that.",
 }
 
 
 MOVABLE_INCLINE: dict[str, str] = {
     "action": "Block and wedge move so that ∫ L dt is stationary between two configurations; every force is constant, so there is no kinetic focus and the true path is a minimum of the action for every duration.",
-    "positions": "The wedge is at X; the block is D down its slope: (X + D cos α, −D sin α).",
+    "positions": "The wedge's corner is at X; the block is D down its slope, at x = X + D cos α across and height z = −D sin α.",
     "velocities": "The block's velocity adds the wedge's Ẋ to its own slide Ḋ along the slope.",
     "squared-speeds": "The slide and the wedge's motion are at angle α, hence the cross term 2 Ẋ Ḋ cos α.",
     "kinetic": "The cross term m Ẋ Ḋ cos α couples the block to the wedge.",
@@ -274,7 +274,7 @@ MOVABLE_INCLINE: dict[str, str] = {
     "cyclic": "The floor is uniform, so p_X is conserved.",
     "time-dependence": "Nothing is driven, so L has no t.",
     "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
-    "energy": "Kinetic energy of both bodies plus the block's height energy.",
+    "energy": "Kinetic energy of both bodies plus the block's gravitational energy, −m g D sin α.",
     "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
     **_hamiltonian("the kinetic energy written with the inverse mass matrix, minus m g D sin α"),
     "cyclic-velocities": "Ẋ follows from the conserved p_X and the block's Ḋ.",
@@ -283,14 +283,14 @@ MOVABLE_INCLINE: dict[str, str] = {
     "time-integral": "The integral gives the uniformly accelerated slide D(t).",
     "reduced-equilibria": "U_eff′ is constant and non-zero: the block always slides.",
     "equilibria": "A frictionless slope cannot hold the block, so there is none.",
-    "constraints": "The block stays on the slope, and the wedge on the floor.",
+    "constraints": "With (x₁, z₁) the wedge's top corner and (x₂, z₂) the block, across and up in m, the block stays on the slope and the wedge on the floor.",
     "constraint-forces": "The wedge's push on the block is less than m g cos α, because the wedge recoils.",
 }
 
 
 ROTATING_PARABOLA: dict[str, str] = {
     "action": "Along the turning wire the bead moves so that ∫ L dt is stationary, the wire's rotation built into L; whether it stays the least for long times depends on whether gravity or the spin wins.",
-    "positions": "The bead is ρ from the axis on the parabola z = α ρ², turned by the angle ω t.",
+    "positions": "The bead is at signed horizontal distance ρ from the axis on the parabola z = α ρ² (negative on the other branch), turned by the angle ω t.",
     "velocities": "ρ̇ along the wire, ω ρ around the axis, and 2 α ρ ρ̇ up.",
     "squared-speeds": "The three directions are perpendicular: (1 + 4 α² ρ²) ρ̇² + ω² ρ².",
     "kinetic": "The motor's turning adds ½ m ω² ρ², a term without ρ̇.",
