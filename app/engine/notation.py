@@ -26,6 +26,12 @@ DERIVED: dict[str, tuple[str, tuple[tuple[str, str], ...]]] = {
         (("K", "K"), (r"\mathcal{K}", "𝒦")),
     ),
     "frequency": ("angular frequency of small oscillations", ((r"\omega", "ω"), (r"\Omega", "Ω"), (r"\varpi", "ϖ"))),
+    # the small displacement of the normal modes: η (Goldstein's), never ε, the action panel's variation size
+    "displacement": (
+        "small displacement of the coordinates from an equilibrium",
+        ((r"\eta", "η"), (r"\xi", "ξ"), (r"\zeta", "ζ")),
+    ),
+    "amplitude": ("amplitudes of a normal mode (its shape)", (("a", "a"), (r"\mathbf{A}", "𝐀"))),
 }
 
 # quantities every document writes with one fixed letter

@@ -16,7 +16,7 @@ from app.engine import notation
 from app.engine.budget import memoized, pythagoras
 from app.engine.derive import Derivation
 from app.engine.hamilton import Hamilton
-from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, NormalModes
+from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode, NormalModes
 from app.engine.report import Printer, _step, display, plain_name
 from app.engine.textbook import unicode_text
 
@@ -61,16 +61,21 @@ def hamilton_steps(d: Derivation, ham: Hamilton) -> list[dict[str, str]]:
             "Velocities from the momenta",
             [f"{vn[k]} = {pr.tex(v)}" for k, v in enumerate(velocities)],
             velocities,
-            f"The momenta are linear in the velocities, p = {Mu} q̇ + b"
-            + (" (b, the momenta at rest, comes from the terms of L linear in q̇)" if offsets else "")
-            + f"; solving for the velocities gives q̇ = {Mu}⁻¹ (p − b).",
+            (
+                f"The momenta are linear in the velocities, p = {Mu} q̇ + b (b, the momenta at rest, comes from the "
+                f"terms of L linear in q̇); solving for the velocities gives q̇ = {Mu}⁻¹ (p − b)."
+                if offsets
+                else f"The momenta are linear in the velocities, p = {Mu} q̇; solving for the velocities gives "
+                f"q̇ = {Mu}⁻¹ p."
+            ),
         ),
         _step(
             "hamiltonian-pq",
             "Hamiltonian H(q, p)",
             [rf"H = \sum_k p_k \dot{{q}}_k - L = {pr.tex(H)}"],
             H,
-            f"The same h, now written in the coordinates and momenta: H = ½ (p − b)·{Mu}⁻¹(p − b) − L(q, q̇ = 0).",
+            "The same h, now written in the coordinates and momenta: "
+            + (f"H = ½ (p − b)·{Mu}⁻¹(p − b) − L(q, q̇ = 0)." if offsets else f"H = ½ p·{Mu}⁻¹p − L(q, q̇ = 0)."),
         ),
         _step(
             "hamilton-equations",
@@ -103,6 +108,39 @@ def hamilton_json(d: Derivation, ham: Hamilton) -> dict[str, Any]:
 
 def _number(x: float) -> str:
     return f"{x:.6g}"
+
+
+def _figures(x: float) -> str:
+    """A mode's number as a textbook prints a measured-looking value: four significant figures."""
+    return f"{x:.4g}"
+
+
+# the longest exact shape component printed (SymPy's operation count); a longer one is shown as its number
+SHAPE_MAX_OPS = 12
+
+
+def _exact_shape(e: Equilibrium, m: Mode, d: Derivation) -> list[sp.Expr] | None:
+    """The shape of a mode of two coordinates in closed form, normalised as the numbers are (the largest
+    component 1), when ω² is exact and the other component is short; None otherwise."""
+    if m.exact is None or len(m.shape) != 2 or sp.count_ops(m.exact) > SHAPE_MAX_OPS:
+        return None
+    # (K − ω² M) a = 0; with a_i = 1 one row gives A_ri + A_rj a_j = 0, so a_j = −A_ri / A_rj
+    A = e.stiffness - m.exact * e.mass
+    i = max(range(2), key=lambda k: abs(m.shape[k]))
+    j = 1 - i
+    defaults = {s: p.default for p in d.system.parameters for s in d.table.params if s.name == p.name}
+    for r in range(2):
+        if sp.cancel(A[r, j]) == 0:
+            continue
+        other = sp.factor(sp.cancel(-A[r, i] / A[r, j]))
+        # the closed form must reproduce the numbers at the default parameters, else the numbers are shown
+        value = complex(other.xreplace(defaults).evalf()) if other.free_symbols <= set(defaults) else None
+        if value is None or abs(value - m.shape[j]) > 1e-9 * max(1.0, abs(m.shape[j])):
+            return None
+        if sp.count_ops(other) > SHAPE_MAX_OPS:
+            return None
+        return [sp.Integer(1), other] if i == 0 else [other, sp.Integer(1)]
+    return None
 
 
 def _where(e: Equilibrium, pr: Printer, d: Derivation) -> str:
@@ -331,7 +369,8 @@ def _verdict(e: Equilibrium, d: Derivation) -> str:
         return text[0].upper() + text[1:] + "."
     freq = ", ".join(_number(f) for f in lin.frequencies)
     out = (
-        "The velocity terms (G, from damping, Coriolis or magnetic forces) enter the motion near it: with ε = v e^{st} "
+        "The velocity terms (G, from damping, Coriolis or magnetic forces) enter the motion near it: with "
+        f"{notation.text('displacement', d)} = v e^{{st}} "
         f"the exponents s are the eigenvalues of [[0, I], [−{Mu}⁻¹{Ku}, −{Mu}⁻¹G]]. "
     )
     if e.kind == "unstable":
@@ -375,14 +414,21 @@ def _equilibrium_step(
         )
     Mt, Kt, wt = (notation.letter(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
     Mu, Ku, wu = (notation.text(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
+    eu, au = (notation.text(c, d) for c in ("displacement", "amplitude"))
     rows = [rf"{Mt} = {pr.tex(_rounded(e.mass))},\quad {Kt} = {pr.tex(_rounded(e.stiffness))}"]
     for i, m in enumerate(e.modes, start=1):
+        # ω² in 1/s² whatever the coordinates; four figures at the default parameters beside the closed form
+        unit = r"\,\mathrm{s}^{-2}" if m.omega_squared != 0 else ""
         value = (
-            pr.tex(m.exact) + r" \approx " + _number(m.omega_squared)
+            pr.tex(m.exact) + r" \approx " + _figures(m.omega_squared) + unit
             if m.exact is not None and not m.exact.is_number
-            else _number(m.omega_squared)
+            else (pr.tex(m.exact) if m.exact is not None else _figures(m.omega_squared)) + unit
         )
-        shape = ", ".join(f"{pr.tex(sym[n])}: {_number(a)}" for n, a in zip(e.coordinates, m.shape, strict=True))
+        exact_shape = _exact_shape(e, m, d)
+        shape = ", ".join(
+            f"{pr.tex(sym[n])}: {pr.tex(x) if exact_shape else _figures(a)}"
+            for n, a, x in zip(e.coordinates, m.shape, exact_shape or m.shape, strict=True)
+        )
         rows.append(rf"{wt}_{{{i}}}^2 = {value},\quad \text{{shape }} ({shape})")
     moving = e.linear is not None and e.linear.moving
     if moving:
@@ -398,9 +444,10 @@ def _equilibrium_step(
         key = f"normal-modes:{number}"
         title = "Normal modes about " + about
         why = (
-            f"Near the equilibrium {Mu} ε̈ + {Ku} ε = 0 with {Mu} the mass matrix and {Ku} the Hessian of the potential "
-            f"there; ε = a cos {wu}t solves it when ({Ku} − {wu}² {Mu}) a = 0, so each {wu}² is an eigenvalue of {Ku} "
-            f"relative to {Mu} and a its shape (numbers at the default parameters)"
+            f"Near the equilibrium {Mu} {eu}̈ + {Ku} {eu} = 0, with {eu} the small displacement from it, {Mu} the mass "
+            f"matrix and {Ku} the Hessian of the potential there; {eu} = {au} cos {wu}t solves it when "
+            f"({Ku} − {wu}² {Mu}) {au} = 0, so each {wu}² is an eigenvalue of {Ku} relative to {Mu} and {au} its shape "
+            "(numbers at the default parameters)"
             + (", the shapes of the motion without its velocity terms. " if moving else ". ")
         )
     if e.linear is not None and e.linear.definite < 0:
