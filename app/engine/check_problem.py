@@ -17,7 +17,7 @@ from app.engine.derive import Derivation
 from app.engine.diagnose import catalogue
 from app.engine.dimensions import Dims
 from app.engine.mistake_families import Mistake
-from app.engine.mistake_pieces import system_dimensions
+from app.engine.dimensions import system_dimensions
 from app.engine.report import plain_name
 from app.engine.textbook import unicode_text
 

@@ -17,10 +17,14 @@ import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
 import sympy as sp
 
 from app.engine.mistake_families import spoken
+
+if TYPE_CHECKING:
+    from app.engine.derive import Derivation
 
 Dims = dict[str, Fraction]  # exponents of kg, m, s
 
@@ -243,3 +247,11 @@ def known_dimensions(
             known[v] = add_dims(known[c], {"s": Fraction(-1)})
             known[a] = add_dims(known[c], {"s": Fraction(-2)})
     return known
+
+
+def system_dimensions(d: Derivation) -> dict[sp.Symbol, Dims]:
+    """Every name's dimension that the system's declared units tell (parameters, coordinates, rates)."""
+    t = d.table
+    by_name = {p.name: p.unit for p in d.system.parameters}
+    units = {s: by_name.get(s.name, "") for s in t.params}
+    return known_dimensions(units, t.q, t.qd, t.qdd, d.mechanics.L, t.t)

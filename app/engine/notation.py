@@ -13,9 +13,11 @@ it means.
 
 from __future__ import annotations
 
+from fractions import Fraction
 from typing import Any
 
 from app.engine.derive import Derivation
+from app.engine.dimensions import Dims, add_dims, dimension, system_dimensions, unit_text
 from app.engine.names import latex, unicode
 
 # concept -> (what it is, candidate letters as (LaTeX, Unicode), first free one used)
@@ -67,12 +69,36 @@ def text(concept: str, d: Derivation) -> str:
     return _choice(concept, d)[1]
 
 
+# the SI name of an energy's dimension (kg·m²/s²), and of a frequency's
+_ENERGY: Dims = {"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-2)}
+_ACTION: Dims = {"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-1)}
+
+
+def _unit(dims: Dims | None, angle: bool = False) -> str:
+    """A unit as the Symbols table prints it: J for an energy, rad for an angle, "" when unknown."""
+    if dims is None:
+        return ""
+    if dims == _ENERGY:
+        return "J"
+    if not dims:
+        return "rad" if angle else ""
+    return unit_text(dims)
+
+
+def _row(tex: str, uni: str, meaning: str, unit: str, kind: str) -> dict[str, Any]:
+    return {"latex": tex, "unicode": uni, "meaning": meaning, "unit": unit, "kind": kind}
+
+
 def table(d: Derivation) -> list[dict[str, Any]]:
-    """Every letter of the document once, with what it stands for: coordinates, parameters (with their
-    units), then the derived quantities, in that order."""
+    """Every letter of the document once, with what it stands for and its unit: coordinates, parameters,
+    the coordinates' momenta, then the derived quantities, in that order."""
     rows: list[dict[str, Any]] = []
-    for name in d.table.names:
-        rows.append({"latex": latex(name), "unicode": unicode(name), "meaning": "generalized coordinate", "unit": "", "kind": "coordinate"})
+    dims = system_dimensions(d)
+    # the energies are in J when every term of L is (the declared units tell it); otherwise no unit is claimed
+    energy = "J" if dimension(d.mechanics.L, dims) == _ENERGY else ""
+    for q in d.table.q:
+        # an angle is a coordinate inside a sine or cosine: dimensionless, printed in rad
+        rows.append(_row(latex(q.name), unicode(q.name), "generalized coordinate", _unit(dims.get(q), angle=True), "coordinate"))
     for p in d.system.parameters:
         rows.append(
             {
@@ -83,11 +109,24 @@ def table(d: Derivation) -> list[dict[str, Any]]:
                 "kind": "parameter",
             }
         )
+    for q in d.table.q:
+        # p_q = ∂L/∂q̇ has the dimension of an action over q's: kg·m/s for a length, kg·m²/s for an angle
+        p_dims = add_dims(_ACTION, dims[q], Fraction(-1)) if q in dims and energy else None
+        rows.append(
+            _row(
+                latex(f"p_{q.name}"),
+                unicode(f"p_{q.name}"),
+                f"generalized momentum conjugate to {unicode(q.name)}, ∂L/∂{unicode(q.name + '_dot')}",
+                _unit(p_dims),
+                "derived",
+            )
+        )
     taken = _taken(d)
     for tex, uni, meaning in FIXED:
         if uni not in taken:
-            rows.append({"latex": tex, "unicode": uni, "meaning": meaning, "unit": "", "kind": "derived"})
+            rows.append(_row(tex, uni, meaning, "s" if uni == "t" else energy, "derived"))
+    rows.append(_row("f", "f", f"right-hand side of the equations of motion, {text('mass_matrix', d)} q̈ = f", "", "derived"))
     for concept, (meaning, _) in DERIVED.items():
         tex, uni = _choice(concept, d)
-        rows.append({"latex": tex, "unicode": uni, "meaning": meaning, "unit": "", "kind": "derived"})
+        rows.append(_row(tex, uni, meaning, "rad/s" if concept == "frequency" else "", "derived"))
     return rows

@@ -35,3 +35,73 @@ def test_the_helix_winding_is_described_in_its_unit(client):
     alpha = client.get("/api/scenes/helix-bead/derivation").json()["parameters"]["alpha"]
     assert alpha["unit"] == "rad/m" and "radians" in alpha["description"] and "turns of" not in alpha["description"]
     assert "radians of turn per metre" in client.get("/scenes/helix-bead").text
+
+
+# ---- issue 40, part B: scenes 7–12 and the Symbols tables -------------------------------------------------
+
+
+def test_the_rail_errata_write_partials_and_the_total_mass(client):
+    errata = client.get("/api/scenes/rail-two-body/derivation").json()["errata"]
+    partials, momentum = errata[0]["correct_latex"], errata[1]["correct_latex"]
+    assert partials.startswith(r"\frac{\partial L}{\partial x_{1}} = - \frac{\partial L}{\partial x_{2}}")
+    assert r"\frac{dL}" not in partials
+    assert momentum.startswith(r"P = \left(m_{1} + m_{2}\right) \dot{X}") and "M" not in momentum
+
+
+def test_the_rail_names_its_bodies_masses(client):
+    page = client.get("/scenes/rail-two-body").text
+    for other in ("two cars", "blocks", "body 1", "first body"):
+        assert other not in page
+
+
+def test_a_mode_shape_is_exact_where_it_is_and_omega_squared_has_four_figures_and_a_unit(client):
+    rail = steps(client, "rail-two-body")["normal-modes:1"]["latex"]
+    assert r"\approx 15\,\mathrm{s}^{-2}" in rail and r"x_{2}: - \frac{m_{1}}{m_{2}}" in rail
+    pendulum = steps(client, "double-pendulum")["normal-modes:1"]["latex"]
+    assert r"\approx 5.747\,\mathrm{s}^{-2}" in pendulum and "5.74656" not in pendulum and "0.707107" not in pendulum
+    coupled = steps(client, "coupled-oscillators")["normal-modes:1"]["latex"]
+    assert r"x_{1}: 1, x_{2}: -1" in coupled.replace("- 1", "-1")
+
+
+@pytest.mark.parametrize("scene", ["coupled-oscillators", "double-pendulum", "rail-two-body"])
+def test_the_normal_modes_write_eta_for_the_displacement_epsilon_being_the_action_panels(client, scene):
+    for key, step in steps(client, scene).items():
+        if key.startswith("normal-modes"):
+            assert "ε" not in step["explanation"]
+    explained = steps(client, "double-pendulum")["normal-modes:1"]["explanation"]
+    assert "M η̈ + K η = 0" in explained and "η = a cos ωt" in explained
+
+
+def test_generic_sentences_name_only_what_the_system_has(client):
+    shown = steps(client, "coupled-oscillators")
+    assert "sin²" not in shown["squared-speeds"]["explanation"]
+    assert "− Q" not in shown["euler-lagrange"]["explanation"]
+    assert " b" not in shown["legendre"]["explanation"] and "(p − b)" not in shown["hamiltonian-pq"]["explanation"]
+    # the double pendulum's v² does use the identity
+    assert "sin² + cos² = 1" in steps(client, "double-pendulum")["squared-speeds"]["explanation"]
+
+
+def test_the_symbols_table_lists_units_and_the_momenta(client):
+    rows = {r["unicode"]: r for r in client.get("/api/scenes/rail-two-body/derivation").json()["notation"]}
+    assert rows["x₁"]["unit"] == "m" and rows["p_x₁"]["unit"] == "kg·m/s" and rows["ω"]["unit"] == "rad/s"
+    assert all(rows[e]["unit"] == "J" for e in ("T", "U", "L", "h", "H", "E")) and rows["t"]["unit"] == "s"
+    assert "η" in rows and "a" in rows and "f" in rows
+    angles = {r["unicode"]: r for r in client.get("/api/scenes/double-pendulum/derivation").json()["notation"]}
+    assert angles["θ₁"]["unit"] == "rad" and angles["p_θ₁"]["unit"] == "kg·m²/s"
+    assert "kg·m/s" in client.get("/scenes/rail-two-body").text
+
+
+def test_the_pulley_tension_is_lambda_times_the_gradient_in_the_end_mass(client):
+    shown = steps(client, "pulley")
+    force = shown["constraint-forces"]["latex"]
+    assert r"\frac{\partial \mathcal{C}_{1}}{\partial \vec r_{1}}" in force and r"\nabla" not in force
+    assert "z₁, z₂, z₃ the heights of m₁, m₂ and M" in shown["constraints"]["explanation"]
+    assert "every position is an equilibrium" in shown["equilibria"]["explanation"]
+
+
+def test_the_wedge_height_is_z_and_the_parabola_alpha_is_not_called_curvature(client):
+    wedge = client.get("/api/scenes/movable-incline").json()
+    assert "height z = −D sin α" in wedge["statement"] and "(X + D cos α, −D sin α)" not in wedge["statement"]
+    alpha = client.get("/api/scenes/rotating-parabola/derivation").json()["parameters"]["alpha"]["description"]
+    assert not alpha.startswith("curvature") and "curvature at the bottom is 2α" in alpha
+    assert "signed horizontal distance" in client.get("/api/scenes/rotating-parabola").json()["statement"]
