@@ -237,7 +237,11 @@ def known_dimensions(
             if c in known:
                 continue
             entry = sp.diff(lagrangian, v, 2)
-            d = dimension(entry, {**known, **{x: {} for x in qd}}) if entry != 0 else None
+            rates = {**known, **{x: {} for x in qd}}
+            d = dimension(entry, rates) if entry != 0 else None
+            # every term of M_qq has its dimension, so its part free of q tells it (m (1 + 4α²ρ²) at ρ = 0 is m)
+            if d is None and (free := entry.xreplace({c: 0})) != 0:
+                d = dimension(free, rates)
             if d is None:
                 continue
             square = add_dims({"kg": Fraction(1), "m": Fraction(2)}, d, Fraction(-1))

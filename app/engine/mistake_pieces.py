@@ -29,7 +29,6 @@ from fractions import Fraction
 import sympy as sp
 
 from app.engine.derive import Derivation
-from app.engine.dimensions import Dims, system_dimensions
 from app.engine.mistake_families import (
     Mistake,
     kinetic_mistakes,

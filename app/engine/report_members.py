@@ -6,11 +6,9 @@ import sympy as sp
 
 from app.engine import meaning, notation
 from app.engine.constraints import ConstraintForce
+from app.engine.notation import CONSTRAINT
 from app.engine.report import Printer, _mapping_step, _step, display
 from app.engine.transform import Transformed, collected, compact
-
-# The constraint function's name: a calligraphic C, which no parameter (g is gravity) can be.
-CONSTRAINT = r"\mathcal{C}"
 
 
 def constraint_steps(forces: tuple[ConstraintForce, ...], pr: Printer) -> list[dict[str, str]]:

@@ -105,3 +105,26 @@ def test_the_wedge_height_is_z_and_the_parabola_alpha_is_not_called_curvature(cl
     alpha = client.get("/api/scenes/rotating-parabola/derivation").json()["parameters"]["alpha"]["description"]
     assert not alpha.startswith("curvature") and "curvature at the bottom is 2α" in alpha
     assert "signed horizontal distance" in client.get("/scenes/rotating-parabola").text
+
+
+def test_the_symbols_table_lists_the_letters_of_the_optional_steps(client):
+    def rows(scene: str) -> dict[str, dict]:
+        return {r["unicode"]: r for r in client.get(f"/api/scenes/{scene}/derivation").json()["notation"]}
+
+    rail = rows("rail-two-body")
+    assert rail["X"]["unit"] == "m" and "(m₁x₁ + m₂x₂)/(m₁ + m₂)" in rail["X"]["meaning"]
+    assert rail["μ"]["unit"] == "kg" and rail["x"]["unit"] == "m"
+    pulley = rows("pulley")
+    assert {"𝒞", "λ", "z₁", "z₂", "z₃"} <= set(pulley) and pulley["F"]["unit"] == "N"
+    assert pulley["z₃"]["meaning"] == "Cartesian z of the middle mass"
+    parabola = rows("rotating-parabola")
+    # ρ's unit is told from m (1 + 4α²ρ²), so the energies are in J
+    assert parabola["ρ"]["unit"] == "m" and parabola["h"]["unit"] == "J" and parabola["V"]["unit"] == "J"
+    assert parabola["U_eff"]["unit"] == "J" and parabola["m_eff"]["unit"] == "kg" and "bead" in parabola["z"]["meaning"]
+    wedge = rows("movable-incline")
+    assert wedge["x₂"]["meaning"] == "Cartesian x of the block" and wedge["m_eff"]["unit"] == "kg"
+    # each letter once
+    for scene in ("rail-two-body", "pulley", "rotating-parabola", "movable-incline"):
+        letters = [r["unicode"] for r in client.get(f"/api/scenes/{scene}/derivation").json()["notation"]]
+        assert len(letters) == len(set(letters))
+    assert "Cartesian z of the middle mass" in client.get("/scenes/pulley").text
