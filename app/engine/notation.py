@@ -222,7 +222,8 @@ def _sometimes(
                     unicode(Q.name),
                     f"new coordinate, {unicode(Q.name)} = {unicode_text(definition)}",
                     unit,
-                    "coordinate",
+                    # derived from the document's own coordinates, which alone are of kind "coordinate"
+                    "derived",
                 )
             )
         if tr.reduced_mass is not None:
