@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import json
+import re
+
 import pytest
 
 SCENES_WITH_A_REDUCTION = ["tabletop-spring", "spherical-pendulum", "rotating-parabola", "helix-bead"]
@@ -128,3 +131,14 @@ def test_the_symbols_table_lists_the_letters_of_the_optional_steps(client):
         letters = [r["unicode"] for r in client.get(f"/api/scenes/{scene}/derivation").json()["notation"]]
         assert len(letters) == len(set(letters))
     assert "Cartesian z of the middle mass" in client.get("/scenes/pulley").text
+
+
+def scene_data(client, scene: str) -> dict:
+    page = client.get(f"/scenes/{scene}").text
+    return json.loads(re.search(r'<script type="application/json" id="scene-data">(.*?)</script>', page, re.S)[1])
+
+
+def test_the_small_oscillations_panel_gets_the_pages_frequency_letter(client):
+    # the parabola turns at ω, so its small-oscillation frequency is Ω, in the derivation and in the panel
+    assert scene_data(client, "rotating-parabola")["frequency_letter"] == "Ω"
+    assert scene_data(client, "tabletop-spring")["frequency_letter"] == "ω"
