@@ -146,8 +146,10 @@ def table(
         rows.append(_row(tex, uni, meaning, "rad/s" if concept == "frequency" else "", "derived"))
     rows += _sometimes(d, dims, energy, forces, transformed)
     # each letter once: the first meaning a page gives it stands
-    seen: set[str] = set()
-    return [r for r in rows if not (r["unicode"] in seen or seen.add(r["unicode"]))]
+    first: dict[str, dict[str, Any]] = {}
+    for r in rows:
+        first.setdefault(r["unicode"], r)
+    return list(first.values())
 
 
 def _sometimes(
