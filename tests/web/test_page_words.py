@@ -142,3 +142,12 @@ def test_the_small_oscillations_panel_gets_the_pages_frequency_letter(client):
     # the parabola turns at ω, so its small-oscillation frequency is Ω, in the derivation and in the panel
     assert scene_data(client, "rotating-parabola")["frequency_letter"] == "Ω"
     assert scene_data(client, "tabletop-spring")["frequency_letter"] == "ω"
+
+
+def test_the_rail_lists_the_total_momentum_in_its_own_coordinates(client):
+    conserved = {c["name"]: c for c in client.get("/api/scenes/rail-two-body/derivation").json()["conserved"]}
+    total = conserved["p_x1 + p_x2"]
+    assert total["latex"] == r"m_{1} \dot{x}_{1} + m_{2} \dot{x}_{2}" and "∂L/∂x₁ + ∂L/∂x₂ = 0" in total["reason"]
+    # the springs to the walls break the translation: the coupled oscillators conserve only E
+    assert [c["name"] for c in client.get("/api/scenes/coupled-oscillators/derivation").json()["conserved"]] == ["E"]
+    assert scene_data(client, "rail-two-body")["labels"]["p_x1 + p_x2"] == "p_x₁ + p_x₂"
