@@ -6,6 +6,7 @@ import json
 import re
 
 import pytest
+import sympy as sp
 
 SCENES_WITH_A_REDUCTION = ["tabletop-spring", "spherical-pendulum", "rotating-parabola", "helix-bead"]
 
@@ -151,3 +152,13 @@ def test_the_rail_lists_the_total_momentum_in_its_own_coordinates(client):
     # the springs to the walls break the translation: the coupled oscillators conserve only E
     assert [c["name"] for c in client.get("/api/scenes/coupled-oscillators/derivation").json()["conserved"]] == ["E"]
     assert scene_data(client, "rail-two-body")["labels"]["p_x1 + p_x2"] == "p_x₁ + p_x₂"
+
+
+def test_the_pulley_derives_the_middle_masss_acceleration_from_the_engines_two(client):
+    doc = client.get("/api/scenes/pulley/derivation").json()
+    accelerations = {q: sp.sympify(a["sympy"]) for q, a in doc["accelerations"].items()}
+    m1, m2, M, g = sp.symbols("m1 m2 M g")
+    middle = -(accelerations["y1"] + accelerations["y2"]) / 2
+    assert sp.simplify(middle - (g - 2 * (m1 + m2) * g / (m1 + m2 + 4 * m1 * m2 / M))) == 0
+    explained = {s["key"]: s for s in doc["steps"]}["accelerations"]["explanation"]
+    assert "Ÿ = −(ÿ₁ + ÿ₂)/2 = g − 2 (m₁ + m₂) g/(m₁ + m₂ + 4 m₁ m₂/M)" in explained
