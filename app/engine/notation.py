@@ -39,6 +39,7 @@ DERIVED: dict[str, tuple[str, tuple[tuple[str, str], ...]]] = {
         ((r"\eta", "η"), (r"\xi", "ξ"), (r"\zeta", "ζ")),
     ),
     "amplitude": ("amplitudes of a normal mode (its shape)", (("a", "a"), (r"\mathbf{A}", "𝐀"))),
+    "start": ("displacement the beats start from, the other coordinate at rest", (("A", "A"), ("B", "B"))),
 }
 
 # a constraint's surface 𝒞 = 0 (a calligraphic C, which no parameter can be), in its steps and the Symbols table

@@ -199,7 +199,9 @@ def _any(d: Derivation, pr: Printer) -> str:
 
 def _rounded(matrix: sp.Matrix) -> sp.Matrix:
     """Numbers found numerically (a steady motion's K) to the six figures the rest of the step shows."""
-    return matrix.applyfunc(lambda x: sp.sympify(x).xreplace({f: sp.Float(f, 6) for f in sp.sympify(x).atoms(sp.Float)}))
+    return matrix.applyfunc(
+        lambda x: sp.sympify(x).xreplace({f: sp.Float(f, 6) for f in sp.sympify(x).atoms(sp.Float)})
+    )
 
 
 _KIND = {
@@ -223,9 +225,7 @@ def _points(
     for i, p in enumerate(points):
         known: dict[str, sp.Expr] = (exact[i] or {}) if i < len(exact) else {}
         rows.append(
-            r",\; ".join(
-                f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(v)}" for n, v in p.items()
-            )
+            r",\; ".join(f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(v)}" for n, v in p.items())
             + label
         )
     return rows
@@ -247,7 +247,11 @@ def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
             + "a numerical search over a full period of every angle, at the default parameters, found "
             + (("no others." if all(e.exact for e in found) else "the rest") if some_exact else "them")
             # a caveat only where some equilibrium rests on the search alone
-            + ("" if some_exact and all(e.exact for e in found) else " (roots lying very close together could still escape it).")
+            + (
+                ""
+                if some_exact and all(e.exact for e in found)
+                else " (roots lying very close together could still escape it)."
+            )
         )
     if some_exact:
         return (
@@ -296,7 +300,9 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         listed.append(r"\text{no equilibrium}")
     rows += listed
     sym = {s.name: s for s in table.q}
-    rows += _points(nm.singular, sym, pr, rf"\quad ({notation.letter('mass_matrix', d)} \text{{ singular}})", nm.singular_exact)
+    rows += _points(
+        nm.singular, sym, pr, rf"\quad ({notation.letter('mass_matrix', d)} \text{{ singular}})", nm.singular_exact
+    )
     rows += _points(nm.kinks, sym, pr, r"\quad (\text{at a kink of } V)")
     rows += _points(nm.unclassified, sym, pr, r"\quad (\text{coefficients change with } t)")
     why = "At rest (q̇ = 0) the state stays put where the Euler–Lagrange equations give q̈ = 0. "
@@ -346,7 +352,59 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
     steps = [_step("equilibria", "Equilibria", rows, list(nm.condition), why)]
     for i, e in enumerate(nm.equilibria, start=1):
         steps.append(_equilibrium_step(e, pr, d, i, nm))
+        if (beats := _beats_step(e, pr, d, i)) is not None:
+            steps.append(beats)
     return steps
+
+
+def _beats_step(e: Equilibrium, pr: Printer, d: Derivation, number: int) -> dict[str, str] | None:
+    """Beats between two modes of shapes (1, 1) and (1, −1) with exact, distinct, positive ω²: started with one
+    coordinate displaced by a and the other at rest, the motion passes from one to the other and back."""
+    if len(e.modes) != 2 or e.momenta:
+        return None
+    shapes = [_exact_shape(e, m, d) for m in e.modes]
+    if any(s is None for s in shapes) or [list(s) for s in shapes if s] != [[1, 1], [1, -1]]:
+        return None
+    if (
+        any(m.exact is None or m.omega_squared <= 0 for m in e.modes)
+        or e.modes[0].omega_squared == e.modes[1].omega_squared
+    ):
+        return None
+    w1, w2 = (sp.sqrt(m.exact) for m in e.modes)
+    At, Au = notation.letter("start", d), notation.text("start", d)
+    t, a = d.table.t, sp.Symbol(Au, positive=True)
+    q1, q2 = (pr.tex(s) for s in d.table.q[:2])
+    half_difference, half_sum = (w2 - w1) / 2, (w1 + w2) / 2
+    # q = (a/2)(1, 1) cos ω₁t + (a/2)(1, −1) cos ω₂t starts at (a, 0) at rest; cos A ± cos B as products
+    first = a * sp.cos(half_difference * t) * sp.cos(half_sum * t)
+    second = a * sp.sin(half_difference * t) * sp.sin(half_sum * t)
+    # the products are the two modes' sums (cos A ± cos B), checked rather than assumed
+    sums = (a * (sp.cos(w1 * t) + sp.cos(w2 * t)) / 2, a * (sp.cos(w1 * t) - sp.cos(w2 * t)) / 2)
+    if any(sp.simplify((p - q).rewrite(sp.exp)) != 0 for p, q in zip((first, second), sums, strict=True)):
+        return None
+    w1n, w2n = (math.sqrt(m.omega_squared) for m in e.modes)
+    wu = notation.text("frequency", d)
+    wt = notation.letter("frequency", d)
+    sum_tex, difference_tex = rf"\tfrac{{{wt}_1 + {wt}_2}}{{2}}", rf"\tfrac{{{wt}_2 - {wt}_1}}{{2}}"
+    rows = [
+        rf"{wt}_1 = {pr.tex(w1)},\quad {wt}_2 = {pr.tex(w2)}",
+        rf"{q1} = \tfrac{{{At}}}{{2}} \left(\cos {wt}_1 t + \cos {wt}_2 t\right) "
+        rf"= {At} \cos\left({difference_tex}\, t\right) \cos\left({sum_tex}\, t\right)",
+        rf"{q2} = \tfrac{{{At}}}{{2}} \left(\cos {wt}_1 t - \cos {wt}_2 t\right) "
+        rf"= {At} \sin\left({difference_tex}\, t\right) \sin\left({sum_tex}\, t\right)",
+    ]
+    why = (
+        f"Started with {plain_name(d.table.names[0])} = {Au} and everything else at rest, the motion is half of each "
+        f"mode: cos A ± cos B written as products shows a fast oscillation at the mean frequency ({wu}₁ + {wu}₂)/2 "
+        f"inside a slow envelope at ({wu}₂ − {wu}₁)/2. The motion passes from the first coordinate to the second and "
+        f"back: the first is still and the second swings with the whole amplitude {Au} after π/({wu}₂ − {wu}₁), and "
+        f"the first swings fully again after 2π/({wu}₂ − {wu}₁), the beat period (at the default parameters {_figures(math.pi / (w2n - w1n))} s and "
+        f"{_figures(2 * math.pi / (w2n - w1n))} s). The weaker the coupling, the closer the two frequencies and the "
+        "slower the exchange."
+    )
+    return _step(
+        f"beats:{number}", "Beats: the motion passes from one coordinate to the other", rows, [first, second], why
+    )
 
 
 def _exponents(e: Equilibrium) -> str:
@@ -389,9 +447,7 @@ def _verdict(e: Equilibrium, d: Derivation) -> str:
     return out
 
 
-def _equilibrium_step(
-    e: Equilibrium, pr: Printer, d: Derivation, number: int, nm: NormalModes
-) -> dict[str, str]:
+def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, nm: NormalModes) -> dict[str, str]:
     """The modes about the ``number``-th equilibrium (key ``normal-modes:number``, or ``steady-motion:number``
     about a steady motion of a reduction)."""
     sym = {s.name: s for s in d.table.q}
@@ -399,7 +455,10 @@ def _equilibrium_step(
     if nm.everywhere:
         where, about = _any(d, pr), "any configuration"
     elif family is not None:
-        where, about = r"\text{every state with } " + _family_tex(family, pr, d), "the equilibria " + _family_text(family, d)
+        where, about = (
+            r"\text{every state with } " + _family_tex(family, pr, d),
+            "the equilibria " + _family_text(family, d),
+        )
         free = [sym[n] for n in e.coordinates if n not in family]
         at = {sym[n]: v for n, v in family.items()}
         # M and K the same all along the family, or given where it was picked (the free coordinates at 0)

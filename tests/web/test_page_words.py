@@ -162,3 +162,25 @@ def test_the_pulley_derives_the_middle_masss_acceleration_from_the_engines_two(c
     assert sp.simplify(middle - (g - 2 * (m1 + m2) * g / (m1 + m2 + 4 * m1 * m2 / M))) == 0
     explained = {s["key"]: s for s in doc["steps"]}["accelerations"]["explanation"]
     assert "Ÿ = −(ÿ₁ + ÿ₂)/2 = g − 2 (m₁ + m₂) g/(m₁ + m₂ + 4 m₁ m₂/M)" in explained
+
+
+def test_the_coupled_oscillators_derive_their_beats(client):
+    shown = steps(client, "coupled-oscillators")
+    beats = shown["beats:1"]
+    assert r"\omega_1 &= \sqrt{\frac{k}{m}},\quad \omega_2 = \sqrt{\frac{k + 2 \kappa}{m}}" in beats["latex"]
+    assert (
+        r"= A \cos\left(\tfrac{\omega_2 - \omega_1}{2}\, t\right) \cos\left(\tfrac{\omega_1 + \omega_2}{2}\, t\right)"
+        in (beats["latex"])
+    )
+    # π/(ω₂ − ω₁) and 2π/(ω₂ − ω₁) at the page's default k, κ and m
+    p = {
+        n: v["default"]
+        for n, v in client.get("/api/scenes/coupled-oscillators/derivation").json()["parameters"].items()
+    }
+    w1, w2 = (p["k"] / p["m"]) ** 0.5, ((p["k"] + 2 * p["kappa"]) / p["m"]) ** 0.5
+    assert (
+        f"{3.141592653589793 / (w2 - w1):.4g} s and {2 * 3.141592653589793 / (w2 - w1):.4g} s" in beats["explanation"]
+    )
+    # modes that are not a symmetric pair get no beats step
+    assert not any(k.startswith("beats") for k in steps(client, "double-pendulum"))
+    assert "A" in {r["unicode"] for r in client.get("/api/scenes/coupled-oscillators/derivation").json()["notation"]}
