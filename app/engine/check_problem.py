@@ -15,9 +15,8 @@ from app.engine.check_answers import PER_COORDINATE, STEPS, CheckError, name_kin
 from app.engine.compare import Groups, Values
 from app.engine.derive import Derivation
 from app.engine.diagnose import catalogue
-from app.engine.dimensions import Dims
+from app.engine.dimensions import Dims, system_dimensions
 from app.engine.mistake_families import Mistake
-from app.engine.mistake_pieces import system_dimensions
 from app.engine.report import plain_name
 from app.engine.textbook import unicode_text
 

@@ -21,6 +21,7 @@ told apart and whether h = E is left undecided (None), never claimed.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from itertools import combinations
 
 import sympy as sp
 
@@ -51,6 +52,41 @@ class Energetics:
     power: sp.Expr
     h_conserved: bool
     h_conserved_reason: str
+
+
+# the most coordinates whose common translations are tried (2^n − n − 1 subsets)
+TRANSLATION_MAX_COORDINATES = 4
+
+
+def _translations(mech: Mechanics, eqs: Equations, cyclic: tuple[str, ...]) -> list[Conserved]:
+    """Sums of momenta conserved because L is unchanged when several coordinates move together (the rail's
+    p_x₁ + p_x₂, the total momentum): Σ ∂L/∂q_k = 0 over the set and no generalized force along it."""
+    table = mech.table
+    free = [k for k, name in enumerate(table.names) if name not in cyclic]
+    if len(table.names) > TRANSLATION_MAX_COORDINATES:
+        return []
+    found: list[Conserved] = []
+    groups: list[set[int]] = []
+    for size in range(2, len(free) + 1):
+        for group in combinations(free, size):
+            # a smaller set already conserved inside this one would only add its sum again
+            if any(g <= set(group) for g in groups):
+                continue
+            # d/dt Σ p_k = Σ (∂L/∂q_k + Q_k): zero when moving the set together changes neither L nor does work
+            if is_zero(sp.Add(*(eqs.dL_dq[k] for k in group))) and sp.Add(*(mech.Q[k] for k in group)) == 0:
+                names = [table.names[k] for k in group]
+                groups.append(set(group))
+                found.append(
+                    Conserved(
+                        " + ".join(f"p_{n}" for n in names),
+                        " + ".join(f"p_{{{table.latex_names()[table.q[k]]}}}" for k in group),
+                        sp.Add(*(eqs.momenta[k] for k in group)),
+                        f"Moving {', '.join(unicode(n) for n in names[:-1])} and {unicode(names[-1])} together "
+                        f"leaves L unchanged ({' + '.join(f'∂L/∂{unicode(n)}' for n in names)} = 0) and no "
+                        "generalized force acts along that motion, so the sum of their momenta is conserved.",
+                    )
+                )
+    return found
 
 
 def velocity_degrees(expr: sp.Expr, velocities: tuple[sp.Symbol, ...]) -> dict[int, sp.Expr]:
@@ -88,6 +124,7 @@ def energetics(mech: Mechanics, eqs: Equations) -> Energetics:
         )
         for name in cyclic
     ]
+    conserved += _translations(mech, eqs, cyclic)
 
     # dL/dt at fixed q and q_dot: the explicit time dependence
     dL_dt = sp.diff(L, table.t)

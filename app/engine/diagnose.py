@@ -25,10 +25,10 @@ import sympy as sp
 
 from app.engine.compare import Groups, Values, differ_by_constant, differ_by_factor, equal, usable, values
 from app.engine.derive import Derivation
-from app.engine.dimensions import mismatch
+from app.engine.dimensions import mismatch, system_dimensions
 from app.engine.mistake_equations import generated
 from app.engine.mistake_families import Mistake, monomial_words, spoken
-from app.engine.mistake_pieces import effective_terms, piece_mistakes, system_dimensions, travelled
+from app.engine.mistake_pieces import effective_terms, piece_mistakes, travelled
 from app.engine.mistakes import OMEGA_HINT, RULES
 
 MIN_POINTS = 6

@@ -17,10 +17,14 @@ import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
 import sympy as sp
 
 from app.engine.mistake_families import spoken
+
+if TYPE_CHECKING:
+    from app.engine.derive import Derivation
 
 Dims = dict[str, Fraction]  # exponents of kg, m, s
 
@@ -233,7 +237,11 @@ def known_dimensions(
             if c in known:
                 continue
             entry = sp.diff(lagrangian, v, 2)
-            d = dimension(entry, {**known, **{x: {} for x in qd}}) if entry != 0 else None
+            rates = {**known, **{x: {} for x in qd}}
+            d = dimension(entry, rates) if entry != 0 else None
+            # every term of M_qq has its dimension, so its part free of q tells it (m (1 + 4α²ρ²) at ρ = 0 is m)
+            if d is None and (free := entry.xreplace({c: 0})) != 0:
+                d = dimension(free, rates)
             if d is None:
                 continue
             square = add_dims({"kg": Fraction(1), "m": Fraction(2)}, d, Fraction(-1))
@@ -243,3 +251,11 @@ def known_dimensions(
             known[v] = add_dims(known[c], {"s": Fraction(-1)})
             known[a] = add_dims(known[c], {"s": Fraction(-2)})
     return known
+
+
+def system_dimensions(d: Derivation) -> dict[sp.Symbol, Dims]:
+    """Every name's dimension that the system's declared units tell (parameters, coordinates, rates)."""
+    t = d.table
+    by_name = {p.name: p.unit for p in d.system.parameters}
+    units = {s: by_name.get(s.name, "") for s in t.params}
+    return known_dimensions(units, t.q, t.qd, t.qdd, d.mechanics.L, t.t)

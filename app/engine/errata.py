@@ -104,8 +104,15 @@ def ascii_tex(text: str) -> str:
     return _tex_tokens(_TOKEN.findall(text))
 
 
+# a partial derivative the scene writes with ∂ (∂L/∂x1, −∂L/∂x2): printed as a textbook's ∂, never a d
+_PARTIAL = re.compile(r"(-?)∂([A-Za-z_][A-Za-z0-9_]*)/∂([A-Za-z_][A-Za-z0-9_]*)")
+
+
 def _side(text: str, names: dict[sp.Symbol, str]) -> str:
     """One side of a correct formula: parsed and printed in textbook form, else typeset as written."""
+    if partial := _PARTIAL.fullmatch(text):
+        sign, top, bottom = partial.groups()
+        return ("- " if sign else "") + rf"\frac{{\partial {latex(top)}}}{{\partial {latex(bottom)}}}"
     if "'" in text or any(_is_word(n) for n in re.findall(r"[A-Za-z_][A-Za-z0-9_]*", text)):
         return ascii_tex(text)
     symbols = {n: sp.Symbol(n, real=True) for n in re.findall(r"[A-Za-z_][A-Za-z0-9_]*", text) if n not in _FUNCTIONS}

@@ -29,7 +29,6 @@ from fractions import Fraction
 import sympy as sp
 
 from app.engine.derive import Derivation
-from app.engine.dimensions import Dims, known_dimensions
 from app.engine.mistake_families import (
     Mistake,
     kinetic_mistakes,
@@ -255,14 +254,6 @@ def _whole(d: Derivation, step: str, truth: sp.Expr, base: str) -> Iterator[Mist
                 "it holds only for small oscillations near zero angle; the exercise asks for the full acceleration",
                 truth.xreplace(swap), approximation=True,
             )  # fmt: skip
-
-
-def system_dimensions(d: Derivation) -> dict[sp.Symbol, Dims]:
-    """Every name's dimension that the system's declared units tell (app.engine.dimensions)."""
-    t = d.table
-    by_name = {p.name: p.unit for p in d.system.parameters}
-    units = {s: by_name.get(s.name, "") for s in t.params}
-    return known_dimensions(units, t.q, t.qd, t.qdd, d.mechanics.L, t.t)
 
 
 # ---- rigid bodies ----------------------------------------------------------------------------------

@@ -73,7 +73,10 @@ def latex(name: str) -> str:
 
 
 def unicode(name: str) -> str:
-    """A symbol name as a reader writes it in running text and on plots: theta_dot -> θ̇, x1 -> x₁."""
+    """A symbol name as a reader writes it in running text and on plots: theta_dot -> θ̇, x1 -> x₁; a conserved
+    sum's name term by term (p_x1 + p_x2 -> p_x₁ + p_x₂)."""
+    if " + " in name:
+        return " + ".join(unicode(part) for part in name.split(" + "))
     for suffix, _, mark in _DOTS:
         if name.endswith(suffix):
             return _uni_base(name[: -len(suffix)], mark)

@@ -236,7 +236,13 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
                 "Squared speeds",
                 [rf"v{label(i)}^2 = {pr.tex(v2)}" for i, v2 in enumerate(m.speeds_squared)],
                 list(m.speeds_squared),
-                "The dot product of each velocity with itself, after using sin² + cos² = 1.",
+                "The dot product of each velocity with itself"
+                # the identity is named only where a sine or cosine was there to use it on
+                + (
+                    ", after using sin² + cos² = 1."
+                    if any(c.has(sp.sin, sp.cos) for r in m.positions for c in r)
+                    else "."
+                ),
             )
         )
     if m.T is not None:
@@ -301,7 +307,9 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             "Euler–Lagrange equations",
             [row for _, row in shown_equations],
             [shown for shown, _ in shown_equations],
-            "For each coordinate, d/dt ∂L/∂q̇ − ∂L/∂q − Q vanishes along the true motion"
+            "For each coordinate, d/dt ∂L/∂q̇ − ∂L/∂q"
+            + (" − Q (the generalized force above)" if any(f != 0 for f in m.Q) else "")
+            + " vanishes along the true motion"
             + (
                 "; each equation is shown divided by its acceleration's coefficient."
                 if eqs.mass_matrix.is_diagonal()

@@ -6,11 +6,9 @@ import sympy as sp
 
 from app.engine import meaning, notation
 from app.engine.constraints import ConstraintForce
+from app.engine.notation import CONSTRAINT
 from app.engine.report import Printer, _mapping_step, _step, display
 from app.engine.transform import Transformed, collected, compact
-
-# The constraint function's name: a calligraphic C, which no parameter (g is gravity) can be.
-CONSTRAINT = r"\mathcal{C}"
 
 
 def constraint_steps(forces: tuple[ConstraintForce, ...], pr: Printer) -> list[dict[str, str]]:
@@ -31,14 +29,17 @@ def constraint_steps(forces: tuple[ConstraintForce, ...], pr: Printer) -> list[d
             "Forces of constraint",
             [
                 (rf"\lambda_{{{a + 1}}} = {pr.tex(f.multiplier)},\quad " if f.multiplier != f.force else "")
-                + rf"F_{{{a + 1}}} = \lambda_{{{a + 1}}} |\nabla {CONSTRAINT}_{{{a + 1}}}| = {pr.tex(f.force)}"
+                # the force on the body the constraint names (``on``): λ times the size of 𝒞's gradient in its position
+                + rf"F_{{{a + 1}}} = \lambda_{{{a + 1}}} \left|\frac{{\partial {CONSTRAINT}_{{{a + 1}}}}}"
+                + rf"{{\partial \vec r_{{{f.constraint.on}}}}}\right| = {pr.tex(f.force)}"
                 + rf"\quad (\text{{{f.constraint.name}}})"
                 for a, f in enumerate(forces)
             ],
             [f.force for f in forces],
             "Newton's law with the unknown push λ ∇𝒞, m r̈ = −∇U + Σ λ ∇𝒞, is solved for the multipliers λ with the "
-            "engine's accelerations put in for r̈; each force F = λ |∇𝒞| is then a function of the coordinates and "
-            "velocities alone, positive along ∇𝒞.",
+            "engine's accelerations put in for r̈. The force a constraint exerts on the body it acts on, at r_i, is "
+            "λ ∂𝒞/∂r_i; its size F = λ |∂𝒞/∂r_i| is then a function of the coordinates and velocities alone, "
+            "positive along the gradient.",
         ),
     ]
 

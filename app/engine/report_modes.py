@@ -16,7 +16,7 @@ from app.engine import notation
 from app.engine.budget import memoized, pythagoras
 from app.engine.derive import Derivation
 from app.engine.hamilton import Hamilton
-from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, NormalModes
+from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode, NormalModes
 from app.engine.report import Printer, _step, display, plain_name
 from app.engine.textbook import unicode_text
 
@@ -61,16 +61,21 @@ def hamilton_steps(d: Derivation, ham: Hamilton) -> list[dict[str, str]]:
             "Velocities from the momenta",
             [f"{vn[k]} = {pr.tex(v)}" for k, v in enumerate(velocities)],
             velocities,
-            f"The momenta are linear in the velocities, p = {Mu} q̇ + b"
-            + (" (b, the momenta at rest, comes from the terms of L linear in q̇)" if offsets else "")
-            + f"; solving for the velocities gives q̇ = {Mu}⁻¹ (p − b).",
+            (
+                f"The momenta are linear in the velocities, p = {Mu} q̇ + b (b, the momenta at rest, comes from the "
+                f"terms of L linear in q̇); solving for the velocities gives q̇ = {Mu}⁻¹ (p − b)."
+                if offsets
+                else f"The momenta are linear in the velocities, p = {Mu} q̇; solving for the velocities gives "
+                f"q̇ = {Mu}⁻¹ p."
+            ),
         ),
         _step(
             "hamiltonian-pq",
             "Hamiltonian H(q, p)",
             [rf"H = \sum_k p_k \dot{{q}}_k - L = {pr.tex(H)}"],
             H,
-            f"The same h, now written in the coordinates and momenta: H = ½ (p − b)·{Mu}⁻¹(p − b) − L(q, q̇ = 0).",
+            "The same h, now written in the coordinates and momenta: "
+            + (f"H = ½ (p − b)·{Mu}⁻¹(p − b) − L(q, q̇ = 0)." if offsets else f"H = ½ p·{Mu}⁻¹p − L(q, q̇ = 0)."),
         ),
         _step(
             "hamilton-equations",
@@ -103,6 +108,39 @@ def hamilton_json(d: Derivation, ham: Hamilton) -> dict[str, Any]:
 
 def _number(x: float) -> str:
     return f"{x:.6g}"
+
+
+def _figures(x: float) -> str:
+    """A mode's number as a textbook prints a measured-looking value: four significant figures."""
+    return f"{x:.4g}"
+
+
+# the longest exact shape component printed (SymPy's operation count); a longer one is shown as its number
+SHAPE_MAX_OPS = 12
+
+
+def _exact_shape(e: Equilibrium, m: Mode, d: Derivation) -> list[sp.Expr] | None:
+    """The shape of a mode of two coordinates in closed form, normalised as the numbers are (the largest
+    component 1), when ω² is exact and the other component is short; None otherwise."""
+    if m.exact is None or len(m.shape) != 2 or sp.count_ops(m.exact) > SHAPE_MAX_OPS:
+        return None
+    # (K − ω² M) a = 0; with a_i = 1 one row gives A_ri + A_rj a_j = 0, so a_j = −A_ri / A_rj
+    A = e.stiffness - m.exact * e.mass
+    i = max(range(2), key=lambda k: abs(m.shape[k]))
+    j = 1 - i
+    defaults = {s: p.default for p in d.system.parameters for s in d.table.params if s.name == p.name}
+    for r in range(2):
+        if sp.cancel(A[r, j]) == 0:
+            continue
+        other = sp.factor(sp.cancel(-A[r, i] / A[r, j]))
+        # the closed form must reproduce the numbers at the default parameters, else the numbers are shown
+        value = complex(other.xreplace(defaults).evalf()) if other.free_symbols <= set(defaults) else None
+        if value is None or abs(value - m.shape[j]) > 1e-9 * max(1.0, abs(m.shape[j])):
+            return None
+        if sp.count_ops(other) > SHAPE_MAX_OPS:
+            return None
+        return [sp.Integer(1), other] if i == 0 else [other, sp.Integer(1)]
+    return None
 
 
 def _where(e: Equilibrium, pr: Printer, d: Derivation) -> str:
@@ -161,7 +199,9 @@ def _any(d: Derivation, pr: Printer) -> str:
 
 def _rounded(matrix: sp.Matrix) -> sp.Matrix:
     """Numbers found numerically (a steady motion's K) to the six figures the rest of the step shows."""
-    return matrix.applyfunc(lambda x: sp.sympify(x).xreplace({f: sp.Float(f, 6) for f in sp.sympify(x).atoms(sp.Float)}))
+    return matrix.applyfunc(
+        lambda x: sp.sympify(x).xreplace({f: sp.Float(f, 6) for f in sp.sympify(x).atoms(sp.Float)})
+    )
 
 
 _KIND = {
@@ -185,9 +225,7 @@ def _points(
     for i, p in enumerate(points):
         known: dict[str, sp.Expr] = (exact[i] or {}) if i < len(exact) else {}
         rows.append(
-            r",\; ".join(
-                f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(v)}" for n, v in p.items()
-            )
+            r",\; ".join(f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(v)}" for n, v in p.items())
             + label
         )
     return rows
@@ -209,7 +247,11 @@ def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
             + "a numerical search over a full period of every angle, at the default parameters, found "
             + (("no others." if all(e.exact for e in found) else "the rest") if some_exact else "them")
             # a caveat only where some equilibrium rests on the search alone
-            + ("" if some_exact and all(e.exact for e in found) else " (roots lying very close together could still escape it).")
+            + (
+                ""
+                if some_exact and all(e.exact for e in found)
+                else " (roots lying very close together could still escape it)."
+            )
         )
     if some_exact:
         return (
@@ -258,7 +300,9 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         listed.append(r"\text{no equilibrium}")
     rows += listed
     sym = {s.name: s for s in table.q}
-    rows += _points(nm.singular, sym, pr, rf"\quad ({notation.letter('mass_matrix', d)} \text{{ singular}})", nm.singular_exact)
+    rows += _points(
+        nm.singular, sym, pr, rf"\quad ({notation.letter('mass_matrix', d)} \text{{ singular}})", nm.singular_exact
+    )
     rows += _points(nm.kinks, sym, pr, r"\quad (\text{at a kink of } V)")
     rows += _points(nm.unclassified, sym, pr, r"\quad (\text{coefficients change with } t)")
     why = "At rest (q̇ = 0) the state stays put where the Euler–Lagrange equations give q̈ = 0. "
@@ -308,7 +352,59 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
     steps = [_step("equilibria", "Equilibria", rows, list(nm.condition), why)]
     for i, e in enumerate(nm.equilibria, start=1):
         steps.append(_equilibrium_step(e, pr, d, i, nm))
+        if (beats := _beats_step(e, pr, d, i)) is not None:
+            steps.append(beats)
     return steps
+
+
+def _beats_step(e: Equilibrium, pr: Printer, d: Derivation, number: int) -> dict[str, str] | None:
+    """Beats between two modes of shapes (1, 1) and (1, −1) with exact, distinct, positive ω²: started with one
+    coordinate displaced by a and the other at rest, the motion passes from one to the other and back."""
+    if len(e.modes) != 2 or e.momenta:
+        return None
+    shapes = [_exact_shape(e, m, d) for m in e.modes]
+    if any(s is None for s in shapes) or [list(s) for s in shapes if s] != [[1, 1], [1, -1]]:
+        return None
+    if (
+        any(m.exact is None or m.omega_squared <= 0 for m in e.modes)
+        or e.modes[0].omega_squared == e.modes[1].omega_squared
+    ):
+        return None
+    w1, w2 = (sp.sqrt(m.exact) for m in e.modes)
+    At, Au = notation.letter("start", d), notation.text("start", d)
+    t, a = d.table.t, sp.Symbol(Au, positive=True)
+    q1, q2 = (pr.tex(s) for s in d.table.q[:2])
+    half_difference, half_sum = (w2 - w1) / 2, (w1 + w2) / 2
+    # q = (a/2)(1, 1) cos ω₁t + (a/2)(1, −1) cos ω₂t starts at (a, 0) at rest; cos A ± cos B as products
+    first = a * sp.cos(half_difference * t) * sp.cos(half_sum * t)
+    second = a * sp.sin(half_difference * t) * sp.sin(half_sum * t)
+    # the products are the two modes' sums (cos A ± cos B), checked rather than assumed
+    sums = (a * (sp.cos(w1 * t) + sp.cos(w2 * t)) / 2, a * (sp.cos(w1 * t) - sp.cos(w2 * t)) / 2)
+    if any(sp.simplify((p - q).rewrite(sp.exp)) != 0 for p, q in zip((first, second), sums, strict=True)):
+        return None
+    w1n, w2n = (math.sqrt(m.omega_squared) for m in e.modes)
+    wu = notation.text("frequency", d)
+    wt = notation.letter("frequency", d)
+    sum_tex, difference_tex = rf"\tfrac{{{wt}_1 + {wt}_2}}{{2}}", rf"\tfrac{{{wt}_2 - {wt}_1}}{{2}}"
+    rows = [
+        rf"{wt}_1 = {pr.tex(w1)},\quad {wt}_2 = {pr.tex(w2)}",
+        rf"{q1} = \tfrac{{{At}}}{{2}} \left(\cos {wt}_1 t + \cos {wt}_2 t\right) "
+        rf"= {At} \cos\left({difference_tex}\, t\right) \cos\left({sum_tex}\, t\right)",
+        rf"{q2} = \tfrac{{{At}}}{{2}} \left(\cos {wt}_1 t - \cos {wt}_2 t\right) "
+        rf"= {At} \sin\left({difference_tex}\, t\right) \sin\left({sum_tex}\, t\right)",
+    ]
+    why = (
+        f"Started with {plain_name(d.table.names[0])} = {Au} and everything else at rest, the motion is half of each "
+        f"mode: cos A ± cos B written as products shows a fast oscillation at the mean frequency ({wu}₁ + {wu}₂)/2 "
+        f"inside a slow envelope at ({wu}₂ − {wu}₁)/2. The motion passes from the first coordinate to the second and "
+        f"back: the first is still and the second swings with the whole amplitude {Au} after π/({wu}₂ − {wu}₁), and "
+        f"the first swings fully again after 2π/({wu}₂ − {wu}₁), the beat period (at the default parameters {_figures(math.pi / (w2n - w1n))} s and "
+        f"{_figures(2 * math.pi / (w2n - w1n))} s). The weaker the coupling, the closer the two frequencies and the "
+        "slower the exchange."
+    )
+    return _step(
+        f"beats:{number}", "Beats: the motion passes from one coordinate to the other", rows, [first, second], why
+    )
 
 
 def _exponents(e: Equilibrium) -> str:
@@ -331,7 +427,8 @@ def _verdict(e: Equilibrium, d: Derivation) -> str:
         return text[0].upper() + text[1:] + "."
     freq = ", ".join(_number(f) for f in lin.frequencies)
     out = (
-        "The velocity terms (G, from damping, Coriolis or magnetic forces) enter the motion near it: with ε = v e^{st} "
+        "The velocity terms (G, from damping, Coriolis or magnetic forces) enter the motion near it: with "
+        f"{notation.text('displacement', d)} = v e^{{st}} "
         f"the exponents s are the eigenvalues of [[0, I], [−{Mu}⁻¹{Ku}, −{Mu}⁻¹G]]. "
     )
     if e.kind == "unstable":
@@ -350,9 +447,7 @@ def _verdict(e: Equilibrium, d: Derivation) -> str:
     return out
 
 
-def _equilibrium_step(
-    e: Equilibrium, pr: Printer, d: Derivation, number: int, nm: NormalModes
-) -> dict[str, str]:
+def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, nm: NormalModes) -> dict[str, str]:
     """The modes about the ``number``-th equilibrium (key ``normal-modes:number``, or ``steady-motion:number``
     about a steady motion of a reduction)."""
     sym = {s.name: s for s in d.table.q}
@@ -360,7 +455,10 @@ def _equilibrium_step(
     if nm.everywhere:
         where, about = _any(d, pr), "any configuration"
     elif family is not None:
-        where, about = r"\text{every state with } " + _family_tex(family, pr, d), "the equilibria " + _family_text(family, d)
+        where, about = (
+            r"\text{every state with } " + _family_tex(family, pr, d),
+            "the equilibria " + _family_text(family, d),
+        )
         free = [sym[n] for n in e.coordinates if n not in family]
         at = {sym[n]: v for n, v in family.items()}
         # M and K the same all along the family, or given where it was picked (the free coordinates at 0)
@@ -375,14 +473,21 @@ def _equilibrium_step(
         )
     Mt, Kt, wt = (notation.letter(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
     Mu, Ku, wu = (notation.text(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
+    eu, au = (notation.text(c, d) for c in ("displacement", "amplitude"))
     rows = [rf"{Mt} = {pr.tex(_rounded(e.mass))},\quad {Kt} = {pr.tex(_rounded(e.stiffness))}"]
     for i, m in enumerate(e.modes, start=1):
+        # ω² in 1/s² whatever the coordinates; four figures at the default parameters beside the closed form
+        unit = r"\,\mathrm{s}^{-2}" if m.omega_squared != 0 else ""
         value = (
-            pr.tex(m.exact) + r" \approx " + _number(m.omega_squared)
+            pr.tex(m.exact) + r" \approx " + _figures(m.omega_squared) + unit
             if m.exact is not None and not m.exact.is_number
-            else _number(m.omega_squared)
+            else (pr.tex(m.exact) if m.exact is not None else _figures(m.omega_squared)) + unit
         )
-        shape = ", ".join(f"{pr.tex(sym[n])}: {_number(a)}" for n, a in zip(e.coordinates, m.shape, strict=True))
+        exact_shape = _exact_shape(e, m, d)
+        shape = ", ".join(
+            f"{pr.tex(sym[n])}: {pr.tex(x) if exact_shape else _figures(a)}"
+            for n, a, x in zip(e.coordinates, m.shape, exact_shape or m.shape, strict=True)
+        )
         rows.append(rf"{wt}_{{{i}}}^2 = {value},\quad \text{{shape }} ({shape})")
     moving = e.linear is not None and e.linear.moving
     if moving:
@@ -398,9 +503,10 @@ def _equilibrium_step(
         key = f"normal-modes:{number}"
         title = "Normal modes about " + about
         why = (
-            f"Near the equilibrium {Mu} ε̈ + {Ku} ε = 0 with {Mu} the mass matrix and {Ku} the Hessian of the potential "
-            f"there; ε = a cos {wu}t solves it when ({Ku} − {wu}² {Mu}) a = 0, so each {wu}² is an eigenvalue of {Ku} "
-            f"relative to {Mu} and a its shape (numbers at the default parameters)"
+            f"Near the equilibrium {Mu} {eu}̈ + {Ku} {eu} = 0, with {eu} the small displacement from it, {Mu} the mass "
+            f"matrix and {Ku} the Hessian of the potential there; {eu} = {au} cos {wu}t solves it when "
+            f"({Ku} − {wu}² {Mu}) {au} = 0, so each {wu}² is an eigenvalue of {Ku} relative to {Mu} and {au} its shape "
+            "(numbers at the default parameters)"
             + (", the shapes of the motion without its velocity terms. " if moving else ". ")
         )
     if e.linear is not None and e.linear.definite < 0:

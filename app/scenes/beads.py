@@ -63,7 +63,8 @@ ROTATING_PARABOLA = Scene(
     reasons=reasons.ROTATING_PARABOLA,
     summary="A constraint that moves with time: the energy function h is conserved while the energy E is not.",
     statement=(
-        "A wire shaped as the parabola z = α ρ² (ρ the distance from the vertical axis) is turned about that axis "
+        "A wire shaped as the parabola z = α ρ² (ρ the signed horizontal distance from the vertical axis, "
+        "positive on one branch of the wire and negative on the other) is turned about that axis "
         "by a motor at the constant rate ω. A bead of mass m slides on it without friction. With ρ as the "
         "coordinate, derive the equation of motion, compare the energy function h with the energy E, and explain "
         "which one is conserved."
@@ -77,7 +78,7 @@ ROTATING_PARABOLA = Scene(
         parameters=(
             MASS,
             GRAVITY,
-            Parameter("alpha", 1.0, "1/m", 0.01, 100.0, "curvature of the wire: z = α ρ²"),
+            Parameter("alpha", 1.0, "1/m", 0.01, 100.0, "shape coefficient of the wire, z = α ρ² (its curvature at the bottom is 2α)"),
             Parameter("omega", 4.0, "rad/s", 0.0, 100.0, "angular velocity of the wire about its axis"),
         ),
         # The wire's plane turns at the rate omega: phi = omega t is imposed, so the position depends on t.

@@ -73,8 +73,8 @@ MOVABLE_INCLINE = Scene(
     statement=(
         "A block of mass m slides without friction down the slope of a wedge of mass M and angle α; the wedge "
         "itself slides without friction on a horizontal floor. X is the horizontal displacement of the wedge and "
-        "D the distance the block has slid down the slope, so the block sits at (X + D cos α, −D sin α) measured "
-        "from where the wedge's top corner started. Find the accelerations of both, and the normal forces of the wedge "
+        "D the distance the block has slid down the slope, so the block sits at x = X + D cos α across and at "
+        "height z = −D sin α, measured from where the wedge's top corner started. Find the accelerations of both, and the normal forces of the wedge "
         "on the block and of the floor on the wedge."
     ),
     figure=(
@@ -123,9 +123,9 @@ MOVABLE_INCLINE = Scene(
         ),
         Erratum(
             chapter="U = U_plane - m g y",
-            correct="U = m*g*y = -m*g*D*sin(alpha)",
+            correct="U = m*g*z = -m*g*D*sin(alpha)",
             reason=(
-                "With y the block's height its potential energy is +m g y; the chapter's own Lagrangian, with "
+                "With z the block's height (the chapter's y) its potential energy is +m g z; the chapter's own Lagrangian, with "
                 "+m g D sin α, already uses this sign."
             ),
             check="potential",
@@ -141,8 +141,11 @@ MOVABLE_INCLINE = Scene(
         ),
         Erratum(
             chapter="y_ddot = -D_ddot cos(alpha)",
-            correct="y_ddot = -D_ddot*sin(alpha) = -(M + m)*g*sin(alpha)**2/(M + m*sin(alpha)**2)",
-            reason="The block's height is y = −D sin α, so ÿ = −D̈ sin α; the chapter's final line does use sin² α.",
+            correct="z_ddot = -D_ddot*sin(alpha) = -(M + m)*g*sin(alpha)**2/(M + m*sin(alpha)**2)",
+            reason=(
+                "The block's height (the chapter's y) is z = −D sin α, so z̈ = −D̈ sin α; the chapter's final line "
+                "does use sin² α."
+            ),
             check="point-acceleration:2:z",
         ),
     ),

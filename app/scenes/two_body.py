@@ -101,18 +101,18 @@ RAIL_TWO_BODY = Scene(
         "conserved and that x oscillates like a single body of the reduced mass."
     ),
     figure=(
-        "A horizontal rail with two blocks m1 and m2 at x1 and x2, measured from a fixed mark, and a spring of "
+        "A horizontal rail with two masses m1 and m2 at x1 and x2, measured from a fixed mark, and a spring of "
         "stiffness k and rest length l0 between them."
     ),
     system=System(
         coordinates=("x1", "x2"),
         parameters=(
-            Parameter("m1", 1.0, "kg", 0.01, 100.0, "mass of the first body"),
-            Parameter("m2", 2.0, "kg", 0.01, 100.0, "mass of the second body"),
+            Parameter("m1", 1.0, "kg", 0.01, 100.0, "mass at x₁"),
+            Parameter("m2", 2.0, "kg", 0.01, 100.0, "mass at x₂"),
             Parameter("k", 10.0, "N/m", 0.01, 1.0e8, "spring constant"),
             Parameter("l0", 1.0, "m", 0.0, 100.0, "rest length of the spring"),
         ),
-        particles=(Particle("m1", ("x1", "0", "0"), "body 1"), Particle("m2", ("x2", "0", "0"), "body 2")),
+        particles=(Particle("m1", ("x1", "0", "0"), "mass 1"), Particle("m2", ("x2", "0", "0"), "mass 2")),
         potential="k*(x2 - x1 - l0)**2/2",
         coordinate_change=CoordinateChange(
             coordinates=("X", "x"),
@@ -128,17 +128,20 @@ RAIL_TWO_BODY = Scene(
     errata=(
         Erratum(
             chapter="action-reaction pairs: d/dx1 = d/dx2",
-            correct="dL/dx1 = -dL/dx2 = k*(x2 - x1 - l0)",
+            correct="∂L/∂x1 = -∂L/∂x2 = k*(x2 - x1 - l0)",
             reason=(
-                "U depends on x2 − x1 only, so ∂U/∂x1 = −∂U/∂x2: the spring's forces on the two bodies are equal "
+                "U depends on x2 − x1 only, so ∂U/∂x1 = −∂U/∂x2: the spring's forces on the two masses are equal "
                 "and opposite, and cancel in the total momentum."
             ),
             check="dL/dq:x1",
         ),
         Erratum(
             chapter="P = dL/dX_dot = M m1_dot x1_dot + m2 x2_dot",
-            correct="P = M*X_dot = m1*x1_dot + m2*x2_dot",
-            reason="The momentum conjugate to the centre of mass is the total mass times its velocity, the total momentum.",
+            correct="P = (m1 + m2)*X_dot = m1*x1_dot + m2*x2_dot",
+            reason=(
+                "The momentum conjugate to the centre of mass is the total mass m₁ + m₂ times its velocity: the "
+                "total momentum."
+            ),
             check="transformed-momentum:X",
         ),
     ),

@@ -57,10 +57,11 @@ def _steps(doc: dict[str, Any]) -> list[dict[str, Any]]:
     ]
 
 
-def letter_of(doc: dict[str, Any], meaning: str, default: str) -> str:
-    """The document's letter (LaTeX) for a derived quantity, from its Symbols table (app/engine/notation.py)."""
+def letter_of(doc: dict[str, Any], meaning: str, default: str, form: str = "latex") -> str:
+    """The document's letter for a derived quantity (``form`` "latex" or "unicode"), from its Symbols table
+    (app/engine/notation.py)."""
     return next(
-        (r["latex"] for r in doc.get("notation") or [] if r["kind"] == "derived" and r["meaning"].startswith(meaning)),
+        (r[form] for r in doc.get("notation") or [] if r["kind"] == "derived" and r["meaning"].startswith(meaning)),
         default,
     )
 
@@ -277,6 +278,8 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bo
         "coordinates": doc["coordinates"],
         "labels": {n: label(n) for n in [*names, *(c["name"] for c in doc.get("conserved", []))] if n != "t"},
         "units": units,
+        # the letter of a small-oscillation frequency on this page (Ω where ω is the parabola's turning rate)
+        "frequency_letter": letter_of(doc, "angular frequency", "ω", "unicode"),
         "rate_units": known["rate_units"],
         "momentum_units": known["momentum_units"],
         "nonnegative": list(nonnegative),

@@ -177,8 +177,8 @@ PANELS: tuple[Panel, ...] = (
     Panel(
         "small-oscillations",
         "Small oscillations",
-        "The frequency the engine predicts from ω² = U_eff''/m_eff at the nearest stable equilibrium, beside the "
-        "one measured from the simulated motion.",
+        "The frequency of small oscillations the engine predicts at the nearest stable equilibrium (its square is "
+        "U_eff''/m_eff), beside the one measured from the simulated motion.",
         "a reduction to one coordinate with a closed-form ω²",
         lambda f: f.reduction is not None and f.reduction.get("omega_squared") is not None,
         optional=True,

@@ -173,23 +173,25 @@ export class SmallOscillationsPanel extends PreviewPanel {
     }
     react(this, traces, layout({ xaxis: axis("t (s)"), yaxis: axis(titled(lr, unit)) }));
     const predicted = eq ? Math.sqrt(eq.w2) : null;
+    // the page's own letter for the frequency: Ω on the rotating parabola, where ω is the wire's turning rate
+    const letter = run.data.frequency_letter || "ω";
     // words, never a raw null, where there is nothing to show
     const rows = [
-      ["predicted by the engine (ω² = U_eff''/m_eff)", predicted ?? "none: no stable equilibrium", predicted ? (2 * Math.PI) / predicted : "–"],
+      [`predicted by the engine (${letter}² = U_eff''/m_eff)`, predicted ?? "none: no stable equilibrium", predicted ? (2 * Math.PI) / predicted : "–"],
       ["measured from this run", measured ?? "none: no full oscillation in the run", measured ? (2 * Math.PI) / measured : "–"],
     ];
-    table(this.summary, "Small-oscillation frequency", ["", "ω (rad/s)", "period (s)"], rows);
+    table(this.summary, "Small-oscillation frequency", ["", `${letter} (rad/s)`, "period (s)"], rows);
     const tableEl = this.section.querySelector(".frequencies");
-    if (tableEl) table(tableEl, "Frequency: prediction and measurement", ["", "ω (rad/s)", "period (s)"], rows);
+    if (tableEl) table(tableEl, "Frequency: prediction and measurement", ["", `${letter} (rad/s)`, "period (s)"], rows);
     const held = Object.entries(red.P).map(([k, v]) => `${run.data.labels[k] || k} = ${fmt(v)}`).join(", ");
     if (!eq) this.readout.textContent = `No stable equilibrium: U_eff${held ? ` (with ${held}, from the initial state)` : ""} has no minimum near this motion, so there is no small-oscillation prediction.`;
-    else if (!measured) this.readout.textContent = `Predicted ω = ${fmt(predicted)} rad/s about ${lr} = ${fmt(eq.x)} ${unit}; this run is too short to measure a full oscillation.`;
+    else if (!measured) this.readout.textContent = `Predicted ${letter} = ${fmt(predicted)} rad/s about ${lr} = ${fmt(eq.x)} ${unit}; this run is too short to measure a full oscillation.`;
     else {
       const amp = Math.max(...values.map((v) => Math.abs(v - eq.x)));
       // the measurement resolves the frequency to about the sampling's share of a period, and to the run's error
       const dt = run.t.length > 1 ? run.t[1] - run.t[0] : 0;
       const resolution = 100 * Math.max((measured * dt / (2 * Math.PI)) ** 2, (run.stats.error_estimate || 0) / Math.max(amp, 1e-300), 1e-9);
-      this.readout.textContent = `About ${lr} = ${fmt(eq.x)} ${unit}: predicted ω = ${fmt(predicted)} rad/s, measured ${fmt(measured)} rad/s (${fmtResolved((100 * (measured - predicted)) / predicted, resolution)} %) at amplitude ${fmt(amp)} ${unit}. The prediction holds as the amplitude goes to zero.`;
+      this.readout.textContent = `About ${lr} = ${fmt(eq.x)} ${unit}: predicted ${letter} = ${fmt(predicted)} rad/s, measured ${fmt(measured)} rad/s (${fmtResolved((100 * (measured - predicted)) / predicted, resolution)} %) at amplitude ${fmt(amp)} ${unit}. The prediction holds as the amplitude goes to zero.`;
     }
   }
 

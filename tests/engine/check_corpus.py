@@ -392,7 +392,7 @@ TYPICAL = [
     ),
     ("spherical-pendulum", "equation", "phi", "R**2*m*sin(theta)**2*phi_ddot", "equation.chain_rule.theta"),
     ("rail-two-body", "potential", None, "k*(x2 - x1)**2/2", "potential.natural_length.k_l0_x1_x2"),
-    ("rail-two-body", "kinetic", None, "m1*x1_dot**2/2", "kinetic.body_forgotten.body_2"),
+    ("rail-two-body", "kinetic", None, "m1*x1_dot**2/2", "kinetic.body_forgotten.mass_2"),
     ("rail-two-body", "equation", "x1", "m1*x1_ddot", "equation.force_left_out.k_l0_x1_x2"),
     ("pulley", "kinetic", None, "m1*y1_dot**2/2 + m2*y2_dot**2/2", "kinetic.body_forgotten.middle_mass"),
     ("pulley", "potential", None, "m1*g*y1 + m2*g*y2 + M*g*(y1 + y2)/2", "potential.term_sign.M_g_y1_y2"),

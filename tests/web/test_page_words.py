@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+import json
+import re
+
 import pytest
+import sympy as sp
 
 SCENES_WITH_A_REDUCTION = ["tabletop-spring", "spherical-pendulum", "rotating-parabola", "helix-bead"]
 
@@ -35,3 +39,148 @@ def test_the_helix_winding_is_described_in_its_unit(client):
     alpha = client.get("/api/scenes/helix-bead/derivation").json()["parameters"]["alpha"]
     assert alpha["unit"] == "rad/m" and "radians" in alpha["description"] and "turns of" not in alpha["description"]
     assert "radians of turn per metre" in client.get("/scenes/helix-bead").text
+
+
+# ---- issue 40, part B: scenes 7–12 and the Symbols tables -------------------------------------------------
+
+
+def test_the_rail_errata_write_partials_and_the_total_mass(client):
+    errata = client.get("/api/scenes/rail-two-body/derivation").json()["errata"]
+    partials, momentum = errata[0]["correct_latex"], errata[1]["correct_latex"]
+    assert partials.startswith(r"\frac{\partial L}{\partial x_{1}} = - \frac{\partial L}{\partial x_{2}}")
+    assert r"\frac{dL}" not in partials
+    assert momentum.startswith(r"P = \left(m_{1} + m_{2}\right) \dot{X}") and "M" not in momentum
+
+
+def test_the_rail_names_its_bodies_masses(client):
+    page = client.get("/scenes/rail-two-body").text
+    for other in ("two cars", "blocks", "body 1", "first body"):
+        assert other not in page
+
+
+def test_a_mode_shape_is_exact_where_it_is_and_omega_squared_has_four_figures_and_a_unit(client):
+    rail = steps(client, "rail-two-body")["normal-modes:1"]["latex"]
+    assert r"\approx 15\,\mathrm{s}^{-2}" in rail and r"x_{2}: - \frac{m_{1}}{m_{2}}" in rail
+    pendulum = steps(client, "double-pendulum")["normal-modes:1"]["latex"]
+    assert r"\approx 5.747\,\mathrm{s}^{-2}" in pendulum and "5.74656" not in pendulum and "0.707107" not in pendulum
+    coupled = steps(client, "coupled-oscillators")["normal-modes:1"]["latex"]
+    assert r"x_{1}: 1, x_{2}: -1" in coupled.replace("- 1", "-1")
+
+
+@pytest.mark.parametrize("scene", ["coupled-oscillators", "double-pendulum", "rail-two-body"])
+def test_the_normal_modes_write_eta_for_the_displacement_epsilon_being_the_action_panels(client, scene):
+    for key, step in steps(client, scene).items():
+        if key.startswith("normal-modes"):
+            assert "ε" not in step["explanation"]
+    explained = steps(client, "double-pendulum")["normal-modes:1"]["explanation"]
+    assert "M η̈ + K η = 0" in explained and "η = a cos ωt" in explained
+
+
+def test_generic_sentences_name_only_what_the_system_has(client):
+    shown = steps(client, "coupled-oscillators")
+    assert "sin²" not in shown["squared-speeds"]["explanation"]
+    assert "− Q" not in shown["euler-lagrange"]["explanation"]
+    assert " b" not in shown["legendre"]["explanation"] and "(p − b)" not in shown["hamiltonian-pq"]["explanation"]
+    # the double pendulum's v² does use the identity
+    assert "sin² + cos² = 1" in steps(client, "double-pendulum")["squared-speeds"]["explanation"]
+
+
+def test_the_symbols_table_lists_units_and_the_momenta(client):
+    rows = {r["unicode"]: r for r in client.get("/api/scenes/rail-two-body/derivation").json()["notation"]}
+    assert rows["x₁"]["unit"] == "m" and rows["p_x₁"]["unit"] == "kg·m/s" and rows["ω"]["unit"] == "rad/s"
+    assert all(rows[e]["unit"] == "J" for e in ("T", "U", "L", "h", "H", "E")) and rows["t"]["unit"] == "s"
+    assert "η" in rows and "a" in rows and "f" in rows
+    angles = {r["unicode"]: r for r in client.get("/api/scenes/double-pendulum/derivation").json()["notation"]}
+    assert angles["θ₁"]["unit"] == "rad" and angles["p_θ₁"]["unit"] == "kg·m²/s"
+    assert "kg·m/s" in client.get("/scenes/rail-two-body").text
+
+
+def test_the_pulley_tension_is_lambda_times_the_gradient_in_the_end_mass(client):
+    shown = steps(client, "pulley")
+    force = shown["constraint-forces"]["latex"]
+    assert r"\frac{\partial \mathcal{C}_{1}}{\partial \vec r_{1}}" in force and r"\nabla" not in force
+    assert "z₁, z₂, z₃ the heights of m₁, m₂ and M" in shown["constraints"]["explanation"]
+    assert "every position is an equilibrium" in shown["equilibria"]["explanation"]
+
+
+def test_the_wedge_height_is_z_and_the_parabola_alpha_is_not_called_curvature(client):
+    wedge = client.get("/scenes/movable-incline").text
+    assert "height z = −D sin α" in wedge and "(X + D cos α, −D sin α)" not in wedge
+    alpha = client.get("/api/scenes/rotating-parabola/derivation").json()["parameters"]["alpha"]["description"]
+    assert not alpha.startswith("curvature") and "curvature at the bottom is 2α" in alpha
+    assert "signed horizontal distance" in client.get("/scenes/rotating-parabola").text
+
+
+def test_the_symbols_table_lists_the_letters_of_the_optional_steps(client):
+    def rows(scene: str) -> dict[str, dict]:
+        return {r["unicode"]: r for r in client.get(f"/api/scenes/{scene}/derivation").json()["notation"]}
+
+    rail = rows("rail-two-body")
+    assert rail["X"]["unit"] == "m" and "(m₁x₁ + m₂x₂)/(m₁ + m₂)" in rail["X"]["meaning"]
+    assert rail["μ"]["unit"] == "kg" and rail["x"]["unit"] == "m"
+    pulley = rows("pulley")
+    assert {"𝒞", "λ", "z₁", "z₂", "z₃"} <= set(pulley) and pulley["F"]["unit"] == "N"
+    assert pulley["z₃"]["meaning"] == "Cartesian z of the middle mass"
+    parabola = rows("rotating-parabola")
+    # ρ's unit is told from m (1 + 4α²ρ²), so the energies are in J
+    assert parabola["ρ"]["unit"] == "m" and parabola["h"]["unit"] == "J" and parabola["V"]["unit"] == "J"
+    assert parabola["U_eff"]["unit"] == "J" and parabola["m_eff"]["unit"] == "kg" and "bead" in parabola["z"]["meaning"]
+    wedge = rows("movable-incline")
+    assert wedge["x₂"]["meaning"] == "Cartesian x of the block" and wedge["m_eff"]["unit"] == "kg"
+    # each letter once
+    for scene in ("rail-two-body", "pulley", "rotating-parabola", "movable-incline"):
+        letters = [r["unicode"] for r in client.get(f"/api/scenes/{scene}/derivation").json()["notation"]]
+        assert len(letters) == len(set(letters))
+    assert "Cartesian z of the middle mass" in client.get("/scenes/pulley").text
+
+
+def scene_data(client, scene: str) -> dict:
+    page = client.get(f"/scenes/{scene}").text
+    return json.loads(re.search(r'<script type="application/json" id="scene-data">(.*?)</script>', page, re.S)[1])
+
+
+def test_the_small_oscillations_panel_gets_the_pages_frequency_letter(client):
+    # the parabola turns at ω, so its small-oscillation frequency is Ω, in the derivation and in the panel
+    assert scene_data(client, "rotating-parabola")["frequency_letter"] == "Ω"
+    assert scene_data(client, "tabletop-spring")["frequency_letter"] == "ω"
+
+
+def test_the_rail_lists_the_total_momentum_in_its_own_coordinates(client):
+    conserved = {c["name"]: c for c in client.get("/api/scenes/rail-two-body/derivation").json()["conserved"]}
+    total = conserved["p_x1 + p_x2"]
+    assert total["latex"] == r"m_{1} \dot{x}_{1} + m_{2} \dot{x}_{2}" and "∂L/∂x₁ + ∂L/∂x₂ = 0" in total["reason"]
+    # the springs to the walls break the translation: the coupled oscillators conserve only E
+    assert [c["name"] for c in client.get("/api/scenes/coupled-oscillators/derivation").json()["conserved"]] == ["E"]
+    assert scene_data(client, "rail-two-body")["labels"]["p_x1 + p_x2"] == "p_x₁ + p_x₂"
+
+
+def test_the_pulley_derives_the_middle_masss_acceleration_from_the_engines_two(client):
+    doc = client.get("/api/scenes/pulley/derivation").json()
+    accelerations = {q: sp.sympify(a["sympy"]) for q, a in doc["accelerations"].items()}
+    m1, m2, M, g = sp.symbols("m1 m2 M g")
+    middle = -(accelerations["y1"] + accelerations["y2"]) / 2
+    assert sp.simplify(middle - (g - 2 * (m1 + m2) * g / (m1 + m2 + 4 * m1 * m2 / M))) == 0
+    explained = {s["key"]: s for s in doc["steps"]}["accelerations"]["explanation"]
+    assert "Ÿ = −(ÿ₁ + ÿ₂)/2 = g − 2 (m₁ + m₂) g/(m₁ + m₂ + 4 m₁ m₂/M)" in explained
+
+
+def test_the_coupled_oscillators_derive_their_beats(client):
+    shown = steps(client, "coupled-oscillators")
+    beats = shown["beats:1"]
+    assert r"\omega_1 &= \sqrt{\frac{k}{m}},\quad \omega_2 = \sqrt{\frac{k + 2 \kappa}{m}}" in beats["latex"]
+    assert (
+        r"= A \cos\left(\tfrac{\omega_2 - \omega_1}{2}\, t\right) \cos\left(\tfrac{\omega_1 + \omega_2}{2}\, t\right)"
+        in (beats["latex"])
+    )
+    # π/(ω₂ − ω₁) and 2π/(ω₂ − ω₁) at the page's default k, κ and m
+    p = {
+        n: v["default"]
+        for n, v in client.get("/api/scenes/coupled-oscillators/derivation").json()["parameters"].items()
+    }
+    w1, w2 = (p["k"] / p["m"]) ** 0.5, ((p["k"] + 2 * p["kappa"]) / p["m"]) ** 0.5
+    assert (
+        f"{3.141592653589793 / (w2 - w1):.4g} s and {2 * 3.141592653589793 / (w2 - w1):.4g} s" in beats["explanation"]
+    )
+    # modes that are not a symmetric pair get no beats step
+    assert not any(k.startswith("beats") for k in steps(client, "double-pendulum"))
+    assert "A" in {r["unicode"] for r in client.get("/api/scenes/coupled-oscillators/derivation").json()["notation"]}
