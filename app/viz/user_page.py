@@ -8,8 +8,10 @@ which optional panels the page asks for (the registry in ``panels.py`` adds the 
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import asdict
 from typing import Any
 
+from app.engine.distances import distance_events
 from app.engine.user_system import UserSystem
 from app.viz.page_model import scene_page
 
@@ -29,6 +31,8 @@ def model_of(user: UserSystem, doc: dict[str, Any], methods: Sequence[str]) -> d
         "panels": PANELS,
         "initial": {q: 1.0 for q in user.coordinates},
         "t_end": 10.0,
+        # a distance (declared never negative) ends the run where it reaches 0, in the preview as on the server
+        "events": [asdict(e) for e in distance_events(user.nonnegative)],
     }
     # what the animation draws: the particles as declared (none for a system given by L or by T and U)
     particles = [(p.label, p.position) for p in user.system().particles]
