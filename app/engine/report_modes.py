@@ -201,12 +201,13 @@ def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
             + ("; where they leave a coordinate free, every state that satisfies them is one." if nm.family else ".")
         )
     some_exact = any(e.exact for e in found)
-    where = f" (searched: {nm.searched})" if nm.searched else ""
+    where = f" (it looked at {nm.searched})" if nm.searched else ""
     if nm.angles_only:
         # the whole configuration space was searched; only roots closer together than the search can tell apart escape
         return (
             ("Closed forms are shown where they are known; " if some_exact else "")
-            + "a numerical search over a full period of every angle, at the default parameters, found "
+            + ("a" if some_exact else "A")
+            + " numerical search over a full period of every angle, at the default parameters, found "
             + (("no others." if all(e.exact for e in found) else "the rest") if some_exact else "them")
             # a caveat only where some equilibrium rests on the search alone
             + ("" if some_exact and all(e.exact for e in found) else " (roots lying very close together could still escape it).")
