@@ -136,3 +136,17 @@ def test_the_page_issues_a_session(client):
     client.cookies.clear()
     response = client.get("/playground?new")
     assert "lagrange_session" in response.cookies
+
+
+def test_parameter_ranges_read_as_a_reader_writes_them(client):
+    """A positive quantity left without bounds is "more than 0, up to" a round power of ten, with its unit typeset
+    (never "1e-09 to 11 kg" or "m/s^2"); a signed one a symmetric round range with a true minus sign."""
+    form = Form(coordinates="x", parameters=[
+        {"name": "m", "value": "1", "unit": "kg"}, {"name": "g", "value": "9.81", "unit": "m/s^2"},
+        {"name": "w", "value": "1.5", "unit": "1/s"},
+    ], kinetic="m*x_dot**2/2", potential="m*g*x + w*x**2")  # fmt: skip
+    html = client.get("/playground?" + urlencode({**query_of(form), "stage": "whole"}, doseq=True)).text
+    hints = dict(re.findall(r'id="ctl-(\w+)-hint"[^>]*>allowed: ([^<]*)</p>', html))
+    shown = {name: hints[name] for name in ("m", "g", "w")}
+    assert shown == {"m": "more than 0, up to 10 kg", "g": "more than 0, up to 100 m/s²", "w": "−100 to 100 1/s"}, hints
+    assert not any("e-0" in text or "^" in text for text in hints.values()), hints
