@@ -426,6 +426,8 @@ def normal_modes_json(nm: NormalModes, pr: Printer) -> list[dict[str, Any]]:
             "stable": e.stable,
             "kind": e.kind,
             "coordinates": list(e.coordinates),
+            # every configuration is an equilibrium (V ≡ 0 and nothing acts at rest): at rest nothing moves
+            "everywhere": nm.everywhere,
             # the full linearization's exponents s (velocity terms included), as [Re s, Im s]
             "exponents": [[s.real, s.imag] for s in e.linear.exponents] if e.linear else [],
             "frequencies": list(e.linear.frequencies) if e.linear else [],
