@@ -22,7 +22,8 @@ PANELS = ("effective-potential", "small-oscillations", "poincare")
 
 def model_of(user: UserSystem, doc: dict[str, Any], methods: Sequence[str]) -> dict[str, Any]:
     """The scene page model for a user system (pure Python: expression trees, no SymPy)."""
-    info = {
+    initial: dict[str, float] = {q: 1.0 for q in user.coordinates}
+    info: dict[str, Any] = {
         "id": "playground",
         "title": "Your system",
         "section": "",
@@ -30,7 +31,7 @@ def model_of(user: UserSystem, doc: dict[str, Any], methods: Sequence[str]) -> d
         "statement": "",
         "figure": "The system as declared, drawn at its initial state.",
         "panels": PANELS,
-        "initial": {q: 1.0 for q in user.coordinates},
+        "initial": initial,
         "t_end": 10.0,
         # a distance (declared never negative) ends the run where it reaches 0, in the preview as on the server
         "events": [asdict(e) for e in distance_events(user.nonnegative)],
@@ -40,7 +41,7 @@ def model_of(user: UserSystem, doc: dict[str, Any], methods: Sequence[str]) -> d
     note = ""
     if any(e.get("everywhere") for e in doc.get("normal_modes") or []):
         first = user.coordinates[0]
-        info["initial"] = {**info["initial"], f"{first}_dot": 1.0}
+        initial[f"{first}_dot"] = 1.0
         note = (
             f"Every configuration is an equilibrium, so a start at rest would show nothing: the run starts with "
             f"{unicode(first + '_dot')}(0) = 1 per second."
