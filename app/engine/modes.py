@@ -51,6 +51,7 @@ from app.engine import modes_exact, roots
 from app.engine.budget import work_limit
 from app.engine.derive import Derivation
 from app.engine.kinks import away_from_kinks
+from app.engine.names import unicode
 from app.engine.stability import NEUTRAL, STABLE, UNSTABLE, Linear, linearize
 from app.engine.time_factor import TIMES, common_factor_time
 from app.engine.work import WorkExceeded
@@ -275,15 +276,24 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
 
 
 def _searched(names: tuple[str, ...], periodic: list[bool], nonnegative: set[int], k: list[float]) -> str:
-    """Where the numerical search looked, in words."""
+    """Where the numerical search looked, in the words a reader reads ("x between −80 and 80 and θ over a
+    full turn"): names as printed, a true minus sign, no exponent notation."""
     big = max([abs(v) for v in k if math.isfinite(v)] + [3.0 / 4])
     parts = []
     for i, name in enumerate(names):
+        shown = unicode(name)
         if i < len(periodic) and periodic[i]:
-            parts.append(f"{name} over one period")
+            parts.append(f"{shown} over a full turn")
         else:
-            parts.append(f"{name} from {0 if i in nonnegative else -4 * big:g} to {4 * big:g}")
-    return ", ".join(parts)
+            low = "0" if i in nonnegative else _plain(-4 * big)
+            parts.append(f"{shown} between {low} and {_plain(4 * big)}")
+    return parts[0] if len(parts) == 1 else ", ".join(parts[:-1]) + " and " + parts[-1]
+
+
+def _plain(x: float) -> str:
+    """A search bound as a reader writes it: at most three significant figures, a true minus sign."""
+    text = f"{x:,.3g}" if abs(x) < 1e5 else f"{x:,.0f}"
+    return text.replace("-", "−")
 
 
 def _equilibria(

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from app.engine.budget import tidy, within_budget
+from app.engine.budget import pythagoras, tidy, within_budget
 from app.engine.conservation import Energetics
 from app.engine.lagrange import Equations
 from app.engine.mechanics import Mechanics
@@ -50,6 +50,9 @@ class Reduction:
     omega_squared_at: sp.Expr
     equilibria: tuple[Equilibrium, ...]
     equilibria_solved: bool
+    # ω² about a steady motion written in terms of the coordinate there, the momentum eliminated (None when
+    # the condition U_eff' = 0 does not give the momentum's square as a function of the coordinate)
+    omega_squared_steady: sp.Expr | None = None
 
 
 def _positive_assumptions(mech: Mechanics, positive: set[str]) -> dict[sp.Symbol, sp.Symbol]:
@@ -140,4 +143,30 @@ def reduce_to_one(
         omega_sq,
         tuple(equilibria),
         solved,
+        _steady_omega_squared(dU, omega_sq, P),
     )
+
+
+def _steady_omega_squared(dU: sp.Expr, omega_sq: sp.Expr, momenta: tuple[sp.Symbol, ...]) -> sp.Expr | None:
+    """ω² about a steady motion as a function of its coordinate r₀ alone, as a textbook writes it.
+
+    With one conserved momentum p entering U_eff only through the centrifugal piece, U_eff′ = A(r) p² + B(r);
+    the steady motion at r₀ has p² = −B(r₀)/A(r₀), and putting that into ω² = U_eff″/m_eff leaves r₀ and the
+    parameters (a bead on a cone: ω² = 3g sin a cos a/r₀)."""
+    if len(momenta) != 1:
+        return None
+    p = momenta[0]
+    expanded = sp.expand(dU)
+    A, B = expanded.coeff(p, 2), expanded.coeff(p, 0)
+    if A == 0 or A.has(p) or B.has(p) or sp.expand(expanded - A * p**2 - B) != 0:
+        return None
+    # p² from U_eff'(r₀) = 0; cancelled, never simplified at large (SymPy's simplify here costs seconds)
+    found = omega_sq.subs(p**2, -B / A)
+    if found.has(p):
+        return None
+    found = sp.factor_terms(pythagoras(sp.cancel(found)))
+    # tan written as sin/cos where that is shorter: 3g sin²a/(r₀ tan a) is 3g sin a cos a/r₀
+    quotient = sp.factor_terms(sp.cancel(found.replace(sp.tan, lambda x: sp.sin(x) / sp.cos(x))))
+    angles = {f.args[0] for f in quotient.atoms(sp.sin, sp.cos)}
+    quotient = sp.factor_terms(quotient.xreplace({sp.sin(x) ** 2 + sp.cos(x) ** 2: sp.Integer(1) for x in angles}))
+    return quotient if sp.count_ops(quotient) < sp.count_ops(found) else found

@@ -485,9 +485,25 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
         )
     )
     omega = notation.letter("frequency", d)
-    if red.equilibria:
+    steady = red.omega_squared_steady
+    if red.equilibria and steady is not None and all(e.omega_squared.has(*red.momenta) for e in red.equilibria):
+        # ω² about a steady motion in terms of its r₀, the momentum eliminated by U_eff'(r₀) = 0, as a textbook
+        # writes it (not the root put back into U_eff'')
+        r0 = sp.Symbol(r.name + "0", real=True)
+        at = steady.xreplace({r: r0})
+        rows = [rf"{rn}_0 = {pr.tex(e.position)}" for e in red.equilibria] + [rf"{omega}^2 = {pr.tex(at)}"]
+        sym: Any = [e.position for e in red.equilibria] + [at]
+        momentum = unicode(red.momenta[0].name)
+        why = (
+            f"A steady motion sits where U_eff′ vanishes; about it, ω² = U_eff″/m_eff. The condition "
+            f"U_eff′({unicode(r0.name)}) = 0 gives {momentum}² in terms of {unicode(r0.name)}, and ω² is written "
+            f"with it, so it depends on {unicode(r0.name)} and the parameters alone."
+            + (" It is positive: the steady motion is stable." if all(e.stable for e in red.equilibria) else "")
+            + (" It is negative: the steady motion is unstable." if all(e.stable is False for e in red.equilibria) else "")
+        )
+    elif red.equilibria:
         rows = [rf"{rn}_0 = {pr.tex(e.position)},\quad {omega}^2 = {pr.tex(e.omega_squared)}" for e in red.equilibria]
-        sym: Any = [(e.position, e.omega_squared) for e in red.equilibria]
+        sym = [(e.position, e.omega_squared) for e in red.equilibria]
         why = "Equilibria make U_eff′ vanish; about each, ω² = U_eff″/m_eff (oscillation when positive, instability when negative)."
     else:
         if not red.equilibrium_condition.has(r):

@@ -239,12 +239,13 @@ def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
             + ("; where they leave a coordinate free, every state that satisfies them is one." if nm.family else ".")
         )
     some_exact = any(e.exact for e in found)
-    where = f" (searched: {nm.searched})" if nm.searched else ""
+    where = f" (it looked at {nm.searched})" if nm.searched else ""
     if nm.angles_only:
         # the whole configuration space was searched; only roots closer together than the search can tell apart escape
         return (
             ("Closed forms are shown where they are known; " if some_exact else "")
-            + "a numerical search over a full period of every angle, at the default parameters, found "
+            + ("a" if some_exact else "A")
+            + " numerical search over a full period of every angle, at the default parameters, found "
             + (("no others." if all(e.exact for e in found) else "the rest") if some_exact else "them")
             # a caveat only where some equilibrium rests on the search alone
             + (
@@ -531,6 +532,8 @@ def normal_modes_json(nm: NormalModes, pr: Printer) -> list[dict[str, Any]]:
             "stable": e.stable,
             "kind": e.kind,
             "coordinates": list(e.coordinates),
+            # every configuration is an equilibrium (V ≡ 0 and nothing acts at rest): at rest nothing moves
+            "everywhere": nm.everywhere,
             # the full linearization's exponents s (velocity terms included), as [Re s, Im s]
             "exponents": [[s.real, s.imag] for s in e.linear.exponents] if e.linear else [],
             "frequencies": list(e.linear.frequencies) if e.linear else [],

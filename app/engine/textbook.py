@@ -234,9 +234,19 @@ def latex(expr: Any, names: dict[sp.Symbol, str], first: sp.Symbol | None = None
 
 def _simplest(const: sp.Expr) -> sp.Expr:
     """The shortest of a constant coefficient's forms: as it is, common factors out, or cancelled."""
-    if not isinstance(const, sp.Add) or larger_than(const, NODE_BUDGET // 4):
+    # a product is worth rewriting only when a sum sits in it ((1 + 1/tan²a)/(1 + 1/tan²a)², not m g)
+    mixed = isinstance(const, sp.Mul) and any(isinstance(f.as_base_exp()[0], sp.Add) for f in sp.Mul.make_args(const))
+    if not (isinstance(const, sp.Add) or mixed) or larger_than(const, NODE_BUDGET // 4):
         return const
     forms = [const, sp.factor_terms(const), sp.cancel(const)]
+    if const.has(sp.tan, sp.cot):
+        # tan and cot as quotients of sin and cos, cancelled, then sin² + cos² = 1: a bead on a cone's
+        # (1 + 1/tan²a)/(1 + 1/tan²a)² is sin²a, and g/((1 + 1/tan²a) tan a) is g sin a cos a
+        quotients = const.replace(sp.tan, lambda x: sp.sin(x) / sp.cos(x)).replace(sp.cot, lambda x: sp.cos(x) / sp.sin(x))
+        cancelled = sp.cancel(quotients)
+        angles = {f.args[0] for f in cancelled.atoms(sp.sin, sp.cos)}
+        forms.append(cancelled.xreplace({sp.sin(x) ** 2 + sp.cos(x) ** 2: sp.Integer(1) for x in angles}))
+        forms.append(sp.factor_terms(pythagoras(cancelled)))
     return min(forms, key=lambda e: (sp.count_ops(e), forms.index(e)))
 
 
@@ -284,7 +294,11 @@ def normalised(
     leading = [sp.Mul(_simplest(c), a) for a, c in accelerations.items()]
     rest: list[sp.Expr] = []
     for part, const in groups.items():
-        rest += list(sp.Add.make_args(const)) if part == 1 else [sp.Mul(_simplest(const), part)]
+        if part == 1:
+            # terms free of the coordinates stay separate terms; a single one is written in its simplest form
+            rest += list(sp.Add.make_args(const)) if isinstance(const, sp.Add) else [_simplest(const)]
+        else:
+            rest.append(sp.Mul(_simplest(const), part))
     if len(rest) > 1:
         # a parameter factor common to the rest, such as k/m₁, goes in front of one bracket
         common, inner = sp.factor_terms(sp.Add(*rest)).as_independent(*moving, as_Add=False)

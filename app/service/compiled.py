@@ -16,6 +16,7 @@ import sympy as sp
 
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation, value_or
+from app.engine.distances import distance_events
 from app.numerics.events import EventFunction, compile_events
 from app.numerics.observables import Observables, build
 from app.numerics.system import NumericSystem, generated_sources, numeric_system
@@ -87,8 +88,11 @@ class Compiled:
         return entry
 
     def events(self, scene: Scene | None, system: NumericSystem) -> list[EventFunction]:
-        """A scene's terminal events compiled for its system (once); none for a user system."""
-        if scene is None or not scene.events:
+        """A scene's terminal events compiled for its system (once); for a user system, one per coordinate
+        declared never negative (the run ends where it reaches 0)."""
+        if scene is None:
+            return compile_events(system, distance_events(system.derivation.system.nonnegative))
+        if not scene.events:
             return []
         with self.lock:
             found = self._events.get(scene.id)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -140,6 +141,36 @@ def _fmt(x: float) -> str:
     return f"{x:.6g}"
 
 
+def _round_reach(default: float) -> float:
+    """10^(n + 1) for the smallest power of ten 10^n at or above |default| (at least 10)."""
+    return 10.0 ** (max(0, math.ceil(math.log10(abs(default)))) + 1) if default else 10.0
+
+
+# a lowest value this close above 0 stands for "more than 0" (a mass, a length: JUST_ABOVE_ZERO of the form)
+ABOVE_ZERO = 1e-6
+
+
+def allowed_text(lo: float, hi: float, unit: str) -> str:
+    """The allowed range as a reader writes it: "more than 0, up to 10 kg", "−100 to 100 rad/s", numbers with a
+    true minus sign and no exponent notation, the unit typeset (m/s², not m/s^2)."""
+    shown = unit_text(unit)
+    tail = f" {shown}" if shown else ""
+    if 0 < lo <= ABOVE_ZERO:
+        return f"more than 0, up to {_plain(hi)}{tail}"
+    return f"{_plain(lo)} to {_plain(hi)}{tail}"
+
+
+def _plain(x: float) -> str:
+    # whole thousands with separators (10,000), smaller numbers to four figures (0.01, 2.5)
+    text = f"{x:,.0f}" if abs(x) >= 1000 else f"{x:.4g}"
+    return text.replace("-", "−")
+
+
+def unit_text(unit: str) -> str:
+    """A unit as printed: powers as superscripts (m/s^2 → m/s², kg*m^2 → kg·m²)."""
+    return re.sub(r"\^(-?\d)", lambda m: m.group(1).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")), unit).replace("*", "·")
+
+
 def angles(doc: dict[str, Any]) -> set[str]:
     """Coordinates that are angles, as the derivation document records them."""
     return set(doc.get("angles") or [])
@@ -216,8 +247,11 @@ def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any
     controls = []
     for name, info in doc["parameters"].items():
         default = float(info["default"])
-        lo = info.get("min") if info.get("min") is not None else min(0.0, default) - 10 * max(1.0, abs(default))
-        hi = info.get("max") if info.get("max") is not None else max(0.0, default) + 10 * max(1.0, abs(default))
+        # a bound the declaration leaves open is a round one, ± a power of ten at least ten times the default
+        # (a mass of 1 kg: up to 10 kg; g = 9.81 m/s²: up to 100), never the default plus ten
+        reach = _round_reach(default)
+        lo = info.get("min") if info.get("min") is not None else -reach
+        hi = info.get("max") if info.get("max") is not None else reach
         found = [m for m in marks.get(name, []) if lo <= m["value"] <= hi]
         slider_lo, slider_hi, log = useful_range(default, float(lo), float(hi), found)
         unit = info.get("unit") or ""
@@ -225,7 +259,7 @@ def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any
             {"name": name, "label": label(name), "latex": latex(name), "unit": unit,
              "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(default), "log": log,
              "slider_min": _fmt(slider_lo), "slider_max": _fmt(slider_hi), "ticks": _marks(found, unit),
-             "description": _described(info)}
+             "description": _described(info), "allowed": allowed_text(float(lo), float(hi), unit)}
         )  # fmt: skip
     return controls
 

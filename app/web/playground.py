@@ -166,7 +166,7 @@ QUERY_PARAMETERS = [
     *(_query_parameter(a, f"Particles: {a} positions, one per particle.", repeated=True) for a in AXES),
     _query_parameter("fq", "Generalized forces: the coordinate each acts on.", repeated=True),
     _query_parameter("fQ", "Generalized forces: the expressions, in the order of fq.", repeated=True),
-    _query_parameter("nn", "Coordinates that are distances (never negative)."),
+    _query_parameter("nn", "Coordinates that are distances (never negative): a run ends where one reaches 0."),
     _query_parameter("system", "The whole system as JSON in the shape of POST /api/derive (takes precedence)."),
     _query_parameter("new", "Present (any value) for an empty form."),
     STAGE_PARAMETER,

@@ -89,9 +89,12 @@ function check(ctl) {
   const ok = number.value.trim() !== "" && Number.isFinite(value) && value >= lo && value <= hi;
   number.setAttribute("aria-invalid", ok ? "false" : "true");
   ctl.classList.toggle("invalid", !ok);
+  // the server's words for the range ("more than 0, up to 10 kg") where it gave them
+  const range = ctl.dataset.allowed || `${tidy(lo)} to ${tidy(hi)}${unit}`;
   hint.textContent = ok
-    ? `allowed: ${tidy(lo)} to ${tidy(hi)}${unit}`
-    : `${ctl.dataset.label || ctl.dataset.name} must be a number from ${tidy(lo)} to ${tidy(hi)}${unit}`;
+    ? `allowed: ${range}`
+    : `${ctl.dataset.label || ctl.dataset.name} must be a number ${
+        ctl.dataset.allowed && lo > 0 && lo <= 1e-6 ? range : `from ${tidy(lo)} to ${tidy(hi)}${unit}`}`;
   return ok;
 }
 

@@ -3,6 +3,8 @@ every configuration (V ≡ 0), a family, none, isolated points in closed form, e
 
 from __future__ import annotations
 
+import sympy as sp
+
 
 def derive(client, body):
     response = client.post("/api/derive", json=body)
@@ -87,3 +89,70 @@ def test_a_typed_particle_on_a_cone_keeps_no_sin_squared_plus_cos_squared(client
         assert r"\sin^{2} {\alpha} + \cos^{2} {\alpha}" not in s["latex"], (s["key"], s["latex"])
     (radial,) = [e["latex"] for e in doc["equations_of_motion"] if e["coordinate"] == "r"]
     assert radial.startswith(r"\ddot{r}")
+
+
+# the reviewer's cone: r the distance from the axis, the height r/tan a, r declared a distance
+CONE_BY_ITS_AXIS = {
+    "coordinates": ["r", "phi"],
+    "parameters": [
+        {"name": "m", "value": 1.0, "unit": "kg", "min": 0.0},
+        {"name": "g", "value": 9.81, "unit": "m/s^2", "min": 0.0},
+        {"name": "a", "value": 0.5, "unit": "rad", "min": 0.0},
+    ],
+    "particles": [{"mass": "m", "position": ["r*cos(phi)", "r*sin(phi)", "r/tan(a)"]}],
+    "potential": "m*g*r/tan(a)",
+    "nonnegative": ["r"],
+}
+
+
+def test_a_cone_by_its_axis_prints_its_equation_with_the_factor_cancelled(client):
+    """T = ½m(ṙ²/sin²a + r²φ̇²): divided by m/sin²a, r̈ − r φ̇² sin²a + g sin a cos a = 0, with no
+    (1 + 1/tan²a)/(1 + 1/tan²a)² left standing."""
+    doc = derive(client, CONE_BY_ITS_AXIS)
+    (eq,) = steps(doc, "euler-lagrange")
+    assert r"1 / \tan^{2}" not in eq["latex"] and r"\tan" not in eq["latex"], eq["latex"]
+    r, a, g, phi_dot = (sp.Symbol(n) for n in ("r", "a", "g", "phi_dot"))
+    radial = sp.sympify(eq["sympy"].strip("[]").rsplit(", phi_ddot", 1)[0], locals={"r": r, "a": a, "g": g})
+    textbook = sp.Symbol("r_ddot") - r * phi_dot**2 * sp.sin(a) ** 2 + g * sp.sin(a) * sp.cos(a)
+    assert sp.expand(radial - textbook) == 0
+
+
+def test_a_cone_by_its_axis_gives_the_steady_motion_frequency_in_terms_of_its_radius(client):
+    """U_eff = p_φ²/(2mr²) + mgr/tan a: U_eff′(r₀) = 0 gives p_φ² = m²g r₀³/tan a, so
+    ω² = U_eff″/m_eff = 3p_φ² sin²a/(m²r₀⁴) = 3g sin a cos a / r₀, free of p_φ."""
+    doc = derive(client, CONE_BY_ITS_AXIS)
+    (step,) = steps(doc, "reduced-equilibria")
+    assert r"\omega^2 &= \frac{3 g \sin {a} \cos {a}}{r_{0}}" in step["latex"], step["latex"]
+    assert "p_{\\phi}^{2}" not in step["latex"] and "8}{3}" not in step["latex"]
+    assert "gives p_φ² in terms of r₀" in step["explanation"]
+
+
+def test_where_the_numerical_search_looked_is_said_in_plain_words(client):
+    """A slider on a spring carrying a pendulum: the search's range is written with the names as printed, a true
+    minus sign and 'a full turn', never program text such as 'searched: x from -80 to 80, theta'."""
+    doc = derive(
+        client,
+        {
+            "coordinates": ["x", "theta"],
+            "parameters": [
+                {"name": "M", "value": 2.0, "unit": "kg"},
+                {"name": "m", "value": 1.0, "unit": "kg"},
+                {"name": "l", "value": 1.0, "unit": "m"},
+                {"name": "k", "value": 20.0, "unit": "N/m"},
+                {"name": "g", "value": 9.81, "unit": "m/s^2"},
+            ],
+            "particles": [
+                {"mass": "M", "position": ["x", "0"]},
+                {"mass": "m", "position": ["x + l*sin(theta)", "-l*cos(theta)"]},
+            ],
+            "potential": "k*x**2/2 - m*g*l*cos(theta)",
+        },
+    )
+    (eq,) = steps(doc, "equilibria")
+    words = eq["explanation"]
+    assert "searched:" not in words and "theta" not in words and "-80" not in words, words
+    # the bound is four times the largest parameter, k = 20 N/m
+    assert "x between −80 and 80 and θ over a full turn" in words, words
+    # every sentence opens with a capital letter
+    for sentence in words.split(". ")[1:]:
+        assert sentence[:1].isupper(), sentence

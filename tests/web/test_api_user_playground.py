@@ -2,6 +2,7 @@
 
 import json
 import re
+import unicodedata
 from urllib.parse import urlencode
 
 import pytest
@@ -136,3 +137,37 @@ def test_the_page_issues_a_session(client):
     client.cookies.clear()
     response = client.get("/playground?new")
     assert "lagrange_session" in response.cookies
+
+
+def test_parameter_ranges_read_as_a_reader_writes_them(client):
+    """A positive quantity left without bounds is "more than 0, up to" a round power of ten, with its unit typeset
+    (never "1e-09 to 11 kg" or "m/s^2"); a signed one a symmetric round range with a true minus sign."""
+    form = Form(coordinates="x", parameters=[
+        {"name": "m", "value": "1", "unit": "kg"}, {"name": "g", "value": "9.81", "unit": "m/s^2"},
+        {"name": "w", "value": "1.5", "unit": "1/s"},
+    ], kinetic="m*x_dot**2/2", potential="m*g*x + w*x**2")  # fmt: skip
+    html = client.get("/playground?" + urlencode({**query_of(form), "stage": "whole"}, doseq=True)).text
+    hints = dict(re.findall(r'id="ctl-(\w+)-hint"[^>]*>allowed: ([^<]*)</p>', html))
+    shown = {name: hints[name] for name in ("m", "g", "w")}
+    assert shown == {"m": "more than 0, up to 10 kg", "g": "more than 0, up to 100 m/s²", "w": "−100 to 100 1/s"}, hints
+    assert not any("e-0" in text or "^" in text for text in hints.values()), hints
+
+
+def test_a_charge_in_a_uniform_field_starts_moving_and_the_page_says_why(client):
+    """V ≡ 0: every configuration is an equilibrium, so a start at rest would show nothing; the playground starts
+    x moving at 1 per second and says so under the initial conditions."""
+    spec = {
+        "coordinates": ["x", "y"],
+        "parameters": [
+            {"name": "m", "value": 1.0, "unit": "kg"},
+            {"name": "e", "value": 1.0, "unit": "C"},
+            {"name": "B", "value": 2.0, "unit": "T"},
+        ],
+        "lagrangian": "m*(x_dot**2 + y_dot**2)/2 + e*B*(x*y_dot - y*x_dot)/2",
+    }
+    html = client.get("/playground?" + urlencode({**query_of(form_of(spec)), "stage": "whole"}, doseq=True)).text
+    note = re.search(r'<p class="help" id="initial-note">([^<]*)</p>', html)
+    assert note and "Every configuration is an equilibrium" in note[1]
+    assert unicodedata.normalize("NFC", note[1]).endswith("starts with \u1e8b(0) = 1 per second.")  # ẋ
+    start = re.search(r'<input type="number" id="ctl-x_dot" name="x_dot"[^>]*value="([^"]*)"', html)
+    assert start and float(start[1]) == 1.0

@@ -130,3 +130,33 @@ def test_auto_runs_the_stiff_chains_with_the_compiled_radau(client, body):
     balance = 0.5 if body is LOPSIDED_CHAIN else 1.0 / (1e8 + 1.0)
     assert np.abs(x1 - balance * x2).max() < 1e-6 * np.abs(x2).max()
     assert np.ptp(x2) > 0.5  # it does move: over a swing of the slow mode
+
+
+# a bead on a cone of half-angle a about the vertical axis, apex down: r is its distance from the axis
+CONE = {
+    "coordinates": ["r", "phi"],
+    "parameters": [
+        {"name": "m", "value": 1.0, "unit": "kg", "min": 0.0},
+        {"name": "g", "value": 9.81, "unit": "m/s^2", "min": 0.0},
+        {"name": "a", "value": 0.5, "unit": "rad", "min": 0.0},
+    ],
+    "particles": [{"mass": "m", "position": ["r*cos(phi)", "r*sin(phi)", "r/tan(a)"]}],
+    "potential": "m*g*r/tan(a)",
+    "nonnegative": ["r"],
+}
+
+
+def test_a_distance_declared_never_negative_ends_the_run_where_it_reaches_zero(client):
+    """Released at rest, the bead slides straight down its generator: r̈ = −g sin a cos a, so it reaches the
+    apex at t = √(2 r₀ / (g sin a cos a)); past it r would be negative, which the declaration rules out."""
+    body = {**CONE, "initial": {"r": 1.0}, "t_end": 10.0, "samples": 401, "rtol": 1e-10}
+    doc = simulate(client, body)
+    event = doc["stats"]["event"]
+    assert event is not None and event["name"] == "r reaches 0"
+    assert "r ≥ 0" in event["message"] and "run ends" in event["message"]
+    arrival = math.sqrt(2.0 / (9.81 * math.sin(0.5) * math.cos(0.5)))
+    assert event["t"] == pytest.approx(arrival, rel=1e-6)
+    assert doc["t"][-1] == event["t"] and min(doc["state"]["r"]) >= -1e-9
+    # a system without a declared distance runs to its end
+    free = simulate(client, {**body, "nonnegative": []})
+    assert free["stats"]["event"] is None and min(free["state"]["r"]) < -1.0
