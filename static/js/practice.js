@@ -193,6 +193,45 @@ function followUpBox(item, followUp) {
   return box;
 }
 
+// ---- panels that give away a step ---------------------------------------------------------------
+
+// A panel's part marked data-gives-away="step …" (the constraint forces' formulas, a predicted ω) is folded
+// while practising, behind a button naming the step it gives away, until that step is checked right or shown.
+const giveaways = new Map(); // step -> its button, per panel
+
+function unfold(step) {
+  for (const el of document.querySelectorAll("[data-gives-away]")) {
+    if (el.dataset.givesAway.split(" ").includes(step)) el.classList.add("unfolded");
+  }
+  for (const [button, steps] of giveaways) {
+    if (steps.includes(step)) {
+      button.remove();
+      giveaways.delete(button);
+    }
+  }
+}
+
+function foldGiveaways(exercises) {
+  const sections = new Set([...document.querySelectorAll("[data-gives-away]")].map((el) => el.closest("section") || el.parentElement));
+  for (const section of sections) {
+    const parts = [...section.querySelectorAll("[data-gives-away]")];
+    const steps = [...new Set(parts.flatMap((el) => el.dataset.givesAway.split(" ")))];
+    // the first step of the list it gives away (an acceleration before an equation it also hints at)
+    const index = exercises.findIndex((e) => steps.includes(e.step));
+    const what = index < 0 ? "gives away the answers" : `gives away step ${index + 1}: ${exercises[index].title}`;
+    const button = element("button", { type: "button", class: "gives-away" }, `Show (${what})`);
+    button.addEventListener("click", () => {
+      for (const el of parts) el.classList.add("unfolded");
+      button.remove();
+      giveaways.delete(button);
+    });
+    (section.querySelector("h3") || section).after(button);
+    giveaways.set(button, index < 0 ? [] : [exercises[index].step]);
+    // a step already checked right (kept from an earlier visit) unfolds what it gives away
+    if (index >= 0 && ["correct", "equivalent"].includes(record.verdicts[keyOf(exercises[index])]?.result?.verdict)) unfold(exercises[index].step);
+  }
+}
+
 // what the typesetter needs besides the text: the scene, or the declared system's names
 const typesetContext = sceneId
   ? { scene: sceneId }
@@ -285,6 +324,7 @@ function buildItem(exercise, index) {
   reveal.addEventListener("click", () => {
     const open = engine.hidden;
     engine.hidden = !open;
+    if (open) unfold(exercise.step);
     reveal.setAttribute("aria-expanded", String(open));
     reveal.textContent = open ? "Hide this step" : "Show this step";
   });
@@ -306,6 +346,7 @@ function buildItem(exercise, index) {
       record.verdicts[key] = { answer: input.value, result: result || { detail: "No answer from the server." } };
       save(record);
       showVerdict(item, record.verdicts[key].result, input.value);
+      if (["correct", "equivalent"].includes(result?.verdict)) unfold(exercise.step);
     } catch {
       showVerdict(item, { detail: "The server could not be reached; try again." }, answer);
     } finally {
@@ -327,6 +368,7 @@ async function loadSteps() {
     return;
   }
   list.replaceChildren(...answer.exercises.map((exercise, index) => buildItem(exercise, index)));
+  foldGiveaways(answer.exercises);
   status.textContent = `${answer.exercises.length} steps to derive, in the chapter's order.`;
 }
 

@@ -183,3 +183,26 @@ def test_the_named_slip_its_piece_and_follow_up_at_both_sizes(browser, live_serv
         assert page.locator("#practice .katex-error").count() == 0
     finally:
         context.close()
+
+
+def test_panels_that_give_away_a_step_are_folded_until_it_is_shown(page, artifacts):
+    # student-c, 21: the pendulum's tension and its predicted ω stood in the panels above the practice boxes
+    page.set_viewport_size({"width": 390, "height": 844})
+    page.goto("/scenes/simple-pendulum?practice")
+    page.wait_for_selector(STEP.format("omega_squared"))
+    conventions = page.locator("#panel-constraint-force .conventions")
+    readout = page.locator("#panel-small-oscillations .readout")
+    assert conventions.count() == 1 and conventions.is_hidden() and readout.is_hidden()
+    fold = page.locator("#panel-small-oscillations .gives-away")
+    steps = page.locator(".practice-step h3").all_inner_texts()
+    number = next(k for k, key in enumerate(page.locator(".practice-step").evaluate_all("s => s.map(x => x.dataset.key)")) if key == "omega_squared")
+    assert fold.inner_text() == f"Show (gives away step {number + 1}: {steps[number]})"
+    page.locator("#panel-small-oscillations").screenshot(path=artifacts / "practice-folded-390.png")
+    # shown by the student's choice of the panel's button, or once the step is shown
+    page.locator(STEP.format("omega_squared") + " button[aria-controls]").click()
+    assert readout.evaluate("el => getComputedStyle(el).display") != "none" and fold.count() == 0
+    assert conventions.is_hidden()
+    page.locator("#panel-constraint-force .gives-away").click()
+    assert conventions.is_visible() and "cos" in conventions.inner_text()
+    page.locator("#practice-switch").click()  # practice off: nothing is folded
+    assert page.locator("#panel-constraint-force .conventions").is_visible()
