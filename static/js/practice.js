@@ -336,8 +336,16 @@ function buildItem(exercise, index) {
       input.focus();
       return;
     }
+    // a second Enter (or click) while this answer is checked sends nothing
+    if (item.dataset.checking) return;
+    item.dataset.checking = "1";
     check.disabled = true;
+    // the time so far, each second, so a slow check shows it is under way
+    const started = Date.now();
     verdict.textContent = "Checking…";
+    const ticking = setInterval(() => {
+      verdict.textContent = `Checking… ${Math.round((Date.now() - started) / 1000)} s`;
+    }, 1000);
     const body = { step: exercise.step, answer };
     if (exercise.coordinate) body.coordinate = exercise.coordinate;
     if (system) body.system = system;
@@ -350,6 +358,8 @@ function buildItem(exercise, index) {
     } catch {
       showVerdict(item, { detail: "The server could not be reached; try again." }, answer);
     } finally {
+      clearInterval(ticking);
+      delete item.dataset.checking;
       check.disabled = false;
     }
   });
