@@ -25,6 +25,14 @@ def typed_latex(parsed: Parsed) -> str:
     return _node(parsed.tree)
 
 
+def typed_equation(parsed: Parsed) -> str:
+    """An equation typed lhs = rhs (read as lhs − (rhs), app/engine/answer_sides.py) printed lhs = rhs."""
+    tree = parsed.tree
+    rest = tree[4][:-1]
+    lhs = _node(("chain", tree[1], tree[2], tree[3], rest)) if rest else _node(tree[3])
+    return f"{lhs} = {_node(tree[4][-1][1])}"
+
+
 def _number(value: int | float) -> str:
     if isinstance(value, int):
         return str(value)

@@ -39,6 +39,7 @@ from collections import OrderedDict
 from collections.abc import Callable, Mapping
 from typing import Any
 
+from app.engine.answer_sides import sides
 from app.engine.check import (
     STEPS,
     CheckError,
@@ -254,9 +255,11 @@ class Checking:
             assert fu is not None
             kind = fu.kind
         try:
-            parsed = check_answer(answer, kind, pb.kinds)
+            # an equation typed lhs = rhs (an acceleration q_ddot = rhs) is read as the step takes it
+            read = sides(answer, step, pb.coordinate) if follow_up is None else None
+            parsed = check_answer(answer if read is None else read.text, kind, pb.kinds)
         except CheckError as exc:
-            raise refusal(exc) from None
+            raise refusal(exc if read is None else read.placed(exc)) from None
         key = spec_key("scene", scene_id, step, pb.coordinate, answer.strip(), follow_up)
         return await self.users.run_job(
             self.answers, key, client, address, self.check_seconds, scene_check_job, pb, parsed, follow_up
@@ -280,10 +283,12 @@ class Checking:
         read: Parsed | str = answer
         if follow_up is None:
             # (a follow-up's names are the question's: the worker reads it against the mistake)
+            typed = None
             try:
-                read = check_answer(answer, step, kinds)
+                typed = sides(answer, step, coordinate)
+                read = check_answer(typed.text, step, kinds)
             except CheckError as exc:
-                raise refusal(exc) from None
+                raise refusal(exc if typed is None else typed.placed(exc)) from None
         key = spec_key(user, step, coordinate, answer.strip(), follow_up)
         return await self.users.run_job(
             self.answers,

@@ -27,10 +27,11 @@ from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 
+from app.engine.answer_sides import Sides, sides
 from app.engine.check import CheckError, answer_error, check_answer, conserved_momenta, name_kinds
 from app.engine.parse import ExpressionError, Parsed, build
 from app.engine.reality import real_somewhere
-from app.engine.typed_latex import typed_latex
+from app.engine.typed_latex import typed_equation, typed_latex
 from app.service import derivations
 from app.service.user_checks import InvalidSystem, spec_key
 from app.service.user_jobs import guarded
@@ -59,7 +60,7 @@ def scene_kinds(scene_id: str) -> dict[str, str]:
     return name_kinds(d.table.names, d.table.parameter_names, tuple(p.name for p in conserved_momenta(d)))
 
 
-def typeset_job(parsed: Parsed) -> bytes:
+def typeset_job(parsed: Parsed, equation: bool = False) -> bytes:
     """Worker job: the answer the web process read (``check_answer``) through gate 3, as the checker builds
     it, then its LaTeX."""
 
@@ -71,6 +72,8 @@ def typeset_job(parsed: Parsed) -> bytes:
         except ExpressionError as exc:
             raise _refusal(answer_error(exc)) from None
         # printed as typed, never as SymPy rewrote it: the student checks their own typing
+        if equation:  # typed as lhs = rhs: printed so, whole
+            return {"latex": typed_equation(parsed), "equation": True}
         return {"latex": typed_latex(parsed)}
 
     return guarded(run)
@@ -106,9 +109,13 @@ class Typesetter:
     ) -> bytes:
         """``{"latex"}`` of the answer, or InvalidSystem with the checker's message and the offending part."""
         kinds = await asyncio.to_thread(self._scene_kinds, scene) if scene is not None else system_kinds(*names)
+        typed: Sides | None = None
         try:
-            parsed = check_answer(text, step, kinds)
+            typed = sides(text, step, None)
+            parsed = check_answer(typed.text, step, kinds)
         except CheckError as exc:
-            raise _refusal(exc) from None
+            raise _refusal(exc if typed is None else typed.placed(exc)) from None
         key = spec_key("typeset", step, kinds, text.strip())
-        return await self.users.run_job(self.results, key, client, address, self.seconds, typeset_job, parsed)
+        return await self.users.run_job(
+            self.results, key, client, address, self.seconds, typeset_job, parsed, typed.equation
+        )

@@ -119,7 +119,10 @@ function showVerdict(item, result, answer) {
   } else {
     // a refusal: say what was wrong and mark the offending part of what was typed
     const head = element("p", { class: "verdict-head" });
-    head.append(element("strong", {}, "Not checked. "), result.detail || "The answer could not be read.");
+    // said once: the preview's note of the same text gives way to this
+    head.append(element("strong", {}, "Not checked: "), sentenceOf(wordsOf(result.detail) || "the answer could not be read"));
+    const note = item.querySelector(".practice-preview-note");
+    if (note) note.textContent = "";
     box.append(head);
     if (Number.isInteger(result.start) && Number.isInteger(result.end) && result.end <= answer.length) {
       const typed = element("code", { class: "typed", "aria-label": "What you typed, with the offending part marked" });
@@ -131,6 +134,11 @@ function showVerdict(item, result, answer) {
   const stale = record.verdicts[item.dataset.key]?.answer !== undefined && record.verdicts[item.dataset.key].answer !== input.value;
   if (stale) box.append(element("p", { class: "help" }, `(for your earlier answer: ${record.verdicts[item.dataset.key].answer})`));
   input.setAttribute("aria-invalid", result.verdict ? String(result.verdict === "incorrect") : "true");
+}
+
+/** A refusal's message without the field it is located at ("answer: …", "text: …"): the box is the field. */
+function wordsOf(detail) {
+  return (detail || "").replace(/^(answer|text): /, "");
 }
 
 function sentenceOf(text) {
@@ -258,11 +266,13 @@ async function preview(item, signal) {
   if (!reply || signal.aborted) return;
   if (reply.ok) {
     const lhs = item.dataset.lhs;
-    katexInto(math, item.dataset.step === "equation" ? `${reply.answer.latex} = 0` : `${lhs} = ${reply.answer.latex}`, true);
+    // an equation typed lhs = rhs comes back whole
+    const whole = reply.answer.equation ? reply.answer.latex : null;
+    katexInto(math, whole || (item.dataset.step === "equation" ? `${reply.answer.latex} = 0` : `${lhs} = ${reply.answer.latex}`), true);
     note.textContent = "";
     item.dataset.typeset = "read";
   } else if (reply.status === 422) {
-    note.textContent = `Not read yet: ${reply.answer?.detail?.replace(/^answer: /, "") || "the checker could not read this"}.`;
+    note.textContent = `Not read yet: ${sentenceOf(wordsOf(reply.answer?.detail) || "the checker could not read this")}`;
     item.dataset.typeset = "refused";
   }
 }
