@@ -39,7 +39,7 @@ from collections import OrderedDict
 from collections.abc import Callable, Mapping
 from typing import Any
 
-from app.engine.answer_sides import sides
+from app.engine.answer_sides import read_answer
 from app.engine.check import (
     STEPS,
     CheckError,
@@ -256,10 +256,12 @@ class Checking:
             kind = fu.kind
         try:
             # an equation typed lhs = rhs (an acceleration q_ddot = rhs) is read as the step takes it
-            read = sides(answer, step, pb.coordinate) if follow_up is None else None
-            parsed = check_answer(answer if read is None else read.text, kind, pb.kinds)
+            if follow_up is None:
+                parsed = read_answer(answer, step, pb.coordinate, pb.kinds)[0]
+            else:
+                parsed = check_answer(answer, kind, pb.kinds)
         except CheckError as exc:
-            raise refusal(exc if read is None else read.placed(exc)) from None
+            raise refusal(exc) from None
         key = spec_key("scene", scene_id, step, pb.coordinate, answer.strip(), follow_up)
         return await self.users.run_job(
             self.answers, key, client, address, self.check_seconds, scene_check_job, pb, parsed, follow_up
@@ -283,12 +285,10 @@ class Checking:
         read: Parsed | str = answer
         if follow_up is None:
             # (a follow-up's names are the question's: the worker reads it against the mistake)
-            typed = None
             try:
-                typed = sides(answer, step, coordinate)
-                read = check_answer(typed.text, step, kinds)
+                read = read_answer(answer, step, coordinate, kinds)[0]
             except CheckError as exc:
-                raise refusal(exc if typed is None else typed.placed(exc)) from None
+                raise refusal(exc) from None
         key = spec_key(user, step, coordinate, answer.strip(), follow_up)
         return await self.users.run_job(
             self.answers,

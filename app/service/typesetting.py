@@ -27,8 +27,8 @@ from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 
-from app.engine.answer_sides import Sides, sides
-from app.engine.check import CheckError, answer_error, check_answer, conserved_momenta, name_kinds
+from app.engine.answer_sides import read_answer
+from app.engine.check import CheckError, answer_error, conserved_momenta, name_kinds
 from app.engine.parse import ExpressionError, Parsed, build
 from app.engine.reality import real_somewhere
 from app.engine.typed_latex import typed_equation, typed_latex
@@ -109,13 +109,9 @@ class Typesetter:
     ) -> bytes:
         """``{"latex"}`` of the answer, or InvalidSystem with the checker's message and the offending part."""
         kinds = await asyncio.to_thread(self._scene_kinds, scene) if scene is not None else system_kinds(*names)
-        typed: Sides | None = None
         try:
-            typed = sides(text, step, None)
-            parsed = check_answer(typed.text, step, kinds)
+            parsed, equation = read_answer(text, step, None, kinds)
         except CheckError as exc:
-            raise _refusal(exc if typed is None else typed.placed(exc)) from None
+            raise _refusal(exc) from None
         key = spec_key("typeset", step, kinds, text.strip())
-        return await self.users.run_job(
-            self.results, key, client, address, self.seconds, typeset_job, parsed, typed.equation
-        )
+        return await self.users.run_job(self.results, key, client, address, self.seconds, typeset_job, parsed, equation)

@@ -136,9 +136,10 @@ function showVerdict(item, result, answer) {
   input.setAttribute("aria-invalid", result.verdict ? String(result.verdict === "incorrect") : "true");
 }
 
-/** A refusal's message without the field it is located at ("answer: …", "text: …"): the box is the field. */
+/** A refusal's message without the field it is located at ("answer: …", "text: …"), the box being the field,
+ * nor the column of the part at fault, which is marked in what was typed. */
 function wordsOf(detail) {
-  return (detail || "").replace(/^(answer|text): /, "");
+  return (detail || "").replace(/^(answer|text): /, "").replace(/ at column \d+/g, "");
 }
 
 function sentenceOf(text) {
@@ -279,6 +280,17 @@ async function preview(item, signal) {
 
 const TYPESET_DELAY_MS = 150; // after the last keystroke
 
+// what each box takes (app/engine/answer_sides.py): an equation as a textbook writes it, else the right-hand side
+const HOW = {
+  equation: "Type the equation as lhs = rhs, or as one expression equal to zero.",
+  acceleration: "Type {q}_ddot = …, or only the right-hand side.",
+  other: "Type only the right-hand side.",
+};
+
+function howTo(exercise) {
+  return (HOW[exercise.step] || HOW.other).replace("{q}", exercise.coordinate || "q");
+}
+
 function buildItem(exercise, index) {
   const key = keyOf(exercise);
   const id = `practice-${index}`;
@@ -303,7 +315,7 @@ function buildItem(exercise, index) {
   const rhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
   if (exercise.step === "equation") katexInto(rhs, "= 0");
   row.append(lhs, input, rhs);
-  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `Names you may use: ${exercise.names.join(", ")}, pi.`);
+  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${howTo(exercise)} Names you may use: ${exercise.names.join(", ")}, pi.`);
   const previewBox = element("div", { class: "practice-preview", id: `${id}-preview`, "aria-label": "Your answer, typeset" });
   previewBox.append(element("div", { class: "practice-preview-math" }), element("p", { class: "help practice-preview-note" }));
   const actions = element("div", { class: "practice-actions" });

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from app.engine.answer_sides import read_answer
 from app.engine.check import CheckError, check_answer
 from app.service.typesetting import scene_kinds, system_kinds, typeset_job
 from app.service.user_checks import InvalidSystem
@@ -22,7 +23,7 @@ def kinds():
 def read(text: str, kinds: dict[str, str]) -> str:
     """The LaTeX of an answer by the route's two stages (the web process's gates, then the worker job's)."""
     try:
-        parsed = check_answer(text, CORPUS["step"], kinds)
+        parsed = read_answer(text, CORPUS["step"], None, kinds)[0]
     except CheckError as exc:
         raise InvalidSystem(str(exc)) from None
     return json.loads(typeset_job(parsed))["latex"]
