@@ -273,7 +273,10 @@ async function preview(item, signal) {
     note.textContent = "";
     item.dataset.typeset = "read";
   } else if (reply.status === 422) {
-    note.textContent = `Not read yet: ${sentenceOf(wordsOf(reply.answer?.detail) || "the checker could not read this")}`;
+    // said once: when the check of this same text was refused, its verdict below says why
+    const checked = record.verdicts[item.dataset.key];
+    const said = checked && checked.answer === text && !checked.result?.verdict;
+    note.textContent = said ? "" : `Not read yet: ${sentenceOf(wordsOf(reply.answer?.detail) || "the checker could not read this")}`;
     item.dataset.typeset = "refused";
   }
 }

@@ -206,3 +206,36 @@ def test_panels_that_give_away_a_step_are_folded_until_it_is_shown(page, artifac
     assert conventions.is_visible() and "cos" in conventions.inner_text()
     page.locator("#practice-switch").click()  # practice off: nothing is folded
     assert page.locator("#panel-constraint-force .conventions").is_visible()
+
+
+def test_an_equation_typed_as_a_textbook_writes_it_is_checked_and_a_refusal_is_said_once(page, artifacts):
+    # student-c, 5: θ̈ = −(g/R) sin θ was refused, and every refusal was shown twice in parser words
+    page.set_viewport_size({"width": 390, "height": 844})
+    page.goto("/scenes/simple-pendulum?practice")
+    key = "equation:theta"
+    page.wait_for_selector(STEP.format(key))
+    assert "lhs = rhs" in page.locator(STEP.format(key) + " .practice-names").inner_text()
+    box = page.locator(STEP.format(key) + " input[name]")
+    box.fill("theta_ddot = -g/R*sin(theta)")
+    page.wait_for_function(f"document.querySelector('{STEP.format(key)}').dataset.typeset === 'read'")
+    math = page.locator(STEP.format(key) + " .practice-preview-math")
+    page.screenshot(path=artifacts / "practice-equation-390.png")
+    preview = math.evaluate("el => el.querySelector('annotation')?.textContent ?? el.textContent")
+    assert preview == r"\ddot{\theta} = -\frac{g}{R} \sin \theta"  # once, as typed: no '= 0' after it
+    box.press("Enter")
+    box.press("Enter")  # a second Enter while checking sends nothing more
+    verdict = verdict_of(page, key)
+    verdict.locator(".verdict-head").wait_for()
+    assert verdict.get_attribute("data-verdict") == "correct"
+
+    answer(page, "kinetic", "1/2 m R^2 theta_dot^2")
+    refused = verdict_of(page, "kinetic")
+    refused.locator("mark").wait_for()
+    said = refused.locator(".verdict-head").inner_text()
+    assert said.startswith("Not checked: A factor after a quotient") and said.endswith("write 1/2 as (1/2).")
+    assert "column" not in said and "answer:" not in said
+    assert page.locator(STEP.format("kinetic") + " .practice-preview-note").inner_text() == ""  # said once
+    page.locator(STEP.format("kinetic")).screenshot(path=artifacts / "practice-refused-once-390.png")
+    answer(page, "lagrangian", "T - U")
+    verdict_of(page, "lagrangian").locator("mark").wait_for()
+    assert "write T and U out in the coordinates" in verdict_of(page, "lagrangian").inner_text()
