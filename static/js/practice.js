@@ -120,7 +120,7 @@ function showVerdict(item, result, answer) {
     // a refusal: say what was wrong and mark the offending part of what was typed
     const head = element("p", { class: "verdict-head" });
     // said once: the preview's note of the same text gives way to this
-    head.append(element("strong", {}, "Not checked: "), sentenceOf(wordsOf(result.detail) || "the answer could not be read"));
+    head.append(element("strong", {}, "Not checked: "), endOf(wordsOf(result.detail) || "the answer could not be read"));
     const note = item.querySelector(".practice-preview-note");
     if (note) note.textContent = "";
     box.append(head);
@@ -140,6 +140,11 @@ function showVerdict(item, result, answer) {
  * nor the column of the part at fault, which is marked in what was typed. */
 function wordsOf(detail) {
   return (detail || "").replace(/^(answer|text): /, "").replace(/ at column \d+/g, "");
+}
+
+/** A message ended with a full stop (its first word left as the message has it). */
+function endOf(text) {
+  return /[.!?]$/.test(text) ? text : `${text}.`;
 }
 
 function sentenceOf(text) {
@@ -276,7 +281,7 @@ async function preview(item, signal) {
     // said once: when the check of this same text was refused, its verdict below says why
     const checked = record.verdicts[item.dataset.key];
     const said = checked && checked.answer === text && !checked.result?.verdict;
-    note.textContent = said ? "" : `Not read yet: ${sentenceOf(wordsOf(reply.answer?.detail) || "the checker could not read this")}`;
+    note.textContent = said ? "" : `Not read yet: ${endOf(wordsOf(reply.answer?.detail) || "the checker could not read this")}`;
     item.dataset.typeset = "refused";
   }
 }

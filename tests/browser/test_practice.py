@@ -232,7 +232,7 @@ def test_an_equation_typed_as_a_textbook_writes_it_is_checked_and_a_refusal_is_s
     refused = verdict_of(page, "kinetic")
     refused.locator("mark").wait_for()
     said = refused.locator(".verdict-head").inner_text()
-    assert said.startswith("Not checked: A factor after a quotient") and said.endswith("write 1/2 as (1/2).")
+    assert said.startswith("Not checked: a factor after a quotient") and said.endswith("write 1/2 as (1/2).")
     assert "column" not in said and "answer:" not in said
     assert page.locator(STEP.format("kinetic") + " .practice-preview-note").inner_text() == ""  # said once
     page.locator(STEP.format("kinetic")).screenshot(path=artifacts / "practice-refused-once-390.png")
