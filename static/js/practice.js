@@ -345,7 +345,11 @@ function buildItem(exercise, index) {
     typing = new AbortController();
     preview(item, typing.signal);
   };
+  // "= 0" stands beside an equation's box only while the equation is typed as one expression
+  const sides = () => { rhs.hidden = exercise.step === "equation" && input.value.includes("="); };
+  sides();
   input.addEventListener("input", () => {
+    sides();
     record.answers[key] = input.value;
     save(record);
     clearTimeout(timer);

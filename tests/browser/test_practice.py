@@ -218,6 +218,7 @@ def test_an_equation_typed_as_a_textbook_writes_it_is_checked_and_a_refusal_is_s
     box = page.locator(STEP.format(key) + " input[name]")
     box.fill("theta_ddot = -g/R*sin(theta)")
     page.wait_for_function(f"document.querySelector('{STEP.format(key)}').dataset.typeset === 'read'")
+    assert page.locator(STEP.format(key) + " .practice-row .practice-lhs").last.is_hidden()  # no "= 0" beside it
     math = page.locator(STEP.format(key) + " .practice-preview-math")
     page.screenshot(path=artifacts / "practice-equation-390.png")
     preview = math.evaluate("el => el.querySelector('annotation')?.textContent ?? el.textContent")
