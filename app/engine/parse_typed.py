@@ -105,11 +105,15 @@ class Typed:
         return self.starts[start], max(self.ends[last], self.starts[start])
 
 
-def _refuse(given: str, start: int, end: int, why: str, readings: tuple[str, ...] = ()) -> ExpressionError:
+def _refuse(
+    given: str, start: int, end: int, why: str, readings: tuple[str, ...] = (), advice: str = ""
+) -> ExpressionError:
     part = given[start:end]
     shown = part if len(part) <= 60 else part[:57] + "..."
     if readings:
-        message = f"{why}: {shown!r} at column {start + 1} could be read as {readings[0]} or as {readings[1]}; write the one you mean"
+        # a tutor's words: the two readings, and the brackets that choose one (the page marks the part)
+        message = f"{why}: {shown!r} could be read as {readings[0]} or as {readings[1]}; "
+        message += advice or "write the one you mean, with its brackets"
         return ExpressionError(message, shown, start, end, readings)
     return ExpressionError(f"{why}: {shown!r} at column {start + 1}", shown, start, end)
 
@@ -291,8 +295,8 @@ class _Reader:
             return ""
         return self.given[self.tokens[i].start : self.tokens[j - 1].end]
 
-    def ambiguous(self, i: int, j: int, why: str, first: str, second: str) -> ExpressionError:
-        return _refuse(self.given, self.tokens[i].start, self.tokens[j - 1].end, why, (first, second))
+    def ambiguous(self, i: int, j: int, why: str, first: str, second: str, advice: str = "") -> ExpressionError:
+        return _refuse(self.given, self.tokens[i].start, self.tokens[j - 1].end, why, (first, second), advice)
 
     def functions(self) -> None:
         """``sin θ`` is sin(θ) and ``sin^2(θ)`` is sin(θ)^2; a function followed by more than one name without
@@ -419,9 +423,10 @@ class _Reader:
                 last = _powered(tokens, last)
             first = self._term(i)
             n, d, f = self.typed(first, i), self.typed(i + 1, end), self.typed(end, last)
-            raise self.ambiguous(
-                first, last, "a factor after a quotient is ambiguous", f"({n}/{d}) {f}", f"{n}/({d} {f})"
-            )
+            # a number's fraction (the usual ½): say how a textbook's ½ is typed
+            advice = f"write {n}/{d} as ({n}/{d})" if n.strip().isdigit() and d.strip().isdigit() else ""
+            why = "a factor after a quotient is ambiguous"
+            raise self.ambiguous(first, last, why, f"({n}/{d}) {f}", f"{n}/({d} {f})", advice)
 
     def _term(self, i: int) -> int:
         """The index of the first token of the product a "/" at ``i`` divides."""

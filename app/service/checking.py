@@ -11,6 +11,10 @@ and judges it, under the hard time limit and the same fair share per session
 * A scene's problem (the engine's expression for the step and the mistaken
   variants) is built once per process from the scene's cached derivation, in a
   thread, and sent to the worker with the answer: the worker does no derivation.
+* Asking for a scene's steps (its practice page opening) queues that scene's problems to be built, one at a
+  time in one background thread, in the steps' order: a student's first check of a step (the double
+  pendulum's equation of θ₁ takes seconds to build, its catalogue of mistakes with it) then finds its problem
+  ready, or waits for the build under way rather than starting a second one.
 * A user system is derived in the worker (its per-worker cache makes repeated
   checks of one system cheap), then judged there; its problems, with the
   catalogue of mistakes generated from its derivation (app/engine/diagnose.py),
@@ -29,11 +33,13 @@ Refusals carry the field at fault: ``answer``, ``step`` or ``coordinate``, or
 from __future__ import annotations
 
 import asyncio
+import queue
 import threading
 from collections import OrderedDict
 from collections.abc import Callable, Mapping
 from typing import Any
 
+from app.engine.answer_sides import read_answer
 from app.engine.check import (
     STEPS,
     CheckError,
@@ -160,6 +166,10 @@ class Checking:
         # the jobs share the user systems' pool, fair share and request sharing
         self.users = users
         self._problems: dict[tuple[str, str, str | None], Problem] = {}
+        self._building: dict[tuple[str, str, str | None], threading.Event] = {}
+        self._prepared: set[str] = set()
+        self._queue: queue.SimpleQueue[tuple[str, str, str | None]] = queue.SimpleQueue()
+        self._builder: threading.Thread | None = None
         self._exercises: dict[str, bytes] = {}
         self._lock = threading.Lock()
         self.answers = ResultCache(entries=MAX_ANSWER_CACHE, total_bytes=16 * 2**20)
@@ -170,22 +180,59 @@ class Checking:
         """The problem of a scene's step (in a thread: SymPy on the engine's own expressions)."""
         d = derivations.derivation(scene_id)  # UnknownScene for an unknown id
         key = (scene_id, step, coordinate if coordinate in d.table.names else None)
-        with self._lock:
-            found = self._problems.get(key)
-        if found is None:
+        while True:
+            with self._lock:
+                found = self._problems.get(key)
+                building = self._building.get(key)
+                mine = found is None and building is None
+                if mine:
+                    building = self._building[key] = threading.Event()
+            if found is not None:
+                return found
+            assert building is not None
+            if not mine:
+                # another thread (the background one, or another student's check) builds it: wait for that build
+                building.wait()
+                continue
             try:
                 found = problem(d, step, coordinate)
             except CheckError as exc:
                 raise refusal(exc) from None
-            with self._lock:
-                self._problems[key] = found
-        return found
+            finally:
+                with self._lock:
+                    if found is not None:
+                        self._problems[key] = found
+                    del self._building[key]
+                building.set()
+            return found
+
+    def prepare(self, scene_id: str, exercises: list[tuple[str, str | None]]) -> None:
+        """Queue the problems of a scene's steps to be built in the background (once per scene), in order."""
+        with self._lock:
+            if scene_id in self._prepared:
+                return
+            self._prepared.add(scene_id)
+            for step, coordinate in exercises:
+                self._queue.put((scene_id, step, coordinate))
+            if self._builder is None:
+                self._builder = threading.Thread(target=self._build_queued, name="check-problems", daemon=True)
+                self._builder.start()
+
+    def _build_queued(self) -> None:
+        while True:
+            scene_id, step, coordinate = self._queue.get()
+            try:
+                self.scene_problem(scene_id, step, coordinate)
+            except Exception:  # noqa: BLE001 — a step that cannot be built is refused when it is checked
+                pass
 
     def scene_exercises(self, scene_id: str) -> bytes:
         """The exercises of a scene as JSON (in a thread)."""
         if scene_id not in self._exercises:
             document = {"id": scene_id, **exercise_json(derivations.derivation(scene_id))}
             self._exercises[scene_id] = dumps(document)
+            # the student will check these steps next: their problems are built meanwhile
+            self.prepare(scene_id, [(e["step"], e["coordinate"]) for e in document["exercises"]])
         return self._exercises[scene_id]
 
     async def check_scene(
@@ -208,7 +255,11 @@ class Checking:
             assert fu is not None
             kind = fu.kind
         try:
-            parsed = check_answer(answer, kind, pb.kinds)
+            # an equation typed lhs = rhs (an acceleration q_ddot = rhs) is read as the step takes it
+            if follow_up is None:
+                parsed = read_answer(answer, step, pb.coordinate, pb.kinds)[0]
+            else:
+                parsed = check_answer(answer, kind, pb.kinds)
         except CheckError as exc:
             raise refusal(exc) from None
         key = spec_key("scene", scene_id, step, pb.coordinate, answer.strip(), follow_up)
@@ -235,7 +286,7 @@ class Checking:
         if follow_up is None:
             # (a follow-up's names are the question's: the worker reads it against the mistake)
             try:
-                read = check_answer(answer, step, kinds)
+                read = read_answer(answer, step, coordinate, kinds)[0]
             except CheckError as exc:
                 raise refusal(exc) from None
         key = spec_key(user, step, coordinate, answer.strip(), follow_up)

@@ -9,7 +9,8 @@ reads (the browser has no grammar of its own):
   (``app.engine.check.check_answer``), answered at once with the checker's message; this is the one
   reading of the text;
 * in the worker pool, under the checker's hard time limit and fair share: gate 3 (what was read built
-  into SymPy, refused when undefined or nowhere real) and the engine's textbook LaTeX of the result,
+  into SymPy, refused when undefined or nowhere real), then the LaTeX of the text as typed (its structure
+  kept, never evaluated: app/engine/typed_latex.py),
   names written as ``app.engine.names`` writes them.
 
 What an answer may name depends on the step and the system: a scene's names come from its cached
@@ -26,11 +27,11 @@ from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 
-from app.engine import textbook
-from app.engine.check import CheckError, answer_error, check_answer, conserved_momenta, name_kinds
-from app.engine.names import latex
+from app.engine.answer_sides import read_answer
+from app.engine.check import CheckError, answer_error, conserved_momenta, name_kinds
 from app.engine.parse import ExpressionError, Parsed, build
 from app.engine.reality import real_somewhere
+from app.engine.typed_latex import typed_equation, typed_latex
 from app.service import derivations
 from app.service.user_checks import InvalidSystem, spec_key
 from app.service.user_jobs import guarded
@@ -59,7 +60,7 @@ def scene_kinds(scene_id: str) -> dict[str, str]:
     return name_kinds(d.table.names, d.table.parameter_names, tuple(p.name for p in conserved_momenta(d)))
 
 
-def typeset_job(parsed: Parsed) -> bytes:
+def typeset_job(parsed: Parsed, equation: bool = False) -> bytes:
     """Worker job: the answer the web process read (``check_answer``) through gate 3, as the checker builds
     it, then its LaTeX."""
 
@@ -67,10 +68,13 @@ def typeset_job(parsed: Parsed) -> bytes:
         # every name the step allows is a real symbol, as in the derivation's table (the checker's namespace)
         symbols = {name: sp.Symbol(name, real=True) for name in sorted(parsed.names)}
         try:
-            expr = real_somewhere(parsed.text, build(parsed, symbols))
+            real_somewhere(parsed.text, build(parsed, symbols))
         except ExpressionError as exc:
             raise _refusal(answer_error(exc)) from None
-        return {"latex": textbook.latex(expr, {s: latex(name) for name, s in symbols.items()})}
+        # printed as typed, never as SymPy rewrote it: the student checks their own typing
+        if equation:  # typed as lhs = rhs: printed so, whole
+            return {"latex": typed_equation(parsed), "equation": True}
+        return {"latex": typed_latex(parsed)}
 
     return guarded(run)
 
@@ -106,8 +110,8 @@ class Typesetter:
         """``{"latex"}`` of the answer, or InvalidSystem with the checker's message and the offending part."""
         kinds = await asyncio.to_thread(self._scene_kinds, scene) if scene is not None else system_kinds(*names)
         try:
-            parsed = check_answer(text, step, kinds)
+            parsed, equation = read_answer(text, step, None, kinds)
         except CheckError as exc:
             raise _refusal(exc) from None
         key = spec_key("typeset", step, kinds, text.strip())
-        return await self.users.run_job(self.results, key, client, address, self.seconds, typeset_job, parsed)
+        return await self.users.run_job(self.results, key, client, address, self.seconds, typeset_job, parsed, equation)

@@ -41,4 +41,9 @@ class TypesetRequest(BaseModel):
 
 
 class TypesetResponse(BaseModel):
-    latex: str = Field(description="The answer as the checker reads it, in the engine's textbook LaTeX.")
+    latex: str = Field(
+        description="The answer as the checker reads it, printed as it was typed (its structure kept, never evaluated)."
+    )
+    equation: bool = Field(
+        False, description="True when the text is an equation typed lhs = rhs (an equation step): `latex` is all of it."
+    )

@@ -119,7 +119,10 @@ function showVerdict(item, result, answer) {
   } else {
     // a refusal: say what was wrong and mark the offending part of what was typed
     const head = element("p", { class: "verdict-head" });
-    head.append(element("strong", {}, "Not checked. "), result.detail || "The answer could not be read.");
+    // said once: the preview's note of the same text gives way to this
+    head.append(element("strong", {}, "Not checked: "), endOf(wordsOf(result.detail) || "the answer could not be read"));
+    const note = item.querySelector(".practice-preview-note");
+    if (note) note.textContent = "";
     box.append(head);
     if (Number.isInteger(result.start) && Number.isInteger(result.end) && result.end <= answer.length) {
       const typed = element("code", { class: "typed", "aria-label": "What you typed, with the offending part marked" });
@@ -131,6 +134,17 @@ function showVerdict(item, result, answer) {
   const stale = record.verdicts[item.dataset.key]?.answer !== undefined && record.verdicts[item.dataset.key].answer !== input.value;
   if (stale) box.append(element("p", { class: "help" }, `(for your earlier answer: ${record.verdicts[item.dataset.key].answer})`));
   input.setAttribute("aria-invalid", result.verdict ? String(result.verdict === "incorrect") : "true");
+}
+
+/** A refusal's message without the field it is located at ("answer: …", "text: …"), the box being the field,
+ * nor the column of the part at fault, which is marked in what was typed. */
+function wordsOf(detail) {
+  return (detail || "").replace(/^(answer|text): /, "").replace(/ at column \d+/g, "");
+}
+
+/** A message ended with a full stop (its first word left as the message has it). */
+function endOf(text) {
+  return /[.!?]$/.test(text) ? text : `${text}.`;
 }
 
 function sentenceOf(text) {
@@ -193,6 +207,45 @@ function followUpBox(item, followUp) {
   return box;
 }
 
+// ---- panels that give away a step ---------------------------------------------------------------
+
+// A panel's part marked data-gives-away="step …" (the constraint forces' formulas, a predicted ω) is folded
+// while practising, behind a button naming the step it gives away, until that step is checked right or shown.
+const giveaways = new Map(); // step -> its button, per panel
+
+function unfold(step) {
+  for (const el of document.querySelectorAll("[data-gives-away]")) {
+    if (el.dataset.givesAway.split(" ").includes(step)) el.classList.add("unfolded");
+  }
+  for (const [button, steps] of giveaways) {
+    if (steps.includes(step)) {
+      button.remove();
+      giveaways.delete(button);
+    }
+  }
+}
+
+function foldGiveaways(exercises) {
+  const sections = new Set([...document.querySelectorAll("[data-gives-away]")].map((el) => el.closest("section") || el.parentElement));
+  for (const section of sections) {
+    const parts = [...section.querySelectorAll("[data-gives-away]")];
+    const steps = [...new Set(parts.flatMap((el) => el.dataset.givesAway.split(" ")))];
+    // the first step of the list it gives away (an acceleration before an equation it also hints at)
+    const index = exercises.findIndex((e) => steps.includes(e.step));
+    const what = index < 0 ? "gives away the answers" : `gives away step ${index + 1}: ${exercises[index].title}`;
+    const button = element("button", { type: "button", class: "gives-away" }, `Show (${what})`);
+    button.addEventListener("click", () => {
+      for (const el of parts) el.classList.add("unfolded");
+      button.remove();
+      giveaways.delete(button);
+    });
+    (section.querySelector("h3") || section).after(button);
+    giveaways.set(button, index < 0 ? [] : [exercises[index].step]);
+    // a step already checked right (kept from an earlier visit) unfolds what it gives away
+    if (index >= 0 && ["correct", "equivalent"].includes(record.verdicts[keyOf(exercises[index])]?.result?.verdict)) unfold(exercises[index].step);
+  }
+}
+
 // what the typesetter needs besides the text: the scene, or the declared system's names
 const typesetContext = sceneId
   ? { scene: sceneId }
@@ -219,16 +272,32 @@ async function preview(item, signal) {
   if (!reply || signal.aborted) return;
   if (reply.ok) {
     const lhs = item.dataset.lhs;
-    katexInto(math, item.dataset.step === "equation" ? `${reply.answer.latex} = 0` : `${lhs} = ${reply.answer.latex}`, true);
+    // an equation typed lhs = rhs comes back whole
+    const whole = reply.answer.equation ? reply.answer.latex : null;
+    katexInto(math, whole || (item.dataset.step === "equation" ? `${reply.answer.latex} = 0` : `${lhs} = ${reply.answer.latex}`), true);
     note.textContent = "";
     item.dataset.typeset = "read";
   } else if (reply.status === 422) {
-    note.textContent = `Not read yet: ${reply.answer?.detail?.replace(/^answer: /, "") || "the checker could not read this"}.`;
+    // said once: when the check of this same text was refused, its verdict below says why
+    const checked = record.verdicts[item.dataset.key];
+    const said = checked && checked.answer === text && !checked.result?.verdict;
+    note.textContent = said ? "" : `Not read yet: ${endOf(wordsOf(reply.answer?.detail) || "the checker could not read this")}`;
     item.dataset.typeset = "refused";
   }
 }
 
 const TYPESET_DELAY_MS = 150; // after the last keystroke
+
+// what each box takes (app/engine/answer_sides.py): an equation as a textbook writes it, else the right-hand side
+const HOW = {
+  equation: "Type the equation as lhs = rhs, or as one expression equal to zero.",
+  acceleration: "Type {q}_ddot = …, or only the right-hand side.",
+  other: "Type only the right-hand side.",
+};
+
+function howTo(exercise) {
+  return (HOW[exercise.step] || HOW.other).replace("{q}", exercise.coordinate || "q");
+}
 
 function buildItem(exercise, index) {
   const key = keyOf(exercise);
@@ -254,7 +323,7 @@ function buildItem(exercise, index) {
   const rhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
   if (exercise.step === "equation") katexInto(rhs, "= 0");
   row.append(lhs, input, rhs);
-  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `Names you may use: ${exercise.names.join(", ")}, pi.`);
+  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${howTo(exercise)} Names you may use: ${exercise.names.join(", ")}, pi.`);
   const previewBox = element("div", { class: "practice-preview", id: `${id}-preview`, "aria-label": "Your answer, typeset" });
   previewBox.append(element("div", { class: "practice-preview-math" }), element("p", { class: "help practice-preview-note" }));
   const actions = element("div", { class: "practice-actions" });
@@ -276,7 +345,11 @@ function buildItem(exercise, index) {
     typing = new AbortController();
     preview(item, typing.signal);
   };
+  // "= 0" stands beside an equation's box only while the equation is typed as one expression
+  const sides = () => { rhs.hidden = exercise.step === "equation" && input.value.includes("="); };
+  sides();
   input.addEventListener("input", () => {
+    sides();
     record.answers[key] = input.value;
     save(record);
     clearTimeout(timer);
@@ -285,6 +358,7 @@ function buildItem(exercise, index) {
   reveal.addEventListener("click", () => {
     const open = engine.hidden;
     engine.hidden = !open;
+    if (open) unfold(exercise.step);
     reveal.setAttribute("aria-expanded", String(open));
     reveal.textContent = open ? "Hide this step" : "Show this step";
   });
@@ -296,8 +370,16 @@ function buildItem(exercise, index) {
       input.focus();
       return;
     }
+    // a second Enter (or click) while this answer is checked sends nothing
+    if (item.dataset.checking) return;
+    item.dataset.checking = "1";
     check.disabled = true;
+    // the time so far, each second, so a slow check shows it is under way
+    const started = Date.now();
     verdict.textContent = "Checking…";
+    const ticking = setInterval(() => {
+      verdict.textContent = `Checking… ${Math.round((Date.now() - started) / 1000)} s`;
+    }, 1000);
     const body = { step: exercise.step, answer };
     if (exercise.coordinate) body.coordinate = exercise.coordinate;
     if (system) body.system = system;
@@ -306,9 +388,12 @@ function buildItem(exercise, index) {
       record.verdicts[key] = { answer: input.value, result: result || { detail: "No answer from the server." } };
       save(record);
       showVerdict(item, record.verdicts[key].result, input.value);
+      if (["correct", "equivalent"].includes(result?.verdict)) unfold(exercise.step);
     } catch {
       showVerdict(item, { detail: "The server could not be reached; try again." }, answer);
     } finally {
+      clearInterval(ticking);
+      delete item.dataset.checking;
       check.disabled = false;
     }
   });
@@ -327,6 +412,7 @@ async function loadSteps() {
     return;
   }
   list.replaceChildren(...answer.exercises.map((exercise, index) => buildItem(exercise, index)));
+  foldGiveaways(answer.exercises);
   status.textContent = `${answer.exercises.length} steps to derive, in the chapter's order.`;
 }
 

@@ -183,3 +183,60 @@ def test_the_named_slip_its_piece_and_follow_up_at_both_sizes(browser, live_serv
         assert page.locator("#practice .katex-error").count() == 0
     finally:
         context.close()
+
+
+def test_panels_that_give_away_a_step_are_folded_until_it_is_shown(page, artifacts):
+    # student-c, 21: the pendulum's tension and its predicted ω stood in the panels above the practice boxes
+    page.set_viewport_size({"width": 390, "height": 844})
+    page.goto("/scenes/simple-pendulum?practice")
+    page.wait_for_selector(STEP.format("omega_squared"))
+    conventions = page.locator("#panel-constraint-force .conventions")
+    readout = page.locator("#panel-small-oscillations .readout")
+    assert conventions.count() == 1 and conventions.is_hidden() and readout.is_hidden()
+    fold = page.locator("#panel-small-oscillations .gives-away")
+    steps = page.locator(".practice-step h3").all_inner_texts()
+    number = next(k for k, key in enumerate(page.locator(".practice-step").evaluate_all("s => s.map(x => x.dataset.key)")) if key == "omega_squared")
+    assert fold.inner_text() == f"Show (gives away step {number + 1}: {steps[number]})"
+    page.locator("#panel-small-oscillations").screenshot(path=artifacts / "practice-folded-390.png")
+    # shown by the student's choice of the panel's button, or once the step is shown
+    page.locator(STEP.format("omega_squared") + " button[aria-controls]").click()
+    assert readout.evaluate("el => getComputedStyle(el).display") != "none" and fold.count() == 0
+    assert conventions.is_hidden()
+    page.locator("#panel-constraint-force .gives-away").click()
+    assert conventions.is_visible() and "cos" in conventions.inner_text()
+    page.locator("#practice-switch").click()  # practice off: nothing is folded
+    assert page.locator("#panel-constraint-force .conventions").is_visible()
+
+
+def test_an_equation_typed_as_a_textbook_writes_it_is_checked_and_a_refusal_is_said_once(page, artifacts):
+    # student-c, 5: θ̈ = −(g/R) sin θ was refused, and every refusal was shown twice in parser words
+    page.set_viewport_size({"width": 390, "height": 844})
+    page.goto("/scenes/simple-pendulum?practice")
+    key = "equation:theta"
+    page.wait_for_selector(STEP.format(key))
+    assert "lhs = rhs" in page.locator(STEP.format(key) + " .practice-names").inner_text()
+    box = page.locator(STEP.format(key) + " input[name]")
+    box.fill("theta_ddot = -g/R*sin(theta)")
+    page.wait_for_function(f"document.querySelector('{STEP.format(key)}').dataset.typeset === 'read'")
+    assert page.locator(STEP.format(key) + " .practice-row .practice-lhs").last.is_hidden()  # no "= 0" beside it
+    math = page.locator(STEP.format(key) + " .practice-preview-math")
+    page.screenshot(path=artifacts / "practice-equation-390.png")
+    preview = math.evaluate("el => el.querySelector('annotation')?.textContent ?? el.textContent")
+    assert preview == r"\ddot{\theta} = -\frac{g}{R} \sin \theta"  # once, as typed: no '= 0' after it
+    box.press("Enter")
+    box.press("Enter")  # a second Enter while checking sends nothing more
+    verdict = verdict_of(page, key)
+    verdict.locator(".verdict-head").wait_for()
+    assert verdict.get_attribute("data-verdict") == "correct"
+
+    answer(page, "kinetic", "1/2 m R^2 theta_dot^2")
+    refused = verdict_of(page, "kinetic")
+    refused.locator("mark").wait_for()
+    said = refused.locator(".verdict-head").inner_text()
+    assert said.startswith("Not checked: a factor after a quotient") and said.endswith("write 1/2 as (1/2).")
+    assert "column" not in said and "answer:" not in said
+    assert page.locator(STEP.format("kinetic") + " .practice-preview-note").inner_text() == ""  # said once
+    page.locator(STEP.format("kinetic")).screenshot(path=artifacts / "practice-refused-once-390.png")
+    answer(page, "lagrangian", "T - U")
+    verdict_of(page, "lagrangian").locator("mark").wait_for()
+    assert "write T and U out in the coordinates" in verdict_of(page, "lagrangian").inner_text()

@@ -137,3 +137,27 @@ def test_practice_lists_each_step_with_the_engines_answer(client):
     own = client.post("/api/practice", json=SPRING_ROD)
     assert own.status_code == 200, own.text
     assert [e["step"] for e in own.json()["exercises"]][-1] == "omega_squared"
+
+
+def test_an_equation_is_taken_as_a_textbook_writes_it(client):
+    # student-c, 5: θ̈ = −(g/R) sin θ was refused for its '='
+    as_written = check(client, {"step": "equation", "coordinate": "theta", "answer": "theta_ddot = -g/R*sin(theta)"})
+    assert as_written.status_code == 200 and as_written.json()["verdict"] == "correct"
+    acceleration = check(client, {"step": "acceleration", "coordinate": "theta", "answer": "theta_ddot = -g/R*sin(theta)"})
+    assert acceleration.status_code == 200 and acceleration.json()["verdict"] == "correct"
+    wrong = check(client, {"step": "equation", "coordinate": "theta", "answer": "theta_ddot = g/R*sin(theta)"}).json()
+    assert wrong["verdict"] == "incorrect"
+    # a declared system's equation too
+    answer = "m*r_ddot = m*w**2*r - k*(r - a)"
+    system = check(client, {"system": SPRING_ROD, "step": "equation", "coordinate": "r", "answer": answer}, scene=None)
+    assert system.status_code == 200 and system.json()["verdict"] == "correct"
+
+
+def test_an_equals_sign_where_the_box_names_the_left_side_is_refused_plainly(client):
+    refused = check(client, {"step": "kinetic", "answer": "T = m*R**2*theta_dot**2/2"})
+    assert refused.status_code == 422
+    body = refused.json()
+    assert body["detail"] == "answer: type only the right-hand side: the box already has the left-hand side and its '='"
+    assert (body["start"], body["end"]) == (2, 3)
+    lagrangian = check(client, {"step": "lagrangian", "answer": "T - U"}).json()
+    assert "write T and U out in the coordinates" in lagrangian["detail"] and lagrangian["part"] == "T"

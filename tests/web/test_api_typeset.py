@@ -43,7 +43,7 @@ def test_a_refusal_is_word_for_word_the_checkers(client):
 def test_a_declared_systems_answer_is_read_with_its_names(client):
     context = {"step": "kinetic", "coordinates": ["x"], "parameters": ["m", "k"]}
     right = typeset(client, "m*x_dot**2/2", **context)
-    assert right.status_code == 200 and right.json() == {"latex": r"\frac{1}{2} m \dot{x}^{2}"}
+    assert right.status_code == 200 and right.json() == {"latex": r"\frac{m \dot{x}^{2}}{2}"}
     wrong = typeset(client, "k*x_dot**2/2", **{**context, "step": "potential"}).json()
     assert wrong["detail"].startswith("answer: U depends on positions only") and wrong["part"] == "x_dot", wrong
 

@@ -11,8 +11,9 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from app.engine.names import latex
-from app.engine.textbook import latex as textbook_latex
+from app.engine.check import check_answer
+from app.engine.typed_latex import typed_latex
+from app.service.typesetting import system_kinds
 
 DATA = json.loads((Path(__file__).parents[1] / "data" / "typed_expressions.json").read_text())
 COORDINATES, PARAMETERS = DATA["coordinates"], DATA["parameters"]
@@ -66,10 +67,10 @@ def test_checker_preview_and_playground_read_alike(client, case):
             assert len({r[2:] for r in refusals}) == 1, refusals
         return
     expr = meant(case["reads"])
-    # the preview: the engine's LaTeX of what it read
     assert preview.status_code == 200, preview.text
-    names = {s: latex(n) for n, s in SYMBOLS.items()}
-    assert preview.json()["latex"] == textbook_latex(expr, names)
+    # the preview: what it read, printed as typed (app/engine/typed_latex.py), never rewritten
+    kinds = system_kinds(tuple(COORDINATES), tuple(PARAMETERS))
+    assert preview.json()["latex"] == typed_latex(check_answer(text, "lagrangian", kinds))
     # the checker: its verdict on L, and the difference it shows, give back what it read
     assert checked.status_code == 200, checked.text
     # the checker: the difference it shows (answer − L, less an additive constant, which L may carry) gives

@@ -1,0 +1,47 @@
+"""An answer typed with '=' (app/engine/answer_sides.py): an equation as lhs = rhs, elsewhere refused plainly."""
+
+from __future__ import annotations
+
+import pytest
+
+from app.engine.answer_sides import read_answer
+from app.engine.check import CheckError, name_kinds
+
+KINDS = name_kinds(("theta",), ("m", "g", "R"), ())
+
+
+def test_an_equation_typed_lhs_equals_rhs_is_lhs_minus_rhs():
+    parsed, equation = read_answer("theta_ddot = -g/R*sin(theta)", "equation", "theta", KINDS)
+    assert equation and parsed.text == "theta_ddot  - ( -g/R*sin(theta))"
+
+
+def test_an_acceleration_typed_with_its_name_is_its_right_hand_side():
+    parsed, equation = read_answer("theta_ddot = -g/R*sin(theta)", "acceleration", "theta", KINDS)
+    assert not equation and parsed.text.strip() == "-g/R*sin(theta)"
+
+
+@pytest.mark.parametrize(
+    ("text", "step", "says", "marked"),
+    [
+        ("T = m*R**2*theta_dot**2/2", "kinetic", "type only the right-hand side", "="),
+        ("m*g = 2", "lagrangian", "type only the right-hand side", "="),
+        ("R*theta_ddot = -g*sin(theta)", "acceleration", "the left of '=' must be the acceleration theta_ddot", "R*theta_ddot "),
+        ("a = b = c", "equation", "write one '=' only", "="),
+        ("theta_ddot = ", "equation", "one side of '=' is empty", "="),
+        # a side's refusal quotes what was typed, at its columns, without the side's own column
+        ("theta_ddot = -g*sin(theta", "equation", "the '(' is never closed", " -g*sin(theta"),
+        ("T - U", "lagrangian", "write T and U out in the coordinates", "T"),
+    ],
+)
+def test_what_cannot_be_read_is_said_plainly(text, step, says, marked):
+    with pytest.raises(CheckError) as refused:
+        read_answer(text, step, "theta", KINDS)
+    error = refused.value
+    assert says in str(error) and "column" not in str(error)
+    assert text[error.start : error.end] == marked
+
+
+def test_half_typed_without_brackets_is_told_how_to_type_it():
+    with pytest.raises(CheckError) as refused:
+        read_answer("1/2 m R^2 theta_dot^2", "kinetic", None, KINDS)
+    assert str(refused.value).endswith("write 1/2 as (1/2)") and "column" not in str(refused.value)
