@@ -50,7 +50,7 @@ def piece_box(
         if not whole or equal(values(missing**2 if fu.relation == "magnitude" else missing, groups),
                               values(fu.truth**2 if fu.relation == "magnitude" else fu.truth, groups)):  # fmt: skip
             return ""
-        return left_out + tex(missing)
+        return left_out + tex(sp.factor_terms(missing))
     if mistake.piece is None:
         return ""
     # the piece at the answer's scale: an equation divided through by m₂ l₂ shows its terms divided so too
@@ -58,7 +58,7 @@ def piece_box(
     if same(piece, d):
         return ""
     if same(-piece, d):
-        return left_out + tex(piece)
+        return left_out + tex(sp.factor_terms(piece))
     if piece in sp.Add.make_args(sp.expand(scale * truth)):
         return r"\text{the correct term: }" + tex(piece)
     return ""
