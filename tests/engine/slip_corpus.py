@@ -297,6 +297,8 @@ SLIPS = [
     # ---- the answer of a limit (review 41, 11): a body infinitely heavy, as if held still
     ("movable-incline", "acceleration", "D", "g*sin(alpha)", r"wedge.*held still|M → ∞"),
     ("cart-pendulum", "acceleration", "phi", "-g*sin(phi)/l", r"cart.*held still|M → ∞"),
+    # the upper bob swinging as a simple pendulum: the lower bob's pull left out, as if it had no mass
+    ("double-pendulum", "acceleration", "theta1", "-g*sin(theta1)/l1", r"lower bob.*no mass|m₂ → 0"),
 ]
 
 # Correct answers in unusual forms: every one must be accepted ("correct", or "equivalent" where the
