@@ -70,7 +70,10 @@ def test_corpus(system, step, coordinate, answer, verdict, difference, hint):
     assert result["verdict"] == verdict, result
     if hint is not None and hint.startswith("key:"):
         assert result["mistake"]["key"] == hint.removeprefix("key:"), result
-        assert result["hint"] not in POINTERS.values() and result["mistake"]["latex"]
+        assert result["hint"] not in POINTERS.values()
+        # the piece under the name says what it is, or is not shown where the difference line says it all
+        tex = result["mistake"]["latex"]
+        assert tex == "" or tex.startswith(r"\text{"), tex
     elif hint in HINTS:
         # a rule's hint, with the system's own reason added where it has one (h ≠ E)
         assert result["hint"].startswith(HINTS[hint]) and result["mistake"]["key"] == hint, result
