@@ -229,8 +229,9 @@ def test_typical_mistakes_get_their_specific_diagnosis(system, step, coordinate,
     result = judge(problem(derivation(system), step, coordinate), answer)
     assert result["verdict"] == "incorrect", result
     assert result["mistake"] is not None and result["mistake"]["key"] == key, result
-    # never only the step's general rule: the hint names this mistake, and the piece is typeset
-    assert result["hint"] not in POINTERS.values() and result["mistake"]["latex"] and result["mistake"]["name"]
+    # never only the step's general rule: the hint names this mistake, and a piece typeset says what it is
+    assert result["hint"] not in POINTERS.values() and result["mistake"]["name"]
+    assert result["mistake"]["latex"] == "" or result["mistake"]["latex"].startswith(r"\text{"), result["mistake"]
     assert "**" not in result["hint"] and "*" not in result["mistake"]["name"]
 
 
