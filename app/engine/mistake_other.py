@@ -125,5 +125,3 @@ def _at(expr: sp.Expr, M: sp.Symbol, to: sp.Expr, allow_zero: bool = False) -> s
     if limit is None or (limit == 0 and not allow_zero) or limit.has(M):
         return None
     return limit
-
-

@@ -21,7 +21,9 @@ def test_no_message_says_the_engines_answer():
 
 
 def test_an_equation_divided_through_says_it_is_the_correct_one_multiplied():
-    result = judge(step_problem("movable-incline", "equation", "D"), "-(m*D_ddot + m*X_ddot*cos(alpha) - m*g*sin(alpha))/m")
+    result = judge(
+        step_problem("movable-incline", "equation", "D"), "-(m*D_ddot + m*X_ddot*cos(alpha) - m*g*sin(alpha))/m"
+    )
     assert result["message"] == "Correct: your equation is the correct one multiplied by −1/m.", result["message"]
 
 
