@@ -68,6 +68,7 @@ DIFFERENCE_WORK = 10_000  # 0.5 s at most: a difference's cancelling and trigono
 PARTS_WORK = 2_000  # 0.1 s: comparing an unmatched answer part by part
 FACTOR_WORK = 4_000  # 0.2 s: naming the factor by which an answer is off
 ANSWER_SLIP_WORK = 4_000  # 0.2 s: a slip read from the answer (a square left out, an equation linearised)
+PIECE_WORK = 2_000  # 0.1 s: what the piece under a named mistake is (the correct term, what is left out)
 
 # The service's pacing (wall-clock seconds)
 RUN_SECONDS = 2.0  # one run of a work-precision sweep; slower tolerances of that method are skipped

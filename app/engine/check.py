@@ -73,13 +73,14 @@ from app.engine.compare import (
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json
 from app.engine.dimensions import dimension, mismatch
 from app.engine.mistake_answer import linearised, missing_square
+from app.engine.mistake_box import piece_box
 from app.engine.mistake_families import Mistake
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, POINTERS
 from app.engine.parse import Parsed
 from app.engine.report import Printer, display
 from app.engine.textbook import unicode_text
 from app.engine.work import WorkExceeded
-from app.limits import ANSWER_SLIP_WORK, DIFFERENCE_WORK, FACTOR_WORK, PARTS_WORK
+from app.limits import ANSWER_SLIP_WORK, DIFFERENCE_WORK, FACTOR_WORK, PARTS_WORK, PIECE_WORK
 from app.limits import CHECK_DISPLAY_WORK as DISPLAY_WORK
 
 __all__ = [
@@ -132,7 +133,7 @@ def _verdict(
 
 
 def _noun(pb: Problem) -> str:
-    return f"the engine's {pb.label}" + (f" (at {pb.where[0]})" if pb.where else "")
+    return f"the correct {pb.label}" + (f" (at {pb.where[0]})" if pb.where else "")
 
 
 _VALUES: OrderedDict[tuple, Values] = OrderedDict()
@@ -167,7 +168,7 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
             same = symbolically_zero(answer - truth) is True
         if same:
             at = f" at {pb.where[i]}" if pb.where else ""
-            return _verdict("correct", f"Correct: this is the engine's {pb.label}{at}.")
+            return _verdict("correct", f"Correct: this is the {pb.label}{at}.")
 
     for truth, b in numeric:
         if pb.relation == "constant" and differ_by_constant(a, b):
@@ -180,12 +181,12 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
 
     truth, b = results[0]
     with display_budget(DISPLAY_WORK):
-        difference, how = _difference(pb, answer, truth)
+        difference, how, scale = _difference(pb, answer, truth)
         # the mistake only: what cancels identically gone, trigonometry recombined; where that did not apply
         # (a long difference, an acceleration's), the display's own simplification
         only = mistake_only(difference, DIFFERENCE_WORK)
         shown = printer.pair(display(difference) if only is difference else only)
-    message = f"Incorrect: this is not {_noun(pb)}{how}. The difference (yours − the engine's) is shown."
+    message = f"Incorrect: this is not {_noun(pb)}{how}. The difference (yours − correct) is shown."
     # terms whose units disagree are named first, at any step: no algebra explains them; then the catalogue,
     # then a whole of the wrong units
     found = _units(pb, answer, None)
@@ -217,15 +218,23 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
             own = sp.factor_terms(own)
             if own != 0 and own.free_symbols and sp.count_ops(own) <= sp.count_ops(sp.sympify(shown["sympy"])):
                 shown = printer.pair(own)
+        whole = _whole_mistake(pb, a, mistake)
+        # the piece under the name: labelled, at the answer's scale, or nothing where the difference says it
+        box = _budgeted(
+            lambda: piece_box(mistake, difference, truth, scale, pb.groups, pb.relation,
+                              short_label(pb.step, pb.label), whole, printer.tex),
+            "",
+            PIECE_WORK,
+        )  # fmt: skip
         return _verdict(
             "incorrect",
             message,
             shown,
             hint,
-            mistake=mistake_json(mistake, printer.tex, shown["latex"]),
+            mistake={**mistake_json(mistake, printer.tex), "latex": box},
             # "everything else is right" only where the answer is this mistake and nothing more (never for a
             # whole of the wrong units: a second slip may hide behind it)
-            partial=partial_json(mistake, short_label(pb.step, pb.label)) if _whole_mistake(pb, a, mistake) else None,
+            partial=partial_json(mistake, short_label(pb.step, pb.label)) if whole else None,
             follow_up=follow_up_json(mistake, allowed_names(mistake.follow_up.kind, pb.kinds))
             if mistake.follow_up
             else None,
@@ -241,8 +250,8 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
 
 def _whole_mistake(pb: Problem, a: Values, mistake: Mistake) -> bool:
     """Whether the answer is the mistake's own wrong answer (up to the step's accepted constant or factor)."""
-    if mistake.family == "units" or mistake.expr is None:
-        return False
+    if mistake.family in ("units", "other_coordinate", "limit") or mistake.expr is None:
+        return False  # (another question's answer: nothing "else" in it is right or wrong)
     v = _known(mistake.expr, pb.groups)
     return (
         equal(a, v)
@@ -320,8 +329,9 @@ def judge_follow_up(pb: Problem, key: str, text: Parsed | str) -> dict[str, Any]
     return _verdict(
         "incorrect",
         f"Not yet: that is not the answer to “{fu.question}”",
-        hint=f"Think of where it comes from: {mistake.where}.",
-        mistake=mistake_json(mistake, printer.tex),
+        # a new hint, not the first one again: the concrete one where the question has it
+        hint=fu.hint or f"Work it out on its own, from its definition, then compare it term by term: {fu.question}",
+        mistake={**mistake_json(mistake, printer.tex), "latex": ""},  # (the piece is the question's answer)
         follow_up=follow_up_json(mistake, allowed_names(fu.kind, pb.kinds)),
     )
 
@@ -335,7 +345,7 @@ def _constant_message(pb: Problem, difference: sp.Expr) -> str:
         "lagrangian": "a constant drops out of every Euler–Lagrange equation",
         "hamiltonian": "the zero of U moved, which changes no equation of motion",
     }[pb.step]
-    return f"Equivalent: your {pb.label} is the engine's plus {amount}: {why}."
+    return f"Equivalent: your {pb.label} is the correct one plus {amount}: {why}."
 
 
 def _factor_message(pb: Problem, answer: sp.Expr, truth: sp.Expr, constant: bool) -> str:
@@ -343,31 +353,33 @@ def _factor_message(pb: Problem, answer: sp.Expr, truth: sp.Expr, constant: bool
     rates = set(pb.groups.rates)
     named = f"{unicode_text(factor)}" if factor is not None and not (factor.free_symbols & rates) else "a factor"
     if constant:
-        return (
-            f"Correct: this is the engine's {pb.label} multiplied by {named}, "
-            "which is not zero, so it is the same equation."
-        )
+        # a nonzero constant factor changes no solution: the same equation
+        return f"Correct: your equation is the correct one multiplied by {named}."
     return (
-        f"Equivalent: your equation is the engine's {pb.label} multiplied by {named}, which depends on the "
+        f"Equivalent: your equation is the correct one multiplied by {named}, which depends on the "
         "coordinates: the same equation wherever that factor is not zero."
     )
 
 
-def _difference(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[sp.Expr, str]:
-    """answer − truth, less an accepted constant, or against the truth rescaled to the answer's q̈ coefficient."""
+def _difference(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[sp.Expr, str, sp.Expr]:
+    """answer − truth, less an accepted constant, or against the truth rescaled to the answer's q̈ coefficient;
+    with the words saying so and the scale (1 unless rescaled)."""
+    one = sp.Integer(1)
     if pb.relation == "constant":
-        varying, _ = without_constant(answer - truth, pb.groups.dynamic())
+        varying, constant = without_constant(answer - truth, pb.groups.dynamic())
         if varying != 0:
-            return varying, " (a constant, which would only move the zero of U, is left out)"
-        return answer - truth, ""
+            # the clause only where a constant was in fact taken out of the difference
+            said = " (a constant, which would only move the zero of U, is left out)" if constant != 0 else ""
+            return varying, said, one
+        return answer - truth, "", one
     if pb.relation == "factor" and pb.acceleration is not None:
         mine, theirs = sp.diff(answer, pb.acceleration), sp.diff(truth, pb.acceleration)
         if mine != 0 and theirs != 0:
             scale = _budgeted(lambda: sp.cancel(mine / theirs), None, FACTOR_WORK)
             if scale is not None and scale != 1 and not (scale.free_symbols & set(pb.groups.rates)):
                 how = f", even after scaling it by {unicode_text(scale)} to match your coefficient of the acceleration"
-                return answer - scale * truth, how
-    return answer - truth, ""
+                return answer - scale * truth, how, scale
+    return answer - truth, "", one
 
 
 def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str:

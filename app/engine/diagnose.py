@@ -28,6 +28,7 @@ from app.engine.derive import Derivation
 from app.engine.dimensions import mismatch, system_dimensions
 from app.engine.mistake_equations import generated
 from app.engine.mistake_families import Mistake, monomial_words, spoken
+from app.engine.mistake_other import held_still, other_coordinates
 from app.engine.mistake_pieces import effective_terms, piece_mistakes, travelled
 from app.engine.mistakes import OMEGA_HINT, RULES
 
@@ -54,6 +55,8 @@ _OPENINGS = {
     "rigid": "Your {what} has {name}",
     "factor_left_out": "Your {what} has {name}",
     "units": "Your {what} has {name}",
+    "other_coordinate": "Your {what} is {name}",
+    "limit": "Your {what} is {name}",
 }
 
 
@@ -114,7 +117,9 @@ def catalogue(
     # the specific ones first, then the rules every system invites, then the truth's own pieces changed one at a
     # time, then a term's sign (which for a short expression is also the sign of everything else, and would hide
     # a rule's better name)
-    found = [x for x in made if x[0].family not in GENERIC]
+    # another question's right answer (another coordinate's, a body held still) is named as that, before all
+    found = [(m, sentence(m, label)) for m in (*other_coordinates(d, step, k), *held_still(d, step, truth))]
+    found += [x for x in made if x[0].family not in GENERIC]
     found += [x for x in carried if x[0].key.startswith(f"{step}.rigid")]
     found += _legacy(d, step, k, truth)
     found += [x for x in carried if not x[0].key.startswith(f"{step}.rigid")]
@@ -266,9 +271,9 @@ def agreement(answer: sp.Expr, truth: sp.Expr, groups: Groups, step: str) -> dic
         b = values(theirs.get(monomial, zero), groups)
         (agree if equal(a, b) else differ).append(monomial_words(monomial))
     if not agree:
-        return {"message": "No part of your answer agrees with the engine's yet.", "agree": [], "differ": differ}
+        return {"message": "No part of your answer agrees with the correct one yet.", "agree": [], "differ": differ}
     return {
-        "message": f"Part by part: {', '.join(agree)} agree with the engine's; {', '.join(differ)} do not.",
+        "message": f"Part by part: {', '.join(agree)} agree with the correct ones; {', '.join(differ)} do not.",
         "agree": agree,
         "differ": differ,
     }

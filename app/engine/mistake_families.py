@@ -50,6 +50,7 @@ class FollowUp:
     truth: sp.Expr
     relation: str  # "exact", or "magnitude" (a speed or a stretch: its sign is the student's choice)
     answer_text: str  # the answer in words, for the verdict
+    hint: str = ""  # a second, more concrete hint, for a wrong answer to the question
 
 
 @dataclass(frozen=True)
@@ -184,6 +185,24 @@ def _body(d: Derivation, i: int) -> str:
     return label or f"particle {i + 1}"
 
 
+def _moved_alone(d: Derivation, i: int, body: str, q: sp.Symbol, qd: sp.Symbol, r: tuple, dr: tuple) -> str:
+    """A concrete second hint for "the speed when only q changes": the body's position, its velocity with q
+    alone changing, and the body that carries it along, where one moves with q exactly as it does."""
+    position = ", ".join(spoken(c) for c in r)
+    velocity = ", ".join(spoken(x * qd) for x in dr)
+    carrier = ""
+    for j, other in enumerate(d.mechanics.positions):
+        # another body whose position moves with q alone, and exactly as this one's part does: it carries it
+        moves = {s for c in other for s in c.free_symbols if s in d.table.q}
+        if j != i and moves == {q} and tuple(sp.diff(c, q) for c in other) == dr:
+            carrier = f"The {_body(d, j)} carries the {body} along with it. "
+            break
+    return (
+        f"{carrier}Hold every other coordinate fixed and change {unicode(q.name)} alone: the {body} at ({position}) "
+        f"then moves with the velocity ({velocity}); the speed is the size of that velocity."
+    )
+
+
 def kinetic_mistakes(d: Derivation) -> Iterator[Mistake]:
     m, table = d.mechanics, d.table
     if m.T is None:
@@ -217,7 +236,7 @@ def kinetic_mistakes(d: Derivation) -> Iterator[Mistake]:
                     speed,
                     f"the {body}'s position depends on {unicode(q.name)}, so the {body} also moves when "
                     f"{unicode(q.name)} changes: its velocity has the part (∂r/∂{unicode(q.name)}) "
-                    f"{unicode(qd.name)}, of size {shown}",
+                    f"{unicode(qd.name)}",
                     sp.expand(wrong),
                     follow_up=FollowUp(
                         f"What is the speed of the {body} when only {unicode(q.name)} changes "
@@ -226,6 +245,7 @@ def kinetic_mistakes(d: Derivation) -> Iterator[Mistake]:
                         speed,
                         "magnitude",
                         shown,
+                        _moved_alone(d, i, body, q, qd, r, dr),
                     ),
                 )
             if any(moving):
@@ -243,7 +263,7 @@ def kinetic_mistakes(d: Derivation) -> Iterator[Mistake]:
                     f"the part of the {body}'s velocity that comes from the moving constraint",
                     speed,
                     f"the {body}'s position depends on t itself (the constraint moves), so its velocity has the "
-                    f"part ∂r/∂t, of size {shown}, even when no coordinate changes",
+                    "part ∂r/∂t, even when no coordinate changes",
                     sp.expand(wrong),
                     follow_up=FollowUp(
                         f"How fast does the {body} move when every coordinate is held fixed?",
@@ -251,6 +271,9 @@ def kinetic_mistakes(d: Derivation) -> Iterator[Mistake]:
                         speed,
                         "magnitude",
                         shown,
+                        f"Hold every coordinate fixed and differentiate the {body}'s position "
+                        f"({', '.join(spoken(c) for c in r)}) with respect to t alone; the speed is the size of "
+                        "that velocity.",
                     ),
                 )
             yield from _axes_left_out(d, i, body, key, mass, v)

@@ -81,6 +81,23 @@ def _is_force_of_u(d: Derivation, step: str, p: sp.Expr) -> bool:
     return step == "equation" and d.mechanics.U is not None and not p.has(*rates) and p != 0
 
 
+def _derivative_why(p: sp.Expr, coordinate: str) -> str:
+    """Where a swapped sine in an equation's velocity-free term comes from: ∂L/∂q, differentiated."""
+    trig = sorted(p.atoms(sp.sin, sp.cos), key=sp.default_sort_key)[0]
+    x = trig.args[0]
+    angle = spoken(x) if x.is_Symbol else f"({spoken(x)})"
+    # d(cos x)/dx = −sin x and d(sin x)/dx = cos x: the truth's sine came from a cosine, and its cosine from a sine
+    rule = (
+        f"the derivative of cos {angle} is −sin {angle}"
+        if isinstance(trig, sp.sin)
+        else f"the derivative of sin {angle} is cos {angle}"
+    )
+    return (
+        f"the term comes from ∂L/∂{unicode(coordinate)}, and {rule}; with T and U right, the slip is in that "
+        "derivative, not in the positions"
+    )
+
+
 def _label(step: str) -> str:
     return {"kinetic": "T", "potential": "U", "lagrangian": "L", "hamiltonian": "h"}.get(step, "")
 
@@ -131,15 +148,20 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
             yield from _factors(p, truth, base, key, rates, d.table.params)
         if p.has(sp.sin, sp.cos):
             swapped = _swap(p)
+            # in an equation, a velocity-free term is a derivative of U (or of T by q): there a swap is a slip of
+            # differentiating (d(−cos θ)/dθ = sin θ taken as cos θ), the positions being checked in T and U
+            why = (
+                _derivative_why(p, d.table.names[k])
+                if step in ("equation", "acceleration") and k is not None and not p.has(*rates)
+                else "check which component of the position has the sine and which the cosine, at a small angle"
+            )
             yield Mistake(
                 f"{base}.sin_cos.{key}", "sin_cos", f"sin and cos swapped in {shown} (you have {spoken(swapped)})",
-                p, "check which component of the position has the sine and which the cosine, at a small angle",
-                truth - p + swapped,
+                p, why, truth - p + swapped,
             )  # fmt: skip
             yield Mistake(
                 f"{base}.sin_cos_height.{key}", "sin_cos", f"{spoken(-swapped)} in place of {shown}: sin and cos "
-                "swapped", p, "check which component of the position has the sine and which the cosine, at a small "
-                "angle", truth - p - swapped,
+                "swapped", p, why, truth - p - swapped,
             )  # fmt: skip
     yield from _whole(d, step, truth, base)
     for s, group in _groups(truth, d.table.params):

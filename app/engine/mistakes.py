@@ -178,7 +178,7 @@ RULES: tuple[Rule, ...] = (
     Rule(
         "missing_half",
         ("kinetic", "lagrangian"),
-        "Your T is twice the engine's: the kinetic energy of each mass is ½ m v², and the factor ½ seems to be missing.",
+        "Your T is twice the correct T: the kinetic energy of each mass is ½ m v², and the factor ½ seems to be missing.",
         _times_two,
         "the ½ of ½ m v² left out",
     ),
@@ -269,6 +269,6 @@ MISSING_FACTOR_HINT = (
     "including ones that depend on the coordinates."
 )
 CONSTANT_FACTOR_HINT = (
-    "The engine's momentum is yours times {factor}: p = ∂L/∂q̇ keeps every factor that multiplies the velocity in L "
+    "The correct momentum is yours times {factor}: p = ∂L/∂q̇ keeps every factor that multiplies the velocity in L "
     "(and the derivative of ½ a q̇² is a q̇, with no ½ left)."
 )

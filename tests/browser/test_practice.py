@@ -117,7 +117,7 @@ def test_a_named_mistake_its_piece_and_its_follow_up(page, artifacts):
     mistake = verdict.locator(".verdict-mistake")
     assert mistake.get_attribute("data-key") == "kinetic.velocity_part.ball.phi"
     assert "the part of the ball's velocity that comes from φ̇" in mistake.inner_text()
-    # the missing piece, R sin θ φ̇, typeset
+    # what T leaves out, ½ m R² sin²θ φ̇², labelled and typeset (not R sin θ φ̇, the follow-up's answer)
     piece = mistake.locator(".verdict-piece annotation").text_content()
     assert "\\dot{\\varphi}" in piece and "\\sin" in piece and mistake.locator(".verdict-piece .katex").is_visible()
     assert "Everything else in your T is right." in verdict.locator(".verdict-partial").inner_text()

@@ -74,7 +74,9 @@ SLIPS = [
     ("simple-pendulum", "kinetic", None, "R**2*theta_dot**2/2", r"divid|mass|\bm\b"),
     ("simple-pendulum", "kinetic", None, "m*R*theta_dot**2/2", UNITS_WORDS + r"|R²"),
     ("simple-pendulum", "potential", None, "m*g*R*sin(theta)", SWAP),
-    ("simple-pendulum", "equation", "theta", "m*R**2*theta_ddot + m*g*R*cos(theta)", SWAP),
+    # d(−cos θ)/dθ taken as cos θ, with T and U right: the derivative is named, not the positions (review 41, 9)
+    ("simple-pendulum", "equation", "theta", "m*R**2*theta_ddot + m*g*R*cos(theta)", r"derivative of cos θ is −sin θ"),
+    ("simple-pendulum", "acceleration", "theta", "-g*cos(theta)/R", r"derivative of cos θ is −sin θ"),
     ("simple-pendulum", "omega_squared", None, "(m + g)/R", UNITS_WORDS),
     ("simple-pendulum", "omega_squared", None, "R/g", UNITS_WORDS + r"|upside|invert"),
     ("simple-pendulum", "equation", "theta", "m*R**2*theta_ddot + m*g*sin(theta)", UNITS_WORDS),
@@ -282,6 +284,21 @@ SLIPS = [
     ("rolling-disc", "omega_squared", None, "k/M", r"spin|roll|rotation|moment of inertia|effective mass"),
     ("rolling-disc", "equation", "x", "3*M*x_ddot/2 + k*x + M*g*sin(alpha)", SIGN),
     ("rolling-disc", "potential", None, "k*x**2/2 - M*g*x*cos(alpha)", SWAP),
+    # ---- an answer that is another coordinate's (review 41, 15): named as that, with the velocity used
+    (
+        "double-pendulum",
+        "momentum",
+        "theta2",
+        "(m1 + m2)*l1**2*theta1_dot + m2*l1*l2*theta2_dot*cos(theta1 - theta2)",
+        r"conjugate to θ₁.*θ̇₁",
+    ),
+    ("movable-incline", "momentum", "D", "(M + m)*X_dot + m*D_dot*cos(alpha)", r"conjugate to X.*Ẋ"),
+    ("cart-pendulum", "momentum", "x", "m*l**2*phi_dot + m*l*x_dot*cos(phi)", r"conjugate to φ.*φ̇"),
+    # ---- the answer of a limit (review 41, 11): a body infinitely heavy, as if held still
+    ("movable-incline", "acceleration", "D", "g*sin(alpha)", r"wedge.*held still|M → ∞"),
+    ("cart-pendulum", "acceleration", "phi", "-g*sin(phi)/l", r"cart.*held still|M → ∞"),
+    # the upper bob swinging as a simple pendulum: the lower bob's pull left out, as if it had no mass
+    ("double-pendulum", "acceleration", "theta1", "-g*sin(theta1)/l1", r"lower bob.*no mass|m₂ → 0"),
 ]
 
 # Correct answers in unusual forms: every one must be accepted ("correct", or "equivalent" where the

@@ -1,0 +1,80 @@
+"""What a student reads after a check (review 41, items 6, 10 and 19): the piece under "The mistake:" says
+what it is and is in the scale of the answer, a wrong follow-up gets a new hint, and no sentence speaks of
+"the engine's" answer or of a constant where none was left out."""
+
+from __future__ import annotations
+
+from app.engine.check import judge, judge_follow_up
+from tests.engine.test_check_slips import step_problem
+
+INCLINE_T = "M*X_dot**2/2 + m*D_dot**2/2"
+
+
+def test_no_message_says_the_engines_answer():
+    wrong = judge(step_problem("simple-pendulum", "kinetic", None), "m*R**2*theta_dot**2")
+    right = judge(step_problem("simple-pendulum", "kinetic", None), "m*R**2*theta_dot**2/2")
+    shifted = judge(step_problem("simple-pendulum", "potential", None), "-m*g*R*cos(theta)")
+    for result in (wrong, right, shifted):
+        assert "engine" not in result["message"] + (result["hint"] or ""), result
+    assert wrong["message"].startswith("Incorrect: this is not the correct kinetic energy T.")
+    assert "(yours − correct)" in wrong["message"]
+
+
+def test_an_equation_divided_through_says_it_is_the_correct_one_multiplied():
+    result = judge(
+        step_problem("movable-incline", "equation", "D"), "-(m*D_ddot + m*X_ddot*cos(alpha) - m*g*sin(alpha))/m"
+    )
+    assert result["message"] == "Correct: your equation is the correct one multiplied by −1/m.", result["message"]
+
+
+def test_the_constant_clause_only_where_a_constant_was_left_out():
+    # L = T − m g D sin α: U's sign reversed, no constant anywhere
+    no_constant = judge(
+        step_problem("movable-incline", "lagrangian", None),
+        "M*X_dot**2/2 + m*(X_dot**2 + D_dot**2 + 2*X_dot*D_dot*cos(alpha))/2 - m*g*D*sin(alpha)",
+    )
+    assert "constant" not in no_constant["message"], no_constant["message"]
+    # U = m g R cos θ against m g R (1 − cos θ): the constant −m g R is left out of the difference, and said so
+    with_constant = judge(step_problem("simple-pendulum", "potential", None), "m*g*R*cos(theta)")
+    assert "a constant" in with_constant["message"] and "left out" in with_constant["message"]
+
+
+def test_the_piece_under_the_mistake_is_labelled_or_not_repeated():
+    # the sign of ∂L/∂q: the piece would be the difference again, at another scale; one formula only
+    sign = judge(step_problem("simple-pendulum", "equation", "theta"), "theta_ddot - g/R*sin(theta)")
+    assert sign["mistake"]["latex"] == "" and sign["difference"]["latex"]
+    # sign of U: the piece 2 m g R cos θ − 2 m g R would repeat the difference with its constant
+    u = judge(step_problem("simple-pendulum", "potential", None), "m*g*R*cos(theta)")
+    assert u["mistake"]["latex"] == ""
+    # a term left out of an equation divided through: the term at the student's scale, labelled
+    left_out = judge(
+        step_problem("double-pendulum", "equation", "theta2"),
+        "l2*theta2_ddot + l1*cos(theta1 - theta2)*theta1_ddot + g*sin(theta2)",
+    )
+    tex = left_out["mistake"]["latex"]
+    assert tex.startswith(r"\text{what your equation for") and "leaves out" in tex, tex
+    assert "m_{2}" not in tex, tex  # in the scale of the answer (divided by m₂ l₂), not the engine's
+    # a slip in a term of the right scale: the correct term, labelled
+    swapped = judge(step_problem("simple-pendulum", "potential", None), "m*g*R*sin(theta)")
+    assert swapped["mistake"]["latex"].startswith(r"\text{the correct term: }"), swapped["mistake"]["latex"]
+
+
+def test_the_piece_and_why_do_not_give_the_follow_ups_answer_away():
+    result = judge(step_problem("movable-incline", "kinetic", None), INCLINE_T)
+    assert result["follow_up"] is not None
+    assert "of size" not in result["mistake"]["where"] and "of size" not in result["hint"]
+    tex = result["mistake"]["latex"]
+    assert tex.startswith(r"\text{what your T leaves out: }") and tex != r"\text{what your T leaves out: }\dot{X}"
+
+
+def test_a_wrong_follow_up_gets_a_new_and_concrete_hint():
+    pb = step_problem("movable-incline", "kinetic", None)
+    key = judge(pb, INCLINE_T)["follow_up"]["key"]
+    wrong = judge_follow_up(pb, key, "X_dot*cos(alpha)")
+    assert wrong["verdict"] == "incorrect"
+    first = judge(pb, INCLINE_T)
+    assert wrong["hint"] not in (first["hint"], f"Think of where it comes from: {first['mistake']['where']}.")
+    # concrete: what moving X alone does to the block, and the position it reads from
+    assert "carries the block" in wrong["hint"] and "X + D cos(α)" in wrong["hint"], wrong["hint"]
+    right = judge_follow_up(pb, key, "X_dot")
+    assert right["verdict"] == "correct"
