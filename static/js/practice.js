@@ -107,7 +107,7 @@ function showVerdict(item, result, answer) {
     box.append(head);
     if (result.difference) {
       const diff = element("div", { class: "verdict-difference", "aria-label": `difference: ${result.difference.sympy}` });
-      katexInto(diff, `\\text{yours} - \\text{engine's} = ${result.difference.latex}`, true);
+      katexInto(diff, `\\text{yours} - \\text{correct} = ${result.difference.latex}`, true);
       box.append(diff);
     }
     if (result.mistake) box.append(mistakeBox(result.mistake));
@@ -157,9 +157,13 @@ function mistakeBox(mistake) {
   const box = element("div", { class: "verdict-mistake", "data-key": mistake.key });
   const head = element("p");
   head.append(element("strong", {}, mistake.approximation ? "An approximation: " : "The mistake: "), mistake.name);
-  const piece = element("div", { class: "verdict-piece", "aria-label": `the piece: ${mistake.name}` });
-  katexInto(piece, mistake.latex, true);
-  box.append(head, piece);
+  box.append(head);
+  // the piece, labelled by the server; none when it would only repeat the difference above
+  if (mistake.latex) {
+    const piece = element("div", { class: "verdict-piece", "aria-label": `the piece: ${mistake.name}` });
+    katexInto(piece, mistake.latex, true);
+    box.append(piece);
+  }
   return box;
 }
 
@@ -334,7 +338,7 @@ function buildItem(exercise, index) {
   const engine = element("div", { class: "practice-engine", id: `${id}-engine`, hidden: "" });
   const engineMath = element("div", { class: "math-display" });
   katexInto(engineMath, exercise.answer.latex, true);
-  engine.append(element("p", { class: "help" }, "The engine's step:"), engineMath);
+  engine.append(element("p", { class: "help" }, "The step, derived:"), engineMath);
   form.append(title, label, row, names, previewBox, actions, verdict, engine);
   item.append(form);
 
