@@ -150,8 +150,8 @@ PANELS: tuple[Panel, ...] = (
     Panel(
         "momenta",
         "Conserved momenta",
-        "The momenta of the cyclic coordinates and, below, their change since t = 0, which only numerical error "
-        "can produce.",
+        "The conserved momenta (a cyclic coordinate's, or a sum of momenta such as the total momentum) and, below, "
+        "their change since t = 0, which only numerical error can produce.",
         "a generalized momentum is conserved",
         lambda f: any(c["name"].startswith("p_") for c in f.doc.get("conserved", [])),
     ),

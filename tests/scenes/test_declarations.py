@@ -71,8 +71,9 @@ def test_panels_are_what_the_scene_needs(scene_id):
     assert ("animation-2d" in panels) != ("animation-3d" in panels)
     # h against E only where they differ
     assert ("h-vs-e" in panels) == (not d.energetics.h_equals_e)
-    # momenta only with a conserved generalized momentum
-    assert ("momenta" in panels) == bool(d.energetics.cyclic)
+    # momenta only with a conserved generalized momentum: a cyclic coordinate's, or a sum such as the total
+    assert ("momenta" in panels) == any(c.name.startswith("p_") for c in d.energetics.conserved)
+    assert set(d.energetics.cyclic) <= {c.name.removeprefix("p_") for c in d.energetics.conserved}
     if "effective-potential" in panels:
         assert d.reduction is not None
     if "small-oscillations" in panels:
