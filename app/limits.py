@@ -79,4 +79,5 @@ BACKOFF_SECONDS = 5.0  # a client's pause after its second job in a row out of t
 # is read and checked first); held, twenty flooding threads send about twenty requests a second.
 HOLD_SECONDS = 1.0
 RATE_WINDOW_SECONDS = 60.0  # the window of every per-minute rate (the Settings' ``*_per_minute``)
+STORE_SECONDS = 0.5  # a call to the shared store of the rate windows; past it a replica counts alone
 RETRY_SECONDS = 1  # Retry-After of a 503 when no worker is to be had

@@ -11,7 +11,7 @@ def test_a_scene_mistake_is_named_and_its_follow_up_is_checked(client):
     assert wrong.status_code == 200, wrong.text
     body = wrong.json()
     assert body["mistake"]["key"] == "kinetic.velocity_part.ball.phi"
-    assert "φ̇" in body["mistake"]["name"] and r"\dot{\phi}" in body["mistake"]["latex"]
+    assert "φ̇" in body["mistake"]["name"] and r"\dot{\varphi}" in body["mistake"]["latex"]
     assert body["partial"]["message"] == "Everything else in your T is right."
     question = body["follow_up"]
     assert question["key"] == body["mistake"]["key"] and "speed" in question["question"]

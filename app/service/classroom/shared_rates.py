@@ -23,12 +23,10 @@ from redis.exceptions import RedisError
 
 from app.errors import OverCapacity
 from app.limits import RATE_WINDOW_SECONDS as WINDOW_SECONDS
+from app.limits import STORE_SECONDS
 from app.service.classroom.rates import Window
 
 log = logging.getLogger(__name__)
-
-# how long a call to the store may take before this replica counts alone
-STORE_TIMEOUT_SECONDS = 0.5
 
 # KEYS[1]: the window's key; ARGV: the window in seconds, the limit, a unique member.
 # Returns {1, 0} when the event is counted, {0, seconds to wait} when the window is full.
@@ -52,7 +50,7 @@ class Store:
 
     def __init__(self, url: str) -> None:
         self.client = aioredis.from_url(
-            url, socket_timeout=STORE_TIMEOUT_SECONDS, socket_connect_timeout=STORE_TIMEOUT_SECONDS
+            url, socket_timeout=STORE_SECONDS, socket_connect_timeout=STORE_SECONDS
         )
         self.take = self.client.register_script(TAKE)
         self.warned = False
