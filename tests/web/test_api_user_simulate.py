@@ -10,6 +10,7 @@ from app.numerics.methods import STIFF
 from app.web import examples_user
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SIMULATE_EXAMPLES, SIMULATE_REFUSED
 from tests.numerics.systems import LOPSIDED_CHAIN, STIFF_SOFT_CHAIN
+from tests.web.test_api_user_equilibria import CONE_BY_ITS_AXIS
 
 
 def simulate(client, body):
@@ -133,17 +134,7 @@ def test_auto_runs_the_stiff_chains_with_the_compiled_radau(client, body):
 
 
 # a bead on a cone of half-angle a about the vertical axis, apex down: r is its distance from the axis
-CONE = {
-    "coordinates": ["r", "phi"],
-    "parameters": [
-        {"name": "m", "value": 1.0, "unit": "kg", "min": 0.0},
-        {"name": "g", "value": 9.81, "unit": "m/s^2", "min": 0.0},
-        {"name": "a", "value": 0.5, "unit": "rad", "min": 0.0},
-    ],
-    "particles": [{"mass": "m", "position": ["r*cos(phi)", "r*sin(phi)", "r/tan(a)"]}],
-    "potential": "m*g*r/tan(a)",
-    "nonnegative": ["r"],
-}
+CONE = CONE_BY_ITS_AXIS
 
 
 def test_a_distance_declared_never_negative_ends_the_run_where_it_reaches_zero(client):
