@@ -182,7 +182,7 @@ SPHERICAL_PENDULUM: dict[str, str] = {
     "derivatives:phi": "∂L/∂φ = 0: the angular momentum about the vertical axis is conserved.",
     "euler-lagrange": "θ feels gravity and the centrifugal effect of φ̇; φ keeps m R² sin² θ φ̇ constant.",
     "mass-matrix": "M is diagonal: m R² for θ and m R² sin² θ for φ.",
-    "accelerations": "The ball turns faster as it climbs toward the axis (sin θ smaller).",
+    "accelerations": "The ball turns faster the nearer it comes to the vertical axis (sin θ smaller), above or below the pivot.",
     "momenta": "p_φ = m R² sin² θ φ̇ is the angular momentum about the vertical axis.",
     "cyclic": "Rotating about the vertical axis changes nothing, so p_φ is conserved.",
     "time-dependence": "The pivot is fixed, so L has no t.",

@@ -412,7 +412,7 @@ def scene_page(
         "declared_panels": declared,
         "panels": panels,
         "folded_panels": closed,
-        "panel_text": texts(bool(doc.get("generalized_forces"))),
+        "panel_text": texts(bool(doc.get("generalized_forces")), angles=bool(doc.get("angles"))),
         "diagram": diagram(
             info.get("family", ""),
             f"Set-up: {info.get('title', '')}",

@@ -110,6 +110,8 @@ class Panel:
     open_when: Callable[[Facts], bool] | None = None
     # the explanation where generalized forces Q act (no potential describes them), if it differs
     forced_text: str | None = None
+    # a sentence added only where a coordinate is an angle
+    angles_text: str | None = None
 
 
 PANELS: tuple[Panel, ...] = (
@@ -161,9 +163,10 @@ PANELS: tuple[Panel, ...] = (
         "A coordinate against its rate of change: the blue curve is this run and the red dot the current state. "
         "With one degree of freedom (or a reduction to one) the grey curves are level sets of the Hamiltonian, "
         "each a possible orbit; green dots mark stable equilibria, red diamonds unstable ones, and the dashed red "
-        "curve through an unstable one separates motions of different kinds. An angle is shown in (−π, π].",
+        "curve through an unstable one separates motions of different kinds.",
         "always (level sets with one degree of freedom or a reduction to one)",
         lambda f: True,
+        angles_text="An angle is shown in (−π, π].",
     ),
     Panel(
         "effective-potential",
@@ -255,6 +258,12 @@ def folded(facts: Facts, names: Sequence[str]) -> list[str]:
     return [n for n, rule in rules.items() if rule is not None and not rule(facts)]
 
 
-def texts(forced: bool = False) -> dict[str, dict[str, str]]:
-    """Title and explanation of every panel (for the templates); ``forced``: generalized forces Q act."""
-    return {p.name: {"title": p.title, "text": (p.forced_text if forced and p.forced_text else p.text)} for p in PANELS}
+def texts(forced: bool = False, angles: bool = True) -> dict[str, dict[str, str]]:
+    """Title and explanation of every panel (for the templates); ``forced``: generalized forces Q act;
+    ``angles``: some coordinate is an angle."""
+
+    def text(p: Panel) -> str:
+        said = p.forced_text if forced and p.forced_text else p.text
+        return f"{said} {p.angles_text}" if angles and p.angles_text else said
+
+    return {p.name: {"title": p.title, "text": text(p)} for p in PANELS}

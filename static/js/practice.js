@@ -98,6 +98,7 @@ const LABELS = { correct: "Correct", equivalent: "Equivalent", incorrect: "Not y
 function showVerdict(item, result, answer) {
   const box = item.querySelector(".practice-verdict");
   box.replaceChildren();
+  box.classList.remove("verdict-stale");
   box.dataset.verdict = result.verdict || "refused";
   if (result.verdict) {
     // the message opens with the verdict ("Correct: …"): that word in bold
@@ -134,6 +135,20 @@ function showVerdict(item, result, answer) {
   const stale = record.verdicts[item.dataset.key]?.answer !== undefined && record.verdicts[item.dataset.key].answer !== input.value;
   if (stale) box.append(element("p", { class: "help" }, `(for your earlier answer: ${record.verdicts[item.dataset.key].answer})`));
   input.setAttribute("aria-invalid", result.verdict ? String(result.verdict === "incorrect") : "true");
+}
+
+/** A verdict shown for an answer since edited says so, until the new one is checked. */
+function markStale(item, checkedAnswer) {
+  const box = item.querySelector(".practice-verdict");
+  const stale = Boolean(box.dataset.verdict) && checkedAnswer !== undefined && checkedAnswer.trim() !== item.querySelector("input").value.trim();
+  box.classList.toggle("verdict-stale", stale);
+  let line = box.querySelector(".verdict-stale-note");
+  if (stale && !line) {
+    line = element("p", { class: "verdict-stale-note" }, "This verdict is for your earlier answer: press Enter to check the new one.");
+    box.prepend(line);
+  } else if (!stale && line) {
+    line.remove();
+  }
 }
 
 /** A refusal's message without the field it is located at ("answer: …", "text: …"), the box being the field,
@@ -286,6 +301,8 @@ async function preview(item, signal) {
     const checked = record.verdicts[item.dataset.key];
     const said = checked && checked.answer === text && !checked.result?.verdict;
     note.textContent = said ? "" : `Not read yet: ${endOf(wordsOf(reply.answer?.detail) || "the checker could not read this")}`;
+    // the rendering of an earlier text would show something not typed: it goes
+    math.replaceChildren();
     item.dataset.typeset = "refused";
   }
 }
@@ -354,6 +371,7 @@ function buildItem(exercise, index) {
   sides();
   input.addEventListener("input", () => {
     sides();
+    markStale(item, record.verdicts[key]?.answer);
     record.answers[key] = input.value;
     save(record);
     clearTimeout(timer);
@@ -404,6 +422,7 @@ function buildItem(exercise, index) {
 
   typeset();
   if (record.verdicts[key]) showVerdict(item, record.verdicts[key].result, record.verdicts[key].answer);
+  if (record.verdicts[key]) markStale(item, record.verdicts[key].answer);
   return item;
 }
 

@@ -240,3 +240,32 @@ def test_an_equation_typed_as_a_textbook_writes_it_is_checked_and_a_refusal_is_s
     answer(page, "lagrangian", "T - U")
     verdict_of(page, "lagrangian").locator("mark").wait_for()
     assert "write T and U out in the coordinates" in verdict_of(page, "lagrangian").inner_text()
+
+
+def test_an_edited_answer_greys_its_old_verdict_and_an_unreadable_one_clears_the_preview(page):
+    page.set_viewport_size({"width": 1366, "height": 768})
+    page.goto("/scenes/simple-pendulum?practice")
+    page.wait_for_selector(STEP.format("kinetic"))
+    answer(page, "kinetic", "m*R**2*theta_dot**2/2")
+    verdict = verdict_of(page, "kinetic")
+    verdict.locator(".verdict-head").wait_for()
+    assert verdict.get_attribute("data-verdict") == "correct" and verdict.locator(".verdict-stale-note").count() == 0
+    box = page.locator(STEP.format("kinetic")).locator("input[name]")
+    # edited, not checked: the "Correct" no longer stands for what is in the box
+    box.fill("m*R**2*theta_dot**2/3")
+    assert "earlier answer" in verdict.locator(".verdict-stale-note").inner_text()
+    assert "verdict-stale" in verdict.get_attribute("class")
+    box.fill("m*R**2*theta_dot**2/2")  # back to the checked answer: the verdict is its own again
+    assert verdict.locator(".verdict-stale-note").count() == 0
+    # a text that cannot be read leaves no rendering of an earlier text under the box
+    preview = page.locator(STEP.format("kinetic") + " .practice-preview-math")
+    page.wait_for_function("document.querySelector('.practice-step[data-key=kinetic] .practice-preview-math .katex')")
+    box.fill("m*R**2*(theta_dot**2/2")
+    page.wait_for_function(
+        "document.querySelector('.practice-step[data-key=kinetic] .practice-preview-note').textContent.includes('Not read yet')"
+    )
+    assert preview.locator(".katex").count() == 0
+    # checked again: the new verdict, without the stale line
+    answer(page, "kinetic", "m*R**2*theta_dot**2")
+    page.wait_for_function("document.querySelector('.practice-step[data-key=kinetic] .practice-verdict').dataset.verdict === 'incorrect'")
+    assert verdict.locator(".verdict-stale-note").count() == 0 and "verdict-stale" not in (verdict.get_attribute("class") or "")

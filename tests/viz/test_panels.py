@@ -86,3 +86,12 @@ def test_the_method_comparison_is_open_only_where_the_method_matters(client, sce
     if folded:
         summary = html.split('id="details-work-precision"><summary>', 1)[1].split("</summary>", 1)[0]
         assert summary.startswith("details: error against run time")
+
+
+def test_the_phase_text_speaks_of_angles_only_where_a_coordinate_is_one(client):
+    from app.viz.panels import texts
+
+    assert "An angle is shown" in texts(angles=True)["phase"]["text"]
+    assert "An angle is shown" not in texts(angles=False)["phase"]["text"]
+    assert "An angle is shown" in client.get("/scenes/simple-pendulum").text
+    assert "An angle is shown" not in client.get("/scenes/rail-two-body").text
