@@ -120,7 +120,8 @@ def energetics(mech: Mechanics, eqs: Equations) -> Energetics:
             f"p_{name}",
             f"p_{{{table.latex_names()[table.q[table.names.index(name)]]}}}",
             eqs.momenta[table.names.index(name)],
-            f"{unicode(name)} does not appear in L and no generalized force acts on it, so dp/dt = ∂L/∂{unicode(name)} = 0.",
+            f"{unicode(name)} does not appear in L and no generalized force acts on it, so "
+            f"d{unicode('p_' + name)}/dt = ∂L/∂{unicode(name)} = 0.",
         )
         for name in cyclic
     ]

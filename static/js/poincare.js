@@ -70,7 +70,7 @@ export class PoincarePanel {
     const short = s.orbits.filter((o) => !o.complete).length;
     this.readout.textContent = `${s.orbits.length} orbits with h = ${fmt(s.energy)} J, ${points} points where ${cut}. `
       + "Points of one colour on a closed curve mean a regular orbit; a colour spread over an area means chaos."
-      + (short ? ` ${short} orbit(s) stopped early at the time budget.` : "");
+      + (short ? ` ${short === 1 ? "One orbit was" : `${short} orbits were`} cut short: computing it further would take longer than this page allows.` : "");
     table(this.summary, `Poincaré section at ${cut}`, ["orbit", "starts at", "points", "largest relative drift of h"],
       s.orbits.map((o, k) => [`${k + 1}`, Object.entries(o.initial).map(([n, v]) => `${labels[n] || n} = ${fmt(v)}`).join(", "), String(o.q.length), fmt(o.energy_drift)]));
   }

@@ -184,3 +184,16 @@ def test_the_coupled_oscillators_derive_their_beats(client):
     # modes that are not a symmetric pair get no beats step
     assert not any(k.startswith("beats") for k in steps(client, "double-pendulum"))
     assert "A" in {r["unicode"] for r in client.get("/api/scenes/coupled-oscillators/derivation").json()["notation"]}
+
+
+def test_the_parameters_table_prints_ranges_as_the_sliders_do(client):
+    import re
+
+    page = client.get("/scenes/tabletop-spring").text
+    table = " ".join(re.sub(r"<[^>]+>", " ", re.search(r'<table class="parameters">.*?</table>', page, re.S)[0]).split())
+    assert "0.01 to 100,000,000 N/m" in table and "e+" not in table
+
+
+def test_a_cyclic_coordinates_momentum_is_named_in_its_conservation_sentence(client):
+    page = client.get("/scenes/movable-incline").text
+    assert "so dp_X/dt = ∂L/∂X = 0" in page and "so dp/dt" not in page
