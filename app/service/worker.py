@@ -126,8 +126,13 @@ def _die_with_parent() -> None:
 
 
 def _kill_group(signum: int = signal.SIGTERM, frame: Any = None) -> None:
-    """SIGTERM (pebble stopping this worker, e.g. for a timed-out job): end the job's whole process group."""
-    os.killpg(0, signal.SIGKILL)
+    """SIGTERM (pebble stopping this worker, e.g. for a timed-out job): end the job's whole process group.
+
+    Only a group this worker leads: before it has one of its own (``initialize_worker``'s first act), the
+    group is its web process's, and with it the server's and whatever started the server."""
+    if os.getpgrp() == os.getpid():
+        os.killpg(0, signal.SIGKILL)
+    os.kill(os.getpid(), signal.SIGKILL)
 
 
 def _watch_owner(owner: int) -> None:
@@ -172,14 +177,15 @@ def initialize_worker(memory_mb: int, retire_mb: int = 0, owner: int = 0, users:
     retire once above ``retire_mb`` resident.  A worker for ``users``' systems writes their
     generated code to the bounded folder; the scenes' worker keeps the chapter's."""
     global _retire_bytes
-    if owner:  # first: the watching thread's stack counts in the address space measured below
+    # a group of its own before anything can end it: ending "its group" must never reach the web process's
+    os.setpgid(0, 0)
+    if owner:  # next: the watching thread's stack counts in the address space measured below
         _watch_owner(owner)
     if users:  # the budget with the web processes' measured size (app/service/resident.py)
         memory_mb = min(memory_mb, resident.job_memory_mb())
     limit = _address_space() + memory_mb * 1024 * 1024
     resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
     os.nice(WORKER_NICENESS)
-    os.setpgid(0, 0)
     signal.signal(signal.SIGTERM, _kill_group)
     _die_with_parent()
     _retire_bytes = retire_mb * 2**20

@@ -42,7 +42,8 @@ def server(env: dict[str, str], port: int | None = None) -> Iterator[tuple[str, 
                    "LAGRANGE_STUDENT_CHECKS_PER_MINUTE": "100000", **env}
     process = subprocess.Popen(
         [sys.executable, "-m", "uvicorn", "app.main:app", "--host", "127.0.0.1", "--port", str(port),
-         "--log-level", "warning"], cwd=ROOT, env=environment)
+         "--log-level", "warning"], cwd=ROOT, env=environment,
+        start_new_session=True)  # its own group: nothing it does to "its group" reaches the tests
     url = f"http://127.0.0.1:{port}"
     try:
         deadline = time.monotonic() + 60
