@@ -5,7 +5,7 @@
  * per step takes the student's own expression, in the chapter's order. As they type, the
  * expression is typeset live by the checker's own parser (POST /api/typeset, 150 ms after the
  * last keystroke: the LaTeX as the checker reads it, or the parser's refusal in the checker's
- * words, the last good rendering kept meanwhile); the browser has no expression grammar of its
+ * words, the last good rendering kept while the server answers); the browser has no expression grammar of its
  * own. Enter or "Check" sends it to the checker and shows the verdict, the
  * difference typeset and the hint; a named mistake with its piece typeset, what else is right,
  * and a follow-up question answered in place; "Show this step" reveals the engine's step.
