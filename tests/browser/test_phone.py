@@ -22,8 +22,8 @@ ORDER = [
 ]
 
 
-@pytest.mark.parametrize("scene_id", sorted(SCENES))
-def test_a_phone_reads_in_order(browser, live_server, artifacts, scene_id):
+def _phone_page(browser, live_server, scene_id: str):
+    """A scene page opened at 390×844 with touch, its panels attached."""
     context = browser.new_context(
         base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True
     )
@@ -31,6 +31,12 @@ def test_a_phone_reads_in_order(browser, live_server, artifacts, scene_id):
     page.set_default_timeout(60_000)
     page.goto(f"/scenes/{scene_id}")
     page.wait_for_selector(READY, state="attached")
+    return context, page
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_a_phone_reads_in_order(browser, live_server, artifacts, scene_id):
+    context, page = _phone_page(browser, live_server, scene_id)
     tops = page.evaluate(
         "(sels) => sels.map((s) => { const e = document.querySelector('.scene ' + s); return e ? e.getBoundingClientRect().top + scrollY : null; })",
         ORDER,
@@ -47,13 +53,7 @@ def test_a_phone_reads_in_order(browser, live_server, artifacts, scene_id):
 @pytest.mark.parametrize("scene_id", ["simple-pendulum", "spherical-pendulum"])
 def test_the_energy_panel_fits_a_phone_after_scrolling_through(browser, live_server, scene_id):
     # prof-a D: after scrolling down the page the energy panel grew to 509 px on a 390 px screen
-    context = browser.new_context(
-        base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True
-    )
-    page = context.new_page()
-    page.set_default_timeout(60_000)
-    page.goto(f"/scenes/{scene_id}")
-    page.wait_for_selector(READY, state="attached")
+    context, page = _phone_page(browser, live_server, scene_id)
     height = page.evaluate("document.documentElement.scrollHeight")
     for y in range(0, height, 700):  # every lazy panel comes into view and draws
         page.evaluate(f"window.scrollTo(0, {y})")
