@@ -210,12 +210,13 @@ def _initial_controls(
         controls.append(
             {"name": q, "label": f"{label(q)}(0)", "latex": latex(q), "unit": unit,
              "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(value), "log": False,
+             "allowed": allowed_text(float(lo), float(hi), unit),
              "description": f"initial {'angle' if angle else 'position'} {label(q)}"}
         )  # fmt: skip
         controls.append(
             {"name": f"{q}_dot", "label": f"{label(q + '_dot')}(0)", "latex": latex(f"{q}_dot"),
              "unit": rate_unit, "min": _fmt(-vmax), "max": _fmt(vmax), "value": _fmt(rate), "log": False,
-             "ticks": _marks(found, rate_unit),
+             "allowed": allowed_text(-vmax, vmax, rate_unit), "ticks": _marks(found, rate_unit),
              "description": f"initial rate of change of {label(q)}"}
         )  # fmt: skip
     return controls

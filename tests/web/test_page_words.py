@@ -197,3 +197,9 @@ def test_the_parameters_table_prints_ranges_as_the_sliders_do(client):
 def test_a_cyclic_coordinates_momentum_is_named_in_its_conservation_sentence(client):
     page = client.get("/scenes/movable-incline").text
     assert "so dp_X/dt = ∂L/∂X = 0" in page and "so dp/dt" not in page
+
+
+def test_initial_conditions_print_their_ranges_with_a_true_minus(client):
+    page = client.get("/scenes/simple-pendulum").text
+    assert "allowed: −3.142 to 3.142 rad" in page and "allowed: −10 to 10 rad/s" in page
+    assert "allowed: -3.142" not in page
