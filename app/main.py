@@ -12,7 +12,7 @@ from app.service import resident, simulation
 from app.service.memory import freeze_imported, freeze_when_done
 from app.service.services import Services
 from app.settings import settings
-from app.web import api_action, api_beyond, api_scenes, docs, errors, limits, openapi, pages, slow_clients
+from app.web import api_action, api_beyond, api_scenes, docs, embed, errors, limits, openapi, pages, slow_clients
 from app.web.api_check import router as check_router
 from app.web.api_simulate import router as simulate_router
 from app.web.api_staged import router as staged_router
@@ -78,6 +78,7 @@ ROUTERS = [
     api_beyond.router,
     api_action.router,
     pages.router,
+    embed.router,
     docs.router,
     user_router,
     staged_router,

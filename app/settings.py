@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import ipaddress
 import os
+import re
 from functools import lru_cache
 from pathlib import Path
 from typing import Annotated
@@ -29,6 +30,8 @@ from pydantic_settings import BaseSettings, SettingsConfigDict
 # installed package (the Docker image) runs from its working directory instead.
 _HERE = Path(__file__).resolve().parents[1]
 ROOT = _HERE if (_HERE / "templates").is_dir() else Path.cwd()
+# a site's origin as a CSP source: scheme, host (its first label may be *), optional port, nothing else
+ORIGIN = re.compile(r"https?://(\*\.)?[A-Za-z0-9-]+(\.[A-Za-z0-9-]+)*(:[0-9]{1,5})?")
 
 
 class Settings(BaseSettings):
@@ -109,6 +112,8 @@ class Settings(BaseSettings):
     """checks one student may make per minute"""
     class_check_slots: PositiveInt = 24
     """a class's checks in flight at once (judged or queued), whatever its network"""
+    embed_ancestors: str = ""
+    """sites whose pages may show /embed/ pages in a frame, comma-separated (https://lms.example.edu); empty: none"""
 
     @field_validator("trusted_proxies")
     @classmethod
@@ -130,6 +135,18 @@ class Settings(BaseSettings):
                 f"shared_store_url: {url[:60]!r} is not a Redis URL (redis://host:6379/0, rediss://… or unix://…)"
             )
         return url or None
+
+    @field_validator("embed_ancestors")
+    @classmethod
+    def _ancestors_are_origins(cls, listed: str) -> str:
+        # a CSP source list: origins only (a path, a quote or a space would change what the header says)
+        for entry in (a.strip() for a in listed.split(",") if a.strip()):
+            if not ORIGIN.fullmatch(entry):
+                raise ValueError(
+                    f"embed_ancestors: {entry[:60]!r} is not a site's origin: write scheme://host[:port], "
+                    "e.g. https://lms.example.edu or https://*.example.edu"
+                )
+        return ",".join(a.strip() for a in listed.split(",") if a.strip())
 
     @model_validator(mode="after")
     def _replicas_share_the_classes(self) -> Settings:

@@ -1,0 +1,86 @@
+"""Embed pages (/embed/scenes/{id}): the simulation alone for a course page's frame, framed only by the sites
+the ``embed_ancestors`` setting lists."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+from pydantic import ValidationError
+from starlette.applications import Starlette
+from starlette.responses import PlainTextResponse
+from starlette.routing import Route
+from starlette.testclient import TestClient
+
+from app.settings import Settings
+from app.web.headers import CSP, SecurityHeaders
+
+PANEL = re.compile(r'data-panel="([^"]+)"')
+
+
+def test_an_embed_page_holds_the_mechanism_and_its_controls_and_nothing_else(client):
+    page = client.get("/embed/scenes/simple-pendulum")
+    assert page.status_code == 200
+    html = page.text
+    assert PANEL.findall(html) == ["animation-2d"]
+    assert 'canvas class="mechanism' in html and 'id="controls"' in html and 'id="scene-data"' in html
+    # no derivation, no site chrome, no integration settings; a link to the whole page
+    for absent in ('id="derivation"', 'class="site-header"', 'class="site-footer"', 'name="method"'):
+        assert absent not in html
+    assert 'href="/scenes/simple-pendulum"' in html and "/static/js/embed.js" in html
+
+
+def test_one_panel_may_be_asked_for(client):
+    html = client.get("/embed/scenes/simple-pendulum?panel=phase").text
+    assert PANEL.findall(html) == ["animation-2d", "phase"]
+
+
+def test_an_unknown_panel_is_refused_with_the_panels_there_are(client):
+    page = client.get("/embed/scenes/simple-pendulum?panel=derivation")
+    assert page.status_code == 422
+    text = re.sub(r"<[^>]+>", "", page.text)
+    assert "“derivation” is not a panel of simple pendulum" in text
+    assert "energy, phase," in text and "Leave out ?panel=" in text
+
+
+def test_an_unknown_scene_is_a_404_listing_the_scenes(client):
+    page = client.get("/embed/scenes/no-such-scene")
+    assert page.status_code == 404 and "/embed/scenes/simple-pendulum" in page.text
+
+
+def test_by_default_no_site_may_frame_an_embed_page(client):
+    headers = client.get("/embed/scenes/simple-pendulum").headers
+    assert headers["content-security-policy"] == CSP and headers["x-frame-options"] == "DENY"
+
+
+def _framed(ancestors: str) -> TestClient:
+    async def ok(request):
+        return PlainTextResponse("ok")
+
+    app = Starlette(routes=[Route("/embed/scenes/x", ok), Route("/scenes/x", ok)])
+    return TestClient(SecurityHeaders(app, embed_ancestors=ancestors))
+
+
+def test_the_listed_sites_may_frame_embed_pages_and_no_other_page():
+    client = _framed("https://lms.example.edu,https://*.course.example.org:8443")
+    embed = client.get("/embed/scenes/x").headers
+    rules = dict(rule.split(" ", 1) for rule in embed["content-security-policy"].split("; "))
+    assert rules["frame-ancestors"] == "https://lms.example.edu https://*.course.example.org:8443"
+    assert "x-frame-options" not in embed  # it cannot name a site; the CSP rule governs
+    assert rules["script-src"] == "'self' 'unsafe-eval'"  # the rest of the policy is unchanged
+    other = client.get("/scenes/x").headers
+    assert other["content-security-policy"] == CSP and other["x-frame-options"] == "DENY"
+
+
+@pytest.mark.parametrize(
+    "bad", ["lms.example.edu", "https://lms.example.edu/course", "*", "'self'", "https://a.edu https://b.edu"]
+)
+def test_the_setting_takes_origins_only(bad):
+    with pytest.raises(ValidationError, match="is not a site's origin: write scheme://host"):
+        Settings(embed_ancestors=bad)
+
+
+def test_the_setting_tidies_its_list():
+    assert Settings(embed_ancestors=" https://a.edu , http://127.0.0.1:8001,").embed_ancestors == (
+        "https://a.edu,http://127.0.0.1:8001"
+    )
