@@ -1,0 +1,97 @@
+"""An answer typed with an equals sign, read as a textbook writes it.
+
+Every textbook writes an equation of motion as lhs = rhs (θ̈ = −(g/R) sin θ), so a step whose answer is
+an equation takes it: the equation ``lhs = rhs`` is read as the expression lhs − rhs, equal to zero. An
+acceleration step takes ``q_ddot = rhs`` as its right-hand side. Where the box already names the
+left-hand side (T =, U =, L =, p =, h =, ω² =) an equals sign makes no sense, and the student is told to
+type only the right-hand side. A refusal of what was read is placed back at the columns as typed.
+"""
+
+from __future__ import annotations
+
+import re
+
+from app.engine.check_answers import CheckError, check_answer
+from app.engine.parse import Parsed
+
+# the comparisons an '=' could be part of, refused by the parser in its own words
+_COMPARISONS = ("==", "<=", ">=", "!=")
+
+
+def _placed(exc: CheckError, offset: int) -> CheckError:
+    """A refusal of one side, at its columns in the whole text typed (the side's own column left unsaid)."""
+    if not offset or exc.start is None:
+        return exc
+    said = re.sub(r" at column \d+", "", str(exc))
+    moved = CheckError(said, exc.field, exc.part, exc.start + offset, None if exc.end is None else exc.end + offset)
+    moved.readings = exc.readings
+    return moved
+
+
+def _side(text: str, offset: int, step: str, kinds: dict[str, str]) -> Parsed:
+    try:
+        return check_answer(text, step, kinds)
+    except CheckError as exc:
+        raise _placed(exc, offset) from None
+
+
+def read_answer(text: str, step: str, coordinate: str | None, kinds: dict[str, str]) -> tuple[Parsed, bool]:
+    """What ``check_answer`` reads of a step's answer, and whether it was typed as an equation lhs = rhs.
+
+    Each side is read on its own first, so a refusal quotes the student's own text at their columns.
+    """
+    try:
+        return _read(text, step, coordinate, kinds)
+    except CheckError as exc:
+        raise _in_words(exc) from None
+
+
+# the names of the steps' own quantities, which a student may type for what they stand for (L = T − U)
+_QUANTITIES = frozenset({"T", "U", "V", "L"})
+
+
+def _in_words(exc: CheckError) -> CheckError:
+    """A refusal said as a tutor says it where the parser's words would not help: T − U typed in the L box."""
+    if exc.part in _QUANTITIES and "unknown name" in str(exc):
+        out = f"answer: {exc.part} is not a name the answer may use: write T and U out in the coordinates, their velocities and the parameters"
+        return CheckError(out, exc.field, exc.part, exc.start, exc.end)
+    return exc
+
+
+def _read(text: str, step: str, coordinate: str | None, kinds: dict[str, str]) -> tuple[Parsed, bool]:
+    if not isinstance(text, str) or "=" not in text or any(c in text for c in _COMPARISONS):
+        return check_answer(text, step, kinds), False
+    at = text.index("=")
+    if text.count("=") > 1:
+        second = text.index("=", at + 1)
+        raise CheckError("answer: write one '=' only, as lhs = rhs", "answer", "=", second, second + 1)
+    lhs, rhs = text[:at], text[at + 1 :]
+    if step == "equation":
+        if not lhs.strip() or not rhs.strip():
+            raise CheckError("answer: one side of '=' is empty: write the equation as lhs = rhs", "answer", "=", at, at + 1)
+        _side(lhs, 0, step, kinds)
+        _side(rhs, at + 1, step, kinds)
+        # lhs = rhs is the equation lhs − rhs = 0
+        return check_answer(f"{lhs} - ({rhs})", step, kinds), True
+    if step == "acceleration":
+        name = lhs.strip()
+        wanted = f"{coordinate}_ddot" if coordinate else None
+        if (wanted is not None and name == wanted) or (wanted is None and name.endswith("_ddot") and name.isidentifier()):
+            if not rhs.strip():
+                raise CheckError("answer: the right-hand side of '=' is empty", "answer", "=", at, at + 1)
+            return _side(rhs, at + 1, step, kinds), False
+        shown = wanted or "q_ddot"
+        raise CheckError(
+            f"answer: the left of '=' must be the acceleration {shown}: type {shown} = … or only the right-hand side",
+            "answer",
+            lhs,
+            0,
+            at,
+        )
+    raise CheckError(
+        "answer: type only the right-hand side: the box already has the left-hand side and its '='",
+        "answer",
+        "=",
+        at,
+        at + 1,
+    )

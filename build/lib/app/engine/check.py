@@ -1,0 +1,402 @@
+"""Check a student's own step against the engine's derivation.
+
+A *problem* is one step of one system (``kinetic``, ``potential``, ``lagrangian``,
+``momentum``, ``equation``, ``acceleration``, ``hamiltonian``, ``omega_squared``;
+the middle three per coordinate): the engine's expression for it (the truth),
+how answers may legitimately differ from it, the names an answer may use, and
+the mistaken expressions of ``app.engine.mistakes``. A problem holds SymPy
+objects only, so it can be built where the derivation lives and sent to a
+worker process with the student's text. (``app.engine.exercises`` lists a
+system's steps for a practice page.)
+
+``judge`` parses the text with the project's parser (app/engine/parse.py), then
+compares (app/engine/compare.py):
+
+* ``correct``: equal to the truth at every random point (or, where too few points
+  are defined, symbolically within a time budget);
+* ``equivalent``: U, L or h plus a constant (another zero of the potential), or
+  an equation of motion times a nonzero factor free of the velocities and
+  accelerations (the same equation wherever the factor is not zero);
+* ``incorrect``: with ``difference`` = answer − truth, after removing an accepted
+  constant (U, L, h) or rescaling the truth to the answer's coefficient of q̈
+  (equations), and a hint: the first mistake of ``mistakes.RULES`` the answer
+  matches, else the step's general pointer.
+
+``check_answer`` runs the parser's pure-Python gates plus the step's name rules,
+so a web process can refuse bad text without SymPy.
+
+The names an answer may use and its reading are ``app.engine.check_answers``; the
+problem of a step is ``app.engine.check_problem``; this module judges, and is the
+door to all three.
+"""
+
+from __future__ import annotations
+
+from collections import OrderedDict
+from typing import Any
+
+import sympy as sp
+
+from app.engine.budget import display_budget, tidy, work_limit
+from app.engine.check_answers import (
+    PER_COORDINATE,
+    STEPS,
+    CheckError,
+    allowed_names,
+    answer_error,
+    check_answer,
+    name_kinds,
+    parse_answer,
+)
+from app.engine.check_problem import (
+    RELATIONS,
+    Problem,
+    checkable_equilibria,
+    conserved_momenta,
+    exercises,
+    problem,
+    short_label,
+)
+from app.engine.compare import (
+    Groups,
+    Values,
+    differ_by_constant,
+    differ_by_factor,
+    equal,
+    factor_is_constant,
+    mistake_only,
+    symbolically_zero,
+    usable,
+    values,
+    without_constant,
+)
+from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json
+from app.engine.dimensions import dimension, mismatch
+from app.engine.mistake_answer import linearised, missing_square
+from app.engine.mistake_box import piece_box
+from app.engine.mistake_families import Mistake
+from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, POINTERS
+from app.engine.parse import Parsed
+from app.engine.report import Printer, display
+from app.engine.textbook import unicode_text
+from app.engine.work import WorkExceeded
+from app.limits import ANSWER_SLIP_WORK, DIFFERENCE_WORK, FACTOR_WORK, PARTS_WORK, PIECE_WORK
+from app.limits import CHECK_DISPLAY_WORK as DISPLAY_WORK
+
+__all__ = [
+    "MIN_POINTS",
+    "PARTED",
+    "PER_COORDINATE",
+    "RELATIONS",
+    "STEPS",
+    "CheckError",
+    "Problem",
+    "allowed_names",
+    "answer_error",
+    "check_answer",
+    "checkable_equilibria",
+    "conserved_momenta",
+    "exercises",
+    "follow_up_mistake",
+    "judge",
+    "judge_follow_up",
+    "name_kinds",
+    "parse_answer",
+    "problem",
+]
+
+MIN_POINTS = 6  # sample points where both sides are defined, for a numeric verdict
+# the steps whose answers are polynomials in the rates, compared part by part when no mistake matches
+PARTED = frozenset({"kinetic", "lagrangian", "momentum", "equation", "hamiltonian"})
+
+
+def _budgeted(work, fallback, units: float):
+    try:
+        with work_limit(units):
+            return work()
+    except (WorkExceeded, RecursionError, TypeError, ValueError, NotImplementedError, ZeroDivisionError):
+        return fallback
+
+
+def _verdict(
+    verdict: str, message: str, difference: dict[str, str] | None = None, hint: str | None = None, **more: Any
+) -> dict[str, Any]:
+    return {
+        "verdict": verdict,
+        "message": message,
+        "difference": difference,
+        "hint": hint,
+        "mistake": more.get("mistake"),
+        "partial": more.get("partial"),
+        "follow_up": more.get("follow_up"),
+    }
+
+
+def _noun(pb: Problem) -> str:
+    return f"the correct {pb.label}" + (f" (at {pb.where[0]})" if pb.where else "")
+
+
+_VALUES: OrderedDict[tuple, Values] = OrderedDict()
+
+
+def _known(expr: sp.Expr, groups: Groups) -> Values:
+    """The values of an engine expression (a truth or a mistake), remembered: a worker judges many answers."""
+    key = (expr, groups)
+    if key in _VALUES:
+        _VALUES.move_to_end(key)
+        return _VALUES[key]
+    found = _VALUES[key] = values(expr, groups)
+    while len(_VALUES) > 512:
+        _VALUES.popitem(last=False)
+    return found
+
+
+def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
+    """The verdict on one answer (as ``check_answer`` read it, or its text): ``{"verdict", "message",
+    "difference", "hint"}``."""
+    answer = parse_answer(pb, text)
+    printer = Printer(pb.latex_names)
+    a = values(answer, pb.groups)
+    results = [(truth, _known(truth, pb.groups)) for truth in pb.truths]
+    numeric = [(truth, b) for truth, b in results if usable(a, b) >= MIN_POINTS]
+
+    for i, (truth, b) in enumerate(results):
+        if (truth, b) in numeric:
+            same = equal(a, b)
+        else:
+            # too few points where both are defined: decide symbolically within the budget
+            same = symbolically_zero(answer - truth) is True
+        if same:
+            at = f" at {pb.where[i]}" if pb.where else ""
+            return _verdict("correct", f"Correct: this is the {pb.label}{at}.")
+
+    for truth, b in numeric:
+        if pb.relation == "constant" and differ_by_constant(a, b):
+            return _verdict("equivalent", _constant_message(pb, answer - truth))
+        if pb.relation == "factor" and differ_by_factor(a, b):
+            constant = factor_is_constant(a, b)
+            # the same equation divided through by a constant (θ̈ + (g/R) sin θ, as the page prints it) is right;
+            # a factor that depends on the coordinates makes it the same only where that factor is not zero
+            return _verdict("correct" if constant else "equivalent", _factor_message(pb, answer, truth, constant))
+
+    truth, b = results[0]
+    with display_budget(DISPLAY_WORK):
+        difference, how, scale = _difference(pb, answer, truth)
+        # the mistake only: what cancels identically gone, trigonometry recombined; where that did not apply
+        # (a long difference, an acceleration's), the display's own simplification
+        only = mistake_only(difference, DIFFERENCE_WORK)
+        shown = printer.pair(display(difference) if only is difference else only)
+    message = f"Incorrect: this is not {_noun(pb)}{how}. The difference (yours − correct) is shown."
+    # terms whose units disagree are named first, at any step: no algebra explains them; then the catalogue,
+    # then a whole of the wrong units
+    found = _units(pb, answer, None)
+    if found is None:
+        found = match(pb.mistakes, a, b, pb.relation, _at_engines_scale(pb, answer, a, truth))
+    if found is None and pb.relation != "factor" and pb.step != "momentum":
+        # (a momentum short of a factor is named by that factor, below)
+        found = _units(pb, answer, truth)
+    if found is not None:
+        mistake, hint = found
+        if mistake.family == "units":
+            # a difference whose terms have different units reads as nonsense ((1 − R/2) m R θ̇²): the units
+            # are the mistake, and nothing else is shown
+            return _verdict(
+                "incorrect",
+                f"Incorrect: this is not {_noun(pb)}: its units do not agree, as said below.",
+                None,
+                hint,
+                mistake=mistake_json(mistake, printer.tex, ""),
+                partial=None,
+                follow_up=None,
+            )
+        if pb.relation == "exact" or equal(a, _known(mistake.expr, pb.groups)):
+            # the answer is this mistake as written: show the difference as the change to the engine's own
+            # pieces (m₂ l₁ l₂ θ̇₁ θ̇₂ (sin(θ₁ − θ₂) − cos(θ₁ − θ₂)), not its sines and cosines expanded)
+            own = mistake.expr - truth
+            if pb.relation == "constant":  # less the constant the shown difference leaves out
+                own = without_constant(own, pb.groups.dynamic())[0]
+            own = sp.factor_terms(own)
+            if own != 0 and own.free_symbols and sp.count_ops(own) <= sp.count_ops(sp.sympify(shown["sympy"])):
+                shown = printer.pair(own)
+        whole = _whole_mistake(pb, a, mistake)
+        # the piece under the name: labelled, at the answer's scale, or nothing where the difference says it
+        box = _budgeted(
+            lambda: piece_box(mistake, difference, truth, scale, pb.groups, pb.relation,
+                              short_label(pb.step, pb.label), whole, printer.tex),
+            "",
+            PIECE_WORK,
+        )  # fmt: skip
+        return _verdict(
+            "incorrect",
+            message,
+            shown,
+            hint,
+            mistake={**mistake_json(mistake, printer.tex), "latex": box},
+            # "everything else is right" only where the answer is this mistake and nothing more (never for a
+            # whole of the wrong units: a second slip may hide behind it)
+            partial=partial_json(mistake, short_label(pb.step, pb.label)) if whole else None,
+            follow_up=follow_up_json(mistake, allowed_names(mistake.follow_up.kind, pb.kinds))
+            if mistake.follow_up
+            else None,
+        )
+    # no known mistake: say which parts agree (against the truth at the answer's scale)
+    partial = (
+        _budgeted(lambda: agreement(answer, answer - difference, pb.groups, pb.step), None, PARTS_WORK)
+        if pb.step in PARTED
+        else None
+    )
+    return _verdict("incorrect", message, shown, _hint(pb, answer, a, b, truth), partial=partial)
+
+
+def _whole_mistake(pb: Problem, a: Values, mistake: Mistake) -> bool:
+    """Whether the answer is the mistake's own wrong answer (up to the step's accepted constant or factor)."""
+    if mistake.family in ("units", "other_coordinate", "limit") or mistake.expr is None:
+        return False  # (another question's answer: nothing "else" in it is right or wrong)
+    v = _known(mistake.expr, pb.groups)
+    return (
+        equal(a, v)
+        or (pb.relation == "constant" and differ_by_constant(a, v))
+        or (pb.relation == "factor" and differ_by_factor(a, v))
+    )
+
+
+def _at_engines_scale(pb: Problem, answer: sp.Expr, a: Values, truth: sp.Expr) -> Values | None:
+    """An equation's values rescaled to the engine's coefficient of the acceleration (the student's own terms,
+    at the engine's scale), or None."""
+    if pb.relation != "factor" or pb.acceleration is None:
+        return None
+    mine = values(sp.diff(answer, pb.acceleration), pb.groups)
+    theirs = _known(sp.diff(truth, pb.acceleration), pb.groups)
+    out = []
+    for xa, xm, xt in zip(a, mine, theirs, strict=True):
+        out.append([
+            [x * t / m if x is not None and m and t is not None else None for x, m, t in zip(pa, pm, pt, strict=True)]
+            for pa, pm, pt in zip(xa, xm, xt, strict=True)
+        ])  # fmt: skip
+    return out
+
+
+def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake, str] | None:
+    """An answer whose terms have different units, or (given the truth) whose whole has other units than the
+    step's, named so."""
+    if not pb.dimensions:
+        return None
+    want = None if truth is None else dimension(truth, pb.dimensions)
+    what = short_label(pb.step, pb.label)
+    offence = mismatch(answer, pb.dimensions, want, what)
+    if offence is None:
+        return None
+    where = "every term of an expression has the same units; checking them finds a slip before any algebra"
+    mistake = Mistake("units.mismatch", "units", f"units that do not agree: {offence.words}", offence.piece, where,
+                      answer)  # fmt: skip
+    return mistake, f"Check the units: {offence.words}."
+
+
+def follow_up_mistake(pb: Problem, key: str) -> Mistake:
+    """The named mistake of this step that asks a follow-up question (a CheckError naming the ones that do)."""
+    mistake = pb.mistake(key)
+    if mistake is None or mistake.follow_up is None:
+        keys = [m.key for m, _, _ in pb.mistakes if m.follow_up is not None]
+        raise CheckError(
+            f"follow_up: {key[:80]!r} is not a mistake of this step with a question; "
+            + (f"the ones with a question are: {', '.join(keys)}" if keys else "this step has none"),
+            "follow_up",
+            key[:80],
+        )
+    return mistake
+
+
+def judge_follow_up(pb: Problem, key: str, text: Parsed | str) -> dict[str, Any]:
+    """The verdict on the answer to a named mistake's follow-up question (a CheckError when it has none)."""
+    mistake = follow_up_mistake(pb, key)
+    fu = mistake.follow_up
+    assert fu is not None  # follow_up_mistake refuses a mistake without a question
+    answer = parse_answer(pb, text, fu.kind)
+    if fu.relation == "magnitude":
+        # a speed or a stretch: either sign is the same size
+        mine, theirs = values(answer**2, pb.groups), _known(fu.truth**2, pb.groups)
+    else:
+        mine, theirs = values(answer, pb.groups), _known(fu.truth, pb.groups)
+    right = usable(mine, theirs) >= MIN_POINTS and equal(mine, theirs)
+    printer = Printer(pb.latex_names)
+    if right:
+        return _verdict(
+            "correct",
+            f"Correct: {fu.answer_text or sp.sstr(fu.truth)}. Now put it back into your {pb.label}.",
+            hint=None,
+            mistake=mistake_json(mistake, printer.tex),
+        )
+    return _verdict(
+        "incorrect",
+        f"Not yet: that is not the answer to “{fu.question}”",
+        # a new hint, not the first one again: the concrete one where the question has it
+        hint=fu.hint or f"Work it out on its own, from its definition, then compare it term by term: {fu.question}",
+        mistake={**mistake_json(mistake, printer.tex), "latex": ""},  # (the piece is the question's answer)
+        follow_up=follow_up_json(mistake, allowed_names(fu.kind, pb.kinds)),
+    )
+
+
+def _constant_message(pb: Problem, difference: sp.Expr) -> str:
+    varying, constant = without_constant(difference, pb.groups.dynamic())
+    shown = constant if symbolically_zero(varying) else None
+    amount = f"the constant {unicode_text(shown)}" if shown is not None else "a constant"
+    why = {
+        "potential": "a different zero of height, which changes no force and no equation of motion",
+        "lagrangian": "a constant drops out of every Euler–Lagrange equation",
+        "hamiltonian": "the zero of U moved, which changes no equation of motion",
+    }[pb.step]
+    return f"Equivalent: your {pb.label} is the correct one plus {amount}: {why}."
+
+
+def _factor_message(pb: Problem, answer: sp.Expr, truth: sp.Expr, constant: bool) -> str:
+    factor = _budgeted(lambda: tidy(sp.cancel(answer / truth), FACTOR_WORK), None, FACTOR_WORK * 2)
+    rates = set(pb.groups.rates)
+    named = f"{unicode_text(factor)}" if factor is not None and not (factor.free_symbols & rates) else "a factor"
+    if constant:
+        # a nonzero constant factor changes no solution: the same equation
+        return f"Correct: your equation is the correct one multiplied by {named}."
+    return (
+        f"Equivalent: your equation is the correct one multiplied by {named}, which depends on the "
+        "coordinates: the same equation wherever that factor is not zero."
+    )
+
+
+def _difference(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[sp.Expr, str, sp.Expr]:
+    """answer − truth, less an accepted constant, or against the truth rescaled to the answer's q̈ coefficient;
+    with the words saying so and the scale (1 unless rescaled)."""
+    one = sp.Integer(1)
+    if pb.relation == "constant":
+        varying, constant = without_constant(answer - truth, pb.groups.dynamic())
+        if varying != 0:
+            # the clause only where a constant was in fact taken out of the difference
+            said = " (a constant, which would only move the zero of U, is left out)" if constant != 0 else ""
+            return varying, said, one
+        return answer - truth, "", one
+    if pb.relation == "factor" and pb.acceleration is not None:
+        mine, theirs = sp.diff(answer, pb.acceleration), sp.diff(truth, pb.acceleration)
+        if mine != 0 and theirs != 0:
+            scale = _budgeted(lambda: sp.cancel(mine / theirs), None, FACTOR_WORK)
+            if scale is not None and scale != 1 and not (scale.free_symbols & set(pb.groups.rates)):
+                how = f", even after scaling it by {unicode_text(scale)} to match your coefficient of the acceleration"
+                return answer - scale * truth, how, scale
+    return answer - truth, "", one
+
+
+def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str:
+    """The hint when no known mistake matches: a missing factor of a momentum, else the step's rule."""
+    if pb.step == "momentum" and differ_by_factor(b, a):
+        # the engine's momentum is the answer times a factor free of the velocities: a factor is missing
+        factor = _budgeted(lambda: tidy(sp.cancel(truth / answer), FACTOR_WORK), None, FACTOR_WORK * 2)
+        if factor is not None:
+            template = CONSTANT_FACTOR_HINT if factor_is_constant(b, a) else MISSING_FACTOR_HINT
+            return template.format(factor=unicode_text(factor))
+    # slips read from the answer itself (app/engine/mistake_answer.py)
+    if pb.step in ("kinetic", "lagrangian", "hamiltonian"):
+        found = _budgeted(lambda: missing_square(answer, b, pb.groups), None, ANSWER_SLIP_WORK)
+        if found is not None:
+            return found
+    if pb.step == "equation":
+        found = _budgeted(lambda: linearised(a, truth, pb.groups), None, ANSWER_SLIP_WORK)
+        if found is not None:
+            return found
+    return POINTERS[pb.step]

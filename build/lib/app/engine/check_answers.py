@@ -1,0 +1,137 @@
+"""A student's answer to a step (app/engine/check.py): the names it may use, and its reading.
+
+Each step's answer may name some kinds of name only (U no velocity, an acceleration only in the equation
+step, ω² only the parameters and conserved momenta); ``check_answer`` refuses any other in pure Python,
+with the reason, before the parser's first two gates, so a web process can refuse bad text without SymPy;
+what it read (``app.engine.parse.Parsed``) goes to the worker, where ``parse_answer`` builds it in SymPy
+without reading the text again (docs/parsing.md).
+"""
+
+from __future__ import annotations
+
+import re
+from typing import TYPE_CHECKING
+
+import sympy as sp
+
+from app.engine.parse import MAX_LENGTH, ExpressionError, Parsed, build, narrowed, read, typed
+from app.engine.reality import real_somewhere
+
+if TYPE_CHECKING:  # the problem an answer is read for (imported for its type only)
+    from app.engine.check_problem import Problem
+
+STEPS = ("kinetic", "potential", "lagrangian", "momentum", "equation", "acceleration", "hamiltonian", "omega_squared")
+PER_COORDINATE = frozenset({"momentum", "equation", "acceleration"})
+
+# which kinds of name each step's answer may use
+_KINDS = {
+    "kinetic": {"parameter", "position", "velocity"},
+    "potential": {"parameter", "position"},
+    "lagrangian": {"parameter", "position", "velocity"},
+    "momentum": {"parameter", "position", "velocity"},
+    "equation": {"parameter", "position", "velocity", "acceleration"},
+    "acceleration": {"parameter", "position", "velocity"},
+    "hamiltonian": {"parameter", "position", "velocity"},
+    "omega_squared": {"parameter", "momentum"},
+}
+_WHY_NOT = {
+    ("potential", "velocity"): "U depends on positions only, so a velocity cannot appear in it",
+    ("acceleration", "acceleration"): "the acceleration is what you solve for: write it with the coordinates, "
+    "velocities, parameters and t, without any q_ddot",
+    ("omega_squared", "position"): "ω² at an equilibrium is a constant: write it with the parameters "
+    "(and conserved momenta p_q) only",
+    ("omega_squared", "velocity"): "ω² at an equilibrium is a constant: write it with the parameters "
+    "(and conserved momenta p_q) only",
+    ("omega_squared", "acceleration"): "ω² at an equilibrium is a constant: write it with the parameters "
+    "(and conserved momenta p_q) only",
+}
+_IDENTIFIER = re.compile(r"\b[A-Za-z_][A-Za-z0-9_]*")
+
+
+class CheckError(ExpressionError):
+    """A check request refused; ``field`` is ``step``, ``coordinate`` or ``answer``."""
+
+    def __init__(self, message: str, field: str, part: str = "", start: int | None = None, end: int | None = None):
+        super().__init__(message, part, start, end)
+        self.field = field
+
+    def __reduce__(self):
+        return (_checkerror, (str(self), self.field, self.part, self.start, self.end, self.readings))
+
+
+def _checkerror(message: str, field: str, part: str, start: int | None, end: int | None, readings: tuple) -> CheckError:
+    error = CheckError(message, field, part, start, end)
+    error.readings = readings
+    return error
+
+
+def name_kinds(coordinates: tuple[str, ...], parameters: tuple[str, ...], momenta: tuple[str, ...]) -> dict[str, str]:
+    """Every name a check may mention, with its kind."""
+    kinds = {p: "parameter" for p in parameters}
+    kinds.update({p: "momentum" for p in momenta})
+    kinds["t"] = "position"
+    for q in coordinates:
+        kinds.update({q: "position", f"{q}_dot": "velocity", f"{q}_ddot": "acceleration"})
+    return kinds
+
+
+def allowed_names(step: str, kinds: dict[str, str]) -> list[str]:
+    return sorted(name for name, kind in kinds.items() if kind in _KINDS[step])
+
+
+def answer_error(exc: ExpressionError) -> CheckError:
+    """The parser's refusal of an answer, on the ``answer`` field, word for word (with its two readings, when
+    the text could be read two ways)."""
+    error = CheckError(f"answer: {exc}", "answer", exc.part, exc.start, exc.end)
+    error.readings = exc.readings
+    return error
+
+
+def check_answer(text: str, step: str, kinds: dict[str, str]) -> Parsed:
+    """Read an answer the step can take, in pure Python (the step's name rules, then the parser's gates 1 and
+    2): what was read, for a worker to build without reading the text again; else a CheckError."""
+    if isinstance(text, str) and len(text) <= MAX_LENGTH:
+        try:
+            # the names as the parser reads them (θ' is theta_dot), at the columns they were typed
+            written = typed(text)
+        except ExpressionError as exc:
+            raise answer_error(exc) from None
+        for match in _IDENTIFIER.finditer(written.text):
+            kind = kinds.get(match.group())
+            if kind is not None and kind not in _KINDS[step]:
+                why = _WHY_NOT.get((step, kind)) or (
+                    "an acceleration appears only in the equation step"
+                    if kind == "acceleration"
+                    else f"a {kind} cannot appear in this step"
+                )
+                start, end = written.span(match.start(), match.end())
+                raise CheckError(
+                    f"answer: {why}: {written.given[start:end]!r} at column {start + 1}", "answer", written.given[start:end], start, end
+                )
+    try:
+        return read(text, allowed_names(step, kinds))
+    except ExpressionError as exc:
+        raise answer_error(exc) from None
+
+
+def parse_answer(pb: Problem, answer: Parsed | str, kind: str | None = None) -> sp.Expr:
+    """The answer in SymPy (CheckError on the ``answer`` field when it is not allowed); ``kind`` is the step
+    whose names it may use (a follow-up question's), by default the problem's own.
+
+    ``answer`` is what ``check_answer`` read in the web process, built here without reading the text again;
+    or the text itself, read here, when the web process could not know which names it may use (the answer
+    to a follow-up question on a declared system, whose mistakes only the derivation tells).
+
+    A declared system's answer is read in the web process before the system is derived, with a momentum
+    ``p_q`` for every coordinate (any may turn out conserved), where the problem knows the conserved ones
+    only; every other name has the same kind in both.  So the step's name rules refuse nothing more here,
+    and the reading is held to the problem's own names by ``narrowed``: the answer the reading against them
+    would give, or the same refusal (an ω² naming the momentum of a coordinate that is not cyclic).
+    """
+    kind = kind or pb.step
+    parsed = check_answer(answer, kind, pb.kinds) if isinstance(answer, str) else answer
+    try:
+        parsed = narrowed(parsed, allowed_names(kind, pb.kinds))
+        return real_somewhere(parsed.text, build(parsed, pb.namespace))
+    except ExpressionError as exc:
+        raise answer_error(exc) from None

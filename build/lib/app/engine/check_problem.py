@@ -1,0 +1,191 @@
+"""The problem of one step of one system (app/engine/check.py): the engine's expression for it, how an
+answer may differ from it, the names an answer may use and the mistakes it is diagnosed against.
+
+A problem holds SymPy objects only, so it can be built where the derivation lives and sent to a worker
+process with the student's answer.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from app.engine.check_answers import PER_COORDINATE, STEPS, CheckError, name_kinds
+from app.engine.compare import Groups, Values
+from app.engine.derive import Derivation
+from app.engine.diagnose import catalogue
+from app.engine.dimensions import Dims, system_dimensions
+from app.engine.mistake_families import Mistake
+from app.engine.report import plain_name
+from app.engine.textbook import unicode_text
+
+# how an answer may differ from the truth and still be physically the same
+RELATIONS = {"potential": "constant", "lagrangian": "constant", "hamiltonian": "constant", "equation": "factor"}
+
+
+@dataclass(frozen=True)
+class Problem:
+    """One step of one system, ready to judge answers against."""
+
+    step: str
+    coordinate: str | None
+    label: str
+    truths: tuple[sp.Expr, ...]
+    where: tuple[str, ...]  # for ω²: the equilibrium each truth belongs to
+    relation: str
+    kinds: dict[str, str]
+    namespace: dict[str, sp.Symbol]
+    groups: Groups
+    mistakes: tuple[tuple[Mistake, str, Values], ...]  # (mistake, hint, its values at the sample points)
+    latex_names: dict[sp.Symbol, str]
+    acceleration: sp.Symbol | None = None
+    dimensions: dict[sp.Symbol, Dims] = field(default_factory=dict)  # what the declared units tell
+
+    def mistake(self, key: str) -> Mistake | None:
+        return next((m for m, _, _ in self.mistakes if m.key == key), None)
+
+
+def conserved_momenta(d: Derivation) -> tuple[sp.Symbol, ...]:
+    return d.reduction.momenta if d.reduction is not None else ()
+
+
+def checkable_equilibria(d: Derivation) -> list:
+    """Equilibria whose ω² a student can be asked for: not known to be unstable."""
+    red = d.reduction
+    return [e for e in red.equilibria if e.stable is not False] if red is not None else []
+
+
+def exercises(d: Derivation) -> list[tuple[str, str | None]]:
+    """The steps a student can check for this system, in the chapter's order."""
+    out: list[tuple[str, str | None]] = []
+    for step in STEPS:
+        if step in ("kinetic", "potential") and d.mechanics.T is None:
+            continue
+        if step == "omega_squared" and not checkable_equilibria(d):
+            continue
+        if step in PER_COORDINATE:
+            out += [(step, name) for name in d.table.names]
+        else:
+            out.append((step, None))
+    return out
+
+
+def _unavailable(d: Derivation, step: str) -> str:
+    if step in ("kinetic", "potential"):
+        return "this system is given by its Lagrangian alone, so T and U are not known separately"
+    return "this system has no equilibrium with a closed-form ω² that is not unstable"
+
+
+def _label(step: str, name: str | None, d: Derivation) -> str:
+    shown = plain_name(name) if name else ""
+    return {
+        "kinetic": "kinetic energy T",
+        "potential": "potential energy U",
+        "lagrangian": "Lagrangian L",
+        "momentum": f"momentum conjugate to {shown}",  # no p_θ in running text: an underscore is code
+        "equation": f"Euler–Lagrange equation for {shown}",
+        "acceleration": f"acceleration of {shown}",
+        "hamiltonian": "energy function h",
+        "omega_squared": "ω² of small oscillations",
+    }[step]
+
+
+def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: bool = True) -> Problem:
+    """The problem for one step (a CheckError naming the field when the step or coordinate does not apply).
+
+    With ``mistakes`` the step's catalogue of mistakes is generated and evaluated at the sample points
+    (``app.engine.diagnose``): the costly part, done once per system and step by the service.
+    """
+    table, eqs = d.table, d.equations
+    available = exercises(d)
+    steps = list(dict.fromkeys(s for s, _ in available))
+    if step not in STEPS:
+        raise CheckError(
+            f"step: unknown step {str(step)[:40]!r}; the steps are: {', '.join(steps)}", "step", str(step)[:40]
+        )
+    if step not in steps:
+        raise CheckError(
+            f"step: {step!r} does not apply: {_unavailable(d, step)}; the steps are: {', '.join(steps)}", "step", step
+        )
+    k = None
+    if step in PER_COORDINATE:
+        names = ", ".join(table.names)
+        if not coordinate:
+            raise CheckError(f"coordinate: the {step} step is per coordinate; give one of: {names}", "coordinate")
+        if coordinate not in table.names:
+            raise CheckError(
+                f"coordinate: {str(coordinate)[:40]!r} is not a coordinate of this system; the coordinates are: {names}",
+                "coordinate",
+                str(coordinate)[:40],
+            )
+        k = table.names.index(coordinate)
+    else:
+        coordinate = None
+
+    where: tuple[str, ...] = ()
+    if step == "kinetic":
+        truths = (d.mechanics.T,)
+    elif step == "potential":
+        truths = (d.mechanics.U,)
+    elif step == "lagrangian":
+        truths = (d.mechanics.L,)
+    elif step == "momentum":
+        truths = (eqs.momenta[k],)  # type: ignore[index]
+    elif step == "equation":
+        truths = (eqs.residuals[k],)  # type: ignore[index]
+    elif step == "acceleration":
+        truths = (eqs.accelerations[k],)  # type: ignore[index]
+    elif step == "hamiltonian":
+        truths = (d.energetics.hamiltonian,)
+    else:
+        found = checkable_equilibria(d)
+        truths = tuple(e.omega_squared for e in found)
+        r = d.reduction.coordinate  # type: ignore[union-attr]
+        where = tuple(_at(plain_name(r), e.position) for e in found)
+
+    momenta = conserved_momenta(d)
+    kinds = name_kinds(table.names, table.parameter_names, tuple(p.name for p in momenta))
+    namespace = {**table.namespace(), **{s.name: s for s in table.qdd}, **{p.name: p for p in momenta}}
+    groups = Groups((*table.params, *momenta), (*table.q, table.t), (*table.qd, *table.qdd))
+    latex_names = {**table.latex_names(), **{p: sp.latex(p) for p in momenta}}
+    label = _label(step, coordinate, d)
+    relation = RELATIONS.get(step, "exact")
+    return Problem(
+        step,
+        coordinate,
+        label,
+        truths,
+        where,
+        relation,
+        kinds,
+        namespace,
+        groups,
+        catalogue(d, step, k, truths, groups, relation, short_label(step, label)) if mistakes else (),
+        latex_names,
+        table.qdd[k] if step == "equation" and k is not None else None,
+        system_dimensions(d),
+    )
+
+
+def _at(r: str, position: sp.Expr) -> str:
+    """The equilibrium as a reader writes it: r = 0, or r⁴ = p_θ²/(k m) where the position is a root of an
+    absolute value (never √Abs p_θ/(m^(1/4) k^(1/4)))."""
+    roots = [p.exp.q for p in position.atoms(sp.Pow) if p.exp.is_Rational and p.exp.q > 1]
+    if not roots and not position.has(sp.Abs):
+        return f"{r} = {unicode_text(position)}"
+    n = int(sp.ilcm(*roots, 2)) if roots else 2
+    # an even power of |x| is that power of x
+    power = sp.powsimp(sp.expand_power_base(position**n, force=True), force=True).replace(sp.Abs, lambda x: x)
+    power = sp.factor(sp.powsimp(power, force=True))
+    if power.has(sp.Abs) or any(p.exp.is_Rational and p.exp.q > 1 for p in power.atoms(sp.Pow)):
+        return f"the equilibrium of {r}"
+    superscript = str(n).translate(str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹"))
+    return f"{r}{superscript} = {unicode_text(power)}"
+
+
+def short_label(step: str, label: str) -> str:
+    """The label as a hint names it: 'T', 'U', 'equation for θ'."""
+    return {"kinetic": "T", "potential": "U", "lagrangian": "L", "hamiltonian": "h"}.get(
+        step, label.replace("Euler–Lagrange ", "")
+    )

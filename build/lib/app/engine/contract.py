@@ -1,0 +1,391 @@
+"""The derivation JSON served by the API (the contract later issues rely on)."""
+
+from __future__ import annotations
+
+from typing import Any, TypeVar
+
+import sympy as sp
+
+from app.engine import meaning, notation
+from app.engine.budget import Skipped, bounded, display_budget, display_work_left, is_zero, pythagoras, within_budget
+from app.engine.constraints import ConstraintForce
+from app.engine.derive import LARGE_FROM, Derivation
+from app.engine.errata import errata_json
+from app.engine.names import display_names
+from app.engine.report import (
+    Printer,
+    build_steps,
+    conserved_form,
+    effective_potential,
+    energies,
+    equation_pairs,
+    lagrangian,
+    momentum,
+)
+from app.engine.report import display as _show
+from app.engine.report_members import constraint_steps, new_lagrangian, transform_steps
+from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
+from app.engine.rods import fixed_distances
+from app.engine.transform import Transformed
+from app.engine.trees import maybe_of_sympy
+from app.limits import DISPLAY_WORK, FIRST_DISPLAY_WORK, LARGE_DISPLAY_WORK
+from app.scenes.reasons import reason
+from app.scenes.types import Parameter, Scene
+
+T = TypeVar("T")
+
+
+def parameters_json(parameters: tuple[Parameter, ...]) -> dict[str, dict[str, Any]]:
+    """Parameter name -> default, unit, allowed range and description."""
+    return {
+        p.name: {"default": p.default, "unit": p.unit, "min": p.min, "max": p.max, "description": p.description}
+        for p in parameters
+    }
+
+
+# Each member of the document beyond the equations is computed within its own bound (the derivation's
+# MEMBER_WORK, app.engine.derive); printing it has a bound of the same length. One that runs out is left
+# out with a note in "skipped", never a refusal of the system.
+
+
+def derivation_json(d: Derivation, scene: Scene | None = None, beyond: bool = True) -> dict[str, Any]:
+    """Everything derived, with each expression as a sympy string and LaTeX.
+
+    ``scene``, for a chapter scene, adds the scene block and the chapter's errata.
+    ``beyond`` adds Hamilton's equations and the normal modes (steps and JSON).
+    All display simplification shares one bound of work (DISPLAY_WORK); each member beyond the
+    equations has its own bound (MEMBER_WORK), and ``skipped`` lists those left out and why.
+    """
+    units = DISPLAY_WORK if len(d.table.names) < LARGE_FROM else LARGE_DISPLAY_WORK
+    with display_budget(units):
+        return _derivation_json(d, scene, beyond)
+
+
+def held_momenta(d: Derivation, scene: Scene | None) -> dict[str, float]:
+    """The conserved momenta of a reduction at the scene's initial state and default parameters."""
+    red = d.reduction
+    if red is None or not red.momenta or scene is None:
+        return {}
+    table = d.table
+    values = {s: p.default for s, p in zip(table.params, d.system.parameters, strict=True)}
+    values.update({s: scene.initial.get(s.name, 0.0) for s in (*table.q, *table.qd)})
+    return {
+        P.name: float(d.equations.momenta[table.names.index(P.name[2:])].xreplace(values).evalf()) for P in red.momenta
+    }
+
+
+def angle_coordinates(d: Derivation) -> list[str]:
+    """Coordinates that are angles: each is, alone, the argument of sin, cos or tan in the positions or in L."""
+    exprs = [c for r in d.mechanics.positions for c in r] + [d.mechanics.L]
+    arguments = {f.args[0] for e in exprs for f in sp.sympify(e).atoms(sp.sin, sp.cos, sp.tan)}
+    return [name for name, q in zip(d.table.names, d.table.q, strict=True) if q in arguments or -q in arguments]
+
+
+def symbol_names(d: Derivation) -> dict[str, dict[str, str]]:
+    """How every name the document uses is written (LaTeX, Unicode, plain): read by pages, plots and exports."""
+    q = d.table.names
+    conserved = [c.name for c in d.energetics.conserved]
+    momenta = [f"p_{n}" for n in q]
+    return display_names(
+        dict.fromkeys([*q, *(f"{n}_dot" for n in q), *(f"{n}_ddot" for n in q), *d.table.parameter_names, "t",
+                       *momenta, *conserved])
+    )  # fmt: skip
+
+
+def _shown(expr: sp.Expr) -> sp.Expr:
+    """The display form within what is left of the display budget; SymPy's own form when it runs out."""
+    return within_budget(lambda: _show(expr), expr, max(display_work_left(DISPLAY_WORK), 1_000))
+
+
+def _member(value: T | Skipped, fallback: T, skipped: list[Skipped]) -> T:
+    """A member's value; a skipped one's note goes to ``skipped`` and ``fallback`` is printed."""
+    if isinstance(value, Skipped):
+        skipped.append(value)
+        return fallback
+    return value
+
+
+def _equation_pairs(d: Derivation, pr: Printer) -> list[dict[str, Any]]:
+    """The equations in their textbook rows within what is left of the display budget, else each residual = 0."""
+    pairs = within_budget(lambda: equation_pairs(d, pr), None, max(display_work_left(DISPLAY_WORK), 10_000))
+    if pairs is not None:
+        return pairs
+    return [pr.shown(r, f"{pr.tex(r)} = 0", r) for r in d.equations.residuals]
+
+
+def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[str, Any]:
+    """Each q_ddot in closed form, or none (with a note) when the engine kept it as M⁻¹f."""
+    eqs = d.equations
+    if eqs.closed_form:
+        return {name: pr.pair(_shown(a)) for name, a in zip(d.table.names, eqs.accelerations, strict=True)}
+    skipped.append(Skipped(
+        "accelerations",
+        "The accelerations in closed form are left out: solving M q̈ = f symbolically gives expressions too long "
+        f"to read ({eqs.closed_form_reason}), so they stay M⁻¹f, with the mass matrix M and the forcing f shown, "
+        "solved numerically.",
+    ))  # fmt: skip
+    return {}
+
+
+def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) -> dict[str, Any]:
+    table, eqs, en, red = d.table, d.equations, d.energetics, d.reduction
+    pr = Printer(table.latex_names())
+    skipped: list[Skipped] = list(d.skipped)
+    none: tuple[ConstraintForce, ...] = ()
+    forces = _member(d.constraint_forces, none, skipped)
+    transformed = _transformed(d, skipped)
+    no_steps: list[dict[str, str]] = []
+    result: dict[str, Any] = {
+        "coordinates": list(table.names),
+        "angles": angle_coordinates(d),
+        "symbols": symbol_names(d),
+        # every letter of the document once, with what it stands for (app/engine/notation.py)
+        "notation": notation.table(d, forces, transformed[0] if transformed is not None else None),
+        "parameters": parameters_json(d.system.parameters),
+        "kinetic": pr.pair(d.mechanics.T) if d.mechanics.T is not None else None,
+        "potential": pr.pair(d.mechanics.U) if d.mechanics.U is not None else None,
+        "lagrangian": pr.pair(lagrangian(d, pr)),
+        # h and E from the same pieces as T and U; each equation's text is the scaled residual its row shows
+        **dict(zip(("hamiltonian", "energy"), map(pr.pair, energies(d, pr)), strict=True)),
+        "equations_of_motion": [
+            {"coordinate": name, **pair} for name, pair in zip(table.names, _equation_pairs(d, pr), strict=True)
+        ],
+        "accelerations": _accelerations(d, pr, skipped),
+        "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],
+        "forcing": [pr.pair(_shown(x)) for x in eqs.forcing],
+        "momenta": {name: pr.pair(momentum(d, k)) for k, name in enumerate(table.names)},
+        # particles held at a fixed distance from the origin or from each other (rods for the drawing)
+        "fixed_distances": fixed_distances(d),
+        "generalized_forces": {name: pr.pair(f) for name, f in zip(table.names, d.mechanics.Q, strict=True) if f != 0},
+        "cyclic": list(en.cyclic),
+        "conserved": [
+            {"name": c.name, "latex_name": c.latex_name, **pr.pair(conserved_form(d, pr, c.expr)), "reason": c.reason}
+            for c in en.conserved
+        ],
+        "explicit_time_derivative": pr.pair(en.dL_dt),
+        "hamiltonian_equals_energy": en.h_equals_e,
+        "hamiltonian_energy_reason": en.reason,
+        "hamiltonian_conserved": en.h_conserved,
+        "hamiltonian_conserved_reason": en.h_conserved_reason,
+        "energy_minus_hamiltonian": pr.pair(en.energy_minus_h),
+        "effective_potential": None,
+        "steps": bounded(
+            "steps",
+            "The step-by-step derivation",
+            d.member_work("steps"),
+            lambda: _steps(d, forces, pr, transformed),
+            no_steps,
+            skipped,
+        ),  # fmt: skip
+        "scene": scene_json(scene) if scene is not None else None,
+        "errata": errata_json(scene, pr.names) if scene else [],
+        "constraint_forces": [constraint_force_json(f, pr) for f in forces],
+        "transformed": transformed[1] if transformed is not None else None,
+        "hamilton": None,
+        "normal_modes": [],
+        "skipped": [],
+    }
+    if red is not None:
+        result["effective_potential"] = {
+            "coordinate": red.coordinate,
+            "momenta": [s.name for s in red.momenta],
+            "potential": pr.pair(effective_potential(d), red.momenta[0] if red.momenta else None),
+            "mass": pr.pair(red.effective_mass),
+            "condition": pr.pair(red.equilibrium_condition),
+            "omega_squared": pr.pair(red.omega_squared_at),
+            "equilibria": [
+                {"position": pr.pair(e.position), "omega_squared": pr.pair(e.omega_squared), "stable": e.stable}
+                for e in red.equilibria
+            ],
+        }
+    if beyond:
+        # built last, so that they never take the chapter's steps' share of the display budget
+        add_beyond(d, scene, result, pr, skipped)
+    if scene is not None:
+        # a chapter scene explains each step in its own terms; the generic sentence stays otherwise
+        result["steps"] = [
+            {**s, "explanation": reason(scene.reasons, s["key"]) or s["explanation"]} for s in result["steps"]
+        ]
+    result["skipped"] = [{"member": s.member, "reason": s.reason} for s in skipped]
+    return result
+
+
+def _transformed(d: Derivation, skipped: list[Skipped]) -> tuple[Transformed, dict[str, Any]] | None:
+    """The declared change of coordinates and its print (None when none is declared), each within its bound."""
+    tr = _member(d.transformed, None, skipped)
+    if tr is None:
+        return None
+    what = "The derivation in the declared new coordinates"
+    printed = bounded("transformed", what, d.member_work("transformed"), lambda: transformed_json(tr), None, skipped)
+    return (tr, printed) if printed is not None else None
+
+
+def _steps(
+    d: Derivation, forces: tuple[ConstraintForce, ...], pr: Printer, transformed: tuple[Transformed, Any] | None
+) -> list[dict[str, str]]:
+    return build_steps(d) + constraint_steps(forces, pr) + (transform_steps(transformed[0]) if transformed else [])
+
+
+def add_beyond(
+    d: Derivation, scene: Scene | None, result: dict[str, Any], pr: Printer, skipped: list[Skipped] | None = None
+) -> None:
+    """Hamilton's equations after h, the normal modes after them: steps and JSON, each within its own bound."""
+    skipped = [] if skipped is None else skipped
+    ham = None
+    h = _member(d.hamilton, None, skipped)
+    if h is not None:
+        ham = bounded("hamilton", "Hamilton's equations", d.member_work("hamilton"),
+                      lambda: (h, hamilton_steps(d, h), hamilton_json(d, h)), None, skipped)  # fmt: skip
+    modes = None
+    nm = _member(d.normal_modes(held_momenta(d, scene)), None, skipped)
+    if nm is not None:
+        modes = bounded("normal_modes", "The equilibria and normal modes", d.member_work("normal_modes"),
+                        lambda: (normal_mode_steps(d, nm), normal_modes_json(nm, pr)), None, skipped)  # fmt: skip
+    steps = result["steps"]
+    keys = [s["key"] for s in steps]
+    # Hamilton's equations right after h (and after the power of the forces when there is one)
+    after = max(
+        (i + 1 for i, k in enumerate(keys) if k in ("hamiltonian", "h-vs-e", "power")),
+        default=len(steps),
+    )
+    # the normal modes after the chapter's own steps, before constraint forces and coordinate changes
+    end = next((i for i, k in enumerate(keys) if k in ("constraints", "change-of-coordinates")), len(steps))
+    result["steps"] = (
+        steps[:after] + (ham[1] if ham else []) + steps[after:end] + (modes[0] if modes else []) + steps[end:]
+    )
+    result["hamilton"] = ham[2] if ham else None
+    result["normal_modes"] = modes[1] if modes else []
+
+
+def scene_json(scene: Scene) -> dict[str, Any]:
+    """The scene as data, the one place it is written out: what the API lists, the document's ``scene`` block
+    and the page's facts (statement, figure, panels, defaults, events, the family it is drawn as)."""
+    return {
+        "id": scene.id,
+        "title": scene.title,
+        "section": scene.section,
+        "summary": scene.summary,
+        "statement": scene.statement,
+        "figure": scene.figure,
+        "coordinates": list(scene.system.coordinates),
+        "parameters": parameters_json(scene.system.parameters),
+        "initial": dict(scene.initial),
+        "t_end": scene.t_end,
+        "panels": list(scene.panels),
+        "beyond_chapter": scene.beyond_chapter,
+        "events": [{"name": e.name, "expression": e.expression, "message": e.message} for e in scene.events],
+        "family": scene.family,
+        "marks": list(scene.marks),
+    }
+
+
+def constraint_force_json(f: ConstraintForce, pr: Printer) -> dict[str, Any]:
+    """One force of constraint: a function of q, q_dot, t and parameters, with its sign convention."""
+    direction = unit_gradient(f)
+    return {
+        "name": f.constraint.name,
+        **pr.pair(f.force),
+        "convention": f.constraint.convention,
+        "slack_when_negative": f.constraint.slack_when_negative,
+        "constraint": pr.pair(f.g),
+        "particle": f.constraint.on,
+        # the unit vector along grad g on that particle (the way a positive force points), for drawing
+        "direction": [sp.sstr(e) for e in direction],
+        "direction_trees": [maybe_of_sympy(e) for e in direction],
+        # every particle the force acts on (a string's tension pulls each mass it holds), for drawing
+        "acts_on": acting_on(f),
+    }
+
+
+def acting_on(f: ConstraintForce) -> list[dict[str, Any]]:
+    """Each particle i with grad_i g ≠ 0: its number (from 1), the unit vector along grad_i g, and the ratio
+    |grad_i g| / |grad_on g|: the force on i is the reported signed size times that ratio along that vector."""
+    out = []
+    norm_on = sp.sqrt(pythagoras(sp.expand(sum(e**2 for e in f.gradient))))
+    for i, grad in enumerate(f.gradients, start=1):
+        if all(e == 0 or is_zero(e) for e in grad):
+            continue
+        norm = sp.sqrt(pythagoras(sp.expand(sum(e**2 for e in grad))))
+        out.append({
+            "particle": i,
+            "ratio_tree": maybe_of_sympy(norm / norm_on),
+            "direction_trees": [maybe_of_sympy(e / norm) for e in grad],
+        })  # fmt: skip
+    return out
+
+
+def unit_gradient(f: ConstraintForce) -> tuple[sp.Expr, ...]:
+    """grad_i g / |grad_i g| on the motion, with sin² + cos² = 1 collapsed in |grad_i g|²."""
+    norm = sp.sqrt(pythagoras(sp.expand(sum(e**2 for e in f.gradient))))
+    return tuple(e / norm for e in f.gradient)
+
+
+def _original(tr: Transformed, expr: sp.Expr) -> sp.Expr:
+    """A conserved quantity of the new coordinates in the original ones, by meaning: a momentum grouped by
+    velocity, an energy with its springs' squares (½k(x₂ − x₁ − l₀)², never multiplied out)."""
+    back = tr.to_original(expr)
+    velocities = sorted((s for s in back.free_symbols if s.name.endswith("_dot")), key=str)
+    if sp.Poly(back, *velocities).total_degree() <= 1 if velocities else False:
+        return _show(meaning.by_velocity(back, velocities))
+    return _show(meaning.springs(back, tr.original.q))
+
+
+def transformed_json(tr: Transformed) -> dict[str, Any]:
+    """The derivation again in the declared new coordinates, with the maps between the two sets."""
+    d = tr.derivation
+    old = Printer(tr.original.latex_names())
+    pr = Printer(d.table.latex_names())
+    names = d.table.names
+    full = derivation_json(d, beyond=False)
+    by_name = {c.name: c for c in d.energetics.conserved}
+    return {
+        "coordinates": list(names),
+        "definitions": {name: old.pair(f) for name, f in zip(names, tr.definitions, strict=True)},
+        "inverse": {q.name: pr.pair(e) for q, e in tr.inverse.items()},
+        "lagrangian": pr.pair(new_lagrangian(tr)),
+        **{key: full[key] for key in ("accelerations", "momenta", "mass_matrix", "cyclic", "effective_potential")},
+        "conserved": [
+            {**c, "original": old.pair(_original(tr, by_name[c["name"]].expr))} for c in full["conserved"]
+        ],
+        "inertia": {n: pr.pair(m) for n, m in zip(names, tr.inertia, strict=True)},
+        "reduced_mass": pr.pair(tr.reduced_mass) if tr.reduced_mass is not None else None,
+    }
+
+
+# What the whole document adds to the first stage, as the page names it while it waits.
+PENDING = (
+    ("steps", "the step-by-step derivation"),
+    ("conserved", "the conserved quantities"),
+    ("momenta", "the generalized momenta"),
+    ("hamilton", "Hamilton's equations"),
+    ("normal_modes", "the normal modes"),
+)
+
+
+def first_stage(d: Derivation) -> dict[str, Any]:
+    """The first stage of a document (the playground shows it while the rest is derived): the equations of
+    motion and the accelerations (or M and f when they stay M⁻¹f), printed, with what is still pending."""
+    table, eqs = d.table, d.equations
+    pr = Printer(table.latex_names())
+    skipped: list[Skipped] = []
+    with display_budget(FIRST_DISPLAY_WORK):
+        # the equations first: what the student waits for; the rest of this stage shares what is left
+        equations = _equation_pairs(d, pr)
+        accelerations = _accelerations(d, pr, skipped)
+        document = {
+            "stage": "equations",
+            "coordinates": list(table.names),
+            "angles": angle_coordinates(d),
+            "symbols": symbol_names(d),
+            "notation": notation.table(d),
+            "parameters": parameters_json(d.system.parameters),
+            "equations_of_motion": [
+                {"coordinate": name, **pair} for name, pair in zip(table.names, equations, strict=True)
+            ],
+            "accelerations": accelerations,
+            "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],
+            "forcing": [pr.pair(_shown(x)) for x in eqs.forcing] if not eqs.closed_form else [],
+            "skipped": [{"member": s.member, "reason": s.reason} for s in skipped],
+            "pending": [{"member": member, "name": name} for member, name in PENDING],
+        }
+    return document

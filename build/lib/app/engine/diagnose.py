@@ -1,0 +1,291 @@
+"""Name the mistake in a wrong answer: the catalogue of one step's mistakes, the match, and the words.
+
+The catalogue of a step is the generated mistakes of ``app.engine.mistake_families``
+(most specific first), then the rules every system invites (``app.engine.mistakes``),
+then pairs of mistakes where the combinations are few (a generated mistake of T
+together with the lost ½; a spring's natural length together with the sign of U).
+Each comes with its values at the checker's sample points, computed once when
+the problem is built (the service caches problems per system), and a mistake
+whose values repeat an earlier one's (up to the step's accepted constant or
+factor) or the truth's is dropped: the first name is the one given.
+
+An answer matches a mistake when it equals it at every sample point, up to the
+same constant or factor an answer may differ from the truth by.  When no
+mistake matches, ``agreement`` compares the answer with the truth part by part
+(the terms of each product of velocities and accelerations, and the rest) and
+says which parts agree.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import Any
+
+import sympy as sp
+
+from app.engine.compare import Groups, Values, differ_by_constant, differ_by_factor, equal, usable, values
+from app.engine.derive import Derivation
+from app.engine.dimensions import mismatch, system_dimensions
+from app.engine.mistake_equations import generated
+from app.engine.mistake_families import Mistake, monomial_words, spoken
+from app.engine.mistake_other import held_still, other_coordinates
+from app.engine.mistake_pieces import effective_terms, piece_mistakes, travelled
+from app.engine.mistakes import OMEGA_HINT, RULES
+
+MIN_POINTS = 6
+MAX_PAIRS = 12
+GENERIC = frozenset({"term_sign"})
+
+# How a hint opens, by family: {what} is the step's label, {name} the mistake's name.
+_OPENINGS = {
+    "term_sign": "In your {what}, {name} is reversed",
+    "force_sign": "In your {what}, {name} is reversed",
+    "half_momentum": "Your {what} loses {name}",
+    "force_doubled": "Your {what} has {name}",
+    "small_angle": "Your {what} uses {name}. That is an approximation, not a slip of algebra",
+    "other_equilibrium": "This is {name}",
+    "pair": "Your {what} has two mistakes: {name}",
+    "counted_twice": "Your {what} has {name}",
+    "doubled": "Your {what} has {name}",
+    "halved": "Your {what} has {name}",
+    "velocity_doubled": "Your {what} has {name}",
+    "inner_sign": "Your {what} has {name}",
+    "sin_cos": "Your {what} has {name}",
+    "travelled": "Your {what} follows from {name}",
+    "rigid": "Your {what} has {name}",
+    "factor_left_out": "Your {what} has {name}",
+    "units": "Your {what} has {name}",
+    "other_coordinate": "Your {what} is {name}",
+    "limit": "Your {what} is {name}",
+}
+
+
+def sentence(m: Mistake, what: str) -> str:
+    """The hint for a generated mistake: what went wrong, then where in the set-up it comes from."""
+    opening = _OPENINGS.get(m.family, "Your {what} leaves out {name}").format(what=what, name=m.name)
+    return f"{opening}: {m.where}."
+
+
+def _same(a: Values, b: Values, relation: str) -> bool:
+    return (
+        equal(a, b)
+        or (relation == "constant" and differ_by_constant(a, b))
+        or (relation == "factor" and differ_by_factor(a, b))
+    )
+
+
+def _legacy(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> list[tuple[Mistake, str]]:
+    out = []
+    for rule in RULES:
+        if step not in rule.steps:
+            continue
+        built = rule.build(d, step, k)
+        if built is None or sp.expand(built - truth) == 0:
+            continue
+        hint = rule.hint
+        if rule.mistake == "h_is_e":
+            hint += _why_h_is_not_e(d)
+        # the piece of an acceleration's mistake is too long to name: the difference shows it
+        piece = None if step == "acceleration" else sp.expand(built - truth)
+        out.append((Mistake(rule.mistake, rule.mistake, rule.name, piece, rule.hint, built), hint))
+    return out
+
+
+def _why_h_is_not_e(d: Derivation) -> str:
+    """Which body's position depends on t itself (what makes h ≠ E here)."""
+    for i, r in enumerate(d.mechanics.positions):
+        if any(c.has(d.table.t) for c in r):
+            label = d.system.particles[i].label if i < len(d.system.particles) else ""
+            body = label or f"particle {i + 1}"
+            shown = ", ".join(spoken(c) for c in r)
+            return f" Here the {body}'s position ({shown}) depends on t itself."
+    return ""
+
+
+def catalogue(
+    d: Derivation, step: str, k: int | None, truths: tuple[sp.Expr, ...], groups: Groups, relation: str, label: str
+) -> tuple[tuple[Mistake, str, Values], ...]:
+    """(mistake, hint, values) for every distinct mistake of the step, in the order they are tried."""
+    truth = truths[0]
+    asked = _asked(d, truths)
+    made = [(m, sentence(m, label)) for m in generated(d, step, k, asked)]
+    known = system_dimensions(d)
+    # the mistakes of T and U carried into this step, and a rigid body's (backward: from the system's pieces)
+    carried = [(m, sentence(m, label)) for m in travelled(d, step, k, truth, known, asked)]
+    carried += [(m, sentence(m, label)) for m in effective_terms(d, asked)] if step == "omega_squared" else []
+    pieces = [(m, sentence(m, label)) for m in piece_mistakes(d, step, k, truth)]
+    # the specific ones first, then the rules every system invites, then the truth's own pieces changed one at a
+    # time, then a term's sign (which for a short expression is also the sign of everything else, and would hide
+    # a rule's better name)
+    # another question's right answer (another coordinate's, a body held still) is named as that, before all
+    found = [(m, sentence(m, label)) for m in (*other_coordinates(d, step, k), *held_still(d, step, truth))]
+    found += [x for x in made if x[0].family not in GENERIC]
+    found += [x for x in carried if x[0].key.startswith(f"{step}.rigid")]
+    found += _legacy(d, step, k, truth)
+    found += [x for x in carried if not x[0].key.startswith(f"{step}.rigid")]
+    found += pieces
+    found += [x for x in made if x[0].family in GENERIC]
+    if step == "omega_squared":
+        found += [
+            (Mistake("omega_not_squared", "omega_not_squared", "ω in place of ω²", sp.sqrt(w2), OMEGA_HINT,
+                     sp.sqrt(w2)), OMEGA_HINT)
+            for w2 in truths
+        ]  # fmt: skip
+    found += _pairs(d, step, found, label)
+    kept: list[tuple[Mistake, str, Values]] = []
+    truth_values = [values(t, groups) for t in truths]
+    for mistake, hint in found:
+        if mismatch(mistake.expr, known, None, label) is not None:
+            continue  # terms whose units disagree: the units name it first (app.engine.check)
+        v = values(mistake.expr, groups)
+        if any(usable(v, b) < MIN_POINTS or _same(v, b, relation) for b in truth_values):
+            continue
+        # a repeat of an earlier mistake's values is dropped; one equal to it only up to a factor is kept, since
+        # the answer's own scale tells them apart (2 m g R sin θ beside m R² θ̈ is gravity counted twice, not
+        # the ½ of m R² θ̈ lost)
+        if any(
+            equal(v, w)
+            or (relation == "constant" and differ_by_constant(v, w))
+            or (relation == "factor" and equal(_negated(v), w))  # the same equation moved to the other side
+            for _, _, w in kept
+        ):
+            continue
+        kept.append((mistake, hint, v))
+    return tuple(kept)
+
+
+def _asked(d: Derivation, truths: tuple[sp.Expr, ...]) -> list:
+    red = d.reduction
+    return [e for e in red.equilibria if e.omega_squared in truths] if red is not None else []
+
+
+def _pairs(d: Derivation, step: str, found: list[tuple[Mistake, str]], label: str) -> list[tuple[Mistake, str]]:
+    """Two mistakes at once, where the combinations are few."""
+    out = []
+    if step == "kinetic":
+        for m, _ in found:
+            if m.count == 1 and m.family in ("velocity_part", "moving_constraint", "cross_term", "body_forgotten"):
+                pair = replace(
+                    m,
+                    key=f"{m.key}+missing_half",
+                    family="pair",
+                    name=f"{m.name} is left out, and the ½ of ½ m v² is missing",
+                    expr=2 * m.expr,
+                    count=2,
+                )
+                out.append((pair, sentence(pair, label)))
+    elif step == "potential":
+        for m, _ in found:
+            if m.family == "natural_length":
+                pair = replace(
+                    m,
+                    key=f"{m.key}+sign_of_u",
+                    family="pair",
+                    name=f"{m.name} is left out, and the sign of U is reversed",
+                    expr=-m.expr,
+                    count=2,
+                )
+                out.append((pair, sentence(pair, label)))
+    return out[:MAX_PAIRS]
+
+
+def match(
+    catalogue_: tuple[tuple[Mistake, str, Values], ...],
+    a: Values,
+    b: Values,
+    relation: str,
+    scaled: Values | None = None,
+) -> tuple[Mistake, str] | None:
+    """The mistake the answer's values match: first one it equals as written, then (an equation) one it equals
+    at the engine's coefficient of the acceleration (``scaled``), then the first up to the step's accepted
+    constant or factor."""
+    tried = [(m, h, v) for m, h, v in catalogue_ if usable(a, v) >= MIN_POINTS and not equal(v, b)]
+    negated = _negated(a) if relation == "factor" else None
+    for test in (lambda v: equal(a, v), lambda v: negated is not None and equal(negated, v),
+                 lambda v: scaled is not None and equal(scaled, v), lambda v: _same(a, v, relation)):  # fmt: skip
+        for mistake, hint, v in tried:
+            if test(v):
+                return mistake, hint
+    return None
+
+
+def _negated(a: Values) -> Values:
+    """An equation moved to the other side: every value's sign reversed."""
+    return [[[None if x is None else -x for x in block] for block in draw] for draw in a]
+
+
+def mistake_json(m: Mistake, tex, difference: str = "") -> dict[str, Any]:
+    """The API's ``mistake``: a stable key for records, display text, the piece typeset (the difference's
+    LaTeX where the piece is not named) and where it comes from."""
+    return {
+        "key": m.key,
+        "family": m.family,
+        "name": m.name,
+        "latex": tex(m.piece) if m.piece is not None else difference,
+        "where": m.where,
+        "approximation": m.approximation,
+        "count": m.count,
+    }
+
+
+def partial_json(m: Mistake, label: str) -> dict[str, Any]:
+    message = (
+        f"Everything else in your {label} is right."
+        if m.count == 1
+        else f"Apart from these {m.count} mistakes, everything else in your {label} is right."
+    )
+    return {"message": message, "agree": [], "differ": []}
+
+
+def follow_up_json(m: Mistake, names: list[str]) -> dict[str, Any] | None:
+    if m.follow_up is None:
+        return None
+    return {"key": m.key, "question": m.follow_up.question, "names": names}
+
+
+# ---- part by part ------------------------------------------------------------------------------
+
+
+def agreement(answer: sp.Expr, truth: sp.Expr, groups: Groups, step: str) -> dict[str, Any] | None:
+    """Which parts of the answer agree with the truth: the terms of each product of rates, and the rest.
+
+    Both are split by their products of velocities and accelerations (θ̇², θ̇ φ̇, θ̈, none); each
+    part's coefficient is compared at the sample points.  None when the answer is not a polynomial in
+    the rates or has a single part.
+    """
+    rates = groups.rates
+    try:
+        mine, theirs = _parts(answer, rates), _parts(truth, rates)
+    except (sp.PolynomialError, ValueError, TypeError):
+        return None
+    if mine is None or theirs is None:
+        return None
+    monomials = sorted(set(mine) | set(theirs), key=sp.default_sort_key)
+    if len(monomials) < 2:
+        return None
+    agree: list[str] = []
+    differ: list[str] = []
+    zero = sp.Integer(0)
+    for monomial in monomials:
+        a = values(mine.get(monomial, zero), groups)
+        b = values(theirs.get(monomial, zero), groups)
+        (agree if equal(a, b) else differ).append(monomial_words(monomial))
+    if not agree:
+        return {"message": "No part of your answer agrees with the correct one yet.", "agree": [], "differ": differ}
+    return {
+        "message": f"Part by part: {', '.join(agree)} agree with the correct ones; {', '.join(differ)} do not.",
+        "agree": agree,
+        "differ": differ,
+    }
+
+
+def _parts(expr: sp.Expr, rates: tuple[sp.Symbol, ...]) -> dict[sp.Expr, sp.Expr] | None:
+    present = [r for r in rates if expr.has(r)]
+    expanded = sp.expand(expr)
+    out: dict[sp.Expr, sp.Expr] = {}
+    for term in sp.Add.make_args(expanded):
+        coefficient, monomial = term.as_independent(*present, as_Add=False) if present else (term, sp.Integer(1))
+        if monomial != 1 and not all(b in rates and e.is_Integer for b, e in monomial.as_powers_dict().items()):
+            return None
+        out[monomial] = out.get(monomial, sp.Integer(0)) + coefficient
+    return out

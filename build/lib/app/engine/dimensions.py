@@ -1,0 +1,261 @@
+"""Dimensions of parameters, coordinates and answers: the one home of units (kg, m, s) in the engine.
+
+A parameter's dimension comes from the unit it declares (``parse_unit``: "N/m" is kg s⁻²).  A
+coordinate that appears inside a sine or cosine is an angle (dimensionless); another one's follows
+from the kinetic energy, an energy: ½ M_qq q̇² has kg m² s⁻², so [q]² = kg m² / [M_qq] (solved in
+passes, since M_θθ = m r² needs r first).  A rate is [q]/s, an acceleration [q]/s².
+
+``mismatch`` walks an answer: every term of a sum must have one dimension, the argument of a
+function none; the first offence is returned in words ("m + g adds a mass to an acceleration").
+Nothing is decided where a name's dimension is unknown (no unit declared): a missing verdict is
+honest, a wrong one is not.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import TYPE_CHECKING
+
+import sympy as sp
+
+from app.engine.mistake_families import spoken
+
+if TYPE_CHECKING:
+    from app.engine.derive import Derivation
+
+Dims = dict[str, Fraction]  # exponents of kg, m, s
+
+_BASE: dict[str, Dims] = {
+    "kg": {"kg": Fraction(1)},
+    "m": {"m": Fraction(1)},
+    "s": {"s": Fraction(1)},
+    "N": {"kg": Fraction(1), "m": Fraction(1), "s": Fraction(-2)},
+    "J": {"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-2)},
+    "W": {"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-3)},
+    "Pa": {"kg": Fraction(1), "m": Fraction(-1), "s": Fraction(-2)},
+    "Hz": {"s": Fraction(-1)},
+    "rad": {},
+    "1": {},
+}
+_SUPERSCRIPTS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻", "0123456789-")
+_FACTOR = re.compile(r"^([A-Za-z]+|1)(?:\^|\*\*)?(-?\d+)?$")
+MAX_NODES = 400  # an answer longer than this is not walked (its dimensions say nothing new)
+
+ENERGY: Dims = {"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-2)}
+
+# quantities a student recognises, by dimension
+_WORDS = [
+    ({}, "a pure number"),
+    ({"kg": Fraction(1)}, "a mass"),
+    ({"m": Fraction(1)}, "a length"),
+    ({"s": Fraction(1)}, "a time"),
+    ({"m": Fraction(1), "s": Fraction(-2)}, "an acceleration"),
+    ({"m": Fraction(1), "s": Fraction(-1)}, "a speed"),
+    ({"s": Fraction(-1)}, "a rate (1/s)"),
+    ({"s": Fraction(-2)}, "a squared rate (1/s²)"),
+    ({"s": Fraction(2)}, "a squared time (s²)"),
+    ({"m": Fraction(2), "s": Fraction(-2)}, "a squared speed"),
+    (ENERGY, "an energy"),
+    ({"kg": Fraction(1), "m": Fraction(1), "s": Fraction(-2)}, "a force"),
+    ({"kg": Fraction(1), "s": Fraction(-2)}, "a spring constant (kg/s²)"),
+    ({"kg": Fraction(1), "m": Fraction(1), "s": Fraction(-1)}, "a momentum"),
+    ({"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-1)}, "an angular momentum"),
+    ({"kg": Fraction(1), "m": Fraction(2)}, "a moment of inertia"),
+    ({"m": Fraction(-1)}, "an inverse length (1/m)"),
+    ({"m": Fraction(2)}, "an area"),
+]
+_SUPER = str.maketrans("-0123456789/", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹ᐟ")
+
+
+def add_dims(a: Dims, b: Dims, times: Fraction = Fraction(1)) -> Dims:
+    out = dict(a)
+    for k, v in b.items():
+        out[k] = out.get(k, Fraction(0)) + times * v
+    return {k: v for k, v in out.items() if v}
+
+
+def parse_unit(text: str) -> Dims | None:
+    """ "N/m" -> kg s⁻²; "kg·m²" -> kg m²; "" or anything not understood -> None."""
+    text = text.strip().translate(_SUPERSCRIPTS).replace("·", "*").replace("⋅", "*").replace(" ", "*")
+    if not text:
+        return None
+    parts = text.split("/")
+    out: Dims = {}
+    for i, part in enumerate(parts):
+        for factor in filter(None, part.replace("**", "^").split("*")):
+            m = _FACTOR.match(factor)
+            if not m or m.group(1) not in _BASE:
+                return None
+            power = Fraction(int(m.group(2) or 1))
+            out = add_dims(out, _BASE[m.group(1)], power if i == 0 else -power)
+    return out
+
+
+def unit_text(d: Dims) -> str:
+    """kg·m²/s² for an energy; 1 for a pure number."""
+    if not d:
+        return "1"
+    top = [(k, v) for k in ("kg", "m", "s") if (v := d.get(k, Fraction(0))) > 0]
+    bottom = [(k, -v) for k in ("kg", "m", "s") if (v := d.get(k, Fraction(0))) < 0]
+
+    def show(parts: list[tuple[str, Fraction]]) -> str:
+        return "·".join(k + (str(v).translate(_SUPER) if v != 1 else "") for k, v in parts)
+
+    return (show(top) or "1") + (f"/{show(bottom)}" if bottom else "")
+
+
+def quantity(d: Dims) -> str:
+    """A dimension in words: "a mass", or "a quantity in kg·m/s³"."""
+    return next((w for dims, w in _WORDS if dims == d), f"a quantity in {unit_text(d)}")
+
+
+@dataclass(frozen=True)
+class Offence:
+    """Where an answer's dimensions break: the sum (or function argument) and what it says."""
+
+    piece: sp.Expr
+    words: str
+
+
+class _Mismatch(Exception):
+    def __init__(self, offence: Offence):
+        self.offence = offence
+
+
+def _dims(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Dims | None:
+    if expr.is_Number or expr is sp.pi or expr is sp.E:
+        return {}
+    if expr.is_Symbol:
+        return known.get(expr)
+    if expr.is_Add:
+        # a bare number beside other terms takes their units (a constant of U, written without its unit)
+        found = [(a, _dims(a, known)) for a in expr.args if not a.is_Number]
+        told = [(a, d) for a, d in found if d is not None]
+        for a, d in told[1:]:
+            if d != told[0][1]:
+                first = told[0]
+                words = (
+                    f"{spoken(expr)} adds {quantity(first[1])} ({spoken(first[0])}) to {quantity(d)} "
+                    f"({spoken(a)}); terms of a sum must have the same units"
+                )
+                raise _Mismatch(Offence(expr, words))
+        return told[0][1] if told and len(told) == len(found) else None
+    if expr.is_Mul:
+        out: Dims = {}
+        for a in expr.args:
+            factor = _dims(a, known)
+            if factor is None:
+                return None
+            out = add_dims(out, factor)
+        return out
+    if expr.is_Pow:
+        base = _dims(expr.base, known)
+        if base is None:
+            return None
+        if not expr.exp.is_Rational:
+            exponent = _dims(expr.exp, known)
+            if exponent:
+                raise _Mismatch(Offence(expr, f"the power {spoken(expr.exp)} of {spoken(expr)} has units"))
+            return None if base else {}
+        return {k: v * Fraction(int(expr.exp.p), int(expr.exp.q)) for k, v in base.items()}
+    if isinstance(expr, sp.Function):
+        if isinstance(expr, sp.Abs):
+            return _dims(expr.args[0], known)
+        for a in expr.args:
+            inside = _dims(a, known)
+            if inside:
+                raise _Mismatch(
+                    Offence(expr, f"{spoken(expr)} takes {quantity(inside)} ({spoken(a)}) as its argument, which must "
+                            "be a pure number (an angle)")
+                )  # fmt: skip
+        return {}
+    return None
+
+
+def dimension(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Dims | None:
+    """The dimension of a consistent expression (None when unknown or inconsistent)."""
+    try:
+        return _dims(expr, known)
+    except _Mismatch:
+        return None
+
+
+def mismatch(expr: sp.Expr, known: Mapping[sp.Symbol, Dims], want: Dims | None, what: str) -> Offence | None:
+    """The first place the answer's dimensions break, or where its whole has another dimension than
+    ``want`` (the truth's; None: any), in words; None when all is consistent or cannot be told."""
+    if sp.count_ops(expr) > MAX_NODES:
+        return None
+    try:
+        got = _dims(expr, known)
+    except _Mismatch as e:
+        return e.offence
+    if got is None or want is None or got == want:
+        return None
+    # the factor that would make it right, in words: a mass missing, a length too many; or upside down
+    missing = add_dims(want, got, Fraction(-1))
+    extra = add_dims(got, want, Fraction(-1))
+    inverted = bool(want) and got == {k: -v for k, v in want.items()}
+    factor = (
+        "it is upside down: the reciprocal of what is asked for (numerator and denominator swapped)"
+        if inverted
+        else f"a factor of {described(missing).removeprefix('a ').removeprefix('an ')} is missing"
+        if all(v > 0 for v in missing.values())
+        else f"it has a factor of {described(extra).removeprefix('a ').removeprefix('an ')} too many"
+        if all(v > 0 for v in extra.values())
+        else f"they differ by {unit_text(missing)}"
+    )
+    return Offence(expr, f"your {what} is {described(got)}, but {what} is {described(want)}: {factor}")
+
+
+def described(d: Dims) -> str:
+    """A dimension in words with its unit, once: "a mass (kg)", "a squared rate (1/s²)", "a quantity in s⁴"."""
+    words = quantity(d)
+    return words if "(" in words or words.startswith("a quantity in") or not d else f"{words} ({unit_text(d)})"
+
+
+def known_dimensions(
+    params: Mapping[sp.Symbol, str],
+    q: tuple[sp.Symbol, ...],
+    qd: tuple[sp.Symbol, ...],
+    qdd: tuple[sp.Symbol, ...],
+    lagrangian: sp.Expr,
+    t: sp.Symbol,
+) -> dict[sp.Symbol, Dims]:
+    """Every name's dimension that can be told: parameters by their units, coordinates as above."""
+    known: dict[sp.Symbol, Dims] = {s: d for s, u in params.items() if (d := parse_unit(u)) is not None}
+    known[t] = {"s": Fraction(1)}
+    trig = [a for f in lagrangian.atoms(sp.sin, sp.cos, sp.tan) for a in f.args]
+    for c in q:
+        if any(a.has(c) for a in trig):
+            known[c] = {}  # an angle
+    # ½ M_qq q̇² is an energy: [q]² = kg m² / [M_qq]; each pass may resolve what another coordinate needs
+    for _ in range(len(q)):
+        for c, v in zip(q, qd, strict=True):
+            if c in known:
+                continue
+            entry = sp.diff(lagrangian, v, 2)
+            rates = {**known, **{x: {} for x in qd}}
+            d = dimension(entry, rates) if entry != 0 else None
+            # every term of M_qq has its dimension, so its part free of q tells it (m (1 + 4α²ρ²) at ρ = 0 is m)
+            if d is None and (free := entry.xreplace({c: 0})) != 0:
+                d = dimension(free, rates)
+            if d is None:
+                continue
+            square = add_dims({"kg": Fraction(1), "m": Fraction(2)}, d, Fraction(-1))
+            known[c] = {k: v2 / 2 for k, v2 in square.items()}
+    for c, v, a in zip(q, qd, qdd, strict=True):
+        if c in known:
+            known[v] = add_dims(known[c], {"s": Fraction(-1)})
+            known[a] = add_dims(known[c], {"s": Fraction(-2)})
+    return known
+
+
+def system_dimensions(d: Derivation) -> dict[sp.Symbol, Dims]:
+    """Every name's dimension that the system's declared units tell (parameters, coordinates, rates)."""
+    t = d.table
+    by_name = {p.name: p.unit for p in d.system.parameters}
+    units = {s: by_name.get(s.name, "") for s in t.params}
+    return known_dimensions(units, t.q, t.qd, t.qdd, d.mechanics.L, t.t)

@@ -1,0 +1,19 @@
+"""Errors the engine raises for declarations it cannot derive."""
+
+from app.errors import Refused
+
+
+def excerpt(text: object, limit: int = 40) -> str:
+    """A short excerpt of user input for a message: never more than ``limit`` characters echoed back."""
+    shown = str(text)
+    return shown if len(shown) <= limit else shown[: limit - 3] + "..."
+
+
+class DerivationError(Refused):
+    """A system the engine refuses; the message says what is wrong and what is allowed.
+
+    ``part`` names the offending piece of the input when there is one.
+    """
+
+    def __init__(self, message: str, part: str = ""):
+        super().__init__(message, part)

@@ -1,0 +1,72 @@
+"""What a practice page needs for one system: each step to try, in the chapter's order, with its
+prompt, the names an answer may use, and the engine's own step (revealed on request).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import sympy as sp
+
+from app.engine.check import allowed_names, checkable_equilibria, conserved_momenta, exercises, problem
+from app.engine.derive import Derivation
+from app.engine.mistakes import POINTERS
+from app.engine.report import Printer, display
+
+
+def exercise_json(d: Derivation) -> dict[str, Any]:
+    """What a practice page needs: each step to try, its prompt and the engine's answer, and how names print."""
+    pr = Printer({**d.table.latex_names(), **{p: sp.latex(p) for p in conserved_momenta(d)}})
+    items = []
+    for step, name in exercises(d):
+        pb = problem(d, step, name, mistakes=False)  # the prompts need no catalogue of mistakes
+        shown = [display(t) for t in pb.truths]
+        if step == "equation":
+            latex = f"{pr.tex(shown[0])} = 0"
+        elif step == "omega_squared":
+            latex = r",\quad ".join(
+                rf"\omega^2 = {pr.tex(w)}\ \text{{at}}\ {_where_tex(d, i, pr)}" for i, w in enumerate(shown)
+            )
+        else:
+            latex = f"{_lhs(step, name, pr, d)} = {pr.tex(shown[0])}"
+        items.append(
+            {
+                "step": step,
+                "coordinate": name,
+                "title": _title(pb.label),
+                "lhs": _lhs(step, name, pr, d),
+                "names": allowed_names(step, pb.kinds),
+                "answer": {"sympy": sp.sstr(shown[0]), "latex": latex},
+            }
+        )
+    symbols = {
+        s.name: pr.tex(s) for s in (*d.table.q, *d.table.qd, *d.table.qdd, *d.table.params, *conserved_momenta(d))
+    }
+    return {"exercises": items, "symbols": {**symbols, "t": "t"}, "rules": POINTERS}
+
+
+def _title(label: str) -> str:
+    """A heading: the label with a capital, unless it opens with a symbol (ω² stays ω²)."""
+    return label[0].upper() + label[1:] if label[0].isascii() else label
+
+
+def _where_tex(d: Derivation, i: int, pr: Printer) -> str:
+    red = d.reduction
+    r = d.table.q[d.table.names.index(red.coordinate)]  # type: ignore[union-attr]
+    return f"{pr.tex(r)} = {pr.tex(checkable_equilibria(d)[i].position)}"
+
+
+def _lhs(step: str, name: str | None, pr: Printer, d: Derivation) -> str:
+    if name is not None:
+        q = d.table.q[d.table.names.index(name)]
+        qdd = d.table.qdd[d.table.names.index(name)]
+    return {
+        "kinetic": "T",
+        "potential": "U",
+        "lagrangian": "L",
+        "momentum": f"p_{{{pr.tex(q)}}}" if name else "",
+        "equation": "0",
+        "acceleration": pr.tex(qdd) if name else "",
+        "hamiltonian": "h",
+        "omega_squared": r"\omega^2",
+    }[step]

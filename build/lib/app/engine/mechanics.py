@@ -1,0 +1,94 @@
+"""From a declaration to T, U and L (the first steps of every derivation)."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import sympy as sp
+
+from app.engine.budget import pythagoras
+from app.engine.errors import DerivationError
+from app.engine.parse import ExpressionError, parse_expression
+from app.engine.symbols import SymbolTable
+from app.engine.trig import merged
+from app.scenes.types import System
+
+
+@dataclass(frozen=True)
+class Mechanics:
+    """Parsed mechanics: optional particle kinematics, then T, U (or only L)."""
+
+    table: SymbolTable
+    positions: tuple[tuple[sp.Expr, ...], ...]
+    masses: tuple[sp.Expr, ...]
+    velocities: tuple[tuple[sp.Expr, ...], ...]
+    speeds_squared: tuple[sp.Expr, ...]
+    T: sp.Expr | None
+    U: sp.Expr | None
+    L: sp.Expr
+    Q: tuple[sp.Expr, ...]
+
+
+def _parse(
+    text: str, names: dict[str, sp.Symbol], where: str, allow_velocity: bool, built: Mapping[str, sp.Expr]
+) -> sp.Expr:
+    if text in built:  # built from this text once already (System.built: docs/parsing.md)
+        return built[text]
+    allowed = names if allow_velocity else {k: v for k, v in names.items() if not k.endswith("_dot")}
+    try:
+        return parse_expression(text, allowed)
+    except ExpressionError as exc:
+        raise ExpressionError(f"{where}: {exc}", exc.part) from None
+
+
+def build_mechanics(system: System) -> Mechanics:
+    """Parse a System and form T, U and L = T - U."""
+    table = SymbolTable(tuple(system.coordinates), tuple(p.name for p in system.parameters))
+    names = table.namespace()
+    forms = [bool(system.particles), system.kinetic is not None, system.lagrangian is not None]
+    if sum(forms) != 1:
+        raise DerivationError("give exactly one of: particles (with a potential), kinetic and potential, or lagrangian")
+    if system.lagrangian is None and system.potential is None:
+        raise DerivationError("a potential U is needed with particles or with a kinetic energy (write 0 if none)")
+
+    positions: list[tuple[sp.Expr, ...]] = []
+    masses: list[sp.Expr] = []
+    velocities: list[tuple[sp.Expr, ...]] = []
+    speeds: list[sp.Expr] = []
+    for i, particle in enumerate(system.particles, start=1):
+        if len(particle.position) != 3:
+            raise DerivationError(f"particle {i}: a position has three components (x, y, z)")
+        mass = _parse(particle.mass, names, f"particle {i} mass", False, system.built)
+        r = tuple(_parse(c, names, f"particle {i} position", False, system.built) for c in particle.position)
+        # v = dr/dt = dr/dt|_q + sum_k (dr/dq_k) q_dot_k
+        v = tuple(table.dt(c) for c in r)
+        masses.append(mass)
+        positions.append(r)
+        velocities.append(v)
+        # v^2 = v . v, with sin^2 + cos^2 = 1 applied and sin a sin b + cos a cos b = cos(a - b) (app/engine/trig.py)
+        speeds.append(merged(pythagoras(sum(c**2 for c in v))))
+
+    Q = tuple(
+        _parse(system.forces[name], names, f"force on {name}", True, system.built)
+        if name in system.forces
+        else sp.Integer(0)
+        for name in table.names
+    )
+    unknown = set(system.forces) - set(table.names)
+    if unknown:
+        raise DerivationError(f"forces are given for {sorted(unknown)}, which are not coordinates")
+
+    if system.lagrangian is not None:
+        L = _parse(system.lagrangian, names, "lagrangian", True, system.built)
+        return Mechanics(table, (), (), (), (), None, None, L, Q)
+
+    if system.particles:
+        # T = sum_i 1/2 m_i v_i^2
+        T = merged(sp.expand(sum(sp.Rational(1, 2) * m * v2 for m, v2 in zip(masses, speeds, strict=True))))
+    else:
+        T = _parse(system.kinetic or "", names, "kinetic energy", True, system.built)
+    U = _parse(system.potential or "0", names, "potential", False, system.built)
+    # L = T - U
+    L = T - U
+    return Mechanics(table, tuple(positions), tuple(masses), tuple(velocities), tuple(speeds), T, U, L, Q)

@@ -1,0 +1,462 @@
+"""Mistakes generated from a system's own derivation, each named in the system's words.
+
+``app.engine.mistakes`` lists the mistakes any system invites (the ½, the square,
+the sign of U); this module builds the ones that only this system's structure
+can name, from the same objects the engine derives:
+
+* T: each body's velocity v_i = Σ_k (∂r_i/∂q_k) q̇_k + ∂r_i/∂t with one
+  coordinate's contribution (or the moving constraint's ∂r_i/∂t) left out; a body
+  forgotten; the products of two velocities of a pair of coordinates dropped
+  (T given directly: each part of T by its velocities);
+* U: each spring (a square (a + c)² whose c is constant) without its natural
+  length c, each term of U left out, each term's sign;
+* p_k = ∂L/∂q̇_k: each velocity's part left out;
+* the equation E_k = d/dt p_k − ∂L/∂q_k − Q_k with each chain-rule term of
+  d/dt p_k = Σ_j (∂p_k/∂q̇_j) q̈_j + Σ_j (∂p_k/∂q_j) q̇_j + ∂p_k/∂t left out, each part
+  of ∂L/∂q_k left out (the parts of ∂T/∂q_k by their velocities, the force of
+  each term of U), ∂(½ a q̇²)/∂q̇ taken as ½ a q̇, Q_k doubled or of the wrong
+  sign, sin x ≈ x and cos x ≈ 1 for every angle (an approximation, named so),
+  and each part's sign; the accelerations those equations give, M q̈ = f';
+* ω² at another equilibrium than the one asked for.
+
+Each is a ``Mistake``: a stable machine key (``kinetic.velocity_part.ball.phi``)
+with display text, the piece typeset, where in the set-up it comes from, the
+whole wrong answer, and where it helps a follow-up question a student can answer.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+import sympy as sp
+from sympy.simplify.fu import TR10i
+
+from app.engine.budget import pythagoras, within_budget
+from app.engine.derive import Derivation
+from app.engine.names import unicode
+from app.limits import NAME_WORK
+
+MAX_PER_STEP = 60
+
+
+@dataclass(frozen=True)
+class FollowUp:
+    """A short question after a named mistake; ``kind`` is the step whose names the answer may use."""
+
+    question: str
+    kind: str
+    truth: sp.Expr
+    relation: str  # "exact", or "magnitude" (a speed or a stretch: its sign is the student's choice)
+    answer_text: str  # the answer in words, for the verdict
+    hint: str = ""  # a second, more concrete hint, for a wrong answer to the question
+
+
+@dataclass(frozen=True)
+class Mistake:
+    key: str  # stable, for records: "<step>.<family>[.<detail>…]"
+    family: str
+    name: str  # what went wrong, in the system's words (plain text with Unicode mathematics)
+    piece: sp.Expr | None  # the piece the name speaks of (left out, extra, or of the wrong sign); None: the difference
+    where: str  # where in the set-up the piece comes from
+    expr: sp.Expr  # the whole wrong answer
+    approximation: bool = False
+    follow_up: FollowUp | None = None
+    count: int = 1  # mistakes at once
+
+
+# ---- words -------------------------------------------------------------------------------------
+
+_SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+_IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_FUNCTIONS = frozenset({"sin", "cos", "tan", "exp", "log", "sqrt", "Abs", "sinh", "cosh", "tanh", "pi"})
+
+
+_GREEK = frozenset(
+    "alpha beta gamma delta epsilon zeta eta theta iota kappa lambda mu nu xi pi rho sigma tau upsilon phi chi psi "
+    "omega".split()
+)
+
+
+def _rank(factor: sp.Expr) -> tuple[int, int, str]:
+    """A factor's place in a product as a textbook writes it: numbers, masses, sums of masses, other constants
+    (Latin letters before Greek), rates, then functions: m₂ l₁ l₂ θ̇₁ θ̇₂ cos(θ₁ − θ₂), 2 g α, m g R cos θ,
+    (M + m) Ẋ²/2."""
+    if factor.is_number:
+        return (0, 0, "")
+    if factor.is_Add:
+        return (1, 1, sp.sstr(factor))
+    base = factor.base if factor.is_Pow else factor
+    if isinstance(base, sp.Symbol):
+        name = base.name
+        if name.endswith("_dot") or name.endswith("_ddot"):
+            return (3, 0, name.lower())
+        stem = name.rstrip("0123456789_").lower()
+        if stem == "m":
+            return (1, 0, name.lower())
+        return (2, int(stem in _GREEK), name.lower())
+    return (4, 0, sp.sstr(factor))
+
+
+def _arranged(expr: sp.Basic) -> sp.Basic:
+    """The same expression, unevaluated, with each product's factors in ``_rank`` order and each sum's positive
+    terms first (x₂ − x₁ − l₀ rather than −l₀ − x₁ + x₂)."""
+    if not isinstance(expr, sp.Basic) or expr.is_Atom:
+        return expr
+    args = [_arranged(a) for a in expr.args]
+    if expr.is_Mul:
+        return sp.Mul(*sorted(args, key=_rank), evaluate=False)
+    if expr.is_Add:
+        positive = [a for a in args if not a.could_extract_minus_sign()]
+        return sp.Add(*positive, *(a for a in args if a.could_extract_minus_sign()), evaluate=False)
+    try:
+        return expr.func(*args, evaluate=False)
+    except TypeError:  # a class that takes no evaluate flag
+        return expr.func(*args)
+
+
+def spoken(expr: sp.Expr) -> str:
+    """An expression as running text prints it: R φ̇ sin(θ), m₂ l₁ l₂ cos(θ₁ − θ₂) (never ** or *)."""
+    # a sign pulled out of a sum: −g l₁ (m₁ + m₂), not g l₁ (−m₁ − m₂)
+    shown = sp.factor_terms(expr) if isinstance(expr, sp.Expr) else expr
+    try:
+        text = sp.sstr(_arranged(shown), order="none")
+    except (TypeError, ValueError, AttributeError):  # an expression the rearranging cannot rebuild: SymPy's order
+        text = sp.sstr(shown)
+    # sin(θ)**2 as sin²(θ)
+    text = re.sub(
+        r"\b(sin|cos|tan)(\([^()]*\))\*\*(\d+)",
+        lambda m: m.group(1) + m.group(3).translate(_SUPERSCRIPTS) + m.group(2),
+        text,
+    )
+    text = re.sub(r"\*\*(\d+)", lambda m: m.group(1).translate(_SUPERSCRIPTS), text)
+    text = re.sub(r"\*\*\(?([^()\s*]+)\)?", r"^\1", text)
+    text = text.replace("*", " ").replace(" - ", " − ").replace("-", "−")
+    return _IDENT.sub(lambda m: m.group(0) if m.group(0) in _FUNCTIONS else unicode(m.group(0)), text)
+
+
+def slug(text: str) -> str:
+    return re.sub(r"[^a-z0-9]+", "_", text.lower()).strip("_") or "body"
+
+
+def term_key(term: sp.Expr) -> str:
+    """A term of U named for a record by its symbols: k_l0_x1_x2 (stable, whatever the order of the sum)."""
+    return "_".join(sorted(s.name for s in term.free_symbols))
+
+
+_SHORT: dict[sp.Expr, sp.Expr] = {}
+
+
+def short_form(expr: sp.Expr) -> sp.Expr:
+    """A shorter form to name a piece with (products of sines and cosines recombined), within a small budget
+    (remembered: the equations' mistakes name the same pieces again for the accelerations)."""
+    if expr in _SHORT:
+        return _SHORT[expr]
+
+    def work() -> sp.Expr:
+        best = sp.factor_terms(pythagoras(sp.expand(expr)))
+        quick = sp.factor_terms(TR10i(best))  # cos θ₁ cos θ₂ + sin θ₁ sin θ₂ → cos(θ₁ − θ₂), cheaply
+        best = quick if sp.count_ops(quick) < sp.count_ops(best) else best
+        tried = sp.factor_terms(sp.trigsimp(best))
+        return tried if sp.count_ops(tried) < sp.count_ops(best) else best
+
+    found = within_budget(work, expr, NAME_WORK)
+    if found is not expr and len(_SHORT) < 4096:  # (a form cut short by a busy machine is not remembered)
+        _SHORT[expr] = found
+    return found
+
+
+def _magnitude(squared: sp.Expr) -> sp.Expr:
+    """√(squared) as a reader writes it (R sin θ φ̇ for R² sin²θ φ̇²), taking every symbol positive."""
+    symbols = sorted(squared.free_symbols, key=lambda s: s.name)
+    positive = {s: sp.Dummy(s.name, positive=True) for s in symbols}
+    back = {v: s for s, v in positive.items()}
+    root = sp.sqrt(sp.factor(squared.xreplace(positive))).xreplace(back)
+    return root.replace(sp.Abs, lambda x: x)
+
+
+# ---- T -----------------------------------------------------------------------------------------
+
+
+def _body(d: Derivation, i: int) -> str:
+    particles = d.system.particles
+    label = particles[i].label if i < len(particles) else ""
+    return label or f"particle {i + 1}"
+
+
+def _moved_alone(d: Derivation, i: int, body: str, q: sp.Symbol, qd: sp.Symbol, r: tuple, dr: tuple) -> str:
+    """A concrete second hint for "the speed when only q changes": the body's position, its velocity with q
+    alone changing, and the body that carries it along, where one moves with q exactly as it does."""
+    position = ", ".join(spoken(c) for c in r)
+    velocity = ", ".join(spoken(x * qd) for x in dr)
+    carrier = ""
+    for j, other in enumerate(d.mechanics.positions):
+        # another body whose position moves with q alone, and exactly as this one's part does: it carries it
+        moves = {s for c in other for s in c.free_symbols if s in d.table.q}
+        if j != i and moves == {q} and tuple(sp.diff(c, q) for c in other) == dr:
+            carrier = f"The {_body(d, j)} carries the {body} along with it. "
+            break
+    return (
+        f"{carrier}Hold every other coordinate fixed and change {unicode(q.name)} alone: the {body} at ({position}) "
+        f"then moves with the velocity ({velocity}); the speed is the size of that velocity."
+    )
+
+
+def kinetic_mistakes(d: Derivation) -> Iterator[Mistake]:
+    m, table = d.mechanics, d.table
+    if m.T is None:
+        return
+    T = m.T
+    if m.velocities:
+        for i, (mass, r, v) in enumerate(zip(m.masses, m.positions, m.velocities, strict=True)):
+            body = _body(d, i)
+            key = slug(body)
+            parts = [(q, qd, tuple(sp.diff(c, q) for c in r)) for q, qd in zip(table.q, table.qd, strict=True)]
+            moving = tuple(sp.diff(c, table.t) for c in r)
+            for q, qd, dr in parts:
+                others = any(any(x) for p, _, x in parts if p != q) or any(moving)
+                if not any(dr) or not others:
+                    # the body's whole velocity: forgetting it is forgetting the body
+                    continue
+                # v' = v − (∂r/∂q) q̇: the velocity without this coordinate's part
+                rest = tuple(c - x * qd for c, x in zip(v, dr, strict=True))
+                wrong = (
+                    T
+                    - sp.Rational(1, 2) * mass * m.speeds_squared[i]
+                    + sp.Rational(1, 2) * mass * pythagoras(sum(c**2 for c in rest))
+                )
+                speed = _magnitude(pythagoras(sum(x**2 for x in dr)) * qd**2)
+                shown = spoken(speed)
+                yield Mistake(
+                    f"kinetic.velocity_part.{key}.{q.name}",
+                    "velocity_part",
+                    # not its size: the piece shows it, and the follow-up asks for it
+                    f"the part of the {body}'s velocity that comes from {unicode(qd.name)}",
+                    speed,
+                    f"the {body}'s position depends on {unicode(q.name)}, so the {body} also moves when "
+                    f"{unicode(q.name)} changes: its velocity has the part (∂r/∂{unicode(q.name)}) "
+                    f"{unicode(qd.name)}",
+                    sp.expand(wrong),
+                    follow_up=FollowUp(
+                        f"What is the speed of the {body} when only {unicode(q.name)} changes "
+                        "(every other coordinate held fixed)?",
+                        "kinetic",
+                        speed,
+                        "magnitude",
+                        shown,
+                        _moved_alone(d, i, body, q, qd, r, dr),
+                    ),
+                )
+            if any(moving):
+                rest = tuple(c - x for c, x in zip(v, moving, strict=True))
+                wrong = (
+                    T
+                    - sp.Rational(1, 2) * mass * m.speeds_squared[i]
+                    + sp.Rational(1, 2) * mass * pythagoras(sum(c**2 for c in rest))
+                )
+                speed = _magnitude(pythagoras(sum(x**2 for x in moving)))
+                shown = spoken(speed)
+                yield Mistake(
+                    f"kinetic.moving_constraint.{key}",
+                    "moving_constraint",
+                    f"the part of the {body}'s velocity that comes from the moving constraint",
+                    speed,
+                    f"the {body}'s position depends on t itself (the constraint moves), so its velocity has the "
+                    "part ∂r/∂t, even when no coordinate changes",
+                    sp.expand(wrong),
+                    follow_up=FollowUp(
+                        f"How fast does the {body} move when every coordinate is held fixed?",
+                        "kinetic",
+                        speed,
+                        "magnitude",
+                        shown,
+                        f"Hold every coordinate fixed and differentiate the {body}'s position "
+                        f"({', '.join(spoken(c) for c in r)}) with respect to t alone; the speed is the size of "
+                        "that velocity.",
+                    ),
+                )
+            yield from _axes_left_out(d, i, body, key, mass, v)
+            if len(m.masses) > 1:
+                own = sp.expand(sp.Rational(1, 2) * mass * m.speeds_squared[i])
+                yield Mistake(
+                    f"kinetic.body_forgotten.{key}",
+                    "body_forgotten",
+                    f"the kinetic energy of the {body}, {spoken(short_form(own))}",
+                    own,
+                    f"the {body} (mass {spoken(mass)}) moves too: T adds ½ m v² over every body",
+                    sp.expand(T - own),
+                    follow_up=FollowUp(
+                        f"What is the kinetic energy of the {body} alone?",
+                        "kinetic",
+                        own,
+                        "exact",
+                        spoken(short_form(own)),
+                    ),
+                )
+    yield from _cross_mistakes(d, T)
+    if not m.velocities:
+        yield from _parts_left_out(d, T, "kinetic", "T")
+
+
+_AXES = ("x", "y", "z")
+
+
+def _axes_left_out(d: Derivation, i: int, body: str, key: str, mass: sp.Expr, v: tuple) -> Iterator[Mistake]:
+    """The body's velocity with one Cartesian component, or the two of a plane, left out."""
+    m = d.mechanics
+    moving = [a for a in range(3) if v[a] != 0]
+    if len(moving) < 2:
+        return
+    options: list[tuple[int, ...]] = [(a,) for a in moving]
+    if len(moving) == 3:
+        # a plane, where its two components make a simpler speed than each alone (a circle: R α ż)
+        for plane in ((0, 1), (0, 2), (1, 2)):
+            together = pythagoras(sum(v[a] ** 2 for a in plane))
+            if sp.count_ops(together) < sum(sp.count_ops(sp.expand(v[a] ** 2)) for a in plane):
+                options.append(plane)
+    for axes in options:
+        lost = pythagoras(sum(v[a] ** 2 for a in axes))
+        speed = _magnitude(lost)
+        named = (
+            f"the {_AXES[axes[0]]}-component of the {body}'s velocity"
+            if len(axes) == 1
+            else f"the {body}'s motion in the {_AXES[axes[0]]}–{_AXES[axes[1]]} plane"
+        )
+        yield Mistake(
+            f"kinetic.velocity_axis.{key}.{''.join(_AXES[a] for a in axes)}",
+            "velocity_axis",
+            f"{named}, of speed {spoken(speed)}",
+            speed,
+            f"the {body}'s position ({', '.join(spoken(c) for c in m.positions[i])}) changes along "
+            + " and ".join(_AXES[a] for a in axes)
+            + ", and v² adds the squares of all three components",
+            sp.expand(m.T - sp.Rational(1, 2) * mass * lost),
+            follow_up=FollowUp(
+                f"What is the {body}'s speed along " + " and ".join(_AXES[a] for a in axes) + "?",
+                "kinetic",
+                speed,
+                "magnitude",
+                spoken(speed),
+            ),
+        )
+
+
+def velocity_monomials(expr: sp.Expr, rates: tuple[sp.Symbol, ...]) -> dict[sp.Expr, sp.Expr]:
+    """expr split by its product of rates (q̇, q̈): {θ̇²: the θ̇² terms, 1: the terms without rates, …}."""
+    out: dict[sp.Expr, sp.Expr] = {}
+    for term in sp.Add.make_args(sp.expand(expr)):
+        if term == 0:
+            continue
+        c, monomial = term.as_independent(*rates, as_Add=False)
+        out[monomial] = out.get(monomial, sp.Integer(0)) + term
+    return {k: v for k, v in out.items() if sp.expand(v) != 0}
+
+
+def monomial_words(monomial: sp.Expr) -> str:
+    return "the terms without a velocity" if monomial == 1 else f"the {spoken(monomial)} terms"
+
+
+def _cross_mistakes(d: Derivation, T: sp.Expr) -> Iterator[Mistake]:
+    qd = d.table.qd
+    groups = velocity_monomials(T, qd)
+    for monomial, part in groups.items():
+        powers = monomial.as_powers_dict()
+        velocities = [v for v in qd if powers.get(v, 0) == 1]
+        if len(velocities) != 2:
+            continue
+        a, b = velocities
+        yield Mistake(
+            f"kinetic.cross_term.{a.name}.{b.name}",
+            "cross_term",
+            f"the cross term {spoken(short_form(part))}",
+            short_form(part),
+            f"a position depends on both {unicode(a.name[:-4])} and {unicode(b.name[:-4])}: squaring its velocity "
+            f"gives the product of the two parts, 2 ({unicode(a.name)} part)·({unicode(b.name)} part)",
+            sp.expand(T - part),
+        )
+
+
+def _parts_left_out(d: Derivation, expr: sp.Expr, step: str, letter: str) -> Iterator[Mistake]:
+    for monomial, part in velocity_monomials(expr, d.table.qd).items():
+        yield Mistake(
+            f"{step}.part_left_out.{slug(sp.sstr(monomial))}",
+            "part_left_out",
+            f"the {spoken(monomial)} part of {letter}, {spoken(short_form(part))}"
+            if monomial != 1
+            else f"the part of {letter} without velocities, {spoken(short_form(part))}",
+            short_form(part),
+            f"{letter} has a term in {spoken(monomial)}" if monomial != 1 else f"{letter} has a velocity-free term",
+            sp.expand(expr - part),
+        )
+
+
+# ---- U -----------------------------------------------------------------------------------------
+
+
+def _springs(term: sp.Expr, dynamic: set[sp.Symbol]) -> list[tuple[sp.Expr, sp.Expr]]:
+    """(the square's base, its constant part) for every (a + c)² in term whose c is constant."""
+    out = []
+    for power in term.atoms(sp.Pow):
+        base, exponent = power.args
+        if exponent == 2 and isinstance(base, sp.Add) and base.free_symbols & dynamic:
+            constant = sp.Add(*(a for a in base.args if not (a.free_symbols & dynamic)))
+            if constant != 0:
+                out.append((base, constant))
+    return out
+
+
+def kind_of_term(term: sp.Expr, d: Derivation) -> str:
+    names = {s.name for s in term.free_symbols}
+    if "g" in names:
+        return "the gravitational energy"
+    if any(isinstance(p.args[0], sp.Add) or p.args[0] in d.table.q for p in term.atoms(sp.Pow) if p.args[1] == 2):
+        return "the spring energy"
+    return "the term"
+
+
+def potential_mistakes(d: Derivation) -> Iterator[Mistake]:
+    U = d.mechanics.U
+    if U is None or U == 0:
+        return
+    dynamic = {*d.table.q, d.table.t}
+    terms = [t for t in sp.Add.make_args(U) if t.free_symbols & dynamic]
+    for term in terms:
+        for base, constant in _springs(term, dynamic):
+            stretch = base
+            yield Mistake(
+                f"potential.natural_length.{term_key(term)}",
+                "natural_length",
+                f"the spring's natural length {spoken(-constant if constant.could_extract_minus_sign() else constant)}",
+                constant,
+                f"a spring stores energy by its stretch from its natural length, here {spoken(stretch)}, not by "
+                "its whole length",
+                sp.expand(U - term + term.xreplace({base: base - constant})),
+                follow_up=FollowUp(
+                    "By how much is the spring stretched beyond its natural length?",
+                    "potential",
+                    stretch,
+                    "magnitude",
+                    spoken(stretch),
+                ),
+            )
+        kind = kind_of_term(term, d)
+        if len(terms) > 1:
+            yield Mistake(
+                f"potential.term_left_out.{term_key(term)}",
+                "term_left_out",
+                f"{kind} {spoken(term)}",
+                term,
+                f"U adds the energy of every force that has one: {kind} {spoken(term)} is one of them",
+                sp.expand(U - term),
+            )
+            yield Mistake(
+                f"potential.term_sign.{term_key(term)}",
+                "term_sign",
+                f"the sign of {kind} {spoken(term)}",
+                term,
+                "a height is measured upward, against gravity, and a spring's energy is never negative"
+                if kind != "the term"
+                else "U is the work done against the force",
+                sp.expand(U - 2 * term),
+            )

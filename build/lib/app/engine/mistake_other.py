@@ -1,0 +1,127 @@
+"""Two wrong answers that are right answers to another question, named as that question.
+
+* **another coordinate's answer**: the momentum, equation or acceleration of q_j typed where q_k's is asked
+  for (p_θ₁ in the box of p_θ₂: "the momentum conjugate to θ₁: you differentiated with respect to θ̇₁");
+* **the answer of a limit**: the truth with one body's mass taken to infinity or to zero (the block
+  on a wedge, D̈ = g sin α: the fixed wedge's answer, while the wedge recoils).
+
+Both are bounded by counts: one candidate per other coordinate; three limits (held still, without mass,
+infinitely heavy) for each of at most ``MAX_BODIES`` bodies with a mass of their own.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import sympy as sp
+
+from app.engine.derive import Derivation
+from app.engine.mistake_families import Mistake, spoken
+from app.engine.names import unicode
+
+MAX_BODIES = 4  # bodies whose held-still limit is tried, per step
+
+
+def other_coordinates(d: Derivation, step: str, k: int | None) -> Iterator[Mistake]:
+    """The same step's answer for each other coordinate."""
+    if k is None or step not in ("momentum", "equation", "acceleration"):
+        return
+    eqs, names = d.equations, d.table.names
+    asked, asked_rate = unicode(names[k]), unicode(f"{names[k]}_dot")
+    for j, other in enumerate(names):
+        if j == k:
+            continue
+        q, rate = unicode(other), unicode(f"{other}_dot")
+        if step == "momentum":
+            yield Mistake(
+                f"momentum.other_coordinate.{other}", "other_coordinate", f"the momentum conjugate to {q}", None,
+                f"you differentiated L with respect to {rate}; the momentum conjugate to {asked} is ∂L/∂{asked_rate}",
+                eqs.momenta[j],
+            )  # fmt: skip
+        elif step == "equation":
+            yield Mistake(
+                f"equation.other_coordinate.{other}", "other_coordinate", f"the equation for {q}", None,
+                f"that is d/dt(∂L/∂{rate}) − ∂L/∂{q}; the equation for {asked} differentiates L by {asked_rate} "
+                f"and by {asked}", eqs.residuals[j],
+            )  # fmt: skip
+        else:
+            yield Mistake(
+                f"acceleration.other_coordinate.{other}", "other_coordinate", f"the acceleration of {q}", None,
+                f"this box asks for the second derivative of {asked}, solved from the equations of motion",
+                eqs.accelerations[j],
+            )  # fmt: skip
+
+
+def held_still(d: Derivation, step: str, truth: sp.Expr) -> Iterator[Mistake]:
+    """The truth with one body's mass taken to a limit: to infinity where that holds the body still (its one
+    coordinate's acceleration then vanishes), to zero (a body without mass), then to infinity otherwise (a
+    body nothing else can move); each where the limit is finite, not zero, and differs from the truth."""
+    if step not in ("acceleration", "omega_squared"):
+        return
+    namespace = d.table.namespace()
+    bodies = [(i, p.mass, p.label) for i, p in enumerate(d.system.particles) if p.mass in namespace][:MAX_BODIES]
+    if len(bodies) < 2:
+        return  # one body: nothing else to hold still or to leave out
+    still, light, heavy = [], [], []
+    for i, mass_name, label in bodies:
+        M, shown = namespace[mass_name], unicode(mass_name)
+        body = label or f"body of mass {shown}"
+        key = f"{step}.limit"
+        zero = _at(truth, M, 0)
+        if zero is not None:
+            light.append(Mistake(
+                f"{key}.massless.{mass_name}", "limit", f"{spoken(zero)}, the answer if the {body} had no mass "
+                f"({shown} → 0)", None, f"the {body} has mass {shown} and pushes or pulls on the rest, so {shown} "
+                "stays in the answer", zero,
+            ))  # fmt: skip
+        infinite = _at(truth, M, sp.oo)
+        if infinite is None:
+            continue
+        if _held(d, i, M):
+            still.append(Mistake(
+                f"{key}.held_still.{mass_name}", "limit", f"{spoken(infinite)}, the answer if the {body} were "
+                f"held still ({shown} → ∞)", None, f"here the {body} is free to move: it recoils as the rest "
+                f"moves, so its mass {shown} stays in the answer", infinite,
+            ))  # fmt: skip
+        else:
+            heavy.append(Mistake(
+                f"{key}.infinitely_heavy.{mass_name}", "limit", f"{spoken(infinite)}, the answer if the {body} "
+                f"were infinitely heavy ({shown} → ∞), so that nothing else could push or pull it", None,
+                f"the rest pushes and pulls on the {body} too, so its mass {shown} stays in the answer", infinite,
+            ))  # fmt: skip
+    for m in (*still, *light, *heavy):
+        if sp.expand(m.expr - truth) != 0:
+            yield m
+
+
+def _held(d: Derivation, i: int, M: sp.Symbol) -> bool:
+    """Whether body i's position moves with one coordinate alone, whose acceleration vanishes as M → ∞."""
+    moves = {s for c in d.mechanics.positions[i] for s in c.free_symbols if s in d.table.q}
+    if len(moves) != 1:
+        return False
+    j = d.table.q.index(next(iter(moves)))
+    return _at(d.equations.accelerations[j], M, sp.oo, allow_zero=True) == 0
+
+
+def _at(expr: sp.Expr, M: sp.Symbol, to: sp.Expr, allow_zero: bool = False) -> sp.Expr | None:
+    """lim_{M→to} of a rational function of M (to is 0 or ∞), or None where it is not finite, is zero (unless
+    allowed) or still holds M."""
+    num, den = sp.fraction(sp.cancel(sp.together(expr)))
+    try:
+        top, bottom = sp.Poly(num, M), sp.Poly(den, M)
+    except sp.PolynomialError:
+        return None
+    if to == 0:
+        # lim_{M→0} (a_0 + a_1 M + …)/(b_0 + b_1 M + …) = a_0 / b_0, finite where b_0 ≠ 0
+        a0, b0 = top.eval(0), bottom.eval(0)
+        limit = None if b0 == 0 else sp.factor(a0 / b0)
+    elif top.degree() > bottom.degree():
+        limit = None
+    elif top.degree() < bottom.degree():
+        limit = sp.Integer(0)
+    else:
+        # lim_{M→∞} (a_n Mⁿ + …)/(b_n Mⁿ + …) = a_n / b_n
+        limit = sp.factor(top.LC() / bottom.LC())
+    if limit is None or (limit == 0 and not allow_zero) or limit.has(M):
+        return None
+    return limit

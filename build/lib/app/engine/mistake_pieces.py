@@ -1,0 +1,445 @@
+"""Backward diagnosis: the smallest change to one of the system's own pieces that gives the answer.
+
+``app.engine.mistake_families`` and ``mistake_equations`` list the mistakes a derivation invites
+step by step; this module works from the truth's own pieces instead, so a slip nobody listed is
+still named by what changed:
+
+* a factor on one piece (each term of the truth, and the terms that hold one parameter together,
+  such as the movable pulley's M terms): doubled (for a force already in U: counted twice),
+  halved, four times (a velocity doubled), left out, of the wrong sign;
+* the sign of one term inside a sum in a square or a product (a spring's stretch x₁ + x₂ for
+  x₂ − x₁, its natural length with the wrong sign);
+* sin and cos swapped, in one piece or throughout (positions written with them exchanged);
+* the small-angle approximation of an acceleration;
+* a rigid body's moment of inertia (a rod, a disc, a ring: about its centre, about a pivot, as a
+  point mass, its spin forgotten) and a rod's centre at l for l/2, read from T and U typed directly;
+* mistakes that travel: a mistake of T or U carried into the equation of motion and into ω²
+  ("your equation follows from a T that …");
+* ω² with one term of U_eff left out or of the wrong sign (the centrifugal term, the spring's).
+
+Every family is bounded by counts (pieces, parameters, candidates), never by time, so the same
+answer gets the same words on an idle and on a busy machine.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from fractions import Fraction
+
+import sympy as sp
+
+from app.engine.derive import Derivation
+from app.engine.mistake_families import (
+    Mistake,
+    kinetic_mistakes,
+    potential_mistakes,
+    short_form,
+    slug,
+    spoken,
+    term_key,
+)
+from app.engine.names import unicode
+
+MAX_PIECES = 12  # terms of a truth taken one at a time (a longer truth is left to the listed families)
+MAX_SUMS = 6  # sums inside the truth whose terms' signs are tried
+MAX_TRAVEL = 16  # mistakes of T or U carried into a later step
+
+# ---- pieces --------------------------------------------------------------------------------------
+
+
+def _terms(truth: sp.Expr) -> list[sp.Expr]:
+    terms = sorted(sp.Add.make_args(sp.expand(truth)), key=sp.default_sort_key)
+    return terms if 1 < len(terms) <= MAX_PIECES else (terms if len(terms) == 1 else [])
+
+
+def _groups(truth: sp.Expr, params: tuple[sp.Symbol, ...]) -> list[tuple[sp.Symbol, sp.Expr]]:
+    """(parameter, the terms that hold it) where that is more than one term and not the whole."""
+    terms = _terms(truth)
+    out = []
+    for s in params:
+        held = [t for t in terms if t.has(s)]
+        if 1 < len(held) < len(terms):
+            out.append((s, sp.Add(*held)))
+    return out
+
+
+def _has_half(p: sp.Expr) -> bool:
+    coefficient, _ = p.as_coeff_Mul()
+    return bool(coefficient.is_Rational) and abs(coefficient.q) == 2
+
+
+def _swap(expr: sp.Expr) -> sp.Expr:
+    """sin ↔ cos in every sine and cosine."""
+    return expr.replace(
+        lambda e: isinstance(e, (sp.sin, sp.cos)),
+        lambda e: sp.cos(e.args[0]) if isinstance(e, sp.sin) else sp.sin(e.args[0]),
+    )
+
+
+def _is_force_of_u(d: Derivation, step: str, p: sp.Expr) -> bool:
+    rates = (*d.table.qd, *d.table.qdd)
+    return step == "equation" and d.mechanics.U is not None and not p.has(*rates) and p != 0
+
+
+def _derivative_why(p: sp.Expr, coordinate: str) -> str:
+    """Where a swapped sine in an equation's velocity-free term comes from: ∂L/∂q, differentiated."""
+    trig = sorted(p.atoms(sp.sin, sp.cos), key=sp.default_sort_key)[0]
+    x = trig.args[0]
+    angle = spoken(x) if x.is_Symbol else f"({spoken(x)})"
+    # d(cos x)/dx = −sin x and d(sin x)/dx = cos x: the truth's sine came from a cosine, and its cosine from a sine
+    rule = (
+        f"the derivative of cos {angle} is −sin {angle}"
+        if isinstance(trig, sp.sin)
+        else f"the derivative of sin {angle} is cos {angle}"
+    )
+    return (
+        f"the term comes from ∂L/∂{unicode(coordinate)}, and {rule}; with T and U right, the slip is in that "
+        "derivative, not in the positions"
+    )
+
+
+def _label(step: str) -> str:
+    return {"kinetic": "T", "potential": "U", "lagrangian": "L", "hamiltonian": "h"}.get(step, "")
+
+
+def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> Iterator[Mistake]:
+    """A factor, a sign or a swapped function on one piece of the truth, named by the piece."""
+    if step == "omega_squared":
+        return
+    base = f"{step}.piece"
+    yield from _sums(truth, base)
+    rates = (*d.table.qd, *d.table.qdd)
+    for p in _terms(truth):
+        shown = spoken(short_form(p))
+        key = slug(sp.sstr(p))[:48]
+        if _is_force_of_u(d, step, p):
+            yield Mistake(
+                f"{base}.counted_twice.{key}", "counted_twice", f"the force {shown} counted twice", p,
+                "this force comes from U, and ∂L/∂q already holds it: adding it again as a force Q counts it twice",
+                truth + p,
+            )  # fmt: skip
+        elif _has_half(p):
+            yield Mistake(
+                f"{base}.half_missing.{key}", "doubled", f"{spoken(2 * p)} in place of {shown}: the ½ in it is missing",
+                p, "the ½ belongs to this piece (½ m v², ½ k x², a centre halfway along)", truth + p,
+            )  # fmt: skip
+        else:
+            yield Mistake(
+                f"{base}.doubled.{key}", "doubled", f"{shown} doubled ({spoken(2 * p)})", p,
+                "this piece appears once in the derivation", truth + p,
+            )  # fmt: skip
+        yield Mistake(
+            f"{base}.halved.{key}", "halved", f"only half of {shown}", p,
+            "the whole of this piece belongs in the answer (a factor 2 from differentiating a square, or from "
+            "the chain rule, is easily lost)", truth - p / 2,
+        )  # fmt: skip
+        yield Mistake(f"{base}.left_out.{term_key(p)}", "left_out", shown, p,
+                      LEFT_OUT_WHY.get(step, "this term belongs in the answer"), truth - p)  # fmt: skip
+        if step == "hamiltonian" and not p.has(*rates):
+            yield Mistake(
+                f"{base}.sign_of_velocity_free.{key}", "term_sign", f"the sign of {shown}", p,
+                "in h = Σ p q̇ − L the part of L free of the velocities changes sign, so h is not the energy T + U "
+                "when T has such a part", truth - 2 * p,
+            )  # fmt: skip
+        if not (step == "equation" and p.has(*d.table.qdd)):  # (that sign is the rest's, a rule names it)
+            yield Mistake(f"{base}.sign.{key}", "term_sign", f"the sign of {shown}", p,
+                          SIGN_WHY.get(step, "each term's sign follows from the derivation"), truth - 2 * p)  # fmt: skip
+        if step != "momentum":  # a momentum short of a factor is named by that factor (app.engine.check)
+            yield from _factors(p, truth, base, key, rates, d.table.params)
+        if p.has(sp.sin, sp.cos):
+            swapped = _swap(p)
+            # in an equation, a velocity-free term is a derivative of U (or of T by q): there a swap is a slip of
+            # differentiating (d(−cos θ)/dθ = sin θ taken as cos θ), the positions being checked in T and U
+            why = (
+                _derivative_why(p, d.table.names[k])
+                if step in ("equation", "acceleration") and k is not None and not p.has(*rates)
+                else "check which component of the position has the sine and which the cosine, at a small angle"
+            )
+            yield Mistake(
+                f"{base}.sin_cos.{key}", "sin_cos", f"sin and cos swapped in {shown} (you have {spoken(swapped)})",
+                p, why, truth - p + swapped,
+            )  # fmt: skip
+            yield Mistake(
+                f"{base}.sin_cos_height.{key}", "sin_cos", f"{spoken(-swapped)} in place of {shown}: sin and cos "
+                "swapped", p, why, truth - p - swapped,
+            )  # fmt: skip
+    yield from _whole(d, step, truth, base)
+    for s, group in _groups(truth, d.table.params):
+        shown = spoken(short_form(group))
+        name = unicode(s.name)
+        if step == "kinetic":
+            yield Mistake(
+                f"{base}.group_four.{s.name}", "velocity_doubled",
+                f"the {name} terms, {shown}, four times too big: that body's velocity is doubled (it moves half as "
+                "far as you have it)", group, "check how far this body moves when the coordinates change", truth + 3 * group,
+            )  # fmt: skip
+        half = "its ½ is missing" if _has_half(group.as_ordered_terms()[0]) else "it appears once"
+        yield Mistake(
+            f"{base}.group_doubled.{s.name}", "doubled", f"the {name} terms, {shown}, doubled: {half}", group,
+            "this body's part appears once; a ½ (the middle of a pulley moves half as far) is easily lost",
+            truth + group,
+        )  # fmt: skip
+        yield Mistake(f"{base}.group_left_out.{s.name}", "left_out", f"the {name} terms, {shown}", group,
+                      f"every body's part belongs in the answer, {name}'s too", truth - group)  # fmt: skip
+
+
+def _factors(p: sp.Expr, truth: sp.Expr, base: str, key: str, rates: tuple, params: tuple) -> Iterator[Mistake]:
+    """One piece without one of its factors (sin α, sin²θ, 1/(1 + R² α²)), or with a parameter's square written
+    as the parameter itself (R for R²)."""
+    factors = [f for f in sp.Mul.make_args(p) if not f.is_Number and not f.has(*rates)]
+    for f in sorted(set(factors), key=sp.default_sort_key)[:MAX_SUMS]:
+        if f.is_Symbol:
+            continue  # a single parameter dropped is a matter of units (app.engine.dimensions)
+        yield Mistake(
+            f"{base}.factor_left_out.{key}.{slug(sp.sstr(f))[:24]}", "factor_left_out",
+            f"{spoken(p)} without its factor {spoken(f)}", p,
+            "this factor comes from the geometry (a component of the position, or the chain rule)", truth - p + p / f,
+        )  # fmt: skip
+    for s in params:
+        squared = s**2
+        if squared in factors:
+            yield Mistake(
+                f"{base}.not_squared.{key}.{s.name}", "factor_left_out",
+                f"{unicode(s.name)} in place of {unicode(s.name)}² in {spoken(p)}", p,
+                "a velocity's part is squared whole in v², its length or rate included", truth - p + p / s,
+            )  # fmt: skip
+
+
+# Why a term left out, or a term's sign, is wrong, in the words of the step it belongs to
+LEFT_OUT_WHY = {
+    "kinetic": "every body's ½ m v² gives all of its terms, one for each coordinate that moves it and the cross terms "
+    "between them",
+    "potential": "U adds m g × height for every mass and ½ k × stretch² for every spring",
+    "lagrangian": "L = T − U keeps every term of T and of U",
+    "momentum": "p = ∂L/∂q̇ takes every term of L that holds this velocity",
+    "equation": "d/dt(∂L/∂q̇) and ∂L/∂q each give terms: differentiate every term of L that holds this coordinate or "
+    "its velocity",
+    "acceleration": "solving the equations for q̈ keeps every term they hold",
+    "hamiltonian": "h = Σ p q̇ − L keeps every term of L, some with their sign changed",
+}
+SIGN_WHY = {
+    "kinetic": "½ m v² is a sum of squares: its terms are positive, and a cross term takes the sign of its cosine",
+    "potential": "U is +m g × height with the height measured upward: check which way the coordinate moves the mass",
+    "lagrangian": "L = T − U: U's terms change sign in L",
+    "momentum": "p = ∂L/∂q̇ keeps the sign each term has in L",
+    "equation": "in d/dt(∂L/∂q̇) − ∂L/∂q = Q the terms of ∂L/∂q change sign",
+    "acceleration": "moving a term across the equals sign changes its sign",
+    "hamiltonian": "in h = Σ p q̇ − L the part of L free of velocities changes sign",
+}
+
+
+def _sums(truth: sp.Expr, base: str) -> Iterator[Mistake]:
+    """The sign of one term inside a sum held in a square or a product: (x₂ − x₁ − l₀) as (x₁ + x₂ − l₀)."""
+    inner = [a for a in sp.preorder_traversal(truth) if isinstance(a, sp.Add) and a != truth]
+    seen: list[sp.Expr] = []
+    for a in sorted(set(inner), key=sp.default_sort_key)[:MAX_SUMS]:
+        for term in sorted(a.args, key=sp.default_sort_key):
+            changed = a - 2 * term
+            wrong = truth.xreplace({a: changed})
+            if wrong in seen:
+                continue
+            seen.append(wrong)
+            # the reason fits where the sum sits: inside a sine or cosine it is an angle between two directions
+            # (the rods' θ₁ − θ₂), elsewhere a stretch or a distance between two ends
+            angle = any(isinstance(f, sp.sin | sp.cos) and a in f.args for f in truth.atoms(sp.sin, sp.cos))
+            why = (
+                "the angle between two directions is the difference of their angles from the same reference"
+                if angle
+                else "a stretch is the change in length, the far end minus the near end, less the natural length"
+            )
+            yield Mistake(
+                f"{base}.inner_sign.{slug(sp.sstr(a))[:32]}.{slug(sp.sstr(term))[:16]}", "inner_sign",
+                f"{spoken(changed)} in place of {spoken(a)}: the sign of {spoken(term)} ({why})", a,
+                "draw the two directions and measure both angles from the same line" if angle
+                else "draw the two ends and ask which way each coordinate moves them", wrong,
+            )  # fmt: skip
+
+
+def _whole(d: Derivation, step: str, truth: sp.Expr, base: str) -> Iterator[Mistake]:
+    if len([f for f in truth.atoms(sp.sin, sp.cos)]) >= 1 and len(_terms(truth)) != 1:
+        yield Mistake(
+            f"{base}.sin_cos_throughout", "sin_cos", "sin and cos swapped throughout (the positions written with "
+            "the sine and the cosine exchanged)", None,
+            "at a small angle the horizontal part of a pendulum's position is small: l sin θ across, −l cos θ down",
+            _swap(truth),
+        )  # fmt: skip
+    if step == "acceleration":
+        coordinates = set(d.table.q)
+        swap = {
+            f: (sp.Integer(1) if isinstance(f, sp.cos) else f.args[0])
+            for f in truth.atoms(sp.sin, sp.cos, sp.tan)
+            if f.args[0].free_symbols & coordinates
+        }
+        if swap:
+            yield Mistake(
+                "acceleration.small_angle", "small_angle", "the small-angle approximation sin x ≈ x, cos x ≈ 1", None,
+                "it holds only for small oscillations near zero angle; the exercise asks for the full acceleration",
+                truth.xreplace(swap), approximation=True,
+            )  # fmt: skip
+
+
+# ---- rigid bodies ----------------------------------------------------------------------------------
+
+# I/(m L²) about the centre of each body a student meets, L its length or radius
+_CENTRE = {"rod": Fraction(1, 12), "disc": Fraction(1, 2), "ring": Fraction(1)}
+
+
+def _lengths_and_masses(d: Derivation, known) -> tuple[list[sp.Symbol], list[sp.Symbol]]:
+    length, mass = {"m": Fraction(1)}, {"kg": Fraction(1)}
+    params = d.table.params
+    return [s for s in params if known.get(s) == length], [s for s in params if known.get(s) == mass]
+
+
+def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp.Expr]]:
+    """(key, name, ΔT, ΔU) for the slips a rigid body typed in T (and U) invites, read from T's q̇² terms:
+    c m L² q̇² (a body turning about a pivot: a rod about its end, a disc or a ring about its rim or centre)
+    or c m q̇² with c > ½ (a disc or a ring rolling: ½ m v² + ½ I (v/R)²)."""
+    T, U = d.mechanics.T, d.mechanics.U
+    if T is None or d.system.particles or len(d.table.q) != 1:
+        return []
+    v = d.table.qd[0]
+    lengths, masses = _lengths_and_masses(d, known)
+    a = sp.expand(sp.diff(T, v, 2))  # I or m_eff
+    out: list[tuple[str, str, sp.Expr, sp.Expr]] = []
+    for m in masses:
+        for L in lengths:
+            c = sp.nsimplify(a / (m * L**2))
+            if c.is_Rational and c == sp.Rational(1, 3):
+                # a rod about its end: I = m l²/12 + m (l/2)²
+                dT = lambda i: (i - a) * v**2 / 2  # noqa: E731
+                out.append(("rigid.rod_point_mass", f"the rod taken as a point mass at its end: I = {spoken(m * L**2)} "
+                            f"in place of a rod's I about its end, {spoken(m * L**2 / 3)} (moment of inertia)",
+                            dT(m * L**2), sp.Integer(0)))  # fmt: skip
+                out.append(("rigid.rod_centre_axis", f"I about the rod's centre, {spoken(m * L**2 / 12)}, in place of "
+                            f"I about the pivot at its end, {spoken(m * L**2 / 3)} (the parallel-axis term "
+                            f"{spoken(m * (L / 2) ** 2)} is missing)", dT(m * L**2 / 12), sp.Integer(0)))  # fmt: skip
+                out.append(("rigid.rod_spin_forgotten", f"only the motion of the rod's centre, {spoken(m * (L / 2)**2)}"
+                            f" θ̇²/2: its spin about the centre, with moment of inertia {spoken(m * L**2 / 12)}, is "
+                            "forgotten", dT(m * (L / 2) ** 2), sp.Integer(0)))  # fmt: skip
+                if U is not None and U.has(L):
+                    # the centre at l rather than l/2: every l of U doubled
+                    dU = U.xreplace({L: 2 * L}) - U
+                    out.append(("rigid.rod_centre_at_end", f"the rod's centre at {spoken(L)} in place of {spoken(L / 2)}"
+                                " (a uniform rod's centre is halfway along it)", sp.Integer(0), dU))  # fmt: skip
+                    out.append(("rigid.rod_as_point_mass", f"the rod taken as a point mass at its end (a simple "
+                                f"pendulum): I = {spoken(m * L**2)} and the centre at {spoken(L)}, in place of "
+                                f"{spoken(m * L**2 / 3)} and {spoken(L / 2)}", dT(m * L**2), dU))  # fmt: skip
+        c = sp.nsimplify(a / m) if a.has(m) else None
+        if c is not None and c.is_Rational and c in (sp.Rational(3, 2), 2):
+            body = "disc" if c == sp.Rational(3, 2) else "ring"
+            other = "ring" if body == "disc" else "disc"
+            k_other = _CENTRE[other]
+            out.append(("rigid.rolling_spin_forgotten", f"the {body}'s spin forgotten: it rolls, so T also has "
+                        f"½ I ω² with ω = v/R and I its moment of inertia", (m - a) * v**2 / 2, sp.Integer(0)))  # fmt: skip
+            out.append((f"rigid.rolling_{other}", f"a {other}'s moment of inertia ({spoken(sp.nsimplify(k_other))} m R²)"
+                        f" in place of a {body}'s", (m * (1 + sp.nsimplify(k_other)) - a) * v**2 / 2, sp.Integer(0)))  # fmt: skip
+    return out
+
+
+# ---- mistakes that travel --------------------------------------------------------------------------
+
+
+def _euler_lagrange(d: Derivation, k: int, L: sp.Expr) -> sp.Expr:
+    """d/dt ∂L/∂q̇_k − ∂L/∂q_k for a change of L (linear in L, so the change of the equation)."""
+    t = d.table
+    p = sp.diff(L, t.qd[k])
+    # the total time derivative: through every coordinate, velocity and t itself
+    dp = sum((sp.diff(p, q) * v + sp.diff(p, v) * a for q, v, a in zip(t.q, t.qd, t.qdd, strict=True)),
+             sp.diff(p, t.t))  # fmt: skip
+    return sp.expand(dp - sp.diff(L, t.q[k]))
+
+
+def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, asked: list) -> Iterator[Mistake]:
+    """A rigid body's slips in T and U, and the mistakes of T and U (generated, and a rigid body's) carried
+    into the equation and into ω²."""
+    if d.mechanics.T is None:
+        return
+    rigid = rigid_alternatives(d, known)
+    if step in ("kinetic", "potential"):
+        for key, name, dT, dU in rigid:
+            change = dT if step == "kinetic" else dU
+            if change != 0:
+                yield Mistake(f"{step}.{key}", "rigid", name, None,
+                              "a rigid body's T is ½ m v_centre² + ½ I ω², with I about its centre", truth + change)  # fmt: skip
+        return
+    if step not in ("equation", "acceleration", "omega_squared"):
+        return
+    if step == "acceleration" and len(d.table.q) != 1:
+        return  # coupled accelerations: the equations' mistakes are carried by mistake_equations
+    changes: list[tuple[str, str, sp.Expr, sp.Expr]] = list(rigid)
+    T, U = d.mechanics.T, d.mechanics.U
+    for m in list(kinetic_mistakes(d))[:MAX_TRAVEL]:
+        changes.append((f"from_kinetic.{m.key}", f"a T that has a mistake: {m.name}", m.expr - T, sp.Integer(0)))
+    if U is not None:
+        for m in list(potential_mistakes(d))[:MAX_TRAVEL]:
+            changes.append((f"from_potential.{m.key}", f"a U that has a mistake: {m.name}", sp.Integer(0), m.expr - U))
+    for key, name, dT, dU in changes[: 2 * MAX_TRAVEL]:
+        if step == "equation" and k is not None:
+            # L = T − U changes by ΔT − ΔU, and the equation by its Euler–Lagrange expression
+            wrong = truth + _euler_lagrange(d, k, dT - dU)
+            family = "rigid" if key.startswith("rigid") else "travelled"
+            yield Mistake(f"equation.{key}", family, name, None,
+                          "your equation follows from it: fix that step and derive again", wrong)  # fmt: skip
+        elif step == "acceleration":
+            # one coordinate: E' = a q̈ + f, so q̈ = −f/a
+            E = d.equations.residuals[0] + _euler_lagrange(d, 0, dT - dU)
+            a = sp.diff(E, d.table.qdd[0])
+            if a != 0:
+                family = "rigid" if key.startswith("rigid") else "travelled"
+                yield Mistake(f"acceleration.{key}", family, name, None,
+                              "your acceleration follows from it: fix that step and derive again",
+                              sp.cancel(-E.subs(d.table.qdd[0], 0) / a))  # fmt: skip
+        elif step == "omega_squared":
+            for w in _omega_changed(d, dT, dU, asked):
+                family = "rigid" if key.startswith("rigid") else "travelled"
+                yield Mistake(f"omega_squared.{key}", family, name, None,
+                              "your ω² follows from it: ω² = U_eff″/m_eff at the equilibrium", w)  # fmt: skip
+
+
+def _omega_changed(d: Derivation, dT: sp.Expr, dU: sp.Expr, asked: list) -> list[sp.Expr]:
+    red = d.reduction
+    if red is None or red.momenta or len(d.table.q) != 1:
+        return []
+    q, v = d.table.q[0], d.table.qd[0]
+    # U_eff = U − T₀ (the part of T free of the velocity); m_eff = ∂²T/∂q̇²
+    dT0 = dT.subs(v, 0)
+    ueff = red.effective_potential + dU - dT0
+    meff = red.effective_mass + sp.diff(dT, v, 2)
+    out = []
+    for e in asked:
+        w = (sp.diff(ueff, q, 2) / meff).subs(q, e.position)
+        out.append(sp.simplify(w))
+    return out
+
+
+def effective_terms(d: Derivation, asked: list) -> Iterator[Mistake]:
+    """ω² with one term of U_eff left out, or of the wrong sign (the centrifugal term, a spring's, gravity's)."""
+    red = d.reduction
+    if red is None:
+        return
+    r = next(s for s in d.table.q if s.name == red.coordinate)
+    U = d.mechanics.U
+    own = set(sp.Add.make_args(sp.expand(U))) if U is not None else set()
+    terms = sorted(sp.Add.make_args(sp.expand(red.effective_potential)), key=sp.default_sort_key)
+    if len(terms) > MAX_PIECES:
+        return
+    for e in asked:
+        w = e.omega_squared
+        for u in terms:
+            part = sp.diff(u, r, 2) / red.effective_mass
+            part = part.subs(r, e.position)
+            if part == 0:
+                continue
+            # a term of U_eff that is not a term of U comes from the motion: p²/(2 m r²), −½ m ω² ρ²
+            centrifugal = u.has(*red.momenta) or (U is not None and u not in own)
+            what = "the centrifugal term" if centrifugal else "the term"
+            shown = spoken(u)
+            yield Mistake(
+                f"omega_squared.effective_left_out.{term_key(u)}", "left_out", f"{what} {shown} of U_eff", u,
+                "ω² = U_eff″(r₀)/m_eff takes every term of the effective potential, the motion's (centrifugal) "
+                "ones as well as U's", w - part,
+            )  # fmt: skip
+            yield Mistake(
+                f"omega_squared.effective_sign.{term_key(u)}", "term_sign", f"the sign of {what} {shown} of U_eff", u,
+                "the centrifugal term of U_eff pushes outward: its sign is fixed by −T₀ (or + p²/(2 m r²))", w - 2 * part,
+            )  # fmt: skip

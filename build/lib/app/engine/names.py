@@ -1,0 +1,112 @@
+"""Display names of symbols: the one home of how a name is written (LaTeX, Unicode, plain).
+
+Every route that shows a symbol's name (derivation steps, controls, prose, plot axes,
+diagrams, exports) reads it from here, so ``Omega`` is Ω everywhere:
+
+    latex("theta_dot") -> \\dot{\\theta}    unicode("theta_dot") -> θ̇    plain("theta_dot") -> theta_dot
+    latex("x1") -> x_{1}                   unicode("x1") -> x₁
+    latex("p_phi") -> p_{\\varphi}          unicode("p_phi") -> p_φ
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+
+# The Greek letters LaTeX has a command for, by name, with their Unicode characters (the command is a
+# backslash and the name; the capitals left out are written as Latin letters)
+GREEK = {
+    "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "zeta": "ζ", "eta": "η",
+    "theta": "θ", "iota": "ι", "kappa": "κ", "lambda": "λ", "mu": "μ", "nu": "ν", "xi": "ξ",
+    "pi": "π", "rho": "ρ", "sigma": "σ", "tau": "τ", "upsilon": "υ", "phi": "φ", "chi": "χ", "psi": "ψ",
+    "omega": "ω", "Gamma": "Γ", "Delta": "Δ", "Theta": "Θ", "Lambda": "Λ", "Xi": "Ξ", "Pi": "Π", "Sigma": "Σ",
+    "Upsilon": "Υ", "Phi": "Φ", "Psi": "Ψ", "Omega": "Ω",
+}  # fmt: skip
+SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+DOT, DDOT = "\u0307", "\u0308"
+_TRAILING_DIGITS = re.compile(r"([A-Za-z]+?)(\d+)")
+HAT = "\u0302"
+# accents written as a suffix of the name: a velocity's dots, and a unit vector's hat (r_hat -> r̂)
+_DOTS = (("_ddot", "ddot", DDOT), ("_dot", "dot", DOT), ("_hat", "hat", HAT))
+# LaTeX's \phi is the closed ϕ; the φ of running text (U+03C6) is LaTeX's \varphi: one glyph on a page
+_TEX_GREEK = {"phi": "varphi"}
+
+
+def tex_greek(tex: str) -> str:
+    """LaTeX printed elsewhere (SymPy's printer) with each Greek command as this module writes it: \\phi -> \\varphi."""
+    for stem, command in _TEX_GREEK.items():
+        tex = re.sub(rf"\\{stem}(?![A-Za-z])", "\\\\" + command, tex)
+    return tex
+
+
+def _split(name: str) -> tuple[str, str]:
+    match = _TRAILING_DIGITS.fullmatch(name)
+    return (match.group(1), match.group(2)) if match else (name, "")
+
+
+def _tex_base(name: str) -> tuple[str, str]:
+    """(stem, subscript) in LaTeX: theta1 -> (\\theta, 1)."""
+    stem, digits = _split(name)
+    return ("\\" + _TEX_GREEK.get(stem, stem) if stem in GREEK else stem), digits
+
+
+def _uni_base(name: str, mark: str = "") -> str:
+    # the dot sits on the letter, before any subscript digits: θ̇₁
+    stem, digits = _split(name)
+    return GREEK.get(stem, stem) + mark + digits.translate(SUBSCRIPT)
+
+
+def latex(name: str) -> str:
+    """A symbol name as LaTeX; a velocity's dot sits on the stem, not on the subscript."""
+    for suffix, accent, _ in _DOTS:
+        if name.endswith(suffix):
+            stem, sub = _tex_base(name[: -len(suffix)])
+            return rf"\{accent}{{{stem}}}" + (f"_{{{sub}}}" if sub else "")
+    if "_" in name:
+        head, _, tail = name.partition("_")
+        # a word as a subscript is upright text: U_eff -> U_{\text{eff}}
+        word = tail.isalpha() and len(tail) > 1 and tail not in GREEK
+        sub = r"\text{" + tail + "}" if word else latex(tail)
+        return f"{latex(head)}_{{{sub}}}"
+    stem, sub = _tex_base(name)
+    return stem + (f"_{{{sub}}}" if sub else "")
+
+
+def unicode(name: str) -> str:
+    """A symbol name as a reader writes it in running text and on plots: theta_dot -> θ̇, x1 -> x₁; a conserved
+    sum's name term by term (p_x1 + p_x2 -> p_x₁ + p_x₂)."""
+    if " + " in name:
+        return " + ".join(unicode(part) for part in name.split(" + "))
+    for suffix, _, mark in _DOTS:
+        if name.endswith(suffix):
+            return _uni_base(name[: -len(suffix)], mark)
+    if "_" in name:
+        head, _, tail = name.partition("_")
+        return _uni_base(head) + "_" + _uni_base(tail)
+    return _uni_base(name)
+
+
+def plain(name: str) -> str:
+    """The name as typed in expressions (the project's symbol convention)."""
+    return name
+
+
+# A symbol name inside running text: a short stem with digits (m1, x2, l0) or a name with a subscript (theta_0).
+_IN_PROSE = re.compile(r"\b(?:[A-Za-z]{1,2}\d+|[A-Za-z]+_(?:\d+|[A-Za-z]+\d*))\b")
+
+
+def prose(text: str) -> str:
+    """Running text with the symbol names in it written as a reader writes them: m1 -> m₁, theta_0 -> θ₀."""
+
+    def one(match: re.Match[str]) -> str:
+        name = match.group(0)
+        head, _, tail = name.partition("_")
+        # theta_0 is θ₀ (a subscript), p_phi is p_φ
+        return unicode(head + tail) if tail.isdigit() else unicode(name)
+
+    return _IN_PROSE.sub(one, text)
+
+
+def display_names(names: Iterable[str]) -> dict[str, dict[str, str]]:
+    """Each name with its three written forms, for the derivation document."""
+    return {n: {"latex": latex(n), "unicode": unicode(n), "plain": plain(n)} for n in names}

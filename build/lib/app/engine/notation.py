@@ -1,0 +1,260 @@
+"""The letters of a document: one table, so that one letter means one quantity on a page.
+
+A document's coordinates and parameters keep the names they were declared with.  The quantities the
+engine derives (the mass matrix, the stiffness matrix, a frequency of small oscillations) each have
+a list of letters a textbook uses for them; a document takes the first that no coordinate or
+parameter already has.  So the pulley and the wedge, whose body has mass M, write the mass matrix
+𝓜, and the rotating parabola, turning at the rate ω, writes its small-oscillation frequency Ω.
+
+Every step that prints one of these letters asks ``letter`` (LaTeX) or ``text`` (Unicode) for it,
+and ``table`` is the "Symbols" table the page shows and the API serves: each letter once, with what
+it means.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Any
+
+import sympy as sp
+
+from app.engine.constraints import ConstraintForce
+from app.engine.derive import Derivation
+from app.engine.dimensions import Dims, add_dims, dimension, system_dimensions, unit_text
+from app.engine.names import latex, unicode
+from app.engine.textbook import unicode_text
+from app.engine.transform import Transformed
+
+# concept -> (what it is, candidate letters as (LaTeX, Unicode), first free one used)
+DERIVED: dict[str, tuple[str, tuple[tuple[str, str], ...]]] = {
+    "mass_matrix": ("mass matrix (the Hessian of L in the velocities)", (("M", "M"), (r"\mathcal{M}", "𝓜"))),
+    "stiffness": (
+        "stiffness matrix (the Hessian of the potential at an equilibrium)",
+        (("K", "K"), (r"\mathcal{K}", "𝒦")),
+    ),
+    "frequency": ("angular frequency of small oscillations", ((r"\omega", "ω"), (r"\Omega", "Ω"), (r"\varpi", "ϖ"))),
+    # the small displacement of the normal modes: η (Goldstein's), never ε, the action panel's variation size
+    "displacement": (
+        "small displacement of the coordinates from an equilibrium",
+        ((r"\eta", "η"), (r"\xi", "ξ"), (r"\zeta", "ζ")),
+    ),
+    "amplitude": ("amplitudes of a normal mode (its shape)", (("a", "a"), (r"\mathbf{A}", "𝐀"))),
+    "start": ("displacement the beats start from, the other coordinate at rest", (("A", "A"), ("B", "B"))),
+}
+
+# a constraint's surface 𝒞 = 0 (a calligraphic C, which no parameter can be), in its steps and the Symbols table
+CONSTRAINT = r"\mathcal{C}"
+
+# quantities every document writes with one fixed letter
+FIXED: tuple[tuple[str, str, str], ...] = (
+    ("T", "T", "kinetic energy"),
+    ("U", "U", "potential energy"),
+    ("L", "L", "Lagrangian, L = T − U"),
+    ("h", "h", "energy function, h = Σ q̇ ∂L/∂q̇ − L"),
+    ("H", "H", "Hamiltonian, h written in the coordinates and momenta"),
+    ("E", "E", "total energy, T + U"),
+    ("t", "t", "time"),
+)
+
+
+def _taken(d: Derivation) -> set[str]:
+    """The Unicode letters the declaration already uses (a coordinate's or a parameter's name)."""
+    return {unicode(n) for n in (*d.table.names, *(p.name for p in d.system.parameters))}
+
+
+def _choice(concept: str, d: Derivation) -> tuple[str, str]:
+    taken = _taken(d)
+    candidates = DERIVED[concept][1]
+    return next((c for c in candidates if c[1] not in taken), candidates[-1])
+
+
+def letter(concept: str, d: Derivation) -> str:
+    """The LaTeX letter of a derived quantity in this document."""
+    return _choice(concept, d)[0]
+
+
+def text(concept: str, d: Derivation) -> str:
+    """The Unicode letter of a derived quantity in this document (for sentences)."""
+    return _choice(concept, d)[1]
+
+
+# the SI name of an energy's dimension (kg·m²/s²), and of a frequency's
+_ENERGY: Dims = {"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-2)}
+_ACTION: Dims = {"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-1)}
+
+
+def _unit(dims: Dims | None, angle: bool = False) -> str:
+    """A unit as the Symbols table prints it: J for an energy, rad for an angle, "" when unknown."""
+    if dims is None:
+        return ""
+    if dims == _ENERGY:
+        return "J"
+    if not dims:
+        return "rad" if angle else ""
+    return unit_text(dims)
+
+
+def _row(tex: str, uni: str, meaning: str, unit: str, kind: str) -> dict[str, Any]:
+    return {"latex": tex, "unicode": uni, "meaning": meaning, "unit": unit, "kind": kind}
+
+
+def table(
+    d: Derivation, forces: tuple[ConstraintForce, ...] = (), transformed: Transformed | None = None
+) -> list[dict[str, Any]]:
+    """Every letter of the document once, with what it stands for and its unit: coordinates, parameters,
+    the coordinates' momenta, the derived quantities, then the letters of the steps a document has only
+    sometimes (a reduction's U_eff and m_eff, V, Q, the constraints' 𝒞, λ, F and Cartesian coordinates,
+    the new coordinates of a change and the reduced mass)."""
+    rows: list[dict[str, Any]] = []
+    dims = system_dimensions(d)
+    # the energies are in J when every term of L is (the declared units tell it); otherwise no unit is claimed
+    energy = "J" if dimension(d.mechanics.L, dims) == _ENERGY else ""
+    for q in d.table.q:
+        # an angle is a coordinate inside a sine or cosine: dimensionless, printed in rad
+        unit = _unit(dims.get(q), angle=True)
+        rows.append(_row(latex(q.name), unicode(q.name), "generalized coordinate", unit, "coordinate"))
+    for p in d.system.parameters:
+        rows.append(
+            {
+                "latex": latex(p.name),
+                "unicode": unicode(p.name),
+                "meaning": p.description or "parameter",
+                "unit": p.unit,
+                "kind": "parameter",
+            }
+        )
+    for q in d.table.q:
+        # p_q = ∂L/∂q̇ has the dimension of an action over q's: kg·m/s for a length, kg·m²/s for an angle
+        p_dims = add_dims(_ACTION, dims[q], Fraction(-1)) if q in dims and energy else None
+        rows.append(
+            _row(
+                latex(f"p_{q.name}"),
+                unicode(f"p_{q.name}"),
+                f"generalized momentum conjugate to {unicode(q.name)}, ∂L/∂{unicode(q.name + '_dot')}",
+                _unit(p_dims),
+                "derived",
+            )
+        )
+    taken = _taken(d)
+    for tex, uni, meaning in FIXED:
+        if uni not in taken:
+            rows.append(_row(tex, uni, meaning, "s" if uni == "t" else energy, "derived"))
+    rows.append(
+        _row("f", "f", f"right-hand side of the equations of motion, {text('mass_matrix', d)} q̈ = f", "", "derived")
+    )
+    for concept, (meaning, _) in DERIVED.items():
+        tex, uni = _choice(concept, d)
+        rows.append(_row(tex, uni, meaning, "rad/s" if concept == "frequency" else "", "derived"))
+    rows += _sometimes(d, dims, energy, forces, transformed)
+    # each letter once: the first meaning a page gives it stands
+    first: dict[str, dict[str, Any]] = {}
+    for r in rows:
+        first.setdefault(r["unicode"], r)
+    return list(first.values())
+
+
+def _sometimes(
+    d: Derivation, dims: dict[sp.Symbol, Dims], energy: str, forces: tuple[ConstraintForce, ...], tr: Transformed | None
+) -> list[dict[str, Any]]:
+    """The letters only some documents print, each where its step is."""
+    rows: list[dict[str, Any]] = []
+    m = d.mechanics
+    if d.reduction is not None:
+        q = next(s for s in d.table.q if s.name == d.reduction.coordinate)
+        rows.append(
+            _row(
+                r"U_\text{eff}",
+                "U_eff",
+                f"effective potential in which {unicode(q.name)} moves as a single coordinate (conserved momenta held fixed)",
+                energy,
+                "derived",
+            )
+        )
+        # ½ m_eff q̇² is an energy: [m_eff] = J s² / [q]²
+        m_dims = (
+            add_dims({"kg": Fraction(1), "m": Fraction(2)}, dims[q], Fraction(-2)) if q in dims and energy else None
+        )
+        rows.append(
+            _row(
+                r"m_\text{eff}",
+                "m_eff",
+                f"effective inertia of {unicode(q.name)}, ∂²L/∂{unicode(q.name + '_dot')}²",
+                _unit(m_dims),
+                "derived",
+            )
+        )
+    at_rest = m.L.xreplace(dict.fromkeys(d.table.qd, 0))
+    if m.U is not None and sp.expand(at_rest + m.U) != 0:
+        rows.append(
+            _row(
+                "V",
+                "V",
+                "−L at q̇ = 0, that is U − T₀ (T₀ the part of T without velocities): its stationary points are the equilibria",
+                energy,
+                "derived",
+            )
+        )
+    if any(f != 0 for f in m.Q):
+        rows.append(_row("Q", "Q", "generalized force that no potential describes", "", "derived"))
+    if forces:
+        rows.append(
+            _row(CONSTRAINT, "𝒞", "a constraint written as a surface 𝒞 = 0 in Cartesian coordinates", "", "derived")
+        )
+        rows.append(
+            _row(
+                r"\lambda", "λ", "Lagrange multiplier of a constraint: its force on body i is λ ∂𝒞/∂r_i", "", "derived"
+            )
+        )
+        rows.append(
+            _row(
+                "F",
+                "F",
+                "size of a constraint's force, "
+                + "; ".join(f"F{str(a + 1).translate(_SUBSCRIPTS)}: {f.constraint.name}" for a, f in enumerate(forces)),
+                "N" if energy else "",
+                "derived",
+            )
+        )
+        rows += _cartesian(d, forces)
+    if tr is not None:
+        for Q, definition in zip(tr.derivation.table.q, tr.definitions, strict=True):
+            unit = _unit(dimension(definition, dims))
+            rows.append(
+                _row(
+                    latex(Q.name),
+                    unicode(Q.name),
+                    f"new coordinate, {unicode(Q.name)} = {unicode_text(definition)}",
+                    unit,
+                    # derived from the document's own coordinates, which alone are of kind "coordinate"
+                    "derived",
+                )
+            )
+        if tr.reduced_mass is not None:
+            rows.append(
+                _row(
+                    r"\mu",
+                    "μ",
+                    f"reduced mass, μ = {unicode_text(tr.reduced_mass)}",
+                    _unit(dimension(tr.reduced_mass, dims)),
+                    "derived",
+                )
+            )
+    return rows
+
+
+_SUBSCRIPTS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def _cartesian(d: Derivation, forces: tuple[ConstraintForce, ...]) -> list[dict[str, Any]]:
+    """The Cartesian coordinates the constraints are written in: x across, y, z up, of each body."""
+    known = {*d.table.q, *d.table.params, d.table.t}
+    names = sorted({s.name for f in forces for s in f.g.free_symbols if s not in known})
+    rows = []
+    for name in names:
+        axis, number = name[0], name[1:]
+        # x, y, z name a single body's; x1, z2 … body 1's, body 2's
+        index = int(number) - 1 if number.isdigit() else 0
+        body = d.system.particles[index] if index < len(d.system.particles) else None
+        whose = f"the {body.label or 'body ' + (number or '1')}" if body is not None else "the body"
+        rows.append(_row(latex(name), unicode(name), f"Cartesian {axis} of {whose}", "m", "derived"))
+    return rows

@@ -1,0 +1,92 @@
+"""Gate 3 of the parser (app/engine/parse.py): what ``read`` checked, built into SymPy.
+
+The compact tree is built node by node (decimal literals as the exact rationals they name), and a result
+that is undefined or not real (``1/(x - x)``, ``sqrt(-x**2)``, ``asin(2 + x - x)``) is refused with the
+part at fault and its columns, as gate 2 refuses.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+
+import sympy as sp
+
+from app.engine.parse_checker import Checker
+from app.engine.parse_read import Node, Parsed, placed, read
+from app.engine.parse_rules import CONSTANTS, FUNCTIONS, ExpressionError
+
+
+@dataclass(frozen=True)
+class _Span:
+    """Where a compact node stands, as a refusal reads it from an ``ast`` node."""
+
+    col_offset: int
+    end_col_offset: int | None
+
+
+class Builder:
+    """Gate 3: a checked tree (in the compact form) into SymPy."""
+
+    def __init__(self, text: str, offset: int, names: Mapping[str, sp.Symbol]):
+        self.checker = Checker(text, offset, names)
+        self.names = names
+
+    def build(self, node: Node) -> sp.Expr:
+        kind = node[0]
+        if kind == "num":
+            # A decimal literal becomes the exact rational it names, so derivations stay exact.
+            value = node[3]
+            return sp.Integer(value) if isinstance(value, int) else sp.Rational(repr(value))
+        if kind == "name":
+            return self.names[node[3]] if node[3] in self.names else CONSTANTS[node[3]]
+        if kind in ("neg", "pos"):
+            return -self.build(node[3]) if kind == "neg" else self.build(node[3])
+        if kind == "chain":
+            result = self.build(node[3])
+            for op, operand in node[4]:
+                right = self.build(operand)
+                if op == "/" and right == 0:
+                    raise self.refuse(operand, "division by zero (this denominator is 0)")
+                result = _COMBINE[op](result, right)
+            return result
+        if kind == "pow":
+            return self.real(node, self.build(node[3]) ** self.build(node[4]))
+        assert kind == "call"
+        return self.real(node, FUNCTIONS[node[3]](*(self.build(a) for a in node[4])))
+
+    def refuse(self, node: Node, why: str) -> ExpressionError:
+        return self.checker.refuse(_Span(node[1], node[2]), why)  # type: ignore[arg-type]
+
+    def real(self, node: Node, value: sp.Expr) -> sp.Expr:
+        """A power or function value, refused when it is a constant that is not real (asin(2 + x - x))."""
+        if value.is_number and value.is_finite is not False and value.is_extended_real is False:
+            raise self.refuse(node, "this number is not real")
+        return value
+
+
+_COMBINE: dict[str, Callable[[sp.Expr, sp.Expr], sp.Expr]] = {
+    "+": lambda a, b: a + b,
+    "-": lambda a, b: a - b,
+    "*": lambda a, b: a * b,
+    "/": lambda a, b: a / b,
+}
+
+
+def parse_expression(text: str, names: Mapping[str, sp.Symbol]) -> sp.Expr:
+    """Parse ``text`` into a SymPy expression over the symbols in ``names``."""
+    return build(read(text, names), names)
+
+
+def build(parsed: Parsed, names: Mapping[str, sp.Symbol]) -> sp.Expr:
+    """Gate 3: an expression read by ``read`` built into SymPy over the symbols in ``names``."""
+    if not parsed.names <= names.keys():
+        missing = ", ".join(sorted(parsed.names - names.keys()))
+        raise ValueError(f"{parsed.text[:60]!r} was checked against names this namespace lacks: {missing}")
+    stripped, offset = placed(parsed.text)
+    expr = Builder(stripped, offset, names).build(parsed.tree)
+    if expr.has(sp.zoo, sp.oo, sp.nan, -sp.oo):
+        raise ExpressionError(f"the expression is undefined (a division by zero?): {stripped[:60]!r}", stripped[:60])
+    if expr.has(sp.I):
+        raise ExpressionError(f"the expression is not real: {stripped[:60]!r}", stripped[:60])
+    return expr

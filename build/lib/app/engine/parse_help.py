@@ -1,0 +1,27 @@
+"""The parser's help for text it cannot read (app/engine/parse.py): which character is refused and why
+(``=`` makes an equation, a quote a string, ``ｓ`` is neither ASCII nor Greek).  Pure Python.
+"""
+
+from __future__ import annotations
+
+from app.engine.parse_rules import ALLOWED_CHARACTERS, ExpressionError
+
+
+def first_bad_character(text: str) -> int | None:
+    for i, ch in enumerate(text):
+        if ch not in ALLOWED_CHARACTERS:
+            return i
+    return None
+
+
+def character_error(text: str, i: int) -> ExpressionError:
+    ch = text[i]
+    if ch == "=":
+        why = "an equation is not an expression: write it as one expression equal to zero, e.g. a - (b) for a = b"
+    elif ch in "'\"":
+        why = "quotes are not allowed: an expression holds no strings"
+    elif ord(ch) > 127:
+        why = "beyond ASCII only Greek letters, primes (θ'), dots over names (θ̇), · × − and superscripts (x²) are allowed"
+    else:
+        why = "only letters, digits, spaces, _ . , ( ) and + - * / ^ ** are allowed"
+    return ExpressionError(f"character {ch!r} at column {i + 1} is not allowed: {why}", ch, i, i + 1)

@@ -1,0 +1,525 @@
+"""The derivation as data: ordered steps and the API's JSON contract.
+
+Every step is ``{"key", "title", "latex", "sympy", "explanation"}``; templates only
+loop over them.  ``key`` identifies the step (``euler-lagrange``; ``derivatives:theta`` for one of a kind,
+the part after the colon naming which), stable whatever its ``title`` says: the title is display text,
+and a scene's reasons (app/scenes/reasons.py) and the document's placement of steps go by key.  ``sympy`` strings use the symbol convention (``q``, ``q_dot``,
+``q_ddot``, ``t``, parameters by name) and parse with ``sympy.sympify``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import sympy as sp
+
+from app.engine import meaning, notation, textbook
+from app.engine.action_step import KEY as ACTION_KEY
+from app.engine.action_step import action_step
+from app.engine.breaking import broken, broken_row, single
+from app.engine.budget import memoized, pythagoras, unbudgeted
+from app.engine.derive import Derivation
+from app.engine.forms import settle, textbook_form, use_names
+from app.engine.names import unicode
+from app.engine.trees import maybe_of_sympy
+
+# The steps (by key) a reader needs to follow the argument: T and U (where students go wrong most), the
+# Lagrangian, its equations of motion, the accelerations and what is conserved.  The others are bookkeeping a
+# page may fold away.
+CORE_STEPS = frozenset(
+    {"kinetic", "potential", "lagrangian", "generalized-forces", "euler-lagrange", "accelerations", "cyclic",
+     "h-vs-e", "energy-integral", ACTION_KEY}
+)  # fmt: skip
+
+
+@dataclass
+class Printer:
+    names: dict[sp.Symbol, str]
+
+    def __post_init__(self) -> None:
+        # expressions formed without a printer at hand (a step's sympy text) read coordinates from these names
+        use_names(self.names)
+
+    def form(self, expr: Any) -> Any:
+        """The expression's textbook form (app.engine.forms): what both its text and its LaTeX show."""
+        return textbook_form(expr, self.names)
+
+    def tex(self, expr: Any, first: sp.Symbol | None = None) -> str:
+        """LaTeX of the textbook form, in a textbook's order (``first``: the term holding it leads a sum)."""
+        shown = self.form(expr)
+        with unbudgeted():  # printing must not eat the simplifications' share of the display budget
+            return textbook.latex(shown, self.names, first)
+
+    def pair(self, expr: sp.Expr, first: sp.Symbol | None = None) -> dict[str, Any]:
+        """An expression in the document: the text of its textbook form, the LaTeX of the same form, and the
+        tree the browser evaluates (of the engine's own expression; None when it has none: a function
+        outside the allowlist, or too large for a figure)."""
+        shown = self.form(expr)
+        with unbudgeted():
+            tex = textbook.latex(shown, self.names, first)
+        # a long result broken across lines, as in the steps (the results box is narrower than a step)
+        return {"sympy": sp.sstr(shown), "latex": broken(tex), "tree": maybe_of_sympy(expr)}
+
+    def shown(self, form: sp.Expr, tex: str, expr: sp.Expr) -> dict[str, Any]:
+        """A pair for an expression already put in a display form of its own (an equation's scaled residual)."""
+        return {"sympy": sp.sstr(form), "latex": single(tex), "tree": maybe_of_sympy(expr)}
+
+
+def _aligned(rows: list[str]) -> str:
+    """One row as it is; several rows stacked and aligned at their first '='.  A row wider than a page's box
+    is broken across lines first (app.engine.breaking): its continuations (``\\quad + …``) and blocks of
+    lines start at the alignment column."""
+    rows = [line for row in rows for line in broken_row(row)]
+    if len(rows) == 1:
+        return rows[0]
+    # rows holding a block of lines (an equation broken across lines) are set flush left, not at their '='
+    flush = any(row.startswith("\\begin{aligned}") for row in rows)
+    marked = [
+        row.replace(" = ", " &= ", 1) if " = " in row and not flush and not row.startswith("\\quad") else "&" + row
+        for row in rows
+    ]
+    return r"\begin{aligned}" + r" \\ ".join(marked) + r"\end{aligned}"
+
+
+def plain_name(name: str) -> str:
+    """A coordinate's name as a reader writes it in running text: theta -> θ, x1 -> x₁."""
+    return unicode(name)
+
+
+def _formed(sympy: Any) -> Any:
+    """Every expression in a step's data in its textbook form (the form its LaTeX rows typeset)."""
+    if isinstance(sympy, (list, tuple)):
+        return type(sympy)(_formed(x) for x in sympy)
+    return textbook_form(sympy)
+
+
+def _step(key: str, title: str, rows: list[str], sympy: Any, explanation: str, formed: bool = False) -> dict[str, str]:
+    """``key`` names the step whatever its title reads (see the module's docstring).  ``formed``: the data is already in the form the rows show (else each expression is put in its textbook
+    form, as ``Printer.tex`` does for the rows)."""
+    text = sympy if isinstance(sympy, str) else sp.sstr(sympy if formed else _formed(sympy))
+    return {"key": key, "title": title, "latex": _aligned(rows), "sympy": text, "explanation": explanation}
+
+
+def _mapping_step(
+    key: str, title: str, mapping: dict[Any, Any], explanation: str, names: Printer, values: Printer | None = None
+) -> dict[str, str]:
+    """A step of rows ``name = value``, one for each pair of ``mapping``: the names printed by ``names``, the
+    values by ``values`` (the same printer unless given)."""
+    values = values or names
+    rows = [f"{names.tex(name)} = {values.tex(value)}" for name, value in mapping.items()]
+    return _step(key, title, rows, list(mapping.values()), explanation)
+
+
+def display(expr: sp.Expr) -> sp.Expr:
+    """The textbook form of an expression (app.engine.forms), with the current printer's names."""
+    return textbook_form(expr) if isinstance(expr, sp.Expr) and expr.free_symbols else expr
+
+
+def equations(d: Derivation, pr: Printer) -> list[tuple[sp.Expr, str]]:
+    """Each Euler–Lagrange equation as a textbook prints it, θ̈ + (g/R) sin θ = 0: the residual in its
+    textbook form scaled for display (the equation residual = 0 is unchanged), and its LaTeX row."""
+    # the results box and the steps show the same rows: worked out once per document
+    key = (tuple(d.equations.residuals), tuple(d.table.qdd), tuple(pr.names.items()))
+    return memoized("equations", key, lambda: _equations(d, pr))
+
+
+def _equations(d: Derivation, pr: Printer) -> list[tuple[sp.Expr, str]]:
+    eqs = d.equations
+    M, diagonal = eqs.mass_matrix, eqs.mass_matrix.is_diagonal()
+    out = []
+    for k, r in enumerate(eqs.residuals):
+        own, residual = d.table.qdd[k], pr.form(r)
+        with unbudgeted():
+            shown = textbook.normalised(residual, M[k, k], diagonal, pr.names, own)
+            out.append((shown, f"{textbook.latex(shown, pr.names, first=own)} = 0"))
+    return out
+
+
+def equation_rows(d: Derivation, pr: Printer) -> list[str]:
+    return [row for _, row in equations(d, pr)]
+
+
+def equation_pairs(d: Derivation, pr: Printer) -> list[dict[str, Any]]:
+    """The equations for the document: each one's text is the scaled residual its row typesets."""
+    return [pr.shown(shown, row, r) for (shown, row), r in zip(equations(d, pr), d.equations.residuals, strict=True)]
+
+
+def lagrangian(d: Derivation, pr: Printer) -> sp.Expr:
+    """L printed from the same pieces as T and U (T's form minus U's), or its own form when declared alone."""
+    m = d.mechanics
+    if m.T is None or m.U is None:
+        return pr.form(m.L)
+    return settle(pr.form(m.T) - pr.form(m.U), pr.names)
+
+
+def energies(d: Derivation, pr: Printer) -> tuple[sp.Expr, sp.Expr]:
+    """h and E printed from the same pieces as T and U: E = (T's form) + (U's form), and h the same sum
+    when h = E (else h's own textbook form)."""
+    m, en = d.mechanics, d.energetics
+    if m.T is None or m.U is None:
+        return pr.form(en.hamiltonian), pr.form(en.energy)
+    energy = settle(pr.form(m.T) + pr.form(m.U), pr.names)
+    same = en.h_equals_e and sp.expand(en.hamiltonian - en.energy) == 0
+    return (energy if same else pr.form(en.hamiltonian)), energy
+
+
+def momentum(d: Derivation, k: int) -> sp.Expr:
+    """The k-th generalized momentum grouped by velocity, each coefficient factored: (M + m)Ẋ + mḊ cos α."""
+    return display(meaning.by_velocity(d.equations.momenta[k], d.table.qd))
+
+
+def effective_potential(d: Derivation) -> sp.Expr:
+    """U_eff as its centrifugal piece plus the potential's: p_θ²/(2mr²) + ½kr²."""
+    red = d.reduction
+    assert red is not None
+    return meaning.pieces(red.effective_potential, red.momenta, d.table.q)
+
+
+def conserved_form(d: Derivation, pr: Printer, expr: sp.Expr) -> sp.Expr:
+    """A conserved quantity as a textbook writes it: the energy as the document's E (its bodies' and springs'
+    pieces, T's form plus U's), h as the document's h, a momentum grouped by velocity."""
+    en = d.energetics
+    h, energy = energies(d, pr)
+    if sp.expand(expr - en.energy) == 0:
+        return energy
+    if sp.expand(expr - en.hamiltonian) == 0:
+        return h
+    return display(meaning.by_velocity(expr, d.table.qd))
+
+
+def build_steps(d: Derivation) -> list[dict[str, str]]:
+    m, eqs, en, red, table = d.mechanics, d.equations, d.energetics, d.reduction, d.table
+    pr = Printer(table.latex_names())
+    qn = [pr.tex(s) for s in table.q]
+    qdn = [pr.tex(s) for s in table.qd]
+    qddn = [pr.tex(s) for s in table.qdd]
+    steps: list[dict[str, str]] = []
+    steps.append(action_step(d))  # Hamilton's principle first (app/engine/action_step.py)
+
+    if m.positions:
+        n = len(m.positions)
+        label = (lambda i: rf"_{{{i + 1}}}") if n > 1 else (lambda i: "")
+
+        def vectors(letter: str, of_masses: Any) -> tuple[list[str], list[tuple[sp.Expr, ...]]]:
+            """Each mass's vector (its position or its velocity) as a LaTeX row and as data."""
+            rows = [
+                rf"\vec {letter}{label(i)} = \left({', '.join(pr.tex(c) for c in vector)}\right)"
+                for i, vector in enumerate(of_masses)
+            ]
+            return rows, [tuple(vector) for vector in of_masses]
+
+        steps.append(
+            _step(
+                "positions",
+                "Positions",
+                *vectors("r", m.positions),
+                "Each mass is placed in Cartesian coordinates as a function of the generalized coordinates"
+                + (
+                    " and of time, because a constraint moves."
+                    if any(c.has(table.t) for r in m.positions for c in r)
+                    else "."
+                ),
+            )
+        )
+        steps.append(
+            _step(
+                "velocities",
+                "Velocities",
+                *vectors("v", m.velocities),
+                "Differentiating each position along the motion (chain rule through every coordinate) gives its velocity.",
+            )
+        )
+        steps.append(
+            _step(
+                "squared-speeds",
+                "Squared speeds",
+                [rf"v{label(i)}^2 = {pr.tex(v2)}" for i, v2 in enumerate(m.speeds_squared)],
+                list(m.speeds_squared),
+                "The dot product of each velocity with itself"
+                # the identity is named only where a sine or cosine was there to use it on
+                + (
+                    ", after using sin² + cos² = 1."
+                    if any(c.has(sp.sin, sp.cos) for r in m.positions for c in r)
+                    else "."
+                ),
+            )
+        )
+    if m.T is not None:
+        steps.append(
+            _step(
+                "kinetic",
+                "Kinetic energy",
+                [f"T = {pr.tex(m.T)}"],
+                m.T,
+                "T adds up one half of mass times squared speed." if m.positions else "The kinetic energy as declared.",
+            )
+        )
+        steps.append(
+            _step(
+                "potential",
+                "Potential energy",
+                [f"U = {pr.tex(m.U)}"],
+                m.U,
+                "The potential energy depends on positions only.",
+            )
+        )
+    steps.append(
+        _step(
+            "lagrangian",
+            "Lagrangian",
+            [f"L = {pr.tex(lagrangian(d, pr))}"],
+            lagrangian(d, pr),
+            "The Lagrangian is kinetic minus potential energy." if m.T is not None else "The Lagrangian as declared.",
+        )
+    )
+
+    for k, name in enumerate(table.names):
+        g, p, dp = eqs.dL_dq[k], eqs.momenta[k], eqs.ddt_momenta[k]
+        steps.append(
+            _step(
+                f"derivatives:{name}",
+                f"Derivatives for {plain_name(name)}",
+                [
+                    rf"\frac{{\partial L}}{{\partial {qn[k]}}} = {pr.tex(display(g))}",
+                    rf"\frac{{\partial L}}{{\partial {qdn[k]}}} = {pr.tex(display(p))}",
+                    rf"\frac{{d}}{{dt}}\left(\frac{{\partial L}}{{\partial {qdn[k]}}}\right) = {pr.tex(display(dp))}",
+                ],
+                [display(g), display(p), display(dp)],
+                "The two partial derivatives the Euler–Lagrange equation needs, and the total time derivative of the second.",
+            )
+        )
+    if any(f != 0 for f in m.Q):
+        steps.append(
+            _step(
+                "generalized-forces",
+                "Generalized forces",
+                [f"Q_{{{qn[k]}}} = {pr.tex(f)}" for k, f in enumerate(m.Q)],
+                list(m.Q),
+                "Forces that no potential describes enter on the right: d/dt ∂L/∂q̇ − ∂L/∂q = Q.",
+            )
+        )
+    shown_equations = equations(d, pr)
+    Mt, Mu = notation.letter("mass_matrix", d), notation.text("mass_matrix", d)
+    steps.append(
+        _step(
+            "euler-lagrange",
+            "Euler–Lagrange equations",
+            [row for _, row in shown_equations],
+            [shown for shown, _ in shown_equations],
+            "For each coordinate, d/dt ∂L/∂q̇ − ∂L/∂q"
+            + (" − Q (the generalized force above)" if any(f != 0 for f in m.Q) else "")
+            + " vanishes along the true motion"
+            + (
+                "; each equation is shown divided by its acceleration's coefficient."
+                if eqs.mass_matrix.is_diagonal()
+                else "."
+            ),
+            formed=True,
+        )
+    )
+    steps.append(
+        _step(
+            "mass-matrix",
+            "Mass matrix and forcing",
+            [rf"{Mt} = {pr.tex(eqs.mass_matrix.applyfunc(pr.form))}", rf"f = {pr.tex(eqs.forcing.applyfunc(pr.form))}"],
+            [eqs.mass_matrix.tolist(), [display(x) for x in eqs.forcing]],
+            f"The equations are linear in the accelerations, {Mu} q̈ = f, with {Mu} the Hessian of L in the velocities.",
+        )
+    )
+    acc = [display(a) for a in eqs.accelerations] if eqs.closed_form else []
+    steps.append(
+        _step(
+            "accelerations",
+            "Accelerations",
+            [f"{qddn[k]} = {pr.tex(a)}" for k, a in enumerate(acc)],
+            acc,
+            f"Solving {Mu} q̈ = f gives each acceleration explicitly, ready for numerical integration.",
+        )
+        if eqs.closed_form  # else M⁻¹f stays factored (app.engine.lagrange.CLOSED_FORM_MAX_NODES)
+        else _step(
+            "accelerations",
+            "Accelerations",
+            [rf"\ddot{{q}} = {Mt}^{{-1}} f"],
+            "M**(-1)*f",
+            f"Solved symbolically, {Mu} q̈ = f gives expressions too long to read "
+            f"({eqs.closed_form_reason}): the accelerations stay {Mu}⁻¹f, and the "
+            f"numerics solve {Mu} q̈ = f by LU at every step.",
+        )
+    )
+    steps.append(
+        _step(
+            "momenta",
+            "Generalized momenta",
+            [f"p_{{{qn[k]}}} = {pr.tex(momentum(d, k))}" for k in range(len(eqs.momenta))],
+            [momentum(d, k) for k in range(len(eqs.momenta))],
+            "Each generalized momentum is the derivative of L with respect to that coordinate's velocity.",
+        )
+    )
+    if en.cyclic:
+        steps.append(
+            _step(
+                "cyclic",
+                "Cyclic coordinates",
+                [
+                    rf"\frac{{\partial L}}{{\partial {qn[table.names.index(c)]}}} = 0 \;\Rightarrow\; "
+                    rf"p_{{{qn[table.names.index(c)]}}} = {pr.tex(momentum(d, table.names.index(c)))} = \text{{const}}"
+                    for c in en.cyclic
+                ],
+                [momentum(d, table.names.index(c)) for c in en.cyclic],
+                "A coordinate missing from L (with no force on it) has a momentum that never changes.",
+            )
+        )
+    steps.append(
+        _step(
+            "time-dependence",
+            "Explicit time dependence",
+            [rf"\frac{{\partial L}}{{\partial t}} = {pr.tex(display(en.dL_dt))}"],
+            display(en.dL_dt),
+            "If L does not contain t explicitly, the Hamiltonian is conserved (absent non-conservative forces).",
+        )
+    )
+    h_form, e_form = energies(d, pr)
+    steps.append(
+        _step(
+            "hamiltonian",
+            "Hamiltonian",
+            [rf"h = \sum_k p_k \dot{{q}}_k - L = {pr.tex(h_form)}"],
+            h_form,
+            "The Hamiltonian is the sum of momenta times velocities minus the Lagrangian.",
+        )
+    )
+    if m.T is not None:
+        steps.append(
+            _step(
+                "energy",
+                "Energy",
+                [f"E = T + U = {pr.tex(e_form)}"],
+                e_form,
+                "The mechanical energy, for comparison with h.",
+            )
+        )
+        steps.append(
+            _step(
+                "h-vs-e",
+                "Is h equal to E?",
+                [f"E - h = {pr.tex(en.energy_minus_h)}"],
+                en.energy_minus_h,
+                en.reason,
+            )
+        )
+    if any(f != 0 for f in m.Q):
+        steps.append(
+            _step(
+                "power",
+                "Power of the non-conservative forces",
+                [
+                    rf"\frac{{dh}}{{dt}} = -\frac{{\partial L}}{{\partial t}} + \sum_k Q_k \dot{{q}}_k = {pr.tex(display(en.power - en.dL_dt))}"
+                ],
+                display(en.power - en.dL_dt),
+                "Along the motion h changes at the rate at which the generalized forces do work.",
+            )
+        )
+    if red is not None:
+        steps.extend(_reduction_steps(d, pr))
+    return steps
+
+
+def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
+    red = d.reduction
+    assert red is not None
+    table = d.table
+    r = table.q[table.names.index(red.coordinate)]
+    rn = pr.tex(r)
+    # The constant of this first integral is the conserved energy E where h = E, else h itself (a rotating
+    # frame's bead): the page's own letter for it, never a new E_r (issue 40).
+    level = "E" if d.energetics.h_equals_e else "h"
+    # ½ m_eff ṙ² followed by U_eff exactly as the step before prints it (centrifugal piece first)
+    rd = table.qd[table.names.index(red.coordinate)]
+    u_eff = pr.tex(effective_potential(d), red.momenta[0] if red.momenta else None)
+    kinetic = pr.tex(sp.factor_terms(red.radial_energy - red.effective_potential), rd)
+    radial = f"{kinetic} {u_eff}" if u_eff.startswith("-") else f"{kinetic} + {u_eff}"
+    out: list[dict[str, str]] = []
+    if red.cyclic_velocities:
+        out.append(
+            _mapping_step(
+                "cyclic-velocities",
+                "Eliminating the cyclic velocities",
+                red.cyclic_velocities,
+                "Each conserved momentum is solved for its velocity, leaving one coordinate to follow.",
+                pr,
+            )
+        )
+    out.append(
+        _step(
+            "effective-potential",
+            "Effective potential",
+            [
+                # the centrifugal piece first, as a textbook writes U_eff
+                rf"U_\text{{eff}}({rn}) = {pr.tex(effective_potential(d), red.momenta[0] if red.momenta else None)}",
+                rf"m_\text{{eff}} = {pr.tex(red.effective_mass)}",
+            ],
+            [effective_potential(d), red.effective_mass],
+            "With the cyclic motion folded in, the remaining coordinate moves like a particle of mass m_eff in the "
+            "potential U_eff.",
+        )
+    )
+    out.append(
+        _step(
+            "energy-integral",
+            "Energy first integral",
+            [rf"{level} = {radial}"],
+            red.radial_energy,
+            f"The conserved {level}, written in {unicode(red.coordinate)} alone: a first-order equation for "
+            f"{unicode(red.coordinate)}.",
+        )
+    )
+    out.append(
+        _step(
+            "time-integral",
+            "Time as an integral",
+            [rf"t = \int \sqrt{{\frac{{m_\text{{eff}}}}{{2\,\left({level} - U_\text{{eff}}({rn})\right)}}}}\, d{rn}"],
+            red.time_integral,
+            f"Separating variables in the energy integral gives the time to reach each {unicode(red.coordinate)}, "
+            "with m_eff and U_eff as in the step before.",
+        )
+    )
+    omega = notation.letter("frequency", d)
+    steady = red.omega_squared_steady
+    if red.equilibria and steady is not None and all(e.omega_squared.has(*red.momenta) for e in red.equilibria):
+        # ω² about a steady motion in terms of its r₀, the momentum eliminated by U_eff'(r₀) = 0, as a textbook
+        # writes it (not the root put back into U_eff'')
+        r0 = sp.Symbol(r.name + "0", real=True)
+        at = steady.xreplace({r: r0})
+        rows = [rf"{rn}_0 = {pr.tex(e.position)}" for e in red.equilibria] + [rf"{omega}^2 = {pr.tex(at)}"]
+        sym: Any = [e.position for e in red.equilibria] + [at]
+        momentum = unicode(red.momenta[0].name)
+        why = (
+            f"A steady motion sits where U_eff′ vanishes; about it, ω² = U_eff″/m_eff. The condition "
+            f"U_eff′({unicode(r0.name)}) = 0 gives {momentum}² in terms of {unicode(r0.name)}, and ω² is written "
+            f"with it, so it depends on {unicode(r0.name)} and the parameters alone."
+            + (" It is positive: the steady motion is stable." if all(e.stable for e in red.equilibria) else "")
+            + (" It is negative: the steady motion is unstable." if all(e.stable is False for e in red.equilibria) else "")
+        )
+    elif red.equilibria:
+        rows = [rf"{rn}_0 = {pr.tex(e.position)},\quad {omega}^2 = {pr.tex(e.omega_squared)}" for e in red.equilibria]
+        sym = [(e.position, e.omega_squared) for e in red.equilibria]
+        why = "Equilibria make U_eff′ vanish; about each, ω² = U_eff″/m_eff (oscillation when positive, instability when negative)."
+    else:
+        if not red.equilibrium_condition.has(r):
+            # a force that never vanishes: no equilibrium, so no frequency about one either
+            rows = [rf"U_\text{{eff}}' = {pr.tex(red.equilibrium_condition)} \neq 0", r"\text{no equilibrium}"]
+            sym = [red.equilibrium_condition]
+            why = f"U_eff′ does not depend on {unicode(red.coordinate)} and is not zero, so there is no equilibrium."
+        else:
+            rows = [
+                rf"U_\text{{eff}}'({rn}_0) = {pr.tex(red.equilibrium_condition.xreplace({r: sp.Symbol(r.name + '0')}))} = 0",
+                rf"{omega}^2 = \frac{{U_\text{{eff}}''}}{{m_\text{{eff}}}} = {pr.tex(pythagoras(red.omega_squared_at))}",
+            ]
+            sym = [red.equilibrium_condition, pythagoras(red.omega_squared_at)]
+            why = (
+                f"No closed-form root was found; the condition and the frequency hold at any {unicode(red.coordinate + '0')} "
+                "that satisfies it."
+            )
+    out.append(_step("reduced-equilibria", "Equilibria and small oscillations", rows, sym, why))
+    return out

@@ -1,0 +1,561 @@
+"""Hamilton's equations and the normal modes as derivation steps and as JSON.
+
+Steps follow ``app.engine.report`` (``{"key", "title", "latex", "sympy",
+"explanation"}``); the JSON blocks are the derivation document's ``hamilton``
+and ``normal_modes``, with numbers at the default parameters.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import sympy as sp
+
+from app.engine import notation
+from app.engine.budget import memoized, pythagoras
+from app.engine.derive import Derivation
+from app.engine.hamilton import Hamilton
+from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode, NormalModes
+from app.engine.report import Printer, _step, display, plain_name
+from app.engine.textbook import unicode_text
+
+
+def _show(expr: sp.Expr) -> sp.Expr:
+    """Hamilton's expressions are compact as built: only common factors are pulled out (once per document:
+    the steps and the JSON block show the same ones)."""
+    return memoized("hamilton-shown", expr, lambda: sp.factor_terms(_collapsed(expr)))
+
+
+def _collapsed(expr: sp.Expr) -> sp.Expr:
+    """sin² + cos² of one argument collapsed (p_θ/(mR²), not p_θ/(mR² sin² θ + mR² cos² θ)), kept only when that
+    shortens the expression: collapsing expands, and the double pendulum's ṗ₁ over (m₁ + m₂ sin²(θ₁ − θ₂))² would
+    come back multiplied out, several times as long."""
+    collapsed = pythagoras(expr)
+    return collapsed if sp.count_ops(collapsed) < sp.count_ops(expr) else expr
+
+
+def hamilton_printer(d: Derivation, ham: Hamilton) -> Printer:
+    """The derivation's printer, with the momentum of coordinate q printed p_q."""
+    names = d.table.latex_names()
+    for q, P in zip(d.table.q, ham.momenta, strict=True):
+        names[P] = f"p_{{{names[q]}}}"
+    return Printer(names)
+
+
+def hamilton_steps(d: Derivation, ham: Hamilton) -> list[dict[str, str]]:
+    table = d.table
+    pr = hamilton_printer(d, ham)
+    qn = [pr.tex(s) for s in table.q]
+    pn = [pr.tex(P) for P in ham.momenta]
+    vn = [pr.tex(v) for v in table.qd]
+    velocities = [_show(v) for v in ham.velocities]
+    H = _show(ham.hamiltonian)
+    p_dot = [_show(x) for x in ham.p_dot]
+    forced = any(f != 0 for f in d.mechanics.Q)
+    offsets = any(b != 0 for b in ham.offsets)
+    Mu = notation.text("mass_matrix", d)
+    return [
+        _step(
+            "legendre",
+            "Velocities from the momenta",
+            [f"{vn[k]} = {pr.tex(v)}" for k, v in enumerate(velocities)],
+            velocities,
+            (
+                f"The momenta are linear in the velocities, p = {Mu} q̇ + b (b, the momenta at rest, comes from the "
+                f"terms of L linear in q̇); solving for the velocities gives q̇ = {Mu}⁻¹ (p − b)."
+                if offsets
+                else f"The momenta are linear in the velocities, p = {Mu} q̇; solving for the velocities gives "
+                f"q̇ = {Mu}⁻¹ p."
+            ),
+        ),
+        _step(
+            "hamiltonian-pq",
+            "Hamiltonian H(q, p)",
+            [rf"H = \sum_k p_k \dot{{q}}_k - L = {pr.tex(H)}"],
+            H,
+            "The same h, now written in the coordinates and momenta: "
+            + (f"H = ½ (p − b)·{Mu}⁻¹(p − b) − L(q, q̇ = 0)." if offsets else f"H = ½ p·{Mu}⁻¹p − L(q, q̇ = 0)."),
+        ),
+        _step(
+            "hamilton-equations",
+            "Hamilton's equations",
+            [rf"{vn[k]} = \frac{{\partial H}}{{\partial {pn[k]}}} = {pr.tex(v)}" for k, v in enumerate(velocities)]
+            + [
+                rf"\dot{{{pn[k]}}} = -\frac{{\partial H}}{{\partial {qn[k]}}}"
+                + (f" + Q_{{{qn[k]}}}" if d.mechanics.Q[k] != 0 else "")
+                + f" = {pr.tex(x)}"
+                for k, x in enumerate(p_dot)
+            ],
+            [*velocities, *p_dot],
+            "Two first-order equations per coordinate replace each second-order Euler–Lagrange equation"
+            + (", with the generalized forces added to ṗ." if forced else "."),
+        ),
+    ]
+
+
+def hamilton_json(d: Derivation, ham: Hamilton) -> dict[str, Any]:
+    pr = hamilton_printer(d, ham)
+    return {
+        "hamiltonian": pr.pair(_show(ham.hamiltonian)),
+        "momenta": {name: P.name for name, P in zip(d.table.names, ham.momenta, strict=True)},
+        "equations": [
+            {"coordinate": name, "q_dot": pr.pair(_show(v)), "p_dot": pr.pair(_show(x))}
+            for name, v, x in zip(d.table.names, ham.velocities, ham.p_dot, strict=True)
+        ],
+    }
+
+
+def _number(x: float) -> str:
+    return f"{x:.6g}"
+
+
+def _figures(x: float) -> str:
+    """A mode's number as a textbook prints a measured-looking value: four significant figures."""
+    return f"{x:.4g}"
+
+
+# the longest exact shape component printed (SymPy's operation count); a longer one is shown as its number
+SHAPE_MAX_OPS = 12
+
+
+def _exact_shape(e: Equilibrium, m: Mode, d: Derivation) -> list[sp.Expr] | None:
+    """The shape of a mode of two coordinates in closed form, normalised as the numbers are (the largest
+    component 1), when ω² is exact and the other component is short; None otherwise."""
+    if m.exact is None or len(m.shape) != 2 or sp.count_ops(m.exact) > SHAPE_MAX_OPS:
+        return None
+    # (K − ω² M) a = 0; with a_i = 1 one row gives A_ri + A_rj a_j = 0, so a_j = −A_ri / A_rj
+    A = e.stiffness - m.exact * e.mass
+    i = max(range(2), key=lambda k: abs(m.shape[k]))
+    j = 1 - i
+    defaults = {s: p.default for p in d.system.parameters for s in d.table.params if s.name == p.name}
+    for r in range(2):
+        if sp.cancel(A[r, j]) == 0:
+            continue
+        other = sp.factor(sp.cancel(-A[r, i] / A[r, j]))
+        # the closed form must reproduce the numbers at the default parameters, else the numbers are shown
+        value = complex(other.xreplace(defaults).evalf()) if other.free_symbols <= set(defaults) else None
+        if value is None or abs(value - m.shape[j]) > 1e-9 * max(1.0, abs(m.shape[j])):
+            return None
+        if sp.count_ops(other) > SHAPE_MAX_OPS:
+            return None
+        return [sp.Integer(1), other] if i == 0 else [other, sp.Integer(1)]
+    return None
+
+
+def _where(e: Equilibrium, pr: Printer, d: Derivation) -> str:
+    table = d.table
+    sym = {s.name: s for s in table.q}
+    parts = []
+    for name, value in e.position.items():
+        exact = e.exact.get(name) if e.exact else None
+        parts.append(f"{pr.tex(sym[name])} = {pr.tex(exact) if exact is not None else _number(value)}")
+    held = [rf"{pr.tex(sp.Symbol(n))} = {_number(v)}" for n, v in e.momenta.items()]
+    return r",\; ".join(parts + held)
+
+
+def _family_of(e: Equilibrium, nm: NormalModes, d: Derivation) -> dict[str, sp.Expr] | None:
+    """The closed-form family of equilibria (a coordinate left free) that ``e`` was picked from, if any."""
+    if not e.exact or e.momenta:
+        return None
+    sym = {s.name: s for s in d.table.q}
+    for family in nm.families:
+        free = [n for n in e.exact if n not in family]
+        if not family or not free:
+            continue
+        zero = {sym[n]: sp.Integer(0) for n in free}
+        if all(sp.simplify(family[n].xreplace(zero) - e.exact[n]) == 0 for n in family):
+            return family
+    return None
+
+
+def _relations(family: dict[str, sp.Expr], d: Derivation) -> list[tuple[sp.Expr, sp.Expr]]:
+    """A family's conditions as a textbook writes them: the coordinates on the left, the rest on the right,
+    the right side positive (x₂ − x₁ = l₀, not x₁ = x₂ − l₀)."""
+    sym = {s.name: s for s in d.table.q}
+    q = set(d.table.q)
+    out = []
+    for name, value in family.items():
+        gap = sp.expand(sym[name] - value)
+        left = sp.Add(*[t for t in sp.Add.make_args(gap) if t.free_symbols & q])
+        right = left - gap
+        if right.could_extract_minus_sign() or (right == 0 and left.could_extract_minus_sign()):
+            left, right = -left, -right
+        out.append((left, right))
+    return out
+
+
+def _family_tex(family: dict[str, sp.Expr], pr: Printer, d: Derivation) -> str:
+    return r",\; ".join(f"{pr.tex(a)} = {pr.tex(b)}" for a, b in _relations(family, d))
+
+
+def _family_text(family: dict[str, sp.Expr], d: Derivation) -> str:
+    return ", ".join(f"{unicode_text(a)} = {unicode_text(b)}" for a, b in _relations(family, d))
+
+
+def _any(d: Derivation, pr: Printer) -> str:
+    return r"\text{any } " + r",\; ".join(pr.tex(s) for s in d.table.q)
+
+
+def _rounded(matrix: sp.Matrix) -> sp.Matrix:
+    """Numbers found numerically (a steady motion's K) to the six figures the rest of the step shows."""
+    return matrix.applyfunc(
+        lambda x: sp.sympify(x).xreplace({f: sp.Float(f, 6) for f in sp.sympify(x).atoms(sp.Float)})
+    )
+
+
+_KIND = {
+    STABLE: "every ω² is positive, so each mode oscillates: a stable equilibrium",
+    NEUTRAL: "one ω² is zero: along that mode nothing pulls back and the system drifts at constant speed "
+    "(a neutral direction), while the other modes oscillate",
+    "unstable": "a negative ω² means that small displacements along that mode grow like exp(√(−ω²) t): "
+    "an unstable equilibrium",
+}
+
+
+def _points(
+    points: tuple[dict[str, float], ...],
+    sym: dict[str, sp.Symbol],
+    pr: Printer,
+    label: str,
+    exact: tuple[dict[str, sp.Expr] | None, ...] = (),
+) -> list[str]:
+    """Points listed without modes, each coordinate in closed form where one is known (π, not 3.14159)."""
+    rows = []
+    for i, p in enumerate(points):
+        known: dict[str, sp.Expr] = (exact[i] or {}) if i < len(exact) else {}
+        rows.append(
+            r",\; ".join(f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(v)}" for n, v in p.items())
+            + label
+        )
+    return rows
+
+
+def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
+    """How the list was found, and how far it can be trusted (never "exactly" unless provably complete)."""
+    if nm.solved:
+        return (
+            "The conditions are polynomial in the coordinates and were solved exactly, so these are all the equilibria"
+            + ("; where they leave a coordinate free, every state that satisfies them is one." if nm.family else ".")
+        )
+    some_exact = any(e.exact for e in found)
+    where = f" (it looked at {nm.searched})" if nm.searched else ""
+    if nm.angles_only:
+        # the whole configuration space was searched; only roots closer together than the search can tell apart escape
+        return (
+            ("Closed forms are shown where they are known; " if some_exact else "")
+            + ("a" if some_exact else "A")
+            + " numerical search over a full period of every angle, at the default parameters, found "
+            + (("no others." if all(e.exact for e in found) else "the rest") if some_exact else "them")
+            # a caveat only where some equilibrium rests on the search alone
+            + (
+                ""
+                if some_exact and all(e.exact for e in found)
+                else " (roots lying very close together could still escape it)."
+            )
+        )
+    if some_exact:
+        return (
+            "Closed forms are shown where they are known; a numerical search at the default parameters"
+            f"{where} completed the list, so others may exist outside that range."
+        )
+    return (
+        f"The equilibria were found numerically at the default parameters{where}; others may exist outside that range."
+    )
+
+
+def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
+    table = d.table
+    pr = Printer(table.latex_names())
+    if nm.failed:
+        return [_step("equilibria", "Equilibria", [r"\text{not computed}"], [], nm.failed)]
+    qn = [pr.tex(s) for s in table.q]
+    plain = d.mechanics.T is not None and d.mechanics.U is not None and sp.expand(d.mechanics.U - nm.potential) == 0
+    vname = "U" if plain else "V"
+    forced = any(f.xreplace(dict.fromkeys(table.qd, 0)) != 0 for f in d.mechanics.Q)
+    frame = r" + \frac{\partial b}{\partial t}" if nm.moving_frame else ""
+    found = [e for e in nm.equilibria if not e.momenta]
+    # with no equilibrium, a condition is never written "= 0": a force free of q is "≠ 0", one that depends on q
+    # is shown as it is (its sentence says it has no root)
+    none = not (found or nm.singular or nm.kinks or nm.unclassified)
+    q_set = set(table.q)
+    rows = [
+        rf"\frac{{\partial {vname}}}{{\partial {qn[k]}}}{frame}{' - Q' if forced else ''} = {pr.tex(display(g))}"
+        + ("" if g == 0 else (r" \neq 0" if not (sp.sympify(g).free_symbols & q_set) else "") if none else " = 0")
+        for k, g in enumerate(nm.condition)
+    ]
+    if not plain:
+        rows.insert(0, rf"V = -L\big|_{{\dot q = 0}} = {pr.tex(display(nm.potential))}")
+    listed: list[str] = []
+    for e in found:
+        family = _family_of(e, nm, d)
+        if nm.everywhere:
+            row = r"\text{every configuration is an equilibrium}"
+        elif family is not None:
+            row = r"\text{every state with } " + _family_tex(family, pr, d)
+        else:
+            row = _where(e, pr, d)
+        if row not in listed:
+            listed.append(row)
+    if none:
+        listed.append(r"\text{no equilibrium}")
+    rows += listed
+    sym = {s.name: s for s in table.q}
+    rows += _points(
+        nm.singular, sym, pr, rf"\quad ({notation.letter('mass_matrix', d)} \text{{ singular}})", nm.singular_exact
+    )
+    rows += _points(nm.kinks, sym, pr, r"\quad (\text{at a kink of } V)")
+    rows += _points(nm.unclassified, sym, pr, r"\quad (\text{coefficients change with } t)")
+    why = "At rest (q̇ = 0) the state stays put where the Euler–Lagrange equations give q̈ = 0. "
+    if not plain:
+        why += "V = U − T₀ includes the velocity-free part T₀ of the kinetic energy (a moving constraint's share). "
+    if nm.moving_frame:
+        why += (
+            "L has a term b·q̇ whose b depends on t (a moving support), so d/dt of the momentum at rest, ∂b/∂t, "
+            "enters the condition as well. "
+        )
+    if nm.everywhere:
+        why += (
+            "V does not depend on the coordinates and nothing else acts on a body at rest, so every configuration "
+            "is an equilibrium"
+            + (
+                "; the velocity terms (a magnetic field, a Coriolis force) act only on moving bodies and turn them."
+                if nm.damped
+                else "."
+            )
+        )
+    elif nm.note:
+        why += nm.note
+    else:
+        why += _how_found(nm, found)
+    if nm.found > MAX_EQUILIBRIA:
+        why += f" {nm.found} were found; the first {MAX_EQUILIBRIA} are shown."
+    if nm.singular:
+        why += (
+            f" At {len(nm.singular)} of them the mass matrix is singular (the coordinates break down there, like "
+            "polar coordinates at the origin), so no modes are computed at those points."
+        )
+    if nm.kinks:
+        why += (
+            f" At {len(nm.kinks)} of them V has a kink (an absolute value turns there), so the force jumps and no "
+            "quadratic approximation, hence no frequency of small oscillations, exists at those points."
+        )
+    if nm.common_factor:
+        why += (
+            " Its linearized equations change with time only through a factor common to all their coefficients; "
+            "divided by it, their coefficients are constant, and the exponents and frequencies below are theirs."
+        )
+    if nm.unclassified:
+        why += (
+            " The system stays at rest there at all times, but its linearized equations change with time, so "
+            "there are no constant frequencies to report."
+        )
+    steps = [_step("equilibria", "Equilibria", rows, list(nm.condition), why)]
+    for i, e in enumerate(nm.equilibria, start=1):
+        steps.append(_equilibrium_step(e, pr, d, i, nm))
+        if (beats := _beats_step(e, pr, d, i)) is not None:
+            steps.append(beats)
+    return steps
+
+
+def _beats_step(e: Equilibrium, pr: Printer, d: Derivation, number: int) -> dict[str, str] | None:
+    """Beats between two modes of shapes (1, 1) and (1, −1) with exact, distinct, positive ω²: started with one
+    coordinate displaced by a and the other at rest, the motion passes from one to the other and back."""
+    if len(e.modes) != 2 or e.momenta:
+        return None
+    shapes = [_exact_shape(e, m, d) for m in e.modes]
+    if any(s is None for s in shapes) or [list(s) for s in shapes if s] != [[1, 1], [1, -1]]:
+        return None
+    if (
+        any(m.exact is None or m.omega_squared <= 0 for m in e.modes)
+        or e.modes[0].omega_squared == e.modes[1].omega_squared
+    ):
+        return None
+    w1, w2 = (sp.sqrt(m.exact) for m in e.modes)
+    At, Au = notation.letter("start", d), notation.text("start", d)
+    t, a = d.table.t, sp.Symbol(Au, positive=True)
+    q1, q2 = (pr.tex(s) for s in d.table.q[:2])
+    half_difference, half_sum = (w2 - w1) / 2, (w1 + w2) / 2
+    # q = (a/2)(1, 1) cos ω₁t + (a/2)(1, −1) cos ω₂t starts at (a, 0) at rest; cos A ± cos B as products
+    first = a * sp.cos(half_difference * t) * sp.cos(half_sum * t)
+    second = a * sp.sin(half_difference * t) * sp.sin(half_sum * t)
+    # the products are the two modes' sums (cos A ± cos B), checked rather than assumed
+    sums = (a * (sp.cos(w1 * t) + sp.cos(w2 * t)) / 2, a * (sp.cos(w1 * t) - sp.cos(w2 * t)) / 2)
+    if any(sp.simplify((p - q).rewrite(sp.exp)) != 0 for p, q in zip((first, second), sums, strict=True)):
+        return None
+    w1n, w2n = (math.sqrt(m.omega_squared) for m in e.modes)
+    wu = notation.text("frequency", d)
+    wt = notation.letter("frequency", d)
+    sum_tex, difference_tex = rf"\tfrac{{{wt}_1 + {wt}_2}}{{2}}", rf"\tfrac{{{wt}_2 - {wt}_1}}{{2}}"
+    rows = [
+        rf"{wt}_1 = {pr.tex(w1)},\quad {wt}_2 = {pr.tex(w2)}",
+        rf"{q1} = \tfrac{{{At}}}{{2}} \left(\cos {wt}_1 t + \cos {wt}_2 t\right) "
+        rf"= {At} \cos\left({difference_tex}\, t\right) \cos\left({sum_tex}\, t\right)",
+        rf"{q2} = \tfrac{{{At}}}{{2}} \left(\cos {wt}_1 t - \cos {wt}_2 t\right) "
+        rf"= {At} \sin\left({difference_tex}\, t\right) \sin\left({sum_tex}\, t\right)",
+    ]
+    why = (
+        f"Started with {plain_name(d.table.names[0])} = {Au} and everything else at rest, the motion is half of each "
+        f"mode: cos A ± cos B written as products shows a fast oscillation at the mean frequency ({wu}₁ + {wu}₂)/2 "
+        f"inside a slow envelope at ({wu}₂ − {wu}₁)/2. The motion passes from the first coordinate to the second and "
+        f"back: the first is still and the second swings with the whole amplitude {Au} after π/({wu}₂ − {wu}₁), and "
+        f"the first swings fully again after 2π/({wu}₂ − {wu}₁), the beat period (at the default parameters {_figures(math.pi / (w2n - w1n))} s and "
+        f"{_figures(2 * math.pi / (w2n - w1n))} s). The weaker the coupling, the closer the two frequencies and the "
+        "slower the exchange."
+    )
+    return _step(
+        f"beats:{number}", "Beats: the motion passes from one coordinate to the other", rows, [first, second], why
+    )
+
+
+def _exponents(e: Equilibrium) -> str:
+    lin = e.linear
+    assert lin is not None
+    shown = []
+    for s in lin.exponents:
+        if s.imag < -1e-12 * max(1.0, abs(s)):
+            continue  # each pair once
+        re = _number(s.real) if abs(s.real) > 1e-9 * max(1.0, abs(s)) else "0"
+        shown.append(re + (rf" \pm {_number(s.imag)}\,i" if s.imag > 1e-12 * max(1.0, abs(s)) else ""))
+    return r"s = " + r",\; ".join(shown)
+
+
+def _verdict(e: Equilibrium, d: Derivation) -> str:
+    lin = e.linear
+    Mu, Ku, wu = (notation.text(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
+    if lin is None or not lin.moving:
+        text = _KIND[e.kind].replace("ω", wu)
+        return text[0].upper() + text[1:] + "."
+    freq = ", ".join(_number(f) for f in lin.frequencies)
+    out = (
+        "The velocity terms (G, from damping, Coriolis or magnetic forces) enter the motion near it: with "
+        f"{notation.text('displacement', d)} = v e^{{st}} "
+        f"the exponents s are the eigenvalues of [[0, I], [−{Mu}⁻¹{Ku}, −{Mu}⁻¹G]]. "
+    )
+    if e.kind == "unstable":
+        out += "One has a positive real part, so small displacements grow: an unstable equilibrium."
+    elif lin.damped and all(s.real < 0 for s in lin.exponents):
+        out += "Every one has a negative real part, so small motions die away: an asymptotically stable equilibrium."
+    elif e.kind == NEUTRAL:
+        out += "One is zero (a free drift) and none grows: a neutral direction."
+    else:
+        out += "Every one is imaginary, so small motions oscillate" + (f" (frequencies {freq})" if freq else "") + "."
+        if lin.gyroscopic:
+            out += (
+                f" {Ku} alone has a negative {wu}² (the potential is not a minimum there): the gyroscopic terms hold it, "
+                "a gyroscopically stable equilibrium."
+            )
+    return out
+
+
+def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, nm: NormalModes) -> dict[str, str]:
+    """The modes about the ``number``-th equilibrium (key ``normal-modes:number``, or ``steady-motion:number``
+    about a steady motion of a reduction)."""
+    sym = {s.name: s for s in d.table.q}
+    family = _family_of(e, nm, d)
+    if nm.everywhere:
+        where, about = _any(d, pr), "any configuration"
+    elif family is not None:
+        where, about = (
+            r"\text{every state with } " + _family_tex(family, pr, d),
+            "the equilibria " + _family_text(family, d),
+        )
+        free = [sym[n] for n in e.coordinates if n not in family]
+        at = {sym[n]: v for n, v in family.items()}
+        # M and K the same all along the family, or given where it was picked (the free coordinates at 0)
+        if any((x.xreplace(at)).has(*free) for x in [*d.equations.mass_matrix, *nm.condition]):
+            where += r"\quad (\text{at } " + r",\; ".join(f"{pr.tex(s)} = 0" for s in free) + ")"
+            about += " (at " + ", ".join(f"{plain_name(s.name)} = 0" for s in free) + ")"
+    else:
+        where = _where(e, pr, d)
+        about = ", ".join(
+            f"{plain_name(n)} = {unicode_text(e.exact[n]) if e.exact and n in e.exact else _number(v)}"
+            for n, v in e.position.items()
+        )
+    Mt, Kt, wt = (notation.letter(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
+    Mu, Ku, wu = (notation.text(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
+    eu, au = (notation.text(c, d) for c in ("displacement", "amplitude"))
+    rows = [rf"{Mt} = {pr.tex(_rounded(e.mass))},\quad {Kt} = {pr.tex(_rounded(e.stiffness))}"]
+    for i, m in enumerate(e.modes, start=1):
+        # ω² in 1/s² whatever the coordinates; four figures at the default parameters beside the closed form
+        unit = r"\,\mathrm{s}^{-2}" if m.omega_squared != 0 else ""
+        value = (
+            pr.tex(m.exact) + r" \approx " + _figures(m.omega_squared) + unit
+            if m.exact is not None and not m.exact.is_number
+            else (pr.tex(m.exact) if m.exact is not None else _figures(m.omega_squared)) + unit
+        )
+        exact_shape = _exact_shape(e, m, d)
+        shape = ", ".join(
+            f"{pr.tex(sym[n])}: {pr.tex(x) if exact_shape else _figures(a)}"
+            for n, a, x in zip(e.coordinates, m.shape, exact_shape or m.shape, strict=True)
+        )
+        rows.append(rf"{wt}_{{{i}}}^2 = {value},\quad \text{{shape }} ({shape})")
+    moving = e.linear is not None and e.linear.moving
+    if moving:
+        rows.append(_exponents(e))
+    if e.momenta:
+        key = f"steady-motion:{number}"
+        title = f"Small oscillations about the steady motion at {plain_name(e.coordinates[0])} = {_number(e.position[e.coordinates[0]])}"
+        why = (
+            "With the conserved momenta held at the values shown, the reduced coordinate sits at a minimum or maximum of "
+            f"U_eff: the body moves steadily (a circular or conical orbit), and {wu}² = U_eff''/m_eff. "
+        )
+    else:
+        key = f"normal-modes:{number}"
+        title = "Normal modes about " + about
+        why = (
+            f"Near the equilibrium {Mu} {eu}̈ + {Ku} {eu} = 0, with {eu} the small displacement from it, {Mu} the mass "
+            f"matrix and {Ku} the Hessian of the potential there; {eu} = {au} cos {wu}t solves it when "
+            f"({Ku} − {wu}² {Mu}) {au} = 0, so each {wu}² is an eigenvalue of {Ku} relative to {Mu} and {au} its shape "
+            "(numbers at the default parameters)"
+            + (", the shapes of the motion without its velocity terms. " if moving else ". ")
+        )
+    if e.linear is not None and e.linear.definite < 0:
+        why += (
+            "The mass matrix is negative definite here (L = U − T, or a negative mass): the equations are the same as "
+            f"for −L, so {wu}² and the verdict are unchanged. "
+        )
+    elif e.linear is not None and e.linear.definite == 0:
+        why += "The mass matrix is indefinite here (the kinetic energy is not positive for every velocity). "
+    why += _verdict(e, d)
+    return _step(
+        key, title, [where, *rows], [e.mass.tolist(), e.stiffness.tolist(), [m.omega_squared for m in e.modes]], why
+    )
+
+
+def normal_modes_json(nm: NormalModes, pr: Printer) -> list[dict[str, Any]]:
+    return [
+        {
+            "equilibrium": dict(e.position),
+            "exact": {n: pr.pair(x) for n, x in e.exact.items()} if e.exact else None,
+            "momenta": dict(e.momenta),
+            "stable": e.stable,
+            "kind": e.kind,
+            "coordinates": list(e.coordinates),
+            # every configuration is an equilibrium (V ≡ 0 and nothing acts at rest): at rest nothing moves
+            "everywhere": nm.everywhere,
+            # the full linearization's exponents s (velocity terms included), as [Re s, Im s]
+            "exponents": [[s.real, s.imag] for s in e.linear.exponents] if e.linear else [],
+            "frequencies": list(e.linear.frequencies) if e.linear else [],
+            "gyroscopic": bool(e.linear and e.linear.gyroscopic),
+            # with velocity terms: each oscillation's exponent and complex shape (amplitude, phase in radians)
+            "complex_modes": [
+                {
+                    "exponent": [s.real, s.imag],
+                    "amplitude": {q: abs(a) for q, a in zip(e.coordinates, shape, strict=True)},
+                    "phase": {q: math.atan2(a.imag, a.real) for q, a in zip(e.coordinates, shape, strict=True)},
+                }
+                for s, shape in (e.linear.complex_modes if e.linear else ())
+            ],
+            "modes": [
+                {
+                    "omega_squared": m.omega_squared,
+                    "shape": dict(zip(e.coordinates, m.shape, strict=True)),
+                    "sympy": sp.sstr(m.exact) if m.exact is not None else None,
+                    "latex": pr.tex(m.exact) if m.exact is not None else None,
+                }
+                for m in e.modes
+            ],
+        }
+        for e in nm.equilibria
+    ]

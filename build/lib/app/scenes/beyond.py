@@ -1,0 +1,78 @@
+"""Scenes beyond the chapter: normal modes of two coordinates, beats, and chaos."""
+
+from app.scenes.common import GRAVITY
+from app.scenes.types import Parameter, Particle, Scene, System
+
+DOUBLE_PENDULUM = Scene(
+    id="double-pendulum",
+    title="Double pendulum",
+    section="4.9",
+    family="double-pendulum",
+    beyond_chapter=True,
+    summary="Two normal modes at the bottom, three unstable equilibria above it, and chaos at high energy.",
+    statement=(
+        "A bob of mass m₁ hangs from a fixed pivot on a rigid massless rod of length l₁; a second bob of mass m₂ "
+        "hangs from the first on a rod of length l₂. Both swing in one vertical plane, with θ₁ and θ₂ measured "
+        "from the downward vertical. Derive the equations of motion, find the four equilibria and the normal "
+        "modes about each, and follow a swing wide enough that the motion becomes chaotic."
+    ),
+    figure=(
+        "A pivot at the top, a rod of length l₁ to the first bob at angle θ₁ from the downward vertical, a rod "
+        "of length l₂ from it to the second bob at angle θ₂."
+    ),
+    system=System(
+        coordinates=("theta1", "theta2"),
+        parameters=(
+            Parameter("m1", 1.0, "kg", 0.01, 100.0, "mass of the upper bob"),
+            Parameter("m2", 1.0, "kg", 0.01, 100.0, "mass of the lower bob"),
+            Parameter("l1", 1.0, "m", 0.05, 100.0, "length of the upper rod"),
+            Parameter("l2", 1.0, "m", 0.05, 100.0, "length of the lower rod"),
+            GRAVITY,
+        ),
+        # pivot at the origin, z upward
+        particles=(
+            Particle("m1", ("l1*sin(theta1)", "0", "-l1*cos(theta1)"), "upper bob"),
+            Particle("m2", ("l1*sin(theta1) + l2*sin(theta2)", "0", "-l1*cos(theta1) - l2*cos(theta2)"), "lower bob"),
+        ),
+        potential="-(m1 + m2)*g*l1*cos(theta1) - m2*g*l2*cos(theta2)",
+    ),
+    initial={"theta1": 2.0, "theta1_dot": 0.0, "theta2": 2.0, "theta2_dot": 0.0},
+    # chaotic from this start (nearby runs part at about e^(1.2 t)): past about 10 s no double-precision
+    # run can be trusted, so the default run stops where its error estimate is still small
+    t_end=10.0,
+    panels=("poincare",),
+)
+
+COUPLED_OSCILLATORS = Scene(
+    id="coupled-oscillators",
+    title="Two masses between three springs",
+    section="4.9",
+    family="three-springs",
+    beyond_chapter=True,
+    summary="Two normal modes, in phase and in opposition; a weak coupling trades the energy back and forth in beats.",
+    statement=(
+        "Two equal masses m slide without friction on a horizontal line between two walls. Each is tied to its "
+        "wall by a spring of stiffness k, and a third spring of stiffness κ joins them; all springs are relaxed "
+        "when x1 = x2 = 0, x1 and x2 being the displacements of the masses. Find the normal modes and their "
+        "frequencies, and show that when κ is small and only one mass is displaced at first, the motion passes "
+        "from one mass to the other at the difference of the two frequencies."
+    ),
+    figure=(
+        "A wall, a spring k, the first mass, a spring κ, the second mass, a spring k, a wall; x1 and x2 measured "
+        "from the masses' rest positions."
+    ),
+    system=System(
+        coordinates=("x1", "x2"),
+        parameters=(
+            Parameter("m", 1.0, "kg", 0.01, 100.0, "mass of each body"),
+            Parameter("k", 10.0, "N/m", 0.01, 1.0e6, "stiffness of the two outer springs"),
+            Parameter("kappa", 1.0, "N/m", 0.0, 1.0e6, "stiffness of the coupling spring between the masses"),
+        ),
+        # rest positions at -1 m and +1 m
+        particles=(Particle("m", ("x1 - 1", "0", "0"), "left mass"), Particle("m", ("x2 + 1", "0", "0"), "right mass")),
+        potential="k*x1**2/2 + kappa*(x2 - x1)**2/2 + k*x2**2/2",
+    ),
+    initial={"x1": 0.2, "x1_dot": 0.0, "x2": 0.0, "x2_dot": 0.0},
+    t_end=30.0,
+    panels=("poincare",),
+)

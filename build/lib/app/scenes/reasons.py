@@ -1,0 +1,323 @@
+"""Why each step of a chapter scene's derivation reads as it does, in that scene (plain data).
+
+Each table belongs to one scene, which holds it as its ``reasons`` (``Scene.reasons``).
+
+A scene's page explains every step with the sentence here instead of the engine's generic
+one (which stays for user systems).  Keys are the steps' keys (app/engine/report.py), never
+their titles; a key without a colon (``normal-modes``) also matches every step of that kind
+(``normal-modes:1``, ``normal-modes:2``) that has no reason of its own.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+# Steps every scene shares whose reason depends only on the scene's conservative, autonomous L.
+_LEGENDRE = (
+    "Solving the momenta, which are linear in the velocities, for the velocities is the first step of writing h "
+    "as a function of q and p."
+)
+
+
+def _hamiltonian(what: str) -> dict[str, str]:
+    return {
+        "legendre": _LEGENDRE,
+        "hamiltonian-pq": f"H is h with the velocities replaced by the momenta: {what}.",
+        "hamilton-equations": "q̇ = ∂H/∂p and ṗ = −∂H/∂q: the same motion as the Euler–Lagrange equations, "
+        "as twice as many first-order equations.",
+    }
+
+
+SIMPLE_PENDULUM: dict[str, str] = {
+    "action": "Of all the ways the bob could swing from one angle to another in the same time, the real swing makes ∫ (T − U) dt stationary; once the time passes the first kinetic focus (about half a small swing) it is a saddle, not the least.",
+    "positions": "The bob is R from the pivot at angle θ from the downward vertical; the origin is at the lowest point.",
+    "velocities": "Only θ changes, so the bob moves along the circle with speed R θ̇.",
+    "squared-speeds": "On a circle of radius R the squared speed is R² θ̇², whatever the angle.",
+    "kinetic": "A single bob moving at R θ̇: T = ½ m R² θ̇².",
+    "potential": "The bob is R (1 − cos θ) above its lowest point, so U = m g R (1 − cos θ).",
+    "lagrangian": "T − U with one coordinate: the smallest system the recipe applies to.",
+    "derivatives:theta": "∂L/∂θ = −m g R sin θ is gravity's torque about the pivot; ∂L/∂θ̇ = m R² θ̇ is the angular momentum.",
+    "euler-lagrange": "Angular momentum changes at the rate of the torque; divided by m R² the mass drops out.",
+    "mass-matrix": "One coordinate: M is the moment of inertia m R² and f is the torque −m g R sin θ.",
+    "accelerations": "θ̈ = −(g/R) sin θ: the mass does not matter, only g/R.",
+    "momenta": "p_θ = m R² θ̇ is the bob's angular momentum about the pivot.",
+    "time-dependence": "Nothing in the set-up moves or changes with time, so L has no t in it.",
+    "hamiltonian": "T is quadratic in θ̇, so h is T + U.",
+    "energy": "The bob's kinetic plus gravitational energy.",
+    "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
+    **_hamiltonian("p_θ²/(2 m R²) + m g R (1 − cos θ)"),
+    "effective-potential": "With a single coordinate there is nothing to fold in: U_eff is U itself.",
+    "energy-integral": "Energy conservation gives θ̇ as a function of θ, one integration from the motion.",
+    "time-integral": "Taken between the turning points, this integral is half the period of a wide swing (there and back is a whole one): an elliptic integral.",
+    "reduced-equilibria": "The bottom (θ = 0) is stable with ω² = g/R; the top (θ = π) is unstable.",
+    "equilibria": "sin θ = 0 at the bottom and at the top of the circle, and nowhere else.",
+    "normal-modes": "Linearising sin θ about each equilibrium gives ω² = g/R at the bottom and −g/R at the top.",
+    "constraints": "The string keeps the bob on the sphere of radius R about the pivot at height R.",
+    "constraint-forces": "The tension must supply the centripetal force m R θ̇² plus gravity's pull along the string.",
+}
+
+
+DAMPED_PENDULUM: dict[str, str] = {
+    "action": "With friction the principle needs the friction's virtual work beside δS: the real swing makes δS + ∫ Q δθ dt vanish, not S alone stationary.",
+    "positions": "The bob is R from the pivot at angle θ from the downward vertical, as in the simple pendulum.",
+    "velocities": "Only θ changes, so the bob moves along the circle with speed R θ̇.",
+    "squared-speeds": "On the circle the squared speed is R² θ̇².",
+    "kinetic": "T = ½ m R² θ̇², unchanged by the drag.",
+    "potential": "Gravity alone has a potential, m g R (1 − cos θ); the drag has none.",
+    "lagrangian": "The same L as without drag: the drag cannot be written into it.",
+    "derivatives:theta": "The same derivatives as the simple pendulum: torque −m g R sin θ and angular momentum m R² θ̇.",
+    "generalized-forces": "Projected on θ the drag −(b/R²) v becomes Q_θ = −b θ̇, opposing the swing.",
+    "euler-lagrange": "The drag adds (b/(m R²)) θ̇ to the pendulum's equation: a damping term.",
+    "mass-matrix": "M = m R² as before; the forcing now includes the drag −b θ̇.",
+    "accelerations": "θ̈ = −(g/R) sin θ − (b/(m R²)) θ̇: gravity restores, drag slows.",
+    "momenta": "p_θ = m R² θ̇, unchanged by the drag.",
+    "time-dependence": "L has no t, yet h is not conserved because the drag does work.",
+    "hamiltonian": "h = T + U, as for the undamped pendulum.",
+    "energy": "The bob's kinetic plus gravitational energy, which the drag drains.",
+    "h-vs-e": "The positions do not depend on t, so h = E; here E decays.",
+    "power": "dE/dt = −b θ̇² ≤ 0: the energy falls whenever the bob moves.",
+    **_hamiltonian("p_θ²/(2 m R²) + m g R (1 − cos θ), with the drag added to ṗ"),
+    "equilibria": "The drag vanishes at rest, so the equilibria are the simple pendulum's: bottom and top.",
+    "normal-modes": "About the bottom the motion is a damped oscillation; about the top it runs away.",
+    "constraints": "The string keeps the bob at distance R from the pivot.",
+    "constraint-forces": "The tension holds the bob on its circle: centripetal force plus gravity along the string.",
+}
+
+
+HELIX_BEAD: dict[str, str] = {
+    "action": "Of all the ways the bead could slide between two heights in the same time, the real one makes ∫ L dt stationary; in uniform gravity there is no kinetic focus, so it is the least for any time.",
+    "positions": "The bead's height z fixes its turn φ = α z, so it sits at (R cos αz, R sin αz, z).",
+    "velocities": "Going up by ż the bead also turns by α ż, moving R α ż around the axis.",
+    "squared-speeds": "Vertical and circular motions are perpendicular: v² = (1 + α² R²) ż².",
+    "kinetic": "The winding gives the bead more inertia along z, not more weight: its effective mass for motion in z is m(1 + α² R²).",
+    "potential": "Only the height matters for gravity: U = m g z.",
+    "lagrangian": "A free fall along z with an enlarged inertia.",
+    "derivatives:z": "∂L/∂z = −m g is the weight; ∂L/∂ż = m (1 + α² R²) ż is the momentum along the wire.",
+    "euler-lagrange": "Constant acceleration: the weight is shared between the climb and the turning.",
+    "mass-matrix": "M = m (1 + α² R²), the effective inertia along the wire; f = −m g.",
+    "accelerations": "z̈ = −g/(1 + α² R²): a tighter helix falls more slowly.",
+    "momenta": "p_z = m (1 + α² R²) ż, the momentum along the wire measured in z.",
+    "time-dependence": "The wire is fixed, so L has no t.",
+    "hamiltonian": "T is quadratic in ż, so h is T + U.",
+    "energy": "Kinetic energy of the winding motion plus m g z.",
+    "h-vs-e": "The wire does not move, so h = E and both are conserved.",
+    **_hamiltonian("p_z²/(2 m (1 + α² R²)) + m g z"),
+    "effective-potential": "One coordinate and no cyclic one: U_eff is m g z, with the effective mass of the winding.",
+    "energy-integral": "Energy conservation gives ż from z: a uniformly accelerated motion.",
+    "time-integral": "The integral gives the parabola of a uniform acceleration g/(1 + α² R²).",
+    "reduced-equilibria": "U_eff′ = m g never vanishes: the bead always slides down.",
+    "equilibria": "Gravity along z never balances on a frictionless wire, so there is none.",
+    "constraints": "The wire is two surfaces at once: the cylinder of radius R and the helicoid that winds it.",
+    "constraint-forces": "The wire pushes toward the axis for the circular motion and across the helix to turn the bead.",
+}
+
+
+INCLINE_BLOCK: dict[str, str] = {
+    "action": "Of all the ways the block could slide between two points of the incline in the same time, the real one makes ∫ L dt stationary; with a constant force it is the least for any time.",
+    "positions": "The block is X along the slope, so X cos α across and X sin α up.",
+    "velocities": "The block moves along the slope only, at speed Ẋ.",
+    "squared-speeds": "cos² α + sin² α = 1: the squared speed is Ẋ².",
+    "kinetic": "T = ½ m Ẋ², as on a flat track.",
+    "potential": "The block's height is X sin α, so U = m g X sin α.",
+    "lagrangian": "A free particle on a line in a uniform field of strength g sin α.",
+    "derivatives:X": "∂L/∂X = −m g sin α is gravity's component down the slope; ∂L/∂Ẋ = m Ẋ is the momentum.",
+    "euler-lagrange": "Only the slope's share of gravity, g sin α, accelerates the block.",
+    "mass-matrix": "M = m; f = −m g sin α is constant.",
+    "accelerations": "Ẍ = −g sin α: constant, independent of the mass.",
+    "momenta": "p_X = m Ẋ, the momentum along the slope.",
+    "time-dependence": "The incline is fixed, so L has no t.",
+    "hamiltonian": "T is quadratic in Ẋ, so h is T + U.",
+    "energy": "½ m Ẋ² plus m g X sin α.",
+    "h-vs-e": "The incline does not move, so h = E and both are conserved.",
+    **_hamiltonian("p_X²/(2m) + m g X sin α"),
+    "effective-potential": "With one coordinate, U_eff is the slope's potential m g X sin α.",
+    "energy-integral": "Energy conservation gives Ẋ from X for the uniformly accelerated slide.",
+    "time-integral": "The integral recovers X(t), a parabola in t.",
+    "reduced-equilibria": "U_eff′ = m g sin α never vanishes on a tilted plane: no equilibrium.",
+    "equilibria": "On a frictionless slope nothing holds the block, so there is none.",
+    "constraints": "The block stays on the plane through the origin tilted at α.",
+    "constraint-forces": "The normal force balances gravity's component into the plane: m g cos α.",
+}
+
+
+TABLETOP_SPRING: dict[str, str] = {
+    "action": "Of all the paths across the table between two positions in the same time, the real one makes ∫ L dt stationary; the spring pulls like an oscillator, so after half its period π √(m/k) the true path is a saddle.",
+    "positions": "Polar coordinates about the spring's anchor on the table: (r cos θ, r sin θ, 0).",
+    "velocities": "ṙ along the radius and r θ̇ around it.",
+    "squared-speeds": "The radial and angular motions are perpendicular: v² = ṙ² + r² θ̇².",
+    "kinetic": "Radial plus angular kinetic energy, ½ m ṙ² + ½ m r² θ̇².",
+    "potential": "A spring of zero rest length stores ½ k r².",
+    "lagrangian": "θ does not appear in L: the set-up is the same in every direction.",
+    "derivatives:r": "∂L/∂r holds the centrifugal term m r θ̇² and the spring's pull −k r.",
+    "derivatives:theta": "∂L/∂θ = 0, so p_θ = m r² θ̇ is constant: the angular momentum.",
+    "euler-lagrange": "The radial equation balances spring and centrifugal force; the angular one says m r² θ̇ is constant.",
+    "mass-matrix": "M is diagonal: m for r and the moment of inertia m r² for θ.",
+    "accelerations": "r̈ = r θ̇² − (k/m) r and θ̈ = −2 ṙ θ̇/r: the second is the conservation of angular momentum.",
+    "momenta": "p_r = m ṙ and the angular momentum p_θ = m r² θ̇.",
+    "cyclic": "Turning the whole motion about the anchor changes nothing, so p_θ is conserved.",
+    "time-dependence": "The spring and the table are fixed, so L has no t.",
+    "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
+    "energy": "Kinetic energy plus the spring's ½ k r².",
+    "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
+    **_hamiltonian("(p_r² + p_θ²/r²)/(2m) + ½ k r²"),
+    "cyclic-velocities": "θ̇ = p_θ/(m r²) with p_θ fixed by the initial push.",
+    "effective-potential": "The spring's ½ k r² plus the centrifugal barrier p_θ²/(2 m r²).",
+    "energy-integral": "The radial motion alone, at fixed p_θ, conserves this energy.",
+    "time-integral": "Integrating between the turning points of U_eff gives half the radial period: out and back in again is a whole one.",
+    "reduced-equilibria": "The circular orbit sits where the spring balances the centrifugal force.",
+    "equilibria": "No position of rest other than at the anchor: the spring pulls everything else in.",
+    "steady-motion": "About the circular orbit r oscillates at ω² = 4k/m, twice the spring's own frequency.",
+}
+
+
+SPHERICAL_PENDULUM: dict[str, str] = {
+    "action": "Of all the ways over the sphere between two points in the same time, the real one makes ∫ L dt stationary; gravity pulls back toward the bottom, so long enough stretches of motion are saddles of S.",
+    "positions": "Spherical coordinates about the pivot, with θ from the upward vertical.",
+    "velocities": "R θ̇ along a meridian and R sin θ φ̇ along a parallel.",
+    "squared-speeds": "The two directions are perpendicular: v² = R² θ̇² + R² sin² θ φ̇².",
+    "kinetic": "The motion along the meridian plus the turning about the vertical axis.",
+    "potential": "The ball's height above the pivot is R cos θ, so U = m g R cos θ.",
+    "lagrangian": "φ does not appear in L: the set-up is symmetric about the vertical axis.",
+    "derivatives:theta": "∂L/∂θ holds the centrifugal term of the turning and gravity's torque.",
+    "derivatives:phi": "∂L/∂φ = 0: the angular momentum about the vertical axis is conserved.",
+    "euler-lagrange": "θ feels gravity and the centrifugal effect of φ̇; φ keeps m R² sin² θ φ̇ constant.",
+    "mass-matrix": "M is diagonal: m R² for θ and m R² sin² θ for φ.",
+    "accelerations": "The ball turns faster the nearer it comes to the vertical axis (sin θ smaller), above or below the pivot.",
+    "momenta": "p_φ = m R² sin² θ φ̇ is the angular momentum about the vertical axis.",
+    "cyclic": "Rotating about the vertical axis changes nothing, so p_φ is conserved.",
+    "time-dependence": "The pivot is fixed, so L has no t.",
+    "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
+    "energy": "Kinetic energy plus m g R cos θ.",
+    "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
+    **_hamiltonian("p_θ²/(2 m R²) + p_φ²/(2 m R² sin² θ) + m g R cos θ"),
+    "cyclic-velocities": "φ̇ = p_φ/(m R² sin² θ) with p_φ fixed by the initial push.",
+    "effective-potential": "Gravity plus the barrier p_φ²/(2 m R² sin² θ) that keeps the ball off the axis.",
+    "energy-integral": "At fixed p_φ, θ moves in U_eff between two turning angles.",
+    "time-integral": "The time between the turning angles is half the period of the nodding motion: down and up again is a whole one.",
+    "reduced-equilibria": "The conical motion sits at the bottom of U_eff, below the horizontal.",
+    "equilibria": "At rest the ball can hang at the bottom or balance at the top.",
+    "steady-motion": "About the conical motion θ nods with the frequency given by U_eff″ at its bottom.",
+    "constraints": "The string keeps the ball on the sphere of radius R about the pivot.",
+    "constraint-forces": "The tension supplies the centripetal force of the motion on the sphere plus gravity's pull.",
+}
+
+
+RAIL_TWO_BODY: dict[str, str] = {
+    "action": "The two masses move so that ∫ L dt is stationary between two configurations; the spring gives their relative motion a kinetic focus half its period after the start, past which S has a saddle there.",
+    "positions": "Both masses are on the rail, so each is given by its own x.",
+    "velocities": "Each mass moves with its own ẋ along the rail.",
+    "squared-speeds": "On a line the squared speed is ẋ² for each mass.",
+    "kinetic": "The two masses' kinetic energies simply add.",
+    "potential": "The spring is stretched by x₂ − x₁ − l₀ beyond its rest length.",
+    "lagrangian": "The positions enter only through x₂ − x₁: moving both together changes nothing.",
+    "derivatives:x1": "∂L/∂x₁ is the spring's push on mass 1; ∂L/∂ẋ₁ = m₁ ẋ₁ its momentum.",
+    "derivatives:x2": "The spring pushes mass 2 the opposite way, with the same size.",
+    "euler-lagrange": "Newton's law for each mass with equal and opposite spring forces.",
+    "mass-matrix": "M is diagonal, m₁ and m₂: the masses are coupled only through the spring.",
+    "accelerations": "Each acceleration is the spring force over that mass.",
+    "momenta": "p_x₁ = m₁ ẋ₁ and p_x₂ = m₂ ẋ₂ are the two masses' momenta; their sum p_x₁ + p_x₂ is conserved.",
+    "time-dependence": "Rail and spring are fixed, so L has no t.",
+    "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
+    "energy": "Both kinetic energies plus the spring's.",
+    "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
+    **_hamiltonian("p_x₁²/(2m₁) + p_x₂²/(2m₂) + ½ k (x₂ − x₁ − l₀)²"),
+    "equilibria": "At rest the spring is at its rest length, x₂ − x₁ = l₀, anywhere on the rail.",
+    "normal-modes": "One mode is a free drift of both masses (ω = 0); the other is the spring's oscillation, ω² = k/μ.",
+    "change-of-coordinates": "The centre of mass X and the separation x split the motion into two independent parts.",
+    "inverse-map": "x₁ and x₂ are recovered from X and x with the mass fractions.",
+    "new-lagrangian": "X appears only through Ẋ, and x carries the spring.",
+    "new-inertia": "The total mass moves X; the reduced mass μ = m₁m₂/(m₁ + m₂) moves x.",
+    "new-equations": "Ẍ = 0 and a simple harmonic x of frequency √(k/μ).",
+    "conserved:p_X": "The total momentum (m₁ + m₂) Ẋ = m₁ ẋ₁ + m₂ ẋ₂ never changes.",
+}
+
+
+PULLEY: dict[str, str] = {
+    "action": "The masses move so that ∫ L dt is stationary between two positions; with constant gravity and no spring there is no kinetic focus, and the true path is a minimum of the action for every duration.",
+    "positions": "The end masses hang at heights y₁ and y₂; the string fixes the middle mass at −(y₁ + y₂)/2.",
+    "velocities": "The middle mass moves at Ẏ = −(ẏ₁ + ẏ₂)/2, minus half the sum of the end masses' velocities.",
+    "squared-speeds": "Each mass moves vertically only.",
+    "kinetic": "The middle mass couples the two coordinates through the term in ẏ₁ ẏ₂.",
+    "potential": "Gravity on all three masses; the middle one is lower when the ends are higher.",
+    "lagrangian": "Two coordinates for three masses: the string removed one.",
+    "derivatives:y1": "∂L/∂y₁ = M g/2 − m₁ g is the generalized force on y₁: half the middle weight, pulled through the string, less mass 1's own weight.",
+    "derivatives:y2": "∂L/∂y₂ = M g/2 − m₂ g, the same for mass 2.",
+    "euler-lagrange": "The two equations share the middle mass's inertia M/4.",
+    "mass-matrix": "The mass matrix 𝓜 (M is the middle body's mass) is not diagonal: the middle mass responds to both ends.",
+    "accelerations": "Constant accelerations: every force here is a constant weight. The middle mass follows from Y = −(y₁ + y₂)/2 − 1 m: Ÿ = −(ÿ₁ + ÿ₂)/2 = g − 2 (m₁ + m₂) g/(m₁ + m₂ + 4 m₁ m₂/M).",
+    "momenta": "Each momentum includes the middle mass's share of the motion.",
+    "time-dependence": "The fixed pulleys do not move, so L has no t.",
+    "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
+    "energy": "Kinetic plus gravitational energy of all three masses.",
+    "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
+    **_hamiltonian("the kinetic energy written with the inverse mass matrix, plus the weights"),
+    "equilibria": "The generalized forces are constant: with m₁ = m₂ = M/2 they vanish and every position is an equilibrium; otherwise (at the default masses, too) there is none.",
+    "constraints": "With z₁, z₂, z₃ the heights of m₁, m₂ and M (z₁ = y₁, z₂ = y₂, z₃ = Y, all in m), the string's length fixes z₁ + z₂ + 2 z₃; the constant 2 m places M below the pulleys.",
+    "constraint-forces": "λ times ∂𝒞/∂z₁ = 1 is the string's upward pull on mass 1, the tension, the same along the whole string; on the movable pulley it pulls with twice that.",
+}
+
+
+MOVABLE_INCLINE: dict[str, str] = {
+    "action": "Block and wedge move so that ∫ L dt is stationary between two configurations; every force is constant, so there is no kinetic focus and the true path is a minimum of the action for every duration.",
+    "positions": "The wedge's corner is at X; the block is D down its slope, at x = X + D cos α across and height z = −D sin α.",
+    "velocities": "The block's velocity adds the wedge's Ẋ to its own slide Ḋ along the slope.",
+    "squared-speeds": "The slide and the wedge's motion are at angle α, hence the cross term 2 Ẋ Ḋ cos α.",
+    "kinetic": "The cross term m Ẋ Ḋ cos α couples the block to the wedge.",
+    "potential": "The block descends D sin α; the wedge's height does not change.",
+    "lagrangian": "X appears only through Ẋ: the floor is the same everywhere.",
+    "derivatives:X": "∂L/∂X = 0: the horizontal momentum of the pair is conserved.",
+    "derivatives:D": "∂L/∂D = m g sin α is gravity along the slope.",
+    "euler-lagrange": "The first says the total horizontal momentum is constant; the second is the slide.",
+    "mass-matrix": "The mass matrix 𝓜 (M is the wedge's mass) is not diagonal: sliding the block pushes the wedge back.",
+    "accelerations": "Both accelerations are constant, the wedge's opposite to the block's horizontal motion.",
+    "momenta": "p_X = (M + m) Ẋ + m Ḋ cos α is the total horizontal momentum.",
+    "cyclic": "The floor is uniform, so p_X is conserved.",
+    "time-dependence": "Nothing is driven, so L has no t.",
+    "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
+    "energy": "Kinetic energy of both bodies plus the block's gravitational energy, −m g D sin α.",
+    "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
+    **_hamiltonian("the kinetic energy written with the inverse mass matrix, minus m g D sin α"),
+    "cyclic-velocities": "Ẋ follows from the conserved p_X and the block's Ḋ.",
+    "effective-potential": "At fixed p_X the slide D moves in a linear potential with a reduced inertia.",
+    "energy-integral": "Energy at fixed p_X gives Ḋ from D.",
+    "time-integral": "The integral gives the uniformly accelerated slide D(t).",
+    "reduced-equilibria": "U_eff′ is constant and non-zero: the block always slides.",
+    "equilibria": "A frictionless slope cannot hold the block, so there is none.",
+    "constraints": "With (x₁, z₁) the wedge's top corner and (x₂, z₂) the block, across and up in m, the block stays on the slope and the wedge on the floor.",
+    "constraint-forces": "The wedge's push on the block is less than m g cos α, because the wedge recoils.",
+}
+
+
+ROTATING_PARABOLA: dict[str, str] = {
+    "action": "Along the turning wire the bead moves so that ∫ L dt is stationary, the wire's rotation built into L; whether it stays the least for long times depends on whether gravity or the spin wins.",
+    "positions": "The bead is at signed horizontal distance ρ from the axis on the parabola z = α ρ² (negative on the other branch), turned by the angle ω t.",
+    "velocities": "ρ̇ along the wire, ω ρ around the axis, and 2 α ρ ρ̇ up.",
+    "squared-speeds": "The three directions are perpendicular: (1 + 4 α² ρ²) ρ̇² + ω² ρ².",
+    "kinetic": "The motor's turning adds ½ m ω² ρ², a term without ρ̇.",
+    "potential": "The bead's height on the parabola is α ρ², so U = m g α ρ².",
+    "lagrangian": "The ω² ρ² term acts like a centrifugal potential pushing outward.",
+    "derivatives:rho": "∂L/∂ρ holds the centrifugal push m ω² ρ against gravity's 2 m g α ρ.",
+    "euler-lagrange": "The sign of 2 g α − ω² decides whether the bottom holds the bead.",
+    "mass-matrix": "The wire's slope makes the inertia along it m (1 + 4 α² ρ²).",
+    "accelerations": "Near ρ = 0 the bead returns when ω² < 2 g α and runs away when ω² > 2 g α.",
+    "momenta": "p_ρ = m (1 + 4 α² ρ²) ρ̇, the momentum along the wire.",
+    "time-dependence": "L has no t: the turning is uniform, so h is conserved.",
+    "hamiltonian": "h = T₂ − T₀ + U: the term ½ m ω² ρ² enters with a minus sign.",
+    "energy": "E = T + U counts the rotational kinetic energy with a plus sign.",
+    "h-vs-e": "The positions depend on t through ω t, so h ≠ E; h is conserved, E is not.",
+    **_hamiltonian("p_ρ²/(2 m (1 + 4 α² ρ²)) + m (g α − ω²/2) ρ²"),
+    "effective-potential": "Gravity's m g α ρ² minus the centrifugal ½ m ω² ρ², with the inertia of the slope.",
+    "energy-integral": "The conserved h gives ρ̇ from ρ.",
+    "time-integral": "The integral gives the period of the oscillation along the wire when ω² < 2 g α.",
+    "reduced-equilibria": "The bottom holds the bead with Ω² = 2 g α − ω² when that is positive (Ω, the frequency along the wire; ω is the turning rate).",
+    "equilibria": "ρ = 0 is the only equilibrium unless ω² = 2 g α, when every ρ is one. V = −L at ρ̇ = 0 is the U_eff of the effective-potential step: gravity's m g α ρ² less the centrifugal ½ m ω² ρ².",
+    "normal-modes": "At the bottom the small oscillations along the wire have Ω² = 2 g α − ω².",
+    "constraints": "The wire lies on the paraboloid z = α ρ² and in the plane turned by ω t.",
+    "constraint-forces": "The wire pushes normal to itself in its plane and, across it, drives the bead around.",
+}
+
+
+def reason(reasons: Mapping[str, str], key: str) -> str | None:
+    """A scene's reason for a step (``reasons``: the scene's own), by the step's key or else by its kind
+    (the key's part before a colon)."""
+    return reasons.get(key) or reasons.get(key.partition(":")[0])

@@ -1,0 +1,44 @@
+"""Class codes, secret keys and what the database keeps of them.
+
+A code is what a student types from the projector: ``CODE_LENGTH`` characters
+from an alphabet without look-alikes (no 0/O/Q/D, 1/I/L/J, 2/Z, 5/S, 8/B, 6/G,
+U/V), so 18^6 ≈ 3.4 × 10^7 codes; a lower-case code, spaces or a dash typed
+in the middle are forgiven.  A key is 32 random bytes (URL-safe base64, 43
+characters); the database keeps only its SHA-256, so a copy of the database
+opens no class.  A key of that strength needs no slow hash: nothing can be
+guessed from the digest.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import secrets
+
+ALPHABET = "ACEFHKMNPRTWXY3479"
+CODE_LENGTH = 6
+KEY_BYTES = 32
+MAX_KEY_LENGTH = 100
+# the digest compared when the code names no class: the same work as a real comparison
+NO_CLASS_HASH = hashlib.sha256(b"no class has this code").hexdigest()
+
+
+def new_code() -> str:
+    return "".join(secrets.choice(ALPHABET) for _ in range(CODE_LENGTH))
+
+
+def normal_code(text: str) -> str | None:
+    """The code as stored, from what was typed; None when it cannot be a code."""
+    code = "".join(text.split()).replace("-", "").upper()
+    if len(code) != CODE_LENGTH or any(c not in ALPHABET for c in code):
+        return None
+    return code
+
+
+def new_key() -> str:
+    return secrets.token_urlsafe(KEY_BYTES)
+
+
+def digest(key: str) -> str:
+    """What the database keeps of a key."""
+    return hashlib.sha256(key.encode("utf-8", "surrogatepass")).hexdigest()
+

@@ -1,0 +1,76 @@
+"""The classes' tables (SQLAlchemy 2 declarative models); their history is in ``migrations/versions``.
+
+A class has a short public ``code`` and an instructor's key kept only as its
+SHA-256 (``teacher_hash``); each student a pseudonym and a key kept the same
+way.  The assignment is a list of items (a scene, or a system the instructor
+declared), each with its steps.  An attempt is one judged answer: who, which
+item and step, the verdict, the named mistake when the checker found one, the
+answer's text and when, and, when the page sent one, the attempt's id (unique
+per student: a retry records nothing new) with the verdict it was answered.
+Times are naive UTC.
+"""
+
+from __future__ import annotations
+
+from datetime import datetime
+
+from sqlalchemy import DateTime, ForeignKey, Integer, String, Text, UniqueConstraint
+from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column
+
+
+class Base(DeclarativeBase):
+    pass
+
+
+class ClassRow(Base):
+    __tablename__ = "classes"
+
+    id: Mapped[int] = mapped_column(Integer, primary_key=True)
+    code: Mapped[str] = mapped_column(String(12), unique=True)
+    title: Mapped[str] = mapped_column(String(200))
+    teacher_hash: Mapped[str] = mapped_column(String(64))
+    created_at: Mapped[datetime] = mapped_column(DateTime, index=True)
+
+
+class StudentRow(Base):
+    __tablename__ = "students"
+    __table_args__ = (UniqueConstraint("class_id", "name", name="uq_students_class_name"),)
+
+    id: Mapped[int] = mapped_column(Integer, primary_key=True)
+    class_id: Mapped[int] = mapped_column(ForeignKey("classes.id", ondelete="CASCADE"), index=True)
+    name: Mapped[str] = mapped_column(String(40))
+    key_hash: Mapped[str] = mapped_column(String(64), unique=True)
+    joined_at: Mapped[datetime] = mapped_column(DateTime)
+
+
+class AssignmentRow(Base):
+    __tablename__ = "assignments"
+    __table_args__ = (UniqueConstraint("class_id", "position", name="uq_assignments_class_position"),)
+
+    id: Mapped[int] = mapped_column(Integer, primary_key=True)
+    class_id: Mapped[int] = mapped_column(ForeignKey("classes.id", ondelete="CASCADE"), index=True)
+    position: Mapped[int] = mapped_column(Integer)
+    item: Mapped[str] = mapped_column(String(40))  # a scene's id, or the name of the instructor's system
+    system: Mapped[str | None] = mapped_column(Text, nullable=True)  # the declared system (JSON), for a system
+    steps: Mapped[str] = mapped_column(Text)  # JSON: [{"step", "coordinate"}]
+    parameters: Mapped[str] = mapped_column(Text)  # JSON: {name: value}
+
+
+class AttemptRow(Base):
+    __tablename__ = "attempts"
+    __table_args__ = (UniqueConstraint("student_id", "attempt_id", name="uq_attempts_student_attempt"),)
+
+    id: Mapped[int] = mapped_column(Integer, primary_key=True)
+    class_id: Mapped[int] = mapped_column(ForeignKey("classes.id", ondelete="CASCADE"), index=True)
+    student_id: Mapped[int] = mapped_column(ForeignKey("students.id", ondelete="CASCADE"), index=True)
+    item: Mapped[str] = mapped_column(String(40))
+    step: Mapped[str] = mapped_column(String(20))
+    coordinate: Mapped[str | None] = mapped_column(String(40), nullable=True)
+    verdict: Mapped[str] = mapped_column(String(12))
+    mistake: Mapped[str | None] = mapped_column(String(60), nullable=True)  # the tutor's stable key
+    mistake_name: Mapped[str | None] = mapped_column(String(200), nullable=True)  # and its display text
+    answer: Mapped[str] = mapped_column(Text)
+    at: Mapped[datetime] = mapped_column(DateTime)
+    # the id the student's page gave this press of Check (a retry sends it again), and the verdict answered
+    attempt_id: Mapped[str | None] = mapped_column(String(64), nullable=True)
+    response: Mapped[str | None] = mapped_column(Text, nullable=True)

@@ -1,0 +1,200 @@
+"""``Classroom``: what the class routes call — create, join, check and record, report, assign, delete.
+
+Every database call runs in a thread (``asyncio.to_thread``); the event loop
+only awaits.  A student's check is practice mode's check (app/service/checking.py,
+the same worker pool, answer cache and fair share, keyed on the student), then
+the verdict is recorded and committed before the answer goes back: what a
+student has been told is on disk.
+"""
+
+from __future__ import annotations
+
+import asyncio
+from collections.abc import Callable
+from typing import Any, TypeVar
+
+import orjson
+
+from app.engine.check import PER_COORDINATE
+from app.engine.mistakes import RULES
+from app.errors import NoKey, Refused, WrongKey
+from app.service.checking import Checking, declared
+from app.service.classroom import keys, reports, store
+from app.service.classroom.assignments import checked_items, find_item
+from app.service.classroom.database import Database
+from app.service.classroom.rates import Window
+from app.service.classroom.shared_rates import SharedWindow, Store
+from app.service.fairness import CLASS, shared
+from app.settings import Settings
+
+T = TypeVar("T")
+# the checker's hint for a matched mistake, back to the mistake's name (when the verdict carries no name)
+_NAMED_BY_HINT = {rule.hint: rule.mistake for rule in RULES}
+
+
+def named_mistake(result: dict[str, Any]) -> str | None:
+    """The named mistake of a verdict: its ``mistake`` field (a name, or an object with one), else the mistake
+    whose hint the checker gave; None for a right answer or an unrecognised mistake."""
+    if result.get("verdict") != "incorrect":
+        return None
+    named = result.get("mistake")
+    if isinstance(named, dict):
+        named = named.get("key") or named.get("name")
+    if isinstance(named, str) and named:
+        return named[:60]
+    return _NAMED_BY_HINT.get(result.get("hint") or "")
+
+
+def mistake_text(result: dict[str, Any]) -> str | None:
+    """The named mistake's display text (the tutor's ``mistake.name``), when the verdict carries one."""
+    named = result.get("mistake") if result.get("verdict") == "incorrect" else None
+    text = named.get("name") if isinstance(named, dict) else None
+    return text[:200] if isinstance(text, str) and text else None
+
+
+def _same_attempt(first: store.Recorded, this: tuple[str, str, str | None, str], attempt_id: str) -> bytes:
+    """The first verdict of an attempt sent again; refused when the id comes back with another answer."""
+    if (first.item, first.step, first.coordinate, first.answer) != this:
+        raise Refused(
+            "attempt: this attempt id was already used for another answer; send a new id with a new answer",
+            attempt_id, ("attempt",),
+        )
+    return first.response
+
+
+class Classroom:
+    """The classes of one web process: their database (connected at first use) and their rate windows."""
+
+    def __init__(self, checking: Checking, config: Settings) -> None:
+        self.db = Database(config)
+        self.checking = checking
+        # with a shared store every replica counts the same windows; else each counts its own
+        self.store = Store(config.shared_store_url) if config.shared_store_url else None
+
+        def window(limit: int, what: str, name: str) -> Window:
+            return SharedWindow(limit, what, self.store, name) if self.store else Window(limit, what)
+
+        self.class_joins = window(config.class_joins_per_minute, "joins to this class", "class-joins")
+        self.client_joins = window(config.client_joins_per_minute, "joins from you", "client-joins")
+        self.class_joins_by_address = window(
+            config.class_joins_per_minute, "joins from your network address", "address-joins"
+        )
+        self.class_checks = window(config.class_checks_per_minute, "checks in this class", "class-checks")
+        self.student_checks = window(config.student_checks_per_minute, "your checks", "student-checks")
+
+    async def _db(self, work: Callable[..., T], *args: Any) -> T:
+        return await asyncio.to_thread(work, self.db, *args)
+
+    # ---- who is asking -------------------------------------------------------------------------
+    def _who(self, db: Database, code: str, key: str | None, teacher: bool) -> store.Access:
+        if key is None:
+            whose = "the instructor's key" if teacher else "your student key (from joining)"
+            raise NoKey(f"this route needs {whose} in an 'Authorization: Bearer <key>' header")
+        who = store.access(db, code, key)
+        if teacher and not who.teacher:
+            raise WrongKey("a student's key does not open the instructor's view of a class")
+        if not teacher and who.teacher:
+            raise WrongKey("answers are recorded for students: join the class to get a student key")
+        return who
+
+    def _with_items(self, db: Database, code: str, key: str | None, teacher: bool):
+        who = self._who(db, code, key, teacher)
+        return who, store.assignment(db, who.class_id)
+
+    # ---- instructor ----------------------------------------------------------------------------
+    async def create(self, title: str) -> dict[str, str]:
+        code, teacher_key = await self._db(store.create_class, title)
+        return {"code": code, "teacher_key": teacher_key}
+
+    async def assign(self, code: str, key: str | None, items: list[dict[str, Any]]) -> dict[str, Any]:
+        who = await self._db(self._who, code, key, True)
+        stored = await asyncio.to_thread(checked_items, self.checking, items)
+        await self._db(store.set_assignment, who.class_id, stored)
+        return {"code": who.code, "assignment": await self._db(store.assignment, who.class_id)}
+
+    def _report(self, db: Database, code: str, key: str | None, report: Callable[..., T]) -> T:
+        who, items = self._with_items(db, code, key, True)
+        return report(db, who.class_id, items)
+
+    async def summary(self, code: str, key: str | None) -> dict[str, Any]:
+        return await self._db(self._report, code, key, reports.summary)
+
+    async def students(self, code: str, key: str | None) -> dict[str, Any]:
+        return await self._db(self._report, code, key, reports.students)
+
+    async def export(self, code: str, key: str | None) -> bytes:
+        return await self._db(self._report, code, key, lambda db, class_id, _items: reports.export_csv(db, class_id))
+
+    async def delete(self, code: str, key: str | None) -> None:
+        who = await self._db(self._who, code, key, True)
+        await self._db(store.delete_whole_class, who.class_id)
+
+    # ---- students ------------------------------------------------------------------------------
+    async def join(self, code: str, name: str, client: str, address: str) -> dict[str, Any]:
+        # a session joins at most client_joins_per_minute times; a request that counts as one of its address's
+        # shared keys (no cookie: ``new:``, or beyond the address's sessions this minute: ``many:``) counts
+        # against its network, which may bring a whole class (class_joins_per_minute)
+        if shared(client):
+            await self.class_joins_by_address.take(address)
+        else:
+            await self.client_joins.take(client)
+        await self.class_joins.take(keys.normal_code(code) or "?")
+        student_key, who = await self._db(store.join, code, name)
+        items = await self._db(store.assignment, who.class_id)
+        return {"student_key": student_key, "code": who.code, "title": who.title, "name": name, "assignment": items}
+
+    async def view(self, code: str, key: str | None) -> dict[str, Any]:
+        """The class as its key sees it: title and assignment, and for a student their own progress."""
+        if key is None:
+            raise NoKey("this route needs a key of the class in an 'Authorization: Bearer <key>' header")
+
+        def read(db: Database) -> dict[str, Any]:
+            who = store.access(db, code, key)
+            items = store.assignment(db, who.class_id)
+            seen: dict[str, Any] = {"code": who.code, "title": who.title, "assignment": items}
+            if who.teacher:
+                return seen | {"role": "instructor"}
+            progress = [s for s in reports.students(db, who.class_id, items)["students"] if s["name"] == who.name]
+            return seen | {"role": "student", "name": who.name, "progress": progress[0] if progress else None}
+
+        return await asyncio.to_thread(read, self.db)
+
+    async def check(
+        self,
+        code: str,
+        key: str | None,
+        target: dict[str, str | None],
+        step: str,
+        coordinate: str | None,
+        answer: str,
+        attempt_id: str | None = None,
+    ) -> bytes:
+        """Judge a student's answer as practice mode does, record the verdict, then answer with it.
+
+        A press of Check the page already sent (the same ``attempt_id``) gets the verdict first answered for it,
+        judged and recorded once."""
+        who, items = await self._db(self._with_items, code, key, False)
+        item = find_item(items, target, step, coordinate)
+        name = item["name"] if item.get("system") is not None else item["scene"]
+        recorded = coordinate if step in PER_COORDINATE else None
+        this = (name, step, recorded, answer.strip())
+        if attempt_id is not None and (first := await self._db(store.recorded, who, attempt_id)) is not None:
+            return _same_attempt(first, this, attempt_id)
+        await self.student_checks.take(f"{who.class_id}:{who.student}")
+        await self.class_checks.take(who.code)
+        # the student is the unit of fairness, their class's budget of check slots the bound (not their network's)
+        client, address = f"class-student:{who.class_id}:{who.student}", f"{CLASS}{who.class_id}"
+        if item.get("system") is not None:
+            body = await self.checking.check_system(declared(item["system"]), step, coordinate, answer, client, address)
+        else:
+            body = await self.checking.check_scene(name, step, coordinate, answer, client, address)
+        result = orjson.loads(body)
+        raced = await self._db(
+            store.record, who, name, step, recorded, result["verdict"], named_mistake(result), answer.strip(),
+            mistake_text(result), attempt_id, body if attempt_id is not None else None,
+        )
+        return body if raced is None else _same_attempt(raced, this, attempt_id or "")
+
+    def stop(self) -> None:
+        self.db.stop()
+

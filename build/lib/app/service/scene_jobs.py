@@ -1,0 +1,30 @@
+"""Worker-process jobs on the chapter's scenes: load their numeric systems, run a scene's plan.
+
+A worker process has no app: its jobs are module-level functions pickled by reference, and they read
+the process's ``Scenes`` (``app.service.derivations.PROCESS_SCENES``), which lives as long as the worker."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from app.numerics.plan import Plan
+from app.numerics.simulate import Outcome, run
+from app.scenes import SCENES
+
+
+def load_scenes() -> int:
+    """A worker process's job at start-up: load every scene's numeric system (from the disk caches)."""
+    from app.service.derivations import PROCESS_SCENES
+
+    for scene_id in SCENES:
+        PROCESS_SCENES.system(scene_id)
+    return len(SCENES)
+
+
+def run_scene_plan(scene_id: str, portable: dict[str, Any], wall_seconds: float) -> Outcome:
+    """A worker process's job: run a scene's plan (``Plan.portable``) on this process's copy of its system."""
+    from app.service.derivations import PROCESS_SCENES
+
+    system, _ = PROCESS_SCENES.system(scene_id)
+    events = PROCESS_SCENES.compiled.events(SCENES[scene_id], system)
+    return run(Plan.rebuilt(system, portable), wall_seconds, events=events)

@@ -1,0 +1,69 @@
+"""The derivation in two stages: the equations first, the whole document after (issue 35).
+
+A student who types a system waits for its equations of motion; the rest of the document (the steps,
+the conserved quantities, Hamilton's equations, the normal modes) takes seconds more for a chain. The
+first stage is a small worker job of its own: the same derivation (``user_jobs.derive_checked``, kept
+per worker, so a full job on the same worker starts from it) printed only as far as the equations, the
+accelerations, the mass matrix and the forcing, under the same hard limit as a derivation.  Its
+document says which members are still to come (``pending``), in the words the page shows.
+
+Only the web layer's routes call this; SymPy runs in the worker pool, never here.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+from typing import Any
+
+from app.engine.contract import first_stage
+from app.engine.user_system import UserSystem
+from app.service.encoding import dumps
+from app.service.user_checks import spec_key
+from app.service.user_jobs import derive_checked, engine_budget, guarded
+from app.service.user_systems import UserSystems
+
+
+def equations_job(user: UserSystem) -> bytes:
+    """Worker job: the first stage of a user system's derivation document (as JSON bytes)."""
+
+    def run() -> dict[str, Any]:
+        with engine_budget(user):
+            return first_stage(derive_checked(user))
+
+    return guarded(run)
+
+
+async def equations_or_whole(users: UserSystems, user: UserSystem, client: str, address: str) -> dict[str, Any]:
+    """The whole document when it is cached already, else the first stage (a job of its own, cached too).
+
+    The whole document carries ``"stage": "whole"`` so that a caller knows it need not ask again."""
+    whole = users.derivations.get(spec_key(user))
+    if whole is not None:
+        return {**await asyncio.to_thread(json.loads, whole), "stage": "whole"}
+    body = await users.run_job(
+        users.derivations, spec_key(user, "equations"), client, address, users.derive_seconds, equations_job, user
+    )
+    return await asyncio.to_thread(json.loads, body)
+
+
+# The members of the first stage, which a whole document holds too (an API caller gets the same shape either way).
+FIRST_MEMBERS = ("coordinates", "angles", "symbols", "parameters", "equations_of_motion", "accelerations",
+                 "mass_matrix", "forcing", "skipped")  # fmt: skip
+
+
+def _from_whole(whole: bytes) -> bytes:
+    """The first stage's members of a whole document (``"stage": "whole"``, nothing pending), as JSON bytes."""
+    document = json.loads(whole)
+    return dumps({"stage": "whole", **{key: document[key] for key in FIRST_MEMBERS}, "pending": []})
+
+
+async def equations_bytes(users: UserSystems, user: UserSystem, client: str, address: str) -> bytes:
+    """POST /api/derive/equations: the first stage as JSON bytes; taken from the whole document when it is cached
+    (then ``stage`` is ``whole`` and ``pending`` empty), decoded and encoded off the event loop."""
+    whole = users.derivations.get(spec_key(user))
+    if whole is not None:
+        return await asyncio.to_thread(_from_whole, whole)
+    return await users.run_job(
+        users.derivations, spec_key(user, "equations"), client, address, users.derive_seconds, equations_job, user
+    )

@@ -1,0 +1,204 @@
+"""Slider ranges and marks for a page's controls, computed from the derivation document.
+
+A parameter's allowed range (what the API accepts) is often far wider than what is useful to
+drag through: the slider covers a useful range inside it (a decade or so about the default,
+widened to hold the marks), on a log scale when that range spans decades, while the number
+field still takes any allowed value.  Marks sit at values where the motion changes kind, found
+numerically from the engine's expressions at the default parameters:
+
+* critical damping of a drag Q = −c q̇ about a stable equilibrium: c = 2 M ω (M the mass-matrix
+  entry there, ω² the engine's normal-mode ω²);
+* a parameter at which an equilibrium of the reduction changes stability (its ω² changes sign),
+  such as the rotating wire's ω² = 2 g α;
+* for the initial rate of a one-coordinate system with an unstable equilibrium, the rate whose
+  energy just reaches it (the separatrix): q̇₀ = ±√(2 (U(q_top) − U(q₀)) / M(q₀)).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Sequence
+from typing import Any
+
+from app.engine.names import unicode
+from app.engine.trees import Tree
+from app.viz.exprtree import document_tree, evaluate, leaves
+from app.viz.units import coordinate_units
+
+DECADE = 10.0  # the useful range reaches this factor either side of a positive default
+LOG_SPAN = 50.0  # a useful range wider than this factor moves on a log scale
+SCAN = 240  # points of the scan for a change of stability
+
+
+def formula(sympy_text: str) -> str:
+    """A sympy string as Unicode text for a label: 2*alpha*g - omega**2 -> 2αg − ω²."""
+    text = re.sub(r"\*\*2\b", "²", sympy_text)
+    text = re.sub(r"\bpi\b", "π", text)
+    text = re.sub(r"[A-Za-z_][A-Za-z0-9_]*", lambda m: unicode(m.group(0)), text)
+    return text.replace("*", "").replace(" - ", " − ").replace("-", "−")
+
+
+def _env(doc: dict[str, Any], **extra: float) -> dict[str, float]:
+    env = {k: float(v["default"]) for k, v in doc["parameters"].items()}
+    env.update(t=0.0, **{q: 0.0 for q in doc["coordinates"]}, **{f"{q}_dot": 0.0 for q in doc["coordinates"]})
+    env.update(extra)
+    return env
+
+
+def _names(doc: dict[str, Any]) -> list[str]:
+    q = doc["coordinates"]
+    return [*q, *(f"{c}_dot" for c in q), *doc["parameters"], "t"]
+
+
+def _value(pair: dict[str, Any] | None, doc: dict[str, Any], env: dict[str, float]) -> float | None:
+    """A document expression's value at ``env`` (None when it has no tree or no finite value there)."""
+    node = document_tree(pair, _names(doc))
+    if node is None:
+        return None
+    try:
+        v = evaluate(node, env)
+    except (ArithmeticError, ValueError, TypeError):
+        return None
+    return v if math.isfinite(v) else None
+
+
+def _stable_modes(doc: dict[str, Any]) -> list[dict[str, Any]]:
+    return [e for e in doc.get("normal_modes") or [] if e.get("kind") == "stable" and e.get("modes")]
+
+
+def drag_coefficient(tree: Tree | None, q: str) -> str | None:
+    """c when the tree is the drag −c q̇ (c a single name), else None."""
+    if not (isinstance(tree, list) and len(tree) == 2 and tree[0] == "neg"):
+        return None
+    product = tree[1]
+    if not (isinstance(product, list) and len(product) == 3 and product[0] == "*"):
+        return None
+    factors = product[1:]
+    rate = f"{q}_dot"
+    if rate not in factors:
+        return None
+    (c,) = [f for f in factors if f != rate] or [None]
+    return c if isinstance(c, str) else None
+
+
+def damping_marks(doc: dict[str, Any]) -> dict[str, list[dict[str, Any]]]:
+    """Critical damping of each drag force Q_q = −c q̇ whose c is a single parameter."""
+    marks: dict[str, list[dict[str, Any]]] = {}
+    stable = _stable_modes(doc)
+    names = doc["coordinates"]
+    for q, force in (doc.get("generalized_forces") or {}).items():
+        c = drag_coefficient(document_tree(force), q)
+        if c is None or c not in doc["parameters"] or not stable:
+            continue
+        e = stable[0]
+        k = names.index(q)
+        env = _env(doc, **{c: float(v) for c, v in e["equilibrium"].items()})
+        mass = _value(doc["mass_matrix"][k][k], doc, env)
+        w2 = e["modes"][0]["omega_squared"] if len(e["modes"]) == 1 else None
+        if mass and w2 and w2 > 0:
+            value = 2 * mass * math.sqrt(w2)
+            marks.setdefault(c, []).append({"value": value, "label": "critical damping"})
+    return marks
+
+
+def stability_marks(doc: dict[str, Any], ranges: dict[str, tuple[float, float]]) -> dict[str, list[dict[str, Any]]]:
+    """Parameter values at which an equilibrium of the reduction changes stability (its ω² changes sign)."""
+    red = doc.get("effective_potential") or {}
+    marks: dict[str, list[dict[str, Any]]] = {}
+    coordinate = str(red.get("coordinate") or "")
+    for e in red.get("equilibria") or []:
+        w2_pair = e.get("omega_squared") or {}
+        w2, where = w2_pair.get("sympy"), (e.get("position") or {}).get("sympy")
+        if not w2 or where is None:
+            continue
+        tree = document_tree(w2_pair)
+        for p, (lo, hi) in ranges.items():
+            if tree is None or p not in leaves(tree):
+                continue  # omega^2 does not depend on this parameter
+            grid = _grid(lo, hi)
+            signs = [_value(w2_pair, doc, _env(doc, **{p: x})) for x in grid]
+            for a, b, fa, fb in zip(grid, grid[1:], signs, signs[1:], strict=False):
+                if fa is not None and fb is not None and fa * fb < 0:
+                    value = _bisect(lambda x, p=p, w=w2_pair: _value(w, doc, _env(doc, **{p: x})) or 0.0, a, b)
+                    label = f"{formula(w2)} = 0: {unicode(coordinate)} = {formula(where)} changes stability"
+                    marks.setdefault(p, []).append({"value": value, "label": label})
+    return marks
+
+
+def separatrix_marks(doc: dict[str, Any], initial: dict[str, float]) -> dict[str, list[dict[str, Any]]]:
+    """The initial rate that just reaches an unstable equilibrium, for a one-coordinate system."""
+    if len(doc["coordinates"]) != 1 or not doc.get("potential"):
+        return {}
+    if doc.get("generalized_forces"):
+        # a force Q drains E on the way up: the undamped ½ M q̇₀² = U(q_top) − U(q₀) falls short of the top
+        return {}
+    q = doc["coordinates"][0]
+    tops = [e for e in doc.get("normal_modes") or [] if e.get("kind") == "unstable"]
+    if not tops:
+        return {}
+    q0 = float(initial.get(q, 0.0))
+    start = _env(doc, **{q: q0})
+    u0 = _value(doc["potential"], doc, start)
+    mass = _value(doc["mass_matrix"][0][0], doc, start)
+    marks = []
+    for e in tops:
+        top = float(e["equilibrium"][q])
+        u_top = _value(doc["potential"], doc, _env(doc, **{q: top}))
+        if u0 is None or u_top is None or not mass or mass <= 0 or u_top <= u0:
+            continue
+        # E = ½ M q̇₀² + U(q₀) = U(q_top)
+        rate = math.sqrt(2 * (u_top - u0) / mass)
+        where = f"{unicode(q)} = {formula(e['exact'][q]['sympy']) if e.get('exact') else f'{top:.4g}'}"
+        # the rate depends on where the run starts: the mark says which start it is for
+        unit = coordinate_units(doc, scene=True)["units"].get(q, "")
+        start_text = f"from {unicode(q)}(0) = {q0:.4g}{f' {unit}' if unit else ''}"
+        label = f"separatrix {start_text}: just reaches {where}"
+        marks += [{"value": rate, "label": label}, {"value": -rate, "label": label}]
+    return {f"{q}_dot": marks} if marks else {}
+
+
+def _grid(lo: float, hi: float) -> list[float]:
+    if lo > 0 and hi / lo > LOG_SPAN:
+        return [lo * (hi / lo) ** (i / (SCAN - 1)) for i in range(SCAN)]
+    return [lo + (hi - lo) * i / (SCAN - 1) for i in range(SCAN)]
+
+
+def _bisect(f, a: float, b: float) -> float:
+    fa = f(a)
+    for _ in range(60):
+        m = 0.5 * (a + b)
+        fm = f(m)
+        if (fm < 0) == (fa < 0):
+            a, fa = m, fm
+        else:
+            b = m
+    return 0.5 * (a + b)
+
+
+def useful_range(
+    default: float, low: float, high: float, marks: Sequence[dict[str, Any]] = ()
+) -> tuple[float, float, bool]:
+    """(slider low, slider high, log scale) inside the allowed [low, high], holding the default and the marks."""
+    values = [default, *(m["value"] for m in marks if m["value"] > 0)]
+    if default > 0 and low >= 0:
+        # a decade either side of the default, and room beyond the marks (three times the largest)
+        lo = max(low, min(values) / DECADE)
+        hi = min(high, max(default * DECADE, 3 * max(values)))
+        return lo, hi, hi / lo >= LOG_SPAN
+    return low, high, False
+
+
+def ticks(doc: dict[str, Any], initial: dict[str, float]) -> dict[str, list[dict[str, Any]]]:
+    """Every mark for every control, by control name."""
+    params = doc["parameters"]
+    allowed = {
+        p: (float(info["min"]), float(info["max"]))
+        for p, info in params.items()
+        if info.get("min") is not None and info.get("max") is not None
+    }
+    marks = damping_marks(doc)
+    for name, found in stability_marks(doc, allowed).items():
+        marks.setdefault(name, []).extend(found)
+    marks.update(separatrix_marks(doc, initial))
+    return marks

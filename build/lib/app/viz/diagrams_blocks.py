@@ -1,0 +1,186 @@
+"""Set-up diagrams of the sliding and coupled scenes: inclines, table, rail, pulleys.
+
+Same conventions as ``diagrams_swing``: defaults in, labelled ``Svg`` out,
+coordinates blue, parameters brown; drawing only, no mechanics.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+from app.viz.svg import ACCENT, GUIDE, INK, PARAM, Svg
+
+
+def _angle_mark(svg: Svg, x: float, y: float, alpha: float, label: str = "α", leftward: bool = False) -> None:
+    """The angle between the floor and a slope rising to the right (or, leftward, to the left) of (x, y)."""
+    start = math.pi if leftward else 0.0
+    end = start + alpha if leftward else -alpha
+    svg.arc(x, y, 34, start, end, color=PARAM)
+    mid = (start + end) / 2
+    svg.text(x + 48 * math.cos(mid), y + 48 * math.sin(mid) + 2, label, PARAM, 16)
+
+
+def _block_on_slope(svg: Svg, x: float, y: float, alpha: float, size: float = 26) -> tuple[float, float]:
+    """A square block resting on a slope of angle alpha, its bottom-centre at (x, y); returns its centre."""
+    ux, uy = math.cos(alpha), -math.sin(alpha)  # along the slope, upwards
+    nx, ny = -math.sin(alpha), -math.cos(alpha)  # normal, out of the slope
+    h = size / 2
+    corners = [(x - ux * h, y - uy * h), (x + ux * h, y + uy * h)]
+    corners += [(cx + nx * size, cy + ny * size) for cx, cy in reversed(corners)]
+    svg.polygon(corners, fill="#c9d8ea")
+    return x + nx * h, y + ny * h
+
+
+def incline(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
+    svg = Svg()
+    alpha = p.get("alpha", math.pi / 6)
+    x0, y0, base = 30.0, 210.0, 250.0
+    top = (x0 + base, y0 - base * math.tan(alpha))
+    svg.polygon([(x0, y0), (x0 + base, y0), top], fill="#eef1f4")
+    _angle_mark(svg, x0, y0, alpha)
+    s = 0.55 * base / math.cos(alpha)
+    bx, by = x0 + s * math.cos(alpha), y0 - s * math.sin(alpha)
+    cx, cy = _block_on_slope(svg, bx, by, alpha)
+    svg.text(cx - 2, cy + 1, "m", PARAM, 14)
+    off = 40
+    ax, ay = x0 - off * math.sin(alpha), y0 - off * math.cos(alpha)
+    svg.arrow(ax, ay, ax + s * math.cos(alpha), ay - s * math.sin(alpha), color=ACCENT)
+    svg.text(ax + 0.5 * s * math.cos(alpha) - 12, ay - 0.5 * s * math.sin(alpha) - 12, "X", ACCENT, 17)
+    svg.arrow(60, 40, 60, 76, color=PARAM)
+    svg.text(72, 60, "g", PARAM)
+    return svg
+
+
+def movable_incline(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
+    svg = Svg()
+    alpha = p.get("alpha", math.pi / 6)
+    floor = 206.0
+    svg.line(10, floor, 310, floor, INK, 2)
+    for i in range(16):
+        svg.line(14 + 19 * i, floor + 1, 6 + 19 * i, floor + 9, INK, 1)
+    x0, base = 86.0, 200.0
+    height = min(base * math.tan(alpha), 150.0)
+    base = height / math.tan(alpha)
+    apex = (x0, floor - height)
+    svg.polygon([(x0, floor), (x0 + base, floor), apex], fill="#eef1f4")
+    svg.text(x0 + base * 0.32, floor - height * 0.22, "M", PARAM, 16)
+    _angle_mark(svg, x0 + base, floor, alpha, "α", leftward=True)
+    d = 0.45 * height / math.sin(alpha)
+    bx, by = apex[0] + d * math.cos(alpha), apex[1] + d * math.sin(alpha)
+    cx, cy = _block_on_slope(svg, bx, by, -alpha)
+    svg.text(cx, cy, "m", PARAM, 14)
+    svg.arrow(
+        apex[0] + 18 * math.sin(alpha),
+        apex[1] - 18 * math.cos(alpha) - 14,
+        bx + 18 * math.sin(alpha),
+        by - 18 * math.cos(alpha) - 14,
+        color=ACCENT,
+    )
+    svg.text((apex[0] + bx) / 2 + 22, (apex[1] + by) / 2 - 30, "D", ACCENT, 17)
+    svg.line(20, floor - 6, 20, floor - 60, GUIDE, 1.2, dash=True)
+    svg.arrow(20, floor - 40, x0, floor - 40, color=ACCENT)
+    svg.text(48, floor - 52, "X", ACCENT, 17)
+    svg.arrow(290, 40, 290, 76, color=PARAM)
+    svg.text(302, 60, "g", PARAM)
+    return svg
+
+
+def tabletop(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
+    svg = Svg()
+    theta = q.get("theta", 0.7) or 0.7
+    ox, oy, r = 110.0, 150.0, 130.0
+    svg.rect(12, 16, 296, 210, fill="#f3f5f7", color=GUIDE)
+    svg.line(ox, oy, ox + 180, oy, GUIDE, 1.2, dash=True)
+    px, py = ox + r * math.cos(theta), oy - r * math.sin(theta)
+    svg.spring(ox, oy, px, py, coils=8)
+    svg.circle(ox, oy, 4)
+    svg.arc(ox, oy, 40, 0.0, -theta, arrow=True)
+    svg.text(ox + 56 * math.cos(theta / 2), oy - 56 * math.sin(theta / 2), "θ", ACCENT, 17)
+    svg.text((ox + px) / 2 - 16, (oy + py) / 2 - 10, "r", ACCENT, 17)
+    svg.text((ox + px) / 2 + 18, (oy + py) / 2 + 16, "k", PARAM, 16)
+    svg.circle(px, py, 11, fill="#c9d8ea")
+    svg.text(px + 22, py, "m", PARAM)
+    svg.text(250, 206, "top view", GUIDE, 13)
+    return svg
+
+
+def rail_two_body(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
+    svg = Svg()
+    rail = 150.0
+    svg.line(10, rail, 310, rail, INK, 3)
+    origin = 30.0
+    svg.line(origin, rail - 60, origin, rail + 40, GUIDE, 1.2, dash=True)
+    x1, x2, w = 100.0, 230.0, 40.0
+    svg.rect(x1 - w / 2, rail - 34, w, 32)
+    svg.rect(x2 - w / 2, rail - 34, w, 32)
+    svg.text(x1, rail - 18, "m₁", PARAM, 15)
+    svg.text(x2, rail - 18, "m₂", PARAM, 15)
+    svg.spring(x1 + w / 2, rail - 18, x2 - w / 2, rail - 18, coils=7)
+    svg.text((x1 + x2) / 2, rail - 44, "k", PARAM, 16)
+    svg.arrow(origin, rail + 18, x1, rail + 18, color=ACCENT)
+    svg.text((origin + x1) / 2, rail + 30, "x₁", ACCENT, 16)
+    svg.arrow(origin, rail + 46, x2, rail + 46, color=ACCENT)
+    svg.text((origin + x2) / 2 + 30, rail + 58, "x₂", ACCENT, 16)
+    svg.line(x1, rail - 70, x1 + 90, rail - 70, PARAM, 1.5)
+    svg.line(x1, rail - 76, x1, rail - 64, PARAM, 1.5)
+    svg.line(x1 + 90, rail - 76, x1 + 90, rail - 64, PARAM, 1.5)
+    svg.text(x1 + 45, rail - 84, "rest length l₀", PARAM, 13)
+    return svg
+
+
+def pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
+    svg = Svg()
+    ceiling, r = 22.0, 20.0
+    left, right = 80.0, 240.0
+    svg.line(30, ceiling, 290, ceiling, INK, 3)
+    for cx in (left, right):
+        svg.line(cx, ceiling, cx, ceiling + 24, INK, 1.5)
+        svg.circle(cx, ceiling + 24, r, fill="#eef1f4")
+    y1, y2, ym = 150.0, 118.0, 170.0
+    mid = (left + right) / 2
+    svg.line(left - r, ceiling + 24, left - r, y1 - 16)
+    svg.line(left + r, ceiling + 24, mid - r, ym)
+    svg.circle(mid, ym, r, fill="#eef1f4")
+    svg.line(mid + r, ym, right - r, ceiling + 24)
+    svg.line(right + r, ceiling + 24, right + r, y2 - 16)
+    svg.rect(left - r - 16, y1 - 16, 32, 32)
+    svg.text(left - r, y1, "m₁", PARAM, 14)
+    svg.rect(right + r - 16, y2 - 16, 32, 32)
+    svg.text(right + r, y2, "m₂", PARAM, 14)
+    svg.line(mid, ym + r, mid, ym + r + 8)
+    svg.rect(mid - 17, ym + r + 8, 34, 28)
+    svg.text(mid, ym + r + 22, "M", PARAM, 14)
+    base = 226.0
+    svg.line(20, base, 300, base, GUIDE, 1.2, dash=True)
+    svg.arrow(left - r - 30, base, left - r - 30, y1, color=ACCENT)
+    svg.text(left - r - 44, (base + y1) / 2, "y₁", ACCENT, 16)
+    svg.arrow(right + r + 30, base, right + r + 30, y2, color=ACCENT)
+    svg.text(right + r + 44 - 4, (base + y2) / 2, "y₂", ACCENT, 16)
+    svg.arrow(mid, 48, mid, 84, color=PARAM)
+    svg.text(mid + 12, 66, "g", PARAM)
+    return svg
+
+
+def coupled_oscillators(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
+    svg = Svg()
+    floor, w = 150.0, 36.0
+    svg.line(10, floor, 310, floor, INK, 3)
+    for wall in (14.0, 306.0):
+        svg.line(wall, floor - 70, wall, floor, INK, 3)
+    x1, x2 = 108.0, 212.0  # rest positions of the two masses
+    for x, name in ((x1, "m"), (x2, "m")):
+        svg.rect(x - w / 2, floor - 34, w, 32)
+        svg.text(x, floor - 14, name, PARAM, 15)
+    svg.spring(14, floor - 18, x1 - w / 2, floor - 18, coils=6)
+    svg.spring(x1 + w / 2, floor - 18, x2 - w / 2, floor - 18, coils=6)
+    svg.spring(x2 + w / 2, floor - 18, 306, floor - 18, coils=6)
+    svg.text((14 + x1 - w / 2) / 2, floor - 40, "k", PARAM, 16)
+    svg.text((x1 + x2) / 2, floor - 40, "κ", PARAM, 16)
+    svg.text((x2 + w / 2 + 306) / 2, floor - 40, "k", PARAM, 16)
+    # displacements measured from the rest positions
+    for x, name in ((x1, "x₁"), (x2, "x₂")):
+        svg.line(x, floor + 6, x, floor + 40, GUIDE, 1.2, dash=True)
+        svg.arrow(x, floor + 30, x + 34, floor + 30, color=ACCENT)
+        svg.text(x + 18, floor + 52, name, ACCENT, 16)
+    return svg

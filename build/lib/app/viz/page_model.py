@@ -1,0 +1,454 @@
+"""Everything a scene page shows, built once per scene from the derivation JSON.
+
+``scene_page(doc, scene, particles, methods)`` returns a plain dict: the
+steps (long ones flagged for collapsing), the summary box, the controls with
+units and ranges, the panels to draw, the diagram, and ``client`` -- the
+compact data the browser modules need (expression trees, not code).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+from app.engine.names import latex, prose
+from app.engine.report import CORE_STEPS
+from app.engine.trees import TreeError, maybe_of_text, of_text
+from app.limits import DEFAULT_T_END
+from app.numerics import limits
+from app.viz.control_ranges import ticks, useful_range
+from app.viz.diagrams import diagram
+from app.viz.exprtree import document_tree, leaves
+from app.viz.mechanism import mechanism
+from app.viz.names import label
+from app.viz.panels import Facts, folded, oscillating_equilibria, shown, texts
+from app.viz.units import coordinate_units
+
+LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collapsed
+SLIDER_STEPS = 1000  # positions of a control's slider (the page's range inputs; static/js/controls.js reads them)
+# the page's menu of tolerances, written as powers of ten (1e-8)
+RTOLS = tuple(f"1e{round(math.log10(r))}" for r in limits.RTOL_MENU)
+DEFAULT_RTOL = f"1e{round(math.log10(limits.RTOL_DEFAULT))}"
+
+
+def _names(doc: dict[str, Any], extra: Sequence[str] = ()) -> list[str]:
+    q = doc["coordinates"]
+    return [*q, *(f"{c}_dot" for c in q), *doc["parameters"], "t", *extra]
+
+
+def _pair_tree(pair: dict[str, Any] | None, names: Sequence[str]) -> Any:
+    return document_tree(pair, names)
+
+
+def _steps(doc: dict[str, Any]) -> list[dict[str, Any]]:
+    return [
+        {
+            "number": i + 1,
+            "title": s["title"],
+            "latex": s["latex"],
+            "explanation": s["explanation"],
+            # a core step (L, the equations, the accelerations) is never folded: long ones are broken across lines
+            "long": len(s["latex"]) > LONG_STEP and s["key"] not in CORE_STEPS,
+            "core": s["key"] in CORE_STEPS,
+        }
+        for i, s in enumerate(doc["steps"])
+    ]
+
+
+def letter_of(doc: dict[str, Any], meaning: str, default: str, form: str = "latex") -> str:
+    """The document's letter for a derived quantity (``form`` "latex" or "unicode"), from its Symbols table
+    (app/engine/notation.py)."""
+    return next(
+        (r[form] for r in doc.get("notation") or [] if r["kind"] == "derived" and r["meaning"].startswith(meaning)),
+        default,
+    )
+
+
+def _summary(doc: dict[str, Any]) -> dict[str, Any]:
+    q = doc["coordinates"]
+    conserved = [
+        {"latex": f"{c.get('latex_name') or c['name']} = {c['latex']}", "reason": c["reason"]}
+        for c in doc.get("conserved", [])
+    ]
+    ddot = {c: latex(f"{c}_ddot") for c in q}
+    return {
+        "equations": [e["latex"] for e in doc["equations_of_motion"]],
+        # none in closed form for a large system (listed in "skipped"): M⁻¹f
+        "accelerations": [f"{ddot[c]} = {doc['accelerations'][c]['latex']}" for c in q]
+        if doc["accelerations"]
+        else [rf"\ddot{{q}} = {letter_of(doc, 'mass matrix', 'M')}^{{-1}} f"],
+        "momenta": [f"{latex('p_' + c)} = {doc['momenta'][c]['latex']}" for c in q],
+        # members of the document left out within their own bounds, each with its reason (issue 35)
+        "skipped": [s["reason"] for s in doc.get("skipped") or []],
+        "conserved": conserved,
+        "h_equals_e": doc["hamiltonian_equals_energy"],
+        "h_reason": doc["hamiltonian_energy_reason"],
+        "h_conserved": doc.get("hamiltonian_conserved"),
+        "h_conserved_reason": doc.get("hamiltonian_conserved_reason"),
+        "hamiltonian": "h = " + doc["hamiltonian"]["latex"],
+        "energy_minus_h": (doc.get("energy_minus_hamiltonian") or {}).get("latex"),
+        "effective_potential": (
+            {
+                **doc["effective_potential"],
+                "coordinate_latex": latex(doc["effective_potential"]["coordinate"]) + " = ",
+                "frequency_latex": letter_of(doc, "angular frequency", r"\omega"),
+            }
+            if doc.get("effective_potential")
+            else None
+        ),
+        "constraint_forces": doc.get("constraint_forces") or [],
+        # every letter of the page once, with what it stands for
+        "symbols": doc.get("notation") or [],
+    }
+
+
+def _transformed(doc: dict[str, Any]) -> list[dict[str, Any]] | None:
+    """The derivation in other coordinates (the rail's centre of mass and separation), as labelled rows of LaTeX."""
+    tr = doc.get("transformed")
+    if not tr:
+        return None
+    q = tr.get("coordinates", [])
+    sym = {c: latex(c) for c in q}
+    rows: list[dict[str, Any]] = []
+
+    def add(title: str, items: list[str]) -> None:
+        if items:
+            rows.append({"title": title, "latex": items})
+
+    add("New coordinates", [f"{sym.get(c, c)} = {e['latex']}" for c, e in tr.get("definitions", {}).items()])
+    add("Old coordinates in the new", [f"{latex(c)} = {e['latex']}" for c, e in tr.get("inverse", {}).items()])
+    if "lagrangian" in tr:
+        add("Lagrangian", [f"L = {tr['lagrangian']['latex']}"])
+    add("Cyclic coordinates", [", ".join(sym.get(c, c) for c in tr.get("cyclic", []))] if tr.get("cyclic") else [])
+    if "reduced_mass" in tr:
+        add("Reduced mass", [rf"\mu = {tr['reduced_mass']['latex']}"])
+    add("Accelerations", [rf"\ddot{{{sym.get(c, c)}}} = {e['latex']}" for c, e in tr.get("accelerations", {}).items()])
+    add("Momenta", [f"p_{{{sym.get(c, c)}}} = {e['latex']}" for c, e in tr.get("momenta", {}).items()])
+    conserved = []
+    for c in tr.get("conserved", []):
+        text = f"{c.get('latex_name') or c['name']} = {c['latex']}"
+        if c.get("original") and c["name"].startswith("p_"):
+            text += f" = {c['original']['latex']}"  # the same momentum in the old coordinates
+        conserved.append(text)
+    add("Conserved", conserved)
+    return rows
+
+
+def _fmt(x: float) -> str:
+    return f"{x:.6g}"
+
+
+def _round_reach(default: float) -> float:
+    """10^(n + 1) for the smallest power of ten 10^n at or above |default| (at least 10)."""
+    return 10.0 ** (max(0, math.ceil(math.log10(abs(default)))) + 1) if default else 10.0
+
+
+# a lowest value this close above 0 stands for "more than 0" (a mass, a length: JUST_ABOVE_ZERO of the form)
+ABOVE_ZERO = 1e-6
+
+
+def allowed_text(lo: float, hi: float, unit: str) -> str:
+    """The allowed range as a reader writes it: "more than 0, up to 10 kg", "−100 to 100 rad/s", numbers with a
+    true minus sign and no exponent notation, the unit typeset (m/s², not m/s^2)."""
+    shown = unit_text(unit)
+    tail = f" {shown}" if shown else ""
+    if 0 < lo <= ABOVE_ZERO:
+        return f"more than 0, up to {_plain(hi)}{tail}"
+    return f"{_plain(lo)} to {_plain(hi)}{tail}"
+
+
+def _plain(x: float) -> str:
+    # whole thousands with separators (10,000), smaller numbers to four figures (0.01, 2.5)
+    text = f"{x:,.0f}" if abs(x) >= 1000 else f"{x:.4g}"
+    return text.replace("-", "−")
+
+
+def unit_text(unit: str) -> str:
+    """A unit as printed: powers as superscripts (m/s^2 → m/s², kg*m^2 → kg·m²)."""
+    return re.sub(r"\^(-?\d)", lambda m: m.group(1).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")), unit).replace("*", "·")
+
+
+def angles(doc: dict[str, Any]) -> set[str]:
+    """Coordinates that are angles, as the derivation document records them."""
+    return set(doc.get("angles") or [])
+
+
+def _initial_controls(
+    doc: dict[str, Any],
+    initial: dict[str, float],
+    nonnegative: Sequence[str],
+    angular: set[str],
+    marks: dict[str, list[dict[str, Any]]] | None = None,
+    units: dict[str, str] | None = None,
+    events: Sequence[Mapping[str, Any]] = (),
+) -> list[dict]:
+    marks = marks or {}
+    units = units or {}
+    # a set-up that ends where a coordinate falls below zero (the block at the foot of its ramp) starts
+    # only where it holds: that coordinate's slider begins at 0
+    held = {e["expression"].strip() for e in events}
+    lengths = [p["default"] for p in doc["parameters"].values() if p.get("unit") == "m" and p["default"] > 0]
+    scale = max([1.0, *lengths])
+    controls = []
+    for q in doc["coordinates"]:
+        angle = q in angular or units.get(q) == "rad"
+        value, rate = float(initial.get(q, 0.0)), float(initial.get(f"{q}_dot", 0.0))
+        if angle:
+            lo, hi = -math.pi, math.pi
+            lo, hi = min(lo, value), max(hi, value)
+        else:
+            size = 3 * max(scale, abs(value))
+            lo, hi = (0.0 if q in nonnegative or q in held else -size), size
+        found = marks.get(f"{q}_dot", [])
+        reach = max([abs(m["value"]) for m in found], default=0.0)
+        vmax = max(10.0, 3 * abs(rate), 1.5 * reach) if angle else max(5.0, 3 * abs(rate), math.sqrt(9.81 * scale))
+        unit = units.get(q, "rad" if angle else "m")
+        rate_unit = f"{unit}/s" if unit else "1/s"
+        controls.append(
+            {"name": q, "label": f"{label(q)}(0)", "latex": latex(q), "unit": unit,
+             "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(value), "log": False,
+             "allowed": allowed_text(float(lo), float(hi), unit),
+             "description": f"initial {'angle' if angle else 'position'} {label(q)}"}
+        )  # fmt: skip
+        controls.append(
+            {"name": f"{q}_dot", "label": f"{label(q + '_dot')}(0)", "latex": latex(f"{q}_dot"),
+             "unit": rate_unit, "min": _fmt(-vmax), "max": _fmt(vmax), "value": _fmt(rate), "log": False,
+             "allowed": allowed_text(-vmax, vmax, rate_unit), "ticks": _marks(found, rate_unit),
+             "description": f"initial rate of change of {label(q)}"}
+        )  # fmt: skip
+    return controls
+
+
+def _marks(found: Sequence[dict[str, Any]], unit: str) -> list[dict[str, Any]]:
+    """Marks for a slider, each with a line of text; a pair ±v with the same meaning is said once."""
+    out = []
+    for m in found:
+        value = m["value"]
+        twin = any(o is not m and o["label"] == m["label"] and math.isclose(o["value"], -value) for o in found)
+        size = f"±{abs(value):.4g}" if twin else f"{value:.4g}".replace("-", "−")
+        text = "" if twin and value < 0 else f"{m['label']}: {size} {unit}".strip()
+        out.append({"value": _fmt(value), "label": m["label"], "text": text})
+    return out
+
+
+# What a parameter without a description is, by its unit (so that a label never repeats the name: "m m").
+KIND_BY_UNIT = {"kg": "a mass", "m": "a length", "N/m": "a spring constant", "m/s^2": "an acceleration",
+                "m/s²": "an acceleration", "s": "a time", "1/s": "a rate", "rad/s": "an angular velocity",
+                "rad": "an angle", "N": "a force", "kg/s": "a drag coefficient"}  # fmt: skip
+
+
+def _described(info: dict[str, Any]) -> str:
+    return info.get("description") or KIND_BY_UNIT.get((info.get("unit") or "").strip(), "a parameter")
+
+
+def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any]]]) -> list[dict[str, Any]]:
+    controls = []
+    for name, info in doc["parameters"].items():
+        default = float(info["default"])
+        # a bound the declaration leaves open is a round one, ± a power of ten at least ten times the default
+        # (a mass of 1 kg: up to 10 kg; g = 9.81 m/s²: up to 100), never the default plus ten
+        reach = _round_reach(default)
+        lo = info.get("min") if info.get("min") is not None else -reach
+        hi = info.get("max") if info.get("max") is not None else reach
+        found = [m for m in marks.get(name, []) if lo <= m["value"] <= hi]
+        slider_lo, slider_hi, log = useful_range(default, float(lo), float(hi), found)
+        unit = info.get("unit") or ""
+        controls.append(
+            {"name": name, "label": label(name), "latex": latex(name), "unit": unit,
+             "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(default), "log": log,
+             "slider_min": _fmt(slider_lo), "slider_max": _fmt(slider_hi), "ticks": _marks(found, unit),
+             "description": _described(info), "allowed": allowed_text(float(lo), float(hi), unit)}
+        )  # fmt: skip
+    return controls
+
+
+def _reduction(doc: dict[str, Any]) -> dict[str, Any] | None:
+    red = doc.get("effective_potential")
+    if not red:
+        return None
+    momenta = [m for m in red.get("momenta", [])]
+    names = _names(doc, momenta)
+    coordinate_of = {m: m[2:] for m in momenta if m.startswith("p_")}
+    out = {
+        "coordinate": red["coordinate"],
+        "momenta": [
+            {
+                "symbol": m,
+                "coordinate": coordinate_of.get(m),
+                "tree": _pair_tree(doc["momenta"].get(coordinate_of.get(m, "")), names),
+            }
+            for m in momenta
+        ],
+        "potential": _pair_tree(red["potential"], names),
+        "mass": _pair_tree(red["mass"], names),
+        "condition": _pair_tree(red["condition"], names),
+        "omega_squared": _pair_tree(red["omega_squared"], names),
+        "equilibria": [
+            {
+                "position": _pair_tree(e["position"], names),
+                "omega_squared": _pair_tree(e["omega_squared"], names),
+                "stable": e.get("stable"),
+            }
+            for e in red.get("equilibria", [])
+        ],  # fmt: skip
+    }
+    essential = [out["potential"], out["mass"], *(m["tree"] for m in out["momenta"])]
+    return out if all(x is not None for x in essential) else None
+
+
+def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bool = True) -> dict[str, Any]:
+    names = _names(doc)
+    # rad for an angle, m where the dimensions say so, nothing where they cannot tell (app/viz/units.py)
+    known = coordinate_units(doc, scene)
+    units = known["units"]
+    conserved = [
+        {"name": c["name"], "label": label(c["name"]), "tree": document_tree(c, names)}
+        for c in doc.get("conserved", [])
+    ]
+    return {
+        "id": doc.get("id"),
+        "coordinates": doc["coordinates"],
+        "labels": {n: label(n) for n in [*names, *(c["name"] for c in doc.get("conserved", []))] if n != "t"},
+        "units": units,
+        # the letter of a small-oscillation frequency on this page (Ω where ω is the parabola's turning rate)
+        "frequency_letter": letter_of(doc, "angular frequency", "ω", "unicode"),
+        "rate_units": known["rate_units"],
+        "momentum_units": known["momentum_units"],
+        "nonnegative": list(nonnegative),
+        "parameters": {k: v["default"] for k, v in doc["parameters"].items()},
+        "parameter_units": {k: v.get("unit", "") for k, v in doc["parameters"].items()},
+        "initial": info.get("initial", {}),
+        "t_end": info.get("t_end", DEFAULT_T_END),
+        "panels": info["panels"],
+        "trees": {
+            "kinetic": _pair_tree(doc.get("kinetic"), names),
+            "potential": _pair_tree(doc.get("potential"), names),
+            "hamiltonian": _pair_tree(doc.get("hamiltonian"), names),
+            "energy": _pair_tree(doc.get("energy"), names),
+            "momenta": {q: _pair_tree(doc["momenta"][q], names) for q in doc["coordinates"]},
+        },
+        "cyclic": doc.get("cyclic", []),
+        "conserved": conserved,
+        "h_equals_e": doc["hamiltonian_equals_energy"],
+        "forced": bool(doc.get("generalized_forces")),
+        "reduction": reduction,
+        "constraint_forces": [
+            {
+                "name": c["name"],
+                "label": label(c["name"]),
+                "convention": c.get("convention", ""),
+                "slack_when_negative": bool(c.get("slack_when_negative")),
+            }
+            for c in doc.get("constraint_forces") or []
+        ],  # fmt: skip
+        "mechanism": spec,
+        # where the set-up ends (the browser's preview stops there too, as the server's run does)
+        "events": [
+            {"name": e["name"], "message": e["message"], "tree": maybe_of_text(e["expression"], names)}
+            for e in info.get("events", [])
+        ],
+        "methods": list(methods),
+        # equilibria at rest with an oscillating mode (numbers at the default parameters), for the modes panel
+        "normal_modes": oscillating_equilibria(doc),
+    }
+
+
+def _panels(declared: Sequence[str], doc: dict[str, Any], reduction, spec, scene: bool) -> tuple[list[str], list[str]]:
+    """The panels this page shows (app/viz/panels.py): every available one, optional ones where declared; and
+    those of them that sit closed under "details" (the method comparison where the method does not matter)."""
+    facts = Facts(doc, reduction, spec["dim"] if spec is not None else None, scene)
+    names = shown(facts, declared)
+    return names, folded(facts, names)
+
+
+def moves_in_3d(particles: Sequence[tuple[str, Sequence[str]]], coordinates: Sequence[str]) -> bool:
+    """Some body moves along each of the three axes (so the mechanism is drawn in space)."""
+    moving = set(coordinates) | {"t"}
+
+    def moves(text: str) -> bool:
+        try:
+            return bool(leaves(of_text(text)) & moving)
+        except TreeError:
+            return False
+
+    return all(any(moves(pos[i]) for _, pos in particles) for i in range(3))
+
+
+def scene_page(
+    doc: dict[str, Any],
+    info: dict[str, Any],
+    particles: Sequence[tuple[str, Sequence[str]]] = (),
+    methods: Sequence[str] = ("auto",),
+    nonnegative: Sequence[str] = (),
+    scene: bool = True,
+) -> dict[str, Any]:
+    """The page model of one scene; ``info`` holds title, section, summary, statement, figure, panels, initial, t_end.
+
+    ``info["panels"]`` are the optional panels asked for; ``scene`` is False for a user's system.
+    """
+    declared = list(info.get("panels", ()))
+    reduction = _reduction(doc)
+    defaults = {k: v["default"] for k, v in doc["parameters"].items()}
+    spec = mechanism(
+        info.get("family", ""),
+        particles,
+        doc["coordinates"],
+        moves_in_3d(particles, doc["coordinates"]),
+        forces=doc.get("constraint_forces") or (),
+        defaults=defaults,
+        proven=doc.get("fixed_distances") or (),
+        potential=document_tree(doc.get("potential")),
+    )
+    panels, closed = _panels(declared, doc, reduction, spec, scene)
+    # symbol names in the scene's prose as a reader writes them (m₁, x₂)
+    info = {**info, "panels": panels, **{k: prose(info[k]) for k in ("statement", "figure", "summary") if info.get(k)}}
+    angular = angles(doc)
+    marks = ticks(doc, info.get("initial", {}))
+    client = _client(doc, info, reduction, spec, methods, nonnegative, angular, scene)
+    return {
+        "info": info,
+        "declared_panels": declared,
+        "panels": panels,
+        "folded_panels": closed,
+        "panel_text": texts(bool(doc.get("generalized_forces")), angles=bool(doc.get("angles"))),
+        "diagram": diagram(
+            info.get("family", ""),
+            f"Set-up: {info.get('title', '')}",
+            info.get("figure", ""),
+            defaults,
+            info.get("initial", {}),
+            doc["coordinates"],
+            particles,
+            marks=info.get("marks", ()),
+        ),  # fmt: skip
+        # what the animation draws, in words (the set-up's figure text stays with the diagram)
+        "animation_caption": spec["caption"] if spec else "",
+        "animation_forces": bool(spec and spec.get("forces")),
+        "animation_none": bool(spec and spec.get("none")),
+        "steps": _steps(doc),
+        "summary": _summary(doc),
+        "errata": [{**e, "reason": prose(e["reason"])} for e in doc.get("errata") or []],
+        "transformed": _transformed(doc),
+        "parameters": _parameter_controls(doc, marks),
+        "initial": _initial_controls(
+            doc,
+            info.get("initial", {}),
+            nonnegative,
+            angular,
+            marks,
+            coordinate_units(doc, scene)["units"],
+            info.get("events", ()),
+        ),
+        "t_end": {
+            "value": _fmt(info.get("t_end", DEFAULT_T_END)),
+            "min": "0.5",
+            "max": _fmt(max(60.0, 10 * info.get("t_end", DEFAULT_T_END))),
+        },
+        "methods": list(methods),
+        "rtols": RTOLS,
+        "default_rtol": DEFAULT_RTOL,
+        "client_json": json.dumps(client, separators=(",", ":")).replace("<", "\\u003c"),
+    }

@@ -1,0 +1,73 @@
+"""Routes for the chapter's scenes: list them, serve their derivations and their exports."""
+
+from __future__ import annotations
+
+from typing import Annotated, Any
+
+from fastapi import APIRouter, Query
+from fastapi.responses import Response
+
+from app.engine.contract import scene_json
+from app.service import derivations, exporting
+from app.service.export.source import FORMATS
+from app.service.exporting import Exported
+from app.web.deps import AnswersDep, ChapterDep
+from app.web.schemas import Problem, SceneSummary
+from app.web.schemas_export import FORMAT_HELP, ExportFormat
+
+router = APIRouter(prefix="/api", tags=["scenes"])
+
+
+@router.get("/scenes", response_model=list[SceneSummary], summary="List the chapter's scenes")
+def list_scenes() -> list[dict[str, Any]]:
+    return [scene_json(s) for s in derivations.SCENES.values()]
+
+
+@router.get(
+    "/scenes/{scene_id}/derivation",
+    summary="The step-by-step derivation of a scene",
+    responses={404: {"model": Problem, "description": "No scene has this id."}},
+)
+def scene_derivation(scene_id: str, chapter: ChapterDep) -> dict[str, Any]:
+    # A plain `def`: FastAPI runs it in its thread pool, so a first (uncached)
+    # derivation never blocks the event loop.
+    return chapter.document(scene_id)
+
+
+def download(exported: Exported) -> Response:
+    """A file to save: its media type and a Content-Disposition with its name."""
+    return Response(
+        exported.content,
+        media_type=exported.media_type,
+        headers={"Content-Disposition": f'attachment; filename="{exported.filename}"'},
+    )
+
+
+EXPORT_CONTENT = {media: {"schema": {"type": "string"}} for media, _ in FORMATS.values()}
+
+
+@router.get(
+    "/scenes/{scene_id}/export",
+    summary="A scene's derivation as a notebook, a Python script or a LaTeX document",
+    description=(
+        "`format=ipynb`: a Jupyter notebook with each step in SymPy beside the engine's result, a simulation with "
+        "scipy and a plot (needs sympy, scipy, matplotlib). `format=py`: a standalone script (numpy, scipy, sympy) "
+        "that derives the accelerations from L, integrates the default start to t_end with DOP853 (rtol 1e-10, "
+        'atol 1e-12) and prints `{"t": t_end, "state": {q: ..., q_dot: ...}}` as JSON on its last line. '
+        "`format=tex`: a whole LaTeX document (article, amsmath) with every step."
+    ),
+    response_class=Response,
+    responses={
+        200: {"content": EXPORT_CONTENT, "description": "The file, as an attachment."},
+        404: {"model": Problem, "description": "No scene has this id."},
+        422: {"model": Problem, "description": "The format is missing or not one of ipynb, py, tex."},
+    },
+)
+def scene_export(
+    scene_id: str,
+    fmt: Annotated[ExportFormat, Query(alias="format", description=FORMAT_HELP)],
+    answers: AnswersDep,
+    chapter: ChapterDep,
+) -> Response:
+    # a plain `def`: the first export of a scene may derive it, in FastAPI's thread pool
+    return download(exporting.scene_export(scene_id, fmt, chapter.document, answers.exports))

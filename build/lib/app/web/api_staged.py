@@ -1,0 +1,64 @@
+"""POST /api/derive/equations: the first stage of a derivation, answered before the whole document (issue 35).
+
+The same system as POST /api/derive; the answer holds the equations of motion, the accelerations (or the
+mass matrix and forcing when they stay M⁻¹f), the symbols and parameters, what was left out so far and what
+POST /api/derive will add (``pending``).  A worker-pool job of its own under the derivation's limits
+(app/service/staged.py); when the whole document is cached, its members are answered at once.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from fastapi import APIRouter, Body
+from fastapi.responses import Response
+from pydantic import BaseModel, Field
+
+from app.service.staged import equations_bytes
+from app.service.user_checks import checked
+from app.web.api_user import answer, system_route
+from app.web.deps import ClientDep, UserSystemsDep
+from app.web.examples_user import DERIVE_EXAMPLES
+from app.web.schemas import ParameterInfo
+from app.web.schemas_user import OPEN, EquationOfMotion, ExprPair, SkippedMember, SystemSpec
+
+router = APIRouter(prefix="/api", tags=["your systems"])
+
+
+class PendingMember(BaseModel):
+    member: str = Field(description="A member of the whole document not in this answer (steps, hamilton, …).")
+    name: str = Field(description="The member as the playground names it while it waits.")
+
+
+class FirstStage(BaseModel):
+    """The first stage of the derivation JSON: the members below are as in POST /api/derive's answer."""
+
+    model_config = OPEN
+    stage: Literal["equations", "whole"] = Field(
+        description="`equations` for a first stage; `whole` when the whole document was ready (nothing pending)."
+    )
+    coordinates: list[str]
+    parameters: dict[str, ParameterInfo]
+    equations_of_motion: list[EquationOfMotion]
+    accelerations: dict[str, ExprPair] = Field(description="Empty when they stay M⁻¹f (see `skipped`).")
+    mass_matrix: list[list[ExprPair]]
+    forcing: list[ExprPair] = Field(description="f in M q̈ = f (a first stage gives it when the accelerations stay M⁻¹f).")
+    skipped: list[SkippedMember]
+    pending: list[PendingMember] = Field(description="What POST /api/derive adds (empty when `stage` is whole).")
+
+
+@system_route(
+    router,
+    "/derive/equations",
+    summary="The equations of a system you declare, first",
+    description=(
+        "The same system as POST /api/derive. The answer comes before the whole derivation: the equations of "
+        "motion and the accelerations (or the mass matrix and the forcing), with the symbols and parameters, "
+        "`skipped` so far and `pending` (what POST /api/derive adds). A worker job under the derivation's limits."
+    ),
+    response_model=FirstStage,
+)
+async def derive_equations(
+    client: ClientDep, users: UserSystemsDep, system: Annotated[SystemSpec, Body(openapi_examples=DERIVE_EXAMPLES)]
+) -> Response:
+    return await answer(client, lambda key, address: equations_bytes(users, checked(system.to_spec()), key, address))

@@ -1,0 +1,49 @@
+"""Embed pages: a scene's mechanism for a frame in a course page (``/embed/scenes/{id}``).
+
+What a lecturer puts in an ``<iframe>`` on a course site: the animation with Play, the
+initial conditions and the parameters, and at most one plot panel (``?panel=energy``),
+nothing else; a link opens the whole page. Which sites may frame it is a setting
+(``embed_ancestors``, applied by app/web/headers.py); by default none may.
+"""
+
+from __future__ import annotations
+
+from fastapi import APIRouter, Query, Request
+from fastapi.responses import HTMLResponse
+
+from app.errors import UnknownScene
+from app.service import derivations
+from app.web.deps import ChapterDep, PagesDep
+from app.web.errors import problem
+from app.web.pages import page_model
+from app.web.templating import templates
+
+router = APIRouter(tags=["pages"], include_in_schema=False)
+
+
+def embeddable(model: dict) -> list[str]:
+    """The panels an embed page may show beside the animation: the page's plots that are not folded away."""
+    return [k for k in model["panels"] if not k.startswith("animation") and k not in model["folded_panels"]]
+
+
+@router.get("/embed/scenes/{scene_id}", response_class=HTMLResponse)
+def embed_scene(
+    request: Request,
+    scene_id: str,
+    pages: PagesDep,
+    chapter: ChapterDep,
+    panel: str | None = Query(None, max_length=40, description="one plot panel to show beside the animation"),
+) -> HTMLResponse:
+    try:
+        model = page_model(scene_id, pages, chapter)
+    except UnknownScene as exc:
+        known = [{"id": s.id, "title": s.title, "url": f"/embed/scenes/{s.id}"} for s in derivations.SCENES.values()]
+        return templates.TemplateResponse(
+            request, "404.html", {"missing": exc.scene_id[:60], "known": known}, status_code=problem(exc).status
+        )
+    allowed = embeddable(model)
+    if panel is not None and panel not in allowed:
+        context = {"missing": panel[:40], "known": [], "embed": {"scene": model["info"], "panels": allowed}}
+        return templates.TemplateResponse(request, "404.html", context, status_code=422)
+    context = {"m": model, "scene": model["info"], "embed_panels": [panel] if panel else []}
+    return templates.TemplateResponse(request, "embed.html", context)

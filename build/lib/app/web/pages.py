@@ -1,0 +1,96 @@
+"""HTML pages: the chapter's table of contents and one page per scene.
+
+Pages are rendered on the server from the derivation JSON (cached by the
+service layer) through the page model of ``app.viz.page_model``; the model of
+each scene is built once per app (its ``PageCache``, app/web/page_cache.py), so a
+warm request only renders the template.  Routes are plain ``def``: a first, uncached derivation runs in the
+thread pool, never on the event loop.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from fastapi import APIRouter, Request
+from fastapi.responses import HTMLResponse, RedirectResponse
+
+from app.engine.contract import scene_json
+from app.errors import UnknownScene
+from app.numerics.methods import CHOICES
+from app.service import derivations
+from app.service.derivations import Scenes
+from app.viz.chapter import table_of_contents
+from app.viz.diagrams import diagram
+from app.viz.page_model import scene_page
+from app.web.compression import negotiate
+from app.web.deps import ChapterDep, PagesDep
+from app.web.errors import problem
+from app.web.page_cache import PageCache
+from app.web.templating import templates
+
+router = APIRouter(tags=["pages"], include_in_schema=False)
+
+
+def scene_info(scene_id: str, doc: dict[str, Any]) -> dict[str, Any]:
+    """Title, section, statement, figure, panels, initial state, t_end, events and family of a scene."""
+    return {**scene_json(derivations.scene(scene_id)), **(doc.get("scene") or {})}
+
+
+def page_model(scene_id: str, pages: PageCache | None = None, chapter: Scenes | None = None) -> dict[str, Any]:
+    """The scene's page model, through the app's ``pages`` (rebuilt there only if its derivation document changed);
+    the document from the app's ``chapter`` (by default this process's)."""
+    doc = (derivations.PROCESS_SCENES if chapter is None else chapter).document(scene_id)
+
+    def build() -> dict[str, Any]:
+        s = derivations.scene(scene_id)
+        particles = [(p.label, p.position) for p in s.system.particles]
+        return scene_page(doc, scene_info(scene_id, doc), particles, CHOICES, s.system.nonnegative)
+
+    return build() if pages is None else pages.model(scene_id, doc, build)
+
+
+def _card_diagram(s: Any) -> str:
+    defaults = {p.name: p.default for p in s.system.parameters}
+    particles = [(p.label, p.position) for p in s.system.particles]
+    drawn = (s.family, s.title, s.figure, defaults, dict(s.initial), s.system.coordinates, particles)
+    return diagram(*drawn, ident=f"card-{s.id}", marks=s.marks)
+
+
+@router.get("/", response_class=HTMLResponse)
+def index(request: Request, pages: PagesDep, chapter: ChapterDep) -> HTMLResponse:
+    # the panels each page shows (app/viz/panels.py) tell the contents where a section is illustrated
+    scenes = [
+        {
+            **scene_json(s),
+            "panels": page_model(s.id, pages, chapter)["panels"],
+            "diagram": pages.card(s.id, lambda s=s: _card_diagram(s)),
+            "url": f"/scenes/{s.id}",
+        }
+        for s in derivations.SCENES.values()
+    ]
+    return templates.TemplateResponse(request, "index.html", {"toc": table_of_contents(scenes), "scenes": scenes})
+
+
+@router.get("/scenes", response_class=RedirectResponse)
+def scenes_index() -> RedirectResponse:
+    return RedirectResponse("/", status_code=307)
+
+
+@router.get("/scenes/{scene_id}", response_class=HTMLResponse)
+def scene_page_route(request: Request, scene_id: str, pages: PagesDep, chapter: ChapterDep) -> HTMLResponse:
+    try:
+        model = page_model(scene_id, pages, chapter)
+    except UnknownScene as exc:
+        known = [{"id": s.id, "title": s.title, "url": f"/scenes/{s.id}"} for s in derivations.SCENES.values()]
+        return templates.TemplateResponse(
+            request, "404.html", {"missing": exc.scene_id[:60], "known": known}, status_code=problem(exc).status
+        )
+    # A scene page depends only on its model: render (and compress) it once per model, then serve the bytes.
+    plain, compressed = pages.page(
+        scene_id,
+        model,
+        lambda: bytes(templates.TemplateResponse(request, "scene.html", {"m": model, "scene": model["info"]}).body),
+    )
+    if negotiate(request.headers.get("accept-encoding", ""), offered=("gzip",)):
+        return HTMLResponse(compressed, headers={"Content-Encoding": "gzip", "Vary": "Accept-Encoding"})
+    return HTMLResponse(plain, headers={"Vary": "Accept-Encoding"})

@@ -1,0 +1,168 @@
+"""Request and response models of the classes (app/web/api_classes.py).
+
+Shapes only: whether a scene, system, step or parameter exists is checked by
+the service (app/service/classroom/assignments.py) with located messages.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any
+
+from pydantic import BaseModel, ConfigDict, Field, StringConstraints
+
+from app.web.schemas_check import CheckRequest, Step
+from app.web.schemas_user import STRICT, Name, SystemSpec
+
+Title = Annotated[str, StringConstraints(strip_whitespace=True, min_length=1, max_length=200, pattern=r"^[^\x00-\x1f\x7f]+$")]
+Pseudonym = Annotated[str, StringConstraints(strip_whitespace=True, min_length=1, max_length=40, pattern=r"^[^\x00-\x1f\x7f]+$")]
+SceneId = Annotated[str, Field(min_length=1, max_length=40, pattern=r"^[a-z0-9_-]+$")]
+AttemptId = Annotated[str, Field(min_length=8, max_length=64, pattern=r"^[A-Za-z0-9_-]+$")]
+
+
+class NewClass(BaseModel):
+    model_config = ConfigDict(**STRICT, json_schema_extra={"example": {"title": "Mechanics II, Tuesday"}})
+    title: Title
+
+
+class ClassCreated(BaseModel):
+    code: str = Field(description="What students type to join: 6 characters without look-alikes.")
+    teacher_key: str = Field(description="The instructor's secret (shown once; the server keeps only its hash).")
+
+
+class JoinRequest(BaseModel):
+    model_config = ConfigDict(**STRICT, json_schema_extra={"example": {"name": "Ada"}})
+    name: Pseudonym = Field(description="A pseudonym, unique in the class; no account, no e-mail.")
+
+
+class StepRef(BaseModel):
+    model_config = ConfigDict(**STRICT)
+    step: Step
+    coordinate: Name | None = None
+
+
+class AssignmentItem(BaseModel):
+    model_config = ConfigDict(**STRICT)
+    scene: SceneId | None = Field(None, description="A scene's id (or give `system` and `name`).")
+    system: SystemSpec | None = Field(None, description="A system you declare, as for POST /api/derive.")
+    name: Name | None = Field(None, description="The system's name: students check against it by this name.")
+    steps: list[StepRef] = Field(
+        default_factory=list, max_length=40, description="The steps to practise (a scene: none means all)."
+    )
+    parameters: dict[Name, float] = Field(default_factory=dict, description="Parameter values to show the class.")
+
+    def to_item(self) -> dict[str, Any]:
+        return {
+            "scene": self.scene,
+            "system": self.system.to_spec() if self.system is not None else None,
+            "name": self.name,
+            "steps": [s.model_dump() for s in self.steps],
+            "parameters": self.parameters,
+        }
+
+
+class Assignment(BaseModel):
+    model_config = ConfigDict(
+        **STRICT,
+        json_schema_extra={
+            "example": {
+                "items": [
+                    {"scene": "double-pendulum", "steps": [{"step": "kinetic"}, {"step": "potential"}]},
+                    {"scene": "simple-pendulum", "parameters": {"g": 9.81, "R": 1.0}},
+                ]
+            }
+        },
+    )
+    items: list[AssignmentItem] = Field(max_length=20)
+
+
+class ClassCheckRequest(CheckRequest):
+    """A student's answer for one step of an item of the class's assignment."""
+
+    model_config = ConfigDict(
+        **STRICT,
+        json_schema_extra={
+            "example": {"scene": "simple-pendulum", "step": "kinetic", "answer": "m*R**2*theta_dot**2/2",
+                        "attempt": "k3v9Qx2mTa7Lw0pZ"}
+        },
+    )
+    scene: SceneId | None = Field(None, description="The scene's id (or `system`).")
+    system: Name | None = Field(None, description="The name of a system the instructor assigned.")
+    attempt: AttemptId | None = Field(
+        None,
+        description="An id the page makes for this press of Check (8-64 letters, digits, `-` or `_`), sent again "
+        "with any retry of it: a retry gets the first verdict and records nothing new. Another answer under an "
+        "id already used is refused.",
+    )
+
+
+class StepSummary(BaseModel):
+    model_config = ConfigDict(extra="allow")
+    step: str
+    coordinate: str | None
+    correct: int = Field(description="Answers judged correct or equivalent.")
+    incorrect: int
+    students_done: int = Field(description="Students with a correct or equivalent answer to the step.")
+    mistakes: dict[str, int] = Field(
+        description="Named mistakes among the incorrect answers, by the tutor's stable key, most common first."
+    )
+    mistake_names: dict[str, str] = Field(
+        default_factory=dict, description="Each named mistake's key in words, as the student was told it."
+    )
+    stuck: int = Field(description="Students who answered the step and have no correct answer to it yet.")
+    students_stuck: list[str] = Field(description="Their names, in alphabetical order.")
+
+
+class MistakeTotal(BaseModel):
+    key: str = Field(description="The tutor's stable key of the mistake (of its first step, most common first).")
+    name: str = Field(description="The mistake in words, as the students were told it (empty when it has none).")
+    count: int = Field(description="Incorrect answers with this mistake, over every step and scene.")
+    steps: list[dict[str, Any]] = Field(description="Where it was made: `scene` or `system`, step, coordinate, count.")
+    students: list[str] = Field(description="The students who made it, in alphabetical order.")
+
+
+class Summary(BaseModel):
+    students: int
+    attempts: int
+    steps: list[StepSummary] = Field(description="Each step: `scene` or `system`, then the counts.")
+    mistakes: list[MistakeTotal] = Field(
+        description="Each named mistake totalled over steps and scenes (by its words), most common first."
+    )
+
+
+class StudentStep(BaseModel):
+    item: str
+    step: str
+    coordinate: str | None
+    attempts: int
+    done: bool
+    last: str
+
+
+class StudentProgress(BaseModel):
+    name: str
+    joined: str
+    attempts: int
+    done: int = Field(description="Assigned steps done (all steps done when nothing is assigned).")
+    assigned: int
+    steps: list[StudentStep]
+
+
+class Students(BaseModel):
+    students: list[StudentProgress]
+
+
+class Joined(BaseModel):
+    model_config = ConfigDict(extra="allow")
+    student_key: str = Field(description="The student's secret: send it as `Authorization: Bearer <key>`.")
+    code: str
+    title: str
+    name: str
+    assignment: list[dict[str, Any]]
+
+
+class ClassView(BaseModel):
+    model_config = ConfigDict(extra="allow")
+    code: str
+    title: str
+    role: str = Field(description="`instructor` or `student`.")
+    assignment: list[dict[str, Any]]
