@@ -15,6 +15,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from app.engine.names import latex, prose
+from app.engine.notation import printed
 from app.engine.report import CORE_STEPS
 from app.engine.trees import TreeError, maybe_of_text, of_text
 from app.limits import DEFAULT_T_END
@@ -377,6 +378,38 @@ def moves_in_3d(particles: Sequence[tuple[str, Sequence[str]]], coordinates: Seq
     return all(any(moves(pos[i]) for _, pos in particles) for i in range(3))
 
 
+# the summary's members that are lists of LaTeX (elsewhere a "latex" or "…_latex" key marks it)
+_SUMMARY_LATEX = ("equations", "accelerations", "momenta", "hamiltonian", "energy_minus_h")
+
+
+def _strings(value: Any, tex: bool = False) -> list[tuple[bool, str]]:
+    """Every string in a piece of the page model, each with whether it is LaTeX (else running text or a figure)."""
+    if isinstance(value, str):
+        return [(tex, value)]
+    if isinstance(value, Mapping):
+        return [s for k, v in value.items() for s in _strings(v, tex or k == "latex" or str(k).endswith("_latex"))]
+    if isinstance(value, (list, tuple)):
+        return [s for v in value for s in _strings(v, tex)]
+    return []
+
+
+def page_symbols(model: dict[str, Any]) -> list[dict[str, Any]]:
+    """The Symbols table of a page: the document's letters that the page prints somewhere else, in its statement,
+    steps, results, shown panels, figures or controls (app/engine/notation.printed)."""
+    shown = {k: v for k, v in model.items() if k not in ("client_json", "summary", "panel_text")}
+    summary = {k: v for k, v in model["summary"].items() if k not in ("symbols", *_SUMMARY_LATEX)}
+    red = summary.get("effective_potential")
+    if red:
+        # its letters print only beside an equilibrium ("Equilibrium at r = … with ω² = …")
+        summary["effective_potential"] = {**red, "frequency_latex": red["frequency_latex"] if red["equilibria"] else ""}
+    panels = [model["panel_text"].get(name, {}) for name in model["panels"]]
+    listed = [model["summary"].get(k) for k in _SUMMARY_LATEX]
+    found = [*_strings([shown, summary, panels]), *_strings(listed, True)]
+    # a figure's words without its markup (an SVG's <text x="…"> is not the letter x)
+    words = [re.sub(r"<[^>]*>", " ", s) for tex, s in found if not tex]
+    return printed(model["summary"]["symbols"], [s for tex, s in found if tex], words)
+
+
 def scene_page(
     doc: dict[str, Any],
     info: dict[str, Any],
@@ -408,7 +441,7 @@ def scene_page(
     angular = angles(doc)
     marks = ticks(doc, info.get("initial", {}))
     client = _client(doc, info, reduction, spec, methods, nonnegative, angular, scene)
-    return {
+    model = {
         "info": info,
         "declared_panels": declared,
         "panels": panels,
@@ -452,3 +485,5 @@ def scene_page(
         "default_rtol": DEFAULT_RTOL,
         "client_json": json.dumps(client, separators=(",", ":")).replace("<", "\\u003c"),
     }
+    model["summary"]["symbols"] = page_symbols(model)
+    return model
