@@ -376,17 +376,18 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             "Explicit time dependence",
             [rf"\frac{{\partial L}}{{\partial t}} = {pr.tex(display(en.dL_dt))}"],
             display(en.dL_dt),
-            "If L does not contain t explicitly, the Hamiltonian is conserved (absent non-conservative forces).",
+            "If L does not contain t explicitly and no non-conservative force acts, the energy function h is conserved.",
         )
     )
     h_form, e_form = energies(d, pr)
     steps.append(
         _step(
             "hamiltonian",
-            "Hamiltonian",
+            "Energy function h",
             [rf"h = \sum_k p_k \dot{{q}}_k - L = {pr.tex(h_form)}"],
             h_form,
-            "The Hamiltonian is the sum of momenta times velocities minus the Lagrangian.",
+            "The energy function h is the sum of momenta times velocities minus the Lagrangian, written in the "
+            "velocities (the Hamiltonian H is the same quantity written in the momenta).",
         )
     )
     if m.T is not None:

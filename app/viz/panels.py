@@ -161,7 +161,7 @@ PANELS: tuple[Panel, ...] = (
         "phase",
         "Phase portrait",
         "A coordinate against its rate of change: the blue curve is this run and the red dot the current state. "
-        "With one degree of freedom (or a reduction to one) the grey curves are level sets of the Hamiltonian, "
+        "With one degree of freedom (or a reduction to one) the grey curves are level sets of the energy function h, "
         "each a possible orbit; green dots mark stable equilibria, red diamonds unstable ones, and the dashed red "
         "curve through an unstable one separates motions of different kinds.",
         "always (level sets with one degree of freedom or a reduction to one)",

@@ -76,3 +76,27 @@ def test_a_planar_pendulum_lists_no_beats_and_no_mode_shape(client):
     assert "displacement the beats start from" not in table and "amplitudes of a normal mode" not in table
     coupled, _ = symbols_table(page(client, "coupled-oscillators"))
     assert "displacement the beats start from" in coupled
+
+
+def steps_of(text: str) -> list[tuple[str, str, str]]:
+    """(title, explanation, formula's LaTeX) of every step on a page, the folded ones too."""
+    found = re.findall(
+        r'<h3 class="step-title">(.*?)</h3>\s*<p class="explanation">(.*?)</p>.*?data-tex="([^"]*)"', text, flags=re.S
+    )
+    return [(html.unescape(a), html.unescape(b), html.unescape(c)) for a, b, c in found]
+
+
+@pytest.mark.parametrize("scene", ALL)
+def test_the_word_hamiltonian_names_only_h_of_the_momenta(client, scene):
+    text = page(client, scene)
+    shown = steps_of(text)
+    assert len(shown) > 10
+    for title, explanation, tex in shown:
+        tex = tex.removeprefix(r"\begin{aligned}").replace("&", "")
+        if tex.startswith(r"h = \sum_k p_k"):
+            assert "Hamiltonian" not in title and title == "Energy function h"
+            assert not explanation.startswith("The Hamiltonian")
+        if "Hamiltonian" in title:
+            assert tex.startswith("H =")
+    prose = words(text)
+    assert "the Hamiltonian is conserved" not in prose and "level sets of the Hamiltonian" not in prose
