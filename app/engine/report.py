@@ -261,7 +261,10 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
                 "Potential energy",
                 [f"U = {pr.tex(m.U)}"],
                 m.U,
-                "The potential energy depends on positions only.",
+                # said only where it is true: a driven support puts t in U
+                "The potential energy depends on the positions and, explicitly, on the time t."
+                if m.U.has(d.table.t)
+                else "The potential energy depends on positions only.",
             )
         )
     steps.append(
@@ -322,9 +325,13 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         _step(
             "mass-matrix",
             "Mass matrix and forcing",
-            [rf"{Mt} = {pr.tex(eqs.mass_matrix.applyfunc(pr.form))}", rf"f = {pr.tex(eqs.forcing.applyfunc(pr.form))}"],
+            # one coordinate: a number and a function, never a 1×1 matrix in brackets
+            [rf"{Mt} = {pr.tex(pr.form(eqs.mass_matrix[0, 0]))}", rf"f = {pr.tex(pr.form(eqs.forcing[0]))}"]
+            if len(table.q) == 1
+            else [rf"{Mt} = {pr.tex(eqs.mass_matrix.applyfunc(pr.form))}", rf"f = {pr.tex(eqs.forcing.applyfunc(pr.form))}"],
             [eqs.mass_matrix.tolist(), [display(x) for x in eqs.forcing]],
-            f"The equations are linear in the accelerations, {Mu} q̈ = f, with {Mu} the Hessian of L in the velocities.",
+            f"The equations are linear in the accelerations: {Mu} q̈ = f, with {Mu} the mass matrix (the Hessian of L in "
+            "the velocities) and f the rest of each equation (the forces and the velocity terms) taken to the right.",
         )
     )
     acc = [display(a) for a in eqs.accelerations] if eqs.closed_form else []

@@ -117,7 +117,7 @@ def _figures(x: float) -> str:
 
 
 # a number beside a closed form is the value at the scene's default parameters, and says so
-AT_DEFAULTS = r"\ \text{at the defaults}"
+AT_DEFAULTS = r"\quad \text{at the defaults}"
 PER_SECOND_SQUARED = r"\,\mathrm{s}^{-2}"
 
 
@@ -237,6 +237,32 @@ def _points(
     return rows
 
 
+def _singular_points(nm: NormalModes, d: Derivation, pr: Printer) -> list[str]:
+    """Equilibria where the coordinates fail (the mass matrix is singular: the pole of a sphere, r = 0): each
+    with the coordinates that have a value there, and the ones that have none named (φ at the pole)."""
+    sym = {s.name: s for s in d.table.q}
+    defaults = {s: sp.Float(p.default) for s, p in zip(d.table.params, d.system.parameters, strict=True)}
+    M = d.equations.mass_matrix
+    rows = []
+    for i, point in enumerate(nm.singular):
+        known = (nm.singular_exact[i] or {}) if i < len(nm.singular_exact) else {}
+        at = {sym[n]: known.get(n, sp.Float(v)) for n, v in point.items()}
+        # a coordinate whose own inertia vanishes here (m r² θ̇² at r = 0) has no value at this point
+        lost = [
+            n for k, n in enumerate(d.table.names)
+            if abs(complex(sp.N(M[k, k].xreplace(at).xreplace(defaults)))) < 1e-12
+        ]  # fmt: skip
+        shown = [n for n in point if n not in lost] or list(point)
+        where = r",\; ".join(f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(point[n])}" for n in shown)
+        if lost:
+            names = r",\ ".join(pr.tex(sym[n]) for n in lost)
+            where += rf"\quad (\text{{the coordinates fail here: }} {names} \text{{ has no value}})"
+        else:
+            where += r"\quad (\text{the coordinates fail here})"
+        rows.append(where)
+    return rows
+
+
 def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
     """How the list was found, and how far it can be trusted (never "exactly" unless provably complete)."""
     if nm.solved:
@@ -307,9 +333,7 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         listed.append(r"\text{no equilibrium}")
     rows += listed
     sym = {s.name: s for s in table.q}
-    rows += _points(
-        nm.singular, sym, pr, rf"\quad ({notation.letter('mass_matrix', d)} \text{{ singular}})", nm.singular_exact
-    )
+    rows += _singular_points(nm, d, pr)
     rows += _points(nm.kinks, sym, pr, r"\quad (\text{at a kink of } V)")
     rows += _points(nm.unclassified, sym, pr, r"\quad (\text{coefficients change with } t)")
     why = "At rest (q̇ = 0) the state stays put where the Euler–Lagrange equations give q̈ = 0. "
@@ -338,8 +362,8 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         why += f" {nm.found} were found; the first {MAX_EQUILIBRIA} are shown."
     if nm.singular:
         why += (
-            f" At {len(nm.singular)} of them the mass matrix is singular (the coordinates break down there, like "
-            "polar coordinates at the origin), so no modes are computed at those points."
+            f" At {len(nm.singular)} of them the coordinates themselves fail, as polar coordinates do at the origin: "
+            "a coordinate there has no value, and no small oscillations are worked out about those points."
         )
     if nm.kinks:
         why += (
@@ -414,7 +438,7 @@ def _beats_step(e: Equilibrium, pr: Printer, d: Derivation, number: int) -> dict
     )
 
 
-def _exponents(e: Equilibrium) -> str:
+def _exponents(e: Equilibrium, d: Derivation) -> str:
     """The exponents s of e^{st} (in 1/s, four figures at the default parameters), each complex pair once."""
     lin = e.linear
     assert lin is not None
@@ -424,7 +448,8 @@ def _exponents(e: Equilibrium) -> str:
             continue  # each pair once
         re = _figures(s.real) if abs(s.real) > 1e-9 * max(1.0, abs(s)) else "0"
         shown.append(re + (rf" \pm {_figures(s.imag)}\,i" if s.imag > 1e-12 * max(1.0, abs(s)) else ""))
-    return r"s = " + r",\; ".join(shown) + r"\,\mathrm{s}^{-1}" + AT_DEFAULTS
+    eta = notation.letter("displacement", d)
+    return rf"{eta} \propto e^{{s t}},\quad s = " + r",\; ".join(shown) + r"\,\mathrm{s}^{-1}" + AT_DEFAULTS
 
 
 def _verdict(e: Equilibrium, d: Derivation) -> str:
@@ -501,7 +526,7 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, n
         rows.append(rf"{wt}_{{{i}}}^2 = {value},\quad \text{{shape }} ({shape})")
     moving = e.linear is not None and e.linear.moving
     if moving:
-        rows.append(_exponents(e))
+        rows.append(_exponents(e, d))
     if e.momenta:
         key = f"steady-motion:{number}"
         title = f"Small oscillations about the steady motion at {plain_name(e.coordinates[0])} = {_number(e.position[e.coordinates[0]])}"
@@ -560,7 +585,7 @@ def _one_coordinate_step(
     moving = e.linear is not None and e.linear.moving
     rows = [where]
     if moving:
-        rows.append(_exponents(e))
+        rows.append(_exponents(e, d))
         lin = e.linear
         assert lin is not None
         grows = any(s.real > 1e-12 for s in lin.exponents)
@@ -587,11 +612,8 @@ def _one_coordinate_step(
     elif w2 < 0:
         rate = sp.sqrt(-mode.exact) if mode.exact is not None else None
         shown = pr.tex(mode.exact) if mode.exact is not None else _figures(w2) + PER_SECOND_SQUARED
-        rows.append(f"{wt}^2 = {shown} < 0")
-        rows.append(
-            r"\text{no oscillation: it runs away at the rate } \sqrt{-" + wt + "^2} = "
-            + _closed(rate, math.sqrt(-w2), r"\,\mathrm{s}^{-1}", pr)
-        )
+        rows.append(rf"{wt}^2 = {shown} < 0\quad \text{{(no oscillation: it runs away)}}")
+        rows.append(r"\text{rate } \sqrt{-" + wt + "^2} = " + _closed(rate, math.sqrt(-w2), r"\,\mathrm{s}^{-1}", pr))
         what = "No oscillation about"
         why = (
             f"Linearised about {about}, the small displacement {eu} from it obeys {eu}̈ = |{wu}²| {eu}: it grows like "

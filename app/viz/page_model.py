@@ -20,6 +20,7 @@ from app.engine.report import CORE_STEPS
 from app.engine.trees import TreeError, maybe_of_text, of_text
 from app.limits import DEFAULT_T_END
 from app.numerics import limits
+from app.numerics.methods import LABELS
 from app.viz.control_ranges import ticks, useful_range
 from app.viz.diagrams import diagram
 from app.viz.exprtree import document_tree, leaves
@@ -32,6 +33,12 @@ LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collaps
 SLIDER_STEPS = 1000  # positions of a control's slider (the page's range inputs; static/js/controls.js reads them)
 # the page's menu of tolerances, written as powers of ten (1e-8)
 RTOLS = tuple(f"1e{round(math.log10(r))}" for r in limits.RTOL_MENU)
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def power_of_ten(value: str) -> str:
+    """A tolerance as a reader writes it: 1e-8 → 10⁻⁸ (the menu's value stays 1e-8)."""
+    return "10" + value.partition("e")[2].translate(_SUPERSCRIPT)
 DEFAULT_RTOL = f"1e{round(math.log10(limits.RTOL_DEFAULT))}"
 
 
@@ -66,6 +73,18 @@ def letter_of(doc: dict[str, Any], meaning: str, default: str, form: str = "late
         (r[form] for r in doc.get("notation") or [] if r["kind"] == "derived" and r["meaning"].startswith(meaning)),
         default,
     )
+
+
+def nothing_conserved(doc: dict[str, Any]) -> str:
+    """Why nothing is conserved, naming the cause that applies: a non-conservative force, an explicit t in L."""
+    forced = bool(doc.get("generalized_forces"))
+    timed = (doc.get("explicit_time_derivative") or {}).get("sympy", "0") != "0"
+    cause = {
+        (True, True): "a non-conservative force acts and L depends explicitly on time, so h changes",
+        (True, False): "a non-conservative force acts, so h changes",
+        (False, True): "L depends explicitly on time, so h changes",
+    }.get((forced, timed))
+    return f"Nothing is conserved here: {cause}, and no momentum stays constant." if cause else "Nothing is conserved here."
 
 
 def _summary(doc: dict[str, Any]) -> dict[str, Any]:
@@ -103,6 +122,7 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         "constraint_forces": doc.get("constraint_forces") or [],
         # every letter of the page once, with what it stands for
         "symbols": doc.get("notation") or [],
+        "nothing_conserved": nothing_conserved(doc),
     }
 
 
@@ -230,7 +250,7 @@ def _marks(found: Sequence[dict[str, Any]], unit: str) -> list[dict[str, Any]]:
         value = m["value"]
         twin = any(o is not m and o["label"] == m["label"] and math.isclose(o["value"], -value) for o in found)
         size = f"±{abs(value):.4g}" if twin else f"{value:.4g}".replace("-", "−")
-        text = "" if twin and value < 0 else f"{m['label']}: {size} {unit}".strip()
+        text = "" if twin and value < 0 else f"{size} {unit} ({m['label']})".replace("  ", " ")
         out.append({"value": _fmt(value), "label": m["label"], "text": text})
     return out
 
@@ -352,6 +372,7 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bo
             for e in info.get("events", [])
         ],
         "methods": list(methods),
+        "method_labels": {m: LABELS.get(m, m) for m in (*methods, *LABELS)},
         # equilibria at rest with an oscillating mode (numbers at the default parameters), for the modes panel
         "normal_modes": oscillating_equilibria(doc),
     }
@@ -480,8 +501,8 @@ def scene_page(
             "min": "0.5",
             "max": _fmt(max(60.0, 10 * info.get("t_end", DEFAULT_T_END))),
         },
-        "methods": list(methods),
-        "rtols": RTOLS,
+        "methods": [{"value": m, "label": LABELS.get(m, m)} for m in methods],
+        "rtols": [{"value": r, "label": power_of_ten(r)} for r in RTOLS],
         "default_rtol": DEFAULT_RTOL,
         "client_json": json.dumps(client, separators=(",", ":")).replace("<", "\\u003c"),
     }

@@ -169,7 +169,7 @@ class WorkPrecisionPanel {
   async draw(run) {
     this.run = run;
     const stats = run.stats;
-    const here = `This run: ${stats.method}, error estimate ${fmt(stats.error_estimate)}, run time ${fmt(stats.wall_time_s * 1000)} ms, ${stats.rhs_evaluations ?? "–"} right-hand-side evaluations.`;
+    const here = `This run: ${this.data.method_labels?.[stats.method] || stats.method}, estimated error ${fmt(stats.error_estimate)}, run time ${fmt(stats.wall_time_s * 1000)} ms, ${stats.rhs_evaluations ?? "–"} evaluations of the equations of motion.`;
     if (!this.visible) { this.readout.textContent = `${here} The chart loads when this panel is in view.`; return; }
     this.readout.textContent = `${here} Loading the error-against-run-time chart…`;
     this.section.setAttribute("aria-busy", "true");

@@ -177,7 +177,7 @@ export class SmallOscillationsPanel extends PreviewPanel {
     const letter = run.data.frequency_letter || "ω";
     // words, never a raw null, where there is nothing to show
     const rows = [
-      [`predicted by the engine (${letter}² = U_eff''/m_eff)`, predicted ?? "none: no stable equilibrium", predicted ? (2 * Math.PI) / predicted : "–"],
+      [`predicted from ${letter}² = U_eff″/m_eff`, predicted ?? "none: no stable equilibrium", predicted ? (2 * Math.PI) / predicted : "–"],
       ["measured from this run", measured ?? "none: no full oscillation in the run", measured ? (2 * Math.PI) / measured : "–"],
     ];
     table(this.summary, "Small-oscillation frequency", ["", `${letter} (rad/s)`, "period (s)"], rows);

@@ -238,7 +238,7 @@ def test_the_damped_pendulum_is_marked_as_ours(client):
     # the chapter has no damped pendulum: it builds on 4.1's generalized forces, as our own example
     assert SCENES["damped-pendulum"].beyond_chapter and SCENES["damped-pendulum"].section == "4.1"
     page = client.get("/scenes/damped-pendulum").text
-    assert "Beyond the chapter (our example), building on section 4.1" in page
+    assert "Further example, extending section 4.1" in page and "our example" not in page
     assert "Beyond the chapter" not in client.get("/scenes/simple-pendulum").text.split("<main")[1].split("</header>")[0]
 
 
