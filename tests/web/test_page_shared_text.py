@@ -100,3 +100,120 @@ def test_the_word_hamiltonian_names_only_h_of_the_momenta(client, scene):
             assert tex.startswith("H =")
     prose = words(text)
     assert "the Hamiltonian is conserved" not in prose and "level sets of the Hamiltonian" not in prose
+
+
+# words about the program, not the mechanics: none belongs in what a student reads
+PROGRAM_WORDS = [r"\bengine\b", r"\bserver\b", r"SymPy", r"[Cc]ompiled", r"singular", r"\b\d+(?:\.\d+)?e[+-]?\d+\b",
+                 r"q_exact", r"orbit\(s\)", r"time budget", r"Marked:", r"right-hand-side evaluations"]  # fmt: skip
+
+
+def read_by_a_student(text: str) -> str:
+    """All the page's words and formulas' text, the folded steps too ("Show all steps" only unfolds them)."""
+    return words(re.sub(r"<math\b.*?</math>", lambda m: re.sub(r"<[^>]+>", "", m.group(0)), text, flags=re.S))
+
+
+@pytest.mark.parametrize("scene", ALL)
+def test_no_program_words_in_what_a_student_reads(client, scene):
+    text = read_by_a_student(page(client, scene))
+    found = [(w, text[max(0, m.start() - 40) : m.end() + 20]) for w in PROGRAM_WORDS for m in re.finditer(w, text)]
+    assert found == []
+
+
+def test_the_browsers_sentences_say_no_program_words(client):
+    for module in ("simulation", "plots", "reduction", "action"):
+        source = client.get(f"/static/js/{module}.js").text
+        # the strings a page writes, without the comments about the code
+        said = re.sub(r"/\*.*?\*/|^\s*//.*$|\s//[^`\"']*$", "", source, flags=re.S | re.M)
+        for phrase in ("the engine", "server's more accurate", "server's run follows", "q_exact",
+                       "right-hand-side evaluations"):  # fmt: skip
+            assert phrase not in said, (module, phrase)
+
+
+START = {"theta": 1.0, "theta_dot": 0.0}
+
+
+def test_methods_and_tolerances_have_readable_labels_and_keep_the_apis_values(client):
+    text = page(client, "double-pendulum")
+    menu = re.search(r'<select id="ctl-method".*?</select>', text, flags=re.S)
+    assert menu is not None
+    options = dict(re.findall(r'<option value="([^"]+)"[^>]*>([^<]+)</option>', menu.group(0)))
+    assert options["Vern8"] == "Verner 8(7)" and options["Radau-compiled"] == "Radau IIA, implicit"
+    assert options["auto"] == "automatic choice" and "compiled" not in " ".join(options.values())
+    tolerances = re.search(r'<select id="ctl-rtol".*?</select>', text, flags=re.S)
+    assert tolerances is not None
+    assert '<option value="1e-8" selected>10⁻⁸</option>' in tolerances.group(0).replace("\n", "")
+    # the API still takes the names
+    run = client.post("/api/scenes/simple-pendulum/simulate", json={"initial": START, "method": "Radau-compiled", "rtol": 1e-6})
+    assert run.status_code == 200
+
+
+def test_autos_reason_is_one_sentence_without_nested_brackets(client):
+    stats = client.post("/api/scenes/simple-pendulum/simulate", json={"initial": START}).json()["stats"]
+    reason = stats["reason"]
+    assert "engine" not in reason and "compiled" not in reason and "among ours" not in reason
+    depth = deepest = 0
+    for c in reason:
+        depth += {"(": 1, ")": -1}.get(c, 0)
+        deepest = max(deepest, depth)
+    assert deepest <= 1, reason
+
+
+@pytest.mark.parametrize("scene", ["helix-bead", "incline-block", "tabletop-spring", "spherical-pendulum", "simple-pendulum"])
+def test_equilibria_are_one_step(client, scene):
+    titles = [t for t, _, _ in steps_of(page(client, scene))]
+    equilibria = [t for t in titles if t.startswith("Equilibria")]
+    assert equilibria == ["Equilibria"], titles
+    if scene in ("tabletop-spring", "spherical-pendulum"):
+        # with a momentum held, the reduction's rest points are steady motions, not equilibria
+        assert "Steady motions and small oscillations" in titles
+
+
+def test_one_coordinate_has_no_mode_shape_and_an_unstable_point_runs_away(client):
+    shown = steps_of(page(client, "simple-pendulum"))
+    modes = [(t, e, x) for t, e, x in shown if "about θ" in t]
+    assert [t for t, _, _ in modes] == ["Small oscillations about θ = 0", "No oscillation about θ = π"]
+    for _, _, tex in modes:
+        assert "shape" not in tex and r"\begin{matrix}" not in tex and "K =" not in tex
+    top = modes[1][2]
+    assert r"\text{(no oscillation: it runs away)}" in top and r"\text{rate } \sqrt{-\omega^2}" in top
+    # 3.132 s⁻¹ = √(9.81 m/s² / 1 m), four figures, labelled as the defaults' value
+    assert r"\approx 3.132\,\mathrm{s}^{-1}\quad \text{at the defaults}" in top
+    assert modes[0][1] != modes[1][1]
+    # numbers in a symbolic step say they are at the defaults
+    bottom = modes[0][2]
+    assert r"\approx 9.81\,\mathrm{s}^{-2}\quad \text{at the defaults}" in bottom
+
+
+def test_the_damped_exponents_are_defined_with_a_unit_and_four_figures(client):
+    shown = {t: x for t, _, x in steps_of(page(client, "damped-pendulum"))}
+    bottom = shown["Small motions about θ = 0"]
+    assert r"\eta \propto e^{s t},\quad s &= -0.15 \pm 3.128\,i\,\mathrm{s}^{-1}" in bottom
+    assert "3.1285" not in bottom
+    assert r"s &= -3.286,\; 2.986\,\mathrm{s}^{-1}" in shown["No oscillation about θ = π"]
+
+
+def test_a_steady_motion_heading_has_four_figures_and_a_unit(client):
+    titles = [t for t, _, _ in steps_of(page(client, "tabletop-spring"))]
+    assert "Small oscillations about the steady motion at r = 0.7071 m" in titles
+    titles = [t for t, _, _ in steps_of(page(client, "spherical-pendulum"))]
+    assert "Small oscillations about the steady motion at θ = 2.486 rad" in titles
+
+
+def test_the_coordinates_failing_at_a_pole_is_said_and_phi_is_not_listed_there(client):
+    shown = {t: x for t, _, x in steps_of(page(client, "spherical-pendulum"))}
+    eq = shown["Equilibria"]
+    assert r"\theta &= 0\quad (\text{the coordinates fail here: } \varphi \text{ has no value})" in eq
+    assert r"\varphi = 0" not in eq and "singular" not in eq
+    mass = {t: x for t, _, x in steps_of(page(client, "simple-pendulum"))}["Mass matrix and forcing"]
+    assert r"\begin{matrix}" not in mass and r"\left[" not in mass
+
+
+def test_a_further_example_is_headed_as_a_textbook_heads_it(client):
+    header = page(client, "double-pendulum").split('class="section-tag">')[1].split("<")[0]
+    assert header.startswith("Further example, extending section") and "our example" not in header
+
+
+def test_nothing_conserved_names_the_cause_that_applies(client):
+    damped = words(page(client, "damped-pendulum"))
+    assert "Nothing is conserved here: a non-conservative force acts, so h changes" in damped
+    assert " or L depends on time" not in damped
