@@ -172,7 +172,8 @@ PANELS: tuple[Panel, ...] = (
         "effective-potential",
         "Effective potential",
         "U_eff of the remaining coordinate with the run's energy level (dashed). The motion stays where U_eff lies "
-        "below the level, between the turning points (diamonds).",
+        "below the level, between the turning points (purple diamonds); the red dot is the current state, drawn "
+        "inside a diamond whenever the motion is at a turning point.",
         "a reduction to one coordinate",
         lambda f: f.reduction is not None,
         optional=True,
