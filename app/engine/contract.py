@@ -11,7 +11,7 @@ from app.engine.budget import Skipped, bounded, display_budget, display_work_lef
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import LARGE_FROM, Derivation
 from app.engine.errata import errata_json
-from app.engine.names import display_names
+from app.engine.names import MASS_MATRIX, display_names
 from app.engine.report import (
     Printer,
     build_steps,
@@ -116,12 +116,13 @@ def _equation_pairs(d: Derivation, pr: Printer) -> list[dict[str, Any]]:
 def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[str, Any]:
     """Each q_ddot in closed form, or none (with a note) when the engine kept it as M⁻¹f."""
     eqs = d.equations
+    MM = MASS_MATRIX[1]
     if eqs.closed_form:
         return {name: pr.pair(_shown(a)) for name, a in zip(d.table.names, eqs.accelerations, strict=True)}
     skipped.append(Skipped(
         "accelerations",
-        "The accelerations in closed form are left out: solving M q̈ = f symbolically gives expressions too long "
-        f"to read ({eqs.closed_form_reason}), so they stay M⁻¹f, with the mass matrix M and the forcing f shown, "
+        f"The accelerations in closed form are left out: solving {MM} q̈ = f symbolically gives expressions too long "
+        f"to read ({eqs.closed_form_reason}), so they stay {MM}⁻¹f, with the mass matrix {MM} and the forcing f shown, "
         "solved numerically.",
     ))  # fmt: skip
     return {}

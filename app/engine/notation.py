@@ -3,8 +3,7 @@
 A document's coordinates and parameters keep the names they were declared with.  The quantities the
 engine derives (the mass matrix, the stiffness matrix, a frequency of small oscillations) each have
 a list of letters a textbook uses for them; a document takes the first that no coordinate or
-parameter already has.  So the pulley and the wedge, whose body has mass M, write the mass matrix
-𝓜, and the rotating parabola, turning at the rate ω, writes its small-oscillation frequency Ω.
+parameter already has (the mass matrix is 𝓜 on every page, app/engine/names.MASS_MATRIX), so the rotating parabola, turning at the rate ω, writes its small-oscillation frequency Ω.
 
 Every step that prints one of these letters asks ``letter`` (LaTeX) or ``text`` (Unicode) for it,
 and ``table`` is the "Symbols" table the page shows and the API serves: each letter once, with what
@@ -22,13 +21,14 @@ import sympy as sp
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation
 from app.engine.dimensions import Dims, add_dims, dimension, system_dimensions, unit_text
-from app.engine.names import latex, unicode
+from app.engine.names import MASS_MATRIX, latex, unicode
 from app.engine.textbook import unicode_text
 from app.engine.transform import Transformed
 
 # concept -> (what it is, candidate letters as (LaTeX, Unicode), first free one used)
 DERIVED: dict[str, tuple[str, tuple[tuple[str, str], ...]]] = {
-    "mass_matrix": ("mass matrix (the Hessian of L in the velocities)", (("M", "M"), (r"\mathcal{M}", "𝓜"))),
+    # one letter on every page, whatever the parameters are called (app/engine/names.py)
+    "mass_matrix": ("mass matrix (the Hessian of L in the velocities)", (MASS_MATRIX,)),
     "stiffness": (
         "stiffness matrix (the Hessian of the potential at an equilibrium)",
         (("K", "K"), (r"\mathcal{K}", "𝒦")),

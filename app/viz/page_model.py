@@ -14,7 +14,7 @@ import re
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from app.engine.names import latex, prose
+from app.engine.names import MASS_MATRIX, latex, prose
 from app.engine.notation import printed
 from app.engine.report import CORE_STEPS
 from app.engine.trees import TreeError, maybe_of_text, of_text
@@ -99,7 +99,7 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         # none in closed form for a large system (listed in "skipped"): M⁻¹f
         "accelerations": [f"{ddot[c]} = {doc['accelerations'][c]['latex']}" for c in q]
         if doc["accelerations"]
-        else [rf"\ddot{{q}} = {letter_of(doc, 'mass matrix', 'M')}^{{-1}} f"],
+        else [rf"\ddot{{q}} = {letter_of(doc, 'mass matrix', MASS_MATRIX[0])}^{{-1}} f"],
         "momenta": [f"{latex('p_' + c)} = {doc['momenta'][c]['latex']}" for c in q],
         # members of the document left out within their own bounds, each with its reason (issue 35)
         "skipped": [s["reason"] for s in doc.get("skipped") or []],

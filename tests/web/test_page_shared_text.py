@@ -217,3 +217,15 @@ def test_nothing_conserved_names_the_cause_that_applies(client):
     damped = words(page(client, "damped-pendulum"))
     assert "Nothing is conserved here: a non-conservative force acts, so h changes" in damped
     assert " or L depends on time" not in damped
+
+
+@pytest.mark.parametrize("scene", ["rail-two-body", "pulley", "double-pendulum", "simple-pendulum"])
+def test_the_mass_matrix_has_one_letter_on_every_page(client, scene):
+    doc = client.get(f"/api/scenes/{scene}/derivation").json()
+    mass = next(r for r in doc["notation"] if r["meaning"].startswith("mass matrix"))
+    assert (mass["latex"], mass["unicode"]) == (r"\mathcal{M}", "𝓜")
+    shown = {t: x for t, _, x in steps_of(page(client, scene))}
+    assert shown["Mass matrix and forcing"].removeprefix(r"\begin{aligned}").startswith(r"\mathcal{M} &= ")
+    # the rail's errata may write M for the total mass: M is never the mass matrix
+    for erratum in doc["errata"]:
+        assert r"\mathcal{M}" not in erratum.get("correct_latex", "")
