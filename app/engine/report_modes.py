@@ -623,6 +623,11 @@ def _one_coordinate_step(
         rows.append(rf"{wt}^2 = 0")
         what = "No restoring force about"
         why = f"Linearised about {about}, nothing pulls a small displacement back: it drifts at constant speed."
+    if e.linear is not None and e.linear.definite < 0:
+        why += (
+            " The inertia is negative here (L = U − T, or a negative mass): the equations are the same as for −L, "
+            f"so {wu}² and the verdict are unchanged."
+        )
     if e.momenta:
         unit = coordinate_unit(d, name)
         at = f"{plain_name(name)} = {_figures(e.position[name])}" + (f" {unit}" if unit else "")
