@@ -263,7 +263,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
                 m.U,
                 # said only where it is true: a driven support puts t in U
                 "The potential energy depends on the positions and, explicitly, on the time t."
-                if m.U.has(d.table.t)
+                if sp.sympify(m.U).has(d.table.t)
                 else "The potential energy depends on positions only.",
             )
         )

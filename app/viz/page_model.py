@@ -462,7 +462,7 @@ def scene_page(
     angular = angles(doc)
     marks = ticks(doc, info.get("initial", {}))
     client = _client(doc, info, reduction, spec, methods, nonnegative, angular, scene)
-    model = {
+    model: dict[str, Any] = {
         "info": info,
         "declared_panels": declared,
         "panels": panels,
