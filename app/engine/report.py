@@ -341,7 +341,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             "Accelerations",
             [f"{qddn[k]} = {pr.tex(a)}" for k, a in enumerate(acc)],
             acc,
-            f"Solving {Mu} q̈ = f gives each acceleration explicitly, ready for numerical integration.",
+            f"Solving {Mu} q̈ = f gives each acceleration explicitly, as a function of the coordinates and velocities.",
         )
         if eqs.closed_form  # else M⁻¹f stays factored (app.engine.lagrange.CLOSED_FORM_MAX_NODES)
         else _step(
