@@ -591,7 +591,7 @@ def _one_coordinate_step(
         grows = any(s.real > 1e-12 for s in lin.exponents)
         what = "Small motions about"
         why = (
-            f"Linearised about {about}, a small displacement varies as e^(st), and the velocity term (the damping) "
+            f"Linearised about {about}, a small displacement varies as eˢᵗ, and the velocity term (the damping) "
             "enters the equation for s: the real part of s is a rate of growth or decay (1/s), its imaginary part "
             "an angular frequency. "
             + (
@@ -617,7 +617,7 @@ def _one_coordinate_step(
         what = "No oscillation about"
         why = (
             f"Linearised about {about}, the small displacement {eu} from it obeys {eu}̈ = |{wu}²| {eu}: it grows like "
-            f"e^(√(−{wu}²) t) instead of oscillating, so the equilibrium is unstable."
+            f"exp(√(−{wu}²) t) instead of oscillating, so the equilibrium is unstable."
         )
     else:
         rows.append(rf"{wt}^2 = 0")

@@ -229,3 +229,23 @@ def test_the_mass_matrix_has_one_letter_on_every_page(client, scene):
     # the rail's errata may write M for the total mass: M is never the mass matrix
     for erratum in doc["errata"]:
         assert r"\mathcal{M}" not in erratum.get("correct_latex", "")
+
+
+def test_the_potential_energys_sentence_is_true_of_a_driven_support_and_nothing_conserved_names_time(client):
+    from app.viz.page_model import nothing_conserved
+
+    driven = {
+        "coordinates": ["theta"],
+        "parameters": ["m", "g", "l", "a", "w"],
+        "kinetic": "m*(l**2*theta_dot**2 + a**2*w**2*sin(w*t)**2 - 2*a*w*l*sin(w*t)*sin(theta)*theta_dot)/2",
+        "potential": "m*g*(a*cos(w*t) - l*cos(theta))",
+    }
+    served = client.post("/api/derive", json=driven)
+    assert served.status_code == 200, served.text
+    doc = served.json()
+    potential = next(s for s in doc["steps"] if s["key"] == "potential")
+    assert "positions only" not in potential["explanation"] and "explicitly, on the time t" in potential["explanation"]
+    assert doc["conserved"] == []
+    assert nothing_conserved(doc) == (
+        "Nothing is conserved here: L depends explicitly on time, so h changes, and no momentum stays constant."
+    )
