@@ -11,7 +11,7 @@ from app.engine.budget import Skipped, bounded, display_budget, display_work_lef
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import LARGE_FROM, Derivation
 from app.engine.errata import errata_json
-from app.engine.names import display_names
+from app.engine.names import MASS_MATRIX, display_names
 from app.engine.report import (
     Printer,
     build_steps,
@@ -116,12 +116,13 @@ def _equation_pairs(d: Derivation, pr: Printer) -> list[dict[str, Any]]:
 def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[str, Any]:
     """Each q_ddot in closed form, or none (with a note) when the engine kept it as M⁻¹f."""
     eqs = d.equations
+    MM = MASS_MATRIX[1]
     if eqs.closed_form:
         return {name: pr.pair(_shown(a)) for name, a in zip(d.table.names, eqs.accelerations, strict=True)}
     skipped.append(Skipped(
         "accelerations",
-        "The accelerations in closed form are left out: solving M q̈ = f symbolically gives expressions too long "
-        f"to read ({eqs.closed_form_reason}), so they stay M⁻¹f, with the mass matrix M and the forcing f shown, "
+        f"The accelerations in closed form are left out: solving {MM} q̈ = f symbolically gives expressions too long "
+        f"to read ({eqs.closed_form_reason}), so they stay {MM}⁻¹f, with the mass matrix {MM} and the forcing f shown, "
         "solved numerically.",
     ))  # fmt: skip
     return {}
@@ -203,11 +204,48 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         add_beyond(d, scene, result, pr, skipped)
     if scene is not None:
         # a chapter scene explains each step in its own terms; the generic sentence stays otherwise
-        result["steps"] = [
-            {**s, "explanation": reason(scene.reasons, s["key"]) or s["explanation"]} for s in result["steps"]
-        ]
+        result["steps"] = explained(scene, result["steps"])
+    result["steps"] = one_equilibria_step(d, result["steps"])
     result["skipped"] = [{"member": s.member, "reason": s.reason} for s in skipped]
     return result
+
+
+def explained(scene: Scene, steps: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Each step with the scene's reason for it; a reason given for a kind of step (normal-modes, not
+    normal-modes:2) goes to the first of them only, so that no sentence is printed twice in a row."""
+    out, said = [], set()
+    for s in steps:
+        own = scene.reasons.get(s["key"])
+        text = own or reason(scene.reasons, s["key"])
+        if text and not own:
+            text = None if text in said else text
+        said.add(text)
+        out.append({**s, "explanation": text or s["explanation"]})
+    return out
+
+
+def one_equilibria_step(d: Derivation, steps: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """The equilibria said once. With one coordinate and no momentum held, U_eff is U and the reduction's
+    equilibria are the system's: its step is left out where the "Equilibria" step (with the small oscillations
+    about each after it) is printed, and what it said beyond that step (which is stable) joins it. With momenta
+    held, the reduction's rest points are steady motions, and its step is titled so."""
+    red = d.reduction
+    keys = [s["key"] for s in steps]
+    if red is None or "reduced-equilibria" not in keys:
+        return steps
+    i = keys.index("reduced-equilibria")
+    if red.momenta:
+        return [*steps[:i], {**steps[i], "title": "Steady motions and small oscillations"}, *steps[i + 1 :]]
+    if "equilibria" not in keys or steps[keys.index("equilibria")]["latex"] == r"\text{not computed}":
+        return steps
+    reduced = steps[i]
+    out = []
+    for s in steps:
+        if s["key"] == "equilibria" and red.equilibria and reduced["explanation"] not in s["explanation"]:
+            s = {**s, "explanation": f"{s['explanation']} {reduced['explanation']}"}
+        if s is not reduced:
+            out.append(s)
+    return out
 
 
 def _transformed(d: Derivation, skipped: list[Skipped]) -> tuple[Transformed, dict[str, Any]] | None:

@@ -21,6 +21,7 @@ from app.engine.budget import Skipped, bounded
 from app.engine.conservation import Energetics, energetics
 from app.engine.lagrange import Equations, euler_lagrange
 from app.engine.mechanics import Mechanics, build_mechanics
+from app.engine.names import MASS_MATRIX
 from app.engine.reduction import Reduction, reduce_to_one
 from app.engine.symbols import SymbolTable
 from app.limits import MEMBER_RESERVE_WORK, MEMBER_WORK, REDUCTION_WORK
@@ -106,7 +107,7 @@ class Derivation:
         from app.engine.hamilton import hamilton
 
         if not self.equations.closed_form and not self.equations.mass_matrix.is_diagonal():
-            return Skipped("hamilton", "Hamilton's equations are left out: q̇ = M⁻¹(p − b) has no closed form "
+            return Skipped("hamilton", f"Hamilton's equations are left out: q̇ = {MASS_MATRIX[1]}⁻¹(p − b) has no closed form "
                            "short enough to read for this many coordinates (as with the accelerations).")  # fmt: skip
         return self._member("hamilton", "hamilton", "Hamilton's equations", lambda: hamilton(self))
 

@@ -257,7 +257,7 @@ RULES: tuple[Rule, ...] = (
     Rule(
         "h_is_l",
         ("hamiltonian",),
-        "That is L. The Hamiltonian is h = Σ p q̇ − L; for T quadratic in the velocities it comes to T + U, not T − U.",
+        "That is L. The energy function is h = Σ p q̇ − L; for T quadratic in the velocities it comes to T + U, not T − U.",
         _h_as_l,
         "h written as L",
     ),

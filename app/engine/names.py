@@ -28,6 +28,9 @@ _TRAILING_DIGITS = re.compile(r"([A-Za-z]+?)(\d+)")
 HAT = "\u0302"
 # accents written as a suffix of the name: a velocity's dots, and a unit vector's hat (r_hat -> r̂)
 _DOTS = (("_ddot", "ddot", DDOT), ("_dot", "dot", DOT), ("_hat", "hat", HAT))
+# The mass matrix is 𝓜 (a calligraphic M) on every page: a body's mass is often M (the pulley's, the wedge's, a total
+# mass in an erratum), and one letter means one quantity throughout the book
+MASS_MATRIX = (r"\mathcal{M}", "𝓜")  # (LaTeX, Unicode)
 # LaTeX's \phi is the closed ϕ; the φ of running text (U+03C6) is LaTeX's \varphi: one glyph on a page
 _TEX_GREEK = {"phi": "varphi"}
 

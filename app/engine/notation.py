@@ -3,8 +3,7 @@
 A document's coordinates and parameters keep the names they were declared with.  The quantities the
 engine derives (the mass matrix, the stiffness matrix, a frequency of small oscillations) each have
 a list of letters a textbook uses for them; a document takes the first that no coordinate or
-parameter already has.  So the pulley and the wedge, whose body has mass M, write the mass matrix
-𝓜, and the rotating parabola, turning at the rate ω, writes its small-oscillation frequency Ω.
+parameter already has (the mass matrix is 𝓜 on every page, app/engine/names.MASS_MATRIX), so the rotating parabola, turning at the rate ω, writes its small-oscillation frequency Ω.
 
 Every step that prints one of these letters asks ``letter`` (LaTeX) or ``text`` (Unicode) for it,
 and ``table`` is the "Symbols" table the page shows and the API serves: each letter once, with what
@@ -13,6 +12,7 @@ it means.
 
 from __future__ import annotations
 
+import re
 from fractions import Fraction
 from typing import Any
 
@@ -21,13 +21,14 @@ import sympy as sp
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation
 from app.engine.dimensions import Dims, add_dims, dimension, system_dimensions, unit_text
-from app.engine.names import latex, unicode
+from app.engine.names import MASS_MATRIX, latex, unicode
 from app.engine.textbook import unicode_text
 from app.engine.transform import Transformed
 
 # concept -> (what it is, candidate letters as (LaTeX, Unicode), first free one used)
 DERIVED: dict[str, tuple[str, tuple[tuple[str, str], ...]]] = {
-    "mass_matrix": ("mass matrix (the Hessian of L in the velocities)", (("M", "M"), (r"\mathcal{M}", "𝓜"))),
+    # one letter on every page, whatever the parameters are called (app/engine/names.py)
+    "mass_matrix": ("mass matrix (the Hessian of L in the velocities)", (MASS_MATRIX,)),
     "stiffness": (
         "stiffness matrix (the Hessian of the potential at an equilibrium)",
         (("K", "K"), (r"\mathcal{K}", "𝒦")),
@@ -258,3 +259,66 @@ def _cartesian(d: Derivation, forces: tuple[ConstraintForce, ...]) -> list[dict[
         whose = f"the {body.label or 'body ' + (number or '1')}" if body is not None else "the body"
         rows.append(_row(latex(name), unicode(name), f"Cartesian {axis} of {whose}", "m", "derived"))
     return rows
+
+
+# ---- which rows a page prints: a letter is listed only where the page prints it ----------------------------
+
+# a LaTeX token: a styled letter (\mathcal{C}, \text{eff}) whole, a command, or one character; braces dropped
+_TEX_TOKEN = re.compile(
+    r"\\(?:text|mathrm|mathcal|mathbf|mathit|operatorname|begin|end)\s*\{[^{}]*\}|\\[A-Za-z]+|\\.|[^\s{}]"
+)
+# letters that are also English words: in prose they count only beside a sign of mathematics (x₁ = A cos …)
+_WORDS = {"a", "A", "I"}
+_MATH_SIGN = "=+−·×/²³"
+# what may not touch a letter in prose for it to be that letter (θ̇ is not θ, x₁ is not x, p_θ is not θ)
+_JOINED = re.compile(r"[\w\u0300-\u036fⁱ⁰-⁹'′]")
+
+
+def _tex_tokens(tex: str) -> list[str]:
+    return [re.sub(r"\s+", "", t) for t in _TEX_TOKEN.findall(tex)]
+
+
+def _in_tex(symbol: list[str], tokens: list[str]) -> bool:
+    """``symbol``'s tokens occur in ``tokens`` as a letter of its own: not a subscript of another letter (p_x),
+    not the stem of a subscripted one (x_1 is not x)."""
+    n = len(symbol)
+    for i in range(len(tokens) - n + 1):
+        if tokens[i : i + n] != symbol:
+            continue
+        before = tokens[i - 1] if i else ""
+        after = tokens[i + n] if i + n < len(tokens) else ""
+        # a numbered one counts (𝒞₁ is a 𝒞, F₂ an F); another subscript makes another letter
+        numbered = after == "_" and i + n + 1 < len(tokens) and tokens[i + n + 1].isdigit()
+        if before not in ("_", "^") and (after != "_" or numbered or "_" in symbol):
+            return True
+    return False
+
+
+def _in_prose(symbol: str, text: str) -> bool:
+    """``symbol`` (Unicode) occurs in running text as a letter of its own; an English word only as mathematics."""
+    for m in re.finditer(re.escape(symbol), text):
+        before, after = text[max(0, m.start() - 40) : m.start()], text[m.end() : m.end() + 40]
+        # a numbered one counts (𝒞₁ is a 𝒞)
+        if (before and _JOINED.match(before[-1])) or (after and _JOINED.match(after.lstrip("₀₁₂₃₄₅₆₇₈₉")[:1] or " ")):
+            continue
+        # a letter inside LaTeX's markup (\alpha, \mathcal{M}) is not that letter
+        if before.endswith("\\") or re.search(r"\\[A-Za-z]+\{$", before):
+            continue
+        if symbol in _WORDS:
+            near = before.rstrip()[-1:] + after.lstrip()[:1]
+            if not any(c in _MATH_SIGN for c in near):
+                continue
+        return True
+    return False
+
+
+def printed(rows: list[dict[str, Any]], formulas: list[str], words: list[str]) -> list[dict[str, Any]]:
+    """The rows of a Symbols table whose letter the page prints somewhere: in its ``formulas`` (LaTeX) or its
+    ``words`` (running text, captions, figures' labels), in their order. A table never explains a letter the
+    reader cannot find on the page."""
+    tokens = [_tex_tokens(t) for t in formulas]
+    return [
+        r
+        for r in rows
+        if any(_in_tex(_tex_tokens(r["latex"]), ts) for ts in tokens) or any(_in_prose(r["unicode"], t) for t in words)
+    ]

@@ -261,7 +261,10 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
                 "Potential energy",
                 [f"U = {pr.tex(m.U)}"],
                 m.U,
-                "The potential energy depends on positions only.",
+                # said only where it is true: a driven support puts t in U
+                "The potential energy depends on the positions and, explicitly, on the time t."
+                if sp.sympify(m.U).has(d.table.t)
+                else "The potential energy depends on positions only.",
             )
         )
     steps.append(
@@ -322,9 +325,13 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         _step(
             "mass-matrix",
             "Mass matrix and forcing",
-            [rf"{Mt} = {pr.tex(eqs.mass_matrix.applyfunc(pr.form))}", rf"f = {pr.tex(eqs.forcing.applyfunc(pr.form))}"],
+            # one coordinate: a number and a function, never a 1×1 matrix in brackets
+            [rf"{Mt} = {pr.tex(pr.form(eqs.mass_matrix[0, 0]))}", rf"f = {pr.tex(pr.form(eqs.forcing[0]))}"]
+            if len(table.q) == 1
+            else [rf"{Mt} = {pr.tex(eqs.mass_matrix.applyfunc(pr.form))}", rf"f = {pr.tex(eqs.forcing.applyfunc(pr.form))}"],
             [eqs.mass_matrix.tolist(), [display(x) for x in eqs.forcing]],
-            f"The equations are linear in the accelerations, {Mu} q̈ = f, with {Mu} the Hessian of L in the velocities.",
+            f"The equations are linear in the accelerations: {Mu} q̈ = f, with {Mu} the mass matrix (the Hessian of L in "
+            "the velocities) and f the rest of each equation (the forces and the velocity terms) taken to the right.",
         )
     )
     acc = [display(a) for a in eqs.accelerations] if eqs.closed_form else []
@@ -334,7 +341,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             "Accelerations",
             [f"{qddn[k]} = {pr.tex(a)}" for k, a in enumerate(acc)],
             acc,
-            f"Solving {Mu} q̈ = f gives each acceleration explicitly, ready for numerical integration.",
+            f"Solving {Mu} q̈ = f gives each acceleration explicitly, as a function of the coordinates and velocities.",
         )
         if eqs.closed_form  # else M⁻¹f stays factored (app.engine.lagrange.CLOSED_FORM_MAX_NODES)
         else _step(
@@ -376,17 +383,18 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             "Explicit time dependence",
             [rf"\frac{{\partial L}}{{\partial t}} = {pr.tex(display(en.dL_dt))}"],
             display(en.dL_dt),
-            "If L does not contain t explicitly, the Hamiltonian is conserved (absent non-conservative forces).",
+            "If L does not contain t explicitly and no non-conservative force acts, the energy function h is conserved.",
         )
     )
     h_form, e_form = energies(d, pr)
     steps.append(
         _step(
             "hamiltonian",
-            "Hamiltonian",
+            "Energy function h",
             [rf"h = \sum_k p_k \dot{{q}}_k - L = {pr.tex(h_form)}"],
             h_form,
-            "The Hamiltonian is the sum of momenta times velocities minus the Lagrangian.",
+            "The energy function h is the sum of momenta times velocities minus the Lagrangian, written in the "
+            "velocities (the Hamiltonian H is the same quantity written in the momenta).",
         )
     )
     if m.T is not None:

@@ -15,6 +15,7 @@ import sympy as sp
 from app.engine import notation
 from app.engine.budget import memoized, pythagoras
 from app.engine.derive import Derivation
+from app.engine.dimensions import system_dimensions, unit_text
 from app.engine.hamilton import Hamilton
 from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode, NormalModes
 from app.engine.report import Printer, _step, display, plain_name
@@ -113,6 +114,11 @@ def _number(x: float) -> str:
 def _figures(x: float) -> str:
     """A mode's number as a textbook prints a measured-looking value: four significant figures."""
     return f"{x:.4g}"
+
+
+# a number beside a closed form is the value at the scene's default parameters, and says so
+AT_DEFAULTS = r"\quad \text{at the defaults}"
+PER_SECOND_SQUARED = r"\,\mathrm{s}^{-2}"
 
 
 # the longest exact shape component printed (SymPy's operation count); a longer one is shown as its number
@@ -231,6 +237,32 @@ def _points(
     return rows
 
 
+def _singular_points(nm: NormalModes, d: Derivation, pr: Printer) -> list[str]:
+    """Equilibria where the coordinates fail (the mass matrix is singular: the pole of a sphere, r = 0): each
+    with the coordinates that have a value there, and the ones that have none named (φ at the pole)."""
+    sym = {s.name: s for s in d.table.q}
+    defaults = {s: sp.Float(p.default) for s, p in zip(d.table.params, d.system.parameters, strict=True)}
+    M = d.equations.mass_matrix
+    rows = []
+    for i, point in enumerate(nm.singular):
+        known = (nm.singular_exact[i] or {}) if i < len(nm.singular_exact) else {}
+        at = {sym[n]: known.get(n, sp.Float(v)) for n, v in point.items()}
+        # a coordinate whose own inertia vanishes here (m r² θ̇² at r = 0) has no value at this point
+        lost = [
+            n for k, n in enumerate(d.table.names)
+            if abs(complex(sp.N(M[k, k].xreplace(at).xreplace(defaults)))) < 1e-12
+        ]  # fmt: skip
+        shown = [n for n in point if n not in lost] or list(point)
+        where = r",\; ".join(f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(point[n])}" for n in shown)
+        if lost:
+            names = r",\ ".join(pr.tex(sym[n]) for n in lost)
+            where += rf"\quad (\text{{the coordinates fail here: }} {names} \text{{ has no value}})"
+        else:
+            where += r"\quad (\text{the coordinates fail here})"
+        rows.append(where)
+    return rows
+
+
 def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
     """How the list was found, and how far it can be trusted (never "exactly" unless provably complete)."""
     if nm.solved:
@@ -301,9 +333,7 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         listed.append(r"\text{no equilibrium}")
     rows += listed
     sym = {s.name: s for s in table.q}
-    rows += _points(
-        nm.singular, sym, pr, rf"\quad ({notation.letter('mass_matrix', d)} \text{{ singular}})", nm.singular_exact
-    )
+    rows += _singular_points(nm, d, pr)
     rows += _points(nm.kinks, sym, pr, r"\quad (\text{at a kink of } V)")
     rows += _points(nm.unclassified, sym, pr, r"\quad (\text{coefficients change with } t)")
     why = "At rest (q̇ = 0) the state stays put where the Euler–Lagrange equations give q̈ = 0. "
@@ -332,8 +362,8 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         why += f" {nm.found} were found; the first {MAX_EQUILIBRIA} are shown."
     if nm.singular:
         why += (
-            f" At {len(nm.singular)} of them the mass matrix is singular (the coordinates break down there, like "
-            "polar coordinates at the origin), so no modes are computed at those points."
+            f" At {len(nm.singular)} of them the coordinates themselves fail, as polar coordinates do at the origin: "
+            "a coordinate there has no value, and no small oscillations are worked out about those points."
         )
     if nm.kinks:
         why += (
@@ -408,16 +438,18 @@ def _beats_step(e: Equilibrium, pr: Printer, d: Derivation, number: int) -> dict
     )
 
 
-def _exponents(e: Equilibrium) -> str:
+def _exponents(e: Equilibrium, d: Derivation) -> str:
+    """The exponents s of e^{st} (in 1/s, four figures at the default parameters), each complex pair once."""
     lin = e.linear
     assert lin is not None
     shown = []
     for s in lin.exponents:
         if s.imag < -1e-12 * max(1.0, abs(s)):
             continue  # each pair once
-        re = _number(s.real) if abs(s.real) > 1e-9 * max(1.0, abs(s)) else "0"
-        shown.append(re + (rf" \pm {_number(s.imag)}\,i" if s.imag > 1e-12 * max(1.0, abs(s)) else ""))
-    return r"s = " + r",\; ".join(shown)
+        re = _figures(s.real) if abs(s.real) > 1e-9 * max(1.0, abs(s)) else "0"
+        shown.append(re + (rf" \pm {_figures(s.imag)}\,i" if s.imag > 1e-12 * max(1.0, abs(s)) else ""))
+    eta = notation.letter("displacement", d)
+    return rf"{eta} \propto e^{{s t}},\quad s = " + r",\; ".join(shown) + r"\,\mathrm{s}^{-1}" + AT_DEFAULTS
 
 
 def _verdict(e: Equilibrium, d: Derivation) -> str:
@@ -472,6 +504,8 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, n
             f"{plain_name(n)} = {unicode_text(e.exact[n]) if e.exact and n in e.exact else _number(v)}"
             for n, v in e.position.items()
         )
+    if len(e.coordinates) == 1 and len(e.modes) == 1:
+        return _one_coordinate_step(e, pr, d, number, where, about)
     Mt, Kt, wt = (notation.letter(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
     Mu, Ku, wu = (notation.text(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
     eu, au = (notation.text(c, d) for c in ("displacement", "amplitude"))
@@ -492,7 +526,7 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, n
         rows.append(rf"{wt}_{{{i}}}^2 = {value},\quad \text{{shape }} ({shape})")
     moving = e.linear is not None and e.linear.moving
     if moving:
-        rows.append(_exponents(e))
+        rows.append(_exponents(e, d))
     if e.momenta:
         key = f"steady-motion:{number}"
         title = f"Small oscillations about the steady motion at {plain_name(e.coordinates[0])} = {_number(e.position[e.coordinates[0]])}"
@@ -521,6 +555,98 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, n
     return _step(
         key, title, [where, *rows], [e.mass.tolist(), e.stiffness.tolist(), [m.omega_squared for m in e.modes]], why
     )
+
+
+def _closed(exact: sp.Expr | None, number: float, unit: str, pr: Printer) -> str:
+    """A closed form with its value at the default parameters beside it (said so), or the number alone."""
+    if exact is not None and not exact.is_number:
+        return rf"{pr.tex(exact)} \approx {_figures(number)}{unit}{AT_DEFAULTS}"
+    return (pr.tex(exact) if exact is not None else _figures(number)) + unit
+
+
+def coordinate_unit(d: Derivation, name: str) -> str:
+    """A coordinate's unit as a heading prints it: rad for an angle, m for a length, none when unknown."""
+    q = next(s for s in d.table.q if s.name == name)
+    dims = system_dimensions(d).get(q)
+    if dims is None:
+        return ""
+    return "rad" if not dims else unit_text(dims)
+
+
+def _one_coordinate_step(
+    e: Equilibrium, pr: Printer, d: Derivation, number: int, where: str, about: str
+) -> dict[str, str]:
+    """About an equilibrium (or a steady motion) of one coordinate: ω², or the rate at which a displacement runs
+    away, or the exponents where velocity terms act. One coordinate has no shape and no matrices to print."""
+    wt, wu, eu = notation.letter("frequency", d), notation.text("frequency", d), notation.text("displacement", d)
+    mode = e.modes[0]
+    w2 = mode.omega_squared
+    name = e.coordinates[0]
+    moving = e.linear is not None and e.linear.moving
+    rows = [where]
+    if moving:
+        rows.append(_exponents(e, d))
+        lin = e.linear
+        assert lin is not None
+        grows = any(s.real > 1e-12 for s in lin.exponents)
+        what = "Small motions about"
+        why = (
+            f"Linearised about {about}, a small displacement varies as eˢᵗ, and the velocity term (the damping) "
+            "enters the equation for s: the real part of s is a rate of growth or decay (1/s), its imaginary part "
+            "an angular frequency. "
+            + (
+                "One s is positive: a small displacement runs away, an unstable equilibrium."
+                if grows
+                else "Every s has a negative real part: a small motion dies away, an asymptotically stable equilibrium."
+            )
+        )
+        if grows:
+            what = "No oscillation about"
+    elif w2 > 0:
+        rows.append(f"{wt}^2 = " + _closed(mode.exact, w2, PER_SECOND_SQUARED, pr))
+        what = "Small oscillations about"
+        why = (
+            f"Linearised about {about}, the small displacement {eu} from it obeys {eu}̈ + {wu}² {eu} = 0: it "
+            f"oscillates at the angular frequency {wu}, a stable equilibrium."
+        )
+    elif w2 < 0:
+        rate = sp.sqrt(-mode.exact) if mode.exact is not None else None
+        shown = pr.tex(mode.exact) if mode.exact is not None else _figures(w2) + PER_SECOND_SQUARED
+        rows.append(rf"{wt}^2 = {shown} < 0\quad \text{{(no oscillation: it runs away)}}")
+        rows.append(r"\text{rate } \sqrt{-" + wt + "^2} = " + _closed(rate, math.sqrt(-w2), r"\,\mathrm{s}^{-1}", pr))
+        what = "No oscillation about"
+        why = (
+            f"Linearised about {about}, the small displacement {eu} from it obeys {eu}̈ = |{wu}²| {eu}: it grows like "
+            f"exp(√(−{wu}²) t) instead of oscillating, so the equilibrium is unstable."
+        )
+    else:
+        rows.append(rf"{wt}^2 = 0")
+        what = "No restoring force about"
+        why = f"Linearised about {about}, nothing pulls a small displacement back: it drifts at constant speed."
+    if e.linear is not None and e.linear.definite < 0:
+        why += (
+            " The inertia is negative here (L = U − T, or a negative mass): the equations are the same as for −L, "
+            f"so {wu}² and the verdict are unchanged."
+        )
+    if e.momenta:
+        unit = coordinate_unit(d, name)
+        at = f"{plain_name(name)} = {_figures(e.position[name])}" + (f" {unit}" if unit else "")
+        title = f"Small oscillations about the steady motion at {at}"
+        why = (
+            "With the conserved momenta held at the values shown, the reduced coordinate sits at a minimum or maximum "
+            f"of U_eff: the body moves steadily (a circular or conical orbit), and {wu}² = U_eff″/m_eff"
+            + (
+                " is positive: a small displacement oscillates about it, a stable steady motion."
+                if w2 > 0
+                else " is negative: a small displacement runs away, an unstable steady motion."
+                if w2 < 0
+                else "."
+            )
+        )
+        key = f"steady-motion:{number}"
+    else:
+        title, key = f"{what} {about}", f"normal-modes:{number}"
+    return _step(key, title, rows, [e.mass.tolist(), e.stiffness.tolist(), [w2]], why)
 
 
 def normal_modes_json(nm: NormalModes, pr: Printer) -> list[dict[str, Any]]:

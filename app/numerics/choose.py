@@ -181,15 +181,15 @@ def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
             f"{a.spectral_radius / a.slow_rate:.2g} times the slow rate; its mode is excited (amplitude "
             f"{a.fast_amplitude:.2g} of the tolerance), but resolving it would take an explicit method about "
             f"{a.characteristic_times * 2 * math.pi / EXPLICIT_STABILITY:.2g} "
-            "steps, far beyond the budget, so the implicit Radau IIA method (order 5, compiled, with the engine's exact "
-            "Jacobian) follows the slow motion and damps that fast swing"
+            "steps, far too many, so the implicit Radau IIA method of order 5, with the exact Jacobian of the equations, "
+            "follows the slow motion and damps that fast swing"
         )
     if a.stiff:
         return STIFF, (
             f"stiff: the fastest rate at the start, |λ| = {a.spectral_radius:.3g}/s, is "
             f"{a.spectral_radius / a.slow_rate:.2g} times the slow rate and its mode is not excited "
-            f"(amplitude {a.fast_amplitude:.2g} of the tolerance), so the implicit Radau IIA method (order 5, compiled, "
-            "with the engine's exact Jacobian) steps over it"
+            f"(amplitude {a.fast_amplitude:.2g} of the tolerance), so the implicit Radau IIA method of order 5, with the "
+            "exact Jacobian of the equations, steps over it"
         )
     # symplectic methods step at a fixed size: only where no fast mode (excited, since not stiff) would force
     # that size down over the whole run -- a chain with masses 1e-9 and 1e9 took Yoshida-4 past its step limit
@@ -207,13 +207,13 @@ def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
         else:
             what = f"long run (about {a.characteristic_times:.3g} characteristic times)"
         return name, (
-            f"{what}, and the engine says {system.energy_name} is conserved: a symplectic method keeps the energy error "
+            f"{what}, and {system.energy_name} is conserved: a symplectic method keeps the energy error "
             f"bounded instead of letting it drift; {why}"
         )
     excited = ""
     if a.spectral_radius > STIFF_RATIO * a.slow_rate:
-        excited = f" (the fast mode, |λ| = {a.spectral_radius:.3g}/s, is excited, so it must be resolved)"
+        excited = f", though its fast mode at |λ| = {a.spectral_radius:.3g}/s is excited and must be followed"
     return NONSTIFF, (
-        f"non-stiff{excited}: Verner's explicit 8(7) pair with a compiled step loop (the fewest evaluations per "
-        "digit among ours here), which watches for stiffness on the way (and hands over to the implicit Radau IIA if it appears)"
+        f"non-stiff{excited}: Verner's explicit 8(7) method, which needs the fewest evaluations for a given accuracy "
+        "here and hands the run to the implicit Radau IIA method if the equations turn stiff"
     )

@@ -19,7 +19,7 @@ ABOUT = (
     "The chapter is a set of lecture notes on Lagrangian mechanics (sections 4.1 to 4.9): generalized "
     "coordinates and constraints, the Euler–Lagrange equations from Hamilton's principle, generalized momenta "
     "and cyclic coordinates, systems of particles, and the Hamiltonian against the energy, each taught "
-    "through worked examples. Every scene here is one of those examples, derived again by the engine."
+    "through worked examples. Every scene here is one of those examples, derived again step by step from its Lagrangian."
 )
 
 

@@ -14,11 +14,13 @@ import re
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from app.engine.names import latex, prose
+from app.engine.names import MASS_MATRIX, latex, prose
+from app.engine.notation import printed
 from app.engine.report import CORE_STEPS
 from app.engine.trees import TreeError, maybe_of_text, of_text
 from app.limits import DEFAULT_T_END
 from app.numerics import limits
+from app.numerics.methods import LABELS
 from app.viz.control_ranges import ticks, useful_range
 from app.viz.diagrams import diagram
 from app.viz.exprtree import document_tree, leaves
@@ -31,6 +33,12 @@ LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collaps
 SLIDER_STEPS = 1000  # positions of a control's slider (the page's range inputs; static/js/controls.js reads them)
 # the page's menu of tolerances, written as powers of ten (1e-8)
 RTOLS = tuple(f"1e{round(math.log10(r))}" for r in limits.RTOL_MENU)
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def power_of_ten(value: str) -> str:
+    """A tolerance as a reader writes it: 1e-8 → 10⁻⁸ (the menu's value stays 1e-8)."""
+    return "10" + value.partition("e")[2].translate(_SUPERSCRIPT)
 DEFAULT_RTOL = f"1e{round(math.log10(limits.RTOL_DEFAULT))}"
 
 
@@ -67,6 +75,18 @@ def letter_of(doc: dict[str, Any], meaning: str, default: str, form: str = "late
     )
 
 
+def nothing_conserved(doc: dict[str, Any]) -> str:
+    """Why nothing is conserved, naming the cause that applies: a non-conservative force, an explicit t in L."""
+    forced = bool(doc.get("generalized_forces"))
+    timed = (doc.get("explicit_time_derivative") or {}).get("sympy", "0") != "0"
+    cause = {
+        (True, True): "a non-conservative force acts and L depends explicitly on time, so h changes",
+        (True, False): "a non-conservative force acts, so h changes",
+        (False, True): "L depends explicitly on time, so h changes",
+    }.get((forced, timed))
+    return f"Nothing is conserved here: {cause}, and no momentum stays constant." if cause else "Nothing is conserved here."
+
+
 def _summary(doc: dict[str, Any]) -> dict[str, Any]:
     q = doc["coordinates"]
     conserved = [
@@ -79,7 +99,7 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         # none in closed form for a large system (listed in "skipped"): M⁻¹f
         "accelerations": [f"{ddot[c]} = {doc['accelerations'][c]['latex']}" for c in q]
         if doc["accelerations"]
-        else [rf"\ddot{{q}} = {letter_of(doc, 'mass matrix', 'M')}^{{-1}} f"],
+        else [rf"\ddot{{q}} = {letter_of(doc, 'mass matrix', MASS_MATRIX[0])}^{{-1}} f"],
         "momenta": [f"{latex('p_' + c)} = {doc['momenta'][c]['latex']}" for c in q],
         # members of the document left out within their own bounds, each with its reason (issue 35)
         "skipped": [s["reason"] for s in doc.get("skipped") or []],
@@ -102,6 +122,7 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         "constraint_forces": doc.get("constraint_forces") or [],
         # every letter of the page once, with what it stands for
         "symbols": doc.get("notation") or [],
+        "nothing_conserved": nothing_conserved(doc),
     }
 
 
@@ -229,7 +250,7 @@ def _marks(found: Sequence[dict[str, Any]], unit: str) -> list[dict[str, Any]]:
         value = m["value"]
         twin = any(o is not m and o["label"] == m["label"] and math.isclose(o["value"], -value) for o in found)
         size = f"±{abs(value):.4g}" if twin else f"{value:.4g}".replace("-", "−")
-        text = "" if twin and value < 0 else f"{m['label']}: {size} {unit}".strip()
+        text = "" if twin and value < 0 else f"{size} {unit} ({m['label']})".replace("  ", " ")
         out.append({"value": _fmt(value), "label": m["label"], "text": text})
     return out
 
@@ -351,6 +372,7 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bo
             for e in info.get("events", [])
         ],
         "methods": list(methods),
+        "method_labels": {m: LABELS.get(m, m) for m in (*methods, *LABELS)},
         # equilibria at rest with an oscillating mode (numbers at the default parameters), for the modes panel
         "normal_modes": oscillating_equilibria(doc),
     }
@@ -375,6 +397,38 @@ def moves_in_3d(particles: Sequence[tuple[str, Sequence[str]]], coordinates: Seq
             return False
 
     return all(any(moves(pos[i]) for _, pos in particles) for i in range(3))
+
+
+# the summary's members that are lists of LaTeX (elsewhere a "latex" or "…_latex" key marks it)
+_SUMMARY_LATEX = ("equations", "accelerations", "momenta", "hamiltonian", "energy_minus_h")
+
+
+def _strings(value: Any, tex: bool = False) -> list[tuple[bool, str]]:
+    """Every string in a piece of the page model, each with whether it is LaTeX (else running text or a figure)."""
+    if isinstance(value, str):
+        return [(tex, value)]
+    if isinstance(value, Mapping):
+        return [s for k, v in value.items() for s in _strings(v, tex or k == "latex" or str(k).endswith("_latex"))]
+    if isinstance(value, (list, tuple)):
+        return [s for v in value for s in _strings(v, tex)]
+    return []
+
+
+def page_symbols(model: dict[str, Any]) -> list[dict[str, Any]]:
+    """The Symbols table of a page: the document's letters that the page prints somewhere else, in its statement,
+    steps, results, shown panels, figures or controls (app/engine/notation.printed)."""
+    shown = {k: v for k, v in model.items() if k not in ("client_json", "summary", "panel_text")}
+    summary = {k: v for k, v in model["summary"].items() if k not in ("symbols", *_SUMMARY_LATEX)}
+    red = summary.get("effective_potential")
+    if red:
+        # its letters print only beside an equilibrium ("Equilibrium at r = … with ω² = …")
+        summary["effective_potential"] = {**red, "frequency_latex": red["frequency_latex"] if red["equilibria"] else ""}
+    panels = [model["panel_text"].get(name, {}) for name in model["panels"]]
+    listed = [model["summary"].get(k) for k in _SUMMARY_LATEX]
+    found = [*_strings([shown, summary, panels]), *_strings(listed, True)]
+    # a figure's words without its markup (an SVG's <text x="…"> is not the letter x)
+    words = [re.sub(r"<[^>]*>", " ", s) for tex, s in found if not tex]
+    return printed(model["summary"]["symbols"], [s for tex, s in found if tex], words)
 
 
 def scene_page(
@@ -408,7 +462,7 @@ def scene_page(
     angular = angles(doc)
     marks = ticks(doc, info.get("initial", {}))
     client = _client(doc, info, reduction, spec, methods, nonnegative, angular, scene)
-    return {
+    model: dict[str, Any] = {
         "info": info,
         "declared_panels": declared,
         "panels": panels,
@@ -447,8 +501,10 @@ def scene_page(
             "min": "0.5",
             "max": _fmt(max(60.0, 10 * info.get("t_end", DEFAULT_T_END))),
         },
-        "methods": list(methods),
-        "rtols": RTOLS,
+        "methods": [{"value": m, "label": LABELS.get(m, m)} for m in methods],
+        "rtols": [{"value": r, "label": power_of_ten(r)} for r in RTOLS],
         "default_rtol": DEFAULT_RTOL,
         "client_json": json.dumps(client, separators=(",", ":")).replace("<", "\\u003c"),
     }
+    model["summary"]["symbols"] = page_symbols(model)
+    return model

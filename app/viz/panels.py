@@ -161,7 +161,7 @@ PANELS: tuple[Panel, ...] = (
         "phase",
         "Phase portrait",
         "A coordinate against its rate of change: the blue curve is this run and the red dot the current state. "
-        "With one degree of freedom (or a reduction to one) the grey curves are level sets of the Hamiltonian, "
+        "With one degree of freedom (or a reduction to one) the grey curves are level sets of the energy function h, "
         "each a possible orbit; green dots mark stable equilibria, red diamonds unstable ones, and the dashed red "
         "curve through an unstable one separates motions of different kinds.",
         "always (level sets with one degree of freedom or a reduction to one)",
@@ -172,7 +172,8 @@ PANELS: tuple[Panel, ...] = (
         "effective-potential",
         "Effective potential",
         "U_eff of the remaining coordinate with the run's energy level (dashed). The motion stays where U_eff lies "
-        "below the level, between the turning points (diamonds).",
+        "below the level, between the turning points (purple diamonds); the red dot is the current state, drawn "
+        "inside a diamond whenever the motion is at a turning point.",
         "a reduction to one coordinate",
         lambda f: f.reduction is not None,
         optional=True,
@@ -180,7 +181,7 @@ PANELS: tuple[Panel, ...] = (
     Panel(
         "small-oscillations",
         "Small oscillations",
-        "The frequency of small oscillations the engine predicts at the nearest stable equilibrium (its square is "
+        "The frequency of small oscillations predicted at the nearest stable equilibrium (its square is "
         "U_eff''/m_eff), beside the one measured from the simulated motion.",
         "a reduction to one coordinate with a closed-form ω²",
         lambda f: f.reduction is not None and f.reduction.get("omega_squared") is not None,

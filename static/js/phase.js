@@ -189,8 +189,8 @@ export class PhasePanel extends PreviewPanel {
     this.section.dataset.separatrix = Es === null ? "" : String(Es);
     this.section.dataset.xrange = JSON.stringify([lo, hi]);
     const kind = Es === null ? "" : E0 > Es
-      ? (m.turn ? ` Its level H = ${fmt(E0)} J lies above the separatrix (${fmt(Es)} J): it goes over the top, round and round.` : ` Its level H = ${fmt(E0)} J lies above the separatrix (${fmt(Es)} J).`)
-      : ` Its level H = ${fmt(E0)} J lies below the separatrix (${fmt(Es)} J): it swings back and forth.`;
+      ? (m.turn ? ` Its level h = ${fmt(E0)} J lies above the separatrix (${fmt(Es)} J): it goes over the top, round and round.` : ` Its level h = ${fmt(E0)} J lies above the separatrix (${fmt(Es)} J).`)
+      : ` Its level h = ${fmt(E0)} J lies below the separatrix (${fmt(Es)} J): it swings back and forth.`;
     const forced = run.data.forced ? " A non-conservative force acts, so the run crosses the level sets instead of following one." : "";
     // an angle's top is at θ = π, inside the wrapped interval (−π, π] (−π is the same point, outside it)
     const at = (x) => (m.turn && Math.abs(Math.abs(x) - Math.PI) < 1e-6 ? "π" : fmt(x));

@@ -92,7 +92,10 @@ class MomentaPanel extends TimePanel {
     const units = [...new Set(names.map((n) => (run.data.momentum_units && run.data.momentum_units[n.slice(2)]) || momentumUnit(run.data.units[n.slice(2)])))];
     const unit = units.length === 1 ? units[0] : "SI units";
     this.drawSeries(run, top, bottom, `momentum (${unit})`, `change (${unit})`, { yaxis: { range: [lo - pad, hi + pad] } });
-    this.readout.textContent = top.map((s, k) => `${s.name} stays at ${fmt(s.values[0])} within ${fmt(Math.max(...finite(bottom[k].values).map(Math.abs)))}.`).join(" ");
+    // each momentum with its own unit: "p_θ stays at 1 kg·m²/s within 7.6 × 10⁻⁹ kg·m²/s"
+    const unitOf = (n) => (run.data.momentum_units && run.data.momentum_units[n.slice(2)]) || momentumUnit(run.data.units[n.slice(2)]);
+    const said = (x, n) => `${fmt(x)}${unitOf(n) && !unitOf(n).includes("SI") ? ` ${unitOf(n)}` : ""}`;
+    this.readout.textContent = top.map((s, k) => `${s.name} stays at ${said(s.values[0], names[k])} within ${said(Math.max(...finite(bottom[k].values).map(Math.abs)), names[k])}.`).join(" ");
     seriesTable(this.summary, "Conserved momenta over the run", run.t, [...top, ...bottom]);
   }
 }
@@ -169,7 +172,7 @@ class WorkPrecisionPanel {
   async draw(run) {
     this.run = run;
     const stats = run.stats;
-    const here = `This run: ${stats.method}, error estimate ${fmt(stats.error_estimate)}, run time ${fmt(stats.wall_time_s * 1000)} ms, ${stats.rhs_evaluations ?? "–"} right-hand-side evaluations.`;
+    const here = `This run: ${this.data.method_labels?.[stats.method] || stats.method}, estimated error ${fmt(stats.error_estimate)}, run time ${fmt(stats.wall_time_s * 1000)} ms, ${stats.rhs_evaluations ?? "–"} evaluations of the equations of motion.`;
     if (!this.visible) { this.readout.textContent = `${here} The chart loads when this panel is in view.`; return; }
     this.readout.textContent = `${here} Loading the error-against-run-time chart…`;
     this.section.setAttribute("aria-busy", "true");

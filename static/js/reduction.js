@@ -96,7 +96,9 @@ export class EffectivePotentialPanel extends PreviewPanel {
     const lay = layout({ hovermode: "closest", xaxis: axis(titled(lr, unit), { range: [lo, hi] }), yaxis: axis("U_eff (J)", { range: [bottom - 0.1 * d, top + 0.6 * d] }) });
     react(this, traces, lay);
     this.turningCache = new Map();
-    const momenta = Object.entries(this.red.P).map(([k, v]) => `${run.data.labels[k] || k} = ${fmt(v)}`).join(", ");
+    // a held momentum with its unit (kg·m²/s for an angle's), as every number on the page has
+    const momentumUnitOf = (k) => (run.data.momentum_units && run.data.momentum_units[k.slice(2)]) || "";
+    const momenta = Object.entries(this.red.P).map(([k, v]) => `${run.data.labels[k] || k} = ${fmt(v)}${momentumUnitOf(k) ? ` ${momentumUnitOf(k)}` : ""}`).join(", ");
     this.cursor(0, run);
     table(this.summary, "Effective potential on a grid (every 30th point)", [titled(lr, unit), "U_eff (J)"],
       this.grid.filter((_, k) => k % 30 === 0).map((x) => [fmt(x), U(x)]));
@@ -116,8 +118,9 @@ export class EffectivePotentialPanel extends PreviewPanel {
       this.turningCache.set(level, turning);
     }
     this.overlay.level("level", level);
-    this.overlay.points("turning", turning.map((x) => [x, level]), { color: COLORS.a, r: 6, shape: "diamond" });
-    this.overlay.points("now", [[values[i], U(values[i])]]);
+    // the diamonds larger than the red dot drawn over them: at a turning point (a start from rest) both show
+    this.overlay.points("turning", turning.map((x) => [x, level]), { color: COLORS.a, r: 9, shape: "diamond" });
+    this.overlay.points("now", [[values[i], U(values[i])]], { r: 4 });
     const lr = run.data.labels[this.red.r], unit = run.data.units[this.red.r];
     const tp = turning.length === 2
       ? `the motion turns at ${lr} = ${fmt(turning[0])} and ${fmt(turning[1])} ${unit}`
@@ -177,7 +180,7 @@ export class SmallOscillationsPanel extends PreviewPanel {
     const letter = run.data.frequency_letter || "ω";
     // words, never a raw null, where there is nothing to show
     const rows = [
-      [`predicted by the engine (${letter}² = U_eff''/m_eff)`, predicted ?? "none: no stable equilibrium", predicted ? (2 * Math.PI) / predicted : "–"],
+      [`predicted from ${letter}² = U_eff″/m_eff`, predicted ?? "none: no stable equilibrium", predicted ? (2 * Math.PI) / predicted : "–"],
       ["measured from this run", measured ?? "none: no full oscillation in the run", measured ? (2 * Math.PI) / measured : "–"],
     ];
     table(this.summary, "Small-oscillation frequency", ["", `${letter} (rad/s)`, "period (s)"], rows);

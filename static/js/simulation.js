@@ -200,10 +200,11 @@ export class SimulationView {
 }
 
 /** The figures behind the run status's "details": method and why, steps, evaluations, the exact error estimate. */
-function details(stats) {
-  const parts = [`Method ${stats.method}` + (stats.reason ? ` (${stats.reason})` : "") + "."];
-  parts.push(`${stats.steps ?? "–"} steps, ${stats.rhs_evaluations ?? "–"} right-hand-side evaluations, run time ${fmt((stats.wall_time_s || 0) * 1000)} ms.`);
-  if (Number.isFinite(stats.error_estimate)) parts.push(`Estimated error ${fmt(stats.error_estimate)} (the largest |q − q_exact| over the samples, in the coordinates' units).`);
+function details(stats, labels = {}) {
+  // the method by its name in the menu (the API's value is stats.method), and why it was chosen: one sentence
+  const parts = [`Method: ${labels[stats.method] || stats.method}` + (stats.reason ? `; ${stats.reason}` : "") + "."];
+  parts.push(`${stats.steps ?? "–"} steps, ${stats.rhs_evaluations ?? "–"} evaluations of the equations of motion, run time ${fmt((stats.wall_time_s || 0) * 1000)} ms.`);
+  if (Number.isFinite(stats.error_estimate)) parts.push(`Estimated error ${fmt(stats.error_estimate)}: the largest difference between this run's coordinates and the true motion's over the samples, in the coordinates' units.`);
   return parts.join(" ");
 }
 
@@ -262,7 +263,7 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
       const t1 = performance.now();
       root.classList.remove("stale");
       if (result.error) {
-        say("preview", `No preview: ${result.error}. The server's run follows when you stop.`);
+        say("preview", `No preview: ${result.error}. The full run follows when you stop.`);
         return;
       }
       const prepared = prepareRun(data, req, result);
@@ -270,8 +271,8 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
       view.draw(prepared, "preview");
       // where the preview's time goes (integrate / prepare / draw, ms): read by benchmarks/bench_browser.py
       root.dataset.previewTiming = [t1 - t0, t2 - t1, performance.now() - t2].map((x) => x.toFixed(1)).join(" ");
-      say("preview", "Preview: in your browser; the server's run follows when you stop." + ended(result.stats), null,
-        "The preview is integrated in your browser with a fixed-step RK4; the server's run, with its error estimate, replaces it.");
+      say("preview", "Preview: in your browser; the full run follows when you stop." + ended(result.stats), null,
+        "The preview is integrated in your browser with a fixed-step Runge–Kutta method; the full run, with its error estimate, replaces it.");
       painted("preview");
     });
   }
@@ -304,8 +305,8 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
       const line = statusLine(r.stats);
       const notes = [...(r.stats.event ? [ended(r.stats).trim()] : []), ...(r.stats.warnings || [])];
       const trust = result.trust || {};
-      if (trust.trusted === false) say("untrusted", `${line}. ${trust.message}`, notes, details(r.stats));
-      else say("ready", line, notes, details(r.stats));
+      if (trust.trusted === false) say("untrusted", `${line}. ${trust.message}`, notes, details(r.stats, data.method_labels));
+      else say("ready", line, notes, details(r.stats, data.method_labels));
       root.dataset.runs = String(Number(root.dataset.runs || 0) + 1);
       painted("server");
     } catch (err) {

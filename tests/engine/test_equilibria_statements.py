@@ -59,18 +59,20 @@ def test_the_spherical_pendulum_lists_its_cone_once_with_its_mass_exact():
     steady = [e for e in doc["normal_modes"] if e["momenta"]]
     assert len(steady) == 1 and steady[0]["equilibrium"]["theta"] > 0
     s = step(doc, "steady-motion:1")
-    # m R², not [1.0]; K to the six figures the rest of the step shows
-    assert r"m R^{2}" in s["latex"] and "1.0" not in s["latex"]
-    assert "35.7045920522236" not in s["latex"] and "35.7046" in s["latex"]
+    # one coordinate: ω² alone, four figures with its unit, no 1×1 matrices in brackets
+    assert "1.0" not in s["latex"] and r"\begin{matrix}" not in s["latex"]
+    assert "35.7045920522236" not in s["latex"] and r"\omega^2 &= 35.7\,\mathrm{s}^{-2}" in s["latex"]
 
 
 def test_one_letter_one_quantity_on_the_rotating_parabola():
     doc = derivation_document("rotating-parabola")
     # ω is the rotation rate; the frequency of small oscillations is Ω
-    for key in ("normal-modes:1", "reduced-equilibria"):
-        s = step(doc, key)
-        assert r"\Omega" in s["latex"], s["latex"]
-        assert r"\omega_{1}^2" not in s["latex"] and r"\omega^2 =" not in s["latex"]
+    # one coordinate, no momentum held: the reduction's equilibria are the Equilibria step's, said once
+    assert not [s for s in doc["steps"] if s["key"] == "reduced-equilibria"]
+    s = step(doc, "normal-modes:1")
+    assert r"\Omega" in s["latex"], s["latex"]
+    assert r"\omega_{1}^2" not in s["latex"] and r"\omega^2 =" not in s["latex"]
+    assert "Ω² = 2 g α − ω²" in step(doc, "equilibria")["explanation"]
     letters = [row["unicode"] for row in doc["notation"]]
     assert len(letters) == len(set(letters))
     meaning = {row["unicode"]: row["meaning"] for row in doc["notation"]}

@@ -29,7 +29,7 @@ def test_the_damped_action_panel_states_the_principle_with_Q(pages):
 
 
 def test_the_separatrix_mark_is_for_the_start_it_names_and_absent_with_drag(pages):
-    marks = re.search(r'<p class="ticks">Marked: (.*?)</p>', pages["simple-pendulum"], re.S).group(1)
+    marks = re.search(r'<p class="ticks">The slider marks (.*?)</p>', pages["simple-pendulum"], re.S).group(1)
     # ½ m R² θ̇₀² = m g R (1 + cos θ₀) at θ₀ = 1 rad gives the marked ±5.497 rad/s (the scene's default start)
     assert "separatrix from θ(0) = 1 rad: just reaches θ = π" in marks
     # with drag the undamped value falls short of the top: no such mark

@@ -41,7 +41,7 @@ def test_the_page_shows_the_equations_first_then_the_whole_derivation(client, se
     assert 'data-stage="equations"' in html and "Still working on:" in html
     assert "the step-by-step derivation" in html and "normal modes" in html
     assert html.count('<li><div class="math math-display"') >= 3 + 1 + 3  # three equations, M q̈ = f, three f
-    assert "M = \\begin{pmatrix}" in html
+    assert "\\mathcal{M} = \\begin{pmatrix}" in html
     assert 'id="simulation"' not in html and '<li class="step' not in html
     # the address of the rest, and a link to it for a reader without JavaScript
     href = re.search(r'data-whole-url="([^"]+)"', html)[1].replace("&amp;", "&")

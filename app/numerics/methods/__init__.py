@@ -33,6 +33,8 @@ METHODS: dict[str, Method] = {
 }
 AUTO = "auto"
 CHOICES: tuple[str, ...] = (AUTO, *METHODS)  # what a request may ask for
+# each choice as a reader reads it (the menus, the run's details); the API's values stay the names
+LABELS: dict[str, str] = {AUTO: "automatic choice", **{n: m.label or n for n, m in METHODS.items()}}
 
 # Roles: the methods auto, the error estimate and the server's start-up give a job to.
 NONSTIFF = "Vern8"  # auto's default; it watches for stiffness on the way (why this pair: choose.py)
@@ -58,6 +60,7 @@ def symplectic_for(system: NumericSystem) -> Method:
 
 
 __all__ = [
+    "LABELS",
     "AUTO",
     "CHOICES",
     "FALLBACK",

@@ -72,6 +72,7 @@ class Method:
     compiled = False  # the step loop runs in numba (else in Python, holding the GIL throughout)
     implicit = False  # solves equations per step (with the engine's Jacobian where it takes one)
     summary = ""
+    label = ""  # the method's name as the pages' menus and run details print it (``name`` is the API's value)
 
     kernel_module = ""  # the compiled loop this method runs (imported, so compiled or loaded, by prepare)
 

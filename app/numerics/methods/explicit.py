@@ -42,6 +42,7 @@ class CompiledExplicit(Method):
 
 class CompiledDOP853(CompiledExplicit):
     name = "DOP853-compiled"
+    label = "Dormand–Prince 8(5,3)"
     order = 8
     kernel_module = "app.numerics.kernels.dop853"
     summary = "Dormand-Prince 8(5,3), adaptive steps, 7th-order dense output; the loop runs in numba"
@@ -49,6 +50,7 @@ class CompiledDOP853(CompiledExplicit):
 
 class CompiledVern8(CompiledExplicit):
     name = "Vern8"
+    label = "Verner 8(7)"
     order = 8
     kernel_module = "app.numerics.kernels.vern8"
     summary = (

@@ -20,6 +20,7 @@ from app.numerics.system import NumericSystem
 
 class CompiledRadau(Method):
     name = "Radau-compiled"
+    label = "Radau IIA, implicit"
     family = "implicit"
     order = 5
     compiled = True

@@ -125,6 +125,7 @@ class ScipyMethod(Method):
 
 class ScipyDOP853(ScipyMethod):
     name = "DOP853"
+    label = "Dormand–Prince 8(5,3), SciPy"
     solver = "DOP853"
     family = "explicit"
     order = 8
@@ -133,6 +134,7 @@ class ScipyDOP853(ScipyMethod):
 
 class ScipyRK45(ScipyMethod):
     name = "RK45"
+    label = "Dormand–Prince 5(4), SciPy"
     solver = "RK45"
     family = "explicit"
     order = 5
@@ -141,6 +143,7 @@ class ScipyRK45(ScipyMethod):
 
 class ScipyRadau(ScipyMethod):
     name = "Radau"
+    label = "Radau IIA, implicit, SciPy"
     solver = "Radau"
     family = "implicit"
     implicit = True
@@ -150,6 +153,7 @@ class ScipyRadau(ScipyMethod):
 
 class ScipyBDF(ScipyMethod):
     name = "BDF"
+    label = "backward differentiation, implicit, SciPy"
     solver = "BDF"
     family = "implicit"
     implicit = True
@@ -159,6 +163,7 @@ class ScipyBDF(ScipyMethod):
 
 class ScipyLSODA(ScipyMethod):
     name = "LSODA"
+    label = "LSODA (Adams or BDF), SciPy"
     solver = "LSODA"
     family = "switching"
     implicit = True

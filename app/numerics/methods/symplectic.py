@@ -171,6 +171,7 @@ class Composition(FixedStep):
 
 class StormerVerlet(Composition):
     name = "Verlet"
+    label = "Störmer–Verlet, symplectic"
     order = 2
     summary = "Störmer-Verlet (leapfrog), order 2, symplectic, fixed step; separable H only"
     weights = np.array([1.0])
@@ -181,6 +182,7 @@ _X1 = 1.0 / (2.0 - 2.0 ** (1.0 / 3.0))
 
 class Yoshida4(Composition):
     name = "Yoshida4"
+    label = "Yoshida 4, symplectic"
     order = 4
     summary = "Yoshida's triple-jump composition of Verlet, order 4, symplectic, fixed step; separable H only"
     # w = (x1, x0, x1) with x0 = 1 - 2 x1 = -2^(1/3) x1
@@ -189,6 +191,7 @@ class Yoshida4(Composition):
 
 class GaussLegendre(FixedStep):
     name = "Gauss-Legendre"
+    label = "Gauss–Legendre 6, symplectic"
     kernel_module = "app.numerics.kernels.gauss"
     implicit = True
     stages = 3

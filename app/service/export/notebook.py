@@ -168,7 +168,7 @@ def notebook(source: Source) -> str:
     energy_lines = ["h = sum(pk * vk for pk, vk in zip(p, v)) - L", "show('h', h)"]
     if m.T is not None:
         energy_lines += ["E = T + U", "show('E', E)"]
-    cells.append(_md("## Hamiltonian and energy", "h = Σ p q̇ − L" + (", and E = T + U." if m.T is not None else ".")))
+    cells.append(_md("## Energy function and energy", "h = Σ p q̇ − L" + (", and E = T + U." if m.T is not None else ".")))
     cells.append(_code(*energy_lines))
     cells.append(_engine("h", naming.code(form(en.hamiltonian)), "h"))
     if m.T is not None:
