@@ -276,6 +276,7 @@ def scene_json(scene: Scene) -> dict[str, Any]:
         "events": [{"name": e.name, "expression": e.expression, "message": e.message} for e in scene.events],
         "family": scene.family,
         "marks": list(scene.marks),
+        "answers": list(scene.answers),
     }
 
 
@@ -349,6 +350,30 @@ def transformed_json(tr: Transformed) -> dict[str, Any]:
         ],
         "inertia": {n: pr.pair(m) for n, m in zip(names, tr.inertia, strict=True)},
         "reduced_mass": pr.pair(tr.reduced_mass) if tr.reduced_mass is not None else None,
+        "relative_motion": _relative_motion(tr, pr),
+    }
+
+
+def _relative_motion(tr: Transformed, pr: Printer) -> dict[str, str] | None:
+    """The relative coordinate's equation as one body of the reduced mass obeys it, μ ẍ = −k (x − l₀), and its
+    frequency ω = √(k/μ); None unless its force is linear in it with a constant, positive stiffness."""
+    d, relative = tr.derivation, tr.change.relative
+    if tr.reduced_mass is None or relative is None or relative not in d.table.names:
+        return None
+    i = d.table.names.index(relative)
+    x, xdd = d.table.q[i], d.table.qdd[i]
+    # the force on the relative coordinate: reduced mass times its acceleration
+    force = sp.expand(tr.reduced_mass * d.equations.accelerations[i])
+    stiffness = sp.factor(sp.cancel(-sp.diff(force, x)))
+    if sp.diff(force, x, 2) != 0 or stiffness == 0 or stiffness.free_symbols & {*d.table.q, *d.table.qd}:
+        return None
+    # force = −K (x − x₀): x₀ is where the force vanishes (the spring's rest length)
+    rest = sp.factor(sp.cancel(force.subs(x, 0) / stiffness))
+    k = pr.tex(stiffness)
+    k = rf"\left({k}\right)" if stiffness.is_Add else k
+    return {
+        "equation": rf"\mu {pr.tex(xdd)} = -{k} \left({pr.tex(x - rest, x)}\right)",
+        "frequency": rf"\omega = \sqrt{{\frac{{{pr.tex(stiffness)}}}{{\mu}}}}",
     }
 
 

@@ -474,14 +474,21 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
             f"{unicode(red.coordinate)}.",
         )
     )
+    level_symbol = sp.Symbol(level, real=True)
+    # E − U_eff with E first and U_eff's pieces in the order the effective-potential step prints them
+    energy_left = pr.tex(level_symbol - effective_potential(d), level_symbol)
     out.append(
         _step(
             "time-integral",
             "Time as an integral",
-            [rf"t = \int \sqrt{{\frac{{m_\text{{eff}}}}{{2\,\left({level} - U_\text{{eff}}({rn})\right)}}}}\, d{rn}"],
+            [
+                rf"t = \int \sqrt{{\frac{{m_\text{{eff}}}}{{2\,\left({level} - U_\text{{eff}}({rn})\right)}}}}\, d{rn}",
+                # the same integral with this system's m_eff and U_eff written in (what a problem asks for)
+                rf" = \int \frac{{d{rn}}}{{\sqrt{{\frac{{2}}{{{pr.tex(red.effective_mass)}}}\left({energy_left}\right)}}}}",
+            ],
             red.time_integral,
-            f"Separating variables in the energy integral gives the time to reach each {unicode(red.coordinate)}, "
-            "with m_eff and U_eff as in the step before.",
+            f"Separating variables in the energy integral gives the time to reach each {unicode(red.coordinate)}; "
+            "the second form writes in this system's m_eff and U_eff.",
         )
     )
     omega = notation.letter("frequency", d)

@@ -142,6 +142,7 @@ DAMPED_PENDULUM = Scene(
     family="pendulum",
     marks=("drag",),
     reasons=reasons.DAMPED_PENDULUM,
+    answers=("power",),  # the rate at which the energy decays
     summary="A force no potential describes enters as a generalized force Q and drains the energy.",
     statement=(
         "The simple pendulum again (bob of mass m, string of length R, θ from the bottom), now slowed by a drag "

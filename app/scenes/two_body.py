@@ -13,6 +13,8 @@ TABLETOP_SPRING = Scene(
     section="4.4",
     family="tabletop-spring",
     reasons=reasons.TABLETOP_SPRING,
+    # the time as an integral over r, the circular orbit and its radial frequency
+    answers=("time-integral", "reduced-equilibria"),
     summary="A cyclic angle conserves angular momentum and folds the orbit into one radial coordinate.",
     statement=(
         "A particle of mass m moves on a frictionless horizontal table, tied to a fixed point of the table by a "

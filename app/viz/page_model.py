@@ -27,7 +27,8 @@ from app.viz.names import label
 from app.viz.panels import Facts, folded, oscillating_equilibria, shown, texts
 from app.viz.units import coordinate_units
 
-LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collapsed
+LONG_STEP = 160  # characters a reader sees (not LaTeX's) beyond which a step's math starts collapsed
+LONG_ROWS = 6  # lines of a display beyond which it starts collapsed, however short each line
 SLIDER_STEPS = 1000  # positions of a control's slider (the page's range inputs; static/js/controls.js reads them)
 # the page's menu of tolerances, written as powers of ten (1e-8)
 RTOLS = tuple(f"1e{round(math.log10(r))}" for r in limits.RTOL_MENU)
@@ -43,19 +44,35 @@ def _pair_tree(pair: dict[str, Any] | None, names: Sequence[str]) -> Any:
     return document_tree(pair, names)
 
 
+# LaTeX that prints nothing a reader counts: sizing, environments, spacing and the bracing of groups
+_SILENT = re.compile(r"\\(?:left|right|begin\{\w+\}|end\{\w+\}|mathrm|text|quad|qquad|tfrac|frac|dfrac|[,;:! ])|[{}&\s^_]")
+
+
+def shown_length(tex: str) -> tuple[int, int]:
+    """How long a display is as a reader sees it: its lines, and its characters (a command such as
+    ``\\omega`` one character, markup none)."""
+    rows = re.sub(r"\\begin\{matrix\}.*?\\end\{matrix\}", "", tex).count("\\\\") + 1  # a matrix's rows are one line
+    return rows, len(_SILENT.sub("", re.sub(r"\\[A-Za-z]+", "x", _SILENT.sub("", tex))))
+
+
 def _steps(doc: dict[str, Any]) -> list[dict[str, Any]]:
-    return [
-        {
-            "number": i + 1,
-            "title": s["title"],
-            "latex": s["latex"],
-            "explanation": s["explanation"],
-            # a core step (L, the equations, the accelerations) is never folded: long ones are broken across lines
-            "long": len(s["latex"]) > LONG_STEP and s["key"] not in CORE_STEPS,
-            "core": s["key"] in CORE_STEPS,
-        }
-        for i, s in enumerate(doc["steps"])
-    ]
+    out = []
+    for i, s in enumerate(doc["steps"]):
+        rows, chars = shown_length(s["latex"])
+        out.append(
+            {
+                "number": i + 1,
+                "title": s["title"],
+                "latex": s["latex"],
+                "explanation": s["explanation"],
+                # folded only when long as read (two short lines never hide behind a button); a core step (L, the
+                # equations, the accelerations) is never folded: long ones are broken across lines
+                "long": (chars > LONG_STEP or rows > LONG_ROWS) and s["key"] not in CORE_STEPS,
+                "rows": rows,
+                "core": s["key"] in CORE_STEPS,
+            }
+        )
+    return out
 
 
 def letter_of(doc: dict[str, Any], meaning: str, default: str, form: str = "latex") -> str:
@@ -67,6 +84,19 @@ def letter_of(doc: dict[str, Any], meaning: str, default: str, form: str = "late
     )
 
 
+def _answers(doc: dict[str, Any]) -> list[dict[str, Any]]:
+    """The steps that answer the scene's question (``Scene.answers``, by key as the reasons go: ``normal-modes``
+    is every ``normal-modes:N``), for the Results box; an explanation already given above is not repeated."""
+    keys = (doc.get("scene") or {}).get("answers") or []
+    said: set[str] = set()
+    out = []
+    for s in doc["steps"]:
+        if any(s["key"] == k or s["key"].startswith(k + ":") for k in keys):
+            out.append({"title": s["title"], "latex": s["latex"], "explanation": "" if s["explanation"] in said else s["explanation"]})
+            said.add(s["explanation"])
+    return out
+
+
 def _summary(doc: dict[str, Any]) -> dict[str, Any]:
     q = doc["coordinates"]
     conserved = [
@@ -75,6 +105,8 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
     ]
     ddot = {c: latex(f"{c}_ddot") for c in q}
     return {
+        # what the statement asks, stated first (never only behind "Show all steps")
+        "answers": _answers(doc),
         "equations": [e["latex"] for e in doc["equations_of_motion"]],
         # none in closed form for a large system (listed in "skipped"): M⁻¹f
         "accelerations": [f"{ddot[c]} = {doc['accelerations'][c]['latex']}" for c in q]
@@ -125,6 +157,9 @@ def _transformed(doc: dict[str, Any]) -> list[dict[str, Any]] | None:
     add("Cyclic coordinates", [", ".join(sym.get(c, c) for c in tr.get("cyclic", []))] if tr.get("cyclic") else [])
     if "reduced_mass" in tr:
         add("Reduced mass", [rf"\mu = {tr['reduced_mass']['latex']}"])
+    if rel := tr.get("relative_motion"):
+        # the separation moves as one body of the reduced mass: what the rail's problem asks to show
+        add("Relative motion", [rel["equation"], rel["frequency"]])
     add("Accelerations", [rf"\ddot{{{sym.get(c, c)}}} = {e['latex']}" for c, e in tr.get("accelerations", {}).items()])
     add("Momenta", [f"p_{{{sym.get(c, c)}}} = {e['latex']}" for c, e in tr.get("momenta", {}).items()])
     conserved = []
