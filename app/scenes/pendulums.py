@@ -53,22 +53,24 @@ SIMPLE_PENDULUM = Scene(
         ),
         Erratum(
             chapter="tau = I omega = m R^2 g/R = m g R",
-            correct="tau = dL/dtheta = -m*g*R*sin(theta)",
+            # the torque as Γ (Taylor's letter): τ on this page is the action panel's duration
+            correct="Gamma = ∂L/∂theta = -m*g*R*sin(theta)",
             reason=(
                 "I ω is an angular momentum, and √(g/R) is a frequency rather than the bob's angular velocity. "
-                "The torque of gravity about the pivot is ∂L/∂θ = −m g R sin θ: it depends on the angle and "
-                "vanishes at the bottom."
+                "The torque of gravity about the pivot, written Γ here (τ on this page is a duration), is "
+                "∂L/∂θ = −m g R sin θ: it depends on the angle and vanishes at the bottom."
             ),
             check="dL/dq:theta",
         ),
         Erratum(
             chapter="theta_ddot + (g/R) sin(theta) = 0 is simple harmonic with omega = sqrt(g/R)",
-            correct="theta_ddot = -g*sin(theta)/R",
+            correct="theta_ddot = -g*theta/R",
             reason=(
-                "Because of sin θ the equation is not linear; it is simple harmonic with ω² = g/R only for small "
-                "swings (sin θ ≈ θ), and wide swings take longer."
+                "Because of sin θ the chapter's equation is not linear, so it is not simple harmonic. Only small "
+                "swings, where sin θ ≈ θ, obey the linear equation shown, simple harmonic with ω² = g/R; wide "
+                "swings take longer."
             ),
-            check="acceleration:theta",
+            check="linear-acceleration:theta",
         ),
     ),
 )
