@@ -5,6 +5,8 @@ from app.scenes.common import GRAVITY
 from app.scenes.types import Constraint, Erratum, Parameter, Particle, Scene, System
 
 MASS = Parameter("m", 1.0, "kg", 0.01, 100.0, "mass of the bob")
+# the spherical pendulum's statement speaks of a ball
+BALL = Parameter("m", 1.0, "kg", 0.01, 100.0, "mass of the ball")
 LENGTH = Parameter("R", 1.0, "m", 0.05, 100.0, "length of the string")
 DAMPING = Parameter("b", 0.3, "kg·m²/s", 0.0, 100.0, "damping coefficient: the generalized drag force is Q_θ = −b θ̇")
 
@@ -90,7 +92,7 @@ SPHERICAL_PENDULUM = Scene(
     figure="A sphere of radius R about the pivot, the ball at polar angle θ from the upward axis and azimuth φ.",
     system=System(
         coordinates=("theta", "phi"),
-        parameters=(MASS, GRAVITY, LENGTH),
+        parameters=(BALL, GRAVITY, LENGTH),
         particles=(Particle("m", ("R*sin(theta)*cos(phi)", "R*sin(theta)*sin(phi)", "R*cos(theta)"), "ball"),),
         potential="m*g*R*cos(theta)",
         cartesian_potential="m*g*z",
