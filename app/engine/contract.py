@@ -117,7 +117,9 @@ def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[s
     """Each q_ddot in closed form, or none (with a note) when the engine kept it as M⁻¹f."""
     eqs = d.equations
     if eqs.closed_form:
-        return {name: pr.pair(_shown(a)) for name, a in zip(d.table.names, eqs.accelerations, strict=True)}
+        # grouped by coordinate where linear in them, as the accelerations step prints them
+        grouped = (meaning.by_coordinate(a, d.table.q) for a in eqs.accelerations)
+        return {name: pr.pair(_shown(a)) for name, a in zip(d.table.names, grouped, strict=True)}
     skipped.append(Skipped(
         "accelerations",
         "The accelerations in closed form are left out: solving M q̈ = f symbolically gives expressions too long "
@@ -194,7 +196,12 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
             "condition": pr.pair(red.equilibrium_condition),
             "omega_squared": pr.pair(red.omega_squared_at),
             "equilibria": [
-                {"position": pr.pair(e.position), "omega_squared": pr.pair(e.omega_squared), "stable": e.stable}
+                {
+                    # a root as a textbook writes it: r₀ = (p_θ²/(m k))^{1/4}
+                    "position": {**pr.pair(e.position), "latex": pr.root(e.position)},
+                    "omega_squared": pr.pair(e.omega_squared),
+                    "stable": e.stable,
+                }
                 for e in red.equilibria
             ],
         }

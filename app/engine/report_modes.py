@@ -149,7 +149,7 @@ def _where(e: Equilibrium, pr: Printer, d: Derivation) -> str:
     parts = []
     for name, value in e.position.items():
         exact = e.exact.get(name) if e.exact else None
-        parts.append(f"{pr.tex(sym[name])} = {pr.tex(exact) if exact is not None else _number(value)}")
+        parts.append(f"{pr.tex(sym[name])} = {pr.root(exact) if exact is not None else _number(value)}")
     held = [rf"{pr.tex(sp.Symbol(n))} = {_number(v)}" for n, v in e.momenta.items()]
     return r",\; ".join(parts + held)
 

@@ -108,3 +108,27 @@ def test_the_incline_and_the_ball_are_named_one_way(client):
     assert "from the foot" in incline["statement"] and "from the foot" in incline["figure"]
     ball = client.get("/api/scenes/spherical-pendulum/derivation").json()["scene"]
     assert ball["parameters"]["m"]["description"] == "mass of the ball"
+
+
+@pytest.mark.parametrize(
+    ("scene_id", "key", "tex"),
+    [
+        # a common factor out of a position: R(1 − cos θ), not −R cos θ + R
+        ("simple-pendulum", "positions", r"R \left(1 - \cos {\theta}\right)"),
+        # a linear force grouped by coordinate over its shared denominator
+        ("coupled-oscillators", "accelerations", r"\frac{\kappa x_{2} - \left(k + \kappa\right) x_{1}}{m}"),
+        ("coupled-oscillators", "mass-matrix", r"\kappa x_{2} - \left(k + \kappa\right) x_{1}"),
+        # one fourth root of one fraction
+        ("tabletop-spring", "reduced-equilibria", r"r_0 = \left(\frac{p_{\theta}^{2}}{m k}\right)^{1/4}"),
+        # the frequency at the root θ₀, not at every θ
+        ("spherical-pendulum", "reduced-equilibria", r"\frac{3 p_{\varphi}^{2}}{m^{2} R^{4} \sin^{4} {\theta_{0}}}"),
+    ],
+)
+def test_steps_print_textbook_forms(client, scene_id, key, tex):
+    assert tex in step(client, scene_id, key)["latex"]
+
+
+def test_the_spherical_frequency_names_no_bare_theta(client):
+    latex = step(client, "spherical-pendulum", "reduced-equilibria")["latex"]
+    omega_row = latex.split(r"\omega^2")[1]
+    assert not re.search(r"\\theta(?!_)", omega_row), omega_row
