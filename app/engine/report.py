@@ -216,6 +216,20 @@ def _at_root(pr: Printer, expr: sp.Expr, r: sp.Symbol) -> str:
     return pr.tex(expr.xreplace({r: sp.Symbol(r.name + "0")}))
 
 
+def _divided_by(d: Derivation, shown: list[tuple[sp.Expr, str]]) -> str:
+    """How equations coupled through their accelerations are shown: each divided by the factor common to its
+    terms (the double pendulum's first by l₁, its second by m₂ l₂), said so that no reader wonders why they
+    are scaled differently."""
+    with unbudgeted():
+        scales = [sp.factor(sp.cancel(r / s)) for r, (s, _) in zip(d.equations.residuals, shown, strict=True)]
+    if any(s.free_symbols & {*d.table.q, *d.table.qd, *d.table.qdd} for s in scales):
+        return "."
+    said = [f"the {plain_name(n)} equation by {textbook.unicode_text(s)}" for n, s in zip(d.table.names, scales, strict=True) if s != 1]
+    if not said:
+        return "."
+    return "; each is shown divided by the factor common to all its terms (" + ", ".join(said) + ")."
+
+
 def _common_factor(c: sp.Expr) -> sp.Expr:
     """A sum with a symbol common to all its terms, written with it taken out: R(1 − cos θ) for R − R cos θ
     (a sign alone is not taken out: −l₁ cos θ₁ − l₂ cos θ₂ stays)."""
@@ -350,7 +364,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             + (
                 "; each equation is shown divided by its acceleration's coefficient."
                 if eqs.mass_matrix.is_diagonal()
-                else "."
+                else _divided_by(d, shown_equations)
             ),
             formed=True,
         )

@@ -132,3 +132,8 @@ def test_the_spherical_frequency_names_no_bare_theta(client):
     latex = step(client, "spherical-pendulum", "reduced-equilibria")["latex"]
     omega_row = latex.split(r"\omega^2")[1]
     assert not re.search(r"\\theta(?!_)", omega_row), omega_row
+
+
+def test_the_double_pendulum_says_how_each_equation_is_scaled(client):
+    text = step(client, "double-pendulum", "euler-lagrange")["explanation"]
+    assert "the θ₁ equation by l₁" in text and "the θ₂ equation by m₂l₂" in text
