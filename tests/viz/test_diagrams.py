@@ -40,3 +40,10 @@ def test_the_pulley_figure_marks_all_three_heights_its_caption_names():
     assert "Y measured upward" in SCENES["pulley"].figure
     for name in ("y₁", "y₂", "Y"):
         assert f">{name}</text>" in svg, name
+
+
+@pytest.mark.parametrize("scene_id", ["spherical-pendulum", "helix-bead"])
+def test_the_azimuth_is_drawn_from_a_named_x_axis(scene_id):
+    # φ is an angle from the x axis: the axis is drawn and named, and φ labels an arc from it
+    svg = card(scene_id)
+    assert ">x</text>" in svg and ">φ</text>" in svg
