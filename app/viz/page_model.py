@@ -211,6 +211,15 @@ def angles(doc: dict[str, Any]) -> set[str]:
     return set(doc.get("angles") or [])
 
 
+def _polar(doc: dict[str, Any], q: str) -> bool:
+    """Whether the angle ``q`` is a polar angle: sin²q multiplies another coordinate's entry of the mass
+    matrix (m R² sin²θ for φ), so q = 0 and q = π are the poles of the coordinates."""
+    rows = doc.get("mass_matrix") or []
+    return any(
+        f"sin({q})**2" in str(rows[k][k].get("sympy", "")) for k, c in enumerate(doc["coordinates"]) if c != q and k < len(rows)
+    )
+
+
 def _initial_controls(
     doc: dict[str, Any],
     initial: dict[str, float],
@@ -232,7 +241,9 @@ def _initial_controls(
         angle = q in angular or units.get(q) == "rad"
         value, rate = float(initial.get(q, 0.0)), float(initial.get(f"{q}_dot", 0.0))
         if angle:
-            lo, hi = -math.pi, math.pi
+            # a polar angle (sin² of it scales another coordinate's inertia, as θ does φ's on a sphere) runs
+            # from pole to pole, [0, π]; any other angle goes once round, (−π, π]
+            lo, hi = (0.0 if _polar(doc, q) else -math.pi), math.pi
             lo, hi = min(lo, value), max(hi, value)
         else:
             size = 3 * max(scale, abs(value))

@@ -137,3 +137,11 @@ def test_the_spherical_frequency_names_no_bare_theta(client):
 def test_the_double_pendulum_says_how_each_equation_is_scaled(client):
     text = step(client, "double-pendulum", "euler-lagrange")["explanation"]
     assert "the θ₁ equation by l₁" in text and "the θ₂ equation by m₂l₂" in text
+
+
+def test_a_polar_angle_starts_between_the_poles(client):
+    # θ from the upward vertical runs over [0, π]; the planar pendulum's θ goes once round, (−π, π]
+    spherical = client.get("/scenes/spherical-pendulum").text
+    assert re.findall(r"allowed: ([^<]*) rad<", spherical)[0] == "0 to 3.142"
+    planar = client.get("/scenes/simple-pendulum").text
+    assert re.findall(r"allowed: ([^<]*) rad<", planar)[0] == "−3.142 to 3.142"
