@@ -27,3 +27,12 @@ def test_the_top_is_at_pi_inside_the_wrapped_interval(page):
     # prof-a A10: "θ = −3.142 (unstable)" beside "angles are wrapped into (−π, π]"
     text = _readout(page, "simple-pendulum")
     assert "Equilibria in view: θ = π (unstable), θ = 0 (stable)." in text and "3.142" not in text
+
+
+def test_a_damped_run_names_only_the_level_it_starts_on(page):
+    # prof-c 5: "Its level H = 9.116 J lies below the separatrix" for a run that crosses the level sets
+    text = _readout(page, "damped-pendulum")
+    assert "It starts on the level H = " in text and "below the separatrix" in text
+    assert "Its level" not in text and "swings back and forth" not in text
+    # the undamped pendulum keeps its level
+    assert "Its level H = " in _readout(page, "simple-pendulum")
