@@ -284,6 +284,7 @@ def scene_json(scene: Scene) -> dict[str, Any]:
         "family": scene.family,
         "marks": list(scene.marks),
         "answers": list(scene.answers),
+        "exact_frequency": scene.exact_frequency,
     }
 
 

@@ -15,6 +15,11 @@ TABLETOP_SPRING = Scene(
     reasons=reasons.TABLETOP_SPRING,
     # the time as an integral over r, the circular orbit and its radial frequency
     answers=("time-integral", "reduced-equilibria"),
+    # the isotropic oscillator: x and y each oscillate at √(k/m), so r² = x² + y² returns at twice that rate
+    exact_frequency=(
+        "Here the prediction is exact at every amplitude: the particle's x and y each oscillate at √(k/m), so r "
+        "oscillates at 2√(k/m) however far it swings."
+    ),
     summary="A cyclic angle conserves angular momentum and folds the orbit into one radial coordinate.",
     statement=(
         "A particle of mass m moves on a frictionless horizontal table, tied to a fixed point of the table by a "

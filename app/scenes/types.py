@@ -180,3 +180,6 @@ class Scene:
     marks: tuple[str, ...] = ()
     reasons: Mapping[str, str] = field(default_factory=dict)
     answers: tuple[str, ...] = ()
+    # where the small-oscillation frequency is exact at every amplitude, the sentence saying so and why (the
+    # small-oscillation panel says it in place of "holds as the amplitude goes to zero")
+    exact_frequency: str = ""

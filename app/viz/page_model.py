@@ -369,6 +369,8 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bo
         "initial": info.get("initial", {}),
         "t_end": info.get("t_end", DEFAULT_T_END),
         "panels": info["panels"],
+        # a frequency exact at every amplitude (the tabletop's radial motion), said in its own words
+        "exact_frequency": info.get("exact_frequency", ""),
         "trees": {
             "kinetic": _pair_tree(doc.get("kinetic"), names),
             "potential": _pair_tree(doc.get("potential"), names),
