@@ -163,7 +163,10 @@ def energetics(mech: Mechanics, eqs: Equations) -> Energetics:
         else:
             causes = "; and ".join(_sources_of_t1_t0(mech, parts))
             # E − h = T₁ + 2T₀, naming only the parts this T has (a bead on a spun wire has T₀ and no T₁)
-            reason = f"{causes}. So E − h = {_t1_t0(parts)} ≠ 0."
+            # with T₀ alone, say that T₁ is absent here (else a reader wonders where E − h = T₁ + 2T₀ lost it)
+            alone = _present(parts, 0) and not _present(parts, 1)
+            reason = f"{causes}. " + ("T has no part of degree 1 here (T₁ = 0), so " if alone else "So ")
+            reason += f"E − h = {_t1_t0(parts)} ≠ 0."
 
     # dh/dt = -dL/dt|explicit + sum_k Q_k q_dot_k
     working = forced and not is_zero(power)

@@ -118,7 +118,9 @@ def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[s
     eqs = d.equations
     MM = MASS_MATRIX[1]
     if eqs.closed_form:
-        return {name: pr.pair(_shown(a)) for name, a in zip(d.table.names, eqs.accelerations, strict=True)}
+        # grouped by coordinate where linear in them, as the accelerations step prints them
+        grouped = (meaning.by_coordinate(a, d.table.q) for a in eqs.accelerations)
+        return {name: pr.pair(_shown(a)) for name, a in zip(d.table.names, grouped, strict=True)}
     skipped.append(Skipped(
         "accelerations",
         f"The accelerations in closed form are left out: solving {MM} q̈ = f symbolically gives expressions too long "
@@ -195,7 +197,12 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
             "condition": pr.pair(red.equilibrium_condition),
             "omega_squared": pr.pair(red.omega_squared_at),
             "equilibria": [
-                {"position": pr.pair(e.position), "omega_squared": pr.pair(e.omega_squared), "stable": e.stable}
+                {
+                    # a root as a textbook writes it: r₀ = (p_θ²/(m k))^{1/4}
+                    "position": {**pr.pair(e.position), "latex": pr.root(e.position)},
+                    "omega_squared": pr.pair(e.omega_squared),
+                    "stable": e.stable,
+                }
                 for e in red.equilibria
             ],
         }
@@ -314,6 +321,8 @@ def scene_json(scene: Scene) -> dict[str, Any]:
         "events": [{"name": e.name, "expression": e.expression, "message": e.message} for e in scene.events],
         "family": scene.family,
         "marks": list(scene.marks),
+        "answers": list(scene.answers),
+        "exact_frequency": scene.exact_frequency,
     }
 
 
@@ -387,6 +396,30 @@ def transformed_json(tr: Transformed) -> dict[str, Any]:
         ],
         "inertia": {n: pr.pair(m) for n, m in zip(names, tr.inertia, strict=True)},
         "reduced_mass": pr.pair(tr.reduced_mass) if tr.reduced_mass is not None else None,
+        "relative_motion": _relative_motion(tr, pr),
+    }
+
+
+def _relative_motion(tr: Transformed, pr: Printer) -> dict[str, str] | None:
+    """The relative coordinate's equation as one body of the reduced mass obeys it, μ ẍ = −k (x − l₀), and its
+    frequency ω = √(k/μ); None unless its force is linear in it with a constant, positive stiffness."""
+    d, relative = tr.derivation, tr.change.relative
+    if tr.reduced_mass is None or relative is None or relative not in d.table.names:
+        return None
+    i = d.table.names.index(relative)
+    x, xdd = d.table.q[i], d.table.qdd[i]
+    # the force on the relative coordinate: reduced mass times its acceleration
+    force = sp.expand(tr.reduced_mass * d.equations.accelerations[i])
+    stiffness = sp.factor(sp.cancel(-sp.diff(force, x)))
+    if sp.diff(force, x, 2) != 0 or stiffness == 0 or stiffness.free_symbols & {*d.table.q, *d.table.qd}:
+        return None
+    # force = −K (x − x₀): x₀ is where the force vanishes (the spring's rest length)
+    rest = sp.factor(sp.cancel(force.subs(x, 0) / stiffness))
+    k = pr.tex(stiffness)
+    k = rf"\left({k}\right)" if stiffness.is_Add else k
+    return {
+        "equation": rf"\mu {pr.tex(xdd)} = -{k} \left({pr.tex(x - rest, x)}\right)",
+        "frequency": rf"\omega = \sqrt{{\frac{{{pr.tex(stiffness)}}}{{\mu}}}}",
     }
 
 

@@ -23,7 +23,7 @@ from app.scenes.types import Scene
 _TOKEN = re.compile(r"\s+|[A-Za-z_][A-Za-z0-9_]*|\d+(?:\.\d+)?|\*\*|''|.", re.S)
 _FUNCTIONS = {"sin", "cos", "tan", "exp", "log", "sinh", "cosh"}
 _WORD = re.compile(r"[A-Za-z]{3,}")
-_SHORT_WORDS = {"is", "of", "on", "in", "to", "at", "an", "as", "or", "by", "i", "e"}
+_SHORT_WORDS = {"is", "of", "on", "in", "to", "at", "an", "as", "or", "by", "if", "i", "e"}
 _GLUE = {" ", ".", ",", ";", ":", "'"}
 
 
@@ -44,7 +44,11 @@ def _is_word(token: str) -> bool:
 def _words(tokens: list[str], i: int) -> tuple[str, int]:
     """A run of prose from ``tokens[i]`` (words with the spaces and punctuation between them) as text."""
     j = i
-    while j < len(tokens) and (_is_word(tokens[j]) or tokens[j].isspace() or tokens[j] in _GLUE):
+
+    def hyphen(k: int) -> bool:  # action-reaction: a hyphen between two words is part of the prose, not a minus
+        return tokens[k] == "-" and k > i and _is_word(tokens[k - 1]) and k + 1 < len(tokens) and _is_word(tokens[k + 1])
+
+    while j < len(tokens) and (_is_word(tokens[j]) or tokens[j].isspace() or tokens[j] in _GLUE or hyphen(j)):
         j += 1
     while j > i + 1 and not _is_word(tokens[j - 1]) and tokens[j - 1] not in (".",):
         j -= 1  # trailing spaces and marks go back to the formula
@@ -63,6 +67,12 @@ def _group(tokens: list[str], i: int) -> tuple[list[str], int]:
     return tokens[i + 1 :], len(tokens)
 
 
+def _over(tokens: list[str], i: int) -> bool:
+    """Whether the bracket opening at ``tokens[i]`` is a numerator: closed, then ``/`` and another bracket."""
+    _, j = _group(tokens, i)
+    return j + 1 < len(tokens) and tokens[j] == "/" and tokens[j + 1] == "("
+
+
 def _tex_tokens(tokens: list[str]) -> str:
     out: list[str] = []
     i = 0
@@ -70,6 +80,14 @@ def _tex_tokens(tokens: list[str]) -> str:
         tok = tokens[i]
         if tok.isspace():
             out.append(" ")
+            i += 1
+        elif tok == "(" and _over(tokens, i):
+            # (a)/(b), the chapter's displayed fraction written on one line: typeset as the fraction it is
+            top, j = _group(tokens, i)
+            bottom, i = _group(tokens, j + 1)
+            out.append(rf"\frac{{{_tex_tokens(top)}}}{{{_tex_tokens(bottom)}}}")
+        elif tok == "∂":
+            out.append(r"\partial ")
             i += 1
         elif tok == "sqrt" and i + 1 < len(tokens) and tokens[i + 1] == "(":
             inner, i = _group(tokens, i + 1)

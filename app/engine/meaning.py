@@ -104,3 +104,33 @@ def springs(expr: sp.Expr, coordinates: Iterable[sp.Symbol]) -> sp.Expr:
         )
 
     return within_budget(work, expr, FORM_WORK)
+
+
+def by_coordinate(expr: sp.Expr, coordinates: Iterable[sp.Symbol]) -> sp.Expr:
+    """A force or an acceleration linear in the coordinates with constant coefficients, as a textbook groups it:
+    Σ c_k q_k + rest, each coefficient factored and a denominator they all share taken out,
+    ẍ₁ = [−(k + κ)x₁ + κx₂]/m, not (κx₂ − kx₁ − κx₁)/m."""
+    q = [s for s in coordinates if expr.has(s)]
+    if not q or not _small(expr):
+        return expr
+
+    def work() -> sp.Expr:
+        expanded = sp.expand(expr)
+        # linear: each ∂/∂q_k is free of every coordinate, and what is left holds none
+        # constant coefficients: free of every coordinate, rate and t (r̈ = r(θ̇² − k/m) stays as it is)
+        moving = moving_symbols(expr) | set(q)
+        coefficients = [sp.factor(sp.diff(expanded, s)) for s in q]
+        if any(c.free_symbols & moving for c in coefficients):
+            return expr
+        rest = sp.factor(sp.expand(expanded - sum(c * s for c, s in zip(coefficients, q, strict=True))))
+        if rest.free_symbols & moving:
+            return expr
+        parts = [c for c in coefficients if c != 0] + ([rest] if rest != 0 else [])
+        shared = {sp.fraction(sp.together(c))[1] for c in parts}
+        if len(shared) == 1 and (den := shared.pop()) != 1:
+            # the common denominator outside: [−(k + κ)x₁ + κx₂]/m
+            inside = sp.Add(*(sp.factor(c * den) * s for c, s in zip(coefficients, q, strict=True)), sp.factor(rest * den))
+            return sp.Mul(inside, sp.Pow(den, -1), evaluate=False)
+        return sp.Add(*(c * s for c, s in zip(coefficients, q, strict=True)), rest)
+
+    return within_budget(work, expr, FORM_WORK)

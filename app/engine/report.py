@@ -9,6 +9,7 @@ and a scene's reasons (app/scenes/reasons.py) and the document's placement of st
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Any
 
@@ -50,6 +51,25 @@ class Printer:
         shown = self.form(expr)
         with unbudgeted():  # printing must not eat the simplifications' share of the display budget
             return textbook.latex(shown, self.names, first)
+
+    def root(self, expr: Any) -> str:
+        """LaTeX of a quantity holding a cube or fourth root, as a textbook writes it: one root of a single
+        fraction, r₀ = (p_θ²/(m k))^{1/4}, never √|p_θ|/(∜m ∜k); else ``tex``."""
+        if isinstance(expr, sp.Expr) and expr.free_symbols:
+            # n: the root's degree, the least common multiple of the exponents' denominators
+            exponents = [e.exp for e in expr.atoms(sp.Pow) if e.exp.is_Rational and not e.exp.is_Integer]
+            n = sp.ilcm(*(int(e.q) for e in exponents)) if exponents else 1
+            if n in (3, 4):
+                power = sp.powsimp(sp.expand_power_base(expr**n, force=True), force=True)
+                # |p|² is p² for a real p
+                power = power.replace(
+                    lambda e: e.is_Pow and isinstance(e.base, sp.Abs) and e.exp.is_even,
+                    lambda e: e.base.args[0] ** e.exp,
+                )
+                power = sp.cancel(power)
+                if not any(not e.exp.is_Integer for e in power.atoms(sp.Pow)) and not power.atoms(sp.Abs):
+                    return rf"\left({self.tex(power)}\right)^{{1/{n}}}"
+        return self.tex(expr)
 
     def pair(self, expr: sp.Expr, first: sp.Symbol | None = None) -> dict[str, Any]:
         """An expression in the document: the text of its textbook form, the LaTeX of the same form, and the
@@ -188,6 +208,41 @@ def conserved_form(d: Derivation, pr: Printer, expr: sp.Expr) -> sp.Expr:
     return display(meaning.by_velocity(expr, d.table.qd))
 
 
+def _at_root(pr: Printer, expr: sp.Expr, r: sp.Symbol) -> str:
+    """LaTeX of ``expr`` at the root r₀: printed in r (the form a coordinate gets) with r renamed r₀ where its
+    name is a command (θ → θ₀); else the expression at the symbol r₀ is printed."""
+    name = pr.tex(r)
+    if re.fullmatch(r"\\[A-Za-z]+", name):
+        return re.sub(re.escape(name) + r"(?![A-Za-z_])", lambda _: name + "_{0}", pr.tex(expr))
+    return pr.tex(expr.xreplace({r: sp.Symbol(r.name + "0")}))
+
+
+def _divided_by(d: Derivation, shown: list[tuple[sp.Expr, str]]) -> str:
+    """How equations coupled through their accelerations are shown: each divided by the factor common to its
+    terms (the double pendulum's first by l₁, its second by m₂ l₂), said so that no reader wonders why they
+    are scaled differently."""
+    with unbudgeted():
+        scales = [sp.factor(sp.cancel(r / s)) for r, (s, _) in zip(d.equations.residuals, shown, strict=True)]
+    if any(s.free_symbols & {*d.table.q, *d.table.qd, *d.table.qdd} for s in scales):
+        return "."
+    said = [
+        f"the {plain_name(n)} equation by {textbook.unicode_text(s)}"
+        for n, s in zip(d.table.names, scales, strict=True)
+        if s != 1
+    ]
+    if not said:
+        return "."
+    return "; each is shown divided by the factor common to all its terms (" + ", ".join(said) + ")."
+
+
+def _common_factor(c: sp.Expr) -> sp.Expr:
+    """A sum with a symbol common to all its terms, written with it taken out: R(1 − cos θ) for R − R cos θ
+    (a sign alone is not taken out: −l₁ cos θ₁ − l₂ cos θ₂ stays)."""
+    f = sp.factor_terms(c)
+    rest = f.as_coeff_Mul()[1]
+    return f if isinstance(rest, sp.Mul) and any(a.is_Symbol for a in rest.args) else c
+
+
 def build_steps(d: Derivation) -> list[dict[str, str]]:
     m, eqs, en, red, table = d.mechanics, d.equations, d.energetics, d.reduction, d.table
     pr = Printer(table.latex_names())
@@ -204,7 +259,8 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         def vectors(letter: str, of_masses: Any) -> tuple[list[str], list[tuple[sp.Expr, ...]]]:
             """Each mass's vector (its position or its velocity) as a LaTeX row and as data."""
             rows = [
-                rf"\vec {letter}{label(i)} = \left({', '.join(pr.tex(c) for c in vector)}\right)"
+                # a common factor taken out, as a textbook writes a position: R(1 − cos θ), not −R cos θ + R
+                rf"\vec {letter}{label(i)} = \left({', '.join(pr.tex(_common_factor(c)) for c in vector)}\right)"
                 for i, vector in enumerate(of_masses)
             ]
             return rows, [tuple(vector) for vector in of_masses]
@@ -316,7 +372,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             + (
                 "; each equation is shown divided by its acceleration's coefficient."
                 if eqs.mass_matrix.is_diagonal()
-                else "."
+                else _divided_by(d, shown_equations)
             ),
             formed=True,
         )
@@ -325,16 +381,24 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         _step(
             "mass-matrix",
             "Mass matrix and forcing",
-            # one coordinate: a number and a function, never a 1×1 matrix in brackets
-            [rf"{Mt} = {pr.tex(pr.form(eqs.mass_matrix[0, 0]))}", rf"f = {pr.tex(pr.form(eqs.forcing[0]))}"]
+            # one coordinate: a number and a function, never a 1×1 matrix in brackets; a force linear in the
+            # coordinates grouped by coordinate: κx₂ − (k + κ)x₁
+            [
+                rf"{Mt} = {pr.tex(pr.form(eqs.mass_matrix[0, 0]))}",
+                rf"f = {pr.tex(pr.form(meaning.by_coordinate(eqs.forcing[0], table.q)))}",
+            ]
             if len(table.q) == 1
-            else [rf"{Mt} = {pr.tex(eqs.mass_matrix.applyfunc(pr.form))}", rf"f = {pr.tex(eqs.forcing.applyfunc(pr.form))}"],
-            [eqs.mass_matrix.tolist(), [display(x) for x in eqs.forcing]],
+            else [
+                rf"{Mt} = {pr.tex(eqs.mass_matrix.applyfunc(pr.form))}",
+                rf"f = {pr.tex(eqs.forcing.applyfunc(lambda x: pr.form(meaning.by_coordinate(x, table.q))))}",
+            ],
+            [eqs.mass_matrix.tolist(), [display(meaning.by_coordinate(x, table.q)) for x in eqs.forcing]],
             f"The equations are linear in the accelerations: {Mu} q̈ = f, with {Mu} the mass matrix (the Hessian of L in "
             "the velocities) and f the rest of each equation (the forces and the velocity terms) taken to the right.",
         )
     )
-    acc = [display(a) for a in eqs.accelerations] if eqs.closed_form else []
+    # an acceleration linear in the coordinates grouped by coordinate over its shared denominator (app.engine.meaning)
+    acc = [display(meaning.by_coordinate(a, table.q)) for a in eqs.accelerations] if eqs.closed_form else []
     steps.append(
         _step(
             "accelerations",
@@ -482,14 +546,21 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
             f"{unicode(red.coordinate)}.",
         )
     )
+    level_symbol = sp.Symbol(level, real=True)
+    # E − U_eff with E first and U_eff's pieces in the order the effective-potential step prints them
+    energy_left = pr.tex(level_symbol - effective_potential(d), level_symbol)
     out.append(
         _step(
             "time-integral",
             "Time as an integral",
-            [rf"t = \int \sqrt{{\frac{{m_\text{{eff}}}}{{2\,\left({level} - U_\text{{eff}}({rn})\right)}}}}\, d{rn}"],
+            [
+                rf"t = \int \sqrt{{\frac{{m_\text{{eff}}}}{{2\,\left({level} - U_\text{{eff}}({rn})\right)}}}}\, d{rn}",
+                # the same integral with this system's m_eff and U_eff written in (what a problem asks for)
+                rf" = \int \frac{{d{rn}}}{{\sqrt{{\frac{{2}}{{{pr.tex(red.effective_mass)}}}\left({energy_left}\right)}}}}",
+            ],
             red.time_integral,
-            f"Separating variables in the energy integral gives the time to reach each {unicode(red.coordinate)}, "
-            "with m_eff and U_eff as in the step before.",
+            f"Separating variables in the energy integral gives the time to reach each {unicode(red.coordinate)}; "
+            "the second form writes in this system's m_eff and U_eff.",
         )
     )
     omega = notation.letter("frequency", d)
@@ -499,7 +570,7 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
         # writes it (not the root put back into U_eff'')
         r0 = sp.Symbol(r.name + "0", real=True)
         at = steady.xreplace({r: r0})
-        rows = [rf"{rn}_0 = {pr.tex(e.position)}" for e in red.equilibria] + [rf"{omega}^2 = {pr.tex(at)}"]
+        rows = [rf"{rn}_0 = {pr.root(e.position)}" for e in red.equilibria] + [rf"{omega}^2 = {pr.tex(at)}"]
         sym: Any = [e.position for e in red.equilibria] + [at]
         momentum = unicode(red.momenta[0].name)
         why = (
@@ -507,10 +578,14 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
             f"U_eff′({unicode(r0.name)}) = 0 gives {momentum}² in terms of {unicode(r0.name)}, and ω² is written "
             f"with it, so it depends on {unicode(r0.name)} and the parameters alone."
             + (" It is positive: the steady motion is stable." if all(e.stable for e in red.equilibria) else "")
-            + (" It is negative: the steady motion is unstable." if all(e.stable is False for e in red.equilibria) else "")
+            + (
+                " It is negative: the steady motion is unstable."
+                if all(e.stable is False for e in red.equilibria)
+                else ""
+            )
         )
     elif red.equilibria:
-        rows = [rf"{rn}_0 = {pr.tex(e.position)},\quad {omega}^2 = {pr.tex(e.omega_squared)}" for e in red.equilibria]
+        rows = [rf"{rn}_0 = {pr.root(e.position)},\quad {omega}^2 = {pr.tex(e.omega_squared)}" for e in red.equilibria]
         sym = [(e.position, e.omega_squared) for e in red.equilibria]
         why = "Equilibria make U_eff′ vanish; about each, ω² = U_eff″/m_eff (oscillation when positive, instability when negative)."
     else:
@@ -520,9 +595,11 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
             sym = [red.equilibrium_condition]
             why = f"U_eff′ does not depend on {unicode(red.coordinate)} and is not zero, so there is no equilibrium."
         else:
+            # both rows at the root θ₀ (the frequency is U_eff″ there, not at every θ)
+            at_root = {r: sp.Symbol(r.name + "0")}
             rows = [
-                rf"U_\text{{eff}}'({rn}_0) = {pr.tex(red.equilibrium_condition.xreplace({r: sp.Symbol(r.name + '0')}))} = 0",
-                rf"{omega}^2 = \frac{{U_\text{{eff}}''}}{{m_\text{{eff}}}} = {pr.tex(pythagoras(red.omega_squared_at))}",
+                rf"U_\text{{eff}}'({rn}_0) = {pr.tex(red.equilibrium_condition.xreplace(at_root))} = 0",
+                rf"{omega}^2 = \frac{{U_\text{{eff}}''({rn}_0)}}{{m_\text{{eff}}}} = {_at_root(pr, pythagoras(red.omega_squared_at), r)}",
             ]
             sym = [red.equilibrium_condition, pythagoras(red.omega_squared_at)]
             why = (

@@ -155,7 +155,7 @@ def _where(e: Equilibrium, pr: Printer, d: Derivation) -> str:
     parts = []
     for name, value in e.position.items():
         exact = e.exact.get(name) if e.exact else None
-        parts.append(f"{pr.tex(sym[name])} = {pr.tex(exact) if exact is not None else _number(value)}")
+        parts.append(f"{pr.tex(sym[name])} = {pr.root(exact) if exact is not None else _number(value)}")
     held = [rf"{pr.tex(sp.Symbol(n))} = {_number(v)}" for n, v in e.momenta.items()]
     return r",\; ".join(parts + held)
 
@@ -426,7 +426,7 @@ def _beats_step(e: Equilibrium, pr: Printer, d: Derivation, number: int) -> dict
     ]
     why = (
         f"Started with {plain_name(d.table.names[0])} = {Au} and everything else at rest, the motion is half of each "
-        f"mode: cos A ± cos B written as products shows a fast oscillation at the mean frequency ({wu}₁ + {wu}₂)/2 "
+        f"mode: the sum and difference cos {wu}₁t ± cos {wu}₂t, written as products, show a fast oscillation at the mean frequency ({wu}₁ + {wu}₂)/2 "
         f"inside a slow envelope at ({wu}₂ − {wu}₁)/2. The motion passes from the first coordinate to the second and "
         f"back: the first is still and the second swings with the whole amplitude {Au} after π/({wu}₂ − {wu}₁), and "
         f"the first swings fully again after 2π/({wu}₂ − {wu}₁), the beat period (at the default parameters {_figures(math.pi / (w2n - w1n))} s and "
@@ -537,12 +537,17 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, n
     else:
         key = f"normal-modes:{number}"
         title = "Normal modes about " + about
+        # the method is said once, about the first equilibrium; the others say only what differs (their verdict)
         why = (
-            f"Near the equilibrium {Mu} {eu}̈ + {Ku} {eu} = 0, with {eu} the small displacement from it, {Mu} the mass "
-            f"matrix and {Ku} the Hessian of the potential there; {eu} = {au} cos {wu}t solves it when "
-            f"({Ku} − {wu}² {Mu}) {au} = 0, so each {wu}² is an eigenvalue of {Ku} relative to {Mu} and {au} its shape "
-            "(numbers at the default parameters)"
-            + (", the shapes of the motion without its velocity terms. " if moving else ". ")
+            (
+                f"Near the equilibrium {Mu} {eu}̈ + {Ku} {eu} = 0, with {eu} the small displacement from it, {Mu} the "
+                f"mass matrix and {Ku} the Hessian of the potential there; {eu} = {au} cos {wu}t solves it when "
+                f"({Ku} − {wu}² {Mu}) {au} = 0, so each {wu}² is an eigenvalue of {Ku} relative to {Mu} and {au} its "
+                "shape (numbers at the default parameters)"
+                + (", the shapes of the motion without its velocity terms. " if moving else ". ")
+            )
+            if number == next((i for i, x in enumerate(nm.equilibria, start=1) if not x.momenta), number)
+            else f"As about the first equilibrium, with this equilibrium's {Mu} and {Ku}. "
         )
     if e.linear is not None and e.linear.definite < 0:
         why += (

@@ -105,11 +105,13 @@ ROTATING_PARABOLA = Scene(
     panels=("effective-potential", "small-oscillations"),
     errata=(
         Erratum(
-            chapter="h = E when dr/dt (partial) = 0, i.e. the particle is not moving",
+            # the chapter's H is this page's h (its Hamiltonian, written in the velocities)
+            chapter="H = E if ∂r/∂t = 0 (the particle is not moving)",
             correct="E - h = m*omega**2*rho**2",
             reason=(
-                "What has to stand still is the constraint, not the particle. Here the wire turns, ∂r/∂t ≠ 0, and "
-                "E − h = p·∂r/∂t = m ω² ρ² even for a bead at rest on the wire."
+                "The chapter's H is the energy function h of this page. ∂r/∂t = 0 asks that the constraint stand "
+                "still, not the particle: here the wire turns, ∂r/∂t ≠ 0, and E − h = p·∂r/∂t = m ω² ρ² even for "
+                "a bead at rest on the wire."
             ),
             check="energy-minus-h",
         ),

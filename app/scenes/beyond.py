@@ -8,6 +8,8 @@ DOUBLE_PENDULUM = Scene(
     title="Double pendulum",
     section="4.9",
     family="double-pendulum",
+    # what the statement asks: the four equilibria and the modes about each, stated in Results
+    answers=("equilibria", "normal-modes"),
     beyond_chapter=True,
     summary="Two normal modes at the bottom, three unstable equilibria above it, and chaos at high energy.",
     statement=(
@@ -48,6 +50,8 @@ COUPLED_OSCILLATORS = Scene(
     title="Two masses between three springs",
     section="4.9",
     family="three-springs",
+    # what the statement asks: the modes, their frequencies and the beats, stated in Results
+    answers=("normal-modes", "beats"),
     beyond_chapter=True,
     summary="Two normal modes, in phase and in opposition; a weak coupling trades the energy back and forth in beats.",
     statement=(

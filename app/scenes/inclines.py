@@ -16,7 +16,7 @@ INCLINE_BLOCK = Scene(
     summary="Newton's law along a slope recovered from L = T − U with a single coordinate.",
     statement=(
         "A block of mass m slides without friction on a plane tilted at the angle α to the horizontal; the plane "
-        "is fixed. X is the distance of the block up the slope from a mark on it. Find the Lagrangian, the "
+        "is fixed. X is the distance of the block up the slope from the foot of the ramp. Find the Lagrangian, the "
         "equation of motion and the normal force of the plane."
     ),
     figure="A right-angled ramp rising at angle α, the block on its slope at distance X from the foot, X pointing uphill.",

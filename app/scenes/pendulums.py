@@ -5,6 +5,8 @@ from app.scenes.common import GRAVITY
 from app.scenes.types import Constraint, Erratum, Parameter, Particle, Scene, System
 
 MASS = Parameter("m", 1.0, "kg", 0.01, 100.0, "mass of the bob")
+# the spherical pendulum's statement speaks of a ball
+BALL = Parameter("m", 1.0, "kg", 0.01, 100.0, "mass of the ball")
 LENGTH = Parameter("R", 1.0, "m", 0.05, 100.0, "length of the string")
 DAMPING = Parameter("b", 0.3, "kg·m²/s", 0.0, 100.0, "damping coefficient: the generalized drag force is Q_θ = −b θ̇")
 
@@ -53,22 +55,24 @@ SIMPLE_PENDULUM = Scene(
         ),
         Erratum(
             chapter="tau = I omega = m R^2 g/R = m g R",
-            correct="tau = dL/dtheta = -m*g*R*sin(theta)",
+            # the torque as Γ (Taylor's letter): τ on this page is the action panel's duration
+            correct="Gamma = ∂L/∂theta = -m*g*R*sin(theta)",
             reason=(
                 "I ω is an angular momentum, and √(g/R) is a frequency rather than the bob's angular velocity. "
-                "The torque of gravity about the pivot is ∂L/∂θ = −m g R sin θ: it depends on the angle and "
-                "vanishes at the bottom."
+                "The torque of gravity about the pivot, written Γ here (τ on this page is a duration), is "
+                "∂L/∂θ = −m g R sin θ: it depends on the angle and vanishes at the bottom."
             ),
             check="dL/dq:theta",
         ),
         Erratum(
             chapter="theta_ddot + (g/R) sin(theta) = 0 is simple harmonic with omega = sqrt(g/R)",
-            correct="theta_ddot = -g*sin(theta)/R",
+            correct="theta_ddot = -g*theta/R",
             reason=(
-                "Because of sin θ the equation is not linear; it is simple harmonic with ω² = g/R only for small "
-                "swings (sin θ ≈ θ), and wide swings take longer."
+                "Because of sin θ the chapter's equation is not linear, so it is not simple harmonic. Only small "
+                "swings, where sin θ ≈ θ, obey the linear equation shown, simple harmonic with ω² = g/R; wide "
+                "swings take longer."
             ),
-            check="acceleration:theta",
+            check="linear-acceleration:theta",
         ),
     ),
 )
@@ -88,7 +92,7 @@ SPHERICAL_PENDULUM = Scene(
     figure="A sphere of radius R about the pivot, the ball at polar angle θ from the upward axis and azimuth φ.",
     system=System(
         coordinates=("theta", "phi"),
-        parameters=(MASS, GRAVITY, LENGTH),
+        parameters=(BALL, GRAVITY, LENGTH),
         particles=(Particle("m", ("R*sin(theta)*cos(phi)", "R*sin(theta)*sin(phi)", "R*cos(theta)"), "ball"),),
         potential="m*g*R*cos(theta)",
         cartesian_potential="m*g*z",
@@ -142,6 +146,7 @@ DAMPED_PENDULUM = Scene(
     family="pendulum",
     marks=("drag",),
     reasons=reasons.DAMPED_PENDULUM,
+    answers=("power",),  # the rate at which the energy decays
     summary="A force no potential describes enters as a generalized force Q and drains the energy.",
     statement=(
         "The simple pendulum again (bob of mass m, string of length R, θ from the bottom), now slowed by a drag "

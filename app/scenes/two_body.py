@@ -13,6 +13,13 @@ TABLETOP_SPRING = Scene(
     section="4.4",
     family="tabletop-spring",
     reasons=reasons.TABLETOP_SPRING,
+    # the time as an integral over r, the circular orbit and its radial frequency
+    answers=("time-integral", "reduced-equilibria"),
+    # the isotropic oscillator: x and y each oscillate at √(k/m), so r² = x² + y² returns at twice that rate
+    exact_frequency=(
+        "Here the prediction is exact at every amplitude: the particle's x and y each oscillate at √(k/m), so r "
+        "oscillates at 2√(k/m) however far it swings."
+    ),
     summary="A cyclic angle conserves angular momentum and folds the orbit into one radial coordinate.",
     statement=(
         "A particle of mass m moves on a frictionless horizontal table, tied to a fixed point of the table by a "
@@ -127,20 +134,23 @@ RAIL_TWO_BODY = Scene(
     t_end=10.0,
     errata=(
         Erratum(
-            chapter="action-reaction pairs: d/dx1 = d/dx2",
+            # the chapter prints the two derivatives with nothing to differentiate, and equal rather than opposite
+            chapter="action-reaction pairs ∂/∂x1 = ∂/∂x2",
             correct="∂L/∂x1 = -∂L/∂x2 = k*(x2 - x1 - l0)",
             reason=(
-                "U depends on x2 − x1 only, so ∂U/∂x1 = −∂U/∂x2: the spring's forces on the two masses are equal "
-                "and opposite, and cancel in the total momentum."
+                "The chapter's ∂/∂x₁ = ∂/∂x₂ says neither what is differentiated nor with which sign. U depends on "
+                "x₂ − x₁ only, so ∂L/∂x₁ = −∂L/∂x₂: the spring's forces on the two masses are equal and opposite, "
+                "and cancel in the total momentum."
             ),
             check="dL/dq:x1",
         ),
         Erratum(
-            chapter="P = dL/dX_dot = M m1_dot x1_dot + m2 x2_dot",
+            chapter="P = ∂L/∂X_dot = M m1_dot x1_dot + m2 x2_dot",
             correct="P = (m1 + m2)*X_dot = m1*x1_dot + m2*x2_dot",
             reason=(
-                "The momentum conjugate to the centre of mass is the total mass m₁ + m₂ times its velocity: the "
-                "total momentum."
+                "As printed, the chapter's right side has a dot on the mass m₁ (a mass does not change) and an M "
+                "it never defines (the total mass, it seems). The momentum conjugate to the centre of mass is the "
+                "total mass m₁ + m₂ times its velocity: the total momentum."
             ),
             check="transformed-momentum:X",
         ),
@@ -196,24 +206,28 @@ PULLEY = Scene(
     t_end=2.0,
     errata=(
         Erratum(
-            chapter="y1_dot = -g + (-4 m2 g)/(m1 + m4m1m2/M)",
+            chapter="y1_dot = -g + (-4 m2 g)/(m1 + m4 m1 m2/M)",
             correct="y1_ddot = -g + 4*m2*g/(m1 + m2 + 4*m1*m2/M)",
             reason=(
-                "The left side is an acceleration, not a velocity; the fraction is positive (a heavy M hauls the end "
-                "masses up) and its denominator is m1 + m2 + 4 m1 m2/M."
+                "The left side is an acceleration, not a velocity. The chapter's denominator names a mass m₄ the "
+                "set-up does not have (m₂ + 4 m₁ m₂/M run together, it seems); it is m₁ + m₂ + 4 m₁ m₂/M. And the "
+                "fraction is positive: a heavy M hauls the end masses up."
             ),
             check="acceleration:y1",
         ),
         Erratum(
-            chapter="y2_dot = -g + (-4 m1 g)/(m1 + m4m1m2/M)",
+            chapter="y2_dot = -g + (-4 m1 g)/(m1 + m4 m1 m2/M)",
             correct="y2_ddot = -g + 4*m1*g/(m1 + m2 + 4*m1*m2/M)",
-            reason="As for y1 with the two end masses swapped: an acceleration, a positive fraction, the same denominator.",
+            reason=(
+                "As for y₁ with the two end masses swapped: an acceleration, a positive fraction, and the "
+                "denominator m₁ + m₂ + 4 m₁ m₂/M in place of the chapter's m₁ + m₄ m₁ m₂/M."
+            ),
             check="acceleration:y2",
         ),
         Erratum(
-            chapter="Y_dot = g - 2(m1 + m2) g/(m1 + m4m1m2/M)",
+            chapter="Y_dot = g - (2(m1 + m2) g)/(m1 + m4 m1 m2/M)",
             correct="Y_ddot = g - 2*(m1 + m2)*g/(m1 + m2 + 4*m1*m2/M)",
-            reason="Again an acceleration (Ÿ = −(ÿ1 + ÿ2)/2), and the denominator is m1 + m2 + 4 m1 m2/M.",
+            reason="Again an acceleration (Ÿ = −(ÿ₁ + ÿ₂)/2), and the denominator is m₁ + m₂ + 4 m₁ m₂/M.",
             check="point-acceleration:3:z",
         ),
     ),

@@ -157,6 +157,10 @@ class Scene:
     so scenes drawn alike share one), ``marks`` the family's optional marks it adds (``drag``: the damping
     force's arrow), and ``reasons`` (from ``app/scenes/reasons.py``) explains its derivation's steps in its
     own terms, by step key.  A scene without a family is drawn from its particles, like a user's system.
+
+    ``answers`` names the steps (by key, as ``reasons`` does: ``normal-modes`` matches every
+    ``normal-modes:N``) that answer what the statement asks; the page's Results box states them, so an
+    answer is never only inside the folded bookkeeping.
     """
 
     id: str
@@ -175,3 +179,7 @@ class Scene:
     family: str = ""
     marks: tuple[str, ...] = ()
     reasons: Mapping[str, str] = field(default_factory=dict)
+    answers: tuple[str, ...] = ()
+    # where the small-oscillation frequency is exact at every amplitude, the sentence saying so and why (the
+    # small-oscillation panel says it in place of "holds as the amplitude goes to zero")
+    exact_frequency: str = ""

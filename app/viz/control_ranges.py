@@ -98,7 +98,8 @@ def damping_marks(doc: dict[str, Any]) -> dict[str, list[dict[str, Any]]]:
         w2 = e["modes"][0]["omega_squared"] if len(e["modes"]) == 1 else None
         if mass and w2 and w2 > 0:
             value = 2 * mass * math.sqrt(w2)
-            marks.setdefault(c, []).append({"value": value, "label": "critical damping"})
+            # critical for the equation linearised about the equilibrium: the full pendulum has no sharp threshold
+            marks.setdefault(c, []).append({"value": value, "label": "critical damping of the linearised motion"})
     return marks
 
 

@@ -137,7 +137,7 @@ def pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) 
     for cx in (left, right):
         svg.line(cx, ceiling, cx, ceiling + 24, INK, 1.5)
         svg.circle(cx, ceiling + 24, r, fill="#eef1f4")
-    y1, y2, ym = 150.0, 118.0, 170.0
+    y1, y2, ym = 150.0, 118.0, 150.0
     mid = (left + right) / 2
     svg.line(left - r, ceiling + 24, left - r, y1 - 16)
     svg.line(left + r, ceiling + 24, mid - r, ym)
@@ -157,6 +157,11 @@ def pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) 
     svg.text(left - r - 44, (base + y1) / 2, "y₁", ACCENT, 16)
     svg.arrow(right + r + 30, base, right + r + 30, y2, color=ACCENT)
     svg.text(right + r + 44 - 4, (base + y2) / 2, "y₂", ACCENT, 16)
+    # the third height, Y, of M's centre: the caption names y₁, y₂ and Y, so the figure marks all three
+    centre = ym + r + 22
+    svg.arrow(mid + 34, base, mid + 34, centre, color=ACCENT)
+    svg.line(mid + 17, centre, mid + 40, centre, GUIDE, 1, dash=True)
+    svg.text(mid + 48, (base + centre) / 2, "Y", ACCENT, 16)
     svg.arrow(mid, 48, mid, 84, color=PARAM)
     svg.text(mid + 12, 66, "g", PARAM)
     return svg

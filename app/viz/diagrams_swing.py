@@ -77,8 +77,10 @@ def spherical(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = (
     fx, fy = _view(ball[0], ball[1], 0.0, s, ox, oy)
     svg.line(bx, by, fx, fy, GUIDE, 1.2, dash=True)
     svg.line(ox, oy, fx, fy, GUIDE, 1.2, dash=True)
-    ax = _view(1.0, 0.0, 0.0, s, ox, oy)
-    svg.line(ox, oy, *ax, GUIDE, 1.2, dash=True)
+    # the x axis φ is measured from, drawn and named like z
+    ax = _view(1.3, 0.0, 0.0, s, ox, oy)
+    svg.arrow(ox, oy, *ax, color=GUIDE, width=1.5)
+    svg.text(ax[0] + 9, ax[1] + 2, "x", GUIDE, 14)
     svg.line(ox, oy, bx, by, width=2)
     svg.circle(ox, oy, 3.5)
     # theta: from the upward axis to the string; phi: along the equator from the x axis
@@ -117,7 +119,7 @@ def helix(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -
         if k == len(pts) - 1 or pts[k + 1][2] != behind:
             svg.polyline(run, "#a0a8b0" if behind else INK, 1.4 if behind else 2.2)
             run = [(x, y)]
-    k = 96  # one full turn up: the bead on the right-hand side, in front
+    k = 105  # just over one turn up: the bead in front, at φ = 2π + 3π/8 (its direction 3π/8 from x)
     bx, by = pts[k][0], pts[k][1]
     svg.circle(bx, by, 8, fill="#c9d8ea")
     svg.text(bx + 18, by - 10, "m", PARAM)
@@ -128,6 +130,21 @@ def helix(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -
     svg.arrow(ox, bottom + 22, ox + radius, bottom + 22, color=PARAM, width=1.5)
     svg.text(ox + radius / 2, bottom + 12, "R", PARAM)
     svg.text(ox + radius + 34, 60, "φ = α z", ACCENT, 15)
+    # seen from above (an inset): φ is the bead's angle about the axis from the x axis, where the wire
+    # starts at z = 0
+    phi = 2 * math.pi * turns * k / 240
+    cx, cy, rr = 56.0, 52.0, 30.0
+    svg.text(cx, cy - rr - 10, "from above", GUIDE, 11)
+    svg.circle(cx, cy, rr, fill="none", color=GUIDE, width=1, dash=True)
+    svg.arrow(cx, cy, cx + rr + 12, cy, color=GUIDE, width=1.2, head=6)
+    svg.text(cx + rr + 18, cy, "x", GUIDE, 13)
+    # the view from above has y pointing up the page
+    svg.line(cx, cy, cx + rr * math.cos(phi), cy - rr * math.sin(phi), GUIDE, 1)
+    svg.circle(cx + rr * math.cos(phi), cy - rr * math.sin(phi), 4, fill="#c9d8ea")
+    turn = phi % (2 * math.pi)
+    arc = [(cx + 16 * math.cos(a), cy - 16 * math.sin(a)) for a in [turn * i / 12 for i in range(13)]]
+    svg.polyline(arc, ACCENT, 1.6)
+    svg.text(cx + 25 * math.cos(turn / 2) + 2, cy - 25 * math.sin(turn / 2), "φ", ACCENT, 14)
     _gravity(svg, 286, 120)
     return svg
 

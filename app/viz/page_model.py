@@ -29,7 +29,8 @@ from app.viz.names import label
 from app.viz.panels import Facts, folded, oscillating_equilibria, shown, texts
 from app.viz.units import coordinate_units
 
-LONG_STEP = 320  # characters of LaTeX beyond which a step's math starts collapsed
+LONG_STEP = 160  # characters a reader sees (not LaTeX's) beyond which a step's math starts collapsed
+LONG_ROWS = 6  # lines of a display beyond which it starts collapsed, however short each line
 SLIDER_STEPS = 1000  # positions of a control's slider (the page's range inputs; static/js/controls.js reads them)
 # the page's menu of tolerances, written as powers of ten (1e-8)
 RTOLS = tuple(f"1e{round(math.log10(r))}" for r in limits.RTOL_MENU)
@@ -39,6 +40,8 @@ _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 def power_of_ten(value: str) -> str:
     """A tolerance as a reader writes it: 1e-8 → 10⁻⁸ (the menu's value stays 1e-8)."""
     return "10" + value.partition("e")[2].translate(_SUPERSCRIPT)
+
+
 DEFAULT_RTOL = f"1e{round(math.log10(limits.RTOL_DEFAULT))}"
 
 
@@ -51,19 +54,37 @@ def _pair_tree(pair: dict[str, Any] | None, names: Sequence[str]) -> Any:
     return document_tree(pair, names)
 
 
+# LaTeX that prints nothing a reader counts: sizing, environments, spacing and the bracing of groups
+_SILENT = re.compile(
+    r"\\(?:left|right|begin\{\w+\}|end\{\w+\}|mathrm|text|quad|qquad|tfrac|frac|dfrac|[,;:! ])|[{}&\s^_]"
+)
+
+
+def shown_length(tex: str) -> tuple[int, int]:
+    """How long a display is as a reader sees it: its lines, and its characters (a command such as
+    ``\\omega`` one character, markup none)."""
+    rows = re.sub(r"\\begin\{matrix\}.*?\\end\{matrix\}", "", tex).count("\\\\") + 1  # a matrix's rows are one line
+    return rows, len(_SILENT.sub("", re.sub(r"\\[A-Za-z]+", "x", _SILENT.sub("", tex))))
+
+
 def _steps(doc: dict[str, Any]) -> list[dict[str, Any]]:
-    return [
-        {
-            "number": i + 1,
-            "title": s["title"],
-            "latex": s["latex"],
-            "explanation": s["explanation"],
-            # a core step (L, the equations, the accelerations) is never folded: long ones are broken across lines
-            "long": len(s["latex"]) > LONG_STEP and s["key"] not in CORE_STEPS,
-            "core": s["key"] in CORE_STEPS,
-        }
-        for i, s in enumerate(doc["steps"])
-    ]
+    out = []
+    for i, s in enumerate(doc["steps"]):
+        rows, chars = shown_length(s["latex"])
+        out.append(
+            {
+                "number": i + 1,
+                "title": s["title"],
+                "latex": s["latex"],
+                "explanation": s["explanation"],
+                # folded only when long as read (two short lines never hide behind a button); a core step (L, the
+                # equations, the accelerations) is never folded: long ones are broken across lines
+                "long": (chars > LONG_STEP or rows > LONG_ROWS) and s["key"] not in CORE_STEPS,
+                "rows": rows,
+                "core": s["key"] in CORE_STEPS,
+            }
+        )
+    return out
 
 
 def letter_of(doc: dict[str, Any], meaning: str, default: str, form: str = "latex") -> str:
@@ -84,7 +105,30 @@ def nothing_conserved(doc: dict[str, Any]) -> str:
         (True, False): "a non-conservative force acts, so h changes",
         (False, True): "L depends explicitly on time, so h changes",
     }.get((forced, timed))
-    return f"Nothing is conserved here: {cause}, and no momentum stays constant." if cause else "Nothing is conserved here."
+    return (
+        f"Nothing is conserved here: {cause}, and no momentum stays constant."
+        if cause
+        else "Nothing is conserved here."
+    )
+
+
+def _answers(doc: dict[str, Any]) -> list[dict[str, Any]]:
+    """The steps that answer the scene's question (``Scene.answers``, by key as the reasons go: ``normal-modes``
+    is every ``normal-modes:N``), for the Results box; an explanation already given above is not repeated."""
+    keys = (doc.get("scene") or {}).get("answers") or []
+    said: set[str] = set()
+    out = []
+    for s in doc["steps"]:
+        if any(s["key"] == k or s["key"].startswith(k + ":") for k in keys):
+            out.append(
+                {
+                    "title": s["title"],
+                    "latex": s["latex"],
+                    "explanation": "" if s["explanation"] in said else s["explanation"],
+                }
+            )
+            said.add(s["explanation"])
+    return out
 
 
 def _summary(doc: dict[str, Any]) -> dict[str, Any]:
@@ -95,6 +139,8 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
     ]
     ddot = {c: latex(f"{c}_ddot") for c in q}
     return {
+        # what the statement asks, stated first (never only behind "Show all steps")
+        "answers": _answers(doc),
         "equations": [e["latex"] for e in doc["equations_of_motion"]],
         # none in closed form for a large system (listed in "skipped"): M⁻¹f
         "accelerations": [f"{ddot[c]} = {doc['accelerations'][c]['latex']}" for c in q]
@@ -146,6 +192,9 @@ def _transformed(doc: dict[str, Any]) -> list[dict[str, Any]] | None:
     add("Cyclic coordinates", [", ".join(sym.get(c, c) for c in tr.get("cyclic", []))] if tr.get("cyclic") else [])
     if "reduced_mass" in tr:
         add("Reduced mass", [rf"\mu = {tr['reduced_mass']['latex']}"])
+    if rel := tr.get("relative_motion"):
+        # the separation moves as one body of the reduced mass: what the rail's problem asks to show
+        add("Relative motion", [rel["equation"], rel["frequency"]])
     add("Accelerations", [rf"\ddot{{{sym.get(c, c)}}} = {e['latex']}" for c, e in tr.get("accelerations", {}).items()])
     add("Momenta", [f"p_{{{sym.get(c, c)}}} = {e['latex']}" for c, e in tr.get("momenta", {}).items()])
     conserved = []
@@ -189,12 +238,25 @@ def _plain(x: float) -> str:
 
 def unit_text(unit: str) -> str:
     """A unit as printed: powers as superscripts (m/s^2 → m/s², kg*m^2 → kg·m²)."""
-    return re.sub(r"\^(-?\d)", lambda m: m.group(1).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")), unit).replace("*", "·")
+    return re.sub(
+        r"\^(-?\d)", lambda m: m.group(1).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")), unit
+    ).replace("*", "·")
 
 
 def angles(doc: dict[str, Any]) -> set[str]:
     """Coordinates that are angles, as the derivation document records them."""
     return set(doc.get("angles") or [])
+
+
+def _polar(doc: dict[str, Any], q: str) -> bool:
+    """Whether the angle ``q`` is a polar angle: sin²q multiplies another coordinate's entry of the mass
+    matrix (m R² sin²θ for φ), so q = 0 and q = π are the poles of the coordinates."""
+    rows = doc.get("mass_matrix") or []
+    return any(
+        f"sin({q})**2" in str(rows[k][k].get("sympy", ""))
+        for k, c in enumerate(doc["coordinates"])
+        if c != q and k < len(rows)
+    )
 
 
 def _initial_controls(
@@ -218,7 +280,9 @@ def _initial_controls(
         angle = q in angular or units.get(q) == "rad"
         value, rate = float(initial.get(q, 0.0)), float(initial.get(f"{q}_dot", 0.0))
         if angle:
-            lo, hi = -math.pi, math.pi
+            # a polar angle (sin² of it scales another coordinate's inertia, as θ does φ's on a sphere) runs
+            # from pole to pole, [0, π]; any other angle goes once round, (−π, π]
+            lo, hi = (0.0 if _polar(doc, q) else -math.pi), math.pi
             lo, hi = min(lo, value), max(hi, value)
         else:
             size = 3 * max(scale, abs(value))
@@ -344,6 +408,8 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bo
         "initial": info.get("initial", {}),
         "t_end": info.get("t_end", DEFAULT_T_END),
         "panels": info["panels"],
+        # a frequency exact at every amplitude (the tabletop's radial motion), said in its own words
+        "exact_frequency": info.get("exact_frequency", ""),
         "trees": {
             "kinetic": _pair_tree(doc.get("kinetic"), names),
             "potential": _pair_tree(doc.get("potential"), names),

@@ -188,7 +188,10 @@ export class PhasePanel extends PreviewPanel {
     this.equilibria = found;
     this.section.dataset.separatrix = Es === null ? "" : String(Es);
     this.section.dataset.xrange = JSON.stringify([lo, hi]);
-    const kind = Es === null ? "" : E0 > Es
+    // a dissipative run has no level of its own: only the level it starts on (it then crosses the level sets)
+    const kind = Es === null ? "" : run.data.forced
+      ? ` It starts on the level h = ${fmt(E0)} J, ${E0 > Es ? "above" : "below"} the separatrix (${fmt(Es)} J).`
+      : E0 > Es
       ? (m.turn ? ` Its level h = ${fmt(E0)} J lies above the separatrix (${fmt(Es)} J): it goes over the top, round and round.` : ` Its level h = ${fmt(E0)} J lies above the separatrix (${fmt(Es)} J).`)
       : ` Its level h = ${fmt(E0)} J lies below the separatrix (${fmt(Es)} J): it swings back and forth.`;
     const forced = run.data.forced ? " A non-conservative force acts, so the run crosses the level sets instead of following one." : "";

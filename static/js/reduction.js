@@ -194,7 +194,7 @@ export class SmallOscillationsPanel extends PreviewPanel {
       // the measurement resolves the frequency to about the sampling's share of a period, and to the run's error
       const dt = run.t.length > 1 ? run.t[1] - run.t[0] : 0;
       const resolution = 100 * Math.max((measured * dt / (2 * Math.PI)) ** 2, (run.stats.error_estimate || 0) / Math.max(amp, 1e-300), 1e-9);
-      this.readout.textContent = `About ${lr} = ${fmt(eq.x)} ${unit}: predicted ${letter} = ${fmt(predicted)} rad/s, measured ${fmt(measured)} rad/s (${fmtResolved((100 * (measured - predicted)) / predicted, resolution)} %) at amplitude ${fmt(amp)} ${unit}. The prediction holds as the amplitude goes to zero.`;
+      this.readout.textContent = `About ${lr} = ${fmt(eq.x)} ${unit}: predicted ${letter} = ${fmt(predicted)} rad/s, measured ${fmt(measured)} rad/s (${fmtResolved((100 * (measured - predicted)) / predicted, resolution)} %) at amplitude ${fmt(amp)} ${unit}. ${run.data.exact_frequency || "The prediction holds as the amplitude goes to zero."}`;
     }
   }
 

@@ -45,7 +45,12 @@ export function constantOrRange(values, unit = "") {
   if (lo > hi) return "no finite value";
   // constant when the spread is below 10⁻⁹ of the size (the values' round-off) or the 4 shown digits agree
   if (hi - lo <= 1e-9 * Math.max(Math.abs(lo), Math.abs(hi)) || fmt(lo) === fmt(hi)) return `is constant: ${fmt((lo + hi) / 2)}${u}`;
-  return `ranges from ${fmt(lo)} to ${fmt(hi)}${u}`;
+  // a sampled end a thousand times smaller than the other is a zero the samples straddle (the helix's wire
+  // force toward the axis, m α² R ż², vanishes where ż changes sign): said as ≈ 0, not as a digit string
+  const small = (end, other) => Math.abs(end) < 1e-3 * Math.abs(other);
+  const from = lo >= 0 && small(lo, hi) ? "≈ 0" : fmt(lo);
+  const to = hi <= 0 && small(hi, lo) ? "≈ 0" : fmt(hi);
+  return `ranges from ${from} to ${to}${u}`;
 }
 
 /** "10⁻⁸": the power of ten nearest a positive number (an order of magnitude, for a glance). */

@@ -27,3 +27,26 @@ def test_the_top_is_at_pi_inside_the_wrapped_interval(page):
     # prof-a A10: "θ = −3.142 (unstable)" beside "angles are wrapped into (−π, π]"
     text = _readout(page, "simple-pendulum")
     assert "Equilibria in view: θ = π (unstable), θ = 0 (stable)." in text and "3.142" not in text
+
+
+def test_a_damped_run_names_only_the_level_it_starts_on(page):
+    # prof-c 5: "Its level H = 9.116 J lies below the separatrix" for a run that crosses the level sets
+    text = _readout(page, "damped-pendulum")
+    assert "It starts on the level H = " in text and "below the separatrix" in text
+    assert "Its level" not in text and "swings back and forth" not in text
+    # the undamped pendulum keeps its level
+    assert "Its level H = " in _readout(page, "simple-pendulum")
+
+
+def _small_oscillations(page, scene_id):
+    page.goto(f"/scenes/{scene_id}")
+    page.locator("#panel-small-oscillations").scroll_into_view_if_needed()
+    page.wait_for_function("document.querySelector('#panel-small-oscillations .readout')?.textContent.includes('measured')")
+    return page.locator("#panel-small-oscillations .readout").text_content()
+
+
+def test_the_tabletop_frequency_is_said_to_be_exact_at_every_amplitude(page):
+    # prof-c 30: 2√(k/m) is exact for the isotropic oscillator, not a limit as the amplitude goes to zero
+    text = _small_oscillations(page, "tabletop-spring")
+    assert "exact at every amplitude" in text and "goes to zero" not in text
+    assert "holds as the amplitude goes to zero" in _small_oscillations(page, "simple-pendulum")

@@ -148,8 +148,9 @@ PINNED = {  # fmt: skip
             "-kappa*x1/m + x2_ddot + x2*(k + kappa)/m",
         ],
         "accelerations": {
-            "x1": "(-k*x1 - kappa*x1 + kappa*x2)/m",
-            "x2": "(-k*x2 + kappa*x1 - kappa*x2)/m",
+            # grouped by coordinate (issue 40): κx₂ − (k + κ)x₁ over m
+            "x1": "(kappa*x2 + x1*(-k - kappa))/m",
+            "x2": "(kappa*x1 + x2*(-k - kappa))/m",
         },
     },
     "double-pendulum": {

@@ -11,7 +11,7 @@ from tests.scenes.common import forces
 
 SCENE_KEYS = {
     *("id", "title", "section", "summary", "statement", "figure", "coordinates", "parameters", "initial", "t_end"),
-    *("panels", "beyond_chapter", "events", "family", "marks"),
+    *("panels", "beyond_chapter", "events", "family", "marks", "answers", "exact_frequency"),
 }
 
 
@@ -28,6 +28,10 @@ def test_scene_block_and_errata(scene_id):
     s = SCENES[scene_id]
     assert set(doc["scene"]) == SCENE_KEYS
     assert doc["scene"]["panels"] == list(s.panels) and doc["scene"]["initial"] == s.initial
+    # each answer the Results box states names steps the document has (issue 40)
+    keys = [step["key"] for step in doc["steps"]]
+    assert doc["scene"]["answers"] == list(s.answers)
+    assert all(any(k == a or k.startswith(a + ":") for k in keys) for a in s.answers), (s.answers, keys)
     served = [{k: e[k] for k in ("chapter", "correct", "reason")} for e in doc["errata"]]
     assert served == [{"chapter": e.chapter, "correct": e.correct, "reason": e.reason} for e in s.errata]
     assert all(e["chapter_latex"] and e["correct_latex"] for e in doc["errata"])

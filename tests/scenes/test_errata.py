@@ -1,5 +1,7 @@
 """Each erratum's correct formula is what the engine derives (parsed from the text itself)."""
 
+import re
+
 import pytest
 import sympy as sp
 
@@ -20,6 +22,11 @@ def engine_result(scene_id: str, check: str):
     index = table.names.index(args[0]) if args and args[0] in table.names else None
     if kind == "acceleration":
         return eqs.accelerations[index]
+    if kind == "linear-acceleration":
+        # the acceleration linearised about rest at q = 0: what small swings obey
+        q, qd = table.q[index], table.qd[index]
+        acc = eqs.accelerations[index]
+        return sp.diff(acc, q).xreplace({q: 0, qd: 0}) * q
     if kind == "reduced-acceleration":
         return substitute_cyclic(eqs.accelerations[index], red)
     if kind == "reduced-force":
@@ -125,3 +132,49 @@ def test_the_chapters_versions_are_rejected(scene_id, check, chapter):
     ours = engine_result(scene_id, check)
     wrong = read(chapter)
     assert not numerically_equal(ours, wrong, free(ours, wrong))
+
+
+# names that belong in mathematics, never left in a quotation as words
+MATH_WORDS = {"partial", "sqrt", "dot", "ddot", "frac", "theta", "omega", "alpha", "phi", "rho", "tau", "kappa"}
+
+
+def _text_and_math(tex: str) -> tuple[list[str], str]:
+    """The \\text{…} runs of a formula, and the rest with every command taken out."""
+    texts = re.findall(r"\\text\{([^{}]*)\}", tex)
+    rest = re.sub(r"\\text\{[^{}]*\}|\\(?:begin|end)\{\w+\}", " ", tex)
+    return texts, re.sub(r"\\[A-Za-z]+", " ", rest)
+
+
+@pytest.mark.parametrize("scene_id", sorted(sid for sid, s in SCENES.items() if s.errata))
+def test_every_errata_quotation_is_typeset_mathematics(client, scene_id):
+    """What the chapter writes is quoted as mathematics (issue 40): ∂ as ∂, not the word "partial" in brackets;
+    every name a symbol of its own (m₄ m₁ m₂, never "m4m1m2" run together); words only in prose runs."""
+    errata = client.get(f"/api/scenes/{scene_id}/derivation").json()["errata"]
+    assert errata
+    for e in errata:
+        for tex in (e["chapter_latex"], e["correct_latex"]):
+            texts, math = _text_and_math(tex)
+            for run in texts:
+                assert not set(re.findall(r"[A-Za-z]+", run)) & MATH_WORDS, (scene_id, run)
+            # outside prose, letters come one at a time (a symbol, with its subscript), or as a differential dx
+            words = [w for w in re.findall(r"[A-Za-z]{2,}", math) if not re.fullmatch(r"d[A-Za-z]", w)]
+            assert words == [], (scene_id, tex)
+            # a digit straight after a letter is a name run together (m4m1m2): an index is a subscript, m_{4}
+            assert not re.search(r"[A-Za-z]\d", math), (scene_id, tex)
+
+
+def test_the_chapters_garbled_formulas_are_quoted_as_printed(client):
+    """The chapter's misprints are quoted legibly, and the reason says what is wrong with them."""
+    rail = client.get("/api/scenes/rail-two-body/derivation").json()["errata"]
+    assert r"\partial /\partial x_{1}" in rail[0]["chapter_latex"]
+    assert r"\dot{m}_{1}" in rail[1]["chapter_latex"] and "dot on the mass m₁" in rail[1]["reason"]
+    pulley = client.get("/api/scenes/pulley/derivation").json()["errata"]
+    assert all(r"m_{4}  m_{1}  m_{2}" in e["chapter_latex"] and r"\frac{" in e["chapter_latex"] for e in pulley)
+    assert "m₄" in pulley[0]["reason"]
+    parabola = client.get("/api/scenes/rotating-parabola/derivation").json()["errata"][0]
+    assert r"\partial r /\partial t" in parabola["chapter_latex"]
+    pendulum = client.get("/api/scenes/simple-pendulum/derivation").json()["errata"]
+    # the torque is Γ (τ is the action panel's duration) and a partial derivative
+    assert pendulum[1]["correct_latex"].startswith(r"\Gamma = \frac{\partial L}{\partial \theta}")
+    # the correction is the small-swing equation, not the chapter's own equation again
+    assert pendulum[2]["correct_latex"] == r"\ddot{\theta} = - \frac{g}{R} \theta"

@@ -32,3 +32,18 @@ def test_each_scene_draws_its_family_not_the_generic_figure(scene_id):
     particles = [(p.label, p.position) for p in s.system.particles]
     generic = diagrams.diagram("", s.title, s.figure, {}, dict(s.initial), s.system.coordinates, particles)
     assert card(scene_id) != generic and "coordinates: " in generic and "coordinates: " not in card(scene_id)
+
+
+def test_the_pulley_figure_marks_all_three_heights_its_caption_names():
+    # the caption says "heights y₁, y₂, Y measured upward": each is drawn, in the coordinates' colour
+    svg = card("pulley")
+    assert "Y measured upward" in SCENES["pulley"].figure
+    for name in ("y₁", "y₂", "Y"):
+        assert f">{name}</text>" in svg, name
+
+
+@pytest.mark.parametrize("scene_id", ["spherical-pendulum", "helix-bead"])
+def test_the_azimuth_is_drawn_from_a_named_x_axis(scene_id):
+    # φ is an angle from the x axis: the axis is drawn and named, and φ labels an arc from it
+    svg = card(scene_id)
+    assert ">x</text>" in svg and ">φ</text>" in svg

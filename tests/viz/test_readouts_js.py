@@ -69,9 +69,11 @@ def test_plots_build_every_axis_through_the_shared_helper():
 def test_constant_quantities_are_stated_as_constant():
     out = node(
         "summaries.js",
-        "(m) => [m.constantOrRange([0.8774, 0.8774, 0.87740000001], 'N'), m.constantOrRange([1, 2, 3], 'N')]",
+        "(m) => [m.constantOrRange([0.8774, 0.8774, 0.87740000001], 'N'), m.constantOrRange([1, 2, 3], 'N'),"
+        " m.constantOrRange([4.85e-5, 3, 18.8], 'N'), m.constantOrRange([-2, -1e-6], 'N')]",
     )
-    assert out == ["is constant: 0.8774 N", "ranges from 1 to 3 N"]
+    # a sampled minimum far below the maximum is a zero the samples straddle (issue 40: the helix's 4.85 × 10⁻⁵ N)
+    assert out == ["is constant: 0.8774 N", "ranges from 1 to 3 N", "ranges from ≈ 0 to 18.8 N", "ranges from −2 to ≈ 0 N"]
 
 
 def test_values_below_their_resolution_read_as_zero():
