@@ -14,6 +14,8 @@
  * axes, with the plot itself greyed: a few milliseconds instead of a Plotly redraw.
  */
 
+import { isFolded } from "./fold.js";
+
 export const COARSE = typeof matchMedia === "function" && matchMedia("(pointer: coarse)").matches;
 
 export const CONFIG = {
@@ -52,17 +54,24 @@ export const finite = (arr) => Array.from(arr).filter((v) => Number.isFinite(v))
 export const capital = (text) => text.charAt(0).toUpperCase() + text.slice(1);
 
 /** Panels that ask the server for work (a report, a section) do so only in view: ``panel.visible``
- *  turns true when the section nears the viewport, and the last run is drawn then. */
+ *  turns true when the section nears the viewport unfolded (fold.js: a phone folds its panels), and the
+ *  last run is drawn then. */
 export function drawWhenVisible(panel, section) {
   panel.visible = !("IntersectionObserver" in window);
   if (panel.visible) return;
-  const observer = new IntersectionObserver((entries) => {
-    if (!entries.some((e) => e.isIntersecting)) return;
+  let near = false;
+  const show = () => {
+    if (panel.visible || !near || isFolded(section)) return;
     observer.disconnect();
     panel.visible = true;
     if (panel.run) panel.draw(panel.run);
+  };
+  const observer = new IntersectionObserver((entries) => {
+    near = entries[entries.length - 1].isIntersecting;
+    show();
   }, { rootMargin: "200px" });
   observer.observe(section);
+  section.addEventListener("lagrange:unfold", show);
 }
 
 export function parts(section) {
