@@ -22,7 +22,9 @@ def action_step(d: Derivation) -> dict[str, str]:
         r"S[q] = \int_{t_0}^{t_1} L(q, \dot q, t)\,dt",
         r"\delta S = 0 \quad \text{for every } \delta q \text{ with } \delta q(t_0) = \delta q(t_1) = 0"
         if not forced
-        else r"\delta S + \int_{t_0}^{t_1} Q\cdot\delta q\,dt = 0 \quad \text{for every } \delta q "
+        # with forces Q the variation of S is minus their work; written δS = −∫ Q·δq dt, both rows start with
+        # their left side and their = signs line up (prof-c S12)
+        else r"\delta S = -\int_{t_0}^{t_1} Q\cdot\delta q\,dt \quad \text{for every } \delta q "
         r"\text{ with } \delta q(t_0) = \delta q(t_1) = 0",
     ]
     latex = r"\begin{aligned}" + r" \\ ".join(row.replace(" = ", " &= ", 1) for row in rows) + r"\end{aligned}"

@@ -4,8 +4,8 @@
  * .readout, .panel-tools), and Overlay: time cursors and "now" markers drawn in an SVG laid
  * over a plot, so that moving them never asks Plotly to lay the figure out again.
  *
- * Privacy: the mode bar offers only "download as PNG" and "reset axes"; nothing can be sent
- * to an outside service (no Chart Studio, no "Share").  On a coarse pointer (a phone) the
+ * No plot shows Plotly's tool bar (a book's figure has no camera or home icons; a double click resets
+ * the axes), so nothing offers to send a plot to an outside service (no Chart Studio, no "Share").  On a coarse pointer (a phone) the
  * plots do not zoom or pan on drag, so a swipe that starts on a plot scrolls the page;
  * a "Zoom" button in the panel's tools turns dragging on for that plot.
  *
@@ -20,8 +20,9 @@ export const COARSE = typeof matchMedia === "function" && matchMedia("(pointer: 
 
 export const CONFIG = {
   responsive: true, displaylogo: false, showSendToCloud: false, showEditInChartStudio: false, showLink: false,
-  scrollZoom: false, displayModeBar: COARSE ? false : "hover", modeBarButtons: [["toImage", "resetScale2d"]],
-  toImageButtonOptions: { format: "png", scale: 2 },
+  // no tool bar on any plot (a book's figure carries no camera or home icons, prof-c S12): a double click
+  // resets the axes after a zoom
+  scrollZoom: false, displayModeBar: false, doubleClick: "reset+autosize",
 };
 export const COLORS = { T: "#0b5cad", U: "#b34700", E: "#1b1f24", h: "#2e7d32", a: "#6a1b9a", b: "#00838f" };
 export const PALETTE = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a", "#00838f", "#8d6e00"];

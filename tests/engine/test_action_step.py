@@ -19,4 +19,7 @@ def test_first_step_is_the_action_with_L_in_it():
 def test_forces_join_the_principle_as_their_work():
     first = derivation_document("damped-pendulum")["steps"][0]
     assert r"Q\cdot\delta q" in first["latex"]
+    # δS = −∫ Q·δq dt: both rows are "left side &= …", so their = signs line up (prof-c S12)
+    rows = first["latex"].removeprefix(r"\begin{aligned}").removesuffix(r"\end{aligned}").split(r" \\ ")
+    assert [r.split("&=")[0].strip() for r in rows] == ["S[q]", r"\delta S"]
     assert r"Q\cdot" not in derivation_document("simple-pendulum")["steps"][0]["latex"]
