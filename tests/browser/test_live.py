@@ -7,6 +7,7 @@ from urllib.parse import urlsplit
 import pytest
 
 from app.scenes import SCENES
+from tests.browser.conftest import unfold_panels
 
 pytestmark = pytest.mark.browser
 
@@ -45,6 +46,7 @@ def test_no_horizontal_overflow_on_a_phone(phone, artifacts, path):
 def test_a_swipe_on_a_plot_scrolls_the_page(phone):
     phone.goto("/scenes/simple-pendulum")
     phone.wait_for_selector(READY, state="attached")
+    unfold_panels(phone, "#panel-energy")  # a phone shows the panels folded under the animation
     plot = phone.locator("[data-panel=energy] .plot")
     plot.scroll_into_view_if_needed()
     phone.wait_for_function("(el) => el.data && el.data.length > 0", arg=plot.element_handle())

@@ -6,6 +6,7 @@ from __future__ import annotations
 import pytest
 
 from app.scenes import SCENES
+from tests.browser.conftest import unfold_panels
 
 pytestmark = pytest.mark.browser
 
@@ -59,6 +60,7 @@ def test_the_energy_panel_fits_a_phone_after_scrolling_through(browser, live_ser
         page.evaluate(f"window.scrollTo(0, {y})")
         page.wait_for_timeout(100)
     page.locator("#panel-energy").scroll_into_view_if_needed()
+    unfold_panels(page, "#panel-energy")  # it starts folded under the animation
     page.wait_for_timeout(1500)
     box = page.locator("#panel-energy").bounding_box()
     assert box["x"] >= 0 and box["x"] + box["width"] <= 390, box
