@@ -38,6 +38,7 @@ const SETTLE_MS = 250; // the server's numbers are asked for once the input has 
 const CONTROLS = 4; // points of a trial path besides its two ends
 const RELAX_STEPS = 200; // steps of the relaxed path
 const FRAME_MS = 350; // per Newton step in the animation
+const REPLAY_MS = 1500; // the whole replay of Newton's steps at most
 
 export class ActionPanel {
   static needsUrls = true;
@@ -161,7 +162,7 @@ export class ActionPanel {
 
   async draw(run) {
     this.run = run;
-    if (!this.visible) return;
+    if (!this.visible) { this.readout.textContent = "The chart loads when this panel is in view."; return; }
     if (!this.fns) { await this.ask(true); return; } // the first answer brings the generated functions
     clearTimeout(this.restTimer);
     // while a slider is dragged every panel repaints from the browser's preview on each input; this one,
@@ -449,14 +450,22 @@ export class ActionPanel {
       ? { system: { ...this.system, parameters: (this.system.parameters || []).map((x) => ({ ...x, value: params[x.name] ?? x.value })) }, ...request }
       : { parameters: params, ...request };
     this.relaxButton.disabled = true; this.shootButton.hidden = true;
-    this.readout.textContent = "Relaxing: Newton's method on the discrete Euler–Lagrange equations…";
+    // while the server works, the readout says so and counts the seconds (a long τ takes a few)
+    const asked = performance.now();
+    const waiting = () => `Relaxing on the server: Newton's method on the discrete Euler–Lagrange equations, then a shooting solution to check the result (${((performance.now() - asked) / 1000).toFixed(0)} s so far)…`;
+    this.readout.textContent = waiting();
+    const ticker = setInterval(() => { if (!this.found) this.readout.textContent = waiting(); }, 1000);
     try {
-      const answer = await fetchJSON(`${this.url}/relax`, { body });
+      this.found = null;
+      const answer = await fetchJSON(`${this.url}/relax`, { body }).finally(() => clearInterval(ticker));
       this.found = answer;
-      // the iterates one after another, then the result beside the shooting solution
+      this.relaxSeconds = (performance.now() - asked) / 1000;
+      // the iterates one after another, then the result beside the shooting solution: the whole replay at most
+      // REPLAY_MS, however many steps Newton's method took
+      const pause = Math.min(FRAME_MS, REPLAY_MS / Math.max(1, answer.iterations.length));
       for (let f = 0; f < answer.iterations.length && this.finding && this.found === answer; f++) {
         this.frame = f; this.paintFind();
-        await new Promise((resolve) => setTimeout(resolve, FRAME_MS));
+        await new Promise((resolve) => setTimeout(resolve, pause));
       }
       this.frame = null;
       if (this.found === answer) this.paintFind();
@@ -501,9 +510,11 @@ export class ActionPanel {
       return;
     }
     if (this.frame !== null && this.frame !== undefined) {
+      // the answer is in: the server's steps are replayed, numbered out of their total
+      const total = f.iterations.length - 1, took = `the server took ${fmt(this.relaxSeconds)} s`;
       this.readout.textContent = this.frame === 0
-        ? "Relaxing: the trial path, sampled on the discrete grid…"
-        : `Relaxing: after Newton step ${this.frame} the path moves toward the one that makes the discrete action stationary…`;
+        ? `Replaying the relaxation (${took}): the trial path, sampled on the discrete grid…`
+        : `Replaying the relaxation (${took}): Newton step ${this.frame} of ${total}, the path moving toward the one that makes the discrete action stationary…`;
       return;
     }
     // the grey path's ends and starting rate: a relaxed motion with the same ends but another rate is a second true motion
