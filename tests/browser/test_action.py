@@ -282,3 +282,31 @@ def test_the_focus_label_keeps_clear_of_the_legend(browser, live_server, artifac
         page.locator(PANEL).screenshot(path=artifacts / f"action-focus-label-{width}.png")
     finally:
         context.close()
+
+
+def test_relax_at_a_long_tau_says_what_it_is_doing(page):
+    # prof-c 14: at τ = 10 s the panel still read "Relaxing: after Newton step 8 …" seconds after the click, with no
+    # way to tell the server's work from the page's replay of it
+    _open(page)
+    page.locator("#action-T").fill("10")
+    page.dispatch_event("#action-T", "input")
+    page.locator("#action-find").click()
+    page.locator("#action-relax").click()
+    page.wait_for_function(f"document.querySelector('{PANEL} .readout').textContent.startsWith('Replaying the relaxation')")
+    replay = page.locator(f"{PANEL} .readout").text_content()
+    assert "the server took" in replay
+    started = page.evaluate("performance.now()")
+    page.wait_for_function(f"document.querySelector('{PANEL}').dataset.relaxed")
+    # the replay of every Newton step lasts at most 1.5 s of pauses (plus each frame's drawing)
+    assert page.evaluate("performance.now()") - started < 6000
+    assert "Newton's method made the discrete action stationary" in page.locator(f"{PANEL} .readout").text_content()
+
+
+def test_a_lazy_panel_says_it_loads_when_in_view(page):
+    # prof-c 9: panels below the fold were blank until scrolled to
+    page.goto("/scenes/double-pendulum")
+    page.wait_for_selector('#run-status[data-state="ready"], #run-status[data-state="untrusted"]', state="attached")
+    for panel in ("#panel-action", "#panel-poincare"):
+        page.wait_for_function(
+            f"document.querySelector('{panel} .readout').textContent.includes('loads when this panel is in view')"
+        )
