@@ -10,10 +10,35 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine.derive import Derivation
+from app.engine.derive import LARGE_FROM, Derivation
 
 KEY = "action"
 TITLE = "The action S = ∫ L dt is stationary on the true path"
+
+
+def kinetic_focus_possible(d: Derivation) -> bool:
+    """Whether a true path of this system can reach a kinetic focus (a conjugate point).
+
+    The variations η about a true path obey the Jacobi equation d/dt(P η̇ + C η) = C^T η̇ + R η with
+    P = ∂²L/∂q̇², C = ∂²L/∂q̇∂q and R = ∂²L/∂q².  Where L is at most linear in the coordinates (R = 0), has no
+    product of a coordinate and a velocity (C = 0) and its mass matrix P is constant, it reads d/dt(P η̇) = 0:
+    the fields that start at η(0) = 0 are η = a t, which never vanish again, so no focus exists at any time
+    (a uniform field, constant forces).  Otherwise a focus may exist; the action panel finds where."""
+    q, qd, t = list(d.table.q), list(d.table.qd), d.table.t
+    L = d.mechanics.L
+    # a large system is not searched term by term (its L can be long): a focus is taken to be possible, which
+    # the action panel's numerical search then settles
+    if len(q) >= LARGE_FROM:
+        return True
+    if any(s in d.equations.mass_matrix.free_symbols for s in (*q, t)):
+        return True
+    for a in q:
+        first = sp.diff(L, a)
+        for b in (*q, *qd):
+            second = sp.diff(first, b)
+            if second != 0 and sp.expand(second) != 0:
+                return True
+    return False
 
 
 def action_step(d: Derivation) -> dict[str, str]:
@@ -22,15 +47,23 @@ def action_step(d: Derivation) -> dict[str, str]:
         r"S[q] = \int_{t_0}^{t_1} L(q, \dot q, t)\,dt",
         r"\delta S = 0 \quad \text{for every } \delta q \text{ with } \delta q(t_0) = \delta q(t_1) = 0"
         if not forced
-        else r"\delta S + \int_{t_0}^{t_1} Q\cdot\delta q\,dt = 0 \quad \text{for every } \delta q "
+        # with forces Q the variation of S is minus their work; written δS = −∫ Q·δq dt, both rows start with
+        # their left side and their = signs line up (prof-c S12)
+        else r"\delta S = -\int_{t_0}^{t_1} Q\cdot\delta q\,dt \quad \text{for every } \delta q "
         r"\text{ with } \delta q(t_0) = \delta q(t_1) = 0",
     ]
     latex = r"\begin{aligned}" + r" \\ ".join(row.replace(" = ", " &= ", 1) for row in rows) + r"\end{aligned}"
+    focus = (
+        "The true path is a minimum of S only up to the first kinetic focus; for longer times it is a saddle."
+        if kinetic_focus_possible(d)
+        else "Here L is at most linear in the coordinates and its mass matrix is constant, so no true path reaches "
+        "a kinetic focus: it is a minimum of S for every duration."
+    )
     text = (
         "Hamilton's principle: among all paths with the same ends, the true motion makes the action S stationary; a "
         "small change δq that vanishes at both ends changes S only at second order. The Euler–Lagrange equations "
-        "below are this condition written at every instant. The true path is a minimum of S only up to the first "
-        "kinetic focus; for longer times it is a saddle. The panel “The action” lets you vary the path and watch S."
+        f"below are this condition written at every instant. {focus} The panel “The action” lets you vary the path "
+        "and watch S."
     )
     if forced:
         text += " Here forces Q that no potential describes act, so they join the condition as the work ∫ Q·δq dt."

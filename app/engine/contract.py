@@ -7,6 +7,7 @@ from typing import Any, TypeVar
 import sympy as sp
 
 from app.engine import meaning, notation
+from app.engine.action_step import kinetic_focus_possible
 from app.engine.budget import Skipped, bounded, display_budget, display_work_left, is_zero, pythagoras, within_budget
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import LARGE_FROM, Derivation
@@ -171,6 +172,8 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "hamiltonian_conserved": en.h_conserved,
         "hamiltonian_conserved_reason": en.h_conserved_reason,
         "energy_minus_hamiltonian": pr.pair(en.energy_minus_h),
+        # whether a true path can reach a kinetic focus (app/engine/action_step.py): the action panel's words
+        "kinetic_focus_possible": kinetic_focus_possible(d),
         "effective_potential": None,
         "steps": bounded(
             "steps",

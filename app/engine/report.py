@@ -93,8 +93,12 @@ def _aligned(rows: list[str]) -> str:
     rows = [line for row in rows for line in broken_row(row)]
     if len(rows) == 1:
         return rows[0]
-    # rows holding a block of lines (an equation broken across lines) are set flush left, not at their '='
-    flush = any(row.startswith("\\begin{aligned}") for row in rows)
+    # rows holding a block of lines (an equation broken across lines) are set flush left, not at their '=';
+    # so are equations that each read "… = 0" (Euler–Lagrange equations): aligned at "= 0" their left sides
+    # start at ragged places (prof-c S12), flush left they read as a textbook stacks them
+    flush = any(row.startswith("\\begin{aligned}") for row in rows) or all(
+        row.endswith(" = 0") and row.count(" = ") == 1 for row in rows
+    )
     marked = [
         row.replace(" = ", " &= ", 1) if " = " in row and not flush and not row.startswith("\\quad") else "&" + row
         for row in rows

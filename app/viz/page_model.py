@@ -384,6 +384,11 @@ def _reduction(doc: dict[str, Any]) -> dict[str, Any] | None:
     return out if all(x is not None for x in essential) else None
 
 
+def _focus_possible(doc: dict[str, Any]) -> bool:
+    """The engine's verdict (app/engine/action_step.py); a document from before it counts as "possible"."""
+    return doc.get("kinetic_focus_possible", True) is not False
+
+
 def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bool = True) -> dict[str, Any]:
     names = _names(doc)
     # rad for an angle, m where the dimensions say so, nothing where they cannot tell (app/viz/units.py)
@@ -421,6 +426,10 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bo
         "conserved": conserved,
         "h_equals_e": doc["hamiltonian_equals_energy"],
         "forced": bool(doc.get("generalized_forces")),
+        # whether a true path can reach a kinetic focus (the action panel says none exists where it cannot)
+        "kinetic_focus_possible": _focus_possible(doc),
+        # each generalized force Q that no potential describes, by coordinate (the action panel's ∫ Q δq dt)
+        "forces": {q: _pair_tree(pair, names) for q, pair in (doc.get("generalized_forces") or {}).items()},
         "reduction": reduction,
         "constraint_forces": [
             {
@@ -533,7 +542,9 @@ def scene_page(
         "declared_panels": declared,
         "panels": panels,
         "folded_panels": closed,
-        "panel_text": texts(bool(doc.get("generalized_forces")), angles=bool(doc.get("angles"))),
+        "panel_text": texts(
+            bool(doc.get("generalized_forces")), angles=bool(doc.get("angles")), focus=_focus_possible(doc)
+        ),
         "diagram": diagram(
             info.get("family", ""),
             f"Set-up: {info.get('title', '')}",

@@ -112,6 +112,8 @@ class Panel:
     forced_text: str | None = None
     # a sentence added only where a coordinate is an angle
     angles_text: str | None = None
+    # the explanation where no true path reaches a kinetic focus, if it differs
+    no_focus_text: str | None = None
 
 
 PANELS: tuple[Panel, ...] = (
@@ -221,13 +223,20 @@ PANELS: tuple[Panel, ...] = (
         "being a minimum: it becomes a saddle of S.",
         "always (every system has an L)",
         lambda f: True,
+        # where no true path reaches a kinetic focus (app/engine/action_step.py decides, the derivation's first
+        # step says the same), the sentence about moving τ past one would be false
+        no_focus_text="Hamilton's principle: the true motion makes the action S = ∫ L dt stationary among paths "
+        "with the same ends. Drag the dashed path (or use ε) to vary one coordinate by ε sin(nπt/τ) over a time τ "
+        "(n = 1, 2, …: the shape); the lower plots show L along both paths and S against ε, flat at ε = 0. Here L "
+        "is at most linear in the coordinates and its mass matrix is constant, so there is no kinetic focus: the "
+        "true path is a minimum of S for every τ.",
         # with a force Q no potential describes, Hamilton's principle reads δS + ∫ Q δq dt = 0: S alone is not
         # stationary, and there is no kinetic focus of S to speak of
         forced_text="With a force that no potential describes, the true motion does not make S = ∫ L dt "
         "stationary: Hamilton's principle becomes δS + ∫ Q δq dt = 0, where Q is the generalized force. Drag the "
-        "dashed path (or use ε) to vary one coordinate by ε sin(nπt/τ) over a time τ; the lower plots show L along "
-        "both paths and S against ε. Its slope at ε = 0 is not zero: it equals −∫ Q η dt, the work the force "
-        "does along the variation, with the sign reversed.",
+        "dashed path (or use ε) to vary one coordinate q by δq = ε sin(nπt/τ) over a time τ; the lower plots show L "
+        "along both paths and S against ε. Its slope at ε = 0 is not zero: it equals −∫ Q sin(nπt/τ) dt, the work "
+        "the force does along the variation δq per unit of ε, with the sign reversed; the readout shows both.",
     ),
     Panel(
         "work-precision",
@@ -259,12 +268,12 @@ def folded(facts: Facts, names: Sequence[str]) -> list[str]:
     return [n for n, rule in rules.items() if rule is not None and not rule(facts)]
 
 
-def texts(forced: bool = False, angles: bool = True) -> dict[str, dict[str, str]]:
+def texts(forced: bool = False, angles: bool = True, focus: bool = True) -> dict[str, dict[str, str]]:
     """Title and explanation of every panel (for the templates); ``forced``: generalized forces Q act;
-    ``angles``: some coordinate is an angle."""
+    ``angles``: some coordinate is an angle; ``focus``: a true path can reach a kinetic focus."""
 
     def text(p: Panel) -> str:
-        said = p.forced_text if forced and p.forced_text else p.text
+        said = p.forced_text if forced and p.forced_text else p.no_focus_text if not focus and p.no_focus_text else p.text
         return f"{said} {p.angles_text}" if angles and p.angles_text else said
 
     return {p.name: {"title": p.title, "text": text(p)} for p in PANELS}

@@ -229,6 +229,12 @@ class DerivationDocument(BaseModel):
     hamiltonian_conserved: bool = Field(description="Whether h is conserved (dh/dt = −∂L/∂t + Σ Q q̇ = 0).")
     hamiltonian_conserved_reason: str
     energy_minus_hamiltonian: ExprPair
+    kinetic_focus_possible: bool = Field(
+        True,
+        description="Whether a true path can reach a kinetic focus: false where L is at most linear in the "
+        "coordinates, has no coordinate-velocity product and a constant mass matrix (the Jacobi fields are then "
+        "η = a t, which never vanish again), so the true path is a minimum of S for every duration.",
+    )
     effective_potential: EffectivePotential | None
     steps: list[Step]
     hamilton: Hamilton | None = None

@@ -22,6 +22,7 @@ import { fetchJSON } from "./api.js";
 import { axis, CONFIG, drawWhenVisible, layout, PALETTE, rateUnit } from "./plotkit.js";
 import { compileLagrangian, focus, liveAction, path } from "./action-live.js";
 import { verdict } from "./action-verdict.js";
+import { compile } from "./expr.js";
 import { compileRhs } from "./preview.js";
 import { fmt, table } from "./summaries.js";
 
@@ -37,6 +38,7 @@ const SETTLE_MS = 250; // the server's numbers are asked for once the input has 
 const CONTROLS = 4; // points of a trial path besides its two ends
 const RELAX_STEPS = 200; // steps of the relaxed path
 const FRAME_MS = 350; // per Newton step in the animation
+const REPLAY_MS = 1500; // the whole replay of Newton's steps at most
 
 export class ActionPanel {
   static needsUrls = true;
@@ -69,8 +71,11 @@ export class ActionPanel {
     tools.insertAdjacentHTML("beforeend", `
       <div class="action-controls" style="display:flex;flex-wrap:wrap;gap:0.4rem 1rem;align-items:center">
         ${names.length > 1 ? group(`<label for="${id("coordinate")}">Vary</label> <select id="${id("coordinate")}">${names.map((q, i) => `<option value="${i}">${this.label(q)}</option>`).join("")}</select>`) : ""}
+        <span class="action-vary" style="display:contents">
         ${group(`<label for="${id("k")}">Shape n</label> <select id="${id("k")}">${Array.from({ length: 6 }, (_, j) => `<option value="${j + 1}">${j + 1}</option>`).join("")}</select>`)}
         ${group(`<label for="${id("eps")}">ε</label> <input type="range" id="${id("eps")}" min="-1" max="1" step="0.01" value="0"> <output id="${id("eps-value")}" for="${id("eps")}"></output>`)}
+        </span>
+        <p class="action-find-note hint" id="${id("find-note")}" hidden>In “Find the path” the trial path is set by its points, so the shape n and ε are not used (press “Back to ε” for them).</p>
         ${group(`<button type="button" id="${id("find")}" aria-pressed="false">Find the path</button> <button type="button" id="${id("relax")}" hidden>Relax</button>`)}
         <button type="button" id="${id("from-shooting")}" hidden>Start from the shooting solution</button>
         ${group(`<label for="${id("T")}">Duration τ</label> <input type="range" id="${id("T")}" min="${this.tEnd / 200}" max="${this.tEnd}" step="${this.tEnd / 200}" value="${this.T}"> <output id="${id("T-value")}" for="${id("T")}"></output>`)}
@@ -79,6 +84,8 @@ export class ActionPanel {
     this.TInput = tools.querySelector(`#${id("T")}`);
     this.TOut = tools.querySelector(`#${id("T-value")}`);
     this.epsOut = tools.querySelector(`#${id("eps-value")}`);
+    this.varyControls = tools.querySelector(".action-vary");
+    this.findNote = tools.querySelector(`#${id("find-note")}`);
     this.findButton = tools.querySelector(`#${id("find")}`);
     this.relaxButton = tools.querySelector(`#${id("relax")}`);
     this.findButton.addEventListener("click", () => this.toggleFind());
@@ -155,7 +162,7 @@ export class ActionPanel {
 
   async draw(run) {
     this.run = run;
-    if (!this.visible) return;
+    if (!this.visible) { this.readout.textContent = "The chart loads when this panel is in view."; return; }
     if (!this.fns) { await this.ask(true); return; } // the first answer brings the generated functions
     clearTimeout(this.restTimer);
     // while a slider is dragged every panel repaints from the browser's preview on each input; this one,
@@ -200,6 +207,25 @@ export class ActionPanel {
     this.epsOut.textContent = `${fmt(this.eps)}${unit ? ` ${unit}` : ""}`;
     this.paint();
     this.section.dataset.recompute = (performance.now() - started).toFixed(1);
+  }
+
+  /** ∫ Q sin(nπt/τ) dt along the true path (Simpson on its even samples), Q the varied coordinate's generalized
+   *  force from its own expression tree; null where the page has none. */
+  work(p, T) {
+    const q = this.data.coordinates[this.coordinate], tree = this.data.forces?.[q];
+    const Q = tree ? compile(tree) : null;
+    if (!Q) return null;
+    const names = this.data.coordinates, n = names.length, N = p.t.length - 1;
+    const params = this.setup().params, w = (this.shape * Math.PI) / T;
+    const f = Array.from(p.t, (t, i) => {
+      const env = { ...params, t };
+      names.forEach((name, j) => { env[name] = p.Y[i][j]; env[`${name}_dot`] = p.Y[i][n + j]; });
+      return Q(env) * Math.sin(w * t);
+    });
+    if (N % 2 !== 0 || !f.every(Number.isFinite)) return null;
+    let sum = f[0] + f[N];
+    for (let i = 1; i < N; i++) sum += (i % 2 ? 4 : 2) * f[i];
+    return (sum * (T / N)) / 3;
   }
 
   settle() {
@@ -259,8 +285,10 @@ export class ActionPanel {
     // the server looks for the focus up to τ only; the browser's search reaches the end of the run, so a focus
     // past τ comes from it (else the panel said "no kinetic focus before 10 s" at τ = 1 s and t* = 1.57 s at τ = 2 s)
     const forced = Boolean(this.data.forced);
+    // where no true path can reach a kinetic focus (the engine's verdict, the same the derivation states) none is sought
+    const never = this.data.kinetic_focus_possible === false;
     // with a force Q, S alone is not stationary and its kinetic focus means nothing: none is marked or named
-    const tStar = forced ? null : s && s.conjugate_time !== null && s.conjugate_time !== undefined ? s.conjugate_time : this.focusAt;
+    const tStar = forced || never ? null : s && s.conjugate_time !== null && s.conjugate_time !== undefined ? s.conjugate_time : this.focusAt;
     // the browser's S(ε) - S(0) (the same quadrature for both) on top of the shown S(0)
     const Snow = S0 + (live.now.S - live.truth.S);
     // the tangent at ε = 0: flat by Hamilton's principle, but with a force Q its slope is dS/dε = −∫ Q η dt
@@ -283,12 +311,14 @@ export class ActionPanel {
       shapes.push({ type: "line", xref: "x", yref: "paper", x0: tStar, x1: tStar, y0: 0.62, y1: 1, line: { color: "#c62828", width: 2, dash: "dot" } });
     }
     const lay = layout({
-      height: 520, hovermode: false, dragmode: false, showlegend: true,
-      xaxis: axis("t (s)", { domain: [0, 1], anchor: "y", range: [0, T] }), yaxis: axis(`${lq} (${unit})`, { domain: [0.62, 1] }),
-      xaxis2: axis("t (s)", { domain: [0, 0.42], anchor: "y2", range: [0, T] }), yaxis2: axis("L (J)", { domain: [0, 0.4], anchor: "x2" }),
-      xaxis3: axis("ε", { domain: [0.64, 1], anchor: "y3", nticks: 5 }), yaxis3: axis("S (J·s)", { domain: [0, 0.4], anchor: "x3" }),
+      // the paths' plot gets the larger share (a phone's legend takes two lines above it); ε ticks stay upright
+      height: 580, hovermode: false, dragmode: false, showlegend: true,
+      xaxis: axis("t (s)", { domain: [0, 1], anchor: "y", range: [0, T] }), yaxis: axis(`${lq} (${unit})`, { domain: [0.56, 1] }),
+      xaxis2: axis("t (s)", { domain: [0, 0.42], anchor: "y2", range: [0, T] }), yaxis2: axis("L (J)", { domain: [0, 0.36], anchor: "x2" }),
+      xaxis3: axis("ε", { domain: [0.64, 1], anchor: "y3", nticks: 4, tickangle: 0 }), yaxis3: axis("S (J·s)", { domain: [0, 0.36], anchor: "x3" }),
       shapes,
-      annotations: tStar !== null && tStar !== undefined && tStar <= T ? [{ x: tStar, y: 1, xref: "x", yref: "paper", text: "kinetic focus t*", showarrow: false, font: { color: "#c62828", size: 12 }, yanchor: "bottom" }] : [],
+      // the label inside the upper plot, beside its line, on the side with more room: above the plot it sat on the legend
+      annotations: tStar !== null && tStar !== undefined && tStar <= T ? [{ x: tStar, y: 1, xref: "x", yref: "paper", text: "kinetic focus t*", showarrow: false, font: { color: "#c62828", size: 12 }, yanchor: "top", xanchor: tStar > T / 2 ? "right" : "left", xshift: tStar > T / 2 ? -4 : 4, bgcolor: "rgba(255, 255, 255, 0.85)" }] : [],
     });
     const moved = this.drawn && this.drawn.path === live.path && this.drawn.curve === curve && this.drawn.T === T;
     if (moved && this.plot.data?.length === traces.length) {
@@ -303,22 +333,33 @@ export class ActionPanel {
     this.section.dataset.kind = kind;
     this.section.dataset.s0 = String(S0);
     this.section.dataset.sNow = String(Snow);
-    const focusWords = forced ? "" : tStar === null || tStar === undefined
+    const focusWords = forced ? "" : never
+      ? "No true path of this system reaches a kinetic focus, at any τ: L is at most linear in the coordinates and its mass matrix is constant."
+      : tStar === null || tStar === undefined
       ? `No kinetic focus before ${fmt(this.tEnd)} s.`
       : `The first kinetic focus (conjugate point) of this start is at t* = ${fmt(tStar)} s${tStar <= T ? ", marked on the time axis" : ""}.`;
     let verdict;
     const pastFocus = tStar !== null && tStar !== undefined && tStar < T;
     if (kind === "minimum" && pastFocus) {
       // the shapes tried all raise S, but past the focus some variation lowers it: never call it a minimum there
-      verdict = `With τ = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S: the sine shapes tried `
-        + "all raise S, but some other variation with the same ends lowers it. S is still stationary: its tangent at ε = 0 stays flat.";
-    } else if (kind === "minimum") verdict = `With τ = ${fmt(T)} s, before any kinetic focus, the true path is a minimum of S: every variation with the same ends raises it.`;
+      verdict = `With τ = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S, though the sine shapes tried `
+        + "all raise it: Jacobi's theorem gives a variation with the same ends that lowers S (the field that vanishes at 0 and at t*, "
+        + "bent a little), and it is not among these shapes. To see it: “Find the path”, then Relax, counts the directions of change "
+        + "that lower the discrete action. S is still stationary: its tangent at ε = 0 stays flat.";
+    } else if (kind === "minimum" && never) verdict = `With τ = ${fmt(T)} s the true path is a minimum of S: every variation with the same ends raises it.`;
+    else if (kind === "minimum") verdict = `With τ = ${fmt(T)} s, before any kinetic focus, the true path is a minimum of S: every variation with the same ends raises it.`;
     else if (kind === "saddle") verdict = `With τ = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S: it is a saddle. ${this.lowering(live.second)} S is still stationary: its tangent at ε = 0 stays flat.`;
     else verdict = `With τ = ${fmt(T)} s every variation tried lowers S: the true path is a maximum among them.`;
     if (this.data.forced) {
-      // δS + ∫ Q δq dt = 0 on the true path, so with δq = ε η: dS/dε at ε = 0 is −∫ Q η dt, not zero
-      verdict = "A force that no potential describes acts here, so the true path makes δS + ∫ Q δq dt vanish rather than "
-        + "making S stationary: S(ε) is not flat at ε = 0, and its slope there is −∫ Q η dt, the work of Q along the variation with the sign reversed.";
+      // δS + ∫ Q δq dt = 0 on the true path, so with δq = ε sin(nπt/τ): dS/dε at ε = 0 = −∫ Q sin(nπt/τ) dt, not zero.
+      // Both sides are shown: the slope of S(ε), and the integral of Q from its own formula along the true path
+      const work = this.work(live.path, T);
+      const sine = this.shape === 1 ? "sin(πt/τ)" : `sin(${this.shape}πt/τ)`;
+      const Qname = `Q${this.data.coordinates.length > 1 ? `_${lq}` : ""}`;
+      const per = unit ? ` J·s/${unit}` : " J·s";
+      const check = work === null ? "" : ` Here dS/dε at ε = 0 = ${fmt(slope)}${per} (the slope of S(ε)), and −∫ ${Qname} ${sine} dt = ${fmt(-work)}${per} (${Qname} from its formula along the true path).`;
+      verdict = `The variation is δ${lq} = ε ${sine}, zero at both ends. A force that no potential describes acts here, so the true path makes δS + ∫ ${Qname} δ${lq} dt vanish rather than `
+        + `making S stationary: S(ε) is not flat at ε = 0, and its slope there is −∫ ${Qname} ${sine} dt, the work of ${Qname} along the variation per unit of ε with the sign reversed.${check}`;
     }
     const second = s ? s.second_variation : live.secondVariation;
     const diff = Snow - S0;
@@ -343,7 +384,12 @@ export class ActionPanel {
     this.findButton.setAttribute("aria-pressed", String(this.finding));
     this.findButton.textContent = this.finding ? "Back to ε" : "Find the path";
     this.relaxButton.hidden = !this.finding;
+    // the shape n and ε vary the true path; in "Find the path" they do nothing, so they go, and a line says why
     this.epsInput.disabled = this.finding;
+    this.varyControls.hidden = this.finding;
+    this.varyControls.style.display = this.finding ? "none" : "contents";
+    this.varyControls.querySelector("select").disabled = this.finding;
+    this.findNote.hidden = !this.finding;
     this.found = null; this.frame = null; this.seed = null;
     this.shootButton.hidden = true;
     if (this.finding) this.resetControls();
@@ -404,14 +450,22 @@ export class ActionPanel {
       ? { system: { ...this.system, parameters: (this.system.parameters || []).map((x) => ({ ...x, value: params[x.name] ?? x.value })) }, ...request }
       : { parameters: params, ...request };
     this.relaxButton.disabled = true; this.shootButton.hidden = true;
-    this.readout.textContent = "Relaxing: Newton's method on the discrete Euler–Lagrange equations…";
+    // while the server works, the readout says so and counts the seconds (a long τ takes a few)
+    const asked = performance.now();
+    const waiting = () => `Relaxing on the server: Newton's method on the discrete Euler–Lagrange equations, then a shooting solution to check the result (${((performance.now() - asked) / 1000).toFixed(0)} s so far)…`;
+    this.readout.textContent = waiting();
+    const ticker = setInterval(() => { if (!this.found) this.readout.textContent = waiting(); }, 1000);
     try {
-      const answer = await fetchJSON(`${this.url}/relax`, { body });
+      this.found = null;
+      const answer = await fetchJSON(`${this.url}/relax`, { body }).finally(() => clearInterval(ticker));
       this.found = answer;
-      // the iterates one after another, then the result beside the shooting solution
+      this.relaxSeconds = (performance.now() - asked) / 1000;
+      // the iterates one after another, then the result beside the shooting solution: the whole replay at most
+      // REPLAY_MS, however many steps Newton's method took
+      const pause = Math.min(FRAME_MS, REPLAY_MS / Math.max(1, answer.iterations.length));
       for (let f = 0; f < answer.iterations.length && this.finding && this.found === answer; f++) {
         this.frame = f; this.paintFind();
-        await new Promise((resolve) => setTimeout(resolve, FRAME_MS));
+        await new Promise((resolve) => setTimeout(resolve, pause));
       }
       this.frame = null;
       if (this.found === answer) this.paintFind();
@@ -456,9 +510,11 @@ export class ActionPanel {
       return;
     }
     if (this.frame !== null && this.frame !== undefined) {
+      // the answer is in: the server's steps are replayed, numbered out of their total
+      const total = f.iterations.length - 1, took = `the server took ${fmt(this.relaxSeconds)} s`;
       this.readout.textContent = this.frame === 0
-        ? "Relaxing: the trial path, sampled on the discrete grid…"
-        : `Relaxing: after Newton step ${this.frame} the path moves toward the one that makes the discrete action stationary…`;
+        ? `Replaying the relaxation (${took}): the trial path, sampled on the discrete grid…`
+        : `Replaying the relaxation (${took}): Newton step ${this.frame} of ${total}, the path moving toward the one that makes the discrete action stationary…`;
       return;
     }
     // the grey path's ends and starting rate: a relaxed motion with the same ends but another rate is a second true motion

@@ -15,6 +15,8 @@
  * the browser tests look for.
  */
 
+import { breakDisplay } from "./breaking.js";
+
 export function typeset(root = document) {
   const katex = window.katex;
   if (!katex) return 0;
@@ -51,18 +53,28 @@ let widths = null;
 export function markWide(root = document) {
   if (typeof ResizeObserver === "undefined") return;
   // a box that just appeared may first be typeset with a font still loading: decide again once it is in
-  const again = (el) => { fitOrScroll(el); if (document.fonts) document.fonts.ready.then(() => fitOrScroll(el)); };
+  const again = (el) => { fitOrScroll(el); if (document.fonts) document.fonts.ready.then(() => fitOrScroll(el, true)); };
   widths ??= new ResizeObserver((entries) => { for (const e of entries) again(e.target); });
   const boxes = [...root.querySelectorAll(".math-display")];
   // decided at once as well (the observer reports only at the next frame): a box typeset here is a keyboard
   // region by the time typeset() returns, not a frame later
   for (const el of boxes) { widths.observe(el); fitOrScroll(el); }
   // KaTeX's fonts widen a formula without resizing its box: decide again once they are in
-  if (document.fonts) document.fonts.ready.then(() => boxes.forEach(fitOrScroll));
+  if (document.fonts) document.fonts.ready.then(() => boxes.forEach((el) => fitOrScroll(el, true)));
 }
 
-function fitOrScroll(el) {
+/**
+ * A formula wider than its box is broken across lines (breaking.js), decided again whenever the box's width
+ * changes (a phone turned, a window resized) or the fonts arrive; what still overflows scrolls.
+ */
+function fitOrScroll(el, fonts = false) {
   if (el.offsetParent === null) return; // hidden: decided when it shows
+  const width = String(el.clientWidth);
+  // the new typesetting changes the box's height, which the observer reports: decided once per width
+  if (el.dataset.typeset === "1" && (fonts || el.dataset.fitWidth !== width)) {
+    el.dataset.fitWidth = width;
+    breakDisplay(el, window.katex);
+  }
   const wide = el.scrollWidth > el.clientWidth + 1;
   if (wide) {
     el.tabIndex = 0;

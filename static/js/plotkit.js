@@ -4,8 +4,8 @@
  * .readout, .panel-tools), and Overlay: time cursors and "now" markers drawn in an SVG laid
  * over a plot, so that moving them never asks Plotly to lay the figure out again.
  *
- * Privacy: the mode bar offers only "download as PNG" and "reset axes"; nothing can be sent
- * to an outside service (no Chart Studio, no "Share").  On a coarse pointer (a phone) the
+ * No plot shows Plotly's tool bar (a book's figure has no camera or home icons; a double click resets
+ * the axes), so nothing offers to send a plot to an outside service (no Chart Studio, no "Share").  On a coarse pointer (a phone) the
  * plots do not zoom or pan on drag, so a swipe that starts on a plot scrolls the page;
  * a "Zoom" button in the panel's tools turns dragging on for that plot.
  *
@@ -14,12 +14,15 @@
  * axes, with the plot itself greyed: a few milliseconds instead of a Plotly redraw.
  */
 
+import { isFolded } from "./fold.js";
+
 export const COARSE = typeof matchMedia === "function" && matchMedia("(pointer: coarse)").matches;
 
 export const CONFIG = {
   responsive: true, displaylogo: false, showSendToCloud: false, showEditInChartStudio: false, showLink: false,
-  scrollZoom: false, displayModeBar: COARSE ? false : "hover", modeBarButtons: [["toImage", "resetScale2d"]],
-  toImageButtonOptions: { format: "png", scale: 2 },
+  // no tool bar on any plot (a book's figure carries no camera or home icons, prof-c S12): a double click
+  // resets the axes after a zoom
+  scrollZoom: false, displayModeBar: false, doubleClick: "reset+autosize",
 };
 export const COLORS = { T: "#0b5cad", U: "#b34700", E: "#1b1f24", h: "#2e7d32", a: "#6a1b9a", b: "#00838f" };
 export const PALETTE = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a", "#00838f", "#8d6e00"];
@@ -52,17 +55,24 @@ export const finite = (arr) => Array.from(arr).filter((v) => Number.isFinite(v))
 export const capital = (text) => text.charAt(0).toUpperCase() + text.slice(1);
 
 /** Panels that ask the server for work (a report, a section) do so only in view: ``panel.visible``
- *  turns true when the section nears the viewport, and the last run is drawn then. */
+ *  turns true when the section nears the viewport unfolded (fold.js: a phone folds its panels), and the
+ *  last run is drawn then. */
 export function drawWhenVisible(panel, section) {
   panel.visible = !("IntersectionObserver" in window);
   if (panel.visible) return;
-  const observer = new IntersectionObserver((entries) => {
-    if (!entries.some((e) => e.isIntersecting)) return;
+  let near = false;
+  const show = () => {
+    if (panel.visible || !near || isFolded(section)) return;
     observer.disconnect();
     panel.visible = true;
     if (panel.run) panel.draw(panel.run);
+  };
+  const observer = new IntersectionObserver((entries) => {
+    near = entries[entries.length - 1].isIntersecting;
+    show();
   }, { rootMargin: "200px" });
   observer.observe(section);
+  section.addEventListener("lagrange:unfold", show);
 }
 
 export function parts(section) {

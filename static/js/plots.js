@@ -29,7 +29,7 @@ class TimePanel extends PreviewPanel {
     const traces = top.map((s) => line(run.t, s.values, s.name, s.color, s.dash));
     for (const s of bottom || []) traces.push({ ...line(run.t, s.values, s.name, s.color, s.dash), yaxis: "y2", showlegend: false });
     const grid = bottom
-      ? { yaxis: axis(yTitle, { domain: [0.42, 1], ...(extra.yaxis || {}) }), yaxis2: axis(bottomTitle, { domain: [0, 0.3] }), xaxis: axis("t (s)", { anchor: "y2" }), height: 380 }
+      ? { yaxis: axis(yTitle, { domain: [0.42, 1], ...(extra.yaxis || {}) }), yaxis2: axis(bottomTitle, { domain: [0, 0.3], nticks: 3 }), xaxis: axis("t (s)", { anchor: "y2" }), height: 380 }
       : { yaxis: axis(yTitle), xaxis: axis("t (s)") };
     react(this, traces, layout({ ...grid, shapes: extra.shapes || [] }));
   }

@@ -25,7 +25,8 @@ export class PoincarePanel {
 
   async draw(run) {
     this.run = run;
-    if (!this.visible || !this.urls.poincare) return;
+    if (!this.urls.poincare) return;
+    if (!this.visible) { this.readout.textContent = "The chart loads when this panel is in view."; return; }
     const request = { parameters: run.request.parameters || {}, initial: run.request.initial || {} };
     const key = JSON.stringify(request);
     this.section.setAttribute("aria-busy", "true");

@@ -10,12 +10,14 @@ import { foldSteps, printReady, whenTypeset } from "./derivation.js";
 import { fetchJSON } from "./api.js";
 import { connectSimulation } from "./simulation.js";
 import { keyboardScroll } from "./scrollboxes.js";
+import { foldPanels } from "./fold.js";
 
 const data = JSON.parse(document.getElementById("scene-data").textContent);
 foldSteps(document);
 printReady();
 whenTypeset(document);
 keyboardScroll(document);
+foldPanels(document);
 
 const root = document.getElementById("simulation");
 if (root) {

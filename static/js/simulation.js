@@ -30,6 +30,7 @@ import { Player } from "./animation.js";
 import { bindControls, controlRange, readRequest } from "./controls.js";
 import { EnergyBars } from "./energybars.js";
 import { compile } from "./expr.js";
+import { isFolded } from "./fold.js";
 import { createPanel } from "./plots.js";
 import { compileRhs, integrate } from "./preview.js";
 import { fmt, statusLine } from "./summaries.js";
@@ -116,9 +117,12 @@ export class SimulationView {
         this.player = new Player(section, data.mechanism, { onFrame: (i) => this.setIndex(i), onDrag, controls });
       }
     }
+    // panels near the viewport; of those, the ones not folded (fold.js, a phone) are visible and drawn
+    this.near = new Set();
     this.visible = new Set();
     this.observer = "IntersectionObserver" in window
       ? new IntersectionObserver((entries) => this.seen(entries), { rootMargin: "100px" }) : null;
+    root.addEventListener("lagrange:unfold", () => this.seen([]));
     this.ready = plotly.then(() => {
       for (const section of root.querySelectorAll("[data-panel]")) {
         const kind = section.dataset.panel;
@@ -126,15 +130,17 @@ export class SimulationView {
         const panel = createPanel(kind, section, data, urls);
         if (!panel) continue;
         this.panels.push(panel);
-        if (this.observer) this.observer.observe(section); else this.visible.add(panel.section);
+        if (this.observer) this.observer.observe(section); else this.near.add(panel.section);
       }
+      if (!this.observer) this.seen([]);
     });
   }
 
   seen(entries) {
     for (const e of entries) {
-      if (e.isIntersecting) this.visible.add(e.target); else this.visible.delete(e.target);
+      if (e.isIntersecting) this.near.add(e.target); else this.near.delete(e.target);
     }
+    this.visible = new Set([...this.near].filter((s) => !isFolded(s)));
     for (const p of this.panels) if (this.visible.has(p.section) && p.dirty) this.drawPanel(p);
   }
 
@@ -173,13 +179,14 @@ export class SimulationView {
         p.dirty = run;
         if (this.visible.has(p.section)) this.drawPanel(p);
       }
-      // after the server's run, panels out of view are drawn while the browser is idle
+      // after the server's run, panels out of view are drawn while the browser is idle (a folded one has no
+      // size to draw into: it is drawn when unfolded)
       if (source === "server") {
-        const later = this.panels.filter((p) => p.dirty === run);
+        const later = this.panels.filter((p) => p.dirty === run && !isFolded(p.section));
         const next = () => {
           const p = later.shift();
           if (!p || this.run !== run) return;
-          if (p.dirty === run) this.drawPanel(p);
+          if (p.dirty === run && !isFolded(p.section)) this.drawPanel(p);
           idle(next);
         };
         idle(next);

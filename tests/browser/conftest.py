@@ -71,6 +71,14 @@ def page(browser, live_server):
     context.close()
 
 
+def unfold_panels(page, selector: str = ".panels > section.panel") -> None:
+    """Open the plot panels a phone shows folded under the animation (static/js/fold.js); nothing on a wide page."""
+    page.evaluate(
+        "(sel) => { for (const b of document.querySelectorAll(sel + ' > h3 > button.fold[aria-expanded=false]')) b.click(); }",
+        selector,
+    )
+
+
 @pytest.fixture(scope="session")
 def artifacts() -> Path:
     ARTIFACTS.mkdir(exist_ok=True)

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import pytest
 
+from tests.browser.conftest import unfold_panels
+
 pytestmark = pytest.mark.browser
 
 PANEL = "#panel-action"
@@ -14,6 +16,7 @@ SERVER = f"document.querySelector('{PANEL}')?.dataset.source === 'server'"
 def _open(page, path="/scenes/simple-pendulum"):
     page.goto(path)
     page.locator(PANEL).scroll_into_view_if_needed()
+    unfold_panels(page, PANEL)  # on a phone the plot panels start folded under the animation
     page.wait_for_function(SERVER)
 
 
@@ -200,7 +203,13 @@ def test_a_forced_system_claims_no_stationary_S_and_no_kinetic_focus(page):
     # prof-a A7: the damped pendulum's panel said S is stationary and marked a kinetic focus of S
     _open(page, "/scenes/damped-pendulum")
     readout = page.locator(f"{PANEL} .readout").text_content()
-    assert "δS + ∫ Q δq dt vanish" in readout and "−∫ Q η dt" in readout
+    # prof-c 6 and S2: the variation has the panel's own letter, defined in a line (no undefined η) ...
+    assert "The variation is δθ = ε sin(πt/τ), zero at both ends" in readout and "η" not in readout
+    assert "δS + ∫ Q δθ dt vanish" in readout
+    # ... and the claimed slope is shown beside its check: −∫ Q sin(πt/τ) dt from Q's own formula (−b θ̇)
+    slope_said = float(readout.split("Here dS/dε at ε = 0 = ")[1].split(" J·s/rad")[0].replace("−", "-"))
+    work_said = float(readout.split("−∫ Q sin(πt/τ) dt = ")[1].split(" J·s/rad")[0].replace("−", "-"))
+    assert slope_said != 0 and work_said == pytest.approx(slope_said, rel=2e-3), (slope_said, work_said)
     assert "kinetic focus" not in readout and "minimum" not in readout
     assert page.evaluate(f"document.querySelector('{PANEL} .plot').layout.shapes.length") == 0
     assert page.locator("#action-find").is_hidden()  # relaxing would make S alone stationary
@@ -211,3 +220,93 @@ def test_a_forced_system_claims_no_stationary_S_and_no_kinetic_focus(page):
     assert slope == pytest.approx(stated, rel=1e-3) and slope != 0
     assert "  " not in readout
     assert not page.console_errors
+
+
+def test_no_kinetic_focus_is_promised_where_none_exists(page):
+    # prof-c 19 and 26: the helix's and incline's panel said "Move τ past the kinetic focus … saddle" while the
+    # derivation says a uniform field has none; both now come from the engine's one verdict
+    for path in ("/scenes/helix-bead", "/scenes/incline-block"):
+        _open(page, path)
+        text = page.locator(f"{PANEL} .panel-text").text_content()
+        assert "past the kinetic focus" not in text and "there is no kinetic focus" in text, text
+        longest = float(page.locator("#action-T").get_attribute("max"))
+        page.locator("#action-T").fill(str(longest / 4))  # a long τ, within the run (the block reaches the foot later)
+        page.dispatch_event("#action-T", "input")
+        page.wait_for_function(SERVER)
+        readout = page.locator(f"{PANEL} .readout").text_content()
+        assert "reaches a kinetic focus, at any τ" in readout and "before any kinetic focus" not in readout, readout
+        assert page.evaluate(f"document.querySelector('{PANEL} .plot').layout.shapes.length") == 0
+    # where a focus exists the sentence stays
+    _open(page)
+    assert "Move τ past the kinetic focus" in page.locator(f"{PANEL} .panel-text").text_content()
+    assert not page.console_errors
+
+
+def test_find_the_path_hides_the_shape_and_eps_with_a_reason(page):
+    # prof-c 13: after "Find the path", Shape n and ε stayed on screen and did nothing
+    _open(page)
+    assert page.locator("#action-k").is_visible() and page.locator("#action-eps").is_visible()
+    page.locator("#action-find").click()
+    assert page.locator("#action-k").is_hidden() and page.locator("#action-eps").is_hidden()
+    assert page.locator("#action-k").is_disabled() and page.locator("#action-eps").is_disabled()
+    note = page.locator("#action-find-note")
+    assert note.is_visible() and "shape n and ε are not used" in note.text_content()
+    page.locator("#action-find").click()  # "Back to ε"
+    assert page.locator("#action-k").is_visible() and page.locator("#action-eps").is_enabled()
+    assert note.is_hidden()
+
+
+@pytest.mark.parametrize("width", [1366, 390])
+def test_the_focus_label_keeps_clear_of_the_legend(browser, live_server, artifacts, width):
+    # prof-c 12: at τ = 2 s the red "kinetic focus t*" sat on the legend entry "your path (drag it)"
+    context = browser.new_context(base_url=live_server, viewport={"width": width, "height": 844})
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    try:
+        _open(page)
+        page.locator("#action-T").fill("2")
+        page.dispatch_event("#action-T", "input")
+        page.wait_for_function(f"{SERVER} && document.querySelector('{PANEL}').dataset.kind === 'saddle'")
+        boxes = page.evaluate(
+            f"""() => {{ const plot = document.querySelector('{PANEL} .plot');
+                 const box = (el) => {{ const r = el.getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; }};
+                 return {{ legend: [...plot.querySelectorAll('.legend .traces')].map(box),
+                           label: [...plot.querySelectorAll('.annotation')].map(box),
+                           ticks: [...plot.querySelectorAll('.xaxislayer-above .x3tick text')].map((t) => t.getAttribute('transform') || '') }}; }}"""
+        )
+        (label,) = boxes["label"]
+        for entry in boxes["legend"]:
+            apart = label[2] <= entry[0] or entry[2] <= label[0] or label[3] <= entry[1] or entry[3] <= label[1]
+            assert apart, (label, entry)
+        assert not any("rotate" in t for t in boxes["ticks"]), boxes["ticks"]  # the ε ticks stay upright
+        page.locator(PANEL).screenshot(path=artifacts / f"action-focus-label-{width}.png")
+    finally:
+        context.close()
+
+
+def test_relax_at_a_long_tau_says_what_it_is_doing(page):
+    # prof-c 14: at τ = 10 s the panel still read "Relaxing: after Newton step 8 …" seconds after the click, with no
+    # way to tell the server's work from the page's replay of it
+    _open(page)
+    page.locator("#action-T").fill("10")
+    page.dispatch_event("#action-T", "input")
+    page.locator("#action-find").click()
+    page.locator("#action-relax").click()
+    page.wait_for_function(f"document.querySelector('{PANEL} .readout').textContent.startsWith('Replaying the relaxation')")
+    replay = page.locator(f"{PANEL} .readout").text_content()
+    assert "the server took" in replay
+    started = page.evaluate("performance.now()")
+    page.wait_for_function(f"document.querySelector('{PANEL}').dataset.relaxed")
+    # the replay of every Newton step lasts at most 1.5 s of pauses (plus each frame's drawing)
+    assert page.evaluate("performance.now()") - started < 6000
+    assert "Newton's method made the discrete action stationary" in page.locator(f"{PANEL} .readout").text_content()
+
+
+def test_a_lazy_panel_says_it_loads_when_in_view(page):
+    # prof-c 9: panels below the fold were blank until scrolled to
+    page.goto("/scenes/double-pendulum")
+    page.wait_for_selector('#run-status[data-state="ready"], #run-status[data-state="untrusted"]', state="attached")
+    for panel in ("#panel-action", "#panel-poincare"):
+        page.wait_for_function(
+            f"document.querySelector('{panel} .readout').textContent.includes('loads when this panel is in view')"
+        )

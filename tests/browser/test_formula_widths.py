@@ -1,6 +1,6 @@
 """No typeset formula wider than its box: every scene page with every step shown, and the playground's
-double pendulum, at 1366×768 (nothing may overflow) and 390×844 with touch (a formula may only be wider
-than its box inside a box that scrolls, that the keyboard can reach and that shows it goes on)."""
+double pendulum, at 1366×768 (nothing may overflow) and 390×844 with touch (a formula is broken across lines where it can, and may only
+be wider than its box inside a box that scrolls, that the keyboard can reach and that shows it goes on)."""
 
 from __future__ import annotations
 
@@ -32,8 +32,9 @@ MEASURE = """async () => {
       box: el.clientWidth,
       scrolls: ['auto', 'scroll'].includes(style.overflowX),
       focusable: el.tabIndex >= 0 && !!el.getAttribute('aria-label'),
-      // the visible cue that it goes on: the right edge faded (data-more, site.css)
-      cue: (el.dataset.more || '').includes('right') && (style.maskImage || style.webkitMaskImage || 'none') !== 'none',
+      // the visible cue that it goes on: the right edge faded and a round arrow there (data-more, site.css)
+      cue: (el.dataset.more || '').includes('right') && (style.maskImage || style.webkitMaskImage || 'none') !== 'none'
+        && style.backgroundImage.includes('svg'),
     });
   }
   return out;

@@ -8,6 +8,7 @@ import re
 import pytest
 
 from app.scenes import SCENES
+from tests.browser.conftest import unfold_panels
 
 pytestmark = pytest.mark.browser
 
@@ -43,7 +44,8 @@ def test_no_noise_after_play(browser, live_server, scene_id):
     page.wait_for_selector(f'{READY}, #run-status[data-state="untrusted"]', state="attached")
     page.click("[data-panel^=animation] button[data-action=play]")
     page.wait_for_timeout(1500)
-    # every panel drawn: scroll through the page
+    # every panel drawn: unfold them (a phone folds them under the animation) and scroll through the page
+    unfold_panels(page)
     page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
     page.wait_for_timeout(600)
     text = page.inner_text("main")

@@ -6,6 +6,8 @@ import unicodedata
 
 import pytest
 
+from tests.browser.conftest import unfold_panels
+
 pytestmark = pytest.mark.browser
 
 STEP = '.practice-step[data-key="{}"]'
@@ -190,12 +192,17 @@ def test_panels_that_give_away_a_step_are_folded_until_it_is_shown(page, artifac
     page.set_viewport_size({"width": 390, "height": 844})
     page.goto("/scenes/simple-pendulum?practice")
     page.wait_for_selector(STEP.format("omega_squared"))
+    unfold_panels(page)  # a phone folds the plot panels under the animation: opened, they still fold what gives away
     conventions = page.locator("#panel-constraint-force .conventions")
     readout = page.locator("#panel-small-oscillations .readout")
     assert conventions.count() == 1 and conventions.is_hidden() and readout.is_hidden()
     fold = page.locator("#panel-small-oscillations .gives-away")
     steps = page.locator(".practice-step h3").all_inner_texts()
-    number = next(k for k, key in enumerate(page.locator(".practice-step").evaluate_all("s => s.map(x => x.dataset.key)")) if key == "omega_squared")
+    number = next(
+        k
+        for k, key in enumerate(page.locator(".practice-step").evaluate_all("s => s.map(x => x.dataset.key)"))
+        if key == "omega_squared"
+    )
     assert fold.inner_text() == f"Show (gives away step {number + 1}: {steps[number]})"
     page.locator("#panel-small-oscillations").screenshot(path=artifacts / "practice-folded-390.png")
     # shown by the student's choice of the panel's button, or once the step is shown
@@ -267,5 +274,9 @@ def test_an_edited_answer_greys_its_old_verdict_and_an_unreadable_one_clears_the
     assert preview.locator(".katex").count() == 0
     # checked again: the new verdict, without the stale line
     answer(page, "kinetic", "m*R**2*theta_dot**2")
-    page.wait_for_function("document.querySelector('.practice-step[data-key=kinetic] .practice-verdict').dataset.verdict === 'incorrect'")
-    assert verdict.locator(".verdict-stale-note").count() == 0 and "verdict-stale" not in (verdict.get_attribute("class") or "")
+    page.wait_for_function(
+        "document.querySelector('.practice-step[data-key=kinetic] .practice-verdict').dataset.verdict === 'incorrect'"
+    )
+    assert verdict.locator(".verdict-stale-note").count() == 0 and "verdict-stale" not in (
+        verdict.get_attribute("class") or ""
+    )
