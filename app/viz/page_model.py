@@ -14,6 +14,7 @@ import re
 from collections.abc import Mapping, Sequence
 from typing import Any
 
+from app.engine.dimensions import kind_of_unit
 from app.engine.names import latex, prose
 from app.engine.report import CORE_STEPS
 from app.engine.trees import TreeError, maybe_of_text, of_text
@@ -234,14 +235,9 @@ def _marks(found: Sequence[dict[str, Any]], unit: str) -> list[dict[str, Any]]:
     return out
 
 
-# What a parameter without a description is, by its unit (so that a label never repeats the name: "m m").
-KIND_BY_UNIT = {"kg": "a mass", "m": "a length", "N/m": "a spring constant", "m/s^2": "an acceleration",
-                "m/s²": "an acceleration", "s": "a time", "1/s": "a rate", "rad/s": "an angular velocity",
-                "rad": "an angle", "N": "a force", "kg/s": "a drag coefficient"}  # fmt: skip
-
-
 def _described(info: dict[str, Any]) -> str:
-    return info.get("description") or KIND_BY_UNIT.get((info.get("unit") or "").strip(), "a parameter")
+    """What a parameter without a description is, by its unit (so that a label never repeats the name: "m m")."""
+    return info.get("description") or kind_of_unit(info.get("unit") or "") or "a parameter"
 
 
 def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any]]]) -> list[dict[str, Any]]:
