@@ -261,7 +261,10 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
                 "Potential energy",
                 [f"U = {pr.tex(m.U)}"],
                 m.U,
-                "The potential energy depends on positions only.",
+                # a U with explicit t (a driven support, a field that changes) is said to have it
+                "The potential energy depends on positions only."
+                if not m.U.has(table.t)
+                else "The potential energy depends on the positions and, here, explicitly on time.",
             )
         )
     steps.append(

@@ -68,6 +68,19 @@ def letter_of(doc: dict[str, Any], meaning: str, default: str, form: str = "late
     )
 
 
+def _nothing_conserved(doc: dict[str, Any]) -> str:
+    """Why nothing is conserved, naming only the causes this system has: L depends on time, a force does work."""
+    causes = []
+    if (doc.get("explicit_time_derivative") or {}).get("sympy", "0") != "0":
+        causes.append("L depends explicitly on time (∂L/∂t ≠ 0)")
+    if doc.get("generalized_forces"):
+        on = ", ".join(prose(q) for q in doc["generalized_forces"])
+        causes.append(f"a generalized force that no potential describes acts on {on} and does work")
+    if not causes:
+        return "Nothing is conserved in general: no coordinate is cyclic and no symmetry of L was found."
+    return f"Nothing is conserved in general: {' and '.join(causes)}."
+
+
 def _summary(doc: dict[str, Any]) -> dict[str, Any]:
     q = doc["coordinates"]
     conserved = [
@@ -85,6 +98,7 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         # members of the document left out within their own bounds, each with its reason (issue 35)
         "skipped": [s["reason"] for s in doc.get("skipped") or []],
         "conserved": conserved,
+        "nothing_conserved": _nothing_conserved(doc),
         "h_equals_e": doc["hamiltonian_equals_energy"],
         "h_reason": doc["hamiltonian_energy_reason"],
         "h_conserved": doc.get("hamiltonian_conserved"),
@@ -328,6 +342,7 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bo
         },
         "cyclic": doc.get("cyclic", []),
         "conserved": conserved,
+        "nothing_conserved": _nothing_conserved(doc),
         "h_equals_e": doc["hamiltonian_equals_energy"],
         "forced": bool(doc.get("generalized_forces")),
         "reduction": reduction,

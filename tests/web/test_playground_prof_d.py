@@ -101,3 +101,33 @@ def test_a_refusal_names_its_field_in_words(client, lagrangian, said):
     text = html_lib.unescape(page(client, {**MAGNETIC, "lagrangian": lagrangian}))
     box = text[text.index('id="form-error"') :]
     assert said in box[: box.index("</div>")] and "lagrangian:" not in box[: box.index("</div>")]
+
+
+DRIVEN = {
+    "coordinates": ["theta"],
+    "parameters": [{"name": n, "value": v, "unit": u} for n, v, u in
+                   (("m", 1.0, "kg"), ("l", 1.0, "m"), ("a", 0.1, "m"), ("w", 20.0, "1/s"), ("g", 9.81, "m/s^2"))],
+    "particles": [{"mass": "m", "position": ["l*sin(theta)", "0", "a*cos(w*t) - l*cos(theta)"]}],
+    "potential": "m*g*(a*cos(w*t) - l*cos(theta))",
+}  # fmt: skip
+
+
+def test_a_potential_with_explicit_time_is_not_said_to_depend_on_positions_only(client):
+    doc = client.post("/api/derive", json=DRIVEN).json()
+    step = next(s for s in doc["steps"] if s["key"] == "potential")
+    assert "positions only" not in step["explanation"] and "explicitly on time" in step["explanation"]
+    # a pendulum at rest below its fixed pivot keeps the sentence
+    still = {**DRIVEN, "parameters": DRIVEN["parameters"][:2] + DRIVEN["parameters"][4:],
+             "particles": [{"mass": "m", "position": ["l*sin(theta)", "0", "-l*cos(theta)"]}], "potential": "-m*g*l*cos(theta)"}  # fmt: skip
+    step = next(s for s in client.post("/api/derive", json=still).json()["steps"] if s["key"] == "potential")
+    assert step["explanation"] == "The potential energy depends on positions only."
+
+
+def test_nothing_conserved_says_which_cause_applies(client):
+    text = html_lib.unescape(page(client, DRIVEN))
+    assert "Nothing is conserved in general: L depends explicitly on time (∂L/∂t ≠ 0)." in text
+    assert "a non-conservative force acts or" not in text
+    damped = {"coordinates": ["x"], "parameters": [{"name": "m", "value": 1.0, "unit": "kg"}, {"name": "b", "value": 0.1, "unit": "kg/s"}],
+              "kinetic": "m*x_dot**2/2", "potential": "0", "forces": {"x": "-b*x_dot"}}  # fmt: skip
+    text = html_lib.unescape(page(client, damped))
+    assert "Nothing is conserved in general: a generalized force that no potential describes acts on x and does work." in text
