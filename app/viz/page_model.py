@@ -254,15 +254,27 @@ def _described(info: dict[str, Any]) -> str:
     return info.get("description") or kind_of_unit(info.get("unit") or "") or "a parameter"
 
 
+def _open_range(default: float, info: dict[str, Any]) -> tuple[float, float]:
+    """The range of a parameter whose declaration leaves it open: an angle between 0 and π/2 (a cone's half-angle,
+    an incline's slope) stays in that quarter turn, another angle within a half turn either way; any other
+    quantity ± a round power of ten (_round_reach)."""
+    if (info.get("unit") or "").strip() == "rad":
+        if 0 < default <= math.pi / 2:
+            return ABOVE_ZERO / 1000, math.pi / 2
+        return -math.pi, math.pi
+    reach = _round_reach(default)
+    return -reach, reach
+
+
 def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any]]]) -> list[dict[str, Any]]:
     controls = []
     for name, info in doc["parameters"].items():
         default = float(info["default"])
         # a bound the declaration leaves open is a round one, ± a power of ten at least ten times the default
         # (a mass of 1 kg: up to 10 kg; g = 9.81 m/s²: up to 100), never the default plus ten
-        reach = _round_reach(default)
-        lo = info.get("min") if info.get("min") is not None else -reach
-        hi = info.get("max") if info.get("max") is not None else reach
+        lo_open, hi_open = _open_range(default, info)
+        lo = info.get("min") if info.get("min") is not None else lo_open
+        hi = info.get("max") if info.get("max") is not None else hi_open
         found = [m for m in marks.get(name, []) if lo <= m["value"] <= hi]
         slider_lo, slider_hi, log = useful_range(default, float(lo), float(hi), found)
         unit = info.get("unit") or ""
