@@ -22,6 +22,7 @@ from app.engine.budget import memoized, pythagoras, unbudgeted
 from app.engine.derive import Derivation
 from app.engine.forms import settle, textbook_form, use_names
 from app.engine.names import unicode
+from app.engine.root_forms import power_form, trig_cancelled
 from app.engine.trees import maybe_of_sympy
 
 # The steps (by key) a reader needs to follow the argument: T and U (where students go wrong most), the
@@ -186,6 +187,11 @@ def conserved_form(d: Derivation, pr: Printer, expr: sp.Expr) -> sp.Expr:
     if sp.expand(expr - en.hamiltonian) == 0:
         return h
     return display(meaning.by_velocity(expr, d.table.qd))
+
+
+def _power_tex(n: int) -> str:
+    """The exponent of r₀ⁿ in LaTeX (nothing for n = 1)."""
+    return "" if n == 1 else f"^{{{n}}}"
 
 
 def build_steps(d: Derivation) -> list[dict[str, str]]:
@@ -493,9 +499,11 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
         # ω² about a steady motion in terms of its r₀, the momentum eliminated by U_eff'(r₀) = 0, as a textbook
         # writes it (not the root put back into U_eff'')
         r0 = sp.Symbol(r.name + "0", real=True)
-        at = steady.xreplace({r: r0})
-        rows = [rf"{rn}_0 = {pr.tex(e.position)}" for e in red.equilibria] + [rf"{omega}^2 = {pr.tex(at)}"]
-        sym: Any = [e.position for e in red.equilibria] + [at]
+        at = trig_cancelled(steady.xreplace({r: r0}))
+        # r₀³ = p_φ² tan α/(m² g) where the root is a cube root (app/engine/root_forms.py)
+        powers = [power_form(e.position) for e in red.equilibria]
+        rows = [rf"{rn}_0{_power_tex(n)} = {pr.tex(c)}" for n, c in powers] + [rf"{omega}^2 = {pr.tex(at)}"]
+        sym: Any = [c for _, c in powers] + [at]
         momentum = unicode(red.momenta[0].name)
         why = (
             f"A steady motion sits where U_eff′ vanishes; about it, ω² = U_eff″/m_eff. The condition "

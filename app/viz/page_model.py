@@ -109,6 +109,7 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
             {
                 **doc["effective_potential"],
                 "coordinate_latex": latex(doc["effective_potential"]["coordinate"]) + " = ",
+                "root_latex": latex(doc["effective_potential"]["coordinate"]) + "_0",
                 "frequency_latex": letter_of(doc, "angular frequency", r"\omega"),
             }
             if doc.get("effective_potential")

@@ -131,3 +131,26 @@ def test_nothing_conserved_says_which_cause_applies(client):
               "kinetic": "m*x_dot**2/2", "potential": "0", "forces": {"x": "-b*x_dot"}}  # fmt: skip
     text = html_lib.unescape(page(client, damped))
     assert "Nothing is conserved in general: a generalized force that no potential describes acts on x and does work." in text
+
+
+CONE = {
+    "coordinates": ["r", "phi"],
+    "nonnegative": ["r"],
+    "parameters": [{"name": "m", "value": 0.1, "unit": "kg"}, {"name": "g", "value": 9.81, "unit": "m/s^2"},
+                   {"name": "alpha", "value": 0.5, "unit": "rad"}],
+    "kinetic": "m/2*(r_dot**2/sin(alpha)**2 + r**2*phi_dot**2)",
+    "potential": "m*g*r*cot(alpha)",
+}  # fmt: skip
+
+
+def test_the_cone_prints_its_steady_motion_as_a_textbook_does(client):
+    doc = client.post("/api/derive", json=CONE).json()
+    (e,) = doc["effective_potential"]["equilibria"]
+    # r₀³ = p_φ² tan α/(m² g), not ∛(1/cot α)|p_φ|^(2/3)/(m^(2/3)∛g)
+    assert e["power"] == 3 and e["position_power"]["latex"] == r"\frac{p_{\varphi}^{2} \tan {\alpha}}{m^{2} g}"
+    assert doc["effective_potential"]["omega_squared_steady"]["latex"] == r"\frac{3 g \sin {\alpha} \cos {\alpha}}{r_{0}}"
+    (step,) = [s for s in doc["steps"] if s["key"] == "reduced-equilibria"]
+    assert r"r_0^{3} &= \frac{p_{\varphi}^{2} \tan {\alpha}}{m^{2} g}" in step["latex"] and "frac{2}{3}" not in step["latex"]
+    text = page(client, CONE)
+    summary = text[text.index("<dt>Effective potential</dt>") :]
+    assert "r_0^{3} = " in html_lib.unescape(summary) and "frac{2}{3}" not in summary[: summary.index("</dd>")]
