@@ -154,3 +154,14 @@ def test_the_cone_prints_its_steady_motion_as_a_textbook_does(client):
     text = page(client, CONE)
     summary = text[text.index("<dt>Effective potential</dt>") :]
     assert "r_0^{3} = " in html_lib.unescape(summary) and "frac{2}{3}" not in summary[: summary.index("</dd>")]
+
+
+@pytest.mark.slow
+def test_a_fall_into_the_centre_is_said_in_words(client):
+    # radial infall of the Kepler problem: the run ends where r reaches 0, said without a solver's words
+    spec = {"coordinates": ["r", "phi"], "parameters": [{"name": "m", "value": 1.0, "unit": "kg"}, {"name": "k", "value": 1.0}],
+            "lagrangian": "m/2*(r_dot**2 + r**2*phi_dot**2) + k/r"}  # fmt: skip
+    body = {**spec, "initial": {"r": 1.0, "phi": 1.0, "r_dot": 0.0, "phi_dot": 0.0}, "t_end": 10.0}
+    text = client.post("/api/simulate", json=body).text
+    assert "underflow" not in text and "det M" not in text and "2.7e" not in text
+    assert "the run stops at t = " in text and "divide by" in text
