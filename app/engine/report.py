@@ -269,7 +269,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
                 m.U,
                 # a U with explicit t (a driven support, a field that changes) is said to have it
                 "The potential energy depends on positions only."
-                if not m.U.has(table.t)
+                if m.U is None or not m.U.has(table.t)
                 else "The potential energy depends on the positions and, here, explicitly on time.",
             )
         )

@@ -225,7 +225,7 @@ def finished(
     method: Method, problem: Problem, Y: np.ndarray, filled: int, status: int, last: np.ndarray | None = None, **stats
 ) -> Trajectory:
     """A trajectory from kernel output: complete, or cut at the last sample reached with the reason."""
-    from app.numerics.kernels.common import BOUND, DONE, STATUS_NAMES
+    from app.numerics.kernels.common import BOUND, DONE
 
     if status == BOUND and filled:
         # keep the samples up to the first one outside the bounds (a long step may have passed several)
