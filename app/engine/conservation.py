@@ -29,6 +29,7 @@ from app.engine.budget import is_zero, tidy
 from app.engine.lagrange import Equations
 from app.engine.mechanics import Mechanics
 from app.engine.names import unicode
+from app.engine.noether import symmetries
 
 
 @dataclass(frozen=True)
@@ -126,6 +127,8 @@ def energetics(mech: Mechanics, eqs: Equations) -> Energetics:
         for name in cyclic
     ]
     conserved += _translations(mech, eqs, cyclic)
+    # rotations and translations that leave L unchanged up to a total derivative (Noether), each verified
+    conserved += [Conserved(s.name, s.latex_name, s.expr, s.reason) for s in symmetries(mech, eqs, cyclic)]
 
     # dL/dt at fixed q and q_dot: the explicit time dependence
     dL_dt = sp.diff(L, table.t)
@@ -141,8 +144,8 @@ def energetics(mech: Mechanics, eqs: Equations) -> Energetics:
         diff = sp.Integer(0)
         equal = None
         reason = (
-            "Only L was given, so T and U cannot be told apart: whether h equals the energy T + U cannot be "
-            "decided, and the energy reported is h itself."
+            "Only L was given, so T and U cannot be told apart: the energy T + U is not defined here and whether "
+            "h equals it cannot be decided, so h alone is reported (the energy bars and plots draw h, no E)."
         )
     else:
         parts = velocity_degrees(mech.T, qd)

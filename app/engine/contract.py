@@ -27,6 +27,7 @@ from app.engine.report import display as _show
 from app.engine.report_members import constraint_steps, new_lagrangian, transform_steps
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.rods import fixed_distances
+from app.engine.root_forms import power_form, trig_cancelled
 from app.engine.transform import Transformed
 from app.engine.trees import maybe_of_sympy
 from app.limits import DISPLAY_WORK, FIRST_DISPLAY_WORK, LARGE_DISPLAY_WORK
@@ -192,6 +193,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "skipped": [],
     }
     if red is not None:
+        coordinate = table.q[table.names.index(red.coordinate)]
         result["effective_potential"] = {
             "coordinate": red.coordinate,
             "momenta": [s.name for s in red.momenta],
@@ -205,9 +207,22 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
                     "position": {**pr.pair(e.position), "latex": pr.root(e.position)},
                     "omega_squared": pr.pair(e.omega_squared),
                     "stable": e.stable,
+                    # r₀ⁿ = C where the root is C^(1/n) (the cone's r₀³ = p_φ² tan α/(m² g)), n = 1 otherwise
+                    "power": (root := power_form(e.position))[0],
+                    "position_power": pr.pair(root[1]),
                 }
                 for e in red.equilibria
-            ],
+            ],  # fmt: skip
+            # ω² about a steady motion with its r₀ (the momentum eliminated): 3g sin α cos α/r₀
+            "omega_squared_steady": (
+                pr.pair(
+                    trig_cancelled(
+                        red.omega_squared_steady.xreplace({coordinate: sp.Symbol(red.coordinate + "0", real=True)})
+                    )
+                )
+                if red.omega_squared_steady is not None
+                else None
+            ),
         }
     if beyond:
         # built last, so that they never take the chapter's steps' share of the display budget
@@ -394,9 +409,7 @@ def transformed_json(tr: Transformed) -> dict[str, Any]:
         "inverse": {q.name: pr.pair(e) for q, e in tr.inverse.items()},
         "lagrangian": pr.pair(new_lagrangian(tr)),
         **{key: full[key] for key in ("accelerations", "momenta", "mass_matrix", "cyclic", "effective_potential")},
-        "conserved": [
-            {**c, "original": old.pair(_original(tr, by_name[c["name"]].expr))} for c in full["conserved"]
-        ],
+        "conserved": [{**c, "original": old.pair(_original(tr, by_name[c["name"]].expr))} for c in full["conserved"]],
         "inertia": {n: pr.pair(m) for n, m in zip(names, tr.inertia, strict=True)},
         "reduced_mass": pr.pair(tr.reduced_mass) if tr.reduced_mass is not None else None,
         "relative_motion": _relative_motion(tr, pr),

@@ -26,7 +26,7 @@ from app.engine.mistake_families import spoken
 if TYPE_CHECKING:
     from app.engine.derive import Derivation
 
-Dims = dict[str, Fraction]  # exponents of kg, m, s
+Dims = dict[str, Fraction]  # exponents of kg, m, s and A (the ampere, for charges and fields)
 
 _BASE: dict[str, Dims] = {
     "kg": {"kg": Fraction(1)},
@@ -37,6 +37,11 @@ _BASE: dict[str, Dims] = {
     "W": {"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-3)},
     "Pa": {"kg": Fraction(1), "m": Fraction(-1), "s": Fraction(-2)},
     "Hz": {"s": Fraction(-1)},
+    # electromagnetic units through the ampere: a charge q in C and a field B in T make qB a mass rate (kg/s)
+    "A": {"A": Fraction(1)},
+    "C": {"A": Fraction(1), "s": Fraction(1)},
+    "T": {"kg": Fraction(1), "A": Fraction(-1), "s": Fraction(-2)},
+    "V": {"kg": Fraction(1), "m": Fraction(2), "A": Fraction(-1), "s": Fraction(-3)},
     "rad": {},
     "1": {},
 }
@@ -66,6 +71,10 @@ _WORDS = [
     ({"kg": Fraction(1), "m": Fraction(2)}, "a moment of inertia"),
     ({"m": Fraction(-1)}, "an inverse length (1/m)"),
     ({"m": Fraction(2)}, "an area"),
+    ({"kg": Fraction(1), "s": Fraction(-1)}, "a drag coefficient (kg/s)"),
+    ({"A": Fraction(1), "s": Fraction(1)}, "a charge"),
+    ({"kg": Fraction(1), "A": Fraction(-1), "s": Fraction(-2)}, "a magnetic field"),
+    ({"kg": Fraction(1), "m": Fraction(2), "A": Fraction(-1), "s": Fraction(-3)}, "an electric potential"),
 ]
 _SUPER = str.maketrans("-0123456789/", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹ᐟ")
 
@@ -94,17 +103,39 @@ def parse_unit(text: str) -> Dims | None:
     return out
 
 
+_ORDER = ("kg", "m", "A", "s")
+
+
 def unit_text(d: Dims) -> str:
     """kg·m²/s² for an energy; 1 for a pure number."""
     if not d:
         return "1"
-    top = [(k, v) for k in ("kg", "m", "s") if (v := d.get(k, Fraction(0))) > 0]
-    bottom = [(k, -v) for k in ("kg", "m", "s") if (v := d.get(k, Fraction(0))) < 0]
+    top = [(k, v) for k in _ORDER if (v := d.get(k, Fraction(0))) > 0]
+    bottom = [(k, -v) for k in _ORDER if (v := d.get(k, Fraction(0))) < 0]
 
     def show(parts: list[tuple[str, Fraction]]) -> str:
         return "·".join(k + (str(v).translate(_SUPER) if v != 1 else "") for k, v in parts)
 
     return (show(top) or "1") + (f"/{show(bottom)}" if bottom else "")
+
+
+# what a parameter is by the unit it declares, where its dimension alone cannot tell (rad and 1/s are both s⁻¹
+# apart from the radian), before the words by dimension
+_KIND_BY_UNIT = {"rad": "an angle", "rad/s": "an angular velocity", "1/s": "a rate", "s": "a time",
+                 "N/m": "a spring constant", "kg/s": "a drag coefficient", "1": "a pure number"}  # fmt: skip
+
+
+def kind_of_unit(unit: str) -> str | None:
+    """What a quantity declared in ``unit`` is, in words ("a mass", "an angle", "a magnetic field"); None when
+    the unit is not understood or names no quantity a student recognises."""
+    text = unit.strip().replace("^2", "²").replace("**2", "²")
+    if text in _KIND_BY_UNIT:
+        return _KIND_BY_UNIT[text]
+    dims = parse_unit(unit)
+    if dims is None:
+        return None
+    words = quantity(dims)
+    return None if words.startswith("a quantity in") else words.split(" (")[0]
 
 
 def quantity(d: Dims) -> str:

@@ -164,18 +164,18 @@ def euler_lagrange(mech: Mechanics) -> Equations:
     M = sp.Matrix(n, n, entries)
     if any(M.has(s) for s in (*qd, *qdd)):
         raise DerivationError(
-            "the mass matrix d²L/dq̇² depends on the velocities, so L is not quadratic in them; "
+            "the mass matrix ∂²L/∂q̇² depends on the velocities, so L is not quadratic in them; "
             "the engine handles L = (quadratic in q̇) + (linear in q̇) + (no q̇)"
         )
     if M.is_zero_matrix:
         raise DerivationError(
-            "the mass matrix d²L/dq̇² is zero: L has no term quadratic in the velocities, "
-            "so the Euler-Lagrange equations do not determine the accelerations"
+            "the mass matrix ∂²L/∂q̇² is zero: L has no term quadratic in the velocities, "
+            "so the Euler–Lagrange equations do not determine the accelerations"
         )
     free = sorted(M.free_symbols, key=lambda s: s.name)
     if _numerically_singular(M, free):
         raise DerivationError(
-            "the mass matrix d²L/dq̇² is singular: the Euler-Lagrange equations do not determine "
+            "the mass matrix ∂²L/∂q̇² is singular: the Euler–Lagrange equations do not determine "
             "every acceleration (is a coordinate missing from T, or are two coordinates redundant?)"
         )
     forcing = sp.Matrix(forcing_entries)

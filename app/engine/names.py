@@ -13,6 +13,36 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
+# letters every page prints with a meaning of its own: a declared name spelled so would give one letter two
+# meanings on the page (a charge q beside the coordinates q of S[q] and M q̈ = f), so a user's system is refused
+# with a name to use instead (app/service/user_checks.py)
+PAGE_LETTERS: dict[str, tuple[str, str]] = {
+    "q": ("the generalized coordinates (S[q], M q̈ = f)", "e"),
+    "p": ("a generalized momentum (p_x, p_θ)", "P0"),
+    "S": ("the action, S = ∫ L dt", "S0"),
+    "T": ("the kinetic energy", "T0"),
+    "U": ("the potential energy", "U0"),
+    "L": ("the Lagrangian", "l"),
+    "h": ("the energy function", "h0"),
+    "H": ("the Hamiltonian", "H0"),
+    "E": ("the energy, T + U", "E0"),
+    "f": ("the right-hand side of M q̈ = f", "f0"),
+    "Q": ("a generalized force", "Q0"),
+}
+
+
+def page_letter_clash(name: str, what: str) -> str | None:
+    """Why a declared name cannot be used, when a page already prints that letter with another meaning; else None.
+    A coordinate may be called q (it is then the q of S[q])."""
+    if name not in PAGE_LETTERS or (name == "q" and what == "coordinate"):
+        return None
+    meaning, instead = PAGE_LETTERS[name]
+    return (
+        f"{what} {name!r} clashes with the page's own letter {name}, {meaning}: one letter would mean two things. "
+        f"Choose another name, such as {instead}" + (f" (printed {unicode(instead)})" if unicode(instead) != instead else "")
+    )
+
+
 # The Greek letters LaTeX has a command for, by name, with their Unicode characters (the command is a
 # backslash and the name; the capitals left out are written as Latin letters)
 GREEK = {

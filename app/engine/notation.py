@@ -20,7 +20,7 @@ import sympy as sp
 
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation
-from app.engine.dimensions import Dims, add_dims, dimension, system_dimensions, unit_text
+from app.engine.dimensions import Dims, add_dims, dimension, kind_of_unit, system_dimensions, unit_text
 from app.engine.names import MASS_MATRIX, latex, unicode
 from app.engine.textbook import unicode_text
 from app.engine.transform import Transformed
@@ -95,6 +95,25 @@ def _unit(dims: Dims | None, angle: bool = False) -> str:
     return unit_text(dims)
 
 
+def _is_energy(d: Derivation, dims: dict[sp.Symbol, Dims]) -> bool:
+    """Whether the energies are in J: every term of a sum has one dimension, so L is an energy as soon as one of
+    its terms is (½mẋ² in kg·m²/s²) and none is known to be anything else; with no term told, no unit is claimed."""
+    told = [dimension(term, dims) for term in sp.Add.make_args(sp.expand(d.mechanics.L))]
+    known = [x for x in told if x is not None]
+    return bool(known) and all(x == _ENERGY for x in known)
+
+
+def _alone_in_trig(d: Derivation, name: str) -> bool:
+    """A parameter that is, alone, the argument of a sine, cosine or tangent of L or of a position: an angle."""
+    exprs = [d.mechanics.L, *(c for r in d.mechanics.positions for c in r)]
+    return any(str(f.args[0]) == name for e in exprs for f in sp.sympify(e).atoms(sp.sin, sp.cos, sp.tan, sp.cot))
+
+
+def _kind(words: str | None) -> str | None:
+    """ "a mass" as a Symbols table's meaning: "mass"."""
+    return words.split(" ", 1)[1] if words else None
+
+
 def _row(tex: str, uni: str, meaning: str, unit: str, kind: str) -> dict[str, Any]:
     return {"latex": tex, "unicode": uni, "meaning": meaning, "unit": unit, "kind": kind}
 
@@ -108,8 +127,7 @@ def table(
     the new coordinates of a change and the reduced mass)."""
     rows: list[dict[str, Any]] = []
     dims = system_dimensions(d)
-    # the energies are in J when every term of L is (the declared units tell it); otherwise no unit is claimed
-    energy = "J" if dimension(d.mechanics.L, dims) == _ENERGY else ""
+    energy = "J" if _is_energy(d, dims) else ""
     for q in d.table.q:
         # an angle is a coordinate inside a sine or cosine: dimensionless, printed in rad
         unit = _unit(dims.get(q), angle=True)
@@ -119,7 +137,10 @@ def table(
             {
                 "latex": latex(p.name),
                 "unicode": unicode(p.name),
-                "meaning": p.description or "parameter",
+                # what the user declared it to be, else what its unit says (a mass, an angle, a magnetic field)
+                "meaning": p.description
+                or _kind(kind_of_unit(p.unit))
+                or ("angle" if _alone_in_trig(d, p.name) else "parameter"),
                 "unit": p.unit,
                 "kind": "parameter",
             }
@@ -195,6 +216,7 @@ def _sometimes(
                 "derived",
             )
         )
+    rows += _symmetries(d, dims, energy)
     if any(f != 0 for f in m.Q):
         rows.append(_row("Q", "Q", "generalized force that no potential describes", "", "derived"))
     if forces:
@@ -240,6 +262,23 @@ def _sometimes(
                     "derived",
                 )
             )
+    return rows
+
+
+def _symmetries(d: Derivation, dims: dict[sp.Symbol, Dims], energy: str) -> list[dict[str, Any]]:
+    """The letters of the quantities a rotation (J) or a translation (P) of the coordinates conserves."""
+    rows = []
+    for c in d.energetics.conserved:
+        if c.name.startswith("J"):
+            meaning = "generalized angular momentum, conserved because L is unchanged by a rotation"
+            unit = _unit(_ACTION) if energy else ""
+        elif c.name.startswith("P_"):
+            q = next(s for s in d.table.q if s.name == c.name[2:])
+            meaning = f"conserved momentum of a translation of {unicode(q.name)}: p_{unicode(q.name)} less the total derivative L changes by"
+            unit = _unit(add_dims(_ACTION, dims[q], Fraction(-1))) if q in dims and energy else ""
+        else:
+            continue
+        rows.append(_row(c.latex_name, unicode(c.name), meaning, unit, "derived"))
     return rows
 
 

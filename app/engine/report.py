@@ -23,6 +23,7 @@ from app.engine.budget import memoized, pythagoras, unbudgeted
 from app.engine.derive import Derivation
 from app.engine.forms import settle, textbook_form, use_names
 from app.engine.names import unicode
+from app.engine.root_forms import power_form, trig_cancelled
 from app.engine.trees import maybe_of_sympy
 
 # The steps (by key) a reader needs to follow the argument: T and U (where students go wrong most), the
@@ -247,6 +248,11 @@ def _common_factor(c: sp.Expr) -> sp.Expr:
     return f if isinstance(rest, sp.Mul) and any(a.is_Symbol for a in rest.args) else c
 
 
+def _power_tex(n: int) -> str:
+    """The exponent of r₀ⁿ in LaTeX (nothing for n = 1)."""
+    return "" if n == 1 else f"^{{{n}}}"
+
+
 def build_steps(d: Derivation) -> list[dict[str, str]]:
     m, eqs, en, red, table = d.mechanics, d.equations, d.energetics, d.reduction, d.table
     pr = Printer(table.latex_names())
@@ -322,9 +328,9 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
                 [f"U = {pr.tex(m.U)}"],
                 m.U,
                 # said only where it is true: a driven support puts t in U
-                "The potential energy depends on the positions and, explicitly, on the time t."
-                if sp.sympify(m.U).has(d.table.t)
-                else "The potential energy depends on positions only.",
+                "The potential energy depends on positions only."
+                if m.U is None or not m.U.has(d.table.t)
+                else "The potential energy depends on the positions and, explicitly, on the time t.",
             )
         )
     steps.append(
@@ -573,9 +579,11 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
         # ω² about a steady motion in terms of its r₀, the momentum eliminated by U_eff'(r₀) = 0, as a textbook
         # writes it (not the root put back into U_eff'')
         r0 = sp.Symbol(r.name + "0", real=True)
-        at = steady.xreplace({r: r0})
-        rows = [rf"{rn}_0 = {pr.root(e.position)}" for e in red.equilibria] + [rf"{omega}^2 = {pr.tex(at)}"]
-        sym: Any = [e.position for e in red.equilibria] + [at]
+        at = trig_cancelled(steady.xreplace({r: r0}))
+        # r₀³ = p_φ² tan α/(m² g) where the root is a cube root (app/engine/root_forms.py)
+        powers = [power_form(e.position) for e in red.equilibria]
+        rows = [rf"{rn}_0{_power_tex(n)} = {pr.tex(c)}" for n, c in powers] + [rf"{omega}^2 = {pr.tex(at)}"]
+        sym: Any = [c for _, c in powers] + [at]
         momentum = unicode(red.momenta[0].name)
         why = (
             f"A steady motion sits where U_eff′ vanishes; about it, ω² = U_eff″/m_eff. The condition "

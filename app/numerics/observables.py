@@ -92,9 +92,10 @@ def summarize(obs: Observables, t: np.ndarray, values: dict[str, np.ndarray], rt
         if ratio < SINGULAR_RATIO:
             at = float(t[int(np.nanargmin(det))])
             warnings.append(
-                f"the path passes close to a singular point of the coordinates near t = {at:.4g} s "
-                f"(det M falls to {ratio:.2g} of its starting value), where some equation divides by nearly zero; "
-                "accuracy there is limited, see the conserved-quantity drifts"
+                f"near t = {at:.4g} s the path passes close to a singular point of the coordinates, where they "
+                "fail (as at r = 0 of polar coordinates or at the apex of a cone) and the equations divide by "
+                "nearly zero; the numbers near that instant are less accurate: see how far the conserved "
+                "quantities drifted"
             )
     for i, force in enumerate(obs.forces):
         series = values[f"force:{i}"]

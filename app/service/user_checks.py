@@ -25,6 +25,7 @@ from dataclasses import replace
 from typing import Any
 
 from app.engine.errors import DerivationError, excerpt
+from app.engine.names import page_letter_clash
 from app.engine.parse import MAX_TERMS, ExpressionError, Parsed, check_name, read
 from app.engine.user_system import UserSystem
 from app.errors import Refused, TooMuchWork
@@ -105,6 +106,8 @@ def check_system(system: UserSystem) -> dict[tuple, Parsed]:
             check_name(name, what)
         except ExpressionError as exc:
             raise _refuse(loc, exc) from None
+        if (clash := page_letter_clash(name, what)) is not None:
+            raise InvalidSystem(f"{_where(loc)}: {clash}", loc, name)
         if name in seen:
             raise InvalidSystem(f"{_where(loc)}: the name {name!r} is declared twice", loc, name)
         seen.add(name)

@@ -14,6 +14,7 @@ import re
 from collections.abc import Mapping, Sequence
 from typing import Any
 
+from app.engine.dimensions import kind_of_unit
 from app.engine.names import MASS_MATRIX, latex, prose
 from app.engine.notation import printed
 from app.engine.report import CORE_STEPS
@@ -97,19 +98,16 @@ def letter_of(doc: dict[str, Any], meaning: str, default: str, form: str = "late
 
 
 def nothing_conserved(doc: dict[str, Any]) -> str:
-    """Why nothing is conserved, naming the cause that applies: a non-conservative force, an explicit t in L."""
-    forced = bool(doc.get("generalized_forces"))
-    timed = (doc.get("explicit_time_derivative") or {}).get("sympy", "0") != "0"
-    cause = {
-        (True, True): "a non-conservative force acts and L depends explicitly on time, so h changes",
-        (True, False): "a non-conservative force acts, so h changes",
-        (False, True): "L depends explicitly on time, so h changes",
-    }.get((forced, timed))
-    return (
-        f"Nothing is conserved here: {cause}, and no momentum stays constant."
-        if cause
-        else "Nothing is conserved here."
-    )
+    """Why nothing is conserved, naming only the causes this system has: L depends on time, a force does work."""
+    causes = []
+    if (doc.get("explicit_time_derivative") or {}).get("sympy", "0") != "0":
+        causes.append("L depends explicitly on time (∂L/∂t ≠ 0)")
+    if doc.get("generalized_forces"):
+        on = ", ".join(prose(q) for q in doc["generalized_forces"])
+        causes.append(f"a generalized force that no potential describes acts on {on} and does work")
+    if not causes:
+        return "Nothing is conserved here: no coordinate is cyclic and no symmetry of L was found."
+    return f"Nothing is conserved here: {' and '.join(causes)}, so h changes, and no momentum stays constant."
 
 
 def _answers(doc: dict[str, Any]) -> list[dict[str, Any]]:
@@ -150,6 +148,7 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         # members of the document left out within their own bounds, each with its reason (issue 35)
         "skipped": [s["reason"] for s in doc.get("skipped") or []],
         "conserved": conserved,
+        "nothing_conserved": nothing_conserved(doc),
         "h_equals_e": doc["hamiltonian_equals_energy"],
         "h_reason": doc["hamiltonian_energy_reason"],
         "h_conserved": doc.get("hamiltonian_conserved"),
@@ -160,6 +159,7 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
             {
                 **doc["effective_potential"],
                 "coordinate_latex": latex(doc["effective_potential"]["coordinate"]) + " = ",
+                "root_latex": latex(doc["effective_potential"]["coordinate"]) + "_0",
                 "frequency_latex": letter_of(doc, "angular frequency", r"\omega"),
             }
             if doc.get("effective_potential")
@@ -168,7 +168,6 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         "constraint_forces": doc.get("constraint_forces") or [],
         # every letter of the page once, with what it stands for
         "symbols": doc.get("notation") or [],
-        "nothing_conserved": nothing_conserved(doc),
     }
 
 
@@ -319,14 +318,21 @@ def _marks(found: Sequence[dict[str, Any]], unit: str) -> list[dict[str, Any]]:
     return out
 
 
-# What a parameter without a description is, by its unit (so that a label never repeats the name: "m m").
-KIND_BY_UNIT = {"kg": "a mass", "m": "a length", "N/m": "a spring constant", "m/s^2": "an acceleration",
-                "m/s²": "an acceleration", "s": "a time", "1/s": "a rate", "rad/s": "an angular velocity",
-                "rad": "an angle", "N": "a force", "kg/s": "a drag coefficient"}  # fmt: skip
-
-
 def _described(info: dict[str, Any]) -> str:
-    return info.get("description") or KIND_BY_UNIT.get((info.get("unit") or "").strip(), "a parameter")
+    """What a parameter without a description is, by its unit (so that a label never repeats the name: "m m")."""
+    return info.get("description") or kind_of_unit(info.get("unit") or "") or "a parameter"
+
+
+def _open_range(default: float, info: dict[str, Any]) -> tuple[float, float]:
+    """The range of a parameter whose declaration leaves it open: an angle between 0 and π/2 (a cone's half-angle,
+    an incline's slope) stays in that quarter turn, another angle within a half turn either way; any other
+    quantity ± a round power of ten (_round_reach)."""
+    if (info.get("unit") or "").strip() == "rad":
+        if 0 < default <= math.pi / 2:
+            return ABOVE_ZERO / 1000, math.pi / 2
+        return -math.pi, math.pi
+    reach = _round_reach(default)
+    return -reach, reach
 
 
 def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any]]]) -> list[dict[str, Any]]:
@@ -335,9 +341,9 @@ def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any
         default = float(info["default"])
         # a bound the declaration leaves open is a round one, ± a power of ten at least ten times the default
         # (a mass of 1 kg: up to 10 kg; g = 9.81 m/s²: up to 100), never the default plus ten
-        reach = _round_reach(default)
-        lo = info.get("min") if info.get("min") is not None else -reach
-        hi = info.get("max") if info.get("max") is not None else reach
+        lo_open, hi_open = _open_range(default, info)
+        lo = info.get("min") if info.get("min") is not None else lo_open
+        hi = info.get("max") if info.get("max") is not None else hi_open
         found = [m for m in marks.get(name, []) if lo <= m["value"] <= hi]
         slider_lo, slider_hi, log = useful_range(default, float(lo), float(hi), found)
         unit = info.get("unit") or ""
@@ -424,6 +430,7 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bo
         },
         "cyclic": doc.get("cyclic", []),
         "conserved": conserved,
+        "nothing_conserved": nothing_conserved(doc),
         "h_equals_e": doc["hamiltonian_equals_energy"],
         "forced": bool(doc.get("generalized_forces")),
         # whether a true path can reach a kinetic focus (the action panel says none exists where it cannot)

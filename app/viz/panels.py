@@ -154,10 +154,11 @@ PANELS: tuple[Panel, ...] = (
     Panel(
         "momenta",
         "Conserved momenta",
-        "The conserved momenta (a cyclic coordinate's, or a sum of momenta such as the total momentum) and, below, "
-        "their change since t = 0, which only numerical error can produce.",
+        "The conserved momenta (a cyclic coordinate's, a sum of momenta such as the total momentum, or the angular "
+        "momentum J of a rotation that leaves L unchanged) and, below, their change since t = 0, which only "
+        "numerical error can produce.",
         "a generalized momentum is conserved",
-        lambda f: any(c["name"].startswith("p_") for c in f.doc.get("conserved", [])),
+        lambda f: any(c["name"].startswith(("p_", "P_", "J")) for c in f.doc.get("conserved", [])),
     ),
     Panel(
         "phase",

@@ -7,6 +7,7 @@ which optional panels the page asks for (the registry in ``panels.py`` adds the 
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import asdict
 from typing import Any
@@ -14,6 +15,7 @@ from typing import Any
 from app.engine.distances import distance_events
 from app.engine.names import unicode
 from app.engine.user_system import UserSystem
+from app.viz.exprtree import document_tree, evaluate
 from app.viz.page_model import scene_page
 
 # the optional panels (app/viz/panels.py) a user's system gets wherever its derivation supports them
@@ -46,9 +48,75 @@ def model_of(user: UserSystem, doc: dict[str, Any], methods: Sequence[str]) -> d
             f"Every configuration is an equilibrium, so a start at rest would show nothing: the run starts with "
             f"{unicode(first + '_dot')}(0) = 1 per second."
         )
+    # a coordinate that only turns (a cyclic φ) at rest lets a cone's bead or a planet fall into the centre:
+    # it starts at the rate of the steady motion through the starting radius, found from U_eff′ = 0
+    elif (steady := steady_start(doc, initial, {p.name: p.default for p in user.parameters})) is not None:
+        rate, value = steady
+        initial[rate] = value
+        r = doc["effective_potential"]["coordinate"]
+        note = (
+            f"The run starts on the steady motion through {unicode(r)} = {initial[r]:g}: "
+            f"{unicode(rate)}(0) = {value:.4g}, where U_eff′ = 0 (at rest, {unicode(rate[:-4])} would not turn and "
+            f"{unicode(r)} would fall). Change {unicode(rate)}(0) to see {unicode(r)} oscillate about it or leave."
+        )
     # what the animation draws: the particles as declared (none for a system given by L or by T and U)
     particles = [(p.label, p.position) for p in user.system().particles]
     model = scene_page(doc, info, particles, methods, user.nonnegative, scene=False)
     if note:
         model["initial_note"] = note  # shown under "Initial conditions"
     return model
+
+
+def _root(f: Any, lo: float, hi: float) -> float | None:
+    """A root of f in [lo, hi] by bisection, or None when f does not change sign there."""
+    try:
+        a, b = f(lo), f(hi)
+    except (ArithmeticError, ValueError):
+        return None
+    if not (math.isfinite(a) and math.isfinite(b)) or a * b > 0:
+        return None
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        c = f(mid)
+        if a * c <= 0:
+            hi = mid
+        else:
+            lo, a = mid, c
+    return 0.5 * (lo + hi)
+
+
+def steady_start(doc: dict[str, Any], initial: dict[str, float], params: dict[str, float]) -> tuple[str, float] | None:
+    """(the cyclic coordinate's rate, its value) that makes the starting radius a steady motion, or None.
+
+    With one conserved momentum p_c the reduction's U_eff′(r; p_c) = 0 is solved for p_c at r(0) (p_c > 0), and
+    p_c = ∂L/∂q̇_c, affine in q̇_c, is solved for q̇_c.  Pure Python on the document's expression trees."""
+    red = doc.get("effective_potential")
+    if not red or len(red.get("momenta") or []) != 1 or not red["momenta"][0].startswith("p_"):
+        return None
+    cyclic = red["momenta"][0][2:]
+    condition = document_tree(red.get("condition"))
+    momentum = document_tree((doc.get("momenta") or {}).get(cyclic))
+    if condition is None or momentum is None:
+        return None
+    state = {**params, **initial, "t": 0.0}
+    state.update({f"{q}_dot": initial.get(f"{q}_dot", 0.0) for q in doc["coordinates"]})
+
+    def at(p: float) -> float:
+        return evaluate(condition, {**state, red["momenta"][0]: p})
+
+    # the momentum scale: search p in (0, 10⁶] on a log grid for a change of sign, then bisect
+    grid = [10.0**k for k in range(-6, 7)]
+    for lo, hi in zip(grid, grid[1:], strict=False):
+        p = _root(at, lo, hi)
+        if p is not None:
+            break
+    else:
+        return None
+    rate = f"{cyclic}_dot"
+    # p_c(q̇_c) = p0 + p1 q̇_c
+    p0 = evaluate(momentum, {**state, rate: 0.0})
+    p1 = evaluate(momentum, {**state, rate: 1.0}) - p0
+    if not (math.isfinite(p0) and math.isfinite(p1)) or p1 == 0:
+        return None
+    value = (p - p0) / p1
+    return (rate, value) if math.isfinite(value) else None

@@ -203,7 +203,7 @@ def spec_of(form: Form) -> dict[str, Any]:
         # a parameter is a name or an object: drop the union member from the location
         loc = tuple(x for x in first["loc"] if x not in ("ParameterSpec", "str"))
         message = str(first["msg"]).removeprefix("Value error, ")
-        raise located_error(form, loc, f"{_where(loc)}: {message}" if loc else message) from None
+        raise located_error(form, loc, message) from None
 
 
 def field_id(form: Form, loc: tuple) -> str:
@@ -239,9 +239,38 @@ def _value_at(form: Form, field: str) -> str:
     return ""
 
 
+# the request's field names as the form calls them, for the start of a message ("In the Lagrangian: …")
+_FIELDS = {"lagrangian": "In the Lagrangian", "kinetic": "In the kinetic energy T",
+           "potential": "In the potential energy U", "nonnegative": "In the coordinates that are never negative"}  # fmt: skip
+# a request location as the API prints it at the start of a message: lagrangian, parameters[1].name, particles[0].mass
+_API_PLACE = re.compile(r"^[a-z]+(?:\[\d+\]|\.[A-Za-z0-9_]+)*: ")
+
+
+def readable(loc: tuple, message: str) -> str:
+    """A refusal as the form says it: its place in the form's words ("In the Lagrangian: unknown name …",
+    "Parameter 2 (name): …") instead of the request's field name ("lagrangian: …")."""
+    head = loc[0] if loc else ""
+    if head in _FIELDS:
+        place = _FIELDS[str(head)]
+    elif head == "forces" and len(loc) > 1:
+        place = f"In the force on {excerpt(loc[1])}"
+    elif head == "particles" and len(loc) > 2 and isinstance(loc[1], int):
+        column = "mass" if loc[2] == "mass" else f"{AXES[loc[3]]}" if len(loc) > 3 and isinstance(loc[3], int) else loc[2]
+        place = f"In particle {loc[1] + 1}, {column}"
+    elif head in ("parameters", "coordinates") and len(loc) > 1 and isinstance(loc[1], int):
+        place = f"{'Parameter' if head == 'parameters' else 'Coordinate'} {loc[1] + 1}"
+        place += f" ({excerpt(loc[2])})" if len(loc) > 2 else ""
+    elif loc:
+        words = _where(loc)
+        place = words[:1].upper() + words[1:]
+    else:
+        return message
+    return f"{place}: {_API_PLACE.sub('', message, count=1)}"
+
+
 def located_error(form: Form, loc: tuple, message: str, start: int | None = None, end: int | None = None) -> FormError:
     target = field_id(form, loc)
-    return FormError(message, target, _value_at(form, target), start, end)
+    return FormError(readable(loc, message), target, _value_at(form, target), start, end)
 
 
 def query_of(form: Form) -> dict[str, Any]:

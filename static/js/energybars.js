@@ -1,5 +1,6 @@
 /**
  * energybars.js — bars of T, U, E = T + U (and h where h ≠ E) at the instant the animation shows.
+ * A system given by L alone has no T and U told apart, so no E: its one bar is h.
  *
  *   const bars = new EnergyBars(container);
  *   bars.load(run);   // run from simulation.js prepareRun(): one scale for the whole run
@@ -21,7 +22,9 @@ export class EnergyBars {
     const rows = [];
     if (run.T) rows.push({ key: "T", name: "T", title: "kinetic energy", values: run.T, color: COLORS.T });
     if (run.U) rows.push({ key: "U", name: "U", title: "potential energy", values: run.U, color: COLORS.U });
-    if (run.energy) rows.push({ key: "E", name: "E", title: "T + U", values: run.energy, color: COLORS.E });
+    // h_equals_e null: only L was given, E = T + U is not defined (the series the server calls energy is h)
+    const undecided = run.data.h_equals_e === null || run.data.h_equals_e === undefined;
+    if (run.energy && !undecided) rows.push({ key: "E", name: "E", title: "T + U", values: run.energy, color: COLORS.E });
     if (run.hamiltonian && !run.data.h_equals_e) rows.push({ key: "h", name: "h", title: "the energy function", values: run.hamiltonian, color: COLORS.h });
     let lo = 0, hi = 0;
     for (const r of rows) for (const v of r.values) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }

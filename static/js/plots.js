@@ -41,18 +41,21 @@ class TimePanel extends PreviewPanel {
 
 class EnergyPanel extends TimePanel {
   draw(run) {
+    // only L given (h_equals_e null): T and U cannot be told apart, so E = T + U is not defined; h alone is drawn
+    const undecided = run.data.h_equals_e === null || run.data.h_equals_e === undefined;
     const top = [];
     if (run.T) top.push({ name: "T", values: run.T, color: COLORS.T });
     if (run.U) top.push({ name: "U", values: run.U, color: COLORS.U });
-    top.push({ name: "E = T + U", values: run.energy, color: COLORS.E });
+    if (!undecided) top.push({ name: "E = T + U", values: run.energy, color: COLORS.E });
     top.push({ name: "h", values: run.hamiltonian, color: COLORS.h, dash: "dash" });
     const dE = diff(run.energy), dh = diff(run.hamiltonian);
-    const bottom = [{ name: "E − E(0)", values: dE, color: COLORS.E }, { name: "h − h(0)", values: dh, color: COLORS.h, dash: "dash" }];
+    const bottom = [{ name: "h − h(0)", values: dh, color: COLORS.h, dash: "dash" }];
+    if (!undecided) bottom.unshift({ name: "E − E(0)", values: dE, color: COLORS.E });
     this.drawSeries(run, top, bottom, "energy (J)", "change (J)");
     // relative to the run's energy scale (E itself may be zero, as when U is measured from the start)
     const scale = Math.max(...finite([...run.energy, ...(run.T || []), ...(run.U || [])]).map(Math.abs), 1e-300);
     let what = { true: "h = E here.", false: "h and E differ here." }[run.data.h_equals_e]
-      ?? "Only L was given, so E cannot be told apart from h: the curve labelled E is h.";
+      ?? "Only L was given, so T and U cannot be told apart and the energy E = T + U is not defined here: h is drawn alone.";
     if (run.data.forced) what += " A non-conservative generalized force acts, so the change is physical, not numerical.";
     // a change within the run's energy resolution is the integration's error, not a number to read
     // each change named with its unit, and as a share of the run's largest energy (so 0.9 reads as 90 %)
@@ -62,7 +65,8 @@ class EnergyPanel extends TimePanel {
       const share = big / scale;
       return `${fmt(big)} J (${share >= 0.01 ? `${fmt(100 * share)} %` : `${fmt(share)}`} of the largest energy in the run, ${fmt(scale)} J)`;
     };
-    this.readout.textContent = `Largest change since t = 0: E changed by ${change(dE)}; h changed by ${change(dh)}. ${what}`;
+    const changes = undecided ? `h changed by ${change(dh)}` : `E changed by ${change(dE)}; h changed by ${change(dh)}`;
+    this.readout.textContent = `Largest change since t = 0: ${changes}. ${what}`;
     seriesTable(this.summary, "Energies over the run (J)", run.t, [...top, ...bottom]);
   }
 }
@@ -89,7 +93,12 @@ class MomentaPanel extends TimePanel {
     const drift = Math.max(...finite(bottom.flatMap((s) => Array.from(s.values))).map(Math.abs), 0);
     const lo = Math.min(...all), hi = Math.max(...all);
     const pad = Math.max(0.05 * Math.max(Math.abs(lo), Math.abs(hi)), 5 * drift, 1e-12);
-    const units = [...new Set(names.map((n) => (run.data.momentum_units && run.data.momentum_units[n.slice(2)]) || momentumUnit(run.data.units[n.slice(2)])))];
+    // a rotation's J of coordinates in m is in kg·m²/s; a momentum has its coordinate's unit
+    const lengths = Object.values(run.data.units).every((u) => u === "m");
+    const unitOf = (n) => n.startsWith("J")
+      ? (lengths ? momentumUnit("rad") : "SI units")
+      : (run.data.momentum_units && run.data.momentum_units[n.slice(2)]) || momentumUnit(run.data.units[n.slice(2)]);
+    const units = [...new Set(names.map(unitOf))];
     const unit = units.length === 1 ? units[0] : "SI units";
     this.drawSeries(run, top, bottom, `momentum (${unit})`, `change (${unit})`, { yaxis: { range: [lo - pad, hi + pad] } });
     // each momentum with its own unit: "p_θ stays at 1 kg·m²/s within 7.6 × 10⁻⁹ kg·m²/s"

@@ -18,7 +18,7 @@ export function drawFrame(player, i) {
   ctx.clearRect(0, 0, canvas.width, canvas.height);
   ctx.lineCap = "round"; ctx.lineJoin = "round";
   const drawn = { links: 0, wheels: 0, slack: false, forces: [], event: "", none: !!spec.none };
-  if (spec.none) message(ctx, canvas, dpr, "No picture of its own: this system has no particle positions.", canvas.height / 2);
+  // a system with no particle positions has no canvas shown (site.css): its caption says so, once
   // fixed bodies (a ramp, a wedge), then the curves: the ground, wires, dashed guides
   drawn.solids = drawSolids(player, ctx, i, dpr);
   for (const c of player.curveCols) drawCurve(player.camera, ctx, c, c.moving ? c.at(run.envAt(i)) : c.cols, dpr);

@@ -187,6 +187,31 @@ def cut_short(exc: TooMuchWork, method: Method, problem: Problem, Y: np.ndarray,
     return exc
 
 
+# why a run stops, in a student's words, by the kernel's status (app/numerics/kernels/common.py)
+_WHY_STOPPED = {
+    "step size underflow": "no step, however small, could follow the equations from there: they change without "
+    "bound, as where they divide by a quantity that reaches zero (r = 0 of polar coordinates, the apex of a cone)",
+    "non-finite state": "the equations give an infinite or undefined value there, as where they divide by zero",
+    "implicit stage equations did not converge": "the implicit method could not solve its equations for the next "
+    "step there, as where the motion changes without bound",
+}
+
+
+def stop_sentence(problem: Problem, status: int, where: str, last: np.ndarray | None) -> str:
+    """Why a run ended early, where, and at which coordinates: "the run stops at t = 1.102 s, at r = 0.0003 m,
+    φ = 2.1: no step, however small, could follow the equations from there: …"."""
+    from app.engine.names import unicode
+    from app.numerics.kernels.common import STATUS_NAMES
+
+    name = STATUS_NAMES.get(status, "stopped")
+    at = ""
+    if last is not None:
+        coords = problem.system.coordinates
+        at = ", at " + ", ".join(f"{unicode(q)} = {float(v):.3g}" for q, v in zip(coords, last[: len(coords)], strict=True))
+    why = _WHY_STOPPED.get(name, "the equations cannot be followed further")
+    return f"the run stops at {where}{at}: {why}"
+
+
 def outside_names(problem: Problem, y: np.ndarray) -> str:
     """Which components are beyond their bounds, e.g. "|rho| passed 1e+03"."""
     coords = problem.system.coordinates
@@ -201,7 +226,7 @@ def finished(
     method: Method, problem: Problem, Y: np.ndarray, filled: int, status: int, last: np.ndarray | None = None, **stats
 ) -> Trajectory:
     """A trajectory from kernel output: complete, or cut at the last sample reached with the reason."""
-    from app.numerics.kernels.common import BOUND, DONE, STATUS_NAMES
+    from app.numerics.kernels.common import BOUND, DONE
 
     if status == BOUND and filled:
         # keep the samples up to the first one outside the bounds (a long step may have passed several)
@@ -219,5 +244,5 @@ def finished(
             "so the run stops there"
         )
     else:
-        reason = f"{STATUS_NAMES.get(status, 'stopped')} after {where}: the equations cannot be followed further"
+        reason = stop_sentence(problem, status, where, Y[filled - 1] if filled else None)
     return Trajectory(method.name, t, y, complete=False, stop_reason=reason, wall_time_s=0.0, **stats)

@@ -1,0 +1,51 @@
+"""The playground's default start (issue 40, items 45 and 46): a cyclic coordinate turns at the steady motion's rate."""
+
+import math
+
+import pytest
+
+from app.engine.contract import derivation_json
+from app.engine.derive import derive
+from app.engine.user_system import UserSystem
+from app.viz.user_page import model_of
+from tests.web.test_playground_prof_d import CONE
+
+KEPLER = {
+    "coordinates": ["r", "phi"],
+    "nonnegative": ["r"],
+    "parameters": [{"name": "m", "value": 1.0, "unit": "kg"}, {"name": "k", "value": 2.0}],
+    "lagrangian": "m/2*(r_dot**2 + r**2*phi_dot**2) + k/r",
+}
+
+
+def model(spec):
+    user = UserSystem.of(spec)
+    return model_of(user, derivation_json(derive(user.system())), ["auto"])
+
+
+def start(m) -> dict[str, float]:
+    """The initial state the page's controls hold."""
+    return {c["name"]: float(c["value"]) for c in m["initial"]}
+
+
+@pytest.mark.parametrize(
+    ("spec", "rate"),
+    [
+        # the cone: p_φ² = m² g cot α r³, so φ̇² = g cot α / r at r = 1
+        (CONE, math.sqrt(9.81 / math.tan(0.5))),
+        # Kepler: p_φ² = m k r, so φ̇² = k/(m r³): the circular orbit through r = 1
+        (KEPLER, math.sqrt(2.0)),
+    ],
+    ids=["cone", "kepler"],
+)
+def test_a_cyclic_coordinate_starts_at_the_steady_motion_rate(spec, rate):
+    m = model(spec)
+    assert start(m)["r"] == 1.0 and start(m)["phi_dot"] == pytest.approx(rate, rel=1e-5)
+    assert "steady motion through r = 1" in m["initial_note"] and "φ̇(0)" in m["initial_note"]
+
+
+def test_a_system_without_a_reduction_starts_at_rest():
+    spring = {"coordinates": ["x"], "parameters": [{"name": "m", "value": 1.0}, {"name": "k", "value": 1.0}],
+              "kinetic": "m*x_dot**2/2", "potential": "k*x**2/2"}  # fmt: skip
+    m = model(spring)
+    assert start(m) == {"x": 1.0, "x_dot": 0.0} and "initial_note" not in m
