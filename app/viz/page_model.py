@@ -15,7 +15,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from app.engine.dimensions import kind_of_unit
-from app.engine.names import MASS_MATRIX, latex, prose
+from app.engine.names import MASS_MATRIX, latex, prose, unicode
 from app.engine.notation import printed
 from app.engine.report import CORE_STEPS
 from app.engine.trees import TreeError, maybe_of_text, of_text
@@ -103,7 +103,7 @@ def nothing_conserved(doc: dict[str, Any]) -> str:
     if (doc.get("explicit_time_derivative") or {}).get("sympy", "0") != "0":
         causes.append("L depends explicitly on time (∂L/∂t ≠ 0)")
     if doc.get("generalized_forces"):
-        on = ", ".join(prose(q) for q in doc["generalized_forces"])
+        on = ", ".join(unicode(q) for q in doc["generalized_forces"])
         causes.append(f"a generalized force that no potential describes acts on {on} and does work")
     if not causes:
         return "Nothing is conserved here: no coordinate is cyclic and no symmetry of L was found."

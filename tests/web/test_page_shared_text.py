@@ -64,9 +64,7 @@ def test_every_symbol_row_names_a_letter_the_page_prints(client, scene):
     rows = re.findall(r'<tr><td><span class="math" data-tex="([^"]*)">(.*?)</span></td>', table, flags=re.S)
     assert rows
     missing = [
-        tex
-        for tex, math in rows
-        if inner(math) not in formulas and not in_words(notation[html.unescape(tex)], prose)
+        tex for tex, math in rows if inner(math) not in formulas and not in_words(notation[html.unescape(tex)], prose)
     ]
     assert missing == [], f"{scene}: the Symbols table lists {missing}, which the page never prints"
 
@@ -143,7 +141,9 @@ def test_methods_and_tolerances_have_readable_labels_and_keep_the_apis_values(cl
     assert tolerances is not None
     assert '<option value="1e-8" selected>10⁻⁸</option>' in tolerances.group(0).replace("\n", "")
     # the API still takes the names
-    run = client.post("/api/scenes/simple-pendulum/simulate", json={"initial": START, "method": "Radau-compiled", "rtol": 1e-6})
+    run = client.post(
+        "/api/scenes/simple-pendulum/simulate", json={"initial": START, "method": "Radau-compiled", "rtol": 1e-6}
+    )
     assert run.status_code == 200
 
 
@@ -158,7 +158,9 @@ def test_autos_reason_is_one_sentence_without_nested_brackets(client):
     assert deepest <= 1, reason
 
 
-@pytest.mark.parametrize("scene", ["helix-bead", "incline-block", "tabletop-spring", "spherical-pendulum", "simple-pendulum"])
+@pytest.mark.parametrize(
+    "scene", ["helix-bead", "incline-block", "tabletop-spring", "spherical-pendulum", "simple-pendulum"]
+)
 def test_equilibria_are_one_step(client, scene):
     titles = [t for t, _, _ in steps_of(page(client, scene))]
     equilibria = [t for t in titles if t.startswith("Equilibria")]
@@ -215,7 +217,10 @@ def test_a_further_example_is_headed_as_a_textbook_heads_it(client):
 
 def test_nothing_conserved_names_the_cause_that_applies(client):
     damped = words(page(client, "damped-pendulum"))
-    assert "Nothing is conserved here: a non-conservative force acts, so h changes" in damped
+    assert (
+        "Nothing is conserved here: a generalized force that no potential describes acts on θ and does work, so h changes"
+        in damped
+    )
     assert " or L depends on time" not in damped
 
 
@@ -247,5 +252,5 @@ def test_the_potential_energys_sentence_is_true_of_a_driven_support_and_nothing_
     assert "positions only" not in potential["explanation"] and "explicitly, on the time t" in potential["explanation"]
     assert doc["conserved"] == []
     assert nothing_conserved(doc) == (
-        "Nothing is conserved here: L depends explicitly on time, so h changes, and no momentum stays constant."
+        "Nothing is conserved here: L depends explicitly on time (∂L/∂t ≠ 0), so h changes, and no momentum stays constant."
     )
