@@ -37,7 +37,8 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine.budget import display_budget, tidy, work_limit
+from app.engine import textbook
+from app.engine.budget import display_budget, tidy, unbudgeted, work_limit
 from app.engine.check_answers import (
     PER_COORDINATE,
     STEPS,
@@ -71,7 +72,7 @@ from app.engine.compare import (
     without_constant,
 )
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json
-from app.engine.dimensions import dimension, mismatch
+from app.engine.dimensions import dimension, mismatch, number_beside_units
 from app.engine.mistake_answer import linearised, missing_square
 from app.engine.mistake_box import piece_box
 from app.engine.mistake_families import FollowUp, Mistake
@@ -201,7 +202,7 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         # the mistake only: what cancels identically gone, trigonometry recombined; where that did not apply
         # (a long difference, an acceleration's), the display's own simplification
         only = mistake_only(difference, DIFFERENCE_WORK)
-        shown = printer.pair(display(difference) if only is difference else only)
+        shown = _shown(pb, printer, display(difference) if only is difference else only)
     message = f"Incorrect: this is not {_noun(pb)}{how}."
     # terms whose units disagree are named first, at any step: no algebra explains them; then the catalogue,
     # then a whole of the wrong units
@@ -256,6 +257,18 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
     if pb.step == "momentum" and differ_by_factor(b, a):
         partial = None  # the answer agrees up to one factor: "no part agrees" would contradict the hint
     return _verdict("incorrect", message, _reveal(shown), hint, partial=partial)
+
+
+def _shown(pb: Problem, printer: Printer, shown: sp.Expr) -> dict[str, Any]:
+    """A difference with no factor a reader could not write: (1 − R) m R θ̇ subtracts a length from a number,
+    so it is shown expanded (m R θ̇ − m R² θ̇), as it is, not refactored by the textbook form."""
+    if pb.dimensions and number_beside_units(shown, pb.dimensions):
+        expanded = sp.expand(shown)
+        if not number_beside_units(expanded, pb.dimensions):
+            with unbudgeted():
+                tex = textbook.latex(expanded, printer.names, None)
+            return printer.shown(expanded, tex, expanded)
+    return printer.pair(shown)
 
 
 def _units_verdict(pb: Problem, printer: Printer, mistake: Mistake, hint: str) -> dict[str, Any]:

@@ -230,6 +230,15 @@ def _bare_number(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Offence | No
     return Offence(expr, f"{spoken(n)} has no unit and cannot be added to {quantity(got)}")
 
 
+def number_beside_units(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> bool:
+    """Whether any sum inside expr adds a pure number to terms with units ((1 − R) m R θ̇): a form a reader could
+    not write, though the whole may be consistent (the number reads as a constant of the same units)."""
+    for a in sp.preorder_traversal(expr):
+        if isinstance(a, sp.Add) and _bare_number(a, known) is not None:
+            return True
+    return False
+
+
 def described(d: Dims) -> str:
     """A dimension in words with its unit, once: "a mass (kg)", "a squared rate (1/s²)", "a quantity in s⁴"."""
     words = quantity(d)
