@@ -71,9 +71,11 @@ def test_corpus(system, step, coordinate, answer, verdict, difference, hint):
     if hint is not None and hint.startswith("key:"):
         assert result["mistake"]["key"] == hint.removeprefix("key:"), result
         assert result["hint"] not in POINTERS.values()
-        # the piece under the name says what it is, or is not shown where the difference line says it all
-        tex = result["mistake"]["latex"]
+        # the piece kept for the reveal says what it is, or is not kept where the difference says it all; under
+        # the name, nothing of the correct answer
+        tex = result["reveal"]["piece"]
         assert tex == "" or tex.startswith(r"\text{"), tex
+        assert result["mistake"]["latex"] == "", result["mistake"]
     elif hint in HINTS:
         # a rule's hint, with the system's own reason added where it has one (h ≠ E)
         assert result["hint"].startswith(HINTS[hint]) and result["mistake"]["key"] == hint, result
@@ -83,13 +85,15 @@ def test_corpus(system, step, coordinate, answer, verdict, difference, hint):
     else:
         assert result["hint"] == expected_hint(step, hint)
     if difference is None:
-        assert result["difference"] is None
+        assert result["reveal"] is None
     else:
+        # the difference is kept for the step's reveal, never in the verdict's words
+        shown = result["reveal"]["difference"]
         names = {**d.table.namespace(), **{s.name: s for s in d.table.qdd}}
-        got = parse_expression(result["difference"]["sympy"], names)
+        got = parse_expression(shown["sympy"], names)
         want = parse_expression(difference, names)
-        assert sp.simplify(got - want) == 0, (result["difference"], difference)
-        assert result["difference"]["latex"]
+        assert sp.simplify(got - want) == 0, (shown, difference)
+        assert shown["latex"]
     if verdict == "equivalent":
         message = result["message"]
         assert message.startswith("Equivalent:") and ("multiplied by" in message or "plus" in message)
@@ -293,10 +297,10 @@ def test_the_double_pendulums_missing_velocity_squared_term_is_the_whole_differe
         "(m1 + m2)*l1**2*theta1_ddot + m2*l1*l2*cos(theta1 - theta2)*theta2_ddot + (m1 + m2)*g*l1*sin(theta1)",
     )
     names = {**d.table.namespace(), **{s.name: s for s in d.table.qdd}}
-    shown = parse_expression(result["difference"]["sympy"], names)
+    shown = parse_expression(result["reveal"]["difference"]["sympy"], names)
     missing = parse_expression("m2*l1*l2*sin(theta1 - theta2)*theta2_dot**2", names)
     # the whole difference is that term (up to scale), nothing about the accelerations
-    assert not shown.has(*d.table.qdd) and "ddot" not in result["difference"]["latex"]
+    assert not shown.has(*d.table.qdd) and "ddot" not in result["reveal"]["difference"]["latex"]
     assert sp.simplify(shown / missing).is_number
     assert len(sp.Add.make_args(shown)) == 1
     # and the θ̇₁² term of the θ₂ equation
@@ -304,7 +308,7 @@ def test_the_double_pendulums_missing_velocity_squared_term_is_the_whole_differe
         problem(d, "equation", "theta2"),
         "m2*l2**2*theta2_ddot + m2*l1*l2*cos(theta1 - theta2)*theta1_ddot + m2*g*l2*sin(theta2)",
     )
-    shown = parse_expression(result["difference"]["sympy"], names)
+    shown = parse_expression(result["reveal"]["difference"]["sympy"], names)
     assert sp.simplify(shown / parse_expression("l1*l2*m2*sin(theta1 - theta2)*theta1_dot**2", names)).is_number
 
 
