@@ -330,7 +330,7 @@ SLIPS = [
         " + m2*l1*l2*theta1_dot*theta2_dot*cos(theta1 + theta2)",
         r"θ₁ \+ θ₂ where θ₁ − θ₂ belongs.*the sign of θ₂",
     ),
-    ("elastic-pendulum", "potential", None, "-m*g*r*cos(phi) + k*(r - l)**2", r"½ k.*spring"),
+    ("elastic-pendulum", "potential", None, "-m*g*r*cos(phi) + k*(r - l)**2", r"spring.*½ k"),
     ("elastic-pendulum", "momentum", "phi", "m*r*phi_dot", r"factor r is missing"),
     ("elastic-pendulum", "kinetic", None, "m*(r_dot**2 + r*phi_dot**2)/2", UNITS_WORDS),
     ("simple-pendulum", "hamiltonian", None, "m*R**2*theta_dot**2/2 - m*g*R*cos(theta) + 7",
