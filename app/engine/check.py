@@ -445,7 +445,7 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str:
         if factor is not None:
             if factor == 2:
                 return HALF_MOMENTUM_HINT
-            template = CONSTANT_FACTOR_HINT if factor.is_Number else MISSING_FACTOR_HINT
+            template = CONSTANT_FACTOR_HINT if factor_is_constant(b, a) else MISSING_FACTOR_HINT
             return template.format(factor=unicode_text(factor))
     # slips read from the answer itself (app/engine/mistake_answer.py)
     if pb.step in ("kinetic", "lagrangian", "hamiltonian"):
