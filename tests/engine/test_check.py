@@ -251,14 +251,19 @@ def test_the_half_lost_in_differentiating_the_square_is_not_a_force_counted_twic
     assert "counted twice" not in result["hint"] and "differentiating the square" in result["hint"]
 
 
-def student_text(expr: sp.Expr, step: str) -> str:
+def student_text(expr: sp.Expr, step: str, d=None) -> str:
     """A mistaken expression as a student would type it: collected, in the API's syntax, at their own scale
-    (an equation with the opposite sign, U with its zero moved)."""
+    (an equation with the opposite sign, U with its zero moved by a constant energy: a term of U with every
+    coordinate at 1, never a bare number, which has no unit)."""
     shown = sp.factor_terms(sp.collect(sp.expand(expr), sorted(expr.free_symbols, key=lambda s: s.name)))
     if step == "equation":
         shown = -shown
     text = sp.sstr(shown)
-    return f"{text} + 3" if step == "potential" else text
+    if step != "potential" or d is None:
+        return text
+    term = sp.Add.make_args(sp.expand(d.mechanics.U))[0]
+    constant = term.xreplace({q: sp.Integer(1) for q in d.table.q})
+    return f"{text} + 3*({sp.sstr(constant)})" if constant.free_symbols else text
 
 
 FAMILY_STEPS = [
@@ -278,14 +283,15 @@ def test_every_generated_mistake_typed_back_is_named(system, step, coordinate):
     generated = [(m, hint) for m, hint, _ in pb.mistakes if "." in m.key]
     assert generated or step == "potential"
     for mistake, hint in generated:
-        result = judge(pb, student_text(mistake.expr, step))
+        result = judge(pb, student_text(mistake.expr, step, derivation(system)))
         assert result["verdict"] == "incorrect", (mistake.key, result)
         assert result["mistake"] and result["mistake"]["key"] == mistake.key, (mistake.key, result)
         assert result["hint"] == hint
         if mistake.family in ("other_coordinate", "limit"):
             # another question's right answer: nothing else in it is "right"
             assert result["partial"] is None, (mistake.key, result["partial"])
-        else:
+        elif len(sp.Add.make_args(sp.expand(mistake.expr))) > 1:
+            # "everything else is right" only where there is something else
             assert result["partial"]["message"]
 
 
