@@ -77,9 +77,9 @@ from app.engine.mistake_answer import linearised, missing_square
 from app.engine.mistake_box import piece_box
 from app.engine.mistake_families import FollowUp, Mistake
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, HALF_MOMENTUM_HINT, MISSING_FACTOR_HINT, POINTERS
+from app.engine.names import unicode
 from app.engine.parse import Parsed
 from app.engine.report import Printer, display
-from app.engine.names import unicode
 from app.engine.textbook import unicode_text
 from app.engine.work import WorkExceeded
 from app.limits import ANSWER_SLIP_WORK, DIFFERENCE_WORK, FACTOR_WORK, PARTS_WORK, PIECE_WORK
@@ -279,7 +279,10 @@ def _units_verdict(pb: Problem, printer: Printer, mistake: Mistake, hint: str) -
         f"Incorrect: this is not {_noun(pb)}: its units do not agree, as said below.",
         None,
         hint,
-        mistake={**mistake_json(mistake, printer.tex), "latex": r"\text{in your answer: }" + printer.tex(mistake.piece)},
+        mistake={
+            **mistake_json(mistake, printer.tex),
+            "latex": r"\text{in your answer: }" + printer.tex(mistake.piece),
+        },
     )
 
 
@@ -366,8 +369,9 @@ def judge_follow_up(pb: Problem, key: str, text: Parsed | str) -> dict[str, Any]
         "Not yet: that is not the answer to the question.",
         # a new hint, not the first one again and not the question again: the slip in the reply where it is one
         # a student makes, else the concrete one where the question has it
-        hint=_follow_up_slip(pb, fu, answer) or fu.hint or "Work it out on its own, from its definition, then "
-        "compare your reply with it term by term.",
+        hint=_follow_up_slip(pb, fu, answer)
+        or fu.hint
+        or "Work it out on its own, from its definition, then compare your reply with it term by term.",
         mistake={**mistake_json(mistake, printer.tex), "latex": ""},  # (the piece is the question's answer)
         follow_up=follow_up_json(mistake, allowed_names(fu.kind, pb.kinds)),
     )

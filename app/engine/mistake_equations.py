@@ -31,7 +31,6 @@ from app.engine.mistake_families import (
     Mistake,
     kind_of_term,
     kinetic_mistakes,
-    monomial_words,
     potential_mistakes,
     short_form,
     slug,

@@ -212,7 +212,9 @@ def _half_why(step: str, group: sp.Expr, s: sp.Symbol) -> str:
         return "a spring stores ½ k × stretch², the ½ coming from the work ∫ k x dx"
     if step == "kinetic":
         return "every body's kinetic energy is ½ m v²"
-    return "this body's part appears once; a ½ (a point halfway along, such as a movable pulley's middle) is easily lost"
+    return (
+        "this body's part appears once; a ½ (a point halfway along, such as a movable pulley's middle) is easily lost"
+    )
 
 
 def _carrier(d: Derivation, i: int, q: sp.Symbol) -> str | None:

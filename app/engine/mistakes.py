@@ -270,8 +270,7 @@ MISSING_FACTOR_HINT = (
     "in L, including ones that depend on the coordinates."
 )
 CONSTANT_FACTOR_HINT = (
-    "A factor {factor} is missing from your momentum. p = ∂L/∂q̇ keeps every factor that multiplies the velocity "
-    "in L."
+    "A factor {factor} is missing from your momentum. p = ∂L/∂q̇ keeps every factor that multiplies the velocity in L."
 )
 HALF_MOMENTUM_HINT = (
     "Your momentum is half the correct one: the ½ of ½ a q̇² is gone once it is differentiated, since "

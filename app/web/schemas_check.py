@@ -102,8 +102,8 @@ class Reveal(BaseModel):
         "correct one scaled to the answer's coefficient of the acceleration)."
     )
     piece: str = Field(
-        description="The correct piece the mistake is in, typeset and labelled (\"what your T leaves out: …\", "
-        "\"the correct term: …\"), or empty where the difference says it."
+        description='The correct piece the mistake is in, typeset and labelled ("what your T leaves out: …", '
+        '"the correct term: …"), or empty where the difference says it.'
     )
 
 
@@ -129,7 +129,7 @@ class CheckResponse(BaseModel):
     reveal: Reveal | None = Field(
         None,
         description="For an incorrect answer: what follows the correct answer, for a page to show only with the "
-        "step itself (\"Show this step\"), never beside the verdict: the other fields name the mistake without it.",
+        'step itself ("Show this step"), never beside the verdict: the other fields name the mistake without it.',
     )
 
 

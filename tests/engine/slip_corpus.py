@@ -318,10 +318,20 @@ SLIPS = [
     ("movable-incline", "acceleration", "X", "0", r"wedge.*(held still|fixed).*M → ∞"),
     ("movable-incline", "equation", "D", "m*D_ddot - m*g*sin(alpha)", r"wedge.*(held still|fixed).*M → ∞"),
     ("double-pendulum", "acceleration", "theta1", "-g*theta1/l1", SMALL),
-    ("movable-incline", "kinetic", None, "M*X_dot**2/2 + m*(D_dot**2 + 2*D_dot*X_dot*cos(alpha))/2",
-     r"block.*moves with the wedge.*Ẋ"),
-    ("double-pendulum", "potential", None, "-m1*g*l1*cos(theta1) - m2*g*l2*cos(theta2)",
-     r"lower bob.*moves with the upper bob.*θ₁"),
+    (
+        "movable-incline",
+        "kinetic",
+        None,
+        "M*X_dot**2/2 + m*(D_dot**2 + 2*D_dot*X_dot*cos(alpha))/2",
+        r"block.*moves with the wedge.*Ẋ",
+    ),
+    (
+        "double-pendulum",
+        "potential",
+        None,
+        "-m1*g*l1*cos(theta1) - m2*g*l2*cos(theta2)",
+        r"lower bob.*moves with the upper bob.*θ₁",
+    ),
     (
         "double-pendulum",
         "kinetic",
@@ -333,8 +343,7 @@ SLIPS = [
     ("elastic-pendulum", "potential", None, "-m*g*r*cos(phi) + k*(r - l)**2", r"spring.*½ k"),
     ("elastic-pendulum", "momentum", "phi", "m*r*phi_dot", r"factor r is missing"),
     ("elastic-pendulum", "kinetic", None, "m*(r_dot**2 + r*phi_dot**2)/2", UNITS_WORDS),
-    ("simple-pendulum", "hamiltonian", None, "m*R**2*theta_dot**2/2 - m*g*R*cos(theta) + 7",
-     r"7 has no unit.*energy"),
+    ("simple-pendulum", "hamiltonian", None, "m*R**2*theta_dot**2/2 - m*g*R*cos(theta) + 7", r"7 has no unit.*energy"),
     ("simple-pendulum", "momentum", "theta", "m*R*theta_dot", r"factor R is missing"),
 ]
 
