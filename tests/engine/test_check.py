@@ -10,6 +10,7 @@ import sympy as sp
 
 from app.engine.check import STEPS, CheckError, check_answer, exercises, judge, name_kinds, problem
 from app.engine.derive import Derivation, derive
+from app.engine.dimensions import dimension, system_dimensions
 from app.engine.exercises import exercise_json
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, OMEGA_HINT, POINTERS, RULES
 from app.engine.parse import parse_expression
@@ -261,9 +262,13 @@ def student_text(expr: sp.Expr, step: str, d=None) -> str:
     text = sp.sstr(shown)
     if step != "potential" or d is None:
         return text
-    term = sp.Add.make_args(sp.expand(d.mechanics.U))[0]
-    constant = term.xreplace({q: sp.Integer(1) for q in d.table.q})
-    return f"{text} + 3*({sp.sstr(constant)})" if constant.free_symbols else text
+    known = system_dimensions(d)
+    for term in sp.Add.make_args(sp.expand(d.mechanics.U)):
+        # a coordinate set to 1 keeps the term's units only where the coordinate is an angle
+        constant = term.xreplace({q: sp.Integer(1) for q in d.table.q})
+        if constant.free_symbols and dimension(constant, known) == dimension(term, known) is not None:
+            return f"{text} + 3*({sp.sstr(constant)})"
+    return text
 
 
 FAMILY_STEPS = [
