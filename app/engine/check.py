@@ -37,7 +37,8 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine.budget import display_budget, tidy, work_limit
+from app.engine import textbook
+from app.engine.budget import display_budget, tidy, unbudgeted, work_limit
 from app.engine.check_answers import (
     PER_COORDINATE,
     STEPS,
@@ -71,11 +72,12 @@ from app.engine.compare import (
     without_constant,
 )
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json
-from app.engine.dimensions import dimension, mismatch
+from app.engine.dimensions import dimension, mismatch, number_beside_units
 from app.engine.mistake_answer import linearised, missing_square
 from app.engine.mistake_box import piece_box
-from app.engine.mistake_families import Mistake
-from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, POINTERS
+from app.engine.mistake_families import FollowUp, Mistake
+from app.engine.mistakes import CONSTANT_FACTOR_HINT, HALF_MOMENTUM_HINT, MISSING_FACTOR_HINT, POINTERS
+from app.engine.names import unicode
 from app.engine.parse import Parsed
 from app.engine.report import Printer, display
 from app.engine.textbook import unicode_text
@@ -119,17 +121,28 @@ def _budgeted(work, fallback, units: float):
 
 
 def _verdict(
-    verdict: str, message: str, difference: dict[str, str] | None = None, hint: str | None = None, **more: Any
+    verdict: str, message: str, reveal: dict[str, Any] | None = None, hint: str | None = None, **more: Any
 ) -> dict[str, Any]:
+    """A verdict: what the student reads (message, hint, mistake, partial, follow_up) names the slip and never
+    prints the correct answer; ``reveal`` (the difference and the correct piece) is for the step's reveal."""
     return {
         "verdict": verdict,
         "message": message,
-        "difference": difference,
         "hint": hint,
         "mistake": more.get("mistake"),
         "partial": more.get("partial"),
         "follow_up": more.get("follow_up"),
+        "reveal": reveal,
     }
+
+
+def _reveal(shown: dict[str, str], piece: str = "") -> dict[str, Any]:
+    return {"difference": shown, "piece": piece}
+
+
+def _several_terms(answer: sp.Expr) -> bool:
+    """Whether "everything else is right" says anything: an answer of more than one term."""
+    return answer != 0 and len(sp.Add.make_args(sp.expand(answer))) > 1
 
 
 def _noun(pb: Problem) -> str:
@@ -172,6 +185,10 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
 
     for truth, b in numeric:
         if pb.relation == "constant" and differ_by_constant(a, b):
+            # another zero of U, unless the constant is a bare number beside an energy (7 has no unit)
+            offence = _units(pb, answer, None)
+            if offence is not None:
+                return _units_verdict(pb, printer, *offence)
             return _verdict("equivalent", _constant_message(pb, answer - truth))
         if pb.relation == "factor" and differ_by_factor(a, b):
             constant = factor_is_constant(a, b)
@@ -185,8 +202,8 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         # the mistake only: what cancels identically gone, trigonometry recombined; where that did not apply
         # (a long difference, an acceleration's), the display's own simplification
         only = mistake_only(difference, DIFFERENCE_WORK)
-        shown = printer.pair(display(difference) if only is difference else only)
-    message = f"Incorrect: this is not {_noun(pb)}{how}. The difference (yours − correct) is shown."
+        shown = _shown(pb, printer, display(difference) if only is difference else only)
+    message = f"Incorrect: this is not {_noun(pb)}{how}."
     # terms whose units disagree are named first, at any step: no algebra explains them; then the catalogue,
     # then a whole of the wrong units
     found = _units(pb, answer, None)
@@ -198,17 +215,7 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
     if found is not None:
         mistake, hint = found
         if mistake.family == "units":
-            # a difference whose terms have different units reads as nonsense ((1 − R/2) m R θ̇²): the units
-            # are the mistake, and nothing else is shown
-            return _verdict(
-                "incorrect",
-                f"Incorrect: this is not {_noun(pb)}: its units do not agree, as said below.",
-                None,
-                hint,
-                mistake=mistake_json(mistake, printer.tex, ""),
-                partial=None,
-                follow_up=None,
-            )
+            return _units_verdict(pb, printer, mistake, hint)
         if pb.relation == "exact" or equal(a, _known(mistake.expr, pb.groups)):
             # the answer is this mistake as written: show the difference as the change to the engine's own
             # pieces (m₂ l₁ l₂ θ̇₁ θ̇₂ (sin(θ₁ − θ₂) − cos(θ₁ − θ₂)), not its sines and cosines expanded)
@@ -229,12 +236,13 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         return _verdict(
             "incorrect",
             message,
-            shown,
+            # the correct piece (what the answer leaves out, the correct term) is the answer's: kept for the reveal
+            _reveal(shown, box),
             hint,
-            mistake={**mistake_json(mistake, printer.tex), "latex": box},
+            mistake={**mistake_json(mistake, printer.tex), "latex": ""},
             # "everything else is right" only where the answer is this mistake and nothing more (never for a
-            # whole of the wrong units: a second slip may hide behind it)
-            partial=partial_json(mistake, short_label(pb.step, pb.label)) if whole else None,
+            # whole of the wrong units: a second slip may hide behind it), and has more than the one slip's term
+            partial=partial_json(mistake, short_label(pb.step, pb.label)) if whole and _several_terms(answer) else None,
             follow_up=follow_up_json(mistake, allowed_names(mistake.follow_up.kind, pb.kinds))
             if mistake.follow_up
             else None,
@@ -245,7 +253,37 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         if pb.step in PARTED
         else None
     )
-    return _verdict("incorrect", message, shown, _hint(pb, answer, a, b, truth), partial=partial)
+    hint = _hint(pb, answer, a, b, truth)
+    if pb.step == "momentum" and differ_by_factor(b, a):
+        partial = None  # the answer agrees up to one factor: "no part agrees" would contradict the hint
+    return _verdict("incorrect", message, _reveal(shown), hint, partial=partial)
+
+
+def _shown(pb: Problem, printer: Printer, shown: sp.Expr) -> dict[str, Any]:
+    """A difference with no factor a reader could not write: (1 − R) m R θ̇ subtracts a length from a number,
+    so it is shown expanded (m R θ̇ − m R² θ̇), as it is, not refactored by the textbook form."""
+    if pb.dimensions and number_beside_units(shown, pb.dimensions):
+        expanded = sp.expand(shown)
+        if not number_beside_units(expanded, pb.dimensions):
+            with unbudgeted():
+                tex = textbook.latex(expanded, printer.names, None)
+            return printer.shown(expanded, tex, expanded)
+    return printer.pair(shown)
+
+
+def _units_verdict(pb: Problem, printer: Printer, mistake: Mistake, hint: str) -> dict[str, Any]:
+    """Terms whose units disagree: a difference would read as nonsense ((1 − R/2) m R θ̇²); the units are the
+    mistake, shown on the student's own sum, and nothing else is shown."""
+    return _verdict(
+        "incorrect",
+        f"Incorrect: this is not {_noun(pb)}: its units do not agree, as said below.",
+        None,
+        hint,
+        mistake={
+            **mistake_json(mistake, printer.tex),
+            "latex": r"\text{in your answer: }" + printer.tex(mistake.piece),
+        },
+    )
 
 
 def _whole_mistake(pb: Problem, a: Values, mistake: Mistake) -> bool:
@@ -287,9 +325,9 @@ def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake
     if offence is None:
         return None
     where = "every term of an expression has the same units; checking them finds a slip before any algebra"
-    mistake = Mistake("units.mismatch", "units", f"units that do not agree: {offence.words}", offence.piece, where,
+    mistake = Mistake("units.mismatch", "units", f"units that do not agree. {offence.words}", offence.piece, where,
                       answer)  # fmt: skip
-    return mistake, f"Check the units: {offence.words}."
+    return mistake, f"Check the units. {offence.words}."
 
 
 def follow_up_mistake(pb: Problem, key: str) -> Mistake:
@@ -328,12 +366,33 @@ def judge_follow_up(pb: Problem, key: str, text: Parsed | str) -> dict[str, Any]
         )
     return _verdict(
         "incorrect",
-        f"Not yet: that is not the answer to “{fu.question}”",
-        # a new hint, not the first one again: the concrete one where the question has it
-        hint=fu.hint or f"Work it out on its own, from its definition, then compare it term by term: {fu.question}",
+        "Not yet: that is not the answer to the question.",
+        # a new hint, not the first one again and not the question again: the slip in the reply where it is one
+        # a student makes, else the concrete one where the question has it
+        hint=_follow_up_slip(pb, fu, answer)
+        or fu.hint
+        or "Work it out on its own, from its definition, then compare your reply with it term by term.",
         mistake={**mistake_json(mistake, printer.tex), "latex": ""},  # (the piece is the question's answer)
         follow_up=follow_up_json(mistake, allowed_names(fu.kind, pb.kinds)),
     )
+
+
+def _follow_up_slip(pb: Problem, fu: FollowUp, answer: sp.Expr) -> str | None:
+    """The chain rule's rate left out of a time derivative: the reply times one coordinate's rate is the answer
+    (2 r for d/dt r², whose answer is 2 r ṙ)."""
+    if fu.kind != "momentum" or not fu.question.startswith("What is the time derivative"):
+        return None
+    for v in pb.groups.rates:
+        if not v.name.endswith("_dot") or v.name.endswith("_ddot") or not fu.truth.has(v):
+            continue
+        if equal(values(answer * v, pb.groups), _known(fu.truth, pb.groups)):
+            # d/dt f(q) = f′(q) q̇: the reply is f′(q), the derivative by q alone
+            name, rate = unicode(v.name[: -len("_dot")]), unicode(v.name)
+            return (
+                f"You differentiated with respect to {name}, and left out the chain rule's {rate}: {name} changes "
+                f"along the motion, so d/dt f({name}) = (df/d{name}) {rate}."
+            )
+    return None
 
 
 def _constant_message(pb: Problem, difference: sp.Expr) -> str:
@@ -369,7 +428,7 @@ def _difference(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[sp.Expr, 
         varying, constant = without_constant(answer - truth, pb.groups.dynamic())
         if varying != 0:
             # the clause only where a constant was in fact taken out of the difference
-            said = " (a constant, which would only move the zero of U, is left out)" if constant != 0 else ""
+            said = " (constants in U are ignored in this comparison)" if constant != 0 else ""
             return varying, said, one
         return answer - truth, "", one
     if pb.relation == "factor" and pb.acceleration is not None:
@@ -388,6 +447,8 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str:
         # the engine's momentum is the answer times a factor free of the velocities: a factor is missing
         factor = _budgeted(lambda: tidy(sp.cancel(truth / answer), FACTOR_WORK), None, FACTOR_WORK * 2)
         if factor is not None:
+            if factor == 2:
+                return HALF_MOMENTUM_HINT
             template = CONSTANT_FACTOR_HINT if factor_is_constant(b, a) else MISSING_FACTOR_HINT
             return template.format(factor=unicode_text(factor))
     # slips read from the answer itself (app/engine/mistake_answer.py)

@@ -38,8 +38,9 @@ GENERIC = frozenset({"term_sign"})
 
 # How a hint opens, by family: {what} is the step's label, {name} the mistake's name.
 _OPENINGS = {
-    "term_sign": "In your {what}, {name} is reversed",
-    "force_sign": "In your {what}, {name} is reversed",
+    "term_sign": "In your {what}, {name} is wrong",
+    "force_sign": "In your {what}, {name} is wrong",
+    "left_out": "Your {what} has {name}",
     "half_momentum": "Your {what} loses {name}",
     "force_doubled": "Your {what} has {name}",
     "small_angle": "Your {what} uses {name}. That is an approximation, not a slip of algebra",
@@ -118,7 +119,7 @@ def catalogue(
     # time, then a term's sign (which for a short expression is also the sign of everything else, and would hide
     # a rule's better name)
     # another question's right answer (another coordinate's, a body held still) is named as that, before all
-    found = [(m, sentence(m, label)) for m in (*other_coordinates(d, step, k), *held_still(d, step, truth))]
+    found = [(m, sentence(m, label)) for m in (*other_coordinates(d, step, k), *held_still(d, step, truth, k))]
     found += [x for x in made if x[0].family not in GENERIC]
     found += [x for x in carried if x[0].key.startswith(f"{step}.rigid")]
     found += _legacy(d, step, k, truth)

@@ -219,6 +219,9 @@ def mismatch(expr: sp.Expr, known: Mapping[sp.Symbol, Dims], want: Dims | None, 
     ``want`` (the truth's; None: any), in words; None when all is consistent or cannot be told."""
     if sp.count_ops(expr) > MAX_NODES:
         return None
+    bare = _bare_number(expr, known)
+    if bare is not None:
+        return bare
     try:
         got = _dims(expr, known)
     except _Mismatch as e:
@@ -230,15 +233,41 @@ def mismatch(expr: sp.Expr, known: Mapping[sp.Symbol, Dims], want: Dims | None, 
     extra = add_dims(got, want, Fraction(-1))
     inverted = bool(want) and got == {k: -v for k, v in want.items()}
     factor = (
-        "it is upside down: the reciprocal of what is asked for (numerator and denominator swapped)"
+        "It is upside down: numerator and denominator are swapped"
         if inverted
-        else f"a factor of {described(missing).removeprefix('a ').removeprefix('an ')} is missing"
+        else f"A factor of {described(missing).removeprefix('a ').removeprefix('an ')} is missing"
         if all(v > 0 for v in missing.values())
-        else f"it has a factor of {described(extra).removeprefix('a ').removeprefix('an ')} too many"
+        else f"It has a factor of {described(extra).removeprefix('a ').removeprefix('an ')} too many"
         if all(v > 0 for v in extra.values())
-        else f"they differ by {unit_text(missing)}"
+        else f"They differ by {unit_text(missing)}"
     )
-    return Offence(expr, f"your {what} is {described(got)}, but {what} is {described(want)}: {factor}")
+    # short sentences: what it is, what it should be, what would make it so
+    return Offence(expr, f"Your {what} is {described(got)}, but {what} is {described(want)}. {factor}")
+
+
+def _bare_number(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Offence | None:
+    """A pure number added to terms that have units (h + 7): the number has none.  (Inside a sum that is itself
+    dimensionless, 1 − cos θ, a number is right; nested in a length, (y₁ + y₂ + 3), it reads as metres.)"""
+    if not expr.is_Add:
+        return None
+    numbers = [a for a in expr.args if a.is_Number and a != 0]
+    if len(numbers) != 1:
+        return None
+    rest = expr - numbers[0]
+    got = dimension(rest, known)
+    if not got:
+        return None  # unknown, or a pure number beside a pure number
+    n = numbers[0]
+    return Offence(expr, f"{spoken(n)} has no unit and cannot be added to {quantity(got)}")
+
+
+def number_beside_units(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> bool:
+    """Whether any sum inside expr adds a pure number to terms with units ((1 − R) m R θ̇): a form a reader could
+    not write, though the whole may be consistent (the number reads as a constant of the same units)."""
+    for a in sp.preorder_traversal(expr):
+        if isinstance(a, sp.Add) and _bare_number(a, known) is not None:
+            return True
+    return False
 
 
 def described(d: Dims) -> str:

@@ -31,7 +31,6 @@ from app.engine.mistake_families import (
     Mistake,
     kind_of_term,
     kinetic_mistakes,
-    monomial_words,
     potential_mistakes,
     short_form,
     slug,
@@ -50,7 +49,7 @@ def momentum_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
         yield Mistake(
             f"momentum.part_left_out.{slug(sp.sstr(monomial))}",
             "part_left_out",
-            f"{what} of p_{name}, {spoken(short_form(part))}",
+            f"{what} of p_{name}",
             short_form(part),
             f"L has a term with {unicode(d.table.qd[k].name)} times "
             + (spoken(monomial) if monomial != 1 else "no other velocity")
@@ -111,7 +110,7 @@ def _equation_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
         yield Mistake(
             f"equation.chain_rule.{q.name}",
             "chain_rule",
-            f"{what}, {spoken(short_form(term))}",
+            what,
             short_form(term),
             f"{dl} depends on {unicode(q.name)} through {factor}, so its time derivative has the term "
             f"(∂/∂{unicode(q.name)} of {dl}) {unicode(qd.name)}",
@@ -182,7 +181,7 @@ def _equation_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
         yield Mistake(
             f"equation.term_sign.{slug(sp.sstr(monomial))}",
             "term_sign",
-            f"the sign of {monomial_words(monomial)}, {spoken(short_form(part))}",
+            f"the sign of your term {spoken(short_form(-part))}",
             short_form(part),
             "each term's sign follows from d/dt(∂L/∂q̇) − ∂L/∂q = Q",
             sp.expand(E - 2 * part),
@@ -210,9 +209,7 @@ def _dl_dq_mistakes(d: Derivation, k: int, E: sp.Expr) -> Iterator[Mistake]:
         yield Mistake(
             f"equation.dl_dq_part.{slug(sp.sstr(monomial))}",
             "dl_dq_part",
-            f"the {spoken(monomial)} term of ∂L/∂{qn}, {spoken(short_form(part))}"
-            if monomial != 1
-            else f"the velocity-free term of ∂L/∂{qn}, {spoken(short_form(part))}",
+            f"the {spoken(monomial)} term of ∂L/∂{qn}" if monomial != 1 else f"the velocity-free term of ∂L/∂{qn}",
             short_form(part),
             f"{letter} depends on {qn} through {factor}, so ∂L/∂{qn} has this term",
             sp.expand(E + part),
@@ -228,9 +225,9 @@ def _dl_dq_mistakes(d: Derivation, k: int, E: sp.Expr) -> Iterator[Mistake]:
             yield Mistake(
                 f"equation.force_left_out.{term_key(term)}",
                 "force_left_out",
-                f"the force from {kind[4:]} {spoken(term)}, its ∂/∂{qn}: {spoken(short_form(force))}",
+                f"the force from {kind[4:]} (its ∂/∂{qn})",
                 short_form(force),
-                f"∂L/∂{qn} = ∂T/∂{qn} − ∂U/∂{qn}, and {kind} {spoken(term)} depends on {qn}",
+                f"∂L/∂{qn} = ∂T/∂{qn} − ∂U/∂{qn}, and {kind} depends on {qn}",
                 sp.expand(E - force),
                 follow_up=FollowUp(
                     f"What is ∂U/∂{qn}?", "potential", sp.diff(m.U, q), "exact", spoken(short_form(sp.diff(m.U, q)))
@@ -249,7 +246,7 @@ def _lagrangian_terms(d: Derivation, k: int, E: sp.Expr) -> Iterator[Mistake]:
         yield Mistake(
             f"equation.dl_dq_part.{term_key(term)}",
             "dl_dq_part",
-            f"∂/∂{qn} of the term {spoken(term)} of L, {spoken(short_form(part))}",
+            f"∂/∂{qn} of the term {spoken(term)} of L",
             short_form(part),
             f"the term {spoken(term)} of L depends on {qn}, so ∂L/∂{qn} has its derivative",
             sp.expand(E + part),

@@ -186,10 +186,10 @@ def _body(d: Derivation, i: int) -> str:
 
 
 def _moved_alone(d: Derivation, i: int, body: str, q: sp.Symbol, qd: sp.Symbol, r: tuple, dr: tuple) -> str:
-    """A concrete second hint for "the speed when only q changes": the body's position, its velocity with q
-    alone changing, and the body that carries it along, where one moves with q exactly as it does."""
+    """A concrete second hint for "the speed when only q changes": the body that carries it along, where one
+    moves with q exactly as it does, and how to work the speed out from the body's position; never the velocity,
+    which is the answer."""
     position = ", ".join(spoken(c) for c in r)
-    velocity = ", ".join(spoken(x * qd) for x in dr)
     carrier = ""
     for j, other in enumerate(d.mechanics.positions):
         # another body whose position moves with q alone, and exactly as this one's part does: it carries it
@@ -197,9 +197,10 @@ def _moved_alone(d: Derivation, i: int, body: str, q: sp.Symbol, qd: sp.Symbol, 
         if j != i and moves == {q} and tuple(sp.diff(c, q) for c in other) == dr:
             carrier = f"The {_body(d, j)} carries the {body} along with it. "
             break
+    qn = unicode(q.name)
     return (
-        f"{carrier}Hold every other coordinate fixed and change {unicode(q.name)} alone: the {body} at ({position}) "
-        f"then moves with the velocity ({velocity}); the speed is the size of that velocity."
+        f"{carrier}Hold every other coordinate fixed and change {qn} alone. Differentiate the {body}'s position "
+        f"({position}) by {qn} and multiply by {unicode(qd.name)}: that is its velocity, and the speed is its size."
     )
 
 
@@ -282,7 +283,7 @@ def kinetic_mistakes(d: Derivation) -> Iterator[Mistake]:
                 yield Mistake(
                     f"kinetic.body_forgotten.{key}",
                     "body_forgotten",
-                    f"the kinetic energy of the {body}, {spoken(short_form(own))}",
+                    f"the kinetic energy of the {body}",
                     own,
                     f"the {body} (mass {spoken(mass)}) moves too: T adds ½ m v² over every body",
                     sp.expand(T - own),
@@ -369,7 +370,7 @@ def _cross_mistakes(d: Derivation, T: sp.Expr) -> Iterator[Mistake]:
         yield Mistake(
             f"kinetic.cross_term.{a.name}.{b.name}",
             "cross_term",
-            f"the cross term {spoken(short_form(part))}",
+            f"the cross term in {unicode(a.name)} {unicode(b.name)}",
             short_form(part),
             f"a position depends on both {unicode(a.name[:-4])} and {unicode(b.name[:-4])}: squaring its velocity "
             f"gives the product of the two parts, 2 ({unicode(a.name)} part)·({unicode(b.name)} part)",
@@ -382,9 +383,7 @@ def _parts_left_out(d: Derivation, expr: sp.Expr, step: str, letter: str) -> Ite
         yield Mistake(
             f"{step}.part_left_out.{slug(sp.sstr(monomial))}",
             "part_left_out",
-            f"the {spoken(monomial)} part of {letter}, {spoken(short_form(part))}"
-            if monomial != 1
-            else f"the part of {letter} without velocities, {spoken(short_form(part))}",
+            f"the {spoken(monomial)} part of {letter}" if monomial != 1 else f"the part of {letter} without velocities",
             short_form(part),
             f"{letter} has a term in {spoken(monomial)}" if monomial != 1 else f"{letter} has a velocity-free term",
             sp.expand(expr - part),
@@ -413,6 +412,12 @@ def kind_of_term(term: sp.Expr, d: Derivation) -> str:
     if any(isinstance(p.args[0], sp.Add) or p.args[0] in d.table.q for p in term.atoms(sp.Pow) if p.args[1] == 2):
         return "the spring energy"
     return "the term"
+
+
+def _in(term: sp.Expr, d: Derivation) -> str:
+    """The coordinates a term of U holds, in words ("θ₁", "x₁ and x₂")."""
+    names = [unicode(q.name) for q in d.table.q if term.has(q)]
+    return " and ".join(names) if names else "t"
 
 
 def potential_mistakes(d: Derivation) -> Iterator[Mistake]:
@@ -445,15 +450,15 @@ def potential_mistakes(d: Derivation) -> Iterator[Mistake]:
             yield Mistake(
                 f"potential.term_left_out.{term_key(term)}",
                 "term_left_out",
-                f"{kind} {spoken(term)}",
+                f"{kind} in {_in(term, d)}",
                 term,
-                f"U adds the energy of every force that has one: {kind} {spoken(term)} is one of them",
+                f"U adds the energy of every force that has one: {kind} in {_in(term, d)} is one of them",
                 sp.expand(U - term),
             )
             yield Mistake(
                 f"potential.term_sign.{term_key(term)}",
                 "term_sign",
-                f"the sign of {kind} {spoken(term)}",
+                f"the sign of your {kind.removeprefix('the ')} {spoken(-term)}",
                 term,
                 "a height is measured upward, against gravity, and a spring's energy is never negative"
                 if kind != "the term"

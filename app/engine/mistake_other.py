@@ -52,16 +52,20 @@ def other_coordinates(d: Derivation, step: str, k: int | None) -> Iterator[Mista
             )  # fmt: skip
 
 
-def held_still(d: Derivation, step: str, truth: sp.Expr) -> Iterator[Mistake]:
+def held_still(d: Derivation, step: str, truth: sp.Expr, k: int | None = None) -> Iterator[Mistake]:
     """The truth with one body's mass taken to a limit: to infinity where that holds the body still (its one
-    coordinate's acceleration then vanishes), to zero (a body without mass), then to infinity otherwise (a
-    body nothing else can move); each where the limit is finite, not zero, and differs from the truth."""
-    if step not in ("acceleration", "omega_squared"):
-        return
+    coordinate's acceleration then vanishes, and may be the answer: the wedge's Ẍ = 0), to zero (a body without
+    mass), then to infinity otherwise (a body nothing else can move); each where the limit is finite, not zero
+    (but for a body held still), and differs from the truth.  An equation: the held body's coordinate fixed."""
     namespace = d.table.namespace()
     bodies = [(i, p.mass, p.label) for i, p in enumerate(d.system.particles) if p.mass in namespace][:MAX_BODIES]
     if len(bodies) < 2:
         return  # one body: nothing else to hold still or to leave out
+    if step == "equation" and k is not None:
+        yield from _fixed_in_equation(d, bodies, truth, k)
+        return
+    if step not in ("acceleration", "omega_squared"):
+        return
     still, light, heavy = [], [], []
     for i, mass_name, label in bodies:
         M, shown = namespace[mass_name], unicode(mass_name)
@@ -74,14 +78,15 @@ def held_still(d: Derivation, step: str, truth: sp.Expr) -> Iterator[Mistake]:
                 f"({shown} → 0)", None, f"the {body} has mass {shown} and pushes or pulls on the rest, so {shown} "
                 "stays in the answer", zero,
             ))  # fmt: skip
-        infinite = _at(truth, M, sp.oo)
+        held = _held(d, i, M)
+        infinite = _at(truth, M, sp.oo, allow_zero=held)
         if infinite is None:
             continue
-        if _held(d, i, M):
+        if held:
             still.append(Mistake(
-                f"{key}.held_still.{mass_name}", "limit", f"{spoken(infinite)}, the answer if the {body} were "
-                f"held still ({shown} → ∞)", None, f"here the {body} is free to move: it recoils as the rest "
-                f"moves, so its mass {shown} stays in the answer", infinite,
+                f"{key}.held_still.{mass_name}", "limit", f"the answer with the {body} treated as fixed, as if held "
+                f"still ({shown} → ∞)", None, f"here the {body} is free to move and recoils as the rest moves, so "
+                f"its mass {shown} stays in the answer", infinite,
             ))  # fmt: skip
         else:
             heavy.append(Mistake(
@@ -92,6 +97,31 @@ def held_still(d: Derivation, step: str, truth: sp.Expr) -> Iterator[Mistake]:
     for m in (*still, *light, *heavy):
         if sp.expand(m.expr - truth) != 0:
             yield m
+    if step == "acceleration":
+        # a one-body limit taken at small angles as well (the upper bob as a simple pendulum, θ̈₁ = −g θ₁/l₁)
+        for m in light:
+            small = linear(d, m.expr)
+            if small is not None and sp.expand(small - m.expr) != 0:
+                yield Mistake(
+                    f"{m.key}.small_angle", "small_angle", f"the small-angle approximation sin x ≈ x of {m.name}",
+                    None, f"{m.where}; and sin x ≈ x holds only near zero angle, while the exercise asks for the "
+                    "full acceleration", small, approximation=True,
+                )  # fmt: skip
+
+
+def linear(d: Derivation, expr: sp.Expr) -> sp.Expr | None:
+    """expr to first order about rest at zero (every coordinate and velocity 0), where that is an equilibrium
+    (expr vanishes there) and expr holds a sine or cosine of a coordinate; else None."""
+    t = d.table
+    angles = [q for q in t.q if any(f.args[0].has(q) for f in expr.atoms(sp.sin, sp.cos))]
+    if not angles:
+        return None
+    rest = {**{q: 0 for q in t.q}, **{v: 0 for v in t.qd}}
+    if sp.cancel(expr.xreplace(rest)) != 0:
+        return None
+    # f ≈ Σ (∂f/∂q)₀ q + Σ (∂f/∂q̇)₀ q̇
+    out = sum((sp.diff(expr, x).xreplace(rest) * x for x in (*t.q, *t.qd)), sp.Integer(0))
+    return sp.expand(sp.cancel(out))
 
 
 def _held(d: Derivation, i: int, M: sp.Symbol) -> bool:
@@ -125,3 +155,27 @@ def _at(expr: sp.Expr, M: sp.Symbol, to: sp.Expr, allow_zero: bool = False) -> s
     if limit is None or (limit == 0 and not allow_zero) or limit.has(M):
         return None
     return limit
+
+
+def _fixed_in_equation(d: Derivation, bodies: list, truth: sp.Expr, k: int) -> Iterator[Mistake]:
+    """q_k's equation with a body held still: that body's one coordinate q_j neither moving nor accelerating
+    (q̇_j = q̈_j = 0), as if its mass were infinite; j ≠ k."""
+    namespace, t = d.table.namespace(), d.table
+    for i, mass_name, label in bodies:
+        M, shown = namespace[mass_name], unicode(mass_name)
+        if not _held(d, i, M):
+            continue
+        moves = {s for c in d.mechanics.positions[i] for s in c.free_symbols if s in t.q}
+        j = t.q.index(next(iter(moves)))
+        if j == k:
+            continue
+        fixed = sp.expand(truth.xreplace({t.qd[j]: 0, t.qdd[j]: 0}))
+        if fixed == 0 or sp.expand(fixed - truth) == 0:
+            continue
+        body = label or f"body of mass {shown}"
+        yield Mistake(
+            f"equation.limit.held_still.{mass_name}", "limit", f"the equation with the {body} treated as fixed, as "
+            f"if held still ({shown} → ∞), which has no {unicode(t.qdd[j].name)}", None,
+            f"here the {body} is free to move and recoils as the rest moves, so {unicode(t.names[j])} changes and "
+            "its acceleration stays in the equation", fixed,
+        )  # fmt: skip

@@ -38,6 +38,7 @@ from app.engine.mistake_families import (
     spoken,
     term_key,
 )
+from app.engine.mistake_other import linear
 from app.engine.names import unicode
 
 MAX_PIECES = 12  # terms of a truth taken one at a time (a longer truth is left to the listed families)
@@ -110,7 +111,9 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
     yield from _sums(truth, base)
     rates = (*d.table.qd, *d.table.qdd)
     for p in _terms(truth):
-        shown = spoken(short_form(p))
+        # the piece as a textbook prints it, once (the student's own piece is a multiple of it, or it swapped)
+        short = short_form(p)
+        shown = spoken(short)
         key = slug(sp.sstr(p))[:48]
         if _is_force_of_u(d, step, p):
             yield Mistake(
@@ -120,29 +123,30 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
             )  # fmt: skip
         elif _has_half(p):
             yield Mistake(
-                f"{base}.half_missing.{key}", "doubled", f"{spoken(2 * p)} in place of {shown}: the ½ in it is missing",
+                f"{base}.half_missing.{key}", "doubled", f"your term {spoken(2 * short)} without its ½",
                 p, "the ½ belongs to this piece (½ m v², ½ k x², a centre halfway along)", truth + p,
             )  # fmt: skip
         else:
             yield Mistake(
-                f"{base}.doubled.{key}", "doubled", f"{shown} doubled ({spoken(2 * p)})", p,
-                "this piece appears once in the derivation", truth + p,
+                f"{base}.doubled.{key}", "doubled", f"your term {spoken(2 * short)}, twice what it should be",
+                p, "this piece appears once in the derivation", truth + p,
             )  # fmt: skip
         yield Mistake(
-            f"{base}.halved.{key}", "halved", f"only half of {shown}", p,
+            f"{base}.halved.{key}", "halved", f"your term {spoken(short / 2)}, half of what it should be", p,
             "the whole of this piece belongs in the answer (a factor 2 from differentiating a square, or from "
             "the chain rule, is easily lost)", truth - p / 2,
         )  # fmt: skip
-        yield Mistake(f"{base}.left_out.{term_key(p)}", "left_out", shown, p,
-                      LEFT_OUT_WHY.get(step, "this term belongs in the answer"), truth - p)  # fmt: skip
+        name, why = _left_out(d, step, p)
+        yield Mistake(f"{base}.left_out.{term_key(p)}", "left_out", name, p,
+                      why or LEFT_OUT_WHY.get(step, "this term belongs in the answer"), truth - p)  # fmt: skip
         if step == "hamiltonian" and not p.has(*rates):
             yield Mistake(
-                f"{base}.sign_of_velocity_free.{key}", "term_sign", f"the sign of {shown}", p,
+                f"{base}.sign_of_velocity_free.{key}", "term_sign", f"the sign of your term {spoken(-short)}", p,
                 "in h = Σ p q̇ − L the part of L free of the velocities changes sign, so h is not the energy T + U "
                 "when T has such a part", truth - 2 * p,
             )  # fmt: skip
         if not (step == "equation" and p.has(*d.table.qdd)):  # (that sign is the rest's, a rule names it)
-            yield Mistake(f"{base}.sign.{key}", "term_sign", f"the sign of {shown}", p,
+            yield Mistake(f"{base}.sign.{key}", "term_sign", f"the sign of your term {spoken(-short)}", p,
                           SIGN_WHY.get(step, "each term's sign follows from the derivation"), truth - 2 * p)  # fmt: skip
         if step != "momentum":  # a momentum short of a factor is named by that factor (app.engine.check)
             yield from _factors(p, truth, base, key, rates, d.table.params)
@@ -156,31 +160,111 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
                 else "check which component of the position has the sine and which the cosine, at a small angle"
             )
             yield Mistake(
-                f"{base}.sin_cos.{key}", "sin_cos", f"sin and cos swapped in {shown} (you have {spoken(swapped)})",
+                f"{base}.sin_cos.{key}", "sin_cos", f"sin and cos swapped in your term {spoken(_swap(short))}",
                 p, why, truth - p + swapped,
             )  # fmt: skip
             yield Mistake(
-                f"{base}.sin_cos_height.{key}", "sin_cos", f"{spoken(-swapped)} in place of {shown}: sin and cos "
-                "swapped", p, why, truth - p - swapped,
+                f"{base}.sin_cos_height.{key}", "sin_cos", f"sin and cos swapped in your term {spoken(-_swap(short))}",
+                p, why, truth - p - swapped,
             )  # fmt: skip
     yield from _whole(d, step, truth, base)
     for s, group in _groups(truth, d.table.params):
-        shown = spoken(short_form(group))
         name = unicode(s.name)
         if step == "kinetic":
             yield Mistake(
                 f"{base}.group_four.{s.name}", "velocity_doubled",
-                f"the {name} terms, {shown}, four times too big: that body's velocity is doubled (it moves half as "
-                "far as you have it)", group, "check how far this body moves when the coordinates change", truth + 3 * group,
+                f"the {name} terms four times too big: that body's velocity is doubled (it moves half as far as you "
+                "have it)", group, "check how far this body moves when the coordinates change", truth + 3 * group,
             )  # fmt: skip
-        half = "its ½ is missing" if _has_half(group.as_ordered_terms()[0]) else "it appears once"
+        # the student's own piece, twice the truth's, in the factored form a textbook prints (k (r − l)²)
+        yours = _factored(2 * group)
         yield Mistake(
-            f"{base}.group_doubled.{s.name}", "doubled", f"the {name} terms, {shown}, doubled: {half}", group,
-            "this body's part appears once; a ½ (the middle of a pulley moves half as far) is easily lost",
-            truth + group,
+            f"{base}.group_doubled.{s.name}", "doubled", _doubled_name(name, yours, group, _spring(group, s)), group,
+            _half_why(step, group, s), truth + group,
         )  # fmt: skip
-        yield Mistake(f"{base}.group_left_out.{s.name}", "left_out", f"the {name} terms, {shown}", group,
+        yield Mistake(f"{base}.group_left_out.{s.name}", "left_out", f"every term with {name} left out", group,
                       f"every body's part belongs in the answer, {name}'s too", truth - group)  # fmt: skip
+
+
+def _factored(p: sp.Expr) -> sp.Expr:
+    """The factored form where it is no longer (½ k (r − l)², not (l²/2 + r²/2 − l r) k)."""
+    f = sp.factor(p)
+    return f if sp.count_ops(f) <= sp.count_ops(p) else short_form(p)
+
+
+def _spring(group: sp.Expr, s: sp.Symbol) -> bool:
+    """Whether the group is a spring's energy, c k (a + b)²."""
+    f = sp.factor(group)
+    return any(isinstance(a, sp.Pow) and a.exp == 2 and a.base.is_Add for a in sp.Mul.make_args(f)) and f.has(s)
+
+
+def _doubled_name(name: str, yours: sp.Expr, group: sp.Expr, spring: bool) -> str:
+    if spring:
+        return f"the spring term {spoken(yours)} without its ½"
+    if _has_half(group.as_ordered_terms()[0]) or sp.factor(group).as_coeff_Mul()[0] == sp.Rational(1, 2):
+        return f"the {name} term {spoken(yours)} without its ½"
+    return f"the {name} terms, {spoken(yours)}, twice what they should be"
+
+
+def _half_why(step: str, group: sp.Expr, s: sp.Symbol) -> str:
+    """Why a ½ belongs to this piece: a spring's ½ k x², a body's ½ m v², or a point moving half as far."""
+    if step in ("potential", "lagrangian", "hamiltonian") and _spring(group, s):
+        return "a spring stores ½ k × stretch², the ½ coming from the work ∫ k x dx"
+    if step == "kinetic":
+        return "every body's kinetic energy is ½ m v²"
+    return (
+        "this body's part appears once; a ½ (a point halfway along, such as a movable pulley's middle) is easily lost"
+    )
+
+
+def _carrier(d: Derivation, i: int, q: sp.Symbol) -> str | None:
+    """The body that carries body i along when q changes: one whose position moves with q alone, exactly as
+    body i's part from q does."""
+    positions = d.mechanics.positions
+    dr = tuple(sp.diff(c, q) for c in positions[i])
+    if not any(dr):
+        return None
+    for j, other in enumerate(positions):
+        moves = {s for c in other for s in c.free_symbols if s in d.table.q}
+        if j != i and moves == {q} and tuple(sp.diff(c, q) for c in other) == dr:
+            return _body_name(d, j)
+    return None
+
+
+def _body_name(d: Derivation, i: int) -> str:
+    particles = d.system.particles
+    return (particles[i].label if i < len(particles) else "") or f"particle {i + 1}"
+
+
+def _left_out(d: Derivation, step: str, p: sp.Expr) -> tuple[str, str | None]:
+    """(name, why) of a term of T or U left out: by its cause where one body carries another (the block moves
+    with the wedge, so its velocity includes Ẋ), else by its velocities or its parameters, never by the term."""
+    t = d.table
+    rates = [v for v in t.qd if p.has(v)]
+    namespace = t.namespace()
+    if step in ("kinetic", "potential") and d.mechanics.positions:
+        owners = [i for i, b in enumerate(d.system.particles) if b.mass in namespace and p.has(namespace[b.mass])]
+        if len(owners) == 1:
+            i = owners[0]
+            body = _body_name(d, i)
+            for q, v in zip(t.q, t.qd, strict=True):
+                if not (p.has(v) if step == "kinetic" else p.has(q)):
+                    continue
+                carrier = _carrier(d, i, q)
+                if carrier is None:
+                    continue
+                qn, vn = unicode(q.name), unicode(v.name)
+                if step == "kinetic":
+                    monomial = sp.Mul(*(x for x in sp.Mul.make_args(p) if x.has(*t.qd)))
+                    return (f"the {body}'s {spoken(monomial)} term left out", f"the {body} moves with the {carrier}, "
+                            f"so its velocity includes {vn}")  # fmt: skip
+                return (f"the {qn} part of the {body}'s height left out", f"the {body} moves with the {carrier}, so "
+                        f"its height includes {qn}'s part")  # fmt: skip
+    if rates:
+        monomial = sp.Mul(*(x for x in sp.Mul.make_args(p) if x.has(*t.qd, *t.qdd)))
+        return f"a {spoken(monomial)} term left out", None
+    shown = sorted((unicode(x.name) for x in p.free_symbols if x in set(t.params) | set(t.q)), key=str)
+    return f"a term with {', '.join(shown)} left out", None
 
 
 def _factors(p: sp.Expr, truth: sp.Expr, base: str, key: str, rates: tuple, params: tuple) -> Iterator[Mistake]:
@@ -192,7 +276,7 @@ def _factors(p: sp.Expr, truth: sp.Expr, base: str, key: str, rates: tuple, para
             continue  # a single parameter dropped is a matter of units (app.engine.dimensions)
         yield Mistake(
             f"{base}.factor_left_out.{key}.{slug(sp.sstr(f))[:24]}", "factor_left_out",
-            f"{spoken(p)} without its factor {spoken(f)}", p,
+            f"your term {spoken(p / f)} without a factor {spoken(f)}", p,
             "this factor comes from the geometry (a component of the position, or the chain rule)", truth - p + p / f,
         )  # fmt: skip
     for s in params:
@@ -200,7 +284,7 @@ def _factors(p: sp.Expr, truth: sp.Expr, base: str, key: str, rates: tuple, para
         if squared in factors:
             yield Mistake(
                 f"{base}.not_squared.{key}.{s.name}", "factor_left_out",
-                f"{unicode(s.name)} in place of {unicode(s.name)}² in {spoken(p)}", p,
+                f"{unicode(s.name)} in place of {unicode(s.name)}² in your term {spoken(p / s)}", p,
                 "a velocity's part is squared whole in v², its length or rate included", truth - p + p / s,
             )  # fmt: skip
 
@@ -242,6 +326,12 @@ def _sums(truth: sp.Expr, base: str) -> Iterator[Mistake]:
             # the reason fits where the sum sits: inside a sine or cosine it is an angle between two directions
             # (the rods' θ₁ − θ₂), elsewhere a stretch or a distance between two ends
             angle = any(isinstance(f, sp.sin | sp.cos) and a in f.args for f in truth.atoms(sp.sin, sp.cos))
+            even = all(isinstance(f, sp.cos) for f in truth.atoms(sp.sin, sp.cos) if a in f.args) and angle
+            if even and len(a.args) == 2 and changed.could_extract_minus_sign():
+                # cos(−x) = cos x: −(θ₁ + θ₂) is written θ₁ + θ₂, and the sign changed is the other term's
+                changed, term = -changed, a - term
+            if term.could_extract_minus_sign():
+                term = -term  # the sign of θ₂, not of −θ₂
             why = (
                 "the angle between two directions is the difference of their angles from the same reference"
                 if angle
@@ -249,7 +339,7 @@ def _sums(truth: sp.Expr, base: str) -> Iterator[Mistake]:
             )
             yield Mistake(
                 f"{base}.inner_sign.{slug(sp.sstr(a))[:32]}.{slug(sp.sstr(term))[:16]}", "inner_sign",
-                f"{spoken(changed)} in place of {spoken(a)}: the sign of {spoken(term)} ({why})", a,
+                f"{spoken(changed)} where {spoken(a)} belongs: the sign of {spoken(term)} ({why})", a,
                 "draw the two directions and measure both angles from the same line" if angle
                 else "draw the two ends and ask which way each coordinate moves them", wrong,
             )  # fmt: skip
@@ -276,6 +366,15 @@ def _whole(d: Derivation, step: str, truth: sp.Expr, base: str) -> Iterator[Mist
                 "it holds only for small oscillations near zero angle; the exercise asks for the full acceleration",
                 truth.xreplace(swap), approximation=True,
             )  # fmt: skip
+        if len(d.table.q) > 1:
+            # coupled coordinates: the acceleration to first order about rest, as the linearised equations give it
+            small = linear(d, truth)
+            if small is not None:
+                yield Mistake(
+                    "acceleration.small_angle.linearised", "small_angle", "the small-angle approximation (the "
+                    "equations linearised about rest)", None, "it holds only for small oscillations near zero angle; "
+                    "the exercise asks for the full acceleration", small, approximation=True,
+                )  # fmt: skip
 
 
 # ---- rigid bodies ----------------------------------------------------------------------------------
@@ -369,17 +468,18 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
     changes: list[tuple[str, str, sp.Expr, sp.Expr]] = list(rigid)
     T, U = d.mechanics.T, d.mechanics.U
     for m in list(kinetic_mistakes(d))[:MAX_TRAVEL]:
-        changes.append((f"from_kinetic.{m.key}", f"a T that has a mistake: {m.name}", m.expr - T, sp.Integer(0)))
+        changes.append((f"from_kinetic.{m.key}", f"a T {_slip_words(m)}", m.expr - T, sp.Integer(0)))
     if U is not None:
         for m in list(potential_mistakes(d))[:MAX_TRAVEL]:
-            changes.append((f"from_potential.{m.key}", f"a U that has a mistake: {m.name}", sp.Integer(0), m.expr - U))
+            changes.append((f"from_potential.{m.key}", f"a U {_slip_words(m)}", sp.Integer(0), m.expr - U))
     for key, name, dT, dU in changes[: 2 * MAX_TRAVEL]:
         if step == "equation" and k is not None:
             # L = T − U changes by ΔT − ΔU, and the equation by its Euler–Lagrange expression
             wrong = truth + _euler_lagrange(d, k, dT - dU)
             family = "rigid" if key.startswith("rigid") else "travelled"
             yield Mistake(f"equation.{key}", family, name, None,
-                          "your equation follows from it: fix that step and derive again", wrong)  # fmt: skip
+                          "your equation is what such a step gives: if your earlier step has that slip, fix it there "
+                          "and derive again", wrong)  # fmt: skip
         elif step == "acceleration":
             # one coordinate: E' = a q̈ + f, so q̈ = −f/a
             E = d.equations.residuals[0] + _euler_lagrange(d, 0, dT - dU)
@@ -387,13 +487,21 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
             if a != 0:
                 family = "rigid" if key.startswith("rigid") else "travelled"
                 yield Mistake(f"acceleration.{key}", family, name, None,
-                              "your acceleration follows from it: fix that step and derive again",
+                              "your acceleration is what such a step gives: if your earlier step has that slip, fix it "
+                              "there and derive again",
                               sp.cancel(-E.subs(d.table.qdd[0], 0) / a))  # fmt: skip
         elif step == "omega_squared":
             for w in _omega_changed(d, dT, dU, asked):
                 family = "rigid" if key.startswith("rigid") else "travelled"
                 yield Mistake(f"omega_squared.{key}", family, name, None,
                               "your ω² follows from it: ω² = U_eff″/m_eff at the equilibrium", w)  # fmt: skip
+
+
+def _slip_words(m: Mistake) -> str:
+    """A mistake of T or U as a clause after "a T" or "a U": "with the sign of … reversed", "that leaves out …"."""
+    if m.family == "term_sign":
+        return f"with {m.name} reversed"
+    return f"that leaves out {m.name}"
 
 
 def _omega_changed(d: Derivation, dT: sp.Expr, dU: sp.Expr, asked: list) -> list[sp.Expr]:
@@ -432,14 +540,14 @@ def effective_terms(d: Derivation, asked: list) -> Iterator[Mistake]:
                 continue
             # a term of U_eff that is not a term of U comes from the motion: p²/(2 m r²), −½ m ω² ρ²
             centrifugal = u.has(*red.momenta) or (U is not None and u not in own)
-            what = "the centrifugal term" if centrifugal else "the term"
-            shown = spoken(u)
+            params = sorted((unicode(x.name) for x in u.free_symbols if x != r), key=str)
+            what = "the centrifugal term" if centrifugal else f"the term with {', '.join(params)}"
             yield Mistake(
-                f"omega_squared.effective_left_out.{term_key(u)}", "left_out", f"{what} {shown} of U_eff", u,
+                f"omega_squared.effective_left_out.{term_key(u)}", "left_out", f"{what} of U_eff left out", u,
                 "ω² = U_eff″(r₀)/m_eff takes every term of the effective potential, the motion's (centrifugal) "
                 "ones as well as U's", w - part,
             )  # fmt: skip
             yield Mistake(
-                f"omega_squared.effective_sign.{term_key(u)}", "term_sign", f"the sign of {what} {shown} of U_eff", u,
+                f"omega_squared.effective_sign.{term_key(u)}", "term_sign", f"the sign of {what} of U_eff", u,
                 "the centrifugal term of U_eff pushes outward: its sign is fixed by −T₀ (or + p²/(2 m r²))", w - 2 * part,
             )  # fmt: skip

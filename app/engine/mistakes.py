@@ -257,18 +257,22 @@ RULES: tuple[Rule, ...] = (
     Rule(
         "h_is_l",
         ("hamiltonian",),
-        "That is L. The energy function is h = Σ p q̇ − L; for T quadratic in the velocities it comes to T + U, not T − U.",
+        "That is L. The energy function h = Σ p q̇ − L comes to T + U for T quadratic in the velocities, not T − U.",
         _h_as_l,
         "h written as L",
     ),
 )
 
 OMEGA_HINT = "This is ω, not ω²: square it (ω² = U_eff″/m_eff at the equilibrium)."
+# a momentum short of a factor: the factor is named, never the corrected momentum
 MISSING_FACTOR_HINT = (
-    "Your momentum is missing the factor {factor}: p = ∂L/∂q̇ keeps every factor that multiplies the velocity in L, "
-    "including ones that depend on the coordinates."
+    "A factor {factor} is missing from your momentum. p = ∂L/∂q̇ keeps every factor that multiplies the velocity "
+    "in L, including ones that depend on the coordinates."
 )
 CONSTANT_FACTOR_HINT = (
-    "The correct momentum is yours times {factor}: p = ∂L/∂q̇ keeps every factor that multiplies the velocity in L "
-    "(and the derivative of ½ a q̇² is a q̇, with no ½ left)."
+    "A factor {factor} is missing from your momentum. p = ∂L/∂q̇ keeps every factor that multiplies the velocity in L."
+)
+HALF_MOMENTUM_HINT = (
+    "Your momentum is half the correct one: the ½ of ½ a q̇² is gone once it is differentiated, since "
+    "∂(½ a q̇²)/∂q̇ = a q̇."
 )

@@ -41,7 +41,7 @@ ERRORS = {
     "/scenes/{scene_id}/check",
     summary="Check a step of a scene",
     description="Judge a student's expression for one step against the engine's: `correct`, `equivalent` (a "
-    "constant added to U, L or h; an equation times a nonzero factor) or `incorrect` with the difference and a hint. "
+    "constant added to U, L or h; an equation times a nonzero factor) or `incorrect` with a hint naming the mistake (the difference is kept in `reveal`, for the step). "
     "An incorrect answer that matches a mistake generated from the system's derivation names it (`mistake`), says "
     "what else is right (`partial`) and may ask a follow-up question (`follow_up`), answered by sending its `key` "
     "as `follow_up` with the same step.",

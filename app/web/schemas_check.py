@@ -75,7 +75,10 @@ class Mistake(BaseModel):
     )
     family: str = Field(description="The kind of mistake (`velocity_part`, `natural_length`, `chain_rule`, …).")
     name: str = Field(description="What went wrong, in the system's words (display text, Unicode mathematics).")
-    latex: str = Field(description="The piece the name speaks of (left out, extra or of the wrong sign), typeset.")
+    latex: str = Field(
+        description="The student's own piece the name speaks of, typeset and labelled (for units: the sum whose units "
+        "disagree); empty otherwise. Never the correct piece (that is in `reveal`)."
+    )
     where: str = Field(description="Where in the set-up that piece comes from.")
     approximation: bool = Field(description="True when it is an approximation (small angles), not a slip.")
     count: int = Field(description="How many mistakes at once (1 or 2).")
@@ -93,15 +96,21 @@ class FollowUp(BaseModel):
     names: list[str] = Field(description="The names the answer may use.")
 
 
+class Reveal(BaseModel):
+    difference: ExprPair = Field(
+        description="answer − the correct one (less an accepted additive constant; for an equation, against the "
+        "correct one scaled to the answer's coefficient of the acceleration)."
+    )
+    piece: str = Field(
+        description='The correct piece the mistake is in, typeset and labelled ("what your T leaves out: …", '
+        '"the correct term: …"), or empty where the difference says it.'
+    )
+
+
 class CheckResponse(BaseModel):
     verdict: Literal["correct", "equivalent", "incorrect"]
     message: str = Field(
         description="Plain words: what the verdict means, and for an equivalent answer how it differs."
-    )
-    difference: ExprPair | None = Field(
-        None,
-        description="For an incorrect answer: answer − the engine's (less an accepted additive constant; for an "
-        "equation, against the engine's scaled to the answer's coefficient of the acceleration).",
     )
     hint: str | None = Field(None, description="For an incorrect answer: the likely mistake, or the step's rule.")
     mistake: Mistake | None = Field(
@@ -116,6 +125,11 @@ class CheckResponse(BaseModel):
     )
     follow_up: FollowUp | None = Field(
         None, description="A short question after a named mistake, answerable through this endpoint."
+    )
+    reveal: Reveal | None = Field(
+        None,
+        description="For an incorrect answer: what follows the correct answer, for a page to show only with the "
+        'step itself ("Show this step"), never beside the verdict: the other fields name the mistake without it.',
     )
 
 

@@ -145,7 +145,8 @@ CORPUS = [
     ("helix-bead", "potential", None, "-m*g*z", "incorrect", "-2*m*g*z", "sign_of_u"),
     ("helix-bead", "acceleration", "z", "-g/(1 + alpha**2*R**2)", "correct", None, None),
     # incline block
-    ("incline-block", "lagrangian", None, "m*X_dot**2/2 - m*g*X*sin(alpha) + 3*m*g", "equivalent", None, None),
+    # a "constant" of the wrong units (a force, a mass, a bare number) is no other zero of U: a units mistake
+    ("incline-block", "lagrangian", None, "m*X_dot**2/2 - m*g*X*sin(alpha) + 3*m*g", "incorrect", None, "units"),
     ("incline-block", "acceleration", "X", "-g*sin(alpha)", "correct", None, None),
     ("incline-block", "acceleration", "X", "g*sin(alpha)", "incorrect", "2*g*sin(alpha)", "sign_of_dl_dq"),
     # tabletop spring
@@ -229,9 +230,9 @@ CORPUS = [
         "lagrangian",
         None,
         "M*X_dot**2/2 + m*((X_dot + D_dot*cos(alpha))**2 + (D_dot*sin(alpha))**2)/2 + m*g*D*sin(alpha) + 7*m",
-        "equivalent",
+        "incorrect",
         None,
-        None,
+        "units",
     ),
     ("movable-incline", "momentum", "X", "(M + m)*X_dot + m*D_dot*cos(alpha)", "correct", None, None),
     # rotating parabola
@@ -341,9 +342,9 @@ CORPUS = [
         "potential",
         None,
         "k*(x1**2 + x2**2)/2 + kappa*(x2 - x1)**2/2 + 7",
-        "equivalent",
+        "incorrect",
         None,
-        None,
+        "units",
     ),
     ("coupled-oscillators", "equation", "x1", "m*x1_ddot + (k + kappa)*x1 - kappa*x2", "correct", None, None),
     (

@@ -43,6 +43,20 @@ ROLLING_DISC = {
     "potential": "k*x**2/2 - M*g*x*sin(alpha)",
 }
 
+# The elastic pendulum a student typed in the playground (review student-d): a particle on a spring of natural
+# length l swinging in a vertical plane.
+ELASTIC_PENDULUM = {
+    "coordinates": ["r", "phi"],
+    "parameters": [
+        {"name": "m", "value": 1.0, "min": 0.1, "unit": "kg"},
+        {"name": "g", "value": 9.81, "min": 0.1, "unit": "m/s²"},
+        {"name": "k", "value": 10.0, "min": 0.1, "unit": "N/m"},
+        {"name": "l", "value": 1.0, "min": 0.1, "unit": "m"},
+    ],
+    "particles": [{"mass": "m", "position": ["r*sin(phi)", "-r*cos(phi)", "0"], "label": "bob"}],
+    "potential": "-m*g*r*cos(phi) + k*(r - l)**2/2",
+}
+
 UNITS = {
     "cart-pendulum": {"M": "kg", "m": "kg", "l": "m", "k": "N/m", "g": "m/s²", "c": "kg/s"},
     "spring-rod": {"m": "kg", "k": "N/m", "a": "m", "w": "rad/s"},
@@ -58,6 +72,7 @@ SYSTEMS = {
     "spring-rod": _with_units(SPRING_ROD, UNITS["spring-rod"]),
     "rod-pendulum": ROD_PENDULUM,
     "rolling-disc": ROLLING_DISC,
+    "elastic-pendulum": ELASTIC_PENDULUM,
 }
 
 TWICE = r"twice|doubled"
@@ -299,6 +314,37 @@ SLIPS = [
     ("cart-pendulum", "acceleration", "phi", "-g*sin(phi)/l", r"cart.*held still|M → ∞"),
     # the upper bob swinging as a simple pendulum: the lower bob's pull left out, as if it had no mass
     ("double-pendulum", "acceleration", "theta1", "-g*sin(theta1)/l1", r"lower bob.*no mass|m₂ → 0"),
+    # ---- a second-year student's practice session (review student-d): each named by its cause
+    ("movable-incline", "acceleration", "X", "0", r"wedge.*(held still|fixed).*M → ∞"),
+    ("movable-incline", "equation", "D", "m*D_ddot - m*g*sin(alpha)", r"wedge.*(held still|fixed).*M → ∞"),
+    ("double-pendulum", "acceleration", "theta1", "-g*theta1/l1", SMALL),
+    (
+        "movable-incline",
+        "kinetic",
+        None,
+        "M*X_dot**2/2 + m*(D_dot**2 + 2*D_dot*X_dot*cos(alpha))/2",
+        r"block.*moves with the wedge.*Ẋ",
+    ),
+    (
+        "double-pendulum",
+        "potential",
+        None,
+        "-m1*g*l1*cos(theta1) - m2*g*l2*cos(theta2)",
+        r"lower bob.*moves with the upper bob.*θ₁",
+    ),
+    (
+        "double-pendulum",
+        "kinetic",
+        None,
+        "(m1 + m2)*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2"
+        " + m2*l1*l2*theta1_dot*theta2_dot*cos(theta1 + theta2)",
+        r"θ₁ \+ θ₂ where θ₁ − θ₂ belongs.*the sign of θ₂",
+    ),
+    ("elastic-pendulum", "potential", None, "-m*g*r*cos(phi) + k*(r - l)**2", r"spring.*½ k"),
+    ("elastic-pendulum", "momentum", "phi", "m*r*phi_dot", r"factor r is missing"),
+    ("elastic-pendulum", "kinetic", None, "m*(r_dot**2 + r*phi_dot**2)/2", UNITS_WORDS),
+    ("simple-pendulum", "hamiltonian", None, "m*R**2*theta_dot**2/2 - m*g*R*cos(theta) + 7", r"7 has no unit.*energy"),
+    ("simple-pendulum", "momentum", "theta", "m*R*theta_dot", r"factor R is missing"),
 ]
 
 # Correct answers in unusual forms: every one must be accepted ("correct", or "equivalent" where the
@@ -317,7 +363,7 @@ CORRECT = [
     ("damped-pendulum", "acceleration", "theta", "-(b*theta_dot + m*g*R*sin(theta))/(m*R**2)"),
     ("helix-bead", "kinetic", None, "m*(R**2*alpha**2*z_dot**2 + z_dot**2)/2"),
     ("helix-bead", "equation", "z", "z_ddot + g/(1 + R**2*alpha**2)"),
-    ("helix-bead", "potential", None, "m*g*(z - 5)"),
+    ("helix-bead", "potential", None, "m*g*(z - R)"),
     ("incline-block", "equation", "X", "X_ddot + g*sin(alpha)"),
     ("incline-block", "potential", None, "m*g*X*cos(pi/2 - alpha)"),
     ("incline-block", "kinetic", None, "m*X_dot**2*(sin(alpha)**2 + cos(alpha)**2)/2"),
@@ -333,7 +379,7 @@ CORRECT = [
     ("rail-two-body", "equation", "x2", "m2*x2_ddot + k*(x2 - x1 - l0)"),
     ("rail-two-body", "kinetic", None, "(m1*x1_dot**2 + m2*x2_dot**2)/2"),
     ("pulley", "kinetic", None, "M*(y1_dot + y2_dot)**2/8 + m1*y1_dot**2/2 + m2*y2_dot**2/2"),
-    ("pulley", "potential", None, "g*(m1*y1 + m2*y2) - M*g*(y1 + y2)/2 + 10"),
+    ("pulley", "potential", None, "g*(m1*y1 + m2*y2) - M*g*(y1 + y2 + 3)/2"),
     ("pulley", "equation", "y1", "(4*m1 + M)*y1_ddot + M*y2_ddot + 4*g*m1 - 2*M*g"),
     ("movable-incline", "momentum", "X", "(M + m)*X_dot + m*D_dot*cos(alpha)"),
     ("movable-incline", "equation", "D", "D_ddot + X_ddot*cos(alpha) - g*sin(alpha)"),
@@ -385,4 +431,7 @@ CORRECT = [
     ("rolling-disc", "kinetic", None, "M*x_dot**2/2 + (M*R**2/2)*(x_dot/R)**2/2"),
     ("rolling-disc", "omega_squared", None, "2*k/(3*M)"),
     ("rolling-disc", "equation", "x", "x_ddot + 2*k*x/(3*M) - 2*g*sin(alpha)/3"),
+    ("elastic-pendulum", "potential", None, "k*(l - r)**2/2 - m*g*r*cos(phi)"),
+    ("elastic-pendulum", "equation", "phi", "r*phi_ddot + 2*r_dot*phi_dot + g*sin(phi)"),
+    ("simple-pendulum", "potential", None, "m*g*R*(1 - cos(theta))"),
 ]

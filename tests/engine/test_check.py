@@ -10,6 +10,7 @@ import sympy as sp
 
 from app.engine.check import STEPS, CheckError, check_answer, exercises, judge, name_kinds, problem
 from app.engine.derive import Derivation, derive
+from app.engine.dimensions import dimension, system_dimensions
 from app.engine.exercises import exercise_json
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, OMEGA_HINT, POINTERS, RULES
 from app.engine.parse import parse_expression
@@ -71,9 +72,11 @@ def test_corpus(system, step, coordinate, answer, verdict, difference, hint):
     if hint is not None and hint.startswith("key:"):
         assert result["mistake"]["key"] == hint.removeprefix("key:"), result
         assert result["hint"] not in POINTERS.values()
-        # the piece under the name says what it is, or is not shown where the difference line says it all
-        tex = result["mistake"]["latex"]
+        # the piece kept for the reveal says what it is, or is not kept where the difference says it all; under
+        # the name, nothing of the correct answer
+        tex = result["reveal"]["piece"]
         assert tex == "" or tex.startswith(r"\text{"), tex
+        assert result["mistake"]["latex"] == "", result["mistake"]
     elif hint in HINTS:
         # a rule's hint, with the system's own reason added where it has one (h ≠ E)
         assert result["hint"].startswith(HINTS[hint]) and result["mistake"]["key"] == hint, result
@@ -83,13 +86,15 @@ def test_corpus(system, step, coordinate, answer, verdict, difference, hint):
     else:
         assert result["hint"] == expected_hint(step, hint)
     if difference is None:
-        assert result["difference"] is None
+        assert result["reveal"] is None
     else:
+        # the difference is kept for the step's reveal, never in the verdict's words
+        shown = result["reveal"]["difference"]
         names = {**d.table.namespace(), **{s.name: s for s in d.table.qdd}}
-        got = parse_expression(result["difference"]["sympy"], names)
+        got = parse_expression(shown["sympy"], names)
         want = parse_expression(difference, names)
-        assert sp.simplify(got - want) == 0, (result["difference"], difference)
-        assert result["difference"]["latex"]
+        assert sp.simplify(got - want) == 0, (shown, difference)
+        assert shown["latex"]
     if verdict == "equivalent":
         message = result["message"]
         assert message.startswith("Equivalent:") and ("multiplied by" in message or "plus" in message)
@@ -247,14 +252,23 @@ def test_the_half_lost_in_differentiating_the_square_is_not_a_force_counted_twic
     assert "counted twice" not in result["hint"] and "differentiating the square" in result["hint"]
 
 
-def student_text(expr: sp.Expr, step: str) -> str:
+def student_text(expr: sp.Expr, step: str, d=None) -> str:
     """A mistaken expression as a student would type it: collected, in the API's syntax, at their own scale
-    (an equation with the opposite sign, U with its zero moved)."""
+    (an equation with the opposite sign, U with its zero moved by a constant energy: a term of U with every
+    coordinate at 1, never a bare number, which has no unit)."""
     shown = sp.factor_terms(sp.collect(sp.expand(expr), sorted(expr.free_symbols, key=lambda s: s.name)))
     if step == "equation":
         shown = -shown
     text = sp.sstr(shown)
-    return f"{text} + 3" if step == "potential" else text
+    if step != "potential" or d is None:
+        return text
+    known = system_dimensions(d)
+    for term in sp.Add.make_args(sp.expand(d.mechanics.U)):
+        # a coordinate set to 1 keeps the term's units only where the coordinate is an angle
+        constant = term.xreplace({q: sp.Integer(1) for q in d.table.q})
+        if constant.free_symbols and dimension(constant, known) == dimension(term, known) is not None:
+            return f"{text} + 3*({sp.sstr(constant)})"
+    return text
 
 
 FAMILY_STEPS = [
@@ -274,14 +288,15 @@ def test_every_generated_mistake_typed_back_is_named(system, step, coordinate):
     generated = [(m, hint) for m, hint, _ in pb.mistakes if "." in m.key]
     assert generated or step == "potential"
     for mistake, hint in generated:
-        result = judge(pb, student_text(mistake.expr, step))
+        result = judge(pb, student_text(mistake.expr, step, derivation(system)))
         assert result["verdict"] == "incorrect", (mistake.key, result)
         assert result["mistake"] and result["mistake"]["key"] == mistake.key, (mistake.key, result)
         assert result["hint"] == hint
         if mistake.family in ("other_coordinate", "limit"):
             # another question's right answer: nothing else in it is "right"
             assert result["partial"] is None, (mistake.key, result["partial"])
-        else:
+        elif len(sp.Add.make_args(sp.expand(mistake.expr))) > 1:
+            # "everything else is right" only where there is something else
             assert result["partial"]["message"]
 
 
@@ -293,10 +308,10 @@ def test_the_double_pendulums_missing_velocity_squared_term_is_the_whole_differe
         "(m1 + m2)*l1**2*theta1_ddot + m2*l1*l2*cos(theta1 - theta2)*theta2_ddot + (m1 + m2)*g*l1*sin(theta1)",
     )
     names = {**d.table.namespace(), **{s.name: s for s in d.table.qdd}}
-    shown = parse_expression(result["difference"]["sympy"], names)
+    shown = parse_expression(result["reveal"]["difference"]["sympy"], names)
     missing = parse_expression("m2*l1*l2*sin(theta1 - theta2)*theta2_dot**2", names)
     # the whole difference is that term (up to scale), nothing about the accelerations
-    assert not shown.has(*d.table.qdd) and "ddot" not in result["difference"]["latex"]
+    assert not shown.has(*d.table.qdd) and "ddot" not in result["reveal"]["difference"]["latex"]
     assert sp.simplify(shown / missing).is_number
     assert len(sp.Add.make_args(shown)) == 1
     # and the θ̇₁² term of the θ₂ equation
@@ -304,7 +319,7 @@ def test_the_double_pendulums_missing_velocity_squared_term_is_the_whole_differe
         problem(d, "equation", "theta2"),
         "m2*l2**2*theta2_ddot + m2*l1*l2*cos(theta1 - theta2)*theta1_ddot + m2*g*l2*sin(theta2)",
     )
-    shown = parse_expression(result["difference"]["sympy"], names)
+    shown = parse_expression(result["reveal"]["difference"]["sympy"], names)
     assert sp.simplify(shown / parse_expression("l1*l2*m2*sin(theta1 - theta2)*theta1_dot**2", names)).is_number
 
 

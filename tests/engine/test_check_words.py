@@ -16,8 +16,9 @@ def test_no_message_says_the_engines_answer():
     shifted = judge(step_problem("simple-pendulum", "potential", None), "-m*g*R*cos(theta)")
     for result in (wrong, right, shifted):
         assert "engine" not in result["message"] + (result["hint"] or ""), result
-    assert wrong["message"].startswith("Incorrect: this is not the correct kinetic energy T.")
-    assert "(yours − correct)" in wrong["message"]
+    assert wrong["message"] == "Incorrect: this is not the correct kinetic energy T."
+    # the difference is not said: it is kept for the step's reveal
+    assert "(yours − correct)" not in wrong["message"] and wrong["reveal"]["difference"]["latex"]
 
 
 def test_an_equation_divided_through_says_it_is_the_correct_one_multiplied():
@@ -34,36 +35,38 @@ def test_the_constant_clause_only_where_a_constant_was_left_out():
         "M*X_dot**2/2 + m*(X_dot**2 + D_dot**2 + 2*X_dot*D_dot*cos(alpha))/2 - m*g*D*sin(alpha)",
     )
     assert "constant" not in no_constant["message"], no_constant["message"]
-    # U = m g R cos θ against m g R (1 − cos θ): the constant −m g R is left out of the difference, and said so
+    # U = m g R cos θ against m g R (1 − cos θ): the constant −m g R is left out of the comparison, and said so
     with_constant = judge(step_problem("simple-pendulum", "potential", None), "m*g*R*cos(theta)")
-    assert "a constant" in with_constant["message"] and "left out" in with_constant["message"]
+    assert "constants in U are ignored in this comparison" in with_constant["message"], with_constant["message"]
 
 
-def test_the_piece_under_the_mistake_is_labelled_or_not_repeated():
+def test_the_piece_kept_for_the_reveal_is_labelled_or_not_repeated():
     # the sign of ∂L/∂q: the piece would be the difference again, at another scale; one formula only
     sign = judge(step_problem("simple-pendulum", "equation", "theta"), "theta_ddot - g/R*sin(theta)")
-    assert sign["mistake"]["latex"] == "" and sign["difference"]["latex"]
+    assert sign["reveal"]["piece"] == "" and sign["reveal"]["difference"]["latex"]
     # sign of U: the piece 2 m g R cos θ − 2 m g R would repeat the difference with its constant
     u = judge(step_problem("simple-pendulum", "potential", None), "m*g*R*cos(theta)")
-    assert u["mistake"]["latex"] == ""
+    assert u["reveal"]["piece"] == ""
     # a term left out of an equation divided through: the term at the student's scale, labelled
     left_out = judge(
         step_problem("double-pendulum", "equation", "theta2"),
         "l2*theta2_ddot + l1*cos(theta1 - theta2)*theta1_ddot + g*sin(theta2)",
     )
-    tex = left_out["mistake"]["latex"]
+    assert left_out["mistake"]["latex"] == ""  # never under the name: it is the answer's
+    tex = left_out["reveal"]["piece"]
     assert tex.startswith(r"\text{what your equation for") and "leaves out" in tex, tex
     assert "m_{2}" not in tex, tex  # in the scale of the answer (divided by m₂ l₂), not the engine's
     # a slip in a term of the right scale: the correct term, labelled
     swapped = judge(step_problem("simple-pendulum", "potential", None), "m*g*R*sin(theta)")
-    assert swapped["mistake"]["latex"].startswith(r"\text{the correct term: }"), swapped["mistake"]["latex"]
+    assert swapped["reveal"]["piece"].startswith(r"\text{the correct term: }"), swapped["reveal"]
+    assert swapped["mistake"]["latex"] == ""
 
 
 def test_the_piece_and_why_do_not_give_the_follow_ups_answer_away():
     result = judge(step_problem("movable-incline", "kinetic", None), INCLINE_T)
     assert result["follow_up"] is not None
     assert "of size" not in result["mistake"]["where"] and "of size" not in result["hint"]
-    tex = result["mistake"]["latex"]
+    tex = result["reveal"]["piece"]
     assert tex.startswith(r"\text{what your T leaves out: }") and tex != r"\text{what your T leaves out: }\dot{X}"
 
 
@@ -74,7 +77,8 @@ def test_a_wrong_follow_up_gets_a_new_and_concrete_hint():
     assert wrong["verdict"] == "incorrect"
     first = judge(pb, INCLINE_T)
     assert wrong["hint"] not in (first["hint"], f"Think of where it comes from: {first['mistake']['where']}.")
-    # concrete: what moving X alone does to the block, and the position it reads from
+    # concrete: what moving X alone does to the block, and the position it reads from (never its velocity)
     assert "carries the block" in wrong["hint"] and "X + D cos(α)" in wrong["hint"], wrong["hint"]
+    assert "velocity (Ẋ" not in wrong["hint"], wrong["hint"]
     right = judge_follow_up(pb, key, "X_dot")
     assert right["verdict"] == "correct"

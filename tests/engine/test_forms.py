@@ -87,8 +87,8 @@ def test_the_practice_difference_is_the_mistake_alone():
         problem(d, "equation", "theta2"), "l2*theta2_ddot + l1*cos(theta1 - theta2)*theta1_ddot + g*sin(theta2)"
     )
     assert result["verdict"] == "incorrect"
-    assert result["difference"]["sympy"] == "l1*theta1_dot**2*sin(theta1 - theta2)"
-    assert "ddot" not in result["difference"]["sympy"]
+    assert result["reveal"]["difference"]["sympy"] == "l1*theta1_dot**2*sin(theta1 - theta2)"
+    assert "ddot" not in result["reveal"]["difference"]["sympy"]
 
 
 def test_a_speed_under_a_root_is_formed_without_a_polynomial_error():

@@ -24,16 +24,18 @@ def test_a_scene_answer_gets_its_verdict_difference_and_hint(client):
     wrong = check(client, {"step": "kinetic", "answer": "m*R**2*theta_dot**2"})
     assert wrong.status_code == 200, wrong.text
     body = wrong.json()
-    assert set(body) == {"verdict", "message", "difference", "hint", "mistake", "partial", "follow_up"}
+    assert set(body) == {"verdict", "message", "hint", "mistake", "partial", "follow_up", "reveal"}
     assert body["verdict"] == "incorrect" and body["hint"] == HINTS["missing_half"]
-    assert body["difference"] == {
+    # the difference is kept for the step's reveal (the page shows it with the step), never said in the verdict
+    assert "difference" not in body["message"] and body["reveal"]["piece"] == ""
+    assert body["reveal"]["difference"] == {
         "sympy": "R**2*m*theta_dot**2/2",
         "latex": r"\frac{1}{2} m R^{2} \dot{\theta}^{2}",  # textbook order
         "tree": ["*", 0.5, "m", ["pow", "R", 2], ["pow", "theta_dot", 2]],  # as every expression the engine gives
     }
     right = check(client, {"step": "equation", "coordinate": "theta", "answer": "theta_ddot + g*sin(theta)/R"}).json()
     # the page's own form of the equation (divided through by m R²) is right
-    assert right["verdict"] == "correct" and right["difference"] is None and right["hint"] is None
+    assert right["verdict"] == "correct" and right["reveal"] is None and right["hint"] is None
     scene = check(client, {"step": "momentum", "coordinate": "phi", "answer": "m*R**2*phi_dot"}, "spherical-pendulum")
     assert "sin² θ" in scene.json()["hint"]
 

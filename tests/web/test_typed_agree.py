@@ -76,7 +76,7 @@ def test_checker_preview_and_playground_read_alike(client, case):
     # the checker: the difference it shows (answer − L, less an additive constant, which L may carry) gives
     # back what it read, up to that constant
     verdict = checked.json()
-    read = LAGRANGIAN + (meant(verdict["difference"]["sympy"]) if verdict["verdict"] == "incorrect" else 0)
+    read = LAGRANGIAN + (meant(verdict["reveal"]["difference"]["sympy"]) if verdict["verdict"] == "incorrect" else 0)
     moving = {SYMBOLS[n] for n in [*COORDINATES, *(f"{q}_dot" for q in COORDINATES), "t"]}
     assert not sp.simplify(read - expr).free_symbols & moving, (verdict, expr)
     # the playground: m x'' = Q, the generalized force as read

@@ -1,0 +1,145 @@
+"""A verdict names the mistake without handing over the answer (review student-d, items 2, 8, 11, 13–18).
+
+What a student reads (the message, the mistake's name, its piece, the hint, what else is right) never prints
+the corrected expression or a difference it follows from; the difference and the correct piece travel in
+``reveal``, which the page shows only with the step.  Each case is a slip a student made in practice mode.
+"""
+
+from __future__ import annotations
+
+import unicodedata
+
+import pytest
+
+from app.engine.check import judge, judge_follow_up
+from tests.engine.test_check_slips import SLIPS, step_problem
+
+
+def read(result: dict) -> str:
+    """Everything a student reads of a verdict, as one text."""
+    m = result["mistake"] or {}
+    parts = [result["message"], result["hint"] or "", m.get("name", ""), m.get("where", ""), m.get("latex", "")]
+    parts.append((result["partial"] or {}).get("message", ""))
+    return " | ".join(parts)
+
+
+# (system, step, coordinate, answer, what must not be read: the correct piece or the answer)
+GIVEAWAYS = [
+    ("simple-pendulum", "potential", None, "-m*g*R*sin(theta)", ["m g R cos", "correct term"]),
+    ("simple-pendulum", "momentum", "theta", "m*R*theta_dot", ["yours times", "m R² θ̇"]),
+    ("movable-incline", "kinetic", None, "M*X_dot**2/2 + m*(D_dot**2 + 2*D_dot*X_dot*cos(alpha))/2",
+     ["m Ẋ²/2", "leaves out: "]),
+    ("double-pendulum", "kinetic", None,
+     "m1*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2 + m2*l1*l2*theta1_dot*theta2_dot*cos(theta1 - theta2)",
+     ["m₂ l₁² θ̇₁²", "leaves out: "]),
+    ("double-pendulum", "potential", None, "-m1*g*l1*cos(theta1) - m2*g*l2*cos(theta2)", ["m₂ g l₁ cos"]),
+    ("movable-incline", "momentum", "X", "(M + m)*X_dot", ["m Ḋ cos", "leaves out: "]),
+    ("movable-incline", "acceleration", "X", "0", ["sin(α) cos(α)", "Everything else"]),
+    ("elastic-pendulum", "equation", "phi", "m*r**2*phi_ddot + m*g*r*sin(phi)", ["2 m r φ̇ ṙ", "leaves out: "]),
+    ("elastic-pendulum", "potential", None, "-m*g*r*cos(phi) + k*(r - l)**2", ["pulley", "l²/2", "(r − l)²/2"]),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("system", "step", "coordinate", "answer", "hidden"), GIVEAWAYS)
+def test_an_incorrect_verdict_names_the_slip_without_the_answer(system, step, coordinate, answer, hidden):
+    result = judge(step_problem(system, step, coordinate), answer)
+    assert result["verdict"] == "incorrect" and result["hint"], result
+    text = read(result)
+    for words in hidden:
+        assert words not in text, (words, text)
+    # the difference is kept for the step's reveal, never in what the verdict says
+    assert "difference" not in result and "(yours − correct)" not in result["message"]
+    assert result["reveal"]["difference"]["latex"], result["reveal"]
+
+
+def test_no_slip_of_the_corpus_shows_a_difference_or_the_correct_term():
+    for slip in SLIPS[::7]:
+        result = judge(step_problem(*slip[:3]), slip[3])
+        text = read(result)
+        assert "correct term" not in text and "leaves out: " not in text and "yours times" not in text, (slip, text)
+
+
+def test_the_students_own_term_is_quoted_where_it_helps():
+    swapped = judge(step_problem("simple-pendulum", "potential", None), "-m*g*R*sin(theta)")
+    assert "your term −m g R sin(θ)" in swapped["mistake"]["name"], swapped["mistake"]["name"]
+    sign = judge(
+        step_problem("double-pendulum", "equation", "theta2"),
+        "m2*l2**2*theta2_ddot + m2*l1*l2*cos(theta1 - theta2)*theta1_ddot"
+        " + m2*l1*l2*sin(theta1 - theta2)*theta1_dot**2 + m2*g*l2*sin(theta2)",
+    )
+    assert "your term" in sign["mistake"]["name"] and "−m₂ l₁ l₂" not in read(sign), read(sign)
+
+
+def test_a_factor_is_named_and_no_part_agreeing_is_not_said_beside_it():
+    half = judge(
+        step_problem("double-pendulum", "momentum", "theta1"),
+        "(m1 + m2)*l1**2*theta1_dot/2 + m2*l1*l2*theta2_dot*cos(theta1 - theta2)/2",
+    )
+    assert "half" in half["hint"] and "No part" not in read(half), read(half)
+    r = judge(step_problem("simple-pendulum", "momentum", "theta"), "m*R*theta_dot")
+    assert "factor R is missing" in r["hint"], r["hint"]
+    assert "(1 − R)" not in str(r["reveal"]) and "1 - R" not in str(r["reveal"]), r["reveal"]
+
+
+def test_everything_else_is_right_is_not_said_of_a_one_term_answer():
+    for answer in ("0", "m*R**2*theta_dot**2"):
+        step = "acceleration" if answer == "0" else "kinetic"
+        pb = step_problem("simple-pendulum", step, "theta" if step == "acceleration" else None)
+        result = judge(pb, answer)
+        assert "Everything else" not in read(result), read(result)
+
+
+def test_a_spring_that_lost_its_half_is_said_in_its_own_words():
+    result = judge(step_problem("elastic-pendulum", "potential", None), "-m*g*r*cos(phi) + k*(r - l)**2")
+    assert "k (r − l)²" in result["mistake"]["name"] or "k (l − r)²" in result["mistake"]["name"], read(result)
+    assert "½ k" in result["hint"] and "pulley" not in result["hint"], result["hint"]
+
+
+def test_a_wrong_follow_up_names_its_slip_and_does_not_repeat_the_question():
+    pb = step_problem("elastic-pendulum", "equation", "phi")
+    first = judge(pb, "m*r**2*phi_ddot + m*g*r*sin(phi)")
+    question = first["follow_up"]["question"]
+    wrong = judge_follow_up(pb, first["follow_up"]["key"], "2*r")
+    said = unicodedata.normalize("NFC", wrong["message"] + " " + wrong["hint"])
+    assert said.count(question) <= 1 and "ṙ" in said and "chain rule" in said, said
+    assert judge_follow_up(pb, first["follow_up"]["key"], "2*r*r_dot")["verdict"] == "correct"
+
+
+def test_a_wrong_follow_up_gets_a_hint_not_the_velocity():
+    pb = step_problem("double-pendulum", "kinetic", None)
+    first = judge(pb, "m1*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2")
+    wrong = judge_follow_up(pb, first["follow_up"]["key"], "l2*theta1_dot")
+    assert wrong["verdict"] == "incorrect"
+    assert "l₁ θ̇₁ cos" not in wrong["hint"] and "velocity (" not in wrong["hint"], wrong["hint"]
+    assert "upper bob" in wrong["hint"], wrong["hint"]
+
+
+def test_the_wedge_held_still_is_named_not_a_t_that_has_a_mistake():
+    for step, answer in (("equation", "m*D_ddot - m*g*sin(alpha)"), ("acceleration", "0")):
+        coordinate = "D" if step == "equation" else "X"
+        result = judge(step_problem("movable-incline", step, coordinate), answer)
+        text = read(result)
+        assert "held still" in text and "M → ∞" in text and "that has a mistake" not in text, text
+
+
+def test_messages_are_short_sentences():
+    upside = judge(step_problem("simple-pendulum", "acceleration", "theta"), "-R/g*sin(theta)")
+    for sentence in upside["hint"].split(". "):
+        assert sentence.count(":") <= 1, upside["hint"]
+    constant = judge(step_problem("simple-pendulum", "potential", None), "m*g*R*cos(theta)")
+    assert "constants in U are ignored in this comparison" in constant["message"], constant["message"]
+    h = judge(
+        step_problem("movable-incline", "hamiltonian", None),
+        "M*X_dot**2/2 + m*(X_dot**2 + D_dot**2 + 2*D_dot*X_dot*cos(alpha))/2 + m*g*D*sin(alpha)",
+    )
+    assert "energy function h" in h["hint"] and "Hamiltonian is h" not in h["hint"], h["hint"]
+
+
+def test_a_bare_number_added_to_an_energy_is_a_units_mistake():
+    result = judge(step_problem("simple-pendulum", "hamiltonian", None),
+                   "m*R**2*theta_dot**2/2 - m*g*R*cos(theta) + 7")  # fmt: skip
+    assert result["verdict"] == "incorrect" and "7 has no unit and cannot be added to an energy" in result["hint"]
+    # a pure number beside a pure number is fine (1 − cos θ), and so is another zero of U written with units
+    fine = judge(step_problem("simple-pendulum", "hamiltonian", None),
+                 "m*R**2*theta_dot**2/2 - m*g*R*cos(theta) + 7*m*g*R")  # fmt: skip
+    assert fine["verdict"] == "equivalent", fine
