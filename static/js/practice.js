@@ -288,7 +288,9 @@ async function preview(item, signal) {
   } catch {
     reply = null; // aborted by the next keystroke, or the server out of reach: the last rendering stays
   }
-  if (!reply || signal.aborted) return;
+  // the preview belongs to the text in the box now: a reply for an earlier text (one typed on since, or sent
+  // before a check of the whole answer) says nothing
+  if (!reply || signal.aborted || item.querySelector("input").value !== text) return;
   if (reply.ok) {
     const lhs = item.dataset.lhs;
     // an equation typed lhs = rhs comes back whole
@@ -371,6 +373,8 @@ function buildItem(exercise, index) {
   sides();
   input.addEventListener("input", () => {
     sides();
+    // a note on the text as it was (the parser's "Not read yet") is not about the text as it is now
+    if (item.dataset.typeset === "refused") previewBox.querySelector(".practice-preview-note").textContent = "";
     markStale(item, record.verdicts[key]?.answer);
     record.answers[key] = input.value;
     save(record);
