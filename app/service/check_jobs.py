@@ -76,13 +76,12 @@ def catalogue_path(scene_id: str, step: str, coordinate: str | None) -> Any:
     return cache_dir() / "check-problems" / f"{scene_id}-{step}-{coordinate or '_'}-{fingerprint}.pickle"
 
 
-def kept_catalogue(scene_id: str, step: str, coordinate: str | None) -> bytes | None:
-    """The pickle of a scene step's problem with its catalogue, as built before by this version, or None."""
+def kept_catalogue(scene_id: str, step: str, coordinate: str | None) -> tuple[Problem, bytes] | None:
+    """A scene step's problem with its catalogue and its pickle, as built before by this version, or None."""
     try:
         blob = catalogue_path(scene_id, step, coordinate).read_bytes()
-        pickle.loads(blob)  # written by another version of SymPy: built again
-        return blob
-    except Exception:  # noqa: BLE001 — absent or unreadable
+        return pickle.loads(blob), blob
+    except Exception:  # noqa: BLE001 — absent, or written by another version of SymPy: built again
         return None
 
 
@@ -91,9 +90,9 @@ def scene_problem(scene_id: str, step: str, coordinate: str | None, catalogue: b
     d = derivations.derivation(scene_id)
     if not catalogue:
         return problem(d, step, coordinate, mistakes=False)
-    blob = kept_catalogue(scene_id, step, coordinate)
-    if blob is not None:
-        return pickle.loads(blob)
+    kept = kept_catalogue(scene_id, step, coordinate)
+    if kept is not None:
+        return kept[0]
     found = problem(d, step, coordinate)
     write_atomically(catalogue_path(scene_id, step, coordinate), pickled(found))
     return found

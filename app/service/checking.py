@@ -187,8 +187,10 @@ class Checking:
             found = failure = None
             try:
                 # built before (by this version, here or at set-up): from the disk, else in the pool
-                blob = kept_catalogue(*key) or self.users.pool.run(scene_problem_job, *key, timeout=CATALOGUE_SECONDS)
-                found = (pickle.loads(blob), blob)
+                found = kept_catalogue(*key)
+                if found is None:
+                    blob = self.users.pool.run(scene_problem_job, *key, timeout=CATALOGUE_SECONDS)
+                    found = (pickle.loads(blob), blob)
             except BaseException as exc:  # noqa: BLE001 — told to whoever waits; the next check queues it again
                 failure = exc
             with self._lock:
