@@ -82,6 +82,14 @@ function katexInto(el, latex, display = false) {
   else el.textContent = latex;
 }
 
+/** A formula of the student's length (the preview, a difference, a piece), typeset as a display is but
+ * breaking across lines after its top-level signs (= + −), as a textbook breaks a long line: on a phone none of
+ * it is cut at the screen's edge. (KaTeX breaks lines only in its inline mode.) */
+function katexBreaking(el, latex) {
+  katexInto(el, `\\displaystyle ${latex}`);
+  el.classList.add("math-breaking");
+}
+
 function keyOf(exercise) {
   return exercise.coordinate ? `${exercise.step}:${exercise.coordinate}` : exercise.step;
 }
@@ -108,7 +116,7 @@ function showVerdict(item, result, answer) {
     box.append(head);
     if (result.difference) {
       const diff = element("div", { class: "verdict-difference", "aria-label": `difference: ${result.difference.sympy}` });
-      katexInto(diff, `\\text{yours} - \\text{correct} = ${result.difference.latex}`, true);
+      katexBreaking(diff, `\\text{yours} - \\text{correct} = ${result.difference.latex}`);
       box.append(diff);
     }
     if (result.mistake) box.append(mistakeBox(result.mistake));
@@ -176,7 +184,7 @@ function mistakeBox(mistake) {
   // the piece, labelled by the server; none when it would only repeat the difference above
   if (mistake.latex) {
     const piece = element("div", { class: "verdict-piece", "aria-label": `the piece: ${mistake.name}` });
-    katexInto(piece, mistake.latex, true);
+    katexBreaking(piece, mistake.latex);
     box.append(piece);
   }
   return box;
@@ -295,7 +303,7 @@ async function preview(item, signal) {
     const lhs = item.dataset.lhs;
     // an equation typed lhs = rhs comes back whole
     const whole = reply.answer.equation ? reply.answer.latex : null;
-    katexInto(math, whole || (item.dataset.step === "equation" ? `${reply.answer.latex} = 0` : `${lhs} = ${reply.answer.latex}`), true);
+    katexBreaking(math, whole || (item.dataset.step === "equation" ? `${reply.answer.latex} = 0` : `${lhs} = ${reply.answer.latex}`));
     note.textContent = "";
     item.dataset.typeset = "read";
   } else if (reply.status === 422) {
