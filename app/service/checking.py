@@ -51,8 +51,6 @@ from collections.abc import Mapping
 from concurrent.futures import Future
 from typing import Any
 
-from cachetools import LRUCache
-
 from app.engine.answer_sides import read_answer
 from app.engine.check import STEPS, CheckError, Problem, check_answer, follow_up_mistake, name_kinds
 from app.engine.exercises import exercise_json
@@ -64,8 +62,8 @@ from app.service import derivations
 from app.service.check_jobs import (
     WRONG,
     check_job,
-    kept_catalogue,
     in_system,
+    kept_catalogue,
     pickled,
     refusal,
     scene_problem,
