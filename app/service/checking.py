@@ -20,7 +20,7 @@ the catalogue of mistakes; only a wrong answer's diagnosis needs the catalogue.
   (its practice page opening) queues its catalogues to be built in the pool, one
   at a time, in the steps' order, so that a student's first wrong answer finds its
   catalogue ready. A check that needs a catalogue still being built waits for it
-  at most the check's own limit, then says the server is busy (the build goes on).
+  at most a derivation's limit, then says the server is busy (the build goes on).
 * A user system's problems (the truth alone, then with its catalogue) are each
   built by a pool job that derives the system (cached per worker) and kept here,
   as the pickles the jobs returned, so a class typing answers to one system builds
@@ -210,13 +210,14 @@ class Checking:
         return self._exercises[scene_id]
 
     async def _catalogued_scene(self, key: SceneKey) -> tuple[Problem, bytes]:
-        """A scene step's problem with its catalogue, waiting for its build at most the check's limit."""
+        """A scene step's problem with its catalogue, waiting for its build at most a derivation's limit (building
+        a step's problem is derivation work, as for a typed system's)."""
         found = self._catalogued.get(key)
         if found is not None:
             return found
         building = self.catalogue_build(key)
         try:
-            return await asyncio.wait_for(asyncio.shield(asyncio.wrap_future(building)), self.check_seconds)
+            return await asyncio.wait_for(asyncio.shield(asyncio.wrap_future(building)), self.derive_seconds)
         except TimeoutError:
             raise _busy() from None
         except WorkerFailed as exc:

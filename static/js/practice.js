@@ -129,7 +129,9 @@ function showVerdict(item, result, answer) {
     // a refusal: say what was wrong and mark the offending part of what was typed
     const head = element("p", { class: "verdict-head" });
     // said once: the preview's note of the same text gives way to this
-    head.append(element("strong", {}, "Not checked: "), endOf(wordsOf(result.detail) || "the answer could not be read"));
+    // a busy server (503, or the session's own job under way: 429) is not a refusal of the answer
+    const busy = result.status === 503 || result.status === 429;
+    head.append(element("strong", {}, busy ? "Busy: " : "Not checked: "), endOf(wordsOf(result.detail) || "the answer could not be read"));
     const note = item.querySelector(".practice-preview-note");
     if (note) note.textContent = "";
     box.append(head);

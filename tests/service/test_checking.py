@@ -60,9 +60,9 @@ def pool(release):
     pool.executor.shutdown()
 
 
-def checker_of(pool: PicklingPool, check_seconds: float = 10.0) -> Checking:
+def checker_of(pool: PicklingPool, seconds: float = 10.0) -> Checking:
     users = UserSystems(pool=pool, gate=Fairness(capacity=8, workers=pool.workers))  # type: ignore[arg-type]
-    return Checking(users, Settings(check_seconds=check_seconds))
+    return Checking(users, Settings(check_seconds=seconds, derive_seconds=seconds))
 
 
 def check(checker: Checking, answer: str) -> dict:
@@ -71,7 +71,7 @@ def check(checker: Checking, answer: str) -> dict:
 
 
 def test_a_right_answer_is_judged_before_its_catalogue_is_built(pool, release):
-    checker = checker_of(pool, check_seconds=0.5)
+    checker = checker_of(pool, seconds=0.5)
     # the catalogue's build is held: the right answer needs only the truth
     assert check(checker, RIGHT_T)["verdict"] == "correct"
     # a wrong answer's diagnosis needs the catalogue: past the check's limit the server is busy, and says what to do
