@@ -339,23 +339,21 @@ def test_what_the_preview_and_the_verdict_say_belongs_to_the_text_in_the_box(bro
 
 
 def test_a_long_answer_and_its_difference_break_across_lines_on_a_phone(browser, live_server, artifacts):
-    """student-d, 19: on a phone the double pendulum's L, h and a difference were cut at the screen's right edge."""
+    """student-d, 19: on a phone the wedge's h (and the double pendulum's L) and a difference were cut at the screen's
+    right edge."""
     context = browser.new_context(base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True,
                                   is_mobile=True)  # fmt: skip
     page = context.new_page()
     page.set_default_timeout(60_000)
     fits = "el => el.scrollWidth <= el.clientWidth + 1 && el.getBoundingClientRect().right <= 391"
     try:
-        page.goto("/scenes/double-pendulum?practice")
+        page.goto("/scenes/movable-incline?practice")
         page.wait_for_selector(STEP.format("hamiltonian"))
         box = page.locator(STEP.format("hamiltonian")).locator("input[name]")
         # the box takes the whole width of the step on a phone
         assert box.evaluate("el => el.getBoundingClientRect().width") > 300
         # h with U's sign reversed (T − U, which is L): a long answer, and a wrong one with a difference
-        box.fill(
-            "(m1 + m2)*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2 + m2*l1*l2*theta1_dot*theta2_dot*cos(theta1 - theta2)"
-            " + (m1 + m2)*g*l1*cos(theta1) + m2*g*l2*cos(theta2)"
-        )
+        box.fill("(M + m)*X_dot**2/2 + m*D_dot**2/2 + m*X_dot*D_dot*cos(alpha) + m*g*D*sin(alpha)")
         preview = page.locator(STEP.format("hamiltonian") + " .practice-preview")
         preview.locator(".katex").first.wait_for()
         assert preview.evaluate(fits)
