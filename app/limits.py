@@ -71,6 +71,10 @@ ANSWER_SLIP_WORK = 4_000  # 0.2 s: a slip read from the answer (a square left ou
 PIECE_WORK = 2_000  # 0.1 s: what the piece under a named mistake is (the correct term, what is left out)
 
 # The service's pacing (wall-clock seconds)
+# The hard limit of building one step's catalogue of mistakes for a scene in the worker pool: the server's own
+# work, once per version of the engine (kept on disk), never a student's wait (a check waits for it at most
+# Settings.check_seconds, then says the server is busy while the build goes on).
+CATALOGUE_SECONDS = 180.0
 RUN_SECONDS = 2.0  # one run of a work-precision sweep; slower tolerances of that method are skipped
 GIVE_WAY_SECONDS = 0.5  # the longest the warm-up waits for quiet before its next step
 BACKOFF_SECONDS = 5.0  # a client's pause after its second job in a row out of time or memory; doubles after

@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 
 from app.engine.check_answers import CheckError, check_answer
+from app.engine.names import unicode
 from app.engine.parse import Parsed
 
 # the comparisons an '=' could be part of, refused by the parser in its own words
@@ -43,19 +44,34 @@ def read_answer(text: str, step: str, coordinate: str | None, kinds: dict[str, s
     try:
         return _read(text, step, coordinate, kinds)
     except CheckError as exc:
-        raise _in_words(exc) from None
+        raise _in_words(exc, text, step, coordinate) from None
 
 
 # the names of the steps' own quantities, which a student may type for what they stand for (L = T − U)
 _QUANTITIES = frozenset({"T", "U", "V", "L"})
+# a derivative typed as a quotient of differentials: d/dt(...), dL/dtheta_dot, dT/dx
+_DIFFERENTIALS = re.compile(r"\bd([A-Za-z_]\w*)?\s*/\s*d[A-Za-z_]")
 
 
-def _in_words(exc: CheckError) -> CheckError:
-    """A refusal said as a tutor says it where the parser's words would not help: T − U typed in the L box."""
-    if exc.part in _QUANTITIES and "unknown name" in str(exc):
-        out = f"answer: {exc.part} is not a name the answer may use: write T and U out in the coordinates, their velocities and the parameters"
-        return CheckError(out, exc.field, exc.part, exc.start, exc.end)
-    return exc
+def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None) -> CheckError:
+    """A refusal said as a tutor says it where the parser's words would not help: T − U typed in the L box, a
+    derivative typed as d/dt(…) or dL/dθ̇, another acceleration on the right of an acceleration."""
+    unknown = "unknown name" in str(exc)
+    out = None
+    if exc.part in _QUANTITIES and unknown:
+        out = f"{exc.part} is not a name the answer may use: write T and U out in the coordinates, their velocities and the parameters"
+    elif unknown and exc.part.startswith("d") and isinstance(text, str) and _DIFFERENTIALS.search(text):
+        out = (
+            "a derivative cannot be typed here: work it out, and write the result in the coordinates, their "
+            "velocities and the parameters"
+        )
+    elif step == "acceleration" and exc.part.endswith("_ddot"):
+        wanted = unicode(f"{coordinate}_ddot") if coordinate else "the acceleration"
+        out = (
+            f"an acceleration cannot appear on the right: solve the equations of motion for {wanted} alone, so "
+            "that only the coordinates, their velocities and the parameters remain"
+        )
+    return exc if out is None else CheckError(f"answer: {out}", exc.field, exc.part, exc.start, exc.end)
 
 
 def _read(text: str, step: str, coordinate: str | None, kinds: dict[str, str]) -> tuple[Parsed, bool]:

@@ -105,6 +105,7 @@ __all__ = [
     "name_kinds",
     "parse_answer",
     "problem",
+    "verdict",
 ]
 
 MIN_POINTS = 6  # sample points where both sides are defined, for a numeric verdict
@@ -164,15 +165,17 @@ def _known(expr: sp.Expr, groups: Groups) -> Values:
     return found
 
 
-def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
-    """The verdict on one answer (as ``check_answer`` read it, or its text): ``{"verdict", "message",
-    "difference", "hint"}``."""
+def verdict(pb: Problem, text: Parsed | str) -> dict[str, Any] | None:
+    """The verdict on a right answer (correct, or equivalent), decided from the sample values without the
+    catalogue of mistakes (a problem built with ``mistakes=False`` will do); None for a wrong one."""
     answer = parse_answer(pb, text)
-    printer = Printer(pb.latex_names)
     a = values(answer, pb.groups)
-    results = [(truth, _known(truth, pb.groups)) for truth in pb.truths]
-    numeric = [(truth, b) for truth, b in results if usable(a, b) >= MIN_POINTS]
+    return _right(pb, answer, a, [(truth, _known(truth, pb.groups)) for truth in pb.truths])
 
+
+def _right(pb: Problem, answer: sp.Expr, a: Values, results: list[tuple[sp.Expr, Values]]) -> dict[str, Any] | None:
+    """The verdict when the answer equals a truth (or differs from it as the step allows), else None."""
+    numeric = [(truth, b) for truth, b in results if usable(a, b) >= MIN_POINTS]
     for i, (truth, b) in enumerate(results):
         if (truth, b) in numeric:
             same = equal(a, b)
@@ -188,13 +191,26 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
             # another zero of U, unless the constant is a bare number beside an energy (7 has no unit)
             offence = _units(pb, answer, None)
             if offence is not None:
-                return _units_verdict(pb, printer, *offence)
+                return _units_verdict(pb, Printer(pb.latex_names), *offence)
             return _verdict("equivalent", _constant_message(pb, answer - truth))
         if pb.relation == "factor" and differ_by_factor(a, b):
             constant = factor_is_constant(a, b)
             # the same equation divided through by a constant (θ̈ + (g/R) sin θ, as the page prints it) is right;
             # a factor that depends on the coordinates makes it the same only where that factor is not zero
             return _verdict("correct" if constant else "equivalent", _factor_message(pb, answer, truth, constant))
+    return None
+
+
+def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
+    """The verdict on one answer (as ``check_answer`` read it, or its text): ``{"verdict", "message",
+    "difference", "hint"}``."""
+    answer = parse_answer(pb, text)
+    printer = Printer(pb.latex_names)
+    a = values(answer, pb.groups)
+    results = [(truth, _known(truth, pb.groups)) for truth in pb.truths]
+    right = _right(pb, answer, a, results)
+    if right is not None:
+        return right
 
     truth, b = results[0]
     with display_budget(DISPLAY_WORK):

@@ -4,6 +4,8 @@
 
 from __future__ import annotations
 
+import unicodedata
+
 from app.engine.parse_rules import ALLOWED_CHARACTERS, ExpressionError
 
 
@@ -20,8 +22,15 @@ def character_error(text: str, i: int) -> ExpressionError:
         why = "an equation is not an expression: write it as one expression equal to zero, e.g. a - (b) for a = b"
     elif ch in "'\"":
         why = "quotes are not allowed: an expression holds no strings"
+    elif unicodedata.decomposition(ch).startswith("<fraction>"):
+        # a vulgar fraction (½, ¾): the keyboard's digits and a quotient in brackets say the same
+        share = unicodedata.normalize("NFKC", ch).replace("⁄", "/")
+        why = f"a fraction is typed with digits and a slash: write ({share})"
     elif ord(ch) > 127:
-        why = "beyond ASCII only Greek letters, primes (θ'), dots over names (θ̇), · × − and superscripts (x²) are allowed"
+        why = (
+            "besides the keyboard's letters, digits and signs, you may type Greek letters (θ), primes (θ'), "
+            "dots over letters (θ̇), the signs · × − and small raised digits (x²)"
+        )
     else:
         why = "only letters, digits, spaces, _ . , ( ) and + - * / ^ ** are allowed"
     return ExpressionError(f"character {ch!r} at column {i + 1} is not allowed: {why}", ch, i, i + 1)

@@ -105,14 +105,25 @@ class Typed:
         return self.starts[start], max(self.ends[last], self.starts[start])
 
 
+_RAISED = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+_DIGIT_POWER = re.compile(r"\*\*(\d+)")
+
+
+def prose_powers(text: str) -> str:
+    """A reading in prose: a power typed the Python way written as a reader writes it (R**2: R², x**(1/2): x^(1/2))."""
+    return _DIGIT_POWER.sub(lambda m: m.group(1).translate(_RAISED), text).replace("**", "^")
+
+
 def _refuse(
     given: str, start: int, end: int, why: str, readings: tuple[str, ...] = (), advice: str = ""
 ) -> ExpressionError:
     part = given[start:end]
     shown = part if len(part) <= 60 else part[:57] + "..."
     if readings:
-        # a tutor's words: the two readings, and the brackets that choose one (the page marks the part)
-        message = f"{why}: {shown!r} could be read as {readings[0]} or as {readings[1]}; "
+        # a tutor's words: the two readings, and the brackets that choose one (the page marks the part); the
+        # readings are prose, so a power typed the Python way is written as a reader writes it (R**2: R²)
+        first, second = (prose_powers(r) for r in readings[:2])
+        message = f"{why}: {shown!r} could be read as {first} or as {second}; "
         message += advice or "write the one you mean, with its brackets"
         return ExpressionError(message, shown, start, end, readings)
     return ExpressionError(f"{why}: {shown!r} at column {start + 1}", shown, start, end)

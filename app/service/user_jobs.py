@@ -97,10 +97,11 @@ def derive_checked(user: UserSystem) -> Derivation:
     return d
 
 
-def guarded(job: Callable[[], Any]) -> bytes:
-    """Run a job; an engine failure on user input is a refusal, never a server error."""
+def guarded(job: Callable[[], Any], encode: Callable[[Any], bytes] = dumps) -> bytes:
+    """Run a job; an engine failure on user input is a refusal, never a server error.  Its result is sent
+    as JSON, or as ``encode`` makes it (a step's problem: a pickle, for later jobs)."""
     try:
-        return dumps(job())
+        return encode(job())
     except (InvalidSystem, OverCapacity, MemoryError, RecursionError):
         raise
     except DerivationError as exc:

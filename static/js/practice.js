@@ -82,6 +82,14 @@ function katexInto(el, latex, display = false) {
   else el.textContent = latex;
 }
 
+/** A formula of the student's length (the preview, a difference, a piece), typeset as a display is but
+ * breaking across lines after its top-level signs (= + −), as a textbook breaks a long line: on a phone none of
+ * it is cut at the screen's edge. (KaTeX breaks lines only in its inline mode.) */
+function katexBreaking(el, latex) {
+  katexInto(el, `\\displaystyle ${latex}`);
+  el.classList.add("math-breaking");
+}
+
 function keyOf(exercise) {
   return exercise.coordinate ? `${exercise.step}:${exercise.coordinate}` : exercise.step;
 }
@@ -108,7 +116,7 @@ function showVerdict(item, result, answer) {
     box.append(head);
     if (result.difference) {
       const diff = element("div", { class: "verdict-difference", "aria-label": `difference: ${result.difference.sympy}` });
-      katexInto(diff, `\\text{yours} - \\text{correct} = ${result.difference.latex}`, true);
+      katexBreaking(diff, `\\text{yours} - \\text{correct} = ${result.difference.latex}`);
       box.append(diff);
     }
     if (result.mistake) box.append(mistakeBox(result.mistake));
@@ -121,7 +129,9 @@ function showVerdict(item, result, answer) {
     // a refusal: say what was wrong and mark the offending part of what was typed
     const head = element("p", { class: "verdict-head" });
     // said once: the preview's note of the same text gives way to this
-    head.append(element("strong", {}, "Not checked: "), endOf(wordsOf(result.detail) || "the answer could not be read"));
+    // a busy server (503, or the session's own job under way: 429) is not a refusal of the answer
+    const busy = result.status === 503 || result.status === 429;
+    head.append(element("strong", {}, busy ? "Busy: " : "Not checked: "), endOf(wordsOf(result.detail) || "the answer could not be read"));
     const note = item.querySelector(".practice-preview-note");
     if (note) note.textContent = "";
     box.append(head);
@@ -176,7 +186,7 @@ function mistakeBox(mistake) {
   // the piece, labelled by the server; none when it would only repeat the difference above
   if (mistake.latex) {
     const piece = element("div", { class: "verdict-piece", "aria-label": `the piece: ${mistake.name}` });
-    katexInto(piece, mistake.latex, true);
+    katexBreaking(piece, mistake.latex);
     box.append(piece);
   }
   return box;
@@ -288,12 +298,14 @@ async function preview(item, signal) {
   } catch {
     reply = null; // aborted by the next keystroke, or the server out of reach: the last rendering stays
   }
-  if (!reply || signal.aborted) return;
+  // the preview belongs to the text in the box now: a reply for an earlier text (one typed on since, or sent
+  // before a check of the whole answer) says nothing
+  if (!reply || signal.aborted || item.querySelector("input").value !== text) return;
   if (reply.ok) {
     const lhs = item.dataset.lhs;
     // an equation typed lhs = rhs comes back whole
     const whole = reply.answer.equation ? reply.answer.latex : null;
-    katexInto(math, whole || (item.dataset.step === "equation" ? `${reply.answer.latex} = 0` : `${lhs} = ${reply.answer.latex}`), true);
+    katexBreaking(math, whole || (item.dataset.step === "equation" ? `${reply.answer.latex} = 0` : `${lhs} = ${reply.answer.latex}`));
     note.textContent = "";
     item.dataset.typeset = "read";
   } else if (reply.status === 422) {
@@ -371,6 +383,8 @@ function buildItem(exercise, index) {
   sides();
   input.addEventListener("input", () => {
     sides();
+    // a note on the text as it was (the parser's "Not read yet") is not about the text as it is now
+    if (item.dataset.typeset === "refused") previewBox.querySelector(".practice-preview-note").textContent = "";
     markStale(item, record.verdicts[key]?.answer);
     record.answers[key] = input.value;
     save(record);

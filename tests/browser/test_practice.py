@@ -280,3 +280,107 @@ def test_an_edited_answer_greys_its_old_verdict_and_an_unreadable_one_clears_the
     assert verdict.locator(".verdict-stale-note").count() == 0 and "verdict-stale" not in (
         verdict.get_attribute("class") or ""
     )
+
+
+@pytest.mark.parametrize("size", ["desktop", "phone"])
+def test_what_the_preview_and_the_verdict_say_belongs_to_the_text_in_the_box(browser, live_server, artifacts, size):
+    """student-d, 3, 4, 14, 20, 23: a refused text leaves no earlier rendering, its words are a tutor's; the parser's
+    note on a half-typed text goes as the text changes; an edited answer's verdict is greyed; the energy readout
+    is folded until U is checked."""
+    phone = size == "phone"
+    viewport = {"width": 390, "height": 844} if phone else {"width": 1366, "height": 768}
+    context = browser.new_context(base_url=live_server, viewport=viewport, has_touch=phone, is_mobile=phone)
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    try:
+        page.goto("/scenes/simple-pendulum?practice")
+        page.wait_for_selector(STEP.format("acceleration:theta"))
+        # the live energy readout would let U's form be read off at two angles: folded behind its step
+        bars = page.locator("[data-panel^=animation] .energy-bars")
+        fold = page.locator("[data-panel^=animation] .gives-away")
+        assert bars.is_hidden() and "otential energy U" in fold.inner_text()
+
+        def preview(key: str):
+            return page.locator(STEP.format(key) + " .practice-preview")
+
+        # an unknown name (l for R): refused, and no rendering of an earlier text stays under the box
+        box = page.locator(STEP.format("acceleration:theta")).locator("input[name]")
+        box.fill("theta_ddot = -g/R*sin(theta)")
+        preview("acceleration:theta").locator(".katex").first.wait_for()
+        answer(page, "acceleration:theta", "theta_ddot = -g/l*sin(theta)")
+        verdict_of(page, "acceleration:theta").locator("mark").wait_for()
+        assert "unknown name" in verdict_of(page, "acceleration:theta").inner_text()
+        page.wait_for_function(
+            "document.querySelector('.practice-step[data-key=\"acceleration:theta\"]').dataset.typeset === 'refused'"
+        )
+        assert preview("acceleration:theta").locator(".katex").count() == 0
+
+        # a derivative typed as a quotient of differentials: said in a tutor's words, nothing of it typeset
+        answer(page, "momentum:theta", "dL/dtheta_dot")
+        verdict_of(page, "momentum:theta").locator("mark").wait_for()
+        said = verdict_of(page, "momentum:theta").inner_text()
+        assert "a derivative cannot be typed here" in said and "unknown name" not in said
+        assert preview("momentum:theta").locator(".katex").count() == 0
+
+        # the parser's note on a half-typed text goes the moment the text changes, before any check
+        box = page.locator(STEP.format("kinetic")).locator("input[name]")
+        note = preview("kinetic").locator(".practice-preview-note")
+        box.fill("m*R**2*(theta_dot**2/2")
+        page.wait_for_function(
+            "document.querySelector('.practice-step[data-key=kinetic] .practice-preview-note').textContent.includes('Not read yet')"
+        )
+        box.fill("m*R**2*theta_dot**2/2")
+        assert "Not read yet" not in note.inner_text()
+        box.press("Enter")
+        verdict = verdict_of(page, "kinetic")
+        page.wait_for_selector(STEP.format("kinetic") + ' .practice-verdict[data-verdict="correct"]')
+        assert "Not read yet" not in note.inner_text()
+        # edited after its check: the verdict no longer stands for what is in the box
+        box.fill("m*R**2*theta_dot**2/3")
+        assert "earlier answer" in verdict.locator(".verdict-stale-note").inner_text()
+
+        # U checked right: the energy readout is shown
+        answer(page, "potential", "m*g*R*(1 - cos(theta))")
+        page.wait_for_selector(STEP.format("potential") + ' .practice-verdict[data-verdict="correct"]')
+        assert bars.evaluate("el => getComputedStyle(el).display") != "none" and fold.count() == 0
+        page.locator("#practice").screenshot(path=artifacts / f"practice-own-text-{size}.png")
+        assert page.locator("#practice .katex-error").count() == 0
+    finally:
+        context.close()
+
+
+def test_a_long_answer_and_its_difference_break_across_lines_on_a_phone(browser, live_server, artifacts):
+    """student-d, 19: on a phone the wedge's h (and the double pendulum's L) and a difference were cut at the screen's
+    right edge."""
+    context = browser.new_context(base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True,
+                                  is_mobile=True)  # fmt: skip
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    fits = "el => el.scrollWidth <= el.clientWidth + 1 && el.getBoundingClientRect().right <= 391"
+    try:
+        page.goto("/scenes/movable-incline?practice")
+        page.wait_for_selector(STEP.format("hamiltonian"))
+        box = page.locator(STEP.format("hamiltonian")).locator("input[name]")
+        # the box takes the whole width of the step on a phone
+        assert box.evaluate("el => el.getBoundingClientRect().width") > 300
+        # h with U's sign reversed (T − U, which is L): a long answer, and a wrong one with a difference
+        box.fill("(M + m)*X_dot**2/2 + m*D_dot**2/2 + m*X_dot*D_dot*cos(alpha) + m*g*D*sin(alpha)")
+        preview = page.locator(STEP.format("hamiltonian") + " .practice-preview")
+        preview.locator(".katex").first.wait_for()
+        assert preview.evaluate(fits)
+        verdict = verdict_of(page, "hamiltonian")
+        for _ in range(8):
+            box.press("Enter")
+            verdict.locator(".verdict-head").wait_for()
+            page.wait_for_function("!document.querySelector('.practice-step[data-key=hamiltonian]').dataset.checking")
+            if verdict.get_attribute("data-verdict") == "incorrect":
+                break
+            # a server still building the step's catalogue says it is busy, and what to do: press Check again
+            assert verdict.inner_text().startswith("Busy: ") and "press Check again" in verdict.inner_text()
+        page.locator(STEP.format("hamiltonian")).screenshot(path=artifacts / "practice-long-answer-390.png")
+        difference = verdict_of(page, "hamiltonian").locator(".verdict-difference")
+        assert difference.locator(".katex").count() == 1 and difference.evaluate(fits)
+        page.locator(STEP.format("hamiltonian")).screenshot(path=artifacts / "practice-long-answer-390.png")
+        assert page.locator("#practice .katex-error").count() == 0
+    finally:
+        context.close()

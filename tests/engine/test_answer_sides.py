@@ -45,3 +45,30 @@ def test_half_typed_without_brackets_is_told_how_to_type_it():
     with pytest.raises(CheckError) as refused:
         read_answer("1/2 m R^2 theta_dot^2", "kinetic", None, KINDS)
     assert str(refused.value).endswith("write 1/2 as (1/2)") and "column" not in str(refused.value)
+
+
+@pytest.mark.parametrize(
+    ("text", "step", "says", "marked"),
+    [
+        # student-d, 14: program words ("unknown name 'd'", "without any q_ddot") said as a tutor says them
+        ("d/dt(m*R**2*theta_dot) + m*g*R*sin(theta)", "equation", "a derivative cannot be typed here: work it out", "d"),
+        ("dL/dtheta_dot", "momentum", "a derivative cannot be typed here", "dL"),
+        ("-g/R*sin(theta) + theta_ddot", "acceleration", "an acceleration cannot appear on the right: solve the "
+         "equations of motion for θ̈ alone", "theta_ddot"),  # fmt: skip
+        ("½*m*R**2*theta_dot**2", "kinetic", "a fraction is typed with digits and a slash: write (1/2)", "½"),
+    ],
+)
+def test_a_derivative_an_acceleration_on_the_right_and_a_fraction_are_said_in_a_tutors_words(text, step, says, marked):
+    with pytest.raises(CheckError) as refused:
+        read_answer(text, step, "theta", KINDS)
+    error = refused.value
+    assert says in str(error) and "unknown name" not in str(error) and "q_ddot" not in str(error)
+    assert text[error.start : error.end] == marked
+
+
+def test_the_readings_of_an_ambiguous_text_write_python_powers_as_a_reader_does():
+    with pytest.raises(CheckError) as refused:
+        read_answer("1/2 m R**2 theta_dot**2", "kinetic", None, KINDS)
+    said = str(refused.value)
+    assert "could be read as (1/2) m R² θ" in said or "could be read as (1/2) m R² theta" in said
+    assert "**" not in said.split("could be read as")[1]

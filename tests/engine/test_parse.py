@@ -89,7 +89,7 @@ REFUSALS = [
     ("x_ddot", "accelerations", "x_ddot"),
     ("q", "unknown name", "q"),
     ("θ", "unknown name", "θ"),
-    ("ｓｉｎ(x)", "beyond ASCII only Greek letters", "ｓ"),
+    ("ｓｉｎ(x)", "you may type Greek letters (θ)", "ｓ"),
     ("x[0]", "not allowed", "["),
     ("x;y", "not allowed", ";"),
     ("x +", "ends with '+' at column 3", "x +"),

@@ -1,38 +1,108 @@
-"""The scene problems of the checker: built ahead, in the background, once each (app/service/checking.py)."""
+"""The checker's problems (app/service/checking.py): the verdict first, from the truth alone; each scene step's
+catalogue of mistakes built once, in the worker pool, ahead of its checks; a check that cannot finish in its
+limit says the server is busy, and nothing of it is cached."""
 
 from __future__ import annotations
 
+import asyncio
+import json
 import threading
+from concurrent.futures import ThreadPoolExecutor
 
-from app.service import checking
-from app.service.checking import Checking
+import pytest
+
+from app.errors import OverCapacity
+from app.service import check_jobs
+from app.service.checking import BUSY, Checking
+from app.service.fairness import Fairness
+from app.service.user_systems import UserSystems
+from app.settings import Settings
+from tests.web.parse_counting import WORKER, PicklingPool
+
+RIGHT_T = "m*R**2*theta_dot**2/2"
+WRONG_T = "m*R**2*theta_dot**2"  # the ½ of ½ m v² left out: a named mistake
 
 
-def test_opening_a_scenes_steps_builds_each_problem_once_ahead_of_its_check(monkeypatch):
-    built: list[tuple[str, str | None]] = []
-    first = threading.Event()
-    release = threading.Event()
-    real = checking.problem
+class HeldPool(PicklingPool):
+    """The pool in this process, two workers."""
 
-    def counted(d, step, coordinate):
-        built.append((step, coordinate))
-        if len(built) == 1:
-            first.set()
-            release.wait()  # the background build of the first step is under way while a check asks for it
-        return real(d, step, coordinate)
+    workers = 2
 
-    monkeypatch.setattr(checking, "problem", counted)
-    checker = Checking(users=None)  # type: ignore[arg-type]  # no job is run: only the problems are built
-    checker.scene_exercises("simple-pendulum")
-    assert first.wait(60)
-    answer: list = []
-    asking = threading.Thread(target=lambda: answer.append(checker.scene_problem("simple-pendulum", "kinetic", None)))
-    asking.start()
+    def __init__(self):
+        super().__init__()
+        self.executor.shutdown()
+        self.executor = ThreadPoolExecutor(2, thread_name_prefix=WORKER)
+
+
+@pytest.fixture
+def release(monkeypatch, tmp_path):
+    """Set it to let the catalogues' builds go on (each waits for it), on a disk of this test's own."""
+    # no catalogue from an earlier run's disk: each is built here
+    monkeypatch.setattr(check_jobs, "catalogue_path", lambda *key: tmp_path / "-".join(map(str, key)))
+    event = threading.Event()
+    real = check_jobs.scene_problem
+
+    def held(scene_id, step, coordinate, catalogue=True):
+        if catalogue:
+            event.wait()
+        return real(scene_id, step, coordinate, catalogue)
+
+    monkeypatch.setattr(check_jobs, "scene_problem", held)
+    yield event
+    event.set()
+
+
+@pytest.fixture
+def pool(release):
+    pool = HeldPool()
+    yield pool
     release.set()
-    asking.join(120)
-    assert answer and answer[0].step == "kinetic"
-    # every step is queued, in the chapter's order, and the check waited for the build under way
-    for step, coordinate in [("potential", None), ("omega_squared", None), ("equation", "theta")]:
-        assert checker.scene_problem("simple-pendulum", step, coordinate).step == step
-    assert built[0] == ("kinetic", None) and built.count(("kinetic", None)) == 1
-    assert len(built) == len(set(built))
+    pool.executor.shutdown()
+
+
+def checker_of(pool: PicklingPool, seconds: float = 10.0) -> Checking:
+    users = UserSystems(pool=pool, gate=Fairness(capacity=8, workers=pool.workers))  # type: ignore[arg-type]
+    return Checking(users, Settings(check_seconds=seconds, derive_seconds=seconds))
+
+
+def check(checker: Checking, answer: str) -> dict:
+    body = asyncio.run(checker.check_scene("simple-pendulum", "kinetic", None, answer, "student", "127.0.0.1"))
+    return json.loads(body)
+
+
+def test_a_right_answer_is_judged_before_its_catalogue_is_built(pool, release):
+    checker = checker_of(pool, seconds=0.5)
+    # the catalogue's build is held: the right answer needs only the truth
+    assert check(checker, RIGHT_T)["verdict"] == "correct"
+    # a wrong answer's diagnosis needs the catalogue: past the check's limit the server is busy, and says what to do
+    with pytest.raises(OverCapacity) as refused:
+        check(checker, WRONG_T)
+    assert str(refused.value) == BUSY and "press Check again" in BUSY
+    # nothing of that check was kept: once the catalogue is built, the same answer gets its diagnosis
+    release.set()
+    checker.catalogue_build(("simple-pendulum", "kinetic", None)).result(timeout=120)
+    judged = check(checker, WRONG_T)
+    assert judged["verdict"] == "incorrect" and judged["mistake"]["key"] == "missing_half"
+    assert pool.jobs.count("scene_problem_job") == 1
+
+
+def test_opening_a_scenes_steps_builds_each_catalogue_once_in_the_pool(pool, release):
+    checker = checker_of(pool)
+    steps = [(e["step"], e["coordinate"]) for e in json.loads(checker.scene_exercises("simple-pendulum"))["exercises"]]
+    release.set()
+    for step, coordinate in steps:
+        checker.catalogue_build(("simple-pendulum", step, coordinate)).result(timeout=120)
+    # each step's catalogue built once, in the pool, and a check then finds it ready: one job, the answer's
+    assert pool.jobs == ["scene_problem_job"] * len(steps)
+    assert check(checker, WRONG_T)["mistake"]["key"] == "missing_half"
+    assert pool.jobs[len(steps) :] == ["check_job"]
+    # a second server (a restart) loads every catalogue from the disk: no build in its pool
+    again = HeldPool()
+    try:
+        fresh = checker_of(again)
+        fresh.scene_exercises("simple-pendulum")
+        for step, coordinate in steps:
+            fresh.catalogue_build(("simple-pendulum", step, coordinate)).result(timeout=120)
+        assert again.jobs == []
+    finally:
+        again.executor.shutdown()

@@ -47,6 +47,9 @@ class PicklingPool:
     async def run_async(self, future, timeout):
         return await asyncio.wrap_future(future)
 
+    def run(self, job, *args, timeout):
+        return self.submit(job, *args, timeout=timeout).result()
+
 
 def _where() -> str:
     return "worker" if threading.current_thread().name.startswith(WORKER) else "web"

@@ -77,7 +77,8 @@ def test_checking_a_step_of_a_declared_system_reads_the_system_once(client, pool
         app.dependency_overrides.pop(checking_service)
     assert response.status_code == 200, response.text
     assert response.json()["verdict"] == "correct"
-    assert pool.jobs == ["system_check_job"]
+    # the verdict first: the step's truth (the system derived, once), then the right answer judged against it
+    assert pool.jobs == ["system_problem_job", "verdict_job"]
     assert {text: reads[text] for text in texts} == texts
     assert {text: builds[text] for text in texts} == texts
     # the answer too: read in the web process, built in the worker, once each
