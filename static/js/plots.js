@@ -102,7 +102,6 @@ class MomentaPanel extends TimePanel {
     const unit = units.length === 1 ? units[0] : "SI units";
     this.drawSeries(run, top, bottom, `momentum (${unit})`, `change (${unit})`, { yaxis: { range: [lo - pad, hi + pad] } });
     // each momentum with its own unit: "p_θ stays at 1 kg·m²/s within 7.6 × 10⁻⁹ kg·m²/s"
-    const unitOf = (n) => (run.data.momentum_units && run.data.momentum_units[n.slice(2)]) || momentumUnit(run.data.units[n.slice(2)]);
     const said = (x, n) => `${fmt(x)}${unitOf(n) && !unitOf(n).includes("SI") ? ` ${unitOf(n)}` : ""}`;
     this.readout.textContent = top.map((s, k) => `${s.name} stays at ${said(s.values[0], names[k])} within ${said(Math.max(...finite(bottom[k].values).map(Math.abs)), names[k])}.`).join(" ");
     seriesTable(this.summary, "Conserved momenta over the run", run.t, [...top, ...bottom]);

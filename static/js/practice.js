@@ -7,8 +7,8 @@
  * last keystroke: the LaTeX as the checker reads it, or the parser's refusal in the checker's
  * words, the last good rendering kept while the server answers); the browser has no expression grammar of its
  * own. Enter or "Check" sends it to the checker and shows the verdict, the
- * difference typeset and the hint; a named mistake with its piece typeset, what else is right,
- * and a follow-up question answered in place; "Show this step" reveals the engine's step.
+ * hint; a named mistake in the student's own terms, what else is right, and a follow-up question answered in
+ * place; "Show this step" reveals the engine's step, and under it how the last answer checked differs from it.
  *
  * What the student typed, the verdicts and the switch are kept in localStorage, one record per
  * scene and per declared system, so a reload loses nothing. A link with ?practice opens the
@@ -114,11 +114,6 @@ function showVerdict(item, result, answer) {
     const [first, ...rest] = result.message.split(":");
     head.append(element("strong", {}, rest.length ? `${first}:` : LABELS[result.verdict]), rest.length ? rest.join(":") : ` ${first}`);
     box.append(head);
-    if (result.difference) {
-      const diff = element("div", { class: "verdict-difference", "aria-label": `difference: ${result.difference.sympy}` });
-      katexBreaking(diff, `\\text{yours} - \\text{correct} = ${result.difference.latex}`);
-      box.append(diff);
-    }
     if (result.mistake) box.append(mistakeBox(result.mistake));
     // after a named mistake, where it comes from (the hint would repeat its name); else the hint
     const why = result.mistake ? sentenceOf(result.mistake.where) : result.hint;
@@ -141,10 +136,33 @@ function showVerdict(item, result, answer) {
       box.append(typed);
     }
   }
+  showReveal(item, result.reveal);
   const input = item.querySelector("input");
   const stale = record.verdicts[item.dataset.key]?.answer !== undefined && record.verdicts[item.dataset.key].answer !== input.value;
   if (stale) box.append(element("p", { class: "help" }, `(for your earlier answer: ${record.verdicts[item.dataset.key].answer})`));
   input.setAttribute("aria-invalid", result.verdict ? String(result.verdict === "incorrect") : "true");
+}
+
+/** What a wrong answer's verdict keeps back, since it would give the step away: the difference between the
+ * answer and the correct one, and the correct piece the mistake is in. It goes under the derived step, seen only
+ * once the student presses "Show this step". */
+function showReveal(item, reveal) {
+  const engine = item.querySelector(".practice-engine");
+  engine.querySelector(".practice-reveal")?.remove();
+  if (!reveal || (!reveal.difference && !reveal.piece)) return;
+  const more = element("div", { class: "practice-reveal" });
+  more.append(element("p", { class: "help" }, "Your last answer checked, against it:"));
+  if (reveal.difference) {
+    const diff = element("div", { class: "verdict-difference", "aria-label": `difference: ${reveal.difference.sympy}` });
+    katexBreaking(diff, `\\text{yours} - \\text{correct} = ${reveal.difference.latex}`);
+    more.append(diff);
+  }
+  if (reveal.piece) {
+    const piece = element("div", { class: "verdict-piece", "aria-label": "the correct piece" });
+    katexBreaking(piece, reveal.piece);
+    more.append(piece);
+  }
+  engine.append(more);
 }
 
 /** A verdict shown for an answer since edited says so, until the new one is checked. */
