@@ -34,18 +34,27 @@ from fastapi.responses import HTMLResponse, JSONResponse, Response
 from starlette.exceptions import HTTPException as StarletteHTTPException
 
 from app.engine.errors import excerpt
-from app.errors import NoKey, OverCapacity, Refused, UnknownClass, UnknownScene, WorkerFailed, WrongKey
+from app.errors import (
+    NoKey,
+    OverCapacity,
+    Refused,
+    UnknownAssignment,
+    UnknownClass,
+    UnknownScene,
+    WorkerFailed,
+    WrongKey,
+)
 from app.limits import RETRY_SECONDS as UNAVAILABLE_RETRY_SECONDS
 
 # what each kind of failure is, in HTTP
 REFUSED = 422  # Refused and TooMuchWork: the request as sent cannot be served
 CLIENT_BUSY = 429  # OverCapacity for this client: its own work is in the way
 SERVER_BUSY = 503  # OverCapacity of the whole server, or no worker to be had
-NOT_FOUND = 404  # UnknownScene, UnknownClass
+NOT_FOUND = 404  # UnknownScene, UnknownClass, UnknownAssignment
 NO_KEY = 401  # NoKey
 WRONG_KEY = 403  # WrongKey
 
-KINDS = (Refused, OverCapacity, WorkerFailed, UnknownScene, NoKey, WrongKey, UnknownClass)
+KINDS = (Refused, OverCapacity, WorkerFailed, UnknownScene, NoKey, WrongKey, UnknownClass, UnknownAssignment)
 
 
 PROBLEM_JSON = "application/problem+json"
@@ -92,7 +101,7 @@ def problem(exc: Exception) -> Failure:
         if exc.kind == "unavailable":
             return _busy(str(exc), UNAVAILABLE_RETRY_SECONDS, SERVER_BUSY)
         return Failure(REFUSED, {"detail": str(exc), "kind": exc.kind})
-    if isinstance(exc, UnknownScene | UnknownClass):
+    if isinstance(exc, UnknownScene | UnknownClass | UnknownAssignment):
         return Failure(NOT_FOUND, {"detail": str(exc)})
     if isinstance(exc, NoKey):
         return Failure(NO_KEY, {"detail": str(exc)}, {"WWW-Authenticate": "Bearer"})
