@@ -92,5 +92,6 @@ def downgrade() -> None:
         batch.create_unique_constraint("uq_assignments_class_position", ["class_id", "position"])
         batch.drop_column("assignment_id")
     op.drop_table("class_assignments")
-    with op.batch_alter_table("classes") as batch:
-        batch.drop_column("recovery_hash")
+    # in place (SQLite 3.35+ and PostgreSQL): a batch copy would drop the table, and SQLite's foreign keys would
+    # delete every class's rows with it
+    op.execute("ALTER TABLE classes DROP COLUMN recovery_hash")
