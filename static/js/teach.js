@@ -364,16 +364,18 @@ $("assign-save").addEventListener("click", async () => {
   const due = $("assign-due").value ? new Date($("assign-due").value).toISOString() : null;
   const title = $("assign-title-input").value.trim() || `Assignment ${series.length + 1}`;
   const r = await api("POST", `/api/classes/${current.code}/assignments`, { key: current.key, body: { title, due, items } });
-  $("assign-status").textContent = r.status === 201 ? `Added: ${r.data.n}. ${r.data.title}.` : r.data?.detail || `Not added (${r.status}).`;
-  if (r.status === 201) {
-    $("assign-title-input").value = "";
-    $("assign-due").value = "";
-    $("assign-system").value = "";
-    $("assign-system-name").value = "";
-    $("assign-system-steps").replaceChildren();
-    buildEditor();
-    await reloadSeries();
+  if (r.status !== 201) {
+    $("assign-status").textContent = r.data?.detail || `Not added (${r.status}).`;
+    return;
   }
+  $("assign-title-input").value = "";
+  $("assign-due").value = "";
+  $("assign-system").value = "";
+  $("assign-system-name").value = "";
+  $("assign-system-steps").replaceChildren();
+  buildEditor();
+  await reloadSeries();
+  $("assign-status").textContent = `Added: ${r.data.n}. ${r.data.title}.`;
 });
 
 // ---- the record ----------------------------------------------------------------------------------
