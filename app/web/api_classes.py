@@ -41,8 +41,8 @@ from app.web.schemas_classes import (
     Number,
     Recovered,
     RecoverRequest,
-    ShowStep,
     Shown,
+    ShowStep,
     Students,
     Summary,
 )

@@ -11,9 +11,14 @@ from pathlib import Path
 
 import pytest
 
-from tests.browser.test_classroom import DESK, PHONE, RIGHT_T, _errors_of
+from tests.browser.test_classroom import (
+    DESK,
+    PHONE,
+    RIGHT_T,
+    _errors_of,
+    classes,  # noqa: F401 - the module's classes in a database of their own
+)
 from tests.browser.test_classroom import NO_CROSS_T as DOUBLE_WRONG
-from tests.browser.test_classroom import classes  # noqa: F401 - the module's classes in a database of their own
 
 pytestmark = pytest.mark.browser
 

@@ -14,11 +14,10 @@ from __future__ import annotations
 
 import json
 import math
+from datetime import UTC, datetime
 from typing import Any
 
 from app.engine.check import PER_COORDINATE, STEPS
-from datetime import UTC, datetime
-
 from app.errors import Refused, UnknownScene
 from app.service.checking import Checking, declared
 from app.service.user_checks import InvalidSystem

@@ -76,7 +76,7 @@ def gradebook(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict
     for student, (name, _joined) in sorted(people.items(), key=lambda p: (p[1][1], p[0])):
         grades = []
         for each, head in zip(series, heads, strict=True):
-            count = defaultdict(int)
+            count: defaultdict[str, int] = defaultdict(int)
             for step in assigned_keys([each]):
                 first_id, right_id, right_at = first.get((student, step), (None, None, None))
                 seen = shown_at.get((student, step))
