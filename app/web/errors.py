@@ -32,6 +32,7 @@ from fastapi.exception_handlers import http_exception_handler
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import HTMLResponse, JSONResponse, Response
 from starlette.exceptions import HTTPException as StarletteHTTPException
+from starlette.routing import Match
 
 from app.engine.errors import excerpt
 from app.errors import (
@@ -166,9 +167,28 @@ async def http_error(request: Request, exc: Exception) -> Response:
     """Starlette's own refusals (no such address: 404, a method the address does not take: 405) as problems."""
     assert isinstance(exc, StarletteHTTPException)
     headers = dict(exc.headers or {})
+    if exc.status_code == 405:  # every method the address takes, over all its routes (Starlette names one route's)
+        headers["Allow"] = _allowed(request) or headers.get("Allow", "")
     if exc.status_code < 400 or not request.url.path.startswith(("/api/", "/openapi.json", "/healthz")):
         return await http_exception_handler(request, exc)
     return problem_response(exc.status_code, str(exc.detail), headers)
+
+
+def _allowed(request: Request) -> str:
+    """The methods of every route whose path matches the request's, as an ``Allow`` header (routers included in
+    routers are walked through)."""
+    methods: set[str] = set()
+    routes = list(request.app.router.routes)
+    while routes:
+        route = routes.pop()
+        inner = getattr(getattr(route, "original_router", None), "routes", None)
+        if inner is not None:
+            routes.extend(inner)
+            continue
+        takes = getattr(route, "methods", None)
+        if takes and route.matches(request.scope)[0] != Match.NONE:
+            methods |= set(takes)
+    return ", ".join(sorted(methods))
 
 
 def install(app: FastAPI) -> None:

@@ -184,6 +184,10 @@ def test_refusals_of_the_series_say_what_is_wrong(client, classes, monkeypatch):
     assert r.status_code == 422 and r.json()["loc"][-1] == "assignment"
     assert client.get(f"/api/classes/{code}/grades", headers=bearer(student)).status_code == 403
     assert client.get(f"/api/classes/{code}/grades?format=xls", headers=bearer(teacher)).status_code == 422
+    # a method the address does not take: 405, naming every method it does (two routes share the address)
+    for method, path, allowed in (("PATCH", url, "GET, POST"), ("PATCH", f"{url}/1", "DELETE, PUT")):
+        r = client.request(method, path)
+        assert r.status_code == 405 and r.headers["allow"] == allowed
 
 
 def test_a_formula_in_a_name_or_title_is_not_run_by_a_spreadsheet(client, classes):
