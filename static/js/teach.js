@@ -122,7 +122,8 @@ async function labelOf(entry) {
     /* the label falls back to the step's name */
   }
   const where = entry.scene ? titleOf[entry.scene] || entry.scene : entry.system;
-  const of = series.find((a) => a.n === entry.assignment);
+  // the assignment named only when the series has several (one assignment needs no name on a projector)
+  const of = series.length > 1 && series.find((a) => a.n === entry.assignment);
   return { tex: stepTex(practice, entry.step, entry.coordinate), where: of ? `${where} · ${of.n}. ${of.title}` : where };
 }
 
@@ -134,11 +135,16 @@ function byStuck(steps) {
 }
 
 /** One click to the students concerned: a disclosure listing their names. */
-function whoList(names, what) {
+const opened = new Set(); // the lists of names the instructor opened: they stay open when the poll redraws
+function whoList(names, what, where) {
   if (!names.length) return null;
-  return el("details", { className: "now-who" },
+  const id = `${where}|${what}`;
+  const box = el("details", { className: "now-who" },
     el("summary", { text: `${what} (${names.length})` }),
     el("p", { className: "now-names", text: names.join(", ") }));
+  box.open = opened.has(id);
+  box.addEventListener("toggle", () => (box.open ? opened.add(id) : opened.delete(id)));
+  return box;
 }
 
 async function drawNow(summary) {
@@ -150,7 +156,7 @@ async function drawNow(summary) {
     stuck.replaceChildren(
       el("p", { className: "now-what" }, typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` })),
       el("p", { className: "now-figure", text: `${top.stuck} of ${summary.students} stuck · ${top.students_done} done` }),
-      whoList(top.students_stuck, "Show the students stuck"));
+      whoList(top.students_stuck, "Show the students stuck", "now"));
   } else {
     delete $("now-stuck").dataset.step;
     stuck.replaceChildren(el("p", { className: "help", text: "Nobody is stuck yet." }));
@@ -165,7 +171,7 @@ async function drawNow(summary) {
       el("p", { className: "now-what" }, el("strong", { text: mistake.name || mistakeWords(mistake.key) })),
       el("p", { className: "now-figure" }, `${mistake.count}× · in `, typeset(el("span"), label.tex),
         el("span", { className: "dash-where", text: ` ${label.where}${mistake.steps.length > 1 ? ` and ${mistake.steps.length - 1} more` : ""}` })),
-      whoList(mistake.students, "Show the students who made it"));
+      whoList(mistake.students, "Show the students who made it", "now"));
   } else {
     delete $("now-mistake").dataset.count;
     body.replaceChildren(el("p", { className: "help", text: "No named mistake so far." }));
@@ -192,7 +198,7 @@ async function drawSteps(summary) {
       el("p", { className: "dash-numbers",
         text: `${entry.stuck} stuck · ${entry.students_done} of ${summary.students} done · ${entry.correct} right · ${entry.incorrect} wrong`
           + (mistakes.length ? ` · most often: ${entry.mistake_names?.[mistakes[0][0]] || mistakeWords(mistakes[0][0])}` : "") }),
-      whoList(entry.students_stuck, "Show the students stuck")));
+      whoList(entry.students_stuck, "Show the students stuck", `step|${entry.assignment}|${entry.scene || entry.system}|${entry.step}|${entry.coordinate || ""}`)));
   }
   list.replaceChildren(...rows);
   if (!rows.length) list.replaceChildren(el("li", { className: "help", text: "No steps yet: set an assignment, or wait for the first answer." }));
@@ -211,7 +217,7 @@ async function drawMistakes(summary) {
       el("span", { className: "dash-count", text: `${mistake.count}×` }),
       el("strong", { text: mistake.name || mistakeWords(mistake.key) }),
       el("span", { text: " in " }), ...pieces,
-      whoList(mistake.students, "Show the students")));
+      whoList(mistake.students, "Show the students", `mistake|${mistake.key}`)));
   }
   $("dash-mistakes").replaceChildren(...rows);
   if (!rows.length) $("dash-mistakes").replaceChildren(el("li", { className: "help", text: "No named mistake so far." }));
