@@ -17,7 +17,8 @@ routes alike (app/web/errors.py):
 * ``NoKey``: a class's route was asked without a key (``Authorization: Bearer``);
 * ``WrongKey``: the key given does not open this route of this class (a wrong key,
   a student's key on an instructor's route, another class's key, or an unknown code);
-* ``UnknownClass``: no class has this code (joining only: a keyed route says WrongKey).
+* ``UnknownClass``: no class has this code (joining only: a keyed route says WrongKey);
+* ``UnknownAssignment``: the class has no assignment of this number.
 """
 
 from __future__ import annotations
@@ -113,3 +114,10 @@ class UnknownClass(KeyError):
 
     def __str__(self) -> str:
         return str(self.args[0]) if self.args else "no class has this code"
+
+
+class UnknownAssignment(KeyError):
+    """The class has no assignment of this number; the message says which numbers it has."""
+
+    def __str__(self) -> str:
+        return str(self.args[0]) if self.args else "the class has no assignment of this number"

@@ -28,12 +28,21 @@ from app.web.schemas import Problem
 from app.web.schemas_check import CheckResponse
 from app.web.schemas_classes import (
     Assignment,
+    Assignments,
+    AssignmentView,
     ClassCheckRequest,
     ClassCreated,
     ClassView,
+    Grades,
     Joined,
     JoinRequest,
+    NewAssignment,
     NewClass,
+    Number,
+    Recovered,
+    RecoverRequest,
+    Shown,
+    ShowStep,
     Students,
     Summary,
 )
@@ -121,7 +130,7 @@ _keyed_read("/{code}/me", "view_class", "The class as your key sees it", ClassVi
     responses={**ERRORS, 503: {"model": Problem, "description": "The server is busy."}},
 )
 async def check_step(classes: ClassroomDep, client: ClientDep, code: str, key: KeyDep, body: ClassCheckRequest):
-    target = {"scene": body.scene, "system": body.system}
+    target = {"scene": body.scene, "system": body.system, "assignment": body.assignment}
 
     async def work(_session: str, _address: str) -> bytes:  # the student and their class are the fair share's units
         return await classes.check(code, key, target, body.step, body.coordinate, body.answer, body.attempt)
@@ -131,10 +140,86 @@ async def check_step(classes: ClassroomDep, client: ClientDep, code: str, key: K
     return response
 
 
-@router.put("/{code}/assignment", summary="Set the class's assignment",
+@router.post(
+    "/{code}/recover",
+    summary="The instructor's key again, from the recovery code",
+    description="For the instructor on another machine: the recovery code shown when the class was created gives "
+    "back the instructor's key. Tries count against the joins per minute.",
+    response_model=Recovered,
+    responses={**_errors(400, 403, 413, 422, 429)},
+)
+async def recover_class(classes: ClassroomDep, client: ClientDep, code: str, body: RecoverRequest) -> Response:
+    return client.keep(_json(await classes.recover(code, body.recovery_code, client.key, client.address)))
+
+
+@router.post(
+    "/{code}/shown",
+    summary="Record a step shown to a student",
+    description="With a student's key: the student pressed \"Show this step\" (the step's answer), a hint used "
+    "in the gradebook; recorded once per student, assignment and step.",
+    response_model=Shown,
+    responses=_errors(400, 401, 403, 413, 422),
+)
+async def show_step(classes: ClassroomDep, code: str, key: KeyDep, body: ShowStep) -> JSONResponse:
+    target = {"scene": body.scene, "system": body.system, "assignment": body.assignment}
+    return _json(await classes.show_step(code, key, target, body.step, body.coordinate))
+
+
+@router.put("/{code}/assignment", summary="Set the first assignment's items",
+            description="Sets (or replaces) the items of the series' first assignment, created as "
+            "\"Assignment 1\" when the series is empty. The series is under /assignments.",
             responses=_errors(400, 401, 403, 413, 422))
 async def set_assignment(classes: ClassroomDep, code: str, key: KeyDep, body: Assignment) -> JSONResponse:
     return _json(await classes.assign(code, key, [item.to_item() for item in body.items]))
+
+
+_keyed_read("/{code}/assignments", "class_assignments", "The series of assignments", Assignments,
+            Classroom.assignments)
+
+NOT_AN_ASSIGNMENT = {404: {"model": Problem, "description": "The class has no assignment of this number."}}
+
+
+@router.post("/{code}/assignments", status_code=201, summary="Add an assignment to the series",
+             response_model=AssignmentView, responses=_errors(400, 401, 403, 413, 422))
+async def add_assignment(classes: ClassroomDep, code: str, key: KeyDep, body: NewAssignment) -> JSONResponse:
+    added = await classes.add_assignment(code, key, body.title, body.due, [i.to_item() for i in body.items])
+    response = _json(added, 201)
+    response.headers["Location"] = f"/api/classes/{code}/assignments/{added['n']}"
+    return response
+
+
+@router.put("/{code}/assignments/{n}", summary="Replace an assignment of the series",
+            response_model=AssignmentView, responses={**_errors(400, 401, 403, 413, 422), **NOT_AN_ASSIGNMENT})
+async def replace_assignment(
+    classes: ClassroomDep, code: str, n: Number, key: KeyDep, body: NewAssignment
+) -> JSONResponse:
+    return _json(await classes.replace_assignment(code, key, n, body.title, body.due, [i.to_item() for i in body.items]))
+
+
+@router.delete("/{code}/assignments/{n}", status_code=204, summary="Delete an assignment and its answers",
+               responses={**_errors(401, 403, 422), **NOT_AN_ASSIGNMENT})
+async def delete_assignment(classes: ClassroomDep, code: str, n: Number, key: KeyDep) -> Response:
+    await classes.delete_assignment(code, key, n)
+    return Response(status_code=204, headers=NO_STORE)
+
+
+@router.get(
+    "/{code}/grades",
+    summary="The gradebook: a score per student and assignment",
+    description="JSON, or with `format=csv` one row per student and one column per assignment (its score), then "
+    "the parts (right first try, right, shown, steps) as extra columns: the shape Canvas and Moodle import.",
+    response_model=Grades,
+    responses={200: {"content": {"text/csv": {}}}, **_errors(401, 403, 422)},
+)
+async def class_grades(
+    classes: ClassroomDep, code: str, key: KeyDep, format: Annotated[Literal["json", "csv"], Query()] = "json"
+) -> Response:
+    if format == "json":
+        return _json(await classes.grades(code, key))
+    body = await classes.grades_csv(code, key)
+    safe = "".join(c for c in code.upper() if c.isalnum())[:12]
+    disposition = f'attachment; filename="grades-{safe}.csv"'
+    return Response(body, media_type="text/csv; charset=utf-8", headers={**NO_STORE, "Content-Disposition": disposition})
 
 
 _keyed_read("/{code}/summary", "class_summary", "Each step: answers, students done, named mistakes", Summary,

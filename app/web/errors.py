@@ -32,20 +32,30 @@ from fastapi.exception_handlers import http_exception_handler
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import HTMLResponse, JSONResponse, Response
 from starlette.exceptions import HTTPException as StarletteHTTPException
+from starlette.routing import Match
 
 from app.engine.errors import excerpt
-from app.errors import NoKey, OverCapacity, Refused, UnknownClass, UnknownScene, WorkerFailed, WrongKey
+from app.errors import (
+    NoKey,
+    OverCapacity,
+    Refused,
+    UnknownAssignment,
+    UnknownClass,
+    UnknownScene,
+    WorkerFailed,
+    WrongKey,
+)
 from app.limits import RETRY_SECONDS as UNAVAILABLE_RETRY_SECONDS
 
 # what each kind of failure is, in HTTP
 REFUSED = 422  # Refused and TooMuchWork: the request as sent cannot be served
 CLIENT_BUSY = 429  # OverCapacity for this client: its own work is in the way
 SERVER_BUSY = 503  # OverCapacity of the whole server, or no worker to be had
-NOT_FOUND = 404  # UnknownScene, UnknownClass
+NOT_FOUND = 404  # UnknownScene, UnknownClass, UnknownAssignment
 NO_KEY = 401  # NoKey
 WRONG_KEY = 403  # WrongKey
 
-KINDS = (Refused, OverCapacity, WorkerFailed, UnknownScene, NoKey, WrongKey, UnknownClass)
+KINDS = (Refused, OverCapacity, WorkerFailed, UnknownScene, NoKey, WrongKey, UnknownClass, UnknownAssignment)
 
 
 PROBLEM_JSON = "application/problem+json"
@@ -92,7 +102,7 @@ def problem(exc: Exception) -> Failure:
         if exc.kind == "unavailable":
             return _busy(str(exc), UNAVAILABLE_RETRY_SECONDS, SERVER_BUSY)
         return Failure(REFUSED, {"detail": str(exc), "kind": exc.kind})
-    if isinstance(exc, UnknownScene | UnknownClass):
+    if isinstance(exc, UnknownScene | UnknownClass | UnknownAssignment):
         return Failure(NOT_FOUND, {"detail": str(exc)})
     if isinstance(exc, NoKey):
         return Failure(NO_KEY, {"detail": str(exc)}, {"WWW-Authenticate": "Bearer"})
@@ -157,9 +167,28 @@ async def http_error(request: Request, exc: Exception) -> Response:
     """Starlette's own refusals (no such address: 404, a method the address does not take: 405) as problems."""
     assert isinstance(exc, StarletteHTTPException)
     headers = dict(exc.headers or {})
+    if exc.status_code == 405:  # every method the address takes, over all its routes (Starlette names one route's)
+        headers["Allow"] = _allowed(request) or headers.get("Allow", "")
     if exc.status_code < 400 or not request.url.path.startswith(("/api/", "/openapi.json", "/healthz")):
         return await http_exception_handler(request, exc)
     return problem_response(exc.status_code, str(exc.detail), headers)
+
+
+def _allowed(request: Request) -> str:
+    """The methods of every route whose path matches the request's, as an ``Allow`` header (routers included in
+    routers are walked through)."""
+    methods: set[str] = set()
+    routes = list(request.app.router.routes)
+    while routes:
+        route = routes.pop()
+        inner = getattr(getattr(route, "original_router", None), "routes", None)
+        if inner is not None:
+            routes.extend(inner)
+            continue
+        takes = getattr(route, "methods", None)
+        if takes and route.matches(request.scope)[0] != Match.NONE:
+            methods |= set(takes)
+    return ", ".join(sorted(methods))
 
 
 def install(app: FastAPI) -> None:

@@ -8,8 +8,9 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from pydantic import BaseModel, ConfigDict, Field, StringConstraints
+from pydantic import AwareDatetime, BaseModel, ConfigDict, Field, StringConstraints
 
+from app.service.classroom.store import MAX_ASSIGNMENTS
 from app.web.schemas_check import CheckRequest, Step
 from app.web.schemas_user import STRICT, Name, SystemSpec
 
@@ -17,6 +18,7 @@ Title = Annotated[str, StringConstraints(strip_whitespace=True, min_length=1, ma
 Pseudonym = Annotated[str, StringConstraints(strip_whitespace=True, min_length=1, max_length=40, pattern=r"^[^\x00-\x1f\x7f]+$")]
 SceneId = Annotated[str, Field(min_length=1, max_length=40, pattern=r"^[a-z0-9_-]+$")]
 AttemptId = Annotated[str, Field(min_length=8, max_length=64, pattern=r"^[A-Za-z0-9_-]+$")]
+Number = Annotated[int, Field(ge=1, le=MAX_ASSIGNMENTS, description="An assignment's number in the series (1: first).")]
 
 
 class NewClass(BaseModel):
@@ -27,6 +29,25 @@ class NewClass(BaseModel):
 class ClassCreated(BaseModel):
     code: str = Field(description="What students type to join: 6 characters without look-alikes.")
     teacher_key: str = Field(description="The instructor's secret (shown once; the server keeps only its hash).")
+    recovery_code: str = Field(
+        description="Shown once: on another machine, POST /api/classes/{code}/recover with it gives the "
+        "instructor's key back (the server keeps only its hash)."
+    )
+    teacher_link: str = Field(
+        description="/teach with the class code and the recovery code in the fragment (never sent to a server): "
+        "opened in another browser, it restores the class there."
+    )
+
+
+class RecoverRequest(BaseModel):
+    model_config = ConfigDict(**STRICT, json_schema_extra={"example": {"recovery_code": "ACEF-HKMN-PRTW-XY34-79AC-EFHK"}})
+    recovery_code: str = Field(min_length=1, max_length=60, description="The recovery code shown at creation.")
+
+
+class Recovered(BaseModel):
+    code: str
+    title: str
+    teacher_key: str = Field(description="The instructor's key of the class, the same as the first browser's.")
 
 
 class JoinRequest(BaseModel):
@@ -75,6 +96,78 @@ class Assignment(BaseModel):
     items: list[AssignmentItem] = Field(max_length=20)
 
 
+class NewAssignment(BaseModel):
+    """An assignment of the series: a title, an optional due time, its items (as for the single assignment)."""
+
+    model_config = ConfigDict(
+        **STRICT,
+        json_schema_extra={
+            "example": {
+                "title": "Week 3: the pendulum's T, U and equation",
+                "due": "2030-12-06T17:00:00Z",
+                "items": [{"scene": "simple-pendulum", "steps": [{"step": "kinetic"}, {"step": "potential"}]}],
+            }
+        },
+    )
+    title: Title
+    due: AwareDatetime | None = Field(
+        None, description="When it is due: ISO 8601 with its time zone (e.g. 2030-12-06T17:00:00Z), not past."
+    )
+    items: list[AssignmentItem] = Field(min_length=1, max_length=20)
+
+
+class AssignmentView(BaseModel):
+    model_config = ConfigDict(extra="allow")
+    n: int = Field(description="Its number in the series (1: first); a deleted assignment's later ones move up.")
+    title: str
+    due: str | None = Field(description="When it is due (ISO 8601, UTC), or null.")
+    items: list[dict[str, Any]]
+
+
+class Assignments(BaseModel):
+    code: str
+    assignments: list[AssignmentView]
+
+
+class ShowStep(BaseModel):
+    """A step whose answer a student was shown ("Show this step"), recorded as a hint used."""
+
+    model_config = ConfigDict(
+        **STRICT, json_schema_extra={"example": {"scene": "simple-pendulum", "step": "kinetic", "assignment": 1}}
+    )
+    scene: SceneId | None = Field(None, description="The scene's id (or `system`).")
+    system: Name | None = Field(None, description="The name of a system the instructor assigned.")
+    step: Step
+    coordinate: Name | None = None
+    assignment: Number | None = Field(None, description="The assignment (else the first holding the step).")
+
+
+class Shown(BaseModel):
+    assignment: int
+    step: str
+    coordinate: str | None
+
+
+class Grade(BaseModel):
+    assignment: int
+    steps: int = Field(description="The assignment's steps.")
+    first_try: int = Field(description="Steps whose first answer was right (and not shown before).")
+    right: int = Field(description="Steps answered right, at any try.")
+    shown: int = Field(description="Steps whose answer the student was shown (Show this step).")
+    score: float = Field(description="Steps right on their own (not shown before), out of `points` for all steps.")
+
+
+class StudentGrades(BaseModel):
+    name: str
+    grades: list[Grade]
+
+
+class Grades(BaseModel):
+    points: int = Field(description="What an assignment's score is out of.")
+    assignments: list[dict[str, Any]] = Field(description="The series: `n`, `title`, `due`, `steps`.")
+    students: list[StudentGrades]
+
+
 class ClassCheckRequest(CheckRequest):
     """A student's answer for one step of an item of the class's assignment."""
 
@@ -87,6 +180,7 @@ class ClassCheckRequest(CheckRequest):
     )
     scene: SceneId | None = Field(None, description="The scene's id (or `system`).")
     system: Name | None = Field(None, description="The name of a system the instructor assigned.")
+    assignment: Number | None = Field(None, description="The assignment (else the first holding the step).")
     attempt: AttemptId | None = Field(
         None,
         description="An id the page makes for this press of Check (8-64 letters, digits, `-` or `_`), sent again "
@@ -120,9 +214,19 @@ class MistakeTotal(BaseModel):
     students: list[str] = Field(description="The students who made it, in alphabetical order.")
 
 
+class AssignmentProgress(BaseModel):
+    n: int
+    title: str
+    due: str | None
+    steps: int
+    students_done: list[str] = Field(description="Students with every step of it right, alphabetical.")
+    students_stuck: list[str] = Field(description="Students stuck on one of its steps, alphabetical.")
+
+
 class Summary(BaseModel):
     students: int
     attempts: int
+    assignments: list[AssignmentProgress] = Field(default_factory=list, description="The series, in order.")
     steps: list[StepSummary] = Field(description="Each step: `scene` or `system`, then the counts.")
     mistakes: list[MistakeTotal] = Field(
         description="Each named mistake totalled over steps and scenes (by its words), most common first."
@@ -130,6 +234,8 @@ class Summary(BaseModel):
 
 
 class StudentStep(BaseModel):
+    model_config = ConfigDict(extra="allow")
+    assignment: int | None = Field(None, description="The assignment's number (null: nothing was assigned).")
     item: str
     step: str
     coordinate: str | None

@@ -3,7 +3,9 @@
  * practise the assignment's steps. Each answer goes to POST /api/classes/{code}/check (practice
  * mode's checker; the verdict is recorded for the instructor) and the verdict, the difference
  * typeset and the hint come back as in practice mode. The student's own progress is counted from
- * the server's record. The student key stays in localStorage; a reload goes on where it was.
+ * the server's record. The class's assignments come in order, each with its title, due time and the
+ * student's own progress on it; "Show this step" shows a step's answer and is recorded (a hint used,
+ * in the gradebook). The student key stays in localStorage; a reload goes on where it was.
  */
 import { api, el, exerciseOf, practiceOf, showPanes, stepTex, stored, typeset } from "./classroom.js";
 
@@ -12,10 +14,11 @@ const scenes = JSON.parse(document.getElementById("class-scenes").textContent);
 const titleOf = Object.fromEntries(scenes.map((s) => [s.id, s.title]));
 const $ = (id) => document.getElementById(id);
 let current = memory.get(); // {code, key, name, title}
-let assignment = null;
-const done = new Set(); // "item|step|coordinate" of the steps this student has done
+let series = null; // the class's assignments, in order: {n, title, due, items}
+const done = new Set(); // "assignment|item|step|coordinate" of the steps this student has done
 
-const stepId = (item, step, coordinate) => `${item}|${step}|${coordinate || ""}`;
+const stepId = (n, item, step, coordinate) => `${n}|${item}|${step}|${coordinate || ""}`;
+const keysOf = (a) => a.items.flatMap((item) => item.steps.map((s) => stepId(a.n, item.scene || item.name, s.step, s.coordinate)));
 
 /** A new attempt id (22 random URL-safe characters): the server records one answer per id, so a press of
  * Check sent twice (a retry after a lost answer) is judged and counted once. */
@@ -29,9 +32,14 @@ function show() {
 }
 
 function progress() {
-  const steps = (assignment || []).flatMap((item) => item.steps.map((s) => stepId(item.scene || item.name, s.step, s.coordinate)));
+  const steps = (series || []).flatMap(keysOf);
   const count = steps.filter((s) => done.has(s)).length;
   $("joined-progress").textContent = steps.length ? `${count} of ${steps.length} steps done` : "";
+  for (const a of series || []) {
+    const mine = keysOf(a);
+    const line = document.querySelector(`[data-assignment="${a.n}"] .join-assignment-progress`);
+    if (line) line.textContent = `${mine.filter((s) => done.has(s)).length} of ${mine.length} steps done`;
+  }
 }
 
 function verdictView(box, r) {
@@ -49,20 +57,38 @@ function verdictView(box, r) {
   box.append(el("p", {}, el("strong", { text: r.status === 429 || r.status === 503 ? "Busy" : "Not checked" }), ` ${detail}`));
 }
 
-function stepView(item, practice, s, index) {
+function stepView(a, item, practice, s, index) {
   const exercise = exerciseOf(practice, s.step, s.coordinate);
   const id = `answer-${index}`;
   const input = el("input", { id, autocomplete: "off", autocapitalize: "off", spellcheck: "false", inputmode: "text" });
   const button = el("button", { type: "submit", text: "Check" });
+  const reveal = el("button", { type: "button", className: "join-reveal", "aria-expanded": "false", text: "Show this step" });
+  const shown = el("div", { className: "practice-engine", hidden: "" });
   const box = el("div", { className: "practice-verdict", role: "status", "aria-live": "polite" });
   const lhs = s.step === "equation" ? "0 =" : `${stepTex(practice, s.step, s.coordinate)} =`;
   const form = el("form", { className: "practice-step", "data-step": s.step },
     el("h3", { text: exercise ? exercise.title : s.step }),
     el("label", { for: id }, typeset(el("span", { className: "practice-lhs" }), s.step === "equation" ? "0 \\;=" : lhs)),
-    el("div", { className: "practice-row" }, input, button),
+    el("div", { className: "practice-row" }, input, button, exercise ? reveal : null),
     exercise ? el("p", { className: "practice-names help", text: `Names: ${exercise.names.join(", ")}` }) : null,
-    box);
-  const key = stepId(item.scene || item.name, s.step, s.coordinate);
+    box, shown);
+  const key = stepId(a.n, item.scene || item.name, s.step, s.coordinate);
+  const target = { ...(item.scene ? { scene: item.scene } : { system: item.name }), step: s.step, assignment: a.n,
+    ...(s.coordinate ? { coordinate: s.coordinate } : {}) };
+  // the step's answer, shown on demand; the instructor's gradebook counts it as a hint used (recorded first)
+  reveal.addEventListener("click", async () => {
+    if (shown.hidden) {
+      const r = await api("POST", `/api/classes/${current.code}/shown`, { key: current.key, body: target, tries: 3, patience: 5 });
+      if (r.status !== 200) {
+        verdictView(box, r);
+        return;
+      }
+      shown.replaceChildren(el("p", { className: "help", text: "The step, derived:" }), typeset(el("div"), exercise.answer.latex, true));
+    }
+    shown.hidden = !shown.hidden;
+    reveal.setAttribute("aria-expanded", String(!shown.hidden));
+    reveal.textContent = shown.hidden ? "Show this step" : "Hide this step";
+  });
   if (done.has(key)) form.classList.add("step-done");
   let pending = null; // {answer, attempt}: a press of Check not yet answered; pressing again sends the same id
   form.addEventListener("submit", async (event) => {
@@ -71,8 +97,7 @@ function stepView(item, practice, s, index) {
     if (!answer) return;
     button.disabled = true;
     if (!pending || pending.answer !== answer) pending = { answer, attempt: attemptId() };
-    const body = { ...(item.scene ? { scene: item.scene } : { system: item.name }), step: s.step, answer,
-      attempt: pending.attempt, ...(s.coordinate ? { coordinate: s.coordinate } : {}) };
+    const body = { ...target, answer, attempt: pending.attempt };
     try {
       // one check at a time: while a previous one still runs the server asks to wait, a few seconds at most
       const r = await api("POST", `/api/classes/${current.code}/check`, { key: current.key, body, tries: 3, patience: 5 });
@@ -93,26 +118,34 @@ function stepView(item, practice, s, index) {
   return form;
 }
 
+const when = (iso) => new Date(iso).toLocaleString([], { dateStyle: "medium", timeStyle: "short" });
+
 async function drawItems() {
   const holder = $("join-items");
   const parts = [];
   let index = 0;
-  for (const item of assignment) {
-    const section = el("section", { className: "class-panel join-item" });
-    const heading = item.scene ? titleOf[item.scene] || item.scene : item.name;
-    section.append(el("h2", { text: heading }));
-    if (item.scene) section.append(el("p", {}, el("a", { href: `/scenes/${item.scene}`, text: "The scene's page" }), " (its set-up and figure)."));
-    const values = Object.entries(item.parameters || {});
-    if (values.length) section.append(el("p", { className: "help", text: `Take ${values.map(([k, v]) => `${k} = ${v}`).join(", ")}.` }));
-    try {
-      const practice = await practiceOf(item);
-      const steps = item.steps.length ? item.steps : practice.exercises.map((e) => ({ step: e.step, coordinate: e.coordinate }));
-      item.steps = steps;
-      for (const s of steps) section.append(stepView(item, practice, s, index++));
-    } catch (error) {
-      section.append(el("p", { className: "class-status", text: error.message }));
+  for (const a of series) {
+    const part = el("section", { className: "join-assignment", "data-assignment": a.n },
+      el("h2", { className: "join-assignment-title", text: `${a.n}. ${a.title}` }),
+      el("p", { className: "help" }, a.due ? `Due ${when(a.due)} · ` : "", el("span", { className: "join-assignment-progress" })));
+    for (const item of a.items) {
+      const section = el("section", { className: "class-panel join-item" });
+      const heading = item.scene ? titleOf[item.scene] || item.scene : item.name;
+      section.append(el("h3", { text: heading }));
+      if (item.scene) section.append(el("p", {}, el("a", { href: `/scenes/${item.scene}`, text: "The scene's page" }), " (its set-up and figure)."));
+      const values = Object.entries(item.parameters || {});
+      if (values.length) section.append(el("p", { className: "help", text: `Take ${values.map(([k, v]) => `${k} = ${v}`).join(", ")}.` }));
+      try {
+        const practice = await practiceOf(item);
+        const steps = item.steps.length ? item.steps : practice.exercises.map((e) => ({ step: e.step, coordinate: e.coordinate }));
+        item.steps = steps;
+        for (const s of steps) section.append(stepView(a, item, practice, s, index++));
+      } catch (error) {
+        section.append(el("p", { className: "class-status", text: error.message }));
+      }
+      part.append(section);
     }
-    parts.push(section);
+    parts.push(part);
   }
   holder.replaceChildren(...parts);
   progress();
@@ -135,12 +168,13 @@ async function load() {
     setTimeout(load, 5000);
     return;
   }
-  for (const s of r.data.progress?.steps || []) if (s.done) done.add(stepId(s.item, s.step, s.coordinate));
-  const changed = JSON.stringify(r.data.assignment) !== JSON.stringify(assignment);
-  assignment = r.data.assignment;
-  $("join-waiting").hidden = assignment.length > 0;
+  for (const s of r.data.progress?.steps || []) if (s.done) done.add(stepId(s.assignment, s.item, s.step, s.coordinate));
+  const changed = JSON.stringify(r.data.assignments) !== JSON.stringify(series);
+  series = r.data.assignments;
+  const any = series.some((a) => a.items.length);
+  $("join-waiting").hidden = any;
   if (changed) await drawItems();
-  if (!assignment.length) setTimeout(load, 5000); // until the instructor sets one
+  if (!any) setTimeout(load, 5000); // until the instructor sets one
 }
 
 function leave(message) {

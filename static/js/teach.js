@@ -4,8 +4,12 @@
  * two seconds. The first screen answers "which step is the class stuck on, and which mistake": the
  * step with the most students stuck (answered, not yet right) and the most common named mistake,
  * totalled over every scene, each one click from the students concerned; then the steps, most stuck
- * first (bars of right and wrong answers), every mistake, one row per student. Projector mode enlarges
- * the type and hides the editing. The instructor key stays in localStorage.
+ * first (bars of right and wrong answers), every mistake, each assignment of the series (who is done,
+ * who is stuck), one row per student. Projector mode enlarges the type and hides the editing. The
+ * instructor key stays in localStorage. A class holds a series of assignments (title, optional due
+ * time, scenes and typed systems with their steps), added and deleted here. The recovery code is
+ * shown once at creation; the teacher link carries it in its fragment (#class=…&recover=…), which a
+ * browser never sends to a server: opened on another machine, it restores the key there.
  */
 import { api, el, mistakeWords, practiceOf, showPanes, stepTex, stored, typeset } from "./classroom.js";
 
@@ -16,7 +20,8 @@ const titleOf = Object.fromEntries(scenes.map((s) => [s.id, s.title]));
 const $ = (id) => document.getElementById(id);
 let current = memory.get(); // {code, key, title}
 let timer = null;
-let assignment = [];
+let assignment = []; // every item of the series (for the labels of typed systems)
+let series = [];
 
 function show() {
   showPanes("class-start", "class-live", current && {
@@ -49,11 +54,17 @@ async function open(code, key) {
   }
   current = { code: r.data.code, key, title: r.data.title };
   memory.set(current);
-  assignment = r.data.assignment;
+  useSeries(r.data.assignments);
   show();
   buildEditor();
   poll();
   return "open";
+}
+
+function useSeries(found) {
+  series = found;
+  assignment = series.flatMap((a) => a.items);
+  drawSeries();
 }
 
 $("create-form").addEventListener("submit", async (event) => {
@@ -65,11 +76,39 @@ $("create-form").addEventListener("submit", async (event) => {
     return;
   }
   await open(r.data.code, r.data.teacher_key);
+  // shown once: the server keeps only its hash
+  $("recovery-code").textContent = r.data.recovery_code;
+  $("recovery-link").textContent = `${window.location.origin}${r.data.teacher_link}`;
+  $("class-recovery").hidden = false;
 });
+
+$("recovery-done").addEventListener("click", () => {
+  $("class-recovery").hidden = true;
+  $("recovery-code").textContent = "";
+  $("recovery-link").textContent = "";
+});
+
+/** The instructor's key from the class code and its recovery code (POST …/recover), then the class opened. */
+async function recover(code, recovery) {
+  let r;
+  try {
+    r = await api("POST", `/api/classes/${encodeURIComponent(code)}/recover`, { body: { recovery_code: recovery } });
+  } catch {
+    $("start-status").textContent = "The server cannot be reached.";
+    return;
+  }
+  if (r.status !== 200) {
+    $("start-status").textContent = r.data?.detail || `Not opened (${r.status}).`;
+    return;
+  }
+  await open(r.data.code, r.data.teacher_key);
+}
 
 $("open-form").addEventListener("submit", async (event) => {
   event.preventDefault();
-  await open($("open-code").value, $("open-key").value.trim());
+  const recovery = $("open-recovery").value.trim();
+  if (recovery) await recover($("open-code").value.trim(), recovery);
+  else await open($("open-code").value, $("open-key").value.trim());
 });
 
 // ---- the live dashboard --------------------------------------------------------------------------
@@ -82,7 +121,10 @@ async function labelOf(entry) {
   } catch {
     /* the label falls back to the step's name */
   }
-  return { tex: stepTex(practice, entry.step, entry.coordinate), where: entry.scene ? titleOf[entry.scene] || entry.scene : entry.system };
+  const where = entry.scene ? titleOf[entry.scene] || entry.scene : entry.system;
+  // the assignment named only when the series has several (one assignment needs no name on a projector)
+  const of = series.length > 1 && series.find((a) => a.n === entry.assignment);
+  return { tex: stepTex(practice, entry.step, entry.coordinate), where: of ? `${where} · ${of.n}. ${of.title}` : where };
 }
 
 /** The steps, the one with the most students stuck first (then the most wrong answers; else in assignment order). */
@@ -93,11 +135,16 @@ function byStuck(steps) {
 }
 
 /** One click to the students concerned: a disclosure listing their names. */
-function whoList(names, what) {
+const opened = new Set(); // the lists of names the instructor opened: they stay open when the poll redraws
+function whoList(names, what, where) {
   if (!names.length) return null;
-  return el("details", { className: "now-who" },
+  const id = `${where}|${what}`;
+  const box = el("details", { className: "now-who" },
     el("summary", { text: `${what} (${names.length})` }),
     el("p", { className: "now-names", text: names.join(", ") }));
+  box.open = opened.has(id);
+  box.addEventListener("toggle", () => (box.open ? opened.add(id) : opened.delete(id)));
+  return box;
 }
 
 async function drawNow(summary) {
@@ -109,7 +156,7 @@ async function drawNow(summary) {
     stuck.replaceChildren(
       el("p", { className: "now-what" }, typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` })),
       el("p", { className: "now-figure", text: `${top.stuck} of ${summary.students} stuck · ${top.students_done} done` }),
-      whoList(top.students_stuck, "Show the students stuck"));
+      whoList(top.students_stuck, "Show the students stuck", "now"));
   } else {
     delete $("now-stuck").dataset.step;
     stuck.replaceChildren(el("p", { className: "help", text: "Nobody is stuck yet." }));
@@ -124,7 +171,7 @@ async function drawNow(summary) {
       el("p", { className: "now-what" }, el("strong", { text: mistake.name || mistakeWords(mistake.key) })),
       el("p", { className: "now-figure" }, `${mistake.count}× · in `, typeset(el("span"), label.tex),
         el("span", { className: "dash-where", text: ` ${label.where}${mistake.steps.length > 1 ? ` and ${mistake.steps.length - 1} more` : ""}` })),
-      whoList(mistake.students, "Show the students who made it"));
+      whoList(mistake.students, "Show the students who made it", "now"));
   } else {
     delete $("now-mistake").dataset.count;
     body.replaceChildren(el("p", { className: "help", text: "No named mistake so far." }));
@@ -151,7 +198,7 @@ async function drawSteps(summary) {
       el("p", { className: "dash-numbers",
         text: `${entry.stuck} stuck · ${entry.students_done} of ${summary.students} done · ${entry.correct} right · ${entry.incorrect} wrong`
           + (mistakes.length ? ` · most often: ${entry.mistake_names?.[mistakes[0][0]] || mistakeWords(mistakes[0][0])}` : "") }),
-      whoList(entry.students_stuck, "Show the students stuck")));
+      whoList(entry.students_stuck, "Show the students stuck", `step|${entry.assignment}|${entry.scene || entry.system}|${entry.step}|${entry.coordinate || ""}`)));
   }
   list.replaceChildren(...rows);
   if (!rows.length) list.replaceChildren(el("li", { className: "help", text: "No steps yet: set an assignment, or wait for the first answer." }));
@@ -170,10 +217,21 @@ async function drawMistakes(summary) {
       el("span", { className: "dash-count", text: `${mistake.count}×` }),
       el("strong", { text: mistake.name || mistakeWords(mistake.key) }),
       el("span", { text: " in " }), ...pieces,
-      whoList(mistake.students, "Show the students")));
+      whoList(mistake.students, "Show the students", `mistake|${mistake.key}`)));
   }
   $("dash-mistakes").replaceChildren(...rows);
   if (!rows.length) $("dash-mistakes").replaceChildren(el("li", { className: "help", text: "No named mistake so far." }));
+}
+
+const when = (iso) => (iso ? new Date(iso).toLocaleString([], { dateStyle: "medium", timeStyle: "short" }) : "—");
+
+function drawAssignments(summary) {
+  const body = $("dash-assignments").tBodies[0];
+  body.replaceChildren(...(summary.assignments || []).map((a) => el("tr", { "data-assignment": a.n },
+    el("th", { scope: "row", text: `${a.n}. ${a.title}` }),
+    el("td", { text: when(a.due) }),
+    el("td", { className: "dash-done", text: `${a.students_done.length} of ${summary.students}${a.students_done.length ? `: ${a.students_done.join(", ")}` : ""}` }),
+    el("td", { className: "dash-stuck", text: a.students_stuck.length ? a.students_stuck.join(", ") : "—" }))));
 }
 
 function drawStudents(students) {
@@ -206,6 +264,7 @@ async function poll() {
       await drawNow(s);
       await drawSteps(s);
       await drawMistakes(s);
+      drawAssignments(s);
       drawStudents(students.data.students);
     }
   } catch {
@@ -219,9 +278,8 @@ async function poll() {
 function buildEditor() {
   const list = $("assign-scenes");
   list.replaceChildren(...scenes.map((scene) => {
-    const chosen = assignment.find((i) => i.scene === scene.id);
+    // a new assignment starts with nothing ticked
     const box = el("input", { type: "checkbox", id: `assign-${scene.id}`, "data-scene": scene.id });
-    box.checked = Boolean(chosen);
     const steps = el("ul", { className: "assign-steps" });
     const item = el("li", { className: "assign-scene" }, box, el("label", { for: `assign-${scene.id}`, text: scene.title }), steps);
     const fill = async () => {
@@ -233,7 +291,6 @@ function buildEditor() {
       steps.replaceChildren(...practice.exercises.map((e, k) => {
         const id = `assign-${scene.id}-${k}`;
         const tick = el("input", { type: "checkbox", id, "data-step": e.step, "data-coordinate": e.coordinate || "" });
-        tick.checked = Boolean(chosen?.steps.some((s) => s.step === e.step && (s.coordinate || "") === (e.coordinate || "")));
         return el("li", {}, tick, typeset(el("label", { for: id }), stepTex(practice, e.step, e.coordinate)));
       }));
     };
@@ -243,35 +300,106 @@ function buildEditor() {
   }));
 }
 
+/** The series: one line per assignment (its number, title, due time, items), each with a Delete button. */
+function drawSeries() {
+  $("assign-series").replaceChildren(...series.map((a) => {
+    const remove = el("button", { type: "button", className: "danger", text: "Delete", "data-delete": a.n });
+    remove.addEventListener("click", async () => {
+      if (!window.confirm(`Delete assignment ${a.n}, "${a.title}", and every answer recorded for it?`)) return;
+      const r = await api("DELETE", `/api/classes/${current.code}/assignments/${a.n}`, { key: current.key });
+      $("assign-status").textContent = r.status === 204 ? `Deleted: ${a.title}.` : r.data?.detail || `Not deleted (${r.status}).`;
+      await reloadSeries();
+    });
+    const items = a.items.map((i) => (i.scene ? titleOf[i.scene] || i.scene : i.name)).join(", ");
+    return el("li", { className: "assign-entry", "data-assignment": a.n },
+      el("strong", { text: a.title }), ` · due ${when(a.due)} · ${items} `, remove);
+  }));
+  if (!series.length) $("assign-series").replaceChildren(el("li", { className: "help", text: "No assignment yet: students may practise any scene." }));
+}
+
+async function reloadSeries() {
+  const r = await api("GET", `/api/classes/${current.code}/assignments`, { key: current.key });
+  if (r.status === 200) useSeries(r.data.assignments);
+  poll();
+}
+
+/** The typed system of the editor, its steps shown to tick (from POST /api/practice, as a student's page loads them). */
+function typedSystem() {
+  const text = $("assign-system").value.trim();
+  if (!text) return null;
+  return { name: $("assign-system-name").value.trim(), system: JSON.parse(text) };
+}
+
+$("assign-system-load").addEventListener("click", async () => {
+  let item;
+  try {
+    item = typedSystem();
+  } catch (error) {
+    $("assign-status").textContent = `The system is not JSON: ${error.message}`;
+    return;
+  }
+  if (!item) return;
+  try {
+    const practice = await practiceOf(item);
+    $("assign-system-steps").replaceChildren(...practice.exercises.map((e, k) => {
+      const id = `assign-system-${k}`;
+      const tick = el("input", { type: "checkbox", id, "data-step": e.step, "data-coordinate": e.coordinate || "" });
+      return el("li", {}, tick, typeset(el("label", { for: id }), stepTex(practice, e.step, e.coordinate)));
+    }));
+  } catch (error) {
+    $("assign-status").textContent = error.message;
+  }
+});
+
+const ticked = (list) => [...list.querySelectorAll("input:checked")].map((t) => ({
+  step: t.dataset.step, ...(t.dataset.coordinate ? { coordinate: t.dataset.coordinate } : {}) }));
+
 $("assign-save").addEventListener("click", async () => {
   const items = [];
   for (const box of document.querySelectorAll("#assign-scenes > li > input[data-scene]")) {
-    if (!box.checked) continue;
-    const steps = [...box.parentElement.querySelectorAll(".assign-steps input:checked")].map((t) => ({
-      step: t.dataset.step, ...(t.dataset.coordinate ? { coordinate: t.dataset.coordinate } : {}) }));
-    items.push({ scene: box.dataset.scene, steps });
+    if (box.checked) items.push({ scene: box.dataset.scene, steps: ticked(box.parentElement.querySelector(".assign-steps")) });
   }
-  const r = await api("PUT", `/api/classes/${current.code}/assignment`, { key: current.key, body: { items } });
-  $("assign-status").textContent = r.status === 200 ? `Saved: ${items.length} scene${items.length === 1 ? "" : "s"}.` : r.data?.detail || `Not saved (${r.status}).`;
-  if (r.status === 200) {
-    assignment = r.data.assignment;
-    poll();
+  let typed = null;
+  try {
+    typed = typedSystem();
+  } catch (error) {
+    $("assign-status").textContent = `The system is not JSON: ${error.message}`;
+    return;
   }
+  if (typed) items.push({ ...typed, steps: ticked($("assign-system-steps")) });
+  const due = $("assign-due").value ? new Date($("assign-due").value).toISOString() : null;
+  const title = $("assign-title-input").value.trim() || `Assignment ${series.length + 1}`;
+  const r = await api("POST", `/api/classes/${current.code}/assignments`, { key: current.key, body: { title, due, items } });
+  if (r.status !== 201) {
+    $("assign-status").textContent = r.data?.detail || `Not added (${r.status}).`;
+    return;
+  }
+  $("assign-title-input").value = "";
+  $("assign-due").value = "";
+  $("assign-system").value = "";
+  $("assign-system-name").value = "";
+  $("assign-system-steps").replaceChildren();
+  buildEditor();
+  await reloadSeries();
+  $("assign-status").textContent = `Added: ${r.data.n}. ${r.data.title}.`;
 });
 
 // ---- the record ----------------------------------------------------------------------------------
 
-$("export-csv").addEventListener("click", async () => {
-  const res = await fetch(`/api/classes/${current.code}/export?format=csv`, { headers: { Authorization: `Bearer ${current.key}` } });
+async function download(path, name) {
+  const res = await fetch(path, { headers: { Authorization: `Bearer ${current.key}` } });
   if (!res.ok) {
     $("data-status").textContent = `The export failed (${res.status}).`;
     return;
   }
-  const link = el("a", { href: URL.createObjectURL(await res.blob()), download: `class-${current.code}.csv` });
+  const link = el("a", { href: URL.createObjectURL(await res.blob()), download: name });
   document.body.append(link);
   link.click();
   link.remove();
-});
+}
+
+$("export-csv").addEventListener("click", () => download(`/api/classes/${current.code}/export?format=csv`, `class-${current.code}.csv`));
+$("grades-csv").addEventListener("click", () => download(`/api/classes/${current.code}/grades?format=csv`, `grades-${current.code}.csv`));
 
 function forget() {
   clearTimeout(timer);
@@ -301,5 +429,12 @@ $("projector").addEventListener("click", () => project(!document.body.classList.
 project(Boolean(projector.get()));
 
 show();
-// a class this browser kept: reopened, and forgotten only when the server says the key no longer opens it
-if (current) open(current.code, current.key).then((how) => how === "refused" && forget());
+// a teacher link (#class=…&recover=…): the fragment is read here and wiped from the address at once
+const fragment = new URLSearchParams(window.location.hash.slice(1));
+if (fragment.get("class") && fragment.get("recover")) {
+  window.history.replaceState(null, "", window.location.pathname + window.location.search);
+  recover(fragment.get("class"), fragment.get("recover"));
+} else if (current) {
+  // a class this browser kept: reopened, and forgotten only when the server says the key no longer opens it
+  open(current.code, current.key).then((how) => how === "refused" && forget());
+}

@@ -88,7 +88,7 @@ def test_a_class_live(browser, live_server, classes, artifacts):
     teacher.check(f'#assign-{SCENE} ~ .assign-steps input[data-step="kinetic"]')
     teacher.check(f'#assign-{SCENE} ~ .assign-steps input[data-step="potential"]')
     teacher.click("#assign-save")
-    teacher.wait_for_function("document.getElementById('assign-status').textContent.startsWith('Saved')")
+    teacher.wait_for_function("document.getElementById('assign-status').textContent.startsWith('Added')")
 
     students = [_student(browser, live_server, code, name, device)
                 for name, device in (("Ada", PHONE), ("Bo", DESK), ("Cy", DESK))]

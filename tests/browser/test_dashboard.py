@@ -47,15 +47,17 @@ def classes(tmp_path_factory):
 
 def _scripted_class(room: Classroom) -> tuple[str, str, list[store.Access]]:
     db = room.db
-    code, key = store.create_class(db, "Mechanics II, Tuesday")
+    code, key, _recovery = store.create_class(db, "Mechanics II, Tuesday")
     items = [{"item": "double-pendulum", "system": None, "parameters": {},
               "steps": [{"step": "kinetic", "coordinate": None}, {"step": "potential", "coordinate": None}]},
              {"item": "simple-pendulum", "system": None, "parameters": {},
               "steps": [{"step": "potential", "coordinate": None}]}]
-    store.set_assignment(db, store.access(db, code, key).class_id, items)
+    class_id = store.access(db, code, key).class_id
+    store.set_first(db, class_id, items)
+    first = store.series(db, class_id)[0]["id"]
     people = [store.join(db, code, name)[1] for name in ("Ada", "Bo", "Cy", "Di", "Ed", "Flo")]
     wrong = lambda who, item, step, mistake: store.record(db, who, item, step, None, "incorrect", mistake[0], "x",  # noqa: E731
-                                                          mistake[1])
+                                                          mistake[1], assignment_id=first)
     for who in people[:4]:
         wrong(who, "double-pendulum", "potential", SIGN)
     for who in people[4:]:
@@ -63,7 +65,7 @@ def _scripted_class(room: Classroom) -> tuple[str, str, list[store.Access]]:
     for who in people[:2]:
         wrong(who, "double-pendulum", "kinetic", CROSS)
     for who in people[2:5]:
-        store.record(db, who, "double-pendulum", "kinetic", None, "correct", None, "T")
+        store.record(db, who, "double-pendulum", "kinetic", None, "correct", None, "T", assignment_id=first)
     return code, key, people
 
 
@@ -117,7 +119,8 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
     assert page.locator(".dash-mistake").first.locator("strong").inner_text() == "The sign of U"
 
     # live: an answer recorded now shows without a reload (Ada gets U right: 3 stuck)
-    store.record(room.db, people[0], "double-pendulum", "potential", None, "correct", None, "U")
+    first = store.series(room.db, people[0].class_id)[0]["id"]
+    store.record(room.db, people[0], "double-pendulum", "potential", None, "correct", None, "U", assignment_id=first)
     page.wait_for_function("document.querySelector('#now-stuck .now-figure')?.textContent.startsWith('3 of 6 stuck')",
                            timeout=10_000)
 

@@ -70,13 +70,14 @@ def test_a_class_from_creation_to_deletion(client, classes):
     summary = client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).json()
     assert summary["students"] == 2 and summary["attempts"] == 3
     kinetic, potential = summary["steps"]
-    assert kinetic == {"scene": SCENE, "step": "kinetic", "coordinate": None, "correct": 1, "incorrect": 2,
+    assert kinetic == {"assignment": 1, "scene": SCENE, "step": "kinetic", "coordinate": None, "correct": 1, "incorrect": 2,
                        "students_done": 1, "mistakes": {"missing_half": 2},
                        "mistake_names": {"missing_half": "the ½ of ½ m v² left out"},
                        "stuck": 1, "students_stuck": ["Bo"]}  # Ada got it right after her mistake
     assert potential["correct"] == potential["incorrect"] == 0
     assert summary["mistakes"] == [{"key": "missing_half", "name": "the ½ of ½ m v² left out", "count": 2,
-                                    "steps": [{"scene": SCENE, "step": "kinetic", "coordinate": None, "count": 2}],
+                                    "steps": [{"assignment": 1, "scene": SCENE, "step": "kinetic", "coordinate": None,
+                                               "count": 2}],
                                     "students": ["Ada", "Bo"]}]
 
     rows = client.get(f"/api/classes/{code}/students", headers=bearer(teacher)).json()["students"]
@@ -163,7 +164,7 @@ def test_refusals_say_what_is_wrong(client, classes):
                     json={"system": "spring", "step": "acceleration", "coordinate": "x", "answer": "-k*x/m"})
     assert r.status_code == 200 and r.json()["verdict"] == "correct", r.text
     summary = client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).json()
-    assert summary["steps"][1] | {"mistakes": None} == {"system": "spring", "step": "acceleration", "coordinate": "x",
+    assert summary["steps"][1] | {"mistakes": None} == {"assignment": 1, "system": "spring", "step": "acceleration", "coordinate": "x",
                                                         "correct": 1, "incorrect": 0, "students_done": 1,
                                                         "mistakes": None, "mistake_names": {},
                                                         "stuck": 0, "students_stuck": []}
@@ -200,7 +201,7 @@ def test_a_key_is_compared_as_a_digest_in_constant_time(monkeypatch, tmp_path, s
     from app.service.classroom import store
 
     room = classroom(services.checking, "sqlite", tmp_path, None)
-    code, teacher = store.create_class(room.db, "timing")
+    code, teacher, _recovery = store.create_class(room.db, "timing")
     compared = []
     real = hmac.compare_digest
     monkeypatch.setattr(store.hmac, "compare_digest", lambda a, b: compared.append((len(a), len(b))) or real(a, b))

@@ -54,7 +54,7 @@ def test_the_summary_adds_up_while_answers_arrive(client, services, tmp_path, re
     stop = threading.Event()
     failures: list[BaseException] = []
     try:
-        code, teacher = store.create_class(room.db, "Snapshots")
+        code, teacher, _recovery = store.create_class(room.db, "Snapshots")
         headers = {"Authorization": f"Bearer {teacher}"}
 
         def write(w: int) -> None:

@@ -5,12 +5,16 @@ An item is ``{"scene": id}`` or ``{"system": <as POST /api/derive>, "name": labe
 (``[{"step", "coordinate"}]``; for a scene, none means every step of its practice) and ``parameters``
 (``{name: value}``, shown to the students).  Refusals are located under ``items.<i>``.  Runs in a thread:
 a scene's exercises come from its cached derivation.
+
+A class holds a series of assignments, each with its items; ``find_target`` says which assignment and item of
+the series a student's check (or shown step) is for.
 """
 
 from __future__ import annotations
 
 import json
 import math
+from datetime import UTC, datetime
 from typing import Any
 
 from app.engine.check import PER_COORDINATE, STEPS
@@ -126,3 +130,44 @@ def find_item(
     if item["steps"] and not any(_same(s, step, coordinate) for s in item["steps"]):
         raise Refused(f"step: not in the assignment for {wanted}; assigned: {_shown(item['steps'])}", step, ("step",))
     return item
+
+
+def checked_due(due: datetime | None, kept: str | None = None) -> datetime | None:
+    """A due time as stored (naive UTC); a time already past is refused, unless it is the one already stored."""
+    if due is None:
+        return None
+    stored = due.astimezone(UTC).replace(tzinfo=None)
+    if kept is not None and stored.isoformat() + "Z" == kept:
+        return stored
+    if stored <= datetime.now(UTC).replace(tzinfo=None):
+        raise Refused(f"due: {stored.isoformat()}Z is already past; give a time to come (ISO 8601 with its zone, "
+                      "e.g. 2026-12-04T17:00:00Z)", "", ("due",))
+    return stored
+
+
+def find_target(
+    series: list[dict[str, Any]], target: dict[str, Any], step: str, coordinate: str | None
+) -> tuple[dict[str, Any] | None, dict[str, Any]]:
+    """The assignment of the series (None when nothing is assigned) and its item a check is for.
+
+    ``target["assignment"]`` (a number) names the assignment; without it, the first assignment of the series
+    that holds the item and step."""
+    n = target.get("assignment")
+    if n is not None:
+        chosen = [a for a in series if a["n"] == n]
+        if not chosen:
+            have = f"1 to {len(series)}" if series else "none yet"
+            raise Refused(f"assignment: this class has no assignment {n}; its assignments are numbered {have}",
+                          str(n), ("assignment",))
+        return chosen[0], find_item(chosen[0]["items"], target, step, coordinate)
+    if not any(a["items"] for a in series):  # nothing assigned: any scene
+        return None, find_item([], target, step, coordinate)
+    for each in series:
+        try:
+            return each, find_item(each["items"], target, step, coordinate)
+        except Refused:
+            continue
+    # in none of them: the refusal says what is assigned over the whole series
+    find_item([i for a in series for i in a["items"]], target, step, coordinate)
+    raise Refused(f"step: not in the assignments; assigned: {_shown([s for a in series for i in a['items'] for s in i['steps']])}",
+                  step, ("step",))

@@ -27,7 +27,14 @@ from alembic.config import Config
 from sqlalchemy import Engine, create_engine, delete, event, select
 from sqlalchemy.orm import Session, sessionmaker
 
-from app.service.classroom.models import AssignmentRow, AttemptRow, ClassRow, StudentRow
+from app.service.classroom.models import (
+    AssignmentRow,
+    AttemptRow,
+    ClassAssignmentRow,
+    ClassRow,
+    HintRow,
+    StudentRow,
+)
 from app.settings import Settings
 
 MIGRATIONS = Path(__file__).resolve().parent / "migrations"
@@ -110,7 +117,7 @@ def _nothing() -> Iterator[None]:
 
 def delete_class(session: Session, class_id: int) -> None:
     """Remove a class and everything recorded for it (children first: no reliance on ON DELETE CASCADE)."""
-    for table in (AttemptRow, StudentRow, AssignmentRow):
+    for table in (HintRow, AttemptRow, StudentRow, AssignmentRow, ClassAssignmentRow):
         session.execute(delete(table).where(table.class_id == class_id))
     session.execute(delete(ClassRow).where(ClassRow.id == class_id))
 

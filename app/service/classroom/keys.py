@@ -7,11 +7,19 @@ in the middle are forgiven.  A key is 32 random bytes (URL-safe base64, 43
 characters); the database keeps only its SHA-256, so a copy of the database
 opens no class.  A key of that strength needs no slow hash: nothing can be
 guessed from the digest.
+
+A recovery code is the instructor's way back into a class from another machine: ``RECOVERY_LENGTH``
+characters of the same alphabet in groups of four (18^24 ≈ 1.3 × 10^30, about 100 bits), shown once when the
+class is created.  The instructor's key of a class with a recovery code is derived from it (an HMAC of the
+class code under the recovery code), so the code gives back the very key the first browser holds, while the
+database keeps only the SHA-256 of each.
 """
 
 from __future__ import annotations
 
+import base64
 import hashlib
+import hmac
 import secrets
 
 ALPHABET = "ACEFHKMNPRTWXY3479"
@@ -20,6 +28,8 @@ KEY_BYTES = 32
 MAX_KEY_LENGTH = 100
 # the digest compared when the code names no class: the same work as a real comparison
 NO_CLASS_HASH = hashlib.sha256(b"no class has this code").hexdigest()
+RECOVERY_LENGTH = 24
+RECOVERY_GROUP = 4
 
 
 def new_code() -> str:
@@ -42,3 +52,23 @@ def digest(key: str) -> str:
     """What the database keeps of a key."""
     return hashlib.sha256(key.encode("utf-8", "surrogatepass")).hexdigest()
 
+
+
+def new_recovery_code() -> str:
+    """A recovery code as shown: six groups of four characters joined by dashes."""
+    raw = "".join(secrets.choice(ALPHABET) for _ in range(RECOVERY_LENGTH))
+    return "-".join(raw[i : i + RECOVERY_GROUP] for i in range(0, RECOVERY_LENGTH, RECOVERY_GROUP))
+
+
+def normal_recovery(text: str) -> str | None:
+    """The recovery code without its dashes and spaces, upper case; None when it cannot be one."""
+    code = "".join(text.split()).replace("-", "").upper()
+    if len(code) != RECOVERY_LENGTH or any(c not in ALPHABET for c in code):
+        return None
+    return code
+
+
+def teacher_key_from(recovery: str, class_code: str) -> str:
+    """The instructor's key of a class, from its recovery code (normalised) and its code: HMAC-SHA256."""
+    mac = hmac.new(recovery.encode(), b"lagrange teacher key " + class_code.encode(), hashlib.sha256).digest()
+    return base64.urlsafe_b64encode(mac).decode().rstrip("=")

@@ -3,11 +3,13 @@
 A class has a short public ``code`` and an instructor's key kept only as its
 SHA-256 (``teacher_hash``); each student a pseudonym and a key kept the same
 way.  The assignment is a list of items (a scene, or a system the instructor
-declared), each with its steps.  An attempt is one judged answer: who, which
+declared), each with its steps; a class holds a series of assignments (``ClassAssignmentRow``: a title, an
+optional due time, a place in the series), each with its items.  An attempt is one judged answer: who, which
 item and step, the verdict, the named mistake when the checker found one, the
 answer's text and when, and, when the page sent one, the attempt's id (unique
-per student: a retry records nothing new) with the verdict it was answered.
-Times are naive UTC.
+per student: a retry records nothing new) with the verdict it was answered, and the assignment it was for.
+A hint is a step's answer shown to a student ("Show this step"), once per student, assignment and step.
+A class's recovery code (shown once at creation) is kept as its SHA-256 only.  Times are naive UTC.
 """
 
 from __future__ import annotations
@@ -30,6 +32,19 @@ class ClassRow(Base):
     title: Mapped[str] = mapped_column(String(200))
     teacher_hash: Mapped[str] = mapped_column(String(64))
     created_at: Mapped[datetime] = mapped_column(DateTime, index=True)
+    # the recovery code's SHA-256 (classes created before migration 0005 have none)
+    recovery_hash: Mapped[str | None] = mapped_column(String(64), nullable=True)
+
+
+class ClassAssignmentRow(Base):
+    __tablename__ = "class_assignments"
+    __table_args__ = (UniqueConstraint("class_id", "position", name="uq_class_assignments_position"),)
+
+    id: Mapped[int] = mapped_column(Integer, primary_key=True)
+    class_id: Mapped[int] = mapped_column(ForeignKey("classes.id", ondelete="CASCADE"), index=True)
+    position: Mapped[int] = mapped_column(Integer)  # 0, 1, 2, ...: the series' order (its number is position + 1)
+    title: Mapped[str] = mapped_column(String(200))
+    due: Mapped[datetime | None] = mapped_column(DateTime, nullable=True)
 
 
 class StudentRow(Base):
@@ -44,11 +59,14 @@ class StudentRow(Base):
 
 
 class AssignmentRow(Base):
+    """One item of an assignment of the series (the table keeps its first name: it held the single assignment)."""
+
     __tablename__ = "assignments"
-    __table_args__ = (UniqueConstraint("class_id", "position", name="uq_assignments_class_position"),)
+    __table_args__ = (UniqueConstraint("assignment_id", "position", name="uq_assignments_assignment_position"),)
 
     id: Mapped[int] = mapped_column(Integer, primary_key=True)
     class_id: Mapped[int] = mapped_column(ForeignKey("classes.id", ondelete="CASCADE"), index=True)
+    assignment_id: Mapped[int] = mapped_column(ForeignKey("class_assignments.id", ondelete="CASCADE"), index=True)
     position: Mapped[int] = mapped_column(Integer)
     item: Mapped[str] = mapped_column(String(40))  # a scene's id, or the name of the instructor's system
     system: Mapped[str | None] = mapped_column(Text, nullable=True)  # the declared system (JSON), for a system
@@ -63,6 +81,8 @@ class AttemptRow(Base):
     id: Mapped[int] = mapped_column(Integer, primary_key=True)
     class_id: Mapped[int] = mapped_column(ForeignKey("classes.id", ondelete="CASCADE"), index=True)
     student_id: Mapped[int] = mapped_column(ForeignKey("students.id", ondelete="CASCADE"), index=True)
+    # the assignment of the series it answered (None: practice with nothing assigned, or before migration 0005)
+    assignment_id: Mapped[int | None] = mapped_column(ForeignKey("class_assignments.id"), nullable=True, index=True)
     item: Mapped[str] = mapped_column(String(40))
     step: Mapped[str] = mapped_column(String(20))
     coordinate: Mapped[str | None] = mapped_column(String(40), nullable=True)
@@ -74,3 +94,21 @@ class AttemptRow(Base):
     # the id the student's page gave this press of Check (a retry sends it again), and the verdict answered
     attempt_id: Mapped[str | None] = mapped_column(String(64), nullable=True)
     response: Mapped[str | None] = mapped_column(Text, nullable=True)
+
+
+class HintRow(Base):
+    """A step's answer shown to a student ("Show this step" on /join): once per student, assignment and step."""
+
+    __tablename__ = "hints"
+    __table_args__ = (
+        UniqueConstraint("student_id", "assignment_id", "item", "step", "coordinate", name="uq_hints_student_step"),
+    )
+
+    id: Mapped[int] = mapped_column(Integer, primary_key=True)
+    class_id: Mapped[int] = mapped_column(ForeignKey("classes.id", ondelete="CASCADE"), index=True)
+    student_id: Mapped[int] = mapped_column(ForeignKey("students.id", ondelete="CASCADE"), index=True)
+    assignment_id: Mapped[int] = mapped_column(ForeignKey("class_assignments.id", ondelete="CASCADE"), index=True)
+    item: Mapped[str] = mapped_column(String(40))
+    step: Mapped[str] = mapped_column(String(20))
+    coordinate: Mapped[str] = mapped_column(String(40))  # "" for a step of no coordinate (a unique key compares it)
+    at: Mapped[datetime] = mapped_column(DateTime)

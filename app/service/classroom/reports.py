@@ -1,4 +1,5 @@
-"""What an instructor reads of a class: the summary per step, each student's progress, the CSV export.
+"""What an instructor reads of a class: the summary per assignment and step, each student's progress, the CSV
+export of every attempt.  (The gradebook, scores per student and assignment, is ``grades``.)
 
 Counted in the database (GROUP BY) in one statement, so a dashboard polling
 every few seconds reads a few rows per student and step, not every attempt,
@@ -20,24 +21,29 @@ from app.service.classroom.database import Database
 from app.service.classroom.models import AttemptRow, StudentRow
 from app.service.classroom.store import DONE
 
-Key = tuple[str, str, str | None]  # (item, step, coordinate)
+Key = tuple[int | None, str, str, str | None]  # (assignment's id, item, step, coordinate)
 CSV_COLUMNS = ("time", "student", "item", "step", "coordinate", "verdict", "mistake", "answer")
 FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
 
 
-def _assigned_keys(items: list[dict[str, Any]]) -> list[Key]:
+def assigned_keys(series: list[dict[str, Any]]) -> list[Key]:
+    """Every assigned step of the series, in order."""
     return [
-        (item.get("scene") or item["name"], s["step"], s.get("coordinate"))
-        for item in items
+        (each["id"], item.get("scene") or item["name"], s["step"], s.get("coordinate"))
+        for each in series
+        for item in each["items"]
         for s in item["steps"]
     ]
 
 
-def _step_entry(key: Key, items: list[dict[str, Any]]) -> dict[str, Any]:
-    item, step, coordinate = key
-    kind = "scene" if any(i.get("scene") == item for i in items) or not items else "system"
-    return {kind: item, "step": step, "coordinate": coordinate, "correct": 0, "incorrect": 0, "students_done": 0,
-            "mistakes": {}, "mistake_names": {}}
+def _step_entry(key: Key, series: list[dict[str, Any]]) -> dict[str, Any]:
+    assignment_id, item, step, coordinate = key
+    items = [i for a in series if a["id"] == assignment_id for i in a["items"]]
+    systems = {i["name"] for i in items if i.get("system") is not None}
+    kind = "system" if item in systems else "scene"
+    number = next((a["n"] for a in series if a["id"] == assignment_id), None)
+    return {"assignment": number, kind: item, "step": step, "coordinate": coordinate, "correct": 0, "incorrect": 0,
+            "students_done": 0, "mistakes": {}, "mistake_names": {}}
 
 
 def _tallies(db: Database, class_id: int) -> list[Any]:
@@ -49,41 +55,57 @@ def _tallies(db: Database, class_id: int) -> list[Any]:
     or in SQLite's autocommit reads, may each see a different state while answers arrive)."""
     with db.session() as session:
         return list(session.execute(
-            select(StudentRow.id, StudentRow.name, StudentRow.joined_at, AttemptRow.item, AttemptRow.step,
-                   AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake, func.count(AttemptRow.id),
-                   func.max(AttemptRow.mistake_name), func.max(AttemptRow.at))
+            select(StudentRow.id, StudentRow.name, StudentRow.joined_at, AttemptRow.assignment_id, AttemptRow.item,
+                   AttemptRow.step, AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake,
+                   func.count(AttemptRow.id), func.max(AttemptRow.mistake_name), func.max(AttemptRow.at))
             .select_from(StudentRow)
             .outerjoin(AttemptRow, AttemptRow.student_id == StudentRow.id)
             .where(StudentRow.class_id == class_id)
-            .group_by(StudentRow.id, StudentRow.name, StudentRow.joined_at, AttemptRow.item, AttemptRow.step,
-                      AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake)
+            .group_by(StudentRow.id, StudentRow.name, StudentRow.joined_at, AttemptRow.assignment_id, AttemptRow.item,
+                      AttemptRow.step, AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake)
         ).all())
 
 
 def _item_of(entry: dict[str, Any]) -> dict[str, Any]:
-    return {k: entry[k] for k in ("scene", "system") if k in entry} | {"step": entry["step"],
-                                                                      "coordinate": entry["coordinate"]}
+    return {k: entry[k] for k in ("assignment", "scene", "system") if k in entry} | {
+        "step": entry["step"], "coordinate": entry["coordinate"]}
 
 
-def summary(db: Database, class_id: int, items: list[dict[str, Any]]) -> dict[str, Any]:
-    """``{"students", "attempts", "steps": [...], "mistakes": [...]}`` from one snapshot.
+def _per_assignment(
+    series: list[dict[str, Any]], names: dict[int, str], tried: dict[Key, set[int]], finished: dict[Key, set[int]]
+) -> list[dict[str, Any]]:
+    """Each assignment of the series: its steps, the students done with all of them, and those stuck on one."""
+    out = []
+    for each in series:
+        keys = [k for k in assigned_keys([each])]
+        done = {s for s in names if keys and all(s in finished[k] for k in keys)}
+        stuck = {s for k in keys for s in tried[k] - finished[k]}
+        out.append({"n": each["n"], "title": each["title"], "due": each["due"], "steps": len(keys),
+                    "students_done": sorted(names[s] for s in done),
+                    "students_stuck": sorted(names[s] for s in stuck)})
+    return out
 
-    ``steps``: the assigned steps first (in order), then any other tried; each with its counts, the students
-    stuck on it (tried, not done yet) and its named mistakes.  ``mistakes``: each named mistake totalled over
-    every step and scene it was made in (mistakes are totalled by their words, so the same slip in two scenes
-    is one line), most common first, with the steps and the students concerned."""
+
+def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[str, Any]:
+    """``{"students", "attempts", "assignments": [...], "steps": [...], "mistakes": [...]}`` from one snapshot.
+
+    ``assignments``: each of the series with the students done with it and those stuck on one of its steps.
+    ``steps``: the assigned steps first (in the series' order), then any other tried; each with its assignment's
+    number, its counts, the students stuck on it (tried, not done yet) and its named mistakes.  ``mistakes``: each
+    named mistake totalled over every step and scene it was made in (mistakes are totalled by their words, so the
+    same slip in two scenes is one line), most common first, with the steps and the students concerned."""
     rows = _tallies(db, class_id)
-    steps: dict[Key, dict[str, Any]] = {key: _step_entry(key, items) for key in _assigned_keys(items)}
+    steps: dict[Key, dict[str, Any]] = {key: _step_entry(key, series) for key in assigned_keys(series)}
     names = {student_id: name for student_id, name, *_ in rows}
     tried: dict[Key, set[int]] = defaultdict(set)
     finished: dict[Key, set[int]] = defaultdict(set)
     by_mistake: dict[Key, dict[str, set[int]]] = defaultdict(lambda: defaultdict(set))
     attempts = 0
-    for student_id, _name, _joined, item, step, coordinate, verdict, mistake, n, text, _last in rows:
+    for student_id, _name, _joined, assignment_id, item, step, coordinate, verdict, mistake, n, text, _last in rows:
         if item is None:  # a student who has not answered yet
             continue
-        key = (item, step, coordinate)
-        entry = steps.setdefault(key, _step_entry(key, items))
+        key = (assignment_id, item, step, coordinate)
+        entry = steps.setdefault(key, _step_entry(key, series))
         entry["correct" if verdict in DONE else "incorrect"] += n
         attempts += n
         tried[key].add(student_id)
@@ -113,28 +135,34 @@ def summary(db: Database, class_id: int, items: list[dict[str, Any]]) -> dict[st
     for total in mistakes:
         total["students"] = sorted(names[s] for s in total["students"])
         total["steps"].sort(key=lambda s: -s["count"])
-    return {"students": len(names), "attempts": attempts, "steps": list(steps.values()), "mistakes": mistakes}
+    return {"students": len(names), "attempts": attempts, "assignments": _per_assignment(series, names, tried, finished),
+            "steps": list(steps.values()), "mistakes": mistakes}
 
 
-def students(db: Database, class_id: int, items: list[dict[str, Any]]) -> dict[str, Any]:
-    """Each student's progress (from one snapshot): attempts, steps done of the assignment's, and per step
-    tried its tally."""
+def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[str, Any]:
+    """Each student's progress (from one snapshot): attempts, steps done of the series', and per step tried its
+    tally (with its assignment's number)."""
     people: dict[int, tuple[str, Any]] = {}
     per: dict[int, dict[Key, dict[str, Any]]] = defaultdict(dict)
-    for student_id, name, joined, item, step, coordinate, verdict, _mistake, n, _text, last in _tallies(db, class_id):
+    number = {a["id"]: a["n"] for a in series}
+    for student_id, name, joined, assignment_id, item, step, coordinate, verdict, _mistake, n, _text, last in (
+        _tallies(db, class_id)
+    ):
         people[student_id] = (name, joined)
         if item is None:
             continue
-        tally = per[student_id].setdefault((item, step, coordinate), {
-            "item": item, "step": step, "coordinate": coordinate, "attempts": 0, "done": False, "last": last})
+        tally = per[student_id].setdefault((assignment_id, item, step, coordinate), {
+            "assignment": number.get(assignment_id), "item": item, "step": step, "coordinate": coordinate,
+            "attempts": 0, "done": False, "last": last, "_key": (assignment_id, item, step, coordinate)})
         tally["attempts"] += n
         tally["done"] = tally["done"] or verdict in DONE
         tally["last"] = max(tally["last"], last)
-    assigned = set(_assigned_keys(items))
+    assigned = set(assigned_keys(series))
     rows = []
     for student_id, (name, joined) in sorted(people.items(), key=lambda p: (p[1][1], p[0])):
-        steps = [t | {"last": t["last"].isoformat() + "Z"} for t in per.get(student_id, {}).values()]
-        finished = {(s["item"], s["step"], s["coordinate"]) for s in steps if s["done"]}
+        tallies = list(per.get(student_id, {}).values())
+        finished = {t["_key"] for t in tallies if t["done"]}
+        steps = [{k: v for k, v in t.items() if k != "_key"} | {"last": t["last"].isoformat() + "Z"} for t in tallies]
         rows.append({
             "name": name,
             "joined": joined.isoformat() + "Z",

@@ -1,4 +1,5 @@
-"""``Classroom``: what the class routes call — create, join, check and record, report, assign, delete.
+"""``Classroom``: what the class routes call — create, recover, join, check and record, show a step, report,
+grade, assign (a series of assignments), delete.
 
 Every database call runs in a thread (``asyncio.to_thread``); the event loop
 only awaits.  A student's check is practice mode's check (app/service/checking.py,
@@ -11,6 +12,7 @@ from __future__ import annotations
 
 import asyncio
 from collections.abc import Callable
+from datetime import datetime
 from typing import Any, TypeVar
 
 import orjson
@@ -19,8 +21,8 @@ from app.engine.check import PER_COORDINATE
 from app.engine.mistakes import RULES
 from app.errors import NoKey, Refused, WrongKey
 from app.service.checking import Checking, declared
-from app.service.classroom import keys, reports, store
-from app.service.classroom.assignments import checked_items, find_item
+from app.service.classroom import grades, keys, reports, store
+from app.service.classroom.assignments import checked_due, checked_items, find_target
 from app.service.classroom.database import Database
 from app.service.classroom.rates import Window
 from app.service.classroom.shared_rates import SharedWindow, Store
@@ -97,24 +99,66 @@ class Classroom:
             raise WrongKey("answers are recorded for students: join the class to get a student key")
         return who
 
-    def _with_items(self, db: Database, code: str, key: str | None, teacher: bool):
+    def _with_series(self, db: Database, code: str, key: str | None, teacher: bool):
         who = self._who(db, code, key, teacher)
-        return who, store.assignment(db, who.class_id)
+        return who, store.series(db, who.class_id)
 
     # ---- instructor ----------------------------------------------------------------------------
     async def create(self, title: str) -> dict[str, str]:
-        code, teacher_key = await self._db(store.create_class, title)
-        return {"code": code, "teacher_key": teacher_key}
+        code, teacher_key, recovery = await self._db(store.create_class, title)
+        # the teacher link carries the recovery code in its fragment: a browser never sends a fragment to a server
+        return {"code": code, "teacher_key": teacher_key, "recovery_code": recovery,
+                "teacher_link": f"/teach#class={code}&recover={recovery}"}
+
+    async def recover(self, code: str, recovery: str, client: str, address: str) -> dict[str, str]:
+        """The instructor's key of a class again, from its recovery code; tries count as joins do."""
+        await self._count_join(code, client, address)
+        who, teacher_key = await self._db(store.recover, code, recovery)
+        return {"code": who.code, "title": who.title, "teacher_key": teacher_key}
 
     async def assign(self, code: str, key: str | None, items: list[dict[str, Any]]) -> dict[str, Any]:
+        """Set the items of the first assignment of the series (the single assignment of before)."""
         who = await self._db(self._who, code, key, True)
         stored = await asyncio.to_thread(checked_items, self.checking, items)
-        await self._db(store.set_assignment, who.class_id, stored)
+        await self._db(store.set_first, who.class_id, stored)
         return {"code": who.code, "assignment": await self._db(store.assignment, who.class_id)}
 
+    async def assignments(self, code: str, key: str | None) -> dict[str, Any]:
+        who, found = await self._db(self._with_series, code, key, True)
+        return {"code": who.code, "assignments": public(found)}
+
+    async def add_assignment(
+        self, code: str, key: str | None, title: str, due: datetime | None, items: list[dict[str, Any]]
+    ) -> dict[str, Any]:
+        who = await self._db(self._who, code, key, True)
+        when = checked_due(due)
+        stored = await asyncio.to_thread(checked_items, self.checking, items)
+        n = await self._db(store.add_assignment, who.class_id, title, when, stored)
+        return public(await self._db(store.series, who.class_id))[n - 1]
+
+    async def replace_assignment(
+        self, code: str, key: str | None, n: int, title: str | None, due: datetime | None, items: list[dict[str, Any]]
+    ) -> dict[str, Any]:
+        who, found = await self._db(self._with_series, code, key, True)
+        kept = next((a["due"] for a in found if a["n"] == n), None)
+        when = checked_due(due, kept)
+        stored = await asyncio.to_thread(checked_items, self.checking, items)
+        await self._db(store.replace_assignment, who.class_id, n, title, when, stored)
+        return public(await self._db(store.series, who.class_id))[n - 1]
+
+    async def delete_assignment(self, code: str, key: str | None, n: int) -> None:
+        who = await self._db(self._who, code, key, True)
+        await self._db(store.delete_assignment, who.class_id, n)
+
     def _report(self, db: Database, code: str, key: str | None, report: Callable[..., T]) -> T:
-        who, items = self._with_items(db, code, key, True)
-        return report(db, who.class_id, items)
+        who, found = self._with_series(db, code, key, True)
+        return report(db, who.class_id, found)
+
+    async def grades(self, code: str, key: str | None) -> dict[str, Any]:
+        return await self._db(self._report, code, key, grades.gradebook)
+
+    async def grades_csv(self, code: str, key: str | None) -> bytes:
+        return grades.gradebook_csv(await self.grades(code, key))
 
     async def summary(self, code: str, key: str | None) -> dict[str, Any]:
         return await self._db(self._report, code, key, reports.summary)
@@ -130,7 +174,7 @@ class Classroom:
         await self._db(store.delete_whole_class, who.class_id)
 
     # ---- students ------------------------------------------------------------------------------
-    async def join(self, code: str, name: str, client: str, address: str) -> dict[str, Any]:
+    async def _count_join(self, code: str, client: str, address: str) -> None:
         # a session joins at most client_joins_per_minute times; a request that counts as one of its address's
         # shared keys (no cookie: ``new:``, or beyond the address's sessions this minute: ``many:``) counts
         # against its network, which may bring a whole class (class_joins_per_minute)
@@ -139,9 +183,13 @@ class Classroom:
         else:
             await self.client_joins.take(client)
         await self.class_joins.take(keys.normal_code(code) or "?")
+
+    async def join(self, code: str, name: str, client: str, address: str) -> dict[str, Any]:
+        await self._count_join(code, client, address)
         student_key, who = await self._db(store.join, code, name)
-        items = await self._db(store.assignment, who.class_id)
-        return {"student_key": student_key, "code": who.code, "title": who.title, "name": name, "assignment": items}
+        found = await self._db(store.series, who.class_id)
+        return {"student_key": student_key, "code": who.code, "title": who.title, "name": name,
+                "assignment": found[0]["items"] if found else [], "assignments": public(found)}
 
     async def view(self, code: str, key: str | None) -> dict[str, Any]:
         """The class as its key sees it: title and assignment, and for a student their own progress."""
@@ -150,11 +198,12 @@ class Classroom:
 
         def read(db: Database) -> dict[str, Any]:
             who = store.access(db, code, key)
-            items = store.assignment(db, who.class_id)
-            seen: dict[str, Any] = {"code": who.code, "title": who.title, "assignment": items}
+            found = store.series(db, who.class_id)
+            seen: dict[str, Any] = {"code": who.code, "title": who.title,
+                                    "assignment": found[0]["items"] if found else [], "assignments": public(found)}
             if who.teacher:
                 return seen | {"role": "instructor"}
-            progress = [s for s in reports.students(db, who.class_id, items)["students"] if s["name"] == who.name]
+            progress = [s for s in reports.students(db, who.class_id, found)["students"] if s["name"] == who.name]
             return seen | {"role": "student", "name": who.name, "progress": progress[0] if progress else None}
 
         return await asyncio.to_thread(read, self.db)
@@ -173,8 +222,8 @@ class Classroom:
 
         A press of Check the page already sent (the same ``attempt_id``) gets the verdict first answered for it,
         judged and recorded once."""
-        who, items = await self._db(self._with_items, code, key, False)
-        item = find_item(items, target, step, coordinate)
+        who, found = await self._db(self._with_series, code, key, False)
+        assigned, item = find_target(found, target, step, coordinate)
         name = item["name"] if item.get("system") is not None else item["scene"]
         recorded = coordinate if step in PER_COORDINATE else None
         this = (name, step, recorded, answer.strip())
@@ -192,9 +241,29 @@ class Classroom:
         raced = await self._db(
             store.record, who, name, step, recorded, result["verdict"], named_mistake(result), answer.strip(),
             mistake_text(result), attempt_id, body if attempt_id is not None else None,
+            assigned["id"] if assigned else None,
         )
         return body if raced is None else _same_attempt(raced, this, attempt_id or "")
+
+    async def show_step(
+        self, code: str, key: str | None, target: dict[str, Any], step: str, coordinate: str | None
+    ) -> dict[str, Any]:
+        """Record that a student was shown a step's answer ("Show this step"): a hint used, in the gradebook."""
+        who, found = await self._db(self._with_series, code, key, False)
+        assigned, item = find_target(found, target, step, coordinate)
+        if assigned is None:
+            raise Refused("nothing is assigned in this class: a shown step is recorded for an assigned step", step,
+                          ("step",))
+        name = item["name"] if item.get("system") is not None else item["scene"]
+        recorded = coordinate if step in PER_COORDINATE else None
+        await self._db(store.record_hint, who, assigned["id"], name, step, recorded)
+        return {"assignment": assigned["n"], "step": step, "coordinate": recorded}
 
     def stop(self) -> None:
         self.db.stop()
 
+
+
+def public(found: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """The series as the API shows it (without the database's ids)."""
+    return [{k: v for k, v in a.items() if k != "id"} for a in found]

@@ -12,17 +12,27 @@ from __future__ import annotations
 import hmac
 import json
 from dataclasses import dataclass
+from datetime import datetime
 from typing import Any
 
 from sqlalchemy import delete, func, select
 from sqlalchemy.exc import IntegrityError
 
-from app.errors import Refused, UnknownClass, WrongKey
+from app.errors import Refused, UnknownAssignment, UnknownClass, WrongKey
 from app.service.classroom import keys
 from app.service.classroom.database import Database, delete_class, now
-from app.service.classroom.models import AssignmentRow, AttemptRow, ClassRow, StudentRow
+from app.service.classroom.models import (
+    AssignmentRow,
+    AttemptRow,
+    ClassAssignmentRow,
+    ClassRow,
+    HintRow,
+    StudentRow,
+)
 
 DONE = ("correct", "equivalent")  # the verdicts that finish a step
+MAX_ASSIGNMENTS = 40  # the assignments a class's series may hold
+FIRST_TITLE = "Assignment 1"  # the title of a first assignment set without one (PUT /assignment)
 
 
 @dataclass(frozen=True)
@@ -40,19 +50,41 @@ class Access:
         return self.student is None
 
 
-def create_class(db: Database, title: str) -> tuple[str, str]:
-    """A new class: its code and its instructor's key (the only time the key is seen)."""
-    teacher_key = keys.new_key()
+def create_class(db: Database, title: str) -> tuple[str, str, str]:
+    """A new class: its code, its instructor's key and its recovery code (the only time either is seen).
+
+    The key is derived from the recovery code and the class code (``keys.teacher_key_from``)."""
+    recovery = keys.new_recovery_code()
     for _ in range(20):  # a code already taken: draw again
         code = keys.new_code()
+        teacher_key = keys.teacher_key_from(keys.normal_recovery(recovery) or "", code)
         try:
             with db.session() as session:
-                row = ClassRow(code=code, title=title, teacher_hash=keys.digest(teacher_key), created_at=now())
+                row = ClassRow(code=code, title=title, teacher_hash=keys.digest(teacher_key), created_at=now(),
+                               recovery_hash=keys.digest(keys.normal_recovery(recovery) or ""))
                 session.add(row)
-            return code, teacher_key
+            return code, teacher_key, recovery
         except IntegrityError:
             continue
     raise RuntimeError("no free class code after 20 draws")
+
+
+def recover(db: Database, code: str, recovery: str) -> tuple[Access, str]:
+    """The class and its instructor's key, from its recovery code; WrongKey for anything else.
+
+    One indexed look-up and one constant-time comparison of two digests, whether the code names a class or not
+    (a class from before recovery codes is compared against the fixed digest: no code opens it)."""
+    normal = keys.normal_code(code) or ""
+    typed = keys.normal_recovery(recovery)
+    with db.session() as session:
+        found = session.execute(
+            select(ClassRow.id, ClassRow.code, ClassRow.title, ClassRow.recovery_hash).where(ClassRow.code == normal)
+        ).first()
+    stored = found.recovery_hash if found and found.recovery_hash else keys.NO_CLASS_HASH
+    matches = hmac.compare_digest(stored, keys.digest(typed or ""))
+    if found is None or typed is None or not matches:
+        raise WrongKey("this recovery code does not open this class (check the class code and the recovery code)")
+    return Access(found.id, found.code, found.title), keys.teacher_key_from(typed, found.code)
 
 
 def access(db: Database, code: str, key: str) -> Access:
@@ -108,37 +140,137 @@ def _add_student(db: Database, normal: str, name: str, student_key: str) -> Acce
         return Access(found.id, normal, found.title, student.id, name)
 
 
-def set_assignment(db: Database, class_id: int, items: list[dict[str, Any]]) -> None:
-    """Replace the class's assignment with ``items`` (each: item, system or None, steps, parameters)."""
+def _item_rows(class_id: int, assignment_id: int, items: list[dict[str, Any]]) -> list[AssignmentRow]:
+    return [
+        AssignmentRow(
+            class_id=class_id,
+            assignment_id=assignment_id,
+            position=position,
+            item=item["item"],
+            system=None if item.get("system") is None else json.dumps(item["system"]),
+            steps=json.dumps(item["steps"]),
+            parameters=json.dumps(item.get("parameters") or {}),
+        )
+        for position, item in enumerate(items)
+    ]
+
+
+def _item_entry(row: AssignmentRow) -> dict[str, Any]:
+    entry: dict[str, Any] = (
+        {"scene": row.item} if row.system is None else {"name": row.item, "system": json.loads(row.system)}
+    )
+    return entry | {"steps": json.loads(row.steps), "parameters": json.loads(row.parameters)}
+
+
+def _numbered(session: Any, class_id: int, n: int) -> ClassAssignmentRow:
+    """The class's assignment number ``n`` (1 for the first), or UnknownAssignment."""
+    rows = session.scalars(
+        select(ClassAssignmentRow).where(ClassAssignmentRow.class_id == class_id).order_by(ClassAssignmentRow.position)
+    ).all()
+    if not 1 <= n <= len(rows):
+        have = f"1 to {len(rows)}" if rows else "none yet"
+        raise UnknownAssignment(f"this class has no assignment {n}; its assignments are numbered {have}")
+    return rows[n - 1]
+
+
+def add_assignment(db: Database, class_id: int, title: str, due: datetime | None, items: list[dict[str, Any]]) -> int:
+    """A new assignment at the end of the class's series; its number."""
     with db.session() as session:
-        session.execute(delete(AssignmentRow).where(AssignmentRow.class_id == class_id))
-        for position, item in enumerate(items):
-            session.add(
-                AssignmentRow(
-                    class_id=class_id,
-                    position=position,
-                    item=item["item"],
-                    system=None if item.get("system") is None else json.dumps(item["system"]),
-                    steps=json.dumps(item["steps"]),
-                    parameters=json.dumps(item.get("parameters") or {}),
-                )
-            )
+        count = session.scalar(
+            select(func.count()).select_from(ClassAssignmentRow).where(ClassAssignmentRow.class_id == class_id)
+        ) or 0
+        if count >= MAX_ASSIGNMENTS:
+            raise Refused(f"a class holds at most {MAX_ASSIGNMENTS} assignments; delete one first", "", ())
+        row = ClassAssignmentRow(class_id=class_id, position=count, title=title, due=due)
+        session.add(row)
+        session.flush()
+        session.add_all(_item_rows(class_id, row.id, items))
+        return count + 1
+
+
+def replace_assignment(
+    db: Database, class_id: int, n: int, title: str | None, due: datetime | None, items: list[dict[str, Any]]
+) -> None:
+    """Replace assignment ``n``'s items, title (None: kept) and due time; what its students answered stays."""
+    with db.session() as session:
+        row = _numbered(session, class_id, n)
+        if title is not None:
+            row.title = title
+        row.due = due
+        session.execute(delete(AssignmentRow).where(AssignmentRow.assignment_id == row.id))
+        session.flush()
+        session.add_all(_item_rows(class_id, row.id, items))
+
+
+def set_first(db: Database, class_id: int, items: list[dict[str, Any]]) -> None:
+    """Set the items of the class's first assignment (created, titled FIRST_TITLE, when the series is empty)."""
+    with db.session() as session:
+        first = session.scalar(
+            select(ClassAssignmentRow).where(ClassAssignmentRow.class_id == class_id, ClassAssignmentRow.position == 0)
+        )
+        if first is None:
+            first = ClassAssignmentRow(class_id=class_id, position=0, title=FIRST_TITLE, due=None)
+            session.add(first)
+            session.flush()
+        session.execute(delete(AssignmentRow).where(AssignmentRow.assignment_id == first.id))
+        session.flush()
+        session.add_all(_item_rows(class_id, first.id, items))
+
+
+def delete_assignment(db: Database, class_id: int, n: int) -> None:
+    """Remove assignment ``n`` with its items, the answers and hints recorded for it; the later ones move up."""
+    with db.session() as session:
+        row = _numbered(session, class_id, n)
+        for table in (HintRow, AttemptRow, AssignmentRow):
+            session.execute(delete(table).where(table.assignment_id == row.id))
+        session.delete(row)
+        session.flush()
+        later = session.scalars(
+            select(ClassAssignmentRow)
+            .where(ClassAssignmentRow.class_id == class_id, ClassAssignmentRow.position > row.position)
+            .order_by(ClassAssignmentRow.position)
+        ).all()
+        for each in later:  # one at a time, in order: no two rows share a position at any moment
+            each.position -= 1
+            session.flush()
+
+
+def series(db: Database, class_id: int) -> list[dict[str, Any]]:
+    """The class's assignments in order: ``{"n", "id", "title", "due", "items": [...]}`` (due: ISO 8601, UTC)."""
+    with db.session() as session:
+        rows = session.execute(
+            select(ClassAssignmentRow, AssignmentRow)
+            .outerjoin(AssignmentRow, AssignmentRow.assignment_id == ClassAssignmentRow.id)
+            .where(ClassAssignmentRow.class_id == class_id)
+            .order_by(ClassAssignmentRow.position, AssignmentRow.position)
+        ).all()
+    out: dict[int, dict[str, Any]] = {}
+    for head, item in rows:
+        entry = out.setdefault(head.id, {
+            "n": head.position + 1, "id": head.id, "title": head.title,
+            "due": None if head.due is None else head.due.isoformat() + "Z", "items": [],
+        })
+        if item is not None:
+            entry["items"].append(_item_entry(item))
+    return list(out.values())
 
 
 def assignment(db: Database, class_id: int) -> list[dict[str, Any]]:
-    """The class's assignment, in order: ``{"scene" | "system", "name", "steps", "parameters"}``."""
-    with db.session() as session:
-        rows = session.scalars(
-            select(AssignmentRow).where(AssignmentRow.class_id == class_id).order_by(AssignmentRow.position)
-        ).all()
-    items = []
-    for row in rows:
-        entry: dict[str, Any] = (
-            {"scene": row.item} if row.system is None else {"name": row.item, "system": json.loads(row.system)}
-        )
-        entry |= {"steps": json.loads(row.steps), "parameters": json.loads(row.parameters)}
-        items.append(entry)
-    return items
+    """The items of the class's first assignment (what the single assignment was), in order."""
+    found = series(db, class_id)
+    return found[0]["items"] if found else []
+
+
+def record_hint(db: Database, who: Access, assignment_id: int, item: str, step: str, coordinate: str | None) -> None:
+    """Record that a step's answer was shown to the student (once: showing it again records nothing)."""
+    if who.student is None:
+        raise WrongKey("only a student's key records a shown step")
+    try:
+        with db.session() as session:
+            session.add(HintRow(class_id=who.class_id, student_id=who.student, assignment_id=assignment_id,
+                                item=item, step=step, coordinate=coordinate or "", at=now()))
+    except IntegrityError:
+        pass  # shown before
 
 
 @dataclass(frozen=True)
@@ -176,6 +308,7 @@ def record(
     mistake_name: str | None = None,
     attempt_id: str | None = None,
     response: bytes | None = None,
+    assignment_id: int | None = None,
 ) -> Recorded | None:
     """Record one judged answer; committed (on disk) when this returns.
 
@@ -188,6 +321,7 @@ def record(
             session.add(AttemptRow(
                 class_id=who.class_id,
                 student_id=who.student,
+                assignment_id=assignment_id,
                 item=item,
                 step=step,
                 coordinate=coordinate,

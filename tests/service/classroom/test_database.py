@@ -10,13 +10,15 @@ import pytest
 from sqlalchemy import func, inspect, select, text
 from sqlalchemy.exc import IntegrityError
 
+from app.errors import WrongKey
 from app.service.classroom import store
 from app.service.classroom.database import Database, database_url, make_engine, migrate, now
 from app.service.classroom.models import AttemptRow, ClassRow
 from app.settings import Settings
 from tests.postgres import postgres_server  # noqa: F401 - the session fixture
 
-TABLES = {"classes", "students", "assignments", "attempts", "alembic_version"}
+TABLES = {"classes", "students", "assignments", "attempts", "class_assignments", "hints", "alembic_version"}
+HEAD = "0005"  # the newest revision
 
 
 @pytest.fixture(params=["sqlite", "postgresql"])
@@ -30,7 +32,7 @@ def test_nothing_is_touched_before_first_use(tmp_path):
     db = Database(Settings(data_dir=tmp_path / "data"))
     assert not db.started
     assert not (tmp_path / "data").exists()
-    code, _ = store.create_class(db, "first use")
+    code, *_ = store.create_class(db, "first use")
     assert db.started and (tmp_path / "data" / "classes.sqlite3").is_file()
     assert len(code) == 6
     db.stop()
@@ -44,7 +46,7 @@ def test_migrates_an_empty_database_to_the_models(url):
         assert TABLES <= set(found.get_table_names())
         assert {"mistake", "mistake_name"} <= {c["name"] for c in found.get_columns("attempts")}
         with engine.connect() as c:
-            assert c.execute(text("SELECT version_num FROM alembic_version")).scalar() == "0004"
+            assert c.execute(text("SELECT version_num FROM alembic_version")).scalar() == HEAD
         migrate(engine)  # again: nothing to do
     finally:
         engine.dispose()
@@ -93,7 +95,7 @@ def test_migrates_the_schema_before_mistake_names_keeping_the_keys(url):
 
 def test_sqlite_runs_in_wal_mode_and_commits_reach_the_file(tmp_path):
     db = Database(Settings(data_dir=tmp_path))
-    code, key = store.create_class(db, "wal")
+    code, *_ = store.create_class(db, "wal")
     with db.session() as session:
         assert session.execute(text("PRAGMA journal_mode")).scalar() == "wal"
         assert session.execute(text("PRAGMA synchronous")).scalar() == 2  # FULL
@@ -105,8 +107,8 @@ def test_sqlite_runs_in_wal_mode_and_commits_reach_the_file(tmp_path):
 
 def test_classes_older_than_the_retention_are_deleted(url, tmp_path):
     db = Database(Settings(data_dir=tmp_path, database_url=url, class_days=30))
-    old, _ = store.create_class(db, "last year")
-    new, _ = store.create_class(db, "this week")
+    old, *_ = store.create_class(db, "last year")
+    new, *_ = store.create_class(db, "this week")
     _, who = store.join(db, old, "Ada")
     store.record(db, who, "simple-pendulum", "kinetic", None, "correct", None, "T")
     with db.session() as session:
@@ -141,7 +143,7 @@ def test_migrates_the_schema_before_attempt_ids_keeping_the_attempts(url):
         with pytest.raises(IntegrityError), engine.begin() as c:  # the same student's id twice: refused by the table
             c.execute(insert, {"t": now()})
         with engine.connect() as c:
-            assert c.execute(text("SELECT version_num FROM alembic_version")).scalar() == "0004"
+            assert c.execute(text("SELECT version_num FROM alembic_version")).scalar() == HEAD
     finally:
         engine.dispose()
 
@@ -150,7 +152,7 @@ def test_a_press_recorded_twice_at_once_keeps_the_first(tmp_path):
     """Two copies of one press that both were judged (a retry racing the first to the database): the second
     insert meets the unique id, records nothing and gets the first verdict back."""
     db = Database(Settings(data_dir=tmp_path))
-    code, _ = store.create_class(db, "race")
+    code, *_ = store.create_class(db, "race")
     _, who = store.join(db, code, "Ada")
     first = store.record(db, who, "simple-pendulum", "kinetic", None, "incorrect", "missing_half", "T", None,
                          "press-0001", b'{"verdict":"incorrect"}')
@@ -160,3 +162,74 @@ def test_a_press_recorded_twice_at_once_keeps_the_first(tmp_path):
     with db.session() as session:
         assert session.scalar(select(func.count()).select_from(AttemptRow)) == 1
     db.stop()
+
+
+def test_migrates_the_single_assignment_into_the_first_of_a_series(url, tmp_path):
+    """Revision 0005: a class's assignment becomes assignment 1 of its series (with its attempts at its items);
+    a class with no assignment gets no series, and an attempt at an item outside the assignment stays unassigned."""
+    engine = make_engine(url)
+    try:
+        migrate(engine, "0004")
+        with engine.begin() as c:
+            for class_id, code in ((1, "ACEFHK"), (2, "MNPRTW")):
+                c.execute(text("INSERT INTO classes (id, code, title, teacher_hash, created_at) "
+                               "VALUES (:i, :c, 'old', :h, :t)"), {"i": class_id, "c": code, "h": str(class_id) * 64,
+                                                                    "t": now()})
+            c.execute(text("INSERT INTO students (id, class_id, name, key_hash, joined_at) "
+                           "VALUES (1, 1, 'Ada', :h, :t)"), {"h": "a" * 64, "t": now()})
+            c.execute(text("INSERT INTO assignments (class_id, position, item, system, steps, parameters) VALUES "
+                           "(1, 0, 'simple-pendulum', NULL, :s, '{}')"),
+                      {"s": '[{"step": "kinetic", "coordinate": null}]'})
+            for item in ("simple-pendulum", "double-pendulum"):
+                c.execute(text("INSERT INTO attempts (class_id, student_id, item, step, coordinate, verdict, answer, "
+                               "at) VALUES (1, 1, :i, 'kinetic', NULL, 'correct', 'T', :t)"), {"i": item, "t": now()})
+        migrate(engine)
+        with engine.connect() as c:
+            assert c.execute(text("SELECT version_num FROM alembic_version")).scalar() == HEAD
+            heads = c.execute(text("SELECT id, class_id, position, title, due FROM class_assignments")).all()
+            assert [tuple(h)[1:] for h in heads] == [(1, 0, "Assignment 1", None)]
+            first = heads[0][0]
+            assert c.execute(text("SELECT assignment_id FROM assignments")).scalars().all() == [first]
+            got = c.execute(text("SELECT item, assignment_id FROM attempts ORDER BY id")).all()
+            assert [tuple(g) for g in got] == [("simple-pendulum", first), ("double-pendulum", None)]
+            assert c.execute(text("SELECT recovery_hash FROM classes")).scalars().all() == [None, None]
+    finally:
+        engine.dispose()
+    # the store reads the migrated class as a series of one
+    db = Database(Settings(data_dir=tmp_path, database_url=url))
+    try:
+        found = store.series(db, 1)
+        assert [(a["n"], a["title"], a["due"]) for a in found] == [(1, "Assignment 1", None)]
+        assert found[0]["items"] == [{"scene": "simple-pendulum", "steps": [{"step": "kinetic", "coordinate": None}],
+                                      "parameters": {}}]
+        assert store.series(db, 2) == [] and store.assignment(db, 2) == []
+        # a class from before recovery codes: no recovery code opens it
+        with pytest.raises(WrongKey):
+            store.recover(db, "ACEFHK", "ACEF-HKMN-PRTW-XY34-79AC-EFHK")
+    finally:
+        db.stop()
+
+
+def test_downgrade_from_the_series_keeps_the_first_assignment(url):
+    engine = make_engine(url)
+    try:
+        migrate(engine)
+        with engine.begin() as c:
+            c.execute(text("INSERT INTO classes (id, code, title, teacher_hash, created_at) "
+                           "VALUES (1, 'ACEFHK', 'new', :h, :t)"), {"h": "0" * 64, "t": now()})
+            for position in (0, 1):
+                c.execute(text("INSERT INTO class_assignments (id, class_id, position, title) "
+                               "VALUES (:i, 1, :p, 'week')"), {"i": position + 1, "p": position})
+                c.execute(text("INSERT INTO assignments (class_id, assignment_id, position, item, steps, parameters) "
+                               "VALUES (1, :a, 0, :item, '[]', '{}')"),
+                          {"a": position + 1, "item": f"scene-{position}"})
+        with engine.begin() as c:
+            from alembic import command
+
+            from app.service.classroom.database import alembic_config
+            command.downgrade(alembic_config(c), "0004")
+        with engine.connect() as c:
+            assert c.execute(text("SELECT item FROM assignments")).scalars().all() == ["scene-0"]
+            assert "class_assignments" not in inspect(engine).get_table_names()
+    finally:
+        engine.dispose()
