@@ -17,8 +17,8 @@ POINCARE_PIECE = 50.0  # simulated time per compiled run of a section (a budget 
 
 # Bounds of the engine's symbolic work, in units of work (app/engine/work.py: SymPy expressions built,
 # counted whether SymPy's cache answers them or not), never in seconds: what a document holds, how it is
-# shown and what the tutor says are then a function of the input alone, on an idle machine or a loaded one
-# (issue 43).  A bound used up leaves its member out with a note, or keeps a plainer form, never a refusal
+# shown and what the tutor says are then a function of the input alone, on an idle machine or a loaded one.
+# A bound used up leaves its member out with a note, or keeps a plainer form, never a refusal
 # of the system (app/engine/budget.py); the one clock is the worker job's, at the edge (Settings.derive_seconds).
 # This machine, idle, does about WORK_PER_SECOND units a second on the chapter's derivations (measured on
 # all twelve scenes' documents, CPU time), and each bound below is the time bound it replaced times that

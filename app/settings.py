@@ -193,7 +193,7 @@ class Settings(BaseSettings):
     @property
     def worker_count(self) -> int:
         # two by default (where memory allows), whatever the CPUs: with one, a job that runs to its time limit
-        # held every other session's derivation behind it (19 s for a one-link pendulum; issue 35)
+        # held every other session's derivation behind it (19 s for a one-link pendulum)
         wanted = self.workers or 2
         # fewer workers, each able to take a useful job (128 MB), rather than many that cannot
         while wanted > 1 and self._per_worker_mb(wanted) < MIN_JOB_MB:

@@ -1,4 +1,4 @@
-"""How much a doomed request delays another session's small derivation (issue 35: at most 2 s).
+"""How much a doomed request delays another session's small derivation (at most 2 s).
 
 The scenario of tests/service/test_doomed_session.py (the service path: cache, fair-share gate, a pool of
 two workers): session A sends a twelve-link chain that runs into its hard limit; one second into it, session

@@ -1,4 +1,4 @@
-"""/healthz during a flood of heavy scene simulations, with busy processes beside the server (issue 43, item 4).
+"""/healthz during a flood of heavy scene simulations, with busy processes beside the server.
 
 A fresh server (its own session, empty cache and data folders, no warm-up) is started; two busy-loop processes
 per core run beside it, each in its own session (the kernel shares CPU between sessions: docs/scale.md); after

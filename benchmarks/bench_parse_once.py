@@ -1,4 +1,4 @@
-"""What reading a user system's text costs in one POST /api/derive of a double pendulum (issue 30, docs/parsing.md).
+"""What reading a user system's text costs in one POST /api/derive of a double pendulum (docs/parsing.md).
 
     PYTHONPATH=$PWD .venv/bin/python -m benchmarks.bench_parse_once
 

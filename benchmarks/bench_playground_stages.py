@@ -1,4 +1,4 @@
-"""The playground in two stages (issue 35), in Debian's headless Chromium at 1366×768: a typed triple pendulum.
+"""The playground in two stages, in Debian's headless Chromium at 1366×768: a typed triple pendulum.
 
 From the click on Derive (the input) to
 - the first equations painted: the equations of motion on screen in the first stage's results box, as the

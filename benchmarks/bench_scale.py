@@ -1,4 +1,4 @@
-"""Systems as large as a course needs (issue 35), measured in one run.
+"""Systems as large as a course needs, measured in one run.
 
     PYTHONPATH=$PWD .venv/bin/python -m benchmarks.bench_scale [N_MAX]   (N_MAX = 0: the simulations only)
 

@@ -1,4 +1,4 @@
-"""Bounds by work for SymPy work whose cost cannot be known in advance (issue 43).
+"""Bounds by work for SymPy work whose cost cannot be known in advance.
 
 Simplification and equation solving are optional refinements: when they use up their bound the engine
 keeps the unrefined (still correct) expression, and a member of the document that does is left out with a

@@ -1,4 +1,4 @@
-"""Slips read from the answer itself, when no mistake of the step's catalogue matches (issue 41).
+"""Slips read from the answer itself, when no mistake of the step's catalogue matches.
 
 The catalogue (app/engine/mistakes.py, mistake_pieces.py) builds each wrong answer from the derivation
 and compares; two common slips cannot be built that way, because what goes wrong depends on what the

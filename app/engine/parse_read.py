@@ -108,7 +108,7 @@ _DANGLING = ("**", "+", "-", "*", "/", "^")
 
 
 def _unreadable(text: str, stripped: str, written: Typed, exc: SyntaxError) -> ExpressionError:
-    """Python's complaint about a formula, in a student's words and at the place it names (issue 40).
+    """Python's complaint about a formula, in a student's words and at the place it names.
 
     Python reports a formula that ends with an operator (``m g l +``) at its first column; the place that
     is wrong is the operator at the end, so that one is named.

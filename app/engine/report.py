@@ -514,7 +514,7 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
     r = table.q[table.names.index(red.coordinate)]
     rn = pr.tex(r)
     # The constant of this first integral is the conserved energy E where h = E, else h itself (a rotating
-    # frame's bead): the page's own letter for it, never a new E_r (issue 40).
+    # frame's bead): the page's own letter for it, never a new E_r.
     level = "E" if d.energetics.h_equals_e else "h"
     # ½ m_eff ṙ² followed by U_eff exactly as the step before prints it (centrifugal piece first)
     rd = table.qd[table.names.index(red.coordinate)]

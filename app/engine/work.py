@@ -1,4 +1,4 @@
-"""The engine's measure of work: SymPy expressions built, counted per thread (issue 43).
+"""The engine's measure of work: SymPy expressions built, counted per thread.
 
 A bound that decides *what* a document holds (a member, a display form, a diagnosis) must end at the same
 place for the same input on an idle machine and on a loaded one, so it cannot read a clock.  It reads this

@@ -110,7 +110,7 @@ def above_tolerance(estimate: Estimate, run: Trajectory, rtol: float, atol: np.n
         if fixed_step
         else "each step keeps its own error within the tolerance"
     )
-    # In words a student reads (issue 40): the coordinate's letter, a plain ratio, no option names; the
+    # In words a student reads: the coordinate's letter, a plain ratio, no option names; the
     # estimate's figure itself is in the run's details.
     return (
         f"the error in {name} is about {_times(ratio[worst])} times the tolerance asked for: {how}, but over "

@@ -1,4 +1,4 @@
-"""The derivation in two stages: the equations first, the whole document after (issue 35).
+"""The derivation in two stages: the equations first, the whole document after.
 
 A student who types a system waits for its equations of motion; the rest of the document (the steps,
 the conserved quantities, Hamilton's equations, the normal modes) takes seconds more for a chain. The

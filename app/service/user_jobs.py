@@ -50,7 +50,7 @@ def build_system(user: UserSystem) -> System:
             built[loc] = build(parsed[loc], namespace if velocities else positional)
         except ExpressionError as exc:
             raise _refuse(loc, exc) from None
-    if (nowhere := user.never_real(built)) is not None:  # issue 32: an energy that is real nowhere
+    if (nowhere := user.never_real(built)) is not None:  # an energy that is real nowhere
         raise _refuse(*nowhere)  # type: ignore[arg-type]
     return user.system(built)
 

@@ -14,7 +14,7 @@ stopped.  So every such job runs in a separate process:
   inherits the web server's threads or locks;
 * a pool found broken (every worker gone) is replaced on the next job.
 
-The pool also heals itself (issue 18):
+The pool also heals itself:
 
 * a worker retires (ends after sending its answer, and pebble starts a fresh
   one) after a ``MemoryError``, a ``RecursionError`` or any failure that is not

@@ -145,7 +145,7 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         if doc["accelerations"]
         else [rf"\ddot{{q}} = {letter_of(doc, 'mass matrix', MASS_MATRIX[0])}^{{-1}} f"],
         "momenta": [f"{latex('p_' + c)} = {doc['momenta'][c]['latex']}" for c in q],
-        # members of the document left out within their own bounds, each with its reason (issue 35)
+        # members of the document left out within their own bounds, each with its reason
         "skipped": [s["reason"] for s in doc.get("skipped") or []],
         "conserved": conserved,
         "nothing_conserved": nothing_conserved(doc),

@@ -1,4 +1,4 @@
-"""POST /api/derive/equations: the first stage of a derivation, answered before the whole document (issue 35).
+"""POST /api/derive/equations: the first stage of a derivation, answered before the whole document.
 
 The same system as POST /api/derive; the answer holds the equations of motion, the accelerations (or the
 mass matrix and forcing when they stay M⁻¹f), the symbols and parameters, what was left out so far and what

@@ -1,4 +1,4 @@
-"""The stiff and extreme cases (issue 4), shared by tests/numerics/test_extreme.py and the table in docs/benchmarks.md
+"""The stiff and extreme cases, shared by tests/numerics/test_extreme.py and the table in docs/benchmarks.md
 (benchmarks/bench_numerics_extreme.py).
 
 Each case is a system (a scene id or a test system), parameter overrides, a start, a duration and,

@@ -1,4 +1,4 @@
-"""The stiff and extreme cases of issue 4 (the table in docs/benchmarks.md comes from the same cases)."""
+"""The stiff and extreme cases (the table in docs/benchmarks.md comes from the same cases)."""
 
 import numpy as np
 import pytest
