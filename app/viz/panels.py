@@ -169,7 +169,7 @@ PANELS: tuple[Panel, ...] = (
         "curve through an unstable one separates motions of different kinds.",
         "always (level sets with one degree of freedom or a reduction to one)",
         lambda f: True,
-        angles_text="An angle is shown in (−π, π].",
+        angles_text="An angle that goes round full circles is shown wrapped into (−π, π].",
     ),
     Panel(
         "effective-potential",

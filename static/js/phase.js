@@ -1,5 +1,5 @@
 /**
- * phase.js — the phase portrait panel: a coordinate against its rate, with the level sets of H.
+ * phase.js — the phase portrait panel: a coordinate against its rate, with the level sets of the energy function h.
  *
  *   new PhasePanel(section, data)   panel.draw(run), panel.cursor(i, run)  (the plots.js interface)
  *   wrap(x)                         an angle into (−π, π]
@@ -90,7 +90,7 @@ function padded(values, nonnegative) {
 /** The one-coordinate model of a run: x, V(x), m(x) on a grid, the run's rate and its level; null without one. */
 function model(run) {
   const data = run.data;
-  let r, Vf, Mf, level, whole, held = "";
+  let r, Vf, Mf, level, whole, held = [];
   if (data.reduction) {
     const red = reduced(run);
     const mass = compile(data.reduction.mass);
@@ -99,7 +99,9 @@ function model(run) {
     Mf = (x) => mass(red.at(x));
     level = red.Er;
     whole = !Object.keys(red.P).length; // no conserved momentum held: the coordinate is the whole system
-    held = Object.entries(red.P).map(([k, v]) => `${data.labels[k] || k} = ${fmt(v)}`).join(", ");
+    // each held momentum with its unit (kg·m²/s for an angle's), as every number on the page has
+    const unitOf = (k) => (data.momentum_units && data.momentum_units[k.slice(2)]) || "";
+    held = Object.entries(red.P).map(([k, v]) => `${data.labels[k] || k} = ${fmt(v)}${unitOf(k) ? ` ${unitOf(k)}` : ""}`);
   } else if (data.coordinates.length === 1 && data.trees.hamiltonian) {
     // h = T2 − T0 + U has no term linear in the rate: V = h(q, 0), m = h(q, 1) + h(q, −1) − 2 h(q, 0)
     r = data.coordinates[0];
@@ -171,7 +173,7 @@ export class PhasePanel extends PreviewPanel {
       .filter((E) => Math.abs(E - E0) > 0.04 * span && (Es === null || Math.abs(E - Es) > 0.04 * span));
     const join = (curves) => ({ x: curves.flatMap((c) => c.x), y: curves.flatMap((c) => c.y) });
     const grey = join(levels.map((E) => levelCurve(V, m.m, E, xs)));
-    const traces = [{ type: "scatter", mode: "lines", x: grey.x, y: grey.y, name: "level sets of H", hoverinfo: "skip", line: { color: "#b8bec5", width: 1 } }];
+    const traces = [{ type: "scatter", mode: "lines", x: grey.x, y: grey.y, name: "level sets of h", hoverinfo: "skip", line: { color: "#b8bec5", width: 1 } }];
     let sep = null;
     if (Es !== null) {
       sep = levelCurve(V, m.m, Es, xs);
@@ -196,15 +198,23 @@ export class PhasePanel extends PreviewPanel {
       : ` Its level h = ${fmt(E0)} J lies below the separatrix (${fmt(Es)} J): it swings back and forth.`;
     const forced = run.data.forced ? " A non-conservative force acts, so the run crosses the level sets instead of following one." : "";
     // an angle's top is at θ = π, inside the wrapped interval (−π, π] (−π is the same point, outside it)
-    const at = (x) => (m.turn && Math.abs(Math.abs(x) - Math.PI) < 1e-6 ? "π" : fmt(x));
+    // a value with its unit (0 and π need none)
+    const at = (x) => (m.turn && Math.abs(Math.abs(x) - Math.PI) < 1e-6 ? "π" : x === 0 || !unit ? fmt(x) : `${fmt(x)} ${unit}`);
     const listed = found.map((e) => `${lr} = ${at(e.x)} (${e.stable ? "stable" : "unstable"})`)
       .filter((text, i, all) => all.indexOf(text) === i);
     // with cyclic coordinates held at their momenta, a rest point of this plane is a steady motion (a circular orbit,
     // a conical swing), an equilibrium of the reduced problem only: the other coordinates keep turning
-    const eq = !listed.length ? "" : m.held
-      ? ` Steady motions in view (rest points of the reduced problem in ${lr}; the other coordinates keep turning): ${listed.join(", ")}.`
+    const one = m.held.length === 1;
+    const others = one ? "the other coordinate keeps turning" : "the other coordinates keep turning";
+    // without a rest point or a separatrix in view the caption's dots and dashed curve are absent: say so
+    const eq = !listed.length
+      ? (Es === null ? ` No ${m.held.length ? "steady motion" : "equilibrium"} lies in view, so there are no dots and no separatrix.` : "")
+      : m.held.length
+      ? ` Steady motions in view (rest points of the reduced problem in ${lr}; ${others}): ${listed.join(", ")}.`
       : ` Equilibria in view: ${listed.join(", ")}.`;
-    const reduction = m.held ? ` The other coordinates are cyclic: their momenta stay at ${m.held} (the initial state's), which leaves H a function of ${lr} and its rate.` : "";
+    const reduction = !m.held.length ? "" : one
+      ? ` The other coordinate is cyclic: its momentum stays at ${m.held[0]} (the initial state's), which leaves h a function of ${lr} and its rate.`
+      : ` The other coordinates are cyclic: their momenta stay at ${m.held.join(", ")} (the initial state's), which leaves h a function of ${lr} and its rate.`;
     this.readout.textContent = `${lr} against its rate${angle && m.turn ? ", the angle wrapped into (−π, π]" : ""}.${reduction}${kind}${eq}${forced}`;
     seriesTable(this.summary, `Phase portrait of ${lr}`, run.t, [{ name: lr, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[r + "_dot"], values: m.rates }]);
     this.marks();

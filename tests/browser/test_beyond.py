@@ -65,7 +65,7 @@ def test_an_over_the_top_pendulum_has_a_separatrix_and_wrapped_angles(page):
         "document.querySelector('#panel-phase .plot').data.map((t) => ({name: t.name, x: t.x.filter((v) => v !== null)}))"
     )
     by_name = {t["name"]: t["x"] for t in traces}
-    assert set(by_name) == {"level sets of H", "separatrix", "this run"}
+    assert set(by_name) == {"level sets of h", "separatrix", "this run"}
     assert len(by_name["separatrix"]) > 100
     # the run goes round and round: without wrapping it would reach tens of radians
     run = by_name["this run"]

@@ -20,7 +20,7 @@ def test_a_circular_orbit_is_a_steady_motion(page):
     # prof-a A10: "Equilibria in view: r = 0.7071 (stable)" while the page says no rest position but the anchor
     text = _readout(page, "tabletop-spring")
     assert "Equilibria" not in text
-    assert "Steady motions in view (rest points of the reduced problem in r" in text and "r = 0.7071 (stable)" in text
+    assert "Steady motions in view (rest points of the reduced problem in r" in text and "r = 0.7071 m (stable)" in text
 
 
 def test_the_top_is_at_pi_inside_the_wrapped_interval(page):
@@ -32,10 +32,10 @@ def test_the_top_is_at_pi_inside_the_wrapped_interval(page):
 def test_a_damped_run_names_only_the_level_it_starts_on(page):
     # prof-c 5: "Its level H = 9.116 J lies below the separatrix" for a run that crosses the level sets
     text = _readout(page, "damped-pendulum")
-    assert "It starts on the level H = " in text and "below the separatrix" in text
+    assert "It starts on the level h = " in text and "below the separatrix" in text
     assert "Its level" not in text and "swings back and forth" not in text
     # the undamped pendulum keeps its level
-    assert "Its level H = " in _readout(page, "simple-pendulum")
+    assert "Its level h = " in _readout(page, "simple-pendulum")
 
 
 def _small_oscillations(page, scene_id):
@@ -50,3 +50,20 @@ def test_the_tabletop_frequency_is_said_to_be_exact_at_every_amplitude(page):
     text = _small_oscillations(page, "tabletop-spring")
     assert "exact at every amplitude" in text and "goes to zero" not in text
     assert "holds as the amplitude goes to zero" in _small_oscillations(page, "simple-pendulum")
+
+
+def test_one_cyclic_coordinate_is_singular_and_every_value_has_its_unit(page):
+    # prof-e 5: "The other coordinates are cyclic: their momenta stay at p_θ = 1" and "r = 0.7071 (stable)"
+    text = _readout(page, "tabletop-spring")
+    assert "The other coordinate is cyclic: its momentum stays at p_θ = 1 kg·m²/s" in text
+    assert "coordinates are cyclic" not in text and "r = 0.7071 m (stable)" in text
+    # prof-e 5: "θ = 2.486 (stable)" and "p_φ = 1.307" on the spherical pendulum
+    text = _readout(page, "spherical-pendulum")
+    assert "p_φ = 1.307 kg·m²/s" in text and "θ = 2.486 rad (stable)" in text
+
+
+def test_a_portrait_without_equilibria_says_it_has_none(page):
+    # prof-e 5: the caption promises dots and a separatrix that the helix and incline portraits do not have
+    for scene_id in ("helix-bead", "incline-block"):
+        text = _readout(page, scene_id)
+        assert "No equilibrium lies in view, so there are no dots and no separatrix." in text, scene_id

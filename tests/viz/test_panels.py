@@ -91,7 +91,9 @@ def test_the_method_comparison_is_open_only_where_the_method_matters(client, sce
 def test_the_phase_text_speaks_of_angles_only_where_a_coordinate_is_one(client):
     from app.viz.panels import texts
 
-    assert "An angle is shown" in texts(angles=True)["phase"]["text"]
-    assert "An angle is shown" not in texts(angles=False)["phase"]["text"]
-    assert "An angle is shown" in client.get("/scenes/simple-pendulum").text
-    assert "An angle is shown" not in client.get("/scenes/rail-two-body").text
+    assert "is shown wrapped into (−π, π]" in texts(angles=True)["phase"]["text"]
+    assert "is shown wrapped into (−π, π]" not in texts(angles=False)["phase"]["text"]
+    assert "is shown wrapped into (−π, π]" in client.get("/scenes/simple-pendulum").text
+    assert "is shown wrapped into (−π, π]" not in client.get("/scenes/rail-two-body").text
+    # prof-e 5: the spherical pendulum's polar angle lies in [0, π]: no page says every angle is in (−π, π]
+    assert "An angle is shown in (−π, π]" not in client.get("/scenes/spherical-pendulum").text
