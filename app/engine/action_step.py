@@ -14,6 +14,8 @@ from app.engine.derive import LARGE_FROM, Derivation
 
 KEY = "action"
 TITLE = "The action S = ∫ L dt is stationary on the true path"
+# with forces Q that no potential describes S alone is not stationary: the title says what the step shows instead
+FORCED_TITLE = "Hamilton's principle with a non-conservative force: δS is minus the force's work"
 
 
 def kinetic_focus_possible(d: Derivation) -> bool:
@@ -68,4 +70,4 @@ def action_step(d: Derivation) -> dict[str, str]:
     if forced:
         text += " Here forces Q that no potential describes act, so they join the condition as the work ∫ Q·δq dt."
     integral: Any = sp.Integral(d.mechanics.L, d.table.t)
-    return {"key": KEY, "title": TITLE, "latex": latex, "sympy": sp.sstr(integral), "explanation": text}
+    return {"key": KEY, "title": FORCED_TITLE if forced else TITLE, "latex": latex, "sympy": sp.sstr(integral), "explanation": text}

@@ -28,6 +28,18 @@ def _hamiltonian(what: str) -> dict[str, str]:
     }
 
 
+def _h_is_e(still: str) -> str:
+    """The "Is h equal to E?" step of a scene whose positions do not depend on t (``still`` says why).
+
+    Two separate conditions: positions free of t make h = E; h is conserved because L has no explicit t and
+    no non-conservative force does work.
+    """
+    return (
+        f"{still}, so h = E. Separately, L has no explicit t and no non-conservative force does work, "
+        "so h is conserved, and E with it."
+    )
+
+
 SIMPLE_PENDULUM: dict[str, str] = {
     "action": "Of all the ways the bob could swing from one angle to another in the same time, the real swing makes ∫ (T − U) dt stationary; once the time passes the first kinetic focus (about half a small swing) it is a saddle, not the least.",
     "positions": "The bob is R from the pivot at angle θ from the downward vertical; the origin is at the lowest point.",
@@ -44,7 +56,7 @@ SIMPLE_PENDULUM: dict[str, str] = {
     "time-dependence": "Nothing in the set-up moves or changes with time, so L has no t in it.",
     "hamiltonian": "T is quadratic in θ̇, so h is T + U.",
     "energy": "The bob's kinetic plus gravitational energy.",
-    "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
+    "h-vs-e": _h_is_e("The positions do not depend on t"),
     **_hamiltonian("p_θ²/(2 m R²) + m g R (1 − cos θ)"),
     "effective-potential": "With a single coordinate there is nothing to fold in: U_eff is U itself.",
     "energy-integral": "Energy conservation gives θ̇ as a function of θ, one integration from the motion.",
@@ -74,7 +86,8 @@ DAMPED_PENDULUM: dict[str, str] = {
     "time-dependence": "L has no t, yet h is not conserved because the drag does work.",
     "hamiltonian": "h = T + U, as for the undamped pendulum.",
     "energy": "The bob's kinetic plus gravitational energy, which the drag drains.",
-    "h-vs-e": "The positions do not depend on t, so h = E; here E decays.",
+    "h-vs-e": "The positions do not depend on t, so h = E. That says nothing about conservation: the drag does "
+    "work, so h (and E with it) decays.",
     "power": "dE/dt = −b θ̇² ≤ 0: the energy falls whenever the bob moves.",
     **_hamiltonian("p_θ²/(2 m R²) + m g R (1 − cos θ), with the drag added to ṗ"),
     "equilibria": "The drag vanishes at rest, so the equilibria are the simple pendulum's: bottom and top.",
@@ -100,7 +113,7 @@ HELIX_BEAD: dict[str, str] = {
     "time-dependence": "The wire is fixed, so L has no t.",
     "hamiltonian": "T is quadratic in ż, so h is T + U.",
     "energy": "Kinetic energy of the winding motion plus m g z.",
-    "h-vs-e": "The wire does not move, so h = E and both are conserved.",
+    "h-vs-e": _h_is_e("The wire does not move, so the positions do not depend on t"),
     **_hamiltonian("p_z²/(2 m (1 + α² R²)) + m g z"),
     "effective-potential": "One coordinate and no cyclic one: U_eff is m g z, with the effective mass of the winding.",
     "energy-integral": "Energy conservation gives ż from z: a uniformly accelerated motion.",
@@ -128,7 +141,7 @@ INCLINE_BLOCK: dict[str, str] = {
     "time-dependence": "The incline is fixed, so L has no t.",
     "hamiltonian": "T is quadratic in Ẋ, so h is T + U.",
     "energy": "½ m Ẋ² plus m g X sin α.",
-    "h-vs-e": "The incline does not move, so h = E and both are conserved.",
+    "h-vs-e": _h_is_e("The incline does not move, so the positions do not depend on t"),
     **_hamiltonian("p_X²/(2m) + m g X sin α"),
     "effective-potential": "With one coordinate, U_eff is the slope's potential m g X sin α.",
     "energy-integral": "Energy conservation gives Ẋ from X for the uniformly accelerated slide.",
@@ -158,7 +171,7 @@ TABLETOP_SPRING: dict[str, str] = {
     "time-dependence": "The spring and the table are fixed, so L has no t.",
     "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
     "energy": "Kinetic energy plus the spring's ½ k r².",
-    "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
+    "h-vs-e": _h_is_e("The positions do not depend on t"),
     **_hamiltonian("(p_r² + p_θ²/r²)/(2m) + ½ k r²"),
     "cyclic-velocities": "θ̇ = p_θ/(m r²) with p_θ fixed by the initial push.",
     "effective-potential": "The spring's ½ k r² plus the centrifugal barrier p_θ²/(2 m r²).",
@@ -188,7 +201,7 @@ SPHERICAL_PENDULUM: dict[str, str] = {
     "time-dependence": "The pivot is fixed, so L has no t.",
     "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
     "energy": "Kinetic energy plus m g R cos θ.",
-    "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
+    "h-vs-e": _h_is_e("The positions do not depend on t"),
     **_hamiltonian("p_θ²/(2 m R²) + p_φ²/(2 m R² sin² θ) + m g R cos θ"),
     "cyclic-velocities": "φ̇ = p_φ/(m R² sin² θ) with p_φ fixed by the initial push.",
     "effective-potential": "Gravity plus the barrier p_φ²/(2 m R² sin² θ) that keeps the ball off the axis.",
@@ -219,7 +232,7 @@ RAIL_TWO_BODY: dict[str, str] = {
     "time-dependence": "Rail and spring are fixed, so L has no t.",
     "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
     "energy": "Both kinetic energies plus the spring's.",
-    "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
+    "h-vs-e": _h_is_e("The positions do not depend on t"),
     **_hamiltonian("p_x₁²/(2m₁) + p_x₂²/(2m₂) + ½ k (x₂ − x₁ − l₀)²"),
     "equilibria": "At rest the spring is at its rest length, x₂ − x₁ = l₀, anywhere on the rail.",
     "normal-modes": "One mode is a free drift of both masses (ω = 0); the other is the spring's oscillation, ω² = k/μ.",
@@ -249,7 +262,7 @@ PULLEY: dict[str, str] = {
     "time-dependence": "The fixed pulleys do not move, so L has no t.",
     "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
     "energy": "Kinetic plus gravitational energy of all three masses.",
-    "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
+    "h-vs-e": _h_is_e("The positions do not depend on t"),
     **_hamiltonian("the kinetic energy written with the inverse mass matrix, plus the weights"),
     "equilibria": "The generalized forces are constant: with m₁ = m₂ = M/2 they vanish and every position is an equilibrium; otherwise (at the default masses, too) there is none.",
     "constraints": "With z₁, z₂, z₃ the heights of m₁, m₂ and M (z₁ = y₁, z₂ = y₂, z₃ = Y, all in m), the string's length fixes z₁ + z₂ + 2 z₃; the constant 2 m places M below the pulleys.",
@@ -275,7 +288,7 @@ MOVABLE_INCLINE: dict[str, str] = {
     "time-dependence": "Nothing is driven, so L has no t.",
     "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
     "energy": "Kinetic energy of both bodies plus the block's gravitational energy, −m g D sin α.",
-    "h-vs-e": "The positions do not depend on t, so h = E and both are conserved.",
+    "h-vs-e": _h_is_e("The positions do not depend on t"),
     **_hamiltonian("the kinetic energy written with the inverse mass matrix, minus m g D sin α"),
     "cyclic-velocities": "Ẋ follows from the conserved p_X and the block's Ḋ.",
     "effective-potential": "At fixed p_X the slide D moves in a linear potential with a reduced inertia; the term p_X²/(2 (M + m)) is a constant (the kinetic energy the conserved momentum locks in), so only −m g D sin α pushes, and it has no minimum.",

@@ -2,7 +2,7 @@
 
 import sympy as sp
 
-from app.engine.action_step import TITLE
+from app.engine.action_step import FORCED_TITLE, TITLE
 from app.service.derivations import derivation_document
 
 
@@ -23,6 +23,8 @@ def test_forces_join_the_principle_as_their_work():
     rows = first["latex"].removeprefix(r"\begin{aligned}").removesuffix(r"\end{aligned}").split(r" \\ ")
     assert [r.split("&=")[0].strip() for r in rows] == ["S[q]", r"\delta S"]
     assert r"Q\cdot" not in derivation_document("simple-pendulum")["steps"][0]["latex"]
+    # prof-e 10: the title does not claim S is stationary over a text that says S alone is not
+    assert first["title"] == FORCED_TITLE and "stationary" not in first["title"]
 
 
 def test_a_kinetic_focus_is_possible_only_where_the_jacobi_equation_can_turn_back():

@@ -203,3 +203,15 @@ def test_initial_conditions_print_their_ranges_with_a_true_minus(client):
     page = client.get("/scenes/simple-pendulum").text
     assert "allowed: −3.142 to 3.142 rad" in page and "allowed: −10 to 10 rad/s" in page
     assert "allowed: -3.142" not in page
+
+
+@pytest.mark.parametrize("scene", ["simple-pendulum", "helix-bead", "incline-block", "tabletop-spring", "damped-pendulum"])
+def test_h_equals_e_is_not_given_as_the_reason_h_is_conserved(client, scene):
+    # prof-e 4: "The positions do not depend on t, so h = E and both are conserved." mixes two conditions
+    said = steps(client, scene)["h-vs-e"]["explanation"]
+    assert "so h = E" in said and "both are conserved" not in said and "so h = E and" not in said
+    # conservation has its own reason: no explicit t in L and no work by a non-conservative force (or drag's work)
+    assert ("L has no explicit t and no non-conservative force does work, so h is conserved" in said) is (
+        scene != "damped-pendulum"
+    )
+    assert ("the drag does work, so h (and E with it) decays" in said) is (scene == "damped-pendulum")
