@@ -128,6 +128,9 @@ _PARTIAL = re.compile(r"(-?)∂([A-Za-z_][A-Za-z0-9_]*)/∂([A-Za-z_][A-Za-z0-9_
 
 def _side(text: str, names: dict[sp.Symbol, str]) -> str:
     """One side of a correct formula: parsed and printed in textbook form, else typeset as written."""
+    # ±√…: both branches of a square root, the sign printed before the root
+    if text.startswith("±"):
+        return r"\pm " + _side(text[1:].strip(), names)
     if partial := _PARTIAL.fullmatch(text):
         sign, top, bottom = partial.groups()
         return ("- " if sign else "") + rf"\frac{{\partial {latex(top)}}}{{\partial {latex(bottom)}}}"
@@ -142,7 +145,17 @@ def _side(text: str, names: dict[sp.Symbol, str]) -> str:
     spelled = {s: "d" + latex(s.name[1:]) if _differential(s.name) else latex(s.name) for s in symbols.values()}
     table = {**spelled, **names}
     if isinstance(expr, sp.Tuple | tuple):
-        return r"\left(" + ", ".join(textbook.latex(e, table) for e in expr) + r"\right)"
+        raw = sp.sympify(text, locals={**symbols, **{f: getattr(sp, f) for f in _FUNCTIONS}}, evaluate=False)
+        return r"\left(" + ", ".join(_component(r, e, table) for r, e in zip(raw, expr, strict=True)) + r"\right)"
+    return textbook.latex(expr, table)
+
+
+def _component(raw: sp.Basic, expr: sp.Basic, table: dict[sp.Symbol, str]) -> str:
+    """One component of a correct vector: a plain product (R sin θ sin φ) keeps the factors' order as written,
+    the order a textbook prints a position in spherical coordinates; anything else in textbook form."""
+    factors = raw.args if isinstance(raw, sp.Mul) else ()
+    if factors and all(isinstance(f, sp.Symbol | sp.core.function.Application) for f in factors):
+        return " ".join(textbook.latex(f, table) for f in factors)
     return textbook.latex(expr, table)
 
 
@@ -167,7 +180,9 @@ def _errata(scene: Scene, names: dict[sp.Symbol, str]) -> list[dict[str, Any]]:
             "correct": e.correct,
             "reason": e.reason,
             # each formula sits in a table cell, a third of the page: broken to fit it
-            "chapter_latex": single(ascii_tex(e.chapter), CELL_EMS),
+            # a quotation of the chapter's words is prose, never typeset as a formula
+            "chapter_words": e.words,
+            "chapter_latex": "" if e.words else single(ascii_tex(e.chapter), CELL_EMS),
             "correct_latex": single(correct_tex(e.correct, names), CELL_EMS),
         }
         for e in scene.errata

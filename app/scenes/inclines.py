@@ -43,13 +43,14 @@ INCLINE_BLOCK = Scene(
     errata=(
         Erratum(
             # words only: the chapter's mistake here is its statement, not a formula
-            chapter="the statement repeats the helix bead problem word for word",
+            chapter="The statement of the helix bead problem, repeated word for word.",
             correct="L = m*X_dot**2/2 - m*g*X*sin(alpha)",
             reason=(
                 "The example's statement repeats the helix bead problem before it word for word, while its solution treats "
                 "a block on a fixed frictionless incline; that block's Lagrangian is the one given here."
             ),
             check="lagrangian",
+            words=True,
         ),
         Erratum(
             chapter="m a = -m g sin(alpha) in the horizontal direction",

@@ -58,7 +58,8 @@ SIMPLE_PENDULUM = Scene(
             # the torque as Γ (Taylor's letter): τ on this page is the action panel's duration
             correct="Gamma = ∂L/∂theta = -m*g*R*sin(theta)",
             reason=(
-                "I ω is an angular momentum, and √(g/R) is a frequency rather than the bob's angular velocity. "
+                "I ω is an angular momentum, not a torque, and the ω put in, g/R, is not even an angular velocity: "
+                "its unit is s⁻², not s⁻¹. "
                 "The torque of gravity about the pivot, written Γ here (τ on this page is a duration), is "
                 "∂L/∂θ = −m g R sin θ: it depends on the angle and vanishes at the bottom."
             ),

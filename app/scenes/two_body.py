@@ -63,13 +63,14 @@ TABLETOP_SPRING = Scene(
         ),
         Erratum(
             chapter="r_dot = sqrt(2E/m - U_eff(r))",
-            correct=f"r_dot = sqrt(2*(E_r - ({_U_EFF}))/m)",
+            # E is the energy, the constant of this first integral; both signs of the root are motions
+            correct=f"r_dot = ±sqrt(2*(E - ({_U_EFF}))/m)",
             reason="Solving E = m ṙ²/2 + U_eff for ṙ divides U_eff by m as well: ṙ = ±√(2(E − U_eff)/m).",
             check="radial-speed:r",
         ),
         Erratum(
             chapter="t = integral of sqrt(2E/m - U_eff(r)) dr",
-            correct=f"dt/dr = 1/sqrt(2*(E_r - ({_U_EFF}))/m)",
+            correct=f"dt/dr = ±1/sqrt(2*(E - ({_U_EFF}))/m)",
             reason="Separating dr/dt = ṙ(r) gives dt = dr/ṙ(r): the square root belongs in the denominator.",
             check="time-integrand",
         ),

@@ -126,6 +126,8 @@ class Erratum:
     correct: str
     reason: str
     check: str
+    # the chapter's fault is in its words (its statement), not a formula: ``chapter`` is prose, shown as text
+    words: bool = False
 
 
 @dataclass(frozen=True)

@@ -53,10 +53,10 @@ def engine_result(scene_id: str, check: str):
     if kind == "energy-minus-h":
         return d.energetics.energy_minus_h
     if kind == "radial-speed":
-        # E_r = m_eff r_dot^2 / 2 + U_eff, solved for r_dot (the outgoing branch)
-        return sp.sqrt(2 * (S("E_r") - red.effective_potential) / red.effective_mass)
+        # E = m_eff r_dot^2 / 2 + U_eff (the page's letter for the engine's E_r), solved for r_dot (outgoing branch)
+        return sp.sqrt(2 * (S("E") - red.effective_potential) / red.effective_mass)
     if kind == "time-integrand":
-        return red.time_integral.function
+        return red.time_integral.function.xreplace({S("E_r"): S("E")})
     if kind == "omega-squared":
         return red.equilibria[int(args[0])].omega_squared
     if kind == "taylor-coefficient":
@@ -80,7 +80,8 @@ def test_erratum_correct_formula_is_the_engines(scene_id, index):
     e = SCENES[scene_id].errata[index]
     assert e.chapter and e.reason and " = " in e.correct
     # the formula after the last '=' is the one compared
-    correct = read(e.correct.rsplit("=", 1)[1])
+    # ±: both branches of a root; the outgoing one is compared
+    correct = read(e.correct.rsplit("=", 1)[1].strip().removeprefix("±"))
     ours = engine_result(scene_id, e.check)
     kind = e.check.split(":")[0]
     if kind == "position" and isinstance(ours, tuple):
@@ -178,3 +179,26 @@ def test_the_chapters_garbled_formulas_are_quoted_as_printed(client):
     assert pendulum[1]["correct_latex"].startswith(r"\Gamma = \frac{\partial L}{\partial \theta}")
     # the correction is the small-swing equation, not the chapter's own equation again
     assert pendulum[2]["correct_latex"] == r"\ddot{\theta} = - \frac{g}{R} \theta"
+
+
+def test_the_tabletop_radial_speed_has_both_signs_and_the_pages_letter(client):
+    # prof-e 19: an undefined E_r and no ± in the "Correct" column, beside a "Why" that writes ±√(2(E − U_eff)/m)
+    errata = client.get("/api/scenes/tabletop-spring/derivation").json()["errata"]
+    speed, integrand = (e["correct_latex"] for e in errata if e["chapter"].startswith(("r_dot", "t = integral")))
+    assert speed.startswith(r"\dot{r} = \pm \sqrt{") and integrand.startswith(r"\frac{dt}{dr} = \pm ")
+    assert "E_{r}" not in speed + integrand and "2 E -" in speed.replace("\\left(", "")
+
+
+def test_errata_quote_words_as_words_and_vectors_in_textbook_order(client):
+    # prof-e 15: a remark about the chapter's statement typeset in the maths font
+    first = client.get("/api/scenes/incline-block/derivation").json()["errata"][0]
+    assert first["chapter_words"] is True and first["chapter_latex"] == ""
+    page = client.get("/scenes/incline-block").text
+    assert '<td data-label="The chapter writes">The statement of the helix bead problem, repeated word for word.</td>' in page
+    # prof-e 23: (R sin θ cos φ, R sin θ sin φ, R cos θ), not R sin φ sin θ
+    sphere = client.get("/api/scenes/spherical-pendulum/derivation").json()["errata"]
+    position = next(e["correct_latex"] for e in sphere if e["correct"].startswith("r = ("))
+    assert r"R \sin {\theta} \sin {\varphi}" in position and r"\sin {\varphi} \sin {\theta}" not in position
+    # prof-e 7: the torque's reason speaks of the ω the chapter put in (g/R, in s⁻²), not of a √(g/R) it never wrote
+    torque = next(e for e in client.get("/api/scenes/simple-pendulum/derivation").json()["errata"] if "tau" in e["chapter"])
+    assert "√(g/R)" not in torque["reason"] and "s⁻²" in torque["reason"]

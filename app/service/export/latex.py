@@ -183,7 +183,13 @@ def latex(source: Source) -> str:
         for e in source.errata:
             # both formulas typeset, as on the page (never as code)
             chapter, correct = e.get("chapter_latex"), e.get("correct_latex")
-            if chapter and correct:
+            if e.get("chapter_words") and correct:
+                # the chapter's fault is in its words: they are quoted as prose
+                body.append(
+                    rf"\item {latex_text(e['chapter'])} Correct is {_display([correct])}"
+                    + latex_text(e["reason"])
+                )
+            elif chapter and correct:
                 body.append(
                     rf"\item The chapter writes {_display([chapter])} correct is {_display([correct])}"
                     + latex_text(e["reason"])
