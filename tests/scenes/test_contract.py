@@ -34,7 +34,10 @@ def test_scene_block_and_errata(scene_id):
     assert all(any(k == a or k.startswith(a + ":") for k in keys) for a in s.answers), (s.answers, keys)
     served = [{k: e[k] for k in ("chapter", "correct", "reason")} for e in doc["errata"]]
     assert served == [{"chapter": e.chapter, "correct": e.correct, "reason": e.reason} for e in s.errata]
-    assert all(e["chapter_latex"] and e["correct_latex"] for e in doc["errata"])
+    # every formula typeset; a quotation of the chapter's words (not a formula) is prose, never typeset
+    assert all((e["chapter_words"] or e["chapter_latex"]) and e["correct_latex"] for e in doc["errata"])
+    assert [e["chapter_words"] for e in doc["errata"]] == [e.words for e in s.errata]
+    assert all(not e["chapter_latex"] for e in doc["errata"] if e["chapter_words"])
 
 
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
