@@ -200,7 +200,10 @@ def _sometimes(
             _row(
                 r"m_\text{eff}",
                 "m_eff",
-                f"effective inertia of {unicode(q.name)}, ∂²L/∂{unicode(q.name + '_dot')}²",
+                # with conserved momenta held, m_eff is not ∂²L/∂q̇² (the wedge's m): it is the inertia left in the
+                # reduced energy ½ m_eff q̇² + U_eff once the cyclic velocities are eliminated
+                f"effective inertia of {unicode(q.name)}: the mass {unicode(q.name)} moves with once the conserved "
+                "momenta are held fixed (the inertia in its reduced energy)",
                 _unit(m_dims),
                 "derived",
             )

@@ -31,6 +31,7 @@ from app.service.compiled import Compiled
 from app.service.derivations import PROCESS_SCENES, Scenes, held
 from app.service.gates import GATES, Gates, slot
 from app.service.simulate_request import check_number, initial_state, parameter_vector
+from app.service.sentences import as_sentence
 
 EPSILONS_MAX = 101  # varied paths per request
 K_MAX = 50  # the highest sine shape k offered
@@ -119,7 +120,7 @@ def action_of_derivation(
             "coordinates": names,
             "parameters": list(system.parameter_names),
         },
-        "warnings": result.warnings,
+        "warnings": [as_sentence(w) for w in result.warnings],
     }
 
 

@@ -11,6 +11,7 @@ import numpy as np
 from app.numerics.observables import Observables, summarize
 from app.numerics.system import NumericSystem
 from app.service.rounding import as_series
+from app.service.sentences import as_sentence
 from app.service.trust import judge
 
 
@@ -86,6 +87,8 @@ def document(
     }
     if not observed.finite:
         warnings.append("some values are not finite (the motion reached a singular point); they are null")
+    # each warning is served as a sentence a reader can take on its own
+    stats["warnings"] = [as_sentence(w) for w in warnings]
     return {
         **observed.series,
         "stats": _finite(stats),

@@ -370,7 +370,7 @@ export class ActionPanel {
     const curvature = unit ? ` J·s/${unit}²` : "";
     this.readout.textContent = `S of the true path = ${fmt(S0)} J·s; ${yours}. `
       + `d²S/dε² at ε = 0 is ${fmt(second)}${curvature}. ${verdict}${focusWords ? ` ${focusWords}` : ""}`
-      + (s ? ` More accurately, with a finer quadrature: S to within ±${fmt(s.error_estimate)} J·s, and dS/dε at ε = 0 ${flatWithin(s) ? "≈ 0 (within that error)" : `= ${fmt(s.first_variation)} J·s${unit ? `/${unit}` : ""}`}.${s.warnings?.length && !this.data.forced ? ` Note: ${s.warnings.join("; ")}.` : ""}` : " Computed in your browser; more accurate figures follow.");
+      + (s ? ` More accurately, with a finer quadrature: S to within ±${fmt(s.error_estimate)} J·s, and dS/dε at ε = 0 ${flatWithin(s) ? "≈ 0 (within that error)" : `= ${fmt(s.first_variation)} J·s${unit ? `/${unit}` : ""}`}.${s.warnings?.length && !this.data.forced ? ` Note: ${s.warnings.join(" ")}` : ""}` : " Computed in your browser; more accurate figures follow.");
     if (this.summary && s) {
       table(this.summary, `S(ε) for the shape n = ${this.shape}, τ = ${fmt(T)} s`, ["ε", "S (J·s)"], s.epsilons.map((e, i) => [fmt(e), fmt(s.action[i])]));
     }

@@ -215,3 +215,10 @@ def test_h_equals_e_is_not_given_as_the_reason_h_is_conserved(client, scene):
         scene != "damped-pendulum"
     )
     assert ("the drag does work, so h (and E with it) decays" in said) is (scene == "damped-pendulum")
+
+
+def test_m_eff_is_defined_as_what_the_results_print(client):
+    # prof-f: the wedge's Symbols row said "∂²L/∂Ḋ²" (that is m) beside m_eff = (M + m sin²α) m/(M + m)
+    page = client.get("/scenes/movable-incline").text
+    assert "∂²L/∂Ḋ²" not in page
+    assert "effective inertia of D: the mass D moves with once the conserved momenta are held fixed" in page
