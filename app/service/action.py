@@ -30,8 +30,8 @@ from app.service.cache import Recent
 from app.service.compiled import Compiled
 from app.service.derivations import PROCESS_SCENES, Scenes, held
 from app.service.gates import GATES, Gates, slot
-from app.service.simulate_request import check_number, initial_state, parameter_vector
 from app.service.sentences import as_sentence
+from app.service.simulate_request import check_number, initial_state, parameter_vector
 
 EPSILONS_MAX = 101  # varied paths per request
 K_MAX = 50  # the highest sine shape k offered
