@@ -32,10 +32,10 @@ def test_the_top_is_at_pi_inside_the_wrapped_interval(page):
 def test_a_damped_run_names_only_the_level_it_starts_on(page):
     # prof-c 5: "Its level H = 9.116 J lies below the separatrix" for a run that crosses the level sets
     text = _readout(page, "damped-pendulum")
-    assert "It starts on the level H = " in text and "below the separatrix" in text
+    assert "It starts on the level h = " in text and "below the separatrix" in text
     assert "Its level" not in text and "swings back and forth" not in text
     # the undamped pendulum keeps its level
-    assert "Its level H = " in _readout(page, "simple-pendulum")
+    assert "Its level h = " in _readout(page, "simple-pendulum")
 
 
 def _small_oscillations(page, scene_id):
@@ -50,3 +50,19 @@ def test_the_tabletop_frequency_is_said_to_be_exact_at_every_amplitude(page):
     text = _small_oscillations(page, "tabletop-spring")
     assert "exact at every amplitude" in text and "goes to zero" not in text
     assert "holds as the amplitude goes to zero" in _small_oscillations(page, "simple-pendulum")
+
+
+def test_an_unbounded_run_is_not_said_to_swing(page):
+    # prof-f 16: at ω = 6 rad/s (ω² > 2gα) U = (gα − ω²/2) m ρ² has its only maximum at ρ = 0, where h = 0;
+    # the bead starts beyond it and runs off, which the caption said "swings back and forth" beside a
+    # sampled separatrix of −2.406 × 10⁻⁴ J
+    page.goto("/scenes/rotating-parabola")
+    page.locator("#panel-phase").scroll_into_view_if_needed()
+    page.wait_for_function(LEVELS)
+    page.fill("#ctl-omega", "6")
+    page.press("#ctl-omega", "Enter")
+    page.wait_for_function("document.querySelector('#panel-phase .readout').textContent.includes('separatrix')")
+    text = page.locator("#panel-phase .readout").text_content()
+    assert "below the separatrix (0 J)" in text and "it runs off to infinity" in text
+    assert "swings back and forth" not in text
+    assert page.locator("#panel-phase").get_attribute("data-separatrix") == "0"
