@@ -156,7 +156,8 @@ export class PhasePanel extends PreviewPanel {
 
   draw(run) {
     this.run = run;
-    const m = this.reducible ? model(run) : null;
+    // with ∂L/∂t ≠ 0, h(q, q̇) changes along the run: its level sets (drawn at one instant) are followed by no orbit
+    const m = this.reducible && !run.data.time_dependent ? model(run) : null;
     if (m) this.drawLevels(run, m); else this.drawProjection(run);
   }
 
@@ -169,8 +170,10 @@ export class PhasePanel extends PreviewPanel {
     react(this, [{ type: "scatter", mode: "lines", x: path.x, y: path.v, name: "this run", line: { color: COLORS.T, width: 1.5 } }],
       layout({ hovermode: "closest", xaxis: axis(titled(lq, unit), angle ? { range: [-Math.PI, Math.PI] } : {}), yaxis: axis(titled(run.data.labels[q + "_dot"], rateUnit(run.data, q))) }));
     this.section.dataset.separatrix = "";
-    this.readout.textContent = `${lq} against its rate, for this run: with more than one coordinate moving, the orbit may `
-      + `cross itself, and no curves of constant energy can be drawn in this plane.${angle ? " The angle is shown in (−π, π]." : ""}`;
+    const why = run.data.time_dependent
+      ? "L depends explicitly on time (∂L/∂t ≠ 0), so h is not conserved: it changes along the run, the orbit may cross itself, and no curves of constant h are drawn, since no run follows one."
+      : "with more than one coordinate moving, the orbit may cross itself, and no curves of constant energy can be drawn in this plane.";
+    this.readout.textContent = `${lq} against its rate, for this run: ${why}${angle ? " The angle is shown in (−π, π]." : ""}`;
     seriesTable(this.summary, `Phase portrait of ${lq}`, run.t, [{ name: lq, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[q + "_dot"], values: run.state[`${q}_dot`] }]);
   }
 
