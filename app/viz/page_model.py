@@ -97,10 +97,15 @@ def letter_of(doc: dict[str, Any], meaning: str, default: str, form: str = "late
     )
 
 
+def depends_on_time(doc: dict[str, Any]) -> bool:
+    """Whether L depends explicitly on time (∂L/∂t ≠ 0): then h changes along a run and has no level sets to follow."""
+    return (doc.get("explicit_time_derivative") or {}).get("sympy", "0") != "0"
+
+
 def nothing_conserved(doc: dict[str, Any]) -> str:
     """Why nothing is conserved, naming only the causes this system has: L depends on time, a force does work."""
     causes = []
-    if (doc.get("explicit_time_derivative") or {}).get("sympy", "0") != "0":
+    if depends_on_time(doc):
         causes.append("L depends explicitly on time (∂L/∂t ≠ 0)")
     if doc.get("generalized_forces"):
         on = ", ".join(unicode(q) for q in doc["generalized_forces"])
@@ -433,6 +438,7 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bo
         "nothing_conserved": nothing_conserved(doc),
         "h_equals_e": doc["hamiltonian_equals_energy"],
         "forced": bool(doc.get("generalized_forces")),
+        "time_dependent": depends_on_time(doc),
         # whether a true path can reach a kinetic focus (the action panel says none exists where it cannot)
         "kinetic_focus_possible": _focus_possible(doc),
         # each generalized force Q that no potential describes, by coordinate (the action panel's ∫ Q δq dt)

@@ -63,7 +63,7 @@ export function levelCurve(V, m, E, xs) {
 }
 
 /** Local minima and maxima of V on the grid (cyclic for an angle over a whole turn). */
-function extremes(xs, V, cyclic) {
+function extremes(xs, V, Vf, cyclic) {
   const n = cyclic ? xs.length - 1 : xs.length; // the last point of a whole turn repeats the first
   const out = [];
   for (let k = 0; k < n; k++) {
@@ -74,10 +74,29 @@ function extremes(xs, V, cyclic) {
     let x = curve !== 0 ? xs[k] - (h * (c - a)) / (2 * curve) : xs[k];
     if (Math.abs(x - xs[k]) > h) x = xs[k];
     if (Math.abs(x) < 1e-3 * h) x = 0;
-    if (b < a && b <= c) out.push({ x, V: b, stable: true });
-    else if (b > a && b >= c) out.push({ x, V: b, stable: false });
+    // the level is U at the equilibrium itself (the grid value beside it is off by ½ U''·(x − x_k)²)
+    const level = Number.isFinite(Vf(x)) ? Vf(x) : b;
+    if (b < a && b <= c) out.push({ x, V: level, stable: true });
+    else if (b > a && b >= c) out.push({ x, V: level, stable: false });
   }
   return out;
+}
+
+/**
+ * Whether U rises above the level E somewhere on one side (dir = ±1) of x0: a turning point there.
+ * In one dimension the motion is bounded exactly when it has a turning point on each side.  An angle
+ * that meets none within a whole turn goes round; a length goes on to infinity unless U climbs back
+ * above E somewhere beyond (probed out to 2⁴⁰ times the view); a length that cannot be negative
+ * meets a wall at 0.  U undefined (outside the configuration space) is a wall too.
+ */
+export function turnsBack(Vf, E, x0, dir, { angle = false, nonnegative = false, span = 1 } = {}) {
+  const above = (x) => { const y = Vf(x); return !Number.isFinite(y) || y > E; };
+  const dense = (reach) => Array.from({ length: 960 }, (_, k) => x0 + (dir * reach * (k + 1)) / 960);
+  if (angle) return dense(TAU).some(above);
+  if (nonnegative && dir < 0) return true;
+  if (dense(span).some(above)) return true;
+  for (let k = 0; k <= 40; k++) if (above(x0 + dir * span * 2 ** k)) return true;
+  return false;
 }
 
 function padded(values, nonnegative) {
@@ -119,7 +138,7 @@ function model(run) {
   const xs = Array.from({ length: GRID }, (_, k) => lo + ((hi - lo) * k) / (GRID - 1));
   const V = xs.map((x) => { const y = Vf(x); return Number.isFinite(y) ? y : NaN; });
   const m = xs.map((x) => { const y = Mf(x); return Number.isFinite(y) ? y : NaN; });
-  return { r, angle, turn, xs, V, m, values, rates, level, lo, hi, held };
+  return { r, angle, turn, xs, V, m, values, rates, level, lo, hi, held, Vf, nonnegative: data.nonnegative.includes(r) };
 }
 
 export class PhasePanel extends PreviewPanel {
@@ -139,7 +158,8 @@ export class PhasePanel extends PreviewPanel {
 
   draw(run) {
     this.run = run;
-    const m = this.reducible ? model(run) : null;
+    // with ∂L/∂t ≠ 0, h(q, q̇) changes along the run: its level sets (drawn at one instant) are followed by no orbit
+    const m = this.reducible && !run.data.time_dependent ? model(run) : null;
     if (m) this.drawLevels(run, m); else this.drawProjection(run);
   }
 
@@ -152,8 +172,10 @@ export class PhasePanel extends PreviewPanel {
     react(this, [{ type: "scatter", mode: "lines", x: path.x, y: path.v, name: "this run", line: { color: COLORS.T, width: 1.5 } }],
       layout({ hovermode: "closest", xaxis: axis(titled(lq, unit), angle ? { range: [-Math.PI, Math.PI] } : {}), yaxis: axis(titled(run.data.labels[q + "_dot"], rateUnit(run.data, q))) }));
     this.section.dataset.separatrix = "";
-    this.readout.textContent = `${lq} against its rate, for this run: with more than one coordinate moving, the orbit may `
-      + `cross itself, and no curves of constant energy can be drawn in this plane.${angle ? " The angle is shown in (−π, π]." : ""}`;
+    const why = run.data.time_dependent
+      ? "L depends explicitly on time (∂L/∂t ≠ 0), so h is not conserved: it changes along the run, the orbit may cross itself, and no curves of constant h are drawn, since no run follows one."
+      : "with more than one coordinate moving, the orbit may cross itself, and no curves of constant energy can be drawn in this plane.";
+    this.readout.textContent = `${lq} against its rate, for this run: ${why}${angle ? " The angle is shown in (−π, π]." : ""}`;
     seriesTable(this.summary, `Phase portrait of ${lq}`, run.t, [{ name: lq, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[q + "_dot"], values: run.state[`${q}_dot`] }]);
   }
 
@@ -162,7 +184,7 @@ export class PhasePanel extends PreviewPanel {
     this.angle = angle; this.r = r;
     const path = trajectory(m.values, m.rates, angle);
     const E0 = m.level[0];
-    const found = extremes(xs, V, m.turn);
+    const found = extremes(xs, V, m.Vf, m.turn);
     const saddles = found.filter((e) => !e.stable);
     // the separatrix: the level of the highest unstable equilibrium in view (where the motion changes kind)
     const Es = saddles.length ? Math.max(...saddles.map((e) => e.V)) : null;
@@ -190,12 +212,20 @@ export class PhasePanel extends PreviewPanel {
     this.equilibria = found;
     this.section.dataset.separatrix = Es === null ? "" : String(Es);
     this.section.dataset.xrange = JSON.stringify([lo, hi]);
+    // bounded or not is decided by U itself: a turning point (U > h) on each side of the start, or none on one side
+    const x0 = m.values[0], reach = { angle, nonnegative: m.nonnegative, span: hi - lo };
+    const free = [-1, 1].filter((dir) => !turnsBack(m.Vf, E0, x0, dir, reach));
+    const fate = !free.length ? "it swings back and forth"
+      : angle ? "it goes over the top, round and round"
+      : `the potential never climbs back to this level ${free[0] > 0 ? "beyond" : "below"} ${lr} = ${fmt(x0)} ${unit}, so nothing turns it back: it runs off to infinity`;
+    const relation = Es === null ? "" : ` ${E0 > Es ? "above" : "below"} the separatrix (${fmt(Es)} J)`;
     // a dissipative run has no level of its own: only the level it starts on (it then crosses the level sets)
-    const kind = Es === null ? "" : run.data.forced
-      ? ` It starts on the level h = ${fmt(E0)} J, ${E0 > Es ? "above" : "below"} the separatrix (${fmt(Es)} J).`
-      : E0 > Es
-      ? (m.turn ? ` Its level h = ${fmt(E0)} J lies above the separatrix (${fmt(Es)} J): it goes over the top, round and round.` : ` Its level h = ${fmt(E0)} J lies above the separatrix (${fmt(Es)} J).`)
-      : ` Its level h = ${fmt(E0)} J lies below the separatrix (${fmt(Es)} J): it swings back and forth.`;
+    const kind = run.data.forced
+      ? (Es === null ? "" : ` It starts on the level h = ${fmt(E0)} J,${relation}.`)
+      : Es === null && !free.length ? ""
+      : Es === null ? ` Its level is h = ${fmt(E0)} J: ${fate}.`
+      : !free.length && E0 > Es && !m.turn ? ` Its level h = ${fmt(E0)} J lies${relation}.`
+      : ` Its level h = ${fmt(E0)} J lies${relation}: ${fate}.`;
     const forced = run.data.forced ? " A non-conservative force acts, so the run crosses the level sets instead of following one." : "";
     // an angle's top is at θ = π, inside the wrapped interval (−π, π] (−π is the same point, outside it)
     // a value with its unit (0 and π need none)

@@ -67,3 +67,19 @@ def test_a_portrait_without_equilibria_says_it_has_none(page):
     for scene_id in ("helix-bead", "incline-block"):
         text = _readout(page, scene_id)
         assert "No equilibrium lies in view, so there are no dots and no separatrix." in text, scene_id
+
+
+def test_an_unbounded_run_is_not_said_to_swing(page):
+    # prof-f 16: at ω = 6 rad/s (ω² > 2gα) U = (gα − ω²/2) m ρ² has its only maximum at ρ = 0, where h = 0;
+    # the bead starts beyond it and runs off, which the caption said "swings back and forth" beside a
+    # sampled separatrix of −2.406 × 10⁻⁴ J
+    page.goto("/scenes/rotating-parabola")
+    page.locator("#panel-phase").scroll_into_view_if_needed()
+    page.wait_for_function(LEVELS)
+    page.fill("#ctl-omega", "6")
+    page.press("#ctl-omega", "Enter")
+    page.wait_for_function("document.querySelector('#panel-phase .readout').textContent.includes('separatrix')")
+    text = page.locator("#panel-phase .readout").text_content()
+    assert "below the separatrix (0 J)" in text and "it runs off to infinity" in text
+    assert "swings back and forth" not in text
+    assert page.locator("#panel-phase").get_attribute("data-separatrix") == "0"

@@ -50,3 +50,21 @@ def test_on_a_phone_every_cell_of_the_form_reads_back_whole(browser, live_server
     assert cut == []
     page.screenshot(path=artifacts / "playground-phone-form.png", full_page=True)
     context.close()
+
+
+def test_a_driven_pendulum_draws_no_level_sets_of_h(page):
+    # prof-f: L depends on time, yet the phase portrait drew level sets of h, a separatrix and
+    # "it swings back and forth"; h changes along the run, so no orbit follows a level set
+    from tests.web.test_playground_prof_d import DRIVEN
+
+    page.goto(address(DRIVEN))
+    page.wait_for_selector(READY, state="attached", timeout=120_000)
+    page.locator("#panel-phase").scroll_into_view_if_needed()
+    plot = page.locator("#panel-phase .plot")
+    page.wait_for_function("(el) => el.data && el.data.length > 0", arg=plot.element_handle())
+    names = page.evaluate("(el) => el.data.map((t) => t.name)", plot.element_handle())
+    assert names == ["this run"]
+    text = page.inner_text("#panel-phase .readout")
+    assert "L depends explicitly on time (∂L/∂t ≠ 0), so h is not conserved" in text
+    assert "separatrix" not in text and "swings back and forth" not in text
+    assert page.console_errors == []
