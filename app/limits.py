@@ -75,6 +75,8 @@ PIECE_WORK = 2_000  # 0.1 s: what the piece under a named mistake is (the correc
 # work, once per version of the engine (kept on disk), never a student's wait (a check waits for it at most
 # Settings.check_seconds, then says the server is busy while the build goes on).
 CATALOGUE_SECONDS = 180.0
+# a check answered "the server is busy" asks the page to try again after this long
+BUSY_RETRY_SECONDS = 2
 RUN_SECONDS = 2.0  # one run of a work-precision sweep; slower tolerances of that method are skipped
 GIVE_WAY_SECONDS = 0.5  # the longest the warm-up waits for quiet before its next step
 BACKOFF_SECONDS = 5.0  # a client's pause after its second job in a row out of time or memory; doubles after

@@ -57,7 +57,7 @@ from app.engine.exercises import exercise_json
 from app.engine.parse import Parsed
 from app.engine.user_system import UserSystem
 from app.errors import OverCapacity, WorkerFailed
-from app.limits import CATALOGUE_SECONDS
+from app.limits import BUSY_RETRY_SECONDS, CATALOGUE_SECONDS
 from app.service import derivations
 from app.service.check_jobs import (
     WRONG,
@@ -83,7 +83,6 @@ MAX_ANSWER_CACHE = 4096
 MAX_SYSTEM_PROBLEMS = 256  # user systems' problems kept (pickles of tens of kB each)
 # what a student reads when a check runs into the hard limit: what happened, and what to do
 BUSY = "the server is busy and this check took too long; your answer is kept: press Check again"
-BUSY_RETRY_SECONDS = 2
 
 SceneKey = tuple[str, str, "str | None"]
 
