@@ -66,9 +66,12 @@ class Derivation:
 
     @property
     def accelerations(self) -> dict[str, sp.Expr]:
-        """Each coordinate's acceleration (q̈ = …), where the engine solved for them in closed form."""
-        names = self.derived.table.names
-        return {f"{q}_ddot": a for q, a in zip(names, self.derived.equations.accelerations, strict=True)}
+        """Each coordinate's acceleration (q̈ = …), where the engine solved for them in closed form; empty where it
+        did not (a large system: ``equations`` still hold them)."""
+        names, accelerations = self.derived.table.names, self.derived.equations.accelerations
+        if len(accelerations) != len(names):  # no closed form (a large system): solve 𝓜 q̈ = f numerically
+            return {}
+        return {f"{q}_ddot": a for q, a in zip(names, accelerations, strict=True)}
 
     @property
     def steps(self) -> list[Step]:
