@@ -46,8 +46,9 @@ export function drawWheels(player, ctx, i, dpr, slack) {
   let count = 0;
   for (const w of player.wheels) {
     const [x, y] = player.at(w.at, i);
-    const env = player.run.envAt(i), r = Math.abs(w.r(env)) * player.camera.frame.scale;
-    if (!Number.isFinite(r)) continue;
+    // a frame not laid out yet (a folded panel's canvas) may carry a negative scale: the wheel's size is its magnitude
+    const env = player.run.envAt(i), r = Math.abs(w.r(env) * player.camera.frame.scale);
+    if (!Number.isFinite(r) || r === 0) continue;
     ctx.fillStyle = "#fff"; ctx.strokeStyle = "#6b747e"; ctx.lineWidth = 2 * dpr;
     ctx.beginPath(); ctx.arc(x, y, r, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
     ctx.fillStyle = "#6b747e"; ctx.beginPath(); ctx.arc(x, y, 3 * dpr, 0, 2 * Math.PI); ctx.fill();
