@@ -52,7 +52,8 @@ def test_a_refused_text_clears_the_last_rendering_and_shows_the_parsers_message(
     box = page.locator(BOX + " input[name]")
     box.fill("m1*l1**2*theta1_dot**2/2")
     page.wait_for_function(f"document.querySelector('{BOX}').dataset.typeset === 'read'")
-    shown = page.locator(BOX + " .practice-preview-math annotation").text_content()
+    # set at display size so that it may break across lines: what is typeset follows \displaystyle
+    shown = page.locator(BOX + " .practice-preview-math annotation").text_content().removeprefix("\\displaystyle ")
     assert r"\dot{\theta}_{1}^{2}" in shown and shown.startswith("L =")
     # One input event: typed key by key, a slow machine reads the text on the way
     # ("... + 2^theta1" is read and would become the last good rendering).
@@ -75,7 +76,7 @@ def test_the_playgrounds_box_reads_the_declared_systems_names(page):
     page.wait_for_selector(box)
     page.locator(box + " input[name]").fill("(F*cos(w*t) - b*x_dot - k*x)/m")
     page.wait_for_function(f"document.querySelector('{box}').dataset.typeset === 'read'")
-    shown = page.locator(box + " .practice-preview-math annotation").text_content()
+    shown = page.locator(box + " .practice-preview-math annotation").text_content().removeprefix("\\displaystyle ")
     assert shown.startswith(r"\ddot{x} =") and r"\dot{x}" in shown
     page.locator(box + " input[name]").fill("k*y")  # y is no name of this system
     page.wait_for_function(f"document.querySelector('{box}').dataset.typeset === 'refused'")
