@@ -12,10 +12,8 @@ from fastapi import APIRouter, Query, Request
 from fastapi.responses import HTMLResponse
 
 from app.errors import UnknownScene
-from app.service import derivations
 from app.web.deps import ChapterDep, PagesDep
-from app.web.errors import problem
-from app.web.pages import page_model
+from app.web.pages import page_model, unknown_scene
 from app.web.templating import templates
 
 router = APIRouter(tags=["pages"], include_in_schema=False)
@@ -37,10 +35,7 @@ def embed_scene(
     try:
         model = page_model(scene_id, pages, chapter)
     except UnknownScene as exc:
-        known = [{"id": s.id, "title": s.title, "url": f"/embed/scenes/{s.id}"} for s in derivations.SCENES.values()]
-        return templates.TemplateResponse(
-            request, "404.html", {"missing": exc.scene_id[:60], "known": known}, status_code=problem(exc).status
-        )
+        return unknown_scene(request, exc, "/embed/scenes/")
     allowed = embeddable(model)
     if panel is not None and panel not in allowed:
         context = {"missing": panel[:40], "known": [], "embed": {"scene": model["info"], "panels": allowed}}

@@ -76,15 +76,20 @@ def scenes_index() -> RedirectResponse:
     return RedirectResponse("/", status_code=307)
 
 
+def unknown_scene(request: Request, exc: UnknownScene, prefix: str) -> HTMLResponse:
+    """The 404 page of a scene id that does not exist, listing the scenes there are as ``prefix`` + id."""
+    known = [{"id": s.id, "title": s.title, "url": f"{prefix}{s.id}"} for s in derivations.SCENES.values()]
+    return templates.TemplateResponse(
+        request, "404.html", {"missing": exc.scene_id[:60], "known": known}, status_code=problem(exc).status
+    )
+
+
 @router.get("/scenes/{scene_id}", response_class=HTMLResponse)
 def scene_page_route(request: Request, scene_id: str, pages: PagesDep, chapter: ChapterDep) -> HTMLResponse:
     try:
         model = page_model(scene_id, pages, chapter)
     except UnknownScene as exc:
-        known = [{"id": s.id, "title": s.title, "url": f"/scenes/{s.id}"} for s in derivations.SCENES.values()]
-        return templates.TemplateResponse(
-            request, "404.html", {"missing": exc.scene_id[:60], "known": known}, status_code=problem(exc).status
-        )
+        return unknown_scene(request, exc, "/scenes/")
     # A scene page depends only on its model: render (and compress) it once per model, then serve the bytes.
     plain, compressed = pages.page(
         scene_id,

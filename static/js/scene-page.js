@@ -7,8 +7,7 @@
  * <script type="application/json" id="scene-data"> and data-* URLs on #simulation.
  */
 import { foldSteps, printReady, whenTypeset } from "./derivation.js";
-import { fetchJSON } from "./api.js";
-import { connectSimulation } from "./simulation.js";
+import { connectScene } from "./simulation.js";
 import { keyboardScroll } from "./scrollboxes.js";
 import { foldPanels } from "./fold.js";
 
@@ -20,17 +19,4 @@ keyboardScroll(document);
 foldPanels(document);
 
 const root = document.getElementById("simulation");
-if (root) {
-  connectSimulation({
-    form: document.getElementById("controls"),
-    root,
-    data,
-    urls: {
-      simulate: root.dataset.simulateUrl,
-      workPrecision: root.dataset.workPrecisionUrl,
-      modes: (parameters) => fetchJSON(root.dataset.modesUrl, { body: { parameters } }),
-      poincare: (request) => fetchJSON(root.dataset.poincareUrl, { body: request }),
-    },
-    status: document.getElementById("run-status"),
-  });
-}
+if (root) connectScene(root, data);

@@ -227,6 +227,22 @@ const painted = (source) => document.dispatchEvent(new CustomEvent("lagrange:pai
 /** About 60 samples per simulated second: smooth animation, compact arrays. */
 export const samplesFor = (tEnd) => Math.min(4000, Math.max(300, Math.round(60 * tEnd)));
 
+/** Bind a scene's simulation section (its data-* URLs) and page data: the scene page's and the embed page's. */
+export function connectScene(root, data) {
+  return connectSimulation({
+    form: document.getElementById("controls"),
+    root,
+    data,
+    urls: {
+      simulate: root.dataset.simulateUrl,
+      workPrecision: root.dataset.workPrecisionUrl,
+      modes: (parameters) => fetchJSON(root.dataset.modesUrl, { body: { parameters } }),
+      poincare: (request) => fetchJSON(root.dataset.poincareUrl, { body: request }),
+    },
+    status: document.getElementById("run-status"),
+  });
+}
+
 export function connectSimulation({ form, root, data, urls = {}, status, fetchRun = null, serial = false }) {
   const message = status.querySelector(".message");
   const warnings = status.querySelector(".warnings");
