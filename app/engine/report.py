@@ -9,6 +9,8 @@ and a scene's reasons (app/scenes/reasons.py) and the document's placement of st
 
 from __future__ import annotations
 
+import math
+
 import re
 from dataclasses import dataclass
 from typing import Any
@@ -59,7 +61,7 @@ class Printer:
         if isinstance(expr, sp.Expr) and expr.free_symbols:
             # n: the root's degree, the least common multiple of the exponents' denominators
             exponents = [e.exp for e in expr.atoms(sp.Pow) if e.exp.is_Rational and not e.exp.is_Integer]
-            n = sp.ilcm(*(int(e.q) for e in exponents)) if exponents else 1
+            n = math.lcm(*(int(e.q) for e in exponents))
             if n in (3, 4):
                 power = sp.powsimp(sp.expand_power_base(expr**n, force=True), force=True)
                 # |p|² is p² for a real p

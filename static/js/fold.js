@@ -13,7 +13,8 @@
  */
 export const PHONE = "(max-width: 40rem)";
 
-const phone = window.matchMedia ? window.matchMedia(PHONE) : { matches: false, addEventListener() {} };
+// (outside a browser, as when node imports a module for its tests, nothing is a phone)
+const phone = globalThis.window?.matchMedia ? window.matchMedia(PHONE) : { matches: false, addEventListener() {} };
 
 export function isFolded(section) {
   return phone.matches && section.classList.contains("folded");

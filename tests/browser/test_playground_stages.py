@@ -61,7 +61,9 @@ def test_a_triple_pendulum_shows_its_equations_before_the_rest(sized, artifacts)
     assert page.locator("#derivation").count() == 0
     progress = page.inner_text("#derive-progress")
     assert progress.startswith("Still working on:") and "normal modes" in progress and "Hamilton" in progress
-    assert page.locator("#results dd").first.locator(".katex").count() == 3
+    equations = page.locator("#results dd").first.locator(".math")
+    assert equations.count() == 3  # on a phone one is broken across lines: more than one .katex in it
+    assert all(equations.nth(i).locator(".katex").count() >= 1 for i in range(3))
     assert page.locator(".katex-error").count() == 0
     page.screenshot(path=artifacts / f"playground-stages-equations-{name}.png", full_page=False)
     if AXE.exists():  # the first stage's view on its own: no serious or critical violation (tests/browser/test_axe.py)
@@ -78,7 +80,8 @@ def test_a_triple_pendulum_shows_its_equations_before_the_rest(sized, artifacts)
     assert skipped >= 1 and "left out" in done  # a chain's accelerations stay M⁻¹f, with a note
     page.wait_for_selector('#run-status[data-state="ready"]', state="attached")  # the simulation is wired
     page.wait_for_function("document.body.dataset.katexErrors === '0'")
-    assert page.locator(".math .katex").count() == page.locator(".math").count()
+    # every formula typeset (one broken across lines on a phone holds several)
+    assert page.locator(".math:not(:has(.katex))").count() == 0
     page.screenshot(path=artifacts / f"playground-stages-whole-{name}.png", full_page=False)
     assert page.console_errors == []
 

@@ -118,9 +118,9 @@ SYSTEMS: dict[str, System] = {
     ),
     "symmetric-top-body-rates": System(
         coordinates=("phi", "theta", "psi"),
-        parameters=(p("I1", 1.0), p("I3", 0.5), p("M", 1.0), p("h", 0.2), G),
+        parameters=(p("I1", 1.0), p("I3", 0.5), p("M", 1.0), p("l", 0.2), G),
         kinetic=f"I1*({W1}**2 + {W2}**2)/2 + I3*{W3}**2/2",
-        potential="M*g*h*cos(theta)",
+        potential="M*g*l*cos(theta)",
     ),
     "yukawa": System(
         coordinates=("r", "theta"),
@@ -131,9 +131,9 @@ SYSTEMS: dict[str, System] = {
     ),
     "asymmetric-heavy-top": System(
         coordinates=("phi", "theta", "psi"),
-        parameters=(p("I1", 1.0), p("I2", 2.0), p("I3", 3.0), p("M", 1.0), p("h", 0.2), G),
+        parameters=(p("I1", 1.0), p("I2", 2.0), p("I3", 3.0), p("M", 1.0), p("l", 0.2), G),
         kinetic=f"I1*{W1}**2/2 + I2*{W2}**2/2 + I3*{W3}**2/2",
-        potential="M*g*h*cos(theta)",
+        potential="M*g*l*cos(theta)",
     ),
     "negative-kinetic-energy": System(
         # L = U - T: the oscillator's equations with both signs flipped

@@ -76,7 +76,10 @@ def test_the_wedges_momentum_is_grouped_by_velocity():
 
 
 def test_matrices_are_printed_in_textbook_order():
-    doc = derivation_document("simple-pendulum")
+    doc = derivation_document("double-pendulum")
     (modes,) = [s for s in doc["steps"] if s["key"] == "normal-modes:1"]
-    assert r"\left[\begin{matrix}m R^{2}\end{matrix}\right]" in modes["latex"]
-    assert "R^{2} m" not in modes["latex"]
+    assert r"\left[\begin{matrix}\left(m_{1} + m_{2}\right) l_{1}^{2} & m_{2} l_{1} l_{2}" in modes["latex"]
+    assert "l_{1}^{2} \\left(m_{1}" not in modes["latex"] and "l_{1} l_{2} m_{2}" not in modes["latex"]
+    # one coordinate: ω² itself, no 1×1 matrices
+    (one,) = [s for s in derivation_document("simple-pendulum")["steps"] if s["key"] == "normal-modes:1"]
+    assert r"\omega^2 &= \frac{g}{R}" in one["latex"] and "matrix" not in one["latex"]

@@ -11,8 +11,11 @@ def test_a_scene_mistake_is_named_and_its_follow_up_is_checked(client):
     assert wrong.status_code == 200, wrong.text
     body = wrong.json()
     assert body["mistake"]["key"] == "kinetic.velocity_part.ball.phi"
-    assert "φ̇" in body["mistake"]["name"] and r"\dot{\varphi}" in body["mistake"]["latex"]
-    assert body["partial"]["message"] == "Everything else in your T is right."
+    # the slip is named in words; the missing piece itself waits under "Show this step" (reveal)
+    assert "φ̇" in body["mistake"]["name"] and body["mistake"]["latex"] == ""
+    assert r"\dot{\varphi}" in body["reveal"]["piece"]
+    # one typed term: "everything else is right" would say nothing
+    assert body["partial"] is None
     question = body["follow_up"]
     assert question["key"] == body["mistake"]["key"] and "speed" in question["question"]
     # the follow-up, answered wrongly then rightly (either sign of a speed is its size)

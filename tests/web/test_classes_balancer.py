@@ -101,7 +101,8 @@ def test_a_lecture_behind_a_balancer_on_two_replicas(request, tmp_path):
         replicas = [stack.enter_context(server({**env, "LAGRANGE_DATA_DIR": str(tmp_path / str(i))})) for i in range(2)]
         (a, _), (b, process_b) = replicas
         lb = stack.enter_context(balancer([a, b]))
-        code, teacher = httpx.post(f"{lb}/api/classes", json={"title": "a lecture"}).json().values()
+        made = httpx.post(f"{lb}/api/classes", json={"title": "a lecture"}).json()
+        code, teacher = made["code"], made["teacher_key"]
 
         # sixty students from one address (the balancer's), each joining once, ten at a time
         started = time.monotonic()

@@ -22,7 +22,7 @@ def _panel_text(html: str, name: str) -> str:
 def test_the_damped_action_panel_states_the_principle_with_Q(pages):
     # δS + ∫ Q δq dt = 0 on the true path: the panel must not say S is stationary or talk of a kinetic focus
     damped = _panel_text(pages["damped-pendulum"], "action")
-    assert "δS + ∫ Q δq dt = 0" in damped and "−∫ Q η dt" in damped
+    assert "δS + ∫ Q δq dt = 0" in damped and "−∫ Q sin(nπt/τ) dt" in damped
     assert "makes the action S = ∫ L dt stationary" not in damped and "kinetic focus" not in damped
     # a conservative scene keeps Hamilton's principle as it is
     assert "stationary among paths with the same ends" in _panel_text(pages["simple-pendulum"], "action")
@@ -50,4 +50,4 @@ def test_the_errata_have_no_program_words(pages):
     assert "r_hat" not in pages["tabletop-spring"] and r"\hat{r}" in pages["tabletop-spring"]
     incline = pages["incline-block"]
     assert "Ex." not in incline and "repeated)" not in incline
-    assert "the statement repeats the helix bead problem word for word" in incline
+    assert "The statement of the helix bead problem, repeated word for word." in incline

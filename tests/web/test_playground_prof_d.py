@@ -183,4 +183,4 @@ def test_a_fall_into_the_centre_is_said_in_words(client):
     body = {**spec, "initial": {"r": 1.0, "phi": 1.0, "r_dot": 0.0, "phi_dot": 0.0}, "t_end": 10.0}
     text = client.post("/api/simulate", json=body).text
     assert "underflow" not in text and "det M" not in text and "2.7e" not in text
-    assert "the run stops at t = " in text and "divide by" in text
+    assert "The run stops at t = " in text and "divide by" in text
