@@ -10,7 +10,6 @@ and a scene's reasons (app/scenes/reasons.py) and the document's placement of st
 from __future__ import annotations
 
 import math
-
 import re
 from dataclasses import dataclass
 from typing import Any
