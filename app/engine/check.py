@@ -79,6 +79,7 @@ from app.engine.mistake_families import FollowUp, Mistake
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, HALF_MOMENTUM_HINT, MISSING_FACTOR_HINT, POINTERS
 from app.engine.names import unicode
 from app.engine.parse import Parsed
+from app.engine.quoted_term import as_typed
 from app.engine.report import Printer, display
 from app.engine.textbook import unicode_text
 from app.engine.work import WorkExceeded
@@ -232,6 +233,7 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         mistake, hint = found
         if mistake.family == "units":
             return _units_verdict(pb, printer, mistake, hint)
+        mistake, hint = as_typed(mistake, hint, answer, scale, pb.step)
         if pb.relation == "exact" or equal(a, _known(mistake.expr, pb.groups)):
             # the answer is this mistake as written: show the difference as the change to the engine's own
             # pieces (m₂ l₁ l₂ θ̇₁ θ̇₂ (sin(θ₁ − θ₂) − cos(θ₁ − θ₂)), not its sines and cosines expanded)
