@@ -430,8 +430,8 @@ def _factor_message(pb: Problem, answer: sp.Expr, truth: sp.Expr, constant: bool
     rates = set(pb.groups.rates)
     named = f"{unicode_text(factor)}" if factor is not None and not (factor.free_symbols & rates) else "a factor"
     if constant:
-        # a nonzero constant factor changes no solution: the same equation
-        return f"Correct: your equation is the correct one multiplied by {named}."
+        # a nonzero constant factor changes no solution: the same equation, however it was divided through
+        return f"Correct: this is the equation of motion for {pb.label.rsplit(' for ', 1)[-1]}."
     return (
         f"Equivalent: your equation is the correct one multiplied by {named}, which depends on the "
         "coordinates: the same equation wherever that factor is not zero."
@@ -454,8 +454,8 @@ def _difference(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[sp.Expr, 
         if mine != 0 and theirs != 0:
             scale = _budgeted(lambda: sp.cancel(mine / theirs), None, FACTOR_WORK)
             if scale is not None and scale != 1 and not (scale.free_symbols & set(pb.groups.rates)):
-                how = f", even after scaling it by {unicode_text(scale)} to match your coefficient of the acceleration"
-                return answer - scale * truth, how, scale
+                # compared at the student's scale, which is not said: the scale is the coefficient of q̈
+                return answer - scale * truth, "", scale
     return answer - truth, "", one
 
 

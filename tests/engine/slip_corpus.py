@@ -363,6 +363,9 @@ SLIPS = [
     ("movable-incline", "acceleration", "X", "m*g*sin(alpha)*cos(alpha)/(M + m*sin(alpha)**2)", r"^(?!.*∂L/∂q).*the sign of the whole answer"),
     # divided through by m l: the term is quoted as the student wrote it, g sin θ (never −m g l sin θ)
     ("free-cart", "equation", "theta", "l*theta_ddot + X_ddot*cos(theta) - g*sin(theta)", r"the sign of your g sin\(θ\) term"),
+    # a position where its velocity belongs: the right factors kept, the slip named
+    ("simple-pendulum", "momentum", "theta", "m*R**2*theta", r"θ where θ̇ belongs.*mass times a velocity"),
+    ("movable-incline", "momentum", "D", "m*D + m*X_dot*cos(alpha)", r"D where Ḋ belongs|adds a quantity in kg·m \(m D\)"),
     ("elastic-pendulum", "momentum", "phi", "m*r*phi_dot", r"factor r is missing"),
     ("elastic-pendulum", "kinetic", None, "m*(r_dot**2 + r*phi_dot**2)/2", UNITS_WORDS),
     ("simple-pendulum", "hamiltonian", None, "m*R**2*theta_dot**2/2 - m*g*R*cos(theta) + 7", r"7 has no unit.*energy"),

@@ -169,6 +169,13 @@ def test_a_sign_diagnosis_quotes_only_a_term_the_student_typed(client):
     assert wedge["mistake"]["name"] == "the sign of the whole answer" and "∂L/∂q" not in wedge["hint"], wedge
 
 
+def test_a_position_typed_for_its_velocity_in_a_momentum_is_named_and_no_part_is_disowned(client):
+    # student-e, 4: m R² θ was told "No part of your answer agrees", though m R² is right
+    body = check(client, {"step": "momentum", "coordinate": "theta", "answer": "m*R**2*theta"}).json()
+    assert body["verdict"] == "incorrect" and body["mistake"]["name"].startswith("θ where θ̇ belongs"), body
+    assert body["partial"] is None and "No part" not in body["hint"], body
+
+
 def test_an_equals_sign_where_the_box_names_the_left_side_is_refused_plainly(client):
     refused = check(client, {"step": "kinetic", "answer": "T = m*R**2*theta_dot**2/2"})
     assert refused.status_code == 422
