@@ -79,6 +79,7 @@ from app.engine.mistake_families import FollowUp, Mistake
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, HALF_MOMENTUM_HINT, MISSING_FACTOR_HINT, POINTERS
 from app.engine.names import unicode
 from app.engine.parse import Parsed
+from app.engine.quoted_term import as_typed
 from app.engine.report import Printer, display
 from app.engine.textbook import unicode_text
 from app.engine.work import WorkExceeded
@@ -232,6 +233,7 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         mistake, hint = found
         if mistake.family == "units":
             return _units_verdict(pb, printer, mistake, hint)
+        mistake, hint = as_typed(mistake, hint, answer, scale, pb.step)
         if pb.relation == "exact" or equal(a, _known(mistake.expr, pb.groups)):
             # the answer is this mistake as written: show the difference as the change to the engine's own
             # pieces (m₂ l₁ l₂ θ̇₁ θ̇₂ (sin(θ₁ − θ₂) − cos(θ₁ − θ₂)), not its sines and cosines expanded)
@@ -428,8 +430,8 @@ def _factor_message(pb: Problem, answer: sp.Expr, truth: sp.Expr, constant: bool
     rates = set(pb.groups.rates)
     named = f"{unicode_text(factor)}" if factor is not None and not (factor.free_symbols & rates) else "a factor"
     if constant:
-        # a nonzero constant factor changes no solution: the same equation
-        return f"Correct: your equation is the correct one multiplied by {named}."
+        # a nonzero constant factor changes no solution: the same equation, however it was divided through
+        return f"Correct: this is the equation of motion for {pb.label.rsplit(' for ', 1)[-1]}."
     return (
         f"Equivalent: your equation is the correct one multiplied by {named}, which depends on the "
         "coordinates: the same equation wherever that factor is not zero."
@@ -452,8 +454,8 @@ def _difference(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[sp.Expr, 
         if mine != 0 and theirs != 0:
             scale = _budgeted(lambda: sp.cancel(mine / theirs), None, FACTOR_WORK)
             if scale is not None and scale != 1 and not (scale.free_symbols & set(pb.groups.rates)):
-                how = f", even after scaling it by {unicode_text(scale)} to match your coefficient of the acceleration"
-                return answer - scale * truth, how, scale
+                # compared at the student's scale, which is not said: the scale is the coefficient of q̈
+                return answer - scale * truth, "", scale
     return answer - truth, "", one
 
 

@@ -58,6 +58,7 @@ _OPENINGS = {
     "units": "Your {what} has {name}",
     "other_coordinate": "Your {what} is {name}",
     "limit": "Your {what} is {name}",
+    "position_for_velocity": "Your {what} has {name}",
 }
 
 

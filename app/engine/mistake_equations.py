@@ -56,6 +56,19 @@ def momentum_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
             + f", so ∂L/∂{unicode(d.table.qd[k].name)} keeps it",
             sp.expand(p - part),
         )
+    # a position typed where its velocity belongs (m R² θ for m R² θ̇): every factor else may be right
+    for q, qd in zip(d.table.q, d.table.qd, strict=True):
+        if p.has(qd):
+            shown, dot = unicode(q.name), unicode(qd.name)
+            yield Mistake(
+                f"momentum.position_for_velocity.{slug(q.name)}",
+                "position_for_velocity",
+                f"{shown} where {dot} belongs (a momentum is a mass times a velocity)",
+                None,
+                f"p = ∂L/∂{unicode(d.table.qd[k].name)} is taken from the velocity terms of T, and differentiating "
+                f"½ a {dot}² by {dot} leaves a {dot}, never {shown}",
+                p.xreplace({qd: q}),
+            )
 
 
 def _factors_with(expr: sp.Expr, q: sp.Symbol) -> list[sp.Expr]:

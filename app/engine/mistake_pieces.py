@@ -145,7 +145,11 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
                 "in h = Σ p q̇ − L the part of L free of the velocities changes sign, so h is not the energy T + U "
                 "when T has such a part", truth - 2 * p,
             )  # fmt: skip
-        if not (step == "equation" and p.has(*d.table.qdd)):  # (that sign is the rest's, a rule names it)
+        if p == truth and step in WHOLE_SIGN_WHY:
+            # one term is the whole answer: its sign is the answer's, and quoting it back as "your term" hides that
+            yield Mistake(f"{base}.sign.{key}", "term_sign", "the sign of the whole answer", p,
+                          WHOLE_SIGN_WHY[step], -truth)  # fmt: skip
+        elif not (step == "equation" and p.has(*d.table.qdd)):  # (that sign is the rest's, a rule names it)
             yield Mistake(f"{base}.sign.{key}", "term_sign", f"the sign of your term {spoken(-short)}", p,
                           SIGN_WHY.get(step, "each term's sign follows from the derivation"), truth - 2 * p)  # fmt: skip
         if step != "momentum":  # a momentum short of a factor is named by that factor (app.engine.check)
@@ -309,6 +313,12 @@ SIGN_WHY = {
     "equation": "in d/dt(∂L/∂q̇) − ∂L/∂q = Q the terms of ∂L/∂q change sign",
     "acceleration": "moving a term across the equals sign changes its sign",
     "hamiltonian": "in h = Σ p q̇ − L the part of L free of velocities changes sign",
+}
+# the sign of an answer that is one term: the direction the coordinate counts as positive decides it
+WHOLE_SIGN_WHY = {
+    "acceleration": "the acceleration points the way the forces push, so check which way the coordinate counts "
+    "as positive and that each term changed sign once as it crossed the equals sign",
+    "momentum": "p = ∂L/∂q̇ keeps the sign its term has in L, which is that of T's velocity-squared term",
 }
 
 

@@ -153,6 +153,10 @@ def _equation(mistake: str) -> Callable[[Derivation, str, int | None], sp.Expr |
         wrong = _residuals(d, mistake)
         if wrong is None or k is None:
             return None
+        # a cyclic coordinate (∂L/∂q = 0) has no ∂L/∂q whose sign could be off: naming it would send the
+        # student looking for a term the step does not have
+        if mistake == "sign_of_dl_dq" and sp.expand(d.equations.dL_dq[k]) == 0:
+            return None
         if step == "equation":
             return wrong[k]
         # the same mass matrix: M q̈ = f' with f' = −E'(q̈ = 0)

@@ -67,12 +67,29 @@ def _with_units(spec: dict, units: dict[str, str]) -> dict:
     return {**spec, "parameters": [{**p, "unit": units[p["name"]]} for p in spec["parameters"]]}
 
 
+# The cart with a pendulum a student typed in the playground (review student-e): no spring, no drag.
+FREE_CART = {
+    "coordinates": ["X", "theta"],
+    "parameters": [
+        {"name": "M", "value": 2.0, "min": 0.1, "unit": "kg"},
+        {"name": "m", "value": 1.0, "min": 0.1, "unit": "kg"},
+        {"name": "l", "value": 1.0, "min": 0.1, "unit": "m"},
+        {"name": "g", "value": 9.81, "min": 0.1, "unit": "m/s²"},
+    ],
+    "particles": [
+        {"mass": "M", "position": ["X", "0", "0"], "label": "cart"},
+        {"mass": "m", "position": ["X + l*sin(theta)", "0", "-l*cos(theta)"], "label": "bob"},
+    ],
+    "potential": "-m*g*l*cos(theta)",
+}
+
 SYSTEMS = {
     "cart-pendulum": _with_units(CART_PENDULUM, UNITS["cart-pendulum"]),
     "spring-rod": _with_units(SPRING_ROD, UNITS["spring-rod"]),
     "rod-pendulum": ROD_PENDULUM,
     "rolling-disc": ROLLING_DISC,
     "elastic-pendulum": ELASTIC_PENDULUM,
+    "free-cart": FREE_CART,
 }
 
 TWICE = r"twice|doubled"
@@ -341,6 +358,14 @@ SLIPS = [
         r"θ₁ \+ θ₂ where θ₁ − θ₂ belongs.*the sign of θ₂",
     ),
     ("elastic-pendulum", "potential", None, "-m*g*r*cos(phi) + k*(r - l)**2", r"spring.*½ k"),
+    # ---- a second-year student's practice session (review student-e)
+    # the wedge's recoil the wrong way: X is cyclic (∂L/∂X = 0), so the sign is the whole answer's
+    ("movable-incline", "acceleration", "X", "m*g*sin(alpha)*cos(alpha)/(M + m*sin(alpha)**2)", r"^(?!.*∂L/∂q).*the sign of the whole answer"),
+    # divided through by m l: the term is quoted as the student wrote it, g sin θ (never −m g l sin θ)
+    ("free-cart", "equation", "theta", "l*theta_ddot + X_ddot*cos(theta) - g*sin(theta)", r"the sign of your g sin\(θ\) term"),
+    # a position where its velocity belongs: the right factors kept, the slip named
+    ("simple-pendulum", "momentum", "theta", "m*R**2*theta", r"θ where θ̇ belongs.*mass times a velocity"),
+    ("movable-incline", "momentum", "D", "m*D + m*X_dot*cos(alpha)", r"D where Ḋ belongs|adds a quantity in kg·m \(m D\)"),
     ("elastic-pendulum", "momentum", "phi", "m*r*phi_dot", r"factor r is missing"),
     ("elastic-pendulum", "kinetic", None, "m*(r_dot**2 + r*phi_dot**2)/2", UNITS_WORDS),
     ("simple-pendulum", "hamiltonian", None, "m*R**2*theta_dot**2/2 - m*g*R*cos(theta) + 7", r"7 has no unit.*energy"),
@@ -434,4 +459,6 @@ CORRECT = [
     ("elastic-pendulum", "potential", None, "k*(l - r)**2/2 - m*g*r*cos(phi)"),
     ("elastic-pendulum", "equation", "phi", "r*phi_ddot + 2*r_dot*phi_dot + g*sin(phi)"),
     ("simple-pendulum", "potential", None, "m*g*R*(1 - cos(theta))"),
+    ("free-cart", "equation", "theta", "l*theta_ddot + X_ddot*cos(theta) + g*sin(theta)"),
+    ("free-cart", "kinetic", None, "(M + m)*X_dot**2/2 + m*l**2*theta_dot**2/2 + m*l*X_dot*theta_dot*cos(theta)"),
 ]

@@ -127,7 +127,10 @@ def test_equivalent_messages_say_how():
     assert "plus the constant −mgR" in potential["message"] and "zero of height" in potential["message"]
     # the page's own form, the engine's equation divided through by m R², is right, and says so
     equation = judge(problem(d, "equation", "theta"), "theta_ddot + g*sin(theta)/R")
-    assert equation["verdict"] == "correct" and "multiplied by 1/(mR²)" in equation["message"]
+    # (student-e, 5): plainly correct, never "multiplied by 1/(mR²)" as though it were not the equation
+    assert equation["verdict"] == "correct" and equation["message"] == "Correct: this is the equation of motion for θ."
+    wrong = judge(problem(d, "equation", "theta"), "theta_ddot - g*sin(theta)/R")
+    assert "scaling" not in wrong["message"] and "mR²" not in wrong["message"], wrong["message"]
     spherical = judge(
         problem(derivation("spherical-pendulum"), "equation", "phi"),
         "sin(theta)*phi_ddot + 2*cos(theta)*theta_dot*phi_dot",
@@ -137,7 +140,8 @@ def test_equivalent_messages_say_how():
 
 def test_an_incorrect_equation_is_compared_at_the_students_scale():
     result = judge(problem(derivation("simple-pendulum"), "equation", "theta"), "theta_ddot - g*sin(theta)/R")
-    assert "scaling it by 1/(mR²)" in result["message"]
+    # compared at the student's scale (the difference shown is theirs), the scale 1/(mR²) never said
+    assert "mR²" not in result["message"] and "R" not in result["reveal"]["difference"]["sympy"].split("/")[0]
 
 
 @pytest.mark.parametrize(

@@ -67,7 +67,8 @@ def test_the_students_own_term_is_quoted_where_it_helps():
         "m2*l2**2*theta2_ddot + m2*l1*l2*cos(theta1 - theta2)*theta1_ddot"
         " + m2*l1*l2*sin(theta1 - theta2)*theta1_dot**2 + m2*g*l2*sin(theta2)",
     )
-    assert "your term" in sign["mistake"]["name"] and "−m₂ l₁ l₂" not in read(sign), read(sign)
+    # the student's own term, as typed (its sign is the slip, so it is quoted without one)
+    assert "your m₂ l₁ l₂ θ̇₁² sin(θ₁ − θ₂) term" in sign["mistake"]["name"] and "−m₂ l₁ l₂" not in read(sign), read(sign)
 
 
 def test_a_factor_is_named_and_no_part_agreeing_is_not_said_beside_it():

@@ -21,11 +21,11 @@ def test_no_message_says_the_engines_answer():
     assert "(yours − correct)" not in wrong["message"] and wrong["reveal"]["difference"]["latex"]
 
 
-def test_an_equation_divided_through_says_it_is_the_correct_one_multiplied():
+def test_an_equation_divided_through_is_plainly_the_equation_of_motion():
     result = judge(
         step_problem("movable-incline", "equation", "D"), "-(m*D_ddot + m*X_ddot*cos(alpha) - m*g*sin(alpha))/m"
     )
-    assert result["message"] == "Correct: your equation is the correct one multiplied by −1/m.", result["message"]
+    assert result["message"] == "Correct: this is the equation of motion for D.", result["message"]
 
 
 def test_the_constant_clause_only_where_a_constant_was_left_out():

@@ -11,6 +11,7 @@ from app.main import app
 from app.service import checking
 from app.web.deps import checking_service
 from tests.engine.check_corpus import CART_PENDULUM, SPRING_ROD
+from tests.engine.slip_corpus import FREE_CART
 
 HINTS = {rule.mistake: rule.hint for rule in RULES}
 
@@ -153,6 +154,26 @@ def test_an_equation_is_taken_as_a_textbook_writes_it(client):
     answer = "m*r_ddot = m*w**2*r - k*(r - a)"
     system = check(client, {"system": SPRING_ROD, "step": "equation", "coordinate": "r", "answer": answer}, scene=None)
     assert system.status_code == 200 and system.json()["verdict"] == "correct"
+
+
+def test_a_sign_diagnosis_quotes_only_a_term_the_student_typed(client):
+    # student-e, 3: g sin θ on the right of '=' (divided through by m l) was quoted as "your term −m g l sin(θ)"
+    typed = "l*theta_ddot + X_ddot*cos(theta) = g*sin(theta)"
+    body = check(client, {"system": FREE_CART, "step": "equation", "coordinate": "theta", "answer": typed}, scene=None)
+    assert body.status_code == 200, body.text
+    said = body.json()["mistake"]["name"] + " " + body.json()["hint"]
+    assert "the sign of your g sin(θ) term" in said and "m g l" not in said, said
+    # student-e, 1: the wedge's recoil the wrong way; X is cyclic, so no ∂L/∂q is there to have the wrong sign
+    answer = "m*g*sin(alpha)*cos(alpha)/(M + m*sin(alpha)**2)"
+    wedge = check(client, {"step": "acceleration", "coordinate": "X", "answer": answer}, "movable-incline").json()
+    assert wedge["mistake"]["name"] == "the sign of the whole answer" and "∂L/∂q" not in wedge["hint"], wedge
+
+
+def test_a_position_typed_for_its_velocity_in_a_momentum_is_named_and_no_part_is_disowned(client):
+    # student-e, 4: m R² θ was told "No part of your answer agrees", though m R² is right
+    body = check(client, {"step": "momentum", "coordinate": "theta", "answer": "m*R**2*theta"}).json()
+    assert body["verdict"] == "incorrect" and body["mistake"]["name"].startswith("θ where θ̇ belongs"), body
+    assert body["partial"] is None and "No part" not in body["hint"], body
 
 
 def test_an_equals_sign_where_the_box_names_the_left_side_is_refused_plainly(client):

@@ -1,0 +1,35 @@
+"""A sign diagnosis quotes the student's own term, as it stands in what they typed.
+
+The catalogue names a term of the wrong sign by the engine's piece (−m g l sin θ). A student who wrote the
+equation divided through by m l, or with that term on the right of '=', finds no such term on the screen.
+So an equation's term is quoted at the student's scale and without its sign (the sign is the slip, and a
+term moved across '=' shows the other one): "the sign of your g sin(θ) term". Where the student's answer has
+no term of that form (written factored, or merged with another), no term is quoted at all: a diagnosis
+never names a term the answer does not have.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import sympy as sp
+
+from app.engine.mistake_families import Mistake, short_form, spoken
+
+# the families whose name quotes one of the answer's terms by its sign
+_SIGN_FAMILIES = frozenset({"term_sign"})
+
+
+def as_typed(mistake: Mistake, hint: str, answer: sp.Expr, scale: sp.Expr, step: str) -> tuple[Mistake, str]:
+    """``mistake`` and its ``hint`` with the term named as the student's answer holds it (an equation's)."""
+    if step != "equation" or mistake.family not in _SIGN_FAMILIES or mistake.piece is None:
+        return mistake, hint
+    # the answer is scale × (truth − 2 p): the student's term is −scale·p
+    mine = sp.expand(-scale * mistake.piece)
+    terms = {sp.expand(t) for t in sp.Add.make_args(sp.expand(answer))}
+    if mine in terms or -mine in terms:
+        unsigned = -mine if mine.could_extract_minus_sign() else mine
+        name = f"the sign of your {spoken(short_form(unsigned))} term"
+    else:
+        name = "the sign of one of your terms"
+    return dataclasses.replace(mistake, name=name), hint.replace(mistake.name, name)
