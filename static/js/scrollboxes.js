@@ -17,6 +17,9 @@
 const BOXES = ".math-display, .table-scroll, .summary-box dd, .data-summary .table, .frequencies, .practice-engine, "
   + ".practice-preview, .verdict-difference, .verdict-piece";
 
+// what draws itself (Plotly's charts, a canvas): its subtree is never watched
+const PLOTS = ".plot, .js-plotly-plot, svg, canvas";
+
 function label(box) {
   if (box.matches(".math-display, .summary-box dd, .practice-preview, .verdict-difference, .verdict-piece")) {
     return "Formula, scrolls sideways";
@@ -85,7 +88,11 @@ export function keyboardScroll(root = document) {
     soon();
     timer = setTimeout(() => { timer = null; if (again) { again = false; later(); } }, 500);
   };
-  new MutationObserver((records) => { if (records.some((r) => [...r.addedNodes].some((n) => n.nodeType === 1))) later(); })
+  // a plot redraws its own SVG at every frame while it is dragged or played: nothing in it is a box, and a
+  // check then would force a layout in the middle of Plotly's (the all-plots frame time of issue 47)
+  const inPlot = (node) => node.nodeType === 1 && node.closest(PLOTS) !== null;
+  const added = (r) => !inPlot(r.target) && [...r.addedNodes].some((n) => n.nodeType === 1 && !n.matches(PLOTS));
+  new MutationObserver((records) => { if (records.some(added)) later(); })
     .observe(root === document ? document.body : root, { childList: true, subtree: true });
   // KaTeX may finish after load (fonts): look once more a little later
   setTimeout(soon, 1500);
