@@ -178,6 +178,7 @@ export class Player {
     this.forces = forceSeries(this.spec, run, compile);
     const dt = run.n > 1 ? run.t[1] - run.t[0] : 1;
     this.dt = dt;
+    this.root.dataset.dt = String(dt); // the samples' spacing: a link to an instant (statelink.js) reads it
     this.trailLength = Math.max(2, Math.min(MAX_TRAIL, Math.round(TRAIL_SECONDS / dt)));
     this.ownersOf = this.owners(run.data.coordinates);
     // while a body is dragged the view stays put, so the body follows the pointer

@@ -23,6 +23,7 @@
 import { foldSteps, printReady, whenTypeset } from "./derivation.js";
 import { fetchJSON, fetchRetrying } from "./api.js";
 import { connectSimulation } from "./simulation.js";
+import { bindViewLink, restoreControls, restoreView } from "./statelink.js";
 import { keyboardScroll } from "./scrollboxes.js";
 
 foldSteps(document);
@@ -122,6 +123,8 @@ function connect() {
   root = document.getElementById("simulation");
   const dataNode = document.getElementById("scene-data");
   if (!root || !dataNode) return;
+  // a link to a view of this system: its settings before the first run, the rest after
+  restoreControls(document.getElementById("controls"));
   connectSimulation({
     form: document.getElementById("controls"),
     root,
@@ -138,6 +141,8 @@ function connect() {
         fetchJSON(root.dataset.poincareUrl, { body: { ...system, parameters: body({ parameters }).parameters, initial } })),
     },
   });
+  restoreView();
+  bindViewLink();
 }
 
 // ---- the derivation, in stages -------------------------------------------------------------

@@ -10,6 +10,7 @@ import { foldSteps, printReady, whenTypeset } from "./derivation.js";
 import { connectScene } from "./simulation.js";
 import { keyboardScroll } from "./scrollboxes.js";
 import { foldPanels } from "./fold.js";
+import { bindViewLink, restoreControls, restoreView } from "./statelink.js";
 
 const data = JSON.parse(document.getElementById("scene-data").textContent);
 foldSteps(document);
@@ -19,4 +20,8 @@ keyboardScroll(document);
 foldPanels(document);
 
 const root = document.getElementById("simulation");
+// a link to a view: its settings before the first run, the rest (instant, panels, practice step) after
+restoreControls();
 if (root) connectScene(root, data);
+restoreView();
+bindViewLink();

@@ -1,0 +1,164 @@
+/**
+ * statelink.js — a link that keeps what the reader is looking at, and opening it restores all of it.
+ *
+ *   viewLink()            the page's address (for the playground, its query holds the whole system) with the
+ *                         view in the fragment: every control changed from its default (parameters, initial
+ *                         conditions, duration, method, tolerance) by its name, then
+ *                           at-time        the instant the animation shows (s)
+ *                           open-panels    the plot panels unfolded on a phone and the <details> opened
+ *                           practice       practice mode is on; practice-step: the step being worked on
+ *   restoreControls(form) set the controls from the fragment; called before the first run, so that the run
+ *                         is of the linked settings
+ *   restoreView()         the rest, each once its part of the page exists: the instant after the first run
+ *                         is drawn, the panels at once, the practice step once practice mode has built it
+ *   bindViewLink()        the "Link to this view" button: the link copied, or shown where copying is refused
+ *
+ * The fragment's own keys have a hyphen, which no declared name can have, so they never meet a control's
+ * name; a fragment without "=" is an ordinary anchor (#outcome) and is left alone.
+ */
+import { setControl } from "./controls.js";
+
+const TIME = "at-time";
+const OPEN = "open-panels";
+const PRACTICE = "practice";
+const STEP = "practice-step";
+
+function fragment() {
+  const hash = window.location.hash.slice(1);
+  return hash.includes("=") ? new URLSearchParams(hash) : new URLSearchParams();
+}
+
+const controlsForm = () => document.getElementById("controls");
+
+// the practice step last worked on (the button that copies the link takes the focus from it)
+let lastStep = null;
+document.addEventListener("focusin", (event) => {
+  const step = event.target?.closest?.(".practice-step");
+  if (step) lastStep = step;
+});
+
+/** The view now, as fragment fields (URLSearchParams). */
+function viewFields() {
+  const fields = new URLSearchParams();
+  const form = controlsForm();
+  if (form) {
+    for (const ctl of form.querySelectorAll(".control")) {
+      const value = Number(ctl.querySelector('input[type="number"]')?.value ?? ctl.dataset.default);
+      if (Number.isFinite(value) && value !== Number(ctl.dataset.default)) fields.set(ctl.dataset.name, String(value));
+    }
+    for (const select of form.querySelectorAll("select[data-default]")) {
+      if (select.value !== select.dataset.default) fields.set(select.name, select.value);
+    }
+  }
+  const scrub = document.querySelector("input.scrub");
+  const dt = Number(scrub?.closest("[data-dt]")?.dataset.dt);
+  if (scrub && dt > 0 && Number(scrub.value) > 0) {
+    // the instant shown: the sample index times the samples' spacing
+    fields.set(TIME, String(Number((Number(scrub.value) * dt).toPrecision(6))));
+  }
+  const open = [];
+  for (const section of document.querySelectorAll(".panels > section.panel[id]")) {
+    const button = section.querySelector(":scope > h3 > button.fold");
+    if (button && button.getAttribute("aria-expanded") === "true") open.push(section.id);
+  }
+  for (const details of document.querySelectorAll("details[id][open]")) open.push(details.id);
+  if (open.length) fields.set(OPEN, open.join(","));
+  const practising = document.getElementById("practice-switch");
+  if (practising?.checked) {
+    fields.set(PRACTICE, "on");
+    if (lastStep?.isConnected && lastStep.dataset.key) fields.set(STEP, lastStep.dataset.key);
+  }
+  return fields;
+}
+
+export function viewLink() {
+  const url = new URL(window.location.href);
+  const fields = viewFields();
+  url.hash = [...fields.keys()].length ? fields.toString() : "";
+  return url.toString();
+}
+
+export function restoreControls(form = controlsForm()) {
+  const fields = fragment();
+  if (!form) return;
+  for (const [name, value] of fields) {
+    if (name.includes("-") || name === PRACTICE) continue;
+    const select = form.querySelector(`select[name="${CSS.escape(name)}"]`);
+    if (select) {
+      if ([...select.options].some((o) => o.value === value)) select.value = value;
+    } else if (value.trim() !== "" && Number.isFinite(Number(value))) {
+      setControl(form, name, Number(value));
+    }
+  }
+}
+
+/** Resolves once selector matches under the document (at once if it does already). */
+function whenPresent(selector) {
+  const found = document.querySelector(selector);
+  if (found) return Promise.resolve(found);
+  return new Promise((resolve) => {
+    const watch = new MutationObserver(() => {
+      const node = document.querySelector(selector);
+      if (node) { watch.disconnect(); resolve(node); }
+    });
+    watch.observe(document.body, { childList: true, subtree: true });
+  });
+}
+
+function restoreTime(seconds) {
+  const go = () => {
+    const scrub = document.querySelector("input.scrub");
+    const dt = Number(scrub?.closest("[data-dt]")?.dataset.dt);
+    if (!scrub || !(dt > 0)) return;
+    // the sample nearest that instant (the last one if the run ends before it); an input event pauses the
+    // player and shows it
+    scrub.value = String(Math.min(Number(scrub.max), Math.round(seconds / dt)));
+    scrub.dispatchEvent(new Event("input", { bubbles: true }));
+  };
+  const onPainted = (event) => {
+    if (event.detail?.source !== "server") return;
+    document.removeEventListener("lagrange:painted", onPainted);
+    requestAnimationFrame(go);
+  };
+  document.addEventListener("lagrange:painted", onPainted);
+}
+
+export function restoreView() {
+  const fields = fragment();
+  const seconds = Number(fields.get(TIME));
+  if (fields.has(TIME) && Number.isFinite(seconds) && seconds > 0) restoreTime(seconds);
+  for (const id of (fields.get(OPEN) || "").split(",").filter(Boolean)) {
+    const node = document.getElementById(id);
+    if (node instanceof HTMLDetailsElement) node.open = true;
+    const button = node?.querySelector?.(":scope > h3 > button.fold");
+    if (button && button.getAttribute("aria-expanded") !== "true") button.click();
+  }
+  const practising = document.getElementById("practice-switch");
+  if (fields.get(PRACTICE) === "on" && practising) {
+    if (!practising.checked) practising.click();
+    const key = fields.get(STEP);
+    if (key) {
+      whenPresent(`.practice-step[data-key="${CSS.escape(key)}"]`).then((step) => {
+        step.scrollIntoView({ block: "center" });
+        step.querySelector("input, textarea")?.focus({ preventScroll: true });
+      });
+    }
+  }
+}
+
+export function bindViewLink() {
+  const button = document.getElementById("view-link");
+  const status = document.getElementById("view-link-status");
+  if (!button || !status || button.dataset.bound) return;
+  button.dataset.bound = "true";
+  button.addEventListener("click", async () => {
+    const link = viewLink();
+    status.dataset.link = link;
+    try {
+      await navigator.clipboard.writeText(link);
+      status.textContent = "Link copied: it opens this view.";
+    } catch {
+      status.textContent = `Link to this view: ${link}`;
+    }
+  });
+}
