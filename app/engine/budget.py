@@ -22,6 +22,7 @@ from typing import Any, TypeVar
 
 import sympy as sp
 
+from app.engine import progress
 from app.engine import work as counted
 from app.engine.work import WorkExceeded
 from app.limits import MEMBER_RESERVE_WORK, SIMPLIFY_WORK
@@ -119,6 +120,7 @@ def bounded(member: str, what: str, units: float, work: Callable[[], T], fallbac
     work for the rest of the step instead of using it all.  ``what`` names the part in the note
     ("Hamilton's equations").
     """
+    progress.now(what)
     units *= _patience()
     outer = counted.left()
     if outer is not None:

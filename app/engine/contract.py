@@ -6,7 +6,7 @@ from typing import Any, TypeVar
 
 import sympy as sp
 
-from app.engine import meaning, notation
+from app.engine import meaning, notation, progress
 from app.engine.action_step import kinetic_focus_possible
 from app.engine.budget import Skipped, bounded, display_budget, display_work_left, is_zero, pythagoras, within_budget
 from app.engine.constraints import ConstraintForce
@@ -133,6 +133,7 @@ def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[s
 
 
 def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) -> dict[str, Any]:
+    progress.now("the conserved quantities and the reduction to one coordinate")
     table, eqs, en, red = d.table, d.equations, d.energetics, d.reduction
     pr = Printer(table.latex_names())
     skipped: list[Skipped] = list(d.skipped)

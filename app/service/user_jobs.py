@@ -26,8 +26,17 @@ from app.engine.symbols import SymbolTable
 from app.engine.user_system import UserSystem
 from app.errors import OverCapacity
 from app.scenes.types import System
+from app.service import progress
 from app.service.encoding import dumps
-from app.service.user_checks import InvalidSystem, TooCostly, _refuse, check_system, located, simulation_loc
+from app.service.user_checks import (
+    InvalidSystem,
+    TooCostly,
+    _refuse,
+    check_system,
+    located,
+    simulation_loc,
+    spec_key,
+)
 from app.settings import settings
 
 log = logging.getLogger(__name__)
@@ -116,10 +125,11 @@ def guarded(job: Callable[[], Any], encode: Callable[[Any], bytes] = dumps) -> b
 
 
 def derive_job(user: UserSystem) -> bytes:
-    """Worker job: the derivation JSON of a user system (as for a scene)."""
+    """Worker job: the derivation JSON of a user system (as for a scene), telling the page which part it is on
+    (app/service/progress.py, under the same key as the derivation's cache)."""
 
     def run() -> dict[str, Any]:
-        with engine_budget(user):
+        with progress.reported(spec_key(user)), engine_budget(user):
             return derivation_json(derive_checked(user))
 
     return guarded(run)

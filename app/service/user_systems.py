@@ -19,11 +19,14 @@ from typing import Any
 from cachetools import LRUCache
 
 from app.engine.user_system import UserSystem
+from app.errors import Refused, WorkerFailed
 from app.service import fairness as fair
-from app.service import worker
+from app.service import progress, worker
 from app.service.user_checks import spec_key
 from app.service.user_jobs import derive_job, export_job, modes_job, poincare_job, simulate_job
 from app.settings import Settings, settings
+
+CANCELLED = "the derivation was stopped, as you asked; what was shown before stays, and deriving again starts it anew"
 
 
 class ResultCache:
@@ -65,9 +68,14 @@ class UserSystems:
         self._running: dict[tuple[int, str], asyncio.Future] = {}
         self._queued: dict[tuple[int, str], fair.Ticket] = {}  # the ticket of each running slot
         self._waiters: dict[tuple[int, str], int] = {}
+        self._cancelled: set[str] = set()  # keys whose job its client stopped (``cancel``)
 
-    async def _run(self, cache: ResultCache, key: str, client: str, address: str, timeout: float, job, *args) -> bytes:
-        """A cached answer, else the same request already running, else a new job (one fair-share ticket)."""
+    async def _run(
+        self, cache: ResultCache, key: str, client: str, address: str, timeout: float, job, *args,
+        ended: Callable[[], None] | None = None,
+    ) -> bytes:
+        """A cached answer, else the same request already running, else a new job (one fair-share ticket);
+        ``ended()`` is called when a new job ends, however it ends (its worker killed too)."""
         cached = cache.get(key)
         if cached is not None:
             return cached
@@ -75,16 +83,23 @@ class UserSystems:
         slot = (id(asyncio.get_running_loop()), key)
         running = self._running.get(slot)
         if running is None:
+            self._cancelled.discard(key)
             ticket = self.gate.admit(client, address)
             running = asyncio.ensure_future(self._job(cache, key, ticket, timeout, job, args))
             self._running[slot] = running
             self._queued[slot] = ticket
             running.add_done_callback(lambda done: self._finished(slot, done))
+            if ended is not None:
+                running.add_done_callback(lambda _: ended())
         # a client that goes away does not stop the job the others wait for; the last one to go, while it queues, does
         self._waiters[slot] = self._waiters.get(slot, 0) + 1
         try:
             return await asyncio.shield(running)
         except asyncio.CancelledError:
+            task = asyncio.current_task()
+            if running.cancelled() and key in self._cancelled and not (task is not None and task.cancelling()):
+                # the job was stopped by its client (``cancel``), not this request by its client leaving
+                raise WorkerFailed(CANCELLED, "cancelled") from None
             queued = self._queued.get(slot)
             if self._waiters.get(slot) == 1 and queued is not None and not queued.running:
                 running.cancel()
@@ -92,6 +107,25 @@ class UserSystems:
         finally:
             if slot in self._waiters:
                 self._waiters[slot] -= 1
+
+    def cancel(self, key: str, client: str) -> None:
+        """Stop the job of ``key`` that ``client`` started: a running job's worker is killed (pebble), a queued
+        job leaves the queue, and the request waiting for it is answered ``WorkerFailed(kind="cancelled")``.
+        Refused when no such job runs in this process, when it is another client's, or when other requests
+        wait for it too (a class opening one shared link)."""
+        slot = (id(asyncio.get_running_loop()), key)
+        running, ticket = self._running.get(slot), self._queued.get(slot)
+        if running is None or ticket is None:
+            raise Refused("no derivation of this system is running on this server: it has ended, or it runs on "
+                          "another replica", part=key)  # fmt: skip
+        if ticket.client != client:
+            raise Refused("this derivation was asked for by another session: only the session that asked can stop it")
+        if self._waiters.get(slot, 0) > 1:
+            raise Refused("others are waiting for this derivation too, so it goes on; leaving the page frees your place")
+        self._cancelled.add(key)
+        if ticket.job is not None:
+            ticket.job.cancel()  # pebble stops the worker that runs it
+        running.cancel()
 
     async def run_job(
         self, cache: ResultCache, key: str, client: str, address: str, timeout: float, job, *args
@@ -126,7 +160,12 @@ class UserSystems:
         return result
 
     async def derive(self, user: UserSystem, client: str, address: str) -> bytes:
-        return await self._run(self.derivations, spec_key(user), client, address, self.derive_seconds, derive_job, user)
+        key = spec_key(user)
+        # the worker removes its progress file at the end of the job; a killed worker cannot (a timeout, ``cancel``)
+        return await self._run(
+            self.derivations, key, client, address, self.derive_seconds, derive_job, user,
+            ended=lambda: progress.clear(key),
+        )  # fmt: skip
 
     async def simulate(self, user: UserSystem, request: Any, client: str, address: str) -> bytes:
         key = spec_key(user, request.model_dump(mode="json"))

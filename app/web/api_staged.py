@@ -8,18 +8,22 @@ POST /api/derive will add (``pending``).  A worker-pool job of its own under the
 
 from __future__ import annotations
 
+import asyncio
 from typing import Annotated, Literal
 
 from fastapi import APIRouter, Body
 from fastapi.responses import Response
 from pydantic import BaseModel, Field
 
+from app.errors import Refused
+from app.service import progress
 from app.service.staged import equations_bytes
 from app.service.user_checks import checked
 from app.web.api_user import answer, system_route
 from app.web.deps import ClientDep, UserSystemsDep
+from app.web.errors import json_problem
 from app.web.examples_user import DERIVE_EXAMPLES
-from app.web.schemas import ParameterInfo
+from app.web.schemas import ParameterInfo, Problem
 from app.web.schemas_user import OPEN, EquationOfMotion, ExprPair, SkippedMember, SystemSpec
 
 router = APIRouter(prefix="/api", tags=["your systems"])
@@ -62,3 +66,55 @@ async def derive_equations(
     client: ClientDep, users: UserSystemsDep, system: Annotated[SystemSpec, Body(openapi_examples=DERIVE_EXAMPLES)]
 ) -> Response:
     return await answer(client, lambda key, address: equations_bytes(users, checked(system.to_spec()), key, address))
+
+
+class Progress(BaseModel):
+    running: bool = Field(description="Whether a derivation of this key runs on this server now.")
+    part: str | None = Field(None, description="The part it is on, as the playground names it (`Hamilton's equations`).")
+    part_seconds: float | None = Field(None, description="How long it has been on that part (s).")
+    seconds: float | None = Field(None, description="How long the derivation has run (s).")
+
+
+def _key(key: str) -> str:
+    if not progress.KEY.fullmatch(key):
+        raise Refused("a derivation's key is 64 hexadecimal digits, as the playground's page gives it", part=key[:80])
+    return key
+
+
+@router.get(
+    "/derive/progress/{key}",
+    summary="Which part a running derivation is on",
+    description=(
+        "For the derivation of a system the playground is waiting for (its key is on the page, "
+        "`data-progress-url`): the part it is on and for how long. `running` is false once it has ended, or when "
+        "another replica runs it."
+    ),
+    response_model=Progress,
+    responses={422: {"model": Problem, "description": "The key is not 64 hexadecimal digits."}},
+)
+async def derive_progress(key: str) -> Response:
+    try:
+        found = await asyncio.to_thread(progress.read, _key(key))
+    except Refused as exc:
+        return json_problem(exc)
+    body = Progress(running=False) if found is None else Progress(running=True, **found)
+    return Response(body.model_dump_json(), media_type="application/json", headers={"Cache-Control": "no-store"})
+
+
+@router.post(
+    "/derive/cancel/{key}",
+    status_code=202,
+    summary="Stop a derivation you started",
+    description=(
+        "Stops the derivation of this key that your session started (its worker is stopped); the request "
+        "waiting for it is answered 422 with `kind` `cancelled`. Refused (422) when none of yours runs here, or "
+        "when others wait for the same derivation."
+    ),
+    responses={422: {"model": Problem, "description": "Nothing of yours to stop, with the reason."}},
+)
+async def derive_cancel(key: str, client: ClientDep, users: UserSystemsDep) -> Response:
+    try:
+        users.cancel(_key(key), client.key)
+    except Refused as exc:
+        return client.keep(json_problem(exc))
+    return client.keep(Response('{"cancelled":true}', status_code=202, media_type="application/json"))

@@ -218,7 +218,7 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
                 doc = await equations_or_whole(users, user, client.key, client.address)
             if doc.get("stage") == "equations":
                 # the rest is asked for with the form's own query (the default system's page has none)
-                first = first_view(doc, whole_href(urlencode(query_of(form), doseq=True)))
+                first = first_view(doc, whole_href(urlencode(query_of(form), doseq=True)), spec_key(user))
             else:
                 model = await run_in_threadpool(model_of, user, doc, CHOICES)
     except FormError as exc:

@@ -37,9 +37,10 @@ def _listed(names: list[str]) -> str:
     return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
 
 
-def first_view(doc: dict[str, Any], href: str) -> dict[str, Any]:
+def first_view(doc: dict[str, Any], href: str, key: str) -> dict[str, Any]:
     """The first stage as the page shows it: LaTeX of the equations and of the accelerations (or of M and f,
-    when the accelerations stay M⁻¹f), the notes of what is left out, and what is still being worked on."""
+    when the accelerations stay M⁻¹f), the notes of what is left out, and what is still being worked on;
+    ``key``, the whole derivation's, addresses its progress and its cancelling (app/web/api_staged.py)."""
     q = doc["coordinates"]
     accelerations = doc["accelerations"]
     view: dict[str, Any] = {
@@ -51,11 +52,15 @@ def first_view(doc: dict[str, Any], href: str) -> dict[str, Any]:
         # the page shows the simulation with the whole document too
         "pending": _listed([*(p["name"] for p in doc.get("pending") or []), "the simulation"]),
         "whole_href": href,
+        "progress_url": f"/api/derive/progress/{key}",
+        "cancel_url": f"/api/derive/cancel/{key}",
     }
     if not accelerations:
         # M q̈ = f, with M and f printed: what the numerics solves at each step
         rows = [" & ".join(x["latex"] for x in row) for row in doc["mass_matrix"]]
         # the page's letter for the mass matrix (𝓜 where a parameter is named M): app/engine/notation.py
-        view["mass_matrix"] = letter_of(doc, "mass matrix", "M") + r" = \begin{pmatrix} " + r" \\ ".join(rows) + r" \end{pmatrix}"
+        letter = letter_of(doc, "mass matrix", "M")
+        view["system"] = letter + r" \ddot{q} = f"
+        view["mass_matrix"] = letter + r" = \begin{pmatrix} " + r" \\ ".join(rows) + r" \end{pmatrix}"
         view["forcing"] = [f"f_{{{latex(c)}}} = {f['latex']}" for c, f in zip(q, doc["forcing"], strict=True)]
     return view

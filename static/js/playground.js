@@ -190,16 +190,59 @@ async function fetchWhole() {
   return { status: res.status, page: new DOMParser().parseFromString(await res.text(), "text/html") };
 }
 
+/** While the rest is worked out: which part the server is on and for how long, each second, with a button that
+ *  stops it (app/web/api_staged.py).  Returns what ends the watch, and whether the reader stopped it. */
+function watchProgress() {
+  const line = document.getElementById("derive-now");
+  const part = document.getElementById("derive-part");
+  const stop = document.getElementById("derive-cancel");
+  const state = { stopped: false, timer: null };
+  if (!line || !derived.dataset.progressUrl) return { end() {}, state };
+  const seconds = (x) => `${Math.round(x)} s`;
+  async function poll() {
+    try {
+      const now = await fetchJSON(derived.dataset.progressUrl);
+      if (now.running) {
+        part.textContent = `Now: ${now.part} (for ${seconds(now.part_seconds)}; ${seconds(now.seconds)} in all).`;
+        line.hidden = false;
+      }
+    } catch { /* the next second asks again */ }
+    state.timer = setTimeout(poll, 1000);
+  }
+  stop.addEventListener("click", async () => {
+    stop.disabled = true;
+    state.stopped = true;
+    try {
+      await fetchJSON(derived.dataset.cancelUrl, { body: {} });
+    } catch (err) {
+      state.stopped = false;
+      stop.disabled = false;
+      part.textContent = `It could not be stopped: ${err.message}`;
+    }
+  });
+  state.timer = setTimeout(poll, 1000);
+  return { end() { clearTimeout(state.timer); line.hidden = true; }, state };
+}
+
 async function fillIn() {
   let answer;
+  const watch = watchProgress();
   try {
     answer = await fetchWhole();
   } catch {
+    watch.end();
     document.getElementById("derive-progress").textContent =
       "The rest of the derivation could not be fetched (the connection failed); reload the page to try again.";
     return;
   }
+  watch.end();
   const next = answer.page.getElementById("derived");
+  if (watch.state.stopped && answer.status !== 200) {
+    const progress = document.getElementById("derive-progress");
+    progress.textContent = "Stopped, as you asked: the equations above stay. Press Derive to work out the rest.";
+    derived.dataset.stage = "stopped";
+    return;
+  }
   if (answer.status !== 200 || !next) {
     showRefusal(answer.page, answer.status);
     return;

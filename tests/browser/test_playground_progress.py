@@ -1,0 +1,39 @@
+"""While /playground works out the rest of a typed triple pendulum it says which part it is on and for how long,
+and "Stop deriving" stops it, keeping the equations already shown (issue 45, item 6); desktop and phone."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.browser.test_playground_stages import FIRST, VIEWPORTS, type_triple_pendulum
+
+pytestmark = pytest.mark.browser
+
+
+@pytest.fixture(params=list(VIEWPORTS))
+def sized(request, browser, live_server):
+    context = browser.new_context(base_url=live_server, **VIEWPORTS[request.param])
+    page = context.new_page()
+    page.set_default_timeout(90_000)
+    page.errors = []
+    page.on("pageerror", lambda exc: page.errors.append(str(exc)))
+    yield request.param, page
+    context.close()
+
+
+def test_the_part_being_worked_on_is_shown_and_stop_keeps_the_equations(sized, artifacts):
+    name, page = sized
+    type_triple_pendulum(page, {"desktop": "9.771", "phone": "9.772"}[name])
+    page.click('#system-form button[type="submit"]')
+    page.wait_for_selector(FIRST)
+    page.wait_for_selector("#derive-now:not([hidden])")
+    now = page.inner_text("#derive-part")
+    assert now.startswith("Now: ") and " s in all)." in now
+    page.screenshot(path=artifacts / f"playground-progress-{name}.png")
+    page.click("#derive-cancel")
+    page.wait_for_selector('#derived[data-stage="stopped"]')
+    assert page.inner_text("#derive-progress").startswith("Stopped, as you asked: the equations above stay.")
+    assert page.locator("#derive-now").is_hidden()
+    # what was shown stays: the three equations, typeset
+    assert page.locator("#results dd").first.locator(".math").count() == 3
+    assert page.errors == []
