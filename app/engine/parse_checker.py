@@ -355,8 +355,9 @@ class Checker:
             rational = self.exact_call(node, name, powers, depth)
             if rational is not None:
                 return Facts(value, rational, 1, inside, 0, calls)
-            # SymPy keeps sin(1) unevaluated and combines its powers as a symbol's ((sin(1)**5)**52 is sin(1)**260)
-            return Facts(value, None, 1, inside, 1, calls)
+            # SymPy keeps sin(1) unevaluated and combines its powers as a symbol's ((sin(1)**5)**52 is sin(1)**260);
+            # exp(c*log(u)) of a constant u is u**c, a power of degree c in u (its ** tan(-52) combines further)
+            return Facts(value, None, 1, inside, degree, calls)
         return Facts(None, None, terms, inside, degree, calls)
 
     def exact_call(self, node: ast.Call, name: str, powers: list[Facts], depth: int) -> Fraction | None:

@@ -64,6 +64,8 @@ hostile = st.recursive(leaves, _extend, max_leaves=10)
 @example("((sin(1))**(5))**(52)")
 # a root whose index only SymPy's exp(c*log(u)) = u**c reveals (found by this fuzzer: a 5 s hang)
 @example("((-1)+(10**15))**-(exp((-1)*log(10**15)))")
+# a constant's power through exp and log, raised again past the degree limit (found by this fuzzer)
+@example("exp((-52)*log(tan(-52)))**tan(-52)")
 def test_hostile_expressions_are_refused_or_built_quickly_and_real(text):
     try:
         with clock_limit(HANG_GUARD):
