@@ -275,3 +275,9 @@ def test_the_wedge_block_starts_on_the_slope():
     """D(0) runs from the top corner (0) down: a start above the corner contradicted the picture (prof-f 12)."""
     (D,) = [c for c in page_model("movable-incline")["initial"] if c["name"] == "D"]
     assert float(D["min"]) == 0.0 and float(D["max"]) > 0 and D["allowed"].startswith("0 to")
+
+
+def test_the_tabletop_spring_constant_has_a_tabletop_range():
+    """prof-e 20: "0.01 to 100,000,000 N/m" is no table's spring."""
+    (k,) = [c for c in page_model("tabletop-spring")["parameters"] if c["name"] == "k"]
+    assert k["allowed"] == "0.01 to 1,000 N/m"
