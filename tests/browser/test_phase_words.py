@@ -85,3 +85,12 @@ def test_an_unbounded_run_is_not_said_to_swing(page):
     assert "below the separatrix (0 J)" in text and "it runs off to infinity" in text
     assert "swings back and forth" not in text
     assert page.locator("#panel-phase").get_attribute("data-separatrix") == "0"
+
+
+def test_the_parabola_default_swing_is_small_enough_for_the_prediction(page):
+    # prof-f 17: from ρ = 0.5 m (4α²ρ² = 1) the panel showed the measurement 18 % below the small-oscillation Ω
+    import re
+
+    text = _small_oscillations(page, "rotating-parabola")
+    (percent,) = re.findall(r"\(([−+-]?[\d.]+) %\)", text)
+    assert abs(float(percent.replace("−", "-"))) <= 3, text
