@@ -33,7 +33,7 @@ TABLETOP_SPRING = Scene(
         coordinates=("r", "theta"),
         parameters=(
             Parameter("m", 1.0, "kg", 0.01, 100.0, "mass of the particle"),
-            Parameter("k", 4.0, "N/m", 0.01, 1.0e8, "spring constant"),
+            Parameter("k", 4.0, "N/m", 0.01, 1000.0, "spring constant"),  # a tabletop spring, soft to stiff
         ),
         particles=(Particle("m", ("r*cos(theta)", "r*sin(theta)", "0"), "particle"),),
         potential="k*r**2/2",

@@ -43,6 +43,9 @@ class Family:
     # (the base runs from the particle along the slope's direction, so a block at the end of a ramp stays on it)
     blocks: tuple[tuple[int, str, str], ...] = ()
     applied: tuple[tuple[str, str], ...] = ()  # (constraint force, anchor label): where its arrow starts
+    # 3-D: the view the page opens on, (yaw about the vertical, pitch: tilt toward looking down), in radians;
+    # None keeps the browser's general one (static/js/camera.js)
+    view: tuple[float, float] | None = None
 
 
 def _span(q: str, pad: str = "0.25") -> tuple[str, str]:
@@ -116,6 +119,10 @@ FAMILIES: dict[str, Family] = {
             ("axis", *_span("z"), ("0", "0", "s"), "guide"),
         ),
         caption=f"The helical wire, its axis (dashed) and the bead, with {TRAIL}; drag the background to turn the view.",
+        # looking down 0.9 rad (52°): a turn of radius R shows as an ellipse 2R sin 0.9 tall, against turns
+        # (2π/α) cos 0.9 apart, so at the defaults (R = 0.5 m, α = 4 rad/m) the turns open into loops (0.78 m
+        # against 0.98 m) where the general 0.35 rad drew a flat wave (0.34 m against 1.48 m)
+        view=(-0.6, 0.9),
     ),
     "rotating-wire": Family(
         # the lab frame: the wire turns about the vertical axis at omega, carrying the bead
@@ -289,9 +296,11 @@ class MechanismSpec:
     forces: list[dict[str, Any]] = field(default_factory=list)
     slack: str = ""
     caption: str = ""
+    view: tuple[float, float] | None = None
 
     def as_json(self) -> dict[str, Any]:
-        return {
+        view = {"view": {"yaw": self.view[0], "pitch": self.view[1]}} if self.view else {}
+        return view | {
             "dim": self.dim,
             "axes": self.axis_names,
             "points": self.points,
@@ -396,6 +405,7 @@ def mechanism(
         axis_names=[family.axis_names[i] for i in family.axes],
         slack=family.slack,
         caption=family.caption,
+        view=family.view,
     )
     try:
         tilt = {k: (angle, base) for k, angle, base in family.blocks}

@@ -92,8 +92,15 @@ def method_matters(f: Facts) -> bool:
     energy, where a symplectic method loses its advantage), or a nonlinear system with two or more degrees of
     freedom and no conserved momentum to reduce it (a candidate for chaos, like the double pendulum).  A linear
     system, or one a conserved momentum reduces to one degree of freedom, is integrated well by every method."""
-    if not f.conservative:
-        return True
+    return not f.conservative or can_be_chaotic(f)
+
+
+def can_be_chaotic(f: Facts) -> bool:
+    """Two or more degrees of freedom, no conserved momentum and equations not linear: a candidate for chaos.
+
+    A conserved momentum (a cyclic coordinate's) leaves one degree of freedom of two (the cone, the spherical
+    pendulum); linear equations separate into normal modes (the coupled oscillators). Either way the motion is
+    integrable: a Poincaré section would be closed curves only, and every method integrates it well."""
     momenta = any(c["name"].startswith("p_") for c in f.doc.get("conserved", []))
     return f.dof >= 2 and not momenta and not linear_equations(f.doc)
 
@@ -204,8 +211,9 @@ PANELS: tuple[Panel, ...] = (
         "Poincaré section",
         "Several orbits with the same energy, each marked where it crosses a plane in one direction. An orbit "
         "that keeps to a curve is regular (quasi-periodic); one whose points scatter over an area is chaotic.",
-        "two conservative degrees of freedom",
-        lambda f: f.dof == 2 and f.conservative,
+        "two conservative degrees of freedom, no conserved momentum, and equations not linear (else the motion is "
+        "integrable: the section would be closed curves)",
+        lambda f: f.dof == 2 and f.conservative and can_be_chaotic(f),
         optional=True,
     ),
     Panel(

@@ -20,6 +20,7 @@ from app.viz.page_model import scene_page
 
 # the optional panels (app/viz/panels.py) a user's system gets wherever its derivation supports them
 PANELS = ("effective-potential", "small-oscillations", "poincare")
+NEAR = 1.1  # a cyclic coordinate's run starts this many times the steady motion's radius out (a visible oscillation)
 
 
 def model_of(user: UserSystem, doc: dict[str, Any], methods: Sequence[str]) -> dict[str, Any]:
@@ -48,16 +49,20 @@ def model_of(user: UserSystem, doc: dict[str, Any], methods: Sequence[str]) -> d
             f"Every configuration is an equilibrium, so a start at rest would show nothing: the run starts with "
             f"{unicode(first + '_dot')}(0) = 1 per second."
         )
-    # a coordinate that only turns (a cyclic φ) at rest lets a cone's bead or a planet fall into the centre:
-    # it starts at the rate of the steady motion through the starting radius, found from U_eff′ = 0
-    elif (steady := steady_start(doc, initial, {p.name: p.default for p in user.parameters})) is not None:
+    # a coordinate that only turns (a cyclic φ) at rest lets a cone's bead or a planet fall into the centre; a
+    # start on the steady motion itself makes every plot a point. So the run keeps the conserved momentum of the
+    # steady motion through r = 1 (U_eff′ = 0 there) and starts NEAR times farther out: r oscillates about 1
+    elif (steady := steady_start(doc, initial, {p.name: p.default for p in user.parameters}, NEAR)) is not None:
         rate, value = steady
-        initial[rate] = value
         r = doc["effective_potential"]["coordinate"]
+        steady_at = initial[r]
+        initial[r] = NEAR * steady_at
+        initial[rate] = value
         note = (
-            f"The run starts on the steady motion through {unicode(r)} = {initial[r]:g}: "
-            f"{unicode(rate)}(0) = {value:.4g}, where U_eff′ = 0 (at rest, {unicode(rate[:-4])} would not turn and "
-            f"{unicode(r)} would fall). Change {unicode(rate)}(0) to see {unicode(r)} oscillate about it or leave."
+            f"The run starts near the steady motion through {unicode(r)} = {steady_at:g}: with that motion's "
+            f"{unicode(rate[:-4])}-momentum, from {unicode(r)} = {initial[r]:g}, so {unicode(rate)}(0) = {value:.4g} "
+            f"and {unicode(r)} oscillates about {steady_at:g} (at rest, {unicode(rate[:-4])} would not turn and "
+            f"{unicode(r)} would fall). Change {unicode(rate)}(0) to see {unicode(r)} swing wider or leave."
         )
     # what the animation draws: the particles as declared (none for a system given by L or by T and U)
     particles = [(p.label, p.position) for p in user.system().particles]
@@ -85,11 +90,15 @@ def _root(f: Any, lo: float, hi: float) -> float | None:
     return 0.5 * (lo + hi)
 
 
-def steady_start(doc: dict[str, Any], initial: dict[str, float], params: dict[str, float]) -> tuple[str, float] | None:
-    """(the cyclic coordinate's rate, its value) that makes the starting radius a steady motion, or None.
+def steady_start(
+    doc: dict[str, Any], initial: dict[str, float], params: dict[str, float], near: float = 1.0
+) -> tuple[str, float] | None:
+    """(the cyclic coordinate's rate, its value) with the momentum of the steady motion through r(0), starting
+    from near·r(0) (near = 1: on the steady motion), or None.
 
     With one conserved momentum p_c the reduction's U_eff′(r; p_c) = 0 is solved for p_c at r(0) (p_c > 0), and
-    p_c = ∂L/∂q̇_c, affine in q̇_c, is solved for q̇_c.  Pure Python on the document's expression trees."""
+    p_c = ∂L/∂q̇_c, affine in q̇_c, is solved for q̇_c at near·r(0).  Pure Python on the document's expression
+    trees."""
     red = doc.get("effective_potential")
     if not red or len(red.get("momenta") or []) != 1 or not red["momenta"][0].startswith("p_"):
         return None
@@ -113,7 +122,9 @@ def steady_start(doc: dict[str, Any], initial: dict[str, float], params: dict[st
     else:
         return None
     rate = f"{cyclic}_dot"
-    # p_c(q̇_c) = p0 + p1 q̇_c
+    r = red["coordinate"]
+    state[r] = near * state[r]
+    # p_c(q̇_c) = p0 + p1 q̇_c, at the starting radius
     p0 = evaluate(momentum, {**state, rate: 0.0})
     p1 = evaluate(momentum, {**state, rate: 1.0}) - p0
     if not (math.isfinite(p0) and math.isfinite(p1)) or p1 == 0:

@@ -5,6 +5,7 @@
  *   path(rhs, y0, k, T)           the true path on STEPS + 1 even times (RK4)
  *   varied(L, path, k, c, k, ε)   L along q + ε sin(kπt/T) e_c, and S by Simpson's rule
  *   focus(rhs, y0, k, T)          the first kinetic focus: det of the Jacobi fields ∂q/∂q̇(0) = 0
+ *   openingDuration(tEnd, t*)     the τ the panel opens on: before the first kinetic focus
  *   liveAction(fns, setup)        all of it for one setup (a drag reuses what only ε leaves alone)
  */
 
@@ -50,6 +51,21 @@ export function varied(L, p, k, c, shape, eps) {
     S += values[i] * (i === 0 || i === N ? 1 : i % 2 ? 4 : 2);
   }
   return { L: values, S: (S * T) / N / 3 };
+}
+
+export const OPENING_SHARE = 10; // the panel opens on a tenth of the run …
+export const BEFORE_FOCUS = 0.8; // … or on 80 % of the first kinetic focus, if that comes sooner
+export const T_STEPS = 200; // the τ slider's steps over the run
+
+/**
+ * The τ the panel opens on: the ordinary case, a true path that is a minimum of S. Before the first kinetic
+ * focus t* every variation with fixed ends raises S; past it some lower it. So τ = t_end/10, unless that
+ * reaches 0.8 t*; then the slider's last step at or below 0.8 t* (at least one step).
+ */
+export function openingDuration(tEnd, tStar) {
+  const step = tEnd / T_STEPS, share = tEnd / OPENING_SHARE;
+  if (tStar === null || tStar === undefined || share < BEFORE_FOCUS * tStar) return share;
+  return Math.max(step, Math.floor((BEFORE_FOCUS * tStar) / step + 1e-9) * step);
 }
 
 /** The first t* where det J = 0, J the Jacobi fields ∂q/∂q̇(0) (differences of neighbouring paths); null before T. */

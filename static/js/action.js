@@ -20,7 +20,7 @@
  */
 import { fetchJSON } from "./api.js";
 import { axis, CONFIG, drawWhenVisible, layout, PALETTE, rateUnit } from "./plotkit.js";
-import { compileLagrangian, focus, liveAction, path } from "./action-live.js";
+import { compileLagrangian, focus, liveAction, openingDuration, path, T_STEPS } from "./action-live.js";
 import { verdict } from "./action-verdict.js";
 import { compile } from "./expr.js";
 import { compileRhs } from "./preview.js";
@@ -57,7 +57,8 @@ export class ActionPanel {
     this.fns = null; this.answers = new Map(); this.serial = 0;
     this.coordinate = 0; this.shape = 1; this.eps = 0;
     this.tEnd = data.t_end || 10;
-    this.T = this.tEnd / 10;
+    // until the reader moves τ, it follows the start's first kinetic focus (openingDuration: before it)
+    this.T = openingDuration(this.tEnd, null); this.TChosen = false;
     this.controls();
     this.bindDrag();
     drawWhenVisible(this, section); // the server is asked only once the panel is in view
@@ -78,7 +79,7 @@ export class ActionPanel {
         <p class="action-find-note hint" id="${id("find-note")}" hidden>In “Find the path” the trial path is set by its points, so the shape n and ε are not used (press “Back to ε” for them).</p>
         ${group(`<button type="button" id="${id("find")}" aria-pressed="false">Find the path</button> <button type="button" id="${id("relax")}" hidden>Relax</button>`)}
         <button type="button" id="${id("from-shooting")}" hidden>Start from the shooting solution</button>
-        ${group(`<label for="${id("T")}">Duration τ</label> <input type="range" id="${id("T")}" min="${this.tEnd / 200}" max="${this.tEnd}" step="${this.tEnd / 200}" value="${this.T}"> <output id="${id("T-value")}" for="${id("T")}"></output>`)}
+        ${group(`<label for="${id("T")}">Duration τ</label> <input type="range" id="${id("T")}" min="${this.tEnd / T_STEPS}" max="${this.tEnd}" step="${this.tEnd / T_STEPS}" value="${this.T}"> <output id="${id("T-value")}" for="${id("T")}"></output>`)}
       </div>`);
     this.epsInput = tools.querySelector(`#${id("eps")}`);
     this.TInput = tools.querySelector(`#${id("T")}`);
@@ -97,7 +98,7 @@ export class ActionPanel {
     // the slider holds ε itself, in the coordinate's unit (its range follows the path: ±epsMax)
     this.epsInput.addEventListener("input", () => { this.eps = Number(this.epsInput.value); this.update(false); });
     this.TInput.addEventListener("input", () => {
-      this.T = Number(this.TInput.value);
+      this.T = Number(this.TInput.value); this.TChosen = true;
       // in "Find the path" a new τ moves the fixed end: the trial path and any relaxed answer belong to the old τ
       if (this.finding) { this.found = null; this.frame = null; this.seed = null; this.shootButton.hidden = true; this.controlsT = null; }
       this.update(true);
@@ -176,6 +177,13 @@ export class ActionPanel {
     if (!this.fns) return;
     const started = performance.now();
     const { y0, k } = this.setup();
+    if (this.focusKey !== `${Array.from(y0)}|${Array.from(k)}`) {
+      this.focusKey = `${Array.from(y0)}|${Array.from(k)}`;
+      this.focusAt = focus(this.fns.rhs, y0, k, this.tEnd, 800);
+      // the panel opens on the ordinary case, τ before the first kinetic focus of S (none where none can exist)
+      const tStar = this.data.kinetic_focus_possible === false ? null : this.focusAt;
+      if (!this.TChosen) { this.T = openingDuration(this.tEnd, tStar); this.TInput.value = String(this.T); newPath = true; }
+    }
     const key = `${this.T}|${Array.from(y0)}|${Array.from(k)}`;
     if (newPath || !this.live || this.pathKey !== key) {
       const p = path(this.fns.rhs, y0, k, this.T);
@@ -187,10 +195,6 @@ export class ActionPanel {
       this.epsInput.min = String(-this.epsMax); this.epsInput.max = String(this.epsMax);
       this.epsInput.step = String(this.epsMax / 100); this.epsInput.value = String(this.eps);
       this.pathKey = key; this.cachedPath = p;
-      if (this.focusKey !== `${Array.from(y0)}|${Array.from(k)}`) {
-        this.focusKey = `${Array.from(y0)}|${Array.from(k)}`;
-        this.focusAt = focus(this.fns.rhs, y0, k, this.tEnd, 800);
-      }
       this.server = null;
       clearTimeout(this.timer);
       this.timer = setTimeout(() => this.ask(false), SETTLE_MS);
@@ -265,7 +269,8 @@ export class ActionPanel {
       this.fns = { spec: answer.preview, rhs: compileRhs(answer.preview), L: compileLagrangian(answer.preview) };
     }
     this.section.setAttribute("aria-busy", "false");
-    if (first) { this.update(true); clearTimeout(this.timer); }
+    // the first answer (for the τ before the browser found the focus) is this τ's unless update moved τ
+    if (first) { const asked = this.T; this.update(true); if (this.T === asked) clearTimeout(this.timer); }
     if (answer.t_end === this.T && answer.k === this.shape && answer.coordinate === names[this.coordinate] && this.epsilons && answer.epsilons.length === this.epsilons.length) {
       this.server = answer;
       this.paint();

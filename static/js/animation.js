@@ -51,7 +51,7 @@ export class Player {
     this.index = 0;
     this.frames = 0;
     this.dim = spec.dim;
-    this.camera = new Camera(spec.dim);
+    this.camera = new Camera(spec.dim, spec.view);
     this.clock = new Clock({
       speed: () => (this.speedSelect ? Number(this.speedSelect.value) : 1),
       end: () => (this.run ? this.run.t[this.run.t.length - 1] : null),

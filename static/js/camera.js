@@ -1,7 +1,7 @@
 /**
  * camera.js — how the mechanism's world coordinates land on the canvas (animation.js).
  *
- *   const camera = new Camera(dim);
+ *   const camera = new Camera(dim, view);   view: {yaw, pitch} the page opens on (3-D), or null
  *   camera.fit(visit, width, height, dpr)   equal scales on both screen axes, everything visit(grow)
  *                                           passes to grow(x, y, z) in view, with a margin
  *   camera.screenOf([x, y, z])              device pixels on the canvas
@@ -11,9 +11,10 @@
  * turned about the vertical axis (yaw), then tilted (pitch).
  */
 export class Camera {
-  constructor(dim) {
+  constructor(dim, view = null) {
     this.dim = dim;
-    this.view = { yaw: -0.6, pitch: 0.35 }; // 3-D only
+    // 3-D only: the mechanism's own opening view (app/viz/mechanism.py, Family.view), else a general one
+    this.view = view ? { yaw: view.yaw, pitch: view.pitch } : { yaw: -0.6, pitch: 0.35 };
     this.frame = null; // {scale, u0, v0, cx, cy}: the view's centre and device pixels per metre
   }
 

@@ -190,11 +190,13 @@ export class SmallOscillationsPanel extends PreviewPanel {
     if (!eq) this.readout.textContent = `No stable equilibrium: U_eff${held ? ` (with ${held}, from the initial state)` : ""} has no minimum near this motion, so there is no small-oscillation prediction.`;
     else if (!measured) this.readout.textContent = `Predicted ${letter} = ${fmt(predicted)} rad/s about ${lr} = ${fmt(eq.x)} ${unit}; this run is too short to measure a full oscillation.`;
     else {
+      // the farthest the run gets from the equilibrium (its swing need not be symmetric about it: the readout
+      // names where it starts and the two extremes, not an "amplitude")
       const amp = Math.max(...values.map((v) => Math.abs(v - eq.x)));
       // the measurement resolves the frequency to about the sampling's share of a period, and to the run's error
       const dt = run.t.length > 1 ? run.t[1] - run.t[0] : 0;
       const resolution = 100 * Math.max((measured * dt / (2 * Math.PI)) ** 2, (run.stats.error_estimate || 0) / Math.max(amp, 1e-300), 1e-9);
-      this.readout.textContent = `About ${lr} = ${fmt(eq.x)} ${unit}: predicted ${letter} = ${fmt(predicted)} rad/s, measured ${fmt(measured)} rad/s (${fmtResolved((100 * (measured - predicted)) / predicted, resolution)} %) at amplitude ${fmt(amp)} ${unit}. ${run.data.exact_frequency || "The prediction holds as the amplitude goes to zero."}`;
+      this.readout.textContent = `About ${lr} = ${fmt(eq.x)} ${unit}: predicted ${letter} = ${fmt(predicted)} rad/s, measured ${fmt(measured)} rad/s (${fmtResolved((100 * (measured - predicted)) / predicted, resolution)} %) for this run from ${lr} = ${fmt(values[0])} ${unit}, which swings between ${lr} = ${fmt(Math.min(...values))} and ${fmt(Math.max(...values))} ${unit}. ${run.data.exact_frequency || "The prediction holds as the amplitude goes to zero."}`;
     }
   }
 

@@ -49,6 +49,8 @@ def test_the_tabletop_frequency_is_said_to_be_exact_at_every_amplitude(page):
     # prof-c 30: 2√(k/m) is exact for the isotropic oscillator, not a limit as the amplitude goes to zero
     text = _small_oscillations(page, "tabletop-spring")
     assert "exact at every amplitude" in text and "goes to zero" not in text
+    # prof-e 21: "at amplitude 0.2929 m" was the start's distance from r₀; the swing is not symmetric about it
+    assert "amplitude 0." not in text and "from r = 1 m, which swings between r = 0.5 and 1 m" in text
     assert "holds as the amplitude goes to zero" in _small_oscillations(page, "simple-pendulum")
 
 
@@ -83,3 +85,12 @@ def test_an_unbounded_run_is_not_said_to_swing(page):
     assert "below the separatrix (0 J)" in text and "it runs off to infinity" in text
     assert "swings back and forth" not in text
     assert page.locator("#panel-phase").get_attribute("data-separatrix") == "0"
+
+
+def test_the_parabola_default_swing_is_small_enough_for_the_prediction(page):
+    # prof-f 17: from ρ = 0.5 m (4α²ρ² = 1) the panel showed the measurement 18 % below the small-oscillation Ω
+    import re
+
+    text = _small_oscillations(page, "rotating-parabola")
+    (percent,) = re.findall(r"\(([−+-]?[\d.]+) %\)", text)
+    assert abs(float(percent.replace("−", "-"))) <= 3, text

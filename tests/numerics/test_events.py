@@ -56,3 +56,12 @@ def test_every_method_stops_at_the_same_instant():
     for method in ("DOP853-compiled", "Yoshida4", "RK45"):
         out = simulate(system, k, y0, 2.0, 200, method=method, events=events)
         assert out.event is not None and out.event.t == pytest.approx(6 / (G * math.sin(ALPHA)), rel=1e-8)
+
+
+def test_the_wedge_block_pushed_up_stops_at_the_top_corner():
+    """D < 0 would put the block above the wedge's top corner, off its slope (prof-f 12): the run ends at D = 0."""
+    doc = simulation.simulate_scene("movable-incline", request(initial={"D": 0.2, "D_dot": 3.0 * -1}))
+    event = doc["stats"]["event"]
+    assert event["name"] == "top corner" and "top corner" in event["message"]
+    D = np.array(doc["state"]["D"])
+    assert D.min() > -1e-9 and abs(D[-1]) < 1e-9 and doc["t"][-1] < SCENES["movable-incline"].t_end

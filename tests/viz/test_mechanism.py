@@ -165,3 +165,14 @@ def test_the_string_pulls_every_mass_it_holds():
         assert up == pytest.approx([0.0, 1.0])  # every piece of string pulls upward
         # the middle mass hangs from the wheel on two pieces of string: twice the tension
         assert evaluate(f["ratio"], env) == pytest.approx(2.0) if f["on"] == 2 else "ratio" not in f
+
+
+def test_the_helix_opens_on_a_view_that_shows_its_turns():
+    """prof-e 14: side-on, the helix looked like a flat wave. Looking down at pitch p, a turn of radius R is an
+    ellipse 2R sin p tall and the turns lie (2π/α) cos p apart: the ellipse must be at least half the spacing."""
+    view = spec_of("helix-bead").get("view")
+    assert view is not None, "the helix needs its own opening view"
+    env = env_of("helix-bead")
+    tall = 2 * env["R"] * math.sin(view["pitch"])
+    apart = 2 * math.pi / env["alpha"] * math.cos(view["pitch"])
+    assert tall >= 0.5 * apart, (tall, apart)

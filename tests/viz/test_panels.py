@@ -27,7 +27,8 @@ def test_names_are_unique_and_every_panel_explains_itself():
         ("rail-two-body", "modes", True),  # a vibration beside the free translation
         ("pulley", "modes", False),  # no equilibrium
         ("double-pendulum", "poincare", True),
-        ("coupled-oscillators", "poincare", True),
+        ("coupled-oscillators", "poincare", False),  # linear: two normal modes, integrable
+        ("spherical-pendulum", "poincare", False),  # p_φ conserved: one degree of freedom left
         ("simple-pendulum", "poincare", False),  # one coordinate
         ("damped-pendulum", "poincare", False),
         ("rotating-parabola", "h-vs-e", True),
@@ -50,7 +51,7 @@ def test_optional_panels_need_a_declaration_and_the_others_do_not():
 
 
 def test_the_scenes_beyond_the_chapter_ask_for_a_poincare_section():
-    assert {s.id for s in SCENES.values() if "poincare" in s.panels} == {"double-pendulum", "coupled-oscillators"}
+    assert {s.id for s in SCENES.values() if "poincare" in s.panels} == {"double-pendulum"}
 
 
 def test_every_panel_has_a_drawing_in_the_browser_and_every_drawing_a_panel():
@@ -97,3 +98,23 @@ def test_the_phase_text_speaks_of_angles_only_where_a_coordinate_is_one(client):
     assert "is shown wrapped into (−π, π]" not in client.get("/scenes/rail-two-body").text
     # prof-e 5: the spherical pendulum's polar angle lies in [0, π]: no page says every angle is in (−π, π]
     assert "An angle is shown in (−π, π]" not in client.get("/scenes/spherical-pendulum").text
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_a_poincare_section_is_shown_only_where_the_motion_can_be_chaotic(scene_id):
+    """prof-f 20, 38: sections of integrable systems (linear, or a conserved momentum) are closed curves only."""
+    from app.web.pages import page_model
+
+    assert ("poincare" in page_model(scene_id)["panels"]) == (scene_id == "double-pendulum")
+
+
+def test_typed_systems_get_a_poincare_section_only_where_the_motion_can_be_chaotic():
+    from tests.viz.test_user_page import model
+    from tests.web.test_playground_prof_d import CONE
+
+    # the cone: φ is cyclic, p_φ is conserved, one degree of freedom is left (prof-f 38)
+    assert "poincare" not in model(CONE)["panels"]
+    # Hénon and Heiles' potential: two coupled nonlinear degrees of freedom, chaotic at high energy
+    henon = {"coordinates": ["x", "y"], "parameters": [{"name": "m", "value": 1.0}],
+             "kinetic": "m*(x_dot**2 + y_dot**2)/2", "potential": "(x**2 + y**2)/2 + x**2*y - y**3/3"}  # fmt: skip
+    assert "poincare" in model(henon)["panels"]

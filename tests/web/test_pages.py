@@ -269,3 +269,15 @@ def test_T_and_U_are_shown_without_asking_for_all_steps(client, scene_id):
         # the step's list item is a core step: not folded behind "Show all steps"
         head = html.split(f">{title}<", 1)[0].rsplit("<li ", 1)[1]
         assert 'class="step"' in head and "bookkeeping" not in head, head
+
+
+def test_the_wedge_block_starts_on_the_slope():
+    """D(0) runs from the top corner (0) down: a start above the corner contradicted the picture (prof-f 12)."""
+    (D,) = [c for c in page_model("movable-incline")["initial"] if c["name"] == "D"]
+    assert float(D["min"]) == 0.0 and float(D["max"]) > 0 and D["allowed"].startswith("0 to")
+
+
+def test_the_tabletop_spring_constant_has_a_tabletop_range():
+    """prof-e 20: "0.01 to 100,000,000 N/m" is no table's spring."""
+    (k,) = [c for c in page_model("tabletop-spring")["parameters"] if c["name"] == "k"]
+    assert k["allowed"] == "0.01 to 1,000 N/m"
