@@ -25,6 +25,7 @@ import { verdict } from "./action-verdict.js";
 import { compile } from "./expr.js";
 import { compileRhs } from "./preview.js";
 import { fmt, table } from "./summaries.js";
+import { proseReadout } from "./prose.js";
 
 /** Whether the server's dS/dε at ε = 0 is zero within its quadrature's error (it is, on the true path of an
  *  unforced system): rounding noise is not shown as a number. */
@@ -46,7 +47,7 @@ export class ActionPanel {
   constructor(section, data, urls = {}) {
     this.section = section; this.data = data;
     this.plot = section.querySelector(".plot");
-    this.readout = section.querySelector(".readout");
+    this.readout = proseReadout(section.querySelector(".readout"));
     this.summary = section.querySelector(".data-summary .table");
     this.preview = true;
     const sim = section.closest("#simulation") || document.getElementById("simulation");

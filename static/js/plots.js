@@ -95,12 +95,16 @@ class MomentaPanel extends TimePanel {
     const pad = Math.max(0.05 * Math.max(Math.abs(lo), Math.abs(hi)), 5 * drift, 1e-12);
     // a rotation's J of coordinates in m is in kg·m²/s; a momentum has its coordinate's unit
     const lengths = Object.values(run.data.units).every((u) => u === "m");
+    // a sum of momenta (p_x1 + p_x2) has its terms' unit, the first term's coordinate's
+    const coordinate = (n) => n.split(" + ")[0].slice(2);
     const unitOf = (n) => n.startsWith("J")
       ? (lengths ? momentumUnit("rad") : "SI units")
-      : (run.data.momentum_units && run.data.momentum_units[n.slice(2)]) || momentumUnit(run.data.units[n.slice(2)]);
+      : (run.data.momentum_units && run.data.momentum_units[coordinate(n)]) || momentumUnit(run.data.units[coordinate(n)]);
     const units = [...new Set(names.map(unitOf))];
-    const unit = units.length === 1 ? units[0] : "SI units";
-    this.drawSeries(run, top, bottom, `momentum (${unit})`, `change (${unit})`, { yaxis: { range: [lo - pad, hi + pad] } });
+    // one unit names the axis; a mixed set (kg·m/s beside kg·m²/s) names each momentum's in the legend
+    const unit = units.length === 1 ? units[0] : null;
+    if (!unit) for (const series of [top, bottom]) series.forEach((s, k) => { s.name = `${s.name} (${unitOf(names[k])})`; });
+    this.drawSeries(run, top, bottom, unit ? `momentum (${unit})` : "momentum (unit in the legend)", unit ? `change (${unit})` : "change (unit in the legend)", { yaxis: { range: [lo - pad, hi + pad] } });
     // each momentum with its own unit: "p_θ stays at 1 kg·m²/s within 7.6 × 10⁻⁹ kg·m²/s"
     const said = (x, n) => `${fmt(x)}${unitOf(n) && !unitOf(n).includes("SI") ? ` ${unitOf(n)}` : ""}`;
     this.readout.textContent = top.map((s, k) => `${s.name} stays at ${said(s.values[0], names[k])} within ${said(Math.max(...finite(bottom[k].values).map(Math.abs)), names[k])}.`).join(" ");
