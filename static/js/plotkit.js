@@ -99,6 +99,7 @@ const SVG = "http://www.w3.org/2000/svg";
 
 export function react(panel, traces, lay) {
   const plot = panel.plot;
+  traces = traces.map((t) => (typeof t.name === "string" ? { ...t, name: proseHTML(t.name) } : t));
   if (panel.previewing && plot._fullLayout && panel.overlay) {
     panel.overlay.lines(traces);
     panel.section.classList.add("previewing");
@@ -106,8 +107,7 @@ export function react(panel, traces, lay) {
   }
   panel.overlay?.lines([]);
   panel.section.classList.remove("previewing");
-  const named = traces.map((t) => (typeof t.name === "string" ? { ...t, name: proseHTML(t.name) } : t));
-  return Plotly.react(plot, named, lay, CONFIG);
+  return Plotly.react(plot, traces, lay, CONFIG);
 }
 
 /** An SVG over a Plotly plot: a vertical time cursor, markers and level lines in data coordinates. */

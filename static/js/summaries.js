@@ -7,6 +7,8 @@
  *   fmt(x)                                       a number for reading: 4 significant digits
  */
 
+import { proseHTML } from "./prose.js";
+
 export function fmt(x) {
   if (x === null || x === undefined || Number.isNaN(x)) return "–";
   if (x < 0) return `−${fmt(-x)}`; // a typeset minus sign, not a hyphen
@@ -80,13 +82,13 @@ export function table(container, caption, headers, rows) {
   if (!container) return null;
   const t = document.createElement("table");
   const cap = document.createElement("caption");
-  cap.textContent = caption;
+  cap.innerHTML = proseHTML(caption);
   t.append(cap);
   const head = t.createTHead().insertRow();
   for (const h of headers) {
     const th = document.createElement("th");
     th.scope = "col";
-    th.textContent = h;
+    th.innerHTML = proseHTML(h);
     head.append(th);
   }
   const body = t.createTBody();
@@ -96,7 +98,7 @@ export function table(container, caption, headers, rows) {
       const c = k === 0 ? document.createElement("th") : document.createElement("td");
       if (k === 0) c.scope = "row";
       // a missing value reads as a dash, never as "null" or "undefined"
-      c.textContent = typeof cell === "number" ? fmt(cell) : cell === null || cell === undefined ? "–" : String(cell);
+      c.innerHTML = proseHTML(typeof cell === "number" ? fmt(cell) : cell === null || cell === undefined ? "–" : String(cell));
       tr.append(c);
     });
   }
