@@ -30,18 +30,17 @@ export function setProse(element, text) {
   element.innerHTML = proseHTML(text);
 }
 
-const TEXT = Object.getOwnPropertyDescriptor(Node.prototype, "textContent");
-
 /**
  * A panel's readout whose sentences set their subscripts: after ``proseReadout(el)``, ``el.textContent = s``
  * shows ``s`` as ``setProse`` would, and reading ``el.textContent`` gives the text as shown (p<sub>θ</sub> reads "pθ").
  */
 export function proseReadout(element) {
   if (!element) return element;
+  const text = Object.getOwnPropertyDescriptor(Node.prototype, "textContent");
   Object.defineProperty(element, "textContent", {
     configurable: true,
-    get() { return TEXT.get.call(this); },
-    set(text) { this.innerHTML = proseHTML(text); },
+    get() { return text.get.call(this); },
+    set(value) { this.innerHTML = proseHTML(value); },
   });
   return element;
 }
