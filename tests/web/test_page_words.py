@@ -196,7 +196,7 @@ def test_the_parameters_table_prints_ranges_as_the_sliders_do(client):
 
 def test_a_cyclic_coordinates_momentum_is_named_in_its_conservation_sentence(client):
     page = client.get("/scenes/movable-incline").text
-    assert "so dp_X/dt = ∂L/∂X = 0" in page and "so dp/dt" not in page
+    assert "so dp<sub>X</sub>/dt = ∂L/∂X = 0" in page and "so dp/dt" not in page
 
 
 def test_initial_conditions_print_their_ranges_with_a_true_minus(client):
