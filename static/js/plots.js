@@ -21,7 +21,7 @@ import { ModesPanel } from "./modes.js";
 import { PhasePanel } from "./phase.js";
 import { PoincarePanel } from "./poincare.js";
 import { EffectivePotentialPanel, SmallOscillationsPanel } from "./reduction.js";
-import { constantOrRange, fmt, median, seriesTable, table } from "./summaries.js";
+import { constantOrRange, fmt, median, seriesTable, sharedUnit, table } from "./summaries.js";
 
 /** A panel of quantities against time, with a second row for their change since t = 0. */
 class TimePanel extends PreviewPanel {
@@ -184,7 +184,9 @@ class WorkPrecisionPanel {
   async draw(run) {
     this.run = run;
     const stats = run.stats;
-    const here = `This run: ${this.data.method_labels?.[stats.method] || stats.method}, estimated error ${fmt(stats.error_estimate)}, run time ${fmt(stats.wall_time_s * 1000)} ms, ${stats.rhs_evaluations ?? "–"} evaluations of the equations of motion.`;
+    // what the error is of and in which unit; the run's time is the chart's axis, not a sentence
+    const unit = sharedUnit(this.data);
+    const here = `This run: ${this.data.method_labels?.[stats.method] || stats.method}, largest estimated error in the coordinates ${fmt(stats.error_estimate)}${unit ? ` ${unit}` : " (in each coordinate's unit)"}.`;
     if (!this.visible) { this.readout.textContent = `${here} The chart loads when this panel is in view.`; return; }
     this.readout.textContent = `${here} Loading the error-against-run-time chart…`;
     this.section.setAttribute("aria-busy", "true");

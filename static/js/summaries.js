@@ -67,15 +67,25 @@ export function magnitude(x) {
 export const short = (x) => (Number.isFinite(x) ? fmt(Number(x.toPrecision(2))) : "–");
 
 /**
- * The run status a student reads at a glance: "Simulated 10 s · error ≈ 10⁻⁸ · 0.3 ms".
- * stats: the simulate API's stats (t_end_reached, error_estimate, wall_time_s).
+ * The run status a student reads at a glance: "Simulated 10 s · largest estimated error in the coordinates ≈ 4 × 10⁻⁹ rad".
+ * stats: the simulate API's stats (t_end_reached, error_estimate); unit: the coordinates' unit when they share one
+ * ("" when they do not: the error is then in each coordinate's own unit).  How long the computer took, and with
+ * which method, is no part of the physics: those sit under "details".
  */
-export function statusLine(stats) {
+export function statusLine(stats, unit = "") {
   const parts = [`Simulated ${short(stats.t_end_reached)} s`];
-  // what each number is: the error bound in the coordinates' own units, the server's time to compute the run
-  if (Number.isFinite(stats.error_estimate)) parts.push(stats.error_estimate > 0 ? `error ≈ ${magnitude(stats.error_estimate)}` : "error ≈ 0");
-  if (Number.isFinite(stats.wall_time_s)) parts.push(`computed in ${short(stats.wall_time_s * 1000)} ms`);
+  // the error bound is the largest difference from the true motion over the samples, in the coordinates' units
+  const said = (x) => (unit ? `${x} ${unit}` : `${x} (in each coordinate's unit)`);
+  if (Number.isFinite(stats.error_estimate)) {
+    parts.push(`largest estimated error in the coordinates ≈ ${said(stats.error_estimate > 0 ? fmt(Number(stats.error_estimate.toPrecision(1))) : "0")}`);
+  }
   return parts.join(" · ");
+}
+
+/** The unit the coordinates share ("rad", "m"), or "" when they have different ones. */
+export function sharedUnit(data) {
+  const units = [...new Set((data.coordinates || []).map((q) => data.units?.[q]))];
+  return units.length === 1 && units[0] ? units[0] : "";
 }
 
 export function table(container, caption, headers, rows) {
