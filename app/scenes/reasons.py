@@ -88,7 +88,7 @@ DAMPED_PENDULUM: dict[str, str] = {
     "energy": "The bob's kinetic plus gravitational energy, which the drag drains.",
     "h-vs-e": "The positions do not depend on t, so h = E. That says nothing about conservation: the drag does "
     "work, so h (and E with it) decays.",
-    "power": "dE/dt = −b θ̇² ≤ 0: the energy falls whenever the bob moves.",
+    "power": "h, which equals E here, falls at the rate b θ̇² whenever the bob moves.",
     **_hamiltonian("p_θ²/(2 m R²) + m g R (1 − cos θ), with the drag added to ṗ"),
     "equilibria": "The drag vanishes at rest, so the equilibria are the simple pendulum's: bottom and top.",
     "normal-modes": "About the bottom the motion is a damped oscillation; about the top it runs away.",
