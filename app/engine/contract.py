@@ -341,6 +341,7 @@ def scene_json(scene: Scene) -> dict[str, Any]:
         "marks": list(scene.marks),
         "answers": list(scene.answers),
         "exact_frequency": scene.exact_frequency,
+        "coordinate_meanings": dict(scene.coordinate_meanings),
     }
 
 
