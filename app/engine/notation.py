@@ -231,16 +231,12 @@ def _sometimes(
                 r"\lambda", "λ", "Lagrange multiplier of a constraint: its force on body i is λ ∂𝒞/∂r_i", "", "derived"
             )
         )
-        rows.append(
-            _row(
-                "F",
-                "F",
-                "size of a constraint's force, "
-                + "; ".join(f"F{str(a + 1).translate(_SUBSCRIPTS)}: {f.constraint.name}" for a, f in enumerate(forces)),
-                "N" if energy else "",
-                "derived",
+        # each force of constraint its own letter, F₁, F₂, … in the order the Results list them (the page
+        # prints F₁ = … there and in the constraint panel)
+        for a, f in enumerate(forces, start=1):
+            rows.append(
+                _row(f"F_{{{a}}}", f"F{str(a).translate(_SUBSCRIPTS)}", f.constraint.name, "N" if energy else "", "derived")
             )
-        )
         rows += _cartesian(d, forces)
     if tr is not None:
         for Q, definition in zip(tr.derivation.table.q, tr.definitions, strict=True):
