@@ -600,20 +600,6 @@ def scene_page(
         "default_rtol": DEFAULT_RTOL,
         "client_json": json.dumps(client, separators=(",", ":")).replace("<", "\\u003c"),
     }
-    model["summary"]["symbols"] = said_of_coordinates(page_symbols(model), doc["coordinates"], info)
+    model["summary"]["symbols"] = page_symbols(model)
     return model
 
-
-def said_of_coordinates(
-    symbols: list[dict[str, Any]], coordinates: Sequence[str], info: Mapping[str, Any]
-) -> list[dict[str, Any]]:
-    """The Symbols table with each coordinate said as its scene says it (``Scene.coordinate_meanings``)."""
-    meanings = {
-        unicode(q): prose(info["coordinate_meanings"][q])
-        for q in coordinates
-        if q in (info.get("coordinate_meanings") or {})
-    }
-    return [
-        {**s, "meaning": meanings[s["unicode"]]} if s.get("kind") == "coordinate" and s["unicode"] in meanings else s
-        for s in symbols
-    ]

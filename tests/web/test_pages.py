@@ -13,7 +13,6 @@ import sympy as sp
 
 from app.engine.names import prose
 from app.engine.trees import TreeError, of_text
-from app.web.prose import prose_html
 from app.scenes import SCENES
 from app.service.derivations import derivation_document
 from app.viz.chapter import SECTIONS, section_numbers, table_of_contents
@@ -21,6 +20,7 @@ from app.viz.exprtree import evaluate
 from app.viz.names import label
 from app.viz.panels import NAMES
 from app.web.pages import page_model
+from app.web.prose import prose_html
 
 ROOT = Path(__file__).resolve().parents[2]
 
