@@ -103,8 +103,8 @@ class MomentaPanel extends TimePanel {
     const units = [...new Set(names.map(unitOf))];
     // one unit names the axis; a mixed set (kg·m/s beside kg·m²/s) names each momentum's in the legend
     const unit = units.length === 1 ? units[0] : null;
-    if (!unit) for (const series of [top, bottom]) series.forEach((s, k) => { s.name = `${s.name} (${unitOf(names[k])})`; });
-    this.drawSeries(run, top, bottom, unit ? `momentum (${unit})` : "momentum (unit in the legend)", unit ? `change (${unit})` : "change (unit in the legend)", { yaxis: { range: [lo - pad, hi + pad] } });
+    const legend = (series) => (unit ? series : series.map((s, k) => ({ ...s, name: `${s.name} (${unitOf(names[k])})` })));
+    this.drawSeries(run, legend(top), legend(bottom), unit ? `momentum (${unit})` : "momentum (unit in the legend)", unit ? `change (${unit})` : "change (unit in the legend)", { yaxis: { range: [lo - pad, hi + pad] } });
     // each momentum with its own unit: "p_θ stays at 1 kg·m²/s within 7.6 × 10⁻⁹ kg·m²/s"
     const said = (x, n) => `${fmt(x)}${unitOf(n) && !unitOf(n).includes("SI") ? ` ${unitOf(n)}` : ""}`;
     this.readout.textContent = top.map((s, k) => `${s.name} stays at ${said(s.values[0], names[k])} within ${said(Math.max(...finite(bottom[k].values).map(Math.abs)), names[k])}.`).join(" ");
