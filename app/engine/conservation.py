@@ -190,7 +190,8 @@ def energetics(mech: Mechanics, eqs: Equations) -> Energetics:
         if working:
             parts_of_change.append("the generalized forces do work at the rate Σ Q q̇")
         joined = " and ".join(parts_of_change)
-        h_why = f"{joined[0].upper()}{joined[1:]}, so h is not conserved: dh/dt = −∂L/∂t + Σ Q q̇ along the motion."
+        # the page prints "h is not conserved." in bold before this reason: the reason does not say it again
+        h_why = f"{joined[0].upper()}{joined[1:]}: dh/dt = −∂L/∂t + Σ Q q̇ along the motion."
 
     return Energetics(cyclic, tuple(conserved), dL_dt, h, E, diff, equal, reason, power, h_conserved, h_why)
 

@@ -146,7 +146,9 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         "angles": angle_coordinates(d),
         "symbols": symbol_names(d),
         # every letter of the document once, with what it stands for (app/engine/notation.py)
-        "notation": notation.table(d, forces, transformed[0] if transformed is not None else None),
+        "notation": notation.table(
+            d, forces, transformed[0] if transformed is not None else None, scene.coordinate_meanings if scene else {}
+        ),
         "parameters": parameters_json(d.system.parameters),
         "kinetic": pr.pair(d.mechanics.T) if d.mechanics.T is not None else None,
         "potential": pr.pair(d.mechanics.U) if d.mechanics.U is not None else None,

@@ -13,6 +13,7 @@ it means.
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from fractions import Fraction
 from typing import Any
 
@@ -21,7 +22,7 @@ import sympy as sp
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation
 from app.engine.dimensions import Dims, add_dims, dimension, kind_of_unit, system_dimensions, unit_text
-from app.engine.names import MASS_MATRIX, latex, unicode
+from app.engine.names import MASS_MATRIX, latex, prose, unicode
 from app.engine.textbook import unicode_text
 from app.engine.transform import Transformed
 
@@ -119,7 +120,10 @@ def _row(tex: str, uni: str, meaning: str, unit: str, kind: str) -> dict[str, An
 
 
 def table(
-    d: Derivation, forces: tuple[ConstraintForce, ...] = (), transformed: Transformed | None = None
+    d: Derivation,
+    forces: tuple[ConstraintForce, ...] = (),
+    transformed: Transformed | None = None,
+    meanings: Mapping[str, str] | None = None,
 ) -> list[dict[str, Any]]:
     """Every letter of the document once, with what it stands for and its unit: coordinates, parameters,
     the coordinates' momenta, the derived quantities, then the letters of the steps a document has only
@@ -131,7 +135,9 @@ def table(
     for q in d.table.q:
         # an angle is a coordinate inside a sine or cosine: dimensionless, printed in rad
         unit = _unit(dims.get(q), angle=True)
-        rows.append(_row(latex(q.name), unicode(q.name), "generalized coordinate", unit, "coordinate"))
+        # what the coordinate is in its set-up's words (a scene's), else only what it is to the method
+        said = prose((meanings or {}).get(q.name, "")) or "generalized coordinate"
+        rows.append(_row(latex(q.name), unicode(q.name), said, unit, "coordinate"))
     for p in d.system.parameters:
         rows.append(
             {
@@ -231,16 +237,12 @@ def _sometimes(
                 r"\lambda", "λ", "Lagrange multiplier of a constraint: its force on body i is λ ∂𝒞/∂r_i", "", "derived"
             )
         )
-        rows.append(
-            _row(
-                "F",
-                "F",
-                "size of a constraint's force, "
-                + "; ".join(f"F{str(a + 1).translate(_SUBSCRIPTS)}: {f.constraint.name}" for a, f in enumerate(forces)),
-                "N" if energy else "",
-                "derived",
+        # each force of constraint its own letter, F₁, F₂, … in the order the Results list them (the page
+        # prints F₁ = … there and in the constraint panel)
+        for a, f in enumerate(forces, start=1):
+            rows.append(
+                _row(f"F_{{{a}}}", f"F{str(a).translate(_SUBSCRIPTS)}", f.constraint.name, "N" if energy else "", "derived")
             )
-        )
         rows += _cartesian(d, forces)
     if tr is not None:
         for Q, definition in zip(tr.derivation.table.q, tr.definitions, strict=True):

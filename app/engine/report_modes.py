@@ -19,6 +19,7 @@ from app.engine.dimensions import system_dimensions, unit_text
 from app.engine.hamilton import Hamilton
 from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode, NormalModes
 from app.engine.report import Printer, _step, display, plain_name
+from app.engine.stability import Linear
 from app.engine.textbook import unicode_text
 
 
@@ -447,7 +448,9 @@ def _exponents(e: Equilibrium, d: Derivation) -> str:
         if s.imag < -1e-12 * max(1.0, abs(s)):
             continue  # each pair once
         re = _figures(s.real) if abs(s.real) > 1e-9 * max(1.0, abs(s)) else "0"
-        shown.append(re + (rf" \pm {_figures(s.imag)}\,i" if s.imag > 1e-12 * max(1.0, abs(s)) else ""))
+        pair = s.imag > 1e-12 * max(1.0, abs(s))
+        # a purely imaginary pair is ±2i, never 0 ± 2i
+        shown.append((rf"\pm {_figures(s.imag)}i" if re == "0" else rf"{re} \pm {_figures(s.imag)}\,i") if pair else re)
     eta = notation.letter("displacement", d)
     return rf"{eta} \propto e^{{s t}},\quad s = " + r",\; ".join(shown) + r"\,\mathrm{s}^{-1}" + AT_DEFAULTS
 
@@ -462,14 +465,16 @@ def _verdict(e: Equilibrium, d: Derivation) -> str:
     out = (
         "The velocity terms (G, from damping, Coriolis or magnetic forces) enter the motion near it: with "
         f"{notation.text('displacement', d)} = v e^{{st}} "
-        f"the exponents s are the eigenvalues of [[0, I], [−{Mu}⁻¹{Ku}, −{Mu}⁻¹G]]. "
+        # the eigenvalues of the first-order system's block matrix [[0, I], [−M⁻¹K, −M⁻¹G]] are the roots of
+        # det(s²M + sG + K) = 0: η = v e^{st} in M η̈ + G η̇ + K η = 0
+        f"the exponents s are the roots of det(s²{Mu} + sG + {Ku}) = 0. "
     )
     if e.kind == "unstable":
         out += "One has a positive real part, so small displacements grow: an unstable equilibrium."
     elif lin.damped and all(s.real < 0 for s in lin.exponents):
         out += "Every one has a negative real part, so small motions die away: an asymptotically stable equilibrium."
     elif e.kind == NEUTRAL:
-        out += "One is zero (a free drift) and none grows: a neutral direction."
+        out += _neutral(lin, Ku, wu)
     else:
         out += "Every one is imaginary, so small motions oscillate" + (f" (frequencies {freq})" if freq else "") + "."
         if lin.gyroscopic:
@@ -478,6 +483,24 @@ def _verdict(e: Equilibrium, d: Derivation) -> str:
                 "a gyroscopically stable equilibrium."
             )
     return out
+
+
+_COUNT = {1: "One", 2: "Two", 3: "Three", 4: "Four", 5: "Five", 6: "Six"}
+
+
+def _neutral(lin: Linear, Ku: str, wu: str) -> str:
+    """A neutral equilibrium's exponents in words: how many are zero (free drifts), and the oscillations of the
+    others, which come from G alone where K gives ω² = 0 in every direction (a charge in a magnetic field)."""
+    scale = max([1.0, *(abs(s) for s in lin.exponents)])
+    zeros = sum(1 for s in lin.exponents if abs(s) <= 1e-9 * scale)
+    pairs = sorted({_figures(s.imag) for s in lin.exponents if s.imag > 1e-12 * scale})
+    count = _COUNT.get(zeros, str(zeros))
+    out = f"{count} {'is' if zeros == 1 else 'are'} zero ({'a free drift' if zeros == 1 else 'free drifts'})"
+    if pairs:
+        out += ", the others are ±" + ", ±".join(f"{p}i" for p in pairs) + " (oscillations at " + ", ".join(pairs) + " rad/s)"
+        if all(abs(w) <= 1e-9 * scale**2 for w in lin.omega_squared):
+            out += f"; {Ku} gives {wu}² = 0 in every direction, so these frequencies come from the velocity terms G alone"
+    return out + ", and none grows: a neutral equilibrium."
 
 
 def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, nm: NormalModes) -> dict[str, str]:

@@ -8,6 +8,9 @@ MASS = Parameter("m", 0.1, "kg", 0.001, 100.0, "mass of the bead")
 
 HELIX_BEAD = Scene(
     id="helix-bead",
+    coordinate_meanings={
+        "z": "height of the bead on the helix",
+    },
     title="Bead on a vertical helix",
     section="4.3",
     family="helix",
@@ -57,6 +60,9 @@ HELIX_BEAD = Scene(
 
 ROTATING_PARABOLA = Scene(
     id="rotating-parabola",
+    coordinate_meanings={
+        "rho": "distance of the bead from the axis",
+    },
     title="Bead on a rotating parabolic wire",
     section="4.6–4.7",
     family="rotating-wire",

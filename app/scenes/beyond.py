@@ -5,6 +5,10 @@ from app.scenes.types import Parameter, Particle, Scene, System
 
 DOUBLE_PENDULUM = Scene(
     id="double-pendulum",
+    coordinate_meanings={
+        "theta1": "angle of the first rod from the downward vertical",
+        "theta2": "angle of the second rod from the downward vertical",
+    },
     title="Double pendulum",
     section="4.9",
     family="double-pendulum",
@@ -52,6 +56,10 @@ DOUBLE_PENDULUM = Scene(
 
 COUPLED_OSCILLATORS = Scene(
     id="coupled-oscillators",
+    coordinate_meanings={
+        "x1": "displacement of the first mass from its rest position",
+        "x2": "displacement of the second mass from its rest position",
+    },
     title="Two masses between three springs",
     section="4.9",
     family="three-springs",

@@ -9,6 +9,9 @@ ANGLE = Parameter("alpha", 0.5, "rad", 0.01, 1.5, "angle of the incline above th
 
 INCLINE_BLOCK = Scene(
     id="incline-block",
+    coordinate_meanings={
+        "X": "distance of the block up the slope from the foot of the ramp",
+    },
     title="Block on a fixed incline",
     section="4.3",
     family="incline",
@@ -66,6 +69,10 @@ INCLINE_BLOCK = Scene(
 
 MOVABLE_INCLINE = Scene(
     id="movable-incline",
+    coordinate_meanings={
+        "X": "displacement of the wedge along the floor from where it started",
+        "D": "distance of the block down the slope from the wedge's top corner",
+    },
     title="Block on a sliding wedge",
     section="4.5",
     family="wedge",

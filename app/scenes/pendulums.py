@@ -24,6 +24,9 @@ PLANAR_STRING = Constraint(
 
 SIMPLE_PENDULUM = Scene(
     id="simple-pendulum",
+    coordinate_meanings={
+        "theta": "angle of the string from the downward vertical",
+    },
     title="Simple pendulum",
     section="4.3",
     family="pendulum",
@@ -80,6 +83,10 @@ SIMPLE_PENDULUM = Scene(
 
 SPHERICAL_PENDULUM = Scene(
     id="spherical-pendulum",
+    coordinate_meanings={
+        "theta": "polar angle of the string from the upward vertical",
+        "phi": "azimuth of the string about the vertical",
+    },
     title="Spherical pendulum",
     section="4.4",
     family="spherical-pendulum",
@@ -142,6 +149,9 @@ SPHERICAL_PENDULUM = Scene(
 
 DAMPED_PENDULUM = Scene(
     id="damped-pendulum",
+    coordinate_meanings={
+        "theta": "angle of the string from the downward vertical",
+    },
     title="Damped pendulum",
     section="4.1",
     family="pendulum",

@@ -63,7 +63,7 @@ SIMPLE_PENDULUM: dict[str, str] = {
     "time-integral": "Taken between the turning points, this integral is half the period of a wide swing (there and back is a whole one): an elliptic integral.",
     "reduced-equilibria": "The bottom (θ = 0) is stable with ω² = g/R; the top (θ = π) is unstable.",
     "equilibria": "sin θ = 0 at the bottom and at the top of the circle, and nowhere else.",
-    "normal-modes": "Linearising sin θ about each equilibrium gives ω² = g/R at the bottom and −g/R at the top.",
+    "normal-modes": "Linearizing sin θ about each equilibrium gives ω² = g/R at the bottom and −g/R at the top.",
     "constraints": "The string keeps the bob on the sphere of radius R about the pivot at height R.",
     "constraint-forces": "The tension must supply the centripetal force m R θ̇² plus gravity's pull along the string.",
 }
@@ -88,7 +88,7 @@ DAMPED_PENDULUM: dict[str, str] = {
     "energy": "The bob's kinetic plus gravitational energy, which the drag drains.",
     "h-vs-e": "The positions do not depend on t, so h = E. That says nothing about conservation: the drag does "
     "work, so h (and E with it) decays.",
-    "power": "dE/dt = −b θ̇² ≤ 0: the energy falls whenever the bob moves.",
+    "power": "h, which equals E here, falls at the rate b θ̇² whenever the bob moves.",
     **_hamiltonian("p_θ²/(2 m R²) + m g R (1 − cos θ), with the drag added to ṗ"),
     "equilibria": "The drag vanishes at rest, so the equilibria are the simple pendulum's: bottom and top.",
     "normal-modes": "About the bottom the motion is a damped oscillation; about the top it runs away.",

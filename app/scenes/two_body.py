@@ -9,6 +9,10 @@ _U_EFF = "p_theta**2/(2*m*r**2) + k*r**2/2"
 
 TABLETOP_SPRING = Scene(
     id="tabletop-spring",
+    coordinate_meanings={
+        "r": "distance of the particle from the fixed centre",
+        "theta": "angle of the particle about the fixed centre",
+    },
     title="Particle on a tabletop with a central spring",
     section="4.4",
     family="tabletop-spring",
@@ -97,6 +101,10 @@ TABLETOP_SPRING = Scene(
 
 RAIL_TWO_BODY = Scene(
     id="rail-two-body",
+    coordinate_meanings={
+        "x1": "position of mass m1 along the rail, from a fixed mark",
+        "x2": "position of mass m2 along the rail, from a fixed mark",
+    },
     title="Two masses on a rail joined by a spring",
     section="4.5",
     family="two-body-rail",
@@ -160,6 +168,10 @@ RAIL_TWO_BODY = Scene(
 
 PULLEY = Scene(
     id="pulley",
+    coordinate_meanings={
+        "y1": "height of mass m1, measured upward",
+        "y2": "height of mass m2, measured upward",
+    },
     title="Three masses on pulleys",
     section="4.5",
     family="pulleys",

@@ -185,3 +185,6 @@ class Scene:
     # where the small-oscillation frequency is exact at every amplitude, the sentence saying so and why (the
     # small-oscillation panel says it in place of "holds as the amplitude goes to zero")
     exact_frequency: str = ""
+    # what each coordinate is, in the set-up's words: the Symbols table's meaning of it ("angle of the string
+    # from the downward vertical"), in place of the bare "generalized coordinate" a typed system gets
+    coordinate_meanings: Mapping[str, str] = field(default_factory=dict)

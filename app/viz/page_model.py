@@ -170,7 +170,11 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
             if doc.get("effective_potential")
             else None
         ),
-        "constraint_forces": doc.get("constraint_forces") or [],
+        # each force with its letter, F₁ = …, as the Symbols table defines it (app/engine/notation.py)
+        "constraint_forces": [
+            {**c, "symbol": f"F_{{{k}}}", "latex": f"F_{{{k}}} = {c['latex']}"}
+            for k, c in enumerate(doc.get("constraint_forces") or [], start=1)
+        ],
         # every letter of the page once, with what it stands for
         "symbols": doc.get("notation") or [],
     }
@@ -598,3 +602,4 @@ def scene_page(
     }
     model["summary"]["symbols"] = page_symbols(model)
     return model
+

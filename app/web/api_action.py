@@ -72,7 +72,7 @@ async def user_action(client: ClientDep, users: UserSystemsDep, body: Annotated[
 
 RELAX_TEXT = (
     "Fix q(0) and q(T) (by default the true path's, from `initial`) and give a trial path between them (by default "
-    "the straight line): the path that makes the discretised action stationary is found by Newton's method on the "
+    "the straight line): the path that makes the discretized action stationary is found by Newton's method on the "
     "discrete Euler–Lagrange equations (a variational integrator, midpoint rule, on `steps` and twice as many steps, "
     "extrapolated). The answer has the path, some of the iterates (for an animation), whether it is a minimum or a "
     "saddle of the discrete action (its Hessian's negative directions), and the shooting solution to compare."

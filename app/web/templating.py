@@ -28,6 +28,7 @@ from app.viz.chapter import ABOUT
 from app.viz.page_model import SLIDER_STEPS
 from app.web.compression import negotiate
 from app.web.mathml import mathml
+from app.web.prose import prose_html
 
 
 class ClassroomStaticFiles(StaticFiles):
@@ -124,3 +125,4 @@ templates.env.globals["vendor_ready"] = vendor_ready
 templates.env.globals["chapter_about"] = ABOUT
 templates.env.globals["slider_steps"] = SLIDER_STEPS  # the controls' slider resolution, for the browser
 templates.env.filters["mathml"] = mathml
+templates.env.filters["prose"] = prose_html  # a sentence's symbols with their subscripts set (app/web/prose.py)

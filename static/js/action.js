@@ -25,6 +25,7 @@ import { verdict } from "./action-verdict.js";
 import { compile } from "./expr.js";
 import { compileRhs } from "./preview.js";
 import { fmt, table } from "./summaries.js";
+import { proseReadout } from "./prose.js";
 
 /** Whether the server's dS/dε at ε = 0 is zero within its quadrature's error (it is, on the true path of an
  *  unforced system): rounding noise is not shown as a number. */
@@ -46,7 +47,7 @@ export class ActionPanel {
   constructor(section, data, urls = {}) {
     this.section = section; this.data = data;
     this.plot = section.querySelector(".plot");
-    this.readout = section.querySelector(".readout");
+    this.readout = proseReadout(section.querySelector(".readout"));
     this.summary = section.querySelector(".data-summary .table");
     this.preview = true;
     const sim = section.closest("#simulation") || document.getElementById("simulation");
@@ -457,14 +458,13 @@ export class ActionPanel {
     this.relaxButton.disabled = true; this.shootButton.hidden = true;
     // while the server works, the readout says so and counts the seconds (a long τ takes a few)
     const asked = performance.now();
-    const waiting = () => `Relaxing on the server: Newton's method on the discrete Euler–Lagrange equations, then a shooting solution to check the result (${((performance.now() - asked) / 1000).toFixed(0)} s so far)…`;
+    const waiting = () => `Relaxing: Newton's method on the discrete Euler–Lagrange equations, then a shooting solution to check the result (${((performance.now() - asked) / 1000).toFixed(0)} s so far)…`;
     this.readout.textContent = waiting();
     const ticker = setInterval(() => { if (!this.found) this.readout.textContent = waiting(); }, 1000);
     try {
       this.found = null;
       const answer = await fetchJSON(`${this.url}/relax`, { body }).finally(() => clearInterval(ticker));
       this.found = answer;
-      this.relaxSeconds = (performance.now() - asked) / 1000;
       // the iterates one after another, then the result beside the shooting solution: the whole replay at most
       // REPLAY_MS, however many steps Newton's method took
       const pause = Math.min(FRAME_MS, REPLAY_MS / Math.max(1, answer.iterations.length));
@@ -511,15 +511,15 @@ export class ActionPanel {
     this.section.dataset.source = f ? "server" : "preview";
     delete this.section.dataset.relaxed;
     if (!f) {
-      this.readout.textContent = `Find the path: the ends are fixed at t = 0 and t = τ = ${fmt(this.T)} s. Drag the points of the trial path (the ends too), then press Relax: the app makes the discretised action stationary and shows each Newton step.`;
+      this.readout.textContent = `Find the path: the ends are fixed at t = 0 and t = τ = ${fmt(this.T)} s. Drag the points of the trial path (the ends too), then press Relax: Newton's method makes the discretized action stationary, and each of its steps is shown.`;
       return;
     }
     if (this.frame !== null && this.frame !== undefined) {
-      // the answer is in: the server's steps are replayed, numbered out of their total
-      const total = f.iterations.length - 1, took = `the server took ${fmt(this.relaxSeconds)} s`;
+      // the answer is in: its steps are replayed, numbered out of their total ("Replaying" says the work is done)
+      const total = f.iterations.length - 1;
       this.readout.textContent = this.frame === 0
-        ? `Replaying the relaxation (${took}): the trial path, sampled on the discrete grid…`
-        : `Replaying the relaxation (${took}): Newton step ${this.frame} of ${total}, the path moving toward the one that makes the discrete action stationary…`;
+        ? "Replaying the relaxation: the trial path, sampled on the discrete grid…"
+        : `Replaying the relaxation: Newton step ${this.frame} of ${total}, the path moving toward the one that makes the discrete action stationary…`;
       return;
     }
     // the grey path's ends and starting rate: a relaxed motion with the same ends but another rate is a second true motion

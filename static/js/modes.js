@@ -21,6 +21,7 @@
  */
 import { Player } from "./animation.js";
 import { fmt, table } from "./summaries.js";
+import { proseReadout } from "./prose.js";
 
 const FPS = 60;
 const MAX_SAMPLES = 4000;
@@ -38,7 +39,7 @@ export class ModesPanel {
     this.which = 0;
     this.choice = section.querySelector(".mode-choice");
     this.freq = section.querySelector(".frequencies");
-    this.readout = section.querySelector(".readout");
+    this.readout = proseReadout(section.querySelector(".readout"));
     this.player = data.mechanism ? new Player(section, data.mechanism) : null;
     this.build();
   }

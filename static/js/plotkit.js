@@ -15,6 +15,7 @@
  */
 
 import { isFolded } from "./fold.js";
+import { proseHTML, proseReadout } from "./prose.js";
 
 export const COARSE = typeof matchMedia === "function" && matchMedia("(pointer: coarse)").matches;
 
@@ -41,7 +42,8 @@ export function layout(extra = {}) {
  */
 export const AXIS_FORMAT = { exponentformat: "power", showexponent: "all", separatethousands: false };
 // automargin with a standoff keeps the title clear of the tick labels, however wide they are (10⁻⁹ on a phone)
-export const axis = (text, extra = {}) => ({ title: { text, standoff: 6 }, automargin: true, gridcolor: "#e6e8eb", zerolinecolor: "#b8bec5", ...AXIS_FORMAT, ...extra });
+// an axis title and a legend name set their subscripts as the page's sentences do (prose.js): U_eff -> U<sub>eff</sub>
+export const axis = (text, extra = {}) => ({ title: { text: proseHTML(text), standoff: 6 }, automargin: true, gridcolor: "#e6e8eb", zerolinecolor: "#b8bec5", ...AXIS_FORMAT, ...extra });
 
 /** The SI unit of the generalized momentum of a coordinate measured in `unit` (rad or m). */
 export const momentumUnit = (unit) => (unit === "rad" ? "kg·m²/s" : unit === "m" ? "kg·m/s" : "SI units");
@@ -79,7 +81,7 @@ export function parts(section) {
   return {
     plot: section.querySelector(".plot"),
     summary: section.querySelector(".data-summary .table"),
-    readout: section.querySelector(".readout"),
+    readout: proseReadout(section.querySelector(".readout")),
     tools: section.querySelector(".panel-tools"),
   };
 }
@@ -97,6 +99,7 @@ const SVG = "http://www.w3.org/2000/svg";
 
 export function react(panel, traces, lay) {
   const plot = panel.plot;
+  traces = traces.map((t) => (typeof t.name === "string" ? { ...t, name: proseHTML(t.name) } : t));
   if (panel.previewing && plot._fullLayout && panel.overlay) {
     panel.overlay.lines(traces);
     panel.section.classList.add("previewing");

@@ -21,7 +21,7 @@ import { ModesPanel } from "./modes.js";
 import { PhasePanel } from "./phase.js";
 import { PoincarePanel } from "./poincare.js";
 import { EffectivePotentialPanel, SmallOscillationsPanel } from "./reduction.js";
-import { constantOrRange, fmt, median, seriesTable, table } from "./summaries.js";
+import { constantOrRange, fmt, median, seriesTable, sharedUnit, table } from "./summaries.js";
 
 /** A panel of quantities against time, with a second row for their change since t = 0. */
 class TimePanel extends PreviewPanel {
@@ -95,12 +95,16 @@ class MomentaPanel extends TimePanel {
     const pad = Math.max(0.05 * Math.max(Math.abs(lo), Math.abs(hi)), 5 * drift, 1e-12);
     // a rotation's J of coordinates in m is in kg·m²/s; a momentum has its coordinate's unit
     const lengths = Object.values(run.data.units).every((u) => u === "m");
+    // a sum of momenta (p_x1 + p_x2) has its terms' unit, the first term's coordinate's
+    const coordinate = (n) => n.split(" + ")[0].slice(2);
     const unitOf = (n) => n.startsWith("J")
       ? (lengths ? momentumUnit("rad") : "SI units")
-      : (run.data.momentum_units && run.data.momentum_units[n.slice(2)]) || momentumUnit(run.data.units[n.slice(2)]);
+      : (run.data.momentum_units && run.data.momentum_units[coordinate(n)]) || momentumUnit(run.data.units[coordinate(n)]);
     const units = [...new Set(names.map(unitOf))];
-    const unit = units.length === 1 ? units[0] : "SI units";
-    this.drawSeries(run, top, bottom, `momentum (${unit})`, `change (${unit})`, { yaxis: { range: [lo - pad, hi + pad] } });
+    // one unit names the axis; a mixed set (kg·m/s beside kg·m²/s) names each momentum's in the legend
+    const unit = units.length === 1 ? units[0] : null;
+    const legend = (series) => (unit ? series : series.map((s, k) => ({ ...s, name: `${s.name} (${unitOf(names[k])})` })));
+    this.drawSeries(run, legend(top), legend(bottom), unit ? `momentum (${unit})` : "momentum (unit in the legend)", unit ? `change (${unit})` : "change (unit in the legend)", { yaxis: { range: [lo - pad, hi + pad] } });
     // each momentum with its own unit: "p_θ stays at 1 kg·m²/s within 7.6 × 10⁻⁹ kg·m²/s"
     const said = (x, n) => `${fmt(x)}${unitOf(n) && !unitOf(n).includes("SI") ? ` ${unitOf(n)}` : ""}`;
     this.readout.textContent = top.map((s, k) => `${s.name} stays at ${said(s.values[0], names[k])} within ${said(Math.max(...finite(bottom[k].values).map(Math.abs)), names[k])}.`).join(" ");
@@ -180,7 +184,9 @@ class WorkPrecisionPanel {
   async draw(run) {
     this.run = run;
     const stats = run.stats;
-    const here = `This run: ${this.data.method_labels?.[stats.method] || stats.method}, estimated error ${fmt(stats.error_estimate)}, run time ${fmt(stats.wall_time_s * 1000)} ms, ${stats.rhs_evaluations ?? "–"} evaluations of the equations of motion.`;
+    // what the error is of and in which unit; the run's time is the chart's axis, not a sentence
+    const unit = sharedUnit(this.data);
+    const here = `This run: ${this.data.method_labels?.[stats.method] || stats.method}, largest estimated error in the coordinates ${fmt(stats.error_estimate)}${unit ? ` ${unit}` : " (in each coordinate's unit)"}.`;
     if (!this.visible) { this.readout.textContent = `${here} The chart loads when this panel is in view.`; return; }
     this.readout.textContent = `${here} Loading the error-against-run-time chart…`;
     this.section.setAttribute("aria-busy", "true");

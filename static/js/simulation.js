@@ -33,7 +33,7 @@ import { compile } from "./expr.js";
 import { isFolded } from "./fold.js";
 import { createPanel } from "./plots.js";
 import { compileRhs, integrate } from "./preview.js";
-import { fmt, statusLine } from "./summaries.js";
+import { fmt, sharedUnit, statusLine } from "./summaries.js";
 
 export function simulate(url, request, { signal } = {}) {
   return fetchJSON(url, { body: { ...request, precision: "display" }, signal });
@@ -211,7 +211,7 @@ export class SimulationView {
 function details(stats, labels = {}) {
   // the method by its name in the menu (the API's value is stats.method), and why it was chosen: one sentence
   const parts = [`Method: ${labels[stats.method] || stats.method}` + (stats.reason ? `; ${stats.reason}` : "") + "."];
-  parts.push(`${stats.steps ?? "–"} steps, ${stats.rhs_evaluations ?? "–"} evaluations of the equations of motion, run time ${fmt((stats.wall_time_s || 0) * 1000)} ms.`);
+  parts.push(`${stats.steps ?? "–"} steps.`);
   if (Number.isFinite(stats.error_estimate)) parts.push(`Estimated error ${fmt(stats.error_estimate)}: the largest difference between this run's coordinates and the true motion's over the samples, in the coordinates' units.`);
   return parts.join(" ");
 }
@@ -326,7 +326,7 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
       if (mine !== generation) return;
       // one line at a glance; the method and its figures behind "details"; the server's verdict on the
       // error against the motion (result.trust) turns it into a plain warning
-      const line = statusLine(r.stats);
+      const line = statusLine(r.stats, sharedUnit(data));
       const notes = [...(r.stats.event ? [ended(r.stats).trim()] : []), ...(r.stats.warnings || [])];
       const trust = result.trust || {};
       if (trust.trusted === false) say("untrusted", `${line}. ${trust.message}`, notes, details(r.stats, data.method_labels));

@@ -7,6 +7,8 @@
  *   fmt(x)                                       a number for reading: 4 significant digits
  */
 
+import { proseHTML } from "./prose.js";
+
 export function fmt(x) {
   if (x === null || x === undefined || Number.isNaN(x)) return "–";
   if (x < 0) return `−${fmt(-x)}`; // a typeset minus sign, not a hyphen
@@ -65,28 +67,38 @@ export function magnitude(x) {
 export const short = (x) => (Number.isFinite(x) ? fmt(Number(x.toPrecision(2))) : "–");
 
 /**
- * The run status a student reads at a glance: "Simulated 10 s · error ≈ 10⁻⁸ · 0.3 ms".
- * stats: the simulate API's stats (t_end_reached, error_estimate, wall_time_s).
+ * The run status a student reads at a glance: "Simulated 10 s · largest estimated error in the coordinates ≈ 4 × 10⁻⁹ rad".
+ * stats: the simulate API's stats (t_end_reached, error_estimate); unit: the coordinates' unit when they share one
+ * ("" when they do not: the error is then in each coordinate's own unit).  How long the computer took, and with
+ * which method, is no part of the physics: those sit under "details".
  */
-export function statusLine(stats) {
+export function statusLine(stats, unit = "") {
   const parts = [`Simulated ${short(stats.t_end_reached)} s`];
-  // what each number is: the error bound in the coordinates' own units, the server's time to compute the run
-  if (Number.isFinite(stats.error_estimate)) parts.push(stats.error_estimate > 0 ? `error ≈ ${magnitude(stats.error_estimate)}` : "error ≈ 0");
-  if (Number.isFinite(stats.wall_time_s)) parts.push(`computed in ${short(stats.wall_time_s * 1000)} ms`);
+  // the error bound is the largest difference from the true motion over the samples, in the coordinates' units
+  const said = (x) => (unit ? `${x} ${unit}` : `${x} (in each coordinate's unit)`);
+  if (Number.isFinite(stats.error_estimate)) {
+    parts.push(`largest estimated error in the coordinates ≈ ${said(stats.error_estimate > 0 ? fmt(Number(stats.error_estimate.toPrecision(1))) : "0")}`);
+  }
   return parts.join(" · ");
+}
+
+/** The unit the coordinates share ("rad", "m"), or "" when they have different ones. */
+export function sharedUnit(data) {
+  const units = [...new Set((data.coordinates || []).map((q) => data.units?.[q]))];
+  return units.length === 1 && units[0] ? units[0] : "";
 }
 
 export function table(container, caption, headers, rows) {
   if (!container) return null;
   const t = document.createElement("table");
   const cap = document.createElement("caption");
-  cap.textContent = caption;
+  cap.innerHTML = proseHTML(caption);
   t.append(cap);
   const head = t.createTHead().insertRow();
   for (const h of headers) {
     const th = document.createElement("th");
     th.scope = "col";
-    th.textContent = h;
+    th.innerHTML = proseHTML(h);
     head.append(th);
   }
   const body = t.createTBody();
@@ -96,7 +108,7 @@ export function table(container, caption, headers, rows) {
       const c = k === 0 ? document.createElement("th") : document.createElement("td");
       if (k === 0) c.scope = "row";
       // a missing value reads as a dash, never as "null" or "undefined"
-      c.textContent = typeof cell === "number" ? fmt(cell) : cell === null || cell === undefined ? "–" : String(cell);
+      c.innerHTML = proseHTML(typeof cell === "number" ? fmt(cell) : cell === null || cell === undefined ? "–" : String(cell));
       tr.append(c);
     });
   }

@@ -295,7 +295,9 @@ def test_relax_at_a_long_tau_says_what_it_is_doing(page):
     page.locator("#action-relax").click()
     page.wait_for_function(f"document.querySelector('{PANEL} .readout').textContent.startsWith('Replaying the relaxation')")
     replay = page.locator(f"{PANEL} .readout").text_content()
-    assert "the server took" in replay
+    # the replay is named as one; how long the server took is no part of the physics (prof-e 3)
+    assert "Newton step" in replay or "trial path" in replay
+    assert "server" not in replay and " s)" not in replay
     started = page.evaluate("performance.now()")
     page.wait_for_function(f"document.querySelector('{PANEL}').dataset.relaxed")
     # the replay of every Newton step lasts at most 1.5 s of pauses (plus each frame's drawing)

@@ -57,11 +57,12 @@ def test_the_tabletop_frequency_is_said_to_be_exact_at_every_amplitude(page):
 def test_one_cyclic_coordinate_is_singular_and_every_value_has_its_unit(page):
     # prof-e 5: "The other coordinates are cyclic: their momenta stay at p_θ = 1" and "r = 0.7071 (stable)"
     text = _readout(page, "tabletop-spring")
-    assert "The other coordinate is cyclic: its momentum stays at p_θ = 1 kg·m²/s" in text
+    # p_θ is set as p<sub>θ</sub> (static/js/prose.js): its text reads pθ
+    assert "The other coordinate is cyclic: its momentum stays at pθ = 1 kg·m²/s" in text
     assert "coordinates are cyclic" not in text and "r = 0.7071 m (stable)" in text
     # prof-e 5: "θ = 2.486 (stable)" and "p_φ = 1.307" on the spherical pendulum
     text = _readout(page, "spherical-pendulum")
-    assert "p_φ = 1.307 kg·m²/s" in text and "θ = 2.486 rad (stable)" in text
+    assert "pφ = 1.307 kg·m²/s" in text and "θ = 2.486 rad (stable)" in text
 
 
 def test_a_portrait_without_equilibria_says_it_has_none(page):

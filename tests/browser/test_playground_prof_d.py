@@ -31,7 +31,8 @@ def test_a_system_given_by_l_alone_draws_h_and_no_energy_e(page, artifacts):
     assert "h" in names and not any(n.startswith("E") for n in names)
     assert "E = T + U is not defined here" in page.inner_text("[data-panel=energy]")
     # the conserved momenta panel follows the angular momentum of the rotation
-    assert "J_z stays at" in page.inner_text("[data-panel=momenta]")
+    # J_z is set as J<sub>z</sub> (static/js/prose.js): its text reads Jz
+    assert "Jz stays at" in page.inner_text("[data-panel=momenta]")
     # one notice that there is no picture, not two
     assert not page.locator("[data-panel^=animation] canvas.mechanism").first.is_visible()
     assert page.get_by_text("No picture").count() == 1

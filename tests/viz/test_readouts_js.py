@@ -81,15 +81,21 @@ def test_values_below_their_resolution_read_as_zero():
     assert out == ["≈ 0", "0.25", "−5 × 10⁻⁷"]
 
 
-def test_the_run_status_is_one_short_line():
+def test_the_run_status_says_what_its_error_is_of_and_in_which_unit():
+    # prof-e 3: "Simulated 10 s · error ≈ 10⁻⁸ · computed in 0.53 ms" named no quantity and no unit, and a run
+    # time is no part of the physics
     out = node(
         "summaries.js",
-        "(m) => [m.statusLine({ t_end_reached: 10, error_estimate: 8.08e-9, wall_time_s: 3.115e-4 }),"
-        " m.statusLine({ t_end_reached: 3.21, error_estimate: 0.04, wall_time_s: 0.0123 }), m.magnitude(1)]",
+        "(m) => [m.statusLine({ t_end_reached: 10, error_estimate: 4.19e-9, wall_time_s: 3.115e-4 }, 'rad'),"
+        " m.statusLine({ t_end_reached: 3.21, error_estimate: 0.04, wall_time_s: 0.0123 }, ''),"
+        " m.sharedUnit({ coordinates: ['x1', 'x2'], units: { x1: 'm', x2: 'm' } }),"
+        " m.sharedUnit({ coordinates: ['X', 'theta'], units: { X: 'm', theta: 'rad' } }), m.magnitude(1)]",
     )
     assert out == [
-        "Simulated 10 s · error ≈ 10⁻⁸ · computed in 0.31 ms",
-        "Simulated 3.2 s · error ≈ 10⁻¹ · computed in 12 ms",
+        "Simulated 10 s · largest estimated error in the coordinates ≈ 4 × 10⁻⁹ rad",
+        "Simulated 3.2 s · largest estimated error in the coordinates ≈ 0.04 (in each coordinate's unit)",
+        "m",
+        "",
         "1",
     ]
 

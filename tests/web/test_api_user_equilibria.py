@@ -157,3 +157,21 @@ def test_where_the_numerical_search_looked_is_said_in_plain_words(client):
     # every sentence opens with a capital letter
     for sentence in words.split(". ")[1:]:
         assert sentence[:1].isupper(), sentence
+
+
+def test_a_charge_in_a_magnetic_field_counts_its_zero_exponents_and_says_where_its_frequency_comes_from(client):
+    # prof-f 32, 33: "[[0, I], [−𝓜⁻¹K, −𝓜⁻¹G]]" in prose, "One is zero" beside s = 0, 0, 0 ± 2 i (m = 1, eB = 2)
+    doc = derive(
+        client,
+        {
+            "coordinates": ["x", "y"],
+            "parameters": [{"name": "m", "value": 1}, {"name": "B", "value": 1}, {"name": "e", "value": 2}],
+            "lagrangian": "m*(x_dot**2 + y_dot**2)/2 + e*B*(x*y_dot - y*x_dot)/2",
+        },
+    )
+    (modes,) = steps(doc, "normal-modes")
+    said = modes["explanation"]
+    assert "[[" not in said and "the roots of det(s²" in said
+    assert "Two are zero (free drifts), the others are ±2i (oscillations at 2 rad/s)" in said
+    assert "come from the velocity terms G alone" in said and "One is zero" not in said
+    assert r"\pm 2i" in modes["latex"] and r"0 \pm" not in modes["latex"]

@@ -119,7 +119,8 @@ def test_the_symbols_table_lists_the_letters_of_the_optional_steps(client):
     assert rail["X"]["unit"] == "m" and "(m₁x₁ + m₂x₂)/(m₁ + m₂)" in rail["X"]["meaning"]
     assert rail["μ"]["unit"] == "kg" and rail["x"]["unit"] == "m"
     pulley = rows("pulley")
-    assert {"𝒞", "λ", "z₁", "z₂", "z₃"} <= set(pulley) and pulley["F"]["unit"] == "N"
+    assert {"𝒞", "λ", "z₁", "z₂", "z₃"} <= set(pulley) and pulley["F₁"]["unit"] == "N"
+    assert pulley["F₁"]["meaning"] == "string tension" and "F" not in pulley
     assert pulley["z₃"]["meaning"] == "Cartesian z of the middle mass"
     parabola = rows("rotating-parabola")
     # ρ's unit is told from m (1 + 4α²ρ²), so the energies are in J
@@ -196,7 +197,7 @@ def test_the_parameters_table_prints_ranges_as_the_sliders_do(client):
 
 def test_a_cyclic_coordinates_momentum_is_named_in_its_conservation_sentence(client):
     page = client.get("/scenes/movable-incline").text
-    assert "so dp_X/dt = ∂L/∂X = 0" in page and "so dp/dt" not in page
+    assert "so dp<sub>X</sub>/dt = ∂L/∂X = 0" in page and "so dp/dt" not in page
 
 
 def test_initial_conditions_print_their_ranges_with_a_true_minus(client):

@@ -1,5 +1,6 @@
 """The HTML pages: every page renders, shows exactly the declared panels, loads nothing from the internet."""
 
+import html as html_text
 import json
 import math
 import re
@@ -19,6 +20,7 @@ from app.viz.exprtree import evaluate
 from app.viz.names import label
 from app.viz.panels import NAMES
 from app.web.pages import page_model
+from app.web.prose import prose_html
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -87,6 +89,11 @@ def test_panels_rendered_are_exactly_the_shown_ones(pages, scene_id):
         assert data["mechanism"]["dim"] == (3 if "animation-3d" in declared else 2)
 
 
+def as_read(sentence: str) -> str:
+    """A sentence's text as the page holds it: its subscripts set as <sub> (app/web/prose.py), tags dropped."""
+    return html_text.unescape(re.sub(r"<[^>]+>", "", str(prose_html(sentence))))
+
+
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
 def test_scene_page_shows_every_step_and_the_results(pages, scene_id):
     html = pages[f"/scenes/{scene_id}"].text
@@ -97,16 +104,17 @@ def test_scene_page_shows_every_step_and_the_results(pages, scene_id):
     # the TeX of every formula rides in data-tex (its MathML is the element's content)
     text = "".join(tags.text) + "".join(a["data-tex"] for t, a in tags.tags if "data-tex" in a)
     for step in doc["steps"]:
-        assert step["title"] in text and step["explanation"] in text
+        # a sentence reads with its subscripts set (U_eff as U<sub>eff</sub>: "Ueff" as text)
+        assert as_read(step["title"]) in text and as_read(step["explanation"]) in text
         assert step["latex"] in text  # Jinja escapes & and <, which the parser undoes
     for eq in doc["equations_of_motion"]:
         assert eq["latex"] in text
-    assert doc["hamiltonian_energy_reason"] in text and doc["hamiltonian_conserved_reason"] in text
+    assert as_read(doc["hamiltonian_energy_reason"]) in text and as_read(doc["hamiltonian_conserved_reason"]) in text
     for e in doc.get("errata") or []:
         # typeset: the chapter's formula as written and the correct one, both as TeX; names in the reason as a reader writes them
-        assert e["chapter_latex"] in text and e["correct_latex"] in text and prose(e["reason"]) in text
+        assert e["chapter_latex"] in text and e["correct_latex"] in text and as_read(prose(e["reason"])) in text
     for c in doc.get("constraint_forces") or []:
-        assert c["latex"] in text and c["convention"] in text
+        assert c["latex"] in text and as_read(c["convention"]) in text
 
 
 @pytest.mark.parametrize("scene_id", sorted(SCENES))

@@ -1,0 +1,39 @@
+"""How a symbol with a subscript is written in running text: U_eff -> U<sub>eff</sub>, p_θ -> p<sub>θ</sub>.
+
+Sentences across the book (a step's reason, a panel's caption, the Symbols table, the errata) are plain
+text that names symbols the way a reader types them, with an underscore before the subscript.  A reader
+never sees the underscore: the ``prose`` filter escapes the text and sets each such subscript as HTML
+``<sub>``, a prime pair '' as ″ and a single ' after a subscript as ′.  static/js/prose.js applies the same
+rule to the sentences the browser composes (readouts, legends); tests/web/test_prose.py holds the two to
+the same cases.
+"""
+
+from __future__ import annotations
+
+import re
+
+from markupsafe import Markup, escape
+
+# a one-letter stem (Latin or Greek, with a combining dot or hat) and its subscript: letters, Greek letters,
+# digits or subscript digits (p_x₁), with its primes (U_eff'' is the second derivative)
+_SUBSCRIPTED = re.compile(
+    r"([A-Za-zΑ-Ωα-ω][\u0300-\u036f]?)_([A-Za-z0-9Α-Ωα-ω₀-₉\u0300-\u036f]+)(''|'|″|′)?"
+)
+_PRIMES = {"''": "″", "'": "′", "″": "″", "′": "′", None: ""}
+
+
+def prose_html(text: object) -> Markup:
+    """``text`` escaped, with every symbol's subscript set as ``<sub>``."""
+    if isinstance(text, Markup):
+        return text
+    if text is None:
+        return Markup("")
+
+    # the pieces between subscripts are escaped; a prime is read before escaping would turn ' into &#39;
+    text, out, at = str(text), [], 0
+    for match in _SUBSCRIPTED.finditer(text):
+        stem, sub, prime = match.groups()
+        out.append(f"{escape(text[at : match.start()])}{escape(stem)}<sub>{escape(sub)}</sub>{_PRIMES[prime]}")
+        at = match.end()
+    out.append(str(escape(text[at:])))
+    return Markup("".join(out))

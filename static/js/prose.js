@@ -1,0 +1,46 @@
+/**
+ * prose.js — a symbol's subscript in a sentence the browser composes, set as the server sets it
+ * (app/web/prose.py, the rule's home): U_eff -> U<sub>eff</sub>, p_θ -> p<sub>θ</sub>, U_eff'' -> U<sub>eff</sub>″.
+ *
+ *   import { proseHTML, setProse } from "/static/js/prose.js";
+ *   setProse(element, "p_θ stays at 1 kg·m²/s.");   // escapes, then sets the subscripts
+ *   proseHTML("U_eff (J)")                           // for Plotly's legend and axis titles, which read <sub>
+ */
+
+const SUBSCRIPTED = /([A-Za-zΑ-Ωα-ω][\u0300-\u036f]?)_([A-Za-z0-9Α-Ωα-ω₀-₉\u0300-\u036f]+)(''|'|″|′)?/g;
+const PRIMES = { "''": "″", "'": "′", "″": "″", "′": "′" };
+
+const escapeHTML = (s) => String(s).replace(/[&<>"']/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "'": "&#39;" })[c]);
+
+/** HTML of ``text``: escaped, each subscript as <sub>; a prime is read before escaping turns ' into &#39;. */
+export function proseHTML(text) {
+  const s = String(text ?? "");
+  let out = "";
+  let at = 0;
+  for (const m of s.matchAll(SUBSCRIPTED)) {
+    const [whole, stem, sub, prime] = m;
+    out += `${escapeHTML(s.slice(at, m.index))}${escapeHTML(stem)}<sub>${escapeHTML(sub)}</sub>${PRIMES[prime] ?? ""}`;
+    at = m.index + whole.length;
+  }
+  return out + escapeHTML(s.slice(at));
+}
+
+/** Put ``text`` into ``element`` as a sentence with its subscripts set. */
+export function setProse(element, text) {
+  element.innerHTML = proseHTML(text);
+}
+
+/**
+ * A panel's readout whose sentences set their subscripts: after ``proseReadout(el)``, ``el.textContent = s``
+ * shows ``s`` as ``setProse`` would, and reading ``el.textContent`` gives the text as shown (p<sub>θ</sub> reads "pθ").
+ */
+export function proseReadout(element) {
+  if (!element) return element;
+  const text = Object.getOwnPropertyDescriptor(Node.prototype, "textContent");
+  Object.defineProperty(element, "textContent", {
+    configurable: true,
+    get() { return text.get.call(this); },
+    set(value) { this.innerHTML = proseHTML(value); },
+  });
+  return element;
+}

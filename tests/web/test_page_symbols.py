@@ -1,0 +1,44 @@
+"""The Symbols table says what each coordinate of a scene is (issue 40, prof-f 4, 28)."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from app.scenes import SCENES
+
+
+def symbols(page: str) -> dict[str, str]:
+    """Each row of the page's Symbols table: its TeX and its meaning as text."""
+    table = page[page.index('<table class="symbols">') :]
+    table = table[: table.index("</table>")]
+    rows = re.findall(r'<tr><td>.*?data-tex="([^"]*)".*?</td><td>(.*?)</td>', table, flags=re.S)
+    return {tex: re.sub(r"<[^>]+>", "", meaning) for tex, meaning in rows}
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_no_coordinate_of_a_scene_is_only_a_generalized_coordinate(client, scene_id):
+    page = client.get(f"/scenes/{scene_id}").text
+    meanings = symbols(page)
+    assert meanings and "generalized coordinate" not in meanings.values(), meanings
+
+
+def test_the_rail_says_where_its_masses_are(client):
+    # prof-f 4: "x₁ and x₂ are described only as 'generalized coordinate'"
+    meanings = symbols(client.get("/scenes/rail-two-body").text)
+    assert meanings["x_{1}"] == "position of mass m₁ along the rail, from a fixed mark"
+    assert meanings["x_{2}"] == "position of mass m₂ along the rail, from a fixed mark"
+
+
+@pytest.mark.parametrize("scene_id", ["pulley", "movable-incline", "rotating-parabola"])
+def test_each_force_of_constraint_has_a_letter_the_symbols_table_defines(client, scene_id):
+    # prof-f 7, 15, 19, 30: "String tension" followed by a bare fraction; the panel's formula at footnote size
+    page = client.get(f"/scenes/{scene_id}").text
+    forces = client.get(f"/api/scenes/{scene_id}/derivation").json()["constraint_forces"]
+    meanings = symbols(page)
+    for k, force in enumerate(forces, start=1):
+        assert meanings[f"F_{{{k}}}"] == force["name"]
+        # in the Results and in the constraint panel: F_k = …, displayed
+        assert page.count(f'<div class="math math-display" data-tex="F_{{{k}}} = ') >= 2, force["name"]
+    assert "size of a constraint&#39;s force" not in page and "F" not in meanings

@@ -1,0 +1,51 @@
+"""A symbol's subscript in a sentence is set as <sub>, never typed as an underscore (issue 40, prof-e 2 / prof-f 14, 21, 35).
+
+The rule's home is app/web/prose.py; static/js/prose.js sets the sentences the browser composes the same way
+(tests/browser/test_prose_words.py reads every scene page as the browser shows it).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from app.web.prose import prose_html
+
+CASES = {
+    "U_eff of the remaining coordinate": "U<sub>eff</sub> of the remaining coordinate",
+    "its square is U_eff''/m_eff": "its square is U<sub>eff</sub>″/m<sub>eff</sub>",
+    "p_x₁ + p_x₂ is conserved": "p<sub>x₁</sub> + p<sub>x₂</sub> is conserved",
+    "so dp_X/dt = ∂L/∂X = 0": "so dp<sub>X</sub>/dt = ∂L/∂X = 0",
+    "its force on body i is λ ∂𝒞/∂r_i": "its force on body i is λ ∂𝒞/∂r<sub>i</sub>",
+    "U_eff′ = m g sin α": "U<sub>eff</sub>′ = m g sin α",
+    "Q_θ = −b θ̇ <b>&": "Q<sub>θ</sub> = −b θ̇ &lt;b&gt;&amp;",
+    "the bob's angle": "the bob&#39;s angle",
+}
+JS = Path(__file__).resolve().parents[2] / "static" / "js" / "prose.js"
+
+
+@pytest.mark.parametrize(("text", "html"), CASES.items())
+def test_a_subscript_is_set_and_the_rest_escaped(text, html):
+    assert str(prose_html(text)) == html
+
+
+def test_the_browser_sets_the_same_subscripts():
+    # one rule in two languages: the browser's sentences (readouts, legends) read as the server's
+    script = (
+        f"import('{JS.as_uri()}').then(({{ proseHTML }}) => "
+        f"console.log(JSON.stringify({json.dumps(list(CASES))}.map(proseHTML))))"
+    )
+    out = subprocess.run(["node", "--input-type=module", "-e", script], capture_output=True, text=True, check=True)
+    assert json.loads(out.stdout) == list(CASES.values())
+
+
+def test_a_scene_page_prints_no_underscore_in_its_sentences(client):
+    html = client.get("/scenes/tabletop-spring").text
+    text = re.sub(r"<math.*?</math>|<script.*?</script>|<code.*?</code>|<[^>]+>", " ", html, flags=re.S)
+    found = re.search(r"[A-Za-zΑ-Ωα-ω]_[A-Za-z0-9θφ]", text)
+    assert not found, text[found.start() - 300 : found.end() + 50]
+    assert "U<sub>eff</sub>" in html and "p<sub>θ</sub>" in html
