@@ -399,6 +399,11 @@ def _lengths_and_masses(d: Derivation, known) -> tuple[list[sp.Symbol], list[sp.
     return [s for s in params if known.get(s) == length], [s for s in params if known.get(s) == mass]
 
 
+def masses_of(d: Derivation, known) -> list[sp.Symbol]:
+    """The parameters whose declared unit is a mass."""
+    return _lengths_and_masses(d, known)[1]
+
+
 def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp.Expr]]:
     """(key, name, ΔT, ΔU) for the slips a rigid body typed in T (and U) invites, read from T's q̇² terms:
     c m L² q̇² (a body turning about a pivot: a rod about its end, a disc or a ring about its rim or centre)
