@@ -184,3 +184,12 @@ def test_an_equals_sign_where_the_box_names_the_left_side_is_refused_plainly(cli
     assert (body["start"], body["end"]) == (2, 3)
     lagrangian = check(client, {"step": "lagrangian", "answer": "T - U"}).json()
     assert "write T and U out in the coordinates" in lagrangian["detail"] and lagrangian["part"] == "T"
+
+
+def test_a_name_typed_in_the_other_case_is_named_as_that(client):
+    # student-e, 2: a capital letter for a declared one is not taken for a quantity or an unknown
+    refused = check(client, {"step": "kinetic", "answer": "m*r**2*theta_dot**2/2"})
+    assert refused.status_code == 422
+    body = refused.json()
+    assert body["detail"].startswith("answer: r is not a parameter here; did you mean R?"), body
+    assert (body["start"], body["end"]) == (2, 3)
