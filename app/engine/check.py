@@ -71,7 +71,7 @@ from app.engine.compare import (
     values,
     without_constant,
 )
-from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json
+from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json, sentence
 from app.engine.dimensions import dimension, mismatch, number_beside_units
 from app.engine.mistake_answer import linearised, missing_square
 from app.engine.mistake_box import piece_box
@@ -388,11 +388,31 @@ def judge_follow_up(pb: Problem, key: str, text: Parsed | str) -> dict[str, Any]
         # a new hint, not the first one again and not the question again: the slip in the reply where it is one
         # a student makes, else the concrete one where the question has it
         hint=_follow_up_slip(pb, fu, answer)
+        or _same_slip(pb, fu, mistake, mine)
         or fu.hint
         or "Work it out on its own, from its definition, then compare your reply with it term by term.",
         mistake={**mistake_json(mistake, printer.tex), "latex": ""},  # (the piece is the question's answer)
         follow_up=follow_up_json(mistake, allowed_names(fu.kind, pb.kinds)),
     )
+
+
+def _same_slip(pb: Problem, fu: FollowUp, asked: Mistake, mine) -> str | None:
+    """The step's own catalogue run on the question's answer: a mistake of the step changes the truth by
+    expr − truth, and where the question's answer changed by the same amount is the reply, the reply has that
+    slip (the lower bob's T alone as ½ m₂ l₂² θ̇₂²: its θ̇₁ part left out, as in the whole T)."""
+    if fu.relation != "exact" or fu.kind != pb.step:
+        return None
+    truth = pb.truths[0]
+    for m, _, _ in pb.mistakes:
+        if m.key == asked.key or m.count != 1 or m.family == "units":
+            continue
+        # the reply with m's slip: the question's answer plus the change m makes to the whole
+        slipped = _known(fu.truth + m.expr - truth, pb.groups)
+        if usable(mine, slipped) >= MIN_POINTS and equal(mine, slipped):
+            # and the body that carries this one along, where the mistake's own question knows it
+            carrier = [c for c in (m.follow_up.hint if m.follow_up else "").split(". ") if " carries the " in c]
+            return " ".join([sentence(m, "reply"), *(f"{c}." for c in carrier[:1])])
+    return None
 
 
 def _follow_up_slip(pb: Problem, fu: FollowUp, answer: sp.Expr) -> str | None:
