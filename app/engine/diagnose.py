@@ -247,7 +247,8 @@ def partial_json(m: Mistake, label: str) -> dict[str, Any]:
 def follow_up_json(m: Mistake, names: list[str]) -> dict[str, Any] | None:
     if m.follow_up is None:
         return None
-    return {"key": m.key, "question": m.follow_up.question, "names": names}
+    # kind: the step whose names the reply may use, and how it is typeset
+    return {"key": m.key, "question": m.follow_up.question, "names": names, "kind": m.follow_up.kind}
 
 
 # ---- part by part ------------------------------------------------------------------------------

@@ -187,7 +187,8 @@ def _fixed_in_equation(d: Derivation, bodies: list, truth: sp.Expr, k: int) -> I
 
 def _fixed_in_energy(d: Derivation, bodies: list, truth: sp.Expr, step: str) -> Iterator[Mistake]:
     """T (or L) with a body held still: that body's one coordinate q_j not moving (q̇_j = 0), as if its mass were
-    infinite; this drops the body's own ½ M v² and the q̇_j part of every body it carries."""
+    infinite; this drops the body's own ½ M v² and the q̇_j part of every body it carries (only a body that
+    carries another is held still: one that carries none is forgotten)."""
     namespace, t = d.table.namespace(), d.table
     letter = "T" if step == "kinetic" else "L"
     whole = "the kinetic energy" if step == "kinetic" else "the Lagrangian"
@@ -208,7 +209,9 @@ def _fixed_in_energy(d: Derivation, bodies: list, truth: sp.Expr, step: str) -> 
             for n, p in enumerate(d.system.particles)
             if n != i and any(c.has(q) for c in d.mechanics.positions[n])
         ]
-        carries = f" and carries the {' and the '.join(carried)} with it" if carried else ""
+        if not carried:
+            continue  # a body that carries nothing, held still, is a body forgotten (app.engine.mistake_families)
+        carries = f" and carries the {' and the '.join(carried)} with it"
         yield Mistake(
             f"{step}.limit.held_still.{mass_name}", "limit", f"{whole} with the {body} treated as fixed, as if held "
             f"still ({shown} → ∞), which has no {rate}", None,

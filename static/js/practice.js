@@ -221,7 +221,23 @@ function followUpBox(item, followUp) {
   const send = element("button", { type: "button" }, "Answer");
   const status = element("p", { class: "follow-up-verdict", role: "status", "aria-live": "polite" });
   row.append(input, send);
-  box.append(label, row, element("p", { class: "help" }, `Names you may use: ${followUp.names.join(", ")}, pi.`), status);
+  // the reply typeset as it is typed, as every answer box's is
+  const shown = element("div", { class: "practice-preview", id: `${id}-preview`, "aria-label": "Your reply, typeset" });
+  const math = element("div", { class: "practice-preview-math" });
+  const note = element("p", { class: "help practice-preview-note" }, "What you type appears here, typeset.");
+  shown.append(math, note);
+  input.setAttribute("aria-describedby", `${id}-preview`);
+  let timer = null;
+  let typing = new AbortController();
+  input.addEventListener("input", () => {
+    clearTimeout(timer);
+    timer = setTimeout(() => {
+      typing.abort();
+      typing = new AbortController();
+      typesetInto(input, math, note, followUp.kind || item.dataset.step, typing.signal, (latex) => latex);
+    }, TYPESET_DELAY_MS);
+  });
+  box.append(label, row, element("p", { class: "help" }, `Names you may use: ${followUp.names.join(", ")}, pi.`), shown, status);
   const ask = async () => {
     const answer = input.value.trim();
     if (!answer) {
@@ -298,43 +314,55 @@ const typesetContext = sceneId
   ? { scene: sceneId }
   : { coordinates: system?.coordinates || [], parameters: (system?.parameters || []).map((p) => (typeof p === "string" ? p : p.name)) };
 
-/** Typeset what is typed, as the checker reads it; while the server answers, the last good rendering stays. */
-async function preview(item, signal) {
-  const text = item.querySelector("input").value;
-  const math = item.querySelector(".practice-preview-math");
-  const note = item.querySelector(".practice-preview-note");
+/** Typeset the text of ``input`` into ``math`` (``frame`` puts the typeset answer in its display), or say in
+ * ``note`` why it cannot be read; while the server answers, the last good rendering stays. Returns "read",
+ * "refused", "empty", or null (no reply for this text). */
+async function typesetInto(input, math, note, step, signal, frame, said = () => false) {
+  const text = input.value;
   if (!text.trim()) {
     math.replaceChildren();
     note.textContent = "What you type appears here, typeset.";
-    delete item.dataset.typeset;
-    return;
+    return "empty";
   }
   let reply;
   try {
     reply = await inTurn(() => (signal.aborted ? null
-      : request(root.dataset.typesetUrl, { text, step: item.dataset.step, ...typesetContext }, signal)));
+      : request(root.dataset.typesetUrl, { text, step, ...typesetContext }, signal)));
   } catch {
     reply = null; // aborted by the next keystroke, or the server out of reach: the last rendering stays
   }
   // the preview belongs to the text in the box now: a reply for an earlier text (one typed on since, or sent
   // before a check of the whole answer) says nothing
-  if (!reply || signal.aborted || item.querySelector("input").value !== text) return;
+  if (!reply || signal.aborted || input.value !== text) return null;
   if (reply.ok) {
-    const lhs = item.dataset.lhs;
-    // an equation typed lhs = rhs comes back whole
-    const whole = reply.answer.equation ? reply.answer.latex : null;
-    katexBreaking(math, whole || (item.dataset.step === "equation" ? `${reply.answer.latex} = 0` : `${lhs} = ${reply.answer.latex}`));
+    katexBreaking(math, frame(reply.answer.latex, reply.answer));
     note.textContent = "";
-    item.dataset.typeset = "read";
-  } else if (reply.status === 422) {
+    return "read";
+  }
+  if (reply.status === 422) {
     // said once: when the check of this same text was refused, its verdict below says why
-    const checked = record.verdicts[item.dataset.key];
-    const said = checked && checked.answer === text && !checked.result?.verdict;
-    note.textContent = said ? "" : `Not read yet: ${endOf(wordsOf(reply.answer?.detail) || "the checker could not read this")}`;
+    note.textContent = said(text) ? "" : `Not read yet: ${endOf(wordsOf(reply.answer?.detail) || "the checker could not read this")}`;
     // the rendering of an earlier text would show something not typed: it goes
     math.replaceChildren();
-    item.dataset.typeset = "refused";
+    return "refused";
   }
+  return null;
+}
+
+/** Typeset what is typed in a step's box, as the checker reads it. */
+async function preview(item, signal) {
+  const lhs = item.dataset.lhs;
+  const step = item.dataset.step;
+  // an equation typed lhs = rhs comes back whole
+  const frame = (latex, answer) => (answer.equation ? answer.latex : step === "equation" ? `${latex} = 0` : `${lhs} = ${latex}`);
+  const said = (text) => {
+    const checked = record.verdicts[item.dataset.key];
+    return Boolean(checked && checked.answer === text && !checked.result?.verdict);
+  };
+  const input = item.querySelector("input");
+  const state = await typesetInto(input, item.querySelector(".practice-preview-math"), item.querySelector(".practice-preview-note"), step, signal, frame, said);
+  if (state === "empty") delete item.dataset.typeset;
+  else if (state) item.dataset.typeset = state;
 }
 
 const TYPESET_DELAY_MS = 150; // after the last keystroke

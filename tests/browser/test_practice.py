@@ -182,12 +182,32 @@ def test_the_named_slip_its_piece_and_follow_up_at_both_sizes(browser, live_serv
         assert verdict.evaluate("e => e.getBoundingClientRect().right") <= viewport["width"] + 1
         follow_up = verdict.locator(".verdict-follow-up")
         follow_up.locator("input").fill(follow)
+        # the reply is typeset as it is typed, as the step's own answer is
+        follow_up.locator(".practice-preview .katex").wait_for()
+        assert follow_up.locator(".practice-preview-note").inner_text() == ""
         follow_up.locator("input").press("Enter")
         page.wait_for_selector(STEP.format(step) + ' .follow-up-verdict[data-verdict="correct"]')
         verdict.screenshot(path=artifacts / f"practice-{scene}-{size}.png")
         assert page.locator("#practice .katex-error").count() == 0
     finally:
         context.close()
+
+
+def test_a_wrong_reply_to_a_follow_up_is_diagnosed(page, artifacts):
+    # student-e, 8: the lower bob's T alone typed as if it swung from a fixed pivot
+    page.set_viewport_size({"width": 1366, "height": 768})
+    page.goto("/scenes/double-pendulum?practice")
+    page.wait_for_selector(STEP.format("kinetic"))
+    answer(page, "kinetic", "m1*l1**2*theta1_dot**2/2")
+    follow_up = verdict_of(page, "kinetic").locator(".verdict-follow-up")
+    follow_up.wait_for()
+    assert "kinetic energy of the lower bob alone" in follow_up.locator("label").inner_text()
+    follow_up.locator("input").fill("m2*l2**2*theta2_dot**2/2")
+    follow_up.locator("input").press("Enter")
+    page.wait_for_selector(STEP.format("kinetic") + ' .follow-up-verdict[data-verdict="incorrect"]')
+    said = unicodedata.normalize("NFC", follow_up.locator(".follow-up-verdict").inner_text())
+    assert "the lower bob also moves when θ₁ changes" in said and "carries the lower bob" in said, said
+    follow_up.screenshot(path=artifacts / "practice-follow-up-wrong-1366.png")
 
 
 def test_panels_that_give_away_a_step_are_folded_until_it_is_shown(page, artifacts):
