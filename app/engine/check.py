@@ -73,7 +73,7 @@ from app.engine.compare import (
 )
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json, sentence
 from app.engine.dimensions import dimension, mismatch, number_beside_units
-from app.engine.mistake_answer import linearised, missing_square
+from app.engine.mistake_answer import AnswerSlip, linearised, missing_square
 from app.engine.mistake_box import piece_box
 from app.engine.mistake_families import FollowUp, Mistake
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, HALF_MOMENTUM_HINT, MISSING_FACTOR_HINT, POINTERS
@@ -272,6 +272,9 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         else None
     )
     hint = _hint(pb, answer, a, b, truth)
+    if isinstance(hint, AnswerSlip):
+        # a slip read from the answer is named as a catalogue's mistake is (or as an approximation)
+        return _verdict("incorrect", message, _reveal(shown), hint.hint, mistake=hint.json())
     if pb.step == "momentum" and differ_by_factor(b, a):
         partial = None  # the answer agrees up to one factor: "no part agrees" would contradict the hint
     return _verdict("incorrect", message, _reveal(shown), hint, partial=partial)
@@ -479,7 +482,7 @@ def _difference(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[sp.Expr, 
     return answer - truth, "", one
 
 
-def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str:
+def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSlip:
     """The hint when no known mistake matches: a missing factor of a momentum, else the step's rule."""
     if pb.step == "momentum" and differ_by_factor(b, a):
         # the engine's momentum is the answer times a factor free of the velocities: a factor is missing
