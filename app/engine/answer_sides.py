@@ -14,6 +14,7 @@ import re
 from app.engine.check_answers import CheckError, allowed_names, check_answer
 from app.engine.names import unicode
 from app.engine.parse import Parsed
+from app.engine.parse_rules import FUNCTIONS
 
 # the comparisons an '=' could be part of, refused by the parser in its own words
 _COMPARISONS = ("==", "<=", ">=", "!=")
@@ -74,6 +75,17 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
         )
         if exc.part in _QUANTITIES and step not in ("kinetic", "potential"):
             out += f" (and if you meant {_MEANT[exc.part]}, write it out in the coordinates, their velocities and the parameters)"
+    elif unknown and not (exc.part in _QUANTITIES or _DIFFERENTIALS.search(text if isinstance(text, str) else "")):
+        # the parser's own words, as a tutor says them: the names as the page prints them
+        allowed = ", ".join(allowed_names(step, kinds))  # as typed, as the box's own list prints them
+        advice = re.search(r"; (.*)\): '", str(exc))  # the parser's advice (letters written together, e^x)
+        split = advice.group(1) if advice else ""
+        out = f"{unicode(exc.part)} is not a name in this problem; the names you may use are {allowed} and pi"
+        if split:
+            out += f" ({split})"
+    elif "only these functions may be called" in str(exc):
+        functions = ", ".join(sorted(f for f in FUNCTIONS if f != "Abs"))
+        out = f"{exc.part} is not a function you may use here; the functions are {functions}, and Abs(x) for |x|"
     elif exc.part in _QUANTITIES and unknown:
         out = f"{exc.part} is not a name the answer may use: write T and U out in the coordinates, their velocities and the parameters"
     elif unknown and exc.part.startswith("d") and isinstance(text, str) and _DIFFERENTIALS.search(text):

@@ -79,7 +79,7 @@ def test_a_refusal_marks_the_offending_part_and_every_box_is_labelled(page):
     answer(page, "momentum:phi", "m*R**2*phi_dot + v")
     refused = verdict_of(page, "momentum:phi")
     refused.locator("mark").wait_for()
-    assert refused.locator("mark").inner_text() == "v" and "unknown name" in refused.inner_text()
+    assert refused.locator("mark").inner_text() == "v" and "v is not a name in this problem" in refused.inner_text()
     # the browser logs the refusal's 422 itself (and a 429 when the check met the page's own simulation job,
     # which it retries); nothing else may go wrong
     assert [e for e in page.console_errors if "status of 422" not in e and "status of 429" not in e] == []
@@ -333,7 +333,7 @@ def test_what_the_preview_and_the_verdict_say_belongs_to_the_text_in_the_box(bro
         preview("acceleration:theta").locator(".katex").first.wait_for()
         answer(page, "acceleration:theta", "theta_ddot = -g/l*sin(theta)")
         verdict_of(page, "acceleration:theta").locator("mark").wait_for()
-        assert "unknown name" in verdict_of(page, "acceleration:theta").inner_text()
+        assert "l is not a name in this problem" in verdict_of(page, "acceleration:theta").inner_text()
         page.wait_for_function(
             "document.querySelector('.practice-step[data-key=\"acceleration:theta\"]').dataset.typeset === 'refused'"
         )
@@ -343,7 +343,7 @@ def test_what_the_preview_and_the_verdict_say_belongs_to_the_text_in_the_box(bro
         answer(page, "momentum:theta", "dL/dtheta_dot")
         verdict_of(page, "momentum:theta").locator("mark").wait_for()
         said = verdict_of(page, "momentum:theta").inner_text()
-        assert "a derivative cannot be typed here" in said and "unknown name" not in said
+        assert "a derivative cannot be typed here" in said and "not a name in this problem" not in said
         assert preview("momentum:theta").locator(".katex").count() == 0
 
         # the parser's note on a half-typed text goes the moment the text changes, before any check

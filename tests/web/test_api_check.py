@@ -58,7 +58,7 @@ def test_a_declared_system_is_checked_like_a_scene(client):
     ("body", "loc", "detail"),
     [
         ({"step": "kinetic", "answer": "m*R**2*theta_dot**2/"}, ["body", "answer"], "ends with '/' at column 20"),
-        ({"step": "kinetic", "answer": "m*v**2/2"}, ["body", "answer"], "unknown name (allowed here: R, g, m, t"),
+        ({"step": "kinetic", "answer": "m*v**2/2"}, ["body", "answer"], "v is not a name in this problem; the names you may use are R, g, m, t"),
         ({"step": "potential", "answer": "m*g*theta_dot"}, ["body", "answer"], "U depends on positions only"),
         ({"step": "momentum", "answer": "m*R**2*theta_dot"}, ["body", "coordinate"], "give one of: theta"),
         ({"step": "equation", "coordinate": "x", "answer": "1"}, ["body", "coordinate"], "the coordinates are: theta"),
