@@ -378,6 +378,14 @@ function howTo(exercise) {
   return (HOW[exercise.step] || HOW.other).replace("{q}", exercise.coordinate || "q");
 }
 
+/** The rule the reader applies to numbered names, said as the checker applies it: m_1 is read as m1. */
+function numbered(names) {
+  const example = names.find((name) => /^[A-Za-z]+\d+$/.test(name));
+  if (!example) return "";
+  const [, stem, digits] = example.match(/^([A-Za-z]+)(\d+)$/);
+  return ` A number may follow a name with or without _ (${example} or ${stem}_${digits}).`;
+}
+
 function buildItem(exercise, index) {
   const key = keyOf(exercise);
   const id = `practice-${index}`;
@@ -385,7 +393,8 @@ function buildItem(exercise, index) {
   if (exercise.coordinate) item.dataset.coordinate = exercise.coordinate;
   const form = element("form", { class: "practice-form", novalidate: "" });
   const title = element("h3", { id: `${id}-title` }, exercise.title);
-  const label = element("label", { for: `${id}-answer` }, `Your answer: ${exercise.title}`);
+  // the heading shows the title: the label says it to a screen reader only (student-e, 18)
+  const label = element("label", { for: `${id}-answer`, class: "visually-hidden" }, `Your answer: ${exercise.title}`);
   const row = element("div", { class: "practice-row" });
   const lhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
   katexInto(lhs, exercise.step === "equation" ? "" : `${exercise.lhs} =`);
@@ -402,7 +411,7 @@ function buildItem(exercise, index) {
   const rhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
   if (exercise.step === "equation") katexInto(rhs, "= 0");
   row.append(lhs, input, rhs);
-  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${howTo(exercise)} Names you may use: ${exercise.names.join(", ")}, pi.`);
+  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${howTo(exercise)} Names you may use: ${exercise.names.join(", ")}, pi.${numbered(exercise.names)}`);
   const previewBox = element("div", { class: "practice-preview", id: `${id}-preview`, "aria-label": "Your answer, typeset" });
   previewBox.append(element("div", { class: "practice-preview-math" }), element("p", { class: "help practice-preview-note" }));
   const actions = element("div", { class: "practice-actions" });
@@ -425,7 +434,8 @@ function buildItem(exercise, index) {
     preview(item, typing.signal);
   };
   // "= 0" stands beside an equation's box only while the equation is typed as one expression
-  const sides = () => { rhs.hidden = exercise.step === "equation" && input.value.includes("="); };
+  // (and not under an empty box, where it would read as the only form taken)
+  const sides = () => { rhs.hidden = exercise.step === "equation" && (input.value.includes("=") || !input.value.trim()); };
   sides();
   input.addEventListener("input", () => {
     sides();
@@ -434,6 +444,7 @@ function buildItem(exercise, index) {
     markStale(item, record.verdicts[key]?.answer);
     record.answers[key] = input.value;
     save(record);
+    showProgress(); // a right answer typed over no longer counts
     clearTimeout(timer);
     timer = setTimeout(typeset, TYPESET_DELAY_MS);
   });
@@ -471,6 +482,7 @@ function buildItem(exercise, index) {
       save(record);
       showVerdict(item, record.verdicts[key].result, input.value);
       if (["correct", "equivalent"].includes(result?.verdict)) unfold(exercise.step);
+      showProgress();
     } catch {
       showVerdict(item, { detail: "The server could not be reached; try again." }, answer);
     } finally {
@@ -486,6 +498,27 @@ function buildItem(exercise, index) {
   return item;
 }
 
+// ---- progress ----------------------------------------------------------------------------------
+
+let shownExercises = [];
+
+/** How many steps are checked right (with the answer still as it was checked), and the end once all are. */
+function showProgress() {
+  const status = document.getElementById("practice-status");
+  const total = shownExercises.length;
+  if (!status || !total) return;
+  const done = shownExercises.filter((exercise) => {
+    const key = keyOf(exercise);
+    const kept = record.verdicts[key];
+    return kept && ["correct", "equivalent"].includes(kept.result?.verdict) && kept.answer === (record.answers[key] ?? kept.answer);
+  }).length;
+  status.dataset.done = String(done);
+  if (done === 0) status.textContent = `${total} steps to derive, in the chapter's order.`;
+  else if (done < total) status.textContent = `${done} of ${total} steps correct.`;
+  else status.textContent = `All ${total} steps correct: you have done the whole derivation yourself.`;
+  status.classList.toggle("practice-done", done === total);
+}
+
 async function loadSteps() {
   const status = document.getElementById("practice-status");
   const list = document.getElementById("practice-steps");
@@ -496,7 +529,8 @@ async function loadSteps() {
   }
   list.replaceChildren(...answer.exercises.map((exercise, index) => buildItem(exercise, index)));
   foldGiveaways(answer.exercises);
-  status.textContent = `${answer.exercises.length} steps to derive, in the chapter's order.`;
+  shownExercises = answer.exercises;
+  showProgress();
 }
 
 let loaded = false;

@@ -411,3 +411,46 @@ def test_a_long_answer_and_its_difference_break_across_lines_on_a_phone(browser,
         assert page.locator("#practice .katex-error").count() == 0
     finally:
         context.close()
+
+
+# the simple pendulum's eight steps, each typed right (as the page's own derivation gives them)
+PENDULUM = [
+    ("kinetic", "m*R**2*theta_dot**2/2"),
+    ("potential", "m*g*R*(1 - cos(theta))"),
+    ("lagrangian", "m*R**2*theta_dot**2/2 - m*g*R*(1 - cos(theta))"),
+    ("momentum:theta", "m*R**2*theta_dot"),
+    ("equation:theta", "theta_ddot + g/R*sin(theta) = 0"),
+    ("acceleration:theta", "-g/R*sin(theta)"),
+    ("hamiltonian", "m*R**2*theta_dot**2/2 + m*g*R*(1 - cos(theta))"),
+    ("omega_squared", "g/R"),
+]
+
+
+def test_progress_is_counted_and_the_end_is_said(page, artifacts):
+    # student-e, 10 and 18: a count of the steps done, an end message; one title per box, no "= 0" under an empty one
+    page.set_viewport_size({"width": 1366, "height": 768})
+    page.goto("/scenes/simple-pendulum?practice")
+    page.wait_for_selector(STEP.format("omega_squared"))
+    status = page.locator("#practice-status")
+    assert status.inner_text() == "8 steps to derive, in the chapter's order."
+    # the heading is the title, once: the label is for a screen reader, and takes no room on the page
+    assert page.locator(STEP.format("kinetic") + " label").evaluate("e => e.getBoundingClientRect().width") <= 1
+    equation = page.locator(STEP.format("equation:theta"))
+    assert equation.locator(".practice-lhs").nth(1).is_hidden()  # "= 0" only beside an expression typed
+    equation.locator("input[name]").fill("theta_ddot")
+    assert equation.locator(".practice-lhs").nth(1).is_visible()
+    for n, (key, text) in enumerate(PENDULUM, start=1):
+        answer(page, key, text)
+        page.wait_for_selector(STEP.format(key) + ' .practice-verdict[data-verdict="correct"], '
+                               + STEP.format(key) + ' .practice-verdict[data-verdict="equivalent"]')  # fmt: skip
+        if n == 2:
+            assert status.inner_text() == "2 of 8 steps correct."
+    assert status.inner_text().startswith("All 8 steps correct")
+    page.locator("#practice").screenshot(path=artifacts / "practice-all-done-1366.png")
+    # kept: after a reload the count is the same
+    page.reload()
+    page.wait_for_function("document.getElementById('practice-status').dataset.done === '8'")
+    # a right answer typed over no longer counts
+    box = page.locator(STEP.format("omega_squared")).locator("input[name]")
+    box.fill("g/R + 1")
+    assert status.inner_text() == "7 of 8 steps correct."
