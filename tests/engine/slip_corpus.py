@@ -387,6 +387,14 @@ SLIPS = [
         "-(m1 + m2)*g*l1*cos(theta1) - m1*g*l2*cos(theta2)",
         r"wrong mass in your term −m₁ g l₂ cos\(θ₂\).*m₁ belongs to the upper bob",
     ),
+    # a cross term's sign, explained from the geometry that gives it (student-e, 11)
+    (
+        "movable-incline",
+        "kinetic",
+        None,
+        "(M + m)*X_dot**2/2 + m*D_dot**2/2 - m*X_dot*D_dot*cos(alpha)",
+        r"the sign of your term.*block's position, x = X \+ D cos\(α\): ẋ = Ẋ \+ Ḋ cos\(α\)",
+    ),
     # the fixed wedge's T: the wedge moves and carries the block
     ("movable-incline", "kinetic", None, "(1/2)*m*D_dot**2", r"wedge treated as fixed.*M → ∞.*carries the block"),
 ]
