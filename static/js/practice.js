@@ -302,7 +302,7 @@ function foldGiveaways(exercises) {
       button.remove();
       giveaways.delete(button);
     });
-    (section.querySelector("h3") || section).after(button);
+    (section.querySelector("h3") || section.querySelector("h2") || section).after(button);
     giveaways.set(button, index < 0 ? [] : [exercises[index].step]);
     // a step already checked right (kept from an earlier visit) unfolds what it gives away
     if (index >= 0 && ["correct", "equivalent"].includes(record.verdicts[keyOf(exercises[index])]?.result?.verdict)) unfold(exercises[index].step);

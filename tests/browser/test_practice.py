@@ -454,3 +454,42 @@ def test_progress_is_counted_and_the_end_is_said(page, artifacts):
     box = page.locator(STEP.format("omega_squared")).locator("input[name]")
     box.fill("g/R + 1")
     assert status.inner_text() == "7 of 8 steps correct."
+
+
+@pytest.mark.parametrize("size", ["desktop", "phone"])
+def test_practice_mode_hides_its_dead_tabs_and_folds_what_gives_the_answers_away(browser, live_server, artifacts, size):
+    # student-e, 12 and 13: the tabs to hidden sections, the export links, the effective potential (U itself)
+    phone = size == "phone"
+    viewport = {"width": 390, "height": 844} if phone else {"width": 1366, "height": 768}
+    context = browser.new_context(base_url=live_server, viewport=viewport, has_touch=phone, is_mobile=phone)
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    try:
+        page.goto("/scenes/simple-pendulum?practice")
+        page.wait_for_selector(STEP.format("kinetic"))
+        unfold_panels(page)
+        tabs = page.locator(".on-this-page a")
+        assert [a.inner_text() for a in tabs.all() if a.is_visible()] == ["Simulation", "Set-up"]
+        export = page.locator("#export")
+        assert export.locator(".export-links").is_hidden()
+        shown = export.locator("button.gives-away")
+        assert shown.inner_text() == "Show (gives away the answers)"
+        panel = page.locator("#panel-effective-potential")
+        assert panel.locator(".plot").is_hidden()
+        assert "gives away step 2: Potential energy U" in panel.locator("button.gives-away").inner_text()
+        # shown on request, and drawn at its full width
+        panel.locator("button.gives-away").click()
+        assert panel.locator(".plot").is_visible()
+        page.wait_for_function(
+            "document.querySelector('#panel-effective-potential .plot svg, #panel-effective-potential .plot canvas')"
+            "?.getBoundingClientRect().width > 100"
+        )
+        panel.screenshot(path=artifacts / f"practice-effective-potential-{size}.png")
+        shown.click()
+        assert export.locator(".export-links").is_visible()
+        # out of practice mode every tab is back
+        page.locator("#practice-switch").focus()
+        page.keyboard.press("Space")
+        assert [a.inner_text() for a in tabs.all() if a.is_visible()][:4] == ["Simulation", "Set-up", "Derivation", "Results"]
+    finally:
+        context.close()
