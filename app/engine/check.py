@@ -271,13 +271,13 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         if pb.step in PARTED
         else None
     )
-    hint = _hint(pb, answer, a, b, truth)
-    if isinstance(hint, AnswerSlip):
+    advice = _hint(pb, answer, a, b, truth)
+    if isinstance(advice, AnswerSlip):
         # a slip read from the answer is named as a catalogue's mistake is (or as an approximation)
-        return _verdict("incorrect", message, _reveal(shown), hint.hint, mistake=hint.json())
+        return _verdict("incorrect", message, _reveal(shown), advice.hint, mistake=advice.json())
     if pb.step == "momentum" and differ_by_factor(b, a):
         partial = None  # the answer agrees up to one factor: "no part agrees" would contradict the hint
-    return _verdict("incorrect", message, _reveal(shown), hint, partial=partial)
+    return _verdict("incorrect", message, _reveal(shown), advice, partial=partial)
 
 
 def _shown(pb: Problem, printer: Printer, shown: sp.Expr) -> dict[str, Any]:
