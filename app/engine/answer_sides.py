@@ -62,7 +62,8 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
     typed in the other case (L for l)."""
     unknown = "unknown name" in str(exc)
     out = None
-    # a declared name typed with its letters' case changed (L for the length l): names are case-sensitive
+    # a declared name typed with its letters' case changed (L for the length l): names are case-sensitive; names
+    # are said as typed, as the box's own list prints them
     near = [
         n
         for n in allowed_names(step, kinds)
@@ -70,8 +71,8 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
     ]
     if near:
         out = (
-            f"{unicode(exc.part)} is not {_KIND_WORDS.get(kinds[near[0]], 'a name')} here; did you mean "
-            f"{unicode(near[0])}? A capital and a small letter are different names"
+            f"{exc.part} is not {_KIND_WORDS.get(kinds[near[0]], 'a name')} here; did you mean "
+            f"{near[0]}? A capital and a small letter are different names"
         )
         if exc.part in _QUANTITIES and step not in ("kinetic", "potential"):
             out += f" (and if you meant {_MEANT[exc.part]}, write it out in the coordinates, their velocities and the parameters)"
@@ -80,7 +81,7 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
         allowed = ", ".join(allowed_names(step, kinds))  # as typed, as the box's own list prints them
         advice = re.search(r"; (.*)\): '", str(exc))  # the parser's advice (letters written together, e^x)
         split = advice.group(1) if advice else ""
-        out = f"{unicode(exc.part)} is not a name in this problem; the names you may use are {allowed} and pi"
+        out = f"{exc.part} is not a name in this problem; the names you may use are {allowed} and pi"
         if split:
             out += f" ({split})"
     elif "only these functions may be called" in str(exc):

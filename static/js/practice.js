@@ -317,7 +317,7 @@ const typesetContext = sceneId
 /** Typeset the text of ``input`` into ``math`` (``frame`` puts the typeset answer in its display), or say in
  * ``note`` why it cannot be read; while the server answers, the last good rendering stays. Returns "read",
  * "refused", "empty", or null (no reply for this text). */
-async function typesetInto(input, math, note, step, signal, frame, said = () => false) {
+async function typesetInto(input, math, note, step, signal, frame, said = () => false, coordinate = null) {
   const text = input.value;
   if (!text.trim()) {
     math.replaceChildren();
@@ -327,7 +327,7 @@ async function typesetInto(input, math, note, step, signal, frame, said = () => 
   let reply;
   try {
     reply = await inTurn(() => (signal.aborted ? null
-      : request(root.dataset.typesetUrl, { text, step, ...typesetContext }, signal)));
+      : request(root.dataset.typesetUrl, { text, step, ...typesetContext, ...(coordinate ? { coordinate } : {}) }, signal)));
   } catch {
     reply = null; // aborted by the next keystroke, or the server out of reach: the last rendering stays
   }
@@ -360,7 +360,7 @@ async function preview(item, signal) {
     return Boolean(checked && checked.answer === text && !checked.result?.verdict);
   };
   const input = item.querySelector("input");
-  const state = await typesetInto(input, item.querySelector(".practice-preview-math"), item.querySelector(".practice-preview-note"), step, signal, frame, said);
+  const state = await typesetInto(input, item.querySelector(".practice-preview-math"), item.querySelector(".practice-preview-note"), step, signal, frame, said, item.dataset.coordinate || null);
   if (state === "empty") delete item.dataset.typeset;
   else if (state) item.dataset.typeset = state;
 }

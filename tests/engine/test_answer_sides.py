@@ -33,7 +33,7 @@ def test_an_acceleration_typed_with_its_name_is_its_right_hand_side():
         ("T - U", "lagrangian", "write T and U out in the coordinates", "T"),
         # a declared name typed in the other case is named, not taken for a quantity or an unknown
         ("m*r**2*theta_dot**2/2", "kinetic", "r is not a parameter here; did you mean R?", "r"),
-        ("-m*g*R*cos(Theta)", "potential", "Θ is not a coordinate here; did you mean θ?", "Theta"),
+        ("-m*g*R*cos(Theta)", "potential", "Theta is not a coordinate here; did you mean theta?", "Theta"),
         # the parser's refusals said as a tutor says them (student-e, 15)
         ("m*g*l*(1 - cos(theta))", "potential", "l is not a name in this problem; the names you may use are R, g, m, t, theta and pi", "l"),
         ("diff(theta, t)", "equation", "diff is not a function you may use here; the functions are acos,", "diff"),
