@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import re
 
-from app.engine.check_answers import CheckError, check_answer
+from app.engine.check_answers import CheckError, allowed_names, check_answer
 from app.engine.names import unicode
 from app.engine.parse import Parsed
+from app.engine.parse_rules import FUNCTIONS
 
 # the comparisons an '=' could be part of, refused by the parser in its own words
 _COMPARISONS = ("==", "<=", ">=", "!=")
@@ -44,21 +45,49 @@ def read_answer(text: str, step: str, coordinate: str | None, kinds: dict[str, s
     try:
         return _read(text, step, coordinate, kinds)
     except CheckError as exc:
-        raise _in_words(exc, text, step, coordinate) from None
+        raise _in_words(exc, text, step, coordinate, kinds) from None
 
 
 # the names of the steps' own quantities, which a student may type for what they stand for (L = T − U)
 _QUANTITIES = frozenset({"T", "U", "V", "L"})
+_KIND_WORDS = {"parameter": "a parameter", "position": "a coordinate", "velocity": "a velocity", "momentum": "a momentum"}
+_MEANT = {"T": "the kinetic energy T", "U": "the potential energy U", "V": "the potential energy V", "L": "the Lagrangian L"}
 # a derivative typed as a quotient of differentials: d/dt(...), dL/dtheta_dot, dT/dx
 _DIFFERENTIALS = re.compile(r"\bd([A-Za-z_]\w*)?\s*/\s*d[A-Za-z_]")
 
 
-def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None) -> CheckError:
+def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kinds: dict[str, str]) -> CheckError:
     """A refusal said as a tutor says it where the parser's words would not help: T − U typed in the L box, a
-    derivative typed as d/dt(…) or dL/dθ̇, another acceleration on the right of an acceleration."""
+    derivative typed as d/dt(…) or dL/dθ̇, another acceleration on the right of an acceleration, a declared name
+    typed in the other case (L for l)."""
     unknown = "unknown name" in str(exc)
     out = None
-    if exc.part in _QUANTITIES and unknown:
+    # a declared name typed with its letters' case changed (L for the length l): names are case-sensitive; names
+    # are said as typed, as the box's own list prints them
+    near = [
+        n
+        for n in allowed_names(step, kinds)
+        if unknown and n not in (exc.part, "t") and n.lower() == str(exc.part).lower()
+    ]
+    if near:
+        out = (
+            f"{exc.part} is not {_KIND_WORDS.get(kinds[near[0]], 'a name')} here; did you mean "
+            f"{near[0]}? A capital and a small letter are different names"
+        )
+        if exc.part in _QUANTITIES and step not in ("kinetic", "potential"):
+            out += f" (and if you meant {_MEANT[exc.part]}, write it out in the coordinates, their velocities and the parameters)"
+    elif unknown and not (exc.part in _QUANTITIES or _DIFFERENTIALS.search(text if isinstance(text, str) else "")):
+        # the parser's own words, as a tutor says them: the names as the page prints them
+        allowed = ", ".join(allowed_names(step, kinds))  # as typed, as the box's own list prints them
+        advice = re.search(r"; (.*)\): '", str(exc))  # the parser's advice (letters written together, e^x)
+        split = advice.group(1) if advice else ""
+        out = f"{exc.part} is not a name in this problem; the names you may use are {allowed} and pi"
+        if split:
+            out += f" ({split})"
+    elif "only these functions may be called" in str(exc):
+        functions = ", ".join(sorted(f for f in FUNCTIONS if f != "Abs"))
+        out = f"{exc.part} is not a function you may use here; the functions are {functions}, and Abs(x) for |x|"
+    elif exc.part in _QUANTITIES and unknown:
         out = f"{exc.part} is not a name the answer may use: write T and U out in the coordinates, their velocities and the parameters"
     elif unknown and exc.part.startswith("d") and isinstance(text, str) and _DIFFERENTIALS.search(text):
         out = (

@@ -71,9 +71,9 @@ from app.engine.compare import (
     values,
     without_constant,
 )
-from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json
+from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json, sentence
 from app.engine.dimensions import dimension, mismatch, number_beside_units
-from app.engine.mistake_answer import linearised, missing_square
+from app.engine.mistake_answer import AnswerSlip, linearised, missing_square
 from app.engine.mistake_box import piece_box
 from app.engine.mistake_families import FollowUp, Mistake
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, HALF_MOMENTUM_HINT, MISSING_FACTOR_HINT, POINTERS
@@ -271,10 +271,13 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         if pb.step in PARTED
         else None
     )
-    hint = _hint(pb, answer, a, b, truth)
+    advice = _hint(pb, answer, a, b, truth)
+    if isinstance(advice, AnswerSlip):
+        # a slip read from the answer is named as a catalogue's mistake is (or as an approximation)
+        return _verdict("incorrect", message, _reveal(shown), advice.hint, mistake=advice.json())
     if pb.step == "momentum" and differ_by_factor(b, a):
         partial = None  # the answer agrees up to one factor: "no part agrees" would contradict the hint
-    return _verdict("incorrect", message, _reveal(shown), hint, partial=partial)
+    return _verdict("incorrect", message, _reveal(shown), advice, partial=partial)
 
 
 def _shown(pb: Problem, printer: Printer, shown: sp.Expr) -> dict[str, Any]:
@@ -388,11 +391,31 @@ def judge_follow_up(pb: Problem, key: str, text: Parsed | str) -> dict[str, Any]
         # a new hint, not the first one again and not the question again: the slip in the reply where it is one
         # a student makes, else the concrete one where the question has it
         hint=_follow_up_slip(pb, fu, answer)
+        or _same_slip(pb, fu, mistake, mine)
         or fu.hint
         or "Work it out on its own, from its definition, then compare your reply with it term by term.",
         mistake={**mistake_json(mistake, printer.tex), "latex": ""},  # (the piece is the question's answer)
         follow_up=follow_up_json(mistake, allowed_names(fu.kind, pb.kinds)),
     )
+
+
+def _same_slip(pb: Problem, fu: FollowUp, asked: Mistake, mine) -> str | None:
+    """The step's own catalogue run on the question's answer: a mistake of the step changes the truth by
+    expr − truth, and where the question's answer changed by the same amount is the reply, the reply has that
+    slip (the lower bob's T alone as ½ m₂ l₂² θ̇₂²: its θ̇₁ part left out, as in the whole T)."""
+    if fu.relation != "exact" or fu.kind != pb.step:
+        return None
+    truth = pb.truths[0]
+    for m, _, _ in pb.mistakes:
+        if m.key == asked.key or m.count != 1 or m.family == "units":
+            continue
+        # the reply with m's slip: the question's answer plus the change m makes to the whole
+        slipped = _known(fu.truth + m.expr - truth, pb.groups)
+        if usable(mine, slipped) >= MIN_POINTS and equal(mine, slipped):
+            # and the body that carries this one along, where the mistake's own question knows it
+            carrier = [c for c in (m.follow_up.hint if m.follow_up else "").split(". ") if " carries the " in c]
+            return " ".join([sentence(m, "reply"), *(f"{c}." for c in carrier[:1])])
+    return None
 
 
 def _follow_up_slip(pb: Problem, fu: FollowUp, answer: sp.Expr) -> str | None:
@@ -459,7 +482,7 @@ def _difference(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[sp.Expr, 
     return answer - truth, "", one
 
 
-def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str:
+def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSlip:
     """The hint when no known mistake matches: a missing factor of a momentum, else the step's rule."""
     if pb.step == "momentum" and differ_by_factor(b, a):
         # the engine's momentum is the answer times a factor free of the velocities: a factor is missing

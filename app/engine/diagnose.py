@@ -28,8 +28,9 @@ from app.engine.derive import Derivation
 from app.engine.dimensions import mismatch, system_dimensions
 from app.engine.mistake_equations import generated
 from app.engine.mistake_families import Mistake, monomial_words, spoken
+from app.engine.mistake_masses import wrong_masses
 from app.engine.mistake_other import held_still, other_coordinates
-from app.engine.mistake_pieces import effective_terms, piece_mistakes, travelled
+from app.engine.mistake_pieces import effective_terms, masses_of, piece_mistakes, travelled
 from app.engine.mistakes import OMEGA_HINT, RULES
 
 MIN_POINTS = 6
@@ -59,6 +60,7 @@ _OPENINGS = {
     "other_coordinate": "Your {what} is {name}",
     "limit": "Your {what} is {name}",
     "position_for_velocity": "Your {what} has {name}",
+    "wrong_mass": "Your {what} has {name}",
 }
 
 
@@ -125,6 +127,9 @@ def catalogue(
     found += [x for x in carried if x[0].key.startswith(f"{step}.rigid")]
     found += _legacy(d, step, k, truth)
     found += [x for x in carried if not x[0].key.startswith(f"{step}.rigid")]
+    # one body's mass swapped for another's (or for the total): before the pieces' factors, which would name it as
+    # a term of the wrong size
+    found += [(m, sentence(m, label)) for m in wrong_masses(d, step, truth, masses_of(d, known))]
     found += pieces
     found += [x for x in made if x[0].family in GENERIC]
     if step == "omega_squared":
@@ -242,7 +247,8 @@ def partial_json(m: Mistake, label: str) -> dict[str, Any]:
 def follow_up_json(m: Mistake, names: list[str]) -> dict[str, Any] | None:
     if m.follow_up is None:
         return None
-    return {"key": m.key, "question": m.follow_up.question, "names": names}
+    # kind: the step whose names the reply may use, and how it is typeset
+    return {"key": m.key, "question": m.follow_up.question, "names": names, "kind": m.follow_up.kind}
 
 
 # ---- part by part ------------------------------------------------------------------------------

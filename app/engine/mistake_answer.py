@@ -18,6 +18,9 @@ Both compare values at the checker's sample points (app/engine/compare.py), with
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import Any
+
 import sympy as sp
 
 from app.engine.compare import Groups, Values, differ_by_factor, equal, factor_is_constant, usable, values
@@ -37,12 +40,29 @@ LINEAR_HINT = (
 )
 
 
+@dataclass(frozen=True)
+class AnswerSlip:
+    """A slip read from the answer: a named mistake (``approximation`` for the small-angle form) and its hint."""
+
+    key: str
+    name: str
+    where: str
+    hint: str
+    approximation: bool = False
+
+    def json(self) -> dict[str, Any]:
+        """The API's ``mistake`` (as ``app.engine.diagnose.mistake_json`` gives a catalogue's)."""
+        family = "small_angle" if self.approximation else self.key.split(".")[-1]
+        return {"key": self.key, "family": family, "name": self.name, "latex": "",
+                "where": self.where, "approximation": self.approximation, "count": 1}  # fmt: skip
+
+
 def _same(a: Values, b: Values) -> bool:
     return usable(a, b) >= MIN_POINTS and equal(a, b)
 
 
-def missing_square(answer: sp.Expr, truth: Values, groups: Groups) -> str | None:
-    """The hint naming a part of the answer written where its square belongs, or None."""
+def missing_square(answer: sp.Expr, truth: Values, groups: Groups) -> AnswerSlip | None:
+    """The slip naming a part of the answer written where its square belongs, or None."""
     rates = set(groups.rates)
     seen: set[sp.Expr] = set()
     for part in sp.preorder_traversal(answer):
@@ -56,16 +76,19 @@ def missing_square(answer: sp.Expr, truth: Values, groups: Groups) -> str | None
         squared = answer.xreplace({part: part**2})
         if squared != answer and _same(values(squared, groups), truth):
             rate = next((r for r in groups.rates if r in answer.free_symbols), None)
-            return SQUARE_HINT.format(
-                part=unicode_text(part),
-                square=unicode_text(part**2),
-                rate=unicode_text(rate) if rate is not None else "q̇",
+            shown, square = unicode_text(part), unicode_text(part**2)
+            hint = SQUARE_HINT.format(part=shown, square=square, rate=unicode_text(rate) if rate is not None else "q̇")
+            return AnswerSlip(
+                "kinetic.square_left_out",
+                f"{shown} where T needs its square {square}",
+                hint.split(": ", 1)[1].removesuffix("."),
+                hint,
             )
     return None
 
 
-def linearised(answer: Values, truth: sp.Expr, groups: Groups) -> str | None:
-    """The hint naming an equation linearised about rest at zero, or None (no such rest state, or not it)."""
+def linearised(answer: Values, truth: sp.Expr, groups: Groups) -> AnswerSlip | None:
+    """The slip naming an equation linearised about rest at zero, or None (no such rest state, or not it)."""
     moving = (*groups.positions, *groups.rates)
     rest = dict.fromkeys(moving, sp.S.Zero)
     if sp.simplify(truth.xreplace(rest)) != 0:
@@ -75,5 +98,13 @@ def linearised(answer: Values, truth: sp.Expr, groups: Groups) -> str | None:
         return None  # the equation is linear already (or has no first-order part)
     mine = values(first, groups)
     if usable(answer, mine) >= MIN_POINTS and differ_by_factor(answer, mine) and factor_is_constant(answer, mine):
-        return LINEAR_HINT
+        return AnswerSlip(
+            "equation.linearised",
+            "the equation linearised for small displacements (sin θ ≈ θ, cos θ ≈ 1, products of small quantities "
+            "such as θ̇² dropped)",
+            "the step asks for the full equation of motion: keep the sines, cosines and velocity-squared terms as "
+            "d/dt(∂L/∂q̇) − ∂L/∂q gives them",
+            LINEAR_HINT,
+            approximation=True,
+        )
     return None

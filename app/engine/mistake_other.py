@@ -3,7 +3,8 @@
 * **another coordinate's answer**: the momentum, equation or acceleration of q_j typed where q_k's is asked
   for (p_θ₁ in the box of p_θ₂: "the momentum conjugate to θ₁: you differentiated with respect to θ̇₁");
 * **the answer of a limit**: the truth with one body's mass taken to infinity or to zero (the block
-  on a wedge, D̈ = g sin α: the fixed wedge's answer, while the wedge recoils).
+  on a wedge, D̈ = g sin α: the fixed wedge's answer, while the wedge recoils); for T and L the body
+  held still (T = ½ m Ḋ²: the wedge's Ẋ set to zero, in its own ½ M Ẋ² and in the block's velocity).
 
 Both are bounded by counts: one candidate per other coordinate; three limits (held still, without mass,
 infinitely heavy) for each of at most ``MAX_BODIES`` bodies with a mass of their own.
@@ -63,6 +64,9 @@ def held_still(d: Derivation, step: str, truth: sp.Expr, k: int | None = None) -
         return  # one body: nothing else to hold still or to leave out
     if step == "equation" and k is not None:
         yield from _fixed_in_equation(d, bodies, truth, k)
+        return
+    if step in ("kinetic", "lagrangian"):
+        yield from _fixed_in_energy(d, bodies, truth, step)
         return
     if step not in ("acceleration", "omega_squared"):
         return
@@ -178,4 +182,39 @@ def _fixed_in_equation(d: Derivation, bodies: list, truth: sp.Expr, k: int) -> I
             f"if held still ({shown} → ∞), which has no {unicode(t.qdd[j].name)}", None,
             f"here the {body} is free to move and recoils as the rest moves, so {unicode(t.names[j])} changes and "
             "its acceleration stays in the equation", fixed,
+        )  # fmt: skip
+
+
+def _fixed_in_energy(d: Derivation, bodies: list, truth: sp.Expr, step: str) -> Iterator[Mistake]:
+    """T (or L) with a body held still: that body's one coordinate q_j not moving (q̇_j = 0), as if its mass were
+    infinite; this drops the body's own ½ M v² and the q̇_j part of every body it carries (only a body that
+    carries another is held still: one that carries none is forgotten)."""
+    namespace, t = d.table.namespace(), d.table
+    letter = "T" if step == "kinetic" else "L"
+    whole = "the kinetic energy" if step == "kinetic" else "the Lagrangian"
+    for i, mass_name, label in bodies:
+        M, shown = namespace[mass_name], unicode(mass_name)
+        if not _held(d, i, M):
+            continue
+        q = next(s for c in d.mechanics.positions[i] for s in c.free_symbols if s in t.q)
+        j = t.q.index(q)
+        # T(q̇_j = 0): the held body's coordinate neither moves nor carries anything along
+        fixed = sp.expand(truth.xreplace({t.qd[j]: 0}))
+        if fixed == 0 or sp.expand(fixed - truth) == 0:
+            continue
+        body, rate = label or f"body of mass {shown}", unicode(t.qd[j].name)
+        # the bodies whose positions hold q_j: the held body carries them along
+        carried = [
+            p.label or f"body of mass {unicode(p.mass)}"
+            for n, p in enumerate(d.system.particles)
+            if n != i and any(c.has(q) for c in d.mechanics.positions[n])
+        ]
+        if not carried:
+            continue  # a body that carries nothing, held still, is a body forgotten (app.engine.mistake_families)
+        carries = f" and carries the {' and the '.join(carried)} with it"
+        yield Mistake(
+            f"{step}.limit.held_still.{mass_name}", "limit", f"{whole} with the {body} treated as fixed, as if held "
+            f"still ({shown} → ∞), which has no {rate}", None,
+            f"here the {body} moves{carries}, so {letter} has the {body}'s own ½ {shown} v² and the {rate} terms of "
+            "every body it moves", fixed,
         )  # fmt: skip

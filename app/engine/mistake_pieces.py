@@ -150,8 +150,11 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
             yield Mistake(f"{base}.sign.{key}", "term_sign", "the sign of the whole answer", p,
                           WHOLE_SIGN_WHY[step], -truth)  # fmt: skip
         elif not (step == "equation" and p.has(*d.table.qdd)):  # (that sign is the rest's, a rule names it)
-            yield Mistake(f"{base}.sign.{key}", "term_sign", f"the sign of your term {spoken(-short)}", p,
-                          SIGN_WHY.get(step, "each term's sign follows from the derivation"), truth - 2 * p)  # fmt: skip
+            why = (_cross_why(d, p) if step == "kinetic" else None) or SIGN_WHY.get(
+                step, "each term's sign follows from the derivation"
+            )
+            yield Mistake(f"{base}.sign.{key}", "term_sign", f"the sign of your term {spoken(-short)}", p, why,
+                          truth - 2 * p)  # fmt: skip
         if step != "momentum":  # a momentum short of a factor is named by that factor (app.engine.check)
             yield from _factors(p, truth, base, key, rates, d.table.params)
         if p.has(sp.sin, sp.cos):
@@ -188,6 +191,37 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
         )  # fmt: skip
         yield Mistake(f"{base}.group_left_out.{s.name}", "left_out", f"every term with {name} left out", group,
                       f"every body's part belongs in the answer, {name}'s too", truth - group)  # fmt: skip
+
+
+_DOTTED = {"x": "ẋ", "y": "ẏ", "z": "ż"}
+
+
+def _cross_why(d: Derivation, p: sp.Expr) -> str | None:
+    """Where a cross term of T comes from: the position components that hold both its coordinates.
+
+    A component c(q) has the rate Σ_k (∂c/∂q_k) q̇_k; squared, it gives 2 (∂c/∂q_a)(∂c/∂q_b) q̇_a q̇_b, so the
+    cross term's sign is that of the product of the two parts, which the geometry fixes."""
+    m, t = d.mechanics, d.table
+    powers = p.as_powers_dict()
+    rates = [v for v in t.qd if powers.get(v, 0) == 1]
+    if len(rates) != 2 or not m.velocities:
+        return None
+    (a, b), (qa, qb) = rates, (t.q[t.qd.index(rates[0])], t.q[t.qd.index(rates[1])])
+    for i, r in enumerate(m.positions):
+        # the components whose rate has both a q̇_a part and a q̇_b part
+        both = [(axis, c) for axis, c in zip("xyz", r, strict=False) if sp.diff(c, qa) != 0 and sp.diff(c, qb) != 0]
+        if not both:
+            continue
+        where = " and ".join(f"{axis} = {spoken(c)}" for axis, c in both)
+        parts = "; ".join(
+            f"{_DOTTED[axis]} = {spoken(sp.diff(c, qa) * a)} + {spoken(sp.diff(c, qb) * b)}".replace("+ −", "− ")
+            for axis, c in both
+        )
+        return (
+            f"the cross term comes from the {_body_name(d, i)}'s position, {where}: {parts}, and squaring gives "
+            "twice the product of the two parts, with the signs this geometry gives them"
+        )
+    return None
 
 
 def _factored(p: sp.Expr) -> sp.Expr:
@@ -397,6 +431,11 @@ def _lengths_and_masses(d: Derivation, known) -> tuple[list[sp.Symbol], list[sp.
     length, mass = {"m": Fraction(1)}, {"kg": Fraction(1)}
     params = d.table.params
     return [s for s in params if known.get(s) == length], [s for s in params if known.get(s) == mass]
+
+
+def masses_of(d: Derivation, known) -> list[sp.Symbol]:
+    """The parameters whose declared unit is a mass."""
+    return _lengths_and_masses(d, known)[1]
 
 
 def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp.Expr]]:

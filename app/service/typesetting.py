@@ -106,11 +106,16 @@ class Typesetter:
         names: tuple[tuple[str, ...], tuple[str, ...]],
         client: str,
         address: str,
+        coordinate: str | None = None,
     ) -> bytes:
         """``{"latex"}`` of the answer, or InvalidSystem with the checker's message and the offending part."""
         kinds = await asyncio.to_thread(self._scene_kinds, scene) if scene is not None else system_kinds(*names)
+        if coordinate is not None and kinds.get(coordinate) != "position":
+            coordinates = ", ".join(n for n, k in kinds.items() if k == "position" and n != "t")
+            raise InvalidSystem(f"coordinate: {coordinate!r} is not a coordinate here; the coordinates are: {coordinates}",
+                                ("coordinate",), coordinate)  # fmt: skip
         try:
-            parsed, equation = read_answer(text, step, None, kinds)
+            parsed, equation = read_answer(text, step, coordinate, kinds)
         except CheckError as exc:
             raise _refusal(exc) from None
         key = spec_key("typeset", step, kinds, text.strip())

@@ -31,5 +31,7 @@ router = APIRouter(prefix="/api", tags=["practice"])
 async def typeset(client: ClientDep, checker: CheckingDep, body: TypesetRequest) -> Response:
     return await answer(
         client,
-        lambda key, address: checker.typesetter.typeset(body.text, body.step, body.scene, body.names(), key, address),
+        lambda key, address: checker.typesetter.typeset(
+            body.text, body.step, body.scene, body.names(), key, address, body.coordinate
+        ),
     )

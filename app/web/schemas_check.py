@@ -94,6 +94,9 @@ class FollowUp(BaseModel):
     key: str = Field(description="Send it back as the request's `follow_up` with the answer to the question.")
     question: str
     names: list[str] = Field(description="The names the answer may use.")
+    kind: str = Field(
+        "", description="The step whose names the answer may use, and as whose answer it is typeset (`/api/typeset`)."
+    )
 
 
 class Reveal(BaseModel):

@@ -23,6 +23,9 @@ class TypesetRequest(BaseModel):
     text: Expression
     step: Step = Field(description="The step the answer is for (its name rules apply), as for POST /api/check.")
     scene: str | None = Field(None, max_length=80, description="The scene whose names the answer may use.")
+    coordinate: Name | None = Field(
+        None, description="For an acceleration: the coordinate whose acceleration the box asks for (θ̈ = … is read)."
+    )
     coordinates: list[Name] | None = Field(
         None, max_length=MAX_COORDINATES, description="For a declared system (no `scene`): its coordinates."
     )

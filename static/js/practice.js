@@ -221,7 +221,23 @@ function followUpBox(item, followUp) {
   const send = element("button", { type: "button" }, "Answer");
   const status = element("p", { class: "follow-up-verdict", role: "status", "aria-live": "polite" });
   row.append(input, send);
-  box.append(label, row, element("p", { class: "help" }, `Names you may use: ${followUp.names.join(", ")}, pi.`), status);
+  // the reply typeset as it is typed, as every answer box's is
+  const shown = element("div", { class: "practice-preview", id: `${id}-preview`, "aria-label": "Your reply, typeset" });
+  const math = element("div", { class: "practice-preview-math" });
+  const note = element("p", { class: "help practice-preview-note" }, "What you type appears here, typeset.");
+  shown.append(math, note);
+  input.setAttribute("aria-describedby", `${id}-preview`);
+  let timer = null;
+  let typing = new AbortController();
+  input.addEventListener("input", () => {
+    clearTimeout(timer);
+    timer = setTimeout(() => {
+      typing.abort();
+      typing = new AbortController();
+      typesetInto(input, math, note, followUp.kind || item.dataset.step, typing.signal, (latex) => latex);
+    }, TYPESET_DELAY_MS);
+  });
+  box.append(label, row, element("p", { class: "help" }, `Names you may use: ${followUp.names.join(", ")}, pi.`), shown, status);
   const ask = async () => {
     const answer = input.value.trim();
     if (!answer) {
@@ -286,7 +302,7 @@ function foldGiveaways(exercises) {
       button.remove();
       giveaways.delete(button);
     });
-    (section.querySelector("h3") || section).after(button);
+    (section.querySelector("h3") || section.querySelector("h2") || section).after(button);
     giveaways.set(button, index < 0 ? [] : [exercises[index].step]);
     // a step already checked right (kept from an earlier visit) unfolds what it gives away
     if (index >= 0 && ["correct", "equivalent"].includes(record.verdicts[keyOf(exercises[index])]?.result?.verdict)) unfold(exercises[index].step);
@@ -298,43 +314,55 @@ const typesetContext = sceneId
   ? { scene: sceneId }
   : { coordinates: system?.coordinates || [], parameters: (system?.parameters || []).map((p) => (typeof p === "string" ? p : p.name)) };
 
-/** Typeset what is typed, as the checker reads it; while the server answers, the last good rendering stays. */
-async function preview(item, signal) {
-  const text = item.querySelector("input").value;
-  const math = item.querySelector(".practice-preview-math");
-  const note = item.querySelector(".practice-preview-note");
+/** Typeset the text of ``input`` into ``math`` (``frame`` puts the typeset answer in its display), or say in
+ * ``note`` why it cannot be read; while the server answers, the last good rendering stays. Returns "read",
+ * "refused", "empty", or null (no reply for this text). */
+async function typesetInto(input, math, note, step, signal, frame, said = () => false, coordinate = null) {
+  const text = input.value;
   if (!text.trim()) {
     math.replaceChildren();
     note.textContent = "What you type appears here, typeset.";
-    delete item.dataset.typeset;
-    return;
+    return "empty";
   }
   let reply;
   try {
     reply = await inTurn(() => (signal.aborted ? null
-      : request(root.dataset.typesetUrl, { text, step: item.dataset.step, ...typesetContext }, signal)));
+      : request(root.dataset.typesetUrl, { text, step, ...typesetContext, ...(coordinate ? { coordinate } : {}) }, signal)));
   } catch {
     reply = null; // aborted by the next keystroke, or the server out of reach: the last rendering stays
   }
   // the preview belongs to the text in the box now: a reply for an earlier text (one typed on since, or sent
   // before a check of the whole answer) says nothing
-  if (!reply || signal.aborted || item.querySelector("input").value !== text) return;
+  if (!reply || signal.aborted || input.value !== text) return null;
   if (reply.ok) {
-    const lhs = item.dataset.lhs;
-    // an equation typed lhs = rhs comes back whole
-    const whole = reply.answer.equation ? reply.answer.latex : null;
-    katexBreaking(math, whole || (item.dataset.step === "equation" ? `${reply.answer.latex} = 0` : `${lhs} = ${reply.answer.latex}`));
+    katexBreaking(math, frame(reply.answer.latex, reply.answer));
     note.textContent = "";
-    item.dataset.typeset = "read";
-  } else if (reply.status === 422) {
+    return "read";
+  }
+  if (reply.status === 422) {
     // said once: when the check of this same text was refused, its verdict below says why
-    const checked = record.verdicts[item.dataset.key];
-    const said = checked && checked.answer === text && !checked.result?.verdict;
-    note.textContent = said ? "" : `Not read yet: ${endOf(wordsOf(reply.answer?.detail) || "the checker could not read this")}`;
+    note.textContent = said(text) ? "" : `Not read yet: ${endOf(wordsOf(reply.answer?.detail) || "the checker could not read this")}`;
     // the rendering of an earlier text would show something not typed: it goes
     math.replaceChildren();
-    item.dataset.typeset = "refused";
+    return "refused";
   }
+  return null;
+}
+
+/** Typeset what is typed in a step's box, as the checker reads it. */
+async function preview(item, signal) {
+  const lhs = item.dataset.lhs;
+  const step = item.dataset.step;
+  // an equation typed lhs = rhs comes back whole
+  const frame = (latex, answer) => (answer.equation ? answer.latex : step === "equation" ? `${latex} = 0` : `${lhs} = ${latex}`);
+  const said = (text) => {
+    const checked = record.verdicts[item.dataset.key];
+    return Boolean(checked && checked.answer === text && !checked.result?.verdict);
+  };
+  const input = item.querySelector("input");
+  const state = await typesetInto(input, item.querySelector(".practice-preview-math"), item.querySelector(".practice-preview-note"), step, signal, frame, said, item.dataset.coordinate || null);
+  if (state === "empty") delete item.dataset.typeset;
+  else if (state) item.dataset.typeset = state;
 }
 
 const TYPESET_DELAY_MS = 150; // after the last keystroke
@@ -350,6 +378,14 @@ function howTo(exercise) {
   return (HOW[exercise.step] || HOW.other).replace("{q}", exercise.coordinate || "q");
 }
 
+/** The rule the reader applies to numbered names, said as the checker applies it: m_1 is read as m1. */
+function numbered(names) {
+  const example = names.find((name) => /^[A-Za-z]+\d+$/.test(name));
+  if (!example) return "";
+  const [, stem, digits] = example.match(/^([A-Za-z]+)(\d+)$/);
+  return ` A number may follow a name with or without _ (${example} or ${stem}_${digits}).`;
+}
+
 function buildItem(exercise, index) {
   const key = keyOf(exercise);
   const id = `practice-${index}`;
@@ -357,7 +393,8 @@ function buildItem(exercise, index) {
   if (exercise.coordinate) item.dataset.coordinate = exercise.coordinate;
   const form = element("form", { class: "practice-form", novalidate: "" });
   const title = element("h3", { id: `${id}-title` }, exercise.title);
-  const label = element("label", { for: `${id}-answer` }, `Your answer: ${exercise.title}`);
+  // the heading shows the title: the label says it to a screen reader only (student-e, 18)
+  const label = element("label", { for: `${id}-answer`, class: "visually-hidden" }, `Your answer: ${exercise.title}`);
   const row = element("div", { class: "practice-row" });
   const lhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
   katexInto(lhs, exercise.step === "equation" ? "" : `${exercise.lhs} =`);
@@ -374,7 +411,7 @@ function buildItem(exercise, index) {
   const rhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
   if (exercise.step === "equation") katexInto(rhs, "= 0");
   row.append(lhs, input, rhs);
-  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${howTo(exercise)} Names you may use: ${exercise.names.join(", ")}, pi.`);
+  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${howTo(exercise)} Names you may use: ${exercise.names.join(", ")}, pi.${numbered(exercise.names)}`);
   const previewBox = element("div", { class: "practice-preview", id: `${id}-preview`, "aria-label": "Your answer, typeset" });
   previewBox.append(element("div", { class: "practice-preview-math" }), element("p", { class: "help practice-preview-note" }));
   const actions = element("div", { class: "practice-actions" });
@@ -397,7 +434,8 @@ function buildItem(exercise, index) {
     preview(item, typing.signal);
   };
   // "= 0" stands beside an equation's box only while the equation is typed as one expression
-  const sides = () => { rhs.hidden = exercise.step === "equation" && input.value.includes("="); };
+  // (and not under an empty box, where it would read as the only form taken)
+  const sides = () => { rhs.hidden = exercise.step === "equation" && (input.value.includes("=") || !input.value.trim()); };
   sides();
   input.addEventListener("input", () => {
     sides();
@@ -406,6 +444,7 @@ function buildItem(exercise, index) {
     markStale(item, record.verdicts[key]?.answer);
     record.answers[key] = input.value;
     save(record);
+    showProgress(); // a right answer typed over no longer counts
     clearTimeout(timer);
     timer = setTimeout(typeset, TYPESET_DELAY_MS);
   });
@@ -443,6 +482,7 @@ function buildItem(exercise, index) {
       save(record);
       showVerdict(item, record.verdicts[key].result, input.value);
       if (["correct", "equivalent"].includes(result?.verdict)) unfold(exercise.step);
+      showProgress();
     } catch {
       showVerdict(item, { detail: "The server could not be reached; try again." }, answer);
     } finally {
@@ -458,6 +498,27 @@ function buildItem(exercise, index) {
   return item;
 }
 
+// ---- progress ----------------------------------------------------------------------------------
+
+let shownExercises = [];
+
+/** How many steps are checked right (with the answer still as it was checked), and the end once all are. */
+function showProgress() {
+  const status = document.getElementById("practice-status");
+  const total = shownExercises.length;
+  if (!status || !total) return;
+  const done = shownExercises.filter((exercise) => {
+    const key = keyOf(exercise);
+    const kept = record.verdicts[key];
+    return kept && ["correct", "equivalent"].includes(kept.result?.verdict) && kept.answer === (record.answers[key] ?? kept.answer);
+  }).length;
+  status.dataset.done = String(done);
+  if (done === 0) status.textContent = `${total} steps to derive, in the chapter's order.`;
+  else if (done < total) status.textContent = `${done} of ${total} steps correct.`;
+  else status.textContent = `All ${total} steps correct: you have done the whole derivation yourself.`;
+  status.classList.toggle("practice-done", done === total);
+}
+
 async function loadSteps() {
   const status = document.getElementById("practice-status");
   const list = document.getElementById("practice-steps");
@@ -468,7 +529,8 @@ async function loadSteps() {
   }
   list.replaceChildren(...answer.exercises.map((exercise, index) => buildItem(exercise, index)));
   foldGiveaways(answer.exercises);
-  status.textContent = `${answer.exercises.length} steps to derive, in the chapter's order.`;
+  shownExercises = answer.exercises;
+  showProgress();
 }
 
 let loaded = false;

@@ -79,7 +79,7 @@ def test_a_refusal_marks_the_offending_part_and_every_box_is_labelled(page):
     answer(page, "momentum:phi", "m*R**2*phi_dot + v")
     refused = verdict_of(page, "momentum:phi")
     refused.locator("mark").wait_for()
-    assert refused.locator("mark").inner_text() == "v" and "unknown name" in refused.inner_text()
+    assert refused.locator("mark").inner_text() == "v" and "v is not a name in this problem" in refused.inner_text()
     # the browser logs the refusal's 422 itself (and a 429 when the check met the page's own simulation job,
     # which it retries); nothing else may go wrong
     assert [e for e in page.console_errors if "status of 422" not in e and "status of 429" not in e] == []
@@ -182,12 +182,32 @@ def test_the_named_slip_its_piece_and_follow_up_at_both_sizes(browser, live_serv
         assert verdict.evaluate("e => e.getBoundingClientRect().right") <= viewport["width"] + 1
         follow_up = verdict.locator(".verdict-follow-up")
         follow_up.locator("input").fill(follow)
+        # the reply is typeset as it is typed, as the step's own answer is
+        follow_up.locator(".practice-preview .katex").wait_for()
+        assert follow_up.locator(".practice-preview-note").inner_text() == ""
         follow_up.locator("input").press("Enter")
         page.wait_for_selector(STEP.format(step) + ' .follow-up-verdict[data-verdict="correct"]')
         verdict.screenshot(path=artifacts / f"practice-{scene}-{size}.png")
         assert page.locator("#practice .katex-error").count() == 0
     finally:
         context.close()
+
+
+def test_a_wrong_reply_to_a_follow_up_is_diagnosed(page, artifacts):
+    # student-e, 8: the lower bob's T alone typed as if it swung from a fixed pivot
+    page.set_viewport_size({"width": 1366, "height": 768})
+    page.goto("/scenes/double-pendulum?practice")
+    page.wait_for_selector(STEP.format("kinetic"))
+    answer(page, "kinetic", "m1*l1**2*theta1_dot**2/2")
+    follow_up = verdict_of(page, "kinetic").locator(".verdict-follow-up")
+    follow_up.wait_for()
+    assert "kinetic energy of the lower bob alone" in follow_up.locator("label").inner_text()
+    follow_up.locator("input").fill("m2*l2**2*theta2_dot**2/2")
+    follow_up.locator("input").press("Enter")
+    page.wait_for_selector(STEP.format("kinetic") + ' .follow-up-verdict[data-verdict="incorrect"]')
+    said = unicodedata.normalize("NFC", follow_up.locator(".follow-up-verdict").inner_text())
+    assert "the lower bob also moves when θ₁ changes" in said and "carries the lower bob" in said, said
+    follow_up.screenshot(path=artifacts / "practice-follow-up-wrong-1366.png")
 
 
 def test_panels_that_give_away_a_step_are_folded_until_it_is_shown(page, artifacts):
@@ -313,7 +333,7 @@ def test_what_the_preview_and_the_verdict_say_belongs_to_the_text_in_the_box(bro
         preview("acceleration:theta").locator(".katex").first.wait_for()
         answer(page, "acceleration:theta", "theta_ddot = -g/l*sin(theta)")
         verdict_of(page, "acceleration:theta").locator("mark").wait_for()
-        assert "unknown name" in verdict_of(page, "acceleration:theta").inner_text()
+        assert "l is not a name in this problem" in verdict_of(page, "acceleration:theta").inner_text()
         page.wait_for_function(
             "document.querySelector('.practice-step[data-key=\"acceleration:theta\"]').dataset.typeset === 'refused'"
         )
@@ -323,7 +343,7 @@ def test_what_the_preview_and_the_verdict_say_belongs_to_the_text_in_the_box(bro
         answer(page, "momentum:theta", "dL/dtheta_dot")
         verdict_of(page, "momentum:theta").locator("mark").wait_for()
         said = verdict_of(page, "momentum:theta").inner_text()
-        assert "a derivative cannot be typed here" in said and "unknown name" not in said
+        assert "a derivative cannot be typed here" in said and "not a name in this problem" not in said
         assert preview("momentum:theta").locator(".katex").count() == 0
 
         # the parser's note on a half-typed text goes the moment the text changes, before any check
@@ -389,5 +409,87 @@ def test_a_long_answer_and_its_difference_break_across_lines_on_a_phone(browser,
         assert difference.locator(".katex").count() == 1 and difference.evaluate(fits)
         page.locator(STEP.format("hamiltonian")).screenshot(path=artifacts / "practice-long-answer-390.png")
         assert page.locator("#practice .katex-error").count() == 0
+    finally:
+        context.close()
+
+
+# the simple pendulum's eight steps, each typed right (as the page's own derivation gives them)
+PENDULUM = [
+    ("kinetic", "m*R**2*theta_dot**2/2"),
+    ("potential", "m*g*R*(1 - cos(theta))"),
+    ("lagrangian", "m*R**2*theta_dot**2/2 - m*g*R*(1 - cos(theta))"),
+    ("momentum:theta", "m*R**2*theta_dot"),
+    ("equation:theta", "theta_ddot + g/R*sin(theta) = 0"),
+    ("acceleration:theta", "-g/R*sin(theta)"),
+    ("hamiltonian", "m*R**2*theta_dot**2/2 + m*g*R*(1 - cos(theta))"),
+    ("omega_squared", "g/R"),
+]
+
+
+def test_progress_is_counted_and_the_end_is_said(page, artifacts):
+    # student-e, 10 and 18: a count of the steps done, an end message; one title per box, no "= 0" under an empty one
+    page.set_viewport_size({"width": 1366, "height": 768})
+    page.goto("/scenes/simple-pendulum?practice")
+    page.wait_for_selector(STEP.format("omega_squared"))
+    status = page.locator("#practice-status")
+    assert status.inner_text() == "8 steps to derive, in the chapter's order."
+    # the heading is the title, once: the label is for a screen reader, and takes no room on the page
+    assert page.locator(STEP.format("kinetic") + " label").evaluate("e => e.getBoundingClientRect().width") <= 1
+    equation = page.locator(STEP.format("equation:theta"))
+    assert equation.locator(".practice-lhs").nth(1).is_hidden()  # "= 0" only beside an expression typed
+    equation.locator("input[name]").fill("theta_ddot")
+    assert equation.locator(".practice-lhs").nth(1).is_visible()
+    for n, (key, text) in enumerate(PENDULUM, start=1):
+        answer(page, key, text)
+        page.wait_for_selector(STEP.format(key) + ' .practice-verdict[data-verdict="correct"], '
+                               + STEP.format(key) + ' .practice-verdict[data-verdict="equivalent"]')  # fmt: skip
+        if n == 2:
+            assert status.inner_text() == "2 of 8 steps correct."
+    assert status.inner_text().startswith("All 8 steps correct")
+    page.locator("#practice").screenshot(path=artifacts / "practice-all-done-1366.png")
+    # kept: after a reload the count is the same
+    page.reload()
+    page.wait_for_function("document.getElementById('practice-status').dataset.done === '8'")
+    # a right answer typed over no longer counts
+    box = page.locator(STEP.format("omega_squared")).locator("input[name]")
+    box.fill("g/R + 1")
+    assert status.inner_text() == "7 of 8 steps correct."
+
+
+@pytest.mark.parametrize("size", ["desktop", "phone"])
+def test_practice_mode_hides_its_dead_tabs_and_folds_what_gives_the_answers_away(browser, live_server, artifacts, size):
+    # student-e, 12 and 13: the tabs to hidden sections, the export links, the effective potential (U itself)
+    phone = size == "phone"
+    viewport = {"width": 390, "height": 844} if phone else {"width": 1366, "height": 768}
+    context = browser.new_context(base_url=live_server, viewport=viewport, has_touch=phone, is_mobile=phone)
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    try:
+        page.goto("/scenes/simple-pendulum?practice")
+        page.wait_for_selector(STEP.format("kinetic"))
+        unfold_panels(page)
+        tabs = page.locator(".on-this-page a")
+        assert [a.inner_text() for a in tabs.all() if a.is_visible()] == ["Simulation", "Set-up"]
+        export = page.locator("#export")
+        assert export.locator(".export-links").is_hidden()
+        shown = export.locator("button.gives-away")
+        assert shown.inner_text() == "Show (gives away the answers)"
+        panel = page.locator("#panel-effective-potential")
+        assert panel.locator(".plot").is_hidden()
+        assert "gives away step 2: Potential energy U" in panel.locator("button.gives-away").inner_text()
+        # shown on request, and drawn at its full width
+        panel.locator("button.gives-away").click()
+        assert panel.locator(".plot").is_visible()
+        page.wait_for_function(
+            "document.querySelector('#panel-effective-potential .plot svg, #panel-effective-potential .plot canvas')"
+            "?.getBoundingClientRect().width > 100"
+        )
+        panel.screenshot(path=artifacts / f"practice-effective-potential-{size}.png")
+        shown.click()
+        assert export.locator(".export-links").is_visible()
+        # out of practice mode every tab is back
+        page.locator("#practice-switch").focus()
+        page.keyboard.press("Space")
+        assert [a.inner_text() for a in tabs.all() if a.is_visible()][:4] == ["Simulation", "Set-up", "Derivation", "Results"]
     finally:
         context.close()

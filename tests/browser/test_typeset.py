@@ -80,4 +80,4 @@ def test_the_playgrounds_box_reads_the_declared_systems_names(page):
     assert shown.startswith(r"\ddot{x} =") and r"\dot{x}" in shown
     page.locator(box + " input[name]").fill("k*y")  # y is no name of this system
     page.wait_for_function(f"document.querySelector('{box}').dataset.typeset === 'refused'")
-    assert "unknown name" in page.locator(box + " .practice-preview-note").inner_text()
+    assert "y is not a name in this problem" in page.locator(box + " .practice-preview-note").inner_text()

@@ -370,6 +370,33 @@ SLIPS = [
     ("elastic-pendulum", "kinetic", None, "m*(r_dot**2 + r*phi_dot**2)/2", UNITS_WORDS),
     ("simple-pendulum", "hamiltonian", None, "m*R**2*theta_dot**2/2 - m*g*R*cos(theta) + 7", r"7 has no unit.*energy"),
     ("simple-pendulum", "momentum", "theta", "m*R*theta_dot", r"factor R is missing"),
+    # the wrong mass in one term: another body's, or the total (only the block changes height)
+    ("movable-incline", "potential", None, "-(m + M)*g*D*sin(alpha)", r"wrong mass in your term.*total mass.*block alone"),
+    (
+        "free-cart",
+        "kinetic",
+        None,
+        "(M + m)*X_dot**2/2 + m*l**2*theta_dot**2/2 + M*l*X_dot*theta_dot*cos(theta)",
+        r"wrong mass in your term M l θ̇ Ẋ cos\(θ\).*M belongs to the cart.*the bob \(mass m\)",
+    ),
+    ("movable-incline", "equation", "D", "m*D_ddot + M*X_ddot*cos(alpha) - m*g*sin(alpha)", r"wrong mass.*M where m belongs"),
+    (
+        "double-pendulum",
+        "potential",
+        None,
+        "-(m1 + m2)*g*l1*cos(theta1) - m1*g*l2*cos(theta2)",
+        r"wrong mass in your term −m₁ g l₂ cos\(θ₂\).*m₁ belongs to the upper bob",
+    ),
+    # a cross term's sign, explained from the geometry that gives it (student-e, 11)
+    (
+        "movable-incline",
+        "kinetic",
+        None,
+        "(M + m)*X_dot**2/2 + m*D_dot**2/2 - m*X_dot*D_dot*cos(alpha)",
+        r"the sign of your term.*block's position, x = X \+ D cos\(α\): ẋ = Ẋ \+ Ḋ cos\(α\)",
+    ),
+    # the fixed wedge's T: the wedge moves and carries the block
+    ("movable-incline", "kinetic", None, "(1/2)*m*D_dot**2", r"wedge treated as fixed.*M → ∞.*carries the block"),
 ]
 
 # Correct answers in unusual forms: every one must be accepted ("correct", or "equivalent" where the

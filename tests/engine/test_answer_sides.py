@@ -31,6 +31,12 @@ def test_an_acceleration_typed_with_its_name_is_its_right_hand_side():
         # a side's refusal quotes what was typed, at its columns, without the side's own column
         ("theta_ddot = -g*sin(theta", "equation", "the '(' is never closed", " -g*sin(theta"),
         ("T - U", "lagrangian", "write T and U out in the coordinates", "T"),
+        # a declared name typed in the other case is named, not taken for a quantity or an unknown
+        ("m*r**2*theta_dot**2/2", "kinetic", "r is not a parameter here; did you mean R?", "r"),
+        ("-m*g*R*cos(Theta)", "potential", "Theta is not a coordinate here; did you mean theta?", "Theta"),
+        # the parser's refusals said as a tutor says them (student-e, 15)
+        ("m*g*l*(1 - cos(theta))", "potential", "l is not a name in this problem; the names you may use are R, g, m, t, theta and pi", "l"),
+        ("diff(theta, t)", "equation", "diff is not a function you may use here; the functions are acos,", "diff"),
     ],
 )
 def test_what_cannot_be_read_is_said_plainly(text, step, says, marked):

@@ -144,3 +144,26 @@ def test_a_bare_number_added_to_an_energy_is_a_units_mistake():
     fine = judge(step_problem("simple-pendulum", "hamiltonian", None),
                  "m*R**2*theta_dot**2/2 - m*g*R*cos(theta) + 7*m*g*R")  # fmt: skip
     assert fine["verdict"] == "equivalent", fine
+
+
+@pytest.mark.parametrize(
+    ("reply", "named"),
+    [
+        # student-e, 8: the lower bob's T as if it swung from a fixed pivot
+        ("m2*l2**2*theta2_dot**2/2", "leaves out the part of the lower bob's velocity that comes from θ̇₁"),
+        ("m2*(l1**2*theta1_dot**2 + l2**2*theta2_dot**2)/2", "leaves out the cross term in θ̇₁ θ̇₂"),
+        (
+            "m2*l1**2*theta1_dot**2 + m2*l2**2*theta2_dot**2 + 2*m2*l1*l2*theta1_dot*theta2_dot*cos(theta1 - theta2)",
+            "without its ½",
+        ),
+    ],
+)
+def test_a_wrong_reply_to_a_follow_up_is_diagnosed_by_the_steps_own_mistakes(reply, named):
+    pb = step_problem("double-pendulum", "kinetic", None)
+    first = judge(pb, "m1*l1**2*theta1_dot**2/2")
+    assert first["follow_up"]["question"] == "What is the kinetic energy of the lower bob alone?"
+    wrong = judge_follow_up(pb, first["follow_up"]["key"], reply)
+    assert wrong["verdict"] == "incorrect" and wrong["hint"].startswith("Your reply"), wrong["hint"]
+    assert named in wrong["hint"], wrong["hint"]
+    if "θ̇₁" in named and "cross" not in named:
+        assert "The upper bob carries the lower bob along with it." in wrong["hint"]

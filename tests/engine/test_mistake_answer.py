@@ -19,6 +19,7 @@ def test_a_component_left_unsquared_is_named_with_its_square(scene, answer, part
     result = judge(step_problem(scene, "kinetic", None), answer)
     assert result["verdict"] == "incorrect"
     assert f"You wrote {part} where T needs its square {square}" in result["hint"]
+    assert result["mistake"]["name"] == f"{part} where T needs its square {square}" and not result["mistake"]["approximation"]
 
 
 def test_another_wrong_factor_is_not_called_a_missing_square():
@@ -30,6 +31,8 @@ def test_the_small_angle_equation_is_named_as_linearised():
     answer = "m2*l2**2*theta2_ddot + m2*l1*l2*theta1_ddot + m2*g*l2*theta2"
     result = judge(step_problem("double-pendulum", "equation", "theta2"), answer)
     assert result["verdict"] == "incorrect" and "linearised for small displacements" in result["hint"]
+    # named as an approximation, as the catalogue's small-angle forms are (student-e, 16)
+    assert result["mistake"]["approximation"] and result["mistake"]["name"].startswith("the equation linearised"), result
     # divided through by m₂ l₂ it is the same slip
     scaled = judge(step_problem("double-pendulum", "equation", "theta2"), "l2*theta2_ddot + l1*theta1_ddot + g*theta2")
     assert "linearised" in scaled["hint"]

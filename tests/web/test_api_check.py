@@ -58,7 +58,7 @@ def test_a_declared_system_is_checked_like_a_scene(client):
     ("body", "loc", "detail"),
     [
         ({"step": "kinetic", "answer": "m*R**2*theta_dot**2/"}, ["body", "answer"], "ends with '/' at column 20"),
-        ({"step": "kinetic", "answer": "m*v**2/2"}, ["body", "answer"], "unknown name (allowed here: R, g, m, t"),
+        ({"step": "kinetic", "answer": "m*v**2/2"}, ["body", "answer"], "v is not a name in this problem; the names you may use are R, g, m, t"),
         ({"step": "potential", "answer": "m*g*theta_dot"}, ["body", "answer"], "U depends on positions only"),
         ({"step": "momentum", "answer": "m*R**2*theta_dot"}, ["body", "coordinate"], "give one of: theta"),
         ({"step": "equation", "coordinate": "x", "answer": "1"}, ["body", "coordinate"], "the coordinates are: theta"),
@@ -184,3 +184,12 @@ def test_an_equals_sign_where_the_box_names_the_left_side_is_refused_plainly(cli
     assert (body["start"], body["end"]) == (2, 3)
     lagrangian = check(client, {"step": "lagrangian", "answer": "T - U"}).json()
     assert "write T and U out in the coordinates" in lagrangian["detail"] and lagrangian["part"] == "T"
+
+
+def test_a_name_typed_in_the_other_case_is_named_as_that(client):
+    # student-e, 2: a capital letter for a declared one is not taken for a quantity or an unknown
+    refused = check(client, {"step": "kinetic", "answer": "m*r**2*theta_dot**2/2"})
+    assert refused.status_code == 422
+    body = refused.json()
+    assert body["detail"].startswith("answer: r is not a parameter here; did you mean R?"), body
+    assert (body["start"], body["end"]) == (2, 3)

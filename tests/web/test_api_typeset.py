@@ -56,6 +56,8 @@ def test_a_declared_systems_answer_is_read_with_its_names(client):
         ({"text": "1", "step": "jerk", "scene": "simple-pendulum"}, 422, "'kinetic', 'potential'"),
         ({"text": "", "step": "kinetic", "scene": "simple-pendulum"}, 422, "at least 1 character"),
         ({"text": "1", "step": "kinetic", "scene": "nope"}, 404, "simple-pendulum"),
+        ({"text": "1", "step": "acceleration", "scene": "simple-pendulum", "coordinate": "x"}, 422,
+         "'x' is not a coordinate here; the coordinates are: theta"),
     ],
 )
 def test_a_bad_request_says_what_was_wrong(client, body, status, says):
@@ -116,3 +118,12 @@ def test_a_busy_server_turns_new_texts_away_as_it_does_every_job(client, service
     finally:
         for ticket in tickets:
             ticket.release()
+
+
+def test_an_acceleration_typed_with_another_left_side_names_the_boxs_own(client):
+    # student-e, 15: the preview said "q_ddot" where the box asks for θ̈
+    context = {"scene": "simple-pendulum", "step": "acceleration", "coordinate": "theta"}
+    refused = typeset(client, "R*theta_ddot = -g*sin(theta)", **context)
+    assert refused.status_code == 422
+    assert "the left of '=' must be the acceleration theta_ddot" in refused.json()["detail"], refused.text
+    assert typeset(client, "theta_ddot = -g/R*sin(theta)", **context).status_code == 200
