@@ -14,10 +14,10 @@ import re
 
 from markupsafe import Markup, escape
 
-# a one-letter stem (Latin or Greek, with a combining dot or hat) and its subscript: letters, Greek letters,
+# a one-letter stem, not the end of a longer word (step_size is no symbol; the d of dp_X/dt may precede it), Latin or Greek, with a combining dot or hat) and its subscript: letters, Greek letters,
 # digits or subscript digits (p_x₁), with its primes (U_eff'' is the second derivative)
 _SUBSCRIPTED = re.compile(
-    r"([A-Za-zΑ-Ωα-ω][\u0300-\u036f]?)_([A-Za-z0-9Α-Ωα-ω₀-₉\u0300-\u036f]+)(''|'|″|′)?"
+    r"(?<![A-Za-z0-9_Α-Ωα-ω]{2})([A-Za-zΑ-Ωα-ω][\u0300-\u036f]?)_([A-Za-z0-9Α-Ωα-ω₀-₉\u0300-\u036f]+)(''|'|″|′)?"
 )
 _PRIMES = {"''": "″", "'": "′", "″": "″", "′": "′", None: ""}
 

@@ -7,7 +7,7 @@
  *   proseHTML("U_eff (J)")                           // for Plotly's legend and axis titles, which read <sub>
  */
 
-const SUBSCRIPTED = /([A-Za-zΑ-Ωα-ω][\u0300-\u036f]?)_([A-Za-z0-9Α-Ωα-ω₀-₉\u0300-\u036f]+)(''|'|″|′)?/g;
+const SUBSCRIPTED = /(?<![A-Za-z0-9_Α-Ωα-ω]{2})([A-Za-zΑ-Ωα-ω][\u0300-\u036f]?)_([A-Za-z0-9Α-Ωα-ω₀-₉\u0300-\u036f]+)(''|'|″|′)?/g;
 const PRIMES = { "''": "″", "'": "′", "″": "″", "′": "′" };
 
 const escapeHTML = (s) => String(s).replace(/[&<>"']/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "'": "&#39;" })[c]);

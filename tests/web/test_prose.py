@@ -16,6 +16,7 @@ import pytest
 from app.web.prose import prose_html
 
 CASES = {
+    "a step_size is no symbol": "a step_size is no symbol",
     "U_eff of the remaining coordinate": "U<sub>eff</sub> of the remaining coordinate",
     "its square is U_eff''/m_eff": "its square is U<sub>eff</sub>″/m<sub>eff</sub>",
     "p_x₁ + p_x₂ is conserved": "p<sub>x₁</sub> + p<sub>x₂</sub> is conserved",
