@@ -21,8 +21,9 @@ DOUBLE_PENDULUM = Scene(
         "hangs from the first on a rod of length l₂. Both swing in one vertical plane, with θ₁ and θ₂ measured "
         "from the downward vertical. Derive the equations of motion, find the four equilibria and the normal "
         "modes about each, and follow a swing wide enough that the motion becomes chaotic. (Two starts that differ "
-        "in the last digits part about three times further each second, so beyond a few seconds the path shown "
-        "depends on those digits.)"
+        "in the last digits part about three times further each second. The run shown lasts 3 s, within its "
+        "tolerance; a longer one, set under Integration, is one of many paths close to the true one, and the "
+        "page then says by how much its error exceeds the tolerance.)"
     ),
     figure=(
         "A pivot at the top, a rod of length l₁ to the first bob at angle θ₁ from the downward vertical, a rod "
