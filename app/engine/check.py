@@ -76,7 +76,7 @@ from app.engine.dimensions import dimension, mismatch, number_beside_units
 from app.engine.mistake_answer import AnswerSlip, linearised, missing_square
 from app.engine.mistake_box import piece_box
 from app.engine.mistake_families import FollowUp, Mistake
-from app.engine.mistakes import CONSTANT_FACTOR_HINT, HALF_MOMENTUM_HINT, MISSING_FACTOR_HINT, POINTERS
+from app.engine.mistakes import CONSTANT_FACTOR_HINT, HALF_MOMENTUM_HINT, MISSING_FACTOR_HINT, POINTERS, without_springs
 from app.engine.names import unicode
 from app.engine.parse import Parsed
 from app.engine.quoted_term import as_typed
@@ -204,7 +204,14 @@ def _right(pb: Problem, answer: sp.Expr, a: Values, results: list[tuple[sp.Expr,
 
 def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
     """The verdict on one answer (as ``check_answer`` read it, or its text): ``{"verdict", "message",
-    "difference", "hint"}``."""
+    "difference", "hint"}``; a system without a spring is not told about springs."""
+    verdict = _judge(pb, text)
+    if not pb.springs and verdict.get("hint"):
+        verdict["hint"] = without_springs(verdict["hint"])
+    return verdict
+
+
+def _judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
     answer = parse_answer(pb, text)
     printer = Printer(pb.latex_names)
     a = values(answer, pb.groups)

@@ -41,6 +41,9 @@ class Problem:
     latex_names: dict[sp.Symbol, str]
     acceleration: sp.Symbol | None = None
     dimensions: dict[sp.Symbol, Dims] = field(default_factory=dict)  # what the declared units tell
+    # whether a spring can be in U: a stiffness declared (N/m), or no units declared to tell (the hints about
+    # ½ k × stretch² are given only then)
+    springs: bool = True
 
     def mistake(self, key: str) -> Mistake | None:
         return next((m for m, _, _ in self.mistakes if m.key == key), None)
@@ -165,7 +168,17 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         latex_names,
         table.qdd[k] if step == "equation" and k is not None else None,
         system_dimensions(d),
+        has_springs(d),
     )
+
+
+STIFFNESS_UNITS = ("N/m", "kg/s²", "kg/s^2", "kg s⁻²")
+
+
+def has_springs(d: Derivation) -> bool:
+    """Whether the system may hold a spring: a parameter with a stiffness's unit, or no parameter with a unit."""
+    units = [p.unit for p in d.system.parameters if p.unit]
+    return not units or any(u.replace(" ", "") in STIFFNESS_UNITS for u in units)
 
 
 def _at(r: str, position: sp.Expr) -> str:

@@ -9,8 +9,9 @@ from typing import Any
 import sympy as sp
 
 from app.engine.check import allowed_names, checkable_equilibria, conserved_momenta, exercises, problem
+from app.engine.check_problem import has_springs
 from app.engine.derive import Derivation
-from app.engine.mistakes import POINTERS
+from app.engine.mistakes import POINTERS, without_springs
 from app.engine.report import Printer, display
 
 
@@ -42,7 +43,10 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
     symbols = {
         s.name: pr.tex(s) for s in (*d.table.q, *d.table.qd, *d.table.qdd, *d.table.params, *conserved_momenta(d))
     }
-    return {"exercises": items, "symbols": {**symbols, "t": "t"}, "rules": POINTERS}
+    # the rule of each step, without its words about springs where the system has none
+    springs = has_springs(d)
+    rules = {step: text if springs else without_springs(text) for step, text in POINTERS.items()}
+    return {"exercises": items, "symbols": {**symbols, "t": "t"}, "rules": rules}
 
 
 def _title(label: str) -> str:

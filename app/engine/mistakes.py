@@ -43,6 +43,23 @@ class Rule:
     name: str = ""  # what went wrong, in a few words (the hint says why)
 
 
+# the clauses of the hints about springs, left out of a system without one (check_problem.has_springs)
+SPRING_CLAUSES = (
+    ", plus ½ k times the square of each spring's stretch",
+    " (and +½ k × stretch² for a spring)",
+    " and ½ k × stretch² for every spring",
+)
+
+
+def without_springs(text: str | None) -> str | None:
+    """A hint with its clauses about springs left out, for a system that has none."""
+    if not text:
+        return text
+    for clause in SPRING_CLAUSES:
+        text = text.replace(clause, "")
+    return text
+
+
 POINTERS = {
     "kinetic": "T adds ½ m v² over the masses, with v² the squared speed: differentiate each position along the "
     "motion (the chain rule through every coordinate, and through t if a constraint moves), then add the squares "

@@ -47,14 +47,39 @@ function verdictView(box, r) {
   if (r.status === 200) {
     const v = r.data;
     box.dataset.verdict = v.verdict;
-    box.append(el("p", {}, el("strong", { text: { correct: "Correct", equivalent: "Equivalent", incorrect: "Not yet" }[v.verdict] || v.verdict }), ` ${v.message}`));
+    // the message opens with its verdict ("Incorrect: this is not …"): that word is the badge, said once
+    const [head, rest] = splitVerdict(v.message, { correct: "Correct", equivalent: "Equivalent", incorrect: "Incorrect" }[v.verdict] || v.verdict);
+    box.append(el("p", {}, el("strong", { text: head }), rest ? `: ${rest}` : ""));
     if (v.difference) box.append(el("p", { className: "verdict-difference" }, typeset(el("span"), v.difference.latex, true)));
     if (v.hint) box.append(el("p", { className: "verdict-hint", text: v.hint }));
     return;
   }
   box.dataset.verdict = "refused";
-  const detail = r.data?.detail || `The answer could not be checked (${r.status}).`;
-  box.append(el("p", {}, el("strong", { text: r.status === 429 || r.status === 503 ? "Busy" : "Not checked" }), ` ${detail}`));
+  // a refusal names the field it concerns ("answer: …"): here there is one box, the student's own
+  const detail = (r.data?.detail || `The answer could not be checked (${r.status}).`).replace(/^answer: /, "");
+  const busy = r.status === 429 || r.status === 503;
+  box.append(el("p", {}, el("strong", { text: busy ? "Busy" : "Not checked" }), `: ${detail.charAt(0).toUpperCase()}${detail.slice(1)}`));
+}
+
+/** A verdict's message as [its opening word, the rest]: "Correct: this is T." → ["Correct", "this is T."]; a
+ *  message that opens otherwise keeps the verdict's own word. */
+function splitVerdict(message, word) {
+  const at = (message || "").indexOf(": ");
+  if (at > 0 && at < 20) return [message.slice(0, at), message.slice(at + 2)];
+  return [word, message || ""];
+}
+
+/** The names a step's answer may use, each as typed and, where it prints otherwise, as the page prints it. */
+function namesLine(practice, names) {
+  const line = el("p", { className: "practice-names help" }, "Names you may use: ");
+  names.forEach((name, i) => {
+    if (i) line.append(", ");
+    line.append(el("code", { text: name }));
+    const tex = practice?.symbols?.[name];
+    if (tex && tex !== name) line.append(" (", typeset(el("span"), tex), ")");
+  });
+  line.append(", ", el("code", { text: "pi" }), ".");
+  return line;
 }
 
 function stepView(a, item, practice, s, index) {
@@ -65,12 +90,13 @@ function stepView(a, item, practice, s, index) {
   const reveal = el("button", { type: "button", className: "join-reveal", "aria-expanded": "false", text: "Show this step" });
   const shown = el("div", { className: "practice-engine", hidden: "" });
   const box = el("div", { className: "practice-verdict", role: "status", "aria-live": "polite" });
-  const lhs = s.step === "equation" ? "0 =" : `${stepTex(practice, s.step, s.coordinate)} =`;
+  // an equation is typed whole (lhs = rhs) or as one expression equal to zero: its box is labelled by its name
+  const lhs = s.step === "equation" ? `${stepTex(practice, s.step, s.coordinate)}:` : `${stepTex(practice, s.step, s.coordinate)} =`;
   const form = el("form", { className: "practice-step", "data-step": s.step },
     el("h3", { text: exercise ? exercise.title : s.step }),
-    el("label", { for: id }, typeset(el("span", { className: "practice-lhs" }), s.step === "equation" ? "0 \\;=" : lhs)),
+    el("label", { for: id }, typeset(el("span", { className: "practice-lhs" }), lhs)),
     el("div", { className: "practice-row" }, input, button, exercise ? reveal : null),
-    exercise ? el("p", { className: "practice-names help", text: `Names: ${exercise.names.join(", ")}` }) : null,
+    exercise ? namesLine(practice, exercise.names) : null,
     box, shown);
   const key = stepId(a.n, item.scene || item.name, s.step, s.coordinate);
   const target = { ...(item.scene ? { scene: item.scene } : { system: item.name }), step: s.step, assignment: a.n,

@@ -154,11 +154,16 @@ export function bindViewLink() {
   button.addEventListener("click", async () => {
     const link = viewLink();
     status.dataset.link = link;
+    // the link at once, to select and copy by hand; then "copied" if the browser lets the page copy it (a
+    // browser that asks first, or never answers, leaves the link shown)
+    const shown = Object.assign(document.createElement("a"), { href: link, textContent: link });
+    status.replaceChildren("Link to this view: ", shown);
     try {
-      await navigator.clipboard.writeText(link);
-      status.textContent = "Link copied: it opens this view.";
-    } catch {
-      status.textContent = `Link to this view: ${link}`;
-    }
+      await Promise.race([
+        navigator.clipboard.writeText(link),
+        new Promise((_, fail) => setTimeout(() => fail(new Error("no answer")), 1500)),
+      ]);
+      status.replaceChildren("Copied to the clipboard: ", shown);
+    } catch { /* the link stays shown */ }
   });
 }

@@ -104,6 +104,12 @@ def test_a_class_live(browser, live_server, classes, artifacts):
     assert "the cross term" in mistake.inner_text() and mistake.locator(".katex").count() == 1  # T typeset
 
     assert _answer(bo, RIGHT_T) == "correct"
+    # the verdict said once ("Correct: this is …", never "Correct Correct: …"); the names as typed and as printed
+    step = bo.locator('.practice-step[data-step="kinetic"]')
+    said = step.locator(".practice-verdict p").first.inner_text()
+    assert said.startswith("Correct: this is") and "Correct Correct" not in said
+    names = step.locator(".practice-names")
+    assert names.inner_text().startswith("Names you may use: ") and names.locator(".katex").count() >= 2
     assert _answer(cy, NO_CROSS_T) == "incorrect"
     teacher.wait_for_function(
         f"document.querySelector('.dash-mistake[data-mistake=\"{CROSS}\"] .dash-count')?.textContent === '2×'",

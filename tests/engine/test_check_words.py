@@ -82,3 +82,15 @@ def test_a_wrong_follow_up_gets_a_new_and_concrete_hint():
     assert "velocity (Ẋ" not in wrong["hint"], wrong["hint"]
     right = judge_follow_up(pb, key, "X_dot")
     assert right["verdict"] == "correct"
+
+
+def test_a_hint_speaks_of_springs_only_where_a_spring_can_be():
+    from app.engine.check import judge, problem
+    from app.engine.derive import derive
+    from app.scenes import SCENES
+
+    # the sign of U reversed: the pendulum's hint says nothing of springs; the tabletop spring's problem may
+    pendulum = judge(problem(derive(SCENES["simple-pendulum"].system), "potential"), "m*g*R*cos(theta)")
+    assert pendulum["verdict"] == "incorrect" and pendulum["hint"] and "spring" not in pendulum["hint"]
+    assert problem(derive(SCENES["tabletop-spring"].system), "potential", mistakes=False).springs
+    assert not problem(derive(SCENES["pulley"].system), "potential", mistakes=False).springs
