@@ -20,6 +20,29 @@ from app.engine.parse_rules import FUNCTIONS
 _COMPARISONS = ("==", "<=", ">=", "!=")
 
 
+def _names_then_function(typed: str, names: list[str]) -> str:
+    """``typed`` as declared names followed by a function, spaced ("mgRcos" -> "m g R cos"), or "" if it is not."""
+    for function in sorted(FUNCTIONS, key=len, reverse=True):
+        if typed.endswith(function) and len(typed) > len(function):
+            split = _as_names(typed[: -len(function)], names)
+            if split:
+                return " ".join([*split, function])
+    return ""
+
+
+def _as_names(typed: str, names: list[str]) -> list[str]:
+    """``typed`` cut into declared names, the longest first at each place (``mgR`` -> m, g, R), or []."""
+    if not typed:
+        return []
+    for name in sorted(names, key=len, reverse=True):
+        if typed.startswith(name):
+            rest = typed[len(name) :]
+            tail = _as_names(rest, names)
+            if not rest or tail:
+                return [name, *tail]
+    return []
+
+
 def _placed(exc: CheckError, offset: int) -> CheckError:
     """A refusal of one side, at its columns in the whole text typed (the side's own column left unsaid)."""
     if not offset or exc.start is None:
@@ -84,6 +107,9 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
         out = f"{exc.part} is not a name in this problem; the names you may use are {allowed} and pi"
         if split:
             out += f" ({split})"
+    elif "only these functions may be called" in str(exc) and (apart := _names_then_function(exc.part, allowed_names(step, kinds))):
+        # mgRcos(theta): the names and the function typed together read as one unknown function
+        out = f"{exc.part} reads as one name: write {apart}(…), with a space or * between the names"
     elif "only these functions may be called" in str(exc):
         functions = ", ".join(sorted(f for f in FUNCTIONS if f != "Abs"))
         out = f"{exc.part} is not a function you may use here; the functions are {functions}, and Abs(x) for |x|"

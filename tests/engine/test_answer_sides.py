@@ -78,3 +78,14 @@ def test_the_readings_of_an_ambiguous_text_write_python_powers_as_a_reader_does(
     said = str(refused.value)
     assert "could be read as (1/2) m R² θ" in said or "could be read as (1/2) m R² theta" in said
     assert "**" not in said.split("could be read as")[1]
+
+
+def test_names_typed_together_with_a_function_are_told_apart():
+    from app.engine.answer_sides import read_answer
+
+    with pytest.raises(CheckError) as caught:
+        read_answer("mgRcos(theta)", "potential", None, KINDS)
+    assert "write m g R cos(…), with a space or * between the names" in str(caught.value)
+    with pytest.raises(CheckError) as caught:
+        read_answer("xcos(theta)", "potential", None, KINDS)  # x is no name here: the functions are listed
+    assert "is not a function you may use here" in str(caught.value)
