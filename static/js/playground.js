@@ -253,7 +253,7 @@ async function fillIn() {
   // a line in place of "still working on": what was left out is listed under Results, each with its reason
   const done = Object.assign(document.createElement("p"), {
     id: "derive-progress", className: "derive-progress",
-    textContent: "The whole derivation is below." + (left ? ` ${left === 1 ? "One part was" : `${left} parts were`} left out; `
+    textContent: "The rest of the derivation is below." + (left ? ` ${left === 1 ? "One part was" : `${left} parts were`} left out; `
       + "the reason for each is under Results, “Left out”." : ""),
   });
   done.setAttribute("role", "status");

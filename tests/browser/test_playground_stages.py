@@ -75,7 +75,7 @@ def test_a_triple_pendulum_shows_its_equations_before_the_rest(sized, artifacts)
     page.wait_for_selector(WHOLE)
     assert page.locator('#derived[data-stage="equations"]').count() == 0
     done = page.inner_text("#derive-progress")
-    assert done.startswith("The whole derivation is below.") and "Still working on" not in done
+    assert done.startswith("The rest of the derivation is below.") and "Still working on" not in done
     skipped = page.locator("#results .skipped li").count()
     assert skipped >= 1 and "left out" in done  # a chain's accelerations stay M⁻¹f, with a note
     page.wait_for_selector('#run-status[data-state="ready"]', state="attached")  # the simulation is wired
