@@ -158,6 +158,10 @@ def test_refusals_say_what_is_wrong(client, classes):
     assert client.post(f"/api/classes/{code}/join", json={"name": "Ada"}).status_code == 422  # the name is taken
     assert client.post("/api/classes/ACEFHK/join", json={"name": "Bo"}).status_code == 404
     assert client.post("/api/classes/not-a-code/join", json={"name": "Bo"}).status_code == 404
+    # a code with a character no code holds: the refusal names that character, the rule in words
+    r = client.post("/api/classes/K34EKZ/join", json={"name": "Bo"})
+    assert r.status_code == 404 and r.json()["detail"].startswith("“K34EKZ” is not a class code: “Z” is never in")
+    assert "without the ones easily confused (no B, D" in r.json()["detail"]
     assert check(client, code, ada, "m*g", scene="double-pendulum").status_code == 422  # not assigned
     assert check(client, code, ada, "m*g", step="potential").status_code == 422  # step not assigned
     r = client.post(f"/api/classes/{code}/check", headers=bearer(ada),

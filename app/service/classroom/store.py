@@ -111,7 +111,7 @@ def join(db: Database, code: str, name: str) -> tuple[str, Access]:
     normal = keys.normal_code(code)
     if normal is None:
         raise UnknownClass(
-            f"a class code is {keys.CODE_LENGTH} characters from {keys.ALPHABET}; check the code on the board"
+            f"“{code.strip()[:20]}” is not a class code: {keys.why_not_code(code)}; check the code on the board"
         )
     student_key = keys.new_key()
     try:
