@@ -89,6 +89,20 @@ def normal_recovery(text: str) -> str | None:
     return code
 
 
+def why_not_recovery(text: str) -> str:
+    """Why a text is not a recovery code: its length (a teacher link cut short), or a character no code holds."""
+    code = "".join(text.split()).replace("-", "").upper()
+    rule = (f"a recovery code has {RECOVERY_LENGTH} letters and digits in groups of {RECOVERY_GROUP}, "
+            f"without the ones easily confused (no {LEFT_OUT})")
+    if len(code) < RECOVERY_LENGTH:
+        return (f"this recovery code is incomplete: it has {len(code)} of its {RECOVERY_LENGTH} letters and digits "
+                f"(a teacher link cut short, as some mail programs do, misses part of it); {rule}")
+    if len(code) > RECOVERY_LENGTH:
+        return f"this recovery code has {len(code)} letters and digits, and {rule}"
+    bad = next((c for c in code if c not in ALPHABET), "?")
+    return f"“{bad}” is never in a recovery code: {rule}"
+
+
 def teacher_key_from(recovery: str, class_code: str) -> str:
     """The instructor's key of a class, from its recovery code (normalised) and its code: HMAC-SHA256."""
     mac = hmac.new(recovery.encode(), b"lagrange teacher key " + class_code.encode(), hashlib.sha256).digest()

@@ -76,6 +76,8 @@ def recover(db: Database, code: str, recovery: str) -> tuple[Access, str]:
     (a class from before recovery codes is compared against the fixed digest: no code opens it)."""
     normal = keys.normal_code(code) or ""
     typed = keys.normal_recovery(recovery)
+    if typed is None:  # its shape is public: saying what is wrong with it tells nothing of the class
+        raise WrongKey(keys.why_not_recovery(recovery))
     with db.session() as session:
         found = session.execute(
             select(ClassRow.id, ClassRow.code, ClassRow.title, ClassRow.recovery_hash).where(ClassRow.code == normal)
