@@ -526,6 +526,8 @@ async function download(path, name) {
 
 $("export-csv").addEventListener("click", () => download(`/api/classes/${current.code}/export?format=csv`, `class-${current.code}.csv`));
 $("grades-csv").addEventListener("click", () => download(`/api/classes/${current.code}/grades?format=csv`, `grades-${current.code}.csv`));
+$("grades-details-csv").addEventListener("click", () => download(`/api/classes/${current.code}/grades?format=details-csv`,
+  `grades-${current.code}-details.csv`));
 
 function forget() {
   clearTimeout(timer);

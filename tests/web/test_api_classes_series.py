@@ -104,19 +104,26 @@ def test_a_series_its_progress_and_its_grades(client, classes):
     assert {s["name"]: [(g["first_try"], g["right"], g["shown"], g["score"]) for g in s["grades"]]
             for s in book["students"]} == {
         "Ada": [(1, 2, 0, 100.0), (2, 2, 0, 100.0)],
-        "Bo": [(0, 1, 1, 0.0), (0, 0, 0, 0.0)],  # his right T came after it was shown: not his own
-        "Cy": [(0, 0, 0, 0.0), (0, 0, 0, 0.0)]}
+        "Bo": [(0, 1, 1, 0.0), (0, 0, 0, None)],  # his right T came after it was shown: not his own
+        "Cy": [(0, 0, 0, None), (0, 0, 0, None)]}  # nothing tried, nothing due yet: no score, not a zero
     sheet = client.get(f"/api/classes/{code}/grades?format=csv", headers=bearer(teacher))
     assert sheet.headers["content-type"].startswith("text/csv")
     assert 'filename="grades-' in sheet.headers["content-disposition"]
     rows = list(csv.reader(io.StringIO(sheet.text)))
     one, two = f"1. {week1['title']}", "2. Week 2"
-    assert rows[0] == ["Student", f"{one} (100 points)", f"{two} (100 points)",
-                       f"{one}: right first try", f"{one}: right", f"{one}: shown", f"{one}: steps",
-                       f"{two}: right first try", f"{two}: right", f"{two}: shown", f"{two}: steps"]
-    assert rows[1:] == [["Ada", "100.0", "100.0", "1", "2", "0", "2", "2", "2", "0", "2"],
-                        ["Bo", "0.0", "0.0", "0", "1", "1", "2", "0", "0", "0", "2"],
-                        ["Cy", "0.0", "0.0", "0", "0", "0", "2", "0", "0", "0", "2"]]
+    # the file to import: one column per assignment and nothing else; blank where there is no score yet
+    assert rows == [["Student", f"{one} (100 points)", f"{two} (100 points)"],
+                    ["Ada", "100.0", "100.0"], ["Bo", "0.0", ""], ["Cy", "", ""]]
+    details = client.get(f"/api/classes/{code}/grades?format=details-csv", headers=bearer(teacher))
+    assert 'filename="grades-' in details.headers["content-disposition"] and "-details.csv" in details.headers[
+        "content-disposition"]
+    rows = list(csv.reader(io.StringIO(details.text)))
+    assert rows[0] == ["Student", f"{one} (100 points)", f"{one}: right first try", f"{one}: right", f"{one}: shown",
+                       f"{one}: steps", f"{two} (100 points)", f"{two}: right first try", f"{two}: right",
+                       f"{two}: shown", f"{two}: steps"]
+    assert rows[1:] == [["Ada", "100.0", "1", "2", "0", "2", "100.0", "2", "2", "0", "2"],
+                        ["Bo", "0.0", "0", "1", "1", "2", "", "0", "0", "0", "2"],
+                        ["Cy", "", "0", "0", "0", "2", "", "0", "0", "0", "2"]]
 
     # deleting week 1 removes its answers; week 2 becomes number 1
     assert client.delete(f"/api/classes/{code}/assignments/1", headers=bearer(teacher)).status_code == 204
