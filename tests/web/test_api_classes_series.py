@@ -209,6 +209,20 @@ def test_a_formula_in_a_name_or_title_is_not_run_by_a_spreadsheet(client, classe
     assert rows[1][0] == "'@SUM(A1)"
 
 
+def test_the_answers_csv_keeps_the_answer_as_typed(client, classes):
+    made = created(client)
+    code, teacher = made["code"], made["teacher_key"]
+    client.post(f"/api/classes/{code}/assignments", headers=bearer(teacher),
+                json={"title": "Week 1", "items": [{"scene": SCENE, "steps": [{"step": "potential"}]}]})
+    ada = join(client, code, "-Ada")
+    assert answer(client, code, ada, "potential", RIGHT_U) in ("correct", "equivalent")
+    rows = list(csv.DictReader(io.StringIO(client.get(f"/api/classes/{code}/export?format=csv",
+                                                      headers=bearer(teacher)).text)))
+    # the answer begins with a minus and stays as typed; a name beginning like a formula gets the apostrophe
+    assert [(r["student"], r["assignment"], r["item"], r["answer"]) for r in rows] == [
+        ("'-Ada", "1. Week 1", "Simple pendulum", RIGHT_U)]
+
+
 def test_the_recovery_code_gives_the_instructors_key_back(client, classes):
     made = created(client)
     code, teacher, recovery = made["code"], made["teacher_key"], made["recovery_code"]

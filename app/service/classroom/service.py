@@ -168,7 +168,7 @@ class Classroom:
         return await self._db(self._report, code, key, reports.students)
 
     async def export(self, code: str, key: str | None) -> bytes:
-        return await self._db(self._report, code, key, lambda db, class_id, _items: reports.export_csv(db, class_id))
+        return await self._db(self._report, code, key, reports.export_csv)
 
     async def delete(self, code: str, key: str | None) -> None:
         who = await self._db(self._who, code, key, True)
