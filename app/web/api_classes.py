@@ -206,19 +206,24 @@ async def delete_assignment(classes: ClassroomDep, code: str, n: Number, key: Ke
 @router.get(
     "/{code}/grades",
     summary="The gradebook: a score per student and assignment",
-    description="JSON, or with `format=csv` one row per student and one column per assignment (its score), then "
-    "the parts (right first try, right, shown, steps) as extra columns: the shape Canvas and Moodle import.",
+    description="JSON, or with `format=csv` the file to import into an LMS: one row per student, one column per "
+    "assignment (its score out of 100, blank when the student has tried nothing of an assignment not yet due or "
+    "with no due time) and nothing else; `format=details-csv`: per assignment its score, then its parts (right "
+    "first try, right, shown, steps).  The score: the assignment's steps answered right without the answer shown "
+    "first, out of its steps.",
     response_model=Grades,
     responses={200: {"content": {"text/csv": {}}}, **_errors(401, 403, 422)},
 )
 async def class_grades(
-    classes: ClassroomDep, code: str, key: KeyDep, format: Annotated[Literal["json", "csv"], Query()] = "json"
+    classes: ClassroomDep, code: str, key: KeyDep,
+    format: Annotated[Literal["json", "csv", "details-csv"], Query()] = "json",
 ) -> Response:
     if format == "json":
         return _json(await classes.grades(code, key))
-    body = await classes.grades_csv(code, key)
+    body = await classes.grades_csv(code, key, details=format == "details-csv")
     safe = "".join(c for c in code.upper() if c.isalnum())[:12]
-    disposition = f'attachment; filename="grades-{safe}.csv"'
+    name = f"grades-{safe}{'-details' if format == 'details-csv' else ''}.csv"
+    disposition = f'attachment; filename="{name}"'
     return Response(body, media_type="text/csv; charset=utf-8", headers={**NO_STORE, "Content-Disposition": disposition})
 
 

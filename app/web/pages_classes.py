@@ -14,7 +14,7 @@ from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, RedirectResponse, Response
 
 from app.service import derivations
-from app.service.classroom.keys import CODE_LENGTH, normal_code
+from app.service.classroom.keys import normal_code, why_not_code
 from app.viz.qr import qr_svg
 from app.web.api_classes import router as api_router
 from app.web.deps import ClientDep
@@ -45,7 +45,7 @@ def _code_or_404(request: Request, code: str) -> str | HTMLResponse:
     if normal is not None:
         return normal
     return templates.TemplateResponse(
-        request, "404.html", {"missing": code[:40], "class_link": {"length": CODE_LENGTH}}, status_code=404
+        request, "404.html", {"missing": code[:40], "class_link": {"why": why_not_code(code)}}, status_code=404
     )
 
 

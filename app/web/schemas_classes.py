@@ -154,7 +154,8 @@ class Grade(BaseModel):
     first_try: int = Field(description="Steps whose first answer was right (and not shown before).")
     right: int = Field(description="Steps answered right, at any try.")
     shown: int = Field(description="Steps whose answer the student was shown (Show this step).")
-    score: float = Field(description="Steps right on their own (not shown before), out of `points` for all steps.")
+    score: float | None = Field(description="Steps right on their own (not shown before), out of `points` for all "
+                                "steps; null when nothing of it was tried and it is not yet due (or has no due time).")
 
 
 class StudentGrades(BaseModel):

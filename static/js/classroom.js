@@ -43,7 +43,8 @@ export function el(tag, attributes = {}, ...children) {
 /** The practice document of a scene (GET) or of an assigned system (POST /api/practice), cached per page. */
 const practices = new Map();
 export async function practiceOf(item) {
-  const id = item.scene ? `scene:${item.scene}` : `system:${item.name}`;
+  // a typed system is known by what it says, not its name: a corrected system is derived afresh
+  const id = item.scene ? `scene:${item.scene}` : `system:${JSON.stringify(item.system)}`;
   if (!practices.has(id)) {
     const load = item.scene
       ? api("GET", `/api/scenes/${encodeURIComponent(item.scene)}/practice`)
@@ -51,7 +52,8 @@ export async function practiceOf(item) {
     practices.set(id, load.then((r) => {
       if (r.status !== 200) {
         practices.delete(id);
-        throw new Error((r.data && r.data.detail) || `the steps could not be loaded (${r.status})`);
+        // the refusal kept whole, for a page that says it at the field it concerns
+        throw Object.assign(new Error((r.data && r.data.detail) || `the steps could not be loaded (${r.status})`), { response: r });
       }
       return r.data;
     }));
@@ -70,7 +72,7 @@ export function stepTex(practice, step, coordinate) {
   const e = practice && exerciseOf(practice, step, coordinate);
   if (step === "equation") {
     const q = coordinate && practice ? practice.symbols[coordinate] || coordinate : "";
-    return `\\text{equation of motion}${q ? `\\ (${q})` : ""}`;
+    return q ? `\\text{equation of motion for }${q}` : "\\text{equation of motion}";
   }
   if (step === "omega_squared") return "\\omega^2";
   return e ? e.lhs : `\\text{${step}}`;

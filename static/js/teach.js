@@ -23,6 +23,48 @@ let timer = null;
 let assignment = []; // every item of the series (for the labels of typed systems)
 let series = [];
 
+// ---- refusals: what the API refused, in a teacher's words, at the field it concerns ------------------
+
+const NO_KEY = "Type the recovery code or the instructor key you were given when you made the class; "
+  + "a teacher link cut short (as some mail programs do) misses part of it.";
+const NOTHING_SET = "Tick at least one scene or add a typed system.";
+/** The parts of a typed system (the playground's JSON), as the page names them. */
+const SYSTEM_PARTS = {
+  coordinates: "The coordinates", parameters: "The parameters", lagrangian: "The Lagrangian L",
+  kinetic: "The kinetic energy T", potential: "The potential U", particles: "The particles",
+  forces: "The generalized forces", nonnegative: "The names that are never negative",
+};
+const capital = (text) => text.charAt(0).toUpperCase() + text.slice(1);
+
+/**
+ * The one place that maps an API refusal to words and a place: {at: the id of the status line, text}.
+ * The API locates a refusal by a path (loc: items.0.system.potential) and puts it before its message;
+ * the page says instead which box it concerns, at that box.
+ */
+function refusal(r, at) {
+  const data = r && typeof r.data === "object" && r.data ? r.data : {};
+  const loc = (data.loc || data.errors?.[0]?.loc || []).map(String).filter((p) => p !== "body");
+  // the message without the path before it ("items.0.system.potential: the '(' …" → "the '(' …")
+  const said = String(data.detail || "").replace(/^[A-Za-z_][\w.]*: /, "");
+  if (r.status === 401) return { at: "start-status", text: NO_KEY };
+  const system = loc.indexOf("system");
+  if (system >= 0) {
+    const part = loc[system + 1];
+    const what = part ? SYSTEM_PARTS[part] || `The system's “${part}”` : "The system";
+    return { at: "assign-system-status", text: `${what}: ${said}` };
+  }
+  if (loc[0] === "items" && loc.length === 1 && data.errors) return { at: "assign-status", text: NOTHING_SET };
+  if (loc[0] === "items" && loc[2] === "name") return { at: "assign-system-status", text: "Name the system: students see it by its name." };
+  if (loc[0] === "title") return { at: "assign-status", text: "Give the assignment a title (200 characters at most)." };
+  return { at, text: said ? `${capital(said)}.`.replace(/([.!?])\.$/, "$1") : `Refused (${r.status}).` };
+}
+
+/** Say a refusal at its field, or on the status line `at` when it concerns none. */
+function refuse(r, at) {
+  const found = refusal(r, at);
+  $(found.at).textContent = found.text;
+}
+
 function show() {
   showPanes("class-start", "class-live", current && {
     "class-title": current.title,
@@ -49,7 +91,8 @@ async function open(code, key) {
     return "unreachable";
   }
   if (r.status !== 200 || r.data.role !== "instructor") {
-    $("start-status").textContent = r.status === 200 ? "That is a student's key, not the instructor's." : (r.data?.detail || `Not opened (${r.status}).`);
+    if (r.status === 200) $("start-status").textContent = "That is a student's key, not the instructor's.";
+    else refuse(r, "start-status");
     return r.status === 403 || r.status === 200 ? "refused" : "error";
   }
   current = { code: r.data.code, key, title: r.data.title };
@@ -72,7 +115,7 @@ $("create-form").addEventListener("submit", async (event) => {
   const title = $("create-title").value.trim();
   const r = await api("POST", "/api/classes", { body: { title } });
   if (r.status !== 201) {
-    $("start-status").textContent = r.data?.detail || `The class was not created (${r.status}).`;
+    refuse(r, "start-status");
     return;
   }
   await open(r.data.code, r.data.teacher_key);
@@ -98,7 +141,7 @@ async function recover(code, recovery) {
     return;
   }
   if (r.status !== 200) {
-    $("start-status").textContent = r.data?.detail || `Not opened (${r.status}).`;
+    refuse(r, "start-status");
     return;
   }
   await open(r.data.code, r.data.teacher_key);
@@ -107,8 +150,11 @@ async function recover(code, recovery) {
 $("open-form").addEventListener("submit", async (event) => {
   event.preventDefault();
   const recovery = $("open-recovery").value.trim();
-  if (recovery) await recover($("open-code").value.trim(), recovery);
-  else await open($("open-code").value, $("open-key").value.trim());
+  const key = $("open-key").value.trim();
+  // nothing to open it with: said here, before asking the server
+  if (!recovery && !key) $("start-status").textContent = NO_KEY;
+  else if (recovery) await recover($("open-code").value.trim(), recovery);
+  else await open($("open-code").value, key);
 });
 
 // ---- the live dashboard --------------------------------------------------------------------------
@@ -178,10 +224,27 @@ async function drawNow(summary) {
   }
 }
 
+const plural = (n, one, many = `${one}s`) => `${n} ${n === 1 ? one : many}`;
+let everyStep = false; // "Show every step" pressed: the steps nobody has answered are listed too
+
+/** A step's figures, each count in one unit: students for done and stuck, answers for right and wrong. */
+function stepNumbers(entry, students) {
+  return `${entry.students_done} of ${plural(students, "student")} done, ${entry.stuck} stuck; `
+    + `${plural(entry.correct, "right answer")}, ${entry.incorrect} wrong`;
+}
+
 async function drawSteps(summary) {
   const list = $("dash-steps");
   const rows = [];
+  // a step with no answer yet says nothing about the class: listed only on "Show every step"
+  const idle = (entry) => !entry.correct && !entry.incorrect && !entry.students_done && !entry.stuck;
+  const quiet = summary.steps.filter(idle).length;
+  const toggle = $("dash-steps-all");
+  toggle.hidden = !quiet;
+  toggle.textContent = everyStep ? "Show only the steps answered" : `Show every step (${plural(quiet, "more")} not answered yet)`;
+  toggle.setAttribute("aria-expanded", String(everyStep));
   for (const entry of byStuck(summary.steps)) {
+    if (idle(entry) && !everyStep) continue;
     const label = await labelOf(entry);
     const total = entry.correct + entry.incorrect;
     const bar = el("div", { className: "dash-bar", role: "img",
@@ -196,13 +259,18 @@ async function drawSteps(summary) {
       el("div", { className: "dash-label" }, typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` })),
       bar,
       el("p", { className: "dash-numbers",
-        text: `${entry.stuck} stuck · ${entry.students_done} of ${summary.students} done · ${entry.correct} right · ${entry.incorrect} wrong`
-          + (mistakes.length ? ` · most often: ${entry.mistake_names?.[mistakes[0][0]] || mistakeWords(mistakes[0][0])}` : "") }),
+        text: stepNumbers(entry, summary.students)
+          + (mistakes.length ? `; most often: ${entry.mistake_names?.[mistakes[0][0]] || mistakeWords(mistakes[0][0])}` : "") }),
       whoList(entry.students_stuck, "Show the students stuck", `step|${entry.assignment}|${entry.scene || entry.system}|${entry.step}|${entry.coordinate || ""}`)));
   }
   list.replaceChildren(...rows);
-  if (!rows.length) list.replaceChildren(el("li", { className: "help", text: "No steps yet: set an assignment, or wait for the first answer." }));
+  if (!rows.length) list.replaceChildren(el("li", { className: "help", text: quiet ? "No answer yet." : "No steps yet: set an assignment, or wait for the first answer." }));
 }
+
+$("dash-steps-all").addEventListener("click", () => {
+  everyStep = !everyStep;
+  poll();
+});
 
 async function drawMistakes(summary) {
   const rows = [];
@@ -234,16 +302,26 @@ function drawAssignments(summary) {
     el("td", { className: "dash-stuck", text: a.students_stuck.length ? a.students_stuck.join(", ") : "—" }))));
 }
 
-function drawStudents(students) {
-  const body = $("dash-students").tBodies[0];
-  body.replaceChildren(...students.map((s) => {
+async function drawStudents(students) {
+  const rows = [];
+  for (const s of students) {
     const last = [...s.steps].sort((a, b) => (a.last < b.last ? 1 : -1))[0];
-    return el("tr", {},
+    const cell = el("td", { className: "dash-last" });
+    if (last) {
+      // the step by its name as the page prints it (T, equation of motion for θ), then done or not yet
+      const entry = { ...(titleOf[last.item] ? { scene: last.item } : { system: last.item }), step: last.step,
+        coordinate: last.coordinate, assignment: last.assignment };
+      const label = await labelOf(entry);
+      cell.append(typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` }),
+        el("span", { text: last.done ? " ✓ done" : " · not yet right" }));
+    } else cell.textContent = "—";
+    rows.push(el("tr", {},
       el("th", { scope: "row", text: s.name }),
       el("td", { text: s.assigned ? `${s.done} of ${s.assigned}` : String(s.done) }),
       el("td", { text: String(s.attempts) }),
-      el("td", { text: last ? `${last.step}${last.coordinate ? ` (${last.coordinate})` : ""} ${last.done ? "✓" : "…"}` : "—" }));
-  }));
+      cell));
+  }
+  $("dash-students").tBodies[0].replaceChildren(...rows);
 }
 
 async function poll() {
@@ -262,10 +340,10 @@ async function poll() {
       const s = summary.data;
       $("dash-counts").textContent = `${s.students} student${s.students === 1 ? "" : "s"} · ${s.attempts} answer${s.attempts === 1 ? "" : "s"} · updated ${new Date().toLocaleTimeString()}`;
       await drawNow(s);
+      drawAssignments(s);
       await drawSteps(s);
       await drawMistakes(s);
-      drawAssignments(s);
-      drawStudents(students.data.students);
+      await drawStudents(students.data.students);
     }
   } catch {
     $("dash-counts").textContent = "The server cannot be reached; retrying…";
@@ -300,21 +378,38 @@ function buildEditor() {
   }));
 }
 
-/** The series: one line per assignment (its number, title, due time, items), each with a Delete button. */
+/** An item of an assignment as the list shows it: its scene or system, then its steps as the page prints them. */
+function itemLine(item) {
+  const where = item.scene ? titleOf[item.scene] || item.scene : item.name;
+  const steps = el("span", { className: "assign-item-steps", text: item.steps.length ? "…" : "every step" });
+  if (item.steps.length) {
+    practiceOf(item.scene ? { scene: item.scene } : item).catch(() => null).then((practice) => {
+      steps.replaceChildren(...item.steps.flatMap((s, k) => [k ? ", " : "",
+        typeset(el("span"), stepTex(practice, s.step, s.coordinate))]));
+    });
+  }
+  return el("li", {}, el("span", { text: `${where}: ` }), steps);
+}
+
+/** The series: one entry per assignment (its title, due time if any, items with their steps), each deletable. */
 function drawSeries() {
   $("assign-series").replaceChildren(...series.map((a) => {
-    const remove = el("button", { type: "button", className: "danger", text: "Delete", "data-delete": a.n });
+    // "Delete…": the ellipsis says a question comes before anything is deleted
+    const remove = el("button", { type: "button", className: "danger", text: "Delete…", "data-delete": a.n,
+      "aria-label": `Delete assignment ${a.n}, ${a.title} (asks first)` });
     remove.addEventListener("click", async () => {
       if (!window.confirm(`Delete assignment ${a.n}, "${a.title}", and every answer recorded for it?`)) return;
       const r = await api("DELETE", `/api/classes/${current.code}/assignments/${a.n}`, { key: current.key });
-      $("assign-status").textContent = r.status === 204 ? `Deleted: ${a.title}.` : r.data?.detail || `Not deleted (${r.status}).`;
+      if (r.status === 204) $("assign-status").textContent = `Deleted: ${a.title}.`;
+      else refuse(r, "assign-status");
       await reloadSeries();
     });
-    const items = a.items.map((i) => (i.scene ? titleOf[i.scene] || i.scene : i.name)).join(", ");
     return el("li", { className: "assign-entry", "data-assignment": a.n },
-      el("strong", { text: a.title }), ` · due ${when(a.due)} · ${items} `, remove);
+      el("strong", { text: a.title }), a.due ? ` · due ${when(a.due)} ` : " · no due date ", remove,
+      el("ul", { className: "assign-items" }, ...a.items.map(itemLine)));
   }));
-  if (!series.length) $("assign-series").replaceChildren(el("li", { className: "help", text: "No assignment yet: students may practise any scene." }));
+  // the empty state is a sentence beside the list, not its first item
+  $("assign-none").hidden = series.length > 0;
 }
 
 async function reloadSeries() {
@@ -330,25 +425,45 @@ function typedSystem() {
   return { name: $("assign-system-name").value.trim(), system: JSON.parse(text) };
 }
 
-$("assign-system-load").addEventListener("click", async () => {
-  let item;
+/** The typed system read from its box, or null with the reason said at the box (not JSON, or empty). */
+function readSystem() {
   try {
-    item = typedSystem();
+    return typedSystem();
   } catch (error) {
-    $("assign-status").textContent = `The system is not JSON: ${error.message}`;
+    $("assign-system-status").textContent = `The system is not JSON: ${error.message}`;
+    return null;
+  }
+}
+
+/** The typed system's steps (POST /api/practice), or null with the refusal said at the system's box. */
+async function systemPractice(item) {
+  try {
+    return await practiceOf(item);
+  } catch (error) {
+    if (error.response) refuse(error.response, "assign-system-status");
+    else $("assign-system-status").textContent = "The server cannot be reached.";
+    return null;
+  }
+}
+
+$("assign-system-load").addEventListener("click", async () => {
+  // a fresh try: the last refusal and steps go (they were for the system as it was)
+  $("assign-system-steps").replaceChildren();
+  $("assign-system-status").textContent = "";
+  const item = readSystem();
+  if (!item) {
+    if (!$("assign-system").value.trim()) $("assign-system-status").textContent = "Type the system first.";
     return;
   }
-  if (!item) return;
-  try {
-    const practice = await practiceOf(item);
-    $("assign-system-steps").replaceChildren(...practice.exercises.map((e, k) => {
-      const id = `assign-system-${k}`;
-      const tick = el("input", { type: "checkbox", id, "data-step": e.step, "data-coordinate": e.coordinate || "" });
-      return el("li", {}, tick, typeset(el("label", { for: id }), stepTex(practice, e.step, e.coordinate)));
-    }));
-  } catch (error) {
-    $("assign-status").textContent = error.message;
-  }
+  $("assign-system-status").textContent = "Finding its steps…";
+  const practice = await systemPractice(item);
+  if (!practice) return;
+  $("assign-system-status").textContent = "";
+  $("assign-system-steps").replaceChildren(...practice.exercises.map((e, k) => {
+    const id = `assign-system-${k}`;
+    const tick = el("input", { type: "checkbox", id, "data-step": e.step, "data-coordinate": e.coordinate || "" });
+    return el("li", {}, tick, typeset(el("label", { for: id }), stepTex(practice, e.step, e.coordinate)));
+  }));
 });
 
 const ticked = (list) => [...list.querySelectorAll("input:checked")].map((t) => ({
@@ -359,19 +474,29 @@ $("assign-save").addEventListener("click", async () => {
   for (const box of document.querySelectorAll("#assign-scenes > li > input[data-scene]")) {
     if (box.checked) items.push({ scene: box.dataset.scene, steps: ticked(box.parentElement.querySelector(".assign-steps")) });
   }
-  let typed = null;
-  try {
-    typed = typedSystem();
-  } catch (error) {
-    $("assign-status").textContent = `The system is not JSON: ${error.message}`;
+  $("assign-status").textContent = "";
+  $("assign-system-status").textContent = "";
+  const typed = readSystem();
+  if (!typed && $("assign-system").value.trim()) return; // not JSON: said at the system's box
+  if (typed) {
+    // none ticked: every step, as for a scene (its steps loaded if "Show its steps" was not pressed)
+    let steps = ticked($("assign-system-steps"));
+    if (!steps.length) {
+      const practice = await systemPractice(typed);
+      if (!practice) return;
+      steps = practice.exercises.map((e) => ({ step: e.step, ...(e.coordinate ? { coordinate: e.coordinate } : {}) }));
+    }
+    items.push({ ...typed, steps });
+  }
+  if (!items.length) {
+    $("assign-status").textContent = NOTHING_SET;
     return;
   }
-  if (typed) items.push({ ...typed, steps: ticked($("assign-system-steps")) });
   const due = $("assign-due").value ? new Date($("assign-due").value).toISOString() : null;
   const title = $("assign-title-input").value.trim() || `Assignment ${series.length + 1}`;
   const r = await api("POST", `/api/classes/${current.code}/assignments`, { key: current.key, body: { title, due, items } });
   if (r.status !== 201) {
-    $("assign-status").textContent = r.data?.detail || `Not added (${r.status}).`;
+    refuse(r, "assign-status");
     return;
   }
   $("assign-title-input").value = "";
@@ -379,6 +504,7 @@ $("assign-save").addEventListener("click", async () => {
   $("assign-system").value = "";
   $("assign-system-name").value = "";
   $("assign-system-steps").replaceChildren();
+  $("assign-system-status").textContent = "";
   buildEditor();
   await reloadSeries();
   $("assign-status").textContent = `Added: ${r.data.n}. ${r.data.title}.`;
@@ -400,6 +526,8 @@ async function download(path, name) {
 
 $("export-csv").addEventListener("click", () => download(`/api/classes/${current.code}/export?format=csv`, `class-${current.code}.csv`));
 $("grades-csv").addEventListener("click", () => download(`/api/classes/${current.code}/grades?format=csv`, `grades-${current.code}.csv`));
+$("grades-details-csv").addEventListener("click", () => download(`/api/classes/${current.code}/grades?format=details-csv`,
+  `grades-${current.code}-details.csv`));
 
 function forget() {
   clearTimeout(timer);
@@ -413,7 +541,7 @@ $("delete-class").addEventListener("click", async () => {
   if (!window.confirm(`Delete the class ${current.code} and every answer recorded for it? This cannot be undone.`)) return;
   const r = await api("DELETE", `/api/classes/${current.code}`, { key: current.key });
   if (r.status === 204) forget();
-  else $("data-status").textContent = r.data?.detail || `Not deleted (${r.status}).`;
+  else refuse(r, "data-status");
 });
 
 // ---- projector mode: large type, only what the class should see -----------------------------------
@@ -434,6 +562,12 @@ const fragment = new URLSearchParams(window.location.hash.slice(1));
 if (fragment.get("class") && fragment.get("recover")) {
   window.history.replaceState(null, "", window.location.pathname + window.location.search);
   recover(fragment.get("class"), fragment.get("recover"));
+} else if (fragment.get("class") && !current) {
+  // a teacher link cut before its recovery code
+  window.history.replaceState(null, "", window.location.pathname + window.location.search);
+  $("open-code").value = fragment.get("class");
+  $("open-code").closest("details").open = true;
+  $("start-status").textContent = `This teacher link is incomplete: it has no recovery code. ${NO_KEY}`;
 } else if (current) {
   // a class this browser kept: reopened, and forgotten only when the server says the key no longer opens it
   open(current.code, current.key).then((how) => how === "refused" && forget());

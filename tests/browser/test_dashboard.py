@@ -115,7 +115,7 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
 
     # the steps, most stuck first; mistake names keep their case
     labels = page.locator(".dash-step .dash-numbers").all_inner_texts()
-    assert [t.split(" stuck")[0] for t in labels] == ["4", "2", "2"]
+    assert [t.split(" stuck")[0].split(", ")[-1] for t in labels] == ["4", "2", "2"]
     assert page.locator(".dash-mistake").first.locator("strong").inner_text() == "The sign of U"
 
     # live: an answer recorded now shows without a reload (Ada gets U right: 3 stuck)

@@ -88,8 +88,13 @@ def test_a_class_from_creation_to_deletion(client, classes):
     export = client.get(f"/api/classes/{code}/export?format=csv", headers=bearer(teacher))
     assert export.headers["content-type"].startswith("text/csv") and export.headers["cache-control"] == "no-store"
     table = list(csv.DictReader(io.StringIO(export.text)))
-    assert [(r["student"], r["verdict"], r["mistake"], r["answer"]) for r in table] == [
-        ("Ada", "incorrect", "missing_half", WRONG_T), ("Ada", "correct", "", RIGHT_T), ("Bo", "incorrect", "missing_half", WRONG_T)]
+    # the mistake in the tutor's words (as the student read them), the scene by its title, the assignment named
+    words = summary["steps"][0]["mistake_names"]["missing_half"]
+    assert words and "_" not in words
+    assert [(r["student"], r["assignment"], r["item"], r["verdict"], r["mistake"], r["answer"]) for r in table] == [
+        ("Ada", "1. Assignment 1", "Simple pendulum", "incorrect", words, WRONG_T),
+        ("Ada", "1. Assignment 1", "Simple pendulum", "correct", "", RIGHT_T),
+        ("Bo", "1. Assignment 1", "Simple pendulum", "incorrect", words, WRONG_T)]
 
     assert client.delete(f"/api/classes/{code}", headers=bearer(teacher)).status_code == 204
     assert client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).status_code == 403
@@ -158,6 +163,10 @@ def test_refusals_say_what_is_wrong(client, classes):
     assert client.post(f"/api/classes/{code}/join", json={"name": "Ada"}).status_code == 422  # the name is taken
     assert client.post("/api/classes/ACEFHK/join", json={"name": "Bo"}).status_code == 404
     assert client.post("/api/classes/not-a-code/join", json={"name": "Bo"}).status_code == 404
+    # a code with a character no code holds: the refusal names that character, the rule in words
+    r = client.post("/api/classes/K34EKZ/join", json={"name": "Bo"})
+    assert r.status_code == 404 and r.json()["detail"].startswith("“K34EKZ” is not a class code: “Z” is never in")
+    assert "without the ones easily confused (no B, D" in r.json()["detail"]
     assert check(client, code, ada, "m*g", scene="double-pendulum").status_code == 422  # not assigned
     assert check(client, code, ada, "m*g", step="potential").status_code == 422  # step not assigned
     r = client.post(f"/api/classes/{code}/check", headers=bearer(ada),

@@ -104,19 +104,26 @@ def test_a_series_its_progress_and_its_grades(client, classes):
     assert {s["name"]: [(g["first_try"], g["right"], g["shown"], g["score"]) for g in s["grades"]]
             for s in book["students"]} == {
         "Ada": [(1, 2, 0, 100.0), (2, 2, 0, 100.0)],
-        "Bo": [(0, 1, 1, 0.0), (0, 0, 0, 0.0)],  # his right T came after it was shown: not his own
-        "Cy": [(0, 0, 0, 0.0), (0, 0, 0, 0.0)]}
+        "Bo": [(0, 1, 1, 0.0), (0, 0, 0, None)],  # his right T came after it was shown: not his own
+        "Cy": [(0, 0, 0, None), (0, 0, 0, None)]}  # nothing tried, nothing due yet: no score, not a zero
     sheet = client.get(f"/api/classes/{code}/grades?format=csv", headers=bearer(teacher))
     assert sheet.headers["content-type"].startswith("text/csv")
     assert 'filename="grades-' in sheet.headers["content-disposition"]
     rows = list(csv.reader(io.StringIO(sheet.text)))
     one, two = f"1. {week1['title']}", "2. Week 2"
-    assert rows[0] == ["Student", f"{one} (100 points)", f"{two} (100 points)",
-                       f"{one}: right first try", f"{one}: right", f"{one}: shown", f"{one}: steps",
-                       f"{two}: right first try", f"{two}: right", f"{two}: shown", f"{two}: steps"]
-    assert rows[1:] == [["Ada", "100.0", "100.0", "1", "2", "0", "2", "2", "2", "0", "2"],
-                        ["Bo", "0.0", "0.0", "0", "1", "1", "2", "0", "0", "0", "2"],
-                        ["Cy", "0.0", "0.0", "0", "0", "0", "2", "0", "0", "0", "2"]]
+    # the file to import: one column per assignment and nothing else; blank where there is no score yet
+    assert rows == [["Student", f"{one} (100 points)", f"{two} (100 points)"],
+                    ["Ada", "100.0", "100.0"], ["Bo", "0.0", ""], ["Cy", "", ""]]
+    details = client.get(f"/api/classes/{code}/grades?format=details-csv", headers=bearer(teacher))
+    assert 'filename="grades-' in details.headers["content-disposition"] and "-details.csv" in details.headers[
+        "content-disposition"]
+    rows = list(csv.reader(io.StringIO(details.text)))
+    assert rows[0] == ["Student", f"{one} (100 points)", f"{one}: right first try", f"{one}: right", f"{one}: shown",
+                       f"{one}: steps", f"{two} (100 points)", f"{two}: right first try", f"{two}: right",
+                       f"{two}: shown", f"{two}: steps"]
+    assert rows[1:] == [["Ada", "100.0", "1", "2", "0", "2", "100.0", "2", "2", "0", "2"],
+                        ["Bo", "0.0", "0", "1", "1", "2", "", "0", "0", "0", "2"],
+                        ["Cy", "", "0", "0", "0", "2", "", "0", "0", "0", "2"]]
 
     # deleting week 1 removes its answers; week 2 becomes number 1
     assert client.delete(f"/api/classes/{code}/assignments/1", headers=bearer(teacher)).status_code == 204
@@ -202,6 +209,20 @@ def test_a_formula_in_a_name_or_title_is_not_run_by_a_spreadsheet(client, classe
     assert rows[1][0] == "'@SUM(A1)"
 
 
+def test_the_answers_csv_keeps_the_answer_as_typed(client, classes):
+    made = created(client)
+    code, teacher = made["code"], made["teacher_key"]
+    client.post(f"/api/classes/{code}/assignments", headers=bearer(teacher),
+                json={"title": "Week 1", "items": [{"scene": SCENE, "steps": [{"step": "potential"}]}]})
+    ada = join(client, code, "-Ada")
+    assert answer(client, code, ada, "potential", RIGHT_U) in ("correct", "equivalent")
+    rows = list(csv.DictReader(io.StringIO(client.get(f"/api/classes/{code}/export?format=csv",
+                                                      headers=bearer(teacher)).text)))
+    # the answer begins with a minus and stays as typed; a name beginning like a formula gets the apostrophe
+    assert [(r["student"], r["assignment"], r["item"], r["answer"]) for r in rows] == [
+        ("'-Ada", "1. Week 1", "Simple pendulum", RIGHT_U)]
+
+
 def test_the_recovery_code_gives_the_instructors_key_back(client, classes):
     made = created(client)
     code, teacher, recovery = made["code"], made["teacher_key"], made["recovery_code"]
@@ -219,6 +240,10 @@ def test_the_recovery_code_gives_the_instructors_key_back(client, classes):
     unknown = client.post("/api/classes/ACEFHK/recover", json={"recovery_code": recovery})
     assert wrong.status_code == unknown.status_code == 403 and wrong.json() == unknown.json()
     assert client.post(url, json={"recovery_code": "not a code"}).status_code == 403
+    # a teacher link cut short (as mail programs do): the refusal says it is incomplete, and what a code is
+    cut = client.post(url, json={"recovery_code": recovery[:4]})
+    assert cut.status_code == 403
+    assert cut.json()["detail"].startswith("this recovery code is incomplete: it has 4 of its 24 letters and digits")
     other = created(client, "another")  # one class's recovery code opens no other class
     assert client.post(f"/api/classes/{other['code']}/recover", json={"recovery_code": recovery}).status_code == 403
 

@@ -25,7 +25,16 @@ def test_a_short_link_that_is_no_code_says_what_a_code_is(client):
     for bad in ("nope", "ABC12", "A" * 300):
         r = client.get(f"/j/{bad}")
         assert r.status_code == 404 and "is not a class code" in r.text and "6 letters and digits" in r.text
+        assert f"It has {len(bad)} characters" in r.text
         assert client.get(f"/j/{bad}/qr.svg").status_code == 404
+
+
+def test_a_short_link_with_a_character_no_code_holds_names_it(client):
+    # six letters and digits, but Z is never in a code (easily confused with 2)
+    r = client.get("/j/K34EKZ")
+    assert r.status_code == 404
+    assert "“Z” is never in a class code" in r.text
+    assert "without the ones easily confused (no B, D, G, I, J, L, O, Q, S, U, V, Z, 0, 1, 2, 5, 6, 8)" in r.text
 
 
 def test_the_qr_code_is_the_short_link_on_this_server(client):

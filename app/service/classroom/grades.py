@@ -8,7 +8,12 @@ For each assigned step a student has
 
 The score of an assignment is the share of its steps the student got right on their own, that is right and not
 shown before their first right answer, in points out of 100 (one decimal).  The parts are given beside it, as
-counts out of the assignment's steps, so a teacher can weigh them otherwise.
+counts out of the assignment's steps, so a teacher can weigh them otherwise.  A student who has neither answered
+nor been shown a step of an assignment that is not yet due (or has no due time) has no score (blank, not 0):
+a grade imported before the due time posts no zero; once it is due, no answer scores 0.
+
+Two CSV files: the one to import into an LMS's gradebook (one row per student, one column per assignment: its
+score, nothing else), and the detailed one (per assignment its score and its parts).
 
 Read in **one SELECT** (the answers grouped per student and step, beside the steps shown, in a UNION ALL), so the
 grades come from one state of the database, as the summary's figures do.
@@ -19,6 +24,7 @@ from __future__ import annotations
 import csv
 import io
 from collections import defaultdict
+from datetime import UTC, datetime
 from typing import Any
 
 from sqlalchemy import case, func, literal, null, select, union_all
@@ -71,6 +77,7 @@ def gradebook(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict
             shown_at[key] = at
         else:
             first[key] = (first_id, right_id, at)
+    now = datetime.now(UTC).replace(tzinfo=None)  # due times are stored naive, in UTC
     heads = [{"n": a["n"], "title": a["title"], "due": a["due"], "steps": len(assigned_keys([a]))} for a in series]
     rows = []
     for student, (name, _joined) in sorted(people.items(), key=lambda p: (p[1][1], p[0])):
@@ -80,17 +87,27 @@ def gradebook(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict
             for step in assigned_keys([each]):
                 first_id, right_id, right_at = first.get((student, step), (None, None, None))
                 seen = shown_at.get((student, step))
+                count["tried"] += first_id is not None or seen is not None
                 count["right"] += right_id is not None
                 count["shown"] += seen is not None
                 # on their own: right, and the step not shown before the first right answer
                 own = right_id is not None and (seen is None or seen > right_at)
                 count["own"] += own
                 count["first_try"] += own and first_id == right_id
-            score = round(POINTS * count["own"] / head["steps"], 1) if head["steps"] else 0.0
+            score: float | None = round(POINTS * count["own"] / head["steps"], 1) if head["steps"] else 0.0
+            # nothing tried before it is due (or when it has no due time): no score yet, not a zero
+            if not count["tried"] and (each["due"] is None or _naive(each["due"]) > now):
+                score = None
             grades.append({"assignment": head["n"], "steps": head["steps"], "first_try": count["first_try"],
                            "right": count["right"], "shown": count["shown"], "score": score})
         rows.append({"name": name, "grades": grades})
     return {"points": POINTS, "assignments": heads, "students": rows}
+
+
+def _naive(when: Any) -> datetime:
+    """A due time as a naive UTC datetime (stored naive; ISO text read back from a snapshot)."""
+    found = datetime.fromisoformat(when.rstrip("Z")) if isinstance(when, str) else when
+    return found.astimezone(UTC).replace(tzinfo=None) if found.tzinfo else found
 
 
 def _cell(value: Any) -> str:
@@ -99,18 +116,28 @@ def _cell(value: Any) -> str:
     return "'" + text if text.startswith(FORMULA_START) else text
 
 
-def gradebook_csv(book: dict[str, Any]) -> bytes:
-    """One row per student, one column per assignment (its score out of ``POINTS``), then its parts as extra
-    columns: the shape Canvas's and Moodle's grade imports read (the pseudonym is the student's column; the
-    assignment columns are the grade items)."""
-    titles = [f"{a['n']}. {a['title']}" for a in book["assignments"]]
-    header = ["Student", *(f"{t} ({book['points']} points)" for t in titles)]
-    header += [f"{t}: {words}" for t in titles for _part, words in PARTS]
+def _sheet(header: list[str], rows: list[list[Any]]) -> bytes:
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\r\n")
     writer.writerow([_cell(h) for h in header])
-    for student in book["students"]:
-        scores = [g["score"] for g in student["grades"]]
-        parts = [g[part] for g in student["grades"] for part, _words in PARTS]
-        writer.writerow([_cell(student["name"]), *scores, *parts])
+    writer.writerows([_cell(value) for value in row] for row in rows)
     return out.getvalue().encode("utf-8")
+
+
+def gradebook_csv(book: dict[str, Any]) -> bytes:
+    """The file to import: one row per student, one column per assignment (its score out of ``POINTS``, blank
+    when there is none yet) and nothing else, so an LMS's import makes one grade item per assignment."""
+    titles = [f"{a['n']}. {a['title']}" for a in book["assignments"]]
+    header = ["Student", *(f"{t} ({book['points']} points)" for t in titles)]
+    return _sheet(header, [[s["name"], *(g["score"] for g in s["grades"])] for s in book["students"]])
+
+
+def gradebook_details_csv(book: dict[str, Any]) -> bytes:
+    """The detailed file: per student and assignment its score, then the parts it comes from."""
+    titles = [f"{a['n']}. {a['title']}" for a in book["assignments"]]
+    header = ["Student"]
+    for t in titles:
+        header += [f"{t} ({book['points']} points)", *(f"{t}: {words}" for _part, words in PARTS)]
+    rows = [[s["name"], *(value for g in s["grades"] for value in (g["score"], *(g[p] for p, _w in PARTS)))]
+            for s in book["students"]]
+    return _sheet(header, rows)

@@ -44,6 +44,27 @@ def normal_code(text: str) -> str | None:
     return code
 
 
+# the letters and digits a code leaves out, for they are easily confused with another when read off a board
+LEFT_OUT = ", ".join(c for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789" if c not in ALPHABET)
+
+
+def code_rule() -> str:
+    """What a class code is, in words (the join page and the short link's refusals say it)."""
+    return (f"a class code has {CODE_LENGTH} letters and digits, without the ones easily confused "
+            f"(no {LEFT_OUT})")
+
+
+def why_not_code(text: str) -> str:
+    """Why a text typed as a class code is not one: its length, or the first character a code never holds."""
+    code = "".join(text.split()).replace("-", "").upper()
+    if len(code) != CODE_LENGTH:
+        return f"it has {len(code)} character{'' if len(code) == 1 else 's'}, and {code_rule()}"
+    bad = next((c for c in code if c not in ALPHABET), None)
+    if bad is None:
+        return f"no class has this code: {code_rule()}"
+    return f"“{bad}” is never in a class code: {code_rule()}"
+
+
 def new_key() -> str:
     return secrets.token_urlsafe(KEY_BYTES)
 
@@ -66,6 +87,20 @@ def normal_recovery(text: str) -> str | None:
     if len(code) != RECOVERY_LENGTH or any(c not in ALPHABET for c in code):
         return None
     return code
+
+
+def why_not_recovery(text: str) -> str:
+    """Why a text is not a recovery code: its length (a teacher link cut short), or a character no code holds."""
+    code = "".join(text.split()).replace("-", "").upper()
+    rule = (f"a recovery code has {RECOVERY_LENGTH} letters and digits in groups of {RECOVERY_GROUP}, "
+            f"without the ones easily confused (no {LEFT_OUT})")
+    if len(code) < RECOVERY_LENGTH:
+        return (f"this recovery code is incomplete: it has {len(code)} of its {RECOVERY_LENGTH} letters and digits "
+                f"(a teacher link cut short, as some mail programs do, misses part of it); {rule}")
+    if len(code) > RECOVERY_LENGTH:
+        return f"this recovery code has {len(code)} letters and digits, and {rule}"
+    bad = next((c for c in code if c not in ALPHABET), "?")
+    return f"“{bad}” is never in a recovery code: {rule}"
 
 
 def teacher_key_from(recovery: str, class_code: str) -> str:

@@ -17,12 +17,13 @@ from typing import Any
 
 from sqlalchemy import func, select
 
+from app.scenes import SCENES
 from app.service.classroom.database import Database
 from app.service.classroom.models import AttemptRow, StudentRow
 from app.service.classroom.store import DONE
 
 Key = tuple[int | None, str, str, str | None]  # (assignment's id, item, step, coordinate)
-CSV_COLUMNS = ("time", "student", "item", "step", "coordinate", "verdict", "mistake", "answer")
+CSV_COLUMNS = ("time", "student", "assignment", "item", "step", "coordinate", "verdict", "mistake", "answer")
 FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
 
 
@@ -180,12 +181,17 @@ def _cell(value: Any) -> str:
     return "'" + text if text.startswith(FORMULA_START) else text
 
 
-def export_csv(db: Database, class_id: int) -> bytes:
-    """Every attempt of the class, oldest first, as CSV (UTF-8)."""
+def export_csv(db: Database, class_id: int, series: list[dict[str, Any]]) -> bytes:
+    """Every attempt of the class, oldest first, as CSV (UTF-8): its assignment ("1. Week 1"), the scene by its
+    title or the typed system by its name, the mistake in the tutor's words, and the answer exactly as typed (a
+    recorded answer is a checked expression: names, numbers, operators and the allowed functions, nothing a
+    spreadsheet could run).  The other text cells get an apostrophe before a formula's first character."""
+    titles = {a["id"]: f"{a['n']}. {a['title']}" for a in series}
     with db.session() as session:
         rows = session.execute(
-            select(AttemptRow.at, StudentRow.name, AttemptRow.item, AttemptRow.step, AttemptRow.coordinate,
-                   AttemptRow.verdict, AttemptRow.mistake, AttemptRow.answer)
+            select(AttemptRow.at, StudentRow.name, AttemptRow.assignment_id, AttemptRow.item, AttemptRow.step,
+                   AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake, AttemptRow.mistake_name,
+                   AttemptRow.answer)
             .join(StudentRow, StudentRow.id == AttemptRow.student_id)
             .where(AttemptRow.class_id == class_id)
             .order_by(AttemptRow.id)
@@ -193,6 +199,8 @@ def export_csv(db: Database, class_id: int) -> bytes:
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\r\n")
     writer.writerow(CSV_COLUMNS)
-    for at, *rest in rows:
-        writer.writerow([at.isoformat() + "Z", *(_cell(v) for v in rest)])
+    for at, name, assignment, item, step, coordinate, verdict, mistake, words, answer in rows:
+        where = SCENES[item].title if item in SCENES else item
+        cells = [name, titles.get(assignment, ""), where, step, coordinate, verdict, words or mistake]
+        writer.writerow([at.isoformat() + "Z", *(_cell(v) for v in cells), answer])
     return out.getvalue().encode("utf-8")

@@ -157,8 +157,9 @@ class Classroom:
     async def grades(self, code: str, key: str | None) -> dict[str, Any]:
         return await self._db(self._report, code, key, grades.gradebook)
 
-    async def grades_csv(self, code: str, key: str | None) -> bytes:
-        return grades.gradebook_csv(await self.grades(code, key))
+    async def grades_csv(self, code: str, key: str | None, details: bool = False) -> bytes:
+        book = await self.grades(code, key)
+        return (grades.gradebook_details_csv if details else grades.gradebook_csv)(book)
 
     async def summary(self, code: str, key: str | None) -> dict[str, Any]:
         return await self._db(self._report, code, key, reports.summary)
@@ -167,7 +168,7 @@ class Classroom:
         return await self._db(self._report, code, key, reports.students)
 
     async def export(self, code: str, key: str | None) -> bytes:
-        return await self._db(self._report, code, key, lambda db, class_id, _items: reports.export_csv(db, class_id))
+        return await self._db(self._report, code, key, reports.export_csv)
 
     async def delete(self, code: str, key: str | None) -> None:
         who = await self._db(self._who, code, key, True)

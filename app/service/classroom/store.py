@@ -76,6 +76,8 @@ def recover(db: Database, code: str, recovery: str) -> tuple[Access, str]:
     (a class from before recovery codes is compared against the fixed digest: no code opens it)."""
     normal = keys.normal_code(code) or ""
     typed = keys.normal_recovery(recovery)
+    if typed is None:  # its shape is public: saying what is wrong with it tells nothing of the class
+        raise WrongKey(keys.why_not_recovery(recovery))
     with db.session() as session:
         found = session.execute(
             select(ClassRow.id, ClassRow.code, ClassRow.title, ClassRow.recovery_hash).where(ClassRow.code == normal)
@@ -111,7 +113,7 @@ def join(db: Database, code: str, name: str) -> tuple[str, Access]:
     normal = keys.normal_code(code)
     if normal is None:
         raise UnknownClass(
-            f"a class code is {keys.CODE_LENGTH} characters from {keys.ALPHABET}; check the code on the board"
+            f"“{code.strip()[:20]}” is not a class code: {keys.why_not_code(code)}; check the code on the board"
         )
     student_key = keys.new_key()
     try:
