@@ -5,20 +5,11 @@ from __future__ import annotations
 
 import pytest
 
-from tests.browser.test_playground_stages import FIRST, VIEWPORTS, type_triple_pendulum
+from tests.browser import test_playground_stages as stages
+from tests.browser.test_playground_stages import FIRST, type_triple_pendulum
 
 pytestmark = pytest.mark.browser
-
-
-@pytest.fixture(params=list(VIEWPORTS))
-def sized(request, browser, live_server):
-    context = browser.new_context(base_url=live_server, **VIEWPORTS[request.param])
-    page = context.new_page()
-    page.set_default_timeout(90_000)
-    page.errors = []
-    page.on("pageerror", lambda exc: page.errors.append(str(exc)))
-    yield request.param, page
-    context.close()
+sized = stages.sized  # the same two sizes and page set-up as the stages' test
 
 
 def test_the_part_being_worked_on_is_shown_and_stop_keeps_the_equations(sized, artifacts):
@@ -36,4 +27,4 @@ def test_the_part_being_worked_on_is_shown_and_stop_keeps_the_equations(sized, a
     assert page.locator("#derive-now").is_hidden()
     # what was shown stays: the three equations, typeset
     assert page.locator("#results dd").first.locator(".math").count() == 3
-    assert page.errors == []
+    assert page.console_errors == []
