@@ -82,10 +82,13 @@ def test_the_first_view_lists_what_is_pending_and_links_to_the_rest():
         "pending": [{"member": "steps", "name": "the steps"}, {"member": "hamilton", "name": "Hamilton's equations"},
                     {"member": "normal_modes", "name": "the normal modes"}],
     }  # fmt: skip
-    view = first_view(doc, whole_href("q=x&stage=whole&T=m"))
+    view = first_view(doc, whole_href("q=x&stage=whole&T=m"), "ab" * 32)
     assert view["pending"] == "the steps, Hamilton's equations, the normal modes and the simulation"
     assert view["accelerations"] == ["\\ddot{x} = - \\frac{k x}{m}"] and view["mass_matrix"] is None
     assert view["whole_href"] == "/playground?q=x&T=m&stage=whole#outcome"
+    # the whole derivation's progress and its stop, by its key
+    assert view["progress_url"] == "/api/derive/progress/" + "ab" * 32
+    assert view["cancel_url"] == "/api/derive/cancel/" + "ab" * 32
 
 
 def test_the_api_answers_the_equations_first_then_the_same_members_from_the_whole_document(client):
