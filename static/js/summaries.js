@@ -67,7 +67,8 @@ export function magnitude(x) {
 export const short = (x) => (Number.isFinite(x) ? fmt(Number(x.toPrecision(2))) : "–");
 
 /**
- * The run status a student reads at a glance: "Simulated 10 s · largest estimated error in the coordinates ≈ 4 × 10⁻⁹ rad".
+ * The run status a student reads at a glance: "Simulated 10 s · error in the coordinates ≈ 4 × 10⁻⁹ rad"
+ * (the largest estimated difference from the true motion; "details" says more).
  * stats: the simulate API's stats (t_end_reached, error_estimate); unit: the coordinates' unit when they share one
  * ("" when they do not: the error is then in each coordinate's own unit).  How long the computer took, and with
  * which method, is no part of the physics: those sit under "details".
@@ -75,9 +76,9 @@ export const short = (x) => (Number.isFinite(x) ? fmt(Number(x.toPrecision(2))) 
 export function statusLine(stats, unit = "") {
   const parts = [`Simulated ${short(stats.t_end_reached)} s`];
   // the error bound is the largest difference from the true motion over the samples, in the coordinates' units
-  const said = (x) => (unit ? `${x} ${unit}` : `${x} (in each coordinate's unit)`);
+  const said = (x) => (unit ? `${x} ${unit}` : `${x} (each in its unit)`);
   if (Number.isFinite(stats.error_estimate)) {
-    parts.push(`largest estimated error in the coordinates ≈ ${said(stats.error_estimate > 0 ? fmt(Number(stats.error_estimate.toPrecision(1))) : "0")}`);
+    parts.push(`error in the coordinates ≈ ${said(stats.error_estimate > 0 ? fmt(Number(stats.error_estimate.toPrecision(1))) : "0")}`);
   }
   return parts.join(" · ");
 }

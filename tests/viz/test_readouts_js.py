@@ -92,8 +92,8 @@ def test_the_run_status_says_what_its_error_is_of_and_in_which_unit():
         " m.sharedUnit({ coordinates: ['X', 'theta'], units: { X: 'm', theta: 'rad' } }), m.magnitude(1)]",
     )
     assert out == [
-        "Simulated 10 s · largest estimated error in the coordinates ≈ 4 × 10⁻⁹ rad",
-        "Simulated 3.2 s · largest estimated error in the coordinates ≈ 0.04 (in each coordinate's unit)",
+        "Simulated 10 s · error in the coordinates ≈ 4 × 10⁻⁹ rad",
+        "Simulated 3.2 s · error in the coordinates ≈ 0.04 (each in its unit)",
         "m",
         "",
         "1",
