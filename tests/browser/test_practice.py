@@ -156,15 +156,21 @@ NAMED_WITH_FOLLOW_UP = [
 ]  # fmt: skip
 
 
+def sized_page(browser, live_server, phone: bool):
+    """A fresh context at 390×844 with touch (a phone) or at 1366×768, and its page."""
+    viewport = {"width": 390, "height": 844} if phone else {"width": 1366, "height": 768}
+    context = browser.new_context(base_url=live_server, viewport=viewport, has_touch=phone, is_mobile=phone)
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    return context, page
+
+
 @pytest.mark.parametrize("size", ["desktop", "phone"])
 @pytest.mark.parametrize(("scene", "step", "slip", "key", "name", "follow"), NAMED_WITH_FOLLOW_UP)
 def test_the_named_slip_its_piece_and_follow_up_at_both_sizes(browser, live_server, artifacts, size, scene, step,
                                                               slip, key, name, follow):  # fmt: skip
     phone = size == "phone"
-    viewport = {"width": 390, "height": 844} if phone else {"width": 1366, "height": 768}
-    context = browser.new_context(base_url=live_server, viewport=viewport, has_touch=phone, is_mobile=phone)
-    page = context.new_page()
-    page.set_default_timeout(60_000)
+    context, page = sized_page(browser, live_server, phone)
     try:
         page.goto(f"/scenes/{scene}?practice")
         page.wait_for_selector(STEP.format(step))
@@ -179,7 +185,7 @@ def test_the_named_slip_its_piece_and_follow_up_at_both_sizes(browser, live_serv
         assert mistake.get_attribute("data-key") == key and unicodedata.normalize("NFC", name) in shown
         assert mistake.locator(".verdict-piece").count() == 0  # the correct piece is the answer's: kept for the reveal
         # nothing of the verdict is cut off on the phone: it fits the screen's width
-        assert verdict.evaluate("e => e.getBoundingClientRect().right") <= viewport["width"] + 1
+        assert verdict.evaluate("e => e.getBoundingClientRect().right") <= page.viewport_size["width"] + 1
         follow_up = verdict.locator(".verdict-follow-up")
         follow_up.locator("input").fill(follow)
         # the reply is typeset as it is typed, as the step's own answer is
@@ -312,10 +318,7 @@ def test_what_the_preview_and_the_verdict_say_belongs_to_the_text_in_the_box(bro
     note on a half-typed text goes as the text changes; an edited answer's verdict is greyed; the energy readout
     is folded until U is checked."""
     phone = size == "phone"
-    viewport = {"width": 390, "height": 844} if phone else {"width": 1366, "height": 768}
-    context = browser.new_context(base_url=live_server, viewport=viewport, has_touch=phone, is_mobile=phone)
-    page = context.new_page()
-    page.set_default_timeout(60_000)
+    context, page = sized_page(browser, live_server, phone)
     try:
         page.goto("/scenes/simple-pendulum?practice")
         page.wait_for_selector(STEP.format("acceleration:theta"))
@@ -460,10 +463,7 @@ def test_progress_is_counted_and_the_end_is_said(page, artifacts):
 def test_practice_mode_hides_its_dead_tabs_and_folds_what_gives_the_answers_away(browser, live_server, artifacts, size):
     # student-e, 12 and 13: the tabs to hidden sections, the export links, the effective potential (U itself)
     phone = size == "phone"
-    viewport = {"width": 390, "height": 844} if phone else {"width": 1366, "height": 768}
-    context = browser.new_context(base_url=live_server, viewport=viewport, has_touch=phone, is_mobile=phone)
-    page = context.new_page()
-    page.set_default_timeout(60_000)
+    context, page = sized_page(browser, live_server, phone)
     try:
         page.goto("/scenes/simple-pendulum?practice")
         page.wait_for_selector(STEP.format("kinetic"))
