@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
 from app.scenes import SCENES
 
@@ -180,9 +181,14 @@ def test_work_precision_chart(page, artifacts):
     folded.locator("> summary").click()
     panel = page.locator("[data-panel=work-precision]")
     panel.scroll_into_view_if_needed()
-    page.wait_for_function(
-        "document.querySelector('[data-panel=work-precision] .plot').data?.length >= 4", timeout=120_000
-    )
+    try:
+        page.wait_for_function(
+            "document.querySelector('[data-panel=work-precision] .plot').data?.length >= 4", timeout=120_000
+        )
+    except PlaywrightTimeout:
+        # say what the reader saw instead of a bare timeout: the run's status and the panel's own words
+        status = page.locator("#run-status").all_inner_texts()
+        raise AssertionError(f"no chart after 120 s; run status {status}; panel: {panel.inner_text()!r}") from None
     names = page.evaluate("document.querySelector('[data-panel=work-precision] .plot').data.map((t) => t.name)")
     assert any(n.startswith("this run (estimate") for n in names) and len(set(names)) >= 5  # four methods and this run
     assert "Reference:" in panel.locator(".readout").inner_text()
