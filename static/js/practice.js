@@ -513,7 +513,7 @@ function showProgress() {
     return kept && ["correct", "equivalent"].includes(kept.result?.verdict) && kept.answer === (record.answers[key] ?? kept.answer);
   }).length;
   status.dataset.done = String(done);
-  if (done === 0) status.textContent = `${total} steps to derive, in the chapter's order.`;
+  if (done === 0) status.textContent = `${total} steps to derive, in the derivation's order.`;
   else if (done < total) status.textContent = `${done} of ${total} steps correct.`;
   else status.textContent = `All ${total} steps correct: you have done the whole derivation yourself.`;
   status.classList.toggle("practice-done", done === total);

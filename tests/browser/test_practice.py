@@ -435,7 +435,7 @@ def test_progress_is_counted_and_the_end_is_said(page, artifacts):
     page.goto("/scenes/simple-pendulum?practice")
     page.wait_for_selector(STEP.format("omega_squared"))
     status = page.locator("#practice-status")
-    assert status.inner_text() == "8 steps to derive, in the chapter's order."
+    assert status.inner_text() == "8 steps to derive, in the derivation's order."
     # the heading is the title, once: the label is for a screen reader, and takes no room on the page
     assert page.locator(STEP.format("kinetic") + " label").evaluate("e => e.getBoundingClientRect().width") <= 1
     equation = page.locator(STEP.format("equation:theta"))
