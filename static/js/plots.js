@@ -21,7 +21,7 @@ import { ModesPanel } from "./modes.js";
 import { PhasePanel } from "./phase.js";
 import { PoincarePanel } from "./poincare.js";
 import { EffectivePotentialPanel, SmallOscillationsPanel } from "./reduction.js";
-import { constantOrRange, fmt, median, seriesTable, sharedUnit, table } from "./summaries.js";
+import { constantOrRange, fmt, magnitude, median, seriesTable, sharedUnit, table } from "./summaries.js";
 
 /** A panel of quantities against time, with a second row for their change since t = 0. */
 class TimePanel extends PreviewPanel {
@@ -194,9 +194,9 @@ class WorkPrecisionPanel {
     // who waits longer than a moment is told what is being done, not left with "Loading…"
     const slow = setTimeout(() => {
       if (this.run === run && this.section.getAttribute("aria-busy") === "true") {
-        this.readout.textContent = `${here} The chart is being measured on the server: every method at each tolerance of `
-          + "the sweep, each timed several times. The server measures it once after an update, which can take minutes "
-          + "while it is busy; it then stays ready for every reader, and the chart appears here when it is done.";
+        this.readout.textContent = `${here} This chart is being measured on the server: every method at each tolerance, `
+          + "each run timed several times. It is measured once for each version of the book and then kept for every "
+          + "reader; the chart appears here when it is done.";
       }
     }, SLOW_MS);
     let report;
@@ -210,9 +210,10 @@ class WorkPrecisionPanel {
     }
     clearTimeout(slow);
     const methods = [...new Set(report.runs.map((r) => r.method))];
+    const methodLabel = (m) => this.data.method_labels?.[m] || m;
     const traces = methods.map((m, k) => {
       const runs = report.runs.filter((r) => r.method === m && r.error > 0 && r.wall_time_s > 0);
-      return { type: "scatter", mode: "lines+markers", name: m, x: runs.map((r) => r.wall_time_s), y: runs.map((r) => r.error),
+      return { type: "scatter", mode: "lines+markers", name: methodLabel(m), x: runs.map((r) => r.wall_time_s), y: runs.map((r) => r.error),
         text: runs.map((r) => `rtol ${r.rtol}`), line: { color: PALETTE[k % PALETTE.length] }, marker: { size: 7 } };
     });
     const timed = await this.medianTime(run);
@@ -227,8 +228,9 @@ class WorkPrecisionPanel {
     const moved = Object.entries(run.data.parameters).filter(([p, v]) => run.params[p] !== v).map(([p, v]) => `${run.data.labels[p] || p} = ${fmt(v)}`);
     const at = moved.length ? ` The chart is for the default values (${moved.join(", ")}), not this run's; the star is this run.` : "";
     this.readout.textContent = `${here} Reference: ${report.reference}${at}`;
-    table(this.summary, "Error against run time", ["method", "rtol", "error", "run time (s)", "rhs evaluations"],
-      report.runs.map((r) => [r.method, String(r.rtol), r.error, r.wall_time_s, String(r.rhs_evaluations ?? "–")]));
+    // the methods by their names in words, each tolerance as a power of ten, and why a row has no figures
+    table(this.summary, "Error against run time", ["method", "relative tolerance", "error", "run time (s)", "evaluations of the equations", "note"],
+      report.runs.map((r) => [methodLabel(r.method), magnitude(r.rtol), r.error, r.wall_time_s, String(r.rhs_evaluations ?? "–"), r.note || ""]));
     this.section.setAttribute("aria-busy", "false");
   }
 
