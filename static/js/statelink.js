@@ -81,15 +81,39 @@ export function viewLink() {
 export function restoreControls(form = controlsForm()) {
   const fields = fragment();
   if (!form) return;
+  const ignored = []; // what the link asked for that this page cannot show, said in words
   for (const [name, value] of fields) {
     if (name.includes("-") || name === PRACTICE) continue;
     const select = form.querySelector(`select[name="${CSS.escape(name)}"]`);
+    const ctl = form.querySelector(`.control[data-name="${CSS.escape(name)}"]`);
     if (select) {
       if ([...select.options].some((o) => o.value === value)) select.value = value;
-    } else if (value.trim() !== "" && Number.isFinite(Number(value))) {
-      setControl(form, name, Number(value));
+      else ignored.push(`“${value}” is not a choice of ${select.labels?.[0]?.textContent || name}`);
+    } else if (!ctl) {
+      ignored.push(`“${name}” is not a setting of this page`);
+    } else {
+      // a value is shown only when it is a number inside the control's allowed range (the form would refuse it)
+      const label = ctl.dataset.label || name;
+      const x = Number(value);
+      const [lo, hi] = [Number(ctl.dataset.min), Number(ctl.dataset.max)];
+      const allowed = ctl.dataset.allowed || `${ctl.dataset.min} to ${ctl.dataset.max} ${ctl.dataset.unit || ""}`.trim();
+      if (value.trim() === "" || !Number.isFinite(x)) ignored.push(`${label} = “${value}” is not a number`);
+      else if (x < lo || x > hi) ignored.push(`${label} = ${value} is outside the allowed ${allowed}`);
+      else setControl(form, name, x);
     }
   }
+  showIgnored(form, ignored);
+}
+
+/** A note above the controls when the link asked for values the page could not take: the defaults are shown. */
+function showIgnored(form, ignored) {
+  form.querySelector(".link-note")?.remove();
+  if (!ignored.length) return;
+  const note = document.createElement("p");
+  note.className = "link-note";
+  note.setAttribute("role", "status");
+  note.textContent = `This link was cut or changed: ${ignored.join("; ")}. The page shows the default value instead; check the link you were given.`;
+  form.prepend(note);
 }
 
 /** Resolves once selector matches under the document (at once if it does already). */
