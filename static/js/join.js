@@ -16,6 +16,9 @@ const $ = (id) => document.getElementById(id);
 let current = memory.get(); // {code, key, name, title}
 let series = null; // the class's assignments, in order: {n, title, due, items}
 const done = new Set(); // "assignment|item|step|coordinate" of the steps this student has done
+// one check at a time from this page: an answer sent while another is being checked waits for it here, rather
+// than being turned away by the server (one job per student) with "Busy"
+let checking = Promise.resolve();
 
 const stepId = (n, item, step, coordinate) => `${n}|${item}|${step}|${coordinate || ""}`;
 const keysOf = (a) => a.items.flatMap((item) => item.steps.map((s) => stepId(a.n, item.scene || item.name, s.step, s.coordinate)));
@@ -44,6 +47,7 @@ function progress() {
 
 function verdictView(box, r) {
   box.replaceChildren();
+  box.setAttribute("aria-busy", "false");
   if (r.status === 200) {
     const v = r.data;
     box.dataset.verdict = v.verdict;
@@ -58,7 +62,9 @@ function verdictView(box, r) {
   // a refusal names the field it concerns ("answer: …"): here there is one box, the student's own
   const detail = (r.data?.detail || `The answer could not be checked (${r.status}).`).replace(/^answer: /, "");
   const busy = r.status === 429 || r.status === 503;
-  box.append(el("p", {}, el("strong", { text: busy ? "Busy" : "Not checked" }), `: ${detail.charAt(0).toUpperCase()}${detail.slice(1)}`));
+  // a busy server is no fault of the answer: said as what to do, never as the server's words about derivations
+  const said = busy ? "The server is still busy with your earlier work; press Check again in a moment (an answer is never counted twice)." : `${detail.charAt(0).toUpperCase()}${detail.slice(1)}`;
+  box.append(el("p", {}, el("strong", { text: busy ? "Busy" : "Not checked" }), `: ${said}`));
 }
 
 /** A verdict's message as [its opening word, the rest]: "Correct: this is T." → ["Correct", "this is T."]; a
@@ -125,8 +131,14 @@ function stepView(a, item, practice, s, index) {
     if (!pending || pending.answer !== answer) pending = { answer, attempt: attemptId() };
     const body = { ...target, answer, attempt: pending.attempt };
     try {
-      // one check at a time: while a previous one still runs the server asks to wait, a few seconds at most
-      const r = await api("POST", `/api/classes/${current.code}/check`, { key: current.key, body, tries: 3, patience: 5 });
+      delete box.dataset.verdict; // no verdict while it is being checked
+      box.setAttribute("aria-busy", "true");
+      box.replaceChildren(el("p", { text: "Checking your answer…" }));
+      // after this page's previous check; the server may still ask to wait (a first derivation of a typed system
+      // takes seconds): its Retry-After is followed, up to a quarter of a minute in all
+      const turn = checking.then(() => api("POST", `/api/classes/${current.code}/check`, { key: current.key, body, tries: 6, patience: 5 }));
+      checking = turn.catch(() => null);
+      const r = await turn;
       verdictView(box, r);
       if (r.status !== 429 && r.status !== 503) pending = null; // answered: the next press is a new attempt
       if (r.status === 200 && (r.data.verdict === "correct" || r.data.verdict === "equivalent")) {

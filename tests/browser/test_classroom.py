@@ -126,6 +126,17 @@ def test_a_class_live(browser, live_server, classes, artifacts):
     bo.wait_for_selector(".practice-step.step-done")
     assert bo.locator("#joined-progress").inner_text() == "1 of 2 steps done"
 
+    # two answers sent at once (T, then U before T's verdict): the second waits for the first on the page, and both
+    # get a verdict, never "Busy" (inst-b 9: the second was turned away while the first was being checked)
+    for key, text in (("kinetic", NO_CROSS_T), ("potential", "m1*g*l1")):
+        step = ada.locator(f'.practice-step[data-step="{key}"]')
+        step.locator("input").fill(text)
+        step.locator("input").press("Enter")
+    for key in ("kinetic", "potential"):
+        verdict = ada.locator(f'.practice-step[data-step="{key}"] .practice-verdict[data-verdict]')
+        verdict.wait_for()
+        assert verdict.get_attribute("data-verdict") == "incorrect", verdict.inner_text()
+
     teacher.screenshot(path=artifacts / "teach-1366.png", full_page=True)
     teacher.set_viewport_size({"width": 390, "height": 844})
     teacher.screenshot(path=artifacts / "teach-390.png", full_page=True)
