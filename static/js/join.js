@@ -170,7 +170,9 @@ async function drawItems() {
       const section = el("section", { className: "class-panel join-item" });
       const heading = item.scene ? titleOf[item.scene] || item.scene : item.name;
       section.append(el("h3", { text: heading }));
-      if (item.scene) section.append(el("p", {}, el("a", { href: `/scenes/${item.scene}`, text: "The scene's page" }), " (its set-up and figure)."));
+      // the page in practice mode, in a tab of its own: the set-up and the figure, the derivation hidden (inst-b 24:
+      // the plain page printed every answer of the assignment), and the class page stays where it was
+      if (item.scene) section.append(el("p", {}, el("a", { href: `/scenes/${item.scene}#practice=on`, target: "_blank", rel: "noopener", text: "The scene's set-up and figure" }), " (its page in practice mode, in a new tab: the derivation stays hidden)."));
       const values = Object.entries(item.parameters || {});
       if (values.length) section.append(el("p", { className: "help", text: `Take ${values.map(([k, v]) => `${k} = ${v}`).join(", ")}.` }));
       try {

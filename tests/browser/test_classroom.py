@@ -94,6 +94,9 @@ def test_a_class_live(browser, live_server, classes, artifacts):
                 for name, device in (("Ada", PHONE), ("Bo", DESK), ("Cy", DESK))]
     (_, ada, _), (_, bo, _), (_, cy, _) = students
     assert ada.locator(".practice-step").count() == 2  # the two assigned steps
+    # the scene's set-up opens in practice mode in a tab of its own, its derivation hidden (inst-b 24)
+    setup = ada.locator(f'a[href="/scenes/{SCENE}#practice=on"]')
+    assert setup.count() == 1 and setup.get_attribute("target") == "_blank"
 
     assert _answer(ada, NO_CROSS_T) == "incorrect"
     answered = time.monotonic()
