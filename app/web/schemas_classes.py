@@ -195,7 +195,8 @@ class StepSummary(BaseModel):
     step: str
     coordinate: str | None
     correct: int = Field(description="Answers judged correct or equivalent.")
-    incorrect: int
+    incorrect: int = Field(description="Answers judged wrong.")
+    not_read: int = Field(0, description="Answers the checker could not read (\"Not checked\"): never judged.")
     students_done: int = Field(description="Students with a correct or equivalent answer to the step.")
     mistakes: dict[str, int] = Field(
         description="Named mistakes among the incorrect answers, by the tutor's stable key, most common first."
@@ -203,7 +204,9 @@ class StepSummary(BaseModel):
     mistake_names: dict[str, str] = Field(
         default_factory=dict, description="Each named mistake's key in words, as the student was told it."
     )
-    stuck: int = Field(description="Students who answered the step and have no correct answer to it yet.")
+    stuck: int = Field(
+        description="Students who answered the step (an answer not read included) and have no correct answer yet."
+    )
     students_stuck: list[str] = Field(description="Their names, in alphabetical order.")
 
 
@@ -226,7 +229,7 @@ class AssignmentProgress(BaseModel):
 
 class Summary(BaseModel):
     students: int
-    attempts: int
+    attempts: int = Field(description="Every answer recorded: right, wrong and not read.")
     assignments: list[AssignmentProgress] = Field(default_factory=list, description="The series, in order.")
     steps: list[StepSummary] = Field(description="Each step: `scene` or `system`, then the counts.")
     mistakes: list[MistakeTotal] = Field(
@@ -240,7 +243,8 @@ class StudentStep(BaseModel):
     item: str
     step: str
     coordinate: str | None
-    attempts: int
+    attempts: int = Field(description="The student's answers to the step, those not read included.")
+    not_read: int = Field(0, description="Of them, answers the checker could not read.")
     done: bool
     last: str
 
@@ -248,7 +252,8 @@ class StudentStep(BaseModel):
 class StudentProgress(BaseModel):
     name: str
     joined: str
-    attempts: int
+    attempts: int = Field(description="Every answer the student sent, those not read included.")
+    not_read: int = Field(0, description="Of them, answers the checker could not read (never counted wrong).")
     done: int = Field(description="Assigned steps done (all steps done when nothing is assigned).")
     assigned: int
     steps: list[StudentStep]

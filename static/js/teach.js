@@ -230,14 +230,15 @@ let everyStep = false; // "Show every step" pressed: the steps nobody has answer
 /** A step's figures, each count in one unit: students for done and stuck, answers for right and wrong. */
 function stepNumbers(entry, students) {
   return `${entry.students_done} of ${plural(students, "student")} done, ${entry.stuck} stuck; `
-    + `${plural(entry.correct, "right answer")}, ${entry.incorrect} wrong`;
+    + `${plural(entry.correct, "right answer")}, ${entry.incorrect} wrong`
+    + (entry.not_read ? `, ${entry.not_read} not read` : "");
 }
 
 async function drawSteps(summary) {
   const list = $("dash-steps");
   const rows = [];
   // a step with no answer yet says nothing about the class: listed only on "Show every step"
-  const idle = (entry) => !entry.correct && !entry.incorrect && !entry.students_done && !entry.stuck;
+  const idle = (entry) => !entry.correct && !entry.incorrect && !entry.not_read && !entry.students_done && !entry.stuck;
   const quiet = summary.steps.filter(idle).length;
   const toggle = $("dash-steps-all");
   toggle.hidden = !quiet;
@@ -318,7 +319,8 @@ async function drawStudents(students) {
     rows.push(el("tr", {},
       el("th", { scope: "row", text: s.name }),
       el("td", { text: s.assigned ? `${s.done} of ${s.assigned}` : String(s.done) }),
-      el("td", { text: String(s.attempts) }),
+      // every answer sent, those the checker could not read said apart (they are never counted wrong)
+      el("td", { text: s.not_read ? `${s.attempts} (${s.not_read} not read)` : String(s.attempts) }),
       cell));
   }
   $("dash-students").tBodies[0].replaceChildren(...rows);

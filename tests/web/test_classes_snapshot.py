@@ -32,7 +32,7 @@ SCENE = "double-pendulum"
 def _adds_up(summary: dict) -> list[str]:
     """What does not add up in one summary (nothing, for a consistent one)."""
     wrong = []
-    if sum(s["correct"] + s["incorrect"] for s in summary["steps"]) != summary["attempts"]:
+    if sum(s["correct"] + s["incorrect"] + s["not_read"] for s in summary["steps"]) != summary["attempts"]:
         wrong.append("the steps' answers do not total the attempts")
     for s in summary["steps"]:
         if s["students_done"] > s["correct"]:

@@ -27,6 +27,7 @@ from app.service.classroom.database import Database
 from app.service.classroom.rates import Window
 from app.service.classroom.shared_rates import SharedWindow, Store
 from app.service.fairness import CLASS, shared
+from app.service.user_checks import InvalidSystem
 from app.settings import Settings
 
 T = TypeVar("T")
@@ -55,13 +56,34 @@ def mistake_text(result: dict[str, Any]) -> str | None:
 
 
 def _same_attempt(first: store.Recorded, this: tuple[str, str, str | None, str], attempt_id: str) -> bytes:
-    """The first verdict of an attempt sent again; refused when the id comes back with another answer."""
+    """The first verdict of an attempt sent again (or the first refusal, of an answer not read); refused when the
+    id comes back with another answer."""
     if (first.item, first.step, first.coordinate, first.answer) != this:
         raise Refused(
             "attempt: this attempt id was already used for another answer; send a new id with a new answer",
             attempt_id, ("attempt",),
         )
+    if first.verdict == store.NOT_READ:
+        raise unread_refusal(first.response)
     return first.response
+
+
+def _unread(exc: Refused) -> bool:
+    """Whether a refusal of a check is of the answer itself (the checker could not read it: "Not checked")."""
+    return exc.loc == ("answer",)
+
+
+def refusal_record(exc: Refused) -> bytes:
+    """A refusal of an answer as recorded beside the attempt: its words, where, and its readings."""
+    return orjson.dumps({"detail": str(exc), "loc": list(exc.loc or ()), "part": exc.part, "start": exc.start,
+                         "end": exc.end, "readings": list(getattr(exc, "readings", ()))})
+
+
+def unread_refusal(recorded: bytes) -> InvalidSystem:
+    """The refusal an attempt not read was answered, again (a retry of the same press gets the same words)."""
+    found = orjson.loads(recorded)
+    return InvalidSystem(found["detail"], tuple(found["loc"]), found["part"], found["start"], found["end"],
+                         tuple(found["readings"]))
 
 
 class Classroom:
@@ -234,10 +256,25 @@ class Classroom:
         await self.class_checks.take(who.code)
         # the student is the unit of fairness, their class's budget of check slots the bound (not their network's)
         client, address = f"class-student:{who.class_id}:{who.student}", f"{CLASS}{who.class_id}"
-        if item.get("system") is not None:
-            body = await self.checking.check_system(declared(item["system"]), step, coordinate, answer, client, address)
-        else:
-            body = await self.checking.check_scene(name, step, coordinate, answer, client, address)
+        try:
+            if item.get("system") is not None:
+                body = await self.checking.check_system(
+                    declared(item["system"]), step, coordinate, answer, client, address
+                )
+            else:
+                body = await self.checking.check_scene(name, step, coordinate, answer, client, address)
+        except Refused as exc:
+            if not _unread(exc):
+                raise
+            # an answer that could not be read is one of the student's answers: recorded with its refusal (on disk
+            # before the refusal goes back), never judged
+            raced = await self._db(
+                store.record, who, name, step, recorded, store.NOT_READ, None, answer.strip(), None, attempt_id,
+                refusal_record(exc), assigned["id"] if assigned else None,
+            )
+            if raced is not None:
+                return _same_attempt(raced, this, attempt_id or "")
+            raise
         result = orjson.loads(body)
         raced = await self._db(
             store.record, who, name, step, recorded, result["verdict"], named_mistake(result), answer.strip(),

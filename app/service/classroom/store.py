@@ -31,6 +31,9 @@ from app.service.classroom.models import (
 )
 
 DONE = ("correct", "equivalent")  # the verdicts that finish a step
+# an answer the checker could not read ("Not checked" on the page): recorded with its refusal, never judged, so
+# counted among a student's answers and never as a wrong one (nor in the gradebook)
+NOT_READ = "not read"
 MAX_ASSIGNMENTS = 40  # the assignments a class's series may hold
 FIRST_TITLE = "Assignment 1"  # the title of a first assignment set without one (PUT /assignment)
 
@@ -284,18 +287,20 @@ class Recorded:
     coordinate: str | None
     answer: str
     response: bytes
+    verdict: str = ""  # NOT_READ: ``response`` is the refusal (its words and where), not a verdict
 
 
 def recorded(db: Database, who: Access, attempt_id: str) -> Recorded | None:
     """The student's attempt with this id, if one is recorded (a retried Check), else None."""
     with db.session() as session:
         row = session.execute(
-            select(AttemptRow.item, AttemptRow.step, AttemptRow.coordinate, AttemptRow.answer, AttemptRow.response)
+            select(AttemptRow.item, AttemptRow.step, AttemptRow.coordinate, AttemptRow.answer, AttemptRow.response,
+                   AttemptRow.verdict)
             .where(AttemptRow.student_id == who.student, AttemptRow.attempt_id == attempt_id)
         ).first()
     if row is None or row.response is None:
         return None
-    return Recorded(row.item, row.step, row.coordinate, row.answer, row.response.encode())
+    return Recorded(row.item, row.step, row.coordinate, row.answer, row.response.encode(), row.verdict)
 
 
 def record(
