@@ -10,11 +10,14 @@ from typing import Annotated, Any
 
 from pydantic import AwareDatetime, BaseModel, ConfigDict, Field, StringConstraints
 
+from app.service.classroom.setup import MAX_SETUP
 from app.service.classroom.store import MAX_ASSIGNMENTS
 from app.web.schemas_check import CheckRequest, Step
 from app.web.schemas_user import STRICT, Name, SystemSpec
 
 Title = Annotated[str, StringConstraints(strip_whitespace=True, min_length=1, max_length=200, pattern=r"^[^\x00-\x1f\x7f]+$")]
+# a set-up is prose of a few lines: line breaks and tabs allowed, no other control character
+Setup = Annotated[str, StringConstraints(strip_whitespace=True, max_length=MAX_SETUP, pattern=r"^[^\x00-\x08\x0b-\x1f\x7f]*$")]
 Pseudonym = Annotated[str, StringConstraints(strip_whitespace=True, min_length=1, max_length=40, pattern=r"^[^\x00-\x1f\x7f]+$")]
 SceneId = Annotated[str, Field(min_length=1, max_length=40, pattern=r"^[a-z0-9_-]+$")]
 AttemptId = Annotated[str, Field(min_length=8, max_length=64, pattern=r"^[A-Za-z0-9_-]+$")]
@@ -70,6 +73,12 @@ class AssignmentItem(BaseModel):
         default_factory=list, max_length=40, description="The steps to practise (a scene: none means all)."
     )
     parameters: dict[Name, float] = Field(default_factory=dict, description="Parameter values to show the class.")
+    setup: Setup | None = Field(
+        None,
+        description="For a system (required there): what each coordinate is, where it is measured from and where "
+        "U = 0, shown to the students above the boxes with the system's positions, T and U typeset (`given`), "
+        "except what an assigned step asks for.",
+    )
 
     def to_item(self) -> dict[str, Any]:
         return {
@@ -78,6 +87,7 @@ class AssignmentItem(BaseModel):
             "name": self.name,
             "steps": [s.model_dump() for s in self.steps],
             "parameters": self.parameters,
+            "setup": self.setup,
         }
 
 

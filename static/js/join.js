@@ -146,6 +146,23 @@ function stepView(a, item, practice, s, index) {
 
 const when = (iso) => new Date(iso).toLocaleString([], { dateStyle: "medium", timeStyle: "short" });
 
+/** A typed system's set-up, above its boxes: the instructor's words (its coordinates, from where, the zero of U),
+ *  then what the system is defined by, typeset (the server leaves out what a step asks for). */
+function setupView(item) {
+  const box = el("div", { className: "join-setup" });
+  if (item.setup) {
+    box.append(el("h4", { text: "The set-up" }),
+      ...item.setup.split(/\n+/).map((line) => el("p", { text: line })));
+  }
+  const given = item.given || [];
+  if (given.length) {
+    box.append(el("p", { className: "help", text: "The system:" }),
+      el("ul", { className: "join-given" }, ...given.map((g) => el("li", {},
+        g.label ? el("span", { text: `${g.label}: ` }) : "", typeset(el("span"), g.latex)))));
+  }
+  return box;
+}
+
 async function drawItems() {
   const holder = $("join-items");
   const parts = [];
@@ -159,6 +176,7 @@ async function drawItems() {
       const heading = item.scene ? titleOf[item.scene] || item.scene : item.name;
       section.append(el("h3", { text: heading }));
       if (item.scene) section.append(el("p", {}, el("a", { href: `/scenes/${item.scene}`, text: "The scene's page" }), " (its set-up and figure)."));
+      else section.append(setupView(item));
       const values = Object.entries(item.parameters || {});
       if (values.length) section.append(el("p", { className: "help", text: `Take ${values.map(([k, v]) => `${k} = ${v}`).join(", ")}.` }));
       try {

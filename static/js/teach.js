@@ -28,6 +28,8 @@ let series = [];
 const NO_KEY = "Type the recovery code or the instructor key you were given when you made the class; "
   + "a teacher link cut short (as some mail programs do) misses part of it.";
 const NOTHING_SET = "Tick at least one scene or add a typed system.";
+const NO_SETUP = "Write the system's set-up: what each coordinate is, where it is measured from, and where U = 0 "
+  + "(students read it above the boxes).";
 /** The parts of a typed system (the playground's JSON), as the page names them. */
 const SYSTEM_PARTS = {
   coordinates: "The coordinates", parameters: "The parameters", lagrangian: "The Lagrangian L",
@@ -55,6 +57,7 @@ function refusal(r, at) {
   }
   if (loc[0] === "items" && loc.length === 1 && data.errors) return { at: "assign-status", text: NOTHING_SET };
   if (loc[0] === "items" && loc[2] === "name") return { at: "assign-system-status", text: "Name the system: students see it by its name." };
+  if (loc[0] === "items" && loc[2] === "setup") return { at: "assign-system-status", text: NO_SETUP };
   if (loc[0] === "title") return { at: "assign-status", text: "Give the assignment a title (200 characters at most)." };
   return { at, text: said ? `${capital(said)}.`.replace(/([.!?])\.$/, "$1") : `Refused (${r.status}).` };
 }
@@ -424,7 +427,7 @@ async function reloadSeries() {
 function typedSystem() {
   const text = $("assign-system").value.trim();
   if (!text) return null;
-  return { name: $("assign-system-name").value.trim(), system: JSON.parse(text) };
+  return { name: $("assign-system-name").value.trim(), system: JSON.parse(text), setup: $("assign-system-setup").value.trim() };
 }
 
 /** The typed system read from its box, or null with the reason said at the box (not JSON, or empty). */
@@ -480,6 +483,12 @@ $("assign-save").addEventListener("click", async () => {
   $("assign-system-status").textContent = "";
   const typed = readSystem();
   if (!typed && $("assign-system").value.trim()) return; // not JSON: said at the system's box
+  if (typed && !typed.setup) {
+    // the set-up is what the students cannot do without: said at the system's box before anything is sent
+    $("assign-system-status").textContent = NO_SETUP;
+    $("assign-system-setup").focus();
+    return;
+  }
   if (typed) {
     // none ticked: every step, as for a scene (its steps loaded if "Show its steps" was not pressed)
     let steps = ticked($("assign-system-steps"));
@@ -505,6 +514,7 @@ $("assign-save").addEventListener("click", async () => {
   $("assign-due").value = "";
   $("assign-system").value = "";
   $("assign-system-name").value = "";
+  $("assign-system-setup").value = "";
   $("assign-system-steps").replaceChildren();
   $("assign-system-status").textContent = "";
   buildEditor();

@@ -157,7 +157,8 @@ def test_refusals_say_what_is_wrong(client, classes):
     system = {"coordinates": ["x"], "parameters": ["m", "k"], "kinetic": "m*x_dot**2/2", "potential": "k*x**2/2"}
     r = client.put(f"/api/classes/{code}/assignment", headers=bearer(teacher), json={"items": [
         {"scene": SCENE, "steps": [{"step": "kinetic"}]},
-        {"system": system, "name": "spring", "steps": [{"step": "acceleration", "coordinate": "x"}]}]})
+        {"system": system, "name": "spring", "steps": [{"step": "acceleration", "coordinate": "x"}],
+         "setup": "x is the stretch of the spring from its natural length; U = 0 at x = 0."}]})
     assert r.status_code == 200, r.text
     ada = join(client, code, "Ada")
     assert client.post(f"/api/classes/{code}/join", json={"name": "Ada"}).status_code == 422  # the name is taken

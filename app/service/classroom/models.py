@@ -72,6 +72,8 @@ class AssignmentRow(Base):
     system: Mapped[str | None] = mapped_column(Text, nullable=True)  # the declared system (JSON), for a system
     steps: Mapped[str] = mapped_column(Text)  # JSON: [{"step", "coordinate"}]
     parameters: Mapped[str] = mapped_column(Text)  # JSON: {name: value}
+    # a typed system's set-up in the instructor's words (its coordinates, from where, the zero of U); migration 0006
+    setup: Mapped[str | None] = mapped_column(Text, nullable=True)
 
 
 class AttemptRow(Base):

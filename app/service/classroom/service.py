@@ -25,6 +25,7 @@ from app.service.classroom import grades, keys, reports, store
 from app.service.classroom.assignments import checked_due, checked_items, find_target
 from app.service.classroom.database import Database
 from app.service.classroom.rates import Window
+from app.service.classroom.setup import givens
 from app.service.classroom.shared_rates import SharedWindow, Store
 from app.service.fairness import CLASS, shared
 from app.service.user_checks import InvalidSystem
@@ -303,5 +304,10 @@ class Classroom:
 
 
 def public(found: list[dict[str, Any]]) -> list[dict[str, Any]]:
-    """The series as the API shows it (without the database's ids)."""
-    return [{k: v for k, v in a.items() if k != "id"} for a in found]
+    """The series as the API shows it (without the database's ids); a typed system's item with ``given``, its
+    defining data typeset for the students (app/service/classroom/setup.py)."""
+    return [{k: v for k, v in a.items() if k != "id"} | {"items": [_shown(i) for i in a["items"]]} for a in found]
+
+
+def _shown(item: dict[str, Any]) -> dict[str, Any]:
+    return item if item.get("system") is None else item | {"given": givens(item)}

@@ -155,6 +155,7 @@ def _item_rows(class_id: int, assignment_id: int, items: list[dict[str, Any]]) -
             system=None if item.get("system") is None else json.dumps(item["system"]),
             steps=json.dumps(item["steps"]),
             parameters=json.dumps(item.get("parameters") or {}),
+            setup=item.get("setup"),
         )
         for position, item in enumerate(items)
     ]
@@ -164,6 +165,8 @@ def _item_entry(row: AssignmentRow) -> dict[str, Any]:
     entry: dict[str, Any] = (
         {"scene": row.item} if row.system is None else {"name": row.item, "system": json.loads(row.system)}
     )
+    if row.system is not None:  # a typed system's set-up (None: assigned before set-ups were asked for)
+        entry["setup"] = row.setup
     return entry | {"steps": json.loads(row.steps), "parameters": json.loads(row.parameters)}
 
 
