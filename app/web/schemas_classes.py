@@ -58,6 +58,22 @@ class JoinRequest(BaseModel):
     name: Pseudonym = Field(description="A pseudonym, unique in the class; no account, no e-mail.")
 
 
+class RejoinRequest(BaseModel):
+    model_config = ConfigDict(**STRICT, json_schema_extra={"example": {"name": "Ada", "recovery_code": "ACEF-HKMN-PRTW"}})
+    name: Pseudonym = Field(description="The pseudonym the student joined with.")
+    recovery_code: str = Field(min_length=1, max_length=40, description="The student's recovery code from joining.")
+
+
+class StudentCodeRequest(BaseModel):
+    model_config = ConfigDict(**STRICT, json_schema_extra={"example": {"name": "Ada"}})
+    name: Pseudonym = Field(description="The student's pseudonym.")
+
+
+class StudentCode(BaseModel):
+    name: str
+    recovery_code: str = Field(description="The student's new recovery code (their old one no longer works).")
+
+
 class StepRef(BaseModel):
     model_config = ConfigDict(**STRICT)
     step: Step
@@ -276,6 +292,10 @@ class Students(BaseModel):
 class Joined(BaseModel):
     model_config = ConfigDict(extra="allow")
     student_key: str = Field(description="The student's secret: send it as `Authorization: Bearer <key>`.")
+    recovery_code: str | None = Field(
+        None, description="At joining only, shown once: with the pseudonym, POST …/rejoin opens the record again on "
+        "another device (the server keeps only its hash)."
+    )
     code: str
     title: str
     name: str

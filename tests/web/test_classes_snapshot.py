@@ -62,7 +62,7 @@ def test_the_summary_adds_up_while_answers_arrive(client, services, tmp_path, re
                 for n in range(STUDENTS_EACH):
                     if stop.wait(PACE):
                         return
-                    _, who = store.join(room.db, code, f"writer {w} student {n}")
+                    _, who, _code = store.join(room.db, code, f"writer {w} student {n}")
                     new_step = f"q{w}_{n}"  # a step no one answered before
                     store.record(room.db, who, SCENE, "equation", new_step, "correct", None, "0")
                     store.record(room.db, who, SCENE, "kinetic", None, "incorrect", "missing_half", "T", "the ½ left out")

@@ -56,6 +56,8 @@ class StudentRow(Base):
     name: Mapped[str] = mapped_column(String(40))
     key_hash: Mapped[str] = mapped_column(String(64), unique=True)
     joined_at: Mapped[datetime] = mapped_column(DateTime)
+    # the SHA-256 of the student's recovery code (migration 0007; None: joined before, or no code given yet)
+    recovery_hash: Mapped[str | None] = mapped_column(String(64), nullable=True)
 
 
 class AssignmentRow(Base):

@@ -210,10 +210,24 @@ class Classroom:
 
     async def join(self, code: str, name: str, client: str, address: str) -> dict[str, Any]:
         await self._count_join(code, client, address)
-        student_key, who = await self._db(store.join, code, name)
+        student_key, who, recovery = await self._db(store.join, code, name)
+        return await self._joined(student_key, who, name) | {"recovery_code": recovery}
+
+    async def rejoin(self, code: str, name: str, recovery: str, client: str, address: str) -> dict[str, Any]:
+        """A student's record on another device, from their pseudonym and recovery code; tries count as joins."""
+        await self._count_join(code, client, address)
+        student_key, who = await self._db(store.rejoin, code, name, recovery)
+        return await self._joined(student_key, who, name)
+
+    async def _joined(self, student_key: str, who: store.Access, name: str) -> dict[str, Any]:
         found = await self._db(store.series, who.class_id)
         return {"student_key": student_key, "code": who.code, "title": who.title, "name": name,
                 "assignment": found[0]["items"] if found else [], "assignments": public(found)}
+
+    async def new_student_code(self, code: str, key: str | None, name: str) -> dict[str, str]:
+        """A new recovery code for a student, for their teacher to hand over (the old code stops working)."""
+        who = await self._db(self._who, code, key, True)
+        return {"name": name, "recovery_code": await self._db(store.new_student_code, who.class_id, name)}
 
     async def view(self, code: str, key: str | None) -> dict[str, Any]:
         """The class as its key sees it: title and assignment, and for a student their own progress."""

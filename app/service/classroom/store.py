@@ -111,25 +111,64 @@ def access(db: Database, code: str, key: str) -> Access:
     raise WrongKey("this key does not open this class (check the class code and the key)")
 
 
-def join(db: Database, code: str, name: str) -> tuple[str, Access]:
-    """A new student of the class: their key, and the class."""
+def join(db: Database, code: str, name: str) -> tuple[str, Access, str]:
+    """A new student of the class: their key, the class, and their recovery code (the only time it is seen)."""
     normal = keys.normal_code(code)
     if normal is None:
         raise UnknownClass(
             f"“{code.strip()[:20]}” is not a class code: {keys.why_not_code(code)}; check the code on the board"
         )
     student_key = keys.new_key()
+    recovery = keys.new_recovery_code(keys.STUDENT_RECOVERY_LENGTH)
     try:
-        return student_key, _add_student(db, normal, name, student_key)
+        return student_key, _add_student(db, normal, name, student_key, recovery), recovery
     except IntegrityError:  # the same name joined at the same moment
         raise _taken(name) from None
 
 
 def _taken(name: str) -> Refused:
-    return Refused(f"the name {name!r} is taken in this class; choose another", name, ("name",))
+    return Refused(
+        f"the name {name!r} is taken in this class: if it is yours, choose “I joined before on another device” "
+        "and type your recovery code (or ask your teacher for a new one); else choose another name",
+        name, ("name",),
+    )
 
 
-def _add_student(db: Database, normal: str, name: str, student_key: str) -> Access:
+def rejoin(db: Database, code: str, name: str, recovery: str) -> tuple[str, Access]:
+    """A student's record opened on another device: a new key for it (the old device's key no longer opens it),
+    from the pseudonym and the student's recovery code; WrongKey for anything else, after the same work."""
+    normal = keys.normal_code(code) or ""
+    typed = keys.normal_recovery(recovery, keys.STUDENT_RECOVERY_LENGTH)
+    if typed is None:  # its shape is public: saying what is wrong with it tells nothing of the class
+        raise WrongKey(keys.why_not_recovery(recovery, keys.STUDENT_RECOVERY_LENGTH))
+    student_key = keys.new_key()
+    with db.session() as session:
+        found = session.execute(
+            select(ClassRow.id, ClassRow.code, ClassRow.title, StudentRow)
+            .join(StudentRow, StudentRow.class_id == ClassRow.id)
+            .where(ClassRow.code == normal, StudentRow.name == name)
+        ).first()
+        stored = found.StudentRow.recovery_hash if found and found.StudentRow.recovery_hash else keys.NO_CLASS_HASH
+        if found is None or not hmac.compare_digest(stored, keys.digest(typed)):
+            raise WrongKey("this pseudonym and recovery code do not open a record of this class (check the class "
+                           "code, your pseudonym as you typed it when you joined, and the code; or ask your teacher "
+                           "for a new code)")
+        found.StudentRow.key_hash = keys.digest(student_key)
+        return student_key, Access(found.id, found.code, found.title, found.StudentRow.id, name)
+
+
+def new_student_code(db: Database, class_id: int, name: str) -> str:
+    """A new recovery code for a student of the class (their teacher gives it: the old one stops working)."""
+    recovery = keys.new_recovery_code(keys.STUDENT_RECOVERY_LENGTH)
+    with db.session() as session:
+        student = session.scalar(select(StudentRow).where(StudentRow.class_id == class_id, StudentRow.name == name))
+        if student is None:
+            raise Refused(f"no student of this class has the pseudonym {name!r}", name, ("name",))
+        student.recovery_hash = keys.digest(keys.normal_recovery(recovery, keys.STUDENT_RECOVERY_LENGTH) or "")
+    return recovery
+
+
+def _add_student(db: Database, normal: str, name: str, student_key: str, recovery: str) -> Access:
     with db.session() as session:
         found = session.execute(select(ClassRow.id, ClassRow.title).where(ClassRow.code == normal)).first()
         if found is None:
@@ -139,7 +178,8 @@ def _add_student(db: Database, normal: str, name: str, student_key: str) -> Acce
         )
         if taken:
             raise _taken(name)
-        student = StudentRow(class_id=found.id, name=name, key_hash=keys.digest(student_key), joined_at=now())
+        student = StudentRow(class_id=found.id, name=name, key_hash=keys.digest(student_key), joined_at=now(),
+                             recovery_hash=keys.digest(keys.normal_recovery(recovery, keys.STUDENT_RECOVERY_LENGTH) or ""))
         session.add(student)
         session.flush()
         return Access(found.id, normal, found.title, student.id, name)
