@@ -222,6 +222,8 @@ async function load() {
 }
 
 function leave(message) {
+  $("join-recovery").hidden = true;
+  $("join-recovery-code").textContent = "";
   current = null;
   memory.set(null);
   show();
@@ -262,19 +264,58 @@ $("join-form").addEventListener("submit", async (event) => {
   }
   if (r.status !== 200) {
     $("join-status").textContent = r.data?.detail || `Not joined (${r.status}).`;
+    if (r.status === 422 && String(r.data?.detail).includes(" is taken in this class")) {
+      // the name is taken: perhaps it is theirs, from another device; the way back is opened, filled in
+      $("rejoin-code").value = code;
+      $("rejoin-name").value = name;
+      $("join-again").open = true;
+    }
     return;
   }
+  await enter(r);
+  // shown once: the server keeps only its hash
+  $("join-recovery-code").textContent = r.data.recovery_code;
+  $("join-recovery").hidden = false;
+});
+
+/** Joined (or back on another device): the key kept in this browser, the class loaded. */
+async function enter(r) {
   $("join-status").textContent = "";
   current = { code: r.data.code, key: r.data.student_key, name: r.data.name, title: r.data.title };
   memory.set(current);
   show();
   await load();
+}
+
+$("join-recovery-done").addEventListener("click", () => {
+  $("join-recovery").hidden = true;
+  $("join-recovery-code").textContent = "";
+});
+
+$("rejoin-form").addEventListener("submit", async (event) => {
+  event.preventDefault();
+  const code = $("rejoin-code").value.trim();
+  const body = { name: $("rejoin-name").value.trim(), recovery_code: $("rejoin-recovery").value.trim() };
+  $("join-status").textContent = "Opening your record…";
+  let r;
+  try {
+    r = await api("POST", `/api/classes/${encodeURIComponent(code)}/rejoin`, { body });
+  } catch {
+    $("join-status").textContent = "The server cannot be reached.";
+    return;
+  }
+  if (r.status !== 200) {
+    const detail = r.data?.detail || `Not opened (${r.status}).`;
+    $("join-status").textContent = `${detail.charAt(0).toUpperCase()}${detail.slice(1)}`;
+    return;
+  }
+  await enter(r);
 });
 
 $("leave-class").addEventListener("click", () => leave("You left the class on this device."));
 
 const asked = new URLSearchParams(window.location.search).get("code");
-if (asked) $("join-code").value = asked;
+if (asked) $("join-code").value = $("rejoin-code").value = asked;
 if (asked && current && current.code !== asked.trim().toUpperCase()) leave(""); // a link to another class
 show();
 if (current) load();

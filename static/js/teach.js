@@ -306,6 +306,28 @@ function drawAssignments(summary) {
     el("td", { className: "dash-stuck", text: a.students_stuck.length ? a.students_stuck.join(", ") : "—" }))));
 }
 
+const codes = new Map(); // a student's new recovery code, given this session: shown beside their name until reload
+
+/** "New code": a new recovery code for a student who lost theirs (the server keeps only hashes, so the old one
+ *  cannot be shown again, and it stops working). */
+function codeButton(name) {
+  const given = codes.get(name);
+  if (given) return el("code", { className: "dash-code", text: given });
+  const button = el("button", { type: "button", className: "link-button dash-new-code", text: "new code",
+    "aria-label": `A new recovery code for ${name} (their old one stops working; asks first)` });
+  button.addEventListener("click", async () => {
+    if (!window.confirm(`Give ${name} a new recovery code? Their old code stops working.`)) return;
+    const r = await api("POST", `/api/classes/${current.code}/students/recovery`, { key: current.key, body: { name } });
+    if (r.status !== 200) {
+      refuse(r, "data-status");
+      return;
+    }
+    codes.set(name, r.data.recovery_code);
+    button.replaceWith(el("code", { className: "dash-code", text: r.data.recovery_code }));
+  });
+  return button;
+}
+
 async function drawStudents(students) {
   const rows = [];
   for (const s of students) {
@@ -319,8 +341,8 @@ async function drawStudents(students) {
       cell.append(typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` }),
         el("span", { text: last.done ? " ✓ done" : " · not yet right" }));
     } else cell.textContent = "—";
-    rows.push(el("tr", {},
-      el("th", { scope: "row", text: s.name }),
+    rows.push(el("tr", { "data-student": s.name },
+      el("th", { scope: "row" }, s.name, " ", codeButton(s.name)),
       el("td", { text: s.assigned ? `${s.done} of ${s.assigned}` : String(s.done) }),
       // every answer sent, those the checker could not read said apart (they are never counted wrong)
       el("td", { text: s.not_read ? `${s.attempts} (${s.not_read} not read)` : String(s.attempts) }),
