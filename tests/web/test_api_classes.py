@@ -251,10 +251,10 @@ def test_answers_that_could_not_be_read_are_counted_never_as_wrong(client, class
     assert client.put(f"/api/classes/{code}/assignment", json=items, headers=bearer(teacher)).status_code == 200
     ada, bo = join(client, code, "Ada"), join(client, code, "Bo")
     unreadable = ["1/2m R^2 theta_dot^2", "m R^2 theta_dot^2/2)", "=m*g", "m*r**2"]
-    for n, text in enumerate(unreadable):
-        refused = check(client, code, ada, text, attempt=f"press-000{n}-ada")
-        practice = client.post(f"/api/scenes/{SCENE}/check", json={"step": "kinetic", "answer": text})
-        assert refused.status_code == practice.status_code == 422 and refused.json() == practice.json(), text
+    for n, typed in enumerate(unreadable):
+        refused = check(client, code, ada, typed, attempt=f"press-000{n}-ada")
+        practice = client.post(f"/api/scenes/{SCENE}/check", json={"step": "kinetic", "answer": typed})
+        assert refused.status_code == practice.status_code == 422 and refused.json() == practice.json(), typed
     # the page sends a press again (no verdict came back): the same refusal, nothing recorded twice
     again = check(client, code, ada, unreadable[0], attempt="press-0000-ada")
     assert again.status_code == 422 and again.json() == check(client, code, ada, unreadable[0]).json()
