@@ -505,12 +505,6 @@ $("assign-save").addEventListener("click", async () => {
   $("assign-system-status").textContent = "";
   const typed = readSystem();
   if (!typed && $("assign-system").value.trim()) return; // not JSON: said at the system's box
-  if (typed && !typed.setup) {
-    // the set-up is what the students cannot do without: said at the system's box before anything is sent
-    $("assign-system-status").textContent = NO_SETUP;
-    $("assign-system-setup").focus();
-    return;
-  }
   if (typed) {
     // none ticked: every step, as for a scene (its steps loaded if "Show its steps" was not pressed)
     let steps = ticked($("assign-system-steps"));
@@ -518,6 +512,12 @@ $("assign-save").addEventListener("click", async () => {
       const practice = await systemPractice(typed);
       if (!practice) return;
       steps = practice.exercises.map((e) => ({ step: e.step, ...(e.coordinate ? { coordinate: e.coordinate } : {}) }));
+    }
+    if (!typed.setup) {
+      // the set-up is what the students cannot do without: said at the system's box before anything is sent
+      $("assign-system-status").textContent = NO_SETUP;
+      $("assign-system-setup").focus();
+      return;
     }
     items.push({ ...typed, steps });
   }
