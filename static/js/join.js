@@ -158,6 +158,23 @@ function stepView(a, item, practice, s, index) {
 
 const when = (iso) => new Date(iso).toLocaleString([], { dateStyle: "medium", timeStyle: "short" });
 
+/** A typed system's set-up, above its boxes: the instructor's words (its coordinates, from where, the zero of U),
+ *  then what the system is defined by, typeset (the server leaves out what a step asks for). */
+function setupView(item) {
+  const box = el("div", { className: "join-setup" });
+  if (item.setup) {
+    box.append(el("h4", { text: "The set-up" }),
+      ...item.setup.split(/\n+/).map((line) => el("p", { text: line })));
+  }
+  const given = item.given || [];
+  if (given.length) {
+    box.append(el("p", { className: "help", text: "The system:" }),
+      el("ul", { className: "join-given" }, ...given.map((g) => el("li", {},
+        g.label ? el("span", { text: `${g.label}: ` }) : "", typeset(el("span"), g.latex)))));
+  }
+  return box;
+}
+
 async function drawItems() {
   const holder = $("join-items");
   const parts = [];
@@ -173,6 +190,7 @@ async function drawItems() {
       // the page in practice mode, in a tab of its own: the set-up and the figure, the derivation hidden (inst-b 24:
       // the plain page printed every answer of the assignment), and the class page stays where it was
       if (item.scene) section.append(el("p", {}, el("a", { href: `/scenes/${item.scene}#practice=on`, target: "_blank", rel: "noopener", text: "The scene's set-up and figure" }), " (its page in practice mode, in a new tab: the derivation stays hidden)."));
+      else section.append(setupView(item));
       const values = Object.entries(item.parameters || {});
       if (values.length) section.append(el("p", { className: "help", text: `Take ${values.map(([k, v]) => `${k} = ${v}`).join(", ")}.` }));
       try {
@@ -218,6 +236,8 @@ async function load() {
 }
 
 function leave(message) {
+  $("join-recovery").hidden = true;
+  $("join-recovery-code").textContent = "";
   current = null;
   memory.set(null);
   show();
@@ -258,19 +278,58 @@ $("join-form").addEventListener("submit", async (event) => {
   }
   if (r.status !== 200) {
     $("join-status").textContent = r.data?.detail || `Not joined (${r.status}).`;
+    if (r.status === 422 && String(r.data?.detail).includes(" is taken in this class")) {
+      // the name is taken: perhaps it is theirs, from another device; the way back is opened, filled in
+      $("rejoin-code").value = code;
+      $("rejoin-name").value = name;
+      $("join-again").open = true;
+    }
     return;
   }
+  await enter(r);
+  // shown once: the server keeps only its hash
+  $("join-recovery-code").textContent = r.data.recovery_code;
+  $("join-recovery").hidden = false;
+});
+
+/** Joined (or back on another device): the key kept in this browser, the class loaded. */
+async function enter(r) {
   $("join-status").textContent = "";
   current = { code: r.data.code, key: r.data.student_key, name: r.data.name, title: r.data.title };
   memory.set(current);
   show();
   await load();
+}
+
+$("join-recovery-done").addEventListener("click", () => {
+  $("join-recovery").hidden = true;
+  $("join-recovery-code").textContent = "";
+});
+
+$("rejoin-form").addEventListener("submit", async (event) => {
+  event.preventDefault();
+  const code = $("rejoin-code").value.trim();
+  const body = { name: $("rejoin-name").value.trim(), recovery_code: $("rejoin-recovery").value.trim() };
+  $("join-status").textContent = "Opening your record…";
+  let r;
+  try {
+    r = await api("POST", `/api/classes/${encodeURIComponent(code)}/rejoin`, { body });
+  } catch {
+    $("join-status").textContent = "The server cannot be reached.";
+    return;
+  }
+  if (r.status !== 200) {
+    const detail = r.data?.detail || `Not opened (${r.status}).`;
+    $("join-status").textContent = `${detail.charAt(0).toUpperCase()}${detail.slice(1)}`;
+    return;
+  }
+  await enter(r);
 });
 
 $("leave-class").addEventListener("click", () => leave("You left the class on this device."));
 
 const asked = new URLSearchParams(window.location.search).get("code");
-if (asked) $("join-code").value = asked;
+if (asked) $("join-code").value = $("rejoin-code").value = asked;
 if (asked && current && current.code !== asked.trim().toUpperCase()) leave(""); // a link to another class
 show();
 if (current) load();

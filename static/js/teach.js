@@ -28,6 +28,8 @@ let series = [];
 const NO_KEY = "Type the recovery code or the instructor key you were given when you made the class; "
   + "a teacher link cut short (as some mail programs do) misses part of it.";
 const NOTHING_SET = "Tick at least one scene or add a typed system.";
+const NO_SETUP = "Write the system's set-up: what each coordinate is, where it is measured from, and where U = 0 "
+  + "(students read it above the boxes).";
 /** The parts of a typed system (the playground's JSON), as the page names them. */
 const SYSTEM_PARTS = {
   coordinates: "The coordinates", parameters: "The parameters", lagrangian: "The Lagrangian L",
@@ -55,6 +57,7 @@ function refusal(r, at) {
   }
   if (loc[0] === "items" && loc.length === 1 && data.errors) return { at: "assign-status", text: NOTHING_SET };
   if (loc[0] === "items" && loc[2] === "name") return { at: "assign-system-status", text: "Name the system: students see it by its name." };
+  if (loc[0] === "items" && loc[2] === "setup") return { at: "assign-system-status", text: NO_SETUP };
   if (loc[0] === "title") return { at: "assign-status", text: "Give the assignment a title (200 characters at most)." };
   return { at, text: said ? `${capital(said)}.`.replace(/([.!?])\.$/, "$1") : `Refused (${r.status}).` };
 }
@@ -230,14 +233,15 @@ let everyStep = false; // "Show every step" pressed: the steps nobody has answer
 /** A step's figures, each count in one unit: students for done and stuck, answers for right and wrong. */
 function stepNumbers(entry, students) {
   return `${entry.students_done} of ${plural(students, "student")} done, ${entry.stuck} stuck; `
-    + `${plural(entry.correct, "right answer")}, ${entry.incorrect} wrong`;
+    + `${plural(entry.correct, "right answer")}, ${entry.incorrect} wrong`
+    + (entry.not_read ? `, ${entry.not_read} not read` : "");
 }
 
 async function drawSteps(summary) {
   const list = $("dash-steps");
   const rows = [];
   // a step with no answer yet says nothing about the class: listed only on "Show every step"
-  const idle = (entry) => !entry.correct && !entry.incorrect && !entry.students_done && !entry.stuck;
+  const idle = (entry) => !entry.correct && !entry.incorrect && !entry.not_read && !entry.students_done && !entry.stuck;
   const quiet = summary.steps.filter(idle).length;
   const toggle = $("dash-steps-all");
   toggle.hidden = !quiet;
@@ -302,6 +306,28 @@ function drawAssignments(summary) {
     el("td", { className: "dash-stuck", text: a.students_stuck.length ? a.students_stuck.join(", ") : "—" }))));
 }
 
+const codes = new Map(); // a student's new recovery code, given this session: shown beside their name until reload
+
+/** "New code": a new recovery code for a student who lost theirs (the server keeps only hashes, so the old one
+ *  cannot be shown again, and it stops working). */
+function codeButton(name) {
+  const given = codes.get(name);
+  if (given) return el("code", { className: "dash-code", text: given });
+  const button = el("button", { type: "button", className: "link-button dash-new-code", text: "new code",
+    "aria-label": `A new recovery code for ${name} (their old one stops working; asks first)` });
+  button.addEventListener("click", async () => {
+    if (!window.confirm(`Give ${name} a new recovery code? Their old code stops working.`)) return;
+    const r = await api("POST", `/api/classes/${current.code}/students/recovery`, { key: current.key, body: { name } });
+    if (r.status !== 200) {
+      refuse(r, "data-status");
+      return;
+    }
+    codes.set(name, r.data.recovery_code);
+    button.replaceWith(el("code", { className: "dash-code", text: r.data.recovery_code }));
+  });
+  return button;
+}
+
 async function drawStudents(students) {
   const rows = [];
   for (const s of students) {
@@ -315,10 +341,11 @@ async function drawStudents(students) {
       cell.append(typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` }),
         el("span", { text: last.done ? " ✓ done" : " · not yet right" }));
     } else cell.textContent = "—";
-    rows.push(el("tr", {},
-      el("th", { scope: "row", text: s.name }),
+    rows.push(el("tr", { "data-student": s.name },
+      el("th", { scope: "row" }, s.name, " ", codeButton(s.name)),
       el("td", { text: s.assigned ? `${s.done} of ${s.assigned}` : String(s.done) }),
-      el("td", { text: String(s.attempts) }),
+      // every answer sent, those the checker could not read said apart (they are never counted wrong)
+      el("td", { text: s.not_read ? `${s.attempts} (${s.not_read} not read)` : String(s.attempts) }),
       cell));
   }
   $("dash-students").tBodies[0].replaceChildren(...rows);
@@ -422,7 +449,7 @@ async function reloadSeries() {
 function typedSystem() {
   const text = $("assign-system").value.trim();
   if (!text) return null;
-  return { name: $("assign-system-name").value.trim(), system: JSON.parse(text) };
+  return { name: $("assign-system-name").value.trim(), system: JSON.parse(text), setup: $("assign-system-setup").value.trim() };
 }
 
 /** The typed system read from its box, or null with the reason said at the box (not JSON, or empty). */
@@ -486,6 +513,12 @@ $("assign-save").addEventListener("click", async () => {
       if (!practice) return;
       steps = practice.exercises.map((e) => ({ step: e.step, ...(e.coordinate ? { coordinate: e.coordinate } : {}) }));
     }
+    if (!typed.setup) {
+      // the set-up is what the students cannot do without: said at the system's box before anything is sent
+      $("assign-system-status").textContent = NO_SETUP;
+      $("assign-system-setup").focus();
+      return;
+    }
     items.push({ ...typed, steps });
   }
   if (!items.length) {
@@ -503,6 +536,7 @@ $("assign-save").addEventListener("click", async () => {
   $("assign-due").value = "";
   $("assign-system").value = "";
   $("assign-system-name").value = "";
+  $("assign-system-setup").value = "";
   $("assign-system-steps").replaceChildren();
   $("assign-system-status").textContent = "";
   buildEditor();

@@ -70,6 +70,7 @@ def test_an_assignment_graded_and_the_class_opened_elsewhere(browser, live_serve
     teacher.click("#assign-system-box summary")
     teacher.fill("#assign-system-name", "spring")
     teacher.fill("#assign-system", json.dumps(SPRING))
+    teacher.fill("#assign-system-setup", "x is the stretch of the spring from its natural length; U = 0 at x = 0.")
     teacher.click("#assign-system-load")
     teacher.check('#assign-system-steps input[data-step="acceleration"]')
     teacher.click("#assign-save")

@@ -266,11 +266,20 @@ def test_an_equation_typed_as_a_textbook_writes_it_is_checked_and_a_refusal_is_s
     verdict.locator(".verdict-head").wait_for()
     assert verdict.get_attribute("data-verdict") == "correct"
 
+    # ½ typed as students type it, with a space before the mass, is a coefficient: typeset ½ m R² θ̇², checked
     answer(page, "kinetic", "1/2 m R^2 theta_dot^2")
+    half = page.locator(STEP.format("kinetic") + " .practice-preview-math")
+    page.wait_for_function(f"document.querySelector('{STEP.format('kinetic')}').dataset.typeset === 'read'")
+    shown = half.evaluate("el => el.querySelector('annotation')?.textContent ?? el.textContent")
+    assert shown.removeprefix(r"\displaystyle ") == r"T = \frac{1}{2} m R^{2} \dot{\theta}^{2}"
+    verdict_of(page, "kinetic").locator(".verdict-head").wait_for()
+    assert verdict_of(page, "kinetic").get_attribute("data-verdict") == "correct"
+    # glued to the mass it reads two ways, and the refusal says the space that decides
+    answer(page, "kinetic", "1/2m R^2 theta_dot^2")
     refused = verdict_of(page, "kinetic")
     refused.locator("mark").wait_for()
     said = refused.locator(".verdict-head").inner_text()
-    assert said.startswith("Not checked: a factor after a quotient") and said.endswith("write 1/2 as (1/2).")
+    assert said.startswith("Not checked: a factor after a quotient") and said.endswith("put a space after 1/2.")
     assert "column" not in said and "answer:" not in said
     assert page.locator(STEP.format("kinetic") + " .practice-preview-note").inner_text() == ""  # said once
     page.locator(STEP.format("kinetic")).screenshot(path=artifacts / "practice-refused-once-390.png")

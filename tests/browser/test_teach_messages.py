@@ -96,6 +96,10 @@ def test_refusals_are_said_in_words_at_the_box_they_concern(browser, live_server
     page.wait_for_selector('#assign-system-steps input[data-step="kinetic"]')
     assert _status(page, "assign-system-status") == ""
 
+    # no set-up: said at the system's box before anything is sent
+    page.click("#assign-save")
+    assert _status(page, "assign-system-status").startswith("Write the system's set-up: what each coordinate is")
+    page.fill("#assign-system-setup", "x is the stretch of the spring from its natural length; U = 0 at x = 0.")
     # no step ticked: every step of the system, as for a scene
     page.click("#assign-save")
     page.wait_for_function("document.getElementById('assign-status').textContent.startsWith('Added: 1.')")

@@ -47,10 +47,11 @@ def test_what_cannot_be_read_is_said_plainly(text, step, says, marked):
     assert text[error.start : error.end] == marked
 
 
-def test_half_typed_without_brackets_is_told_how_to_type_it():
+def test_half_glued_to_a_factor_is_told_how_to_type_it():
     with pytest.raises(CheckError) as refused:
-        read_answer("1/2 m R^2 theta_dot^2", "kinetic", None, KINDS)
-    assert str(refused.value).endswith("write 1/2 as (1/2)") and "column" not in str(refused.value)
+        read_answer("1/2m R^2 theta_dot^2", "kinetic", None, KINDS)
+    said = str(refused.value)
+    assert said.endswith("for the first, put a space after 1/2") and "column" not in said
 
 
 @pytest.mark.parametrize(
@@ -74,7 +75,7 @@ def test_a_derivative_an_acceleration_on_the_right_and_a_fraction_are_said_in_a_
 
 def test_the_readings_of_an_ambiguous_text_write_python_powers_as_a_reader_does():
     with pytest.raises(CheckError) as refused:
-        read_answer("1/2 m R**2 theta_dot**2", "kinetic", None, KINDS)
+        read_answer("1/2m R**2 theta_dot**2", "kinetic", None, KINDS)
     said = str(refused.value)
     assert "could be read as (1/2) m R² θ" in said or "could be read as (1/2) m R² theta" in said
     assert "**" not in said.split("could be read as")[1]

@@ -156,6 +156,31 @@ def test_an_equation_is_taken_as_a_textbook_writes_it(client):
     assert system.status_code == 200 and system.json()["verdict"] == "correct"
 
 
+@pytest.mark.parametrize(
+    ("text", "latex"),
+    [
+        ("1/2 m R^2 theta_dot^2", r"\frac{1}{2} m R^{2} \dot{\theta}^{2}"),
+        ("1/2 m (R θ̇)^2", r"\frac{1}{2} m \left(R \dot{\theta}\right)^{2}"),
+    ],
+)
+def test_half_typed_as_students_type_it_is_the_pendulums_kinetic_energy(client, text, latex):
+    # issue 45: a fraction of numbers before a spaced factor is a coefficient, read and typeset as ½ m R² θ̇²
+    verdict = check(client, {"step": "kinetic", "answer": text})
+    assert verdict.status_code == 200 and verdict.json()["verdict"] == "correct", verdict.text
+    shown = client.post("/api/typeset", json={"text": text, "step": "kinetic", "scene": "simple-pendulum"})
+    assert shown.status_code == 200 and shown.json() == {"latex": latex}
+    # glued to the mass it reads two ways, and is said so
+    glued = check(client, {"step": "kinetic", "answer": text.replace("1/2 m", "1/2m")})
+    assert glued.status_code == 422 and glued.json()["readings"][1].startswith("1/(2 m")
+
+
+def test_a_quotient_before_a_function_is_its_coefficient(client):
+    right = check(client, {"step": "equation", "coordinate": "theta", "answer": "theta_ddot = -g/R sin(theta)"})
+    assert right.status_code == 200 and right.json()["verdict"] == "correct", right.text
+    spaced = check(client, {"step": "acceleration", "coordinate": "theta", "answer": "-g/R sin θ"})
+    assert spaced.status_code == 200 and spaced.json()["verdict"] == "correct", spaced.text
+
+
 def test_a_sign_diagnosis_quotes_only_a_term_the_student_typed(client):
     # student-e, 3: g sin θ on the right of '=' (divided through by m l) was quoted as "your term −m g l sin(θ)"
     typed = "l*theta_ddot + X_ddot*cos(theta) = g*sin(theta)"

@@ -18,6 +18,7 @@ from tests.web.test_api_classes import RIGHT_T, SCENE, WRONG_T, bearer, join
 
 RIGHT_U = "-m*g*R*cos(theta)"
 SPRING = {"coordinates": ["x"], "parameters": ["m", "k"], "kinetic": "m*x_dot**2/2", "potential": "k*x**2/2"}
+SETUP = "x is the stretch of the spring from its natural length; U = 0 at x = 0."
 LATER = (datetime.now(UTC) + timedelta(days=7)).replace(microsecond=0)
 DUE = LATER.isoformat().replace("+00:00", "Z")
 
@@ -57,7 +58,7 @@ def test_a_series_its_progress_and_its_grades(client, classes):
     assert r.headers["location"] == f"/api/classes/{code}/assignments/1"
     assert (r.json()["n"], r.json()["title"], r.json()["due"]) == (1, week1["title"], LATER.replace(tzinfo=None).isoformat() + "Z")
     week2 = {"title": "Week 2", "items": [
-        {"system": SPRING, "name": "spring", "steps": [{"step": "acceleration", "coordinate": "x"}]},
+        {"system": SPRING, "name": "spring", "steps": [{"step": "acceleration", "coordinate": "x"}], "setup": SETUP},
         {"scene": SCENE, "steps": [{"step": "kinetic"}]}]}  # the pendulum's T again: answered apart from week 1
     assert client.post(f"/api/classes/{code}/assignments", json=week2, headers=bearer(teacher)).json()["n"] == 2
     series = client.get(f"/api/classes/{code}/assignments", headers=bearer(teacher)).json()["assignments"]

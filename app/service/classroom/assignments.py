@@ -3,7 +3,8 @@ checked before it is stored, and how a student's check finds its item in it.
 
 An item is ``{"scene": id}`` or ``{"system": <as POST /api/derive>, "name": label}``, with ``steps``
 (``[{"step", "coordinate"}]``; for a scene, none means every step of its practice) and ``parameters``
-(``{name: value}``, shown to the students).  Refusals are located under ``items.<i>``.  Runs in a thread:
+(``{name: value}``, shown to the students), and for a system its ``setup`` (required: app/service/classroom/setup.py).
+Refusals are located under ``items.<i>``.  Runs in a thread:
 a scene's exercises come from its cached derivation.
 
 A class holds a series of assignments, each with its items; ``find_target`` says which assignment and item of
@@ -20,6 +21,7 @@ from typing import Any
 from app.engine.check import PER_COORDINATE, STEPS
 from app.errors import Refused, UnknownScene
 from app.service.checking import Checking, declared
+from app.service.classroom.setup import checked_setup
 from app.service.user_checks import InvalidSystem
 
 MAX_ITEMS = 20
@@ -56,6 +58,7 @@ def _scene_item(checking: Checking, i: int, item: dict[str, Any]) -> dict[str, A
     for name in item.get("parameters") or {}:
         if name not in names:
             raise _refuse(f"{name!r} is not a name of the scene {scene}", i, "parameters", name)
+    checked_setup(i, item)  # a scene has none: its page sets it up
     return {"item": scene, "system": None, "steps": steps, "parameters": item.get("parameters") or {}}
 
 
@@ -79,7 +82,8 @@ def _system_item(i: int, item: dict[str, Any]) -> dict[str, Any]:
             raise _refuse(f"{name!r} is not a parameter of this system", i, "parameters", name)
     clean = [{"step": s["step"], "coordinate": s.get("coordinate") if s["step"] in PER_COORDINATE else None}
              for s in steps]
-    return {"item": item["name"], "system": item["system"], "steps": clean, "parameters": item.get("parameters") or {}}
+    return {"item": item["name"], "system": item["system"], "steps": clean, "parameters": item.get("parameters") or {},
+            "setup": checked_setup(i, item)}
 
 
 def checked_items(checking: Checking, items: list[dict[str, Any]]) -> list[dict[str, Any]]:

@@ -32,7 +32,7 @@ from sqlalchemy import case, func, literal, null, select, union_all
 from app.service.classroom.database import Database
 from app.service.classroom.models import AttemptRow, HintRow, StudentRow
 from app.service.classroom.reports import FORMULA_START, assigned_keys
-from app.service.classroom.store import DONE
+from app.service.classroom.store import DONE, NOT_READ
 
 POINTS = 100  # an assignment's score is out of this many points
 PARTS = (("first_try", "right first try"), ("right", "right"), ("shown", "shown"), ("steps", "steps"))
@@ -47,7 +47,8 @@ def _rows(db: Database, class_id: int) -> list[Any]:
                AttemptRow.step, func.coalesce(AttemptRow.coordinate, ""), literal("answer"),
                func.min(AttemptRow.id), func.min(case((right, AttemptRow.id))), func.min(case((right, AttemptRow.at))))
         .select_from(StudentRow)
-        .outerjoin(AttemptRow, AttemptRow.student_id == StudentRow.id)
+        # an answer not read was never judged: neither a try nor a wrong answer in the gradebook
+        .outerjoin(AttemptRow, (AttemptRow.student_id == StudentRow.id) & (AttemptRow.verdict != NOT_READ))
         .where(StudentRow.class_id == class_id)
         .group_by(StudentRow.id, StudentRow.name, StudentRow.joined_at, AttemptRow.assignment_id, AttemptRow.item,
                   AttemptRow.step, AttemptRow.coordinate)

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import csv
 import io
+import json
 from collections import defaultdict
 from typing import Any
 
@@ -20,7 +21,7 @@ from sqlalchemy import func, select
 from app.scenes import SCENES
 from app.service.classroom.database import Database
 from app.service.classroom.models import AttemptRow, StudentRow
-from app.service.classroom.store import DONE
+from app.service.classroom.store import DONE, NOT_READ
 
 Key = tuple[int | None, str, str, str | None]  # (assignment's id, item, step, coordinate)
 CSV_COLUMNS = ("time", "student", "assignment", "item", "step", "coordinate", "verdict", "mistake", "answer")
@@ -44,7 +45,7 @@ def _step_entry(key: Key, series: list[dict[str, Any]]) -> dict[str, Any]:
     kind = "system" if item in systems else "scene"
     number = next((a["n"] for a in series if a["id"] == assignment_id), None)
     return {"assignment": number, kind: item, "step": step, "coordinate": coordinate, "correct": 0, "incorrect": 0,
-            "students_done": 0, "mistakes": {}, "mistake_names": {}}
+            "not_read": 0, "students_done": 0, "mistakes": {}, "mistake_names": {}}
 
 
 def _tallies(db: Database, class_id: int) -> list[Any]:
@@ -107,7 +108,8 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
             continue
         key = (assignment_id, item, step, coordinate)
         entry = steps.setdefault(key, _step_entry(key, series))
-        entry["correct" if verdict in DONE else "incorrect"] += n
+        # an answer not read is one of the step's answers, neither right nor wrong
+        entry["correct" if verdict in DONE else "not_read" if verdict == NOT_READ else "incorrect"] += n
         attempts += n
         tried[key].add(student_id)
         if verdict in DONE:
@@ -154,8 +156,9 @@ def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[
             continue
         tally = per[student_id].setdefault((assignment_id, item, step, coordinate), {
             "assignment": number.get(assignment_id), "item": item, "step": step, "coordinate": coordinate,
-            "attempts": 0, "done": False, "last": last, "_key": (assignment_id, item, step, coordinate)})
+            "attempts": 0, "not_read": 0, "done": False, "last": last, "_key": (assignment_id, item, step, coordinate)})
         tally["attempts"] += n
+        tally["not_read"] += n if verdict == NOT_READ else 0
         tally["done"] = tally["done"] or verdict in DONE
         tally["last"] = max(tally["last"], last)
     assigned = set(assigned_keys(series))
@@ -168,6 +171,7 @@ def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[
             "name": name,
             "joined": joined.isoformat() + "Z",
             "attempts": sum(s["attempts"] for s in steps),
+            "not_read": sum(s["not_read"] for s in steps),
             "done": len(finished & assigned) if assigned else len(finished),
             "assigned": len(assigned),
             "steps": steps,
@@ -183,15 +187,17 @@ def _cell(value: Any) -> str:
 
 def export_csv(db: Database, class_id: int, series: list[dict[str, Any]]) -> bytes:
     """Every attempt of the class, oldest first, as CSV (UTF-8): its assignment ("1. Week 1"), the scene by its
-    title or the typed system by its name, the mistake in the tutor's words, and the answer exactly as typed (a
-    recorded answer is a checked expression: names, numbers, operators and the allowed functions, nothing a
-    spreadsheet could run).  The other text cells get an apostrophe before a formula's first character."""
+    title or the typed system by its name, the verdict ("not read" for an answer the checker could not read), the
+    mistake in the tutor's words (for an answer not read, why: the refusal's words), and the answer exactly as
+    typed (a judged answer is a checked expression: names, numbers, operators and the allowed functions, nothing a
+    spreadsheet could run).  Every other cell, an answer not read included, gets an apostrophe before a formula's
+    first character."""
     titles = {a["id"]: f"{a['n']}. {a['title']}" for a in series}
     with db.session() as session:
         rows = session.execute(
             select(AttemptRow.at, StudentRow.name, AttemptRow.assignment_id, AttemptRow.item, AttemptRow.step,
                    AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake, AttemptRow.mistake_name,
-                   AttemptRow.answer)
+                   AttemptRow.answer, AttemptRow.response)
             .join(StudentRow, StudentRow.id == AttemptRow.student_id)
             .where(AttemptRow.class_id == class_id)
             .order_by(AttemptRow.id)
@@ -199,8 +205,16 @@ def export_csv(db: Database, class_id: int, series: list[dict[str, Any]]) -> byt
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\r\n")
     writer.writerow(CSV_COLUMNS)
-    for at, name, assignment, item, step, coordinate, verdict, mistake, words, answer in rows:
+    for at, name, assignment, item, step, coordinate, verdict, mistake, words, answer, response in rows:
         where = SCENES[item].title if item in SCENES else item
-        cells = [name, titles.get(assignment, ""), where, step, coordinate, verdict, words or mistake]
-        writer.writerow([at.isoformat() + "Z", *(_cell(v) for v in cells), answer])
+        unread = verdict == NOT_READ
+        why = refusal_words(response) if unread else words or mistake
+        cells = [name, titles.get(assignment, ""), where, step, coordinate, verdict, why]
+        writer.writerow([at.isoformat() + "Z", *(_cell(v) for v in cells), _cell(answer) if unread else answer])
     return out.getvalue().encode("utf-8")
+
+
+def refusal_words(response: str | None) -> str:
+    """Why an answer was not read: the refusal's words as the student was told them (without the field's name)."""
+    detail = str(json.loads(response).get("detail", "")) if response else ""
+    return detail.removeprefix("answer: ")
