@@ -84,3 +84,11 @@ def coordinate_units(doc: Mapping[str, Any], scene: bool) -> dict[str, dict[str,
     rate = {q: f"{u}/s" if u else "1/s" for q, u in units.items()}
     momentum = {q: {"rad": "kg·m²/s", "m": "kg·m/s"}.get(u, "") for q, u in units.items()}
     return {"units": units, "rate_units": rate, "momentum_units": momentum}
+
+
+def with_unit(value: str, unit: str) -> str:
+    """A number with its unit as prose prints it: "1 m/s", "1 rad/s"; a rate of a coordinate without a known unit
+    ("1/s") reads "1 s⁻¹", never "1 1/s" or "1 per second"."""
+    if not unit:
+        return value
+    return f"{value} s⁻¹" if unit == "1/s" else f"{value} {unit}"
