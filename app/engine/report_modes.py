@@ -255,12 +255,13 @@ def _singular_points(nm: NormalModes, d: Derivation, pr: Printer) -> list[str]:
         ]  # fmt: skip
         shown = [n for n in point if n not in lost] or list(point)
         where = r",\; ".join(f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(point[n])}" for n in shown)
+        # the note on a row of its own, so that a phone's narrow box needs no sideways scroll
         if lost:
             names = r",\ ".join(pr.tex(sym[n]) for n in lost)
-            where += rf"\quad (\text{{the coordinates fail here: }} {names} \text{{ has no value}})"
+            note = rf"(\text{{the coordinates fail: }} {names} \text{{ has no value}})"
         else:
-            where += r"\quad (\text{the coordinates fail here})"
-        rows.append(where)
+            note = r"(\text{the coordinates fail here})"
+        rows += [where, note]
     return rows
 
 

@@ -152,7 +152,7 @@ INCLINE_BLOCK: dict[str, str] = {
 
 
 TABLETOP_SPRING: dict[str, str] = {
-    "action": "Of all the paths across the table between two positions in the same time, the real one makes ∫ L dt stationary; the spring pulls like an oscillator, so after half its period π √(m/k) the true path is a saddle.",
+    "action": "Of all the paths across the table between two positions in the same time, the real one makes ∫ L dt stationary; the spring pulls like an oscillator, so after half its period π √(m/k) the true path is a saddle: a variation of r and θ together lowers S, while varying r or θ alone reaches its focus later or never.",
     "positions": "Polar coordinates about the spring's anchor on the table: (r cos θ, r sin θ, 0).",
     "velocities": "ṙ along the radius and r θ̇ around it.",
     "squared-speeds": "The radial and angular motions are perpendicular: v² = ṙ² + r² θ̇².",
@@ -182,7 +182,7 @@ TABLETOP_SPRING: dict[str, str] = {
 
 
 SPHERICAL_PENDULUM: dict[str, str] = {
-    "action": "Of all the ways over the sphere between two points in the same time, the real one makes ∫ L dt stationary; gravity pulls back toward the bottom, so long enough stretches of motion are saddles of S.",
+    "action": "Of all the ways over the sphere between two points in the same time, the real one makes ∫ L dt stationary; gravity pulls back toward the bottom, so long enough stretches of motion are saddles of S; the first kinetic focus, of θ and φ varied together, comes before that of θ or φ varied alone.",
     "positions": "Spherical coordinates about the pivot, with θ from the upward vertical.",
     "velocities": "R θ̇ along a meridian and R sin θ φ̇ along a parallel.",
     "squared-speeds": "The two directions are perpendicular: v² = R² θ̇² + R² sin² θ φ̇².",
@@ -214,7 +214,7 @@ SPHERICAL_PENDULUM: dict[str, str] = {
 
 
 RAIL_TWO_BODY: dict[str, str] = {
-    "action": "The two masses move so that ∫ L dt is stationary between two configurations; the spring gives their relative motion a kinetic focus half its period after the start, past which S has a saddle there.",
+    "action": "The two masses move so that ∫ L dt is stationary between two configurations; the spring gives their relative motion a kinetic focus half its period after the start, past which a variation that moves both masses lowers S (a saddle); varying x₁ or x₂ alone, the focus comes later.",
     "positions": "Both masses are on the rail, so each is given by its own x.",
     "velocities": "Each mass moves with its own ẋ along the rail.",
     "squared-speeds": "On a line the squared speed is ẋ² for each mass.",

@@ -48,3 +48,10 @@ def test_an_angle_not_named_as_one_follows_from_its_mass_matrix_entry_and_unknow
     d = doc(["u", "x"], {"m": "kg", "R": "m", "c": ""}, [[["*", "m", ["pow", "R", 2]], 0], [0, "c"]])
     assert coordinate_units(d, scene=False)["units"] == {"u": "", "x": ""}
     assert coordinate_units(d, scene=False)["rate_units"] == {"u": "1/s", "x": "1/s"}
+
+
+def test_a_number_reads_with_its_unit_never_per_second():
+    from app.viz.units import rate_unit, with_unit
+
+    assert [with_unit("1", rate_unit(u)) for u in ("m", "rad", "")] == ["1 m/s", "1 rad/s", "1 s⁻¹"]
+    assert with_unit("2.5", "") == "2.5"

@@ -155,7 +155,7 @@ def test_parameter_ranges_read_as_a_reader_writes_them(client):
 
 def test_a_charge_in_a_uniform_field_starts_moving_and_the_page_says_why(client):
     """V ≡ 0: every configuration is an equilibrium, so a start at rest would show nothing; the playground starts
-    x moving at 1 per second and says so under the initial conditions."""
+    x moving at 1 m/s and says so under the initial conditions, with the rate's unit (prof-f 35: "1 per second")."""
     spec = {
         "coordinates": ["x", "y"],
         "parameters": [
@@ -168,6 +168,6 @@ def test_a_charge_in_a_uniform_field_starts_moving_and_the_page_says_why(client)
     html = client.get("/playground?" + urlencode({**query_of(form_of(spec)), "stage": "whole"}, doseq=True)).text
     note = re.search(r'<p class="help" id="initial-note">([^<]*)</p>', html)
     assert note and "Every configuration is an equilibrium" in note[1]
-    assert unicodedata.normalize("NFC", note[1]).endswith("starts with \u1e8b(0) = 1 per second.")  # ẋ
+    assert unicodedata.normalize("NFC", note[1]).endswith("starts with \u1e8b(0) = 1 m/s.")  # ẋ
     start = re.search(r'<input type="number" id="ctl-x_dot" name="x_dot"[^>]*value="([^"]*)"', html)
     assert start and float(start[1]) == 1.0
