@@ -96,6 +96,23 @@ def _unit(dims: Dims | None, angle: bool = False) -> str:
     return unit_text(dims)
 
 
+_FORCE: Dims = {"kg": Fraction(1), "m": Fraction(1), "s": Fraction(-2)}
+
+
+def _force_unit(dims: Dims | None) -> str:
+    """A multiplier's unit: N, or N over a power of m (N/m for a string's R² − r²), else as ``_unit`` prints it."""
+    if dims is not None and dims.get("kg") == 1 and dims.get("s") == -2 and set(dims) <= {"kg", "m", "s"}:
+        metres = dims.get("m", Fraction(0)) - 1
+        if metres == 0:
+            return "N"
+        if metres < 0 and metres.denominator == 1:
+            return "N/m" if metres == -1 else f"N/m{str(-metres.numerator).translate(_SUPERSCRIPTS)}"
+    return _unit(dims)
+
+
+_SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
 def _is_energy(d: Derivation, dims: dict[sp.Symbol, Dims]) -> bool:
     """Whether the energies are in J: every term of a sum has one dimension, so L is an energy as soon as one of
     its terms is (½mẋ² in kg·m²/s²) and none is known to be anything else; with no term told, no unit is claimed."""
@@ -230,13 +247,23 @@ def _sometimes(
         rows.append(_row("Q", "Q", "generalized force that no potential describes", "", "derived"))
     if forces:
         rows.append(
-            _row(CONSTRAINT, "𝒞", "a constraint written as a surface 𝒞 = 0 in Cartesian coordinates", "", "derived")
+            _row(CONSTRAINT, "𝒞", "a constraint written as a surface 𝒞 = 0 in Cartesian coordinates", "per constraint (𝒞₁, … below)" if energy else "", "derived")
         )
         rows.append(
             _row(
-                r"\lambda", "λ", "Lagrange multiplier of a constraint: its force on body i is λ ∂𝒞/∂r_i", "", "derived"
+                r"\lambda", "λ", "Lagrange multiplier of a constraint: its force on body i is λ ∂𝒞/∂r_i",
+                "J divided by the unit of its 𝒞 (λ𝒞 is an energy)" if energy else "", "derived",
             )
         )
+        rows.append(_row("L'", "L′", "the Lagrangian in Cartesian coordinates with the constraints' multipliers", energy, "derived"))
+        # each constraint's 𝒞ₐ and λₐ with its unit in this scene: [λ] = [F]/[∂𝒞/∂r] (λ in N/m for a string's R² − r²)
+        metres = {s: {"m": Fraction(1)} for f in forces for s in f.g.free_symbols if s not in dims}
+        for a, f in enumerate(forces, start=1):
+            sub = str(a).translate(_SUBSCRIPTS)
+            g_unit = _unit(dimension(f.g, {**dims, **metres})) if energy else ""
+            lam_unit = _force_unit(dimension(f.multiplier, dims)) if energy else ""
+            rows.append(_row(f"{CONSTRAINT}_{{{a}}}", f"𝒞{sub}", f"the constraint of the {f.constraint.name}, 𝒞{sub} = 0", g_unit, "derived"))
+            rows.append(_row(rf"\lambda_{{{a}}}", f"λ{sub}", f"the multiplier of 𝒞{sub}: its force on the body is λ{sub} ∂𝒞{sub}/∂r", lam_unit, "derived"))
         # each force of constraint its own letter, F₁, F₂, … in the order the Results list them (the page
         # prints F₁ = … there and in the constraint panel)
         for a, f in enumerate(forces, start=1):

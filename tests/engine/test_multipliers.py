@@ -64,3 +64,15 @@ def test_the_pulley_says_lambda_is_the_tension():
     assert "λ itself is the tension" in shown["constraint-forces"]["explanation"]
     assert "λ times ∂𝒞/∂z₁" not in shown["constraint-forces"]["explanation"]
     assert r"\left(\frac{4}{M} + \frac{1}{m_{1}} + \frac{1}{m_{2}}\right) \lambda_{1} &= 4 g" in shown["multiplier-equation"]["latex"]
+
+
+@pytest.mark.parametrize(("scene_id", "units"), [
+    ("simple-pendulum", {"𝒞₁": "m²", "λ₁": "N/m", "L′": "J"}),
+    ("pulley", {"𝒞₁": "m", "λ₁": "N"}),
+    ("helix-bead", {"𝒞₁": "m²", "λ₁": "N/m", "𝒞₂": "m", "λ₂": "N"}),
+])  # fmt: skip
+def test_the_symbols_table_gives_each_multiplier_its_unit(scene_id, units):
+    rows = {r["unicode"]: r for r in derivation_document(scene_id)["notation"]}
+    assert {name: rows[name]["unit"] for name in units} == units
+    # the generic letters say how their unit follows, never an empty cell
+    assert rows["λ"]["unit"] and rows["𝒞"]["unit"]
