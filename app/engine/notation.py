@@ -113,6 +113,37 @@ def _force_unit(dims: Dims | None) -> str:
 _SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
+class _PerCoordinate:
+    """The unit of an entry that carries its coordinates' units: [entry] = base / ([q_j] [q_k] …), one unit
+    when every coordinate has the same, else the rule ``per entry: …``."""
+
+    def __init__(self, d: Derivation, dims: dict[sp.Symbol, Dims]) -> None:
+        self.coordinates = [dims.get(q) for q in d.table.q]
+
+    def unit(self, base: Dims, power: int, rule: str) -> str:
+        if any(c is None for c in self.coordinates):
+            return ""
+        first = self.coordinates[0]
+        if any(c != first for c in self.coordinates):
+            return f"per entry: {rule}"
+        shown = add_dims(base, first or {}, Fraction(-power))
+        # a torque (J per radian) reads N·m, a force N, a stiffness per metre N/m
+        if shown == _ENERGY and power:
+            return "N·m"
+        return _force_unit(shown) if shown.get("s") == -2 and shown.get("kg") == 1 else _unit(shown, angle=not shown)
+
+
+def _derived_unit(concept: str, per: _PerCoordinate | None) -> str:
+    """The unit of a normal-mode letter: 𝓜 per entry J·s²/([q_j][q_k]), K J/([q_j][q_k]), η, a and A the coordinate's."""
+    if per is None:
+        return ""
+    if concept == "mass_matrix":
+        return per.unit({"kg": Fraction(1), "m": Fraction(2)}, 2, "kg·m² divided by the units of its row's and column's coordinates")
+    if concept == "stiffness":
+        return per.unit(_ENERGY, 2, "J divided by the units of its row's and column's coordinates")
+    return per.unit({}, -1, "that of its coordinate")
+
+
 def _is_energy(d: Derivation, dims: dict[sp.Symbol, Dims]) -> bool:
     """Whether the energies are in J: every term of a sum has one dimension, so L is an energy as soon as one of
     its terms is (½mẋ² in kg·m²/s²) and none is known to be anything else; with no term told, no unit is claimed."""
@@ -184,12 +215,14 @@ def table(
     for tex, uni, meaning in FIXED:
         if uni not in taken:
             rows.append(_row(tex, uni, meaning, "s" if uni == "t" else energy, "derived"))
+    per = _PerCoordinate(d, dims) if energy else None
     rows.append(
-        _row("f", "f", f"right-hand side of the equations of motion, {text('mass_matrix', d)} q̈ = f", "", "derived")
+        _row("f", "f", f"right-hand side of the equations of motion, {text('mass_matrix', d)} q̈ = f",
+             per.unit(_ENERGY, 1, "J divided by its coordinate's unit") if per else "", "derived")  # fmt: skip
     )
     for concept, (meaning, _) in DERIVED.items():
         tex, uni = _choice(concept, d)
-        rows.append(_row(tex, uni, meaning, "rad/s" if concept == "frequency" else "", "derived"))
+        rows.append(_row(tex, uni, meaning, "rad/s" if concept == "frequency" else _derived_unit(concept, per), "derived"))
     rows += _sometimes(d, dims, energy, forces, transformed)
     # each letter once: the first meaning a page gives it stands
     first: dict[str, dict[str, Any]] = {}
@@ -244,7 +277,9 @@ def _sometimes(
         )
     rows += _symmetries(d, dims, energy)
     if any(f != 0 for f in m.Q):
-        rows.append(_row("Q", "Q", "generalized force that no potential describes", "", "derived"))
+        per = _PerCoordinate(d, dims) if energy else None
+        rows.append(_row("Q", "Q", "generalized force that no potential describes",
+                         per.unit(_ENERGY, 1, "J divided by its coordinate's unit") if per else "", "derived"))  # fmt: skip
     if forces:
         rows.append(
             _row(CONSTRAINT, "𝒞", "a constraint written as a surface 𝒞 = 0 in Cartesian coordinates", "per constraint (𝒞₁, … below)" if energy else "", "derived")
