@@ -289,7 +289,7 @@ def _transformed(d: Derivation, skipped: list[Skipped]) -> tuple[Transformed, di
 def _steps(
     d: Derivation, forces: tuple[ConstraintForce, ...], pr: Printer, transformed: tuple[Transformed, Any] | None
 ) -> list[dict[str, str]]:
-    return build_steps(d) + constraint_steps(forces, pr) + (transform_steps(transformed[0]) if transformed else [])
+    return build_steps(d) + constraint_steps(d, forces, pr) + (transform_steps(transformed[0]) if transformed else [])
 
 
 def add_beyond(

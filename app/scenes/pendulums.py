@@ -16,7 +16,7 @@ PLANAR_BOB = Particle("m", ("R*sin(theta)", "0", "R - R*cos(theta)"), "bob")
 # so the reported force is the tension (a string cannot push).
 PLANAR_STRING = Constraint(
     "string tension",
-    "R**2 - x**2 - y**2 - (z - R)**2",
+    "R**2 - x**2 - (z - R)**2",
     "The string's pull on the bob, positive toward the pivot; a negative value means the string would have to "
     "push, so it goes slack.",
     slack_when_negative=True,

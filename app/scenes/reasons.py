@@ -64,7 +64,10 @@ SIMPLE_PENDULUM: dict[str, str] = {
     "reduced-equilibria": "The bottom (θ = 0) is stable with ω² = g/R; the top (θ = π) is unstable.",
     "equilibria": "sin θ = 0 at the bottom and at the top of the circle, and nowhere else.",
     "normal-modes": "Linearizing sin θ about each equilibrium gives ω² = g/R at the bottom and −g/R at the top.",
-    "constraints": "The string keeps the bob on the sphere of radius R about the pivot at height R.",
+    "constraints": "The string keeps the bob on the circle of radius R about the pivot at height R, in the plane of the swing (y = 0).",
+    "multiplier-lagrangian": "The bob is free in x and z once the string is replaced by λ: gravity pulls down, the string pulls along its own line, −∇𝒞 ∝ (x, z − R).",
+    "multiplier-equation": "Differentiating x² + (z − R)² = R² twice brings in ẋ² + ż², the square of the speed: the tension will hold a centripetal part.",
+    "multiplier": "λ is half the tension divided by R, since |∇𝒞| = 2R on the circle.",
     "constraint-forces": "The tension must supply the centripetal force m R θ̇² plus gravity's pull along the string.",
 }
 
@@ -92,7 +95,10 @@ DAMPED_PENDULUM: dict[str, str] = {
     **_hamiltonian("p_θ²/(2 m R²) + m g R (1 − cos θ), with the drag added to ṗ"),
     "equilibria": "The drag vanishes at rest, so the equilibria are the simple pendulum's: bottom and top.",
     "normal-modes": "About the bottom the motion is a damped oscillation; about the top it runs away.",
-    "constraints": "The string keeps the bob at distance R from the pivot.",
+    "constraints": "The string keeps the bob on the circle of radius R about the pivot, in the plane of the swing.",
+    "multiplier-lagrangian": "Newton's law for the free bob with the string's pull λ ∇𝒞; the drag joins it along the motion, tangent to the circle.",
+    "multiplier-equation": "The drag is tangent to the circle, so it has no part along ∇𝒞 and drops out of the equation for λ.",
+    "multiplier": "The same λ as the undamped pendulum's at the same θ and θ̇: damping changes the motion, not the tension's formula.",
     "constraint-forces": "The tension holds the bob on its circle: centripetal force plus gravity along the string.",
 }
 
@@ -120,6 +126,9 @@ HELIX_BEAD: dict[str, str] = {
     "time-integral": "The integral gives the parabola of a uniform acceleration g/(1 + α² R²).",
     "equilibria": "Gravity along z never balances on a frictionless wire, so there is none.",
     "constraints": "The wire is two surfaces at once: the cylinder of radius R and the helicoid that winds it.",
+    "multiplier-lagrangian": "Two multipliers, one for each surface: λ₁ pushes toward the axis, λ₂ across the helix.",
+    "multiplier-equation": "The two normals are not perpendicular in general, so the two equations for λ₁ and λ₂ are coupled.",
+    "multiplier": "On the helix x = R cos αz and y = R sin αz: λ₁ carries the circular motion's ż², λ₂ the weight the slope does not take.",
     "constraint-forces": "The wire pushes toward the axis for the circular motion and across the helix to turn the bead.",
 }
 
@@ -147,6 +156,9 @@ INCLINE_BLOCK: dict[str, str] = {
     "time-integral": "The integral recovers X(t), a parabola in t.",
     "equilibria": "On a frictionless slope nothing holds the block, so there is none.",
     "constraints": "The block stays on the plane through the origin tilted at α.",
+    "multiplier-lagrangian": "Newton's law for the free block with the plane's push λ along the normal (−sin α, 0, cos α).",
+    "multiplier-equation": "The plane is flat: 𝒞̈ has no velocity terms, and the equation holds only gravity's part along the normal.",
+    "multiplier": "λ is the normal force itself, as the normal (−sin α, 0, cos α) has length 1.",
     "constraint-forces": "The normal force balances gravity's component into the plane: m g cos α.",
 }
 
@@ -209,6 +221,9 @@ SPHERICAL_PENDULUM: dict[str, str] = {
     "equilibria": "At rest the ball can hang at the bottom or balance at the top.",
     "steady-motion": "About the conical motion θ nods with the frequency given by U_eff″ at its bottom.",
     "constraints": "The string keeps the ball on the sphere of radius R about the pivot.",
+    "multiplier-lagrangian": "The ball is free in x, y and z once the string is replaced by λ; the string pulls along −∇𝒞 = 2(x, y, z), toward the pivot.",
+    "multiplier-equation": "Differentiating x² + y² + z² = R² twice brings in the squared speed ẋ² + ẏ² + ż².",
+    "multiplier": "On the sphere the squared speed is R²(θ̇² + φ̇² sin²θ): both motions load the string.",
     "constraint-forces": "The tension supplies the centripetal force of the motion on the sphere plus gravity's pull.",
 }
 
@@ -264,7 +279,10 @@ PULLEY: dict[str, str] = {
     **_hamiltonian("the kinetic energy written with the inverse mass matrix, plus the weights"),
     "equilibria": "The generalized forces are constant: with m₁ = m₂ = M/2 they vanish and every position is an equilibrium; otherwise (at the default masses, too) there is none.",
     "constraints": "With z₁, z₂, z₃ the heights of m₁, m₂ and M (z₁ = y₁, z₂ = y₂, z₃ = Y, all in m), the string's length fixes z₁ + z₂ + 2 z₃; the constant 2 m places M below the pulleys.",
-    "constraint-forces": "λ times ∂𝒞/∂z₁ = 1 is the string's upward pull on mass 1, the tension, the same along the whole string; on the movable pulley it pulls with twice that.",
+    "multiplier-lagrangian": "Three free masses, each pulled up by the string: λ on each end mass, 2λ on the movable pulley (∂𝒞/∂z₃ = 2).",
+    "multiplier-equation": "The string's length is fixed, so the accelerations obey z̈₁ + z̈₂ + 2 z̈₃ = 0: each mass's inertia enters through 1/m.",
+    "multiplier": "No velocities enter: the tension is constant while the masses move.",
+    "constraint-forces": "Since ∂𝒞/∂z₁ = 1, λ itself is the tension: the string's upward pull on mass 1, the same along the whole string; on the movable pulley it pulls with twice that.",
 }
 
 
@@ -295,6 +313,9 @@ MOVABLE_INCLINE: dict[str, str] = {
     "reduced-equilibria": "U_eff′ is constant and non-zero: the block always slides.",
     "equilibria": "A frictionless slope cannot hold the block, so there is none.",
     "constraints": "With (x₁, z₁) the wedge's top corner and (x₂, z₂) the block, across and up in m, the block stays on the slope and the wedge on the floor.",
+    "multiplier-lagrangian": "Block and wedge free in the plane; λ₁ pushes them apart along the slope's normal, λ₂ holds the wedge on the floor.",
+    "multiplier-equation": "The slope's normal involves both bodies, so each λ₁ equation holds both masses; the floor couples λ₂ to it through the wedge.",
+    "multiplier": "Both multipliers are constant: the contact and floor forces do not change while the block slides.",
     "constraint-forces": "The wedge's push on the block is less than m g cos α, because the wedge recoils.",
 }
 
@@ -324,6 +345,9 @@ ROTATING_PARABOLA: dict[str, str] = {
     "equilibria": "ρ = 0 is the only equilibrium unless ω² = 2 g α, when every ρ is one. V = −L at ρ̇ = 0 is the U_eff of the effective-potential step: gravity's m g α ρ² less the centrifugal ½ m ω² ρ².",
     "normal-modes": "At the bottom the small oscillations along the wire have Ω² = 2 g α − ω².",
     "constraints": "The wire lies on the paraboloid z = α ρ² and in the plane turned by ω t.",
+    "multiplier-lagrangian": "Two multipliers: λ₁ for the paraboloid, λ₂ for the turning plane; the plane's 𝒞₂ holds t.",
+    "multiplier-equation": "𝒞₂ depends on t, so its second derivative also holds the terms of the turning: ω and ω² times the position and velocity.",
+    "multiplier": "λ₂ = 2mωρ̇ pushes the bead round as it moves along the wire (the Coriolis force, with the sign of the push).",
     "constraint-forces": "The wire pushes normal to itself in its plane and, across it, drives the bead around.",
 }
 
