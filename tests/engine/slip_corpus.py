@@ -419,7 +419,7 @@ SLIPS = [
     ("tabletop-spring", "position", "x", "r*sin(theta)", SWAP),
     ("tabletop-spring", "position", "y", "sin(theta)", UNITS_WORDS),
     # the middle mass moving as far as the end masses, not half as far
-    ("pulley", "position", "z3", "-(y1 + y2) - 1", r"half|twice|doubled"),
+    ("pulley", "position", "z3", "-(y1 + y2)", r"half|twice|doubled"),
     ("pulley", "position", "z3", "(y1 + y2)/2", SIGN),
     ("double-pendulum", "position", "x2", "l2*sin(theta2)", r"upper bob.*(carr|moves)|θ₁.*left out"),
     ("double-pendulum", "position", "x1", "l1*cos(theta1)", SWAP),
