@@ -411,7 +411,7 @@ function buildItem(exercise, index) {
   const rhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
   if (exercise.step === "equation") katexInto(rhs, "= 0");
   row.append(lhs, input, rhs);
-  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${howTo(exercise)} Names you may use: ${exercise.names.join(", ")}, pi.${numbered(exercise.names)}`);
+  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${exercise.note ? `${exercise.note} ` : ""}${howTo(exercise)} Names you may use: ${exercise.names.join(", ")}, pi.${numbered(exercise.names)}`);
   const previewBox = element("div", { class: "practice-preview", id: `${id}-preview`, "aria-label": "Your answer, typeset" });
   previewBox.append(element("div", { class: "practice-preview-math" }), element("p", { class: "help practice-preview-note" }));
   const actions = element("div", { class: "practice-actions" });
