@@ -30,8 +30,8 @@ from app.engine.mistake_equations import generated
 from app.engine.mistake_families import Mistake, monomial_words, spoken
 from app.engine.mistake_masses import wrong_masses
 from app.engine.mistake_other import held_still, other_coordinates
-from app.engine.mistake_positions import position_mistakes
 from app.engine.mistake_pieces import effective_terms, masses_of, piece_mistakes, travelled
+from app.engine.mistake_positions import position_mistakes
 from app.engine.mistakes import OMEGA_HINT, RULES
 
 MIN_POINTS = 6
