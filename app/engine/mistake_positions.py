@@ -108,8 +108,7 @@ def position_mistakes(d: Derivation, i: int, a: int) -> Iterator[Mistake]:
     halves = all(t.as_coeff_Mul()[0] in (sp.Rational(1, 2), sp.Rational(-1, 2)) for t in terms)
     if halves:
         where = (
-            f"{body} sits halfway between the points that carry it (their average), so it moves half as far as "
-            "they do"
+            f"{body} sits halfway between the points that carry it (their average), so it moves half as far as they do"
         )
     else:
         where = f"check each length in your {axis} against the figure"
