@@ -116,10 +116,10 @@ def catalogue(
 ) -> tuple[tuple[Mistake, str, Values], ...]:
     """(mistake, hint, values) for every distinct mistake of the step, in the order they are tried."""
     truth = truths[0]
-    if step == "position":
+    if step == "position" and k is not None:
         # one component of one body (k = 3 × body + axis): its own mistakes only (app.engine.mistake_positions)
-        return _kept(d, [(m, sentence(m, label)) for m in position_mistakes(d, k // 3, k % 3)], truths, groups,
-                     relation, label)  # type: ignore[operator]  # fmt: skip
+        own = [(m, sentence(m, label)) for m in position_mistakes(d, k // 3, k % 3)]
+        return _kept(d, own, truths, groups, relation, label)
     asked = _asked(d, truths)
     made = [(m, sentence(m, label)) for m in generated(d, step, k, asked)]
     known = system_dimensions(d)
