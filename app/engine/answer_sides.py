@@ -75,6 +75,17 @@ def read_answer(text: str, step: str, coordinate: str | None, kinds: dict[str, s
 _QUANTITIES = frozenset({"T", "U", "V", "L"})
 _KIND_WORDS = {"parameter": "a parameter", "position": "a coordinate", "velocity": "a velocity", "momentum": "a momentum"}
 _MEANT = {"T": "the kinetic energy T", "U": "the potential energy U", "V": "the potential energy V", "L": "the Lagrangian L"}
+_DERIVATIVE = (
+    "a derivative cannot be typed here: work it out, and write the result in the coordinates, their velocities and "
+    "the parameters"
+)
+# functions a student may type under another name
+_FUNCTION_WORDS = {
+    "abs": "an absolute value |x| is typed Abs(x), with a capital A",
+    "ln": "the natural logarithm is typed log(x)",
+    "diff": _DERIVATIVE,
+    "derivative": _DERIVATIVE,
+}
 # a derivative typed as a quotient of differentials: d/dt(...), dL/dtheta_dot, dT/dx
 _DIFFERENTIALS = re.compile(r"\bd([A-Za-z_]\w*)?\s*/\s*d[A-Za-z_]")
 
@@ -110,16 +121,20 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
     elif "only these functions may be called" in str(exc) and (apart := _names_then_function(exc.part, allowed_names(step, kinds))):
         # mgRcos(theta): the names and the function typed together read as one unknown function
         out = f"{exc.part} reads as one name: write {apart}(…), with a space or * between the names"
+    elif "only these functions may be called" in str(exc) and str(exc.part).lower() in _FUNCTION_WORDS:
+        # a function a student knows under another name, or a derivative: said as a tutor says it
+        out = _FUNCTION_WORDS[str(exc.part).lower()]
     elif "only these functions may be called" in str(exc):
-        functions = ", ".join(sorted(f for f in FUNCTIONS if f != "Abs"))
-        out = f"{exc.part} is not a function you may use here; the functions are {functions}, and Abs(x) for |x|"
+        # a sentence, not a code allowlist: |x| is not among them (its own name, Abs, is said where abs is typed)
+        functions = sorted(f for f in FUNCTIONS if f != "Abs")
+        out = (
+            f"{exc.part} is not a function you may use here; the functions are {', '.join(functions[:-1])} and "
+            f"{functions[-1]}"
+        )
     elif exc.part in _QUANTITIES and unknown:
         out = f"{exc.part} is not a name the answer may use: write T and U out in the coordinates, their velocities and the parameters"
     elif unknown and exc.part.startswith("d") and isinstance(text, str) and _DIFFERENTIALS.search(text):
-        out = (
-            "a derivative cannot be typed here: work it out, and write the result in the coordinates, their "
-            "velocities and the parameters"
-        )
+        out = _DERIVATIVE
     elif step == "acceleration" and exc.part.endswith("_ddot"):
         wanted = unicode(f"{coordinate}_ddot") if coordinate else "the acceleration"
         out = (

@@ -448,6 +448,7 @@ def _constant_message(pb: Problem, difference: sp.Expr) -> str:
     shown = constant if symbolically_zero(varying) else None
     amount = f"the constant {unicode_text(shown)}" if shown is not None else "a constant"
     why = {
+        "position": "another origin, which changes no velocity and no equation of motion",
         "potential": "a different zero of height, which changes no force and no equation of motion",
         "lagrangian": "a constant drops out of every Euler–Lagrange equation",
         "hamiltonian": "the zero of U moved, which changes no equation of motion",

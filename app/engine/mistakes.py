@@ -61,6 +61,9 @@ def without_springs(text: str | None) -> str | None:
 
 
 POINTERS = {
+    "position": "Place the body with the figure's axes (x across, z up): follow the lengths from the origin to the "
+    "body, adding each one's part along this axis (a length times the cosine of its angle to the axis, or the sine "
+    "of its angle to the line across it), and the position of whatever carries the body.",
     "kinetic": "T adds ½ m v² over the masses, with v² the squared speed: differentiate each position along the "
     "motion (the chain rule through every coordinate, and through t if a constraint moves), then add the squares "
     "of the velocity's components.",

@@ -19,7 +19,8 @@ DOUBLE_PENDULUM = Scene(
     statement=(
         "A bob of mass m₁ hangs from a fixed pivot on a rigid massless rod of length l₁; a second bob of mass m₂ "
         "hangs from the first on a rod of length l₂. Both swing in one vertical plane, with θ₁ and θ₂ measured "
-        "from the downward vertical. Derive the equations of motion, find the four equilibria and the normal "
+        "from the downward vertical. Heights are measured upward from the pivot, where U = 0. Derive the "
+        "equations of motion, find the four equilibria and the normal "
         "modes about each, and follow a swing wide enough that the motion becomes chaotic. (Two starts that differ "
         "in the last digits part about three times further each second. The run shown lasts 3 s, within its "
         "tolerance; a longer one, set under Integration, is one of many paths close to the true one, and the "
@@ -70,7 +71,7 @@ COUPLED_OSCILLATORS = Scene(
     summary="Two normal modes, in phase and in opposition; a weak coupling trades the energy back and forth in beats.",
     statement=(
         "Two equal masses m slide without friction on a horizontal line between two walls. Each is tied to its "
-        "wall by a spring of stiffness k, and a third spring of stiffness κ joins them; all springs are relaxed "
+        "wall by a spring of stiffness k, and a third spring of stiffness κ joins them; all springs are relaxed, and U = 0, "
         "when x1 = x2 = 0, x1 and x2 being the displacements of the masses. Find the normal modes and their "
         "frequencies, and show that when κ is small and only one mass is displaced at first, the motion passes "
         "from one mass to the other at the difference of the two frequencies."
