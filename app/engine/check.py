@@ -40,6 +40,8 @@ import sympy as sp
 from app.engine import textbook
 from app.engine.budget import display_budget, tidy, unbudgeted, work_limit
 from app.engine.check_answers import (
+    KEYED,
+    PER_COMPONENT,
     PER_COORDINATE,
     STEPS,
     CheckError,
@@ -89,6 +91,8 @@ from app.limits import CHECK_DISPLAY_WORK as DISPLAY_WORK
 __all__ = [
     "MIN_POINTS",
     "PARTED",
+    "KEYED",
+    "PER_COMPONENT",
     "PER_COORDINATE",
     "RELATIONS",
     "STEPS",

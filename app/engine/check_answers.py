@@ -22,6 +22,10 @@ if TYPE_CHECKING:  # the problem an answer is read for (imported for its type on
 
 STEPS = ("position", "kinetic", "potential", "lagrangian", "momentum", "equation", "acceleration", "hamiltonian", "omega_squared")
 PER_COORDINATE = frozenset({"momentum", "equation", "acceleration"})
+# the steps answered per Cartesian component of a body (x, z, or x1, z2 … numbered by body), in the same field
+PER_COMPONENT = frozenset({"position"})
+# the steps whose answer names which one it is (a coordinate or a component): one record per name
+KEYED = PER_COORDINATE | PER_COMPONENT
 
 # which kinds of name each step's answer may use
 _KINDS = {

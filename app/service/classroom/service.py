@@ -17,7 +17,7 @@ from typing import Any, TypeVar
 
 import orjson
 
-from app.engine.check import PER_COORDINATE
+from app.engine.check import KEYED
 from app.engine.mistakes import RULES
 from app.errors import NoKey, Refused, WrongKey
 from app.service.checking import Checking, declared
@@ -263,7 +263,7 @@ class Classroom:
         who, found = await self._db(self._with_series, code, key, False)
         assigned, item = find_target(found, target, step, coordinate)
         name = item["name"] if item.get("system") is not None else item["scene"]
-        recorded = coordinate if step in PER_COORDINATE else None
+        recorded = coordinate if step in KEYED else None
         this = (name, step, recorded, answer.strip())
         if attempt_id is not None and (first := await self._db(store.recorded, who, attempt_id)) is not None:
             return _same_attempt(first, this, attempt_id)
@@ -308,7 +308,7 @@ class Classroom:
             raise Refused("nothing is assigned in this class: a shown step is recorded for an assigned step", step,
                           ("step",))
         name = item["name"] if item.get("system") is not None else item["scene"]
-        recorded = coordinate if step in PER_COORDINATE else None
+        recorded = coordinate if step in KEYED else None
         await self._db(store.record_hint, who, assigned["id"], name, step, recorded)
         return {"assignment": assigned["n"], "step": step, "coordinate": recorded}
 
