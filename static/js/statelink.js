@@ -12,6 +12,7 @@
  *   restoreView()         the rest, each once its part of the page exists: the instant after the first run
  *                         is drawn, the panels at once, the practice step once practice mode has built it
  *   bindViewLink()        the "Link to this view" button: the link copied, or shown where copying is refused
+ *   bindEmbedOffer()      the scene page's course-page frames (iframe code) with this site's address
  *
  * The fragment's own keys have a hyphen, which no declared name can have, so they never meet a control's
  * name; a fragment without "=" is an ordinary anchor (#outcome) and is left alone.
@@ -166,4 +167,14 @@ export function bindViewLink() {
       status.replaceChildren("Copied to the clipboard: ", shown);
     } catch { /* the link stays shown */ }
   });
+}
+
+/** The course-page frames the scene page offers (templates/_simulation.html): each code with this site's address. */
+export function bindEmbedOffer() {
+  for (const code of document.querySelectorAll("textarea.embed-code[data-src]")) {
+    const src = new URL(code.dataset.src, window.location.origin).toString();
+    const frame = Object.assign(document.createElement("iframe"), { src, title: code.dataset.title, width: "100%", height: code.dataset.height });
+    code.value = frame.outerHTML;
+    code.addEventListener("focus", () => code.select());
+  }
 }
