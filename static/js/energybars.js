@@ -19,9 +19,10 @@ export function overTheRun(rows, t, resolution) {
     let lo = Infinity, hi = -Infinity;
     for (const v of r.values) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
     if (lo > hi) return `${r.name} has no finite value`;
-    // a spread within the run's energy resolution is no change: the value is conserved to the error
-    if (hi - lo <= Math.max(resolution, 1e-12 * Math.max(Math.abs(lo), Math.abs(hi)))) return `${r.name} stays ${fmtResolved((lo + hi) / 2, resolution)} J`;
-    return `${r.name} from ${fmtResolved(lo, resolution)} to ${fmtResolved(hi, resolution)} J`;
+    // a spread within the run's energy resolution, or below the four digits shown, is no change
+    const [a, b] = [fmtResolved(lo, resolution), fmtResolved(hi, resolution)];
+    if (hi - lo <= resolution || a === b) return `${r.name} stays ${fmtResolved((lo + hi) / 2, resolution)} J`;
+    return `${r.name} from ${a} to ${b} J`;
   });
   const end = t && t.length ? t[t.length - 1] : null;
   return `Over the ${end === null ? "" : `${fmt(Number(end.toPrecision(2)))} s `}run: ${parts.join(" · ")}.`;
