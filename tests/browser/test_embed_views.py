@@ -123,11 +123,12 @@ def test_the_velocity_handle_says_what_dragging_it_does(sized, address, artifact
     page.wait_for_function("document.querySelector('[data-panel^=animation] canvas.mechanism').dataset.handle !== ''")
     label = page.locator("[data-panel^=animation] .handle-label")
     label.wait_for(state="visible")
+    # (the screenshot scrolls the picture into view: before the handle's place on the screen is read)
+    page.locator("[data-panel^=animation]").first.screenshot(path=artifacts / f"handle-label-{address[1:6]}-{size}.png")
     seen = _handle_label(page)
     # at rest the label says so: the arrow has no length yet
     assert seen["label"] == "drag: initial velocity (now 0)", seen
     assert seen["distance"] < 30 and seen["inside"], seen
-    page.locator("[data-panel^=animation]").first.screenshot(path=artifacts / f"handle-label-{address[1:6]}-{size}.png")
     # the reader holds the handle and drags it: a start with speed, and the label has done its work
     # pulled further out along its arrow (nearer the body than the arrow's stub asks for rest)
     (x, y), (bx, by) = seen["handle"], seen["body"]
