@@ -25,6 +25,7 @@ from app.web.templating import templates
 
 router = APIRouter(tags=["pages"], include_in_schema=False)
 
+
 def embeddable(model: dict) -> list[str]:
     """The panels an embed page may show beside the animation: the page's plots that are not folded away."""
     return [k for k in model["panels"] if not k.startswith("animation") and k not in model["folded_panels"]]

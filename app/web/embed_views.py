@@ -23,4 +23,6 @@ def embed_src(scene_id: str, view: str = DEFAULT_VIEW) -> str:
 
 def offers(scene_id: str) -> list[dict[str, Any]]:
     """The frames the scene page offers a lecturer: each view's address, what it shows and its height."""
-    return [{"view": v, "says": a["says"], "src": embed_src(scene_id, v), "height": a["height"]} for v, a in VIEWS.items()]
+    return [
+        {"view": v, "says": a["says"], "src": embed_src(scene_id, v), "height": a["height"]} for v, a in VIEWS.items()
+    ]

@@ -76,6 +76,8 @@ def test_every_scene_first_view_is_honest_and_fits_the_offered_heights(browser, 
     page.set_default_timeout(90_000)
     for scene in SCENES:
         for view, about in VIEWS.items():
+            # the frame as offered: its height sets the page's vh, and so the picture's height
+            page.set_viewport_size({"width": 900, "height": about["height"]})
             page.goto(f"/embed/scenes/{scene}?{urlencode({'view': view})}")
             page.wait_for_selector(DONE, state="attached")
             assert page.evaluate(BOTTOM) <= about["height"], (scene, view)
@@ -113,7 +115,11 @@ def _handle_label(page) -> dict:
 
 @pytest.mark.parametrize(
     "address",
-    ["/scenes/double-pendulum", "/embed/scenes/pulley", "/playground?" + urlencode(query_of(form_of(PENDULUM)), doseq=True)],
+    [
+        "/scenes/double-pendulum",
+        "/embed/scenes/pulley",
+        "/playground?" + urlencode(query_of(form_of(PENDULUM)), doseq=True),
+    ],
     ids=["scene", "embed", "playground"],
 )
 def test_the_velocity_handle_says_what_dragging_it_does(sized, address, artifacts):

@@ -25,7 +25,13 @@ def test_an_embed_page_holds_the_mechanism_and_its_controls_and_nothing_else(cli
     assert PANEL.findall(html) == ["animation-2d"]
     assert 'canvas class="mechanism' in html and 'id="controls"' in html and 'id="scene-data"' in html
     # no derivation, no site chrome, no link to the view; a link to the whole page
-    for absent in ('id="derivation"', 'class="site-header"', 'class="site-footer"', 'id="view-link"', 'id="embed-offer"'):
+    for absent in (
+        'id="derivation"',
+        'class="site-header"',
+        'class="site-footer"',
+        'id="view-link"',
+        'id="embed-offer"',
+    ):
         assert absent not in html
     assert 'href="/scenes/simple-pendulum"' in html and "/static/js/embed.js" in html
     # the run's duration and tolerance are there to change: why the run is as long as it is, and how to make it finer
@@ -48,7 +54,10 @@ def test_an_unknown_view_is_refused_with_the_views_there_are(client):
     assert page.status_code == 422
     text = re.sub(r"\s+", " ", re.sub(r"<[^>]+>", "", page.text))
     assert "“tiny” is not a view of the embedded page of three masses on pulleys" in text
-    assert "The view of an embedded page is one of: full, compact" in text and "Leave out ?view= for the full view." in text
+    assert (
+        "The view of an embedded page is one of: full, compact" in text
+        and "Leave out ?view= for the full view." in text
+    )
 
 
 def test_the_scene_page_offers_each_view_as_a_frame_with_its_height(client):

@@ -147,7 +147,10 @@ def test_each_printed_equation_names_its_factor_and_times_it_gives_the_rows_of_m
     from app.web.examples_user import DOUBLE_PENDULUM
 
     # the double pendulum with its own masses and lengths: its equations are divided by different factors
-    for spec, factors in ((DOUBLE_PENDULUM, {"theta1": "l1", "theta2": "l2*m2"}), (TRIPLE, dict.fromkeys("abc", "l*m"))):
+    for spec, factors in (
+        (DOUBLE_PENDULUM, {"theta1": "l1", "theta2": "l2*m2"}),
+        (TRIPLE, dict.fromkeys("abc", "l*m")),
+    ):
         answer = client.post("/api/derive", json=spec)
         assert answer.status_code == 200, answer.text
         doc = answer.json()
