@@ -10,7 +10,7 @@ from __future__ import annotations
 from typing import Any
 
 VIEWS: dict[str, dict[str, Any]] = {
-    "full": {"says": "the animation, the initial conditions, the parameters and the run's duration", "height": 1660},
+    "full": {"says": "the animation, the initial conditions, the parameters and the run's duration", "height": 1760},
     "compact": {"says": "the animation with Play and the time slider alone, no forms", "height": 540},
 }
 DEFAULT_VIEW = "full"
