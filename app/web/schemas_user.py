@@ -108,8 +108,20 @@ class ExprPair(BaseModel):
     )
 
 
+class Factor(BaseModel):
+    sympy: str
+    latex: str
+
+
 class EquationOfMotion(ExprPair):
     coordinate: str
+    divided_by: Factor | None = Field(
+        default=None,
+        description=(
+            "The factor common to the equation's terms that it is shown divided by (null: shown as derived); row k "
+            "of mass_matrix and forcing is equation k times its factor."
+        ),
+    )
 
 
 class ConservedQuantity(ExprPair):

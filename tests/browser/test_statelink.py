@@ -13,7 +13,7 @@ VIEWPORTS = {
     "desktop": {"viewport": {"width": 1366, "height": 768}},
     "phone": {"viewport": {"width": 390, "height": 844}, "has_touch": True, "is_mobile": True},
 }
-READY = '#run-status[data-state="ready"], #run-status[data-state="untrusted"]'
+READY = '#run-status[data-state="ready"], #run-status[data-state="untrusted"], #run-status[data-state="warning"]'
 
 # what a reader sees, read from the page: the controls' numbers, the selects, the instant, the open panels and
 # details, practice mode and the step that has the focus
