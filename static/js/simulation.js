@@ -261,8 +261,11 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
 
   const more = status.querySelector(".run-details");
   // list: lines under the message, each a string (a warning) or {text, kind: "event"} (where the run ended)
-  function say(state, text, list, detail = "") {
+  // warned: a finished run with warnings keeps the state "ready" (what waits for a run reads it) and takes the
+  // warning's colour from data-warned, never the green of a good run over a warning
+  function say(state, text, list, detail = "", warned = false) {
     status.dataset.state = state;
+    status.dataset.warned = String(warned);
     message.textContent = text;
     if (list) {
       warnings.replaceChildren(...list.map((w) => Object.assign(document.createElement("li"),
@@ -336,7 +339,7 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
       const trust = result.trust || {};
       // one colour for the whole box: never the green of a good run over a warning
       if (trust.trusted === false) say("untrusted", `${line}. ${trust.message}`, notes, details(r.stats, data.method_labels));
-      else say(warned.length ? "warning" : "ready", line, notes, details(r.stats, data.method_labels));
+      else say("ready", line, notes, details(r.stats, data.method_labels), warned.length > 0);
       root.dataset.runs = String(Number(root.dataset.runs || 0) + 1);
       painted("server");
     } catch (err) {
