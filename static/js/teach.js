@@ -241,7 +241,7 @@ async function drawSteps(summary) {
   const quiet = summary.steps.filter(idle).length;
   const toggle = $("dash-steps-all");
   toggle.hidden = !quiet;
-  toggle.textContent = everyStep ? "Show only the steps answered" : `Show every step (${plural(quiet, "more")} not answered yet)`;
+  toggle.textContent = everyStep ? "Show only the steps answered" : `Show every step (${quiet} more not answered yet)`;
   toggle.setAttribute("aria-expanded", String(everyStep));
   for (const entry of byStuck(summary.steps)) {
     if (idle(entry) && !everyStep) continue;

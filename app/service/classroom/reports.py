@@ -17,6 +17,7 @@ from typing import Any
 
 from sqlalchemy import func, select
 
+from app.engine.mistake_teacher import for_teacher
 from app.scenes import SCENES
 from app.service.classroom.database import Database
 from app.service.classroom.models import AttemptRow, StudentRow
@@ -115,8 +116,8 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
         if mistake:
             entry["mistakes"][mistake] = entry["mistakes"].get(mistake, 0) + n
             by_mistake[key][mistake].add(student_id)
-            if text:  # the mistake in words (one system's mistakes are worded alike)
-                entry["mistake_names"][mistake] = text
+            if text:  # the mistake in words (one system's mistakes are worded alike), spoken about the student
+                entry["mistake_names"][mistake] = for_teacher(text)
     totals: dict[str, dict[str, Any]] = {}
     for key, entry in steps.items():
         stuck = tried[key] - finished[key]
@@ -201,6 +202,6 @@ def export_csv(db: Database, class_id: int, series: list[dict[str, Any]]) -> byt
     writer.writerow(CSV_COLUMNS)
     for at, name, assignment, item, step, coordinate, verdict, mistake, words, answer in rows:
         where = SCENES[item].title if item in SCENES else item
-        cells = [name, titles.get(assignment, ""), where, step, coordinate, verdict, words or mistake]
+        cells = [name, titles.get(assignment, ""), where, step, coordinate, verdict, for_teacher(words) if words else mistake]
         writer.writerow([at.isoformat() + "Z", *(_cell(v) for v in cells), answer])
     return out.getvalue().encode("utf-8")
