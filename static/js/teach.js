@@ -100,6 +100,7 @@ async function open(code, key) {
   useSeries(r.data.assignments);
   show();
   buildEditor();
+  showLoading();
   poll();
   return "open";
 }
@@ -158,6 +159,22 @@ $("open-form").addEventListener("submit", async (event) => {
 });
 
 // ---- the live dashboard --------------------------------------------------------------------------
+
+const LOADING = "Loading…";
+
+/** Until the first figures arrive, every table and list of the dashboard says it is loading: an empty "Who is
+ * done" on a projector would read as "nobody has done anything". */
+function showLoading() {
+  const row = (columns) => el("tr", { className: "dash-loading" }, el("td", { colspan: columns, text: LOADING }));
+  $("dash-assignments").tBodies[0].replaceChildren(row(4));
+  $("dash-students").tBodies[0].replaceChildren(row(4));
+  for (const id of ["dash-steps", "dash-mistakes"]) $(id).replaceChildren(el("li", { className: "help dash-loading", text: LOADING }));
+  for (const id of ["now-stuck", "now-mistake"]) {
+    $(id).querySelector(".now-body").replaceChildren(el("p", { className: "help dash-loading", text: LOADING }));
+  }
+  $("dash-steps-all").hidden = true;
+  $("dash-counts").textContent = LOADING;
+}
 
 async function labelOf(entry) {
   const item = entry.scene ? { scene: entry.scene } : assignment.find((i) => i.name === entry.system) || { name: entry.system };
@@ -227,10 +244,26 @@ async function drawNow(summary) {
 const plural = (n, one, many = `${one}s`) => `${n} ${n === 1 ? one : many}`;
 let everyStep = false; // "Show every step" pressed: the steps nobody has answered are listed too
 
-/** A step's figures, each count in one unit: students for done and stuck, answers for right and wrong. */
+/** A step's students: done and stuck, of the class (the bar above counts answers, not students). */
 function stepNumbers(entry, students) {
-  return `${entry.students_done} of ${plural(students, "student")} done, ${entry.stuck} stuck; `
-    + `${plural(entry.correct, "right answer")}, ${entry.incorrect} wrong`;
+  return `${entry.students_done} of ${plural(students, "student")} done, ${entry.stuck} stuck`;
+}
+
+/** A step's answers as a bar, one unit only: its green part the right answers, its red part the wrong ones,
+ * said in words beside it and in its aria-label. */
+function answerBar(entry) {
+  const total = entry.correct + entry.incorrect;
+  const words = `${plural(entry.correct, "right answer")}, ${entry.incorrect} wrong`;
+  const bar = el("div", { className: "dash-bar", role: "img",
+    "aria-label": `Answers to this step: ${words} (green: right, red: wrong)` });
+  const good = el("span", { className: "dash-good" });
+  const bad = el("span", { className: "dash-bad" });
+  good.style.width = total ? `${(100 * entry.correct) / total}%` : "0";
+  bad.style.width = total ? `${(100 * entry.incorrect) / total}%` : "0";
+  bar.append(good, bad);
+  return el("div", { className: "dash-bar-row" },
+    el("span", { className: "dash-bar-unit", text: "Answers" }), bar,
+    el("span", { className: "dash-bar-words", text: words }));
 }
 
 async function drawSteps(summary) {
@@ -246,18 +279,10 @@ async function drawSteps(summary) {
   for (const entry of byStuck(summary.steps)) {
     if (idle(entry) && !everyStep) continue;
     const label = await labelOf(entry);
-    const total = entry.correct + entry.incorrect;
-    const bar = el("div", { className: "dash-bar", role: "img",
-      "aria-label": `${entry.correct} right, ${entry.incorrect} wrong` });
-    const good = el("span", { className: "dash-good" });
-    const bad = el("span", { className: "dash-bad" });
-    good.style.width = total ? `${(100 * entry.correct) / total}%` : "0";
-    bad.style.width = total ? `${(100 * entry.incorrect) / total}%` : "0";
-    bar.append(good, bad);
     const mistakes = Object.entries(entry.mistakes);
     rows.push(el("li", { className: "dash-step" },
       el("div", { className: "dash-label" }, typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` })),
-      bar,
+      answerBar(entry),
       el("p", { className: "dash-numbers",
         text: stepNumbers(entry, summary.students)
           + (mistakes.length ? `; most often: ${entry.mistake_names?.[mistakes[0][0]] || mistakeWords(mistakes[0][0])}` : "") }),
