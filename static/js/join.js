@@ -39,7 +39,20 @@ function progress() {
     const mine = keysOf(a);
     const line = document.querySelector(`[data-assignment="${a.n}"] .join-assignment-progress`);
     if (line) line.textContent = `${mine.filter((s) => done.has(s)).length} of ${mine.length} steps done`;
+    const due = document.querySelector(`[data-assignment="${a.n}"] .join-assignment-due`);
+    if (due) due.replaceChildren(...dueWords(a));
   }
+}
+
+/** An assignment's due time, and once it has passed, that an answer now is late and does not count. */
+function dueWords(a) {
+  if (!a.due) return [];
+  const words = [`Due ${when(a.due)} · `];
+  if (new Date(a.due) < new Date()) {
+    words.push(el("strong", { className: "join-late", text: "past due" }),
+      ": an answer now is recorded as late and does not count toward the grade · ");
+  }
+  return words;
 }
 
 function verdictView(box, r) {
@@ -153,7 +166,8 @@ async function drawItems() {
   for (const a of series) {
     const part = el("section", { className: "join-assignment", "data-assignment": a.n },
       el("h2", { className: "join-assignment-title", text: `${a.n}. ${a.title}` }),
-      el("p", { className: "help" }, a.due ? `Due ${when(a.due)} · ` : "", el("span", { className: "join-assignment-progress" })));
+      el("p", { className: "help" }, el("span", { className: "join-assignment-due" }, ...dueWords(a)),
+        el("span", { className: "join-assignment-progress" })));
     for (const item of a.items) {
       const section = el("section", { className: "class-panel join-item" });
       const heading = item.scene ? titleOf[item.scene] || item.scene : item.name;
