@@ -242,6 +242,7 @@ async function drawNow(summary) {
 }
 
 const plural = (n, one, many = `${one}s`) => `${n} ${n === 1 ? one : many}`;
+let editing = null; // the assignment loaded into the editor ("Edit…"), saved in its place; null: a new one
 let everyStep = false; // "Show every step" pressed: the steps nobody has answered are listed too
 
 /** A step's students: done and stuck, of the class (the bar above counts answers, not students). */
@@ -394,9 +395,11 @@ function buildEditor() {
       steps.replaceChildren(...practice.exercises.map((e, k) => {
         const id = `assign-${scene.id}-${k}`;
         const tick = el("input", { type: "checkbox", id, "data-step": e.step, "data-coordinate": e.coordinate || "" });
-        return el("li", {}, tick, typeset(el("label", { for: id }), stepTex(practice, e.step, e.coordinate)));
+        // the step in words, as the student reads it ("Energy function h", "ω² of small oscillations")
+        return el("li", {}, tick, el("label", { for: id, text: e.title }));
       }));
     };
+    box.fill = fill; // awaited when an assignment is loaded to edit, before its steps are ticked
     box.addEventListener("change", fill);
     fill();
     return item;
@@ -429,8 +432,12 @@ function drawSeries() {
       else refuse(r, "assign-status");
       await reloadSeries();
     });
+    // "Edit…": the assignment loaded into the editor; saving replaces it in its place, its answers kept
+    const edit = el("button", { type: "button", text: "Edit…", "data-edit": a.n,
+      "aria-label": `Edit assignment ${a.n}, ${a.title} (its answers are kept)` });
+    edit.addEventListener("click", () => editAssignment(a));
     return el("li", { className: "assign-entry", "data-assignment": a.n },
-      el("strong", { text: a.title }), a.due ? ` · due ${when(a.due)} ` : " · no due date ", remove,
+      el("strong", { text: a.title }), a.due ? ` · due ${when(a.due)} ` : " · no due date ", edit, " ", remove,
       el("ul", { className: "assign-items" }, ...a.items.map(itemLine)));
   }));
   // the empty state is a sentence beside the list, not its first item
@@ -471,7 +478,7 @@ async function systemPractice(item) {
   }
 }
 
-$("assign-system-load").addEventListener("click", async () => {
+async function loadSystemSteps() {
   // a fresh try: the last refusal and steps go (they were for the system as it was)
   $("assign-system-steps").replaceChildren();
   $("assign-system-status").textContent = "";
@@ -487,9 +494,12 @@ $("assign-system-load").addEventListener("click", async () => {
   $("assign-system-steps").replaceChildren(...practice.exercises.map((e, k) => {
     const id = `assign-system-${k}`;
     const tick = el("input", { type: "checkbox", id, "data-step": e.step, "data-coordinate": e.coordinate || "" });
-    return el("li", {}, tick, typeset(el("label", { for: id }), stepTex(practice, e.step, e.coordinate)));
+    return el("li", {}, tick, el("label", { for: id, text: e.title })); // the step in words, as the student reads it
   }));
-});
+  return practice;
+}
+
+$("assign-system-load").addEventListener("click", loadSystemSteps);
 
 const ticked = (list) => [...list.querySelectorAll("input:checked")].map((t) => ({
   step: t.dataset.step, ...(t.dataset.coordinate ? { coordinate: t.dataset.coordinate } : {}) }));
@@ -517,23 +527,97 @@ $("assign-save").addEventListener("click", async () => {
     $("assign-status").textContent = NOTHING_SET;
     return;
   }
-  const due = $("assign-due").value ? new Date($("assign-due").value).toISOString() : null;
+  const typedDue = $("assign-due").value;
+  // an edited assignment whose due time was left as it was keeps it exactly (a time already past stays allowed)
+  const due = editing && typedDue === localInput(editing.due) ? editing.due
+    : typedDue ? new Date(typedDue).toISOString() : null;
+  if (editing) {
+    // a scene's parameters (set through the API) stay with the scene
+    for (const item of items) item.parameters = editing.items.find((i) => i.scene && i.scene === item.scene)?.parameters;
+    const title = $("assign-title-input").value.trim() || editing.title;
+    const r = await api("PUT", `/api/classes/${current.code}/assignments/${editing.n}`,
+      { key: current.key, body: { title, due, items } });
+    if (r.status !== 200) {
+      refuse(r, "assign-status");
+      return;
+    }
+    resetEditor();
+    await reloadSeries();
+    $("assign-status").textContent = `Saved: ${r.data.n}. ${r.data.title} (its answers are kept).`;
+    return;
+  }
   const title = $("assign-title-input").value.trim() || `Assignment ${series.length + 1}`;
   const r = await api("POST", `/api/classes/${current.code}/assignments`, { key: current.key, body: { title, due, items } });
   if (r.status !== 201) {
     refuse(r, "assign-status");
     return;
   }
+  resetEditor();
+  await reloadSeries();
+  $("assign-status").textContent = `Added: ${r.data.n}. ${r.data.title}.`;
+});
+
+/** The editor emptied, back to "A new assignment". */
+function resetEditor() {
+  editing = null;
   $("assign-title-input").value = "";
   $("assign-due").value = "";
   $("assign-system").value = "";
   $("assign-system-name").value = "";
   $("assign-system-steps").replaceChildren();
   $("assign-system-status").textContent = "";
+  $("assign-editor-title").textContent = "A new assignment";
+  $("assign-save").textContent = "Add this assignment";
+  $("assign-cancel").hidden = true;
   buildEditor();
-  await reloadSeries();
-  $("assign-status").textContent = `Added: ${r.data.n}. ${r.data.title}.`;
+}
+
+$("assign-cancel").addEventListener("click", () => {
+  resetEditor();
+  $("assign-status").textContent = "";
 });
+
+/** An ISO time as a datetime-local input's value, in the browser's local time ("2026-12-04T17:00"). */
+function localInput(iso) {
+  if (!iso) return "";
+  const t = new Date(iso);
+  const pad = (n) => String(n).padStart(2, "0");
+  return `${t.getFullYear()}-${pad(t.getMonth() + 1)}-${pad(t.getDate())}T${pad(t.getHours())}:${pad(t.getMinutes())}`;
+}
+
+const tickSteps = (list, steps) => {
+  for (const s of steps) {
+    const box = list.querySelector(`input[data-step="${s.step}"][data-coordinate="${s.coordinate || ""}"]`);
+    if (box) box.checked = true;
+  }
+};
+
+/** An assignment loaded into the editor: its title, due time, scenes and steps ticked, its typed system. */
+async function editAssignment(a) {
+  resetEditor();
+  editing = a;
+  $("assign-editor-title").textContent = `Editing assignment ${a.n}`;
+  $("assign-save").textContent = `Save the changes to assignment ${a.n}`;
+  $("assign-cancel").hidden = false;
+  $("assign-title-input").value = a.title;
+  $("assign-due").value = localInput(a.due);
+  $("assign-status").textContent = `Editing ${a.n}. ${a.title}: its answers are kept when you save.`;
+  for (const item of a.items.filter((i) => i.scene)) {
+    const box = $(`assign-${item.scene}`);
+    if (!box) continue;
+    box.checked = true;
+    await box.fill();
+    tickSteps(box.parentElement.querySelector(".assign-steps"), item.steps);
+  }
+  const typed = a.items.find((i) => i.system);
+  if (typed) {
+    $("assign-system-box").open = true;
+    $("assign-system-name").value = typed.name;
+    $("assign-system").value = JSON.stringify(typed.system);
+    if (await loadSystemSteps()) tickSteps($("assign-system-steps"), typed.steps);
+  }
+  $("assign-editor-title").scrollIntoView({ block: "start" });
+}
 
 // ---- the record ----------------------------------------------------------------------------------
 
