@@ -13,6 +13,10 @@ const memory = stored("lagrange-join");
 const scenes = JSON.parse(document.getElementById("class-scenes").textContent);
 const titleOf = Object.fromEntries(scenes.map((s) => [s.id, s.title]));
 const $ = (id) => document.getElementById(id);
+// a student's key that no longer opens its class: the class was deleted (by its instructor, or past its retention)
+const CLOSED = "This class was closed by your instructor: its page and your answers in it are gone. To join another "
+  + "class, type its code.";
+
 let current = memory.get(); // {code, key, name, title}
 let series = null; // the class's assignments, in order: {n, title, due, items}
 const done = new Set(); // "assignment|item|step|coordinate" of the steps this student has done
@@ -147,7 +151,7 @@ function stepView(a, item, practice, s, index) {
         form.classList.add("step-done");
         progress();
       }
-      if (r.status === 403) leave("This class no longer exists, or your key no longer opens it.");
+      if (r.status === 403) leave(CLOSED);
     } catch {
       verdictView(box, { status: 0, data: { detail: "The server cannot be reached; press Check again (an answer is never counted twice)." } });
     } finally {
@@ -201,7 +205,7 @@ async function load() {
     return;
   }
   if (r.status === 403 || r.status === 401) {
-    leave("This class no longer exists, or your key no longer opens it.");
+    leave(CLOSED);
     return;
   }
   if (r.status !== 200) {

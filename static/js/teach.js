@@ -111,25 +111,68 @@ function useSeries(found) {
   drawSeries();
 }
 
+const NO_TITLE = "Give the class a title your students will recognise (for example “Mechanics II, Tuesday”; "
+  + "200 characters at most): spaces alone are not a title.";
+
 $("create-form").addEventListener("submit", async (event) => {
   event.preventDefault();
   const title = $("create-title").value.trim();
+  $("create-status").textContent = "";
+  // said at the box, before asking the server (a title of spaces only passes the browser's "required")
+  if (!title) {
+    $("create-status").textContent = NO_TITLE;
+    $("create-title").focus();
+    return;
+  }
   const r = await api("POST", "/api/classes", { body: { title } });
   if (r.status !== 201) {
-    refuse(r, "start-status");
+    const found = refusal(r, "create-status");
+    $("create-status").textContent = r.status === 422 && found.at === "assign-status" ? NO_TITLE : found.text;
     return;
   }
   await open(r.data.code, r.data.teacher_key);
-  // shown once: the server keeps only its hash
-  $("recovery-code").textContent = r.data.recovery_code;
-  $("recovery-link").textContent = `${window.location.origin}${r.data.teacher_link}`;
+  // shown once: the server keeps only its hash; broken only between its groups on a narrow screen
+  secret($("recovery-code"), r.data.recovery_code, /(?<=-)/);
+  secret($("recovery-link"), `${window.location.origin}${r.data.teacher_link}`, /(?=[#&])|(?<=-)/);
+  $("recovery-status").textContent = "";
   $("class-recovery").hidden = false;
 });
+
+/** A secret's text in unbreakable parts (split by `at`), so a line may end only between two of them. */
+function secret(element, text, at) {
+  element.dataset.text = text;
+  element.replaceChildren(...text.split(at).flatMap((part) => [el("span", { className: "secret-part", text: part }),
+    document.createElement("wbr")]));
+}
+
+/** Copy a text to the clipboard (the selection's copy where the Clipboard API is not offered), said beside it. */
+async function copy(text, what) {
+  try {
+    await navigator.clipboard.writeText(text);
+  } catch {
+    const box = el("textarea", { readonly: "" });
+    box.value = text;
+    document.body.append(box);
+    box.select();
+    const done = document.execCommand("copy");
+    box.remove();
+    if (!done) {
+      $("recovery-status").textContent = `Copying is not allowed here: select the ${what} and copy it by hand.`;
+      return;
+    }
+  }
+  $("recovery-status").textContent = `The ${what} is copied: paste it where you keep such things.`;
+}
+$("recovery-code-copy").addEventListener("click", () => copy($("recovery-code").dataset.text, "recovery code"));
+$("recovery-link-copy").addEventListener("click", () => copy($("recovery-link").dataset.text, "teacher link"));
 
 $("recovery-done").addEventListener("click", () => {
   $("class-recovery").hidden = true;
   $("recovery-code").textContent = "";
   $("recovery-link").textContent = "";
+  $("recovery-status").textContent = "";
+  delete $("recovery-code").dataset.text;
+  delete $("recovery-link").dataset.text;
 });
 
 /** The instructor's key from the class code and its recovery code (POST …/recover), then the class opened. */
@@ -457,12 +500,37 @@ function typedSystem() {
   return { name: $("assign-system-name").value.trim(), system: JSON.parse(text) };
 }
 
+/** Where a text stops being JSON: the first place no continuation can make valid (a prefix up to it is JSON
+ * cut short), as {line, column, near} counted from 1. */
+function whereNotJson(text) {
+  let good = 0;
+  for (let k = 1; k <= text.length; k++) {
+    try {
+      JSON.parse(text.slice(0, k));
+      good = k;
+    } catch (error) {
+      // only cut short so far: "Unexpected end of JSON input", "end of data" (Firefox), or a complaint about the
+      // very end ("Expected ',' or '}' … at position k" for a prefix of k characters)
+      const at = error.message.match(/at position (\d+)/);
+      if (/end of (JSON )?(input|data)/i.test(error.message) || (at && Number(at[1]) === k)) good = k;
+      else break;
+    }
+  }
+  const before = text.slice(0, good).split("\n");
+  const near = text.slice(good, good + 12).split("\n")[0];
+  return { line: before.length, column: before[before.length - 1].length + 1, near };
+}
+
 /** The typed system read from its box, or null with the reason said at the box (not JSON, or empty). */
 function readSystem() {
   try {
     return typedSystem();
-  } catch (error) {
-    $("assign-system-status").textContent = `The system is not JSON: ${error.message}`;
+  } catch {
+    const text = $("assign-system").value;
+    const { line, column, near } = whereNotJson(text);
+    $("assign-system-status").textContent = `The system is not written in the expected form: at line ${line}, `
+      + `column ${column}${near ? ` (at “${near}”)` : ""}. Write it as in the example above the box: braces around `
+      + "named parts, each name and each formula in double quotes, lists in square brackets.";
     return null;
   }
 }
@@ -638,18 +706,35 @@ $("grades-csv").addEventListener("click", () => download(`/api/classes/${current
 $("grades-details-csv").addEventListener("click", () => download(`/api/classes/${current.code}/grades?format=details-csv`,
   `grades-${current.code}-details.csv`));
 
-function forget() {
+function forget(message = "") {
   clearTimeout(timer);
   current = null;
   memory.set(null);
   show();
+  $("start-status").textContent = message;
 }
 
-$("forget-class").addEventListener("click", forget);
+// closing forgets the class on this device only: asked first, with the way back (the key itself) in the question
+$("forget-class").addEventListener("click", () => {
+  const { code, key } = current;
+  if (!window.confirm(`Close the class ${code} on this device? It is not deleted, but this browser forgets it: to open `
+    + "it again you need its recovery code or teacher link (shown once when you created it), or this instructor key: "
+    + `${key}`)) return;
+  forget(`The class ${code} is closed on this device, not deleted: open it again with its recovery code, its teacher `
+    + "link or its instructor key.");
+});
 $("delete-class").addEventListener("click", async () => {
-  if (!window.confirm(`Delete the class ${current.code} and every answer recorded for it? This cannot be undone.`)) return;
-  const r = await api("DELETE", `/api/classes/${current.code}`, { key: current.key });
-  if (r.status === 204) forget();
+  const { code } = current;
+  // the record offered first: once deleted, nothing of it can be downloaded
+  if (window.confirm(`Before deleting the class ${code}: download every answer and the grades (CSV) first? `
+    + "OK downloads them now; Cancel goes on without them.")) {
+    await download(`/api/classes/${code}/export?format=csv`, `class-${code}.csv`);
+    await download(`/api/classes/${code}/grades?format=details-csv`, `grades-${code}-details.csv`);
+  }
+  if (!window.confirm(`Delete the class ${code} and every answer recorded for it? This cannot be undone.`)) return;
+  const r = await api("DELETE", `/api/classes/${code}`, { key: current.key });
+  if (r.status === 204) forget(`The class ${code} is deleted, with every answer recorded for it. Its students are told `
+    + "it was closed when they next open it.");
   else refuse(r, "data-status");
 });
 
