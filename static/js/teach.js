@@ -367,8 +367,11 @@ function drawAssignments(summary) {
   body.replaceChildren(...(summary.assignments || []).map((a) => el("tr", { "data-assignment": a.n },
     el("th", { scope: "row", text: `${a.n}. ${a.title}` }),
     el("td", { text: when(a.due) }),
-    el("td", { className: "dash-done", text: `${a.students_done.length} of ${summary.students}${a.students_done.length ? `: ${a.students_done.join(", ")}` : ""}` }),
-    el("td", { className: "dash-stuck", text: a.students_stuck.length ? a.students_stuck.join(", ") : "—" }))));
+    // the names apart from the counts, so projector mode can show the counts alone
+    el("td", { className: "dash-done" }, `${a.students_done.length} of ${summary.students}`,
+      a.students_done.length ? el("span", { className: "dash-names", text: `: ${a.students_done.join(", ")}` }) : null),
+    el("td", { className: "dash-stuck", ...(a.students_stuck.length ? { "data-count": plural(a.students_stuck.length, "student") } : {}) },
+      a.students_stuck.length ? el("span", { className: "dash-names", text: a.students_stuck.join(", ") }) : "—"))));
 }
 
 async function drawStudents(students) {
@@ -746,7 +749,16 @@ function project(on) {
   $("projector").setAttribute("aria-pressed", String(on));
   $("projector").textContent = on ? "Leave projector mode" : "Projector mode";
   projector.set(on || null);
+  // a projected dashboard shows counts, not who is stuck, until the teacher chooses to show the names
+  $("names-shown").hidden = !on;
+  if (!on) showNames(false);
 }
+function showNames(on) {
+  document.body.classList.toggle("names-shown", on);
+  $("names-shown").setAttribute("aria-pressed", String(on));
+  $("names-shown").textContent = on ? "Hide the students' names" : "Show the students' names";
+}
+$("names-shown").addEventListener("click", () => showNames(!document.body.classList.contains("names-shown")));
 $("projector").addEventListener("click", () => project(!document.body.classList.contains("projector")));
 project(Boolean(projector.get()));
 
