@@ -9,6 +9,7 @@ called; this module only changes who is spoken to, so the two never drift apart.
 
 from __future__ import annotations
 
+import functools
 import re
 
 # (the second person, the third) in the order they are tried: the longer phrases before the words they hold
@@ -34,5 +35,9 @@ def for_teacher(name: str) -> str:
     """A mistake's name (or the tutor's sentence about it) with the student's "your"/"you" put in the third
     person; names already in the third person come back unchanged."""
     for pattern, words in _RULES:
-        name = pattern.sub(lambda m, w=words: _same_case(m.group(0), w), name)
+        name = pattern.sub(functools.partial(_replaced, words), name)
     return name
+
+
+def _replaced(words: str, found: re.Match[str]) -> str:
+    return _same_case(found.group(0), words)

@@ -12,9 +12,9 @@ from datetime import timedelta
 import pytest
 
 from app.main import app
-from app.web.api_classes import classroom as classroom_dep
 from app.service.classroom import store
 from app.service.classroom.database import now
+from app.web.api_classes import classroom as classroom_dep
 from tests.classes import classroom
 
 SCENE = "simple-pendulum"

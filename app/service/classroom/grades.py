@@ -98,7 +98,8 @@ def gradebook(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict
                 count["first_try"] += own and first_id == right_id
             score: float | None = round(POINTS * count["own"] / head["steps"], 1) if head["steps"] else 0.0
             # nothing tried before it is due (or when it has no due time): no score yet, not a zero
-            if not count["tried"] and (each["due"] is None or due_utc(each["due"]) > now):
+            due = due_utc(each["due"])
+            if not count["tried"] and (due is None or due > now):
                 score = None
             grades.append({"assignment": head["n"], "steps": head["steps"], "first_try": count["first_try"],
                            "right": count["right"], "shown": count["shown"], "score": score})

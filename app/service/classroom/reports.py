@@ -235,7 +235,8 @@ def export_csv(db: Database, class_id: int, series: list[dict[str, Any]]) -> byt
             select(HintRow.student_id, HintRow.assignment_id, HintRow.item, HintRow.step, HintRow.coordinate,
                    HintRow.at).where(HintRow.class_id == class_id)
         ).all()
-    shown_at = {(student, assignment, item, step, coordinate or ""): at
+    shown_at: dict[tuple[int, int | None, str, str, str], datetime] = {
+        (student, assignment, item, step, coordinate or ""): at
                 for student, assignment, item, step, coordinate, at in hints}
     out = io.StringIO()
     out.write(BOM)
