@@ -88,7 +88,9 @@ def _unavailable(d: Derivation, step: str) -> str:
     return "this system has no equilibrium with a closed-form ω² that is not unstable"
 
 
-def _label(step: str, name: str | None, d: Derivation) -> str:
+def step_title(step: str, name: str | None) -> str:
+    """A step in words, as a student and a teacher read it ("energy function h", "Euler–Lagrange equation for θ"):
+    the one home of the steps' titles (a step the engine does not know comes back as given)."""
     shown = plain_name(name) if name else ""
     return {
         "position": "position",
@@ -100,7 +102,7 @@ def _label(step: str, name: str | None, d: Derivation) -> str:
         "acceleration": f"acceleration of {shown}",
         "hamiltonian": "energy function h",
         "omega_squared": "ω² of small oscillations",
-    }[step]
+    }.get(step, step)
 
 
 def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: bool = True) -> Problem:
@@ -175,7 +177,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
     namespace = {**table.namespace(), **{s.name: s for s in table.qdd}, **{p.name: p for p in momenta}}
     groups = Groups((*table.params, *momenta), (*table.q, table.t), (*table.qd, *table.qdd))
     latex_names = {**table.latex_names(), **{p: sp.latex(p) for p in momenta}}
-    label = position_label(d, k // 3, k % 3) if step == "position" else _label(step, coordinate, d)  # type: ignore[operator]
+    label = position_label(d, k // 3, k % 3) if step == "position" else step_title(step, coordinate)  # type: ignore[operator]
     relation = RELATIONS.get(step, "exact")
     return Problem(
         step,

@@ -13,6 +13,10 @@ const memory = stored("lagrange-join");
 const scenes = JSON.parse(document.getElementById("class-scenes").textContent);
 const titleOf = Object.fromEntries(scenes.map((s) => [s.id, s.title]));
 const $ = (id) => document.getElementById(id);
+// a student's key that no longer opens its class: the class was deleted (by its instructor, or past its retention)
+const CLOSED = "This class was closed by your instructor: its page and your answers in it are gone. To join another "
+  + "class, type its code.";
+
 let current = memory.get(); // {code, key, name, title}
 let series = null; // the class's assignments, in order: {n, title, due, items}
 const done = new Set(); // "assignment|item|step|coordinate" of the steps this student has done
@@ -42,7 +46,20 @@ function progress() {
     const mine = keysOf(a);
     const line = document.querySelector(`[data-assignment="${a.n}"] .join-assignment-progress`);
     if (line) line.textContent = `${mine.filter((s) => done.has(s)).length} of ${mine.length} steps done`;
+    const due = document.querySelector(`[data-assignment="${a.n}"] .join-assignment-due`);
+    if (due) due.replaceChildren(...dueWords(a));
   }
+}
+
+/** An assignment's due time, and once it has passed, that an answer now is late and does not count. */
+function dueWords(a) {
+  if (!a.due) return [];
+  const words = [`Due ${when(a.due)} · `];
+  if (new Date(a.due) < new Date()) {
+    words.push(el("strong", { className: "join-late", text: "past due" }),
+      ": an answer now is recorded as late and does not count toward the grade · ");
+  }
+  return words;
 }
 
 function verdictView(box, r) {
@@ -146,7 +163,7 @@ function stepView(a, item, practice, s, index) {
         form.classList.add("step-done");
         progress();
       }
-      if (r.status === 403) leave("This class no longer exists, or your key no longer opens it.");
+      if (r.status === 403) leave(CLOSED);
     } catch {
       verdictView(box, { status: 0, data: { detail: "The server cannot be reached; press Check again (an answer is never counted twice)." } });
     } finally {
@@ -182,7 +199,8 @@ async function drawItems() {
   for (const a of series) {
     const part = el("section", { className: "join-assignment", "data-assignment": a.n },
       el("h2", { className: "join-assignment-title", text: `${a.n}. ${a.title}` }),
-      el("p", { className: "help" }, a.due ? `Due ${when(a.due)} · ` : "", el("span", { className: "join-assignment-progress" })));
+      el("p", { className: "help" }, el("span", { className: "join-assignment-due" }, ...dueWords(a)),
+        el("span", { className: "join-assignment-progress" })));
     for (const item of a.items) {
       const section = el("section", { className: "class-panel join-item" });
       const heading = item.scene ? titleOf[item.scene] || item.scene : item.name;
@@ -219,7 +237,7 @@ async function load() {
     return;
   }
   if (r.status === 403 || r.status === 401) {
-    leave("This class no longer exists, or your key no longer opens it.");
+    leave(CLOSED);
     return;
   }
   if (r.status !== 200) {

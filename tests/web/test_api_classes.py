@@ -87,14 +87,14 @@ def test_a_class_from_creation_to_deletion(client, classes):
 
     export = client.get(f"/api/classes/{code}/export?format=csv", headers=bearer(teacher))
     assert export.headers["content-type"].startswith("text/csv") and export.headers["cache-control"] == "no-store"
-    table = list(csv.DictReader(io.StringIO(export.text)))
+    table = list(csv.DictReader(io.StringIO(export.content.decode("utf-8-sig"))))
     # the mistake in the tutor's words (as the student read them), the scene by its title, the assignment named
     words = summary["steps"][0]["mistake_names"]["missing_half"]
     assert words and "_" not in words
     assert [(r["student"], r["assignment"], r["item"], r["verdict"], r["mistake"], r["answer"]) for r in table] == [
-        ("Ada", "1. Assignment 1", "Simple pendulum", "incorrect", words, WRONG_T),
-        ("Ada", "1. Assignment 1", "Simple pendulum", "correct", "", RIGHT_T),
-        ("Bo", "1. Assignment 1", "Simple pendulum", "incorrect", words, WRONG_T)]
+        ("Ada", "1. Assignment 1", "Simple pendulum", "wrong", words, WRONG_T),
+        ("Ada", "1. Assignment 1", "Simple pendulum", "right", "", RIGHT_T),
+        ("Bo", "1. Assignment 1", "Simple pendulum", "wrong", words, WRONG_T)]
 
     assert client.delete(f"/api/classes/{code}", headers=bearer(teacher)).status_code == 204
     assert client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).status_code == 403

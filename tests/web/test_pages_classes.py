@@ -45,3 +45,12 @@ def test_the_qr_code_is_the_short_link_on_this_server(client):
     # the code of the absolute short link as this server is reached (the Host the browser used)
     assert r.content == qr_svg("http://testserver/j/ACK3X7", "QR code of http://testserver/j/ACK3X7")
     assert r.content != qr_svg("http://testserver/j/ACK3X9", "QR code of http://testserver/j/ACK3X7")
+
+
+def test_the_home_page_and_the_header_lead_to_the_classes(client):
+    home = client.get("/").text
+    body = home.split("</header>", 1)[1]  # past the site's header: the home page's own words
+    assert '<a href="/join">Join a class</a>' in body and '<a href="/teach">Teach a class</a>' in body
+    for path in ("/", "/playground", "/scenes/simple-pendulum"):
+        header = client.get(path).text.split('<nav aria-label="Site">', 1)[1].split("</nav>", 1)[0]
+        assert '<a href="/join">Join a class</a>' in header and '<a href="/teach">Teach a class</a>' in header, path
