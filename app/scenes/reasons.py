@@ -106,7 +106,7 @@ HELIX_BEAD: dict[str, str] = {
     "potential": "Only the height matters for gravity: U = m g z.",
     "lagrangian": "A free fall along z with an enlarged inertia.",
     "derivatives:z": "∂L/∂z = −m g is the weight; ∂L/∂ż = m (1 + α² R²) ż is the momentum along the wire.",
-    "euler-lagrange": "Constant acceleration: the weight is shared between the climb and the turning.",
+    "euler-lagrange": "Constant acceleration: the full weight m g acts on an inertia enlarged to m (1 + α² R²), so the bead falls more slowly than a free body.",
     "mass-matrix": "𝓜 = m (1 + α² R²), the effective inertia along the wire; the force f = −m g.",
     "accelerations": "z̈ = −g/(1 + α² R²): a tighter helix falls more slowly.",
     "momenta": "p_z = m (1 + α² R²) ż, the momentum along the wire measured in z.",
@@ -263,8 +263,8 @@ PULLEY: dict[str, str] = {
     "h-vs-e": _h_is_e("The positions do not depend on t"),
     **_hamiltonian("the kinetic energy written with the inverse mass matrix, plus the weights"),
     "equilibria": "The generalized forces are constant: with m₁ = m₂ = M/2 they vanish and every position is an equilibrium; otherwise (at the default masses, too) there is none.",
-    "constraints": "With z₁, z₂, z₃ the heights of m₁, m₂ and M (z₁ = y₁, z₂ = y₂, z₃ = Y, all in m), the string's length fixes z₁ + z₂ + 2 z₃; the constant 2 m places M below the pulleys.",
-    "constraint-forces": "λ times ∂𝒞/∂z₁ = 1 is the string's upward pull on mass 1, the tension, the same along the whole string; on the movable pulley it pulls with twice that.",
+    "constraints": "With z₁, z₂, z₃ the heights of m₁, m₂ and M (z₁ = y₁, z₂ = y₂, z₃ = Y, all in metres), the string's length fixes z₁ + z₂ + 2 z₃; the constant, 2 metres, places M below the pulleys.",
+    "constraint-forces": "Since ∂𝒞/∂z₁ = 1, the multiplier λ is itself the string's upward pull on mass 1: the tension, the same along the whole string; on the movable pulley it pulls with twice that.",
 }
 
 
@@ -294,7 +294,7 @@ MOVABLE_INCLINE: dict[str, str] = {
     "time-integral": "The integral gives the uniformly accelerated slide D(t).",
     "reduced-equilibria": "U_eff′ is constant and non-zero: the block always slides.",
     "equilibria": "A frictionless slope cannot hold the block, so there is none.",
-    "constraints": "With (x₁, z₁) the wedge's top corner and (x₂, z₂) the block, across and up in m, the block stays on the slope and the wedge on the floor.",
+    "constraints": "With (x₁, z₁) the wedge's top corner and (x₂, z₂) the block, across and up in metres, the block stays on the slope and the wedge on the floor.",
     "constraint-forces": "The wedge's push on the block is less than m g cos α, because the wedge recoils.",
 }
 
@@ -321,7 +321,7 @@ ROTATING_PARABOLA: dict[str, str] = {
     "energy-integral": "The conserved h gives ρ̇ from ρ.",
     "time-integral": "The integral gives the period of the oscillation along the wire when ω² < 2 g α.",
     "reduced-equilibria": "The bottom holds the bead with Ω² = 2 g α − ω² when that is positive (Ω, the frequency along the wire; ω is the turning rate).",
-    "equilibria": "ρ = 0 is the only equilibrium unless ω² = 2 g α, when every ρ is one. V = −L at ρ̇ = 0 is the U_eff of the effective-potential step: gravity's m g α ρ² less the centrifugal ½ m ω² ρ².",
+    "equilibria": "ρ = 0 is the only equilibrium unless ω² = 2 g α, when every ρ is one. The function whose stationary points these are is U_eff, as in the effective potential above: gravity's m g α ρ² less the centrifugal ½ m ω² ρ².",
     "normal-modes": "At the bottom the small oscillations along the wire have Ω² = 2 g α − ω².",
     "constraints": "The wire lies on the paraboloid z = α ρ² and in the plane turned by ω t.",
     "constraint-forces": "The wire pushes normal to itself in its plane and, across it, drives the bead around.",

@@ -266,3 +266,18 @@ def test_the_potential_energys_sentence_is_true_of_a_driven_support_and_nothing_
     assert nothing_conserved(doc) == (
         "Nothing is conserved here: L depends explicitly on time (∂L/∂t ≠ 0), so h changes, and no momentum stays constant."
     )
+
+
+def test_words_a_professor_flagged_read_as_a_textbook_does(client):
+    # prof-g 43: a reciprocal unit is a negative power ("0.8155 m⁻¹", never "0.8155 1/m")
+    parabola = page(client, "rotating-parabola")
+    assert re.search(r"The slider marks [^<]*\d m⁻¹ \(", parabola) and " 1/m" not in parabola
+    # prof-g 40, 41: ρ is signed; U_eff has one name (no V beside it)
+    assert "signed distance of the bead from the axis" in parabola and "V = −L" not in parabola
+    # prof-g 15: the winding adds inertia, not weight (no "diluted" or "shared" weight beside step 5)
+    helix = page(client, "helix-bead")
+    assert "diluted" not in helix and "shared between" not in helix and "inertia, not weight" in helix
+    # prof-g 34, 33: λ is itself the tension; 2 metres, not "2 m" on a page of masses
+    pulley = page(client, "pulley")
+    assert "the multiplier λ is itself the string's upward pull" in pulley and "λ times ∂𝒞" not in pulley
+    assert "the constant, 2 metres," in pulley and "constant 2 m " not in pulley
