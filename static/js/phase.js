@@ -16,7 +16,7 @@
 import { compile } from "./expr.js";
 import { axis, COLORS, finite, layout, PreviewPanel, rateUnit, react, titled } from "./plotkit.js";
 import { reduced } from "./reduction.js";
-import { fmt, seriesTable } from "./summaries.js";
+import { fmt, relativeFloor, seriesTable } from "./summaries.js";
 
 const TAU = 2 * Math.PI;
 const GRID = 481;
@@ -218,7 +218,7 @@ export class PhasePanel extends PreviewPanel {
       ? "L depends explicitly on time (∂L/∂t ≠ 0), so h is not conserved: it changes along the run, the orbit may cross itself, and no curves of constant h are drawn, since no run follows one."
       : "with more than one coordinate moving, the orbit may cross itself, and no curves of constant energy can be drawn in this plane.";
     this.readout.textContent = `${lq} against its rate, for this run: ${why}${angle ? " The angle is shown in (−π, π]." : ""}`;
-    seriesTable(this.summary, `Phase portrait of ${lq}`, run.t, [{ name: lq, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[q + "_dot"], values: run.state[`${q}_dot`] }]);
+    seriesTable(this.summary, `Phase portrait of ${lq}`, run.t, [{ name: lq, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[q + "_dot"], values: run.state[`${q}_dot`] }], relativeFloor(run));
   }
 
   drawLevels(run, m) {
@@ -295,7 +295,7 @@ export class PhasePanel extends PreviewPanel {
       ? ` The other coordinate is cyclic: its momentum stays at ${m.held[0]} (the initial state's), which leaves h a function of ${lr} and its rate.`
       : ` The other coordinates are cyclic: their momenta stay at ${m.held.join(", ")} (the initial state's), which leaves h a function of ${lr} and its rate.`;
     this.readout.textContent = `${lr} against its rate${angle && m.turn ? ", the angle wrapped into (−π, π]" : ""}.${reduction}${kind}${eq}${forced}`;
-    seriesTable(this.summary, `Phase portrait of ${lr}`, run.t, [{ name: lr, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[r + "_dot"], values: m.rates }]);
+    seriesTable(this.summary, `Phase portrait of ${lr}`, run.t, [{ name: lr, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[r + "_dot"], values: m.rates }], relativeFloor(run));
     this.marks();
   }
 
