@@ -71,3 +71,12 @@ def test_the_caption_tells_where_the_default_run_goes(page, scene_id):
         x = run["state"][coordinate]
         hi, lo = _extreme(run["t"], x, True), _extreme(run["t"], x, False)
         assert min(abs(hi - x_t), abs(lo - x_t)) <= 2e-3 * max(abs(x_t), hi - lo), (text, x_t, hi, lo)
+
+
+def test_a_value_below_the_tolerance_prints_as_zero(page):
+    # prof-g 17: "X at t = 1.276 s = 8.674 × 10⁻¹⁹" where the block is at the foot of the ramp, X = 0
+    _caption_and_run(page, "incline-block")
+    rows = page.locator("#panel-phase table tbody tr")
+    first = rows.first.locator("td").all_text_contents()
+    assert first[1] == "0", first
+    assert "10⁻¹⁸" not in page.content() and "10⁻¹⁹" not in page.content()
