@@ -16,7 +16,8 @@ from app.scenes import SCENES
 
 pytestmark = [pytest.mark.browser, pytest.mark.slow]
 
-LEVELS = "document.querySelector('#panel-phase')?.dataset.xrange"
+# the caption is written (level sets of one coordinate, or the projection of several)
+WRITTEN = "document.querySelector('#panel-phase .readout')?.textContent.includes('against its rate')"
 NUMBER = r"(−?[\d.]+(?: × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?)"
 
 
@@ -47,7 +48,7 @@ def _caption_and_run(page, scene_id):
     if not page.locator("#panel-phase").count():
         return None, (None, None), run
     page.locator("#panel-phase").scroll_into_view_if_needed()
-    page.wait_for_function(LEVELS)
+    page.wait_for_function(WRITTEN)
     text = page.locator("#panel-phase .readout").text_content() or ""
     panel = page.locator("#panel-phase")
     return text, (panel.get_attribute("data-turning"), panel.get_attribute("data-coordinate")), run

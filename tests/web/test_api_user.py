@@ -114,7 +114,7 @@ def test_the_hoop_equilibria_say_where_they_exist_and_when_they_are_stable(clien
     assert set(by_position) == {"0", "pi", "acos(g/(R*w**2))", "-acos(g/(R*w**2))"}
     for tilted in ("acos(g/(R*w**2))", "-acos(g/(R*w**2))"):
         e = by_position[tilted]
-        assert r"rccos" in e["position"]["latex"] and "acos" not in e["position"]["latex"]
+        assert r"\arccos" in e["position"]["latex"] and "acos" not in e["position"]["latex"]
         assert e["exists"]["latex"] == "R w^{2} > g" and e["stable"] is True
     # the bottom: ω² = g/R − w², stable below the bifurcation only; the top never
     bottom = by_position["0"]
