@@ -19,6 +19,7 @@ own reduction (no cyclic momenta needed).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import partial
 
 import sympy as sp
 
@@ -172,12 +173,16 @@ def existence(root: sp.Expr, assume: dict[sp.Symbol, sp.Symbol]) -> sp.Relationa
     return sp.StrictGreaterThan(b, a, evaluate=False)
 
 
+def _solved_for(equation: sp.Eq, p: sp.Symbol) -> list[sp.Expr]:
+    return list(sp.solve(equation, p))
+
+
 def stable_where_it_exists(w2: sp.Expr, exists: sp.Relational, assume: dict[sp.Symbol, sp.Symbol]) -> bool | None:
     """The sign of ω² wherever ``exists`` (b > a) holds: a parameter of a written as b/(1 + u), u > 0 any."""
     b, a = exists.args
     u = sp.Symbol("u", positive=True)
     for p in sorted(a.free_symbols - b.free_symbols, key=sp.default_sort_key):
-        solved = within_budget(lambda p=p: sp.solve(sp.Eq(a, b / (1 + u)), p), None, SOLVE_WORK)
+        solved: list[sp.Expr] | None = within_budget(partial(_solved_for, sp.Eq(a, b / (1 + u)), p), None, SOLVE_WORK)
         if not solved or len(solved) != 1:
             continue
         on = sp.factor(sp.together(w2.xreplace({p: solved[0]}).xreplace(assume)))
