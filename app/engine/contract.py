@@ -132,6 +132,18 @@ def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[s
     return {}
 
 
+
+def _inequality(pr: Printer, relation: sp.Relational | None) -> dict[str, Any] | None:
+    """b > a with each side in its textbook form (R ω² > g), as text and LaTeX; None for none."""
+    if relation is None:
+        return None
+    big, small = relation.args
+    return {
+        "sympy": f"{sp.sstr(pr.form(big))} > {sp.sstr(pr.form(small))}",
+        "latex": f"{pr.tex(big)} > {pr.tex(small)}",
+        "tree": None,
+    }
+
 def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) -> dict[str, Any]:
     progress.now("the conserved quantities and the reduction to one coordinate")
     table, eqs, en, red = d.table, d.equations, d.energetics, d.reduction
@@ -210,6 +222,9 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
                     "position": {**pr.pair(e.position), "latex": pr.root(e.position)},
                     "omega_squared": pr.pair(e.omega_squared),
                     "stable": e.stable,
+                    # where it exists (arccos(g/(R w²)) needs R w² > g) and, with no verdict, when it is stable
+                    "exists": _inequality(pr, e.exists),
+                    "stable_when": _inequality(pr, e.stable_when),
                     # r₀ⁿ = C where the root is C^(1/n) (the cone's r₀³ = p_φ² tan α/(m² g)), n = 1 otherwise
                     "power": (root := power_form(e.position))[0],
                     "position_power": pr.pair(root[1]),

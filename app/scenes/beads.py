@@ -15,7 +15,7 @@ HELIX_BEAD = Scene(
     section="4.3",
     family="helix",
     reasons=reasons.HELIX_BEAD,
-    summary="A wire leaves one degree of freedom: the height z, with gravity diluted by the helix's pitch.",
+    summary="A wire leaves one degree of freedom: the height z, along which the winding adds inertia, not weight.",
     statement=(
         "A bead of mass m slides without friction along a wire bent into a helix of radius R whose axis is "
         "vertical. Going up the wire, the bead turns about the axis by the angle φ = α z, so α sets how tightly "
@@ -62,7 +62,7 @@ HELIX_BEAD = Scene(
 ROTATING_PARABOLA = Scene(
     id="rotating-parabola",
     coordinate_meanings={
-        "rho": "distance of the bead from the axis",
+        "rho": "signed distance of the bead from the axis, negative on the other branch of the wire",
     },
     title="Bead on a rotating parabolic wire",
     section="4.6–4.7",

@@ -245,7 +245,11 @@ def _plain(x: float) -> str:
 
 
 def unit_text(unit: str) -> str:
-    """A unit as printed: powers as superscripts (m/s^2 → m/s², kg*m^2 → kg·m²)."""
+    """A unit as printed: powers as superscripts (m/s^2 → m/s², kg*m^2 → kg·m²), a reciprocal as a negative power
+    (1/m → m⁻¹, 1/s → s⁻¹)."""
+    reciprocal = re.fullmatch(r"1/([A-Za-z]+)", unit.strip())
+    if reciprocal:
+        return reciprocal.group(1) + "⁻¹"
     return re.sub(
         r"\^(-?\d)", lambda m: m.group(1).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")), unit
     ).replace("*", "·")
@@ -322,7 +326,7 @@ def _marks(found: Sequence[dict[str, Any]], unit: str) -> list[dict[str, Any]]:
         value = m["value"]
         twin = any(o is not m and o["label"] == m["label"] and math.isclose(o["value"], -value) for o in found)
         size = f"±{abs(value):.4g}" if twin else f"{value:.4g}".replace("-", "−")
-        text = "" if twin and value < 0 else f"{size} {unit} ({m['label']})".replace("  ", " ")
+        text = "" if twin and value < 0 else f"{size} {unit_text(unit)} ({m['label']})".replace("  ", " ")
         out.append({"value": _fmt(value), "label": m["label"], "text": text})
     return out
 

@@ -144,6 +144,8 @@ class Equilibrium(BaseModel):
     position: ExprPair
     omega_squared: ExprPair
     stable: bool | None
+    exists: ExprPair | None = Field(None, description="Where the equilibrium exists (arccos(a/b) needs b > a); null when always.")
+    stable_when: ExprPair | None = Field(None, description="When stable is null: the condition on the parameters for ω² > 0.")
 
 
 class EffectivePotential(BaseModel):

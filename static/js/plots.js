@@ -21,7 +21,7 @@ import { ModesPanel } from "./modes.js";
 import { PhasePanel } from "./phase.js";
 import { PoincarePanel } from "./poincare.js";
 import { EffectivePotentialPanel, SmallOscillationsPanel } from "./reduction.js";
-import { constantOrRange, fmt, magnitude, median, seriesTable, sharedUnit, table } from "./summaries.js";
+import { constantOrRange, fmt, magnitude, median, relativeFloor, seriesTable, sharedUnit, table } from "./summaries.js";
 
 /** A panel of quantities against time, with a second row for their change since t = 0. */
 class TimePanel extends PreviewPanel {
@@ -67,7 +67,7 @@ class EnergyPanel extends TimePanel {
     };
     const changes = undecided ? `h changed by ${change(dh)}` : `E changed by ${change(dE)}; h changed by ${change(dh)}`;
     this.readout.textContent = `Largest change since t = 0: ${changes}. ${what}`;
-    seriesTable(this.summary, "Energies over the run (J)", run.t, [...top, ...bottom]);
+    seriesTable(this.summary, "Energies over the run (J)", run.t, [...top, ...bottom], relativeFloor(run));
   }
 }
 
@@ -78,7 +78,7 @@ class HvsEPanel extends TimePanel {
     this.drawSeries(run, top, [{ name: "E − h", values: gap, color: COLORS.a }], "energy (J)", "E − h (J)");
     const span = (a) => Math.max(...finite(a)) - Math.min(...finite(a));
     this.readout.textContent = `Over the run E varies by ${fmt(span(run.energy))} J while h varies by ${fmt(span(run.hamiltonian))} J.`;
-    seriesTable(this.summary, "h and E over the run (J)", run.t, [...top, { name: "E − h", values: gap }]);
+    seriesTable(this.summary, "h and E over the run (J)", run.t, [...top, { name: "E − h", values: gap }], relativeFloor(run));
   }
 }
 
@@ -108,7 +108,7 @@ class MomentaPanel extends TimePanel {
     // each momentum with its own unit: "p_θ stays at 1 kg·m²/s within 7.6 × 10⁻⁹ kg·m²/s"
     const said = (x, n) => `${fmt(x)}${unitOf(n) && !unitOf(n).includes("SI") ? ` ${unitOf(n)}` : ""}`;
     this.readout.textContent = top.map((s, k) => `${s.name} stays at ${said(s.values[0], names[k])} within ${said(Math.max(...finite(bottom[k].values).map(Math.abs)), names[k])}.`).join(" ");
-    seriesTable(this.summary, "Conserved momenta over the run", run.t, [...top, ...bottom]);
+    seriesTable(this.summary, "Conserved momenta over the run", run.t, [...top, ...bottom], relativeFloor(run));
   }
 }
 
@@ -136,7 +136,7 @@ class ConstraintForcePanel extends TimePanel {
       { shapes: [{ type: "line", xref: "paper", x0: 0, x1: 1, y0: 0, y1: 0, line: { color: "#57606a", width: 1 } }] });
     const ranges = top.filter((s) => !s.name.includes("slack")).map((s) => `${capital(s.name)} ${constantOrRange(s.values, "N")}.`);
     this.readout.textContent = [...notes, ...ranges].join(" ");
-    seriesTable(this.summary, "Constraint forces over the run (N)", run.t, top.filter((s) => !s.name.includes("slack")));
+    seriesTable(this.summary, "Constraint forces over the run (N)", run.t, top.filter((s) => !s.name.includes("slack")), relativeFloor(run));
   }
 }
 
