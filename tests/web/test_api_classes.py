@@ -274,7 +274,8 @@ def test_answers_that_could_not_be_read_are_counted_never_as_wrong(client, class
     assert mine["progress"]["attempts"] == 1 and mine["progress"]["not_read"] == 1
 
     table = list(csv.DictReader(io.StringIO(client.get(f"/api/classes/{code}/export", headers=bearer(teacher)).text)))
-    assert [r["verdict"] for r in table] == ["not read"] * 5 + ["incorrect", "correct", "not read"]
+    assert [r["verdict"] for r in table] == ["not read"] * 5 + ["wrong", "right", "not read"]
+    assert [r["counted"] for r in table][5:7] == ["no: wrong", "yes"] and table[0]["counted"] == "no: not read"
     first = table[0]
     assert first["answer"] == unreadable[0] and first["mistake"].startswith("a factor after a quotient is ambiguous")
     assert table[2]["answer"] == "'=m*g"  # not a checked expression: kept from a spreadsheet's formulas

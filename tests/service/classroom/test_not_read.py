@@ -56,7 +56,7 @@ def test_answers_not_read_count_as_answers_never_as_wrong(tmp_path):
             ("Ada", "not read", "a factor after a quotient is ambiguous", "1/2m R^2"),
             # an answer not read is no checked expression: a formula's start gets its apostrophe
             ("Ada", "not read", "one side of '=' is empty", "'=m g"),
-            ("Ada", "correct", "", "m*R**2*theta_dot**2/2"),
+            ("Ada", "right", "", "m*R**2*theta_dot**2/2"),
             ("Bo", "not read", "the '(' is never closed", "m g R cos("),
         ]
 
