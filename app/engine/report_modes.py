@@ -254,7 +254,9 @@ def _singular_points(nm: NormalModes, d: Derivation, pr: Printer) -> list[str]:
             if abs(complex(sp.N(M[k, k].xreplace(at).xreplace(defaults)))) < 1e-12
         ]  # fmt: skip
         shown = [n for n in point if n not in lost] or list(point)
-        where = r",\; ".join(f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(point[n])}" for n in shown)
+        where = r",\; ".join(
+            f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(point[n])}" for n in shown
+        )
         # the note on a row of its own, so that a phone's narrow box needs no sideways scroll
         if lost:
             names = r",\ ".join(pr.tex(sym[n]) for n in lost)
@@ -268,9 +270,8 @@ def _singular_points(nm: NormalModes, d: Derivation, pr: Printer) -> list[str]:
 def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
     """How the list was found, and how far it can be trusted (never "exactly" unless provably complete)."""
     if nm.solved:
-        return (
-            "The conditions are polynomial in the coordinates and were solved exactly, so these are all the equilibria"
-            + ("; where they leave a coordinate free, every state that satisfies them is one." if nm.family else ".")
+        return "These are all the equilibria: no other configuration makes every generalized force vanish" + (
+            "; where the conditions leave a coordinate free, every such configuration is one." if nm.family else "."
         )
     some_exact = any(e.exact for e in found)
     where = f" (it looked at {nm.searched})" if nm.searched else ""
@@ -279,7 +280,7 @@ def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
         return (
             ("Closed forms are shown where they are known; " if some_exact else "")
             + ("a" if some_exact else "A")
-            + " numerical search over a full period of every angle, at the default parameters, found "
+            + " search through a full turn of every angle, at the default parameters, found "
             + (("no others." if all(e.exact for e in found) else "the rest") if some_exact else "them")
             # a caveat only where some equilibrium rests on the search alone
             + (
@@ -498,9 +499,17 @@ def _neutral(lin: Linear, Ku: str, wu: str) -> str:
     count = _COUNT.get(zeros, str(zeros))
     out = f"{count} {'is' if zeros == 1 else 'are'} zero ({'a free drift' if zeros == 1 else 'free drifts'})"
     if pairs:
-        out += ", the others are ±" + ", ±".join(f"{p}i" for p in pairs) + " (oscillations at " + ", ".join(pairs) + " rad/s)"
+        out += (
+            ", the others are ±"
+            + ", ±".join(f"{p}i" for p in pairs)
+            + " (oscillations at "
+            + ", ".join(pairs)
+            + " rad/s)"
+        )
         if all(abs(w) <= 1e-9 * scale**2 for w in lin.omega_squared):
-            out += f"; {Ku} gives {wu}² = 0 in every direction, so these frequencies come from the velocity terms G alone"
+            out += (
+                f"; {Ku} gives {wu}² = 0 in every direction, so these frequencies come from the velocity terms G alone"
+            )
     return out + ", and none grows: a neutral equilibrium."
 
 

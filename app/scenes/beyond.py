@@ -1,5 +1,6 @@
 """Scenes beyond the chapter: normal modes of two coordinates, beats, and chaos."""
 
+from app.scenes import reasons
 from app.scenes.common import GRAVITY
 from app.scenes.types import Parameter, Particle, Scene, System
 
@@ -53,6 +54,7 @@ DOUBLE_PENDULUM = Scene(
     # statement says what it shows)
     t_end=3.0,
     panels=("poincare",),
+    reasons=reasons.DOUBLE_PENDULUM,
 )
 
 COUPLED_OSCILLATORS = Scene(
@@ -92,5 +94,6 @@ COUPLED_OSCILLATORS = Scene(
     ),
     initial={"x1": 0.2, "x1_dot": 0.0, "x2": 0.0, "x2_dot": 0.0},
     t_end=30.0,
+    reasons=reasons.COUPLED_OSCILLATORS,
     # no Poincaré section: the equations are linear, so the motion is two normal modes and never chaotic
 )
