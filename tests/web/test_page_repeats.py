@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import html
+import itertools
 
 import pytest
 
@@ -62,11 +63,8 @@ _SOLVER_TALK = ("polynomial in the coordinates", "solved exactly", "numerical se
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
 def test_each_derivation_step_has_its_own_caption_about_this_system(client, scene_id):
     steps = client.get(f"/api/scenes/{scene_id}/derivation").json()["steps"]
-    captions = [s["explanation"] for s in steps]
-    for (a, first), (b, second) in zip(
-        zip([s["key"] for s in steps], captions), zip([s["key"] for s in steps[1:]], captions[1:]), strict=False
-    ):
-        assert first != second, (scene_id, a, b, first)
+    for before, after in itertools.pairwise(steps):
+        assert before["explanation"] != after["explanation"], (scene_id, before["key"], after["key"])
     page = html.unescape(client.get(f"/scenes/{scene_id}").text)
     for words in _GENERIC_CAPTIONS + _SOLVER_TALK:
         assert words not in page, (scene_id, words)
