@@ -375,12 +375,12 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         )
     if nm.common_factor:
         why += (
-            " Its linearized equations change with time only through a factor common to all their coefficients; "
+            " Its linearised equations change with time only through a factor common to all their coefficients; "
             "divided by it, their coefficients are constant, and the exponents and frequencies below are theirs."
         )
     if nm.unclassified:
         why += (
-            " The system stays at rest there at all times, but its linearized equations change with time, so "
+            " The system stays at rest there at all times, but its linearised equations change with time, so "
             "there are no constant frequencies to report."
         )
     steps = [_step("equilibria", "Equilibria", rows, list(nm.condition), why)]

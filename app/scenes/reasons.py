@@ -63,7 +63,7 @@ SIMPLE_PENDULUM: dict[str, str] = {
     "time-integral": "Taken between the turning points, this integral is half the period of a wide swing (there and back is a whole one): an elliptic integral.",
     "reduced-equilibria": "The bottom (θ = 0) is stable with ω² = g/R; the top (θ = π) is unstable.",
     "equilibria": "sin θ = 0 at the bottom and at the top of the circle, and nowhere else.",
-    "normal-modes": "Linearizing sin θ about each equilibrium gives ω² = g/R at the bottom and −g/R at the top.",
+    "normal-modes": "Linearising sin θ about each equilibrium gives ω² = g/R at the bottom and −g/R at the top.",
     "constraints": "The string keeps the bob on the sphere of radius R about the pivot at height R.",
     "constraint-forces": "The tension must supply the centripetal force m R θ̇² plus gravity's pull along the string.",
 }

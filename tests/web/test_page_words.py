@@ -223,3 +223,12 @@ def test_m_eff_is_defined_as_what_the_results_print(client):
     page = client.get("/scenes/movable-incline").text
     assert "∂²L/∂Ḋ²" not in page
     assert "effective inertia of D: the mass D moves with once the conserved momenta are held fixed" in page
+
+
+@pytest.mark.parametrize("scene", ["simple-pendulum", "damped-pendulum", "coupled-oscillators", "spherical-pendulum"])
+def test_linearised_is_spelled_one_way(client, scene):
+    # prof-g 5: "Linearizing" in one step and "Linearised" in the next; the site spells it with an s
+    page = client.get(f"/scenes/{scene}").text
+    assert not re.search(r"lineari[zZ]", page, re.I), re.search(r".{40}lineariz.{20}", page, re.I)
+    if scene == "simple-pendulum":
+        assert "Linearising sin θ about each equilibrium" in page
