@@ -684,6 +684,9 @@ def _one_coordinate_step(
         key = f"steady-motion:{number}"
     else:
         title, key = f"{what} {about}", f"normal-modes:{number}"
+        # the equilibrium is part of the first equation's sentence ("about θ = 0: ω² = g/R"), never a lone row
+        # that reads as an equation of its own; its "=" unspaced, so the rows still align at the equation's
+        rows = [rf"\text{{about }} {where.replace(' = ', '=')}:\quad {rows[1]}", *rows[2:]]
     return _step(key, title, rows, [e.mass.tolist(), e.stiffness.tolist(), [w2]], why)
 
 

@@ -354,8 +354,6 @@ COUPLED_OSCILLATORS: dict[str, str] = {
     "h-vs-e": _h_is_e("The rest positions do not depend on t"),
     **_hamiltonian("(p_x₁² + p_x₂²)/(2m) + ½ k x₁² + ½ k x₂² + ½ κ (x₂ − x₁)²"),
     "equilibria": "These are all the equilibria: the net force on each mass is linear in the displacements, and with the walls holding the outer springs it vanishes only when both masses are at rest positions, x₁ = x₂ = 0.",
-    "normal-modes": "The masses swing together (1, 1) with ω² = k/m, the middle spring never stretched, or against each other (1, −1) with ω² = (k + 2κ)/m, the middle spring stretched by twice each displacement.",
-    "beats": "Displacing one mass starts both modes at half the amplitude each; their slowly drifting phase moves the swing from one mass to the other and back.",
 }
 
 
@@ -379,7 +377,6 @@ DOUBLE_PENDULUM: dict[str, str] = {
     "h-vs-e": _h_is_e("The pivot does not move"),
     **_hamiltonian("the kinetic energy rewritten in p_θ₁ and p_θ₂, plus the same U"),
     "equilibria": "These are all the equilibria: at rest the torques vanish only where sin θ₁ = 0 and sin θ₂ = 0, that is with each rod straight down or straight up, four combinations.",
-    "normal-modes": "About the bottom the two bobs swing in phase (the slower mode) or against each other (the faster one); with equal masses and rods ω² = (2 ∓ √2) g/l.",
     # U = −(m₁ + m₂) g l₁ cos θ₁ − m₂ g l₂ cos θ₂ with positive inertia: one ω² < 0 per direction in which U falls
     "normal-modes:2": "The lower rod stands upright on the hanging upper one: U falls if the lower rod tips, so one ω² is negative and the equilibrium is unstable.",
     "normal-modes:3": "The upper rod stands upright with the lower one hanging from its top: U falls if the upper rod tips, so again one ω² is negative: unstable.",
