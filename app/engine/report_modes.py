@@ -271,7 +271,7 @@ def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
     """How the list was found, and how far it can be trusted (never "exactly" unless provably complete)."""
     if nm.solved:
         return "These are all the equilibria: no other configuration makes every generalized force vanish" + (
-            "; where the conditions leave a coordinate free, every such configuration is one." if nm.family else "."
+            "; where the conditions leave a coordinate free, every state that satisfies them is one." if nm.family else "."
         )
     some_exact = any(e.exact for e in found)
     where = f" (it looked at {nm.searched})" if nm.searched else ""
