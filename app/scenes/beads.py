@@ -32,14 +32,7 @@ HELIX_BEAD = Scene(
             MASS,
             GRAVITY,
             Parameter("R", 0.5, "m", 0.01, 10.0, "radius of the helix"),
-            Parameter(
-                "alpha",
-                4.0,
-                "rad/m",
-                0.01,
-                100.0,
-                "winding of the helix: φ = α z, in radians of turn per metre of height",
-            ),
+            Parameter("alpha", 4.0, "rad/m", 0.01, 100.0, "winding of the helix: φ = α z, in radians of turn per metre of height"),
         ),
         particles=(Particle("m", ("R*cos(alpha*z)", "R*sin(alpha*z)", "z"), "bead"),),
         potential="m*g*z",
@@ -91,14 +84,7 @@ ROTATING_PARABOLA = Scene(
         parameters=(
             MASS,
             GRAVITY,
-            Parameter(
-                "alpha",
-                1.0,
-                "1/m",
-                0.01,
-                100.0,
-                "shape coefficient of the wire, z = α ρ² (its curvature at the bottom is 2α)",
-            ),
+            Parameter("alpha", 1.0, "1/m", 0.01, 100.0, "shape coefficient of the wire, z = α ρ² (its curvature at the bottom is 2α)"),
             Parameter("omega", 4.0, "rad/s", 0.0, 100.0, "angular velocity of the wire about its axis"),
         ),
         # The wire's plane turns at the rate omega: phi = omega t is imposed, so the position depends on t.

@@ -120,9 +120,7 @@ MOVABLE_INCLINE = Scene(
     initial={"X": 0.0, "X_dot": 0.0, "D": 0.0, "D_dot": 0.0},
     t_end=1.5,
     # D = 0 is the wedge's top corner: above it the block would leave the slope, which the model does not have
-    events=(
-        Event("top corner", "D", "The block reached the wedge's top corner and leaves its slope; the run ends there."),
-    ),
+    events=(Event("top corner", "D", "The block reached the wedge's top corner and leaves its slope; the run ends there."),),
     errata=(
         Erratum(
             chapter="x = X_dot + D cos(alpha)",
