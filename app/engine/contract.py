@@ -348,6 +348,7 @@ def scene_json(scene: Scene) -> dict[str, Any]:
         "summary": scene.summary,
         "statement": scene.statement,
         "figure": scene.figure,
+        "run_note": scene.run_note,
         "coordinates": list(scene.system.coordinates),
         "parameters": parameters_json(scene.system.parameters),
         "initial": dict(scene.initial),

@@ -255,7 +255,9 @@ def _singular_points(nm: NormalModes, d: Derivation, pr: Printer) -> list[str]:
             if abs(complex(sp.N(M[k, k].xreplace(at).xreplace(defaults)))) < 1e-12
         ]  # fmt: skip
         shown = [n for n in point if n not in lost] or list(point)
-        where = r",\; ".join(f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(point[n])}" for n in shown)
+        where = r",\; ".join(
+            f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(point[n])}" for n in shown
+        )
         # the note on a row of its own, so that a phone's narrow box needs no sideways scroll
         if lost:
             names = r",\ ".join(pr.tex(sym[n]) for n in lost)
@@ -269,9 +271,8 @@ def _singular_points(nm: NormalModes, d: Derivation, pr: Printer) -> list[str]:
 def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
     """How the list was found, and how far it can be trusted (never "exactly" unless provably complete)."""
     if nm.solved:
-        return (
-            "The conditions are polynomial in the coordinates and were solved exactly, so these are all the equilibria"
-            + ("; where they leave a coordinate free, every state that satisfies them is one." if nm.family else ".")
+        return "These are all the equilibria: no other configuration makes every generalized force vanish" + (
+            "; where the conditions leave a coordinate free, every state that satisfies them is one." if nm.family else "."
         )
     some_exact = any(e.exact for e in found)
     where = f" (it looked at {nm.searched})" if nm.searched else ""
@@ -280,7 +281,7 @@ def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
         return (
             ("Closed forms are shown where they are known; " if some_exact else "")
             + ("a" if some_exact else "A")
-            + " numerical search over a full period of every angle, at the default parameters, found "
+            + " search through a full turn of every angle, at the default parameters, found "
             + (("no others." if all(e.exact for e in found) else "the rest") if some_exact else "them")
             # a caveat only where some equilibrium rests on the search alone
             + (
@@ -375,12 +376,12 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         )
     if nm.common_factor:
         why += (
-            " Its linearized equations change with time only through a factor common to all their coefficients; "
+            " Its linearised equations change with time only through a factor common to all their coefficients; "
             "divided by it, their coefficients are constant, and the exponents and frequencies below are theirs."
         )
     if nm.unclassified:
         why += (
-            " The system stays at rest there at all times, but its linearized equations change with time, so "
+            " The system stays at rest there at all times, but its linearised equations change with time, so "
             "there are no constant frequencies to report."
         )
     steps = [_step("equilibria", "Equilibria", rows, list(nm.condition), why)]
@@ -508,9 +509,17 @@ def _neutral(lin: Linear, Ku: str, wu: str) -> str:
     count = _COUNT.get(zeros, str(zeros))
     out = f"{count} {'is' if zeros == 1 else 'are'} zero ({'a free drift' if zeros == 1 else 'free drifts'})"
     if pairs:
-        out += ", the others are ±" + ", ±".join(f"{p}i" for p in pairs) + " (oscillations at " + ", ".join(pairs) + " rad/s)"
+        out += (
+            ", the others are ±"
+            + ", ±".join(f"{p}i" for p in pairs)
+            + " (oscillations at "
+            + ", ".join(pairs)
+            + " rad/s)"
+        )
         if all(abs(w) <= 1e-9 * scale**2 for w in lin.omega_squared):
-            out += f"; {Ku} gives {wu}² = 0 in every direction, so these frequencies come from the velocity terms G alone"
+            out += (
+                f"; {Ku} gives {wu}² = 0 in every direction, so these frequencies come from the velocity terms G alone"
+            )
     return out + ", and none grows: a neutral equilibrium."
 
 
@@ -724,6 +733,9 @@ def _one_coordinate_step(
         key = f"steady-motion:{number}"
     else:
         title, key = f"{what} {about}", f"normal-modes:{number}"
+        # the equilibrium is part of the first equation's sentence ("about θ = 0: ω² = g/R"), never a lone row
+        # that reads as an equation of its own; its "=" unspaced, so the rows still align at the equation's
+        rows = [rf"\text{{about }} {where.replace(' = ', '=')}:\quad {rows[1]}", *rows[2:]]
     return _step(key, title, rows, [e.mass.tolist(), e.stiffness.tolist(), [w2]], why)
 
 

@@ -63,7 +63,7 @@ SIMPLE_PENDULUM: dict[str, str] = {
     "time-integral": "Taken between the turning points, this integral is half the period of a wide swing (there and back is a whole one): an elliptic integral.",
     "reduced-equilibria": "The bottom (θ = 0) is stable with ω² = g/R; the top (θ = π) is unstable.",
     "equilibria": "sin θ = 0 at the bottom and at the top of the circle, and nowhere else.",
-    "normal-modes": "Linearizing sin θ about each equilibrium gives ω² = g/R at the bottom and −g/R at the top.",
+    "normal-modes": "Linearising sin θ about each equilibrium gives ω² = g/R at the bottom and −g/R at the top.",
     "constraints": "The string keeps the bob on the circle of radius R about the pivot at height R, in the plane of the swing (y = 0).",
     "multiplier-lagrangian": "The bob is free in x and z once the string is replaced by λ: gravity pulls down, the string pulls along its own line, −∇𝒞 ∝ (x, z − R).",
     "multiplier-equation": "Differentiating x² + (z − R)² = R² twice brings in ẋ² + ż², the square of the speed: the tension will hold a centripetal part.",
@@ -356,3 +356,53 @@ def reason(reasons: Mapping[str, str], key: str) -> str | None:
     """A scene's reason for a step (``reasons``: the scene's own), by the step's key or else by its kind
     (the key's part before a colon)."""
     return reasons.get(key) or reasons.get(key.partition(":")[0])
+
+
+COUPLED_OSCILLATORS: dict[str, str] = {
+    "action": "The two masses move so that ∫ L dt is stationary between two configurations; each mode is a spring-like oscillation, so past half the faster mode's period the true path is a saddle of S, not its least value.",
+    "positions": "Both masses stay on the line; each sits at its rest position (1 m either side of the middle) plus its displacement.",
+    "velocities": "A rest position does not move, so each mass's velocity is the rate of its own displacement.",
+    "squared-speeds": "On a line each squared speed is just ẋ², with no term mixing the two masses.",
+    "kinetic": "The two equal masses' kinetic energies add, and neither velocity is tied to the other.",
+    "potential": "The outer springs are stretched by x₁ and x₂; the middle one by x₂ − x₁, its ends' difference in displacement.",
+    "lagrangian": "The masses are coupled only through the middle spring's term: with κ = 0 L splits into two separate oscillators.",
+    "derivatives:x1": "∂L/∂x₁ is the net spring force on mass 1: the left spring pulls it back by k x₁, the middle spring by κ (x₁ − x₂); ∂L/∂ẋ₁ = m ẋ₁ is its momentum.",
+    "derivatives:x2": "Mass 2 feels the mirror image: the right spring's −k x₂ and the middle spring's pull κ (x₁ − x₂), equal and opposite to the one on mass 1.",
+    "euler-lagrange": "Newton's law for each mass: two linear equations, coupled through κ alone.",
+    "mass-matrix": "𝓜 is diagonal, m and m: the masses are coupled through the middle spring's force, not through their inertia.",
+    "accelerations": "Each acceleration is the net spring force on that mass over m; it depends on the other mass's displacement through κ.",
+    "momenta": "p_x₁ = m ẋ₁ and p_x₂ = m ẋ₂ are the masses' ordinary momenta; the walls take up momentum, so their sum is not conserved.",
+    "time-dependence": "Walls and springs stay put, so L has no t.",
+    "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
+    "energy": "The two masses' kinetic energies plus the energy stored in all three springs.",
+    "h-vs-e": _h_is_e("The rest positions do not depend on t"),
+    **_hamiltonian("(p_x₁² + p_x₂²)/(2m) + ½ k x₁² + ½ k x₂² + ½ κ (x₂ − x₁)²"),
+    "equilibria": "These are all the equilibria: the net force on each mass is linear in the displacements, and with the walls holding the outer springs it vanishes only when both masses are at rest positions, x₁ = x₂ = 0.",
+}
+
+
+DOUBLE_PENDULUM: dict[str, str] = {
+    "action": "Both rods swing so that ∫ L dt is stationary between any two configurations of the rods a time τ apart.",
+    "positions": "The first bob is l₁ from the pivot at θ₁; the second is l₂ further on at θ₂, both angles from the downward vertical and the pivot at the origin.",
+    "velocities": "The second bob's velocity adds its own swing about the first bob to the first bob's velocity.",
+    "squared-speeds": "The first bob moves on a circle, l₁² θ̇₁²; the second bob's two velocities at angle θ₁ − θ₂ to each other add a cross term 2 l₁ l₂ θ̇₁ θ̇₂ cos(θ₁ − θ₂).",
+    "kinetic": "The lower bob's cross term couples the two swings through their inertia: T is not a sum of two pendulums.",
+    "potential": "Both bobs hang below the pivot: the first by l₁ cos θ₁, the second by l₁ cos θ₁ + l₂ cos θ₂, so the first rod carries both masses' weight.",
+    "lagrangian": "T − U; the coupling sits in the kinetic energy, through cos(θ₁ − θ₂), not in the potential.",
+    "derivatives:theta1": "∂L/∂θ₁ is gravity's torque on the two bobs about the pivot plus the cross term's dependence on θ₁; ∂L/∂θ̇₁ counts both bobs' inertia (m₁ + m₂) l₁² and, through the cross term, the lower bob's swing.",
+    "derivatives:theta2": "∂L/∂θ₂ is gravity's torque on the lower bob about the upper one, with the cross term again; ∂L/∂θ̇₂ is the lower bob's angular momentum about the upper bob, taken with its full velocity.",
+    "euler-lagrange": "Two equations, each containing both angular accelerations: the upper rod's swing drives the lower one and the lower one pulls back on the upper.",
+    "mass-matrix": "𝓜 has the off-diagonal m₂ l₁ l₂ cos(θ₁ − θ₂): the two rods' inertia is coupled, most strongly when they are in line.",
+    "accelerations": "Solving the two equations for θ̈₁ and θ̈₂ gives their long explicit form; it is what the simulation integrates.",
+    "momenta": "p_θ₁ and p_θ₂ mix both angular velocities through cos(θ₁ − θ₂); neither is conserved, since gravity exerts a torque on each rod.",
+    "time-dependence": "Pivot and rods are fixed, so L has no t.",
+    "hamiltonian": "T is quadratic in the angular velocities, so h is T + U.",
+    "energy": "Both bobs' kinetic energy plus their gravitational energy, measured from the pivot's height.",
+    "h-vs-e": _h_is_e("The pivot does not move"),
+    **_hamiltonian("the kinetic energy rewritten in p_θ₁ and p_θ₂, plus the same U"),
+    "equilibria": "These are all the equilibria: at rest the torques vanish only where sin θ₁ = 0 and sin θ₂ = 0, that is with each rod straight down or straight up, four combinations.",
+    # U = −(m₁ + m₂) g l₁ cos θ₁ − m₂ g l₂ cos θ₂ with positive inertia: one ω² < 0 per direction in which U falls
+    "normal-modes:2": "The lower rod stands upright on the hanging upper one: U falls if the lower rod tips, so one ω² is negative and the equilibrium is unstable.",
+    "normal-modes:3": "The upper rod stands upright with the lower one hanging from its top: U falls if the upper rod tips, so again one ω² is negative: unstable.",
+    "normal-modes:4": "Both rods upright in line: U is at its highest, both ω² are negative, and a small push along either mode grows.",
+}
