@@ -279,5 +279,5 @@ def test_words_a_professor_flagged_read_as_a_textbook_does(client):
     assert "diluted" not in helix and "shared between" not in helix and "inertia, not weight" in helix
     # prof-g 34, 33: λ is itself the tension; 2 metres, not "2 m" on a page of masses
     pulley = html.unescape(page(client, "pulley"))
-    assert "the multiplier λ is itself the string's upward pull" in pulley and "λ times ∂𝒞" not in pulley
+    assert "λ itself is the tension: the string's upward pull" in pulley and "λ times ∂𝒞" not in pulley
     assert "the constant, 2 metres," in pulley and "constant 2 m " not in pulley
