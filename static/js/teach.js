@@ -812,3 +812,8 @@ if (fragment.get("class") && fragment.get("recover")) {
   // a class this browser kept: reopened, and forgotten only when the server says the key no longer opens it
   open(current.code, current.key).then((how) => how === "refused" && forget());
 }
+// a teacher link pasted into this tab changes only the fragment, and the browser does not load the page again:
+// read it as a fresh load would (inst-b 18: after a cut link, the whole one pasted here did nothing)
+window.addEventListener("hashchange", () => {
+  if (new URLSearchParams(window.location.hash.slice(1)).get("class")) window.location.reload();
+});

@@ -222,3 +222,18 @@ def test_the_dashboard_says_loading_until_its_figures_arrive(browser, live_serve
     assert page.locator(".dash-loading").count() == 0
     assert page.errors == []
     context.close()
+
+
+def test_a_whole_teacher_link_pasted_after_a_cut_one_opens_the_class(browser, live_server, classes):  # noqa: F811
+    # inst-b 18: after a cut link, the whole link pasted into the same tab changed only the fragment, and the page
+    # stayed on "Start a class" with the old message
+    context, page = _teacher(browser, live_server)
+    made = page.request.post("/api/classes", data={"title": "Mechanics II"}).json()
+    page.goto(f"/teach#class={made['code']}&recover={made['recovery_code'][:4]}")
+    page.wait_for_function("document.getElementById('start-status').textContent.length > 0")
+    assert _status(page, "start-status").startswith("This recovery code is incomplete")
+    page.evaluate("(h) => { window.location.hash = h; }", f"class={made['code']}&recover={made['recovery_code']}")
+    page.wait_for_selector("#class-live:not([hidden])")
+    assert page.locator("#class-code").inner_text() == made["code"]
+    assert page.errors == []
+    context.close()
