@@ -278,6 +278,13 @@ $("join-form").addEventListener("submit", async (event) => {
   const code = $("join-code").value.trim();
   const name = $("join-name").value.trim();
   const button = $("join-form").querySelector("button[type=submit]");
+  // said here, in the form's own words, before anything is sent: a pseudonym of spaces is no pseudonym (inst-b 4,
+  // student-f 25: the server's "name: String should have …", or an earlier message about the code, stayed)
+  if (!name) {
+    $("join-status").textContent = "Type a pseudonym: the name your teacher will see (not your real name unless you wish).";
+    $("join-name").focus();
+    return;
+  }
   button.disabled = true;
   $("join-status").textContent = "Joining…";
   let r;

@@ -237,3 +237,20 @@ def test_a_whole_teacher_link_pasted_after_a_cut_one_opens_the_class(browser, li
     assert page.locator("#class-code").inner_text() == made["code"]
     assert page.errors == []
     context.close()
+
+
+def test_a_pseudonym_of_spaces_is_asked_for_in_the_forms_words(browser, live_server, classes):  # noqa: F811
+    # inst-b 4: "name: String should have at least 1 character"; student-f 25: an earlier message stayed
+    context, page = _teacher(browser, live_server, PHONE)
+    made = page.request.post("/api/classes", data={"title": "Mechanics II"}).json()
+    page.goto("/join?code=AAAAAA")
+    page.fill("#join-name", "ana")
+    page.click("#join-form button[type=submit]")
+    page.wait_for_function("document.getElementById('join-status').textContent.includes('AAAAAA')")
+    page.fill("#join-code", made["code"])
+    page.fill("#join-name", "   ")
+    page.click("#join-form button[type=submit]")
+    said = _status(page, "join-status")
+    assert said.startswith("Type a pseudonym") and "String" not in said and "AAAAAA" not in said
+    assert page.errors == []
+    context.close()
