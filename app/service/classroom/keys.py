@@ -53,21 +53,16 @@ def normal_code(text: str) -> str | None:
 LEFT_OUT = ", ".join(c for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789" if c not in ALPHABET)
 
 
-def code_rule() -> str:
-    """What a class code is, in words (the join page and the short link's refusals say it)."""
-    return (f"a class code has {CODE_LENGTH} letters and digits, without the ones easily confused "
-            f"(no {LEFT_OUT})")
-
-
 def why_not_code(text: str) -> str:
     """Why a text typed as a class code is not one: its length, or the first character a code never holds."""
     code = "".join(text.split()).replace("-", "").upper()
+    # one reason, in a student's words: the list of the characters a code leaves out helps nobody at the board
     if len(code) != CODE_LENGTH:
-        return f"it has {len(code)} character{'' if len(code) == 1 else 's'}, and {code_rule()}"
+        return f"it has {len(code)} character{'' if len(code) == 1 else 's'}, and a class code has {CODE_LENGTH} letters and digits"
     bad = next((c for c in code if c not in ALPHABET), None)
     if bad is None:
-        return f"no class has this code: {code_rule()}"
-    return f"“{bad}” is never in a class code: {code_rule()}"
+        return "no class has this code"
+    return f"“{bad}” is never in a class code, which leaves out the characters easily read as another"
 
 
 def new_key() -> str:

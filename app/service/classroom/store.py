@@ -116,7 +116,7 @@ def join(db: Database, code: str, name: str) -> tuple[str, Access, str]:
     normal = keys.normal_code(code)
     if normal is None:
         raise UnknownClass(
-            f"“{code.strip()[:20]}” is not a class code: {keys.why_not_code(code)}; check the code on the board"
+            f"“{code.strip()[:20]}” is not a class code: {keys.why_not_code(code)}. Check the code on the board."
         )
     student_key = keys.new_key()
     recovery = keys.new_recovery_code(keys.STUDENT_RECOVERY_LENGTH)
@@ -172,7 +172,7 @@ def _add_student(db: Database, normal: str, name: str, student_key: str, recover
     with db.session() as session:
         found = session.execute(select(ClassRow.id, ClassRow.title).where(ClassRow.code == normal)).first()
         if found is None:
-            raise UnknownClass(f"no class has the code {normal}; check the code on the board")
+            raise UnknownClass(f"No class has the code {normal}. Check the code on the board.")
         taken = session.scalar(
             select(func.count()).select_from(StudentRow).where(StudentRow.class_id == found.id, StudentRow.name == name)
         )
