@@ -105,6 +105,32 @@ function namesLine(practice, names) {
   return line;
 }
 
+/** Typeset ``input``'s text into ``preview`` 200 ms after the last keystroke (POST /api/typeset, the checker's
+ *  parser), or say in ``note`` why it cannot be read yet; a reply for a text typed on since is dropped. */
+function previewAsTyped(input, preview, note, item, s) {
+  const names = item.scene ? { scene: item.scene }
+    : { coordinates: item.system?.coordinates || [], parameters: (item.system?.parameters || []).map((p) => (typeof p === "string" ? p : p.name)) };
+  let timer = null;
+  input.addEventListener("input", () => {
+    clearTimeout(timer);
+    timer = setTimeout(async () => {
+      const text = input.value;
+      if (!text.trim()) { preview.replaceChildren(); note.textContent = "What you type appears here, typeset."; return; }
+      const body = { text, step: s.step, ...names, ...(s.coordinate ? { coordinate: s.coordinate } : {}) };
+      const r = await api("POST", "/api/typeset", { body }).catch(() => null);
+      if (!r || input.value !== text) return;
+      if (r.status === 200 && r.data?.latex) {
+        preview.replaceChildren(typeset(el("div"), r.data.latex, true));
+        note.textContent = "";
+      } else if (r.status === 422) {
+        preview.replaceChildren();
+        const detail = String(r.data?.detail || "the checker cannot read this yet").replace(/^(answer|text): /, "");
+        note.textContent = `Not read yet: ${detail}`;
+      }
+    }, 200);
+  });
+}
+
 function stepView(a, item, practice, s, index) {
   const exercise = exerciseOf(practice, s.step, s.coordinate);
   const id = `answer-${index}`;
@@ -113,6 +139,12 @@ function stepView(a, item, practice, s, index) {
   const reveal = el("button", { type: "button", className: "join-reveal", "aria-expanded": "false", text: "Show this step" });
   const shown = el("div", { className: "practice-engine", hidden: "" });
   const box = el("div", { className: "practice-verdict", role: "status", "aria-live": "polite" });
+  // the answer typeset as it is typed, by the checker's own reading (as on a scene page in practice mode): a student
+  // sees how ^, ' and a fraction were read before the answer is recorded (inst-b 25, student-f 22)
+  const preview = el("div", { className: "practice-preview", id: `${id}-preview`, "aria-label": "Your answer, typeset" });
+  const note = el("p", { className: "help practice-preview-note", text: "What you type appears here, typeset." });
+  input.setAttribute("aria-describedby", `${id}-preview`);
+  previewAsTyped(input, preview, note, item, s);
   // an equation is typed whole (lhs = rhs) or as one expression equal to zero: its box is labelled by its name
   const lhs = s.step === "equation" ? `${stepTex(practice, s.step, s.coordinate)}:` : `${stepTex(practice, s.step, s.coordinate)} =`;
   const form = el("form", { className: "practice-step", "data-step": s.step },
@@ -120,7 +152,7 @@ function stepView(a, item, practice, s, index) {
     el("label", { for: id }, typeset(el("span", { className: "practice-lhs" }), lhs)),
     el("div", { className: "practice-row" }, input, button, exercise ? reveal : null),
     exercise ? namesLine(practice, exercise.names) : null,
-    box, shown);
+    preview, note, box, shown);
   const key = stepId(a.n, item.scene || item.name, s.step, s.coordinate);
   const target = { ...(item.scene ? { scene: item.scene } : { system: item.name }), step: s.step, assignment: a.n,
     ...(s.coordinate ? { coordinate: s.coordinate } : {}) };

@@ -98,6 +98,20 @@ def test_a_class_live(browser, live_server, classes, artifacts):
     setup = ada.locator(f'a[href="/scenes/{SCENE}#practice=on"]')
     assert setup.count() == 1 and setup.get_attribute("target") == "_blank"
 
+    # the answer typeset as it is typed, by the checker's reading, before it is sent (inst-b 25, student-f 22)
+    kinetic = ada.locator('.practice-step[data-step="kinetic"]')
+    kinetic.locator("input").fill("1/2 m1 l1^2 theta1'^2")
+    kinetic.locator(".practice-preview .katex").wait_for()
+    assert kinetic.locator(".practice-preview-note").inner_text() == ""
+    kinetic.locator("input").fill("m1 (")
+    ada.wait_for_function(
+        "document.querySelector('.practice-step[data-step=\"kinetic\"] .practice-preview-note').textContent"
+        ".startsWith('Not read yet: ')")
+    assert kinetic.locator(".practice-preview .katex").count() == 0
+    # the typesetter's 422 for that unfinished text is the browser's note of a refused request, no page error
+    ada_errors = students[0][2]
+    ada_errors[:] = [e for e in ada_errors if "status of 422" not in e]
+
     assert _answer(ada, NO_CROSS_T) == "incorrect"
     answered = time.monotonic()
     teacher.wait_for_selector(f'.dash-mistake[data-mistake="{CROSS}"]', timeout=5000)
