@@ -67,7 +67,7 @@ SIMPLE_PENDULUM: dict[str, str] = {
     "constraints": "The string keeps the bob on the circle of radius R about the pivot at height R, in the plane of the swing (y = 0).",
     "multiplier-lagrangian": "The bob is free in x and z once the string is replaced by λ: gravity pulls down, the string pulls along its own line, −∇𝒞 ∝ (x, z − R).",
     "multiplier-equation": "Differentiating x² + (z − R)² = R² twice brings in ẋ² + ż², the square of the speed: the tension will hold a centripetal part.",
-    "multiplier": "λ is half the tension divided by R, since |∇𝒞| = 2R on the circle.",
+    "multiplier": "λ₁ is the tension divided by 2R, since |∇𝒞₁| = 2R on the circle.",
     "constraint-forces": "The tension must supply the centripetal force m R θ̇² plus gravity's pull along the string.",
 }
 
