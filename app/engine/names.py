@@ -83,7 +83,9 @@ def _tex_base(name: str) -> tuple[str, str]:
     stem, digits = _split(name)
     if stem in GREEK:
         return "\\" + _TEX_GREEK.get(stem, stem), digits
-    return (rf"\mathrm{{{stem}}}" if len(stem) > 1 and stem.isalpha() else stem), digits
+    # a differential (dt, dr: d and one letter, as the errata's dt/dr writes) stays as a textbook prints it
+    differential = len(stem) == 2 and stem[0] == "d"
+    return (rf"\mathrm{{{stem}}}" if len(stem) > 1 and stem.isalpha() and not differential else stem), digits
 
 
 # a rate of a name of several letters in running text: a spacing dot after the whole name (th˙), as a combining
