@@ -14,6 +14,7 @@ from app.engine.derive import LARGE_FROM, Derivation
 from app.engine.errata import errata_json
 from app.engine.names import MASS_MATRIX, display_names
 from app.engine.report import (
+    SCALED_CLAUSE,
     Printer,
     build_steps,
     conserved_form,
@@ -263,7 +264,12 @@ def explained(scene: Scene, steps: list[dict[str, Any]]) -> list[dict[str, Any]]
         if text and not own:
             text = None if text in said else text
         said.add(text)
-        out.append({**s, "explanation": text or s["explanation"]})
+        engine = s["explanation"] or ""
+        text = text or engine
+        # how the equations are scaled is the engine's to say (it is derived): a scene's reason keeps that clause
+        if SCALED_CLAUSE in engine and SCALED_CLAUSE not in text:
+            text = f"{text.rstrip('.')}; {engine[engine.index(SCALED_CLAUSE):]}"
+        out.append({**s, "explanation": text})
     return out
 
 

@@ -246,6 +246,10 @@ def _at_root(pr: Printer, expr: sp.Expr, r: sp.Symbol) -> str:
     return pr.tex(expr.xreplace({r: sp.Symbol(r.name + "0")}))
 
 
+# the clause that says how coupled equations are shown: a scene's own reason for the step keeps it (contract.py)
+SCALED_CLAUSE = "each is shown divided by the factor common to all its terms"
+
+
 def _divided_by(d: Derivation, pr: Printer) -> str:
     """How equations coupled through their accelerations are shown: each divided by the factor common to its
     terms (the double pendulum's first by l₁, its second by m₂ l₂), said so that no reader wonders why they
@@ -260,7 +264,7 @@ def _divided_by(d: Derivation, pr: Printer) -> str:
     ]
     if not said:
         return "."
-    return "; each is shown divided by the factor common to all its terms (" + ", ".join(said) + ")."
+    return f"; {SCALED_CLAUSE} (" + ", ".join(said) + ")."
 
 
 def _undivided(d: Derivation, pr: Printer) -> str:

@@ -79,7 +79,7 @@ def test_a_step_that_does_not_apply_lists_the_steps_that_do(client):
     response = check(client, {"step": "omega_squared", "answer": "g/R"}, "damped-pendulum")
     assert response.status_code == 422
     assert response.json()["detail"].endswith(
-        "the steps are: kinetic, potential, lagrangian, momentum, equation, acceleration, hamiltonian"
+        "the steps are: position, kinetic, potential, lagrangian, momentum, equation, acceleration, hamiltonian"
     )
     hoop = check(client, {"system": SPRING_ROD, "step": "kinetic", "answer": "1"}, scene=None)
     assert hoop.status_code == 422 and "Lagrangian alone" in hoop.json()["detail"]
@@ -134,7 +134,10 @@ def test_unknown_scene_is_404_listing_the_known_ones(client):
 def test_practice_lists_each_step_with_the_engines_answer(client):
     doc = client.get("/api/scenes/pulley/practice").json()
     steps = [(e["step"], e["coordinate"]) for e in doc["exercises"]]
-    assert steps[:3] == [("kinetic", None), ("potential", None), ("lagrangian", None)]
+    # the positions first, one box per moving component of each body (x and z, numbered by body), then T, U, L
+    positions = [s for s in steps if s[0] == "position"]
+    assert positions and steps[: len(positions)] == positions and all(c and c[0] in "xz" for _, c in positions)
+    assert steps[len(positions) : len(positions) + 3] == [("kinetic", None), ("potential", None), ("lagrangian", None)]
     assert ("equation", "y2") in steps and steps[-1] == ("hamiltonian", None)
     assert doc["symbols"]["y1_dot"] == r"\dot{y}_{1}"
     own = client.post("/api/practice", json=SPRING_ROD)

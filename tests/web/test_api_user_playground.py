@@ -149,7 +149,7 @@ def test_parameter_ranges_read_as_a_reader_writes_them(client):
     html = client.get("/playground?" + urlencode({**query_of(form), "stage": "whole"}, doseq=True)).text
     hints = dict(re.findall(r'id="ctl-(\w+)-hint"[^>]*>allowed: ([^<]*)</p>', html))
     shown = {name: hints[name] for name in ("m", "g", "w")}
-    assert shown == {"m": "more than 0, up to 10 kg", "g": "more than 0, up to 100 m/s²", "w": "−100 to 100 1/s"}, hints
+    assert shown == {"m": "more than 0, up to 10 kg", "g": "more than 0, up to 100 m/s²", "w": "−100 to 100 s⁻¹"}, hints
     assert not any("e-0" in text or "^" in text for text in hints.values()), hints
 
 
