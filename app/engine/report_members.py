@@ -68,7 +68,9 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
         _step(
             "multiplier-equation",
             "The multipliers along the normals",
-            [rf"\ddot{{{CONSTRAINT}}}_{{{a + 1}}} = {cp.tex(e)} = 0" for a, e in enumerate(m.twice)] + normal,
+            # 𝒞̈ = 0 said, not expanded: its expansion (a dozen terms on the turning parabola) is wider than a
+            # page or a phone, and the equation for λ below is what it gives
+            [rf"\ddot{{{CONSTRAINT}}}_{{{a + 1}}} = 0" for a, _ in enumerate(m.twice)] + normal,
             [*m.twice, *m.right],
             "The constraint holds at every instant, so its second time derivative vanishes. Putting r̈ from "
             "Newton's law into it keeps only the component of the equations along ∇𝒞: an equation for λ alone, "

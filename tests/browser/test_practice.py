@@ -514,7 +514,8 @@ def test_practice_mode_hides_its_dead_tabs_and_folds_what_gives_the_answers_away
         assert shown.inner_text() == "Show (gives away the answers)"
         panel = page.locator("#panel-effective-potential")
         assert panel.locator(".plot").is_hidden()
-        assert "gives away step 2: Potential energy U" in panel.locator("button.gives-away").inner_text()
+        # step 4: after the two positions (x and z of the bob) and T
+        assert "gives away step 4: Potential energy U" in panel.locator("button.gives-away").inner_text()
         # shown on request, and drawn at its full width
         panel.locator("button.gives-away").click()
         assert panel.locator(".plot").is_visible()
