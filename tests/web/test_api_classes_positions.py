@@ -2,23 +2,9 @@
 
 from __future__ import annotations
 
-import pytest
-
-from app.main import app
-from app.web.api_classes import classroom as classroom_dep
-from tests.classes import classroom
 from tests.web.test_api_classes import bearer, join, new_class
 
 SCENE = "simple-pendulum"
-
-
-@pytest.fixture
-def classes(services, tmp_path):
-    room = classroom(services.checking, "sqlite", tmp_path, None)
-    app.dependency_overrides[classroom_dep] = lambda: room
-    yield room
-    app.dependency_overrides.pop(classroom_dep, None)
-    room.stop()
 
 
 def test_each_component_of_a_position_is_its_own_step(client, classes):

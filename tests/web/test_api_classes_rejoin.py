@@ -8,22 +8,10 @@ import re
 import pytest
 from sqlalchemy import text
 
-from app.main import app
 from app.service.classroom import keys
-from app.web.api_classes import classroom as classroom_dep
-from tests.classes import classroom
 from tests.web.test_api_classes import RIGHT_T, WRONG_T, bearer, check, new_class
 
 CODE = re.compile(r"[ACEFHKMNPRTWXY3479]{4}-[ACEFHKMNPRTWXY3479]{4}-[ACEFHKMNPRTWXY3479]{4}")
-
-
-@pytest.fixture
-def classes(services, tmp_path):
-    room = classroom(services.checking, "sqlite", tmp_path, None)
-    app.dependency_overrides[classroom_dep] = lambda: room
-    yield room
-    app.dependency_overrides.pop(classroom_dep, None)
-    room.stop()
 
 
 def test_a_student_gets_back_to_their_record_on_another_device(client, classes):

@@ -6,9 +6,6 @@ from __future__ import annotations
 
 import pytest
 
-from app.main import app
-from app.web.api_classes import classroom as classroom_dep
-from tests.classes import classroom
 from tests.web.test_api_classes import bearer, new_class
 
 SPRING = {"coordinates": ["x"], "parameters": ["m", "k"], "kinetic": "m*x_dot**2/2", "potential": "k*x**2/2"}
@@ -16,15 +13,6 @@ SETUP = "x is the stretch of the spring from its natural length, positive to the
 PENDULUM = {"coordinates": ["theta"], "parameters": ["m", "l", "g", "b"],
             "particles": [{"mass": "m", "position": ["l sin θ", "-l cos(theta)"], "label": "bob"}],
             "potential": "-m g l cos θ", "forces": {"theta": "-b theta_dot"}}
-
-
-@pytest.fixture
-def classes(services, tmp_path):
-    room = classroom(services.checking, "sqlite", tmp_path, None)
-    app.dependency_overrides[classroom_dep] = lambda: room
-    yield room
-    app.dependency_overrides.pop(classroom_dep, None)
-    room.stop()
 
 
 def assign(client, code, teacher, item):

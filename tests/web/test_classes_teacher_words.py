@@ -9,26 +9,12 @@ import io
 import re
 from datetime import timedelta
 
-import pytest
-
-from app.main import app
 from app.service.classroom import store
 from app.service.classroom.database import now
-from app.web.api_classes import classroom as classroom_dep
-from tests.classes import classroom
 
 SCENE = "simple-pendulum"
 RIGHT_T = "m*R**2*theta_dot**2/2"
 SWAPPED_U = "m*g*R*sin(theta)"  # U = −m g R cos θ with sin for cos: a named mistake spoken as "your term …"
-
-
-@pytest.fixture
-def classes(services, tmp_path):
-    room = classroom(services.checking, "sqlite", tmp_path, None)
-    app.dependency_overrides[classroom_dep] = lambda: room
-    yield room
-    app.dependency_overrides.pop(classroom_dep, None)
-    room.stop()
 
 
 def bearer(key: str) -> dict[str, str]:
