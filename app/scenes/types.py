@@ -191,3 +191,6 @@ class Scene:
     # what a reader should know about the simulation itself (how far a run can be trusted), printed beside the
     # simulation's settings, never in the statement of the problem
     run_note: str = ""
+    # a chaotic scene: its largest Lyapunov exponent is measured at the default start over this many seconds
+    # (app/service/lyapunov.py), and the sentence saying it opens the run note
+    lyapunov_seconds: float = 0.0

@@ -18,7 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from app.service import action, exporting, modes, poincare, work_precision
+from app.service import action, exporting, lyapunov, modes, poincare, work_precision
 from app.service.cache import BytesCache, JsonCache, Recent, source_fingerprint
 
 
@@ -37,6 +37,7 @@ class Answers:
     exports: Recent  # a scene's derivation as a file, by format
     work_precision: JsonCache  # a scene's error against run time report
     examples: BytesCache  # the playground examples' derivations
+    lyapunov: JsonCache  # a chaotic scene's largest Lyapunov exponent at its default start
 
     @classmethod
     def start(cls, folder: Path | None = None) -> Answers:
@@ -49,4 +50,5 @@ class Answers:
             exports=Recent(exporting.CACHED_EXPORTS),
             work_precision=work_precision.report_cache(folder),
             examples=examples_cache(folder),
+            lyapunov=lyapunov.lyapunov_cache(folder),
         )

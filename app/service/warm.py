@@ -1,7 +1,8 @@
 """Precompute everything the chapter's pages need (``app.web.warm`` runs it at set-up and image build).
 
 Derivations (JSON on disk), numba's compiled kernels and each scene's right-hand
-sides (numba's disk cache), the work-precision reports and the measured normal modes (JSON on disk),
+sides (numba's disk cache), the work-precision reports, the measured normal modes and the chaotic scenes'
+Lyapunov exponents (JSON on disk),
 the tutor's catalogues of mistakes for every scene's steps (pickles on disk).
 
     python -m app.service.warm
@@ -10,7 +11,7 @@ the tutor's catalogues of mistakes for every scene's steps (pickles on disk).
 import time
 from collections.abc import Callable, Sequence
 
-from app.service import check_jobs, derivations, modes, simulation, work_precision
+from app.service import check_jobs, derivations, lyapunov, modes, simulation, work_precision
 
 
 def main(more: Sequence[tuple[str, Callable[[], object]]] = ()) -> None:
@@ -20,6 +21,7 @@ def main(more: Sequence[tuple[str, Callable[[], object]]] = ()) -> None:
         ("compiled integrators", simulation.warm_all),
         ("work-precision reports", work_precision.warm_all),
         ("measured normal modes", modes.warm_all),
+        ("Lyapunov exponents", lyapunov.warm_all),
         ("the tutor's catalogues of mistakes", check_jobs.warm_all),
         *more,
     ]

@@ -18,7 +18,7 @@ from fastapi import APIRouter, Query, Request
 from fastapi.responses import HTMLResponse
 
 from app.errors import UnknownScene
-from app.web.deps import ChapterDep, PagesDep
+from app.web.deps import AnswersDep, ChapterDep, PagesDep
 from app.web.embed_views import DEFAULT_VIEW, VIEWS
 from app.web.pages import page_model, unknown_scene
 from app.web.templating import templates
@@ -37,11 +37,12 @@ def embed_scene(
     scene_id: str,
     pages: PagesDep,
     chapter: ChapterDep,
+    answers: AnswersDep,
     panel: str | None = Query(None, max_length=40, description="one plot panel to show beside the animation"),
     view: str = Query(DEFAULT_VIEW, max_length=40, description="full (the default) or compact"),
 ) -> HTMLResponse:
     try:
-        model = page_model(scene_id, pages, chapter)
+        model = page_model(scene_id, pages, chapter, answers)
     except UnknownScene as exc:
         return unknown_scene(request, exc, "/embed/scenes/")
     allowed = embeddable(model)

@@ -17,13 +17,14 @@ from fastapi.responses import HTMLResponse, RedirectResponse
 from app.engine.contract import scene_json
 from app.errors import UnknownScene
 from app.numerics.methods import CHOICES
-from app.service import derivations
+from app.service import derivations, lyapunov
+from app.service.answers import Answers
 from app.service.derivations import Scenes
 from app.viz.chapter import table_of_contents
 from app.viz.diagrams import diagram
 from app.viz.page_model import scene_page
 from app.web.compression import negotiate
-from app.web.deps import ChapterDep, PagesDep
+from app.web.deps import AnswersDep, ChapterDep, PagesDep
 from app.web.errors import problem
 from app.web.page_cache import PageCache
 from app.web.templating import templates
@@ -36,15 +37,21 @@ def scene_info(scene_id: str, doc: dict[str, Any]) -> dict[str, Any]:
     return {**scene_json(derivations.scene(scene_id)), **(doc.get("scene") or {})}
 
 
-def page_model(scene_id: str, pages: PageCache | None = None, chapter: Scenes | None = None) -> dict[str, Any]:
+def page_model(
+    scene_id: str, pages: PageCache | None = None, chapter: Scenes | None = None, answers: Answers | None = None
+) -> dict[str, Any]:
     """The scene's page model, through the app's ``pages`` (rebuilt there only if its derivation document changed);
-    the document from the app's ``chapter`` (by default this process's)."""
+    the document from the app's ``chapter`` (by default this process's), what was measured from the app's
+    ``answers`` (by default the disk's caches)."""
     doc = (derivations.PROCESS_SCENES if chapter is None else chapter).document(scene_id)
 
     def build() -> dict[str, Any]:
         s = derivations.scene(scene_id)
         particles = [(p.label, p.position) for p in s.system.particles]
-        return scene_page(doc, scene_info(scene_id, doc), particles, CHOICES, s.system.nonnegative)
+        info = scene_info(scene_id, doc)
+        if s.lyapunov_seconds:  # a chaotic scene's measured exponent opens its run note
+            info["run_note"] = lyapunov.run_note(scene_id, answers.lyapunov if answers else None, chapter)
+        return scene_page(doc, info, particles, CHOICES, s.system.nonnegative)
 
     return build() if pages is None else pages.model(scene_id, doc, build)
 
@@ -57,12 +64,12 @@ def _card_diagram(s: Any) -> str:
 
 
 @router.get("/", response_class=HTMLResponse)
-def index(request: Request, pages: PagesDep, chapter: ChapterDep) -> HTMLResponse:
+def index(request: Request, pages: PagesDep, chapter: ChapterDep, answers: AnswersDep) -> HTMLResponse:
     # the panels each page shows (app/viz/panels.py) tell the contents where a section is illustrated
     scenes = [
         {
             **scene_json(s),
-            "panels": page_model(s.id, pages, chapter)["panels"],
+            "panels": page_model(s.id, pages, chapter, answers)["panels"],
             "diagram": pages.card(s.id, lambda s=s: _card_diagram(s)),
             "url": f"/scenes/{s.id}",
         }
@@ -85,9 +92,11 @@ def unknown_scene(request: Request, exc: UnknownScene, prefix: str) -> HTMLRespo
 
 
 @router.get("/scenes/{scene_id}", response_class=HTMLResponse)
-def scene_page_route(request: Request, scene_id: str, pages: PagesDep, chapter: ChapterDep) -> HTMLResponse:
+def scene_page_route(
+    request: Request, scene_id: str, pages: PagesDep, chapter: ChapterDep, answers: AnswersDep
+) -> HTMLResponse:
     try:
-        model = page_model(scene_id, pages, chapter)
+        model = page_model(scene_id, pages, chapter, answers)
     except UnknownScene as exc:
         return unknown_scene(request, exc, "/scenes/")
     # A scene page depends only on its model: render (and compress) it once per model, then serve the bytes.

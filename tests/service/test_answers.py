@@ -39,7 +39,7 @@ def test_a_refused_format_is_refused_before_any_memory_is_touched(tmp_path):
 
 def test_the_disk_caches_are_under_the_folder_given(tmp_path):
     answers = Answers.start(tmp_path)
-    for cache in (answers.work_precision, answers.measured_modes, answers.examples):
+    for cache in (answers.work_precision, answers.measured_modes, answers.examples, answers.lyapunov):
         assert cache.folder == tmp_path
     answers.work_precision.get("probe", lambda: {"runs": []})
     assert [p.name.startswith("probe-") for p in (tmp_path / "work-precision").iterdir()] == [True]

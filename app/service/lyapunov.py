@@ -1,0 +1,95 @@
+"""A chaotic scene's largest Lyapunov exponent at its default start: measured once, cached, and said in words.
+
+A scene that declares ``lyapunov_seconds`` gets its exponent measured (``app.numerics.lyapunov``) at its
+default parameters and start, over that many seconds; the result is computed once per version of the
+source (memory, then the disk that set-up filled) and its sentence opens the scene's run note.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from app.engine.names import unicode
+from app.numerics.lyapunov import largest_exponent
+from app.service.cache import JsonCache, source_fingerprint
+from app.service.derivations import Scenes, held, scene
+from app.service.simulate_request import parameter_vector
+from app.viz.page_model import power_of_ten
+from app.viz.units import coordinate_units
+
+# the runs of a measurement may take this long (seconds); a first page request waits for it once
+WALL_SECONDS = 60.0
+
+
+def lyapunov_cache(folder: Path | None = None) -> JsonCache:
+    """The measured exponents' cache (memory, then disk): the app's services hold one (app/service/answers.py)."""
+    return JsonCache("lyapunov", source_fingerprint("engine", "scenes", "numerics"), folder)
+
+
+def measure_scene(scene_id: str, cache: JsonCache | None = None, chapter: Scenes | None = None) -> dict[str, Any]:
+    """The largest Lyapunov exponent of a scene's default start, with how it was measured (computed once, then
+    from ``cache``, by default the disk's): {"value" (1/s), "t_end", "gap", "every", "settle", "method", "coordinate"}."""
+    s = scene(scene_id)
+    chapter = held(chapter)
+
+    def compute() -> dict[str, Any]:
+        d = chapter.derivation(scene_id)
+        system, _ = chapter.system(scene_id)
+        q = system.coordinates
+        y0 = np.array([s.initial.get(n, 0.0) for n in q] + [s.initial.get(f"{n}_dot", 0.0) for n in q])
+        found = largest_exponent(system, parameter_vector(d, {}), y0, s.lyapunov_seconds, WALL_SECONDS)
+        return {
+            "value": found.value, "t_end": found.t_end, "gap": found.gap, "every": found.every,
+            "settle": found.settle, "method": found.method, "coordinate": q[0],
+        }  # fmt: skip
+
+    return (cache or lyapunov_cache()).get(scene_id, compute)
+
+
+_SUPERSCRIPT = str.maketrans("-.0123456789", "⁻·⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def sentence(measured: dict[str, Any], unit: str) -> str:
+    """The exponent as the run note says it; ``unit``: the unit of the coordinate the second start moves."""
+    rate = f"{measured['value']:.2g}"
+    gap = power_of_ten(f"1e{round(math.log10(measured['gap']))}")
+    how = (
+        f"(Measured at the default parameters by following a second run started with "
+        f"{unicode(measured['coordinate'])} larger by {gap} "
+        f"{unit}, putting it back at that distance every {measured['every']:g} s and averaging the logarithm of "
+        f"the gap's growth over {measured['t_end']:g} s, once the gap has had {measured['settle']:g} s to turn "
+        "the way it grows fastest.)"
+    )
+    if float(rate) <= 0:
+        return f"The largest Lyapunov exponent of this start is about {rate} s⁻¹: nearby starts do not part. {how}"
+    # the gap grows by e^λ each second
+    growth = f"{math.exp(float(rate)):.2g}"
+    return (
+        f"This start is chaotic: its largest Lyapunov exponent is about {rate} s⁻¹, so the gap between two runs "
+        f"whose starts differ in the last digits grows about {growth}-fold each second "
+        f"(e{rate.translate(_SUPERSCRIPT)} ≈ {growth}). {how}"
+    )
+
+
+def run_note(scene_id: str, cache: JsonCache | None = None, chapter: Scenes | None = None) -> str:
+    """The scene's run note, opened by its measured exponent when the scene asks for one."""
+    s = scene(scene_id)
+    if not s.lyapunov_seconds:
+        return s.run_note
+    units = coordinate_units(held(chapter).document(scene_id), scene=True)["units"]
+    unit = units[s.system.coordinates[0]]
+    return (sentence(measure_scene(scene_id, cache, chapter), unit) + " " + s.run_note).strip()
+
+
+def warm_all() -> None:
+    """Measure every scene that asks for its exponent (run at set-up, see app.service.warm)."""
+    from app.service.derivations import SCENES
+
+    cache = lyapunov_cache()
+    for scene_id, s in SCENES.items():
+        if s.lyapunov_seconds:
+            measure_scene(scene_id, cache)
