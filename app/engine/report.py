@@ -599,22 +599,35 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
     level_symbol = sp.Symbol(level, real=True)
     # E − U_eff with E first and U_eff's pieces in the order the effective-potential step prints them
     energy_left = pr.tex(level_symbol - effective_potential(d), level_symbol)
-    out.append(
-        _step(
-            "time-integral",
-            "Time as an integral",
-            [
-                rf"t = \int \sqrt{{\frac{{m_\text{{eff}}}}{{2\,\left({level} - U_\text{{eff}}({rn})\right)}}}}\, d{rn}",
-                # the same integral with this system's m_eff and U_eff written in (what a problem asks for)
-                rf" = \int \frac{{d{rn}}}{{\sqrt{{\frac{{2}}{{{pr.tex(red.effective_mass)}}}\left({energy_left}\right)}}}}",
-            ],
-            red.time_integral,
-            f"Separating variables in the energy integral gives the time to reach each {unicode(red.coordinate)}; "
-            "the second form writes in this system's m_eff and U_eff.",
-        )
+    integrand = rf"\frac{{d{rn}}}{{\sqrt{{\frac{{2}}{{{pr.tex(red.effective_mass)}}}\left({energy_left}\right)}}}}"
+    rows = [
+        rf"t = \int \sqrt{{\frac{{m_\text{{eff}}}}{{2\,\left({level} - U_\text{{eff}}({rn})\right)}}}}\, d{rn}",
+        # the same integral with this system's m_eff and U_eff written in (what a problem asks for)
+        rf" = \int {integrand}",
+    ]
+    integrals: list[sp.Expr] = [red.time_integral]
+    why = (
+        f"Separating variables in the energy integral gives the time to reach each {unicode(red.coordinate)}; "
+        "the second form writes in this system's m_eff and U_eff."
     )
-    omega = notation.letter("frequency", d)
     steady = red.omega_squared_steady
+    bounded = steady is not None and steady.is_nonpositive is not True
+    if bounded or any(e.stable is not False for e in red.equilibria):
+        # U_eff has a minimum (a stable equilibrium, or a steady motion about which ω² can be positive), so a
+        # motion can be bounded: between its turning points r_min and r_max (where
+        # U_eff = E) the integral is the time from one to the other, half the period (there and back is one)
+        low, high = (sp.Symbol(f"{red.coordinate}_{end}", real=True) for end in ("min", "max"))
+        rows.append(
+            rf"\tfrac{{1}}{{2}}\,\text{{period}} = \int_{{{rn}_\text{{min}}}}^{{{rn}_\text{{max}}}} {integrand}"
+        )
+        integrals.append(sp.Integral(red.time_integral.function, (r, low, high)))
+        name = unicode(red.coordinate)
+        why += (
+            f" Taken between the turning points {name}_min and {name}_max, where U_eff = {level}, it is half the "
+            "period of a bounded motion: there and back is a whole one."
+        )
+    out.append(_step("time-integral", "Time as an integral", rows, integrals, why))
+    omega = notation.letter("frequency", d)
     if red.equilibria and steady is not None and all(e.omega_squared.has(*red.momenta) for e in red.equilibria):
         # ω² about a steady motion in terms of its r₀, the momentum eliminated by U_eff'(r₀) = 0, as a textbook
         # writes it (not the root put back into U_eff'')

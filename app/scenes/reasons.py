@@ -340,7 +340,7 @@ ROTATING_PARABOLA: dict[str, str] = {
     **_hamiltonian("p_ρ²/(2 m (1 + 4 α² ρ²)) + m (g α − ω²/2) ρ²"),
     "effective-potential": "Gravity's m g α ρ² minus the centrifugal ½ m ω² ρ², with the inertia of the slope.",
     "energy-integral": "The conserved h gives ρ̇ from ρ.",
-    "time-integral": "The integral gives the period of the oscillation along the wire when ω² < 2 g α.",
+    "time-integral": "Taken between the turning points, the integral is half the period of the oscillation along the wire (when ω² < 2 g α).",
     "reduced-equilibria": "The bottom holds the bead with Ω² = 2 g α − ω² when that is positive (Ω, the frequency along the wire; ω is the turning rate).",
     "equilibria": "ρ = 0 is the only equilibrium unless ω² = 2 g α, when every ρ is one. The function whose stationary points these are is U_eff, as in the effective potential above: gravity's m g α ρ² less the centrifugal ½ m ω² ρ².",
     "normal-modes": "At the bottom the small oscillations along the wire have Ω² = 2 g α − ω².",

@@ -253,3 +253,26 @@ def test_a_one_coordinate_equilibrium_is_part_of_its_equation(client):
     assert shown["normal-modes:1"]["latex"].startswith(r"\text{about } \theta=0:\quad \omega^2 = \frac{g}{R}")
     for key in ("normal-modes:1", "normal-modes:2"):
         assert not shown[key]["latex"].replace(r"\begin{aligned}", "").startswith(r"\theta")
+
+
+# ---- issue 40, part A: the time integral between the turning points (prof-g 6) -----------------------------
+
+
+@pytest.mark.parametrize(
+    ("scene", "letter"),
+    [("simple-pendulum", r"\theta"), ("tabletop-spring", "r"), ("spherical-pendulum", r"\theta"),
+     ("rotating-parabola", r"\rho"), ("helix-bead", None), ("incline-block", None)],
+)  # fmt: skip
+def test_where_the_motion_can_turn_back_the_time_integral_has_its_limits_and_says_half_the_period(
+    client, scene, letter
+):
+    step = steps(client, scene)["time-integral"]
+    latex = step["latex"] if isinstance(step["latex"], str) else "".join(step["latex"])
+    if letter is None:
+        # the helix and the incline have no minimum of U_eff: nothing turns the motion back twice
+        assert r"\text{min}" not in latex and "period" not in latex, latex
+        return
+    limits = rf"\int_{{{letter}_\text{{min}}}}^{{{letter}_\text{{max}}}}"
+    assert rf"\tfrac{{1}}{{2}}\,\text{{period}} &= {limits}" in latex, latex
+    # the words beside it say what the limits are and what the integral between them is
+    assert "turning" in step["explanation"] and "half the" in step["explanation"], step["explanation"]
