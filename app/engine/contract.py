@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from typing import Any, TypeVar
 
 import sympy as sp
@@ -12,7 +13,8 @@ from app.engine.budget import Skipped, bounded, display_budget, display_work_lef
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import LARGE_FROM, Derivation
 from app.engine.errata import errata_json
-from app.engine.names import MASS_MATRIX, display_names
+from app.engine.modes import NormalModes
+from app.engine.names import MASS_MATRIX, display_names, unicode
 from app.engine.report import (
     SCALED_CLAUSE,
     Printer,
@@ -342,6 +344,21 @@ def add_beyond(
     )
     result["hamilton"] = ham[2] if ham else None
     result["normal_modes"] = modes[1] if modes else []
+    if modes and nm is not None and scene is not None and scene.upward_angles:
+        from_below(result["steps"], nm, scene.upward_angles)
+
+
+def from_below(steps: list[dict[str, Any]], nm: NormalModes, upward: tuple[str, ...]) -> None:
+    """Each steady motion's title gives an angle measured from the upward vertical also from the downward one,
+    π − θ (the other pages measure θ from below; the two numbers say the same cone)."""
+    for number, e in enumerate(nm.equilibria, start=1):
+        step = next((s for s in steps if s["key"] == f"steady-motion:{number}"), None)
+        shown = [q for q in upward if q in e.position]
+        if step is None or not shown:
+            continue
+        # π − θ: the same direction measured from the downward vertical
+        below = ", ".join(f"π − {unicode(q)} = {math.pi - e.position[q]:.4g} rad" for q in shown)
+        step["title"] += f" ({below} from the downward vertical)"
 
 
 def scene_json(scene: Scene) -> dict[str, Any]:

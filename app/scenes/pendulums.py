@@ -117,6 +117,7 @@ SPHERICAL_PENDULUM = Scene(
     ),
     initial={"theta": 2.2, "theta_dot": 0.0, "phi": 0.0, "phi_dot": 2.0},
     t_end=10.0,
+    upward_angles=("theta",),
     panels=("effective-potential",),
     errata=(
         Erratum(

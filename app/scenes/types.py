@@ -194,3 +194,6 @@ class Scene:
     # a chaotic scene: its largest Lyapunov exponent is measured at the default start over this many seconds
     # (app/service/lyapunov.py), and the sentence saying it opens the run note
     lyapunov_seconds: float = 0.0
+    # angles measured from the upward vertical (the spherical pendulum's θ): where a steady motion gives one's
+    # value, its angle from the downward vertical, π minus it, is given beside it
+    upward_angles: tuple[str, ...] = ()

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import html
 import json
+import math
 import re
 
 import pytest
@@ -276,3 +278,20 @@ def test_where_the_motion_can_turn_back_the_time_integral_has_its_limits_and_say
     assert rf"\tfrac{{1}}{{2}}\,\text{{period}} &= {limits}" in latex, latex
     # the words beside it say what the limits are and what the integral between them is
     assert "turning" in step["explanation"] and "half the" in step["explanation"], step["explanation"]
+
+
+def test_the_spherical_pendulums_steady_cone_is_also_given_from_the_downward_vertical(client):
+    # θ is measured from the upward vertical (prof-g 27): beside each steady motion, π − θ, from the API's own θ
+    doc = client.get("/api/scenes/spherical-pendulum/derivation").json()
+    titles = {s["key"]: s["title"] for s in doc["steps"]}
+    steady = [(i, e) for i, e in enumerate(doc["normal_modes"], start=1) if f"steady-motion:{i}" in titles]
+    assert steady, titles
+    for i, e in steady:
+        theta = e["equilibrium"]["theta"]
+        assert 1.5708 < theta < 3.1416  # a cone below the pivot, measured from above
+        below = f"{math.pi - theta:.4g}"
+        assert titles[f"steady-motion:{i}"].endswith(f"(π − θ = {below} rad from the downward vertical)"), titles
+    # the page prints the same title
+    assert f"π − θ = {below} rad from the downward vertical" in html.unescape(client.get("/scenes/spherical-pendulum").text)
+    # a pendulum measured from below says nothing of the kind
+    assert "from the downward vertical)" not in client.get("/scenes/tabletop-spring").text
