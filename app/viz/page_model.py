@@ -238,6 +238,16 @@ def allowed_text(lo: float, hi: float, unit: str) -> str:
     return f"{_plain(lo)} to {_plain(hi)}{tail}"
 
 
+def control_hint(lo: float, hi: float, slider_lo: float, slider_hi: float, unit: str) -> str:
+    """What a control's hint says: the allowed range, or, where the slider spans less than may be typed (a
+    stiffness from 0.01 to 100,000,000 N/m), the slider's physical range and the wider one typing allows."""
+    if slider_lo <= lo and slider_hi >= hi:
+        return f"allowed: {allowed_text(lo, hi, unit)}"
+    typed = allowed_text(lo, hi, unit)
+    typed = typed if typed.startswith("more than") else f"from {typed}"
+    return f"slider: {allowed_text(slider_lo, slider_hi, unit)}; type any value {typed}"
+
+
 def _plain(x: float) -> str:
     # whole thousands with separators (10,000), smaller numbers to four figures (0.01, 2.5)
     text = f"{x:,.0f}" if abs(x) >= 1000 else f"{x:.4g}"
@@ -364,7 +374,8 @@ def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any
             {"name": name, "label": label(name), "latex": latex(name), "unit": unit,
              "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(default), "log": log,
              "slider_min": _fmt(slider_lo), "slider_max": _fmt(slider_hi), "ticks": _marks(found, unit),
-             "description": _described(info), "allowed": allowed_text(float(lo), float(hi), unit)}
+             "description": _described(info), "allowed": allowed_text(float(lo), float(hi), unit),
+             "hint": control_hint(float(lo), float(hi), slider_lo, slider_hi, unit)}
         )  # fmt: skip
     return controls
 

@@ -91,8 +91,9 @@ function check(ctl) {
   ctl.classList.toggle("invalid", !ok);
   // the server's words for the range ("more than 0, up to 10 kg") where it gave them
   const range = ctl.dataset.allowed || `${tidy(lo)} to ${tidy(hi)}${unit}`;
+  // a slider narrower than what may be typed says both ("slider: 1 to 1,000 N/m; type any value from …")
   hint.textContent = ok
-    ? `allowed: ${range}`
+    ? ctl.dataset.hint || `allowed: ${range}`
     : `${ctl.dataset.label || ctl.dataset.name} must be a number ${
         ctl.dataset.allowed && lo > 0 && lo <= 1e-6 ? range : `from ${tidy(lo)} to ${tidy(hi)}${unit}`}`;
   return ok;

@@ -295,3 +295,17 @@ def test_the_spherical_pendulums_steady_cone_is_also_given_from_the_downward_ver
     assert f"π − θ = {below} rad from the downward vertical" in html.unescape(client.get("/scenes/spherical-pendulum").text)
     # a pendulum measured from below says nothing of the kind
     assert "from the downward vertical)" not in client.get("/scenes/tabletop-spring").text
+
+
+def test_a_slider_shows_a_usable_range_and_the_wider_typed_range_is_said_apart(client):
+    # prof-g 30: "allowed: 0.01 to 100,000,000 N/m" on a slider no one can use
+    page = html.unescape(client.get("/scenes/rail-two-body").text)
+    control = re.search(r'<div class="control" data-group="[^"]*" data-name="k".*?<p class="hint".*?</p>', page, re.S)
+    assert control, "no control for k"
+    attrs = dict(re.findall(r'data-([\w-]+)="([^"]*)"', control.group(0)))
+    lo, hi = float(attrs["slider-min"]), float(attrs["slider-max"])
+    assert float(attrs["min"]) < lo < hi < float(attrs["max"]), attrs  # the slider spans less than may be typed
+    assert hi / lo <= 1000  # three decades at most: a physical range
+    hint = re.search(r'<p class="hint"[^>]*>(.*?)</p>', control.group(0), re.S).group(1)
+    assert hint == f"slider: {lo:g} to {hi:g} N/m; type any value from 0.01 to 100,000,000 N/m", hint
+    assert "allowed: 0.01 to 100,000,000" not in page
