@@ -39,6 +39,7 @@ const REST_MS = 120; // a scene's preview inputs this far apart count as resting
 const SETTLE_MS = 250; // the server's numbers are asked for once the input has rested this long
 const CONTROLS = 4; // points of a trial path besides its two ends
 const RELAX_STEPS = 200; // steps of the relaxed path
+const FIND_PAD = 0.04; // of τ, either side of the time axis in "Find the path" (room for the end points' markers)
 const FRAME_MS = 350; // per Newton step in the animation
 const REPLAY_MS = 1500; // the whole replay of Newton's steps at most
 
@@ -537,12 +538,15 @@ export class ActionPanel {
       traces.push({ type: "scatter", mode: "lines", x: f.t, y: shown, name: this.frame === null || this.frame === undefined ? (f.found ? "relaxed path" : "where Newton's method stopped") : `Newton step ${this.frame}`, line: { color: PALETTE[2], width: 3 } });
       if ((this.frame === null || this.frame === undefined) && f.shooting) traces.push({ type: "scatter", mode: "lines", x: f.t, y: f.shooting.q[q], name: "shooting solution", line: { color: PALETTE[3], width: 2, dash: "dot" } });
     }
-    const lay = layout({ height: 420, hovermode: false, dragmode: false, xaxis: axis("t (s)", { range: [0, this.T] }), yaxis: axis(`${lq} (${unit})`) });
+    // the time axis reaches a little past 0 and τ, so the end points' markers are drawn whole inside the frame
+    const pad = FIND_PAD * this.T;
+    const lay = layout({ height: 420, hovermode: false, dragmode: false, xaxis: axis("t (s)", { range: [-pad, this.T + pad] }), yaxis: axis(`${lq} (${unit})`) });
     window.Plotly?.react(this.plot, traces, lay, CONFIG);
     this.section.dataset.source = f ? "server" : "preview";
     delete this.section.dataset.relaxed;
     if (!f) {
-      this.readout.textContent = `Find the path: the ends are fixed at t = 0 and t = τ = ${fmt(this.T)} s. Drag the points of the trial path (the ends too), then press Relax: Newton's method makes the discretized action stationary, and each of its steps is shown.`;
+      // what dragging an end does (relax() sends the end points as the path's fixed ends): it moves that end
+      this.readout.textContent = `Find the path: the path sought joins two ends, at t = 0 and at t = τ = ${fmt(this.T)} s, which stay where they are while it is sought. Drag the points of the trial path; dragging an end point moves that end of ${lq}, and Relax then seeks the true path between the new ends. Press Relax: Newton's method makes the discretized action stationary, and each of its steps is shown.`;
       return;
     }
     if (this.frame !== null && this.frame !== undefined) {

@@ -362,3 +362,39 @@ def test_the_tabletop_says_which_variations_reach_a_focus(browser, live_server, 
         assert not errors
     finally:
         context.close()
+
+
+def test_find_the_path_says_what_dragging_an_end_does_and_does_it(page, artifacts):
+    # prof-g 11: "the ends are fixed … Drag the points of the trial path (the ends too)" said both; and the last
+    # point, at t = τ, was drawn half outside the plot's frame
+    _open(page)
+    page.locator("#action-find").click()
+    readout = page.locator(f"{PANEL} .readout").text_content()
+    assert "dragging an end point moves that end" in readout and "between the new ends" in readout, readout
+    assert "(the ends too)" not in readout
+    plot = page.locator(f"{PANEL} .plot")
+    # each end point's marker (12 px across) lies whole inside the plot's frame
+    geo = page.evaluate(
+        """(el) => { const f = el._fullLayout, d = el.data[1];
+             return {left: f.xaxis._offset, right: f.xaxis._offset + f.xaxis._length,
+                     first: f.xaxis.d2p(d.x[0]) + f.xaxis._offset,
+                     last: f.xaxis.d2p(d.x[d.x.length - 1]) + f.xaxis._offset,
+                     y: f.yaxis.d2p(d.y[d.y.length - 1]) + f.yaxis._offset, h: f.yaxis._length}; }""",
+        plot.element_handle(),
+    )
+    assert geo["left"] + 6 <= geo["first"] and geo["last"] + 6 <= geo["right"], geo
+    # drag the end at t = τ down, then relax: the path found ends where the end was dragged
+    box = plot.bounding_box()
+    before = page.evaluate(f"document.querySelector('{PANEL} .plot').data[1].y.slice(-1)[0]")
+    page.mouse.move(box["x"] + geo["last"], box["y"] + geo["y"])
+    page.mouse.down()
+    page.mouse.move(box["x"] + geo["last"], box["y"] + geo["y"] + 0.1 * geo["h"], steps=5)
+    page.mouse.up()
+    moved = page.evaluate(f"document.querySelector('{PANEL} .plot').data[1].y.slice(-1)[0]")
+    assert moved < before - 1e-3, (before, moved)
+    page.locator("#action-relax").click()
+    page.wait_for_function(f"document.querySelector('{PANEL}').dataset.relaxed !== undefined", timeout=120_000)
+    page.locator(PANEL).screenshot(path=artifacts / "action-find-moved-end.png")
+    found_end = page.evaluate(f"document.querySelector('{PANEL} .plot').data[2].y.slice(-1)[0]")
+    assert abs(found_end - moved) < 1e-9, (found_end, moved)
+    assert not page.console_errors
