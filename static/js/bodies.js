@@ -2,7 +2,10 @@
  * bodies.js — a mechanism's bodies drawn on the canvas (animation.js): fading trails, fixed points,
  * the moving bodies (balls, or blocks on their slope) and their labels, placed where they hide least.
  */
+import { HANDLE_LABEL } from "./arrows.js";
 import { HANDLE_RADIUS } from "./drag.js";
+// the height of the handle's words beside it ("drag: initial velocity", arrows.js labelHandle), CSS pixels
+const HANDLE_WORDS_HIGH = 22;
 
 export const MASS_COLORS = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a"];
 
@@ -43,6 +46,11 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
   // bodies and stays inside the canvas, with a white halo so that bodies that meet keep readable labels
   const segments = player.spec.links.map((link) => [player.at(link.from, i), player.at(link.to, i)]);
   const boxes = [];
+  // the handle's words as wide as the page sets them (bold, 0.8 rem, with their padding)
+  const font = ctx.font;
+  ctx.font = `600 ${12.8 * dpr}px system-ui, sans-serif`;
+  const words = ctx.measureText(`${HANDLE_LABEL} (now 0)`).width + 10 * dpr;
+  ctx.font = font;
   const cost = (x0, y0, x1, y1) => {
     let c = 0;
     if (x0 < 2 * dpr || x1 > canvas.width - 2 * dpr || y0 < 2 * dpr || y1 > canvas.height - 2 * dpr) c += 100;
@@ -56,18 +64,34 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
     if (grip) {
       const r = (HANDLE_RADIUS + 2) * dpr;
       if (grip.x + r > x0 && grip.x - r < x1 && grip.y + r > y0 && grip.y - r < y1) c += 4;
+      // the handle's own words ("drag: initial velocity", arrows.js labelHandle) sit to its right, above it, or
+      // to its left where the right would leave the canvas
+      const gap = (HANDLE_RADIUS + 6) * dpr, hy = grip.y - HANDLE_WORDS_HIGH * dpr;
+      const hx = grip.x + gap + words <= canvas.width ? grip.x + gap : Math.max(0, grip.x - gap - words);
+      if (hx < x1 && hx + words > x0 && hy < y1 && grip.y > y0) c += 5;
     }
     return c;
   };
+  // a label reads as naming what it is nearest: one nearer another body, or the handle, than its own misleads
+  const misleading = (k, x0, y0, x1, y1) => {
+    const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2, d = ([u, v]) => Math.hypot(u - cx, v - cy);
+    const own = d(placed[k]);
+    const others = placed.filter((_, j) => j !== k).concat(grip ? [[grip.x, grip.y]] : []);
+    return others.some((o) => d(o) < own) ? 6 : 0;
+  };
+  const drawn = [];
   player.masses.forEach((p, k) => {
     const [x, y] = placed[k], label = player.spec.points[p].label, w = ctx.measureText(label).width, h = 13 * dpr;
     let best = null;
-    for (const [sx, sy] of [[1, -1], [-1, -1], [1, 1], [-1, 1]]) {
-      const lx = x + sx * 14 * dpr, ly = y + (sy < 0 ? -12 : 22) * dpr;
-      const x0 = sx > 0 ? lx : lx - w, c = cost(x0, ly - h, x0 + w, ly + 3 * dpr);
-      if (!best || c < best.c) best = { c, lx, ly, align: sx > 0 ? "left" : "right", box: [x0, ly - h, x0 + w, ly + 3 * dpr] };
+    // the four corners beside the body, then straight above and below it (for a body between two others)
+    for (const [sx, sy] of [[1, -1], [-1, -1], [1, 1], [-1, 1], [0, -1], [0, 1]]) {
+      const lx = x + sx * 14 * dpr, ly = y + (sy < 0 ? (sx ? -12 : -14) : (sx ? 22 : 26)) * dpr;
+      const x0 = sx > 0 ? lx : sx < 0 ? lx - w : lx - w / 2, box = [x0, ly - h, x0 + w, ly + 3 * dpr];
+      const c = cost(...box) + misleading(k, ...box);
+      if (!best || c < best.c) best = { c, lx, ly, align: sx > 0 ? "left" : sx < 0 ? "right" : "center", box };
     }
     boxes.push(best.box);
+    drawn.push({ label, box: best.box.map((v) => Math.round(v / dpr)) });
     ctx.textAlign = best.align;
     ctx.strokeStyle = "#fff"; ctx.lineWidth = 4 * dpr;
     ctx.strokeText(label, best.lx, best.ly);
@@ -75,6 +99,8 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
     ctx.fillText(label, best.lx, best.ly);
   });
   ctx.textAlign = "left";
+  // for tests and tools: each label's box [left, top, right, bottom] in CSS pixels
+  canvas.dataset.labels = JSON.stringify(drawn);
 }
 
 const BLOCK_HALF = 15; // half a block's length along its slope, CSS pixels

@@ -3,6 +3,8 @@ line each), controls, set-up figure with parameters, then the derivation; the st
 
 from __future__ import annotations
 
+import json
+
 import pytest
 
 from app.scenes import SCENES
@@ -116,3 +118,39 @@ def test_a_wide_screen_shows_every_panel_unfolded(page):
     page.wait_for_selector(READY, state="attached")
     assert page.locator(".panels button.fold").count() == 0
     assert page.locator(".panels > section.panel.folded").count() == 0
+
+
+MANY_BODIES = sorted(s.id for s in SCENES.values() if len(s.system.particles) > 1)
+
+
+@pytest.mark.parametrize("scene_id", MANY_BODIES)
+def test_each_mass_label_sits_nearer_its_mass_than_any_other_body_or_the_handle(
+    browser, live_server, artifacts, scene_id
+):
+    # prof-g 31: on the phone the rail's "mass 1" sat over the velocity handle, its "mass 2" under the handle's words
+    context, page = _phone_page(browser, live_server, scene_id)
+    try:
+        canvas = page.locator("canvas.mechanism").first
+        canvas.scroll_into_view_if_needed()
+        page.wait_for_function("document.querySelector('canvas.mechanism').dataset.labels !== undefined")
+        page.wait_for_timeout(300)
+        canvas.screenshot(path=artifacts / f"labels-phone-{scene_id}.png")
+        labels = {x["label"]: x["box"] for x in json.loads(canvas.get_attribute("data-labels"))}
+        bodies = {b["label"]: (b["x"], b["y"]) for b in json.loads(canvas.get_attribute("data-bodies"))}
+        handle = canvas.get_attribute("data-handle")
+        others = {"the velocity handle": tuple(json.loads(handle).values())} if handle else {}
+        for label, (x0, y0, x1, y1) in labels.items():
+            cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+            own = ((bodies[label][0] - cx) ** 2 + (bodies[label][1] - cy) ** 2) ** 0.5
+            for name, (x, y) in {**{k: v for k, v in bodies.items() if k != label}, **others}.items():
+                assert own <= ((x - cx) ** 2 + (y - cy) ** 2) ** 0.5, (label, name, labels, bodies, handle)
+        # and no label lies under the handle's own words ("drag: initial velocity")
+        words = page.locator(".handle-label")
+        if words.count() and words.first.is_visible():
+            w, c = words.first.bounding_box(), canvas.bounding_box()
+            for label, (x0, y0, x1, y1) in labels.items():
+                left, top = w["x"] - c["x"], w["y"] - c["y"]
+                right, bottom = left + w["width"], top + w["height"]
+                assert not (x0 < right and x1 > left and y0 < bottom and y1 > top), (label, labels, w)
+    finally:
+        context.close()
