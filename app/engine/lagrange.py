@@ -124,7 +124,7 @@ def _refuse_singular_at_rest(W: sp.Matrix, qd: tuple[sp.Symbol, ...]) -> None:
     """
     # W(q, 0, t): the matrix that multiplies q̈ in a state at rest
     at_rest = W.xreplace(dict.fromkeys(qd, sp.Integer(0)))
-    shown = ", ".join(unicode(s.name) for s in qd)
+    shown = " = ".join(unicode(s.name) for s in qd)
     if at_rest.is_zero_matrix or _numerically_singular(at_rest, sorted(at_rest.free_symbols, key=lambda s: s.name)):
         raise DerivationError(
             f"the matrix ∂²L/∂q̇² depends on the velocities and is singular at rest ({shown} = 0), so there "
