@@ -7,6 +7,7 @@ grows with the amplitude a, its ratio to the light-speed limit 4a/c falling towa
 """
 
 import math
+import unicodedata
 
 import numpy as np
 import pytest
@@ -95,3 +96,20 @@ def test_period_grows_with_amplitude_toward_4a_over_c(client):
     ratios = [T / (4 * a / C) for T, a in zip(periods, amplitudes, strict=True)]
     assert all(b < a for a, b in zip(ratios, ratios[1:], strict=False))
     assert 1.0 < ratios[-1] < 1.002
+
+
+def test_a_lagrangian_singular_at_rest_is_a_422_saying_why(client):
+    # L = ẋ⁴ − x²: ∂²L/∂ẋ² = 12ẋ² vanishes at rest, where the equations do not give ẍ
+    response = client.post("/api/derive", json={"coordinates": ["x"], "lagrangian": "x_dot**4 - x**2"})
+    assert response.status_code == 422
+    detail = unicodedata.normalize("NFC", str(response.json()["detail"]))
+    assert "singular at rest (ẋ = 0)" in detail and "invertible at q̇ = 0" in detail
+
+
+def test_the_playground_lists_the_example_and_derives_it(client):
+    page = client.get("/playground")
+    assert "Relativistic oscillator" in page.text
+    doc = client.post("/api/derive", json=RELATIVISTIC_OSCILLATOR)
+    assert doc.status_code == 200, doc.text
+    skipped = {s["member"]: s["reason"] for s in doc.json()["skipped"]}
+    assert "p = ∂L/∂q̇ is not linear in q̇" in skipped["hamilton"]
