@@ -115,6 +115,14 @@ def _numerically_singular(M: sp.Matrix, symbols: list[sp.Symbol], trials: int = 
     return conclusive > 0
 
 
+def _roots_expanded(expr: sp.Expr) -> sp.Expr:
+    """Each fractional power's base expanded: ((c² − ẋ²)/c²)^{3/2} -> (1 − ẋ²/c²)^{3/2}."""
+    return expr.replace(
+        lambda e: e.is_Pow and e.exp.is_Rational and not e.exp.is_Integer,
+        lambda e: sp.Pow(sp.expand(e.base), e.exp),
+    )
+
+
 def _refuse_singular_at_rest(W: sp.Matrix, qd: tuple[sp.Symbol, ...]) -> None:
     """Refuse a W(q, q̇, t) that is singular at rest, q̇ = 0: there the equations do not give q̈.
 
@@ -208,8 +216,9 @@ def euler_lagrange(mech: Mechanics) -> Equations:
         solved = [sp.factor_terms(sp.expand(x)) / det for x in M.adjugate() * forcing]
         if velocity_dependent:
             # W(q̇) brings roots of the velocities (√(1 − ẋ²/c²)): over one denominator, powers of the same
-            # base joined, −kx√(1 − ẋ²/c²)/(m(ẋ²/(c² − ẋ²) + 1)) reads −kx(c² − ẋ²)^{3/2}/(c³m)
-            solved = [sp.powsimp(sp.together(x)) for x in solved]
+            # base joined, then each root's base expanded: −kx√(1 − ẋ²/c²)/(m(ẋ²/(c² − ẋ²) + 1)) reads
+            # −kx(1 − ẋ²/c²)^{3/2}/m
+            solved = [_roots_expanded(sp.powsimp(sp.together(x))) for x in solved]
     else:
         # q_ddot = M^-1 f by LU elimination, untidied: a 3x3 adjugate tidied term by term cost more
         # than the whole 4-coordinate elimination (the display tidies what it shows, in its own budget)

@@ -105,8 +105,12 @@ def test_the_energy_function_is_gamma_m_c_squared_plus_u():
 def test_printed_as_a_textbook_prints_it():
     doc = derivation_json(ours("oscillator"))
     steps = {s["key"]: s for s in doc["steps"]}
-    # p = mẋ/√(1 − ẋ²/c²) and h = mc²/√(1 − ẋ²/c²) + ½kx²: the root as a root, the dot as a dot
+    # p = mẋ/√(1 − ẋ²/c²) (γmẋ) and h = mc²/√(1 − ẋ²/c²) + ½kx²: the root as a root, the dot as a dot
     assert steps["momenta"]["latex"] == r"p_{x} = \frac{m \dot{x}}{\sqrt{1 - \dot{x}^{2} / c^{2}}}"
+    # ẍ = −(k/m) x (1 − ẋ²/c²)^{3/2}, that is −kx/(mγ³)
+    assert steps["accelerations"]["latex"] == (
+        r"\ddot{x} = - \frac{k}{m} x \left(1 - \dot{x}^{2} / c^{2}\right)^{\frac{3}{2}}"
+    )
     assert steps["hamiltonian"]["latex"].endswith(
         r"= \frac{m c^{2}}{\sqrt{1 - \dot{x}^{2} / c^{2}}} + \frac{1}{2} k x^{2}"
     )
