@@ -184,7 +184,7 @@ def _on_symengine(mech: Mechanics) -> tuple[tuple[sp.Expr, ...], ...]:
 
 def euler_lagrange(mech: Mechanics) -> Equations:
     table = mech.table
-    q, qd, qdd = table.q, table.qd, table.qdd
+    q, qd = table.q, table.qd
     # the derivatives on symengine for the larger systems, when every function in L and Q is one it
     # differentiates as SymPy does; the small ones (every chapter scene) keep SymPy's forms, which the
     # document shows as they come (symengine's are equal but grouped differently)
