@@ -135,6 +135,11 @@ def energetics(mech: Mechanics, eqs: Equations) -> Energetics:
     dL_dt = sp.Integer(0) if is_zero(dL_dt) else dL_dt
     # h = sum_k p_k q_dot_k - L
     h = sp.expand(sum(p * v for p, v in zip(eqs.momenta, qd, strict=True)) - L)
+    if eqs.velocity_dependent:
+        # terms with roots of the velocities over one denominator: mc²√(1 − ẋ²/c²) + mẋ²/√(1 − ẋ²/c²) is
+        # mc²/√(1 − ẋ²/c²), the γmc² a textbook writes
+        moving = sum((term for term in sp.Add.make_args(h) if term.has(*qd)), sp.Integer(0))
+        h = sp.cancel(sp.together(moving)) + (h - moving)
     # dh/dt = -dL/dt|explicit + sum_k Q_k q_dot_k  (the power of the non-conservative forces)
     power = sp.expand(sum(f * v for f, v in zip(mech.Q, qd, strict=True)))
 

@@ -106,6 +106,10 @@ class Derivation:
         """H(q, p, t) and Hamilton's equations."""
         from app.engine.hamilton import hamilton
 
+        if self.equations.velocity_dependent:
+            return Skipped("hamilton", "Hamilton's equations are left out: ∂²L/∂q̇² depends on the velocities, so "
+                           "p = ∂L/∂q̇ is not linear in q̇ and the engine does not invert it for q̇(q, p); "
+                           "the Euler–Lagrange equations above hold as they are.")  # fmt: skip
         if not self.equations.closed_form and not self.equations.mass_matrix.is_diagonal():
             return Skipped("hamilton", f"Hamilton's equations are left out: q̇ = {MASS_MATRIX[1]}⁻¹(p − b) has no closed form "
                            "short enough to read for this many coordinates (as with the accelerations).")  # fmt: skip
@@ -145,6 +149,11 @@ def derive(system: System) -> Derivation:
     eqs = euler_lagrange(mech)
     en = energetics(mech, eqs)
     skipped: list[Skipped] = []
+    if eqs.velocity_dependent:
+        # the reduction writes the reduced energy as ½ m_eff ṙ² + U_eff(r), true only for L quadratic in q̇
+        skipped.append(Skipped("effective_potential", "The effective potential is left out: ∂²L/∂q̇² depends on "
+                               "the velocities, so the energy is not ½ m_eff ṙ² + U_eff(r)."))  # fmt: skip
+        return Derivation(system, mech, eqs, en, None, tuple(skipped))
     # the one-coordinate reduction (effective potential, equilibria) is a refinement with its own bound
     red = bounded(
         "effective_potential", "The reduction to one coordinate (effective potential and its equilibria)",

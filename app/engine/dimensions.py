@@ -302,7 +302,9 @@ def known_dimensions(
         for c, v in zip(q, qd, strict=True):
             if c in known:
                 continue
-            entry = sp.diff(lagrangian, v, 2)
+            # at rest when ∂²L/∂q̇² depends on the velocities (mγ³ of a relativistic L is m there), whose
+            # dimensions are not known yet
+            entry = sp.diff(lagrangian, v, 2).xreplace(dict.fromkeys(qd, sp.Integer(0)))
             rates = {**known, **{x: {} for x in qd}}
             d = dimension(entry, rates) if entry != 0 else None
             # every term of M_qq has its dimension, so its part free of q tells it (m (1 + 4α²ρ²) at ρ = 0 is m)

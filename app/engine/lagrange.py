@@ -7,10 +7,12 @@ For each coordinate q_k the engine forms
 
 and, since E_k is linear in the accelerations, writes the system as
 
-    M(q, t) q_ddot = f(q, q_dot, t),   M_jk = d^2 L / dq_dot_j dq_dot_k,
+    W(q, q_dot, t) q_ddot = f(q, q_dot, t),   W_jk = d^2 L / dq_dot_j dq_dot_k,
+    f = dL/dq - (d^2 L / dq_dot dq^T) q_dot - d^2 L / dq_dot dt + Q,
 
-then solves it.  M must not depend on the velocities (L at most quadratic in
-them) and must be invertible; otherwise the equations do not determine q_ddot.
+then solves it.  W (the mass matrix M when L is at most quadratic in the
+velocities) may depend on them (a relativistic particle); it must be invertible
+at a generic state and at rest, otherwise the equations do not determine q_ddot.
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ from app.engine.closed_form import by_cramer
 from app.engine.errors import DerivationError
 from app.engine.fast import Fast, convertible, diff, expand
 from app.engine.mechanics import Mechanics
+from app.engine.names import unicode
 
 # Closed forms by Cramer's rule up to this many coordinates; LU elimination beyond.
 CRAMER_MAX = 2
@@ -50,6 +53,9 @@ class Equations:
     closed_form: bool = True
     # why the accelerations are or are not shown in closed form, with their measured size (empty: no question)
     closed_form_reason: str = ""
+    # whether W = ∂²L/∂q̇² depends on the velocities (L not quadratic in them): then p = ∂L/∂q̇ is not
+    # linear in q̇, and the members built on M(q, t) q̈ = f say what they leave out
+    velocity_dependent: bool = False
 
 
 # Smallest singular value, relative to the largest, below which an equilibrated M counts as singular.
@@ -109,6 +115,32 @@ def _numerically_singular(M: sp.Matrix, symbols: list[sp.Symbol], trials: int = 
     return conclusive > 0
 
 
+def _roots_expanded(expr: sp.Expr) -> sp.Expr:
+    """Each fractional power's base expanded: ((c² − ẋ²)/c²)^{3/2} -> (1 − ẋ²/c²)^{3/2}."""
+    return expr.replace(
+        lambda e: e.is_Pow and e.exp.is_Rational and not e.exp.is_Integer,
+        lambda e: sp.Pow(sp.expand(e.base), e.exp),
+    )
+
+
+def _refuse_singular_at_rest(W: sp.Matrix, qd: tuple[sp.Symbol, ...]) -> None:
+    """Refuse a W(q, q̇, t) that is singular at rest, q̇ = 0: there the equations do not give q̈.
+
+    A Lagrangian not quadratic in the velocities is regular where W = ∂²L/∂q̇∂q̇ᵀ is invertible; a
+    simulation starts from (and the equilibria are linearised at) states with q̇ = 0, so W(q, 0, t) must
+    be invertible too (L = ẋ⁴ has W = 12ẋ², zero at rest).
+    """
+    # W(q, 0, t): the matrix that multiplies q̈ in a state at rest
+    at_rest = W.xreplace(dict.fromkeys(qd, sp.Integer(0)))
+    shown = " = ".join(unicode(s.name) for s in qd)
+    if at_rest.is_zero_matrix or _numerically_singular(at_rest, sorted(at_rest.free_symbols, key=lambda s: s.name)):
+        raise DerivationError(
+            f"the matrix ∂²L/∂q̇² depends on the velocities and is singular at rest ({shown} = 0), so there "
+            "the Euler–Lagrange equations do not determine the accelerations; a Lagrangian not quadratic in "
+            "the velocities needs ∂²L/∂q̇² invertible at q̇ = 0 (−mc²√(1 − ẋ²/c²) has m there)"
+        )
+
+
 def _on_sympy(mech: Mechanics) -> tuple[tuple[sp.Expr, ...], ...]:
     """dL/dq, p, dp/dt, the residuals E, the rows of M and f, in SymPy (any allowed function)."""
     table = mech.table
@@ -152,7 +184,7 @@ def _on_symengine(mech: Mechanics) -> tuple[tuple[sp.Expr, ...], ...]:
 
 def euler_lagrange(mech: Mechanics) -> Equations:
     table = mech.table
-    q, qd, qdd = table.q, table.qd, table.qdd
+    q, qd = table.q, table.qd
     # the derivatives on symengine for the larger systems, when every function in L and Q is one it
     # differentiates as SymPy does; the small ones (every chapter scene) keep SymPy's forms, which the
     # document shows as they come (symengine's are equal but grouped differently)
@@ -162,11 +194,6 @@ def euler_lagrange(mech: Mechanics) -> Equations:
     n = len(q)
     # M_jk = dp_j/dq_dot_k: the coefficient of q_ddot_k in E_j
     M = sp.Matrix(n, n, entries)
-    if any(M.has(s) for s in (*qd, *qdd)):
-        raise DerivationError(
-            "the mass matrix ∂²L/∂q̇² depends on the velocities, so L is not quadratic in them; "
-            "the engine handles L = (quadratic in q̇) + (linear in q̇) + (no q̇)"
-        )
     if M.is_zero_matrix:
         raise DerivationError(
             "the mass matrix ∂²L/∂q̇² is zero: L has no term quadratic in the velocities, "
@@ -178,12 +205,20 @@ def euler_lagrange(mech: Mechanics) -> Equations:
             "the mass matrix ∂²L/∂q̇² is singular: the Euler–Lagrange equations do not determine "
             "every acceleration (is a coordinate missing from T, or are two coordinates redundant?)"
         )
+    velocity_dependent = M.has(*qd)
+    if velocity_dependent:
+        _refuse_singular_at_rest(M, qd)
     forcing = sp.Matrix(forcing_entries)
     if M.shape[0] <= CRAMER_MAX:
         # Cramer's rule, q_ddot = adj(M) f / det M, with sin² + cos² = 1 collected:
         # compact closed forms that display without further simplification
         det = sp.factor_terms(pythagoras(M.det(method="berkowitz")))
         solved = [sp.factor_terms(sp.expand(x)) / det for x in M.adjugate() * forcing]
+        if velocity_dependent:
+            # W(q̇) brings roots of the velocities (√(1 − ẋ²/c²)): over one denominator, powers of the same
+            # base joined, then each root's base expanded: −kx√(1 − ẋ²/c²)/(m(ẋ²/(c² − ẋ²) + 1)) reads
+            # −kx(1 − ẋ²/c²)^{3/2}/m
+            solved = [_roots_expanded(sp.powsimp(sp.together(x))) for x in solved]
     else:
         # q_ddot = M^-1 f by LU elimination, untidied: a 3x3 adjugate tidied term by term cost more
         # than the whole 4-coordinate elimination (the display tidies what it shows, in its own budget)
@@ -198,4 +233,6 @@ def euler_lagrange(mech: Mechanics) -> Equations:
             solved, closed_form = list(cramer.accelerations), True
     elif not closed_form:
         reason = f"one has more than {CLOSED_FORM_MAX_NODES} operations"
-    return Equations(dL_dq, momenta, ddt, residuals, M, forcing, tuple(solved), closed_form, reason)
+    return Equations(
+        dL_dq, momenta, ddt, residuals, M, forcing, tuple(solved), closed_form, reason, velocity_dependent
+    )

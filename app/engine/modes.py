@@ -190,7 +190,9 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
     # the equilibrium condition dV/dq + db/dt - Q(q, 0) = 0
     g_exprs = [sp.diff(V, s) + bt - f for s, bt, f in zip(q, b_t, Q0, strict=True)]
     moving_frame = any(bt != 0 for bt in b_t)
-    M = eqs.mass_matrix
+    # M = W(q, 0, t): the matrix multiplying q̈ in W q̈ = f, at rest (W is M itself when L is quadratic in q̇;
+    # linearising W(q, q̇) q̈ about a rest point, where q̈ = 0, leaves W(q₀, 0) δq̈)
+    M = eqs.mass_matrix.xreplace(zero_v)
     # G = -d f/d q_dot at rest: damping and gyroscopic terms of M q_ddot = f
     G = sp.Matrix([[-sp.diff(f, v) for v in table.qd] for f in eqs.forcing]).xreplace(zero_v)
     values = defaults(d)

@@ -194,8 +194,10 @@ def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
     # symplectic methods step at a fixed size: only where no fast mode (excited, since not stiff) would force
     # that size down over the whole run -- a chain with masses 1e-9 and 1e9 took Yoshida-4 past its step limit
     fast_mode = a.mode_gap > STIFF_RATIO
-    if system.energy_name is not None and not fast_mode and (a.characteristic_times >= LONG_RUN or a.near_saddle):
-        name = symplectic_for(system).name
+    symplectic = symplectic_for(system)
+    long_or_saddle = a.characteristic_times >= LONG_RUN or a.near_saddle
+    if symplectic is not None and system.energy_name is not None and not fast_mode and long_or_saddle:
+        name = symplectic.name
         why = f"{name} is the highest-order symplectic method that applies" + (
             " (H separates into T(p) + U(q))" if system.separable else " (H(q, p) does not separate)"
         )

@@ -34,6 +34,9 @@ class NumericSystem:
     conserved: tuple[str, ...]
     key: str
     periodic: tuple[bool, ...] = ()  # coordinates that are angles: F(q + 2 pi e_i) = F(q)
+    # p = M q_dot + b with M free of q_dot, so q_dot(q, p) = M⁻¹(p − b) and ``ham`` is generated; False when
+    # ∂²L/∂q̇² depends on the velocities (a relativistic particle): no (q, p) form for the symplectic methods
+    legendre_linear: bool = True
     _compiled: ModuleType | None = field(default=None, repr=False)
     _compiled_jacobian: ModuleType | None = field(default=None, repr=False)
     _lock: threading.Lock = field(default_factory=threading.Lock, repr=False)
@@ -53,7 +56,8 @@ class NumericSystem:
         return jit.source_key(jit.compiled_source(self._compiled_sources()))
 
     def _compiled_sources(self) -> dict[str, str]:
-        return {k: self.sources[k] for k in ("rhs", "ham")}
+        # no ham when the Legendre map p = ∂L/∂q̇ is not linear in q̇ (``legendre_linear``)
+        return {k: self.sources[k] for k in ("rhs", "ham") if k in self.sources}
 
     def is_compiled(self) -> bool:
         """True when ``compiled()`` would return at once (no numba compile or cache load)."""
@@ -143,7 +147,10 @@ def _free(expr, symbols) -> bool:
 def generated_sources(d: Derivation) -> dict[str, str]:
     """The generated scalar functions of a derivation, by name (rhs, ham, momenta, and jac when compact)."""
     names = Names.of(d)
-    sources = {"rhs": rhs_source(d, names), "ham": hamilton_source(d, names), "momenta": momenta_source(d, names)}
+    sources = {"rhs": rhs_source(d, names), "momenta": momenta_source(d, names)}
+    if not d.equations.velocity_dependent:
+        # q_dot = M⁻¹(p − b) needs M free of q_dot
+        sources["ham"] = hamilton_source(d, names)
     jac = jacobian_source(d, names)
     if jac is not None:
         sources["jac"] = jac
@@ -155,7 +162,7 @@ def numeric_system(d: Derivation, sources: dict[str, str] | None = None) -> Nume
     (``generated_sources`` of the same derivation, e.g. from a disk cache)."""
     table, eqs, en = d.table, d.equations, d.energetics
     sources = dict(sources) if sources is not None else generated_sources(d)
-    mass_constant = all(_free(x, (*table.q, table.t)) for x in eqs.mass_matrix)
+    mass_constant = all(_free(x, (*table.q, *table.qd, table.t)) for x in eqs.mass_matrix)
     forced = any(Q != 0 for Q in d.mechanics.Q)
     separable = (
         mass_constant
@@ -183,6 +190,7 @@ def numeric_system(d: Derivation, sources: dict[str, str] | None = None) -> Nume
         energy_name=energy_name,
         conserved=conserved,
         key=jit.source_key("".join(sources.values())),
+        legendre_linear="ham" in sources,
     )
     system.periodic = tuple(_is_angle(system, i) for i in range(system.n))
     return system
@@ -199,7 +207,8 @@ def _is_angle(system: NumericSystem, i: int) -> bool:
         shifted[i] += 2 * np.pi
         try:
             a, b = system.f(t, y, k), system.f(t, shifted, k)
-        except (ArithmeticError, ValueError):
+        # TypeError: a fractional power of a negative number is complex in Python (|q̇| > c of a relativistic L)
+        except (ArithmeticError, ValueError, TypeError):
             return False
         if not np.allclose(a, b, rtol=1e-9, atol=1e-12):
             return False

@@ -72,7 +72,8 @@ def _reference(system, k, y0, t_end) -> tuple[np.ndarray, str]:
 
 def methods_for(system) -> list[str]:
     # the compiled Radau IIA beside scipy's (the same scheme): what compiling the step loop buys
-    return [NONSTIFF, symplectic_for(system).name, STIFF, *SCIPY_METHODS]
+    symplectic = symplectic_for(system)
+    return [NONSTIFF, *([symplectic.name] if symplectic is not None else []), STIFF, *SCIPY_METHODS]
 
 
 def compute(scene_id: str, sweep: list[float] | None = None, methods: list[str] | None = None) -> dict[str, Any]:

@@ -78,6 +78,17 @@ SPINNING_HOOP = {
     ],
     "lagrangian": "m*R**2*(theta_dot**2 + w**2*sin(theta)**2)/2 + m*g*R*cos(theta)",
 }
+# L = −mc²√(1 − ẋ²/c²) − ½kx², not quadratic in ẋ.  A toy speed of light, c = 1 m/s, and k a²/(2mc²) = 2 at the
+# playground's start x = 1 m: the bob reaches γ = 3 (ẋ = 0.94c) and its period is 1.6 times the slow 2π√(m/k)
+RELATIVISTIC_OSCILLATOR = {
+    "coordinates": ["x"],
+    "parameters": [
+        {"name": "m", "value": 1.0, "unit": "kg", "min": 0.001},
+        {"name": "c", "value": 1.0, "unit": "m/s", "min": 0.01},
+        {"name": "k", "value": 4.0, "unit": "N/m", "min": 0.001},
+    ],
+    "lagrangian": "-m*c**2*sqrt(1 - x_dot**2/c**2) - k*x**2/2",
+}
 
 DERIVE_EXAMPLES: dict[str, dict[str, Any]] = {
     "forced-spring": {

@@ -36,7 +36,7 @@ from app.service.user_systems import UserSystems
 from app.viz.user_page import model_of
 from app.web.deps import ClientDep, UserSystemsDep
 from app.web.errors import KINDS, REFUSED, Failure, held, problem
-from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP
+from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, RELATIVISTIC_OSCILLATOR, SPINNING_HOOP
 from app.web.playground_form import AXES, FORMS, Form, FormError, form_of, located_error, query_of, read_form, spec_of
 from app.web.playground_stages import STAGE_PARAMETER, first_view, whole_href
 from app.web.schemas import SESSION_COOKIE
@@ -49,6 +49,7 @@ EXAMPLES = {
     "Forced, damped spring (T, U and a force)": FORCED_SPRING,
     "Double pendulum (particles)": DOUBLE_PENDULUM,
     "Bead on a spinning hoop (L alone)": SPINNING_HOOP,
+    "Relativistic oscillator (L not quadratic in ẋ)": RELATIVISTIC_OSCILLATOR,
 }
 
 

@@ -198,6 +198,14 @@ class GaussLegendre(FixedStep):
     order = 6
     summary = "3-stage Gauss-Legendre collocation on (q, p), order 6, symplectic for any Hamiltonian, fixed step"
 
+    def applicable(self, system: NumericSystem) -> str | None:
+        if system.legendre_linear:
+            return None
+        return (
+            "it steps in (q, p), and here ∂²L/∂q̇² depends on the velocities, so p = ∂L/∂q̇ is not linear in q̇ "
+            "and q̇(q, p) has no form to step with; use an adaptive method (Vern8, DOP853 or Radau)"
+        )
+
     def __init__(self) -> None:
         self.A, self.b, self.c, self.E = gauss_tableau(self.stages)
 
