@@ -78,12 +78,23 @@ def coordinate_units(doc: Mapping[str, Any], scene: bool) -> dict[str, dict[str,
                 continue
             entry = document_tree(matrix[i][i])
             d = dims_of(entry, known) if entry is not None else None
+            if d is None and entry is not None:
+                # an M_qq that depends on the velocities (−mc²√(1 − ẋ²/c²)): try q in m, q̇ in m/s and the other
+                # rates in their units, and keep m only when M_qq then has the units m would need (kg)
+                trial = dict(known) | {f"{p}_dot": _rate_dims(known.get(p)) for p in coordinates}
+                trial[q], trial[f"{q}_dot"] = {"m": Fraction(1)}, {"m": Fraction(1), "s": Fraction(-1)}
+                d = dims_of(entry, trial)
             if d is not None and _add(energy, d, Fraction(-1)) == {"m": Fraction(2)}:
                 units[q] = "m"
                 known[q] = {"m": Fraction(1)}
     rate = {q: rate_unit(u) for q, u in units.items()}
     momentum = {q: {"rad": "kg·m²/s", "m": "kg·m/s"}.get(u, "") for q, u in units.items()}
     return {"units": units, "rate_units": rate, "momentum_units": momentum}
+
+
+def _rate_dims(d: Dims | None) -> Dims | None:
+    """A coordinate's rate: its dimension per second (None when the coordinate's own is not known)."""
+    return None if d is None else _add(d, {"s": Fraction(-1)})
 
 
 def rate_unit(unit: str) -> str:

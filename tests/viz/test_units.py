@@ -50,6 +50,15 @@ def test_an_angle_not_named_as_one_follows_from_its_mass_matrix_entry_and_unknow
     assert coordinate_units(d, scene=False)["rate_units"] == {"u": "1/s", "x": "1/s"}
 
 
+def test_a_mass_matrix_with_the_velocity_in_it_still_gives_metres():
+    # L = −mc²√(1 − ẋ²/c²): M_xx = m (1 − ẋ²/c²)^(−3/2), the tree the engine serves for it
+    root = ["+", 1, ["neg", ["*", ["pow", "c", -2], ["pow", "x_dot", 2]]]]
+    entry = ["+", ["*", "m", ["pow", root, -0.5]], ["*", "m", ["pow", "c", -2], ["pow", "x_dot", 2], ["pow", root, -1.5]]]
+    assert coordinate_units(doc(["x"], {"m": "kg", "c": "m/s"}, [[entry]]), scene=False)["units"] == {"x": "m"}
+    # with c in no unit nothing can be told, and nothing is printed
+    assert coordinate_units(doc(["x"], {"m": "kg", "c": ""}, [[entry]]), scene=False)["units"] == {"x": ""}
+
+
 def test_a_number_reads_with_its_unit_never_per_second():
     from app.viz.units import rate_unit, with_unit
 
