@@ -164,7 +164,9 @@ function stepView(a, item, practice, s, index) {
         verdictView(box, r);
         return;
       }
-      shown.replaceChildren(el("p", { className: "help", text: "The step, derived:" }), typeset(el("div"), exercise.answer.latex, true));
+      // ω²'s answer names its equilibrium; its notes (stability, the other equilibria) are sentences that wrap
+      shown.replaceChildren(el("p", { className: "help", text: "The step, derived:" }), typeset(el("div"), exercise.answer.latex, true),
+        ...(exercise.answer.notes || []).map((note) => el("p", { className: "join-step-note", text: note })));
     }
     shown.hidden = !shown.hidden;
     reveal.setAttribute("aria-expanded", String(!shown.hidden));
