@@ -319,13 +319,21 @@ $("join-form").addEventListener("submit", async (event) => {
     $("join-name").focus();
     return;
   }
+  // the institution login, once the class has asked for it (the server says so at the first press of Join)
+  const asking = !$("join-login-field").hidden;
+  const login = $("join-login").value.trim();
+  if (asking && !login) {
+    $("join-status").textContent = $("join-login-help").textContent;
+    $("join-login").focus();
+    return;
+  }
   button.disabled = true;
   $("join-status").textContent = "Joining…";
   let r;
   try {
     // a 429 or 503 (many joining at once) is tried again after the Retry-After the server gives, shown counting down
     for (let attempt = 1; ; attempt++) {
-      r = await api("POST", `/api/classes/${encodeURIComponent(code)}/join`, { body: { name } });
+      r = await api("POST", `/api/classes/${encodeURIComponent(code)}/join`, { body: { name, ...(asking ? { login } : {}) } });
       if ((r.status !== 429 && r.status !== 503) || attempt >= JOIN_TRIES) break;
       await waitShown(Math.max(1, r.retryAfter || 2), r.status === 429 ? "Many are joining at once." : "The server is busy.");
     }
@@ -334,6 +342,22 @@ $("join-form").addEventListener("submit", async (event) => {
     return;
   } finally {
     button.disabled = false;
+  }
+  if (r.status === 422 && r.data?.loc?.[1] === "login") {
+    if (asking && String(r.data.detail).startsWith("This class does not ask")) {
+      // another class's code, which asks for none: the field goes, and the join is sent again without it
+      $("join-login-field").hidden = true;
+      $("join-login").value = "";
+      $("join-form").requestSubmit();
+      return;
+    }
+    // the class asks for it (or it is not one): the field is shown, said what to type, and focused
+    $("join-login-field").hidden = false;
+    $("join-login").required = true;
+    if (!asking || !login) $("join-login-help").textContent = r.data.detail;
+    $("join-status").textContent = r.data.detail;
+    $("join-login").focus();
+    return;
   }
   if (r.status !== 200) {
     $("join-status").textContent = r.data?.detail || `Not joined (${r.status}).`;
