@@ -23,7 +23,7 @@ def upgrade() -> None:
 
 
 def downgrade() -> None:
-    with op.batch_alter_table("students") as batch:
-        batch.drop_column("login")
-    with op.batch_alter_table("classes") as batch:
-        batch.drop_column("login_column")
+    # in place (SQLite 3.35+ and PostgreSQL): a batch copy would drop the table, and SQLite's foreign keys would
+    # delete every row that refers to it (a class's students, assignments and answers) with it
+    op.execute("ALTER TABLE students DROP COLUMN login")
+    op.execute("ALTER TABLE classes DROP COLUMN login_column")
