@@ -323,7 +323,7 @@ $("join-form").addEventListener("submit", async (event) => {
   const asking = !$("join-login-field").hidden;
   const login = $("join-login").value.trim();
   if (asking && !login) {
-    $("join-status").textContent = $("join-login-help").textContent;
+    $("join-status").textContent = "Type your institution login above first: this class asks for it.";
     $("join-login").focus();
     return;
   }
@@ -353,9 +353,9 @@ $("join-form").addEventListener("submit", async (event) => {
     }
     // the class asks for it (or it is not one): the field is shown, said what to type, and focused
     $("join-login-field").hidden = false;
-    $("join-login").required = true;
-    if (!asking || !login) $("join-login-help").textContent = r.data.detail;
-    $("join-status").textContent = r.data.detail;
+    // what to type is said under the field; the status line says what to do next (or what is wrong with it)
+    if (!asking) $("join-login-help").textContent = r.data.detail;
+    $("join-status").textContent = asking ? r.data.detail : "Type your institution login above, then press Join again.";
     $("join-login").focus();
     return;
   }

@@ -48,12 +48,18 @@ def test_the_join_form_asks_for_the_login_the_class_asks_for(browser, live_serve
     page.wait_for_selector("#join-login-field:not([hidden])")
     said = ("This class asks for your institution login (the SIS Login ID Canvas knows you by): type it as you sign "
             "in there.")
-    assert page.locator("#join-login-help").inner_text() == said and page.locator("#join-status").inner_text() == said
+    assert page.locator("#join-login-help").inner_text() == said
+    assert page.locator("#join-status").inner_text() == "Type your institution login above, then press Join again."
     assert page.evaluate("document.activeElement.id") == "join-login"
     page.screenshot(path=artifacts / "join-login-asked-390.png")
-    # pressed again empty: said again, nothing sent
+    # pressed again empty: said, nothing sent
     page.click("#join-form button[type=submit]")
-    assert page.locator("#join-status").inner_text() == said
+    assert page.locator("#join-status").inner_text() == "Type your institution login above first: this class asks for it."
+    # a login that is no login: what is wrong, from the server
+    page.evaluate("document.getElementById('join-login').value = 'ada' + String.fromCharCode(7) + 'x'")
+    page.click("#join-form button[type=submit]")
+    page.wait_for_function("document.getElementById('join-status').textContent.includes('without control characters')")
+    assert page.locator("#join-login-help").inner_text() == said
     page.fill("#join-login", "alovelace")
     page.click("#join-form button[type=submit]")
     page.wait_for_selector("#join-recovery:not([hidden])")
