@@ -10,9 +10,9 @@ import sympy as sp
 
 from app.engine.check import allowed_names, conserved_momenta, exercises, problem
 from app.engine.check_problem import asked_equilibrium, has_springs, where_asked
-from app.engine.equilibria_notes import equilibria_notes
 from app.engine.constraints import AXES
 from app.engine.derive import Derivation
+from app.engine.equilibria_notes import equilibria_notes
 from app.engine.mistake_positions import body_name, component_keys
 from app.engine.mistakes import POINTERS, without_springs
 from app.engine.report import Printer, display
@@ -32,19 +32,20 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
             latex = rf"\omega^2 = {pr.tex(shown[0])}\ \text{{at}}\ {_where_tex(d, pr)}"
         else:
             latex = f"{_lhs(step, name, pr, d)} = {pr.tex(shown[0])}"
+        answer: dict[str, Any] = {"sympy": sp.sstr(shown[0]), "latex": latex}
+        if step == "omega_squared":
+            # whether the equilibrium is stable, and where the others are, exist and are stable (sentences that wrap)
+            answer["notes"] = equilibria_notes(d)
         item = {
             "step": step,
             "coordinate": name,
             "title": f"Position: {pb.label}" if step == "position" else _title(_about(d, step, pb.label)),
             "lhs": _lhs(step, name, pr, d),
             "names": allowed_names(step, pb.kinds),
-            "answer": {"sympy": sp.sstr(shown[0]), "latex": latex},
+            "answer": answer,
         }
         if step == "position":
             item["note"] = POSITION_NOTE
-        if step == "omega_squared":
-            # whether the equilibrium is stable, and where the others are, exist and are stable (sentences that wrap)
-            item["answer"]["notes"] = equilibria_notes(d)
         items.append(item)
     symbols = {
         s.name: pr.tex(s) for s in (*d.table.q, *d.table.qd, *d.table.qdd, *d.table.params, *conserved_momenta(d))

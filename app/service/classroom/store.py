@@ -20,8 +20,8 @@ from sqlalchemy.exc import IntegrityError
 
 from app.errors import Refused, UnknownAssignment, UnknownClass, WrongKey
 from app.service.classroom import keys
-from app.service.classroom.logins import checked_login
 from app.service.classroom.database import Database, delete_class, now
+from app.service.classroom.logins import checked_login
 from app.service.classroom.models import (
     AssignmentRow,
     AttemptRow,
