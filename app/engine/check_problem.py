@@ -76,7 +76,12 @@ def _inverse(position: sp.Expr) -> bool:
 
 def where_asked(d: Derivation) -> str:
     """The asked equilibrium as running text writes it: "θ = 0"."""
-    return _at(plain_name(d.reduction.coordinate), asked_equilibrium(d).position)  # type: ignore[union-attr]
+    return equilibrium_text(d, asked_equilibrium(d).position)
+
+
+def equilibrium_text(d: Derivation, position: sp.Expr) -> str:
+    """An equilibrium of the reduction's coordinate as running text writes it: "θ = π", "r⁴ = p_θ²/(mk)"."""
+    return _at(plain_name(d.reduction.coordinate), position)  # type: ignore[union-attr]
 
 
 def exercises(d: Derivation) -> list[tuple[str, str | None]]:

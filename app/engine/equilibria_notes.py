@@ -10,9 +10,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from app.engine.check_problem import asked_equilibrium
+from app.engine.check_problem import asked_equilibrium, equilibrium_text, where_asked
 from app.engine.derive import Derivation
-from app.engine.names import unicode
 from app.engine.reduction import Equilibrium
 from app.engine.textbook import unicode_text
 
@@ -22,8 +21,7 @@ def _condition(relation: sp.Relational) -> str:
     return f"{unicode_text(relation.lhs)} > {unicode_text(relation.rhs)}"
 
 
-def _asked(r: str, e: Equilibrium) -> str:
-    at = f"{r} = {unicode_text(e.position)}"
+def _asked(at: str, e: Equilibrium) -> str:
     if e.stable is True:
         return f"{at} is stable: ω² is positive for every value of the parameters."
     if e.stable_when is not None:
@@ -67,13 +65,13 @@ def _groups(others: list[Equilibrium]) -> list[tuple[list[sp.Expr], Equilibrium]
     return out
 
 
-def _other(r: str, positions: list[sp.Expr], e: Equilibrium) -> str:
+def _other(d: Derivation, positions: list[sp.Expr], e: Equilibrium) -> str:
     if len(positions) == 2:
         # the positive one after ±
         p = positions[0] if not positions[0].could_extract_minus_sign() else positions[1]
-        at = f"{r} = ±{unicode_text(p)}"
+        at = equilibrium_text(d, p).replace(" = ", " = ±", 1)
     else:
-        at = f"{r} = {unicode_text(positions[0])}"
+        at = equilibrium_text(d, positions[0])
     return f"{at}{_exists(e, len(positions) == 2) or ','} with ω² = {unicode_text(e.omega_squared)}{_stability(e)}"
 
 
@@ -82,12 +80,11 @@ def equilibria_notes(d: Derivation) -> list[str]:
     red = d.reduction
     if red is None or not red.equilibria:
         return []
-    r = unicode(red.coordinate)
     asked = asked_equilibrium(d)
-    notes = [_asked(r, asked)]
+    notes = [_asked(where_asked(d), asked)]
     others = _groups([e for e in red.equilibria if e is not asked])
     if others:
-        listed = "; ".join(_other(r, positions, e) for positions, e in others)
+        listed = "; ".join(_other(d, positions, e) for positions, e in others)
         notes.append(f"{'The other equilibria' if len(others) > 1 or len(others[0][0]) > 1 else 'The other equilibrium'}: "
                      f"{listed}.")
     return notes

@@ -59,3 +59,15 @@ def test_only_the_equilibrium_asked_about_is_right(client, system):
     assert "arccos(g/(Rw²))" in tilted["mistake"]["name"]
     top = check("-w**2 - g/R")
     assert top["verdict"] == "incorrect" and top["mistake"]["name"] == "ω² at the other equilibrium θ = π"
+
+
+def test_a_scene_asks_the_same_way(client):
+    # one equilibrium named in the title, the others said under the answer, as for a typed system
+    r = client.get("/api/scenes/simple-pendulum/practice")
+    assert r.status_code == 200, r.text
+    e = next(e for e in r.json()["exercises"] if e["step"] == "omega_squared")
+    assert e["title"] == "ω² of small oscillations about θ = 0"
+    assert e["answer"]["notes"] == [
+        "θ = 0 is stable: ω² is positive for every value of the parameters.",
+        "The other equilibrium: θ = π, with ω² = −g/R (never positive: unstable, no small oscillations).",
+    ]
