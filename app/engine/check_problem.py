@@ -61,6 +61,29 @@ def checkable_equilibria(d: Derivation) -> list:
     return [e for e in red.equilibria if e.stable is not False] if red is not None else []
 
 
+def asked_equilibrium(d: Derivation):
+    """The one equilibrium the ω² step asks about, named on the step ("about θ = 0"): the first not known to be
+    unstable that exists for every value of the parameters, else the first not known to be unstable.  One box, one
+    equilibrium: ω² at another one is a named mistake, not a right answer (inst-b 10 and 21)."""
+    found = checkable_equilibria(d)
+    return next((e for e in found if e.exists is None and not _inverse(e.position)), found[0])
+
+
+def _inverse(position: sp.Expr) -> bool:
+    """Whether a position is an inverse cosine or sine, which exists only for some values of the parameters."""
+    return bool(position.atoms(sp.acos, sp.asin))
+
+
+def where_asked(d: Derivation) -> str:
+    """The asked equilibrium as running text writes it: "θ = 0"."""
+    return equilibrium_text(d, asked_equilibrium(d).position)
+
+
+def equilibrium_text(d: Derivation, position: sp.Expr) -> str:
+    """An equilibrium of the reduction's coordinate as running text writes it: "θ = π", "r⁴ = p_θ²/(mk)"."""
+    return _at(plain_name(d.reduction.coordinate), position)  # type: ignore[union-attr]
+
+
 def exercises(d: Derivation) -> list[tuple[str, str | None]]:
     """The steps a student can check for this system, in the chapter's order."""
     out: list[tuple[str, str | None]] = []
@@ -167,10 +190,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
     elif step == "hamiltonian":
         truths = (d.energetics.hamiltonian,)
     else:
-        found = checkable_equilibria(d)
-        truths = tuple(e.omega_squared for e in found)
-        r = d.reduction.coordinate  # type: ignore[union-attr]
-        where = tuple(_at(plain_name(r), e.position) for e in found)
+        truths, where = (asked_equilibrium(d).omega_squared,), (where_asked(d),)
 
     momenta = conserved_momenta(d)
     kinds = name_kinds(table.names, table.parameter_names, tuple(p.name for p in momenta))

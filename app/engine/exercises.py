@@ -8,10 +8,11 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine.check import allowed_names, checkable_equilibria, conserved_momenta, exercises, problem
-from app.engine.check_problem import has_springs
+from app.engine.check import allowed_names, conserved_momenta, exercises, problem
+from app.engine.check_problem import asked_equilibrium, has_springs, where_asked
 from app.engine.constraints import AXES
 from app.engine.derive import Derivation
+from app.engine.equilibria_notes import equilibria_notes
 from app.engine.mistake_positions import body_name, component_keys
 from app.engine.mistakes import POINTERS, without_springs
 from app.engine.report import Printer, display
@@ -27,18 +28,21 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
         if step == "equation":
             latex = f"{pr.tex(shown[0])} = 0"
         elif step == "omega_squared":
-            latex = r",\quad ".join(
-                rf"\omega^2 = {pr.tex(w)}\ \text{{at}}\ {_where_tex(d, i, pr)}" for i, w in enumerate(shown)
-            )
+            # one equilibrium asked about, named in the step's title; the others are said in the notes
+            latex = rf"\omega^2 = {pr.tex(shown[0])}\ \text{{at}}\ {_where_tex(d, pr)}"
         else:
             latex = f"{_lhs(step, name, pr, d)} = {pr.tex(shown[0])}"
+        answer: dict[str, Any] = {"sympy": sp.sstr(shown[0]), "latex": latex}
+        if step == "omega_squared":
+            # whether the equilibrium is stable, and where the others are, exist and are stable (sentences that wrap)
+            answer["notes"] = equilibria_notes(d)
         item = {
             "step": step,
             "coordinate": name,
-            "title": f"Position: {pb.label}" if step == "position" else _title(pb.label),
+            "title": f"Position: {pb.label}" if step == "position" else _title(_about(d, step, pb.label)),
             "lhs": _lhs(step, name, pr, d),
             "names": allowed_names(step, pb.kinds),
-            "answer": {"sympy": sp.sstr(shown[0]), "latex": latex},
+            "answer": answer,
         }
         if step == "position":
             item["note"] = POSITION_NOTE
@@ -64,10 +68,15 @@ def _title(label: str) -> str:
     return label[0].upper() + label[1:] if label[0].isascii() else label
 
 
-def _where_tex(d: Derivation, i: int, pr: Printer) -> str:
+def _about(d: Derivation, step: str, label: str) -> str:
+    """The ω² step names the equilibrium it asks about ("ω² of small oscillations about θ = 0")."""
+    return f"{label} about {where_asked(d)}" if step == "omega_squared" else label
+
+
+def _where_tex(d: Derivation, pr: Printer) -> str:
     red = d.reduction
     r = d.table.q[d.table.names.index(red.coordinate)]  # type: ignore[union-attr]
-    return f"{pr.tex(r)} = {pr.tex(checkable_equilibria(d)[i].position)}"
+    return f"{pr.tex(r)} = {pr.tex(asked_equilibrium(d).position)}"
 
 
 def _lhs(step: str, name: str | None, pr: Printer, d: Derivation) -> str:

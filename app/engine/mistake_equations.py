@@ -39,6 +39,7 @@ from app.engine.mistake_families import (
     velocity_monomials,
 )
 from app.engine.names import unicode
+from app.engine.textbook import unicode_text
 
 
 def momentum_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
@@ -318,12 +319,13 @@ def omega_mistakes(d: Derivation, asked: list) -> Iterator[Mistake]:
     for n, e in enumerate(red.equilibria):
         if e in asked or e.omega_squared is None:
             continue
+        at = f"{r} = {unicode_text(e.position)}"  # θ = π, θ = arccos(g/(Rw²)): as the step's answer prints it
         yield Mistake(
             f"omega_squared.other_equilibrium.{n}",
             "other_equilibrium",
-            f"ω² at the other equilibrium {r} = {spoken(e.position)}",
+            f"ω² at the other equilibrium {at}",
             e.omega_squared,
-            f"ω² = U_eff″/m_eff is taken at the equilibrium asked for; {r} = {spoken(e.position)} is another one",
+            f"ω² = U_eff″/m_eff is taken at the equilibrium asked for; {at} is another one",
             e.omega_squared,
         )
 

@@ -70,7 +70,7 @@ class Mistake:
 
 _SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
 _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
-_FUNCTIONS = frozenset({"sin", "cos", "tan", "exp", "log", "sqrt", "Abs", "sinh", "cosh", "tanh", "pi"})
+_FUNCTIONS = frozenset({"sin", "cos", "tan", "arccos", "arcsin", "arctan", "exp", "log", "sqrt", "Abs", "sinh", "cosh", "tanh", "pi"})
 
 
 _GREEK = frozenset(
@@ -133,6 +133,8 @@ def spoken(expr: sp.Expr) -> str:
     text = re.sub(r"\*\*(\d+)", lambda m: m.group(1).translate(_SUPERSCRIPTS), text)
     text = re.sub(r"\*\*\(?([^()\s*]+)\)?", r"^\1", text)
     text = text.replace("*", " ").replace(" - ", " − ").replace("-", "−")
+    # arccos, not acos: an inverse function as a textbook names it
+    text = re.sub(r"\ba(cos|sin|tan)\(", r"arc\1(", text)
     return _IDENT.sub(lambda m: m.group(0) if m.group(0) in _FUNCTIONS else unicode(m.group(0)), text)
 
 

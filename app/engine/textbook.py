@@ -313,6 +313,8 @@ def normalised(
 
 
 _SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+# SymPy's names of the inverse functions, and a textbook's
+TEXTBOOK_FUNCTIONS = {"acos": "arccos", "asin": "arcsin", "atan": "arctan"}
 
 
 class _Unicode(StrPrinter):
@@ -333,9 +335,11 @@ class _Unicode(StrPrinter):
 
     def _print_Function(self, expr: sp.Function) -> str:
         (arg,) = expr.args if len(expr.args) == 1 else (None,)
+        # arccos, not acos: an inverse function as a textbook names it
+        name = TEXTBOOK_FUNCTIONS.get(expr.func.__name__, expr.func.__name__)
         if arg is not None and (arg.is_Symbol or arg.is_Number):
-            return f"{expr.func.__name__} {self._print(arg)}"
-        return f"{expr.func.__name__}({', '.join(self._print(a) for a in expr.args)})"
+            return f"{name} {self._print(arg)}"
+        return f"{name}({', '.join(self._print(a) for a in expr.args)})"
 
     def _factor(self, f: sp.Expr) -> str:
         text = self._print(f)

@@ -36,6 +36,8 @@ from app.web.schemas_classes import (
     Grades,
     Joined,
     JoinRequest,
+    LoginSet,
+    LoginSetting,
     NewAssignment,
     NewClass,
     Number,
@@ -103,7 +105,7 @@ def _json(data: Any, status: int = 200) -> JSONResponse:
 @router.post("", status_code=201, summary="Create a class", response_model=ClassCreated,
              responses=_errors(400, 413, 422))
 async def create_class(classes: ClassroomDep, body: NewClass) -> JSONResponse:
-    created = await classes.create(body.title)
+    created = await classes.create(body.title, body.login_column)
     response = _json(created, 201)
     response.headers["Location"] = f"/api/classes/{created['code']}/summary"  # the class, as its instructor reads it
     return response
@@ -116,7 +118,7 @@ async def create_class(classes: ClassroomDep, body: NewClass) -> JSONResponse:
     responses={404: {"model": Problem, "description": "No class has this code."}, **_errors(400, 413, 422, 429)},
 )
 async def join_class(classes: ClassroomDep, client: ClientDep, code: str, body: JoinRequest) -> Response:
-    return client.keep(_json(await classes.join(code, body.name, client.key, client.address)))
+    return client.keep(_json(await classes.join(code, body.name, client.key, client.address, body.login)))
 
 
 @router.post(
@@ -190,6 +192,14 @@ async def recover_class(classes: ClassroomDep, client: ClientDep, code: str, bod
 async def show_step(classes: ClassroomDep, code: str, key: KeyDep, body: ShowStep) -> JSONResponse:
     target = {"scene": body.scene, "system": body.system, "assignment": body.assignment}
     return _json(await classes.show_step(code, key, target, body.step, body.coordinate))
+
+
+@router.put("/{code}/login", summary="Ask students for their institution login, or not",
+            description="With the instructor's key: from now on the join form asks for the students' institution "
+            "login under this header (the grades file's first column), or for none (null). Logins already given are "
+            "kept.", response_model=LoginSet, responses=_errors(400, 401, 403, 413, 422))
+async def set_login_column(classes: ClassroomDep, code: str, key: KeyDep, body: LoginSetting) -> JSONResponse:
+    return _json(await classes.set_login_column(code, key, body.login_column))
 
 
 @router.put("/{code}/assignment", summary="Set the first assignment's items",

@@ -141,13 +141,20 @@ class CheckResponse(BaseModel):
     )
 
 
+class ExerciseAnswer(ExprPair):
+    notes: list[str] | None = Field(
+        None, description="For ω²: sentences under the formula, whether the equilibrium asked about is stable (or "
+        "while what holds) and the other equilibria, where each exists and whether it is stable."
+    )
+
+
 class Exercise(BaseModel):
     step: str
     coordinate: str | None
     title: str
     lhs: str = Field(description="LaTeX of what the answer stands for (T, p_θ, θ̈; 0 for an equation).")
     names: list[str] = Field(description="The names the answer may use.")
-    answer: ExprPair = Field(description="The engine's step (to reveal on request).")
+    answer: ExerciseAnswer = Field(description="The engine's step (to reveal on request).")
     note: str | None = Field(
         None, description="For a position: the axes and origin it is judged against, in a sentence for the student."
     )

@@ -10,6 +10,7 @@ from typing import Annotated, Any
 
 from pydantic import AwareDatetime, BaseModel, ConfigDict, Field, StringConstraints
 
+from app.service.classroom.logins import LoginColumn
 from app.service.classroom.setup import MAX_SETUP
 from app.service.classroom.store import MAX_ASSIGNMENTS
 from app.web.schemas_check import CheckRequest, Step
@@ -24,9 +25,27 @@ AttemptId = Annotated[str, Field(min_length=8, max_length=64, pattern=r"^[A-Za-z
 Number = Annotated[int, Field(ge=1, le=MAX_ASSIGNMENTS, description="An assignment's number in the series (1: first).")]
 
 
+LOGIN_COLUMN = (
+    "Ask students for their institution login at joining, under the header the LMS matches grades by: Canvas's "
+    "`SIS Login ID`, Moodle's `username`, or `Login`; null (the default): ask for none."
+)
+
+
 class NewClass(BaseModel):
-    model_config = ConfigDict(**STRICT, json_schema_extra={"example": {"title": "Mechanics II, Tuesday"}})
+    model_config = ConfigDict(**STRICT, json_schema_extra={"example": {"title": "Mechanics II, Tuesday",
+                                                                       "login_column": "SIS Login ID"}})
     title: Title
+    login_column: LoginColumn | None = Field(None, description=LOGIN_COLUMN)
+
+
+class LoginSetting(BaseModel):
+    model_config = ConfigDict(**STRICT, json_schema_extra={"example": {"login_column": "username"}})
+    login_column: LoginColumn | None = Field(description=LOGIN_COLUMN)
+
+
+class LoginSet(BaseModel):
+    code: str
+    login_column: LoginColumn | None
 
 
 class ClassCreated(BaseModel):
@@ -56,6 +75,11 @@ class Recovered(BaseModel):
 class JoinRequest(BaseModel):
     model_config = ConfigDict(**STRICT, json_schema_extra={"example": {"name": "Ada"}})
     name: Pseudonym = Field(description="A pseudonym, unique in the class; no account, no e-mail.")
+    # bounded here only as a body's size; what a login may be is said by the service (app/service/classroom/logins.py)
+    login: str | None = Field(
+        None, max_length=1000, description="The student's institution login (at most 64 characters, one line): "
+        "required when the class asks for it (`login_column`), refused when it does not."
+    )
 
 
 class RejoinRequest(BaseModel):
@@ -186,11 +210,13 @@ class Grade(BaseModel):
 
 class StudentGrades(BaseModel):
     name: str
+    login: str | None = Field(None, description="Their institution login, when the class asks for it.")
     grades: list[Grade]
 
 
 class Grades(BaseModel):
     points: int = Field(description="What an assignment's score is out of.")
+    login_column: str | None = Field(None, description="The header of the institution login the class asks for.")
     assignments: list[dict[str, Any]] = Field(description="The series: `n`, `title`, `due`, `steps`.")
     students: list[StudentGrades]
 
@@ -277,6 +303,7 @@ class StudentStep(BaseModel):
 
 class StudentProgress(BaseModel):
     name: str
+    login: str | None = Field(None, description="Their institution login, when the class asks for it.")
     joined: str
     attempts: int = Field(description="Every answer the student sent, those not read included.")
     not_read: int = Field(0, description="Of them, answers the checker could not read (never counted wrong).")
@@ -299,6 +326,9 @@ class Joined(BaseModel):
     code: str
     title: str
     name: str
+    login_column: str | None = Field(None, description="The header of the institution login the class asks for.")
+    login: str | None = Field(None, description="The student's institution login as given at joining (kept on "
+                              "another device).")
     assignment: list[dict[str, Any]]
 
 

@@ -164,7 +164,9 @@ function stepView(a, item, practice, s, index) {
         verdictView(box, r);
         return;
       }
-      shown.replaceChildren(el("p", { className: "help", text: "The step, derived:" }), typeset(el("div"), exercise.answer.latex, true));
+      // ω²'s answer names its equilibrium; its notes (stability, the other equilibria) are sentences that wrap
+      shown.replaceChildren(el("p", { className: "help", text: "The step, derived:" }), typeset(el("div"), exercise.answer.latex, true),
+        ...(exercise.answer.notes || []).map((note) => el("p", { className: "join-step-note", text: note })));
     }
     shown.hidden = !shown.hidden;
     reveal.setAttribute("aria-expanded", String(!shown.hidden));
@@ -317,13 +319,21 @@ $("join-form").addEventListener("submit", async (event) => {
     $("join-name").focus();
     return;
   }
+  // the institution login, once the class has asked for it (the server says so at the first press of Join)
+  const asking = !$("join-login-field").hidden;
+  const login = $("join-login").value.trim();
+  if (asking && !login) {
+    $("join-status").textContent = "Type your institution login above first: this class asks for it.";
+    $("join-login").focus();
+    return;
+  }
   button.disabled = true;
   $("join-status").textContent = "Joining…";
   let r;
   try {
     // a 429 or 503 (many joining at once) is tried again after the Retry-After the server gives, shown counting down
     for (let attempt = 1; ; attempt++) {
-      r = await api("POST", `/api/classes/${encodeURIComponent(code)}/join`, { body: { name } });
+      r = await api("POST", `/api/classes/${encodeURIComponent(code)}/join`, { body: { name, ...(asking ? { login } : {}) } });
       if ((r.status !== 429 && r.status !== 503) || attempt >= JOIN_TRIES) break;
       await waitShown(Math.max(1, r.retryAfter || 2), r.status === 429 ? "Many are joining at once." : "The server is busy.");
     }
@@ -332,6 +342,22 @@ $("join-form").addEventListener("submit", async (event) => {
     return;
   } finally {
     button.disabled = false;
+  }
+  if (r.status === 422 && r.data?.loc?.[1] === "login") {
+    if (asking && String(r.data.detail).startsWith("This class does not ask")) {
+      // another class's code, which asks for none: the field goes, and the join is sent again without it
+      $("join-login-field").hidden = true;
+      $("join-login").value = "";
+      $("join-form").requestSubmit();
+      return;
+    }
+    // the class asks for it (or it is not one): the field is shown, said what to type, and focused
+    $("join-login-field").hidden = false;
+    // what to type is said under the field; the status line says what to do next (or what is wrong with it)
+    if (!asking) $("join-login-help").textContent = r.data.detail;
+    $("join-status").textContent = asking ? r.data.detail : "Type your institution login above, then press Join again.";
+    $("join-login").focus();
+    return;
   }
   if (r.status !== 200) {
     $("join-status").textContent = r.data?.detail || `Not joined (${r.status}).`;

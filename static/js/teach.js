@@ -85,6 +85,8 @@ function show() {
   }
 }
 
+let loginColumn = null; // the institution login the open class asks its students for ("SIS Login ID", …; null: none)
+
 async function open(code, key) {
   let r;
   try {
@@ -99,6 +101,8 @@ async function open(code, key) {
     return r.status === 403 || r.status === 200 ? "refused" : "error";
   }
   current = { code: r.data.code, key, title: r.data.title };
+  loginColumn = r.data.login_column || null;
+  $("class-login").value = loginColumn || "";
   memory.set(current);
   useSeries(r.data.assignments);
   show();
@@ -127,7 +131,8 @@ $("create-form").addEventListener("submit", async (event) => {
     $("create-title").focus();
     return;
   }
-  const r = await api("POST", "/api/classes", { body: { title } });
+  // the institution login students are asked for, under the header the LMS matches grades by (none: "")
+  const r = await api("POST", "/api/classes", { body: { title, login_column: $("create-login").value || null } });
   if (r.status !== 201) {
     const found = refusal(r, "create-status");
     $("create-status").textContent = r.status === 422 && found.at === "assign-status" ? NO_TITLE : found.text;
@@ -413,8 +418,10 @@ async function drawStudents(students) {
       cell.append(typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` }),
         el("span", { text: last.done ? " ✓ done" : " · not yet right" }));
     } else cell.textContent = "—";
+    // the institution login, on a line of its own under the pseudonym, when the class asks for it
+    const login = loginColumn ? el("span", { className: "dash-login", text: `${loginColumn}: ${s.login || "none given"}` }) : "";
     rows.push(el("tr", { "data-student": s.name },
-      el("th", { scope: "row" }, s.name, " ", codeButton(s.name)),
+      el("th", { scope: "row" }, s.name, " ", codeButton(s.name), login),
       el("td", { text: s.assigned ? `${s.done} of ${s.assigned}` : String(s.done) }),
       // every answer sent, those the checker could not read said apart (they are never counted wrong)
       el("td", { text: s.not_read ? `${s.attempts} (${s.not_read} not read)` : String(s.attempts) }),
@@ -816,4 +823,20 @@ if (fragment.get("class") && fragment.get("recover")) {
 // read it as a fresh load would (inst-b 18: after a cut link, the whole one pasted here did nothing)
 window.addEventListener("hashchange", () => {
   if (new URLSearchParams(window.location.hash.slice(1)).get("class")) window.location.reload();
+});
+
+// the institution login asked at joining, changed for the open class (PUT …/login); the grades file follows
+$("class-login").addEventListener("change", async () => {
+  const column = $("class-login").value || null;
+  const r = await api("PUT", `/api/classes/${current.code}/login`, { key: current.key, body: { login_column: column } });
+  if (r.status !== 200) {
+    $("class-login").value = loginColumn || "";
+    $("data-status").textContent = r.data?.detail || `Not changed (${r.status}).`;
+    return;
+  }
+  loginColumn = r.data.login_column;
+  $("data-status").textContent = loginColumn
+    ? `Students joining from now on are asked for their institution login (“${loginColumn}” in the grades file).`
+    : "Students are no longer asked for an institution login.";
+  poll();
 });

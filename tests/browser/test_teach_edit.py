@@ -41,7 +41,7 @@ def test_an_assignment_is_edited_and_keeps_its_answers(browser, live_server, cla
     page.wait_for_selector('#assign-scenes input[data-scene="simple-pendulum"] ~ .assign-steps input[data-step="kinetic"]')
     # the steps in words, as the student reads them; the one assigned ticked
     labels = steps.locator("label").all_inner_texts()
-    assert "Energy function h" in labels and "ω² of small oscillations" in labels, labels
+    assert "Energy function h" in labels and "ω² of small oscillations about θ = 0" in labels, labels
     assert steps.locator('input[data-step="kinetic"]').is_checked()
     assert not steps.locator('input[data-step="potential"]').is_checked()
 

@@ -26,6 +26,7 @@ from __future__ import annotations
 import csv
 import io
 from collections import defaultdict
+from collections.abc import Callable
 from datetime import UTC, datetime
 from typing import Any
 
@@ -45,19 +46,19 @@ def _rows(db: Database, class_id: int) -> list[Any]:
     and step shown: when.  One statement, one snapshot."""
     right = AttemptRow.verdict.in_(DONE)
     answers = (
-        select(StudentRow.id, StudentRow.name, StudentRow.joined_at, AttemptRow.assignment_id, AttemptRow.item,
-               AttemptRow.step, func.coalesce(AttemptRow.coordinate, ""), literal("answer"),
+        select(StudentRow.id, StudentRow.name, StudentRow.joined_at, StudentRow.login, AttemptRow.assignment_id,
+               AttemptRow.item, AttemptRow.step, func.coalesce(AttemptRow.coordinate, ""), literal("answer"),
                func.min(AttemptRow.id), func.min(case((right, AttemptRow.id))), func.min(case((right, AttemptRow.at))))
         .select_from(StudentRow)
         # an answer not read was never judged: neither a try nor a wrong answer in the gradebook
         .outerjoin(AttemptRow, (AttemptRow.student_id == StudentRow.id) & (AttemptRow.verdict != NOT_READ))
         .where(StudentRow.class_id == class_id)
-        .group_by(StudentRow.id, StudentRow.name, StudentRow.joined_at, AttemptRow.assignment_id, AttemptRow.item,
-                  AttemptRow.step, AttemptRow.coordinate)
+        .group_by(StudentRow.id, StudentRow.name, StudentRow.joined_at, StudentRow.login, AttemptRow.assignment_id,
+                  AttemptRow.item, AttemptRow.step, AttemptRow.coordinate)
     )
     shown = (
-        select(StudentRow.id, StudentRow.name, StudentRow.joined_at, HintRow.assignment_id, HintRow.item,
-               HintRow.step, HintRow.coordinate, literal("shown"), null(), null(), HintRow.at)
+        select(StudentRow.id, StudentRow.name, StudentRow.joined_at, StudentRow.login, HintRow.assignment_id,
+               HintRow.item, HintRow.step, HintRow.coordinate, literal("shown"), null(), null(), HintRow.at)
         .join(StudentRow, StudentRow.id == HintRow.student_id)
         .where(HintRow.class_id == class_id)
     )
@@ -65,14 +66,17 @@ def _rows(db: Database, class_id: int) -> list[Any]:
         return list(session.execute(union_all(answers, shown)).all())
 
 
-def gradebook(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[str, Any]:
-    """``{"assignments": [{"n", "title", "due", "steps"}], "students": [{"name", "grades": [{"assignment",
-    "steps", "first_try", "right", "shown", "score"}]}]}``, students in the order they joined."""
-    people: dict[int, tuple[str, Any]] = {}
+def gradebook(db: Database, class_id: int, series: list[dict[str, Any]], login_column: str | None = None) -> dict[str, Any]:
+    """``{"login_column", "assignments": [{"n", "title", "due", "steps"}], "students": [{"name", "login", "grades":
+    [{"assignment", "steps", "first_try", "right", "shown", "score"}]}]}``, students in the order they joined;
+    ``login_column`` is the header of the institution login the class asks for (None: it does not)."""
+    people: dict[int, tuple[str, Any, str | None]] = {}
     first: dict[tuple, tuple[int | None, int | None, Any]] = {}  # (student, key): first id, first right id, its time
     shown_at: dict[tuple, Any] = {}
-    for student, name, joined, assignment_id, item, step, coordinate, kind, first_id, right_id, at in _rows(db, class_id):
-        people[student] = (name, joined)
+    for student, name, joined, login, assignment_id, item, step, coordinate, kind, first_id, right_id, at in (
+        _rows(db, class_id)
+    ):
+        people[student] = (name, joined, login)
         if item is None:  # a student with no answer yet
             continue
         key = (student, (assignment_id, item, step, coordinate or None))
@@ -83,7 +87,7 @@ def gradebook(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict
     now = datetime.now(UTC).replace(tzinfo=None)  # due times are stored naive, in UTC
     heads = [{"n": a["n"], "title": a["title"], "due": a["due"], "steps": len(assigned_keys([a]))} for a in series]
     rows = []
-    for student, (name, _joined) in sorted(people.items(), key=lambda p: (p[1][1], p[0])):
+    for student, (name, _joined, login) in sorted(people.items(), key=lambda p: (p[1][1], p[0])):
         grades = []
         for each, head in zip(series, heads, strict=True):
             count: defaultdict[str, int] = defaultdict(int)
@@ -104,8 +108,8 @@ def gradebook(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict
                 score = None
             grades.append({"assignment": head["n"], "steps": head["steps"], "first_try": count["first_try"],
                            "right": count["right"], "shown": count["shown"], "score": score})
-        rows.append({"name": name, "grades": grades})
-    return {"points": POINTS, "assignments": heads, "students": rows}
+        rows.append({"name": name, "login": login, "grades": grades})
+    return {"points": POINTS, "login_column": login_column, "assignments": heads, "students": rows}
 
 
 def _cell(value: Any) -> str:
@@ -123,20 +127,32 @@ def _sheet(header: list[str], rows: list[list[Any]]) -> bytes:
     return out.getvalue().encode("utf-8")
 
 
+def _who(book: dict[str, Any]) -> tuple[list[str], Callable[[dict[str, Any]], list[Any]]]:
+    """The columns naming a student: the institution login first, under the header its LMS matches rows by
+    ("SIS Login ID" for Canvas, "username" for Moodle), when the class asks for it; then the pseudonym."""
+    column = book.get("login_column")
+    if column is None:
+        return ["Student"], lambda s: [s["name"]]
+    return [column, "Student"], lambda s: [s.get("login"), s["name"]]
+
+
 def gradebook_csv(book: dict[str, Any]) -> bytes:
-    """The file to import: one row per student, one column per assignment (its score out of ``POINTS``, blank
-    when there is none yet) and nothing else, so an LMS's import makes one grade item per assignment."""
+    """The file to import: one row per student, keyed by their institution login when the class asks for it, one
+    column per assignment (its score out of ``POINTS``, blank when there is none yet) and nothing else, so an
+    LMS's import makes one grade item per assignment."""
     titles = [f"{a['n']}. {a['title']}" for a in book["assignments"]]
-    header = ["Student", *(f"{t} ({book['points']} points)" for t in titles)]
-    return _sheet(header, [[s["name"], *(g["score"] for g in s["grades"])] for s in book["students"]])
+    heads, who = _who(book)
+    header = [*heads, *(f"{t} ({book['points']} points)" for t in titles)]
+    return _sheet(header, [[*who(s), *(g["score"] for g in s["grades"])] for s in book["students"]])
 
 
 def gradebook_details_csv(book: dict[str, Any]) -> bytes:
     """The detailed file: per student and assignment its score, then the parts it comes from."""
     titles = [f"{a['n']}. {a['title']}" for a in book["assignments"]]
-    header = ["Student"]
+    heads, who = _who(book)
+    header = list(heads)
     for t in titles:
         header += [f"{t} ({book['points']} points)", *(f"{t}: {words}" for _part, words in PARTS)]
-    rows = [[s["name"], *(value for g in s["grades"] for value in (g["score"], *(g[p] for p, _w in PARTS)))]
+    rows = [[*who(s), *(value for g in s["grades"] for value in (g["score"], *(g[p] for p, _w in PARTS)))]
             for s in book["students"]]
     return _sheet(header, rows)

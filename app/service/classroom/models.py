@@ -9,7 +9,8 @@ item and step, the verdict, the named mistake when the checker found one, the
 answer's text and when, and, when the page sent one, the attempt's id (unique
 per student: a retry records nothing new) with the verdict it was answered, and the assignment it was for.
 A hint is a step's answer shown to a student ("Show this step"), once per student, assignment and step.
-A class's recovery code (shown once at creation) is kept as its SHA-256 only.  Times are naive UTC.
+A class's recovery code (shown once at creation) is kept as its SHA-256 only.  A class may ask its students for their
+institution login (``login_column``: the header the LMS matches grades by), kept beside the pseudonym.  Times are naive UTC.
 """
 
 from __future__ import annotations
@@ -34,6 +35,9 @@ class ClassRow(Base):
     created_at: Mapped[datetime] = mapped_column(DateTime, index=True)
     # the recovery code's SHA-256 (classes created before migration 0005 have none)
     recovery_hash: Mapped[str | None] = mapped_column(String(64), nullable=True)
+    # the header of the institution login students give at joining ("SIS Login ID", "username", "Login"; None: not
+    # asked), for the grades to import into an LMS (migration 0008)
+    login_column: Mapped[str | None] = mapped_column(String(20), nullable=True)
 
 
 class ClassAssignmentRow(Base):
@@ -58,6 +62,8 @@ class StudentRow(Base):
     joined_at: Mapped[datetime] = mapped_column(DateTime)
     # the SHA-256 of the student's recovery code (migration 0007; None: joined before, or no code given yet)
     recovery_hash: Mapped[str | None] = mapped_column(String(64), nullable=True)
+    # the student's institution login, when their class asks for it (migration 0008)
+    login: Mapped[str | None] = mapped_column(String(64), nullable=True)
 
 
 class AssignmentRow(Base):

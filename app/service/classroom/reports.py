@@ -73,7 +73,7 @@ def _step_entry(key: Key, series: list[dict[str, Any]]) -> dict[str, Any]:
 def _tallies(db: Database, class_id: int) -> list[Any]:
     """The class in one statement, so in one snapshot of the database: per student (every student, those who
     have not answered yet with empty columns) and per item, step, coordinate, verdict and named mistake, how many
-    answers, the mistake's words and the last answer's time.
+    answers, the mistake's words and the last answer's time (and the student's institution login, last).
 
     One SELECT reads one consistent state on SQLite and on PostgreSQL alike (two statements in READ COMMITTED,
     or in SQLite's autocommit reads, may each see a different state while answers arrive)."""
@@ -81,7 +81,8 @@ def _tallies(db: Database, class_id: int) -> list[Any]:
         return list(session.execute(
             select(StudentRow.id, StudentRow.name, StudentRow.joined_at, AttemptRow.assignment_id, AttemptRow.item,
                    AttemptRow.step, AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake,
-                   func.count(AttemptRow.id), func.max(AttemptRow.mistake_name), func.max(AttemptRow.at))
+                   func.count(AttemptRow.id), func.max(AttemptRow.mistake_name), func.max(AttemptRow.at),
+                   func.max(StudentRow.login))  # one per student: the institution login, when the class asks for it
             .select_from(StudentRow)
             .outerjoin(AttemptRow, AttemptRow.student_id == StudentRow.id)
             .where(StudentRow.class_id == class_id)
@@ -125,7 +126,7 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
     finished: dict[Key, set[int]] = defaultdict(set)
     by_mistake: dict[Key, dict[str, set[int]]] = defaultdict(lambda: defaultdict(set))
     attempts = 0
-    for student_id, _name, _joined, assignment_id, item, step, coordinate, verdict, mistake, n, text, _last in rows:
+    for student_id, _name, _joined, assignment_id, item, step, coordinate, verdict, mistake, n, text, _last, _login in rows:
         if item is None:  # a student who has not answered yet
             continue
         key = (assignment_id, item, step, coordinate)
@@ -167,13 +168,13 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
 def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[str, Any]:
     """Each student's progress (from one snapshot): attempts, steps done of the series', and per step tried its
     tally (with its assignment's number)."""
-    people: dict[int, tuple[str, Any]] = {}
+    people: dict[int, tuple[str, Any, str | None]] = {}
     per: dict[int, dict[Key, dict[str, Any]]] = defaultdict(dict)
     number = {a["id"]: a["n"] for a in series}
-    for student_id, name, joined, assignment_id, item, step, coordinate, verdict, _mistake, n, _text, last in (
+    for student_id, name, joined, assignment_id, item, step, coordinate, verdict, _mistake, n, _text, last, login in (
         _tallies(db, class_id)
     ):
-        people[student_id] = (name, joined)
+        people[student_id] = (name, joined, login)
         if item is None:
             continue
         tally = per[student_id].setdefault((assignment_id, item, step, coordinate), {
@@ -185,12 +186,13 @@ def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[
         tally["last"] = max(tally["last"], last)
     assigned = set(assigned_keys(series))
     rows = []
-    for student_id, (name, joined) in sorted(people.items(), key=lambda p: (p[1][1], p[0])):
+    for student_id, (name, joined, login) in sorted(people.items(), key=lambda p: (p[1][1], p[0])):
         tallies = list(per.get(student_id, {}).values())
         finished = {t["_key"] for t in tallies if t["done"]}
         steps = [{k: v for k, v in t.items() if k != "_key"} | {"last": t["last"].isoformat() + "Z"} for t in tallies]
         rows.append({
             "name": name,
+            "login": login,  # their institution login (None: the class does not ask, or they joined before it did)
             "joined": joined.isoformat() + "Z",
             "attempts": sum(s["attempts"] for s in steps),
             "not_read": sum(s["not_read"] for s in steps),

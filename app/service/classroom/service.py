@@ -127,8 +127,8 @@ class Classroom:
         return who, store.series(db, who.class_id)
 
     # ---- instructor ----------------------------------------------------------------------------
-    async def create(self, title: str) -> dict[str, str]:
-        code, teacher_key, recovery = await self._db(store.create_class, title)
+    async def create(self, title: str, login_column: str | None = None) -> dict[str, str]:
+        code, teacher_key, recovery = await self._db(store.create_class, title, login_column)
         # the teacher link carries the recovery code in its fragment: a browser never sends a fragment to a server
         return {"code": code, "teacher_key": teacher_key, "recovery_code": recovery,
                 "teacher_link": f"/teach#class={code}&recover={recovery}"}
@@ -138,6 +138,12 @@ class Classroom:
         await self._count_join(code, client, address)
         who, teacher_key = await self._db(store.recover, code, recovery)
         return {"code": who.code, "title": who.title, "teacher_key": teacher_key}
+
+    async def set_login_column(self, code: str, key: str | None, column: str | None) -> dict[str, Any]:
+        """Ask the class's students for their institution login under ``column`` from now on (None: not)."""
+        who = await self._db(self._who, code, key, True)
+        await self._db(store.set_login_column, who.class_id, column)
+        return {"code": who.code, "login_column": column}
 
     async def assign(self, code: str, key: str | None, items: list[dict[str, Any]]) -> dict[str, Any]:
         """Set the items of the first assignment of the series (the single assignment of before)."""
@@ -178,7 +184,11 @@ class Classroom:
         return report(db, who.class_id, found)
 
     async def grades(self, code: str, key: str | None) -> dict[str, Any]:
-        return await self._db(self._report, code, key, grades.gradebook)
+        def read(db: Database) -> dict[str, Any]:
+            who, found = self._with_series(db, code, key, True)
+            return grades.gradebook(db, who.class_id, found, who.login_column)
+
+        return await self._db(read)
 
     async def grades_csv(self, code: str, key: str | None, details: bool = False) -> bytes:
         book = await self.grades(code, key)
@@ -208,9 +218,9 @@ class Classroom:
             await self.client_joins.take(client)
         await self.class_joins.take(keys.normal_code(code) or "?")
 
-    async def join(self, code: str, name: str, client: str, address: str) -> dict[str, Any]:
+    async def join(self, code: str, name: str, client: str, address: str, login: str | None = None) -> dict[str, Any]:
         await self._count_join(code, client, address)
-        student_key, who, recovery = await self._db(store.join, code, name)
+        student_key, who, recovery = await self._db(store.join, code, name, login)
         return await self._joined(student_key, who, name) | {"recovery_code": recovery}
 
     async def rejoin(self, code: str, name: str, recovery: str, client: str, address: str) -> dict[str, Any]:
@@ -222,6 +232,7 @@ class Classroom:
     async def _joined(self, student_key: str, who: store.Access, name: str) -> dict[str, Any]:
         found = await self._db(store.series, who.class_id)
         return {"student_key": student_key, "code": who.code, "title": who.title, "name": name,
+                "login_column": who.login_column, "login": who.login,
                 "assignment": found[0]["items"] if found else [], "assignments": public(found)}
 
     async def new_student_code(self, code: str, key: str | None, name: str) -> dict[str, str]:
@@ -237,7 +248,7 @@ class Classroom:
         def read(db: Database) -> dict[str, Any]:
             who = store.access(db, code, key)
             found = store.series(db, who.class_id)
-            seen: dict[str, Any] = {"code": who.code, "title": who.title,
+            seen: dict[str, Any] = {"code": who.code, "title": who.title, "login_column": who.login_column,
                                     "assignment": found[0]["items"] if found else [], "assignments": public(found)}
             if who.teacher:
                 return seen | {"role": "instructor"}

@@ -21,6 +21,7 @@ from sqlalchemy.exc import IntegrityError
 from app.errors import Refused, UnknownAssignment, UnknownClass, WrongKey
 from app.service.classroom import keys
 from app.service.classroom.database import Database, delete_class, now
+from app.service.classroom.logins import checked_login
 from app.service.classroom.models import (
     AssignmentRow,
     AttemptRow,
@@ -47,14 +48,17 @@ class Access:
     title: str
     student: int | None = None
     name: str | None = None
+    login_column: str | None = None  # the institution login the class asks its students for (None: none)
+    login: str | None = None  # a student's own institution login, when they gave one
 
     @property
     def teacher(self) -> bool:
         return self.student is None
 
 
-def create_class(db: Database, title: str) -> tuple[str, str, str]:
-    """A new class: its code, its instructor's key and its recovery code (the only time either is seen).
+def create_class(db: Database, title: str, login_column: str | None = None) -> tuple[str, str, str]:
+    """A new class: its code, its instructor's key and its recovery code (the only time either is seen); it asks
+    its students for their institution login under ``login_column`` (None: it does not).
 
     The key is derived from the recovery code and the class code (``keys.teacher_key_from``)."""
     recovery = keys.new_recovery_code()
@@ -64,7 +68,7 @@ def create_class(db: Database, title: str) -> tuple[str, str, str]:
         try:
             with db.session() as session:
                 row = ClassRow(code=code, title=title, teacher_hash=keys.digest(teacher_key), created_at=now(),
-                               recovery_hash=keys.digest(keys.normal_recovery(recovery) or ""))
+                               recovery_hash=keys.digest(keys.normal_recovery(recovery) or ""), login_column=login_column)
                 session.add(row)
             return code, teacher_key, recovery
         except IntegrityError:
@@ -98,21 +102,23 @@ def access(db: Database, code: str, key: str) -> Access:
     normal = keys.normal_code(code) or ""
     with db.session() as session:
         found = session.execute(
-            select(ClassRow.id, ClassRow.code, ClassRow.title, ClassRow.teacher_hash).where(ClassRow.code == normal)
+            select(ClassRow.id, ClassRow.code, ClassRow.title, ClassRow.teacher_hash, ClassRow.login_column)
+            .where(ClassRow.code == normal)
         ).first()
         student = session.execute(
             select(StudentRow.id, StudentRow.class_id, StudentRow.name).where(StudentRow.key_hash == wanted)
         ).first()
     teacher = hmac.compare_digest(found.teacher_hash if found else keys.NO_CLASS_HASH, wanted)
     if found and teacher:
-        return Access(found.id, found.code, found.title)
+        return Access(found.id, found.code, found.title, login_column=found.login_column)
     if found and student and student.class_id == found.id:
-        return Access(found.id, found.code, found.title, student.id, student.name)
+        return Access(found.id, found.code, found.title, student.id, student.name, found.login_column)
     raise WrongKey("this key does not open this class (check the class code and the key)")
 
 
-def join(db: Database, code: str, name: str) -> tuple[str, Access, str]:
-    """A new student of the class: their key, the class, and their recovery code (the only time it is seen)."""
+def join(db: Database, code: str, name: str, login: str | None = None) -> tuple[str, Access, str]:
+    """A new student of the class: their key, the class, and their recovery code (the only time it is seen); their
+    institution login is required when the class asks for it, and refused when it does not."""
     normal = keys.normal_code(code)
     if normal is None:
         raise UnknownClass(
@@ -121,7 +127,7 @@ def join(db: Database, code: str, name: str) -> tuple[str, Access, str]:
     student_key = keys.new_key()
     recovery = keys.new_recovery_code(keys.STUDENT_RECOVERY_LENGTH)
     try:
-        return student_key, _add_student(db, normal, name, student_key, recovery), recovery
+        return student_key, _add_student(db, normal, name, login, student_key, recovery), recovery
     except IntegrityError:  # the same name joined at the same moment
         raise _taken(name) from None
 
@@ -144,7 +150,7 @@ def rejoin(db: Database, code: str, name: str, recovery: str) -> tuple[str, Acce
     student_key = keys.new_key()
     with db.session() as session:
         found = session.execute(
-            select(ClassRow.id, ClassRow.code, ClassRow.title, StudentRow)
+            select(ClassRow.id, ClassRow.code, ClassRow.title, ClassRow.login_column, StudentRow)
             .join(StudentRow, StudentRow.class_id == ClassRow.id)
             .where(ClassRow.code == normal, StudentRow.name == name)
         ).first()
@@ -154,7 +160,18 @@ def rejoin(db: Database, code: str, name: str, recovery: str) -> tuple[str, Acce
                            "code, your pseudonym as you typed it when you joined, and the code; or ask your teacher "
                            "for a new code)")
         found.StudentRow.key_hash = keys.digest(student_key)
-        return student_key, Access(found.id, found.code, found.title, found.StudentRow.id, name)
+        # the same record: its institution login is kept as it was given at joining
+        return student_key, Access(found.id, found.code, found.title, found.StudentRow.id, name, found.login_column,
+                                   found.StudentRow.login)
+
+
+def set_login_column(db: Database, class_id: int, column: str | None) -> None:
+    """Ask the class's students for their institution login under ``column`` from now on (None: stop asking).
+    Logins already given are kept; students who joined before it was asked have none until they join again."""
+    with db.session() as session:
+        row = session.get(ClassRow, class_id)
+        if row is not None:
+            row.login_column = column
 
 
 def new_student_code(db: Database, class_id: int, name: str) -> str:
@@ -168,21 +185,25 @@ def new_student_code(db: Database, class_id: int, name: str) -> str:
     return recovery
 
 
-def _add_student(db: Database, normal: str, name: str, student_key: str, recovery: str) -> Access:
+def _add_student(db: Database, normal: str, name: str, login: str | None, student_key: str, recovery: str) -> Access:
     with db.session() as session:
-        found = session.execute(select(ClassRow.id, ClassRow.title).where(ClassRow.code == normal)).first()
+        found = session.execute(
+            select(ClassRow.id, ClassRow.title, ClassRow.login_column).where(ClassRow.code == normal)
+        ).first()
         if found is None:
             raise UnknownClass(f"No class has the code {normal}. Check the code on the board.")
+        kept = checked_login(found.login_column, login)
         taken = session.scalar(
             select(func.count()).select_from(StudentRow).where(StudentRow.class_id == found.id, StudentRow.name == name)
         )
         if taken:
             raise _taken(name)
         student = StudentRow(class_id=found.id, name=name, key_hash=keys.digest(student_key), joined_at=now(),
-                             recovery_hash=keys.digest(keys.normal_recovery(recovery, keys.STUDENT_RECOVERY_LENGTH) or ""))
+                             recovery_hash=keys.digest(keys.normal_recovery(recovery, keys.STUDENT_RECOVERY_LENGTH) or ""),
+                             login=kept)
         session.add(student)
         session.flush()
-        return Access(found.id, normal, found.title, student.id, name)
+        return Access(found.id, normal, found.title, student.id, name, found.login_column, kept)
 
 
 def _item_rows(class_id: int, assignment_id: int, items: list[dict[str, Any]]) -> list[AssignmentRow]:

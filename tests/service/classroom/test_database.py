@@ -18,7 +18,7 @@ from app.settings import Settings
 from tests.postgres import postgres_server  # noqa: F401 - the session fixture
 
 TABLES = {"classes", "students", "assignments", "attempts", "class_assignments", "hints", "alembic_version"}
-HEAD = "0007"  # the newest revision
+HEAD = "0008"  # the newest revision
 
 
 @pytest.fixture(params=["sqlite", "postgresql"])
@@ -231,5 +231,34 @@ def test_downgrade_from_the_series_keeps_the_first_assignment(url):
         with engine.connect() as c:
             assert c.execute(text("SELECT item FROM assignments")).scalars().all() == ["scene-0"]
             assert "class_assignments" not in inspect(engine).get_table_names()
+    finally:
+        engine.dispose()
+
+
+def test_migrates_the_schema_before_logins_keeping_its_students_and_back(url):
+    engine = make_engine(url)
+    try:
+        migrate(engine, "0007")
+        with engine.begin() as c:
+            c.execute(text("INSERT INTO classes (id, code, title, teacher_hash, created_at) "
+                           "VALUES (1, 'ACEFHK', 'old', :h, :t)"), {"h": "0" * 64, "t": now()})
+            c.execute(text("INSERT INTO students (id, class_id, name, key_hash, joined_at, recovery_hash) "
+                           "VALUES (1, 1, 'Ada', :h, :t, :r)"), {"h": "1" * 64, "t": now(), "r": "2" * 64})
+        migrate(engine)
+        with engine.connect() as c:
+            # a class from before asks for no login; its students have none, and keep their recovery codes
+            assert c.execute(text("SELECT login_column FROM classes")).one() == (None,)
+            assert tuple(c.execute(text("SELECT name, login, recovery_hash FROM students")).one()) == ("Ada", None, "2" * 64)
+            assert c.execute(text("SELECT version_num FROM alembic_version")).scalar() == HEAD
+        with engine.begin() as c:
+            c.execute(text("UPDATE students SET login = 'alovelace'"))
+        with engine.begin() as c:
+            from alembic import command
+
+            from app.service.classroom.database import alembic_config
+            command.downgrade(alembic_config(c), "0007")
+        with engine.connect() as c:
+            assert c.execute(text("SELECT name FROM students")).scalars().all() == ["Ada"]
+            assert "login" not in {col["name"] for col in inspect(engine).get_columns("students")}
     finally:
         engine.dispose()
