@@ -270,7 +270,7 @@ PULLEY: dict[str, str] = {
     "derivatives:y2": "∂L/∂y₂ = M g/2 − m₂ g, the same for mass 2.",
     "euler-lagrange": "The two equations share the middle mass's inertia M/4.",
     "mass-matrix": "The mass matrix 𝓜 (M is the middle body's mass) is not diagonal: the middle mass responds to both ends.",
-    "accelerations": "Constant accelerations: every force here is a constant weight. The middle mass follows from Y = −(y₁ + y₂)/2 plus a constant: Ÿ = −(ÿ₁ + ÿ₂)/2 = g − 2 (m₁ + m₂) g/(m₁ + m₂ + 4 m₁ m₂/M).",
+    "accelerations": "Constant accelerations: every force here is a constant weight. The middle mass follows from Y = −(y₁ + y₂)/2 plus a constant: Ÿ = −(ÿ₁ + ÿ₂)/2 = [4m₁m₂ − M(m₁ + m₂)] g/[4m₁m₂ + M(m₁ + m₂)].",
     "momenta": "Each momentum includes the middle mass's share of the motion.",
     "time-dependence": "The fixed pulleys do not move, so L has no t.",
     "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
