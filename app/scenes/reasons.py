@@ -342,7 +342,7 @@ ROTATING_PARABOLA: dict[str, str] = {
     "energy-integral": "The conserved h gives ρ̇ from ρ.",
     "time-integral": "The integral gives the period of the oscillation along the wire when ω² < 2 g α.",
     "reduced-equilibria": "The bottom holds the bead with Ω² = 2 g α − ω² when that is positive (Ω, the frequency along the wire; ω is the turning rate).",
-    "equilibria": "ρ = 0 is the only equilibrium unless ω² = 2 g α, when every ρ is one. The function whose stationary points these are is U_eff, as in the effective potential above: gravity's m g α ρ² less the centrifugal ½ m ω² ρ².",
+    "equilibria": "ρ = 0 is the only equilibrium unless ω² = 2 g α, when every ρ is one. They are the stationary points of the effective potential U_eff, gravity's m g α ρ² less the centrifugal ½ m ω² ρ².",
     "normal-modes": "At the bottom the small oscillations along the wire have Ω² = 2 g α − ω².",
     "constraints": "The wire lies on the paraboloid z = α ρ² and in the plane turned by ω t.",
     "multiplier-lagrangian": "Two multipliers: λ₁ for the paraboloid, λ₂ for the turning plane; the plane's 𝒞₂ holds t.",

@@ -133,8 +133,10 @@ def test_the_symbols_table_lists_the_letters_of_the_optional_steps(client):
     assert pulley["z₃"]["meaning"] == "Cartesian z of the middle mass"
     parabola = rows("rotating-parabola")
     # ρ's unit is told from m (1 + 4α²ρ²), so the energies are in J
-    assert parabola["ρ"]["unit"] == "m" and parabola["h"]["unit"] == "J" and parabola["V"]["unit"] == "J"
+    assert parabola["ρ"]["unit"] == "m" and parabola["h"]["unit"] == "J"
     assert parabola["U_eff"]["unit"] == "J" and parabola["m_eff"]["unit"] == "kg" and "bead" in parabola["z"]["meaning"]
+    # −L at q̇ = 0 is the effective potential here: one name, U_eff, never a third letter V (prof-g 41)
+    assert "V" not in parabola
     wedge = rows("movable-incline")
     assert wedge["x₂"]["meaning"] == "Cartesian x of the block" and wedge["m_eff"]["unit"] == "kg"
     # each letter once
