@@ -600,4 +600,6 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, units
 
 def _fallback(expr: sp.Expr) -> sp.Expr:
     """The engine's own display form: sin² + cos² = 1 collapsed, then SymPy's simplification when small."""
-    return within_budget(lambda: tidy(pythagoras(expr), FALLBACK_WORK), expr, FALLBACK_WORK)
+    plain = within_budget(lambda: tidy(pythagoras(expr), FALLBACK_WORK), expr, FALLBACK_WORK)
+    # quotients as a textbook writes them here too (bounded by size: cheap)
+    return textbook_quotients(plain, moving_symbols(plain, getattr(_local, "names", None)))

@@ -29,9 +29,16 @@ def _small(expr: sp.Expr) -> bool:
     return True
 
 
-def _holds_fraction(base: sp.Expr) -> bool:
-    """A sum with a term divided by something not a number: m₁ + m₂ + 4m₁m₂/M."""
-    return isinstance(base, sp.Add) and any(sp.denom(t).free_symbols for t in base.args)
+def _holds_fraction(base: sp.Expr, monomial: bool = False) -> bool:
+    """A sum with a term divided by something not a number: m₁ + m₂ + 4m₁m₂/M (``monomial``: by a product of
+    symbols and functions only, not by a sum, as the double pendulum's ṗ over (m₁ + m₂ sin²(θ₁ − θ₂))²)."""
+    return isinstance(base, sp.Add) and any(
+        sp.denom(t).free_symbols and not (monomial and _has_sum(sp.denom(t))) for t in base.args
+    )
+
+
+def _has_sum(den: sp.Expr) -> bool:
+    return any(isinstance(f.as_base_exp()[0], sp.Add) for f in sp.Mul.make_args(den))
 
 
 def grouped(den: sp.Expr) -> sp.Expr:
@@ -100,13 +107,15 @@ def own_denominators(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
 
 def _split(term: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     den = sp.denom(term)
-    if not den.free_symbols or any(isinstance(f.as_base_exp()[0], sp.Add) for f in sp.Mul.make_args(den)):
-        return term  # only a number below, or a sum: one denominator stays
-    if not any(isinstance(f, sp.Add) for f in sp.Mul.make_args(sp.numer(term))) and not any(
-        _holds_fraction(f) for f in sp.Mul.make_args(term)
-    ):
-        return term  # no sum above it: nothing to split
-    parts = [sp.cancel(t) for t in sp.Add.make_args(sp.expand(term))]
+    if _has_sum(den):
+        return term  # a sum below: one denominator stays
+    # a sum holding a fraction, as in ½(kr² + (p_r² + p_θ²/r²)/m): a fraction inside the bracket
+    nested = any(_holds_fraction(f, monomial=True) for f in sp.Mul.make_args(term))
+    if not nested and not (den.free_symbols and any(isinstance(f, sp.Add) for f in sp.Mul.make_args(sp.numer(term)))):
+        return term  # no sum over a denominator: nothing to split
+    # products distributed over sums, powers of sums kept (½κ(x₂ − x₁)² stays a square); like factors cancel
+    # as they are multiplied (r·mθ̇²/m is rθ̇²)
+    parts = list(sp.Add.make_args(sp.expand(term, multinomial=False, power_exp=False, power_base=False, log=False)))
     if len(parts) < 2 or len({sp.denom(p).as_coeff_Mul()[1] for p in parts}) < 2:
         return term  # the terms share their denominator: the sum stays over it
     if any(not (p.free_symbols & moving) for p in parts):
