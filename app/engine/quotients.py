@@ -8,7 +8,9 @@ Three rules, each returning an expression equal to the one given (identically):
   share (not all: a factor of all is taken out anyway), M m₁ + M m₂ + 4 m₁ m₂ = 4m₁m₂ + M(m₁ + m₂);
 * ``own_denominators``: a sum over a product of symbols whose terms, each cancelled, have different
   denominators is written as that sum of terms, each over its own denominator, the factor in front of the
-  sum distributed: r(mθ̇² − k)/m = rθ̇² − (k/m)r, and Hamilton's (p_r² + p_θ²/r²)/(2m) = p_r²/(2m) + p_θ²/(2mr²).
+  sum distributed, when that factor moves or the sum holds a fraction of its own: r(mθ̇² − k)/m = rθ̇² − (k/m)r,
+  and Hamilton's ½(kr² + (p_r² + p_θ²/r²)/m) = p_r²/(2m) + p_θ²/(2mr²) + ½kr²; a constant before a bracket,
+  (m/2R)(Rθ̇² + g cos θ), stays.
   A sum over a sum (the pulley's accelerations over 4m₁m₂ + M(m₁ + m₂), the double pendulum's over
   l₁(2m₁ + m₂ − m₂ cos(2θ₁ − 2θ₂))) keeps its one denominator.
 """
@@ -113,6 +115,10 @@ def _split(term: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     nested = any(_holds_fraction(f, monomial=True) for f in sp.Mul.make_args(term))
     if not nested and not (den.free_symbols and any(isinstance(f, sp.Add) for f in sp.Mul.make_args(sp.numer(term)))):
         return term  # no sum over a denominator: nothing to split
+    outside = [f for f in sp.Mul.make_args(term) if not isinstance(f, sp.Add)]
+    if not nested and not any(f.free_symbols & moving for f in outside):
+        # a constant times a bracket is a textbook's form already: λ₁ = (m/2R)(Rθ̇² + g cos θ)
+        return term
     # products distributed over sums, powers of sums kept (½κ(x₂ − x₁)² stays a square); like factors cancel
     # as they are multiplied (r·mθ̇²/m is rθ̇²)
     parts = list(sp.Add.make_args(sp.expand(term, multinomial=False, power_exp=False, power_base=False, log=False)))

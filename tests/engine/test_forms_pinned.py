@@ -27,7 +27,7 @@ PINNED = {  # fmt: skip
             "theta_ddot + g*sin(theta)/R + b*theta_dot/(R**2*m)",
         ],
         "accelerations": {
-            "theta": "-g*sin(theta)/R - b*theta_dot/(R**2*m)",
+            "theta": "-(R*g*m*sin(theta) + b*theta_dot)/(R**2*m)",
         },
     },
     "simple-pendulum": {

@@ -77,3 +77,28 @@ def test_the_rotating_parabola_calls_its_effective_potential_by_one_name():
     assert r"\frac{\partial U_\text{eff}}{\partial \rho}" in step["latex"] and "V" not in step["latex"]
     words = step["explanation"]
     assert "effective potential U_eff" in words and "V" not in words and "step" not in words
+
+
+# a number with the metre's bare "m" in running text: 1 m either side, z = 2.294 m. (not 2 m R², 2 m (1 + α²R²),
+# a product with the mass m)
+_METRES = re.compile(r"\d(?:\.\d+)? m(?=$|[,.;:)]|\s+[a-z]{2,})")
+
+
+def _prose(doc: dict) -> list[str]:
+    scene = doc.get("scene") or {}
+    return [
+        *(s["explanation"] for s in doc["steps"]),
+        *(v for v in scene.values() if isinstance(v, str)),
+        *(r["meaning"] for r in doc["notation"]),
+    ]
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_metres_are_written_out_in_prose_where_m_is_a_mass(scene_id):
+    # prof-g 33, 38: "the constant 2 m places M below the pulleys" on a page where m₁, m₂ and M are masses
+    doc = derivation_document(scene_id)
+    masses = {r["unicode"] for r in doc["notation"] if r["kind"] == "parameter" and r["unit"] == "kg"}
+    if not any(name.startswith("m") for name in masses):
+        pytest.skip("no mass m on this page")
+    found = [text[max(0, m.start() - 40) : m.end() + 20] for text in _prose(doc) for m in _METRES.finditer(text)]
+    assert not found, found
