@@ -22,23 +22,34 @@ _UNIT = re.compile(r"\\mathrm\{([^}]*)\}")
 
 def _rows(tex: str) -> list[str]:
     body = tex.replace(r"\begin{aligned}", "").replace(r"\end{aligned}", "")
-    return [row for part in body.split(r"\\") for row in part.split(r",\quad")]
+    # rows, and the clauses of a row (ρ₀ = 0,\quad Ω² = …; \text{about } ρ = 0:\quad Ω² = …)
+    return [part.lstrip(",:; ") for part in re.split(r"\\\\|\\quad|,\\;", body)]
+
+
+def _formulas(doc: object, where: str = "") -> list[tuple[str, str]]:
+    """Every formula the document serves (steps and results), with where it is; the chapter's own formulas in
+    the errata (wrong on purpose) aside."""
+    if isinstance(doc, dict):
+        return [f for k, v in doc.items() if k != "chapter_latex" for f in _formulas(v, f"{where}/{k}")]
+    if isinstance(doc, list):
+        return [f for i, v in enumerate(doc) for f in _formulas(v, f"{where}[{i}]")]
+    return [(where, doc)] if isinstance(doc, str) and where.endswith("latex") else []
 
 
 def _defined(doc: dict) -> dict[str, list[str]]:
-    """Each letter a step defines (its rows' left sides, ``ω^2 = …``), with the steps that define it."""
+    """Each letter a formula defines (its rows' left sides, ``ω^2 = …``), with where."""
     out: dict[str, list[str]] = {}
-    for step in doc["steps"]:
-        for row in _rows(step["latex"]):
+    for where, tex in _formulas(doc):
+        for row in _rows(tex):
             if m := _NAME.match(row):
-                out.setdefault(re.sub(r"[{}\s]", "", m.group(1)), []).append(step["key"])
+                out.setdefault(re.sub(r"[{}\s]", "", m.group(1)), []).append(where)
     return out
 
 
 def _units(doc: dict) -> set[str]:
     letters: set[str] = set()
-    for step in doc["steps"]:
-        for unit in _UNIT.findall(step["latex"]):
+    for _, tex in _formulas(doc):
+        for unit in _UNIT.findall(tex):
             letters |= set(re.findall(r"[A-Za-z]+", unit.replace(r"\,", " ")))
     return letters
 
