@@ -18,6 +18,7 @@ from app.engine import textbook
 from app.engine.breaking import single
 from app.engine.budget import unbudgeted
 from app.engine.names import GREEK, latex
+from app.engine.quotients import cleared
 from app.scenes.types import Scene
 
 _TOKEN = re.compile(r"\s+|[A-Za-z_][A-Za-z0-9_]*|\d+(?:\.\d+)?|\*\*|''|.", re.S)
@@ -147,7 +148,8 @@ def _side(text: str, names: dict[sp.Symbol, str]) -> str:
     if isinstance(expr, sp.Tuple | tuple):
         raw = sp.sympify(text, locals={**symbols, **{f: getattr(sp, f) for f in _FUNCTIONS}}, evaluate=False)
         return r"\left(" + ", ".join(_component(r, e, table) for r, e in zip(raw, expr, strict=True)) + r"\right)"
-    return textbook.latex(expr, table)
+    # no fraction inside a denominator: g/(m₁ + m₂ + 4m₁m₂/M) over 4m₁m₂ + M(m₁ + m₂)
+    return textbook.latex(cleared(expr), table)
 
 
 def _component(raw: sp.Basic, expr: sp.Basic, table: dict[sp.Symbol, str]) -> str:

@@ -34,6 +34,7 @@ from sympy.simplify.fu import TR8, TR10i
 
 from app.engine import budget
 from app.engine.budget import memoized, pythagoras, tidy, within_budget
+from app.engine.quotients import textbook_quotients
 from app.limits import FALLBACK_WORK, FORM_WORK, LATE_WORK
 
 ENGINE_BONUS = 1.5
@@ -590,7 +591,8 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, units
         if left < units:  # the shared budget ran out, not this expression's own time: try again another time
             return fallback
         best[0] = fallback
-    found = best[0]
+    # quotients as a textbook writes them: each term over its own denominator, no fraction in a denominator
+    found = textbook_quotients(best[0], moving)
     if len(_CACHE) < _CACHE_SIZE:
         _CACHE[key] = found
     return settle(found, names)  # a form, formed again, stays as it is
@@ -598,4 +600,6 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, units
 
 def _fallback(expr: sp.Expr) -> sp.Expr:
     """The engine's own display form: sin² + cos² = 1 collapsed, then SymPy's simplification when small."""
-    return within_budget(lambda: tidy(pythagoras(expr), FALLBACK_WORK), expr, FALLBACK_WORK)
+    plain = within_budget(lambda: tidy(pythagoras(expr), FALLBACK_WORK), expr, FALLBACK_WORK)
+    # quotients as a textbook writes them here too (bounded by size: cheap)
+    return textbook_quotients(plain, moving_symbols(plain, getattr(_local, "names", None)))

@@ -80,6 +80,16 @@ def text(concept: str, d: Derivation) -> str:
     return _choice(concept, d)[1]
 
 
+def rest_potential(d: Derivation) -> tuple[str, str]:
+    """The name (LaTeX, Unicode) of −L at q̇ = 0, U − T₀, whose stationary points are the equilibria: U_eff, the
+    effective potential, as on every page that reduces to it; V only where the effective-potential step writes
+    another function (its conserved momenta held), so that U_eff never names two functions on one page."""
+    at_rest = d.mechanics.L.xreplace(dict.fromkeys(d.table.qd, 0))
+    if d.reduction is None or sp.expand(d.reduction.effective_potential + at_rest) == 0:
+        return r"U_\text{eff}", "U_eff"
+    return "V", "V"
+
+
 # the SI name of an energy's dimension (kg·m²/s²), and of a frequency's
 _ENERGY: Dims = {"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-2)}
 _ACTION: Dims = {"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-1)}
@@ -265,12 +275,15 @@ def _sometimes(
             )
         )
     at_rest = m.L.xreplace(dict.fromkeys(d.table.qd, 0))
-    if m.U is not None and sp.expand(at_rest + m.U) != 0:
+    tex, uni = rest_potential(d)
+    if m.U is not None and sp.expand(at_rest + m.U) != 0 and (uni != "U_eff" or d.reduction is None):
+        # the effective potential U − T₀ (T₀ the part of T without velocities); with a reduction to it, its row above
         rows.append(
             _row(
-                "V",
-                "V",
-                "−L at q̇ = 0, that is U − T₀ (T₀ the part of T without velocities): its stationary points are the equilibria",
+                tex,
+                uni,
+                "effective potential, the potential energy less the part of the kinetic energy without velocities "
+                "(U − T₀): the equilibria are where it is stationary",
                 energy,
                 "derived",
             )

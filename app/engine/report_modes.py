@@ -307,7 +307,7 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         return [_step("equilibria", "Equilibria", [r"\text{not computed}"], [], nm.failed)]
     qn = [pr.tex(s) for s in table.q]
     plain = d.mechanics.T is not None and d.mechanics.U is not None and sp.expand(d.mechanics.U - nm.potential) == 0
-    vname = "U" if plain else "V"
+    vname = "U" if plain else notation.rest_potential(d)[0]
     forced = any(f.xreplace(dict.fromkeys(table.qd, 0)) != 0 for f in d.mechanics.Q)
     frame = r" + \frac{\partial b}{\partial t}" if nm.moving_frame else ""
     found = [e for e in nm.equilibria if not e.momenta]
@@ -321,7 +321,7 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         for k, g in enumerate(nm.condition)
     ]
     if not plain:
-        rows.insert(0, rf"V = -L\big|_{{\dot q = 0}} = {pr.tex(display(nm.potential))}")
+        rows.insert(0, rf"{vname} = -L\big|_{{\dot q = 0}} = {pr.tex(display(nm.potential))}")
     listed: list[str] = []
     for e in found:
         family = _family_of(e, nm, d)
@@ -338,11 +338,14 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
     rows += listed
     sym = {s.name: s for s in table.q}
     rows += _singular_points(nm, d, pr)
-    rows += _points(nm.kinks, sym, pr, r"\quad (\text{at a kink of } V)")
+    rows += _points(nm.kinks, sym, pr, rf"\quad (\text{{at a kink of }} {vname})")
     rows += _points(nm.unclassified, sym, pr, r"\quad (\text{coefficients change with } t)")
     why = "At rest (q̇ = 0) the state stays put where the Euler–Lagrange equations give q̈ = 0. "
     if not plain:
-        why += "V = U − T₀ includes the velocity-free part T₀ of the kinetic energy (a moving constraint's share). "
+        why += (
+            f"{notation.rest_potential(d)[1].replace('U_eff', 'The effective potential U_eff')} is the potential energy less "
+            "the part T₀ of the kinetic energy without velocities (a moving constraint's share). "
+        )
     if nm.moving_frame:
         why += (
             "L has a term b·q̇ whose b depends on t (a moving support), so d/dt of the momentum at rest, ∂b/∂t, "

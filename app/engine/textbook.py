@@ -62,6 +62,16 @@ class _Printer(LatexPrinter):
         return tex_greek(super()._print_Symbol(expr, style))
 
     # --- classification -------------------------------------------------------
+    def place(self, expr: sp.Expr) -> int:
+        """The place of the first declared coordinate ``expr`` holds (-1: none)."""
+        coordinates = [s for s in self._settings["symbol_names"] if s in self.moving and _level(s) == 0]
+        return min((coordinates.index(s) for s in expr.free_symbols if s in coordinates), default=-1)
+
+    def momenta(self, term: sp.Expr) -> list[int]:
+        """The places (in the order of the coordinates) of the canonical momenta p_q that ``term`` holds."""
+        order = [s.name for s in self._settings["symbol_names"] if not s.name.endswith(("_dot", "_ddot"))]
+        return [order.index(s.name[2:]) for s in term.free_symbols if s.name.startswith("p_") and s.name[2:] in order]
+
     def constant(self, expr: sp.Expr) -> bool:
         return not (expr.free_symbols & self.moving)
 
@@ -84,12 +94,18 @@ class _Printer(LatexPrinter):
             return (4, 0, sp.default_sort_key(f))
         if base.is_Symbol and _level(base) == 2:
             return (5, 0, sp.default_sort_key(f))  # an acceleration after its coefficient: (1 + 4α²ρ²) ρ̈
-        return (3, 0, sp.default_sort_key(f))
+        # functions in the order of the coordinates they hold, as declared: R sin θ cos φ, R sin θ sin φ
+        return (3, self.place(base), sp.default_sort_key(f))
 
     def _term_key(self, signed: tuple[bool, sp.Expr], top: bool) -> tuple:
         negative, term = signed
         if top:
             own = self.first is not None and term.has(self.first)
+            held = self.momenta(term)
+            if held and not negative:
+                # a positive term holding a canonical momentum is kinetic (a Hamiltonian's p_r²/(2m)): first, in
+                # the order of the coordinates
+                return (not own, -1.5, negative, min(held), sp.default_sort_key(term))
             # the term holding ``first`` leads whatever its level (U_eff's centrifugal piece before −mgD sin α)
             return (not own, -self.level(term), negative, sp.default_sort_key(term))
         rank = _parameter_rank(term.name) if term.is_Symbol and term not in self.moving else (9, "", "")
@@ -139,6 +155,12 @@ class _Printer(LatexPrinter):
         if bare and len(factors) == 1:
             return self._print(factors[0])  # a sum alone over a fraction bar needs no brackets
         ordered = sorted(factors, key=self._factor_key)
+        if (
+            len(ordered) == 2 and isinstance(ordered[0], sp.Add) and self.constant(ordered[0])
+            and ordered[1].is_Symbol and ordered[1] not in self.moving and _MASS.fullmatch(ordered[1].name)
+        ):  # fmt: skip
+            # a mass times a sum of parameters, alone, as a textbook writes it: M(m₁ + m₂), m(1 + α²R²)
+            ordered.reverse()
         return " ".join(self._wrap(f) for f in ordered)
 
     def _frac(self, num: str, den: str) -> str:

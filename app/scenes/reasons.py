@@ -270,7 +270,7 @@ PULLEY: dict[str, str] = {
     "derivatives:y2": "∂L/∂y₂ = M g/2 − m₂ g, the same for mass 2.",
     "euler-lagrange": "The two equations share the middle mass's inertia M/4.",
     "mass-matrix": "The mass matrix 𝓜 (M is the middle body's mass) is not diagonal: the middle mass responds to both ends.",
-    "accelerations": "Constant accelerations: every force here is a constant weight. The middle mass follows from Y = −(y₁ + y₂)/2 plus a constant: Ÿ = −(ÿ₁ + ÿ₂)/2 = g − 2 (m₁ + m₂) g/(m₁ + m₂ + 4 m₁ m₂/M).",
+    "accelerations": "Constant accelerations: every force here is a constant weight. The middle mass follows from Y = −(y₁ + y₂)/2 plus a constant: Ÿ = −(ÿ₁ + ÿ₂)/2 = [4m₁m₂ − M(m₁ + m₂)] g/[4m₁m₂ + M(m₁ + m₂)].",
     "momenta": "Each momentum includes the middle mass's share of the motion.",
     "time-dependence": "The fixed pulleys do not move, so L has no t.",
     "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
@@ -342,7 +342,7 @@ ROTATING_PARABOLA: dict[str, str] = {
     "energy-integral": "The conserved h gives ρ̇ from ρ.",
     "time-integral": "Taken between the turning points, the integral is half the period of the oscillation along the wire (when ω² < 2 g α).",
     "reduced-equilibria": "The bottom holds the bead with Ω² = 2 g α − ω² when that is positive (Ω, the frequency along the wire; ω is the turning rate).",
-    "equilibria": "ρ = 0 is the only equilibrium unless ω² = 2 g α, when every ρ is one. The function whose stationary points these are is U_eff, as in the effective potential above: gravity's m g α ρ² less the centrifugal ½ m ω² ρ².",
+    "equilibria": "ρ = 0 is the only equilibrium unless ω² = 2 g α, when every ρ is one. They are the stationary points of the effective potential U_eff, gravity's m g α ρ² less the centrifugal ½ m ω² ρ².",
     "normal-modes": "At the bottom the small oscillations along the wire have Ω² = 2 g α − ω².",
     "constraints": "The wire lies on the paraboloid z = α ρ² and in the plane turned by ω t.",
     "multiplier-lagrangian": "Two multipliers: λ₁ for the paraboloid, λ₂ for the turning plane; the plane's 𝒞₂ holds t.",
@@ -360,7 +360,7 @@ def reason(reasons: Mapping[str, str], key: str) -> str | None:
 
 COUPLED_OSCILLATORS: dict[str, str] = {
     "action": "The two masses move so that ∫ L dt is stationary between two configurations; each mode is a spring-like oscillation, so past half the faster mode's period the true path is a saddle of S, not its least value.",
-    "positions": "Both masses stay on the line; each sits at its rest position (1 m either side of the middle) plus its displacement.",
+    "positions": "Both masses stay on the line; each sits at its rest position (1 metre either side of the middle) plus its displacement.",
     "velocities": "A rest position does not move, so each mass's velocity is the rate of its own displacement.",
     "squared-speeds": "On a line each squared speed is just ẋ², with no term mixing the two masses.",
     "kinetic": "The two equal masses' kinetic energies add, and neither velocity is tied to the other.",

@@ -243,7 +243,10 @@ PULLEY = Scene(
         Erratum(
             chapter="Y_dot = g - (2(m1 + m2) g)/(m1 + m4 m1 m2/M)",
             correct="Y_ddot = g - 2*(m1 + m2)*g/(m1 + m2 + 4*m1*m2/M)",
-            reason="Again an acceleration (Ÿ = −(ÿ₁ + ÿ₂)/2), and the denominator is m₁ + m₂ + 4 m₁ m₂/M.",
+            reason=(
+                "Again an acceleration (Ÿ = −(ÿ₁ + ÿ₂)/2), and the denominator is m₁ + m₂ + 4 m₁ m₂/M, "
+                "the fraction's denominator over a common one: 4m₁m₂ + M(m₁ + m₂)."
+            ),
             check="point-acceleration:3:z",
         ),
     ),

@@ -72,7 +72,7 @@ PINNED = {  # fmt: skip
             "theta_ddot + 2*r_dot*theta_dot/r",
         ],
         "accelerations": {
-            "r": "r*(-k + m*theta_dot**2)/m",
+            "r": "-k*r/m + r*theta_dot**2",
             "theta": "-2*r_dot*theta_dot/r",
         },
     },
@@ -85,7 +85,7 @@ PINNED = {  # fmt: skip
             "phi_ddot + 2*phi_dot*theta_dot*cos(theta)/sin(theta)",
         ],
         "accelerations": {
-            "theta": "(R*phi_dot**2*cos(theta) + g)*sin(theta)/R",
+            "theta": "phi_dot**2*sin(theta)*cos(theta) + g*sin(theta)/R",
             "phi": "-2*phi_dot*theta_dot*cos(theta)/sin(theta)",
         },
     },
@@ -111,8 +111,8 @@ PINNED = {  # fmt: skip
             "-M*g/2 + M*y1_ddot/4 + g*m2 + y2_ddot*(M/4 + m2)",
         ],
         "accelerations": {
-            "y1": "g*(-M*m1 + 3*M*m2 - 4*m1*m2)/(M*m1 + M*m2 + 4*m1*m2)",
-            "y2": "g*(3*M*m1 - M*m2 - 4*m1*m2)/(M*m1 + M*m2 + 4*m1*m2)",
+            "y1": "g*(-M*m1 + 3*M*m2 - 4*m1*m2)/(M*(m1 + m2) + 4*m1*m2)",
+            "y2": "g*(3*M*m1 - M*m2 - 4*m1*m2)/(M*(m1 + m2) + 4*m1*m2)",
         },
     },
     "movable-incline": {

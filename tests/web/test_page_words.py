@@ -135,8 +135,10 @@ def test_the_symbols_table_lists_the_letters_of_the_optional_steps(client):
     assert pulley["z₃"]["meaning"] == "Cartesian z of the middle mass"
     parabola = rows("rotating-parabola")
     # ρ's unit is told from m (1 + 4α²ρ²), so the energies are in J
-    assert parabola["ρ"]["unit"] == "m" and parabola["h"]["unit"] == "J" and parabola["V"]["unit"] == "J"
+    assert parabola["ρ"]["unit"] == "m" and parabola["h"]["unit"] == "J"
     assert parabola["U_eff"]["unit"] == "J" and parabola["m_eff"]["unit"] == "kg" and "bead" in parabola["z"]["meaning"]
+    # −L at q̇ = 0 is the effective potential here: one name, U_eff, never a third letter V (prof-g 41)
+    assert "V" not in parabola
     wedge = rows("movable-incline")
     assert wedge["x₂"]["meaning"] == "Cartesian x of the block" and wedge["m_eff"]["unit"] == "kg"
     # each letter once
@@ -171,9 +173,10 @@ def test_the_pulley_derives_the_middle_masss_acceleration_from_the_engines_two(c
     accelerations = {q: sp.sympify(a["sympy"]) for q, a in doc["accelerations"].items()}
     m1, m2, M, g = sp.symbols("m1 m2 M g")
     middle = -(accelerations["y1"] + accelerations["y2"]) / 2
-    assert sp.simplify(middle - (g - 2 * (m1 + m2) * g / (m1 + m2 + 4 * m1 * m2 / M))) == 0
+    # the sentence writes it over the common denominator (prof-g 36: no fraction inside a denominator)
+    assert sp.simplify(middle - (4 * m1 * m2 - M * (m1 + m2)) * g / (4 * m1 * m2 + M * (m1 + m2))) == 0
     explained = {s["key"]: s for s in doc["steps"]}["accelerations"]["explanation"]
-    assert "Ÿ = −(ÿ₁ + ÿ₂)/2 = g − 2 (m₁ + m₂) g/(m₁ + m₂ + 4 m₁ m₂/M)" in explained
+    assert "Ÿ = −(ÿ₁ + ÿ₂)/2 = [4m₁m₂ − M(m₁ + m₂)] g/[4m₁m₂ + M(m₁ + m₂)]" in explained
 
 
 def test_the_coupled_oscillators_derive_their_beats(client):
