@@ -61,10 +61,12 @@ def free_port() -> int:
         return s.getsockname()[1]
 
 
-def start_server(data_dir: str) -> tuple[subprocess.Popen, str]:
+def start_server(data_dir: str, workers: int = 1, warm: bool = False) -> tuple[subprocess.Popen, str]:
+    """scripts/serve.sh on a free loopback port with ``workers`` web processes, once /healthz answers."""
     port = free_port()
-    env = {**os.environ, "PORT": str(port), "HOST": "127.0.0.1", "WORKERS": "1", "LAGRANGE_DATA_DIR": data_dir,
-           "LAGRANGE_WARM": "0", "PYTHONPATH": str(ROOT), "PATH": f"{Path(sys.executable).parent}:{os.environ['PATH']}"}
+    env = {**os.environ, "PORT": str(port), "HOST": "127.0.0.1", "WORKERS": str(workers), "LAGRANGE_DATA_DIR": data_dir,
+           "LAGRANGE_WARM": "1" if warm else "0", "PYTHONPATH": str(ROOT),
+           "PATH": f"{Path(sys.executable).parent}:{os.environ['PATH']}"}
     process = subprocess.Popen([str(ROOT / "scripts" / "serve.sh")], cwd=ROOT, env=env)
     url = f"http://127.0.0.1:{port}"
     deadline = time.monotonic() + 90
