@@ -7,13 +7,14 @@ uvicorn master, its web processes, their forkservers and pool workers and the sc
 
 * start-up: seconds from launching the server to its first ``/healthz`` answer (what the readiness probe
   waits for), and to the end of the warm-up (the first ``--quiet`` seconds in which the tree used less than
-  a tenth of a CPU);
+  a tenth of a CPU; at most 300 s, else "nan");
 * idle: the summed resident memory (VmRSS; and PSS, which counts a page shared by several processes once, as
   the container's memory cgroup does) and the CPU used over ``--quiet`` seconds;
 * under load: benchmarks/bench_classroom's lecture hall (``--students`` behind one address, every answer
   distinct, ``--hall`` checking at a time) while the tree is sampled every ``--every`` seconds: the peak summed
-  RSS and PSS, the CPU seconds used and the busiest ``WINDOW`` seconds in cores, and the hall's own report
-  (answers by status, p50/p95/p99 of a recorded check).
+  RSS and PSS, the CPU seconds used and the busiest ``WINDOW`` seconds in cores, the slowest answers of
+  ``/healthz`` asked once a second as a kubelet's probe asks (what its ``timeoutSeconds`` must allow), and the
+  hall's own report (answers by status, p50/p95/p99 of a recorded check).
 
 The CPU a replica can use is what the machine gives it: on a shared machine, read the load average printed
 beside the figures.
@@ -32,7 +33,9 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from benchmarks.bench_classroom import hall, report_hall, start_server
+import httpx2 as httpx
+
+from benchmarks.bench_classroom import hall, percentile, report_hall, start_server
 
 TICK = os.sysconf("SC_CLK_TCK")
 WINDOW = 5.0  # seconds over which the busiest CPU use is reported
@@ -81,6 +84,8 @@ class Sampler:
     every: float
     cpu: dict[int, float] = field(default_factory=dict)  # each process's last CPU time seen (a replaced worker's stays)
     points: list[tuple[float, float, float, float]] = field(default_factory=list)  # (time, RSS, PSS, CPU so far)
+    url: str = ""  # the server whose /healthz is asked at each sample, as a probe asks
+    probes: list[float] = field(default_factory=list)  # seconds to each /healthz answer (inf: none within 10 s)
     stop: threading.Event = field(default_factory=threading.Event)
 
     def sample(self) -> tuple[float, float, float, float]:
@@ -94,12 +99,23 @@ class Sampler:
         self.points.append(point)
         return point
 
+    def probe(self) -> None:
+        started = time.perf_counter()
+        try:
+            answered = httpx.get(f"{self.url}/healthz", timeout=10).status_code == 200
+        except httpx.HTTPError:
+            answered = False
+        self.probes.append(time.perf_counter() - started if answered else float("inf"))
+
     def run(self) -> None:
         while not self.stop.wait(self.every):
             self.sample()
+            if self.url:
+                self.probe()
 
     def __enter__(self) -> Sampler:
         self.points.clear()
+        self.probes.clear()
         self.sample()
         self._thread = threading.Thread(target=self.run, daemon=True)
         self._thread.start()
@@ -152,11 +168,11 @@ def main() -> None:
     print(f"load average before: {load()} (1, 5, 15 min; {os.cpu_count()} CPUs)")
     with tempfile.TemporaryDirectory() as data:
         launched = time.monotonic()
-        process, url = start_server(data, workers=args.workers, warm=True)
+        process, url = start_server(data, workers=args.workers, warm=True, limit=600)
         ready = time.monotonic() - launched
         try:
-            sampler = Sampler(process.pid, args.every)
-            warmed = ready + until_quiet(sampler, args.quiet, 600)
+            sampler = Sampler(process.pid, args.every, url=url)
+            warmed = ready + until_quiet(sampler, args.quiet, 300)
             with sampler:
                 time.sleep(args.quiet)
             idle_rss, idle_pss = sampler.peak()
@@ -165,6 +181,7 @@ def main() -> None:
             with sampler:
                 out = asyncio.run(hall(url, args.students, args.hall))
             busy_rss, busy_pss = sampler.peak()
+            probes = sampler.probes
             seconds, mean, busiest = sampler.cores()
             after = load()
         finally:
@@ -175,6 +192,9 @@ def main() -> None:
     print(f"idle after warm-up: RSS {idle_rss:.0f} MB summed, PSS {idle_pss:.0f} MB; {idle_cores:.2f} cores")
     print(f"lecture hall: peak RSS {busy_rss:.0f} MB summed, peak PSS {busy_pss:.0f} MB; {seconds:.0f} CPU s in "
           f"{out['seconds']:.0f} s: mean {mean:.2f} cores, busiest {WINDOW:g} s {busiest:.2f} cores")
+    print(f"/healthz asked every {args.every:g} s during the hall: {len(probes)} answers, p50 "
+          f"{1000 * percentile(probes, 0.5):.0f} ms, p99 {1000 * percentile(probes, 0.99):.0f} ms, "
+          f"slowest {1000 * max(probes):.0f} ms")
     print(f"load average at the end: {after}")
     report_hall(out, args.students, args.hall)
 
