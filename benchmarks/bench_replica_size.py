@@ -183,6 +183,7 @@ def main() -> None:
             busy_rss, busy_pss = sampler.peak()
             probes = sampler.probes
             seconds, mean, busiest = sampler.cores()
+            span = sampler.points[-1][0] - sampler.points[0][0]  # the hall with its warm-up checks
             after = load()
         finally:
             process.terminate()
@@ -191,7 +192,7 @@ def main() -> None:
     print(f"start-up: /healthz answered {ready:.1f} s after launch; warm-up over (quiet) after {warmed:.0f} s")
     print(f"idle after warm-up: RSS {idle_rss:.0f} MB summed, PSS {idle_pss:.0f} MB; {idle_cores:.2f} cores")
     print(f"lecture hall: peak RSS {busy_rss:.0f} MB summed, peak PSS {busy_pss:.0f} MB; {seconds:.0f} CPU s in "
-          f"{out['seconds']:.0f} s: mean {mean:.2f} cores, busiest {WINDOW:g} s {busiest:.2f} cores")
+          f"{span:.0f} s sampled (the hall's timed part: {out['seconds']:.0f} s): mean {mean:.2f} cores, busiest {WINDOW:g} s {busiest:.2f} cores")
     print(f"/healthz asked every {args.every:g} s during the hall: {len(probes)} answers, p50 "
           f"{1000 * percentile(probes, 0.5):.0f} ms, p99 {1000 * percentile(probes, 0.99):.0f} ms, "
           f"slowest {1000 * max(probes):.0f} ms")
