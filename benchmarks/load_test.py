@@ -320,7 +320,7 @@ def main() -> None:
         type=float,
         default=0.0,
         help="seconds between the server's first answer and the load (its own warm-up ends meanwhile), "
-        "as a liveness probe's initialDelaySeconds waits (deploy/kubernetes.yaml: 20)",
+        "as a liveness probe waits behind the start-up probe (deploy/kubernetes.yaml)",
     )
     parser.add_argument(
         "--no-warm", action="store_true", help="skip `python -m app.web.warm` (the image runs it at build)"

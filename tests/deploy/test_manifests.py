@@ -22,7 +22,8 @@ def test_kubernetes_manifest_has_probes_service_and_autoscaler():
     text = (ROOT / "deploy" / "kubernetes.yaml").read_text()
     for kind in ("kind: Deployment", "kind: Service", "kind: HorizontalPodAutoscaler"):
         assert kind in text
-    assert "readinessProbe" in text and "livenessProbe" in text and "path: /healthz" in text
+    assert "startupProbe" in text and "readinessProbe" in text and "livenessProbe" in text
+    assert "path: /healthz" in text
 
 
 def test_serve_script_takes_port_and_workers_from_the_environment():
@@ -60,9 +61,14 @@ def test_the_memory_budget_fits_the_kubernetes_limits():
     # which wait on their jobs' limits as often as they compute: at most two per CPU
     assert s.web_process_count * s.worker_count <= 2 * cpus
     assert s.job_memory_mb >= 256  # a useful derivation fits
-    for probe in ("readinessProbe", "livenessProbe"):
+    # what a replica is guaranteed is no more than what it may use (benchmarks/bench_replica_size.py sized both)
+    assert _mebibytes(container["resources"]["requests"]["memory"]) <= limit
+    assert float(container["resources"]["requests"]["cpu"]) <= cpus
+    for probe in ("startupProbe", "readinessProbe", "livenessProbe"):
         assert container[probe]["httpGet"]["path"] == "/healthz"
         assert container[probe].get("timeoutSeconds", 1) <= container[probe]["periodSeconds"]
+    # the start-up probe, not a fixed delay, holds the liveness probe off while a replica starts
+    assert "initialDelaySeconds" not in container["livenessProbe"]
 
 
 def test_the_kubernetes_manifest_validates_against_the_api_schemas():
