@@ -5,7 +5,7 @@ What a lecturer puts in an ``<iframe>`` on a course site.  The page's options, e
 * ``?view=`` (``VIEWS``, app/web/embed_views.py): ``full`` (the default) is the animation with Play, the initial conditions,
   the parameters and the run's duration and tolerance; ``compact`` is the animation with Play and
   the time slider alone, no forms and no paragraphs, sized to fit a phone's screen without scrolling.
-* ``?panel=`` one plot panel beside the animation (``embeddable``).
+* ``?panel=`` one plot panel beside the animation (``embeddable``, app/web/embed_views.py).
 
 A link opens the whole page.  The scene page offers the frame's code for each view with the height it
 needs (app/web/embed_views.py ``offers``).  Which sites may frame it is a setting (``embed_ancestors``, applied by
@@ -19,16 +19,11 @@ from fastapi.responses import HTMLResponse
 
 from app.errors import UnknownScene
 from app.web.deps import ChapterDep, PagesDep
-from app.web.embed_views import DEFAULT_VIEW, VIEWS
+from app.web.embed_views import DEFAULT_VIEW, VIEWS, embeddable
 from app.web.pages import page_model, unknown_scene
 from app.web.templating import templates
 
 router = APIRouter(tags=["pages"], include_in_schema=False)
-
-
-def embeddable(model: dict) -> list[str]:
-    """The panels an embed page may show beside the animation: the page's plots that are not folded away."""
-    return [k for k in model["panels"] if not k.startswith("animation") and k not in model["folded_panels"]]
 
 
 @router.get("/embed/scenes/{scene_id}", response_class=HTMLResponse)

@@ -16,6 +16,11 @@ VIEWS: dict[str, dict[str, Any]] = {
 DEFAULT_VIEW = "full"
 
 
+def embeddable(model: dict[str, Any]) -> list[str]:
+    """The panels an embed page may show beside the animation: the page's plots that are not folded away."""
+    return [k for k in model["panels"] if not k.startswith("animation") and k not in model["folded_panels"]]
+
+
 def embed_src(scene_id: str, view: str = DEFAULT_VIEW) -> str:
     """The address of a scene's embed page in a view (the default view needs no ``?view=``)."""
     return f"/embed/scenes/{scene_id}" + ("" if view == DEFAULT_VIEW else f"?view={view}")
