@@ -203,6 +203,8 @@ export function bindViewLink() {
       ]);
       status.dataset.copied = "yes";
       status.replaceChildren(Object.assign(document.createElement("strong"), { textContent: "Link copied" }), " to the clipboard: ", shown);
+      // the message pushes the lines below it down, out of the controls' scrolled box: bring the next one back
+      inSight();
     } catch {
       status.dataset.copied = "no";
       const field = Object.assign(document.createElement("input"), {
@@ -212,8 +214,16 @@ export function bindViewLink() {
       status.replaceChildren(label, field);
       field.focus();
       field.select();
+      inSight();
     }
   });
+}
+
+/** The last line of the controls (the course-page offer, else the link's message) scrolled into the controls'
+ * box and the window, where the message about the link pushed it out of sight. */
+function inSight() {
+  const last = document.querySelector("#embed-offer > summary") || document.getElementById("view-link-status");
+  last?.scrollIntoView({ block: "nearest" });
 }
 
 /**
@@ -242,5 +252,10 @@ export function bindEmbedOffer() {
   // a value typed, a slider moved, the plot chosen; a body dragged in the animation or a reset settles into a
   // new run, which paints
   for (const kind of ["input", "change", "lagrange:painted"]) document.addEventListener(kind, write);
-  document.getElementById("embed-offer")?.addEventListener("toggle", write);
+  const offer = document.getElementById("embed-offer");
+  offer?.addEventListener("toggle", () => {
+    write();
+    // opened at the foot of the controls' scrolled box: its codes come into sight
+    if (offer.open) offer.scrollIntoView({ block: "nearest" });
+  });
 }

@@ -77,16 +77,18 @@ def test_after_link_copied_the_course_page_line_is_in_sight(desktop, artifacts):
     # the reader scrolled down to the animation, as one does to watch it
     page.evaluate("window.scrollTo(0, document.querySelector('.stage').getBoundingClientRect().top + window.scrollY - 10)")
     page.click("#view-link")
-    page.wait_for_function("document.getElementById('view-link-status').dataset.copied === 'yes'")
+    # copied, or (where the browser refuses the page the clipboard) the link in a field to copy: either pushes down
+    page.wait_for_function("['yes', 'no'].includes(document.getElementById('view-link-status').dataset.copied)")
     page.wait_for_timeout(400)
     seen = page.evaluate(
         """() => {
           const s = document.querySelector('#embed-offer > summary').getBoundingClientRect();
           const f = document.getElementById('controls').getBoundingClientRect();
-          // the line's box lies inside the form's visible box and the window, and nothing covers any of its corners
+          // the line's box lies inside the form's visible box (to a pixel's rounding) and the window, and nothing covers
+          // any of its corners
           const corners = [[s.left + 2, s.top + 2], [s.right - 2, s.top + 2], [s.left + 2, s.bottom - 2], [s.right - 2, s.bottom - 2]];
           const summary = document.querySelector('#embed-offer > summary');
-          return { inside: s.top >= f.top && s.bottom <= f.bottom && s.top >= 0 && s.bottom <= window.innerHeight,
+          return { inside: s.top >= f.top - 1 && s.bottom <= f.bottom + 1 && s.top >= 0 && s.bottom <= window.innerHeight,
                    covered: corners.filter(([x, y]) => !summary.contains(document.elementFromPoint(x, y))).length,
                    box: [s.top, s.bottom, f.top, f.bottom] };
         }"""
