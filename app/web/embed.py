@@ -5,9 +5,10 @@ What a lecturer puts in an ``<iframe>`` on a course site.  The page's options, e
 * ``?view=`` (``VIEWS``, app/web/embed_views.py): ``full`` (the default) is the animation with Play, the initial conditions,
   the parameters and the run's duration and tolerance; ``compact`` is the animation with Play and
   the time slider alone, no forms and no paragraphs, sized to fit a phone's screen without scrolling.
-* ``?panel=`` one plot panel beside the animation (``embeddable``).
+* ``?panel=`` one plot panel beside the animation (``embeddable``, app/web/embed_views.py).
 
-A link opens the whole page.  The scene page offers the frame's code for each view with the height it
+A link opens the whole page.  An address that shows nothing (no such scene, view or plot) is a page that fits
+the frame (``embed_error``): a sentence, the choices by their titles, and a link that opens the book.  The scene page offers the frame's code for each view with the height it
 needs (app/web/embed_views.py ``offers``).  Which sites may frame it is a setting (``embed_ancestors``, applied by
 app/web/headers.py); by default none may.
 """
@@ -19,16 +20,11 @@ from fastapi.responses import HTMLResponse
 
 from app.errors import UnknownScene
 from app.web.deps import AnswersDep, ChapterDep, PagesDep
-from app.web.embed_views import DEFAULT_VIEW, VIEWS
-from app.web.pages import page_model, unknown_scene
+from app.web.embed_views import DEFAULT_VIEW, refusal, scene_choices
+from app.web.pages import page_model
 from app.web.templating import templates
 
 router = APIRouter(tags=["pages"], include_in_schema=False)
-
-
-def embeddable(model: dict) -> list[str]:
-    """The panels an embed page may show beside the animation: the page's plots that are not folded away."""
-    return [k for k in model["panels"] if not k.startswith("animation") and k not in model["folded_panels"]]
 
 
 @router.get("/embed/scenes/{scene_id}", response_class=HTMLResponse)
@@ -44,15 +40,15 @@ def embed_scene(
     try:
         model = page_model(scene_id, pages, chapter, answers)
     except UnknownScene as exc:
-        return unknown_scene(request, exc, "/embed/scenes/")
-    allowed = embeddable(model)
-    refused = None
-    if view not in VIEWS:
-        refused = {"missing": view[:40], "option": "view", "choices": list(VIEWS)}
-    elif panel is not None and panel not in allowed:
-        refused = {"missing": panel[:40], "option": "panel", "choices": allowed}
+        return embed_error(request, {"kind": "scene", "missing": exc.scene_id[:60], "choices": scene_choices()}, 404)
+    refused = refusal(model, view, panel)
     if refused is not None:
-        context = {"missing": refused["missing"], "known": [], "embed": {"scene": model["info"], **refused}}
-        return templates.TemplateResponse(request, "404.html", context, status_code=422)
+        return embed_error(request, {**refused, "scene": model["info"]}, 422)
     context = {"m": model, "scene": model["info"], "embed_panels": [panel] if panel else [], "embed_view": view}
     return templates.TemplateResponse(request, "embed.html", context)
+
+
+def embed_error(request: Request, refused: dict, status: int) -> HTMLResponse:
+    """An embed address that shows nothing, as a page that fits the frame (templates/embed_error.html): what is
+    wrong in a sentence, the choices there are by their titles, and a link that opens the book in the window."""
+    return templates.TemplateResponse(request, "embed_error.html", {"refused": refused}, status_code=status)

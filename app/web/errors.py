@@ -46,7 +46,7 @@ from app.errors import (
     WrongKey,
 )
 from app.limits import RETRY_SECONDS as UNAVAILABLE_RETRY_SECONDS
-from app.scenes import SCENES
+from app.web.embed_views import scene_choices
 from app.web.templating import templates
 
 # what each kind of failure is, in HTTP
@@ -186,10 +186,11 @@ def _no_such_page(request: Request) -> Response:
     """A page address that leads nowhere: a page (never the API's JSON) saying what the addresses near it are,
     for a class link cut before its code (/j/) and an embed address guessed (/embed/...)."""
     path = request.url.path
+    if path.startswith("/embed"):  # inside a course page's frame: the embed pages' own error page
+        refused = {"kind": "address", "missing": excerpt(path, 60), "choices": scene_choices()}
+        return templates.TemplateResponse(request, "embed_error.html", {"refused": refused}, status_code=404)
     near = "class" if path.rstrip("/") in ("/j", "/join") or path.startswith("/j/") else ""
-    near = "embed" if path.startswith("/embed") else near
-    scenes = [{"id": k, "title": s.title} for k, s in SCENES.items()]
-    context = {"missing": excerpt(path, 60), "nowhere": {"near": near, "scenes": scenes}}
+    context = {"missing": excerpt(path, 60), "nowhere": {"near": near}}
     return templates.TemplateResponse(request, "404.html", context, status_code=404)
 
 

@@ -27,6 +27,7 @@ from app.settings import ROOT
 from app.viz.chapter import ABOUT
 from app.viz.page_model import SLIDER_STEPS, unit_text
 from app.web.compression import negotiate
+from app.web.embed_views import embeddable
 from app.web.embed_views import offers as embed_offers
 from app.web.mathml import mathml
 from app.web.prose import prose_html
@@ -123,6 +124,7 @@ def vendor_ready() -> bool:
 
 templates.env.globals["static"] = static
 templates.env.globals["embed_offers"] = embed_offers  # the scene page's frames for a course page
+templates.env.globals["embeddable"] = embeddable  # the plots a frame may show beside the animation
 templates.env.globals["vendor_ready"] = vendor_ready
 templates.env.globals["chapter_about"] = ABOUT
 templates.env.globals["slider_steps"] = SLIDER_STEPS  # the controls' slider resolution, for the browser

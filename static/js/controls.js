@@ -187,7 +187,8 @@ export function bindControls(form, handlers, delay = 150) {
     });
     number.addEventListener("change", () => fire(true, false));
   }
-  for (const sel of form.querySelectorAll("select")) sel.addEventListener("change", () => fire(true, false));
+  // a setting's select has a name (method, rtol); a select without one (the course-page frame's plot) is not a run's
+  for (const sel of form.querySelectorAll("select[name]")) sel.addEventListener("change", () => fire(true, false));
   form.addEventListener("submit", (event) => { event.preventDefault(); fire(true, false); });
   const reset = form.querySelector('[data-action="reset"]');
   if (reset) reset.addEventListener("click", () => { resetControls(form); fire(true); });

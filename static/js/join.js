@@ -80,8 +80,17 @@ function verdictView(box, r) {
   const detail = (r.data?.detail || `The answer could not be checked (${r.status}).`).replace(/^answer: /, "");
   const busy = r.status === 429 || r.status === 503;
   // a busy server is no fault of the answer: said as what to do, never as the server's words about derivations
-  const said = busy ? "The server is still busy with your earlier work; press Check again in a moment (an answer is never counted twice)." : `${detail.charAt(0).toUpperCase()}${detail.slice(1)}`;
+  // after "Not checked:" the server's words as they are (as after "Incorrect:"): a message that opens with the
+  // student's symbol (x) keeps its case (inst-c 14)
+  const said = busy ? "The server is still busy with your earlier work; press Check again in a moment (an answer is never counted twice)." : detail;
   box.append(el("p", {}, el("strong", { text: busy ? "Busy" : "Not checked" }), `: ${said}`));
+}
+
+/** A message shown alone, as a sentence: its first letter a capital only when it opens with a word of the language
+ *  (two or more small letters then a space), never a symbol the student typed (x, theta_dot); the one place a
+ *  message of the server is capitalised on this page. */
+function sentence(text) {
+  return /^[a-z]{2,} /.test(text) ? `${text.charAt(0).toUpperCase()}${text.slice(1)}` : text;
 }
 
 /** A verdict's message as [its opening word, the rest]: "Correct: this is T." → ["Correct", "this is T."]; a
@@ -172,12 +181,22 @@ function stepView(a, item, practice, s, index) {
     reveal.setAttribute("aria-expanded", String(!shown.hidden));
     reveal.textContent = shown.hidden ? "Show this step" : "Hide this step";
   });
+  // done in words, not by the border's colour alone (inst-c 16)
+  const doneLabel = el("p", { className: "practice-done-label", text: "Done: this step is answered right." });
+  doneLabel.hidden = !done.has(key);
+  form.insertBefore(doneLabel, form.querySelector(".practice-row"));
   if (done.has(key)) form.classList.add("step-done");
   let pending = null; // {answer, attempt}: a press of Check not yet answered; pressing again sends the same id
   form.addEventListener("submit", async (event) => {
     event.preventDefault();
     const answer = input.value.trim();
-    if (!answer) return;
+    if (!answer) {
+      // nothing to check: the old verdict goes, and the box says what to do (inst-c 15)
+      box.dataset.verdict = "empty";
+      box.replaceChildren(el("p", { text: "Type an answer first." }));
+      input.focus();
+      return;
+    }
     button.disabled = true;
     if (!pending || pending.answer !== answer) pending = { answer, attempt: attemptId() };
     const body = { ...target, answer, attempt: pending.attempt };
@@ -191,10 +210,16 @@ function stepView(a, item, practice, s, index) {
       checking = turn.catch(() => null);
       const r = await turn;
       verdictView(box, r);
+      const late = a.due && new Date(a.due) < new Date();
+      if (late && r.status === 200 && (r.data.verdict === "correct" || r.data.verdict === "equivalent")) {
+        // right, but after the due time: said on the card itself, not only in the assignment's header (inst-c 17)
+        box.append(el("p", { className: "verdict-late", text: "Right, but late: it is recorded after the due time and does not count toward the grade." }));
+      }
       if (r.status !== 429 && r.status !== 503) pending = null; // answered: the next press is a new attempt
       if (r.status === 200 && (r.data.verdict === "correct" || r.data.verdict === "equivalent")) {
         done.add(key);
         form.classList.add("step-done");
+        doneLabel.hidden = false;
         progress();
       }
       if (r.status === 403) leave(CLOSED);
@@ -360,7 +385,7 @@ $("join-form").addEventListener("submit", async (event) => {
     return;
   }
   if (r.status !== 200) {
-    $("join-status").textContent = r.data?.detail || `Not joined (${r.status}).`;
+    $("join-status").textContent = sentence(r.data?.detail || `Not joined (${r.status}).`);
     if (r.status === 422 && String(r.data?.detail).includes(" is taken in this class")) {
       // the name is taken: perhaps it is theirs, from another device; the way back is opened, filled in
       $("rejoin-code").value = code;
@@ -403,7 +428,7 @@ $("rejoin-form").addEventListener("submit", async (event) => {
   }
   if (r.status !== 200) {
     const detail = r.data?.detail || `Not opened (${r.status}).`;
-    $("join-status").textContent = `${detail.charAt(0).toUpperCase()}${detail.slice(1)}`;
+    $("join-status").textContent = sentence(detail);
     return;
   }
   await enter(r);

@@ -13,7 +13,8 @@
  *                         is drawn, the panels at once, the practice step once practice mode has built it
  *   bindViewLink()        the "Link to this view" button: "Link copied", or where copying is refused the link
  *                         selected in a field to copy by hand
- *   bindEmbedOffer()      the scene page's course-page frames (iframe code) with this site's address
+ *   bindEmbedOffer()      the scene page's course-page frames (iframe code) with this site's address, the plot
+ *                         chosen and the settings as they are now (embed.js restores them)
  *
  * The fragment's own keys have a hyphen, which no declared name can have, so they never meet a control's
  * name; a fragment without "=" is an ordinary anchor (#outcome) and is left alone.
@@ -39,8 +40,9 @@ document.addEventListener("focusin", (event) => {
   if (step) lastStep = step;
 });
 
-/** The view now, as fragment fields (URLSearchParams). */
-function viewFields() {
+/** The simulation's view now, as fragment fields (URLSearchParams): the controls changed from their defaults and
+ * the instant the animation shows: what an embed page (embed.js) restores as the scene page does. */
+function simulationFields() {
   const fields = new URLSearchParams();
   const form = controlsForm();
   if (form) {
@@ -58,6 +60,12 @@ function viewFields() {
     // the instant shown: the sample index times the samples' spacing
     fields.set(TIME, String(Number((Number(scrub.value) * dt).toPrecision(6))));
   }
+  return fields;
+}
+
+/** The view now, as fragment fields (URLSearchParams): the simulation's, then the open panels and practice. */
+function viewFields() {
+  const fields = simulationFields();
   const open = [];
   for (const section of document.querySelectorAll(".panels > section.panel[id]")) {
     const button = section.querySelector(":scope > h3 > button.fold");
@@ -109,13 +117,15 @@ export function restoreControls(form = controlsForm()) {
 
 /** A note above the controls when the link asked for values the page could not take: the defaults are shown. */
 function showIgnored(form, ignored) {
-  form.querySelector(".link-note")?.remove();
+  form.parentElement?.querySelector(".link-note")?.remove();
   if (!ignored.length) return;
   const note = document.createElement("p");
   note.className = "link-note";
   note.setAttribute("role", "status");
   note.textContent = `This link was cut or changed: ${ignored.join("; ")}. The page shows the default value instead; check the link you were given.`;
-  form.prepend(note);
+  // a compact embed hides its form: the note goes just before it, in sight
+  if (form.hidden) form.before(note);
+  else form.prepend(note);
 }
 
 /** Resolves once selector matches under the document (at once if it does already). */
@@ -193,6 +203,8 @@ export function bindViewLink() {
       ]);
       status.dataset.copied = "yes";
       status.replaceChildren(Object.assign(document.createElement("strong"), { textContent: "Link copied" }), " to the clipboard: ", shown);
+      // the message pushes the lines below it down, out of the controls' scrolled box: bring the next one back
+      inSight();
     } catch {
       status.dataset.copied = "no";
       const field = Object.assign(document.createElement("input"), {
@@ -202,16 +214,48 @@ export function bindViewLink() {
       status.replaceChildren(label, field);
       field.focus();
       field.select();
+      inSight();
     }
   });
 }
 
-/** The course-page frames the scene page offers (templates/_simulation.html): each code with this site's address. */
+/** The last line of the controls (the course-page offer, else the link's message) scrolled into the controls'
+ * box and the window, where the message about the link pushed it out of sight. */
+function inSight() {
+  const last = document.querySelector("#embed-offer > summary") || document.getElementById("view-link-status");
+  last?.scrollIntoView({ block: "nearest" });
+}
+
+/**
+ * The course-page frames the scene page offers (templates/_simulation.html): each code with this site's address,
+ * the plot chosen beside the animation (?panel=) and the settings as they are now in the fragment, which the
+ * embed page restores (embed.js); rewritten whenever a control or the plot's choice changes.
+ */
 export function bindEmbedOffer() {
-  for (const code of document.querySelectorAll("textarea.embed-code[data-src]")) {
-    const src = new URL(code.dataset.src, window.location.origin).toString();
-    const frame = Object.assign(document.createElement("iframe"), { src, title: code.dataset.title, width: "100%", height: code.dataset.height });
-    code.value = frame.outerHTML;
-    code.addEventListener("focus", () => code.select());
-  }
+  const codes = [...document.querySelectorAll("textarea.embed-code[data-src]")];
+  if (!codes.length) return;
+  const plot = document.getElementById("embed-panel");
+  const write = () => {
+    // the settings only: a frame in a course page starts at t = 0 (the instant shown here moves as it plays)
+    const fields = simulationFields();
+    fields.delete(TIME);
+    for (const code of codes) {
+      const src = new URL(code.dataset.src, window.location.origin);
+      if (plot?.value) src.searchParams.set("panel", plot.value);
+      src.hash = [...fields.keys()].length ? fields.toString() : "";
+      const frame = Object.assign(document.createElement("iframe"), { src: src.toString(), title: code.dataset.title, width: "100%", height: code.dataset.height });
+      code.value = frame.outerHTML;
+    }
+  };
+  write();
+  for (const code of codes) code.addEventListener("focus", () => code.select());
+  // a value typed, a slider moved, the plot chosen; a body dragged in the animation or a reset settles into a
+  // new run, which paints
+  for (const kind of ["input", "change", "lagrange:painted"]) document.addEventListener(kind, write);
+  const offer = document.getElementById("embed-offer");
+  offer?.addEventListener("toggle", () => {
+    write();
+    // opened at the foot of the controls' scrolled box: its codes come into sight
+    if (offer.open) offer.scrollIntoView({ block: "nearest" });
+  });
 }

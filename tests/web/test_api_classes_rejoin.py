@@ -25,8 +25,8 @@ def test_a_student_gets_back_to_their_record_on_another_device(client, classes):
     taken = client.post(f"/api/classes/{code}/join", json={"name": "ana"})
     assert taken.status_code == 422 and taken.json()["loc"] == ["body", "name"]
     assert taken.json()["detail"] == (
-        "the name 'ana' is taken in this class: if it is yours, choose “I joined before on another device” and type "
-        "your recovery code (or ask your teacher for a new one); else choose another name")
+        "The name “ana” is taken in this class: if it is you, choose “I joined before on another device” and type "
+        "your recovery code (or ask your teacher for a new one); otherwise choose another name.")
 
     # another device: the pseudonym and the code, typed loosely (lower case, spaces for dashes)
     again = client.post(f"/api/classes/{code.lower()}/rejoin",

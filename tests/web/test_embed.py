@@ -49,15 +49,31 @@ def test_the_compact_view_keeps_the_animation_and_one_panel_and_hides_the_form(c
     assert '<form id="controls" class="controls" aria-label="Simulation settings" novalidate hidden>' in html
 
 
+def _words(html: str) -> str:
+    return re.sub(r"\s+", " ", re.sub(r"<[^>]+>", "", html))
+
+
+def _fits_a_frame(html: str) -> None:
+    """An embed error page (inst-c 25): no site header or footer, no code words, and a link that opens the book
+    in the whole window."""
+    assert 'class="site-header"' not in html and 'class="site-footer"' not in html
+    assert "?panel=" not in _words(html) and "?view=" not in _words(html) and "<code>" not in html
+    assert '<a class="embed-full" href="/" target="_top">Open this book</a>' in html
+
+
 def test_an_unknown_view_is_refused_with_the_views_there_are(client):
-    page = client.get("/embed/scenes/pulley?view=tiny")
+    page = client.get("/embed/scenes/pulley?view=tiny&panel=energy")
     assert page.status_code == 422
-    text = re.sub(r"\s+", " ", re.sub(r"<[^>]+>", "", page.text))
-    assert "“tiny” is not a view of the embedded page of three masses on pulleys" in text
-    assert (
-        "The view of an embedded page is one of: full, compact" in text
-        and "Leave out ?view= for the full view." in text
-    )
+    _fits_a_frame(page.text)
+    text = _words(page.text)
+    assert "This frame asks for a view of the three masses on pulleys that the book does not have" in text
+    assert "The frame's address names the view “tiny”. Change it to one of these:" in text
+    # each view by what it shows, its address keeping the plot asked for
+    choices = re.findall(r'<li><a href="([^"]+)">([^<]+)</a></li>', page.text)
+    assert [(h.replace("&amp;", "&"), t.split(":")[0]) for h, t in choices] == [
+        ("/embed/scenes/pulley?panel=energy", "Full"), ("/embed/scenes/pulley?view=compact&panel=energy", "Compact")]  # fmt: skip
+    for href, _ in choices:
+        assert client.get(href.replace("&amp;", "&")).status_code == 200
 
 
 def test_the_scene_page_offers_each_view_as_a_frame_with_its_height(client):
@@ -69,7 +85,14 @@ def test_the_scene_page_offers_each_view_as_a_frame_with_its_height(client):
     frames = re.findall(r'data-src="([^"]+)" data-height="(\d+)"', offer[1])
     assert frames == [("/embed/scenes/pulley", str(VIEWS["full"]["height"])),
                       ("/embed/scenes/pulley?view=compact", str(VIEWS["compact"]["height"]))]  # fmt: skip
-    assert "LAGRANGE_EMBED_ANCESTORS" in offer[1]
+    # in a lecturer's words (inst-c 22): no setting's name, no address code; the plots chosen by their titles
+    words = _words(offer[1])
+    assert "ask whoever runs this server to allow your course site" in words
+    assert "LAGRANGE_" not in offer[1] and "panel=" not in words
+    plots = re.findall(r'<option value="([^"]*)"[^>]*>([^<]+)</option>', offer[1])
+    assert plots[0] == ("", "None: the animation alone") and ("energy", "Energy against time") in plots
+    for kind, _ in plots[1:]:
+        assert client.get(f"/embed/scenes/pulley?panel={kind}").status_code == 200
     # each offered address is a page that answers
     for src, _ in frames:
         assert client.get(src.replace("&amp;", "&")).status_code == 200
@@ -80,17 +103,31 @@ def test_one_panel_may_be_asked_for(client):
     assert PANEL.findall(html) == ["animation-2d", "phase"]
 
 
-def test_an_unknown_panel_is_refused_with_the_panels_there_are(client):
-    page = client.get("/embed/scenes/simple-pendulum?panel=derivation")
+def test_an_unknown_panel_is_refused_with_the_panels_there_are_by_their_titles(client):
+    page = client.get("/embed/scenes/simple-pendulum?panel=energ")
     assert page.status_code == 422
-    text = re.sub(r"<[^>]+>", "", page.text)
-    assert "“derivation” is not a panel of the embedded page of simple pendulum" in text
-    assert "energy, phase," in text and "Leave out ?panel=" in text
+    _fits_a_frame(page.text)
+    text = _words(page.text)
+    assert "This frame asks for a plot that the simple pendulum does not have" in text
+    assert "The frame's address names the plot “energ”. Change it to one of the plots" in text
+    choices = re.findall(r'<li><a href="([^"]+)">([^<]+)</a></li>', page.text)
+    assert choices[0] == ("/embed/scenes/simple-pendulum?panel=energy", "Energy against time")
+    assert choices[-1] == ("/embed/scenes/simple-pendulum", "None: the animation alone")
+    for href, _ in choices:
+        assert client.get(href).status_code == 200
 
 
-def test_an_unknown_scene_is_a_404_listing_the_scenes(client):
-    page = client.get("/embed/scenes/no-such-scene")
-    assert page.status_code == 404 and "/embed/scenes/simple-pendulum" in page.text
+@pytest.mark.parametrize("address", ["/embed/scenes/simple-pend", "/embed/simple-pendulum"])
+def test_an_unknown_scene_is_a_404_listing_the_scenes_by_title(client, address):
+    page = client.get(address)
+    assert page.status_code == 404
+    _fits_a_frame(page.text)
+    assert "This frame's address names no scene of the book" in _words(page.text)
+    choices = re.findall(r'<li><a href="([^"]+)">([^<]+)</a></li>', page.text)
+    assert ("/embed/scenes/simple-pendulum", "Simple pendulum") in choices
+    assert ("/embed/scenes/incline-block", "Block on a fixed incline") in choices
+    # titles only: no raw id beside a title
+    assert "incline-block" not in _words(page.text)
 
 
 def test_by_default_no_site_may_frame_an_embed_page(client):

@@ -10,8 +10,8 @@ import pytest
     [
         ("/j/", "This class link has no class code", 'href="/join"'),
         ("/j", "This class link has no class code", "/j/K34EKX"),
-        ("/embed", "No embedded page at", 'href="/embed/scenes/simple-pendulum"'),
-        ("/embed/simple-pendulum", "No embedded page at", "?panel="),
+        ("/embed", "This frame's address names no scene of the book", 'href="/embed/scenes/simple-pendulum"'),
+        ("/embed/simple-pendulum", "This frame's address names no scene of the book", 'target="_top">Open this book'),
         ("/no-such-page", "No page at", 'href="/playground"'),
     ],
 )

@@ -134,8 +134,8 @@ def join(db: Database, code: str, name: str, login: str | None = None) -> tuple[
 
 def _taken(name: str) -> Refused:
     return Refused(
-        f"the name {name!r} is taken in this class: if it is yours, choose “I joined before on another device” "
-        "and type your recovery code (or ask your teacher for a new one); else choose another name",
+        f"The name “{name}” is taken in this class: if it is you, choose “I joined before on another device” "
+        "and type your recovery code (or ask your teacher for a new one); otherwise choose another name.",
         name, ("name",),
     )
 
