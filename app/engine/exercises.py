@@ -9,9 +9,8 @@ from typing import Any
 import sympy as sp
 
 from app.engine.check import allowed_names, checkable_equilibria, conserved_momenta, exercises, problem
-from app.engine.check_problem import has_springs
 from app.engine.derive import Derivation
-from app.engine.mistakes import POINTERS, without_springs
+from app.engine.mistakes import POINTERS, has_springs, without_springs
 from app.engine.report import Printer, display
 
 

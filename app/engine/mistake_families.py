@@ -405,6 +405,12 @@ def _springs(term: sp.Expr, dynamic: set[sp.Symbol]) -> list[tuple[sp.Expr, sp.E
     return out
 
 
+SIGN_OF_KIND = {
+    "the gravitational energy": "a height is measured upward, against gravity",
+    "the spring energy": "a spring's energy is never negative",
+}
+
+
 def kind_of_term(term: sp.Expr, d: Derivation) -> str:
     names = {s.name for s in term.free_symbols}
     if "g" in names:
@@ -460,8 +466,7 @@ def potential_mistakes(d: Derivation) -> Iterator[Mistake]:
                 "term_sign",
                 f"the sign of your {kind.removeprefix('the ')} {spoken(-term)}",
                 term,
-                "a height is measured upward, against gravity, and a spring's energy is never negative"
-                if kind != "the term"
-                else "U is the work done against the force",
+                # each kind has its own reason: no spring is spoken of in a term of gravity
+                SIGN_OF_KIND.get(kind, "U is the work done against the force"),
                 sp.expand(U - 2 * term),
             )

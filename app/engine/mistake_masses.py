@@ -56,12 +56,13 @@ def wrong_masses(d: Derivation, step: str, truth: sp.Expr, masses: list[sp.Symbo
                     else f"your term {spoken(short_form(term.xreplace({s: r})))}"
                 )
                 owner = _owner(d, s) or "one body"
+                # the reason opens with words, never with a symbol: a page capitalises its first letter (m₁ is no M₁)
                 if r == total:
-                    why = f"{spoken(total)} is the total mass, and this term belongs to {owner} alone (mass {unicode(s.name)})"
+                    why = f"this term belongs to {owner} alone (mass {unicode(s.name)}), and {spoken(total)} is the total mass"
                 else:
                     why = (
-                        f"{unicode(r.name)} belongs to {_owner(d, r) or 'another body'}, and this term comes from "
-                        f"{owner} (mass {unicode(s.name)})"
+                        f"this term comes from {owner} (mass {unicode(s.name)}), and {unicode(r.name)} belongs to "
+                        f"{_owner(d, r) or 'another body'}"
                     )
                 yield Mistake(
                     f"{step}.wrong_mass.{slug(sp.sstr(term))[:40]}.{s.name}.{slug(sp.sstr(r))}",

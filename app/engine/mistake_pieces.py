@@ -23,7 +23,7 @@ answer gets the same words on an idle and on a busy machine.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from fractions import Fraction
 
 import sympy as sp
@@ -39,6 +39,7 @@ from app.engine.mistake_families import (
     term_key,
 )
 from app.engine.mistake_other import linear
+from app.engine.mistakes import has_springs
 from app.engine.names import unicode
 
 MAX_PIECES = 12  # terms of a truth taken one at a time (a longer truth is left to the listed families)
@@ -69,7 +70,7 @@ def _has_half(p: sp.Expr) -> bool:
     return bool(coefficient.is_Rational) and abs(coefficient.q) == 2
 
 
-def _swap(expr: sp.Expr) -> sp.Expr:
+def swap_sin_cos(expr: sp.Expr) -> sp.Expr:
     """sin ↔ cos in every sine and cosine."""
     return expr.replace(
         lambda e: isinstance(e, (sp.sin, sp.cos)),
@@ -82,11 +83,20 @@ def _is_force_of_u(d: Derivation, step: str, p: sp.Expr) -> bool:
     return step == "equation" and d.mechanics.U is not None and not p.has(*rates) and p != 0
 
 
-def _derivative_why(p: sp.Expr, coordinate: str) -> str:
-    """Where a swapped sine in an equation's velocity-free term comes from: ∂L/∂q, differentiated."""
+def _derivative_why(p: sp.Expr, coordinate: str, coordinates: Iterable[sp.Symbol]) -> str:
+    """Where a swapped sine in an equation's velocity-free term comes from: ∂L/∂q, differentiated; or, where the
+    angle is a fixed parameter (an incline's α), the component of gravity taken, which no derivative touches."""
     trig = sorted(p.atoms(sp.sin, sp.cos), key=sp.default_sort_key)[0]
     x = trig.args[0]
     angle = spoken(x) if x.is_Symbol else f"({spoken(x)})"
+    if not x.free_symbols & set(coordinates):
+        # ∂/∂q leaves a fixed angle's sine and cosine as they are: along a slope at α gravity's part is g sin α,
+        # across it g cos α, so the swap is a slip of geometry made before any derivative
+        return (
+            f"{angle} is a fixed angle of the set-up, not a coordinate, so no derivative acts on its sine or cosine: "
+            f"the slip is in the component of gravity taken (along a slope at {angle} it is g sin {angle}, across "
+            f"it g cos {angle})"
+        )
     # d(cos x)/dx = −sin x and d(sin x)/dx = cos x: the truth's sine came from a cosine, and its cosine from a sine
     rule = (
         f"the derivative of cos {angle} is −sin {angle}"
@@ -108,7 +118,7 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
     if step == "omega_squared":
         return
     base = f"{step}.piece"
-    yield from _sums(truth, base)
+    yield from _sums(truth, base, has_springs(d))
     rates = (*d.table.qd, *d.table.qdd)
     for p in _terms(truth):
         # the piece as a textbook prints it, once (the student's own piece is a multiple of it, or it swapped)
@@ -158,20 +168,20 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
         if step != "momentum":  # a momentum short of a factor is named by that factor (app.engine.check)
             yield from _factors(p, truth, base, key, rates, d.table.params)
         if p.has(sp.sin, sp.cos):
-            swapped = _swap(p)
+            swapped = swap_sin_cos(p)
             # in an equation, a velocity-free term is a derivative of U (or of T by q): there a swap is a slip of
             # differentiating (d(−cos θ)/dθ = sin θ taken as cos θ), the positions being checked in T and U
             why = (
-                _derivative_why(p, d.table.names[k])
+                _derivative_why(p, d.table.names[k], d.table.q)
                 if step in ("equation", "acceleration") and k is not None and not p.has(*rates)
                 else "check which component of the position has the sine and which the cosine, at a small angle"
             )
             yield Mistake(
-                f"{base}.sin_cos.{key}", "sin_cos", f"sin and cos swapped in your term {spoken(_swap(short))}",
+                f"{base}.sin_cos.{key}", "sin_cos", f"sin and cos swapped in your term {spoken(swap_sin_cos(short))}",
                 p, why, truth - p + swapped,
             )  # fmt: skip
             yield Mistake(
-                f"{base}.sin_cos_height.{key}", "sin_cos", f"sin and cos swapped in your term {spoken(-_swap(short))}",
+                f"{base}.sin_cos_height.{key}", "sin_cos", f"sin and cos swapped in your term {spoken(-swap_sin_cos(short))}",
                 p, why, truth - p - swapped,
             )  # fmt: skip
     yield from _whole(d, step, truth, base)
@@ -356,8 +366,9 @@ WHOLE_SIGN_WHY = {
 }
 
 
-def _sums(truth: sp.Expr, base: str) -> Iterator[Mistake]:
-    """The sign of one term inside a sum held in a square or a product: (x₂ − x₁ − l₀) as (x₁ + x₂ − l₀)."""
+def _sums(truth: sp.Expr, base: str, springs: bool) -> Iterator[Mistake]:
+    """The sign of one term inside a sum held in a square or a product: (x₂ − x₁ − l₀) as (x₁ + x₂ − l₀); in a
+    system without a spring, only inside an angle (a sum elsewhere is no stretch, and its sign is a term's)."""
     inner = [a for a in sp.preorder_traversal(truth) if isinstance(a, sp.Add) and a != truth]
     seen: list[sp.Expr] = []
     for a in sorted(set(inner), key=sp.default_sort_key)[:MAX_SUMS]:
@@ -370,6 +381,8 @@ def _sums(truth: sp.Expr, base: str) -> Iterator[Mistake]:
             # the reason fits where the sum sits: inside a sine or cosine it is an angle between two directions
             # (the rods' θ₁ − θ₂), elsewhere a stretch or a distance between two ends
             angle = any(isinstance(f, sp.sin | sp.cos) and a in f.args for f in truth.atoms(sp.sin, sp.cos))
+            if not (angle or springs):
+                continue
             even = all(isinstance(f, sp.cos) for f in truth.atoms(sp.sin, sp.cos) if a in f.args) and angle
             if even and len(a.args) == 2 and changed.could_extract_minus_sign():
                 # cos(−x) = cos x: −(θ₁ + θ₂) is written θ₁ + θ₂, and the sign changed is the other term's
@@ -394,8 +407,9 @@ def _whole(d: Derivation, step: str, truth: sp.Expr, base: str) -> Iterator[Mist
         yield Mistake(
             f"{base}.sin_cos_throughout", "sin_cos", "sin and cos swapped throughout (the positions written with "
             "the sine and the cosine exchanged)", None,
-            "at a small angle the horizontal part of a pendulum's position is small: l sin θ across, −l cos θ down",
-            _swap(truth),
+            "the part of a position along the line its angle is measured from carries the angle's cosine, the part "
+            "across that line its sine",
+            swap_sin_cos(truth),
         )  # fmt: skip
     if step == "acceleration":
         coordinates = set(d.table.q)

@@ -32,6 +32,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from app.engine.derive import Derivation
+from app.engine.dimensions import STIFFNESS_PLAIN, STIFFNESS_WORDS
 
 
 @dataclass(frozen=True)
@@ -41,6 +42,16 @@ class Rule:
     hint: str
     build: Callable[[Derivation, str, int | None], sp.Expr | None]
     name: str = ""  # what went wrong, in a few words (the hint says why)
+
+
+STIFFNESS_UNITS = ("N/m", "kg/s²", "kg/s^2", "kg s⁻²")
+
+
+def has_springs(d: Derivation) -> bool:
+    """Whether the system may hold a spring: a parameter with a stiffness's unit, or no parameter with a unit.
+    The one answer to "does this problem have springs" for every message family."""
+    units = [p.unit for p in d.system.parameters if p.unit]
+    return not units or any(u.replace(" ", "") in STIFFNESS_UNITS for u in units)
 
 
 # the clauses of the hints about springs, left out of a system without one (check_problem.has_springs)
@@ -57,7 +68,8 @@ def without_springs(text: str | None) -> str | None:
         return text
     for clause in SPRING_CLAUSES:
         text = text.replace(clause, "")
-    return text
+    # a quantity in kg/s² is no spring constant where there is no spring
+    return text.replace(STIFFNESS_WORDS, STIFFNESS_PLAIN)
 
 
 POINTERS = {
@@ -74,7 +86,8 @@ POINTERS = {
     "acceleration": "Write the Euler–Lagrange equations and solve them for q̈; when coordinates are coupled (a "
     "mass matrix with off-diagonal terms), solve the equations together.",
     "hamiltonian": "h = Σ p_k q̇_k − L, written in the coordinates and velocities.",
-    "omega_squared": "At a stable equilibrium r₀ (where U_eff′ = 0), ω² = U_eff″(r₀) / m_eff(r₀).",
+    "omega_squared": "About a stable equilibrium, where the effective potential has zero slope, ω² is the effective "
+    "potential's second derivative there divided by the effective mass (the coefficient of ½ q̇² in T).",
 }
 
 

@@ -5,7 +5,8 @@ equation divided through by m l, or with that term on the right of '=', finds no
 So an equation's term is quoted at the student's scale and without its sign (the sign is the slip, and a
 term moved across '=' shows the other one): "the sign of your g sin(θ) term". Where the student's answer has
 no term of that form (written factored, or merged with another), no term is quoted at all: a diagnosis
-never names a term the answer does not have.
+never names a term the answer does not have.  A term with sin and cos swapped is quoted the same way, at the
+student's scale and with its own sign (θ̈ + (g/R) cos θ: "your term g cos(θ)/R", never m g R cos θ).
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ import dataclasses
 import sympy as sp
 
 from app.engine.mistake_families import Mistake, short_form, spoken
+from app.engine.mistake_pieces import swap_sin_cos
 
 # the families whose name quotes one of the answer's terms by its sign
 _SIGN_FAMILIES = frozenset({"term_sign"})
@@ -22,11 +24,23 @@ _SIGN_FAMILIES = frozenset({"term_sign"})
 
 def as_typed(mistake: Mistake, hint: str, answer: sp.Expr, scale: sp.Expr, step: str) -> tuple[Mistake, str]:
     """``mistake`` and its ``hint`` with the term named as the student's answer holds it (an equation's)."""
-    if step != "equation" or mistake.family not in _SIGN_FAMILIES or mistake.piece is None:
+    if step != "equation" or mistake.piece is None:
+        return mistake, hint
+    terms = {sp.expand(t) for t in sp.Add.make_args(sp.expand(answer))}
+    if mistake.family == "sin_cos" and mistake.name.startswith("sin and cos swapped in your term"):
+        # the answer holds scale × (the piece with sin and cos exchanged), of either sign: quoted as typed
+        swapped = sp.expand(scale * swap_sin_cos(mistake.piece))
+        mine = next((t for t in (swapped, -swapped) if t in terms), None)
+        name = (
+            f"sin and cos swapped in your term {spoken(short_form(mine))}"
+            if mine is not None
+            else "sin and cos swapped in one of your terms"
+        )
+        return dataclasses.replace(mistake, name=name), hint.replace(mistake.name, name)
+    if mistake.family not in _SIGN_FAMILIES:
         return mistake, hint
     # the answer is scale × (truth − 2 p): the student's term is −scale·p
     mine = sp.expand(-scale * mistake.piece)
-    terms = {sp.expand(t) for t in sp.Add.make_args(sp.expand(answer))}
     if mine in terms or -mine in terms:
         unsigned = -mine if mine.could_extract_minus_sign() else mine
         name = f"the sign of your {spoken(short_form(unsigned))} term"
