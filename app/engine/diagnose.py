@@ -18,6 +18,8 @@ says which parts agree.
 
 from __future__ import annotations
 
+import re
+
 from dataclasses import replace
 from typing import Any
 
@@ -61,12 +63,15 @@ _OPENINGS = {
     "limit": "Your {what} is {name}",
     "position_for_velocity": "Your {what} has {name}",
     "wrong_mass": "Your {what} has {name}",
+    "momentum_part": "Your {what} has {name}",
 }
 
 
 def sentence(m: Mistake, what: str) -> str:
     """The hint for a generated mistake: what went wrong, then where in the set-up it comes from."""
-    opening = _OPENINGS.get(m.family, "Your {what} leaves out {name}").format(what=what, name=m.name)
+    # "your" said once: the opening has it, so the name's own "your term" is "the term" here
+    name = re.sub(r"\byour\b", "the", m.name)
+    opening = _OPENINGS.get(m.family, "Your {what} leaves out {name}").format(what=what, name=name)
     return f"{opening}: {m.where}."
 
 

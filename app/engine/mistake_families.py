@@ -452,6 +452,18 @@ def potential_mistakes(d: Derivation) -> Iterator[Mistake]:
                 ),
             )
         kind = kind_of_term(term, d)
+        coefficient, _ = term.as_coeff_Mul()
+        if kind == "the spring energy" and coefficient.is_Rational and coefficient.q == 2:
+            # ½ k × stretch²: the ½ lost gives twice the spring's energy, as the ½ of ½ m v² does in T
+            yield Mistake(
+                f"potential.spring_half.{term_key(term)}",
+                "doubled",
+                "the ½ of ½ k × stretch² left out",
+                term,
+                "a spring's energy is ½ k × stretch², the work done stretching it against a force that grows from "
+                "zero to k × stretch",
+                sp.expand(U + term),
+            )
         if len(terms) > 1:
             yield Mistake(
                 f"potential.term_left_out.{term_key(term)}",

@@ -109,6 +109,32 @@ def _derivative_why(p: sp.Expr, coordinate: str, coordinates: Iterable[sp.Symbol
     )
 
 
+def _halved_why(d: Derivation, step: str, p: sp.Expr) -> str:
+    """Why a piece is whole: a bob's height (a rod's centre would be halfway), or a factor 2 lost in a derivative."""
+    if step == "potential" and d.system.particles and any(s.name == "g" for s in p.free_symbols):
+        # a bob's height is the full length's; R/2 is where a rod's centre would be
+        return (
+            "the mass is a bob at the end, so it rises by the whole length's height; a rod's centre is at half its "
+            "length, but there is no rod's mass here"
+        )
+    if step in ("equation", "momentum", "acceleration"):
+        return (
+            "the whole of this piece belongs in the answer (a factor 2 from differentiating a square, or from the "
+            "chain rule, is easily lost)"
+        )
+    return "the whole of this piece belongs in the answer"
+
+
+def _bob_swing(d: Derivation, step: str, p: sp.Expr) -> bool:
+    """Whether p is a bob's ½ m l² θ̇²: T's term in one angle's velocity squared, in a system of point masses."""
+    if step != "kinetic" or not d.system.particles:
+        return False
+    angles = {a for f in p.atoms(sp.sin, sp.cos) for a in f.args[0].free_symbols}
+    squared = [v for v in d.table.qd if p.as_powers_dict().get(v, 0) == 2]
+    trig = {a for f in (d.mechanics.U or sp.S.Zero).atoms(sp.sin, sp.cos) for a in f.args[0].free_symbols}
+    return _has_half(p) and len(squared) == 1 and not angles and d.table.q[d.table.qd.index(squared[0])] in trig
+
+
 def _label(step: str) -> str:
     return {"kinetic": "T", "potential": "U", "lagrangian": "L", "hamiltonian": "h"}.get(step, "")
 
@@ -126,9 +152,12 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
         shown = spoken(short)
         key = slug(sp.sstr(p))[:48]
         if _is_force_of_u(d, step, p):
+            # gravity by its name (a term with g); no generalized force Q is spoken of, a problem may have none
+            gravity = any(s.name == "g" for s in p.free_symbols)
             yield Mistake(
-                f"{base}.counted_twice.{key}", "counted_twice", f"the force {shown} counted twice", p,
-                "this force comes from U, and ∂L/∂q already holds it: adding it again as a force Q counts it twice",
+                f"{base}.counted_twice.{key}", "counted_twice",
+                f"gravity counted twice (your term {shown} twice)" if gravity else f"the force {shown} counted twice",
+                p, "this force comes from U, and ∂L/∂q already holds it: writing it again beside it counts it twice",
                 truth + p,
             )  # fmt: skip
         elif _has_half(p):
@@ -143,9 +172,15 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
             )  # fmt: skip
         yield Mistake(
             f"{base}.halved.{key}", "halved", f"your term {spoken(short / 2)}, half of what it should be", p,
-            "the whole of this piece belongs in the answer (a factor 2 from differentiating a square, or from "
-            "the chain rule, is easily lost)", truth - p / 2,
+            _halved_why(d, step, p), truth - p / 2,
         )  # fmt: skip
+        if _bob_swing(d, step, p):
+            # ½ (⅓ m l²) θ̇² = ⅙ m l² θ̇²: a uniform rod's T about its end, where the mass is a bob at the end
+            yield Mistake(
+                f"{base}.rod_for_bob.{key}", "rigid", f"a rod's T for a bob (your term {spoken(short / 3)})", p,
+                "a rod's I about its end is ⅓ m × length², but here the mass is a bob at the end of a massless rod or "
+                "string, so all of it moves on the full circle: I = m times the length squared", truth - p + p / 3,
+            )  # fmt: skip
         name, why = _left_out(d, step, p)
         yield Mistake(f"{base}.left_out.{term_key(p)}", "left_out", name, p,
                       why or LEFT_OUT_WHY.get(step, "this term belongs in the answer"), truth - p)  # fmt: skip

@@ -251,10 +251,10 @@ RULES: tuple[Rule, ...] = (
     Rule(
         "force_counted_twice",
         ("equation", "acceleration"),
-        "A force is counted twice: a force that comes from U (such as gravity) is already in ∂L/∂q, so it must not "
-        "be added again as a generalized force Q.",
+        "A force is counted twice: a force that comes from U, such as gravity, is already in ∂L/∂q, so it is not "
+        "written again beside it.",
         _equation("double_force"),
-        "a force of U counted again as a generalized force",
+        "a force of U, such as gravity, counted twice",
     ),
     Rule(
         "chain_rule_in_ddt",

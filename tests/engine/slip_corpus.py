@@ -408,6 +408,15 @@ SLIPS = [
     ("pulley", "potential", None, "M*g*(y1 + y2)/2 + m1*g*y1 + m2*g*y2", r"sign of your gravitational energy"),
     ("simple-pendulum", "kinetic", None, "m*g*R**2*theta_dot**2/2", r"a factor g \(m/s²\) too many\."),
     ("simple-pendulum", "equation", "theta", "theta_ddot + g*cos(theta)/R", r"swapped in your term g cos\(θ\)/R"),
+    # review student-f, B: slips named that went unnamed (the ½ of a spring's U, a wrong mass in an acceleration,
+    # a momentum's cross term in words, gravity counted twice without a Q)
+    ("rail-two-body", "potential", None, "k*(x2 - x1 - l0)**2", r"the ½ of ½ k × stretch² left out"),
+    ("rail-two-body", "acceleration", "x2", "-k*(x2 - x1 - l0)/m1", r"wrong mass: m₁ where m₂ belongs"),
+    ("pulley", "momentum", "y2", "m2*y2_dot + M*y2_dot/4", r"the ẏ₁ term missing.*momentum conjugate to y₂"),
+    ("simple-pendulum", "acceleration", "theta", "-g*sin(theta)/R - g*sin(theta)/R", r"gravity, counted twice"),
+    # a rod's formulas typed for a bob (review student-f, 14): named as the rod's, with the rod's reason
+    ("simple-pendulum", "kinetic", None, "m*R**2*theta_dot**2/6", r"a rod's T for a bob.*⅓ m × length²"),
+    ("simple-pendulum", "potential", None, "m*g*(R/2)*(1 - cos(theta))", r"half.*a rod's centre is at half its length"),
     # a cross term's sign, explained from the geometry that gives it (student-e, 11)
     (
         "movable-incline",
