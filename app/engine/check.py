@@ -246,7 +246,7 @@ def _judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         mistake, hint = found
         if mistake.family == "units":
             return _units_verdict(pb, printer, mistake, hint)
-        mistake, hint = as_typed(mistake, hint, answer, scale, pb.step)
+        mistake, hint = as_typed(mistake, hint, answer, scale, pb.step, pb.groups.positions)
         if pb.relation == "exact" or equal(a, _known(mistake.expr, pb.groups)):
             # the answer is this mistake as written: show the difference as the change to the engine's own
             # pieces (m₂ l₁ l₂ θ̇₁ θ̇₂ (sin(θ₁ − θ₂) − cos(θ₁ − θ₂)), not its sines and cosines expanded)

@@ -144,7 +144,7 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
     if step == "omega_squared":
         return
     base = f"{step}.piece"
-    yield from _sums(truth, base, has_springs(d))
+    yield from _sums(truth, base, has_springs(d), d.table.q)
     rates = (*d.table.qd, *d.table.qdd)
     for p in _terms(truth):
         # the piece as a textbook prints it, once (the student's own piece is a multiple of it, or it swapped)
@@ -401,7 +401,7 @@ WHOLE_SIGN_WHY = {
 }
 
 
-def _sums(truth: sp.Expr, base: str, springs: bool) -> Iterator[Mistake]:
+def _sums(truth: sp.Expr, base: str, springs: bool, coordinates: Iterable[sp.Symbol] = ()) -> Iterator[Mistake]:
     """The sign of one term inside a sum held in a square or a product: (x₂ − x₁ − l₀) as (x₁ + x₂ − l₀); in a
     system without a spring, only inside an angle (a sum elsewhere is no stretch, and its sign is a term's)."""
     inner = [a for a in sp.preorder_traversal(truth) if isinstance(a, sp.Add) and a != truth]
@@ -431,10 +431,24 @@ def _sums(truth: sp.Expr, base: str, springs: bool) -> Iterator[Mistake]:
             )
             yield Mistake(
                 f"{base}.inner_sign.{slug(sp.sstr(a))[:32]}.{slug(sp.sstr(term))[:16]}", "inner_sign",
-                f"{spoken(changed)} where {spoken(a)} belongs: the sign of {spoken(term)} ({why})", a,
+                f"{sum_words(changed, coordinates)} where {sum_words(a, coordinates)} belongs: the sign of "
+                f"{spoken(term)} ({why})", a,
                 "draw the two directions and measure both angles from the same line" if angle
                 else "draw the two ends and ask which way each coordinate moves them", wrong,
             )  # fmt: skip
+
+
+def sum_words(a: sp.Expr, coordinates: Iterable[sp.Symbol]) -> str:
+    """A sum as a textbook orders it: the coordinates' terms, those added before those taken away, then the
+    constants (x₂ − x₁ − l₀, never x₂ − l₀ − x₁); a sum that is no stretch as the printer has it."""
+    q = set(coordinates)
+    if not isinstance(a, sp.Add) or not q:
+        return spoken(a)
+    terms = sorted(a.args, key=lambda t: (not (t.free_symbols & q), t.could_extract_minus_sign(), sp.default_sort_key(t)))
+    text = spoken(terms[0])
+    for t in terms[1:]:
+        text += f" − {spoken(-t)}" if t.could_extract_minus_sign() else f" + {spoken(t)}"
+    return text
 
 
 def _whole(d: Derivation, step: str, truth: sp.Expr, base: str) -> Iterator[Mistake]:

@@ -12,18 +12,23 @@ student's scale and with its own sign (θ̈ + (g/R) cos θ: "your term g cos(θ)
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Iterable
 
 import sympy as sp
 
 from app.engine.mistake_families import Mistake, short_form, spoken
-from app.engine.mistake_pieces import swap_sin_cos
+from app.engine.mistake_pieces import sum_words, swap_sin_cos
 
 # the families whose name quotes one of the answer's terms by its sign
 _SIGN_FAMILIES = frozenset({"term_sign"})
 
 
-def as_typed(mistake: Mistake, hint: str, answer: sp.Expr, scale: sp.Expr, step: str) -> tuple[Mistake, str]:
+def as_typed(
+    mistake: Mistake, hint: str, answer: sp.Expr, scale: sp.Expr, step: str, coordinates: Iterable[sp.Symbol] = ()
+) -> tuple[Mistake, str]:
     """``mistake`` and its ``hint`` with the term named as the student's answer holds it (an equation's)."""
+    if mistake.family == "inner_sign" and mistake.piece is not None:
+        return _inner_as_typed(mistake, hint, answer, tuple(coordinates))
     if step != "equation" or mistake.piece is None:
         return mistake, hint
     terms = {sp.expand(t) for t in sp.Add.make_args(sp.expand(answer))}
@@ -47,3 +52,22 @@ def as_typed(mistake: Mistake, hint: str, answer: sp.Expr, scale: sp.Expr, step:
     else:
         name = "the sign of one of your terms"
     return dataclasses.replace(mistake, name=name), hint.replace(mistake.name, name)
+
+
+def _inner_as_typed(
+    mistake: Mistake, hint: str, answer: sp.Expr, coordinates: tuple[sp.Symbol, ...]
+) -> tuple[Mistake, str]:
+    """A sum with one sign changed (a stretch x₁ − x₂ − l₀), quoted as the answer holds it: the answer's sum
+    whose square is that of the catalogue's changed sum (a stretch's sign as a whole does not matter)."""
+    right = mistake.piece
+    for typed in (a for a in sp.preorder_traversal(answer) if isinstance(a, sp.Add)):
+        for term in right.args:
+            changed = right - 2 * term
+            if sp.expand(typed**2 - changed**2) == 0:
+                if not mistake.name.startswith(f"{sum_words(changed, coordinates)} where "):
+                    return mistake, hint
+                rest = mistake.name[mistake.name.index(" where ") :]
+                name = sum_words(typed, coordinates) + rest
+                return dataclasses.replace(mistake, name=name), hint.replace(mistake.name, name)
+    return mistake, hint
+

@@ -417,6 +417,8 @@ SLIPS = [
     # a rod's formulas typed for a bob (review student-f, 14): named as the rod's, with the rod's reason
     ("simple-pendulum", "kinetic", None, "m*R**2*theta_dot**2/6", r"a rod's T for a bob.*⅓ m × length²"),
     ("simple-pendulum", "potential", None, "m*g*(R/2)*(1 - cos(theta))", r"half.*a rod's centre is at half its length"),
+    # a stretch's sign quoted as typed, the right one in a textbook's order (review student-f, 15)
+    ("rail-two-body", "potential", None, "k*(x1 - x2 - l0)**2/2", r"x₁ − x₂ − l₀ where x₂ − x₁ − l₀ belongs"),
     # a cross term's sign, explained from the geometry that gives it (student-e, 11)
     (
         "movable-incline",
