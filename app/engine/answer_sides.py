@@ -77,6 +77,10 @@ _KIND_WORDS = {"parameter": "a parameter", "position": "a coordinate", "velocity
 _MEANT = {"T": "the kinetic energy T", "U": "the potential energy U", "V": "the potential energy V", "L": "the Lagrangian L"}
 # a derivative typed as a quotient of differentials: d/dt(...), dL/dtheta_dot, dT/dx
 _DIFFERENTIALS = re.compile(r"\bd([A-Za-z_]\w*)?\s*/\s*d[A-Za-z_]")
+DERIVATIVE_WORDS = (
+    "a derivative cannot be typed here: work it out, and write the result in the coordinates, their velocities and "
+    "the parameters"
+)
 
 
 def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kinds: dict[str, str]) -> CheckError:
@@ -85,6 +89,8 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
     typed in the other case (L for l)."""
     unknown = "unknown name" in str(exc)
     out = None
+    # d/dt (…) read as a quotient (d over dt times …) is a derivative all the same, anywhere in the answer
+    derivative = isinstance(text, str) and bool(_DIFFERENTIALS.search(text)) and "quotient" in str(exc)
     # a declared name typed with its letters' case changed (L for the length l): names are case-sensitive; names
     # are said as typed, as the box's own list prints them
     near = [
@@ -92,7 +98,9 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
         for n in allowed_names(step, kinds)
         if unknown and n not in (exc.part, "t") and n.lower() == str(exc.part).lower()
     ]
-    if near:
+    if derivative:
+        out = DERIVATIVE_WORDS
+    elif near:
         out = (
             f"{exc.part} is not {_KIND_WORDS.get(kinds[near[0]], 'a name')} here; did you mean "
             f"{near[0]}? A capital and a small letter are different names"
@@ -110,16 +118,22 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
     elif "only these functions may be called" in str(exc) and (apart := _names_then_function(exc.part, allowed_names(step, kinds))):
         # mgRcos(theta): the names and the function typed together read as one unknown function
         out = f"{exc.part} reads as one name: write {apart}(…), with a space or * between the names"
+    elif "only these functions may be called" in str(exc) and (glued := _as_names(exc.part, allowed_names(step, kinds))):
+        # mgR(1 − cos θ): declared names typed together before a bracket read as one function's name
+        out = (
+            f"{exc.part} reads as one name: write {' '.join(glued)} (or {'*'.join(glued)}) for the product, with a "
+            "space or * between the names"
+        )
     elif "only these functions may be called" in str(exc):
         functions = ", ".join(sorted(f for f in FUNCTIONS if f != "Abs"))
-        out = f"{exc.part} is not a function you may use here; the functions are {functions}, and Abs(x) for |x|"
+        bar = isinstance(text, str) and "|" in text  # Abs is named only to a student who typed a bar
+        out = f"{exc.part} is not a function you may use here; the functions are {functions}" + (
+            ", and Abs(x) for |x|" if bar else ""
+        )
     elif exc.part in _QUANTITIES and unknown:
         out = f"{exc.part} is not a name the answer may use: write T and U out in the coordinates, their velocities and the parameters"
     elif unknown and exc.part.startswith("d") and isinstance(text, str) and _DIFFERENTIALS.search(text):
-        out = (
-            "a derivative cannot be typed here: work it out, and write the result in the coordinates, their "
-            "velocities and the parameters"
-        )
+        out = DERIVATIVE_WORDS
     elif step == "acceleration" and exc.part.endswith("_ddot"):
         wanted = unicode(f"{coordinate}_ddot") if coordinate else "the acceleration"
         out = (

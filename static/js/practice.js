@@ -88,6 +88,17 @@ function katexInto(el, latex, display = false) {
 function katexBreaking(el, latex) {
   katexInto(el, `\\displaystyle ${latex}`);
   el.classList.add("math-breaking");
+  // a sum inside sized parentheses (\left( … \right)) is one unbreakable group: where the formula is still
+  // wider than its box (a double pendulum's T on a phone), its parentheses are set at text size, which lets
+  // KaTeX break after the signs inside them too, so the whole answer can be read without scrolling sideways
+  if (el.scrollWidth > el.clientWidth + 1 && /\\left[([]/.test(latex)) {
+    katexInto(el, `\\displaystyle ${unsized(latex)}`);
+  }
+}
+
+/** LaTeX with its sized delimiters written plain: \left( a + b \right) → ( a + b ). */
+function unsized(latex) {
+  return latex.replace(/\\left\s*([([.])/g, (_, d) => (d === "." ? "" : d)).replace(/\\right\s*([)\].])/g, (_, d) => (d === "." ? "" : d));
 }
 
 function keyOf(exercise) {

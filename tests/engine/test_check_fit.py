@@ -5,6 +5,7 @@ as the student typed it."""
 from __future__ import annotations
 
 import re
+import unicodedata
 
 import pytest
 
@@ -62,9 +63,7 @@ def test_a_wrong_mass_reason_opens_with_words_so_m1_is_never_capitalised():
     result = judge(
         step_problem("pulley", "kinetic", None), "m1*y1_dot**2/2 + m1*y2_dot**2/2 + M*(y1_dot + y2_dot)**2/8"
     )
-    assert result["mistake"]["where"] == (
-        "this term comes from the right mass (mass m₂), and m₁ belongs to the left mass"
-    )
+    assert result["mistake"]["where"] == "this term comes from the right mass (mass m₂), and m₁ belongs to the left mass"
 
 
 def test_the_sign_of_gravity_in_u_speaks_of_heights_only():
@@ -89,10 +88,10 @@ def test_a_long_sum_of_mixed_units_is_not_quoted_inside_the_sentence():
         step_problem("pulley", "lagrangian", None),
         "m1*y1_dot**2/2 + m2*y2_dot**2/2 + M*(y1_dot + y2_dot)**2/8 + m1*g*y1 + m2*g*y2 - (m1 + m2 + M)*g",
     )
-    assert result["hint"] == (
+    assert unicodedata.normalize("NFC", result["hint"]) == unicodedata.normalize("NFC",
         "Check the units. Your sum adds an energy (m₁ ẏ₁²/2) to a force (−(M + m₁ + m₂) g), and the terms of a "
         "sum must have the same units."
-    )
+    )  # fmt: skip
     # a short sum is quoted, being the student's piece
     short = judge(step_problem("simple-pendulum", "omega_squared", None), "(m + g)/R")
     assert "m + g adds" in short["hint"] or "g + m adds" in short["hint"], short["hint"]
@@ -107,3 +106,36 @@ def test_a_swapped_term_of_an_equation_is_quoted_as_typed():
 
 def test_the_rule_for_omega_squared_uses_no_coordinate_of_its_own_and_no_program_names():
     assert not re.search(r"r₀|_", POINTERS["omega_squared"]), POINTERS["omega_squared"]
+
+
+def test_a_spring_loses_its_half_and_a_mass_in_an_acceleration_is_named():
+    half = judge(step_problem("rail-two-body", "potential", None), "k*(x2 - x1 - l0)**2")
+    assert half["mistake"]["name"] == "the ½ of ½ k × stretch² left out"
+    mass = judge(step_problem("rail-two-body", "acceleration", "x2"), "-k*(x2 - x1 - l0)/m1")
+    assert mass["mistake"]["name"] == "the wrong mass: m₁ where m₂ belongs"
+
+
+def test_a_momentum_term_left_out_is_said_in_words_and_your_is_said_once():
+    result = judge(step_problem("pulley", "momentum", "y2"), "m2*y2_dot + M*y2_dot/4")
+    assert unicodedata.normalize("NFC", result["mistake"]["name"]) == unicodedata.normalize("NFC", "the ẏ₁ term missing")
+    assert "p_" not in shown(result)
+    swapped = judge(step_problem("incline-block", "potential", None), "m*g*X*cos(alpha)")
+    assert swapped["hint"].lower().count("your") == 1, swapped["hint"]
+
+
+def test_gravity_counted_twice_speaks_of_no_generalized_force():
+    result = judge(step_problem("simple-pendulum", "acceleration", "theta"), "-g*sin(theta)/R - g*sin(theta)/R")
+    assert "counted twice" in result["mistake"]["name"] and "Q" not in shown(result), shown(result)
+
+
+def test_a_rods_formulas_typed_for_a_bob_are_named_with_the_rods_reason():
+    rod = judge(step_problem("simple-pendulum", "kinetic", None), "m*R**2*theta_dot**2/6")
+    assert rod["mistake"]["name"].startswith("a rod's T for a bob") and " l" not in rod["mistake"]["where"]
+    centre = judge(step_problem("simple-pendulum", "potential", None), "m*g*(R/2)*(1 - cos(theta))")
+    assert "a rod's centre is at half its length" in centre["mistake"]["where"]
+    assert "differentiating" not in centre["mistake"]["where"]
+
+
+def test_a_stretch_is_quoted_as_typed_and_the_right_one_in_a_textbooks_order():
+    result = judge(step_problem("rail-two-body", "potential", None), "k*(x1 - x2 - l0)**2/2")
+    assert result["mistake"]["name"].startswith("x₁ − x₂ − l₀ where x₂ − x₁ − l₀ belongs: the sign of l₀")
