@@ -12,6 +12,7 @@ student's scale and with its own sign (θ̈ + (g/R) cos θ: "your term g cos(θ)
 from __future__ import annotations
 
 import dataclasses
+import re
 from collections.abc import Iterable
 
 import sympy as sp
@@ -41,7 +42,7 @@ def as_typed(
             if mine is not None
             else "sin and cos swapped in one of your terms"
         )
-        return dataclasses.replace(mistake, name=name), hint.replace(mistake.name, name)
+        return dataclasses.replace(mistake, name=name), _renamed(hint, mistake.name, name)
     if mistake.family not in _SIGN_FAMILIES:
         return mistake, hint
     # the answer is scale × (truth − 2 p): the student's term is −scale·p
@@ -51,7 +52,7 @@ def as_typed(
         name = f"the sign of your {spoken(short_form(unsigned))} term"
     else:
         name = "the sign of one of your terms"
-    return dataclasses.replace(mistake, name=name), hint.replace(mistake.name, name)
+    return dataclasses.replace(mistake, name=name), _renamed(hint, mistake.name, name)
 
 
 def _inner_as_typed(
@@ -68,6 +69,12 @@ def _inner_as_typed(
                     return mistake, hint
                 rest = mistake.name[mistake.name.index(" where ") :]
                 name = sum_words(typed, coordinates) + rest
-                return dataclasses.replace(mistake, name=name), hint.replace(mistake.name, name)
+                return dataclasses.replace(mistake, name=name), _renamed(hint, mistake.name, name)
     return mistake, hint
 
+
+
+def _renamed(hint: str, old: str, new: str) -> str:
+    """The hint with the mistake's old name replaced, as the hint says it ("your" said once there: the term)."""
+    said = re.compile(r"\byour\b")
+    return hint.replace(old, new).replace(said.sub("the", old), said.sub("the", new))
