@@ -19,7 +19,6 @@ says which parts agree.
 from __future__ import annotations
 
 import re
-
 from dataclasses import replace
 from typing import Any
 

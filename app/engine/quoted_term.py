@@ -61,6 +61,8 @@ def _inner_as_typed(
     """A sum with one sign changed (a stretch x₁ − x₂ − l₀), quoted as the answer holds it: the answer's sum
     whose square is that of the catalogue's changed sum (a stretch's sign as a whole does not matter)."""
     right = mistake.piece
+    if right is None:
+        return mistake, hint
     for typed in (a for a in sp.preorder_traversal(answer) if isinstance(a, sp.Add)):
         for term in right.args:
             changed = right - 2 * term
