@@ -57,6 +57,13 @@ def action_step(d: Derivation) -> dict[str, str]:
     latex = r"\begin{aligned}" + r" \\ ".join(row.replace(" = ", " &= ", 1) for row in rows) + r"\end{aligned}"
     focus = (
         "The true path is a minimum of S only up to the first kinetic focus; for longer times it is a saddle."
+        + (
+            # that focus is of every variation together; a family that varies fewer coordinates has its own (prof-e 17)
+            " That focus is the first for all the coordinates varied together; varying one coordinate alone, the "
+            "others kept on the true path, its focus comes then or later, or never."
+            if len(d.table.q) > 1
+            else ""
+        )
         if kinetic_focus_possible(d)
         else "Here L is at most linear in the coordinates and its mass matrix is constant, so no true path reaches "
         "a kinetic focus: it is a minimum of S for every duration."

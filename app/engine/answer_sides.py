@@ -75,12 +75,19 @@ def read_answer(text: str, step: str, coordinate: str | None, kinds: dict[str, s
 _QUANTITIES = frozenset({"T", "U", "V", "L"})
 _KIND_WORDS = {"parameter": "a parameter", "position": "a coordinate", "velocity": "a velocity", "momentum": "a momentum"}
 _MEANT = {"T": "the kinetic energy T", "U": "the potential energy U", "V": "the potential energy V", "L": "the Lagrangian L"}
-# a derivative typed as a quotient of differentials: d/dt(...), dL/dtheta_dot, dT/dx
-_DIFFERENTIALS = re.compile(r"\bd([A-Za-z_]\w*)?\s*/\s*d[A-Za-z_]")
-DERIVATIVE_WORDS = (
+_DERIVATIVE = (
     "a derivative cannot be typed here: work it out, and write the result in the coordinates, their velocities and "
     "the parameters"
 )
+# functions a student may type under another name
+_FUNCTION_WORDS = {
+    "abs": "an absolute value |x| is typed Abs(x), with a capital A",
+    "ln": "the natural logarithm is typed log(x)",
+    "diff": _DERIVATIVE,
+    "derivative": _DERIVATIVE,
+}
+# a derivative typed as a quotient of differentials: d/dt(...), dL/dtheta_dot, dT/dx
+_DIFFERENTIALS = re.compile(r"\bd([A-Za-z_]\w*)?\s*/\s*d[A-Za-z_]")
 
 
 def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kinds: dict[str, str]) -> CheckError:
@@ -99,7 +106,7 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
         if unknown and n not in (exc.part, "t") and n.lower() == str(exc.part).lower()
     ]
     if derivative:
-        out = DERIVATIVE_WORDS
+        out = _DERIVATIVE
     elif near:
         out = (
             f"{exc.part} is not {_KIND_WORDS.get(kinds[near[0]], 'a name')} here; did you mean "
@@ -124,16 +131,21 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
             f"{exc.part} reads as one name: write {' '.join(glued)} (or {'*'.join(glued)}) for the product, with a "
             "space or * between the names"
         )
+    elif "only these functions may be called" in str(exc) and str(exc.part).lower() in _FUNCTION_WORDS:
+        # a function a student knows under another name, or a derivative: said as a tutor says it
+        out = _FUNCTION_WORDS[str(exc.part).lower()]
     elif "only these functions may be called" in str(exc):
-        functions = ", ".join(sorted(f for f in FUNCTIONS if f != "Abs"))
-        bar = isinstance(text, str) and "|" in text  # Abs is named only to a student who typed a bar
-        out = f"{exc.part} is not a function you may use here; the functions are {functions}" + (
-            ", and Abs(x) for |x|" if bar else ""
+        # a sentence, not a code allowlist: |x| is not among them, and Abs is named only to a student who typed a bar
+        functions = sorted(f for f in FUNCTIONS if f != "Abs")
+        bar = isinstance(text, str) and "|" in text
+        out = (
+            f"{exc.part} is not a function you may use here; the functions are {', '.join(functions[:-1])} and "
+            f"{functions[-1]}" + ("; |x| is typed Abs(x)" if bar else "")
         )
     elif exc.part in _QUANTITIES and unknown:
         out = f"{exc.part} is not a name the answer may use: write T and U out in the coordinates, their velocities and the parameters"
     elif unknown and exc.part.startswith("d") and isinstance(text, str) and _DIFFERENTIALS.search(text):
-        out = DERIVATIVE_WORDS
+        out = _DERIVATIVE
     elif step == "acceleration" and exc.part.endswith("_ddot"):
         wanted = unicode(f"{coordinate}_ddot") if coordinate else "the acceleration"
         out = (

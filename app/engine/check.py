@@ -40,6 +40,8 @@ import sympy as sp
 from app.engine import textbook
 from app.engine.budget import display_budget, tidy, unbudgeted, work_limit
 from app.engine.check_answers import (
+    KEYED,
+    PER_COMPONENT,
     PER_COORDINATE,
     STEPS,
     CheckError,
@@ -89,6 +91,8 @@ from app.limits import CHECK_DISPLAY_WORK as DISPLAY_WORK
 __all__ = [
     "MIN_POINTS",
     "PARTED",
+    "KEYED",
+    "PER_COMPONENT",
     "PER_COORDINATE",
     "RELATIONS",
     "STEPS",
@@ -456,6 +460,7 @@ def _constant_message(pb: Problem, difference: sp.Expr) -> str:
     shown = constant if symbolically_zero(varying) else None
     amount = f"the constant {unicode_text(shown)}" if shown is not None else "a constant"
     why = {
+        "position": "another origin, which changes no velocity and no equation of motion",
         "potential": "a different zero of height, which changes no force and no equation of motion",
         "lagrangian": "a constant drops out of every Euler–Lagrange equation",
         "hamiltonian": "the zero of U moved, which changes no equation of motion",

@@ -20,11 +20,16 @@ from app.engine.reality import real_somewhere
 if TYPE_CHECKING:  # the problem an answer is read for (imported for its type only)
     from app.engine.check_problem import Problem
 
-STEPS = ("kinetic", "potential", "lagrangian", "momentum", "equation", "acceleration", "hamiltonian", "omega_squared")
+STEPS = ("position", "kinetic", "potential", "lagrangian", "momentum", "equation", "acceleration", "hamiltonian", "omega_squared")
 PER_COORDINATE = frozenset({"momentum", "equation", "acceleration"})
+# the steps answered per Cartesian component of a body (x, z, or x1, z2 … numbered by body), in the same field
+PER_COMPONENT = frozenset({"position"})
+# the steps whose answer names which one it is (a coordinate or a component): one record per name
+KEYED = PER_COORDINATE | PER_COMPONENT
 
 # which kinds of name each step's answer may use
 _KINDS = {
+    "position": {"parameter", "position"},
     "kinetic": {"parameter", "position", "velocity"},
     "potential": {"parameter", "position"},
     "lagrangian": {"parameter", "position", "velocity"},
@@ -35,6 +40,7 @@ _KINDS = {
     "omega_squared": {"parameter", "momentum"},
 }
 _WHY_NOT = {
+    ("position", "velocity"): "a position depends on the coordinates (and t), not on the velocities",
     ("potential", "velocity"): "U depends on positions only, so a velocity cannot appear in it",
     ("acceleration", "acceleration"): "the acceleration is what you solve for: write it with the coordinates, "
     "velocities, parameters and t, without any q_ddot",

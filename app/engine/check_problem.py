@@ -17,12 +17,14 @@ from app.engine.derive import Derivation
 from app.engine.diagnose import catalogue
 from app.engine.dimensions import Dims, system_dimensions
 from app.engine.mistake_families import Mistake
+from app.engine.mistake_positions import component_keys, position_label
 from app.engine.mistakes import has_springs
 from app.engine.report import plain_name
 from app.engine.textbook import unicode_text
 
 # how an answer may differ from the truth and still be physically the same
-RELATIONS = {"potential": "constant", "lagrangian": "constant", "hamiltonian": "constant", "equation": "factor"}
+# (a position from another origin is the figure's plus a constant, as another zero of U is)
+RELATIONS = {"position": "constant", "potential": "constant", "lagrangian": "constant", "hamiltonian": "constant", "equation": "factor"}
 
 
 @dataclass(frozen=True)
@@ -64,6 +66,10 @@ def exercises(d: Derivation) -> list[tuple[str, str | None]]:
     """The steps a student can check for this system, in the chapter's order."""
     out: list[tuple[str, str | None]] = []
     for step in STEPS:
+        if step == "position":
+            # each moving component of each body, where the system is given by its particles' positions
+            out += [(step, key) for key, _, _ in component_keys(d)]
+            continue
         if step in ("kinetic", "potential") and d.mechanics.T is None:
             continue
         if step == "omega_squared" and not checkable_equilibria(d):
@@ -76,14 +82,19 @@ def exercises(d: Derivation) -> list[tuple[str, str | None]]:
 
 
 def _unavailable(d: Derivation, step: str) -> str:
+    if step == "position":
+        return "this system is given by its energies, not by its bodies' positions"
     if step in ("kinetic", "potential"):
         return "this system is given by its Lagrangian alone, so T and U are not known separately"
     return "this system has no equilibrium with a closed-form ω² that is not unstable"
 
 
-def _label(step: str, name: str | None, d: Derivation) -> str:
+def step_title(step: str, name: str | None) -> str:
+    """A step in words, as a student and a teacher read it ("energy function h", "Euler–Lagrange equation for θ"):
+    the one home of the steps' titles (a step the engine does not know comes back as given)."""
     shown = plain_name(name) if name else ""
     return {
+        "position": "position",
         "kinetic": "kinetic energy T",
         "potential": "potential energy U",
         "lagrangian": "Lagrangian L",
@@ -92,7 +103,7 @@ def _label(step: str, name: str | None, d: Derivation) -> str:
         "acceleration": f"acceleration of {shown}",
         "hamiltonian": "energy function h",
         "omega_squared": "ω² of small oscillations",
-    }[step]
+    }.get(step, step)
 
 
 def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: bool = True) -> Problem:
@@ -113,7 +124,19 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
             f"step: {step!r} does not apply: {_unavailable(d, step)}; the steps are: {', '.join(steps)}", "step", step
         )
     k = None
-    if step in PER_COORDINATE:
+    if step == "position":
+        components = {key: (i, a) for key, i, a in component_keys(d)}
+        if coordinate not in components:
+            given = f"{str(coordinate)[:40]!r} is not" if coordinate else "give"
+            raise CheckError(
+                f"coordinate: {given} one of this system's moving position components: {', '.join(components)} "
+                "(x, y, z of one body; x1, z2, … numbered by body where there are several)",
+                "coordinate",
+                str(coordinate or "")[:40],
+            )
+        body, axis = components[coordinate]
+        k = 3 * body + axis
+    elif step in PER_COORDINATE:
         names = ", ".join(table.names)
         if not coordinate:
             raise CheckError(f"coordinate: the {step} step is per coordinate; give one of: {names}", "coordinate")
@@ -128,7 +151,9 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         coordinate = None
 
     where: tuple[str, ...] = ()
-    if step == "kinetic":
+    if step == "position":
+        truths = (d.mechanics.positions[k // 3][k % 3],)  # type: ignore[operator]
+    elif step == "kinetic":
         truths = (d.mechanics.T,)
     elif step == "potential":
         truths = (d.mechanics.U,)
@@ -153,7 +178,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
     namespace = {**table.namespace(), **{s.name: s for s in table.qdd}, **{p.name: p for p in momenta}}
     groups = Groups((*table.params, *momenta), (*table.q, table.t), (*table.qd, *table.qdd))
     latex_names = {**table.latex_names(), **{p: sp.latex(p) for p in momenta}}
-    label = _label(step, coordinate, d)
+    label = position_label(d, k // 3, k % 3) if step == "position" else step_title(step, coordinate)  # type: ignore[operator]
     relation = RELATIONS.get(step, "exact")
     return Problem(
         step,

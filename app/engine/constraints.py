@@ -79,12 +79,12 @@ def _parse(text: str, names: dict[str, sp.Symbol], where: str) -> sp.Expr:
         raise ExpressionError(f"{where}: {exc}", exc.part) from None
 
 
-def _positive(d: Derivation) -> dict[sp.Symbol, sp.Symbol]:
+def positive(d: Derivation) -> dict[sp.Symbol, sp.Symbol]:
     wanted = positive_names(d.system)
     return {s: sp.Symbol(s.name, positive=True) for s in (*d.table.params, *d.table.q) if s.name in wanted}
 
 
-def _display(expr: sp.Expr, positive: dict[sp.Symbol, sp.Symbol]) -> sp.Expr:
+def display(expr: sp.Expr, positive: dict[sp.Symbol, sp.Symbol]) -> sp.Expr:
     """A compact form under the declared positivity (sqrt(R^2) = R for a length)."""
     back = {v: k for k, v in positive.items()}
     return tidy(pythagoras(sp.together(expr.xreplace(positive)))).xreplace(back)
@@ -162,14 +162,14 @@ def constraint_forces(d: Derivation) -> tuple[ConstraintForce, ...]:
             "is missing (declare every constraint whose force is not zero, and the full Cartesian potential)"
         )
 
-    positive = _positive(d)
+    held = positive(d)
     forces = []
     for a, (c, g) in enumerate(zip(system.constraints, gs, strict=True)):
         grad_on = tuple(G[3 * (c.on - 1) + i, a] for i in range(3))
         # the force on particle `on` is lambda_a grad g_a; its signed size along grad g_a
         norm = sp.sqrt(sum(e**2 for e in grad_on))
-        lam = _display(multipliers[a], positive)
-        force = _display(multipliers[a] * norm, positive)
+        lam = display(multipliers[a], held)
+        force = display(multipliers[a] * norm, held)
         if force.has(*table.qdd):
             raise DerivationError(f"constraint {c.name!r}: accelerations remained in the force")
         every = tuple(tuple(G[3 * i + j, a] for j in range(3)) for i in range(len(mech.positions)))

@@ -14,6 +14,7 @@ from app.engine.derive import LARGE_FROM, Derivation
 from app.engine.errata import errata_json
 from app.engine.names import MASS_MATRIX, display_names
 from app.engine.report import (
+    SCALED_CLAUSE,
     Printer,
     build_steps,
     conserved_form,
@@ -132,6 +133,18 @@ def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[s
     return {}
 
 
+
+def _inequality(pr: Printer, relation: sp.Relational | None) -> dict[str, Any] | None:
+    """b > a with each side in its textbook form (R ω² > g), as text and LaTeX; None for none."""
+    if relation is None:
+        return None
+    big, small = relation.args
+    return {
+        "sympy": f"{sp.sstr(pr.form(big))} > {sp.sstr(pr.form(small))}",
+        "latex": f"{pr.tex(big)} > {pr.tex(small)}",
+        "tree": None,
+    }
+
 def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) -> dict[str, Any]:
     progress.now("the conserved quantities and the reduction to one coordinate")
     table, eqs, en, red = d.table, d.equations, d.energetics, d.reduction
@@ -210,6 +223,9 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
                     "position": {**pr.pair(e.position), "latex": pr.root(e.position)},
                     "omega_squared": pr.pair(e.omega_squared),
                     "stable": e.stable,
+                    # where it exists (arccos(g/(R w²)) needs R w² > g) and, with no verdict, when it is stable
+                    "exists": _inequality(pr, e.exists),
+                    "stable_when": _inequality(pr, e.stable_when),
                     # r₀ⁿ = C where the root is C^(1/n) (the cone's r₀³ = p_φ² tan α/(m² g)), n = 1 otherwise
                     "power": (root := power_form(e.position))[0],
                     "position_power": pr.pair(root[1]),
@@ -248,7 +264,12 @@ def explained(scene: Scene, steps: list[dict[str, Any]]) -> list[dict[str, Any]]
         if text and not own:
             text = None if text in said else text
         said.add(text)
-        out.append({**s, "explanation": text or s["explanation"]})
+        engine = s["explanation"] or ""
+        text = text or engine
+        # how the equations are scaled is the engine's to say (it is derived): a scene's reason keeps that clause
+        if SCALED_CLAUSE in engine and SCALED_CLAUSE not in text:
+            text = f"{text.rstrip('.')}; {engine[engine.index(SCALED_CLAUSE):]}"
+        out.append({**s, "explanation": text})
     return out
 
 
@@ -289,7 +310,7 @@ def _transformed(d: Derivation, skipped: list[Skipped]) -> tuple[Transformed, di
 def _steps(
     d: Derivation, forces: tuple[ConstraintForce, ...], pr: Printer, transformed: tuple[Transformed, Any] | None
 ) -> list[dict[str, str]]:
-    return build_steps(d) + constraint_steps(forces, pr) + (transform_steps(transformed[0]) if transformed else [])
+    return build_steps(d) + constraint_steps(d, forces, pr) + (transform_steps(transformed[0]) if transformed else [])
 
 
 def add_beyond(
@@ -333,6 +354,7 @@ def scene_json(scene: Scene) -> dict[str, Any]:
         "summary": scene.summary,
         "statement": scene.statement,
         "figure": scene.figure,
+        "run_note": scene.run_note,
         "coordinates": list(scene.system.coordinates),
         "parameters": parameters_json(scene.system.parameters),
         "initial": dict(scene.initial),

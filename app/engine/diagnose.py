@@ -32,6 +32,7 @@ from app.engine.mistake_families import Mistake, monomial_words, spoken
 from app.engine.mistake_masses import wrong_masses
 from app.engine.mistake_other import held_still, other_coordinates
 from app.engine.mistake_pieces import effective_terms, masses_of, piece_mistakes, travelled
+from app.engine.mistake_positions import position_mistakes
 from app.engine.mistakes import OMEGA_HINT, RULES
 
 MIN_POINTS = 6
@@ -63,6 +64,10 @@ _OPENINGS = {
     "position_for_velocity": "Your {what} has {name}",
     "wrong_mass": "Your {what} has {name}",
     "momentum_part": "Your {what} has {name}",
+    "position_carried": "Your {what} has {name}",
+    "position_sign": "Your {what} has {name}",
+    "position_other": "Your {what} is {name}",
+    "position_coordinate": "Your {what} has {name}",
 }
 
 
@@ -115,6 +120,10 @@ def catalogue(
 ) -> tuple[tuple[Mistake, str, Values], ...]:
     """(mistake, hint, values) for every distinct mistake of the step, in the order they are tried."""
     truth = truths[0]
+    if step == "position" and k is not None:
+        # one component of one body (k = 3 × body + axis): its own mistakes only (app.engine.mistake_positions)
+        own = [(m, sentence(m, label)) for m in position_mistakes(d, k // 3, k % 3)]
+        return _kept(d, own, truths, groups, relation, label)
     asked = _asked(d, truths)
     made = [(m, sentence(m, label)) for m in generated(d, step, k, asked)]
     known = system_dimensions(d)
@@ -143,6 +152,15 @@ def catalogue(
             for w2 in truths
         ]  # fmt: skip
     found += _pairs(d, step, found, label)
+    return _kept(d, found, truths, groups, relation, label)
+
+
+def _kept(
+    d: Derivation, found: list[tuple[Mistake, str]], truths: tuple[sp.Expr, ...], groups: Groups, relation: str,
+    label: str
+) -> tuple[tuple[Mistake, str, Values], ...]:
+    """Each mistake with its values, less one whose units disagree, one equal to a truth and a repeat."""
+    known = system_dimensions(d)
     kept: list[tuple[Mistake, str, Values]] = []
     truth_values = [values(t, groups) for t in truths]
     for mistake, hint in found:

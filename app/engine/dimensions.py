@@ -124,6 +124,12 @@ def unit_text(d: Dims) -> str:
     return (show(top) or "1") + (f"/{show(bottom)}" if bottom else "")
 
 
+def unit_latex(d: Dims) -> str:
+    """The unit of a number in a formula, upright after a thin space, with negative powers: \\,\\mathrm{kg\\,m^{2}\\,s^{-1}}."""
+    parts = [k + (f"^{{{v}}}" if v != 1 else "") for k in _ORDER if (v := d.get(k, Fraction(0))) != 0]
+    return r"\,\mathrm{" + r"\,".join(parts) + "}" if parts else ""
+
+
 # what a parameter is by the unit it declares, where its dimension alone cannot tell (rad and 1/s are both s⁻¹
 # apart from the radian), before the words by dimension
 _KIND_BY_UNIT = {"rad": "an angle", "rad/s": "an angular velocity", "1/s": "a rate", "s": "a time",

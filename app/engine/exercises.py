@@ -9,7 +9,9 @@ from typing import Any
 import sympy as sp
 
 from app.engine.check import allowed_names, checkable_equilibria, conserved_momenta, exercises, problem
+from app.engine.constraints import AXES
 from app.engine.derive import Derivation
+from app.engine.mistake_positions import body_name, component_keys
 from app.engine.mistakes import POINTERS, has_springs, without_springs
 from app.engine.report import Printer, display
 
@@ -29,16 +31,17 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
             )
         else:
             latex = f"{_lhs(step, name, pr, d)} = {pr.tex(shown[0])}"
-        items.append(
-            {
-                "step": step,
-                "coordinate": name,
-                "title": _title(pb.label),
-                "lhs": _lhs(step, name, pr, d),
-                "names": allowed_names(step, pb.kinds),
-                "answer": {"sympy": sp.sstr(shown[0]), "latex": latex},
-            }
-        )
+        item = {
+            "step": step,
+            "coordinate": name,
+            "title": f"Position: {pb.label}" if step == "position" else _title(pb.label),
+            "lhs": _lhs(step, name, pr, d),
+            "names": allowed_names(step, pb.kinds),
+            "answer": {"sympy": sp.sstr(shown[0]), "latex": latex},
+        }
+        if step == "position":
+            item["note"] = POSITION_NOTE
+        items.append(item)
     symbols = {
         s.name: pr.tex(s) for s in (*d.table.q, *d.table.qd, *d.table.qdd, *d.table.params, *conserved_momenta(d))
     }
@@ -46,6 +49,13 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
     springs = has_springs(d)
     rules = {step: text if springs else without_springs(text) for step, text in POINTERS.items()}
     return {"exercises": items, "symbols": {**symbols, "t": "t"}, "rules": rules}
+
+
+# what a positions step is judged against, said on the step
+POSITION_NOTE = (
+    "Use the figure's axes (x across, y the third axis, z up) and its origin; a position measured from another "
+    "origin, the correct one plus a constant, is accepted as equivalent."
+)
 
 
 def _title(label: str) -> str:
@@ -60,6 +70,11 @@ def _where_tex(d: Derivation, i: int, pr: Printer) -> str:
 
 
 def _lhs(step: str, name: str | None, pr: Printer, d: Derivation) -> str:
+    if step == "position":
+        # x, or x with the body's name where there are several (never x₂, which may be a coordinate's name)
+        i, a = next((i, a) for key, i, a in component_keys(d) if key == name)
+        many = len(d.mechanics.positions) > 1
+        return AXES[a] + (rf"_{{\text{{{body_name(d, i).removeprefix('the ')}}}}}" if many else "")
     if name is not None:
         q = d.table.q[d.table.names.index(name)]
         qdd = d.table.qdd[d.table.names.index(name)]

@@ -54,7 +54,7 @@ def has_springs(d: Derivation) -> bool:
     return not units or any(u.replace(" ", "") in STIFFNESS_UNITS for u in units)
 
 
-# the clauses of the hints about springs, left out of a system without one (check_problem.has_springs)
+# the clauses of the hints about springs, left out of a system without one (has_springs)
 SPRING_CLAUSES = (
     ", plus ½ k times the square of each spring's stretch",
     " (and +½ k × stretch² for a spring)",
@@ -73,6 +73,9 @@ def without_springs(text: str | None) -> str | None:
 
 
 POINTERS = {
+    "position": "Place the body with the figure's axes (x across, z up): follow the lengths from the origin to the "
+    "body, adding each one's part along this axis (a length times the cosine of its angle to the axis, or the sine "
+    "of its angle to the line across it), and the position of whatever carries the body.",
     "kinetic": "T adds ½ m v² over the masses, with v² the squared speed: differentiate each position along the "
     "motion (the chain rule through every coordinate, and through t if a constraint moves), then add the squares "
     "of the velocity's components.",

@@ -78,14 +78,26 @@ def _split(name: str) -> tuple[str, str]:
 
 
 def _tex_base(name: str) -> tuple[str, str]:
-    """(stem, subscript) in LaTeX: theta1 -> (\\theta, 1)."""
+    """(stem, subscript) in LaTeX: theta1 -> (\\theta, 1); a name of several letters that is no Greek letter's is
+    one upright name, th -> \\mathrm{th} (never the product t h), so that a dot sits over the whole of it."""
     stem, digits = _split(name)
-    return ("\\" + _TEX_GREEK.get(stem, stem) if stem in GREEK else stem), digits
+    if stem in GREEK:
+        return "\\" + _TEX_GREEK.get(stem, stem), digits
+    # a differential (dt, dr: d and one letter, as the errata's dt/dr writes) stays as a textbook prints it
+    differential = len(stem) == 2 and stem[0] == "d"
+    return (rf"\mathrm{{{stem}}}" if len(stem) > 1 and stem.isalpha() and not differential else stem), digits
+
+
+# a rate of a name of several letters in running text: a spacing dot after the whole name (th˙), as a combining
+# dot would sit on its last letter alone and read as t times ḣ
+_SPACING = {DOT: "\u02d9", DDOT: "\u00a8", HAT: "\u02c6"}
 
 
 def _uni_base(name: str, mark: str = "") -> str:
     # the dot sits on the letter, before any subscript digits: θ̇₁
     stem, digits = _split(name)
+    if mark and len(stem) > 1 and stem not in GREEK:
+        return stem + digits.translate(SUBSCRIPT) + _SPACING[mark]
     return GREEK.get(stem, stem) + mark + digits.translate(SUBSCRIPT)
 
 

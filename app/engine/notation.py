@@ -96,6 +96,54 @@ def _unit(dims: Dims | None, angle: bool = False) -> str:
     return unit_text(dims)
 
 
+_FORCE: Dims = {"kg": Fraction(1), "m": Fraction(1), "s": Fraction(-2)}
+
+
+def _force_unit(dims: Dims | None) -> str:
+    """A multiplier's unit: N, or N over a power of m (N/m for a string's R² − r²), else as ``_unit`` prints it."""
+    if dims is not None and dims.get("kg") == 1 and dims.get("s") == -2 and set(dims) <= {"kg", "m", "s"}:
+        metres = dims.get("m", Fraction(0)) - 1
+        if metres == 0:
+            return "N"
+        if metres < 0 and metres.denominator == 1:
+            return "N/m" if metres == -1 else f"N/m{str(-metres.numerator).translate(_SUPERSCRIPTS)}"
+    return _unit(dims)
+
+
+_SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+class _PerCoordinate:
+    """The unit of an entry that carries its coordinates' units: [entry] = base / ([q_j] [q_k] …), one unit
+    when every coordinate has the same, else the rule ``per entry: …``."""
+
+    def __init__(self, d: Derivation, dims: dict[sp.Symbol, Dims]) -> None:
+        self.coordinates = [dims.get(q) for q in d.table.q]
+
+    def unit(self, base: Dims, power: int, rule: str) -> str:
+        if any(c is None for c in self.coordinates):
+            return ""
+        first = self.coordinates[0]
+        if any(c != first for c in self.coordinates):
+            return f"per entry: {rule}"
+        shown = add_dims(base, first or {}, Fraction(-power))
+        # a torque (J per radian) reads N·m, a force N, a stiffness per metre N/m
+        if shown == _ENERGY and power:
+            return "N·m"
+        return _force_unit(shown) if shown.get("s") == -2 and shown.get("kg") == 1 else _unit(shown, angle=not shown)
+
+
+def _derived_unit(concept: str, per: _PerCoordinate | None) -> str:
+    """The unit of a normal-mode letter: 𝓜 per entry J·s²/([q_j][q_k]), K J/([q_j][q_k]), η, a and A the coordinate's."""
+    if per is None:
+        return ""
+    if concept == "mass_matrix":
+        return per.unit({"kg": Fraction(1), "m": Fraction(2)}, 2, "kg·m² divided by the units of its row's and column's coordinates")
+    if concept == "stiffness":
+        return per.unit(_ENERGY, 2, "J divided by the units of its row's and column's coordinates")
+    return per.unit({}, -1, "that of its coordinate")
+
+
 def _is_energy(d: Derivation, dims: dict[sp.Symbol, Dims]) -> bool:
     """Whether the energies are in J: every term of a sum has one dimension, so L is an energy as soon as one of
     its terms is (½mẋ² in kg·m²/s²) and none is known to be anything else; with no term told, no unit is claimed."""
@@ -167,12 +215,14 @@ def table(
     for tex, uni, meaning in FIXED:
         if uni not in taken:
             rows.append(_row(tex, uni, meaning, "s" if uni == "t" else energy, "derived"))
+    per = _PerCoordinate(d, dims) if energy else None
     rows.append(
-        _row("f", "f", f"right-hand side of the equations of motion, {text('mass_matrix', d)} q̈ = f", "", "derived")
+        _row("f", "f", f"right-hand side of the equations of motion, {text('mass_matrix', d)} q̈ = f",
+             per.unit(_ENERGY, 1, "J divided by its coordinate's unit") if per else "", "derived")  # fmt: skip
     )
     for concept, (meaning, _) in DERIVED.items():
         tex, uni = _choice(concept, d)
-        rows.append(_row(tex, uni, meaning, "rad/s" if concept == "frequency" else "", "derived"))
+        rows.append(_row(tex, uni, meaning, "rad/s" if concept == "frequency" else _derived_unit(concept, per), "derived"))
     rows += _sometimes(d, dims, energy, forces, transformed)
     # each letter once: the first meaning a page gives it stands
     first: dict[str, dict[str, Any]] = {}
@@ -227,16 +277,28 @@ def _sometimes(
         )
     rows += _symmetries(d, dims, energy)
     if any(f != 0 for f in m.Q):
-        rows.append(_row("Q", "Q", "generalized force that no potential describes", "", "derived"))
+        per = _PerCoordinate(d, dims) if energy else None
+        rows.append(_row("Q", "Q", "generalized force that no potential describes",
+                         per.unit(_ENERGY, 1, "J divided by its coordinate's unit") if per else "", "derived"))  # fmt: skip
     if forces:
         rows.append(
-            _row(CONSTRAINT, "𝒞", "a constraint written as a surface 𝒞 = 0 in Cartesian coordinates", "", "derived")
+            _row(CONSTRAINT, "𝒞", "a constraint written as a surface 𝒞 = 0 in Cartesian coordinates", "per constraint (𝒞₁, … below)" if energy else "", "derived")
         )
         rows.append(
             _row(
-                r"\lambda", "λ", "Lagrange multiplier of a constraint: its force on body i is λ ∂𝒞/∂r_i", "", "derived"
+                r"\lambda", "λ", "Lagrange multiplier of a constraint: its force on body i is λ ∂𝒞/∂r_i",
+                "J divided by the unit of its 𝒞 (λ𝒞 is an energy)" if energy else "", "derived",
             )
         )
+        rows.append(_row("L'", "L′", "the Lagrangian in Cartesian coordinates with the constraints' multipliers", energy, "derived"))
+        # each constraint's 𝒞ₐ and λₐ with its unit in this scene: [λ] = [F]/[∂𝒞/∂r] (λ in N/m for a string's R² − r²)
+        metres = {s: {"m": Fraction(1)} for f in forces for s in f.g.free_symbols if s not in dims}
+        for a, f in enumerate(forces, start=1):
+            sub = str(a).translate(_SUBSCRIPTS)
+            g_unit = _unit(dimension(f.g, {**dims, **metres})) if energy else ""
+            lam_unit = _force_unit(dimension(f.multiplier, dims)) if energy else ""
+            rows.append(_row(f"{CONSTRAINT}_{{{a}}}", f"𝒞{sub}", f"the constraint of the {f.constraint.name}, 𝒞{sub} = 0", g_unit, "derived"))
+            rows.append(_row(rf"\lambda_{{{a}}}", f"λ{sub}", f"the multiplier of 𝒞{sub}: its force on the body is λ{sub} ∂𝒞{sub}/∂r", lam_unit, "derived"))
         # each force of constraint its own letter, F₁, F₂, … in the order the Results list them (the page
         # prints F₁ = … there and in the constraint panel)
         for a, f in enumerate(forces, start=1):

@@ -18,9 +18,12 @@ The rules (docs/parsing.md, "As students type it"):
   together are one name, never split (``theta1``, ``l0`` and ``mgl`` are names); a name directly followed
   by ``(`` is a call, as ``sin(θ)`` is, so a product needs a space: ``m (a + b)``;
 * a function applies to one name without parentheses (``sin θ cos θ``), and ``sin^2(θ)`` is ``sin(θ)^2``;
+* a quotient is a coefficient where a physicist means one thing: a fraction of two numbers before a spaced
+  factor (``1/2 m R^2`` is ½ m R², ``3/4 m l^2``), any quotient before spaced function calls and nothing
+  else (``g/l sin θ`` is (g/l) sin θ, ``-g/R sin(θ)``);
 * what a reader could take two ways is refused with both readings: a power of a power (``2^x^2``), a
-  factor glued to an exponent (``x^2y``), a factor after a quotient (``1/2m``, ``p^2/2 m``), a function of
-  a factor that is not a name (``sin 2θ``, ``cos θ^2``).
+  factor glued to an exponent (``x^2y``), any other factor after a quotient (``1/2m``, ``p^2/2 m``,
+  ``k/m x``), a function of a factor that is not a name (``sin 2θ``, ``cos θ^2``).
 """
 
 from __future__ import annotations
@@ -421,7 +424,10 @@ class _Reader:
         return max(j, 0)
 
     def quotients(self) -> None:
-        """A factor written after a quotient is refused with both readings: 1/2m is (1/2) m or 1/(2 m)."""
+        """A factor written after a quotient is refused with both readings (1/2m is (1/2) m or 1/(2 m)), unless
+        the quotient is a coefficient as a physicist writes one: a fraction of two numbers before a spaced
+        factor (1/2 m R^2 is (1/2) m R²), or any quotient before spaced function calls (g/l sin θ is
+        (g/l) sin θ)."""
         tokens = self.tokens
         for i, t in enumerate(tokens):
             if t.kind != "op" or t.text != "/":
@@ -429,15 +435,27 @@ class _Reader:
             end = _powered(tokens, i + 1)
             if not _side_by_side(tokens, end):
                 continue
-            last = end
+            factors, last = [], end
             while _side_by_side(tokens, last):
+                factors.append(last)
                 last = _powered(tokens, last)
             first = self._term(i)
+            numbers = self._numbers(first, i, end)
+            if tokens[end].spaced and (numbers or all(tokens[k].kind == "func" for k in factors)):
+                continue
             n, d, f = self.typed(first, i), self.typed(i + 1, end), self.typed(end, last)
-            # a number's fraction (the usual ½): say how a textbook's ½ is typed
-            advice = f"write {n}/{d} as ({n}/{d})" if n.strip().isdigit() and d.strip().isdigit() else ""
+            # a number's fraction glued to a factor (1/2m): say how the textbook's ½ m is typed
+            advice = f"for the first, put a space after {n}/{d}" if numbers else ""
             why = "a factor after a quotient is ambiguous"
             raise self.ambiguous(first, last, why, f"({n}/{d}) {f}", f"{n}/({d} {f})", advice)
+
+    def _numbers(self, first: int, i: int, end: int) -> bool:
+        """Whether tokens ``[first, end)`` with the "/" at ``i`` are a fraction of two plain numbers (-3/4)."""
+        tokens, k = self.tokens, first
+        # the numerator: signs, then one number
+        while k < i and tokens[k].kind == "op" and tokens[k].text in "+-":
+            k += 1
+        return k == i - 1 and tokens[k].kind == "num" and end == i + 2 and tokens[i + 1].kind == "num"
 
     def _term(self, i: int) -> int:
         """The index of the first token of the product a "/" at ``i`` divides."""

@@ -19,6 +19,7 @@ own reduction (no cyclic momenta needed).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import partial
 
 import sympy as sp
 
@@ -34,6 +35,11 @@ class Equilibrium:
     position: sp.Expr
     omega_squared: sp.Expr
     stable: bool | None
+    # where the position is an inverse cosine or sine arccos(a/b): it exists only while a < b (R ω² > g on the
+    # spinning hoop), and ``stable`` is then the verdict wherever it exists
+    exists: sp.Relational | None = None
+    # where the sign of ω² depends on the parameters: the condition for ω² > 0 (g > R w² at the hoop's bottom)
+    stable_when: sp.Relational | None = None
 
 
 @dataclass(frozen=True)
@@ -120,16 +126,23 @@ def reduce_to_one(
     roots = within_budget(lambda: sp.solve(dU.xreplace(assume), r_assumed, simplify=False), None, SOLVE_WORK)
     equilibria: list[Equilibrium] = []
     solved = roots is not None
+    # an angle's U_eff repeats every 2π: a root 2π − arccos a is the same place as −arccos a, as a textbook writes it
+    periodic = sp.expand(U_eff.xreplace({r: r + 2 * sp.pi}) - U_eff) == 0
     for root in roots or []:
         root = root.xreplace(back)
         if root.has(sp.I) or root.is_real is False:
             continue
         if r in assume and root.xreplace(assume).is_negative:
             continue
+        if periodic and sp.count_ops(root - 2 * sp.pi) < sp.count_ops(root):
+            root = root - 2 * sp.pi
         w2 = tidy(omega_sq.xreplace({r: root}))
         sign = w2.xreplace(assume).is_positive
         stable = True if sign else (False if w2.xreplace(assume).is_nonpositive else None)
-        equilibria.append(Equilibrium(root, w2, stable))
+        exists = existence(root, assume)
+        if exists is not None and stable is None:
+            stable = stable_where_it_exists(w2, exists, assume)
+        equilibria.append(Equilibrium(root, w2, stable, exists, positive_when(w2, assume) if stable is None else None))
     return Reduction(
         free[0],
         P,
@@ -145,6 +158,53 @@ def reduce_to_one(
         solved,
         _steady_omega_squared(dU, omega_sq, P),
     )
+
+
+def existence(root: sp.Expr, assume: dict[sp.Symbol, sp.Symbol]) -> sp.Relational | None:
+    """a < b for a root built on arccos(a/b) or arcsin(a/b) with a, b positive: |a/b| ≤ 1 is where it exists, and
+    a = b is where it meets the equilibrium it branches from (θ = 0 on the spinning hoop), so a < b is where it is
+    a separate equilibrium; None for any other root."""
+    inverse = list(root.atoms(sp.acos, sp.asin))
+    if len(inverse) != 1:
+        return None
+    a, b = sp.fraction(sp.factor(inverse[0].args[0]))
+    if not (a.xreplace(assume).is_positive and b.xreplace(assume).is_positive):
+        return None
+    return sp.StrictGreaterThan(b, a, evaluate=False)
+
+
+def _solved_for(equation: sp.Eq, p: sp.Symbol) -> list[sp.Expr]:
+    return list(sp.solve(equation, p))
+
+
+def stable_where_it_exists(w2: sp.Expr, exists: sp.Relational, assume: dict[sp.Symbol, sp.Symbol]) -> bool | None:
+    """The sign of ω² wherever ``exists`` (b > a) holds: a parameter of a written as b/(1 + u), u > 0 any."""
+    b, a = exists.args
+    u = sp.Symbol("u", positive=True)
+    for p in sorted(a.free_symbols - b.free_symbols, key=sp.default_sort_key):
+        solved: list[sp.Expr] | None = within_budget(partial(_solved_for, sp.Eq(a, b / (1 + u)), p), None, SOLVE_WORK)
+        if not solved or len(solved) != 1:
+            continue
+        on = sp.factor(sp.together(w2.xreplace({p: solved[0]}).xreplace(assume)))
+        if on.is_positive:
+            return True
+        if on.is_nonpositive:
+            return False
+    return None
+
+
+def positive_when(w2: sp.Expr, assume: dict[sp.Symbol, sp.Symbol]) -> sp.Relational | None:
+    """ω² > 0 as "positive terms > negative terms" of its numerator over a positive denominator: g/R − w² > 0
+    is g > R w²; None when the terms' signs are not known from the parameters' positivity."""
+    num, den = sp.fraction(sp.together(w2))
+    if not den.xreplace(assume).is_positive:
+        return None
+    terms = sp.Add.make_args(sp.expand(num))
+    plus = [t for t in terms if t.xreplace(assume).is_positive]
+    minus = [-t for t in terms if t.xreplace(assume).is_negative]
+    if len(plus) + len(minus) != len(terms) or not plus or not minus:
+        return None
+    return sp.StrictGreaterThan(sp.Add(*plus), sp.Add(*minus), evaluate=False)
 
 
 def _steady_omega_squared(dU: sp.Expr, omega_sq: sp.Expr, momenta: tuple[sp.Symbol, ...]) -> sp.Expr | None:

@@ -167,8 +167,31 @@ def equation_rows(d: Derivation, pr: Printer) -> list[str]:
 
 
 def equation_pairs(d: Derivation, pr: Printer) -> list[dict[str, Any]]:
-    """The equations for the document: each one's text is the scaled residual its row typesets."""
-    return [pr.shown(shown, row, r) for (shown, row), r in zip(equations(d, pr), d.equations.residuals, strict=True)]
+    """The equations for the document: each one's text is the scaled residual its row typesets, and
+    ``divided_by`` the factor it was divided by to be shown so (None when it is shown as derived), so that
+    a reader can go from the rows shown to 𝓜q̈ = f: row k of 𝓜 and f is equation k times its factor."""
+    scales = equation_scales(d, pr)
+    out = []
+    for k, ((shown, row), r) in enumerate(zip(equations(d, pr), d.equations.residuals, strict=True)):
+        s = scales[k] if scales is not None else None
+        factor = None if s is None or s == 1 else {"sympy": sp.sstr(s), "latex": pr.tex(s)}
+        out.append({**pr.shown(shown, row, r), "divided_by": factor})
+    return out
+
+
+def equation_scales(d: Derivation, pr: Printer) -> list[sp.Expr] | None:
+    """The one home of how each printed equation is scaled: residual k = (its printed form) × s_k, each s_k the
+    factor common to its terms (the double pendulum's θ₁ equation: l₁); None when a factor would hold a
+    coordinate or a rate (then the rows are not a constant rescaling of 𝓜q̈ = f and no factor is claimed)."""
+    shown = equations(d, pr)
+    key = (tuple(d.equations.residuals), tuple(s for s, _ in shown))
+
+    def scales() -> list[sp.Expr] | None:
+        with unbudgeted():
+            out = [sp.factor(sp.cancel(r / s)) for r, (s, _) in zip(d.equations.residuals, shown, strict=True)]
+        return None if any(s.free_symbols & {*d.table.q, *d.table.qd, *d.table.qdd} for s in out) else out
+
+    return memoized("equation-scales", key, scales)
 
 
 def lagrangian(d: Derivation, pr: Printer) -> sp.Expr:
@@ -223,13 +246,16 @@ def _at_root(pr: Printer, expr: sp.Expr, r: sp.Symbol) -> str:
     return pr.tex(expr.xreplace({r: sp.Symbol(r.name + "0")}))
 
 
-def _divided_by(d: Derivation, shown: list[tuple[sp.Expr, str]]) -> str:
+# the clause that says how coupled equations are shown: a scene's own reason for the step keeps it (contract.py)
+SCALED_CLAUSE = "each is shown divided by the factor common to all its terms"
+
+
+def _divided_by(d: Derivation, pr: Printer) -> str:
     """How equations coupled through their accelerations are shown: each divided by the factor common to its
     terms (the double pendulum's first by l₁, its second by m₂ l₂), said so that no reader wonders why they
     are scaled differently."""
-    with unbudgeted():
-        scales = [sp.factor(sp.cancel(r / s)) for r, (s, _) in zip(d.equations.residuals, shown, strict=True)]
-    if any(s.free_symbols & {*d.table.q, *d.table.qd, *d.table.qdd} for s in scales):
+    scales = equation_scales(d, pr)
+    if scales is None:
         return "."
     said = [
         f"the {plain_name(n)} equation by {textbook.unicode_text(s)}"
@@ -238,7 +264,19 @@ def _divided_by(d: Derivation, shown: list[tuple[sp.Expr, str]]) -> str:
     ]
     if not said:
         return "."
-    return "; each is shown divided by the factor common to all its terms (" + ", ".join(said) + ")."
+    return f"; {SCALED_CLAUSE} (" + ", ".join(said) + ")."
+
+
+def _undivided(d: Derivation, pr: Printer) -> str:
+    """The end of the mass matrix's sentence: where the equations above are shown divided by factors, that
+    its rows are theirs undivided (row k: equation k times the factor it was divided by)."""
+    scales = equation_scales(d, pr)
+    if scales is None or all(s == 1 for s in scales):
+        return "."
+    return (
+        "; they are the equations above undivided: each row of the mass matrix and of f is that equation as shown "
+        "times the factor it was divided by."
+    )
 
 
 def _common_factor(c: sp.Expr) -> sp.Expr:
@@ -383,7 +421,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             + (
                 "; each equation is shown divided by its acceleration's coefficient."
                 if eqs.mass_matrix.is_diagonal()
-                else _divided_by(d, shown_equations)
+                else _divided_by(d, pr)
             ),
             formed=True,
         )
@@ -405,7 +443,8 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             ],
             [eqs.mass_matrix.tolist(), [display(meaning.by_coordinate(x, table.q)) for x in eqs.forcing]],
             f"The equations are linear in the accelerations: {Mu} q̈ = f, with {Mu} the mass matrix (the Hessian of L in "
-            "the velocities) and f the rest of each equation (the forces and the velocity terms) taken to the right.",
+            "the velocities) and f the rest of each equation (the forces and the velocity terms) taken to the right"
+            + _undivided(d, pr),
         )
     )
     # an acceleration linear in the coordinates grouped by coordinate over its shared denominator (app.engine.meaning)

@@ -6,15 +6,46 @@ import sympy as sp
 
 from app.engine import meaning, notation
 from app.engine.constraints import ConstraintForce
+from app.engine.constraints import display as constraint_display
+from app.engine.constraints import positive as constraint_positive
+from app.engine.derive import Derivation
+from app.engine.multipliers import Multipliers, derived_multipliers
 from app.engine.notation import CONSTRAINT
 from app.engine.report import Printer, _mapping_step, _step, display
 from app.engine.transform import Transformed, collected, compact
 
 
-def constraint_steps(forces: tuple[ConstraintForce, ...], pr: Printer) -> list[dict[str, str]]:
-    """The constraints in Cartesian form and the forces the multipliers give."""
+def _cartesian_printer(m: Multipliers, pr: Printer) -> Printer:
+    """``pr`` with the Cartesian names: x, ẋ, ẍ (x₁, ẋ₁, ẍ₁ for several bodies) and λ₁, λ₂."""
+    names = dict(pr.names)
+    for s, v, a in zip(m.positions, m.velocities, m.accelerations, strict=True):
+        letter, index = s.name[0], s.name[1:]
+        sub = f"_{{{index}}}" if index else ""
+        names |= {s: f"{letter}{sub}", v: rf"\dot{{{letter}}}{sub}", a: rf"\ddot{{{letter}}}{sub}"}
+    names |= {lam: rf"\lambda_{{{a + 1}}}" for a, lam in enumerate(m.multipliers)}
+    return Printer(names)
+
+
+def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Printer) -> list[dict[str, str]]:
+    """The constraints in Cartesian form, the multipliers derived from the Lagrangian that holds them, and
+    the forces the multipliers give."""
     if not forces:
         return []
+    m = derived_multipliers(d, forces)
+    cp = _cartesian_printer(m, pr)
+    lam = [rf"\lambda_{{{a + 1}}}" for a in range(len(forces))]
+    newton = [
+        rf"{cp.tex(mass)} {cp.tex(acc)} = {cp.tex(rhs)}" + (_signed(cp.tex(f)) if f != 0 else "")
+        for mass, acc, rhs, f in zip(m.masses, m.accelerations, m.newton, m.applied, strict=True)
+        if rhs != 0 or f != 0
+    ]
+    normal = [
+        _terms([(_factor(cp, m.normal[a, b]), lam[b]) for b in range(len(forces)) if m.normal[a, b] != 0])
+        + rf" = {cp.tex(m.right[a])}"
+        for a in range(len(forces))
+    ]
+    positive = constraint_positive(d)
+    solved = [constraint_display(e, positive) for e in m.solved]
     return [
         _step(
             "constraints",
@@ -25,23 +56,70 @@ def constraint_steps(forces: tuple[ConstraintForce, ...], pr: Printer) -> list[d
             "space; it can only push along its normal, the gradient of 𝒞.",
         ),
         _step(
+            "multiplier-lagrangian",
+            "Lagrangian with the multipliers",
+            [rf"L' = {cp.tex(m.lagrangian)}", *newton],
+            [m.lagrangian, *m.newton],
+            "In Cartesian coordinates every position is free, and each constraint joins the Lagrangian times an "
+            "unknown multiplier λ. Its Euler–Lagrange equations are Newton's law, m r̈ = −∇U + λ ∇𝒞: the "
+            "constraint pushes along its normal ∇𝒞, with a strength λ still to be found."
+            + (" The force along the motion joins them as it is." if any(f != 0 for f in m.applied) else ""),
+        ),
+        _step(
+            "multiplier-equation",
+            "The multipliers along the normals",
+            # 𝒞̈ = 0 said, not expanded: its expansion (a dozen terms on the turning parabola) is wider than a
+            # page or a phone, and the equation for λ below is what it gives
+            [rf"\ddot{{{CONSTRAINT}}}_{{{a + 1}}} = 0" for a, _ in enumerate(m.twice)] + normal,
+            [*m.twice, *m.right],
+            "The constraint holds at every instant, so its second time derivative vanishes. Putting r̈ from "
+            "Newton's law into it keeps only the component of the equations along ∇𝒞: an equation for λ alone, "
+            "with no acceleration left.",
+        ),
+        _step(
+            "multiplier",
+            "The multipliers solved",
+            [rf"{lam[a]} = {pr.tex(e)}" for a, e in enumerate(solved)],
+            solved,
+            "Solved for λ, with the positions and velocities of the motion put in for x, ẋ, ….",
+        ),
+        _step(
             "constraint-forces",
             "Forces of constraint",
             [
-                (rf"\lambda_{{{a + 1}}} = {pr.tex(f.multiplier)},\quad " if f.multiplier != f.force else "")
                 # the force on the body the constraint names (``on``): λ times the size of 𝒞's gradient in its position
-                + rf"F_{{{a + 1}}} = \lambda_{{{a + 1}}} \left|\frac{{\partial {CONSTRAINT}_{{{a + 1}}}}}"
+                rf"F_{{{a + 1}}} = \lambda_{{{a + 1}}} \left|\frac{{\partial {CONSTRAINT}_{{{a + 1}}}}}"
                 + rf"{{\partial \vec r_{{{f.constraint.on}}}}}\right| = {pr.tex(f.force)}"
                 + rf"\quad (\text{{{f.constraint.name}}})"
                 for a, f in enumerate(forces)
             ],
             [f.force for f in forces],
-            "Newton's law with the unknown push λ ∇𝒞, m r̈ = −∇U + Σ λ ∇𝒞, is solved for the multipliers λ with the "
-            "engine's accelerations put in for r̈. The force a constraint exerts on the body it acts on, at r_i, is "
-            "λ ∂𝒞/∂r_i; its size F = λ |∂𝒞/∂r_i| is then a function of the coordinates and velocities alone, "
-            "positive along the gradient.",
+            "The force a constraint exerts on the body it acts on, at r_i, is λ ∂𝒞/∂r_i; its size "
+            "F = λ |∂𝒞/∂r_i| is a function of the coordinates and velocities alone, positive along the gradient.",
         ),
     ]
+
+
+def _factor(cp: Printer, e: sp.Expr) -> str:
+    """A coefficient before a multiplier: in brackets when it prints as a sum."""
+    text = cp.tex(e)
+    return rf"\left({text}\right)" if isinstance(cp.form(e), sp.Add) else text
+
+
+def _signed(text: str) -> str:
+    """`` + a`` or `` − a`` for a term joining a sum."""
+    return f" - {text[1:].lstrip()}" if text.startswith("-") else f" + {text}"
+
+
+def _terms(pairs: list[tuple[str, str]]) -> str:
+    """coefficient λ + coefficient λ, a negative coefficient's sign taken into the sum: a λ₁ − b λ₂."""
+    out = ""
+    for coefficient, name in pairs:
+        negative = coefficient.startswith("-") and not coefficient.startswith(r"-\left(")
+        body = coefficient[1:].lstrip() if negative else coefficient
+        sign = (" - " if out else "-") if negative else (" + " if out else "")
+        out += f"{sign}{body} {name}"
+    return out
 
 
 def transform_steps(tr: Transformed) -> list[dict[str, str]]:

@@ -14,10 +14,11 @@ import sympy as sp
 
 from app.engine import notation
 from app.engine.budget import memoized, pythagoras
+from app.engine.damping import damped
 from app.engine.derive import Derivation
-from app.engine.dimensions import system_dimensions, unit_text
+from app.engine.dimensions import parse_unit, system_dimensions, unit_latex, unit_text
 from app.engine.hamilton import Hamilton
-from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode, NormalModes
+from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode, NormalModes, defaults
 from app.engine.report import Printer, _step, display, plain_name
 from app.engine.stability import Linear
 from app.engine.textbook import unicode_text
@@ -254,22 +255,24 @@ def _singular_points(nm: NormalModes, d: Derivation, pr: Printer) -> list[str]:
             if abs(complex(sp.N(M[k, k].xreplace(at).xreplace(defaults)))) < 1e-12
         ]  # fmt: skip
         shown = [n for n in point if n not in lost] or list(point)
-        where = r",\; ".join(f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(point[n])}" for n in shown)
+        where = r",\; ".join(
+            f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(point[n])}" for n in shown
+        )
+        # the note on a row of its own, so that a phone's narrow box needs no sideways scroll
         if lost:
             names = r",\ ".join(pr.tex(sym[n]) for n in lost)
-            where += rf"\quad (\text{{the coordinates fail here: }} {names} \text{{ has no value}})"
+            note = rf"(\text{{the coordinates fail: }} {names} \text{{ has no value}})"
         else:
-            where += r"\quad (\text{the coordinates fail here})"
-        rows.append(where)
+            note = r"(\text{the coordinates fail here})"
+        rows += [where, note]
     return rows
 
 
 def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
     """How the list was found, and how far it can be trusted (never "exactly" unless provably complete)."""
     if nm.solved:
-        return (
-            "The conditions are polynomial in the coordinates and were solved exactly, so these are all the equilibria"
-            + ("; where they leave a coordinate free, every state that satisfies them is one." if nm.family else ".")
+        return "These are all the equilibria: no other configuration makes every generalized force vanish" + (
+            "; where the conditions leave a coordinate free, every state that satisfies them is one." if nm.family else "."
         )
     some_exact = any(e.exact for e in found)
     where = f" (it looked at {nm.searched})" if nm.searched else ""
@@ -278,7 +281,7 @@ def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
         return (
             ("Closed forms are shown where they are known; " if some_exact else "")
             + ("a" if some_exact else "A")
-            + " numerical search over a full period of every angle, at the default parameters, found "
+            + " search through a full turn of every angle, at the default parameters, found "
             + (("no others." if all(e.exact for e in found) else "the rest") if some_exact else "them")
             # a caveat only where some equilibrium rests on the search alone
             + (
@@ -373,12 +376,12 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         )
     if nm.common_factor:
         why += (
-            " Its linearized equations change with time only through a factor common to all their coefficients; "
+            " Its linearised equations change with time only through a factor common to all their coefficients; "
             "divided by it, their coefficients are constant, and the exponents and frequencies below are theirs."
         )
     if nm.unclassified:
         why += (
-            " The system stays at rest there at all times, but its linearized equations change with time, so "
+            " The system stays at rest there at all times, but its linearised equations change with time, so "
             "there are no constant frequencies to report."
         )
     steps = [_step("equilibria", "Equilibria", rows, list(nm.condition), why)]
@@ -439,8 +442,15 @@ def _beats_step(e: Equilibrium, pr: Printer, d: Derivation, number: int) -> dict
     )
 
 
-def _exponents(e: Equilibrium, d: Derivation) -> str:
-    """The exponents s of e^{st} (in 1/s, four figures at the default parameters), each complex pair once."""
+def exponent_letter(d: Derivation) -> str:
+    """The letter of the exponents of e^{rt}: r, as Taylor writes the roots of the auxiliary equation (s would be
+    read as the second beside its unit s⁻¹), s only where r is already a coordinate's or a parameter's name."""
+    taken = {*d.table.names, *(p.name for p in d.system.parameters)}
+    return "s" if "r" in taken else "r"
+
+
+def _exponents(e: Equilibrium, d: Derivation, named: bool = True) -> str:
+    """The exponents r of e^{rt} (in 1/s, four figures at the default parameters), each complex pair once."""
     lin = e.linear
     assert lin is not None
     shown = []
@@ -451,23 +461,25 @@ def _exponents(e: Equilibrium, d: Derivation) -> str:
         pair = s.imag > 1e-12 * max(1.0, abs(s))
         # a purely imaginary pair is ±2i, never 0 ± 2i
         shown.append((rf"\pm {_figures(s.imag)}i" if re == "0" else rf"{re} \pm {_figures(s.imag)}\,i") if pair else re)
-    eta = notation.letter("displacement", d)
-    return rf"{eta} \propto e^{{s t}},\quad s = " + r",\; ".join(shown) + r"\,\mathrm{s}^{-1}" + AT_DEFAULTS
+    eta, r = notation.letter("displacement", d), exponent_letter(d)
+    lead = rf"{eta} \propto e^{{{r} t}},\quad " if named else ""
+    return rf"{lead}{r} = " + r",\; ".join(shown) + r"\,\mathrm{s}^{-1}" + AT_DEFAULTS
 
 
 def _verdict(e: Equilibrium, d: Derivation) -> str:
     lin = e.linear
     Mu, Ku, wu = (notation.text(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
+    r = exponent_letter(d)
     if lin is None or not lin.moving:
         text = _KIND[e.kind].replace("ω", wu)
         return text[0].upper() + text[1:] + "."
     freq = ", ".join(_number(f) for f in lin.frequencies)
     out = (
         "The velocity terms (G, from damping, Coriolis or magnetic forces) enter the motion near it: with "
-        f"{notation.text('displacement', d)} = v e^{{st}} "
+        f"{notation.text('displacement', d)} = v e^{{{r}t}} "
         # the eigenvalues of the first-order system's block matrix [[0, I], [−M⁻¹K, −M⁻¹G]] are the roots of
-        # det(s²M + sG + K) = 0: η = v e^{st} in M η̈ + G η̇ + K η = 0
-        f"the exponents s are the roots of det(s²{Mu} + sG + {Ku}) = 0. "
+        # det(r²M + rG + K) = 0: η = v e^{rt} in M η̈ + G η̇ + K η = 0
+        f"the exponents {r} are the roots of det({r}²{Mu} + {r}G + {Ku}) = 0. "
     )
     if e.kind == "unstable":
         out += "One has a positive real part, so small displacements grow: an unstable equilibrium."
@@ -497,9 +509,17 @@ def _neutral(lin: Linear, Ku: str, wu: str) -> str:
     count = _COUNT.get(zeros, str(zeros))
     out = f"{count} {'is' if zeros == 1 else 'are'} zero ({'a free drift' if zeros == 1 else 'free drifts'})"
     if pairs:
-        out += ", the others are ±" + ", ±".join(f"{p}i" for p in pairs) + " (oscillations at " + ", ".join(pairs) + " rad/s)"
+        out += (
+            ", the others are ±"
+            + ", ±".join(f"{p}i" for p in pairs)
+            + " (oscillations at "
+            + ", ".join(pairs)
+            + " rad/s)"
+        )
         if all(abs(w) <= 1e-9 * scale**2 for w in lin.omega_squared):
-            out += f"; {Ku} gives {wu}² = 0 in every direction, so these frequencies come from the velocity terms G alone"
+            out += (
+                f"; {Ku} gives {wu}² = 0 in every direction, so these frequencies come from the velocity terms G alone"
+            )
     return out + ", and none grows: a neutral equilibrium."
 
 
@@ -601,6 +621,42 @@ def coordinate_unit(d: Derivation, name: str) -> str:
     return "rad" if not dims else unit_text(dims)
 
 
+def _damped_rows(e: Equilibrium, pr: Printer, d: Derivation) -> list[str]:
+    """The auxiliary equation about a damped equilibrium of one coordinate, its roots as a formula, and (where it
+    oscillates) the critical damping and the energy's decay, each followed by its number at the defaults."""
+    name = e.coordinates[0]
+    found = damped(d, e.exact[name]) if e.exact and name in e.exact else None
+    if found is None:
+        return []
+    eta, r, w = notation.letter("displacement", d), exponent_letter(d), notation.letter("frequency", d)
+    values = defaults(d)
+    beta_value = float(sp.N(found.beta.xreplace(values)))
+    w0_value = float(sp.N(found.omega0_squared.xreplace(values)))
+    rows = [
+        # η̈ + 2β η̇ + ω₀² η = 0, with β and ω₀² from the engine's linearised equation of motion
+        rf"\ddot{{{eta}}} + 2\beta\,\dot{{{eta}}} + {w}_0^2\,{eta} = 0,\quad \beta = {pr.tex(found.beta)},\quad "
+        rf"{w}_0^2 = {pr.tex(found.omega0_squared)}",
+        # η ∝ e^{rt}: r² + 2β r + ω₀² = 0, so r = −β ± √(β² − ω₀²)
+        rf"{eta} \propto e^{{{r} t}}:\quad {r}^2 + 2\beta {r} + {w}_0^2 = 0,\quad {r} = -\beta \pm \sqrt{{\beta^2 - {w}_0^2}}",
+        rf"\beta \approx {_figures(beta_value)}\,\mathrm{{s}}^{{-1}},\quad {w}_0^2 \approx {_figures(w0_value)}"
+        + PER_SECOND_SQUARED
+        + AT_DEFAULTS,
+    ]
+    if found.critical is not None and w0_value > 0:
+        # β = ω₀: the two roots meet, the boundary between oscillating and creeping back
+        p, value = found.critical
+        dims = parse_unit(next((q.unit for q in d.system.parameters if q.name == p.name), ""))
+        shown = unit_latex(dims) if dims else ""
+        rows.append(
+            rf"\beta = {w}_0:\quad {pr.tex(p)}_\text{{c}} = {pr.tex(value)} \approx "
+            rf"{_figures(float(sp.N(value.xreplace(values))))}{shown}" + AT_DEFAULTS
+        )
+    if 0 < beta_value**2 < w0_value:
+        # light damping: the amplitude decays as e^{−βt}, the energy (quadratic in it) as e^{−2βt} on average
+        rows.append(rf"E \propto e^{{-2\beta t}},\quad 2\beta = {pr.tex(2 * found.beta)}")
+    return rows
+
+
 def _one_coordinate_step(
     e: Equilibrium, pr: Printer, d: Derivation, number: int, where: str, about: str
 ) -> dict[str, str]:
@@ -613,17 +669,20 @@ def _one_coordinate_step(
     moving = e.linear is not None and e.linear.moving
     rows = [where]
     if moving:
-        rows.append(_exponents(e, d))
+        auxiliary = _damped_rows(e, pr, d)
+        # after the auxiliary equation, which says η ∝ e^{rt}, the roots' numbers alone
+        rows += [*auxiliary, _exponents(e, d, named=not auxiliary)]
         lin = e.linear
         assert lin is not None
         grows = any(s.real > 1e-12 for s in lin.exponents)
         what = "Small motions about"
+        r = exponent_letter(d)
         why = (
-            f"Linearised about {about}, a small displacement varies as eˢᵗ, and the velocity term (the damping) "
-            "enters the equation for s: the real part of s is a rate of growth or decay (1/s), its imaginary part "
-            "an angular frequency. "
+            f"Linearised about {about}, a small displacement varies as e^({r}t), and the velocity term (the damping) "
+            f"enters the equation for {r}: the real part of {r} is a rate of growth or decay (in s⁻¹), its imaginary "
+            "part an angular frequency. "
             + (
-                "One s is positive: a small displacement runs away, an unstable equilibrium."
+                f"One {r} is positive: a small displacement runs away, an unstable equilibrium."
                 if grows
                 else "Every s has a negative real part: a small motion dies away, an asymptotically stable equilibrium."
             )
@@ -674,6 +733,9 @@ def _one_coordinate_step(
         key = f"steady-motion:{number}"
     else:
         title, key = f"{what} {about}", f"normal-modes:{number}"
+        # the equilibrium is part of the first equation's sentence ("about θ = 0: ω² = g/R"), never a lone row
+        # that reads as an equation of its own; its "=" unspaced, so the rows still align at the equation's
+        rows = [rf"\text{{about }} {where.replace(' = ', '=')}:\quad {rows[1]}", *rows[2:]]
     return _step(key, title, rows, [e.mass.tolist(), e.stiffness.tolist(), [w2]], why)
 
 

@@ -49,7 +49,8 @@ def _parameter_rank(name: str) -> tuple[int, str, str]:
 
 class _Printer(LatexPrinter):
     def __init__(self, names: dict[sp.Symbol, str], moving: set[sp.Symbol], first: sp.Symbol | None = None):
-        super().__init__({"symbol_names": names, "fold_func_brackets": True})
+        # arccos, not acos: inverse trigonometric functions as a textbook names them
+        super().__init__({"symbol_names": names, "fold_func_brackets": True, "inv_trig_style": "full"})
         self.moving = moving  # coordinates, velocities, accelerations and time
         self.first = first  # the term holding this symbol leads a top-level sum (an equation's own acceleration)
         self.depth = 0  # fractions open around what is being printed
@@ -225,7 +226,7 @@ def latex(expr: Any, names: dict[sp.Symbol, str], first: sp.Symbol | None = None
         # a mutable matrix is no sp.Basic: each entry in textbook order all the same (m R², not R² m)
         return _Printer(names, _moving(names, sp.ImmutableMatrix(expr)), first).doprint(expr)
     if not isinstance(expr, sp.Basic) or larger_than(expr, NODE_BUDGET):
-        return tex_greek(sp.latex(expr, symbol_names=names))
+        return tex_greek(sp.latex(expr, symbol_names=names, inv_trig_style="full"))
     # a document prints most expressions several times (the steps and the results box; a double pendulum's
     # 161 printings are of 62 expressions): each once per document and set of names
     key = (expr, tuple(names.items()), first)

@@ -23,6 +23,9 @@ times, spacing h.
   0: a sign change placed by bisection on the cubic Hermite interpolant of J between two steps, or a
   touch (a minimum of J's smallest singular value that reaches 0, several fields vanishing at once)
   confirmed by the second variation turning negative past it.
+* ``varied_conjugate_time``: the same search for the variations of coordinate c alone (the other
+  coordinates kept on the true path): the 1×1 Jacobi equation with P_cc, C_cc and R_cc.  Those variations
+  are a subset of all, so their focus comes at t* or later, or never.
 """
 
 from __future__ import annotations
@@ -173,6 +176,7 @@ class ActionResult:
     second_variation: float
     kind: str
     conjugate_time: float | None
+    varied_conjugate_time: float | None  # the focus of the varied coordinate alone (the others on the true path)
     error_estimate: float
     hessian_eigenvalues: list[float]
     path: TruePath
@@ -410,6 +414,9 @@ def action_of(
     eigenvalues = np.linalg.eigvalsh(form)
     scale = float(np.abs(form).max()) or 1.0
     t_star = conjugate_time(path.t, P, C, R)
+    # the variations of coordinate c alone: the Jacobi equation of the c-c blocks (with one coordinate, t* itself)
+    alone = slice(c, c + 1)
+    t_alone = t_star if n == 1 else conjugate_time(path.t, P[alone, alone], C[alone, alone], R[alone, alone])
     return ActionResult(
         epsilons=list(epsilons),
         action=action,
@@ -418,6 +425,7 @@ def action_of(
         second_variation=second,
         kind=classify(eigenvalues, scale),
         conjugate_time=t_star,
+        varied_conjugate_time=t_alone,
         error_estimate=error,
         hessian_eigenvalues=eigenvalues.tolist(),
         path=path,

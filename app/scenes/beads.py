@@ -15,11 +15,12 @@ HELIX_BEAD = Scene(
     section="4.3",
     family="helix",
     reasons=reasons.HELIX_BEAD,
-    summary="A wire leaves one degree of freedom: the height z, with gravity diluted by the helix's pitch.",
+    summary="A wire leaves one degree of freedom: the height z, along which the winding adds inertia, not weight.",
     statement=(
         "A bead of mass m slides without friction along a wire bent into a helix of radius R whose axis is "
         "vertical. Going up the wire, the bead turns about the axis by the angle φ = α z, so α sets how tightly "
-        "the helix is wound. Using the height z as the only coordinate, find the Lagrangian, the equation of "
+        "the helix is wound. Heights z are measured upward, with U = 0 at z = 0. Using the height z as the "
+        "only coordinate, find the Lagrangian, the equation of "
         "motion and the forces the wire exerts on the bead."
     ),
     figure=(
@@ -61,7 +62,7 @@ HELIX_BEAD = Scene(
 ROTATING_PARABOLA = Scene(
     id="rotating-parabola",
     coordinate_meanings={
-        "rho": "distance of the bead from the axis",
+        "rho": "signed distance of the bead from the axis, negative on the other branch of the wire",
     },
     title="Bead on a rotating parabolic wire",
     section="4.6–4.7",
@@ -71,7 +72,8 @@ ROTATING_PARABOLA = Scene(
     statement=(
         "A wire shaped as the parabola z = α ρ² (ρ the signed horizontal distance from the vertical axis, "
         "positive on one branch of the wire and negative on the other) is turned about that axis "
-        "by a motor at the constant rate ω. A bead of mass m slides on it without friction. With ρ as the "
+        "by a motor at the constant rate ω. A bead of mass m slides on it without friction. Heights z are "
+        "measured upward from the bottom of the parabola, where U = 0. With ρ as the "
         "coordinate, derive the equation of motion, compare the energy function h with the energy E, and explain "
         "which one is conserved."
     ),

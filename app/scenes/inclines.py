@@ -19,7 +19,8 @@ INCLINE_BLOCK = Scene(
     summary="Newton's law along a slope recovered from L = T − U with a single coordinate.",
     statement=(
         "A block of mass m slides without friction on a plane tilted at the angle α to the horizontal; the plane "
-        "is fixed. X is the distance of the block up the slope from the foot of the ramp. Find the Lagrangian, the "
+        "is fixed. X is the distance of the block up the slope from the foot of the ramp. Heights are measured upward "
+        "from the foot of the ramp, where U = 0. Find the Lagrangian, the "
         "equation of motion and the normal force of the plane."
     ),
     figure="A right-angled ramp rising at angle α, the block on its slope at distance X from the foot, X pointing uphill.",
@@ -82,7 +83,9 @@ MOVABLE_INCLINE = Scene(
         "A block of mass m slides without friction down the slope of a wedge of mass M and angle α; the wedge "
         "itself slides without friction on a horizontal floor. X is the horizontal displacement of the wedge and "
         "D the distance the block has slid down the slope, so the block sits at x = X + D cos α across and at "
-        "height z = −D sin α, measured from where the wedge's top corner started. Find the accelerations of both, and the normal forces of the wedge "
+        "height z = −D sin α, measured from where the wedge's top corner started. "
+        "Heights are measured upward, and U = 0 with the block at that corner (D = 0); the wedge does not rise or "
+        "fall. Find the accelerations of both, and the normal forces of the wedge "
         "on the block and of the floor on the wedge."
     ),
     figure=(

@@ -16,7 +16,7 @@ PLANAR_BOB = Particle("m", ("R*sin(theta)", "0", "R - R*cos(theta)"), "bob")
 # so the reported force is the tension (a string cannot push).
 PLANAR_STRING = Constraint(
     "string tension",
-    "R**2 - x**2 - y**2 - (z - R)**2",
+    "R**2 - x**2 - (z - R)**2",
     "The string's pull on the bob, positive toward the pivot; a negative value means the string would have to "
     "push, so it goes slack.",
     slack_when_negative=True,
@@ -34,7 +34,8 @@ SIMPLE_PENDULUM = Scene(
     summary="One angle, one equation: the Lagrangian recipe on the smallest example.",
     statement=(
         "A small bob of mass m hangs from a fixed pivot on a string of length R and swings in a "
-        "vertical plane. The angle θ is measured from the lowest point. Derive the equation of "
+        "vertical plane. The angle θ is measured from the lowest point. Heights are measured upward from that "
+        "lowest point, where U = 0. Derive the equation of "
         "motion and the frequency of small swings."
     ),
     figure="A pivot at the top, a string of length R, the bob at angle θ from the downward vertical.",
@@ -95,7 +96,8 @@ SPHERICAL_PENDULUM = Scene(
     statement=(
         "A ball of mass m on an inextensible string of length R moves anywhere on the sphere the "
         "string allows. The polar angle θ is measured from the upward vertical and φ is the "
-        "azimuth. Derive the equations of motion and their first integrals."
+        "azimuth. Heights are measured upward from the pivot, where U = 0. Derive the equations of motion and "
+        "their first integrals."
     ),
     figure="A sphere of radius R about the pivot, the ball at polar angle θ from the upward axis and azimuth φ.",
     system=System(
@@ -164,7 +166,8 @@ DAMPED_PENDULUM = Scene(
         "force −(b/R²) v that opposes the bob's velocity v in proportion to it. Drag has no potential energy, "
         "so it cannot sit in L; projected on the coordinate it becomes the generalized force Q_θ = −b θ̇ on the "
         "right-hand side of the Euler–Lagrange equation. Find the equation of motion and the rate at which the "
-        "energy decays."
+        "energy decays. As for the simple pendulum, heights are measured upward from the lowest point, where "
+        "U = 0."
     ),
     figure="The simple pendulum's pivot, string and bob, with an arrow along the path opposing the bob's motion for the drag.",
     system=System(

@@ -63,8 +63,11 @@ SIMPLE_PENDULUM: dict[str, str] = {
     "time-integral": "Taken between the turning points, this integral is half the period of a wide swing (there and back is a whole one): an elliptic integral.",
     "reduced-equilibria": "The bottom (θ = 0) is stable with ω² = g/R; the top (θ = π) is unstable.",
     "equilibria": "sin θ = 0 at the bottom and at the top of the circle, and nowhere else.",
-    "normal-modes": "Linearizing sin θ about each equilibrium gives ω² = g/R at the bottom and −g/R at the top.",
-    "constraints": "The string keeps the bob on the sphere of radius R about the pivot at height R.",
+    "normal-modes": "Linearising sin θ about each equilibrium gives ω² = g/R at the bottom and −g/R at the top.",
+    "constraints": "The string keeps the bob on the circle of radius R about the pivot at height R, in the plane of the swing (y = 0).",
+    "multiplier-lagrangian": "The bob is free in x and z once the string is replaced by λ: gravity pulls down, the string pulls along its own line, −∇𝒞 ∝ (x, z − R).",
+    "multiplier-equation": "Differentiating x² + (z − R)² = R² twice brings in ẋ² + ż², the square of the speed: the tension will hold a centripetal part.",
+    "multiplier": "λ₁ is the tension divided by 2R, since |∇𝒞₁| = 2R on the circle.",
     "constraint-forces": "The tension must supply the centripetal force m R θ̇² plus gravity's pull along the string.",
 }
 
@@ -92,7 +95,10 @@ DAMPED_PENDULUM: dict[str, str] = {
     **_hamiltonian("p_θ²/(2 m R²) + m g R (1 − cos θ), with the drag added to ṗ"),
     "equilibria": "The drag vanishes at rest, so the equilibria are the simple pendulum's: bottom and top.",
     "normal-modes": "About the bottom the motion is a damped oscillation; about the top it runs away.",
-    "constraints": "The string keeps the bob at distance R from the pivot.",
+    "constraints": "The string keeps the bob on the circle of radius R about the pivot, in the plane of the swing.",
+    "multiplier-lagrangian": "Newton's law for the free bob with the string's pull λ ∇𝒞; the drag joins it along the motion, tangent to the circle.",
+    "multiplier-equation": "The drag is tangent to the circle, so it has no part along ∇𝒞 and drops out of the equation for λ.",
+    "multiplier": "The same λ as the undamped pendulum's at the same θ and θ̇: damping changes the motion, not the tension's formula.",
     "constraint-forces": "The tension holds the bob on its circle: centripetal force plus gravity along the string.",
 }
 
@@ -106,7 +112,7 @@ HELIX_BEAD: dict[str, str] = {
     "potential": "Only the height matters for gravity: U = m g z.",
     "lagrangian": "A free fall along z with an enlarged inertia.",
     "derivatives:z": "∂L/∂z = −m g is the weight; ∂L/∂ż = m (1 + α² R²) ż is the momentum along the wire.",
-    "euler-lagrange": "Constant acceleration: the weight is shared between the climb and the turning.",
+    "euler-lagrange": "Constant acceleration: the full weight m g acts on an inertia enlarged to m (1 + α² R²), so the bead falls more slowly than a free body.",
     "mass-matrix": "𝓜 = m (1 + α² R²), the effective inertia along the wire; the force f = −m g.",
     "accelerations": "z̈ = −g/(1 + α² R²): a tighter helix falls more slowly.",
     "momenta": "p_z = m (1 + α² R²) ż, the momentum along the wire measured in z.",
@@ -120,6 +126,9 @@ HELIX_BEAD: dict[str, str] = {
     "time-integral": "The integral gives the parabola of a uniform acceleration g/(1 + α² R²).",
     "equilibria": "Gravity along z never balances on a frictionless wire, so there is none.",
     "constraints": "The wire is two surfaces at once: the cylinder of radius R and the helicoid that winds it.",
+    "multiplier-lagrangian": "Two multipliers, one for each surface: λ₁ pushes toward the axis, λ₂ across the helix.",
+    "multiplier-equation": "The two normals are not perpendicular in general, so the two equations for λ₁ and λ₂ are coupled.",
+    "multiplier": "On the helix x = R cos αz and y = R sin αz: λ₁ carries the circular motion's ż², λ₂ the weight the slope does not take.",
     "constraint-forces": "The wire pushes toward the axis for the circular motion and across the helix to turn the bead.",
 }
 
@@ -147,12 +156,15 @@ INCLINE_BLOCK: dict[str, str] = {
     "time-integral": "The integral recovers X(t), a parabola in t.",
     "equilibria": "On a frictionless slope nothing holds the block, so there is none.",
     "constraints": "The block stays on the plane through the origin tilted at α.",
+    "multiplier-lagrangian": "Newton's law for the free block with the plane's push λ along the normal (−sin α, 0, cos α).",
+    "multiplier-equation": "The plane is flat: 𝒞̈ has no velocity terms, and the equation holds only gravity's part along the normal.",
+    "multiplier": "λ is the normal force itself, as the normal (−sin α, 0, cos α) has length 1.",
     "constraint-forces": "The normal force balances gravity's component into the plane: m g cos α.",
 }
 
 
 TABLETOP_SPRING: dict[str, str] = {
-    "action": "Of all the paths across the table between two positions in the same time, the real one makes ∫ L dt stationary; the spring pulls like an oscillator, so after half its period π √(m/k) the true path is a saddle.",
+    "action": "Of all the paths across the table between two positions in the same time, the real one makes ∫ L dt stationary; the spring pulls like an oscillator, so after half its period π √(m/k) the true path is a saddle: a variation of r and θ together lowers S, while varying r or θ alone reaches its focus later or never.",
     "positions": "Polar coordinates about the spring's anchor on the table: (r cos θ, r sin θ, 0).",
     "velocities": "ṙ along the radius and r θ̇ around it.",
     "squared-speeds": "The radial and angular motions are perpendicular: v² = ṙ² + r² θ̇².",
@@ -182,7 +194,7 @@ TABLETOP_SPRING: dict[str, str] = {
 
 
 SPHERICAL_PENDULUM: dict[str, str] = {
-    "action": "Of all the ways over the sphere between two points in the same time, the real one makes ∫ L dt stationary; gravity pulls back toward the bottom, so long enough stretches of motion are saddles of S.",
+    "action": "Of all the ways over the sphere between two points in the same time, the real one makes ∫ L dt stationary; gravity pulls back toward the bottom, so long enough stretches of motion are saddles of S; the first kinetic focus, of θ and φ varied together, comes before that of θ or φ varied alone.",
     "positions": "Spherical coordinates about the pivot, with θ from the upward vertical.",
     "velocities": "R θ̇ along a meridian and R sin θ φ̇ along a parallel.",
     "squared-speeds": "The two directions are perpendicular: v² = R² θ̇² + R² sin² θ φ̇².",
@@ -209,12 +221,15 @@ SPHERICAL_PENDULUM: dict[str, str] = {
     "equilibria": "At rest the ball can hang at the bottom or balance at the top.",
     "steady-motion": "About the conical motion θ nods with the frequency given by U_eff″ at its bottom.",
     "constraints": "The string keeps the ball on the sphere of radius R about the pivot.",
+    "multiplier-lagrangian": "The ball is free in x, y and z once the string is replaced by λ; the string pulls along −∇𝒞 = 2(x, y, z), toward the pivot.",
+    "multiplier-equation": "Differentiating x² + y² + z² = R² twice brings in the squared speed ẋ² + ẏ² + ż².",
+    "multiplier": "On the sphere the squared speed is R²(θ̇² + φ̇² sin²θ): both motions load the string.",
     "constraint-forces": "The tension supplies the centripetal force of the motion on the sphere plus gravity's pull.",
 }
 
 
 RAIL_TWO_BODY: dict[str, str] = {
-    "action": "The two masses move so that ∫ L dt is stationary between two configurations; the spring gives their relative motion a kinetic focus half its period after the start, past which S has a saddle there.",
+    "action": "The two masses move so that ∫ L dt is stationary between two configurations; the spring gives their relative motion a kinetic focus half its period after the start, past which a variation that moves both masses lowers S (a saddle); varying x₁ or x₂ alone, the focus comes later.",
     "positions": "Both masses are on the rail, so each is given by its own x.",
     "velocities": "Each mass moves with its own ẋ along the rail.",
     "squared-speeds": "On a line the squared speed is ẋ² for each mass.",
@@ -263,8 +278,11 @@ PULLEY: dict[str, str] = {
     "h-vs-e": _h_is_e("The positions do not depend on t"),
     **_hamiltonian("the kinetic energy written with the inverse mass matrix, plus the weights"),
     "equilibria": "The generalized forces are constant: with m₁ = m₂ = M/2 they vanish and every position is an equilibrium; otherwise (at the default masses, too) there is none.",
-    "constraints": "With z₁, z₂, z₃ the heights of m₁, m₂ and M (z₁ = y₁, z₂ = y₂, z₃ = Y, all in m), the string's length fixes z₁ + z₂ + 2 z₃; the constant 2 m places M below the pulleys.",
-    "constraint-forces": "λ times ∂𝒞/∂z₁ = 1 is the string's upward pull on mass 1, the tension, the same along the whole string; on the movable pulley it pulls with twice that.",
+    "constraints": "With z₁, z₂, z₃ the heights of m₁, m₂ and M (z₁ = y₁, z₂ = y₂, z₃ = Y, all in metres), the string's length fixes z₁ + z₂ + 2 z₃; the constant, 2 metres, places M below the pulleys.",
+    "multiplier-lagrangian": "Three free masses, each pulled up by the string: λ on each end mass, 2λ on the movable pulley (∂𝒞/∂z₃ = 2).",
+    "multiplier-equation": "The string's length is fixed, so the accelerations obey z̈₁ + z̈₂ + 2 z̈₃ = 0: each mass's inertia enters through 1/m.",
+    "multiplier": "No velocities enter: the tension is constant while the masses move.",
+    "constraint-forces": "Since ∂𝒞/∂z₁ = 1, λ itself is the tension: the string's upward pull on mass 1, the same along the whole string; on the movable pulley it pulls with twice that.",
 }
 
 
@@ -294,7 +312,10 @@ MOVABLE_INCLINE: dict[str, str] = {
     "time-integral": "The integral gives the uniformly accelerated slide D(t).",
     "reduced-equilibria": "U_eff′ is constant and non-zero: the block always slides.",
     "equilibria": "A frictionless slope cannot hold the block, so there is none.",
-    "constraints": "With (x₁, z₁) the wedge's top corner and (x₂, z₂) the block, across and up in m, the block stays on the slope and the wedge on the floor.",
+    "constraints": "With (x₁, z₁) the wedge's top corner and (x₂, z₂) the block, across and up in metres, the block stays on the slope and the wedge on the floor.",
+    "multiplier-lagrangian": "Block and wedge free in the plane; λ₁ pushes them apart along the slope's normal, λ₂ holds the wedge on the floor.",
+    "multiplier-equation": "The slope's normal involves both bodies, so each λ₁ equation holds both masses; the floor couples λ₂ to it through the wedge.",
+    "multiplier": "Both multipliers are constant: the contact and floor forces do not change while the block slides.",
     "constraint-forces": "The wedge's push on the block is less than m g cos α, because the wedge recoils.",
 }
 
@@ -321,9 +342,12 @@ ROTATING_PARABOLA: dict[str, str] = {
     "energy-integral": "The conserved h gives ρ̇ from ρ.",
     "time-integral": "The integral gives the period of the oscillation along the wire when ω² < 2 g α.",
     "reduced-equilibria": "The bottom holds the bead with Ω² = 2 g α − ω² when that is positive (Ω, the frequency along the wire; ω is the turning rate).",
-    "equilibria": "ρ = 0 is the only equilibrium unless ω² = 2 g α, when every ρ is one. V = −L at ρ̇ = 0 is the U_eff of the effective-potential step: gravity's m g α ρ² less the centrifugal ½ m ω² ρ².",
+    "equilibria": "ρ = 0 is the only equilibrium unless ω² = 2 g α, when every ρ is one. The function whose stationary points these are is U_eff, as in the effective potential above: gravity's m g α ρ² less the centrifugal ½ m ω² ρ².",
     "normal-modes": "At the bottom the small oscillations along the wire have Ω² = 2 g α − ω².",
     "constraints": "The wire lies on the paraboloid z = α ρ² and in the plane turned by ω t.",
+    "multiplier-lagrangian": "Two multipliers: λ₁ for the paraboloid, λ₂ for the turning plane; the plane's 𝒞₂ holds t.",
+    "multiplier-equation": "𝒞₂ depends on t, so its second derivative also holds the terms of the turning: ω and ω² times the position and velocity.",
+    "multiplier": "λ₂ = 2mωρ̇ pushes the bead round as it moves along the wire (the Coriolis force, with the sign of the push).",
     "constraint-forces": "The wire pushes normal to itself in its plane and, across it, drives the bead around.",
 }
 
@@ -332,3 +356,53 @@ def reason(reasons: Mapping[str, str], key: str) -> str | None:
     """A scene's reason for a step (``reasons``: the scene's own), by the step's key or else by its kind
     (the key's part before a colon)."""
     return reasons.get(key) or reasons.get(key.partition(":")[0])
+
+
+COUPLED_OSCILLATORS: dict[str, str] = {
+    "action": "The two masses move so that ∫ L dt is stationary between two configurations; each mode is a spring-like oscillation, so past half the faster mode's period the true path is a saddle of S, not its least value.",
+    "positions": "Both masses stay on the line; each sits at its rest position (1 m either side of the middle) plus its displacement.",
+    "velocities": "A rest position does not move, so each mass's velocity is the rate of its own displacement.",
+    "squared-speeds": "On a line each squared speed is just ẋ², with no term mixing the two masses.",
+    "kinetic": "The two equal masses' kinetic energies add, and neither velocity is tied to the other.",
+    "potential": "The outer springs are stretched by x₁ and x₂; the middle one by x₂ − x₁, its ends' difference in displacement.",
+    "lagrangian": "The masses are coupled only through the middle spring's term: with κ = 0 L splits into two separate oscillators.",
+    "derivatives:x1": "∂L/∂x₁ is the net spring force on mass 1: the left spring pulls it back by k x₁, the middle spring by κ (x₁ − x₂); ∂L/∂ẋ₁ = m ẋ₁ is its momentum.",
+    "derivatives:x2": "Mass 2 feels the mirror image: the right spring's −k x₂ and the middle spring's pull κ (x₁ − x₂), equal and opposite to the one on mass 1.",
+    "euler-lagrange": "Newton's law for each mass: two linear equations, coupled through κ alone.",
+    "mass-matrix": "𝓜 is diagonal, m and m: the masses are coupled through the middle spring's force, not through their inertia.",
+    "accelerations": "Each acceleration is the net spring force on that mass over m; it depends on the other mass's displacement through κ.",
+    "momenta": "p_x₁ = m ẋ₁ and p_x₂ = m ẋ₂ are the masses' ordinary momenta; the walls take up momentum, so their sum is not conserved.",
+    "time-dependence": "Walls and springs stay put, so L has no t.",
+    "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
+    "energy": "The two masses' kinetic energies plus the energy stored in all three springs.",
+    "h-vs-e": _h_is_e("The rest positions do not depend on t"),
+    **_hamiltonian("(p_x₁² + p_x₂²)/(2m) + ½ k x₁² + ½ k x₂² + ½ κ (x₂ − x₁)²"),
+    "equilibria": "These are all the equilibria: the net force on each mass is linear in the displacements, and with the walls holding the outer springs it vanishes only when both masses are at rest positions, x₁ = x₂ = 0.",
+}
+
+
+DOUBLE_PENDULUM: dict[str, str] = {
+    "action": "Both rods swing so that ∫ L dt is stationary between any two configurations of the rods a time τ apart.",
+    "positions": "The first bob is l₁ from the pivot at θ₁; the second is l₂ further on at θ₂, both angles from the downward vertical and the pivot at the origin.",
+    "velocities": "The second bob's velocity adds its own swing about the first bob to the first bob's velocity.",
+    "squared-speeds": "The first bob moves on a circle, l₁² θ̇₁²; the second bob's two velocities at angle θ₁ − θ₂ to each other add a cross term 2 l₁ l₂ θ̇₁ θ̇₂ cos(θ₁ − θ₂).",
+    "kinetic": "The lower bob's cross term couples the two swings through their inertia: T is not a sum of two pendulums.",
+    "potential": "Both bobs hang below the pivot: the first by l₁ cos θ₁, the second by l₁ cos θ₁ + l₂ cos θ₂, so the first rod carries both masses' weight.",
+    "lagrangian": "T − U; the coupling sits in the kinetic energy, through cos(θ₁ − θ₂), not in the potential.",
+    "derivatives:theta1": "∂L/∂θ₁ is gravity's torque on the two bobs about the pivot plus the cross term's dependence on θ₁; ∂L/∂θ̇₁ counts both bobs' inertia (m₁ + m₂) l₁² and, through the cross term, the lower bob's swing.",
+    "derivatives:theta2": "∂L/∂θ₂ is gravity's torque on the lower bob about the upper one, with the cross term again; ∂L/∂θ̇₂ is the lower bob's angular momentum about the upper bob, taken with its full velocity.",
+    "euler-lagrange": "Two equations, each containing both angular accelerations: the upper rod's swing drives the lower one and the lower one pulls back on the upper.",
+    "mass-matrix": "𝓜 has the off-diagonal m₂ l₁ l₂ cos(θ₁ − θ₂): the two rods' inertia is coupled, most strongly when they are in line.",
+    "accelerations": "Solving the two equations for θ̈₁ and θ̈₂ gives their long explicit form; it is what the simulation integrates.",
+    "momenta": "p_θ₁ and p_θ₂ mix both angular velocities through cos(θ₁ − θ₂); neither is conserved, since gravity exerts a torque on each rod.",
+    "time-dependence": "Pivot and rods are fixed, so L has no t.",
+    "hamiltonian": "T is quadratic in the angular velocities, so h is T + U.",
+    "energy": "Both bobs' kinetic energy plus their gravitational energy, measured from the pivot's height.",
+    "h-vs-e": _h_is_e("The pivot does not move"),
+    **_hamiltonian("the kinetic energy rewritten in p_θ₁ and p_θ₂, plus the same U"),
+    "equilibria": "These are all the equilibria: at rest the torques vanish only where sin θ₁ = 0 and sin θ₂ = 0, that is with each rod straight down or straight up, four combinations.",
+    # U = −(m₁ + m₂) g l₁ cos θ₁ − m₂ g l₂ cos θ₂ with positive inertia: one ω² < 0 per direction in which U falls
+    "normal-modes:2": "The lower rod stands upright on the hanging upper one: U falls if the lower rod tips, so one ω² is negative and the equilibrium is unstable.",
+    "normal-modes:3": "The upper rod stands upright with the lower one hanging from its top: U falls if the upper rod tips, so again one ω² is negative: unstable.",
+    "normal-modes:4": "Both rods upright in line: U is at its highest, both ω² are negative, and a small push along either mode grows.",
+}

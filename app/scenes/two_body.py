@@ -27,7 +27,8 @@ TABLETOP_SPRING = Scene(
     summary="A cyclic angle conserves angular momentum and folds the orbit into one radial coordinate.",
     statement=(
         "A particle of mass m moves on a frictionless horizontal table, tied to a fixed point of the table by a "
-        "spring of zero rest length that pulls it toward that point with force −k r. In polar coordinates (r, θ) "
+        "spring of zero rest length that pulls it toward that point with force −k r; U = 0 with the particle at "
+        "that point, where the spring is unstretched. In polar coordinates (r, θ) "
         "about that point, derive the equations of motion, the conserved angular momentum, the effective "
         "potential, the energy integral and the time as an integral over r; then find the radius of the "
         "circular orbit for a given angular momentum and the frequency of small radial oscillations about it."
@@ -112,7 +113,8 @@ RAIL_TWO_BODY = Scene(
     summary="Centre of mass and relative coordinate: one cyclic, one oscillating with the reduced mass.",
     statement=(
         "Two masses m1 and m2 slide without friction on a straight horizontal rail, at positions x1 and x2, joined "
-        "by a spring of stiffness k and rest length l0. Derive the equations of motion; then change to the centre "
+        "by a spring of stiffness k and rest length l0; U = 0 when the spring has its rest length. "
+        "Derive the equations of motion; then change to the centre "
         "of mass X and the separation x = x2 − x1 and show that X is cyclic, that the total momentum is "
         "conserved and that x oscillates like a single body of the reduced mass."
     ),
@@ -181,7 +183,8 @@ PULLEY = Scene(
         "A string runs over two fixed pulleys; its ends carry masses m1 and m2, and the loop between the pulleys "
         "holds a third, movable pulley from which a mass M hangs. Pulleys and string are massless and the string "
         "does not stretch. With the heights y1 and y2 of the end masses (upward) as coordinates, the middle "
-        "mass's height is fixed by the string at Y = −(y1 + y2)/2 plus a constant. Find the accelerations of all "
+        "mass's height is fixed by the string at Y = −(y1 + y2)/2 plus a constant. "
+        "Heights are measured upward, and U = 0 when y1 = y2 = 0. Find the accelerations of all "
         "three masses and the tension in the string."
     ),
     figure=(

@@ -188,3 +188,6 @@ class Scene:
     # what each coordinate is, in the set-up's words: the Symbols table's meaning of it ("angle of the string
     # from the downward vertical"), in place of the bare "generalized coordinate" a typed system gets
     coordinate_meanings: Mapping[str, str] = field(default_factory=dict)
+    # what a reader should know about the simulation itself (how far a run can be trusted), printed beside the
+    # simulation's settings, never in the statement of the problem
+    run_note: str = ""

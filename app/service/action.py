@@ -2,7 +2,8 @@
 
     {"epsilons": [ε…], "action": [S(ε)…], "true": S(0), "first_variation": dS/dε at 0,
      "second_variation": d²S/dε² at 0, "kind": "minimum" | "saddle" | "maximum",
-     "conjugate_time": t* | null, "error_estimate": absolute error of each S,
+     "conjugate_time": t* | null, "varied_conjugate_time": the varied coordinate's own focus | null,
+     "error_estimate": absolute error of each S,
      "coordinate", "shape", "k", "t_end", "eigenvalues": the second variation on η_1 … η_K,
      "path": {"t", "q", "L"} (the true path's chosen coordinate and L, SHOWN samples),
      "preview": {"lagrangian", "rhs", "coordinates", "parameters"} (L and the equations as browser JavaScript), "warnings": [...]}
@@ -101,6 +102,7 @@ def action_of_derivation(
         "second_variation": result.second_variation,
         "kind": result.kind,
         "conjugate_time": result.conjugate_time,
+        "varied_conjugate_time": result.varied_conjugate_time,
         "error_estimate": result.error_estimate,
         "coordinate": coordinate,
         "shape": shape,

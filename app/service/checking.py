@@ -133,7 +133,8 @@ class Checking:
         """A scene step's problem without its catalogue, and its pickle (in a thread: the derivation's own
         expression evaluated at the sample points)."""
         d = derivations.derivation(scene_id)  # UnknownScene for an unknown id
-        key = (scene_id, step, coordinate if coordinate in d.table.names else None)
+        # (a position's component is named in the coordinate field too: x2, the block's x)
+        key = (scene_id, step, coordinate if coordinate in d.table.names or step == "position" else None)
         found = self._truths.get(key)
         if found is None:
             try:

@@ -28,7 +28,7 @@ from app.viz.exprtree import document_tree, leaves
 from app.viz.mechanism import mechanism
 from app.viz.names import label
 from app.viz.panels import Facts, folded, oscillating_equilibria, shown, texts
-from app.viz.units import coordinate_units
+from app.viz.units import coordinate_units, rate_unit
 
 LONG_STEP = 160  # characters a reader sees (not LaTeX's) beyond which a step's math starts collapsed
 LONG_ROWS = 6  # lines of a display beyond which it starts collapsed, however short each line
@@ -245,7 +245,11 @@ def _plain(x: float) -> str:
 
 
 def unit_text(unit: str) -> str:
-    """A unit as printed: powers as superscripts (m/s^2 → m/s², kg*m^2 → kg·m²)."""
+    """A unit as printed: powers as superscripts (m/s^2 → m/s², kg*m^2 → kg·m²), a reciprocal as a negative power
+    (1/m → m⁻¹, 1/s → s⁻¹)."""
+    reciprocal = re.fullmatch(r"1/([A-Za-z]+)", unit.strip())
+    if reciprocal:
+        return reciprocal.group(1) + "⁻¹"
     return re.sub(
         r"\^(-?\d)", lambda m: m.group(1).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")), unit
     ).replace("*", "·")
@@ -299,7 +303,7 @@ def _initial_controls(
         reach = max([abs(m["value"]) for m in found], default=0.0)
         vmax = max(10.0, 3 * abs(rate), 1.5 * reach) if angle else max(5.0, 3 * abs(rate), math.sqrt(9.81 * scale))
         unit = units.get(q, "rad" if angle else "m")
-        rate_unit = f"{unit}/s" if unit else "1/s"
+        rates = rate_unit(unit)
         controls.append(
             {"name": q, "label": f"{label(q)}(0)", "latex": latex(q), "unit": unit,
              "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(value), "log": False,
@@ -308,8 +312,8 @@ def _initial_controls(
         )  # fmt: skip
         controls.append(
             {"name": f"{q}_dot", "label": f"{label(q + '_dot')}(0)", "latex": latex(f"{q}_dot"),
-             "unit": rate_unit, "min": _fmt(-vmax), "max": _fmt(vmax), "value": _fmt(rate), "log": False,
-             "allowed": allowed_text(-vmax, vmax, rate_unit), "ticks": _marks(found, rate_unit),
+             "unit": rates, "min": _fmt(-vmax), "max": _fmt(vmax), "value": _fmt(rate), "log": False,
+             "allowed": allowed_text(-vmax, vmax, rates), "ticks": _marks(found, rates),
              "description": f"initial rate of change of {label(q)}"}
         )  # fmt: skip
     return controls
@@ -322,7 +326,7 @@ def _marks(found: Sequence[dict[str, Any]], unit: str) -> list[dict[str, Any]]:
         value = m["value"]
         twin = any(o is not m and o["label"] == m["label"] and math.isclose(o["value"], -value) for o in found)
         size = f"±{abs(value):.4g}" if twin else f"{value:.4g}".replace("-", "−")
-        text = "" if twin and value < 0 else f"{size} {unit} ({m['label']})".replace("  ", " ")
+        text = "" if twin and value < 0 else f"{size} {unit_text(unit)} ({m['label']})".replace("  ", " ")
         out.append({"value": _fmt(value), "label": m["label"], "text": text})
     return out
 

@@ -229,7 +229,9 @@ PANELS: tuple[Panel, ...] = (
         "Hamilton's principle: the true motion makes the action S = ∫ L dt stationary among paths with the same "
         "ends. Drag the dashed path (or use ε) to vary one coordinate by ε sin(nπt/τ) over a time τ (n = 1, 2, …: the shape); the lower plots show L "
         "along both paths and S against ε, flat at ε = 0. Move τ past the kinetic focus and the true path stops "
-        "being a minimum: it becomes a saddle of S.",
+        "being a minimum: it becomes a saddle of S. With several coordinates each family of variations has its own "
+        "focus: varying one coordinate alone (the others kept on the true path), it comes when the focus of all of "
+        "them varied together does, or later, or never; the readout names the family of each focus.",
         "always (every system has an L)",
         lambda f: True,
         # where no true path reaches a kinetic focus (app/engine/action_step.py decides, the derivation's first

@@ -81,6 +81,19 @@ def coordinate_units(doc: Mapping[str, Any], scene: bool) -> dict[str, dict[str,
             if d is not None and _add(energy, d, Fraction(-1)) == {"m": Fraction(2)}:
                 units[q] = "m"
                 known[q] = {"m": Fraction(1)}
-    rate = {q: f"{u}/s" if u else "1/s" for q, u in units.items()}
+    rate = {q: rate_unit(u) for q, u in units.items()}
     momentum = {q: {"rad": "kg·m²/s", "m": "kg·m/s"}.get(u, "") for q, u in units.items()}
     return {"units": units, "rate_units": rate, "momentum_units": momentum}
+
+
+def rate_unit(unit: str) -> str:
+    """The unit of a coordinate's rate: m/s, rad/s; 1/s where the coordinate's own unit is not known."""
+    return f"{unit}/s" if unit else "1/s"
+
+
+def with_unit(value: str, unit: str) -> str:
+    """A number with its unit as prose prints it: "1 m/s", "1 rad/s"; a rate of a coordinate without a known unit
+    ("1/s") reads "1 s⁻¹", never "1 1/s" or "1 per second"."""
+    if not unit:
+        return value
+    return f"{value} s⁻¹" if unit == "1/s" else f"{value} {unit}"

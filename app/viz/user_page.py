@@ -17,6 +17,7 @@ from app.engine.names import unicode
 from app.engine.user_system import UserSystem
 from app.viz.exprtree import document_tree, evaluate
 from app.viz.page_model import scene_page
+from app.viz.units import coordinate_units, with_unit
 
 # the optional panels (app/viz/panels.py) a user's system gets wherever its derivation supports them
 PANELS = ("effective-potential", "small-oscillations", "poincare")
@@ -40,14 +41,15 @@ def model_of(user: UserSystem, doc: dict[str, Any], methods: Sequence[str]) -> d
         "events": [asdict(e) for e in distance_events(user.nonnegative)],
     }
     # where every configuration is an equilibrium (a charge in a uniform magnetic field), a start at rest shows
-    # nothing: the first coordinate starts moving at 1 per second, and the page says why
+    # nothing: the first coordinate starts moving at a rate of 1 in its own unit (m/s, rad/s), and the page says why
     note = ""
+    rates = coordinate_units(doc, scene=False)["rate_units"]
     if any(e.get("everywhere") for e in doc.get("normal_modes") or []):
         first = user.coordinates[0]
         initial[f"{first}_dot"] = 1.0
         note = (
             f"Every configuration is an equilibrium, so a start at rest would show nothing: the run starts with "
-            f"{unicode(first + '_dot')}(0) = 1 per second."
+            f"{unicode(first + '_dot')}(0) = {with_unit('1', rates[first])}."
         )
     # a coordinate that only turns (a cyclic φ) at rest lets a cone's bead or a planet fall into the centre; a
     # start on the steady motion itself makes every plot a point. So the run keeps the conserved momentum of the
@@ -60,7 +62,7 @@ def model_of(user: UserSystem, doc: dict[str, Any], methods: Sequence[str]) -> d
         initial[rate] = value
         note = (
             f"The run starts near the steady motion through {unicode(r)} = {steady_at:g}: with that motion's "
-            f"{unicode(rate[:-4])}-momentum, from {unicode(r)} = {initial[r]:g}, so {unicode(rate)}(0) = {value:.4g} "
+            f"{unicode(rate[:-4])}-momentum, from {unicode(r)} = {initial[r]:g}, so {unicode(rate)}(0) = {with_unit(format(value, '.4g'), rates[rate[:-4]])} "
             f"and {unicode(r)} oscillates about {steady_at:g} (at rest, {unicode(rate[:-4])} would not turn and "
             f"{unicode(r)} would fall). Change {unicode(rate)}(0) to see {unicode(r)} swing wider or leave."
         )

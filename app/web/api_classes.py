@@ -41,8 +41,11 @@ from app.web.schemas_classes import (
     Number,
     Recovered,
     RecoverRequest,
+    RejoinRequest,
     Shown,
     ShowStep,
+    StudentCode,
+    StudentCodeRequest,
     Students,
     Summary,
 )
@@ -114,6 +117,30 @@ async def create_class(classes: ClassroomDep, body: NewClass) -> JSONResponse:
 )
 async def join_class(classes: ClassroomDep, client: ClientDep, code: str, body: JoinRequest) -> Response:
     return client.keep(_json(await classes.join(code, body.name, client.key, client.address)))
+
+
+@router.post(
+    "/{code}/rejoin",
+    summary="Open your record again on another device",
+    description="For a student on another device: the pseudonym and the recovery code shown at joining give the "
+    "record a new key (the old device's key no longer opens it). Tries count against the joins per minute.",
+    response_model=Joined,
+    responses={**_errors(400, 403, 413, 422, 429)},
+)
+async def rejoin_class(classes: ClassroomDep, client: ClientDep, code: str, body: RejoinRequest) -> Response:
+    return client.keep(_json(await classes.rejoin(code, body.name, body.recovery_code, client.key, client.address)))
+
+
+@router.post(
+    "/{code}/students/recovery",
+    summary="A new recovery code for a student",
+    description="With the instructor's key: a new recovery code for the student of this pseudonym, to hand over "
+    "(their old code stops working; the server keeps only the hash of either, so it cannot show the old one).",
+    response_model=StudentCode,
+    responses=_errors(400, 401, 403, 413, 422),
+)
+async def new_student_code(classes: ClassroomDep, code: str, key: KeyDep, body: StudentCodeRequest) -> JSONResponse:
+    return _json(await classes.new_student_code(code, key, body.name))
 
 
 _keyed_read("/{code}/me", "view_class", "The class as your key sees it", ClassView, Classroom.view)

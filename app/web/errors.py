@@ -46,6 +46,8 @@ from app.errors import (
     WrongKey,
 )
 from app.limits import RETRY_SECONDS as UNAVAILABLE_RETRY_SECONDS
+from app.scenes import SCENES
+from app.web.templating import templates
 
 # what each kind of failure is, in HTTP
 REFUSED = 422  # Refused and TooMuchWork: the request as sent cannot be served
@@ -169,9 +171,26 @@ async def http_error(request: Request, exc: Exception) -> Response:
     headers = dict(exc.headers or {})
     if exc.status_code == 405:  # every method the address takes, over all its routes (Starlette names one route's)
         headers["Allow"] = _allowed(request) or headers.get("Allow", "")
-    if exc.status_code < 400 or not request.url.path.startswith(("/api/", "/openapi.json", "/healthz")):
+    if exc.status_code == 404 and request.method in ("GET", "HEAD") and not request.url.path.startswith(_NOT_PAGES):
+        return _no_such_page(request)
+    if exc.status_code < 400 or not request.url.path.startswith(_API):
         return await http_exception_handler(request, exc)
     return problem_response(exc.status_code, str(exc.detail), headers)
+
+
+_API = ("/api/", "/openapi.json", "/healthz")
+_NOT_PAGES = (*_API, "/static/")
+
+
+def _no_such_page(request: Request) -> Response:
+    """A page address that leads nowhere: a page (never the API's JSON) saying what the addresses near it are,
+    for a class link cut before its code (/j/) and an embed address guessed (/embed/...)."""
+    path = request.url.path
+    near = "class" if path.rstrip("/") in ("/j", "/join") or path.startswith("/j/") else ""
+    near = "embed" if path.startswith("/embed") else near
+    scenes = [{"id": k, "title": s.title} for k, s in SCENES.items()]
+    context = {"missing": excerpt(path, 60), "nowhere": {"near": near, "scenes": scenes}}
+    return templates.TemplateResponse(request, "404.html", context, status_code=404)
 
 
 def _allowed(request: Request) -> str:

@@ -66,9 +66,16 @@ FORCED_SPRING = {
     "potential": "k*x**2/2",
     "forces": {"x": "F*cos(w*t) - b*x_dot"},
 }
+# R w² = 18 m/s² > g: θ = 0 is unstable and the bead rests off the axis, at cos θ = g/(R w²) (away from the
+# bifurcation R w² = g, where θ = 0 is a quartic minimum with no small-oscillation frequency)
 SPINNING_HOOP = {
     "coordinates": ["theta"],
-    "parameters": ["m", "R", "g", "w"],
+    "parameters": [
+        {"name": "m", "value": 0.1, "unit": "kg", "min": 0.001},
+        {"name": "R", "value": 0.5, "unit": "m", "min": 0.01},
+        {"name": "g", "value": 9.81, "unit": "m/s^2", "min": 0.01},
+        {"name": "w", "value": 6.0, "unit": "rad/s", "min": 0.01},
+    ],
     "lagrangian": "m*R**2*(theta_dot**2 + w**2*sin(theta)**2)/2 + m*g*R*cos(theta)",
 }
 

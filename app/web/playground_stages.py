@@ -55,11 +55,19 @@ def first_view(doc: dict[str, Any], href: str, key: str) -> dict[str, Any]:
         "progress_url": f"/api/derive/progress/{key}",
         "cancel_url": f"/api/derive/cancel/{key}",
     }
+    # each equation's factor (app/engine/report.py equation_scales): said under the equations, so that 𝓜
+    # and f, of the equations undivided, can be read off the rows shown
+    view["divided_by"] = [
+        {"coordinate": latex(e["coordinate"]), "factor": e["divided_by"]["latex"]}
+        for e in doc["equations_of_motion"]
+        if e.get("divided_by")
+    ]
     if not accelerations:
         # M q̈ = f, with M and f printed: what the numerics solves at each step
         rows = [" & ".join(x["latex"] for x in row) for row in doc["mass_matrix"]]
         # the page's letter for the mass matrix (𝓜 where a parameter is named M): app/engine/notation.py
         letter = letter_of(doc, "mass matrix", "M")
+        view["letter"] = letter
         view["system"] = letter + r" \ddot{q} = f"
         view["mass_matrix"] = letter + r" = \begin{pmatrix} " + r" \\ ".join(rows) + r" \end{pmatrix}"
         view["forcing"] = [f"f_{{{latex(c)}}} = {f['latex']}" for c, f in zip(q, doc["forcing"], strict=True)]

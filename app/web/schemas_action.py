@@ -72,6 +72,10 @@ class ActionResponse(BaseModel):
     second_variation: float = Field(description="d²S/dε² at ε = 0, from the Jacobi (second-variation) operator.")
     kind: str = Field(description="minimum, saddle or maximum: the second variation on the shapes k = 1 … K.")
     conjugate_time: float | None = Field(description="The first t* > 0 where the Jacobi fields from t = 0 vanish.")
+    varied_conjugate_time: float | None = Field(
+        description="The first kinetic focus of the variations of ``coordinate`` alone (the other coordinates kept on "
+        "the true path): t* or later, null before t_end."
+    )
     error_estimate: float = Field(description="Estimated absolute error of each S (quadrature and path).")
     coordinate: str
     shape: str

@@ -29,12 +29,17 @@ class CheckRequest(BaseModel):
     )
 
     step: Step = Field(
-        description="kinetic (T), potential (U), lagrangian (L), momentum (p of a coordinate), equation (the "
+        description="position (one Cartesian component of one body, in the generalised coordinates), kinetic (T), "
+        "potential (U), lagrangian (L), momentum (p of a coordinate), equation (the "
         "Euler–Lagrange equation of a coordinate as an expression equal to zero, q_ddot for accelerations), "
         "acceleration (q_ddot of a coordinate), hamiltonian (h in q and q_dot), omega_squared (ω² of small "
         "oscillations, where the system has a stable equilibrium)."
     )
-    coordinate: Name | None = Field(None, description="The coordinate, for momentum, equation and acceleration.")
+    coordinate: Name | None = Field(
+        None,
+        description="The coordinate, for momentum, equation and acceleration; for position, the component: x, y or z "
+        "of a single body, x1, z2, … (axis and body's number) where there are several.",
+    )
     answer: Expression
     follow_up: str | None = Field(
         None,
@@ -143,6 +148,9 @@ class Exercise(BaseModel):
     lhs: str = Field(description="LaTeX of what the answer stands for (T, p_θ, θ̈; 0 for an equation).")
     names: list[str] = Field(description="The names the answer may use.")
     answer: ExprPair = Field(description="The engine's step (to reveal on request).")
+    note: str | None = Field(
+        None, description="For a position: the axes and origin it is judged against, in a sentence for the student."
+    )
 
 
 class Exercises(BaseModel):

@@ -10,11 +10,14 @@ from typing import Annotated, Any
 
 from pydantic import AwareDatetime, BaseModel, ConfigDict, Field, StringConstraints
 
+from app.service.classroom.setup import MAX_SETUP
 from app.service.classroom.store import MAX_ASSIGNMENTS
 from app.web.schemas_check import CheckRequest, Step
 from app.web.schemas_user import STRICT, Name, SystemSpec
 
 Title = Annotated[str, StringConstraints(strip_whitespace=True, min_length=1, max_length=200, pattern=r"^[^\x00-\x1f\x7f]+$")]
+# a set-up is prose of a few lines: line breaks and tabs allowed, no other control character
+Setup = Annotated[str, StringConstraints(strip_whitespace=True, max_length=MAX_SETUP, pattern=r"^[^\x00-\x08\x0b-\x1f\x7f]*$")]
 Pseudonym = Annotated[str, StringConstraints(strip_whitespace=True, min_length=1, max_length=40, pattern=r"^[^\x00-\x1f\x7f]+$")]
 SceneId = Annotated[str, Field(min_length=1, max_length=40, pattern=r"^[a-z0-9_-]+$")]
 AttemptId = Annotated[str, Field(min_length=8, max_length=64, pattern=r"^[A-Za-z0-9_-]+$")]
@@ -55,6 +58,22 @@ class JoinRequest(BaseModel):
     name: Pseudonym = Field(description="A pseudonym, unique in the class; no account, no e-mail.")
 
 
+class RejoinRequest(BaseModel):
+    model_config = ConfigDict(**STRICT, json_schema_extra={"example": {"name": "Ada", "recovery_code": "ACEF-HKMN-PRTW"}})
+    name: Pseudonym = Field(description="The pseudonym the student joined with.")
+    recovery_code: str = Field(min_length=1, max_length=40, description="The student's recovery code from joining.")
+
+
+class StudentCodeRequest(BaseModel):
+    model_config = ConfigDict(**STRICT, json_schema_extra={"example": {"name": "Ada"}})
+    name: Pseudonym = Field(description="The student's pseudonym.")
+
+
+class StudentCode(BaseModel):
+    name: str
+    recovery_code: str = Field(description="The student's new recovery code (their old one no longer works).")
+
+
 class StepRef(BaseModel):
     model_config = ConfigDict(**STRICT)
     step: Step
@@ -70,6 +89,12 @@ class AssignmentItem(BaseModel):
         default_factory=list, max_length=40, description="The steps to practise (a scene: none means all)."
     )
     parameters: dict[Name, float] = Field(default_factory=dict, description="Parameter values to show the class.")
+    setup: Setup | None = Field(
+        None,
+        description="For a system (required there): what each coordinate is, where it is measured from and where "
+        "U = 0, shown to the students above the boxes with the system's positions, T and U typeset (`given`), "
+        "except what an assigned step asks for.",
+    )
 
     def to_item(self) -> dict[str, Any]:
         return {
@@ -78,6 +103,7 @@ class AssignmentItem(BaseModel):
             "name": self.name,
             "steps": [s.model_dump() for s in self.steps],
             "parameters": self.parameters,
+            "setup": self.setup,
         }
 
 
@@ -195,7 +221,8 @@ class StepSummary(BaseModel):
     step: str
     coordinate: str | None
     correct: int = Field(description="Answers judged correct or equivalent.")
-    incorrect: int
+    incorrect: int = Field(description="Answers judged wrong.")
+    not_read: int = Field(0, description="Answers the checker could not read (\"Not checked\"): never judged.")
     students_done: int = Field(description="Students with a correct or equivalent answer to the step.")
     mistakes: dict[str, int] = Field(
         description="Named mistakes among the incorrect answers, by the tutor's stable key, most common first."
@@ -203,7 +230,9 @@ class StepSummary(BaseModel):
     mistake_names: dict[str, str] = Field(
         default_factory=dict, description="Each named mistake's key in words, as the student was told it."
     )
-    stuck: int = Field(description="Students who answered the step and have no correct answer to it yet.")
+    stuck: int = Field(
+        description="Students who answered the step (an answer not read included) and have no correct answer yet."
+    )
     students_stuck: list[str] = Field(description="Their names, in alphabetical order.")
 
 
@@ -226,7 +255,7 @@ class AssignmentProgress(BaseModel):
 
 class Summary(BaseModel):
     students: int
-    attempts: int
+    attempts: int = Field(description="Every answer recorded: right, wrong and not read.")
     assignments: list[AssignmentProgress] = Field(default_factory=list, description="The series, in order.")
     steps: list[StepSummary] = Field(description="Each step: `scene` or `system`, then the counts.")
     mistakes: list[MistakeTotal] = Field(
@@ -240,7 +269,8 @@ class StudentStep(BaseModel):
     item: str
     step: str
     coordinate: str | None
-    attempts: int
+    attempts: int = Field(description="The student's answers to the step, those not read included.")
+    not_read: int = Field(0, description="Of them, answers the checker could not read.")
     done: bool
     last: str
 
@@ -248,7 +278,8 @@ class StudentStep(BaseModel):
 class StudentProgress(BaseModel):
     name: str
     joined: str
-    attempts: int
+    attempts: int = Field(description="Every answer the student sent, those not read included.")
+    not_read: int = Field(0, description="Of them, answers the checker could not read (never counted wrong).")
     done: int = Field(description="Assigned steps done (all steps done when nothing is assigned).")
     assigned: int
     steps: list[StudentStep]
@@ -261,6 +292,10 @@ class Students(BaseModel):
 class Joined(BaseModel):
     model_config = ConfigDict(extra="allow")
     student_key: str = Field(description="The student's secret: send it as `Authorization: Bearer <key>`.")
+    recovery_code: str | None = Field(
+        None, description="At joining only, shown once: with the pseudonym, POST …/rejoin opens the record again on "
+        "another device (the server keeps only its hash)."
+    )
     code: str
     title: str
     name: str

@@ -108,8 +108,20 @@ class ExprPair(BaseModel):
     )
 
 
+class Factor(BaseModel):
+    sympy: str
+    latex: str
+
+
 class EquationOfMotion(ExprPair):
     coordinate: str
+    divided_by: Factor | None = Field(
+        default=None,
+        description=(
+            "The factor common to the equation's terms that it is shown divided by (null: shown as derived); row k "
+            "of mass_matrix and forcing is equation k times its factor."
+        ),
+    )
 
 
 class ConservedQuantity(ExprPair):
@@ -132,6 +144,8 @@ class Equilibrium(BaseModel):
     position: ExprPair
     omega_squared: ExprPair
     stable: bool | None
+    exists: ExprPair | None = Field(None, description="Where the equilibrium exists (arccos(a/b) needs b > a); null when always.")
+    stable_when: ExprPair | None = Field(None, description="When stable is null: the condition on the parameters for ω² > 0.")
 
 
 class EffectivePotential(BaseModel):

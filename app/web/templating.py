@@ -25,8 +25,9 @@ from starlette.types import Scope
 
 from app.settings import ROOT
 from app.viz.chapter import ABOUT
-from app.viz.page_model import SLIDER_STEPS
+from app.viz.page_model import SLIDER_STEPS, unit_text
 from app.web.compression import negotiate
+from app.web.embed_views import offers as embed_offers
 from app.web.mathml import mathml
 from app.web.prose import prose_html
 
@@ -121,8 +122,10 @@ def vendor_ready() -> bool:
 
 
 templates.env.globals["static"] = static
+templates.env.globals["embed_offers"] = embed_offers  # the scene page's frames for a course page
 templates.env.globals["vendor_ready"] = vendor_ready
 templates.env.globals["chapter_about"] = ABOUT
 templates.env.globals["slider_steps"] = SLIDER_STEPS  # the controls' slider resolution, for the browser
 templates.env.filters["mathml"] = mathml
 templates.env.filters["prose"] = prose_html  # a sentence's symbols with their subscripts set (app/web/prose.py)
+templates.env.filters["unit"] = unit_text  # a unit as printed: m/s², m⁻¹ (app/viz/page_model.py)

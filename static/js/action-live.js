@@ -5,6 +5,7 @@
  *   path(rhs, y0, k, T)           the true path on STEPS + 1 even times (RK4)
  *   varied(L, path, k, c, k, ε)   L along q + ε sin(kπt/T) e_c, and S by Simpson's rule
  *   focus(rhs, y0, k, T)          the first kinetic focus: det of the Jacobi fields ∂q/∂q̇(0) = 0
+ *   focusAlone(fns, y0, k, T, c)  the first kinetic focus of the variations of coordinate c alone
  *   openingDuration(tEnd, t*)     the τ the panel opens on: before the first kinetic focus
  *   liveAction(fns, setup)        all of it for one setup (a drag reuses what only ε leaves alone)
  */
@@ -87,6 +88,45 @@ export function focus(rhs, y0, k, T, steps = STEPS) {
     const now = det(i);
     if (previous > 0 && now <= 0) return base.t[i - 1] + (previous / (previous - now)) * (base.t[i] - base.t[i - 1]);
     previous = now;
+  }
+  return null;
+}
+
+/**
+ * The first kinetic focus of the variations of coordinate c alone (the other coordinates kept on the true path),
+ * null before T.  Their second variation is ∫ (P η′² + 2 C η η′ + R η²) dt with P = ∂²L/∂q̇_c², C = ∂²L/∂q_c∂q̇_c
+ * and R = ∂²L/∂q_c², here by central differences of the generated L along the true path.  Its Jacobi equation,
+ * with Π = P η′ + C η, is η′ = (Π − C η)/P, Π′ = C η′ + R η; from η(0) = 0, η′(0) = 1 (RK4 with step 2h, its
+ * middle a grid time) the focus is the first zero of η.  These variations are some of all, so the focus comes at
+ * the one of all coordinates together or later (with one coordinate it is that one).
+ */
+export function focusAlone(fns, y0, k, T, c, steps = STEPS) {
+  const n = y0.length / 2, p = path(fns.rhs, y0, k, T, steps);
+  if (!p) return null;
+  const P = new Float64Array(steps + 1), C = new Float64Array(steps + 1), R = new Float64Array(steps + 1);
+  const y = new Float64Array(2 * n);
+  for (let i = 0; i <= steps; i++) {
+    const t = p.t[i], base = p.Y[i];
+    const dq = 1e-4 * Math.max(1, Math.abs(base[c])), dv = 1e-4 * Math.max(1, Math.abs(base[n + c]));
+    const L = (a, b) => { y.set(base); y[c] += a; y[n + c] += b; return fns.L(t, y, k); };
+    const L0 = L(0, 0);
+    P[i] = (L(0, dv) - 2 * L0 + L(0, -dv)) / (dv * dv);
+    R[i] = (L(dq, 0) - 2 * L0 + L(-dq, 0)) / (dq * dq);
+    C[i] = (L(dq, dv) - L(dq, -dv) - L(-dq, dv) + L(-dq, -dv)) / (4 * dq * dv);
+  }
+  const f = (i, eta, Pi) => { const d = (Pi - C[i] * eta) / P[i]; return [d, C[i] * d + R[i] * eta]; };
+  const H = 2 * (p.t[1] - p.t[0]);
+  let eta = 0, Pi = P[0];
+  for (let i = 0; i + 2 <= steps; i += 2) {
+    const [a1, b1] = f(i, eta, Pi);
+    const [a2, b2] = f(i + 1, eta + (H / 2) * a1, Pi + (H / 2) * b1);
+    const [a3, b3] = f(i + 1, eta + (H / 2) * a2, Pi + (H / 2) * b2);
+    const [a4, b4] = f(i + 2, eta + H * a3, Pi + H * b3);
+    const next = eta + (H / 6) * (a1 + 2 * a2 + 2 * a3 + a4);
+    Pi += (H / 6) * (b1 + 2 * b2 + 2 * b3 + b4);
+    if (!Number.isFinite(next)) return null;
+    if (i > 0 && eta > 0 && next <= 0) return p.t[i] + (eta / (eta - next)) * H;
+    eta = next;
   }
   return null;
 }

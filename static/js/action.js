@@ -20,7 +20,8 @@
  */
 import { fetchJSON } from "./api.js";
 import { axis, CONFIG, drawWhenVisible, layout, PALETTE, rateUnit } from "./plotkit.js";
-import { compileLagrangian, focus, liveAction, openingDuration, path, T_STEPS } from "./action-live.js";
+import { compileLagrangian, focus, focusAlone, liveAction, openingDuration, path, T_STEPS } from "./action-live.js";
+import { focusSentences } from "./action-focus.js";
 import { verdict } from "./action-verdict.js";
 import { compile } from "./expr.js";
 import { compileRhs } from "./preview.js";
@@ -108,6 +109,18 @@ export class ActionPanel {
   }
 
   label(q) { return (this.data.labels && this.data.labels[q]) || q; }
+
+  /** The browser's first kinetic focus of the variations of coordinate c alone over the whole run (kept per start). */
+  aloneAt(c) {
+    if (this.data.coordinates.length === 1) return this.focusAt;
+    this.aloneFoci ??= new Map();
+    const { y0, k } = this.setup(), key = `${c}|${this.focusKey}`;
+    if (!this.aloneFoci.has(key)) {
+      if (this.aloneFoci.size > 16) this.aloneFoci.clear();
+      this.aloneFoci.set(key, focusAlone(this.fns, y0, k, this.tEnd, c, 800));
+    }
+    return this.aloneFoci.get(key);
+  }
 
   /** Which sine shape lowers S, naming the one on screen first (second[j] = d²S/dε² for n = j + 1). */
   lowering(second) {
@@ -238,17 +251,42 @@ export class ActionPanel {
     this.timer = setTimeout(() => this.ask(false), SETTLE_MS);
   }
 
+  /** The request body for the action over [0, tEnd] varying coordinate c (the page's parameters and start). */
+  requestBody(tEnd, c, k, epsilons) {
+    const { params, initial } = this.fns ? this.setup() : { params: { ...this.data.parameters, ...(this.run?.request?.parameters || {}) }, initial: { ...this.data.initial, ...(this.run?.request?.initial || {}) } };
+    const request = { initial, t_end: tEnd, coordinate: this.data.coordinates[c], shape: "sine", k, epsilons };
+    if (!this.system) return { parameters: params, ...request };
+    const parameters = (this.system.parameters || []).map((p) => ({ ...p, value: params[p.name] ?? p.value }));
+    return { system: { ...this.system, parameters }, ...request };
+  }
+
+  /** The server's foci over the whole run for this start and coordinate c, {all, alone} (undefined until known):
+   *  all coordinates varied together, and c alone.  The server also finds a focus where det J only touches 0 (the
+   *  tabletop's, at half the spring's period), which the browser's sign test misses. */
+  runFoci(c) {
+    this.foci ??= new Map();
+    const key = `${c}|${this.focusKey}`;
+    if (!this.foci.has(key)) {
+      if (this.foci.size > 16) this.foci.clear();
+      this.foci.set(key, undefined);
+      fetchJSON(this.url, { body: this.requestBody(this.tEnd, c, 1, [0]) }).then((a) => {
+        this.foci.set(key, { all: a.conjugate_time, alone: a.varied_conjugate_time });
+        if (key !== `${this.coordinate}|${this.focusKey}`) return;
+        // the panel opens before the first focus of all coordinates together (openingDuration), now the server's
+        if (!this.TChosen && this.data.kinetic_focus_possible !== false && !this.data.forced) {
+          const T = openingDuration(this.tEnd, a.conjugate_time);
+          if (T !== this.T) { this.T = T; this.TInput.value = String(T); this.update(true); return; }
+        }
+        this.paint();
+      }).catch(() => this.foci.delete(key));
+    }
+    return this.foci.get(key);
+  }
+
   async ask(first) {
     const serial = ++this.serial;
-    const { params, initial } = this.fns ? this.setup() : { params: { ...this.data.parameters, ...(this.run?.request?.parameters || {}) }, initial: { ...this.data.initial, ...(this.run?.request?.initial || {}) } };
     const names = this.data.coordinates;
-    const epsilons = this.epsilons || [0];
-    const request = { initial, t_end: this.T, coordinate: names[this.coordinate], shape: "sine", k: this.shape, epsilons };
-    let body;
-    if (this.system) {
-      const parameters = (this.system.parameters || []).map((p) => ({ ...p, value: params[p.name] ?? p.value }));
-      body = { system: { ...this.system, parameters }, ...request };
-    } else body = { parameters: params, ...request };
+    const body = this.requestBody(this.T, this.coordinate, this.shape, this.epsilons || [0]);
     const key = JSON.stringify(body);
     this.section.setAttribute("aria-busy", "true");
     let answer;
@@ -294,7 +332,16 @@ export class ActionPanel {
     // where no true path can reach a kinetic focus (the engine's verdict, the same the derivation states) none is sought
     const never = this.data.kinetic_focus_possible === false;
     // with a force Q, S alone is not stationary and its kinetic focus means nothing: none is marked or named
-    const tStar = forced || never ? null : s && s.conjugate_time !== null && s.conjugate_time !== undefined ? s.conjugate_time : this.focusAt;
+    // the foci over the whole run: the server's once known, else the browser's (the server's answer for τ looks up to τ)
+    const run = forced || never ? undefined : this.runFoci(this.coordinate);
+    const tStar = forced || never ? null : run ? run.all : s && s.conjugate_time !== null && s.conjugate_time !== undefined ? s.conjugate_time : this.focusAt;
+    // the focus of the varied coordinate alone (the others kept on the true path)
+    const tAlone = forced || never ? null : run ? run.alone : s && s.varied_conjugate_time !== null && s.varied_conjugate_time !== undefined
+      ? s.varied_conjugate_time : this.aloneAt(this.coordinate);
+    const said = focusSentences({
+      labels: this.data.coordinates.map((name) => this.label(name)), c: this.coordinate, T, tEnd: this.tEnd,
+      tAll: tStar, tAlone, kind, never, lowering: this.lowering(live.second),
+    });
     // the browser's S(ε) - S(0) (the same quadrature for both) on top of the shown S(0)
     const Snow = S0 + (live.now.S - live.truth.S);
     // the tangent at ε = 0: flat by Hamilton's principle, but with a force Q its slope is dS/dε = −∫ Q η dt
@@ -312,10 +359,9 @@ export class ActionPanel {
       { type: "scatter", mode: "lines", x: [-reach, reach], y: [S0 - slope * reach, S0 + slope * reach], name: "tangent at ε = 0", xaxis: "x3", yaxis: "y3", line: { color: "#57606a", width: 1, dash: "dot" }, showlegend: false },
       { type: "scatter", mode: "markers", x: [this.eps], y: [Snow], name: "S of your path", xaxis: "x3", yaxis: "y3", marker: { color: PALETTE[1], size: 10 }, showlegend: false },
     ];
-    const shapes = [];
-    if (tStar !== null && tStar !== undefined && tStar <= T * 1.0001) {
-      shapes.push({ type: "line", xref: "x", yref: "paper", x0: tStar, x1: tStar, y0: 0.62, y1: 1, line: { color: "#c62828", width: 2, dash: "dot" } });
-    }
+    // each focus before τ a dotted line on the time axis, its label inside the paths' plot beside it (the second lower)
+    const shapes = forced ? [] : said.marks.map((m) => ({ type: "line", xref: "x", yref: "paper", x0: m.t, x1: m.t, y0: 0.62, y1: 1, line: { color: "#c62828", width: 2, dash: "dot" } }));
+    const annotations = forced ? [] : said.marks.map((m, i) => ({ x: m.t, y: 1 - 0.07 * i, xref: "x", yref: "paper", text: m.text, showarrow: false, font: { color: "#c62828", size: 12 }, yanchor: "top", xanchor: m.t > T / 2 ? "right" : "left", xshift: m.t > T / 2 ? -4 : 4, bgcolor: "rgba(255, 255, 255, 0.85)" }));
     const lay = layout({
       // the paths' plot gets the larger share (a phone's legend takes two lines above it); ε ticks stay upright
       height: 580, hovermode: false, dragmode: false, showlegend: true,
@@ -324,7 +370,7 @@ export class ActionPanel {
       xaxis3: axis("ε", { domain: [0.64, 1], anchor: "y3", nticks: 4, tickangle: 0 }), yaxis3: axis("S (J·s)", { domain: [0, 0.36], anchor: "x3" }),
       shapes,
       // the label inside the upper plot, beside its line, on the side with more room: above the plot it sat on the legend
-      annotations: tStar !== null && tStar !== undefined && tStar <= T ? [{ x: tStar, y: 1, xref: "x", yref: "paper", text: "kinetic focus t*", showarrow: false, font: { color: "#c62828", size: 12 }, yanchor: "top", xanchor: tStar > T / 2 ? "right" : "left", xshift: tStar > T / 2 ? -4 : 4, bgcolor: "rgba(255, 255, 255, 0.85)" }] : [],
+      annotations,
     });
     const moved = this.drawn && this.drawn.path === live.path && this.drawn.curve === curve && this.drawn.T === T;
     if (moved && this.plot.data?.length === traces.length) {
@@ -339,23 +385,8 @@ export class ActionPanel {
     this.section.dataset.kind = kind;
     this.section.dataset.s0 = String(S0);
     this.section.dataset.sNow = String(Snow);
-    const focusWords = forced ? "" : never
-      ? "No true path of this system reaches a kinetic focus, at any τ: L is at most linear in the coordinates and its mass matrix is constant."
-      : tStar === null || tStar === undefined
-      ? `No kinetic focus before ${fmt(this.tEnd)} s.`
-      : `The first kinetic focus (conjugate point) of this start is at t* = ${fmt(tStar)} s${tStar <= T ? ", marked on the time axis" : ""}.`;
-    let verdict;
-    const pastFocus = tStar !== null && tStar !== undefined && tStar < T;
-    if (kind === "minimum" && pastFocus) {
-      // the shapes tried all raise S, but past the focus some variation lowers it: never call it a minimum there
-      verdict = `With τ = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S, though the sine shapes tried `
-        + "all raise it: Jacobi's theorem gives a variation with the same ends that lowers S (the field that vanishes at 0 and at t*, "
-        + "bent a little), and it is not among these shapes. To see it: “Find the path”, then Relax, counts the directions of change "
-        + "that lower the discrete action. S is still stationary: its tangent at ε = 0 stays flat.";
-    } else if (kind === "minimum" && never) verdict = `With τ = ${fmt(T)} s the true path is a minimum of S: every variation with the same ends raises it.`;
-    else if (kind === "minimum") verdict = `With τ = ${fmt(T)} s, before any kinetic focus, the true path is a minimum of S: every variation with the same ends raises it.`;
-    else if (kind === "saddle") verdict = `With τ = ${fmt(T)} s, past the kinetic focus, the true path is no longer a minimum of S: it is a saddle. ${this.lowering(live.second)} S is still stationary: its tangent at ε = 0 stays flat.`;
-    else verdict = `With τ = ${fmt(T)} s every variation tried lowers S: the true path is a maximum among them.`;
+    const focusWords = forced ? "" : said.focus;
+    let verdict = said.verdict;
     if (this.data.forced) {
       // δS + ∫ Q δq dt = 0 on the true path, so with δq = ε sin(nπt/τ): dS/dε at ε = 0 = −∫ Q sin(nπt/τ) dt, not zero.
       // Both sides are shown: the slope of S(ε), and the integral of Q from its own formula along the true path

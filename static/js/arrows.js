@@ -1,6 +1,6 @@
 /**
  * arrows.js — vectors drawn over a mechanism (animation.js): the forces of constraint at an instant,
- * on one scale for the whole run with a legend, and the velocity handle of the selected body.
+ * on one scale for the whole run with a legend, and the velocity handle of the selected body with its label.
  */
 import { blockBase } from "./bodies.js";
 import { HANDLE_RADIUS } from "./drag.js";
@@ -95,15 +95,41 @@ export function drawHandle(ctx, h, dpr) {
   const color = "#c2185b", r0 = 11 * dpr, x0 = h.bx + h.ux * r0, y0 = h.by + h.uy * r0;
   ctx.strokeStyle = color; ctx.fillStyle = color; ctx.lineWidth = 2.5 * dpr;
   ctx.beginPath(); ctx.moveTo(x0, y0); ctx.lineTo(h.x, h.y); ctx.stroke();
-  if (h.len > 2 * dpr) {
-    // an arrowhead just short of the handle, pointing along the velocity
-    const back = (HANDLE_RADIUS + 2) * dpr, tx = h.x - h.ux * back, ty = h.y - h.uy * back, s = 7 * dpr;
-    ctx.beginPath();
-    ctx.moveTo(tx, ty);
-    ctx.lineTo(tx - h.ux * s - h.uy * s * 0.6, ty - h.uy * s + h.ux * s * 0.6);
-    ctx.lineTo(tx - h.ux * s + h.uy * s * 0.6, ty - h.uy * s - h.ux * s * 0.6);
-    ctx.closePath(); ctx.fill();
-  }
+  // an arrowhead just short of the handle, pointing along the velocity; at rest an open one, the stub of an
+  // arrow of zero length pointing the way the first coordinate moves: it shows the handle is an arrow's end
+  const back = (HANDLE_RADIUS + 2) * dpr, tx = h.x - h.ux * back, ty = h.y - h.uy * back, s = 7 * dpr;
+  ctx.beginPath();
+  ctx.moveTo(tx - h.ux * s - h.uy * s * 0.6, ty - h.uy * s + h.ux * s * 0.6);
+  ctx.lineTo(tx, ty);
+  ctx.lineTo(tx - h.ux * s + h.uy * s * 0.6, ty - h.uy * s - h.ux * s * 0.6);
+  if (h.len > 2 * dpr) { ctx.closePath(); ctx.fill(); } else ctx.stroke();
   ctx.fillStyle = "#fff";
   ctx.beginPath(); ctx.arc(h.x, h.y, HANDLE_RADIUS * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+}
+
+export const HANDLE_LABEL = "drag: initial velocity";
+
+/**
+ * The words beside the velocity handle h (or none, h null) until the reader first holds it: a span over the
+ * canvas (.handle-label in its .mechanism-wrap), beyond the handle along the arrow, kept inside the canvas.
+ */
+export function labelHandle(player, h, dpr) {
+  const wrap = player.canvas.parentElement;
+  if (!wrap) return;
+  let label = wrap.querySelector(".handle-label");
+  if (!h || player.handleHeld) { if (label) label.hidden = true; return; }
+  if (!label) {
+    label = Object.assign(document.createElement("span"), { className: "handle-label", textContent: HANDLE_LABEL });
+    wrap.append(label);
+  }
+  label.hidden = false;
+  label.textContent = h.len > 2 * dpr ? HANDLE_LABEL : `${HANDLE_LABEL} (now 0)`;
+  // CSS pixels within the wrap: the canvas's own offset (its border) plus the handle's place on it
+  const x = player.canvas.offsetLeft + player.canvas.clientLeft + h.x / dpr;
+  const y = player.canvas.offsetTop + player.canvas.clientTop + h.y / dpr;
+  const gap = HANDLE_RADIUS + 6, w = label.offsetWidth, height = label.offsetHeight, W = player.canvas.clientWidth;
+  // to the right of the handle, or to its left where the right would leave the canvas; above its centre
+  const left = x + gap + w <= W ? x + gap : Math.max(0, x - gap - w);
+  label.style.left = `${Math.round(left)}px`;
+  label.style.top = `${Math.round(Math.max(0, y - height - 2))}px`;
 }

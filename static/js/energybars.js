@@ -9,9 +9,26 @@
  * Every bar starts at zero on one shared axis, so a negative U points left and the bars of
  * T and U add up to the bar of E.  Each row carries its value as text; a value within the run's
  * energy resolution (simulation.js prepareRun) reads "≈ 0 J", not digits of rounding noise.
+ * A line under the bars says each energy's range over the run ("Over the 2 s run: T from ≈ 0 to 8.1 J ·
+ * U from −8.1 to ≈ 0 J · E stays ≈ 0 J"), so the first view, at t = 0, already tells where the run goes.
  */
+
+/** Each row's least and greatest value over the run, in words; a row that never leaves its start "stays". */
+export function overTheRun(rows, t, resolution) {
+  const parts = rows.map((r) => {
+    let lo = Infinity, hi = -Infinity;
+    for (const v of r.values) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
+    if (lo > hi) return `${r.name} has no finite value`;
+    // a spread within the run's energy resolution, or below the four digits shown, is no change
+    const [a, b] = [fmtResolved(lo, resolution), fmtResolved(hi, resolution)];
+    if (hi - lo <= resolution || a === b) return `${r.name} stays ${fmtResolved((lo + hi) / 2, resolution)} J`;
+    return `${r.name} from ${a} to ${b} J`;
+  });
+  const end = t && t.length ? t[t.length - 1] : null;
+  return `Over the ${end === null ? "" : `${fmt(Number(end.toPrecision(2)))} s `}run: ${parts.join(" · ")}.`;
+}
 import { COLORS } from "./plotkit.js";
-import { fmtResolved } from "./summaries.js";
+import { fmt, fmtResolved } from "./summaries.js";
 
 export class EnergyBars {
   constructor(container) {
@@ -43,6 +60,12 @@ export class EnergyBars {
       r.text = row.querySelector(".ebar-value");
       return row;
     }));
+    // the run at a glance under the bars: at t = 0 a mechanism at rest where U = 0 shows three empty bars,
+    // and this line says where the energies go over the run
+    const range = document.createElement("p");
+    range.className = "ebar-range";
+    range.textContent = overTheRun(rows, run.t, this.resolution);
+    this.container.append(range);
     this.container.dataset.ready = "true";
   }
 

@@ -33,8 +33,10 @@ export class Input {
       const k = h ? -1 : this.player.drag.grab(x, y);
       if (h) {
         this.player.pause();
-        // the pointer's offset from the handle's centre stays put during the drag
+        // the pointer's offset from the handle's centre stays put during the drag; the handle's label
+        // (arrows.js labelHandle) has done its work once the reader has held the handle
         this.player.dragging = { rates: h.k, dx: h.x - x, dy: h.y - y };
+        this.player.handleHeld = true;
       } else if (k >= 0 && this.player.onDrag) {
         this.player.pause();
         this.player.selected = k;

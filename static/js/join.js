@@ -13,9 +13,16 @@ const memory = stored("lagrange-join");
 const scenes = JSON.parse(document.getElementById("class-scenes").textContent);
 const titleOf = Object.fromEntries(scenes.map((s) => [s.id, s.title]));
 const $ = (id) => document.getElementById(id);
+// a student's key that no longer opens its class: the class was deleted (by its instructor, or past its retention)
+const CLOSED = "This class was closed by your instructor: its page and your answers in it are gone. To join another "
+  + "class, type its code.";
+
 let current = memory.get(); // {code, key, name, title}
 let series = null; // the class's assignments, in order: {n, title, due, items}
 const done = new Set(); // "assignment|item|step|coordinate" of the steps this student has done
+// one check at a time from this page: an answer sent while another is being checked waits for it here, rather
+// than being turned away by the server (one job per student) with "Busy"
+let checking = Promise.resolve();
 
 const stepId = (n, item, step, coordinate) => `${n}|${item}|${step}|${coordinate || ""}`;
 const keysOf = (a) => a.items.flatMap((item) => item.steps.map((s) => stepId(a.n, item.scene || item.name, s.step, s.coordinate)));
@@ -39,11 +46,25 @@ function progress() {
     const mine = keysOf(a);
     const line = document.querySelector(`[data-assignment="${a.n}"] .join-assignment-progress`);
     if (line) line.textContent = `${mine.filter((s) => done.has(s)).length} of ${mine.length} steps done`;
+    const due = document.querySelector(`[data-assignment="${a.n}"] .join-assignment-due`);
+    if (due) due.replaceChildren(...dueWords(a));
   }
+}
+
+/** An assignment's due time, and once it has passed, that an answer now is late and does not count. */
+function dueWords(a) {
+  if (!a.due) return [];
+  const words = [`Due ${when(a.due)} · `];
+  if (new Date(a.due) < new Date()) {
+    words.push(el("strong", { className: "join-late", text: "past due" }),
+      ": an answer now is recorded as late and does not count toward the grade · ");
+  }
+  return words;
 }
 
 function verdictView(box, r) {
   box.replaceChildren();
+  box.setAttribute("aria-busy", "false");
   if (r.status === 200) {
     const v = r.data;
     box.dataset.verdict = v.verdict;
@@ -58,7 +79,9 @@ function verdictView(box, r) {
   // a refusal names the field it concerns ("answer: …"): here there is one box, the student's own
   const detail = (r.data?.detail || `The answer could not be checked (${r.status}).`).replace(/^answer: /, "");
   const busy = r.status === 429 || r.status === 503;
-  box.append(el("p", {}, el("strong", { text: busy ? "Busy" : "Not checked" }), `: ${detail.charAt(0).toUpperCase()}${detail.slice(1)}`));
+  // a busy server is no fault of the answer: said as what to do, never as the server's words about derivations
+  const said = busy ? "The server is still busy with your earlier work; press Check again in a moment (an answer is never counted twice)." : `${detail.charAt(0).toUpperCase()}${detail.slice(1)}`;
+  box.append(el("p", {}, el("strong", { text: busy ? "Busy" : "Not checked" }), `: ${said}`));
 }
 
 /** A verdict's message as [its opening word, the rest]: "Correct: this is T." → ["Correct", "this is T."]; a
@@ -82,6 +105,32 @@ function namesLine(practice, names) {
   return line;
 }
 
+/** Typeset ``input``'s text into ``preview`` 200 ms after the last keystroke (POST /api/typeset, the checker's
+ *  parser), or say in ``note`` why it cannot be read yet; a reply for a text typed on since is dropped. */
+function previewAsTyped(input, preview, note, item, s) {
+  const names = item.scene ? { scene: item.scene }
+    : { coordinates: item.system?.coordinates || [], parameters: (item.system?.parameters || []).map((p) => (typeof p === "string" ? p : p.name)) };
+  let timer = null;
+  input.addEventListener("input", () => {
+    clearTimeout(timer);
+    timer = setTimeout(async () => {
+      const text = input.value;
+      if (!text.trim()) { preview.replaceChildren(); note.textContent = "What you type appears here, typeset."; return; }
+      const body = { text, step: s.step, ...names, ...(s.coordinate ? { coordinate: s.coordinate } : {}) };
+      const r = await api("POST", "/api/typeset", { body }).catch(() => null);
+      if (!r || input.value !== text) return;
+      if (r.status === 200 && r.data?.latex) {
+        preview.replaceChildren(typeset(el("div"), r.data.latex, true));
+        note.textContent = "";
+      } else if (r.status === 422) {
+        preview.replaceChildren();
+        const detail = String(r.data?.detail || "the checker cannot read this yet").replace(/^(answer|text): /, "");
+        note.textContent = `Not read yet: ${detail}`;
+      }
+    }, 200);
+  });
+}
+
 function stepView(a, item, practice, s, index) {
   const exercise = exerciseOf(practice, s.step, s.coordinate);
   const id = `answer-${index}`;
@@ -90,6 +139,12 @@ function stepView(a, item, practice, s, index) {
   const reveal = el("button", { type: "button", className: "join-reveal", "aria-expanded": "false", text: "Show this step" });
   const shown = el("div", { className: "practice-engine", hidden: "" });
   const box = el("div", { className: "practice-verdict", role: "status", "aria-live": "polite" });
+  // the answer typeset as it is typed, by the checker's own reading (as on a scene page in practice mode): a student
+  // sees how ^, ' and a fraction were read before the answer is recorded (inst-b 25, student-f 22)
+  const preview = el("div", { className: "practice-preview", id: `${id}-preview`, "aria-label": "Your answer, typeset" });
+  const note = el("p", { className: "help practice-preview-note", text: "What you type appears here, typeset." });
+  input.setAttribute("aria-describedby", `${id}-preview`);
+  previewAsTyped(input, preview, note, item, s);
   // an equation is typed whole (lhs = rhs) or as one expression equal to zero: its box is labelled by its name
   const lhs = s.step === "equation" ? `${stepTex(practice, s.step, s.coordinate)}:` : `${stepTex(practice, s.step, s.coordinate)} =`;
   const form = el("form", { className: "practice-step", "data-step": s.step },
@@ -97,7 +152,7 @@ function stepView(a, item, practice, s, index) {
     el("label", { for: id }, typeset(el("span", { className: "practice-lhs" }), lhs)),
     el("div", { className: "practice-row" }, input, button, exercise ? reveal : null),
     exercise ? namesLine(practice, exercise.names) : null,
-    box, shown);
+    preview, note, box, shown);
   const key = stepId(a.n, item.scene || item.name, s.step, s.coordinate);
   const target = { ...(item.scene ? { scene: item.scene } : { system: item.name }), step: s.step, assignment: a.n,
     ...(s.coordinate ? { coordinate: s.coordinate } : {}) };
@@ -125,8 +180,14 @@ function stepView(a, item, practice, s, index) {
     if (!pending || pending.answer !== answer) pending = { answer, attempt: attemptId() };
     const body = { ...target, answer, attempt: pending.attempt };
     try {
-      // one check at a time: while a previous one still runs the server asks to wait, a few seconds at most
-      const r = await api("POST", `/api/classes/${current.code}/check`, { key: current.key, body, tries: 3, patience: 5 });
+      delete box.dataset.verdict; // no verdict while it is being checked
+      box.setAttribute("aria-busy", "true");
+      box.replaceChildren(el("p", { text: "Checking your answer…" }));
+      // after this page's previous check; the server may still ask to wait (a first derivation of a typed system
+      // takes seconds): its Retry-After is followed, up to a quarter of a minute in all
+      const turn = checking.then(() => api("POST", `/api/classes/${current.code}/check`, { key: current.key, body, tries: 6, patience: 5 }));
+      checking = turn.catch(() => null);
+      const r = await turn;
       verdictView(box, r);
       if (r.status !== 429 && r.status !== 503) pending = null; // answered: the next press is a new attempt
       if (r.status === 200 && (r.data.verdict === "correct" || r.data.verdict === "equivalent")) {
@@ -134,7 +195,7 @@ function stepView(a, item, practice, s, index) {
         form.classList.add("step-done");
         progress();
       }
-      if (r.status === 403) leave("This class no longer exists, or your key no longer opens it.");
+      if (r.status === 403) leave(CLOSED);
     } catch {
       verdictView(box, { status: 0, data: { detail: "The server cannot be reached; press Check again (an answer is never counted twice)." } });
     } finally {
@@ -146,6 +207,23 @@ function stepView(a, item, practice, s, index) {
 
 const when = (iso) => new Date(iso).toLocaleString([], { dateStyle: "medium", timeStyle: "short" });
 
+/** A typed system's set-up, above its boxes: the instructor's words (its coordinates, from where, the zero of U),
+ *  then what the system is defined by, typeset (the server leaves out what a step asks for). */
+function setupView(item) {
+  const box = el("div", { className: "join-setup" });
+  if (item.setup) {
+    box.append(el("h4", { text: "The set-up" }),
+      ...item.setup.split(/\n+/).map((line) => el("p", { text: line })));
+  }
+  const given = item.given || [];
+  if (given.length) {
+    box.append(el("p", { className: "help", text: "The system:" }),
+      el("ul", { className: "join-given" }, ...given.map((g) => el("li", {},
+        g.label ? el("span", { text: `${g.label}: ` }) : "", typeset(el("span"), g.latex)))));
+  }
+  return box;
+}
+
 async function drawItems() {
   const holder = $("join-items");
   const parts = [];
@@ -153,12 +231,16 @@ async function drawItems() {
   for (const a of series) {
     const part = el("section", { className: "join-assignment", "data-assignment": a.n },
       el("h2", { className: "join-assignment-title", text: `${a.n}. ${a.title}` }),
-      el("p", { className: "help" }, a.due ? `Due ${when(a.due)} · ` : "", el("span", { className: "join-assignment-progress" })));
+      el("p", { className: "help" }, el("span", { className: "join-assignment-due" }, ...dueWords(a)),
+        el("span", { className: "join-assignment-progress" })));
     for (const item of a.items) {
       const section = el("section", { className: "class-panel join-item" });
       const heading = item.scene ? titleOf[item.scene] || item.scene : item.name;
       section.append(el("h3", { text: heading }));
-      if (item.scene) section.append(el("p", {}, el("a", { href: `/scenes/${item.scene}`, text: "The scene's page" }), " (its set-up and figure)."));
+      // the page in practice mode, in a tab of its own: the set-up and the figure, the derivation hidden (inst-b 24:
+      // the plain page printed every answer of the assignment), and the class page stays where it was
+      if (item.scene) section.append(el("p", {}, el("a", { href: `/scenes/${item.scene}#practice=on`, target: "_blank", rel: "noopener", text: "The scene's set-up and figure" }), " (its page in practice mode, in a new tab: the derivation stays hidden)."));
+      else section.append(setupView(item));
       const values = Object.entries(item.parameters || {});
       if (values.length) section.append(el("p", { className: "help", text: `Take ${values.map(([k, v]) => `${k} = ${v}`).join(", ")}.` }));
       try {
@@ -187,7 +269,7 @@ async function load() {
     return;
   }
   if (r.status === 403 || r.status === 401) {
-    leave("This class no longer exists, or your key no longer opens it.");
+    leave(CLOSED);
     return;
   }
   if (r.status !== 200) {
@@ -204,6 +286,8 @@ async function load() {
 }
 
 function leave(message) {
+  $("join-recovery").hidden = true;
+  $("join-recovery-code").textContent = "";
   current = null;
   memory.set(null);
   show();
@@ -226,6 +310,13 @@ $("join-form").addEventListener("submit", async (event) => {
   const code = $("join-code").value.trim();
   const name = $("join-name").value.trim();
   const button = $("join-form").querySelector("button[type=submit]");
+  // said here, in the form's own words, before anything is sent: a pseudonym of spaces is no pseudonym (inst-b 4,
+  // student-f 25: the server's "name: String should have …", or an earlier message about the code, stayed)
+  if (!name) {
+    $("join-status").textContent = "Type a pseudonym: the name your teacher will see (not your real name unless you wish).";
+    $("join-name").focus();
+    return;
+  }
   button.disabled = true;
   $("join-status").textContent = "Joining…";
   let r;
@@ -244,19 +335,58 @@ $("join-form").addEventListener("submit", async (event) => {
   }
   if (r.status !== 200) {
     $("join-status").textContent = r.data?.detail || `Not joined (${r.status}).`;
+    if (r.status === 422 && String(r.data?.detail).includes(" is taken in this class")) {
+      // the name is taken: perhaps it is theirs, from another device; the way back is opened, filled in
+      $("rejoin-code").value = code;
+      $("rejoin-name").value = name;
+      $("join-again").open = true;
+    }
     return;
   }
+  await enter(r);
+  // shown once: the server keeps only its hash
+  $("join-recovery-code").textContent = r.data.recovery_code;
+  $("join-recovery").hidden = false;
+});
+
+/** Joined (or back on another device): the key kept in this browser, the class loaded. */
+async function enter(r) {
   $("join-status").textContent = "";
   current = { code: r.data.code, key: r.data.student_key, name: r.data.name, title: r.data.title };
   memory.set(current);
   show();
   await load();
+}
+
+$("join-recovery-done").addEventListener("click", () => {
+  $("join-recovery").hidden = true;
+  $("join-recovery-code").textContent = "";
+});
+
+$("rejoin-form").addEventListener("submit", async (event) => {
+  event.preventDefault();
+  const code = $("rejoin-code").value.trim();
+  const body = { name: $("rejoin-name").value.trim(), recovery_code: $("rejoin-recovery").value.trim() };
+  $("join-status").textContent = "Opening your record…";
+  let r;
+  try {
+    r = await api("POST", `/api/classes/${encodeURIComponent(code)}/rejoin`, { body });
+  } catch {
+    $("join-status").textContent = "The server cannot be reached.";
+    return;
+  }
+  if (r.status !== 200) {
+    const detail = r.data?.detail || `Not opened (${r.status}).`;
+    $("join-status").textContent = `${detail.charAt(0).toUpperCase()}${detail.slice(1)}`;
+    return;
+  }
+  await enter(r);
 });
 
 $("leave-class").addEventListener("click", () => leave("You left the class on this device."));
 
 const asked = new URLSearchParams(window.location.search).get("code");
-if (asked) $("join-code").value = asked;
+if (asked) $("join-code").value = $("rejoin-code").value = asked;
 if (asked && current && current.code !== asked.trim().toUpperCase()) leave(""); // a link to another class
 show();
 if (current) load();

@@ -16,7 +16,7 @@
 import { compile } from "./expr.js";
 import { axis, COLORS, finite, layout, PreviewPanel, rateUnit, react, titled } from "./plotkit.js";
 import { reduced } from "./reduction.js";
-import { fmt, seriesTable } from "./summaries.js";
+import { fmt, relativeFloor, seriesTable } from "./summaries.js";
 
 const TAU = 2 * Math.PI;
 const GRID = 481;
@@ -83,20 +83,62 @@ function extremes(xs, V, Vf, cyclic) {
 }
 
 /**
- * Whether U rises above the level E somewhere on one side (dir = ±1) of x0: a turning point there.
+ * Where U first rises above the level E on one side (dir = ±1) of x0: the turning point there, or null.
  * In one dimension the motion is bounded exactly when it has a turning point on each side.  An angle
- * that meets none within a whole turn goes round; a length goes on to infinity unless U climbs back
+ * that meets none within a whole turn goes round; a length goes on without bound unless U climbs back
  * above E somewhere beyond (probed out to 2⁴⁰ times the view); a length that cannot be negative
- * meets a wall at 0.  U undefined (outside the configuration space) is a wall too.
+ * meets a wall at 0.  U undefined (outside the configuration space) is a wall too.  The crossing is
+ * found by bisection between the last point below the level and the first above it.
  */
-export function turnsBack(Vf, E, x0, dir, { angle = false, nonnegative = false, span = 1 } = {}) {
+export function turningPoint(Vf, E, x0, dir, { angle = false, nonnegative = false, span = 1 } = {}) {
   const above = (x) => { const y = Vf(x); return !Number.isFinite(y) || y > E; };
+  const refine = (a, b) => {
+    for (let k = 0; k < 80; k++) { const c = (a + b) / 2; if (above(c)) b = c; else a = c; }
+    return (a + b) / 2;
+  };
+  const first = (points) => {
+    let last = x0;
+    for (const x of points) { if (above(x)) return refine(last, x); last = x; }
+    return null;
+  };
   const dense = (reach) => Array.from({ length: 960 }, (_, k) => x0 + (dir * reach * (k + 1)) / 960);
-  if (angle) return dense(TAU).some(above);
-  if (nonnegative && dir < 0) return true;
-  if (dense(span).some(above)) return true;
-  for (let k = 0; k <= 40; k++) if (above(x0 + dir * span * 2 ** k)) return true;
-  return false;
+  if (angle) return first(dense(TAU));
+  if (nonnegative && dir < 0) return first(dense(x0)) ?? 0;
+  return first([...dense(span), ...Array.from({ length: 41 }, (_, k) => x0 + dir * span * 2 ** k).filter((x) => dir * (x - x0) > span)]);
+}
+
+/** Whether U rises above the level E somewhere on one side (dir = ±1) of x0 (see turningPoint). */
+export const turnsBack = (Vf, E, x0, dir, reach = {}) => turningPoint(Vf, E, x0, dir, reach) !== null;
+
+/** An event's message as a clause: "The block reached the foot; the run ends there." → "the block reached the foot". */
+function lower(message) {
+  const what = message.replace(/[.;]? *the run ends there\.?$/i, "").replace(/\.$/, "");
+  return what.charAt(0).toLowerCase() + what.slice(1);
+}
+
+/**
+ * What a run on one level does when one side (dir) has no turning point, in words: where it turns first
+ * (if it starts towards the other side's turning point, or at rest there), which way it then goes without
+ * bound, and, when a terminal event ended the run, that event instead of a motion the run never reaches.
+ */
+export function unboundedFate({ x0, v0, dir, turn, event, values, tEnd, name, fmtAt }) {
+  const last = values[values.length - 1];
+  const towards = dir > 0 ? "grows" : "decreases";
+  // at rest the run leaves the turning point it starts on; moving away from the free side it reaches it first
+  const turnsFirst = turn !== null && (v0 * dir < 0 || (v0 === 0 && Math.abs(turn - x0) <= 1e-9 * Math.max(1, Math.abs(x0))));
+  const start = turn === null ? ""
+    : v0 === 0 && turnsFirst ? `it starts at rest at ${name} = ${fmtAt(x0)}, where the potential equals this level`
+    : turnsFirst ? `it turns at ${name} = ${fmtAt(turn)}, where the potential reaches this level` : "";
+  if (event) {
+    // a run stopped by its event before it reached the turning point says nothing of the turn
+    const reach = dir > 0 ? Math.min(...values) : Math.max(...values);
+    const reached = turnsFirst && Math.abs(reach - turn) <= 1e-3 * Math.max(Math.abs(turn), Math.abs(reach - x0), 1e-9);
+    if (turnsFirst && v0 !== 0 && !reached) return `the run ends at t = ${fmt(event.t)} s, before the turning point at ${name} = ${fmtAt(turn)}: ${lower(event.message)}`;
+    const back = turnsFirst && v0 !== 0 ? ", and comes back" : "";
+    return `${start ? `${start}${back}; ` : ""}the run ends at t = ${fmt(event.t)} s: ${lower(event.message)}`;
+  }
+  const then = `nothing turns it back ${dir > 0 ? "beyond" : "below"} ${start ? "there" : `${name} = ${fmtAt(x0)}`}: ${name} ${towards} without bound (the model sets no end to it; at the run's end, t = ${fmt(tEnd)} s, ${name} = ${fmtAt(last)})`;
+  return start ? `${start}, then ${then}` : then;
 }
 
 function padded(values, nonnegative) {
@@ -176,7 +218,7 @@ export class PhasePanel extends PreviewPanel {
       ? "L depends explicitly on time (∂L/∂t ≠ 0), so h is not conserved: it changes along the run, the orbit may cross itself, and no curves of constant h are drawn, since no run follows one."
       : "with more than one coordinate moving, the orbit may cross itself, and no curves of constant energy can be drawn in this plane.";
     this.readout.textContent = `${lq} against its rate, for this run: ${why}${angle ? " The angle is shown in (−π, π]." : ""}`;
-    seriesTable(this.summary, `Phase portrait of ${lq}`, run.t, [{ name: lq, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[q + "_dot"], values: run.state[`${q}_dot`] }]);
+    seriesTable(this.summary, `Phase portrait of ${lq}`, run.t, [{ name: lq, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[q + "_dot"], values: run.state[`${q}_dot`] }], relativeFloor(run));
   }
 
   drawLevels(run, m) {
@@ -212,12 +254,19 @@ export class PhasePanel extends PreviewPanel {
     this.equilibria = found;
     this.section.dataset.separatrix = Es === null ? "" : String(Es);
     this.section.dataset.xrange = JSON.stringify([lo, hi]);
+    this.section.dataset.coordinate = r;
     // bounded or not is decided by U itself: a turning point (U > h) on each side of the start, or none on one side
     const x0 = m.values[0], reach = { angle, nonnegative: m.nonnegative, span: hi - lo };
-    const free = [-1, 1].filter((dir) => !turnsBack(m.Vf, E0, x0, dir, reach));
+    const turns = [-1, 1].map((dir) => turningPoint(m.Vf, E0, x0, dir, reach));
+    const free = [-1, 1].filter((dir, k) => turns[k] === null);
+    const v0 = m.rates[0], fmtAt = (x) => (x === 0 || !unit ? fmt(x) : `${fmt(x)} ${unit}`);
+    const event = run.stats && run.stats.event;
+    // both sides free: it goes the way it starts moving, with nothing to turn it on either side
+    const dir = free.length === 2 ? (v0 < 0 ? -1 : 1) : free[0];
     const fate = !free.length ? "it swings back and forth"
       : angle ? "it goes over the top, round and round"
-      : `the potential never climbs back to this level ${free[0] > 0 ? "beyond" : "below"} ${lr} = ${fmt(x0)} ${unit}, so nothing turns it back: it runs off to infinity`;
+      : unboundedFate({ x0, v0, dir, turn: free.length === 2 ? null : turns[dir > 0 ? 0 : 1], event, values: m.values, tEnd: run.t[run.t.length - 1], name: lr, fmtAt });
+    this.section.dataset.turning = free.length === 1 && !angle ? String(turns[free[0] > 0 ? 0 : 1]) : "";
     const relation = Es === null ? "" : ` ${E0 > Es ? "above" : "below"} the separatrix (${fmt(Es)} J)`;
     // a dissipative run has no level of its own: only the level it starts on (it then crosses the level sets)
     const kind = run.data.forced
@@ -246,7 +295,7 @@ export class PhasePanel extends PreviewPanel {
       ? ` The other coordinate is cyclic: its momentum stays at ${m.held[0]} (the initial state's), which leaves h a function of ${lr} and its rate.`
       : ` The other coordinates are cyclic: their momenta stay at ${m.held.join(", ")} (the initial state's), which leaves h a function of ${lr} and its rate.`;
     this.readout.textContent = `${lr} against its rate${angle && m.turn ? ", the angle wrapped into (−π, π]" : ""}.${reduction}${kind}${eq}${forced}`;
-    seriesTable(this.summary, `Phase portrait of ${lr}`, run.t, [{ name: lr, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[r + "_dot"], values: m.rates }]);
+    seriesTable(this.summary, `Phase portrait of ${lr}`, run.t, [{ name: lr, values: path.x.filter((x) => x !== null) }, { name: run.data.labels[r + "_dot"], values: m.rates }], relativeFloor(run));
     this.marks();
   }
 

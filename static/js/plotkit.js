@@ -27,6 +27,8 @@ export const CONFIG = {
 };
 export const COLORS = { T: "#0b5cad", U: "#b34700", E: "#1b1f24", h: "#2e7d32", a: "#6a1b9a", b: "#00838f" };
 export const PALETTE = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a", "#00838f", "#8d6e00"];
+// each colour of PALETTE as a reader names it (a caption says which orbit by its colour)
+export const PALETTE_NAMES = ["blue", "orange", "green", "purple", "teal", "ochre"];
 
 export function layout(extra = {}) {
   return {

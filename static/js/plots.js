@@ -21,7 +21,7 @@ import { ModesPanel } from "./modes.js";
 import { PhasePanel } from "./phase.js";
 import { PoincarePanel } from "./poincare.js";
 import { EffectivePotentialPanel, SmallOscillationsPanel } from "./reduction.js";
-import { constantOrRange, fmt, median, seriesTable, sharedUnit, table } from "./summaries.js";
+import { constantOrRange, fmt, magnitude, median, relativeFloor, seriesTable, sharedUnit, table } from "./summaries.js";
 
 /** A panel of quantities against time, with a second row for their change since t = 0. */
 class TimePanel extends PreviewPanel {
@@ -67,7 +67,7 @@ class EnergyPanel extends TimePanel {
     };
     const changes = undecided ? `h changed by ${change(dh)}` : `E changed by ${change(dE)}; h changed by ${change(dh)}`;
     this.readout.textContent = `Largest change since t = 0: ${changes}. ${what}`;
-    seriesTable(this.summary, "Energies over the run (J)", run.t, [...top, ...bottom]);
+    seriesTable(this.summary, "Energies over the run (J)", run.t, [...top, ...bottom], relativeFloor(run));
   }
 }
 
@@ -78,7 +78,7 @@ class HvsEPanel extends TimePanel {
     this.drawSeries(run, top, [{ name: "E − h", values: gap, color: COLORS.a }], "energy (J)", "E − h (J)");
     const span = (a) => Math.max(...finite(a)) - Math.min(...finite(a));
     this.readout.textContent = `Over the run E varies by ${fmt(span(run.energy))} J while h varies by ${fmt(span(run.hamiltonian))} J.`;
-    seriesTable(this.summary, "h and E over the run (J)", run.t, [...top, { name: "E − h", values: gap }]);
+    seriesTable(this.summary, "h and E over the run (J)", run.t, [...top, { name: "E − h", values: gap }], relativeFloor(run));
   }
 }
 
@@ -108,7 +108,7 @@ class MomentaPanel extends TimePanel {
     // each momentum with its own unit: "p_θ stays at 1 kg·m²/s within 7.6 × 10⁻⁹ kg·m²/s"
     const said = (x, n) => `${fmt(x)}${unitOf(n) && !unitOf(n).includes("SI") ? ` ${unitOf(n)}` : ""}`;
     this.readout.textContent = top.map((s, k) => `${s.name} stays at ${said(s.values[0], names[k])} within ${said(Math.max(...finite(bottom[k].values).map(Math.abs)), names[k])}.`).join(" ");
-    seriesTable(this.summary, "Conserved momenta over the run", run.t, [...top, ...bottom]);
+    seriesTable(this.summary, "Conserved momenta over the run", run.t, [...top, ...bottom], relativeFloor(run));
   }
 }
 
@@ -136,7 +136,7 @@ class ConstraintForcePanel extends TimePanel {
       { shapes: [{ type: "line", xref: "paper", x0: 0, x1: 1, y0: 0, y1: 0, line: { color: "#57606a", width: 1 } }] });
     const ranges = top.filter((s) => !s.name.includes("slack")).map((s) => `${capital(s.name)} ${constantOrRange(s.values, "N")}.`);
     this.readout.textContent = [...notes, ...ranges].join(" ");
-    seriesTable(this.summary, "Constraint forces over the run (N)", run.t, top.filter((s) => !s.name.includes("slack")));
+    seriesTable(this.summary, "Constraint forces over the run (N)", run.t, top.filter((s) => !s.name.includes("slack")), relativeFloor(run));
   }
 }
 
@@ -194,9 +194,9 @@ class WorkPrecisionPanel {
     // who waits longer than a moment is told what is being done, not left with "Loading…"
     const slow = setTimeout(() => {
       if (this.run === run && this.section.getAttribute("aria-busy") === "true") {
-        this.readout.textContent = `${here} The chart is being measured on the server: every method at each tolerance of `
-          + "the sweep, each timed several times. The server measures it once after an update, which can take minutes "
-          + "while it is busy; it then stays ready for every reader, and the chart appears here when it is done.";
+        this.readout.textContent = `${here} This chart is being measured on the server: every method at each tolerance, `
+          + "each run timed several times. It is measured once for each version of the book and then kept for every "
+          + "reader; the chart appears here when it is done.";
       }
     }, SLOW_MS);
     let report;
@@ -210,9 +210,10 @@ class WorkPrecisionPanel {
     }
     clearTimeout(slow);
     const methods = [...new Set(report.runs.map((r) => r.method))];
+    const methodLabel = (m) => this.data.method_labels?.[m] || m;
     const traces = methods.map((m, k) => {
       const runs = report.runs.filter((r) => r.method === m && r.error > 0 && r.wall_time_s > 0);
-      return { type: "scatter", mode: "lines+markers", name: m, x: runs.map((r) => r.wall_time_s), y: runs.map((r) => r.error),
+      return { type: "scatter", mode: "lines+markers", name: methodLabel(m), x: runs.map((r) => r.wall_time_s), y: runs.map((r) => r.error),
         text: runs.map((r) => `rtol ${r.rtol}`), line: { color: PALETTE[k % PALETTE.length] }, marker: { size: 7 } };
     });
     const timed = await this.medianTime(run);
@@ -227,8 +228,9 @@ class WorkPrecisionPanel {
     const moved = Object.entries(run.data.parameters).filter(([p, v]) => run.params[p] !== v).map(([p, v]) => `${run.data.labels[p] || p} = ${fmt(v)}`);
     const at = moved.length ? ` The chart is for the default values (${moved.join(", ")}), not this run's; the star is this run.` : "";
     this.readout.textContent = `${here} Reference: ${report.reference}${at}`;
-    table(this.summary, "Error against run time", ["method", "rtol", "error", "run time (s)", "rhs evaluations"],
-      report.runs.map((r) => [r.method, String(r.rtol), r.error, r.wall_time_s, String(r.rhs_evaluations ?? "–")]));
+    // the methods by their names in words, each tolerance as a power of ten, and why a row has no figures
+    table(this.summary, "Error against run time", ["method", "relative tolerance", "error", "run time (s)", "evaluations of the equations", "note"],
+      report.runs.map((r) => [methodLabel(r.method), magnitude(r.rtol), r.error, r.wall_time_s, String(r.rhs_evaluations ?? "–"), r.note || ""]));
     this.section.setAttribute("aria-busy", "false");
   }
 

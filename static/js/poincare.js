@@ -9,7 +9,7 @@
  * server (seconds, off the event loop) for the server's run only, and only once the panel is
  * in view; answers are kept per request so a repeated run costs nothing.
  */
-import { axis, drawWhenVisible, layout, momentumUnit, PALETTE, parts, react } from "./plotkit.js";
+import { axis, drawWhenVisible, layout, momentumUnit, PALETTE, PALETTE_NAMES, parts, react } from "./plotkit.js";
 import { wrap } from "./phase.js";
 import { fmt, table } from "./summaries.js";
 
@@ -68,12 +68,20 @@ export class PoincarePanel {
     const points = s.orbits.reduce((a, o) => a + o.q.length, 0);
     this.section.dataset.points = String(points);
     const cut = `${lc} = ${fmt(s.value)}, crossing ${s.direction > 0 ? "upward" : "downward"}`;
-    const short = s.orbits.filter((o) => !o.complete).length;
+    // the orbits the server stopped before their full time, named as the legend and the table name them
+    const named = (k) => `${k + 1} (${PALETTE_NAMES[k % PALETTE_NAMES.length]})`;
+    const short = s.orbits.map((o, k) => (o.complete ? null : named(k))).filter((x) => x);
+    const list = short.length > 1 ? `${short.slice(0, -1).join(", ")} and ${short.at(-1)}` : short[0];
     this.readout.textContent = `${s.orbits.length} orbits with h = ${fmt(s.energy)} J, ${points} points where ${cut}. `
       + "Points of one colour on a closed curve mean a regular orbit; a colour spread over an area means chaos."
-      + (short ? ` ${short === 1 ? "One orbit was" : `${short} orbits were`} cut short: computing it further would take longer than this page allows.` : "");
+      + (short.length
+        ? ` ${short.length === s.orbits.length ? "All the orbits were" : short.length === 1 ? `Orbit ${list} was` : `Orbits ${list} were`}`
+          + ` stopped before ${short.length === 1 ? "its" : "their"} full time (the server spends only a few seconds on one section),`
+          + ` so the table marks ${short.length === 1 ? "it" : "them"} “stopped early” and ${short.length === 1 ? "it shows" : "they show"} fewer points.`
+        : "");
     table(this.summary, `Poincaré section at ${cut}`, ["orbit", "starts at", "points", "largest relative drift of h"],
-      s.orbits.map((o, k) => [`${k + 1}`, Object.entries(o.initial).map(([n, v]) => `${labels[n] || n} = ${fmt(v)}`).join(", "), String(o.q.length), fmt(o.energy_drift)]));
+      s.orbits.map((o, k) => [named(k), Object.entries(o.initial).map(([n, v]) => `${labels[n] || n} = ${fmt(v)}`).join(", "),
+        o.complete ? String(o.q.length) : `${o.q.length} (stopped early)`, fmt(o.energy_drift)]));
   }
 
   cursor() {}

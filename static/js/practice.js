@@ -193,7 +193,8 @@ function markStale(item, checkedAnswer) {
 /** A refusal's message without the field it is located at ("answer: …", "text: …"), the box being the field,
  * nor the column of the part at fault, which is marked in what was typed. */
 function wordsOf(detail) {
-  return (detail || "").replace(/^(answer|text): /, "").replace(/ at column \d+/g, "");
+  // (a declared system's refusal is located by a path, system.particles.0.position: the path is not for a student)
+  return (detail || "").replace(/^(answer|text|follow_up|coordinate|step|system(\.[\w]+)*): /, "").replace(/ at column \d+/g, "");
 }
 
 /** A message ended with a full stop (its first word left as the message has it). */
@@ -263,7 +264,7 @@ function followUpBox(item, followUp) {
     try {
       const { answer: result } = await inTurn(() => request(root.dataset.checkUrl, body));
       status.dataset.verdict = result?.verdict || "refused";
-      status.textContent = result?.verdict ? `${result.message}${result.hint ? ` ${result.hint}` : ""}` : result?.detail || "No answer from the server.";
+      status.textContent = result?.verdict ? `${result.message}${result.hint ? ` ${result.hint}` : ""}` : endOf(wordsOf(result?.detail) || "No answer from the server");
     } catch {
       status.textContent = "The server could not be reached; try again.";
     } finally {
@@ -422,7 +423,7 @@ function buildItem(exercise, index) {
   const rhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
   if (exercise.step === "equation") katexInto(rhs, "= 0");
   row.append(lhs, input, rhs);
-  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${howTo(exercise)} Names you may use: ${exercise.names.join(", ")}, pi.${numbered(exercise.names)}`);
+  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${exercise.note ? `${exercise.note} ` : ""}${howTo(exercise)} Names you may use: ${exercise.names.join(", ")}, pi.${numbered(exercise.names)}`);
   const previewBox = element("div", { class: "practice-preview", id: `${id}-preview`, "aria-label": "Your answer, typeset" });
   previewBox.append(element("div", { class: "practice-preview-math" }), element("p", { class: "help practice-preview-note" }));
   const actions = element("div", { class: "practice-actions" });
@@ -524,7 +525,7 @@ function showProgress() {
     return kept && ["correct", "equivalent"].includes(kept.result?.verdict) && kept.answer === (record.answers[key] ?? kept.answer);
   }).length;
   status.dataset.done = String(done);
-  if (done === 0) status.textContent = `${total} steps to derive, in the chapter's order.`;
+  if (done === 0) status.textContent = `${total} steps to derive, in the derivation's order.`;
   else if (done < total) status.textContent = `${done} of ${total} steps correct.`;
   else status.textContent = `All ${total} steps correct: you have done the whole derivation yourself.`;
   status.classList.toggle("practice-done", done === total);
@@ -535,7 +536,7 @@ async function loadSteps() {
   const list = document.getElementById("practice-steps");
   const { ok, answer } = await inTurn(() => request(root.dataset.practiceUrl, system || undefined));
   if (!ok) {
-    status.textContent = `The steps could not be loaded: ${answer?.detail || "no answer from the server"}.`;
+    status.textContent = `The steps could not be loaded: ${endOf(wordsOf(answer?.detail) || "no answer from the server")}`;
     return;
   }
   list.replaceChildren(...answer.exercises.map((exercise, index) => buildItem(exercise, index)));

@@ -144,9 +144,28 @@ export function equilibrium(run, red) {
     const [lo, hi] = window_(values, run.data.nonnegative.includes(red.r));
     candidates = roots((x) => C(red.at(x)), lo, hi).map((x) => ({ x, w2: W(red.at(x)) }));
   }
-  candidates = candidates.filter((c) => Number.isFinite(c.x) && Number.isFinite(c.w2) && c.w2 > 0);
+  const scale = Math.max(Math.max(...values) - Math.min(...values), 1e-3 * Math.abs(mid), 1e-6);
+  candidates = candidates.filter((c) => Number.isFinite(c.x) && Number.isFinite(c.w2))
+    .map((c) => (c.w2 > 0 ? c : degenerate(red.U, c.x, scale)))
+    .filter((c) => c !== null);
   candidates.sort((a, b) => Math.abs(a.x - mid) - Math.abs(b.x - mid));
   return candidates[0] || null;
+}
+
+/**
+ * An equilibrium where U_eff″ = 0 (to rounding): its verdict from the first derivative that does not vanish.
+ * Near x0, U_eff(x0 + δ) − U_eff(x0) ≈ U⁽ⁿ⁾(x0) δⁿ / n!, so the order n is the slope of log ΔU against log δ,
+ * and the point is a minimum (stable, though with no small-oscillation frequency) when n is even and ΔU > 0 on
+ * both sides.  Returns { x, w2: 0, order } for such a minimum, null otherwise (a maximum or an inflection).
+ */
+export function degenerate(U, x0, scale) {
+  const u0 = U(x0);
+  const rise = (d) => [U(x0 + d) - u0, U(x0 - d) - u0];
+  const d1 = 1e-2 * scale, d2 = 3e-2 * scale;
+  const [a1, b1] = rise(d1), [a2, b2] = rise(d2);
+  if (![a1, b1, a2, b2].every((v) => Number.isFinite(v) && v > 0)) return null;
+  const order = Math.round(Math.log((a2 + b2) / (a1 + b1)) / Math.log(3));
+  return order > 2 && order % 2 === 0 ? { x: x0, w2: 0, order } : null;
 }
 
 /** Angular frequency measured from a sampled oscillation (mean spacing of upward crossings of its midline). */
@@ -170,24 +189,26 @@ export class SmallOscillationsPanel extends PreviewPanel {
     const lr = run.data.labels[r], unit = run.data.units[r];
     const measured = measuredOmega(run.t, values);
     const traces = [{ type: "scatter", mode: "lines", x: run.t, y: values, name: `${lr} simulated`, line: { color: COLORS.T, width: 2 } }];
-    if (eq) {
+    if (eq && !eq.order) {
       const w = Math.sqrt(eq.w2), a = values[0] - eq.x, b = run.state[`${r}_dot`][0] / w;
       traces.push({ type: "scatter", mode: "lines", x: run.t, y: Array.from(run.t, (t) => eq.x + a * Math.cos(w * t) + b * Math.sin(w * t)), name: "small-oscillation prediction", line: { color: COLORS.U, width: 2, dash: "dash" } });
     }
     react(this, traces, layout({ xaxis: axis("t (s)"), yaxis: axis(titled(lr, unit)) }));
-    const predicted = eq ? Math.sqrt(eq.w2) : null;
+    const predicted = eq && !eq.order ? Math.sqrt(eq.w2) : null;
     // the page's own letter for the frequency: Ω on the rotating parabola, where ω is the wire's turning rate
     const letter = run.data.frequency_letter || "ω";
     // words, never a raw null, where there is nothing to show
     const rows = [
-      [`predicted from ${letter}² = U_eff″/m_eff`, predicted ?? "none: no stable equilibrium", predicted ? (2 * Math.PI) / predicted : "–"],
+      [`predicted from ${letter}² = U_eff″/m_eff`, predicted ?? (eq ? "none: U_eff″ = 0 at the equilibrium" : "none: no stable equilibrium"), predicted ? (2 * Math.PI) / predicted : "–"],
       ["measured from this run", measured ?? "none: no full oscillation in the run", measured ? (2 * Math.PI) / measured : "–"],
     ];
     table(this.summary, "Small-oscillation frequency", ["", `${letter} (rad/s)`, "period (s)"], rows);
     const tableEl = this.section.querySelector(".frequencies");
     if (tableEl) table(tableEl, "Frequency: prediction and measurement", ["", `${letter} (rad/s)`, "period (s)"], rows);
     const held = Object.entries(red.P).map(([k, v]) => `${run.data.labels[k] || k} = ${fmt(v)}`).join(", ");
-    if (!eq) this.readout.textContent = `No stable equilibrium: U_eff${held ? ` (with ${held}, from the initial state)` : ""} has no minimum near this motion, so there is no small-oscillation prediction.`;
+    const ordinal = (n) => ({ 4: "fourth", 6: "sixth", 8: "eighth" })[n] || `${n}th`;
+    if (eq && eq.order) this.readout.textContent = `About ${lr} = ${fmt(eq.x)}${eq.x === 0 || !unit ? "" : ` ${unit}`}: U_eff″ = 0 there, so there is no small-oscillation frequency; U_eff rises on both sides as the ${ordinal(eq.order)} power of the distance (its first derivative that does not vanish is of even order and positive), so the equilibrium is stable. A swing about it is not harmonic: its period grows as its amplitude shrinks.${measured ? ` This run's, from ${lr} = ${fmt(values[0])} ${unit}, has ${letter} = ${fmt(measured)} rad/s.` : ""}`;
+    else if (!eq) this.readout.textContent = `No stable equilibrium: U_eff${held ? ` (with ${held}, from the initial state)` : ""} has no minimum near this motion, so there is no small-oscillation prediction.`;
     else if (!measured) this.readout.textContent = `Predicted ${letter} = ${fmt(predicted)} rad/s about ${lr} = ${fmt(eq.x)} ${unit}; this run is too short to measure a full oscillation.`;
     else {
       // the farthest the run gets from the equilibrium (its swing need not be symmetric about it: the readout

@@ -5,9 +5,10 @@
  *
  * For tests and tools it records what it drew: canvas.dataset.bodies (each body's label and position
  * in CSS pixels), canvas.dataset.drawn (counts, the slack string, forces, the run's event) and
- * canvas.dataset.handle (the velocity handle's position in CSS pixels, "" when none is shown).
+ * canvas.dataset.handle (the velocity handle's position in CSS pixels, "" when none is shown).  The
+ * handle carries a label in the page ("drag: initial velocity", arrows.js labelHandle) until it is first held.
  */
-import { drawForces, drawHandle } from "./arrows.js";
+import { drawForces, drawHandle, labelHandle } from "./arrows.js";
 import { drawBodies, drawFixed, drawLabels, drawTrails } from "./bodies.js";
 import { drawLinks, drawWheels } from "./links.js";
 import { drawCurve, drawSolids, message, scaleBar } from "./scenery.js";
@@ -46,5 +47,6 @@ export function drawFrame(player, i) {
   canvas.dataset.drawn = JSON.stringify(drawn);
   const handle = i === 0 ? player.drag.handle() : null;
   if (handle) drawHandle(ctx, handle, dpr);
+  labelHandle(player, handle, dpr);
   canvas.dataset.handle = handle ? JSON.stringify({ x: Math.round(handle.x / dpr), y: Math.round(handle.y / dpr) }) : "";
 }

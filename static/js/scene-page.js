@@ -10,7 +10,7 @@ import { foldSteps, printReady, whenTypeset } from "./derivation.js";
 import { connectScene } from "./simulation.js";
 import { keyboardScroll } from "./scrollboxes.js";
 import { foldPanels } from "./fold.js";
-import { bindViewLink, restoreControls, restoreView } from "./statelink.js";
+import { bindEmbedOffer, bindViewLink, restoreControls, restoreView } from "./statelink.js";
 
 const data = JSON.parse(document.getElementById("scene-data").textContent);
 foldSteps(document);
@@ -25,3 +25,4 @@ restoreControls();
 if (root) connectScene(root, data);
 restoreView();
 bindViewLink();
+bindEmbedOffer();

@@ -260,10 +260,17 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
   let pendingPreview = null;
 
   const more = status.querySelector(".run-details");
-  function say(state, text, list, detail = "") {
+  // list: lines under the message, each a string (a warning) or {text, kind: "event"} (where the run ended)
+  // warned: a finished run with warnings keeps the state "ready" (what waits for a run reads it) and takes the
+  // warning's colour from data-warned, never the green of a good run over a warning
+  function say(state, text, list, detail = "", warned = false) {
     status.dataset.state = state;
+    status.dataset.warned = String(warned);
     message.textContent = text;
-    if (list) warnings.replaceChildren(...list.map((w) => Object.assign(document.createElement("li"), { textContent: w })));
+    if (list) {
+      warnings.replaceChildren(...list.map((w) => Object.assign(document.createElement("li"),
+        typeof w === "string" ? { textContent: w } : { textContent: w.text, className: w.kind })));
+    }
     if (more) { more.hidden = !detail; more.querySelector(".details-text").textContent = detail; }
   }
 
@@ -327,10 +334,12 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
       // one line at a glance; the method and its figures behind "details"; the server's verdict on the
       // error against the motion (result.trust) turns it into a plain warning
       const line = statusLine(r.stats, sharedUnit(data));
-      const notes = [...(r.stats.event ? [ended(r.stats).trim()] : []), ...(r.stats.warnings || [])];
+      const warned = r.stats.warnings || [];
+      const notes = [...(r.stats.event ? [{ text: ended(r.stats).trim(), kind: "event" }] : []), ...warned];
       const trust = result.trust || {};
+      // one colour for the whole box: never the green of a good run over a warning
       if (trust.trusted === false) say("untrusted", `${line}. ${trust.message}`, notes, details(r.stats, data.method_labels));
-      else say("ready", line, notes, details(r.stats, data.method_labels));
+      else say("ready", line, notes, details(r.stats, data.method_labels), warned.length > 0);
       root.dataset.runs = String(Number(root.dataset.runs || 0) + 1);
       painted("server");
     } catch (err) {

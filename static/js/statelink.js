@@ -11,7 +11,9 @@
  *                         is of the linked settings
  *   restoreView()         the rest, each once its part of the page exists: the instant after the first run
  *                         is drawn, the panels at once, the practice step once practice mode has built it
- *   bindViewLink()        the "Link to this view" button: the link copied, or shown where copying is refused
+ *   bindViewLink()        the "Link to this view" button: "Link copied", or where copying is refused the link
+ *                         selected in a field to copy by hand
+ *   bindEmbedOffer()      the scene page's course-page frames (iframe code) with this site's address
  *
  * The fragment's own keys have a hyphen, which no declared name can have, so they never meet a control's
  * name; a fragment without "=" is an ordinary anchor (#outcome) and is left alone.
@@ -81,15 +83,39 @@ export function viewLink() {
 export function restoreControls(form = controlsForm()) {
   const fields = fragment();
   if (!form) return;
+  const ignored = []; // what the link asked for that this page cannot show, said in words
   for (const [name, value] of fields) {
     if (name.includes("-") || name === PRACTICE) continue;
     const select = form.querySelector(`select[name="${CSS.escape(name)}"]`);
+    const ctl = form.querySelector(`.control[data-name="${CSS.escape(name)}"]`);
     if (select) {
       if ([...select.options].some((o) => o.value === value)) select.value = value;
-    } else if (value.trim() !== "" && Number.isFinite(Number(value))) {
-      setControl(form, name, Number(value));
+      else ignored.push(`“${value}” is not a choice of ${select.labels?.[0]?.textContent || name}`);
+    } else if (!ctl) {
+      ignored.push(`“${name}” is not a setting of this page`);
+    } else {
+      // a value is shown only when it is a number inside the control's allowed range (the form would refuse it)
+      const label = ctl.dataset.label || name;
+      const x = Number(value);
+      const [lo, hi] = [Number(ctl.dataset.min), Number(ctl.dataset.max)];
+      const allowed = ctl.dataset.allowed || `${ctl.dataset.min} to ${ctl.dataset.max} ${ctl.dataset.unit || ""}`.trim();
+      if (value.trim() === "" || !Number.isFinite(x)) ignored.push(`${label} = “${value}” is not a number`);
+      else if (x < lo || x > hi) ignored.push(`${label} = ${value} is outside the allowed ${allowed}`);
+      else setControl(form, name, x);
     }
   }
+  showIgnored(form, ignored);
+}
+
+/** A note above the controls when the link asked for values the page could not take: the defaults are shown. */
+function showIgnored(form, ignored) {
+  form.querySelector(".link-note")?.remove();
+  if (!ignored.length) return;
+  const note = document.createElement("p");
+  note.className = "link-note";
+  note.setAttribute("role", "status");
+  note.textContent = `This link was cut or changed: ${ignored.join("; ")}. The page shows the default value instead; check the link you were given.`;
+  form.prepend(note);
 }
 
 /** Resolves once selector matches under the document (at once if it does already). */
@@ -154,8 +180,10 @@ export function bindViewLink() {
   button.addEventListener("click", async () => {
     const link = viewLink();
     status.dataset.link = link;
-    // the link at once, to select and copy by hand; then "copied" if the browser lets the page copy it (a
-    // browser that asks first, or never answers, leaves the link shown)
+    status.dataset.copied = "";
+    // the link at once; then "Link copied" if the browser lets the page copy it, or, where it refuses (or
+    // never answers), the link in a field, selected, to copy by hand.  The status is a live region: a screen
+    // reader hears which.
     const shown = Object.assign(document.createElement("a"), { href: link, textContent: link });
     status.replaceChildren("Link to this view: ", shown);
     try {
@@ -163,7 +191,27 @@ export function bindViewLink() {
         navigator.clipboard.writeText(link),
         new Promise((_, fail) => setTimeout(() => fail(new Error("no answer")), 1500)),
       ]);
-      status.replaceChildren("Copied to the clipboard: ", shown);
-    } catch { /* the link stays shown */ }
+      status.dataset.copied = "yes";
+      status.replaceChildren(Object.assign(document.createElement("strong"), { textContent: "Link copied" }), " to the clipboard: ", shown);
+    } catch {
+      status.dataset.copied = "no";
+      const field = Object.assign(document.createElement("input"), {
+        type: "text", readOnly: true, value: link, className: "view-link-field", id: "view-link-field",
+      });
+      const label = Object.assign(document.createElement("label"), { htmlFor: field.id, textContent: "The browser did not let the page copy it: copy this link by hand (it is selected)" });
+      status.replaceChildren(label, field);
+      field.focus();
+      field.select();
+    }
   });
+}
+
+/** The course-page frames the scene page offers (templates/_simulation.html): each code with this site's address. */
+export function bindEmbedOffer() {
+  for (const code of document.querySelectorAll("textarea.embed-code[data-src]")) {
+    const src = new URL(code.dataset.src, window.location.origin).toString();
+    const frame = Object.assign(document.createElement("iframe"), { src, title: code.dataset.title, width: "100%", height: code.dataset.height });
+    code.value = frame.outerHTML;
+    code.addEventListener("focus", () => code.select());
+  }
 }

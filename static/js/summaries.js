@@ -117,12 +117,22 @@ export function table(container, caption, headers, rows) {
   return t;
 }
 
-export function seriesTable(container, caption, t, series) {
+/**
+ * The run's relative tolerance (its request's rtol), never below 10⁻⁹ (round-off of the sums behind a series):
+ * a value smaller than this times its series' size is integration noise, not data.
+ */
+export const relativeFloor = (run) => Math.max(1e-9, run && run.request && Number.isFinite(run.request.rtol) ? run.request.rtol : 0);
+
+export function seriesTable(container, caption, t, series, relative = 1e-9) {
   if (!container) return null;
   const rows = series.map(({ name, values }) => {
     let lo = Infinity, hi = -Infinity;
     for (const v of values) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
-    return [name, values[0], values[values.length - 1], lo, hi];
+    // a value below the tolerance times the series' size prints as 0 (the block at the foot of the ramp: X = 0,
+    // not 8.674 × 10⁻¹⁹)
+    const floor = relative * Math.max(Math.abs(lo), Math.abs(hi));
+    const clean = (v) => (Number.isFinite(v) && Math.abs(v) <= floor ? 0 : v);
+    return [name, clean(values[0]), clean(values[values.length - 1]), clean(lo), clean(hi)];
   });
   const end = t.length ? fmt(t[t.length - 1]) : "–";
   return table(container, caption, ["quantity", "at t = 0", `at t = ${end} s`, "minimum", "maximum"], rows);

@@ -28,6 +28,8 @@ let series = [];
 const NO_KEY = "Type the recovery code or the instructor key you were given when you made the class; "
   + "a teacher link cut short (as some mail programs do) misses part of it.";
 const NOTHING_SET = "Tick at least one scene or add a typed system.";
+const NO_SETUP = "Write the system's set-up: what each coordinate is, where it is measured from, and where U = 0 "
+  + "(students read it above the boxes).";
 /** The parts of a typed system (the playground's JSON), as the page names them. */
 const SYSTEM_PARTS = {
   coordinates: "The coordinates", parameters: "The parameters", lagrangian: "The Lagrangian L",
@@ -55,6 +57,7 @@ function refusal(r, at) {
   }
   if (loc[0] === "items" && loc.length === 1 && data.errors) return { at: "assign-status", text: NOTHING_SET };
   if (loc[0] === "items" && loc[2] === "name") return { at: "assign-system-status", text: "Name the system: students see it by its name." };
+  if (loc[0] === "items" && loc[2] === "setup") return { at: "assign-system-status", text: NO_SETUP };
   if (loc[0] === "title") return { at: "assign-status", text: "Give the assignment a title (200 characters at most)." };
   return { at, text: said ? `${capital(said)}.`.replace(/([.!?])\.$/, "$1") : `Refused (${r.status}).` };
 }
@@ -100,6 +103,7 @@ async function open(code, key) {
   useSeries(r.data.assignments);
   show();
   buildEditor();
+  showLoading();
   poll();
   return "open";
 }
@@ -110,25 +114,68 @@ function useSeries(found) {
   drawSeries();
 }
 
+const NO_TITLE = "Give the class a title your students will recognise (for example “Mechanics II, Tuesday”; "
+  + "200 characters at most): spaces alone are not a title.";
+
 $("create-form").addEventListener("submit", async (event) => {
   event.preventDefault();
   const title = $("create-title").value.trim();
+  $("create-status").textContent = "";
+  // said at the box, before asking the server (a title of spaces only passes the browser's "required")
+  if (!title) {
+    $("create-status").textContent = NO_TITLE;
+    $("create-title").focus();
+    return;
+  }
   const r = await api("POST", "/api/classes", { body: { title } });
   if (r.status !== 201) {
-    refuse(r, "start-status");
+    const found = refusal(r, "create-status");
+    $("create-status").textContent = r.status === 422 && found.at === "assign-status" ? NO_TITLE : found.text;
     return;
   }
   await open(r.data.code, r.data.teacher_key);
-  // shown once: the server keeps only its hash
-  $("recovery-code").textContent = r.data.recovery_code;
-  $("recovery-link").textContent = `${window.location.origin}${r.data.teacher_link}`;
+  // shown once: the server keeps only its hash; broken only between its groups on a narrow screen
+  secret($("recovery-code"), r.data.recovery_code, /(?<=-)/);
+  secret($("recovery-link"), `${window.location.origin}${r.data.teacher_link}`, /(?=[#&])|(?<=-)/);
+  $("recovery-status").textContent = "";
   $("class-recovery").hidden = false;
 });
+
+/** A secret's text in unbreakable parts (split by `at`), so a line may end only between two of them. */
+function secret(element, text, at) {
+  element.dataset.text = text;
+  element.replaceChildren(...text.split(at).flatMap((part) => [el("span", { className: "secret-part", text: part }),
+    document.createElement("wbr")]));
+}
+
+/** Copy a text to the clipboard (the selection's copy where the Clipboard API is not offered), said beside it. */
+async function copy(text, what) {
+  try {
+    await navigator.clipboard.writeText(text);
+  } catch {
+    const box = el("textarea", { readonly: "" });
+    box.value = text;
+    document.body.append(box);
+    box.select();
+    const done = document.execCommand("copy");
+    box.remove();
+    if (!done) {
+      $("recovery-status").textContent = `Copying is not allowed here: select the ${what} and copy it by hand.`;
+      return;
+    }
+  }
+  $("recovery-status").textContent = `The ${what} is copied: paste it where you keep such things.`;
+}
+$("recovery-code-copy").addEventListener("click", () => copy($("recovery-code").dataset.text, "recovery code"));
+$("recovery-link-copy").addEventListener("click", () => copy($("recovery-link").dataset.text, "teacher link"));
 
 $("recovery-done").addEventListener("click", () => {
   $("class-recovery").hidden = true;
   $("recovery-code").textContent = "";
   $("recovery-link").textContent = "";
+  $("recovery-status").textContent = "";
+  delete $("recovery-code").dataset.text;
+  delete $("recovery-link").dataset.text;
 });
 
 /** The instructor's key from the class code and its recovery code (POST …/recover), then the class opened. */
@@ -158,6 +205,22 @@ $("open-form").addEventListener("submit", async (event) => {
 });
 
 // ---- the live dashboard --------------------------------------------------------------------------
+
+const LOADING = "Loading…";
+
+/** Until the first figures arrive, every table and list of the dashboard says it is loading: an empty "Who is
+ * done" on a projector would read as "nobody has done anything". */
+function showLoading() {
+  const row = (columns) => el("tr", { className: "dash-loading" }, el("td", { colspan: columns, text: LOADING }));
+  $("dash-assignments").tBodies[0].replaceChildren(row(4));
+  $("dash-students").tBodies[0].replaceChildren(row(4));
+  for (const id of ["dash-steps", "dash-mistakes"]) $(id).replaceChildren(el("li", { className: "help dash-loading", text: LOADING }));
+  for (const id of ["now-stuck", "now-mistake"]) {
+    $(id).querySelector(".now-body").replaceChildren(el("p", { className: "help dash-loading", text: LOADING }));
+  }
+  $("dash-steps-all").hidden = true;
+  $("dash-counts").textContent = LOADING;
+}
 
 async function labelOf(entry) {
   const item = entry.scene ? { scene: entry.scene } : assignment.find((i) => i.name === entry.system) || { name: entry.system };
@@ -225,39 +288,49 @@ async function drawNow(summary) {
 }
 
 const plural = (n, one, many = `${one}s`) => `${n} ${n === 1 ? one : many}`;
+let editing = null; // the assignment loaded into the editor ("Edit…"), saved in its place; null: a new one
 let everyStep = false; // "Show every step" pressed: the steps nobody has answered are listed too
 
-/** A step's figures, each count in one unit: students for done and stuck, answers for right and wrong. */
+/** A step's students: done and stuck, of the class (the bar above counts answers, not students). */
 function stepNumbers(entry, students) {
-  return `${entry.students_done} of ${plural(students, "student")} done, ${entry.stuck} stuck; `
-    + `${plural(entry.correct, "right answer")}, ${entry.incorrect} wrong`;
+  return `${entry.students_done} of ${plural(students, "student")} done, ${entry.stuck} stuck`;
+}
+
+/** A step's answers as a bar, one unit only: its green part the right answers, its red part the wrong ones,
+ * said in words beside it and in its aria-label. */
+function answerBar(entry) {
+  const total = entry.correct + entry.incorrect;
+  const words = `${plural(entry.correct, "right answer")}, ${entry.incorrect} wrong`
+    + (entry.not_read ? `, ${entry.not_read} not read` : "");
+  const bar = el("div", { className: "dash-bar", role: "img",
+    "aria-label": `Answers to this step: ${words} (green: right, red: wrong)` });
+  const good = el("span", { className: "dash-good" });
+  const bad = el("span", { className: "dash-bad" });
+  good.style.width = total ? `${(100 * entry.correct) / total}%` : "0";
+  bad.style.width = total ? `${(100 * entry.incorrect) / total}%` : "0";
+  bar.append(good, bad);
+  return el("div", { className: "dash-bar-row" },
+    el("span", { className: "dash-bar-unit", text: "Answers" }), bar,
+    el("span", { className: "dash-bar-words", text: words }));
 }
 
 async function drawSteps(summary) {
   const list = $("dash-steps");
   const rows = [];
   // a step with no answer yet says nothing about the class: listed only on "Show every step"
-  const idle = (entry) => !entry.correct && !entry.incorrect && !entry.students_done && !entry.stuck;
+  const idle = (entry) => !entry.correct && !entry.incorrect && !entry.not_read && !entry.students_done && !entry.stuck;
   const quiet = summary.steps.filter(idle).length;
   const toggle = $("dash-steps-all");
   toggle.hidden = !quiet;
-  toggle.textContent = everyStep ? "Show only the steps answered" : `Show every step (${plural(quiet, "more")} not answered yet)`;
+  toggle.textContent = everyStep ? "Show only the steps answered" : `Show every step (${quiet} more not answered yet)`;
   toggle.setAttribute("aria-expanded", String(everyStep));
   for (const entry of byStuck(summary.steps)) {
     if (idle(entry) && !everyStep) continue;
     const label = await labelOf(entry);
-    const total = entry.correct + entry.incorrect;
-    const bar = el("div", { className: "dash-bar", role: "img",
-      "aria-label": `${entry.correct} right, ${entry.incorrect} wrong` });
-    const good = el("span", { className: "dash-good" });
-    const bad = el("span", { className: "dash-bad" });
-    good.style.width = total ? `${(100 * entry.correct) / total}%` : "0";
-    bad.style.width = total ? `${(100 * entry.incorrect) / total}%` : "0";
-    bar.append(good, bad);
     const mistakes = Object.entries(entry.mistakes);
     rows.push(el("li", { className: "dash-step" },
       el("div", { className: "dash-label" }, typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` })),
-      bar,
+      answerBar(entry),
       el("p", { className: "dash-numbers",
         text: stepNumbers(entry, summary.students)
           + (mistakes.length ? `; most often: ${entry.mistake_names?.[mistakes[0][0]] || mistakeWords(mistakes[0][0])}` : "") }),
@@ -298,8 +371,33 @@ function drawAssignments(summary) {
   body.replaceChildren(...(summary.assignments || []).map((a) => el("tr", { "data-assignment": a.n },
     el("th", { scope: "row", text: `${a.n}. ${a.title}` }),
     el("td", { text: when(a.due) }),
-    el("td", { className: "dash-done", text: `${a.students_done.length} of ${summary.students}${a.students_done.length ? `: ${a.students_done.join(", ")}` : ""}` }),
-    el("td", { className: "dash-stuck", text: a.students_stuck.length ? a.students_stuck.join(", ") : "—" }))));
+    // the names apart from the counts, so projector mode can show the counts alone
+    el("td", { className: "dash-done" }, `${a.students_done.length} of ${summary.students}`,
+      a.students_done.length ? el("span", { className: "dash-names", text: `: ${a.students_done.join(", ")}` }) : null),
+    el("td", { className: "dash-stuck", ...(a.students_stuck.length ? { "data-count": plural(a.students_stuck.length, "student") } : {}) },
+      a.students_stuck.length ? el("span", { className: "dash-names", text: a.students_stuck.join(", ") }) : "—"))));
+}
+
+const codes = new Map(); // a student's new recovery code, given this session: shown beside their name until reload
+
+/** "New code": a new recovery code for a student who lost theirs (the server keeps only hashes, so the old one
+ *  cannot be shown again, and it stops working). */
+function codeButton(name) {
+  const given = codes.get(name);
+  if (given) return el("code", { className: "dash-code", text: given });
+  const button = el("button", { type: "button", className: "link-button dash-new-code", text: "new code",
+    "aria-label": `A new recovery code for ${name} (their old one stops working; asks first)` });
+  button.addEventListener("click", async () => {
+    if (!window.confirm(`Give ${name} a new recovery code? Their old code stops working.`)) return;
+    const r = await api("POST", `/api/classes/${current.code}/students/recovery`, { key: current.key, body: { name } });
+    if (r.status !== 200) {
+      refuse(r, "data-status");
+      return;
+    }
+    codes.set(name, r.data.recovery_code);
+    button.replaceWith(el("code", { className: "dash-code", text: r.data.recovery_code }));
+  });
+  return button;
 }
 
 async function drawStudents(students) {
@@ -315,10 +413,11 @@ async function drawStudents(students) {
       cell.append(typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` }),
         el("span", { text: last.done ? " ✓ done" : " · not yet right" }));
     } else cell.textContent = "—";
-    rows.push(el("tr", {},
-      el("th", { scope: "row", text: s.name }),
+    rows.push(el("tr", { "data-student": s.name },
+      el("th", { scope: "row" }, s.name, " ", codeButton(s.name)),
       el("td", { text: s.assigned ? `${s.done} of ${s.assigned}` : String(s.done) }),
-      el("td", { text: String(s.attempts) }),
+      // every answer sent, those the checker could not read said apart (they are never counted wrong)
+      el("td", { text: s.not_read ? `${s.attempts} (${s.not_read} not read)` : String(s.attempts) }),
       cell));
   }
   $("dash-students").tBodies[0].replaceChildren(...rows);
@@ -369,9 +468,11 @@ function buildEditor() {
       steps.replaceChildren(...practice.exercises.map((e, k) => {
         const id = `assign-${scene.id}-${k}`;
         const tick = el("input", { type: "checkbox", id, "data-step": e.step, "data-coordinate": e.coordinate || "" });
-        return el("li", {}, tick, typeset(el("label", { for: id }), stepTex(practice, e.step, e.coordinate)));
+        // the step in words, as the student reads it ("Energy function h", "ω² of small oscillations")
+        return el("li", {}, tick, el("label", { for: id, text: e.title }));
       }));
     };
+    box.fill = fill; // awaited when an assignment is loaded to edit, before its steps are ticked
     box.addEventListener("change", fill);
     fill();
     return item;
@@ -404,8 +505,12 @@ function drawSeries() {
       else refuse(r, "assign-status");
       await reloadSeries();
     });
+    // "Edit…": the assignment loaded into the editor; saving replaces it in its place, its answers kept
+    const edit = el("button", { type: "button", text: "Edit…", "data-edit": a.n,
+      "aria-label": `Edit assignment ${a.n}, ${a.title} (its answers are kept)` });
+    edit.addEventListener("click", () => editAssignment(a));
     return el("li", { className: "assign-entry", "data-assignment": a.n },
-      el("strong", { text: a.title }), a.due ? ` · due ${when(a.due)} ` : " · no due date ", remove,
+      el("strong", { text: a.title }), a.due ? ` · due ${when(a.due)} ` : " · no due date ", edit, " ", remove,
       el("ul", { className: "assign-items" }, ...a.items.map(itemLine)));
   }));
   // the empty state is a sentence beside the list, not its first item
@@ -422,15 +527,40 @@ async function reloadSeries() {
 function typedSystem() {
   const text = $("assign-system").value.trim();
   if (!text) return null;
-  return { name: $("assign-system-name").value.trim(), system: JSON.parse(text) };
+  return { name: $("assign-system-name").value.trim(), system: JSON.parse(text), setup: $("assign-system-setup").value.trim() };
+}
+
+/** Where a text stops being JSON: the first place no continuation can make valid (a prefix up to it is JSON
+ * cut short), as {line, column, near} counted from 1. */
+function whereNotJson(text) {
+  let good = 0;
+  for (let k = 1; k <= text.length; k++) {
+    try {
+      JSON.parse(text.slice(0, k));
+      good = k;
+    } catch (error) {
+      // only cut short so far: "Unexpected end of JSON input", "end of data" (Firefox), or a complaint about the
+      // very end ("Expected ',' or '}' … at position k" for a prefix of k characters)
+      const at = error.message.match(/at position (\d+)/);
+      if (/end of (JSON )?(input|data)/i.test(error.message) || (at && Number(at[1]) === k)) good = k;
+      else break;
+    }
+  }
+  const before = text.slice(0, good).split("\n");
+  const near = text.slice(good, good + 12).split("\n")[0];
+  return { line: before.length, column: before[before.length - 1].length + 1, near };
 }
 
 /** The typed system read from its box, or null with the reason said at the box (not JSON, or empty). */
 function readSystem() {
   try {
     return typedSystem();
-  } catch (error) {
-    $("assign-system-status").textContent = `The system is not JSON: ${error.message}`;
+  } catch {
+    const text = $("assign-system").value;
+    const { line, column, near } = whereNotJson(text);
+    $("assign-system-status").textContent = `The system is not written in the expected form: at line ${line}, `
+      + `column ${column}${near ? ` (at “${near}”)` : ""}. Write it as in the example above the box: braces around `
+      + "named parts, each name and each formula in double quotes, lists in square brackets.";
     return null;
   }
 }
@@ -446,7 +576,7 @@ async function systemPractice(item) {
   }
 }
 
-$("assign-system-load").addEventListener("click", async () => {
+async function loadSystemSteps() {
   // a fresh try: the last refusal and steps go (they were for the system as it was)
   $("assign-system-steps").replaceChildren();
   $("assign-system-status").textContent = "";
@@ -462,9 +592,12 @@ $("assign-system-load").addEventListener("click", async () => {
   $("assign-system-steps").replaceChildren(...practice.exercises.map((e, k) => {
     const id = `assign-system-${k}`;
     const tick = el("input", { type: "checkbox", id, "data-step": e.step, "data-coordinate": e.coordinate || "" });
-    return el("li", {}, tick, typeset(el("label", { for: id }), stepTex(practice, e.step, e.coordinate)));
+    return el("li", {}, tick, el("label", { for: id, text: e.title })); // the step in words, as the student reads it
   }));
-});
+  return practice;
+}
+
+$("assign-system-load").addEventListener("click", loadSystemSteps);
 
 const ticked = (list) => [...list.querySelectorAll("input:checked")].map((t) => ({
   step: t.dataset.step, ...(t.dataset.coordinate ? { coordinate: t.dataset.coordinate } : {}) }));
@@ -486,29 +619,110 @@ $("assign-save").addEventListener("click", async () => {
       if (!practice) return;
       steps = practice.exercises.map((e) => ({ step: e.step, ...(e.coordinate ? { coordinate: e.coordinate } : {}) }));
     }
+    if (!typed.setup) {
+      // the set-up is what the students cannot do without: said at the system's box before anything is sent
+      $("assign-system-status").textContent = NO_SETUP;
+      $("assign-system-setup").focus();
+      return;
+    }
     items.push({ ...typed, steps });
   }
   if (!items.length) {
     $("assign-status").textContent = NOTHING_SET;
     return;
   }
-  const due = $("assign-due").value ? new Date($("assign-due").value).toISOString() : null;
+  const typedDue = $("assign-due").value;
+  // an edited assignment whose due time was left as it was keeps it exactly (a time already past stays allowed)
+  const due = editing && typedDue === localInput(editing.due) ? editing.due
+    : typedDue ? new Date(typedDue).toISOString() : null;
+  if (editing) {
+    // a scene's parameters (set through the API) stay with the scene
+    for (const item of items) item.parameters = editing.items.find((i) => i.scene && i.scene === item.scene)?.parameters;
+    const title = $("assign-title-input").value.trim() || editing.title;
+    const r = await api("PUT", `/api/classes/${current.code}/assignments/${editing.n}`,
+      { key: current.key, body: { title, due, items } });
+    if (r.status !== 200) {
+      refuse(r, "assign-status");
+      return;
+    }
+    resetEditor();
+    await reloadSeries();
+    $("assign-status").textContent = `Saved: ${r.data.n}. ${r.data.title} (its answers are kept).`;
+    return;
+  }
   const title = $("assign-title-input").value.trim() || `Assignment ${series.length + 1}`;
   const r = await api("POST", `/api/classes/${current.code}/assignments`, { key: current.key, body: { title, due, items } });
   if (r.status !== 201) {
     refuse(r, "assign-status");
     return;
   }
+  resetEditor();
+  await reloadSeries();
+  $("assign-status").textContent = `Added: ${r.data.n}. ${r.data.title}.`;
+});
+
+/** The editor emptied, back to "A new assignment". */
+function resetEditor() {
+  editing = null;
   $("assign-title-input").value = "";
   $("assign-due").value = "";
   $("assign-system").value = "";
   $("assign-system-name").value = "";
+  $("assign-system-setup").value = "";
   $("assign-system-steps").replaceChildren();
   $("assign-system-status").textContent = "";
+  $("assign-editor-title").textContent = "A new assignment";
+  $("assign-save").textContent = "Add this assignment";
+  $("assign-cancel").hidden = true;
   buildEditor();
-  await reloadSeries();
-  $("assign-status").textContent = `Added: ${r.data.n}. ${r.data.title}.`;
+}
+
+$("assign-cancel").addEventListener("click", () => {
+  resetEditor();
+  $("assign-status").textContent = "";
 });
+
+/** An ISO time as a datetime-local input's value, in the browser's local time ("2026-12-04T17:00"). */
+function localInput(iso) {
+  if (!iso) return "";
+  const t = new Date(iso);
+  const pad = (n) => String(n).padStart(2, "0");
+  return `${t.getFullYear()}-${pad(t.getMonth() + 1)}-${pad(t.getDate())}T${pad(t.getHours())}:${pad(t.getMinutes())}`;
+}
+
+const tickSteps = (list, steps) => {
+  for (const s of steps) {
+    const box = list.querySelector(`input[data-step="${s.step}"][data-coordinate="${s.coordinate || ""}"]`);
+    if (box) box.checked = true;
+  }
+};
+
+/** An assignment loaded into the editor: its title, due time, scenes and steps ticked, its typed system. */
+async function editAssignment(a) {
+  resetEditor();
+  editing = a;
+  $("assign-editor-title").textContent = `Editing assignment ${a.n}`;
+  $("assign-save").textContent = `Save the changes to assignment ${a.n}`;
+  $("assign-cancel").hidden = false;
+  $("assign-title-input").value = a.title;
+  $("assign-due").value = localInput(a.due);
+  $("assign-status").textContent = `Editing ${a.n}. ${a.title}: its answers are kept when you save.`;
+  for (const item of a.items.filter((i) => i.scene)) {
+    const box = $(`assign-${item.scene}`);
+    if (!box) continue;
+    box.checked = true;
+    await box.fill();
+    tickSteps(box.parentElement.querySelector(".assign-steps"), item.steps);
+  }
+  const typed = a.items.find((i) => i.system);
+  if (typed) {
+    $("assign-system-box").open = true;
+    $("assign-system-name").value = typed.name;
+    $("assign-system").value = JSON.stringify(typed.system);
+    if (await loadSystemSteps()) tickSteps($("assign-system-steps"), typed.steps);
+  }
+  $("assign-editor-title").scrollIntoView({ block: "start" });
+}
 
 // ---- the record ----------------------------------------------------------------------------------
 
@@ -529,18 +743,35 @@ $("grades-csv").addEventListener("click", () => download(`/api/classes/${current
 $("grades-details-csv").addEventListener("click", () => download(`/api/classes/${current.code}/grades?format=details-csv`,
   `grades-${current.code}-details.csv`));
 
-function forget() {
+function forget(message = "") {
   clearTimeout(timer);
   current = null;
   memory.set(null);
   show();
+  $("start-status").textContent = message;
 }
 
-$("forget-class").addEventListener("click", forget);
+// closing forgets the class on this device only: asked first, with the way back (the key itself) in the question
+$("forget-class").addEventListener("click", () => {
+  const { code, key } = current;
+  if (!window.confirm(`Close the class ${code} on this device? It is not deleted, but this browser forgets it: to open `
+    + "it again you need its recovery code or teacher link (shown once when you created it), or this instructor key: "
+    + `${key}`)) return;
+  forget(`The class ${code} is closed on this device, not deleted: open it again with its recovery code, its teacher `
+    + "link or its instructor key.");
+});
 $("delete-class").addEventListener("click", async () => {
-  if (!window.confirm(`Delete the class ${current.code} and every answer recorded for it? This cannot be undone.`)) return;
-  const r = await api("DELETE", `/api/classes/${current.code}`, { key: current.key });
-  if (r.status === 204) forget();
+  const { code } = current;
+  // the record offered first: once deleted, nothing of it can be downloaded
+  if (window.confirm(`Before deleting the class ${code}: download every answer and the grades (CSV) first? `
+    + "OK downloads them now; Cancel goes on without them.")) {
+    await download(`/api/classes/${code}/export?format=csv`, `class-${code}.csv`);
+    await download(`/api/classes/${code}/grades?format=details-csv`, `grades-${code}-details.csv`);
+  }
+  if (!window.confirm(`Delete the class ${code} and every answer recorded for it? This cannot be undone.`)) return;
+  const r = await api("DELETE", `/api/classes/${code}`, { key: current.key });
+  if (r.status === 204) forget(`The class ${code} is deleted, with every answer recorded for it. Its students are told `
+    + "it was closed when they next open it.");
   else refuse(r, "data-status");
 });
 
@@ -552,7 +783,16 @@ function project(on) {
   $("projector").setAttribute("aria-pressed", String(on));
   $("projector").textContent = on ? "Leave projector mode" : "Projector mode";
   projector.set(on || null);
+  // a projected dashboard shows counts, not who is stuck, until the teacher chooses to show the names
+  $("names-shown").hidden = !on;
+  if (!on) showNames(false);
 }
+function showNames(on) {
+  document.body.classList.toggle("names-shown", on);
+  $("names-shown").setAttribute("aria-pressed", String(on));
+  $("names-shown").textContent = on ? "Hide the students' names" : "Show the students' names";
+}
+$("names-shown").addEventListener("click", () => showNames(!document.body.classList.contains("names-shown")));
 $("projector").addEventListener("click", () => project(!document.body.classList.contains("projector")));
 project(Boolean(projector.get()));
 
@@ -572,3 +812,8 @@ if (fragment.get("class") && fragment.get("recover")) {
   // a class this browser kept: reopened, and forgotten only when the server says the key no longer opens it
   open(current.code, current.key).then((how) => how === "refused" && forget());
 }
+// a teacher link pasted into this tab changes only the fragment, and the browser does not load the page again:
+// read it as a fresh load would (inst-b 18: after a cut link, the whole one pasted here did nothing)
+window.addEventListener("hashchange", () => {
+  if (new URLSearchParams(window.location.hash.slice(1)).get("class")) window.location.reload();
+});

@@ -329,3 +329,36 @@ def test_the_panel_opens_before_the_first_kinetic_focus(page, live_server, scene
         assert tau < t_star, (scene, tau, t_star)
     assert page.locator(PANEL).get_attribute("data-kind") == "minimum", (scene, tau, t_star)
     assert not page.console_errors
+
+
+@pytest.mark.parametrize("width", [1366, 390])
+def test_the_tabletop_says_which_variations_reach_a_focus(browser, live_server, artifacts, width):
+    # prof-e 17, 18: the default ("Vary r", τ = 1 s) said "No kinetic focus before 10 s" while the derivation puts
+    # the focus at π √(m/k) = 1.571 s (r and θ varied together: det J only touches 0, which the server finds)
+    context = browser.new_context(base_url=live_server, viewport={"width": width, "height": 844})
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    errors: list[str] = []
+    page.on("pageerror", lambda exc: errors.append(str(exc)))
+    try:
+        _open(page, "/scenes/tabletop-spring")
+        page.wait_for_function(
+            f"document.querySelector('{PANEL} .readout').textContent.includes('varied together the first comes earlier')"
+        )
+        readout = page.locator(f"{PANEL} .readout").text_content()
+        assert "For the variations of r alone (θ kept on the true path) no kinetic focus comes before 10 s" in readout
+        assert "For r and θ varied together the first comes earlier, at t* = 1.571 s." in readout
+        assert page.locator(PANEL).get_attribute("data-kind") == "minimum" and "before any kinetic focus" in readout
+        # θ alone at τ = 3 s: the plot's minimum is named for its family, and the focus marked is named for its own
+        page.select_option("#action-coordinate", "1")
+        page.locator("#action-T").fill("3")
+        page.dispatch_event("#action-T", "input")
+        page.wait_for_function(f"{SERVER} && document.querySelector('{PANEL} .readout').textContent.includes('τ = 3 s')")
+        readout = page.locator(f"{PANEL} .readout").text_content()
+        assert "the true path is a minimum among the variations of θ alone, as S(ε) shows, but not a minimum of S" in readout
+        labels = page.evaluate(f"document.querySelector('{PANEL} .plot').layout.annotations.map((a) => a.text)")
+        assert labels == ["focus: r and θ together"]
+        page.locator(PANEL).screenshot(path=artifacts / f"action-tabletop-{width}.png")
+        assert not errors
+    finally:
+        context.close()

@@ -96,3 +96,27 @@ def test_the_poincare_panel_draws_points(page, path):
     assert orbits == 6
     assert "orbits with h =" in page.inner_text("#panel-poincare .readout")
     assert [e for e in page.console_errors if "status of 429" not in e] == []
+
+
+def test_orbits_stopped_early_are_named_by_number_and_colour(page):
+    # prof-g 49: "4 orbits were cut short: computing it further would take longer than this page allows" said
+    # neither which orbits nor why in a reader's words; the server's own section, with orbits 2 and 4 reported
+    # as stopped before their full time (as a busy server does)
+    def stopped(route):
+        answer = route.fetch().json()
+        for k, orbit in enumerate(answer["orbits"]):
+            orbit["complete"] = k not in (1, 3)
+        route.fulfill(json=answer)
+
+    page.route("**/api/scenes/double-pendulum/poincare*", stopped)
+    page.goto("/scenes/double-pendulum")
+    page.wait_for_selector(READY, state="attached")
+    page.locator("#panel-poincare").scroll_into_view_if_needed()
+    page.wait_for_function("Number(document.getElementById('panel-poincare').dataset.points) > 100", timeout=90_000)
+    readout = page.inner_text("#panel-poincare .readout")
+    assert "Orbits 2 (orange) and 4 (purple) were stopped before its full time" not in readout
+    assert "Orbits 2 (orange) and 4 (purple) were stopped before their full time" in readout, readout
+    assert "cut short" not in readout and "this page allows" not in readout
+    table = page.text_content("#panel-poincare")  # the data table is folded under the plot
+    assert table.count("(stopped early)") == 2, table
+    assert "1 (blue)" in table and "6 (ochre)" in table

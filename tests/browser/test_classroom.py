@@ -94,6 +94,23 @@ def test_a_class_live(browser, live_server, classes, artifacts):
                 for name, device in (("Ada", PHONE), ("Bo", DESK), ("Cy", DESK))]
     (_, ada, _), (_, bo, _), (_, cy, _) = students
     assert ada.locator(".practice-step").count() == 2  # the two assigned steps
+    # the scene's set-up opens in practice mode in a tab of its own, its derivation hidden (inst-b 24)
+    setup = ada.locator(f'a[href="/scenes/{SCENE}#practice=on"]')
+    assert setup.count() == 1 and setup.get_attribute("target") == "_blank"
+
+    # the answer typeset as it is typed, by the checker's reading, before it is sent (inst-b 25, student-f 22)
+    kinetic = ada.locator('.practice-step[data-step="kinetic"]')
+    kinetic.locator("input").fill("1/2 m1 l1^2 theta1'^2")
+    kinetic.locator(".practice-preview .katex").wait_for()
+    assert kinetic.locator(".practice-preview-note").inner_text() == ""
+    kinetic.locator("input").fill("m1 (")
+    ada.wait_for_function(
+        "document.querySelector('.practice-step[data-step=\"kinetic\"] .practice-preview-note').textContent"
+        ".startsWith('Not read yet: ')")
+    assert kinetic.locator(".practice-preview .katex").count() == 0
+    # the typesetter's 422 for that unfinished text is the browser's note of a refused request, no page error
+    ada_errors = students[0][2]
+    ada_errors[:] = [e for e in ada_errors if "status of 422" not in e]
 
     assert _answer(ada, NO_CROSS_T) == "incorrect"
     answered = time.monotonic()
@@ -125,6 +142,17 @@ def test_a_class_live(browser, live_server, classes, artifacts):
     bo.reload()
     bo.wait_for_selector(".practice-step.step-done")
     assert bo.locator("#joined-progress").inner_text() == "1 of 2 steps done"
+
+    # two answers sent at once (T, then U before T's verdict): the second waits for the first on the page, and both
+    # get a verdict, never "Busy" (inst-b 9: the second was turned away while the first was being checked)
+    for key, text in (("kinetic", NO_CROSS_T), ("potential", "m1*g*l1")):
+        step = ada.locator(f'.practice-step[data-step="{key}"]')
+        step.locator("input").fill(text)
+        step.locator("input").press("Enter")
+    for key in ("kinetic", "potential"):
+        verdict = ada.locator(f'.practice-step[data-step="{key}"] .practice-verdict[data-verdict]')
+        verdict.wait_for()
+        assert verdict.get_attribute("data-verdict") == "incorrect", verdict.inner_text()
 
     teacher.screenshot(path=artifacts / "teach-1366.png", full_page=True)
     teacher.set_viewport_size({"width": 390, "height": 844})

@@ -134,6 +134,19 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
     for selector in ("#now-stuck .now-what", "#now-mistake .now-what", "#now-mistake .now-figure"):
         _within_first_screen(page, selector, 768)
     page.screenshot(path=artifacts / "teach-projector-1024.png")
+    # projected, the code is large and the names are hidden (counts only) until the teacher shows them
+    code_px = page.eval_on_selector("#class-code", "e => parseFloat(getComputedStyle(e).fontSize)")
+    assert code_px >= 100, code_px
+    assert page.locator("#now-stuck .now-who").is_hidden() and page.locator("#dash-students").is_hidden()
+    stuck = page.locator('#dash-assignments tr[data-assignment="1"] .dash-stuck')
+    assert stuck.locator(".dash-names").is_hidden()
+    assert page.evaluate("getComputedStyle(document.querySelector("
+                         "'#dash-assignments tr[data-assignment=\"1\"] .dash-stuck'), '::before').content") == '"6 students"'
+    page.click("#names-shown")
+    assert page.locator("#now-stuck .now-who").is_visible() and page.locator("#dash-students").is_visible()
+    assert stuck.locator(".dash-names").is_visible()
+    page.click("#projector")  # leaving projector mode
+    assert page.locator("#names-shown").is_hidden()
     assert errors == []
     context.close()
 

@@ -14,7 +14,7 @@ from tests.web.test_classes_processes import _free_port, server
 
 pytestmark = [pytest.mark.browser, pytest.mark.slow]
 
-READY = '#run-status[data-state="ready"], #run-status[data-state="untrusted"]'
+READY = '#run-status[data-state="ready"], #run-status[data-state="untrusted"], #run-status[data-state="warning"]'
 
 
 @contextmanager

@@ -70,6 +70,7 @@ def test_an_assignment_graded_and_the_class_opened_elsewhere(browser, live_serve
     teacher.click("#assign-system-box summary")
     teacher.fill("#assign-system-name", "spring")
     teacher.fill("#assign-system", json.dumps(SPRING))
+    teacher.fill("#assign-system-setup", "x is the stretch of the spring from its natural length; U = 0 at x = 0.")
     teacher.click("#assign-system-load")
     teacher.check('#assign-system-steps input[data-step="acceleration"]')
     teacher.click("#assign-save")
@@ -116,12 +117,13 @@ def test_an_assignment_graded_and_the_class_opened_elsewhere(browser, live_serve
     teacher.screenshot(path=artifacts / f"teach-series-{size}.png", full_page=True)
     with teacher.expect_download() as got:
         teacher.click("#grades-csv")
-    rows = list(csv.reader(io.StringIO(Path(got.value.path()).read_text(encoding="utf-8"))))
+    assert Path(got.value.path()).read_bytes().startswith(b"\xef\xbb\xbf")  # Excel reads it as UTF-8
+    rows = list(csv.reader(io.StringIO(Path(got.value.path()).read_text(encoding="utf-8-sig"))))
     week = "1. Week 3: T and the spring"
     assert rows == [["Student", f"{week} (100 points)"], ["Ada", "100.0"], ["Bo", "66.7"], ["Cy", "33.3"]]
     with teacher.expect_download() as got:
         teacher.click("#grades-details-csv")
-    rows = list(csv.reader(io.StringIO(Path(got.value.path()).read_text(encoding="utf-8"))))
+    rows = list(csv.reader(io.StringIO(Path(got.value.path()).read_text(encoding="utf-8-sig"))))
     assert rows[0] == ["Student", f"{week} (100 points)", f"{week}: right first try", f"{week}: right",
                        f"{week}: shown", f"{week}: steps"]
     assert rows[1:] == [["Ada", "100.0", "3", "3", "0", "3"],

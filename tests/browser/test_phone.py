@@ -10,7 +10,7 @@ from tests.browser.conftest import unfold_panels
 
 pytestmark = pytest.mark.browser
 
-READY = '#run-status[data-state="ready"], #run-status[data-state="untrusted"]'
+READY = '#run-status[data-state="ready"], #run-status[data-state="untrusted"], #run-status[data-state="warning"]'
 ORDER = [
     "h1",
     ".statement",

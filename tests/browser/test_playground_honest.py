@@ -21,7 +21,7 @@ KEPLER = {
     "U": "-k/r",
     "nn": "r",
 }
-DONE = '#run-status[data-state="ready"], #run-status[data-state="untrusted"], #run-status[data-state="error"]'
+DONE = '#run-status[data-state="ready"], #run-status[data-state="untrusted"], #run-status[data-state="warning"], #run-status[data-state="error"]'
 
 
 @pytest.mark.parametrize("size", [(1366, 768), (390, 844)])

@@ -26,5 +26,5 @@ def test_the_part_being_worked_on_is_shown_and_stop_keeps_the_equations(sized, a
     assert page.inner_text("#derive-progress").startswith("Stopped, as you asked: the equations above stay.")
     assert page.locator("#derive-now").is_hidden()
     # what was shown stays: the three equations, typeset
-    assert page.locator("#results dd").first.locator(".math").count() == 3
+    assert page.locator("#results dd").first.locator(".math-display").count() == 3
     assert page.console_errors == []

@@ -61,7 +61,7 @@ def test_a_triple_pendulum_shows_its_equations_before_the_rest(sized, artifacts)
     assert page.locator("#derivation").count() == 0
     progress = page.inner_text("#derive-progress")
     assert progress.startswith("Still working on:") and "normal modes" in progress and "Hamilton" in progress
-    equations = page.locator("#results dd").first.locator(".math")
+    equations = page.locator("#results dd").first.locator(".math-display")  # the factors named beside them are inline
     assert equations.count() == 3  # on a phone one is broken across lines: more than one .katex in it
     assert all(equations.nth(i).locator(".katex").count() >= 1 for i in range(3))
     assert page.locator(".katex-error").count() == 0

@@ -199,6 +199,33 @@ def test_the_named_slip_its_piece_and_follow_up_at_both_sizes(browser, live_serv
         context.close()
 
 
+def test_the_positions_step_names_the_wedges_x_left_out_on_a_phone(browser, live_server, artifacts):
+    # issue 41, item 1: the practice starts with the positions, says the figure's axes, names the slip
+    context, page = sized_page(browser, live_server, phone=True)
+    try:
+        page.goto("/scenes/movable-incline?practice")
+        key = "position:x2"
+        page.wait_for_selector(STEP.format(key))
+        first = page.locator(".practice-step").first
+        assert first.get_attribute("data-key") == "position:x1"
+        step = page.locator(STEP.format(key))
+        assert step.locator("h3").inner_text() == "Position: x of the block"
+        assert "x across" in step.locator(".practice-names").inner_text()
+        answer(page, key, "D*cos(alpha)")
+        mistake = verdict_of(page, key).locator(".verdict-mistake")
+        mistake.wait_for()
+        assert mistake.get_attribute("data-key") == "position.x2.carried.1"
+        assert "the wedge's x left out" in mistake.inner_text()
+        verdict = verdict_of(page, key)
+        assert verdict.evaluate("e => e.getBoundingClientRect().right") <= 391
+        verdict.screenshot(path=artifacts / "practice-position-phone.png")
+        answer(page, key, "X + D*cos(alpha)")
+        page.wait_for_selector(STEP.format(key) + ' .practice-verdict[data-verdict="correct"]')
+        assert page.locator("#practice .katex-error").count() == 0
+    finally:
+        context.close()
+
+
 def test_a_wrong_reply_to_a_follow_up_is_diagnosed(page, artifacts):
     # student-e, 8: the lower bob's T alone typed as if it swung from a fixed pivot
     page.set_viewport_size({"width": 1366, "height": 768})
@@ -266,11 +293,20 @@ def test_an_equation_typed_as_a_textbook_writes_it_is_checked_and_a_refusal_is_s
     verdict.locator(".verdict-head").wait_for()
     assert verdict.get_attribute("data-verdict") == "correct"
 
+    # ½ typed as students type it, with a space before the mass, is a coefficient: typeset ½ m R² θ̇², checked
     answer(page, "kinetic", "1/2 m R^2 theta_dot^2")
+    half = page.locator(STEP.format("kinetic") + " .practice-preview-math")
+    page.wait_for_function(f"document.querySelector('{STEP.format('kinetic')}').dataset.typeset === 'read'")
+    shown = half.evaluate("el => el.querySelector('annotation')?.textContent ?? el.textContent")
+    assert shown.removeprefix(r"\displaystyle ") == r"T = \frac{1}{2} m R^{2} \dot{\theta}^{2}"
+    verdict_of(page, "kinetic").locator(".verdict-head").wait_for()
+    assert verdict_of(page, "kinetic").get_attribute("data-verdict") == "correct"
+    # glued to the mass it reads two ways, and the refusal says the space that decides
+    answer(page, "kinetic", "1/2m R^2 theta_dot^2")
     refused = verdict_of(page, "kinetic")
     refused.locator("mark").wait_for()
     said = refused.locator(".verdict-head").inner_text()
-    assert said.startswith("Not checked: a factor after a quotient") and said.endswith("write 1/2 as (1/2).")
+    assert said.startswith("Not checked: a factor after a quotient") and said.endswith("put a space after 1/2.")
     assert "column" not in said and "answer:" not in said
     assert page.locator(STEP.format("kinetic") + " .practice-preview-note").inner_text() == ""  # said once
     page.locator(STEP.format("kinetic")).screenshot(path=artifacts / "practice-refused-once-390.png")
@@ -418,6 +454,8 @@ def test_a_long_answer_and_its_difference_break_across_lines_on_a_phone(browser,
 
 # the simple pendulum's eight steps, each typed right (as the page's own derivation gives them)
 PENDULUM = [
+    ("position:x", "R*sin(theta)"),
+    ("position:z", "R - R*cos(theta)"),
     ("kinetic", "m*R**2*theta_dot**2/2"),
     ("potential", "m*g*R*(1 - cos(theta))"),
     ("lagrangian", "m*R**2*theta_dot**2/2 - m*g*R*(1 - cos(theta))"),
@@ -435,7 +473,7 @@ def test_progress_is_counted_and_the_end_is_said(page, artifacts):
     page.goto("/scenes/simple-pendulum?practice")
     page.wait_for_selector(STEP.format("omega_squared"))
     status = page.locator("#practice-status")
-    assert status.inner_text() == "8 steps to derive, in the chapter's order."
+    assert status.inner_text() == "10 steps to derive, in the derivation's order."
     # the heading is the title, once: the label is for a screen reader, and takes no room on the page
     assert page.locator(STEP.format("kinetic") + " label").evaluate("e => e.getBoundingClientRect().width") <= 1
     equation = page.locator(STEP.format("equation:theta"))
@@ -447,16 +485,16 @@ def test_progress_is_counted_and_the_end_is_said(page, artifacts):
         page.wait_for_selector(STEP.format(key) + ' .practice-verdict[data-verdict="correct"], '
                                + STEP.format(key) + ' .practice-verdict[data-verdict="equivalent"]')  # fmt: skip
         if n == 2:
-            assert status.inner_text() == "2 of 8 steps correct."
-    assert status.inner_text().startswith("All 8 steps correct")
+            assert status.inner_text() == "2 of 10 steps correct."
+    assert status.inner_text().startswith("All 10 steps correct")
     page.locator("#practice").screenshot(path=artifacts / "practice-all-done-1366.png")
     # kept: after a reload the count is the same
     page.reload()
-    page.wait_for_function("document.getElementById('practice-status').dataset.done === '8'")
+    page.wait_for_function("document.getElementById('practice-status').dataset.done === '10'")
     # a right answer typed over no longer counts
     box = page.locator(STEP.format("omega_squared")).locator("input[name]")
     box.fill("g/R + 1")
-    assert status.inner_text() == "7 of 8 steps correct."
+    assert status.inner_text() == "9 of 10 steps correct."
 
 
 @pytest.mark.parametrize("size", ["desktop", "phone"])
@@ -476,7 +514,8 @@ def test_practice_mode_hides_its_dead_tabs_and_folds_what_gives_the_answers_away
         assert shown.inner_text() == "Show (gives away the answers)"
         panel = page.locator("#panel-effective-potential")
         assert panel.locator(".plot").is_hidden()
-        assert "gives away step 2: Potential energy U" in panel.locator("button.gives-away").inner_text()
+        # step 4: after the two positions (x and z of the bob) and T
+        assert "gives away step 4: Potential energy U" in panel.locator("button.gives-away").inner_text()
         # shown on request, and drawn at its full width
         panel.locator("button.gives-away").click()
         assert panel.locator(".plot").is_visible()

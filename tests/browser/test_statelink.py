@@ -13,7 +13,7 @@ VIEWPORTS = {
     "desktop": {"viewport": {"width": 1366, "height": 768}},
     "phone": {"viewport": {"width": 390, "height": 844}, "has_touch": True, "is_mobile": True},
 }
-READY = '#run-status[data-state="ready"], #run-status[data-state="untrusted"]'
+READY = '#run-status[data-state="ready"], #run-status[data-state="untrusted"], #run-status[data-state="warning"]'
 
 # what a reader sees, read from the page: the controls' numbers, the selects, the instant, the open panels and
 # details, practice mode and the step that has the focus
@@ -135,4 +135,26 @@ def test_a_playground_view_keeps_the_system_and_its_settings(context):
     after = again.evaluate(READ_VIEW)
     assert after["controls"] == before["controls"] and after["controls"]["k"] == 9
     assert after["time"] == pytest.approx(before["time"], abs=1e-9)
+    assert page.errors == again.errors == []
+
+
+def test_a_cut_or_changed_link_says_what_it_could_not_show(context):
+    # inst-b 17: #theta=99 ran θ = 99 rad beside "allowed: −3.142 to 3.142 rad"; #theta=abc silently showed the default
+    _, new = context
+    page = new()
+    page.goto("/scenes/simple-pendulum#theta=99&R=abc&thet=1&R2=2")
+    settle(page)
+    theta = page.locator('#controls .control[data-name="theta"]')
+    assert float(theta.locator('input[type="number"]').input_value()) == float(theta.get_attribute("data-default"))
+    note = page.locator("#controls .link-note")
+    text = note.inner_text()
+    assert "outside the allowed" in text and "99" in text
+    assert "“abc” is not a number" in text and "“thet” is not a setting of this page" in text
+    assert note.is_visible()
+    # a link whose values all fit says nothing
+    again = new()
+    again.goto("/scenes/simple-pendulum#theta=0.5")
+    settle(again)
+    assert again.locator("#controls .link-note").count() == 0
+    assert float(again.locator('#controls .control[data-name="theta"] input[type="number"]').input_value()) == 0.5
     assert page.errors == again.errors == []

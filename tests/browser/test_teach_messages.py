@@ -96,6 +96,10 @@ def test_refusals_are_said_in_words_at_the_box_they_concern(browser, live_server
     page.wait_for_selector('#assign-system-steps input[data-step="kinetic"]')
     assert _status(page, "assign-system-status") == ""
 
+    # no set-up: said at the system's box before anything is sent
+    page.click("#assign-save")
+    assert _status(page, "assign-system-status").startswith("Write the system's set-up: what each coordinate is")
+    page.fill("#assign-system-setup", "x is the stretch of the spring from its natural length; U = 0 at x = 0.")
     # no step ticked: every step of the system, as for a scene
     page.click("#assign-save")
     page.wait_for_function("document.getElementById('assign-status').textContent.startsWith('Added: 1.')")
@@ -160,15 +164,23 @@ def test_the_first_screen_says_who_is_done(browser, live_server, classes, artifa
     box = done.bounding_box()
     assert box is not None and box["y"] + box["height"] <= height, box
 
-    # the step cards: students and answers counted apart; the step nobody answered behind "Show every step"
+    # the step cards: students and answers counted apart, the bar labelled with its one unit (answers) in words
+    # and in its aria-label; the step nobody answered behind "Show every step"
     numbers = page.locator(".dash-step .dash-numbers").all_inner_texts()
-    assert sorted(numbers) == ["1 of 2 students done, 0 stuck; 1 right answer, 0 wrong",
-                               "2 of 2 students done, 0 stuck; 2 right answers, 1 wrong"], numbers
+    assert sorted(numbers) == ["1 of 2 students done, 0 stuck", "2 of 2 students done, 0 stuck"], numbers
+    bars = page.locator(".dash-step .dash-bar-row").all_inner_texts()
+    assert sorted(" ".join(b.split()) for b in bars) == ["Answers 1 right answer, 0 wrong",
+                                                         "Answers 2 right answers, 1 wrong"], bars
+    said = sorted(page.locator(".dash-step .dash-bar").evaluate_all("bars => bars.map(b => b.getAttribute('aria-label'))"))
+    assert said == ["Answers to this step: 1 right answer, 0 wrong (green: right, red: wrong)",
+                    "Answers to this step: 2 right answers, 1 wrong (green: right, red: wrong)"], said
+    assert "counts the answers" in page.locator(".dash-legend").inner_text()
     toggle = page.locator("#dash-steps-all")
     assert toggle.inner_text() == "Show every step (1 more not answered yet)"
     toggle.click()
     page.wait_for_function("document.querySelectorAll('.dash-step').length === 3")
-    assert "0 of 2 students done, 0 stuck; 0 right answers, 0 wrong" in page.locator(".dash-step").last.inner_text()
+    last = " ".join(page.locator(".dash-step").last.inner_text().split())
+    assert "0 right answers, 0 wrong" in last and "0 of 2 students done, 0 stuck" in last, last
     toggle.click()
     page.wait_for_function("document.querySelectorAll('.dash-step').length === 2")
 
@@ -180,5 +192,65 @@ def test_the_first_screen_says_who_is_done(browser, live_server, classes, artifa
     assert box is not None and box["x"] >= 0 and box["x"] + box["width"] <= width, box
     assert page.evaluate("document.documentElement.scrollWidth") <= width
     page.screenshot(path=artifacts / f"teach-who-is-done-{size}.png", full_page=True)
+    assert page.errors == []
+    context.close()
+
+
+@pytest.mark.slow
+def test_the_dashboard_says_loading_until_its_figures_arrive(browser, live_server, classes, artifacts):  # noqa: F811
+    context, page = _teacher(browser, live_server)
+    assert page.request.post("/api/classes", data={"title": "first"}).status == 201  # the classroom starts
+    code, key = _class_with_answers(classes[0])
+    held = []  # the summary's requests, held until the loading state is seen
+    page.route("**/api/classes/*/summary", lambda route: route.continue_() if held and held[-1] is None
+               else held.append(route))
+    page.goto("/teach")
+    page.evaluate(f"localStorage.setItem('lagrange-teach', {json.dumps(json.dumps({'code': code, 'key': key, 'title': 'M'}))})")
+    page.reload()
+    page.wait_for_function("document.getElementById('class-live') && !document.getElementById('class-live').hidden")
+    page.wait_for_timeout(300)
+    assert held, "the dashboard asked for no summary"
+    # no empty table that reads as "nobody has done anything": every table and list says it is loading
+    for where in ("#dash-assignments tbody", "#dash-students tbody", "#dash-steps", "#dash-mistakes",
+                  "#now-stuck .now-body", "#now-mistake .now-body", "#dash-counts"):
+        assert page.locator(where).inner_text().strip() == "Loading…", where
+    waiting = list(held)
+    held.append(None)  # the later polls pass
+    for route in waiting:
+        route.continue_()
+    page.wait_for_selector("#dash-assignments tbody tr .dash-done")
+    assert page.locator(".dash-loading").count() == 0
+    assert page.errors == []
+    context.close()
+
+
+def test_a_whole_teacher_link_pasted_after_a_cut_one_opens_the_class(browser, live_server, classes):  # noqa: F811
+    # inst-b 18: after a cut link, the whole link pasted into the same tab changed only the fragment, and the page
+    # stayed on "Start a class" with the old message
+    context, page = _teacher(browser, live_server)
+    made = page.request.post("/api/classes", data={"title": "Mechanics II"}).json()
+    page.goto(f"/teach#class={made['code']}&recover={made['recovery_code'][:4]}")
+    page.wait_for_function("document.getElementById('start-status').textContent.length > 0")
+    assert _status(page, "start-status").startswith("This recovery code is incomplete")
+    page.evaluate("(h) => { window.location.hash = h; }", f"class={made['code']}&recover={made['recovery_code']}")
+    page.wait_for_selector("#class-live:not([hidden])")
+    assert page.locator("#class-code").inner_text() == made["code"]
+    assert page.errors == []
+    context.close()
+
+
+def test_a_pseudonym_of_spaces_is_asked_for_in_the_forms_words(browser, live_server, classes):  # noqa: F811
+    # inst-b 4: "name: String should have at least 1 character"; student-f 25: an earlier message stayed
+    context, page = _teacher(browser, live_server, PHONE)
+    made = page.request.post("/api/classes", data={"title": "Mechanics II"}).json()
+    page.goto("/join?code=AAAAAA")
+    page.fill("#join-name", "ana")
+    page.click("#join-form button[type=submit]")
+    page.wait_for_function("document.getElementById('join-status').textContent.includes('AAAAAA')")
+    page.fill("#join-code", made["code"])
+    page.fill("#join-name", "   ")
+    page.click("#join-form button[type=submit]")
+    said = _status(page, "join-status")
+    assert said.startswith("Type a pseudonym") and "String" not in said and "AAAAAA" not in said
     assert page.errors == []
     context.close()

@@ -37,6 +37,10 @@ SPRING_ROD = {
 USER_SYSTEMS = {"cart-pendulum": CART_PENDULUM, "spring-rod": SPRING_ROD}
 
 CORPUS = [
+    # a position: one component of one body, up to another origin
+    ("movable-incline", "position", "x2", "D*cos(alpha)", "incorrect", "-X", "key:position.x2.carried.1"),
+    ("simple-pendulum", "position", "z", "-R*cos(theta)", "equivalent", None, None),
+    ("double-pendulum", "position", "z2", "-l1*cos(theta1) - l2*cos(theta2)", "correct", None, None),
     # simple pendulum
     ("simple-pendulum", "kinetic", None, "m*R**2*theta_dot**2/2", "correct", None, None),
     ("simple-pendulum", "kinetic", None, "m*(R*theta_dot)**2*(sin(theta)**2 + cos(theta)**2)/2", "correct", None, None),

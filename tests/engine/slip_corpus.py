@@ -429,6 +429,37 @@ SLIPS = [
     ),
     # the fixed wedge's T: the wedge moves and carries the block
     ("movable-incline", "kinetic", None, "(1/2)*m*D_dot**2", r"wedge treated as fixed.*M → ∞.*carries the block"),
+    # ---- positions (issue 41, item 1): one Cartesian component of one body, x across, y, z up, as the figure
+    # draws them; where students go wrong first (a student's review)
+    ("simple-pendulum", "position", "x", "R*cos(theta)", SWAP),
+    ("simple-pendulum", "position", "z", "R*cos(theta)", SIGN + r"|up|below"),
+    ("damped-pendulum", "position", "x", "-R*sin(theta)", SIGN),
+    ("spherical-pendulum", "position", "x", "R*cos(theta)*cos(phi)", SWAP),
+    ("spherical-pendulum", "position", "z", "R*sin(theta)", SWAP),
+    ("spherical-pendulum", "position", "y", "R*sin(theta)*cos(phi)", r"\bx\b|other component|swapp|sin.*cos"),
+    ("helix-bead", "position", "y", "R*cos(alpha*z)", SWAP),
+    ("helix-bead", "position", "x", "R*cos(z)", UNITS_WORDS),
+    ("rotating-parabola", "position", "z", "alpha*rho", UNITS_WORDS),
+    ("rotating-parabola", "position", "x", "rho*sin(omega*t)", SWAP),
+    ("incline-block", "position", "x", "X*sin(alpha)", SWAP),
+    ("incline-block", "position", "z", "-X*sin(alpha)", SIGN + r"|up"),
+    # the wedge's X missing from the block's x: the block rides on the wedge
+    ("movable-incline", "position", "x2", "D*cos(alpha)", r"wedge.*(carr|rides|moves)|X.*left out"),
+    ("movable-incline", "position", "z2", "D*sin(alpha)", SIGN + r"|down|below"),
+    ("movable-incline", "position", "x2", "X + D*sin(alpha)", SWAP),
+    ("movable-incline", "position", "x2", "X - D*cos(alpha)", SIGN),
+    ("tabletop-spring", "position", "x", "r*sin(theta)", SWAP),
+    ("tabletop-spring", "position", "y", "sin(theta)", UNITS_WORDS),
+    # the middle mass moving as far as the end masses, not half as far
+    ("pulley", "position", "z3", "-(y1 + y2)", r"half|twice|doubled"),
+    ("pulley", "position", "z3", "(y1 + y2)/2", SIGN),
+    ("double-pendulum", "position", "x2", "l2*sin(theta2)", r"upper bob.*(carr|moves)|θ₁.*left out"),
+    ("double-pendulum", "position", "x1", "l1*cos(theta1)", SWAP),
+    ("double-pendulum", "position", "z2", "l1*cos(theta1) + l2*cos(theta2)", SIGN + r"|up|below"),
+    ("double-pendulum", "position", "z2", "-l1*cos(theta1) - l2*cos(theta1)", r"θ₁ where θ₂ belongs|θ₂"),
+    ("free-cart", "position", "x2", "l*sin(theta)", r"cart.*(carr|moves)|X.*left out"),
+    ("elastic-pendulum", "position", "x", "r*cos(phi)", SWAP),
+    ("cart-pendulum", "position", "z2", "l*cos(phi)", SIGN + r"|up|below"),
 ]
 
 # Correct answers in unusual forms: every one must be accepted ("correct", or "equivalent" where the
@@ -520,4 +551,11 @@ CORRECT = [
     ("simple-pendulum", "potential", None, "m*g*R*(1 - cos(theta))"),
     ("free-cart", "equation", "theta", "l*theta_ddot + X_ddot*cos(theta) + g*sin(theta)"),
     ("free-cart", "kinetic", None, "(M + m)*X_dot**2/2 + m*l**2*theta_dot**2/2 + m*l*X_dot*theta_dot*cos(theta)"),
+    # positions: another origin is the page's plus a constant; identities are the same component
+    ("simple-pendulum", "position", "z", "-R*cos(theta)"),
+    ("simple-pendulum", "position", "z", "2*R*sin(theta/2)**2"),
+    ("movable-incline", "position", "x2", "X + D*sin(pi/2 - alpha)"),
+    ("double-pendulum", "position", "z2", "-(l1*cos(theta1) + l2*cos(theta2))"),
+    ("coupled-oscillators", "position", "x1", "x1"),
+    ("pulley", "position", "z3", "-(y1 + y2)/2"),
 ]

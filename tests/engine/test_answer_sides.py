@@ -36,7 +36,10 @@ def test_an_acceleration_typed_with_its_name_is_its_right_hand_side():
         ("-m*g*R*cos(Theta)", "potential", "Theta is not a coordinate here; did you mean theta?", "Theta"),
         # the parser's refusals said as a tutor says them (student-e, 15)
         ("m*g*l*(1 - cos(theta))", "potential", "l is not a name in this problem; the names you may use are R, g, m, t, theta and pi", "l"),
-        ("diff(theta, t)", "equation", "diff is not a function you may use here; the functions are acos,", "diff"),
+        ("diff(theta, t)", "equation", "a derivative cannot be typed here: work it out", "diff"),
+        ("foo(theta)", "potential", "foo is not a function you may use here; the functions are acos,", "foo"),
+        ("abs(theta)", "potential", "an absolute value |x| is typed Abs(x), with a capital A", "abs"),
+        ("m*g*R*ln(theta)", "potential", "the natural logarithm is typed log(x)", "ln"),
     ],
 )
 def test_what_cannot_be_read_is_said_plainly(text, step, says, marked):
@@ -47,10 +50,11 @@ def test_what_cannot_be_read_is_said_plainly(text, step, says, marked):
     assert text[error.start : error.end] == marked
 
 
-def test_half_typed_without_brackets_is_told_how_to_type_it():
+def test_half_glued_to_a_factor_is_told_how_to_type_it():
     with pytest.raises(CheckError) as refused:
-        read_answer("1/2 m R^2 theta_dot^2", "kinetic", None, KINDS)
-    assert str(refused.value).endswith("write 1/2 as (1/2)") and "column" not in str(refused.value)
+        read_answer("1/2m R^2 theta_dot^2", "kinetic", None, KINDS)
+    said = str(refused.value)
+    assert said.endswith("for the first, put a space after 1/2") and "column" not in said
 
 
 @pytest.mark.parametrize(
@@ -74,7 +78,7 @@ def test_a_derivative_an_acceleration_on_the_right_and_a_fraction_are_said_in_a_
 
 def test_the_readings_of_an_ambiguous_text_write_python_powers_as_a_reader_does():
     with pytest.raises(CheckError) as refused:
-        read_answer("1/2 m R**2 theta_dot**2", "kinetic", None, KINDS)
+        read_answer("1/2m R**2 theta_dot**2", "kinetic", None, KINDS)
     said = str(refused.value)
     assert "could be read as (1/2) m R² θ" in said or "could be read as (1/2) m R² theta" in said
     assert "**" not in said.split("could be read as")[1]
@@ -89,3 +93,10 @@ def test_names_typed_together_with_a_function_are_told_apart():
     with pytest.raises(CheckError) as caught:
         read_answer("xcos(theta)", "potential", None, KINDS)  # x is no name here: the functions are listed
     assert "is not a function you may use here" in str(caught.value)
+
+
+def test_the_functions_are_listed_as_a_sentence_without_abs():
+    with pytest.raises(CheckError) as caught:
+        read_answer("foo(theta)", "potential", None, KINDS)
+    said = str(caught.value)
+    assert "Abs" not in said and said.endswith("tan and tanh"), said

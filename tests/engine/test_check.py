@@ -190,7 +190,7 @@ def test_refusals_in_pure_python_name_the_steps_rules():
 
 def test_an_unknown_or_inapplicable_step_or_coordinate_lists_the_allowed_ones():
     damped = derivation("damped-pendulum")
-    with pytest.raises(CheckError, match="the steps are: kinetic, potential, lagrangian, momentum, equation") as e:
+    with pytest.raises(CheckError, match="the steps are: position, kinetic, potential, lagrangian, momentum, equation") as e:
         problem(damped, "omega_squared")
     assert e.value.field == "step"
     with pytest.raises(CheckError, match="unknown step 'jerk'"):
@@ -202,11 +202,20 @@ def test_an_unknown_or_inapplicable_step_or_coordinate_lists_the_allowed_ones():
         problem(damped, "equation", "x")
     with pytest.raises(CheckError, match="given by its Lagrangian alone"):
         problem(derivation("spring-rod"), "kinetic")
+    # a position names its component: the moving ones are listed (a flat figure's y is not)
+    with pytest.raises(CheckError, match=r"'y' is not one of this system's moving position components: x, z \(") as e:
+        problem(damped, "position", "y")
+    assert e.value.field == "coordinate"
+    with pytest.raises(CheckError, match="given by its energies, not by its bodies' positions"):
+        problem(derivation("spring-rod"), "position", "x")
 
 
 def test_exercises_follow_the_chapter_and_carry_the_engines_answers():
     d = derivation("spherical-pendulum")
     assert exercises(d) == [
+        ("position", "x"),
+        ("position", "y"),
+        ("position", "z"),
         ("kinetic", None),
         ("potential", None),
         ("lagrangian", None),

@@ -82,4 +82,5 @@ def test_matrices_are_printed_in_textbook_order():
     assert "l_{1}^{2} \\left(m_{1}" not in modes["latex"] and "l_{1} l_{2} m_{2}" not in modes["latex"]
     # one coordinate: ω² itself, no 1×1 matrices
     (one,) = [s for s in derivation_document("simple-pendulum")["steps"] if s["key"] == "normal-modes:1"]
-    assert r"\omega^2 &= \frac{g}{R}" in one["latex"] and "matrix" not in one["latex"]
+    # and the equilibrium in the same row (prof-g 5: "about θ = 0: ω² = g/R", no lone "θ = 0" above it)
+    assert r"\text{about } \theta=0:\quad \omega^2 = \frac{g}{R}" in one["latex"] and "matrix" not in one["latex"]

@@ -38,3 +38,12 @@ def test_omega_is_the_same_letter_in_steps_controls_and_document():
     control = next(c for c in model["parameters"] if c["name"] == "Omega")
     assert (control["latex"], control["label"]) == (r"\Omega", "Ω")
     assert next(c for c in model["initial"] if c["name"] == "theta")["unit"] == "rad"
+
+
+def test_a_name_of_several_letters_is_greek_or_one_upright_name():
+    from app.engine.names import latex, unicode
+
+    # prof-g 56: th is no Greek letter's name: one upright name, the dot over all of it; theta is θ
+    assert latex("th") == r"\mathrm{th}" and latex("th_dot") == r"\dot{\mathrm{th}}"
+    assert latex("th2_ddot") == r"\ddot{\mathrm{th}}_{2}" and latex("theta_dot") == r"\dot{\theta}"
+    assert unicode("th_dot") == "th˙" and unicode("theta_dot") == "θ̇" and unicode("x1_dot") == "x\u0307\u2081"

@@ -84,6 +84,65 @@ def test_the_worker_builds_what_the_web_process_read():
     assert sp.simplify(expr - parse_expression("m*R**2*theta_dot**2/2", pb.namespace)) == 0
 
 
+# the instructor's forms (issue 45): a coefficient as a physicist writes one is read, what physicists write
+# meaning either is refused with both readings
+OTHER = {name: sp.Symbol(name, real=True) for name in ("m", "R", "theta_dot", "l", "g", "p", "k", "x", "M", "y2_dot")}
+OTHER["theta"] = sp.Symbol("theta", real=True)
+
+
+@pytest.mark.parametrize(
+    ("text", "meant"),
+    [
+        ("1/2 m R^2", "m*R**2/2"),
+        ("1/2 m R^2 θ̇^2", "m*R**2*theta_dot**2/2"),
+        ("1/2 m (R θ̇)^2", "m*R**2*theta_dot**2/2"),
+        ("3/4 m l^2", "3*m*l**2/4"),
+        ("-1/2 k x^2", "-k*x**2/2"),
+        ("m g - 1/2 k x^2", "m*g - k*x**2/2"),
+        ("1/2 (m + M) x'^2", "(m + M)*x_dot**2/2"),
+        ("-g/R sin(theta)", "-g*sin(theta)/R"),
+        ("g/l sin θ", "g*sin(theta)/l"),
+        ("m g/l sin θ", "m*g*sin(theta)/l"),
+        ("g/l sin^2 θ", "g*sin(theta)**2/l"),
+        ("g/l sin θ cos θ", "g*sin(theta)*cos(theta)/l"),
+    ],
+)
+def test_a_coefficient_as_a_physicist_writes_it_is_read(text, meant):
+    names = OTHER | {"x_dot": sp.Symbol("x_dot", real=True)}
+    assert sp.simplify(parse_expression(text, names) - parse_expression(meant, names)) == 0
+
+
+@pytest.mark.parametrize(
+    ("text", "readings"),
+    [
+        ("1/2m", ("(1/2) m", "1/(2 m)")),  # no space: glued, 1/(2m) is as likely
+        ("1/2m R^2", ("(1/2) m R^2", "1/(2 m R^2)")),
+        ("1/2(m + M)", ("(1/2) (m + M)", "1/(2 (m + M))")),
+        ("p^2/2 m", ("(p^2/2) m", "p^2/(2 m)")),  # the numerator is not a number
+        ("k/m x", ("(k/m) x", "k/(m x)")),
+        ("M/4 y2_dot", ("(M/4) y2_dot", "M/(4 y2_dot)")),
+        ("1/2^2 m", ("(1/2^2) m", "1/(2^2 m)")),  # the denominator is not a plain number
+        ("g/l x sin θ", ("(g/l) x sin θ", "g/(l x sin θ)")),  # a name before the call
+        ("g/l sin θ x", ("(g/l) sin θ x", "g/(l sin θ x)")),  # a name after it
+        ("g/l sin(θ)x", ("(g/l) sin(θ)x", "g/(l sin(θ)x)")),
+    ],
+)
+def test_a_factor_after_a_quotient_that_reads_two_ways_is_refused_with_both(text, readings):
+    with pytest.raises(ExpressionError) as refused:
+        read(text, OTHER)
+    assert refused.value.readings == readings
+    assert str(refused.value).startswith("a factor after a quotient is ambiguous")
+
+
+def test_a_glued_fraction_of_numbers_is_told_the_space_that_makes_it_a_coefficient():
+    with pytest.raises(ExpressionError) as refused:
+        read("1/2m R^2", OTHER)
+    assert str(refused.value).endswith("could be read as (1/2) m R^2 or as 1/(2 m R^2); for the first, put a space after 1/2")
+    with pytest.raises(ExpressionError) as refused:
+        read("k/m x", OTHER)  # no space makes this one a coefficient: the brackets decide
+    assert str(refused.value).endswith("write the one you mean, with its brackets")
+
+
 @pytest.mark.parametrize(
     ("text", "start", "end"),
     [

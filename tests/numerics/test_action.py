@@ -180,3 +180,24 @@ def test_magnetron_focus_with_an_outward_spring():
     t, P, C, _ = _cyclotron(wc, 4.0)
     found = conjugate_time(t, P, C, kappa * P)
     assert found == pytest.approx(2 * math.pi / math.sqrt(wc**2 - 4 * kappa), rel=1e-8)
+
+
+COUPLED = System(
+    coordinates=("x", "y"),
+    parameters=(Parameter("w", 2.0), Parameter("c", 0.5)),
+    lagrangian="(x_dot**2 + y_dot**2)/2 - w**2*(x**2 + y**2)/2 - c*x*y",
+)
+
+
+def test_the_varied_coordinate_alone_has_its_own_focus():
+    # L = ½(ẋ² + ẏ²) − ½ω²(x² + y²) − c x y: the normal modes x ± y have ω² ± c, so all variations together reach
+    # their first focus at π/√(ω² + c); varying x alone (y kept on the true path) the Jacobi equation is
+    # η″ = −ω² η, whose focus is π/ω, later (prof-e 17: the two foci were one number on the page)
+    system = numeric_system(derive(COUPLED))
+    r = action_of(system, np.array([2.0, 0.5]), np.array([0.3, -0.2, 0.1, 0.4]), 2.0, 0, 1, [])
+    assert r.conjugate_time == pytest.approx(math.pi / math.sqrt(4.5), rel=1e-7)
+    assert r.varied_conjugate_time == pytest.approx(math.pi / 2.0, rel=1e-7)
+    # before x's own focus, past the one of both together: a minimum among the variations of x alone
+    between = action_of(system, np.array([2.0, 0.5]), np.array([0.3, -0.2, 0.1, 0.4]), 1.53, 0, 1, [])
+    assert between.conjugate_time is not None and between.varied_conjugate_time is None
+    assert between.kind == "minimum"

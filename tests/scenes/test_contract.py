@@ -11,7 +11,7 @@ from tests.scenes.common import forces
 
 SCENE_KEYS = {
     *("id", "title", "section", "summary", "statement", "figure", "coordinates", "parameters", "initial", "t_end"),
-    *("panels", "beyond_chapter", "events", "family", "marks", "answers", "exact_frequency"),
+    *("panels", "beyond_chapter", "events", "family", "marks", "answers", "exact_frequency", "run_note"),
 }
 
 

@@ -48,3 +48,18 @@ def test_an_angle_not_named_as_one_follows_from_its_mass_matrix_entry_and_unknow
     d = doc(["u", "x"], {"m": "kg", "R": "m", "c": ""}, [[["*", "m", ["pow", "R", 2]], 0], [0, "c"]])
     assert coordinate_units(d, scene=False)["units"] == {"u": "", "x": ""}
     assert coordinate_units(d, scene=False)["rate_units"] == {"u": "1/s", "x": "1/s"}
+
+
+def test_a_number_reads_with_its_unit_never_per_second():
+    from app.viz.units import rate_unit, with_unit
+
+    assert [with_unit("1", rate_unit(u)) for u in ("m", "rad", "")] == ["1 m/s", "1 rad/s", "1 s⁻¹"]
+    assert with_unit("2.5", "") == "2.5"
+
+
+def test_a_reciprocal_unit_is_printed_as_a_negative_power():
+    from app.viz.page_model import allowed_text, unit_text
+
+    # prof-g 43: "The slider marks 0.8155 1/m" on the rotating parabola
+    assert unit_text("1/m") == "m⁻¹" and unit_text("1/s") == "s⁻¹" and unit_text("m/s^2") == "m/s²"
+    assert allowed_text(0.01, 100, "1/m") == "0.01 to 100 m⁻¹"

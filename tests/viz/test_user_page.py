@@ -45,6 +45,8 @@ def test_a_cyclic_coordinate_starts_near_the_steady_motion(spec, rate):
     assert start(m)["r"] == pytest.approx(1.1) and start(m)["phi_dot"] == pytest.approx(rate / 1.1**2, rel=1e-5)
     assert "near the steady motion through r = 1" in m["initial_note"] and "φ̇(0)" in m["initial_note"]
     assert "r oscillates about 1" in m["initial_note"]
+    # the starting rate with its unit (prof-f 35: a rate printed bare, or "per second")
+    assert f"φ̇(0) = {start(m)['phi_dot']:.4g} rad/s " in m["initial_note"], m["initial_note"]
 
 
 def test_a_system_without_a_reduction_starts_at_rest():

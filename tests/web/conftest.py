@@ -7,6 +7,8 @@ import pytest
 
 from app.main import app
 from app.service.services import Services
+from app.web.api_classes import classroom as classroom_dep
+from tests.classes import classroom
 
 
 @pytest.fixture
@@ -29,3 +31,13 @@ def override() -> Iterator[Callable[[Callable[..., Any], Any], Any]]:
     yield give
     for dependency in given:
         app.dependency_overrides.pop(dependency, None)
+
+
+@pytest.fixture
+def classes(services, tmp_path):
+    """The classes in a SQLite database of the test's own (a module testing both backends defines its own)."""
+    room = classroom(services.checking, "sqlite", tmp_path, None)
+    app.dependency_overrides[classroom_dep] = lambda: room
+    yield room
+    app.dependency_overrides.pop(classroom_dep, None)
+    room.stop()

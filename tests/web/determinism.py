@@ -65,6 +65,14 @@ DOUBLE_WRONG_T = (
     "(m1 + m2)*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2"
     " + m2*l1*l2*theta1_dot*theta2_dot*cos(theta1 + theta2)"
 )
+# A uniform rod pivoted at one end, typed with T and U (tests/engine/slip_corpus.py's rod-pendulum).
+ROD = {
+    "coordinates": ["theta"],
+    "parameters": [{"name": "m", "value": 1.0, "min": 0.1, "unit": "kg"}, {"name": "l", "value": 1.0, "min": 0.1, "unit": "m"},
+                   {"name": "g", "value": 9.81, "min": 0.1, "unit": "m/s²"}],
+    "kinetic": "m*l**2*theta_dot**2/6",
+    "potential": "-m*g*l*cos(theta)/2",
+}  # fmt: skip
 DOUBLE = {
     **chain(2),
     "parameters": [{"name": "m", "value": 1.0}, {"name": "l", "value": 1.0}, {"name": "g", "value": 9.81}],
@@ -80,6 +88,17 @@ REQUESTS: list[tuple[str, str, str, Any]] = [
     ("check-hoop-omega", "POST", "/api/check",
      {"system": HOOP, "step": "omega_squared", "answer": "w**2 - g/R"}),
     ("scene-check-double-T", "POST", "/api/scenes/double-pendulum/check", {"step": "kinetic", "answer": DOUBLE_WRONG_T}),
+    # the backward diagnosis (issue 41): gravity counted twice, the wedge held still, the wedge's x left out of the
+    # block's position, the pulley moving as far as the masses, a rod typed with T and U taken as a point mass
+    ("scene-check-pendulum-twice", "POST", "/api/scenes/simple-pendulum/check",
+     {"step": "equation", "coordinate": "theta", "answer": "m*R**2*theta_ddot + 2*m*g*R*sin(theta)"}),
+    ("scene-check-wedge-held", "POST", "/api/scenes/movable-incline/check",
+     {"step": "acceleration", "coordinate": "D", "answer": "g*sin(alpha)"}),
+    ("scene-check-wedge-position", "POST", "/api/scenes/movable-incline/check",
+     {"step": "position", "coordinate": "x2", "answer": "D*cos(alpha)"}),
+    ("scene-check-pulley-T", "POST", "/api/scenes/pulley/check",
+     {"step": "kinetic", "answer": "m1*y1_dot**2/2 + m2*y2_dot**2/2 + M*(y1_dot + y2_dot)**2/2"}),
+    ("check-rod-T", "POST", "/api/check", {"system": ROD, "step": "kinetic", "answer": "m*l**2*theta_dot**2/2"}),
     *[(f"scene-{s}", "GET", f"/api/scenes/{s}/derivation", None)
       for s in ("spherical-pendulum", "rotating-parabola", "double-pendulum")],
     ("modes-at-coupled", "POST", "/api/scenes/coupled-oscillators/modes-at", {"parameters": {"kappa": 0.37}}),

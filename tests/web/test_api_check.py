@@ -79,7 +79,7 @@ def test_a_step_that_does_not_apply_lists_the_steps_that_do(client):
     response = check(client, {"step": "omega_squared", "answer": "g/R"}, "damped-pendulum")
     assert response.status_code == 422
     assert response.json()["detail"].endswith(
-        "the steps are: kinetic, potential, lagrangian, momentum, equation, acceleration, hamiltonian"
+        "the steps are: position, kinetic, potential, lagrangian, momentum, equation, acceleration, hamiltonian"
     )
     hoop = check(client, {"system": SPRING_ROD, "step": "kinetic", "answer": "1"}, scene=None)
     assert hoop.status_code == 422 and "Lagrangian alone" in hoop.json()["detail"]
@@ -134,7 +134,10 @@ def test_unknown_scene_is_404_listing_the_known_ones(client):
 def test_practice_lists_each_step_with_the_engines_answer(client):
     doc = client.get("/api/scenes/pulley/practice").json()
     steps = [(e["step"], e["coordinate"]) for e in doc["exercises"]]
-    assert steps[:3] == [("kinetic", None), ("potential", None), ("lagrangian", None)]
+    # the positions first, one box per moving component of each body (x and z, numbered by body), then T, U, L
+    positions = [s for s in steps if s[0] == "position"]
+    assert positions and steps[: len(positions)] == positions and all(c and c[0] in "xz" for _, c in positions)
+    assert steps[len(positions) : len(positions) + 3] == [("kinetic", None), ("potential", None), ("lagrangian", None)]
     assert ("equation", "y2") in steps and steps[-1] == ("hamiltonian", None)
     assert doc["symbols"]["y1_dot"] == r"\dot{y}_{1}"
     own = client.post("/api/practice", json=SPRING_ROD)
@@ -154,6 +157,31 @@ def test_an_equation_is_taken_as_a_textbook_writes_it(client):
     answer = "m*r_ddot = m*w**2*r - k*(r - a)"
     system = check(client, {"system": SPRING_ROD, "step": "equation", "coordinate": "r", "answer": answer}, scene=None)
     assert system.status_code == 200 and system.json()["verdict"] == "correct"
+
+
+@pytest.mark.parametrize(
+    ("text", "latex"),
+    [
+        ("1/2 m R^2 theta_dot^2", r"\frac{1}{2} m R^{2} \dot{\theta}^{2}"),
+        ("1/2 m (R θ̇)^2", r"\frac{1}{2} m \left(R \dot{\theta}\right)^{2}"),
+    ],
+)
+def test_half_typed_as_students_type_it_is_the_pendulums_kinetic_energy(client, text, latex):
+    # issue 45: a fraction of numbers before a spaced factor is a coefficient, read and typeset as ½ m R² θ̇²
+    verdict = check(client, {"step": "kinetic", "answer": text})
+    assert verdict.status_code == 200 and verdict.json()["verdict"] == "correct", verdict.text
+    shown = client.post("/api/typeset", json={"text": text, "step": "kinetic", "scene": "simple-pendulum"})
+    assert shown.status_code == 200 and shown.json() == {"latex": latex}
+    # glued to the mass it reads two ways, and is said so
+    glued = check(client, {"step": "kinetic", "answer": text.replace("1/2 m", "1/2m")})
+    assert glued.status_code == 422 and glued.json()["readings"][1].startswith("1/(2 m")
+
+
+def test_a_quotient_before_a_function_is_its_coefficient(client):
+    right = check(client, {"step": "equation", "coordinate": "theta", "answer": "theta_ddot = -g/R sin(theta)"})
+    assert right.status_code == 200 and right.json()["verdict"] == "correct", right.text
+    spaced = check(client, {"step": "acceleration", "coordinate": "theta", "answer": "-g/R sin θ"})
+    assert spaced.status_code == 200 and spaced.json()["verdict"] == "correct", spaced.text
 
 
 def test_a_sign_diagnosis_quotes_only_a_term_the_student_typed(client):

@@ -71,7 +71,7 @@ def test_a_class_from_creation_to_deletion(client, classes):
     assert summary["students"] == 2 and summary["attempts"] == 3
     kinetic, potential = summary["steps"]
     assert kinetic == {"assignment": 1, "scene": SCENE, "step": "kinetic", "coordinate": None, "correct": 1, "incorrect": 2,
-                       "students_done": 1, "mistakes": {"missing_half": 2},
+                       "not_read": 0, "students_done": 1, "mistakes": {"missing_half": 2},
                        "mistake_names": {"missing_half": "the ½ of ½ m v² left out"},
                        "stuck": 1, "students_stuck": ["Bo"]}  # Ada got it right after her mistake
     assert potential["correct"] == potential["incorrect"] == 0
@@ -87,14 +87,14 @@ def test_a_class_from_creation_to_deletion(client, classes):
 
     export = client.get(f"/api/classes/{code}/export?format=csv", headers=bearer(teacher))
     assert export.headers["content-type"].startswith("text/csv") and export.headers["cache-control"] == "no-store"
-    table = list(csv.DictReader(io.StringIO(export.text)))
+    table = list(csv.DictReader(io.StringIO(export.content.decode("utf-8-sig"))))
     # the mistake in the tutor's words (as the student read them), the scene by its title, the assignment named
     words = summary["steps"][0]["mistake_names"]["missing_half"]
     assert words and "_" not in words
     assert [(r["student"], r["assignment"], r["item"], r["verdict"], r["mistake"], r["answer"]) for r in table] == [
-        ("Ada", "1. Assignment 1", "Simple pendulum", "incorrect", words, WRONG_T),
-        ("Ada", "1. Assignment 1", "Simple pendulum", "correct", "", RIGHT_T),
-        ("Bo", "1. Assignment 1", "Simple pendulum", "incorrect", words, WRONG_T)]
+        ("Ada", "1. Assignment 1", "Simple pendulum", "wrong", words, WRONG_T),
+        ("Ada", "1. Assignment 1", "Simple pendulum", "right", "", RIGHT_T),
+        ("Bo", "1. Assignment 1", "Simple pendulum", "wrong", words, WRONG_T)]
 
     assert client.delete(f"/api/classes/{code}", headers=bearer(teacher)).status_code == 204
     assert client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).status_code == 403
@@ -157,7 +157,8 @@ def test_refusals_say_what_is_wrong(client, classes):
     system = {"coordinates": ["x"], "parameters": ["m", "k"], "kinetic": "m*x_dot**2/2", "potential": "k*x**2/2"}
     r = client.put(f"/api/classes/{code}/assignment", headers=bearer(teacher), json={"items": [
         {"scene": SCENE, "steps": [{"step": "kinetic"}]},
-        {"system": system, "name": "spring", "steps": [{"step": "acceleration", "coordinate": "x"}]}]})
+        {"system": system, "name": "spring", "steps": [{"step": "acceleration", "coordinate": "x"}],
+         "setup": "x is the stretch of the spring from its natural length; U = 0 at x = 0."}]})
     assert r.status_code == 200, r.text
     ada = join(client, code, "Ada")
     assert client.post(f"/api/classes/{code}/join", json={"name": "Ada"}).status_code == 422  # the name is taken
@@ -166,7 +167,7 @@ def test_refusals_say_what_is_wrong(client, classes):
     # a code with a character no code holds: the refusal names that character, the rule in words
     r = client.post("/api/classes/K34EKZ/join", json={"name": "Bo"})
     assert r.status_code == 404 and r.json()["detail"].startswith("“K34EKZ” is not a class code: “Z” is never in")
-    assert "without the ones easily confused (no B, D" in r.json()["detail"]
+    assert r.json()["detail"].endswith("easily read as another. Check the code on the board.")  # one sentence
     assert check(client, code, ada, "m*g", scene="double-pendulum").status_code == 422  # not assigned
     assert check(client, code, ada, "m*g", step="potential").status_code == 422  # step not assigned
     r = client.post(f"/api/classes/{code}/check", headers=bearer(ada),
@@ -174,7 +175,8 @@ def test_refusals_say_what_is_wrong(client, classes):
     assert r.status_code == 200 and r.json()["verdict"] == "correct", r.text
     summary = client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).json()
     assert summary["steps"][1] | {"mistakes": None} == {"assignment": 1, "system": "spring", "step": "acceleration", "coordinate": "x",
-                                                        "correct": 1, "incorrect": 0, "students_done": 1,
+                                                        "correct": 1, "incorrect": 0, "not_read": 0,
+                                                        "students_done": 1,
                                                         "mistakes": None, "mistake_names": {},
                                                         "stuck": 0, "students_stuck": []}
 
@@ -240,3 +242,47 @@ def test_a_retried_check_returns_the_first_verdict_and_records_nothing_new(clien
     assert check(client, code, ada, RIGHT_T, attempt="short").status_code == 422  # 8 to 64 characters
     assert check(client, code, ada, RIGHT_T, attempt="no spaces here").status_code == 422
 
+
+
+def test_answers_that_could_not_be_read_are_counted_never_as_wrong(client, classes):
+    # issue 45: a student who typed 7 answers, 4 of them not read ("Not checked"), has 7 answers on the dashboard
+    code, teacher = new_class(client)
+    items = {"items": [{"scene": SCENE, "steps": [{"step": "kinetic"}]}]}
+    assert client.put(f"/api/classes/{code}/assignment", json=items, headers=bearer(teacher)).status_code == 200
+    ada, bo = join(client, code, "Ada"), join(client, code, "Bo")
+    unreadable = ["1/2m R^2 theta_dot^2", "m R^2 theta_dot^2/2)", "=m*g", "m*r**2"]
+    for n, typed in enumerate(unreadable):
+        refused = check(client, code, ada, typed, attempt=f"press-000{n}-ada")
+        practice = client.post(f"/api/scenes/{SCENE}/check", json={"step": "kinetic", "answer": typed})
+        assert refused.status_code == practice.status_code == 422 and refused.json() == practice.json(), typed
+    # the page sends a press again (no verdict came back): the same refusal, nothing recorded twice
+    again = check(client, code, ada, unreadable[0], attempt="press-0000-ada")
+    assert again.status_code == 422 and again.json() == check(client, code, ada, unreadable[0]).json()
+    assert check(client, code, ada, WRONG_T).json()["verdict"] == "incorrect"
+    assert check(client, code, ada, RIGHT_T).json()["verdict"] == "correct"
+    assert check(client, code, bo, "1/2m R^2 theta_dot^2").status_code == 422  # Bo: nothing judged yet
+
+    summary = client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).json()
+    (kinetic,) = summary["steps"]
+    # Ada's 4 not read + the press sent again without an id (a new press) + 2 judged; Bo's 1
+    assert summary["attempts"] == 8
+    assert (kinetic["correct"], kinetic["incorrect"], kinetic["not_read"]) == (1, 1, 6)
+    assert kinetic["mistakes"] == {"missing_half": 1} and kinetic["students_stuck"] == ["Bo"]
+    rows = client.get(f"/api/classes/{code}/students", headers=bearer(teacher)).json()["students"]
+    assert [(s["name"], s["attempts"], s["not_read"], s["done"]) for s in rows] == [("Ada", 7, 5, 1), ("Bo", 1, 1, 0)]
+    mine = client.get(f"/api/classes/{code}/me", headers=bearer(bo)).json()
+    assert mine["progress"]["attempts"] == 1 and mine["progress"]["not_read"] == 1
+
+    table = list(csv.DictReader(io.StringIO(client.get(f"/api/classes/{code}/export", headers=bearer(teacher)).text)))
+    assert [r["verdict"] for r in table] == ["not read"] * 5 + ["wrong", "right", "not read"]
+    assert [r["counted"] for r in table][5:7] == ["no: wrong", "yes"] and table[0]["counted"] == "no: not read"
+    first = table[0]
+    assert first["answer"] == unreadable[0] and first["mistake"].startswith("a factor after a quotient is ambiguous")
+    assert table[2]["answer"] == "'=m*g"  # not a checked expression: kept from a spreadsheet's formulas
+    assert "r is not a parameter here; did you mean R?" in table[3]["mistake"]
+
+    # the gradebook: Ada's first judged answer was wrong (not her first answer read), Bo has no score yet
+    grades = {s["name"]: s["grades"][0] for s in client.get(f"/api/classes/{code}/grades",
+                                                              headers=bearer(teacher)).json()["students"]}
+    assert (grades["Ada"]["first_try"], grades["Ada"]["right"], grades["Ada"]["score"]) == (0, 1, 100.0)
+    assert grades["Bo"]["score"] is None

@@ -18,6 +18,7 @@ from tests.web.test_api_classes import RIGHT_T, SCENE, WRONG_T, bearer, join
 
 RIGHT_U = "-m*g*R*cos(theta)"
 SPRING = {"coordinates": ["x"], "parameters": ["m", "k"], "kinetic": "m*x_dot**2/2", "potential": "k*x**2/2"}
+SETUP = "x is the stretch of the spring from its natural length; U = 0 at x = 0."
 LATER = (datetime.now(UTC) + timedelta(days=7)).replace(microsecond=0)
 DUE = LATER.isoformat().replace("+00:00", "Z")
 
@@ -57,7 +58,7 @@ def test_a_series_its_progress_and_its_grades(client, classes):
     assert r.headers["location"] == f"/api/classes/{code}/assignments/1"
     assert (r.json()["n"], r.json()["title"], r.json()["due"]) == (1, week1["title"], LATER.replace(tzinfo=None).isoformat() + "Z")
     week2 = {"title": "Week 2", "items": [
-        {"system": SPRING, "name": "spring", "steps": [{"step": "acceleration", "coordinate": "x"}]},
+        {"system": SPRING, "name": "spring", "steps": [{"step": "acceleration", "coordinate": "x"}], "setup": SETUP},
         {"scene": SCENE, "steps": [{"step": "kinetic"}]}]}  # the pendulum's T again: answered apart from week 1
     assert client.post(f"/api/classes/{code}/assignments", json=week2, headers=bearer(teacher)).json()["n"] == 2
     series = client.get(f"/api/classes/{code}/assignments", headers=bearer(teacher)).json()["assignments"]
@@ -109,7 +110,7 @@ def test_a_series_its_progress_and_its_grades(client, classes):
     sheet = client.get(f"/api/classes/{code}/grades?format=csv", headers=bearer(teacher))
     assert sheet.headers["content-type"].startswith("text/csv")
     assert 'filename="grades-' in sheet.headers["content-disposition"]
-    rows = list(csv.reader(io.StringIO(sheet.text)))
+    rows = list(csv.reader(io.StringIO(sheet.content.decode("utf-8-sig"))))
     one, two = f"1. {week1['title']}", "2. Week 2"
     # the file to import: one column per assignment and nothing else; blank where there is no score yet
     assert rows == [["Student", f"{one} (100 points)", f"{two} (100 points)"],
@@ -117,7 +118,7 @@ def test_a_series_its_progress_and_its_grades(client, classes):
     details = client.get(f"/api/classes/{code}/grades?format=details-csv", headers=bearer(teacher))
     assert 'filename="grades-' in details.headers["content-disposition"] and "-details.csv" in details.headers[
         "content-disposition"]
-    rows = list(csv.reader(io.StringIO(details.text)))
+    rows = list(csv.reader(io.StringIO(details.content.decode("utf-8-sig"))))
     assert rows[0] == ["Student", f"{one} (100 points)", f"{one}: right first try", f"{one}: right", f"{one}: shown",
                        f"{one}: steps", f"{two} (100 points)", f"{two}: right first try", f"{two}: right",
                        f"{two}: shown", f"{two}: steps"]
@@ -204,7 +205,7 @@ def test_a_formula_in_a_name_or_title_is_not_run_by_a_spreadsheet(client, classe
                 json={"title": "=HYPERLINK(\"x\")", "items": [{"scene": SCENE, "steps": [{"step": "kinetic"}]}]})
     join(client, code, "@SUM(A1)")
     rows = list(csv.reader(io.StringIO(client.get(f"/api/classes/{code}/grades?format=csv",
-                                                   headers=bearer(teacher)).text)))
+                                                   headers=bearer(teacher)).content.decode("utf-8-sig"))))
     assert rows[0][1] == '1. =HYPERLINK("x") (100 points)'  # not at the start of its cell: harmless
     assert rows[1][0] == "'@SUM(A1)"
 
@@ -217,7 +218,7 @@ def test_the_answers_csv_keeps_the_answer_as_typed(client, classes):
     ada = join(client, code, "-Ada")
     assert answer(client, code, ada, "potential", RIGHT_U) in ("correct", "equivalent")
     rows = list(csv.DictReader(io.StringIO(client.get(f"/api/classes/{code}/export?format=csv",
-                                                      headers=bearer(teacher)).text)))
+                                                      headers=bearer(teacher)).content.decode("utf-8-sig"))))
     # the answer begins with a minus and stays as typed; a name beginning like a formula gets the apostrophe
     assert [(r["student"], r["assignment"], r["item"], r["answer"]) for r in rows] == [
         ("'-Ada", "1. Week 1", "Simple pendulum", RIGHT_U)]

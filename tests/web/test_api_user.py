@@ -94,8 +94,32 @@ def test_user_documents_carry_hamiltons_equations_and_normal_modes(client):
 
 
 def test_parameters_given_by_name_default_to_one(client):
-    doc = derive(client, SPINNING_HOOP)
+    doc = derive(client, {**SPINNING_HOOP, "parameters": ["m", "R", "g", "w"]})
     assert doc["parameters"]["m"]["default"] == 1.0
+
+
+def test_the_hoop_example_is_dimensioned_and_off_its_bifurcation(client):
+    # prof-g 53: the shipped example had m, R, g, w all 1 with no units, exactly at R w² = g
+    doc = derive(client, SPINNING_HOOP)
+    units = {name: p["unit"] for name, p in doc["parameters"].items()}
+    assert units == {"m": "kg", "R": "m", "g": "m/s^2", "w": "rad/s"}
+    values = {name: p["default"] for name, p in doc["parameters"].items()}
+    assert values["R"] * values["w"] ** 2 > 1.5 * values["g"]
+
+
+def test_the_hoop_equilibria_say_where_they_exist_and_when_they_are_stable(client):
+    # prof-g 55: "θ = 2π − acos(g/(Rw²))" with no statement that it exists only when R w² > g, and no verdict
+    red = derive(client, SPINNING_HOOP)["effective_potential"]
+    by_position = {e["position"]["sympy"]: e for e in red["equilibria"]}
+    assert set(by_position) == {"0", "pi", "acos(g/(R*w**2))", "-acos(g/(R*w**2))"}
+    for tilted in ("acos(g/(R*w**2))", "-acos(g/(R*w**2))"):
+        e = by_position[tilted]
+        assert r"\arccos" in e["position"]["latex"] and "acos" not in e["position"]["latex"]
+        assert e["exists"]["latex"] == "R w^{2} > g" and e["stable"] is True
+    # the bottom: ω² = g/R − w², stable below the bifurcation only; the top never
+    bottom = by_position["0"]
+    assert bottom["stable"] is None and bottom["stable_when"]["latex"] == "g > R w^{2}" and bottom["exists"] is None
+    assert by_position["pi"]["stable"] is False
 
 
 @pytest.mark.usefixtures("fresh_mint_budget")

@@ -149,13 +149,13 @@ def test_parameter_ranges_read_as_a_reader_writes_them(client):
     html = client.get("/playground?" + urlencode({**query_of(form), "stage": "whole"}, doseq=True)).text
     hints = dict(re.findall(r'id="ctl-(\w+)-hint"[^>]*>allowed: ([^<]*)</p>', html))
     shown = {name: hints[name] for name in ("m", "g", "w")}
-    assert shown == {"m": "more than 0, up to 10 kg", "g": "more than 0, up to 100 m/s²", "w": "−100 to 100 1/s"}, hints
+    assert shown == {"m": "more than 0, up to 10 kg", "g": "more than 0, up to 100 m/s²", "w": "−100 to 100 s⁻¹"}, hints
     assert not any("e-0" in text or "^" in text for text in hints.values()), hints
 
 
 def test_a_charge_in_a_uniform_field_starts_moving_and_the_page_says_why(client):
     """V ≡ 0: every configuration is an equilibrium, so a start at rest would show nothing; the playground starts
-    x moving at 1 per second and says so under the initial conditions."""
+    x moving at 1 m/s and says so under the initial conditions, with the rate's unit (prof-f 35: "1 per second")."""
     spec = {
         "coordinates": ["x", "y"],
         "parameters": [
@@ -168,6 +168,28 @@ def test_a_charge_in_a_uniform_field_starts_moving_and_the_page_says_why(client)
     html = client.get("/playground?" + urlencode({**query_of(form_of(spec)), "stage": "whole"}, doseq=True)).text
     note = re.search(r'<p class="help" id="initial-note">([^<]*)</p>', html)
     assert note and "Every configuration is an equilibrium" in note[1]
-    assert unicodedata.normalize("NFC", note[1]).endswith("starts with \u1e8b(0) = 1 per second.")  # ẋ
+    assert unicodedata.normalize("NFC", note[1]).endswith("starts with \u1e8b(0) = 1 m/s.")  # ẋ
     start = re.search(r'<input type="number" id="ctl-x_dot" name="x_dot"[^>]*value="([^"]*)"', html)
     assert start and float(start[1]) == 1.0
+
+
+def test_a_name_of_several_letters_is_one_upright_name_with_the_dot_over_all_of_it(client):
+    # prof-g 56: a coordinate th was typeset as t·ḣ ("r² tḣ²", "cos th", "∂L/∂tḣ"); theta stays θ
+    response = client.post(
+        "/api/derive",
+        json={
+            "coordinates": ["r", "th"],
+            "parameters": [{"name": "m", "value": 1, "unit": "kg"}, {"name": "g", "value": 9.81, "unit": "m/s^2"}],
+            "kinetic": "m*(r_dot**2 + r**2*th_dot**2)/2",
+            "potential": "-m*g*r*cos(th)",
+        },
+    )
+    assert response.status_code == 200, response.text
+    doc = response.json()
+    assert doc["symbols"]["th"]["latex"] == r"\mathrm{th}" and doc["symbols"]["th_dot"]["latex"] == r"\dot{\mathrm{th}}"
+    # every printed formula: the rate's dot over the whole name, the name upright inside cos
+    printed = " ".join(s["latex"] for s in doc["steps"]) + doc["lagrangian"]["latex"]
+    assert r"\dot{\mathrm{th}}" in printed and r"\ddot{\mathrm{th}}" in printed and r"\mathrm{th}" in printed
+    assert r"\dot{h}" not in printed and r"\ddot{h}" not in printed and not re.search(r"(?<![{\\a-z])th(?![a-z}])", printed)
+    # in running text the dot follows the whole name (th˙), never sits on its last letter (tḣ)
+    assert doc["symbols"]["th_dot"]["unicode"] == "th˙" and "tḣ" not in response.text

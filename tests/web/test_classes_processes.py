@@ -90,7 +90,7 @@ def _check(client: httpx.Client, url: str, code: str, key: str, answer: str) -> 
 def _exported(url: str, code: str, teacher: str) -> list[dict[str, str]]:
     r = httpx.get(f"{url}/api/classes/{code}/export?format=csv", headers=bearer(teacher), timeout=30)
     assert r.status_code == 200, r.text
-    return list(csv.DictReader(io.StringIO(r.text)))
+    return list(csv.DictReader(io.StringIO(r.content.decode("utf-8-sig"))))
 
 
 def test_two_web_processes_sharing_postgresql_see_each_others_attempts(postgres_server):  # noqa: F811

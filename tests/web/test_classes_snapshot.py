@@ -32,7 +32,7 @@ SCENE = "double-pendulum"
 def _adds_up(summary: dict) -> list[str]:
     """What does not add up in one summary (nothing, for a consistent one)."""
     wrong = []
-    if sum(s["correct"] + s["incorrect"] for s in summary["steps"]) != summary["attempts"]:
+    if sum(s["correct"] + s["incorrect"] + s["not_read"] for s in summary["steps"]) != summary["attempts"]:
         wrong.append("the steps' answers do not total the attempts")
     for s in summary["steps"]:
         if s["students_done"] > s["correct"]:
@@ -62,7 +62,7 @@ def test_the_summary_adds_up_while_answers_arrive(client, services, tmp_path, re
                 for n in range(STUDENTS_EACH):
                     if stop.wait(PACE):
                         return
-                    _, who = store.join(room.db, code, f"writer {w} student {n}")
+                    _, who, _code = store.join(room.db, code, f"writer {w} student {n}")
                     new_step = f"q{w}_{n}"  # a step no one answered before
                     store.record(room.db, who, SCENE, "equation", new_step, "correct", None, "0")
                     store.record(room.db, who, SCENE, "kinetic", None, "incorrect", "missing_half", "T", "the ½ left out")

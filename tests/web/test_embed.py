@@ -24,10 +24,55 @@ def test_an_embed_page_holds_the_mechanism_and_its_controls_and_nothing_else(cli
     html = page.text
     assert PANEL.findall(html) == ["animation-2d"]
     assert 'canvas class="mechanism' in html and 'id="controls"' in html and 'id="scene-data"' in html
-    # no derivation, no site chrome, no integration settings; a link to the whole page
-    for absent in ('id="derivation"', 'class="site-header"', 'class="site-footer"', 'name="method"'):
+    # no derivation, no site chrome, no link to the view; a link to the whole page
+    for absent in (
+        'id="derivation"',
+        'class="site-header"',
+        'class="site-footer"',
+        'id="view-link"',
+        'id="embed-offer"',
+    ):
         assert absent not in html
     assert 'href="/scenes/simple-pendulum"' in html and "/static/js/embed.js" in html
+    # the run's duration and tolerance are there to change: why the run is as long as it is, and how to make it finer
+    assert 'name="t_end"' in html and 'name="rtol"' in html
+    assert '<form id="controls" class="controls" aria-label="Simulation settings" novalidate>' in html
+
+
+def test_the_compact_view_keeps_the_animation_and_one_panel_and_hides_the_form(client):
+    page = client.get("/embed/scenes/pulley?view=compact&panel=energy")
+    assert page.status_code == 200
+    html = page.text
+    assert PANEL.findall(html) == ["animation-2d", "energy"]
+    assert 'class="embed embed-compact embed-with-panel"' in html
+    # the form stays for the run's defaults, out of sight
+    assert '<form id="controls" class="controls" aria-label="Simulation settings" novalidate hidden>' in html
+
+
+def test_an_unknown_view_is_refused_with_the_views_there_are(client):
+    page = client.get("/embed/scenes/pulley?view=tiny")
+    assert page.status_code == 422
+    text = re.sub(r"\s+", " ", re.sub(r"<[^>]+>", "", page.text))
+    assert "“tiny” is not a view of the embedded page of three masses on pulleys" in text
+    assert (
+        "The view of an embedded page is one of: full, compact" in text
+        and "Leave out ?view= for the full view." in text
+    )
+
+
+def test_the_scene_page_offers_each_view_as_a_frame_with_its_height(client):
+    from app.web.embed_views import VIEWS
+
+    html = client.get("/scenes/pulley").text
+    offer = re.search(r'<details class="embed-offer" id="embed-offer">(.*?)</details>', html, re.S)
+    assert offer is not None
+    frames = re.findall(r'data-src="([^"]+)" data-height="(\d+)"', offer[1])
+    assert frames == [("/embed/scenes/pulley", str(VIEWS["full"]["height"])),
+                      ("/embed/scenes/pulley?view=compact", str(VIEWS["compact"]["height"]))]  # fmt: skip
+    assert "LAGRANGE_EMBED_ANCESTORS" in offer[1]
+    # each offered address is a page that answers
+    for src, _ in frames:
+        assert client.get(src.replace("&amp;", "&")).status_code == 200
 
 
 def test_one_panel_may_be_asked_for(client):
@@ -39,7 +84,7 @@ def test_an_unknown_panel_is_refused_with_the_panels_there_are(client):
     page = client.get("/embed/scenes/simple-pendulum?panel=derivation")
     assert page.status_code == 422
     text = re.sub(r"<[^>]+>", "", page.text)
-    assert "“derivation” is not a panel of simple pendulum" in text
+    assert "“derivation” is not a panel of the embedded page of simple pendulum" in text
     assert "energy, phase," in text and "Leave out ?panel=" in text
 
 

@@ -9,10 +9,6 @@ from pathlib import Path
 
 import pytest
 
-from app.main import app
-from app.web.api_classes import classroom as classroom_dep
-from tests.classes import classroom
-
 PROBLEM = "application/problem+json"
 SYSTEM = {
     "coordinates": ["x"],
@@ -28,15 +24,6 @@ def assert_problem(response, status: int) -> dict:
     body = response.json()
     assert body["status"] == status and body["type"] == "about:blank" and body["title"] and body["detail"]
     return body
-
-
-@pytest.fixture
-def classes(services, tmp_path):
-    room = classroom(services.checking, "sqlite", tmp_path, None)
-    app.dependency_overrides[classroom_dep] = lambda: room
-    yield room
-    app.dependency_overrides.pop(classroom_dep, None)
-    room.stop()
 
 
 def test_a_refused_expression_is_a_problem_with_its_location_and_readings(client):

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import html
+import itertools
 
 import pytest
 
@@ -27,7 +28,10 @@ def test_the_reason_h_is_conserved_is_given_once(client, scene_id):
     # prof-f 27: "h is conserved. (The reason is given with the conserved quantities above.)" on every page
     page = client.get(f"/scenes/{scene_id}").text
     assert "The reason is given" not in page
-    for reason in ("no non-conservative force acts, so dh/dt", "the generalized forces do no work (Σ Q q̇ = 0), so dh/dt"):
+    for reason in (
+        "no non-conservative force acts, so dh/dt",
+        "the generalized forces do no work (Σ Q q̇ = 0), so dh/dt",
+    ):
         assert page.count(reason) <= 1, (scene_id, reason)
 
 
@@ -41,3 +45,33 @@ def test_the_damped_results_say_h_is_not_conserved_once_and_use_one_letter(clien
     power = next(s for s in answer["steps"] if s["key"] == "power")
     assert power["latex"].startswith(r"\frac{dh}{dt}") and "dE/dt" not in power["explanation"]
     assert power["explanation"].startswith("h, which equals E here, falls")
+
+
+# prof-g 44, 51: the engine's generic captions, which a chapter scene replaces by reasons about its own system
+_GENERIC_CAPTIONS = (
+    "Each mass is placed in Cartesian coordinates as a function of the generalized coordinates",
+    "The dot product of each velocity with itself",
+    "T adds up one half of mass times squared speed",
+    "The potential energy depends on positions only",
+    "The Lagrangian is kinetic minus potential energy",
+    "The two partial derivatives the Euler–Lagrange equation needs",
+)
+# prof-g 45, 51: how the equilibria were found, said as computer algebra or as a program's search
+_SOLVER_TALK = ("polynomial in the coordinates", "solved exactly", "numerical search over a full period")
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_each_derivation_step_has_its_own_caption_about_this_system(client, scene_id):
+    steps = client.get(f"/api/scenes/{scene_id}/derivation").json()["steps"]
+    for before, after in itertools.pairwise(steps):
+        assert before["explanation"] != after["explanation"], (scene_id, before["key"], after["key"])
+    page = html.unescape(client.get(f"/scenes/{scene_id}").text)
+    for words in _GENERIC_CAPTIONS + _SOLVER_TALK:
+        assert words not in page, (scene_id, words)
+
+
+@pytest.mark.parametrize("scene_id", ["coupled-oscillators", "double-pendulum"])
+def test_the_equilibria_step_says_why_the_list_is_complete_in_physical_terms(client, scene_id):
+    steps = client.get(f"/api/scenes/{scene_id}/derivation").json()["steps"]
+    said = next(s["explanation"] for s in steps if s["key"] == "equilibria")
+    assert "These are all the equilibria: " in said, said

@@ -189,9 +189,21 @@ def test_one_coordinate_has_no_mode_shape_and_an_unstable_point_runs_away(client
 def test_the_damped_exponents_are_defined_with_a_unit_and_four_figures(client):
     shown = {t: x for t, _, x in steps_of(page(client, "damped-pendulum"))}
     bottom = shown["Small motions about θ = 0"]
-    assert r"\eta \propto e^{s t},\quad s &= -0.15 \pm 3.128\,i\,\mathrm{s}^{-1}" in bottom
+    # prof-g 60: the exponent is r (the roots of the auxiliary equation), never s beside the unit s⁻¹
+    assert r"\eta \propto e^{r t}:\quad r^2 + 2\beta r + \omega_0^2 &= 0" in bottom
+    assert r"r &= -0.15 \pm 3.128\,i\,\mathrm{s}^{-1}" in bottom and "e^{s t}" not in bottom
     assert "3.1285" not in bottom
-    assert r"s &= -3.286,\; 2.986\,\mathrm{s}^{-1}" in shown["No oscillation about θ = π"]
+    assert r"r &= -3.286,\; 2.986\,\mathrm{s}^{-1}" in shown["No oscillation about θ = π"]
+
+
+def test_the_damped_roots_are_a_formula_with_the_critical_damping_and_the_energy_decay(client):
+    # prof-g 61: r = −β ± √(β² − ω₀²) with β = b/(2mR²), ω₀² = g/R, b_c = 2mR²√(g/R), E ∝ e^{−2βt}
+    bottom = {t: x for t, _, x in steps_of(page(client, "damped-pendulum"))}["Small motions about θ = 0"]
+    assert r"\beta = \frac{b}{2 m R^{2}},\quad \omega_0^2 = \frac{g}{R}" in bottom
+    assert r"r = -\beta \pm \sqrt{\beta^2 - \omega_0^2}" in bottom
+    # the critical value, 2 · 1 kg · (1 m)² · √(9.81 s⁻²) = 6.264 kg·m²/s, the b slider's own mark
+    assert r"b_\text{c} = 2 m R^{2} \sqrt{\frac{g}{R}} \approx 6.264\,\mathrm{kg\,m^{2}\,s^{-1}}" in bottom
+    assert r"E \propto e^{-2\beta t},\quad 2\beta &= \frac{b}{m R^{2}}" in bottom
 
 
 def test_a_steady_motion_heading_has_four_figures_and_a_unit(client):
@@ -204,7 +216,7 @@ def test_a_steady_motion_heading_has_four_figures_and_a_unit(client):
 def test_the_coordinates_failing_at_a_pole_is_said_and_phi_is_not_listed_there(client):
     shown = {t: x for t, _, x in steps_of(page(client, "spherical-pendulum"))}
     eq = shown["Equilibria"]
-    assert r"\theta &= 0\quad (\text{the coordinates fail here: } \varphi \text{ has no value})" in eq
+    assert r"\theta &= 0 \\ &(\text{the coordinates fail: } \varphi \text{ has no value})" in eq
     assert r"\varphi = 0" not in eq and "singular" not in eq
     mass = {t: x for t, _, x in steps_of(page(client, "simple-pendulum"))}["Mass matrix and forcing"]
     assert r"\begin{matrix}" not in mass and r"\left[" not in mass
@@ -254,3 +266,18 @@ def test_the_potential_energys_sentence_is_true_of_a_driven_support_and_nothing_
     assert nothing_conserved(doc) == (
         "Nothing is conserved here: L depends explicitly on time (∂L/∂t ≠ 0), so h changes, and no momentum stays constant."
     )
+
+
+def test_words_a_professor_flagged_read_as_a_textbook_does(client):
+    # prof-g 43: a reciprocal unit is a negative power ("0.8155 m⁻¹", never "0.8155 1/m")
+    parabola = page(client, "rotating-parabola")
+    assert re.search(r"The slider marks [^<]*\d m⁻¹ \(", parabola) and not re.search(r"\d 1/m", parabola)
+    # prof-g 40, 41: ρ is signed; U_eff has one name (no V beside it)
+    assert "signed distance of the bead from the axis" in parabola and "V = −L" not in parabola
+    # prof-g 15: the winding adds inertia, not weight (no "diluted" or "shared" weight beside step 5)
+    helix = page(client, "helix-bead")
+    assert "diluted" not in helix and "shared between" not in helix and "inertia, not weight" in helix
+    # prof-g 34, 33: λ is itself the tension; 2 metres, not "2 m" on a page of masses
+    pulley = html.unescape(page(client, "pulley"))
+    assert "λ itself is the tension: the string's upward pull" in pulley and "λ times ∂𝒞" not in pulley
+    assert "the constant, 2 metres," in pulley and "constant 2 m " not in pulley

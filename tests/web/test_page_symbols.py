@@ -42,3 +42,37 @@ def test_each_force_of_constraint_has_a_letter_the_symbols_table_defines(client,
         # in the Results and in the constraint panel: F_k = …, displayed
         assert page.count(f'<div class="math math-display" data-tex="F_{{{k}}} = ') >= 2, force["name"]
     assert "size of a constraint&#39;s force" not in page and "F" not in meanings
+
+
+def units(page: str) -> dict[str, str]:
+    """Each row of the page's Symbols table: its TeX and its unit cell."""
+    table = page[page.index('<table class="symbols">') :]
+    table = table[: table.index("</table>")]
+    rows = re.findall(r'<tr><td>.*?data-tex="([^"]*)".*?</td><td>.*?</td><td>(.*?)</td></tr>', table, flags=re.S)
+    return dict(rows)
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_every_row_of_the_symbols_table_has_its_unit(client, scene_id):
+    # prof-g 4, 14, 18, 29: f, 𝓜, K, η, a, A, Q, 𝒞 and λ listed without a unit
+    cells = units(client.get(f"/scenes/{scene_id}").text)
+    assert cells and all(cells.values()), {tex: unit for tex, unit in cells.items() if not unit}
+
+
+def test_the_units_of_the_normal_mode_letters_follow_the_coordinates(client):
+    pendulum = units(client.get("/scenes/simple-pendulum").text)
+    assert pendulum["\\lambda_{1}"] == "N/m" and pendulum["\\mathcal{M}"] == "kg·m²" and pendulum["\\eta"] == "rad"
+    springs = units(client.get("/scenes/coupled-oscillators").text)
+    assert springs["K"] == "N/m" and springs["\\mathcal{M}"] == "kg" and springs["f"] == "N"
+    assert units(client.get("/scenes/damped-pendulum").text)["Q"] == "N·m"
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_each_letter_of_the_symbols_table_is_printed_elsewhere_on_the_page(client, scene_id):
+    page = client.get(f"/scenes/{scene_id}").text
+    table_at = page.index('<table class="symbols">')
+    rest = page[:table_at] + page[page.index("</table>", table_at) :]
+    letters = {r["latex"]: r["unicode"] for r in client.get(f"/api/scenes/{scene_id}/derivation").json()["notation"]}
+    for tex in units(page):
+        # the letter's TeX inside some formula of the page outside the table, or its Unicode form in its words
+        assert tex in rest or letters[tex.replace("&#39;", "'")] in rest, (scene_id, tex)

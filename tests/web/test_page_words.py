@@ -77,12 +77,21 @@ def test_the_normal_modes_write_eta_for_the_displacement_epsilon_being_the_actio
 
 
 def test_generic_sentences_name_only_what_the_system_has(client):
-    shown = steps(client, "coupled-oscillators")
+    # the engine's own sentences (what a typed system gets; these two scenes print their reasons instead)
+    from app.engine.contract import derivation_json
+    from app.service.derivations import derivation
+
+    def generic(scene: str) -> dict[str, dict]:
+        return {s["key"]: s for s in derivation_json(derivation(scene), beyond=False)["steps"]}
+
+    shown = generic("coupled-oscillators")
     assert "sin²" not in shown["squared-speeds"]["explanation"]
     assert "− Q" not in shown["euler-lagrange"]["explanation"]
-    assert " b" not in shown["legendre"]["explanation"] and "(p − b)" not in shown["hamiltonian-pq"]["explanation"]
+    served = steps(client, "coupled-oscillators")
+    assert " b" not in served["legendre"]["explanation"] and "(p − b)" not in served["hamiltonian-pq"]["explanation"]
     # the double pendulum's v² does use the identity
-    assert "sin² + cos² = 1" in steps(client, "double-pendulum")["squared-speeds"]["explanation"]
+    pendulum = generic("double-pendulum")
+    assert "sin² + cos² = 1" in pendulum["squared-speeds"]["explanation"]
 
 
 def test_the_symbols_table_lists_units_and_the_momenta(client):
@@ -191,7 +200,9 @@ def test_the_parameters_table_prints_ranges_as_the_sliders_do(client):
     import re
 
     page = client.get("/scenes/tabletop-spring").text
-    table = " ".join(re.sub(r"<[^>]+>", " ", re.search(r'<table class="parameters">.*?</table>', page, re.S)[0]).split())
+    table = " ".join(
+        re.sub(r"<[^>]+>", " ", re.search(r'<table class="parameters">.*?</table>', page, re.S)[0]).split()
+    )
     assert "0.01 to 1,000 N/m" in table and "e+" not in table
 
 
@@ -206,7 +217,9 @@ def test_initial_conditions_print_their_ranges_with_a_true_minus(client):
     assert "allowed: -3.142" not in page
 
 
-@pytest.mark.parametrize("scene", ["simple-pendulum", "helix-bead", "incline-block", "tabletop-spring", "damped-pendulum"])
+@pytest.mark.parametrize(
+    "scene", ["simple-pendulum", "helix-bead", "incline-block", "tabletop-spring", "damped-pendulum"]
+)
 def test_h_equals_e_is_not_given_as_the_reason_h_is_conserved(client, scene):
     # prof-e 4: "The positions do not depend on t, so h = E and both are conserved." mixes two conditions
     said = steps(client, scene)["h-vs-e"]["explanation"]
@@ -223,3 +236,20 @@ def test_m_eff_is_defined_as_what_the_results_print(client):
     page = client.get("/scenes/movable-incline").text
     assert "∂²L/∂Ḋ²" not in page
     assert "effective inertia of D: the mass D moves with once the conserved momenta are held fixed" in page
+
+
+@pytest.mark.parametrize("scene", ["simple-pendulum", "damped-pendulum", "coupled-oscillators", "spherical-pendulum"])
+def test_linearised_is_spelled_one_way(client, scene):
+    # prof-g 5: "Linearizing" in one step and "Linearised" in the next; the site spells it with an s
+    page = client.get(f"/scenes/{scene}").text
+    assert not re.search(r"lineari[zZ]", page, re.I), re.search(r".{40}lineariz.{20}", page, re.I)
+    if scene == "simple-pendulum":
+        assert "Linearising sin θ about each equilibrium" in page
+
+
+def test_a_one_coordinate_equilibrium_is_part_of_its_equation(client):
+    # prof-g 5: a lone row "θ = 0" stood above ω² = g/R, reading as an equation of its own
+    shown = steps(client, "simple-pendulum")
+    assert shown["normal-modes:1"]["latex"].startswith(r"\text{about } \theta=0:\quad \omega^2 = \frac{g}{R}")
+    for key in ("normal-modes:1", "normal-modes:2"):
+        assert not shown[key]["latex"].replace(r"\begin{aligned}", "").startswith(r"\theta")

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import re
 from urllib.parse import urlencode
 
@@ -126,3 +127,56 @@ def test_the_rest_is_asked_for_with_the_forms_own_address(client):
     assert "system=" not in href and "q=x" in href and "pv=4.75" in href
     whole = client.get(href.split("#")[0])
     assert whole.status_code == 200 and 'data-stage="whole"' in whole.text
+
+
+def _rows(equation: dict, coordinates: list[str]) -> tuple[list, object]:
+    """An equation as the API prints it (its scaled residual = 0), times the factor it says it was divided by:
+    its accelerations' coefficients and the rest, taken to the right (one row of M q̈ = f)."""
+    import sympy as sp
+
+    factor = sp.sympify(equation["divided_by"]["sympy"]) if equation["divided_by"] else sp.Integer(1)
+    residual = sp.expand(factor * sp.sympify(equation["sympy"]))
+    accelerations = [sp.Symbol(f"{q}_ddot") for q in coordinates]
+    coefficients = [residual.coeff(a) for a in accelerations]
+    rest = residual.subs({a: 0 for a in accelerations})
+    return coefficients, -rest
+
+
+def test_each_printed_equation_names_its_factor_and_times_it_gives_the_rows_of_m_and_f(client):
+    import sympy as sp
+
+    from app.web.examples_user import DOUBLE_PENDULUM
+
+    # the double pendulum with its own masses and lengths: its equations are divided by different factors
+    for spec, factors in (
+        (DOUBLE_PENDULUM, {"theta1": "l1", "theta2": "l2*m2"}),
+        (TRIPLE, dict.fromkeys("abc", "l*m")),
+    ):
+        answer = client.post("/api/derive", json=spec)
+        assert answer.status_code == 200, answer.text
+        doc = answer.json()
+        q = doc["coordinates"]
+        assert {e["coordinate"]: e["divided_by"]["sympy"] for e in doc["equations_of_motion"]} == factors
+        for k, equation in enumerate(doc["equations_of_motion"]):
+            coefficients, rest = _rows(equation, q)
+            row = [sp.sympify(x["sympy"]) for x in doc["mass_matrix"][k]]
+            assert all(sp.simplify(a - b) == 0 for a, b in zip(coefficients, row, strict=True)), (equation, row)
+            assert sp.simplify(rest - sp.sympify(doc["forcing"][k]["sympy"])) == 0
+
+
+def test_the_first_stage_says_how_the_equations_are_scaled_beside_the_mass_matrix(client):
+    # the chain in coordinates of its own: no other test derives it, so no cache holds its whole document and the
+    # page opens on its first stage (the triple's whole document is cached by the tests above)
+    own = json.loads(json.dumps(TRIPLE).replace('"a"', '"u"').replace("(a)", "(u)").replace("cos(b)", "cos(v)")
+                     .replace("sin(b)", "sin(v)").replace('"b"', '"v"').replace("cos(c)", "cos(w)")
+                     .replace("sin(c)", "sin(w)").replace('"c"', '"w"'))
+    assert own["coordinates"] == ["u", "v", "w"] and "a)" not in json.dumps(own)
+    html = client.get(_address(own)).text
+    words = re.sub(r"\s+", " ", re.sub(r"<[^>]+>", " ", html))
+    scaled = re.search(r'<p class="reason" id="equations-scaled">(.*?)</p>', html, re.S)
+    assert scaled is not None
+    for coordinate in ("u", "v", "w"):
+        assert f'the <span class="math" data-tex="{coordinate}">' in scaled[1]
+    assert scaled[1].count('data-tex="m l"') == 3  # each factor typeset from the API's LaTeX
+    assert "Each equation is shown divided by the factor common to its terms:" in words
+    assert "are those of the equations undivided: each row is that equation as shown above times the factor" in words

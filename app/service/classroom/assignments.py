@@ -3,7 +3,8 @@ checked before it is stored, and how a student's check finds its item in it.
 
 An item is ``{"scene": id}`` or ``{"system": <as POST /api/derive>, "name": label}``, with ``steps``
 (``[{"step", "coordinate"}]``; for a scene, none means every step of its practice) and ``parameters``
-(``{name: value}``, shown to the students).  Refusals are located under ``items.<i>``.  Runs in a thread:
+(``{name: value}``, shown to the students), and for a system its ``setup`` (required: app/service/classroom/setup.py).
+Refusals are located under ``items.<i>``.  Runs in a thread:
 a scene's exercises come from its cached derivation.
 
 A class holds a series of assignments, each with its items; ``find_target`` says which assignment and item of
@@ -14,16 +15,19 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from datetime import UTC, datetime
 from typing import Any
 
-from app.engine.check import PER_COORDINATE, STEPS
+from app.engine.check import KEYED, PER_COMPONENT, PER_COORDINATE, STEPS
 from app.errors import Refused, UnknownScene
 from app.service.checking import Checking, declared
+from app.service.classroom.setup import checked_setup
 from app.service.user_checks import InvalidSystem
 
 MAX_ITEMS = 20
 MAX_STEPS = 40
+_COMPONENT = re.compile(r"[xyz][1-9]?[0-9]?")
 
 
 def _refuse(message: str, *loc: Any) -> Refused:
@@ -31,7 +35,7 @@ def _refuse(message: str, *loc: Any) -> Refused:
 
 
 def _same(a: dict[str, Any], step: str, coordinate: str | None) -> bool:
-    return a["step"] == step and (step not in PER_COORDINATE or a.get("coordinate") == coordinate)
+    return a["step"] == step and (step not in KEYED or a.get("coordinate") == coordinate)
 
 
 def _shown(steps: list[dict[str, Any]]) -> str:
@@ -56,6 +60,7 @@ def _scene_item(checking: Checking, i: int, item: dict[str, Any]) -> dict[str, A
     for name in item.get("parameters") or {}:
         if name not in names:
             raise _refuse(f"{name!r} is not a name of the scene {scene}", i, "parameters", name)
+    checked_setup(i, item)  # a scene has none: its page sets it up
     return {"item": scene, "system": None, "steps": steps, "parameters": item.get("parameters") or {}}
 
 
@@ -74,12 +79,16 @@ def _system_item(i: int, item: dict[str, Any]) -> dict[str, Any]:
             raise _refuse(
                 f"the step {s['step']} needs one of the coordinates: {', '.join(user.coordinates)}", i, "steps", j
             )
+        # a position names its Cartesian component (x, y, z, or x1, z2 … by body); the check says if it moves
+        if s["step"] in PER_COMPONENT and not _COMPONENT.fullmatch(str(s.get("coordinate") or "")):
+            raise _refuse(f"the step {s['step']} needs a component: x, y or z, numbered by body (x1, z2)", i, "steps", j)
     for name in item.get("parameters") or {}:
         if name not in user.parameter_names:
             raise _refuse(f"{name!r} is not a parameter of this system", i, "parameters", name)
-    clean = [{"step": s["step"], "coordinate": s.get("coordinate") if s["step"] in PER_COORDINATE else None}
+    clean = [{"step": s["step"], "coordinate": s.get("coordinate") if s["step"] in KEYED else None}
              for s in steps]
-    return {"item": item["name"], "system": item["system"], "steps": clean, "parameters": item.get("parameters") or {}}
+    return {"item": item["name"], "system": item["system"], "steps": clean, "parameters": item.get("parameters") or {},
+            "setup": checked_setup(i, item)}
 
 
 def checked_items(checking: Checking, items: list[dict[str, Any]]) -> list[dict[str, Any]]:

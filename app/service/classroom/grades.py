@@ -6,12 +6,14 @@ For each assigned step a student has
 * **first try**: their first answer to it was right;
 * **shown**: they pressed "Show this step" on /join, which shows the step's answer (a hint used).
 
-The score of an assignment is the share of its steps the student got right on their own, that is right and not
-shown before their first right answer, in points out of 100 (one decimal).  The parts are given beside it, as
+The score of an assignment is the share of its steps the student got right on their own by its due time, that is
+right, not shown before their first right answer, and that answer not after the due time (a late answer is recorded
+and marked late in the answers' file, never counted), in points out of 100 (one decimal).  The parts are given beside it, as
 counts out of the assignment's steps, so a teacher can weigh them otherwise.  A student who has neither answered
 nor been shown a step of an assignment that is not yet due (or has no due time) has no score (blank, not 0):
 a grade imported before the due time posts no zero; once it is due, no answer scores 0.
 
+Both CSV files start with a UTF-8 byte-order mark, so a spreadsheet opened by a double click reads θ̈ and ₁.
 Two CSV files: the one to import into an LMS's gradebook (one row per student, one column per assignment: its
 score, nothing else), and the detailed one (per assignment its score and its parts).
 
@@ -31,8 +33,8 @@ from sqlalchemy import case, func, literal, null, select, union_all
 
 from app.service.classroom.database import Database
 from app.service.classroom.models import AttemptRow, HintRow, StudentRow
-from app.service.classroom.reports import FORMULA_START, assigned_keys
-from app.service.classroom.store import DONE
+from app.service.classroom.reports import BOM, FORMULA_START, assigned_keys, due_utc, is_late
+from app.service.classroom.store import DONE, NOT_READ
 
 POINTS = 100  # an assignment's score is out of this many points
 PARTS = (("first_try", "right first try"), ("right", "right"), ("shown", "shown"), ("steps", "steps"))
@@ -47,7 +49,8 @@ def _rows(db: Database, class_id: int) -> list[Any]:
                AttemptRow.step, func.coalesce(AttemptRow.coordinate, ""), literal("answer"),
                func.min(AttemptRow.id), func.min(case((right, AttemptRow.id))), func.min(case((right, AttemptRow.at))))
         .select_from(StudentRow)
-        .outerjoin(AttemptRow, AttemptRow.student_id == StudentRow.id)
+        # an answer not read was never judged: neither a try nor a wrong answer in the gradebook
+        .outerjoin(AttemptRow, (AttemptRow.student_id == StudentRow.id) & (AttemptRow.verdict != NOT_READ))
         .where(StudentRow.class_id == class_id)
         .group_by(StudentRow.id, StudentRow.name, StudentRow.joined_at, AttemptRow.assignment_id, AttemptRow.item,
                   AttemptRow.step, AttemptRow.coordinate)
@@ -90,24 +93,19 @@ def gradebook(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict
                 count["tried"] += first_id is not None or seen is not None
                 count["right"] += right_id is not None
                 count["shown"] += seen is not None
-                # on their own: right, and the step not shown before the first right answer
-                own = right_id is not None and (seen is None or seen > right_at)
+                # on their own: right by the due time, and the step not shown before the first right answer
+                own = right_id is not None and (seen is None or seen > right_at) and not is_late(right_at, each["due"])
                 count["own"] += own
                 count["first_try"] += own and first_id == right_id
             score: float | None = round(POINTS * count["own"] / head["steps"], 1) if head["steps"] else 0.0
             # nothing tried before it is due (or when it has no due time): no score yet, not a zero
-            if not count["tried"] and (each["due"] is None or _naive(each["due"]) > now):
+            due = due_utc(each["due"])
+            if not count["tried"] and (due is None or due > now):
                 score = None
             grades.append({"assignment": head["n"], "steps": head["steps"], "first_try": count["first_try"],
                            "right": count["right"], "shown": count["shown"], "score": score})
         rows.append({"name": name, "grades": grades})
     return {"points": POINTS, "assignments": heads, "students": rows}
-
-
-def _naive(when: Any) -> datetime:
-    """A due time as a naive UTC datetime (stored naive; ISO text read back from a snapshot)."""
-    found = datetime.fromisoformat(when.rstrip("Z")) if isinstance(when, str) else when
-    return found.astimezone(UTC).replace(tzinfo=None) if found.tzinfo else found
 
 
 def _cell(value: Any) -> str:
@@ -118,6 +116,7 @@ def _cell(value: Any) -> str:
 
 def _sheet(header: list[str], rows: list[list[Any]]) -> bytes:
     out = io.StringIO()
+    out.write(BOM)
     writer = csv.writer(out, lineterminator="\r\n")
     writer.writerow([_cell(h) for h in header])
     writer.writerows([_cell(value) for value in row] for row in rows)

@@ -13,6 +13,10 @@ characters of the same alphabet in groups of four (18^24 ≈ 1.3 × 10^30, about
 class is created.  The instructor's key of a class with a recovery code is derived from it (an HMAC of the
 class code under the recovery code), so the code gives back the very key the first browser holds, while the
 database keeps only the SHA-256 of each.
+
+A student's recovery code is the same kind of code, ``STUDENT_RECOVERY_LENGTH`` characters in three groups (about
+50 bits: short enough to copy from a phone, and a join's rate limits bound guessing it), shown once at joining;
+with the pseudonym it gives the student's record a new key on another device.  The database keeps its SHA-256.
 """
 
 from __future__ import annotations
@@ -30,6 +34,7 @@ MAX_KEY_LENGTH = 100
 NO_CLASS_HASH = hashlib.sha256(b"no class has this code").hexdigest()
 RECOVERY_LENGTH = 24
 RECOVERY_GROUP = 4
+STUDENT_RECOVERY_LENGTH = 12  # a student's code: three groups of four, 18^12 ≈ 1.2 × 10^15
 
 
 def new_code() -> str:
@@ -48,21 +53,16 @@ def normal_code(text: str) -> str | None:
 LEFT_OUT = ", ".join(c for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789" if c not in ALPHABET)
 
 
-def code_rule() -> str:
-    """What a class code is, in words (the join page and the short link's refusals say it)."""
-    return (f"a class code has {CODE_LENGTH} letters and digits, without the ones easily confused "
-            f"(no {LEFT_OUT})")
-
-
 def why_not_code(text: str) -> str:
     """Why a text typed as a class code is not one: its length, or the first character a code never holds."""
     code = "".join(text.split()).replace("-", "").upper()
+    # one reason, in a student's words: the list of the characters a code leaves out helps nobody at the board
     if len(code) != CODE_LENGTH:
-        return f"it has {len(code)} character{'' if len(code) == 1 else 's'}, and {code_rule()}"
+        return f"it has {len(code)} character{'' if len(code) == 1 else 's'}, and a class code has {CODE_LENGTH} letters and digits"
     bad = next((c for c in code if c not in ALPHABET), None)
     if bad is None:
-        return f"no class has this code: {code_rule()}"
-    return f"“{bad}” is never in a class code: {code_rule()}"
+        return "no class has this code"
+    return f"“{bad}” is never in a class code, which leaves out the characters easily read as another"
 
 
 def new_key() -> str:
@@ -75,29 +75,30 @@ def digest(key: str) -> str:
 
 
 
-def new_recovery_code() -> str:
-    """A recovery code as shown: six groups of four characters joined by dashes."""
-    raw = "".join(secrets.choice(ALPHABET) for _ in range(RECOVERY_LENGTH))
-    return "-".join(raw[i : i + RECOVERY_GROUP] for i in range(0, RECOVERY_LENGTH, RECOVERY_GROUP))
+def new_recovery_code(length: int = RECOVERY_LENGTH) -> str:
+    """A recovery code as shown: groups of four characters joined by dashes (an instructor's six groups, a
+    student's three)."""
+    raw = "".join(secrets.choice(ALPHABET) for _ in range(length))
+    return "-".join(raw[i : i + RECOVERY_GROUP] for i in range(0, length, RECOVERY_GROUP))
 
 
-def normal_recovery(text: str) -> str | None:
+def normal_recovery(text: str, length: int = RECOVERY_LENGTH) -> str | None:
     """The recovery code without its dashes and spaces, upper case; None when it cannot be one."""
     code = "".join(text.split()).replace("-", "").upper()
-    if len(code) != RECOVERY_LENGTH or any(c not in ALPHABET for c in code):
+    if len(code) != length or any(c not in ALPHABET for c in code):
         return None
     return code
 
 
-def why_not_recovery(text: str) -> str:
+def why_not_recovery(text: str, length: int = RECOVERY_LENGTH) -> str:
     """Why a text is not a recovery code: its length (a teacher link cut short), or a character no code holds."""
     code = "".join(text.split()).replace("-", "").upper()
-    rule = (f"a recovery code has {RECOVERY_LENGTH} letters and digits in groups of {RECOVERY_GROUP}, "
+    rule = (f"a recovery code has {length} letters and digits in groups of {RECOVERY_GROUP}, "
             f"without the ones easily confused (no {LEFT_OUT})")
-    if len(code) < RECOVERY_LENGTH:
-        return (f"this recovery code is incomplete: it has {len(code)} of its {RECOVERY_LENGTH} letters and digits "
-                f"(a teacher link cut short, as some mail programs do, misses part of it); {rule}")
-    if len(code) > RECOVERY_LENGTH:
+    if len(code) < length:
+        cut = " (a teacher link cut short, as some mail programs do, misses part of it)" if length == RECOVERY_LENGTH else ""
+        return f"this recovery code is incomplete: it has {len(code)} of its {length} letters and digits{cut}; {rule}"
+    if len(code) > length:
         return f"this recovery code has {len(code)} letters and digits, and {rule}"
     bad = next((c for c in code if c not in ALPHABET), "?")
     return f"“{bad}” is never in a recovery code: {rule}"

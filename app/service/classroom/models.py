@@ -56,6 +56,8 @@ class StudentRow(Base):
     name: Mapped[str] = mapped_column(String(40))
     key_hash: Mapped[str] = mapped_column(String(64), unique=True)
     joined_at: Mapped[datetime] = mapped_column(DateTime)
+    # the SHA-256 of the student's recovery code (migration 0007; None: joined before, or no code given yet)
+    recovery_hash: Mapped[str | None] = mapped_column(String(64), nullable=True)
 
 
 class AssignmentRow(Base):
@@ -72,6 +74,8 @@ class AssignmentRow(Base):
     system: Mapped[str | None] = mapped_column(Text, nullable=True)  # the declared system (JSON), for a system
     steps: Mapped[str] = mapped_column(Text)  # JSON: [{"step", "coordinate"}]
     parameters: Mapped[str] = mapped_column(Text)  # JSON: {name: value}
+    # a typed system's set-up in the instructor's words (its coordinates, from where, the zero of U); migration 0006
+    setup: Mapped[str | None] = mapped_column(Text, nullable=True)
 
 
 class AttemptRow(Base):

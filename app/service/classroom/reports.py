@@ -12,19 +12,42 @@ from __future__ import annotations
 
 import csv
 import io
+import json
 from collections import defaultdict
+from datetime import UTC, datetime
 from typing import Any
 
 from sqlalchemy import func, select
 
+from app.engine.check_problem import step_title
+from app.engine.mistake_teacher import for_teacher
 from app.scenes import SCENES
 from app.service.classroom.database import Database
-from app.service.classroom.models import AttemptRow, StudentRow
-from app.service.classroom.store import DONE
+from app.service.classroom.models import AttemptRow, HintRow, StudentRow
+from app.service.classroom.store import DONE, NOT_READ
 
 Key = tuple[int | None, str, str, str | None]  # (assignment's id, item, step, coordinate)
-CSV_COLUMNS = ("time", "student", "assignment", "item", "step", "coordinate", "verdict", "mistake", "answer")
+CSV_COLUMNS = ("time (UTC)", "student", "assignment", "item", "step", "verdict", "after shown", "late", "counted",
+               "mistake", "answer")
 FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
+# a verdict in a teacher's words: "equivalent" is right (the grade counts it), in another form than the book's
+VERDICT_WORDS = {"correct": "right", "equivalent": "right, in an equivalent form", "incorrect": "wrong"}
+TIME_FORMAT = "%Y-%m-%d %H:%M:%S"  # to the second, in UTC (the column says so)
+BOM = "\ufeff"  # a spreadsheet opened by a double click reads the file as UTF-8 (θ̈, ≈, ₁) only with it
+
+
+def due_utc(when: Any) -> datetime | None:
+    """A due time as a naive UTC datetime (stored naive; ISO text read back from a snapshot); None when undated."""
+    if when is None:
+        return None
+    found = datetime.fromisoformat(when.rstrip("Z")) if isinstance(when, str) else when
+    return found.astimezone(UTC).replace(tzinfo=None) if found.tzinfo else found
+
+
+def is_late(at: datetime, due: Any) -> bool:
+    """An answer is late when it came after its assignment's due time (an undated assignment is never late)."""
+    limit = due_utc(due)
+    return limit is not None and at > limit
 
 
 def assigned_keys(series: list[dict[str, Any]]) -> list[Key]:
@@ -44,7 +67,7 @@ def _step_entry(key: Key, series: list[dict[str, Any]]) -> dict[str, Any]:
     kind = "system" if item in systems else "scene"
     number = next((a["n"] for a in series if a["id"] == assignment_id), None)
     return {"assignment": number, kind: item, "step": step, "coordinate": coordinate, "correct": 0, "incorrect": 0,
-            "students_done": 0, "mistakes": {}, "mistake_names": {}}
+            "not_read": 0, "students_done": 0, "mistakes": {}, "mistake_names": {}}
 
 
 def _tallies(db: Database, class_id: int) -> list[Any]:
@@ -107,7 +130,8 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
             continue
         key = (assignment_id, item, step, coordinate)
         entry = steps.setdefault(key, _step_entry(key, series))
-        entry["correct" if verdict in DONE else "incorrect"] += n
+        # an answer not read is one of the step's answers, neither right nor wrong
+        entry["correct" if verdict in DONE else "not_read" if verdict == NOT_READ else "incorrect"] += n
         attempts += n
         tried[key].add(student_id)
         if verdict in DONE:
@@ -115,8 +139,8 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
         if mistake:
             entry["mistakes"][mistake] = entry["mistakes"].get(mistake, 0) + n
             by_mistake[key][mistake].add(student_id)
-            if text:  # the mistake in words (one system's mistakes are worded alike)
-                entry["mistake_names"][mistake] = text
+            if text:  # the mistake in words (one system's mistakes are worded alike), spoken about the student
+                entry["mistake_names"][mistake] = for_teacher(text)
     totals: dict[str, dict[str, Any]] = {}
     for key, entry in steps.items():
         stuck = tried[key] - finished[key]
@@ -154,8 +178,9 @@ def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[
             continue
         tally = per[student_id].setdefault((assignment_id, item, step, coordinate), {
             "assignment": number.get(assignment_id), "item": item, "step": step, "coordinate": coordinate,
-            "attempts": 0, "done": False, "last": last, "_key": (assignment_id, item, step, coordinate)})
+            "attempts": 0, "not_read": 0, "done": False, "last": last, "_key": (assignment_id, item, step, coordinate)})
         tally["attempts"] += n
+        tally["not_read"] += n if verdict == NOT_READ else 0
         tally["done"] = tally["done"] or verdict in DONE
         tally["last"] = max(tally["last"], last)
     assigned = set(assigned_keys(series))
@@ -168,6 +193,7 @@ def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[
             "name": name,
             "joined": joined.isoformat() + "Z",
             "attempts": sum(s["attempts"] for s in steps),
+            "not_read": sum(s["not_read"] for s in steps),
             "done": len(finished & assigned) if assigned else len(finished),
             "assigned": len(assigned),
             "steps": steps,
@@ -181,26 +207,61 @@ def _cell(value: Any) -> str:
     return "'" + text if text.startswith(FORMULA_START) else text
 
 
+def _counted(verdict: str, shown: bool, late: bool) -> str:
+    """Whether the answer counts toward the grade (``grades``' rule: right, on one's own, by the due time)."""
+    if verdict not in DONE:
+        return "no: wrong"
+    if shown:
+        return "no: typed after the step was shown"
+    return "no: after the due time" if late else "yes"
+
+
 def export_csv(db: Database, class_id: int, series: list[dict[str, Any]]) -> bytes:
-    """Every attempt of the class, oldest first, as CSV (UTF-8): its assignment ("1. Week 1"), the scene by its
-    title or the typed system by its name, the mistake in the tutor's words, and the answer exactly as typed (a
-    recorded answer is a checked expression: names, numbers, operators and the allowed functions, nothing a
-    spreadsheet could run).  The other text cells get an apostrophe before a formula's first character."""
+    """Every attempt of the class, oldest first, as CSV (UTF-8 with a byte-order mark): its time to the second in
+    UTC, its assignment ("1. Week 1"), the scene by its title or the typed system by its name, the step in words
+    ("energy function h"), the verdict in words ("not read" for an answer the checker could not read), whether it
+    was typed after "Show this step" on that step, whether it came after the due time, whether it counts toward the
+    grade (and if not, why), the mistake in the third person (for an answer not read, why: the refusal's words) and
+    the answer exactly as typed (a judged answer is a checked expression: names, numbers, operators and the allowed
+    functions, nothing a spreadsheet could run).  Every other cell, an answer not read included, gets an apostrophe
+    before a formula's first character."""
     titles = {a["id"]: f"{a['n']}. {a['title']}" for a in series}
+    dues = {a["id"]: a["due"] for a in series}
     with db.session() as session:
         rows = session.execute(
-            select(AttemptRow.at, StudentRow.name, AttemptRow.assignment_id, AttemptRow.item, AttemptRow.step,
-                   AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake, AttemptRow.mistake_name,
-                   AttemptRow.answer)
+            select(AttemptRow.at, StudentRow.id, StudentRow.name, AttemptRow.assignment_id, AttemptRow.item,
+                   AttemptRow.step, AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake,
+                   AttemptRow.mistake_name, AttemptRow.answer, AttemptRow.response)
             .join(StudentRow, StudentRow.id == AttemptRow.student_id)
             .where(AttemptRow.class_id == class_id)
             .order_by(AttemptRow.id)
         ).all()
+        hints = session.execute(
+            select(HintRow.student_id, HintRow.assignment_id, HintRow.item, HintRow.step, HintRow.coordinate,
+                   HintRow.at).where(HintRow.class_id == class_id)
+        ).all()
+    shown_at: dict[tuple[int, int | None, str, str, str], datetime] = {
+        (student, assignment, item, step, coordinate or ""): at
+                for student, assignment, item, step, coordinate, at in hints}
     out = io.StringIO()
+    out.write(BOM)
     writer = csv.writer(out, lineterminator="\r\n")
     writer.writerow(CSV_COLUMNS)
-    for at, name, assignment, item, step, coordinate, verdict, mistake, words, answer in rows:
+    for at, student, name, assignment, item, step, coordinate, verdict, mistake, words, answer, response in rows:
         where = SCENES[item].title if item in SCENES else item
-        cells = [name, titles.get(assignment, ""), where, step, coordinate, verdict, words or mistake]
-        writer.writerow([at.isoformat() + "Z", *(_cell(v) for v in cells), answer])
+        unread = verdict == NOT_READ
+        seen = shown_at.get((student, assignment, item, step, coordinate or ""))
+        shown = seen is not None and seen <= at
+        late = is_late(at, dues.get(assignment))
+        why = refusal_words(response) if unread else for_teacher(words) if words else mistake
+        counted = "no: not read" if unread else _counted(verdict, shown, late)
+        cells = [name, titles.get(assignment, ""), where, step_title(step, coordinate),
+                 VERDICT_WORDS.get(verdict, verdict), "yes" if shown else "no", "yes" if late else "no", counted, why]
+        writer.writerow([at.strftime(TIME_FORMAT), *(_cell(v) for v in cells), _cell(answer) if unread else answer])
     return out.getvalue().encode("utf-8")
+
+
+def refusal_words(response: str | None) -> str:
+    """Why an answer was not read: the refusal's words as the student was told them (without the field's name)."""
+    detail = str(json.loads(response).get("detail", "")) if response else ""
+    return detail.removeprefix("answer: ")

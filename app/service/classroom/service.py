@@ -17,7 +17,7 @@ from typing import Any, TypeVar
 
 import orjson
 
-from app.engine.check import PER_COORDINATE
+from app.engine.check import KEYED
 from app.engine.mistakes import RULES
 from app.errors import NoKey, Refused, WrongKey
 from app.service.checking import Checking, declared
@@ -25,8 +25,10 @@ from app.service.classroom import grades, keys, reports, store
 from app.service.classroom.assignments import checked_due, checked_items, find_target
 from app.service.classroom.database import Database
 from app.service.classroom.rates import Window
+from app.service.classroom.setup import givens
 from app.service.classroom.shared_rates import SharedWindow, Store
 from app.service.fairness import CLASS, shared
+from app.service.user_checks import InvalidSystem
 from app.settings import Settings
 
 T = TypeVar("T")
@@ -55,13 +57,34 @@ def mistake_text(result: dict[str, Any]) -> str | None:
 
 
 def _same_attempt(first: store.Recorded, this: tuple[str, str, str | None, str], attempt_id: str) -> bytes:
-    """The first verdict of an attempt sent again; refused when the id comes back with another answer."""
+    """The first verdict of an attempt sent again (or the first refusal, of an answer not read); refused when the
+    id comes back with another answer."""
     if (first.item, first.step, first.coordinate, first.answer) != this:
         raise Refused(
             "attempt: this attempt id was already used for another answer; send a new id with a new answer",
             attempt_id, ("attempt",),
         )
+    if first.verdict == store.NOT_READ:
+        raise unread_refusal(first.response)
     return first.response
+
+
+def _unread(exc: Refused) -> bool:
+    """Whether a refusal of a check is of the answer itself (the checker could not read it: "Not checked")."""
+    return exc.loc == ("answer",)
+
+
+def refusal_record(exc: Refused) -> bytes:
+    """A refusal of an answer as recorded beside the attempt: its words, where, and its readings."""
+    return orjson.dumps({"detail": str(exc), "loc": list(exc.loc or ()), "part": exc.part, "start": exc.start,
+                         "end": exc.end, "readings": list(getattr(exc, "readings", ()))})
+
+
+def unread_refusal(recorded: bytes) -> InvalidSystem:
+    """The refusal an attempt not read was answered, again (a retry of the same press gets the same words)."""
+    found = orjson.loads(recorded)
+    return InvalidSystem(found["detail"], tuple(found["loc"]), found["part"], found["start"], found["end"],
+                         tuple(found["readings"]))
 
 
 class Classroom:
@@ -187,10 +210,24 @@ class Classroom:
 
     async def join(self, code: str, name: str, client: str, address: str) -> dict[str, Any]:
         await self._count_join(code, client, address)
-        student_key, who = await self._db(store.join, code, name)
+        student_key, who, recovery = await self._db(store.join, code, name)
+        return await self._joined(student_key, who, name) | {"recovery_code": recovery}
+
+    async def rejoin(self, code: str, name: str, recovery: str, client: str, address: str) -> dict[str, Any]:
+        """A student's record on another device, from their pseudonym and recovery code; tries count as joins."""
+        await self._count_join(code, client, address)
+        student_key, who = await self._db(store.rejoin, code, name, recovery)
+        return await self._joined(student_key, who, name)
+
+    async def _joined(self, student_key: str, who: store.Access, name: str) -> dict[str, Any]:
         found = await self._db(store.series, who.class_id)
         return {"student_key": student_key, "code": who.code, "title": who.title, "name": name,
                 "assignment": found[0]["items"] if found else [], "assignments": public(found)}
+
+    async def new_student_code(self, code: str, key: str | None, name: str) -> dict[str, str]:
+        """A new recovery code for a student, for their teacher to hand over (the old code stops working)."""
+        who = await self._db(self._who, code, key, True)
+        return {"name": name, "recovery_code": await self._db(store.new_student_code, who.class_id, name)}
 
     async def view(self, code: str, key: str | None) -> dict[str, Any]:
         """The class as its key sees it: title and assignment, and for a student their own progress."""
@@ -226,7 +263,7 @@ class Classroom:
         who, found = await self._db(self._with_series, code, key, False)
         assigned, item = find_target(found, target, step, coordinate)
         name = item["name"] if item.get("system") is not None else item["scene"]
-        recorded = coordinate if step in PER_COORDINATE else None
+        recorded = coordinate if step in KEYED else None
         this = (name, step, recorded, answer.strip())
         if attempt_id is not None and (first := await self._db(store.recorded, who, attempt_id)) is not None:
             return _same_attempt(first, this, attempt_id)
@@ -234,10 +271,25 @@ class Classroom:
         await self.class_checks.take(who.code)
         # the student is the unit of fairness, their class's budget of check slots the bound (not their network's)
         client, address = f"class-student:{who.class_id}:{who.student}", f"{CLASS}{who.class_id}"
-        if item.get("system") is not None:
-            body = await self.checking.check_system(declared(item["system"]), step, coordinate, answer, client, address)
-        else:
-            body = await self.checking.check_scene(name, step, coordinate, answer, client, address)
+        try:
+            if item.get("system") is not None:
+                body = await self.checking.check_system(
+                    declared(item["system"]), step, coordinate, answer, client, address
+                )
+            else:
+                body = await self.checking.check_scene(name, step, coordinate, answer, client, address)
+        except Refused as exc:
+            if not _unread(exc):
+                raise
+            # an answer that could not be read is one of the student's answers: recorded with its refusal (on disk
+            # before the refusal goes back), never judged
+            raced = await self._db(
+                store.record, who, name, step, recorded, store.NOT_READ, None, answer.strip(), None, attempt_id,
+                refusal_record(exc), assigned["id"] if assigned else None,
+            )
+            if raced is not None:
+                return _same_attempt(raced, this, attempt_id or "")
+            raise
         result = orjson.loads(body)
         raced = await self._db(
             store.record, who, name, step, recorded, result["verdict"], named_mistake(result), answer.strip(),
@@ -256,7 +308,7 @@ class Classroom:
             raise Refused("nothing is assigned in this class: a shown step is recorded for an assigned step", step,
                           ("step",))
         name = item["name"] if item.get("system") is not None else item["scene"]
-        recorded = coordinate if step in PER_COORDINATE else None
+        recorded = coordinate if step in KEYED else None
         await self._db(store.record_hint, who, assigned["id"], name, step, recorded)
         return {"assignment": assigned["n"], "step": step, "coordinate": recorded}
 
@@ -266,5 +318,10 @@ class Classroom:
 
 
 def public(found: list[dict[str, Any]]) -> list[dict[str, Any]]:
-    """The series as the API shows it (without the database's ids)."""
-    return [{k: v for k, v in a.items() if k != "id"} for a in found]
+    """The series as the API shows it (without the database's ids); a typed system's item with ``given``, its
+    defining data typeset for the students (app/service/classroom/setup.py)."""
+    return [{k: v for k, v in a.items() if k != "id"} | {"items": [_shown(i) for i in a["items"]]} for a in found]
+
+
+def _shown(item: dict[str, Any]) -> dict[str, Any]:
+    return item if item.get("system") is None else item | {"given": givens(item)}

@@ -31,6 +31,9 @@ from app.service.classroom.models import (
 )
 
 DONE = ("correct", "equivalent")  # the verdicts that finish a step
+# an answer the checker could not read ("Not checked" on the page): recorded with its refusal, never judged, so
+# counted among a student's answers and never as a wrong one (nor in the gradebook)
+NOT_READ = "not read"
 MAX_ASSIGNMENTS = 40  # the assignments a class's series may hold
 FIRST_TITLE = "Assignment 1"  # the title of a first assignment set without one (PUT /assignment)
 
@@ -108,35 +111,75 @@ def access(db: Database, code: str, key: str) -> Access:
     raise WrongKey("this key does not open this class (check the class code and the key)")
 
 
-def join(db: Database, code: str, name: str) -> tuple[str, Access]:
-    """A new student of the class: their key, and the class."""
+def join(db: Database, code: str, name: str) -> tuple[str, Access, str]:
+    """A new student of the class: their key, the class, and their recovery code (the only time it is seen)."""
     normal = keys.normal_code(code)
     if normal is None:
         raise UnknownClass(
-            f"“{code.strip()[:20]}” is not a class code: {keys.why_not_code(code)}; check the code on the board"
+            f"“{code.strip()[:20]}” is not a class code: {keys.why_not_code(code)}. Check the code on the board."
         )
     student_key = keys.new_key()
+    recovery = keys.new_recovery_code(keys.STUDENT_RECOVERY_LENGTH)
     try:
-        return student_key, _add_student(db, normal, name, student_key)
+        return student_key, _add_student(db, normal, name, student_key, recovery), recovery
     except IntegrityError:  # the same name joined at the same moment
         raise _taken(name) from None
 
 
 def _taken(name: str) -> Refused:
-    return Refused(f"the name {name!r} is taken in this class; choose another", name, ("name",))
+    return Refused(
+        f"the name {name!r} is taken in this class: if it is yours, choose “I joined before on another device” "
+        "and type your recovery code (or ask your teacher for a new one); else choose another name",
+        name, ("name",),
+    )
 
 
-def _add_student(db: Database, normal: str, name: str, student_key: str) -> Access:
+def rejoin(db: Database, code: str, name: str, recovery: str) -> tuple[str, Access]:
+    """A student's record opened on another device: a new key for it (the old device's key no longer opens it),
+    from the pseudonym and the student's recovery code; WrongKey for anything else, after the same work."""
+    normal = keys.normal_code(code) or ""
+    typed = keys.normal_recovery(recovery, keys.STUDENT_RECOVERY_LENGTH)
+    if typed is None:  # its shape is public: saying what is wrong with it tells nothing of the class
+        raise WrongKey(keys.why_not_recovery(recovery, keys.STUDENT_RECOVERY_LENGTH))
+    student_key = keys.new_key()
+    with db.session() as session:
+        found = session.execute(
+            select(ClassRow.id, ClassRow.code, ClassRow.title, StudentRow)
+            .join(StudentRow, StudentRow.class_id == ClassRow.id)
+            .where(ClassRow.code == normal, StudentRow.name == name)
+        ).first()
+        stored = found.StudentRow.recovery_hash if found and found.StudentRow.recovery_hash else keys.NO_CLASS_HASH
+        if found is None or not hmac.compare_digest(stored, keys.digest(typed)):
+            raise WrongKey("this pseudonym and recovery code do not open a record of this class (check the class "
+                           "code, your pseudonym as you typed it when you joined, and the code; or ask your teacher "
+                           "for a new code)")
+        found.StudentRow.key_hash = keys.digest(student_key)
+        return student_key, Access(found.id, found.code, found.title, found.StudentRow.id, name)
+
+
+def new_student_code(db: Database, class_id: int, name: str) -> str:
+    """A new recovery code for a student of the class (their teacher gives it: the old one stops working)."""
+    recovery = keys.new_recovery_code(keys.STUDENT_RECOVERY_LENGTH)
+    with db.session() as session:
+        student = session.scalar(select(StudentRow).where(StudentRow.class_id == class_id, StudentRow.name == name))
+        if student is None:
+            raise Refused(f"no student of this class has the pseudonym {name!r}", name, ("name",))
+        student.recovery_hash = keys.digest(keys.normal_recovery(recovery, keys.STUDENT_RECOVERY_LENGTH) or "")
+    return recovery
+
+
+def _add_student(db: Database, normal: str, name: str, student_key: str, recovery: str) -> Access:
     with db.session() as session:
         found = session.execute(select(ClassRow.id, ClassRow.title).where(ClassRow.code == normal)).first()
         if found is None:
-            raise UnknownClass(f"no class has the code {normal}; check the code on the board")
+            raise UnknownClass(f"No class has the code {normal}. Check the code on the board.")
         taken = session.scalar(
             select(func.count()).select_from(StudentRow).where(StudentRow.class_id == found.id, StudentRow.name == name)
         )
         if taken:
             raise _taken(name)
-        student = StudentRow(class_id=found.id, name=name, key_hash=keys.digest(student_key), joined_at=now())
+        student = StudentRow(class_id=found.id, name=name, key_hash=keys.digest(student_key), joined_at=now(),
+                             recovery_hash=keys.digest(keys.normal_recovery(recovery, keys.STUDENT_RECOVERY_LENGTH) or ""))
         session.add(student)
         session.flush()
         return Access(found.id, normal, found.title, student.id, name)
@@ -152,6 +195,7 @@ def _item_rows(class_id: int, assignment_id: int, items: list[dict[str, Any]]) -
             system=None if item.get("system") is None else json.dumps(item["system"]),
             steps=json.dumps(item["steps"]),
             parameters=json.dumps(item.get("parameters") or {}),
+            setup=item.get("setup"),
         )
         for position, item in enumerate(items)
     ]
@@ -161,6 +205,8 @@ def _item_entry(row: AssignmentRow) -> dict[str, Any]:
     entry: dict[str, Any] = (
         {"scene": row.item} if row.system is None else {"name": row.item, "system": json.loads(row.system)}
     )
+    if row.system is not None:  # a typed system's set-up (None: assigned before set-ups were asked for)
+        entry["setup"] = row.setup
     return entry | {"steps": json.loads(row.steps), "parameters": json.loads(row.parameters)}
 
 
@@ -284,18 +330,20 @@ class Recorded:
     coordinate: str | None
     answer: str
     response: bytes
+    verdict: str = ""  # NOT_READ: ``response`` is the refusal (its words and where), not a verdict
 
 
 def recorded(db: Database, who: Access, attempt_id: str) -> Recorded | None:
     """The student's attempt with this id, if one is recorded (a retried Check), else None."""
     with db.session() as session:
         row = session.execute(
-            select(AttemptRow.item, AttemptRow.step, AttemptRow.coordinate, AttemptRow.answer, AttemptRow.response)
+            select(AttemptRow.item, AttemptRow.step, AttemptRow.coordinate, AttemptRow.answer, AttemptRow.response,
+                   AttemptRow.verdict)
             .where(AttemptRow.student_id == who.student, AttemptRow.attempt_id == attempt_id)
         ).first()
     if row is None or row.response is None:
         return None
-    return Recorded(row.item, row.step, row.coordinate, row.answer, row.response.encode())
+    return Recorded(row.item, row.step, row.coordinate, row.answer, row.response.encode(), row.verdict)
 
 
 def record(

@@ -18,7 +18,7 @@ from app.settings import Settings
 from tests.postgres import postgres_server  # noqa: F401 - the session fixture
 
 TABLES = {"classes", "students", "assignments", "attempts", "class_assignments", "hints", "alembic_version"}
-HEAD = "0005"  # the newest revision
+HEAD = "0007"  # the newest revision
 
 
 @pytest.fixture(params=["sqlite", "postgresql"])
@@ -109,7 +109,7 @@ def test_classes_older_than_the_retention_are_deleted(url, tmp_path):
     db = Database(Settings(data_dir=tmp_path, database_url=url, class_days=30))
     old, *_ = store.create_class(db, "last year")
     new, *_ = store.create_class(db, "this week")
-    _, who = store.join(db, old, "Ada")
+    _, who, _code = store.join(db, old, "Ada")
     store.record(db, who, "simple-pendulum", "kinetic", None, "correct", None, "T")
     with db.session() as session:
         session.execute(ClassRow.__table__.update().where(ClassRow.code == old).values(created_at=now() - timedelta(days=31)))
@@ -153,7 +153,7 @@ def test_a_press_recorded_twice_at_once_keeps_the_first(tmp_path):
     insert meets the unique id, records nothing and gets the first verdict back."""
     db = Database(Settings(data_dir=tmp_path))
     code, *_ = store.create_class(db, "race")
-    _, who = store.join(db, code, "Ada")
+    _, who, _code = store.join(db, code, "Ada")
     first = store.record(db, who, "simple-pendulum", "kinetic", None, "incorrect", "missing_half", "T", None,
                          "press-0001", b'{"verdict":"incorrect"}')
     second = store.record(db, who, "simple-pendulum", "kinetic", None, "incorrect", "missing_half", "T", None,

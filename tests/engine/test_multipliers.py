@@ -1,0 +1,78 @@
+"""The multipliers derived from the Cartesian Lagrangian with the constraints agree with the engine's."""
+
+import random
+
+import pytest
+import sympy as sp
+
+from app.engine.derive import derive
+from app.engine.multipliers import derived_multipliers
+from app.scenes import SCENES
+from app.service.derivations import derivation_document
+
+CONSTRAINED = sorted(sid for sid, s in SCENES.items() if s.system.constraints)
+DERIVATION = ["constraints", "multiplier-lagrangian", "multiplier-equation", "multiplier", "constraint-forces"]
+
+
+def test_the_constrained_scenes_are_the_chapters_seven_and_the_damped_pendulum():
+    assert CONSTRAINED == sorted(
+        ["simple-pendulum", "damped-pendulum", "helix-bead", "incline-block", "spherical-pendulum", "pulley",
+         "movable-incline", "rotating-parabola"]
+    )  # fmt: skip
+
+
+@pytest.mark.parametrize("scene_id", CONSTRAINED)
+def test_the_derived_multipliers_equal_the_engines(scene_id):
+    d = derive(SCENES[scene_id].system)
+    forces = d.constraint_forces
+    derived = derived_multipliers(d, forces)
+    assert len(derived.solved) == len(forces)
+    symbols = sorted(set().union(*(f.multiplier.free_symbols for f in forces), *(e.free_symbols for e in derived.solved)), key=str)
+    rng = random.Random(40)
+    for _ in range(3):
+        point = {s: sp.Float(rng.uniform(0.4, 1.3)) for s in symbols}
+        for mine, engine in zip(derived.solved, forces, strict=True):
+            a, b = float(mine.xreplace(point)), float(engine.multiplier.xreplace(point))
+            assert a == pytest.approx(b, rel=1e-9, abs=1e-12), scene_id
+
+
+@pytest.mark.parametrize("scene_id", CONSTRAINED)
+def test_the_page_derives_the_multiplier_before_the_force(scene_id):
+    steps = derivation_document(scene_id)["steps"]
+    keys = [s["key"] for s in steps]
+    start = keys.index("constraints")
+    assert keys[start : start + len(DERIVATION)] == DERIVATION
+    # the rows without the alignment marks
+    shown = {s["key"]: s["latex"].replace("&", "") for s in steps}
+    assert shown["multiplier-lagrangian"].removeprefix(r"\begin{aligned}").startswith("L' = ")
+    assert r"\lambda_{1} \left(" in shown["multiplier-lagrangian"] or r"\lambda_{1} z" in shown["multiplier-lagrangian"]
+    assert r"\ddot{\mathcal{C}}_{1}" in shown["multiplier-equation"]
+    assert shown["multiplier"].removeprefix(r"\begin{aligned}").startswith(r"\lambda_{1} = ")
+    # the force step no longer states λ: it was solved for in the step before
+    assert r"\lambda_{1} =" not in shown["constraint-forces"]
+
+
+def test_the_pendulum_multiplier_is_derived_from_newtons_law_on_the_circle():
+    shown = {s["key"]: s["latex"] for s in derivation_document("simple-pendulum")["steps"]}
+    assert shown["constraints"] == r"\mathcal{C}_{1} = R^{2} - x^{2} - \left(z - R\right)^{2} = 0"
+    assert r"m \ddot{x} &= - 2 \lambda_{1} x" in shown["multiplier-lagrangian"]
+    assert shown["multiplier"] == r"\lambda_{1} = \frac{m}{2 R} \left(R \dot{\theta}^{2} + g \cos {\theta}\right)"
+
+
+def test_the_pulley_says_lambda_is_the_tension():
+    shown = {s["key"]: s for s in derivation_document("pulley")["steps"]}
+    assert "λ itself is the tension" in shown["constraint-forces"]["explanation"]
+    assert "λ times ∂𝒞/∂z₁" not in shown["constraint-forces"]["explanation"]
+    assert r"\left(\frac{4}{M} + \frac{1}{m_{1}} + \frac{1}{m_{2}}\right) \lambda_{1} &= 4 g" in shown["multiplier-equation"]["latex"]
+
+
+@pytest.mark.parametrize(("scene_id", "units"), [
+    ("simple-pendulum", {"𝒞₁": "m²", "λ₁": "N/m", "L′": "J"}),
+    ("pulley", {"𝒞₁": "m", "λ₁": "N"}),
+    ("helix-bead", {"𝒞₁": "m²", "λ₁": "N/m", "𝒞₂": "m", "λ₂": "N"}),
+])  # fmt: skip
+def test_the_symbols_table_gives_each_multiplier_its_unit(scene_id, units):
+    rows = {r["unicode"]: r for r in derivation_document(scene_id)["notation"]}
+    assert {name: rows[name]["unit"] for name in units} == units
+    # the generic letters say how their unit follows, never an empty cell
+    assert rows["λ"]["unit"] and rows["𝒞"]["unit"]

@@ -1,0 +1,50 @@
+"""Every scene's statement fixes the zero of U, and the direction of height where gravity acts (issue 41,
+item 2), so that a student's U is judged against a convention the page has said: the engine's U is zero
+where the statement says it is."""
+
+from __future__ import annotations
+
+import pytest
+import sympy as sp
+
+from app.engine.derive import derive
+from app.scenes import SCENES
+
+# the configuration at which each statement puts U = 0 (its coordinates; a parameter by name)
+ZEROS = {
+    "simple-pendulum": {"theta": 0},
+    "damped-pendulum": {"theta": 0},
+    "helix-bead": {"z": 0},
+    "incline-block": {"X": 0},
+    "tabletop-spring": {"r": 0, "theta": 0},
+    "spherical-pendulum": {"theta": sp.pi / 2, "phi": 0},  # at the pivot's height
+    "rail-two-body": {"x1": 0, "x2": "l0"},
+    "pulley": {"y1": 0, "y2": 0},
+    "movable-incline": {"X": 0, "D": 0},
+    "rotating-parabola": {"rho": 0},
+    "coupled-oscillators": {"x1": 0, "x2": 0},
+    "double-pendulum": {"theta1": sp.pi / 2, "theta2": sp.pi / 2},
+}
+
+
+def test_every_scene_has_its_zero_of_u_listed():
+    assert set(ZEROS) == set(SCENES)
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_the_statement_names_the_zero_of_u_and_the_engines_u_is_zero_there(scene_id):
+    scene = SCENES[scene_id]
+    statement = scene.statement
+    assert "U = 0" in statement, statement
+    if any(p.name == "g" for p in scene.system.parameters):
+        # gravity: the sign of m g × height needs the direction of height said
+        assert "measured upward" in statement, statement
+    d = derive(scene.system)
+    names = d.table.namespace()
+    at = {names[k]: (names[v] if isinstance(v, str) else v) for k, v in ZEROS[scene_id].items()}
+    assert sp.simplify(d.mechanics.U.subs(at)) == 0, (scene_id, d.mechanics.U)
+
+
+def test_the_wedges_statement_says_where_the_blocks_height_is_measured():
+    statement = SCENES["movable-incline"].statement
+    assert "height z = −D sin α" in statement and "U = 0 with the block at that corner (D = 0)" in statement
