@@ -36,6 +36,7 @@ from app.engine.mistake_families import (
     short_form,
     slug,
     spoken,
+    sum_words,
     term_key,
 )
 from app.engine.mistake_other import linear
@@ -438,19 +439,6 @@ def _sums(truth: sp.Expr, base: str, springs: bool, coordinates: Iterable[sp.Sym
             )  # fmt: skip
 
 
-def sum_words(a: sp.Expr, coordinates: Iterable[sp.Symbol]) -> str:
-    """A sum as a textbook orders it: the coordinates' terms, those added before those taken away, then the
-    constants (x₂ − x₁ − l₀, never x₂ − l₀ − x₁); a sum that is no stretch as the printer has it."""
-    q = set(coordinates)
-    if not isinstance(a, sp.Add) or not q:
-        return spoken(a)
-    terms = sorted(a.args, key=lambda t: (not (t.free_symbols & q), t.could_extract_minus_sign(), sp.default_sort_key(t)))
-    text = spoken(terms[0])
-    for t in terms[1:]:
-        text += f" − {spoken(-t)}" if t.could_extract_minus_sign() else f" + {spoken(t)}"
-    return text
-
-
 def _whole(d: Derivation, step: str, truth: sp.Expr, base: str) -> Iterator[Mistake]:
     if len([f for f in truth.atoms(sp.sin, sp.cos)]) >= 1 and len(_terms(truth)) != 1:
         yield Mistake(
@@ -550,7 +538,7 @@ def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp
 # ---- mistakes that travel --------------------------------------------------------------------------
 
 
-def _euler_lagrange(d: Derivation, k: int, L: sp.Expr) -> sp.Expr:
+def euler_lagrange(d: Derivation, k: int, L: sp.Expr) -> sp.Expr:
     """d/dt ∂L/∂q̇_k − ∂L/∂q_k for a change of L (linear in L, so the change of the equation)."""
     t = d.table
     p = sp.diff(L, t.qd[k])
@@ -587,14 +575,14 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
     for key, name, dT, dU in changes[: 2 * MAX_TRAVEL]:
         if step == "equation" and k is not None:
             # L = T − U changes by ΔT − ΔU, and the equation by its Euler–Lagrange expression
-            wrong = truth + _euler_lagrange(d, k, dT - dU)
+            wrong = truth + euler_lagrange(d, k, dT - dU)
             family = "rigid" if key.startswith("rigid") else "travelled"
             yield Mistake(f"equation.{key}", family, name, None,
                           "your equation is what such a step gives: if your earlier step has that slip, fix it there "
                           "and derive again", wrong)  # fmt: skip
         elif step == "acceleration":
             # one coordinate: E' = a q̈ + f, so q̈ = −f/a
-            E = d.equations.residuals[0] + _euler_lagrange(d, 0, dT - dU)
+            E = d.equations.residuals[0] + euler_lagrange(d, 0, dT - dU)
             a = sp.diff(E, d.table.qdd[0])
             if a != 0:
                 family = "rigid" if key.startswith("rigid") else "travelled"

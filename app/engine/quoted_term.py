@@ -17,11 +17,12 @@ from collections.abc import Iterable
 
 import sympy as sp
 
-from app.engine.mistake_families import Mistake, short_form, spoken
+from app.engine.mistake_families import Mistake, spoken
 from app.engine.mistake_pieces import sum_words, swap_sin_cos
 
 # the families whose name quotes one of the answer's terms by its sign
 _SIGN_FAMILIES = frozenset({"term_sign"})
+MAX_TERMS = 12  # of an answer, tried for the constant it is a mistake times
 
 
 def as_typed(
@@ -33,12 +34,15 @@ def as_typed(
     if step != "equation" or mistake.piece is None:
         return mistake, hint
     terms = {sp.expand(t) for t in sp.Add.make_args(sp.expand(answer))}
+    # the student's scale: the one the comparison used, else the constant the answer is the mistake times (a slip
+    # in the acceleration's own term makes the coefficients' ratio no constant: the spherical pendulum's φ̈ cos² θ)
+    scales = (scale, *_factor(answer, mistake.expr, terms))
     if mistake.family == "sin_cos" and mistake.name.startswith("sin and cos swapped in your term"):
         # the answer holds scale × (the piece with sin and cos exchanged), of either sign: quoted as typed
-        swapped = sp.expand(scale * swap_sin_cos(mistake.piece))
-        mine = next((t for t in (swapped, -swapped) if t in terms), None)
+        swaps = [sp.expand(c * swap_sin_cos(mistake.piece)) for c in scales]
+        mine = next((t for s in swaps for t in (s, -s) if t in terms), None)
         name = (
-            f"sin and cos swapped in your term {spoken(short_form(mine))}"
+            f"sin and cos swapped in your term {spoken(mine)}"
             if mine is not None
             else "sin and cos swapped in one of your terms"
         )
@@ -46,13 +50,26 @@ def as_typed(
     if mistake.family not in _SIGN_FAMILIES:
         return mistake, hint
     # the answer is scale × (truth − 2 p): the student's term is −scale·p
-    mine = sp.expand(-scale * mistake.piece)
-    if mine in terms or -mine in terms:
+    mine = next((t for c in scales for t in (sp.expand(-c * mistake.piece),) if t in terms or -t in terms), None)
+    if mine is not None:
         unsigned = -mine if mine.could_extract_minus_sign() else mine
-        name = f"the sign of your {spoken(short_form(unsigned))} term"
+        name = f"the sign of your {spoken(unsigned)} term"
     else:
         name = "the sign of one of your terms"
     return dataclasses.replace(mistake, name=name), _renamed(hint, mistake.name, name)
+
+
+def _factor(answer: sp.Expr, wrong: sp.Expr | None, terms: set[sp.Expr]) -> tuple[sp.Expr, ...]:
+    """The constant c with answer = c × wrong, found from one term of each (at most one check for each of the
+    answer's first MAX_TERMS terms: bounded by work, never by time), or nothing."""
+    if wrong is None:
+        return ()
+    theirs = sp.Add.make_args(sp.expand(wrong))
+    for t in sorted(terms, key=sp.default_sort_key)[:MAX_TERMS]:
+        c = sp.cancel(t / theirs[0])
+        if c.is_number and c != 0 and sp.expand(answer - c * wrong) == 0:
+            return (c,)
+    return ()
 
 
 def _inner_as_typed(
@@ -73,7 +90,6 @@ def _inner_as_typed(
                 name = sum_words(typed, coordinates) + rest
                 return dataclasses.replace(mistake, name=name), _renamed(hint, mistake.name, name)
     return mistake, hint
-
 
 
 def _renamed(hint: str, old: str, new: str) -> str:

@@ -110,7 +110,7 @@ def test_the_rule_for_omega_squared_uses_no_coordinate_of_its_own_and_no_program
 
 def test_a_spring_loses_its_half_and_a_mass_in_an_acceleration_is_named():
     half = judge(step_problem("rail-two-body", "potential", None), "k*(x2 - x1 - l0)**2")
-    assert half["mistake"]["name"] == "the ½ of ½ k × stretch² left out"
+    assert half["mistake"]["name"] == "the ½ of ½ k × stretch² left out of your term k (x₂ − x₁ − l₀)²"
     mass = judge(step_problem("rail-two-body", "acceleration", "x2"), "-k*(x2 - x1 - l0)/m1")
     assert mass["mistake"]["name"] == "the wrong mass: m₁ where m₂ belongs"
 
