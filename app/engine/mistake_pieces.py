@@ -644,10 +644,11 @@ def effective_terms(d: Derivation, asked: list) -> Iterator[Mistake]:
             what = "the centrifugal term" if centrifugal else f"the term with {', '.join(params)}"
             yield Mistake(
                 f"omega_squared.effective_left_out.{term_key(u)}", "left_out", f"{what} of U_eff left out", u,
-                "ω² = U_eff″(r₀)/m_eff takes every term of the effective potential, the motion's (centrifugal) "
-                "ones as well as U's", w - part,
+                "ω² is the effective potential's second derivative at the equilibrium over the effective mass: it "
+                "takes every term of the effective potential, the motion's (centrifugal) ones as well as U's", w - part,
             )  # fmt: skip
             yield Mistake(
                 f"omega_squared.effective_sign.{term_key(u)}", "term_sign", f"the sign of {what} of U_eff", u,
-                "the centrifugal term of U_eff pushes outward: its sign is fixed by −T₀ (or + p²/(2 m r²))", w - 2 * part,
+                "the centrifugal term of the effective potential pushes outward: it is minus the part of T free of "
+                "the velocities, and falls away from the axis", w - 2 * part,
             )  # fmt: skip

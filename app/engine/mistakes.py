@@ -247,7 +247,8 @@ RULES: tuple[Rule, ...] = (
         "missing_cross_term",
         ("kinetic", "lagrangian"),
         "A cross term is missing: when a position depends on several coordinates (or on t), squaring its velocity "
-        "gives mixed products such as 2 Ẋ ṡ cos α. Forgetting the chain rule through one of them drops those terms.",
+        "gives mixed products, twice the product of two of its parts. Forgetting the chain rule through one of them "
+        "drops those terms.",
         _no_cross,
         "the cross terms of T left out",
     ),
