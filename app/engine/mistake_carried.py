@@ -61,7 +61,7 @@ def lagrangian_changes(d: Derivation) -> tuple[tuple[str, str, sp.Expr, int], ..
     slip of T, one of U, both, and sin and cos swapped throughout; once per derivation."""
     cached = d._members.get(_CACHE_KEY)
     if cached is not None:
-        return cached  # type: ignore[no-any-return]
+        return cached
     T, U = d.mechanics.T, d.mechanics.U
     out: list[tuple[str, str, sp.Expr, int]] = []
     if T is not None and U is not None and (T.has(sp.sin, sp.cos) or U.has(sp.sin, sp.cos)):
