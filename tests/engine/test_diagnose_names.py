@@ -15,7 +15,10 @@ from tests.engine.test_check import derivation
 
 # one letter standing alone as a symbol (Greek or Latin, with its dot and subscript digits): not part of a word,
 # not the s of an apostrophe's "'s"
-SYMBOL = re.compile(r"(?<![\w'’\u0307\u0308])([A-Za-zα-ωΑ-Ω])[\u0307\u0308]?([₀-₉]*)(?![\w\u0307\u0308₀-₉])")
+# (a square's ² may follow: it is no letter)
+SYMBOL = re.compile(
+    r"(?<![A-Za-zα-ωΑ-Ω0-9_'’\u0307\u0308])([A-Za-zα-ωΑ-Ω])[\u0307\u0308]?([₀-₉]*)(?![A-Za-zα-ωΑ-Ω0-9_\u0307\u0308₀-₉])"
+)
 # the letters of the rules every system shares, which name no quantity of the page: T, U, L and h; p, q, Q and
 # the generalized velocity; ½ m v², m g × height, ½ k × stretch², ½ I ω²; d/dt, Σ; the figure's axes x, y, z;
 # the r of a position vector (∂r/∂q); the article a and A
@@ -27,7 +30,8 @@ def _letters(text: str) -> set[str]:
 
 
 def test_the_letter_reader_sees_symbols_and_not_words():
-    assert _letters("a pendulum's l sin θ across, R φ̇² cos(θ) and m₁ where M₁ belongs") == {"a", "l", "θ", "R", "φ", "m₁", "M₁"}
+    said = "a pendulum's l² sin θ across, R φ̇² cos(θ) and m₁ where M₁ belongs"
+    assert _letters(said) == {"a", "l", "θ", "R", "φ", "m₁", "M₁"}
 
 
 @pytest.mark.slow
