@@ -96,6 +96,8 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
     typed in the other case (L for l)."""
     unknown = "unknown name" in str(exc)
     out = None
+    # d/dt (…) read as a quotient (d over dt times …) is a derivative all the same, anywhere in the answer
+    derivative = isinstance(text, str) and bool(_DIFFERENTIALS.search(text)) and "quotient" in str(exc)
     # a declared name typed with its letters' case changed (L for the length l): names are case-sensitive; names
     # are said as typed, as the box's own list prints them
     near = [
@@ -103,7 +105,9 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
         for n in allowed_names(step, kinds)
         if unknown and n not in (exc.part, "t") and n.lower() == str(exc.part).lower()
     ]
-    if near:
+    if derivative:
+        out = _DERIVATIVE
+    elif near:
         out = (
             f"{exc.part} is not {_KIND_WORDS.get(kinds[near[0]], 'a name')} here; did you mean "
             f"{near[0]}? A capital and a small letter are different names"
@@ -121,15 +125,22 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
     elif "only these functions may be called" in str(exc) and (apart := _names_then_function(exc.part, allowed_names(step, kinds))):
         # mgRcos(theta): the names and the function typed together read as one unknown function
         out = f"{exc.part} reads as one name: write {apart}(…), with a space or * between the names"
+    elif "only these functions may be called" in str(exc) and (glued := _as_names(exc.part, allowed_names(step, kinds))):
+        # mgR(1 − cos θ): declared names typed together before a bracket read as one function's name
+        out = (
+            f"{exc.part} reads as one name: write {' '.join(glued)} (or {'*'.join(glued)}) for the product, with a "
+            "space or * between the names"
+        )
     elif "only these functions may be called" in str(exc) and str(exc.part).lower() in _FUNCTION_WORDS:
         # a function a student knows under another name, or a derivative: said as a tutor says it
         out = _FUNCTION_WORDS[str(exc.part).lower()]
     elif "only these functions may be called" in str(exc):
-        # a sentence, not a code allowlist: |x| is not among them (its own name, Abs, is said where abs is typed)
+        # a sentence, not a code allowlist: |x| is not among them, and Abs is named only to a student who typed a bar
         functions = sorted(f for f in FUNCTIONS if f != "Abs")
+        bar = isinstance(text, str) and "|" in text
         out = (
             f"{exc.part} is not a function you may use here; the functions are {', '.join(functions[:-1])} and "
-            f"{functions[-1]}"
+            f"{functions[-1]}" + ("; |x| is typed Abs(x)" if bar else "")
         )
     elif exc.part in _QUANTITIES and unknown:
         out = f"{exc.part} is not a name the answer may use: write T and U out in the coordinates, their velocities and the parameters"

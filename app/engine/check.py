@@ -210,8 +210,14 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
     """The verdict on one answer (as ``check_answer`` read it, or its text): ``{"verdict", "message",
     "difference", "hint"}``; a system without a spring is not told about springs."""
     verdict = _judge(pb, text)
-    if not pb.springs and verdict.get("hint"):
-        verdict["hint"] = without_springs(verdict["hint"])
+    if not pb.springs:
+        if verdict.get("hint"):
+            verdict["hint"] = without_springs(verdict["hint"])
+        # the named mistake is shown by its name and its reason: neither speaks of a spring
+        if verdict.get("mistake"):
+            mistake = verdict["mistake"]
+            verdict["mistake"] = {**mistake, "name": without_springs(mistake["name"]),
+                                  "where": without_springs(mistake["where"])}  # fmt: skip
     return verdict
 
 
@@ -244,7 +250,7 @@ def _judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         mistake, hint = found
         if mistake.family == "units":
             return _units_verdict(pb, printer, mistake, hint)
-        mistake, hint = as_typed(mistake, hint, answer, scale, pb.step)
+        mistake, hint = as_typed(mistake, hint, answer, scale, pb.step, pb.groups.positions)
         if pb.relation == "exact" or equal(a, _known(mistake.expr, pb.groups)):
             # the answer is this mistake as written: show the difference as the change to the engine's own
             # pieces (m₂ l₁ l₂ θ̇₁ θ̇₂ (sin(θ₁ − θ₂) − cos(θ₁ − θ₂)), not its sines and cosines expanded)
@@ -313,7 +319,8 @@ def _units_verdict(pb: Problem, printer: Printer, mistake: Mistake, hint: str) -
         hint,
         mistake={
             **mistake_json(mistake, printer.tex),
-            "latex": r"\text{in your answer: }" + printer.tex(mistake.piece),
+            # the offending part of a longer answer; the whole answer is in the student's own preview already
+            "latex": "" if mistake.piece == mistake.expr else r"\text{in your answer: }" + printer.tex(mistake.piece),
         },
     )
 
@@ -357,9 +364,10 @@ def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake
     if offence is None:
         return None
     where = "every term of an expression has the same units; checking them finds a slip before any algebra"
-    mistake = Mistake("units.mismatch", "units", f"units that do not agree. {offence.words}", offence.piece, where,
+    words = offence.words if offence.words.endswith(".") else f"{offence.words}."
+    mistake = Mistake("units.mismatch", "units", f"units that do not agree. {words}", offence.piece, where,
                       answer)  # fmt: skip
-    return mistake, f"Check the units. {offence.words}."
+    return mistake, f"Check the units. {words}"
 
 
 def follow_up_mistake(pb: Problem, key: str) -> Mistake:

@@ -18,6 +18,7 @@ from app.engine.diagnose import catalogue
 from app.engine.dimensions import Dims, system_dimensions
 from app.engine.mistake_families import Mistake
 from app.engine.mistake_positions import component_keys, position_label
+from app.engine.mistakes import has_springs
 from app.engine.report import plain_name
 from app.engine.textbook import unicode_text
 
@@ -215,15 +216,6 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         system_dimensions(d),
         has_springs(d),
     )
-
-
-STIFFNESS_UNITS = ("N/m", "kg/s²", "kg/s^2", "kg s⁻²")
-
-
-def has_springs(d: Derivation) -> bool:
-    """Whether the system may hold a spring: a parameter with a stiffness's unit, or no parameter with a unit."""
-    units = [p.unit for p in d.system.parameters if p.unit]
-    return not units or any(u.replace(" ", "") in STIFFNESS_UNITS for u in units)
 
 
 def _at(r: str, position: sp.Expr) -> str:

@@ -18,6 +18,7 @@ says which parts agree.
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 from typing import Any
 
@@ -26,6 +27,7 @@ import sympy as sp
 from app.engine.compare import Groups, Values, differ_by_constant, differ_by_factor, equal, usable, values
 from app.engine.derive import Derivation
 from app.engine.dimensions import mismatch, system_dimensions
+from app.engine.mistake_carried import carried_equations, lagrangian_pairs
 from app.engine.mistake_equations import generated
 from app.engine.mistake_families import Mistake, monomial_words, spoken
 from app.engine.mistake_masses import wrong_masses
@@ -62,6 +64,7 @@ _OPENINGS = {
     "limit": "Your {what} is {name}",
     "position_for_velocity": "Your {what} has {name}",
     "wrong_mass": "Your {what} has {name}",
+    "momentum_part": "Your {what} has {name}",
     "position_carried": "Your {what} has {name}",
     "position_sign": "Your {what} has {name}",
     "position_other": "Your {what} is {name}",
@@ -71,7 +74,9 @@ _OPENINGS = {
 
 def sentence(m: Mistake, what: str) -> str:
     """The hint for a generated mistake: what went wrong, then where in the set-up it comes from."""
-    opening = _OPENINGS.get(m.family, "Your {what} leaves out {name}").format(what=what, name=m.name)
+    # "your" said once: the opening has it, so the name's own "your term" is "the term" here
+    name = re.sub(r"\byour\b", "the", m.name)
+    opening = _OPENINGS.get(m.family, "Your {what} leaves out {name}").format(what=what, name=name)
     return f"{opening}: {m.where}."
 
 
@@ -127,6 +132,12 @@ def catalogue(
     carried = [(m, sentence(m, label)) for m in travelled(d, step, k, truth, known, asked)]
     carried += [(m, sentence(m, label)) for m in effective_terms(d, asked)] if step == "omega_squared" else []
     pieces = [(m, sentence(m, label)) for m in piece_mistakes(d, step, k, truth)]
+    # slips of T and U carried on into L, and an equation derived correctly from such an L (after the pieces: a
+    # slip the step itself explains is named by that step's words)
+    if step == "lagrangian":
+        pieces += [(m, sentence(m, label)) for m in lagrangian_pairs(d, truth)]
+    elif step == "equation" and k is not None:
+        pieces += [(m, sentence(m, label)) for m in carried_equations(d, k, truth)]
     # the specific ones first, then the rules every system invites, then the truth's own pieces changed one at a
     # time, then a term's sign (which for a short expression is also the sign of everything else, and would hide
     # a rule's better name)
@@ -299,10 +310,15 @@ def agreement(answer: sp.Expr, truth: sp.Expr, groups: Groups, step: str) -> dic
     if not agree:
         return {"message": "No part of your answer agrees with the correct one yet.", "agree": [], "differ": differ}
     return {
-        "message": f"Part by part: {', '.join(agree)} agree with the correct ones; {', '.join(differ)} do not.",
+        "message": f"Part by part: {listed(agree)} agree with the correct ones; {listed(differ)} do not.",
         "agree": agree,
         "differ": differ,
     }
+
+
+def listed(groups: list[str]) -> str:
+    """Groups of terms as a reader lists them: "a", "a and b", "a, b and c"."""
+    return ", ".join(groups) if len(groups) < 2 else f"{', '.join(groups[:-1])} and {groups[-1]}"
 
 
 def _parts(expr: sp.Expr, rates: tuple[sp.Symbol, ...]) -> dict[sp.Expr, sp.Expr] | None:

@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING
 import sympy as sp
 
 from app.engine.mistake_families import spoken
+from app.engine.names import unicode
 
 if TYPE_CHECKING:
     from app.engine.derive import Derivation
@@ -51,6 +52,10 @@ MAX_NODES = 400  # an answer longer than this is not walked (its dimensions say 
 
 ENERGY: Dims = {"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-2)}
 
+# the words for kg/s², and what a system without a spring is told instead (app.engine.mistakes.without_springs)
+STIFFNESS_WORDS = "a spring constant (kg/s²)"
+STIFFNESS_PLAIN = "a quantity in kg/s²"
+
 # quantities a student recognises, by dimension
 _WORDS = [
     ({}, "a pure number"),
@@ -65,7 +70,7 @@ _WORDS = [
     ({"m": Fraction(2), "s": Fraction(-2)}, "a squared speed"),
     (ENERGY, "an energy"),
     ({"kg": Fraction(1), "m": Fraction(1), "s": Fraction(-2)}, "a force"),
-    ({"kg": Fraction(1), "s": Fraction(-2)}, "a spring constant (kg/s²)"),
+    ({"kg": Fraction(1), "s": Fraction(-2)}, STIFFNESS_WORDS),
     ({"kg": Fraction(1), "m": Fraction(1), "s": Fraction(-1)}, "a momentum"),
     ({"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-1)}, "an angular momentum"),
     ({"kg": Fraction(1), "m": Fraction(2)}, "a moment of inertia"),
@@ -174,9 +179,11 @@ def _dims(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Dims | None:
         for a, d in told[1:]:
             if d != told[0][1]:
                 first = told[0]
+                # a short sum is quoted (m + g); a long one is the student's own, shown under the words
+                lead = spoken(expr) if len(expr.args) <= 2 else "Your sum"
                 words = (
-                    f"{spoken(expr)} adds {quantity(first[1])} ({spoken(first[0])}) to {quantity(d)} "
-                    f"({spoken(a)}); terms of a sum must have the same units"
+                    f"{lead} adds {quantity(first[1])} ({spoken(first[0])}) to {quantity(d)} "
+                    f"({spoken(a)}), and the terms of a sum must have the same units."
                 )
                 raise _Mismatch(Offence(expr, words))
         return told[0][1] if told and len(told) == len(found) else None
@@ -238,17 +245,21 @@ def mismatch(expr: sp.Expr, known: Mapping[sp.Symbol, Dims], want: Dims | None, 
     missing = add_dims(want, got, Fraction(-1))
     extra = add_dims(got, want, Fraction(-1))
     inverted = bool(want) and got == {k: -v for k, v in want.items()}
+    # a factor too many is pointed at by the name in the answer that carries exactly its units (g for m/s²)
+    carriers = sorted(s.name for s in expr.free_symbols if isinstance(s, sp.Symbol) and extra and known.get(s) == extra)
     factor = (
         "It is upside down: numerator and denominator are swapped"
         if inverted
         else f"A factor of {described(missing).removeprefix('a ').removeprefix('an ')} is missing"
         if all(v > 0 for v in missing.values())
+        else f"It has a factor {unicode(carriers[0])} ({unit_text(extra)}) too many"
+        if len(carriers) == 1
         else f"It has a factor of {described(extra).removeprefix('a ').removeprefix('an ')} too many"
         if all(v > 0 for v in extra.values())
-        else f"They differ by {unit_text(missing)}"
+        else f"It has a factor in {unit_text(extra)} too many"
     )
-    # short sentences: what it is, what it should be, what would make it so
-    return Offence(expr, f"Your {what} is {described(got)}, but {what} is {described(want)}. {factor}")
+    # short sentences, each with its full stop: what it is, what it should be, what would make it so
+    return Offence(expr, f"Your {what} is {described(got)}, but it should be {described(want)}. {factor}.")
 
 
 def _bare_number(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Offence | None:

@@ -9,12 +9,12 @@ from typing import Any
 import sympy as sp
 
 from app.engine.check import allowed_names, conserved_momenta, exercises, problem
-from app.engine.check_problem import asked_equilibrium, has_springs, where_asked
+from app.engine.check_problem import asked_equilibrium, where_asked
 from app.engine.constraints import AXES
 from app.engine.derive import Derivation
 from app.engine.equilibria_notes import equilibria_notes
 from app.engine.mistake_positions import body_name, component_keys
-from app.engine.mistakes import POINTERS, without_springs
+from app.engine.mistakes import POINTERS, has_springs, without_springs
 from app.engine.report import Printer, display
 
 

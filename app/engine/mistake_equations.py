@@ -46,15 +46,17 @@ def momentum_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
     p = d.equations.momenta[k]
     name = unicode(d.table.names[k])
     for monomial, part in velocity_monomials(p, d.table.qd).items():
-        what = f"the {spoken(monomial)} part" if monomial != 1 else "the part without velocities"
+        # in words, never a program's p_y₂: the term that is missing, and why the momentum has it
+        what = f"the {spoken(monomial)} term" if monomial != 1 else "the term without velocities"
+        dot = unicode(d.table.qd[k].name)
         yield Mistake(
             f"momentum.part_left_out.{slug(sp.sstr(monomial))}",
-            "part_left_out",
-            f"{what} of p_{name}",
+            "momentum_part",
+            f"{what} missing",
             short_form(part),
-            f"L has a term with {unicode(d.table.qd[k].name)} times "
+            f"L has a term with {dot} times "
             + (spoken(monomial) if monomial != 1 else "no other velocity")
-            + f", so ∂L/∂{unicode(d.table.qd[k].name)} keeps it",
+            + f", so ∂L/∂{dot}, the momentum conjugate to {name}, keeps it",
             sp.expand(p - part),
         )
     # a position typed where its velocity belongs (m R² θ for m R² θ̇): every factor else may be right

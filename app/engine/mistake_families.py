@@ -27,7 +27,7 @@ whole wrong answer, and where it helps a follow-up question a student can answer
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 import sympy as sp
@@ -148,6 +148,35 @@ def term_key(term: sp.Expr) -> str:
 
 
 _SHORT: dict[sp.Expr, sp.Expr] = {}
+
+
+def sum_words(a: sp.Expr, coordinates: Iterable[sp.Symbol]) -> str:
+    """A sum as a textbook orders it: the coordinates' terms, those added before those taken away, then the
+    constants (x₂ − x₁ − l₀, never x₂ − l₀ − x₁); a sum that is no stretch as the printer has it."""
+    q = set(coordinates)
+    if not isinstance(a, sp.Add) or not q:
+        return spoken(a)
+    terms = sorted(a.args, key=lambda t: (not (t.free_symbols & q), t.could_extract_minus_sign(), sp.default_sort_key(t)))
+    text = spoken(terms[0])
+    for t in terms[1:]:
+        text += f" − {spoken(-t)}" if t.could_extract_minus_sign() else f" + {spoken(t)}"
+    return text
+
+
+def spring_words(energy: sp.Expr, coordinates: Iterable[sp.Symbol]) -> str:
+    """A spring's energy as a textbook writes it, k (x₂ − x₁ − l₀)²: the stretch in a textbook's order, the
+    natural length taken away (of a stretch and its negative, whose squares are the same)."""
+    f = sp.factor(energy)
+    squares = [a for a in sp.Mul.make_args(f) if isinstance(a, sp.Pow) and a.exp == 2 and a.base.is_Add]
+    if len(squares) != 1:
+        return spoken(f)
+    q = set(coordinates)
+    stretch = squares[0].base
+    constant = sum((t for t in sp.Add.make_args(stretch) if not t.free_symbols & q), sp.Integer(0))
+    if constant != 0 and not constant.could_extract_minus_sign():
+        stretch = -stretch
+    rest = f / squares[0]
+    return f"{'' if rest == 1 else spoken(rest) + ' '}({sum_words(stretch, q)})²"
 
 
 def short_form(expr: sp.Expr) -> sp.Expr:
@@ -407,6 +436,12 @@ def _springs(term: sp.Expr, dynamic: set[sp.Symbol]) -> list[tuple[sp.Expr, sp.E
     return out
 
 
+SIGN_OF_KIND = {
+    "the gravitational energy": "a height is measured upward, against gravity",
+    "the spring energy": "a spring's energy is never negative",
+}
+
+
 def kind_of_term(term: sp.Expr, d: Derivation) -> str:
     names = {s.name for s in term.free_symbols}
     if "g" in names:
@@ -448,6 +483,19 @@ def potential_mistakes(d: Derivation) -> Iterator[Mistake]:
                 ),
             )
         kind = kind_of_term(term, d)
+        coefficient, _ = term.as_coeff_Mul()
+        if kind == "the spring energy" and coefficient.is_Rational and coefficient.q == 2:
+            # ½ k × stretch²: the ½ lost gives twice the spring's energy, as the ½ of ½ m v² does in T
+            yield Mistake(
+                f"potential.spring_half.{term_key(term)}",
+                "doubled",
+                # quoted in the student's own term, as a textbook writes it: k (r − l)²
+                f"the ½ of ½ k × stretch² left out of your term {spring_words(2 * term, d.table.q)}",
+                term,
+                "a spring's energy is ½ k × stretch², the work done stretching it against a force that grows from "
+                "zero to k × stretch",
+                sp.expand(U + term),
+            )
         if len(terms) > 1:
             yield Mistake(
                 f"potential.term_left_out.{term_key(term)}",
@@ -462,8 +510,7 @@ def potential_mistakes(d: Derivation) -> Iterator[Mistake]:
                 "term_sign",
                 f"the sign of your {kind.removeprefix('the ')} {spoken(-term)}",
                 term,
-                "a height is measured upward, against gravity, and a spring's energy is never negative"
-                if kind != "the term"
-                else "U is the work done against the force",
+                # each kind has its own reason: no spring is spoken of in a term of gravity
+                SIGN_OF_KIND.get(kind, "U is the work done against the force"),
                 sp.expand(U - 2 * term),
             )

@@ -32,8 +32,27 @@ def _owner(d: Derivation, mass: sp.Symbol) -> str:
     return ""
 
 
+def _divided_by_another(d: Derivation, truth: sp.Expr, masses: list[sp.Symbol]) -> Iterator[Mistake]:
+    """An acceleration is a force over the mass of the body it moves: that mass, written as another one."""
+    whole = sp.factor_terms(truth)
+    for s in [m for m in masses if whole.as_powers_dict().get(m, 0) == -1]:
+        owner = _owner(d, s) or "this body"
+        for r in (m for m in masses if m != s):
+            yield Mistake(
+                f"acceleration.wrong_mass.{s.name}.{r.name}",
+                "wrong_mass",
+                f"the wrong mass: {unicode(r.name)} where {unicode(s.name)} belongs",
+                s,
+                f"this is the acceleration of {owner}, so the force on it is divided by its own mass, {unicode(s.name)}",
+                whole.xreplace({s: r}),
+            )
+
+
 def wrong_masses(d: Derivation, step: str, truth: sp.Expr, masses: list[sp.Symbol]) -> Iterator[Mistake]:
     """For each term of the truth and each mass in it: that mass replaced by another one, or by the total."""
+    if step == "acceleration" and len(masses) >= 2:
+        yield from _divided_by_another(d, truth, masses[:MAX_MASSES])
+        return
     if step not in STEPS or len(masses) < 2:
         return
     masses = masses[:MAX_MASSES]
@@ -56,12 +75,13 @@ def wrong_masses(d: Derivation, step: str, truth: sp.Expr, masses: list[sp.Symbo
                     else f"your term {spoken(short_form(term.xreplace({s: r})))}"
                 )
                 owner = _owner(d, s) or "one body"
+                # the reason opens with words, never with a symbol: a page capitalises its first letter (m₁ is no M₁)
                 if r == total:
-                    why = f"{spoken(total)} is the total mass, and this term belongs to {owner} alone (mass {unicode(s.name)})"
+                    why = f"this term belongs to {owner} alone (mass {unicode(s.name)}), and {spoken(total)} is the total mass"
                 else:
                     why = (
-                        f"{unicode(r.name)} belongs to {_owner(d, r) or 'another body'}, and this term comes from "
-                        f"{owner} (mass {unicode(s.name)})"
+                        f"this term comes from {owner} (mass {unicode(s.name)}), and {unicode(r.name)} belongs to "
+                        f"{_owner(d, r) or 'another body'}"
                     )
                 yield Mistake(
                     f"{step}.wrong_mass.{slug(sp.sstr(term))[:40]}.{s.name}.{slug(sp.sstr(r))}",

@@ -23,7 +23,7 @@ answer gets the same words on an idle and on a busy machine.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from fractions import Fraction
 
 import sympy as sp
@@ -36,9 +36,11 @@ from app.engine.mistake_families import (
     short_form,
     slug,
     spoken,
+    sum_words,
     term_key,
 )
 from app.engine.mistake_other import linear
+from app.engine.mistakes import has_springs
 from app.engine.names import unicode
 
 MAX_PIECES = 12  # terms of a truth taken one at a time (a longer truth is left to the listed families)
@@ -69,7 +71,7 @@ def _has_half(p: sp.Expr) -> bool:
     return bool(coefficient.is_Rational) and abs(coefficient.q) == 2
 
 
-def _swap(expr: sp.Expr) -> sp.Expr:
+def swap_sin_cos(expr: sp.Expr) -> sp.Expr:
     """sin ↔ cos in every sine and cosine."""
     return expr.replace(
         lambda e: isinstance(e, (sp.sin, sp.cos)),
@@ -82,11 +84,20 @@ def _is_force_of_u(d: Derivation, step: str, p: sp.Expr) -> bool:
     return step == "equation" and d.mechanics.U is not None and not p.has(*rates) and p != 0
 
 
-def _derivative_why(p: sp.Expr, coordinate: str) -> str:
-    """Where a swapped sine in an equation's velocity-free term comes from: ∂L/∂q, differentiated."""
+def _derivative_why(p: sp.Expr, coordinate: str, coordinates: Iterable[sp.Symbol]) -> str:
+    """Where a swapped sine in an equation's velocity-free term comes from: ∂L/∂q, differentiated; or, where the
+    angle is a fixed parameter (an incline's α), the component of gravity taken, which no derivative touches."""
     trig = sorted(p.atoms(sp.sin, sp.cos), key=sp.default_sort_key)[0]
     x = trig.args[0]
     angle = spoken(x) if x.is_Symbol else f"({spoken(x)})"
+    if not x.free_symbols & set(coordinates):
+        # ∂/∂q leaves a fixed angle's sine and cosine as they are: along a slope at α gravity's part is g sin α,
+        # across it g cos α, so the swap is a slip of geometry made before any derivative
+        return (
+            f"{angle} is a fixed angle of the set-up, not a coordinate, so no derivative acts on its sine or cosine: "
+            f"the slip is in the component of gravity taken (along a slope at {angle} it is g sin {angle}, across "
+            f"it g cos {angle})"
+        )
     # d(cos x)/dx = −sin x and d(sin x)/dx = cos x: the truth's sine came from a cosine, and its cosine from a sine
     rule = (
         f"the derivative of cos {angle} is −sin {angle}"
@@ -99,6 +110,32 @@ def _derivative_why(p: sp.Expr, coordinate: str) -> str:
     )
 
 
+def _halved_why(d: Derivation, step: str, p: sp.Expr) -> str:
+    """Why a piece is whole: a bob's height (a rod's centre would be halfway), or a factor 2 lost in a derivative."""
+    if step == "potential" and d.system.particles and any(s.name == "g" for s in p.free_symbols):
+        # a bob's height is the full length's; R/2 is where a rod's centre would be
+        return (
+            "the mass is a bob at the end, so it rises by the whole length's height; a rod's centre is at half its "
+            "length, but there is no rod's mass here"
+        )
+    if step in ("equation", "momentum", "acceleration"):
+        return (
+            "the whole of this piece belongs in the answer (a factor 2 from differentiating a square, or from the "
+            "chain rule, is easily lost)"
+        )
+    return "the whole of this piece belongs in the answer"
+
+
+def _bob_swing(d: Derivation, step: str, p: sp.Expr) -> bool:
+    """Whether p is a bob's ½ m l² θ̇²: T's term in one angle's velocity squared, in a system of point masses."""
+    if step != "kinetic" or not d.system.particles:
+        return False
+    angles = {a for f in p.atoms(sp.sin, sp.cos) for a in f.args[0].free_symbols}
+    squared = [v for v in d.table.qd if p.as_powers_dict().get(v, 0) == 2]
+    trig = {a for f in (d.mechanics.U or sp.S.Zero).atoms(sp.sin, sp.cos) for a in f.args[0].free_symbols}
+    return _has_half(p) and len(squared) == 1 and not angles and d.table.q[d.table.qd.index(squared[0])] in trig
+
+
 def _label(step: str) -> str:
     return {"kinetic": "T", "potential": "U", "lagrangian": "L", "hamiltonian": "h"}.get(step, "")
 
@@ -108,7 +145,7 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
     if step == "omega_squared":
         return
     base = f"{step}.piece"
-    yield from _sums(truth, base)
+    yield from _sums(truth, base, has_springs(d), d.table.q)
     rates = (*d.table.qd, *d.table.qdd)
     for p in _terms(truth):
         # the piece as a textbook prints it, once (the student's own piece is a multiple of it, or it swapped)
@@ -116,9 +153,12 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
         shown = spoken(short)
         key = slug(sp.sstr(p))[:48]
         if _is_force_of_u(d, step, p):
+            # gravity by its name (a term with g); no generalized force Q is spoken of, a problem may have none
+            gravity = any(s.name == "g" for s in p.free_symbols)
             yield Mistake(
-                f"{base}.counted_twice.{key}", "counted_twice", f"the force {shown} counted twice", p,
-                "this force comes from U, and ∂L/∂q already holds it: adding it again as a force Q counts it twice",
+                f"{base}.counted_twice.{key}", "counted_twice",
+                f"gravity counted twice (your term {shown} twice)" if gravity else f"the force {shown} counted twice",
+                p, "this force comes from U, and ∂L/∂q already holds it: writing it again beside it counts it twice",
                 truth + p,
             )  # fmt: skip
         elif _has_half(p):
@@ -133,9 +173,15 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
             )  # fmt: skip
         yield Mistake(
             f"{base}.halved.{key}", "halved", f"your term {spoken(short / 2)}, half of what it should be", p,
-            "the whole of this piece belongs in the answer (a factor 2 from differentiating a square, or from "
-            "the chain rule, is easily lost)", truth - p / 2,
+            _halved_why(d, step, p), truth - p / 2,
         )  # fmt: skip
+        if _bob_swing(d, step, p):
+            # ½ (⅓ m l²) θ̇² = ⅙ m l² θ̇²: a uniform rod's T about its end, where the mass is a bob at the end
+            yield Mistake(
+                f"{base}.rod_for_bob.{key}", "rigid", f"a rod's T for a bob (your term {spoken(short / 3)})", p,
+                "a rod's I about its end is ⅓ m × length², but here the mass is a bob at the end of a massless rod or "
+                "string, so all of it moves on the full circle: I = m times the length squared", truth - p + p / 3,
+            )  # fmt: skip
         name, why = _left_out(d, step, p)
         yield Mistake(f"{base}.left_out.{term_key(p)}", "left_out", name, p,
                       why or LEFT_OUT_WHY.get(step, "this term belongs in the answer"), truth - p)  # fmt: skip
@@ -158,20 +204,20 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
         if step != "momentum":  # a momentum short of a factor is named by that factor (app.engine.check)
             yield from _factors(p, truth, base, key, rates, d.table.params)
         if p.has(sp.sin, sp.cos):
-            swapped = _swap(p)
+            swapped = swap_sin_cos(p)
             # in an equation, a velocity-free term is a derivative of U (or of T by q): there a swap is a slip of
             # differentiating (d(−cos θ)/dθ = sin θ taken as cos θ), the positions being checked in T and U
             why = (
-                _derivative_why(p, d.table.names[k])
+                _derivative_why(p, d.table.names[k], d.table.q)
                 if step in ("equation", "acceleration") and k is not None and not p.has(*rates)
                 else "check which component of the position has the sine and which the cosine, at a small angle"
             )
             yield Mistake(
-                f"{base}.sin_cos.{key}", "sin_cos", f"sin and cos swapped in your term {spoken(_swap(short))}",
+                f"{base}.sin_cos.{key}", "sin_cos", f"sin and cos swapped in your term {spoken(swap_sin_cos(short))}",
                 p, why, truth - p + swapped,
             )  # fmt: skip
             yield Mistake(
-                f"{base}.sin_cos_height.{key}", "sin_cos", f"sin and cos swapped in your term {spoken(-_swap(short))}",
+                f"{base}.sin_cos_height.{key}", "sin_cos", f"sin and cos swapped in your term {spoken(-swap_sin_cos(short))}",
                 p, why, truth - p - swapped,
             )  # fmt: skip
     yield from _whole(d, step, truth, base)
@@ -356,8 +402,9 @@ WHOLE_SIGN_WHY = {
 }
 
 
-def _sums(truth: sp.Expr, base: str) -> Iterator[Mistake]:
-    """The sign of one term inside a sum held in a square or a product: (x₂ − x₁ − l₀) as (x₁ + x₂ − l₀)."""
+def _sums(truth: sp.Expr, base: str, springs: bool, coordinates: Iterable[sp.Symbol] = ()) -> Iterator[Mistake]:
+    """The sign of one term inside a sum held in a square or a product: (x₂ − x₁ − l₀) as (x₁ + x₂ − l₀); in a
+    system without a spring, only inside an angle (a sum elsewhere is no stretch, and its sign is a term's)."""
     inner = [a for a in sp.preorder_traversal(truth) if isinstance(a, sp.Add) and a != truth]
     seen: list[sp.Expr] = []
     for a in sorted(set(inner), key=sp.default_sort_key)[:MAX_SUMS]:
@@ -370,6 +417,8 @@ def _sums(truth: sp.Expr, base: str) -> Iterator[Mistake]:
             # the reason fits where the sum sits: inside a sine or cosine it is an angle between two directions
             # (the rods' θ₁ − θ₂), elsewhere a stretch or a distance between two ends
             angle = any(isinstance(f, sp.sin | sp.cos) and a in f.args for f in truth.atoms(sp.sin, sp.cos))
+            if not (angle or springs):
+                continue
             even = all(isinstance(f, sp.cos) for f in truth.atoms(sp.sin, sp.cos) if a in f.args) and angle
             if even and len(a.args) == 2 and changed.could_extract_minus_sign():
                 # cos(−x) = cos x: −(θ₁ + θ₂) is written θ₁ + θ₂, and the sign changed is the other term's
@@ -383,7 +432,8 @@ def _sums(truth: sp.Expr, base: str) -> Iterator[Mistake]:
             )
             yield Mistake(
                 f"{base}.inner_sign.{slug(sp.sstr(a))[:32]}.{slug(sp.sstr(term))[:16]}", "inner_sign",
-                f"{spoken(changed)} where {spoken(a)} belongs: the sign of {spoken(term)} ({why})", a,
+                f"{sum_words(changed, coordinates)} where {sum_words(a, coordinates)} belongs: the sign of "
+                f"{spoken(term)} ({why})", a,
                 "draw the two directions and measure both angles from the same line" if angle
                 else "draw the two ends and ask which way each coordinate moves them", wrong,
             )  # fmt: skip
@@ -394,8 +444,9 @@ def _whole(d: Derivation, step: str, truth: sp.Expr, base: str) -> Iterator[Mist
         yield Mistake(
             f"{base}.sin_cos_throughout", "sin_cos", "sin and cos swapped throughout (the positions written with "
             "the sine and the cosine exchanged)", None,
-            "at a small angle the horizontal part of a pendulum's position is small: l sin θ across, −l cos θ down",
-            _swap(truth),
+            "the part of a position along the line its angle is measured from carries the angle's cosine, the part "
+            "across that line its sine",
+            swap_sin_cos(truth),
         )  # fmt: skip
     if step == "acceleration":
         coordinates = set(d.table.q)
@@ -487,7 +538,7 @@ def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp
 # ---- mistakes that travel --------------------------------------------------------------------------
 
 
-def _euler_lagrange(d: Derivation, k: int, L: sp.Expr) -> sp.Expr:
+def euler_lagrange(d: Derivation, k: int, L: sp.Expr) -> sp.Expr:
     """d/dt ∂L/∂q̇_k − ∂L/∂q_k for a change of L (linear in L, so the change of the equation)."""
     t = d.table
     p = sp.diff(L, t.qd[k])
@@ -524,14 +575,14 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
     for key, name, dT, dU in changes[: 2 * MAX_TRAVEL]:
         if step == "equation" and k is not None:
             # L = T − U changes by ΔT − ΔU, and the equation by its Euler–Lagrange expression
-            wrong = truth + _euler_lagrange(d, k, dT - dU)
+            wrong = truth + euler_lagrange(d, k, dT - dU)
             family = "rigid" if key.startswith("rigid") else "travelled"
             yield Mistake(f"equation.{key}", family, name, None,
                           "your equation is what such a step gives: if your earlier step has that slip, fix it there "
                           "and derive again", wrong)  # fmt: skip
         elif step == "acceleration":
             # one coordinate: E' = a q̈ + f, so q̈ = −f/a
-            E = d.equations.residuals[0] + _euler_lagrange(d, 0, dT - dU)
+            E = d.equations.residuals[0] + euler_lagrange(d, 0, dT - dU)
             a = sp.diff(E, d.table.qdd[0])
             if a != 0:
                 family = "rigid" if key.startswith("rigid") else "travelled"
@@ -593,10 +644,11 @@ def effective_terms(d: Derivation, asked: list) -> Iterator[Mistake]:
             what = "the centrifugal term" if centrifugal else f"the term with {', '.join(params)}"
             yield Mistake(
                 f"omega_squared.effective_left_out.{term_key(u)}", "left_out", f"{what} of U_eff left out", u,
-                "ω² = U_eff″(r₀)/m_eff takes every term of the effective potential, the motion's (centrifugal) "
-                "ones as well as U's", w - part,
+                "ω² is the effective potential's second derivative at the equilibrium over the effective mass: it "
+                "takes every term of the effective potential, the motion's (centrifugal) ones as well as U's", w - part,
             )  # fmt: skip
             yield Mistake(
                 f"omega_squared.effective_sign.{term_key(u)}", "term_sign", f"the sign of {what} of U_eff", u,
-                "the centrifugal term of U_eff pushes outward: its sign is fixed by −T₀ (or + p²/(2 m r²))", w - 2 * part,
+                "the centrifugal term of the effective potential pushes outward: it is minus the part of T free of "
+                "the velocities, and falls away from the axis", w - 2 * part,
             )  # fmt: skip

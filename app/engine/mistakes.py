@@ -32,6 +32,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from app.engine.derive import Derivation
+from app.engine.dimensions import STIFFNESS_PLAIN, STIFFNESS_WORDS
 
 
 @dataclass(frozen=True)
@@ -43,7 +44,17 @@ class Rule:
     name: str = ""  # what went wrong, in a few words (the hint says why)
 
 
-# the clauses of the hints about springs, left out of a system without one (check_problem.has_springs)
+STIFFNESS_UNITS = ("N/m", "kg/s²", "kg/s^2", "kg s⁻²")
+
+
+def has_springs(d: Derivation) -> bool:
+    """Whether the system may hold a spring: a parameter with a stiffness's unit, or no parameter with a unit.
+    The one answer to "does this problem have springs" for every message family."""
+    units = [p.unit for p in d.system.parameters if p.unit]
+    return not units or any(u.replace(" ", "") in STIFFNESS_UNITS for u in units)
+
+
+# the clauses of the hints about springs, left out of a system without one (has_springs)
 SPRING_CLAUSES = (
     ", plus ½ k times the square of each spring's stretch",
     " (and +½ k × stretch² for a spring)",
@@ -57,7 +68,8 @@ def without_springs(text: str | None) -> str | None:
         return text
     for clause in SPRING_CLAUSES:
         text = text.replace(clause, "")
-    return text
+    # a quantity in kg/s² is no spring constant where there is no spring
+    return text.replace(STIFFNESS_WORDS, STIFFNESS_PLAIN)
 
 
 POINTERS = {
@@ -77,7 +89,8 @@ POINTERS = {
     "acceleration": "Write the Euler–Lagrange equations and solve them for q̈; when coordinates are coupled (a "
     "mass matrix with off-diagonal terms), solve the equations together.",
     "hamiltonian": "h = Σ p_k q̇_k − L, written in the coordinates and velocities.",
-    "omega_squared": "At a stable equilibrium r₀ (where U_eff′ = 0), ω² = U_eff″(r₀) / m_eff(r₀).",
+    "omega_squared": "About a stable equilibrium, where the effective potential has zero slope, ω² is the effective "
+    "potential's second derivative there divided by the effective mass (the coefficient of ½ q̇² in T).",
 }
 
 
@@ -234,17 +247,18 @@ RULES: tuple[Rule, ...] = (
         "missing_cross_term",
         ("kinetic", "lagrangian"),
         "A cross term is missing: when a position depends on several coordinates (or on t), squaring its velocity "
-        "gives mixed products such as 2 Ẋ ṡ cos α. Forgetting the chain rule through one of them drops those terms.",
+        "gives mixed products, twice the product of two of its parts. Forgetting the chain rule through one of them "
+        "drops those terms.",
         _no_cross,
         "the cross terms of T left out",
     ),
     Rule(
         "force_counted_twice",
         ("equation", "acceleration"),
-        "A force is counted twice: a force that comes from U (such as gravity) is already in ∂L/∂q, so it must not "
-        "be added again as a generalized force Q.",
+        "A force is counted twice: a force that comes from U, such as gravity, is already in ∂L/∂q, so it is not "
+        "written again beside it.",
         _equation("double_force"),
-        "a force of U counted again as a generalized force",
+        "a force of U, such as gravity, counted twice",
     ),
     Rule(
         "chain_rule_in_ddt",

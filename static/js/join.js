@@ -8,6 +8,7 @@
  * in the gradebook). The student key stays in localStorage; a reload goes on where it was.
  */
 import { api, el, exerciseOf, practiceOf, showPanes, stepTex, stored, typeset } from "./classroom.js";
+import { howTo, numbered, refusalWords, verdictWords } from "./verdict-words.js";
 
 const memory = stored("lagrange-join");
 const scenes = JSON.parse(document.getElementById("class-scenes").textContent);
@@ -62,28 +63,32 @@ function dueWords(a) {
   return words;
 }
 
+/** A verdict in the words a scene page's practice mode uses for it (verdict-words.js): the same answer reads the
+ *  same on both pages. */
 function verdictView(box, r) {
   box.replaceChildren();
   box.setAttribute("aria-busy", "false");
   if (r.status === 200) {
     const v = r.data;
     box.dataset.verdict = v.verdict;
-    // the message opens with its verdict ("Incorrect: this is not …"): that word is the badge, said once
-    const [head, rest] = splitVerdict(v.message, { correct: "Correct", equivalent: "Equivalent", incorrect: "Incorrect" }[v.verdict] || v.verdict);
-    box.append(el("p", {}, el("strong", { text: head }), rest ? `: ${rest}` : ""));
+    const words = verdictWords(v);
+    box.append(el("p", {}, el("strong", { text: words.head[0] }), words.head[1]));
     if (v.difference) box.append(el("p", { className: "verdict-difference" }, typeset(el("span"), v.difference.latex, true)));
-    if (v.hint) box.append(el("p", { className: "verdict-hint", text: v.hint }));
+    if (words.mistake) {
+      const mistake = el("div", { className: "verdict-mistake", "data-key": v.mistake.key },
+        el("p", {}, el("strong", { text: words.mistake[0] }), words.mistake[1]));
+      if (v.mistake.latex) mistake.append(typeset(el("div", { className: "verdict-piece" }), v.mistake.latex, true));
+      box.append(mistake);
+    }
+    if (words.reason) box.append(el("p", { className: "verdict-hint", text: words.reason }));
+    if (words.partial) box.append(el("p", { className: "verdict-partial", text: words.partial }));
     return;
   }
   box.dataset.verdict = "refused";
-  // a refusal names the field it concerns ("answer: …"): here there is one box, the student's own
-  const detail = (r.data?.detail || `The answer could not be checked (${r.status}).`).replace(/^answer: /, "");
-  const busy = r.status === 429 || r.status === 503;
   // a busy server is no fault of the answer: said as what to do, never as the server's words about derivations
-  // after "Not checked:" the server's words as they are (as after "Incorrect:"): a message that opens with the
-  // student's symbol (x) keeps its case (inst-c 14)
-  const said = busy ? "The server is still busy with your earlier work; press Check again in a moment (an answer is never counted twice)." : detail;
-  box.append(el("p", {}, el("strong", { text: busy ? "Busy" : "Not checked" }), `: ${said}`));
+  const [label, said] = refusalWords(r.status, r.data?.detail || `the answer could not be checked (${r.status})`,
+    "the server is still busy with your earlier work; press Check again in a moment (an answer is never counted twice).");
+  box.append(el("p", {}, el("strong", { text: label }), said));
 }
 
 /** A message shown alone, as a sentence: its first letter a capital only when it opens with a word of the language
@@ -93,24 +98,17 @@ function sentence(text) {
   return /^[a-z]{2,} /.test(text) ? `${text.charAt(0).toUpperCase()}${text.slice(1)}` : text;
 }
 
-/** A verdict's message as [its opening word, the rest]: "Correct: this is T." → ["Correct", "this is T."]; a
- *  message that opens otherwise keeps the verdict's own word. */
-function splitVerdict(message, word) {
-  const at = (message || "").indexOf(": ");
-  if (at > 0 && at < 20) return [message.slice(0, at), message.slice(at + 2)];
-  return [word, message || ""];
-}
-
 /** The names a step's answer may use, each as typed and, where it prints otherwise, as the page prints it. */
-function namesLine(practice, names) {
-  const line = el("p", { className: "practice-names help" }, "Names you may use: ");
+function namesLine(practice, exercise, names) {
+  // what the box takes, in the scene page's words ("Type only the right-hand side.")
+  const line = el("p", { className: "practice-names help" }, `${howTo(exercise)} Names you may use: `);
   names.forEach((name, i) => {
     if (i) line.append(", ");
     line.append(el("code", { text: name }));
     const tex = practice?.symbols?.[name];
     if (tex && tex !== name) line.append(" (", typeset(el("span"), tex), ")");
   });
-  line.append(", ", el("code", { text: "pi" }), ".");
+  line.append(", ", el("code", { text: "pi" }), `.${numbered(names)}`);
   return line;
 }
 
@@ -160,7 +158,7 @@ function stepView(a, item, practice, s, index) {
     el("h3", { text: exercise ? exercise.title : s.step }),
     el("label", { for: id }, typeset(el("span", { className: "practice-lhs" }), lhs)),
     el("div", { className: "practice-row" }, input, button, exercise ? reveal : null),
-    exercise ? namesLine(practice, exercise.names) : null,
+    exercise ? namesLine(practice, exercise, exercise.names) : null,
     preview, note, box, shown);
   const key = stepId(a.n, item.scene || item.name, s.step, s.coordinate);
   const target = { ...(item.scene ? { scene: item.scene } : { system: item.name }), step: s.step, assignment: a.n,
@@ -224,7 +222,7 @@ function stepView(a, item, practice, s, index) {
       }
       if (r.status === 403) leave(CLOSED);
     } catch {
-      verdictView(box, { status: 0, data: { detail: "The server cannot be reached; press Check again (an answer is never counted twice)." } });
+      verdictView(box, { status: 0, data: { detail: "the server cannot be reached; press Check again (an answer is never counted twice)." } });
     } finally {
       button.disabled = false;
     }

@@ -17,6 +17,7 @@
  */
 import { RequestError, fetchJSON } from "./api.js";
 import { readRequest, setControl } from "./controls.js";
+import { endOf, howTo, numbered, refusalWords, verdictWords, wordsOf } from "./verdict-words.js";
 
 const root = document.getElementById("practice");
 const query = new URLSearchParams(window.location.search);
@@ -88,6 +89,17 @@ function katexInto(el, latex, display = false) {
 function katexBreaking(el, latex) {
   katexInto(el, `\\displaystyle ${latex}`);
   el.classList.add("math-breaking");
+  // a sum inside sized parentheses (\left( … \right)) is one unbreakable group: where the formula is still
+  // wider than its box (a double pendulum's T on a phone), its parentheses are set at text size, which lets
+  // KaTeX break after the signs inside them too, so the whole answer can be read without scrolling sideways
+  if (el.scrollWidth > el.clientWidth + 1 && /\\left[([]/.test(latex)) {
+    katexInto(el, `\\displaystyle ${unsized(latex)}`);
+  }
+}
+
+/** LaTeX with its sized delimiters written plain: \left( a + b \right) → ( a + b ). */
+function unsized(latex) {
+  return latex.replace(/\\left\s*([([.])/g, (_, d) => (d === "." ? "" : d)).replace(/\\right\s*([)\].])/g, (_, d) => (d === "." ? "" : d));
 }
 
 function keyOf(exercise) {
@@ -101,32 +113,29 @@ function element(tag, attrs = {}, text = "") {
   return el;
 }
 
-const LABELS = { correct: "Correct", equivalent: "Equivalent", incorrect: "Not yet" };
-
 function showVerdict(item, result, answer) {
   const box = item.querySelector(".practice-verdict");
   box.replaceChildren();
   box.classList.remove("verdict-stale");
   box.dataset.verdict = result.verdict || "refused";
   if (result.verdict) {
-    // the message opens with the verdict ("Correct: …"): that word in bold
+    // the message opens with the verdict ("Correct: …"): that word in bold (the words: verdict-words.js, as on a
+    // class page)
+    const words = verdictWords(result);
     const head = element("p", { class: "verdict-head" });
-    const [first, ...rest] = result.message.split(":");
-    head.append(element("strong", {}, rest.length ? `${first}:` : LABELS[result.verdict]), rest.length ? rest.join(":") : ` ${first}`);
+    head.append(element("strong", {}, words.head[0]), words.head[1]);
     box.append(head);
-    if (result.mistake) box.append(mistakeBox(result.mistake));
-    // after a named mistake, where it comes from (the hint would repeat its name); else the hint
-    const why = result.mistake ? sentenceOf(result.mistake.where) : result.hint;
-    if (why) box.append(element("p", { class: "verdict-hint" }, `${result.mistake ? "Why: " : "Hint: "}${why}`));
-    if (result.partial) box.append(element("p", { class: "verdict-partial" }, result.partial.message));
+    if (result.mistake) box.append(mistakeBox(result.mistake, words.mistake));
+    if (words.reason) box.append(element("p", { class: "verdict-hint" }, words.reason));
+    if (words.partial) box.append(element("p", { class: "verdict-partial" }, words.partial));
     if (result.follow_up && result.verdict === "incorrect") box.append(followUpBox(item, result.follow_up));
   } else {
     // a refusal: say what was wrong and mark the offending part of what was typed
     const head = element("p", { class: "verdict-head" });
     // said once: the preview's note of the same text gives way to this
     // a busy server (503, or the session's own job under way: 429) is not a refusal of the answer
-    const busy = result.status === 503 || result.status === 429;
-    head.append(element("strong", {}, busy ? "Busy: " : "Not checked: "), endOf(wordsOf(result.detail) || "the answer could not be read"));
+    const [label, said] = refusalWords(result.status, result.detail);
+    head.append(element("strong", {}, label), said);
     const note = item.querySelector(".practice-preview-note");
     if (note) note.textContent = "";
     box.append(head);
@@ -179,28 +188,11 @@ function markStale(item, checkedAnswer) {
   }
 }
 
-/** A refusal's message without the field it is located at ("answer: …", "text: …"), the box being the field,
- * nor the column of the part at fault, which is marked in what was typed. */
-function wordsOf(detail) {
-  // (a declared system's refusal is located by a path, system.particles.0.position: the path is not for a student)
-  return (detail || "").replace(/^(answer|text|follow_up|coordinate|step|system(\.[\w]+)*): /, "").replace(/ at column \d+/g, "");
-}
-
-/** A message ended with a full stop (its first word left as the message has it). */
-function endOf(text) {
-  return /[.!?]$/.test(text) ? text : `${text}.`;
-}
-
-function sentenceOf(text) {
-  const t = text.trim();
-  return t ? `${t[0].toUpperCase()}${t.slice(1)}${/[.!?]$/.test(t) ? "" : "."}` : "";
-}
-
 /** The named mistake: its name, and the piece it speaks of typeset. */
-function mistakeBox(mistake) {
+function mistakeBox(mistake, [label, name]) {
   const box = element("div", { class: "verdict-mistake", "data-key": mistake.key });
   const head = element("p");
-  head.append(element("strong", {}, mistake.approximation ? "An approximation: " : "The mistake: "), mistake.name);
+  head.append(element("strong", {}, label), name);
   box.append(head);
   // the piece, labelled by the server; none when it would only repeat the difference above
   if (mistake.latex) {
@@ -368,25 +360,6 @@ async function preview(item, signal) {
 
 const TYPESET_DELAY_MS = 150; // after the last keystroke
 
-// what each box takes (app/engine/answer_sides.py): an equation as a textbook writes it, else the right-hand side
-const HOW = {
-  equation: "Type the equation as lhs = rhs, or as one expression equal to zero.",
-  acceleration: "Type {q}_ddot = …, or only the right-hand side.",
-  other: "Type only the right-hand side.",
-};
-
-function howTo(exercise) {
-  return (HOW[exercise.step] || HOW.other).replace("{q}", exercise.coordinate || "q");
-}
-
-/** The rule the reader applies to numbered names, said as the checker applies it: m_1 is read as m1. */
-function numbered(names) {
-  const example = names.find((name) => /^[A-Za-z]+\d+$/.test(name));
-  if (!example) return "";
-  const [, stem, digits] = example.match(/^([A-Za-z]+)(\d+)$/);
-  return ` A number may follow a name with or without _ (${example} or ${stem}_${digits}).`;
-}
-
 function buildItem(exercise, index) {
   const key = keyOf(exercise);
   const id = `practice-${index}`;
@@ -412,7 +385,7 @@ function buildItem(exercise, index) {
   const rhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
   if (exercise.step === "equation") katexInto(rhs, "= 0");
   row.append(lhs, input, rhs);
-  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${exercise.note ? `${exercise.note} ` : ""}${howTo(exercise)} Names you may use: ${exercise.names.join(", ")}, pi.${numbered(exercise.names)}`);
+  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${howTo(exercise)} Names you may use: ${exercise.names.join(", ")}, pi.${numbered(exercise.names)}`);
   const previewBox = element("div", { class: "practice-preview", id: `${id}-preview`, "aria-label": "Your answer, typeset" });
   previewBox.append(element("div", { class: "practice-preview-math" }), element("p", { class: "help practice-preview-note" }));
   const actions = element("div", { class: "practice-actions" });

@@ -126,7 +126,9 @@ def test_a_class_live(browser, live_server, classes, artifacts):
     said = step.locator(".practice-verdict p").first.inner_text()
     assert said.startswith("Correct: this is") and "Correct Correct" not in said
     names = step.locator(".practice-names")
-    assert names.inner_text().startswith("Names you may use: ") and names.locator(".katex").count() >= 2
+    # what the box takes first, in the scene page's words (student-f 23)
+    assert names.inner_text().startswith("Type only the right-hand side. Names you may use: ")
+    assert names.locator(".katex").count() >= 2
     assert _answer(cy, NO_CROSS_T) == "incorrect"
     teacher.wait_for_function(
         f"document.querySelector('.dash-mistake[data-mistake=\"{CROSS}\"] .dash-count')?.textContent === '2×'",

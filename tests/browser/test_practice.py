@@ -532,3 +532,42 @@ def test_practice_mode_hides_its_dead_tabs_and_folds_what_gives_the_answers_away
         assert [a.inner_text() for a in tabs.all() if a.is_visible()][:4] == ["Simulation", "Set-up", "Derivation", "Results"]
     finally:
         context.close()
+
+
+@pytest.mark.parametrize(
+    ("step", "text"),
+    [
+        (
+            "kinetic",
+            "(1/2)*m1*l1**2*theta1_dot**2 + (1/2)*m2*(l1**2*theta1_dot**2 + l2**2*theta2_dot**2"
+            " + 2*l1*l2*theta1_dot*theta2_dot*cos(theta1 - theta2))",
+        ),
+        (
+            "lagrangian",
+            "(1/2)*m1*l1**2*theta1_dot**2 + (1/2)*m2*(l1**2*theta1_dot**2 + l2**2*theta2_dot**2"
+            " + 2*l1*l2*theta1_dot*theta2_dot*cos(theta1 - theta2))"
+            " + (m1 + m2)*g*l1*cos(theta1) + m2*g*l2*cos(theta2)",
+        ),
+    ],
+)
+def test_a_long_preview_with_parentheses_is_read_whole_on_a_phone(browser, live_server, artifacts, step, text):
+    """student-f, 24: the double pendulum's T and L, a sum inside parentheses, were cut at the phone's right edge
+    ("cos(θ₁ +"), to be read only by swiping inside the preview."""
+    context = browser.new_context(base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True,
+                                  is_mobile=True)  # fmt: skip
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    try:
+        page.goto("/scenes/double-pendulum?practice")
+        page.wait_for_selector(STEP.format(step))
+        page.locator(STEP.format(step)).locator("input[name]").fill(text)
+        preview = page.locator(STEP.format(step) + " .practice-preview")
+        # (the page's first typesetting waits its turn behind the step's set-up on a busy machine)
+        preview.locator(".katex").first.wait_for(timeout=240_000)
+        page.locator(STEP.format(step)).screenshot(path=artifacts / f"practice-double-{step}-390.png")
+        # nothing to scroll sideways, nothing past the screen's edge, and the last factor is on the screen
+        assert preview.evaluate("el => el.scrollWidth <= el.clientWidth + 1")
+        assert preview.evaluate("el => el.getBoundingClientRect().right") <= 391
+        assert page.locator("#practice .katex-error").count() == 0
+    finally:
+        context.close()

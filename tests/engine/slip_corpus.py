@@ -371,13 +371,13 @@ SLIPS = [
     ("simple-pendulum", "hamiltonian", None, "m*R**2*theta_dot**2/2 - m*g*R*cos(theta) + 7", r"7 has no unit.*energy"),
     ("simple-pendulum", "momentum", "theta", "m*R*theta_dot", r"factor R is missing"),
     # the wrong mass in one term: another body's, or the total (only the block changes height)
-    ("movable-incline", "potential", None, "-(m + M)*g*D*sin(alpha)", r"wrong mass in your term.*total mass.*block alone"),
+    ("movable-incline", "potential", None, "-(m + M)*g*D*sin(alpha)", r"wrong mass in your term.*block alone.*total mass"),
     (
         "free-cart",
         "kinetic",
         None,
         "(M + m)*X_dot**2/2 + m*l**2*theta_dot**2/2 + M*l*X_dot*theta_dot*cos(theta)",
-        r"wrong mass in your term M l θ̇ Ẋ cos\(θ\).*M belongs to the cart.*the bob \(mass m\)",
+        r"wrong mass in your term M l θ̇ Ẋ cos\(θ\).*the bob \(mass m\).*M belongs to the cart",
     ),
     ("movable-incline", "equation", "D", "m*D_ddot + M*X_ddot*cos(alpha) - m*g*sin(alpha)", r"wrong mass.*M where m belongs"),
     (
@@ -387,6 +387,38 @@ SLIPS = [
         "-(m1 + m2)*g*l1*cos(theta1) - m1*g*l2*cos(theta2)",
         r"wrong mass in your term −m₁ g l₂ cos\(θ₂\).*m₁ belongs to the upper bob",
     ),
+    # review student-f, A: each reason fits its problem (a fixed angle is no coordinate; no spring, no stretch;
+    # the set-up's own letters; a units factor pointed at; the term quoted as typed)
+    ("incline-block", "acceleration", "X", "-g*cos(alpha)", r"sin and cos swapped.*component of gravity"),
+    ("spherical-pendulum", "acceleration", "theta", "sin(theta)*cos(theta)*phi_dot**2 - g*sin(theta)/R", SIGN),
+    (
+        "spherical-pendulum",
+        "lagrangian",
+        None,
+        "m*R**2*(theta_dot**2 + cos(theta)**2*phi_dot**2)/2 - m*g*R*sin(theta)",
+        r"swapped throughout.*along the line its angle is measured from",
+    ),
+    (
+        "pulley",
+        "kinetic",
+        None,
+        "m1*y1_dot**2/2 + m1*y2_dot**2/2 + M*(y1_dot + y2_dot)**2/8",
+        r"wrong mass.*this term comes from the right mass \(mass m₂\), and m₁ belongs",
+    ),
+    ("pulley", "potential", None, "M*g*(y1 + y2)/2 + m1*g*y1 + m2*g*y2", r"sign of your gravitational energy"),
+    ("simple-pendulum", "kinetic", None, "m*g*R**2*theta_dot**2/2", r"a factor g \(m/s²\) too many\."),
+    ("simple-pendulum", "equation", "theta", "theta_ddot + g*cos(theta)/R", r"swapped in your term g cos\(θ\)/R"),
+    # review student-f, B: slips named that went unnamed (the ½ of a spring's U, a wrong mass in an acceleration,
+    # a momentum's cross term in words, gravity counted twice without a Q)
+    ("rail-two-body", "potential", None, "k*(x2 - x1 - l0)**2", r"the ½ of ½ k × stretch² left out"),
+    ("rail-two-body", "acceleration", "x2", "-k*(x2 - x1 - l0)/m1", r"wrong mass: m₁ where m₂ belongs"),
+    ("pulley", "momentum", "y2", "m2*y2_dot + M*y2_dot/4", r"the ẏ₁ term missing.*momentum conjugate to y₂"),
+    ("simple-pendulum", "acceleration", "theta", "-g*sin(theta)/R - g*sin(theta)/R", r"gravity, counted twice"),
+    # a rod's formulas typed for a bob (review student-f, 14): named as the rod's, with the rod's reason
+    ("simple-pendulum", "kinetic", None, "m*R**2*theta_dot**2/6", r"a rod's T for a bob.*⅓ m × length²"),
+    ("simple-pendulum", "potential", None, "m*g*(R/2)*(1 - cos(theta))", r"half.*a rod's centre is at half its length"),
+    # a stretch's sign quoted as typed, the right one in a textbook's order (review student-f, 15)
+    ("rail-two-body", "potential", None, "k*(x1 - x2 - l0)**2/2", r"x₁ − x₂ − l₀ where x₂ − x₁ − l₀ belongs"),
     # a cross term's sign, explained from the geometry that gives it (student-e, 11)
     (
         "movable-incline",

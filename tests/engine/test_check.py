@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 from functools import cache
 
 import pytest
@@ -12,6 +13,7 @@ from app.engine.check import STEPS, CheckError, check_answer, exercises, judge, 
 from app.engine.derive import Derivation, derive
 from app.engine.dimensions import dimension, system_dimensions
 from app.engine.exercises import exercise_json
+from app.engine.mistake_families import spoken
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, OMEGA_HINT, POINTERS, RULES, without_springs
 from app.engine.parse import parse_expression
 from app.scenes import SCENES
@@ -287,6 +289,21 @@ def student_text(expr: sp.Expr, step: str, d=None) -> str:
     return text
 
 
+# a term a hint quotes: "swapped in the term X:", "the sign of the term X is wrong" (the catalogue's), "the sign of
+# the X term is wrong" (as typed); "one of the terms" where no term of the answer is it alone
+QUOTED = re.compile(
+    r"(?P<kind>swapped in|the sign of) (?:one of the terms|the term (?P<term>.+?)|the (?P<unsigned>.+?) term)"
+    r"(?= is wrong|:)"
+)
+
+
+def typed_terms(typed: str, d: Derivation, kind: str) -> set[str]:
+    """Each term of a typed answer, multiplied out, as a hint prints it (a sign's slip quotes it unsigned)."""
+    names = {**d.table.namespace(), **{s.name: s for s in d.table.qdd}}
+    terms = sp.Add.make_args(sp.expand(parse_expression(typed, names)))
+    return {spoken(t) for t in terms} | ({spoken(-t) for t in terms} if kind == "the sign of" else set())
+
+
 FAMILY_STEPS = [
     (name, step, coordinate)
     for name in (*SCENES, *USER_SYSTEMS)
@@ -304,16 +321,22 @@ def test_every_generated_mistake_typed_back_is_named(system, step, coordinate):
     generated = [(m, hint) for m, hint, _ in pb.mistakes if "." in m.key]
     assert generated or step == "potential"
     for mistake, hint in generated:
-        result = judge(pb, student_text(mistake.expr, step, derivation(system)))
+        typed = student_text(mistake.expr, step, derivation(system))
+        result = judge(pb, typed)
         assert result["verdict"] == "incorrect", (mistake.key, result)
+        # the catalogue's own mistake is named, by the catalogue's words
         assert result["mistake"] and result["mistake"]["key"] == mistake.key, (mistake.key, result)
-        if " the sign of your " in hint:
-            # the judged hint quotes the term as the student typed it ("your k r term"), or says "one of your
-            # terms" where no typed term is it alone; the catalogue's quotes its own
-            assert result["hint"].startswith(hint.partition(" the sign of your")[0] + " the sign of ")
-            assert result["hint"].partition(" is wrong")[2] == hint.partition(" is wrong")[2]
-        else:
-            assert result["hint"] == (hint if pb.springs else without_springs(hint))
+        want = hint if pb.springs else without_springs(hint)
+        if result["hint"] != want:
+            # a term is quoted as the student typed it, where the catalogue quotes the engine's piece: the rest of
+            # the hint is the catalogue's, and the quoted term is one the student finds in their own answer
+            mine, theirs = QUOTED.search(result["hint"]), QUOTED.search(want)
+            assert mine and theirs and mine["kind"] == theirs["kind"], (mistake.key, result["hint"], want)
+            assert result["hint"][: mine.start()] == want[: theirs.start()], (result["hint"], want)
+            assert result["hint"][mine.end() :] == want[theirs.end() :], (result["hint"], want)
+            quoted = mine["term"] or mine["unsigned"]
+            if quoted:
+                assert quoted in typed_terms(typed, derivation(system), mine["kind"]), (typed, quoted)
         if mistake.family in ("other_coordinate", "limit"):
             # another question's right answer: nothing else in it is "right"
             assert result["partial"] is None, (mistake.key, result["partial"])
@@ -362,3 +385,6 @@ def test_an_unmatched_answer_is_compared_part_by_part():
     )
     assert result["mistake"] is None
     assert result["partial"]["differ"] and "the θ̇₁ θ̇₂ terms" in result["partial"]["differ"]
+    # two groups that differ are joined as a reader lists them, never run together with a comma
+    (agree,), (one, other) = result["partial"]["agree"], result["partial"]["differ"]
+    assert result["partial"]["message"] == f"Part by part: {agree} agree with the correct ones; {one} and {other} do not."

@@ -54,3 +54,14 @@ def test_the_home_page_and_the_header_lead_to_the_classes(client):
     for path in ("/", "/playground", "/scenes/simple-pendulum"):
         header = client.get(path).text.split('<nav aria-label="Site">', 1)[1].split("</nav>", 1)[0]
         assert '<a href="/join">Join a class</a>' in header and '<a href="/teach">Teach a class</a>' in header, path
+
+
+def test_the_class_page_says_how_to_type_an_answer_as_the_scene_page_does(client):
+    # student-f 23: the class page's help listed "sin cos exp sqrt" and never said that a box takes only the
+    # right-hand side, as the scene page's practice mode does
+    def syntax(text: str, id_: str) -> str:
+        return re.search(rf'<p class="help" id="{id_}">(.*?)</p>', text, re.S).group(1)
+
+    said = syntax(client.get("/join").text, "join-syntax")
+    assert said == syntax(client.get("/scenes/simple-pendulum").text, "practice-syntax")
+    assert "every other box takes only the right-hand side" in said and "sin cos tan exp log sqrt" in said
