@@ -294,6 +294,8 @@ def student_text(expr: sp.Expr, step: str, d=None) -> str:
 QUOTED = re.compile(
     r"(?P<kind>swapped in|the sign of) (?:one of the terms|the term (?P<term>.+?)|the (?P<unsigned>.+?) term)"
     r"(?= is wrong|:)"
+    # an angle's sign inside a function, quoted as typed: "has θ₁ + θ₂ where θ₁ − θ₂ belongs"
+    r"|has (?P<inner>.+?) where .+? belongs"
 )
 
 
@@ -302,6 +304,13 @@ def typed_terms(typed: str, d: Derivation, kind: str) -> set[str]:
     names = {**d.table.namespace(), **{s.name: s for s in d.table.qdd}}
     terms = sp.Add.make_args(sp.expand(parse_expression(typed, names)))
     return {spoken(t) for t in terms} | ({spoken(-t) for t in terms} if kind == "the sign of" else set())
+
+
+def typed_arguments(typed: str, d: Derivation) -> set[str]:
+    """Every function's argument in a typed answer, as a hint prints it (θ₁ + θ₂ of cos(θ₁ + θ₂))."""
+    names = {**d.table.namespace(), **{s.name: s for s in d.table.qdd}}
+    found = sp.preorder_traversal(parse_expression(typed, names))
+    return {spoken(a) for f in found if isinstance(f, sp.Function) for a in f.args}
 
 
 FAMILY_STEPS = [
@@ -334,6 +343,9 @@ def test_every_generated_mistake_typed_back_is_named(system, step, coordinate):
             assert mine and theirs and mine["kind"] == theirs["kind"], (mistake.key, result["hint"], want)
             assert result["hint"][: mine.start()] == want[: theirs.start()], (result["hint"], want)
             assert result["hint"][mine.end() :] == want[theirs.end() :], (result["hint"], want)
+            if mine["inner"]:
+                # the argument quoted is one the student's answer holds
+                assert mine["inner"] in typed_arguments(typed, derivation(system)), (typed, mine["inner"])
             quoted = mine["term"] or mine["unsigned"]
             if quoted:
                 assert quoted in typed_terms(typed, derivation(system), mine["kind"]), (typed, quoted)
