@@ -778,23 +778,28 @@ $("delete-class").addEventListener("click", async () => {
 // ---- projector mode: large type, only what the class should see -----------------------------------
 
 const projector = stored("lagrange-teach-projector");
+const namesShown = stored("lagrange-teach-names"); // remembered in this browser, as projector mode is
 function project(on) {
   document.body.classList.toggle("projector", on);
   $("projector").setAttribute("aria-pressed", String(on));
   $("projector").textContent = on ? "Leave projector mode" : "Projector mode";
   projector.set(on || null);
-  // a projected dashboard shows counts, not who is stuck, until the teacher chooses to show the names
-  $("names-shown").hidden = !on;
-  if (!on) showNames(false);
 }
+/** The students' names on the dashboard: hidden (counts only) until the teacher presses "Show the students' names". */
 function showNames(on) {
   document.body.classList.toggle("names-shown", on);
   $("names-shown").setAttribute("aria-pressed", String(on));
   $("names-shown").textContent = on ? "Hide the students' names" : "Show the students' names";
+  namesShown.set(on || null);
 }
 $("names-shown").addEventListener("click", () => showNames(!document.body.classList.contains("names-shown")));
-$("projector").addEventListener("click", () => project(!document.body.classList.contains("projector")));
+$("projector").addEventListener("click", () => {
+  const on = !document.body.classList.contains("projector");
+  project(on);
+  if (on) showNames(false); // going onto the projector: the names go first
+});
 project(Boolean(projector.get()));
+showNames(Boolean(namesShown.get()));
 
 show();
 // a teacher link (#class=…&recover=…): the fragment is read here and wiped from the address at once
