@@ -77,6 +77,7 @@ def test_a_class_live(browser, live_server, classes, artifacts):
     teacher.fill("#create-title", "Mechanics II")
     teacher.click("#create-form button[type=submit]")
     teacher.wait_for_selector("#class-live:not([hidden])")
+    teacher.click("#names-shown")  # the names are hidden as the dashboard opens
     code = teacher.locator("#class-code").inner_text()
     assert len(code) == 6
     # the code is projected large: at least 2.8 rem
