@@ -17,6 +17,8 @@ const POLL_MS = 2000;
 const memory = stored("lagrange-teach");
 const scenes = JSON.parse(document.getElementById("class-scenes").textContent);
 const titleOf = Object.fromEntries(scenes.map((s) => [s.id, s.title]));
+// an answer the checker could not read, in the teacher's words (from the server: the CSV says the same)
+const NOT_READ_WORDS = JSON.parse(document.getElementById("class-not-read").textContent);
 const $ = (id) => document.getElementById(id);
 let current = memory.get(); // {code, key, title}
 let timer = null;
@@ -213,7 +215,7 @@ const LOADING = "Loading…";
 function showLoading() {
   const row = (columns) => el("tr", { className: "dash-loading" }, el("td", { colspan: columns, text: LOADING }));
   $("dash-assignments").tBodies[0].replaceChildren(row(4));
-  $("dash-students").tBodies[0].replaceChildren(row(4));
+  $("dash-students").tBodies[0].replaceChildren(row(6));
   for (const id of ["dash-steps", "dash-mistakes"]) $(id).replaceChildren(el("li", { className: "help dash-loading", text: LOADING }));
   for (const id of ["now-stuck", "now-mistake"]) {
     $(id).querySelector(".now-body").replaceChildren(el("p", { className: "help dash-loading", text: LOADING }));
@@ -291,26 +293,37 @@ const plural = (n, one, many = `${one}s`) => `${n} ${n === 1 ? one : many}`;
 let editing = null; // the assignment loaded into the editor ("Edit…"), saved in its place; null: a new one
 let everyStep = false; // "Show every step" pressed: the steps nobody has answered are listed too
 
-/** A step's students: done and stuck, of the class (the bar above counts answers, not students). */
+/** A step's students: done on their own (as the grade counts them), shown ("Show this step" before a right
+ * answer: right, but not counted), stuck, of the class. */
 function stepNumbers(entry, students) {
-  return `${entry.students_done} of ${plural(students, "student")} done, ${entry.stuck} stuck`;
+  const shown = entry.students_shown ? `, ${entry.students_shown} shown` : "";
+  return `${entry.students_done} of ${plural(students, "student")} done${shown}, ${entry.stuck} stuck`;
 }
 
-/** A step's answers as a bar, one unit only: its green part the right answers, its red part the wrong ones,
- * said in words beside it and in its aria-label. */
-function answerBar(entry) {
-  const total = entry.correct + entry.incorrect;
-  const words = `${plural(entry.correct, "right answer")}, ${entry.incorrect} wrong`
-    + (entry.not_read ? `, ${entry.not_read} not read` : "");
+/** What an equivalent answer to a step is, as an observation (not a mistake): another zero of U, a factor. */
+const OTHER_FORM = { potential: "wrote U with another zero", lagrangian: "wrote L plus a constant",
+  hamiltonian: "wrote h plus a constant", position: "put the origin elsewhere", equation: "wrote the equation times a factor" };
+const otherForm = (entry, students) => (entry.students_equivalent && OTHER_FORM[entry.step]
+  ? `${entry.students_equivalent} of ${students} ${OTHER_FORM[entry.step]}` : "");
+
+/** A step's students as a bar, each counted once by their best answer: green those with a right answer, red
+ * those with only wrong ones; said in words beside it (with the equivalent answers apart) and in its aria-label. */
+function answerBar(entry, students) {
+  const right = entry.students_right;
+  const wrong = entry.students_wrong;
+  const total = right + wrong;
+  const other = otherForm(entry, students);
+  const words = `${right} right, ${wrong} wrong` + (entry.not_read ? `, ${entry.not_read} ${NOT_READ_WORDS}` : "")
+    + (other ? ` · ${other}` : "");
   const bar = el("div", { className: "dash-bar", role: "img",
-    "aria-label": `Answers to this step: ${words} (green: right, red: wrong)` });
+    "aria-label": `Students who answered this step: ${words} (green: right, red: wrong)` });
   const good = el("span", { className: "dash-good" });
   const bad = el("span", { className: "dash-bad" });
-  good.style.width = total ? `${(100 * entry.correct) / total}%` : "0";
-  bad.style.width = total ? `${(100 * entry.incorrect) / total}%` : "0";
+  good.style.width = total ? `${(100 * right) / total}%` : "0";
+  bad.style.width = total ? `${(100 * wrong) / total}%` : "0";
   bar.append(good, bad);
   return el("div", { className: "dash-bar-row" },
-    el("span", { className: "dash-bar-unit", text: "Answers" }), bar,
+    el("span", { className: "dash-bar-unit", text: "Students" }), bar,
     el("span", { className: "dash-bar-words", text: words }));
 }
 
@@ -330,7 +343,7 @@ async function drawSteps(summary) {
     const mistakes = Object.entries(entry.mistakes);
     rows.push(el("li", { className: "dash-step" },
       el("div", { className: "dash-label" }, typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` })),
-      answerBar(entry),
+      answerBar(entry, summary.students),
       el("p", { className: "dash-numbers",
         text: stepNumbers(entry, summary.students)
           + (mistakes.length ? `; most often: ${entry.mistake_names?.[mistakes[0][0]] || mistakeWords(mistakes[0][0])}` : "") }),
@@ -339,6 +352,12 @@ async function drawSteps(summary) {
   list.replaceChildren(...rows);
   if (!rows.length) list.replaceChildren(el("li", { className: "help", text: quiet ? "No answer yet." : "No steps yet: set an assignment, or wait for the first answer." }));
 }
+
+// the Score header sorts by score (lowest first, then highest first), a third click goes back to "who is behind"
+$("dash-score-sort").addEventListener("click", () => {
+  order = { behind: "score-up", "score-up": "score-down", "score-down": "behind" }[order];
+  poll();
+});
 
 $("dash-steps-all").addEventListener("click", () => {
   everyStep = !everyStep;
@@ -360,6 +379,15 @@ async function drawMistakes(summary) {
       el("span", { text: " in " }), ...pieces,
       whoList(mistake.students, "Show the students", `mistake|${mistake.key}`)));
   }
+  // beside the mistakes, what is right but not as the set-up asks (another zero of U): an observation, not a mistake
+  for (const entry of summary.steps.filter((e) => otherForm(e, summary.students))) {
+    const label = await labelOf(entry);
+    const name = entry.step === "potential" ? "another zero of U" : `${OTHER_FORM[entry.step].replace(/^wrote /, "")}`;
+    rows.push(el("li", { className: "dash-mistake dash-observation", "data-observation": entry.step },
+      el("span", { className: "dash-count", text: `${entry.students_equivalent} of ${summary.students}` }),
+      el("strong", { text: name }), el("span", { text: " (right, not a mistake) in " }), typeset(el("span"), label.tex),
+      el("span", { className: "dash-where", text: ` (${label.where})` })));
+  }
   $("dash-mistakes").replaceChildren(...rows);
   if (!rows.length) $("dash-mistakes").replaceChildren(el("li", { className: "help", text: "No named mistake so far." }));
 }
@@ -373,7 +401,10 @@ function drawAssignments(summary) {
     el("td", { text: when(a.due) }),
     // the names apart from the counts, so projector mode can show the counts alone
     el("td", { className: "dash-done" }, `${a.students_done.length} of ${summary.students}`,
-      a.students_done.length ? el("span", { className: "dash-names", text: `: ${a.students_done.join(", ")}` }) : null),
+      a.students_done.length ? el("span", { className: "dash-names", text: `: ${a.students_done.join(", ")}` }) : null,
+      // through every step, but with one shown ("Show this step"): not done, as the grade does not count it
+      a.students_shown?.length ? el("span", { className: "dash-shown" }, ` · ${a.students_shown.length} with a step shown`,
+        el("span", { className: "dash-names", text: `: ${a.students_shown.join(", ")}` })) : null),
     el("td", { className: "dash-stuck", ...(a.students_stuck.length ? { "data-count": plural(a.students_stuck.length, "student") } : {}) },
       a.students_stuck.length ? el("span", { className: "dash-names", text: a.students_stuck.join(", ") }) : "—"))));
 }
@@ -400,8 +431,20 @@ function codeButton(name) {
   return button;
 }
 
-async function drawStudents(students) {
+/** Each student's score as the gradebook computes it (GET …/grades: its one home), per assignment: "66.7 · —". */
+const scoreWords = (grades) => (grades || []).map((g) => (g.score === null ? "—" : g.score.toFixed(1))).join(" · ");
+/** One number to sort by: the mean of the assignments' scores (no score yet counts 0). */
+const scoreKey = (grades) => (grades?.length ? grades.reduce((sum, g) => sum + (g.score ?? 0), 0) / grades.length : 0);
+let order = "behind"; // the Students table's order: "behind" (fewest steps done on one's own first), or by score
+
+async function drawStudents(found, book) {
   const rows = [];
+  const gradesOf = Object.fromEntries((book?.students || []).map((s) => [s.name, s.grades]));
+  const students = [...found];
+  if (order === "behind") students.sort((a, b) => a.own - b.own || b.shown - a.shown || (a.name < b.name ? -1 : 1));
+  else students.sort((a, b) => (order === "score-up" ? 1 : -1) * (scoreKey(gradesOf[a.name]) - scoreKey(gradesOf[b.name]))
+    || (a.name < b.name ? -1 : 1));
+  $("dash-score-sort").parentElement.setAttribute("aria-sort", order === "score-up" ? "ascending" : order === "score-down" ? "descending" : "none");
   for (const s of students) {
     const last = [...s.steps].sort((a, b) => (a.last < b.last ? 1 : -1))[0];
     const cell = el("td", { className: "dash-last" });
@@ -411,13 +454,16 @@ async function drawStudents(students) {
         coordinate: last.coordinate, assignment: last.assignment };
       const label = await labelOf(entry);
       cell.append(typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` }),
-        el("span", { text: last.done ? " ✓ done" : " · not yet right" }));
+        el("span", { text: last.shown ? " · shown" : last.done ? " ✓ done" : " · not yet right" }));
     } else cell.textContent = "—";
     rows.push(el("tr", { "data-student": s.name },
       el("th", { scope: "row" }, s.name, " ", codeButton(s.name)),
-      el("td", { text: s.assigned ? `${s.done} of ${s.assigned}` : String(s.done) }),
+      // done on one's own, as the grade counts them; the steps shown apart
+      el("td", { text: s.assigned ? `${s.own} of ${s.assigned}` : String(s.own) }),
+      el("td", { className: "dash-shown-count", text: String(s.shown) }),
+      el("td", { className: "dash-score", text: scoreWords(gradesOf[s.name]) }),
       // every answer sent, those the checker could not read said apart (they are never counted wrong)
-      el("td", { text: s.not_read ? `${s.attempts} (${s.not_read} not read)` : String(s.attempts) }),
+      el("td", { text: s.not_read ? `${s.attempts} (${s.not_read} ${NOT_READ_WORDS})` : String(s.attempts) }),
       cell));
   }
   $("dash-students").tBodies[0].replaceChildren(...rows);
@@ -427,9 +473,10 @@ async function poll() {
   clearTimeout(timer);
   if (!current) return;
   try {
-    const [summary, students] = await Promise.all([
+    const [summary, students, book] = await Promise.all([
       api("GET", `/api/classes/${current.code}/summary`, { key: current.key }),
       api("GET", `/api/classes/${current.code}/students`, { key: current.key }),
+      api("GET", `/api/classes/${current.code}/grades`, { key: current.key }),
     ]);
     if (summary.status === 403) {
       $("dash-counts").textContent = "This class no longer exists (deleted, or past its retention).";
@@ -442,7 +489,7 @@ async function poll() {
       drawAssignments(s);
       await drawSteps(s);
       await drawMistakes(s);
-      await drawStudents(students.data.students);
+      await drawStudents(students.data.students, book.status === 200 ? book.data : null);
     }
   } catch {
     $("dash-counts").textContent = "The server cannot be reached; retrying…";

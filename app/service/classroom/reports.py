@@ -31,7 +31,10 @@ CSV_COLUMNS = ("time (UTC)", "student", "assignment", "item", "step", "verdict",
                "mistake", "answer")
 FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
 # a verdict in a teacher's words: "equivalent" is right (the grade counts it), in another form than the book's
-VERDICT_WORDS = {"correct": "right", "equivalent": "right, in an equivalent form", "incorrect": "wrong"}
+# an answer the checker could not read, in a teacher's words: the one home of the phrase (the dashboard's too)
+NOT_READ_WORDS = "could not be read"
+VERDICT_WORDS = {"correct": "right", "equivalent": "right, in an equivalent form", "incorrect": "wrong",
+                 NOT_READ: NOT_READ_WORDS}
 TIME_FORMAT = "%Y-%m-%d %H:%M:%S"  # to the second, in UTC (the column says so)
 BOM = "\ufeff"  # a spreadsheet opened by a double click reads the file as UTF-8 (θ̈, ≈, ₁) only with it
 
@@ -284,7 +287,7 @@ def _counted(verdict: str, shown: bool, late: bool) -> str:
 def export_csv(db: Database, class_id: int, series: list[dict[str, Any]]) -> bytes:
     """Every attempt of the class, oldest first, as CSV (UTF-8 with a byte-order mark): its time to the second in
     UTC, its assignment ("1. Week 1"), the scene by its title or the typed system by its name, the step in words
-    ("energy function h"), the verdict in words ("not read" for an answer the checker could not read), whether it
+    ("energy function h"), the verdict in words (``NOT_READ_WORDS`` for an answer the checker could not read), whether it
     was typed after "Show this step" on that step, whether it came after the due time, whether it counts toward the
     grade (and if not, why), the mistake in the third person (for an answer not read, why: the refusal's words) and
     the answer exactly as typed (a judged answer is a checked expression: names, numbers, operators and the allowed
@@ -319,7 +322,7 @@ def export_csv(db: Database, class_id: int, series: list[dict[str, Any]]) -> byt
         shown = seen is not None and seen <= at
         late = is_late(at, dues.get(assignment))
         why = refusal_words(response) if unread else for_teacher(words) if words else mistake
-        counted = "no: not read" if unread else _counted(verdict, shown, late)
+        counted = f"no: {NOT_READ_WORDS}" if unread else _counted(verdict, shown, late)
         cells = [name, titles.get(assignment, ""), where, step_title(step, coordinate),
                  VERDICT_WORDS.get(verdict, verdict), "yes" if shown else "no", "yes" if late else "no", counted, why]
         writer.writerow([at.strftime(TIME_FORMAT), *(_cell(v) for v in cells), _cell(answer) if unread else answer])
