@@ -19,7 +19,7 @@ from typing import Any
 
 from sqlalchemy import case, func, literal, null, select, union_all
 
-from app.engine.check_problem import step_title
+from app.engine.check_problem import step_heading
 from app.engine.mistake_teacher import for_teacher
 from app.scenes import SCENES
 from app.service.classroom.database import Database
@@ -286,8 +286,8 @@ def _counted(verdict: str, shown: bool, late: bool) -> str:
 
 def export_csv(db: Database, class_id: int, series: list[dict[str, Any]]) -> bytes:
     """Every attempt of the class, oldest first, as CSV (UTF-8 with a byte-order mark): its time to the second in
-    UTC, its assignment ("1. Week 1"), the scene by its title or the typed system by its name, the step in words
-    ("energy function h"), the verdict in words (``NOT_READ_WORDS`` for an answer the checker could not read), whether it
+    UTC, its assignment ("1. Week 1"), the scene by its title or the typed system by its name, the step in words, as a heading
+    ("Energy function h", "Position x₁"), the verdict in words (``NOT_READ_WORDS`` for an answer the checker could not read), whether it
     was typed after "Show this step" on that step, whether it came after the due time, whether it counts toward the
     grade (and if not, why), the mistake in the third person (for an answer not read, why: the refusal's words) and
     the answer exactly as typed (a judged answer is a checked expression: names, numbers, operators and the allowed
@@ -323,7 +323,7 @@ def export_csv(db: Database, class_id: int, series: list[dict[str, Any]]) -> byt
         late = is_late(at, dues.get(assignment))
         why = refusal_words(response) if unread else for_teacher(words) if words else mistake
         counted = f"no: {NOT_READ_WORDS}" if unread else _counted(verdict, shown, late)
-        cells = [name, titles.get(assignment, ""), where, step_title(step, coordinate),
+        cells = [name, titles.get(assignment, ""), where, step_heading(step, coordinate),
                  VERDICT_WORDS.get(verdict, verdict), "yes" if shown else "no", "yes" if late else "no", counted, why]
         writer.writerow([at.strftime(TIME_FORMAT), *(_cell(v) for v in cells), _cell(answer) if unread else answer])
     return out.getvalue().encode("utf-8")
