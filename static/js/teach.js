@@ -38,6 +38,9 @@ const SYSTEM_PARTS = {
   kinetic: "The kinetic energy T", potential: "The potential U", particles: "The particles",
   forces: "The generalized forces", nonnegative: "The names that are never negative",
 };
+/** A due time already past, in the form's words and the picker's local time (never ISO 8601 to a teacher). */
+const PAST_DUE = (value = $("assign-due").value) => `That time${value ? ` (${new Date(value).toLocaleString([],
+  { dateStyle: "medium", timeStyle: "short" })})` : ""} has passed: choose a later one.`;
 const capital = (text) => text.charAt(0).toUpperCase() + text.slice(1);
 
 /**
@@ -60,6 +63,7 @@ function refusal(r, at) {
   if (loc[0] === "items" && loc.length === 1 && data.errors) return { at: "assign-status", text: NOTHING_SET };
   if (loc[0] === "items" && loc[2] === "name") return { at: "assign-system-status", text: "Name the system: students see it by its name." };
   if (loc[0] === "items" && loc[2] === "setup") return { at: "assign-system-status", text: NO_SETUP };
+  if (loc[0] === "due") return { at: "assign-status", text: PAST_DUE() };
   if (loc[0] === "title") return { at: "assign-status", text: "Give the assignment a title (200 characters at most)." };
   return { at, text: said ? `${capital(said)}.`.replace(/([.!?])\.$/, "$1") : `Refused (${r.status}).` };
 }
@@ -682,6 +686,12 @@ $("assign-save").addEventListener("click", async () => {
   // an edited assignment whose due time was left as it was keeps it exactly (a time already past stays allowed)
   const due = editing && typedDue === localInput(editing.due) ? editing.due
     : typedDue ? new Date(typedDue).toISOString() : null;
+  // a new due time already past: said at the form, in its own local time, before anything is sent
+  if (due && due !== editing?.due && new Date(due) <= new Date()) {
+    $("assign-status").textContent = PAST_DUE(typedDue);
+    $("assign-due").focus();
+    return;
+  }
   if (editing) {
     // a scene's parameters (set through the API) stay with the scene
     for (const item of items) item.parameters = editing.items.find((i) => i.scene && i.scene === item.scene)?.parameters;
@@ -744,6 +754,25 @@ const tickSteps = (list, steps) => {
   }
 };
 
+/** A stored system as a teacher types it: pretty-printed, without the fields left at their defaults (null, "",
+ * empty lists), and a parameter with nothing but its name (and the default value 1) as its bare name. */
+function asTyped(system) {
+  const clean = (value) => {
+    if (Array.isArray(value)) return value.map(clean);
+    if (!value || typeof value !== "object") return value;
+    const kept = Object.entries(value).map(([k, v]) => [k, clean(v)])
+      .filter(([, v]) => v !== null && v !== "" && !(Array.isArray(v) && !v.length)
+        && !(typeof v === "object" && v && !Array.isArray(v) && !Object.keys(v).length));
+    return Object.fromEntries(kept);
+  };
+  const found = clean(system);
+  if (Array.isArray(found.parameters)) {
+    found.parameters = found.parameters.map((p) => (p && typeof p === "object" && Object.keys(p).every((k) => k === "name"
+      || (k === "value" && p.value === 1)) ? p.name : p));
+  }
+  return JSON.stringify(found, null, 2);
+}
+
 /** An assignment loaded into the editor: its title, due time, scenes and steps ticked, its typed system. */
 async function editAssignment(a) {
   resetEditor();
@@ -765,7 +794,8 @@ async function editAssignment(a) {
   if (typed) {
     $("assign-system-box").open = true;
     $("assign-system-name").value = typed.name;
-    $("assign-system").value = JSON.stringify(typed.system);
+    $("assign-system").value = asTyped(typed.system);
+    $("assign-system-setup").value = typed.setup || ""; // what the students read above the boxes, kept
     if (await loadSystemSteps()) tickSteps($("assign-system-steps"), typed.steps);
   }
   $("assign-editor-title").scrollIntoView({ block: "start" });
