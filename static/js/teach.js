@@ -108,6 +108,7 @@ async function open(code, key) {
   memory.set(current);
   useSeries(r.data.assignments);
   show();
+  showRecovery();
   buildEditor();
   showLoading();
   poll();
@@ -139,13 +140,23 @@ $("create-form").addEventListener("submit", async (event) => {
     $("create-status").textContent = r.status === 422 && found.at === "assign-status" ? NO_TITLE : found.text;
     return;
   }
+  // shown until "I have kept it" (a reload keeps it): the server keeps only its hash, so this is its one showing
+  pending.set({ code: r.data.code, recovery: r.data.recovery_code, link: `${window.location.origin}${r.data.teacher_link}` });
   await open(r.data.code, r.data.teacher_key);
-  // shown once: the server keeps only its hash; broken only between its groups on a narrow screen
-  secret($("recovery-code"), r.data.recovery_code, /(?<=-)/);
-  secret($("recovery-link"), `${window.location.origin}${r.data.teacher_link}`, /(?=[#&])|(?<=-)/);
+});
+
+const pending = stored("lagrange-teach-recovery"); // the recovery code not yet kept: {code, recovery, link}
+
+/** The recovery banner, while the class just made has a recovery code the teacher has not said they kept. */
+function showRecovery() {
+  const found = pending.get();
+  if (!found || !current || found.code !== current.code) return;
+  // broken only between its groups on a narrow screen
+  secret($("recovery-code"), found.recovery, /(?<=-)/);
+  secret($("recovery-link"), found.link, /(?=[#&])|(?<=-)/);
   $("recovery-status").textContent = "";
   $("class-recovery").hidden = false;
-});
+}
 
 /** A secret's text in unbreakable parts (split by `at`), so a line may end only between two of them. */
 function secret(element, text, at) {
@@ -176,6 +187,7 @@ $("recovery-code-copy").addEventListener("click", () => copy($("recovery-code").
 $("recovery-link-copy").addEventListener("click", () => copy($("recovery-link").dataset.text, "teacher link"));
 
 $("recovery-done").addEventListener("click", () => {
+  pending.set(null);
   $("class-recovery").hidden = true;
   $("recovery-code").textContent = "";
   $("recovery-link").textContent = "";
@@ -824,6 +836,8 @@ function forget(message = "") {
   clearTimeout(timer);
   current = null;
   memory.set(null);
+  pending.set(null);
+  $("class-recovery").hidden = true;
   show();
   $("start-status").textContent = message;
 }
@@ -837,11 +851,23 @@ $("forget-class").addEventListener("click", () => {
   forget(`The class ${code} is closed on this device, not deleted: open it again with its recovery code, its teacher `
     + "link or its instructor key.");
 });
+/** The delete dialog's answer: "download", "delete" or "keep" (Escape keeps the class). */
+function askDelete(code) {
+  const dialog = $("delete-dialog");
+  $("delete-dialog-code").textContent = code;
+  dialog.returnValue = "keep";
+  return new Promise((resolve) => {
+    dialog.addEventListener("close", () => resolve(dialog.returnValue || "keep"), { once: true });
+    dialog.showModal();
+  });
+}
+
 $("delete-class").addEventListener("click", async () => {
   const { code } = current;
-  // the record offered first: once deleted, nothing of it can be downloaded
-  if (window.confirm(`Before deleting the class ${code}: download every answer and the grades (CSV) first? `
-    + "OK downloads them now; Cancel goes on without them.")) {
+  // the record offered first, in three plain buttons: once deleted, nothing of it can be downloaded
+  const chosen = await askDelete(code);
+  if (chosen === "keep") return;
+  if (chosen === "download") {
     await download(`/api/classes/${code}/export?format=csv`, `class-${code}.csv`);
     await download(`/api/classes/${code}/grades?format=details-csv`, `grades-${code}-details.csv`);
   }
