@@ -177,7 +177,8 @@ def test_refusals_say_what_is_wrong(client, classes):
     summary = client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).json()
     assert summary["steps"][1] | {"mistakes": None} == {"assignment": 1, "system": "spring", "step": "acceleration", "coordinate": "x",
                                                         "correct": 1, "incorrect": 0, "not_read": 0,
-                                                        "students_done": 1,
+                                                        "students_done": 1, "students_shown": 0, "students_right": 1,
+                                                        "students_wrong": 0, "students_equivalent": 0,
                                                         "mistakes": None, "mistake_names": {},
                                                         "stuck": 0, "students_stuck": []}
 
