@@ -489,11 +489,13 @@ async function poll() {
   clearTimeout(timer);
   if (!current) return;
   try {
-    const [summary, students, book] = await Promise.all([
+    const [summary, students] = await Promise.all([
       api("GET", `/api/classes/${current.code}/summary`, { key: current.key }),
       api("GET", `/api/classes/${current.code}/students`, { key: current.key }),
-      api("GET", `/api/classes/${current.code}/grades`, { key: current.key }),
     ]);
+    // the scores after them, not beside them: a page holds at most two requests at a time (a classroom's network
+    // shares the server's connections)
+    const book = summary.status === 200 ? await api("GET", `/api/classes/${current.code}/grades`, { key: current.key }) : null;
     if (summary.status === 403) {
       $("dash-counts").textContent = "This class no longer exists (deleted, or past its retention).";
       return;
@@ -505,7 +507,7 @@ async function poll() {
       drawAssignments(s);
       await drawSteps(s);
       await drawMistakes(s);
-      await drawStudents(students.data.students, book.status === 200 ? book.data : null);
+      await drawStudents(students.data.students, book?.status === 200 ? book.data : null);
     }
   } catch {
     $("dash-counts").textContent = "The server cannot be reached; retrying…";
