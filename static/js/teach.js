@@ -5,7 +5,9 @@
  * step with the most students stuck (answered, not yet right) and the most common named mistake,
  * totalled over every scene, each one click from the students concerned; then the steps, most stuck
  * first (bars of right and wrong answers), every mistake, each assignment of the series (who is done,
- * who is stuck), one row per student. Projector mode enlarges the type and hides the editing. The
+ * who is stuck), one row per student (score, steps shown; who is behind first). The students' names are hidden
+ * until the teacher shows them (remembered in the browser); projector mode hides them again, enlarges the type and
+ * hides the editing. A step shown before it was typed right is "shown", never "done" (the grade's rule). The
  * instructor key stays in localStorage. A class holds a series of assignments (title, optional due
  * time, scenes and typed systems with their steps), added and deleted here. The recovery code is
  * shown once at creation; the teacher link carries it in its fragment (#class=…&recover=…), which a
