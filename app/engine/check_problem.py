@@ -117,7 +117,8 @@ def step_title(step: str, name: str | None) -> str:
     the one home of the steps' titles (a step the engine does not know comes back as given)."""
     shown = plain_name(name) if name else ""
     return {
-        "position": "position",
+        # a position step's name is its component (x₁: x of the first body), so each of a figure's is named apart
+        "position": f"position {shown}" if shown else "position",
         "kinetic": "kinetic energy T",
         "potential": "potential energy U",
         "lagrangian": "Lagrangian L",
@@ -127,6 +128,13 @@ def step_title(step: str, name: str | None) -> str:
         "hamiltonian": "energy function h",
         "omega_squared": "ω² of small oscillations",
     }.get(step, step)
+
+
+def step_heading(step: str, name: str | None) -> str:
+    """A step's title standing alone (a cell, a list), in sentence case: "Kinetic energy T", "Position x₁",
+    "Euler–Lagrange equation for θ" (``step_title`` is the same words inside a sentence)."""
+    title = step_title(step, name)
+    return title[:1].upper() + title[1:]
 
 
 def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: bool = True) -> Problem:

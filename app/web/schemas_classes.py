@@ -249,7 +249,17 @@ class StepSummary(BaseModel):
     correct: int = Field(description="Answers judged correct or equivalent.")
     incorrect: int = Field(description="Answers judged wrong.")
     not_read: int = Field(0, description="Answers the checker could not read (\"Not checked\"): never judged.")
-    students_done: int = Field(description="Students with a correct or equivalent answer to the step.")
+    students_done: int = Field(
+        description="Students who answered the step right on their own: right, and not shown (\"Show this step\") "
+        "before their first right answer (the gradebook's rule)."
+    )
+    students_shown: int = Field(0, description="Students shown the step before any right answer of theirs.")
+    students_right: int = Field(0, description="Students with a correct or equivalent answer (each counted once).")
+    students_wrong: int = Field(0, description="Students with a wrong answer and no right one (each counted once).")
+    students_equivalent: int = Field(
+        0, description="Students with an equivalent answer: U, L or h plus a constant (another zero of U), or an "
+        "equation times a factor."
+    )
     mistakes: dict[str, int] = Field(
         description="Named mistakes among the incorrect answers, by the tutor's stable key, most common first."
     )
@@ -275,7 +285,10 @@ class AssignmentProgress(BaseModel):
     title: str
     due: str | None
     steps: int
-    students_done: list[str] = Field(description="Students with every step of it right, alphabetical.")
+    students_done: list[str] = Field(description="Students with every step of it right on their own, alphabetical.")
+    students_shown: list[str] = Field(
+        default_factory=list, description="Students through every step with one shown at least, alphabetical."
+    )
     students_stuck: list[str] = Field(description="Students stuck on one of its steps, alphabetical.")
 
 
@@ -298,6 +311,7 @@ class StudentStep(BaseModel):
     attempts: int = Field(description="The student's answers to the step, those not read included.")
     not_read: int = Field(0, description="Of them, answers the checker could not read.")
     done: bool
+    shown: bool = Field(False, description="\"Show this step\" pressed before the first right answer (or none).")
     last: str
 
 
@@ -308,6 +322,8 @@ class StudentProgress(BaseModel):
     attempts: int = Field(description="Every answer the student sent, those not read included.")
     not_read: int = Field(0, description="Of them, answers the checker could not read (never counted wrong).")
     done: int = Field(description="Assigned steps done (all steps done when nothing is assigned).")
+    own: int = Field(0, description="Of them, those done on one's own (not shown first): the ones the grade counts.")
+    shown: int = Field(0, description="Assigned steps shown before any right answer.")
     assigned: int
     steps: list[StudentStep]
 

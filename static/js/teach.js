@@ -5,7 +5,9 @@
  * step with the most students stuck (answered, not yet right) and the most common named mistake,
  * totalled over every scene, each one click from the students concerned; then the steps, most stuck
  * first (bars of right and wrong answers), every mistake, each assignment of the series (who is done,
- * who is stuck), one row per student. Projector mode enlarges the type and hides the editing. The
+ * who is stuck), one row per student (score, steps shown; who is behind first). The students' names are hidden
+ * until the teacher shows them (remembered in the browser); projector mode hides them again, enlarges the type and
+ * hides the editing. A step shown before it was typed right is "shown", never "done" (the grade's rule). The
  * instructor key stays in localStorage. A class holds a series of assignments (title, optional due
  * time, scenes and typed systems with their steps), added and deleted here. The recovery code is
  * shown once at creation; the teacher link carries it in its fragment (#class=…&recover=…), which a
@@ -17,6 +19,8 @@ const POLL_MS = 2000;
 const memory = stored("lagrange-teach");
 const scenes = JSON.parse(document.getElementById("class-scenes").textContent);
 const titleOf = Object.fromEntries(scenes.map((s) => [s.id, s.title]));
+// an answer the checker could not read, in the teacher's words (from the server: the CSV says the same)
+const NOT_READ_WORDS = JSON.parse(document.getElementById("class-not-read").textContent);
 const $ = (id) => document.getElementById(id);
 let current = memory.get(); // {code, key, title}
 let timer = null;
@@ -36,6 +40,9 @@ const SYSTEM_PARTS = {
   kinetic: "The kinetic energy T", potential: "The potential U", particles: "The particles",
   forces: "The generalized forces", nonnegative: "The names that are never negative",
 };
+/** A due time already past, in the form's words and the picker's local time (never ISO 8601 to a teacher). */
+const PAST_DUE = (value = $("assign-due").value) => `That time${value ? ` (${new Date(value).toLocaleString([],
+  { dateStyle: "medium", timeStyle: "short" })})` : ""} has passed: choose a later one.`;
 const capital = (text) => text.charAt(0).toUpperCase() + text.slice(1);
 
 /**
@@ -58,6 +65,7 @@ function refusal(r, at) {
   if (loc[0] === "items" && loc.length === 1 && data.errors) return { at: "assign-status", text: NOTHING_SET };
   if (loc[0] === "items" && loc[2] === "name") return { at: "assign-system-status", text: "Name the system: students see it by its name." };
   if (loc[0] === "items" && loc[2] === "setup") return { at: "assign-system-status", text: NO_SETUP };
+  if (loc[0] === "due") return { at: "assign-status", text: PAST_DUE() };
   if (loc[0] === "title") return { at: "assign-status", text: "Give the assignment a title (200 characters at most)." };
   return { at, text: said ? `${capital(said)}.`.replace(/([.!?])\.$/, "$1") : `Refused (${r.status}).` };
 }
@@ -106,6 +114,7 @@ async function open(code, key) {
   memory.set(current);
   useSeries(r.data.assignments);
   show();
+  showRecovery();
   buildEditor();
   showLoading();
   poll();
@@ -138,13 +147,23 @@ $("create-form").addEventListener("submit", async (event) => {
     $("create-status").textContent = r.status === 422 && found.at === "assign-status" ? NO_TITLE : found.text;
     return;
   }
+  // shown until "I have kept it" (a reload keeps it): the server keeps only its hash, so this is its one showing
+  pending.set({ code: r.data.code, recovery: r.data.recovery_code, link: `${window.location.origin}${r.data.teacher_link}` });
   await open(r.data.code, r.data.teacher_key);
-  // shown once: the server keeps only its hash; broken only between its groups on a narrow screen
-  secret($("recovery-code"), r.data.recovery_code, /(?<=-)/);
-  secret($("recovery-link"), `${window.location.origin}${r.data.teacher_link}`, /(?=[#&])|(?<=-)/);
+});
+
+const pending = stored("lagrange-teach-recovery"); // the recovery code not yet kept: {code, recovery, link}
+
+/** The recovery banner, while the class just made has a recovery code the teacher has not said they kept. */
+function showRecovery() {
+  const found = pending.get();
+  if (!found || !current || found.code !== current.code) return;
+  // broken only between its groups on a narrow screen
+  secret($("recovery-code"), found.recovery, /(?<=-)/);
+  secret($("recovery-link"), found.link, /(?=[#&])|(?<=-)/);
   $("recovery-status").textContent = "";
   $("class-recovery").hidden = false;
-});
+}
 
 /** A secret's text in unbreakable parts (split by `at`), so a line may end only between two of them. */
 function secret(element, text, at) {
@@ -175,6 +194,7 @@ $("recovery-code-copy").addEventListener("click", () => copy($("recovery-code").
 $("recovery-link-copy").addEventListener("click", () => copy($("recovery-link").dataset.text, "teacher link"));
 
 $("recovery-done").addEventListener("click", () => {
+  pending.set(null);
   $("class-recovery").hidden = true;
   $("recovery-code").textContent = "";
   $("recovery-link").textContent = "";
@@ -218,7 +238,7 @@ const LOADING = "Loading…";
 function showLoading() {
   const row = (columns) => el("tr", { className: "dash-loading" }, el("td", { colspan: columns, text: LOADING }));
   $("dash-assignments").tBodies[0].replaceChildren(row(4));
-  $("dash-students").tBodies[0].replaceChildren(row(4));
+  $("dash-students").tBodies[0].replaceChildren(row(6));
   for (const id of ["dash-steps", "dash-mistakes"]) $(id).replaceChildren(el("li", { className: "help dash-loading", text: LOADING }));
   for (const id of ["now-stuck", "now-mistake"]) {
     $(id).querySelector(".now-body").replaceChildren(el("p", { className: "help dash-loading", text: LOADING }));
@@ -296,26 +316,37 @@ const plural = (n, one, many = `${one}s`) => `${n} ${n === 1 ? one : many}`;
 let editing = null; // the assignment loaded into the editor ("Edit…"), saved in its place; null: a new one
 let everyStep = false; // "Show every step" pressed: the steps nobody has answered are listed too
 
-/** A step's students: done and stuck, of the class (the bar above counts answers, not students). */
+/** A step's students: done on their own (as the grade counts them), shown ("Show this step" before a right
+ * answer: right, but not counted), stuck, of the class. */
 function stepNumbers(entry, students) {
-  return `${entry.students_done} of ${plural(students, "student")} done, ${entry.stuck} stuck`;
+  const shown = entry.students_shown ? `, ${entry.students_shown} shown` : "";
+  return `${entry.students_done} of ${plural(students, "student")} done${shown}, ${entry.stuck} stuck`;
 }
 
-/** A step's answers as a bar, one unit only: its green part the right answers, its red part the wrong ones,
- * said in words beside it and in its aria-label. */
-function answerBar(entry) {
-  const total = entry.correct + entry.incorrect;
-  const words = `${plural(entry.correct, "right answer")}, ${entry.incorrect} wrong`
-    + (entry.not_read ? `, ${entry.not_read} not read` : "");
+/** What an equivalent answer to a step is, as an observation (not a mistake): another zero of U, a factor. */
+const OTHER_FORM = { potential: "wrote U with another zero", lagrangian: "wrote L plus a constant",
+  hamiltonian: "wrote h plus a constant", position: "put the origin elsewhere", equation: "wrote the equation times a factor" };
+const otherForm = (entry, students) => (entry.students_equivalent && OTHER_FORM[entry.step]
+  ? `${entry.students_equivalent} of ${students} ${OTHER_FORM[entry.step]}` : "");
+
+/** A step's students as a bar, each counted once by their best answer: green those with a right answer, red
+ * those with only wrong ones; said in words beside it (with the equivalent answers apart) and in its aria-label. */
+function answerBar(entry, students) {
+  const right = entry.students_right;
+  const wrong = entry.students_wrong;
+  const total = right + wrong;
+  const other = otherForm(entry, students);
+  const words = `${right} right, ${wrong} wrong` + (entry.not_read ? `, ${entry.not_read} ${NOT_READ_WORDS}` : "")
+    + (other ? ` · ${other}` : "");
   const bar = el("div", { className: "dash-bar", role: "img",
-    "aria-label": `Answers to this step: ${words} (green: right, red: wrong)` });
+    "aria-label": `Students who answered this step: ${words} (green: right, red: wrong)` });
   const good = el("span", { className: "dash-good" });
   const bad = el("span", { className: "dash-bad" });
-  good.style.width = total ? `${(100 * entry.correct) / total}%` : "0";
-  bad.style.width = total ? `${(100 * entry.incorrect) / total}%` : "0";
+  good.style.width = total ? `${(100 * right) / total}%` : "0";
+  bad.style.width = total ? `${(100 * wrong) / total}%` : "0";
   bar.append(good, bad);
   return el("div", { className: "dash-bar-row" },
-    el("span", { className: "dash-bar-unit", text: "Answers" }), bar,
+    el("span", { className: "dash-bar-unit", text: "Students" }), bar,
     el("span", { className: "dash-bar-words", text: words }));
 }
 
@@ -335,7 +366,7 @@ async function drawSteps(summary) {
     const mistakes = Object.entries(entry.mistakes);
     rows.push(el("li", { className: "dash-step" },
       el("div", { className: "dash-label" }, typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` })),
-      answerBar(entry),
+      answerBar(entry, summary.students),
       el("p", { className: "dash-numbers",
         text: stepNumbers(entry, summary.students)
           + (mistakes.length ? `; most often: ${entry.mistake_names?.[mistakes[0][0]] || mistakeWords(mistakes[0][0])}` : "") }),
@@ -344,6 +375,12 @@ async function drawSteps(summary) {
   list.replaceChildren(...rows);
   if (!rows.length) list.replaceChildren(el("li", { className: "help", text: quiet ? "No answer yet." : "No steps yet: set an assignment, or wait for the first answer." }));
 }
+
+// the Score header sorts by score (lowest first, then highest first), a third click goes back to "who is behind"
+$("dash-score-sort").addEventListener("click", () => {
+  order = { behind: "score-up", "score-up": "score-down", "score-down": "behind" }[order];
+  poll();
+});
 
 $("dash-steps-all").addEventListener("click", () => {
   everyStep = !everyStep;
@@ -365,6 +402,15 @@ async function drawMistakes(summary) {
       el("span", { text: " in " }), ...pieces,
       whoList(mistake.students, "Show the students", `mistake|${mistake.key}`)));
   }
+  // beside the mistakes, what is right but not as the set-up asks (another zero of U): an observation, not a mistake
+  for (const entry of summary.steps.filter((e) => otherForm(e, summary.students))) {
+    const label = await labelOf(entry);
+    const name = entry.step === "potential" ? "another zero of U" : `${OTHER_FORM[entry.step].replace(/^wrote /, "")}`;
+    rows.push(el("li", { className: "dash-mistake dash-observation", "data-observation": entry.step },
+      el("span", { className: "dash-count", text: `${entry.students_equivalent} of ${summary.students}` }),
+      el("strong", { text: name }), el("span", { text: " (right, not a mistake) in " }), typeset(el("span"), label.tex),
+      el("span", { className: "dash-where", text: ` (${label.where})` })));
+  }
   $("dash-mistakes").replaceChildren(...rows);
   if (!rows.length) $("dash-mistakes").replaceChildren(el("li", { className: "help", text: "No named mistake so far." }));
 }
@@ -378,7 +424,10 @@ function drawAssignments(summary) {
     el("td", { text: when(a.due) }),
     // the names apart from the counts, so projector mode can show the counts alone
     el("td", { className: "dash-done" }, `${a.students_done.length} of ${summary.students}`,
-      a.students_done.length ? el("span", { className: "dash-names", text: `: ${a.students_done.join(", ")}` }) : null),
+      a.students_done.length ? el("span", { className: "dash-names", text: `: ${a.students_done.join(", ")}` }) : null,
+      // through every step, but with one shown ("Show this step"): not done, as the grade does not count it
+      a.students_shown?.length ? el("span", { className: "dash-shown" }, ` · ${a.students_shown.length} with a step shown`,
+        el("span", { className: "dash-names", text: `: ${a.students_shown.join(", ")}` })) : null),
     el("td", { className: "dash-stuck", ...(a.students_stuck.length ? { "data-count": plural(a.students_stuck.length, "student") } : {}) },
       a.students_stuck.length ? el("span", { className: "dash-names", text: a.students_stuck.join(", ") }) : "—"))));
 }
@@ -405,8 +454,20 @@ function codeButton(name) {
   return button;
 }
 
-async function drawStudents(students) {
+/** Each student's score as the gradebook computes it (GET …/grades: its one home), per assignment: "66.7 · —". */
+const scoreWords = (grades) => (grades || []).map((g) => (g.score === null ? "—" : g.score.toFixed(1))).join(" · ");
+/** One number to sort by: the mean of the assignments' scores (no score yet counts 0). */
+const scoreKey = (grades) => (grades?.length ? grades.reduce((sum, g) => sum + (g.score ?? 0), 0) / grades.length : 0);
+let order = "behind"; // the Students table's order: "behind" (fewest steps done on one's own first), or by score
+
+async function drawStudents(found, book) {
   const rows = [];
+  const gradesOf = Object.fromEntries((book?.students || []).map((s) => [s.name, s.grades]));
+  const students = [...found];
+  if (order === "behind") students.sort((a, b) => a.own - b.own || b.shown - a.shown || (a.name < b.name ? -1 : 1));
+  else students.sort((a, b) => (order === "score-up" ? 1 : -1) * (scoreKey(gradesOf[a.name]) - scoreKey(gradesOf[b.name]))
+    || (a.name < b.name ? -1 : 1));
+  $("dash-score-sort").parentElement.setAttribute("aria-sort", order === "score-up" ? "ascending" : order === "score-down" ? "descending" : "none");
   for (const s of students) {
     const last = [...s.steps].sort((a, b) => (a.last < b.last ? 1 : -1))[0];
     const cell = el("td", { className: "dash-last" });
@@ -416,15 +477,18 @@ async function drawStudents(students) {
         coordinate: last.coordinate, assignment: last.assignment };
       const label = await labelOf(entry);
       cell.append(typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` }),
-        el("span", { text: last.done ? " ✓ done" : " · not yet right" }));
+        el("span", { text: last.shown ? " · shown" : last.done ? " ✓ done" : " · not yet right" }));
     } else cell.textContent = "—";
     // the institution login, on a line of its own under the pseudonym, when the class asks for it
     const login = loginColumn ? el("span", { className: "dash-login", text: `${loginColumn}: ${s.login || "none given"}` }) : "";
     rows.push(el("tr", { "data-student": s.name },
       el("th", { scope: "row" }, s.name, " ", codeButton(s.name), login),
-      el("td", { text: s.assigned ? `${s.done} of ${s.assigned}` : String(s.done) }),
+      // done on one's own, as the grade counts them; the steps shown apart
+      el("td", { text: s.assigned ? `${s.own} of ${s.assigned}` : String(s.own) }),
+      el("td", { className: "dash-shown-count", text: String(s.shown) }),
+      el("td", { className: "dash-score", text: scoreWords(gradesOf[s.name]) }),
       // every answer sent, those the checker could not read said apart (they are never counted wrong)
-      el("td", { text: s.not_read ? `${s.attempts} (${s.not_read} not read)` : String(s.attempts) }),
+      el("td", { text: s.not_read ? `${s.attempts} (${s.not_read} ${NOT_READ_WORDS})` : String(s.attempts) }),
       cell));
   }
   $("dash-students").tBodies[0].replaceChildren(...rows);
@@ -438,6 +502,9 @@ async function poll() {
       api("GET", `/api/classes/${current.code}/summary`, { key: current.key }),
       api("GET", `/api/classes/${current.code}/students`, { key: current.key }),
     ]);
+    // the scores after them, not beside them: a page holds at most two requests at a time (a classroom's network
+    // shares the server's connections)
+    const book = summary.status === 200 ? await api("GET", `/api/classes/${current.code}/grades`, { key: current.key }) : null;
     if (summary.status === 403) {
       $("dash-counts").textContent = "This class no longer exists (deleted, or past its retention).";
       return;
@@ -449,7 +516,7 @@ async function poll() {
       drawAssignments(s);
       await drawSteps(s);
       await drawMistakes(s);
-      await drawStudents(students.data.students);
+      await drawStudents(students.data.students, book?.status === 200 ? book.data : null);
     }
   } catch {
     $("dash-counts").textContent = "The server cannot be reached; retrying…";
@@ -642,6 +709,12 @@ $("assign-save").addEventListener("click", async () => {
   // an edited assignment whose due time was left as it was keeps it exactly (a time already past stays allowed)
   const due = editing && typedDue === localInput(editing.due) ? editing.due
     : typedDue ? new Date(typedDue).toISOString() : null;
+  // a new due time already past: said at the form, in its own local time, before anything is sent
+  if (due && due !== editing?.due && new Date(due) <= new Date()) {
+    $("assign-status").textContent = PAST_DUE(typedDue);
+    $("assign-due").focus();
+    return;
+  }
   if (editing) {
     // a scene's parameters (set through the API) stay with the scene
     for (const item of items) item.parameters = editing.items.find((i) => i.scene && i.scene === item.scene)?.parameters;
@@ -704,6 +777,25 @@ const tickSteps = (list, steps) => {
   }
 };
 
+/** A stored system as a teacher types it: pretty-printed, without the fields left at their defaults (null, "",
+ * empty lists), and a parameter with nothing but its name (and the default value 1) as its bare name. */
+function asTyped(system) {
+  const clean = (value) => {
+    if (Array.isArray(value)) return value.map(clean);
+    if (!value || typeof value !== "object") return value;
+    const kept = Object.entries(value).map(([k, v]) => [k, clean(v)])
+      .filter(([, v]) => v !== null && v !== "" && !(Array.isArray(v) && !v.length)
+        && !(typeof v === "object" && v && !Array.isArray(v) && !Object.keys(v).length));
+    return Object.fromEntries(kept);
+  };
+  const found = clean(system);
+  if (Array.isArray(found.parameters)) {
+    found.parameters = found.parameters.map((p) => (p && typeof p === "object" && Object.keys(p).every((k) => k === "name"
+      || (k === "value" && p.value === 1)) ? p.name : p));
+  }
+  return JSON.stringify(found, null, 2);
+}
+
 /** An assignment loaded into the editor: its title, due time, scenes and steps ticked, its typed system. */
 async function editAssignment(a) {
   resetEditor();
@@ -725,7 +817,8 @@ async function editAssignment(a) {
   if (typed) {
     $("assign-system-box").open = true;
     $("assign-system-name").value = typed.name;
-    $("assign-system").value = JSON.stringify(typed.system);
+    $("assign-system").value = asTyped(typed.system);
+    $("assign-system-setup").value = typed.setup || ""; // what the students read above the boxes, kept
     if (await loadSystemSteps()) tickSteps($("assign-system-steps"), typed.steps);
   }
   $("assign-editor-title").scrollIntoView({ block: "start" });
@@ -754,6 +847,8 @@ function forget(message = "") {
   clearTimeout(timer);
   current = null;
   memory.set(null);
+  pending.set(null);
+  $("class-recovery").hidden = true;
   show();
   $("start-status").textContent = message;
 }
@@ -767,11 +862,23 @@ $("forget-class").addEventListener("click", () => {
   forget(`The class ${code} is closed on this device, not deleted: open it again with its recovery code, its teacher `
     + "link or its instructor key.");
 });
+/** The delete dialog's answer: "download", "delete" or "keep" (Escape keeps the class). */
+function askDelete(code) {
+  const dialog = $("delete-dialog");
+  $("delete-dialog-code").textContent = code;
+  dialog.returnValue = "keep";
+  return new Promise((resolve) => {
+    dialog.addEventListener("close", () => resolve(dialog.returnValue || "keep"), { once: true });
+    dialog.showModal();
+  });
+}
+
 $("delete-class").addEventListener("click", async () => {
   const { code } = current;
-  // the record offered first: once deleted, nothing of it can be downloaded
-  if (window.confirm(`Before deleting the class ${code}: download every answer and the grades (CSV) first? `
-    + "OK downloads them now; Cancel goes on without them.")) {
+  // the record offered first, in three plain buttons: once deleted, nothing of it can be downloaded
+  const chosen = await askDelete(code);
+  if (chosen === "keep") return;
+  if (chosen === "download") {
     await download(`/api/classes/${code}/export?format=csv`, `class-${code}.csv`);
     await download(`/api/classes/${code}/grades?format=details-csv`, `grades-${code}-details.csv`);
   }
@@ -785,23 +892,28 @@ $("delete-class").addEventListener("click", async () => {
 // ---- projector mode: large type, only what the class should see -----------------------------------
 
 const projector = stored("lagrange-teach-projector");
+const namesShown = stored("lagrange-teach-names"); // remembered in this browser, as projector mode is
 function project(on) {
   document.body.classList.toggle("projector", on);
   $("projector").setAttribute("aria-pressed", String(on));
   $("projector").textContent = on ? "Leave projector mode" : "Projector mode";
   projector.set(on || null);
-  // a projected dashboard shows counts, not who is stuck, until the teacher chooses to show the names
-  $("names-shown").hidden = !on;
-  if (!on) showNames(false);
 }
+/** The students' names on the dashboard: hidden (counts only) until the teacher presses "Show the students' names". */
 function showNames(on) {
   document.body.classList.toggle("names-shown", on);
   $("names-shown").setAttribute("aria-pressed", String(on));
   $("names-shown").textContent = on ? "Hide the students' names" : "Show the students' names";
+  namesShown.set(on || null);
 }
 $("names-shown").addEventListener("click", () => showNames(!document.body.classList.contains("names-shown")));
-$("projector").addEventListener("click", () => project(!document.body.classList.contains("projector")));
+$("projector").addEventListener("click", () => {
+  const on = !document.body.classList.contains("projector");
+  project(on);
+  if (on) showNames(false); // going onto the projector: the names go first
+});
 project(Boolean(projector.get()));
+showNames(Boolean(namesShown.get()));
 
 show();
 // a teacher link (#class=…&recover=…): the fragment is read here and wiped from the address at once

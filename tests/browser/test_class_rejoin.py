@@ -71,6 +71,7 @@ def test_a_student_gets_back_to_their_record_on_another_phone(browser, live_serv
     stored = json.dumps({"code": made["code"], "key": made["teacher_key"], "title": "Two phones"})
     teach.evaluate(f"localStorage.setItem('lagrange-teach', {json.dumps(stored)})")
     teach.reload()
+    teach.click("#names-shown")  # the names are hidden as the dashboard opens
     teach.on("dialog", lambda dialog: dialog.accept())
     row = teach.locator('#dash-students tr[data-student="ana"]')
     row.locator(".dash-new-code").click()

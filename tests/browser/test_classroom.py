@@ -77,6 +77,7 @@ def test_a_class_live(browser, live_server, classes, artifacts):
     teacher.fill("#create-title", "Mechanics II")
     teacher.click("#create-form button[type=submit]")
     teacher.wait_for_selector("#class-live:not([hidden])")
+    teacher.click("#names-shown")  # the names are hidden as the dashboard opens
     code = teacher.locator("#class-code").inner_text()
     assert len(code) == 6
     # the code is projected large: at least 2.8 rem
@@ -136,7 +137,8 @@ def test_a_class_live(browser, live_server, classes, artifacts):
     teacher.wait_for_function("document.getElementById('dash-counts').textContent.startsWith('3 students · 3 answers')",
                               timeout=5000)
     rows = teacher.locator("#dash-students tbody tr")
-    assert rows.count() == 3 and "1 of 2" in rows.nth(1).inner_text()  # Bo did one of the two steps
+    bo_row = teacher.locator('#dash-students tbody tr[data-student="Bo"]')
+    assert rows.count() == 3 and "1 of 2" in bo_row.inner_text()  # Bo did one of the two steps
     assert ada.locator("#joined-progress").inner_text() == "0 of 2 steps done"
     assert bo.locator("#joined-progress").inner_text() == "1 of 2 steps done"
 

@@ -5,7 +5,8 @@ students are stuck with the sign of U, on the simple pendulum's U two more make 
 pendulum's T two are stuck with the cross term forgotten while three are done.  At 1366×768 (and on a projector
 at 1024×768), without scrolling, the dashboard names the double pendulum's U as the step most are stuck on and
 "The sign of U" (its case kept), totalled over both scenes, as the most common mistake with its count, 6×; one
-click shows the students concerned.  Projector mode enlarges the type.  An answer recorded later shows without
+click shows the students concerned, once the teacher shows the names (hidden as the page opens, remembered in the
+browser).  Projector mode enlarges the type and shrinks the code, so both cards are whole on a 1024×768 screen.  An answer recorded later shows without
 a reload.  And a student's side of a busy lecture hall: /join brings the session cookie, and a join refused
 with 429 is tried again after its Retry-After, the wait shown.
 """
@@ -107,6 +108,16 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
     _within_first_screen(page, "#class-qr", 768)
     page.screenshot(path=artifacts / "teach-first-screen-1366.png")
 
+    # the names are hidden as the page opens (a dashboard projected as it opens names nobody): counts only
+    assert page.locator("#now-stuck .now-who").is_hidden() and page.locator("#dash-students").is_hidden()
+    assert "names are hidden" in page.locator(".dash-names-note").inner_text()
+    page.click("#names-shown")
+    assert page.locator("#names-shown").inner_text() == "Hide the students' names"
+    page.reload()  # remembered in this browser
+    page.wait_for_selector("#now-stuck[data-step]")
+    assert page.locator("#now-stuck .now-who").is_visible() and page.locator("#dash-students").is_visible()
+    assert page.locator(".dash-names-note").is_hidden()
+
     # one click to the students concerned
     page.click("#now-mistake .now-who summary")
     assert page.locator("#now-mistake .now-names").inner_text() == "Ada, Bo, Cy, Di, Ed, Flo"
@@ -131,22 +142,29 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
     large = page.eval_on_selector("#now-mistake .now-what", "e => parseFloat(getComputedStyle(e).fontSize)")
     assert large >= 1.4 * plain
     page.evaluate("window.scrollTo(0, 0)")
-    for selector in ("#now-stuck .now-what", "#now-mistake .now-what", "#now-mistake .now-figure"):
+    # the whole of both cards (the step, its count, the mistake, its count, where) on the first screen
+    for selector in ("#now-stuck", "#now-mistake"):
         _within_first_screen(page, selector, 768)
     page.screenshot(path=artifacts / "teach-projector-1024.png")
-    # projected, the code is large and the names are hidden (counts only) until the teacher shows them
+    # projected, the code stays large enough for the back of the room, and going onto the projector hid the names
     code_px = page.eval_on_selector("#class-code", "e => parseFloat(getComputedStyle(e).fontSize)")
-    assert code_px >= 100, code_px
+    assert code_px >= 48, code_px
     assert page.locator("#now-stuck .now-who").is_hidden() and page.locator("#dash-students").is_hidden()
     stuck = page.locator('#dash-assignments tr[data-assignment="1"] .dash-stuck')
     assert stuck.locator(".dash-names").is_hidden()
     assert page.evaluate("getComputedStyle(document.querySelector("
                          "'#dash-assignments tr[data-assignment=\"1\"] .dash-stuck'), '::before').content") == '"6 students"'
+    # the names' switch is not the twin of "Leave projector mode": apart from it, another size and colour
+    leave, names = page.locator("#projector").bounding_box(), page.locator("#names-shown").bounding_box()
+    assert leave and names and abs(names["y"] - leave["y"]) > 2 * leave["height"]
+    look = "e => { const s = getComputedStyle(e); return [s.backgroundColor, s.fontSize]; }"
+    leave_look, names_look = page.eval_on_selector("#projector", look), page.eval_on_selector("#names-shown", look)
+    assert leave_look[0] != names_look[0] and leave_look[1] != names_look[1], (leave_look, names_look)
     page.click("#names-shown")
     assert page.locator("#now-stuck .now-who").is_visible() and page.locator("#dash-students").is_visible()
     assert stuck.locator(".dash-names").is_visible()
-    page.click("#projector")  # leaving projector mode
-    assert page.locator("#names-shown").is_hidden()
+    page.click("#projector")  # leaving projector mode keeps the teacher's choice
+    assert page.locator("#projector").inner_text() == "Projector mode" and page.locator("#dash-students").is_visible()
     assert errors == []
     context.close()
 

@@ -59,6 +59,7 @@ def test_an_assignment_graded_and_the_class_opened_elsewhere(browser, live_serve
     teacher.screenshot(path=artifacts / f"teach-recovery-{size}.png")
     teacher.click("#recovery-done")
     assert teacher.locator("#recovery-code").inner_text() == ""  # shown once
+    teacher.click("#names-shown")  # the names are hidden as the dashboard opens
 
     # one assignment of three steps: two scenes' T and a typed system's acceleration
     teacher.fill("#assign-title-input", "Week 3: T and the spring")

@@ -46,7 +46,14 @@ def test_a_class_started_and_ended_in_words(browser, live_server, classes, artif
     page.wait_for_function("document.getElementById('recovery-status').textContent.startsWith('The teacher link is copied')")
     assert page.evaluate("navigator.clipboard.readText()") == f"{live_server}/teach#class={code}&recover={recovery}"
     page.screenshot(path=artifacts / "teach-recovery-copy-390.png")
+    # a reload before "I have kept it" does not lose it (review inst-c 20); after it, it is never shown again
+    page.reload()
+    page.wait_for_selector("#class-recovery:not([hidden])")
+    assert page.locator("#recovery-code").inner_text().replace("\n", "") == recovery
     page.click("#recovery-done")
+    page.reload()
+    page.wait_for_selector("#class-live:not([hidden])")
+    assert page.locator("#class-recovery").is_hidden() and page.locator("#recovery-code").inner_text() == ""
 
     # a formula where the system's JSON belongs: where it stops being JSON and the shape expected
     page.click("#assign-system-box summary")
@@ -73,12 +80,22 @@ def test_a_class_started_and_ended_in_words(browser, live_server, classes, artif
 
     # a student of the class, then the class deleted: the record offered first, then said deleted
     student = page.request.post(f"/api/classes/{code}/join", data={"name": "Ada"}).json()["student_key"]
-    page.on("dialog", answer(True))  # download the record first: yes; delete: yes
+    # the record offered first in a dialog of three plain buttons (review inst-c 21): "Keep the class" keeps it
+    page.click("#delete-class")
+    dialog = page.locator("#delete-dialog")
+    assert dialog.is_visible() and code in dialog.inner_text()
+    assert [b.strip() for b in dialog.locator("button").all_inner_texts()] == [
+        "Download first", "Delete without downloading", "Keep the class"]
+    page.screenshot(path=artifacts / "teach-delete-dialog-390.png")
+    page.click("#delete-keep")
+    assert dialog.is_hidden() and page.locator("#class-live").is_visible()
+    page.on("dialog", answer(True))  # the last question, "cannot be undone": yes
+    page.click("#delete-class")
     with page.expect_download() as first:
-        page.click("#delete-class")
+        page.click("#delete-download")
     assert first.value.suggested_filename == f"class-{code}.csv"
     page.wait_for_function("document.getElementById('start-status').textContent.includes('is deleted')", timeout=30_000)
-    assert "download" in asked[-2].lower() and "cannot be undone" in asked[-1]
+    assert "cannot be undone" in asked[-1]
     assert page.locator("#class-start").is_visible()
 
     pupil = context.new_page()

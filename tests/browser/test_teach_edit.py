@@ -62,3 +62,55 @@ def test_an_assignment_is_edited_and_keeps_its_answers(browser, live_server, cla
     assert summary["attempts"] == 1  # Ada's answer is still recorded
     assert errors == []
     context.close()
+
+
+SPRING = {"coordinates": ["x"], "parameters": ["m", "k"], "kinetic": "m*x_dot**2/2", "potential": "k*x**2/2"}
+SPRING_SETUP = "x is the stretch of the spring from its natural length; U = 0 at x = 0."
+
+
+@pytest.mark.slow
+def test_a_typed_system_is_edited_as_typed_and_a_past_due_time_is_said_in_the_forms_words(
+        browser, live_server, classes, artifacts):  # noqa: F811
+    """Review inst-c 5 and 6: "Edit…" on a typed system's assignment loads its set-up and the system as the teacher
+    typed it (pretty-printed, no nulls), so changing only the due time saves; a due time already past is said in
+    the form's words and its local time, never as ISO 8601."""
+    context = browser.new_context(base_url=live_server, **DESK)
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    errors: list[str] = []
+    page.on("pageerror", lambda exc: errors.append(str(exc)))
+    made = page.request.post("/api/classes", data={"title": "Mechanics"}).json()
+    code, key = made["code"], made["teacher_key"]
+    auth = {"Authorization": f"Bearer {key}"}
+    item = {"name": "spring", "system": SPRING, "setup": SPRING_SETUP, "steps": [{"step": "kinetic"}]}
+    r = page.request.post(f"/api/classes/{code}/assignments", headers=auth,
+                          data={"title": "Week 5: a spring you are given", "items": [item]})
+    assert r.status == 201, r.text()
+
+    page.goto("/teach")
+    page.evaluate(f"localStorage.setItem('lagrange-teach', {json.dumps(json.dumps({'code': code, 'key': key, 'title': 'M'}))})")
+    page.reload()
+    page.click('#assign-series button[data-edit="1"]')
+    page.wait_for_selector('#assign-system-steps input[data-step="kinetic"]')
+    assert page.input_value("#assign-system-setup") == SPRING_SETUP
+    typed = page.input_value("#assign-system")
+    assert json.loads(typed) == SPRING and "null" not in typed and "\n" in typed, typed
+
+    # a due time two hours ago, picked in the form's local time: said in its words, nothing saved
+    past = page.evaluate("(() => { const t = new Date(Date.now() - 2 * 3600e3); const p = (n) => String(n).padStart(2, '0');"
+                         " return `${t.getFullYear()}-${p(t.getMonth() + 1)}-${p(t.getDate())}T${p(t.getHours())}:${p(t.getMinutes())}`; })()")
+    page.fill("#assign-due", past)
+    page.click("#assign-save")
+    said = page.locator("#assign-status").inner_text()
+    assert said.startswith("That time (") and said.endswith(") has passed: choose a later one."), said
+    assert "ISO" not in said and "Z" not in said.split("(")[1], said
+
+    # the due time changed to one to come: saved, the set-up and system as they were
+    page.fill("#assign-due", "2031-03-04T17:00")
+    page.click("#assign-save")
+    page.wait_for_function("document.getElementById('assign-status').textContent.startsWith('Saved')")
+    [edited] = page.request.get(f"/api/classes/{code}/assignments", headers=auth).json()["assignments"]
+    assert edited["due"] is not None and edited["items"][0]["setup"] == SPRING_SETUP
+    page.screenshot(path=artifacts / "teach-typed-edited-1366.png", full_page=True)
+    assert errors == []
+    context.close()

@@ -154,6 +154,7 @@ def test_the_first_screen_says_who_is_done(browser, live_server, classes, artifa
     page.goto("/teach")
     page.evaluate(f"localStorage.setItem('lagrange-teach', {json.dumps(json.dumps({'code': code, 'key': key, 'title': 'M'}))})")
     page.reload()
+    page.click("#names-shown")  # the names are hidden as the dashboard opens
     page.wait_for_selector("#dash-students tbody tr .dash-last .katex")
     height = DESK["viewport"]["height"] if size == "1366" else PHONE["viewport"]["height"]
     width = DESK["viewport"]["width"] if size == "1366" else PHONE["viewport"]["width"]
@@ -164,23 +165,24 @@ def test_the_first_screen_says_who_is_done(browser, live_server, classes, artifa
     box = done.bounding_box()
     assert box is not None and box["y"] + box["height"] <= height, box
 
-    # the step cards: students and answers counted apart, the bar labelled with its one unit (answers) in words
-    # and in its aria-label; the step nobody answered behind "Show every step"
+    # the step cards: the bar counts students, each once by their best answer (Bo's wrong T then right is one
+    # student right), labelled with its one unit in words and in its aria-label; the step nobody answered behind
+    # "Show every step"
     numbers = page.locator(".dash-step .dash-numbers").all_inner_texts()
     assert sorted(numbers) == ["1 of 2 students done, 0 stuck", "2 of 2 students done, 0 stuck"], numbers
     bars = page.locator(".dash-step .dash-bar-row").all_inner_texts()
-    assert sorted(" ".join(b.split()) for b in bars) == ["Answers 1 right answer, 0 wrong",
-                                                         "Answers 2 right answers, 1 wrong"], bars
+    assert sorted(" ".join(b.split()) for b in bars) == ["Students 1 right, 0 wrong", "Students 2 right, 0 wrong"], bars
     said = sorted(page.locator(".dash-step .dash-bar").evaluate_all("bars => bars.map(b => b.getAttribute('aria-label'))"))
-    assert said == ["Answers to this step: 1 right answer, 0 wrong (green: right, red: wrong)",
-                    "Answers to this step: 2 right answers, 1 wrong (green: right, red: wrong)"], said
-    assert "counts the answers" in page.locator(".dash-legend").inner_text()
+    assert said == ["Students who answered this step: 1 right, 0 wrong (green: right, red: wrong)",
+                    "Students who answered this step: 2 right, 0 wrong (green: right, red: wrong)"], said
+    legend = " ".join(page.locator(".dash-legend").inner_text().split())
+    assert "counts the students who answered its step" in legend and "stuck: answered, not right yet" in legend
     toggle = page.locator("#dash-steps-all")
     assert toggle.inner_text() == "Show every step (1 more not answered yet)"
     toggle.click()
     page.wait_for_function("document.querySelectorAll('.dash-step').length === 3")
     last = " ".join(page.locator(".dash-step").last.inner_text().split())
-    assert "0 right answers, 0 wrong" in last and "0 of 2 students done, 0 stuck" in last, last
+    assert "0 right, 0 wrong" in last and "0 of 2 students done, 0 stuck" in last, last
     toggle.click()
     page.wait_for_function("document.querySelectorAll('.dash-step').length === 2")
 

@@ -71,7 +71,8 @@ def test_a_class_from_creation_to_deletion(client, classes):
     assert summary["students"] == 2 and summary["attempts"] == 3
     kinetic, potential = summary["steps"]
     assert kinetic == {"assignment": 1, "scene": SCENE, "step": "kinetic", "coordinate": None, "correct": 1, "incorrect": 2,
-                       "not_read": 0, "students_done": 1, "mistakes": {"missing_half": 2},
+                       "not_read": 0, "students_done": 1, "students_shown": 0, "students_right": 1, "students_wrong": 1,
+                       "students_equivalent": 0, "mistakes": {"missing_half": 2},
                        "mistake_names": {"missing_half": "the ½ of ½ m v² left out"},
                        "stuck": 1, "students_stuck": ["Bo"]}  # Ada got it right after her mistake
     assert potential["correct"] == potential["incorrect"] == 0
@@ -176,7 +177,8 @@ def test_refusals_say_what_is_wrong(client, classes):
     summary = client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).json()
     assert summary["steps"][1] | {"mistakes": None} == {"assignment": 1, "system": "spring", "step": "acceleration", "coordinate": "x",
                                                         "correct": 1, "incorrect": 0, "not_read": 0,
-                                                        "students_done": 1,
+                                                        "students_done": 1, "students_shown": 0, "students_right": 1,
+                                                        "students_wrong": 0, "students_equivalent": 0,
                                                         "mistakes": None, "mistake_names": {},
                                                         "stuck": 0, "students_stuck": []}
 
@@ -274,8 +276,8 @@ def test_answers_that_could_not_be_read_are_counted_never_as_wrong(client, class
     assert mine["progress"]["attempts"] == 1 and mine["progress"]["not_read"] == 1
 
     table = list(csv.DictReader(io.StringIO(client.get(f"/api/classes/{code}/export", headers=bearer(teacher)).text)))
-    assert [r["verdict"] for r in table] == ["not read"] * 5 + ["wrong", "right", "not read"]
-    assert [r["counted"] for r in table][5:7] == ["no: wrong", "yes"] and table[0]["counted"] == "no: not read"
+    assert [r["verdict"] for r in table] == ["could not be read"] * 5 + ["wrong", "right", "could not be read"]
+    assert [r["counted"] for r in table][5:7] == ["no: wrong", "yes"] and table[0]["counted"] == "no: could not be read"
     first = table[0]
     assert first["answer"] == unreadable[0] and first["mistake"].startswith("a factor after a quotient is ambiguous")
     assert table[2]["answer"] == "'=m*g"  # not a checked expression: kept from a spreadsheet's formulas

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import csv
+import io
+
 from tests.web.test_api_classes import bearer, join, new_class
 
 SCENE = "simple-pendulum"
@@ -35,3 +38,21 @@ def test_a_component_that_is_not_one_is_refused_with_what_is_allowed(client, cla
     r = client.put(f"/api/classes/{code}/assignment", json={"items": [{"scene": SCENE, "steps": steps}]},
                    headers=bearer(teacher))
     assert r.status_code == 422 and "position" in r.text
+
+def test_the_answers_file_names_each_position_step_apart(client, classes):
+    """The double pendulum's four position steps are four names in the answers' CSV (review inst-c 4), and every
+    step's name is in sentence case there."""
+    code, teacher = new_class(client)
+    steps = [{"step": "position", "coordinate": c} for c in ("x1", "z1")] + [{"step": "kinetic"}]
+    r = client.put(f"/api/classes/{code}/assignment",
+                   json={"items": [{"scene": "double-pendulum", "steps": steps}]}, headers=bearer(teacher))
+    assert r.status_code == 200, r.text
+    jo = join(client, code, "Jo")
+    for component, answer in (("x1", "l1*sin(theta1)"), ("z1", "-l1*cos(theta1)")):
+        body = {"scene": "double-pendulum", "step": "position", "coordinate": component, "answer": answer}
+        assert client.post(f"/api/classes/{code}/check", json=body, headers=bearer(jo)).json()["verdict"] == "correct"
+    body = {"scene": "double-pendulum", "step": "kinetic", "answer": "m1*l1**2*theta1_dot**2/2"}
+    assert client.post(f"/api/classes/{code}/check", json=body, headers=bearer(jo)).status_code == 200
+    table = list(csv.DictReader(io.StringIO(
+        client.get(f"/api/classes/{code}/export", headers=bearer(teacher)).content.decode("utf-8-sig"))))
+    assert [r["step"] for r in table] == ["Position x₁", "Position z₁", "Kinetic energy T"]

@@ -88,8 +88,8 @@ def test_a_series_its_progress_and_its_grades(client, classes):
     summary = client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).json()
     assert summary["assignments"] == [
         {"n": 1, "title": week1["title"], "due": series[0]["due"], "steps": 2, "students_done": ["Ada"],
-         "students_stuck": ["Bo"]},
-        {"n": 2, "title": "Week 2", "due": None, "steps": 2, "students_done": ["Ada"], "students_stuck": []}]
+         "students_shown": [], "students_stuck": ["Bo"]},
+        {"n": 2, "title": "Week 2", "due": None, "steps": 2, "students_done": ["Ada"], "students_shown": [], "students_stuck": []}]
     counts = [(s["assignment"], s.get("scene") or s.get("system"), s["step"], s["correct"], s["incorrect"], s["stuck"])
               for s in summary["steps"]]
     assert counts == [(1, SCENE, "kinetic", 2, 1, 0), (1, SCENE, "potential", 1, 1, 1),

@@ -76,11 +76,11 @@ def test_the_answers_file_says_what_counts_and_why(client, classes):
     rows = list(csv.DictReader(io.StringIO(raw.decode("utf-8-sig"))))
     assert [(r["student"], r["assignment"], r["step"], r["verdict"], r["after shown"], r["late"], r["counted"])
             for r in rows] == [
-        ("Ada", "1. Due", "kinetic energy T", "right", "no", "no", "yes"),
-        ("Ada", "1. Due", "potential energy U", "right, in an equivalent form", "no", "no", "yes"),
-        ("Ada", "1. Due", "energy function h", "right", "no", "no", "yes"),
-        ("Ada", "2. Past", "kinetic energy T", "right", "no", "yes", "no: after the due time"),
-        ("Bo", "1. Due", "kinetic energy T", "right", "yes", "no", "no: typed after the step was shown")]
+        ("Ada", "1. Due", "Kinetic energy T", "right", "no", "no", "yes"),
+        ("Ada", "1. Due", "Potential energy U", "right, in an equivalent form", "no", "no", "yes"),
+        ("Ada", "1. Due", "Energy function h", "right", "no", "no", "yes"),
+        ("Ada", "2. Past", "Kinetic energy T", "right", "no", "yes", "no: after the due time"),
+        ("Bo", "1. Due", "Kinetic energy T", "right", "yes", "no", "no: typed after the step was shown")]
     assert all(re.fullmatch(r"\d{4}-\d\d-\d\d \d\d:\d\d:\d\d", r["time (UTC)"]) for r in rows)
     # the grade follows the same rule: Ada's late answer and Bo's shown one do not count
     book = client.get(f"/api/classes/{code}/grades", headers=bearer(teacher)).json()

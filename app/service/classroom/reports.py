@@ -17,9 +17,9 @@ from collections import defaultdict
 from datetime import UTC, datetime
 from typing import Any
 
-from sqlalchemy import func, select
+from sqlalchemy import case, func, literal, null, select, union_all
 
-from app.engine.check_problem import step_title
+from app.engine.check_problem import step_heading
 from app.engine.mistake_teacher import for_teacher
 from app.scenes import SCENES
 from app.service.classroom.database import Database
@@ -31,9 +31,21 @@ CSV_COLUMNS = ("time (UTC)", "student", "assignment", "item", "step", "verdict",
                "mistake", "answer")
 FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
 # a verdict in a teacher's words: "equivalent" is right (the grade counts it), in another form than the book's
-VERDICT_WORDS = {"correct": "right", "equivalent": "right, in an equivalent form", "incorrect": "wrong"}
+# an answer the checker could not read, in a teacher's words: the one home of the phrase (the dashboard's too)
+NOT_READ_WORDS = "could not be read"
+VERDICT_WORDS = {"correct": "right", "equivalent": "right, in an equivalent form", "incorrect": "wrong",
+                 NOT_READ: NOT_READ_WORDS}
 TIME_FORMAT = "%Y-%m-%d %H:%M:%S"  # to the second, in UTC (the column says so)
 BOM = "\ufeff"  # a spreadsheet opened by a double click reads the file as UTF-8 (θ̈, ≈, ₁) only with it
+
+
+SHOWN = "shown"  # a row of the tallies that is a step shown ("Show this step"), not an answer
+
+
+def on_own(right_at: datetime | None, shown_at: datetime | None) -> bool:
+    """A step done on one's own: answered right, and not shown before the first right answer.  The one rule the
+    dashboard's "done" and the gradebook's score share (the score also asks for the due time)."""
+    return right_at is not None and (shown_at is None or shown_at > right_at)
 
 
 def due_utc(when: Any) -> datetime | None:
@@ -67,28 +79,40 @@ def _step_entry(key: Key, series: list[dict[str, Any]]) -> dict[str, Any]:
     kind = "system" if item in systems else "scene"
     number = next((a["n"] for a in series if a["id"] == assignment_id), None)
     return {"assignment": number, kind: item, "step": step, "coordinate": coordinate, "correct": 0, "incorrect": 0,
-            "not_read": 0, "students_done": 0, "mistakes": {}, "mistake_names": {}}
+            "not_read": 0, "students_done": 0, "students_shown": 0, "students_right": 0, "students_wrong": 0,
+            "students_equivalent": 0, "mistakes": {}, "mistake_names": {}}
 
 
 def _tallies(db: Database, class_id: int) -> list[Any]:
     """The class in one statement, so in one snapshot of the database: per student (every student, those who
     have not answered yet with empty columns) and per item, step, coordinate, verdict and named mistake, how many
-    answers, the mistake's words and the last answer's time (and the student's institution login, last).
+    answers, the mistake's words, the last answer's time, the first right answer's time and the student's
+    institution login (None when the class does not ask); and, in the same statement (UNION ALL), each step shown
+    to a student, as a row of verdict ``SHOWN`` with its time.
 
     One SELECT reads one consistent state on SQLite and on PostgreSQL alike (two statements in READ COMMITTED,
     or in SQLite's autocommit reads, may each see a different state while answers arrive)."""
+    answers = (
+        select(StudentRow.id, StudentRow.name, StudentRow.joined_at, AttemptRow.assignment_id, AttemptRow.item,
+               AttemptRow.step, AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake,
+               func.count(AttemptRow.id), func.max(AttemptRow.mistake_name), func.max(AttemptRow.at),
+               func.min(case((AttemptRow.verdict.in_(DONE), AttemptRow.at))),
+               func.max(StudentRow.login))  # one per student: the institution login, when the class asks for it
+        .select_from(StudentRow)
+        .outerjoin(AttemptRow, AttemptRow.student_id == StudentRow.id)
+        .where(StudentRow.class_id == class_id)
+        .group_by(StudentRow.id, StudentRow.name, StudentRow.joined_at, AttemptRow.assignment_id, AttemptRow.item,
+                  AttemptRow.step, AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake)
+    )
+    shown = (
+        select(StudentRow.id, StudentRow.name, StudentRow.joined_at, HintRow.assignment_id, HintRow.item,
+               HintRow.step, HintRow.coordinate, literal(SHOWN), null(), literal(0), null(), HintRow.at, null(),
+               StudentRow.login)
+        .join(StudentRow, StudentRow.id == HintRow.student_id)
+        .where(HintRow.class_id == class_id)
+    )
     with db.session() as session:
-        return list(session.execute(
-            select(StudentRow.id, StudentRow.name, StudentRow.joined_at, AttemptRow.assignment_id, AttemptRow.item,
-                   AttemptRow.step, AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake,
-                   func.count(AttemptRow.id), func.max(AttemptRow.mistake_name), func.max(AttemptRow.at),
-                   func.max(StudentRow.login))  # one per student: the institution login, when the class asks for it
-            .select_from(StudentRow)
-            .outerjoin(AttemptRow, AttemptRow.student_id == StudentRow.id)
-            .where(StudentRow.class_id == class_id)
-            .group_by(StudentRow.id, StudentRow.name, StudentRow.joined_at, AttemptRow.assignment_id, AttemptRow.item,
-                      AttemptRow.step, AttemptRow.coordinate, AttemptRow.verdict, AttemptRow.mistake)
-        ).all())
+        return list(session.execute(union_all(answers, shown)).all())
 
 
 def _item_of(entry: dict[str, Any]) -> dict[str, Any]:
@@ -97,16 +121,20 @@ def _item_of(entry: dict[str, Any]) -> dict[str, Any]:
 
 
 def _per_assignment(
-    series: list[dict[str, Any]], names: dict[int, str], tried: dict[Key, set[int]], finished: dict[Key, set[int]]
+    series: list[dict[str, Any]], names: dict[int, str], tried: dict[Key, set[int]], finished: dict[Key, set[int]],
+    shown: dict[Key, set[int]],
 ) -> list[dict[str, Any]]:
-    """Each assignment of the series: its steps, the students done with all of them, and those stuck on one."""
+    """Each assignment of the series: its steps, the students done with all of them on their own, those through
+    every step with one shown at least, and those stuck on one."""
     out = []
     for each in series:
         keys = [k for k in assigned_keys([each])]
         done = {s for s in names if keys and all(s in finished[k] for k in keys)}
-        stuck = {s for k in keys for s in tried[k] - finished[k]}
+        through = {s for s in names if keys and all(s in finished[k] | shown[k] for k in keys)} - done
+        stuck = {s for k in keys for s in tried[k] - finished[k] - shown[k]}
         out.append({"n": each["n"], "title": each["title"], "due": each["due"], "steps": len(keys),
                     "students_done": sorted(names[s] for s in done),
+                    "students_shown": sorted(names[s] for s in through),
                     "students_stuck": sorted(names[s] for s in stuck)})
     return out
 
@@ -125,27 +153,52 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
     tried: dict[Key, set[int]] = defaultdict(set)
     finished: dict[Key, set[int]] = defaultdict(set)
     by_mistake: dict[Key, dict[str, set[int]]] = defaultdict(lambda: defaultdict(set))
+    right_at: dict[tuple[int, Key], datetime] = {}
+    shown_at: dict[tuple[int, Key], datetime] = {}
+    wrong: dict[Key, set[int]] = defaultdict(set)
+    equivalent: dict[Key, set[int]] = defaultdict(set)
     attempts = 0
-    for student_id, _name, _joined, assignment_id, item, step, coordinate, verdict, mistake, n, text, _last, _login in rows:
+    for student_id, _name, _joined, assignment_id, item, step, coordinate, verdict, mistake, n, text, last, first_right, \
+            _login in rows:
         if item is None:  # a student who has not answered yet
             continue
-        key = (assignment_id, item, step, coordinate)
+        key = (assignment_id, item, step, coordinate or None)
         entry = steps.setdefault(key, _step_entry(key, series))
+        if verdict == SHOWN:
+            shown_at[(student_id, key)] = min(last, shown_at.get((student_id, key), last))
+            continue
         # an answer not read is one of the step's answers, neither right nor wrong
         entry["correct" if verdict in DONE else "not_read" if verdict == NOT_READ else "incorrect"] += n
         attempts += n
         tried[key].add(student_id)
         if verdict in DONE:
-            finished[key].add(student_id)
+            earlier = right_at.get((student_id, key))
+            right_at[(student_id, key)] = first_right if earlier is None else min(earlier, first_right)
+        elif verdict != NOT_READ:
+            wrong[key].add(student_id)
+        if verdict == "equivalent":
+            equivalent[key].add(student_id)
         if mistake:
             entry["mistakes"][mistake] = entry["mistakes"].get(mistake, 0) + n
             by_mistake[key][mistake].add(student_id)
             if text:  # the mistake in words (one system's mistakes are worded alike), spoken about the student
                 entry["mistake_names"][mistake] = for_teacher(text)
+    # done: right on one's own (the gradebook's rule); shown: "Show this step" pressed before any right answer
+    shown: dict[Key, set[int]] = defaultdict(set)
+    for (student_id, key), at in right_at.items():
+        (finished if on_own(at, shown_at.get((student_id, key))) else shown)[key].add(student_id)
+    for student_id, key in shown_at:
+        if student_id not in finished[key]:
+            shown[key].add(student_id)
     totals: dict[str, dict[str, Any]] = {}
     for key, entry in steps.items():
-        stuck = tried[key] - finished[key]
+        stuck = tried[key] - finished[key] - shown[key]
         entry["students_done"] = len(finished[key])
+        entry["students_shown"] = len(shown[key])
+        # the bars count students: each once, by their best answer (right, else wrong)
+        entry["students_right"] = len({s for (s, k) in right_at if k == key})
+        entry["students_wrong"] = len(wrong[key] - {s for (s, k) in right_at if k == key})
+        entry["students_equivalent"] = len(equivalent[key])
         entry["stuck"] = len(stuck)
         entry["students_stuck"] = sorted(names[s] for s in stuck)
         # the most common mistake first
@@ -161,35 +214,50 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
     for total in mistakes:
         total["students"] = sorted(names[s] for s in total["students"])
         total["steps"].sort(key=lambda s: -s["count"])
-    return {"students": len(names), "attempts": attempts, "assignments": _per_assignment(series, names, tried, finished),
+    return {"students": len(names), "attempts": attempts,
+            "assignments": _per_assignment(series, names, tried, finished, shown),
             "steps": list(steps.values()), "mistakes": mistakes}
 
 
 def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[str, Any]:
     """Each student's progress (from one snapshot): attempts, steps done of the series', and per step tried its
-    tally (with its assignment's number)."""
+    tally (with its assignment's number).  A step is ``done`` once answered right; ``shown`` when "Show this step"
+    was pressed before the first right answer (or with none yet): a step done but shown does not count toward the
+    grade, so ``own`` counts the assigned steps done on one's own (``on_own``, the gradebook's rule)."""
     people: dict[int, tuple[str, Any, str | None]] = {}
     per: dict[int, dict[Key, dict[str, Any]]] = defaultdict(dict)
+    shown_at: dict[tuple[int, Key], datetime] = {}
     number = {a["id"]: a["n"] for a in series}
-    for student_id, name, joined, assignment_id, item, step, coordinate, verdict, _mistake, n, _text, last, login in (
-        _tallies(db, class_id)
-    ):
+    for student_id, name, joined, assignment_id, item, step, coordinate, verdict, _mistake, n, _text, last, first_right, \
+            login in _tallies(db, class_id):
         people[student_id] = (name, joined, login)
         if item is None:
             continue
-        tally = per[student_id].setdefault((assignment_id, item, step, coordinate), {
+        key = (assignment_id, item, step, coordinate or None)
+        if verdict == SHOWN:
+            shown_at[(student_id, key)] = min(last, shown_at.get((student_id, key), last))
+            continue
+        tally = per[student_id].setdefault(key, {
             "assignment": number.get(assignment_id), "item": item, "step": step, "coordinate": coordinate,
-            "attempts": 0, "not_read": 0, "done": False, "last": last, "_key": (assignment_id, item, step, coordinate)})
+            "attempts": 0, "not_read": 0, "done": False, "shown": False, "last": last, "_key": key, "_right": None})
         tally["attempts"] += n
         tally["not_read"] += n if verdict == NOT_READ else 0
         tally["done"] = tally["done"] or verdict in DONE
         tally["last"] = max(tally["last"], last)
+        if first_right is not None:
+            tally["_right"] = first_right if tally["_right"] is None else min(tally["_right"], first_right)
     assigned = set(assigned_keys(series))
     rows = []
     for student_id, (name, joined, login) in sorted(people.items(), key=lambda p: (p[1][1], p[0])):
         tallies = list(per.get(student_id, {}).values())
+        for t in tallies:
+            t["shown"] = (student_id, t["_key"]) in shown_at and not on_own(t["_right"], shown_at[(student_id, t["_key"])])
         finished = {t["_key"] for t in tallies if t["done"]}
-        steps = [{k: v for k, v in t.items() if k != "_key"} | {"last": t["last"].isoformat() + "Z"} for t in tallies]
+        own = {t["_key"] for t in tallies if on_own(t["_right"], shown_at.get((student_id, t["_key"])))}
+        # a step shown and not answered yet is shown too
+        seen = {t["_key"] for t in tallies if t["shown"]} | {k for (s, k) in shown_at if s == student_id} - own
+        steps = [{k: v for k, v in t.items() if not k.startswith("_")} | {"last": t["last"].isoformat() + "Z"}
+                 for t in tallies]
         rows.append({
             "name": name,
             "login": login,  # their institution login (None: the class does not ask, or they joined before it did)
@@ -197,6 +265,8 @@ def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[
             "attempts": sum(s["attempts"] for s in steps),
             "not_read": sum(s["not_read"] for s in steps),
             "done": len(finished & assigned) if assigned else len(finished),
+            "own": len(own & assigned) if assigned else len(own),
+            "shown": len(seen & assigned) if assigned else len(seen),
             "assigned": len(assigned),
             "steps": steps,
         })
@@ -220,8 +290,8 @@ def _counted(verdict: str, shown: bool, late: bool) -> str:
 
 def export_csv(db: Database, class_id: int, series: list[dict[str, Any]]) -> bytes:
     """Every attempt of the class, oldest first, as CSV (UTF-8 with a byte-order mark): its time to the second in
-    UTC, its assignment ("1. Week 1"), the scene by its title or the typed system by its name, the step in words
-    ("energy function h"), the verdict in words ("not read" for an answer the checker could not read), whether it
+    UTC, its assignment ("1. Week 1"), the scene by its title or the typed system by its name, the step in words, as a heading
+    ("Energy function h", "Position x₁"), the verdict in words (``NOT_READ_WORDS`` for an answer the checker could not read), whether it
     was typed after "Show this step" on that step, whether it came after the due time, whether it counts toward the
     grade (and if not, why), the mistake in the third person (for an answer not read, why: the refusal's words) and
     the answer exactly as typed (a judged answer is a checked expression: names, numbers, operators and the allowed
@@ -256,8 +326,8 @@ def export_csv(db: Database, class_id: int, series: list[dict[str, Any]]) -> byt
         shown = seen is not None and seen <= at
         late = is_late(at, dues.get(assignment))
         why = refusal_words(response) if unread else for_teacher(words) if words else mistake
-        counted = "no: not read" if unread else _counted(verdict, shown, late)
-        cells = [name, titles.get(assignment, ""), where, step_title(step, coordinate),
+        counted = f"no: {NOT_READ_WORDS}" if unread else _counted(verdict, shown, late)
+        cells = [name, titles.get(assignment, ""), where, step_heading(step, coordinate),
                  VERDICT_WORDS.get(verdict, verdict), "yes" if shown else "no", "yes" if late else "no", counted, why]
         writer.writerow([at.strftime(TIME_FORMAT), *(_cell(v) for v in cells), _cell(answer) if unread else answer])
     return out.getvalue().encode("utf-8")

@@ -53,11 +53,11 @@ def test_answers_not_read_count_as_answers_never_as_wrong(tmp_path):
 
         table = list(csv.DictReader(io.StringIO(export_csv(db, class_id, series).decode())))
         assert [(r["student"], r["verdict"], r["mistake"], r["answer"]) for r in table] == [
-            ("Ada", "not read", "a factor after a quotient is ambiguous", "1/2m R^2"),
+            ("Ada", "could not be read", "a factor after a quotient is ambiguous", "1/2m R^2"),
             # an answer not read is no checked expression: a formula's start gets its apostrophe
-            ("Ada", "not read", "one side of '=' is empty", "'=m g"),
+            ("Ada", "could not be read", "one side of '=' is empty", "'=m g"),
             ("Ada", "right", "", "m*R**2*theta_dot**2/2"),
-            ("Bo", "not read", "the '(' is never closed", "m g R cos("),
+            ("Bo", "could not be read", "the '(' is never closed", "m g R cos("),
         ]
 
         # the gradebook: Ada right on her first judged try; Bo has tried nothing that was judged (a blank)
