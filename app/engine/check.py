@@ -489,7 +489,9 @@ def _difference(pb: Problem, answer: sp.Expr, truth: sp.Expr) -> tuple[sp.Expr, 
         varying, constant = without_constant(answer - truth, pb.groups.dynamic())
         if varying != 0:
             # the clause only where a constant was in fact taken out of the difference
-            said = " (constants in U are ignored in this comparison)" if constant != 0 else ""
+            # (said of U where U is what was asked; a position, L or h has "a constant" of its own)
+            of = "constants in U are" if pb.step == "potential" else "a constant added to it is"
+            said = f" ({of} ignored in this comparison)" if constant != 0 else ""
             return varying, said, one
         return answer - truth, "", one
     if pb.relation == "factor" and pb.acceleration is not None:

@@ -251,12 +251,13 @@ def mismatch(expr: sp.Expr, known: Mapping[sp.Symbol, Dims], want: Dims | None, 
         "It is upside down: numerator and denominator are swapped"
         if inverted
         else f"A factor of {described(missing).removeprefix('a ').removeprefix('an ')} is missing"
-        if all(v > 0 for v in missing.values())
+        # (a missing factor a student can name, a force, is said so even where its unit has a negative power)
+        if all(v > 0 for v in missing.values()) or not quantity(missing).startswith("a quantity in")
         else f"It has a factor {unicode(carriers[0])} ({unit_text(extra)}) too many"
         if len(carriers) == 1
         else f"It has a factor of {described(extra).removeprefix('a ').removeprefix('an ')} too many"
         if all(v > 0 for v in extra.values())
-        else f"It has a factor in {unit_text(extra)} too many"
+        else f"It needs a factor in {unit_text(missing)}"
     )
     # short sentences, each with its full stop: what it is, what it should be, what would make it so
     return Offence(expr, f"Your {what} is {described(got)}, but it should be {described(want)}. {factor}.")

@@ -327,7 +327,7 @@ def omega_mistakes(d: Derivation, asked: list) -> Iterator[Mistake]:
             "other_equilibrium",
             f"ω² at the other equilibrium {at}",
             e.omega_squared,
-            f"ω² = U_eff″/m_eff is taken at the equilibrium asked for; {at} is another one",
+            f"ω² (the effective potential's second derivative over the effective mass) is taken at the equilibrium asked for; {at} is another one",
             e.omega_squared,
         )
 

@@ -594,7 +594,7 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
             for w in _omega_changed(d, dT, dU, asked):
                 family = "rigid" if key.startswith("rigid") else "travelled"
                 yield Mistake(f"omega_squared.{key}", family, name, None,
-                              "your ω² follows from it: ω² = U_eff″/m_eff at the equilibrium", w)  # fmt: skip
+                              "your ω² follows from it: ω² is the effective potential's second derivative over the effective mass, at the equilibrium", w)  # fmt: skip
 
 
 def _slip_words(m: Mistake) -> str:

@@ -110,7 +110,8 @@ class Typesetter:
     ) -> bytes:
         """``{"latex"}`` of the answer, or InvalidSystem with the checker's message and the offending part."""
         kinds = await asyncio.to_thread(self._scene_kinds, scene) if scene is not None else system_kinds(*names)
-        if coordinate is not None and kinds.get(coordinate) != "position":
+        # a position step's coordinate is a Cartesian component (x, z1), not a generalized coordinate
+        if coordinate is not None and step != "position" and kinds.get(coordinate) != "position":
             coordinates = ", ".join(n for n, k in kinds.items() if k == "position" and n != "t")
             raise InvalidSystem(f"coordinate: {coordinate!r} is not a coordinate here; the coordinates are: {coordinates}",
                                 ("coordinate",), coordinate)  # fmt: skip

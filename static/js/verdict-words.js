@@ -33,10 +33,12 @@ export function endOf(text) {
   return /[.!?]$/.test(text) ? text : `${text}.`;
 }
 
-/** A sentence: its first letter a capital, ended with a full stop. */
+/** A sentence: its first letter a capital when it opens with a word ("a velocity…", "the sign…"), never when
+ * it opens with a symbol (α, z, ω², d/dt: capitals would be other symbols), ended with a full stop. */
 export function sentenceOf(text) {
   const t = (text || "").trim();
-  return t ? `${t[0].toUpperCase()}${t.slice(1)}${/[.!?]$/.test(t) ? "" : "."}` : "";
+  const word = /^(a|[a-z]{2,})(\s|,)/.test(t);
+  return t ? `${word ? t[0].toUpperCase() : t[0]}${t.slice(1)}${/[.!?]$/.test(t) ? "" : "."}` : "";
 }
 
 /** A refusal's message without the field it is located at ("answer: …", "text: …"), the box being the field,

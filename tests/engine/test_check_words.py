@@ -38,6 +38,10 @@ def test_the_constant_clause_only_where_a_constant_was_left_out():
     # U = m g R cos θ against m g R (1 − cos θ): the constant −m g R is left out of the comparison, and said so
     with_constant = judge(step_problem("simple-pendulum", "potential", None), "m*g*R*cos(theta)")
     assert "constants in U are ignored in this comparison" in with_constant["message"], with_constant["message"]
+    # a position is no U (student-g 11): the clause names no U there
+    z = judge(step_problem("simple-pendulum", "position", "z"), "R*cos(theta)")
+    assert z["verdict"] == "incorrect" and "U" not in z["message"], z["message"]
+    assert "a constant added to it is ignored in this comparison" in z["message"], z["message"]
 
 
 def test_the_piece_kept_for_the_reveal_is_labelled_or_not_repeated():
@@ -94,3 +98,10 @@ def test_a_hint_speaks_of_springs_only_where_a_spring_can_be():
     assert pendulum["verdict"] == "incorrect" and pendulum["hint"] and "spring" not in pendulum["hint"]
     assert problem(derive(SCENES["tabletop-spring"].system), "potential", mistakes=False).springs
     assert not problem(derive(SCENES["pulley"].system), "potential", mistakes=False).springs
+
+
+def test_a_missing_factor_with_a_name_is_said_by_its_name():
+    # student-g 4: "It has a factor in s²/kg·m too many" for a T typed as a length; a force is what is missing
+    hint = judge(step_problem("incline-block", "kinetic", None), "X*sin(alpha)")["hint"]
+    assert "Your T is a length (m), but it should be an energy (kg·m²/s²). A factor of force (kg·m/s²) is missing." in hint
+    assert "too many" not in hint, hint

@@ -127,3 +127,12 @@ def test_an_acceleration_typed_with_another_left_side_names_the_boxs_own(client)
     assert refused.status_code == 422
     assert "the left of '=' must be the acceleration theta_ddot" in refused.json()["detail"], refused.text
     assert typeset(client, "theta_ddot = -g/R*sin(theta)", **context).status_code == 200
+
+
+def test_a_position_steps_component_is_not_taken_for_a_coordinate(client):
+    # student-g, 1: the position box of x of the bob previewed "'x' is not a coordinate here" beside "Correct"
+    for scene, component in (("simple-pendulum", "x"), ("pulley", "z3"), ("double-pendulum", "z2")):
+        response = typeset(client, "R*sin(theta)" if scene == "simple-pendulum" else "1", scene=scene,
+                           step="position", coordinate=component)
+        assert response.status_code == 200, (scene, response.text)
+        assert response.json()["latex"]
