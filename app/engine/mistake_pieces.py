@@ -110,6 +110,13 @@ def _derivative_why(p: sp.Expr, coordinate: str, coordinates: Iterable[sp.Symbol
     )
 
 
+def _doubled_why(step: str, p: sp.Expr) -> str:
+    """Why a piece is there once: a weight's energy m g × height (gravity counted twice), or any other piece."""
+    if step in ("potential", "lagrangian", "hamiltonian") and any(s.name == "g" for s in p.free_symbols):
+        return "each mass's weight enters U once, as m g times its height: gravity is counted twice here"
+    return "this piece enters the answer once: it seems to be counted twice"
+
+
 def _halved_why(d: Derivation, step: str, p: sp.Expr) -> str:
     """Why a piece is whole: a bob's height (a rod's centre would be halfway), or a factor 2 lost in a derivative."""
     if step == "potential" and d.system.particles and any(s.name == "g" for s in p.free_symbols):
@@ -169,7 +176,7 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
         else:
             yield Mistake(
                 f"{base}.doubled.{key}", "doubled", f"your term {spoken(2 * short)}, twice what it should be",
-                p, "this piece appears once in the derivation", truth + p,
+                p, _doubled_why(step, p), truth + p,
             )  # fmt: skip
         yield Mistake(
             f"{base}.halved.{key}", "halved", f"your term {spoken(short / 2)}, half of what it should be", p,

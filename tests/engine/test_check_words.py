@@ -105,3 +105,9 @@ def test_a_missing_factor_with_a_name_is_said_by_its_name():
     hint = judge(step_problem("incline-block", "kinetic", None), "X*sin(alpha)")["hint"]
     assert "Your T is a length (m), but it should be an energy (kg·m²/s²). A factor of force (kg·m/s²) is missing." in hint
     assert "too many" not in hint, hint
+
+
+def test_gravity_counted_twice_in_u_says_why():
+    # student-g 7: "Why: This piece appears once in the derivation" explained nothing
+    doubled = judge(step_problem("incline-block", "potential", None), "2*m*g*X*sin(alpha)")
+    assert doubled["mistake"]["where"] == "each mass's weight enters U once, as m g times its height: gravity is counted twice here"
