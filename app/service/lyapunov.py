@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 
 from app.engine.names import unicode
+from app.numerics.errors import TooMuchWork
 from app.numerics.lyapunov import largest_exponent
 from app.service.cache import JsonCache, source_fingerprint
 from app.service.derivations import Scenes, held, scene
@@ -82,7 +83,13 @@ def run_note(scene_id: str, cache: JsonCache | None = None, chapter: Scenes | No
         return s.run_note
     units = coordinate_units(held(chapter).document(scene_id), scene=True)["units"]
     unit = units[s.system.coordinates[0]]
-    return (sentence(measure_scene(scene_id, cache, chapter), unit) + " " + s.run_note).strip()
+    try:
+        measured = measure_scene(scene_id, cache, chapter)
+    except TooMuchWork:
+        # not measured yet and the machine too busy to measure it now: the note without it (nothing is cached,
+        # so the next reader's page tries again), never a page that fails
+        return s.run_note
+    return (sentence(measured, unit) + " " + s.run_note).strip()
 
 
 def warm_all() -> None:
