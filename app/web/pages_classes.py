@@ -15,6 +15,7 @@ from fastapi.responses import HTMLResponse, RedirectResponse, Response
 
 from app.service import derivations
 from app.service.classroom.keys import normal_code, why_not_code
+from app.service.classroom.logins import LMS, LOGIN_COLUMNS
 from app.service.classroom.reports import NOT_READ_WORDS
 from app.viz.qr import qr_svg
 from app.web.api_classes import router as api_router
@@ -31,7 +32,9 @@ def _scenes() -> list[dict[str, str]]:
 @pages.get("/teach", response_class=HTMLResponse)
 def teach(request: Request) -> HTMLResponse:
     # the teacher's words for an answer the checker could not read: one home (reports), the CSV's and the page's
-    return templates.TemplateResponse(request, "teach.html", {"scenes": _scenes(), "not_read_words": NOT_READ_WORDS})
+    # and the LMS login columns a class may ask for, each with its LMS (one home: service/classroom/logins.py)
+    return templates.TemplateResponse(request, "teach.html", {
+        "scenes": _scenes(), "not_read_words": NOT_READ_WORDS, "login_columns": [(c, LMS[c]) for c in LOGIN_COLUMNS]})
 
 
 @pages.get("/join", response_class=HTMLResponse)
