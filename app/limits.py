@@ -78,6 +78,7 @@ CATALOGUE_SECONDS = 180.0
 # a check answered "the server is busy" asks the page to try again after this long
 BUSY_RETRY_SECONDS = 2
 RUN_SECONDS = 2.0  # one run of a work-precision sweep; slower tolerances of that method are skipped
+LYAPUNOV_SECONDS = 60.0  # the runs of a Lyapunov measurement (set-up measures it; a first page waits once)
 GIVE_WAY_SECONDS = 0.5  # the longest the warm-up waits for quiet before its next step
 BACKOFF_SECONDS = 5.0  # a client's pause after its second job in a row out of time or memory; doubles after
 # A refusal of an address's shared key (a script dropping its cookies) is answered this late: a flood

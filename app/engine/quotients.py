@@ -73,7 +73,8 @@ def cleared(expr: sp.Expr) -> sp.Expr:
         num, den = sp.fraction(sp.together(power.base))
         return (grouped(sp.expand(num)) / den) ** power.exp
 
-    out = expr.replace(lambda e: e.is_Pow and e.exp.is_negative and _holds_fraction(e.base), clear)
+    # (only a whole power: under a root a fraction stays, as √(1 − ẋ²/c²) is printed)
+    out = expr.replace(lambda e: e.is_Pow and e.exp.is_negative and e.exp.is_Integer and _holds_fraction(e.base), clear)
     if out == expr:
         return expr
     # a number common to a sum's terms in front of it: 2(m₁ + m₂), not (2m₁ + 2m₂)

@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 
 from app.engine.names import unicode
+from app.limits import LYAPUNOV_SECONDS
 from app.numerics.errors import TooMuchWork
 from app.numerics.lyapunov import largest_exponent
 from app.service.cache import JsonCache, source_fingerprint
@@ -22,8 +23,6 @@ from app.service.simulate_request import parameter_vector
 from app.viz.page_model import power_of_ten
 from app.viz.units import coordinate_units
 
-# the runs of a measurement may take this long (seconds); a first page request waits for it once
-WALL_SECONDS = 60.0
 
 
 def lyapunov_cache(folder: Path | None = None) -> JsonCache:
@@ -42,7 +41,7 @@ def measure_scene(scene_id: str, cache: JsonCache | None = None, chapter: Scenes
         system, _ = chapter.system(scene_id)
         q = system.coordinates
         y0 = np.array([s.initial.get(n, 0.0) for n in q] + [s.initial.get(f"{n}_dot", 0.0) for n in q])
-        found = largest_exponent(system, parameter_vector(d, {}), y0, s.lyapunov_seconds, WALL_SECONDS)
+        found = largest_exponent(system, parameter_vector(d, {}), y0, s.lyapunov_seconds, LYAPUNOV_SECONDS)
         return {
             "value": found.value, "t_end": found.t_end, "gap": found.gap, "every": found.every,
             "settle": found.settle, "method": found.method, "coordinate": q[0],

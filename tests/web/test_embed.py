@@ -87,7 +87,7 @@ def test_the_scene_page_offers_each_view_as_a_frame_with_its_height(client):
                       ("/embed/scenes/pulley?view=compact", str(VIEWS["compact"]["height"]))]  # fmt: skip
     # in a lecturer's words (inst-c 22): no setting's name, no address code; the plots chosen by their titles
     words = _words(offer[1])
-    assert "ask whoever runs this server to allow your course site" in words
+    assert "ask whoever set up this book for your course to allow your course site" in words
     assert "LAGRANGE_" not in offer[1] and "panel=" not in words
     plots = re.findall(r'<option value="([^"]*)"[^>]*>([^<]+)</option>', offer[1])
     assert plots[0] == ("", "None: the animation alone") and ("energy", "Energy against time") in plots
