@@ -24,7 +24,6 @@ from app.viz.page_model import power_of_ten
 from app.viz.units import coordinate_units
 
 
-
 def lyapunov_cache(folder: Path | None = None) -> JsonCache:
     """The measured exponents' cache (memory, then disk): the app's services hold one (app/service/answers.py)."""
     return JsonCache("lyapunov", source_fingerprint("engine", "scenes", "numerics"), folder)
