@@ -66,7 +66,9 @@ def test_the_join_form_asks_for_the_login_the_class_asks_for(browser, live_serve
     assert page.locator("#joined-name").inner_text() == "Ada L."
     assert page.evaluate("document.documentElement.scrollWidth <= window.innerWidth")
 
-    # the dashboard shows it under the pseudonym; the grades file has it first, under Canvas's header
+    # the dashboard shows it under the pseudonym, once the names are shown (hidden as the page opens); the grades
+    # file has it first, under Canvas's header
+    teach.click("#names-shown")
     row = teach.locator('#dash-students tr[data-student="Ada L."]')
     row.locator(".dash-login").wait_for()
     assert row.locator(".dash-login").inner_text() == "SIS Login ID: alovelace"
