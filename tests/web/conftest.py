@@ -8,7 +8,8 @@ import pytest
 from app.main import app
 from app.service.services import Services
 from app.web.api_classes import classroom as classroom_dep
-from tests.classes import classroom
+from tests.classes import BACKENDS, classroom
+from tests.postgres import postgres_server  # noqa: F401 - the session fixture of classes_on_both
 
 
 @pytest.fixture
@@ -33,11 +34,23 @@ def override() -> Iterator[Callable[[Callable[..., Any], Any], Any]]:
         app.dependency_overrides.pop(dependency, None)
 
 
-@pytest.fixture
-def classes(services, tmp_path):
-    """The classes in a SQLite database of the test's own (a module testing both backends defines its own)."""
-    room = classroom(services.checking, "sqlite", tmp_path, None)
+def _served(room):
+    """The routes are given ``room`` for the classes during the test; it stops after."""
     app.dependency_overrides[classroom_dep] = lambda: room
     yield room
     app.dependency_overrides.pop(classroom_dep, None)
     room.stop()
+
+
+@pytest.fixture
+def classes(services, tmp_path):
+    """The classes in a SQLite database of the test's own (a module testing both backends asks for
+    ``classes_on_both`` under this name)."""
+    yield from _served(classroom(services.checking, "sqlite", tmp_path, None))
+
+
+@pytest.fixture(params=BACKENDS)
+def classes_on_both(request, services, tmp_path):
+    """The classes in a database of the test's own, once on SQLite and once on PostgreSQL."""
+    postgres = request.getfixturevalue("postgres_server") if request.param == "postgresql" else None
+    yield from _served(classroom(services.checking, request.param, tmp_path, postgres))

@@ -11,22 +11,17 @@ from sqlalchemy import text
 
 from app.main import app
 from app.web.api_classes import classroom as classroom_dep
-from tests.classes import BACKENDS, classroom
-from tests.postgres import postgres_server  # noqa: F401 - the session fixture
+from tests.classes import classroom
 
 SCENE = "simple-pendulum"
 WRONG_T = "m*R**2*theta_dot**2"  # twice T: the named mistake missing_half
 RIGHT_T = "m*R**2*theta_dot**2/2"
 
 
-@pytest.fixture(params=BACKENDS)
-def classes(request, services, tmp_path):
-    postgres = request.getfixturevalue("postgres_server") if request.param == "postgresql" else None
-    room = classroom(services.checking, request.param, tmp_path, postgres)
-    app.dependency_overrides[classroom_dep] = lambda: room
-    yield room
-    app.dependency_overrides.pop(classroom_dep, None)
-    room.stop()
+@pytest.fixture
+def classes(classes_on_both):
+    """Every test here on SQLite and on PostgreSQL (tests/web/conftest.py)."""
+    return classes_on_both
 
 
 def bearer(key: str) -> dict[str, str]:

@@ -12,8 +12,7 @@ import pytest
 from app.main import app
 from app.service.classroom import store
 from app.web.api_classes import classroom as classroom_dep
-from tests.classes import BACKENDS, classroom
-from tests.postgres import postgres_server  # noqa: F401 - the session fixture
+from tests.classes import classroom
 from tests.web.test_api_classes import RIGHT_T, SCENE, WRONG_T, bearer, join
 
 RIGHT_U = "-m*g*R*cos(theta)"
@@ -23,14 +22,10 @@ LATER = (datetime.now(UTC) + timedelta(days=7)).replace(microsecond=0)
 DUE = LATER.isoformat().replace("+00:00", "Z")
 
 
-@pytest.fixture(params=BACKENDS)
-def classes(request, services, tmp_path):
-    postgres = request.getfixturevalue("postgres_server") if request.param == "postgresql" else None
-    room = classroom(services.checking, request.param, tmp_path, postgres)
-    app.dependency_overrides[classroom_dep] = lambda: room
-    yield room
-    app.dependency_overrides.pop(classroom_dep, None)
-    room.stop()
+@pytest.fixture
+def classes(classes_on_both):
+    """Every test here on SQLite and on PostgreSQL (tests/web/conftest.py)."""
+    return classes_on_both
 
 
 def created(client, title="Mechanics") -> dict:
