@@ -265,6 +265,15 @@ def unit_text(unit: str) -> str:
     ).replace("*", "·")
 
 
+_SUPERSCRIPTS_BACK = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
+
+
+def unit_latex(unit: str) -> str:
+    """A unit as LaTeX after a value, upright and as printed (unit_text): "m/s²" → \\,\\mathrm{m/s^{2}}."""
+    printed = re.sub(r"[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+", lambda m: "^{" + m.group(0).translate(_SUPERSCRIPTS_BACK) + "}", unit_text(unit))
+    return r"\,\mathrm{" + printed.replace("·", r"\,") + "}"
+
+
 def angles(doc: dict[str, Any]) -> set[str]:
     """Coordinates that are angles, as the derivation document records them."""
     return set(doc.get("angles") or [])

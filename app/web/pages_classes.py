@@ -17,6 +17,7 @@ from app.service import derivations
 from app.service.classroom.keys import normal_code, why_not_code
 from app.service.classroom.logins import LMS, LOGIN_COLUMNS
 from app.service.classroom.reports import NOT_READ_WORDS
+from app.viz.page_model import unit_latex
 from app.viz.qr import qr_svg
 from app.web.api_classes import router as api_router
 from app.web.deps import ClientDep
@@ -25,8 +26,10 @@ from app.web.templating import templates
 pages = APIRouter(tags=["pages"], include_in_schema=False)
 
 
-def _scenes() -> list[dict[str, str]]:
-    return [{"id": s.id, "title": s.title} for s in derivations.SCENES.values()]
+def _scenes() -> list[dict[str, object]]:
+    # each scene's parameters' units as LaTeX, so that a value the instructor sets is read with its unit ("l₂ = 0.5 m")
+    return [{"id": s.id, "title": s.title, "units": {p.name: unit_latex(p.unit) for p in s.system.parameters}}
+            for s in derivations.SCENES.values()]
 
 
 @pages.get("/teach", response_class=HTMLResponse)

@@ -13,6 +13,7 @@ import { howTo, numbered, refusalWords, verdictWords } from "./verdict-words.js"
 const memory = stored("lagrange-join");
 const scenes = JSON.parse(document.getElementById("class-scenes").textContent);
 const titleOf = Object.fromEntries(scenes.map((s) => [s.id, s.title]));
+const unitsOf = Object.fromEntries(scenes.map((s) => [s.id, s.units || {}]));
 const $ = (id) => document.getElementById(id);
 // a student's key that no longer opens its class: the class was deleted (by its instructor, or past its retention)
 const CLOSED = "This class was closed by your instructor: its page and your answers in it are gone. To join another "
@@ -249,6 +250,16 @@ function setupView(item) {
   return box;
 }
 
+/** The values the instructor set, each letter as the page prints it and, for a scene, with its unit:
+ *  "Take m₁ = 2 kg, l₂ = 0.5 m." (a typed system's parameters carry no unit). */
+function valuesView(item, symbols) {
+  const values = Object.entries(item.parameters || {});
+  if (!values.length) return [];
+  const units = (item.scene && unitsOf[item.scene]) || {};
+  const tex = values.map(([k, v]) => `${symbols[k] || k} = ${v}${units[k] || ""}`).join(",\\quad ");
+  return [el("p", { className: "help join-values" }, "Take ", typeset(el("span"), tex), ".")];
+}
+
 async function drawItems() {
   const holder = $("join-items");
   const parts = [];
@@ -266,10 +277,9 @@ async function drawItems() {
       // the plain page printed every answer of the assignment), and the class page stays where it was
       if (item.scene) section.append(el("p", {}, el("a", { href: `/scenes/${item.scene}#practice=on`, target: "_blank", rel: "noopener", text: "The scene's set-up and figure" }), " (its page in practice mode, in a new tab: the derivation stays hidden)."));
       else section.append(setupView(item));
-      const values = Object.entries(item.parameters || {});
-      if (values.length) section.append(el("p", { className: "help", text: `Take ${values.map(([k, v]) => `${k} = ${v}`).join(", ")}.` }));
       try {
         const practice = await practiceOf(item);
+        section.append(...valuesView(item, practice.symbols || {}));
         const steps = item.steps.length ? item.steps : practice.exercises.map((e) => ({ step: e.step, coordinate: e.coordinate }));
         item.steps = steps;
         for (const s of steps) section.append(stepView(a, item, practice, s, index++));

@@ -56,3 +56,28 @@ def test_a_student_reads_the_set_up_above_the_boxes_on_a_phone(browser, live_ser
     page.locator(".join-item").first.screenshot(path=artifacts / "join-setup-390.png")
     assert errors == []
     context.close()
+
+
+def test_values_the_instructor_sets_are_read_with_their_letters_and_units(browser, live_server, classes, artifacts):  # noqa: F811
+    """student-g: "Take m1 = 2, l2 = 0.5" named the values as code, without units; they read as the scene's page
+    prints them, m₁ = 2 kg, l₂ = 0.5 m."""
+    context = browser.new_context(base_url=live_server, **PHONE)
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    errors = _errors_of(page)
+    made = page.request.post("/api/classes", data={"title": "Values"}).json()
+    teacher = {"Authorization": f"Bearer {made['teacher_key']}"}
+    item = {"scene": "double-pendulum", "parameters": {"m1": 2, "l2": 0.5}, "steps": [{"step": "kinetic"}]}
+    added = page.request.post(f"/api/classes/{made['code']}/assignments", headers=teacher,
+                              data={"title": "Week 2", "items": [item]})
+    assert added.status == 201, added.text()
+    page.goto(f"/join?code={made['code']}")
+    page.fill("#join-name", "Ada")
+    page.click("#join-form button[type=submit]")
+    values = page.locator(".join-item .join-values")
+    values.locator(".katex").wait_for()
+    assert values.locator("annotation").text_content() == r"m_{1} = 2\,\mathrm{kg},\quad l_{2} = 0.5\,\mathrm{m}"
+    assert values.inner_text().startswith("Take ")
+    values.screenshot(path=artifacts / "join-values-390.png")
+    assert errors == []
+    context.close()
