@@ -167,3 +167,20 @@ def test_a_wrong_reply_to_a_follow_up_is_diagnosed_by_the_steps_own_mistakes(rep
     assert named in wrong["hint"], wrong["hint"]
     if "θ̇₁" in named and "cross" not in named:
         assert "The upper bob carries the lower bob along with it." in wrong["hint"]
+
+
+@pytest.mark.parametrize(
+    ("scene", "typed", "said"),
+    [
+        # student-h 3: a bare number inside a bracket took the bracket's units, and the answer read as another zero
+        # of U ("plus the constant 3mg", a force)
+        ("helix-bead", "m*g*(z + 3)", "3 has no unit and cannot be added to a length"),
+        ("simple-pendulum", "m*g*(R*(1 - cos(theta)) + 2)", "2 has no unit and cannot be added to a length"),
+    ],
+)
+def test_a_bare_number_inside_a_bracket_is_a_units_mistake(scene, typed, said):
+    result = judge(step_problem(scene, "potential", None), typed)
+    assert result["verdict"] == "incorrect" and said in result["hint"], result
+    # the same zero moved with its unit is another zero of U
+    fine = judge(step_problem(scene, "potential", None), typed.replace("3)", "3*R)").replace("2)", "2*R)"))
+    assert fine["verdict"] == "equivalent", fine
