@@ -113,3 +113,32 @@ def test_metres_are_written_out_in_prose_where_m_is_a_mass(scene_id):
         pytest.skip("no mass m on this page")
     found = [text[max(0, m.start() - 40) : m.end() + 20] for text in _prose(doc) for m in _METRES.finditer(text)]
     assert not found, found
+
+
+
+def test_the_letters_of_a_constraint_are_read_from_one_home(monkeypatch):
+    # issue 40: F₁, λ₁ and 𝒞₁ were each spelled in the Symbols table, the steps of the forces of constraint and
+    # the page's Results; with other letters given in notation.py, all three print those and none of the old.
+    # The served document is read before the letters change, and nothing below goes through a cache.
+    from app.engine import notation
+    from app.engine.derive import derive, value_or
+    from app.engine.report import Printer
+    from app.engine.report_members import constraint_steps
+    from app.viz.page_model import scene_page
+
+    doc = derivation_document("helix-bead")
+    monkeypatch.setattr(notation, "surface", lambda a: (rf"\Sigma_{{{a}}}", f"Σ{a}"))
+    monkeypatch.setattr(notation, "multiplier", lambda a: (rf"\mu_{{{a}}}", f"μ{a}"))
+    monkeypatch.setattr(notation, "force", lambda a: (f"G_{{{a}}}", f"G{a}"))
+    d = derive(SCENES["helix-bead"].system)
+    forces = value_or(d.constraint_forces, ())
+    assert len(forces) == 2
+    letters = {r["unicode"] for r in notation.table(d, forces)}
+    assert {"Σ1", "Σ2", "μ1", "μ2", "G1", "G2"} <= letters
+    assert not {"𝒞₁", "λ₁", "F₁", "𝒞₂", "λ₂", "F₂"} & letters
+    steps = " ".join(s["latex"] for s in constraint_steps(d, forces, Printer(d.table.latex_names())))
+    assert r"\Sigma_{1} &= " in steps and r"G_{2} &= \mu_{2} \left|\frac{\partial \Sigma_{2}}" in steps
+    assert r"\lambda_{" not in steps and "F_{" not in steps and r"\mathcal{C}_{" not in steps
+    shown = scene_page(doc, {"title": "helix"})["summary"]["constraint_forces"]
+    assert [f["symbol"] for f in shown] == ["G_{1}", "G_{2}"]
+    assert all(f["latex"].startswith(f["symbol"] + " = ") for f in shown)
