@@ -222,8 +222,9 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
             "equilibria": [
                 {
                     # a root as a textbook writes it: r₀ = (p_θ²/(m k))^{1/4}
-                    "position": {**pr.pair(e.position), "latex": pr.root(e.position)},
-                    "omega_squared": pr.pair(e.omega_squared),
+                    "position": {**pr.pair(e.position), "latex": pr.root(e.position), "unicode": pr.root_text(e.position)},
+                    # with its running-text form, for the sliders' marks (ω² = 0 where it changes stability)
+                    "omega_squared": {**pr.pair(e.omega_squared), "unicode": pr.text(e.omega_squared)},
                     "stable": e.stable,
                     # where it exists (arccos(g/(R w²)) needs R w² > g) and, with no verdict, when it is stable
                     "exists": _inequality(pr, e.exists),

@@ -13,11 +13,15 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
+# The mass matrix is 𝓜 (a calligraphic M) on every page: a body's mass is often M (the pulley's, the wedge's, a total
+# mass in an erratum), and one letter means one quantity throughout the book
+MASS_MATRIX = (r"\mathcal{M}", "𝓜")  # (LaTeX, Unicode)
+
 # letters every page prints with a meaning of its own: a declared name spelled so would give one letter two
-# meanings on the page (a charge q beside the coordinates q of S[q] and M q̈ = f), so a user's system is refused
+# meanings on the page (a charge q beside the coordinates q of S[q] and 𝓜 q̈ = f), so a user's system is refused
 # with a name to use instead (app/service/user_checks.py)
 PAGE_LETTERS: dict[str, tuple[str, str]] = {
-    "q": ("the generalized coordinates (S[q], M q̈ = f)", "e"),
+    "q": (f"the generalized coordinates (S[q], {MASS_MATRIX[1]} q̈ = f)", "e"),
     "p": ("a generalized momentum (p_x, p_θ)", "P0"),
     "S": ("the action, S = ∫ L dt", "S0"),
     "T": ("the kinetic energy", "T0"),
@@ -26,7 +30,7 @@ PAGE_LETTERS: dict[str, tuple[str, str]] = {
     "h": ("the energy function", "h0"),
     "H": ("the Hamiltonian", "H0"),
     "E": ("the energy, T + U", "E0"),
-    "f": ("the right-hand side of M q̈ = f", "f0"),
+    "f": (f"the right-hand side of {MASS_MATRIX[1]} q̈ = f", "f0"),
     "Q": ("a generalized force", "Q0"),
 }
 
@@ -58,9 +62,6 @@ _TRAILING_DIGITS = re.compile(r"([A-Za-z]+?)(\d+)")
 HAT = "\u0302"
 # accents written as a suffix of the name: a velocity's dots, and a unit vector's hat (r_hat -> r̂)
 _DOTS = (("_ddot", "ddot", DDOT), ("_dot", "dot", DOT), ("_hat", "hat", HAT))
-# The mass matrix is 𝓜 (a calligraphic M) on every page: a body's mass is often M (the pulley's, the wedge's, a total
-# mass in an erratum), and one letter means one quantity throughout the book
-MASS_MATRIX = (r"\mathcal{M}", "𝓜")  # (LaTeX, Unicode)
 # LaTeX's \phi is the closed ϕ; the φ of running text (U+03C6) is LaTeX's \varphi: one glyph on a page
 _TEX_GREEK = {"phi": "varphi"}
 

@@ -22,7 +22,7 @@ import sympy as sp
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import Derivation
 from app.engine.dimensions import Dims, add_dims, dimension, kind_of_unit, system_dimensions, unit_text
-from app.engine.names import MASS_MATRIX, latex, prose, unicode
+from app.engine.names import MASS_MATRIX, SUBSCRIPT, latex, prose, unicode
 from app.engine.textbook import unicode_text
 from app.engine.transform import Transformed
 
@@ -46,6 +46,25 @@ DERIVED: dict[str, tuple[str, tuple[tuple[str, str], ...]]] = {
 
 # a constraint's surface 𝒞 = 0 (a calligraphic C, which no parameter can be), in its steps and the Symbols table
 CONSTRAINT = r"\mathcal{C}"
+
+
+# The letters of the a-th constraint (a = 1, 2, … in the order the Results list the forces): its surface 𝒞ₐ = 0,
+# its multiplier λₐ and the size Fₐ = λₐ |∂𝒞ₐ/∂r| of its force. Every step, the Symbols table and the page's
+# Results read them here, so that F₂ in a formula is the F₂ the table explains.
+def surface(a: int) -> tuple[str, str]:
+    """The a-th constraint's letter (LaTeX, Unicode): 𝒞ₐ."""
+    return f"{CONSTRAINT}_{{{a}}}", f"𝒞{str(a).translate(SUBSCRIPT)}"
+
+
+def multiplier(a: int) -> tuple[str, str]:
+    """The a-th constraint's Lagrange multiplier (LaTeX, Unicode): λₐ."""
+    return rf"\lambda_{{{a}}}", f"λ{str(a).translate(SUBSCRIPT)}"
+
+
+def force(a: int) -> tuple[str, str]:
+    """The size of the a-th force of constraint (LaTeX, Unicode): Fₐ."""
+    return f"F_{{{a}}}", f"F{str(a).translate(SUBSCRIPT)}"
+
 
 # quantities every document writes with one fixed letter
 FIXED: tuple[tuple[str, str, str], ...] = (
@@ -307,17 +326,15 @@ def _sometimes(
         # each constraint's 𝒞ₐ and λₐ with its unit in this scene: [λ] = [F]/[∂𝒞/∂r] (λ in N/m for a string's R² − r²)
         metres = {s: {"m": Fraction(1)} for f in forces for s in f.g.free_symbols if s not in dims}
         for a, f in enumerate(forces, start=1):
-            sub = str(a).translate(_SUBSCRIPTS)
+            (g_tex, g), (lam_tex, lam) = surface(a), multiplier(a)
             g_unit = _unit(dimension(f.g, {**dims, **metres})) if energy else ""
             lam_unit = _force_unit(dimension(f.multiplier, dims)) if energy else ""
-            rows.append(_row(f"{CONSTRAINT}_{{{a}}}", f"𝒞{sub}", f"the constraint of the {f.constraint.name}, 𝒞{sub} = 0", g_unit, "derived"))
-            rows.append(_row(rf"\lambda_{{{a}}}", f"λ{sub}", f"the multiplier of 𝒞{sub}: its force on the body is λ{sub} ∂𝒞{sub}/∂r", lam_unit, "derived"))
+            rows.append(_row(g_tex, g, f"the constraint of the {f.constraint.name}, {g} = 0", g_unit, "derived"))
+            rows.append(_row(lam_tex, lam, f"the multiplier of {g}: its force on the body is {lam} ∂{g}/∂r", lam_unit, "derived"))
         # each force of constraint its own letter, F₁, F₂, … in the order the Results list them (the page
         # prints F₁ = … there and in the constraint panel)
         for a, f in enumerate(forces, start=1):
-            rows.append(
-                _row(f"F_{{{a}}}", f"F{str(a).translate(_SUBSCRIPTS)}", f.constraint.name, "N" if energy else "", "derived")
-            )
+            rows.append(_row(*force(a), f.constraint.name, "N" if energy else "", "derived"))
         rows += _cartesian(d, forces)
     if tr is not None:
         for Q, definition in zip(tr.derivation.table.q, tr.definitions, strict=True):
@@ -360,9 +377,6 @@ def _symmetries(d: Derivation, dims: dict[sp.Symbol, Dims], energy: str) -> list
             continue
         rows.append(_row(c.latex_name, unicode(c.name), meaning, unit, "derived"))
     return rows
-
-
-_SUBSCRIPTS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
 def _cartesian(d: Derivation, forces: tuple[ConstraintForce, ...]) -> list[dict[str, Any]]:

@@ -57,6 +57,20 @@ class Printer:
     def root(self, expr: Any) -> str:
         """LaTeX of a quantity holding a cube or fourth root, as a textbook writes it: one root of a single
         fraction, r₀ = (p_θ²/(m k))^{1/4}, never √|p_θ|/(∜m ∜k); else ``tex``."""
+        found = self._root(expr)
+        if found is not None:
+            return rf"\left({self.tex(found[0])}\right)^{{1/{found[1]}}}"
+        return self.tex(expr)
+
+    def root_text(self, expr: Any) -> str:
+        """``root`` as running text writes it: (p_θ²/(mk))^(1/4); else ``text``."""
+        found = self._root(expr)
+        if found is not None:
+            return f"({self.text(found[0])})^(1/{found[1]})"
+        return self.text(expr)
+
+    def _root(self, expr: Any) -> tuple[sp.Expr, int] | None:
+        """(C, n) where ``expr`` is the n-th root of a single fraction C free of roots and |·| (n = 3 or 4)."""
         if isinstance(expr, sp.Expr) and expr.free_symbols:
             # n: the root's degree, the least common multiple of the exponents' denominators
             exponents = [e.exp for e in expr.atoms(sp.Pow) if e.exp.is_Rational and not e.exp.is_Integer]
@@ -70,8 +84,13 @@ class Printer:
                 )
                 power = sp.cancel(power)
                 if not any(not e.exp.is_Integer for e in power.atoms(sp.Pow)) and not power.atoms(sp.Abs):
-                    return rf"\left({self.tex(power)}\right)^{{1/{n}}}"
-        return self.tex(expr)
+                    return power, n
+        return None
+
+    def text(self, expr: sp.Expr) -> str:
+        """The textbook form of ``expr`` as running text writes it (a label, a sentence): its factors and terms in
+        the order of the LaTeX ``pair`` prints for it (2gα − ω² beside 2 g α − ω², never SymPy's 2αg)."""
+        return textbook.unicode_text(self.form(expr), self.names)
 
     def pair(self, expr: sp.Expr, first: sp.Symbol | None = None) -> dict[str, Any]:
         """An expression in the document: the text of its textbook form, the LaTeX of the same form, and the

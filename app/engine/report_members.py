@@ -22,7 +22,7 @@ def _cartesian_printer(m: Multipliers, pr: Printer) -> Printer:
         letter, index = s.name[0], s.name[1:]
         sub = f"_{{{index}}}" if index else ""
         names |= {s: f"{letter}{sub}", v: rf"\dot{{{letter}}}{sub}", a: rf"\ddot{{{letter}}}{sub}"}
-    names |= {lam: rf"\lambda_{{{a + 1}}}" for a, lam in enumerate(m.multipliers)}
+    names |= {lam: notation.multiplier(a)[0] for a, lam in enumerate(m.multipliers, start=1)}
     return Printer(names)
 
 
@@ -33,7 +33,7 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
         return []
     m = derived_multipliers(d, forces)
     cp = _cartesian_printer(m, pr)
-    lam = [rf"\lambda_{{{a + 1}}}" for a in range(len(forces))]
+    lam = [notation.multiplier(a)[0] for a in range(1, len(forces) + 1)]
     newton = [
         rf"{cp.tex(mass)} {cp.tex(acc)} = {cp.tex(rhs)}" + (_signed(cp.tex(f)) if f != 0 else "")
         for mass, acc, rhs, f in zip(m.masses, m.accelerations, m.newton, m.applied, strict=True)
@@ -50,7 +50,7 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
         _step(
             "constraints",
             "Constraints in Cartesian form",
-            [rf"{CONSTRAINT}_{{{a + 1}}} = {pr.tex(f.g)} = 0" for a, f in enumerate(forces)],
+            [f"{notation.surface(a)[0]} = {pr.tex(f.g)} = 0" for a, f in enumerate(forces, start=1)],
             [f.g for f in forces],
             "Each constraint the coordinates satisfy silently is written again as a surface 𝒞 = 0 in Cartesian "
             "space; it can only push along its normal, the gradient of 𝒞.",
@@ -70,7 +70,7 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
             "The multipliers along the normals",
             # 𝒞̈ = 0 said, not expanded: its expansion (a dozen terms on the turning parabola) is wider than a
             # page or a phone, and the equation for λ below is what it gives
-            [rf"\ddot{{{CONSTRAINT}}}_{{{a + 1}}} = 0" for a, _ in enumerate(m.twice)] + normal,
+            [rf"\ddot{{{CONSTRAINT}}}_{{{a}}} = 0" for a in range(1, len(m.twice) + 1)] + normal,
             [*m.twice, *m.right],
             "The constraint holds at every instant, so its second time derivative vanishes. Putting r̈ from "
             "Newton's law into it keeps only the component of the equations along ∇𝒞: an equation for λ alone, "
@@ -88,10 +88,10 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
             "Forces of constraint",
             [
                 # the force on the body the constraint names (``on``): λ times the size of 𝒞's gradient in its position
-                rf"F_{{{a + 1}}} = \lambda_{{{a + 1}}} \left|\frac{{\partial {CONSTRAINT}_{{{a + 1}}}}}"
+                rf"{notation.force(a)[0]} = {lam[a - 1]} \left|\frac{{\partial {notation.surface(a)[0]}}}"
                 + rf"{{\partial \vec r_{{{f.constraint.on}}}}}\right| = {pr.tex(f.force)}"
                 + rf"\quad (\text{{{f.constraint.name}}})"
-                for a, f in enumerate(forces)
+                for a, f in enumerate(forces, start=1)
             ],
             [f.force for f in forces],
             "The force a constraint exerts on the body it acts on, at r_i, is λ ∂𝒞/∂r_i; its size "

@@ -746,7 +746,8 @@ def normal_modes_json(nm: NormalModes, pr: Printer) -> list[dict[str, Any]]:
     return [
         {
             "equilibrium": dict(e.position),
-            "exact": {n: pr.pair(x) for n, x in e.exact.items()} if e.exact else None,
+            # with its running-text form, for the marks that name it (a separatrix that just reaches θ = π)
+            "exact": {n: {**pr.pair(x), "unicode": pr.text(x)} for n, x in e.exact.items()} if e.exact else None,
             "momenta": dict(e.momenta),
             "stable": e.stable,
             "kind": e.kind,

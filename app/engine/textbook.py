@@ -130,13 +130,17 @@ class _Printer(LatexPrinter):
         )
 
     # --- sums ------------------------------------------------------------------
-    def _print_Add(self, expr: sp.Add, order: Any = None) -> str:
-        top = getattr(self, "_top", False)
-        self._top = False
+    def ordered_terms(self, expr: sp.Add, top: bool) -> list[tuple[bool, sp.Expr]]:
+        """The terms of a sum as (negative, |term|) in the order the page prints them (the running text's too)."""
         signed = [self.split_sign(t) for t in expr.args]
         # a bracket whose moving terms are all negative starts with its constants: (2m₁ + m₂ − m₂ cos 2Δ)
         self._constants_first = not top and all(neg for neg, t in signed if not self.constant(t))
-        terms = sorted(signed, key=lambda st: self._term_key(st, top))
+        return sorted(signed, key=lambda st: self._term_key(st, top))
+
+    def _print_Add(self, expr: sp.Add, order: Any = None) -> str:
+        top = getattr(self, "_top", False)
+        self._top = False
+        terms = self.ordered_terms(expr, top)
         out = ""
         for i, (negative, term) in enumerate(terms):
             if negative:
@@ -151,9 +155,8 @@ class _Printer(LatexPrinter):
         text = self._print(f)
         return rf"\left({text}\right)" if isinstance(f, sp.Add) else text
 
-    def _product(self, factors: Sequence[sp.Expr], bare: bool = False) -> str:
-        if bare and len(factors) == 1:
-            return self._print(factors[0])  # a sum alone over a fraction bar needs no brackets
+    def ordered_factors(self, factors: Sequence[sp.Expr]) -> list[sp.Expr]:
+        """The factors of a product in the order the page prints them (the running text's too): m g R sin θ."""
         ordered = sorted(factors, key=self._factor_key)
         if (
             len(ordered) == 2 and isinstance(ordered[0], sp.Add) and self.constant(ordered[0])
@@ -161,7 +164,12 @@ class _Printer(LatexPrinter):
         ):  # fmt: skip
             # a mass times a sum of parameters, alone, as a textbook writes it: M(m₁ + m₂), m(1 + α²R²)
             ordered.reverse()
-        return " ".join(self._wrap(f) for f in ordered)
+        return ordered
+
+    def _product(self, factors: Sequence[sp.Expr], bare: bool = False) -> str:
+        if bare and len(factors) == 1:
+            return self._print(factors[0])  # a sum alone over a fraction bar needs no brackets
+        return " ".join(self._wrap(f) for f in self.ordered_factors(factors))
 
     def _frac(self, num: str, den: str) -> str:
         return rf"\frac{{{num}}}{{{den}}}"
@@ -355,6 +363,9 @@ class _Unicode(StrPrinter):
     def _print_Pi(self, expr: sp.Expr) -> str:
         return "π"
 
+    def _print_Abs(self, expr: sp.Abs) -> str:
+        return f"|{self._print(expr.args[0])}|"
+
     def _print_Function(self, expr: sp.Function) -> str:
         (arg,) = expr.args if len(expr.args) == 1 else (None,)
         # arccos, not acos: an inverse function as a textbook names it
@@ -369,8 +380,10 @@ class _Unicode(StrPrinter):
 
     def _print_Pow(self, expr: sp.Pow, rational: bool = False) -> str:
         base, exp = expr.as_base_exp()
-        if exp == sp.Rational(1, 2):
-            return f"√({self._print(base)})" if isinstance(base, (sp.Add, sp.Mul)) else f"√{self._print(base)}"
+        root = {sp.Rational(1, 2): "√", sp.Rational(1, 3): "∛", sp.Rational(1, 4): "∜"}.get(exp)
+        if root:
+            # √(g/R), ∜m: the roots the LaTeX beside it writes \sqrt, \sqrt[3], \sqrt[4]
+            return f"{root}({self._print(base)})" if isinstance(base, (sp.Add, sp.Mul)) else f"{root}{self._print(base)}"
         if exp.is_Integer and exp > 0 and base.is_Function and len(base.args) == 1:
             # sin² θ, cos²(θ₁ − θ₂)
             arg = self._print(base.args[0])
@@ -385,9 +398,9 @@ class _Unicode(StrPrinter):
         return f"{self._factor(base)}^({self._print(exp)})"
 
     def _product(self, factors: Sequence[sp.Expr]) -> str:
-        ordered = sorted(factors, key=self.tex._factor_key)
         out, previous_function = "", False
-        for f in ordered:
+        # the factors in the order the LaTeX of the same page prints them: m(1 + α²R²), 2gα − ω², ρ cos(ωt)
+        for f in self.tex.ordered_factors(factors):
             text = self._factor(f)
             # names are written side by side (mgR); a function is set apart by a space (m g sin θ -> mg sin θ)
             out += (" " if out and (f.is_Function or previous_function) else "") + text
@@ -395,6 +408,10 @@ class _Unicode(StrPrinter):
         return out
 
     def _print_Mul(self, expr: sp.Expr) -> str:
+        # a bracket of negative terms written positive, as the LaTeX writes it: −(m₁ + m₂)g, not (−m₁ − m₂)g
+        negative, expr = self.tex.split_sign(expr)
+        if negative:
+            return "−" + self._print_Mul(expr)
         coeff, rest = expr.as_coeff_Mul()
         sign = "−" if coeff < 0 else ""
         coeff = abs(coeff)
@@ -415,16 +432,21 @@ class _Unicode(StrPrinter):
         return f"{sign}{top or '1'}/{below}"
 
     def _print_Add(self, expr: sp.Add, order: Any = None) -> str:
+        top = getattr(self, "_top", False)
+        self._top = False
         out = ""
-        # positive terms first, as in the page's brackets: (x₂ − x₁ − l₀)
-        terms = sorted(expr.as_ordered_terms(), key=lambda t: t.could_extract_minus_sign())
-        for i, term in enumerate(terms):
+        # the terms in the order the LaTeX of the same page prints them: (1 + α²R²), (x₂ − x₁ − l₀)
+        for i, (negative, term) in enumerate(self.tex.ordered_terms(expr, top)):
             text = self._print(term)
-            if text.startswith("−"):
-                out += (" − " if i else "−") + text[1:]
+            if negative:
+                out += (" − " if i else "−") + text
             else:
                 out += (" + " if i else "") + text
         return out
+
+    def doprint(self, expr: Any) -> str:
+        self._top = isinstance(expr, sp.Add)
+        return super().doprint(expr)
 
 
 def unicode_text(expr: Any, names: dict[sp.Symbol, str] | None = None) -> str:

@@ -17,7 +17,6 @@ numerically from the engine's expressions at the default parameters:
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Sequence
 from typing import Any
 
@@ -31,12 +30,10 @@ LOG_SPAN = 50.0  # a useful range wider than this factor moves on a log scale
 SCAN = 240  # points of the scan for a change of stability
 
 
-def formula(sympy_text: str) -> str:
-    """A sympy string as Unicode text for a label: 2*alpha*g - omega**2 -> 2αg − ω²."""
-    text = re.sub(r"\*\*2\b", "²", sympy_text)
-    text = re.sub(r"\bpi\b", "π", text)
-    text = re.sub(r"[A-Za-z_][A-Za-z0-9_]*", lambda m: unicode(m.group(0)), text)
-    return text.replace("*", "").replace(" - ", " − ").replace("-", "−")
+def formula(pair: dict[str, Any]) -> str:
+    """A document expression as a label's text: the engine's running-text form (app/engine/report.Printer.text),
+    its factors in the order of the LaTeX beside it (2gα − ω², as 2 g α − ω² reads)."""
+    return str(pair["unicode"])
 
 
 def _env(doc: dict[str, Any], **extra: float) -> dict[str, float]:
@@ -110,8 +107,8 @@ def stability_marks(doc: dict[str, Any], ranges: dict[str, tuple[float, float]])
     coordinate = str(red.get("coordinate") or "")
     for e in red.get("equilibria") or []:
         w2_pair = e.get("omega_squared") or {}
-        w2, where = w2_pair.get("sympy"), (e.get("position") or {}).get("sympy")
-        if not w2 or where is None:
+        w2, where = w2_pair.get("sympy"), e.get("position")
+        if not w2 or not where:
             continue
         tree = document_tree(w2_pair)
         for p, (lo, hi) in ranges.items():
@@ -122,7 +119,7 @@ def stability_marks(doc: dict[str, Any], ranges: dict[str, tuple[float, float]])
             for a, b, fa, fb in zip(grid, grid[1:], signs, signs[1:], strict=False):
                 if fa is not None and fb is not None and fa * fb < 0:
                     value = _bisect(lambda x, p=p, w=w2_pair: _value(w, doc, _env(doc, **{p: x})) or 0.0, a, b)
-                    label = f"{formula(w2)} = 0: {unicode(coordinate)} = {formula(where)} changes stability"
+                    label = f"{formula(w2_pair)} = 0: {unicode(coordinate)} = {formula(where)} changes stability"
                     marks.setdefault(p, []).append({"value": value, "label": label})
     return marks
 
@@ -150,7 +147,7 @@ def separatrix_marks(doc: dict[str, Any], initial: dict[str, float]) -> dict[str
             continue
         # E = ½ M q̇₀² + U(q₀) = U(q_top)
         rate = math.sqrt(2 * (u_top - u0) / mass)
-        where = f"{unicode(q)} = {formula(e['exact'][q]['sympy']) if e.get('exact') else f'{top:.4g}'}"
+        where = f"{unicode(q)} = {formula(e['exact'][q]) if e.get('exact') else f'{top:.4g}'}"
         # the rate depends on where the run starts: the mark says which start it is for
         unit = coordinate_units(doc, scene=True)["units"].get(q, "")
         start_text = f"from {unicode(q)}(0) = {q0:.4g}{f' {unit}' if unit else ''}"

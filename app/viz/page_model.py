@@ -14,6 +14,7 @@ import re
 from collections.abc import Mapping, Sequence
 from typing import Any
 
+from app.engine import notation
 from app.engine.dimensions import kind_of_unit
 from app.engine.names import MASS_MATRIX, latex, prose, unicode
 from app.engine.notation import printed
@@ -172,7 +173,7 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         ),
         # each force with its letter, F₁ = …, as the Symbols table defines it (app/engine/notation.py)
         "constraint_forces": [
-            {**c, "symbol": f"F_{{{k}}}", "latex": f"F_{{{k}}} = {c['latex']}"}
+            {**c, "symbol": notation.force(k)[0], "latex": f"{notation.force(k)[0]} = {c['latex']}"}
             for k, c in enumerate(doc.get("constraint_forces") or [], start=1)
         ],
         # every letter of the page once, with what it stands for
@@ -626,4 +627,3 @@ def scene_page(
     }
     model["summary"]["symbols"] = page_symbols(model)
     return model
-

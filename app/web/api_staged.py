@@ -1,7 +1,7 @@
 """POST /api/derive/equations: the first stage of a derivation, answered before the whole document.
 
 The same system as POST /api/derive; the answer holds the equations of motion, the accelerations (or the
-mass matrix and forcing when they stay M⁻¹f), the symbols and parameters, what was left out so far and what
+mass matrix and forcing when they stay 𝓜⁻¹f), the symbols and parameters, what was left out so far and what
 POST /api/derive will add (``pending``).  A worker-pool job of its own under the derivation's limits
 (app/service/staged.py); when the whole document is cached, its members are answered at once.
 """
@@ -15,6 +15,7 @@ from fastapi import APIRouter, Body
 from fastapi.responses import Response
 from pydantic import BaseModel, Field
 
+from app.engine.names import MASS_MATRIX
 from app.errors import Refused
 from app.service import progress
 from app.service.staged import equations_bytes
@@ -27,6 +28,8 @@ from app.web.schemas import ParameterInfo, Problem
 from app.web.schemas_user import OPEN, EquationOfMotion, ExprPair, SkippedMember, SystemSpec
 
 router = APIRouter(prefix="/api", tags=["your systems"])
+# the mass matrix's letter on every page, in the descriptions too
+MM = MASS_MATRIX[1]
 
 
 class PendingMember(BaseModel):
@@ -44,9 +47,11 @@ class FirstStage(BaseModel):
     coordinates: list[str]
     parameters: dict[str, ParameterInfo]
     equations_of_motion: list[EquationOfMotion]
-    accelerations: dict[str, ExprPair] = Field(description="Empty when they stay M⁻¹f (see `skipped`).")
+    accelerations: dict[str, ExprPair] = Field(description=f"Empty when they stay {MM}⁻¹f (see `skipped`).")
     mass_matrix: list[list[ExprPair]]
-    forcing: list[ExprPair] = Field(description="f in M q̈ = f (a first stage gives it when the accelerations stay M⁻¹f).")
+    forcing: list[ExprPair] = Field(
+        description=f"f in {MM} q̈ = f, {MM} the mass matrix (a first stage gives it when the accelerations stay {MM}⁻¹f)."
+    )
     skipped: list[SkippedMember]
     pending: list[PendingMember] = Field(description="What POST /api/derive adds (empty when `stage` is whole).")
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import Any
 from urllib.parse import parse_qsl, urlencode
 
-from app.engine.names import latex
+from app.engine.names import MASS_MATRIX, latex
 from app.viz.page_model import letter_of
 
 STAGE_PARAMETER = {
@@ -63,10 +63,10 @@ def first_view(doc: dict[str, Any], href: str, key: str) -> dict[str, Any]:
         if e.get("divided_by")
     ]
     if not accelerations:
-        # M q̈ = f, with M and f printed: what the numerics solves at each step
+        # 𝓜 q̈ = f, with 𝓜 and f printed: what the numerics solves at each step
         rows = [" & ".join(x["latex"] for x in row) for row in doc["mass_matrix"]]
-        # the page's letter for the mass matrix (𝓜 where a parameter is named M): app/engine/notation.py
-        letter = letter_of(doc, "mass matrix", "M")
+        # the page's letter for the mass matrix (app/engine/notation.py, from app/engine/names.MASS_MATRIX)
+        letter = letter_of(doc, "mass matrix", MASS_MATRIX[0])
         view["letter"] = letter
         view["system"] = letter + r" \ddot{q} = f"
         view["mass_matrix"] = letter + r" = \begin{pmatrix} " + r" \\ ".join(rows) + r" \end{pmatrix}"

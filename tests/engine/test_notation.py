@@ -7,6 +7,7 @@ chooses the letters.
 
 from __future__ import annotations
 
+import json
 import re
 
 import pytest
@@ -65,6 +66,8 @@ def test_no_letter_names_two_quantities(scene_id):
         seen[row["unicode"]] = row["meaning"]
     declared = {re.sub(r"[{}\s]", "", r["latex"]) for r in rows if r["kind"] in ("parameter", "coordinate")}
     defined = _defined(doc)
+    # the mass matrix's letter is none of the declaration's (𝓜 beside the wedge's mass M)
+    assert _mass_matrix_letter(rows) not in {r["unicode"] for r in rows if r["kind"] in ("parameter", "coordinate")}
     # a parameter's or a coordinate's letter is never the name of a result (ω² = 2gα − ω²): a result equal
     # to a coordinate's value is that coordinate's equilibrium (θ = π), which is no new quantity
     results = {name: keys for name, keys in defined.items() if name in declared and name not in _coordinates(rows)}
@@ -113,3 +116,93 @@ def test_metres_are_written_out_in_prose_where_m_is_a_mass(scene_id):
         pytest.skip("no mass m on this page")
     found = [text[max(0, m.start() - 40) : m.end() + 20] for text in _prose(doc) for m in _METRES.finditer(text)]
     assert not found, found
+
+
+
+def test_the_letters_of_a_constraint_are_read_from_one_home(monkeypatch):
+    # issue 40: F₁, λ₁ and 𝒞₁ were each spelled in the Symbols table, the steps of the forces of constraint and
+    # the page's Results; with other letters given in notation.py, all three print those and none of the old.
+    # The served document is read before the letters change, and nothing below goes through a cache.
+    from app.engine import notation
+    from app.engine.derive import derive, value_or
+    from app.engine.report import Printer
+    from app.engine.report_members import constraint_steps
+    from app.viz.page_model import scene_page
+
+    doc = derivation_document("helix-bead")
+    monkeypatch.setattr(notation, "surface", lambda a: (rf"\Sigma_{{{a}}}", f"Σ{a}"))
+    monkeypatch.setattr(notation, "multiplier", lambda a: (rf"\mu_{{{a}}}", f"μ{a}"))
+    monkeypatch.setattr(notation, "force", lambda a: (f"G_{{{a}}}", f"G{a}"))
+    d = derive(SCENES["helix-bead"].system)
+    forces = value_or(d.constraint_forces, ())
+    assert len(forces) == 2
+    letters = {r["unicode"] for r in notation.table(d, forces)}
+    assert {"Σ1", "Σ2", "μ1", "μ2", "G1", "G2"} <= letters
+    assert not {"𝒞₁", "λ₁", "F₁", "𝒞₂", "λ₂", "F₂"} & letters
+    steps = " ".join(s["latex"] for s in constraint_steps(d, forces, Printer(d.table.latex_names())))
+    assert r"\Sigma_{1} &= " in steps and r"G_{2} &= \mu_{2} \left|\frac{\partial \Sigma_{2}}" in steps
+    assert r"\lambda_{" not in steps and "F_{" not in steps and r"\mathcal{C}_{" not in steps
+    shown = scene_page(doc, {"title": "helix"})["summary"]["constraint_forces"]
+    assert [f["symbol"] for f in shown] == ["G_{1}", "G_{2}"]
+    assert all(f["latex"].startswith(f["symbol"] + " = ") for f in shown)
+
+
+# the mass matrix written as a bare M: M q̈ = f, M⁻¹f, M^{-1} f, \mathcal-less M \ddot{q}, M = (matrix)
+_BARE_M = re.compile(r"(?<![\\\w{])M\s*(?:q̈|⁻¹|\^\{-1\}|\\ddot\{q\}|=\s*\\begin\{pmatrix\})")
+# a chain of three pendulums, the last bob of mass M: its accelerations stay 𝓜⁻¹f (too long in closed form)
+_CHAIN = {
+    "coordinates": ["a", "b", "c"],
+    "parameters": [{"name": "m", "value": 1.0, "unit": "kg"}, {"name": "M", "value": 2.0, "unit": "kg"},
+                   {"name": "l", "value": 1.0, "unit": "m"}, {"name": "g", "value": 9.81, "unit": "m/s^2"}],
+    "particles": [
+        {"mass": "m", "position": ["l*sin(a)", "0", "-l*cos(a)"]},
+        {"mass": "m", "position": ["l*sin(a) + l*sin(b)", "0", "-l*cos(a) - l*cos(b)"]},
+        {"mass": "M", "position": ["l*sin(a) + l*sin(b) + l*sin(c)", "0", "-l*cos(a) - l*cos(b) - l*cos(c)"]},
+    ],
+    "potential": "-g*l*((2*m + M)*cos(a) + (m + M)*cos(b) + M*cos(c))",
+}  # fmt: skip
+
+
+def _mass_matrix_letter(rows: list[dict]) -> str:
+    return next(r["unicode"] for r in rows if r["meaning"].startswith("mass matrix"))
+
+
+@pytest.mark.parametrize("scene_id", ["movable-incline", "pulley"])
+def test_a_scene_with_a_mass_m_writes_its_mass_matrix_with_another_letter(scene_id):
+    # issue 40: the wedge's (the pulley's) mass is M; the mass matrix its page and its notebook print is not
+    from app.service.derivations import derivation
+    from app.service.export.notebook import notebook
+    from app.service.export.source import scene_source
+
+    doc = derivation_document(scene_id)
+    declared = {r["unicode"] for r in doc["notation"] if r["kind"] in ("parameter", "coordinate")}
+    assert "M" in declared and _mass_matrix_letter(doc["notation"]) not in declared
+    mass_step = next(s for s in doc["steps"] if s["key"] == "mass-matrix")
+    assert r"\mathcal{M}" in mass_step["latex"]
+    assert not [m.group() for m in _BARE_M.finditer(json.dumps(doc, ensure_ascii=False))]
+    scene = SCENES[scene_id]
+    d = derivation(scene_id)
+    words = notebook(scene_source(scene, d, doc, tuple(float(x) for x in range(2 * len(d.table.q)))))
+    markdown = [" ".join(c["source"]) if isinstance(c["source"], list) else c["source"] for c in json.loads(words)["cells"] if c["cell_type"] == "markdown"]  # fmt: skip
+    assert any("mass matrix" in text for text in markdown)
+    assert not [text for text in markdown if _BARE_M.search(text)]
+
+
+def test_a_typed_system_with_a_mass_m_left_as_m_inverse_f_names_the_mass_matrix_apart():
+    # a typed chain whose last bob has the mass M: the first stage prints 𝓜 q̈ = f and 𝓜 = (…), never M q̈ = f
+    from app.engine.contract import first_stage
+    from app.service.user_checks import InvalidSystem, checked
+    from app.service.user_jobs import derive_checked
+    from app.web.playground_stages import first_view
+
+    doc = first_stage(derive_checked(checked(_CHAIN)))
+    assert doc["accelerations"] == {} and len(doc["mass_matrix"]) == 3
+    letter = _mass_matrix_letter(doc["notation"])
+    assert letter != "M" and letter in doc["skipped"][0]["reason"]
+    view = first_view(doc, "/playground?stage=whole", "key")
+    assert view["system"].startswith(r"\mathcal{M} \ddot{q} = f") and view["mass_matrix"].startswith(r"\mathcal{M} = ")
+    assert not [m.group() for m in _BARE_M.finditer(json.dumps([doc, view], ensure_ascii=False))]
+    # the same system with a parameter called f is refused: the refusal names the page's f without a bare M
+    with pytest.raises(InvalidSystem) as refused:
+        checked({**_CHAIN, "parameters": [*_CHAIN["parameters"], {"name": "f", "value": 1.0, "unit": ""}]})
+    assert "q̈ = f" in str(refused.value) and not _BARE_M.search(str(refused.value))

@@ -6,9 +6,14 @@ Euler–Lagrange equation divided by its acceleration's coefficient where the ma
 diagonal (θ̈ + (g/R) sin θ = 0).  A change of the printer that changes a page shows up here.
 """
 
-import pytest
+import re
 
+import pytest
+import sympy as sp
+
+from app.engine.names import unicode
 from app.engine.report import SCALED_CLAUSE
+from app.engine.textbook import unicode_text
 from app.scenes import SCENES
 from app.scenes.reasons import reason
 from app.service.derivations import derivation_document
@@ -142,3 +147,69 @@ def test_reasons_differ_between_scenes():
     # the same step is explained differently on different pages
     potentials = {SCENES[s].reasons["potential"] for s in CHAPTER}
     assert len(potentials) == len(CHAPTER)
+
+
+# ---- running text in the LaTeX's order (issue 40) ----------------------------------------------------------
+
+_TEX_LETTER = re.compile(
+    r"\\(dot|ddot)\{\\?([A-Za-z]+)\}(?:_\{(\d+)\})?|\\([A-Za-z]+)(?:_\{(\d+)\})?|([A-Za-z])(?:_\{(\d+)\})?"
+)
+# LaTeX commands that are no letter of the expression (functions, brackets, spacing)
+_NOT_LETTERS = {"sin", "cos", "tan", "left", "right", "sqrt", "frac", "tfrac", "cdot", "log", "exp", "sinh", "cosh",
+                "tanh", "operatorname", "mathrm", "arccos", "arcsin", "arctan", "pi"}  # fmt: skip
+_GREEK_TEX = {"varphi": "phi"}
+
+
+def _tex_letters(tex: str) -> list[str]:
+    """The letters of a LaTeX form in the order it prints them, each as running text writes it (φ̇, x₁, α)."""
+    out = []
+    for accent, stem, sub, command, command_sub, letter, letter_sub in _TEX_LETTER.findall(tex):
+        if accent:
+            out.append(unicode(_GREEK_TEX.get(stem, stem) + sub + ("_dot" if accent == "dot" else "_ddot")))
+        elif command and command not in _NOT_LETTERS:
+            out.append(unicode(_GREEK_TEX.get(command, command) + command_sub))
+        elif letter:
+            out.append(unicode(letter + letter_sub))
+    return out
+
+
+def _text_letters(text: str) -> list[str]:
+    text = re.sub(r"arccos|arcsin|arctan|sin|cos|tan|log|exp", " ", text).replace("π", "")
+    return re.findall(r"[A-Za-zα-ωΑ-Ω][\u0307\u0308]?[₀-₉]*", text)
+
+
+def _pairs(doc: object, coordinates: list[str]):
+    """Every expression of a document with its LaTeX and the coordinates it is written in (a change of
+    coordinates has its own)."""
+    if isinstance(doc, dict):
+        if isinstance(doc.get("sympy"), str) and isinstance(doc.get("latex"), str):
+            yield doc, coordinates
+        own = doc.get("coordinates") if isinstance(doc.get("coordinates"), list) else coordinates
+        for v in doc.values():
+            yield from _pairs(v, own)
+    elif isinstance(doc, list):
+        for v in doc:
+            yield from _pairs(v, coordinates)
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_running_text_prints_an_expression_in_the_order_of_its_latex(scene_id):
+    # prof-g (issue 40): "cos(zα)" and "2αg − ω²" in sentences and labels where the LaTeX beside them reads
+    # cos αz and 2gα − ω²: each served expression without fractions or roots (whose layout differs in one
+    # line) has its letters in the same order as running text and as LaTeX, and every running-text form the
+    # document serves with its twin is that text
+    doc = derivation_document(scene_id)
+    checked = 0
+    for pair, coordinates in _pairs(doc, doc["coordinates"]):
+        if "unicode" in pair:
+            assert _text_letters(pair["unicode"]) == _tex_letters(pair["latex"]), pair
+        tex = pair["latex"]
+        if any(mark in tex for mark in ("\\frac", "\\begin", "\\int", "=", "\\sqrt", "^{1/")):
+            continue
+        # the names a page gives the coordinates and their rates (what moves is printed after the parameters)
+        names = {sp.Symbol(n): n for c in coordinates for n in (c, f"{c}_dot", f"{c}_ddot")}
+        local = {n.name: n for n in names} | {p: sp.Symbol(p) for p in doc["parameters"]} | {"t": sp.Symbol("t")}
+        text = unicode_text(sp.sympify(pair["sympy"], locals=local), names)
+        assert _text_letters(text) == _tex_letters(tex), (text, tex)
+        checked += 1
+    assert checked >= 1

@@ -13,6 +13,7 @@ from __future__ import annotations
 # the server starts.
 import sympy as sp
 
+from app.engine import notation
 from app.engine.forms import textbook_form
 from app.service.export.action_cells import action_cells
 from app.service.export.code import (
@@ -154,7 +155,15 @@ def notebook(source: Source) -> str:
     )
     cells.append(_engine("EL", naming.code_list(map(form, eqs.residuals)), "EL"))
 
-    cells.append(_md("## Accelerations", "Solving M q̈ = f for the accelerations."))
+    # the page's letter for the mass matrix (𝓜: a body's mass may be M), the code's variable M
+    mass = notation.text("mass_matrix", d)
+    cells.append(
+        _md(
+            "## Accelerations",
+            f"The equations are linear in the accelerations: {mass} q̈ = f, with {mass} the mass matrix (M in the "
+            "code) and f the rest of each equation taken to the right. Solving it gives the accelerations.",
+        )
+    )
     cells.append(
         _code(*ACCELERATION_LINES, "for ak, x in zip(a, acc):", "    show(sp.latex(ak, symbol_names=LATEX), x)")
     )
