@@ -131,6 +131,13 @@ def unicode(name: str) -> str:
     return _uni_base(name)
 
 
+def said(name: str) -> str:
+    """A name in a sentence a student reads: as a textbook prints it, then once how it is typed where the two
+    differ (theta_ddot -> θ̈ (type theta_ddot), m1 -> m₁ (type m1), R -> R)."""
+    shown = unicode(name)
+    return shown if shown == name else f"{shown} (type {name})"
+
+
 def plain(name: str) -> str:
     """The name as typed in expressions (the project's symbol convention)."""
     return name

@@ -36,7 +36,7 @@ import unicodedata
 from dataclasses import dataclass, field
 
 from app.engine.parse_help import character_error
-from app.engine.parse_rules import ALLOWED_CHARACTERS, FUNCTIONS, ExpressionError
+from app.engine.parse_rules import ALLOWED_CHARACTERS, FUNCTIONS, TYPED_FUNCTIONS, ExpressionError
 
 # a number as Python writes one (1, 2.5, .5, 1_000, 1e-3: 2e1 is twenty; 2 times a name e1 is 2 e1)
 _NUMBER = re.compile(
@@ -203,6 +203,8 @@ def _word(given: str, i: int) -> tuple[list[Token], int]:
         if part["letters"][0].isdigit():  # a subscript with nothing to belong to
             raise _refuse(given, start, end, "a subscript belongs to a name")
         name = _name(given, start, end, part["letters"], part["dots"])
+        # a function typed as Python spells it (abs) is the allowlist's own (Abs)
+        name = TYPED_FUNCTIONS.get(name, name)
         kind = "func" if name in FUNCTIONS else "word" if keyword.iskeyword(name) else "name"
         tokens.append(Token(kind, name, start, end))
     return tokens, j

@@ -125,7 +125,7 @@ def test_an_acceleration_typed_with_another_left_side_names_the_boxs_own(client)
     context = {"scene": "simple-pendulum", "step": "acceleration", "coordinate": "theta"}
     refused = typeset(client, "R*theta_ddot = -g*sin(theta)", **context)
     assert refused.status_code == 422
-    assert "the left of '=' must be the acceleration theta_ddot" in refused.json()["detail"], refused.text
+    assert "the left of '=' must be the acceleration θ̈ (type theta_ddot)" in refused.json()["detail"], refused.text
     assert typeset(client, "theta_ddot = -g/R*sin(theta)", **context).status_code == 200
 
 
