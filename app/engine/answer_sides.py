@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 
 from app.engine.check_answers import CheckError, allowed_names, check_answer
-from app.engine.names import said, unicode
+from app.engine.names import said, said_all, unicode
 from app.engine.parse import Parsed
 from app.engine.parse_rules import FUNCTIONS, ExpressionError, typed_function
 from app.engine.parse_typed import typed
@@ -117,7 +117,7 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
     elif unknown and not (exc.part in _QUANTITIES or _DIFFERENTIALS.search(text if isinstance(text, str) else "")):
         # the parser's own words, as a tutor says them: the names as the page prints them
         # each name as the page prints it, with how it is typed (θ̇ (type theta_dot))
-        allowed = ", ".join(said(n) for n in allowed_names(step, kinds))
+        allowed = ", ".join(said_all(allowed_names(step, kinds)))
         advice = re.search(r"; (.*)\): '", str(exc))  # the parser's advice (letters written together, e^x)
         split = advice.group(1) if advice else ""
         out = f"{exc.part} is not a name in this problem; the names you may use are {allowed} and pi"
