@@ -12,9 +12,10 @@ from __future__ import annotations
 import re
 
 from app.engine.check_answers import CheckError, allowed_names, check_answer
-from app.engine.names import unicode
+from app.engine.names import said, said_all, unicode
 from app.engine.parse import Parsed
-from app.engine.parse_rules import FUNCTIONS
+from app.engine.parse_rules import FUNCTIONS, ExpressionError, typed_function
+from app.engine.parse_typed import typed
 
 # the comparisons an '=' could be part of, refused by the parser in its own words
 _COMPARISONS = ("==", "<=", ">=", "!=")
@@ -81,7 +82,6 @@ _DERIVATIVE = (
 )
 # functions a student may type under another name
 _FUNCTION_WORDS = {
-    "abs": "an absolute value |x| is typed Abs(x), with a capital A",
     "ln": "the natural logarithm is typed log(x)",
     "diff": _DERIVATIVE,
     "derivative": _DERIVATIVE,
@@ -116,7 +116,8 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
             out += f" (and if you meant {_MEANT[exc.part]}, write it out in the coordinates, their velocities and the parameters)"
     elif unknown and not (exc.part in _QUANTITIES or _DIFFERENTIALS.search(text if isinstance(text, str) else "")):
         # the parser's own words, as a tutor says them: the names as the page prints them
-        allowed = ", ".join(allowed_names(step, kinds))  # as typed, as the box's own list prints them
+        # each name as the page prints it, with how it is typed (θ̇ (type theta_dot))
+        allowed = ", ".join(said_all(allowed_names(step, kinds)))
         advice = re.search(r"; (.*)\): '", str(exc))  # the parser's advice (letters written together, e^x)
         split = advice.group(1) if advice else ""
         out = f"{exc.part} is not a name in this problem; the names you may use are {allowed} and pi"
@@ -135,12 +136,12 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
         # a function a student knows under another name, or a derivative: said as a tutor says it
         out = _FUNCTION_WORDS[str(exc.part).lower()]
     elif "only these functions may be called" in str(exc):
-        # a sentence, not a code allowlist: |x| is not among them, and Abs is named only to a student who typed a bar
-        functions = sorted(f for f in FUNCTIONS if f != "Abs")
+        # a sentence, not a code allowlist: each function as a student types it (abs, never SymPy's Abs)
+        functions = sorted(typed_function(f) for f in FUNCTIONS)
         bar = isinstance(text, str) and "|" in text
         out = (
             f"{exc.part} is not a function you may use here; the functions are {', '.join(functions[:-1])} and "
-            f"{functions[-1]}" + ("; |x| is typed Abs(x)" if bar else "")
+            f"{functions[-1]}" + ("; |x| is typed abs(x)" if bar else "")
         )
     elif exc.part in _QUANTITIES and unknown:
         out = f"{exc.part} is not a name the answer may use: write T and U out in the coordinates, their velocities and the parameters"
@@ -153,6 +154,15 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
             "that only the coordinates, their velocities and the parameters remain"
         )
     return exc if out is None else CheckError(f"answer: {out}", exc.field, exc.part, exc.start, exc.end)
+
+
+def _name_read(text: str) -> str:
+    """The one name ``text`` is as the parser reads it (θ̈, θ + U+0308, ẍ, theta'' and thetaddot are all
+    theta_ddot, x_ddot), else the text stripped."""
+    try:
+        return typed(text).text.strip()
+    except ExpressionError:
+        return text.strip()
 
 
 def _read(text: str, step: str, coordinate: str | None, kinds: dict[str, str]) -> tuple[Parsed, bool]:
@@ -171,15 +181,16 @@ def _read(text: str, step: str, coordinate: str | None, kinds: dict[str, str]) -
         # lhs = rhs is the equation lhs − rhs = 0
         return check_answer(f"{lhs} - ({rhs})", step, kinds), True
     if step == "acceleration":
-        name = lhs.strip()
+        name = _name_read(lhs)
         wanted = f"{coordinate}_ddot" if coordinate else None
         if (wanted is not None and name == wanted) or (wanted is None and name.endswith("_ddot") and name.isidentifier()):
             if not rhs.strip():
                 raise CheckError("answer: the right-hand side of '=' is empty", "answer", "=", at, at + 1)
             return _side(rhs, at + 1, step, kinds), False
-        shown = wanted or "q_ddot"
+        # the acceleration as the page prints it (θ̈), with how it is typed once
         raise CheckError(
-            f"answer: the left of '=' must be the acceleration {shown}: type {shown} = … or only the right-hand side",
+            f"answer: the left of '=' must be the acceleration {said(wanted) if wanted else 'q̈'}: write "
+            f"{unicode(wanted) if wanted else 'q̈'} = … or only the right-hand side",
             "answer",
             lhs,
             0,

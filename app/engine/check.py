@@ -74,7 +74,7 @@ from app.engine.compare import (
     without_constant,
 )
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json, sentence
-from app.engine.dimensions import dimension, mismatch, number_beside_units
+from app.engine.dimensions import dimension, mismatch, number_beside_units, unit_name
 from app.engine.mistake_answer import AnswerSlip, linearised, missing_square
 from app.engine.mistake_box import piece_box
 from app.engine.mistake_families import FollowUp, Mistake
@@ -461,14 +461,28 @@ def _follow_up_slip(pb: Problem, fu: FollowUp, answer: sp.Expr) -> str | None:
 def _constant_message(pb: Problem, difference: sp.Expr) -> str:
     varying, constant = without_constant(difference, pb.groups.dynamic())
     shown = constant if symbolically_zero(varying) else None
-    amount = f"the constant {unicode_text(shown)}" if shown is not None else "a constant"
+    amount = f"the constant {_with_unit(pb, shown)}" if shown is not None else "a constant"
     why = {
         "position": "another origin, which changes no velocity and no equation of motion",
-        "potential": "a different zero of height, which changes no force and no equation of motion",
-        "lagrangian": "a constant drops out of every Euler–Lagrange equation",
+        "potential": "a different zero of height; a constant added to U changes no force and nothing in the motion",
+        "lagrangian": "a constant added to L drops out of every Euler–Lagrange equation and changes nothing in the "
+        "motion",
         "hamiltonian": "the zero of U moved, which changes no equation of motion",
     }[pb.step]
     return f"Equivalent: your {pb.label} is the correct one plus {amount}: {why}."
+
+
+def _with_unit(pb: Problem, constant: sp.Expr) -> str:
+    """A constant as a sentence says it: a number with the step's unit (1 J, 0.5 m), or, where no unit was
+    declared, in the step's units (1, in the units of U); a product of parameters carries its own (m g R)."""
+    said = unicode_text(constant)
+    if constant.free_symbols:
+        return said
+    said = said.replace("-", "\u2212")  # a number's sign as printed: −2, never a hyphen
+    unit = dimension(pb.truths[0], pb.dimensions) if pb.dimensions else None
+    if unit is None:
+        return f"{said} (in the units of {short_label(pb.step, pb.label)})"
+    return f"{said} {unit_name(unit)}".strip()
 
 
 def _factor_message(pb: Problem, answer: sp.Expr, truth: sp.Expr, constant: bool) -> str:

@@ -43,7 +43,7 @@ _WHY_NOT = {
     ("position", "velocity"): "a position depends on the coordinates (and t), not on the velocities",
     ("potential", "velocity"): "U depends on positions only, so a velocity cannot appear in it",
     ("acceleration", "acceleration"): "the acceleration is what you solve for: write it with the coordinates, "
-    "velocities, parameters and t, without any q_ddot",
+    "velocities, parameters and t, without any acceleration q̈",
     ("omega_squared", "position"): "ω² at an equilibrium is a constant: write it with the parameters "
     "(and conserved momenta p_q) only",
     ("omega_squared", "velocity"): "ω² at an equilibrium is a constant: write it with the parameters "

@@ -35,6 +35,7 @@ from app.engine.mistake_other import held_still, other_coordinates
 from app.engine.mistake_pieces import effective_terms, masses_of, piece_mistakes, travelled
 from app.engine.mistake_positions import position_mistakes
 from app.engine.mistakes import OMEGA_HINT, RULES
+from app.engine.names import said_all
 
 MIN_POINTS = 6
 MAX_PAIRS = 12
@@ -277,7 +278,9 @@ def follow_up_json(m: Mistake, names: list[str]) -> dict[str, Any] | None:
     if m.follow_up is None:
         return None
     # kind: the step whose names the reply may use, and how it is typeset
-    return {"key": m.key, "question": m.follow_up.question, "names": names, "kind": m.follow_up.kind}
+    # names_said: each name as the page prints it, with how it is typed once (θ̇ (type theta_dot))
+    return {"key": m.key, "question": m.follow_up.question, "names": names, "names_said": said_all(names),
+            "kind": m.follow_up.kind}  # fmt: skip
 
 
 # ---- part by part ------------------------------------------------------------------------------

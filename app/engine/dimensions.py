@@ -124,6 +124,18 @@ def unit_text(d: Dims) -> str:
     return (show(top) or "1") + (f"/{show(bottom)}" if bottom else "")
 
 
+# the units a number is written with where the SI names one (1 J, 2 N, 0.5 m), else its base units
+_NAMED_UNITS = ("J", "N", "W", "m", "kg", "s")
+
+
+def unit_name(d: Dims) -> str:
+    """The unit a number of dimension ``d`` is written with: J for an energy, N for a force, m for a length, else
+    the base units (kg·m/s); "" for a pure number."""
+    if not d:
+        return ""
+    return next((u for u in _NAMED_UNITS if _BASE[u] == d), unit_text(d))
+
+
 def unit_latex(d: Dims) -> str:
     """The unit of a number in a formula, upright after a thin space, with negative powers: \\,\\mathrm{kg\\,m^{2}\\,s^{-1}}."""
     parts = [k + (f"^{{{v}}}" if v != 1 else "") for k in _ORDER if (v := d.get(k, Fraction(0))) != 0]

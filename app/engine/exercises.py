@@ -15,6 +15,7 @@ from app.engine.derive import Derivation
 from app.engine.equilibria_notes import equilibria_notes
 from app.engine.mistake_positions import body_name, component_keys
 from app.engine.mistakes import POINTERS, has_springs, without_springs
+from app.engine.names import said_all, unicode
 from app.engine.report import Printer, display
 
 
@@ -42,8 +43,12 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
             "title": f"Position: {pb.label}" if step == "position" else _title(_about(d, step, pb.label)),
             "lhs": _lhs(step, name, pr, d),
             "names": allowed_names(step, pb.kinds),
+            # the names as the page prints them, each with how it is typed once (θ̇ (type theta_dot))
+            "names_said": said_all(allowed_names(step, pb.kinds)),
             "answer": answer,
         }
+        if step == "acceleration":
+            item["acceleration"] = unicode(f"{name}_ddot")  # θ̈, as the box's own lhs prints it
         if step == "position":
             item["note"] = POSITION_NOTE
         items.append(item)

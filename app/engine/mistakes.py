@@ -84,7 +84,7 @@ POINTERS = {
     "lagrangian": "L = T − U, with T and U written in the generalized coordinates and their velocities.",
     "momentum": "p = ∂L/∂q̇: differentiate L with respect to this coordinate's velocity, keeping every other "
     "coordinate and velocity fixed, and keep every factor that multiplies that velocity.",
-    "equation": "d/dt(∂L/∂q̇) − ∂L/∂q = Q, written as one expression equal to zero with q_ddot for q̈; d/dt is a total "
+    "equation": "d/dt(∂L/∂q̇) − ∂L/∂q = Q, written as one expression equal to zero (or as lhs = rhs) in q, q̇ and q̈; d/dt is a total "
     "derivative, so it acts on every coordinate and velocity inside ∂L/∂q̇.",
     "acceleration": "Write the Euler–Lagrange equations and solve them for q̈; when coordinates are coupled (a "
     "mass matrix with off-diagonal terms), solve the equations together.",

@@ -132,6 +132,25 @@ def unicode(name: str) -> str:
     return _uni_base(name)
 
 
+def said_all(names: list[str]) -> list[str]:
+    """Names as ``said`` says them, each coordinate followed by its velocity, then its acceleration (θ, θ̇, θ̈)."""
+
+    def order(name: str) -> tuple[str, int]:
+        for rank, suffix in ((2, "_ddot"), (1, "_dot")):
+            if name.endswith(suffix):
+                return name[: -len(suffix)], rank
+        return name, 0
+
+    return [said(n) for n in sorted(names, key=order)]
+
+
+def said(name: str) -> str:
+    """A name in a sentence a student reads: as a textbook prints it, then once how it is typed where the two
+    differ (theta_ddot -> θ̈ (type theta_ddot), m1 -> m₁ (type m1), R -> R)."""
+    shown = unicode(name)
+    return shown if shown == name else f"{shown} (type {name})"
+
+
 def plain(name: str) -> str:
     """The name as typed in expressions (the project's symbol convention)."""
     return name

@@ -31,6 +31,7 @@ from app.engine.parse_rules import (
     MAX_ROOT,
     MAX_TERMS,
     ExpressionError,
+    typed_function,
 )
 from app.engine.parse_typed import Typed
 
@@ -208,7 +209,7 @@ class Checker:
             # SymPy keeps pi symbolic and combines its powers as a symbol's: (pi**5)**c is pi**(5*c)
             return Facts(FLOAT_CONSTANTS[name], None, 1, degree=1)
         if name in FUNCTIONS:
-            raise self.refuse(node, f"{name} is a function: write {name}(...)")
+            raise self.refuse(node, f"{typed_function(name)} is a function: write {typed_function(name)}(...)")
         if name.endswith("_ddot"):
             raise self.refuse(node, "accelerations never appear in a declaration; the engine derives them")
         if name.endswith("_dot") and name[:-4] in self.names:
@@ -312,7 +313,7 @@ class Checker:
 
     def call(self, node: ast.Call, depth: int) -> Facts:
         if not isinstance(node.func, ast.Name) or node.func.id not in FUNCTIONS:
-            allowed = ", ".join(sorted(FUNCTIONS))
+            allowed = ", ".join(sorted(typed_function(f) for f in FUNCTIONS))  # as typed: abs, never Abs
             if isinstance(node.func, ast.Constant | ast.Call | ast.BinOp) or (
                 isinstance(node.func, ast.Name) and node.func.id in self.names
             ):

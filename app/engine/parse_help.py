@@ -26,11 +26,14 @@ def character_error(text: str, i: int) -> ExpressionError:
         # a vulgar fraction (½, ¾): the keyboard's digits and a quotient in brackets say the same
         share = unicodedata.normalize("NFKC", ch).replace("⁄", "/")
         why = f"a fraction is typed with digits and a slash: write ({share})"
+    elif ch == "|":
+        # bars are a textbook's absolute value: say how it is typed (as in Python; the parser reads it as SymPy's)
+        why = "an absolute value |x| is typed abs(x)"
     elif ord(ch) > 127:
         why = (
             "besides the keyboard's letters, digits and signs, you may type Greek letters (θ), primes (θ'), "
             "dots over letters (θ̇), the signs · × − and small raised digits (x²)"
         )
     else:
-        why = "only letters, digits, spaces, _ . , ( ) and + - * / ^ ** are allowed"
+        why = "only letters, digits, spaces, _ . , ( ) and the signs + - * / ^ are allowed (^ is a power)"
     return ExpressionError(f"character {ch!r} at column {i + 1} is not allowed: {why}", ch, i, i + 1)

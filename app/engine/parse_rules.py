@@ -65,6 +65,8 @@ ALLOWED: dict[str, Allowed] = {
     "Abs": Allowed(sp.Abs, abs),
 }
 FUNCTIONS: dict[str, Callable[..., Any]] = {name: f.symbolic for name, f in ALLOWED.items()}
+# a function as a student types it where SymPy's name is another: |x| is typed abs(x), as in Python
+TYPED_FUNCTIONS = {"abs": "Abs"}
 ARITY: dict[str, int] = {name: f.arity for name, f in ALLOWED.items() if f.arity != 1}
 CONSTANTS: dict[str, sp.Expr] = {"pi": sp.pi}
 FLOAT_CONSTANTS = {"pi": math.pi}
@@ -73,11 +75,17 @@ _SYMPY_NAMES = {"E", "I", "S", "N", "O", "Q", "oo", "nan", "zoo", "sign", "re", 
 _SYMPY_NAMES |= {"sec", "csc", "cot", "asec", "acsc", "acot", "asinh", "acosh", "atanh", "coth", "sech", "csch"}
 _SYMPY_NAMES |= {"atan2", "Max", "Min", "Piecewise", "Heaviside", "DiracDelta", "Integral", "Derivative", "Subs"}
 _SYMPY_NAMES |= {"Symbol", "Function", "Integer", "Float", "Rational", "Matrix", "floor", "ceiling"}
+_SYMPY_NAMES |= set(TYPED_FUNCTIONS)
 RESERVED = frozenset(FUNCTIONS) | frozenset(CONSTANTS) | frozenset(_SYMPY_NAMES) | {"t"} | frozenset(keyword.kwlist)
 NAME_PATTERN = re.compile(r"[A-Za-z][A-Za-z0-9]{0,15}")  # always matched whole (fullmatch)
 # A name ending in "dot" would print like a velocity (SymPy typesets xdot as x with a dot).
 _DOTTED = re.compile(r"d{1,4}ot\Z")
 ALLOWED_CHARACTERS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.+-*/(), ")
+
+
+def typed_function(name: str) -> str:
+    """A function of the allowlist as a student types it (Abs: abs; sin: sin)."""
+    return next((typed for typed, own in TYPED_FUNCTIONS.items() if own == name), name)
 
 
 class ExpressionError(DerivationError):

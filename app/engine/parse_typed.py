@@ -19,11 +19,13 @@ The rules (docs/parsing.md, "As students type it"):
   by ``(`` is a call, as ``sin(θ)`` is, so a product needs a space: ``m (a + b)``;
 * a function applies to one name without parentheses (``sin θ cos θ``), and ``sin^2(θ)`` is ``sin(θ)^2``;
 * a quotient is a coefficient where a physicist means one thing: a fraction of two numbers before a spaced
-  factor (``1/2 m R^2`` is ½ m R², ``3/4 m l^2``), any quotient before spaced function calls and nothing
-  else (``g/l sin θ`` is (g/l) sin θ, ``-g/R sin(θ)``);
+  factor (``1/2 m R^2`` is ½ m R², ``3/4 m l^2``), a quotient by one name before a spaced factor (``-g/R θ``
+  is −(g/R) θ, ``k/m x``, as Python reads them), any quotient before spaced function calls (``g/l sin θ`` is
+  (g/l) sin θ, ``-g/R sin(θ)``), and nothing else;
 * what a reader could take two ways is refused with both readings: a power of a power (``2^x^2``), a
-  factor glued to an exponent (``x^2y``), any other factor after a quotient (``1/2m``, ``p^2/2 m``,
-  ``k/m x``), a function of a factor that is not a name (``sin 2θ``, ``cos θ^2``).
+  factor glued to an exponent (``x^2y``), any other factor after a quotient (``1/2m`` and ``g/Rθ`` written
+  together, ``p^2/2 m``, where 2m is the textbook's denominator), a function of a factor that is not a name
+  (``sin 2θ``, ``cos θ^2``).
 """
 
 from __future__ import annotations
@@ -34,7 +36,7 @@ import unicodedata
 from dataclasses import dataclass, field
 
 from app.engine.parse_help import character_error
-from app.engine.parse_rules import ALLOWED_CHARACTERS, FUNCTIONS, ExpressionError
+from app.engine.parse_rules import ALLOWED_CHARACTERS, FUNCTIONS, TYPED_FUNCTIONS, ExpressionError
 
 # a number as Python writes one (1, 2.5, .5, 1_000, 1e-3: 2e1 is twenty; 2 times a name e1 is 2 e1)
 _NUMBER = re.compile(
@@ -201,6 +203,8 @@ def _word(given: str, i: int) -> tuple[list[Token], int]:
         if part["letters"][0].isdigit():  # a subscript with nothing to belong to
             raise _refuse(given, start, end, "a subscript belongs to a name")
         name = _name(given, start, end, part["letters"], part["dots"])
+        # a function typed as Python spells it (abs) is the allowlist's own (Abs)
+        name = TYPED_FUNCTIONS.get(name, name)
         kind = "func" if name in FUNCTIONS else "word" if keyword.iskeyword(name) else "name"
         tokens.append(Token(kind, name, start, end))
     return tokens, j
@@ -426,8 +430,9 @@ class _Reader:
     def quotients(self) -> None:
         """A factor written after a quotient is refused with both readings (1/2m is (1/2) m or 1/(2 m)), unless
         the quotient is a coefficient as a physicist writes one: a fraction of two numbers before a spaced
-        factor (1/2 m R^2 is (1/2) m R²), or any quotient before spaced function calls (g/l sin θ is
-        (g/l) sin θ)."""
+        factor (1/2 m R^2 is (1/2) m R²), a quotient by one name before a spaced factor (g/R θ is (g/R) θ), or
+        any quotient before spaced function calls (g/l sin θ is (g/l) sin θ). A number's denominator after
+        another numerator stays refused: p^2/2 m is the textbook's p²/2m as often as (p²/2) m."""
         tokens = self.tokens
         for i, t in enumerate(tokens):
             if t.kind != "op" or t.text != "/":
@@ -441,11 +446,13 @@ class _Reader:
                 last = _powered(tokens, last)
             first = self._term(i)
             numbers = self._numbers(first, i, end)
-            if tokens[end].spaced and (numbers or all(tokens[k].kind == "func" for k in factors)):
+            # a coefficient as a textbook prints one, ended by a space: ½ m R², (g/R) θ, (k/m) x, (g/l) sin θ
+            coefficient = numbers or self._named(i, end) or all(tokens[k].kind == "func" for k in factors)
+            if tokens[end].spaced and coefficient:
                 continue
             n, d, f = self.typed(first, i), self.typed(i + 1, end), self.typed(end, last)
-            # a number's fraction glued to a factor (1/2m): say how the textbook's ½ m is typed
-            advice = f"for the first, put a space after {n}/{d}" if numbers else ""
+            # a coefficient glued to a factor (1/2m, g/Rθ): say how the textbook's ½ m or (g/R) θ is typed
+            advice = f"for the first, put a space after {n}/{d}" if numbers or self._named(i, end) else ""
             why = "a factor after a quotient is ambiguous"
             raise self.ambiguous(first, last, why, f"({n}/{d}) {f}", f"{n}/({d} {f})", advice)
 
@@ -456,6 +463,12 @@ class _Reader:
         while k < i and tokens[k].kind == "op" and tokens[k].text in "+-":
             k += 1
         return k == i - 1 and tokens[k].kind == "num" and end == i + 2 and tokens[i + 1].kind == "num"
+
+    def _named(self, i: int, end: int) -> bool:
+        """Whether the denominator of the "/" at ``i`` (tokens up to ``end``) is one name, perhaps raised to a
+        power (g/R, k/m, g/R^2): a space after it ends the quotient, as in Python and in a textbook's (g/R) θ."""
+        tokens = self.tokens
+        return tokens[i + 1].kind == "name" and all(tokens[k].kind in ("pow", "sup", "num") for k in range(i + 2, end))
 
     def _term(self, i: int) -> int:
         """The index of the first token of the product a "/" at ``i`` divides."""

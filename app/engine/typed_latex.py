@@ -65,7 +65,7 @@ def _call(node: Node, power: str | None = None) -> str:
     if name == "sqrt":
         body = rf"\sqrt{{{_node(args[0])}}}"
         return body if power is None else rf"{_paren(body)}^{{{power}}}"
-    if name == "abs":
+    if name == "Abs":  # |x|, typed abs(x) (app/engine/parse_rules.py: TYPED_FUNCTIONS)
         body = rf"\left|{_node(args[0])}\right|"
         return body if power is None else rf"{body}^{{{power}}}"
     if name == "exp":

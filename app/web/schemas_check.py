@@ -99,6 +99,9 @@ class FollowUp(BaseModel):
     key: str = Field(description="Send it back as the request's `follow_up` with the answer to the question.")
     question: str
     names: list[str] = Field(description="The names the answer may use.")
+    names_said: list[str] = Field(
+        default_factory=list, description="The same names as the page prints them, each with how it is typed once."
+    )
     kind: str = Field(
         "", description="The step whose names the answer may use, and as whose answer it is typeset (`/api/typeset`)."
     )
@@ -154,6 +157,11 @@ class Exercise(BaseModel):
     title: str
     lhs: str = Field(description="LaTeX of what the answer stands for (T, p_θ, θ̈; 0 for an equation).")
     names: list[str] = Field(description="The names the answer may use.")
+    names_said: list[str] = Field(
+        description="The same names as the page prints them, each followed once by how it is typed where the two "
+        "differ: θ̇ (type theta_dot)."
+    )
+    acceleration: str | None = Field(None, description="For an acceleration step: the acceleration as printed (θ̈).")
     answer: ExerciseAnswer = Field(description="The engine's step (to reveal on request).")
     note: str | None = Field(
         None, description="For a position: the axes and origin it is judged against, in a sentence for the student."

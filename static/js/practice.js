@@ -17,7 +17,7 @@
  */
 import { RequestError, fetchJSON } from "./api.js";
 import { readRequest, setControl } from "./controls.js";
-import { endOf, howTo, numbered, refusalWords, verdictWords, wordsOf } from "./verdict-words.js";
+import { endOf, howTo, namesSaid, numbered, refusalWords, verdictWords, wordsOf } from "./verdict-words.js";
 
 const root = document.getElementById("practice");
 const query = new URLSearchParams(window.location.search);
@@ -230,7 +230,7 @@ function followUpBox(item, followUp) {
       typesetInto(input, math, note, followUp.kind || item.dataset.step, typing.signal, (latex) => latex);
     }, TYPESET_DELAY_MS);
   });
-  box.append(label, row, element("p", { class: "help" }, `Names you may use: ${followUp.names.join(", ")}, pi.`), shown, status);
+  box.append(label, row, element("p", { class: "help" }, `Names you may use: ${namesSaid(followUp)}, pi.`), shown, status);
   const ask = async () => {
     const answer = input.value.trim();
     if (!answer) {
@@ -385,7 +385,7 @@ function buildItem(exercise, index) {
   const rhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
   if (exercise.step === "equation") katexInto(rhs, "= 0");
   row.append(lhs, input, rhs);
-  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${howTo(exercise)} Names you may use: ${exercise.names.join(", ")}, pi.${numbered(exercise.names)}`);
+  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${howTo(exercise)} Names you may use: ${namesSaid(exercise)}, pi.${numbered(exercise.names)}`);
   const previewBox = element("div", { class: "practice-preview", id: `${id}-preview`, "aria-label": "Your answer, typeset" });
   previewBox.append(element("div", { class: "practice-preview-math" }), element("p", { class: "help practice-preview-note" }));
   const actions = element("div", { class: "practice-actions" });

@@ -10,14 +10,20 @@ const LABELS = { correct: "Correct", equivalent: "Equivalent", incorrect: "Not y
 // what each box takes (app/engine/answer_sides.py): an equation as a textbook writes it, else the right-hand side
 const HOW = {
   equation: "Type the equation as lhs = rhs, or as one expression equal to zero.",
-  acceleration: "Type {q}_ddot = …, or only the right-hand side.",
+  acceleration: "Type {a} = … ({a} is typed {q}_ddot), or only the right-hand side.",
   other: "Type only the right-hand side.",
 };
 
 /** What a box takes, said above its names: "Type only the right-hand side." */
 export function howTo(exercise) {
-  const how = (HOW[exercise.step] || HOW.other).replace("{q}", exercise.coordinate || "q");
+  // the acceleration as the page prints it (θ̈), its typed spelling once
+  const how = (HOW[exercise.step] || HOW.other).replaceAll("{a}", exercise.acceleration || "q̈").replace("{q}", exercise.coordinate || "q");
   return `${exercise.note ? `${exercise.note} ` : ""}${how}`;
+}
+
+/** The names a box's answer may use, as the page prints them with how each is typed once: "θ̇ (type theta_dot)". */
+export function namesSaid(exercise) {
+  return (exercise.names_said || exercise.names).join(", ");
 }
 
 /** The rule the reader applies to numbered names, said as the checker applies it: m_1 is read as m1. */

@@ -295,7 +295,12 @@ def test_an_equation_typed_as_a_textbook_writes_it_is_checked_and_a_refusal_is_s
     page.goto("/scenes/simple-pendulum?practice")
     key = "equation:theta"
     page.wait_for_selector(STEP.format(key))
-    assert "lhs = rhs" in page.locator(STEP.format(key) + " .practice-names").inner_text()
+    names = page.locator(STEP.format(key) + " .practice-names").inner_text()
+    assert "lhs = rhs" in names
+    # issue 41, item 3: the names printed as a textbook prints them, each typed spelling once, in order
+    assert "θ (type theta), θ̇ (type theta_dot), θ̈ (type theta_ddot), pi." in names, names
+    how = page.locator('.practice-step[data-key="acceleration:theta"] .practice-names').inner_text()
+    assert how.startswith("Type θ̈ = … (θ̈ is typed theta_ddot), or only the right-hand side."), how
     box = page.locator(STEP.format(key) + " input[name]")
     box.fill("theta_ddot = -g/R*sin(theta)")
     page.wait_for_function(f"document.querySelector('{STEP.format(key)}').dataset.typeset === 'read'")

@@ -400,3 +400,30 @@ def test_an_unmatched_answer_is_compared_part_by_part():
     # two groups that differ are joined as a reader lists them, never run together with a comma
     (agree,), (one, other) = result["partial"]["agree"], result["partial"]["differ"]
     assert result["partial"]["message"] == f"Part by part: {agree} agree with the correct ones; {one} and {other} do not."
+
+
+def test_a_constant_difference_is_said_with_its_unit_and_what_it_changes():
+    # issue 41, item 4: "plus the constant 1" said no unit; where none was declared the sentence says whose
+    # units the number is in, and that a constant added to U or L changes nothing in the motion
+    from app.engine.check import _with_unit
+
+    spring = derive(
+        System(
+            coordinates=("x",),
+            parameters=(Parameter("m", 1.0, min=0.0), Parameter("k", 1.0, min=0.0)),
+            kinetic="m*x_dot**2/2",
+            potential="k*x**2/2",
+        )
+    )
+    potential = judge(problem(spring, "potential"), "k x^2/2 + 1")
+    assert potential["verdict"] == "equivalent"
+    assert "plus the constant 1 (in the units of U): " in potential["message"]
+    assert "a constant added to U changes no force and nothing in the motion" in potential["message"]
+    lagrangian = judge(problem(spring, "lagrangian"), "m x'^2/2 - k x^2/2 - 2")
+    assert "plus the constant −2 (in the units of L): a constant added to L" in lagrangian["message"]
+    assert "changes nothing in the motion" in lagrangian["message"]
+    # where the units are declared, a number is written with the step's own: J for U, m for a position
+    d = derivation("simple-pendulum")
+    assert _with_unit(problem(d, "potential"), sp.Integer(1)) == "1 J"
+    assert _with_unit(problem(d, "position", "z"), sp.Rational(1, 2)) == "1/2 m"
+    assert _with_unit(problem(d, "potential"), sp.Symbol("m") * sp.Symbol("g") * sp.Symbol("R")) == "mgR"

@@ -105,6 +105,14 @@ OTHER["theta"] = sp.Symbol("theta", real=True)
         ("m g/l sin θ", "m*g*sin(theta)/l"),
         ("g/l sin^2 θ", "g*sin(theta)**2/l"),
         ("g/l sin θ cos θ", "g*sin(theta)*cos(theta)/l"),
+        # a quotient by one name ends at a space, as in Python and a textbook's −(g/R) θ (issue 41, item 1)
+        ("-g/R theta", "-g*theta/R"),
+        ("-g/R θ", "-g*theta/R"),
+        ("k/m x", "k*x/m"),
+        ("g/l^2 x", "g*x/l**2"),
+        ("g/l x sin θ", "g*x*sin(theta)/l"),
+        ("g/l sin θ x", "g*x*sin(theta)/l"),
+        ("g/l sin(θ)x", "g*x*sin(theta)/l"),
     ],
 )
 def test_a_coefficient_as_a_physicist_writes_it_is_read(text, meant):
@@ -119,12 +127,10 @@ def test_a_coefficient_as_a_physicist_writes_it_is_read(text, meant):
         ("1/2m R^2", ("(1/2) m R^2", "1/(2 m R^2)")),
         ("1/2(m + M)", ("(1/2) (m + M)", "1/(2 (m + M))")),
         ("p^2/2 m", ("(p^2/2) m", "p^2/(2 m)")),  # the numerator is not a number
-        ("k/m x", ("(k/m) x", "k/(m x)")),
-        ("M/4 y2_dot", ("(M/4) y2_dot", "M/(4 y2_dot)")),
+        ("g/Rθ", ("(g/R) θ", "g/(R θ)")),  # no space: glued, as 2m is
+        ("M/4 y2_dot", ("(M/4) y2_dot", "M/(4 y2_dot)")),  # a number's denominator after a name: p²/2m
         ("1/2^2 m", ("(1/2^2) m", "1/(2^2 m)")),  # the denominator is not a plain number
-        ("g/l x sin θ", ("(g/l) x sin θ", "g/(l x sin θ)")),  # a name before the call
-        ("g/l sin θ x", ("(g/l) sin θ x", "g/(l sin θ x)")),  # a name after it
-        ("g/l sin(θ)x", ("(g/l) sin(θ)x", "g/(l sin(θ)x)")),
+        ("g/(l x) sin θ x", ("(g/(l x)) sin θ x", "g/((l x) sin θ x)")),  # nor one name
     ],
 )
 def test_a_factor_after_a_quotient_that_reads_two_ways_is_refused_with_both(text, readings):
@@ -139,7 +145,10 @@ def test_a_glued_fraction_of_numbers_is_told_the_space_that_makes_it_a_coefficie
         read("1/2m R^2", OTHER)
     assert str(refused.value).endswith("could be read as (1/2) m R^2 or as 1/(2 m R^2); for the first, put a space after 1/2")
     with pytest.raises(ExpressionError) as refused:
-        read("k/m x", OTHER)  # no space makes this one a coefficient: the brackets decide
+        read("g/Rθ", OTHER)  # a quotient by one name: the space makes it the textbook's (g/R) θ
+    assert str(refused.value).endswith("could be read as (g/R) θ or as g/(R θ); for the first, put a space after g/R")
+    with pytest.raises(ExpressionError) as refused:
+        read("p^2/2 m", OTHER)  # no space makes this one a coefficient: the brackets decide
     assert str(refused.value).endswith("write the one you mean, with its brackets")
 
 

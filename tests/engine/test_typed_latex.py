@@ -30,6 +30,9 @@ NAMES = ("M", "m", "g", "R", "X_dot", "theta", "theta_dot", "theta1", "theta2", 
         ("a*(-b)", r"a \left(-b\right)"),
         ("sqrt(g/R)", r"\sqrt{\frac{g}{R}}"),
         ("0.5*m", r"0.5 m"),
+        # an absolute value as a textbook prints it, never SymPy's Abs (issue 41, item 3)
+        ("m*g*R*abs(cos(theta))", r"m g R \left|\cos \theta\right|"),
+        ("Abs(x)**2", r"\left|x\right|^{2}"),
     ],
 )
 def test_an_answer_is_printed_as_typed(text, printed):

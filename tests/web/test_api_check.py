@@ -221,3 +221,16 @@ def test_a_name_typed_in_the_other_case_is_named_as_that(client):
     body = refused.json()
     assert body["detail"].startswith("answer: r is not a parameter here; did you mean R?"), body
     assert (body["start"], body["end"]) == (2, 3)
+
+
+@pytest.mark.parametrize("form", ["NFC", "NFD"])
+def test_an_acceleration_typed_with_a_combining_double_dot_is_checked(client, form):
+    # issue 41, item 2: θ followed by U+0308 was refused on the left of an acceleration's '='
+    import unicodedata
+
+    for text in ("θ\u0308 = -g/R sin θ", "θ'' = -g/R sin θ", "θ\u0308 + g/R sin θ = 0"):
+        step = "equation" if "= 0" in text else "acceleration"
+        body = {"step": step, "coordinate": "theta", "answer": unicodedata.normalize(form, text)}
+        response = check(client, body)
+        assert response.status_code == 200, response.text
+        assert response.json()["verdict"] == "correct", response.json()

@@ -125,7 +125,7 @@ def test_an_acceleration_typed_with_another_left_side_names_the_boxs_own(client)
     context = {"scene": "simple-pendulum", "step": "acceleration", "coordinate": "theta"}
     refused = typeset(client, "R*theta_ddot = -g*sin(theta)", **context)
     assert refused.status_code == 422
-    assert "the left of '=' must be the acceleration theta_ddot" in refused.json()["detail"], refused.text
+    assert "the left of '=' must be the acceleration θ̈ (type theta_ddot)" in refused.json()["detail"], refused.text
     assert typeset(client, "theta_ddot = -g/R*sin(theta)", **context).status_code == 200
 
 
@@ -136,3 +136,13 @@ def test_a_position_steps_component_is_not_taken_for_a_coordinate(client):
                            step="position", coordinate=component)
         assert response.status_code == 200, (scene, response.text)
         assert response.json()["latex"]
+
+
+def test_a_quotient_by_one_name_before_a_spaced_factor_is_previewed_as_a_textbooks_coefficient(client):
+    # issue 41, item 1: -g/R θ was refused while -g/R sin(θ) was read; the preview shows −(g/R) θ
+    context = {"scene": "simple-pendulum", "step": "equation", "coordinate": "theta"}
+    read = typeset(client, "θ'' = -g/R θ", **context)
+    assert read.status_code == 200, read.text
+    assert read.json()["latex"] == r"\ddot{\theta} = -\frac{g}{R} \theta"
+    glued = typeset(client, "θ'' = -g/Rθ", **context)
+    assert glued.status_code == 422 and glued.json()["readings"] == ["(-g/R) θ", "-g/(R θ)"]
