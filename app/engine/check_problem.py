@@ -19,6 +19,7 @@ from app.engine.dimensions import Dims, number_beside_units, system_dimensions
 from app.engine.mistake_families import Mistake
 from app.engine.mistake_positions import component_keys, position_label
 from app.engine.mistakes import has_springs
+from app.engine.notation import text
 from app.engine.report import plain_name
 from app.engine.textbook import unicode_text
 
@@ -115,7 +116,7 @@ def _unavailable(d: Derivation, step: str) -> str:
     return "this system has no equilibrium with a closed-form ω² that is not unstable"
 
 
-def step_title(step: str, name: str | None) -> str:
+def step_title(step: str, name: str | None, omega: str = "ω") -> str:
     """A step in words, as a student and a teacher read it ("energy function h", "Euler–Lagrange equation for θ"):
     the one home of the steps' titles (a step the engine does not know comes back as given)."""
     shown = plain_name(name) if name else ""
@@ -129,7 +130,8 @@ def step_title(step: str, name: str | None) -> str:
         "equation": f"Euler–Lagrange equation for {shown}",
         "acceleration": f"acceleration of {shown}",
         "hamiltonian": "energy function h",
-        "omega_squared": "ω² of small oscillations",
+        # the frequency's letter is the document's (Ω where ω is a parameter: the rotating wire's rate)
+        "omega_squared": f"{omega}² of small oscillations",
     }.get(step, step)
 
 
@@ -209,7 +211,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
     namespace = {**table.namespace(), **{s.name: s for s in table.qdd}, **{p.name: p for p in momenta}}
     groups = Groups((*table.params, *momenta), (*table.q, table.t), (*table.qd, *table.qdd))
     latex_names = {**table.latex_names(), **{p: sp.latex(p) for p in momenta}}
-    label = position_label(d, k // 3, k % 3) if step == "position" else step_title(step, coordinate)  # type: ignore[operator]
+    label = position_label(d, k // 3, k % 3) if step == "position" else step_title(step, coordinate, text("frequency", d))  # type: ignore[operator]
     relation = RELATIONS.get(step, "exact")
     return Problem(
         step,

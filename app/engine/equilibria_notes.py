@@ -12,6 +12,7 @@ import sympy as sp
 
 from app.engine.check_problem import asked_equilibrium, equilibrium_text, where_asked
 from app.engine.derive import Derivation
+from app.engine.notation import text
 from app.engine.reduction import Equilibrium
 from app.engine.textbook import unicode_text
 
@@ -21,13 +22,14 @@ def _condition(relation: sp.Relational) -> str:
     return f"{unicode_text(relation.lhs)} > {unicode_text(relation.rhs)}"
 
 
-def _asked(at: str, e: Equilibrium) -> str:
+def _asked(at: str, e: Equilibrium, w2: str) -> str:
+    """``w2``: the frequency's square in the document's letter (Ω² where ω is a parameter)."""
     if e.stable is True:
-        return f"{at} is stable: ω² is positive for every value of the parameters."
+        return f"{at} is stable: {w2} is positive for every value of the parameters."
     if e.stable_when is not None:
-        return (f"{at} is stable while {_condition(e.stable_when)}; where ω² is negative it is unstable (a small "
+        return (f"{at} is stable while {_condition(e.stable_when)}; where {w2} is negative it is unstable (a small "
                 "displacement grows), and there are no small oscillations about it.")
-    return f"Where ω² is negative, {at} is unstable (a small displacement grows): no small oscillations about it."
+    return f"Where {w2} is negative, {at} is unstable (a small displacement grows): no small oscillations about it."
 
 
 def _exists(e: Equilibrium, plural: bool) -> str:
@@ -65,14 +67,14 @@ def _groups(others: list[Equilibrium]) -> list[tuple[list[sp.Expr], Equilibrium]
     return out
 
 
-def _other(d: Derivation, positions: list[sp.Expr], e: Equilibrium) -> str:
+def _other(d: Derivation, positions: list[sp.Expr], e: Equilibrium, w2: str) -> str:
     if len(positions) == 2:
         # the positive one after ±
         p = positions[0] if not positions[0].could_extract_minus_sign() else positions[1]
         at = equilibrium_text(d, p).replace(" = ", " = ±", 1)
     else:
         at = equilibrium_text(d, positions[0])
-    return f"{at}{_exists(e, len(positions) == 2) or ','} with ω² = {unicode_text(e.omega_squared)}{_stability(e)}"
+    return f"{at}{_exists(e, len(positions) == 2) or ','} with {w2} = {unicode_text(e.omega_squared)}{_stability(e)}"
 
 
 def equilibria_notes(d: Derivation) -> list[str]:
@@ -81,10 +83,11 @@ def equilibria_notes(d: Derivation) -> list[str]:
     if red is None or not red.equilibria:
         return []
     asked = asked_equilibrium(d)
-    notes = [_asked(where_asked(d), asked)]
+    w2 = f"{text('frequency', d)}²"
+    notes = [_asked(where_asked(d), asked, w2)]
     others = _groups([e for e in red.equilibria if e is not asked])
     if others:
-        listed = "; ".join(_other(d, positions, e) for positions, e in others)
+        listed = "; ".join(_other(d, positions, e, w2) for positions, e in others)
         notes.append(f"{'The other equilibria' if len(others) > 1 or len(others[0][0]) > 1 else 'The other equilibrium'}: "
                      f"{listed}.")
     return notes

@@ -16,6 +16,7 @@ from app.engine.equilibria_notes import equilibria_notes
 from app.engine.mistake_positions import body_name, component_keys
 from app.engine.mistakes import POINTERS, has_springs, without_springs
 from app.engine.names import said_all, unicode
+from app.engine.notation import letter
 from app.engine.report import Printer, display
 
 
@@ -30,7 +31,7 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
             latex = f"{pr.tex(shown[0])} = 0"
         elif step == "omega_squared":
             # one equilibrium asked about, named in the step's title; the others are said in the notes
-            latex = rf"\omega^2 = {pr.tex(shown[0])}\ \text{{at}}\ {_where_tex(d, pr)}"
+            latex = rf"{_lhs(step, name, pr, d)} = {pr.tex(shown[0])}\ \text{{at}}\ {_where_tex(d, pr)}"
         else:
             latex = f"{_lhs(step, name, pr, d)} = {pr.tex(shown[0])}"
         answer: dict[str, Any] = {"sympy": sp.sstr(shown[0]), "latex": latex}
@@ -101,5 +102,5 @@ def _lhs(step: str, name: str | None, pr: Printer, d: Derivation) -> str:
         "equation": "0",
         "acceleration": pr.tex(qdd) if name else "",
         "hamiltonian": "h",
-        "omega_squared": r"\omega^2",
+        "omega_squared": f"{letter('frequency', d)}^2",
     }[step]

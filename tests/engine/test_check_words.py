@@ -5,7 +5,10 @@ what it is and is in the scale of the answer, a wrong follow-up gets a new hint,
 from __future__ import annotations
 
 from app.engine.check import judge, judge_follow_up
-from tests.engine.test_check_slips import step_problem
+from app.engine.check_problem import problem
+from app.engine.exercises import exercise_json
+from app.engine.notation import letter, text
+from tests.engine.test_check_slips import derivation, step_problem
 
 INCLINE_T = "M*X_dot**2/2 + m*D_dot**2/2"
 
@@ -111,3 +114,19 @@ def test_gravity_counted_twice_in_u_says_why():
     # student-g 7: "Why: This piece appears once in the derivation" explained nothing
     doubled = judge(step_problem("incline-block", "potential", None), "2*m*g*X*sin(alpha)")
     assert doubled["mistake"]["where"] == "each mass's weight enters U once, as m g times its height: gravity is counted twice here"
+
+
+def test_the_frequency_step_uses_the_documents_letter_where_omega_is_a_parameter():
+    """prof-h 1, student-h 7: on the rotating wire ω is the wire's rate, and the practice step printed
+    "ω² = 2gα − ω²"; the step, its prompt and its verdict use the page's letter for the frequency, Ω."""
+    d = derivation("rotating-parabola")
+    assert (letter("frequency", d), text("frequency", d)) == (r"\Omega", "Ω")
+    step = next(e for e in exercise_json(d)["exercises"] if e["step"] == "omega_squared")
+    assert step["title"].startswith("Ω² of small oscillations") and step["lhs"] == r"\Omega^2", step
+    assert step["answer"]["latex"].startswith(r"\Omega^2 = 2 g \alpha - \omega^{2}"), step["answer"]
+    assert step["answer"]["notes"] and all("Ω²" in n and "ω²" not in n for n in step["answer"]["notes"])
+    right = judge(problem(d, "omega_squared", None, mistakes=False), "2*g*alpha - omega**2")
+    assert right["verdict"] == "correct" and "Ω² of small oscillations" in right["message"], right
+    # where ω is free, it stays ω
+    simple = next(e for e in exercise_json(derivation("simple-pendulum"))["exercises"] if e["step"] == "omega_squared")
+    assert simple["title"].startswith("ω² of small oscillations") and simple["lhs"] == r"\omega^2"
