@@ -108,6 +108,32 @@ export function drawHandle(ctx, h, dpr) {
 }
 
 export const HANDLE_LABEL = "drag: initial velocity";
+// the height of the handle's words, CSS pixels (their font and padding: .handle-label in site.css)
+export const HANDLE_WORDS_HIGH = 22;
+
+/**
+ * Where the handle's words go on the canvas (device pixels: their box [x0, y0, x1, y1]), ``wide`` device pixels
+ * wide: the first of right of the handle and above it, left, centred; the same below it; then a line higher, that
+ * stays inside the canvas and covers no body (``placed``, the bodies' centres) — a body at the top of the view,
+ * the double pendulum's lower bob at 2 rad, was hidden under them (prof-h 7). One home: the words (labelHandle)
+ * and the bodies' labels that keep clear of them (bodies.js) both place them here.
+ */
+export function handleWordsBox(grip, wide, canvas, placed, dpr) {
+  const gap = (HANDLE_RADIUS + 6) * dpr, high = HANDLE_WORDS_HIGH * dpr, clear = 12 * dpr;
+  const right = grip.x + gap, left = grip.x - gap - wide;
+  const above = grip.y - high - 2 * dpr, below = grip.y + (HANDLE_RADIUS + 4) * dpr;
+  const inside = (x0, y0) => x0 >= 0 && x0 + wide <= canvas.width && y0 >= 0 && y0 + high <= canvas.height;
+  const free = (x0, y0) => placed.every(([bx, by]) =>
+    bx < x0 - clear || bx > x0 + wide + clear || by < y0 - clear || by > y0 + high + clear);
+  // centred on the handle, moved inside the canvas (on a phone neither side may have room)
+  const centred = Math.min(Math.max(0, grip.x - wide / 2), canvas.width - wide), higher = above - high;
+  const spots = [[right, above], [left, above], [centred, above], [right, below], [left, below], [centred, below],
+    [right, higher], [centred, higher]];
+  const [x0, y0] = spots.find(([x, y]) => inside(x, y) && free(x, y))
+    // none clear: above, to the right unless that leaves the canvas (as before any body was looked at)
+    ?? [right + wide <= canvas.width ? right : Math.max(0, left), Math.max(0, above)];
+  return [x0, y0, x0 + wide, y0 + high];
+}
 
 /**
  * The words beside the velocity handle h (or none, h null) until the reader first holds it: a span over the
@@ -124,12 +150,10 @@ export function labelHandle(player, h, dpr) {
   }
   label.hidden = false;
   label.textContent = h.len > 2 * dpr ? HANDLE_LABEL : `${HANDLE_LABEL} (now 0)`;
-  // CSS pixels within the wrap: the canvas's own offset (its border) plus the handle's place on it
-  const x = player.canvas.offsetLeft + player.canvas.clientLeft + h.x / dpr;
-  const y = player.canvas.offsetTop + player.canvas.clientTop + h.y / dpr;
-  const gap = HANDLE_RADIUS + 6, w = label.offsetWidth, height = label.offsetHeight, W = player.canvas.clientWidth;
-  // to the right of the handle, or to its left where the right would leave the canvas; above its centre
-  const left = x + gap + w <= W ? x + gap : Math.max(0, x - gap - w);
-  label.style.left = `${Math.round(left)}px`;
-  label.style.top = `${Math.round(Math.max(0, y - height - 2))}px`;
+  // clear of every body at the first instant (handleWordsBox), in CSS pixels within the wrap: the canvas's own
+  // offset (its border) plus the box's place on it
+  const placed = (player.masses || []).map((p) => player.at(p, 0));
+  const [x0, y0] = handleWordsBox(h, label.offsetWidth * dpr, player.canvas, placed, dpr);
+  label.style.left = `${Math.round(player.canvas.offsetLeft + player.canvas.clientLeft + x0 / dpr)}px`;
+  label.style.top = `${Math.round(player.canvas.offsetTop + player.canvas.clientTop + y0 / dpr)}px`;
 }

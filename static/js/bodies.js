@@ -2,10 +2,8 @@
  * bodies.js — a mechanism's bodies drawn on the canvas (animation.js): fading trails, fixed points,
  * the moving bodies (balls, or blocks on their slope) and their labels, placed where they hide least.
  */
-import { HANDLE_LABEL } from "./arrows.js";
+import { HANDLE_LABEL, handleWordsBox } from "./arrows.js";
 import { HANDLE_RADIUS } from "./drag.js";
-// the height of the handle's words beside it ("drag: initial velocity", arrows.js labelHandle), CSS pixels
-const HANDLE_WORDS_HIGH = 22;
 
 export const MASS_COLORS = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a"];
 
@@ -51,6 +49,7 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
   ctx.font = `600 ${12.8 * dpr}px system-ui, sans-serif`;
   const words = ctx.measureText(`${HANDLE_LABEL} (now 0)`).width + 10 * dpr;
   ctx.font = font;
+  const gripWords = grip ? handleWordsBox(grip, words, canvas, placed, dpr) : null;
   const cost = (x0, y0, x1, y1) => {
     let c = 0;
     if (x0 < 2 * dpr || x1 > canvas.width - 2 * dpr || y0 < 2 * dpr || y1 > canvas.height - 2 * dpr) c += 100;
@@ -64,11 +63,8 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
     if (grip) {
       const r = (HANDLE_RADIUS + 2) * dpr;
       if (grip.x + r > x0 && grip.x - r < x1 && grip.y + r > y0 && grip.y - r < y1) c += 4;
-      // the handle's own words ("drag: initial velocity", arrows.js labelHandle) sit to its right, above it, or
-      // to its left where the right would leave the canvas
-      const gap = (HANDLE_RADIUS + 6) * dpr, hy = grip.y - HANDLE_WORDS_HIGH * dpr;
-      const hx = grip.x + gap + words <= canvas.width ? grip.x + gap : Math.max(0, grip.x - gap - words);
-      if (hx < x1 && hx + words > x0 && hy < y1 && grip.y > y0) c += 5;
+      // the handle's own words ("drag: initial velocity") where arrows.js places them
+      if (gripWords[0] < x1 && gripWords[2] > x0 && gripWords[1] < y1 && gripWords[3] > y0) c += 5;
     }
     return c;
   };
