@@ -72,7 +72,9 @@ ROTATING_PARABOLA = Scene(
     statement=(
         "A wire shaped as the parabola z = α ρ² (ρ the signed horizontal distance from the vertical axis, "
         "positive on one branch of the wire and negative on the other) is turned about that axis "
-        "by a motor at the constant rate ω. A bead of mass m slides on it without friction. Heights z are "
+        "by a motor at the constant rate ω; at t = 0 the wire lies in the x–z plane, its branch ρ > 0 along +x, "
+        "so that the wire's plane makes the angle ω t with the x axis. A bead of mass m slides on it without "
+        "friction. Heights z are "
         "measured upward from the bottom of the parabola, where U = 0. With ρ as the "
         "coordinate, derive the equation of motion, compare the energy function h with the energy E, and explain "
         "which one is conserved."
