@@ -10,7 +10,8 @@ A step's *problem* (app/engine/check_problem.py) comes in two sizes:
 
 Each is built once per system and step, in the pool, and sent to later jobs as the pickle it was returned
 as; a worker keeps the problems it has unpickled, by the key the web process gives them, so an answer's job
-costs its own judging only.  A scene's catalogue is also kept on disk, keyed by the engine's and scenes'
+costs its own judging only; and the verdicts it gave, by problem and built answer, so an answer a class types
+in many spellings (``m*g*l``, ``g*m*l``) costs its judging once and its reading each time.  A scene's catalogue is also kept on disk, keyed by the engine's and scenes'
 source, so a restarted server builds none of them again.
 """
 
