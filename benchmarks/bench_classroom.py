@@ -23,7 +23,8 @@ exact), p50/p95 of each kind and the ratio of the p95s (goal: at most 1.5).
 With ``--hall AT_ONCE`` it is a lecture hall instead: the students all behind one address (127.0.0.44), each
 opening /join (its session) before joining, then checking every step once (recorded, with an attempt id),
 every answer distinct, AT_ONCE students checking at a time.  Reports the answers by status (goal: no 429)
-and p50/p95/p99 of a recorded check (goal: p95 ≤ 1 s).
+and p50/p95/p99 of a recorded check (goal: p95 ≤ 1 s), apart for the engine's step and the doubled one, and the
+CPU seconds the server used meanwhile: its web process's and its workers', per recorded check.
 
     .venv/bin/python -m benchmarks.bench_classroom --students 60 --hall 20
 """
@@ -40,6 +41,7 @@ import statistics
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from collections import Counter
 from pathlib import Path
@@ -166,7 +168,8 @@ async def hall_student(n: int, url: str, code: str, exercises: list[dict], gate:
         key = {"Authorization": f"Bearer {r.json()['student_key']}"}
         for k, e in enumerate(exercises):
             base = e["answer"]["sympy"]
-            text = f"{'2*(' + base + ')' if (n + k) % 3 == 0 else base} + 0*{n * 100 + k}"
+            doubled = (n + k) % 3 == 0
+            text = f"{'2*(' + base + ')' if doubled else base} + 0*{n * 100 + k}"
             step = {"step": e["step"], **({"coordinate": e["coordinate"]} if e["coordinate"] else {})}
             async with gate:
                 started = time.perf_counter()
@@ -180,9 +183,43 @@ async def hall_student(n: int, url: str, code: str, exercises: list[dict], gate:
                 out["statuses"][r.status_code] += 1
                 if r.status_code == 200:
                     out["recorded"].append(time.perf_counter() - started)
+                    out["doubled" if doubled else "engine's"].append(time.perf_counter() - started)
 
 
-async def hall(url: str, students: int, at_once: int) -> dict:
+class TreeCPU:
+    """The CPU seconds the server's processes use, the web process apart from its workers (the forkserver, the
+    pool's workers, the scenes' worker), sampled every half second in a thread (a worker replaced meanwhile
+    keeps the time it was last seen with)."""
+
+    def __init__(self, root: int) -> None:
+        from benchmarks.bench_replica_size import cpu_seconds, tree
+
+        self.root, self._tree, self._cpu = root, tree, cpu_seconds
+        self.seen: dict[int, float] = {}
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._sample, daemon=True)
+
+    def snapshot(self) -> tuple[float, float]:
+        """(the web process's CPU seconds so far, its workers')."""
+        for pid in self._tree(self.root):
+            if (used := self._cpu(pid)) is not None:
+                self.seen[pid] = used
+        web = self.seen.get(self.root, 0.0)
+        return web, sum(self.seen.values()) - web
+
+    def _sample(self) -> None:
+        while not self._stop.wait(0.5):
+            self.snapshot()
+
+    def start(self) -> None:
+        self._thread.start()
+
+    def stop(self) -> None:
+        self._stop.set()
+        self._thread.join()
+
+
+async def hall(url: str, students: int, at_once: int, cpu: TreeCPU | None = None) -> dict:
     async with httpx.AsyncClient(base_url=url) as client:
         exercises = (await client.get(f"/api/scenes/{SCENE}/practice", timeout=120)).json()["exercises"][:10]
         created = (await client.post("/api/classes", json={"title": "lecture hall"})).json()
@@ -190,11 +227,14 @@ async def hall(url: str, students: int, at_once: int) -> dict:
         for e in exercises:  # warm-up: each step's problem built and the workers started, outside the class
             step = {"step": e["step"], **({"coordinate": e["coordinate"]} if e["coordinate"] else {})}
             await send(client, f"/api/scenes/{SCENE}/check", {**step, "answer": e["answer"]["sympy"]}, {}, [])
-        out: dict = {"recorded": [], "statuses": Counter()}
+        out: dict = {"recorded": [], "engine's": [], "doubled": [], "statuses": Counter()}
         gate = asyncio.Semaphore(at_once)
+        before = cpu.snapshot() if cpu else None
         started = time.perf_counter()
         await asyncio.gather(*(hall_student(n, url, code, exercises, gate, out) for n in range(students)))
         out["seconds"] = time.perf_counter() - started
+        if cpu and before:
+            out["cpu"] = tuple(b - a for a, b in zip(before, cpu.snapshot(), strict=True))
         out["summary"] = (await client.get(f"/api/classes/{code}/summary", headers=teacher)).json()
         out["exercises"] = exercises
         return out
@@ -210,6 +250,14 @@ def report_hall(out: dict, students: int, at_once: int) -> bool:
     p95 = percentile(t, 0.95) if t else float("inf")
     print(f"recorded checks: {len(t)} answered, p50 {1000 * statistics.median(t):.0f} ms, p95 {1000 * p95:.0f} ms "
           f"(goal ≤ 1000 ms), p99 {1000 * percentile(t, 0.99):.0f} ms")
+    for kind in ("engine's", "doubled"):
+        if out.get(kind):
+            print(f"  of them the {kind} step: {len(out[kind])}, p50 {1000 * statistics.median(out[kind]):.0f} ms, "
+                  f"p95 {1000 * percentile(out[kind], 0.95):.0f} ms")
+    if "cpu" in out and t:
+        web, workers = out["cpu"]
+        print(f"server CPU in the hall: web process {web:.1f} s, its workers {workers:.1f} s; per recorded check "
+              f"{1000 * web / len(t):.0f} ms + {1000 * workers / len(t):.0f} ms")
     return set(statuses) == {200} and summary["attempts"] == students * len(out["exercises"])
 
 
@@ -222,9 +270,12 @@ def main() -> None:
     if args.hall:
         with tempfile.TemporaryDirectory() as data:
             process, url = start_server(data)
+            cpu = TreeCPU(process.pid)
+            cpu.start()
             try:
-                out = asyncio.run(hall(url, args.students, args.hall))
+                out = asyncio.run(hall(url, args.students, args.hall, cpu))
             finally:
+                cpu.stop()
                 process.terminate()
                 process.wait(30)
         sys.exit(0 if report_hall(out, args.students, args.hall) else 1)

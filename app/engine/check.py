@@ -104,13 +104,17 @@ __all__ = [
     "checkable_equilibria",
     "conserved_momenta",
     "exercises",
+    "follow_up_answer",
     "follow_up_mistake",
+    "follow_up_of",
     "judge",
     "judge_follow_up",
+    "judge_of",
     "name_kinds",
     "parse_answer",
     "problem",
     "verdict",
+    "verdict_of",
 ]
 
 MIN_POINTS = 6  # sample points where both sides are defined, for a numeric verdict
@@ -173,7 +177,12 @@ def _known(expr: sp.Expr, groups: Groups) -> Values:
 def verdict(pb: Problem, text: Parsed | str) -> dict[str, Any] | None:
     """The verdict on a right answer (correct, or equivalent), decided from the sample values without the
     catalogue of mistakes (a problem built with ``mistakes=False`` will do); None for a wrong one."""
-    answer = parse_answer(pb, text)
+    return verdict_of(pb, parse_answer(pb, text))
+
+
+def verdict_of(pb: Problem, answer: sp.Expr) -> dict[str, Any] | None:
+    """``verdict`` on an answer already built (``parse_answer``): a function of the expression alone, so
+    answers typed differently that build to one expression (``m*g*l``, ``g*m*l``) may share it."""
     a = values(answer, pb.groups)
     return _right(pb, answer, a, [(truth, _known(truth, pb.groups)) for truth in pb.truths])
 
@@ -209,7 +218,13 @@ def _right(pb: Problem, answer: sp.Expr, a: Values, results: list[tuple[sp.Expr,
 def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
     """The verdict on one answer (as ``check_answer`` read it, or its text): ``{"verdict", "message",
     "difference", "hint"}``; a system without a spring is not told about springs."""
-    verdict = _judge(pb, text)
+    return judge_of(pb, parse_answer(pb, text))
+
+
+def judge_of(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
+    """``judge`` on an answer already built (``parse_answer``): a function of the expression alone, so answers
+    typed differently that build to one expression may share it."""
+    verdict = _judge(pb, answer)
     if not pb.springs:
         if verdict.get("hint"):
             verdict["hint"] = without_springs(verdict["hint"])
@@ -221,8 +236,7 @@ def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
     return verdict
 
 
-def _judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
-    answer = parse_answer(pb, text)
+def _judge(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
     printer = Printer(pb.latex_names)
     a = values(answer, pb.groups)
     results = [(truth, _known(truth, pb.groups)) for truth in pb.truths]
@@ -390,9 +404,20 @@ def follow_up_mistake(pb: Problem, key: str) -> Mistake:
 def judge_follow_up(pb: Problem, key: str, text: Parsed | str) -> dict[str, Any]:
     """The verdict on the answer to a named mistake's follow-up question (a CheckError when it has none)."""
     mistake = follow_up_mistake(pb, key)
+    return follow_up_of(pb, mistake, follow_up_answer(pb, mistake, text))
+
+
+def follow_up_answer(pb: Problem, mistake: Mistake, text: Parsed | str) -> sp.Expr:
+    """The answer to ``mistake``'s follow-up question, built with the names that question may use."""
+    assert mistake.follow_up is not None  # follow_up_mistake refuses a mistake without a question
+    return parse_answer(pb, text, mistake.follow_up.kind)
+
+
+def follow_up_of(pb: Problem, mistake: Mistake, answer: sp.Expr) -> dict[str, Any]:
+    """``judge_follow_up`` on an answer already built (``follow_up_answer``): a function of the expression
+    alone."""
     fu = mistake.follow_up
     assert fu is not None  # follow_up_mistake refuses a mistake without a question
-    answer = parse_answer(pb, text, fu.kind)
     if fu.relation == "magnitude":
         # a speed or a stretch: either sign is the same size
         mine, theirs = values(answer**2, pb.groups), _known(fu.truth**2, pb.groups)

@@ -10,7 +10,8 @@ A step's *problem* (app/engine/check_problem.py) comes in two sizes:
 
 Each is built once per system and step, in the pool, and sent to later jobs as the pickle it was returned
 as; a worker keeps the problems it has unpickled, by the key the web process gives them, so an answer's job
-costs its own judging only.  A scene's catalogue is also kept on disk, keyed by the engine's and scenes'
+costs its own judging only; and the verdicts it gave, by problem and built answer, so an answer a class types
+in many spellings (``m*g*l``, ``g*m*l``) costs its judging once and its reading each time.  A scene's catalogue is also kept on disk, keyed by the engine's and scenes'
 source, so a restarted server builds none of them again.
 """
 
@@ -21,7 +22,17 @@ from collections import OrderedDict
 from collections.abc import Callable
 from typing import Any
 
-from app.engine.check import CheckError, Problem, judge, judge_follow_up, problem, verdict
+from app.engine.check import (
+    CheckError,
+    Problem,
+    follow_up_answer,
+    follow_up_mistake,
+    follow_up_of,
+    judge_of,
+    parse_answer,
+    problem,
+    verdict_of,
+)
 from app.engine.derive import Derivation
 from app.engine.errors import DerivationError
 from app.engine.parse import Parsed
@@ -34,6 +45,9 @@ from app.service.user_jobs import derive_checked, guarded
 
 # the problems a worker has unpickled, by key: every step of a class's scene fits
 MAX_WORKER_PROBLEMS = 64
+# the verdicts a worker remembers, by problem and built answer (a few kB each; a worker retires after
+# app.service.worker.MAX_TASKS jobs in any case)
+MAX_WORKER_VERDICTS = 1024
 WRONG = b""  # the first verdict's answer for a wrong answer: its diagnosis needs the catalogue
 
 
@@ -144,21 +158,54 @@ def loaded(key: str, blob: bytes) -> Problem:
     return found
 
 
+_verdicts: OrderedDict[tuple, bytes] = OrderedDict()
+
+
+def remembered(key: tuple, judging: Callable[[], bytes]) -> bytes:
+    """The encoded verdict under ``key`` (a problem's key, the job's kind and the built answer), judged once
+    per worker.
+
+    A verdict is a function of the problem and the answer as built (``app.engine.check.judge_of``), never of
+    how it was typed: ``m*g*l`` and ``g*m*l``, or an answer and the same answer ``+ 0*k``, are one SymPy
+    expression (equal and of one hash), so a class typing one answer in many spellings is judged once.  A
+    refusal is never kept (each text is read, and refused in its own words, by its own job)."""
+    found = _verdicts.get(key)
+    if found is None:
+        found = _verdicts[key] = judging()
+        while len(_verdicts) > MAX_WORKER_VERDICTS:
+            _verdicts.popitem(last=False)
+    else:
+        _verdicts.move_to_end(key)
+    return found
+
+
 def verdict_job(key: str, blob: bytes, answer: Parsed) -> bytes:
     """Worker job: the verdict on a right answer, from the truth alone; ``WRONG`` for a wrong one."""
 
-    return guarded(
-        lambda: _judged(lambda: verdict(loaded(key, blob), answer)),
-        lambda found: WRONG if found is None else dumps(found),
-    )
+    def run() -> bytes:
+        pb = loaded(key, blob)
+        built = parse_answer(pb, answer)
+
+        def judging() -> bytes:
+            found = verdict_of(pb, built)
+            return WRONG if found is None else dumps(found)
+
+        return remembered((key, "verdict", built), judging)
+
+    return guarded(lambda: _judged(run), bytes)
 
 
 def check_job(key: str, blob: bytes, answer: Parsed | str, follow_up: str | None = None) -> bytes:
     """Worker job: judge an answer (or an answer to a mistake's follow-up question, read here when it is text)
     against a step's problem with its catalogue."""
 
-    def run() -> dict[str, Any]:
+    def run() -> bytes:
         pb = loaded(key, blob)
-        return judge(pb, answer) if follow_up is None else judge_follow_up(pb, follow_up, answer)
+        if follow_up is None:
+            built = parse_answer(pb, answer)
+            return remembered((key, "judge", built), lambda: dumps(judge_of(pb, built)))
+        mistake = follow_up_mistake(pb, follow_up)
+        built = follow_up_answer(pb, mistake, answer)
+        return remembered((key, "follow-up", follow_up, built), lambda: dumps(follow_up_of(pb, mistake, built)))
 
-    return guarded(lambda: _judged(run))
+    return guarded(lambda: _judged(run), bytes)
