@@ -466,14 +466,34 @@ def _same_slip(pb: Problem, fu: FollowUp, asked: Mistake, mine) -> str | None:
 
 
 def _follow_up_slip(pb: Problem, fu: FollowUp, answer: sp.Expr) -> str | None:
-    """The chain rule's rate left out of a time derivative: the reply times one coordinate's rate is the answer
-    (2 r for d/dt r², whose answer is 2 r ṙ)."""
+    """A slip in the reply to a follow-up question: its sign reversed; or, in a time derivative, the chain
+    rule's rate left out: the reply times one coordinate's rate is the answer (2 r for d/dt r², whose answer is
+    2 r ṙ), or times the rate of an argument of several coordinates (θ̇₁ − θ̇₂)."""
+    theirs = _known(fu.truth, pb.groups)
+    if fu.relation == "exact" and answer != 0 and equal(values(-answer, pb.groups), theirs):
+        return "Your reply has the right size but the opposite sign: check the sign each derivative brings."
     if fu.kind != "momentum" or not fu.question.startswith("What is the time derivative"):
         return None
-    for v in pb.groups.rates:
-        if not v.name.endswith("_dot") or v.name.endswith("_ddot") or not fu.truth.has(v):
+    rates = [v for v in pb.groups.rates if v.name.endswith("_dot") and not v.name.endswith("_ddot")]
+    # the chain rule's whole factor left out, where the argument holds several coordinates (student-h 9:
+    # −sin(θ₁ − θ₂) for d/dt cos(θ₁ − θ₂), whose answer is −sin(θ₁ − θ₂)(θ̇₁ − θ̇₂))
+    factor = _budgeted(lambda: sp.cancel(fu.truth / answer), None, FACTOR_WORK) if answer != 0 else None
+    if (
+        factor is not None
+        and factor.free_symbols
+        and factor.free_symbols <= set(rates)
+        and factor.is_polynomial(*rates)
+        and sp.Poly(factor, *rates).total_degree() == 1
+        and len(factor.free_symbols) > 1
+    ):
+        return (
+            f"You differentiated the function, and left out the chain rule's factor {unicode_text(factor)}: its "
+            "argument changes along the motion, so d/dt f(u) = f′(u) u̇, with u̇ the rate of the argument."
+        )
+    for v in rates:
+        if not fu.truth.has(v):
             continue
-        if equal(values(answer * v, pb.groups), _known(fu.truth, pb.groups)):
+        if equal(values(answer * v, pb.groups), theirs):
             # d/dt f(q) = f′(q) q̇: the reply is f′(q), the derivative by q alone
             name, rate = unicode(v.name[: -len("_dot")]), unicode(v.name)
             return (

@@ -10,6 +10,7 @@ from __future__ import annotations
 import unicodedata
 
 import pytest
+import sympy as sp
 
 from app.engine.check import judge, judge_follow_up
 from tests.engine.test_check_slips import SLIPS, step_problem
@@ -184,3 +185,20 @@ def test_a_bare_number_inside_a_bracket_is_a_units_mistake(scene, typed, said):
     # the same zero moved with its unit is another zero of U
     fine = judge(step_problem(scene, "potential", None), typed.replace("3)", "3*R)").replace("2)", "2*R)"))
     assert fine["verdict"] == "equivalent", fine
+
+
+@pytest.mark.parametrize(
+    ("reply", "said"),
+    [
+        # student-h 9: the derivative of cos(θ₁ − θ₂) without the argument's rate got only "work it out on its own"
+        ("-sin(theta1 - theta2)", "left out the chain rule's factor θ̇₁ − θ̇₂"),
+        ("sin(theta1 - theta2)*(theta1_dot - theta2_dot)", "the opposite sign"),
+    ],
+)
+def test_a_wrong_reply_to_a_chain_rule_question_is_named(reply, said):
+    pb = step_problem("double-pendulum", "equation", "theta1")
+    slip = next(m for m, _, _ in pb.mistakes if m.key == "equation.chain_rule.theta2")
+    first = judge(pb, sp.sstr(slip.expr))
+    assert first["follow_up"]["key"] == "equation.chain_rule.theta2", first
+    wrong = judge_follow_up(pb, first["follow_up"]["key"], reply)
+    assert wrong["verdict"] == "incorrect" and said in unicodedata.normalize("NFC", wrong["hint"]), wrong["hint"]
