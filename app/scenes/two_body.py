@@ -189,7 +189,8 @@ PULLEY = Scene(
     ),
     figure=(
         "Two fixed pulleys at the top; m1 hangs on the left end, m2 on the right end, and the string's loop between "
-        "them carries a movable pulley with M below it; heights y1, y2, Y measured upward."
+        "them carries a movable pulley with M below it; heights y1, y2, Y measured upward from the dashed line where "
+        "U = 0, M below it (Y < 0)."
     ),
     system=System(
         coordinates=("y1", "y2"),

@@ -137,7 +137,9 @@ def pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) 
     for cx in (left, right):
         svg.line(cx, ceiling, cx, ceiling + 24, INK, 1.5)
         svg.circle(cx, ceiling + 24, r, fill="#eef1f4")
-    y1, y2, ym = 150.0, 118.0, 150.0
+    # the end masses above the dashed line where U = 0 (y₁, y₂ > 0) and M below it: the string makes
+    # Y = −(y₁ + y₂)/2 − 1 m, negative whatever the end masses' heights (prof-h 2: all three were drawn above it)
+    y1, y2, ym = 108.0, 80.0, 174.0
     mid = (left + right) / 2
     svg.line(left - r, ceiling + 24, left - r, y1 - 16)
     svg.line(left + r, ceiling + 24, mid - r, ym)
@@ -151,17 +153,20 @@ def pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) 
     svg.line(mid, ym + r, mid, ym + r + 8)
     svg.rect(mid - 17, ym + r + 8, 34, 28)
     svg.text(mid, ym + r + 22, "M", PARAM, 14)
-    base = 226.0
+    base = 140.0
     svg.line(20, base, 300, base, GUIDE, 1.2, dash=True)
+    svg.text(262, base + 14, "U = 0", GUIDE, 12)
     svg.arrow(left - r - 30, base, left - r - 30, y1, color=ACCENT)
     svg.text(left - r - 44, (base + y1) / 2, "y₁", ACCENT, 16)
     svg.arrow(right + r + 30, base, right + r + 30, y2, color=ACCENT)
     svg.text(right + r + 44 - 4, (base + y2) / 2, "y₂", ACCENT, 16)
-    # the third height, Y, of M's centre: the caption names y₁, y₂ and Y, so the figure marks all three
+    # the third height, Y, of M's centre, measured upward like the others: negative, so its arrow from the line
+    # to M points down; the caption names y₁, y₂ and Y, so the figure marks all three
     centre = ym + r + 22
     svg.arrow(mid + 34, base, mid + 34, centre, color=ACCENT)
     svg.line(mid + 17, centre, mid + 40, centre, GUIDE, 1, dash=True)
-    svg.text(mid + 48, (base + centre) / 2, "Y", ACCENT, 16)
+    svg.text(mid + 46, (base + centre) / 2, "Y", ACCENT, 16)
+    svg.text(mid + 66, (base + centre) / 2, "< 0", ACCENT, 13)
     svg.arrow(mid, 48, mid, 84, color=PARAM)
     svg.text(mid + 12, 66, "g", PARAM)
     return svg
