@@ -5,7 +5,7 @@ from __future__ import annotations
 import sympy as sp
 
 from app.engine import meaning, notation
-from app.engine.constraints import ConstraintForce
+from app.engine.constraints import AXES, ConstraintForce
 from app.engine.constraints import display as constraint_display
 from app.engine.constraints import positive as constraint_positive
 from app.engine.derive import Derivation
@@ -16,10 +16,17 @@ from app.engine.transform import Transformed, collected, compact
 
 
 def _cartesian_printer(m: Multipliers, pr: Printer) -> Printer:
-    """``pr`` with the Cartesian names: x, ẋ, ẍ (x₁, ẋ₁, ẍ₁ for several bodies) and λ₁, λ₂."""
+    """``pr`` with the Cartesian names: x, ẋ, ẍ (x₁, ẋ₁, ẍ₁ for several bodies; ξ₁, η₁, ζ₁ where the system
+    already prints x₁, y₁ or z₁) and λ₁, λ₂."""
     names = dict(pr.names)
+    # body i's components as x_i, y_i, z_i; where the system already prints one of those names (the pulley's
+    # coordinates are its end masses' heights y₁, y₂: prof-h 2), as ξ_i, η_i, ζ_i, so that ẏ₁ never means two things
+    taken = set(pr.names.values())
+    letters = dict(zip(AXES, AXES, strict=True))
+    if any(f"{s.name[0]}_{{{s.name[1:]}}}" in taken or s.name in taken for s in m.positions):
+        letters = dict(zip(AXES, (r"\xi", r"\eta", r"\zeta"), strict=True))
     for s, v, a in zip(m.positions, m.velocities, m.accelerations, strict=True):
-        letter, index = s.name[0], s.name[1:]
+        letter, index = letters[s.name[0]], s.name[1:]
         sub = f"_{{{index}}}" if index else ""
         names |= {s: f"{letter}{sub}", v: rf"\dot{{{letter}}}{sub}", a: rf"\ddot{{{letter}}}{sub}"}
     names |= {lam: notation.multiplier(a)[0] for a, lam in enumerate(m.multipliers, start=1)}
@@ -33,6 +40,7 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
         return []
     m = derived_multipliers(d, forces)
     cp = _cartesian_printer(m, pr)
+    greek = cp.names.get(m.positions[0], "").startswith(r"\xi")  # the Cartesian names moved off the coordinates'
     lam = [notation.multiplier(a)[0] for a in range(1, len(forces) + 1)]
     newton = [
         rf"{cp.tex(mass)} {cp.tex(acc)} = {cp.tex(rhs)}" + (_signed(cp.tex(f)) if f != 0 else "")
@@ -50,10 +58,12 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
         _step(
             "constraints",
             "Constraints in Cartesian form",
-            [f"{notation.surface(a)[0]} = {pr.tex(f.g)} = 0" for a, f in enumerate(forces, start=1)],
+            [f"{notation.surface(a)[0]} = {(cp if greek else pr).tex(f.g)} = 0" for a, f in enumerate(forces, start=1)],
             [f.g for f in forces],
             "Each constraint the coordinates satisfy silently is written again as a surface 𝒞 = 0 in Cartesian "
-            "space; it can only push along its normal, the gradient of 𝒞.",
+            "space; it can only push along its normal, the gradient of 𝒞."
+            + (" Body i's Cartesian coordinates are written ξᵢ, ηᵢ, ζᵢ here, since x, y or z with an index already "
+               "names a coordinate of this system." if greek else ""),
         ),
         _step(
             "multiplier-lagrangian",

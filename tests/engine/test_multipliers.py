@@ -76,3 +76,23 @@ def test_the_symbols_table_gives_each_multiplier_its_unit(scene_id, units):
     assert {name: rows[name]["unit"] for name in units} == units
     # the generic letters say how their unit follows, never an empty cell
     assert rows["λ"]["unit"] and rows["𝒞"]["unit"]
+
+
+def test_the_cartesian_names_never_print_as_a_coordinate_of_the_system():
+    """prof-h 2: the pulley's coordinates are the heights y₁, y₂, and its Lagrangian with multipliers printed
+    ½ m₁ ẏ₁² for the first body's Cartesian y: one letter, two quantities. There the bodies' Cartesian
+    coordinates are ξ, η, ζ; elsewhere x, y, z."""
+    from app.engine.derive import derive
+    from app.engine.report import Printer
+    from app.engine.report_members import constraint_steps
+    from app.scenes import SCENES
+
+    def steps(scene):
+        d = derive(SCENES[scene].system)
+        return constraint_steps(d, d.constraint_forces, Printer(d.table.latex_names()))
+
+    pulley = " ".join(str(s["latex"]) for s in steps("pulley")[:2])
+    assert r"\dot{y}_{1}" not in pulley and r"\dot{\eta}_{1}" in pulley and r"\zeta_{1}" in pulley, pulley
+    assert "ξᵢ, ηᵢ, ζᵢ" in steps("pulley")[0]["explanation"]
+    pendulum = " ".join(str(s["latex"]) for s in steps("simple-pendulum")[:2])
+    assert r"\dot{x}" in pendulum and r"\xi" not in pendulum
