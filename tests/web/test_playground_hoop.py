@@ -53,3 +53,32 @@ def test_an_explicitly_time_dependent_hoop_marks_no_separatrix(client):
     # the rate ramps up with t: neither h nor E is conserved, so no level is reached and nothing is said
     ramped = {**HOOP, "kinetic": "1/2*m*R^2*(theta_dot^2 + (w*t)^2*sin(theta)^2)"}
     assert "separatrix" not in text_of(client, ramped).split('id="derivation"')[0]
+
+
+def test_each_equilibrium_says_where_it_exists_and_when_it_is_stable(client):
+    doc = client.post("/api/derive", json=HOOP).json()
+    found = {e["position"]["sympy"]: e for e in doc["effective_potential"]["equilibria"]}
+    bottom, top, side = found["0"], found["pi"], found["acos(g/(R*w**2))"]
+    # ω² = g/R − w² at the bottom: stable when g > R w², unstable when R w² > g
+    assert bottom["stable"] is None
+    assert (bottom["stable_when"]["latex"], bottom["unstable_when"]["latex"]) == ("g > R w^{2}", "R w^{2} > g")
+    assert top["stable"] is False
+    # arccos(g/(R w²)) exists only when R w² > g, and is stable there: ω² = w² − g²/(R² w²) > 0
+    assert side["exists"]["latex"] == "R w^{2} > g" and side["stable"] is True
+    assert found["-acos(g/(R*w**2))"]["exists"]["latex"] == "R w^{2} > g"
+    page = text_of(client, HOOP)
+    results = page[page.index("Effective potential") :]
+    assert 'stable when <span class="math" data-tex="g > R w^{2}">' in results
+    assert 'unstable when <span class="math" data-tex="R w^{2} > g">' in results
+    assert results.count("which exists only when") == 2 and results.count("(stable wherever it exists)") == 2
+
+
+def test_the_derivation_prints_the_equilibria_as_the_results_do(client):
+    doc = client.post("/api/derive", json=HOOP).json()
+    (step,) = [s for s in doc["steps"] if s["title"] == "Equilibria"]
+    assert r"\theta &= \arccos {\frac{g}{R w^{2}}}" in step["latex"] and "arctan" not in step["latex"]
+    exact = [e["exact"]["theta"]["sympy"] for e in doc["normal_modes"]]
+    assert sorted(exact) == sorted(e["position"]["sympy"] for e in doc["effective_potential"]["equilibria"])
+    # ω² about it collapses once cos(arccos c) = c: no arctan inside
+    about = [s for s in doc["steps"] if s["title"].startswith("Small oscillations about θ = arccos")]
+    assert about and "arctan" not in about[0]["latex"]
