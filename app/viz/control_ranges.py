@@ -145,7 +145,9 @@ def separatrix_spec(doc: dict[str, Any]) -> dict[str, Any] | None:
         return None
     unit = coordinate_units(doc, scene=True)["units"].get(q, "")
     # the rate depends on where the run starts: the mark says which start it is for, and by which quantity
-    by = "" if doc.get("hamiltonian_equals_energy") else ", by h (conserved here, not E)"
+    # which quantity, where it is not E: h ≠ E on a moving constraint; with L alone E is not defined (None)
+    equal = doc.get("hamiltonian_equals_energy")
+    by = "" if equal else (", by h (conserved here, not E)" if equal is False else ", by h (conserved here)")
     tops = []
     for e in red.get("equilibria") or []:
         position, w2 = document_tree(e.get("position"), _names(doc)), document_tree(e.get("omega_squared"), _names(doc))

@@ -82,3 +82,12 @@ def test_the_derivation_prints_the_equilibria_as_the_results_do(client):
     # ω² about it collapses once cos(arccos c) = c: no arctan inside
     about = [s for s in doc["steps"] if s["title"].startswith("Small oscillations about θ = arccos")]
     assert about and "arctan" not in about[0]["latex"]
+
+
+def test_the_hoop_given_by_l_alone_names_h_and_no_e(client):
+    from app.web.examples_user import SPINNING_HOOP
+
+    page = text_of(client, SPINNING_HOOP)
+    note = re.search(r"The slider marks ([^<]*)\.</p>", page).group(1)
+    # with L alone E is not defined: the mark names h, conserved, and says nothing of E
+    assert ", by h (conserved here): just reaches θ = π" in note and "not E" not in note
