@@ -135,7 +135,6 @@ def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[s
     return {}
 
 
-
 def _inequality(pr: Printer, relation: sp.Relational | None) -> dict[str, Any] | None:
     """b > a with each side in its textbook form (R ω² > g), as text and LaTeX; None for none."""
     if relation is None:
@@ -146,6 +145,12 @@ def _inequality(pr: Printer, relation: sp.Relational | None) -> dict[str, Any] |
         "latex": f"{pr.tex(big)} > {pr.tex(small)}",
         "tree": None,
     }
+
+
+def _reversed(relation: sp.Relational | None) -> sp.Relational | None:
+    """b > a turned round, a > b (the case where ω² is negative); None for none."""
+    return None if relation is None else sp.StrictGreaterThan(relation.rhs, relation.lhs, evaluate=False)
+
 
 def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) -> dict[str, Any]:
     progress.now("the conserved quantities and the reduction to one coordinate")
@@ -229,6 +234,8 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
                     # where it exists (arccos(g/(R w²)) needs R w² > g) and, with no verdict, when it is stable
                     "exists": _inequality(pr, e.exists),
                     "stable_when": _inequality(pr, e.stable_when),
+                    # the same condition reversed, where it is unstable (R w² > g at the hoop's bottom)
+                    "unstable_when": _inequality(pr, _reversed(e.stable_when)),
                     # r₀ⁿ = C where the root is C^(1/n) (the cone's r₀³ = p_φ² tan α/(m² g)), n = 1 otherwise
                     "power": (root := power_form(e.position))[0],
                     "position_power": pr.pair(root[1]),

@@ -73,10 +73,19 @@ def without_atan(value: sp.Expr) -> sp.Expr:
     sin² + cos² of it collapses in M and K (cos(acos c) = c, sin(acos c) = √(1 − c²))."""
 
     def half_angle(e: sp.Expr) -> bool:
-        return isinstance(e, sp.atan) and isinstance(e.args[0], sp.Pow) and e.args[0].exp == sp.Rational(1, 2)
+        # u = √a, or c √a/√b (c > 0): a principal root over another is never negative where it is real either
+        # (i√|a|/(i√|b|) = √(a/b)); the spun hoop's root is 2 atan(√(Rω² − g)/√(g + Rω²))
+        if not isinstance(e, sp.atan):
+            return False
+        factors = sp.Mul.make_args(e.args[0])
+        up = [f for f in factors if isinstance(f, sp.Pow) and f.exp == sp.Rational(1, 2)]
+        down = [f for f in factors if isinstance(f, sp.Pow) and f.exp == -sp.Rational(1, 2)]
+        rest = [f for f in factors if f not in up and f not in down]
+        return len(up) == 1 and len(down) <= 1 and all(f.is_number and f.is_positive for f in rest)
 
     def acos_half(e: sp.Expr) -> sp.Expr:
-        u2 = e.args[0].base
+        # u² with the roots squared away: c² a/b
+        u2 = sp.Mul(*(f.base ** (2 * f.exp) if isinstance(f, sp.Pow) else f**2 for f in sp.Mul.make_args(e.args[0])))
         return sp.acos(sp.factor(sp.cancel(sp.together((1 - u2) / (1 + u2))))) / 2
 
     return value.replace(half_angle, acos_half) if value.has(sp.atan) else value

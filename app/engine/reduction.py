@@ -168,7 +168,8 @@ def existence(root: sp.Expr, assume: dict[sp.Symbol, sp.Symbol]) -> sp.Relationa
     if len(inverse) != 1:
         return None
     a, b = sp.fraction(sp.factor(inverse[0].args[0]))
-    if not (a.xreplace(assume).is_positive and b.xreplace(assume).is_positive):
+    # b may vanish (R w² with a real w): b > a > 0 then excludes it, as a/b is not defined there
+    if not (a.xreplace(assume).is_positive and b.xreplace(assume).is_nonnegative):
         return None
     return sp.StrictGreaterThan(b, a, evaluate=False)
 
@@ -180,6 +181,9 @@ def _solved_for(equation: sp.Eq, p: sp.Symbol) -> list[sp.Expr]:
 def stable_where_it_exists(w2: sp.Expr, exists: sp.Relational, assume: dict[sp.Symbol, sp.Symbol]) -> bool | None:
     """The sign of ω² wherever ``exists`` (b > a) holds: a parameter of a written as b/(1 + u), u > 0 any."""
     b, a = exists.args
+    # where it exists b > a > 0, so a product of powers b (R w²) has none of its letters zero: w ≠ 0 there
+    if all(f.is_number or f.is_Symbol or (f.is_Pow and f.base.is_Symbol) for f in sp.Mul.make_args(b)):
+        assume = {**{s: sp.Symbol(s.name, real=True, nonzero=True) for s in b.free_symbols}, **assume}
     u = sp.Symbol("u", positive=True)
     for p in sorted(a.free_symbols - b.free_symbols, key=sp.default_sort_key):
         solved: list[sp.Expr] | None = within_budget(partial(_solved_for, sp.Eq(a, b / (1 + u)), p), None, SOLVE_WORK)
@@ -200,8 +204,10 @@ def positive_when(w2: sp.Expr, assume: dict[sp.Symbol, sp.Symbol]) -> sp.Relatio
     if not den.xreplace(assume).is_positive:
         return None
     terms = sp.Add.make_args(sp.expand(num))
-    plus = [t for t in terms if t.xreplace(assume).is_positive]
-    minus = [-t for t in terms if t.xreplace(assume).is_negative]
+    # a term that may vanish (w² of a real w, zero when the hoop does not turn) still has its side: the condition
+    # "plus > minus" is ω² > 0 itself whatever the values
+    plus = [t for t in terms if t.xreplace(assume).is_nonnegative]
+    minus = [-t for t in terms if t.xreplace(assume).is_nonpositive and not t.xreplace(assume).is_nonnegative]
     if len(plus) + len(minus) != len(terms) or not plus or not minus:
         return None
     return sp.StrictGreaterThan(sp.Add(*plus), sp.Add(*minus), evaluate=False)

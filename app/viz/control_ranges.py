@@ -11,7 +11,8 @@ numerically from the engine's expressions at the default parameters:
 * a parameter at which an equilibrium of the reduction changes stability (its ω² changes sign),
   such as the rotating wire's ω² = 2 g α;
 * for the initial rate of a one-coordinate system with an unstable equilibrium, the rate whose
-  energy just reaches it (the separatrix): q̇₀ = ±√(2 (U(q_top) − U(q₀)) / M(q₀)).
+  conserved energy function h just reaches its value there (the separatrix):
+  q̇₀ = ±√(2 (U_eff(q_top) − U_eff(q₀)) / M(q₀)), U_eff = h at rest (= U where no constraint moves).
 """
 
 from __future__ import annotations
@@ -124,34 +125,73 @@ def stability_marks(doc: dict[str, Any], ranges: dict[str, tuple[float, float]])
     return marks
 
 
-def separatrix_marks(doc: dict[str, Any], initial: dict[str, float]) -> dict[str, list[dict[str, Any]]]:
-    """The initial rate that just reaches an unstable equilibrium, for a one-coordinate system."""
-    if len(doc["coordinates"]) != 1 or not doc.get("potential"):
-        return {}
-    if doc.get("generalized_forces"):
-        # a force Q drains E on the way up: the undamped ½ M q̇₀² = U(q_top) − U(q₀) falls short of the top
-        return {}
+START = "{start}"  # where a separatrix label names the starting value (filled here, and by static/js/separatrix.js)
+
+
+def separatrix_spec(doc: dict[str, Any]) -> dict[str, Any] | None:
+    """What fixes the separatrix marks of a one-coordinate system's initial rate, as trees the browser can evaluate
+    again when the start or a parameter changes (static/js/separatrix.js); None where nothing is conserved.
+
+    The level that parts the motions is one of the conserved quantity, the energy function h = Σ q̇ ∂L/∂q̇ − L,
+    which is E = T + U only when no constraint moves; at rest h is U_eff = −L|_{q̇=0}, so
+    h = ½ M(q) q̇² + U_eff(q).  Where h is not conserved (L depends on t, or a force does work) there is no level
+    to reach, and no mark."""
+    if len(doc["coordinates"]) != 1 or not doc.get("hamiltonian_conserved") or doc.get("generalized_forces"):
+        return None
     q = doc["coordinates"][0]
-    tops = [e for e in doc.get("normal_modes") or [] if e.get("kind") == "unstable"]
-    if not tops:
-        return {}
-    q0 = float(initial.get(q, 0.0))
-    start = _env(doc, **{q: q0})
-    u0 = _value(doc["potential"], doc, start)
-    mass = _value(doc["mass_matrix"][0][0], doc, start)
-    marks = []
-    for e in tops:
-        top = float(e["equilibrium"][q])
-        u_top = _value(doc["potential"], doc, _env(doc, **{q: top}))
-        if u0 is None or u_top is None or not mass or mass <= 0 or u_top <= u0:
+    h, mass = document_tree(doc.get("hamiltonian"), _names(doc)), document_tree(doc["mass_matrix"][0][0], _names(doc))
+    red = doc.get("effective_potential") or {}
+    if h is None or mass is None or red.get("coordinate") != q:
+        return None
+    unit = coordinate_units(doc, scene=True)["units"].get(q, "")
+    # the rate depends on where the run starts: the mark says which start it is for, and by which quantity
+    # which quantity, where it is not E: h ≠ E on a moving constraint; with L alone E is not defined (None)
+    equal = doc.get("hamiltonian_equals_energy")
+    by = "" if equal else (", by h (conserved here, not E)" if equal is False else ", by h (conserved here)")
+    tops = []
+    for e in red.get("equilibria") or []:
+        position, w2 = document_tree(e.get("position"), _names(doc)), document_tree(e.get("omega_squared"), _names(doc))
+        if position is None or w2 is None:
             continue
-        # E = ½ M q̇₀² + U(q₀) = U(q_top)
-        rate = math.sqrt(2 * (u_top - u0) / mass)
-        where = f"{unicode(q)} = {formula(e['exact'][q]) if e.get('exact') else f'{top:.4g}'}"
-        # the rate depends on where the run starts: the mark says which start it is for
-        unit = coordinate_units(doc, scene=True)["units"].get(q, "")
-        start_text = f"from {unicode(q)}(0) = {q0:.4g}{f' {unit}' if unit else ''}"
-        label = f"separatrix {start_text}: just reaches {where}"
+        where = f"{unicode(q)} = {formula(e['position'])}"
+        label = f"separatrix from {unicode(q)}(0) = {START}{f' {unit}' if unit else ''}{by}: just reaches {where}"
+        tops.append({"position": position, "omega_squared": w2, "label": label})
+    return {"coordinate": q, "h": h, "mass": mass, "tops": tops} if tops else None
+
+
+def separatrix_marks(
+    doc: dict[str, Any], initial: dict[str, float], parameters: dict[str, float] | None = None
+) -> dict[str, list[dict[str, Any]]]:
+    """The initial rates whose h just reaches an unstable equilibrium, for a one-coordinate system, from the
+    start ``initial`` at the ``parameters`` (the defaults where not given)."""
+    spec = separatrix_spec(doc)
+    if spec is None:
+        return {}
+    q = spec["coordinate"]
+    q0 = float(initial.get(q, 0.0))
+    at = dict(parameters or {})
+    try:
+        start = _env(doc, **at, **{q: q0})
+        # h at rest, U_eff(q₀), and the inertia M(q₀)
+        h0, mass = evaluate(spec["h"], start), evaluate(spec["mass"], start)
+    except (ArithmeticError, ValueError, TypeError):
+        return {}
+    marks = []
+    for top in spec["tops"]:
+        try:
+            where = evaluate(top["position"], _env(doc, **at))
+            w2 = evaluate(top["omega_squared"], _env(doc, **at))
+            level = evaluate(spec["h"], _env(doc, **at, **{q: where}))
+        except (ArithmeticError, ValueError, TypeError):
+            continue  # arccos(g/(R w²)) where R w² < g: no such equilibrium at these parameters
+        if not all(map(math.isfinite, (where, w2, level, h0, mass))) or w2 >= 0 or mass <= 0 or level <= h0:
+            continue
+        # h(q₀, q̇₀) = ½ M(q₀) q̇₀² + U_eff(q₀) = U_eff(q_top)
+        rate = math.sqrt(2 * (level - h0) / mass)
+        # h is that quadratic in q̇ only where M does not depend on q̇: checked, else no mark
+        if not math.isclose(evaluate(spec["h"], {**start, f"{q}_dot": rate}), level, rel_tol=1e-9, abs_tol=1e-12):
+            continue
+        label = top["label"].replace(START, f"{q0:.4g}")
         marks += [{"value": rate, "label": label}, {"value": -rate, "label": label}]
     return {f"{q}_dot": marks} if marks else {}
 

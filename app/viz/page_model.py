@@ -23,7 +23,7 @@ from app.engine.trees import TreeError, maybe_of_text, of_text
 from app.limits import DEFAULT_T_END
 from app.numerics import limits
 from app.numerics.methods import LABELS
-from app.viz.control_ranges import ticks, useful_range
+from app.viz.control_ranges import separatrix_spec, ticks, useful_range
 from app.viz.diagrams import diagram
 from app.viz.exprtree import document_tree, leaves
 from app.viz.mechanism import mechanism
@@ -271,7 +271,9 @@ _SUPERSCRIPTS_BACK = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-012345678
 
 def unit_latex(unit: str) -> str:
     """A unit as LaTeX after a value, upright and as printed (unit_text): "m/s²" → \\,\\mathrm{m/s^{2}}."""
-    printed = re.sub(r"[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+", lambda m: "^{" + m.group(0).translate(_SUPERSCRIPTS_BACK) + "}", unit_text(unit))
+    printed = re.sub(
+        r"[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+", lambda m: "^{" + m.group(0).translate(_SUPERSCRIPTS_BACK) + "}", unit_text(unit)
+    )
     return r"\,\mathrm{" + printed.replace("·", r"\,") + "}"
 
 
@@ -424,6 +426,14 @@ def _reduction(doc: dict[str, Any]) -> dict[str, Any] | None:
     return out if all(x is not None for x in essential) else None
 
 
+def _separatrix(doc: dict[str, Any], rate_units: dict[str, str]) -> dict[str, Any] | None:
+    """control_ranges.separatrix_spec with the unit its note prints the rates in (static/js/separatrix.js)."""
+    spec = separatrix_spec(doc)
+    if spec is None:
+        return None
+    return {**spec, "unit": unit_text(rate_units.get(spec["coordinate"]) or rate_unit(""))}
+
+
 def _focus_possible(doc: dict[str, Any]) -> bool:
     """The engine's verdict (app/engine/action_step.py); a document from before it counts as "possible"."""
     return doc.get("kinetic_focus_possible", True) is not False
@@ -473,6 +483,8 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bo
         # each generalized force Q that no potential describes, by coordinate (the action panel's ∫ Q δq dt)
         "forces": {q: _pair_tree(pair, names) for q, pair in (doc.get("generalized_forces") or {}).items()},
         "reduction": reduction,
+        # what the initial rate's separatrix marks are worked out from, again in the browser as the start changes
+        "separatrix": _separatrix(doc, known["rate_units"]),
         "constraint_forces": [
             {
                 "name": c["name"],

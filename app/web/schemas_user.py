@@ -34,6 +34,7 @@ Name = Annotated[
 ]
 Number = Annotated[float, Field(ge=-limits.VALUE_MAX, le=limits.VALUE_MAX)]
 
+
 class ParameterSpec(BaseModel):
     model_config = STRICT
 
@@ -144,8 +145,15 @@ class Equilibrium(BaseModel):
     position: ExprPair
     omega_squared: ExprPair
     stable: bool | None
-    exists: ExprPair | None = Field(None, description="Where the equilibrium exists (arccos(a/b) needs b > a); null when always.")
-    stable_when: ExprPair | None = Field(None, description="When stable is null: the condition on the parameters for ω² > 0.")
+    exists: ExprPair | None = Field(
+        None, description="Where the equilibrium exists (arccos(a/b) needs b > a); null when always."
+    )
+    stable_when: ExprPair | None = Field(
+        None, description="When stable is null: the condition on the parameters for ω² > 0."
+    )
+    unstable_when: ExprPair | None = Field(
+        None, description="When stable is null: the condition for ω² < 0 (stable_when reversed)."
+    )
 
 
 class EffectivePotential(BaseModel):

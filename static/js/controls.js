@@ -59,8 +59,8 @@ function stepKeys(ctl, range) {
   });
 }
 
-/** Put the marks of a control's datalist at their values on its slider. */
-function placeTicks(ctl) {
+/** Put the marks of a control's datalist at their values on its slider (again when separatrix.js changes them). */
+export function placeTicks(ctl) {
   const list = ctl.querySelector("datalist");
   if (!list) return;
   for (const option of list.querySelectorAll("option")) option.value = String(toSlider(ctl, Number(option.dataset.value)));

@@ -33,6 +33,7 @@ import { compile } from "./expr.js";
 import { isFolded } from "./fold.js";
 import { createPanel } from "./plots.js";
 import { compileRhs, integrate } from "./preview.js";
+import { followSeparatrix } from "./separatrix.js";
 import { fmt, sharedUnit, statusLine } from "./summaries.js";
 
 export function simulate(url, request, { signal } = {}) {
@@ -353,9 +354,11 @@ export function connectSimulation({ form, root, data, urls = {}, status, fetchRu
     }
   }
 
+  // the initial rate's separatrix marks follow the start and the parameters
+  const marks = followSeparatrix(form, data.separatrix);
   controls = bindControls(form, {
-    onInput: preview,
-    onSettle: run,
+    onInput: (request) => { marks(request); preview(request); },
+    onSettle: (request) => { marks(request); run(request); },
     onInvalid: (why) => {
       ++generation;
       controller?.abort();
