@@ -8,6 +8,7 @@ and ``normal_modes``, with numbers at the default parameters.
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 from typing import Any
 
 import sympy as sp
@@ -16,7 +17,7 @@ from app.engine import notation
 from app.engine.budget import memoized, pythagoras
 from app.engine.damping import damped
 from app.engine.derive import Derivation
-from app.engine.dimensions import parse_unit, system_dimensions, unit_latex, unit_text
+from app.engine.dimensions import add_dims, parse_unit, system_dimensions, unit_latex, unit_text
 from app.engine.hamilton import Hamilton
 from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode, NormalModes, defaults
 from app.engine.report import Printer, _step, display, plain_name
@@ -158,7 +159,8 @@ def _where(e: Equilibrium, pr: Printer, d: Derivation) -> str:
     for name, value in e.position.items():
         exact = e.exact.get(name) if e.exact else None
         parts.append(f"{pr.tex(sym[name])} = {pr.root(exact) if exact is not None else _number(value)}")
-    held = [rf"{pr.tex(sp.Symbol(n))} = {_number(v)}" for n, v in e.momenta.items()]
+    # a held momentum p_θ = 1 kg·m²/s carries its unit, as every number on the page does
+    held = [rf"{pr.tex(sp.Symbol(n))} = {_number(v)}{momentum_unit(d, n)}" for n, v in e.momenta.items()]
     return r",\; ".join(parts + held)
 
 
@@ -622,6 +624,17 @@ def coordinate_unit(d: Derivation, name: str) -> str:
     if dims is None:
         return ""
     return "rad" if not dims else unit_text(dims)
+
+
+def momentum_unit(d: Derivation, momentum: str) -> str:
+    """The unit of the momentum p_q conjugate to q, in LaTeX after a thin space; empty when q's unit is unknown."""
+    name = momentum.removeprefix("p_")
+    q = next((s for s in d.table.q if s.name == name), None)
+    dims = system_dimensions(d).get(q) if q is not None else None
+    if dims is None:
+        return ""
+    # p = ∂L/∂q̇ has the units of L (kg·m²/s²) times s over q's: kg·m²/s for an angle, kg·m/s for a length
+    return unit_latex(add_dims({"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-1)}, dims, Fraction(-1)))
 
 
 def _damped_rows(e: Equilibrium, pr: Printer, d: Derivation) -> list[str]:

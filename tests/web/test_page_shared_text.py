@@ -214,6 +214,20 @@ def test_a_steady_motion_heading_has_four_figures_and_a_unit(client):
     assert "Small oscillations about the steady motion at θ = 2.486 rad (π − θ = 0.6556 rad from the downward vertical)" in titles
 
 
+def test_a_rest_point_with_a_momentum_held_is_a_steady_motion_and_the_momentum_has_its_unit(client):
+    # prof-h 13: the tabletop's circular orbit was called "Equilibrium at r₀⁴ = …" and its p_θ = 1 had no unit
+    text = page(client, "tabletop-spring")
+    results = text[text.index("<dt>Effective potential</dt>") : text.index("</dd>", text.index("<dt>Effective potential</dt>"))]
+    assert "Steady motion at" in results and "Equilibrium at" not in results
+    shown = {t: x for t, _, x in steps_of(text)}["Small oscillations about the steady motion at r = 0.7071 m"]
+    assert r"p_{\theta} = 1\,\mathrm{kg\,m^{2}\,s^{-1}}" in shown
+    # with no momentum held, a rest point stays an equilibrium (the rotating parabola's ρ = 0)
+    plain = page(client, "rotating-parabola")
+    start = plain.index("<dt>Effective potential</dt>")
+    rest = plain[start : plain.index("</dd>", start)]
+    assert "Equilibrium at" in rest and "Steady motion at" not in rest
+
+
 def test_the_coordinates_failing_at_a_pole_is_said_and_phi_is_not_listed_there(client):
     shown = {t: x for t, _, x in steps_of(page(client, "spherical-pendulum"))}
     eq = shown["Equilibria"]
