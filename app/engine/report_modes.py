@@ -448,10 +448,8 @@ def _beats_step(e: Equilibrium, pr: Printer, d: Derivation, number: int) -> dict
 
 
 def exponent_letter(d: Derivation) -> str:
-    """The letter of the exponents of e^{rt}: r, as Taylor writes the roots of the auxiliary equation (s would be
-    read as the second beside its unit s⁻¹), s only where r is already a coordinate's or a parameter's name."""
-    taken = {*d.table.names, *(p.name for p in d.system.parameters)}
-    return "s" if "r" in taken else "r"
+    """The letter of the exponents of e^{σt}, λ or σ (app/engine/notation.py, the home of a page's letters)."""
+    return notation.exponent(d)[0]
 
 
 def _exponents(e: Equilibrium, d: Derivation, named: bool = True) -> str:
@@ -474,7 +472,7 @@ def _exponents(e: Equilibrium, d: Derivation, named: bool = True) -> str:
 def _verdict(e: Equilibrium, d: Derivation) -> str:
     lin = e.linear
     Mu, Ku, wu = (notation.text(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
-    r = exponent_letter(d)
+    r = notation.exponent(d)[1]  # in a sentence, the Unicode letter
     if lin is None or not lin.moving:
         text = _KIND[e.kind].replace("ω", wu)
         return text[0].upper() + text[1:] + "."
@@ -648,11 +646,29 @@ def _damped_rows(e: Equilibrium, pr: Printer, d: Derivation) -> list[str]:
     values = defaults(d)
     beta_value = float(sp.N(found.beta.xreplace(values)))
     w0_value = float(sp.N(found.omega0_squared.xreplace(values)))
+    if w0_value < 0:
+        # a negative linearised stiffness is no squared frequency: with κ = −ω₀² > 0 (g/R at the top), the
+        # equation is η̈ + 2β η̇ − κ η = 0, η ∝ e^{σt} gives σ² + 2β σ − κ = 0, so σ = −β ± √(β² + κ): one root
+        # is positive, the rate at which a small displacement grows
+        kappa = -found.omega0_squared
+        k = pr.tex(kappa)
+        k = rf"\left({k}\right)" if isinstance(kappa, sp.Add) else k
+        growth = -beta_value + math.sqrt(beta_value**2 - w0_value)
+        return [
+            rf"\ddot{{{eta}}} + 2\beta\,\dot{{{eta}}} - {k}\,{eta} = 0,\quad \beta = {pr.tex(found.beta)}",
+            rf"{eta} \propto e^{{{r} t}}:\quad {r}^2 + 2\beta {r} - {k} = 0,\quad {r} = -\beta \pm \sqrt{{\beta^2 + {k}}}",
+            rf"\beta \approx {_figures(beta_value)}\,\mathrm{{s}}^{{-1}},\quad {k} \approx {_figures(-w0_value)}"
+            + PER_SECOND_SQUARED
+            + AT_DEFAULTS,
+            # the positive root: a small displacement grows like e^{σ₊t}
+            rf"\text{{growth rate }} {r}_+ = -\beta + \sqrt{{\beta^2 + {k}}} \approx {_figures(growth)}\,\mathrm{{s}}^{{-1}}"
+            + AT_DEFAULTS,
+        ]
     rows = [
         # η̈ + 2β η̇ + ω₀² η = 0, with β and ω₀² from the engine's linearised equation of motion
         rf"\ddot{{{eta}}} + 2\beta\,\dot{{{eta}}} + {w}_0^2\,{eta} = 0,\quad \beta = {pr.tex(found.beta)},\quad "
         rf"{w}_0^2 = {pr.tex(found.omega0_squared)}",
-        # η ∝ e^{rt}: r² + 2β r + ω₀² = 0, so r = −β ± √(β² − ω₀²)
+        # η ∝ e^{σt}: σ² + 2β σ + ω₀² = 0, so σ = −β ± √(β² − ω₀²)
         rf"{eta} \propto e^{{{r} t}}:\quad {r}^2 + 2\beta {r} + {w}_0^2 = 0,\quad {r} = -\beta \pm \sqrt{{\beta^2 - {w}_0^2}}",
         rf"\beta \approx {_figures(beta_value)}\,\mathrm{{s}}^{{-1}},\quad {w}_0^2 \approx {_figures(w0_value)}"
         + PER_SECOND_SQUARED
@@ -686,21 +702,22 @@ def _one_coordinate_step(
     rows = [where]
     if moving:
         auxiliary = _damped_rows(e, pr, d)
-        # after the auxiliary equation, which says η ∝ e^{rt}, the roots' numbers alone
+        # after the auxiliary equation, which says η ∝ e^{σt}, the roots' numbers alone
         rows += [*auxiliary, _exponents(e, d, named=not auxiliary)]
         lin = e.linear
         assert lin is not None
         grows = any(s.real > 1e-12 for s in lin.exponents)
         what = "Small motions about"
-        r = exponent_letter(d)
+        r = notation.exponent(d)[1]  # in a sentence, the Unicode letter
         why = (
             f"Linearised about {about}, a small displacement varies as e^({r}t), and the velocity term (the damping) "
             f"enters the equation for {r}: the real part of {r} is a rate of growth or decay (in s⁻¹), its imaginary "
             "part an angular frequency. "
             + (
-                f"One {r} is positive: a small displacement runs away, an unstable equilibrium."
+                f"One {r} is positive, {r}₊ ≈ {_figures(max(x.real for x in lin.exponents))} s⁻¹: a small displacement "
+                f"grows like e^({r}₊t) at that rate instead of oscillating, an unstable equilibrium."
                 if grows
-                else "Every s has a negative real part: a small motion dies away, an asymptotically stable equilibrium."
+                else f"Every {r} has a negative real part: a small motion dies away, an asymptotically stable equilibrium."
             )
         )
         if grows:
