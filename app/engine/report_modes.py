@@ -453,7 +453,8 @@ def exponent_letter(d: Derivation) -> str:
 
 
 def _exponents(e: Equilibrium, d: Derivation, named: bool = True) -> str:
-    """The exponents r of e^{rt} (in 1/s, four figures at the default parameters), each complex pair once."""
+    """The exponents λ of e^{λt}, or σ (notation.exponent), in 1/s to four figures at the default parameters,
+    each complex pair once."""
     lin = e.linear
     assert lin is not None
     shown = []
@@ -481,7 +482,7 @@ def _verdict(e: Equilibrium, d: Derivation) -> str:
         "The velocity terms (G, from damping, Coriolis or magnetic forces) enter the motion near it: with "
         f"{notation.text('displacement', d)} = v e^{{{r}t}} "
         # the eigenvalues of the first-order system's block matrix [[0, I], [−M⁻¹K, −M⁻¹G]] are the roots of
-        # det(r²M + rG + K) = 0: η = v e^{rt} in M η̈ + G η̇ + K η = 0
+        # det(σ²M + σG + K) = 0: η = v e^{σt} in M η̈ + G η̇ + K η = 0
         f"the exponents {r} are the roots of det({r}²{Mu} + {r}G + {Ku}) = 0. "
     )
     if e.kind == "unstable":
