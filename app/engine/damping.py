@@ -4,12 +4,14 @@ Linearised about an equilibrium q₀, a one-coordinate equation of motion q̈ = 
 
     η̈ + 2β η̇ + ω₀² η = 0,   2β = −∂a/∂q̇,  ω₀² = −∂a/∂q   (both at q = q₀, q̇ = 0),
 
-and η ∝ e^{rt} turns it into the auxiliary equation r² + 2β r + ω₀² = 0, whose roots are
+and η ∝ e^{σt} turns it into the auxiliary equation σ² + 2β σ + ω₀² = 0, whose roots are
 
-    r = −β ± √(β² − ω₀²)
+    σ = −β ± √(β² − ω₀²)
 
-(Taylor writes r for them; s would collide with the second).  The motion is critically damped at β = ω₀:
-solved for the damping parameter (b on the damped pendulum) this is its critical value.  With light damping
+(Taylor writes r for them, but r names the positions r⃗ on every page, and s is the unit beside them: the
+page writes λ, or σ where λ is a constraint's multiplier, app/engine/notation.exponent).
+Where ω₀² < 0 (the pendulum's top, −g/R) it is no squared frequency: the report writes η̈ + 2β η̇ − (g/R) η = 0.
+The motion is critically damped at β = ω₀: solved for the damping parameter (b on the damped pendulum) this is its critical value.  With light damping
 (β < ω₀) the amplitude decays as e^{−βt}, so the energy, quadratic in it, as e^{−2βt} on average.
 """
 

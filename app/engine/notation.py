@@ -99,6 +99,18 @@ def text(concept: str, d: Derivation) -> str:
     return _choice(concept, d)[1]
 
 
+# the exponents of a small motion η ∝ e^{λt}, the roots of its auxiliary equation: never r, which names the
+# positions r⃗ on every page, nor s, the unit beside them (s⁻¹); λ as in an eigenvalue problem, σ where λ is taken
+# (a constraint's multipliers λ₁, λ₂, …, or a parameter called λ)
+EXPONENT: tuple[tuple[str, str], ...] = ((r"\lambda", "λ"), (r"\sigma", "σ"), (r"\varsigma", "ς"))
+
+
+def exponent(d: Derivation) -> tuple[str, str]:
+    """The letter (LaTeX, Unicode) of the exponents of e^{λt} about an equilibrium where velocity terms act."""
+    taken = _taken(d) | ({"λ"} if d.system.constraints else set())
+    return next((c for c in EXPONENT if c[1] not in taken), EXPONENT[-1])
+
+
 def rest_potential(d: Derivation) -> tuple[str, str]:
     """The name (LaTeX, Unicode) of −L at q̇ = 0, U − T₀, whose stationary points are the equilibria: U_eff, the
     effective potential, as on every page that reduces to it; V only where the effective-potential step writes
@@ -312,6 +324,11 @@ def _sometimes(
         per = _PerCoordinate(d, dims) if energy else None
         rows.append(_row("Q", "Q", "generalized force that no potential describes",
                          per.unit(_ENERGY, 1, "J divided by its coordinate's unit") if per else "", "derived"))  # fmt: skip
+        # with a drag on one coordinate, the small motions about an equilibrium go as e^{σt} (app/engine/report_modes)
+        if len(d.table.q) == 1:
+            tex, uni = exponent(d)
+            rows.append(_row(tex, uni, f"exponent of a small motion {text('displacement', d)} ∝ e^({uni}t) about an "
+                             "equilibrium, a root of its auxiliary equation", "1/s" if energy else "", "derived"))  # fmt: skip
     if forces:
         rows.append(
             _row(CONSTRAINT, "𝒞", "a constraint written as a surface 𝒞 = 0 in Cartesian coordinates", "per constraint (𝒞₁, … below)" if energy else "", "derived")

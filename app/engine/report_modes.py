@@ -8,6 +8,7 @@ and ``normal_modes``, with numbers at the default parameters.
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 from typing import Any
 
 import sympy as sp
@@ -16,7 +17,7 @@ from app.engine import notation
 from app.engine.budget import memoized, pythagoras
 from app.engine.damping import damped
 from app.engine.derive import Derivation
-from app.engine.dimensions import parse_unit, system_dimensions, unit_latex, unit_text
+from app.engine.dimensions import add_dims, parse_unit, system_dimensions, unit_latex, unit_text
 from app.engine.hamilton import Hamilton
 from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode, NormalModes, defaults
 from app.engine.report import Printer, _step, display, plain_name
@@ -158,7 +159,8 @@ def _where(e: Equilibrium, pr: Printer, d: Derivation) -> str:
     for name, value in e.position.items():
         exact = e.exact.get(name) if e.exact else None
         parts.append(f"{pr.tex(sym[name])} = {pr.root(exact) if exact is not None else _number(value)}")
-    held = [rf"{pr.tex(sp.Symbol(n))} = {_number(v)}" for n, v in e.momenta.items()]
+    # a held momentum p_θ = 1 kg·m²/s carries its unit, as every number on the page does
+    held = [rf"{pr.tex(sp.Symbol(n))} = {_number(v)}{momentum_unit(d, n)}" for n, v in e.momenta.items()]
     return r",\; ".join(parts + held)
 
 
@@ -446,14 +448,13 @@ def _beats_step(e: Equilibrium, pr: Printer, d: Derivation, number: int) -> dict
 
 
 def exponent_letter(d: Derivation) -> str:
-    """The letter of the exponents of e^{rt}: r, as Taylor writes the roots of the auxiliary equation (s would be
-    read as the second beside its unit s⁻¹), s only where r is already a coordinate's or a parameter's name."""
-    taken = {*d.table.names, *(p.name for p in d.system.parameters)}
-    return "s" if "r" in taken else "r"
+    """The letter of the exponents of e^{σt}, λ or σ (app/engine/notation.py, the home of a page's letters)."""
+    return notation.exponent(d)[0]
 
 
 def _exponents(e: Equilibrium, d: Derivation, named: bool = True) -> str:
-    """The exponents r of e^{rt} (in 1/s, four figures at the default parameters), each complex pair once."""
+    """The exponents λ of e^{λt}, or σ (notation.exponent), in 1/s to four figures at the default parameters,
+    each complex pair once."""
     lin = e.linear
     assert lin is not None
     shown = []
@@ -472,7 +473,7 @@ def _exponents(e: Equilibrium, d: Derivation, named: bool = True) -> str:
 def _verdict(e: Equilibrium, d: Derivation) -> str:
     lin = e.linear
     Mu, Ku, wu = (notation.text(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
-    r = exponent_letter(d)
+    r = notation.exponent(d)[1]  # in a sentence, the Unicode letter
     if lin is None or not lin.moving:
         text = _KIND[e.kind].replace("ω", wu)
         return text[0].upper() + text[1:] + "."
@@ -481,7 +482,7 @@ def _verdict(e: Equilibrium, d: Derivation) -> str:
         "The velocity terms (G, from damping, Coriolis or magnetic forces) enter the motion near it: with "
         f"{notation.text('displacement', d)} = v e^{{{r}t}} "
         # the eigenvalues of the first-order system's block matrix [[0, I], [−M⁻¹K, −M⁻¹G]] are the roots of
-        # det(r²M + rG + K) = 0: η = v e^{rt} in M η̈ + G η̇ + K η = 0
+        # det(σ²M + σG + K) = 0: η = v e^{σt} in M η̈ + G η̇ + K η = 0
         f"the exponents {r} are the roots of det({r}²{Mu} + {r}G + {Ku}) = 0. "
     )
     if e.kind == "unstable":
@@ -624,6 +625,17 @@ def coordinate_unit(d: Derivation, name: str) -> str:
     return "rad" if not dims else unit_text(dims)
 
 
+def momentum_unit(d: Derivation, momentum: str) -> str:
+    """The unit of the momentum p_q conjugate to q, in LaTeX after a thin space; empty when q's unit is unknown."""
+    name = momentum.removeprefix("p_")
+    q = next((s for s in d.table.q if s.name == name), None)
+    dims = system_dimensions(d).get(q) if q is not None else None
+    if dims is None:
+        return ""
+    # p = ∂L/∂q̇ has the units of L (kg·m²/s²) times s over q's: kg·m²/s for an angle, kg·m/s for a length
+    return unit_latex(add_dims({"kg": Fraction(1), "m": Fraction(2), "s": Fraction(-1)}, dims, Fraction(-1)))
+
+
 def _damped_rows(e: Equilibrium, pr: Printer, d: Derivation) -> list[str]:
     """The auxiliary equation about a damped equilibrium of one coordinate, its roots as a formula, and (where it
     oscillates) the critical damping and the energy's decay, each followed by its number at the defaults."""
@@ -635,11 +647,29 @@ def _damped_rows(e: Equilibrium, pr: Printer, d: Derivation) -> list[str]:
     values = defaults(d)
     beta_value = float(sp.N(found.beta.xreplace(values)))
     w0_value = float(sp.N(found.omega0_squared.xreplace(values)))
+    if w0_value < 0:
+        # a negative linearised stiffness is no squared frequency: with κ = −ω₀² > 0 (g/R at the top), the
+        # equation is η̈ + 2β η̇ − κ η = 0, η ∝ e^{σt} gives σ² + 2β σ − κ = 0, so σ = −β ± √(β² + κ): one root
+        # is positive, the rate at which a small displacement grows
+        kappa = -found.omega0_squared
+        k = pr.tex(kappa)
+        k = rf"\left({k}\right)" if isinstance(kappa, sp.Add) else k
+        growth = -beta_value + math.sqrt(beta_value**2 - w0_value)
+        return [
+            rf"\ddot{{{eta}}} + 2\beta\,\dot{{{eta}}} - {k}\,{eta} = 0,\quad \beta = {pr.tex(found.beta)}",
+            rf"{eta} \propto e^{{{r} t}}:\quad {r}^2 + 2\beta {r} - {k} = 0,\quad {r} = -\beta \pm \sqrt{{\beta^2 + {k}}}",
+            rf"\beta \approx {_figures(beta_value)}\,\mathrm{{s}}^{{-1}},\quad {k} \approx {_figures(-w0_value)}"
+            + PER_SECOND_SQUARED
+            + AT_DEFAULTS,
+            # the positive root: a small displacement grows like e^{σ₊t}
+            rf"\text{{growth rate }} {r}_+ = -\beta + \sqrt{{\beta^2 + {k}}} \approx {_figures(growth)}\,\mathrm{{s}}^{{-1}}"
+            + AT_DEFAULTS,
+        ]
     rows = [
         # η̈ + 2β η̇ + ω₀² η = 0, with β and ω₀² from the engine's linearised equation of motion
         rf"\ddot{{{eta}}} + 2\beta\,\dot{{{eta}}} + {w}_0^2\,{eta} = 0,\quad \beta = {pr.tex(found.beta)},\quad "
         rf"{w}_0^2 = {pr.tex(found.omega0_squared)}",
-        # η ∝ e^{rt}: r² + 2β r + ω₀² = 0, so r = −β ± √(β² − ω₀²)
+        # η ∝ e^{σt}: σ² + 2β σ + ω₀² = 0, so σ = −β ± √(β² − ω₀²)
         rf"{eta} \propto e^{{{r} t}}:\quad {r}^2 + 2\beta {r} + {w}_0^2 = 0,\quad {r} = -\beta \pm \sqrt{{\beta^2 - {w}_0^2}}",
         rf"\beta \approx {_figures(beta_value)}\,\mathrm{{s}}^{{-1}},\quad {w}_0^2 \approx {_figures(w0_value)}"
         + PER_SECOND_SQUARED
@@ -673,21 +703,22 @@ def _one_coordinate_step(
     rows = [where]
     if moving:
         auxiliary = _damped_rows(e, pr, d)
-        # after the auxiliary equation, which says η ∝ e^{rt}, the roots' numbers alone
+        # after the auxiliary equation, which says η ∝ e^{σt}, the roots' numbers alone
         rows += [*auxiliary, _exponents(e, d, named=not auxiliary)]
         lin = e.linear
         assert lin is not None
         grows = any(s.real > 1e-12 for s in lin.exponents)
         what = "Small motions about"
-        r = exponent_letter(d)
+        r = notation.exponent(d)[1]  # in a sentence, the Unicode letter
         why = (
             f"Linearised about {about}, a small displacement varies as e^({r}t), and the velocity term (the damping) "
             f"enters the equation for {r}: the real part of {r} is a rate of growth or decay (in s⁻¹), its imaginary "
             "part an angular frequency. "
             + (
-                f"One {r} is positive: a small displacement runs away, an unstable equilibrium."
+                f"One {r} is positive, {r}₊ ≈ {_figures(max(x.real for x in lin.exponents))} s⁻¹: a small displacement "
+                f"grows like e^({r}₊t) at that rate instead of oscillating, an unstable equilibrium."
                 if grows
-                else "Every s has a negative real part: a small motion dies away, an asymptotically stable equilibrium."
+                else f"Every {r} has a negative real part: a small motion dies away, an asymptotically stable equilibrium."
             )
         )
         if grows:

@@ -78,8 +78,7 @@ SECTIONS: tuple[Section, ...] = (
     Section(
         "4.9",
         "Small oscillations about an equilibrium",
-        "Near a minimum of the effective potential every system swings like a spring, with ω² = U_eff'' / m_eff. "
-        "(The chapter has no section 4.8.)",
+        "Near a minimum of the effective potential every system swings like a spring, with ω² = U_eff'' / m_eff.",
         shown_by=("small-oscillations",),
     ),
 )

@@ -63,7 +63,8 @@ export class PoincarePanel {
     react(this, traces, layout({
       hovermode: "closest", height: 360,
       xaxis: axis(`${lq} (${units[q] || ""})`, angle ? { range: [-Math.PI, Math.PI] } : {}),
-      yaxis: axis(`momentum p of ${lq} (${momentumUnit(units[q])})`),
+      // the momentum named as the page prints it, p_θ₁ (subscript set by axis), in its own unit
+      yaxis: axis(`${labels[`p_${q}`] || `p_${lq}`} (${(this.data.momentum_units || {})[q] || momentumUnit(units[q])})`),
     }));
     const points = s.orbits.reduce((a, o) => a + o.q.length, 0);
     this.section.dataset.points = String(points);

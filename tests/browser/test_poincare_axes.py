@@ -23,4 +23,13 @@ def test_every_axis_title_lies_inside_the_chart(page, size):
         assert box is not None and box["width"] > 0, title
         assert chart["x"] <= box["x"] and box["x"] + box["width"] <= chart["x"] + chart["width"], (title, box, chart)
         assert chart["y"] <= box["y"] and box["y"] + box["height"] <= chart["y"] + chart["height"], (title, box, chart)
-    assert "momentum p of θ₁" in (page.locator("#panel-poincare .ytitle").first.text_content() or "")
+    # the momentum's axis names it as the page prints it, p_θ₁ with θ₁ set as a subscript, and gives its unit
+    ytitle = page.locator("#panel-poincare .ytitle").first
+    # (Plotly puts a zero-width space around a subscript)
+    assert (ytitle.text_content() or "").replace("\u200b", "").strip() == "pθ₁ (kg·m²/s)"
+    # θ₁ is the one piece set lower than the line, as <sub> sets it
+    lowered = ytitle.evaluate(
+        "t => [...t.querySelectorAll('tspan')].filter(s => parseFloat(s.getAttribute('dy') || '0') > 0)"
+        ".map(s => s.textContent)"
+    )
+    assert lowered == ["θ₁"], ytitle.inner_html()

@@ -171,7 +171,8 @@ def test_a_charge_in_a_magnetic_field_counts_its_zero_exponents_and_says_where_i
     )
     (modes,) = steps(doc, "normal-modes")
     said = modes["explanation"]
-    assert "[[" not in said and "the roots of det(r²" in said
+    # the exponents λ (no constraint here, so λ is free), never r, the position, nor s, the unit (prof-h 10)
+    assert "[[" not in said and "the roots of det(λ²" in said
     assert "Two are zero (free drifts), the others are ±2i (oscillations at 2 rad/s)" in said
     assert "come from the velocity terms G alone" in said and "One is zero" not in said
     assert r"\pm 2i" in modes["latex"] and r"0 \pm" not in modes["latex"]

@@ -189,21 +189,37 @@ def test_one_coordinate_has_no_mode_shape_and_an_unstable_point_runs_away(client
 def test_the_damped_exponents_are_defined_with_a_unit_and_four_figures(client):
     shown = {t: x for t, _, x in steps_of(page(client, "damped-pendulum"))}
     bottom = shown["Small motions about θ = 0"]
-    # prof-g 60: the exponent is r (the roots of the auxiliary equation), never s beside the unit s⁻¹
-    assert r"\eta \propto e^{r t}:\quad r^2 + 2\beta r + \omega_0^2 &= 0" in bottom
-    assert r"r &= -0.15 \pm 3.128\,i\,\mathrm{s}^{-1}" in bottom and "e^{s t}" not in bottom
+    # prof-h 10: the exponent, a root of the auxiliary equation, is never r, which names the position r⃗, nor s,
+    # the unit beside it (prof-g 60), nor λ, the string's multiplier λ₁ on this page: σ, as the Symbols table says
+    assert r"\eta \propto e^{\sigma t}:\quad \sigma^2 + 2\beta \sigma + \omega_0^2 &= 0" in bottom
+    assert r"\sigma &= -0.15 \pm 3.128\,i\,\mathrm{s}^{-1}" in bottom and "e^{r t}" not in bottom and "e^{s t}" not in bottom
     assert "3.1285" not in bottom
-    assert r"r &= -3.286,\; 2.986\,\mathrm{s}^{-1}" in shown["No oscillation about θ = π"]
+    assert r"\sigma &= -3.286,\; 2.986\,\mathrm{s}^{-1}" in shown["No oscillation about θ = π"]
+    table, _ = symbols_table(page(client, "damped-pendulum"))
+    assert "exponent of a small motion" in table and "e^(σt)" in table
 
 
 def test_the_damped_roots_are_a_formula_with_the_critical_damping_and_the_energy_decay(client):
-    # prof-g 61: r = −β ± √(β² − ω₀²) with β = b/(2mR²), ω₀² = g/R, b_c = 2mR²√(g/R), E ∝ e^{−2βt}
+    # prof-g 61: σ = −β ± √(β² − ω₀²) with β = b/(2mR²), ω₀² = g/R, b_c = 2mR²√(g/R), E ∝ e^{−2βt}
     bottom = {t: x for t, _, x in steps_of(page(client, "damped-pendulum"))}["Small motions about θ = 0"]
     assert r"\beta = \frac{b}{2 m R^{2}},\quad \omega_0^2 = \frac{g}{R}" in bottom
-    assert r"r = -\beta \pm \sqrt{\beta^2 - \omega_0^2}" in bottom
+    assert r"\sigma = -\beta \pm \sqrt{\beta^2 - \omega_0^2}" in bottom
     # the critical value, 2 · 1 kg · (1 m)² · √(9.81 s⁻²) = 6.264 kg·m²/s, the b slider's own mark
     assert r"b_\text{c} = 2 m R^{2} \sqrt{\frac{g}{R}} \approx 6.264\,\mathrm{kg\,m^{2}\,s^{-1}}" in bottom
     assert r"E \propto e^{-2\beta t},\quad 2\beta &= \frac{b}{m R^{2}}" in bottom
+
+
+def test_about_the_top_the_damped_equation_has_a_negative_stiffness_and_a_growth_rate(client):
+    # prof-h 10: a squared frequency cannot be negative; about θ = π a textbook writes η̈ + 2βη̇ − (g/R)η = 0
+    text = page(client, "damped-pendulum")
+    top = {t: x for t, _, x in steps_of(text)}["No oscillation about θ = π"]
+    assert r"\ddot{\eta} + 2\beta\,\dot{\eta} - \frac{g}{R}\,\eta &= 0" in top
+    assert "omega_0" not in top and "-9.81" not in text and "−9.81" not in text
+    assert r"\sigma = -\beta \pm \sqrt{\beta^2 + \frac{g}{R}}" in top
+    # the growth rate −0.15 + √(0.15² + 9.81) = 2.986 s⁻¹, the positive root the exponents' row lists
+    assert r"\text{growth rate } \sigma_+ &= -\beta + \sqrt{\beta^2 + \frac{g}{R}} \approx 2.986\,\mathrm{s}^{-1}" in top
+    why = {t: e for t, e, _ in steps_of(text)}["No oscillation about θ = π"]
+    assert "σ₊ ≈ 2.986 s⁻¹" in why and "unstable equilibrium" in why
 
 
 def test_a_steady_motion_heading_has_four_figures_and_a_unit(client):
@@ -212,6 +228,20 @@ def test_a_steady_motion_heading_has_four_figures_and_a_unit(client):
     titles = [t for t, _, _ in steps_of(page(client, "spherical-pendulum"))]
     # θ measured from above, also given from below (prof-g 27)
     assert "Small oscillations about the steady motion at θ = 2.486 rad (π − θ = 0.6556 rad from the downward vertical)" in titles
+
+
+def test_a_rest_point_with_a_momentum_held_is_a_steady_motion_and_the_momentum_has_its_unit(client):
+    # prof-h 13: the tabletop's circular orbit was called "Equilibrium at r₀⁴ = …" and its p_θ = 1 had no unit
+    text = page(client, "tabletop-spring")
+    results = text[text.index("<dt>Effective potential</dt>") : text.index("</dd>", text.index("<dt>Effective potential</dt>"))]
+    assert "Steady motion at" in results and "Equilibrium at" not in results
+    shown = {t: x for t, _, x in steps_of(text)}["Small oscillations about the steady motion at r = 0.7071 m"]
+    assert r"p_{\theta} = 1\,\mathrm{kg\,m^{2}\,s^{-1}}" in shown
+    # with no momentum held, a rest point stays an equilibrium (the rotating parabola's ρ = 0)
+    plain = page(client, "rotating-parabola")
+    start = plain.index("<dt>Effective potential</dt>")
+    rest = plain[start : plain.index("</dd>", start)]
+    assert "Equilibrium at" in rest and "Steady motion at" not in rest
 
 
 def test_the_coordinates_failing_at_a_pole_is_said_and_phi_is_not_listed_there(client):

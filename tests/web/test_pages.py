@@ -71,6 +71,13 @@ def test_contents_lists_every_scene_in_section_order(pages):
     assert positions == sorted(positions)
 
 
+def test_contents_names_no_section_it_does_not_list(pages):
+    # a book never mentions a section it lacks (prof-h 14: "(The chapter has no section 4.8.)")
+    text = "".join(parse(pages["/"].text).text)
+    named = set(re.findall(r"\b4\.\d\b", text))
+    assert named and named <= {s.number for s in SECTIONS}, named - {s.number for s in SECTIONS}
+
+
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
 def test_panels_rendered_are_exactly_the_shown_ones(pages, scene_id):
     tags = parse(pages[f"/scenes/{scene_id}"].text)
