@@ -603,3 +603,89 @@ def _fallback(expr: sp.Expr) -> sp.Expr:
     plain = within_budget(lambda: tidy(pythagoras(expr), FALLBACK_WORK), expr, FALLBACK_WORK)
     # quotients as a textbook writes them here too (bounded by size: cheap)
     return textbook_quotients(plain, moving_symbols(plain, getattr(_local, "names", None)))
+
+
+def roots_compacted(expr: sp.Expr, signs: Mapping[sp.Symbol, sp.Symbol]) -> sp.Expr:
+    """A closed form holding square roots as a textbook prints it (the same value).
+
+    Three rules, applied from the inside out, each kept only where it is shorter by ``sp.count_ops``:
+
+    * a product of square roots, all but one of quantities that are never negative (under ``signs``, the
+      stand-ins carrying the declared signs), is one root, √a √b = √(ab);
+    * a polynomial under a root in its shortest grouped form: as it is, factored, or, for each factor f of it,
+      the rest divided by f, R = q f + r, so that f R = f(q f + r): the double pendulum's
+      √((m₁ + m₂)((m₁ + m₂)(l₁ + l₂)² − 4m₁l₁l₂));
+    * a sum whose terms share a factor has it taken out, (m₁ + m₂)l₁ + (m₁ + m₂)l₂ = (m₁ + m₂)(l₁ + l₂).
+    """
+    if not any(_square_root(p) for p in expr.atoms(sp.Pow)):
+        return expr
+    return _compacted(expr, signs)
+
+
+def _shortest(forms: list[sp.Expr]) -> sp.Expr:
+    # fewest operations; ties keep the earlier (the form as it stands first)
+    return min(forms, key=lambda e: (sp.count_ops(e), forms.index(e)))
+
+
+def _compacted(expr: sp.Expr, signs: Mapping[sp.Symbol, sp.Symbol]) -> sp.Expr:
+    if expr.is_Atom:
+        return expr
+    args = [_compacted(a, signs) for a in expr.args]
+    if isinstance(expr, sp.Mul):
+        roots = [a for a in args if _square_root(a)]
+        # √a √b = √(ab) when a ≥ 0, whatever b (SymPy splits √(ab) whenever a factor is known positive): so
+        # when all the radicands but one are known never to be negative
+        unsure = [r for r in roots if not r.base.xreplace(dict(signs)).is_nonnegative]
+        if len(roots) > 1 and len(unsure) <= 1:
+            rest = [a for a in args if a not in roots]
+            joined = sp.sqrt(_radicand(sp.Mul(*(r.base for r in roots))))
+            return sp.Mul(*rest, joined)
+    rebuilt = expr.func(*args)
+    if _square_root(rebuilt):
+        return sp.sqrt(_radicand(rebuilt.base))
+    if isinstance(rebuilt, sp.Add):
+        # shared factors out of a sum, sums among them: (m₁ + m₂)l₁ + (m₁ + m₂)l₂ = (m₁ + m₂)(l₁ + l₂); the
+        # terms free of roots on their own too, beside the root ((m₁ + m₂)(l₁ + l₂) − √(…))
+        plain = [t for t in rebuilt.args if not any(_square_root(p) for p in t.atoms(sp.Pow))]
+        whole = _grouped(rebuilt)
+        if 1 < len(plain) < len(rebuilt.args):
+            rooted = [t for t in rebuilt.args if t not in plain]
+            return _shortest([whole, sp.Add(_grouped(sp.Add(*plain)), *rooted)])
+        return whole
+    return rebuilt
+
+
+def _grouped(total: sp.Expr) -> sp.Expr:
+    return _shortest([total, sp.factor_terms(total), sp.gcd_terms(total)])
+
+
+def _square_root(e: sp.Expr) -> bool:
+    return isinstance(e, sp.Pow) and e.exp == sp.S.Half
+
+
+def _radicand(base: sp.Expr) -> sp.Expr:
+    """A polynomial under a root in its shortest form: as it is, factored, or grouped in one of its factors."""
+    if not base.free_symbols or not base.is_polynomial(*base.free_symbols):
+        return base
+    factored = sp.factor(base)
+    forms = [base, factored]
+    _, factors = sp.factor_list(base)
+    for f, _power in factors:
+        if not isinstance(f, sp.Add):
+            continue
+        rest = sp.cancel(base / f)
+        if not rest.is_polynomial(*base.free_symbols):
+            continue
+        # f R = f(q f + r), R divided by f in each symbol f holds to the first power
+        for x in sorted(f.free_symbols, key=str):
+            if sp.degree(f, x) != 1:
+                continue
+            try:
+                q, r = sp.div(rest, f, x)
+            except BasePolynomialError:
+                continue
+            whole = q.is_polynomial(*base.free_symbols) and r.is_polynomial(*base.free_symbols)
+            if q == 0 or not whole or sp.expand(q * f + r - rest) != 0:
+                continue
+            forms.append(f * (sp.factor(q) * f + sp.factor(r)))
+    return _shortest(forms)

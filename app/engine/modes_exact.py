@@ -14,7 +14,7 @@ import sympy as sp
 
 from app.engine.budget import document_memo, memoized, within_budget
 from app.engine.derive import Derivation, positive_names
-from app.engine.forms import settle
+from app.engine.forms import roots_compacted, settle
 from app.limits import CANCEL_WORK, EIGEN_WORK
 from app.limits import EQUILIBRIA_SOLVE_WORK as SOLVE_WORK
 
@@ -167,7 +167,9 @@ def eigenvalues(M: sp.Matrix, K: sp.Matrix, assume: Mapping[sp.Symbol, sp.Symbol
 
     def work() -> list[sp.Expr]:
         Ma, Ka = M.xreplace(dict(assume)), K.xreplace(dict(assume))
-        return [r.xreplace(back) for r in _roots(Ma, Ka)]
+        # the roots as a textbook prints them: √a √b as one root, shared factors out of sums (the declared
+        # signs are read where the symbols still carry them: SymPy would split √(ab) again under them)
+        return [roots_compacted(r.xreplace(back), assume) for r in _roots(Ma, Ka)]
 
     found: list[sp.Expr] = within_budget(work, [], EIGEN_WORK)
     # each root is already in its neat form (factored, or its common factors out around the square root):

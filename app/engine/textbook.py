@@ -83,7 +83,10 @@ class _Printer(LatexPrinter):
             return (-2,)
         base = f.base if f.is_Pow else f
         if isinstance(base, sp.Add) and self.constant(base):
-            return (-1, sp.default_sort_key(f))  # (m₁ + m₂) g l₁: a constant sum goes in front
+            # (m₁ + m₂) g l₁: a constant sum goes in front; among sums, one holding a mass first, a power after
+            # (m₁ + m₂)(l₁ + l₂), (m₁ + m₂)(l₁ − l₂)²
+            lead = min(_parameter_rank(s.name) for s in base.free_symbols) if base.free_symbols else (9, "", "")
+            return (-1, lead[0], f.is_Pow, sp.default_sort_key(f))
         if base.is_Symbol and base not in self.moving:
             # a parameter, or a constant of the motion (p_φ, E_r) after the parameters
             momentum = base.name.startswith("p_") or base.name.startswith("E_")

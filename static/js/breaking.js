@@ -87,19 +87,55 @@ export function alignedRows(tex) {
   return rows.map((r) => r.trim()).filter(Boolean).flatMap((r) => (r.includes(OPEN) ? alignedRows(r) : [r]));
 }
 
+/** The relation written at ``i`` of a row (=, \\approx, \\equiv, \\le, \\ge …), or "". */
+function relationAt(row, i) {
+  if (row[i] === "=" || row[i] === "<" || row[i] === ">") return row[i];
+  const word = /^\\(approx|equiv|leq|geq|le|ge|neq|ne|sim)(?![a-zA-Z])/.exec(row.slice(i));
+  return word ? word[0] : "";
+}
+
 /** A row with a line break allowed after each wide space at its top level (\quad before "(string tension)",
- *  between two equations of one row), where KaTeX by itself breaks only after relations and operators. */
-export function breakable(row) {
+ *  between two equations of one row), where KaTeX by itself breaks only after relations and operators.
+ *  A relation just after a wide space holds on to what follows it (no "K =" left at a line's end, its matrix on
+ *  the next line), and so does the row's first relation when ``glue`` is set (the row is wider than its box
+ *  however it breaks: "ω₁² =" then stays with the fraction too wide for a phone, in the box that scrolls); a value
+ *  beside what it evaluates goes on to the next line with its ≈ before it ("≈ 5.747 s⁻²", never a bare number
+ *  beginning a line). */
+export function breakable(row, glue = false) {
   let out = "";
   let braces = 0;
+  let brackets = 0; // \left … \right: one piece for KaTeX, never broken inside
+  let related = false; // a relation met since the last wide space
+  let spaced = false; // a wide space met
   for (let i = 0; i < row.length; i++) {
     const c = row[i];
     if (c === "{") braces += 1;
     else if (c === "}") braces -= 1;
+    const top = braces === 0 && brackets === 0;
+    if (c === "\\" && /^\\left(?![a-zA-Z])/.test(row.slice(i))) brackets += 1;
+    else if (c === "\\" && /^\\right(?![a-zA-Z])/.test(row.slice(i))) brackets -= 1;
     const quad = row.startsWith("\\quad", i) || row.startsWith("\\qquad", i);
-    if (c === "\\" && quad && braces === 0) {
+    if (c === "\\" && quad && top) {
       const word = row.startsWith("\\qquad", i) ? "\\qquad" : "\\quad";
       out += `${word}\\allowbreak `;
+      i += word.length - 1;
+      related = false;
+      spaced = true;
+      continue;
+    }
+    const relation = top ? relationAt(row, i) : "";
+    if (relation) {
+      const approx = relation === "\\approx" && related;
+      const held = approx || (!related && (spaced || glue));
+      out += `${approx ? "\\allowbreak " : ""}${relation}${held ? "\\nobreak " : ""}`;
+      i += relation.length - 1;
+      related = true;
+      continue;
+    }
+    if (c === "\\" && i + 1 < row.length) {
+      // a control word or symbol kept whole (\left<, \{ are not relations)
+      const word = /^\\([a-zA-Z]+|.)/.exec(row.slice(i))[0];
+      out += word;
       i += word.length - 1;
       continue;
     }
@@ -123,6 +159,10 @@ export function breakDisplay(el, katex) {
     line.className = "math-line";
     katex.render(`\\displaystyle ${breakable(row)}`, line, { displayMode: false, throwOnError: false });
     el.append(line);
+    // a row wider than the box however it breaks: its first relation kept with what it relates
+    if (line.scrollWidth > line.clientWidth + 1) {
+      katex.render(`\\displaystyle ${breakable(row, true)}`, line, { displayMode: false, throwOnError: false });
+    }
   }
   if (el.querySelector(".katex-error")) {
     katex.render(tex, el, { displayMode: true, throwOnError: false });

@@ -96,3 +96,57 @@ def test_these_scenes_need_no_sideways_scrolling_on_a_phone(browser, live_server
         assert [w for w in wide if not w.startswith(allowed)] == [], wide
     finally:
         context.close()
+
+
+MODES_LINES = """() => {
+  const step = [...document.querySelectorAll('li.step')].find((s) => s.textContent.includes('Normal modes about'));
+  const box = [...step.querySelectorAll('.math-display')].find((el) => (el.dataset.tex || '').includes('omega_'));
+  const edge = box.getBoundingClientRect().right;
+  const lines = [];
+  // the lines as they show: KaTeX's pieces (.base) grouped by the height they sit at
+  for (const row of box.querySelectorAll('.math-line')) {
+    const bases = [...row.querySelectorAll('.katex-html > .base, .katex-html > .katex-base')];
+    let line = null;
+    for (const b of bases) {
+      const r = b.getBoundingClientRect();
+      if (!line || r.top >= line.bottom - 2) { line = { text: '', right: 0, bottom: r.bottom }; lines.push(line); }
+      line.text += b.textContent;
+      line.right = Math.max(line.right, r.right);
+      line.bottom = Math.max(line.bottom, r.bottom);
+    }
+  }
+  return { broken: box.dataset.broken === 'true', more: box.dataset.more || '', edge,
+           wide: box.scrollWidth > box.clientWidth + 1, lines: lines.map((l) => ({ text: l.text.replace(/\u200b/g, '').trim(), right: l.right })) };
+}"""
+
+
+def test_the_double_pendulums_normal_modes_read_on_a_phone(browser, live_server, artifacts):
+    """prof-h (issue 40): each matrix and each ω² on its own line, no "K =" left at a line's end, a value on the
+    line of its ≈ ("≈ 5.747 s⁻²"), and what is wider than the screen inside a box that scrolls and says so."""
+    context = browser.new_context(
+        base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True
+    )
+    page = context.new_page()
+    page.set_default_timeout(120_000)
+    try:
+        page.goto("/scenes/double-pendulum")
+        page.wait_for_selector("body[data-katex-errors]", state="attached")
+        found = page.evaluate(MEASURE)
+        assert found["formulas"]
+        modes = page.evaluate(MODES_LINES)
+        lines = modes["lines"]
+        assert modes["broken"] and lines, modes
+        texts = [line["text"] for line in lines]
+        # no line ends in a relation with what it relates on the next line (K =, ω₁² =)
+        assert not any(t.endswith(("=", "≈")) for t in texts), texts
+        # no line begins with a bare value: the frequencies' numbers follow their ≈
+        assert not any(t[:1].isdigit() for t in texts), texts
+        assert sum(t.startswith("≈") for t in texts) == 2, texts
+        # the matrices on lines of their own
+        assert any(t.startswith("M=") or t.startswith("𝓜=") for t in texts) and any(t.startswith("K=") for t in texts), texts
+        # what goes past the screen's edge is in a box that scrolls, with its cue
+        if any(line["right"] > modes["edge"] + 1 for line in lines):
+            assert modes["wide"] and "right" in modes["more"], modes
+        page.screenshot(path=artifacts / "phone-double-pendulum-modes.png", full_page=True)
+    finally:
+        context.close()

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import pytest
 import sympy as sp
 
 from app.engine import modes_exact
+from app.engine.forms import roots_compacted
 
 
 def _triple_pendulum() -> tuple[sp.Matrix, sp.Matrix]:
@@ -100,3 +102,52 @@ def test_an_entry_is_put_in_its_normal_form_once_per_document(monkeypatch) -> No
         assert modes_exact.cheap(entry) == x - y and modes_exact.cheap(entry) == x - y
     assert len(cancelled) == 1
     assert modes_exact.cheap(entry) == x - y and len(cancelled) == 2  # outside a document: every time
+
+
+def _double_pendulum() -> tuple[sp.Matrix, sp.Matrix, dict[sp.Symbol, sp.Symbol]]:
+    """M and K of the double pendulum hanging at rest, in plain symbols, with their positive stand-ins."""
+    m1, m2, l1, l2, g = sp.symbols("m_1 m_2 l_1 l_2 g")
+    M = sp.Matrix([[(m1 + m2) * l1**2, m2 * l1 * l2], [m2 * l1 * l2, m2 * l2**2]])
+    K = sp.diag((m1 + m2) * g * l1, m2 * g * l2)
+    return M, K, {s: sp.Symbol(s.name, positive=True) for s in (m1, m2, l1, l2, g)}
+
+
+def test_the_double_pendulums_frequencies_print_compactly_with_the_same_values() -> None:
+    """ω² = g[(m₁ + m₂)(l₁ + l₂) ∓ √(…)]/(2m₁l₁l₂): one square root (never √(m₁ + m₂) √(…)), the shared
+    m₁ + m₂ taken out of the sum beside it and out of the radicand; equal to the quadratic formula's roots."""
+    import random
+
+    M, K, assume = _double_pendulum()
+    m1, m2, l1, l2, g = sorted(assume, key=lambda s: ["m_1", "m_2", "l_1", "l_2", "g"].index(s.name))
+    roots = modes_exact.eigenvalues(M, K, assume)
+    assert len(roots) == 2
+    for r in roots:
+        assert len([p for p in r.atoms(sp.Pow) if p.exp == sp.S.Half]) == 1, r
+        assert r.has((l1 + l2) * (m1 + m2)), r
+        radicand = next(p.base for p in r.atoms(sp.Pow) if p.exp == sp.S.Half)
+        assert isinstance(radicand, sp.Mul) and m1 + m2 in radicand.args, radicand
+        assert sp.count_ops(r) <= 21, (r, sp.count_ops(r))
+    # the roots of det(K − λM) = aλ² + bλ + c, as the quadratic formula gives them
+    a, c = M.det(), K.det()
+    b = -(K[0, 0] * M[1, 1] + K[1, 1] * M[0, 0] - 2 * K[0, 1] * M[0, 1])
+    old = [(-b - sp.sqrt(b**2 - 4 * a * c)) / (2 * a), (-b + sp.sqrt(b**2 - 4 * a * c)) / (2 * a)]
+    rng = random.Random(40)
+    for _ in range(20):
+        at = {s: rng.uniform(0.1, 5.0) for s in (m1, m2, l1, l2, g)}
+        new = sorted(float(r.xreplace(at)) for r in roots)
+        want = sorted(float(r.xreplace(at)) for r in old)
+        assert new == pytest.approx(want, rel=1e-12)
+
+
+def test_a_product_of_roots_is_one_root_only_where_that_holds() -> None:
+    """√a √b = √(ab) when a ≥ 0 (by the declared signs); √(x − y) √(y − x) stays, neither known ≥ 0 (where
+    both radicands are negative, √a √b = −√(ab))."""
+    x, y = sp.symbols("x y")
+    signs = {x: sp.Symbol("x", positive=True), y: sp.Symbol("y", positive=True)}
+    joined = roots_compacted(sp.sqrt(x + y) * sp.sqrt(x**2 - y), signs)
+    assert joined == sp.sqrt((x + y) * (x**2 - y))
+    apart = sp.sqrt(x - y) * sp.sqrt(y - x)
+    assert roots_compacted(apart, signs) == apart
+    # a shared factor out of the sum beside a root
+    m, l1, l2 = sp.symbols("m l_1 l_2")
+    assert roots_compacted(m * l1 + m * l2 + sp.sqrt(l1), {}) == m * (l1 + l2) + sp.sqrt(l1)
