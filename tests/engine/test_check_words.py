@@ -124,7 +124,8 @@ def test_the_frequency_step_uses_the_documents_letter_where_omega_is_a_parameter
     step = next(e for e in exercise_json(d)["exercises"] if e["step"] == "omega_squared")
     assert step["title"].startswith("Ω² of small oscillations") and step["lhs"] == r"\Omega^2", step
     assert step["answer"]["latex"].startswith(r"\Omega^2 = 2 g \alpha - \omega^{2}"), step["answer"]
-    assert step["answer"]["notes"] and all("Ω²" in n and "ω²" not in n for n in step["answer"]["notes"])
+    # (ω² in "2gα > ω²" is the wire's rate: the frequency is Ω throughout)
+    assert step["answer"]["notes"] and all("Ω² is" in n and "ω² is" not in n for n in step["answer"]["notes"])
     right = judge(problem(d, "omega_squared", None, mistakes=False), "2*g*alpha - omega**2")
     assert right["verdict"] == "correct" and "Ω² of small oscillations" in right["message"], right
     # where ω is free, it stays ω
