@@ -75,7 +75,7 @@ from app.engine.compare import (
 )
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json, sentence
 from app.engine.dimensions import dimension, mismatch, number_beside_units, unit_name
-from app.engine.mistake_answer import AnswerSlip, linearised, missing_square
+from app.engine.mistake_answer import AnswerSlip, linearised, missing_square, small_angle, solved_slip
 from app.engine.mistake_box import piece_box
 from app.engine.mistake_families import FollowUp, Mistake
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, HALF_MOMENTUM_HINT, MISSING_FACTOR_HINT, POINTERS, without_springs
@@ -540,4 +540,18 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
         found = _budgeted(lambda: linearised(a, truth, pb.groups), None, ANSWER_SLIP_WORK)
         if found is not None:
             return found
+    if pb.step in _SMALL_FORMS:
+        # the small-angle form where the exact one is asked (the equation's own is named by linearised, above)
+        what, constant = _SMALL_FORMS[pb.step], pb.relation == "constant"
+        found = _budgeted(lambda: small_angle(a, truth, pb.groups, what, constant), None, ANSWER_SLIP_WORK)
+        if found is not None:
+            return found
+    if pb.step in ("acceleration", "omega_squared"):
+        found = _budgeted(lambda: solved_slip(answer, truth, pb.groups), None, ANSWER_SLIP_WORK)
+        if found is not None:
+            return found
     return POINTERS[pb.step]
+
+
+# the steps whose small-displacement form is named, and what each is called in the hint
+_SMALL_FORMS = {"kinetic": "T", "potential": "U", "lagrangian": "L", "hamiltonian": "h"}
