@@ -63,11 +63,13 @@ from app.engine.check_problem import (
 from app.engine.compare import (
     Groups,
     Values,
+    close,
     differ_by_constant,
     differ_by_factor,
     equal,
     factor_is_constant,
     mistake_only,
+    ratio_groups,
     symbolically_zero,
     usable,
     values,
@@ -242,7 +244,8 @@ def _judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
     # then a whole of the wrong units
     found = _units(pb, answer, None)
     if found is None:
-        found = match(pb.mistakes, a, b, pb.relation, _at_engines_scale(pb, answer, a, truth))
+        found = match(pb.mistakes, a, b, pb.relation, _at_engines_scale(pb, answer, a, truth),
+                      _keeps_a_right_acceleration(pb, answer, truth))  # fmt: skip
     if found is None and pb.relation != "factor" and pb.step != "momentum":
         # (a momentum short of a factor is named by that factor, below)
         found = _units(pb, answer, truth)
@@ -284,9 +287,7 @@ def _judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
         )
     # no known mistake: say which parts agree (against the truth at the answer's scale)
     partial = (
-        _budgeted(lambda: agreement(answer, answer - difference, pb.groups, pb.step), None, PARTS_WORK)
-        if pb.step in PARTED
-        else None
+        _budgeted(lambda: _agreement(pb, answer, truth, difference), None, PARTS_WORK) if pb.step in PARTED else None
     )
     advice = _hint(pb, answer, a, b, truth)
     if isinstance(advice, AnswerSlip):
@@ -295,6 +296,14 @@ def _judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
     if pb.step == "momentum" and differ_by_factor(b, a):
         partial = None  # the answer agrees up to one factor: "no part agrees" would contradict the hint
     return _verdict("incorrect", message, _reveal(shown), advice, partial=partial)
+
+
+def _agreement(pb: Problem, answer: sp.Expr, truth: sp.Expr, difference: sp.Expr) -> dict[str, Any] | None:
+    """Part by part: an equation against the truth at the scale where most parts agree (the acceleration term may
+    be the wrong part); any other step against the truth as its difference was taken."""
+    if pb.relation == "factor":
+        return agreement(answer, truth, pb.groups, pb.step, rescale=True)
+    return agreement(answer, answer - difference, pb.groups, pb.step)
 
 
 def _shown(pb: Problem, printer: Printer, shown: sp.Expr) -> dict[str, Any]:
@@ -351,6 +360,23 @@ def _at_engines_scale(pb: Problem, answer: sp.Expr, a: Values, truth: sp.Expr) -
             for pa, pm, pt in zip(xa, xm, xt, strict=True)
         ])  # fmt: skip
     return out
+
+
+def _by_a_number(a: Values, b: Values) -> bool:
+    """a / b is one number at every sample point (the parameters' values included)."""
+    ratios = [x for group in ratio_groups(a, b) for x in group]
+    return len(ratios) >= MIN_POINTS and all(close(x, ratios[0]) for x in ratios)
+
+
+def _keeps_a_right_acceleration(pb: Problem, answer: sp.Expr, truth: sp.Expr):
+    """For an equation whose acceleration term is the truth's (up to a number): a test refusing every mistake that
+    changes that term (a slip of T, say), since the answer's slip lies elsewhere; else None."""
+    if pb.relation != "factor" or pb.acceleration is None:
+        return None
+    theirs = _known(sp.diff(truth, pb.acceleration), pb.groups)
+    if not _by_a_number(values(sp.diff(answer, pb.acceleration), pb.groups), theirs):
+        return None
+    return lambda m: m.expr is None or _by_a_number(values(sp.diff(m.expr, pb.acceleration), pb.groups), theirs)
 
 
 def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake, str] | None:

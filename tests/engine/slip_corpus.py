@@ -460,6 +460,9 @@ SLIPS = [
     ("free-cart", "position", "x2", "l*sin(theta)", r"cart.*(carr|moves)|X.*left out"),
     ("elastic-pendulum", "position", "x", "r*cos(phi)", SWAP),
     ("cart-pendulum", "position", "z2", "l*cos(phi)", SIGN + r"|up|below"),
+    # ---- diagnoses that blamed a right step (issue 41, student's review: 1)
+    # the coupling force's sign, typed as m ẍ₁ = −k x₁ − κ(x₂ − x₁): the force is named, not a U never typed here
+    ("coupled-oscillators", "equation", "x1", "m*x1_ddot - (-k*x1 - kappa*(x2 - x1))", r"^(?!.*a U with).*sign of the force \(x₁ − x₂\) κ.*is −∂/∂x₁ of it, \(x₂ − x₁\) κ"),
     # ---- a solved acceleration or ω² read against the truth (issue 41, student's review: 2): the part that differs
     ("pulley", "acceleration", "y1", "(m2-m1)*g/(m1+m2)", r"denominator m₁ \+ m₂.*M m₁ \+ M m₂ \+ 4 m₁ m₂"),
     ("movable-incline", "acceleration", "X", "-m*g*sin(alpha)*cos(alpha)/(M+m)", r"denominator M \+ m,.*M \+ m sin²"),
