@@ -77,7 +77,14 @@ from app.engine.compare import (
 )
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json, sentence
 from app.engine.dimensions import dimension, mismatch, number_beside_units, unit_name
-from app.engine.mistake_answer import AnswerSlip, linearised, missing_square, small_angle, solved_slip
+from app.engine.mistake_answer import (
+    AnswerSlip,
+    linearised,
+    missing_square,
+    part_off_by_a_factor,
+    small_angle,
+    solved_slip,
+)
 from app.engine.mistake_box import piece_box
 from app.engine.mistake_families import FollowUp, Mistake
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, HALF_MOMENTUM_HINT, MISSING_FACTOR_HINT, POINTERS, without_springs
@@ -564,6 +571,10 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
             return found
     if pb.step == "equation":
         found = _budgeted(lambda: linearised(a, truth, pb.groups), None, ANSWER_SLIP_WORK)
+        if found is not None:
+            return found
+        # one part wrong by a factor, every other part right (the helix's gravity times 1 + α²R²)
+        found = _budgeted(lambda: part_off_by_a_factor(answer, truth, pb.groups), None, ANSWER_SLIP_WORK)
         if found is not None:
             return found
     if pb.step in _SMALL_FORMS:

@@ -301,7 +301,7 @@ def agreement(
     """
     rates = groups.rates
     try:
-        mine, theirs = _parts(answer, rates), _parts(truth, rates)
+        mine, theirs = rate_parts(answer, rates), rate_parts(truth, rates)
     except (sp.PolynomialError, ValueError, TypeError):
         return None
     if mine is None or theirs is None:
@@ -312,7 +312,7 @@ def agreement(
     zero = sp.Integer(0)
     pairs = [(m, values(mine.get(m, zero), groups), theirs.get(m, zero)) for m in monomials]
     best: tuple[list[str], list[str]] | None = None
-    for scale in _scales(mine, theirs, groups) if rescale else (sp.Integer(1),):
+    for scale in part_scales(mine, theirs, groups) if rescale else (sp.Integer(1),):
         agree: list[str] = []
         differ: list[str] = []
         for monomial, a, coefficient in pairs:
@@ -329,7 +329,7 @@ def agreement(
     }
 
 
-def _scales(mine: dict[sp.Expr, sp.Expr], theirs: dict[sp.Expr, sp.Expr], groups: Groups) -> list[sp.Expr]:
+def part_scales(mine: dict[sp.Expr, sp.Expr], theirs: dict[sp.Expr, sp.Expr], groups: Groups) -> list[sp.Expr]:
     """The scales an equation's truth is tried at: 1, then each shared part's ratio answer / truth (numbers first),
     each free of the rates."""
     ratios = [sp.cancel(mine[m] / theirs[m]) for m in mine if m in theirs and theirs[m] != 0 and mine[m] != 0]
@@ -346,7 +346,7 @@ def listed(groups: list[str]) -> str:
     return ", ".join(groups) if len(groups) < 2 else f"{', '.join(groups[:-1])} and {groups[-1]}"
 
 
-def _parts(expr: sp.Expr, rates: tuple[sp.Symbol, ...]) -> dict[sp.Expr, sp.Expr] | None:
+def rate_parts(expr: sp.Expr, rates: tuple[sp.Symbol, ...]) -> dict[sp.Expr, sp.Expr] | None:
     present = [r for r in rates if expr.has(r)]
     expanded = sp.expand(expr)
     out: dict[sp.Expr, sp.Expr] = {}

@@ -33,8 +33,8 @@ from app.engine.compare import (
     usable,
     values,
 )
-from app.engine.diagnose import MIN_POINTS  # the points a comparison needs: one home with the catalogue's
-from app.engine.mistake_families import spoken
+from app.engine.diagnose import MIN_POINTS, part_scales, rate_parts  # (MIN_POINTS: one home with the catalogue)
+from app.engine.mistake_families import monomial_words, spoken
 from app.engine.textbook import unicode_text
 
 MAX_CANDIDATES = 24  # products and symbols of an answer tried as the one left unsquared
@@ -237,3 +237,36 @@ def small_angle(answer: Values, truth: sp.Expr, groups: Groups, what: str, const
         hint,
         approximation=True,
     )
+
+
+# ---- one part of an equation off by a factor -------------------------------------------------------
+
+
+def part_off_by_a_factor(answer: sp.Expr, truth: sp.Expr, groups: Groups) -> AnswerSlip | None:
+    """The slip naming the one part of an equation (the terms of one product of rates) that differs from the
+    truth's by a factor, every other part agreeing at some scale; or None."""
+    try:
+        mine, theirs = rate_parts(answer, groups.rates), rate_parts(truth, groups.rates)
+    except (sp.PolynomialError, ValueError, TypeError):
+        return None
+    if mine is None or theirs is None or set(mine) != set(theirs) or len(mine) < 2:
+        return None
+    for scale in part_scales(mine, theirs, groups):
+        wrong = [m for m in mine if not _same(values(mine[m], groups), values(scale * theirs[m], groups))]
+        if len(wrong) != 1:
+            continue
+        part = wrong[0]
+        # the part's own factor: its coefficient over the truth's at this scale, free of the rates
+        factor = sp.factor(sp.cancel(mine[part] / (scale * theirs[part])))
+        if factor.free_symbols & set(groups.rates) or not factor.free_symbols:
+            return None
+        words = monomial_words(part)
+        right = spoken(sp.factor(scale * theirs[part]))
+        return AnswerSlip(
+            "equation.part_factor",
+            f"{words} multiplied by an extra factor {spoken(factor)}",
+            f"every other part of your equation agrees with the correct one; {words} should be {right}",
+            f"Your equation has {words} multiplied by an extra factor {spoken(factor)}: every other part agrees with "
+            f"the correct one, and {words} should be {right}.",
+        )
+    return None

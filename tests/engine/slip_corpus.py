@@ -461,6 +461,8 @@ SLIPS = [
     ("elastic-pendulum", "position", "x", "r*cos(phi)", SWAP),
     ("cart-pendulum", "position", "z2", "l*cos(phi)", SIGN + r"|up|below"),
     # ---- diagnoses that blamed a right step (issue 41, student's review: 1)
+    # the helix's z̈ term right, gravity times 1 + α²R²: the part that is wrong, never a T without the x–y motion
+    ("helix-bead", "equation", "z", "m*(1+alpha**2*R**2)*z_ddot + m*g*(1+alpha**2*R**2)", r"^(?!.*a T that).*terms without a velocity multiplied by an extra factor 1 \+ R² α²"),
     # the coupling force's sign, typed as m ẍ₁ = −k x₁ − κ(x₂ − x₁): the force is named, not a U never typed here
     ("coupled-oscillators", "equation", "x1", "m*x1_ddot - (-k*x1 - kappa*(x2 - x1))", r"^(?!.*a U with).*sign of the force \(x₁ − x₂\) κ.*is −∂/∂x₁ of it, \(x₂ − x₁\) κ"),
     # ---- a solved acceleration or ω² read against the truth (issue 41, student's review: 2): the part that differs

@@ -167,10 +167,11 @@ def test_the_diagnosis_does_not_depend_on_the_order_answers_arrive():
 def test_a_slip_of_t_is_not_blamed_when_the_acceleration_term_is_right():
     # the helix's z̈ term holds α²R² already: the extra 1 + α²R² is on gravity, not a T without the x–y motion
     result = judge(step_problem("helix-bead", "equation", "z"), "m*(1+alpha**2*R**2)*z_ddot + m*g*(1+alpha**2*R**2)")
-    assert "a T that" not in result["hint"] and (result["mistake"] or {}).get("family") != "travelled", result
-    agree = [unicodedata.normalize("NFC", w) for w in result["partial"]["agree"]]
-    assert agree == [unicodedata.normalize("NFC", "the z̈ terms")], result["partial"]
-    assert result["partial"]["differ"] == ["the terms without a velocity"], result["partial"]
+    assert "a T that" not in result["hint"] and result["mistake"]["family"] != "travelled", result
+    # named as what it is: the terms without a velocity (gravity) carry the factor, the z̈ term is right
+    assert result["mistake"]["key"] == "equation.part_factor", result["mistake"]
+    assert "terms without a velocity multiplied by an extra factor 1 + R² α²" in result["hint"], result["hint"]
+    assert result["hint"].endswith("the terms without a velocity should be m g."), result["hint"]
 
 
 def test_part_by_part_measures_the_parts_by_the_right_ones_not_by_a_wrong_acceleration_term():
