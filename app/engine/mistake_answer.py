@@ -1,7 +1,7 @@
 """Slips read from the answer itself, when no mistake of the step's catalogue matches.
 
 The catalogue (app/engine/mistakes.py, mistake_pieces.py) builds each wrong answer from the derivation
-and compares; two common slips cannot be built that way, because what goes wrong depends on what the
+and compares; some common slips cannot be built that way, because what goes wrong depends on what the
 student wrote:
 
 * **a square left out**: a velocity component a·q̇ enters v² as a²q̇², and students write a instead of
@@ -11,9 +11,14 @@ student wrote:
 * **an equation linearised**: the small-angle equation (sin θ ≈ θ, cos ≈ 1, products of small
   quantities dropped) where the full one is asked for.  The engine's equation is expanded to first
   order about the state where every coordinate, velocity and acceleration is zero (when that state
-  is an equilibrium); an answer equal to it, or to a constant multiple of it, is named.
+  is an equilibrium); an answer equal to it, or to a constant multiple of it, is named;
+* **T, U, L or h for small displacements**: the same expanded to second order (cos θ ≈ 1 − θ²/2);
+* **one part of an equation off by a factor**, every other part right at some scale;
+* **a solved acceleration or ω²** read against the truth: the sign of the whole, a factor upside down,
+  one term's factor 2, another coordinate's term left out, then numerator and denominator (the
+  effective mass) each on its own.
 
-Both compare values at the checker's sample points (app/engine/compare.py), within a count of work.
+All compare values at the checker's sample points (app/engine/compare.py), within a count of work.
 """
 
 from __future__ import annotations
