@@ -171,7 +171,7 @@ def test_a_slip_of_t_is_not_blamed_when_the_acceleration_term_is_right():
     # named as what it is: the terms without a velocity (gravity) carry the factor, the z̈ term is right
     assert result["mistake"]["key"] == "equation.part_factor", result["mistake"]
     assert "terms without a velocity multiplied by an extra factor 1 + R² α²" in result["hint"], result["hint"]
-    assert result["hint"].endswith("the terms without a velocity should be m g."), result["hint"]
+    assert result["hint"].endswith("only the terms without a velocity differ."), result["hint"]
 
 
 def test_part_by_part_measures_the_parts_by_the_right_ones_not_by_a_wrong_acceleration_term():
