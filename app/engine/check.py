@@ -63,11 +63,13 @@ from app.engine.check_problem import (
 from app.engine.compare import (
     Groups,
     Values,
+    close,
     differ_by_constant,
     differ_by_factor,
     equal,
     factor_is_constant,
     mistake_only,
+    ratio_groups,
     symbolically_zero,
     usable,
     values,
@@ -75,7 +77,14 @@ from app.engine.compare import (
 )
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json, sentence
 from app.engine.dimensions import dimension, mismatch, number_beside_units, unit_name
-from app.engine.mistake_answer import AnswerSlip, linearised, missing_square
+from app.engine.mistake_answer import (
+    AnswerSlip,
+    linearised,
+    missing_square,
+    part_off_by_a_factor,
+    small_angle,
+    solved_slip,
+)
 from app.engine.mistake_box import piece_box
 from app.engine.mistake_families import FollowUp, Mistake
 from app.engine.mistakes import CONSTANT_FACTOR_HINT, HALF_MOMENTUM_HINT, MISSING_FACTOR_HINT, POINTERS, without_springs
@@ -256,7 +265,8 @@ def _judge(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
     # then a whole of the wrong units
     found = _units(pb, answer, None)
     if found is None:
-        found = match(pb.mistakes, a, b, pb.relation, _at_engines_scale(pb, answer, a, truth))
+        found = match(pb.mistakes, a, b, pb.relation, _at_engines_scale(pb, answer, a, truth),
+                      _keeps_a_right_acceleration(pb, answer, truth))  # fmt: skip
     if found is None and pb.relation != "factor" and pb.step != "momentum":
         # (a momentum short of a factor is named by that factor, below)
         found = _units(pb, answer, truth)
@@ -298,9 +308,7 @@ def _judge(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
         )
     # no known mistake: say which parts agree (against the truth at the answer's scale)
     partial = (
-        _budgeted(lambda: agreement(answer, answer - difference, pb.groups, pb.step), None, PARTS_WORK)
-        if pb.step in PARTED
-        else None
+        _budgeted(lambda: _agreement(pb, answer, truth, difference), None, PARTS_WORK) if pb.step in PARTED else None
     )
     advice = _hint(pb, answer, a, b, truth)
     if isinstance(advice, AnswerSlip):
@@ -309,6 +317,14 @@ def _judge(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
     if pb.step == "momentum" and differ_by_factor(b, a):
         partial = None  # the answer agrees up to one factor: "no part agrees" would contradict the hint
     return _verdict("incorrect", message, _reveal(shown), advice, partial=partial)
+
+
+def _agreement(pb: Problem, answer: sp.Expr, truth: sp.Expr, difference: sp.Expr) -> dict[str, Any] | None:
+    """Part by part: an equation against the truth at the scale where most parts agree (the acceleration term may
+    be the wrong part); any other step against the truth as its difference was taken."""
+    if pb.relation == "factor":
+        return agreement(answer, truth, pb.groups, pb.step, rescale=True)
+    return agreement(answer, answer - difference, pb.groups, pb.step)
 
 
 def _shown(pb: Problem, printer: Printer, shown: sp.Expr) -> dict[str, Any]:
@@ -365,6 +381,23 @@ def _at_engines_scale(pb: Problem, answer: sp.Expr, a: Values, truth: sp.Expr) -
             for pa, pm, pt in zip(xa, xm, xt, strict=True)
         ])  # fmt: skip
     return out
+
+
+def _by_a_number(a: Values, b: Values) -> bool:
+    """a / b is one number at every sample point (the parameters' values included)."""
+    ratios = [x for group in ratio_groups(a, b) for x in group]
+    return len(ratios) >= MIN_POINTS and all(close(x, ratios[0]) for x in ratios)
+
+
+def _keeps_a_right_acceleration(pb: Problem, answer: sp.Expr, truth: sp.Expr):
+    """For an equation whose acceleration term is the truth's (up to a number): a test refusing every mistake that
+    changes that term (a slip of T, say), since the answer's slip lies elsewhere; else None."""
+    if pb.relation != "factor" or pb.acceleration is None:
+        return None
+    theirs = _known(sp.diff(truth, pb.acceleration), pb.groups)
+    if not _by_a_number(values(sp.diff(answer, pb.acceleration), pb.groups), theirs):
+        return None
+    return lambda m: m.expr is None or _by_a_number(values(sp.diff(m.expr, pb.acceleration), pb.groups), theirs)
 
 
 def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake, str] | None:
@@ -585,4 +618,22 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
         found = _budgeted(lambda: linearised(a, truth, pb.groups), None, ANSWER_SLIP_WORK)
         if found is not None:
             return found
+        # one part wrong by a factor, every other part right (the helix's gravity times 1 + α²R²)
+        found = _budgeted(lambda: part_off_by_a_factor(answer, truth, pb.groups), None, ANSWER_SLIP_WORK)
+        if found is not None:
+            return found
+    if pb.step in _SMALL_FORMS:
+        # the small-angle form where the exact one is asked (the equation's own is named by linearised, above)
+        what, constant = _SMALL_FORMS[pb.step], pb.relation == "constant"
+        found = _budgeted(lambda: small_angle(a, truth, pb.groups, what, constant), None, ANSWER_SLIP_WORK)
+        if found is not None:
+            return found
+    if pb.step in ("acceleration", "omega_squared"):
+        found = _budgeted(lambda: solved_slip(answer, truth, pb.groups), None, ANSWER_SLIP_WORK)
+        if found is not None:
+            return found
     return POINTERS[pb.step]
+
+
+# the steps whose small-displacement form is named, and what each is called in the hint
+_SMALL_FORMS = {"kinetic": "T", "potential": "U", "lagrangian": "L", "hamiltonian": "h"}

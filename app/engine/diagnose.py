@@ -19,6 +19,7 @@ says which parts agree.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import replace
 from typing import Any
 
@@ -232,16 +233,17 @@ def match(
     b: Values,
     relation: str,
     scaled: Values | None = None,
+    keep: Callable[[Mistake], bool] | None = None,
 ) -> tuple[Mistake, str] | None:
     """The mistake the answer's values match: first one it equals as written, then (an equation) one it equals
     at the engine's coefficient of the acceleration (``scaled``), then the first up to the step's accepted
-    constant or factor."""
+    constant or factor; a mistake ``keep`` refuses is never given."""
     tried = [(m, h, v) for m, h, v in catalogue_ if usable(a, v) >= MIN_POINTS and not equal(v, b)]
     negated = _negated(a) if relation == "factor" else None
     for test in (lambda v: equal(a, v), lambda v: negated is not None and equal(negated, v),
                  lambda v: scaled is not None and equal(scaled, v), lambda v: _same(a, v, relation)):  # fmt: skip
         for mistake, hint, v in tried:
-            if test(v):
+            if test(v) and (keep is None or keep(mistake)):
                 return mistake, hint
     return None
 
@@ -286,16 +288,20 @@ def follow_up_json(m: Mistake, names: list[str]) -> dict[str, Any] | None:
 # ---- part by part ------------------------------------------------------------------------------
 
 
-def agreement(answer: sp.Expr, truth: sp.Expr, groups: Groups, step: str) -> dict[str, Any] | None:
+def agreement(
+    answer: sp.Expr, truth: sp.Expr, groups: Groups, step: str, rescale: bool = False
+) -> dict[str, Any] | None:
     """Which parts of the answer agree with the truth: the terms of each product of rates, and the rest.
 
     Both are split by their products of velocities and accelerations (θ̇², θ̇ φ̇, θ̈, none); each
     part's coefficient is compared at the sample points.  None when the answer is not a polynomial in
-    the rates or has a single part.
+    the rates or has a single part.  With ``rescale`` (an equation, right up to a factor) the truth is
+    taken at the scale where the most parts agree: unscaled first, then each part's own ratio (a number
+    before an expression), so that a wrong part is never the yardstick the right ones are measured by.
     """
     rates = groups.rates
     try:
-        mine, theirs = _parts(answer, rates), _parts(truth, rates)
+        mine, theirs = rate_parts(answer, rates), rate_parts(truth, rates)
     except (sp.PolynomialError, ValueError, TypeError):
         return None
     if mine is None or theirs is None:
@@ -303,13 +309,17 @@ def agreement(answer: sp.Expr, truth: sp.Expr, groups: Groups, step: str) -> dic
     monomials = sorted(set(mine) | set(theirs), key=sp.default_sort_key)
     if len(monomials) < 2:
         return None
-    agree: list[str] = []
-    differ: list[str] = []
     zero = sp.Integer(0)
-    for monomial in monomials:
-        a = values(mine.get(monomial, zero), groups)
-        b = values(theirs.get(monomial, zero), groups)
-        (agree if equal(a, b) else differ).append(monomial_words(monomial))
+    pairs = [(m, values(mine.get(m, zero), groups), theirs.get(m, zero)) for m in monomials]
+    best: tuple[list[str], list[str]] | None = None
+    for scale in part_scales(mine, theirs, groups) if rescale else (sp.Integer(1),):
+        agree: list[str] = []
+        differ: list[str] = []
+        for monomial, a, coefficient in pairs:
+            (agree if equal(a, values(scale * coefficient, groups)) else differ).append(monomial_words(monomial))
+        if best is None or len(agree) > len(best[0]):
+            best = agree, differ
+    agree, differ = best  # type: ignore[misc]
     if not agree:
         return {"message": "No part of your answer agrees with the correct one yet.", "agree": [], "differ": differ}
     return {
@@ -319,12 +329,24 @@ def agreement(answer: sp.Expr, truth: sp.Expr, groups: Groups, step: str) -> dic
     }
 
 
+def part_scales(mine: dict[sp.Expr, sp.Expr], theirs: dict[sp.Expr, sp.Expr], groups: Groups) -> list[sp.Expr]:
+    """The scales an equation's truth is tried at: 1, then each shared part's ratio answer / truth (numbers first),
+    each free of the rates."""
+    ratios = [sp.cancel(mine[m] / theirs[m]) for m in mine if m in theirs and theirs[m] != 0 and mine[m] != 0]
+    kept = [r for r in ratios if r != 0 and not (r.free_symbols & set(groups.rates))]
+    out = [sp.Integer(1)]
+    for r in sorted(kept, key=lambda r: bool(r.free_symbols)):  # (a stable sort: numbers first, else in order)
+        if r not in out:
+            out.append(r)
+    return out
+
+
 def listed(groups: list[str]) -> str:
     """Groups of terms as a reader lists them: "a", "a and b", "a, b and c"."""
     return ", ".join(groups) if len(groups) < 2 else f"{', '.join(groups[:-1])} and {groups[-1]}"
 
 
-def _parts(expr: sp.Expr, rates: tuple[sp.Symbol, ...]) -> dict[sp.Expr, sp.Expr] | None:
+def rate_parts(expr: sp.Expr, rates: tuple[sp.Symbol, ...]) -> dict[sp.Expr, sp.Expr] | None:
     present = [r for r in rates if expr.has(r)]
     expanded = sp.expand(expr)
     out: dict[sp.Expr, sp.Expr] = {}

@@ -1,7 +1,7 @@
 """Slips read from the answer itself, when no mistake of the step's catalogue matches.
 
 The catalogue (app/engine/mistakes.py, mistake_pieces.py) builds each wrong answer from the derivation
-and compares; two common slips cannot be built that way, because what goes wrong depends on what the
+and compares; some common slips cannot be built that way, because what goes wrong depends on what the
 student wrote:
 
 * **a square left out**: a velocity component a·q̇ enters v² as a²q̇², and students write a instead of
@@ -11,9 +11,14 @@ student wrote:
 * **an equation linearised**: the small-angle equation (sin θ ≈ θ, cos ≈ 1, products of small
   quantities dropped) where the full one is asked for.  The engine's equation is expanded to first
   order about the state where every coordinate, velocity and acceleration is zero (when that state
-  is an equilibrium); an answer equal to it, or to a constant multiple of it, is named.
+  is an equilibrium); an answer equal to it, or to a constant multiple of it, is named;
+* **T, U, L or h for small displacements**: the same expanded to second order (cos θ ≈ 1 − θ²/2);
+* **one part of an equation off by a factor**, every other part right at some scale;
+* **a solved acceleration or ω²** read against the truth: the sign of the whole, a factor upside down,
+  one term's factor 2, another coordinate's term left out, then numerator and denominator (the
+  effective mass) each on its own.
 
-Both compare values at the checker's sample points (app/engine/compare.py), within a count of work.
+All compare values at the checker's sample points (app/engine/compare.py), within a count of work.
 """
 
 from __future__ import annotations
@@ -23,8 +28,18 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine.compare import Groups, Values, differ_by_factor, equal, factor_is_constant, usable, values
-from app.engine.diagnose import MIN_POINTS  # the points a comparison needs: one home with the catalogue's
+from app.engine.compare import (
+    Groups,
+    Values,
+    differ_by_constant,
+    differ_by_factor,
+    equal,
+    factor_is_constant,
+    usable,
+    values,
+)
+from app.engine.diagnose import MIN_POINTS, part_scales, rate_parts  # (MIN_POINTS: one home with the catalogue)
+from app.engine.mistake_families import monomial_words, spoken
 from app.engine.textbook import unicode_text
 
 MAX_CANDIDATES = 24  # products and symbols of an answer tried as the one left unsquared
@@ -106,5 +121,154 @@ def linearised(answer: Values, truth: sp.Expr, groups: Groups) -> AnswerSlip | N
             "d/dt(∂L/∂q̇) − ∂L/∂q gives them",
             LINEAR_HINT,
             approximation=True,
+        )
+    return None
+
+
+# ---- a solved acceleration or ω² -----------------------------------------------------------------
+
+
+def _slip(key: str, name: str, where: str) -> AnswerSlip:
+    return AnswerSlip(f"solved.{key}", name, where, f"Your answer has {name}: {where}.")
+
+
+def _constant(expr: sp.Expr) -> bool:
+    return not expr.free_symbols and expr != 0
+
+
+def solved_slip(answer: sp.Expr, truth: sp.Expr, groups: Groups) -> AnswerSlip | None:
+    """The slip in a solved acceleration or ω², read by comparing the answer with the truth: the sign of the
+    whole, a factor upside down, a term of the truth halved or doubled, another coordinate's term left out,
+    then the numerator and the denominator (the effective mass) compared each on its own; or None."""
+    mine = values(answer, groups)
+
+    def same(expr: sp.Expr) -> bool:
+        return _same(mine, values(expr, groups))
+
+    # answer = −truth: every term's sign reversed together
+    if same(-truth):
+        return _slip(
+            "sign",
+            "the sign of the whole reversed",
+            "every term of yours has the opposite sign: a sign lost on one side of the equation turns every term over",
+        )
+    numerator, denominator = sp.fraction(sp.cancel(sp.together(truth)))
+    # a factor f of the truth multiplied where it divides (answer = truth · f²), or divided where it multiplies
+    for f, power in (*sp.factor_list(denominator)[1], *((f, -p) for f, p in sp.factor_list(numerator)[1])):
+        if f.free_symbols and same(truth * f ** (2 * power)):
+            upside = "multiplies" if power > 0 else "divides"
+            return _slip(
+                "upside_down",
+                f"the factor {spoken(f)} upside down",
+                f"in the correct answer it divides, where yours {upside}"
+                if power > 0
+                else f"in the correct answer it multiplies, where yours {upside}",
+            )
+    # one term of the truth written at half or twice its size: a factor 2 lost or gained
+    terms = sp.Add.make_args(sp.expand(numerator))
+    for term in terms if len(terms) > 1 and _constant(denominator) else ():
+        term = term / denominator
+        for scale, words in ((sp.Rational(1, 2), "lost"), (2, "too many")):
+            if same(truth + (scale - 1) * term):
+                return _slip(
+                    "factor_two",
+                    f"a factor 2 {words} in the term {spoken(term)}",
+                    f"you wrote {spoken(scale * term)}; the rest of your answer agrees with the correct one",
+                )
+    # a coordinate the truth depends on, missing from the answer: its term left out
+    for q in groups.positions:
+        if q in truth.free_symbols and q not in answer.free_symbols:
+            return _slip(
+                "other_coordinate_left_out",
+                f"the term of {spoken(q)} left out",
+                f"the correct answer depends on {spoken(q)} too: the coordinates are coupled, so each acceleration "
+                "feels the other coordinate",
+            )
+    # the numerator and the denominator compared each on its own (the answer's scale may be any constant)
+    if not denominator.free_symbols:
+        return None
+    top, bottom = sp.fraction(sp.cancel(sp.together(answer)))
+    scale = sp.cancel(top / numerator)
+    right = scale * denominator if _constant(scale) else None
+    if right is None and _constant(sp.cancel(bottom / denominator)):
+        wrong = sp.cancel(bottom / denominator) * numerator
+        return _slip(
+            "numerator",
+            f"the numerator {spoken(top)}, where the correct one is {spoken(sp.expand(wrong))}",
+            "the denominator is right",
+        )
+    said = spoken(sp.expand(right)) if right is not None else f"{spoken(denominator)} (up to a constant factor)"
+    numerators = "" if right is not None else f", and the numerator {spoken(top)} differs too"
+    return _slip(
+        "denominator",
+        f"the denominator {spoken(bottom)}, where the correct one is {said}{numerators}",
+        "once the equations are solved together, the denominator is the effective mass the forces move: it "
+        "holds every body the motion carries and every coupling of the accelerations",
+    )
+
+
+# ---- a small-angle T, U, L or h --------------------------------------------------------------------
+
+SMALL_HINT = (
+    "This is {what} for small displacements about q = 0 (cos θ ≈ 1 − θ²/2, sin θ ≈ θ, kept to second order): "
+    "an approximation. The step asks for the exact {what}: keep the sines and cosines as the positions give them."
+)
+
+
+def small_angle(answer: Values, truth: sp.Expr, groups: Groups, what: str, constant: bool) -> AnswerSlip | None:
+    """The slip naming T, U, L or h written to second order in the small displacements (every coordinate and
+    velocity small), where the exact form is asked; or None (the truth has no other form, or not it)."""
+    moving = (*groups.positions, *groups.rates)
+    if not any(truth.has(q) for q in moving):
+        return None
+    # each coordinate and velocity scaled by ε: the form to second order is the Taylor polynomial in ε at ε = 1
+    eps = sp.Dummy("epsilon")
+    scaled = truth.xreplace({v: eps * v for v in moving})
+    second = sum((sp.diff(scaled, eps, n).xreplace({eps: 0}) / sp.factorial(n) for n in range(3)), sp.S.Zero)
+    if sp.expand(second - truth) == 0:
+        return None  # already quadratic: the small-displacement form is the exact one
+    mine = values(second, groups)
+    if usable(answer, mine) < MIN_POINTS:
+        return None
+    if not (equal(answer, mine) or (constant and differ_by_constant(answer, mine))):
+        return None
+    hint = SMALL_HINT.format(what=what)
+    return AnswerSlip(
+        "small_displacements",
+        f"{what} for small displacements (cos θ ≈ 1 − θ²/2, sin θ ≈ θ)",
+        f"the step asks for the exact {what}: keep the sines and cosines as the positions give them",
+        hint,
+        approximation=True,
+    )
+
+
+# ---- one part of an equation off by a factor -------------------------------------------------------
+
+
+def part_off_by_a_factor(answer: sp.Expr, truth: sp.Expr, groups: Groups) -> AnswerSlip | None:
+    """The slip naming the one part of an equation (the terms of one product of rates) that differs from the
+    truth's by a factor, every other part agreeing at some scale; or None."""
+    try:
+        mine, theirs = rate_parts(answer, groups.rates), rate_parts(truth, groups.rates)
+    except (sp.PolynomialError, ValueError, TypeError):
+        return None
+    if mine is None or theirs is None or set(mine) != set(theirs) or len(mine) < 2:
+        return None
+    for scale in part_scales(mine, theirs, groups):
+        wrong = [m for m in mine if not _same(values(mine[m], groups), values(scale * theirs[m], groups))]
+        if len(wrong) != 1:
+            continue
+        part = wrong[0]
+        # the part's own factor: its coefficient over the truth's at this scale, free of the rates
+        factor = sp.factor(sp.cancel(mine[part] / (scale * theirs[part])))
+        if factor.free_symbols & set(groups.rates) or not factor.free_symbols:
+            return None
+        words = monomial_words(part)
+        return AnswerSlip(
+            "equation.part_factor",
+            f"{words} multiplied by an extra factor {spoken(factor)}",
+            f"every other part of your equation agrees with the correct one; only {words} differ",
+            f"Your equation has {words} multiplied by an extra factor {spoken(factor)}: every other part agrees with "
+            f"the correct one, and only {words} differ.",
         )
     return None

@@ -578,6 +578,8 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
         changes.append((f"from_kinetic.{m.key}", f"a T {_slip_words(m)}", m.expr - T, sp.Integer(0)))
     if U is not None:
         for m in list(potential_mistakes(d))[:MAX_TRAVEL]:
+            if step == "equation" and k is not None and m.family == "term_sign" and m.piece is not None:
+                yield from _force_sign(d, k, truth, m.piece)
             changes.append((f"from_potential.{m.key}", f"a U {_slip_words(m)}", sp.Integer(0), m.expr - U))
     for key, name, dT, dU in changes[: 2 * MAX_TRAVEL]:
         if step == "equation" and k is not None:
@@ -602,6 +604,22 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
                 family = "rigid" if key.startswith("rigid") else "travelled"
                 yield Mistake(f"omega_squared.{key}", family, name, None,
                               "your ω² follows from it: ω² is the effective potential's second derivative over the effective mass, at the equilibrium", w)  # fmt: skip
+
+
+def _force_sign(d: Derivation, k: int, truth: sp.Expr, u: sp.Expr) -> Iterator[Mistake]:
+    """A force from one term u of U written with its sign reversed in the equation: named as that force, since no
+    U is typed in this step (the same equation as a U with u's sign reversed)."""
+    q = d.table.q[k]
+    # the generalized force of u along q is −∂u/∂q; the equation d/dt(∂L/∂q̇) − ∂L/∂q holds +∂u/∂q
+    force = -sp.diff(u, q)
+    if force == 0:
+        return
+    shown, term = spoken(short_form(force)), spoken(sp.factor(u))
+    yield Mistake(
+        f"equation.force_sign.{slug(sp.sstr(u))[:48]}", "force_sign", f"the sign of your force {spoken(-force)}",
+        force, f"the force along {spoken(q)} from the term {term} of U is −∂/∂{spoken(q)} of it, {shown}",
+        truth - 2 * sp.diff(u, q),
+    )  # fmt: skip
 
 
 def _slip_words(m: Mistake) -> str:

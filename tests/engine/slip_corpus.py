@@ -460,6 +460,22 @@ SLIPS = [
     ("free-cart", "position", "x2", "l*sin(theta)", r"cart.*(carr|moves)|X.*left out"),
     ("elastic-pendulum", "position", "x", "r*cos(phi)", SWAP),
     ("cart-pendulum", "position", "z2", "l*cos(phi)", SIGN + r"|up|below"),
+    # ---- diagnoses that blamed a right step (issue 41, student's review: 1)
+    # the helix's z̈ term right, gravity times 1 + α²R²: the part that is wrong, never a T without the x–y motion
+    ("helix-bead", "equation", "z", "m*(1+alpha**2*R**2)*z_ddot + m*g*(1+alpha**2*R**2)", r"^(?!.*a T that).*terms without a velocity multiplied by an extra factor 1 \+ R² α²"),
+    # the coupling force's sign, typed as m ẍ₁ = −k x₁ − κ(x₂ − x₁): the force is named, not a U never typed here
+    ("coupled-oscillators", "equation", "x1", "m*x1_ddot - (-k*x1 - kappa*(x2 - x1))", r"^(?!.*a U with).*sign of the force \(x₁ − x₂\) κ.*is −∂/∂x₁ of it, \(x₂ − x₁\) κ"),
+    # ---- a solved acceleration or ω² read against the truth (issue 41, student's review: 2): the part that differs
+    ("pulley", "acceleration", "y1", "(m2-m1)*g/(m1+m2)", r"denominator m₁ \+ m₂.*M m₁ \+ M m₂ \+ 4 m₁ m₂"),
+    ("movable-incline", "acceleration", "X", "-m*g*sin(alpha)*cos(alpha)/(M+m)", r"denominator M \+ m,.*M \+ m sin²"),
+    ("helix-bead", "acceleration", "z", "-g*(1+alpha**2*R**2)", r"1 \+ R² α² upside down"),
+    ("coupled-oscillators", "acceleration", "x1", "-(k+2*kappa)/m*x1", r"term of x₂ left out"),
+    ("rotating-parabola", "omega_squared", None, "g*alpha - omega**2", r"factor 2 lost in the term 2 g α"),
+    ("rotating-parabola", "omega_squared", None, "omega**2 - 2*g*alpha", r"sign of the whole reversed"),
+    # ---- the small-angle form where the exact U, L or h is asked (issue 41, 3)
+    ("simple-pendulum", "potential", None, "m*g*R*theta**2/2", SMALL),
+    ("simple-pendulum", "lagrangian", None, "m*R**2*theta_dot**2/2 - m*g*R*theta**2/2", SMALL),
+    ("simple-pendulum", "hamiltonian", None, "m*R**2*theta_dot**2/2 + m*g*R*theta**2/2", SMALL),
 ]
 
 # Correct answers in unusual forms: every one must be accepted ("correct", or "equivalent" where the

@@ -36,6 +36,11 @@ GIVEAWAYS = [
     ("double-pendulum", "potential", None, "-m1*g*l1*cos(theta1) - m2*g*l2*cos(theta2)", ["m₂ g l₁ cos"]),
     ("movable-incline", "momentum", "X", "(M + m)*X_dot", ["m Ḋ cos", "leaves out: "]),
     ("movable-incline", "acceleration", "X", "0", ["sin(α) cos(α)", "Everything else"]),
+    # a solved acceleration or ω² read against the truth: the part named, never the correct whole (issue 41, 2)
+    ("movable-incline", "acceleration", "X", "-m*g*sin(alpha)*cos(alpha)/(M+m)", ["/(M + m sin²(α))"]),
+    ("rotating-parabola", "omega_squared", None, "omega**2 - 2*g*alpha", ["2 g α − ω²"]),
+    ("coupled-oscillators", "acceleration", "x1", "-(k+2*kappa)/m*x1", ["x₂ κ/m", "x₂ κ −"]),
+    ("helix-bead", "equation", "z", "m*(1+alpha**2*R**2)*z_ddot + m*g*(1+alpha**2*R**2)", ["should be m g"]),
     ("elastic-pendulum", "equation", "phi", "m*r**2*phi_ddot + m*g*r*sin(phi)", ["2 m r φ̇ ṙ", "leaves out: "]),
     ("elastic-pendulum", "potential", None, "-m*g*r*cos(phi) + k*(r - l)**2", ["pulley", "l²/2", "(r − l)²/2"]),
 ]  # fmt: skip

@@ -162,3 +162,21 @@ def test_the_diagnosis_does_not_depend_on_the_order_answers_arrive():
     first = [judge(step_problem(*s[:3]), s[3]) for s in slips]
     again = [judge(step_problem(*s[:3]), s[3]) for s in reversed(slips)][::-1]
     assert [(r["hint"], r["mistake"]) for r in first] == [(r["hint"], r["mistake"]) for r in again]
+
+
+def test_a_slip_of_t_is_not_blamed_when_the_acceleration_term_is_right():
+    # the helix's z̈ term holds α²R² already: the extra 1 + α²R² is on gravity, not a T without the x–y motion
+    result = judge(step_problem("helix-bead", "equation", "z"), "m*(1+alpha**2*R**2)*z_ddot + m*g*(1+alpha**2*R**2)")
+    assert "a T that" not in result["hint"] and result["mistake"]["family"] != "travelled", result
+    # named as what it is: the terms without a velocity (gravity) carry the factor, the z̈ term is right
+    assert result["mistake"]["key"] == "equation.part_factor", result["mistake"]
+    assert "terms without a velocity multiplied by an extra factor 1 + R² α²" in result["hint"], result["hint"]
+    assert result["hint"].endswith("only the terms without a velocity differ."), result["hint"]
+
+
+def test_part_by_part_measures_the_parts_by_the_right_ones_not_by_a_wrong_acceleration_term():
+    # M where M/4 belongs: the gravity terms are the engine's as written, the ÿ coefficients are the wrong part
+    result = judge(step_problem("pulley", "equation", "y1"), "(m1 + M)*y1_ddot + M*y2_ddot + m1*g - M*g/2")
+    assert result["partial"]["agree"] == ["the terms without a velocity"], result["partial"]
+    differ = sorted(unicodedata.normalize("NFC", w) for w in result["partial"]["differ"])
+    assert differ == [unicodedata.normalize("NFC", w) for w in ("the ÿ₁ terms", "the ÿ₂ terms")], differ
