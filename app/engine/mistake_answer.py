@@ -83,14 +83,19 @@ def missing_square(answer: sp.Expr, truth: Values, groups: Groups) -> AnswerSlip
     for part in sp.preorder_traversal(answer):
         if len(seen) >= MAX_CANDIDATES:
             break
-        if not (part.is_Symbol or part.is_Mul) or part in seen or part.free_symbols & rates:
+        # a name, a product, or a function of the coordinates (sin θ where T needs sin²θ: student-h 158)
+        if not (part.is_Symbol or part.is_Mul or isinstance(part, sp.Function)) or part in seen or part.free_symbols & rates:
             continue
         if not part.free_symbols or part.could_extract_minus_sign():
             continue
         seen.add(part)
         squared = answer.xreplace({part: part**2})
         if squared != answer and _same(values(squared, groups), truth):
-            rate = next((r for r in groups.rates if r in answer.free_symbols), None)
+            # the rate the part multiplies (φ̇ beside sin θ in the spherical pendulum's T), else any of the answer's
+            beside = [t for t in sp.Add.make_args(sp.expand(answer)) if t.has(part)]
+            rate = next((r for t in beside for r in groups.rates if t.has(r)), None) or next(
+                (r for r in groups.rates if r in answer.free_symbols), None
+            )
             shown, square = unicode_text(part), unicode_text(part**2)
             hint = SQUARE_HINT.format(part=shown, square=square, rate=unicode_text(rate) if rate is not None else "q̇")
             return AnswerSlip(

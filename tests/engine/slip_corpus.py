@@ -145,6 +145,9 @@ SLIPS = [
     # ---- the spherical pendulum: T = ½ m R² (θ̇² + sin²θ φ̇²), U = m g R cos θ
     ("spherical-pendulum", "kinetic", None, "m*R**2*(theta_dot**2 + phi_dot**2)/2", r"sin²|sin\(θ\)"),
     ("spherical-pendulum", "kinetic", None, "m*R**2*(theta_dot**2 + cos(theta)**2*phi_dot**2)/2", SWAP),
+    # student-h 158: sin θ where T needs sin²θ, named with the rate it multiplies (φ̇)
+    ("spherical-pendulum", "kinetic", None, "m*R**2*(theta_dot**2 + phi_dot**2*sin(theta))/2",
+     r"sin θ where T needs its square sin² θ.*sin θ·φ̇"),
     (
         "spherical-pendulum",
         "equation",
