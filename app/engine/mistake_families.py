@@ -457,6 +457,24 @@ def _in(term: sp.Expr, d: Derivation) -> str:
     return " and ".join(names) if names else "t"
 
 
+def _whose(term: sp.Expr, kind: str, d: Derivation) -> str:
+    """A term of U in words, saying whose energy it is where the system has others of its kind (student-h 60,
+    126: "the gravitational energy in y₁ and y₂" named the pulley's end masses' coordinates, not the middle mass
+    whose term was left out): "the gravitational energy of the middle mass", "the energy of the spring κ"; else
+    the kind alone."""
+    names = {s.name for s in term.free_symbols}
+    if kind == "the gravitational energy":
+        bodies = [p.label for p in d.system.particles if p.label and p.mass in names]
+        if bodies and len(bodies) < len(d.system.particles):
+            return f"{kind} of the " + " and the ".join(bodies)
+    if kind == "the spring energy":
+        stiff = [p.name for p in d.system.parameters if p.unit in ("N/m", "kg/s²")]
+        mine = [unicode(n) for n in stiff if n in names]
+        if mine and len(mine) < len(stiff):
+            return "the energy of the spring " + " and ".join(mine)
+    return kind
+
+
 def potential_mistakes(d: Derivation) -> Iterator[Mistake]:
     U = d.mechanics.U
     if U is None or U == 0:
@@ -497,12 +515,13 @@ def potential_mistakes(d: Derivation) -> Iterator[Mistake]:
                 sp.expand(U + term),
             )
         if len(terms) > 1:
+            named = _whose(term, kind, d)
             yield Mistake(
                 f"potential.term_left_out.{term_key(term)}",
                 "term_left_out",
-                f"{kind} in {_in(term, d)}",
+                f"{named} in {_in(term, d)}",
                 term,
-                f"U adds the energy of every force that has one: {kind} in {_in(term, d)} is one of them",
+                f"U adds the energy of every force that has one: {named} in {_in(term, d)} is one of them",
                 sp.expand(U - term),
             )
             yield Mistake(

@@ -181,6 +181,8 @@ SLIPS = [
         r"half|½|pulley|middle",
     ),
     ("pulley", "potential", None, "m1*g*y1 + m2*g*y2 - M*g*(y1 + y2)", r"half|½|pulley|middle"),
+    # student-h 60: the middle mass's energy left out was named "the gravitational energy in y₁ and y₂"
+    ("pulley", "potential", None, "m1*g*y1 + m2*g*y2", r"gravitational energy of the middle mass"),
     ("pulley", "equation", "y1", "m1*y1_ddot + g*m1 - M*g/2", r"middle|pulley|\bM\b"),
     (
         "pulley",
@@ -232,6 +234,8 @@ SLIPS = [
     ("coupled-oscillators", "equation", "x1", "m*x1_ddot + (k + kappa)*x1", r"κ|x₂|coupling"),
     ("coupled-oscillators", "kinetic", None, "m*(x1_dot**2 + x2_dot**2)", HALF),
     ("coupled-oscillators", "potential", None, "k*(x1**2 + x2**2)/2 + kappa*(x2 - x1)/2", r"square|" + UNITS_WORDS),
+    # student-h 126: the coupling spring left out was named "the spring energy in x₁ and x₂"
+    ("coupled-oscillators", "potential", None, "k*x1**2/2 + k*x2**2/2", r"energy of the spring κ"),
     # ---- the double pendulum
     (
         "double-pendulum",
