@@ -622,9 +622,10 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
         found = _budgeted(lambda: part_off_by_a_factor(answer, truth, pb.groups), None, ANSWER_SLIP_WORK)
         if found is not None:
             return found
-    if pb.step in _SMALL_FORMS:
-        # the small-angle form where the exact one is asked (the equation's own is named by linearised, above)
-        what, constant = _SMALL_FORMS[pb.step], pb.relation == "constant"
+    if pb.step in _SMALL_FORMS or pb.step == "position":
+        # the small-angle form where the exact one is asked (the equation's own is named by linearised, above); a
+        # position too (student-h 188: R θ²/2 for the bob's z)
+        what, constant = _SMALL_FORMS.get(pb.step, pb.label), pb.relation == "constant"
         found = _budgeted(lambda: small_angle(a, truth, pb.groups, what, constant), None, ANSWER_SLIP_WORK)
         if found is not None:
             return found

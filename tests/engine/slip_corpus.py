@@ -440,6 +440,8 @@ SLIPS = [
     # draws them; where students go wrong first (a student's review)
     ("simple-pendulum", "position", "x", "R*cos(theta)", SWAP),
     ("simple-pendulum", "position", "z", "R*cos(theta)", SIGN + r"|up|below"),
+    # student-h 188: the bob's height to second order in θ, where the exact z is asked
+    ("simple-pendulum", "position", "z", "R*theta**2/2", r"z of the bob for small displacements"),
     ("damped-pendulum", "position", "x", "-R*sin(theta)", SIGN),
     ("spherical-pendulum", "position", "x", "R*cos(theta)*cos(phi)", SWAP),
     ("spherical-pendulum", "position", "z", "R*sin(theta)", SWAP),
