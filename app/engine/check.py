@@ -79,6 +79,7 @@ from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, 
 from app.engine.dimensions import dimension, mismatch, number_beside_units, unit_name
 from app.engine.mistake_answer import (
     AnswerSlip,
+    extra_cross_term,
     linearised,
     missing_square,
     part_off_by_a_factor,
@@ -612,6 +613,10 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
     # slips read from the answer itself (app/engine/mistake_answer.py)
     if pb.step in ("kinetic", "lagrangian", "hamiltonian"):
         found = _budgeted(lambda: missing_square(answer, b, pb.groups), None, ANSWER_SLIP_WORK)
+        if found is not None:
+            return found
+    if pb.step == "kinetic":
+        found = _budgeted(lambda: extra_cross_term(answer, truth, pb.groups), None, ANSWER_SLIP_WORK)
         if found is not None:
             return found
     if pb.step == "equation":

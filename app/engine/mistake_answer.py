@@ -107,6 +107,30 @@ def missing_square(answer: sp.Expr, truth: Values, groups: Groups) -> AnswerSlip
     return None
 
 
+def extra_cross_term(answer: sp.Expr, truth: sp.Expr, groups: Groups) -> AnswerSlip | None:
+    """The slip naming a cross term of two rates the correct T has none of (student-h 131: ½ m (ẋ₁ + ẋ₂)² for two
+    masses that move apart, each with its own ½ m v²), or None."""
+    extra = sp.expand(answer - truth)
+    if extra == 0 or len(sp.Add.make_args(extra)) != 1:
+        return None
+    held = [r for r in groups.rates if extra.has(r)]
+    if len(held) != 2 or any(sp.degree(extra, r) != 1 for r in held):
+        return None
+    a, b = held
+    if any(t.has(a) and t.has(b) for t in sp.Add.make_args(sp.expand(truth))):
+        return None  # the correct T mixes these rates itself: the slip is in that term, not an extra one
+    shown = spoken(extra)
+    return AnswerSlip(
+        "kinetic.cross_term_added",
+        f"a cross term {shown} that the correct T does not have",
+        f"each body's ½ m v² is added on its own; squaring the sum of two bodies' velocities ({unicode_text(a)} and "
+        f"{unicode_text(b)}) mixes them",
+        f"Your T has a cross term {shown} that the correct T does not have: each body's ½ m v² is added on its "
+        f"own, and squaring the sum of the velocities of two bodies ({unicode_text(a)} + {unicode_text(b)})² "
+        "mixes them.",
+    )
+
+
 def linearised(answer: Values, truth: sp.Expr, groups: Groups) -> AnswerSlip | None:
     """The slip naming an equation linearised about rest at zero, or None (no such rest state, or not it)."""
     moving = (*groups.positions, *groups.rates)
