@@ -37,6 +37,7 @@ from app.engine.mistake_pieces import effective_terms, masses_of, piece_mistakes
 from app.engine.mistake_positions import position_mistakes
 from app.engine.mistakes import OMEGA_HINT, RULES
 from app.engine.names import said_all
+from app.engine.notation import text as frequency_letter
 
 MIN_POINTS = 6
 MAX_PAIRS = 12
@@ -155,9 +156,13 @@ def catalogue(
     found += pieces
     found += [x for x in made if x[0].family in GENERIC]
     if step == "omega_squared":
+        # in the document's letter for the frequency (Ω where ω is a parameter: student-i 6)
+        w, hint = frequency_letter("frequency", d), OMEGA_HINT
+        if w != "ω":
+            hint = OMEGA_HINT.replace("ω", w)
         found += [
-            (Mistake("omega_not_squared", "omega_not_squared", "ω in place of ω²", sp.sqrt(w2), OMEGA_HINT,
-                     sp.sqrt(w2)), OMEGA_HINT)
+            (Mistake("omega_not_squared", "omega_not_squared", f"{w} in place of {w}²", sp.sqrt(w2), hint,
+                     sp.sqrt(w2)), hint)
             for w2 in truths
         ]  # fmt: skip
     found += _pairs(d, step, found, label)

@@ -42,6 +42,7 @@ from app.engine.mistake_families import (
 from app.engine.mistake_other import linear
 from app.engine.mistakes import has_springs
 from app.engine.names import unicode
+from app.engine.notation import text as frequency_letter
 
 MAX_PIECES = 12  # terms of a truth taken one at a time (a longer truth is left to the listed families)
 MAX_SUMS = 6  # sums inside the truth whose terms' signs are tried
@@ -193,8 +194,14 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
         yield Mistake(f"{base}.left_out.{term_key(p)}", "left_out", name, p,
                       why or LEFT_OUT_WHY.get(step, "this term belongs in the answer"), truth - p)  # fmt: skip
         if step == "hamiltonian" and not p.has(*rates):
+            # a term of U keeps its sign in h = T₂ − T₀ + U; a term of T free of the velocities (T₀) changes it
+            # (student-i 2: the sign of the rotating wire's m g α ρ² was explained by the centrifugal term's reason)
+            u_terms = set(sp.Add.make_args(sp.expand(d.mechanics.U))) if d.mechanics.U is not None else set()
+            from_u = bool(u_terms) and set(sp.Add.make_args(sp.expand(p))) <= u_terms
             yield Mistake(
                 f"{base}.sign_of_velocity_free.{key}", "term_sign", f"the sign of your term {spoken(-short)}", p,
+                "U enters h = T₂ − T₀ + U with its own sign, as it enters the energy: only the part of T free of "
+                "the velocities, T₀, changes sign" if from_u else
                 "in h = Σ p q̇ − L the part of L free of the velocities changes sign, so h is not the energy T + U "
                 "when T has such a part", truth - 2 * p,
             )  # fmt: skip
@@ -239,7 +246,9 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
         # the student's own piece, twice the truth's, in the factored form a textbook prints (k (r − l)²)
         yours = _factored(2 * group)
         yield Mistake(
-            f"{base}.group_doubled.{s.name}", "doubled", _doubled_name(name, yours, group, _spring(group, s)), group,
+            # (in T a squared sum is a body's ½ m v², never a spring: student-i 1, the pulley's M (ẏ₁ + ẏ₂)²/4)
+            f"{base}.group_doubled.{s.name}", "doubled",
+            _doubled_name(name, yours, group, step != "kinetic" and _spring(group, s)), group,
             _half_why(step, group, s), truth + group,
         )  # fmt: skip
         yield Mistake(f"{base}.group_left_out.{s.name}", "left_out", f"every term with {name} left out", group,
@@ -602,8 +611,10 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
         elif step == "omega_squared":
             for w in _omega_changed(d, dT, dU, asked):
                 family = "rigid" if key.startswith("rigid") else "travelled"
+                w2 = f"{frequency_letter('frequency', d)}²"  # Ω² where ω is a parameter (student-i 6)
                 yield Mistake(f"omega_squared.{key}", family, name, None,
-                              "your ω² follows from it: ω² is the effective potential's second derivative over the effective mass, at the equilibrium", w)  # fmt: skip
+                              f"your {w2} follows from it: {w2} is the effective potential's second derivative over "
+                              "the effective mass, at the equilibrium", w)  # fmt: skip
 
 
 def _force_sign(d: Derivation, k: int, truth: sp.Expr, u: sp.Expr) -> Iterator[Mistake]:
@@ -669,7 +680,8 @@ def effective_terms(d: Derivation, asked: list) -> Iterator[Mistake]:
             what = "the centrifugal term" if centrifugal else f"the term with {', '.join(params)}"
             yield Mistake(
                 f"omega_squared.effective_left_out.{term_key(u)}", "left_out", f"{what} of U_eff left out", u,
-                "ω² is the effective potential's second derivative at the equilibrium over the effective mass: it "
+                f"{frequency_letter('frequency', d)}² is the effective potential's second derivative at the "
+                "equilibrium over the effective mass: it "
                 "takes every term of the effective potential, the motion's (centrifugal) ones as well as U's", w - part,
             )  # fmt: skip
             yield Mistake(

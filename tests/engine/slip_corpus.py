@@ -181,6 +181,14 @@ SLIPS = [
         r"half|½|pulley|middle",
     ),
     ("pulley", "potential", None, "m1*g*y1 + m2*g*y2 - M*g*(y1 + y2)", r"half|½|pulley|middle"),
+    # student-i 1: the pulley's M term doubled in T was called "the spring term" (the pulley has no spring)
+    ("pulley", "kinetic", None, "m1*y1_dot**2/2 + m2*y2_dot**2/2 + M*(y1_dot + y2_dot)**2/4",
+     r"the M terms, M \(ẏ₁ \+ ẏ₂\)²/4, twice"),
+    # student-i 2: the sign of U in h explained by the centrifugal term's reason; student-i 6: ω for Ω
+    ("rotating-parabola", "hamiltonian", None,
+     "m*(1 + 4*alpha**2*rho**2)*rho_dot**2/2 - m*omega**2*rho**2/2 - m*g*alpha*rho**2",
+     r"U enters h = T₂ − T₀ \+ U with its own sign"),
+    ("rotating-parabola", "omega_squared", None, "sqrt(2*g*alpha - omega**2)", r"Ω in place of Ω²"),
     # student-h 60: the middle mass's energy left out was named "the gravitational energy in y₁ and y₂"
     ("pulley", "potential", None, "m1*g*y1 + m2*g*y2", r"gravitational energy of the middle mass"),
     ("pulley", "equation", "y1", "m1*y1_ddot + g*m1 - M*g/2", r"middle|pulley|\bM\b"),

@@ -10,6 +10,7 @@ import pytest
 
 from app.engine.check import exercises, problem
 from app.engine.names import unicode
+from app.engine.notation import text
 from app.scenes import SCENES
 from tests.engine.test_check import derivation
 
@@ -39,7 +40,9 @@ def test_the_letter_reader_sees_symbols_and_not_words():
 @pytest.mark.parametrize("name", sorted(SCENES))
 def test_every_hint_names_only_the_scenes_own_symbols(name):
     d = derivation(name)
-    own = {unicode(s.name) for s in (*d.table.params, *d.table.q)}
+    # and the page's letter for the frequency of small oscillations (Ω where ω is a parameter, as its Symbols
+    # table defines it)
+    own = {unicode(s.name) for s in (*d.table.params, *d.table.q)} | {text("frequency", d)}
     strays = {}
     for step, coordinate in exercises(d):
         for _, hint, _ in problem(d, step, coordinate).mistakes:
