@@ -31,25 +31,32 @@ def sized(request, browser, live_server):
     context.close()
 
 
-def type_triple_pendulum(page, g: str) -> None:
-    """The triple pendulum typed into the form (particles and U); ``g`` makes each run a system no cache holds."""
+def type_chain(page, g: str, n: int) -> None:
+    """An n-link pendulum typed into the form (particles and U); ``g`` makes each run a system no cache holds."""
+    links = "abcdefgh"[:n]
     page.goto("/playground?new")
     page.check('input[name="form"][value="particles"]')
-    page.fill("#f-coordinates", "a, b, c")
+    page.fill("#f-coordinates", ", ".join(links))
     for i, (name, value) in enumerate([("m", "1"), ("l", "1"), ("g", g)]):
         if i >= page.locator("#parameter-rows tbody tr").count():
             page.click('[data-target="parameter-rows"]')
         page.fill(f"#f-param-{i}-name", name)
         page.fill(f"#f-param-{i}-value", value)
     x, z = "", ""
-    for i, link in enumerate("abc"):
+    for i, link in enumerate(links):
         if i >= page.locator("#particle-rows tbody tr").count():
             page.click('[data-target="particle-rows"]')
         x, z = f"{x} + l*sin({link})".lstrip(" +"), f"{z} - l*cos({link})"
         page.fill(f"#f-particle-{i}-mass", "m")
         page.fill(f"#f-particle-{i}-x", x)
         page.fill(f"#f-particle-{i}-z", z)
-    page.fill("#f-U", "-m*g*l*(3*cos(a) + 2*cos(b) + cos(c))")
+    # each link's height is carried by every link below it: U = −m g l (n cos a + (n − 1) cos b + …)
+    page.fill("#f-U", "-m*g*l*(" + " + ".join(f"{n - i}*cos({c})" for i, c in enumerate(links)) + ")")
+
+
+def type_triple_pendulum(page, g: str) -> None:
+    """The triple pendulum typed into the form (particles and U); ``g`` makes each run a system no cache holds."""
+    type_chain(page, g, 3)
 
 
 def test_a_triple_pendulum_shows_its_equations_before_the_rest(sized, artifacts):
