@@ -20,22 +20,26 @@ SETUP = ["θ is the angle of the string from the downward vertical, counterclock
          "U = 0 at the height of the pivot."]
 
 
+def joined(page, title: str, item: dict) -> None:
+    """A class of its own with one assignment of ``item``, which Ada joins on this page."""
+    made = page.request.post("/api/classes", data={"title": title}).json()
+    teacher = {"Authorization": f"Bearer {made['teacher_key']}"}
+    added = page.request.post(f"/api/classes/{made['code']}/assignments", headers=teacher,
+                              data={"title": "Week 1", "items": [item]})
+    assert added.status == 201, added.text()
+    page.goto(f"/join?code={made['code']}")
+    page.fill("#join-name", "Ada")
+    page.click("#join-form button[type=submit]")
+
+
 def test_a_student_reads_the_set_up_above_the_boxes_on_a_phone(browser, live_server, classes, artifacts):  # noqa: F811
     context = browser.new_context(base_url=live_server, **PHONE)
     page = context.new_page()
     page.set_default_timeout(60_000)
     errors = _errors_of(page)
-    made = page.request.post("/api/classes", data={"title": "Set-up"}).json()
-    teacher = {"Authorization": f"Bearer {made['teacher_key']}"}
     item = {"system": PENDULUM, "name": "pendulum on a string", "setup": "\n".join(SETUP),
             "steps": [{"step": "kinetic"}, {"step": "equation", "coordinate": "theta"}]}
-    added = page.request.post(f"/api/classes/{made['code']}/assignments", headers=teacher,
-                              data={"title": "Week 1", "items": [item]})
-    assert added.status == 201, added.text()
-
-    page.goto(f"/join?code={made['code']}")
-    page.fill("#join-name", "Ada")
-    page.click("#join-form button[type=submit]")
+    joined(page, "Set-up", item)
     page.wait_for_selector(".join-item .practice-step input")
     setup = page.locator(".join-item .join-setup")
     # the instructor's words, line by line, then the particle and U typeset (T is the step asked: not shown)
@@ -65,15 +69,7 @@ def test_values_the_instructor_sets_are_read_with_their_letters_and_units(browse
     page = context.new_page()
     page.set_default_timeout(60_000)
     errors = _errors_of(page)
-    made = page.request.post("/api/classes", data={"title": "Values"}).json()
-    teacher = {"Authorization": f"Bearer {made['teacher_key']}"}
-    item = {"scene": "double-pendulum", "parameters": {"m1": 2, "l2": 0.5}, "steps": [{"step": "kinetic"}]}
-    added = page.request.post(f"/api/classes/{made['code']}/assignments", headers=teacher,
-                              data={"title": "Week 2", "items": [item]})
-    assert added.status == 201, added.text()
-    page.goto(f"/join?code={made['code']}")
-    page.fill("#join-name", "Ada")
-    page.click("#join-form button[type=submit]")
+    joined(page, "Values", {"scene": "double-pendulum", "parameters": {"m1": 2, "l2": 0.5}, "steps": [{"step": "kinetic"}]})
     values = page.locator(".join-item .join-values")
     values.locator(".katex").wait_for()
     assert values.locator("annotation").text_content() == r"m_{1} = 2\,\mathrm{kg},\quad l_{2} = 0.5\,\mathrm{m}"
