@@ -65,7 +65,7 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
 # what a positions step is judged against, said on the step
 POSITION_NOTE = (
     "Use the figure's axes (x across, y the third axis, z up) and its origin; a position measured from another "
-    "origin, the correct one plus a constant, is accepted as equivalent."
+    "origin, the correct one plus a constant length (such as + R, never a bare number), is accepted as equivalent."
 )
 
 
