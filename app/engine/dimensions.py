@@ -121,7 +121,10 @@ def unit_text(d: Dims) -> str:
     def show(parts: list[tuple[str, Fraction]]) -> str:
         return "·".join(k + (str(v).translate(_SUPER) if v != 1 else "") for k, v in parts)
 
-    return (show(top) or "1") + (f"/{show(bottom)}" if bottom else "")
+    # a denominator of several units in brackets, so that none reads as a factor of the top (student-i 5:
+    # "1/m·s²" for 1/(m·s²))
+    under = show(bottom) if len(bottom) == 1 else f"({show(bottom)})"
+    return (show(top) or "1") + (f"/{under}" if bottom else "")
 
 
 # the units a number is written with where the SI names one (1 J, 2 N, 0.5 m), else its base units
