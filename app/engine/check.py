@@ -88,7 +88,14 @@ from app.engine.mistake_answer import (
 )
 from app.engine.mistake_box import piece_box
 from app.engine.mistake_families import FollowUp, Mistake
-from app.engine.mistakes import CONSTANT_FACTOR_HINT, HALF_MOMENTUM_HINT, MISSING_FACTOR_HINT, POINTERS, without_springs
+from app.engine.mistakes import (
+    CONSTANT_FACTOR_HINT,
+    HALF_MOMENTUM_HINT,
+    MISSING_FACTOR_HINT,
+    POINTERS,
+    without_gravity,
+    without_springs,
+)
 from app.engine.names import unicode
 from app.engine.parse import Parsed
 from app.engine.quoted_term import as_typed
@@ -235,6 +242,8 @@ def judge_of(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
     """``judge`` on an answer already built (``parse_answer``): a function of the expression alone, so answers
     typed differently that build to one expression may share it."""
     verdict = _judge(pb, answer)
+    if "g" not in pb.namespace and verdict.get("hint"):
+        verdict["hint"] = without_gravity(verdict["hint"])
     if not pb.springs:
         if verdict.get("hint"):
             verdict["hint"] = without_springs(verdict["hint"])

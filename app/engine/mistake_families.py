@@ -481,6 +481,14 @@ def potential_mistakes(d: Derivation) -> Iterator[Mistake]:
         return
     dynamic = {*d.table.q, d.table.t}
     terms = [t for t in sp.Add.make_args(U) if t.free_symbols & dynamic]
+    halves = [t for t in terms if kind_of_term(t, d) == "the spring energy" and t.as_coeff_Mul()[0].q == 2]
+    if len(terms) > 1 and len(halves) == len(terms):
+        # every spring's ½ lost at once (student-i 3: k x₁² + k x₂² + κ (x₂ − x₁)² got the step's rule)
+        yield Mistake(
+            "potential.spring_half.all", "doubled", "the ½ of ½ k × stretch² left out of every spring's energy", U,
+            "a spring's energy is ½ k × stretch², the work done stretching it against a force that grows from "
+            "zero to k × stretch", sp.expand(2 * U),
+        )
     for term in terms:
         for base, constant in _springs(term, dynamic):
             stretch = base

@@ -62,6 +62,20 @@ SPRING_CLAUSES = (
 )
 
 
+# the step's rule for U names gravity first; where the system has no g (masses on a horizontal line: student-i 3)
+# it names the springs alone
+GRAVITY_CLAUSE = (
+    "m g times the height of each mass above a level of your choice (height measured upward, against gravity), "
+    "plus ½ k times",
+    "½ k times",
+)
+
+
+def without_gravity(text: str | None) -> str | None:
+    """A hint without its clause about gravity, for a system with no g."""
+    return text.replace(*GRAVITY_CLAUSE) if text else text
+
+
 def without_springs(text: str | None) -> str | None:
     """A hint with its clauses about springs left out, for a system that has none."""
     if not text:

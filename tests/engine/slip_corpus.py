@@ -244,6 +244,9 @@ SLIPS = [
     ("coupled-oscillators", "potential", None, "k*(x1**2 + x2**2)/2 + kappa*(x2 - x1)/2", r"square|" + UNITS_WORDS),
     # student-h 131: the square of the sum of the velocities, where each mass has its own ½ m v²
     ("coupled-oscillators", "kinetic", None, "m*(x1_dot + x2_dot)**2/2", r"cross term m ẋ₁ ẋ₂ that the correct T"),
+    # student-i 3: every spring's ½ lost at once got the step's rule
+    ("coupled-oscillators", "potential", None, "k*x1**2 + k*x2**2 + kappa*(x2 - x1)**2",
+     r"½ of ½ k × stretch² left out of every spring"),
     # student-h 126: the coupling spring left out was named "the spring energy in x₁ and x₂"
     ("coupled-oscillators", "potential", None, "k*x1**2/2 + k*x2**2/2", r"energy of the spring κ"),
     # ---- the double pendulum

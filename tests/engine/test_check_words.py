@@ -131,3 +131,12 @@ def test_the_frequency_step_uses_the_documents_letter_where_omega_is_a_parameter
     # where ω is free, it stays ω
     simple = next(e for e in exercise_json(derivation("simple-pendulum"))["exercises"] if e["step"] == "omega_squared")
     assert simple["title"].startswith("ω² of small oscillations") and simple["lhs"] == r"\omega^2"
+
+
+def test_the_rule_for_u_names_no_gravity_where_the_system_has_none():
+    """student-i 3: the masses between springs slide on a horizontal line, and the hint spoke of m g × height."""
+    hint = judge(step_problem("coupled-oscillators", "potential", None), "k*(x1**2 + x2**2)/2 + kappa*x2**2/2")["hint"]
+    assert hint == "U depends on positions only: ½ k times the square of each spring's stretch.", hint
+    # with gravity, both
+    hint = judge(step_problem("simple-pendulum", "potential", None), "m*g*R*theta")["hint"] or ""
+    assert "m g times the height" in hint or "Check the units" in hint, hint
