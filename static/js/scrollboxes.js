@@ -94,7 +94,10 @@ export function keyboardScroll(root = document) {
   const added = (r) => !inPlot(r.target) && [...r.addedNodes].some((n) => n.nodeType === 1 && !n.matches(PLOTS));
   new MutationObserver((records) => { if (records.some(added)) later(); })
     .observe(root === document ? document.body : root, { childList: true, subtree: true });
-  // KaTeX may finish after load (fonts): look once more a little later
+  // KaTeX may finish after load (fonts): look once more a little later, and whenever a web font finishes
+  // loading (a formula measured in the fallback font is wider: its cue would stay on a formula that now fits)
   setTimeout(soon, 1500);
+  document.fonts?.ready.then(soon);
+  document.fonts?.addEventListener?.("loadingdone", soon);
   return soon;
 }

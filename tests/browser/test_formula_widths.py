@@ -7,6 +7,7 @@ from __future__ import annotations
 from urllib.parse import urlencode
 
 import pytest
+from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
 from app.scenes import SCENES
 
@@ -64,6 +65,16 @@ def _measure(page, path):
     page.wait_for_selector(READY, state="attached", timeout=120_000)
     page.wait_for_selector("#derivation .math-display .katex", state="attached", timeout=120_000)
     assert page.locator(".katex-error").count() == 0
+    # the scroll cues are set at the frame after a box's layout changes (fonts loading, formulas broken):
+    # measured once they agree with the boxes, or after 15 s as they are (the assertions then say which)
+    try:
+        page.wait_for_function(
+            "() => [...document.querySelectorAll('.math-display')].every("
+            "b => (b.scrollWidth > b.clientWidth + 1) === Boolean(b.dataset.more))",
+            timeout=15_000,
+        )
+    except PlaywrightTimeout:
+        pass
     return page.evaluate(MEASURE)
 
 
