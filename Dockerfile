@@ -36,6 +36,8 @@ RUN python -m compileall -q app
 COPY templates templates
 COPY static static
 COPY --from=assets /src/static/vendor static/vendor
+# the vendor libraries' zstd copies beside them (app/web/precompress.py), written before the files become read-only
+RUN python -m app.web.precompress
 COPY scripts/serve.sh scripts/serve.sh
 RUN useradd --create-home --uid 10001 lagrange && mkdir -p .cache data && chown -R lagrange /app/.cache /app/data
 USER lagrange

@@ -3,8 +3,9 @@
 ``negotiate`` reads ``Accept-Encoding`` with its weights (RFC 9110 §12.5.3): a coding weighted 0
 (``gzip;q=0``) is refused, ``*`` stands for every coding the header does not name, and among those
 accepted the client's highest weight wins, ties going to our order of preference (zstd, then gzip).
-The pages (app/web/pages.py) and the static files (app/web/templating.py), which keep gzip copies,
-ask it too, offering only gzip.
+The pages (app/web/pages.py) ask it too, offering only gzip; the static files (app/web/templating.py) offer
+``STATIC``'s codings, each compressed once at its best level: a vendor library from the copy written beside it
+at set-up (``.zst`` by app/web/precompress.py, ``.gz`` by scripts/assets.sh), our own modules in memory.
 
 For ``/api`` the chosen coding is kept in a context variable, which FastAPI's thread pool inherits:
 ``FastJSONResponse`` (app/web/responses.py) compresses its body right after encoding it, in the
@@ -21,6 +22,7 @@ and Firefox accept zstd; curl, older browsers and most HTTP libraries get gzip.
 
 from __future__ import annotations
 
+import gzip
 import re
 import sys
 import zlib
@@ -68,6 +70,11 @@ def _zstd() -> Encoder:
 # the codings we can send, in our order of preference: each makes the encoder of one response
 CODINGS: dict[str, Callable[[], Encoder]] = {"zstd": _zstd, "gzip": _gzip}
 
+# a file compressed once and sent many times (the static files): each coding's sibling suffix and its best level.
+# zstd at 19 sends plotly.js basic in 344 kB where gzip -9 sends 395 kB, KaTeX in 68 kB against 77 kB; Chromium
+# asks for zstd over plain HTTP too (a classroom server), as `benchmarks/bench_browser.py`'s encoded sizes show.
+STATIC: dict[str, tuple[str, int]] = {"zstd": (".zst", 19), "gzip": (".gz", 9)}
+
 # the coding chosen for the request being served (None: send the body as it is)
 CHOSEN: ContextVar[str | None] = ContextVar("api_content_coding", default=None)
 
@@ -108,6 +115,12 @@ def compress(body: bytes, coding: str | None) -> bytes | None:
     if coding is None or len(body) < MINIMUM_BYTES:
         return None
     return CODINGS[coding]()(body, False)
+
+
+def compress_once(body: bytes, coding: str) -> bytes:
+    """``body`` in ``coding`` (one of ``STATIC``) at its best level: for a file sent many times."""
+    level = STATIC[coding][1]
+    return zstd.compress(body, level=level) if coding == "zstd" else gzip.compress(body, level, mtime=0)
 
 
 def mark(headers: MutableHeaders, coding: str, length: int) -> None:

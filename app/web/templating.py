@@ -9,8 +9,8 @@ keeps a stale module after an upgrade.
 
 from __future__ import annotations
 
-import gzip
 import hashlib
+import mimetypes
 import stat as stat_mode
 from functools import cache
 from pathlib import Path
@@ -26,7 +26,7 @@ from starlette.types import Scope
 from app.settings import ROOT
 from app.viz.chapter import ABOUT
 from app.viz.page_model import SLIDER_STEPS, unit_text
-from app.web.compression import negotiate
+from app.web.compression import STATIC, compress_once, negotiate
 from app.web.embed_views import embeddable
 from app.web.embed_views import offers as embed_offers
 from app.web.mathml import mathml
@@ -36,16 +36,18 @@ from app.web.prose import prose_html
 class ClassroomStaticFiles(StaticFiles):
     """Static files for a room of browsers on one network.
 
-    A client that accepts gzip gets the ``name.gz`` sibling that scripts/assets.sh
-    wrote next to each vendor file (plotly.js basic bundle: 1.2 MB on disk, about 0.36 MB sent),
-    without compressing anything per request; a URL stamped with a content hash
-    (``?v=...``, see ``static()``) may be kept by the browser for a year.
+    A client that accepts zstd or gzip gets the file compressed once, in the coding it prefers (ours: zstd, then
+    gzip, ``compression.STATIC``): a vendor library from the copy beside it (``name.zst`` written by
+    app/web/precompress.py at set-up, ``name.gz`` by scripts/assets.sh; plotly.js basic is 1.2 MB on disk, 344 kB
+    sent in zstd and 395 kB in gzip), our own modules and styles compressed in memory on first use; nothing is
+    compressed per request. A URL stamped with a content hash (``?v=...``, see ``static()``) may be kept by the
+    browser for a year.
     """
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
-        # our own small modules and styles, gzipped, by (path, modification time, size): this app's, not a module's
-        self._gzipped: dict[tuple[str, int, int], bytes] = {}
+        # our own small modules and styles, compressed, by (path, modification time, size, coding): this app's
+        self._packed: dict[tuple[str, int, int, str], bytes] = {}
 
     async def get_response(self, path: str, scope: Scope) -> Response:
         response = await self._compressed(path, scope) or await super().get_response(path, scope)
@@ -54,23 +56,31 @@ class ClassroomStaticFiles(StaticFiles):
         return response
 
     async def _compressed(self, path: str, scope: Scope) -> Response | None:
-        gzip_accepted = negotiate(Headers(scope=scope).get("accept-encoding", ""), ("gzip",))
-        if scope["method"] not in ("GET", "HEAD") or not gzip_accepted:
+        accept = Headers(scope=scope).get("accept-encoding", "")
+        coding = negotiate(accept, STATIC)
+        if scope["method"] not in ("GET", "HEAD") or coding is None:
             return None
-        try:
-            full_path, found = await anyio.to_thread.run_sync(self.lookup_path, path + ".gz")
-        except (OSError, ValueError):
-            return None
-        if found is None or not stat_mode.S_ISREG(found.st_mode):
-            return await self._compress_small(path)
-        response = self.file_response(full_path, found, scope)
-        response.headers["Content-Encoding"] = "gzip"
-        response.headers["Vary"] = "Accept-Encoding"
-        return response
+        # the preferred coding's copy, else gzip's (a set-up that wrote no .zst), else compressed here
+        for choice in dict.fromkeys((coding, negotiate(accept, ("gzip",)))):
+            if choice is None:
+                continue
+            try:
+                full_path, found = await anyio.to_thread.run_sync(self.lookup_path, path + STATIC[choice][0])
+            except (OSError, ValueError):
+                return None
+            if found is not None and stat_mode.S_ISREG(found.st_mode):
+                response = self.file_response(full_path, found, scope)
+                # the type is the file's, not its copy's (a .zst name would be guessed application/zstd, which a
+                # browser refuses to run as a script)
+                response.headers["Content-Type"] = _media_type(path)
+                response.headers["Content-Encoding"] = choice
+                response.headers["Vary"] = "Accept-Encoding"
+                return response
+        return await self._compress_small(path, coding)
 
-    async def _compress_small(self, path: str) -> Response | None:
-        """Our own modules and styles (no .gz sibling, which could go stale while they are edited),
-        compressed once per version of the file and kept in memory."""
+    async def _compress_small(self, path: str, coding: str) -> Response | None:
+        """Our own modules and styles (no sibling copy, which could go stale while they are edited),
+        compressed once per version of the file and coding, and kept in memory."""
         if not path.endswith((".js", ".css", ".svg")):
             return None
         try:
@@ -79,16 +89,21 @@ class ClassroomStaticFiles(StaticFiles):
             return None
         if found is None or not stat_mode.S_ISREG(found.st_mode) or found.st_size > _SMALL:
             return None
-        key = (full_path, found.st_mtime_ns, found.st_size)
-        body = self._gzipped.get(key)
+        key = (full_path, found.st_mtime_ns, found.st_size, coding)
+        body = self._packed.get(key)
         if body is None:
-            body = await anyio.to_thread.run_sync(lambda: gzip.compress(Path(full_path).read_bytes(), 9))
-            self._gzipped[key] = body
-        media = {"js": "text/javascript", "css": "text/css", "svg": "image/svg+xml"}[path.rsplit(".", 1)[1]]
-        return Response(body, media_type=media, headers={"Content-Encoding": "gzip", "Vary": "Accept-Encoding"})
+            body = await anyio.to_thread.run_sync(lambda: compress_once(Path(full_path).read_bytes(), coding))
+            self._packed[key] = body
+        return Response(body, media_type=_media_type(path), headers={"Content-Encoding": coding, "Vary": "Accept-Encoding"})
 
 
 _SMALL = 512 * 1024
+
+
+def _media_type(path: str) -> str:
+    """The Content-Type of a static file, by its name: a module or style sheet with its charset."""
+    guessed = mimetypes.guess_type(path)[0] or "application/octet-stream"
+    return f"{guessed}; charset=utf-8" if guessed.startswith("text/") else guessed
 
 
 TEMPLATES_DIR = ROOT / "templates"
