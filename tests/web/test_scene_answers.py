@@ -93,7 +93,7 @@ def test_the_rotating_wire_says_why_e_minus_h_is_2t0(client):
         ("tabletop-spring", "euler-lagrange", "only on the circular orbit", "balances spring and centrifugal"),
         ("incline-block", "lagrangian", "constant force", "free particle"),
         ("helix-bead", "velocities", "at the rate α ż", "turns by α ż"),
-        ("pulley", "accelerations", "plus a constant", "− 1 m"),
+        ("pulley", "accelerations", "Y = −(y₁ + y₂)/2 − c", "− 1 m"),
         ("pulley", "kinetic", "⅛ M (ẏ₁ + ẏ₂)²", "through the term in"),
         ("movable-incline", "effective-potential", "is a constant", "\u0000"),
     ],
