@@ -417,10 +417,7 @@ def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake
         return None
     want = None if truth is None else dimension(truth, pb.dimensions)
     what = short_label(pb.step, pb.label)
-    # a number inside a bracket is read as unitless only where the system itself never writes one so (the
-    # pulley's positions still hold bare lengths, −½y₁ − ½y₂ − 1)
-    nested = not pb.bare_lengths
-    offence = mismatch(answer, pb.dimensions, want, what, nested)
+    offence = mismatch(answer, pb.dimensions, want, what)
     if offence is None:
         return None
     where = "every term of an expression has the same units; checking them finds a slip before any algebra"

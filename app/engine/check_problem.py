@@ -15,7 +15,7 @@ from app.engine.check_answers import PER_COORDINATE, STEPS, CheckError, name_kin
 from app.engine.compare import Groups, Values
 from app.engine.derive import Derivation
 from app.engine.diagnose import catalogue
-from app.engine.dimensions import Dims, number_beside_units, system_dimensions
+from app.engine.dimensions import Dims, system_dimensions
 from app.engine.mistake_families import Mistake
 from app.engine.mistake_positions import component_keys, position_label
 from app.engine.mistakes import has_springs
@@ -48,9 +48,6 @@ class Problem:
     # whether a spring can be in U: a stiffness declared (N/m), or no units declared to tell (the hints about
     # ½ k × stretch² are given only then)
     springs: bool = True
-    # whether the system's own positions add a bare number to a length (the pulley's −½y₁ − ½y₂ − 1): a number
-    # inside a student's bracket may then be such a length too, and is not called unitless
-    bare_lengths: bool = False
 
     def mistake(self, key: str) -> Mistake | None:
         return next((m for m, _, _ in self.mistakes if m.key == key), None)
@@ -228,7 +225,6 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         table.qdd[k] if step == "equation" and k is not None else None,
         system_dimensions(d),
         has_springs(d),
-        any(number_beside_units(x, system_dimensions(d)) for r in d.mechanics.positions for x in r),
     )
 
 

@@ -242,18 +242,15 @@ def dimension(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Dims | None:
         return None
 
 
-def mismatch(
-    expr: sp.Expr, known: Mapping[sp.Symbol, Dims], want: Dims | None, what: str, nested: bool = True
-) -> Offence | None:
+def mismatch(expr: sp.Expr, known: Mapping[sp.Symbol, Dims], want: Dims | None, what: str) -> Offence | None:
     """The first place the answer's dimensions break, or where its whole has another dimension than
-    ``want`` (the truth's; None: any), in words; None when all is consistent or cannot be told.  ``nested``:
-    a bare number is looked for in every sum inside the answer too (not where the truth itself has one)."""
+    ``want`` (the truth's; None: any), in words; None when all is consistent or cannot be told.  A bare number
+    is looked for in every sum inside the answer too."""
     if sp.count_ops(expr) > MAX_NODES:
         return None
     # a bare number beside terms with units, in the whole or in any sum inside it: m g (z + 3) adds 3 to a
     # length as surely as m g z + 3 adds it to an energy (student-h 3: it read as "another zero of U")
-    sums = sp.preorder_traversal(expr) if nested else (expr,)
-    bare = next((b for a in sums if (b := _bare_number(a, known)) is not None), None)
+    bare = next((b for a in sp.preorder_traversal(expr) if (b := _bare_number(a, known)) is not None), None)
     if bare is not None:
         return bare
     try:

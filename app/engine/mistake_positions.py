@@ -80,8 +80,8 @@ def position_mistakes(d: Derivation, i: int, a: int) -> Iterator[Mistake]:
     axis, body = AXES[a], body_name(d, i)
     moving = (*table.q, table.t)
     terms = _moving_terms(positions[i][a], moving)[:MAX_TERMS]
-    # the moving part only: a position is judged up to a constant (its origin), and a bare constant of the
-    # figure's (the pulley's string length) would read as a number beside lengths
+    # the moving part only: a position is judged up to a constant (its origin), so the figure's constant lengths
+    # (the pulley's c, set by its string) are no part of what is asked
     truth = sp.Add(*terms)
     base = f"position.{cartesian_symbols(len(positions))[i][a].name}"
 

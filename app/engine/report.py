@@ -618,7 +618,10 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
     level_symbol = sp.Symbol(level, real=True)
     # E − U_eff with E first and U_eff's pieces in the order the effective-potential step prints them
     energy_left = pr.tex(level_symbol - effective_potential(d), level_symbol)
-    integrand = rf"\frac{{d{rn}}}{{\sqrt{{\frac{{2}}{{{pr.tex(red.effective_mass)}}}\left({energy_left}\right)}}}}"
+    # 2/m_eff printed as one quotient, its numerator and denominator each collected: m_eff may itself be a
+    # fraction (the wedge's m(M + m sin²α)/(M + m)), and a textbook never prints a fraction over a fraction
+    # (2(M + m)/(m(M + m sin²α)), not 2 over m(M + m sin²α)/(M + m))
+    integrand = rf"\frac{{d{rn}}}{{\sqrt{{{pr.tex(2 / red.effective_mass)}\left({energy_left}\right)}}}}"
     rows = [
         rf"t = \int \sqrt{{\frac{{m_\text{{eff}}}}{{2\,\left({level} - U_\text{{eff}}({rn})\right)}}}}\, d{rn}",
         # the same integral with this system's m_eff and U_eff written in (what a problem asks for)

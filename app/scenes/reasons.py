@@ -260,7 +260,7 @@ RAIL_TWO_BODY: dict[str, str] = {
 
 PULLEY: dict[str, str] = {
     "action": "The masses move so that ∫ L dt is stationary between two positions; with constant gravity and no spring there is no kinetic focus, and the true path is a minimum of the action for every duration.",
-    "positions": "The end masses hang at heights y₁ and y₂; the string fixes the middle mass at −(y₁ + y₂)/2.",
+    "positions": "The end masses hang at heights y₁ and y₂, a distance d either side of the middle; the string fixes the middle mass at −(y₁ + y₂)/2 − c.",
     "velocities": "The middle mass moves at Ẏ = −(ẏ₁ + ẏ₂)/2, minus half the sum of the end masses' velocities.",
     "squared-speeds": "Each mass moves vertically only.",
     "kinetic": "The middle mass moves at −(ẏ₁ + ẏ₂)/2, so its ⅛ M (ẏ₁ + ẏ₂)² couples the two coordinates: multiplied out it holds ¼ M ẏ₁ ẏ₂.",
@@ -270,7 +270,7 @@ PULLEY: dict[str, str] = {
     "derivatives:y2": "∂L/∂y₂ = M g/2 − m₂ g, the same for mass 2.",
     "euler-lagrange": "The two equations share the middle mass's inertia M/4.",
     "mass-matrix": "The mass matrix 𝓜 (M is the middle body's mass) is not diagonal: the middle mass responds to both ends.",
-    "accelerations": "Constant accelerations: every force here is a constant weight. The middle mass follows from Y = −(y₁ + y₂)/2 plus a constant: Ÿ = −(ÿ₁ + ÿ₂)/2 = [4m₁m₂ − M(m₁ + m₂)] g/[4m₁m₂ + M(m₁ + m₂)].",
+    "accelerations": "Constant accelerations: every force here is a constant weight. The middle mass follows from Y = −(y₁ + y₂)/2 − c: Ÿ = −(ÿ₁ + ÿ₂)/2 = [4m₁m₂ − M(m₁ + m₂)] g/[4m₁m₂ + M(m₁ + m₂)].",
     "momenta": "Each momentum includes the middle mass's share of the motion.",
     "time-dependence": "The fixed pulleys do not move, so L has no t.",
     "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
@@ -278,7 +278,7 @@ PULLEY: dict[str, str] = {
     "h-vs-e": _h_is_e("The positions do not depend on t"),
     **_hamiltonian("the kinetic energy written with the inverse mass matrix, plus the weights"),
     "equilibria": "The generalized forces are constant: with m₁ = m₂ = M/2 they vanish and every position is an equilibrium; otherwise (at the default masses, too) there is none.",
-    "constraints": "With z₁, z₂, z₃ the heights of m₁, m₂ and M (z₁ = y₁, z₂ = y₂, z₃ = Y, all in metres), the string's length fixes z₁ + z₂ + 2 z₃; the constant, 2 metres, places M below the pulleys.",
+    "constraints": "With z₁, z₂, z₃ the heights of m₁, m₂ and M (z₁ = y₁, z₂ = y₂, z₃ = Y, all in metres), the string's length fixes z₁ + z₂ + 2 z₃ = −2c, the constant c placing M below the end masses.",
     "multiplier-lagrangian": "Three free masses, each pulled up by the string: λ on each end mass, 2λ on the movable pulley (∂𝒞/∂z₃ = 2).",
     "multiplier-equation": "The string's length is fixed, so the accelerations obey z̈₁ + z̈₂ + 2 z̈₃ = 0: each mass's inertia enters through 1/m.",
     "multiplier": "No velocities enter: the tension is constant while the masses move.",

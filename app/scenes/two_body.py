@@ -180,17 +180,19 @@ PULLEY = Scene(
     reasons=reasons.PULLEY,
     summary="A string's fixed length removes a coordinate; two Euler–Lagrange equations give all three accelerations.",
     statement=(
-        "A string runs over two fixed pulleys; its ends carry masses m1 and m2, and the loop between the pulleys "
-        "holds a third, movable pulley from which a mass M hangs. Pulleys and string are massless and the string "
-        "does not stretch. With the heights y1 and y2 of the end masses (upward) as coordinates, the middle "
-        "mass's height is fixed by the string at Y = −(y1 + y2)/2 plus a constant. "
-        "Heights are measured upward, and U = 0 when y1 = y2 = 0. Find the accelerations of all "
+        "A string runs over two fixed pulleys; its ends carry masses m1 and m2, each a horizontal distance d from "
+        "the middle, and the loop between the pulleys holds a third, movable pulley from which a mass M hangs. "
+        "Pulleys and string are massless and the string does not stretch. Heights are measured upward from the "
+        "level where U = 0, the end masses' level when y1 = y2 = 0. With the heights y1 and y2 of the end masses "
+        "as coordinates, the string fixes the middle mass's height at Y = −(y1 + y2)/2 − c, where c, set by the "
+        "string's length, is how far below that level M hangs when y1 = y2 = 0. Find the accelerations of all "
         "three masses and the tension in the string."
     ),
     figure=(
-        "Two fixed pulleys at the top; m1 hangs on the left end, m2 on the right end, and the string's loop between "
-        "them carries a movable pulley with M below it; heights y1, y2, Y measured upward from the dashed line where "
-        "U = 0, M below it (Y < 0)."
+        "Two fixed pulleys at the top; m1 hangs on the left end, m2 on the right end, each a distance d from the "
+        "middle, and the string's loop between them carries a movable pulley with M below it; heights y1, y2, Y "
+        "measured upward from the dashed line where U = 0, M below it (Y < 0); c reaches down from that line to "
+        "the short dashed level where M would hang with y1 = y2 = 0."
     ),
     system=System(
         coordinates=("y1", "y2"),
@@ -199,19 +201,22 @@ PULLEY = Scene(
             Parameter("m2", 2.0, "kg", 0.01, 100.0, "mass on the right end"),
             Parameter("M", 2.5, "kg", 0.01, 100.0, "mass under the movable pulley"),
             GRAVITY,
+            Parameter("d", 1.0, "m", 0.1, 10.0, "horizontal distance of each end mass from the middle mass"),
+            Parameter("c", 1.0, "m", 0.0, 100.0, "depth of the middle mass below the level U = 0 when y1 = y2 = 0"),
         ),
-        # Y = -(y1 + y2)/2 - 1: the string's length fixes the middle height (the constant places M lower).
+        # The string's length is (H − y1) + 2(H − Y) + (H − y2) plus the fixed lengths round the wheels, H the fixed
+        # pulleys' height: so y1 + y2 + 2Y is a constant, written −2c, and Y = −(y1 + y2)/2 − c.
         particles=(
-            Particle("m1", ("-1", "0", "y1"), "left mass"),
-            Particle("m2", ("1", "0", "y2"), "right mass"),
-            Particle("M", ("0", "0", "-(y1 + y2)/2 - 1"), "middle mass"),
+            Particle("m1", ("-d", "0", "y1"), "left mass"),
+            Particle("m2", ("d", "0", "y2"), "right mass"),
+            Particle("M", ("0", "0", "-(y1 + y2)/2 - c"), "middle mass"),
         ),
         potential="m1*g*y1 + m2*g*y2 - M*g*(y1 + y2)/2",
         cartesian_potential="m1*g*z1 + m2*g*z2 + M*g*z3",
         constraints=(
             Constraint(
                 "string tension",
-                "z1 + z2 + 2*z3 + 2",
+                "z1 + z2 + 2*z3 + 2*c",
                 "The string's upward pull on each end mass (the movable pulley gets twice it); negative would "
                 "mean the string has to push, so it goes slack.",
                 on=1,

@@ -138,9 +138,17 @@ def pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) 
         svg.line(cx, ceiling, cx, ceiling + 24, INK, 1.5)
         svg.circle(cx, ceiling + 24, r, fill="#eef1f4")
     # the end masses above the dashed line where U = 0 (y₁, y₂ > 0) and M below it: the string makes
-    # Y = −(y₁ + y₂)/2 − 1 m, negative whatever the end masses' heights (prof-h 2: all three were drawn above it)
+    # Y = −(y₁ + y₂)/2 − c, negative while the end masses are above the line (prof-h 2: all three were drawn above it)
     y1, y2, ym = 108.0, 80.0, 174.0
     mid = (left + right) / 2
+    # the end masses' strings hang d either side of the middle one's, d marked above the ceiling
+    for end in (left - r, right + r):
+        svg.line(end, 3, end, 17, GUIDE, 1)
+        gap = 9 if end < mid else -9
+        svg.arrow((end + mid) / 2 - gap, 10, end, 10, color=PARAM, width=1.2, head=6)
+        svg.arrow((end + mid) / 2 + gap, 10, mid, 10, color=PARAM, width=1.2, head=6)
+        svg.text((end + mid) / 2, 10, "d", PARAM, 15)
+    svg.line(mid, 3, mid, 17, GUIDE, 1)
     svg.line(left - r, ceiling + 24, left - r, y1 - 16)
     svg.line(left + r, ceiling + 24, mid - r, ym)
     svg.circle(mid, ym, r, fill="#eef1f4")
@@ -167,6 +175,12 @@ def pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) 
     svg.line(mid + 17, centre, mid + 40, centre, GUIDE, 1, dash=True)
     svg.text(mid + 46, (base + centre) / 2, "Y", ACCENT, 16)
     svg.text(mid + 66, (base + centre) / 2, "< 0", ACCENT, 13)
+    # c: how far below the line M would hang with y₁ = y₂ = 0; drawn to the figure's own scale, so that
+    # Y = −(y₁ + y₂)/2 − c holds for the heights drawn (the level stops short of the strings)
+    level = base + (centre - base) - ((base - y1) + (base - y2)) / 2
+    svg.line(26, level, mid - r - 16, level, GUIDE, 1, dash=True)
+    svg.arrow(48, base, 48, level, color=PARAM, width=1.4, head=6)
+    svg.text(36, (base + level) / 2, "c", PARAM, 15)
     svg.arrow(mid, 48, mid, 84, color=PARAM)
     svg.text(mid + 12, 66, "g", PARAM)
     return svg

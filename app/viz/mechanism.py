@@ -79,15 +79,15 @@ PENDULUM = Family(
 # the turning wire reaches a little beyond the bead's farthest distance from the axis
 _RIM = f"(1.25*{_max('Abs(qmax_rho)', 'Abs(qmin_rho)')} + 0.1)"
 _RAMP = "(1.15*(qmax_X + Abs(qmax_X))/2 + 0.5)"
-# The pulleys: end masses drawn at x = -W and W, with W growing with the run's vertical extent so
-# the device is not a sliver in a tall frame; wheels of radius r = W/3 make every string vertical
-# (end mass at -W, fixed wheel from -W to -W + 2r = -r, movable wheel from -r to r).
-_W = _max("1", "0.3*(qmax_y1 - qmin_y1 + qmax_y2 - qmin_y2)")
+# The pulleys: end masses drawn at x = -W and W, W the scene's spacing d unless the run's vertical extent
+# is so large that the device would be a sliver in a tall frame; wheels of radius r = W/3 make every string
+# vertical (end mass at -W, fixed wheel from -W to -W + 2r = -r, movable wheel from -r to r).
+_W = _max("d", "0.3*(qmax_y1 - qmin_y1 + qmax_y2 - qmin_y2)")
 _R = f"({_W})/3"
 _HANG = f"1.6*{_R}"  # from the middle mass up to its wheel's centre: the mass hangs clear below the rim
-_Y = "(-(y1 + y2)/2 - 1)"  # the middle mass's height (the scene's particle)
+_Y = "(-(y1 + y2)/2 - c)"  # the middle mass's height (the scene's particle), c set by the string's length
 # the fixed wheels' height: above both end masses and above the movable wheel's highest reach
-_TOP = _max(_max("qmax_y1", "qmax_y2"), f"-(qmin_y1 + qmin_y2)/2 - 1 + {_HANG} + 2*{_R}") + f" + {_R} + 0.5*{_R}"
+_TOP = _max(_max("qmax_y1", "qmax_y2"), f"-(qmin_y1 + qmin_y2)/2 - c + {_HANG} + 2*{_R}") + f" + {_R} + 0.5*{_R}"
 # The sliding wedge: D along its slope from the top corner; the top is at D = min(qmin_D, 0) (a run that starts
 # above the corner still has slope under it), the foot a little beyond the block's farthest reach.
 _WEDGE_TOP = "((qmin_D - Abs(qmin_D))/2)"
@@ -220,9 +220,9 @@ FAMILIES: dict[str, Family] = {
         slack="string tension",
         caption=(
             "Two fixed wheels hang from the ceiling; the string runs from the left mass over them and under the "
-            f"movable wheel that carries the middle mass, to the right mass; {TRAIL}. Only the heights are to "
-            "scale (the masses' horizontal places are chosen for the drawing); a string with negative tension "
-            "is drawn slack."
+            f"movable wheel that carries the middle mass, to the right mass; {TRAIL}. The heights are to scale, "
+            "and the end masses are drawn d either side of the middle unless the run is so tall that the device "
+            "would be a sliver, then farther apart; a string with negative tension is drawn slack."
         ),
     ),
     "double-pendulum": Family(

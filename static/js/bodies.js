@@ -43,6 +43,17 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
   // each label goes to the corner beside its body where it covers the fewest rods, strings, springs and
   // bodies and stays inside the canvas, with a white halo so that bodies that meet keep readable labels
   const segments = player.spec.links.map((link) => [player.at(link.from, i), player.at(link.to, i)]);
+  // the outlines of the fixed solids (a wedge's slope) and of the blocks: a label with its white halo over a
+  // slope hides the ground a block stands on, and the block looks perched on a corner (prof-h 8)
+  const edges = [];
+  const outline = (corners) => corners.forEach((c, k) => edges.push([c, corners[(k + 1) % corners.length]]));
+  for (const solid of player.spec.solids || []) outline(solid.corners.map((p) => player.at(p, i)));
+  player.masses.forEach((p, k) => {
+    const base = blockBase(player, p, i, dpr, ...placed[k]);
+    if (!base) return;
+    const { a, b, nx, ny } = base, H = BLOCK_HEIGHT * dpr;
+    outline([a, b, [b[0] + H * nx, b[1] + H * ny], [a[0] + H * nx, a[1] + H * ny]]);
+  });
   const boxes = [];
   // the handle's words as wide as the page sets them (bold, 0.8 rem, with their padding)
   const font = ctx.font;
@@ -56,6 +67,11 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
     const inside = (x, y) => x >= x0 && x <= x1 && y >= y0 && y <= y1;
     for (const [[ax, ay], [bx, by]] of segments) {
       for (let f = 0; f <= 1; f += 0.125) if (inside(ax + (bx - ax) * f, ay + (by - ay) * f)) { c += 1; break; }
+    }
+    // an outline is looked at every 2 px, however long it is (a slope may be the canvas's width)
+    for (const [[ax, ay], [bx, by]] of edges) {
+      const n = Math.max(1, Math.ceil(Math.hypot(bx - ax, by - ay) / (2 * dpr)));
+      for (let s = 0; s <= n; s++) if (inside(ax + ((bx - ax) * s) / n, ay + ((by - ay) * s) / n)) { c += 1; break; }
     }
     for (const [bx, by] of placed) if (inside(bx, by) || inside(bx - 10 * dpr, by) || inside(bx + 10 * dpr, by)) c += 2;
     // labels already placed, and the velocity handle (drawn at the first instant), weigh most
@@ -100,6 +116,7 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
 }
 
 const BLOCK_HALF = 15; // half a block's length along its slope, CSS pixels
+const BLOCK_HEIGHT = 18; // a block's height out of its slope, CSS pixels
 
 /**
  * A block's base on screen at instant i (null for a ball): its ends a and b along the slope, its middle, and
@@ -129,7 +146,7 @@ export function drawBodies(player, ctx, i, dpr, placed) {
     const base = blockBase(player, p, i, dpr, x, y);
     if (base) {
       // a block: a rectangle whose base lies on its slope (from a to b), standing up from it by H
-      const { a, b, nx, ny } = base, H = 18 * dpr;
+      const { a, b, nx, ny } = base, H = BLOCK_HEIGHT * dpr;
       ctx.beginPath();
       ctx.moveTo(a[0], a[1]); ctx.lineTo(b[0], b[1]);
       ctx.lineTo(b[0] + H * nx, b[1] + H * ny); ctx.lineTo(a[0] + H * nx, a[1] + H * ny);

@@ -185,6 +185,16 @@ def test_the_block_lies_on_its_slope_at_both_sizes(browser, live_server, artifac
         if scene_id == "movable-incline":
             wedge = next(b for b in bodies if b["label"] == "wedge")
             assert min(p[0] for p in solid) < wedge["x"] < max(p[0] for p in solid)  # its label's body is inside it
+            # prof-h 8: no label (drawn with a white halo) hides the slope, else at D = 0 the slope under the
+            # block's far half vanished behind "block" and the block looked perched on the wedge's corner
+            labels = json.loads(canvas.get_attribute("data-labels"))
+            steps = math.ceil(length)
+            for box in (lb["box"] for lb in labels):
+                hidden = [
+                    s for s in range(steps + 1)
+                    if box[0] <= ax + (bx - ax) * s / steps <= box[2] and box[1] <= ay + (by - ay) * s / steps <= box[3]
+                ]  # fmt: skip
+                assert not hidden, (box, (ax, ay), (bx, by))
         name = "-".join(f"{q}{v}" for q, v in start.items()) or "start"
         canvas.screenshot(path=artifacts / f"slope-{scene_id}-{name}-{width}.png")
     finally:

@@ -532,7 +532,7 @@ CORRECT = [
     ("rail-two-body", "equation", "x2", "m2*x2_ddot + k*(x2 - x1 - l0)"),
     ("rail-two-body", "kinetic", None, "(m1*x1_dot**2 + m2*x2_dot**2)/2"),
     ("pulley", "kinetic", None, "M*(y1_dot + y2_dot)**2/8 + m1*y1_dot**2/2 + m2*y2_dot**2/2"),
-    ("pulley", "potential", None, "g*(m1*y1 + m2*y2) - M*g*(y1 + y2 + 3)/2"),
+    ("pulley", "potential", None, "g*(m1*y1 + m2*y2) - M*g*(y1 + y2 + 3*c)/2"),
     ("pulley", "equation", "y1", "(4*m1 + M)*y1_ddot + M*y2_ddot + 4*g*m1 - 2*M*g"),
     ("movable-incline", "momentum", "X", "(M + m)*X_dot + m*D_dot*cos(alpha)"),
     ("movable-incline", "equation", "D", "D_ddot + X_ddot*cos(alpha) - g*sin(alpha)"),

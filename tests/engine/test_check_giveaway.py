@@ -176,19 +176,32 @@ def test_a_wrong_reply_to_a_follow_up_is_diagnosed_by_the_steps_own_mistakes(rep
 
 
 @pytest.mark.parametrize(
-    ("scene", "typed", "said"),
+    ("scene", "typed", "said", "with_unit"),
     [
         # student-h 3: a bare number inside a bracket took the bracket's units, and the answer read as another zero
         # of U ("plus the constant 3mg", a force)
-        ("helix-bead", "m*g*(z + 3)", "3 has no unit and cannot be added to a length"),
-        ("simple-pendulum", "m*g*(R*(1 - cos(theta)) + 2)", "2 has no unit and cannot be added to a length"),
+        ("helix-bead", "m*g*(z + 3)", "3 has no unit and cannot be added to a length", "m*g*(z + 3*R)"),
+        (
+            "simple-pendulum",
+            "m*g*(R*(1 - cos(theta)) + 2)",
+            "2 has no unit and cannot be added to a length",
+            "m*g*(R*(1 - cos(theta)) + 2*R)",
+        ),
+        # issue 40: the pulley names its lengths (d, c), so it is held to the same rule; it was exempt while its
+        # own middle height read −(y₁ + y₂)/2 − 1
+        (
+            "pulley",
+            "g*(m1*y1 + m2*y2) - M*g*(y1 + y2 + 3)/2",
+            "3 has no unit and cannot be added to a length",
+            "g*(m1*y1 + m2*y2) - M*g*(y1 + y2 + 3*c)/2",
+        ),
     ],
 )
-def test_a_bare_number_inside_a_bracket_is_a_units_mistake(scene, typed, said):
+def test_a_bare_number_inside_a_bracket_is_a_units_mistake(scene, typed, said, with_unit):
     result = judge(step_problem(scene, "potential", None), typed)
     assert result["verdict"] == "incorrect" and said in result["hint"], result
     # the same zero moved with its unit is another zero of U
-    fine = judge(step_problem(scene, "potential", None), typed.replace("3)", "3*R)").replace("2)", "2*R)"))
+    fine = judge(step_problem(scene, "potential", None), with_unit)
     assert fine["verdict"] == "equivalent", fine
 
 

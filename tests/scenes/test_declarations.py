@@ -2,6 +2,7 @@
 
 import pytest
 
+from app.engine.dimensions import number_beside_units, system_dimensions
 from app.scenes import SCENES
 from app.service.derivations import derivation, derivation_document
 from app.viz.panels import OPTIONAL, constant_accelerations
@@ -15,7 +16,7 @@ TABLE = {
     "tabletop-spring": (("r", "theta"), ("m", "k")),
     "spherical-pendulum": (("theta", "phi"), ("m", "g", "R")),
     "rail-two-body": (("x1", "x2"), ("m1", "m2", "k", "l0")),
-    "pulley": (("y1", "y2"), ("m1", "m2", "M", "g")),
+    "pulley": (("y1", "y2"), ("m1", "m2", "M", "g", "d", "c")),
     "movable-incline": (("X", "D"), ("m", "M", "g", "alpha")),
     "rotating-parabola": (("rho",), ("m", "g", "alpha", "omega")),
     "damped-pendulum": (("theta",), ("m", "g", "R", "b")),
@@ -95,3 +96,14 @@ def test_cyclic_coordinates_and_h_equals_e(scene_id):
         assert "h" in names and "E" not in names
     else:
         assert "E" in names
+
+
+def test_the_pulleys_lengths_are_named():
+    # issue 40: a textbook names its lengths; a bare number for a length (the middle mass once hung at
+    # −(y₁ + y₂)/2 − 1, the end masses at x = ±1) is a form no reader could check the units of
+    d = derivation("pulley")
+    known = system_dimensions(d)
+    for r in d.mechanics.positions:
+        for x in r:
+            assert not x.is_Number or x == 0, r
+            assert not number_beside_units(x, known), r

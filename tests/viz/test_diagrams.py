@@ -40,7 +40,7 @@ def test_the_pulley_figure_marks_all_three_heights_its_caption_names():
     assert "Y measured upward" in SCENES["pulley"].figure
     for name in ("y₁", "y₂", "Y"):
         assert f">{name}</text>" in svg, name
-    # prof-h 2: measured from the line where U = 0, the string makes Y = −(y₁ + y₂)/2 − 1 m negative: M hangs
+    # prof-h 2: measured from the line where U = 0, the string makes Y = −(y₁ + y₂)/2 − c negative: M hangs
     # below the line while the end masses are above it, and the figure says so
     assert ">U = 0</text>" in svg and ">&lt; 0</text>" in svg and "(Y < 0)" in SCENES["pulley"].figure
 

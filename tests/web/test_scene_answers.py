@@ -93,7 +93,7 @@ def test_the_rotating_wire_says_why_e_minus_h_is_2t0(client):
         ("tabletop-spring", "euler-lagrange", "only on the circular orbit", "balances spring and centrifugal"),
         ("incline-block", "lagrangian", "constant force", "free particle"),
         ("helix-bead", "velocities", "at the rate α ż", "turns by α ż"),
-        ("pulley", "accelerations", "plus a constant", "− 1 m"),
+        ("pulley", "accelerations", "Y = −(y₁ + y₂)/2 − c", "− 1 m"),
         ("pulley", "kinetic", "⅛ M (ẏ₁ + ẏ₂)²", "through the term in"),
         ("movable-incline", "effective-potential", "is a constant", "\u0000"),
     ],
@@ -122,6 +122,12 @@ def test_the_incline_and_the_ball_are_named_one_way(client):
         ("tabletop-spring", "reduced-equilibria", r"r_0 = \left(\frac{p_{\theta}^{2}}{m k}\right)^{1/4}"),
         # the frequency at the root θ₀, not at every θ
         ("spherical-pendulum", "reduced-equilibria", r"\frac{3 p_{\varphi}^{2}}{m^{2} R^{4} \sin^{4} {\theta_{0}}}"),
+        # issue 40 (prof-h 6): 2/m_eff as one fraction, never 2 over m(M + m sin²α)/(M + m)
+        (
+            "movable-incline",
+            "time-integral",
+            r"\sqrt{\frac{2 \left(M + m\right)}{m \left(M + m \sin^{2} {\alpha}\right)}\left(E + m g D \sin {\alpha}",
+        ),
     ],
 )
 def test_steps_print_textbook_forms(client, scene_id, key, tex):
