@@ -85,7 +85,7 @@ COUPLED_OSCILLATORS = Scene(
     ),
     figure=(
         "A wall, a spring k, the first mass, a spring κ, the second mass, a spring k, a wall; x1 and x2 measured "
-        "from the masses' rest positions."
+        "from the masses' rest positions, d either side of the middle; the walls stand 3d from the middle."
     ),
     system=System(
         coordinates=("x1", "x2"),
@@ -93,9 +93,10 @@ COUPLED_OSCILLATORS = Scene(
             Parameter("m", 1.0, "kg", 0.01, 100.0, "mass of each body"),
             Parameter("k", 10.0, "N/m", 0.01, 1.0e6, "stiffness of the two outer springs"),
             Parameter("kappa", 1.0, "N/m", 0.0, 1.0e6, "stiffness of the coupling spring between the masses"),
+            Parameter("d", 1.0, "m", 0.1, 10.0, "distance of each mass's rest position from the middle"),
         ),
-        # rest positions at -1 m and +1 m
-        particles=(Particle("m", ("x1 - 1", "0", "0"), "left mass"), Particle("m", ("x2 + 1", "0", "0"), "right mass")),
+        # rest positions at -d and +d, the walls at -3d and +3d: each spring is 2d long when relaxed
+        particles=(Particle("m", ("x1 - d", "0", "0"), "left mass"), Particle("m", ("x2 + d", "0", "0"), "right mass")),
         potential="k*x1**2/2 + kappa*(x2 - x1)**2/2 + k*x2**2/2",
     ),
     initial={"x1": 0.2, "x1_dot": 0.0, "x2": 0.0, "x2_dot": 0.0},

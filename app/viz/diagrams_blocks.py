@@ -202,6 +202,12 @@ def coupled_oscillators(p: dict[str, float], q: dict[str, float], marks: Sequenc
     svg.text((14 + x1 - w / 2) / 2, floor - 40, "k", PARAM, 16)
     svg.text((x1 + x2) / 2, floor - 40, "κ", PARAM, 16)
     svg.text((x2 + w / 2 + 306) / 2, floor - 40, "k", PARAM, 16)
+    # the rest positions, d either side of the middle (the walls 3d out)
+    middle = (x1 + x2) / 2
+    svg.line(middle, floor - 2, middle, floor - 78, GUIDE, 1.2, dash=True)
+    svg.arrow(middle, floor - 66, x2, floor - 66, color=PARAM, width=1.4, head=6)
+    svg.line(x2, floor - 36, x2, floor - 72, GUIDE, 1.2, dash=True)
+    svg.text((middle + x2) / 2, floor - 72, "d", PARAM, 15)
     # displacements measured from the rest positions
     for x, name in ((x1, "x₁"), (x2, "x₂")):
         svg.line(x, floor + 6, x, floor + 40, GUIDE, 1.2, dash=True)

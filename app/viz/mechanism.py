@@ -231,13 +231,13 @@ FAMILIES: dict[str, Family] = {
         caption=f"Side view: the pivot, the two rods and the two bobs, with {TRAIL}.",
     ),
     "three-springs": Family(
-        # walls 2 m out from the masses' rest positions (-1 m and +1 m), the three springs between
-        anchors=(("left wall", ("-3", "0", "0")), ("right wall", ("3", "0", "0"))),
+        # walls 2d out from the masses' rest positions (-d and +d), the three springs between
+        anchors=(("left wall", ("-3*d", "0", "0")), ("right wall", ("3*d", "0", "0"))),
         links=(("left wall", "#0", "spring"), ("#0", "#1", "spring"), ("#1", "right wall", "spring")),
         curves=(
-            ("floor", "-3", "3", ("s", "0", "-0.12"), "ground"),
-            ("left wall", "-0.12", "0.6", ("-3", "0", "s"), "wall-left"),
-            ("right wall", "-0.12", "0.6", ("3", "0", "s"), "wall-right"),
+            ("floor", "-3*d", "3*d", ("s", "0", "-0.12*d"), "ground"),
+            ("left wall", "-0.12*d", "0.6*d", ("-3*d", "0", "s"), "wall-left"),
+            ("right wall", "-0.12*d", "0.6*d", ("3*d", "0", "s"), "wall-right"),
         ),
         caption=(f"Side view: the two walls, the three springs (drawn stretching) and the two masses, with {TRAIL}."),
     ),

@@ -21,7 +21,7 @@ TABLE = {
     "rotating-parabola": (("rho",), ("m", "g", "alpha", "omega")),
     "damped-pendulum": (("theta",), ("m", "g", "R", "b")),
     "double-pendulum": (("theta1", "theta2"), ("m1", "m2", "l1", "l2", "g")),
-    "coupled-oscillators": (("x1", "x2"), ("m", "k", "kappa")),
+    "coupled-oscillators": (("x1", "x2"), ("m", "k", "kappa", "d")),
 }
 BEYOND_CHAPTER = {"double-pendulum", "coupled-oscillators", "damped-pendulum"}
 # what the engine must find: cyclic coordinates and whether h = E

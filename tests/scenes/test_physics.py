@@ -191,7 +191,7 @@ def test_coupled_oscillators_beat_at_the_difference_of_the_mode_frequencies():
     y0 = np.array([s.initial[n] for n in ("x1", "x2", "x1_dot", "x2_dot")])
     run = simulate(
         numeric_system(derivation("coupled-oscillators")),
-        np.array([m_, k_, kappa]),
+        np.array([m_, k_, kappa, 1.0]),
         y0,
         2 * beat,
         4001,
