@@ -47,6 +47,32 @@ def _group(tex: str, i: int) -> tuple[str, int]:
     return tex[i + 1 :], len(tex)
 
 
+_MATRICES = {"matrix", "pmatrix", "bmatrix", "vmatrix"}
+
+
+def _cells(body: str) -> list[list[str]]:
+    """A matrix's body cut into rows at its top-level ``\\\\`` and each row into cells at ``&``."""
+    rows: list[list[str]] = [[""]]
+    depth, i = 0, 0
+    while i < len(body):
+        c = body[i]
+        if body.startswith("\\begin{", i):
+            depth += 1
+        elif body.startswith("\\end{", i):
+            depth -= 1
+        if c == "\\" and body[i + 1 : i + 2] == "\\" and depth == 0:
+            rows.append([""])
+            i += 2
+            continue
+        if c == "&" and depth == 0:
+            rows[-1].append("")
+        else:
+            rows[-1][-1] += body[i : i + 2] if c == "\\" else c
+            i += 1 if c == "\\" else 0
+        i += 1
+    return rows
+
+
 def width(tex: str) -> float:
     """The width of a formula set in display style, in ems (an estimate good to about 15 %)."""
     total, i = 0.0, 0
@@ -63,7 +89,16 @@ def width(tex: str) -> float:
             elif name == "text":
                 body, i = _group(tex, i)
                 total += 0.5 * len(body)
-            elif name in ("begin", "end"):
+            elif name == "begin":
+                env, i = _group(tex, i)
+                close = tex.find(rf"\end{{{env}}}", i)
+                if env in _MATRICES and close >= 0:
+                    # a matrix is as wide as its widest row, each row its cells side by side a quad apart,
+                    # with its brackets; never the sum of its rows, which are stacked
+                    rows = _cells(tex[i:close])
+                    total += max(sum(width(c) for c in r) + 1.0 * (len(r) - 1) for r in rows) + 0.8
+                    i = close + len(rf"\end{{{env}}}")
+            elif name == "end":
                 _, i = _group(tex, i)
             elif name == "\\":
                 total += 0.0

@@ -556,7 +556,14 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, n
     Mt, Kt, wt = (notation.letter(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
     Mu, Ku, wu = (notation.text(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
     eu, au = (notation.text(c, d) for c in ("displacement", "amplitude"))
-    rows = [rf"{Mt} = {pr.tex(_rounded(e.mass))},\quad {Kt} = {pr.tex(_rounded(e.stiffness))}"]
+    order_text = ", ".join(plain_name(n) for n in e.coordinates)
+    amp = notation.letter("amplitude", d)
+    order = ", ".join(pr.tex(sym[n]) for n in e.coordinates)
+    rows = [
+        rf"{Mt} = {pr.tex(_rounded(e.mass))},\quad {Kt} = {pr.tex(_rounded(e.stiffness))}",
+        # the order of the amplitudes in every mode's column, said once
+        rf"\text{{amplitudes of }} ({order}):",
+    ]
     for i, m in enumerate(e.modes, start=1):
         # ω² in 1/s² whatever the coordinates; four figures at the default parameters beside the closed form
         unit = r"\,\mathrm{s}^{-2}" if m.omega_squared != 0 else ""
@@ -566,11 +573,11 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, n
             else (pr.tex(m.exact) if m.exact is not None else _figures(m.omega_squared)) + unit
         )
         exact_shape = _exact_shape(e, m, d)
-        shape = ", ".join(
-            f"{pr.tex(sym[n])}: {pr.tex(x) if exact_shape else _figures(a)}"
-            for n, a, x in zip(e.coordinates, m.shape, exact_shape or m.shape, strict=True)
+        # the mode's amplitudes as a column vector, a_k = (1, −1)ᵀ, in the coordinates' order stated above
+        column = r"\\".join(
+            pr.tex(x) if exact_shape else _figures(a) for a, x in zip(m.shape, exact_shape or m.shape, strict=True)
         )
-        rows.append(rf"{wt}_{{{i}}}^2 = {value},\quad \text{{shape }} ({shape})")
+        rows.append(rf"{wt}_{{{i}}}^2 = {value},\quad {amp}_{{{i}}} = \begin{{pmatrix}}{column}\end{{pmatrix}}")
     moving = e.linear is not None and e.linear.moving
     if moving:
         rows.append(_exponents(e, d))
@@ -590,7 +597,8 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, n
                 f"Near the equilibrium {Mu} {eu}̈ + {Ku} {eu} = 0, with {eu} the small displacement from it, {Mu} the "
                 f"mass matrix and {Ku} the Hessian of the potential there; {eu} = {au} cos {wu}t solves it when "
                 f"({Ku} − {wu}² {Mu}) {au} = 0, so each {wu}² is an eigenvalue of {Ku} relative to {Mu} and {au} its "
-                "shape (numbers at the default parameters)"
+                f"shape, the column of the coordinates' amplitudes in the order shown ({order_text}), its largest "
+                "entry 1 (numbers at the default parameters)"
                 + (", the shapes of the motion without its velocity terms. " if moving else ". ")
             )
             if number == next((i for i, x in enumerate(nm.equilibria, start=1) if not x.momenta), number)
