@@ -19,8 +19,11 @@ import re
 # an em), the results box less, a page of the LaTeX export (11 pt, 2 cm margins) about 44 less its indents;
 # one limit for all, so the page and the export break at the same places
 LIMIT = 36.0
+# ems of display math a step's box holds on a phone (390 px wide, about 19 px an em): a formula wider than this
+# that the page cannot break at a top-level sign scrolls sideways there
+PHONE = 18.0
 _COMMAND = re.compile(r"\\([A-Za-z]+|.)")
-_ZERO = {"left", "right", "big", "Big", "bigg", "Bigg", "displaystyle", "limits", "mathrm", "mathbf", "vec", "dot",
+_ZERO = {"left", "right", "big", "Big", "bigg", "Bigg", "bigl", "bigr", "Bigl", "Bigr", "displaystyle", "limits", "mathrm", "mathbf", "vec", "dot",
          "ddot", "hat", "bar", "tilde", "begin", "end", "text"}  # fmt: skip
 _WIDE = {"sin": 1.4, "cos": 1.5, "tan": 1.5, "log": 1.3, "exp": 1.5, "sqrt": 1.0, "quad": 1.0, "qquad": 2.0,
          "sum": 1.2, "int": 0.8, "partial": 0.6, ",": 0.17, ";": 0.28, "!": 0.0, " ": 0.3}  # fmt: skip

@@ -111,6 +111,17 @@ def exponent(d: Derivation) -> tuple[str, str]:
     return next((c for c in EXPONENT if c[1] not in taken), EXPONENT[-1])
 
 
+# the radicand named where a frequency's square root is too long to print inside it (ω² = g/(2m₁l₁l₂) [… ∓ √Δ]):
+# Δ, as a textbook names a discriminant; D where a coordinate or parameter is already called Δ
+RADICAND: tuple[tuple[str, str], ...] = ((r"\Delta", "Δ"), ("D", "D"))
+
+
+def radicand(d: Derivation) -> tuple[str, str]:
+    """The letter (LaTeX, Unicode) of the long radicand named in the frequencies of the normal modes."""
+    taken = _taken(d)
+    return next((c for c in RADICAND if c[1] not in taken), RADICAND[-1])
+
+
 def rest_potential(d: Derivation) -> tuple[str, str]:
     """The name (LaTeX, Unicode) of −L at q̇ = 0, U − T₀, whose stationary points are the equilibria: U_eff, the
     effective potential, as on every page that reduces to it; V only where the effective-potential step writes
