@@ -340,6 +340,13 @@ def _sometimes(
             tex, uni = exponent(d)
             rows.append(_row(tex, uni, f"exponent of a small motion {text('displacement', d)} ∝ e^({uni}t) about an "
                              "equilibrium, a root of its auxiliary equation", "1/s" if energy else "", "derived"))  # fmt: skip
+    if len(d.table.q) > 1:
+        # printed only where an ω² is too long to hold its root whole (the double pendulum's); the page lists a
+        # row only where its letter is printed (``printed``)
+        tex, uni = radicand(d)
+        rows.append(_row(tex, uni, f"quantity under the square root in {text('frequency', d)}², named where "
+                         f"{text('frequency', d)}² is too long to print it whole",
+                         "that of the square of the other term in its bracket" if energy else "", "derived"))  # fmt: skip
     if forces:
         rows.append(
             _row(CONSTRAINT, "𝒞", "a constraint written as a surface 𝒞 = 0 in Cartesian coordinates", "per constraint (𝒞₁, … below)" if energy else "", "derived")
