@@ -19,8 +19,11 @@ import re
 # an em), the results box less, a page of the LaTeX export (11 pt, 2 cm margins) about 44 less its indents;
 # one limit for all, so the page and the export break at the same places
 LIMIT = 36.0
+# ems of display math a step's box holds on a phone (390 px wide, about 19 px an em): a formula wider than this
+# that the page cannot break at a top-level sign scrolls sideways there
+PHONE = 18.0
 _COMMAND = re.compile(r"\\([A-Za-z]+|.)")
-_ZERO = {"left", "right", "big", "Big", "bigg", "Bigg", "displaystyle", "limits", "mathrm", "mathbf", "vec", "dot",
+_ZERO = {"left", "right", "big", "Big", "bigg", "Bigg", "bigl", "bigr", "Bigl", "Bigr", "displaystyle", "limits", "mathrm", "mathbf", "vec", "dot",
          "ddot", "hat", "bar", "tilde", "begin", "end", "text"}  # fmt: skip
 _WIDE = {"sin": 1.4, "cos": 1.5, "tan": 1.5, "log": 1.3, "exp": 1.5, "sqrt": 1.0, "quad": 1.0, "qquad": 2.0,
          "sum": 1.2, "int": 0.8, "partial": 0.6, ",": 0.17, ";": 0.28, "!": 0.0, " ": 0.3}  # fmt: skip
@@ -47,6 +50,32 @@ def _group(tex: str, i: int) -> tuple[str, int]:
     return tex[i + 1 :], len(tex)
 
 
+_MATRICES = {"matrix", "pmatrix", "bmatrix", "vmatrix"}
+
+
+def _cells(body: str) -> list[list[str]]:
+    """A matrix's body cut into rows at its top-level ``\\\\`` and each row into cells at ``&``."""
+    rows: list[list[str]] = [[""]]
+    depth, i = 0, 0
+    while i < len(body):
+        c = body[i]
+        if body.startswith("\\begin{", i):
+            depth += 1
+        elif body.startswith("\\end{", i):
+            depth -= 1
+        if c == "\\" and body[i + 1 : i + 2] == "\\" and depth == 0:
+            rows.append([""])
+            i += 2
+            continue
+        if c == "&" and depth == 0:
+            rows[-1].append("")
+        else:
+            rows[-1][-1] += body[i : i + 2] if c == "\\" else c
+            i += 1 if c == "\\" else 0
+        i += 1
+    return rows
+
+
 def width(tex: str) -> float:
     """The width of a formula set in display style, in ems (an estimate good to about 15 %)."""
     total, i = 0.0, 0
@@ -63,7 +92,16 @@ def width(tex: str) -> float:
             elif name == "text":
                 body, i = _group(tex, i)
                 total += 0.5 * len(body)
-            elif name in ("begin", "end"):
+            elif name == "begin":
+                env, i = _group(tex, i)
+                close = tex.find(rf"\end{{{env}}}", i)
+                if env in _MATRICES and close >= 0:
+                    # a matrix is as wide as its widest row, each row its cells side by side a quad apart,
+                    # with its brackets; never the sum of its rows, which are stacked
+                    rows = _cells(tex[i:close])
+                    total += max(sum(width(c) for c in r) + 1.0 * (len(r) - 1) for r in rows) + 0.8
+                    i = close + len(rf"\end{{{env}}}")
+            elif name == "end":
                 _, i = _group(tex, i)
             elif name == "\\":
                 total += 0.0

@@ -23,6 +23,7 @@ engine's own cheap display form (sin² + cos² = 1 collapsed, SymPy's ``simplify
 
 from __future__ import annotations
 
+import itertools
 import threading
 from collections.abc import Iterator, Mapping
 from functools import partial
@@ -689,3 +690,64 @@ def _radicand(base: sp.Expr) -> sp.Expr:
                 continue
             forms.append(f * (sp.factor(q) * f + sp.factor(r)))
     return _shortest(forms)
+
+
+def gathered(expr: sp.Expr) -> sp.Expr:
+    """A force or a coefficient of the multipliers' steps as a textbook prints it, where ``textbook_form``
+    keeps the bracket as built: a number or factor common to a bracket's terms taken out of it, term by term
+    (λ₁(2R − 2z) − mg → 2λ₁(R − z) − mg; −2(gz − ẋ² − gR) → 2(ẋ² + gR − gz)), never a sign out of the whole
+    sum (−2λ₁η − λ₂ cos αζ stays); and a numerator's terms beyond its number collected where that shortens them
+    (1 + α²ξ² cos² αζ + 2α²ξη sin αζ cos αζ + α²η² sin² αζ → 1 + α²(ξ cos αζ + η sin αζ)²)."""
+    if not isinstance(expr, sp.Expr) or not expr.free_symbols:
+        return expr
+    # a perfect square among a bracket's terms written as one: x² + z² − 2Rz + R² → x² + (z − R)²
+    expr = expr.replace(lambda e: isinstance(e, sp.Add), _squares_collected)
+    terms = sp.Add.make_args(expr)
+    outside = [_out_of_brackets(t) for t in terms]
+    # rebuilt only where a term changed: a number times a sum, rebuilt, is multiplied out again (2(ẋ² + gR))
+    out = expr if outside == list(terms) else sp.Add(*outside)
+    numerator, denominator = sp.fraction(out)
+    collected = _collected_numerator(numerator)
+    return out if denominator == 1 or collected is numerator else collected / denominator
+
+
+# the most terms of a sum searched for three that make a perfect square (a² ± 2ab + b²): 56 triples at most
+SQUARE_TERMS = 8
+
+
+def _squares_collected(total: sp.Expr) -> sp.Expr:
+    """Three terms of a sum that are a constant times a perfect square, (z − R)², written so; the rest as it is."""
+    terms = sp.Add.make_args(total)
+    if not 3 <= len(terms) <= SQUARE_TERMS:
+        return total
+    for triple in itertools.combinations(terms, 3):
+        try:
+            factored = sp.factor(sp.Add(*triple))
+        except (BasePolynomialError, NotImplementedError):
+            continue
+        _, rest = factored.as_coeff_Mul()
+        if isinstance(rest, sp.Pow) and rest.exp == 2 and isinstance(rest.base, sp.Add):
+            others = [t for t in terms if t not in triple]
+            return sp.Add(factored, _squares_collected(sp.Add(*others)) if others else sp.Integer(0))
+    return total
+
+
+def _out_of_brackets(term: sp.Expr) -> sp.Expr:
+    """factor_terms on one term: its brackets' common factors before them (2λ₁(R − z))."""
+    out = sp.factor_terms(term)
+    # a term's own sign stays before it: −(2λ₁η + λ₂ cos αζ) is longer to read than the sum it came from
+    return term if out.could_extract_minus_sign() and isinstance(-out, sp.Add) else out
+
+
+def _collected_numerator(numerator: sp.Expr) -> sp.Expr:
+    """A number plus a sum, the sum factored when that has fewer operations: 1 + α²(ξ cos αζ + η sin αζ)²."""
+    if not isinstance(numerator, sp.Add):
+        return numerator
+    number, rest = numerator.as_coeff_Add()
+    if number == 0 or not isinstance(rest, sp.Add):
+        return numerator
+    try:
+        factored = sp.factor(rest)
+    except (BasePolynomialError, NotImplementedError):
+        return numerator
+    return number + factored if sp.count_ops(factored) < sp.count_ops(rest) else numerator

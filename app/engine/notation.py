@@ -111,6 +111,17 @@ def exponent(d: Derivation) -> tuple[str, str]:
     return next((c for c in EXPONENT if c[1] not in taken), EXPONENT[-1])
 
 
+# the radicand named where a frequency's square root is too long to print inside it (ω² = g/(2m₁l₁l₂) [… ∓ √Δ]):
+# Δ, as a textbook names a discriminant; D where a coordinate or parameter is already called Δ
+RADICAND: tuple[tuple[str, str], ...] = ((r"\Delta", "Δ"), ("D", "D"))
+
+
+def radicand(d: Derivation) -> tuple[str, str]:
+    """The letter (LaTeX, Unicode) of the long radicand named in the frequencies of the normal modes."""
+    taken = _taken(d)
+    return next((c for c in RADICAND if c[1] not in taken), RADICAND[-1])
+
+
 def rest_potential(d: Derivation) -> tuple[str, str]:
     """The name (LaTeX, Unicode) of −L at q̇ = 0, U − T₀, whose stationary points are the equilibria: U_eff, the
     effective potential, as on every page that reduces to it; V only where the effective-potential step writes
@@ -329,6 +340,13 @@ def _sometimes(
             tex, uni = exponent(d)
             rows.append(_row(tex, uni, f"exponent of a small motion {text('displacement', d)} ∝ e^({uni}t) about an "
                              "equilibrium, a root of its auxiliary equation", "1/s" if energy else "", "derived"))  # fmt: skip
+    if len(d.table.q) > 1:
+        # printed only where an ω² is too long to hold its root whole (the double pendulum's); the page lists a
+        # row only where its letter is printed (``printed``)
+        tex, uni = radicand(d)
+        rows.append(_row(tex, uni, f"quantity under the square root in {text('frequency', d)}², named where "
+                         f"{text('frequency', d)}² is too long to print it whole",
+                         "that of the square of the other term in its bracket" if energy else "", "derived"))  # fmt: skip
     if forces:
         rows.append(
             _row(CONSTRAINT, "𝒞", "a constraint written as a surface 𝒞 = 0 in Cartesian coordinates", "per constraint (𝒞₁, … below)" if energy else "", "derived")

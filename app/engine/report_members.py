@@ -5,10 +5,12 @@ from __future__ import annotations
 import sympy as sp
 
 from app.engine import meaning, notation
+from app.engine.breaking import _group
 from app.engine.constraints import AXES, ConstraintForce
 from app.engine.constraints import display as constraint_display
 from app.engine.constraints import positive as constraint_positive
 from app.engine.derive import Derivation
+from app.engine.forms import gathered
 from app.engine.multipliers import Multipliers, derived_multipliers
 from app.engine.notation import CONSTRAINT
 from app.engine.report import Printer, _mapping_step, _step, display
@@ -43,13 +45,13 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
     greek = cp.names.get(m.positions[0], "").startswith(r"\xi")  # the Cartesian names moved off the coordinates'
     lam = [notation.multiplier(a)[0] for a in range(1, len(forces) + 1)]
     newton = [
-        rf"{cp.tex(mass)} {cp.tex(acc)} = {cp.tex(rhs)}" + (_signed(cp.tex(f)) if f != 0 else "")
+        rf"{cp.tex(mass)} {cp.tex(acc)} = {cp.tex(gathered(rhs))}" + (_signed(cp.tex(f)) if f != 0 else "")
         for mass, acc, rhs, f in zip(m.masses, m.accelerations, m.newton, m.applied, strict=True)
         if rhs != 0 or f != 0
     ]
     normal = [
-        _terms([(_factor(cp, m.normal[a, b]), lam[b]) for b in range(len(forces)) if m.normal[a, b] != 0])
-        + rf" = {cp.tex(m.right[a])}"
+        _terms([(_factor(cp, gathered(m.normal[a, b])), lam[b]) for b in range(len(forces)) if m.normal[a, b] != 0])
+        + rf" = {cp.tex(gathered(m.right[a]))}"
         for a in range(len(forces))
     ]
     positive = constraint_positive(d)
@@ -127,6 +129,12 @@ def _terms(pairs: list[tuple[str, str]]) -> str:
     for coefficient, name in pairs:
         negative = coefficient.startswith("-") and not coefficient.startswith(r"-\left(")
         body = coefficient[1:].lstrip() if negative else coefficient
+        # a coefficient 1/D takes the multiplier over its bar, as a textbook writes it: λ₁/m, never (1/m) λ₁
+        if body.startswith(r"\frac{1}{"):
+            denominator, end = _group(body, len(r"\frac{1}"))
+            if end == len(body):
+                out += f"{(' - ' if out else '-') if negative else (' + ' if out else '')}\\frac{{{name}}}{{{denominator}}}"
+                continue
         sign = (" - " if out else "-") if negative else (" + " if out else "")
         out += f"{sign}{body} {name}"
     return out

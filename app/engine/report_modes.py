@@ -14,6 +14,7 @@ from typing import Any
 import sympy as sp
 
 from app.engine import notation
+from app.engine.breaking import PHONE, width
 from app.engine.budget import memoized, pythagoras
 from app.engine.damping import damped
 from app.engine.derive import Derivation
@@ -150,6 +151,56 @@ def _exact_shape(e: Equilibrium, m: Mode, d: Derivation) -> list[sp.Expr] | None
             return None
         return [sp.Integer(1), other] if i == 0 else [other, sp.Integer(1)]
     return None
+
+
+def _named_radicand(e: Equilibrium, pr: Printer, d: Derivation) -> tuple[sp.Expr, str, str] | None:
+    """Where an exact ω² is wider than a phone's box and holds the square root of a long radicand (the double
+    pendulum's), that radicand named once, as a textbook sets a long formula: (the root √R, its name's LaTeX Δ,
+    the row "Δ = R"); None where every ω² fits or has no such root."""
+    exact = [m.exact for m in e.modes if m.exact is not None and not m.exact.is_number]
+    if not any(width(pr.tex(x)) > PHONE for x in exact):
+        return None
+    roots = [p for x in exact for p in x.atoms(sp.Pow) if p.exp == sp.S.Half and isinstance(p.base, (sp.Add, sp.Mul))]
+    if not roots:
+        return None
+    radicand = max((p.base for p in roots), key=sp.count_ops)
+    tex = notation.radicand(d)[0]
+    # a product c·(a + b) written as the sum c a + c b, which a narrow page can break at its signs:
+    # Δ = (m₁ + m₂)²(l₁ − l₂)² + 4(m₁ + m₂)m₂l₁l₂, not (m₁ + m₂)((m₁ + m₂)(l₁ − l₂)² + 4m₂l₁l₂)
+    shown = radicand
+    sums = [f for f in sp.Mul.make_args(radicand) if isinstance(f, sp.Add)]
+    if isinstance(radicand, sp.Mul) and sums:
+        widest = max(sums, key=sp.count_ops)
+        shown = sp.Add(*[radicand / widest * term for term in sp.Add.make_args(widest)])
+    return sp.sqrt(radicand), tex, f"{tex} = {pr.tex(shown)}"
+
+
+def _with_radicand(exact: sp.Expr, root: sp.Expr, name: str, pr: Printer) -> str | None:
+    """ω² with the named radicand, its factor before a bracket of the sum that holds the root, as a textbook
+    prints a long quotient: g/(2m₁l₁l₂) [(m₁ + m₂)(l₁ + l₂) − √Δ]; None where the root is not in it so."""
+    if not exact.has(root):
+        return None
+    mark = sp.Dummy("root")
+    # ω² = c (A ± √Δ) / D: the sum A ± √Δ in brackets, c / D before it
+    numerator, denominator = sp.fraction(sp.together(exact.xreplace({root: mark})))
+    sums = [f for f in sp.Mul.make_args(numerator) if isinstance(f, sp.Add) and f.has(mark)]
+    if len(sums) != 1:
+        return None
+    inside = sums[0]
+    sign = inside.coeff(mark)
+    rest = inside - sign * mark
+    if sign not in (1, -1) or rest == 0 or rest.has(mark):
+        return None
+    term = rf"\sqrt{{{name}}}"
+    first = pr.tex(rest)
+    if first.startswith("-"):
+        # A negative: the root leads, √Δ − (m₁ + m₂)(l₁ + l₂), and a sum of two negatives keeps its order
+        body = rf"{'-' if sign < 0 else ''}{term} - {first[1:].lstrip()}"
+    else:
+        body = f"{first} {'-' if sign < 0 else '+'} {term}"
+    # \Bigl[ … \Bigr], not \left[ … \right]: the bracket is no group, so a phone's box may go on to a new line
+    # after its ∓, as a textbook breaks a long bracket, instead of scrolling sideways
+    return rf"{pr.tex(numerator / inside / denominator)} \Bigl[{body}\Bigr]"
 
 
 def _where(e: Equilibrium, pr: Printer, d: Derivation) -> str:
@@ -556,21 +607,30 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, n
     Mt, Kt, wt = (notation.letter(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
     Mu, Ku, wu = (notation.text(c, d) for c in ("mass_matrix", "stiffness", "frequency"))
     eu, au = (notation.text(c, d) for c in ("displacement", "amplitude"))
+    order_text = ", ".join(plain_name(n) for n in e.coordinates)
+    amp = notation.letter("amplitude", d)
+    order = ", ".join(pr.tex(sym[n]) for n in e.coordinates)
     rows = [rf"{Mt} = {pr.tex(_rounded(e.mass))},\quad {Kt} = {pr.tex(_rounded(e.stiffness))}"]
+    named = _named_radicand(e, pr, d)
+    if named is not None:
+        rows.append(named[2])
+    # the order of the amplitudes in every mode's column, said once
+    rows.append(rf"\text{{amplitudes of }} ({order})\text{{:}}")
     for i, m in enumerate(e.modes, start=1):
         # ω² in 1/s² whatever the coordinates; four figures at the default parameters beside the closed form
         unit = r"\,\mathrm{s}^{-2}" if m.omega_squared != 0 else ""
+        closed = _with_radicand(m.exact, named[0], named[1], pr) if named is not None and m.exact is not None else None
         value = (
-            pr.tex(m.exact) + r" \approx " + _figures(m.omega_squared) + unit
+            (closed or pr.tex(m.exact)) + r" \approx " + _figures(m.omega_squared) + unit
             if m.exact is not None and not m.exact.is_number
             else (pr.tex(m.exact) if m.exact is not None else _figures(m.omega_squared)) + unit
         )
         exact_shape = _exact_shape(e, m, d)
-        shape = ", ".join(
-            f"{pr.tex(sym[n])}: {pr.tex(x) if exact_shape else _figures(a)}"
-            for n, a, x in zip(e.coordinates, m.shape, exact_shape or m.shape, strict=True)
+        # the mode's amplitudes as a column vector, a_k = (1, −1)ᵀ, in the coordinates' order stated above
+        column = r"\\".join(
+            pr.tex(x) if exact_shape else _figures(a) for a, x in zip(m.shape, exact_shape or m.shape, strict=True)
         )
-        rows.append(rf"{wt}_{{{i}}}^2 = {value},\quad \text{{shape }} ({shape})")
+        rows.append(rf"{wt}_{{{i}}}^2 = {value},\quad {amp}_{{{i}}} = \begin{{pmatrix}}{column}\end{{pmatrix}}")
     moving = e.linear is not None and e.linear.moving
     if moving:
         rows.append(_exponents(e, d))
@@ -590,7 +650,8 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, n
                 f"Near the equilibrium {Mu} {eu}̈ + {Ku} {eu} = 0, with {eu} the small displacement from it, {Mu} the "
                 f"mass matrix and {Ku} the Hessian of the potential there; {eu} = {au} cos {wu}t solves it when "
                 f"({Ku} − {wu}² {Mu}) {au} = 0, so each {wu}² is an eigenvalue of {Ku} relative to {Mu} and {au} its "
-                "shape (numbers at the default parameters)"
+                f"shape, the column of the coordinates' amplitudes in the order shown ({order_text}), its largest "
+                "entry 1 (numbers at the default parameters)"
                 + (", the shapes of the motion without its velocity terms. " if moving else ". ")
             )
             if number == next((i for i, x in enumerate(nm.equilibria, start=1) if not x.momenta), number)
@@ -603,6 +664,8 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, n
         )
     elif e.linear is not None and e.linear.definite == 0:
         why += "The mass matrix is indefinite here (the kinetic energy is not positive for every velocity). "
+    if named is not None:
+        why += f"{notation.radicand(d)[1]} is the quantity under the square root of {wu}², written once on a line of its own. "
     why += _verdict(e, d)
     return _step(
         key, title, [where, *rows], [e.mass.tolist(), e.stiffness.tolist(), [m.omega_squared for m in e.modes]], why

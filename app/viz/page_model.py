@@ -65,7 +65,8 @@ _SILENT = re.compile(
 def shown_length(tex: str) -> tuple[int, int]:
     """How long a display is as a reader sees it: its lines, and its characters (a command such as
     ``\\omega`` one character, markup none)."""
-    rows = re.sub(r"\\begin\{matrix\}.*?\\end\{matrix\}", "", tex).count("\\\\") + 1  # a matrix's rows are one line
+    # a matrix's rows (a mode's column of amplitudes too) are one line
+    rows = re.sub(r"\\begin\{([pbv]?matrix)\}.*?\\end\{\1\}", "", tex).count("\\\\") + 1
     return rows, len(_SILENT.sub("", re.sub(r"\\[A-Za-z]+", "x", _SILENT.sub("", tex))))
 
 

@@ -46,3 +46,12 @@ def test_the_double_pendulum_results_fit_the_limit_or_are_broken():
     for pair in doc["accelerations"].values():
         tex = pair["latex"]
         assert width(tex) <= breaking.LIMIT or r"\begin{aligned}" in tex
+
+
+def test_a_matrix_is_as_wide_as_its_widest_row_not_its_rows_together():
+    entry = r"- \frac{m_{1} + m_{2}}{m_{2}}"
+    column = rf"\begin{{pmatrix}}{entry}\\{entry}\end{{pmatrix}}"
+    # two entries stacked: one entry's width and the brackets'
+    assert width(entry) < width(column) < 1.5 * width(entry)
+    square = r"\begin{matrix}k + \kappa & - \kappa\\- \kappa & k + \kappa\end{matrix}"
+    assert width(square) < width(r"k + \kappa - \kappa - \kappa k + \kappa")

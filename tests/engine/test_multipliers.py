@@ -96,3 +96,38 @@ def test_the_cartesian_names_never_print_as_a_coordinate_of_the_system():
     assert "ξᵢ, ηᵢ, ζᵢ" in steps("pulley")[0]["explanation"]
     pendulum = " ".join(str(s["latex"]) for s in steps("simple-pendulum")[:2])
     assert r"\dot{x}" in pendulum and r"\xi" not in pendulum
+
+
+def _served(scene_id: str) -> dict[str, str]:
+    return {s["key"]: s["latex"] for s in derivation_document(scene_id)["steps"] if s["key"] in DERIVATION}
+
+
+def test_the_multiplier_steps_print_their_expressions_as_a_textbook_does():
+    # issue 40: a number common to a bracket's terms before it, 2λ₁(R − z), never λ₁(2R − 2z); the perfect
+    # square of the constraint kept as one, x² + (z − R)²; a right side's sign taken into its bracket
+    pendulum = _served("simple-pendulum")
+    assert r"m \ddot{z} &= 2 \lambda_{1} \left(R - z\right) - m g" in pendulum["multiplier-lagrangian"]
+    assert (
+        r"\frac{4}{m} \left(x^{2} + \left(z - R\right)^{2}\right) \lambda_{1} &= "
+        r"2 \left(\dot{x}^{2} + \dot{z}^{2} - g z + g R\right)"
+    ) in pendulum["multiplier-equation"]
+    assert r"\lambda_{1} = \frac{m}{2 R} \left(R \dot{\theta}^{2} + g \cos {\theta}\right)" == pendulum["multiplier"]
+    # a coefficient 1/m puts the multiplier over the bar: λ₁/m = g cos α, and the force is m g cos α
+    incline = _served("incline-block")
+    assert incline["multiplier-equation"].endswith(r"\\ \frac{\lambda_{1}}{m} &= g \cos {\alpha}\end{aligned}")
+    assert incline["multiplier"] == r"\lambda_{1} = m g \cos {\alpha}"
+    wedge = _served("movable-incline")["multiplier-equation"]
+    assert r"-\frac{\cos {\alpha}}{M} \lambda_{1} + \frac{\lambda_{2}}{M} &= g" in wedge
+    # the helix's coefficient of λ₂: its numerator collected, 1 + α²(ξ cos αζ + η sin αζ)², and the common α
+    # of a bracket before it in Newton's law
+    helix = _served("helix-bead")
+    assert (
+        r"\frac{1 + \alpha^{2} \left(\xi \cos {\alpha \zeta} + \eta \sin {\alpha \zeta}\right)^{2}}{m} \lambda_{2}"
+        in helix["multiplier-equation"]
+    )
+    assert (
+        r"m \ddot{\zeta} &= \alpha \lambda_{2} \left(\xi \cos {\alpha \zeta} + \eta \sin {\alpha \zeta}\right) - m g"
+        in helix["multiplier-lagrangian"]
+    )
+    # a term's own sign is never taken out of a whole sum: −2λ₁η − λ₂ cos αζ, not −(2λ₁η + λ₂ cos αζ)
+    assert r"m \ddot{\eta} &= - 2 \lambda_{1} \eta - \lambda_{2} \cos {\alpha \zeta}" in helix["multiplier-lagrangian"]

@@ -75,3 +75,62 @@ def test_which_scenes_have_which_equilibria():
     assert conical["equilibrium"]["theta"] > 0
     for sid in ("helix-bead", "incline-block", "pulley", "movable-incline"):
         assert kinds[sid] == []
+
+
+def test_a_mode_is_printed_as_its_frequency_and_a_column_of_amplitudes():
+    # Taylor §11: ω₁² = k/m, a₁ = (1, 1)ᵀ as a column, the coordinates' order said once above the modes
+    steps = {s["key"]: s for s in derivation_document("coupled-oscillators")["steps"]}
+    served = steps["normal-modes:1"]["latex"]
+    assert (
+        r"\\ &\text{amplitudes of } (x_{1}, x_{2})\text{:} \\ "
+        r"\omega_{1}^2 &= \frac{k}{m} \approx 10\,\mathrm{s}^{-2},\quad a_{1} = \begin{pmatrix}1\\1\end{pmatrix} \\ "
+        r"\omega_{2}^2 &= \frac{k + 2 \kappa}{m} \approx 12\,\mathrm{s}^{-2},\quad a_{2} = \begin{pmatrix}1\\-1\end{pmatrix}"
+        r"\end{aligned}"
+    ) in served
+    assert "shape" not in served and served.count("amplitudes of") == 1
+    assert "in the order shown (x₁, x₂)" in steps["normal-modes:1"]["explanation"]
+    # an exact component stays exact inside its column; numbers keep four figures
+    rail = {s["key"]: s for s in derivation_document("rail-two-body")["steps"]}["normal-modes:1"]["latex"]
+    assert r"\omega_{1}^2 &= 0,\quad a_{1} = \begin{pmatrix}1\\1\end{pmatrix}" in rail
+    assert r"a_{2} = \begin{pmatrix}1\\- \frac{m_{1}}{m_{2}}\end{pmatrix}" in rail
+    pendulum = {s["key"]: s for s in derivation_document("double-pendulum")["steps"]}["normal-modes:1"]["latex"]
+    assert r"a_{1} = \begin{pmatrix}0.7071\\1\end{pmatrix}" in pendulum
+    # the API's JSON keeps the shape as a mapping from coordinate to amplitude
+    (entry,) = derivation_document("coupled-oscillators")["normal_modes"]
+    assert [m["shape"] for m in entry["modes"]] == [{"x1": 1.0, "x2": 1.0}, {"x1": 1.0, "x2": -1.0}]
+
+
+def test_a_long_radicand_in_omega_squared_is_named_on_a_line_of_its_own():
+    # issue 40: the double pendulum's ω² was ((m₁ + m₂)(l₁ + l₂) ∓ √((m₁ + m₂)(…)))g/(2m₁l₁l₂), wider than a phone;
+    # as a textbook sets it, the radicand is named Δ once and ω² is its factor before a bracket that may break
+    steps = {s["key"]: s for s in derivation_document("double-pendulum")["steps"]}
+    served = steps["normal-modes:1"]["latex"]
+    assert (
+        r"\Delta &= \left(m_{1} + m_{2}\right)^{2} \left(l_{1} - l_{2}\right)^{2} "
+        r"+ 4 \left(m_{1} + m_{2}\right) m_{2} l_{1} l_{2} \\ "
+    ) in served
+    bracket = r"\left(m_{1} + m_{2}\right) \left(l_{1} + l_{2}\right)"
+    assert (
+        rf"\omega_{{1}}^2 &= \frac{{g}}{{2 m_{{1}} l_{{1}} l_{{2}}}} \Bigl[{bracket} - \sqrt{{\Delta}}\Bigr] \approx 5.747"
+        in served
+    )
+    assert (
+        rf"\omega_{{2}}^2 &= \frac{{g}}{{2 m_{{1}} l_{{1}} l_{{2}}}} \Bigl[{bracket} + \sqrt{{\Delta}}\Bigr] \approx 33.49"
+        in served
+    )
+    assert (
+        served.count(r"\sqrt") == 2
+        and "Δ is the quantity under the square root" in steps["normal-modes:1"]["explanation"]
+    )
+    # both rods upright: a negative factor before the bracket, and the root first where the rest is negative
+    top = steps["normal-modes:4"]["latex"]
+    assert (
+        rf"\omega_{{1}}^2 &= - \frac{{g}}{{2 m_{{1}} l_{{1}} l_{{2}}}} \Bigl[{bracket} + \sqrt{{\Delta}}\Bigr]" in top
+    )
+    assert rf"\Bigl[\sqrt{{\Delta}} - {bracket}\Bigr] \approx -5.747" in top
+    # a short ω² keeps its form: no Δ where nothing is too wide
+    coupled = {s["key"]: s for s in derivation_document("coupled-oscillators")["steps"]}["normal-modes:1"]["latex"]
+    assert r"\Delta" not in coupled
+    # the API's closed form of each ω² is unchanged (the root written out)
+    (first, *_) = derivation_document("double-pendulum")["normal_modes"]
+    assert all(r"\sqrt{\left(m_{1} + m_{2}\right)" in m["latex"] for m in first["modes"])

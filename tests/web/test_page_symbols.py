@@ -76,3 +76,10 @@ def test_each_letter_of_the_symbols_table_is_printed_elsewhere_on_the_page(clien
     for tex in units(page):
         # the letter's TeX inside some formula of the page outside the table, or its Unicode form in its words
         assert tex in rest or letters[tex.replace("&#39;", "'")] in rest, (scene_id, tex)
+
+
+def test_the_radicand_named_in_the_double_pendulums_frequencies_is_in_its_symbols_table(client):
+    # issue 40: ω² = g/(2m₁l₁l₂) [(m₁ + m₂)(l₁ + l₂) ∓ √Δ] prints Δ; the table says what it is where it is printed
+    pendulum = units(client.get("/scenes/double-pendulum").text)
+    assert pendulum["\\Delta"] == "that of the square of the other term in its bracket"
+    assert "\\Delta" not in units(client.get("/scenes/coupled-oscillators").text)

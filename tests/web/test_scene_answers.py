@@ -30,9 +30,9 @@ def step(client, scene_id: str, key: str) -> dict:
 
 def test_coupled_oscillators_state_modes_frequencies_and_beats_in_results(client):
     box = answers(results(client, "coupled-oscillators"))
-    # ω₁² = k/m with shape (1, 1), ω₂² = (k + 2κ)/m with shape (1, −1), and the beat
-    assert r"\omega_{1}^2 = \frac{k}{m}" in box and r"x_{1}: 1, x_{2}: 1" in box
-    assert r"\omega_{2}^2 = \frac{k + 2 \kappa}{m}" in box and r"x_{1}: 1, x_{2}: -1" in box
+    # ω₁² = k/m with a₁ = (1, 1)ᵀ, ω₂² = (k + 2κ)/m with a₂ = (1, −1)ᵀ, and the beat
+    assert r"\omega_{1}^2 = \frac{k}{m}" in box and r"a_{1} = \begin{pmatrix}1\\1\end{pmatrix}" in box
+    assert r"\omega_{2}^2 = \frac{k + 2 \kappa}{m}" in box and r"a_{2} = \begin{pmatrix}1\\-1\end{pmatrix}" in box
     assert "Beats" in box and r"\cos\left(\tfrac{\omega_2 - \omega_1}{2}\, t\right)" in box
     # nothing of it behind a button, on the page either: four short lines are no "long" expression
     assert "details" not in box
