@@ -5,7 +5,7 @@ from app.scenes.beyond import COUPLED_OSCILLATORS, DOUBLE_PENDULUM
 from app.scenes.inclines import INCLINE_BLOCK, MOVABLE_INCLINE
 from app.scenes.pendulums import DAMPED_PENDULUM, SIMPLE_PENDULUM, SPHERICAL_PENDULUM
 from app.scenes.two_body import PULLEY, RAIL_TWO_BODY, TABLETOP_SPRING
-from app.scenes.types import Constraint, CoordinateChange, Erratum, Event, Parameter, Particle, Scene, System
+from app.scenes.types import Body, Constraint, CoordinateChange, Erratum, Event, Parameter, Particle, Scene, System
 
 SCENES: dict[str, Scene] = {
     scene.id: scene
@@ -25,4 +25,4 @@ SCENES: dict[str, Scene] = {
     )
 }
 
-__all__ = ["SCENES", "Constraint", "CoordinateChange", "Erratum", "Event", "Parameter", "Particle", "Scene", "System"]
+__all__ = ["SCENES", "Body", "Constraint", "CoordinateChange", "Erratum", "Event", "Parameter", "Particle", "Scene", "System"]
