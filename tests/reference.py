@@ -1,7 +1,8 @@
 """An independent route to the equations: sympy.physics.mechanics.
 
 The declaration's strings are read here with ``sympify`` (trusted test input),
-particles become ``Particle`` objects in an inertial frame, and
+particles become ``Particle`` objects in an inertial frame, bodies ``RigidBody`` objects with their own
+principal moments, and
 ``LagrangesMethod`` forms the equations.  Generalized forces Q are added to
 its forcing vector: M q_ddot = f + Q.
 """
@@ -14,6 +15,17 @@ import sympy as sp
 import sympy.physics.mechanics as me
 
 from app.scenes.types import System
+
+# the principal moments about the centre over M size², about the body's x, y (normal to the plane of motion) and
+# z axes, written out here from the solid's geometry, independently of the engine's table: a thin rod along x
+# (none about its own axis), a disc and a ring in the x–z plane (half the moment about the normal for each
+# diameter: the perpendicular-axis theorem), a solid sphere
+_PRINCIPAL = {
+    "rod": (0, sp.Rational(1, 12), sp.Rational(1, 12)),
+    "disc": (sp.Rational(1, 4), sp.Rational(1, 2), sp.Rational(1, 4)),
+    "ring": (sp.Rational(1, 2), 1, sp.Rational(1, 2)),
+    "sphere": (sp.Rational(2, 5), sp.Rational(2, 5), sp.Rational(2, 5)),
+}
 
 
 def _reader(system: System):
@@ -41,13 +53,22 @@ def lagranges_method(system: System):
     N = me.ReferenceFrame("N")
     origin = me.Point("O")
     origin.set_vel(N, 0)
-    if system.particles:
+    if system.particles or system.bodies:
         bodies = []
         for i, part in enumerate(system.particles):
             r = sum((read(c) * e for c, e in zip(part.position, (N.x, N.y, N.z), strict=True)), 0 * N.x)
             P = origin.locatenew(f"P{i}", r)
             P.set_vel(N, P.pos_from(origin).dt(N))
             bodies.append(me.Particle(f"B{i}", P, read(part.mass)))
+        for i, body in enumerate(system.bodies):
+            r = sum((read(c) * e for c, e in zip(body.centre, (N.x, N.y, N.z), strict=True)), 0 * N.x)
+            C = origin.locatenew(f"C{i}", r)
+            C.set_vel(N, C.pos_from(origin).dt(N))
+            # the body's frame turned by its angle about y, the axis normal to the plane of motion
+            F = N.orientnew(f"F{i}", "Axis", [read(body.angle), N.y])
+            mass = read(body.mass)
+            inertia = me.inertia(F, *(c * mass * read(body.size) ** 2 for c in _PRINCIPAL[body.kind]))
+            bodies.append(me.RigidBody(f"R{i}", C, F, mass, (inertia, C)))
         L = me.Lagrangian(N, *bodies) - read(system.potential)
     elif system.kinetic is not None:
         L = read(system.kinetic) - read(system.potential)

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from app.engine.bodies import BodyMotion, body_motion
 from app.engine.budget import pythagoras
 from app.engine.errors import DerivationError
 from app.engine.parse import ExpressionError, parse_expression
@@ -17,7 +18,10 @@ from app.scenes.types import System
 
 @dataclass(frozen=True)
 class Mechanics:
-    """Parsed mechanics: optional particle kinematics, then T, U (or only L)."""
+    """Parsed mechanics: optional particle and rigid-body kinematics, then T, U (or only L).
+
+    ``positions``, ``masses``, ``velocities`` and ``speeds_squared`` are the particles' (one each, in the
+    declared order); ``bodies`` holds each rigid body's motion and its two pieces of T."""
 
     table: SymbolTable
     positions: tuple[tuple[sp.Expr, ...], ...]
@@ -28,6 +32,7 @@ class Mechanics:
     U: sp.Expr | None
     L: sp.Expr
     Q: tuple[sp.Expr, ...]
+    bodies: tuple[BodyMotion, ...] = ()
 
 
 def _parse(
@@ -46,11 +51,15 @@ def build_mechanics(system: System) -> Mechanics:
     """Parse a System and form T, U and L = T - U."""
     table = SymbolTable(tuple(system.coordinates), tuple(p.name for p in system.parameters))
     names = table.namespace()
-    forms = [bool(system.particles), system.kinetic is not None, system.lagrangian is not None]
+    forms = [bool(system.particles or system.bodies), system.kinetic is not None, system.lagrangian is not None]
     if sum(forms) != 1:
-        raise DerivationError("give exactly one of: particles (with a potential), kinetic and potential, or lagrangian")
+        raise DerivationError(
+            "give exactly one of: particles or bodies (with a potential), kinetic and potential, or lagrangian"
+        )
     if system.lagrangian is None and system.potential is None:
-        raise DerivationError("a potential U is needed with particles or with a kinetic energy (write 0 if none)")
+        raise DerivationError(
+            "a potential U is needed with particles, bodies or with a kinetic energy (write 0 if none)"
+        )
 
     positions: list[tuple[sp.Expr, ...]] = []
     masses: list[sp.Expr] = []
@@ -69,6 +78,11 @@ def build_mechanics(system: System) -> Mechanics:
         # v^2 = v . v, with sin^2 + cos^2 = 1 applied and sin a sin b + cos a cos b = cos(a - b) (app/engine/trig.py)
         speeds.append(merged(pythagoras(sum(c**2 for c in v))))
 
+    bodies = tuple(
+        body_motion(i, body, table, lambda text, where: _parse(text, names, where, False, system.built))
+        for i, body in enumerate(system.bodies, start=1)
+    )
+
     Q = tuple(
         _parse(system.forces[name], names, f"force on {name}", True, system.built)
         if name in system.forces
@@ -83,12 +97,13 @@ def build_mechanics(system: System) -> Mechanics:
         L = _parse(system.lagrangian, names, "lagrangian", True, system.built)
         return Mechanics(table, (), (), (), (), None, None, L, Q)
 
-    if system.particles:
-        # T = sum_i 1/2 m_i v_i^2
-        T = merged(sp.expand(sum(sp.Rational(1, 2) * m * v2 for m, v2 in zip(masses, speeds, strict=True))))
+    if system.particles or system.bodies:
+        # T = sum_i 1/2 m_i v_i^2 over the particles + sum_b (1/2 M_b v_cm,b^2 + 1/2 I_cm,b omega_b^2) over the bodies
+        particles_T = sum((sp.Rational(1, 2) * m * v2 for m, v2 in zip(masses, speeds, strict=True)), sp.Integer(0))
+        T = merged(sp.expand(particles_T + sum((b.kinetic for b in bodies), sp.Integer(0))))
     else:
         T = _parse(system.kinetic or "", names, "kinetic energy", True, system.built)
     U = _parse(system.potential or "0", names, "potential", False, system.built)
     # L = T - U
     L = T - U
-    return Mechanics(table, tuple(positions), tuple(masses), tuple(velocities), tuple(speeds), T, U, L, Q)
+    return Mechanics(table, tuple(positions), tuple(masses), tuple(velocities), tuple(speeds), T, U, L, Q, bodies)

@@ -19,6 +19,7 @@ import sympy as sp
 from app.engine import meaning, notation, textbook
 from app.engine.action_step import KEY as ACTION_KEY
 from app.engine.action_step import action_step
+from app.engine.bodies import BodyMotion
 from app.engine.breaking import broken, broken_row, single
 from app.engine.budget import memoized, pythagoras, unbudgeted
 from app.engine.derive import Derivation
@@ -311,6 +312,79 @@ def _power_tex(n: int) -> str:
     return "" if n == 1 else f"^{{{n}}}"
 
 
+def _body_marks(bodies: tuple[BodyMotion, ...], i: int) -> tuple[str, str]:
+    """The subscripts of body i's v_cm and I_cm, and of its ω: cm alone for one body, numbered for several."""
+    if len(bodies) == 1:
+        return r"\mathrm{cm}", ""
+    return rf"\mathrm{{cm}},{i + 1}", rf"_{{{i + 1}}}"
+
+
+def _bodies_step(bodies: tuple[BodyMotion, ...], pr: Printer) -> dict[str, str]:
+    """Each rigid body's centre, the squared speed of its centre, its angular velocity and I_cm from the table."""
+    rows: list[str] = []
+    data: list[sp.Expr] = []
+    for i, b in enumerate(bodies):
+        cm, w = _body_marks(bodies, i)
+        rows += [
+            rf"\vec r_{{{cm}}} = \left({', '.join(pr.tex(_common_factor(c)) for c in b.centre)}\right)",
+            rf"v_{{{cm}}}^2 = {pr.tex(b.speed_squared)}",
+            rf"\omega{w} = {pr.tex(b.omega)}",
+            rf"I_{{{cm}}} = {pr.tex(b.inertia)}",
+        ]
+        data += [*b.centre, b.speed_squared, b.omega, b.inertia]
+    named = "; ".join(
+        f"the {b.body.label or b.body.kind}'s I_cm = {pr.text(b.inertia)} is {_INERTIA_WORDS[b.body.kind]}"
+        for b in bodies
+    )
+    return _step(
+        "bodies",
+        "Rigid bodies",
+        rows,
+        data,
+        "A rigid body moves with its centre of mass and turns about it: the centre is placed and differentiated "
+        f"like a mass, ω is the rate at which the body's angle turns, and {named}.",
+    )
+
+
+# each kind's moment of inertia about its centre in words (the values: INERTIA in app/engine/bodies.py)
+_INERTIA_WORDS = {
+    "rod": "that of a uniform rod turning end over end about its middle, a twelfth of its mass times its length squared",
+    "disc": "that of a uniform disc turning about its axis, half its mass times its radius squared",
+    "ring": "that of a thin ring, its whole mass at the radius from the axis",
+    "sphere": "that of a uniform solid sphere about any axis through its centre, two fifths of its mass times its radius squared",
+}
+
+
+def _body_pieces(bodies: tuple[BodyMotion, ...], pr: Printer) -> list[str]:
+    """One row per body: T_body = ½ M v_cm² + ½ I_cm ω² = its translation + its rotation."""
+    rows = []
+    for i, b in enumerate(bodies):
+        cm, w = _body_marks(bodies, i)
+        name = b.body.label or b.body.kind
+        rotation = pr.tex(b.rotation)
+        rows.append(
+            rf"T_{{\mathrm{{{name}}}}} = \tfrac{{1}}{{2}} {pr.tex(b.mass)} v_{{{cm}}}^2 + \tfrac{{1}}{{2}} I_{{{cm}}}"
+            rf" \omega{w}^2 = {pr.tex(b.translation)}"
+            + (rf" - {rotation[1:]}" if rotation.startswith("-") else rf" + {rotation}")
+        )
+    return rows
+
+
+def _kinetic_explanation(m: Any, pr: Printer) -> str:
+    """What T adds up: the particles' ½ m v², each body's translation and rotation, or T as declared."""
+    if not m.positions and not m.bodies:
+        return "The kinetic energy as declared."
+    if not m.bodies:
+        return "T adds up one half of mass times squared speed."
+    pieces = "; ".join(
+        f"the {b.body.label or b.body.kind}'s is ½ M v_cm² = {pr.text(b.translation)} for the motion of its "
+        f"centre plus ½ I_cm ω² = {pr.text(b.rotation)} for its turning about the centre"
+        for b in m.bodies
+    )
+    masses = " plus one half of mass times squared speed for each point mass" if m.positions else ""
+    return f"T adds up each rigid body's two pieces{masses}: {pieces}."
+
+
 def build_steps(d: Derivation) -> list[dict[str, str]]:
     m, eqs, en, red, table = d.mechanics, d.equations, d.energetics, d.reduction, d.table
     pr = Printer(table.latex_names())
@@ -369,14 +443,16 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
                 ),
             )
         )
+    if m.bodies:
+        steps.append(_bodies_step(m.bodies, pr))
     if m.T is not None:
         steps.append(
             _step(
                 "kinetic",
                 "Kinetic energy",
-                [f"T = {pr.tex(m.T)}"],
+                [*_body_pieces(m.bodies, pr), f"T = {pr.tex(m.T)}"],
                 m.T,
-                "T adds up one half of mass times squared speed." if m.positions else "The kinetic energy as declared.",
+                _kinetic_explanation(m, pr),
             )
         )
         steps.append(

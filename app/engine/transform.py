@@ -119,6 +119,15 @@ def transform(system: System) -> Transformed | None:
         for p in system.particles
     )
 
+    def placed(text: str) -> str:
+        # a position (a particle's or a body's centre) or a body's angle, written in the new coordinates
+        return _text(collected(parse_expression(text, old_names).xreplace(inverse), new.q), names)
+
+    bodies = tuple(
+        replace(b, centre=(placed(b.centre[0]), placed(b.centre[1]), placed(b.centre[2])), angle=placed(b.angle))
+        for b in system.bodies
+    )
+
     def moved(text: str | None, with_velocities: bool) -> str | None:
         # a potential keeps its shape (k (x - l0)^2 / 2); T and L are sorted by powers of the velocities
         if text is None:
@@ -138,6 +147,7 @@ def transform(system: System) -> Transformed | None:
         system,
         coordinates=tuple(change.coordinates),
         particles=particles,
+        bodies=bodies,
         kinetic=moved(system.kinetic, True),
         potential=moved(system.potential, False),
         lagrangian=moved(system.lagrangian, True),

@@ -1,11 +1,11 @@
 """The scenes: a registry mapping an id to its declaration, in the chapter's order, then those beyond it."""
 
 from app.scenes.beads import HELIX_BEAD, ROTATING_PARABOLA
-from app.scenes.beyond import COUPLED_OSCILLATORS, DOUBLE_PENDULUM
+from app.scenes.beyond import COUPLED_OSCILLATORS, DOUBLE_PENDULUM, PHYSICAL_PENDULUM
 from app.scenes.inclines import INCLINE_BLOCK, MOVABLE_INCLINE
 from app.scenes.pendulums import DAMPED_PENDULUM, SIMPLE_PENDULUM, SPHERICAL_PENDULUM
 from app.scenes.two_body import PULLEY, RAIL_TWO_BODY, TABLETOP_SPRING
-from app.scenes.types import Constraint, CoordinateChange, Erratum, Event, Parameter, Particle, Scene, System
+from app.scenes.types import Body, Constraint, CoordinateChange, Erratum, Event, Parameter, Particle, Scene, System
 
 SCENES: dict[str, Scene] = {
     scene.id: scene
@@ -22,7 +22,8 @@ SCENES: dict[str, Scene] = {
         ROTATING_PARABOLA,
         COUPLED_OSCILLATORS,
         DOUBLE_PENDULUM,
+        PHYSICAL_PENDULUM,
     )
 }
 
-__all__ = ["SCENES", "Constraint", "CoordinateChange", "Erratum", "Event", "Parameter", "Particle", "Scene", "System"]
+__all__ = ["SCENES", "Body", "Constraint", "CoordinateChange", "Erratum", "Event", "Parameter", "Particle", "Scene", "System"]

@@ -1,8 +1,8 @@
-"""Scenes beyond the chapter: normal modes of two coordinates, beats, and chaos."""
+"""Scenes beyond the chapter: normal modes of two coordinates, beats, chaos, and a rigid body."""
 
 from app.scenes import reasons
 from app.scenes.common import GRAVITY
-from app.scenes.types import Parameter, Particle, Scene, System
+from app.scenes.types import Body, Parameter, Particle, Scene, System
 
 DOUBLE_PENDULUM = Scene(
     id="double-pendulum",
@@ -103,4 +103,46 @@ COUPLED_OSCILLATORS = Scene(
     t_end=30.0,
     reasons=reasons.COUPLED_OSCILLATORS,
     # no Poincaré section: the equations are linear, so the motion is two normal modes and never chaotic
+)
+
+PHYSICAL_PENDULUM = Scene(
+    id="physical-pendulum",
+    coordinate_meanings={
+        "theta": "angle of the rod from the downward vertical",
+    },
+    title="Physical pendulum",
+    section="4.3",
+    family="physical-pendulum",
+    reasons=reasons.PHYSICAL_PENDULUM,
+    # what the statement asks beyond the equation of motion (Results states it anyway): the small swings
+    answers=("normal-modes",),
+    beyond_chapter=True,
+    summary="A rigid rod, not a bob: its kinetic energy is the centre's motion plus the turning about the centre.",
+    statement=(
+        "A uniform rod of mass M and length l hangs from a fixed pivot at one end and swings in a vertical plane. "
+        "The angle θ is measured from the downward vertical. Heights are measured upward from the pivot, and "
+        "U = 0 when the rod's centre is level with the pivot. Write the rod's kinetic energy as the motion of "
+        "its centre plus its turning about the centre, derive the equation of motion, and find the frequency "
+        "of small swings."
+    ),
+    figure=(
+        "A pivot at the top, a rod of length l hanging from it at angle θ from the downward vertical, its centre "
+        "of mass at the middle, l/2 from the pivot."
+    ),
+    system=System(
+        coordinates=("theta",),
+        parameters=(
+            Parameter("M", 1.0, "kg", 0.01, 100.0, "mass of the rod"),
+            Parameter("l", 1.0, "m", 0.05, 100.0, "length of the rod"),
+            GRAVITY,
+        ),
+        # pivot at the origin, z upward: the centre of mass is l/2 down the rod, and the rod turns by θ
+        bodies=(Body("rod", "M", "l", ("l*sin(theta)/2", "0", "-l*cos(theta)/2"), "theta", "rod"),),
+        potential="-M*g*l*cos(theta)/2",
+    ),
+    initial={"theta": 1.0, "theta_dot": 0.0},
+    # about four and a half swings (ω² = 3g/(2l), a period near 1.7 s): at 10 s the default run's error
+    # grew to 1.2 times its tolerance, so the default run stops at 8 s, within it
+    t_end=8.0,
+    panels=("effective-potential", "small-oscillations"),
 )

@@ -406,3 +406,28 @@ DOUBLE_PENDULUM: dict[str, str] = {
     "normal-modes:3": "The upper rod stands upright with the lower one hanging from its top: U falls if the upper rod tips, so again one ω² is negative: unstable.",
     "normal-modes:4": "Both rods upright in line: U is at its highest, both ω² are negative, and a small push along either mode grows.",
 }
+
+
+PHYSICAL_PENDULUM: dict[str, str] = {
+    "action": "Of all the ways the rod could swing from one angle to another in the same time, the real swing makes ∫ (T − U) dt stationary.",
+    "bodies": "The centre of mass is halfway down the rod, l/2 from the pivot, so it moves on a circle at speed (l/2) θ̇; the rod turns at the rate θ̇, and a uniform rod's I_cm is M l²/12.",
+    "kinetic": "The centre's motion gives ½ M (l/2)² θ̇² = M l² θ̇²/8 and the turning about the centre M l² θ̇²/24; together M l² θ̇²/6, which is ½ I θ̇² with I = M l²/3 about the pivot.",
+    "potential": "The centre of mass is l cos θ/2 below the pivot, so U = −½ M g l cos θ: the whole weight acts at the centre.",
+    "lagrangian": "T − U with one coordinate, as for the simple pendulum, but with the rod's own moment of inertia.",
+    "derivatives:theta": "∂L/∂θ = −½ M g l sin θ is gravity's torque about the pivot; ∂L/∂θ̇ = M l² θ̇/3 is the rod's angular momentum about it.",
+    "euler-lagrange": "Angular momentum about the pivot changes at the rate of the torque; divided by M l²/3 the mass drops out.",
+    "mass-matrix": "One coordinate: 𝓜 is the moment of inertia about the pivot, M l²/3, and f is the torque −½ M g l sin θ.",
+    "accelerations": "θ̈ = −(3g/2l) sin θ: a simple pendulum of length 2l/3 swings the same way.",
+    "momenta": "p_θ = M l² θ̇/3 is the rod's angular momentum about the pivot.",
+    "time-dependence": "Nothing in the set-up moves or changes with time, so L has no t in it.",
+    "hamiltonian": "T is quadratic in θ̇, so h is T + U.",
+    "energy": "The rod's kinetic energy plus the gravitational energy of its weight at the centre.",
+    "h-vs-e": _h_is_e("The positions do not depend on t"),
+    **_hamiltonian("3 p_θ²/(2 M l²) − ½ M g l cos θ"),
+    "effective-potential": "With a single coordinate there is nothing to fold in: U_eff is U itself.",
+    "energy-integral": "Energy conservation gives θ̇ as a function of θ, one integration from the motion.",
+    "time-integral": "Taken between the turning points, this integral is half the period of a wide swing: an elliptic integral, as for the simple pendulum.",
+    "reduced-equilibria": "The rod hanging down (θ = 0) is stable with ω² = 3g/(2l); standing up (θ = π) it is unstable.",
+    "equilibria": "sin θ = 0 with the rod straight down or straight up, and nowhere else.",
+    "normal-modes": "Linearising sin θ about each equilibrium gives ω² = 3g/(2l) hanging down and −3g/(2l) standing up.",
+}

@@ -39,6 +39,25 @@ class Particle:
 
 
 @dataclass(frozen=True)
+class Body:
+    """A rigid body moving in the x–z plane: its kind, mass, size, where its centre is and how it is turned.
+
+    ``kind`` is one of ``rod``, ``disc``, ``ring``, ``sphere`` (uniform; the engine holds each kind's moment of
+    inertia about its centre, app/engine/bodies.py).  ``size`` is the rod's length, or the radius of the disc,
+    ring or sphere.  ``centre`` is the centre of mass as expressions of q and t, ``angle`` the body's rotation
+    about the axis through its centre normal to the plane (the y axis), so that its angular velocity is
+    ω = d(angle)/dt.  ``label`` names it in the derivation ("rod", "pulley").
+    """
+
+    kind: str
+    mass: str
+    size: str
+    centre: tuple[str, str, str]
+    angle: str
+    label: str = ""
+
+
+@dataclass(frozen=True)
 class Constraint:
     """A holonomic constraint g = 0 in Cartesian form, whose force the engine derives.
 
@@ -81,7 +100,8 @@ class CoordinateChange:
 class System:
     """The mechanics of a system, in exactly one of three forms.
 
-    * ``particles`` + ``potential``: T is derived from the particles' velocities;
+    * ``particles`` and/or ``bodies`` + ``potential``: T is derived from the particles' velocities and each rigid
+      body's translation and rotation;
     * ``kinetic`` + ``potential``: T and U given directly;
     * ``lagrangian``: L given directly (then E cannot be told apart from h).
 
@@ -100,6 +120,7 @@ class System:
     coordinates: tuple[str, ...]
     parameters: tuple[Parameter, ...] = ()
     particles: tuple[Particle, ...] = ()
+    bodies: tuple[Body, ...] = ()
     kinetic: str | None = None
     potential: str | None = None
     lagrangian: str | None = None

@@ -34,6 +34,7 @@ FAMILIES: dict[str, Family] = {
     "two-body-rail": blocks.rail_two_body,
     "pulleys": blocks.pulley,
     "double-pendulum": swing.double_pendulum,
+    "physical-pendulum": swing.physical_pendulum,
     "three-springs": blocks.coupled_oscillators,
 }
 

@@ -199,3 +199,39 @@ def double_pendulum(p: dict[str, float], q: dict[str, float], marks: Sequence[st
     svg.text(bx + 22, by + 4, "m₂", PARAM)
     _gravity(svg, 40, 150)
     return svg
+
+
+def physical_pendulum(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
+    """A uniform rod hung from a pivot at one end: the rod drawn as a bar, its centre of mass marked halfway."""
+    svg = Svg()
+    theta = _drawing_angle(q.get("theta", 0.8))
+    px, py, length, half_width = 150.0, 28.0, 170.0, 6.0
+    ux, uy = math.sin(theta), math.cos(theta)  # along the rod, downward from the pivot
+    nx, ny = uy, -ux  # across the rod
+    ex, ey = px + length * ux, py + length * uy
+    cx, cy = px + length * ux / 2, py + length * uy / 2
+    svg.line(px - 40, py, px + 40, py, width=3)
+    for i in range(5):
+        svg.line(px - 36 + 18 * i, py, px - 44 + 18 * i, py - 8, width=1.2)
+    svg.line(px, py, px, py + length + 8, GUIDE, 1.5, dash=True)
+    svg.polygon(
+        [
+            (px + half_width * nx, py + half_width * ny),
+            (ex + half_width * nx, ey + half_width * ny),
+            (ex - half_width * nx, ey - half_width * ny),
+            (px - half_width * nx, py - half_width * ny),
+        ],
+        fill="#c9d8ea",
+    )
+    svg.circle(px, py, 4)
+    # the centre of mass, halfway down the rod
+    svg.circle(cx, cy, 4, fill=ACCENT, color=ACCENT)
+    svg.text(cx + 22 * nx + 8, cy + 22 * ny + 4, "cm", ACCENT, 13, anchor="start")
+    svg.arc(px, py, 52, math.pi / 2, math.pi / 2 - theta, arrow=True)
+    mid = math.pi / 2 - theta / 2
+    svg.text(px + 66 * math.cos(mid), py + 66 * math.sin(mid), "θ", ACCENT, 17)
+    # the length on the outer side of the rod, away from the angle mark
+    svg.text((px + ex) / 2 - 20 * nx, (py + ey) / 2 - 20 * ny + 4, "l", PARAM)
+    svg.text(ex - 22 * nx, ey - 22 * ny + 8, "M", PARAM)
+    _gravity(svg, 40, 150)
+    return svg

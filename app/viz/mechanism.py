@@ -230,6 +230,18 @@ FAMILIES: dict[str, Family] = {
         links=(("pivot", "#0", "rod"), ("#0", "#1", "rod")),
         caption=f"Side view: the pivot, the two rods and the two bobs, with {TRAIL}.",
     ),
+    "physical-pendulum": Family(
+        # the rod from the pivot to its free end, the point drawn at its centre of mass
+        points=(("centre of mass", ("l*sin(theta)/2", "0", "-l*cos(theta)/2")),),
+        fixed=(("pivot", ("0", "0", "0")),),
+        anchors=(("end", ("l*sin(theta)", "0", "-l*cos(theta)")),),
+        links=(("pivot", "end", "rod"),),
+        curves=(("path of the centre", "0", "2*pi", ("l*sin(s)/2", "0", "-l*cos(s)/2"), "guide"),),
+        caption=(
+            f"Side view: the pivot, the rod, its centre of mass halfway down, the circle the centre can reach "
+            f"(dashed) and {TRAIL}."
+        ),
+    ),
     "three-springs": Family(
         # walls 2d out from the masses' rest positions (-d and +d), the three springs between
         anchors=(("left wall", ("-3*d", "0", "0")), ("right wall", ("3*d", "0", "0"))),

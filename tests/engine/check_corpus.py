@@ -322,6 +322,18 @@ CORPUS = [
     ("spring-rod", "equation", "r", "r_ddot + (k/m - w**2)*r - k*a/m", "correct", None, None),
     ("spring-rod", "omega_squared", None, "(k - m*w**2)/m", "correct", None, None),
     ("spring-rod", "omega_squared", None, "sqrt(k/m - w**2)", "incorrect", "sqrt(k/m - w**2) - k/m + w**2", "omega"),
+    # beyond the chapter: a rigid rod (issue 42), its T the centre's motion plus the turning about the centre
+    ("physical-pendulum", "kinetic", None, "M*l**2*theta_dot**2/6", "correct", None, None),
+    (
+        "physical-pendulum",
+        "kinetic",
+        None,
+        "M*l**2*theta_dot**2/2",
+        "incorrect",
+        "M*l**2*theta_dot**2/3",
+        "key:kinetic.rigid.rod_point_mass",
+    ),
+    ("physical-pendulum", "omega_squared", None, "3*g/(2*l)", "correct", None, None),
     # beyond the chapter: the double pendulum and two masses between three springs
     (
         "double-pendulum",
@@ -441,6 +453,11 @@ TYPICAL = [
         "(m1 + m2)*l1**2*theta1_ddot + m2*l1*l2*cos(theta1 - theta2)*theta2_ddot + (m1 + m2)*g*l1*sin(theta1)",
         "equation.chain_rule.theta2",
     ),
+    # the rod's spin about its centre forgotten, its I about the centre put for its I about the pivot, the rod
+    # taken as a bob at its end
+    ("physical-pendulum", "kinetic", None, "M*l**2*theta_dot**2/8", "kinetic.rigid.rod_spin_forgotten"),
+    ("physical-pendulum", "kinetic", None, "M*l**2*theta_dot**2/24", "kinetic.rigid.rod_centre_axis"),
+    ("physical-pendulum", "kinetic", None, "M*l**2*theta_dot**2/2", "kinetic.rigid.rod_point_mass"),
     ("cart-pendulum", "kinetic", None, "M*x_dot**2/2 + m*l**2*phi_dot**2/2", "kinetic.velocity_part.bob.x"),
     (
         "cart-pendulum",

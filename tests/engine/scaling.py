@@ -38,9 +38,14 @@ def scaled(system: System, factors: dict[str, float]) -> System:
     """The declaration with each named parameter p replaced by p * factors[p]."""
     s = lambda text: scale_text(text, factors)  # noqa: E731
     particles = tuple(Particle(s(p.mass), tuple(s(c) for c in p.position), p.label) for p in system.particles)
+    bodies = tuple(
+        dataclasses.replace(b, mass=s(b.mass), size=s(b.size), centre=tuple(s(c) for c in b.centre), angle=s(b.angle))
+        for b in system.bodies
+    )
     return dataclasses.replace(
         system,
         particles=particles,
+        bodies=bodies,
         kinetic=s(system.kinetic),
         potential=s(system.potential),
         lagrangian=s(system.lagrangian),

@@ -153,6 +153,13 @@ PINNED = {  # fmt: skip
             "x2": "(kappa*x1 + x2*(-k - kappa))/m",
         },
     },
+    "physical-pendulum": {
+        "kinetic": "M*l**2*theta_dot**2/6",
+        "potential": "-M*g*l*cos(theta)/2",
+        "hamiltonian": "-M*g*l*cos(theta)/2 + M*l**2*theta_dot**2/6",
+        "equations": ["3*g*sin(theta)/(2*l) + theta_ddot"],
+        "accelerations": {"theta": "-3*g*sin(theta)/(2*l)"},
+    },
     "double-pendulum": {
         "kinetic": "l1**2*theta1_dot**2*(m1 + m2)/2 + l1*l2*m2*theta1_dot*theta2_dot*cos(theta1 - theta2) + l2**2*m2*theta2_dot**2/2",
         "potential": "g*l1*(-m1 - m2)*cos(theta1) - g*l2*m2*cos(theta2)",

@@ -22,8 +22,9 @@ TABLE = {
     "damped-pendulum": (("theta",), ("m", "g", "R", "b")),
     "double-pendulum": (("theta1", "theta2"), ("m1", "m2", "l1", "l2", "g")),
     "coupled-oscillators": (("x1", "x2"), ("m", "k", "kappa", "d")),
+    "physical-pendulum": (("theta",), ("M", "l", "g")),
 }
-BEYOND_CHAPTER = {"double-pendulum", "coupled-oscillators", "damped-pendulum"}
+BEYOND_CHAPTER = {"double-pendulum", "coupled-oscillators", "damped-pendulum", "physical-pendulum"}
 # what the engine must find: cyclic coordinates and whether h = E
 CYCLIC = {"tabletop-spring": ("theta",), "spherical-pendulum": ("phi",), "movable-incline": ("X",)}
 MOVING_CONSTRAINT = {"rotating-parabola"}
