@@ -18,7 +18,7 @@ from app.engine.diagnose import catalogue
 from app.engine.dimensions import Dims, number_beside_units, system_dimensions
 from app.engine.mistake_families import Mistake
 from app.engine.mistake_positions import component_keys, position_label
-from app.engine.mistakes import has_springs
+from app.engine.mistakes import absent_names, has_gravity, has_springs
 from app.engine.notation import text
 from app.engine.report import plain_name
 from app.engine.textbook import unicode_text
@@ -51,6 +51,14 @@ class Problem:
     # whether the system's own positions add a bare number to a length (the pulley's −½y₁ − ½y₂ − 1): a number
     # inside a student's bracket may then be such a length too, and is not called unitless
     bare_lengths: bool = False
+    # the bodies whose height never changes as the coordinates do, (label, mass): a wedge sliding on the floor
+    # has no term in U (issue 41, 2)
+    level: tuple[tuple[str, sp.Expr], ...] = ()
+    # whether the system has gravity (a g), as ``springs`` says whether it has springs
+    gravity: bool = True
+    # names a student may expect that the problem has not, with why (g where no body's height changes): the
+    # refusal of such a name says why
+    absent: dict[str, str] = field(default_factory=dict)
 
     def mistake(self, key: str) -> Mistake | None:
         return next((m for m, _, _ in self.mistakes if m.key == key), None)
@@ -229,7 +237,20 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         system_dimensions(d),
         has_springs(d),
         any(number_beside_units(x, system_dimensions(d)) for r in d.mechanics.positions for x in r),
+        level_bodies(d),
+        has_gravity(d),
+        absent_names(d),
     )
+
+
+def level_bodies(d: Derivation) -> tuple[tuple[str, sp.Expr], ...]:
+    """(label, mass) of each labelled body that moves while its height (z, upward) stays the same."""
+    moving = {*d.table.q, d.table.t}
+    out = []
+    for particle, r in zip(d.system.particles, d.mechanics.positions, strict=False):
+        if particle.label and not r[2].free_symbols & moving and any(c.free_symbols & moving for c in r[:2]):
+            out.append((particle.label, sp.sympify(particle.mass, locals=d.table.namespace())))
+    return tuple(out)
 
 
 def _at(r: str, position: sp.Expr) -> str:

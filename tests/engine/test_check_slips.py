@@ -15,7 +15,7 @@ from app.engine.derive import Derivation, derive
 from app.engine.mistakes import POINTERS
 from app.scenes import SCENES
 from app.scenes.types import Parameter, Particle, System
-from tests.engine.slip_corpus import CORRECT, SLIPS, SYSTEMS
+from tests.engine.slip_corpus import CORRECT, NAMED, SLIPS, SYSTEMS
 
 
 def system_of(spec: dict) -> System:
@@ -101,6 +101,12 @@ def test_an_equation_multiplied_by_a_coordinate_is_equivalent_and_says_where():
 def test_a_named_slip_is_named_rightly(slip):
     kind, result = outcome(slip)
     assert kind != "misnamed", (slip, words(result))
+
+
+@pytest.mark.parametrize("slip", NAMED, ids=[f"{s[0]}-{s[1]}-{i}" for i, s in enumerate(NAMED)])
+def test_a_slip_the_review_found_unnamed_is_named(slip):
+    kind, result = outcome(slip)
+    assert kind == "named", (slip, words(result))
 
 
 @pytest.mark.slow
