@@ -93,7 +93,7 @@ from app.engine.mistakes import (
     CONSTANT_FACTOR_HINT,
     HALF_MOMENTUM_HINT,
     MISSING_FACTOR_HINT,
-    POINTERS,
+    pointer,
     without_gravity,
     without_springs,
 )
@@ -656,10 +656,8 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
         found = _budgeted(lambda: solved_slip(answer, truth, pb.groups), None, ANSWER_SLIP_WORK)
         if found is not None:
             return found
-    if pb.step == "omega_squared" and not pb.label.startswith("ω"):
-        # the step's rule in the document's letter for the frequency (Ω² on the rotating wire: student-i 6)
-        return POINTERS[pb.step].replace("ω²", pb.label.split(" ", 1)[0])
-    return POINTERS[pb.step]
+    # the step's rule in the document's letter for the frequency (Ω² on the rotating wire: student-i 6)
+    return pointer(pb.step, pb.frequency)
 
 
 # the steps whose small-displacement form is named, and what each is called in the hint

@@ -59,6 +59,8 @@ class Problem:
     # names a student may expect that the problem has not, with why (g where no body's height changes): the
     # refusal of such a name says why
     absent: dict[str, str] = field(default_factory=dict)
+    # the document's letter for the frequency (ω, or Ω where ω is a parameter), for the words of the ω² step
+    frequency: str = "ω"
 
     def mistake(self, key: str) -> Mistake | None:
         return next((m for m, _, _ in self.mistakes if m.key == key), None)
@@ -240,6 +242,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         level_bodies(d),
         has_gravity(d),
         absent_names(d),
+        text("frequency", d),
     )
 
 

@@ -160,9 +160,8 @@ def catalogue(
     found += [x for x in made if x[0].family in GENERIC]
     if step == "omega_squared":
         # in the document's letter for the frequency (Ω where ω is a parameter: student-i 6)
-        w, hint = frequency_letter("frequency", d), OMEGA_HINT
-        if w != "ω":
-            hint = OMEGA_HINT.replace("ω", w)
+        w = frequency_letter("frequency", d)
+        hint = OMEGA_HINT.format(w=w)
         found += [
             (Mistake("omega_not_squared", "omega_not_squared", f"{w} in place of {w}²", sp.sqrt(w2), hint,
                      sp.sqrt(w2)), hint)

@@ -131,7 +131,8 @@ POINTERS = {
     "acceleration": "Write the Euler–Lagrange equations and solve them for q̈; when coordinates are coupled (a "
     "mass matrix with off-diagonal terms), solve the equations together.",
     "hamiltonian": "h = Σ p_k q̇_k − L, written in the coordinates and velocities.",
-    "omega_squared": "About a stable equilibrium, where the effective potential has zero slope, ω² is the effective "
+    # {w}: the document's letter for the frequency (ω, or Ω where ω is a parameter: student-i 6), formatted where read
+    "omega_squared": "About a stable equilibrium, where the effective potential has zero slope, {w}² is the effective "
     "potential's second derivative there divided by the effective mass (the coefficient of ½ q̇² in T).",
 }
 
@@ -343,7 +344,13 @@ RULES: tuple[Rule, ...] = (
     ),
 )
 
-OMEGA_HINT = "This is ω, not ω²: square it (ω² = U_eff″/m_eff at the equilibrium)."
+# {w}: the document's letter for the frequency, as in POINTERS["omega_squared"]
+OMEGA_HINT = "This is {w}, not {w}²: square it ({w}² = U_eff″/m_eff at the equilibrium)."
+
+
+def pointer(step: str, frequency: str = "ω") -> str:
+    """A step's rule, the frequency named by the document's letter."""
+    return POINTERS[step].format(w=frequency) if step == "omega_squared" else POINTERS[step]
 # a momentum short of a factor: the factor is named, never the corrected momentum
 MISSING_FACTOR_HINT = (
     "A factor {factor} is missing from your momentum. p = ∂L/∂q̇ keeps every factor that multiplies the velocity "

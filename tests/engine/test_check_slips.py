@@ -12,7 +12,7 @@ import pytest
 
 from app.engine.check import judge, problem
 from app.engine.derive import Derivation, derive
-from app.engine.mistakes import POINTERS
+from app.engine.mistakes import POINTERS, pointer
 from app.scenes import SCENES
 from app.scenes.types import Parameter, Particle, System
 from tests.engine.slip_corpus import CORRECT, NAMED, SLIPS, SYSTEMS
@@ -55,9 +55,10 @@ def words(result: dict[str, Any]) -> str:
 def outcome(slip: tuple) -> tuple[str, dict[str, Any]]:
     """'named' (the mistake the teacher names), 'misnamed' (another one), or 'general' (the step's rule)."""
     system, step, coordinate, answer, named = slip
-    result = judge(step_problem(system, step, coordinate), answer)
+    pb = step_problem(system, step, coordinate)
+    result = judge(pb, answer)
     assert result["verdict"] == "incorrect", (slip, result)
-    if result["mistake"] is None and result["hint"] in POINTERS.values():
+    if result["mistake"] is None and result["hint"] in {pointer(s, pb.frequency) for s in POINTERS}:
         return "general", result
     found = re.search(unicodedata.normalize("NFC", named), words(result), re.IGNORECASE)
     return ("named" if found else "misnamed"), result
