@@ -10,6 +10,7 @@ type only the right-hand side. A refusal of what was read is placed back at the 
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 
 from app.engine.check_answers import CheckError, allowed_names, check_answer
 from app.engine.names import said, said_all, unicode
@@ -61,15 +62,18 @@ def _side(text: str, offset: int, step: str, kinds: dict[str, str]) -> Parsed:
         raise _placed(exc, offset) from None
 
 
-def read_answer(text: str, step: str, coordinate: str | None, kinds: dict[str, str]) -> tuple[Parsed, bool]:
+def read_answer(
+    text: str, step: str, coordinate: str | None, kinds: dict[str, str], absent: Mapping[str, str] | None = None
+) -> tuple[Parsed, bool]:
     """What ``check_answer`` reads of a step's answer, and whether it was typed as an equation lhs = rhs.
 
-    Each side is read on its own first, so a refusal quotes the student's own text at their columns.
+    Each side is read on its own first, so a refusal quotes the student's own text at their columns.  ``absent``:
+    names a student may expect that the problem has not, each with why (g where the masses stay level).
     """
     try:
         return _read(text, step, coordinate, kinds)
     except CheckError as exc:
-        raise _in_words(exc, text, step, coordinate, kinds) from None
+        raise _in_words(exc, text, step, coordinate, kinds, absent or {}) from None
 
 
 # the names of the steps' own quantities, which a student may type for what they stand for (L = T − U)
@@ -90,7 +94,9 @@ _FUNCTION_WORDS = {
 _DIFFERENTIALS = re.compile(r"\bd([A-Za-z_]\w*)?\s*/\s*d[A-Za-z_]")
 
 
-def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kinds: dict[str, str]) -> CheckError:
+def _in_words(
+    exc: CheckError, text: str, step: str, coordinate: str | None, kinds: dict[str, str], absent: Mapping[str, str]
+) -> CheckError:
     """A refusal said as a tutor says it where the parser's words would not help: T − U typed in the L box, a
     derivative typed as d/dt(…) or dL/dθ̇, another acceleration on the right of an acceleration, a declared name
     typed in the other case (L for l)."""
@@ -121,6 +127,9 @@ def _in_words(exc: CheckError, text: str, step: str, coordinate: str | None, kin
         advice = re.search(r"; (.*)\): '", str(exc))  # the parser's advice (letters written together, e^x)
         split = advice.group(1) if advice else ""
         out = f"{exc.part} is not a name in this problem; the names you may use are {allowed} and pi"
+        if exc.part in absent:
+            # why the problem has no such name: g where the masses stay level (issue 41, 4)
+            out = f"{exc.part} is not a name in this problem: {absent[exc.part]}; the names you may use are {allowed} and pi"
         if split:
             out += f" ({split})"
     elif "only these functions may be called" in str(exc) and (apart := _names_then_function(exc.part, allowed_names(step, kinds))):

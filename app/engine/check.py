@@ -80,6 +80,7 @@ from app.engine.dimensions import dimension, mismatch, number_beside_units, unit
 from app.engine.mistake_answer import (
     AnswerSlip,
     extra_cross_term,
+    level_body_term,
     linearised,
     missing_square,
     part_off_by_a_factor,
@@ -92,7 +93,7 @@ from app.engine.mistakes import (
     CONSTANT_FACTOR_HINT,
     HALF_MOMENTUM_HINT,
     MISSING_FACTOR_HINT,
-    POINTERS,
+    pointer,
     without_gravity,
     without_springs,
 )
@@ -242,7 +243,7 @@ def judge_of(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
     """``judge`` on an answer already built (``parse_answer``): a function of the expression alone, so answers
     typed differently that build to one expression may share it."""
     verdict = _judge(pb, answer)
-    if "g" not in pb.namespace and verdict.get("hint"):
+    if not pb.gravity and verdict.get("hint"):
         verdict["hint"] = without_gravity(verdict["hint"])
     if not pb.springs:
         if verdict.get("hint"):
@@ -275,8 +276,12 @@ def _judge(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
     # then a whole of the wrong units
     found = _units(pb, answer, None)
     if found is None:
-        found = match(pb.mistakes, a, b, pb.relation, _at_engines_scale(pb, answer, a, truth),
-                      _keeps_a_right_acceleration(pb, answer, truth))  # fmt: skip
+        keep = _keeps_a_right_acceleration(pb, answer, truth)
+        if pb.step == "momentum" and differ_by_factor(b, a):
+            # a momentum short of a whole factor (m ż for m ż (1 + α²R²)) is named by that factor below, never as
+            # one of the terms its factor expands into (issue 41, 4)
+            keep = lambda m: m.family != "left_out"  # noqa: E731
+        found = match(pb.mistakes, a, b, pb.relation, _at_engines_scale(pb, answer, a, truth), keep)
     if found is None and pb.relation != "factor" and pb.step != "momentum":
         # (a momentum short of a factor is named by that factor, below)
         found = _units(pb, answer, truth)
@@ -421,7 +426,7 @@ def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake
     if offence is None:
         return None
     where = "every term of an expression has the same units; checking them finds a slip before any algebra"
-    words = offence.words if offence.words.endswith(".") else f"{offence.words}."
+    words = offence.words if offence.words.endswith((".", "?")) else f"{offence.words}."
     mistake = Mistake("units.mismatch", "units", f"units that do not agree. {words}", offence.piece, where,
                       answer)  # fmt: skip
     return mistake, f"Check the units. {words}"
@@ -625,6 +630,10 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
         found = _budgeted(lambda: extra_cross_term(answer, truth, pb.groups), None, ANSWER_SLIP_WORK)
         if found is not None:
             return found
+    if pb.step == "potential" and pb.level:
+        found = _budgeted(lambda: level_body_term(answer, truth, pb.groups, pb.level), None, ANSWER_SLIP_WORK)
+        if found is not None:
+            return found
     if pb.step == "equation":
         found = _budgeted(lambda: linearised(a, truth, pb.groups), None, ANSWER_SLIP_WORK)
         if found is not None:
@@ -644,10 +653,8 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
         found = _budgeted(lambda: solved_slip(answer, truth, pb.groups), None, ANSWER_SLIP_WORK)
         if found is not None:
             return found
-    if pb.step == "omega_squared" and not pb.label.startswith("ω"):
-        # the step's rule in the document's letter for the frequency (Ω² on the rotating wire: student-i 6)
-        return POINTERS[pb.step].replace("ω²", pb.label.split(" ", 1)[0])
-    return POINTERS[pb.step]
+    # the step's rule in the document's letter for the frequency (Ω² on the rotating wire: student-i 6)
+    return pointer(pb.step, pb.frequency)
 
 
 # the steps whose small-displacement form is named, and what each is called in the hint

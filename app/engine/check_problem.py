@@ -18,7 +18,7 @@ from app.engine.diagnose import catalogue
 from app.engine.dimensions import Dims, system_dimensions
 from app.engine.mistake_families import Mistake
 from app.engine.mistake_positions import component_keys, position_label
-from app.engine.mistakes import has_springs
+from app.engine.mistakes import absent_names, has_gravity, has_springs
 from app.engine.notation import text
 from app.engine.report import plain_name
 from app.engine.textbook import unicode_text
@@ -48,6 +48,16 @@ class Problem:
     # whether a spring can be in U: a stiffness declared (N/m), or no units declared to tell (the hints about
     # ½ k × stretch² are given only then)
     springs: bool = True
+    # the bodies whose height never changes as the coordinates do, (label, mass): a wedge sliding on the floor
+    # has no term in U (issue 41, 2)
+    level: tuple[tuple[str, sp.Expr], ...] = ()
+    # whether the system has gravity (a g), as ``springs`` says whether it has springs
+    gravity: bool = True
+    # names a student may expect that the problem has not, with why (g where no body's height changes): the
+    # refusal of such a name says why
+    absent: dict[str, str] = field(default_factory=dict)
+    # the document's letter for the frequency (ω, or Ω where ω is a parameter), for the words of the ω² step
+    frequency: str = "ω"
 
     def mistake(self, key: str) -> Mistake | None:
         return next((m for m, _, _ in self.mistakes if m.key == key), None)
@@ -225,7 +235,21 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         table.qdd[k] if step == "equation" and k is not None else None,
         system_dimensions(d),
         has_springs(d),
+        level_bodies(d),
+        has_gravity(d),
+        absent_names(d),
+        text("frequency", d),
     )
+
+
+def level_bodies(d: Derivation) -> tuple[tuple[str, sp.Expr], ...]:
+    """(label, mass) of each labelled body that moves while its height (z, upward) stays the same."""
+    moving = {*d.table.q, d.table.t}
+    out = []
+    for particle, r in zip(d.system.particles, d.mechanics.positions, strict=False):
+        if particle.label and not r[2].free_symbols & moving and any(c.free_symbols & moving for c in r[:2]):
+            out.append((particle.label, sp.sympify(particle.mass, locals=d.table.namespace())))
+    return tuple(out)
 
 
 def _at(r: str, position: sp.Expr) -> str:

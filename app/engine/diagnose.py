@@ -30,7 +30,7 @@ from app.engine.derive import Derivation
 from app.engine.dimensions import mismatch, system_dimensions
 from app.engine.mistake_carried import carried_equations, lagrangian_pairs
 from app.engine.mistake_equations import generated
-from app.engine.mistake_families import Mistake, monomial_words, spoken
+from app.engine.mistake_families import Mistake, monomial_words, says_how, spoken
 from app.engine.mistake_masses import wrong_masses
 from app.engine.mistake_other import held_still, other_coordinates
 from app.engine.mistake_pieces import effective_terms, masses_of, piece_mistakes, travelled
@@ -58,6 +58,7 @@ _OPENINGS = {
     "halved": "Your {what} has {name}",
     "velocity_doubled": "Your {what} has {name}",
     "inner_sign": "Your {what} has {name}",
+    "stretch_part": "Your {what} has {name}",
     "sin_cos": "Your {what} has {name}",
     "travelled": "Your {what} follows from {name}",
     "rigid": "Your {what} has {name}",
@@ -79,7 +80,9 @@ def sentence(m: Mistake, what: str) -> str:
     """The hint for a generated mistake: what went wrong, then where in the set-up it comes from."""
     # "your" said once: the opening has it, so the name's own "your term" is "the term" here
     name = re.sub(r"\byour\b", "the", m.name)
-    opening = _OPENINGS.get(m.family, "Your {what} leaves out {name}").format(what=what, name=name)
+    # a family without its own opening names the piece left out, unless its name says how the piece is wrong
+    default = "Your {what} has {name}" if says_how(name) else "Your {what} leaves out {name}"
+    opening = _OPENINGS.get(m.family, default).format(what=what, name=name)
     return f"{opening}: {m.where}."
 
 
@@ -157,9 +160,8 @@ def catalogue(
     found += [x for x in made if x[0].family in GENERIC]
     if step == "omega_squared":
         # in the document's letter for the frequency (Ω where ω is a parameter: student-i 6)
-        w, hint = frequency_letter("frequency", d), OMEGA_HINT
-        if w != "ω":
-            hint = OMEGA_HINT.replace("ω", w)
+        w = frequency_letter("frequency", d)
+        hint = OMEGA_HINT.format(w=w)
         found += [
             (Mistake("omega_not_squared", "omega_not_squared", f"{w} in place of {w}²", sp.sqrt(w2), hint,
                      sp.sqrt(w2)), hint)

@@ -200,7 +200,8 @@ def _dims(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Dims | None:
                     f"{lead} adds {quantity(first[1])} ({spoken(first[0])}) to {quantity(d)} "
                     f"({spoken(a)}), and the terms of a sum must have the same units."
                 )
-                raise _Mismatch(Offence(expr, words))
+                meant = _meant(a, d, add_dims(first[1], d, Fraction(-1)), expr, known)
+                raise _Mismatch(Offence(expr, words + (f" {meant}" if meant else "")))
         return told[0][1] if told and len(told) == len(found) else None
     if expr.is_Mul:
         out: Dims = {}
@@ -294,7 +295,37 @@ def _bare_number(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Offence | No
     if not got:
         return None  # unknown, or a pure number beside a pure number
     n = numbers[0]
-    return Offence(expr, f"{spoken(n)} has no unit and cannot be added to {quantity(got)}")
+    words = f"{spoken(n)} has no unit and cannot be added to {quantity(got)}"
+    # the rest of the sum short of a factor that makes it a pure number, as a number beside it must be
+    meant = _meant(rest, got, {k: -v for k, v in got.items()}, expr, known) if rest.is_Mul else None
+    return Offence(expr, f"{words}. {meant}" if meant else words)
+
+
+def _meant(term: sp.Expr, got: Dims, missing: Dims, whole: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> str | None:
+    """What a term of a sum whose units disagree with the rest was likely meant to be (issue 41, 4): the term times
+    one name of the sum, once or squared, whose units are exactly the ones it lacks, where that makes the term a
+    square (α R² for α² R², a length beside 1; R² α² for R² α² ż², the square of the helix bead's x–y speed R α ż).
+    None where no one name does that."""
+    for s in sorted(whole.free_symbols, key=lambda x: (not x.name.endswith("_dot"), x.name)):
+        dims = known.get(s)
+        if not dims:
+            continue
+        for power in (1, 2):
+            if add_dims({}, dims, Fraction(power)) != missing:
+                continue
+            meant = term * s**power
+            powers = meant.as_powers_dict()
+            if any(not (isinstance(e, sp.Integer) and e % 2 == 0) for b, e in powers.items() if not b.is_Number):
+                continue  # not a square: no one likely meaning
+            # the product whose square it is, a positive name at a time (R α ż, never |R| |α| |ż|)
+            root = sp.sqrt(meant.as_coeff_Mul()[0]) * sp.Mul(*(b ** (e // 2) for b, e in powers.items() if not b.is_Number))
+            if s.name.endswith("_dot"):
+                # a velocity factor missing: a term of T is a mass times a squared speed
+                return (f"A velocity factor is missing from {spoken(term)}: did you mean {spoken(meant)}, the "
+                        f"square of the speed {spoken(root)}?")  # fmt: skip
+            return (f"{spoken(s)} is in {unit_text(dims)}, so {spoken(term)} is {quantity(got)}: did you mean "
+                    f"{spoken(meant)}?")  # fmt: skip
+    return None
 
 
 def number_beside_units(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> bool:

@@ -131,6 +131,35 @@ def extra_cross_term(answer: sp.Expr, truth: sp.Expr, groups: Groups) -> AnswerS
     )
 
 
+def level_body_term(
+    answer: sp.Expr, truth: sp.Expr, groups: Groups, level: tuple[tuple[str, sp.Expr], ...]
+) -> AnswerSlip | None:
+    """The slip naming a term of U for a body whose height never changes (issue 41, 2: −M g X sin α for the wedge,
+    which slides on the floor), or None."""
+    moving = set(groups.positions)
+    # what the answer adds to U, less a constant (U is defined up to one)
+    extra = sp.Add(*(t for t in sp.Add.make_args(sp.expand(answer - truth)) if t.free_symbols & moving))
+    if extra == 0:
+        return None
+    for label, mass in level:
+        mass_symbols = mass.free_symbols
+        if not mass_symbols or not all(t.free_symbols & mass_symbols for t in sp.Add.make_args(extra)):
+            continue
+        shown, m = spoken(extra), spoken(mass)
+        # U holds m g × height for each body: a body whose height is the same wherever it is adds only a constant
+        why = (
+            f"the {label} moves only horizontally, so its height does not change and gravity does no work on it: "
+            f"{m} has no term in U"
+        )
+        return AnswerSlip(
+            "potential.level_body",
+            f"a term {shown} for the {label}, whose height never changes",
+            why,
+            f"Your U has a term {shown} for the {label}, whose height never changes: {why}.",
+        )
+    return None
+
+
 def linearised(answer: Values, truth: sp.Expr, groups: Groups) -> AnswerSlip | None:
     """The slip naming an equation linearised about rest at zero, or None (no such rest state, or not it)."""
     moving = (*groups.positions, *groups.rates)

@@ -141,6 +141,24 @@ def _equation_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
             if rate is not None
             else None,
         )
+    # every velocity-squared term left out at once (issue 41, 4: the rotating wire's 4 m α² ρ ρ̇²): the chain rule's
+    # terms Σ_j (∂p_k/∂q_j) q̇_j of d/dt p_k, less the velocity part of ∂T/∂q_k they partly cancel
+    chain = sp.expand(sum((sp.diff(p, q) * qd for q, qd in zip(table.q, table.qd, strict=True)), sp.Integer(0)))
+    rates = set(table.qd)
+    dT_dq = sp.Add(*(t for t in sp.Add.make_args(sp.expand(eqs.dL_dq[k])) if t.free_symbols & rates))
+    net = sp.expand(chain - dT_dq)
+    if chain != 0 and dT_dq != 0 and net != 0:
+        yield Mistake(
+            "equation.chain_rule.all",
+            "chain_rule",
+            f"the chain-rule terms of d/dt({dl}) left out, with the velocity terms of ∂L/∂{unicode(table.names[k])}"
+            f" (together {spoken(short_form(net))})",
+            short_form(net),
+            f"{dl} depends on the coordinates, so its time derivative has the chain-rule terms "
+            f"{spoken(short_form(chain))}; ∂L/∂{unicode(table.names[k])} takes away {spoken(short_form(dT_dq))}, "
+            f"and {spoken(short_form(net))} is left in the equation",
+            sp.expand(E - net),
+        )
     moving = sp.diff(p, table.t)
     if moving != 0:
         yield Mistake(

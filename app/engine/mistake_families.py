@@ -138,6 +138,16 @@ def spoken(expr: sp.Expr) -> str:
     return _IDENT.sub(lambda m: m.group(0) if m.group(0) in _FUNCTIONS else unicode(m.group(0)), text)
 
 
+# a mistake's name that already says how its piece is wrong ("the ½ of ½ k × stretch² left out of the term k x₂²"):
+# a sentence composed around it says "with …" or "has …", never "leaves out … left out" (issue 41, 3)
+_SAYS_HOW = re.compile(r"\b(left out|leaves out|missing|without|swapped|twice|reversed)\b")
+
+
+def says_how(name: str) -> bool:
+    """Whether a mistake's name says how its piece is wrong, not only which piece it is."""
+    return bool(_SAYS_HOW.search(name))
+
+
 def slug(text: str) -> str:
     return re.sub(r"[^a-z0-9]+", "_", text.lower()).strip("_") or "body"
 

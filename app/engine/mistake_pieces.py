@@ -23,6 +23,7 @@ answer gets the same words on an idle and on a busy machine.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Iterator
 from fractions import Fraction
 
@@ -33,6 +34,7 @@ from app.engine.mistake_families import (
     Mistake,
     kinetic_mistakes,
     potential_mistakes,
+    says_how,
     short_form,
     slug,
     spoken,
@@ -40,7 +42,7 @@ from app.engine.mistake_families import (
     term_key,
 )
 from app.engine.mistake_other import linear
-from app.engine.mistakes import has_springs
+from app.engine.mistakes import STIFFNESS_UNITS, has_springs
 from app.engine.names import unicode
 from app.engine.notation import text as frequency_letter
 
@@ -154,6 +156,8 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
         return
     base = f"{step}.piece"
     yield from _sums(truth, base, has_springs(d), d.table.q)
+    if has_springs(d):
+        yield from _stretch_parts(d, truth, base)
     rates = (*d.table.qd, *d.table.qdd)
     for p in _terms(truth):
         # the piece as a textbook prints it, once (the student's own piece is a multiple of it, or it swapped)
@@ -190,7 +194,7 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
                 "a rod's I about its end is ⅓ m × length², but here the mass is a bob at the end of a massless rod or "
                 "string, so all of it moves on the full circle: I = m times the length squared", truth - p + p / 3,
             )  # fmt: skip
-        name, why = _left_out(d, step, p)
+        name, why = _left_out(d, step, p, truth, k)
         yield Mistake(f"{base}.left_out.{term_key(p)}", "left_out", name, p,
                       why or LEFT_OUT_WHY.get(step, "this term belongs in the answer"), truth - p)  # fmt: skip
         if step == "hamiltonian" and not p.has(*rates):
@@ -240,8 +244,8 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
         if step == "kinetic":
             yield Mistake(
                 f"{base}.group_four.{s.name}", "velocity_doubled",
-                f"the {name} terms four times too big: that body's velocity is doubled (it moves half as far as you "
-                "have it)", group, "check how far this body moves when the coordinates change", truth + 3 * group,
+                f"the {name} terms four times too big: {_speed_doubled(d, s)}", group,
+                "check how far this body moves when the coordinates change", truth + 3 * group,
             )  # fmt: skip
         # the student's own piece, twice the truth's, in the factored form a textbook prints (k (r − l)²)
         yours = _factored(2 * group)
@@ -256,6 +260,24 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
 
 
 _DOTTED = {"x": "ẋ", "y": "ẏ", "z": "ż"}
+
+
+def _speed_doubled(d: Derivation, mass: sp.Symbol) -> str:
+    """Why a body's ½ m v² is four times too big, in its own velocity where it moves along one line (issue 41, 5:
+    the pulley's middle mass moves at (ẏ₁ + ẏ₂)/2, half the sum of the end masses' speeds)."""
+    t = d.table
+    for particle, r in zip(d.system.particles, d.mechanics.positions, strict=False):
+        if particle.mass != mass.name or not particle.label:
+            continue
+        # the velocity of each component: Σ ∂r/∂q q̇ (+ ∂r/∂t)
+        v = [sum((sp.diff(c, q) * qd for q, qd in zip(t.q, t.qd, strict=True)), sp.diff(c, t.t)) for c in r]
+        moving = [sp.factor(c) for c in v if c != 0]
+        if len(moving) == 1:
+            speed = -moving[0] if moving[0].could_extract_minus_sign() else moving[0]
+            return (
+                f"the {particle.label} moves at {spoken(speed)}, half as fast as {spoken(sp.factor(2 * speed))}"
+            )
+    return "that body's velocity is doubled (it moves half as far as you have it)"
 
 
 def _cross_why(d: Derivation, p: sp.Expr) -> str | None:
@@ -336,12 +358,19 @@ def _body_name(d: Derivation, i: int) -> str:
     return (particles[i].label if i < len(particles) else "") or f"particle {i + 1}"
 
 
-def _left_out(d: Derivation, step: str, p: sp.Expr) -> tuple[str, str | None]:
+def _left_out(
+    d: Derivation, step: str, p: sp.Expr, truth: sp.Expr | None = None, k: int | None = None
+) -> tuple[str, str | None]:
     """(name, why) of a term of T or U left out: by its cause where one body carries another (the block moves
-    with the wedge, so its velocity includes Ẋ), else by its velocities or its parameters, never by the term."""
+    with the wedge, so its velocity includes Ẋ), else by its velocities or its parameters, never by the term.
+    In an equation, one body's weight left out of a coordinate's force is named as that body's weight."""
     t = d.table
     rates = [v for v in t.qd if p.has(v)]
     namespace = t.namespace()
+    if step == "equation" and k is not None and truth is not None and not p.has(*t.qd, *t.qdd):
+        weight = _weight_left_out(d, p, truth, k)
+        if weight is not None:
+            return weight
     if step in ("kinetic", "potential") and d.mechanics.positions:
         owners = [i for i, b in enumerate(d.system.particles) if b.mass in namespace and p.has(namespace[b.mass])]
         if len(owners) == 1:
@@ -365,6 +394,27 @@ def _left_out(d: Derivation, step: str, p: sp.Expr) -> tuple[str, str | None]:
         return f"a {spoken(monomial)} term left out", None
     shown = sorted((unicode(x.name) for x in p.free_symbols if x in set(t.params) | set(t.q)), key=str)
     return f"a term with {', '.join(shown)} left out", None
+
+
+def _weight_left_out(d: Derivation, p: sp.Expr, truth: sp.Expr, k: int) -> tuple[str, str] | None:
+    """A velocity-free term of q_k's equation holding g and one body's mass alone, left out: that body's weight,
+    which acts on q_k too (issue 41, 4: the lower bob's m₂ g l₁ sin θ₁ in the equation for θ₁)."""
+    t = d.table
+    if not any(s.name == "g" for s in p.free_symbols):
+        return None
+    namespace = t.namespace()
+    owners = [i for i, b in enumerate(d.system.particles) if b.mass in namespace and p.has(namespace[b.mass])]
+    if len(owners) != 1 or not d.system.particles[owners[0]].label:
+        return None
+    body, q = _body_name(d, owners[0]), unicode(t.q[k].name)
+    # the whole gravity term of this shape: every body's part with the same factors but its mass (m₁ + m₂) g l₁ sin θ₁
+    same = [
+        u for u in sp.Add.make_args(sp.expand(truth))
+        if not u.has(*t.qd, *t.qdd) and not sp.cancel(u / p).free_symbols & {*t.q, t.t}
+    ]  # fmt: skip
+    whole = spoken(sp.factor(sp.Add(*same)))
+    return (f"the {body}'s weight left out of the gravity term",
+            f"the {body} moves when {q} changes, so its weight also acts on {q}: the gravity term is {whole}")  # fmt: skip
 
 
 def _factors(p: sp.Expr, truth: sp.Expr, base: str, key: str, rates: tuple, params: tuple) -> Iterator[Mistake]:
@@ -452,6 +502,31 @@ def _sums(truth: sp.Expr, base: str, springs: bool, coordinates: Iterable[sp.Sym
                 f"{spoken(term)} ({why})", a,
                 "draw the two directions and measure both angles from the same line" if angle
                 else "draw the two ends and ask which way each coordinate moves them", wrong,
+            )  # fmt: skip
+
+
+def _stretch_parts(d: Derivation, truth: sp.Expr, base: str) -> Iterator[Mistake]:
+    """One end's coordinate left out of a spring's stretch between two moving ends (issue 41, 1: ½ κ x₂² for the
+    middle spring, whose stretch is x₂ − x₁): the spring named by its stiffness where the system has several."""
+    q = d.table.q
+    stiff = [p.name for p in d.system.parameters if p.unit.replace(" ", "") in STIFFNESS_UNITS]
+    for a in sorted({b.base for b in truth.atoms(sp.Pow) if b.exp == 2 and b.base.is_Add}, key=sp.default_sort_key):
+        moving = [t for t in a.args if t.free_symbols & set(q)]
+        if len(moving) < 2 or len(moving) > MAX_SUMS:
+            continue
+        # the spring whose energy holds this stretch, by its stiffness: "the spring κ"
+        holders = [t for t in sp.Add.make_args(truth) if t.has(a)]
+        names = sorted({s.name for t in holders for s in t.free_symbols} & set(stiff))
+        spring = "the spring " + " and ".join(unicode(n) for n in names) if len(names) == 1 and len(stiff) > 1 else (
+            "the spring")
+        for term in sorted(moving, key=sp.default_sort_key):
+            kept = a - term
+            # a stretch is the far end's position less the near end's: both ends move, so both coordinates enter
+            yield Mistake(
+                f"{base}.stretch_part.{slug(sp.sstr(a))[:32]}.{slug(sp.sstr(term))[:16]}", "stretch_part",
+                f"{sum_words(kept, q)} where {sum_words(a, q)} belongs in the stretch of {spring}", a,
+                f"{spring} joins two ends that both move, so its stretch is {sum_words(a, q)}: the far end's position "
+                "less the near end's, which changes when either end moves", truth.xreplace({a: kept}),
             )  # fmt: skip
 
 
@@ -589,6 +664,8 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
         for m in list(potential_mistakes(d))[:MAX_TRAVEL]:
             if step == "equation" and k is not None and m.family == "term_sign" and m.piece is not None:
                 yield from _force_sign(d, k, truth, m.piece)
+            if step == "equation" and k is not None and m.family == "doubled" and _one_term_doubled(m, U):
+                yield from _force_twice(d, k, truth, m.piece)
             changes.append((f"from_potential.{m.key}", f"a U {_slip_words(m)}", sp.Integer(0), m.expr - U))
     for key, name, dT, dU in changes[: 2 * MAX_TRAVEL]:
         if step == "equation" and k is not None:
@@ -633,11 +710,45 @@ def _force_sign(d: Derivation, k: int, truth: sp.Expr, u: sp.Expr) -> Iterator[M
     )  # fmt: skip
 
 
+def _one_term_doubled(m: Mistake, U: sp.Expr) -> bool:
+    """Whether a mistake of U is one of U's terms (its piece, not the whole U) counted twice."""
+    return m.piece is not None and m.piece != U and sp.expand(m.expr - U - m.piece) == 0
+
+
+def _force_twice(d: Derivation, k: int, truth: sp.Expr, u: sp.Expr) -> Iterator[Mistake]:
+    """A force from one term u of U written twice in the equation (issue 41, 3: m ẍ₂ = −k x₂ − κ (x₂ − x₁) − k x₂).
+    The same equation follows from a U with u doubled (a spring's ½ lost), so both causes are said."""
+    q = d.table.q[k]
+    # the generalized force of u along q is −∂u/∂q; the equation d/dt(∂L/∂q̇) − ∂L/∂q holds +∂u/∂q once
+    force = -sp.diff(u, q)
+    if force == 0:
+        return
+    yield Mistake(
+        f"equation.force_twice.{slug(sp.sstr(u))[:48]}", "counted_twice",
+        f"the force {spoken(short_form(force))} counted twice", force,
+        f"each force enters the equation once, as −∂/∂{spoken(q)} of its term of U (here {_with_half(u)}): "
+        f"either this force was written again beside it, or it came from a U with {_with_half(2 * u)} where "
+        f"{_with_half(u)} belongs", truth + sp.diff(u, q),
+    )  # fmt: skip
+
+
+def _with_half(term: sp.Expr) -> str:
+    """A term as a textbook prints it, its ½ in front: ½ k x₂², never k x₂²/2."""
+    c, rest = sp.factor(term).as_coeff_Mul()
+    return f"½ {spoken(rest)}" if c == sp.Rational(1, 2) else spoken(term)
+
+
 def _slip_words(m: Mistake) -> str:
-    """A mistake of T or U as a clause after "a T" or "a U": "with the sign of … reversed", "that leaves out …"."""
+    """A mistake of T or U as a clause after "a T" or "a U": "with the sign of … reversed", "with the ½ of … left
+    out of …", "that leaves out …".  No T or U is typed in the step the clause is said in, so the name's "your
+    term" is "the term"; a name that already says what is left out (or how a term is wrong) takes "with", so that
+    no clause says "leaves out … left out"."""
+    name = re.sub(r"\byour\b", "the", m.name)
     if m.family == "term_sign":
-        return f"with {m.name} reversed"
-    return f"that leaves out {m.name}"
+        return f"with {name} reversed"
+    if says_how(name):
+        return f"with {name}"
+    return f"that leaves out {name}"
 
 
 def _omega_changed(d: Derivation, dT: sp.Expr, dU: sp.Expr, asked: list) -> list[sp.Expr]:

@@ -71,6 +71,34 @@ GRAVITY_CLAUSE = (
 )
 
 
+def has_gravity(d: Derivation) -> bool:
+    """Whether the system has gravity: a parameter g.  The one answer to "is there gravity in this problem" for every
+    message family."""
+    return any(p.name == "g" for p in d.system.parameters)
+
+
+def why_no_gravity(d: Derivation) -> str:
+    """Why a system without g has no gravity term, where its bodies show it: every height stays the same, so the
+    weights do no work (issue 41, 4: the coupled oscillators' masses on a horizontal line); "" where they do not."""
+    moving = {*d.table.q, d.table.t}
+    positions = d.mechanics.positions
+    if has_gravity(d) or not positions or any(r[2].free_symbols & moving for r in positions):
+        return ""
+    # a horizontal line where the bodies move along x alone, else a level plane
+    line = not any(r[1].free_symbols & moving for r in positions)
+    where = "a horizontal line" if line else "a level plane"
+    if len(positions) > 1:
+        return f"the masses move on {where}, so their heights never change and gravity does no work on them"
+    return f"the mass moves on {where}, so its height never changes and gravity does no work on it"
+
+
+def absent_names(d: Derivation) -> dict[str, str]:
+    """Names a student may expect that this problem has not, each with why (read_answer says it): g where no
+    body's height changes."""
+    why = why_no_gravity(d)
+    return {"g": why} if why else {}
+
+
 def without_gravity(text: str | None) -> str | None:
     """A hint without its clause about gravity, for a system with no g."""
     return text.replace(*GRAVITY_CLAUSE) if text else text
@@ -103,7 +131,8 @@ POINTERS = {
     "acceleration": "Write the Euler–Lagrange equations and solve them for q̈; when coordinates are coupled (a "
     "mass matrix with off-diagonal terms), solve the equations together.",
     "hamiltonian": "h = Σ p_k q̇_k − L, written in the coordinates and velocities.",
-    "omega_squared": "About a stable equilibrium, where the effective potential has zero slope, ω² is the effective "
+    # {w}: the document's letter for the frequency (ω, or Ω where ω is a parameter: student-i 6), formatted where read
+    "omega_squared": "About a stable equilibrium, where the effective potential has zero slope, {w}² is the effective "
     "potential's second derivative there divided by the effective mass (the coefficient of ½ q̇² in T).",
 }
 
@@ -315,7 +344,13 @@ RULES: tuple[Rule, ...] = (
     ),
 )
 
-OMEGA_HINT = "This is ω, not ω²: square it (ω² = U_eff″/m_eff at the equilibrium)."
+# {w}: the document's letter for the frequency, as in POINTERS["omega_squared"]
+OMEGA_HINT = "This is {w}, not {w}²: square it ({w}² = U_eff″/m_eff at the equilibrium)."
+
+
+def pointer(step: str, frequency: str = "ω") -> str:
+    """A step's rule, the frequency named by the document's letter."""
+    return POINTERS[step].format(w=frequency) if step == "omega_squared" else POINTERS[step]
 # a momentum short of a factor: the factor is named, never the corrected momentum
 MISSING_FACTOR_HINT = (
     "A factor {factor} is missing from your momentum. p = ∂L/∂q̇ keeps every factor that multiplies the velocity "

@@ -259,7 +259,7 @@ class Checking:
         try:
             # an equation typed lhs = rhs (an acceleration q_ddot = rhs) is read as the step takes it
             if follow_up is None:
-                parsed = read_answer(answer, step, truth.coordinate, truth.kinds)[0]
+                parsed = read_answer(answer, step, truth.coordinate, truth.kinds, truth.absent)[0]
             else:
                 parsed = check_answer(answer, kind, truth.kinds)
         except CheckError as exc:

@@ -29,6 +29,7 @@ import sympy as sp
 
 from app.engine.answer_sides import read_answer
 from app.engine.check import CheckError, answer_error, conserved_momenta, name_kinds
+from app.engine.mistakes import absent_names
 from app.engine.parse import ExpressionError, Parsed, build
 from app.engine.reality import real_somewhere
 from app.engine.typed_latex import typed_equation, typed_latex
@@ -60,6 +61,11 @@ def scene_kinds(scene_id: str) -> dict[str, str]:
     return name_kinds(d.table.names, d.table.parameter_names, tuple(p.name for p in conserved_momenta(d)))
 
 
+def scene_absent(scene_id: str) -> dict[str, str]:
+    """The names a scene's student may expect that it has not, with why (as the checker's refusal says them)."""
+    return absent_names(derivations.derivation(scene_id))
+
+
 def typeset_job(parsed: Parsed, equation: bool = False) -> bytes:
     """Worker job: the answer the web process read (``check_answer``) through gate 3, as the checker builds
     it, then its LaTeX."""
@@ -86,14 +92,15 @@ class Typesetter:
         self.users = users
         self.seconds = seconds
         self.results = ResultCache(entries=MAX_TYPESET, total_bytes=4 * 2**20)
-        self._scenes: dict[str, dict[str, str]] = {}
+        self._scenes: dict[str, tuple[dict[str, str], dict[str, str]]] = {}
         self._lock = threading.Lock()
 
-    def _scene_kinds(self, scene_id: str) -> dict[str, str]:
+    def _scene_kinds(self, scene_id: str) -> tuple[dict[str, str], dict[str, str]]:
+        """A scene's names and kinds, and the names it has not with why."""
         with self._lock:
             found = self._scenes.get(scene_id)
         if found is None:
-            found = scene_kinds(scene_id)
+            found = (scene_kinds(scene_id), scene_absent(scene_id))
             with self._lock:
                 self._scenes[scene_id] = found
         return found
@@ -109,14 +116,16 @@ class Typesetter:
         coordinate: str | None = None,
     ) -> bytes:
         """``{"latex"}`` of the answer, or InvalidSystem with the checker's message and the offending part."""
-        kinds = await asyncio.to_thread(self._scene_kinds, scene) if scene is not None else system_kinds(*names)
+        kinds, absent = (
+            await asyncio.to_thread(self._scene_kinds, scene) if scene is not None else (system_kinds(*names), {})
+        )
         # a position step's coordinate is a Cartesian component (x, z1), not a generalized coordinate
         if coordinate is not None and step != "position" and kinds.get(coordinate) != "position":
             coordinates = ", ".join(n for n, k in kinds.items() if k == "position" and n != "t")
             raise InvalidSystem(f"coordinate: {coordinate!r} is not a coordinate here; the coordinates are: {coordinates}",
                                 ("coordinate",), coordinate)  # fmt: skip
         try:
-            parsed, equation = read_answer(text, step, coordinate, kinds)
+            parsed, equation = read_answer(text, step, coordinate, kinds, absent)
         except CheckError as exc:
             raise _refusal(exc) from None
         key = spec_key("typeset", step, kinds, text.strip())

@@ -508,6 +508,45 @@ SLIPS = [
     ("simple-pendulum", "hamiltonian", None, "m*R**2*theta_dot**2/2 + m*g*R*theta**2/2", SMALL),
 ]
 
+
+# Slips a fresh student review found named badly or not at all (issue 41, the tutor names more slips): each must be
+# named, never left to the step's rule
+NAMED = [
+    # issue 41, 1: the middle spring stretched by x₂ alone got the step's rule: its stretch is x₂ − x₁
+    ("coupled-oscillators", "potential", None, "k*(x1**2 + x2**2)/2 + kappa*x2**2/2",
+     r"x₂ where x₂ − x₁ belongs in the stretch of the spring κ"),
+    # issue 41, 5: the middle mass given the end masses' speed sum: it moves at half of it, (ẏ₁ + ẏ₂)/2
+    ("pulley", "kinetic", None, "M*(y1_dot + y2_dot)**2/2 + m1*y1_dot**2/2 + m2*y2_dot**2/2",
+     r"the middle mass moves at \(ẏ₁ \+ ẏ₂\)/2, half as fast as ẏ₁ \+ ẏ₂"),
+    # issue 41, 3: the wall spring's force counted twice was "a U that leaves out the ½ of ½ k × stretch² left out
+    # of your term k x₂²": named as the force counted twice, with the U that would give it as the other cause
+    ("coupled-oscillators", "equation", "x2", "m*x2_ddot - (-k*x2 - kappa*(x2 - x1) - k*x2)",
+     r"the force −k x₂ counted twice.*or it came from a U with k x₂² where ½ k x₂² belongs"),
+    # issue 41, 4: sharper names. A sum whose terms differ in units by one factor: what would fix it
+    ("helix-bead", "kinetic", None, "m*z_dot**2*(1 + alpha*R**2)/2",
+     r"1 has no unit.*α is in 1/m, so R² α is a length: did you mean R² α²\?"),
+    ("helix-bead", "kinetic", None, "m*(z_dot**2 + R**2*alpha**2)/2",
+     r"velocity factor is missing from R² α²: did you mean R² α² ż², the square of the speed R α ż\?"),
+    # a whole factor missing is a factor, not "a ż term left out"
+    ("helix-bead", "momentum", "z", "m*z_dot", r"A factor 1 \+ α²R² is missing from your momentum"),
+    # every velocity-squared term of the equation left out, named as the double pendulum's is: by the chain rule
+    ("rotating-parabola", "equation", "rho", "m*(1 + 4*alpha**2*rho**2)*rho_ddot + 2*alpha*g*m*rho - m*omega**2*rho",
+     r"the chain-rule terms of d/dt\(∂L/∂ρ̇\) left out.*together 4 m α² ρ ρ̇²"),
+    # m₁ where m₁ + m₂ belongs in the gravity term: the lower bob's weight, not "a term with g, l₁, m₂, θ₁"
+    (
+        "double-pendulum",
+        "equation",
+        "theta1",
+        "(m1 + m2)*l1**2*theta1_ddot + m2*l1*l2*cos(theta1 - theta2)*theta2_ddot"
+        " + m2*l1*l2*sin(theta1 - theta2)*theta2_dot**2 + m1*g*l1*sin(theta1)",
+        r"the lower bob's weight left out.*its weight also acts on θ₁: the gravity term is \(m₁ \+ m₂\) g l₁ sin\(θ₁\)",
+    ),
+    # issue 41, 2: the wedge given a height got the step's rule: it slides on the floor, so M has no term in U
+    ("movable-incline", "potential", None, "-m*g*D*sin(alpha) - M*g*X*sin(alpha)",
+     r"for the wedge, whose height never changes.*its height does not change.*M has no term in U"),
+]
+SLIPS += NAMED
+
 # Correct answers in unusual forms: every one must be accepted ("correct", or "equivalent" where the
 # step's relation allows another zero of U or a nonzero factor).
 CORRECT = [

@@ -14,7 +14,15 @@ from app.engine.derive import Derivation, derive
 from app.engine.dimensions import dimension, system_dimensions
 from app.engine.exercises import exercise_json
 from app.engine.mistake_families import spoken
-from app.engine.mistakes import CONSTANT_FACTOR_HINT, MISSING_FACTOR_HINT, OMEGA_HINT, POINTERS, RULES, without_springs
+from app.engine.mistakes import (
+    CONSTANT_FACTOR_HINT,
+    MISSING_FACTOR_HINT,
+    OMEGA_HINT,
+    POINTERS,
+    RULES,
+    pointer,
+    without_springs,
+)
 from app.engine.parse import parse_expression
 from app.scenes import SCENES
 from app.scenes.types import Parameter, Particle, System
@@ -43,7 +51,7 @@ def derivation(name: str) -> Derivation:
     return derive(system_of(USER_SYSTEMS[name]) if name in USER_SYSTEMS else SCENES[name].system)
 
 
-def expected_hint(step: str, hint: str | None) -> str | None:
+def expected_hint(step: str, hint: str | None, frequency: str = "ω") -> str | None:
     if hint is None:
         return None
     kind, _, factor = hint.partition(":")
@@ -52,9 +60,9 @@ def expected_hint(step: str, hint: str | None) -> str | None:
     if kind == "units":
         return "units"
     if kind == "pointer":
-        return POINTERS[step]
+        return pointer(step, frequency)
     if kind == "omega":
-        return OMEGA_HINT
+        return OMEGA_HINT.format(w=frequency)
     if kind == "missing_factor":
         return MISSING_FACTOR_HINT.format(factor=factor)
     if kind == "constant_factor":
@@ -76,7 +84,7 @@ def test_corpus(system, step, coordinate, answer, verdict, difference, hint):
     fitted = (lambda text: text) if pb.springs else without_springs
     if hint is not None and hint.startswith("key:"):
         assert result["mistake"]["key"] == hint.removeprefix("key:"), result
-        assert result["hint"] not in POINTERS.values()
+        assert result["hint"] not in {pointer(s, pb.frequency) for s in POINTERS}
         # the piece kept for the reveal says what it is, or is not kept where the difference says it all; under
         # the name, nothing of the correct answer
         tex = result["reveal"]["piece"]
@@ -89,7 +97,7 @@ def test_corpus(system, step, coordinate, answer, verdict, difference, hint):
         # terms whose units disagree (θ̈ is 1/s², g sin θ an acceleration) are named as such
         assert result["hint"].startswith("Check the units") and result["mistake"]["key"] == "units.mismatch", result
     else:
-        assert result["hint"] == fitted(expected_hint(step, hint))
+        assert result["hint"] == fitted(expected_hint(step, hint, pb.frequency))
     if difference is None:
         assert result["reveal"] is None
     else:
@@ -253,7 +261,7 @@ def test_typical_mistakes_get_their_specific_diagnosis(system, step, coordinate,
     assert result["verdict"] == "incorrect", result
     assert result["mistake"] is not None and result["mistake"]["key"] == key, result
     # never only the step's general rule: the hint names this mistake, and a piece typeset says what it is
-    assert result["hint"] not in POINTERS.values() and result["mistake"]["name"]
+    assert result["hint"] not in {pointer(s) for s in POINTERS} and result["mistake"]["name"]
     assert result["mistake"]["latex"] == "" or result["mistake"]["latex"].startswith(r"\text{"), result["mistake"]
     assert "**" not in result["hint"] and "*" not in result["mistake"]["name"]
 

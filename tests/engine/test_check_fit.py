@@ -10,7 +10,10 @@ import unicodedata
 import pytest
 
 from app.engine.check import judge
-from app.engine.mistakes import POINTERS, has_springs
+from app.engine.derive import derive
+from app.engine.exercises import exercise_json
+from app.engine.mistakes import OMEGA_HINT, POINTERS, has_springs, pointer
+from app.scenes import SCENES
 from tests.engine.slip_corpus import SLIPS
 from tests.engine.test_check_slips import derivation, step_problem
 
@@ -105,7 +108,16 @@ def test_a_swapped_term_of_an_equation_is_quoted_as_typed():
 
 
 def test_the_rule_for_omega_squared_uses_no_coordinate_of_its_own_and_no_program_names():
-    assert not re.search(r"r₀|_", POINTERS["omega_squared"]), POINTERS["omega_squared"]
+    assert not re.search(r"r₀|_", pointer("omega_squared")), pointer("omega_squared")
+
+
+def test_the_frequencys_letter_is_a_field_of_its_words_filled_where_read():
+    # (issue 41, 6a) the rule and the ω-for-ω² hint hold the letter as a field, never a literal ω patched over
+    assert "ω" not in POINTERS["omega_squared"] and "ω" not in OMEGA_HINT
+    # the practice page's rule for the rotating wire speaks of Ω², as its hints do
+    rule = exercise_json(derive(SCENES["rotating-parabola"].system))["rules"]["omega_squared"]
+    assert "Ω² is the effective potential's second derivative" in rule and "ω" not in rule, rule
+    assert "ω² is the effective" in exercise_json(derive(SCENES["simple-pendulum"].system))["rules"]["omega_squared"]
 
 
 def test_a_spring_loses_its_half_and_a_mass_in_an_acceleration_is_named():

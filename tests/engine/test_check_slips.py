@@ -12,10 +12,10 @@ import pytest
 
 from app.engine.check import judge, problem
 from app.engine.derive import Derivation, derive
-from app.engine.mistakes import POINTERS
+from app.engine.mistakes import POINTERS, pointer
 from app.scenes import SCENES
 from app.scenes.types import Parameter, Particle, System
-from tests.engine.slip_corpus import CORRECT, SLIPS, SYSTEMS
+from tests.engine.slip_corpus import CORRECT, NAMED, SLIPS, SYSTEMS
 
 
 def system_of(spec: dict) -> System:
@@ -55,9 +55,10 @@ def words(result: dict[str, Any]) -> str:
 def outcome(slip: tuple) -> tuple[str, dict[str, Any]]:
     """'named' (the mistake the teacher names), 'misnamed' (another one), or 'general' (the step's rule)."""
     system, step, coordinate, answer, named = slip
-    result = judge(step_problem(system, step, coordinate), answer)
+    pb = step_problem(system, step, coordinate)
+    result = judge(pb, answer)
     assert result["verdict"] == "incorrect", (slip, result)
-    if result["mistake"] is None and result["hint"] in POINTERS.values():
+    if result["mistake"] is None and result["hint"] in {pointer(s, pb.frequency) for s in POINTERS}:
         return "general", result
     found = re.search(unicodedata.normalize("NFC", named), words(result), re.IGNORECASE)
     return ("named" if found else "misnamed"), result
@@ -101,6 +102,12 @@ def test_an_equation_multiplied_by_a_coordinate_is_equivalent_and_says_where():
 def test_a_named_slip_is_named_rightly(slip):
     kind, result = outcome(slip)
     assert kind != "misnamed", (slip, words(result))
+
+
+@pytest.mark.parametrize("slip", NAMED, ids=[f"{s[0]}-{s[1]}-{i}" for i, s in enumerate(NAMED)])
+def test_a_slip_the_review_found_unnamed_is_named(slip):
+    kind, result = outcome(slip)
+    assert kind == "named", (slip, words(result))
 
 
 @pytest.mark.slow

@@ -135,7 +135,8 @@ def test_the_frequency_step_uses_the_documents_letter_where_omega_is_a_parameter
 
 def test_the_rule_for_u_names_no_gravity_where_the_system_has_none():
     """student-i 3: the masses between springs slide on a horizontal line, and the hint spoke of m g × height."""
-    hint = judge(step_problem("coupled-oscillators", "potential", None), "k*(x1**2 + x2**2)/2 + kappa*x2**2/2")["hint"]
+    # (an answer no mistake names: the middle spring stretched by x₂ alone is named since issue 41, 1)
+    hint = judge(step_problem("coupled-oscillators", "potential", None), "k*(x1**2 + x2**2)/2 + kappa*x1*x2")["hint"]
     assert hint == "U depends on positions only: ½ k times the square of each spring's stretch.", hint
     # with gravity, both
     hint = judge(step_problem("simple-pendulum", "potential", None), "m*g*R*theta")["hint"] or ""

@@ -8,11 +8,16 @@ import re
 from functools import cache
 
 import pytest
+import sympy as sp
 
 from app.engine.answer_sides import read_answer
 from app.engine.check import CheckError, judge, problem
 from app.engine.derive import derive
+from app.engine.diagnose import sentence
+from app.engine.dimensions import system_dimensions
 from app.engine.exercises import exercise_json
+from app.engine.mistake_families import kinetic_mistakes, potential_mistakes
+from app.engine.mistake_pieces import travelled
 from app.scenes import SCENES
 
 SCENE_IDS = ("simple-pendulum", "double-pendulum")
@@ -105,3 +110,27 @@ def test_the_verdicts_name_no_code(step, coordinate, answer):
     said = [result["message"], result.get("hint") or "", mistake.get("name", ""), mistake.get("where", "")]
     said += [(result.get("partial") or {}).get("message", ""), (result.get("follow_up") or {}).get("question", "")]
     assert [s for s in said if CODE.search(_readable(s))] == [], said
+
+
+@pytest.mark.parametrize("scene", sorted(SCENES))
+def test_a_composed_sentence_says_left_out_once(scene):
+    # issue 41, 3: "a U that leaves out the ½ of ½ k × stretch² left out of your term k x₂²": the clause composed
+    # around a slip of T or U (carried into an equation) and each hint's opening say "left out" once at most
+    d = _derivation(scene)
+    carried = list(travelled(d, "equation", 0, sp.Integer(0), system_dimensions(d), []))
+    own = [*kinetic_mistakes(d), *potential_mistakes(d)]
+    said = [sentence(m, "equation") for m in carried] + [sentence(m, "T") for m in own]
+    assert carried and said
+    assert [s for s in said if len(re.findall(r"left out|leaves out", s)) > 1] == []
+    # a slip of U said inside a clause names the term of a U never typed here: "the term", not "your term"
+    assert [m.name for m in carried if "your" in m.name and m.family == "travelled"] == []
+
+
+def test_a_g_is_refused_with_why_only_where_no_height_changes():
+    # issue 41, 4: the coupled oscillators' masses move on a horizontal line; the rail's bodies likewise; the
+    # pendulum has g, and a system of T and U alone shows no bodies to say why by
+    level = problem(derive(SCENES["coupled-oscillators"].system), "potential", None, mistakes=False)
+    with pytest.raises(CheckError) as refused:
+        read_answer("m g x1", "potential", None, level.kinds, level.absent)
+    assert "g is not a name in this problem: the masses move on a horizontal line, so their heights never change " in str(refused.value)
+    assert not level.gravity and problem(_derivation("simple-pendulum"), "potential", None, mistakes=False).gravity

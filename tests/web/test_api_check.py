@@ -234,3 +234,17 @@ def test_an_acceleration_typed_with_a_combining_double_dot_is_checked(client, fo
         response = check(client, body)
         assert response.status_code == 200, response.text
         assert response.json()["verdict"] == "correct", response.json()
+
+
+def test_a_g_typed_where_the_masses_stay_level_is_refused_with_why(client):
+    # issue 41, 4: "g is not a name in this problem" said why, by the check and the typeset preview alike
+    body = {"step": "equation", "coordinate": "x2", "answer": "m*x2_ddot + k*x2 + kappa*(x2 - x1) = m*g"}
+    refused = check(client, body, scene="coupled-oscillators")
+    assert refused.status_code == 422, refused.text
+    why = "g is not a name in this problem: the masses move on a horizontal line, so their heights never change"
+    assert why in refused.json()["detail"], refused.json()
+    shown = client.post(
+        "/api/typeset",
+        json={"text": body["answer"], "step": "equation", "coordinate": "x2", "scene": "coupled-oscillators"},
+    )
+    assert shown.status_code == 422 and shown.json()["detail"] == refused.json()["detail"], shown.text
