@@ -794,7 +794,8 @@ def _one_coordinate_step(
             f"oscillates at the angular frequency {wu}, a stable equilibrium."
         )
     elif w2 < 0:
-        rate = sp.sqrt(-mode.exact) if mode.exact is not None else None
+        # the rate √(−ω²) printed over the whole radicand, √(3g/(2l)), not SymPy's √6 √(g/l)/2
+        rate = sp.Pow(-mode.exact, sp.S.Half, evaluate=False) if mode.exact is not None else None
         shown = pr.tex(mode.exact) if mode.exact is not None else _figures(w2) + PER_SECOND_SQUARED
         rows.append(rf"{wt}^2 = {shown} < 0\quad \text{{(no oscillation: it runs away)}}")
         rows.append(r"\text{rate } \sqrt{-" + wt + "^2} = " + _closed(rate, math.sqrt(-w2), r"\,\mathrm{s}^{-1}", pr))

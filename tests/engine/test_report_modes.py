@@ -134,3 +134,10 @@ def test_a_long_radicand_in_omega_squared_is_named_on_a_line_of_its_own():
     # the API's closed form of each ω² is unchanged (the root written out)
     (first, *_) = derivation_document("double-pendulum")["normal_modes"]
     assert all(r"\sqrt{\left(m_{1} + m_{2}\right)" in m["latex"] for m in first["modes"])
+
+
+def test_a_runaway_rate_is_printed_over_its_whole_radicand():
+    # about θ = π the physical pendulum's ω² = −3g/(2l): its rate is √(3g/(2l)), not SymPy's √6 √(g/l)/2
+    doc = derivation_document("physical-pendulum")
+    latex = " ".join(row for s in doc["steps"] for row in [s["latex"]] if "runs away" in s["latex"])
+    assert r"\sqrt{\frac{3 g}{2 l}}" in latex and r"\sqrt{6}" not in latex
