@@ -108,28 +108,46 @@ export function drawHandle(ctx, h, dpr) {
 }
 
 export const HANDLE_LABEL = "drag: initial velocity";
+
+/** Points along every rod, string and spring at the first instant, about 8 CSS pixels apart, and the fixed points
+ * (pivots, anchors): what the handle's words should not cover where there is room (handleWordsBox). */
+export function linePoints(player, dpr) {
+  const out = (player.fixed || []).map((p) => player.at(p, 0));
+  for (const link of player.spec.links || []) {
+    const [ax, ay] = player.at(link.from, 0), [bx, by] = player.at(link.to, 0);
+    const n = Math.max(1, Math.ceil(Math.hypot(bx - ax, by - ay) / (8 * dpr)));
+    for (let k = 0; k <= n; k++) out.push([ax + ((bx - ax) * k) / n, ay + ((by - ay) * k) / n]);
+  }
+  return out;
+}
+
 // the height of the handle's words, CSS pixels (their font and padding: .handle-label in site.css)
 export const HANDLE_WORDS_HIGH = 22;
 
 /**
  * Where the handle's words go on the canvas (device pixels: their box [x0, y0, x1, y1]), ``wide`` device pixels
- * wide: the first of right of the handle and above it, left, centred; the same below it; then a line higher, that
+ * wide: the first of right of the handle and above it, left, centred; the same below it; then a line higher or lower, that
  * stays inside the canvas and covers no body (``placed``, the bodies' centres) — a body at the top of the view,
- * the double pendulum's lower bob at 2 rad, was hidden under them (prof-h 7). One home: the words (labelHandle)
- * and the bodies' labels that keep clear of them (bodies.js) both place them here.
+ * the double pendulum's lower bob at 2 rad, was hidden under them (prof-h 7) — and, where a place allows it, no
+ * rod, string, spring or pivot either (``lines``, from linePoints: the physical pendulum's rod ran under them on a
+ * phone). One home: the words (labelHandle) and the bodies' labels that keep clear of them (bodies.js) both place
+ * them here.
  */
-export function handleWordsBox(grip, wide, canvas, placed, dpr) {
+export function handleWordsBox(grip, wide, canvas, placed, dpr, lines = []) {
   const gap = (HANDLE_RADIUS + 6) * dpr, high = HANDLE_WORDS_HIGH * dpr, clear = 12 * dpr;
   const right = grip.x + gap, left = grip.x - gap - wide;
   const above = grip.y - high - 2 * dpr, below = grip.y + (HANDLE_RADIUS + 4) * dpr;
   const inside = (x0, y0) => x0 >= 0 && x0 + wide <= canvas.width && y0 >= 0 && y0 + high <= canvas.height;
-  const free = (x0, y0) => placed.every(([bx, by]) =>
-    bx < x0 - clear || bx > x0 + wide + clear || by < y0 - clear || by > y0 + high + clear);
+  const away = (points, margin) => (x0, y0) => points.every(([bx, by]) =>
+    bx < x0 - margin || bx > x0 + wide + margin || by < y0 - margin || by > y0 + high + margin);
+  const free = away(placed, clear), uncrossed = away(lines, 2 * dpr);
   // centred on the handle, moved inside the canvas (on a phone neither side may have room)
-  const centred = Math.min(Math.max(0, grip.x - wide / 2), canvas.width - wide), higher = above - high;
+  const centred = Math.min(Math.max(0, grip.x - wide / 2), canvas.width - wide);
+  const higher = above - high, lower = below + high;
   const spots = [[right, above], [left, above], [centred, above], [right, below], [left, below], [centred, below],
-    [right, higher], [centred, higher]];
-  const [x0, y0] = spots.find(([x, y]) => inside(x, y) && free(x, y))
+    [right, higher], [centred, higher], [left, higher], [right, lower], [left, lower], [centred, lower]];
+  const [x0, y0] = spots.find(([x, y]) => inside(x, y) && free(x, y) && uncrossed(x, y))
+    ?? spots.find(([x, y]) => inside(x, y) && free(x, y))
     // none clear: above, to the right unless that leaves the canvas (as before any body was looked at)
     ?? [right + wide <= canvas.width ? right : Math.max(0, left), Math.max(0, above)];
   return [x0, y0, x0 + wide, y0 + high];
@@ -153,7 +171,7 @@ export function labelHandle(player, h, dpr) {
   // clear of every body at the first instant (handleWordsBox), in CSS pixels within the wrap: the canvas's own
   // offset (its border) plus the box's place on it
   const placed = (player.masses || []).map((p) => player.at(p, 0));
-  const [x0, y0] = handleWordsBox(h, label.offsetWidth * dpr, player.canvas, placed, dpr);
+  const [x0, y0] = handleWordsBox(h, label.offsetWidth * dpr, player.canvas, placed, dpr, linePoints(player, dpr));
   label.style.left = `${Math.round(player.canvas.offsetLeft + player.canvas.clientLeft + x0 / dpr)}px`;
   label.style.top = `${Math.round(player.canvas.offsetTop + player.canvas.clientTop + y0 / dpr)}px`;
 }

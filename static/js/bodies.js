@@ -2,7 +2,7 @@
  * bodies.js — a mechanism's bodies drawn on the canvas (animation.js): fading trails, fixed points,
  * the moving bodies (balls, or blocks on their slope) and their labels, placed where they hide least.
  */
-import { HANDLE_LABEL, handleWordsBox } from "./arrows.js";
+import { HANDLE_LABEL, handleWordsBox, linePoints } from "./arrows.js";
 import { HANDLE_RADIUS } from "./drag.js";
 
 export const MASS_COLORS = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a"];
@@ -60,7 +60,7 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
   ctx.font = `600 ${12.8 * dpr}px system-ui, sans-serif`;
   const words = ctx.measureText(`${HANDLE_LABEL} (now 0)`).width + 10 * dpr;
   ctx.font = font;
-  const gripWords = grip ? handleWordsBox(grip, words, canvas, placed, dpr) : null;
+  const gripWords = grip ? handleWordsBox(grip, words, canvas, placed, dpr, linePoints(player, dpr)) : null;
   const cost = (x0, y0, x1, y1) => {
     let c = 0;
     if (x0 < 2 * dpr || x1 > canvas.width - 2 * dpr || y0 < 2 * dpr || y1 > canvas.height - 2 * dpr) c += 100;
