@@ -38,11 +38,11 @@ def _check(step, answer, verdict):
 
 def test_a_phone_says_what_the_grade_counts_and_keeps_what_was_done(browser, live_server, classes, artifacts):  # noqa: F811
     context, page, errors = _phone(browser, live_server)
-    made = page.request.post("/api/classes", data={"title": "Tuesday practice"}).json()
+    made = page.request.post("/api/classes", data={"title": "Mechanics II, Tuesday practice"}).json()
     teacher = {"Authorization": f"Bearer {made['teacher_key']}"}
     item = {"scene": "simple-pendulum", "steps": [{"step": "kinetic"}, {"step": "potential"}]}
     assert page.request.post(f"/api/classes/{made['code']}/assignments", headers=teacher,
-                             data={"title": "Week 3", "items": [item]}).status == 201
+                             data={"title": "Week 3: pendulums and the pulley", "items": [item]}).status == 201
 
     page.goto(f"/join?code={made['code']}")
     page.fill("#join-name", "Mei")
