@@ -312,6 +312,8 @@ class StudentStep(BaseModel):
     not_read: int = Field(0, description="Of them, answers the checker could not read.")
     done: bool
     shown: bool = Field(False, description="\"Show this step\" pressed before the first right answer (or none).")
+    counted: bool = Field(False, description="Right on one's own by the due time: the step counts toward the grade.")
+    late: bool = Field(False, description="Right on one's own, but only after the due time: not counted.")
     last: str
 
 
@@ -322,7 +324,8 @@ class StudentProgress(BaseModel):
     attempts: int = Field(description="Every answer the student sent, those not read included.")
     not_read: int = Field(0, description="Of them, answers the checker could not read (never counted wrong).")
     done: int = Field(description="Assigned steps done (all steps done when nothing is assigned).")
-    own: int = Field(0, description="Of them, those done on one's own (not shown first): the ones the grade counts.")
+    own: int = Field(0, description="Of them, those done on one's own (not shown first).")
+    counted: int = Field(0, description="Of those, the ones the grade counts: right on one's own by the due time.")
     shown: int = Field(0, description="Assigned steps shown before any right answer.")
     assigned: int
     steps: list[StudentStep]
@@ -354,3 +357,8 @@ class ClassView(BaseModel):
     title: str
     role: str = Field(description="`instructor` or `student`.")
     assignment: list[dict[str, Any]]
+    record: list[dict[str, Any]] | None = Field(
+        None, description="A student's own page as they left it, per step answered or shown: `assignment`, `item`, "
+        "`step`, `coordinate`, the last `answer` as typed, what it was `answered` (`status` 200 and the verdict as "
+        "`body`, or 422 and the refusal of an answer not read; null for one recorded without it) and `shown`."
+    )

@@ -19,9 +19,15 @@ const $ = (id) => document.getElementById(id);
 const CLOSED = "This class was closed by your instructor: its page and your answers in it are gone. To join another "
   + "class, type its code.";
 
-let current = memory.get(); // {code, key, name, title}
+let current = memory.get(); // {code, key, name, title, recovery}: recovery until "I have kept it" is pressed
 let series = null; // the class's assignments, in order: {n, title, due, items}
-const done = new Set(); // "assignment|item|step|coordinate" of the steps this student has done
+// per step ("assignment|item|step|coordinate"), from the server's record: right (answered right at some time),
+// counted (right on one's own by the due time: what the grade counts, reports.counts), late, shown ("Show this step"
+// pressed at any time), and the last answer with what it was answered
+const record = new Map();
+const recordOf = (key) => record.get(key) || {};
+// the text being typed in each box, kept in this browser until it is checked: nothing typed is lost on a reload
+const drafts = () => stored(`lagrange-join-drafts:${current.code}:${current.name}`);
 // one check at a time from this page: an answer sent while another is being checked waits for it here, rather
 // than being turned away by the server (one job per student) with "Busy"
 let checking = Promise.resolve();
@@ -40,17 +46,46 @@ function show() {
   showPanes("join-start", "join-live", current && { "joined-title": current.title, "joined-name": current.name });
 }
 
+/** Steps done as the grade counts them ("2 of 8 steps done", the dashboard's "done"), then the steps answered right
+ *  that it does not count, by why: "· 1 right after it was shown · 1 right but late". */
+function progressWords(steps) {
+  const counted = steps.filter((s) => recordOf(s).counted).length;
+  const shown = steps.filter((s) => recordOf(s).right && !recordOf(s).counted && !recordOf(s).late).length;
+  const late = steps.filter((s) => recordOf(s).late).length;
+  return [`${counted} of ${steps.length} steps done`,
+    ...(shown ? [`${shown} right after it was shown`] : []), ...(late ? [`${late} right but late`] : [])].join(" · ");
+}
+
 function progress() {
   const steps = (series || []).flatMap(keysOf);
-  const count = steps.filter((s) => done.has(s)).length;
-  $("joined-progress").textContent = steps.length ? `${count} of ${steps.length} steps done` : "";
+  $("joined-progress").textContent = steps.length ? progressWords(steps) : "";
   for (const a of series || []) {
     const mine = keysOf(a);
     const line = document.querySelector(`[data-assignment="${a.n}"] .join-assignment-progress`);
-    if (line) line.textContent = `${mine.filter((s) => done.has(s)).length} of ${mine.length} steps done`;
+    if (line) line.textContent = progressWords(mine);
     const due = document.querySelector(`[data-assignment="${a.n}"] .join-assignment-due`);
     if (due) due.replaceChildren(...dueWords(a));
   }
+}
+
+const STEP_WORDS = {
+  counted: "Done: this step is answered right.",
+  shown: "Right — but this step was shown before you answered it, so it does not count as done for the grade.",
+  late: "Right, but late: it is recorded after the due time and does not count toward the grade.",
+  seen: "You were shown this step: an answer you type now is recorded, but it does not count as done for the grade.",
+};
+
+/** A step's card says where it stands, from the record: done (as the grade counts it), right but shown first,
+ *  right but late, or shown and not answered right yet; the border is green only when done. */
+function stepMark(form) {
+  const mine = recordOf(form.dataset.key);
+  const state = mine.counted ? "counted" : mine.late ? "late" : mine.right ? "shown" : mine.shown ? "seen" : null;
+  const label = form.querySelector(".practice-done-label");
+  label.hidden = !state;
+  label.textContent = state ? STEP_WORDS[state] : "";
+  label.dataset.state = state || "";
+  form.classList.toggle("step-done", state === "counted");
+  form.classList.toggle("step-right-uncounted", state === "shown" || state === "late");
 }
 
 /** An assignment's due time, and once it has passed, that an answer now is late and does not count. */
@@ -179,12 +214,28 @@ function stepView(a, item, practice, s, index) {
     shown.hidden = !shown.hidden;
     reveal.setAttribute("aria-expanded", String(!shown.hidden));
     reveal.textContent = shown.hidden ? "Show this step" : "Hide this step";
+    if (!recordOf(key).shown) await load(); // recorded as shown: the step's words and the count say so
   });
-  // done in words, not by the border's colour alone (inst-c 16)
-  const doneLabel = el("p", { className: "practice-done-label", text: "Done: this step is answered right." });
-  doneLabel.hidden = !done.has(key);
+  // where the step stands, in words, not by the border's colour alone (inst-c 16); from the record (stepMark)
+  const doneLabel = el("p", { className: "practice-done-label" });
   form.insertBefore(doneLabel, form.querySelector(".practice-row"));
-  if (done.has(key)) form.classList.add("step-done");
+  form.dataset.key = key;
+  // the page as the student left it: the text being typed (this browser), else the last answer and its verdict
+  const mine = recordOf(key);
+  const draft = drafts().get()?.[key];
+  input.value = draft ?? mine.answer ?? "";
+  if (mine.answered) verdictView(box, { status: mine.answered.status, data: mine.answered.body });
+  // a text typed since the last check: the verdict kept below is said to be of that answer, not of this text
+  if (mine.answered && draft != null && draft !== mine.answer) {
+    box.prepend(el("p", { className: "help join-last-checked" }, "Your last answer checked, ", el("code", { text: mine.answer }), ":"));
+  }
+  if (input.value) input.dispatchEvent(new Event("input"));
+  input.addEventListener("input", () => {
+    const kept = drafts().get() || {};
+    kept[key] = input.value;
+    drafts().set(kept);
+  });
+  stepMark(form);
   let pending = null; // {answer, attempt}: a press of Check not yet answered; pressing again sends the same id
   form.addEventListener("submit", async (event) => {
     event.preventDefault();
@@ -209,18 +260,15 @@ function stepView(a, item, practice, s, index) {
       checking = turn.catch(() => null);
       const r = await turn;
       verdictView(box, r);
-      const late = a.due && new Date(a.due) < new Date();
-      if (late && r.status === 200 && (r.data.verdict === "correct" || r.data.verdict === "equivalent")) {
-        // right, but after the due time: said on the card itself, not only in the assignment's header (inst-c 17)
-        box.append(el("p", { className: "verdict-late", text: "Right, but late: it is recorded after the due time and does not count toward the grade." }));
-      }
       if (r.status !== 429 && r.status !== 503) pending = null; // answered: the next press is a new attempt
-      if (r.status === 200 && (r.data.verdict === "correct" || r.data.verdict === "equivalent")) {
-        done.add(key);
-        form.classList.add("step-done");
-        doneLabel.hidden = false;
-        progress();
+      if (r.status === 200 || r.status === 422) {
+        // checked and recorded: the box's text is the record's last answer now, no longer a draft of this browser
+        const kept = drafts().get() || {};
+        if (kept[key] === input.value) delete kept[key];
+        drafts().set(kept);
       }
+      // where the step stands now (done, right after it was shown, late) is the record's word, as the grade's
+      if (r.status === 200) await load();
       if (r.status === 403) leave(CLOSED);
     } catch {
       verdictView(box, { status: 0, data: { detail: "the server cannot be reached; press Check again (an answer is never counted twice)." } });
@@ -275,7 +323,7 @@ async function drawItems() {
       section.append(el("h3", { text: heading }));
       // the page in practice mode, in a tab of its own: the set-up and the figure, the derivation hidden (inst-b 24:
       // the plain page printed every answer of the assignment), and the class page stays where it was
-      if (item.scene) section.append(el("p", {}, el("a", { href: `/scenes/${item.scene}#practice=on`, target: "_blank", rel: "noopener", text: "The scene's set-up and figure" }), " (its page in practice mode, in a new tab: the derivation stays hidden)."));
+      if (item.scene) section.append(el("p", {}, el("a", { href: `/scenes/${item.scene}#practice=on`, target: "_blank", rel: "noopener", text: "The scene's set-up and figure" }), " (in a new tab, the derivation hidden)."));
       else section.append(setupView(item));
       try {
         const practice = await practiceOf(item);
@@ -311,12 +359,21 @@ async function load() {
     setTimeout(load, 5000);
     return;
   }
-  for (const s of r.data.progress?.steps || []) if (s.done) done.add(stepId(s.assignment, s.item, s.step, s.coordinate));
+  record.clear();
+  for (const s of r.data.record || []) {
+    record.set(stepId(s.assignment, s.item, s.step, s.coordinate), { answer: s.answer, answered: s.answered, shown: s.shown });
+  }
+  for (const s of r.data.progress?.steps || []) {
+    const key = stepId(s.assignment, s.item, s.step, s.coordinate);
+    record.set(key, { ...recordOf(key), right: s.done, counted: s.counted, late: s.late });
+  }
   const changed = JSON.stringify(r.data.assignments) !== JSON.stringify(series);
   series = r.data.assignments;
   const any = series.some((a) => a.items.length);
   $("join-waiting").hidden = any;
   if (changed) await drawItems();
+  for (const form of document.querySelectorAll("#join-items .practice-step")) stepMark(form);
+  progress();
   if (!any) setTimeout(load, 5000); // until the instructor sets one
 }
 
@@ -402,24 +459,31 @@ $("join-form").addEventListener("submit", async (event) => {
     }
     return;
   }
-  await enter(r);
-  // shown once: the server keeps only its hash
-  $("join-recovery-code").textContent = r.data.recovery_code;
-  $("join-recovery").hidden = false;
+  // shown once by the server (it keeps only its hash): this browser keeps it, through reloads, until "I have kept it"
+  await enter(r, r.data.recovery_code);
 });
 
 /** Joined (or back on another device): the key kept in this browser, the class loaded. */
-async function enter(r) {
+async function enter(r, recovery) {
   $("join-status").textContent = "";
-  current = { code: r.data.code, key: r.data.student_key, name: r.data.name, title: r.data.title };
+  current = { code: r.data.code, key: r.data.student_key, name: r.data.name, title: r.data.title,
+    ...(recovery ? { recovery } : {}) };
   memory.set(current);
   show();
+  recoveryView();
   await load();
 }
 
+/** The student's recovery code, while it is kept in this browser (from joining until "I have kept it"). */
+function recoveryView() {
+  $("join-recovery-code").textContent = current?.recovery || "";
+  $("join-recovery").hidden = !current?.recovery;
+}
+
 $("join-recovery-done").addEventListener("click", () => {
-  $("join-recovery").hidden = true;
-  $("join-recovery-code").textContent = "";
+  delete current.recovery;
+  memory.set(current);
+  recoveryView();
 });
 
 $("rejoin-form").addEventListener("submit", async (event) => {
@@ -448,4 +512,7 @@ const asked = new URLSearchParams(window.location.search).get("code");
 if (asked) $("join-code").value = $("rejoin-code").value = asked;
 if (asked && current && current.code !== asked.trim().toUpperCase()) leave(""); // a link to another class
 show();
-if (current) load();
+if (current) {
+  recoveryView();
+  load();
+}

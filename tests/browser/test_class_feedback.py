@@ -52,6 +52,7 @@ def test_a_slip_and_a_refusal_read_the_same_on_the_class_page_and_the_scene_page
     page.screenshot(path=str(artifacts / "class-feedback-slip.png"), full_page=True)
     class_refusal = _check(in_class, UNREADABLE, "refused")
     class_help = in_class.locator(".practice-names").inner_text()
+    page.locator(".join-howto summary").click()  # folded behind "How to type an answer" (issue 44)
     class_syntax = page.locator("#join-syntax").inner_text()
 
     scene = context.new_page()

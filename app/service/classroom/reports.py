@@ -48,6 +48,12 @@ def on_own(right_at: datetime | None, shown_at: datetime | None) -> bool:
     return right_at is not None and (shown_at is None or shown_at > right_at)
 
 
+def counts(right_at: datetime | None, shown_at: datetime | None, due: Any) -> bool:
+    """A step the grade counts: done on one's own (``on_own``) and that first right answer by the due time.  The
+    gradebook's score and the student's own page ("2 of 8 steps done") both read it from here."""
+    return on_own(right_at, shown_at) and right_at is not None and not is_late(right_at, due)
+
+
 def due_utc(when: Any) -> datetime | None:
     """A due time as a naive UTC datetime (stored naive; ISO text read back from a snapshot); None when undated."""
     if when is None:
@@ -228,6 +234,7 @@ def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[
     per: dict[int, dict[Key, dict[str, Any]]] = defaultdict(dict)
     shown_at: dict[tuple[int, Key], datetime] = {}
     number = {a["id"]: a["n"] for a in series}
+    dues = {a["id"]: a["due"] for a in series}
     for student_id, name, joined, assignment_id, item, step, coordinate, verdict, _mistake, n, _text, last, first_right, \
             login in _tallies(db, class_id):
         people[student_id] = (name, joined, login)
@@ -251,9 +258,14 @@ def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[
     for student_id, (name, joined, login) in sorted(people.items(), key=lambda p: (p[1][1], p[0])):
         tallies = list(per.get(student_id, {}).values())
         for t in tallies:
-            t["shown"] = (student_id, t["_key"]) in shown_at and not on_own(t["_right"], shown_at[(student_id, t["_key"])])
+            seen_at = shown_at.get((student_id, t["_key"]))
+            t["shown"] = seen_at is not None and not on_own(t["_right"], seen_at)
+            # what the grade counts (right on one's own by the due time); late: right on one's own, after it
+            t["counted"] = counts(t["_right"], seen_at, dues.get(t["_key"][0]))
+            t["late"] = on_own(t["_right"], seen_at) and not t["counted"]
         finished = {t["_key"] for t in tallies if t["done"]}
         own = {t["_key"] for t in tallies if on_own(t["_right"], shown_at.get((student_id, t["_key"])))}
+        counted = {t["_key"] for t in tallies if t["counted"]}
         # a step shown and not answered yet is shown too
         seen = {t["_key"] for t in tallies if t["shown"]} | {k for (s, k) in shown_at if s == student_id} - own
         steps = [{k: v for k, v in t.items() if not k.startswith("_")} | {"last": t["last"].isoformat() + "Z"}
@@ -266,11 +278,47 @@ def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[
             "not_read": sum(s["not_read"] for s in steps),
             "done": len(finished & assigned) if assigned else len(finished),
             "own": len(own & assigned) if assigned else len(own),
+            "counted": len(counted & assigned) if assigned else len(counted),
             "shown": len(seen & assigned) if assigned else len(seen),
             "assigned": len(assigned),
             "steps": steps,
         })
     return {"students": rows}
+
+
+def own_record(db: Database, class_id: int, student_id: int, series: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """What a student's own page shows again after a reload or on another device, per step they answered or were
+    shown: their last answer as typed, what it was answered (the verdict as the checker gave it, or for an answer
+    not read the refusal: ``status`` 200 or 422 and its ``body``; None for an answer recorded without it) and
+    whether the step was shown ("Show this step"), whenever that was."""
+    number = {a["id"]: a["n"] for a in series}
+    with db.session() as session:
+        answers = session.execute(
+            select(AttemptRow.assignment_id, AttemptRow.item, AttemptRow.step, AttemptRow.coordinate,
+                   AttemptRow.verdict, AttemptRow.answer, AttemptRow.response)
+            .where(AttemptRow.class_id == class_id, AttemptRow.student_id == student_id)
+            .order_by(AttemptRow.id)
+        ).all()
+        hints = session.execute(
+            select(HintRow.assignment_id, HintRow.item, HintRow.step, HintRow.coordinate)
+            .where(HintRow.class_id == class_id, HintRow.student_id == student_id)
+        ).all()
+    mine: dict[Key, dict[str, Any]] = {}
+
+    def entry(assignment_id: int | None, item: str, step: str, coordinate: str | None) -> dict[str, Any]:
+        key = (assignment_id, item, step, coordinate or None)
+        return mine.setdefault(key, {"assignment": number.get(assignment_id), "item": item, "step": step,
+                                     "coordinate": coordinate or None, "answer": None, "answered": None,
+                                     "shown": False})
+
+    for assignment_id, item, step, coordinate, verdict, answer, response in answers:  # oldest first: the last stays
+        found = entry(assignment_id, item, step, coordinate)
+        found["answer"] = answer
+        found["answered"] = None if response is None else {
+            "status": 422 if verdict == NOT_READ else 200, "body": json.loads(response)}
+    for assignment_id, item, step, coordinate in hints:
+        entry(assignment_id, item, step, coordinate)["shown"] = True
+    return list(mine.values())
 
 
 def _cell(value: Any) -> str:

@@ -227,7 +227,7 @@ class Classroom:
         """A student's record on another device, from their pseudonym and recovery code; tries count as joins."""
         await self._count_join(code, client, address)
         student_key, who = await self._db(store.rejoin, code, name, recovery)
-        return await self._joined(student_key, who, name)
+        return await self._joined(student_key, who, who.name or name)  # the pseudonym as joined ("Grace", not "grace")
 
     async def _joined(self, student_key: str, who: store.Access, name: str) -> dict[str, Any]:
         found = await self._db(store.series, who.class_id)
@@ -253,7 +253,10 @@ class Classroom:
             if who.teacher:
                 return seen | {"role": "instructor"}
             progress = [s for s in reports.students(db, who.class_id, found)["students"] if s["name"] == who.name]
-            return seen | {"role": "student", "name": who.name, "progress": progress[0] if progress else None}
+            # the student's last answer per step, its verdict and the steps shown: the page as they left it
+            mine = reports.own_record(db, who.class_id, who.student or 0, found)
+            return seen | {"role": "student", "name": who.name, "progress": progress[0] if progress else None,
+                           "record": mine}
 
         return await asyncio.to_thread(read, self.db)
 

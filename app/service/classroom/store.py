@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import hmac
 import json
+import unicodedata
 from dataclasses import dataclass
 from datetime import datetime
 from typing import Any
@@ -37,6 +38,23 @@ DONE = ("correct", "equivalent")  # the verdicts that finish a step
 NOT_READ = "not read"
 MAX_ASSIGNMENTS = 40  # the assignments a class's series may hold
 FIRST_TITLE = "Assignment 1"  # the title of a first assignment set without one (PUT /assignment)
+
+
+def pseudonym_key(name: str) -> str:
+    """What two pseudonyms are compared by: equal when they read alike whatever their case or Unicode form
+    ("Grace", "grace" and "ＧＲＡＣＥ" are one name), by Unicode case folding between two NFKC normalisations (NFKC
+    after folding too, since folding may undo it), spaces around trimmed."""
+    return unicodedata.normalize("NFKC", unicodedata.normalize("NFKC", name.strip()).casefold())
+
+
+def _same_pseudonym(names: list[str], name: str) -> str | None:
+    """The pseudonym of ``names`` that ``name`` is: the same text first, else the one equal by ``pseudonym_key``
+    (a class that joined both before the rule keeps them apart: each opens with its exact spelling)."""
+    if name in names:
+        return name
+    wanted = pseudonym_key(name)
+    alike = [n for n in names if pseudonym_key(n) == wanted]
+    return alike[0] if len(alike) == 1 else None
 
 
 @dataclass(frozen=True)
@@ -149,6 +167,11 @@ def rejoin(db: Database, code: str, name: str, recovery: str) -> tuple[str, Acce
         raise WrongKey(keys.why_not_recovery(recovery, keys.STUDENT_RECOVERY_LENGTH))
     student_key = keys.new_key()
     with db.session() as session:
+        # the pseudonym as joined, or one equal to it by case folding and NFKC ("grace" opens "Grace")
+        names = session.scalars(
+            select(StudentRow.name).join(ClassRow, StudentRow.class_id == ClassRow.id).where(ClassRow.code == normal)
+        ).all()
+        name = _same_pseudonym(list(names), name) or name
         found = session.execute(
             select(ClassRow.id, ClassRow.code, ClassRow.title, ClassRow.login_column, StudentRow)
             .join(StudentRow, StudentRow.class_id == ClassRow.id)
@@ -193,10 +216,10 @@ def _add_student(db: Database, normal: str, name: str, login: str | None, studen
         if found is None:
             raise UnknownClass(f"No class has the code {normal}. Check the code on the board.")
         kept = checked_login(found.login_column, login)
-        taken = session.scalar(
-            select(func.count()).select_from(StudentRow).where(StudentRow.class_id == found.id, StudentRow.name == name)
-        )
-        if taken:
+        # a pseudonym equal to one of the class's by case folding and NFKC is taken too ("Grace" and "grace")
+        wanted = pseudonym_key(name)
+        names = session.scalars(select(StudentRow.name).where(StudentRow.class_id == found.id)).all()
+        if any(pseudonym_key(other) == wanted for other in names):
             raise _taken(name)
         student = StudentRow(class_id=found.id, name=name, key_hash=keys.digest(student_key), joined_at=now(),
                              recovery_hash=keys.digest(keys.normal_recovery(recovery, keys.STUDENT_RECOVERY_LENGTH) or ""),
