@@ -76,7 +76,7 @@ from app.engine.compare import (
     without_constant,
 )
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json, sentence
-from app.engine.dimensions import dimension, mismatch, number_beside_units, unit_name
+from app.engine.dimensions import Own, dimension, equation_words, mismatch, number_beside_units, unit_name
 from app.engine.mistake_answer import (
     AnswerSlip,
     extra_cross_term,
@@ -420,7 +420,7 @@ def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake
     # a number inside a bracket is read as unitless only where the system itself never writes one so (the
     # pulley's positions still hold bare lengths, −½y₁ − ½y₂ − 1)
     nested = not pb.bare_lengths
-    offence = mismatch(answer, pb.dimensions, want, what, nested)
+    offence = mismatch(answer, pb.dimensions, want, what, nested, _own_words(pb), _parameters(pb))
     if offence is None:
         return None
     where = "every term of an expression has the same units; checking them finds a slip before any algebra"
@@ -428,6 +428,18 @@ def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake
     mistake = Mistake("units.mismatch", "units", f"units that do not agree. {words}", offence.piece, where,
                       answer)  # fmt: skip
     return mistake, f"Check the units. {words}"
+
+
+def _own_words(pb: Problem) -> Own:
+    """What this step calls a dimension its own way: a term of an angle's equation of motion is a torque."""
+    if pb.step != "equation" or pb.coordinate is None or pb.coordinate not in pb.namespace:
+        return ()
+    return equation_words(pb.coordinate, pb.dimensions.get(pb.namespace[pb.coordinate]))
+
+
+def _parameters(pb: Problem) -> tuple[sp.Symbol, ...]:
+    """The problem's parameters (m, g, R): one of them names a factor the units say is missing."""
+    return tuple(pb.namespace[n] for n, kind in pb.kinds.items() if kind == "parameter" and n in pb.namespace)
 
 
 def follow_up_mistake(pb: Problem, key: str) -> Mistake:
