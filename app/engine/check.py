@@ -487,18 +487,34 @@ def follow_up_of(pb: Problem, mistake: Mistake, answer: sp.Expr) -> dict[str, An
             hint=None,
             mistake=mistake_json(mistake, printer.tex),
         )
+    # a new hint, not the first one again and not the question again: the slip in the reply where it is one a
+    # student makes; else its units where they are wrong, as the step's own check tells an answer (R α for a
+    # speed); else the concrete one where the question has it
+    slip = _follow_up_slip(pb, fu, answer) or _same_slip(pb, fu, mistake, mine)
+    units = None if slip else _reply_units(pb, fu, answer)
     return _verdict(
         "incorrect",
-        "Not yet: that is not the answer to the question.",
-        # a new hint, not the first one again and not the question again: the slip in the reply where it is one
-        # a student makes, else the concrete one where the question has it
-        hint=_follow_up_slip(pb, fu, answer)
-        or _same_slip(pb, fu, mistake, mine)
+        "Not yet: its units do not agree, as said below."
+        if units
+        else "Not yet: that is not the answer to the question.",
+        hint=slip
+        or units
         or fu.hint
         or "Work it out on its own, from its definition, then compare your reply with it term by term.",
         mistake={**mistake_json(mistake, printer.tex), "latex": ""},  # (the piece is the question's answer)
         follow_up=follow_up_json(mistake, allowed_names(fu.kind, pb.kinds)),
     )
+
+
+def _reply_units(pb: Problem, fu: FollowUp, answer: sp.Expr) -> str | None:
+    """A reply to a follow-up whose terms disagree in units, or whose whole has other units than the question's
+    answer, in the words of the step's own units check; None where the units agree or cannot be told."""
+    if not pb.dimensions:
+        return None
+    offence = mismatch(answer, pb.dimensions, dimension(fu.truth, pb.dimensions), "reply", True, (), _parameters(pb))
+    if offence is None:
+        return None
+    return f"Check the units. {offence.words if offence.words.endswith('.') else offence.words + '.'}"
 
 
 def _same_slip(pb: Problem, fu: FollowUp, asked: Mistake, mine) -> str | None:
