@@ -552,7 +552,12 @@ def test_practice_mode_hides_its_dead_tabs_and_folds_what_gives_the_answers_away
         # out of practice mode every tab is back
         page.locator("#practice-switch").focus()
         page.keyboard.press("Space")
-        assert [a.inner_text() for a in tabs.all() if a.is_visible()][:4] == ["Simulation", "Set-up", "Derivation", "Results"]
+        assert [a.inner_text() for a in tabs.all() if a.is_visible()][:4] == [
+            "Simulation",
+            "Set-up",
+            "Derivation",
+            "Results",
+        ]
     finally:
         context.close()
 
@@ -592,5 +597,41 @@ def test_a_long_preview_with_parentheses_is_read_whole_on_a_phone(browser, live_
         assert preview.evaluate("el => el.scrollWidth <= el.clientWidth + 1")
         assert preview.evaluate("el => el.getBoundingClientRect().right") <= 391
         assert page.locator("#practice .katex-error").count() == 0
+    finally:
+        context.close()
+
+
+def test_a_phones_half_squares_and_dots_are_read_and_every_refused_sign_is_named_at_once(
+    browser, live_server, artifacts
+):
+    # issue 41, 3: ½, ² and θ̇ from a phone's keyboard were refused one at a time
+    context, page = sized_page(browser, live_server, phone=True)
+    try:
+        page.goto("/scenes/simple-pendulum?practice")
+        page.wait_for_selector(STEP.format("kinetic"))
+        box = page.locator(STEP.format("kinetic")).locator("input[name]")
+        box.tap()
+        page.keyboard.type("½ m R² θ̇²")
+        page.wait_for_function(f"document.querySelector('{STEP.format('kinetic')}').dataset.typeset === 'read'")
+        math = page.locator(STEP.format("kinetic") + " .practice-preview-math")
+        shown = math.evaluate("el => el.querySelector('annotation')?.textContent ?? el.textContent")
+        assert shown.removeprefix(r"\displaystyle ") == r"T = \frac{1}{2} m R^{2} \dot{\theta}^{2}"
+        box.press("Enter")
+        verdict = verdict_of(page, "kinetic")
+        verdict.locator(".verdict-head").wait_for()
+        assert verdict.get_attribute("data-verdict") == "correct"
+        assert box.input_value() == "½ m R² θ̇²"  # nothing typed is lost
+        page.locator(STEP.format("kinetic")).screenshot(path=artifacts / "practice-phone-half.png")
+        # two signs the parser cannot read are named in one refusal
+        potential = page.locator(STEP.format("potential")).locator("input[name]")
+        potential.tap()
+        page.keyboard.type("m g R ≤ cos θ ≥")
+        potential.press("Enter")
+        refused = verdict_of(page, "potential")
+        refused.locator(".verdict-head").wait_for()
+        said = refused.inner_text()
+        # (the columns are left out: the page marks the part in what was typed)
+        assert "2 characters cannot be read: '≤' and '≥' are not allowed" in said, said
+        assert potential.input_value() == "m g R ≤ cos θ ≥"
     finally:
         context.close()
