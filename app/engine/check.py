@@ -76,7 +76,7 @@ from app.engine.compare import (
     without_constant,
 )
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json, sentence
-from app.engine.dimensions import dimension, mismatch, number_beside_units, unit_name
+from app.engine.dimensions import Own, dimension, equation_words, mismatch, number_beside_units, unit_name
 from app.engine.mistake_answer import (
     AnswerSlip,
     extra_cross_term,
@@ -422,7 +422,7 @@ def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake
         return None
     want = None if truth is None else dimension(truth, pb.dimensions)
     what = short_label(pb.step, pb.label)
-    offence = mismatch(answer, pb.dimensions, want, what)
+    offence = mismatch(answer, pb.dimensions, want, what, _own_words(pb), _parameters(pb))
     if offence is None:
         return None
     where = "every term of an expression has the same units; checking them finds a slip before any algebra"
@@ -430,6 +430,18 @@ def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake
     mistake = Mistake("units.mismatch", "units", f"units that do not agree. {words}", offence.piece, where,
                       answer)  # fmt: skip
     return mistake, f"Check the units. {words}"
+
+
+def _own_words(pb: Problem) -> Own:
+    """What this step calls a dimension its own way: a term of an angle's equation of motion is a torque."""
+    if pb.step != "equation" or pb.coordinate is None or pb.coordinate not in pb.namespace:
+        return ()
+    return equation_words(pb.coordinate, pb.dimensions.get(pb.namespace[pb.coordinate]))
+
+
+def _parameters(pb: Problem) -> tuple[sp.Symbol, ...]:
+    """The problem's parameters (m, g, R): one of them names a factor the units say is missing."""
+    return tuple(pb.namespace[n] for n, kind in pb.kinds.items() if kind == "parameter" and n in pb.namespace)
 
 
 def follow_up_mistake(pb: Problem, key: str) -> Mistake:
@@ -477,18 +489,34 @@ def follow_up_of(pb: Problem, mistake: Mistake, answer: sp.Expr) -> dict[str, An
             hint=None,
             mistake=mistake_json(mistake, printer.tex),
         )
+    # a new hint, not the first one again and not the question again: the slip in the reply where it is one a
+    # student makes; else its units where they are wrong, as the step's own check tells an answer (R α for a
+    # speed); else the concrete one where the question has it
+    slip = _follow_up_slip(pb, fu, answer) or _same_slip(pb, fu, mistake, mine)
+    units = None if slip else _reply_units(pb, fu, answer)
     return _verdict(
         "incorrect",
-        "Not yet: that is not the answer to the question.",
-        # a new hint, not the first one again and not the question again: the slip in the reply where it is one
-        # a student makes, else the concrete one where the question has it
-        hint=_follow_up_slip(pb, fu, answer)
-        or _same_slip(pb, fu, mistake, mine)
+        "Not yet: its units do not agree, as said below."
+        if units
+        else "Not yet: that is not the answer to the question.",
+        hint=slip
+        or units
         or fu.hint
         or "Work it out on its own, from its definition, then compare your reply with it term by term.",
         mistake={**mistake_json(mistake, printer.tex), "latex": ""},  # (the piece is the question's answer)
         follow_up=follow_up_json(mistake, allowed_names(fu.kind, pb.kinds)),
     )
+
+
+def _reply_units(pb: Problem, fu: FollowUp, answer: sp.Expr) -> str | None:
+    """A reply to a follow-up whose terms disagree in units, or whose whole has other units than the question's
+    answer, in the words of the step's own units check; None where the units agree or cannot be told."""
+    if not pb.dimensions:
+        return None
+    offence = mismatch(answer, pb.dimensions, dimension(fu.truth, pb.dimensions), "reply", (), _parameters(pb))
+    if offence is None:
+        return None
+    return f"Check the units. {offence.words if offence.words.endswith('.') else offence.words + '.'}"
 
 
 def _same_slip(pb: Problem, fu: FollowUp, asked: Mistake, mine) -> str | None:

@@ -30,7 +30,7 @@ from app.engine.derive import Derivation
 from app.engine.dimensions import mismatch, system_dimensions
 from app.engine.mistake_carried import carried_equations, lagrangian_pairs
 from app.engine.mistake_equations import generated
-from app.engine.mistake_families import Mistake, monomial_words, says_how, spoken
+from app.engine.mistake_families import Mistake, monomial_words, says_how, spoken, states_answer
 from app.engine.mistake_masses import wrong_masses
 from app.engine.mistake_other import held_still, other_coordinates
 from app.engine.mistake_pieces import effective_terms, masses_of, piece_mistakes, travelled
@@ -172,8 +172,12 @@ def catalogue(
 
 
 def _kept(
-    d: Derivation, found: list[tuple[Mistake, str]], truths: tuple[sp.Expr, ...], groups: Groups, relation: str,
-    label: str
+    d: Derivation,
+    found: list[tuple[Mistake, str]],
+    truths: tuple[sp.Expr, ...],
+    groups: Groups,
+    relation: str,
+    label: str,
 ) -> tuple[tuple[Mistake, str, Values], ...]:
     """Each mistake with its values, less one whose units disagree, one equal to a truth and a repeat."""
     known = system_dimensions(d)
@@ -182,6 +186,11 @@ def _kept(
     for mistake, hint in found:
         if mismatch(mistake.expr, known, None, label) is not None:
             continue  # terms whose units disagree: the units name it first (app.engine.check)
+        fu = mistake.follow_up
+        if fu is not None and states_answer(" ".join((hint, mistake.name, mistake.where)), fu):
+            # a question whose answer the line above it already prints is not asked (issue 41: "of speed R α ż",
+            # then "What is the bead's speed along x and y?")
+            mistake = replace(mistake, follow_up=None)
         v = values(mistake.expr, groups)
         if any(usable(v, b) < MIN_POINTS or _same(v, b, relation) for b in truth_values):
             continue

@@ -14,7 +14,7 @@ honest, a wrong one is not.
 from __future__ import annotations
 
 import re
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING
@@ -82,6 +82,12 @@ _WORDS = [
     ({"kg": Fraction(1), "m": Fraction(2), "A": Fraction(-1), "s": Fraction(-3)}, "an electric potential"),
 ]
 _SUPER = str.maketrans("-0123456789/", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹ᐟ")
+
+# Words for a dimension that one step names its own way, before _WORDS: (dimension, words) pairs
+Own = tuple[tuple[Dims, str], ...]
+
+# a lone base unit spelled out: "(m)" beside a mass m reads as "multiply by the mass" (issue 41, 1)
+_SPELLED = {"m": "metres", "kg": "kilograms", "s": "seconds"}
 
 
 def add_dims(a: Dims, b: Dims, times: Fraction = Fraction(1)) -> Dims:
@@ -164,9 +170,41 @@ def kind_of_unit(unit: str) -> str | None:
     return None if words.startswith("a quantity in") else words.split(" (")[0]
 
 
-def quantity(d: Dims) -> str:
-    """A dimension in words: "a mass", or "a quantity in kg·m/s³"."""
-    return next((w for dims, w in _WORDS if dims == d), f"a quantity in {unit_text(d)}")
+def quantity(d: Dims, own: Own = ()) -> str:
+    """A dimension in words: "a mass", or "a quantity in kg·m/s³"; ``own``: the step's own words first."""
+    return next((w for dims, w in (*own, *_WORDS) if dims == d), f"a quantity in {unit_text(d)}")
+
+
+def _term(d: Dims, own: Own) -> str:
+    """A term's dimension in words where the term itself follows in brackets: a step's own words without their unit
+    ("a torque (m R² θ̈)", never "a torque (N·m) (m R² θ̈)")."""
+    words = quantity(d, own)
+    return words.split(" (")[0] if any(dims == d for dims, _ in own) else words
+
+
+def unit_words(d: Dims) -> str:
+    """A unit as the tutor's words print it: a lone base unit spelled out (metres, never a bare m that reads as
+    the mass), any other as kg·m/s²."""
+    text = unit_text(d)
+    return _SPELLED.get(text, text)
+
+
+def equation_words(coordinate: str, coordinate_dims: Dims | None) -> Own:
+    """What a term of the equation of motion of ``coordinate`` is called.  Each term of
+    d/dt(∂L/∂q̇) − ∂L/∂q has the units of L over those of q: for an angle (no units) that is a torque, N·m,
+    never "an energy"; for a length a force; else "a term of the q equation"."""
+    if coordinate_dims is None:
+        return ()
+    # [term] = [L] / [q]
+    term = add_dims(ENERGY, coordinate_dims, Fraction(-1))
+    if not coordinate_dims:
+        words = "a torque (N·m)"
+    elif term == _BASE["N"]:
+        words = "a force"
+    else:
+        words = f"a term of the {unicode(coordinate)} equation ({unit_text(term)})"
+    # an energy that is not a term's dimension is named by its units alone in an equation of motion
+    return ((term, words),) + (() if term == ENERGY else ((ENERGY, f"a quantity in {unit_text(ENERGY)}"),))
 
 
 @dataclass(frozen=True)
@@ -182,14 +220,14 @@ class _Mismatch(Exception):
         self.offence = offence
 
 
-def _dims(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Dims | None:
+def _dims(expr: sp.Expr, known: Mapping[sp.Symbol, Dims], own: Own = ()) -> Dims | None:
     if expr.is_Number or expr is sp.pi or expr is sp.E:
         return {}
     if expr.is_Symbol:
         return known.get(expr)
     if expr.is_Add:
         # a bare number beside other terms takes their units (a constant of U, written without its unit)
-        found = [(a, _dims(a, known)) for a in expr.args if not a.is_Number]
+        found = [(a, _dims(a, known, own)) for a in expr.args if not a.is_Number]
         told = [(a, d) for a, d in found if d is not None]
         for a, d in told[1:]:
             if d != told[0][1]:
@@ -197,7 +235,7 @@ def _dims(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Dims | None:
                 # a short sum is quoted (m + g); a long one is the student's own, shown under the words
                 lead = spoken(expr) if len(expr.args) <= 2 else "Your sum"
                 words = (
-                    f"{lead} adds {quantity(first[1])} ({spoken(first[0])}) to {quantity(d)} "
+                    f"{lead} adds {_term(first[1], own)} ({spoken(first[0])}) to {_term(d, own)} "
                     f"({spoken(a)}), and the terms of a sum must have the same units."
                 )
                 meant = _meant(a, d, add_dims(first[1], d, Fraction(-1)), expr, known)
@@ -206,29 +244,29 @@ def _dims(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Dims | None:
     if expr.is_Mul:
         out: Dims = {}
         for a in expr.args:
-            factor = _dims(a, known)
+            factor = _dims(a, known, own)
             if factor is None:
                 return None
             out = add_dims(out, factor)
         return out
     if expr.is_Pow:
-        base = _dims(expr.base, known)
+        base = _dims(expr.base, known, own)
         if base is None:
             return None
         if not expr.exp.is_Rational:
-            exponent = _dims(expr.exp, known)
+            exponent = _dims(expr.exp, known, own)
             if exponent:
                 raise _Mismatch(Offence(expr, f"the power {spoken(expr.exp)} of {spoken(expr)} has units"))
             return None if base else {}
         return {k: v * Fraction(int(expr.exp.p), int(expr.exp.q)) for k, v in base.items()}
     if isinstance(expr, sp.Function):
         if isinstance(expr, sp.Abs):
-            return _dims(expr.args[0], known)
+            return _dims(expr.args[0], known, own)
         for a in expr.args:
-            inside = _dims(a, known)
+            inside = _dims(a, known, own)
             if inside:
                 raise _Mismatch(
-                    Offence(expr, f"{spoken(expr)} takes {quantity(inside)} ({spoken(a)}) as its argument, which must "
+                    Offence(expr, f"{spoken(expr)} takes {quantity(inside, own)} ({spoken(a)}) as its argument, which must "
                             "be a pure number (an angle)")
                 )  # fmt: skip
         return {}
@@ -243,19 +281,28 @@ def dimension(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Dims | None:
         return None
 
 
-def mismatch(expr: sp.Expr, known: Mapping[sp.Symbol, Dims], want: Dims | None, what: str) -> Offence | None:
+def mismatch(
+    expr: sp.Expr,
+    known: Mapping[sp.Symbol, Dims],
+    want: Dims | None,
+    what: str,
+    own: Own = (),
+    examples: Iterable[sp.Symbol] = (),
+) -> Offence | None:
     """The first place the answer's dimensions break, or where its whole has another dimension than
     ``want`` (the truth's; None: any), in words; None when all is consistent or cannot be told.  A bare number
-    is looked for in every sum inside the answer too."""
+    is looked for in every sum inside the answer too.  ``own``: the step's words for a dimension
+    (``equation_words``); ``examples``: the problem's parameters, one of which names a missing factor ("a length
+    such as R")."""
     if sp.count_ops(expr) > MAX_NODES:
         return None
     # a bare number beside terms with units, in the whole or in any sum inside it: m g (z + 3) adds 3 to a
     # length as surely as m g z + 3 adds it to an energy (student-h 3: it read as "another zero of U")
-    bare = next((b for a in sp.preorder_traversal(expr) if (b := _bare_number(a, known)) is not None), None)
+    bare = next((b for a in sp.preorder_traversal(expr) if (b := _bare_number(a, known, own)) is not None), None)
     if bare is not None:
         return bare
     try:
-        got = _dims(expr, known)
+        got = _dims(expr, known, own)
     except _Mismatch as e:
         return e.offence
     if got is None or want is None or got == want:
@@ -269,20 +316,37 @@ def mismatch(expr: sp.Expr, known: Mapping[sp.Symbol, Dims], want: Dims | None, 
     factor = (
         "It is upside down: numerator and denominator are swapped"
         if inverted
-        else f"A factor of {described(missing).removeprefix('a ').removeprefix('an ')} is missing"
+        else _missing_factor(missing, known, own, examples)
         # (a missing factor a student can name, a force, is said so even where its unit has a negative power)
-        if all(v > 0 for v in missing.values()) or not quantity(missing).startswith("a quantity in")
-        else f"It has a factor {unicode(carriers[0])} ({unit_text(extra)}) too many"
+        if all(v > 0 for v in missing.values()) or not quantity(missing, own).startswith("a quantity in")
+        else f"It has a factor {unicode(carriers[0])} ({unit_words(extra)}) too many"
         if len(carriers) == 1
-        else f"It has a factor of {described(extra).removeprefix('a ').removeprefix('an ')} too many"
+        else f"It has a factor with the units of {described(extra, own)} too many"
         if all(v > 0 for v in extra.values())
         else f"It needs a factor in {unit_text(missing)}"
     )
     # short sentences, each with its full stop: what it is, what it should be, what would make it so
-    return Offence(expr, f"Your {what} is {described(got)}, but it should be {described(want)}. {factor}.")
+    return Offence(expr, f"Your {what} is {described(got, own)}, but it should be {described(want, own)}. {factor}.")
 
 
-def _bare_number(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Offence | None:
+def _missing_factor(missing: Dims, known: Mapping[sp.Symbol, Dims], own: Own, examples: Iterable[sp.Symbol]) -> str:
+    """A missing factor in words that never read as one of the problem's symbols (issue 41: "a factor of length
+    (m)" read as "multiply by the mass m"): its units spelled out, and a parameter of those units where there is
+    one ("a length such as R")."""
+    kind = quantity(missing, own)
+    named = sorted(s.name for s in examples if known.get(s) == missing)
+    said = (
+        f"A factor in {unit_text(missing)} is missing"
+        if kind.startswith("a quantity in")
+        else f"A factor with the units of {described(missing, own)} is missing"
+    )
+    if not named:
+        return said
+    like = "one" if kind.startswith("a quantity in") else kind.split(" (")[0]
+    return f"{said}: {like} such as {unicode(named[0])}"
+
+
+def _bare_number(expr: sp.Expr, known: Mapping[sp.Symbol, Dims], own: Own = ()) -> Offence | None:
     """A pure number added to terms that have units (h + 7): the number has none.  (Inside a sum that is itself
     dimensionless, 1 − cos θ, a number is right; nested in a length, (y₁ + y₂ + 3), it reads as metres.)"""
     if not expr.is_Add:
@@ -295,7 +359,7 @@ def _bare_number(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> Offence | No
     if not got:
         return None  # unknown, or a pure number beside a pure number
     n = numbers[0]
-    words = f"{spoken(n)} has no unit and cannot be added to {quantity(got)}"
+    words = f"{spoken(n)} has no unit and cannot be added to {quantity(got, own)}"
     # the rest of the sum short of a factor that makes it a pure number, as a number beside it must be
     meant = _meant(rest, got, {k: -v for k, v in got.items()}, expr, known) if rest.is_Mul else None
     return Offence(expr, f"{words}. {meant}" if meant else words)
@@ -337,10 +401,11 @@ def number_beside_units(expr: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> bool:
     return False
 
 
-def described(d: Dims) -> str:
-    """A dimension in words with its unit, once: "a mass (kg)", "a squared rate (1/s²)", "a quantity in s⁴"."""
-    words = quantity(d)
-    return words if "(" in words or words.startswith("a quantity in") or not d else f"{words} ({unit_text(d)})"
+def described(d: Dims, own: Own = ()) -> str:
+    """A dimension in words with its unit, once: "a mass (kilograms)", "a squared rate (1/s²)", "a quantity in s⁴"
+    (a lone base unit spelled out, ``unit_words``)."""
+    words = quantity(d, own)
+    return words if "(" in words or words.startswith("a quantity in") or not d else f"{words} ({unit_words(d)})"
 
 
 def known_dimensions(

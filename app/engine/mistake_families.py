@@ -53,6 +53,17 @@ class FollowUp:
     hint: str = ""  # a second, more concrete hint, for a wrong answer to the question
 
 
+def states_answer(words: str, fu: FollowUp) -> bool:
+    """Whether the words said before a follow-up question give its answer away: the answer written out in them
+    (either sign, for a speed or a stretch).  A lone name (Ẋ, in "the part that comes from Ẋ") says where a part
+    comes from, not what it is, and gives nothing away."""
+    if fu.truth.is_Symbol or fu.truth.is_Number:
+        return False
+    said = {fu.answer_text, spoken(fu.truth)} | ({spoken(-fu.truth)} if fu.relation == "magnitude" else set())
+    # the answer as a whole, never a part of a longer name or formula (ż in żz)
+    return any(re.search(rf"(?<![\w\u0300-\u036f]){re.escape(s)}(?![\w\u0300-\u036f²³₀-₉])", words) for s in said if s)
+
+
 @dataclass(frozen=True)
 class Mistake:
     key: str  # stable, for records: "<step>.<family>[.<detail>…]"
@@ -70,7 +81,9 @@ class Mistake:
 
 _SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
 _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
-_FUNCTIONS = frozenset({"sin", "cos", "tan", "arccos", "arcsin", "arctan", "exp", "log", "sqrt", "Abs", "sinh", "cosh", "tanh", "pi"})
+_FUNCTIONS = frozenset(
+    {"sin", "cos", "tan", "arccos", "arcsin", "arctan", "exp", "log", "sqrt", "Abs", "sinh", "cosh", "tanh", "pi"}
+)
 
 
 _GREEK = frozenset(
@@ -166,7 +179,9 @@ def sum_words(a: sp.Expr, coordinates: Iterable[sp.Symbol]) -> str:
     q = set(coordinates)
     if not isinstance(a, sp.Add) or not q:
         return spoken(a)
-    terms = sorted(a.args, key=lambda t: (not (t.free_symbols & q), t.could_extract_minus_sign(), sp.default_sort_key(t)))
+    terms = sorted(
+        a.args, key=lambda t: (not (t.free_symbols & q), t.could_extract_minus_sign(), sp.default_sort_key(t))
+    )
     text = spoken(terms[0])
     for t in terms[1:]:
         text += f" − {spoken(-t)}" if t.could_extract_minus_sign() else f" + {spoken(t)}"
@@ -368,7 +383,8 @@ def _axes_left_out(d: Derivation, i: int, body: str, key: str, mass: sp.Expr, v:
         yield Mistake(
             f"kinetic.velocity_axis.{key}.{''.join(_AXES[a] for a in axes)}",
             "velocity_axis",
-            f"{named}, of speed {spoken(speed)}",
+            # not its speed: the follow-up asks for it (states_answer)
+            named,
             speed,
             f"the {body}'s position ({', '.join(spoken(c) for c in m.positions[i])}) changes along "
             + " and ".join(_AXES[a] for a in axes)
@@ -495,9 +511,13 @@ def potential_mistakes(d: Derivation) -> Iterator[Mistake]:
     if len(terms) > 1 and len(halves) == len(terms):
         # every spring's ½ lost at once (student-i 3: k x₁² + k x₂² + κ (x₂ − x₁)² got the step's rule)
         yield Mistake(
-            "potential.spring_half.all", "doubled", "the ½ of ½ k × stretch² left out of every spring's energy", U,
+            "potential.spring_half.all",
+            "doubled",
+            "the ½ of ½ k × stretch² left out of every spring's energy",
+            U,
             "a spring's energy is ½ k × stretch², the work done stretching it against a force that grows from "
-            "zero to k × stretch", sp.expand(2 * U),
+            "zero to k × stretch",
+            sp.expand(2 * U),
         )
     for term in terms:
         for base, constant in _springs(term, dynamic):
@@ -507,8 +527,8 @@ def potential_mistakes(d: Derivation) -> Iterator[Mistake]:
                 "natural_length",
                 f"the spring's natural length {spoken(-constant if constant.could_extract_minus_sign() else constant)}",
                 constant,
-                f"a spring stores energy by its stretch from its natural length, here {spoken(stretch)}, not by "
-                "its whole length",
+                # not the stretch itself: the follow-up asks for it (states_answer)
+                "a spring stores energy by its stretch from its natural length, not by its whole length",
                 sp.expand(U - term + term.xreplace({base: base - constant})),
                 follow_up=FollowUp(
                     "By how much is the spring stretched beyond its natural length?",

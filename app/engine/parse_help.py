@@ -16,8 +16,36 @@ def first_bad_character(text: str) -> int | None:
     return None
 
 
+def characters_error(text: str, columns: list[int]) -> ExpressionError:
+    """Every refused character of a text in one message, those refused for one reason together ("'≤' at column
+    3 and '≥' at column 9 are not allowed: …"); the part marked runs from the first to the last."""
+    if len(columns) == 1:
+        return character_error(text, columns[0])
+    # reason -> character -> its columns
+    by_reason: dict[str, dict[str, list[str]]] = {}
+    for i in columns:
+        by_reason.setdefault(_why(text[i]), {}).setdefault(text[i], []).append(str(i + 1))
+    said = []
+    for why, chars in by_reason.items():
+        where = [f"{ch!r} at column{'s' if len(cols) > 1 else ''} {_listed(cols)}" for ch, cols in chars.items()]
+        said.append(f"{_listed(where)} {'is' if len(where) == 1 else 'are'} not allowed: {why}")
+    first, last = columns[0], columns[-1] + 1
+    return ExpressionError(
+        f"{len(columns)} characters cannot be read: " + "; ".join(said), text[first:last], first, last
+    )
+
+
+def _listed(items: list[str]) -> str:
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
 def character_error(text: str, i: int) -> ExpressionError:
     ch = text[i]
+    return ExpressionError(f"character {ch!r} at column {i + 1} is not allowed: {_why(ch)}", ch, i, i + 1)
+
+
+def _why(ch: str) -> str:
+    """Why a character is refused, with how to type what it means where there is a way."""
     if ch == "=":
         why = "an equation is not an expression: write it as one expression equal to zero, e.g. a - (b) for a = b"
     elif ch in "'\"":
@@ -32,8 +60,8 @@ def character_error(text: str, i: int) -> ExpressionError:
     elif ord(ch) > 127:
         why = (
             "besides the keyboard's letters, digits and signs, you may type Greek letters (θ), primes (θ'), "
-            "dots over letters (θ̇), the signs · × − and small raised digits (x²)"
+            "dots over letters (θ̇), the signs · × −, small raised digits (x²) and fractions (½)"
         )
     else:
         why = "only letters, digits, spaces, _ . , ( ) and the signs + - * / ^ are allowed (^ is a power)"
-    return ExpressionError(f"character {ch!r} at column {i + 1} is not allowed: {why}", ch, i, i + 1)
+    return why

@@ -35,7 +35,7 @@ import re
 import unicodedata
 from dataclasses import dataclass, field
 
-from app.engine.parse_help import character_error
+from app.engine.parse_help import character_error, characters_error
 from app.engine.parse_rules import ALLOWED_CHARACTERS, FUNCTIONS, TYPED_FUNCTIONS, ExpressionError
 
 # a number as Python writes one (1, 2.5, .5, 1_000, 1e-3: 2e1 is twenty; 2 times a name e1 is 2 e1)
@@ -45,7 +45,9 @@ _NUMBER = re.compile(
 _SPACES = {9: " ", 10: " ", 13: " "}
 _DIGITS = frozenset("0123456789")
 _PRIMES = {"'": 1, "\u2032": 1, "\u2019": 1, "\u2033": 2}  # ' ′ ’ (a phone's apostrophe) ″
-_DOTS = {"\u0307": 1, "\u0308": 2}  # combining dot above, combining diaeresis (two dots)
+# combining dot above, combining diaeresis (two dots), and their spacing forms a phone or a copied note may give
+# after the letter (θ˙, θ¨)
+_DOTS = {"\u0307": 1, "\u0308": 2, "\u02d9": 1, "\u00a8": 2}
 _TIMES = {"\u00b7": "*", "\u22c5": "*", "\u2219": "*", "\u00d7": "*", "\u2212": "-", "\u2013": "-", "\u00f7": "/"}
 _SUBSCRIPTS = {chr(0x2080 + d): str(d) for d in range(10)}
 _SUPERSCRIPTS = {"\u00b9": "1", "\u00b2": "2", "\u00b3": "3", "\u207b": "-"} | {
@@ -210,8 +212,36 @@ def _word(given: str, i: int) -> tuple[list[Token], int]:
     return tokens, j
 
 
+def fraction(ch: str) -> str:
+    """A vulgar fraction written with the keyboard's digits, in brackets (½: (1/2)); "" for any other character."""
+    if not unicodedata.decomposition(ch).startswith("<fraction>"):
+        return ""
+    top, _, bottom = unicodedata.normalize("NFKC", ch).partition("\u2044")
+    return f"({top or 1}/{bottom})" if top.isdigit() and bottom.isdigit() else ""
+
+
+def readable(ch: str) -> bool:
+    """Whether a character can stand somewhere in a formula as typed (where it stands is the lexer's to judge)."""
+    if ch in ALLOWED_CHARACTERS or ch in "^" or greek(ch) or fraction(ch):
+        return True
+    if ch in _PRIMES or ch in _DOTS or ch in _TIMES or ch in _SUBSCRIPTS or ch in _SUPERSCRIPTS:
+        return True
+    # a Latin letter with dots over it (ẋ)
+    decomposed = unicodedata.normalize("NFD", ch)
+    return (
+        len(decomposed) > 1
+        and decomposed[0].isascii()
+        and decomposed[0].isalpha()
+        and all(c in _DOTS for c in decomposed[1:])
+    )
+
+
 def lex(given: str) -> list[Token]:
-    """The text's tokens, or a refusal of a character that has no place in an expression."""
+    """The text's tokens, or a refusal of a character that has no place in an expression (every such character
+    at once, so that a phone's user corrects them in one go)."""
+    unknown = [i for i, ch in enumerate(given) if not readable(ch)]
+    if unknown:
+        raise characters_error(given, unknown)
     tokens: list[Token] = []
     i, spaced = 0, False
     while i < len(given):
@@ -242,6 +272,9 @@ def lex(given: str) -> list[Token]:
         elif given.startswith("**", i) or ch == "^":
             width = 2 if ch == "*" else 1
             found, i = [Token("pow", "**", i, i + width)], i + width
+        elif fraction(ch):
+            # a vulgar fraction (½ from a phone's keyboard) is the quotient of its digits, in brackets: ½ m is (1/2) m
+            found, i = [Token("num", fraction(ch), i, i + 1)], i + 1
         elif ch in _TIMES or ch in "+-*/":
             found, i = [Token("op", _TIMES.get(ch, ch), i, i + 1)], i + 1
         elif ch in "()":
@@ -308,12 +341,14 @@ class _Reader:
         self.given, self.tokens = given, tokens
 
     def typed(self, i: int, j: int) -> str:
-        """The text as typed of tokens ``[i, j)``."""
+        """The text as typed of tokens ``[i, j)`` (a bracket never closed ends at the last token: 1/2( )."""
+        j = min(j, len(self.tokens))
         if i >= j:
             return ""
         return self.given[self.tokens[i].start : self.tokens[j - 1].end]
 
     def ambiguous(self, i: int, j: int, why: str, first: str, second: str, advice: str = "") -> ExpressionError:
+        j = min(j, len(self.tokens))
         return _refuse(self.given, self.tokens[i].start, self.tokens[j - 1].end, why, (first, second), advice)
 
     def functions(self) -> None:
@@ -444,6 +479,8 @@ class _Reader:
             while _side_by_side(tokens, last):
                 factors.append(last)
                 last = _powered(tokens, last)
+            if last > len(tokens):
+                continue  # a bracket never closed: gate 2 says so, rather than two readings of half a formula
             first = self._term(i)
             numbers = self._numbers(first, i, end)
             # a coefficient as a textbook prints one, ended by a space: ½ m R², (g/R) θ, (k/m) x, (g/l) sin θ
@@ -490,6 +527,13 @@ class _Reader:
             if _side_by_side(tokens, j):
                 if tokens[j - 1].kind == "num" and tokens[j].kind == "num":
                     a, b = tokens[j - 1].text, tokens[j].text
+                    if b.startswith("("):  # 2½: two and a half, or twice a half?
+                        raise _refuse(
+                            self.given,
+                            tokens[j - 1].start,
+                            tokens[j].end,
+                            f"a number before a fraction: write {a} + {b[1:-1]} for the sum or {a}*{b} for a product",
+                        )
                     raise _refuse(
                         self.given,
                         tokens[j - 1].start,

@@ -7,6 +7,7 @@
  * student's own progress on it; "Show this step" shows a step's answer and is recorded (a hint used,
  * in the gradebook). The student key stays in localStorage; a reload goes on where it was.
  */
+import { answerBox } from "./answer-box.js";
 import { api, el, exerciseOf, practiceOf, showPanes, stepTex, stored, typeset } from "./classroom.js";
 import { howTo, numbered, refusalWords, verdictWords } from "./verdict-words.js";
 
@@ -177,7 +178,7 @@ function previewAsTyped(input, preview, note, item, s) {
 function stepView(a, item, practice, s, index) {
   const exercise = exerciseOf(practice, s.step, s.coordinate);
   const id = `answer-${index}`;
-  const input = el("input", { id, autocomplete: "off", autocapitalize: "off", spellcheck: "false", inputmode: "text" });
+  const input = answerBox({ id, inputmode: "text" });
   const button = el("button", { type: "submit", text: "Check" });
   const reveal = el("button", { type: "button", className: "join-reveal", "aria-expanded": "false", text: "Show this step" });
   const shown = el("div", { className: "practice-engine", hidden: "" });

@@ -15,6 +15,7 @@
  * page in practice mode; on a scene page it also carries the simulation's parameter values
  * (?practice&m=2&R=0.5), which are set on the controls before the first run.
  */
+import { answerBox, fit } from "./answer-box.js";
 import { RequestError, fetchJSON } from "./api.js";
 import { readRequest, setControl } from "./controls.js";
 import { endOf, howTo, namesSaid, numbered, refusalWords, verdictWords, wordsOf } from "./verdict-words.js";
@@ -146,7 +147,7 @@ function showVerdict(item, result, answer) {
     }
   }
   showReveal(item, result.reveal);
-  const input = item.querySelector("input");
+  const input = item.querySelector(".answer-box");
   const stale = record.verdicts[item.dataset.key]?.answer !== undefined && record.verdicts[item.dataset.key].answer !== input.value;
   if (stale) box.append(element("p", { class: "help" }, `(for your earlier answer: ${record.verdicts[item.dataset.key].answer})`));
   input.setAttribute("aria-invalid", result.verdict ? String(result.verdict === "incorrect") : "true");
@@ -177,7 +178,7 @@ function showReveal(item, reveal) {
 /** A verdict shown for an answer since edited says so, until the new one is checked. */
 function markStale(item, checkedAnswer) {
   const box = item.querySelector(".practice-verdict");
-  const stale = Boolean(box.dataset.verdict) && checkedAnswer !== undefined && checkedAnswer.trim() !== item.querySelector("input").value.trim();
+  const stale = Boolean(box.dataset.verdict) && checkedAnswer !== undefined && checkedAnswer.trim() !== item.querySelector(".answer-box").value.trim();
   box.classList.toggle("verdict-stale", stale);
   let line = box.querySelector(".verdict-stale-note");
   if (stale && !line) {
@@ -206,11 +207,12 @@ function mistakeBox(mistake, [label, name]) {
 /** A follow-up question after a named mistake, answered and checked by the same checker (not a nested form:
  * Enter in its box or its button sends it). */
 function followUpBox(item, followUp) {
-  const id = `${item.querySelector("input").id}-follow`;
+  const id = `${item.querySelector(".answer-box").id}-follow`;
   const box = element("div", { class: "verdict-follow-up", "data-key": followUp.key });
   const label = element("label", { for: id }, followUp.question);
   const row = element("div", { class: "practice-row" });
-  const input = element("input", { type: "text", id, autocomplete: "off", spellcheck: "false", autocapitalize: "off" });
+  // (Enter in its box sends it: not a nested form)
+  const input = answerBox({ id }, () => ask());
   const send = element("button", { type: "button" }, "Answer");
   const status = element("p", { class: "follow-up-verdict", role: "status", "aria-live": "polite" });
   row.append(input, send);
@@ -253,13 +255,6 @@ function followUpBox(item, followUp) {
     }
   };
   send.addEventListener("click", ask);
-  input.addEventListener("keydown", (event) => {
-    if (event.key === "Enter") {
-      event.preventDefault();
-      event.stopPropagation();
-      ask();
-    }
-  });
   return box;
 }
 
@@ -352,7 +347,7 @@ async function preview(item, signal) {
     const checked = record.verdicts[item.dataset.key];
     return Boolean(checked && checked.answer === text && !checked.result?.verdict);
   };
-  const input = item.querySelector("input");
+  const input = item.querySelector(".answer-box");
   const state = await typesetInto(input, item.querySelector(".practice-preview-math"), item.querySelector(".practice-preview-note"), step, signal, frame, said, item.dataset.coordinate || null);
   if (state === "empty") delete item.dataset.typeset;
   else if (state) item.dataset.typeset = state;
@@ -372,16 +367,9 @@ function buildItem(exercise, index) {
   const row = element("div", { class: "practice-row" });
   const lhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
   katexInto(lhs, exercise.step === "equation" ? "" : `${exercise.lhs} =`);
-  const input = element("input", {
-    type: "text",
-    id: `${id}-answer`,
-    name: key,
-    autocomplete: "off",
-    spellcheck: "false",
-    autocapitalize: "off",
-    "aria-describedby": `${id}-names ${id}-preview`,
-  });
+  const input = answerBox({ id: `${id}-answer`, name: key, "aria-describedby": `${id}-names ${id}-preview` });
   input.value = record.answers[key] || "";
+  requestAnimationFrame(() => fit(input));
   const rhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
   if (exercise.step === "equation") katexInto(rhs, "= 0");
   row.append(lhs, input, rhs);

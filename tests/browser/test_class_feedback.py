@@ -27,8 +27,8 @@ def _said(step) -> dict[str, str]:
 
 
 def _check(step, text: str, verdict: str) -> dict[str, str]:
-    step.locator("input").fill(text)
-    step.locator("input").press("Enter")
+    step.locator("textarea").fill(text)
+    step.locator("textarea").press("Enter")
     step.locator(f'.practice-verdict[data-verdict="{verdict}"]').wait_for()
     return _said(step)
 
@@ -46,7 +46,7 @@ def test_a_slip_and_a_refusal_read_the_same_on_the_class_page_and_the_scene_page
     page.goto(f"/join?code={made['code']}")
     page.fill("#join-name", "Ada")
     page.click("#join-form button[type=submit]")
-    page.wait_for_selector('.practice-step[data-step="potential"] input')
+    page.wait_for_selector('.practice-step[data-step="potential"] textarea')
     in_class = page.locator('.practice-step[data-step="potential"]')
     class_slip = _check(in_class, SWAPPED_U, "incorrect")
     page.screenshot(path=str(artifacts / "class-feedback-slip.png"), full_page=True)
@@ -59,7 +59,7 @@ def test_a_slip_and_a_refusal_read_the_same_on_the_class_page_and_the_scene_page
     scene.set_default_timeout(60_000)
     scene_errors = _errors_of(scene)
     scene.goto(f"/scenes/{SCENE}#practice=on")
-    scene.wait_for_selector('.practice-step[data-step="potential"] input')
+    scene.wait_for_selector('.practice-step[data-step="potential"] textarea')
     on_scene = scene.locator('.practice-step[data-step="potential"]')
     scene_slip = _check(on_scene, SWAPPED_U, "incorrect")
     scene_refusal = _check(on_scene, UNREADABLE, "refused")

@@ -43,8 +43,8 @@ def test_a_student_gets_back_to_their_record_on_another_phone(browser, live_serv
     first.click("#join-recovery-done")
     assert first.locator("#join-recovery").is_hidden() and first.locator("#join-recovery-code").inner_text() == ""
     step = first.locator(".practice-step")
-    step.locator("input").fill(RIGHT_T)
-    step.locator("input").press("Enter")
+    step.locator("textarea").fill(RIGHT_T)
+    step.locator("textarea").press("Enter")
     first.wait_for_selector(".practice-step.step-done")
 
     second_context, second, second_errors = _phone(browser, live_server)

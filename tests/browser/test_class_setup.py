@@ -40,7 +40,7 @@ def test_a_student_reads_the_set_up_above_the_boxes_on_a_phone(browser, live_ser
     item = {"system": PENDULUM, "name": "pendulum on a string", "setup": "\n".join(SETUP),
             "steps": [{"step": "kinetic"}, {"step": "equation", "coordinate": "theta"}]}
     joined(page, "Set-up", item)
-    page.wait_for_selector(".join-item .practice-step input")
+    page.wait_for_selector(".join-item .practice-step textarea")
     setup = page.locator(".join-item .join-setup")
     # the instructor's words, line by line, then the particle and U typeset (T is the step asked: not shown)
     assert setup.locator("p:not(.help)").all_inner_texts() == SETUP

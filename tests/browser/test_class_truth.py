@@ -29,8 +29,8 @@ def _phone(browser, live_server):
 
 
 def _check(step, answer, verdict):
-    step.locator("input").fill(answer)
-    step.locator("input").press("Enter")
+    step.locator("textarea").fill(answer)
+    step.locator("textarea").press("Enter")
     step.locator(".practice-verdict[data-verdict]").wait_for()
     said = step.locator(".practice-verdict")
     assert said.get_attribute("data-verdict") == verdict, said.inner_text()
@@ -48,18 +48,18 @@ def test_a_phone_says_what_the_grade_counts_and_keeps_what_was_done(browser, liv
     page.fill("#join-name", "Mei")
     page.click("#join-form button[type=submit]")
     page.wait_for_selector("#join-recovery:not([hidden])")
-    page.wait_for_selector('.practice-step[data-step="kinetic"] input')
+    page.wait_for_selector('.practice-step[data-step="kinetic"] textarea')
     code = page.locator("#join-recovery-code").inner_text()
     # item 5: the first answer box is whole on the first screen, the recovery code above it
     page.screenshot(path=artifacts / "join-first-screen-390.png")
-    box = page.locator('.practice-step[data-step="kinetic"] input').bounding_box()
+    box = page.locator('.practice-step[data-step="kinetic"] textarea').bounding_box()
     assert box["y"] + box["height"] <= 844, box
     assert page.locator("#join-syntax").is_hidden()  # folded behind "How to type an answer"
     page.screenshot(path=artifacts / "join-first-screen-390.png")
 
     # item 3: a reload before "I have kept it" keeps the code
     page.reload()
-    page.wait_for_selector('.practice-step[data-step="kinetic"] input')
+    page.wait_for_selector('.practice-step[data-step="kinetic"] textarea')
     assert page.locator("#join-recovery").is_visible() and page.locator("#join-recovery-code").inner_text() == code
 
     kinetic = page.locator('.practice-step[data-step="kinetic"]')
@@ -82,12 +82,12 @@ def test_a_phone_says_what_the_grade_counts_and_keeps_what_was_done(browser, liv
     page.screenshot(path=artifacts / "join-shown-right-390.png", full_page=True)
 
     # item 2: a text being typed, not checked, survives a reload; the checked answers come back with their verdicts
-    potential.locator("input").fill("m*g*R")
+    potential.locator("textarea").fill("m*g*R")
     page.reload()
-    page.wait_for_selector('.practice-step[data-step="potential"] input')
+    page.wait_for_selector('.practice-step[data-step="potential"] textarea')
     page.wait_for_function(f"document.getElementById('joined-progress').textContent === {progress!r}")
-    assert potential.locator("input").input_value() == "m*g*R"
-    assert kinetic.locator("input").input_value() == RIGHT_T
+    assert potential.locator("textarea").input_value() == "m*g*R"
+    assert kinetic.locator("textarea").input_value() == RIGHT_T
     assert kinetic.locator(".practice-verdict").get_attribute("data-verdict") == "correct"
     assert potential.locator(".practice-verdict").get_attribute("data-verdict") == "correct"
     assert potential.locator(".practice-done-label").inner_text() == SHOWN_WORDS
@@ -101,7 +101,7 @@ def test_a_phone_says_what_the_grade_counts_and_keeps_what_was_done(browser, liv
     # item 3: once kept, the code is gone for good
     page.click("#join-recovery-done")
     page.reload()
-    page.wait_for_selector('.practice-step[data-step="potential"] input')
+    page.wait_for_selector('.practice-step[data-step="potential"] textarea')
     assert page.locator("#join-recovery").is_hidden()
 
     # on another phone, from the record: the last answers, their verdicts and the step shown
@@ -114,7 +114,7 @@ def test_a_phone_says_what_the_grade_counts_and_keeps_what_was_done(browser, liv
     other.wait_for_function(f"document.getElementById('joined-progress').textContent === {progress!r}")
     assert other.locator("#joined-name").inner_text() == "Mei"
     there = other.locator('.practice-step[data-step="potential"]')
-    assert there.locator("input").input_value() == RIGHT_U
+    assert there.locator("textarea").input_value() == RIGHT_U
     assert there.locator(".practice-done-label").inner_text() == SHOWN_WORDS
     assert there.locator(".practice-verdict").get_attribute("data-verdict") == "correct"
     assert other.locator("#join-recovery").is_hidden()  # a rejoin gets no new code

@@ -56,14 +56,14 @@ def _student(browser, live_server, code: str, name: str, device: dict):
     assert page.locator("#join-code").input_value() == code
     page.fill("#join-name", name)
     page.click("#join-form button[type=submit]")
-    page.wait_for_selector('.practice-step[data-step="kinetic"] input')
+    page.wait_for_selector('.practice-step[data-step="kinetic"] textarea')
     return context, page, errors
 
 
 def _answer(page, text: str) -> str:
     step = page.locator('.practice-step[data-step="kinetic"]')
-    step.locator("input").fill(text)
-    step.locator("input").press("Enter")
+    step.locator("textarea").fill(text)
+    step.locator("textarea").press("Enter")
     step.locator(".practice-verdict[data-verdict]").wait_for()
     return step.locator(".practice-verdict").get_attribute("data-verdict")
 
@@ -101,10 +101,10 @@ def test_a_class_live(browser, live_server, classes, artifacts):
 
     # the answer typeset as it is typed, by the checker's reading, before it is sent (inst-b 25, student-f 22)
     kinetic = ada.locator('.practice-step[data-step="kinetic"]')
-    kinetic.locator("input").fill("1/2 m1 l1^2 theta1'^2")
+    kinetic.locator("textarea").fill("1/2 m1 l1^2 theta1'^2")
     kinetic.locator(".practice-preview .katex").wait_for()
     assert kinetic.locator(".practice-preview-note").inner_text() == ""
-    kinetic.locator("input").fill("m1 (")
+    kinetic.locator("textarea").fill("m1 (")
     ada.wait_for_function(
         "document.querySelector('.practice-step[data-step=\"kinetic\"] .practice-preview-note').textContent"
         ".startsWith('Not read yet: ')")
@@ -151,8 +151,8 @@ def test_a_class_live(browser, live_server, classes, artifacts):
     # get a verdict, never "Busy" (inst-b 9: the second was turned away while the first was being checked)
     for key, text in (("kinetic", NO_CROSS_T), ("potential", "m1*g*l1")):
         step = ada.locator(f'.practice-step[data-step="{key}"]')
-        step.locator("input").fill(text)
-        step.locator("input").press("Enter")
+        step.locator("textarea").fill(text)
+        step.locator("textarea").press("Enter")
     for key in ("kinetic", "potential"):
         verdict = ada.locator(f'.practice-step[data-step="{key}"] .practice-verdict[data-verdict]')
         verdict.wait_for()

@@ -33,9 +33,9 @@ def _step(page, heading: str):
 
 def _answer(page, heading: str, text: str) -> str:
     step = _step(page, heading)
-    step.locator("input").fill(text)
+    step.locator("textarea").fill(text)
     step.locator(".practice-verdict").evaluate("e => e.removeAttribute('data-verdict')")
-    step.locator("input").press("Enter")
+    step.locator("textarea").press("Enter")
     step.locator(".practice-verdict[data-verdict]").wait_for()
     return step.locator(".practice-verdict").get_attribute("data-verdict")
 
@@ -87,7 +87,7 @@ def test_an_assignment_graded_and_the_class_opened_elsewhere(browser, live_serve
         page.goto(f"/join?code={code}")
         page.fill("#join-name", name)
         page.click("#join-form button[type=submit]")
-        page.wait_for_selector(".join-assignment .practice-step input")
+        page.wait_for_selector(".join-assignment .practice-step textarea")
         assert page.locator(".join-assignment-title").inner_text() == "1. Week 3: T and the spring"
         assert page.locator(".practice-step").count() == 3
         students[name] = (context, page, errors)

@@ -31,7 +31,7 @@ def _desk(browser, live_server):
 
 
 def _check(step, text: str) -> str:
-    step.locator("input").fill(text)
+    step.locator("textarea").fill(text)
     step.locator("button[type=submit]").click()
     step.locator(".practice-verdict[data-verdict]").wait_for()
     return step.locator(".practice-verdict").inner_text()
@@ -49,7 +49,7 @@ def test_a_students_card_says_each_outcome_in_words(browser, live_server, classe
     page.fill("#join-name", "Ivo")
     page.click("#join-form button[type=submit]")
     kinetic = page.locator('.practice-step[data-step="kinetic"]')
-    kinetic.locator("input").wait_for()
+    kinetic.locator("textarea").wait_for()
     # 14: a name the problem does not have keeps its case: x, never X
     said = _check(kinetic, "m*R**2*x**2/2")
     assert said.startswith("Not checked: x is not a name"), said

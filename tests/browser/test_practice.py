@@ -15,7 +15,7 @@ STEP = '.practice-step[data-key="{}"]'
 
 
 def answer(page, key: str, text: str) -> None:
-    box = page.locator(STEP.format(key)).locator("input[name]")  # the step's own box (a follow-up's has no name)
+    box = page.locator(STEP.format(key)).locator("textarea[name]")  # the step's own box (a follow-up's has no name)
     box.fill(text)
     box.press("Enter")  # keyboard only: Enter checks
 
@@ -34,7 +34,7 @@ def test_a_wrong_then_a_right_answer_survive_a_reload(page, artifacts):
     page.wait_for_selector(STEP.format("kinetic"))
 
     # the live preview typesets what is typed
-    page.locator(STEP.format("kinetic") + " input").fill("m*R**2*theta_dot**2")
+    page.locator(STEP.format("kinetic") + " textarea").fill("m*R**2*theta_dot**2")
     page.wait_for_function(
         "document.querySelector('.practice-step[data-key=kinetic] .practice-preview annotation')"
         "?.textContent.includes('\\\\dot{\\\\theta}')"
@@ -65,9 +65,9 @@ def test_a_wrong_then_a_right_answer_survive_a_reload(page, artifacts):
     page.reload()
     page.wait_for_selector(STEP.format("potential") + ' .practice-verdict[data-verdict="correct"]')
     assert page.locator("#practice-switch").is_checked() and page.locator("#derivation").is_hidden()
-    assert page.locator(STEP.format("kinetic") + " input").input_value() == "m*R**2*theta_dot**2"
+    assert page.locator(STEP.format("kinetic") + " textarea").input_value() == "m*R**2*theta_dot**2"
     assert verdict_of(page, "kinetic").get_attribute("data-verdict") == "incorrect"
-    assert page.locator(STEP.format("potential") + " input").input_value() == "m*g*R*(1 - cos(theta))"
+    assert page.locator(STEP.format("potential") + " textarea").input_value() == "m*g*R*(1 - cos(theta))"
     assert page.locator("#practice .katex-error").count() == 0
     assert page.console_errors == []
 
@@ -75,7 +75,7 @@ def test_a_wrong_then_a_right_answer_survive_a_reload(page, artifacts):
 def test_a_refusal_marks_the_offending_part_and_every_box_is_labelled(page):
     page.goto("/scenes/spherical-pendulum?practice")
     page.wait_for_selector(STEP.format("momentum:phi"))
-    for box in page.locator(".practice-step input").all():
+    for box in page.locator(".practice-step textarea").all():
         assert page.locator(f'label[for="{box.get_attribute("id")}"]').count() == 1
     answer(page, "momentum:phi", "m*R**2*phi_dot + v")
     refused = verdict_of(page, "momentum:phi")
@@ -132,8 +132,8 @@ def test_a_named_mistake_its_piece_and_its_follow_up(page, artifacts):
     # the follow-up question, answered with the keyboard
     follow = verdict.locator(".verdict-follow-up")
     assert "speed of the ball" in follow.locator("label").inner_text()
-    follow.locator("input").fill("R*sin(theta)*phi_dot")
-    follow.locator("input").press("Enter")
+    follow.locator("textarea").fill("R*sin(theta)*phi_dot")
+    follow.locator("textarea").press("Enter")
     page.wait_for_selector(STEP.format("kinetic") + ' .follow-up-verdict[data-verdict="correct"]')
     assert "Correct" in follow.locator(".follow-up-verdict").inner_text()
     page.set_viewport_size({"width": 390, "height": 844})
@@ -192,7 +192,7 @@ def test_the_named_slip_its_piece_and_follow_up_at_both_sizes(browser, live_serv
     try:
         page.goto(f"/scenes/{scene}?practice")
         page.wait_for_selector(STEP.format(step))
-        box = page.locator(STEP.format(step)).locator("input[name]")
+        box = page.locator(STEP.format(step)).locator("textarea[name]")
         box.fill(slip)
         box.press("Enter")
         verdict = verdict_of(page, step)
@@ -205,11 +205,11 @@ def test_the_named_slip_its_piece_and_follow_up_at_both_sizes(browser, live_serv
         # nothing of the verdict is cut off on the phone: it fits the screen's width
         assert verdict.evaluate("e => e.getBoundingClientRect().right") <= page.viewport_size["width"] + 1
         follow_up = verdict.locator(".verdict-follow-up")
-        follow_up.locator("input").fill(follow)
+        follow_up.locator("textarea").fill(follow)
         # the reply is typeset as it is typed, as the step's own answer is
         follow_up.locator(".practice-preview .katex").wait_for()
         assert follow_up.locator(".practice-preview-note").inner_text() == ""
-        follow_up.locator("input").press("Enter")
+        follow_up.locator("textarea").press("Enter")
         page.wait_for_selector(STEP.format(step) + ' .follow-up-verdict[data-verdict="correct"]')
         verdict.screenshot(path=artifacts / f"practice-{scene}-{size}.png")
         assert page.locator("#practice .katex-error").count() == 0
@@ -253,8 +253,8 @@ def test_a_wrong_reply_to_a_follow_up_is_diagnosed(page, artifacts):
     follow_up = verdict_of(page, "kinetic").locator(".verdict-follow-up")
     follow_up.wait_for()
     assert "kinetic energy of the lower bob alone" in follow_up.locator("label").inner_text()
-    follow_up.locator("input").fill("m2*l2**2*theta2_dot**2/2")
-    follow_up.locator("input").press("Enter")
+    follow_up.locator("textarea").fill("m2*l2**2*theta2_dot**2/2")
+    follow_up.locator("textarea").press("Enter")
     page.wait_for_selector(STEP.format("kinetic") + ' .follow-up-verdict[data-verdict="incorrect"]')
     said = unicodedata.normalize("NFC", follow_up.locator(".follow-up-verdict").inner_text())
     assert "the lower bob also moves when θ₁ changes" in said and "carries the lower bob" in said, said
@@ -301,7 +301,7 @@ def test_an_equation_typed_as_a_textbook_writes_it_is_checked_and_a_refusal_is_s
     assert "θ (type theta), θ̇ (type theta_dot), θ̈ (type theta_ddot), pi." in names, names
     how = page.locator('.practice-step[data-key="acceleration:theta"] .practice-names').inner_text()
     assert how.startswith("Type θ̈ = … (θ̈ is typed theta_ddot), or only the right-hand side."), how
-    box = page.locator(STEP.format(key) + " input[name]")
+    box = page.locator(STEP.format(key) + " textarea[name]")
     box.fill("theta_ddot = -g/R*sin(theta)")
     page.wait_for_function(f"document.querySelector('{STEP.format(key)}').dataset.typeset === 'read'")
     assert page.locator(STEP.format(key) + " .practice-row .practice-lhs").last.is_hidden()  # no "= 0" beside it
@@ -346,7 +346,7 @@ def test_an_edited_answer_greys_its_old_verdict_and_an_unreadable_one_clears_the
     verdict = verdict_of(page, "kinetic")
     verdict.locator(".verdict-head").wait_for()
     assert verdict.get_attribute("data-verdict") == "correct" and verdict.locator(".verdict-stale-note").count() == 0
-    box = page.locator(STEP.format("kinetic")).locator("input[name]")
+    box = page.locator(STEP.format("kinetic")).locator("textarea[name]")
     # edited, not checked: the "Correct" no longer stands for what is in the box
     box.fill("m*R**2*theta_dot**2/3")
     assert "earlier answer" in verdict.locator(".verdict-stale-note").inner_text()
@@ -390,7 +390,7 @@ def test_what_the_preview_and_the_verdict_say_belongs_to_the_text_in_the_box(bro
             return page.locator(STEP.format(key) + " .practice-preview")
 
         # an unknown name (l for R): refused, and no rendering of an earlier text stays under the box
-        box = page.locator(STEP.format("acceleration:theta")).locator("input[name]")
+        box = page.locator(STEP.format("acceleration:theta")).locator("textarea[name]")
         box.fill("theta_ddot = -g/R*sin(theta)")
         preview("acceleration:theta").locator(".katex").first.wait_for()
         answer(page, "acceleration:theta", "theta_ddot = -g/l*sin(theta)")
@@ -409,7 +409,7 @@ def test_what_the_preview_and_the_verdict_say_belongs_to_the_text_in_the_box(bro
         assert preview("momentum:theta").locator(".katex").count() == 0
 
         # the parser's note on a half-typed text goes the moment the text changes, before any check
-        box = page.locator(STEP.format("kinetic")).locator("input[name]")
+        box = page.locator(STEP.format("kinetic")).locator("textarea[name]")
         note = preview("kinetic").locator(".practice-preview-note")
         box.fill("m*R**2*(theta_dot**2/2")
         page.wait_for_function(
@@ -446,7 +446,7 @@ def test_a_long_answer_and_its_difference_break_across_lines_on_a_phone(browser,
     try:
         page.goto("/scenes/movable-incline?practice")
         page.wait_for_selector(STEP.format("hamiltonian"))
-        box = page.locator(STEP.format("hamiltonian")).locator("input[name]")
+        box = page.locator(STEP.format("hamiltonian")).locator("textarea[name]")
         # the box takes the whole width of the step on a phone
         assert box.evaluate("el => el.getBoundingClientRect().width") > 300
         # h with U's sign reversed (T − U, which is L): a long answer, and a wrong one with a difference
@@ -501,7 +501,7 @@ def test_progress_is_counted_and_the_end_is_said(page, artifacts):
     assert page.locator(STEP.format("kinetic") + " label").evaluate("e => e.getBoundingClientRect().width") <= 1
     equation = page.locator(STEP.format("equation:theta"))
     assert equation.locator(".practice-lhs").nth(1).is_hidden()  # "= 0" only beside an expression typed
-    equation.locator("input[name]").fill("theta_ddot")
+    equation.locator("textarea[name]").fill("theta_ddot")
     assert equation.locator(".practice-lhs").nth(1).is_visible()
     for n, (key, text) in enumerate(PENDULUM, start=1):
         answer(page, key, text)
@@ -515,7 +515,7 @@ def test_progress_is_counted_and_the_end_is_said(page, artifacts):
     page.reload()
     page.wait_for_function("document.getElementById('practice-status').dataset.done === '10'")
     # a right answer typed over no longer counts
-    box = page.locator(STEP.format("omega_squared")).locator("input[name]")
+    box = page.locator(STEP.format("omega_squared")).locator("textarea[name]")
     box.fill("g/R + 1")
     assert status.inner_text() == "9 of 10 steps correct."
 
@@ -552,7 +552,12 @@ def test_practice_mode_hides_its_dead_tabs_and_folds_what_gives_the_answers_away
         # out of practice mode every tab is back
         page.locator("#practice-switch").focus()
         page.keyboard.press("Space")
-        assert [a.inner_text() for a in tabs.all() if a.is_visible()][:4] == ["Simulation", "Set-up", "Derivation", "Results"]
+        assert [a.inner_text() for a in tabs.all() if a.is_visible()][:4] == [
+            "Simulation",
+            "Set-up",
+            "Derivation",
+            "Results",
+        ]
     finally:
         context.close()
 
@@ -583,7 +588,7 @@ def test_a_long_preview_with_parentheses_is_read_whole_on_a_phone(browser, live_
     try:
         page.goto("/scenes/double-pendulum?practice")
         page.wait_for_selector(STEP.format(step))
-        page.locator(STEP.format(step)).locator("input[name]").fill(text)
+        page.locator(STEP.format(step)).locator("textarea[name]").fill(text)
         preview = page.locator(STEP.format(step) + " .practice-preview")
         # (the page's first typesetting waits its turn behind the step's set-up on a busy machine)
         preview.locator(".katex").first.wait_for(timeout=240_000)
@@ -592,5 +597,71 @@ def test_a_long_preview_with_parentheses_is_read_whole_on_a_phone(browser, live_
         assert preview.evaluate("el => el.scrollWidth <= el.clientWidth + 1")
         assert preview.evaluate("el => el.getBoundingClientRect().right") <= 391
         assert page.locator("#practice .katex-error").count() == 0
+    finally:
+        context.close()
+
+
+def test_a_phones_half_squares_and_dots_are_read_and_every_refused_sign_is_named_at_once(
+    browser, live_server, artifacts
+):
+    # issue 41, 3: ½, ² and θ̇ from a phone's keyboard were refused one at a time
+    context, page = sized_page(browser, live_server, phone=True)
+    try:
+        page.goto("/scenes/simple-pendulum?practice")
+        page.wait_for_selector(STEP.format("kinetic"))
+        box = page.locator(STEP.format("kinetic")).locator("textarea[name]")
+        box.tap()
+        page.keyboard.type("½ m R² θ̇²")
+        page.wait_for_function(f"document.querySelector('{STEP.format('kinetic')}').dataset.typeset === 'read'")
+        math = page.locator(STEP.format("kinetic") + " .practice-preview-math")
+        shown = math.evaluate("el => el.querySelector('annotation')?.textContent ?? el.textContent")
+        assert shown.removeprefix(r"\displaystyle ") == r"T = \frac{1}{2} m R^{2} \dot{\theta}^{2}"
+        box.press("Enter")
+        verdict = verdict_of(page, "kinetic")
+        verdict.locator(".verdict-head").wait_for()
+        assert verdict.get_attribute("data-verdict") == "correct"
+        assert box.input_value() == "½ m R² θ̇²"  # nothing typed is lost
+        page.locator(STEP.format("kinetic")).screenshot(path=artifacts / "practice-phone-half.png")
+        # two signs the parser cannot read are named in one refusal
+        potential = page.locator(STEP.format("potential")).locator("textarea[name]")
+        potential.tap()
+        page.keyboard.type("m g R ≤ cos θ ≥")
+        potential.press("Enter")
+        refused = verdict_of(page, "potential")
+        refused.locator(".verdict-head").wait_for()
+        said = refused.inner_text()
+        # (the columns are left out: the page marks the part in what was typed)
+        assert "2 characters cannot be read: '≤' and '≥' are not allowed" in said, said
+        assert potential.input_value() == "m g R ≤ cos θ ≥"
+    finally:
+        context.close()
+
+
+def test_a_long_answer_on_a_phone_shows_its_start_in_a_box_that_grows(browser, live_server, artifacts):
+    # issue 41, 4: a one-line input scrolled a long answer sideways on a phone and hid its start
+    context, page = sized_page(browser, live_server, phone=True)
+    try:
+        page.goto("/scenes/double-pendulum?practice")
+        page.wait_for_selector(STEP.format("kinetic"))
+        box = page.locator(STEP.format("kinetic")).locator("textarea[name]")
+        one_line = box.evaluate("b => b.getBoundingClientRect().height")
+        text = "1/2 (m1 + m2) l1^2 θ1'^2 + 1/2 m2 l2^2 θ2'^2 + m2 l1 l2 θ1' θ2' cos(θ1 - θ2)"
+        assert len(text) >= 60
+        box.tap()
+        page.keyboard.type(text)
+        shape = box.evaluate(
+            "b => ({height: b.getBoundingClientRect().height, left: b.scrollLeft, top: b.scrollTop,"
+            " wide: b.scrollWidth - b.clientWidth, tall: b.scrollHeight - b.clientHeight})"
+        )
+        # all of it shows, from its start: nothing scrolled away sideways or up, the box grown to its lines
+        assert shape["left"] == 0 and shape["top"] == 0 and shape["wide"] <= 1 and shape["tall"] <= 1, shape
+        assert shape["height"] > 1.5 * one_line, (shape, one_line)
+        page.locator(STEP.format("kinetic")).screenshot(path=artifacts / "practice-long-answer-390.png")
+        # Enter still checks, and adds no line to the answer
+        box.press("Enter")
+        verdict = verdict_of(page, "kinetic")
+        verdict.locator(".verdict-head").wait_for()
+        assert verdict.get_attribute("data-verdict") == "correct"
+        assert box.input_value() == text
     finally:
         context.close()

@@ -18,7 +18,7 @@ BOX = f'.practice-step[data-key="{CORPUS["step"]}"]'
 
 def typed(page, text: str) -> str:
     """Type the text into the step's box; the preview's verdict once the server has answered for it."""
-    box = page.locator(BOX + " input[name]")
+    box = page.locator(BOX + " textarea[name]")
     box.fill("")
     page.wait_for_function(f"!document.querySelector('{BOX}').dataset.typeset")
     box.fill(text)
@@ -49,7 +49,7 @@ def test_the_box_accepts_and_refuses_the_corpus_as_the_parser_does(page, artifac
 def test_a_refused_text_clears_the_last_rendering_and_shows_the_parsers_message(page, artifacts):
     page.goto(f"/scenes/{CORPUS['scene']}?practice")
     page.wait_for_selector(BOX)
-    box = page.locator(BOX + " input[name]")
+    box = page.locator(BOX + " textarea[name]")
     box.fill("m1*l1**2*theta1_dot**2/2")
     page.wait_for_function(f"document.querySelector('{BOX}').dataset.typeset === 'read'")
     # set at display size so that it may break across lines: what is typeset follows \displaystyle
@@ -74,10 +74,10 @@ def test_the_playgrounds_box_reads_the_declared_systems_names(page):
     page.locator("#practice-switch").check()
     box = '.practice-step[data-key="acceleration:x"]'
     page.wait_for_selector(box)
-    page.locator(box + " input[name]").fill("(F*cos(w*t) - b*x_dot - k*x)/m")
+    page.locator(box + " textarea[name]").fill("(F*cos(w*t) - b*x_dot - k*x)/m")
     page.wait_for_function(f"document.querySelector('{box}').dataset.typeset === 'read'")
     shown = page.locator(box + " .practice-preview-math annotation").text_content().removeprefix("\\displaystyle ")
     assert shown.startswith(r"\ddot{x} =") and r"\dot{x}" in shown
-    page.locator(box + " input[name]").fill("k*y")  # y is no name of this system
+    page.locator(box + " textarea[name]").fill("k*y")  # y is no name of this system
     page.wait_for_function(f"document.querySelector('{box}').dataset.typeset === 'refused'")
     assert "y is not a name in this problem" in page.locator(box + " .practice-preview-note").inner_text()

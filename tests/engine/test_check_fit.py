@@ -83,7 +83,7 @@ def test_a_units_factor_too_many_is_named_the_right_way_up_in_full_sentences():
     # the whole answer is the student's own preview: not printed again under the words
     assert result["mistake"]["latex"] == ""
     incline = judge(step_problem("incline-block", "acceleration", "X"), "-g*sin(alpha)*m")
-    assert "but it should be an acceleration (m/s²). It has a factor m (kg) too many." in incline["hint"]
+    assert "but it should be an acceleration (m/s²). It has a factor m (kilograms) too many." in incline["hint"]
 
 
 def test_a_long_sum_of_mixed_units_is_not_quoted_inside_the_sentence():

@@ -74,7 +74,9 @@ def test_the_students_own_term_is_quoted_where_it_helps():
         " + m2*l1*l2*sin(theta1 - theta2)*theta1_dot**2 + m2*g*l2*sin(theta2)",
     )
     # the student's own term, as typed (its sign is the slip, so it is quoted without one)
-    assert "your m₂ l₁ l₂ θ̇₁² sin(θ₁ − θ₂) term" in sign["mistake"]["name"] and "−m₂ l₁ l₂" not in read(sign), read(sign)
+    assert "your m₂ l₁ l₂ θ̇₁² sin(θ₁ − θ₂) term" in sign["mistake"]["name"] and "−m₂ l₁ l₂" not in read(sign), read(
+        sign
+    )
 
 
 def test_a_factor_is_named_and_no_part_agreeing_is_not_said_beside_it():
@@ -220,3 +222,61 @@ def test_a_wrong_reply_to_a_chain_rule_question_is_named(reply, said):
     assert first["follow_up"]["key"] == "equation.chain_rule.theta2", first
     wrong = judge_follow_up(pb, first["follow_up"]["key"], reply)
     assert wrong["verdict"] == "incorrect" and said in unicodedata.normalize("NFC", wrong["hint"]), wrong["hint"]
+
+
+@pytest.mark.parametrize(
+    ("scene", "typed", "question"),
+    [
+        ("helix-bead", "1/2*m*z_dot**2", "What is the bead's speed along x and y?"),
+        ("rotating-parabola", "1/2*m*(rho_dot**2 + rho**2*omega**2)", "What is the bead's speed along z?"),
+    ],
+)
+def test_the_line_above_a_follow_up_does_not_print_its_answer(scene, typed, question):
+    # issue 41, 2: "the bead's motion in the x–y plane, of speed R α ż", then "What is the bead's speed along x and y?"
+    pb = step_problem(scene, "kinetic", None)
+    first = judge(pb, typed)
+    assert first["follow_up"]["question"] == question, first
+    answer = pb.mistake(first["follow_up"]["key"]).follow_up.answer_text
+    assert answer not in read(first), read(first)
+
+
+@pytest.mark.parametrize("scene", ["helix-bead", "rotating-parabola", "rail-two-body", "simple-pendulum"])
+def test_no_question_is_asked_whose_answer_its_words_print(scene):
+    from app.engine.diagnose import sentence
+    from app.engine.mistake_families import states_answer
+
+    pb = step_problem(scene, "potential" if scene == "rail-two-body" else "kinetic", None)
+    asked = [(m, hint) for m, hint, _ in pb.mistakes if m.follow_up is not None]
+    assert asked
+    for m, hint in asked:
+        words = " ".join((hint, m.name, m.where, sentence(m, pb.label)))
+        assert not states_answer(words, m.follow_up), (m.key, words)
+        assert m.follow_up.answer_text not in m.name
+
+
+def test_a_question_whose_answer_is_printed_before_it_is_not_asked():
+    from app.engine.mistake_families import FollowUp, states_answer
+
+    r, a, zd, xd = sp.symbols("R alpha z_dot X_dot")
+    speed = FollowUp("What is its speed?", "kinetic", r * a * zd, "magnitude", "R α ż")
+    assert states_answer("the motion in the x–y plane, of speed R α ż", speed)
+    assert states_answer("of speed −R α ż", speed)  # either sign, for a speed
+    assert not states_answer("the motion in the x–y plane", speed)
+    assert not states_answer("of speed R α żz", speed)  # part of a longer formula
+    # a lone name says where a part comes from, not what it is
+    assert not states_answer("the part that comes from Ẋ", FollowUp("?", "kinetic", xd, "magnitude", "Ẋ"))
+
+
+def test_a_reply_of_other_units_to_a_follow_up_is_told_its_units():
+    # issue 41, 2: R α for the bead's speed got only "Not yet"
+    pb = step_problem("helix-bead", "kinetic", None)
+    first = judge(pb, "1/2*m*z_dot**2")
+    wrong = judge_follow_up(pb, first["follow_up"]["key"], "R*alpha")
+    assert wrong["message"] == "Not yet: its units do not agree, as said below.", wrong
+    assert wrong["hint"].startswith("Check the units. Your reply is a pure number, but it should be a speed (m/s)."), (
+        wrong
+    )
+    assert wrong["follow_up"]["question"] == first["follow_up"]["question"]
+    # a reply of the right units is not told about units
+    other = judge_follow_up(pb, first["follow_up"]["key"], "R*alpha*z_dot*2")
+    assert other["verdict"] == "incorrect" and "units" not in other["hint"] and "units" not in other["message"]

@@ -133,7 +133,7 @@ def test_terms_whose_units_disagree_are_named_at_any_step():
     assert typed["mistake"]["key"] == "units.mismatch" and "an energy" in typed["hint"]
     # a whole of the wrong units names the missing factor
     whole = judge(step_problem("simple-pendulum", "kinetic", None), "R**2*theta_dot**2/2")
-    assert "A factor of mass (kg) is missing" in whole["hint"], whole["hint"]
+    assert "A factor with the units of a mass (kilograms) is missing: a mass such as m." in whole["hint"], whole["hint"]
 
 
 def test_a_rod_typed_with_t_and_u_is_named_as_a_rod():

@@ -106,7 +106,10 @@ def test_a_hint_speaks_of_springs_only_where_a_spring_can_be():
 def test_a_missing_factor_with_a_name_is_said_by_its_name():
     # student-g 4: "It has a factor in s²/kg·m too many" for a T typed as a length; a force is what is missing
     hint = judge(step_problem("incline-block", "kinetic", None), "X*sin(alpha)")["hint"]
-    assert "Your T is a length (m), but it should be an energy (kg·m²/s²). A factor of force (kg·m/s²) is missing." in hint
+    assert (
+        "Your T is a length (metres), but it should be an energy (kg·m²/s²). A factor with the units of a force "
+        "(kg·m/s²) is missing." in hint
+    ), hint
     assert "too many" not in hint, hint
 
 

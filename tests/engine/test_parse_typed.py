@@ -143,7 +143,9 @@ def test_a_factor_after_a_quotient_that_reads_two_ways_is_refused_with_both(text
 def test_a_glued_fraction_of_numbers_is_told_the_space_that_makes_it_a_coefficient():
     with pytest.raises(ExpressionError) as refused:
         read("1/2m R^2", OTHER)
-    assert str(refused.value).endswith("could be read as (1/2) m R^2 or as 1/(2 m R^2); for the first, put a space after 1/2")
+    assert str(refused.value).endswith(
+        "could be read as (1/2) m R^2 or as 1/(2 m R^2); for the first, put a space after 1/2"
+    )
     with pytest.raises(ExpressionError) as refused:
         read("g/Rθ", OTHER)  # a quotient by one name: the space makes it the textbook's (g/R) θ
     assert str(refused.value).endswith("could be read as (g/R) θ or as g/(R θ); for the first, put a space after g/R")
@@ -203,3 +205,37 @@ def test_student_text_is_read_within_the_allowlist_or_refused(text):
         assert exc.start is None or 0 <= exc.start <= exc.end <= len(text)
         return
     assert result.free_symbols <= set(NAMES.values())
+
+
+def test_a_phones_signs_are_read_as_typed():
+    # issue 41, 3: ½, ², θ̇, −, · and × from a phone's keyboard or copied notes, read at once
+    assert typed("½ m R² θ̇²").text == "(1/2)*m*R**2*theta_dot**2"
+    assert typed("½m R²θ̇² − m·g×R").text == "(1/2)*m*R**2*theta_dot**2 - m*g*R"
+    names = OTHER | {"theta_dot": sp.Symbol("theta_dot", real=True), "R": sp.Symbol("R", real=True)}
+    assert parse_expression("½ m R² θ̇²", names) == parse_expression("m*R**2*theta_dot**2/2", names)
+    # a fraction after a name is a factor, never an argument (R½ is R times ½, not a call of R)
+    assert parse_expression("m R½", names) == parse_expression("m*R/2", names)
+
+
+def test_every_refused_character_is_named_in_one_message():
+    with pytest.raises(ExpressionError) as refused:
+        read("m ≤ g ½ = l |x|", NAMES)
+    said = str(refused.value)
+    assert said.startswith("4 characters cannot be read: ")  # the ½ is read
+    assert "'≤' at column 3 is not allowed: besides the keyboard's letters" in said
+    assert "'=' at column 9 is not allowed: an equation is not an expression" in said
+    assert "'|' at columns 13 and 15 is not allowed: an absolute value |x| is typed abs(x)" in said
+    # the part marked runs from the first refused character to the last
+    assert (refused.value.start, refused.value.end) == (2, 15)
+    # one refused character is said as before
+    with pytest.raises(ExpressionError) as one:
+        read("m ≤ g", NAMES)
+    assert str(one.value).startswith("character '≤' at column 3 is not allowed")
+
+
+@pytest.mark.parametrize("text", ["1/2(", "x/2(m + x", "/0("])
+def test_a_quotient_before_a_bracket_never_closed_is_refused_in_words(text):
+    # (found by the property test once ½ was read: an IndexError, not a refusal)
+    with pytest.raises(ExpressionError) as refused:
+        read(text, OTHER)
+    assert "(" in refused.value.part or "never closed" in str(refused.value) or "cannot be read" in str(refused.value)
