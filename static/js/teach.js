@@ -300,10 +300,10 @@ async function drawNow(summary) {
   if (mistake) {
     const where = mistake.steps[0];
     const label = await labelOf(where);
-    $("now-mistake").dataset.count = mistake.count;
+    $("now-mistake").dataset.count = mistake.students.length;
     body.replaceChildren(
       el("p", { className: "now-what" }, el("strong", { text: mistake.name || mistakeWords(mistake.key) })),
-      el("p", { className: "now-figure" }, `${mistake.count}× · in `, typeset(el("span"), label.tex),
+      el("p", { className: "now-figure" }, `${madeBy(mistake)} · in `, typeset(el("span"), label.tex),
         el("span", { className: "dash-where", text: ` ${label.where}${mistake.steps.length > 1 ? ` and ${mistake.steps.length - 1} more` : ""}` })),
       whoList(mistake.students, "Show the students who made it", "now"));
   } else {
@@ -317,9 +317,13 @@ let editing = null; // the assignment loaded into the editor ("Edit…"), saved 
 let everyStep = false; // "Show every step" pressed: the steps nobody has answered are listed too
 
 /** A step's students: done on their own (as the grade counts them), shown ("Show this step" before a right
- * answer: right, but not counted), stuck, of the class. */
+ * answer: right, but not counted), stuck, of the class. The bar counts the students who answered: those shown the
+ * step without answering it are said apart, so the two sums agree. */
 function stepNumbers(entry, students) {
-  const shown = entry.students_shown ? `, ${entry.students_shown} shown` : "";
+  const blank = entry.students_shown_unanswered;
+  const shown = entry.students_shown ? `, ${entry.students_shown} shown`
+    + (blank ? ` (${blank === entry.students_shown ? (blank === 1 ? "without" : "all without") : `${blank} of them without`}`
+      + " answering: not in the bar)" : "") : "";
   return `${entry.students_done} of ${plural(students, "student")} done${shown}, ${entry.stuck} stuck`;
 }
 
@@ -330,20 +334,23 @@ const otherForm = (entry, students) => (entry.students_equivalent && OTHER_FORM[
   ? `${entry.students_equivalent} of ${students} ${OTHER_FORM[entry.step]}` : "");
 
 /** A step's students as a bar, each counted once by their best answer: green those with a right answer, red
- * those with only wrong ones; said in words beside it (with the equivalent answers apart) and in its aria-label. */
+ * those with only wrong ones; said in words beside it (with the equivalent answers apart) and in its aria-label.
+ * Every step's track is the same width and stands for the whole class, so the bars compare from step to step: a
+ * step answered by 3 of 21 fills a seventh of its track, whatever the length of its words. */
 function answerBar(entry, students) {
   const right = entry.students_right;
   const wrong = entry.students_wrong;
-  const total = right + wrong;
+  // the common scale: the class's size (never less than the students who answered, should one join meanwhile)
+  const scale = Math.max(students, right + wrong);
   const other = otherForm(entry, students);
   const words = `${right} right, ${wrong} wrong` + (entry.not_read ? `, ${entry.not_read} ${NOT_READ_WORDS}` : "")
     + (other ? ` · ${other}` : "");
   const bar = el("div", { className: "dash-bar", role: "img",
-    "aria-label": `Students who answered this step: ${words} (green: right, red: wrong)` });
+    "aria-label": `Students who answered this step, of ${plural(students, "student")}: ${words} (green: right, red: wrong)` });
   const good = el("span", { className: "dash-good" });
   const bad = el("span", { className: "dash-bad" });
-  good.style.width = total ? `${(100 * right) / total}%` : "0";
-  bad.style.width = total ? `${(100 * wrong) / total}%` : "0";
+  good.style.width = scale ? `${(100 * right) / scale}%` : "0";
+  bad.style.width = scale ? `${(100 * wrong) / scale}%` : "0";
   bar.append(good, bad);
   return el("div", { className: "dash-bar-row" },
     el("span", { className: "dash-bar-unit", text: "Students" }), bar,
@@ -364,7 +371,7 @@ async function drawSteps(summary) {
     if (idle(entry) && !everyStep) continue;
     const label = await labelOf(entry);
     const mistakes = Object.entries(entry.mistakes);
-    rows.push(el("li", { className: "dash-step" },
+    rows.push(el("li", { className: "dash-step", "data-step": `${entry.scene || entry.system}|${entry.step}` },
       el("div", { className: "dash-label" }, typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` })),
       answerBar(entry, summary.students),
       el("p", { className: "dash-numbers",
@@ -387,20 +394,45 @@ $("dash-steps-all").addEventListener("click", () => {
   poll();
 });
 
+/** A named mistake's figure: the students who made it (as its "Show the students" counts them), the answers apart
+ * when one of them made it more than once: "4 students, 5 answers". */
+const madeBy = (mistake) => plural(mistake.students.length, "student")
+  + (mistake.count !== mistake.students.length ? `, ${plural(mistake.count, "answer")}` : "");
+/** How many students made each of several mistakes: "1 student", "1 or 2 students". */
+function spread(mistakes) {
+  const counts = mistakes.map((m) => m.students.length);
+  const [low, high] = [Math.min(...counts), Math.max(...counts)];
+  return low === high ? plural(low, "student") : `${low} to ${high} students`;
+}
+let moreOpen = false; // "and N more" opened: it stays open when the poll redraws
+
+const FIRST_MISTAKES = 8; // listed at once; the rest behind "and N more", never left out
+
 async function drawMistakes(summary) {
   const rows = [];
-  for (const mistake of summary.mistakes.slice(0, 8)) {
+  const rest = [];
+  for (const [k, mistake] of summary.mistakes.entries()) {
     const pieces = [];
     for (const where of mistake.steps) {
       const label = await labelOf(where);
       pieces.push(el("span", { className: "dash-piece" }, typeset(el("span"), label.tex),
-        el("span", { className: "dash-where", text: ` (${label.where}${mistake.steps.length > 1 ? `, ${where.count}×` : ""})` })));
+        el("span", { className: "dash-where", text: ` (${label.where}${mistake.steps.length > 1 ? `, ${plural(where.students, "student")}` : ""})` })));
     }
-    rows.push(el("li", { className: "dash-mistake", "data-mistake": mistake.key },
-      el("span", { className: "dash-count", text: `${mistake.count}×` }),
+    (k < FIRST_MISTAKES ? rows : rest).push(el("li", { className: "dash-mistake", "data-mistake": mistake.key },
+      el("span", { className: "dash-count", text: madeBy(mistake) }),
       el("strong", { text: mistake.name || mistakeWords(mistake.key) }),
       el("span", { text: " in " }), ...pieces,
       whoList(mistake.students, "Show the students", `mistake|${mistake.key}`)));
+  }
+  if (rest.length) {
+    // the less common mistakes, said as a count, one click from the list (open through the poll's redraws)
+    const more = el("details", { className: "dash-more-mistakes" },
+      el("summary", { text: `and ${plural(rest.length, "more mistake")} (${rest.length === 1 ? "made" : "each made"} `
+        + `by ${spread(summary.mistakes.slice(FIRST_MISTAKES))})` }),
+      el("ol", { className: "dash-mistakes" }, ...rest));
+    more.open = moreOpen;
+    more.addEventListener("toggle", () => (moreOpen = more.open));
+    rows.push(el("li", { className: "dash-more" }, more));
   }
   // beside the mistakes, what is right but not as the set-up asks (another zero of U): an observation, not a mistake
   for (const entry of summary.steps.filter((e) => otherForm(e, summary.students))) {

@@ -98,7 +98,7 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
     # the step by its symbol: U as typeset (KaTeX's italic 𝑈), or as plain text before the fonts arrive
     assert stuck.locator(".now-what").inner_text().split()[0] in ("U", "\N{MATHEMATICAL ITALIC CAPITAL U}")
     assert mistake.get_attribute("data-count") == "6"
-    assert "The sign of U" in mistake.inner_text() and "6×" in mistake.inner_text()  # totalled over two scenes
+    assert "The sign of U" in mistake.inner_text() and "6 students" in mistake.inner_text()  # totalled over two scenes
     for selector in ("#now-stuck .now-what", "#now-stuck .now-figure", "#now-mistake .now-what",
                      "#now-mistake .now-figure"):
         _within_first_screen(page, selector, 768)

@@ -79,7 +79,8 @@ def _step_entry(key: Key, series: list[dict[str, Any]]) -> dict[str, Any]:
     kind = "system" if item in systems else "scene"
     number = next((a["n"] for a in series if a["id"] == assignment_id), None)
     return {"assignment": number, kind: item, "step": step, "coordinate": coordinate, "correct": 0, "incorrect": 0,
-            "not_read": 0, "students_done": 0, "students_shown": 0, "students_right": 0, "students_wrong": 0,
+            "not_read": 0, "students_done": 0, "students_shown": 0, "students_shown_unanswered": 0,
+            "students_right": 0, "students_wrong": 0,
             "students_equivalent": 0, "mistakes": {}, "mistake_names": {}}
 
 
@@ -146,7 +147,8 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
     ``steps``: the assigned steps first (in the series' order), then any other tried; each with its assignment's
     number, its counts, the students stuck on it (tried, not done yet) and its named mistakes.  ``mistakes``: each
     named mistake totalled over every step and scene it was made in (mistakes are totalled by their words, so the
-    same slip in two scenes is one line), most common first, with the steps and the students concerned."""
+    same slip in two scenes is one line), the one most students made first, with its answers (``count``), the
+    steps (each with its answers and students) and the students concerned."""
     rows = _tallies(db, class_id)
     steps: dict[Key, dict[str, Any]] = {key: _step_entry(key, series) for key in assigned_keys(series)}
     names = {student_id: name for student_id, name, *_ in rows}
@@ -195,6 +197,8 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
         stuck = tried[key] - finished[key] - shown[key]
         entry["students_done"] = len(finished[key])
         entry["students_shown"] = len(shown[key])
+        # shown without an answer yet: among the shown, but in neither of the bar's counts (it counts answers)
+        entry["students_shown_unanswered"] = len(shown[key] - tried[key])
         # the bars count students: each once, by their best answer (right, else wrong)
         entry["students_right"] = len({s for (s, k) in right_at if k == key})
         entry["students_wrong"] = len(wrong[key] - {s for (s, k) in right_at if k == key})
@@ -208,12 +212,13 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
             total = totals.setdefault(words or mistake, {"key": mistake, "name": words, "count": 0, "steps": [],
                                                          "students": set()})
             total["count"] += count
-            total["steps"].append(_item_of(entry) | {"count": count})
+            total["steps"].append(_item_of(entry) | {"count": count, "students": len(by_mistake[key][mistake])})
             total["students"] |= by_mistake[key][mistake]
-    mistakes = sorted(totals.values(), key=lambda t: (-t["count"], t["name"] or t["key"]))
+    # the mistake most students made first (then the most answers): a student who makes it twice is one student
+    mistakes = sorted(totals.values(), key=lambda t: (-len(t["students"]), -t["count"], t["name"] or t["key"]))
     for total in mistakes:
         total["students"] = sorted(names[s] for s in total["students"])
-        total["steps"].sort(key=lambda s: -s["count"])
+        total["steps"].sort(key=lambda s: (-s["students"], -s["count"]))
     return {"students": len(names), "attempts": attempts,
             "assignments": _per_assignment(series, names, tried, finished, shown),
             "steps": list(steps.values()), "mistakes": mistakes}
