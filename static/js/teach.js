@@ -324,7 +324,8 @@ function stepNumbers(entry, students) {
   const shown = entry.students_shown ? `, ${entry.students_shown} shown`
     + (blank ? ` (${blank === entry.students_shown ? (blank === 1 ? "without" : "all without") : `${blank} of them without`}`
       + " answering: not in the bar)" : "") : "";
-  return `${entry.students_done} of ${plural(students, "student")} done${shown}, ${entry.stuck} stuck`;
+  const late = entry.students_late ? `, ${entry.students_late} right only after the due time` : "";
+  return `${entry.students_done} of ${plural(students, "student")} done${late}${shown}, ${entry.stuck} stuck`;
 }
 
 /** What an equivalent answer to a step is, as an observation (not a mistake): another zero of U, a factor. */
@@ -509,14 +510,15 @@ async function drawStudents(found, book) {
         coordinate: last.coordinate, assignment: last.assignment };
       const label = await labelOf(entry);
       cell.append(typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` }),
-        el("span", { text: last.shown ? " · shown" : last.done ? " ✓ done" : " · not yet right" }));
+        el("span", { text: last.shown ? " · shown" : last.late ? " · right, late" : last.done ? " ✓ done" : " · not yet right" }));
     } else cell.textContent = "—";
     // the institution login, on a line of its own under the pseudonym, when the class asks for it
     const login = loginColumn ? el("span", { className: "dash-login", text: `${loginColumn}: ${s.login || "none given"}` }) : "";
     rows.push(el("tr", { "data-student": s.name },
       el("th", { scope: "row" }, s.name, " ", codeButton(s.name), login),
       // done on one's own, as the grade counts them; the steps shown apart
-      el("td", { text: s.assigned ? `${s.own} of ${s.assigned}` : String(s.own) }),
+      // by the due time; the steps right only after it said apart (recorded, never counted)
+      el("td", { className: "dash-own", text: (s.assigned ? `${s.own} of ${s.assigned}` : String(s.own)) + (s.late ? ` (${s.late} late)` : "") }),
       el("td", { className: "dash-shown-count", text: String(s.shown) }),
       el("td", { className: "dash-score", text: scoreWords(gradesOf[s.name]) }),
       // every answer sent, those the checker could not read said apart (they are never counted wrong)
