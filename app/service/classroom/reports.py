@@ -51,7 +51,7 @@ def on_own(right_at: datetime | None, shown_at: datetime | None, due: Any = None
 
 def late_only(right_at: datetime | None, shown_at: datetime | None, due: Any) -> bool:
     """Right on one's own, but only after the due time: recorded, not counted (neither done nor stuck)."""
-    return on_own(right_at, shown_at) and is_late(right_at, due)
+    return right_at is not None and on_own(right_at, shown_at) and is_late(right_at, due)
 
 
 def due_utc(when: Any) -> datetime | None:
