@@ -6,7 +6,7 @@
  * totalled over every scene, each one click from the students concerned; then the steps, most stuck
  * first (bars of right and wrong answers), every mistake, each assignment of the series (who is done,
  * who is stuck), one row per student (score, steps shown; who is behind first). The students' names are hidden
- * until the teacher shows them (remembered in the browser); projector mode hides them again, enlarges the type and
+ * until the teacher shows them (hidden again on every reload); projector mode hides them again, enlarges the type and
  * hides the editing. A step shown before it was typed right is "shown", never "done" (the grade's rule). The
  * instructor key stays in localStorage. A class holds a series of assignments (title, optional due
  * time, scenes and typed systems with their steps), added and deleted here. The recovery code is
@@ -926,7 +926,9 @@ $("delete-class").addEventListener("click", async () => {
 // ---- projector mode: large type, only what the class should see -----------------------------------
 
 const projector = stored("lagrange-teach-projector");
-const namesShown = stored("lagrange-teach-names"); // remembered in this browser, as projector mode is
+// the names' choice is never remembered: a reload opens with them hidden (a laptop mirrored to a projector); the
+// choice an earlier version kept in this browser is forgotten
+stored("lagrange-teach-names").set(null);
 function project(on) {
   document.body.classList.toggle("projector", on);
   $("projector").setAttribute("aria-pressed", String(on));
@@ -938,7 +940,6 @@ function showNames(on) {
   document.body.classList.toggle("names-shown", on);
   $("names-shown").setAttribute("aria-pressed", String(on));
   $("names-shown").textContent = on ? "Hide the students' names" : "Show the students' names";
-  namesShown.set(on || null);
 }
 $("names-shown").addEventListener("click", () => showNames(!document.body.classList.contains("names-shown")));
 $("projector").addEventListener("click", () => {
@@ -947,7 +948,7 @@ $("projector").addEventListener("click", () => {
   if (on) showNames(false); // going onto the projector: the names go first
 });
 project(Boolean(projector.get()));
-showNames(Boolean(namesShown.get()));
+showNames(false);
 
 show();
 // a teacher link (#class=…&recover=…): the fragment is read here and wiped from the address at once
