@@ -238,7 +238,7 @@ const LOADING = "Loading…";
 function showLoading() {
   const row = (columns) => el("tr", { className: "dash-loading" }, el("td", { colspan: columns, text: LOADING }));
   $("dash-assignments").tBodies[0].replaceChildren(row(4));
-  $("dash-students").tBodies[0].replaceChildren(row(6));
+  $("dash-students").tBodies[0].replaceChildren(row(7));
   for (const id of ["dash-steps", "dash-mistakes"]) $(id).replaceChildren(el("li", { className: "help dash-loading", text: LOADING }));
   for (const id of ["now-stuck", "now-mistake"]) {
     $(id).querySelector(".now-body").replaceChildren(el("p", { className: "help dash-loading", text: LOADING }));
@@ -491,6 +491,14 @@ function codeButton(name) {
 const scoreWords = (grades) => (grades || []).map((g) => (g.score === null ? "—" : g.score.toFixed(1))).join(" · ");
 /** One number to sort by: the mean of the assignments' scores (no score yet counts 0). */
 const scoreKey = (grades) => (grades?.length ? grades.reduce((sum, g) => sum + (g.score ?? 0), 0) / grades.length : 0);
+/** A time since, as a lecturer says it: "just now", "4 min ago", "1 h 20 min ago". */
+function since(ms) {
+  const minutes = Math.floor(Math.max(0, ms) / 60000);
+  if (minutes < 1) return "just now";
+  if (minutes < 60) return `${minutes} min ago`;
+  const hours = Math.floor(minutes / 60);
+  return hours < 24 ? `${hours} h ${minutes % 60} min ago` : `${plural(Math.floor(hours / 24), "day")} ago`;
+}
 let order = "behind"; // the Students table's order: "behind" (fewest steps done on one's own first), or by score
 
 async function drawStudents(found, book) {
@@ -501,6 +509,7 @@ async function drawStudents(found, book) {
   else students.sort((a, b) => (order === "score-up" ? 1 : -1) * (scoreKey(gradesOf[a.name]) - scoreKey(gradesOf[b.name]))
     || (a.name < b.name ? -1 : 1));
   $("dash-score-sort").parentElement.setAttribute("aria-sort", order === "score-up" ? "ascending" : order === "score-down" ? "descending" : "none");
+  const now = Date.now();
   for (const s of students) {
     const last = [...s.steps].sort((a, b) => (a.last < b.last ? 1 : -1))[0];
     const cell = el("td", { className: "dash-last" });
@@ -523,6 +532,8 @@ async function drawStudents(found, book) {
       el("td", { className: "dash-score", text: scoreWords(gradesOf[s.name]) }),
       // every answer sent, those the checker could not read said apart (they are never counted wrong)
       el("td", { text: s.not_read ? `${s.attempts} (${s.not_read} ${NOT_READ_WORDS})` : String(s.attempts) }),
+      // the time since their last answer: who stopped half way, told from who is still working
+      el("td", { className: "dash-active", text: last ? since(now - new Date(last.last).getTime()) : "no answer yet" }),
       cell));
   }
   $("dash-students").tBodies[0].replaceChildren(...rows);

@@ -6,7 +6,7 @@ pendulum's T two are stuck with the cross term forgotten while three are done.  
 at 1024×768), without scrolling, the dashboard names the double pendulum's U as the step most are stuck on and
 "The sign of U" (its case kept), totalled over both scenes, as the most common mistake with its count, 6×; one
 click shows the students concerned, once the teacher shows the names (hidden as the page opens, and again after
-every reload).  Projector mode enlarges the type and shrinks the code, so both cards are whole on a 1024×768 screen.  An answer recorded later shows without
+every reload).  Projector mode enlarges the type, the code (in large type) and its QR code (240 px at least), and both cards stay whole on a 1024×768 screen.  An answer recorded later shows without
 a reload.  And a student's side of a busy lecture hall: /join brings the session cookie, and a join refused
 with 429 is tried again after its Retry-After, the wait shown.
 """
@@ -151,7 +151,10 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
     page.screenshot(path=artifacts / "teach-projector-1024.png")
     # projected, the code stays large enough for the back of the room, and going onto the projector hid the names
     code_px = page.eval_on_selector("#class-code", "e => parseFloat(getComputedStyle(e).fontSize)")
-    assert code_px >= 48, code_px
+    assert code_px >= 72, code_px
+    # and the QR code is large enough to scan from the back rows (240 px at least, not the page's 96)
+    qr_px = page.eval_on_selector("#class-qr", "e => e.getBoundingClientRect().width")
+    assert qr_px >= 240, qr_px
     assert page.locator("#now-stuck .now-who").is_hidden() and page.locator("#dash-students").is_hidden()
     stuck = page.locator('#dash-assignments tr[data-assignment="1"] .dash-stuck')
     assert stuck.locator(".dash-names").is_hidden()

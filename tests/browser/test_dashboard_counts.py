@@ -6,7 +6,8 @@ answer (three right, two of them with another zero of U; three wrong with the si
 two answer wrong, with nine slips between them.  At 1366×768 every step's bar has the same track, the class, and
 fills in proportion to the students who answered, whatever the length of its words; the eleven named mistakes are
 all there, eight listed and "and 3 more" opening the rest; a mistake's figure counts students ("2 students, 3
-answers"), as its button does; and the T step's line says the student shown it without answering apart.
+answers"), as its button does; the T step's line says the student shown it without answering apart; and the
+students table says when each last answered ("just now", "no answer yet").
 """
 
 from __future__ import annotations
@@ -106,6 +107,11 @@ def test_the_bars_share_one_scale_and_every_mistake_counts_students(browser, liv
     assert kinetic.locator(".dash-bar-words").inner_text() == "4 right, 2 wrong"
     assert kinetic.locator(".dash-numbers").inner_text().startswith(
         "4 of 12 students done, 1 shown (without answering: not in the bar), 2 stuck")
+
+    # the students table says how long ago each answered last: who stopped, told from who works
+    assert page.locator('#dash-students tr[data-student="S00"] .dash-active').inner_text() == "just now"
+    assert page.locator('#dash-students tr[data-student="S07"] .dash-active').inner_text() == "no answer yet"
+    assert page.locator("#dash-students thead th").nth(5).inner_text() == "Last active"
 
     page.set_viewport_size({"width": 1024, "height": 768})
     page.screenshot(path=artifacts / "teach-bars-1024.png", full_page=True)
