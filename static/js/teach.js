@@ -110,6 +110,7 @@ async function open(code, key) {
   }
   current = { code: r.data.code, key, title: r.data.title };
   loginColumn = r.data.login_column || null;
+  drawSession(r.data.session);
   $("class-login").value = loginColumn || "";
   memory.set(current);
   useSeries(r.data.assignments);
@@ -982,6 +983,43 @@ if (fragment.get("class") && fragment.get("recover")) {
 window.addEventListener("hashchange", () => {
   if (new URLSearchParams(window.location.hash.slice(1)).get("class")) window.location.reload();
 });
+
+// ---- the session's ends: close joining, stop answers (kept in the class's record; reopened as easily) --------
+
+let session = null; // {joining_open, joining_closed_at, answers_open, answers_stopped_at}: as the server said
+const clock = (iso) => new Date(iso).toLocaleTimeString([], { timeStyle: "short" });
+
+/** The two buttons say what a press does; the line beside them says the state, in a teacher's words. */
+function drawSession(state) {
+  session = state || null;
+  $("session-joining").hidden = $("session-answers").hidden = !session;
+  if (!session) return;
+  $("session-joining").textContent = session.joining_open ? "Close joining" : "Reopen joining";
+  $("session-joining").setAttribute("aria-pressed", String(!session.joining_open));
+  $("session-answers").textContent = session.answers_open ? "Stop answers" : "Take answers again";
+  $("session-answers").setAttribute("aria-pressed", String(!session.answers_open));
+  const said = [];
+  if (!session.joining_open) {
+    said.push(`Joining closed at ${clock(session.joining_closed_at)}: new students are refused; those who joined keep working.`);
+  }
+  if (!session.answers_open) {
+    said.push(`Answers stopped at ${clock(session.answers_stopped_at)}: students are told their answers are not `
+      + "recorded; what they answered before is kept.");
+  }
+  $("session-status").textContent = said.length ? said.join(" ") : "Open: students may join and answer.";
+  document.body.classList.toggle("session-ended", !session.joining_open || !session.answers_open);
+}
+
+async function setSession(change) {
+  const r = await api("PUT", `/api/classes/${current.code}/session`, { key: current.key, body: change });
+  if (r.status !== 200) {
+    refuse(r, "session-status");
+    return;
+  }
+  drawSession(r.data);
+}
+$("session-joining").addEventListener("click", () => setSession({ joining_open: !session.joining_open }));
+$("session-answers").addEventListener("click", () => setSession({ answers_open: !session.answers_open }));
 
 // the institution login asked at joining, changed for the open class (PUT …/login); the grades file follows
 $("class-login").addEventListener("change", async () => {

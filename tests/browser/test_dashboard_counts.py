@@ -117,3 +117,54 @@ def test_the_bars_share_one_scale_and_every_mistake_counts_students(browser, liv
     page.screenshot(path=artifacts / "teach-bars-1024.png", full_page=True)
     assert errors == []
     context.close()
+
+
+def test_the_lecturer_closes_joining_and_stops_answers_from_the_dashboard(browser, live_server, classes, artifacts):  # noqa: F811
+    """Issue 44, item 7: two buttons end the session without deleting the class; a student trying to join reads
+    the server's reason on /join; both reopen."""
+    context = browser.new_context(base_url=live_server, viewport={"width": 1366, "height": 768})
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    errors: list[str] = []
+    page.on("pageerror", lambda exc: errors.append(str(exc)))
+    assert page.request.post("/api/classes", data={"title": "first"}).status == 201  # the classroom starts
+    page.goto("/teach")
+    room = classes[0]
+    code, key = _scripted(room)
+    class_id = store.access(room.db, code, key).class_id
+    kept = json.dumps({"code": code, "key": key, "title": "Mechanics II, Tuesday practice"})
+    page.evaluate(f"localStorage.setItem('lagrange-teach', {json.dumps(kept)})")
+    page.reload()
+    page.wait_for_selector("#now-mistake[data-count]")
+    assert page.locator("#session-status").inner_text() == "Open: students may join and answer."
+
+    page.click("#session-joining")
+    page.wait_for_function("document.getElementById('session-joining').textContent === 'Reopen joining'")
+    assert store.class_session(room.db, class_id)["joining_open"] is False
+    assert "new students are refused; those who joined keep working" in page.locator("#session-status").inner_text()
+    page.click("#session-answers")
+    page.wait_for_function("document.getElementById('session-answers').textContent === 'Take answers again'")
+    assert store.class_session(room.db, class_id)["answers_open"] is False
+    assert "what they answered before is kept" in page.locator("#session-status").inner_text()
+    page.screenshot(path=artifacts / "teach-session-ended-1366.png")
+
+    # a student trying to join now reads why, in the server's words
+    phone = browser.new_context(base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True)
+    student = phone.new_page()
+    student.goto("/join")
+    student.fill("#join-code", code)
+    student.fill("#join-name", "Quentin")
+    student.click("#join-form button[type=submit]")
+    student.wait_for_function("document.getElementById('join-status').textContent.includes('closed joining')")
+    assert student.locator("#join-status").inner_text() == store.JOINING_CLOSED
+    student.screenshot(path=artifacts / "join-closed-390.png")
+    phone.close()
+
+    # reopened, both: the record is as it was (12 students), and the line says so
+    page.click("#session-joining")
+    page.click("#session-answers")
+    page.wait_for_function("document.getElementById('session-status').textContent.startsWith('Open')")
+    assert store.class_session(room.db, class_id)["answers_open"] is True
+    assert page.locator("#dash-counts").inner_text().startswith("12 students")
+    assert errors == []
+    context.close()
