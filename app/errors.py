@@ -18,7 +18,8 @@ routes alike (app/web/errors.py):
 * ``WrongKey``: the key given does not open this route of this class (a wrong key,
   a student's key on an instructor's route, another class's key, or an unknown code);
 * ``UnknownClass``: no class has this code (joining only: a keyed route says WrongKey);
-* ``UnknownAssignment``: the class has no assignment of this number.
+* ``UnknownAssignment``: the class has no assignment of this number;
+* ``ClassClosed``: the class's instructor has closed joining, or stopped answers (what was recorded is kept).
 """
 
 from __future__ import annotations
@@ -121,3 +122,8 @@ class UnknownAssignment(KeyError):
 
     def __str__(self) -> str:
         return str(self.args[0]) if self.args else "the class has no assignment of this number"
+
+
+class ClassClosed(Exception):
+    """The instructor closed the class to this for now: joining (new students), or answers (every student); what the
+    class recorded is kept, and the instructor may reopen it.  The message says which, for a student to read."""

@@ -44,6 +44,8 @@ from app.web.schemas_classes import (
     Recovered,
     RecoverRequest,
     RejoinRequest,
+    SessionSetting,
+    SessionState,
     Shown,
     ShowStep,
     StudentCode,
@@ -75,6 +77,8 @@ ERRORS: dict[int | str, dict[str, Any]] = {
     413: {"model": Problem, "description": f"The body is larger than {MAX_BODY_BYTES} bytes."},
     401: {"model": Problem, "description": "No key: send `Authorization: Bearer <key>`."},
     403: {"model": Problem, "description": "This key does not open this route of this class."},
+    409: {"model": Problem, "description": "The class's instructor has closed joining, or stopped answers: the "
+          "message says which (what was recorded is kept)."},
     422: {"model": Problem, "description": "Refused: the field at fault is in `loc`."},
     429: {"model": Problem, "description": "Too many joins or checks this minute, or your check is running."},
 }
@@ -115,7 +119,7 @@ async def create_class(classes: ClassroomDep, body: NewClass) -> JSONResponse:
     "/{code}/join",
     summary="Join a class with a pseudonym",
     response_model=Joined,
-    responses={404: {"model": Problem, "description": "No class has this code."}, **_errors(400, 413, 422, 429)},
+    responses={404: {"model": Problem, "description": "No class has this code."}, **_errors(400, 409, 413, 422, 429)},
 )
 async def join_class(classes: ClassroomDep, client: ClientDep, code: str, body: JoinRequest) -> Response:
     return client.keep(_json(await classes.join(code, body.name, client.key, client.address, body.login)))
@@ -187,7 +191,7 @@ async def recover_class(classes: ClassroomDep, client: ClientDep, code: str, bod
     description="With a student's key: the student pressed \"Show this step\" (the step's answer), a hint used "
     "in the gradebook; recorded once per student, assignment and step.",
     response_model=Shown,
-    responses=_errors(400, 401, 403, 413, 422),
+    responses=_errors(400, 401, 403, 409, 413, 422),
 )
 async def show_step(classes: ClassroomDep, code: str, key: KeyDep, body: ShowStep) -> JSONResponse:
     target = {"scene": body.scene, "system": body.system, "assignment": body.assignment}
@@ -200,6 +204,15 @@ async def show_step(classes: ClassroomDep, code: str, key: KeyDep, body: ShowSte
             "kept.", response_model=LoginSet, responses=_errors(400, 401, 403, 413, 422))
 async def set_login_column(classes: ClassroomDep, code: str, key: KeyDep, body: LoginSetting) -> JSONResponse:
     return _json(await classes.set_login_column(code, key, body.login_column))
+
+
+@router.put("/{code}/session", summary="Close or reopen joining; stop or reopen answers",
+            description="With the instructor's key: `joining_open: false` refuses new students (409, with a message "
+            "for them) while those joined keep working; `answers_open: false` refuses every answer and shown step "
+            "(409) and keeps what was recorded. `true` reopens either. Kept in the class's record, so every replica "
+            "of the server refuses alike.", response_model=SessionState, responses=_errors(400, 401, 403, 413, 422))
+async def set_session(classes: ClassroomDep, code: str, key: KeyDep, body: SessionSetting) -> JSONResponse:
+    return _json(await classes.set_session(code, key, body.joining_open, body.answers_open))
 
 
 @router.put("/{code}/assignment", summary="Set the first assignment's items",

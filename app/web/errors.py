@@ -36,6 +36,7 @@ from starlette.routing import Match
 
 from app.engine.errors import excerpt
 from app.errors import (
+    ClassClosed,
     NoKey,
     OverCapacity,
     Refused,
@@ -56,8 +57,10 @@ SERVER_BUSY = 503  # OverCapacity of the whole server, or no worker to be had
 NOT_FOUND = 404  # UnknownScene, UnknownClass, UnknownAssignment
 NO_KEY = 401  # NoKey
 WRONG_KEY = 403  # WrongKey
+CLOSED = 409  # ClassClosed: the class exists and the key opens it, but its instructor has closed it to this for now
 
-KINDS = (Refused, OverCapacity, WorkerFailed, UnknownScene, NoKey, WrongKey, UnknownClass, UnknownAssignment)
+KINDS = (Refused, OverCapacity, WorkerFailed, UnknownScene, NoKey, WrongKey, UnknownClass, UnknownAssignment,
+         ClassClosed)
 
 
 PROBLEM_JSON = "application/problem+json"
@@ -110,6 +113,8 @@ def problem(exc: Exception) -> Failure:
         return Failure(NO_KEY, {"detail": str(exc)}, {"WWW-Authenticate": "Bearer"})
     if isinstance(exc, WrongKey):
         return Failure(WRONG_KEY, {"detail": str(exc)})
+    if isinstance(exc, ClassClosed):
+        return Failure(CLOSED, {"detail": str(exc)})
     raise TypeError(f"not a kind of failure: {type(exc).__name__}") from exc
 
 

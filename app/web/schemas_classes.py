@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from pydantic import AwareDatetime, BaseModel, ConfigDict, Field, StringConstraints
+from pydantic import AwareDatetime, BaseModel, ConfigDict, Field, StrictBool, StringConstraints
 
 from app.service.classroom.logins import LoginColumn
 from app.service.classroom.setup import MAX_SETUP
@@ -46,6 +46,22 @@ class LoginSetting(BaseModel):
 class LoginSet(BaseModel):
     code: str
     login_column: LoginColumn | None
+
+
+class SessionSetting(BaseModel):
+    model_config = ConfigDict(**STRICT, json_schema_extra={"example": {"answers_open": False}})
+    joining_open: StrictBool | None = Field(None, description="false: close joining (new students are refused; those "
+                                      "joined keep working); true: reopen it; left out: as it is.")
+    answers_open: StrictBool | None = Field(None, description="false: stop answers (refused, the record kept); true: take "
+                                      "them again; left out: as it is.")
+
+
+class SessionState(BaseModel):
+    code: str
+    joining_open: bool
+    joining_closed_at: str | None = Field(description="When joining was closed (ISO 8601, UTC); null while open.")
+    answers_open: bool
+    answers_stopped_at: str | None = Field(description="When answers were stopped (ISO 8601, UTC); null while open.")
 
 
 class ClassCreated(BaseModel):

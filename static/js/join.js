@@ -23,7 +23,7 @@ const CLOSED = "This class was closed by your instructor: its page and your answ
 let current = memory.get(); // {code, key, name, title, recovery}: recovery until "I have kept it" is pressed
 let series = null; // the class's assignments, in order: {n, title, due, items}
 // per step ("assignment|item|step|coordinate"), from the server's record: right (answered right at some time),
-// counted (right on one's own by the due time: what the grade counts, reports.counts), late, shown ("Show this step"
+// counted (right on one's own by the due time: what the grade counts, reports.on_own), late, shown ("Show this step"
 // pressed at any time), and the last answer with what it was answered
 const record = new Map();
 const recordOf = (key) => record.get(key) || {};

@@ -6,7 +6,7 @@
  * totalled over every scene, each one click from the students concerned; then the steps, most stuck
  * first (bars of right and wrong answers), every mistake, each assignment of the series (who is done,
  * who is stuck), one row per student (score, steps shown; who is behind first). The students' names are hidden
- * until the teacher shows them (remembered in the browser); projector mode hides them again, enlarges the type and
+ * until the teacher shows them (hidden again on every reload); projector mode hides them again, enlarges the type and
  * hides the editing. A step shown before it was typed right is "shown", never "done" (the grade's rule). The
  * instructor key stays in localStorage. A class holds a series of assignments (title, optional due
  * time, scenes and typed systems with their steps), added and deleted here. The recovery code is
@@ -110,6 +110,7 @@ async function open(code, key) {
   }
   current = { code: r.data.code, key, title: r.data.title };
   loginColumn = r.data.login_column || null;
+  drawSession(r.data.session);
   $("class-login").value = loginColumn || "";
   memory.set(current);
   useSeries(r.data.assignments);
@@ -238,7 +239,7 @@ const LOADING = "Loading…";
 function showLoading() {
   const row = (columns) => el("tr", { className: "dash-loading" }, el("td", { colspan: columns, text: LOADING }));
   $("dash-assignments").tBodies[0].replaceChildren(row(4));
-  $("dash-students").tBodies[0].replaceChildren(row(6));
+  $("dash-students").tBodies[0].replaceChildren(row(7));
   for (const id of ["dash-steps", "dash-mistakes"]) $(id).replaceChildren(el("li", { className: "help dash-loading", text: LOADING }));
   for (const id of ["now-stuck", "now-mistake"]) {
     $(id).querySelector(".now-body").replaceChildren(el("p", { className: "help dash-loading", text: LOADING }));
@@ -300,10 +301,10 @@ async function drawNow(summary) {
   if (mistake) {
     const where = mistake.steps[0];
     const label = await labelOf(where);
-    $("now-mistake").dataset.count = mistake.count;
+    $("now-mistake").dataset.count = mistake.students.length;
     body.replaceChildren(
       el("p", { className: "now-what" }, el("strong", { text: mistake.name || mistakeWords(mistake.key) })),
-      el("p", { className: "now-figure" }, `${mistake.count}× · in `, typeset(el("span"), label.tex),
+      el("p", { className: "now-figure" }, `${madeBy(mistake)} · in `, typeset(el("span"), label.tex),
         el("span", { className: "dash-where", text: ` ${label.where}${mistake.steps.length > 1 ? ` and ${mistake.steps.length - 1} more` : ""}` })),
       whoList(mistake.students, "Show the students who made it", "now"));
   } else {
@@ -317,10 +318,15 @@ let editing = null; // the assignment loaded into the editor ("Edit…"), saved 
 let everyStep = false; // "Show every step" pressed: the steps nobody has answered are listed too
 
 /** A step's students: done on their own (as the grade counts them), shown ("Show this step" before a right
- * answer: right, but not counted), stuck, of the class. */
+ * answer: right, but not counted), stuck, of the class. The bar counts the students who answered: those shown the
+ * step without answering it are said apart, so the two sums agree. */
 function stepNumbers(entry, students) {
-  const shown = entry.students_shown ? `, ${entry.students_shown} shown` : "";
-  return `${entry.students_done} of ${plural(students, "student")} done${shown}, ${entry.stuck} stuck`;
+  const blank = entry.students_shown_unanswered;
+  const shown = entry.students_shown ? `, ${entry.students_shown} shown`
+    + (blank ? ` (${blank === entry.students_shown ? (blank === 1 ? "without" : "all without") : `${blank} of them without`}`
+      + " answering: not in the bar)" : "") : "";
+  const late = entry.students_late ? `, ${entry.students_late} right only after the due time` : "";
+  return `${entry.students_done} of ${plural(students, "student")} done${late}${shown}, ${entry.stuck} stuck`;
 }
 
 /** What an equivalent answer to a step is, as an observation (not a mistake): another zero of U, a factor. */
@@ -330,20 +336,23 @@ const otherForm = (entry, students) => (entry.students_equivalent && OTHER_FORM[
   ? `${entry.students_equivalent} of ${students} ${OTHER_FORM[entry.step]}` : "");
 
 /** A step's students as a bar, each counted once by their best answer: green those with a right answer, red
- * those with only wrong ones; said in words beside it (with the equivalent answers apart) and in its aria-label. */
+ * those with only wrong ones; said in words beside it (with the equivalent answers apart) and in its aria-label.
+ * Every step's track is the same width and stands for the whole class, so the bars compare from step to step: a
+ * step answered by 3 of 21 fills a seventh of its track, whatever the length of its words. */
 function answerBar(entry, students) {
   const right = entry.students_right;
   const wrong = entry.students_wrong;
-  const total = right + wrong;
+  // the common scale: the class's size (never less than the students who answered, should one join meanwhile)
+  const scale = Math.max(students, right + wrong);
   const other = otherForm(entry, students);
   const words = `${right} right, ${wrong} wrong` + (entry.not_read ? `, ${entry.not_read} ${NOT_READ_WORDS}` : "")
     + (other ? ` · ${other}` : "");
   const bar = el("div", { className: "dash-bar", role: "img",
-    "aria-label": `Students who answered this step: ${words} (green: right, red: wrong)` });
+    "aria-label": `Students who answered this step, of ${plural(students, "student")}: ${words} (green: right, red: wrong)` });
   const good = el("span", { className: "dash-good" });
   const bad = el("span", { className: "dash-bad" });
-  good.style.width = total ? `${(100 * right) / total}%` : "0";
-  bad.style.width = total ? `${(100 * wrong) / total}%` : "0";
+  good.style.width = scale ? `${(100 * right) / scale}%` : "0";
+  bad.style.width = scale ? `${(100 * wrong) / scale}%` : "0";
   bar.append(good, bad);
   return el("div", { className: "dash-bar-row" },
     el("span", { className: "dash-bar-unit", text: "Students" }), bar,
@@ -364,7 +373,7 @@ async function drawSteps(summary) {
     if (idle(entry) && !everyStep) continue;
     const label = await labelOf(entry);
     const mistakes = Object.entries(entry.mistakes);
-    rows.push(el("li", { className: "dash-step" },
+    rows.push(el("li", { className: "dash-step", "data-step": `${entry.scene || entry.system}|${entry.step}` },
       el("div", { className: "dash-label" }, typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` })),
       answerBar(entry, summary.students),
       el("p", { className: "dash-numbers",
@@ -387,20 +396,45 @@ $("dash-steps-all").addEventListener("click", () => {
   poll();
 });
 
+/** A named mistake's figure: the students who made it (as its "Show the students" counts them), the answers apart
+ * when one of them made it more than once: "4 students, 5 answers". */
+const madeBy = (mistake) => plural(mistake.students.length, "student")
+  + (mistake.count !== mistake.students.length ? `, ${plural(mistake.count, "answer")}` : "");
+/** How many students made each of several mistakes: "1 student", "1 or 2 students". */
+function spread(mistakes) {
+  const counts = mistakes.map((m) => m.students.length);
+  const [low, high] = [Math.min(...counts), Math.max(...counts)];
+  return low === high ? plural(low, "student") : `${low} to ${high} students`;
+}
+let moreOpen = false; // "and N more" opened: it stays open when the poll redraws
+
+const FIRST_MISTAKES = 8; // listed at once; the rest behind "and N more", never left out
+
 async function drawMistakes(summary) {
   const rows = [];
-  for (const mistake of summary.mistakes.slice(0, 8)) {
+  const rest = [];
+  for (const [k, mistake] of summary.mistakes.entries()) {
     const pieces = [];
     for (const where of mistake.steps) {
       const label = await labelOf(where);
       pieces.push(el("span", { className: "dash-piece" }, typeset(el("span"), label.tex),
-        el("span", { className: "dash-where", text: ` (${label.where}${mistake.steps.length > 1 ? `, ${where.count}×` : ""})` })));
+        el("span", { className: "dash-where", text: ` (${label.where}${mistake.steps.length > 1 ? `, ${plural(where.students, "student")}` : ""})` })));
     }
-    rows.push(el("li", { className: "dash-mistake", "data-mistake": mistake.key },
-      el("span", { className: "dash-count", text: `${mistake.count}×` }),
+    (k < FIRST_MISTAKES ? rows : rest).push(el("li", { className: "dash-mistake", "data-mistake": mistake.key },
+      el("span", { className: "dash-count", text: madeBy(mistake) }),
       el("strong", { text: mistake.name || mistakeWords(mistake.key) }),
       el("span", { text: " in " }), ...pieces,
       whoList(mistake.students, "Show the students", `mistake|${mistake.key}`)));
+  }
+  if (rest.length) {
+    // the less common mistakes, said as a count, one click from the list (open through the poll's redraws)
+    const more = el("details", { className: "dash-more-mistakes" },
+      el("summary", { text: `and ${plural(rest.length, "more mistake")} (${rest.length === 1 ? "made" : "each made"} `
+        + `by ${spread(summary.mistakes.slice(FIRST_MISTAKES))})` }),
+      el("ol", { className: "dash-mistakes" }, ...rest));
+    more.open = moreOpen;
+    more.addEventListener("toggle", () => (moreOpen = more.open));
+    rows.push(el("li", { className: "dash-more" }, more));
   }
   // beside the mistakes, what is right but not as the set-up asks (another zero of U): an observation, not a mistake
   for (const entry of summary.steps.filter((e) => otherForm(e, summary.students))) {
@@ -458,6 +492,14 @@ function codeButton(name) {
 const scoreWords = (grades) => (grades || []).map((g) => (g.score === null ? "—" : g.score.toFixed(1))).join(" · ");
 /** One number to sort by: the mean of the assignments' scores (no score yet counts 0). */
 const scoreKey = (grades) => (grades?.length ? grades.reduce((sum, g) => sum + (g.score ?? 0), 0) / grades.length : 0);
+/** A time since, as a lecturer says it: "just now", "4 min ago", "1 h 20 min ago". */
+function since(ms) {
+  const minutes = Math.floor(Math.max(0, ms) / 60000);
+  if (minutes < 1) return "just now";
+  if (minutes < 60) return `${minutes} min ago`;
+  const hours = Math.floor(minutes / 60);
+  return hours < 24 ? `${hours} h ${minutes % 60} min ago` : `${plural(Math.floor(hours / 24), "day")} ago`;
+}
 let order = "behind"; // the Students table's order: "behind" (fewest steps done on one's own first), or by score
 
 async function drawStudents(found, book) {
@@ -468,6 +510,7 @@ async function drawStudents(found, book) {
   else students.sort((a, b) => (order === "score-up" ? 1 : -1) * (scoreKey(gradesOf[a.name]) - scoreKey(gradesOf[b.name]))
     || (a.name < b.name ? -1 : 1));
   $("dash-score-sort").parentElement.setAttribute("aria-sort", order === "score-up" ? "ascending" : order === "score-down" ? "descending" : "none");
+  const now = Date.now();
   for (const s of students) {
     const last = [...s.steps].sort((a, b) => (a.last < b.last ? 1 : -1))[0];
     const cell = el("td", { className: "dash-last" });
@@ -477,18 +520,21 @@ async function drawStudents(found, book) {
         coordinate: last.coordinate, assignment: last.assignment };
       const label = await labelOf(entry);
       cell.append(typeset(el("span"), label.tex), el("span", { className: "dash-where", text: ` ${label.where}` }),
-        el("span", { text: last.shown ? " · shown" : last.done ? " ✓ done" : " · not yet right" }));
+        el("span", { text: last.shown ? " · shown" : last.late ? " · right, late" : last.done ? " ✓ done" : " · not yet right" }));
     } else cell.textContent = "—";
     // the institution login, on a line of its own under the pseudonym, when the class asks for it
     const login = loginColumn ? el("span", { className: "dash-login", text: `${loginColumn}: ${s.login || "none given"}` }) : "";
     rows.push(el("tr", { "data-student": s.name },
       el("th", { scope: "row" }, s.name, " ", codeButton(s.name), login),
       // done on one's own, as the grade counts them; the steps shown apart
-      el("td", { text: s.assigned ? `${s.own} of ${s.assigned}` : String(s.own) }),
+      // by the due time; the steps right only after it said apart (recorded, never counted)
+      el("td", { className: "dash-own", text: (s.assigned ? `${s.own} of ${s.assigned}` : String(s.own)) + (s.late ? ` (${s.late} late)` : "") }),
       el("td", { className: "dash-shown-count", text: String(s.shown) }),
       el("td", { className: "dash-score", text: scoreWords(gradesOf[s.name]) }),
       // every answer sent, those the checker could not read said apart (they are never counted wrong)
       el("td", { text: s.not_read ? `${s.attempts} (${s.not_read} ${NOT_READ_WORDS})` : String(s.attempts) }),
+      // the time since their last answer: who stopped half way, told from who is still working
+      el("td", { className: "dash-active", text: last ? since(now - new Date(last.last).getTime()) : "no answer yet" }),
       cell));
   }
   $("dash-students").tBodies[0].replaceChildren(...rows);
@@ -892,7 +938,9 @@ $("delete-class").addEventListener("click", async () => {
 // ---- projector mode: large type, only what the class should see -----------------------------------
 
 const projector = stored("lagrange-teach-projector");
-const namesShown = stored("lagrange-teach-names"); // remembered in this browser, as projector mode is
+// the names' choice is never remembered: a reload opens with them hidden (a laptop mirrored to a projector); the
+// choice an earlier version kept in this browser is forgotten
+stored("lagrange-teach-names").set(null);
 function project(on) {
   document.body.classList.toggle("projector", on);
   $("projector").setAttribute("aria-pressed", String(on));
@@ -904,7 +952,6 @@ function showNames(on) {
   document.body.classList.toggle("names-shown", on);
   $("names-shown").setAttribute("aria-pressed", String(on));
   $("names-shown").textContent = on ? "Hide the students' names" : "Show the students' names";
-  namesShown.set(on || null);
 }
 $("names-shown").addEventListener("click", () => showNames(!document.body.classList.contains("names-shown")));
 $("projector").addEventListener("click", () => {
@@ -913,7 +960,7 @@ $("projector").addEventListener("click", () => {
   if (on) showNames(false); // going onto the projector: the names go first
 });
 project(Boolean(projector.get()));
-showNames(Boolean(namesShown.get()));
+showNames(false);
 
 show();
 // a teacher link (#class=…&recover=…): the fragment is read here and wiped from the address at once
@@ -936,6 +983,43 @@ if (fragment.get("class") && fragment.get("recover")) {
 window.addEventListener("hashchange", () => {
   if (new URLSearchParams(window.location.hash.slice(1)).get("class")) window.location.reload();
 });
+
+// ---- the session's ends: close joining, stop answers (kept in the class's record; reopened as easily) --------
+
+let session = null; // {joining_open, joining_closed_at, answers_open, answers_stopped_at}: as the server said
+const clock = (iso) => new Date(iso).toLocaleTimeString([], { timeStyle: "short" });
+
+/** The two buttons say what a press does; the line beside them says the state, in a teacher's words. */
+function drawSession(state) {
+  session = state || null;
+  $("session-joining").hidden = $("session-answers").hidden = !session;
+  if (!session) return;
+  $("session-joining").textContent = session.joining_open ? "Close joining" : "Reopen joining";
+  $("session-joining").setAttribute("aria-pressed", String(!session.joining_open));
+  $("session-answers").textContent = session.answers_open ? "Stop answers" : "Take answers again";
+  $("session-answers").setAttribute("aria-pressed", String(!session.answers_open));
+  const said = [];
+  if (!session.joining_open) {
+    said.push(`Joining closed at ${clock(session.joining_closed_at)}: new students are refused; those who joined keep working.`);
+  }
+  if (!session.answers_open) {
+    said.push(`Answers stopped at ${clock(session.answers_stopped_at)}: students are told their answers are not `
+      + "recorded; what they answered before is kept.");
+  }
+  $("session-status").textContent = said.length ? said.join(" ") : "Open: students may join and answer.";
+  document.body.classList.toggle("session-ended", !session.joining_open || !session.answers_open);
+}
+
+async function setSession(change) {
+  const r = await api("PUT", `/api/classes/${current.code}/session`, { key: current.key, body: change });
+  if (r.status !== 200) {
+    refuse(r, "session-status");
+    return;
+  }
+  drawSession(r.data);
+}
+$("session-joining").addEventListener("click", () => setSession({ joining_open: !session.joining_open }));
+$("session-answers").addEventListener("click", () => setSession({ answers_open: !session.answers_open }));
 
 // the institution login asked at joining, changed for the open class (PUT …/login); the grades file follows
 $("class-login").addEventListener("change", async () => {

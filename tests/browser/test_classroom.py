@@ -132,7 +132,7 @@ def test_a_class_live(browser, live_server, classes, artifacts):
     assert names.locator(".katex").count() >= 2
     assert _answer(cy, NO_CROSS_T) == "incorrect"
     teacher.wait_for_function(
-        f"document.querySelector('.dash-mistake[data-mistake=\"{CROSS}\"] .dash-count')?.textContent === '2×'",
+        f"document.querySelector('.dash-mistake[data-mistake=\"{CROSS}\"] .dash-count')?.textContent === '2 students'",
         timeout=5000)
     teacher.wait_for_function("document.getElementById('dash-counts').textContent.startsWith('3 students · 3 answers')",
                               timeout=5000)

@@ -5,8 +5,8 @@ students are stuck with the sign of U, on the simple pendulum's U two more make 
 pendulum's T two are stuck with the cross term forgotten while three are done.  At 1366×768 (and on a projector
 at 1024×768), without scrolling, the dashboard names the double pendulum's U as the step most are stuck on and
 "The sign of U" (its case kept), totalled over both scenes, as the most common mistake with its count, 6×; one
-click shows the students concerned, once the teacher shows the names (hidden as the page opens, remembered in the
-browser).  Projector mode enlarges the type and shrinks the code, so both cards are whole on a 1024×768 screen.  An answer recorded later shows without
+click shows the students concerned, once the teacher shows the names (hidden as the page opens, and again after
+every reload).  Projector mode enlarges the type, the code (in large type) and its QR code (240 px at least), and both cards stay whole on a 1024×768 screen.  An answer recorded later shows without
 a reload.  And a student's side of a busy lecture hall: /join brings the session cookie, and a join refused
 with 429 is tried again after its Retry-After, the wait shown.
 """
@@ -98,7 +98,7 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
     # the step by its symbol: U as typeset (KaTeX's italic 𝑈), or as plain text before the fonts arrive
     assert stuck.locator(".now-what").inner_text().split()[0] in ("U", "\N{MATHEMATICAL ITALIC CAPITAL U}")
     assert mistake.get_attribute("data-count") == "6"
-    assert "The sign of U" in mistake.inner_text() and "6×" in mistake.inner_text()  # totalled over two scenes
+    assert "The sign of U" in mistake.inner_text() and "6 students" in mistake.inner_text()  # totalled over two scenes
     for selector in ("#now-stuck .now-what", "#now-stuck .now-figure", "#now-mistake .now-what",
                      "#now-mistake .now-figure"):
         _within_first_screen(page, selector, 768)
@@ -113,9 +113,12 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
     assert "names are hidden" in page.locator(".dash-names-note").inner_text()
     page.click("#names-shown")
     assert page.locator("#names-shown").inner_text() == "Hide the students' names"
-    page.reload()  # remembered in this browser
-    page.wait_for_selector("#now-stuck[data-step]")
     assert page.locator("#now-stuck .now-who").is_visible() and page.locator("#dash-students").is_visible()
+    page.reload()  # never remembered: a reload (on a laptop mirrored to a projector) opens with the names hidden
+    page.wait_for_selector("#now-stuck[data-step]")
+    assert page.locator("#now-stuck .now-who").is_hidden() and page.locator("#dash-students").is_hidden()
+    assert page.locator("#names-shown").inner_text() == "Show the students' names"
+    page.click("#names-shown")
     assert page.locator(".dash-names-note").is_hidden()
 
     # one click to the students concerned
@@ -148,7 +151,10 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
     page.screenshot(path=artifacts / "teach-projector-1024.png")
     # projected, the code stays large enough for the back of the room, and going onto the projector hid the names
     code_px = page.eval_on_selector("#class-code", "e => parseFloat(getComputedStyle(e).fontSize)")
-    assert code_px >= 48, code_px
+    assert code_px >= 72, code_px
+    # and the QR code is large enough to scan from the back rows (240 px at least, not the page's 96)
+    qr_px = page.eval_on_selector("#class-qr", "e => e.getBoundingClientRect().width")
+    assert qr_px >= 240, qr_px
     assert page.locator("#now-stuck .now-who").is_hidden() and page.locator("#dash-students").is_hidden()
     stuck = page.locator('#dash-assignments tr[data-assignment="1"] .dash-stuck')
     assert stuck.locator(".dash-names").is_hidden()

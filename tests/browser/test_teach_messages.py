@@ -173,8 +173,8 @@ def test_the_first_screen_says_who_is_done(browser, live_server, classes, artifa
     bars = page.locator(".dash-step .dash-bar-row").all_inner_texts()
     assert sorted(" ".join(b.split()) for b in bars) == ["Students 1 right, 0 wrong", "Students 2 right, 0 wrong"], bars
     said = sorted(page.locator(".dash-step .dash-bar").evaluate_all("bars => bars.map(b => b.getAttribute('aria-label'))"))
-    assert said == ["Students who answered this step: 1 right, 0 wrong (green: right, red: wrong)",
-                    "Students who answered this step: 2 right, 0 wrong (green: right, red: wrong)"], said
+    assert said == ["Students who answered this step, of 2 students: 1 right, 0 wrong (green: right, red: wrong)",
+                    "Students who answered this step, of 2 students: 2 right, 0 wrong (green: right, red: wrong)"], said
     legend = " ".join(page.locator(".dash-legend").inner_text().split())
     assert "counts the students who answered its step" in legend and "stuck: answered, not right yet" in legend
     toggle = page.locator("#dash-steps-all")

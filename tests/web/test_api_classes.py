@@ -66,14 +66,15 @@ def test_a_class_from_creation_to_deletion(client, classes):
     assert summary["students"] == 2 and summary["attempts"] == 3
     kinetic, potential = summary["steps"]
     assert kinetic == {"assignment": 1, "scene": SCENE, "step": "kinetic", "coordinate": None, "correct": 1, "incorrect": 2,
-                       "not_read": 0, "students_done": 1, "students_shown": 0, "students_right": 1, "students_wrong": 1,
+                       "not_read": 0, "students_done": 1, "students_late": 0, "students_shown": 0,
+                       "students_shown_unanswered": 0, "students_right": 1, "students_wrong": 1,
                        "students_equivalent": 0, "mistakes": {"missing_half": 2},
                        "mistake_names": {"missing_half": "the ½ of ½ m v² left out"},
                        "stuck": 1, "students_stuck": ["Bo"]}  # Ada got it right after her mistake
     assert potential["correct"] == potential["incorrect"] == 0
     assert summary["mistakes"] == [{"key": "missing_half", "name": "the ½ of ½ m v² left out", "count": 2,
                                     "steps": [{"assignment": 1, "scene": SCENE, "step": "kinetic", "coordinate": None,
-                                               "count": 2}],
+                                               "count": 2, "students": 2}],
                                     "students": ["Ada", "Bo"]}]
 
     rows = client.get(f"/api/classes/{code}/students", headers=bearer(teacher)).json()["students"]
@@ -172,7 +173,8 @@ def test_refusals_say_what_is_wrong(client, classes):
     summary = client.get(f"/api/classes/{code}/summary", headers=bearer(teacher)).json()
     assert summary["steps"][1] | {"mistakes": None} == {"assignment": 1, "system": "spring", "step": "acceleration", "coordinate": "x",
                                                         "correct": 1, "incorrect": 0, "not_read": 0,
-                                                        "students_done": 1, "students_shown": 0, "students_right": 1,
+                                                        "students_done": 1, "students_late": 0, "students_shown": 0,
+                                                        "students_shown_unanswered": 0, "students_right": 1,
                                                         "students_wrong": 0, "students_equivalent": 0,
                                                         "mistakes": None, "mistake_names": {},
                                                         "stuck": 0, "students_stuck": []}

@@ -34,7 +34,7 @@ from sqlalchemy import case, func, literal, null, select, union_all
 
 from app.service.classroom.database import Database
 from app.service.classroom.models import AttemptRow, HintRow, StudentRow
-from app.service.classroom.reports import BOM, FORMULA_START, assigned_keys, counts, due_utc
+from app.service.classroom.reports import BOM, FORMULA_START, assigned_keys, due_utc, on_own
 from app.service.classroom.store import DONE, NOT_READ
 
 POINTS = 100  # an assignment's score is out of this many points
@@ -98,7 +98,7 @@ def gradebook(db: Database, class_id: int, series: list[dict[str, Any]], login_c
                 count["right"] += right_id is not None
                 count["shown"] += seen is not None
                 # on their own: right by the due time, and the step not shown before the first right answer
-                own = counts(right_at, seen, each["due"])
+                own = on_own(right_at, seen, each["due"])
                 count["own"] += own
                 count["first_try"] += own and first_id == right_id
             score: float | None = round(POINTS * count["own"] / head["steps"], 1) if head["steps"] else 0.0

@@ -10,7 +10,8 @@ answer's text and when, and, when the page sent one, the attempt's id (unique
 per student: a retry records nothing new) with the verdict it was answered, and the assignment it was for.
 A hint is a step's answer shown to a student ("Show this step"), once per student, assignment and step.
 A class's recovery code (shown once at creation) is kept as its SHA-256 only.  A class may ask its students for their
-institution login (``login_column``: the header the LMS matches grades by), kept beside the pseudonym.  Times are naive UTC.
+institution login (``login_column``: the header the LMS matches grades by), kept beside the pseudonym.  Its instructor
+may close joining and stop answers (``joining_closed_at``, ``answers_stopped_at``), and reopen either.  Times are naive UTC.
 """
 
 from __future__ import annotations
@@ -38,6 +39,10 @@ class ClassRow(Base):
     # the header of the institution login students give at joining ("SIS Login ID", "username", "Login"; None: not
     # asked), for the grades to import into an LMS (migration 0008)
     login_column: Mapped[str | None] = mapped_column(String(20), nullable=True)
+    # the session's ends, kept until reopened (migration 0009): when the instructor closed joining (no new
+    # student; those joined keep working) and when they stopped answers (none recorded; the record kept)
+    joining_closed_at: Mapped[datetime | None] = mapped_column(DateTime, nullable=True)
+    answers_stopped_at: Mapped[datetime | None] = mapped_column(DateTime, nullable=True)
 
 
 class ClassAssignmentRow(Base):

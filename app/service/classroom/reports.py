@@ -42,16 +42,16 @@ BOM = "\ufeff"  # a spreadsheet opened by a double click reads the file as UTF-8
 SHOWN = "shown"  # a row of the tallies that is a step shown ("Show this step"), not an answer
 
 
-def on_own(right_at: datetime | None, shown_at: datetime | None) -> bool:
-    """A step done on one's own: answered right, and not shown before the first right answer.  The one rule the
-    dashboard's "done" and the gradebook's score share (the score also asks for the due time)."""
-    return right_at is not None and (shown_at is None or shown_at > right_at)
+def on_own(right_at: datetime | None, shown_at: datetime | None, due: Any = None) -> bool:
+    """A step done on one's own: answered right, not shown before the first right answer, and that answer not
+    after the due time (``due``: None for an undated assignment).  The one rule the dashboard's "done", the
+    gradebook's score and the student's own page ("2 of 8 steps done") share."""
+    return right_at is not None and (shown_at is None or shown_at > right_at) and not is_late(right_at, due)
 
 
-def counts(right_at: datetime | None, shown_at: datetime | None, due: Any) -> bool:
-    """A step the grade counts: done on one's own (``on_own``) and that first right answer by the due time.  The
-    gradebook's score and the student's own page ("2 of 8 steps done") both read it from here."""
-    return on_own(right_at, shown_at) and right_at is not None and not is_late(right_at, due)
+def late_only(right_at: datetime | None, shown_at: datetime | None, due: Any) -> bool:
+    """Right on one's own, but only after the due time: recorded, not counted (neither done nor stuck)."""
+    return right_at is not None and on_own(right_at, shown_at) and is_late(right_at, due)
 
 
 def due_utc(when: Any) -> datetime | None:
@@ -85,7 +85,8 @@ def _step_entry(key: Key, series: list[dict[str, Any]]) -> dict[str, Any]:
     kind = "system" if item in systems else "scene"
     number = next((a["n"] for a in series if a["id"] == assignment_id), None)
     return {"assignment": number, kind: item, "step": step, "coordinate": coordinate, "correct": 0, "incorrect": 0,
-            "not_read": 0, "students_done": 0, "students_shown": 0, "students_right": 0, "students_wrong": 0,
+            "not_read": 0, "students_done": 0, "students_late": 0, "students_shown": 0, "students_shown_unanswered": 0,
+            "students_right": 0, "students_wrong": 0,
             "students_equivalent": 0, "mistakes": {}, "mistake_names": {}}
 
 
@@ -128,16 +129,16 @@ def _item_of(entry: dict[str, Any]) -> dict[str, Any]:
 
 def _per_assignment(
     series: list[dict[str, Any]], names: dict[int, str], tried: dict[Key, set[int]], finished: dict[Key, set[int]],
-    shown: dict[Key, set[int]],
+    shown: dict[Key, set[int]], late: dict[Key, set[int]],
 ) -> list[dict[str, Any]]:
-    """Each assignment of the series: its steps, the students done with all of them on their own, those through
-    every step with one shown at least, and those stuck on one."""
+    """Each assignment of the series: its steps, the students done with all of them on their own by the due time,
+    those through every step with one shown (or right only late) at least, and those stuck on one."""
     out = []
     for each in series:
         keys = [k for k in assigned_keys([each])]
         done = {s for s in names if keys and all(s in finished[k] for k in keys)}
-        through = {s for s in names if keys and all(s in finished[k] | shown[k] for k in keys)} - done
-        stuck = {s for k in keys for s in tried[k] - finished[k] - shown[k]}
+        through = {s for s in names if keys and all(s in finished[k] | shown[k] | late[k] for k in keys)} - done
+        stuck = {s for k in keys for s in tried[k] - finished[k] - shown[k] - late[k]}
         out.append({"n": each["n"], "title": each["title"], "due": each["due"], "steps": len(keys),
                     "students_done": sorted(names[s] for s in done),
                     "students_shown": sorted(names[s] for s in through),
@@ -152,7 +153,8 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
     ``steps``: the assigned steps first (in the series' order), then any other tried; each with its assignment's
     number, its counts, the students stuck on it (tried, not done yet) and its named mistakes.  ``mistakes``: each
     named mistake totalled over every step and scene it was made in (mistakes are totalled by their words, so the
-    same slip in two scenes is one line), most common first, with the steps and the students concerned."""
+    same slip in two scenes is one line), the one most students made first, with its answers (``count``), the
+    steps (each with its answers and students) and the students concerned."""
     rows = _tallies(db, class_id)
     steps: dict[Key, dict[str, Any]] = {key: _step_entry(key, series) for key in assigned_keys(series)}
     names = {student_id: name for student_id, name, *_ in rows}
@@ -191,16 +193,22 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
                 entry["mistake_names"][mistake] = for_teacher(text)
     # done: right on one's own (the gradebook's rule); shown: "Show this step" pressed before any right answer
     shown: dict[Key, set[int]] = defaultdict(set)
+    late: dict[Key, set[int]] = defaultdict(set)  # right on their own, but after the due time: not counted
+    dues = {each["id"]: each["due"] for each in series}
     for (student_id, key), at in right_at.items():
-        (finished if on_own(at, shown_at.get((student_id, key))) else shown)[key].add(student_id)
+        seen, due = shown_at.get((student_id, key)), dues.get(key[0])
+        (finished if on_own(at, seen, due) else late if late_only(at, seen, due) else shown)[key].add(student_id)
     for student_id, key in shown_at:
-        if student_id not in finished[key]:
+        if student_id not in finished[key] | late[key]:
             shown[key].add(student_id)
     totals: dict[str, dict[str, Any]] = {}
     for key, entry in steps.items():
-        stuck = tried[key] - finished[key] - shown[key]
+        stuck = tried[key] - finished[key] - shown[key] - late[key]
         entry["students_done"] = len(finished[key])
+        entry["students_late"] = len(late[key])
         entry["students_shown"] = len(shown[key])
+        # shown without an answer yet: among the shown, but in neither of the bar's counts (it counts answers)
+        entry["students_shown_unanswered"] = len(shown[key] - tried[key])
         # the bars count students: each once, by their best answer (right, else wrong)
         entry["students_right"] = len({s for (s, k) in right_at if k == key})
         entry["students_wrong"] = len(wrong[key] - {s for (s, k) in right_at if k == key})
@@ -214,14 +222,15 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
             total = totals.setdefault(words or mistake, {"key": mistake, "name": words, "count": 0, "steps": [],
                                                          "students": set()})
             total["count"] += count
-            total["steps"].append(_item_of(entry) | {"count": count})
+            total["steps"].append(_item_of(entry) | {"count": count, "students": len(by_mistake[key][mistake])})
             total["students"] |= by_mistake[key][mistake]
-    mistakes = sorted(totals.values(), key=lambda t: (-t["count"], t["name"] or t["key"]))
+    # the mistake most students made first (then the most answers): a student who makes it twice is one student
+    mistakes = sorted(totals.values(), key=lambda t: (-len(t["students"]), -t["count"], t["name"] or t["key"]))
     for total in mistakes:
         total["students"] = sorted(names[s] for s in total["students"])
-        total["steps"].sort(key=lambda s: -s["count"])
+        total["steps"].sort(key=lambda s: (-s["students"], -s["count"]))
     return {"students": len(names), "attempts": attempts,
-            "assignments": _per_assignment(series, names, tried, finished, shown),
+            "assignments": _per_assignment(series, names, tried, finished, shown, late),
             "steps": list(steps.values()), "mistakes": mistakes}
 
 
@@ -229,7 +238,8 @@ def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[
     """Each student's progress (from one snapshot): attempts, steps done of the series', and per step tried its
     tally (with its assignment's number).  A step is ``done`` once answered right; ``shown`` when "Show this step"
     was pressed before the first right answer (or with none yet): a step done but shown does not count toward the
-    grade, so ``own`` counts the assigned steps done on one's own (``on_own``, the gradebook's rule)."""
+    grade, so ``own`` counts the assigned steps done on one's own by the due time (``on_own``, the gradebook's
+    rule), and ``late`` those right on one's own only after it (a step's tally says ``late`` likewise)."""
     people: dict[int, tuple[str, Any, str | None]] = {}
     per: dict[int, dict[Key, dict[str, Any]]] = defaultdict(dict)
     shown_at: dict[tuple[int, Key], datetime] = {}
@@ -258,14 +268,15 @@ def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[
     for student_id, (name, joined, login) in sorted(people.items(), key=lambda p: (p[1][1], p[0])):
         tallies = list(per.get(student_id, {}).values())
         for t in tallies:
-            seen_at = shown_at.get((student_id, t["_key"]))
+            seen_at, due = shown_at.get((student_id, t["_key"])), dues.get(t["_key"][0])
             t["shown"] = seen_at is not None and not on_own(t["_right"], seen_at)
-            # what the grade counts (right on one's own by the due time); late: right on one's own, after it
-            t["counted"] = counts(t["_right"], seen_at, dues.get(t["_key"][0]))
-            t["late"] = on_own(t["_right"], seen_at) and not t["counted"]
+            # what the grade counts (right on one's own by the due time); late: right on one's own, only after it
+            t["counted"] = on_own(t["_right"], seen_at, due)
+            t["late"] = late_only(t["_right"], seen_at, due)
         finished = {t["_key"] for t in tallies if t["done"]}
-        own = {t["_key"] for t in tallies if on_own(t["_right"], shown_at.get((student_id, t["_key"])))}
-        counted = {t["_key"] for t in tallies if t["counted"]}
+        # done as the grade counts it; right on their own only late, apart
+        own = {t["_key"] for t in tallies if t["counted"]}
+        late = {t["_key"] for t in tallies if t["late"]}
         # a step shown and not answered yet is shown too
         seen = {t["_key"] for t in tallies if t["shown"]} | {k for (s, k) in shown_at if s == student_id} - own
         steps = [{k: v for k, v in t.items() if not k.startswith("_")} | {"last": t["last"].isoformat() + "Z"}
@@ -278,7 +289,8 @@ def students(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[
             "not_read": sum(s["not_read"] for s in steps),
             "done": len(finished & assigned) if assigned else len(finished),
             "own": len(own & assigned) if assigned else len(own),
-            "counted": len(counted & assigned) if assigned else len(counted),
+            "counted": len(own & assigned) if assigned else len(own),
+            "late": len(late & assigned) if assigned else len(late),
             "shown": len(seen & assigned) if assigned else len(seen),
             "assigned": len(assigned),
             "steps": steps,

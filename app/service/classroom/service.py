@@ -19,7 +19,7 @@ import orjson
 
 from app.engine.check import KEYED
 from app.engine.mistakes import RULES
-from app.errors import NoKey, Refused, WrongKey
+from app.errors import ClassClosed, NoKey, Refused, WrongKey
 from app.service.checking import Checking, declared
 from app.service.classroom import grades, keys, reports, store
 from app.service.classroom.assignments import checked_due, checked_items, find_target
@@ -145,6 +145,14 @@ class Classroom:
         await self._db(store.set_login_column, who.class_id, column)
         return {"code": who.code, "login_column": column}
 
+    async def set_session(
+        self, code: str, key: str | None, joining_open: bool | None, answers_open: bool | None
+    ) -> dict[str, Any]:
+        """Close or reopen joining, stop or reopen answers (None: as it is); kept in the class's record, so every
+        replica of the server refuses alike.  What was recorded stays."""
+        who = await self._db(self._who, code, key, True)
+        return {"code": who.code} | await self._db(store.set_session, who.class_id, joining_open, answers_open)
+
     async def assign(self, code: str, key: str | None, items: list[dict[str, Any]]) -> dict[str, Any]:
         """Set the items of the first assignment of the series (the single assignment of before)."""
         who = await self._db(self._who, code, key, True)
@@ -249,7 +257,8 @@ class Classroom:
             who = store.access(db, code, key)
             found = store.series(db, who.class_id)
             seen: dict[str, Any] = {"code": who.code, "title": who.title, "login_column": who.login_column,
-                                    "assignment": found[0]["items"] if found else [], "assignments": public(found)}
+                                    "assignment": found[0]["items"] if found else [], "assignments": public(found),
+                                    "session": store.class_session(db, who.class_id)}
             if who.teacher:
                 return seen | {"role": "instructor"}
             progress = [s for s in reports.students(db, who.class_id, found)["students"] if s["name"] == who.name]
@@ -281,6 +290,8 @@ class Classroom:
         this = (name, step, recorded, answer.strip())
         if attempt_id is not None and (first := await self._db(store.recorded, who, attempt_id)) is not None:
             return _same_attempt(first, this, attempt_id)
+        if who.answers_stopped:  # an answer already recorded is answered as it was (above); a new one is refused
+            raise ClassClosed(store.ANSWERS_STOPPED)
         await self.student_checks.take(f"{who.class_id}:{who.student}")
         await self.class_checks.take(who.code)
         # the student is the unit of fairness, their class's budget of check slots the bound (not their network's)
@@ -317,6 +328,8 @@ class Classroom:
     ) -> dict[str, Any]:
         """Record that a student was shown a step's answer ("Show this step"): a hint used, in the gradebook."""
         who, found = await self._db(self._with_series, code, key, False)
+        if who.answers_stopped:  # a shown step is recorded as a hint used: refused with the answers
+            raise ClassClosed(store.ANSWERS_STOPPED)
         assigned, item = find_target(found, target, step, coordinate)
         if assigned is None:
             raise Refused("nothing is assigned in this class: a shown step is recorded for an assigned step", step,

@@ -19,7 +19,7 @@ from typing import Any
 from sqlalchemy import delete, func, select
 from sqlalchemy.exc import IntegrityError
 
-from app.errors import Refused, UnknownAssignment, UnknownClass, WrongKey
+from app.errors import ClassClosed, Refused, UnknownAssignment, UnknownClass, WrongKey
 from app.service.classroom import keys
 from app.service.classroom.database import Database, delete_class, now
 from app.service.classroom.logins import checked_login
@@ -68,6 +68,8 @@ class Access:
     name: str | None = None
     login_column: str | None = None  # the institution login the class asks its students for (None: none)
     login: str | None = None  # a student's own institution login, when they gave one
+    joining_closed: bool = False  # the instructor closed joining: no new student (those joined keep working)
+    answers_stopped: bool = False  # the instructor stopped answers: none recorded (the record kept)
 
     @property
     def teacher(self) -> bool:
@@ -120,17 +122,23 @@ def access(db: Database, code: str, key: str) -> Access:
     normal = keys.normal_code(code) or ""
     with db.session() as session:
         found = session.execute(
-            select(ClassRow.id, ClassRow.code, ClassRow.title, ClassRow.teacher_hash, ClassRow.login_column)
+            select(ClassRow.id, ClassRow.code, ClassRow.title, ClassRow.teacher_hash, ClassRow.login_column,
+                   ClassRow.joining_closed_at, ClassRow.answers_stopped_at)
             .where(ClassRow.code == normal)
         ).first()
         student = session.execute(
             select(StudentRow.id, StudentRow.class_id, StudentRow.name).where(StudentRow.key_hash == wanted)
         ).first()
     teacher = hmac.compare_digest(found.teacher_hash if found else keys.NO_CLASS_HASH, wanted)
+    # read from the database at each request: every replica of the server enforces what the instructor set
+    joining_closed = bool(found and found.joining_closed_at)
+    answers_stopped = bool(found and found.answers_stopped_at)
     if found and teacher:
-        return Access(found.id, found.code, found.title, login_column=found.login_column)
+        return Access(found.id, found.code, found.title, login_column=found.login_column,
+                      joining_closed=joining_closed, answers_stopped=answers_stopped)
     if found and student and student.class_id == found.id:
-        return Access(found.id, found.code, found.title, student.id, student.name, found.login_column)
+        return Access(found.id, found.code, found.title, student.id, student.name, found.login_column,
+                      joining_closed=joining_closed, answers_stopped=answers_stopped)
     raise WrongKey("this key does not open this class (check the class code and the key)")
 
 
@@ -197,6 +205,41 @@ def set_login_column(db: Database, class_id: int, column: str | None) -> None:
             row.login_column = column
 
 
+JOINING_CLOSED = ("Your teacher has closed joining for this class: ask them to open it again. A student who has "
+                  "joined already opens their record with “I joined before on another device” and their recovery code.")
+ANSWERS_STOPPED = ("Your teacher has stopped answers for this class: this answer is not recorded. Your answers so far "
+                   "are kept; answers are taken again when your teacher reopens them.")
+
+
+def set_session(db: Database, class_id: int, joining_open: bool | None, answers_open: bool | None) -> dict[str, Any]:
+    """Close or reopen joining, stop or reopen answers (None: left as it is); the class's state afterwards, with the
+    times each was closed (ISO 8601, UTC; None while open).  Closing what is closed keeps its first time."""
+    with db.session() as session:
+        row = session.get(ClassRow, class_id)
+        if row is None:
+            raise WrongKey("this key does not open this class (check the class code and the key)")
+        if joining_open is not None:
+            row.joining_closed_at = None if joining_open else row.joining_closed_at or now()
+        if answers_open is not None:
+            row.answers_stopped_at = None if answers_open else row.answers_stopped_at or now()
+        return session_state(row)
+
+
+def session_state(row: ClassRow) -> dict[str, Any]:
+    """Whether the class takes new students and answers, and since when it does not."""
+    iso = lambda at: None if at is None else at.isoformat() + "Z"  # noqa: E731
+    return {"joining_open": row.joining_closed_at is None, "joining_closed_at": iso(row.joining_closed_at),
+            "answers_open": row.answers_stopped_at is None, "answers_stopped_at": iso(row.answers_stopped_at)}
+
+
+def class_session(db: Database, class_id: int) -> dict[str, Any]:
+    with db.session() as session:
+        row = session.get(ClassRow, class_id)
+        if row is None:
+            raise WrongKey("this key does not open this class (check the class code and the key)")
+        return session_state(row)
+
+
 def new_student_code(db: Database, class_id: int, name: str) -> str:
     """A new recovery code for a student of the class (their teacher gives it: the old one stops working)."""
     recovery = keys.new_recovery_code(keys.STUDENT_RECOVERY_LENGTH)
@@ -211,10 +254,13 @@ def new_student_code(db: Database, class_id: int, name: str) -> str:
 def _add_student(db: Database, normal: str, name: str, login: str | None, student_key: str, recovery: str) -> Access:
     with db.session() as session:
         found = session.execute(
-            select(ClassRow.id, ClassRow.title, ClassRow.login_column).where(ClassRow.code == normal)
+            select(ClassRow.id, ClassRow.title, ClassRow.login_column, ClassRow.joining_closed_at)
+            .where(ClassRow.code == normal)
         ).first()
         if found is None:
             raise UnknownClass(f"No class has the code {normal}. Check the code on the board.")
+        if found.joining_closed_at is not None:
+            raise ClassClosed(JOINING_CLOSED)
         kept = checked_login(found.login_column, login)
         # a pseudonym equal to one of the class's by case folding and NFKC is taken too ("Grace" and "grace")
         wanted = pseudonym_key(name)

@@ -18,7 +18,7 @@ from app.settings import Settings
 from tests.postgres import postgres_server  # noqa: F401 - the session fixture
 
 TABLES = {"classes", "students", "assignments", "attempts", "class_assignments", "hints", "alembic_version"}
-HEAD = "0008"  # the newest revision
+HEAD = "0009"  # the newest revision
 
 
 @pytest.fixture(params=["sqlite", "postgresql"])
