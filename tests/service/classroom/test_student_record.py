@@ -58,7 +58,8 @@ def test_a_right_answer_after_the_due_time_is_late_and_not_counted(db):
     [week] = store.series(db, class_id)
     store.record(db, chloe, "simple-pendulum", "kinetic", None, "correct", None, RIGHT_T, assignment_id=week["id"])
     [row] = students(db, class_id, store.series(db, class_id))["students"]
-    assert (row["done"], row["own"], row["counted"]) == (1, 1, 0)
+    # right (done), but neither done on their own by the due time (own, counted: the grade's rule) nor stuck: late
+    assert (row["done"], row["own"], row["counted"], row["late"]) == (1, 0, 0, 1)
     [step] = row["steps"]
     assert (step["counted"], step["late"], step["shown"]) == (False, True, False)
 
