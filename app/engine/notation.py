@@ -19,7 +19,7 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine.constraints import ConstraintForce
+from app.engine.constraints import ConstraintForce, cartesian_symbols
 from app.engine.derive import Derivation
 from app.engine.dimensions import Dims, add_dims, dimension, kind_of_unit, system_dimensions, unit_text
 from app.engine.names import MASS_MATRIX, SUBSCRIPT, latex, prose, unicode
@@ -414,10 +414,25 @@ def _symmetries(d: Derivation, dims: dict[sp.Symbol, Dims], energy: str) -> list
     return rows
 
 
+_GREEK_AXES = {"x": "xi", "y": "eta", "z": "zeta"}
+
+
+def cartesian_names(names: list[str], taken: set[str]) -> dict[str, str]:
+    """The name each body's Cartesian component is printed by (x1 → x1, or → xi1): x, y, z, or ξ, η, ζ for all of
+    them where the system already prints one of their names (the pulley's coordinates are its end masses' heights
+    y₁, y₂: prof-h 2), so that ẏ₁ never means two things. ``taken``: the LaTeX the document prints for its own
+    names. One home: the constraint steps (report_members) and the Symbols table both read it."""
+    greek = any(latex(n) in taken or n in taken for n in names)
+    return {n: (_GREEK_AXES[n[0]] + n[1:] if greek else n) for n in names}
+
+
 def _cartesian(d: Derivation, forces: tuple[ConstraintForce, ...]) -> list[dict[str, Any]]:
     """The Cartesian coordinates the constraints are written in: x across, y, z up, of each body."""
     known = {*d.table.q, *d.table.params, d.table.t}
     names = sorted({s.name for f in forces for s in f.g.free_symbols if s not in known})
+    # decided over every body's three components, as the constraint steps decide it (y₁ taken makes z₁ ζ₁ too)
+    every = [s.name for triple in cartesian_symbols(len(d.system.particles)) for s in triple]
+    printed = cartesian_names(every, {latex(s.name) for s in (*d.table.q, *d.table.params)})
     rows = []
     for name in names:
         axis, number = name[0], name[1:]
@@ -425,7 +440,8 @@ def _cartesian(d: Derivation, forces: tuple[ConstraintForce, ...]) -> list[dict[
         index = int(number) - 1 if number.isdigit() else 0
         body = d.system.particles[index] if index < len(d.system.particles) else None
         whose = f"the {body.label or 'body ' + (number or '1')}" if body is not None else "the body"
-        rows.append(_row(latex(name), unicode(name), f"Cartesian {axis} of {whose}", "m", "derived"))
+        shown = printed.get(name, name)
+        rows.append(_row(latex(shown), unicode(shown), f"Cartesian {axis} of {whose}", "m", "derived"))
     return rows
 
 

@@ -6,12 +6,13 @@ import sympy as sp
 
 from app.engine import meaning, notation
 from app.engine.breaking import _group
-from app.engine.constraints import AXES, ConstraintForce
+from app.engine.constraints import ConstraintForce
 from app.engine.constraints import display as constraint_display
 from app.engine.constraints import positive as constraint_positive
 from app.engine.derive import Derivation
 from app.engine.forms import gathered
 from app.engine.multipliers import Multipliers, derived_multipliers
+from app.engine.names import latex
 from app.engine.notation import CONSTRAINT
 from app.engine.report import Printer, _mapping_step, _step, display
 from app.engine.transform import Transformed, collected, compact
@@ -21,14 +22,12 @@ def _cartesian_printer(m: Multipliers, pr: Printer) -> Printer:
     """``pr`` with the Cartesian names: x, ẋ, ẍ (x₁, ẋ₁, ẍ₁ for several bodies; ξ₁, η₁, ζ₁ where the system
     already prints x₁, y₁ or z₁) and λ₁, λ₂."""
     names = dict(pr.names)
-    # body i's components as x_i, y_i, z_i; where the system already prints one of those names (the pulley's
-    # coordinates are its end masses' heights y₁, y₂: prof-h 2), as ξ_i, η_i, ζ_i, so that ẏ₁ never means two things
-    taken = set(pr.names.values())
-    letters = dict(zip(AXES, AXES, strict=True))
-    if any(f"{s.name[0]}_{{{s.name[1:]}}}" in taken or s.name in taken for s in m.positions):
-        letters = dict(zip(AXES, (r"\xi", r"\eta", r"\zeta"), strict=True))
+    # body i's components as x_i, y_i, z_i, or ξ_i, η_i, ζ_i where the system already prints one of those names
+    # (notation.cartesian_names, the one rule the Symbols table reads too)
+    printed = notation.cartesian_names([s.name for s in m.positions], set(pr.names.values()))
     for s, v, a in zip(m.positions, m.velocities, m.accelerations, strict=True):
-        letter, index = letters[s.name[0]], s.name[1:]
+        shown = printed[s.name]
+        letter, index = latex(shown.rstrip("0123456789")), s.name[1:]
         sub = f"_{{{index}}}" if index else ""
         names |= {s: f"{letter}{sub}", v: rf"\dot{{{letter}}}{sub}", a: rf"\ddot{{{letter}}}{sub}"}
     names |= {lam: notation.multiplier(a)[0] for a, lam in enumerate(m.multipliers, start=1)}

@@ -278,7 +278,7 @@ PULLEY: dict[str, str] = {
     "h-vs-e": _h_is_e("The positions do not depend on t"),
     **_hamiltonian("the kinetic energy written with the inverse mass matrix, plus the weights"),
     "equilibria": "The generalized forces are constant: with m₁ = m₂ = M/2 they vanish and every position is an equilibrium; otherwise (at the default masses, too) there is none.",
-    "constraints": "With z₁, z₂, z₃ the heights of m₁, m₂ and M (z₁ = y₁, z₂ = y₂, z₃ = Y, all in metres), the string's length fixes z₁ + z₂ + 2 z₃ = −2c, the constant c placing M below the end masses.",
+    "constraints": "With ζ₁, ζ₂, ζ₃ the heights of m₁, m₂ and M (ζ₁ = y₁, ζ₂ = y₂, ζ₃ = Y, all in metres), the string's length fixes ζ₁ + ζ₂ + 2ζ₃ = −2c, the constant c placing M below the end masses.",
     "multiplier-lagrangian": "Three free masses, each pulled up by the string: λ on each end mass, 2λ on the movable pulley (∂𝒞/∂z₃ = 2).",
     "multiplier-equation": "The string's length is fixed, so the accelerations obey z̈₁ + z̈₂ + 2 z̈₃ = 0: each mass's inertia enters through 1/m.",
     "multiplier": "No velocities enter: the tension is constant while the masses move.",

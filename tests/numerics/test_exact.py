@@ -79,7 +79,7 @@ def test_linear_systems_are_recognised_and_solved_by_their_normal_modes():
 
     # coupled oscillators, m = 2, k = 3, kappa = 0.7: from x1 = 1, x2 = 0 at rest the two modes, ω₁² = k/m (in
     # phase) and ω₂² = (k + 2κ)/m (opposite), each carry half: x₁ = (cos ω₁t + cos ω₂t)/2, x₂ = (cos ω₁t − cos ω₂t)/2
-    k = np.array([2.0, 3.0, 0.7])
+    k = np.array([2.0, 3.0, 0.7, 1.0])  # m, k, kappa, d (the rest spacing)
     system = system_for("coupled-oscillators")
     found = exact_solution(system, k, np.array([1.0, 0.0, 0.0, 0.0]))
     assert found is not None and "normal modes" in found[1]

@@ -47,7 +47,7 @@ def test_scene_modes_follow_the_parameters(client):
     r = client.post("/api/scenes/coupled-oscillators/modes-at", json={"parameters": {"kappa": 0.1}})
     assert r.status_code == 200
     (eq,) = r.json()
-    assert eq["parameters"] == {"m": 1.0, "k": 10.0, "kappa": 0.1}
+    assert eq["parameters"] == {"m": 1.0, "k": 10.0, "kappa": 0.1, "d": 1.0}
     assert [m["predicted"] for m in eq["modes"]] == pytest.approx([10**0.5, 10.2**0.5])
     assert eq["modes"][1]["shape"] == pytest.approx({"x1": -1.0, "x2": 1.0})
     for m in eq["modes"]:

@@ -101,7 +101,7 @@ def test_hostile_text_runs_no_job_and_a_text_typeset_once_is_answered_from_the_c
 def spy_key(service):
     from app.service.user_checks import spec_key
 
-    kinds = service.typesetter._scenes[CORPUS["scene"]]
+    kinds, _absent = service.typesetter._scenes[CORPUS["scene"]]  # (names and kinds, names absent with why)
     return spec_key("typeset", CORPUS["step"], kinds, "m1*g")
 
 

@@ -311,4 +311,5 @@ def test_words_a_professor_flagged_read_as_a_textbook_does(client):
     # prof-g 34, 33: λ is itself the tension; 2 metres, not "2 m" on a page of masses
     pulley = html.unescape(page(client, "pulley"))
     assert "λ itself is the tension: the string's upward pull" in pulley and "λ times ∂𝒞" not in pulley
-    assert "the constant, 2 metres," in pulley and "constant 2 m " not in pulley
+    # the string's constant is a named length now (c), with the heights' letters the formula prints (ζ)
+    assert "ζ₁ + ζ₂ + 2ζ₃ = −2c, the constant c placing M" in pulley and "constant 2 m " not in pulley

@@ -83,3 +83,10 @@ def test_the_radicand_named_in_the_double_pendulums_frequencies_is_in_its_symbol
     pendulum = units(client.get("/scenes/double-pendulum").text)
     assert pendulum["\\Delta"] == "that of the square of the other term in its bracket"
     assert "\\Delta" not in units(client.get("/scenes/coupled-oscillators").text)
+
+
+def test_the_symbols_table_names_the_cartesian_letters_the_constraint_steps_print(client):
+    # the pulley's coordinates are y₁, y₂, so its bodies' heights print as ζ₁, ζ₂, ζ₃: the table says ζ, never z
+    body = client.get("/scenes/pulley").text
+    table = body[body.index("Symbols") : body.index("</table>", body.index("Symbols"))]
+    assert "Cartesian z of the left mass" in table and r'data-tex="\zeta_{1}"' in table and 'data-tex="z_{1}"' not in table
