@@ -294,6 +294,9 @@ class MistakeTotal(BaseModel):
     count: int = Field(description="Incorrect answers with this mistake, over every step and scene.")
     steps: list[dict[str, Any]] = Field(description="Where it was made: `scene` or `system`, step, coordinate, count.")
     students: list[str] = Field(description="The students who made it, in alphabetical order.")
+    students_since_right: list[str] = Field(
+        [], description="Of them, those who have since answered right every step where they made it, alphabetical."
+    )
 
 
 class AssignmentProgress(BaseModel):

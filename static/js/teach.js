@@ -271,12 +271,14 @@ function byStuck(steps) {
 
 /** One click to the students concerned: a disclosure listing their names. */
 const opened = new Set(); // the lists of names the instructor opened: they stay open when the poll redraws
-function whoList(names, what, where) {
+function whoList(names, what, where, since = []) {
   if (!names.length) return null;
   const id = `${where}|${what}`;
+  // a mistake's list marks who has since answered right (instr-j 11: it mixed them with those still wrong)
+  const said = names.map((n) => (since.includes(n) ? `${n} (right since)` : n));
   const box = el("details", { className: "now-who" },
     el("summary", { text: `${what} (${names.length})` }),
-    el("p", { className: "now-names", text: names.join(", ") }));
+    el("p", { className: "now-names", text: said.join(", ") }));
   box.open = opened.has(id);
   box.addEventListener("toggle", () => (box.open ? opened.add(id) : opened.delete(id)));
   return box;
@@ -306,7 +308,7 @@ async function drawNow(summary) {
       el("p", { className: "now-what" }, el("strong", { text: mistake.name || mistakeWords(mistake.key) })),
       el("p", { className: "now-figure" }, `${madeBy(mistake)} · in `, typeset(el("span"), label.tex),
         el("span", { className: "dash-where", text: ` ${label.where}${mistake.steps.length > 1 ? ` and ${mistake.steps.length - 1} more` : ""}` })),
-      whoList(mistake.students, "Show the students who made it", "now"));
+      whoList(mistake.students, "Show the students who made it", "now", mistake.students_since_right || []));
   } else {
     delete $("now-mistake").dataset.count;
     body.replaceChildren(el("p", { className: "help", text: "No named mistake so far." }));
@@ -424,7 +426,7 @@ async function drawMistakes(summary) {
       el("span", { className: "dash-count", text: madeBy(mistake) }),
       el("strong", { text: mistake.name || mistakeWords(mistake.key) }),
       el("span", { text: " in " }), ...pieces,
-      whoList(mistake.students, "Show the students", `mistake|${mistake.key}`)));
+      whoList(mistake.students, "Show the students", `mistake|${mistake.key}`, mistake.students_since_right || [])));
   }
   if (rest.length) {
     // the less common mistakes, said as a count, one click from the list (open through the poll's redraws)

@@ -75,7 +75,7 @@ def test_a_class_from_creation_to_deletion(client, classes):
     assert summary["mistakes"] == [{"key": "missing_half", "name": "the ½ of ½ m v² left out", "count": 2,
                                     "steps": [{"assignment": 1, "scene": SCENE, "step": "kinetic", "coordinate": None,
                                                "count": 2, "students": 2}],
-                                    "students": ["Ada", "Bo"]}]
+                                    "students": ["Ada", "Bo"], "students_since_right": ["Ada"]}]
 
     rows = client.get(f"/api/classes/{code}/students", headers=bearer(teacher)).json()["students"]
     assert [(s["name"], s["attempts"], s["done"], s["assigned"]) for s in rows] == [("Ada", 2, 1, 2), ("Bo", 1, 0, 2)]

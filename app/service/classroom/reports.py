@@ -220,13 +220,17 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
         for mistake, count in entry["mistakes"].items():
             words = entry["mistake_names"].get(mistake, "")
             total = totals.setdefault(words or mistake, {"key": mistake, "name": words, "count": 0, "steps": [],
-                                                         "students": set()})
+                                                         "students": set(), "still": set()})
             total["count"] += count
             total["steps"].append(_item_of(entry) | {"count": count, "students": len(by_mistake[key][mistake])})
             total["students"] |= by_mistake[key][mistake]
+            # still without a right answer on a step where they made it (instr-j 11: the list mixed them with
+            # the students who have since put it right)
+            total["still"] |= by_mistake[key][mistake] - {s for (s, k) in right_at if k == key}
     # the mistake most students made first (then the most answers): a student who makes it twice is one student
     mistakes = sorted(totals.values(), key=lambda t: (-len(t["students"]), -t["count"], t["name"] or t["key"]))
     for total in mistakes:
+        total["students_since_right"] = sorted(names[s] for s in total["students"] - total.pop("still"))
         total["students"] = sorted(names[s] for s in total["students"])
         total["steps"].sort(key=lambda s: (-s["students"], -s["count"]))
     return {"students": len(names), "attempts": attempts,

@@ -128,3 +128,20 @@ def test_mistakes_count_students_and_a_step_shown_unanswered_is_said_apart(tmp_p
         assert kinetic["students_right"] + kinetic["students_wrong"] == 1  # the bar: Ada alone answered
     finally:
         db.stop()
+
+
+def test_a_mistake_says_who_has_since_put_it_right(tmp_path):
+    db, code, class_id = _class(tmp_path)
+    try:
+        bo, cy = (store.join(db, code, name)[1] for name in ("Bo", "Cy"))
+        first = store.series(db, class_id)[0]["id"]
+        for who in (bo, cy):
+            store.record(db, who, "simple-pendulum", "potential", None, "incorrect", "potential.sign",
+                         "m*g*R*cos(theta)", "The sign of U", assignment_id=first)
+        # Cy then answers U right: still among those who made it, and said to have put it right since
+        store.record(db, cy, "simple-pendulum", "potential", None, "correct", None, "-m*g*R*cos(theta)",
+                     assignment_id=first)
+        [mistake] = summary(db, class_id, store.series(db, class_id))["mistakes"]
+        assert (mistake["students"], mistake["students_since_right"]) == (["Bo", "Cy"], ["Cy"])
+    finally:
+        db.stop()
