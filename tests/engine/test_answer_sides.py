@@ -64,7 +64,8 @@ def test_half_glued_to_a_factor_is_told_how_to_type_it():
         ("dL/dtheta_dot", "momentum", "a derivative cannot be typed here", "dL"),
         ("-g/R*sin(theta) + theta_ddot", "acceleration", "an acceleration cannot appear on the right: solve the "
          "equations of motion for θ̈ alone", "theta_ddot"),  # fmt: skip
-        ("½*m*R**2*theta_dot**2", "kinetic", "a fraction is typed with digits and a slash: write (1/2)", "½"),
+        # ½ alone is read as (1/2); a whole number before it is refused, since 2½ could be a sum or a product
+        ("2½*m*R**2*theta_dot**2", "kinetic", "write 2 + 1/2 for the sum or 2*(1/2) for a product", "2½"),
     ],
 )
 def test_a_derivative_an_acceleration_on_the_right_and_a_fraction_are_said_in_a_tutors_words(text, step, says, marked):

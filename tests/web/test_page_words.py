@@ -110,7 +110,7 @@ def test_the_pulley_tension_is_lambda_times_the_gradient_in_the_end_mass(client)
     shown = steps(client, "pulley")
     force = shown["constraint-forces"]["latex"]
     assert r"\frac{\partial \mathcal{C}_{1}}{\partial \vec r_{1}}" in force and r"\nabla" not in force
-    assert "z₁, z₂, z₃ the heights of m₁, m₂ and M" in shown["constraints"]["explanation"]
+    assert "ζ₁, ζ₂, ζ₃ the heights of m₁, m₂ and M" in shown["constraints"]["explanation"]
     assert "every position is an equilibrium" in shown["equilibria"]["explanation"]
 
 
@@ -130,9 +130,9 @@ def test_the_symbols_table_lists_the_letters_of_the_optional_steps(client):
     assert rail["X"]["unit"] == "m" and "(m₁x₁ + m₂x₂)/(m₁ + m₂)" in rail["X"]["meaning"]
     assert rail["μ"]["unit"] == "kg" and rail["x"]["unit"] == "m"
     pulley = rows("pulley")
-    assert {"𝒞", "λ", "z₁", "z₂", "z₃"} <= set(pulley) and pulley["F₁"]["unit"] == "N"
+    assert {"𝒞", "λ", "ζ₁", "ζ₂", "ζ₃"} <= set(pulley) and pulley["F₁"]["unit"] == "N"
     assert pulley["F₁"]["meaning"] == "string tension" and "F" not in pulley
-    assert pulley["z₃"]["meaning"] == "Cartesian z of the middle mass"
+    assert pulley["ζ₃"]["meaning"] == "Cartesian z of the middle mass"
     parabola = rows("rotating-parabola")
     # ρ's unit is told from m (1 + 4α²ρ²), so the energies are in J
     assert parabola["ρ"]["unit"] == "m" and parabola["h"]["unit"] == "J"
