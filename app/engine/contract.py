@@ -27,7 +27,7 @@ from app.engine.report import (
     momentum,
 )
 from app.engine.report import display as _show
-from app.engine.report_members import constraint_steps, new_lagrangian, transform_steps
+from app.engine.report_members import GREEK_CLAUSE, constraint_steps, new_lagrangian, transform_steps
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.rods import fixed_distances
 from app.engine.root_forms import power_form, trig_cancelled
@@ -278,7 +278,10 @@ def explained(scene: Scene, steps: list[dict[str, Any]]) -> list[dict[str, Any]]
         text = text or engine
         # how the equations are scaled is the engine's to say (it is derived): a scene's reason keeps that clause
         if SCALED_CLAUSE in engine and SCALED_CLAUSE not in text:
-            text = f"{text.rstrip('.')}; {engine[engine.index(SCALED_CLAUSE):]}"
+            text = f"{text.rstrip('.')}; {engine[engine.index(SCALED_CLAUSE) :]}"
+        # why the Cartesian letters are ξ, η, ζ is the engine's to say too (it knows which names are taken)
+        if GREEK_CLAUSE in engine and GREEK_CLAUSE not in text:
+            text = f"{text} {engine[engine.index(GREEK_CLAUSE) :]}"
         out.append({**s, "explanation": text})
     return out
 

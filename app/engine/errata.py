@@ -161,9 +161,14 @@ def _component(raw: sp.Basic, expr: sp.Basic, table: dict[sp.Symbol, str]) -> st
     return textbook.latex(expr, table)
 
 
-def correct_tex(text: str, names: dict[sp.Symbol, str]) -> str:
-    """A correct formula ``lhs = rhs [= …]`` as LaTeX, each side in textbook form where it parses."""
-    return " = ".join(_side(part.strip(), names) for part in text.split(" = "))
+def correct_tex(text: str, names: dict[sp.Symbol, str], approximate_for: str = "") -> str:
+    """A correct formula ``lhs = rhs [= …]`` as LaTeX, each side in textbook form where it parses; one that holds
+    only under a condition (small swings) as lhs ≈ rhs, then the condition."""
+    sides = [_side(part.strip(), names) for part in text.split(" = ")]
+    if not approximate_for:
+        return " = ".join(sides)
+    # θ̈ ≈ −(g/R) θ for |θ| ≪ 1: an approximation is printed with ≈ and the condition it needs
+    return r" \approx ".join(sides) + rf", \quad \text{{for }} {approximate_for}"
 
 
 CELL_EMS = 18.0  # ems of a formula in the errata table's cells (about 400-470 px at 1366 px, 17-18 px an em)
@@ -185,7 +190,8 @@ def _errata(scene: Scene, names: dict[sp.Symbol, str]) -> list[dict[str, Any]]:
             # a quotation of the chapter's words is prose, never typeset as a formula
             "chapter_words": e.words,
             "chapter_latex": "" if e.words else single(ascii_tex(e.chapter), CELL_EMS),
-            "correct_latex": single(correct_tex(e.correct, names), CELL_EMS),
+            "correct_latex": single(correct_tex(e.correct, names, e.approximate_for), CELL_EMS),
+            "approximate": bool(e.approximate_for),
         }
         for e in scene.errata
     ]

@@ -65,10 +65,12 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
     return {"exercises": items, "symbols": {**symbols, "t": "t"}, "rules": rules}
 
 
-# what a positions step is judged against, said on the step
+# what a positions step is judged against, said on the step; the set-up figure draws no axes, so the directions
+# and the origin are said in words (the origin is the one the problem statement names)
 POSITION_NOTE = (
-    "Use the figure's axes (x across, y the third axis, z up) and its origin; a position measured from another "
-    "origin, the correct one plus a constant length (such as + R, never a bare number), is accepted as equivalent."
+    "Measure x across and z up (y is the third direction), from the origin the problem statement names; a "
+    "position measured from another origin, the correct one plus a constant length (such as + R, never a bare "
+    "number), is accepted as equivalent."
 )
 
 

@@ -115,8 +115,8 @@ def without_springs(text: str | None) -> str | None:
 
 
 POINTERS = {
-    "position": "Place the body with the figure's axes (x across, z up): follow the lengths from the origin to the "
-    "body, adding each one's part along this axis (a length times the cosine of its angle to the axis, or the sine "
+    "position": "Place the body with x across and z up: follow the lengths from the origin the statement names to "
+    "the body, adding each one's part along this axis (a length times the cosine of its angle to the axis, or the sine "
     "of its angle to the line across it), and the position of whatever carries the body.",
     "kinetic": "T adds ½ m v² over the masses, with v² the squared speed: differentiate each position along the "
     "motion (the chain rule through every coordinate, and through t if a constraint moves), then add the squares "
@@ -351,6 +351,8 @@ OMEGA_HINT = "This is {w}, not {w}²: square it ({w}² = U_eff″/m_eff at the e
 def pointer(step: str, frequency: str = "ω") -> str:
     """A step's rule, the frequency named by the document's letter."""
     return POINTERS[step].format(w=frequency) if step == "omega_squared" else POINTERS[step]
+
+
 # a momentum short of a factor: the factor is named, never the corrected momentum
 MISSING_FACTOR_HINT = (
     "A factor {factor} is missing from your momentum. p = ∂L/∂q̇ keeps every factor that multiplies the velocity "

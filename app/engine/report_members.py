@@ -34,6 +34,25 @@ def _cartesian_printer(m: Multipliers, pr: Printer) -> Printer:
     return Printer(names)
 
 
+# the sentence, where the letters ξ, η, ζ first appear, that says why the Cartesian components are not x, y, z; a
+# scene's own reason for the step keeps it (contract.explained), so that no page prints ξ unexplained
+GREEK_CLAUSE = "The Cartesian coordinates are written"
+_SUBSCRIPTS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def _greek_sentence(m: Multipliers, pr: Printer) -> str:
+    """Why the bodies' Cartesian components are ξ, η, ζ: the names x, y, z (x₁, …) the system already prints as
+    its own coordinates (the helix's z, the pulley's y₁ and y₂)."""
+    taken = set(pr.names.values())
+    clash = [s.name for s in m.positions if latex(s.name) in taken or s.name in taken]
+    said = [n[0] + n[1:].translate(_SUBSCRIPTS) for n in clash]
+    names = said[0] if len(said) == 1 else ", ".join(said[:-1]) + " and " + said[-1]
+    indexed = any(s.name[1:] for s in m.positions)
+    letters = "ξᵢ, ηᵢ, ζᵢ for body i" if indexed else "ξ, η, ζ"
+    whose = "already names a coordinate" if len(said) == 1 else "already name coordinates"
+    return f"{GREEK_CLAUSE} {letters} here, since {names} {whose} of this system."
+
+
 def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Printer) -> list[dict[str, str]]:
     """The constraints in Cartesian form, the multipliers derived from the Lagrangian that holds them, and
     the forces the multipliers give."""
@@ -63,8 +82,7 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
             [f.g for f in forces],
             "Each constraint the coordinates satisfy silently is written again as a surface 𝒞 = 0 in Cartesian "
             "space; it can only push along its normal, the gradient of 𝒞."
-            + (" Body i's Cartesian coordinates are written ξᵢ, ηᵢ, ζᵢ here, since x, y or z with an index already "
-               "names a coordinate of this system." if greek else ""),
+            + (" " + _greek_sentence(m, pr) if greek else ""),
         ),
         _step(
             "multiplier-lagrangian",

@@ -748,8 +748,12 @@ def _damped_rows(e: Equilibrium, pr: Printer, d: Derivation) -> list[str]:
             rf"{_figures(float(sp.N(value.xreplace(values))))}{shown}" + AT_DEFAULTS
         )
     if 0 < beta_value**2 < w0_value:
-        # light damping: the amplitude decays as e^{−βt}, the energy (quadratic in it) as e^{−2βt} on average
-        rows.append(rf"E \propto e^{{-2\beta t}},\quad 2\beta = {pr.tex(2 * found.beta)}")
+        # light damping: the amplitude decays as e^{−βt}, so the energy, quadratic in it, decays as e^{−2βt}, but
+        # only averaged over a swing (within one, it falls fastest where θ̇ is largest) and only for β ≪ ω₀
+        rows.append(
+            rf"\langle E \rangle \propto e^{{-2\beta t}},\quad 2\beta = {pr.tex(2 * found.beta)}"
+            rf"\quad (\text{{averaged over a swing, for }} \beta \ll {w}_0)"
+        )
     return rows
 
 

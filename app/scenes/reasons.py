@@ -65,7 +65,7 @@ SIMPLE_PENDULUM: dict[str, str] = {
     "equilibria": "sin θ = 0 at the bottom and at the top of the circle, and nowhere else.",
     "normal-modes": "Linearising sin θ about each equilibrium gives ω² = g/R at the bottom and −g/R at the top.",
     "constraints": "The string keeps the bob on the circle of radius R about the pivot at height R, in the plane of the swing (y = 0).",
-    "multiplier-lagrangian": "The bob is free in x and z once the string is replaced by λ: gravity pulls down, the string pulls along its own line, −∇𝒞 ∝ (x, z − R).",
+    "multiplier-lagrangian": "The bob is free in x and z once the string is replaced by λ: gravity pulls down, the string pulls with the force λ ∇𝒞, and ∇𝒞 = −2(x, z − R) points from the bob to the pivot; with this sign of 𝒞, λ > 0 while the string is taut.",
     "multiplier-equation": "Differentiating x² + (z − R)² = R² twice brings in ẋ² + ż², the square of the speed: the tension will hold a centripetal part.",
     "multiplier": "λ₁ is the tension divided by 2R, since |∇𝒞₁| = 2R on the circle.",
     "constraint-forces": "The tension must supply the centripetal force m R θ̇² plus gravity's pull along the string.",
@@ -128,7 +128,7 @@ HELIX_BEAD: dict[str, str] = {
     "constraints": "The wire is two surfaces at once: the cylinder of radius R and the helicoid that winds it.",
     "multiplier-lagrangian": "Two multipliers, one for each surface: λ₁ pushes toward the axis, λ₂ across the helix.",
     "multiplier-equation": "The two normals are not perpendicular in general, so the two equations for λ₁ and λ₂ are coupled.",
-    "multiplier": "On the helix x = R cos αz and y = R sin αz: λ₁ carries the circular motion's ż², λ₂ the weight the slope does not take.",
+    "multiplier": "On the helix ξ = R cos αz and η = R sin αz: λ₁ carries the circular motion's ż², λ₂ the weight the slope does not take.",
     "constraint-forces": "The wire pushes toward the axis for the circular motion and across the helix to turn the bead.",
 }
 
@@ -221,7 +221,7 @@ SPHERICAL_PENDULUM: dict[str, str] = {
     "equilibria": "At rest the ball can hang at the bottom or balance at the top.",
     "steady-motion": "About the conical motion θ nods with the frequency given by U_eff″ at its bottom.",
     "constraints": "The string keeps the ball on the sphere of radius R about the pivot.",
-    "multiplier-lagrangian": "The ball is free in x, y and z once the string is replaced by λ; the string pulls along −∇𝒞 = 2(x, y, z), toward the pivot.",
+    "multiplier-lagrangian": "The ball is free in x, y and z once the string is replaced by λ; the string pulls with the force λ ∇𝒞, and ∇𝒞 = −2(x, y, z) points from the ball to the pivot; with this sign of 𝒞, λ > 0 while the string is taut.",
     "multiplier-equation": "Differentiating x² + y² + z² = R² twice brings in the squared speed ẋ² + ẏ² + ż².",
     "multiplier": "On the sphere the squared speed is R²(θ̇² + φ̇² sin²θ): both motions load the string.",
     "constraint-forces": "The tension supplies the centripetal force of the motion on the sphere plus gravity's pull.",

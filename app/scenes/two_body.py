@@ -19,10 +19,12 @@ TABLETOP_SPRING = Scene(
     reasons=reasons.TABLETOP_SPRING,
     # the time as an integral over r, the circular orbit and its radial frequency
     answers=("time-integral", "reduced-equilibria"),
-    # the isotropic oscillator: x and y each oscillate at √(k/m), so r² = x² + y² returns at twice that rate
+    # the isotropic oscillator: x and y each oscillate at √(k/m), so r² = x² + y² returns at twice that rate; r itself
+    # is periodic but not sinusoidal (only the frequency is exact)
     exact_frequency=(
-        "Here the prediction is exact at every amplitude: the particle's x and y each oscillate at √(k/m), so r "
-        "oscillates at 2√(k/m) however far it swings."
+        "Here the frequency is exact at every amplitude: the particle's x and y each oscillate at √(k/m), so r "
+        "returns at 2√(k/m) however far it swings. The motion in r is periodic but not a sine wave, so away from "
+        "small swings its shape differs from the dashed curve; only the frequency is exact."
     ),
     summary="A cyclic angle conserves angular momentum and folds the orbit into one radial coordinate.",
     statement=(

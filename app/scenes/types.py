@@ -149,6 +149,9 @@ class Erratum:
     check: str
     # the chapter's fault is in its words (its statement), not a formula: ``chapter`` is prose, shown as text
     words: bool = False
+    # where ``correct`` holds only approximately, the condition for it in LaTeX (|\theta| \ll 1): the table then
+    # prints lhs ≈ rhs and the condition, never "=" alone
+    approximate_for: str = ""
 
 
 @dataclass(frozen=True)

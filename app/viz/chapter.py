@@ -1,4 +1,4 @@
-"""The chapter's table of contents: sections 4.1-4.9 in our own words.
+"""The chapter's table of contents: sections 4.1 to 4.7 and 4.9 (the chapter has no 4.8) in our own words.
 
 Each scene is listed under the section it belongs to (its declared
 ``section``); a section that teaches something a scene's panels show (a force
@@ -13,14 +13,6 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from typing import Any
-
-# What "the chapter" is, said once for every page that refers to it.
-ABOUT = (
-    "The chapter is a set of lecture notes on Lagrangian mechanics (sections 4.1 to 4.9): generalized "
-    "coordinates and constraints, the Euler–Lagrange equations from Hamilton's principle, generalized momenta "
-    "and cyclic coordinates, systems of particles, and the Hamiltonian against the energy, each taught "
-    "through worked examples. Every scene here is one of those examples, derived again step by step from its Lagrangian."
-)
 
 
 @dataclass(frozen=True)
@@ -78,7 +70,7 @@ SECTIONS: tuple[Section, ...] = (
     Section(
         "4.9",
         "Small oscillations about an equilibrium",
-        "Near a minimum of the effective potential every system swings like a spring, with ω² = U_eff'' / m_eff.",
+        "Near a minimum of the effective potential every system swings like a spring, with ω² = U_eff″/m_eff.",
         shown_by=("small-oscillations",),
     ),
 )
@@ -90,6 +82,28 @@ BEYOND = Section(
 )
 
 _NUMBER = re.compile(r"4\.\d")
+
+
+def _listed(numbers: list[str]) -> str:
+    """Section numbers as a reader says them, runs joined: 4.1, …, 4.7, 4.9 -> "4.1 to 4.7 and 4.9"."""
+    runs: list[list[int]] = []
+    for k in sorted(int(n.split(".")[1]) for n in numbers):
+        if runs and k == runs[-1][-1] + 1:
+            runs[-1].append(k)
+        else:
+            runs.append([k])
+    said = [f"4.{r[0]} to 4.{r[-1]}" if len(r) > 2 else ", ".join(f"4.{k}" for k in r) for r in runs]
+    return said[0] if len(said) == 1 else ", ".join(said[:-1]) + " and " + said[-1]
+
+
+# What "the chapter" is, said once for every page that refers to it; its sections are the ones listed above (it
+# has no 4.8)
+ABOUT = (
+    f"The chapter is a set of lecture notes on Lagrangian mechanics (sections {_listed([s.number for s in SECTIONS])}"
+    "): generalized coordinates and constraints, the Euler–Lagrange equations from Hamilton's principle, generalized "
+    "momenta and cyclic coordinates, systems of particles, and the Hamiltonian against the energy, each taught "
+    "through worked examples. Every scene here is one of those examples, derived again step by step from its Lagrangian."
+)
 
 
 def section_numbers(section: str) -> list[str]:

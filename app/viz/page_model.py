@@ -598,7 +598,10 @@ def scene_page(
         "panels": panels,
         "folded_panels": closed,
         "panel_text": texts(
-            bool(doc.get("generalized_forces")), angles=bool(doc.get("angles")), focus=_focus_possible(doc)
+            bool(doc.get("generalized_forces")),
+            angles=bool(doc.get("angles")),
+            focus=_focus_possible(doc),
+            several=len(doc["coordinates"]) > 1,
         ),
         "diagram": diagram(
             info.get("family", ""),

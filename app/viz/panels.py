@@ -121,6 +121,8 @@ class Panel:
     angles_text: str | None = None
     # the explanation where no true path reaches a kinetic focus, if it differs
     no_focus_text: str | None = None
+    # sentences added only where the system has several coordinates (on one they would speak of nothing)
+    several_text: str | None = None
 
 
 PANELS: tuple[Panel, ...] = (
@@ -229,11 +231,12 @@ PANELS: tuple[Panel, ...] = (
         "Hamilton's principle: the true motion makes the action S = ∫ L dt stationary among paths with the same "
         "ends. Drag the dashed path (or use ε) to vary one coordinate by ε sin(nπt/τ) over a time τ (n = 1, 2, …: the shape); the lower plots show L "
         "along both paths and S against ε, flat at ε = 0. Move τ past the kinetic focus and the true path stops "
-        "being a minimum: it becomes a saddle of S. With several coordinates each family of variations has its own "
-        "focus: varying one coordinate alone (the others kept on the true path), it comes when the focus of all of "
-        "them varied together does, or later, or never; the readout names the family of each focus.",
+        "being a minimum: it becomes a saddle of S.",
         "always (every system has an L)",
         lambda f: True,
+        several_text="Varying one coordinate alone, with the others kept on the true path, has a focus of its own. "
+        "It comes at the same time as the focus for all the coordinates varied together, or later, or never; the "
+        "readout says which variation each focus belongs to.",
         # where no true path reaches a kinetic focus (app/engine/action_step.py decides, the derivation's first
         # step says the same), the sentence about moving τ past one would be false
         no_focus_text="Hamilton's principle: the true motion makes the action S = ∫ L dt stationary among paths "
@@ -279,12 +282,21 @@ def folded(facts: Facts, names: Sequence[str]) -> list[str]:
     return [n for n, rule in rules.items() if rule is not None and not rule(facts)]
 
 
-def texts(forced: bool = False, angles: bool = True, focus: bool = True) -> dict[str, dict[str, str]]:
+def texts(
+    forced: bool = False, angles: bool = True, focus: bool = True, several: bool = True
+) -> dict[str, dict[str, str]]:
     """Title and explanation of every panel (for the templates); ``forced``: generalized forces Q act;
-    ``angles``: some coordinate is an angle; ``focus``: a true path can reach a kinetic focus."""
+    ``angles``: some coordinate is an angle; ``focus``: a true path can reach a kinetic focus; ``several``: the
+    system has more than one coordinate."""
 
     def text(p: Panel) -> str:
-        said = p.forced_text if forced and p.forced_text else p.no_focus_text if not focus and p.no_focus_text else p.text
+        said = (
+            p.forced_text if forced and p.forced_text else p.no_focus_text if not focus and p.no_focus_text else p.text
+        )
+        # the focus of each coordinate's own variations, said only where there is more than one coordinate (and
+        # a focus to speak of)
+        if several and p.several_text and said == p.text:
+            said = f"{said} {p.several_text}"
         return f"{said} {p.angles_text}" if angles and p.angles_text else said
 
     return {p.name: {"title": p.title, "text": text(p)} for p in PANELS}

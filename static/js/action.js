@@ -178,7 +178,7 @@ export class ActionPanel {
 
   async draw(run) {
     this.run = run;
-    if (!this.visible) { this.readout.textContent = "The chart loads when this panel is in view."; return; }
+    if (!this.visible) { this.readout.textContent = "The chart is drawn when you scroll to it."; return; }
     if (!this.fns) { await this.ask(true); return; } // the first answer brings the generated functions
     clearTimeout(this.restTimer);
     // while a slider is dragged every panel repaints from the browser's preview on each input; this one,

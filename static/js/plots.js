@@ -187,7 +187,7 @@ class WorkPrecisionPanel {
     // what the error is of and in which unit; the run's time is the chart's axis, not a sentence
     const unit = sharedUnit(this.data);
     const here = `This run: ${this.data.method_labels?.[stats.method] || stats.method}, largest estimated error in the coordinates ${fmt(stats.error_estimate)}${unit ? ` ${unit}` : " (in each coordinate's unit)"}.`;
-    if (!this.visible) { this.readout.textContent = `${here} The chart loads when this panel is in view.`; return; }
+    if (!this.visible) { this.readout.textContent = `${here} The chart is drawn when you scroll to it.`; return; }
     this.readout.textContent = `${here} Loading the error-against-run-time chart…`;
     this.section.setAttribute("aria-busy", "true");
     // the report is measured once per engine version (at the server's warm-up, else on the first request): a reader

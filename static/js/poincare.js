@@ -26,7 +26,7 @@ export class PoincarePanel {
   async draw(run) {
     this.run = run;
     if (!this.urls.poincare) return;
-    if (!this.visible) { this.readout.textContent = "The chart loads when this panel is in view."; return; }
+    if (!this.visible) { this.readout.textContent = "The chart is drawn when you scroll to it."; return; }
     const request = { parameters: run.request.parameters || {}, initial: run.request.initial || {} };
     const key = JSON.stringify(request);
     this.section.setAttribute("aria-busy", "true");

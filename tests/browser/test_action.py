@@ -311,7 +311,7 @@ def test_a_lazy_panel_says_it_loads_when_in_view(page):
     page.wait_for_selector('#run-status[data-state="ready"], #run-status[data-state="untrusted"]', state="attached")
     for panel in ("#panel-action", "#panel-poincare"):
         page.wait_for_function(
-            f"document.querySelector('{panel} .readout').textContent.includes('loads when this panel is in view')"
+            f"document.querySelector('{panel} .readout').textContent.includes('is drawn when you scroll to it')"
         )
 
 

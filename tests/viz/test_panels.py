@@ -86,7 +86,7 @@ def test_the_method_comparison_is_open_only_where_the_method_matters(client, sce
     assert folded == (scene_id not in METHOD_MATTERS), scene_id
     if folded:
         summary = html.split('id="details-work-precision"><summary>', 1)[1].split("</summary>", 1)[0]
-        assert summary.startswith("details: error against run time")
+        assert summary.startswith("More: error against run time, how accurate each way of stepping")
 
 
 def test_the_phase_text_speaks_of_angles_only_where_a_coordinate_is_one(client):

@@ -191,7 +191,10 @@ def latex(source: Source) -> str:
                 )
             elif chapter and correct:
                 body.append(
-                    rf"\item The chapter writes {_display([chapter])} correct is {_display([correct])}"
+                    # an approximation (small swings) is what holds, never "correct" as it stands
+                    rf"\item The chapter writes {_display([chapter])} "
+                    + ("what holds is" if e.get("approximate") else "correct is")
+                    + rf" {_display([correct])}"
                     + latex_text(e["reason"])
                 )
             else:
