@@ -131,11 +131,12 @@ def _arranged(expr: sp.Basic, coordinates: frozenset[sp.Symbol] = frozenset()) -
         return expr.func(*args)
 
 
-def spoken(expr: sp.Expr, coordinates: Iterable[sp.Symbol] = ()) -> str:
+def spoken(expr: sp.Expr, coordinates: Iterable[sp.Symbol] = (), factored: bool = True) -> str:
     """An expression as running text prints it: R φ̇ sin(θ), m₂ l₁ l₂ cos(θ₁ − θ₂) (never ** or *); with the
-    ``coordinates`` named, each product's coordinates after its constants (κ x₂/m)."""
+    ``coordinates`` named, each product's coordinates after its constants (κ x₂/m). A student's own sum is quoted
+    ``factored=False``, term by term as it was written (m R² θ̈ + m g R θ̇ sin(θ), never m (R θ̈ + g θ̇ sin(θ)) R)."""
     # a sign pulled out of a sum: −g l₁ (m₁ + m₂), not g l₁ (−m₁ − m₂)
-    shown = sp.factor_terms(expr) if isinstance(expr, sp.Expr) else expr
+    shown = sp.factor_terms(expr) if isinstance(expr, sp.Expr) and factored else expr
     try:
         text = sp.sstr(_arranged(shown, frozenset(coordinates)), order="none")
     except (TypeError, ValueError, AttributeError):  # an expression the rearranging cannot rebuild: SymPy's order

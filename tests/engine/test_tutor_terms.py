@@ -32,3 +32,23 @@ def test_a_term_left_out_is_said_as_the_term(scene, step, coordinate, answer, na
     said = unicodedata.normalize("NFC", result["mistake"]["name"]), unicodedata.normalize("NFC", result["hint"])
     assert said[0] == name
     assert name in said[1]
+
+
+def test_an_extra_term_typed_without_a_fraction_is_said_as_a_term():
+    # student-k 3, #127: no fraction typed, so no "numerator" and no "the denominator is right"
+    pb = _problem("simple-pendulum", "acceleration", "theta")
+    result = judge(pb, "-g*sin(theta)/R + theta_dot^2")
+    said = unicodedata.normalize("NFC", result["mistake"]["name"] + " " + result["hint"])
+    assert result["mistake"]["name"] == "an extra term θ̇² that the correct answer does not have"
+    assert "numerator" not in said and "denominator" not in said
+    # typed as one fraction, its numerator is the student's own and is named so
+    typed = judge(pb, "(-g*sin(theta) + R*theta_dot^2)/R")
+    assert typed["mistake"]["name"].startswith("the numerator R θ̇² − g sin(θ)")
+
+
+def test_a_students_sum_is_quoted_term_by_term_not_regrouped():
+    # student-k 3, #103: "m (R θ̈ + g θ̇ sin(θ)) R adds a torque …" quoted the student's sum regrouped
+    result = judge(_problem("simple-pendulum", "equation", "theta"), "m*R^2*theta_ddot + m*g*R*sin(theta)*theta_dot")
+    assert unicodedata.normalize("NFC", result["hint"]).startswith(
+        unicodedata.normalize("NFC", "Check the units. m R² θ̈ + m g R θ̇ sin(θ) adds a torque (m R² θ̈)")
+    )
