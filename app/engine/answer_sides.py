@@ -2,9 +2,9 @@
 
 Every textbook writes an equation of motion as lhs = rhs (θ̈ = −(g/R) sin θ), so a step whose answer is
 an equation takes it: the equation ``lhs = rhs`` is read as the expression lhs − rhs, equal to zero. An
-acceleration step takes ``q_ddot = rhs`` as its right-hand side. Where the box already names the
-left-hand side (T =, U =, L =, p =, h =, ω² =) an equals sign makes no sense, and the student is told to
-type only the right-hand side. A refusal of what was read is placed back at the columns as typed.
+acceleration step takes ``q_ddot = rhs`` as its right-hand side, and the frequency step ``ω² = rhs`` (in the
+document's letter: Ω² where ω is a parameter). Where the box already names the left-hand side (T =, U =, L =,
+p =, h =) an equals sign makes no sense, and the student is told to type only the right-hand side. A refusal of what was read is placed back at the columns as typed.
 """
 
 from __future__ import annotations
@@ -14,6 +14,7 @@ from collections.abc import Mapping
 
 from app.engine.check_answers import CheckError, allowed_names, check_answer
 from app.engine.names import said, said_all, unicode
+from app.engine.notation import free_letter
 from app.engine.parse import Parsed
 from app.engine.parse_rules import FUNCTIONS, ExpressionError, typed_function
 from app.engine.parse_typed import typed
@@ -200,6 +201,21 @@ def _read(text: str, step: str, coordinate: str | None, kinds: dict[str, str]) -
         raise CheckError(
             f"answer: the left of '=' must be the acceleration {said(wanted) if wanted else 'q̈'}: write "
             f"{unicode(wanted) if wanted else 'q̈'} = … or only the right-hand side",
+            "answer",
+            lhs,
+            0,
+            at,
+        )
+    if step == "omega_squared":
+        # the box's own left side typed out, ω² = g/R (omega^2, or Ω² where ω is a parameter), as θ̈ = … is taken
+        square = free_letter("frequency", kinds)[1]
+        if _name_read(lhs).replace(" ", "") == _name_read(f"{square}²"):
+            if not rhs.strip():
+                raise CheckError("answer: the right-hand side of '=' is empty", "answer", "=", at, at + 1)
+            return _side(rhs, at + 1, step, kinds), False
+        raise CheckError(
+            f"answer: the left of '=' must be {square}² (type {_name_read(square)}^2): write {square}² = … or only "
+            "the right-hand side",
             "answer",
             lhs,
             0,

@@ -232,8 +232,9 @@ def _dims(expr: sp.Expr, known: Mapping[sp.Symbol, Dims], own: Own = ()) -> Dims
         for a, d in told[1:]:
             if d != told[0][1]:
                 first = told[0]
-                # a short sum is quoted (m + g); a long one is the student's own, shown under the words
-                lead = spoken(expr) if len(expr.args) <= 2 else "Your sum"
+                # a short sum is quoted (m + g) term by term, as the student wrote it; a long one is the
+                # student's own, shown under the words
+                lead = spoken(expr, factored=False) if len(expr.args) <= 2 else "Your sum"
                 words = (
                     f"{lead} adds {_term(first[1], own)} ({spoken(first[0])}) to {_term(d, own)} "
                     f"({spoken(a)}), and the terms of a sum must have the same units."

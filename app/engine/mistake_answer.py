@@ -248,6 +248,26 @@ def solved_slip(answer: sp.Expr, truth: sp.Expr, groups: Groups) -> AnswerSlip |
     top, bottom = sp.fraction(sp.cancel(sp.together(answer)))
     scale = sp.cancel(top / numerator)
     right = scale * denominator if _constant(scale) else None
+    if right is None and _constant(sp.cancel(bottom / denominator)) and answer.is_Add:
+        # no one fraction typed (−g sin(θ)/R + θ̇²): said in the student's terms, never as a numerator they did not
+        # write. answer = truth + extra; where no extra term is a multiple of one of the truth's, the truth's terms
+        # are all there and the extra ones are the slip
+        extra = sp.expand(answer - truth)
+        theirs = sp.Add.make_args(sp.expand(truth))
+        if not any(_constant(sp.cancel(e / t)) for e in sp.Add.make_args(extra) for t in theirs):
+            several = len(sp.Add.make_args(extra)) > 1
+            return _slip(
+                "extra_term",
+                f"{'the extra terms' if several else 'an extra term'} {spoken(extra, factored=False)} that the "
+                "correct answer does not have",
+                "every term of the correct answer is in yours",
+            )
+        return _slip(
+            "terms",
+            f"the terms {spoken(answer, factored=False)}, where the correct ones are "
+            f"{spoken(sp.expand(truth), factored=False)}",
+            "compare them term by term",
+        )
     if right is None and _constant(sp.cancel(bottom / denominator)):
         wrong = sp.cancel(bottom / denominator) * numerator
         return _slip(

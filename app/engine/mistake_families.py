@@ -92,10 +92,10 @@ _GREEK = frozenset(
 )
 
 
-def _rank(factor: sp.Expr) -> tuple[int, int, str]:
+def _rank(factor: sp.Expr, coordinates: frozenset[sp.Symbol] = frozenset()) -> tuple[int, int, str]:
     """A factor's place in a product as a textbook writes it: numbers, masses, sums of masses, other constants
     (Latin letters before Greek), rates, then functions: m₂ l₁ l₂ θ̇₁ θ̇₂ cos(θ₁ − θ₂), 2 g α, m g R cos θ,
-    (M + m) Ẋ²/2."""
+    (M + m) Ẋ²/2. Where the coordinates are known, they follow the constants (κ x₂, not x₂ κ)."""
     if factor.is_number:
         return (0, 0, "")
     if factor.is_Add:
@@ -108,18 +108,20 @@ def _rank(factor: sp.Expr) -> tuple[int, int, str]:
         stem = name.rstrip("0123456789_").lower()
         if stem == "m":
             return (1, 0, name.lower())
+        if base in coordinates:
+            return (2, 2, name.lower())
         return (2, int(stem in _GREEK), name.lower())
     return (4, 0, sp.sstr(factor))
 
 
-def _arranged(expr: sp.Basic) -> sp.Basic:
+def _arranged(expr: sp.Basic, coordinates: frozenset[sp.Symbol] = frozenset()) -> sp.Basic:
     """The same expression, unevaluated, with each product's factors in ``_rank`` order and each sum's positive
     terms first (x₂ − x₁ − l₀ rather than −l₀ − x₁ + x₂)."""
     if not isinstance(expr, sp.Basic) or expr.is_Atom:
         return expr
-    args = [_arranged(a) for a in expr.args]
+    args = [_arranged(a, coordinates) for a in expr.args]
     if expr.is_Mul:
-        return sp.Mul(*sorted(args, key=_rank), evaluate=False)
+        return sp.Mul(*sorted(args, key=lambda a: _rank(a, coordinates)), evaluate=False)
     if expr.is_Add:
         positive = [a for a in args if not a.could_extract_minus_sign()]
         return sp.Add(*positive, *(a for a in args if a.could_extract_minus_sign()), evaluate=False)
@@ -129,12 +131,14 @@ def _arranged(expr: sp.Basic) -> sp.Basic:
         return expr.func(*args)
 
 
-def spoken(expr: sp.Expr) -> str:
-    """An expression as running text prints it: R φ̇ sin(θ), m₂ l₁ l₂ cos(θ₁ − θ₂) (never ** or *)."""
+def spoken(expr: sp.Expr, coordinates: Iterable[sp.Symbol] = (), factored: bool = True) -> str:
+    """An expression as running text prints it: R φ̇ sin(θ), m₂ l₁ l₂ cos(θ₁ − θ₂) (never ** or *); with the
+    ``coordinates`` named, each product's coordinates after its constants (κ x₂/m). A student's own sum is quoted
+    ``factored=False``, term by term as it was written (m R² θ̈ + m g R θ̇ sin(θ), never m (R θ̈ + g θ̇ sin(θ)) R)."""
     # a sign pulled out of a sum: −g l₁ (m₁ + m₂), not g l₁ (−m₁ − m₂)
-    shown = sp.factor_terms(expr) if isinstance(expr, sp.Expr) else expr
+    shown = sp.factor_terms(expr) if isinstance(expr, sp.Expr) and factored else expr
     try:
-        text = sp.sstr(_arranged(shown), order="none")
+        text = sp.sstr(_arranged(shown, frozenset(coordinates)), order="none")
     except (TypeError, ValueError, AttributeError):  # an expression the rearranging cannot rebuild: SymPy's order
         text = sp.sstr(shown)
     # sin(θ)**2 as sin²(θ)

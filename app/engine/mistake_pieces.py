@@ -362,7 +362,7 @@ def _left_out(
     d: Derivation, step: str, p: sp.Expr, truth: sp.Expr | None = None, k: int | None = None
 ) -> tuple[str, str | None]:
     """(name, why) of a term of T or U left out: by its cause where one body carries another (the block moves
-    with the wedge, so its velocity includes Ẋ), else by its velocities or its parameters, never by the term.
+    with the wedge, so its velocity includes Ẋ), else by its velocities, else by the term itself.
     In an equation, one body's weight left out of a coordinate's force is named as that body's weight."""
     t = d.table
     rates = [v for v in t.qd if p.has(v)]
@@ -392,8 +392,8 @@ def _left_out(
     if rates:
         monomial = sp.Mul(*(x for x in sp.Mul.make_args(p) if x.has(*t.qd, *t.qdd)))
         return f"a {spoken(monomial)} term left out", None
-    shown = sorted((unicode(x.name) for x in p.free_symbols if x in set(t.params) | set(t.q)), key=str)
-    return f"a term with {', '.join(shown)} left out", None
+    # the term itself, as a textbook prints it (κ x₂/m, −k l₀/m₁, m Ẍ), never a list of its letters (issue 41, 1)
+    return f"the term {spoken(short_form(p), t.q)} left out", None
 
 
 def _weight_left_out(d: Derivation, p: sp.Expr, truth: sp.Expr, k: int) -> tuple[str, str] | None:

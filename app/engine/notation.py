@@ -13,7 +13,7 @@ it means.
 from __future__ import annotations
 
 import re
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from fractions import Fraction
 from typing import Any
 
@@ -84,7 +84,13 @@ def _taken(d: Derivation) -> set[str]:
 
 
 def _choice(concept: str, d: Derivation) -> tuple[str, str]:
-    taken = _taken(d)
+    return free_letter(concept, _taken(d))
+
+
+def free_letter(concept: str, names: Iterable[str]) -> tuple[str, str]:
+    """The (LaTeX, Unicode) letter of a derived quantity where the declaration has these names: the first of its
+    candidates that no name already is (Ω for the frequency where ω is a parameter)."""
+    taken = {unicode(n) for n in names}
     candidates = DERIVED[concept][1]
     return next((c for c in candidates if c[1] not in taken), candidates[-1])
 

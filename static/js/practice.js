@@ -232,7 +232,11 @@ function followUpBox(item, followUp) {
       typesetInto(input, math, note, followUp.kind || item.dataset.step, typing.signal, (latex) => latex);
     }, TYPESET_DELAY_MS);
   });
-  box.append(label, row, element("p", { class: "help" }, `Names you may use: ${namesSaid(followUp)}, pi.`), shown, status);
+  // the names, folded to one line: the step's own list stands just above, and a wrong answer's verdict on a phone
+  // grew two screens tall with it said again (student-k 11)
+  const names = element("details", { class: "help follow-up-names" });
+  names.append(element("summary", {}, "Names you may use"), element("p", {}, `${namesSaid(followUp)}, pi.`));
+  box.append(label, row, names, shown, status);
   const ask = async () => {
     const answer = input.value.trim();
     if (!answer) {
@@ -361,7 +365,10 @@ function buildItem(exercise, index) {
   const item = element("li", { class: "practice-step", "data-key": key, "data-step": exercise.step, "data-lhs": exercise.lhs });
   if (exercise.coordinate) item.dataset.coordinate = exercise.coordinate;
   const form = element("form", { class: "practice-form", novalidate: "" });
-  const title = element("h3", { id: `${id}-title` }, exercise.title);
+  // numbered as a panel that gives a step away names it ("Show (gives away step 6: Potential energy U)")
+  const title = element("h3", { id: `${id}-title` });
+  title.append(element("span", { class: "practice-number" }, `Step ${index + 1}:`), " ",
+    element("span", { class: "practice-title" }, exercise.title));
   // the heading shows the title: the label says it to a screen reader only (student-e, 18)
   const label = element("label", { for: `${id}-answer`, class: "visually-hidden" }, `Your answer: ${exercise.title}`);
   const row = element("div", { class: "practice-row" });

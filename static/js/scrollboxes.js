@@ -11,7 +11,8 @@
  * arrow there (a phone has no scroll bar to tell the reader).
  *
  * Checked after the page has loaded (KaTeX has typeset by then), when the window is resized, when a
- * <details> opens, and when elements are added under root (tables built from a server answer): at the
+ * <details> opens, when a hidden box is shown (practice's "Show this step": a box measured while hidden has no
+ * width to overflow), and when elements are added under root (tables built from a server answer): at the
  * next frame, then at most twice a second while elements keep coming (readouts change every frame).
  */
 const BOXES = ".math-display, .table-scroll, .summary-box dd, .data-summary .table, .frequencies, .practice-engine, "
@@ -92,8 +93,10 @@ export function keyboardScroll(root = document) {
   // check then would force a layout in the middle of Plotly's (the all-plots frame time of issue 47)
   const inPlot = (node) => node.nodeType === 1 && node.closest(PLOTS) !== null;
   const added = (r) => !inPlot(r.target) && [...r.addedNodes].some((n) => n.nodeType === 1 && !n.matches(PLOTS));
-  new MutationObserver((records) => { if (records.some(added)) later(); })
-    .observe(root === document ? document.body : root, { childList: true, subtree: true });
+  // an element shown (its hidden attribute removed): the boxes in it now have a width to measure
+  const shown = (r) => r.type === "attributes" && !inPlot(r.target) && !r.target.hidden;
+  new MutationObserver((records) => { if (records.some((r) => added(r) || shown(r))) later(); })
+    .observe(root === document ? document.body : root, { childList: true, subtree: true, attributes: true, attributeFilter: ["hidden"] });
   // KaTeX may finish after load (fonts): look once more a little later, and whenever a web font finishes
   // loading (a formula measured in the fallback font is wider: its cue would stay on a formula that now fits)
   setTimeout(soon, 1500);

@@ -205,6 +205,10 @@ def test_the_named_slip_its_piece_and_follow_up_at_both_sizes(browser, live_serv
         # nothing of the verdict is cut off on the phone: it fits the screen's width
         assert verdict.evaluate("e => e.getBoundingClientRect().right") <= page.viewport_size["width"] + 1
         follow_up = verdict.locator(".verdict-follow-up")
+        # the names it may use folded to one line (student-k 11): opened, they are the question's
+        names = follow_up.locator("details.follow-up-names")
+        assert names.locator("summary").inner_text().strip() == "Names you may use" and not names.evaluate("d => d.open")
+        assert names.locator("p").is_hidden()
         follow_up.locator("textarea").fill(follow)
         # the reply is typeset as it is typed, as the step's own answer is
         follow_up.locator(".practice-preview .katex").wait_for()
@@ -227,7 +231,7 @@ def test_the_positions_step_names_the_wedges_x_left_out_on_a_phone(browser, live
         first = page.locator(".practice-step").first
         assert first.get_attribute("data-key") == "position:x1"
         step = page.locator(STEP.format(key))
-        assert step.locator("h3").inner_text() == "Position: x of the block"
+        assert step.locator("h3 .practice-title").inner_text() == "Position: x of the block"
         assert "x across" in step.locator(".practice-names").inner_text()
         answer(page, key, "D*cos(alpha)")
         mistake = verdict_of(page, key).locator(".verdict-mistake")
@@ -271,7 +275,7 @@ def test_panels_that_give_away_a_step_are_folded_until_it_is_shown(page, artifac
     readout = page.locator("#panel-small-oscillations .readout")
     assert conventions.count() == 1 and conventions.is_hidden() and readout.is_hidden()
     fold = page.locator("#panel-small-oscillations .gives-away")
-    steps = page.locator(".practice-step h3").all_inner_texts()
+    steps = page.locator(".practice-step h3 .practice-title").all_inner_texts()
     number = next(
         k
         for k, key in enumerate(page.locator(".practice-step").evaluate_all("s => s.map(x => x.dataset.key)"))

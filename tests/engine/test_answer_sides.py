@@ -20,6 +20,24 @@ def test_an_acceleration_typed_with_its_name_is_its_right_hand_side():
     assert not equation and parsed.text.strip() == "-g/R*sin(theta)"
 
 
+@pytest.mark.parametrize("text", ["omega^2 = g/R", "ω² = g/R", " omega**2= g/R"])
+def test_a_frequency_typed_with_its_square_is_its_right_hand_side(text):
+    # issue 41, 6 (student-k 11): the ω² box takes ω² = …, as the θ̈ box takes θ̈ = …
+    parsed, equation = read_answer(text, "omega_squared", None, KINDS)
+    assert not equation and parsed.text.strip() == "g/R"
+
+
+def test_the_frequency_is_the_documents_letter_where_omega_is_a_parameter():
+    # the rotating wire turns at the rate ω, so its frequency is Ω: Ω² = … is read, ω² = … is refused
+    kinds = name_kinds(("rho",), ("m", "g", "alpha", "omega"), ())
+    parsed, _ = read_answer("Omega^2 = 2*g*alpha - omega^2", "omega_squared", None, kinds)
+    assert parsed.text.strip() == "2*g*alpha - omega^2"
+    with pytest.raises(CheckError) as refused:
+        read_answer("omega^2 = 2*g*alpha", "omega_squared", None, kinds)
+    assert "the left of '=' must be Ω² (type Omega^2): write Ω² = …" in str(refused.value)
+    assert refused.value.start == 0 and refused.value.end == len("omega^2 ")
+
+
 @pytest.mark.parametrize(
     ("text", "step", "says", "marked"),
     [
