@@ -111,12 +111,9 @@ def hamilton_json(d: Derivation, ham: Hamilton) -> dict[str, Any]:
     }
 
 
-def _number(x: float) -> str:
-    return f"{x:.6g}"
-
-
 def _figures(x: float) -> str:
-    """A mode's number as a textbook prints a measured-looking value: four significant figures."""
+    """A number found numerically, as a textbook prints a measured-looking value: four significant figures (an
+    equilibrium's θ = 2.486 and held p_φ = 1.307, a mode's ω², prof-k 13: not θ = 2.48602, p_φ = 1.30733)."""
     return f"{x:.4g}"
 
 
@@ -209,9 +206,9 @@ def _where(e: Equilibrium, pr: Printer, d: Derivation) -> str:
     parts = []
     for name, value in e.position.items():
         exact = e.exact.get(name) if e.exact else None
-        parts.append(f"{pr.tex(sym[name])} = {pr.root(exact) if exact is not None else _number(value)}")
+        parts.append(f"{pr.tex(sym[name])} = {pr.root(exact) if exact is not None else _figures(value)}")
     # a held momentum p_θ = 1 kg·m²/s carries its unit, as every number on the page does
-    held = [rf"{pr.tex(sp.Symbol(n))} = {_number(v)}{momentum_unit(d, n)}" for n, v in e.momenta.items()]
+    held = [rf"{pr.tex(sp.Symbol(n))} = {_figures(v)}{momentum_unit(d, n)}" for n, v in e.momenta.items()]
     return r",\; ".join(parts + held)
 
 
@@ -259,9 +256,9 @@ def _any(d: Derivation, pr: Printer) -> str:
 
 
 def _rounded(matrix: sp.Matrix) -> sp.Matrix:
-    """Numbers found numerically (a steady motion's K) to the six figures the rest of the step shows."""
+    """Numbers found numerically (a steady motion's K) to the four figures the rest of the step shows."""
     return matrix.applyfunc(
-        lambda x: sp.sympify(x).xreplace({f: sp.Float(f, 6) for f in sp.sympify(x).atoms(sp.Float)})
+        lambda x: sp.sympify(x).xreplace({f: sp.Float(f, 4) for f in sp.sympify(x).atoms(sp.Float)})
     )
 
 
@@ -286,7 +283,7 @@ def _points(
     for i, p in enumerate(points):
         known: dict[str, sp.Expr] = (exact[i] or {}) if i < len(exact) else {}
         rows.append(
-            r",\; ".join(f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(v)}" for n, v in p.items())
+            r",\; ".join(f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _figures(v)}" for n, v in p.items())
             + label
         )
     return rows
@@ -309,7 +306,7 @@ def _singular_points(nm: NormalModes, d: Derivation, pr: Printer) -> list[str]:
         ]  # fmt: skip
         shown = [n for n in point if n not in lost] or list(point)
         where = r",\; ".join(
-            f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _number(point[n])}" for n in shown
+            f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _figures(point[n])}" for n in shown
         )
         # the note on a row of its own, so that a phone's narrow box needs no sideways scroll
         if lost:
@@ -528,7 +525,7 @@ def _verdict(e: Equilibrium, d: Derivation) -> str:
     if lin is None or not lin.moving:
         text = _KIND[e.kind].replace("ω", wu)
         return text[0].upper() + text[1:] + "."
-    freq = ", ".join(_number(f) for f in lin.frequencies)
+    freq = ", ".join(_figures(f) for f in lin.frequencies)
     out = (
         "The velocity terms (G, from damping, Coriolis or magnetic forces) enter the motion near it: with "
         f"{notation.text('displacement', d)} = v e^{{{r}t}} "
@@ -599,7 +596,7 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, n
     else:
         where = _where(e, pr, d)
         about = ", ".join(
-            f"{plain_name(n)} = {unicode_text(e.exact[n]) if e.exact and n in e.exact else _number(v)}"
+            f"{plain_name(n)} = {unicode_text(e.exact[n]) if e.exact and n in e.exact else _figures(v)}"
             for n, v in e.position.items()
         )
     if len(e.coordinates) == 1 and len(e.modes) == 1:
@@ -636,7 +633,7 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, n
         rows.append(_exponents(e, d))
     if e.momenta:
         key = f"steady-motion:{number}"
-        title = f"Small oscillations about the steady motion at {plain_name(e.coordinates[0])} = {_number(e.position[e.coordinates[0]])}"
+        title = f"Small oscillations about the steady motion at {plain_name(e.coordinates[0])} = {_figures(e.position[e.coordinates[0]])}"
         why = (
             "With the conserved momenta held at the values shown, the reduced coordinate sits at a minimum or maximum of "
             f"U_eff: the body moves steadily (a circular or conical orbit), and {wu}² = U_eff''/m_eff. "

@@ -184,7 +184,8 @@ PULLEY = Scene(
     statement=(
         "A string runs over two fixed pulleys; its ends carry masses m1 and m2, each a horizontal distance d from "
         "the middle, and the loop between the pulleys holds a third, movable pulley from which a mass M hangs. "
-        "Pulleys and string are massless and the string does not stretch. Heights are measured upward from the "
+        "Pulleys and string are massless, the string does not stretch, and every strand hangs vertically. Heights "
+        "are measured upward from the "
         "level where U = 0, the end masses' level when y1 = y2 = 0. With the heights y1 and y2 of the end masses "
         "as coordinates, the string fixes the middle mass's height at Y = −(y1 + y2)/2 − c, where c, set by the "
         "string's length, is how far below that level M hangs when y1 = y2 = 0. Find the accelerations of all "
@@ -192,7 +193,8 @@ PULLEY = Scene(
     ),
     figure=(
         "Two fixed pulleys at the top; m1 hangs on the left end, m2 on the right end, each a distance d from the "
-        "middle, and the string's loop between them carries a movable pulley with M below it; heights y1, y2, Y "
+        "middle, and the string's loop between them carries a movable pulley with M below it, every strand "
+        "vertical; heights y1, y2, Y "
         "measured upward from the dashed line where U = 0, M below it (Y < 0); c reaches down from that line to "
         "the short dashed level where M would hang with y1 = y2 = 0."
     ),

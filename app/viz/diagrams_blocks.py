@@ -131,58 +131,61 @@ def rail_two_body(p: dict[str, float], q: dict[str, float], marks: Sequence[str]
 
 def pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
     svg = Svg()
-    ceiling, r = 22.0, 20.0
-    left, right = 80.0, 240.0
+    ceiling = 22.0
+    # every strand vertical, as the constraint assumes (prof-k 3: a V of slanted strands has loop length
+    # 2√(a² + h²), not linear in Y): the end masses hang d either side of the middle, the movable pulley's two
+    # strands rise straight to the fixed pulleys, so each fixed pulley spans from an end mass's strand to one of
+    # the movable pulley's, radius (d − r)/2
+    mid, half, r = 160.0, 70.0, 18.0
+    left, right = mid - half, mid + half
+    big = (half - r) / 2
+    top = ceiling + 8 + big  # the fixed pulleys' centres, hung just below the ceiling
     svg.line(30, ceiling, 290, ceiling, INK, 3)
-    for cx in (left, right):
-        svg.line(cx, ceiling, cx, ceiling + 24, INK, 1.5)
-        svg.circle(cx, ceiling + 24, r, fill="#eef1f4")
+    for cx in (left + big, right - big):
+        svg.line(cx, ceiling, cx, top, INK, 1.5)
+        svg.circle(cx, top, big, fill="#eef1f4")
     # the end masses above the dashed line where U = 0 (y₁, y₂ > 0) and M below it: the string makes
     # Y = −(y₁ + y₂)/2 − c, negative while the end masses are above the line (prof-h 2: all three were drawn above it)
-    y1, y2, ym = 108.0, 80.0, 174.0
-    mid = (left + right) / 2
+    base = 150.0
+    y1, y2, centre = 118.0, 100.0, 221.0
+    ym = centre - 22 - r  # the movable pulley's centre, M's box hung below it
     # the end masses' strings hang d either side of the middle one's, d marked above the ceiling
-    for end in (left - r, right + r):
+    for end in (left, right):
         svg.line(end, 3, end, 17, GUIDE, 1)
         gap = 9 if end < mid else -9
         svg.arrow((end + mid) / 2 - gap, 10, end, 10, color=PARAM, width=1.2, head=6)
         svg.arrow((end + mid) / 2 + gap, 10, mid, 10, color=PARAM, width=1.2, head=6)
         svg.text((end + mid) / 2, 10, "d", PARAM, 15)
     svg.line(mid, 3, mid, 17, GUIDE, 1)
-    svg.line(left - r, ceiling + 24, left - r, y1 - 16)
-    svg.line(left + r, ceiling + 24, mid - r, ym)
+    for x, bottom in ((left, y1 - 16), (mid - r, ym), (mid + r, ym), (right, y2 - 16)):
+        svg.line(x, top, x, bottom)
     svg.circle(mid, ym, r, fill="#eef1f4")
-    svg.line(mid + r, ym, right - r, ceiling + 24)
-    svg.line(right + r, ceiling + 24, right + r, y2 - 16)
-    svg.rect(left - r - 16, y1 - 16, 32, 32)
-    svg.text(left - r, y1, "m₁", PARAM, 14)
-    svg.rect(right + r - 16, y2 - 16, 32, 32)
-    svg.text(right + r, y2, "m₂", PARAM, 14)
+    svg.rect(left - 16, y1 - 16, 32, 32)
+    svg.text(left, y1, "m₁", PARAM, 14)
+    svg.rect(right - 16, y2 - 16, 32, 32)
+    svg.text(right, y2, "m₂", PARAM, 14)
     svg.line(mid, ym + r, mid, ym + r + 8)
     svg.rect(mid - 17, ym + r + 8, 34, 28)
-    svg.text(mid, ym + r + 22, "M", PARAM, 14)
-    base = 140.0
+    svg.text(mid, centre, "M", PARAM, 14)
     svg.line(20, base, 300, base, GUIDE, 1.2, dash=True)
     svg.text(262, base + 14, "U = 0", GUIDE, 12)
-    svg.arrow(left - r - 30, base, left - r - 30, y1, color=ACCENT)
-    svg.text(left - r - 44, (base + y1) / 2, "y₁", ACCENT, 16)
-    svg.arrow(right + r + 30, base, right + r + 30, y2, color=ACCENT)
-    svg.text(right + r + 44 - 4, (base + y2) / 2, "y₂", ACCENT, 16)
+    svg.arrow(left - 30, base, left - 30, y1, color=ACCENT)
+    svg.text(left - 44, (base + y1) / 2, "y₁", ACCENT, 16)
+    svg.arrow(right + 30, base, right + 30, y2, color=ACCENT)
+    svg.text(right + 40, (base + y2) / 2, "y₂", ACCENT, 16)
     # the third height, Y, of M's centre, measured upward like the others: negative, so its arrow from the line
-    # to M points down; the caption names y₁, y₂ and Y, so the figure marks all three
-    centre = ym + r + 22
+    # to M points down (the caption says Y < 0; the arrow alone marks it here)
     svg.arrow(mid + 34, base, mid + 34, centre, color=ACCENT)
     svg.line(mid + 17, centre, mid + 40, centre, GUIDE, 1, dash=True)
     svg.text(mid + 46, (base + centre) / 2, "Y", ACCENT, 16)
-    svg.text(mid + 66, (base + centre) / 2, "< 0", ACCENT, 13)
     # c: how far below the line M would hang with y₁ = y₂ = 0; drawn to the figure's own scale, so that
     # Y = −(y₁ + y₂)/2 − c holds for the heights drawn (the level stops short of the strings)
     level = base + (centre - base) - ((base - y1) + (base - y2)) / 2
-    svg.line(26, level, mid - r - 16, level, GUIDE, 1, dash=True)
-    svg.arrow(48, base, 48, level, color=PARAM, width=1.4, head=6)
-    svg.text(36, (base + level) / 2, "c", PARAM, 15)
-    svg.arrow(mid, 48, mid, 84, color=PARAM)
-    svg.text(mid + 12, 66, "g", PARAM)
+    svg.line(16, level, mid - r - 16, level, GUIDE, 1, dash=True)
+    svg.arrow(24, base, 24, level, color=PARAM, width=1.4, head=6)
+    svg.text(12, (base + level) / 2, "c", PARAM, 15)
+    svg.arrow(30, 40, 30, 76, color=PARAM)
+    svg.text(42, 58, "g", PARAM)
     return svg
 
 

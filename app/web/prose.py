@@ -21,6 +21,11 @@ _SUBSCRIPTED = re.compile(
 )
 _PRIMES = {"''": "″", "'": "′", "″": "″", "′": "′", None: ""}
 
+# a formula's sign stays with what it signs (prof-k 12: a phone broke "Y = −" | "(y₁ + y₂)/2 − c"): a minus sign
+# written against its term (−(y₁ …), −c) is joined to it by a word joiner, U+2060, and to a relation before it
+# ("= −", "< −") by a no-break space; a minus between spaced terms (a − b) breaks as a word would
+_SIGNED = re.compile(r"(?:([=<>≈≤≥]) )?−(?=[^\s])")
+
 
 def prose_html(text: object) -> Markup:
     """``text`` escaped, with every symbol's subscript set as ``<sub>``."""
@@ -37,3 +42,11 @@ def prose_html(text: object) -> Markup:
         at = match.end()
     out.append(str(escape(text[at:])))
     return Markup("".join(out))
+
+
+def statement_html(text: object) -> Markup:
+    """A problem statement as printed (the scene page's one place for it): ``prose_html``, with each formula's
+    minus sign kept on the line of the term it signs and of the relation before it."""
+    if text is None or isinstance(text, Markup):
+        return prose_html(text)
+    return prose_html(_SIGNED.sub(lambda m: (f"{m.group(1)}\u00a0" if m.group(1) else "") + "−\u2060", str(text)))

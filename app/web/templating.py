@@ -30,7 +30,7 @@ from app.web.compression import STATIC, compress_once, negotiate
 from app.web.embed_views import embeddable
 from app.web.embed_views import offers as embed_offers
 from app.web.mathml import mathml
-from app.web.prose import prose_html
+from app.web.prose import prose_html, statement_html
 
 
 class ClassroomStaticFiles(StaticFiles):
@@ -145,4 +145,6 @@ templates.env.globals["chapter_about"] = ABOUT
 templates.env.globals["slider_steps"] = SLIDER_STEPS  # the controls' slider resolution, for the browser
 templates.env.filters["mathml"] = mathml
 templates.env.filters["prose"] = prose_html  # a sentence's symbols with their subscripts set (app/web/prose.py)
+# a problem statement: prose, with each formula's minus sign kept on the line of its term
+templates.env.filters["statement"] = statement_html
 templates.env.filters["unit"] = unit_text  # a unit as printed: m/s², m⁻¹ (app/viz/page_model.py)

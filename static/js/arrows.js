@@ -4,6 +4,7 @@
  */
 import { blockBase } from "./bodies.js";
 import { HANDLE_RADIUS } from "./drag.js";
+import { wheelsAt } from "./links.js";
 
 const FORCE_COLORS = ["#7b1fa2", "#00796b", "#c62828"];
 
@@ -109,8 +110,9 @@ export function drawHandle(ctx, h, dpr) {
 
 export const HANDLE_LABEL = "drag: initial velocity";
 
-/** Points along every rod, string and spring at the first instant, about 8 CSS pixels apart, and the fixed points
- * (pivots, anchors): what the handle's words should not cover where there is room (handleWordsBox). */
+/** Points along every rod, string and spring at the first instant, about 8 CSS pixels apart, the fixed points
+ * (pivots, anchors), and each wheel's hub and rim (a pulley: prof-k 12, the words lay across the movable one on a
+ * phone): what the handle's words should not cover where there is room (handleWordsBox). */
 export function linePoints(player, dpr) {
   const out = (player.fixed || []).map((p) => player.at(p, 0));
   for (const link of player.spec.links || []) {
@@ -118,19 +120,26 @@ export function linePoints(player, dpr) {
     const n = Math.max(1, Math.ceil(Math.hypot(bx - ax, by - ay) / (8 * dpr)));
     for (let k = 0; k <= n; k++) out.push([ax + ((bx - ax) * k) / n, ay + ((by - ay) * k) / n]);
   }
+  for (const { x, y, r } of wheelsAt(player, 0)) {
+    out.push([x, y]);
+    const n = Math.max(8, Math.ceil((2 * Math.PI * r) / (8 * dpr)));
+    for (let k = 0; k < n; k++) out.push([x + r * Math.cos((2 * Math.PI * k) / n), y + r * Math.sin((2 * Math.PI * k) / n)]);
+  }
   return out;
 }
 
 // the height of the handle's words, CSS pixels (their font and padding: .handle-label in site.css)
 export const HANDLE_WORDS_HIGH = 22;
+// how far from a body (CSS pixels) its label may reach: bodies.js sets it 26 px below the centre, 13 px high
+export const LABEL_ROOM = 30;
 
 /**
  * Where the handle's words go on the canvas (device pixels: their box [x0, y0, x1, y1]), ``wide`` device pixels
- * wide: the first of right of the handle and above it, left, centred; the same below it; then a line higher or lower, that
- * stays inside the canvas and covers no body (``placed``, the bodies' centres) — a body at the top of the view,
- * the double pendulum's lower bob at 2 rad, was hidden under them (prof-h 7) — and, where a place allows it, no
- * rod, string, spring or pivot either (``lines``, from linePoints: the physical pendulum's rod ran under them on a
- * phone). One home: the words (labelHandle) and the bodies' labels that keep clear of them (bodies.js) both place
+ * wide: the first of right of the handle and above it, left, centred; the same below it; then one to three lines higher
+ * or lower, that stays inside the canvas and covers no body (``placed``, the bodies' centres) — a body at the top of
+ * the view, the double pendulum's lower bob at 2 rad, was hidden under them (prof-h 7) — and, where a place allows it,
+ * no rod, string, spring, pivot or wheel either (``lines``, from linePoints: the physical pendulum's rod ran under
+ * them on a phone); where none does, the place that covers the fewest of them. One home: the words (labelHandle) and the bodies' labels that keep clear of them (bodies.js) both place
  * them here.
  */
 export function handleWordsBox(grip, wide, canvas, placed, dpr, lines = []) {
@@ -140,14 +149,25 @@ export function handleWordsBox(grip, wide, canvas, placed, dpr, lines = []) {
   const inside = (x0, y0) => x0 >= 0 && x0 + wide <= canvas.width && y0 >= 0 && y0 + high <= canvas.height;
   const away = (points, margin) => (x0, y0) => points.every(([bx, by]) =>
     bx < x0 - margin || bx > x0 + wide + margin || by < y0 - margin || by > y0 + high + margin);
-  const free = away(placed, clear), uncrossed = away(lines, 2 * dpr);
+  // the handle's own body (the nearest) kept 12 px clear; every other body with room for its label as well, which
+  // bodies.js sets beside it, up to 26 px above or below (the pulleys' middle mass lost its label under the words)
+  const own = placed.reduce((k, [x, y], j) => (k < 0 || Math.hypot(x - grip.x, y - grip.y) < Math.hypot(placed[k][0] - grip.x, placed[k][1] - grip.y) ? j : k), -1);
+  const others = placed.filter((_, j) => j !== own);
+  const free = (x0, y0) => away(placed.slice(own, own + 1), clear)(x0, y0) && away(others, LABEL_ROOM * dpr)(x0, y0);
+  const uncrossed = away(lines, 2 * dpr);
   // centred on the handle, moved inside the canvas (on a phone neither side may have room)
   const centred = Math.min(Math.max(0, grip.x - wide / 2), canvas.width - wide);
+  // beside the handle first, then one, two, three lines higher or lower: past the bodies hung side by side at the
+  // handle's height and their labels (the pulleys' three masses) there may be room where one line off had none
   const higher = above - high, lower = below + high;
   const spots = [[right, above], [left, above], [centred, above], [right, below], [left, below], [centred, below],
     [right, higher], [centred, higher], [left, higher], [right, lower], [left, lower], [centred, lower]];
-  const [x0, y0] = spots.find(([x, y]) => inside(x, y) && free(x, y) && uncrossed(x, y))
-    ?? spots.find(([x, y]) => inside(x, y) && free(x, y))
+  const room = spots.filter(([x, y]) => inside(x, y) && free(x, y));
+  // clear of every line where a place allows it; else, of the places clear of the bodies, the one that covers the
+  // fewest points of lines and wheels (the first such in the order above), never simply the first
+  const covered = ([x, y]) => lines.filter(([bx, by]) => bx >= x - 2 * dpr && bx <= x + wide + 2 * dpr && by >= y - 2 * dpr && by <= y + high + 2 * dpr).length;
+  const [x0, y0] = room.find(([x, y]) => uncrossed(x, y))
+    ?? room.reduce((best, spot) => (best === null || covered(spot) < covered(best) ? spot : best), null)
     // none clear: above, to the right unless that leaves the canvas (as before any body was looked at)
     ?? [right + wide <= canvas.width ? right : Math.max(0, left), Math.max(0, above)];
   return [x0, y0, x0 + wide, y0 + high];

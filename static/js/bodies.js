@@ -4,6 +4,7 @@
  */
 import { HANDLE_LABEL, handleWordsBox, linePoints } from "./arrows.js";
 import { HANDLE_RADIUS } from "./drag.js";
+import { wheelsAt } from "./links.js";
 
 export const MASS_COLORS = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a"];
 
@@ -48,6 +49,10 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
   const edges = [];
   const outline = (corners) => corners.forEach((c, k) => edges.push([c, corners[(k + 1) % corners.length]]));
   for (const solid of player.spec.solids || []) outline(solid.corners.map((p) => player.at(p, i)));
+  // a wheel's rim as links.js draws it (a label over the movable pulley hid its lower half on a phone)
+  for (const { x, y, r } of wheelsAt(player, i)) {
+    outline(Array.from({ length: 24 }, (_, k) => [x + r * Math.cos((k * Math.PI) / 12), y + r * Math.sin((k * Math.PI) / 12)]));
+  }
   player.masses.forEach((p, k) => {
     const base = blockBase(player, p, i, dpr, ...placed[k]);
     if (!base) return;

@@ -40,15 +40,25 @@ function zigzag(ctx, x0, y0, x1, y1, dpr) {
   ctx.lineTo(x1, y1);
 }
 
+/** Each wheel at instant i on the canvas (device pixels): its centre, its radius and where the string wraps; the
+ * one home of their geometry (drawn here, kept clear by the handle's words and the bodies' labels). */
+export function wheelsAt(player, i) {
+  const out = [];
+  for (const w of player.wheels || []) {
+    const [x, y] = player.at(w.at, i);
+    // a frame not laid out yet (a folded panel's canvas) may carry a negative scale: the wheel's size is its magnitude
+    const r = Math.abs(w.r(player.run.envAt(i)) * player.camera.frame.scale);
+    if (Number.isFinite(r) && r > 0) out.push({ x, y, r, wrap: w.wrap });
+  }
+  return out;
+}
+
 /** The wheels at instant i: the rim, the hub, and the string wrapped over its top (a fixed pulley) or
  * under its bottom (the movable one); the number drawn. */
 export function drawWheels(player, ctx, i, dpr, slack) {
   let count = 0;
-  for (const w of player.wheels) {
-    const [x, y] = player.at(w.at, i);
-    // a frame not laid out yet (a folded panel's canvas) may carry a negative scale: the wheel's size is its magnitude
-    const env = player.run.envAt(i), r = Math.abs(w.r(env) * player.camera.frame.scale);
-    if (!Number.isFinite(r) || r === 0) continue;
+  for (const w of wheelsAt(player, i)) {
+    const { x, y, r } = w;
     ctx.fillStyle = "#fff"; ctx.strokeStyle = "#6b747e"; ctx.lineWidth = 2 * dpr;
     ctx.beginPath(); ctx.arc(x, y, r, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
     ctx.fillStyle = "#6b747e"; ctx.beginPath(); ctx.arc(x, y, 3 * dpr, 0, 2 * Math.PI); ctx.fill();

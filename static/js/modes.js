@@ -20,7 +20,7 @@
  * parameter values the modes shown were computed at.
  */
 import { Player } from "./animation.js";
-import { fmt, table } from "./summaries.js";
+import { fmt, percent, table } from "./summaries.js";
 import { proseReadout } from "./prose.js";
 
 const FPS = 60;
@@ -214,11 +214,11 @@ export class ModesPanel {
     const m = this.measured && e && this.measured.find((x) => this.near(x, e));
     if (!m) { this.freq.replaceChildren(); return; }
     // a difference below 0.001 % is rounding and integration error, not physics: say so instead of printing it
-    const percent = (x) => (Math.abs(x) < 1e-5 ? "< 0.001 %" : `${fmt(100 * x)} %`);
+    const difference = (x) => (Math.abs(x) < 1e-5 ? "< 0.001 %" : percent(x));
     table(this.freq, `ω in rad/s at ${this.values()}: predicted, and measured in a run along each mode (amplitude ${fmt(m.modes[0]?.amplitude)})`,
       ["mode", "predicted", "measured", "difference"],
       m.modes.map((x, k) => [`${k + 1}`, x.predicted === null ? `ω² = ${fmt(x.omega_squared)}` : fmt(x.predicted), x.measured === null ? "–" : fmt(x.measured),
-        x.relative_difference === null ? "–" : percent(x.relative_difference)]));
+        x.relative_difference === null ? "–" : difference(x.relative_difference)]));
     this.freq.dataset.measured = JSON.stringify(m.modes.map((x) => [x.predicted, x.measured]));
   }
 

@@ -45,7 +45,10 @@ export function layout(extra = {}) {
 export const AXIS_FORMAT = { exponentformat: "power", showexponent: "all", separatethousands: false };
 // automargin with a standoff keeps the title clear of the tick labels, however wide they are (10⁻⁹ on a phone)
 // an axis title and a legend name set their subscripts as the page's sentences do (prose.js): U_eff -> U<sub>eff</sub>
-export const axis = (text, extra = {}) => ({ title: { text: proseHTML(text), standoff: 6 }, automargin: true, gridcolor: "#e6e8eb", zerolinecolor: "#b8bec5", ...AXIS_FORMAT, ...extra });
+// the tick labels stand outside the plotting area, past a short tick mark, so no curve runs through them (prof-k
+// 13: a curve starting at t = 0 ran through the energy plot's 0, 1, 2, 3, 4); automargin makes room for them
+export const TICKS = { ticks: "outside", ticklen: 5, tickcolor: "#b8bec5", ticklabelposition: "outside" };
+export const axis = (text, extra = {}) => ({ title: { text: proseHTML(text), standoff: 6 }, automargin: true, gridcolor: "#e6e8eb", zerolinecolor: "#b8bec5", ...TICKS, ...AXIS_FORMAT, ...extra });
 
 /** The SI unit of the generalized momentum of a coordinate measured in `unit` (rad or m). */
 export const momentumUnit = (unit) => (unit === "rad" ? "kg·m²/s" : unit === "m" ? "kg·m/s" : "SI units");

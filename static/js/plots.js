@@ -21,7 +21,7 @@ import { ModesPanel } from "./modes.js";
 import { PhasePanel } from "./phase.js";
 import { PoincarePanel } from "./poincare.js";
 import { EffectivePotentialPanel, SmallOscillationsPanel } from "./reduction.js";
-import { constantOrRange, fmt, magnitude, median, relativeFloor, seriesTable, sharedUnit, table } from "./summaries.js";
+import { constantOrRange, fmt, magnitude, median, percent, relativeFloor, seriesTable, sharedUnit, table } from "./summaries.js";
 
 /** A panel of quantities against time, with a second row for their change since t = 0. */
 class TimePanel extends PreviewPanel {
@@ -63,7 +63,7 @@ class EnergyPanel extends TimePanel {
       const big = Math.max(...finite(d).map(Math.abs));
       if (big <= run.resolution) return "≈ 0 (within the integration's error)";
       const share = big / scale;
-      return `${fmt(big)} J (${share >= 0.01 ? `${fmt(100 * share)} %` : `${fmt(share)}`} of the largest energy in the run, ${fmt(scale)} J)`;
+      return `${fmt(big)} J (${share >= 0.01 ? percent(share) : `${fmt(share)}`} of the largest energy in the run, ${fmt(scale)} J)`;
     };
     const changes = undecided ? `h changed by ${change(dh)}` : `E changed by ${change(dE)}; h changed by ${change(dh)}`;
     this.readout.textContent = `Largest change since t = 0: ${changes}. ${what}`;
@@ -128,7 +128,7 @@ class ConstraintForcePanel extends TimePanel {
         if (count) {
           top.push({ name: `${c.label} < 0: slack`, values: slack, color: "#c62828" });
           const first = run.t[slack.findIndex((v) => v !== null)];
-          notes.push(`${capital(c.label)} goes negative (the constraint would have to push, so it goes slack) first at t = ${fmt(first)} s, for ${fmt((100 * count) / values.length)} % of the run.`);
+          notes.push(`${capital(c.label)} goes negative (the constraint would have to push, so it goes slack) first at t = ${fmt(first)} s, for ${percent(count / values.length)} of the run.`);
         } else notes.push(`${capital(c.label)} stays positive: the constraint holds throughout.`);
       }
     });

@@ -12,7 +12,7 @@
  */
 import { compile } from "./expr.js";
 import { axis, COLORS, finite, layout, PreviewPanel, react, titled } from "./plotkit.js";
-import { fmt, fmtResolved, table } from "./summaries.js";
+import { fmt, percent, table } from "./summaries.js";
 
 /** The one-coordinate reduction evaluated for a run: U_eff, m_eff, the momenta's values, E_r(t). */
 export function reduced(run) {
@@ -217,7 +217,7 @@ export class SmallOscillationsPanel extends PreviewPanel {
       // the measurement resolves the frequency to about the sampling's share of a period, and to the run's error
       const dt = run.t.length > 1 ? run.t[1] - run.t[0] : 0;
       const resolution = 100 * Math.max((measured * dt / (2 * Math.PI)) ** 2, (run.stats.error_estimate || 0) / Math.max(amp, 1e-300), 1e-9);
-      this.readout.textContent = `About ${lr} = ${fmt(eq.x)} ${unit}: predicted ${letter} = ${fmt(predicted)} rad/s, measured ${fmt(measured)} rad/s (${fmtResolved((100 * (measured - predicted)) / predicted, resolution)} %) for this run from ${lr} = ${fmt(values[0])} ${unit}, which swings between ${lr} = ${fmt(Math.min(...values))} and ${fmt(Math.max(...values))} ${unit}. ${run.data.exact_frequency || "The prediction holds as the amplitude goes to zero."}`;
+      this.readout.textContent = `About ${lr} = ${fmt(eq.x)} ${unit}: predicted ${letter} = ${fmt(predicted)} rad/s, measured ${fmt(measured)} rad/s (${percent((measured - predicted) / predicted, resolution / 100)}) for this run from ${lr} = ${fmt(values[0])} ${unit}, which swings between ${lr} = ${fmt(Math.min(...values))} and ${fmt(Math.max(...values))} ${unit}. ${run.data.exact_frequency || "The prediction holds as the amplitude goes to zero."}`;
     }
   }
 

@@ -5,12 +5,13 @@
  *
  * For tests and tools it records what it drew: canvas.dataset.bodies (each body's label and position
  * in CSS pixels), canvas.dataset.drawn (counts, the slack string, forces, the run's event) and
- * canvas.dataset.handle (the velocity handle's position in CSS pixels, "" when none is shown).  The
+ * canvas.dataset.handle (the velocity handle's position in CSS pixels, "" when none is shown), canvas.dataset.wheels
+ * (each wheel's centre and radius in CSS pixels at the first instant).  The
  * handle carries a label in the page ("drag: initial velocity", arrows.js labelHandle) until it is first held.
  */
 import { drawForces, drawHandle, labelHandle } from "./arrows.js";
 import { drawBodies, drawFixed, drawLabels, drawTrails } from "./bodies.js";
-import { drawLinks, drawWheels } from "./links.js";
+import { drawLinks, drawWheels, wheelsAt } from "./links.js";
 import { drawCurve, drawSolids, message, scaleBar } from "./scenery.js";
 
 export function drawFrame(player, i) {
@@ -49,4 +50,5 @@ export function drawFrame(player, i) {
   if (handle) drawHandle(ctx, handle, dpr);
   labelHandle(player, handle, dpr);
   canvas.dataset.handle = handle ? JSON.stringify({ x: Math.round(handle.x / dpr), y: Math.round(handle.y / dpr) }) : "";
+  if (i === 0) canvas.dataset.wheels = JSON.stringify(wheelsAt(player, 0).map(({ x, y, r }) => [x / dpr, y / dpr, r / dpr]));
 }

@@ -4,23 +4,31 @@
  *   seriesTable(container, caption, t, series)  a table of each series' value at the
  *       start and end of the run, its minimum and maximum (series: [{name, values}])
  *   table(container, caption, headers, rows)    any table (rows: arrays of cells)
- *   fmt(x)                                       a number for reading: 4 significant digits
+ *   fmt(x, digits)                               a number for reading: 4 significant digits (or `digits`)
+ *   fmtResolved(x, floor, digits)                a number known only to `floor`: no digit finer than it
+ *   percent(x, floor)                            a relative difference x in per cent: 3 digits at most
  */
 
 import { proseHTML } from "./prose.js";
 
-export function fmt(x) {
+// the significant digits of a number read off a run or a formula, as a textbook prints it (6.414 rad/s), and
+// of a relative difference, itself the small difference of two such numbers (−6.22 %, not −6.221 %: prof-k 13)
+export const DIGITS = 4;
+export const DIFFERENCE_DIGITS = 3;
+
+/** A number for reading: `digits` significant digits, a true minus sign, powers of ten beyond 10⁵ and below 10⁻³. */
+export function fmt(x, digits = DIGITS) {
   if (x === null || x === undefined || Number.isNaN(x)) return "–";
-  if (x < 0) return `−${fmt(-x)}`; // a typeset minus sign, not a hyphen
+  if (x < 0) return `−${fmt(-x, digits)}`; // a typeset minus sign, not a hyphen
   if (!Number.isFinite(x)) return x > 0 ? "∞" : "−∞";
   if (x === 0) return "0";
   const a = Math.abs(x);
   if (a >= 1e5 || a < 1e-3) {
-    const [mantissa, exponent] = x.toExponential(3).split("e");
+    const [mantissa, exponent] = x.toExponential(digits - 1).split("e");
     const sup = String(Number(exponent)).replace("-", "⁻").replace(/\d/g, (d) => "⁰¹²³⁴⁵⁶⁷⁸⁹"[d]);
     return `${Number(mantissa)} × 10${sup}`;
   }
-  return String(Number(x.toPrecision(4)));
+  return String(Number(x.toPrecision(digits)));
 }
 
 /** The median of finite numbers (null for none). */
@@ -35,9 +43,16 @@ export function median(values) {
  * A value for reading that is only resolved down to `floor` (an error estimate, the round-off
  * of the values it comes from): below it, "≈ 0" rather than digits of noise.
  */
-export function fmtResolved(x, floor) {
-  return Number.isFinite(x) && Number.isFinite(floor) && Math.abs(x) <= floor ? "≈ 0" : fmt(x);
+export function fmtResolved(x, floor, digits = DIGITS) {
+  if (!Number.isFinite(x) || !(floor > 0) || !Number.isFinite(floor)) return fmt(x, digits);
+  if (Math.abs(x) <= floor) return "≈ 0";
+  // the digits from x's leading one down to the floor's: a value known to ±0.003 has no digit below 0.001
+  const known = Math.floor(Math.log10(Math.abs(x))) - Math.floor(Math.log10(floor)) + 1;
+  return fmt(x, Math.max(1, Math.min(digits, known)));
 }
+
+/** A relative difference x (0.01 for 1 %) in per cent, known to the relative `floor`: "−6.22 %", "≈ 0 %". */
+export const percent = (x, floor = 0) => `${fmtResolved(100 * x, 100 * floor, DIFFERENCE_DIGITS)} %`;
 
 /** "is constant: 0.8774 N" when a series does not vary beyond round-off, else "ranges from a to b N". */
 export function constantOrRange(values, unit = "") {

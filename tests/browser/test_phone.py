@@ -157,3 +157,36 @@ def test_each_mass_label_sits_nearer_its_mass_than_any_other_body_or_the_handle(
                 assert not (left - 6 < x < right + 6 and top - 6 < y < bottom + 6), (label, bodies, w)
     finally:
         context.close()
+
+
+@pytest.mark.parametrize("scene_id", ["pulley", "double-pendulum"])
+def test_the_handle_words_keep_off_the_wheels_the_bodies_and_their_labels(browser, live_server, artifacts, scene_id):
+    # prof-k 12: on a phone the pulleys' "drag: initial velocity (now 0)" lay across the movable pulley; the words
+    # stay beside the handle (test_embed_views) and cover no wheel, no body and no body's label
+    context, page = _phone_page(browser, live_server, scene_id)
+    try:
+        canvas = page.locator("canvas.mechanism").first
+        canvas.scroll_into_view_if_needed()
+        page.wait_for_function("document.querySelector('canvas.mechanism').dataset.labels !== undefined")
+        page.wait_for_selector(".handle-label", state="visible")
+        page.wait_for_timeout(300)
+        canvas.screenshot(path=artifacts / f"handle-words-phone-{scene_id}.png")
+        w, c = page.locator(".handle-label").first.bounding_box(), canvas.bounding_box()
+        left, top = w["x"] - c["x"], w["y"] - c["y"]
+        right, bottom = left + w["width"], top + w["height"]
+        wheels = json.loads(canvas.get_attribute("data-wheels") or "[]")
+        assert len(wheels) == (3 if scene_id == "pulley" else 0), wheels
+        for x, y, r in wheels:
+            # the nearest point of the words' box to the wheel's centre lies outside its rim
+            nx, ny = min(max(x, left), right), min(max(y, top), bottom)
+            assert (nx - x) ** 2 + (ny - y) ** 2 > r**2, (wheels, w)
+        for label, (x, y) in {
+            b["label"]: (b["x"], b["y"]) for b in json.loads(canvas.get_attribute("data-bodies"))
+        }.items():
+            assert not (left - 6 < x < right + 6 and top - 6 < y < bottom + 6), (label, w)
+        for label, (x0, y0, x1, y1) in {
+            x["label"]: x["box"] for x in json.loads(canvas.get_attribute("data-labels"))
+        }.items():
+            assert not (x0 < right and x1 > left and y0 < bottom and y1 > top), (label, w)
+    finally:
+        context.close()

@@ -1,6 +1,7 @@
 """The new JSON blocks and steps: ``hamilton`` and ``normal_modes`` in every derivation document."""
 
 import math
+import re
 
 import pytest
 import sympy as sp
@@ -141,3 +142,21 @@ def test_a_runaway_rate_is_printed_over_its_whole_radicand():
     doc = derivation_document("physical-pendulum")
     latex = " ".join(row for s in doc["steps"] for row in [s["latex"]] if "runs away" in s["latex"])
     assert r"\sqrt{\frac{3 g}{2 l}}" in latex and r"\sqrt{6}" not in latex
+
+
+def _figures_in(number: str) -> int:
+    return len(number.replace(".", "").lstrip("0"))
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_a_number_found_numerically_is_printed_to_four_figures(scene_id):
+    # prof-k 13: the spherical pendulum's steady motion printed θ = 2.48602, p_φ = 1.30733 kg m² s⁻¹
+    for step in derivation_document(scene_id)["steps"]:
+        long = [n for n in re.findall(r"\d+\.\d+", step["latex"]) if _figures_in(n) > 4]
+        assert not long, (step["key"], long)
+
+
+def test_the_steady_conical_motion_reads_theta_and_its_held_momentum_to_four_figures():
+    steps = {s["key"]: s["latex"] for s in derivation_document("spherical-pendulum")["steps"]}
+    steady = next(latex for key, latex in steps.items() if key.startswith("steady-motion"))
+    assert re.search(r"2\.486(?!\d)", steady) and re.search(r"1\.307(?!\d)", steady), steady

@@ -1,5 +1,7 @@
 """Each scene names its drawing family; the diagrams and the animations are kept per family, not per scene."""
 
+import re
+
 import pytest
 
 from app.scenes import SCENES
@@ -42,7 +44,30 @@ def test_the_pulley_figure_marks_all_three_heights_its_caption_names():
         assert f">{name}</text>" in svg, name
     # prof-h 2: measured from the line where U = 0, the string makes Y = −(y₁ + y₂)/2 − c negative: M hangs
     # below the line while the end masses are above it, and the figure says so
-    assert ">U = 0</text>" in svg and ">&lt; 0</text>" in svg and "(Y < 0)" in SCENES["pulley"].figure
+    assert ">U = 0</text>" in svg and "(Y < 0)" in SCENES["pulley"].figure
+    # prof-k 3: no stray "< 0" floats beside Y's arrow; the arrow and the caption say it
+    assert "&lt; 0</text>" not in svg
+
+
+def test_the_pulley_figure_draws_every_strand_vertical():
+    # prof-k 3: Y = −(y₁ + y₂)/2 − c holds only for vertical strands (a V of slanted ones makes the loop's length
+    # nonlinear in Y), so every strand is vertical and leaves its pulley at a side, tangent to the rim
+    svg = card("pulley")
+    pulleys = [tuple(float(v) for v in m) for m in re.findall(r'<circle cx="([\d.]+)" cy="([\d.]+)" r="([\d.]+)"', svg)]
+    strands = re.findall(r'<line x1="([\d.]+)" y1="([\d.]+)" x2="([\d.]+)" y2="([\d.]+)" stroke="#1b1f24" '
+                         r'stroke-width="2"/>', svg)  # fmt: skip
+    assert len(pulleys) == 3 and len(strands) >= 4
+    sides = {(cx + sign * r, cy) for cx, cy, r in pulleys for sign in (-1, 1)}
+    for x1, y1, x2, y2 in ((float(v) for v in s) for s in strands):
+        assert x1 == x2, (x1, y1, x2, y2)
+    tangent = [s for s in strands if (float(s[0]), float(s[1])) in sides]
+    # the two end masses' strands and the movable pulley's two, each from a fixed pulley's side
+    assert len(tangent) == 4
+    movable = min(pulleys, key=lambda c: c[2])
+    assert sorted(float(s[0]) for s in tangent if float(s[3]) == movable[1]) == [
+        movable[0] - movable[2],
+        movable[0] + movable[2],
+    ]
 
 
 @pytest.mark.parametrize("scene_id", ["spherical-pendulum", "helix-bead"])

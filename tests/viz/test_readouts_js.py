@@ -102,3 +102,14 @@ def test_the_run_status_says_what_its_error_is_of_and_in_which_unit():
 
 def test_the_run_time_shown_is_a_median():
     assert node("summaries.js", "(m) => [m.median([3, 1, 2]), m.median([4, 1, 2, 3]), m.median([])]") == [2, 2.5, None]
+
+
+def test_a_number_shows_no_digit_finer_than_its_resolution_and_a_difference_three_figures():
+    # prof-k 13: "−6.221 %" and θ = 2.48602: a relative difference reads to three figures, and a value known to
+    # ±0.003 shows no digit below 0.001
+    out = node(
+        "summaries.js",
+        "(m) => [m.percent(-0.062213), m.percent(-0.062213, 2e-5), m.percent(-0.062213, 3e-3), m.percent(4e-6, 1e-5),"
+        " m.fmtResolved(2.486021, 0.003), m.fmtResolved(2.486021, 1e-9), m.fmt(2.486021), m.fmt(-1234567, 3)]",
+    )
+    assert out == ["−6.22 %", "−6.22 %", "−6.2 %", "≈ 0 %", "2.486", "2.486", "2.486", "−1.23 × 10⁶"]

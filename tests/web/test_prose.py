@@ -50,3 +50,12 @@ def test_a_scene_page_prints_no_underscore_in_its_sentences(client):
     found = re.search(r"[A-Za-zΑ-Ωα-ω]_[A-Za-z0-9θφ]", text)
     assert not found, text[found.start() - 300 : found.end() + 50]
     assert "U<sub>eff</sub>" in html and "p<sub>θ</sub>" in html
+
+
+def test_a_statement_keeps_a_formulas_sign_with_its_term(client):
+    # prof-k 12: on a phone the pulley's statement broke after the sign, "Y = −" | "(y₁ + y₂)/2 − c"; the sign is
+    # joined to its term by a word joiner and to the "=" before it by a no-break space, a spaced minus still breaks
+    html = client.get("/scenes/pulley").text
+    statement = re.search(r'<p class="statement">(.*?)</p>', html, flags=re.S).group(1)
+    assert "Y =\u00a0−\u2060(y₁ + y₂)/2 − c" in statement
+    assert re.search(r"[=<>≈≤≥] −|−[^\s\u2060]", statement) is None, statement
