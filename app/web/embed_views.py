@@ -13,7 +13,7 @@ from urllib.parse import urlencode
 from app.scenes import SCENES
 
 VIEWS: dict[str, dict[str, Any]] = {
-    "full": {"says": "the animation, the initial conditions, the parameters and the run's duration", "height": 1760},
+    "full": {"says": "the animation, the initial conditions, the parameters and the run's duration", "height": 1840},
     "compact": {"says": "the animation with Play and the time slider alone, no forms", "height": 540},
 }
 DEFAULT_VIEW = "full"
