@@ -270,11 +270,13 @@ def _turned(relation: sp.Relational) -> sp.Relational:
     return sp.StrictGreaterThan(relation.rhs, relation.lhs, evaluate=False)
 
 
-def _exists_note(r: ReducedEquilibrium, pr: Printer, present: bool = True) -> str:
-    """Beside an equilibrium that exists only for some parameters: the condition, and whether it holds now."""
+NOT_NOW = r"(\text{not at the current parameters})"
+
+
+def _exists_note(r: ReducedEquilibrium, pr: Printer) -> str:
+    """Beside an equilibrium that exists only for some parameters: the condition."""
     assert r.exists is not None
-    now = "" if present else r"\text{; not at the current parameters}"
-    return rf"\quad (\text{{exists only when }} {_relation(r.exists, pr)}{now})"
+    return rf"\quad (\text{{exists only when }} {_relation(r.exists, pr)})"
 
 
 def _absent(nm: NormalModes, found: list[Equilibrium], d: Derivation) -> list[ReducedEquilibrium]:
@@ -393,11 +395,11 @@ def _singular_points(nm: NormalModes, d: Derivation, pr: Printer, vname: str = "
             if said and w2 is not None:
                 said += rf",\quad {notation.letter('frequency', d)}^2 = {pr.tex(w2)}"
             where += rf":\quad {said}" if said else ""
-            # judged by the potential along the coordinate that keeps a value (θ at a pole), said in words
-            note = (
-                rf"(\text{{a {extremum} of }} {vname} \text{{ along }} {pr.tex(sym[kept])}\text{{; }} {names}"
-                r"\text{ has no value here: the coordinates fail, not the physics})"
-            )
+            # judged by the potential along the coordinate that keeps a value (θ at a pole), said in words on a
+            # row of its own, so that a phone's narrow box needs no sideways scroll
+            rows.append(where)
+            where = rf"(\text{{a {extremum} of }} {vname} \text{{ along }} {pr.tex(sym[kept])})"
+            note = rf"(\text{{the coordinates fail: }} {names} \text{{ has no value}})"
         elif lost:
             names = r",\ ".join(pr.tex(sym[n]) for n in lost)
             note = rf"(\text{{the coordinates fail: }} {names} \text{{ has no value}})"
@@ -526,7 +528,8 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
     absent = _absent(nm, found, d)
     coordinate = d.reduction.coordinate if d.reduction is not None else ""
     for r in absent:
-        listed.append(f"{pr.tex(sym_q[coordinate])} = {pr.root(r.position)}{_exists_note(r, pr, present=False)}")
+        # whether it holds now on a row of its own, so that a phone's narrow box needs no sideways scroll
+        listed += [f"{pr.tex(sym_q[coordinate])} = {pr.root(r.position)}{_exists_note(r, pr)}", NOT_NOW]
     none = none and not absent
     if none:
         listed.append(r"\text{no equilibrium}")

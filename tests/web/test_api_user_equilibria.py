@@ -226,7 +226,7 @@ def test_a_typed_hoops_side_equilibria_say_where_they_exist_and_stay_listed_wher
     assert "it is stable wherever it exists" in tilted["explanation"]
     slow = derive(client, _typed_hoop(3.0))
     (eq,) = steps(slow, "equilibria")
-    gone = r"\arccos {\frac{g}{R w^{2}}}\quad (\text{exists only when } R w^{2} > g\text{; not at the current parameters})"
+    gone = r"\arccos {\frac{g}{R w^{2}}}\quad (\text{exists only when } R w^{2} > g) \\ &(\text{not at the current parameters})"
     assert eq["latex"].count(gone) == 2
     assert (
         "θ = −arccos(g/(Rw²)) and θ = arccos(g/(Rw²)) are equilibria only when Rw² > g, which does not hold at the "
@@ -246,12 +246,12 @@ def test_the_spherical_pendulums_poles_say_which_is_stable(client):
     assert response.status_code == 200, response.text
     (eq,) = steps(response.json(), "equilibria")
     # θ is measured from the upward vertical: U = mgR cos θ is greatest at θ = 0, least at θ = π
-    assert r"\theta &= 0:\quad \text{unstable} \\ &(\text{a maximum of } U \text{ along } \theta" in eq["latex"]
+    assert r"\theta &= 0:\quad \text{unstable} \\ &(\text{a maximum of } U \text{ along } \theta) \\" in eq["latex"]
     assert (
         r"\theta &= \pi:\quad \text{stable},\quad \omega^2 = \frac{g}{R} \\ &(\text{a minimum of } U \text{ along } "
-        r"\theta" in eq["latex"]
+        r"\theta) \\" in eq["latex"]
     )
-    assert eq["latex"].count(r"\varphi\text{ has no value here: the coordinates fail, not the physics})") == 2
+    assert eq["latex"].count(r"&(\text{the coordinates fail: } \varphi \text{ has no value})") == 2
 
 
 def test_a_typed_pendulum_on_a_sliding_spring_mounted_pivot_prints_its_discriminant_as_a_square_less_a_product(client):
