@@ -972,8 +972,9 @@ def _one_coordinate_step(
         rate = sp.Pow(-mode.exact, sp.S.Half, evaluate=False) if mode.exact is not None else None
         shown = pr.tex(mode.exact) if mode.exact is not None else _figures(w2) + PER_SECOND_SQUARED
         # a sign that depends on the parameters is the sign at the current ones, said in the equation itself
-        now = r"\;\text{ at the current parameters}" if conditional is not None else ""
-        rows.append(rf"{wt}^2 = {shown} < 0{now}\quad \text{{(no oscillation: it runs away)}}")
+        # (braced, so that a phone's line never breaks between "<" and "0")
+        negative = r"{\;<\;0}\quad \text{at the current parameters}" if conditional is not None else "< 0"
+        rows.append(rf"{wt}^2 = {shown} {negative}\quad \text{{(no oscillation: it runs away)}}")
         rows.append(r"\text{rate } \sqrt{-" + wt + "^2} = " + _closed(rate, math.sqrt(-w2), r"\,\mathrm{s}^{-1}", pr))
         what = "No oscillation about"
         why = (

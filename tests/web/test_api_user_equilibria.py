@@ -208,7 +208,7 @@ def test_a_typed_hoops_bottom_states_when_it_is_stable_above_and_below_the_bifur
             "explanation"
         ]
         # the sign shown is the current parameters' own, and said so in the equation
-        assert (r"<0\;\text{atthecurrentparameters}" in bottom["latex"].replace(" ", "")) == (sign == "<"), w
+        assert (r"{\;<\;0}\quad\text{atthecurrentparameters}" in bottom["latex"].replace(" ", "")) == (sign == "<"), w
         assert "at the current parameters" in bottom["explanation"]
     # the top is unstable for every w: no condition, no "at the current parameters"
     top = _about(derive(client, _typed_hoop(7.0)), "θ = π")
