@@ -21,6 +21,7 @@ from app.engine.derive import Derivation
 from app.engine.dimensions import add_dims, parse_unit, system_dimensions, unit_latex, unit_text
 from app.engine.hamilton import Hamilton
 from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode, NormalModes, defaults
+from app.engine.reduction import Equilibrium as ReducedEquilibrium
 from app.engine.report import Printer, _step, display, plain_name
 from app.engine.stability import Linear
 from app.engine.textbook import unicode_text
@@ -169,7 +170,36 @@ def _named_radicand(e: Equilibrium, pr: Printer, d: Derivation) -> tuple[sp.Expr
     if isinstance(radicand, sp.Mul) and sums:
         widest = max(sums, key=sp.count_ops)
         shown = sp.Add(*[radicand / widest * term for term in sp.Add.make_args(widest)])
-    return sp.sqrt(radicand), tex, f"{tex} = {pr.tex(shown)}"
+    expanded = pr.tex(shown)
+    square = _completed_square(radicand, exact, sp.sqrt(radicand), pr)
+    # the shorter of the two: Δ = [(M + m)g + kl]² − 4Mgkl, not its six terms multiplied out
+    if square is not None and width(square) < width(expanded):
+        expanded = square
+    return sp.sqrt(radicand), tex, f"{tex} = {expanded}"
+
+
+def _completed_square(radicand: sp.Expr, exact: list[sp.Expr], root: sp.Expr, pr: Printer) -> str | None:
+    """The radicand of ω² = c (A ± √Δ) as a textbook prints the discriminant b² − 4ac of a quadratic in ω²: the
+    square of the term A beside the root, less (or plus) what is left when that is a single product,
+    Δ = [(M + m)g + kl]² − 4Mgkl; None where what is left is a sum, or no ω² has that form."""
+    mark = sp.Dummy("root")
+    for x in exact:
+        if not x.has(root):
+            continue
+        numerator = sp.fraction(sp.together(x.xreplace({root: mark})))[0]
+        sums = [f for f in sp.Mul.make_args(numerator) if isinstance(f, sp.Add) and f.has(mark)]
+        if len(sums) != 1 or sums[0].coeff(mark) not in (1, -1):
+            continue
+        beside = sums[0] - sums[0].coeff(mark) * mark
+        if beside == 0 or beside.has(mark) or not isinstance(beside, sp.Add):
+            continue
+        # Δ = A² − P: P a single product (4Mgkl), or Δ = A² + P where P is negative
+        left = sp.factor(sp.expand(beside**2 - radicand))
+        if left == 0 or isinstance(left, sp.Add) or any(isinstance(f, sp.Add) for f in sp.Mul.make_args(left)):
+            continue
+        sign, size = ("-", left) if not left.could_extract_minus_sign() else ("+", -left)
+        return rf"\left[{pr.tex(beside)}\right]^{{2}} {sign} {pr.tex(size)}"
+    return None
 
 
 def _with_radicand(exact: sp.Expr, root: sp.Expr, name: str, pr: Printer) -> str | None:
@@ -210,6 +240,50 @@ def _where(e: Equilibrium, pr: Printer, d: Derivation) -> str:
     # a held momentum p_θ = 1 kg·m²/s carries its unit, as every number on the page does
     held = [rf"{pr.tex(sp.Symbol(n))} = {_figures(v)}{momentum_unit(d, n)}" for n, v in e.momenta.items()]
     return r",\; ".join(parts + held)
+
+
+def _reduced(e: Equilibrium, d: Derivation) -> ReducedEquilibrium | None:
+    """The reduction's symbolic equilibrium at the same place as ``e`` (one coordinate, no momentum held): it
+    knows where the place exists (arccos(g/(Rw²)) needs Rw² > g) and when its ω² is positive; None otherwise."""
+    red = d.reduction
+    if red is None or red.momenta or e.momenta or not e.exact or len(e.exact) != 1:
+        return None
+    x = next(iter(e.exact.values()))
+    return next((r for r in red.equilibria if sp.simplify(r.position - x) == 0), None)
+
+
+def _relation(relation: sp.Relational, pr: Printer) -> str:
+    """b > a in LaTeX, each side as the page prints it: R w^{2} > g."""
+    return f"{pr.tex(relation.lhs)} > {pr.tex(relation.rhs)}"
+
+
+def _relation_text(relation: sp.Relational) -> str:
+    """b > a as running text prints it: Rw² > g."""
+    return f"{unicode_text(relation.lhs)} > {unicode_text(relation.rhs)}"
+
+
+def _turned(relation: sp.Relational) -> sp.Relational:
+    """b > a turned round, a > b: where ω² is negative (Rw² > g at the hoop's bottom)."""
+    return sp.StrictGreaterThan(relation.rhs, relation.lhs, evaluate=False)
+
+
+NOT_NOW = r"(\text{not at the current parameters})"
+
+
+def _exists_note(r: ReducedEquilibrium, pr: Printer) -> str:
+    """Beside an equilibrium that exists only for some parameters: the condition."""
+    assert r.exists is not None
+    return rf"\quad (\text{{exists only when }} {_relation(r.exists, pr)})"
+
+
+def _absent(nm: NormalModes, found: list[Equilibrium], d: Derivation) -> list[ReducedEquilibrium]:
+    """The reduction's equilibria that exist only for some parameters and not at the current ones (the hoop's
+    θ = ±arccos(g/(Rw²)) while Rw² < g): the numerical search cannot find them, but they are part of the answer."""
+    red = d.reduction
+    if red is None or red.momenta or nm.everywhere:
+        return []
+    here = [r for e in found if (r := _reduced(e, d)) is not None]
+    return [r for r in red.equilibria if r.exists is not None and all(r is not h for h in here)]
 
 
 def _family_of(e: Equilibrium, nm: NormalModes, d: Derivation) -> dict[str, sp.Expr] | None:
@@ -289,7 +363,7 @@ def _points(
     return rows
 
 
-def _singular_points(nm: NormalModes, d: Derivation, pr: Printer) -> list[str]:
+def _singular_points(nm: NormalModes, d: Derivation, pr: Printer, vname: str = "U") -> list[str]:
     """Equilibria where the coordinates fail (the mass matrix is singular: the pole of a sphere, r = 0): each
     with the coordinates that have a value there, and the ones that have none named (φ at the pole)."""
     sym = {s.name: s for s in d.table.q}
@@ -309,13 +383,73 @@ def _singular_points(nm: NormalModes, d: Derivation, pr: Printer) -> list[str]:
             f"{pr.tex(sym[n])} = {pr.tex(known[n]) if n in known else _figures(point[n])}" for n in shown
         )
         # the note on a row of its own, so that a phone's narrow box needs no sideways scroll
-        if lost:
+        verdict = _pole_verdict(nm, d, point, known, lost, defaults) if lost else None
+        if verdict is not None:
+            extremum, stable, w2 = verdict
+            kept = next(n for n in d.table.names if n not in lost)
+            names = r",\; ".join(pr.tex(sym[n]) for n in lost)
+            said = {True: r"\text{stable}", False: r"\text{unstable}", None: ""}[stable]
+            if said and w2 is not None:
+                said += rf",\quad {notation.letter('frequency', d)}^2 = {pr.tex(w2)}"
+            where += rf":\quad {said}" if said else ""
+            # judged by the potential along the coordinate that keeps a value (θ at a pole), said in words on a
+            # row of its own, so that a phone's narrow box needs no sideways scroll
+            rows.append(where)
+            where = rf"(\text{{a {extremum} of }} {vname} \text{{ along }} {pr.tex(sym[kept])})"
+            note = rf"(\text{{the coordinates fail: }} {names} \text{{ has no value}})"
+        elif lost:
             names = r",\ ".join(pr.tex(sym[n]) for n in lost)
             note = rf"(\text{{the coordinates fail: }} {names} \text{{ has no value}})"
         else:
             note = r"(\text{the coordinates fail here})"
         rows += [where, note]
     return rows
+
+
+def _pole_verdict(
+    nm: NormalModes,
+    d: Derivation,
+    point: dict[str, float],
+    known: dict[str, sp.Expr],
+    lost: list[str],
+    defaults: dict[sp.Symbol, sp.Expr],
+) -> tuple[str, bool | None, sp.Expr | None] | None:
+    """Where the coordinates fail at a point (φ at a sphere's pole), the potential along the one coordinate that
+    keeps a value (θ): ("minimum" or "maximum", stable or unstable, ω² = V″/M there where it has a closed form).
+    Every displacement from a pole is a change of θ in the direction φ, so V″ along θ must have one sign for
+    every φ; None where it has not, or where more than one coordinate keeps a value."""
+    table = d.table
+    kept = [n for n in table.names if n not in lost]
+    if len(kept) != 1:
+        return None
+    sym = {s.name: s for s in table.q}
+    k = table.names.index(kept[0])
+    q = table.q[k]
+    # V″ along the kept coordinate, at the point, for directions φ all round
+    second = sp.diff(nm.potential, q, 2).xreplace({sym[kept[0]]: known.get(kept[0], sp.Float(point[kept[0]]))})
+    values = []
+    for angle in (0.0, 1.0, 2.5, 4.0):
+        at = {sym[n]: sp.Float(angle) for n in lost}
+        value = complex(sp.N(second.xreplace(at).xreplace(defaults)))
+        values.append(value.real if abs(value.imag) <= 1e-12 * max(abs(value), 1e-300) else float("nan"))
+    scale = max(abs(v) for v in values) if all(v == v for v in values) else 0.0
+    if scale == 0 or any(abs(v) <= 1e-9 * scale for v in values):
+        return None
+    if all(v > 0 for v in values):
+        extremum = "minimum"
+    elif all(v < 0 for v in values):
+        extremum = "maximum"
+    else:
+        return None
+    # velocity terms (a spin, a magnetic field) can hold a maximum: then only the extremum is said
+    stable = None if nm.damped else extremum == "minimum"
+    w2 = None
+    if stable and kept[0] in known:
+        # ω² = V″/M along the kept coordinate, where the position is known in closed form and φ drops out
+        inertia = d.equations.mass_matrix[k, k].xreplace({q: known[kept[0]]})
+        found = sp.simplify(second / inertia)
+        w2 = found if not found.has(*(sym[n] for n in lost)) and found.is_positive is not False else None
+    return extremum, stable, w2
 
 
 def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
@@ -373,6 +507,7 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
     if not plain:
         rows.insert(0, rf"{vname} = -L\big|_{{\dot q = 0}} = {pr.tex(display(nm.potential))}")
     listed: list[str] = []
+    sym_q = {s.name: s for s in table.q}
     for e in found:
         family = _family_of(e, nm, d)
         if nm.everywhere:
@@ -381,13 +516,23 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
             row = r"\text{every state with } " + _family_tex(family, pr, d)
         else:
             row = _where(e, pr, d)
+            # an equilibrium that exists only for some parameters says so beside it
+            if (r := _reduced(e, d)) is not None and r.exists is not None:
+                row += _exists_note(r, pr)
         if row not in listed:
             listed.append(row)
+    # and one that does not exist at the current parameters is still listed, with its condition
+    absent = _absent(nm, found, d)
+    coordinate = d.reduction.coordinate if d.reduction is not None else ""
+    for r in absent:
+        # whether it holds now on a row of its own, so that a phone's narrow box needs no sideways scroll
+        listed += [f"{pr.tex(sym_q[coordinate])} = {pr.root(r.position)}{_exists_note(r, pr)}", NOT_NOW]
+    none = none and not absent
     if none:
         listed.append(r"\text{no equilibrium}")
     rows += listed
     sym = {s.name: s for s in table.q}
-    rows += _singular_points(nm, d, pr)
+    rows += _singular_points(nm, d, pr, vname)
     rows += _points(nm.kinks, sym, pr, rf"\quad (\text{{at a kink of }} {vname})")
     rows += _points(nm.unclassified, sym, pr, r"\quad (\text{coefficients change with } t)")
     why = "At rest (q̇ = 0) the state stays put where the Euler–Lagrange equations give q̈ = 0. "
@@ -415,12 +560,36 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         why += nm.note
     else:
         why += _how_found(nm, found)
+    conditions: list[sp.Relational] = []
+    wu = notation.text("frequency", d)
+    for r in absent:
+        if r.exists not in conditions:
+            conditions.append(r.exists)
+    for c in conditions:
+        group = [r for r in absent if r.exists == c]
+        places = " and ".join(f"{plain_name(coordinate)} = {unicode_text(r.position)}" for r in group)
+        many = len(group) > 1
+        why += (
+            f" {places} {'are equilibria' if many else 'is an equilibrium'} only when {_relation_text(c)}, which "
+            f"does not hold at the current parameters: {'they are' if many else 'it is'} listed with that condition, "
+            "and no small oscillations are worked out about "
+            + ("them" if many else "it")
+            + (
+                f"; where {'they exist' if many else 'it exists'}, {wu}² = {unicode_text(group[0].omega_squared)} is "
+                + ("positive (stable)." if group[0].stable else "negative (unstable).")
+                if group[0].stable is not None and all(r.omega_squared == group[0].omega_squared for r in group)
+                else "."
+            )
+        )
     if nm.found > MAX_EQUILIBRIA:
         why += f" {nm.found} were found; the first {MAX_EQUILIBRIA} are shown."
     if nm.singular:
         why += (
             f" At {len(nm.singular)} of them the coordinates themselves fail, as polar coordinates do at the origin: "
-            "a coordinate there has no value, and no small oscillations are worked out about those points."
+            "a coordinate there has no value, and no small oscillations are worked out in these coordinates about "
+            "those points. Where one coordinate keeps a value (θ at a sphere's pole), each point is judged by the "
+            "potential along it, since every small displacement is a change of that coordinate: a minimum is stable, "
+            "a maximum unstable."
         )
     if nm.kinks:
         why += (
@@ -765,6 +934,10 @@ def _one_coordinate_step(
     name = e.coordinates[0]
     moving = e.linear is not None and e.linear.moving
     rows = [where]
+    # the reduction's verdict in symbols: where the place exists, and when ω² is positive (g > Rw² at the
+    # spinning hoop's bottom), for a verdict the numbers at the defaults alone would state as general
+    reduced = _reduced(e, d)
+    conditional = reduced.stable_when if reduced is not None and reduced.stable is None else None
     if moving:
         auxiliary = _damped_rows(e, pr, d)
         # after the auxiliary equation, which says η ∝ e^{σt}, the roots' numbers alone
@@ -792,23 +965,49 @@ def _one_coordinate_step(
         what = "Small oscillations about"
         why = (
             f"Linearised about {about}, the small displacement {eu} from it obeys {eu}̈ + {wu}² {eu} = 0: it "
-            f"oscillates at the angular frequency {wu}, a stable equilibrium."
+            f"oscillates at the angular frequency {wu}, a stable equilibrium"
+            + (" at the current parameters." if conditional is not None else ".")
         )
     elif w2 < 0:
         # the rate √(−ω²) printed over the whole radicand, √(3g/(2l)), not SymPy's √6 √(g/l)/2
         rate = sp.Pow(-mode.exact, sp.S.Half, evaluate=False) if mode.exact is not None else None
         shown = pr.tex(mode.exact) if mode.exact is not None else _figures(w2) + PER_SECOND_SQUARED
-        rows.append(rf"{wt}^2 = {shown} < 0\quad \text{{(no oscillation: it runs away)}}")
+        # a sign that depends on the parameters is the sign at the current ones, said in the equation itself
+        # (braced, so that a phone's line never breaks between "<" and "0")
+        negative = r"{\;<\;0}\quad \text{at the current parameters}" if conditional is not None else "< 0"
+        rows.append(rf"{wt}^2 = {shown} {negative}\quad \text{{(no oscillation: it runs away)}}")
         rows.append(r"\text{rate } \sqrt{-" + wt + "^2} = " + _closed(rate, math.sqrt(-w2), r"\,\mathrm{s}^{-1}", pr))
         what = "No oscillation about"
         why = (
             f"Linearised about {about}, the small displacement {eu} from it obeys {eu}̈ = |{wu}²| {eu}: it grows like "
-            f"exp(√(−{wu}²) t) instead of oscillating, so the equilibrium is unstable."
+            f"exp(√(−{wu}²) t) instead of oscillating, so the equilibrium is unstable"
+            + (" at the current parameters." if conditional is not None else ".")
         )
     else:
         rows.append(rf"{wt}^2 = 0")
         what = "No restoring force about"
         why = f"Linearised about {about}, nothing pulls a small displacement back: it drifts at constant speed."
+    if not moving and conditional is not None:
+        # ω² = (g − Rw²)/R: stable when g > Rw², unstable when Rw² > g, whatever the defaults are
+        rows.append(
+            rf"\text{{stable when }} {_relation(conditional, pr)},\quad \text{{unstable when }} "
+            rf"{_relation(_turned(conditional), pr)}"
+        )
+        why += (
+            f" {wu}² changes sign with the parameters: it is positive, a stable equilibrium, when "
+            f"{_relation_text(conditional)}, and negative, an unstable one, when {_relation_text(_turned(conditional))}."
+        )
+    if not moving and reduced is not None and reduced.exists is not None:
+        # arccos(g/(Rw²)) is a place only when Rw² > g; there ω² has the sign the reduction proved
+        there = "" if reduced.stable is None else rf",\quad \text{{and there }} {wt}^2 {'>' if reduced.stable else '<'} 0"
+        rows.append(rf"\text{{exists only when }} {_relation(reduced.exists, pr)}{there}")
+        why += f" This equilibrium exists only when {_relation_text(reduced.exists)}" + (
+            f", and wherever it exists {wu}² is positive: it is stable wherever it exists."
+            if reduced.stable is True
+            else f", and wherever it exists {wu}² is negative: it is unstable wherever it exists."
+            if reduced.stable is False
+            else "."
+        )
     if e.linear is not None and e.linear.definite < 0:
         why += (
             " The inertia is negative here (L = U − T, or a negative mass): the equations are the same as for −L, "

@@ -42,6 +42,12 @@ def _level(symbol: sp.Symbol) -> int:
     return 2 if symbol.name.endswith("_ddot") else 1 if symbol.name.endswith("_dot") else 0
 
 
+def _acceleration(f: sp.Expr) -> bool:
+    """An acceleration (θ̈), or a power of one."""
+    base = f.base if f.is_Pow else f
+    return bool(base.is_Symbol and _level(base) == 2)
+
+
 def _parameter_rank(name: str) -> tuple[int, str, str]:
     rank = 0 if _MASS.fullmatch(name) else _FIRST.get(name, 3)
     return rank, name.lower(), name
@@ -92,11 +98,10 @@ class _Printer(LatexPrinter):
             momentum = base.name.startswith("p_") or base.name.startswith("E_")
             return (1 if momentum else 0, *_parameter_rank(base.name))
         if base.is_Symbol:
-            return (2 if _level(base) < 2 else 5, _level(base), sp.default_sort_key(base))
+            # coordinates, velocities, then accelerations, all before the functions: m l θ̈ cos θ, m l θ̇² sin θ
+            return (2, _level(base), sp.default_sort_key(base))
         if isinstance(base, sp.Add):
             return (4, 0, sp.default_sort_key(f))
-        if base.is_Symbol and _level(base) == 2:
-            return (5, 0, sp.default_sort_key(f))  # an acceleration after its coefficient: (1 + 4α²ρ²) ρ̈
         # functions in the order of the coordinates they hold, as declared: R sin θ cos φ, R sin θ sin φ
         return (3, self.place(base), sp.default_sort_key(f))
 
@@ -161,6 +166,9 @@ class _Printer(LatexPrinter):
     def ordered_factors(self, factors: Sequence[sp.Expr]) -> list[sp.Expr]:
         """The factors of a product in the order the page prints them (the running text's too): m g R sin θ."""
         ordered = sorted(factors, key=self._factor_key)
+        if any(isinstance(f, sp.Add) and not self.constant(f) for f in ordered):
+            # an acceleration after a coefficient that moves, as a textbook writes it: (1 + 4α²ρ²) ρ̈
+            ordered = [f for f in ordered if not _acceleration(f)] + [f for f in ordered if _acceleration(f)]
         if (
             len(ordered) == 2 and isinstance(ordered[0], sp.Add) and self.constant(ordered[0])
             and ordered[1].is_Symbol and ordered[1] not in self.moving and _MASS.fullmatch(ordered[1].name)

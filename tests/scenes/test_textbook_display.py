@@ -40,8 +40,8 @@ PINNED = {  # fmt: skip
     "movable-incline": (
         "\\frac{1}{2} m \\dot{D}^{2} + \\frac{1}{2} \\left(M + m\\right) \\dot{X}^{2} + m \\dot{D} \\dot{X} \\cos {\\alpha} + m g D \\sin {\\alpha}",
         [
-            "\\left(M + m\\right) \\ddot{X} + m \\cos {\\alpha} \\ddot{D} = 0",
-            "\\ddot{D} + \\cos {\\alpha} \\ddot{X} - g \\sin {\\alpha} = 0",
+            "\\left(M + m\\right) \\ddot{X} + m \\ddot{D} \\cos {\\alpha} = 0",
+            "\\ddot{D} + \\ddot{X} \\cos {\\alpha} - g \\sin {\\alpha} = 0",
         ],
     ),
     "pulley": (

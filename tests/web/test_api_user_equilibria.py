@@ -176,3 +176,108 @@ def test_a_charge_in_a_magnetic_field_counts_its_zero_exponents_and_says_where_i
     assert "Two are zero (free drifts), the others are ±2i (oscillations at 2 rad/s)" in said
     assert "come from the velocity terms G alone" in said and "One is zero" not in said
     assert r"\pm 2i" in modes["latex"] and r"0 \pm" not in modes["latex"]
+
+
+def _typed_hoop(w: float) -> dict:
+    """Prof. K's bead on a spinning hoop as typed in the playground: a particle, and m, R, g positive by their
+    units (the form's lowest value just above 0), w any real number."""
+    positive = {"min": 1e-9}
+    return {
+        "coordinates": ["theta"],
+        "parameters": [
+            {"name": "m", "value": 0.1, "unit": "kg", **positive},
+            {"name": "R", "value": 0.5, "unit": "m", **positive},
+            {"name": "g", "value": 9.81, "unit": "m/s^2", **positive},
+            {"name": "w", "value": w, "unit": "rad/s"},
+        ],
+        "particles": [{"mass": "m", "position": ["R*sin(theta)*cos(w*t)", "R*sin(theta)*sin(w*t)", "-R*cos(theta)"]}],
+        "potential": "-m*g*R*cos(theta)",
+    }
+
+
+def _about(doc, where):
+    return next(s for s in steps(doc, "normal-modes") if s["title"].endswith(f"about {where}"))
+
+
+def test_a_typed_hoops_bottom_states_when_it_is_stable_above_and_below_the_bifurcation(client):
+    # prof-k 1: "ω² = (g − Rw²)/R < 0 … unstable" printed as if true for every w
+    for w, sign in ((7.0, "<"), (3.0, ">")):
+        bottom = _about(derive(client, _typed_hoop(w)), "θ = 0")
+        assert r"\text{stable when } g > R w^{2},\quad \text{unstable when } R w^{2} > g" in bottom["latex"], w
+        assert "positive, a stable equilibrium, when g > Rw², and negative, an unstable one, when Rw² > g" in bottom[
+            "explanation"
+        ]
+        # the sign shown is the current parameters' own, and said so in the equation
+        assert (r"{\;<\;0}\quad\text{atthecurrentparameters}" in bottom["latex"].replace(" ", "")) == (sign == "<"), w
+        assert "at the current parameters" in bottom["explanation"]
+    # the top is unstable for every w: no condition, no "at the current parameters"
+    top = _about(derive(client, _typed_hoop(7.0)), "θ = π")
+    assert "stable when" not in top["latex"] and "current parameters" not in top["latex"]
+
+
+def test_a_typed_hoops_side_equilibria_say_where_they_exist_and_stay_listed_where_they_do_not(client):
+    # prof-k 1: θ = ±arccos(g/(Rw²)) with no "exists only when Rw² > g", and gone without a word at w = 3
+    spinning = derive(client, _typed_hoop(7.0))
+    (eq,) = steps(spinning, "equilibria")
+    side = r"\arccos {\frac{g}{R w^{2}}}\quad (\text{exists only when } R w^{2} > g)"
+    assert eq["latex"].count(side) == 2
+    tilted = _about(spinning, "θ = arccos(g/(Rw²))")
+    assert r"\text{exists only when } R w^{2} > g,\quad \text{and there } \omega^2 > 0" in tilted["latex"]
+    assert "it is stable wherever it exists" in tilted["explanation"]
+    slow = derive(client, _typed_hoop(3.0))
+    (eq,) = steps(slow, "equilibria")
+    gone = r"\arccos {\frac{g}{R w^{2}}}\quad (\text{exists only when } R w^{2} > g) \\ &(\text{not at the current parameters})"
+    assert eq["latex"].count(gone) == 2
+    assert (
+        "θ = −arccos(g/(Rw²)) and θ = arccos(g/(Rw²)) are equilibria only when Rw² > g, which does not hold at the "
+        "current parameters" in eq["explanation"]
+    )
+    assert "where they exist, ω² = w² − g²/(R²w²) is positive (stable)" in eq["explanation"]
+    # no small oscillations are worked out about a place that is not there
+    assert [s["title"] for s in steps(slow, "normal-modes")] == [
+        "Small oscillations about θ = 0",
+        "No oscillation about θ = π",
+    ]
+
+
+def test_the_spherical_pendulums_poles_say_which_is_stable(client):
+    # prof-k 4: "θ = 0 (the coordinates fail: φ has no value)" at both poles, with no stable or unstable
+    response = client.get("/api/scenes/spherical-pendulum/derivation")
+    assert response.status_code == 200, response.text
+    (eq,) = steps(response.json(), "equilibria")
+    # θ is measured from the upward vertical: U = mgR cos θ is greatest at θ = 0, least at θ = π
+    assert r"\theta &= 0:\quad \text{unstable} \\ &(\text{a maximum of } U \text{ along } \theta) \\" in eq["latex"]
+    assert (
+        r"\theta &= \pi:\quad \text{stable},\quad \omega^2 = \frac{g}{R} \\ &(\text{a minimum of } U \text{ along } "
+        r"\theta) \\" in eq["latex"]
+    )
+    assert eq["latex"].count(r"&(\text{the coordinates fail: } \varphi \text{ has no value})") == 2
+
+
+def test_a_typed_pendulum_on_a_sliding_spring_mounted_pivot_prints_its_discriminant_as_a_square_less_a_product(client):
+    # prof-k 5: "Δ = M²g² + m²g² + k²l² + 2Mmg² + 2mgkl − 2Mgkl", and "ml cos θθ̈"
+    positive = {"min": 1e-9}
+    doc = derive(
+        client,
+        {
+            "coordinates": ["X", "theta"],
+            "parameters": [
+                {"name": "M", "value": 1.0, "unit": "kg", **positive},
+                {"name": "m", "value": 0.5, "unit": "kg", **positive},
+                {"name": "l", "value": 0.5, "unit": "m", **positive},
+                {"name": "k", "value": 20.0, "unit": "N/m", **positive},
+                {"name": "g", "value": 9.81, "unit": "m/s^2", **positive},
+            ],
+            "particles": [
+                {"mass": "M", "position": ["X", "0", "0"]},
+                {"mass": "m", "position": ["X + l*sin(theta)", "0", "-l*cos(theta)"]},
+            ],
+            "potential": "k*X**2/2 - m*g*l*cos(theta)",
+        },
+    )
+    below, above = steps(doc, "normal-modes")
+    assert r"\Delta &= \left[\left(M + m\right) g + k l\right]^{2} - 4 M g k l \\" in below["latex"]
+    assert r"\Delta &= \left[k l - \left(M + m\right) g\right]^{2} + 4 M g k l \\" in above["latex"]
+    (el,) = steps(doc, "euler-lagrange")
+    assert r"m l \ddot{\theta} \cos {\theta} - m l \dot{\theta}^{2} \sin {\theta}" in el["latex"]
+    assert r"l \ddot{\theta} + \ddot{X} \cos {\theta} + g \sin {\theta} = 0" in el["latex"]

@@ -251,7 +251,8 @@ def test_a_rest_point_with_a_momentum_held_is_a_steady_motion_and_the_momentum_h
 def test_the_coordinates_failing_at_a_pole_is_said_and_phi_is_not_listed_there(client):
     shown = {t: x for t, _, x in steps_of(page(client, "spherical-pendulum"))}
     eq = shown["Equilibria"]
-    assert r"\theta &= 0 \\ &(\text{the coordinates fail: } \varphi \text{ has no value})" in eq
+    assert r"\theta &= \pi:\quad \text{stable},\quad \omega^2 = \frac{g}{R} \\ &(\text{a minimum of } U" in eq
+    assert r"&(\text{the coordinates fail: } \varphi \text{ has no value})" in eq
     assert r"\varphi = 0" not in eq and "singular" not in eq
     mass = {t: x for t, _, x in steps_of(page(client, "simple-pendulum"))}["Mass matrix and forcing"]
     assert r"\begin{matrix}" not in mass and r"\left[" not in mass
