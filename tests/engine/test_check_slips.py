@@ -187,3 +187,12 @@ def test_part_by_part_measures_the_parts_by_the_right_ones_not_by_a_wrong_accele
     assert result["partial"]["agree"] == ["the terms without a velocity"], result["partial"]
     differ = sorted(unicodedata.normalize("NFC", w) for w in result["partial"]["differ"])
     assert differ == [unicodedata.normalize("NFC", w) for w in ("the ÿ₁ terms", "the ÿ₂ terms")], differ
+
+
+def test_the_pulleys_u_keeps_the_middle_mass_below_the_pages_zero():
+    # review student-k 7: the statement puts U = 0 at the end masses' level with Y = −(y₁ + y₂)/2 − c, so −M g c is
+    # part of U, not "a different zero of height"
+    pb = step_problem("pulley", "potential", None)
+    assert judge(pb, "g*(m1*y1 + m2*y2) - M*g*(y1 + y2)/2 - M*g*c")["verdict"] == "correct"
+    dropped = judge(pb, "g*(m1*y1 + m2*y2) - M*g*(y1 + y2)/2")
+    assert dropped["verdict"] == "equivalent" and "the constant Mgc" in dropped["message"], dropped["message"]
