@@ -47,9 +47,10 @@ def step_problem(name: str, step: str, coordinate: str | None):
 
 
 def words(result: dict[str, Any]) -> str:
-    """The key, name and hint of a diagnosis, as one text to search."""
+    """The key, name and hint of a diagnosis, and what it says beside them (a second slip), as one text to search."""
     m = result["mistake"] or {"key": "", "name": ""}
-    return unicodedata.normalize("NFC", f"{m['key']} | {m['name']} | {result['hint']}")
+    beside = (result.get("partial") or {}).get("message", "")
+    return unicodedata.normalize("NFC", f"{m['key']} | {m['name']} | {result['hint']} | {beside}")
 
 
 def outcome(slip: tuple) -> tuple[str, dict[str, Any]]:
@@ -196,3 +197,12 @@ def test_the_pulleys_u_keeps_the_middle_mass_below_the_pages_zero():
     assert judge(pb, "g*(m1*y1 + m2*y2) - M*g*(y1 + y2)/2 - M*g*c")["verdict"] == "correct"
     dropped = judge(pb, "g*(m1*y1 + m2*y2) - M*g*(y1 + y2)/2")
     assert dropped["verdict"] == "equivalent" and "the constant Mgc" in dropped["message"], dropped["message"]
+
+
+def test_a_second_slip_behind_a_whole_of_the_wrong_units_is_said():
+    # review student-k 2: with the units' factor put right, an answer that still differs has one more slip; said
+    # even where it is none of the named ones, and never where the units' slip was the only one
+    pb = step_problem("simple-pendulum", "kinetic", None)
+    assert judge(pb, "m*R*theta_dot**2/2")["partial"] is None
+    other = judge(pb, "3*m*R*theta_dot**2")["partial"]["message"]
+    assert other.startswith("And there is at least one more difference, not one of the slips named here"), other
