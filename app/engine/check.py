@@ -33,6 +33,7 @@ door to all three.
 from __future__ import annotations
 
 from collections import OrderedDict
+from fractions import Fraction
 from typing import Any
 
 import sympy as sp
@@ -76,7 +77,15 @@ from app.engine.compare import (
     without_constant,
 )
 from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json, sentence
-from app.engine.dimensions import Own, dimension, equation_words, mismatch, number_beside_units, unit_name
+from app.engine.dimensions import (
+    Own,
+    add_dims,
+    dimension,
+    equation_words,
+    mismatch,
+    number_beside_units,
+    unit_name,
+)
 from app.engine.mistake_answer import (
     AnswerSlip,
     extra_cross_term,
@@ -282,13 +291,16 @@ def _judge(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
             # one of the terms its factor expands into (issue 41, 4)
             keep = lambda m: m.family != "left_out"  # noqa: E731
         found = match(pb.mistakes, a, b, pb.relation, _at_engines_scale(pb, answer, a, truth), keep)
+    more = None
     if found is None and pb.relation != "factor" and pb.step != "momentum":
         # (a momentum short of a factor is named by that factor, below)
         found = _units(pb, answer, truth)
+        # a whole of the wrong units may hide a second slip: said, and named where it is a named one
+        more = _budgeted(lambda: _more_after_units(pb, answer, truth, b), None, ANSWER_SLIP_WORK) if found else None
     if found is not None:
         mistake, hint = found
         if mistake.family == "units":
-            return _units_verdict(pb, printer, mistake, hint)
+            return _units_verdict(pb, printer, mistake, hint, more)
         mistake, hint = as_typed(mistake, hint, answer, scale, pb.step, pb.groups.positions)
         if pb.relation == "exact" or equal(a, _known(mistake.expr, pb.groups)):
             # the answer is this mistake as written: show the difference as the change to the engine's own
@@ -316,7 +328,10 @@ def _judge(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
             mistake={**mistake_json(mistake, printer.tex), "latex": ""},
             # "everything else is right" only where the answer is this mistake and nothing more (never for a
             # whole of the wrong units: a second slip may hide behind it), and has more than the one slip's term
-            partial=partial_json(mistake, short_label(pb.step, pb.label)) if whole and _several_terms(answer) else None,
+            # (never beside the sign of the whole answer: nothing else is left to be right)
+            partial=partial_json(mistake, short_label(pb.step, pb.label))
+            if whole and _several_terms(answer) and not mistake.key.endswith("whole_sign")
+            else None,
             follow_up=follow_up_json(mistake, allowed_names(mistake.follow_up.kind, pb.kinds))
             if mistake.follow_up
             else None,
@@ -354,14 +369,17 @@ def _shown(pb: Problem, printer: Printer, shown: sp.Expr) -> dict[str, Any]:
     return printer.pair(shown)
 
 
-def _units_verdict(pb: Problem, printer: Printer, mistake: Mistake, hint: str) -> dict[str, Any]:
+def _units_verdict(
+    pb: Problem, printer: Printer, mistake: Mistake, hint: str, more: str | None = None
+) -> dict[str, Any]:
     """Terms whose units disagree: a difference would read as nonsense ((1 − R/2) m R θ̇²); the units are the
-    mistake, shown on the student's own sum, and nothing else is shown."""
+    mistake, shown on the student's own sum, and nothing else is shown but ``more``, a second slip behind them."""
     return _verdict(
         "incorrect",
         f"Incorrect: this is not {_noun(pb)}: its units do not agree, as said below.",
         None,
         hint,
+        partial={"message": more, "agree": [], "differ": []} if more else None,
         mistake={
             **mistake_json(mistake, printer.tex),
             # the offending part of a longer answer; the whole answer is in the student's own preview already
@@ -430,6 +448,44 @@ def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake
     mistake = Mistake("units.mismatch", "units", f"units that do not agree. {words}", offence.piece, where,
                       answer)  # fmt: skip
     return mistake, f"Check the units. {words}"
+
+
+def _more_after_units(pb: Problem, answer: sp.Expr, truth: sp.Expr, b: Values) -> str | None:
+    """A whole of the wrong units put right by a parameter of the units it lacks (or has too many): where every
+    answer so corrected still differs from the truth, at least one more slip remains (review student-k 2: m R θ̇²
+    for ½ m R² θ̇², the R named and the ½ not); named where it is a slip of the step's catalogue, else said so."""
+    got, want = dimension(answer, pb.dimensions), dimension(truth, pb.dimensions)
+    if got is None or want is None or got == want:
+        return None
+    missing = add_dims(want, got, Fraction(-1))
+    extra = add_dims(got, want, Fraction(-1))
+    parameters = _parameters(pb)
+    # the answer times each parameter of the missing units, or over each of the extra units
+    corrected = [answer * p for p in parameters if pb.dimensions.get(p) == missing]
+    corrected += [answer / p for p in parameters if pb.dimensions.get(p) == extra]
+    if not corrected:
+        return None
+    tried = [values(c, pb.groups) for c in corrected]
+    if any(usable(v, b) < MIN_POINTS or _same_answer(pb, v, b) for v in tried):
+        return None  # the units' slip is the only one (or cannot be told)
+    for v in tried:
+        found = match(pb.mistakes, v, b, pb.relation)
+        if found is not None and found[0].family != "units":
+            name = found[0].name.replace("your ", "the ")
+            return f"And there is at least one more difference: {name}."
+    return (
+        "And there is at least one more difference, not one of the slips named here: with the units put right, "
+        "compare your answer with the correct one term by term."
+    )
+
+
+def _same_answer(pb: Problem, a: Values, b: Values) -> bool:
+    """a equals b as the step allows (up to its accepted constant or factor)."""
+    return (
+        equal(a, b)
+        or (pb.relation == "constant" and differ_by_constant(a, b))
+        or (pb.relation == "factor" and differ_by_factor(a, b))
+    )
 
 
 def _own_words(pb: Problem) -> Own:
@@ -678,7 +734,8 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
         if found is not None:
             return found
     if pb.step in ("acceleration", "omega_squared"):
-        found = _budgeted(lambda: solved_slip(answer, truth, pb.groups), None, ANSWER_SLIP_WORK)
+        frequency = pb.frequency if pb.step == "omega_squared" else None
+        found = _budgeted(lambda: solved_slip(answer, truth, pb.groups, frequency), None, ANSWER_SLIP_WORK)
         if found is not None:
             return found
     # the step's rule in the document's letter for the frequency (Ω² on the rotating wire: student-i 6)

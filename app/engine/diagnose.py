@@ -33,7 +33,7 @@ from app.engine.mistake_equations import generated
 from app.engine.mistake_families import Mistake, monomial_words, says_how, spoken, states_answer
 from app.engine.mistake_masses import wrong_masses
 from app.engine.mistake_other import held_still, other_coordinates
-from app.engine.mistake_pieces import effective_terms, masses_of, piece_mistakes, travelled
+from app.engine.mistake_pieces import effective_terms, inertia_in_potential, masses_of, piece_mistakes, travelled
 from app.engine.mistake_positions import position_mistakes
 from app.engine.mistakes import OMEGA_HINT, RULES
 from app.engine.names import said_all
@@ -73,6 +73,7 @@ _OPENINGS = {
     "position_sign": "Your {what} has {name}",
     "position_other": "Your {what} is {name}",
     "position_coordinate": "Your {what} has {name}",
+    "inertia_in_u": "Your {what} has {name}",
 }
 
 
@@ -138,6 +139,8 @@ def catalogue(
     carried = [(m, sentence(m, label)) for m in travelled(d, step, k, truth, known, asked)]
     carried += [(m, sentence(m, label)) for m in effective_terms(d, asked)] if step == "omega_squared" else []
     pieces = [(m, sentence(m, label)) for m in piece_mistakes(d, step, k, truth)]
+    if step == "potential":
+        pieces += [(m, sentence(m, label)) for m in inertia_in_potential(d, truth, known)]
     # slips of T and U carried on into L, and an equation derived correctly from such an L (after the pieces: a
     # slip the step itself explains is named by that step's words)
     if step == "lagrangian":
@@ -149,7 +152,12 @@ def catalogue(
     # a rule's better name)
     # another question's right answer (another coordinate's, a body held still) is named as that, before all
     found = [(m, sentence(m, label)) for m in (*other_coordinates(d, step, k), *held_still(d, step, truth, k))]
+    # a solved acceleration turned over whole is named one way on every system, before a rule's cause (the sign of
+    # ∂L/∂q) that an answer typed as q̈ = … never shows (review student-k 5); ω² after its other equilibria
+    whole = [(m, sentence(m, label)) for m in whole_sign(d, step, truth)]
+    found += whole if step == "acceleration" else []
     found += [x for x in made if x[0].family not in GENERIC]
+    found += whole if step == "omega_squared" else []
     found += [x for x in carried if x[0].key.startswith(f"{step}.rigid")]
     found += _legacy(d, step, k, truth)
     found += [x for x in carried if not x[0].key.startswith(f"{step}.rigid")]
@@ -169,6 +177,33 @@ def catalogue(
         ]  # fmt: skip
     found += _pairs(d, step, found, label)
     return _kept(d, found, truths, groups, relation, label)
+
+
+def whole_sign(d: Derivation, step: str, truth: sp.Expr) -> list[Mistake]:
+    """The whole of a solved acceleration or ω² with its sign reversed, and its likely cause: a U turned over."""
+    if step not in ("acceleration", "omega_squared") or truth == 0:
+        return []
+    has_u = d.mechanics.U is not None and d.mechanics.U != 0
+    if step == "acceleration":
+        # every force is −∂U/∂q: U with its sign reversed turns each of them over, and the acceleration with them
+        cause = (
+            "The likely cause is U with its sign reversed: each force is −∂U/∂q, so a reversed U turns every force "
+            "over. Else "
+            if has_u
+            else "Check "
+        )
+        where = (
+            f"every term of yours has the opposite sign. {cause}check which way the coordinate counts as positive "
+            "and that each term changed sign once as it crossed the equals sign"
+        )
+    else:
+        # ω² = U_eff″/m_eff at the equilibrium: U turned over makes a minimum a maximum and turns ω² over
+        where = (
+            "ω² is the effective potential's second derivative over the effective mass, at the equilibrium; "
+            + ("the likely cause is U with its sign reversed, which turns a minimum into a maximum and ω² over"
+               if has_u else "check the sign of each term of the effective potential")
+        )  # fmt: skip
+    return [Mistake(f"{step}.whole_sign", "term_sign", "the sign of the whole answer", truth, where, -truth)]
 
 
 def _kept(

@@ -14,9 +14,9 @@ student wrote:
   is an equilibrium); an answer equal to it, or to a constant multiple of it, is named;
 * **T, U, L or h for small displacements**: the same expanded to second order (cos θ ≈ 1 − θ²/2);
 * **one part of an equation off by a factor**, every other part right at some scale;
-* **a solved acceleration or ω²** read against the truth: the sign of the whole, a factor upside down,
-  one term's factor 2, another coordinate's term left out, then numerator and denominator (the
-  effective mass) each on its own.
+* **a solved acceleration or ω²** read against the truth: the sign of the whole, a factor (or the number)
+  upside down or squared, one term's factor 2, another coordinate's term left out, a number off, then
+  numerator and denominator each on its own.
 
 All compare values at the checker's sample points (app/engine/compare.py), within a count of work.
 """
@@ -194,10 +194,11 @@ def _constant(expr: sp.Expr) -> bool:
     return not expr.free_symbols and expr != 0
 
 
-def solved_slip(answer: sp.Expr, truth: sp.Expr, groups: Groups) -> AnswerSlip | None:
-    """The slip in a solved acceleration or ω², read by comparing the answer with the truth: the sign of the
-    whole, a factor upside down, a term of the truth halved or doubled, another coordinate's term left out,
-    then the numerator and the denominator (the effective mass) compared each on its own; or None."""
+def solved_slip(answer: sp.Expr, truth: sp.Expr, groups: Groups, frequency: str | None = None) -> AnswerSlip | None:
+    """The slip in a solved acceleration (``frequency`` None) or ω² (its letter, ω or Ω), read by comparing the
+    answer with the truth: the sign of the whole, a factor upside down or squared, a term of the truth halved or
+    doubled, another coordinate's term left out, then the numerator and the denominator compared each on its own;
+    or None."""
     mine = values(answer, groups)
 
     def same(expr: sp.Expr) -> bool:
@@ -207,20 +208,33 @@ def solved_slip(answer: sp.Expr, truth: sp.Expr, groups: Groups) -> AnswerSlip |
     if same(-truth):
         return _slip(
             "sign",
-            "the sign of the whole reversed",
+            "the sign of the whole answer",
             "every term of yours has the opposite sign: a sign lost on one side of the equation turns every term over",
         )
     numerator, denominator = sp.fraction(sp.cancel(sp.together(truth)))
-    # a factor f of the truth multiplied where it divides (answer = truth · f²), or divided where it multiplies
-    for f, power in (*sp.factor_list(denominator)[1], *((f, -p) for f, p in sp.factor_list(numerator)[1])):
-        if f.free_symbols and same(truth * f ** (2 * power)):
-            upside = "multiplies" if power > 0 else "divides"
+    number = sp.cancel(numerator.as_coeff_Mul()[0] / denominator.as_coeff_Mul()[0])
+    # the truth's factors with their powers (a denominator's negative), its number among them (3/2 of 3 g/(2 l))
+    factors = [*((f, -p) for f, p in sp.factor_list(denominator)[1]), *sp.factor_list(numerator)[1]]
+    factors += [(number, 1)] if number.is_Rational and abs(number) != 1 else []
+    for f, power in factors:
+        said = spoken(f) if f.free_symbols else f"number {spoken(f)}"
+        where = "divides" if power < 0 else "multiplies"
+        # f upside down: the answer is truth · f^(−2 power) (it multiplies where it divides, or the other way); a
+        # number is named as the student wrote it (2/3 for 3/2), which does not give the answer away
+        if same(truth * f ** (-2 * power)):
             return _slip(
                 "upside_down",
-                f"the factor {spoken(f)} upside down",
-                f"in the correct answer it divides, where yours {upside}"
-                if power > 0
-                else f"in the correct answer it multiplies, where yours {upside}",
+                f"the factor {said} upside down" if f.free_symbols else f"the number {spoken(1 / f)} upside down",
+                f"in the correct answer it {where}, where yours {'multiplies' if power < 0 else 'divides'}"
+                if f.free_symbols
+                else "the correct answer has it the other way up; check which of its two numbers goes on top",
+            )
+        # f squared: the answer is truth · f^power (its power doubled)
+        if same(truth * f**power):
+            return _slip(
+                "squared",
+                f"the {'factor ' if f.free_symbols else ''}{said} squared",
+                f"in the correct answer it {where} once, to the first power",
             )
     # one term of the truth written at half or twice its size: a factor 2 lost or gained
     terms = sp.Add.make_args(sp.expand(numerator))
@@ -247,6 +261,15 @@ def solved_slip(answer: sp.Expr, truth: sp.Expr, groups: Groups) -> AnswerSlip |
         return None
     top, bottom = sp.fraction(sp.cancel(sp.together(answer)))
     scale = sp.cancel(top / numerator)
+    ratio = sp.cancel(answer / truth)
+    if _constant(ratio) and scale != 1:
+        # every letter where it belongs and only a number off: said as that number, never as a denominator
+        # rescaled to the answer's numerator (4 l/3 for 2 g/(3 l))
+        return _slip(
+            "number",
+            f"a number off: your answer is {spoken(ratio)} times the correct one",
+            "every letter is where it belongs; check each number as you carry it from the equation to the answer",
+        )
     right = scale * denominator if _constant(scale) else None
     if right is None and _constant(sp.cancel(bottom / denominator)) and answer.is_Add:
         # no one fraction typed (−g sin(θ)/R + θ̇²): said in the student's terms, never as a numerator they did not
@@ -280,9 +303,26 @@ def solved_slip(answer: sp.Expr, truth: sp.Expr, groups: Groups) -> AnswerSlip |
     return _slip(
         "denominator",
         f"the denominator {spoken(bottom)}, where the correct one is {said}{numerators}",
-        "once the equations are solved together, the denominator is the effective mass the forces move: it "
-        "holds every body the motion carries and every coupling of the accelerations",
+        _denominator_why(denominator, groups, frequency),
     )
+
+
+def _denominator_why(denominator: sp.Expr, groups: Groups, frequency: str | None) -> str:
+    """What a solved answer's denominator is, in the step's own terms: an ω²'s the effective mass; a single
+    equation's acceleration its coefficient of q̈; coupled accelerations' (a sum) what solving them together gives."""
+    if frequency is not None:
+        # ω² = U_eff″/m_eff at the equilibrium: one coordinate, no equations to solve together
+        return (
+            f"{frequency}² is the effective potential's second derivative over the effective mass (the coefficient "
+            f"of ½ q̇² in T), both at the equilibrium: check each on its own"
+        )
+    if len(groups.positions) > 1 and isinstance(sp.expand(denominator), sp.Add):
+        return (
+            "once the equations are solved together, the denominator collects every body the motion carries and "
+            "every coupling of the accelerations"
+        )
+    # q̈ = (force terms)/(coefficient of q̈): the equation's own coefficient
+    return "the acceleration is the force terms of its equation of motion over the coefficient of the acceleration there"
 
 
 # ---- a small-angle T, U, L or h --------------------------------------------------------------------

@@ -340,12 +340,17 @@ def omega_mistakes(d: Derivation, asked: list) -> Iterator[Mistake]:
         if e in asked or e.omega_squared is None:
             continue
         at = f"{r} = {unicode_text(e.position)}"  # θ = π, θ = arccos(g/(Rw²)): as the step's answer prints it
+        # the other equilibrium's ω² the asked one's turned over (−g/R beside g/R): a U of the wrong sign gives it
+        # too, so that cause is said beside it (review student-k 5)
+        turned = any(a.omega_squared is not None and sp.expand(a.omega_squared + e.omega_squared) == 0 for a in asked)
+        asked_at = ", ".join(f"{r} = {unicode_text(a.position)}" for a in asked) or "the equilibrium asked for"
+        sign = f". Or, at {asked_at}, your U has its sign reversed, which turns ω² over" if turned else ""
         yield Mistake(
             f"omega_squared.other_equilibrium.{n}",
             "other_equilibrium",
             f"ω² at the other equilibrium {at}",
             e.omega_squared,
-            f"ω² (the effective potential's second derivative over the effective mass) is taken at the equilibrium asked for; {at} is another one",
+            f"ω² (the effective potential's second derivative over the effective mass) is taken at the equilibrium asked for; {at} is another one{sign}",
             e.omega_squared,
         )
 

@@ -30,6 +30,7 @@ from fractions import Fraction
 import sympy as sp
 
 from app.engine.derive import Derivation
+from app.engine.dimensions import dimension
 from app.engine.mistake_families import (
     Mistake,
     kinetic_mistakes,
@@ -603,6 +604,11 @@ def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp
                 out.append(("rigid.rod_centre_axis", f"I about the rod's centre, {spoken(m * L**2 / 12)}, in place of "
                             f"I about the pivot at its end, {spoken(m * L**2 / 3)} (the parallel-axis term "
                             f"{spoken(m * (L / 2) ** 2)} is missing)", dT(m * L**2 / 12), sp.Integer(0)))  # fmt: skip
+                # the parallel-axis term added to I about the pivot, which already holds it: m l²/3 + m (l/2)²
+                out.append(("rigid.rod_parallel_axis_twice", f"the parallel-axis term {spoken(m * (L / 2) ** 2)} "
+                            f"counted twice, since I about the pivot, {spoken(m * L**2 / 3)}, already holds it "
+                            f"({spoken(m * L**2 / 3)} = {spoken(m * L**2 / 12)} + {spoken(m * (L / 2) ** 2)})",
+                            dT(m * L**2 / 3 + m * (L / 2) ** 2), sp.Integer(0)))  # fmt: skip
                 out.append(("rigid.rod_spin_forgotten", f"only the motion of the rod's centre, {spoken(m * (L / 2)**2)}"
                             f" θ̇²/2: its spin about the centre, with moment of inertia {spoken(m * L**2 / 12)}, is "
                             "forgotten", dT(m * (L / 2) ** 2), sp.Integer(0)))  # fmt: skip
@@ -624,6 +630,31 @@ def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp
             out.append((f"rigid.rolling_{other}", f"a {other}'s moment of inertia ({spoken(sp.nsimplify(k_other))} m R²)"
                         f" in place of a {body}'s", (m * (1 + sp.nsimplify(k_other)) - a) * v**2 / 2, sp.Integer(0)))  # fmt: skip
     return out
+
+
+def inertia_in_potential(d: Derivation, truth: sp.Expr, known) -> Iterator[Mistake]:
+    """U times a pure-number sum that multiplies a velocity squared in T (the helix's 1 + R² α²): a factor of
+    inertia, which a constraint's extra motion adds to T, put into U as if it added weight (review student-k 4). A
+    sum with units (a mass M + 4 m₁) in U is a units slip, named so first."""
+    T, rates = d.mechanics.T, d.table.qd
+    if T is None or truth == 0 or not truth.free_symbols & set(d.table.q):
+        return
+    seen: list[sp.Expr] = []
+    for monomial, coefficient in sp.collect(sp.expand(T), list(rates), evaluate=False).items():
+        if monomial == 1:
+            continue
+        for f, _ in sp.factor_list(sp.factor(coefficient))[1]:
+            if not f.is_Add or f.free_symbols & set(rates) or f in seen or dimension(f, known) != {}:
+                continue
+            seen.append(f)
+            alone = "U is m g × height alone" if any(x.name == "g" for x in truth.free_symbols) else "U has no such factor"
+            yield Mistake(
+                f"potential.inertia_factor.{len(seen)}", "inertia_in_u", f"the factor {spoken(f)}, which belongs to T",
+                None,
+                f"it multiplies {spoken(monomial)} there, from the extra motion the constraint adds; that is more "
+                f"inertia, not more weight, so {alone}",
+                truth * f,
+            )  # fmt: skip
 
 
 # ---- mistakes that travel --------------------------------------------------------------------------
@@ -648,9 +679,14 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
     if step in ("kinetic", "potential"):
         for key, name, dT, dU in rigid:
             change = dT if step == "kinetic" else dU
+            # the reason is the step's own: T's for a slip of T, U's for a slip of U (review student-k 6)
+            why = (
+                "a rigid body's T is ½ m v_centre² + ½ I ω², with I about its centre"
+                if step == "kinetic"
+                else "a rigid body's U is its mass × g × the height of its centre, where its weight acts"
+            )
             if change != 0:
-                yield Mistake(f"{step}.{key}", "rigid", name, None,
-                              "a rigid body's T is ½ m v_centre² + ½ I ω², with I about its centre", truth + change)  # fmt: skip
+                yield Mistake(f"{step}.{key}", "rigid", name, None, why, truth + change)
         return
     if step not in ("equation", "acceleration", "omega_squared"):
         return

@@ -215,7 +215,7 @@ PULLEY = Scene(
             Particle("m2", ("d", "0", "y2"), "right mass"),
             Particle("M", ("0", "0", "-(y1 + y2)/2 - c"), "middle mass"),
         ),
-        potential="m1*g*y1 + m2*g*y2 - M*g*(y1 + y2)/2",
+        potential="m1*g*y1 + m2*g*y2 - M*g*(y1 + y2)/2 - M*g*c",
         cartesian_potential="m1*g*z1 + m2*g*z2 + M*g*z3",
         constraints=(
             Constraint(

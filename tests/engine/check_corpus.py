@@ -152,7 +152,8 @@ CORPUS = [
     # a "constant" of the wrong units (a force, a mass, a bare number) is no other zero of U: a units mistake
     ("incline-block", "lagrangian", None, "m*X_dot**2/2 - m*g*X*sin(alpha) + 3*m*g", "incorrect", None, "units"),
     ("incline-block", "acceleration", "X", "-g*sin(alpha)", "correct", None, None),
-    ("incline-block", "acceleration", "X", "g*sin(alpha)", "incorrect", "2*g*sin(alpha)", "sign_of_dl_dq"),
+    # a whole acceleration negated is the sign of the whole answer on every system (review student-k 5)
+    ("incline-block", "acceleration", "X", "g*sin(alpha)", "incorrect", "2*g*sin(alpha)", "key:acceleration.whole_sign"),
     # tabletop spring
     (
         "tabletop-spring",
@@ -394,7 +395,7 @@ TYPICAL = [
     ("helix-bead", "potential", None, "-m*g*z", "sign_of_u"),
     ("incline-block", "kinetic", None, "m*X_dot**2*cos(alpha)**2/2", "kinetic.velocity_axis.block.z"),
     ("incline-block", "equation", "X", "m*X_ddot", "equation.force_left_out.X_alpha_g_m"),
-    ("incline-block", "acceleration", "X", "g*sin(alpha)", "sign_of_dl_dq"),
+    ("incline-block", "acceleration", "X", "g*sin(alpha)", "acceleration.whole_sign"),
     ("tabletop-spring", "kinetic", None, "m*r_dot**2/2", "kinetic.velocity_part.particle.theta"),
     ("tabletop-spring", "equation", "r", "m*r_ddot + k*r", "equation.dl_dq_part.theta_dot_2"),
     ("tabletop-spring", "equation", "theta", "m*r**2*theta_ddot", "equation.chain_rule.r"),

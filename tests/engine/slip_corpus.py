@@ -501,7 +501,7 @@ SLIPS = [
     ("helix-bead", "acceleration", "z", "-g*(1+alpha**2*R**2)", r"1 \+ R² α² upside down"),
     ("coupled-oscillators", "acceleration", "x1", "-(k+2*kappa)/m*x1", r"term of x₂ left out"),
     ("rotating-parabola", "omega_squared", None, "g*alpha - omega**2", r"factor 2 lost in the term 2 g α"),
-    ("rotating-parabola", "omega_squared", None, "omega**2 - 2*g*alpha", r"sign of the whole reversed"),
+    ("rotating-parabola", "omega_squared", None, "omega**2 - 2*g*alpha", r"sign of the whole answer"),
     # ---- the small-angle form where the exact U, L or h is asked (issue 41, 3)
     ("simple-pendulum", "potential", None, "m*g*R*theta**2/2", SMALL),
     ("simple-pendulum", "lagrangian", None, "m*R**2*theta_dot**2/2 - m*g*R*theta**2/2", SMALL),
@@ -544,6 +544,34 @@ NAMED = [
     # issue 41, 2: the wedge given a height got the step's rule: it slides on the floor, so M has no term in U
     ("movable-incline", "potential", None, "-m*g*D*sin(alpha) - M*g*X*sin(alpha)",
      r"for the wedge, whose height never changes.*its height does not change.*M has no term in U"),
+    # review student-k 5: a whole acceleration negated is one slip on every system (the pulley's was "the sign of
+    # ∂L/∂q", the wedge's "the sign of the whole answer"), with its likely cause, a reversed U
+    ("pulley", "acceleration", "y1", "g*(M*m1 - 3*M*m2 + 4*m1*m2)/(M*m1 + M*m2 + 4*m1*m2)",
+     r"^(?!.*∂L/∂q).*the sign of the whole answer.*U with its sign reversed"),
+    ("movable-incline", "acceleration", "X", "m*g*sin(alpha)*cos(alpha)/(M + m*sin(alpha)**2)",
+     r"^(?!.*∂L/∂q).*the sign of the whole answer.*U with its sign reversed"),
+    # −g/R for ω²: the other equilibrium's, and as likely a U of the wrong sign at θ = 0
+    ("simple-pendulum", "omega_squared", None, "-g/R", r"θ = π.*Or, at θ = 0, your U has its sign reversed"),
+    # review student-k 1: a solved answer's number upside down or a factor squared is named so, before any
+    # denominator is compared, and no one-coordinate answer is told of "equations solved together" or an
+    # "effective mass" its denominator is not
+    ("physical-pendulum", "omega_squared", None, "2*g/(3*l)",
+     r"^(?!.*(solved together|denominator)).*the number 2/3 upside down"),
+    ("helix-bead", "acceleration", "z", "-g/(1 + R**2*alpha**2)**2",
+     r"^(?!.*(solved together|effective mass|R⁴)).*the factor 1 \+ R² α² squared"),
+    ("coupled-oscillators", "acceleration", "x1", "(-k*x1 - kappa*(x1 - x2))/(2*m)",
+     r"^(?!.*(solved together|effective mass)).*the denominator 2 m.*coefficient of the acceleration"),
+    # review student-k 2: two slips, the units' named and the lost ½ said after it
+    ("simple-pendulum", "kinetic", None, "m*R*theta_dot**2",
+     r"a length such as R.*at least one more difference: the ½ of ½ m v² left out"),
+    # review student-k 3: the helix's winding factor put into U; the parallel-axis term counted twice
+    ("helix-bead", "potential", None, "m*g*(1 + R**2*alpha**2)*z",
+     r"the factor 1 \+ R² α², which belongs to T.*more inertia, not more weight"),
+    ("physical-pendulum", "kinetic", None, "M*(l/2)**2*theta_dot**2/2 + (M*l**2/3)*theta_dot**2/2",
+     r"the parallel-axis term M l²/4 counted twice, since I about the pivot, M l²/3, already holds it"),
+    # review student-k 6: a rigid body's slip of U is explained by U, never by T
+    ("physical-pendulum", "potential", None, "-M*g*l*cos(theta)",
+     r"^(?!.*v_centre).*centre at l in place of l/2.*the height of its centre"),
 ]
 SLIPS += NAMED
 

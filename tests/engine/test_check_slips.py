@@ -47,9 +47,10 @@ def step_problem(name: str, step: str, coordinate: str | None):
 
 
 def words(result: dict[str, Any]) -> str:
-    """The key, name and hint of a diagnosis, as one text to search."""
+    """The key, name and hint of a diagnosis, and what it says beside them (a second slip), as one text to search."""
     m = result["mistake"] or {"key": "", "name": ""}
-    return unicodedata.normalize("NFC", f"{m['key']} | {m['name']} | {result['hint']}")
+    beside = (result.get("partial") or {}).get("message", "")
+    return unicodedata.normalize("NFC", f"{m['key']} | {m['name']} | {result['hint']} | {beside}")
 
 
 def outcome(slip: tuple) -> tuple[str, dict[str, Any]]:
@@ -187,3 +188,21 @@ def test_part_by_part_measures_the_parts_by_the_right_ones_not_by_a_wrong_accele
     assert result["partial"]["agree"] == ["the terms without a velocity"], result["partial"]
     differ = sorted(unicodedata.normalize("NFC", w) for w in result["partial"]["differ"])
     assert differ == [unicodedata.normalize("NFC", w) for w in ("the ÿ₁ terms", "the ÿ₂ terms")], differ
+
+
+def test_the_pulleys_u_keeps_the_middle_mass_below_the_pages_zero():
+    # review student-k 7: the statement puts U = 0 at the end masses' level with Y = −(y₁ + y₂)/2 − c, so −M g c is
+    # part of U, not "a different zero of height"
+    pb = step_problem("pulley", "potential", None)
+    assert judge(pb, "g*(m1*y1 + m2*y2) - M*g*(y1 + y2)/2 - M*g*c")["verdict"] == "correct"
+    dropped = judge(pb, "g*(m1*y1 + m2*y2) - M*g*(y1 + y2)/2")
+    assert dropped["verdict"] == "equivalent" and "the constant Mgc" in dropped["message"], dropped["message"]
+
+
+def test_a_second_slip_behind_a_whole_of_the_wrong_units_is_said():
+    # review student-k 2: with the units' factor put right, an answer that still differs has one more slip; said
+    # even where it is none of the named ones, and never where the units' slip was the only one
+    pb = step_problem("simple-pendulum", "kinetic", None)
+    assert judge(pb, "m*R*theta_dot**2/2")["partial"] is None
+    other = judge(pb, "3*m*R*theta_dot**2")["partial"]["message"]
+    assert other.startswith("And there is at least one more difference, not one of the slips named here"), other

@@ -104,8 +104,9 @@ PINNED = {  # fmt: skip
     },
     "pulley": {
         "kinetic": "M*(y1_dot + y2_dot)**2/8 + m1*y1_dot**2/2 + m2*y2_dot**2/2",
-        "potential": "-M*g*(y1 + y2)/2 + g*m1*y1 + g*m2*y2",
-        "hamiltonian": "-M*g*(y1 + y2)/2 + M*(y1_dot + y2_dot)**2/8 + g*m1*y1 + g*m2*y2 + m1*y1_dot**2/2 + m2*y2_dot**2/2",
+        # the page's zero of U is the end masses' level, so the middle mass's −M g c stays (review student-k 7)
+        "potential": "-M*c*g - M*g*(y1 + y2)/2 + g*m1*y1 + g*m2*y2",
+        "hamiltonian": "-M*c*g - M*g*(y1 + y2)/2 + M*(y1_dot + y2_dot)**2/8 + g*m1*y1 + g*m2*y2 + m1*y1_dot**2/2 + m2*y2_dot**2/2",
         "equations": [
             "-M*g/2 + M*y2_ddot/4 + g*m1 + y1_ddot*(M/4 + m1)",
             "-M*g/2 + M*y1_ddot/4 + g*m2 + y2_ddot*(M/4 + m2)",

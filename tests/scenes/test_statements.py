@@ -19,7 +19,9 @@ ZEROS = {
     "tabletop-spring": {"r": 0, "theta": 0},
     "spherical-pendulum": {"theta": sp.pi / 2, "phi": 0},  # at the pivot's height
     "rail-two-body": {"x1": 0, "x2": "l0"},
-    "pulley": {"y1": 0, "y2": 0},
+    # each height from the end masses' level, the middle mass c below it at y1 = y2 = 0 (U holds −M g c): all three
+    # bodies are at that level together only where c = 0
+    "pulley": {"y1": 0, "y2": 0, "c": 0},
     "movable-incline": {"X": 0, "D": 0},
     "rotating-parabola": {"rho": 0},
     "coupled-oscillators": {"x1": 0, "x2": 0},

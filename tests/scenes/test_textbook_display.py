@@ -45,7 +45,7 @@ PINNED = {  # fmt: skip
         ],
     ),
     "pulley": (
-        "\\frac{1}{8} M \\left(\\dot{y}_{1} + \\dot{y}_{2}\\right)^{2} + \\frac{1}{2} m_{1} \\dot{y}_{1}^{2} + \\frac{1}{2} m_{2} \\dot{y}_{2}^{2} + \\frac{1}{2} M g \\left(y_{1} + y_{2}\\right) - m_{1} g y_{1} - m_{2} g y_{2}",
+        "\\frac{1}{8} M \\left(\\dot{y}_{1} + \\dot{y}_{2}\\right)^{2} + \\frac{1}{2} m_{1} \\dot{y}_{1}^{2} + \\frac{1}{2} m_{2} \\dot{y}_{2}^{2} + \\frac{1}{2} M g \\left(y_{1} + y_{2}\\right) - m_{1} g y_{1} - m_{2} g y_{2} + M g c",
         [
             "\\left(m_{1} + \\frac{M}{4}\\right) \\ddot{y}_{1} + \\frac{1}{4} M \\ddot{y}_{2} + m_{1} g - \\frac{M g}{2} = 0",
             "\\left(m_{2} + \\frac{M}{4}\\right) \\ddot{y}_{2} + \\frac{1}{4} M \\ddot{y}_{1} + m_{2} g - \\frac{M g}{2} = 0",
