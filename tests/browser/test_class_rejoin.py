@@ -8,9 +8,8 @@ import json
 import pytest
 
 from tests.browser.test_classroom import (
-    PHONE,
-    _errors_of,
     classes,  # noqa: F401 - the module's classes in a database of their own
+    phone_page,
 )
 
 pytestmark = pytest.mark.browser
@@ -18,15 +17,10 @@ pytestmark = pytest.mark.browser
 RIGHT_T = "m*R**2*theta_dot**2/2"
 
 
-def _phone(browser, live_server):
-    context = browser.new_context(base_url=live_server, **PHONE)
-    page = context.new_page()
-    page.set_default_timeout(60_000)
-    return context, page, _errors_of(page)
 
 
 def test_a_student_gets_back_to_their_record_on_another_phone(browser, live_server, classes, artifacts):  # noqa: F811
-    first_context, first, first_errors = _phone(browser, live_server)
+    first_context, first, first_errors = phone_page(browser, live_server)
     made = first.request.post("/api/classes", data={"title": "Two phones"}).json()
     teacher = {"Authorization": f"Bearer {made['teacher_key']}"}
     item = {"scene": "simple-pendulum", "steps": [{"step": "kinetic"}]}
@@ -47,7 +41,7 @@ def test_a_student_gets_back_to_their_record_on_another_phone(browser, live_serv
     step.locator("textarea").press("Enter")
     first.wait_for_selector(".practice-step.step-done")
 
-    second_context, second, second_errors = _phone(browser, live_server)
+    second_context, second, second_errors = phone_page(browser, live_server)
     second.goto(f"/join?code={made['code']}")
     second.fill("#join-name", "ana")
     second.click("#join-form button[type=submit]")
@@ -66,7 +60,7 @@ def test_a_student_gets_back_to_their_record_on_another_phone(browser, live_serv
     assert second.evaluate("document.documentElement.scrollWidth <= window.innerWidth")
 
     # the teacher gives ana a new code from the dashboard, beside her name
-    teach_context, teach, teach_errors = _phone(browser, live_server)
+    teach_context, teach, teach_errors = phone_page(browser, live_server)
     teach.goto("/teach")
     stored = json.dumps({"code": made["code"], "key": made["teacher_key"], "title": "Two phones"})
     teach.evaluate(f"localStorage.setItem('lagrange-teach', {json.dumps(stored)})")

@@ -8,9 +8,8 @@ from __future__ import annotations
 import pytest
 
 from tests.browser.test_classroom import (
-    PHONE,
-    _errors_of,
     classes,  # noqa: F401 - the module's classes in a database of their own
+    phone_page,
 )
 
 pytestmark = pytest.mark.browser
@@ -21,11 +20,6 @@ WRONG_U = "-m*g*R*(1 - cos(theta))"
 SHOWN_WORDS = "Right — but this step was shown before you answered it, so it does not count as done for the grade."
 
 
-def _phone(browser, live_server):
-    context = browser.new_context(base_url=live_server, **PHONE)
-    page = context.new_page()
-    page.set_default_timeout(60_000)
-    return context, page, _errors_of(page)
 
 
 def _check(step, answer, verdict):
@@ -37,7 +31,7 @@ def _check(step, answer, verdict):
 
 
 def test_a_phone_says_what_the_grade_counts_and_keeps_what_was_done(browser, live_server, classes, artifacts):  # noqa: F811
-    context, page, errors = _phone(browser, live_server)
+    context, page, errors = phone_page(browser, live_server)
     made = page.request.post("/api/classes", data={"title": "Mechanics II, Tuesday practice"}).json()
     teacher = {"Authorization": f"Bearer {made['teacher_key']}"}
     item = {"scene": "simple-pendulum", "steps": [{"step": "kinetic"}, {"step": "potential"}]}
@@ -105,7 +99,7 @@ def test_a_phone_says_what_the_grade_counts_and_keeps_what_was_done(browser, liv
     assert page.locator("#join-recovery").is_hidden()
 
     # on another phone, from the record: the last answers, their verdicts and the step shown
-    other_context, other, other_errors = _phone(browser, live_server)
+    other_context, other, other_errors = phone_page(browser, live_server)
     other.goto(f"/join?code={made['code']}")
     other.locator("#join-again summary").click()
     other.fill("#rejoin-name", "mei")  # the pseudonym in another case opens the same record

@@ -47,6 +47,26 @@ def _errors_of(page) -> list[str]:
     return page.console_errors
 
 
+def phone_page(browser, live_server):
+    """A fresh phone (its own cookies) on the live server: its context, its page and the page's errors."""
+    context = browser.new_context(base_url=live_server, **PHONE)
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    return context, page, _errors_of(page)
+
+
+def teacher_page(browser, live_server):
+    """A lecturer's laptop at 1366×768 on the live server, the classroom started: its context, page and the page's
+    uncaught errors (a refused request's console line is what some of these tests ask for)."""
+    context = browser.new_context(base_url=live_server, viewport={"width": 1366, "height": 768})
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    errors: list[str] = []
+    page.on("pageerror", lambda exc: errors.append(str(exc)))
+    assert page.request.post("/api/classes", data={"title": "first"}).status == 201  # the classroom starts
+    return context, page, errors
+
+
 def _student(browser, live_server, code: str, name: str, device: dict):
     context = browser.new_context(base_url=live_server, **device)
     page = context.new_page()

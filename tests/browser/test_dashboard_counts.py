@@ -17,6 +17,7 @@ import json
 import pytest
 
 from app.service.classroom import store
+from tests.browser.test_classroom import teacher_page
 from tests.browser.test_dashboard import classes  # noqa: F401  (the module's classroom, on its own database)
 
 pytestmark = pytest.mark.browser
@@ -56,12 +57,7 @@ def _scripted(room) -> tuple[str, str]:
 
 
 def test_the_bars_share_one_scale_and_every_mistake_counts_students(browser, live_server, classes, artifacts):  # noqa: F811
-    context = browser.new_context(base_url=live_server, viewport={"width": 1366, "height": 768})
-    page = context.new_page()
-    page.set_default_timeout(60_000)
-    errors: list[str] = []
-    page.on("pageerror", lambda exc: errors.append(str(exc)))
-    assert page.request.post("/api/classes", data={"title": "first"}).status == 201  # the classroom starts
+    context, page, errors = teacher_page(browser, live_server)
     page.goto("/teach")
     code, key = _scripted(classes[0])
     kept = json.dumps({"code": code, "key": key, "title": "Mechanics II, Tuesday practice"})
@@ -122,12 +118,7 @@ def test_the_bars_share_one_scale_and_every_mistake_counts_students(browser, liv
 def test_the_lecturer_closes_joining_and_stops_answers_from_the_dashboard(browser, live_server, classes, artifacts):  # noqa: F811
     """Issue 44, item 7: two buttons end the session without deleting the class; a student trying to join reads
     the server's reason on /join; both reopen."""
-    context = browser.new_context(base_url=live_server, viewport={"width": 1366, "height": 768})
-    page = context.new_page()
-    page.set_default_timeout(60_000)
-    errors: list[str] = []
-    page.on("pageerror", lambda exc: errors.append(str(exc)))
-    assert page.request.post("/api/classes", data={"title": "first"}).status == 201  # the classroom starts
+    context, page, errors = teacher_page(browser, live_server)
     page.goto("/teach")
     room = classes[0]
     code, key = _scripted(room)

@@ -14,6 +14,7 @@ import json
 import pytest
 
 from app.service.classroom import store
+from tests.browser.test_classroom import teacher_page
 from tests.browser.test_dashboard import classes  # noqa: F401  (the module's classroom, on its own database)
 
 pytestmark = pytest.mark.browser
@@ -42,12 +43,7 @@ def _scripted(room) -> tuple[str, str]:
 
 
 def test_a_step_shown_is_not_done_and_the_table_sorts_by_score(browser, live_server, classes, artifacts):  # noqa: F811
-    context = browser.new_context(base_url=live_server, viewport={"width": 1366, "height": 768})
-    page = context.new_page()
-    page.set_default_timeout(60_000)
-    errors: list[str] = []
-    page.on("pageerror", lambda exc: errors.append(str(exc)))
-    assert page.request.post("/api/classes", data={"title": "first"}).status == 201  # the classroom starts
+    context, page, errors = teacher_page(browser, live_server)
     code, key = _scripted(classes[0])
     page.goto("/teach")
     page.evaluate(f"localStorage.setItem('lagrange-teach', {json.dumps(json.dumps({'code': code, 'key': key, 'title': 'M'}))})")
