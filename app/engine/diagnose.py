@@ -197,11 +197,16 @@ def whole_sign(d: Derivation, step: str, truth: sp.Expr) -> list[Mistake]:
             "and that each term changed sign once as it crossed the equals sign"
         )
     else:
-        # ω² = U_eff″/m_eff at the equilibrium: U turned over makes a minimum a maximum and turns ω² over
+        # ω² = U_eff″/m_eff at the equilibrium: U turned over makes a minimum a maximum and turns ω² over, but only
+        # where U_eff is U; where U_eff holds more (the rotating wire's −½ m ω² ρ²), a U turned over alone does not
+        # give the whole answer turned over (student-l 1: it was said so on the rotating parabola)
+        w = frequency_letter("frequency", d)
+        red = d.reduction
+        alone = red is None or not has_u or sp.simplify(red.effective_potential - d.mechanics.U) == 0
         where = (
-            "ω² is the effective potential's second derivative over the effective mass, at the equilibrium; "
-            + ("the likely cause is U with its sign reversed, which turns a minimum into a maximum and ω² over"
-               if has_u else "check the sign of each term of the effective potential")
+            f"{w}² is the effective potential's second derivative over the effective mass, at the equilibrium; "
+            + ("the likely cause is U with its sign reversed, which turns a minimum into a maximum and "
+               f"{w}² over" if has_u and alone else "check the sign of each term of the effective potential")
         )  # fmt: skip
     return [Mistake(f"{step}.whole_sign", "term_sign", "the sign of the whole answer", truth, where, -truth)]
 

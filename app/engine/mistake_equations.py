@@ -342,7 +342,11 @@ def omega_mistakes(d: Derivation, asked: list) -> Iterator[Mistake]:
         at = f"{r} = {unicode_text(e.position)}"  # θ = π, θ = arccos(g/(Rw²)): as the step's answer prints it
         # the other equilibrium's ω² the asked one's turned over (−g/R beside g/R): a U of the wrong sign gives it
         # too, so that cause is said beside it (review student-k 5)
-        turned = any(a.omega_squared is not None and sp.expand(a.omega_squared + e.omega_squared) == 0 for a in asked)
+        # (only where U_eff is U: where it holds more, a U turned over alone gives another answer)
+        alone = d.mechanics.U is not None and sp.simplify(red.effective_potential - d.mechanics.U) == 0
+        turned = alone and any(
+            a.omega_squared is not None and sp.expand(a.omega_squared + e.omega_squared) == 0 for a in asked
+        )
         asked_at = ", ".join(f"{r} = {unicode_text(a.position)}" for a in asked) or "the equilibrium asked for"
         sign = f". Or, at {asked_at}, your U has its sign reversed, which turns ω² over" if turned else ""
         yield Mistake(

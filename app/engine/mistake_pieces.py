@@ -231,6 +231,13 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
                 if step in ("equation", "acceleration") and k is not None and not p.has(*rates)
                 else "check which component of the position has the sine and which the cosine, at a small angle"
             )
+            # a solved acceleration's quotient whose numerator a swap leaves as it is (sin α cos α): the swap is in
+            # the denominator, the inertia T gives, not in a component of gravity (student-l 2: it was said so)
+            num, den = sp.fraction(sp.factor(p))
+            if step == "acceleration" and den != 1 and sp.simplify(swap_sin_cos(num) - num) == 0 \
+                    and sp.simplify(swap_sin_cos(den) - den) != 0:
+                why = (f"the swap is in the denominator {spoken(den)}, which the inertia in T gives (the effective "
+                       "mass), not in a component of gravity: check the cross term of T")  # fmt: skip
             yield Mistake(
                 f"{base}.sin_cos.{key}", "sin_cos", f"sin and cos swapped in your term {spoken(swap_sin_cos(short))}",
                 p, why, truth - p + swapped,

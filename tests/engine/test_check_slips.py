@@ -206,3 +206,20 @@ def test_a_second_slip_behind_a_whole_of_the_wrong_units_is_said():
     assert judge(pb, "m*R*theta_dot**2/2")["partial"] is None
     other = judge(pb, "3*m*R*theta_dot**2")["partial"]["message"]
     assert other.startswith("And there is at least one more difference, not one of the slips named here"), other
+
+
+def test_a_whole_sign_turned_over_blames_u_only_where_u_eff_is_u_and_says_the_steps_letter():
+    # student-l 1: on the rotating wire U turned over alone gives −2gα − ω², not the answer ω² − 2gα turned over
+    result = judge(step_problem("rotating-parabola", "omega_squared", None), "omega**2 - 2*g*alpha")
+    text = words(result)
+    assert "sign of the whole answer" in text and "U with its sign reversed" not in text and "Ω²" in text
+    # on the simple pendulum U_eff is U: there a U turned over is the likely cause
+    assert "U has its sign reversed" in words(judge(step_problem("simple-pendulum", "omega_squared", None), "-g/R"))
+
+
+def test_a_swap_in_a_solved_denominator_is_said_to_be_there_not_in_gravity():
+    # student-l 2: the wedge's Ẍ with cos² where sin² belongs in M + m sin²α; the numerator sin α cos α is right
+    result = judge(step_problem("movable-incline", "acceleration", "X"),
+                   "-m*g*sin(alpha)*cos(alpha)/(M + m*cos(alpha)**2)")  # fmt: skip
+    text = words(result)
+    assert "sin and cos swapped" in text and "denominator" in text and "component of gravity taken" not in text
