@@ -81,9 +81,22 @@ function parts(ctl) {
   };
 }
 
+/**
+ * A number read from a control's box: one that prints as a bound (3.142 for π) is that bound, since the box holds
+ * values rounded to 4 figures (tidy): the slider's own end, put in the box as 3.142, was refused as beyond π (prof-l 1).
+ */
+export function snapToBounds(value, lo, hi) {
+  for (const bound of [lo, hi]) if (Number.isFinite(value) && Number.isFinite(bound) && tidy(value) === tidy(bound)) return bound;
+  return value;
+}
+
+function readValue(ctl) {
+  return snapToBounds(Number(parts(ctl).number.value), Number(ctl.dataset.min), Number(ctl.dataset.max));
+}
+
 function check(ctl) {
   const { number, hint } = parts(ctl);
-  const value = Number(number.value);
+  const value = readValue(ctl);
   const lo = Number(ctl.dataset.min), hi = Number(ctl.dataset.max);
   const unit = ctl.dataset.unit ? ` ${ctl.dataset.unit}` : "";
   const ok = number.value.trim() !== "" && Number.isFinite(value) && value >= lo && value <= hi;
@@ -115,7 +128,7 @@ function setValue(ctl, value) {
 export function readRequest(form) {
   const request = { parameters: {}, initial: {} };
   for (const ctl of form.querySelectorAll(".control")) {
-    const value = Number(parts(ctl).number.value);
+    const value = readValue(ctl);
     const group = ctl.dataset.group;
     if (group === "parameters") request.parameters[ctl.dataset.name] = value;
     else if (group === "initial") request.initial[ctl.dataset.name] = value;

@@ -113,3 +113,10 @@ def test_a_number_shows_no_digit_finer_than_its_resolution_and_a_difference_thre
         " m.fmtResolved(2.486021, 0.003), m.fmtResolved(2.486021, 1e-9), m.fmt(2.486021), m.fmt(-1234567, 3)]",
     )
     assert out == ["−6.22 %", "−6.22 %", "−6.2 %", "≈ 0 %", "2.486", "2.486", "2.486", "−1.23 × 10⁶"]
+
+
+def test_a_box_value_that_prints_as_a_bound_is_that_bound():
+    # prof-l 1: the angle slider at its end puts 3.142 in the box, which is past π; read as π, it is allowed
+    found = node("controls.js", "(m) => [m.snapToBounds(3.142, -Math.PI, Math.PI), m.snapToBounds(-3.142, -Math.PI, "
+                 "Math.PI), m.snapToBounds(3.15, -Math.PI, Math.PI), m.snapToBounds(1.5, -Math.PI, Math.PI)]")
+    assert found == [math.pi, -math.pi, 3.15, 1.5]
