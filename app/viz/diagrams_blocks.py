@@ -173,11 +173,11 @@ def pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) 
     svg.text(left - 44, (base + y1) / 2, "y₁", ACCENT, 16)
     svg.arrow(right + 30, base, right + 30, y2, color=ACCENT)
     svg.text(right + 40, (base + y2) / 2, "y₂", ACCENT, 16)
-    # the third height, Y, of M's centre, measured upward like the others: negative, so its arrow from the line
-    # to M points down (the caption says Y < 0; the arrow alone marks it here)
+    # the third height, Y, of M's centre, measured upward like the others: negative, so the arrow from the line
+    # down to M is −Y, a positive depth, and is labelled so (prof-l 2: "Y" on a downward arrow invites U = −MgY)
     svg.arrow(mid + 34, base, mid + 34, centre, color=ACCENT)
     svg.line(mid + 17, centre, mid + 40, centre, GUIDE, 1, dash=True)
-    svg.text(mid + 46, (base + centre) / 2, "Y", ACCENT, 16)
+    svg.text(mid + 50, (base + centre) / 2, "−Y", ACCENT, 16)
     # c: how far below the line M would hang with y₁ = y₂ = 0; drawn to the figure's own scale, so that
     # Y = −(y₁ + y₂)/2 − c holds for the heights drawn (the level stops short of the strings)
     level = base + (centre - base) - ((base - y1) + (base - y2)) / 2

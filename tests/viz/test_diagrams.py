@@ -40,7 +40,7 @@ def test_the_pulley_figure_marks_all_three_heights_its_caption_names():
     # the caption says "heights y₁, y₂, Y measured upward": each is drawn, in the coordinates' colour
     svg = card("pulley")
     assert "Y measured upward" in SCENES["pulley"].figure
-    for name in ("y₁", "y₂", "Y"):
+    for name in ("y₁", "y₂", "−Y"):  # prof-l 2: the arrow down to M, below the line, is −Y (Y itself is negative)
         assert f">{name}</text>" in svg, name
     # prof-h 2: measured from the line where U = 0, the string makes Y = −(y₁ + y₂)/2 − c negative: M hangs
     # below the line while the end masses are above it, and the figure says so
