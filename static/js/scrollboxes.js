@@ -42,8 +42,9 @@ function mark(box) {
   if (box.dataset.more !== more) box.dataset.more = more;
 }
 
-function check(root) {
+function check(root, watch = () => {}) {
   for (const box of root.querySelectorAll(BOXES)) {
+    watch(box);
     const overflows = box.scrollWidth > box.clientWidth + 1;
     // a box holding something focusable is reached through it already
     const inner = box.querySelector("a[href], button, input, select, textarea, [tabindex]:not([data-scroll-box])");
@@ -75,7 +76,18 @@ export function keyboardScroll(root = document) {
   const soon = () => {
     if (pending) return;
     pending = true;
-    requestAnimationFrame(() => { pending = false; check(root); });
+    requestAnimationFrame(() => { pending = false; check(root, watch); });
+  };
+  // a formula whose own width changes (broken again across lines, typeset again, set in a web font once it
+  // loads) is measured again: its box keeps its size, so nothing else says so, and a cue could stay on a formula
+  // that now fits (the widths test's "a formula that fits shows no cue", seen now and then)
+  const resized = typeof ResizeObserver === "function" ? new ResizeObserver(() => soon()) : null;
+  const watched = new WeakSet();
+  const watch = (box) => {
+    const content = box.firstElementChild;
+    if (!resized || !content || watched.has(content)) return;
+    watched.add(content);
+    resized.observe(content);
   };
   if (document.readyState === "complete") soon(); else window.addEventListener("load", soon, { once: true });
   window.addEventListener("resize", soon);
