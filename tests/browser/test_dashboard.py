@@ -23,6 +23,7 @@ from app.service.classroom.service import Classroom
 from app.settings import Settings
 from app.web.api_classes import classroom as classroom_dep
 from app.web.deps import ServicesDep
+from tests.browser.test_classroom import teacher_page
 
 pytestmark = pytest.mark.browser
 
@@ -76,12 +77,7 @@ def _within_first_screen(page, selector: str, height: int) -> None:
 
 
 def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_server, classes, artifacts):
-    context = browser.new_context(base_url=live_server, viewport={"width": 1366, "height": 768})
-    page = context.new_page()
-    page.set_default_timeout(60_000)
-    errors: list[str] = []
-    page.on("pageerror", lambda exc: errors.append(str(exc)))
-    assert page.request.post("/api/classes", data={"title": "first"}).status == 201  # the classroom starts
+    context, page, errors = teacher_page(browser, live_server)
     room = classes[0]
     page.goto("/teach")
     code, key, people = _scripted_class(room)
