@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from datetime import datetime
 
-from sqlalchemy import DateTime, ForeignKey, Integer, String, Text, UniqueConstraint
+from sqlalchemy import DateTime, ForeignKey, Index, Integer, String, Text, UniqueConstraint
 from sqlalchemy.orm import DeclarativeBase, Mapped, mapped_column
 
 
@@ -58,7 +58,12 @@ class ClassAssignmentRow(Base):
 
 class StudentRow(Base):
     __tablename__ = "students"
-    __table_args__ = (UniqueConstraint("class_id", "name", name="uq_students_class_name"),)
+    __table_args__ = (
+        UniqueConstraint("class_id", "name", name="uq_students_class_name"),
+        # one pseudonym per class whatever its case or Unicode form (migration 0010; NULL: a name that joined before
+        # the rule beside another equal to it, kept apart)
+        Index("uq_students_class_name_key", "class_id", "name_key", unique=True),
+    )
 
     id: Mapped[int] = mapped_column(Integer, primary_key=True)
     class_id: Mapped[int] = mapped_column(ForeignKey("classes.id", ondelete="CASCADE"), index=True)
@@ -69,6 +74,8 @@ class StudentRow(Base):
     recovery_hash: Mapped[str | None] = mapped_column(String(64), nullable=True)
     # the student's institution login, when their class asks for it (migration 0008)
     login: Mapped[str | None] = mapped_column(String(64), nullable=True)
+    # ``store.pseudonym_digest(name)``, unique in the class (migration 0010)
+    name_key: Mapped[str | None] = mapped_column(String(64), nullable=True)
 
 
 class AssignmentRow(Base):

@@ -9,6 +9,7 @@ unknown code and a wrong key cannot be told apart, by the answer or its time.
 
 from __future__ import annotations
 
+import hashlib
 import hmac
 import json
 import unicodedata
@@ -45,6 +46,12 @@ def pseudonym_key(name: str) -> str:
     ("Grace", "grace" and "ＧＲＡＣＥ" are one name), by Unicode case folding between two NFKC normalisations (NFKC
     after folding too, since folding may undo it), spaces around trimmed."""
     return unicodedata.normalize("NFKC", unicodedata.normalize("NFKC", name.strip()).casefold())
+
+
+def pseudonym_digest(name: str) -> str:
+    """The SHA-256 of ``pseudonym_key(name)``, kept beside each student and unique in the class (a fixed 64
+    characters, whatever folding and NFKC make of 40 typed ones: "ﷺ" alone unfolds to 18)."""
+    return hashlib.sha256(pseudonym_key(name).encode()).hexdigest()
 
 
 def _same_pseudonym(names: list[str], name: str) -> str | None:
@@ -267,7 +274,9 @@ def _add_student(db: Database, normal: str, name: str, login: str | None, studen
         names = session.scalars(select(StudentRow.name).where(StudentRow.class_id == found.id)).all()
         if any(pseudonym_key(other) == wanted for other in names):
             raise _taken(name)
-        student = StudentRow(class_id=found.id, name=name, key_hash=keys.digest(student_key), joined_at=now(),
+        # the key is unique in the class: of two equal names joining at the same moment, on any replica, the
+        # database refuses the second (IntegrityError, "taken")
+        student = StudentRow(class_id=found.id, name=name, name_key=pseudonym_digest(name), key_hash=keys.digest(student_key), joined_at=now(),
                              recovery_hash=keys.digest(keys.normal_recovery(recovery, keys.STUDENT_RECOVERY_LENGTH) or ""),
                              login=kept)
         session.add(student)

@@ -10,7 +10,7 @@ import pytest
 from sqlalchemy import func, inspect, select, text
 from sqlalchemy.exc import IntegrityError
 
-from app.errors import WrongKey
+from app.errors import Refused, WrongKey
 from app.service.classroom import store
 from app.service.classroom.database import Database, database_url, make_engine, migrate, now
 from app.service.classroom.models import AttemptRow, ClassRow
@@ -18,7 +18,7 @@ from app.settings import Settings
 from tests.postgres import postgres_server  # noqa: F401 - the session fixture
 
 TABLES = {"classes", "students", "assignments", "attempts", "class_assignments", "hints", "alembic_version"}
-HEAD = "0009"  # the newest revision
+HEAD = "0010"  # the newest revision
 
 
 @pytest.fixture(params=["sqlite", "postgresql"])
@@ -260,5 +260,56 @@ def test_migrates_the_schema_before_logins_keeping_its_students_and_back(url):
         with engine.connect() as c:
             assert c.execute(text("SELECT name FROM students")).scalars().all() == ["Ada"]
             assert "login" not in {col["name"] for col in inspect(engine).get_columns("students")}
+    finally:
+        engine.dispose()
+
+
+def test_two_equal_pseudonyms_cannot_both_be_written_even_past_the_check(url, tmp_path, monkeypatch):
+    """The race the check in Python cannot close (two replicas each reading the class before the other writes):
+    with the check made blind, the database's unique key still refuses "grace" beside "Grace"."""
+    database = Database(Settings(data_dir=tmp_path, database_url=url))
+    code, *_ = store.create_class(database, "race")
+    store.join(database, code, "Grace")
+    # each replica's read saw no "Grace" yet: the check in Python passes
+    monkeypatch.setattr(store, "_same_pseudonym", lambda names, name: None)
+    monkeypatch.setattr(store, "pseudonym_key", lambda name: name)
+    monkeypatch.setattr(store, "pseudonym_digest", _digest_of_folded)
+    with pytest.raises(Refused) as refused:
+        store.join(database, code, "grace")
+    assert "taken" in str(refused.value)
+    database.stop()
+
+
+def _digest_of_folded(name):
+    import hashlib
+    import unicodedata
+
+    return hashlib.sha256(unicodedata.normalize("NFKC", unicodedata.normalize("NFKC", name.strip()).casefold()).encode()).hexdigest()
+
+
+def test_migrates_the_schema_before_pseudonym_keys_keeping_case_twins_apart(url):
+    engine = make_engine(url)
+    try:
+        migrate(engine, "0009")
+        with engine.begin() as c:
+            c.execute(text("INSERT INTO classes (id, code, title, teacher_hash, created_at) "
+                           "VALUES (1, 'ACEFHK', 'old', :h, :t)"), {"h": "0" * 64, "t": now()})
+            for sid, name in [(1, "Grace"), (2, "grace"), (3, "Ada")]:
+                c.execute(text("INSERT INTO students (id, class_id, name, key_hash, joined_at) "
+                               "VALUES (:i, 1, :n, :h, :t)"), {"i": sid, "n": name, "h": str(sid) * 64, "t": now()})
+        migrate(engine)
+        with engine.connect() as c:
+            keys_ = dict(c.execute(text("SELECT name, name_key FROM students")).all())
+        # the first to join keeps the key; its case twin from before the rule keeps its record, without one
+        assert keys_["Grace"] == store.pseudonym_digest("grace") and keys_["grace"] is None
+        assert keys_["Ada"] == store.pseudonym_digest("ADA")
+        with engine.begin() as c:
+            from alembic import command
+
+            from app.service.classroom.database import alembic_config
+            command.downgrade(alembic_config(c), "0009")
+        assert "name_key" not in {col["name"] for col in inspect(engine).get_columns("students")}
+        with engine.connect() as c:
+            assert sorted(c.execute(text("SELECT name FROM students")).scalars()) == ["Ada", "Grace", "grace"]
     finally:
         engine.dispose()
