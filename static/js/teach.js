@@ -90,6 +90,8 @@ function show() {
   if (current) {
     qr.src = `/j/${encodeURIComponent(current.code)}/qr.svg`;
     qr.alt = `QR code of the link ${window.location.host}/j/${current.code}`;
+    $("code-badge-code").textContent = current.code;
+    $("code-badge-qr").src = qr.src;
   }
 }
 
@@ -962,6 +964,10 @@ $("projector").addEventListener("click", () => {
   if (on) showNames(false); // going onto the projector: the names go first
 });
 project(Boolean(projector.get()));
+// projected: once the banner has scrolled away, the class code and its QR code stay in a corner (CSS shows the badge
+// only in projector mode), so a latecomer can still join while the lecturer shows "Stuck on" lower down
+new IntersectionObserver(([entry]) => document.body.classList.toggle("banner-away", !entry.isIntersecting))
+  .observe(document.querySelector(".class-banner"));
 showNames(false);
 
 show();

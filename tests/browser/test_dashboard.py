@@ -152,6 +152,19 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
     qr_px = page.eval_on_selector("#class-qr", "e => e.getBoundingClientRect().width")
     assert qr_px >= 240, qr_px
     assert page.locator("#now-stuck .now-who").is_hidden() and page.locator("#dash-students").is_hidden()
+    # scrolled down to a step's row, the code and its QR code stay in a corner for a latecomer; back up, only the banner
+    assert page.locator("#code-badge").is_hidden()
+    page.locator("#dash-assignments").scroll_into_view_if_needed()
+    page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
+    page.wait_for_function("document.body.classList.contains('banner-away')", timeout=5_000)
+    badge = page.locator("#code-badge").bounding_box()
+    assert badge and badge["y"] >= 0 and badge["y"] + badge["height"] <= 768 and badge["x"] + badge["width"] <= 1024
+    assert page.locator("#code-badge-code").inner_text() == code
+    assert page.eval_on_selector("#code-badge-qr", "e => e.naturalWidth > 0 && e.getBoundingClientRect().width >= 120")
+    page.screenshot(path=artifacts / "teach-projector-scrolled-1024.png")
+    page.evaluate("window.scrollTo(0, 0)")
+    page.wait_for_function("!document.body.classList.contains('banner-away')", timeout=5_000)
+    assert page.locator("#code-badge").is_hidden()
     stuck = page.locator('#dash-assignments tr[data-assignment="1"] .dash-stuck')
     assert stuck.locator(".dash-names").is_hidden()
     assert page.evaluate("getComputedStyle(document.querySelector("
