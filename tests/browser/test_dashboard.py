@@ -184,6 +184,31 @@ def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_ser
     context.close()
 
 
+def test_on_a_phone_the_students_table_header_lines_up_with_its_rows(browser, live_server, classes, artifacts):
+    """At 390 px each student is a short grid row (name, steps done, shown, score; the last step and last activity
+    under them): the header's cells sit over the rows' cells, column by column, whatever each row's numbers."""
+    context, page, errors = teacher_page(browser, live_server)
+    page.set_viewport_size({"width": 390, "height": 844})
+    room = classes[0]
+    page.goto("/teach")
+    code, key, _people = _scripted_class(room)
+    kept = json.dumps({"code": code, "key": key, "title": "Mechanics II, Tuesday"})
+    page.evaluate(f"localStorage.setItem('lagrange-teach', {json.dumps(kept)})")
+    page.reload()
+    page.wait_for_selector("#dash-students tbody tr:not(.dash-loading)", state="attached")
+    page.click("#names-shown")
+    page.locator("#dash-students").scroll_into_view_if_needed()
+    page.screenshot(path=artifacts / "teach-students-390.png", full_page=True)
+    lefts = page.evaluate("""() => [...document.querySelectorAll('#dash-students tr')].map(
+        tr => [...tr.children].slice(1, 4).map(c => Math.round(c.getBoundingClientRect().left)))""")
+    head, *rows = lefts
+    assert len(rows) == 6
+    for row in rows:
+        assert all(abs(a - b) <= 1 for a, b in zip(head, row, strict=True)), (head, row)
+    assert errors == []
+    context.close()
+
+
 def test_the_join_page_brings_a_session_and_waits_out_a_busy_minute(browser, live_server, classes, artifacts):
     """/join sets the session cookie before the student joins; a join answered 429 with Retry-After is tried
     again after that wait, counted down on the page, and then goes through."""
