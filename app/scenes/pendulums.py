@@ -34,9 +34,9 @@ SIMPLE_PENDULUM = Scene(
     summary="One angle, one equation: the Lagrangian recipe on the smallest example.",
     statement=(
         "A small bob of mass m hangs from a fixed pivot on a string of length R and swings in a "
-        "vertical plane. The angle θ is measured from the lowest point. Heights are measured upward from that "
-        "lowest point, where U = 0. Derive the equation of "
-        "motion and the frequency of small swings."
+        "vertical plane. The angle θ is measured from the downward vertical through the pivot. Positions are "
+        "measured from the lowest point of the swing, x across and heights z measured upward, with U = 0 there. "
+        "Derive the equation of motion and the frequency of small swings."
     ),
     figure="A pivot at the top, a string of length R, the bob at angle θ from the downward vertical.",
     system=System(
