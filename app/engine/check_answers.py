@@ -45,11 +45,11 @@ _WHY_NOT = {
     ("acceleration", "acceleration"): "the acceleration is what you solve for: write it with the coordinates, "
     "velocities, parameters and t, without any acceleration q̈",
     ("omega_squared", "position"): "ω² at an equilibrium is a constant: write it with the parameters "
-    "(and conserved momenta p_q) only",
+    "(and any conserved momentum) only",
     ("omega_squared", "velocity"): "ω² at an equilibrium is a constant: write it with the parameters "
-    "(and conserved momenta p_q) only",
+    "(and any conserved momentum) only",
     ("omega_squared", "acceleration"): "ω² at an equilibrium is a constant: write it with the parameters "
-    "(and conserved momenta p_q) only",
+    "(and any conserved momentum) only",
 }
 _IDENTIFIER = re.compile(r"\b[A-Za-z_][A-Za-z0-9_]*")
 

@@ -322,8 +322,14 @@ class Checker:
                     raise self.refuse(node, "a coordinate already depends on time: write it alone, without (t)")
                 source = ast.get_source_segment(self.text, node) or ""
                 head = ast.get_source_segment(self.text, node.func) or ""
-                starred = head + "*" + source[len(head) :].lstrip() if source.startswith(head) else ""
-                hint = f"write {starred} (or a space before the bracket)" if starred else "a * between factors is needed"
+                if self.typed is not None:
+                    # the student's own characters (½m(ẋ₁²+ẋ₂²)), never the rewriting (x1_dot**2) they did not type
+                    at = self.typed.span(node.col_offset, node.end_col_offset)
+                    source = self.typed.given[at[0] : at[1]]
+                    head = self.typed.given[slice(*self.typed.span(node.func.col_offset, node.func.end_col_offset))]
+                spaced = head + " " + source[len(head) :].lstrip() if head and source.startswith(head) else ""
+                hint = (f"put a space (or *) between {head} and the bracket: {spaced}" if spaced
+                        else "a * between factors is needed")
                 raise self.refuse(node.func, f"{head or 'this'} is not a function: {hint}")
             raise self.refuse(node.func, f"only these functions may be called: {allowed}")
         name = node.func.id

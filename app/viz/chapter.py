@@ -102,7 +102,10 @@ ABOUT = (
     f"The chapter is a set of lecture notes on Lagrangian mechanics (sections {_listed([s.number for s in SECTIONS])}"
     "): generalized coordinates and constraints, the Euler–Lagrange equations from Hamilton's principle, generalized "
     "momenta and cyclic coordinates, systems of particles, and the Hamiltonian against the energy, each taught "
-    "through worked examples. Every scene here is one of those examples, derived again step by step from its Lagrangian."
+    "through worked examples. Every scene here is one of those examples, derived again step by step from its Lagrangian. "
+    "The notes are unpublished (a student's summary of a lecture course), so a page's section number points into "
+    "them only; a course taught from another book (Taylor, Morin) can ignore both the numbers and the table at the "
+    "foot of each page of where the notes print a formula wrongly."
 )
 
 

@@ -48,10 +48,13 @@ export function sentenceOf(text) {
 }
 
 /** A refusal's message without the field it is located at ("answer: …", "text: …"), the box being the field,
- * nor the columns of the parts at fault ("at column 7", "at columns 7 and 13"), which are marked in what was typed. */
+ * nor the columns of the parts at fault ("at column 7", "at columns 7 and 13"), nor the part itself quoted in
+ * code's quotes at the end (": 'theta'"): both are marked in what was typed, shown under the message. */
 export function wordsOf(detail) {
   // (a declared system's refusal is located by a path, system.particles.0.position: the path is not for a student)
-  return (detail || "").replace(/^(answer|text|follow_up|coordinate|step|system(\.[\w]+)*): /, "").replace(/ at columns? \d+(?:(?:, | and )\d+)*/g, "");
+  const located = / at columns? \d+(?:(?:, | and )\d+)*/.test(detail || "");
+  const words = (detail || "").replace(/^(answer|text|follow_up|coordinate|step|system(\.[\w]+)*): /, "").replace(/ at columns? \d+(?:(?:, | and )\d+)*/g, "");
+  return located ? words.replace(/: (?:'[^']*'|"[^"]*")$/, "") : words;
 }
 
 /** A verdict's words: its head [the verdict's word with its colon, the rest], the named mistake [label, name]

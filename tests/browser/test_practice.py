@@ -340,6 +340,11 @@ def test_an_equation_typed_as_a_textbook_writes_it_is_checked_and_a_refusal_is_s
     answer(page, "lagrangian", "T - U")
     verdict_of(page, "lagrangian").locator("mark").wait_for()
     assert "write T and U out in the coordinates" in verdict_of(page, "lagrangian").inner_text()
+    # a name before a bracket: the fix is said in the student's own characters, with no code quoted after it
+    answer(page, "kinetic", "½m(R^2 θ'^2)")
+    refused.locator("mark").wait_for()
+    said = refused.locator(".verdict-head").inner_text()
+    assert said == "Not checked: m is not a function: put a space (or *) between m and the bracket: m (R^2 θ'^2).", said
 
 
 def test_an_edited_answer_greys_its_old_verdict_and_an_unreadable_one_clears_the_preview(page):

@@ -167,7 +167,8 @@ def test_error_survives_a_process_boundary():
 @pytest.mark.parametrize(
     ("text", "words"),
     [
-        ("m(x+1)", "m is not a function: write m*(x+1) (or a space before the bracket)"),
+        ("m(x+1)", "m is not a function: put a space (or *) between m and the bracket: m (x+1)"),
+        ("½m(ẋ₁²+ẋ₂²)", "m is not a function: put a space (or *) between m and the bracket: m (ẋ₁²+ẋ₂²)"),
         ("mR", "letters written together are one name: for a product write m R"),
         ("m*x = 2", "write it as one expression equal to zero, e.g. a - (b) for a = b"),
     ],
