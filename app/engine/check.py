@@ -97,7 +97,7 @@ from app.engine.mistake_answer import (
     solved_slip,
 )
 from app.engine.mistake_box import piece_box
-from app.engine.mistake_families import FollowUp, Mistake
+from app.engine.mistake_families import Correct, FollowUp, Mistake
 from app.engine.mistakes import (
     CONSTANT_FACTOR_HINT,
     HALF_MOMENTUM_HINT,
@@ -161,7 +161,9 @@ def _verdict(
     verdict: str, message: str, reveal: dict[str, Any] | None = None, hint: str | None = None, **more: Any
 ) -> dict[str, Any]:
     """A verdict: what the student reads (message, hint, mistake, partial, follow_up) names the slip and never
-    prints the correct answer; ``reveal`` (the difference and the correct piece) is for the step's reveal."""
+    prints the correct answer; ``correct_part`` (the correct part the mistake's name points at: a denominator, a
+    stretch) is for the student to open on request, ``reveal`` (the difference and the correct piece) for the
+    step's reveal."""
     return {
         "verdict": verdict,
         "message": message,
@@ -169,8 +171,18 @@ def _verdict(
         "mistake": more.get("mistake"),
         "partial": more.get("partial"),
         "follow_up": more.get("follow_up"),
+        "correct_part": more.get("correct_part"),
         "reveal": reveal,
     }
+
+
+def _correct_part(correct: Correct | None, printer: Printer) -> dict[str, Any] | None:
+    """The correct part a named mistake points at, typeset, for the student to open ("Show the correct
+    denominator"); None where the name points at none."""
+    if correct is None:
+        return None
+    return {"what": correct.what, "latex": printer.tex(correct.expr), "text": printer.text(correct.expr),
+            "note": correct.note}  # fmt: skip
 
 
 def _reveal(shown: dict[str, str], piece: str = "") -> dict[str, Any]:
@@ -335,6 +347,7 @@ def _judge(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
             follow_up=follow_up_json(mistake, allowed_names(mistake.follow_up.kind, pb.kinds))
             if mistake.follow_up
             else None,
+            correct_part=_correct_part(mistake.correct, printer),
         )
     # no known mistake: say which parts agree (against the truth at the answer's scale)
     partial = (
@@ -343,7 +356,8 @@ def _judge(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
     advice = _hint(pb, answer, a, b, truth)
     if isinstance(advice, AnswerSlip):
         # a slip read from the answer is named as a catalogue's mistake is (or as an approximation)
-        return _verdict("incorrect", message, _reveal(shown), advice.hint, mistake=advice.json())
+        return _verdict("incorrect", message, _reveal(shown), advice.hint, mistake=advice.json(),
+                        correct_part=_correct_part(advice.correct, printer))  # fmt: skip
     if pb.step == "momentum" and differ_by_factor(b, a):
         partial = None  # the answer agrees up to one factor: "no part agrees" would contradict the hint
     return _verdict("incorrect", message, _reveal(shown), advice, partial=partial)
@@ -471,7 +485,7 @@ def _more_after_units(pb: Problem, answer: sp.Expr, truth: sp.Expr, b: Values) -
     for v in tried:
         found = match(pb.mistakes, v, b, pb.relation)
         if found is not None and found[0].family != "units":
-            name = found[0].name.replace("your ", "the ")
+            name = found[0].said.replace("your ", "the ")
             return f"And there is at least one more difference: {name}."
     return (
         "And there is at least one more difference, not one of the slips named here: with the units put right, "

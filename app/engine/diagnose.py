@@ -48,7 +48,7 @@ _OPENINGS = {
     "term_sign": "In your {what}, {name} is wrong",
     "force_sign": "In your {what}, {name} is wrong",
     "left_out": "Your {what} has {name}",
-    "half_momentum": "Your {what} loses {name}",
+    "half_momentum": "Your {what} has {name}",
     "force_doubled": "Your {what} has {name}",
     "small_angle": "Your {what} uses {name}. That is an approximation, not a slip of algebra",
     "other_equilibrium": "This is {name}",
@@ -315,7 +315,8 @@ def mistake_json(m: Mistake, tex, difference: str = "") -> dict[str, Any]:
     return {
         "key": m.key,
         "family": m.family,
-        "name": m.name,
+        # the piece left out said "left out", one added "added" (mistake_families.said)
+        "name": m.said,
         "latex": tex(m.piece) if m.piece is not None else difference,
         "where": m.where,
         "approximation": m.approximation,

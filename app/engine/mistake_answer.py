@@ -39,7 +39,7 @@ from app.engine.compare import (
     values,
 )
 from app.engine.diagnose import MIN_POINTS, part_scales, rate_parts  # (MIN_POINTS: one home with the catalogue)
-from app.engine.mistake_families import monomial_words, spoken
+from app.engine.mistake_families import Correct, monomial_words, said, spoken
 from app.engine.textbook import unicode_text
 
 MAX_CANDIDATES = 24  # products and symbols of an answer tried as the one left unsquared
@@ -64,11 +64,13 @@ class AnswerSlip:
     where: str
     hint: str
     approximation: bool = False
+    correct: Correct | None = None  # the correct part the name points at, shown only on request
 
     def json(self) -> dict[str, Any]:
         """The API's ``mistake`` (as ``app.engine.diagnose.mistake_json`` gives a catalogue's)."""
         family = "small_angle" if self.approximation else self.key.split(".")[-1]
-        return {"key": self.key, "family": family, "name": self.name, "latex": "",
+        # the piece left out or added said so, as a catalogue's name is (mistake_families.said)
+        return {"key": self.key, "family": family, "name": said(family, self.name), "latex": "",
                 "where": self.where, "approximation": self.approximation, "count": 1}  # fmt: skip
 
 
@@ -122,10 +124,10 @@ def extra_cross_term(answer: sp.Expr, truth: sp.Expr, groups: Groups) -> AnswerS
     shown = spoken(extra)
     return AnswerSlip(
         "kinetic.cross_term_added",
-        f"a cross term {shown} that the correct T does not have",
+        f"a cross term {shown} added, which the correct T does not have",
         f"each body's ½ m v² is added on its own; squaring the sum of two bodies' velocities ({unicode_text(a)} and "
         f"{unicode_text(b)}) mixes them",
-        f"Your T has a cross term {shown} that the correct T does not have: each body's ½ m v² is added on its "
+        f"Your T has a cross term {shown} added, which the correct T does not have: each body's ½ m v² is added on its "
         f"own, and squaring the sum of the velocities of two bodies ({unicode_text(a)} + {unicode_text(b)})² "
         "mixes them.",
     )
@@ -153,9 +155,9 @@ def level_body_term(
         )
         return AnswerSlip(
             "potential.level_body",
-            f"a term {shown} for the {label}, whose height never changes",
+            f"a term {shown} added for the {label}, whose height never changes",
             why,
-            f"Your U has a term {shown} for the {label}, whose height never changes: {why}.",
+            f"Your U has a term {shown} added for the {label}, whose height never changes: {why}.",
         )
     return None
 
@@ -186,8 +188,8 @@ def linearised(answer: Values, truth: sp.Expr, groups: Groups) -> AnswerSlip | N
 # ---- a solved acceleration or ω² -----------------------------------------------------------------
 
 
-def _slip(key: str, name: str, where: str) -> AnswerSlip:
-    return AnswerSlip(f"solved.{key}", name, where, f"Your answer has {name}: {where}.")
+def _slip(key: str, name: str, where: str, correct: Correct | None = None) -> AnswerSlip:
+    return AnswerSlip(f"solved.{key}", name, where, f"Your answer has {name}: {where}.", correct=correct)
 
 
 def _constant(expr: sp.Expr) -> bool:
@@ -281,29 +283,33 @@ def solved_slip(answer: sp.Expr, truth: sp.Expr, groups: Groups, frequency: str 
             several = len(sp.Add.make_args(extra)) > 1
             return _slip(
                 "extra_term",
-                f"{'the extra terms' if several else 'an extra term'} {spoken(extra, factored=False)} that the "
-                "correct answer does not have",
+                f"{'the extra terms' if several else 'an extra term'} {spoken(extra, factored=False)} added, which "
+                "the correct answer does not have",
                 "every term of the correct answer is in yours",
             )
+        # the student's terms named; the correct ones kept for the student to ask for (student-l 3)
         return _slip(
             "terms",
-            f"the terms {spoken(answer, factored=False)}, where the correct ones are "
-            f"{spoken(sp.expand(truth), factored=False)}",
-            "compare them term by term",
+            f"the terms {spoken(answer, factored=False)}",
+            "compare them with the correct ones term by term",
+            Correct("terms", sp.expand(truth)),
         )
     if right is None and _constant(sp.cancel(bottom / denominator)):
+        # the correct numerator over the student's own denominator
         wrong = sp.cancel(bottom / denominator) * numerator
         return _slip(
             "numerator",
-            f"the numerator {spoken(top)}, where the correct one is {spoken(sp.expand(wrong))}",
+            f"the numerator {spoken(top)}",
             "the denominator is right",
+            Correct("numerator", sp.expand(wrong)),
         )
-    said = spoken(sp.expand(right)) if right is not None else f"{spoken(denominator)} (up to a constant factor)"
     numerators = "" if right is not None else f", and the numerator {spoken(top)} differs too"
     return _slip(
         "denominator",
-        f"the denominator {spoken(bottom)}, where the correct one is {said}{numerators}",
+        f"the denominator {spoken(bottom)}{numerators}",
         _denominator_why(denominator, groups, frequency),
+        Correct("denominator", sp.expand(right)) if right is not None
+        else Correct("denominator", denominator, "up to a constant factor"),
     )
 
 

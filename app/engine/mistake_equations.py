@@ -175,7 +175,7 @@ def _equation_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
     yield Mistake(
         "equation.half_momentum",
         "half_momentum",
-        f"the 2 from differentiating the square: ∂/∂{qdot} of ½ a {qdot}² is a {qdot}, not ½ a {qdot}",
+        f"the 2 from differentiating the square left out: ∂/∂{qdot} of ½ a {qdot}² is a {qdot}, not ½ a {qdot}",
         half,
         f"the term ½ ({spoken(short_form(eqs.mass_matrix[k, k]))}) {qdot}² of T, differentiated by {qdot}",
         sp.expand(wrong_p - eqs.dL_dq[k] - m.Q[k]),
@@ -323,7 +323,8 @@ def acceleration_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
             yield Mistake(
                 mistake.key.replace("equation.", "acceleration.", 1) + (f".{table.names[j]}" if n > 1 else ""),
                 mistake.family,
-                mistake.name + (f" ({where})" if where else ""),
+                # what happened to the piece said before where it happened: "… left out (in the equation for x₁)"
+                mistake.said + (f" ({where})" if where else ""),
                 mistake.piece,
                 mistake.where,
                 solved,

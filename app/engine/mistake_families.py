@@ -65,6 +65,17 @@ def states_answer(words: str, fu: FollowUp) -> bool:
 
 
 @dataclass(frozen=True)
+class Correct:
+    """The correct part a mistake's name points at (the denominator, the stretch, a rod's I about its end), kept
+    out of the name: the verdict names the place and the kind of slip, and the student opens this one part only
+    by asking for it (student-l 3: "the denominator M + 4 m₁, where the correct one is …" gave the answer away)."""
+
+    what: str  # the part in words, after "the correct": "denominator", "stretch", "moment of inertia about the end"
+    expr: sp.Expr
+    note: str = ""  # what holds it, in words: "up to a constant factor"
+
+
+@dataclass(frozen=True)
 class Mistake:
     key: str  # stable, for records: "<step>.<family>[.<detail>…]"
     family: str
@@ -75,6 +86,24 @@ class Mistake:
     approximation: bool = False
     follow_up: FollowUp | None = None
     count: int = 1  # mistakes at once
+    correct: Correct | None = None  # the correct part the name points at, shown only on request
+
+    @property
+    def said(self) -> str:
+        """The name as the student reads it: what happened to the piece said beside it (``said``)."""
+        return said(self.family, self.name)
+
+
+# How a family's slip changes the answer: it leaves a piece out, or it adds one (a piece counted again). A family's
+# name says which piece; the words the student reads say what happened to it ("the cross term in Ẋ Ḋ left out"),
+# since a bare piece reads as one the student wrote (student-l 4: "The mistake: the cross term in Ẋ Ḋ", where the
+# answer had no cross term). The one home of that rule, for every family of every step.
+LEAVES_OUT = frozenset({
+    "velocity_part", "moving_constraint", "body_forgotten", "velocity_axis", "cross_term", "part_left_out",
+    "natural_length", "term_left_out", "momentum_part", "chain_rule", "dl_dq_part", "force_left_out",
+    "half_momentum", "left_out", "position_carried",
+})  # fmt: skip
+ADDS = frozenset({"counted_twice", "force_doubled", "cross_term_added", "extra_term", "level_body"})
 
 
 # ---- words -------------------------------------------------------------------------------------
@@ -157,12 +186,24 @@ def spoken(expr: sp.Expr, coordinates: Iterable[sp.Symbol] = (), factored: bool 
 
 # a mistake's name that already says how its piece is wrong ("the ½ of ½ k × stretch² left out of the term k x₂²"):
 # a sentence composed around it says "with …" or "has …", never "leaves out … left out" (issue 41, 3)
-_SAYS_HOW = re.compile(r"\b(left out|leaves out|missing|without|swapped|twice|reversed)\b")
+_SAYS_HOW = re.compile(r"\b(left out|leaves out|missing|without|swapped|twice|reversed|added)\b")
 
 
 def says_how(name: str) -> bool:
     """Whether a mistake's name says how its piece is wrong, not only which piece it is."""
     return bool(_SAYS_HOW.search(name))
+
+
+def said(family: str, name: str) -> str:
+    """A mistake's name as the student reads it: a piece left out said "… left out", a piece added "… added",
+    unless the name says so already (or says otherwise how the piece is wrong)."""
+    if says_how(name):
+        return name
+    if family in LEAVES_OUT:
+        return f"{name} left out"
+    if family in ADDS:
+        return f"{name} added"
+    return name
 
 
 def slug(text: str) -> str:

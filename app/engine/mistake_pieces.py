@@ -32,6 +32,7 @@ import sympy as sp
 from app.engine.derive import Derivation
 from app.engine.dimensions import dimension
 from app.engine.mistake_families import (
+    Correct,
     Mistake,
     kinetic_mistakes,
     potential_mistakes,
@@ -504,12 +505,13 @@ def _sums(truth: sp.Expr, base: str, springs: bool, coordinates: Iterable[sp.Sym
                 if angle
                 else "a stretch is the change in length, the far end minus the near end, less the natural length"
             )
+            # the sum as written and the sign at fault; the correct sum is kept for the student to ask for
             yield Mistake(
                 f"{base}.inner_sign.{slug(sp.sstr(a))[:32]}.{slug(sp.sstr(term))[:16]}", "inner_sign",
-                f"{sum_words(changed, coordinates)} where {sum_words(a, coordinates)} belongs: the sign of "
-                f"{spoken(term)} ({why})", a,
+                f"{sum_words(changed, coordinates)}: the sign of {spoken(term)} ({why})", a,
                 "draw the two directions and measure both angles from the same line" if angle
                 else "draw the two ends and ask which way each coordinate moves them", wrong,
+                correct=Correct("angle" if angle else "stretch", a),
             )  # fmt: skip
 
 
@@ -530,11 +532,14 @@ def _stretch_parts(d: Derivation, truth: sp.Expr, base: str) -> Iterator[Mistake
         for term in sorted(moving, key=sp.default_sort_key):
             kept = a - term
             # a stretch is the far end's position less the near end's: both ends move, so both coordinates enter
+            # the end left out named, the correct stretch kept for the student to ask for
             yield Mistake(
                 f"{base}.stretch_part.{slug(sp.sstr(a))[:32]}.{slug(sp.sstr(term))[:16]}", "stretch_part",
-                f"{sum_words(kept, q)} where {sum_words(a, q)} belongs in the stretch of {spring}", a,
-                f"{spring} joins two ends that both move, so its stretch is {sum_words(a, q)}: the far end's position "
-                "less the near end's, which changes when either end moves", truth.xreplace({a: kept}),
+                f"{sum_words(kept, q)} as the stretch of {spring}: {spoken(-term if term.could_extract_minus_sign() else term)} "
+                "left out", a,
+                f"{spring} joins two ends that both move, so its stretch is the far end's position less the near "
+                "end's, which changes when either end moves", truth.xreplace({a: kept}),
+                correct=Correct("stretch", a),
             )  # fmt: skip
 
 
@@ -588,8 +593,8 @@ def masses_of(d: Derivation, known) -> list[sp.Symbol]:
     return _lengths_and_masses(d, known)[1]
 
 
-def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp.Expr]]:
-    """(key, name, ΔT, ΔU) for the slips a rigid body typed in T (and U) invites, read from T's q̇² terms:
+def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp.Expr, Correct | None]]:
+    """(key, name, ΔT, ΔU, the correct part the name points at) for the slips a rigid body typed in T (and U) invites, read from T's q̇² terms:
     c m L² q̇² (a body turning about a pivot: a rod about its end, a disc or a ring about its rim or centre)
     or c m q̇² with c > ½ (a disc or a ring rolling: ½ m v² + ½ I (v/R)²)."""
     T, U = d.mechanics.T, d.mechanics.U
@@ -598,44 +603,48 @@ def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp
     v = d.table.qd[0]
     lengths, masses = _lengths_and_masses(d, known)
     a = sp.expand(sp.diff(T, v, 2))  # I or m_eff
-    out: list[tuple[str, str, sp.Expr, sp.Expr]] = []
+    out: list[tuple[str, str, sp.Expr, sp.Expr, Correct | None]] = []
     for m in masses:
         for L in lengths:
             c = sp.nsimplify(a / (m * L**2))
             if c.is_Rational and c == sp.Rational(1, 3):
                 # a rod about its end: I = m l²/12 + m (l/2)²
                 dT = lambda i: (i - a) * v**2 / 2  # noqa: E731
-                out.append(("rigid.rod_point_mass", f"the rod taken as a point mass at its end: I = {spoken(m * L**2)} "
-                            f"in place of a rod's I about its end, {spoken(m * L**2 / 3)} (moment of inertia)",
-                            dT(m * L**2), sp.Integer(0)))  # fmt: skip
+                # the rod's own I about its end is what the student works out: named by the slip, shown on request
+                end = Correct("moment of inertia about the end", m * L**2 / 3)
+                out.append(("rigid.rod_point_mass", f"the rod taken as a point mass at its end: I = {spoken(m * L**2)}, "
+                            "a bob's moment of inertia, in place of a rod's about its end", dT(m * L**2), sp.Integer(0),
+                            end))  # fmt: skip
                 out.append(("rigid.rod_centre_axis", f"I about the rod's centre, {spoken(m * L**2 / 12)}, in place of "
-                            f"I about the pivot at its end, {spoken(m * L**2 / 3)} (the parallel-axis term "
-                            f"{spoken(m * (L / 2) ** 2)} is missing)", dT(m * L**2 / 12), sp.Integer(0)))  # fmt: skip
+                            f"I about the pivot at its end (the parallel-axis term {spoken(m * (L / 2) ** 2)} is "
+                            "missing)", dT(m * L**2 / 12), sp.Integer(0), end))  # fmt: skip
                 # the parallel-axis term added to I about the pivot, which already holds it: m l²/3 + m (l/2)²
                 out.append(("rigid.rod_parallel_axis_twice", f"the parallel-axis term {spoken(m * (L / 2) ** 2)} "
                             f"counted twice, since I about the pivot, {spoken(m * L**2 / 3)}, already holds it "
                             f"({spoken(m * L**2 / 3)} = {spoken(m * L**2 / 12)} + {spoken(m * (L / 2) ** 2)})",
-                            dT(m * L**2 / 3 + m * (L / 2) ** 2), sp.Integer(0)))  # fmt: skip
+                            dT(m * L**2 / 3 + m * (L / 2) ** 2), sp.Integer(0), None))  # fmt: skip
                 out.append(("rigid.rod_spin_forgotten", f"only the motion of the rod's centre, {spoken(m * (L / 2)**2)}"
                             f" θ̇²/2: its spin about the centre, with moment of inertia {spoken(m * L**2 / 12)}, is "
-                            "forgotten", dT(m * (L / 2) ** 2), sp.Integer(0)))  # fmt: skip
+                            "forgotten", dT(m * (L / 2) ** 2), sp.Integer(0), None))  # fmt: skip
                 if U is not None and U.has(L):
                     # the centre at l rather than l/2: every l of U doubled
                     dU = U.xreplace({L: 2 * L}) - U
                     out.append(("rigid.rod_centre_at_end", f"the rod's centre at {spoken(L)} in place of {spoken(L / 2)}"
-                                " (a uniform rod's centre is halfway along it)", sp.Integer(0), dU))  # fmt: skip
+                                " (a uniform rod's centre is halfway along it)", sp.Integer(0), dU, None))  # fmt: skip
                     out.append(("rigid.rod_as_point_mass", f"the rod taken as a point mass at its end (a simple "
-                                f"pendulum): I = {spoken(m * L**2)} and the centre at {spoken(L)}, in place of "
-                                f"{spoken(m * L**2 / 3)} and {spoken(L / 2)}", dT(m * L**2), dU))  # fmt: skip
+                                f"pendulum): I = {spoken(m * L**2)} and the centre at {spoken(L)}, a bob's, in place of "
+                                "a rod's", dT(m * L**2), dU, end))  # fmt: skip
         c = sp.nsimplify(a / m) if a.has(m) else None
         if c is not None and c.is_Rational and c in (sp.Rational(3, 2), 2):
             body = "disc" if c == sp.Rational(3, 2) else "ring"
             other = "ring" if body == "disc" else "disc"
             k_other = _CENTRE[other]
             out.append(("rigid.rolling_spin_forgotten", f"the {body}'s spin forgotten: it rolls, so T also has "
-                        f"½ I ω² with ω = v/R and I its moment of inertia", (m - a) * v**2 / 2, sp.Integer(0)))  # fmt: skip
+                        f"½ I ω² with ω = v/R and I its moment of inertia", (m - a) * v**2 / 2, sp.Integer(0),
+                        None))  # fmt: skip
             out.append((f"rigid.rolling_{other}", f"a {other}'s moment of inertia ({spoken(sp.nsimplify(k_other))} m R²)"
-                        f" in place of a {body}'s", (m * (1 + sp.nsimplify(k_other)) - a) * v**2 / 2, sp.Integer(0)))  # fmt: skip
+                        f" in place of a {body}'s", (m * (1 + sp.nsimplify(k_other)) - a) * v**2 / 2, sp.Integer(0),
+                        None))  # fmt: skip
     return out
 
 
@@ -684,7 +693,7 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
         return
     rigid = rigid_alternatives(d, known)
     if step in ("kinetic", "potential"):
-        for key, name, dT, dU in rigid:
+        for key, name, dT, dU, correct in rigid:
             change = dT if step == "kinetic" else dU
             # the reason is the step's own: T's for a slip of T, U's for a slip of U (review student-k 6)
             why = (
@@ -693,31 +702,32 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
                 else "a rigid body's U is its mass × g × the height of its centre, where its weight acts"
             )
             if change != 0:
-                yield Mistake(f"{step}.{key}", "rigid", name, None, why, truth + change)
+                yield Mistake(f"{step}.{key}", "rigid", name, None, why, truth + change,
+                              correct=correct if step == "kinetic" else None)  # fmt: skip
         return
     if step not in ("equation", "acceleration", "omega_squared"):
         return
     if step == "acceleration" and len(d.table.q) != 1:
         return  # coupled accelerations: the equations' mistakes are carried by mistake_equations
-    changes: list[tuple[str, str, sp.Expr, sp.Expr]] = list(rigid)
+    changes: list[tuple[str, str, sp.Expr, sp.Expr, Correct | None]] = list(rigid)
     T, U = d.mechanics.T, d.mechanics.U
     for m in list(kinetic_mistakes(d))[:MAX_TRAVEL]:
-        changes.append((f"from_kinetic.{m.key}", f"a T {_slip_words(m)}", m.expr - T, sp.Integer(0)))
+        changes.append((f"from_kinetic.{m.key}", f"a T {_slip_words(m)}", m.expr - T, sp.Integer(0), m.correct))
     if U is not None:
         for m in list(potential_mistakes(d))[:MAX_TRAVEL]:
             if step == "equation" and k is not None and m.family == "term_sign" and m.piece is not None:
                 yield from _force_sign(d, k, truth, m.piece)
             if step == "equation" and k is not None and m.family == "doubled" and _one_term_doubled(m, U):
                 yield from _force_twice(d, k, truth, m.piece)
-            changes.append((f"from_potential.{m.key}", f"a U {_slip_words(m)}", sp.Integer(0), m.expr - U))
-    for key, name, dT, dU in changes[: 2 * MAX_TRAVEL]:
+            changes.append((f"from_potential.{m.key}", f"a U {_slip_words(m)}", sp.Integer(0), m.expr - U, m.correct))
+    for key, name, dT, dU, correct in changes[: 2 * MAX_TRAVEL]:
         if step == "equation" and k is not None:
             # L = T − U changes by ΔT − ΔU, and the equation by its Euler–Lagrange expression
             wrong = truth + euler_lagrange(d, k, dT - dU)
             family = "rigid" if key.startswith("rigid") else "travelled"
             yield Mistake(f"equation.{key}", family, name, None,
                           "your equation is what such a step gives: if your earlier step has that slip, fix it there "
-                          "and derive again", wrong)  # fmt: skip
+                          "and derive again", wrong, correct=correct)  # fmt: skip
         elif step == "acceleration":
             # one coordinate: E' = a q̈ + f, so q̈ = −f/a
             E = d.equations.residuals[0] + euler_lagrange(d, 0, dT - dU)
@@ -727,14 +737,14 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
                 yield Mistake(f"acceleration.{key}", family, name, None,
                               "your acceleration is what such a step gives: if your earlier step has that slip, fix it "
                               "there and derive again",
-                              sp.cancel(-E.subs(d.table.qdd[0], 0) / a))  # fmt: skip
+                              sp.cancel(-E.subs(d.table.qdd[0], 0) / a), correct=correct)  # fmt: skip
         elif step == "omega_squared":
             for w in _omega_changed(d, dT, dU, asked):
                 family = "rigid" if key.startswith("rigid") else "travelled"
                 w2 = f"{frequency_letter('frequency', d)}²"  # Ω² where ω is a parameter (student-i 6)
                 yield Mistake(f"omega_squared.{key}", family, name, None,
                               f"your {w2} follows from it: {w2} is the effective potential's second derivative over "
-                              "the effective mass, at the equilibrium", w)  # fmt: skip
+                              "the effective mass, at the equilibrium", w, correct=correct)  # fmt: skip
 
 
 def _force_sign(d: Derivation, k: int, truth: sp.Expr, u: sp.Expr) -> Iterator[Mistake]:

@@ -84,9 +84,9 @@ def _inner_as_typed(
         for term in right.args:
             changed = right - 2 * term
             if sp.expand(typed**2 - changed**2) == 0:
-                if not mistake.name.startswith(f"{sum_words(changed, coordinates)} where "):
+                if not mistake.name.startswith(f"{sum_words(changed, coordinates)}: "):
                     return mistake, hint
-                rest = mistake.name[mistake.name.index(" where ") :]
+                rest = mistake.name[len(sum_words(changed, coordinates)) :]
                 name = sum_words(typed, coordinates) + rest
                 return dataclasses.replace(mistake, name=name), _renamed(hint, mistake.name, name)
     return mistake, hint

@@ -107,6 +107,16 @@ class FollowUp(BaseModel):
     )
 
 
+class CorrectPart(BaseModel):
+    what: str = Field(
+        description='The part in words, after "the correct": "denominator", "numerator", "stretch", "moment of inertia '
+        'about the end".'
+    )
+    latex: str = Field(description="The correct part, typeset.")
+    text: str = Field(description="The same in plain text with Unicode mathematics (for a screen reader).")
+    note: str = Field("", description='What holds it, in words ("up to a constant factor"); empty otherwise.')
+
+
 class Reveal(BaseModel):
     difference: ExprPair = Field(
         description="answer − the correct one (less an accepted additive constant; for an equation, against the "
@@ -136,6 +146,12 @@ class CheckResponse(BaseModel):
     )
     follow_up: FollowUp | None = Field(
         None, description="A short question after a named mistake, answerable through this endpoint."
+    )
+    correct_part: CorrectPart | None = Field(
+        None,
+        description="For an incorrect answer whose named mistake points at one part (a solved answer's denominator "
+        "or numerator, a stretch, a rod's moment of inertia): that part as it should be, for a page to show closed, "
+        "opened only when the student asks for it. The mistake's name says the place and the kind of slip without it.",
     )
     reveal: Reveal | None = Field(
         None,

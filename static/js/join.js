@@ -9,7 +9,7 @@
  */
 import { answerBox } from "./answer-box.js";
 import { api, el, exerciseOf, practiceOf, showPanes, stepTex, stored, typeset } from "./classroom.js";
-import { howTo, numbered, refusalWords, verdictWords } from "./verdict-words.js";
+import { correctPartWords, howTo, numbered, refusalWords, verdictWords } from "./verdict-words.js";
 
 const memory = stored("lagrange-join");
 const scenes = JSON.parse(document.getElementById("class-scenes").textContent);
@@ -119,6 +119,17 @@ function verdictView(box, r) {
     }
     if (words.reason) box.append(el("p", { className: "verdict-hint", text: words.reason }));
     if (words.partial) box.append(el("p", { className: "verdict-partial", text: words.partial }));
+    // the correct part the mistake points at, closed until asked for (as in practice mode)
+    const correct = correctPartWords(v);
+    if (correct) {
+      const math = el("div", { className: "verdict-correct-math", "aria-label": correct.text });
+      const part = el("details", { className: "verdict-correct" }, el("summary", { text: correct.summary }), math);
+      if (correct.note) part.append(el("p", { className: "help", text: correct.note }));
+      part.addEventListener("toggle", () => {
+        if (part.open && !math.childElementCount) typeset(math, correct.latex, true);
+      });
+      box.append(part);
+    }
     return;
   }
   box.dataset.verdict = "refused";

@@ -18,7 +18,7 @@
 import { answerBox, fit } from "./answer-box.js";
 import { RequestError, fetchJSON } from "./api.js";
 import { readRequest, setControl } from "./controls.js";
-import { endOf, howTo, namesSaid, numbered, refusalWords, verdictWords, wordsOf } from "./verdict-words.js";
+import { correctPartWords, endOf, howTo, namesSaid, numbered, refusalWords, verdictWords, wordsOf } from "./verdict-words.js";
 
 const root = document.getElementById("practice");
 const query = new URLSearchParams(window.location.search);
@@ -129,6 +129,8 @@ function showVerdict(item, result, answer) {
     if (result.mistake) box.append(mistakeBox(result.mistake, words.mistake));
     if (words.reason) box.append(element("p", { class: "verdict-hint" }, words.reason));
     if (words.partial) box.append(element("p", { class: "verdict-partial" }, words.partial));
+    const correct = correctPartWords(result);
+    if (correct) box.append(correctBox(correct));
     if (result.follow_up && result.verdict === "incorrect") box.append(followUpBox(item, result.follow_up));
   } else {
     // a refusal: say what was wrong and mark the offending part of what was typed
@@ -201,6 +203,20 @@ function mistakeBox(mistake, [label, name]) {
     katexBreaking(piece, mistake.latex);
     box.append(piece);
   }
+  return box;
+}
+
+/** The correct part the named mistake points at, closed until the student opens it ("Show the correct
+ * denominator"), typeset as the other formulas of a verdict are once it is open (its width known then). */
+function correctBox(correct) {
+  const box = element("details", { class: "verdict-correct" });
+  box.append(element("summary", {}, correct.summary));
+  const math = element("div", { class: "verdict-correct-math", "aria-label": correct.text });
+  box.append(math);
+  if (correct.note) box.append(element("p", { class: "help" }, correct.note));
+  box.addEventListener("toggle", () => {
+    if (box.open && !math.childElementCount) katexBreaking(math, correct.latex);
+  });
   return box;
 }
 

@@ -69,6 +69,16 @@ export function verdictWords(result) {
   return { head, mistake, reason, partial: result.partial?.message || "" };
 }
 
+/** The correct part a named mistake points at (a denominator, a stretch, a rod's I about its end), kept closed
+ * until the student asks for it: the words of its disclosure, {summary: "Show the correct denominator", note:
+ * "(up to a constant factor)" or "", latex, text}; null where the verdict has none. The verdict names the place and
+ * the kind of slip; "Show this step" stays for giving up. */
+export function correctPartWords(result) {
+  const part = result.correct_part;
+  if (!part || result.verdict !== "incorrect") return null;
+  return { summary: `Show the correct ${part.what}`, note: part.note ? `(${part.note})` : "", latex: part.latex, text: part.text || "" };
+}
+
 /** A refusal's words, [label, sentence]: "Not checked: " and what was wrong, in the checker's own case after the colon and
  * ended with a full stop; "Busy: " and `busy` (or the server's words) when the server asked to wait. */
 export function refusalWords(status, detail, busy = "") {

@@ -243,7 +243,7 @@ SLIPS = [
     ("coupled-oscillators", "kinetic", None, "m*(x1_dot**2 + x2_dot**2)", HALF),
     ("coupled-oscillators", "potential", None, "k*(x1**2 + x2**2)/2 + kappa*(x2 - x1)/2", r"square|" + UNITS_WORDS),
     # student-h 131: the square of the sum of the velocities, where each mass has its own ½ m v²
-    ("coupled-oscillators", "kinetic", None, "m*(x1_dot + x2_dot)**2/2", r"cross term m ẋ₁ ẋ₂ that the correct T"),
+    ("coupled-oscillators", "kinetic", None, "m*(x1_dot + x2_dot)**2/2", r"cross term m ẋ₁ ẋ₂ added, which the correct T"),
     # student-i 3: every spring's ½ lost at once got the step's rule
     ("coupled-oscillators", "potential", None, "k*x1**2 + k*x2**2 + kappa*(x2 - x1)**2",
      r"½ of ½ k × stretch² left out of every spring"),
@@ -383,7 +383,7 @@ SLIPS = [
         None,
         "(m1 + m2)*l1**2*theta1_dot**2/2 + m2*l2**2*theta2_dot**2/2"
         " + m2*l1*l2*theta1_dot*theta2_dot*cos(theta1 + theta2)",
-        r"θ₁ \+ θ₂ where θ₁ − θ₂ belongs.*the sign of θ₂",
+        r"θ₁ \+ θ₂: the sign of θ₂",
     ),
     ("elastic-pendulum", "potential", None, "-m*g*r*cos(phi) + k*(r - l)**2", r"spring.*½ k"),
     # ---- a second-year student's practice session (review student-e)
@@ -445,8 +445,8 @@ SLIPS = [
     # a rod's formulas typed for a bob (review student-f, 14): named as the rod's, with the rod's reason
     ("simple-pendulum", "kinetic", None, "m*R**2*theta_dot**2/6", r"a rod's T for a bob.*⅓ m × length²"),
     ("simple-pendulum", "potential", None, "m*g*(R/2)*(1 - cos(theta))", r"half.*a rod's centre is at half its length"),
-    # a stretch's sign quoted as typed, the right one in a textbook's order (review student-f, 15)
-    ("rail-two-body", "potential", None, "k*(x1 - x2 - l0)**2/2", r"x₁ − x₂ − l₀ where x₂ − x₁ − l₀ belongs"),
+    # a stretch's sign quoted as typed (review student-f, 15); the right one is kept for the student to ask for
+    ("rail-two-body", "potential", None, "k*(x1 - x2 - l0)**2/2", r"x₁ − x₂ − l₀: the sign of l₀"),
     # a cross term's sign, explained from the geometry that gives it (student-e, 11)
     (
         "movable-incline",
@@ -496,8 +496,8 @@ SLIPS = [
     # the coupling force's sign, typed as m ẍ₁ = −k x₁ − κ(x₂ − x₁): the force is named, not a U never typed here
     ("coupled-oscillators", "equation", "x1", "m*x1_ddot - (-k*x1 - kappa*(x2 - x1))", r"^(?!.*a U with).*sign of the force \(x₁ − x₂\) κ.*is −∂/∂x₁ of it, \(x₂ − x₁\) κ"),
     # ---- a solved acceleration or ω² read against the truth (issue 41, student's review: 2): the part that differs
-    ("pulley", "acceleration", "y1", "(m2-m1)*g/(m1+m2)", r"denominator m₁ \+ m₂.*M m₁ \+ M m₂ \+ 4 m₁ m₂"),
-    ("movable-incline", "acceleration", "X", "-m*g*sin(alpha)*cos(alpha)/(M+m)", r"denominator M \+ m,.*M \+ m sin²"),
+    ("pulley", "acceleration", "y1", "(m2-m1)*g/(m1+m2)", r"denominator m₁ \+ m₂\b.*solved together"),
+    ("movable-incline", "acceleration", "X", "-m*g*sin(alpha)*cos(alpha)/(M+m)", r"denominator M \+ m\b.*solved together"),
     ("helix-bead", "acceleration", "z", "-g*(1+alpha**2*R**2)", r"1 \+ R² α² upside down"),
     ("coupled-oscillators", "acceleration", "x1", "-(k+2*kappa)/m*x1", r"term of x₂ left out"),
     ("rotating-parabola", "omega_squared", None, "g*alpha - omega**2", r"factor 2 lost in the term 2 g α"),
@@ -514,7 +514,7 @@ SLIPS = [
 NAMED = [
     # issue 41, 1: the middle spring stretched by x₂ alone got the step's rule: its stretch is x₂ − x₁
     ("coupled-oscillators", "potential", None, "k*(x1**2 + x2**2)/2 + kappa*x2**2/2",
-     r"x₂ where x₂ − x₁ belongs in the stretch of the spring κ"),
+     r"x₂ as the stretch of the spring κ: x₁ left out"),
     # issue 41, 5: the middle mass given the end masses' speed sum: it moves at half of it, (ẏ₁ + ẏ₂)/2
     ("pulley", "kinetic", None, "M*(y1_dot + y2_dot)**2/2 + m1*y1_dot**2/2 + m2*y2_dot**2/2",
      r"the middle mass moves at \(ẏ₁ \+ ẏ₂\)/2, half as fast as ẏ₁ \+ ẏ₂"),
@@ -543,7 +543,7 @@ NAMED = [
     ),
     # issue 41, 2: the wedge given a height got the step's rule: it slides on the floor, so M has no term in U
     ("movable-incline", "potential", None, "-m*g*D*sin(alpha) - M*g*X*sin(alpha)",
-     r"for the wedge, whose height never changes.*its height does not change.*M has no term in U"),
+     r"added for the wedge, whose height never changes.*its height does not change.*M has no term in U"),
     # review student-k 5: a whole acceleration negated is one slip on every system (the pulley's was "the sign of
     # ∂L/∂q", the wedge's "the sign of the whole answer"), with its likely cause, a reversed U
     ("pulley", "acceleration", "y1", "g*(M*m1 - 3*M*m2 + 4*m1*m2)/(M*m1 + M*m2 + 4*m1*m2)",

@@ -302,8 +302,8 @@ def student_text(expr: sp.Expr, step: str, d=None) -> str:
 QUOTED = re.compile(
     r"(?P<kind>swapped in|the sign of) (?:one of the terms|the term (?P<term>.+?)|the (?P<unsigned>.+?) term)"
     r"(?= is wrong|:)"
-    # an angle's sign inside a function, quoted as typed: "has θ₁ + θ₂ where θ₁ − θ₂ belongs"
-    r"|has (?P<inner>.+?) where .+? belongs"
+    # an angle's sign inside a function, quoted as typed: "has θ₁ + θ₂: the sign of θ₂"
+    r"|has (?P<inner>.+?): the sign of "
 )
 
 

@@ -150,4 +150,7 @@ def test_a_rods_formulas_typed_for_a_bob_are_named_with_the_rods_reason():
 
 def test_a_stretch_is_quoted_as_typed_and_the_right_one_in_a_textbooks_order():
     result = judge(step_problem("rail-two-body", "potential", None), "k*(x1 - x2 - l0)**2/2")
-    assert result["mistake"]["name"].startswith("x₁ − x₂ − l₀ where x₂ − x₁ − l₀ belongs: the sign of l₀")
+    assert result["mistake"]["name"].startswith("x₁ − x₂ − l₀: the sign of l₀")
+    # the right one, in a textbook's order, only on request (review student-l 3)
+    assert "x₂ − x₁ − l₀" not in result["mistake"]["name"] + result["hint"]
+    assert result["correct_part"]["what"] == "stretch" and result["correct_part"]["text"] == "x₂ − x₁ − l₀"

@@ -39,7 +39,7 @@ def test_an_extra_term_typed_without_a_fraction_is_said_as_a_term():
     pb = _problem("simple-pendulum", "acceleration", "theta")
     result = judge(pb, "-g*sin(theta)/R + theta_dot^2")
     said = unicodedata.normalize("NFC", result["mistake"]["name"] + " " + result["hint"])
-    assert result["mistake"]["name"] == "an extra term θ̇² that the correct answer does not have"
+    assert result["mistake"]["name"] == "an extra term θ̇² added, which the correct answer does not have"
     assert "numerator" not in said and "denominator" not in said
     # typed as one fraction, its numerator is the student's own and is named so
     typed = judge(pb, "(-g*sin(theta) + R*theta_dot^2)/R")

@@ -25,7 +25,7 @@ def test_a_scene_answer_gets_its_verdict_difference_and_hint(client):
     wrong = check(client, {"step": "kinetic", "answer": "m*R**2*theta_dot**2"})
     assert wrong.status_code == 200, wrong.text
     body = wrong.json()
-    assert set(body) == {"verdict", "message", "hint", "mistake", "partial", "follow_up", "reveal"}
+    assert set(body) == {"verdict", "message", "hint", "mistake", "partial", "follow_up", "correct_part", "reveal"}
     assert body["verdict"] == "incorrect" and body["hint"] == HINTS["missing_half"]
     # the difference is kept for the step's reveal (the page shows it with the step), never said in the verdict
     assert "difference" not in body["message"] and body["reveal"]["piece"] == ""
@@ -248,3 +248,13 @@ def test_a_g_typed_where_the_masses_stay_level_is_refused_with_why(client):
         json={"text": body["answer"], "step": "equation", "coordinate": "x2", "scene": "coupled-oscillators"},
     )
     assert shown.status_code == 422 and shown.json()["detail"] == refused.json()["detail"], shown.text
+
+
+def test_the_correct_part_comes_through_the_api_beside_the_named_slip(client):
+    # review student-l 3: the pulley's ÿ₁ with an Atwood machine's denominator names it and keeps the correct one apart
+    body = check(client, {"step": "acceleration", "coordinate": "y1", "answer": "g*(M/2 - m1)/(m1 + M/4)"}, "pulley")
+    body = body.json()
+    assert body["mistake"]["name"].startswith("the denominator M + 4 m₁") and "correct one" not in body["mistake"]["name"]
+    assert body["correct_part"]["what"] == "denominator" and body["correct_part"]["latex"], body["correct_part"]
+    plain = check(client, {"step": "kinetic", "answer": "m*R**2*theta_dot**2"}).json()
+    assert plain["correct_part"] is None
