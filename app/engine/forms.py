@@ -632,6 +632,13 @@ def one_denominator(exprs: list[Any], names: Mapping[sp.Symbol, str] | None = No
     return [settle(p, names) for p in plain]
 
 
+def _differ_by_a_parameter(total: sp.Expr) -> bool:
+    """Whether the terms of a sum are one common factor times a number and a single symbol each: M g + m g,
+    m₁g − m₂g, Mg/2 − m₁g."""
+    brackets = [f for f in sp.Mul.make_args(sp.factor_terms(total)) if isinstance(f, sp.Add)]
+    return len(brackets) == 1 and all(t.as_coeff_Mul()[1].is_Symbol for t in brackets[0].args)
+
+
 def _moving_denominator(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     """The factors of ``expr``'s denominator that hold something that moves (M + m sin² φ of l(M + m sin² φ))."""
     den = sp.factor_terms(sp.denom(sp.together(expr)))
@@ -689,9 +696,10 @@ def like_terms_added(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
                 constants.append(term)
             else:
                 groups.setdefault(part, []).append(const)
-        # the terms free of what moves as one, where that is shorter: M g + m g → (M + m) g, m₁g − m₂g → (m₁ − m₂)g
+        # the terms free of what moves as one where they differ only by a parameter and that is shorter:
+        # M g + m g → (M + m) g, m₁g − m₂g → (m₁ − m₂)g; a discriminant (m₁ + m₂)²(l₁ − l₂)² + 4(m₁ + m₂)m₂l₁l₂ stays
         rest = sp.Add(*constants)
-        lump = _simplest(rest) if len(constants) > 1 else rest
+        lump = _simplest(rest) if len(constants) > 1 and _differ_by_a_parameter(rest) else rest
         # never longer, and never a sign taken out of the whole: −ω² − g/R stays, not −(ω² + g/R)
         if sp.count_ops(lump) >= sp.count_ops(rest) or (lump.could_extract_minus_sign() and isinstance(-lump, sp.Add)):
             lump = rest
