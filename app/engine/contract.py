@@ -25,6 +25,7 @@ from app.engine.report import (
     equation_pairs,
     lagrangian,
     momentum,
+    shown_accelerations,
 )
 from app.engine.report import display as _show
 from app.engine.report_members import GREEK_CLAUSE, constraint_steps, new_lagrangian, transform_steps
@@ -123,9 +124,11 @@ def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[s
     eqs = d.equations
     MM = MASS_MATRIX[1]
     if eqs.closed_form:
-        # grouped by coordinate where linear in them, as the accelerations step prints them
-        grouped = (meaning.by_coordinate(a, d.table.q) for a in eqs.accelerations)
-        return {name: pr.pair(_shown(a)) for name, a in zip(d.table.names, grouped, strict=True)}
+        # as the accelerations step prints them: grouped by coordinate, over one denominator
+        shown = within_budget(lambda: shown_accelerations(d), None, max(display_work_left(DISPLAY_WORK), 1_000))
+        if shown is None:
+            shown = [meaning.by_coordinate(a, d.table.q) for a in eqs.accelerations]
+        return {name: pr.pair(a) for name, a in zip(d.table.names, shown, strict=True)}
     skipped.append(Skipped(
         "accelerations",
         f"The accelerations in closed form are left out: solving {MM} q̈ = f symbolically gives expressions too long "

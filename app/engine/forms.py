@@ -24,6 +24,7 @@ engine's own cheap display form (sin² + cos² = 1 collapsed, SymPy's ``simplify
 from __future__ import annotations
 
 import itertools
+import re
 import threading
 from collections.abc import Iterator, Mapping
 from functools import partial
@@ -52,6 +53,8 @@ _CACHE: dict[tuple[sp.Expr, frozenset[sp.Symbol]], sp.Expr] = {}
 _CACHE_SIZE = 4096
 _local = threading.local()
 _LATE_LIMIT = ("forms", "late limit")  # in the document's memo: the smallest size whose late search ran out
+# a Lagrange multiplier's name (app/engine/multipliers.py): an unknown of the motion, never collected as a parameter
+_MULTIPLIER = re.compile(r"lambda_\d+")
 
 
 def use_names(names: Mapping[sp.Symbol, str]) -> None:
@@ -593,17 +596,128 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, units
             return fallback
         best[0] = fallback
     # quotients as a textbook writes them: each term over its own denominator, no fraction in a denominator
-    found = textbook_quotients(best[0], moving)
+    found = textbook_quotients(like_terms_added(best[0], moving), moving)
     if len(_CACHE) < _CACHE_SIZE:
         _CACHE[key] = found
     return settle(found, names)  # a form, formed again, stays as it is
 
 
+def one_denominator(exprs: list[Any], names: Mapping[sp.Symbol, str] | None = None) -> list[Any]:
+    """The explicit accelerations of one system in their textbook forms, over one denominator when they have one.
+
+    By Cramer's rule every q̈ₖ is a numerator over det 𝓜; each is formed on its own (``textbook_form``), and two
+    forms of one system may then print that denominator differently: the cart on a spring's Ẍ over M + m sin² φ
+    and φ̈, linearised, over l(2M + m − m cos 2φ).  A careful text prints them over the same one, in sines and
+    cosines of single angles.  So each acceleration is also written as the engine derived it: its numerator and
+    denominator in lowest terms, the numerator's terms collected by what moves ((M + m) g sin φ), the
+    denominator's numbers made whole and its leading term positive,
+    φ̈ = [kX cos φ − (M + m) g sin φ − m l φ̇² sin φ cos φ]/[l(M + m sin² φ)].  These single-angle forms are
+    taken when they share one denominator, unless the formed ones share one too and are shorter on the whole
+    (double angles only where they are shorter): the double pendulum's single-angle forms, over
+    l₁(m₁ + m₂ sin²(θ₁ − θ₂)), count 35 and 37 operations against 39 and 39 over l₁(2m₁ + m₂ − m₂ cos(2θ₁ − 2θ₂))."""
+    formed = [textbook_form(e, names) for e in exprs]
+    quotients = [e for e in exprs if isinstance(e, sp.Expr)]
+    if len(formed) < 2 or len(quotients) < len(formed):
+        return formed
+    names = names if names is not None else getattr(_local, "names", None)
+    moving = set().union(*(moving_symbols(e, names) for e in exprs))
+    if not all(_den_moves(e, moving) for e in formed):
+        return formed
+    plain = within_budget(lambda: [_single_angle_quotient(e, moving) for e in exprs], None, FORM_WORK)
+    if plain is None or not _same_denominator(plain, moving):
+        return formed
+    # double angles only where they share the denominator and are shorter on the whole
+    if _same_denominator(formed, moving) and sum(_ops(f)[0] for f in formed) < sum(_ops(p)[0] for p in plain):
+        return formed
+    return [settle(p, names) for p in plain]
+
+
+def _differ_by_a_parameter(total: sp.Expr) -> bool:
+    """Whether the terms of a sum are one common factor times a number and a single symbol each: M g + m g,
+    m₁g − m₂g, Mg/2 − m₁g."""
+    brackets = [f for f in sp.Mul.make_args(sp.factor_terms(total)) if isinstance(f, sp.Add)]
+    return len(brackets) == 1 and all(t.as_coeff_Mul()[1].is_Symbol for t in brackets[0].args)
+
+
+def _moving_denominator(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
+    """The factors of ``expr``'s denominator that hold something that moves (M + m sin² φ of l(M + m sin² φ))."""
+    den = sp.factor_terms(sp.denom(sp.together(expr)))
+    return sp.Mul(*(f for f in sp.Mul.make_args(den) if f.free_symbols & moving))
+
+
+def _same_denominator(forms: list[sp.Expr], moving: set[sp.Symbol]) -> bool:
+    """Whether the forms print one denominator: their moving factors equal up to a constant factor."""
+    first = _moving_denominator(forms[0], moving)
+    return all(not (sp.cancel(_moving_denominator(f, moving) / first).free_symbols & moving) for f in forms[1:])
+
+
+def _single_angle_quotient(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
+    """A quotient as the engine derived it, in single angles: lowest terms, the numerator collected by what moves,
+    the denominator's numbers made whole and its leading term positive (l(M + m sin² φ))."""
+    num, den = lowest_terms(expr)
+    # the numbers in the denominator made whole, as ``linearised`` makes them
+    scale = sp.ilcm(1, *(sp.fraction(t.as_coeff_Mul()[0])[1] for t in sp.Add.make_args(sp.expand(den))))
+    num, den = num * scale, sp.factor_terms(sp.expand(den * scale))
+    if den.could_extract_minus_sign():
+        num, den = -num, -den
+    top = collected(num, moving)
+    if _factorable(top, moving):
+        top = sp.factor_terms(top)
+    return textbook_quotients(like_terms_added(top / den, moving), moving)
+
+
 def _fallback(expr: sp.Expr) -> sp.Expr:
     """The engine's own display form: sin² + cos² = 1 collapsed, then SymPy's simplification when small."""
     plain = within_budget(lambda: tidy(pythagoras(expr), FALLBACK_WORK), expr, FALLBACK_WORK)
-    # quotients as a textbook writes them here too (bounded by size: cheap)
-    return textbook_quotients(plain, moving_symbols(plain, getattr(_local, "names", None)))
+    # like terms added and quotients as a textbook writes them here too (bounded by size: cheap)
+    moving = moving_symbols(plain, getattr(_local, "names", None))
+    return textbook_quotients(like_terms_added(plain, moving), moving)
+
+
+def like_terms_added(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
+    """Terms of a sum that differ only by a constant factor written as one term, in every sum of ``expr``:
+    M Ẋ + m Ẋ → (M + m)Ẋ, M p_φ² + m p_φ² → (M + m)p_φ², the coefficients added in their shortest form.
+
+    The one rule for every member a document prints (momenta, velocities from momenta, H, Hamilton's
+    equations, conserved quantities), applied to whichever form won: the engine's own form is kept when it is
+    short (ENGINE_BONUS), and may hold such pairs.  Terms free of what moves are left as they stand, and so is
+    a Lagrange multiplier's term (λ₂z₁ − Mgz₁ in L′: λ₂ is an unknown of the motion, not a parameter)."""
+    if not isinstance(expr, sp.Expr) or _nodes(expr, NODE_BUDGET) >= NODE_BUDGET:
+        return expr
+    moving = moving | {s for s in expr.free_symbols if _MULTIPLIER.fullmatch(s.name)}
+
+    def added(total: sp.Expr) -> sp.Expr:
+        # c₁ P + c₂ P = (c₁ + c₂) P, for each moving part P (a product of coordinates, rates and their functions)
+        groups: dict[sp.Expr, list[sp.Expr]] = {}
+        constants: list[sp.Expr] = []
+        for term in total.args:
+            const, part = term.as_independent(*moving, as_Add=False) if moving else (term, sp.Integer(1))
+            if part == 1:
+                constants.append(term)
+            else:
+                groups.setdefault(part, []).append(const)
+        # the terms free of what moves as one where they differ only by a parameter and that is shorter:
+        # M g + m g → (M + m) g, m₁g − m₂g → (m₁ − m₂)g; a discriminant (m₁ + m₂)²(l₁ − l₂)² + 4(m₁ + m₂)m₂l₁l₂ stays
+        rest = sp.Add(*constants)
+        lump = _simplest(rest) if len(constants) > 1 and _differ_by_a_parameter(rest) else rest
+        # never longer, and never a sign taken out of the whole: −ω² − g/R stays, not −(ω² + g/R)
+        if sp.count_ops(lump) >= sp.count_ops(rest) or (lump.could_extract_minus_sign() and isinstance(-lump, sp.Add)):
+            lump = rest
+        if lump is rest and all(len(consts) == 1 for consts in groups.values()):
+            return total
+        return sp.Add(*(_simplest(sp.Add(*consts)) * part for part, consts in groups.items()), lump)
+
+    def walk(e: sp.Expr) -> sp.Expr:
+        if e.is_Atom:
+            return e
+        args = [walk(a) for a in e.args]
+        rebuilt = e if args == list(e.args) else e.func(*args)
+        if isinstance(e, sp.Mul) and not isinstance(rebuilt, sp.Mul):
+            # a sign or number before a bracket stays there: −((M + m)g l sin φ + …), not multiplied in
+            rebuilt = sp.Mul(*args, evaluate=False)
+        return added(rebuilt) if isinstance(rebuilt, sp.Add) else rebuilt
+
+    return walk(expr)
 
 
 def roots_compacted(expr: sp.Expr, signs: Mapping[sp.Symbol, sp.Symbol]) -> sp.Expr:

@@ -23,7 +23,7 @@ from app.engine.bodies import BodyMotion
 from app.engine.breaking import broken, broken_row, single
 from app.engine.budget import memoized, pythagoras, unbudgeted
 from app.engine.derive import Derivation
-from app.engine.forms import settle, textbook_form, use_names
+from app.engine.forms import one_denominator, settle, textbook_form, use_names
 from app.engine.names import unicode
 from app.engine.root_forms import power_form, trig_cancelled
 from app.engine.trees import maybe_of_sympy
@@ -160,6 +160,14 @@ def _mapping_step(
 def display(expr: sp.Expr) -> sp.Expr:
     """The textbook form of an expression (app.engine.forms), with the current printer's names."""
     return textbook_form(expr) if isinstance(expr, sp.Expr) and expr.free_symbols else expr
+
+
+def shown_accelerations(d: Derivation) -> list[sp.Expr]:
+    """Each explicit acceleration as the document prints it (the accelerations step and the results box alike):
+    grouped by coordinate where linear in them (app.engine.meaning), in its textbook form, all over one
+    denominator when they have one (app.engine.forms.one_denominator)."""
+    grouped = [meaning.by_coordinate(a, d.table.q) for a in d.equations.accelerations]
+    return memoized("accelerations", tuple(grouped), lambda: one_denominator(grouped))
 
 
 def equations(d: Derivation, pr: Printer) -> list[tuple[sp.Expr, str]]:
@@ -543,7 +551,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         )
     )
     # an acceleration linear in the coordinates grouped by coordinate over its shared denominator (app.engine.meaning)
-    acc = [display(meaning.by_coordinate(a, table.q)) for a in eqs.accelerations] if eqs.closed_form else []
+    acc = shown_accelerations(d) if eqs.closed_form else []
     steps.append(
         _step(
             "accelerations",

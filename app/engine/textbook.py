@@ -141,8 +141,10 @@ class _Printer(LatexPrinter):
     def ordered_terms(self, expr: sp.Add, top: bool) -> list[tuple[bool, sp.Expr]]:
         """The terms of a sum as (negative, |term|) in the order the page prints them (the running text's too)."""
         signed = [self.split_sign(t) for t in expr.args]
-        # a bracket whose moving terms are all negative starts with its constants: (2m₁ + m₂ − m₂ cos 2Δ)
-        self._constants_first = not top and all(neg for neg, t in signed if not self.constant(t))
+        # a bracket whose moving terms are all negative starts with its constants: (2m₁ + m₂ − m₂ cos 2Δ); so
+        # does a bracket below a fraction bar, as a textbook writes a determinant: l(M + m sin² φ)
+        below = getattr(self, "below", False) and any(not self.constant(t) for _, t in signed)
+        self._constants_first = not top and (below or all(neg for neg, t in signed if not self.constant(t)))
         return sorted(signed, key=lambda st: self._term_key(st, top))
 
     def _print_Add(self, expr: sp.Add, order: Any = None) -> str:
@@ -182,6 +184,22 @@ class _Printer(LatexPrinter):
             return self._print(factors[0])  # a sum alone over a fraction bar needs no brackets
         return " ".join(self._wrap(f) for f in self.ordered_factors(factors))
 
+    def under(self, bottom: Sequence[sp.Expr], bare: bool = True) -> str:
+        """The factors below a fraction bar, each bracket's constants first: l(M + m sin² φ)."""
+        outer, self.below = getattr(self, "below", False), True
+        try:
+            return self._product(bottom, bare=bare)
+        finally:
+            self.below = outer
+
+    def _print_Function(self, expr: sp.Expr, exp: str | None = None) -> str:
+        # an angle below a fraction bar keeps its own order: cos(2θ + 2α), as in the numerator
+        outer, self.below = getattr(self, "below", False), False
+        try:
+            return super()._print_Function(expr, exp)
+        finally:
+            self.below = outer
+
     def _frac(self, num: str, den: str) -> str:
         return rf"\frac{{{num}}}{{{den}}}"
 
@@ -216,7 +234,7 @@ class _Printer(LatexPrinter):
                 # one fraction over everything: (p_φ² cos θ)/(m² R⁴ sin³ θ), or g/R alone
                 top = ([p] if p != 1 else []) + num
                 bottom = ([q] if q != 1 else []) + den
-                return self._frac(self._product(top, bare=True) if top else "1", self._product(bottom, bare=True))
+                return self._frac(self._product(top, bare=True) if top else "1", self.under(bottom))
             moving_num = [f for f in num if not self.constant(f)]
             if const_den:
                 top = ([p] if p != 1 else []) + const_num
@@ -234,7 +252,7 @@ class _Printer(LatexPrinter):
         """Inside a fraction: a/b on one line, so that nothing is set at script size."""
         top = ([p] if p != 1 else []) + num
         bottom = ([q] if q != 1 else []) + den
-        b = self._product(bottom)
+        b = self.under(bottom, bare=False)
         if len(bottom) > 1:
             b = rf"\left({b}\right)"
         return f"{self._product(top) if top else '1'} / {b}"
@@ -383,7 +401,15 @@ class _Unicode(StrPrinter):
         name = TEXTBOOK_FUNCTIONS.get(expr.func.__name__, expr.func.__name__)
         if arg is not None and (arg.is_Symbol or arg.is_Number):
             return f"{name} {self._print(arg)}"
-        return f"{name}({', '.join(self._print(a) for a in expr.args)})"
+        return f"{name}({', '.join(self._argument(a) for a in expr.args)})"
+
+    def _argument(self, arg: sp.Expr) -> str:
+        """A function's argument, in its own order below a fraction bar too (cos(2θ + 2α)), as the LaTeX."""
+        outer, self.tex.below = getattr(self.tex, "below", False), False
+        try:
+            return self._print(arg)
+        finally:
+            self.tex.below = outer
 
     def _factor(self, f: sp.Expr) -> str:
         text = self._print(f)
@@ -397,7 +423,7 @@ class _Unicode(StrPrinter):
             return f"{root}({self._print(base)})" if isinstance(base, (sp.Add, sp.Mul)) else f"{root}{self._print(base)}"
         if exp.is_Integer and exp > 0 and base.is_Function and len(base.args) == 1:
             # sin² θ, cos²(θ₁ − θ₂)
-            arg = self._print(base.args[0])
+            arg = self._argument(base.args[0])
             simple = base.args[0].is_Symbol or base.args[0].is_Number
             return f"{base.func.__name__}{str(exp).translate(_SUPERSCRIPT)}" + (f" {arg}" if simple else f"({arg})")
         if exp.is_Integer and exp > 0:
@@ -436,7 +462,12 @@ class _Unicode(StrPrinter):
         bottom = [*([sp.Integer(q)] if q != 1 else []), *den]
         if not bottom:
             return sign + top
-        below = self._product(bottom)
+        # below the bar each bracket's constants first, as the LaTeX writes it: l(M + m sin² φ)
+        outer, self.tex.below = getattr(self.tex, "below", False), True
+        try:
+            below = self._product(bottom)
+        finally:
+            self.tex.below = outer
         if len(bottom) > 1 or isinstance(bottom[0], sp.Add):
             below = f"({below})" if not below.startswith("(") or len(bottom) > 1 else below
         top = f"({top})" if isinstance(rest, sp.Add) and not num else top

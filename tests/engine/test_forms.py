@@ -97,3 +97,16 @@ def test_a_speed_under_a_root_is_formed_without_a_polynomial_error():
     speed = m * sp.sqrt(omega**2 * rho**2 + rho_dot**2) / 2 + m * rho_dot**2
     form = textbook_form(speed)
     assert sp.simplify(form - speed) == 0
+
+
+def test_terms_differing_by_a_parameter_factor_are_one_term():
+    # M ẋ₁ + m₁ ẋ₁ + m₁ l₁ ȧ cos a → (M + m₁)ẋ₁ + m₁ l₁ ȧ cos a; M g + m₁ g beside them → (M + m₁)g
+    shown = forms.like_terms_added(M * x1d + m1 * x1d + m1 * l1 * ad * sp.cos(a) + M * g + m1 * g, {x1d, ad, a})
+    assert shown == (M + m1) * x1d + m1 * l1 * ad * sp.cos(a) + (M + m1) * g
+    # a multiplier is an unknown of the motion: λ₂ z − M g z stays two terms
+    lam = sp.Symbol("lambda_2", real=True)
+    assert forms.like_terms_added(lam * x1 - M * g * x1, {x1}) == lam * x1 - M * g * x1
+    # a sign before a bracket stays there
+    inner = sp.Mul(-1, sp.Add(M * g * sp.sin(a), m1 * g * sp.sin(a), m1 * ad**2), evaluate=False)
+    shown = forms.like_terms_added(inner, {a, ad})
+    assert isinstance(shown, sp.Mul) and shown.args[0] == -1 and shown.has((M + m1) * g * sp.sin(a))

@@ -2,7 +2,7 @@
 
 The pinned strings are the served ``sympy`` texts, produced by running the engine and read by eye:
 cos(θ₁ − θ₂) instead of sin θ₁ sin θ₂ + cos θ₁ cos θ₂, the double pendulum's accelerations over
-l(2m₁ + m₂ − m₂ cos 2(θ₁ − θ₂)), squares such as M(ẏ₁ + ẏ₂)²/8 and κ(x₂ − x₁)²/2, h and E from the
+l(m₁ + m₂ sin²(θ₁ − θ₂)), in single angles and shorter so than over l(2m₁ + m₂ − m₂ cos 2(θ₁ − θ₂)), squares such as M(ẏ₁ + ẏ₂)²/8 and κ(x₂ − x₁)²/2, h and E from the
 same pieces as T and U.  Each served form is checked against the engine's own expression at random
 points (the equations up to a factor free of the motion: each is shown scaled).
 """
@@ -170,8 +170,8 @@ PINNED = {  # fmt: skip
             "g*sin(theta2) + l1*theta1_ddot*cos(theta1 - theta2) - l1*theta1_dot**2*sin(theta1 - theta2) + l2*theta2_ddot",
         ],
         "accelerations": {
-            "theta1": "-(g*m2*sin(theta1 - 2*theta2) + g*(2*m1 + m2)*sin(theta1) + l1*m2*theta1_dot**2*sin(2*theta1 - 2*theta2) + 2*l2*m2*theta2_dot**2*sin(theta1 - theta2))/(l1*(2*m1 - m2*cos(2*theta1 - 2*theta2) + m2))",
-            "theta2": "(-g*(m1 + m2)*sin(theta2) + g*(m1 + m2)*sin(2*theta1 - theta2) + 2*l1*theta1_dot**2*(m1 + m2)*sin(theta1 - theta2) + l2*m2*theta2_dot**2*sin(2*theta1 - 2*theta2))/(l2*(2*m1 - m2*cos(2*theta1 - 2*theta2) + m2))",
+            "theta1": "(g*m2*sin(theta2)*cos(theta1 - theta2) - g*(m1 + m2)*sin(theta1) - l1*m2*theta1_dot**2*sin(theta1 - theta2)*cos(theta1 - theta2) - l2*m2*theta2_dot**2*sin(theta1 - theta2))/(l1*(m1 + m2*sin(theta1 - theta2)**2))",
+            "theta2": "(g*(m1 + m2)*sin(theta1)*cos(theta1 - theta2) - g*(m1 + m2)*sin(theta2) + l1*theta1_dot**2*(m1 + m2)*sin(theta1 - theta2) + l2*m2*theta2_dot**2*sin(theta1 - theta2)*cos(theta1 - theta2))/(l2*(m1 + m2*sin(theta1 - theta2)**2))",
         },
     },
     "user:double-pendulum": {
@@ -183,8 +183,8 @@ PINNED = {  # fmt: skip
             "a_ddot*l1*cos(a - b) - a_dot**2*l1*sin(a - b) + b_ddot*l2 + g*sin(b)",
         ],
         "accelerations": {
-            "a": "-(a_dot**2*l1*m2*sin(2*a - 2*b) + 2*b_dot**2*l2*m2*sin(a - b) + g*m2*sin(a - 2*b) + g*(2*m1 + m2)*sin(a))/(l1*(2*m1 - m2*cos(2*a - 2*b) + m2))",
-            "b": "(2*a_dot**2*l1*(m1 + m2)*sin(a - b) + b_dot**2*l2*m2*sin(2*a - 2*b) - g*(m1 + m2)*sin(b) + g*(m1 + m2)*sin(2*a - b))/(l2*(2*m1 - m2*cos(2*a - 2*b) + m2))",
+            "a": "(-a_dot**2*l1*m2*sin(a - b)*cos(a - b) - b_dot**2*l2*m2*sin(a - b) + g*m2*sin(b)*cos(a - b) - g*(m1 + m2)*sin(a))/(l1*(m1 + m2*sin(a - b)**2))",
+            "b": "(a_dot**2*l1*(m1 + m2)*sin(a - b) + b_dot**2*l2*m2*sin(a - b)*cos(a - b) + g*(m1 + m2)*sin(a)*cos(a - b) - g*(m1 + m2)*sin(b))/(l2*(m1 + m2*sin(a - b)**2))",
         },
     },
     "user:spring-pendulum": {
