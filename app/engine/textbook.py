@@ -439,9 +439,11 @@ class _Unicode(StrPrinter):
         # the factors in the order the LaTeX of the same page prints them: m(1 + α²R²), 2gα − ω², ρ cos(ωt)
         for f in self.tex.ordered_factors(factors):
             text = self._factor(f)
-            # names are written side by side (mgR); a function is set apart by a space (m g sin θ -> mg sin θ)
-            out += (" " if out and (f.is_Function or previous_function) else "") + text
-            previous_function = f.is_Function
+            # names are written side by side (mgR); a function, or its power, is set apart by a space (m g sin θ ->
+            # mg sin θ, m sin²θ: never msin²θ)
+            function = f.is_Function or (f.is_Pow and f.base.is_Function)
+            out += (" " if out and (function or previous_function) else "") + text
+            previous_function = function
         return out
 
     def _print_Mul(self, expr: sp.Expr) -> str:

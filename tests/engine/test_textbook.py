@@ -76,6 +76,8 @@ def test_prose_formulas_are_unicode_never_code():
     assert textbook.unicode_text(sp.sin(theta) ** 2, NAMES) == "sin² θ"
     assert textbook.unicode_text(sp.sqrt(g / R), NAMES) == "√(g/R)"
     assert textbook.unicode_text(m * g * sp.sin(theta) * sp.cos(theta), NAMES) == "mg sin θ cos θ"
+    # a function's power is set apart as the function is: M + m sin²θ, never msin²θ
+    assert textbook.unicode_text(m * g * sp.sin(theta) ** 2, NAMES) == "mg sin² θ"
     square = textbook.unicode_text(k * (x2 - x1 - l0) ** 2 / 2, {x1: "x_1", x2: "x_2", sp.Symbol("x1_dot"): ""})
     assert square.startswith("k(x₂ − ") and square.endswith(")²/2")
     for expr in (thd**2 * R**2 * m / 2, (m + b) * g / (R * sp.sin(theta) ** 3), -g * sp.cos(theta - phi)):
