@@ -116,7 +116,7 @@ function element(tag, attrs = {}, text = "") {
 }
 
 /** A verdict's words: the formulas they quote typeset, the rest with its subscripts set (prose.js). */
-function said(tag, attrs, text, formulas) {
+function wordsEl(tag, attrs, text, formulas) {
   return setMathProse(element(tag, attrs), text, formulas);
 }
 
@@ -131,11 +131,11 @@ function showVerdict(item, result, answer) {
     const words = verdictWords(result);
     const head = element("p", { class: "verdict-head" });
     const formulas = result.formulas || [];
-    head.append(element("strong", {}, words.head[0]), said("span", {}, words.head[1], formulas));
+    head.append(element("strong", {}, words.head[0]), wordsEl("span", {}, words.head[1], formulas));
     box.append(head);
     if (result.mistake) box.append(mistakeBox(result.mistake, words.mistake, formulas));
-    if (words.reason) box.append(said("p", { class: "verdict-hint" }, words.reason, formulas));
-    if (words.partial) box.append(said("p", { class: "verdict-partial" }, words.partial, formulas));
+    if (words.reason) box.append(wordsEl("p", { class: "verdict-hint" }, words.reason, formulas));
+    if (words.partial) box.append(wordsEl("p", { class: "verdict-partial" }, words.partial, formulas));
     if (result.follow_up && result.verdict === "incorrect") box.append(followUpBox(item, result.follow_up, formulas));
   } else {
     // a refusal: say what was wrong and mark the offending part of what was typed
@@ -200,7 +200,7 @@ function markStale(item, checkedAnswer) {
 function mistakeBox(mistake, [label, name], formulas = []) {
   const box = element("div", { class: "verdict-mistake", "data-key": mistake.key });
   const head = element("p");
-  head.append(element("strong", {}, label), said("span", {}, name, formulas));
+  head.append(element("strong", {}, label), wordsEl("span", {}, name, formulas));
   box.append(head);
   // the piece, labelled by the server; none when it would only repeat the difference above
   if (mistake.latex) {
@@ -216,7 +216,7 @@ function mistakeBox(mistake, [label, name], formulas = []) {
 function followUpBox(item, followUp, formulas = []) {
   const id = `${item.querySelector(".answer-box").id}-follow`;
   const box = element("div", { class: "verdict-follow-up", "data-key": followUp.key });
-  const label = said("label", { for: id }, followUp.question, formulas);
+  const label = wordsEl("label", { for: id }, followUp.question, formulas);
   const row = element("div", { class: "practice-row" });
   // (Enter in its box sends it: not a nested form)
   const input = answerBox({ id }, () => ask());

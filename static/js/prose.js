@@ -82,6 +82,7 @@ export function setMathProse(element, text, formulas = []) {
     const span = document.createElement("span");
     if (part.latex !== undefined && window.katex) {
       span.className = "prose-math";
+      span.dataset.text = part.text; // the words as printed, for a copy or a test that reads them
       window.katex.render(part.latex, span, { throwOnError: false });
     } else {
       span.innerHTML = proseHTML(part.text);
