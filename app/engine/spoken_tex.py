@@ -127,7 +127,7 @@ def _is_word(text: str, m: re.Match[str]) -> bool:
 _MATHS = re.compile(r"[⁰¹²³⁴⁵⁶⁷⁸⁹₀-₉\u0300-\u036fΑ-Ωα-ω=/½_″′+−×·∂]|\b(?:sin|cos|tan|exp|log|sqrt)\(")
 _ENDS = ".,;:!?"
 # a unit, printed upright by its own rule, is no formula of symbols: m/s², 1/s², J·s
-_UNIT = re.compile(r"^[(]?[0-9/·⁰¹²³⁴⁵⁶⁷⁸⁹⁻ ]*(?:(?:kg|[msJNW])[0-9/·⁰¹²³⁴⁵⁶⁷⁸⁹⁻ ]*)*[)]?$")
+_UNIT = re.compile(r"^[(]?[0-9./·⁰¹²³⁴⁵⁶⁷⁸⁹⁻ ]*(?:(?:kg|[msJNW])[0-9./·⁰¹²³⁴⁵⁶⁷⁸⁹⁻ ]*)*[)]?$")
 
 
 def spans(words: str) -> list[str]:
@@ -145,7 +145,7 @@ def spans(words: str) -> list[str]:
         while text.endswith(")") and text.count(")") > text.count("("):
             text = text[:-1]
         run.clear()
-        if text and text not in ("a", "A") and not (_UNIT.match(text) and "s" in text) and (len(text) == 1 and text.isalpha() or " " in text or _MATHS.search(
+        if text and not (_UNIT.match(text) and "s" in text) and (len(text) == 1 and text.isalpha() or " " in text or _MATHS.search(
                 unicodedata.normalize("NFD", text))) and latex(text) is not None:  # fmt: skip
             out.append(text)
 
@@ -153,7 +153,8 @@ def spans(words: str) -> list[str]:
         core = piece.rstrip(_ENDS)
         bare = core.replace("(", "").replace(")", "")
         # (a possessive, your T's, is words: T′s is no formula)
-        if bare and "'s" not in bare and latex(bare) is not None:
+        # (and the article a is a word, never a symbol glued to the formula before it: "m g R a product")
+        if bare and bare not in ("a", "A") and "'s" not in bare and latex(bare) is not None:
             run.append(core)
             if core != piece:  # a full stop or a comma ends the formula
                 close()

@@ -41,5 +41,7 @@ def test_the_formulas_of_a_sentence_are_its_runs_of_symbols():
         "ω²",
         "ω² = U_eff″/m_eff",
     ]
+    # a value with its unit is words too
+    assert spans("g is 9.81 m/s² here, and m g R a product") == ["g", "m g R"]
     # a parenthesis opened by the words belongs to them
     assert spans("the correct ω² of small oscillations (at θ = 0).") == ["ω²", "θ = 0"]
