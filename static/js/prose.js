@@ -71,7 +71,16 @@ export function proseParts(text, formulas = []) {
       return out.filter((p) => p.latex !== undefined || p.text);
     });
   }
-  return parts;
+  // a parenthesis the words open against a formula is set with it, so that a line never ends on "("
+  parts.forEach((part, k) => {
+    const before = parts[k - 1];
+    if (part.latex !== undefined && before?.latex === undefined && before?.text.endsWith("(")) {
+      before.text = before.text.slice(0, -1);
+      part.latex = `(${part.latex}`;
+      part.text = `(${part.text}`;
+    }
+  });
+  return parts.filter((p) => p.latex !== undefined || p.text);
 }
 
 /** Put a verdict's sentence into ``element``: its formulas typeset (KaTeX, math italic, as the answer's own

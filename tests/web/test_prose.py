@@ -64,7 +64,7 @@ def test_a_statement_keeps_a_formulas_sign_with_its_term(client):
 def test_a_verdicts_formulas_are_cut_out_of_its_words_whole():
     # student-l 6, 7: the formulas a verdict lists (longest first) are set as formulas where they stand, never
     # inside a word or a possessive (T's), the rest left as words with their subscripts
-    words = "I = M l² in place of a rod's I about its end, M l²/3; T's units"
+    words = "I = M l² in place of a rod's I about its end, M l²/3; T's units (I about the pivot)"
     formulas = [
         {"text": "I = M l²", "latex": "I = M l^{2}"},
         {"text": "M l²/3", "latex": "M l^{2}/3"},
@@ -82,5 +82,8 @@ def test_a_verdicts_formulas_are_cut_out_of_its_words_whole():
         {"latex": "I", "text": "I"},
         {"text": " about its end, "},
         {"latex": "M l^{2}/3", "text": "M l²/3"},
-        {"text": "; T's units"},
+        {"text": "; T's units "},
+        # the parenthesis opened against a formula set with it: no line ends on "("
+        {"latex": "(I", "text": "(I"},
+        {"text": " about the pivot)"},
     ]
