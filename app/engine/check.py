@@ -97,7 +97,7 @@ from app.engine.mistake_answer import (
     solved_slip,
 )
 from app.engine.mistake_box import piece_box
-from app.engine.mistake_families import Correct, FollowUp, Mistake
+from app.engine.mistake_families import Correct, FollowUp, Mistake, spoken
 from app.engine.mistakes import (
     CONSTANT_FACTOR_HINT,
     HALF_MOMENTUM_HINT,
@@ -110,6 +110,7 @@ from app.engine.names import unicode
 from app.engine.parse import Parsed
 from app.engine.quoted_term import as_typed
 from app.engine.report import Printer, display
+from app.engine.spoken_tex import formulas
 from app.engine.textbook import unicode_text
 from app.engine.work import WorkExceeded
 from app.limits import ANSWER_SLIP_WORK, DIFFERENCE_WORK, FACTOR_WORK, PARTS_WORK, PIECE_WORK
@@ -164,15 +165,20 @@ def _verdict(
     prints the correct answer; ``correct_part`` (the correct part the mistake's name points at: a denominator, a
     stretch) is for the student to open on request, ``reveal`` (the difference and the correct piece) for the
     step's reveal."""
+    mistake, partial, follow_up = more.get("mistake"), more.get("partial"), more.get("follow_up")
+    # the formulas those words quote, each with its LaTeX, for a page to typeset where the words print them
+    words = (message, hint, (mistake or {}).get("name"), (mistake or {}).get("where"),
+             (partial or {}).get("message"), (follow_up or {}).get("question"))  # fmt: skip
     return {
         "verdict": verdict,
         "message": message,
         "hint": hint,
-        "mistake": more.get("mistake"),
-        "partial": more.get("partial"),
-        "follow_up": more.get("follow_up"),
+        "mistake": mistake,
+        "partial": partial,
+        "follow_up": follow_up,
         "correct_part": more.get("correct_part"),
         "reveal": reveal,
+        "formulas": formulas(words),
     }
 
 
@@ -555,7 +561,8 @@ def follow_up_of(pb: Problem, mistake: Mistake, answer: sp.Expr) -> dict[str, An
     if right:
         return _verdict(
             "correct",
-            f"Correct: {fu.answer_text or sp.sstr(fu.truth)}. Now put it back into your {pb.label}.",
+            # echoed as the student wrote it (M (ẏ₁ + ẏ₂)²/8 stays factored), not as the engine's answer reads
+            f"Correct: {spoken(answer, factored=False)}. Now put it back into your {pb.label}.",
             hint=None,
             mistake=mistake_json(mistake, printer.tex),
         )

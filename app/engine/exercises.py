@@ -4,6 +4,7 @@ prompt, the names an answer may use, and the engine's own step (revealed on requ
 
 from __future__ import annotations
 
+from fractions import Fraction
 from typing import Any
 
 import sympy as sp
@@ -12,6 +13,7 @@ from app.engine.check import allowed_names, conserved_momenta, exercises, proble
 from app.engine.check_problem import asked_equilibrium, where_asked
 from app.engine.constraints import AXES
 from app.engine.derive import Derivation
+from app.engine.dimensions import system_dimensions
 from app.engine.equilibria_notes import equilibria_notes
 from app.engine.mistake_positions import body_name, component_keys
 from app.engine.mistakes import POINTERS, has_springs, pointer, without_springs
@@ -52,7 +54,7 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
         if step == "acceleration":
             item["acceleration"] = unicode(f"{name}_ddot")  # θ̈, as the box's own lhs prints it
         if step == "position":
-            item["note"] = POSITION_NOTE
+            item["note"] = position_note(d)
         items.append(item)
     symbols = {
         s.name: pr.tex(s) for s in (*d.table.q, *d.table.qd, *d.table.qdd, *d.table.params, *conserved_momenta(d))
@@ -68,10 +70,33 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
 # what a positions step is judged against, said on the step; the set-up figure draws no axes, so the directions
 # and the origin are said in words (the origin is the one the problem statement names)
 POSITION_NOTE = (
-    "Measure x across and z up (y is the third direction), from the origin the problem statement names; a "
-    "position measured from another origin, the correct one plus a constant length (such as + R, never a bare "
-    "number), is accepted as equivalent."
+    "Measure x across and z up (y is the third direction), from the origin the problem statement names; a position "
+    "measured from another origin, the correct one plus a constant length ({example}never a bare number), is "
+    "accepted as equivalent.{heights}"
 )
+METRE = {"m": Fraction(1)}
+
+
+def position_note(d: Derivation) -> str:
+    """The positions' rule in this system's words: its own length as the example of a shift of origin (l₁, d; no
+    R where the scene has none), and coordinates named y said to be heights where they are (the pulley's y₁, y₂,
+    which a reader could take for the third direction)."""
+    known = system_dimensions(d)
+    lengths = [s for s in d.table.params if known.get(s) == METRE]
+    example = f"such as + {unicode(lengths[0].name)}, " if lengths else "with its units, "
+    # a coordinate named y that moves a body up and down (in a z component) and along no y component is a height
+    positions = d.mechanics.positions
+    heights = [
+        q
+        for q in d.table.q
+        if q.name.rstrip("0123456789") == "y"
+        and any(r[2].has(q) for r in positions)
+        and not any(r[1].has(q) for r in positions)
+    ]
+    said = ", ".join(unicode(q.name) for q in heights)
+    if heights:
+        said = f" Here {said} {'are heights' if len(heights) > 1 else 'is a height'} (measured up, along z), not the third direction."
+    return POSITION_NOTE.format(heights=said, example=example)
 
 
 def _title(label: str) -> str:

@@ -77,7 +77,8 @@ COUPLED_OSCILLATORS = Scene(
     beyond_chapter=True,
     summary="Two normal modes, in phase and in opposition; a weak coupling trades the energy back and forth in beats.",
     statement=(
-        "Two equal masses m slide without friction on a horizontal line between two walls. Each is tied to its "
+        "Two equal masses m slide without friction on a horizontal line between two walls, which stand 3d either "
+        "side of the middle; at rest each mass sits a distance d from the middle. Each is tied to its "
         "wall by a spring of stiffness k, and a third spring of stiffness κ joins them; all springs are relaxed, and U = 0, "
         "when x1 = x2 = 0, x1 and x2 being the displacements of the masses. Find the normal modes and their "
         "frequencies, and show that when κ is small and only one mass is displaced at first, the motion passes "

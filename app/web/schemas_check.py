@@ -128,6 +128,11 @@ class Reveal(BaseModel):
     )
 
 
+class Formula(BaseModel):
+    text: str = Field(description="The formula as the words print it (Unicode), e.g. `I = M l²`.")
+    latex: str = Field(description="The same formula in LaTeX, in the same order, for a page to typeset it there.")
+
+
 class CheckResponse(BaseModel):
     verdict: Literal["correct", "equivalent", "incorrect"]
     message: str = Field(
@@ -158,12 +163,18 @@ class CheckResponse(BaseModel):
         description="For an incorrect answer: what follows the correct answer, for a page to show only with the "
         'step itself ("Show this step"), never beside the verdict: the other fields name the mistake without it.',
     )
+    formulas: list[Formula] = Field(
+        default_factory=list,
+        description="The formulas the words above print (message, hint, the mistake's name and where, partial, the "
+        "follow-up question), longest first, each with its LaTeX: a page sets each as a formula where it stands.",
+    )
 
 
 class ExerciseAnswer(ExprPair):
     notes: list[str] | None = Field(
-        None, description="For ω²: sentences under the formula, whether the equilibrium asked about is stable (or "
-        "while what holds) and the other equilibria, where each exists and whether it is stable."
+        None,
+        description="For ω²: sentences under the formula, whether the equilibrium asked about is stable (or "
+        "while what holds) and the other equilibria, where each exists and whether it is stable.",
     )
 
 

@@ -9,6 +9,7 @@
  */
 import { answerBox } from "./answer-box.js";
 import { api, el, exerciseOf, practiceOf, showPanes, stepTex, stored, typeset } from "./classroom.js";
+import { setMathProse } from "./prose.js";
 import { correctPartWords, howTo, numbered, refusalWords, verdictWords } from "./verdict-words.js";
 
 const memory = stored("lagrange-join");
@@ -109,16 +110,18 @@ function verdictView(box, r) {
     const v = r.data;
     box.dataset.verdict = v.verdict;
     const words = verdictWords(v);
-    box.append(el("p", {}, el("strong", { text: words.head[0] }), words.head[1]));
+    // the formulas the words quote typeset, the rest with its subscripts set, as on a scene page (prose.js)
+    const said = (node, text) => setMathProse(node, text, v.formulas);
+    box.append(el("p", {}, el("strong", { text: words.head[0] }), said(el("span"), words.head[1])));
     if (v.difference) box.append(el("p", { className: "verdict-difference" }, typeset(el("span"), v.difference.latex, true)));
     if (words.mistake) {
       const mistake = el("div", { className: "verdict-mistake", "data-key": v.mistake.key },
-        el("p", {}, el("strong", { text: words.mistake[0] }), words.mistake[1]));
+        el("p", {}, el("strong", { text: words.mistake[0] }), said(el("span"), words.mistake[1])));
       if (v.mistake.latex) mistake.append(typeset(el("div", { className: "verdict-piece" }), v.mistake.latex, true));
       box.append(mistake);
     }
-    if (words.reason) box.append(el("p", { className: "verdict-hint", text: words.reason }));
-    if (words.partial) box.append(el("p", { className: "verdict-partial", text: words.partial }));
+    if (words.reason) box.append(said(el("p", { className: "verdict-hint" }), words.reason));
+    if (words.partial) box.append(said(el("p", { className: "verdict-partial" }), words.partial));
     // the correct part the mistake points at, closed until asked for (as in practice mode)
     const correct = correctPartWords(v);
     if (correct) {

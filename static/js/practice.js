@@ -18,6 +18,7 @@
 import { answerBox, fit } from "./answer-box.js";
 import { RequestError, fetchJSON } from "./api.js";
 import { readRequest, setControl } from "./controls.js";
+import { setMathProse } from "./prose.js";
 import { correctPartWords, endOf, howTo, namesSaid, numbered, refusalWords, verdictWords, wordsOf } from "./verdict-words.js";
 
 const root = document.getElementById("practice");
@@ -114,6 +115,11 @@ function element(tag, attrs = {}, text = "") {
   return el;
 }
 
+/** A verdict's words: the formulas they quote typeset, the rest with its subscripts set (prose.js). */
+function wordsEl(tag, attrs, text, formulas) {
+  return setMathProse(element(tag, attrs), text, formulas);
+}
+
 function showVerdict(item, result, answer) {
   const box = item.querySelector(".practice-verdict");
   box.replaceChildren();
@@ -124,14 +130,15 @@ function showVerdict(item, result, answer) {
     // class page)
     const words = verdictWords(result);
     const head = element("p", { class: "verdict-head" });
-    head.append(element("strong", {}, words.head[0]), words.head[1]);
+    const formulas = result.formulas || [];
+    head.append(element("strong", {}, words.head[0]), wordsEl("span", {}, words.head[1], formulas));
     box.append(head);
-    if (result.mistake) box.append(mistakeBox(result.mistake, words.mistake));
-    if (words.reason) box.append(element("p", { class: "verdict-hint" }, words.reason));
-    if (words.partial) box.append(element("p", { class: "verdict-partial" }, words.partial));
+    if (result.mistake) box.append(mistakeBox(result.mistake, words.mistake, formulas));
+    if (words.reason) box.append(wordsEl("p", { class: "verdict-hint" }, words.reason, formulas));
+    if (words.partial) box.append(wordsEl("p", { class: "verdict-partial" }, words.partial, formulas));
     const correct = correctPartWords(result);
     if (correct) box.append(correctBox(correct));
-    if (result.follow_up && result.verdict === "incorrect") box.append(followUpBox(item, result.follow_up));
+    if (result.follow_up && result.verdict === "incorrect") box.append(followUpBox(item, result.follow_up, formulas));
   } else {
     // a refusal: say what was wrong and mark the offending part of what was typed
     const head = element("p", { class: "verdict-head" });
@@ -192,10 +199,10 @@ function markStale(item, checkedAnswer) {
 }
 
 /** The named mistake: its name, and the piece it speaks of typeset. */
-function mistakeBox(mistake, [label, name]) {
+function mistakeBox(mistake, [label, name], formulas = []) {
   const box = element("div", { class: "verdict-mistake", "data-key": mistake.key });
   const head = element("p");
-  head.append(element("strong", {}, label), name);
+  head.append(element("strong", {}, label), wordsEl("span", {}, name, formulas));
   box.append(head);
   // the piece, labelled by the server; none when it would only repeat the difference above
   if (mistake.latex) {
@@ -222,10 +229,10 @@ function correctBox(correct) {
 
 /** A follow-up question after a named mistake, answered and checked by the same checker (not a nested form:
  * Enter in its box or its button sends it). */
-function followUpBox(item, followUp) {
+function followUpBox(item, followUp, formulas = []) {
   const id = `${item.querySelector(".answer-box").id}-follow`;
   const box = element("div", { class: "verdict-follow-up", "data-key": followUp.key });
-  const label = element("label", { for: id }, followUp.question);
+  const label = wordsEl("label", { for: id }, followUp.question, formulas);
   const row = element("div", { class: "practice-row" });
   // (Enter in its box sends it: not a nested form)
   const input = answerBox({ id }, () => ask());
@@ -267,7 +274,9 @@ function followUpBox(item, followUp) {
     try {
       const { answer: result } = await inTurn(() => request(root.dataset.checkUrl, body));
       status.dataset.verdict = result?.verdict || "refused";
-      status.textContent = result?.verdict ? `${result.message}${result.hint ? ` ${result.hint}` : ""}` : endOf(wordsOf(result?.detail) || "No answer from the server");
+      // the reply's verdict, its formulas typeset (a right reply is echoed as it was typed: M (ẏ₁ + ẏ₂)²/8)
+      if (result?.verdict) setMathProse(status, `${result.message}${result.hint ? ` ${result.hint}` : ""}`, result.formulas);
+      else status.textContent = endOf(wordsOf(result?.detail) || "No answer from the server");
     } catch {
       status.textContent = "The server could not be reached; try again.";
     } finally {
@@ -375,7 +384,9 @@ async function preview(item, signal) {
 
 const TYPESET_DELAY_MS = 150; // after the last keystroke
 
-function buildItem(exercise, index) {
+/** ``folded``: a position's note said in full on an earlier box, folded here under "How to write a position"
+ * (student-l 8: on a phone the same paragraph under every position box was screens of scrolling). */
+function buildItem(exercise, index, folded = false) {
   const key = keyOf(exercise);
   const id = `practice-${index}`;
   const item = element("li", { class: "practice-step", "data-key": key, "data-step": exercise.step, "data-lhs": exercise.lhs });
@@ -396,7 +407,12 @@ function buildItem(exercise, index) {
   const rhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });
   if (exercise.step === "equation") katexInto(rhs, "= 0");
   row.append(lhs, input, rhs);
-  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${howTo(exercise)} Names you may use: ${namesSaid(exercise)}, pi.${numbered(exercise.names)}`);
+  const names = element("p", { class: "help practice-names", id: `${id}-names` }, `${howTo(exercise, !folded)} Names you may use: ${namesSaid(exercise)}, pi.${numbered(exercise.names)}`);
+  let how = null;
+  if (folded && exercise.note) {
+    how = element("details", { class: "help practice-how" });
+    how.append(element("summary", {}, "How to write a position"), element("p", {}, exercise.note));
+  }
   const previewBox = element("div", { class: "practice-preview", id: `${id}-preview`, "aria-label": "Your answer, typeset" });
   previewBox.append(element("div", { class: "practice-preview-math" }), element("p", { class: "help practice-preview-note" }));
   const actions = element("div", { class: "practice-actions" });
@@ -408,7 +424,7 @@ function buildItem(exercise, index) {
   const engineMath = element("div", { class: "math-display" });
   katexInto(engineMath, exercise.answer.latex, true);
   engine.append(element("p", { class: "help" }, "The step, derived:"), engineMath);
-  form.append(title, label, row, names, previewBox, actions, verdict, engine);
+  form.append(title, label, row, names, ...(how ? [how] : []), previewBox, actions, verdict, engine);
   item.append(form);
 
   let timer = null;
@@ -512,7 +528,9 @@ async function loadSteps() {
     status.textContent = `The steps could not be loaded: ${endOf(wordsOf(answer?.detail) || "no answer from the server")}`;
     return;
   }
-  list.replaceChildren(...answer.exercises.map((exercise, index) => buildItem(exercise, index)));
+  // a position's note in full on the first box that has one, folded on the others
+  const first = answer.exercises.findIndex((exercise) => exercise.note);
+  list.replaceChildren(...answer.exercises.map((exercise, index) => buildItem(exercise, index, index > first && Boolean(exercise.note))));
   foldGiveaways(answer.exercises);
   shownExercises = answer.exercises;
   showProgress();

@@ -14,6 +14,14 @@
  * browser never sends to a server: opened on another machine, it restores the key there.
  */
 import { api, el, mistakeWords, practiceOf, showPanes, stepTex, stored, typeset } from "./classroom.js";
+import { setProse } from "./prose.js";
+
+/** A mistake's name in bold, its symbols' subscripts set as on the students' pages (U_eff, v_centre: prose.js). */
+const mistakeName = (mistake) => {
+  const strong = el("strong");
+  setProse(strong, mistake.name || mistakeWords(mistake.key));
+  return strong;
+};
 
 const POLL_MS = 2000;
 const memory = stored("lagrange-teach");
@@ -307,7 +315,7 @@ async function drawNow(summary) {
     const label = await labelOf(where);
     $("now-mistake").dataset.count = mistake.students.length;
     body.replaceChildren(
-      el("p", { className: "now-what" }, el("strong", { text: mistake.name || mistakeWords(mistake.key) })),
+      el("p", { className: "now-what" }, mistakeName(mistake)),
       el("p", { className: "now-figure" }, `${madeBy(mistake)} · in `, typeset(el("span"), label.tex),
         el("span", { className: "dash-where", text: ` ${label.where}${mistake.steps.length > 1 ? ` and ${mistake.steps.length - 1} more` : ""}` })),
       whoList(mistake.students, "Show the students who made it", "now", mistake.students_since_right || []));
@@ -426,7 +434,7 @@ async function drawMistakes(summary) {
     }
     (k < FIRST_MISTAKES ? rows : rest).push(el("li", { className: "dash-mistake", "data-mistake": mistake.key },
       el("span", { className: "dash-count", text: madeBy(mistake) }),
-      el("strong", { text: mistake.name || mistakeWords(mistake.key) }),
+      mistakeName(mistake),
       el("span", { text: " in " }), ...pieces,
       whoList(mistake.students, "Show the students", `mistake|${mistake.key}`, mistake.students_since_right || [])));
   }

@@ -14,11 +14,12 @@ const HOW = {
   other: "Type only the right-hand side.",
 };
 
-/** What a box takes, said above its names: "Type only the right-hand side." */
-export function howTo(exercise) {
+/** What a box takes, said above its names: "Type only the right-hand side."; its note (how to write a position)
+ * first, unless ``withNote`` is false (the page then folds the note, said in full on an earlier box). */
+export function howTo(exercise, withNote = true) {
   // the acceleration as the page prints it (θ̈), its typed spelling once
   const how = (HOW[exercise.step] || HOW.other).replaceAll("{a}", exercise.acceleration || "q̈").replace("{q}", exercise.coordinate || "q");
-  return `${exercise.note ? `${exercise.note} ` : ""}${how}`;
+  return `${exercise.note && withNote ? `${exercise.note} ` : ""}${how}`;
 }
 
 /** The names a box's answer may use, as the page prints them with how each is typed once: "θ̇ (type theta_dot)". */

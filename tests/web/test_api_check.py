@@ -25,7 +25,7 @@ def test_a_scene_answer_gets_its_verdict_difference_and_hint(client):
     wrong = check(client, {"step": "kinetic", "answer": "m*R**2*theta_dot**2"})
     assert wrong.status_code == 200, wrong.text
     body = wrong.json()
-    assert set(body) == {"verdict", "message", "hint", "mistake", "partial", "follow_up", "correct_part", "reveal"}
+    assert set(body) == {"verdict", "message", "hint", "mistake", "partial", "follow_up", "correct_part", "reveal", "formulas"}
     assert body["verdict"] == "incorrect" and body["hint"] == HINTS["missing_half"]
     # the difference is kept for the step's reveal (the page shows it with the step), never said in the verdict
     assert "difference" not in body["message"] and body["reveal"]["piece"] == ""

@@ -59,3 +59,31 @@ def test_a_statement_keeps_a_formulas_sign_with_its_term(client):
     statement = re.search(r'<p class="statement">(.*?)</p>', html, flags=re.S).group(1)
     assert "Y =\u00a0−\u2060(y₁ + y₂)/2 − c" in statement
     assert re.search(r"[=<>≈≤≥] −|−[^\s\u2060]", statement) is None, statement
+
+
+def test_a_verdicts_formulas_are_cut_out_of_its_words_whole():
+    # student-l 6, 7: the formulas a verdict lists (longest first) are set as formulas where they stand, never
+    # inside a word or a possessive (T's), the rest left as words with their subscripts
+    words = "I = M l² in place of a rod's I about its end, M l²/3; T's units (I about the pivot)"
+    formulas = [
+        {"text": "I = M l²", "latex": "I = M l^{2}"},
+        {"text": "M l²/3", "latex": "M l^{2}/3"},
+        {"text": "I", "latex": "I"},
+        {"text": "T", "latex": "T"},
+    ]
+    script = (
+        f"import('{JS.as_uri()}').then(({{ proseParts }}) => "
+        f"console.log(JSON.stringify(proseParts({json.dumps(words)}, {json.dumps(formulas)}))))"
+    )
+    out = subprocess.run(["node", "--input-type=module", "-e", script], capture_output=True, text=True, check=True)
+    assert json.loads(out.stdout) == [
+        {"latex": "I = M l^{2}", "text": "I = M l²"},
+        {"text": " in place of a rod's "},
+        {"latex": "I", "text": "I"},
+        {"text": " about its end, "},
+        {"latex": "M l^{2}/3", "text": "M l²/3"},
+        {"text": "; T's units "},
+        # the parenthesis opened against a formula set with it: no line ends on "("
+        {"latex": "(I", "text": "(I"},
+        {"text": " about the pivot)"},
+    ]
