@@ -238,3 +238,33 @@ def test_the_bead_flung_off_the_turning_wire_ends_the_run_at_its_end(browser, li
     finally:
         context.close()
 
+
+@pytest.mark.parametrize(("width", "height"), [(1366, 768), (390, 844)])
+def test_the_masses_labels_keep_off_the_floor_and_the_walls(browser, live_server, artifacts, width, height):
+    # prof-m 10: "left mass" sat on the floor's hatching; a label goes where it covers no ground, wall or wire
+    context = browser.new_context(base_url=live_server, viewport={"width": width, "height": height})
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    try:
+        page.goto("/scenes/coupled-oscillators")
+        page.wait_for_selector(READY, state="attached")
+        canvas = page.locator("[data-panel^=animation] canvas")
+        for frame in ("0", "Math.floor(s.max / 3)", "s.max"):
+            page.evaluate(
+                f"() => {{ const s = document.querySelector('input.scrub'); s.value = {frame}; s.dispatchEvent(new Event('input')); }}"
+            )
+            page.wait_for_timeout(100)
+            drawn = page.evaluate(DRAWN)
+            labels = json.loads(canvas.get_attribute("data-labels"))
+            curves = {c["label"]: c["box"] for c in drawn["curves"]}
+            assert set(curves) == {"floor", "left wall", "right wall"}
+            assert curves["floor"][3] - curves["floor"][1] >= 5  # the floor's line and the hatching below it
+            assert {lb["label"] for lb in labels} == {"left mass", "right mass"}
+            for lb in labels:
+                x0, y0, x1, y1 = lb["box"]
+                for name, (a0, b0, a1, b1) in curves.items():
+                    assert x1 < a0 or x0 > a1 or y1 < b0 or y0 > b1, (frame, lb, name, (a0, b0, a1, b1))
+            if frame == "0":
+                canvas.screenshot(path=artifacts / f"coupled-labels-{width}.png")
+    finally:
+        context.close()
