@@ -2,9 +2,12 @@
 
 from app.scenes import reasons
 from app.scenes.common import GRAVITY
-from app.scenes.types import Constraint, Erratum, Parameter, Particle, Scene, System
+from app.scenes.types import Constraint, Erratum, Event, Parameter, Particle, Scene, System
 
 MASS = Parameter("m", 0.1, "kg", 0.001, 100.0, "mass of the bead")
+# the rotating wire is finite: its two ends lie this far from the axis, at ρ = ±WIRE_REACH (in metres); a bead
+# that the turning flings outward leaves the wire there, and the run ends (the animation draws the wire to them)
+WIRE_REACH = 1.0
 
 HELIX_BEAD = Scene(
     id="helix-bead",
@@ -75,7 +78,9 @@ ROTATING_PARABOLA = Scene(
         "by a motor at the constant rate ω; at t = 0 the wire lies in the x–z plane, its branch ρ > 0 along +x, "
         "so that the wire's plane makes the angle ω t with the x axis. A bead of mass m slides on it without "
         "friction. Heights z are "
-        "measured upward from the bottom of the parabola, where U = 0. With ρ as the "
+        "measured upward from the bottom of the parabola, where U = 0. The wire ends "
+        f"{WIRE_REACH:g} m from the axis on either side (ρ = ±{WIRE_REACH:g} m): a bead that reaches an end flies "
+        "off, and the motion studied here ends there. With ρ as the "
         "coordinate, derive the equation of motion, compare the energy function h with the energy E, and explain "
         "which one is conserved."
     ),
@@ -114,6 +119,10 @@ ROTATING_PARABOLA = Scene(
     # 18 % slower than the small-oscillation Ω; from 0.15 m (4α²ρ² = 0.09) it is 2.2 % slower
     initial={"rho": 0.15, "rho_dot": 0.0},
     t_end=10.0,
+    # ρ² < WIRE_REACH²: the bead is still on the wire
+    events=(
+        Event("end of the wire", f"{WIRE_REACH!r}**2 - rho**2", "The bead reached the end of the wire; the run ends there."),
+    ),
     panels=("effective-potential", "small-oscillations"),
     errata=(
         Erratum(

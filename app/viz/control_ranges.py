@@ -22,7 +22,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from app.engine.names import unicode
-from app.engine.trees import Tree
+from app.engine.trees import Tree, TreeError, of_text
 from app.viz.exprtree import document_tree, evaluate, leaves
 from app.viz.units import coordinate_units
 
@@ -194,6 +194,46 @@ def separatrix_marks(
         label = top["label"].replace(START, f"{q0:.4g}")
         marks += [{"value": rate, "label": label}, {"value": -rate, "label": label}]
     return {f"{q}_dot": marks} if marks else {}
+
+
+def held_span(
+    doc: dict[str, Any], expression: str, q: str, value: float, lo: float, hi: float
+) -> tuple[float, float]:
+    """The part of [lo, hi] about ``value`` where a set-up's event g (positive while the set-up holds: the bead
+    still on its wire, g = R² − ρ²) is not negative, as a function of the coordinate ``q`` at the default
+    parameters with every rate zero; [lo, hi] itself where g does not hold at ``value`` or has no tree."""
+    try:
+        node = of_text(expression)
+    except TreeError:
+        return lo, hi
+
+    def g(x: float) -> float | None:
+        try:
+            v = evaluate(node, _env(doc, **{q: x}))
+        except (ArithmeticError, ValueError, TypeError):
+            return None
+        return v if math.isfinite(v) else None
+
+    at = g(value)
+    if at is None or at < 0:
+        return lo, hi
+    grid = _grid(lo, hi)
+    ends = []
+    for side in (-1, 1):
+        # from the value outward, the first grid point where g falls below zero: the end lies between it and
+        # the point before, found by bisection
+        inner = value
+        for x in grid if side > 0 else grid[::-1]:
+            if side * (x - value) <= 0:
+                continue
+            gx = g(x)
+            if gx is not None and gx < 0:
+                ends.append(_bisect(lambda y: g(y) or 0.0, inner, x))
+                break
+            inner = x
+        else:
+            ends.append(lo if side < 0 else hi)
+    return ends[0], ends[1]
 
 
 def _grid(lo: float, hi: float) -> list[float]:

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from app.engine.trees import TreeError, of_text
+from app.scenes.beads import WIRE_REACH
 from app.viz.exprtree import leaves
 from app.viz.rods import rods, springs
 
@@ -76,8 +77,9 @@ PENDULUM = Family(
 
 # The fixed incline: X is the distance up the slope from its foot at the origin; the ramp reaches a
 # little above the highest point of the run, the floor runs out on both sides of the foot.
-# the turning wire reaches a little beyond the bead's farthest distance from the axis
-_RIM = f"(1.25*{_max('Abs(qmax_rho)', 'Abs(qmin_rho)')} + 0.1)"
+# the turning wire is drawn to its ends, a fixed distance from the axis whatever the run does (a run ends when the
+# bead reaches one), so the view keeps the wire's scale
+_RIM = f"{WIRE_REACH!r}"
 _RAMP = "(1.15*(qmax_X + Abs(qmax_X))/2 + 0.5)"
 # The pulleys: end masses drawn at x = -W and W, W the scene's spacing d unless the run's vertical extent
 # is so large that the device would be a sliver in a tall frame; wheels of radius r = W/3 make every string
@@ -158,7 +160,8 @@ FAMILIES: dict[str, Family] = {
         caption=(
             "Lab frame, in three dimensions: the parabolic wire turns about the vertical axis (dashed) at the "
             "angular velocity ω and carries the bead round, with a fading trail behind it; the dashed circle is the "
-            "rim the wire sweeps. Drag the background to turn the view."
+            "rim the wire's ends sweep. A run that reaches an end of the wire ends there. Drag the background to "
+            "turn the view."
         ),
     ),
     "incline": Family(

@@ -23,7 +23,7 @@ from app.engine.trees import TreeError, maybe_of_text, of_text
 from app.limits import DEFAULT_T_END
 from app.numerics import limits
 from app.numerics.methods import LABELS
-from app.viz.control_ranges import separatrix_spec, ticks, useful_range
+from app.viz.control_ranges import held_span, separatrix_spec, ticks, useful_range
 from app.viz.diagrams import diagram
 from app.viz.exprtree import document_tree, leaves
 from app.viz.mechanism import mechanism
@@ -322,6 +322,10 @@ def _initial_controls(
         else:
             size = 3 * max(scale, abs(value))
             lo, hi = (0.0 if q in nonnegative or q in held else -size), size
+            # any other end of the set-up (the bead at an end of its finite wire, ρ² = R²) bounds the slider too
+            for e in events:
+                if e["expression"].strip() != q:
+                    lo, hi = held_span(doc, e["expression"], q, value, lo, hi)
         found = marks.get(f"{q}_dot", [])
         reach = max([abs(m["value"]) for m in found], default=0.0)
         vmax = max(10.0, 3 * abs(rate), 1.5 * reach) if angle else max(5.0, 3 * abs(rate), math.sqrt(9.81 * scale))

@@ -5,6 +5,7 @@
 import { HANDLE_LABEL, handleWordsBox, linePoints } from "./arrows.js";
 import { HANDLE_RADIUS } from "./drag.js";
 import { wheelsAt } from "./links.js";
+import { curveCover } from "./scenery.js";
 
 export const MASS_COLORS = ["#0b5cad", "#b34700", "#2e7d32", "#6a1b9a"];
 
@@ -59,6 +60,8 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
     const { a, b, nx, ny } = base, H = BLOCK_HEIGHT * dpr;
     outline([a, b, [b[0] + H * nx, b[1] + H * ny], [a[0] + H * nx, a[1] + H * ny]]);
   });
+  // the ground, walls and wires with the floor's hatching: each weighs as much as a label already placed
+  const covers = curveCover(player, i, dpr);
   const boxes = [];
   // the handle's words as wide as the page sets them (bold, 0.8 rem, with their padding)
   const font = ctx.font;
@@ -78,6 +81,7 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
       const n = Math.max(1, Math.ceil(Math.hypot(bx - ax, by - ay) / (2 * dpr)));
       for (let s = 0; s <= n; s++) if (inside(ax + ((bx - ax) * s) / n, ay + ((by - ay) * s) / n)) { c += 1; break; }
     }
+    for (const cover of covers) if (cover.points.some(([x, y]) => inside(x, y))) c += 5;
     for (const [bx, by] of placed) if (inside(bx, by) || inside(bx - 10 * dpr, by) || inside(bx + 10 * dpr, by)) c += 2;
     // labels already placed, and the velocity handle (drawn at the first instant), weigh most
     for (const [a0, b0, a1, b1] of boxes) if (x0 < a1 && x1 > a0 && y0 < b1 && y1 > b0) c += 5;

@@ -4,7 +4,7 @@
  * (later ones over earlier ones).
  *
  * For tests and tools it records what it drew: canvas.dataset.bodies (each body's label and position
- * in CSS pixels), canvas.dataset.drawn (counts, the slack string, forces, the run's event) and
+ * in CSS pixels), canvas.dataset.drawn (counts, the slack string, forces, the run's event, the solid curves' boxes) and
  * canvas.dataset.handle (the velocity handle's position in CSS pixels, "" when none is shown), canvas.dataset.wheels
  * (each wheel's centre and radius in CSS pixels at the first instant).  The
  * handle carries a label in the page ("drag: initial velocity", arrows.js labelHandle) until it is first held.
@@ -12,7 +12,7 @@
 import { drawForces, drawHandle, labelHandle } from "./arrows.js";
 import { drawBodies, drawFixed, drawLabels, drawTrails } from "./bodies.js";
 import { drawLinks, drawWheels, wheelsAt } from "./links.js";
-import { drawCurve, drawSolids, message, scaleBar } from "./scenery.js";
+import { curveCover, drawCurve, drawSolids, message, scaleBar } from "./scenery.js";
 
 export function drawFrame(player, i) {
   const canvas = player.canvas, ctx = player.ctx, dpr = window.devicePixelRatio || 1, run = player.run, spec = player.spec;
@@ -44,6 +44,12 @@ export function drawFrame(player, i) {
     drawn.event = event.name;
     message(ctx, canvas, dpr, `t = ${Number(event.t.toFixed(3))} s: ${event.message}`, 18 * dpr);
   }
+  // the solid curves' extents with their hatching, CSS pixels: [left, top, right, bottom] by label
+  drawn.curves = curveCover(player, i, dpr).filter((c) => c.points.length).map(({ label, points }) => ({
+    label,
+    box: [Math.min(...points.map((p) => p[0])), Math.min(...points.map((p) => p[1])),
+      Math.max(...points.map((p) => p[0])), Math.max(...points.map((p) => p[1]))].map((v) => Math.round(v / dpr)),
+  }));
   canvas.dataset.bodies = JSON.stringify(bodies);
   canvas.dataset.drawn = JSON.stringify(drawn);
   const handle = i === 0 ? player.drag.handle() : null;

@@ -18,13 +18,55 @@ export function drawSolids(player, ctx, i, dpr) {
   return drawn;
 }
 
+/** A curve's points on screen (device pixels) at the columns ``cols``. */
+const screenPoints = (camera, cols) =>
+  Array.from(cols[0], (_, k) => camera.screenOf([cols[0][k], cols[1][k], cols[2] ? cols[2][k] : 0]));
+
+/** The short slanted hatches of the ground, a ceiling or a wall on the side away from the motion: each [[x, y], [x, y]]
+ * in device pixels ([] for a wire or a guide). */
+function hatches(style, pts, dpr) {
+  const away = { ground: [-1, 1], ceiling: [1, -1], "wall-left": [-1, 1], "wall-right": [1, 1] }[style];
+  if (!away || !pts.length) return [];
+  const [x0, y0] = pts[0], [x1, y1] = pts[pts.length - 1], len = Math.hypot(x1 - x0, y1 - y0);
+  if (!(len > 0)) return [];
+  const gap = 10 * dpr, h = 7 * dpr, count = Math.floor(len / gap), vertical = style.startsWith("wall");
+  const out = [];
+  for (let k = 0; k <= count; k++) {
+    const x = x0 + ((x1 - x0) * k) / count, y = y0 + ((y1 - y0) * k) / count;
+    out.push([[x, y], [x + (vertical ? away[0] * h : away[0] * h * 0.7), y + (vertical ? away[1] * h * 0.7 : away[1] * h)]]);
+  }
+  return out;
+}
+
+/**
+ * What the solid curves (the ground, a ceiling, walls, wires: not the dashed guides) cover on screen at instant i:
+ * per curve, its label and its points about 2 device pixels apart with the ends of its hatches, so that a body's
+ * label (bodies.js) keeps off them — the coupled oscillators' "left mass" sat on the floor's hatching (prof-m 10).
+ */
+export function curveCover(player, i, dpr) {
+  const out = [];
+  for (const c of player.curveCols || []) {
+    if (c.style === "guide") continue;
+    const pts = screenPoints(player.camera, c.moving ? c.at(player.run.envAt(i)) : c.cols);
+    const cover = [];
+    pts.forEach(([x, y], k) => {
+      if (!Number.isFinite(x) || !Number.isFinite(y)) return;
+      const [px, py] = k ? pts[k - 1] : [x, y];
+      const n = Number.isFinite(px) && Number.isFinite(py) ? Math.max(1, Math.ceil(Math.hypot(x - px, y - py) / (2 * dpr))) : 1;
+      for (let s = 1; s <= n; s++) cover.push([px + ((x - px) * s) / n, py + ((y - py) * s) / n]);
+    });
+    for (const [, end] of hatches(c.style, pts, dpr)) cover.push(end);
+    out.push({ label: c.label, points: cover });
+  }
+  return out;
+}
+
 export function drawCurve(camera, ctx, c, cols, dpr) {
   const style = c.style;
   ctx.strokeStyle = style === "guide" ? "#8c959f" : "#4b535c";
   ctx.lineWidth = (style === "guide" ? 1.5 : 2.5) * dpr;
   ctx.setLineDash(style === "guide" ? [4 * dpr, 4 * dpr] : []);
-  const pts = [];
-  for (let k = 0; k < cols[0].length; k++) pts.push(camera.screenOf([cols[0][k], cols[1][k], cols[2] ? cols[2][k] : 0]));
+  const pts = screenPoints(camera, cols);
   ctx.beginPath();
   let pen = false;
   for (const [x, y] of pts) {
@@ -35,19 +77,11 @@ export function drawCurve(camera, ctx, c, cols, dpr) {
   ctx.stroke();
   ctx.setLineDash([]);
   // the ground, a ceiling or a wall: short slanted hatches on the side away from the motion
-  const away = { ground: [-1, 1], ceiling: [1, -1], "wall-left": [-1, 1], "wall-right": [1, 1] }[style];
-  if (!away) return;
-  const [x0, y0] = pts[0], [x1, y1] = pts[pts.length - 1], len = Math.hypot(x1 - x0, y1 - y0);
-  if (!(len > 0)) return;
-  const gap = 10 * dpr, h = 7 * dpr, count = Math.floor(len / gap);
+  const marks = hatches(style, pts, dpr);
+  if (!marks.length) return;
   ctx.lineWidth = 1.2 * dpr; ctx.strokeStyle = "#8c959f";
   ctx.beginPath();
-  for (let k = 0; k <= count; k++) {
-    const x = x0 + ((x1 - x0) * k) / count, y = y0 + ((y1 - y0) * k) / count;
-    const vertical = style.startsWith("wall");
-    ctx.moveTo(x, y);
-    ctx.lineTo(x + (vertical ? away[0] * h : away[0] * h * 0.7), y + (vertical ? away[1] * h * 0.7 : away[1] * h));
-  }
+  for (const [[x, y], [u, v]] of marks) { ctx.moveTo(x, y); ctx.lineTo(u, v); }
   ctx.stroke();
 }
 

@@ -199,3 +199,72 @@ def test_the_block_lies_on_its_slope_at_both_sizes(browser, live_server, artifac
         canvas.screenshot(path=artifacts / f"slope-{scene_id}-{name}-{width}.png")
     finally:
         context.close()
+
+
+@pytest.mark.parametrize(("width", "height"), [(1366, 768), (390, 844)])
+def test_the_bead_flung_off_the_turning_wire_ends_the_run_at_its_end(browser, live_server, artifacts, width, height):
+    # prof-m 8: at ω = 8 rad/s (past √(2gα) = 4.43 rad/s) the bead runs out along the wire; the view rescaled to
+    # a 1000 m-tall sliver. The run ends where the bead reaches the wire's end, and the view keeps the wire's scale.
+    context = browser.new_context(base_url=live_server, viewport={"width": width, "height": height})
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    try:
+        page.goto("/scenes/rotating-parabola")
+        page.wait_for_selector(READY, state="attached")
+        canvas = page.locator("[data-panel^=animation] canvas")
+        (start,) = json.loads(canvas.get_attribute("data-bodies"))
+        painted_events(page)
+        page.fill("#ctl-omega", "8")
+        page.dispatch_event("#ctl-omega", "input")
+        page.wait_for_function("window.painted.includes('server')")
+        page.wait_for_selector(READY, state="attached")
+        assert "At t = 0.5073 s: The bead reached the end of the wire; the run ends there." in page.inner_text(
+            "#run-status .warnings"
+        )
+        # the same start drawn at the same place: the drawing's scale is the wire's, not the run's
+        (again,) = json.loads(canvas.get_attribute("data-bodies"))
+        assert (again["x"], again["y"]) == pytest.approx((start["x"], start["y"]), abs=1)
+        to_end(page)
+        drawn = page.evaluate(DRAWN)
+        assert drawn["event"] == "end of the wire"
+        readout = page.inner_text("[data-panel^=animation] output.time")
+        assert readout.startswith("t = 0.51 s") and float(readout.split("ρ = ")[1].split()[0]) == pytest.approx(1.0)
+        (end,) = json.loads(canvas.get_attribute("data-bodies"))
+        box = canvas.bounding_box()
+        # at the wire's end the bead is inside the canvas, and well away from where it started near the bottom
+        assert 0 <= end["x"] <= box["width"] and 0 <= end["y"] <= box["height"]
+        assert math.hypot(end["x"] - start["x"], end["y"] - start["y"]) >= 0.2 * min(box["width"], box["height"])
+        canvas.screenshot(path=artifacts / f"wire-end-{width}.png")
+    finally:
+        context.close()
+
+
+@pytest.mark.parametrize(("width", "height"), [(1366, 768), (390, 844)])
+def test_the_masses_labels_keep_off_the_floor_and_the_walls(browser, live_server, artifacts, width, height):
+    # prof-m 10: "left mass" sat on the floor's hatching; a label goes where it covers no ground, wall or wire
+    context = browser.new_context(base_url=live_server, viewport={"width": width, "height": height})
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    try:
+        page.goto("/scenes/coupled-oscillators")
+        page.wait_for_selector(READY, state="attached")
+        canvas = page.locator("[data-panel^=animation] canvas")
+        for frame in ("0", "Math.floor(s.max / 3)", "s.max"):
+            page.evaluate(
+                f"() => {{ const s = document.querySelector('input.scrub'); s.value = {frame}; s.dispatchEvent(new Event('input')); }}"
+            )
+            page.wait_for_timeout(100)
+            drawn = page.evaluate(DRAWN)
+            labels = json.loads(canvas.get_attribute("data-labels"))
+            curves = {c["label"]: c["box"] for c in drawn["curves"]}
+            assert set(curves) == {"floor", "left wall", "right wall"}
+            assert curves["floor"][3] - curves["floor"][1] >= 5  # the floor's line and the hatching below it
+            assert {lb["label"] for lb in labels} == {"left mass", "right mass"}
+            for lb in labels:
+                x0, y0, x1, y1 = lb["box"]
+                for name, (a0, b0, a1, b1) in curves.items():
+                    assert x1 < a0 or x0 > a1 or y1 < b0 or y0 > b1, (frame, lb, name, (a0, b0, a1, b1))
+            if frame == "0":
+                canvas.screenshot(path=artifacts / f"coupled-labels-{width}.png")
+    finally:
+        context.close()

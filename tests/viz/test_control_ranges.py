@@ -5,6 +5,7 @@ import math
 import pytest
 
 from app.scenes import SCENES
+from app.scenes.beads import WIRE_REACH
 from app.service.derivations import derivation_document
 from app.viz.control_ranges import useful_range
 from app.web.pages import page_model
@@ -33,6 +34,15 @@ def test_the_rotating_wire_marks_where_the_bottom_turns_unstable():
     w2 = derivation_document("rotating-parabola")["effective_potential"]["equilibria"][0]["omega_squared"]
     assert w2["latex"] == r"2 g \alpha - \omega^{2}" and w2["unicode"] == "2gα − ω²"
     assert omega["ticks"][0]["label"] == "2gα − ω² = 0: ρ = 0 changes stability"
+
+
+def test_the_start_on_the_turning_wire_is_between_its_ends():
+    # the set-up ends where ρ² reaches WIRE_REACH²: a start beyond an end of the wire is not on the wire
+    rho = control("rotating-parabola", "rho")
+    assert (float(rho["min"]), float(rho["max"])) == (-WIRE_REACH, WIRE_REACH)
+    assert rho["allowed"] == "−1 to 1 m"
+    # the foot of the ramp (X ≥ 0) still opens the incline's slider at 0
+    assert float(control("incline-block", "X")["min"]) == 0
 
 
 def test_the_pendulums_rate_marks_the_separatrix():

@@ -7,6 +7,7 @@ import sympy as sp
 
 from app.engine.trees import of_sympy
 from app.scenes import SCENES
+from app.scenes.beads import WIRE_REACH
 from app.viz.exprtree import evaluate
 from app.viz.mechanism import FAMILIES, mechanism
 
@@ -77,6 +78,17 @@ def test_rotating_parabola_is_drawn_turning_in_the_lab_frame():
     x0, y0, _ = at(spec, 0, env)
     x1, y1, _ = at(spec, 0, quarter)
     assert (x0, y0) == pytest.approx((0.5, 0.0)) and (x1, y1) == pytest.approx((0.0, 0.5), abs=1e-12)
+
+
+@pytest.mark.parametrize("reach", [0.2, 32.0])
+def test_the_turning_wire_is_drawn_to_its_ends_however_far_the_run_goes(reach):
+    # prof-m 8: a bead flung out to ρ = 32 m drew a 1000 m-tall wire; the wire is drawn to its ends, ρ = ±1 m
+    spec = spec_of("rotating-parabola")
+    env = env_of("rotating-parabola") | {"qmin_rho": -reach, "qmax_rho": reach}
+    wire = next(c for c in spec["curves"] if c["label"] == "wire")
+    assert (evaluate(wire["from"], env), evaluate(wire["to"], env)) == (-WIRE_REACH, WIRE_REACH)
+    rim = next(c for c in spec["curves"] if c["label"] == "rim")
+    assert evaluate(rim["xyz"][2], env | {"s": 0.0}) == pytest.approx(env["alpha"] * WIRE_REACH**2)
 
 
 def test_constraint_forces_become_arrows_on_their_particle():

@@ -5,6 +5,7 @@ import pytest
 from app.numerics import limits
 from app.numerics.methods import STIFF
 from app.scenes import SCENES
+from app.scenes.beads import WIRE_REACH
 from app.service import work_precision
 from app.service.answers import Answers
 from app.service.simulation import Gates
@@ -110,9 +111,28 @@ def test_the_incline_run_ends_at_the_foot_of_the_ramp(client):
     assert other["stats"]["event"] is None
 
 
-def test_runaway_stops_with_a_message(client):
-    body = {"initial": {"rho": 0.5}, "parameters": {"omega": 10.0}, "t_end": 1000, "samples": 500}
+def test_the_bead_flung_out_leaves_the_wire_at_its_end(client):
+    # ω = 8 rad/s > √(2gα) = 4.43 rad/s: the bead runs outward and the run ends at the wire's end, ρ = 1 m
+    body = {"initial": {"rho": 0.15, "rho_dot": 0.0}, "parameters": {"omega": 8.0}}
     doc = client.post("/api/scenes/rotating-parabola/simulate", json=body).json()
+    event = doc["stats"]["event"]
+    assert event["name"] == "end of the wire" and event["message"].startswith("The bead reached the end of the wire")
+    assert doc["t"][-1] == event["t"] == pytest.approx(0.5073, abs=1e-4)
+    assert doc["state"]["rho"][-1] == pytest.approx(WIRE_REACH, abs=1e-6) and max(doc["state"]["rho"]) <= WIRE_REACH + 1e-9
+    # on the other branch the same, at ρ = −1 m
+    body["initial"]["rho"] = -0.15
+    doc = client.post("/api/scenes/rotating-parabola/simulate", json=body).json()
+    assert doc["stats"]["event"]["name"] == "end of the wire" and doc["state"]["rho"][-1] == pytest.approx(-WIRE_REACH, abs=1e-6)
+    # below the critical rate the bead swings about the bottom and stays on the wire for the whole run
+    body = {"initial": {"rho": 0.15, "rho_dot": 0.0}, "parameters": {"omega": 4.0}}
+    assert client.post("/api/scenes/rotating-parabola/simulate", json=body).json()["stats"]["event"] is None
+
+
+def test_runaway_stops_with_a_message(client):
+    # an inverted oscillator, ẍ = x: x grows as e^t with nothing to end it
+    body = {"coordinates": ["x"], "parameters": [], "lagrangian": "x_dot**2/2 + x**2/2", "initial": {"x": 0.5},
+            "t_end": 1000, "samples": 500}  # fmt: skip
+    doc = client.post("/api/simulate", json=body).json()
     assert doc["stats"]["complete"] is False and doc["stats"]["t_end_reached"] < 1000
     assert len(doc["t"]) < 500 and any("ran away" in w for w in doc["stats"]["warnings"])
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 import string
 import unicodedata
 
-from app.engine.names import GREEK
+from app.engine.names import GREEK, latex
 
 # CommonMark lets any ASCII punctuation be escaped with a backslash; escaping all of it
 # leaves no emphasis, link, HTML tag, heading, list, table or math ($) to open.
@@ -64,9 +64,10 @@ _LATEX_TEXT = {"–": "--", "—": "---", "‘": "`", "’": "'", "“": "``", "
 _SUPERSCRIPTS = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹", "0123456789", strict=True))
 _SUBSCRIPTS = dict(zip("₀₁₂₃₄₅₆₇₈₉", "0123456789", strict=True))
 _ACCENTS = {"\u0307": "dot", "\u0308": "ddot", "\u0302": "hat", "\u0303": "tilde", "\u0304": "bar"}
-# A Greek letter as a math command, from the one table of names (θ -> \theta); the letters with
+# A Greek letter as the math command the equations print it with, from the one table of names (θ -> \theta,
+# and φ -> \varphi: the prose's φ is the equations' one letter, never the closed \phi); the letters with
 # no command are written as the Latin letters they look like (Α -> A, ο -> o), ς as \varsigma.
-_GREEK_MATH = {char: "\\" + name for name, char in GREEK.items()}
+_GREEK_MATH = {char: latex(name) for name, char in GREEK.items()}
 _GREEK_MATH |= dict(zip("ΑΒΕΖΗΙΚΜΝΟΡΤΧο", "ABEZHIKMNOPTXo", strict=True)) | {"ς": r"\varsigma"}
 
 

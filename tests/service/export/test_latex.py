@@ -33,6 +33,13 @@ def test_a_whole_document_with_every_step_in_align():
     assert "\\section*{Errata: where the chapter goes wrong}" in tex
 
 
+def test_the_prose_and_the_equations_print_the_azimuth_as_one_letter():
+    # the spherical pendulum's azimuth φ: the equations print \varphi, and so must the prose around them
+    tex = exported("spherical-pendulum", "tex")
+    assert "\\varphi" in tex
+    assert re.search(r"\\phi(?![A-Za-z])", tex) is None
+
+
 def test_typed_prose_is_escaped():
     tex = exported("hostile", "tex")
     for text in ("\\input{", "\\write18", "\\def", "$$\\begin", "<script>"):

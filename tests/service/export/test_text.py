@@ -25,3 +25,5 @@ def test_latex_escapes_specials_and_writes_the_unicode_of_the_prose_as_math():
     assert latex_text("θ̇ and x₁, sin² + cos² = 1") == r"$\dot{\theta}$ and x$_{1}$, sin$^{2}$ + cos$^{2}$ = 1"
     assert latex_text("Ω, Α, λ, é, 😀") == r"$\Omega$, $A$, $\lambda$, e, ?"
     assert latex_text("a\nb — c") == "a b --- c"
+    # the prose's φ is the letter the equations print, \varphi; the closed ϕ stays \phi
+    assert latex_text("φ̇ and ϕ") == r"$\dot{\varphi}$ and $\phi$"
