@@ -190,7 +190,7 @@ export function handleWordsBox(grip, wide, canvas, placed, dpr, lines = [], wide
     const [bx, by] = placed[own], n = Math.max(1, Math.ceil(Math.hypot(grip.x - bx, grip.y - by) / (4 * dpr)));
     for (let k = 0; k <= n; k++) arrow.push([bx + ((grip.x - bx) * k) / n, by + ((grip.y - by) * k) / n]);
   }
-  const place = (wide, high, ownRoom) => {
+  const place = (wide, high, ownRoom, reachPx = HANDLE_WORDS_REACH) => {
     const right = grip.x + gap, left = grip.x - gap - wide;
     const above = grip.y - high - 2 * dpr, below = grip.y + (HANDLE_RADIUS + 4) * dpr;
     const inside = (x0, y0) => x0 >= 0 && x0 + wide <= canvas.width && y0 >= 0 && y0 + high <= canvas.height;
@@ -212,7 +212,7 @@ export function handleWordsBox(grip, wide, canvas, placed, dpr, lines = [], wide
     const found = room.find(([x, y]) => uncrossed(x, y));
     if (found) return { spot: found, room };
     // then every place around the handle, 4 px apart and flush with the canvas's edges, nearest first
-    const reach = HANDLE_WORDS_REACH * dpr, step = 4 * dpr, near = [];
+    const reach = reachPx * dpr, step = (reachPx > HANDLE_WORDS_REACH ? 6 : 4) * dpr, near = [];
     const range = (lo, hi, edge) => {
       const out = [0, edge];
       for (let v = lo; v <= hi; v += step) out.push(v);
@@ -233,12 +233,15 @@ export function handleWordsBox(grip, wide, canvas, placed, dpr, lines = [], wide
   const high = HANDLE_WORDS_HIGH * dpr, high2 = HANDLE_WORDS_TWO_LINES * dpr;
   const rooms = placed.length > 1 ? [LABEL_ROOM * dpr, clear] : [clear];
   let one = null;
-  for (const ownRoom of rooms) {
-    const first = place(wide, high, ownRoom);
-    one ??= ownRoom === clear ? first : null;
-    if (first.spot) return Object.assign([...first.spot, first.spot[0] + wide, first.spot[1] + high], { lines: 1 });
-    const two = wide2 > 0 ? place(wide2, high2, ownRoom) : { spot: null };
-    if (two.spot) return Object.assign([...two.spot, two.spot[0] + wide2, two.spot[1] + high2], { lines: 2 });
+  // nearer the handle first; then twice as far (a handle inside a wedge on a wide screen: its slope is further off)
+  for (const reach of [HANDLE_WORDS_REACH, 2 * HANDLE_WORDS_REACH]) {
+    for (const ownRoom of rooms) {
+      const first = place(wide, high, ownRoom, reach);
+      one ??= ownRoom === clear ? first : null;
+      if (first.spot) return Object.assign([...first.spot, first.spot[0] + wide, first.spot[1] + high], { lines: 1 });
+      const two = wide2 > 0 ? place(wide2, high2, ownRoom, reach) : { spot: null };
+      if (two.spot) return Object.assign([...two.spot, two.spot[0] + wide2, two.spot[1] + high2], { lines: 2 });
+    }
   }
   // of the places clear of the bodies, the one that covers the fewest points of lines and wheels (the first such in
   // the order above), never simply the first
