@@ -45,14 +45,16 @@ def kinetic_focus_possible(d: Derivation) -> bool:
 
 def action_step(d: Derivation) -> dict[str, str]:
     forced = any(Q != 0 for Q in d.mechanics.Q)
+    # the condition on the variations is one group (in braces): a narrow page breaks before its "with", never
+    # inside it, so no "0" is left alone on a line (prof-l 7)
+    ends = r"\text{ with } {\delta q(t_0) = \delta q(t_1) = 0}"
     rows = [
         r"S[q] = \int_{t_0}^{t_1} L(q, \dot q, t)\,dt",
-        r"\delta S = 0 \quad \text{for every } \delta q \text{ with } \delta q(t_0) = \delta q(t_1) = 0"
+        rf"\delta S = 0 \quad \text{{for every }} \delta q {ends}"
         if not forced
         # with forces Q the variation of S is minus their work; written δS = −∫ Q·δq dt, both rows start with
         # their left side and their = signs line up (prof-c S12)
-        else r"\delta S = -\int_{t_0}^{t_1} Q\cdot\delta q\,dt \quad \text{for every } \delta q "
-        r"\text{ with } \delta q(t_0) = \delta q(t_1) = 0",
+        else rf"\delta S = -\int_{{t_0}}^{{t_1}} Q\cdot\delta q\,dt \quad \text{{for every }} \delta q {ends}",
     ]
     latex = r"\begin{aligned}" + r" \\ ".join(row.replace(" = ", " &= ", 1) for row in rows) + r"\end{aligned}"
     focus = (

@@ -21,7 +21,7 @@ from app.engine.action_step import KEY as ACTION_KEY
 from app.engine.action_step import action_step
 from app.engine.bodies import BodyMotion
 from app.engine.breaking import broken, broken_row, single
-from app.engine.budget import memoized, pythagoras, unbudgeted
+from app.engine.budget import is_zero, memoized, pythagoras, unbudgeted
 from app.engine.derive import Derivation
 from app.engine.forms import one_denominator, settle, textbook_form, use_names
 from app.engine.names import unicode
@@ -650,6 +650,49 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     return steps
 
 
+def _effective_potential_why(d: Derivation) -> str:
+    """Where U_eff comes from, in words, by case: cyclic coordinates held at their momenta, a moving constraint
+    (a part T₀ of T without velocities), both, or neither (the bead on a spun hoop has no cyclic coordinate:
+    its U_eff is U − T₀, prof-l 5)."""
+    red = d.reduction
+    assert red is not None
+    mech, table = d.mechanics, d.table
+    name = unicode(red.coordinate)
+    moves = f"{name} moves like a particle of mass m_eff in the potential U_eff."
+    held = "each conserved momentum held at its value, the cyclic velocities eliminated"
+    if mech.T is None:
+        # only L was given: T₀ and U cannot be told apart, U_eff is −L at q̇ = 0 (with the momenta held)
+        if red.momenta:
+            return f"With {held}, {moves}"
+        return f"U_eff is −L with {name}\u0307 = 0, and {moves}"
+    # T₀ = T at every velocity zero: the part of T a moving constraint (or a rotating frame) leaves without
+    # velocities; it enters L = T − U with U's opposite sign, so U_eff = U − T₀ (plus the momenta's part)
+    t0 = mech.T.xreplace(dict.fromkeys(table.qd, sp.Integer(0)))
+    moving = not is_zero(t0)
+    t = table.t
+    if any(c.has(t) for r in mech.positions for c in r):
+        source = "the moving constraint (the positions contain t)"
+    else:
+        source = "the part of T without velocities as written (a moving constraint's or a rotating frame's)"
+    if red.momenta and moving:
+        return (
+            f"With {held}, and the part T₀ of T without velocities from {source} counted with U "
+            f"(it enters L = T − U with the opposite sign), {moves}"
+        )
+    if red.momenta:
+        return f"With {held}, {moves}"
+    if moving:
+        return (
+            f"No coordinate is cyclic here: U_eff comes from {source}, which leaves a part T₀ of T without "
+            f"velocities. T₀ enters L = T − U with the sign opposite to U's, so U_eff = −L at {name}\u0307 = 0 "
+            f"is U − T₀, and {moves}"
+        )
+    return (
+        f"One coordinate on fixed constraints: U_eff is the potential energy U itself and m_eff the coefficient "
+        f"of ½{name}\u0307² in T, so {moves}"
+    )
+
+
 def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
     red = d.reduction
     assert red is not None
@@ -685,8 +728,7 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
                 rf"m_\text{{eff}} = {pr.tex(red.effective_mass)}",
             ],
             [effective_potential(d), red.effective_mass],
-            "With the cyclic motion folded in, the remaining coordinate moves like a particle of mass m_eff in the "
-            "potential U_eff.",
+            _effective_potential_why(d),
         )
     )
     out.append(

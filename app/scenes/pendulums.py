@@ -8,7 +8,7 @@ MASS = Parameter("m", 1.0, "kg", 0.01, 100.0, "mass of the bob")
 # the spherical pendulum's statement speaks of a ball
 BALL = Parameter("m", 1.0, "kg", 0.01, 100.0, "mass of the ball")
 LENGTH = Parameter("R", 1.0, "m", 0.05, 100.0, "length of the string")
-DAMPING = Parameter("b", 0.3, "kg·m²/s", 0.0, 100.0, "damping coefficient: the generalized drag force is Q_θ = −b θ̇")
+DAMPING = Parameter("b", 0.3, "kg·m²/s", 0.0, 100.0, "damping coefficient: the drag's torque about the pivot is −b θ̇")
 
 # The bob of the planar pendulums: x horizontal, z vertical, origin at the lowest point of the swing.
 PLANAR_BOB = Particle("m", ("R*sin(theta)", "0", "R - R*cos(theta)"), "bob")
@@ -165,13 +165,18 @@ DAMPED_PENDULUM = Scene(
     summary="A force no potential describes enters as a generalized force Q and drains the energy.",
     statement=(
         "The simple pendulum again (bob of mass m, string of length R, θ from the bottom), now slowed by a drag "
-        "force −(b/R²) v that opposes the bob's velocity v in proportion to it. Drag has no potential energy, "
-        "so it cannot sit in L; projected on the coordinate it becomes the generalized force Q_θ = −b θ̇ on the "
-        "right-hand side of the Euler–Lagrange equation. Find the equation of motion and the rate at which the "
+        "whose torque about the pivot is −b θ̇: it opposes the swing in proportion to its rate, as friction in "
+        "the pivot's bearing does. The constant b belongs to the pendulum and stays the same when R changes (air "
+        "drag −c v on the bob alone would give b = c R²). On the bob the same torque is a force of magnitude "
+        "(b/R) |θ̇| along the path, against the motion. Drag has no potential energy, so it cannot sit in L; "
+        "its torque is the generalized force Q_θ = −b θ̇ on the right-hand side of the Euler–Lagrange equation. Find the equation of motion and the rate at which the "
         "energy decays. As for the simple pendulum, heights are measured upward from the lowest point, where "
         "U = 0."
     ),
-    figure="The simple pendulum's pivot, string and bob, with an arrow along the path opposing the bob's motion for the drag.",
+    figure=(
+        "The simple pendulum's pivot, string and bob moving with velocity v, and the drag on the bob: an arrow along "
+        "the path against v, labelled with its magnitude."
+    ),
     system=System(
         coordinates=("theta",),
         parameters=(MASS, GRAVITY, LENGTH, DAMPING),

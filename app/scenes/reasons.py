@@ -81,7 +81,7 @@ DAMPED_PENDULUM: dict[str, str] = {
     "potential": "Gravity alone has a potential, m g R (1 − cos θ); the drag has none.",
     "lagrangian": "The same L as without drag: the drag cannot be written into it.",
     "derivatives:theta": "The same derivatives as the simple pendulum: torque −m g R sin θ and angular momentum m R² θ̇.",
-    "generalized-forces": "Projected on θ the drag −(b/R²) v becomes Q_θ = −b θ̇, opposing the swing.",
+    "generalized-forces": "The drag's torque about the pivot is the generalized force on θ: Q_θ = −b θ̇, opposing the swing.",
     "euler-lagrange": "The drag adds (b/(m R²)) θ̇ to the pendulum's equation: a damping term.",
     "mass-matrix": "𝓜 = m R² as before; the forcing f now includes the drag −b θ̇.",
     "accelerations": "θ̈ = −(g/R) sin θ − (b/(m R²)) θ̇: gravity restores, drag slows.",

@@ -44,11 +44,16 @@ def pendulum(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()
     svg.text(bx + 24, by + 4, "m", PARAM)
     _gravity(svg, 40, 150)
     if "drag" in marks:
-        # the damping force acts along the path, against the velocity: drawn pointing back toward the bottom
-        tx, ty = -math.cos(theta), math.sin(theta)
+        # the bob drawn swinging outward (θ̇ > 0): its velocity v along +θ̂ = (cos θ, −sin θ) on the page (y down)
+        vx, vy = math.cos(theta), -math.sin(theta)
+        svg.arrow(bx + 16 * vx, by + 16 * vy, bx + 44 * vx, by + 44 * vy)
+        svg.text(bx + 44 * vx + 10, by + 44 * vy + 2, "v", INK, 15)
+        # the drag acts along the path against v, pointing back toward the bottom
+        tx, ty = -vx, -vy
         svg.arrow(bx + 16 * tx, by + 16 * ty, bx + 52 * tx, by + 52 * ty, color=PARAM)
-        # the force on the bob: Q_θ = −b θ̇ is its torque about the pivot, so the force along the path is −(b/R) θ̇
-        svg.text(bx + 40 * tx + 6, by + 40 * ty + 18, "−(b/R) θ̇", PARAM, 14, anchor="start")
+        # labelled with its magnitude, the arrow giving the direction: a torque −b θ̇ about the pivot is, on the
+        # bob at distance R, a force b |θ̇| / R along the path
+        svg.text(bx + 40 * tx + 6, by + 40 * ty + 18, "(b/R) |θ̇|", PARAM, 14, anchor="start")
     return svg
 
 

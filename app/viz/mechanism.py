@@ -370,7 +370,13 @@ def _inferred(
     pivot = any(a is None for a, _, _ in found) or bool(coiled)
     what = "the particles as declared"
     if found:
-        what += ", the rods that keep their distances fixed" + (" and the fixed pivot" if pivot else "")
+        # the positions prove a distance fixed, not what holds it: a rod, a taut string or a hoop the bead rides
+        # on are the same to the equations, and one particle at a fixed distance from a point may sweep a whole
+        # sphere, so the drawing shows the distance (a rod) and the caption says so (prof-l 5)
+        what += (
+            ", each distance that stays fixed drawn as a rod (whatever holds it there: a rod, a taut string, "
+            "or a hoop the bead rides on)" + (" and the fixed pivot" if pivot else "")
+        )
     if coiled:
         what += f", the spring{'s' if len(coiled) > 1 else ''} from the fixed pivot (its length is {', '.join(q for _, q in coiled)})"
     view = "in three dimensions; drag the background to turn the view" if dim == 3 else _view_name(axes)

@@ -1,7 +1,11 @@
 /**
  * action-verdict.js — what the action panel says after Relax, in sentences, from the server's answer.
  *
- *   verdict(answer, { q, label, unit, rateUnit, T, steps }) -> { found, text, advice: [codes] }
+ *   verdict(answer, { q, label, unit, rateUnit, T, steps }) -> { found, text, method, advice: [codes] }
+ *
+ * ``text`` leads with what a student needs (how close the relaxed path is to the true motion); a found path's
+ * ``method`` is the account of how that was computed (Newton's steps, the grid, shooting), which the panel puts
+ * behind a disclosure.
  *
  * The server (POST .../action/relax) decides whether the relaxed path is the true one: Newton's method
  * solved the discrete Euler–Lagrange equations on both grids, the grid resolves the path, and the
@@ -48,10 +52,14 @@ export function verdict(f, { q, label, unit, rateUnit, T, steps: gridSteps, star
     const what = f.kind === "minimum"
       ? "It is a minimum of the discrete action: every small change of the path raises S."
       : `It is a saddle of the discrete action, not a minimum: ${f.negative_directions} direction${f.negative_directions > 1 ? "s" : ""} of change lower${f.negative_directions > 1 ? "" : "s"} S, because τ = ${fmt(T)} s is past the kinetic focus.`;
-    const text = `Newton's method made the discrete action stationary in ${newton} step${newton === 1 ? "" : "s"}, and the path it found is the path of a true motion between these ends. `
-      + `The shooting solution (${start}) runs along it to within ${bound(f.difference, unit)}; `
-      + `halving the time step of the ${gridSteps}-step grid moves the path by at most ${bound(3 * f.error_estimate, unit)}, and the extrapolated path shown is closer still. ${what}`;
-    return { found: true, text: text + several(f, { q, label, rateUnit, T, startRate, sameEnds }), advice: [] };
+    // what a second-year needs first (prof-l 8): how close the relaxed path is to the true motion, the shooting
+    // solution's distance from it (the panel's own number), and what kind of stationary point it is
+    const text = `The relaxed path agrees with the true motion to within ${bound(f.difference, unit)}: it is the path of a true motion between these ends, ${start}. ${what}`;
+    // the method's account, behind "How this was computed"
+    const method = `Newton's method made the discrete action stationary in ${newton} step${newton === 1 ? "" : "s"} on a ${gridSteps}-step time grid. `
+      + `The true motion between the same ends comes from shooting (the starting rate adjusted until the run ends at the end point): the shooting solution runs along the relaxed path to within ${bound(f.difference, unit)}. `
+      + `Halving the time step of the grid moves the path by at most ${bound(3 * f.error_estimate, unit)}, and the extrapolated path shown is closer still.`;
+    return { found: true, text: text + several(f, { q, label, rateUnit, T, startRate, sameEnds }), method, advice: [] };
   }
   const why = [];
   if (f.reasons.includes("not-stationary")) {
@@ -69,5 +77,5 @@ export function verdict(f, { q, label, unit, rateUnit, T, steps: gridSteps, star
   }
   const tips = f.advice.map((a) => ADVICE[a]).filter(Boolean);
   const todo = tips.length ? ` To find it: ${tips.length > 1 ? `${tips.slice(0, -1).join(", ")}, or ${tips[tips.length - 1]}` : tips[0]}.` : "";
-  return { found: false, text: `The path was not found. ${why.join(" ")}${todo}`, advice: f.advice };
+  return { found: false, text: `The path was not found. ${why.join(" ")}${todo}`, method: "", advice: f.advice };
 }

@@ -50,6 +50,18 @@ export class ActionPanel {
     this.section = section; this.data = data;
     this.plot = section.querySelector(".plot");
     this.readout = proseReadout(section.querySelector(".readout"));
+    // how a found path was computed (Newton's steps, the grid, shooting), behind a disclosure under the readout's
+    // lead (prof-l 8); any other sentence in the readout hides it
+    this.method = Object.assign(document.createElement("details"), { className: "action-method", hidden: true });
+    this.method.append(Object.assign(document.createElement("summary"), { textContent: "How this was computed" }));
+    this.methodText = proseReadout(this.method.appendChild(document.createElement("p")));
+    this.readout.after(this.method);
+    const prose = Object.getOwnPropertyDescriptor(this.readout, "textContent");
+    Object.defineProperty(this.readout, "textContent", {
+      configurable: true,
+      get: prose.get,
+      set: (value) => { prose.set.call(this.readout, value); this.method.hidden = true; },
+    });
     this.summary = section.querySelector(".data-summary .table");
     this.preview = true;
     const sim = section.closest("#simulation") || document.getElementById("simulation");
@@ -564,6 +576,10 @@ export class ActionPanel {
     this.section.dataset.relaxed = said.found ? f.kind : "not-found";
     this.shootButton.hidden = !said.advice.includes("from-shooting");
     this.readout.textContent = said.text;
+    if (said.method) {
+      this.methodText.textContent = said.method;
+      this.method.hidden = false;
+    }
   }
 
   cursor() {}

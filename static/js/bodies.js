@@ -2,7 +2,7 @@
  * bodies.js — a mechanism's bodies drawn on the canvas (animation.js): fading trails, fixed points,
  * the moving bodies (balls, or blocks on their slope) and their labels, placed where they hide least.
  */
-import { HANDLE_LABEL, handleWordsBox, linePoints } from "./arrows.js";
+import { HANDLE_LABEL, handleWordsBox, handleWordsWidths, linePoints } from "./arrows.js";
 import { HANDLE_RADIUS } from "./drag.js";
 import { wheelsAt } from "./links.js";
 import { curveCover } from "./scenery.js";
@@ -63,12 +63,9 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
   // the ground, walls and wires with the floor's hatching: each weighs as much as a label already placed
   const covers = curveCover(player, i, dpr);
   const boxes = [];
-  // the handle's words as wide as the page sets them (bold, 0.8 rem, with their padding)
-  const font = ctx.font;
-  ctx.font = `600 ${12.8 * dpr}px system-ui, sans-serif`;
-  const words = ctx.measureText(`${HANDLE_LABEL} (now 0)`).width + 10 * dpr;
-  ctx.font = font;
-  const gripWords = grip ? handleWordsBox(grip, words, canvas, placed, dpr, linePoints(player, dpr)) : null;
+  // the handle's words as wide as the page sets them, on one line and on two (arrows.js handleWordsWidths)
+  const [words, words2] = grip ? handleWordsWidths(player, `${HANDLE_LABEL} (now 0)`).map((w) => w * dpr) : [0, 0];
+  const gripWords = grip ? handleWordsBox(grip, words, canvas, placed, dpr, linePoints(player, dpr), words2) : null;
   const cost = (x0, y0, x1, y1) => {
     let c = 0;
     if (x0 < 2 * dpr || x1 > canvas.width - 2 * dpr || y0 < 2 * dpr || y1 > canvas.height - 2 * dpr) c += 100;

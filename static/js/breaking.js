@@ -87,6 +87,56 @@ export function alignedRows(tex) {
   return rows.map((r) => r.trim()).filter(Boolean).flatMap((r) => (r.includes(OPEN) ? alignedRows(r) : [r]));
 }
 
+// the space between the rows of a stacked display that holds a fraction (prof-l 9: the double pendulum's θ̈₁ and θ̈₂,
+// each a tall fraction, touched: θ̈₁'s denominator on θ̈₂'s numerator); a textbook leaves a clear gap there
+export const ROW_GAP = "0.6em";
+
+/** A display's TeX with room between the rows of its aligned block when a row holds a fraction at display size;
+ *  any other formula as it is.  KaTeX, like LaTeX's arrays, reads \\[0.6em] as a least depth, which a deep
+ *  fraction already passes (nothing changed); so each row but the last ends in an invisible copy of itself lowered
+ *  by the gap (\raisebox{-0.6em}{$\displaystyle\vphantom{…}$}): the row is then exactly that much deeper, however
+ *  deep it was.  Only the typeset form: the page's data-tex, which the tests and the reader's copy read, is left
+ *  alone. */
+export function spacedRows(tex) {
+  const t = tex.trim();
+  if (!t.startsWith(OPEN) || !t.endsWith(CLOSE) || !/\\d?frac(?![a-zA-Z])/.test(t)) return tex;
+  const body = t.slice(OPEN.length, t.length - CLOSE.length);
+  // the outer block's rows: each as written (with its &) and without its alignment marks (for the copy)
+  const rows = [];
+  let row = "";
+  let bare = "";
+  let braces = 0;
+  let envs = 0;
+  for (let i = 0; i < body.length; i++) {
+    const c = body[i];
+    if (c === "\\") {
+      if (body.startsWith("\\begin{", i)) envs += 1;
+      else if (body.startsWith("\\end{", i)) envs -= 1;
+      else if (body[i + 1] === "\\" && braces === 0 && envs === 0) {
+        // a separator's own space (\\[4pt]) stays with it
+        const close = body[i + 2] === "[" ? body.indexOf("]", i + 2) : -1;
+        rows.push([row, bare, close > 0 ? body.slice(i + 2, close + 1) : ""]);
+        row = ""; bare = "";
+        i = close > 0 ? close : i + 1;
+        continue;
+      }
+      row += c + (body[i + 1] ?? ""); bare += c + (body[i + 1] ?? "");
+      i += 1;
+      continue;
+    }
+    if (c === "{") braces += 1;
+    else if (c === "}") braces -= 1;
+    row += c;
+    if (!(c === "&" && braces === 0 && envs === 0)) bare += c;
+  }
+  rows.push([row, bare, ""]);
+  if (rows.length < 2) return tex;
+  const last = rows.length - 1;
+  return OPEN + rows.map(([r, b, gap], k) => (k < last
+    ? `${r}\\raisebox{-${ROW_GAP}}{$\\displaystyle\\vphantom{${b}}$} \\\\${gap} `
+    : r)).join("") + CLOSE;
+}
+
 /** The relation written at ``i`` of a row (=, \\approx, \\equiv, \\le, \\ge …), or "". */
 function relationAt(row, i) {
   if (row[i] === "=" || row[i] === "<" || row[i] === ">") return row[i];
@@ -95,13 +145,16 @@ function relationAt(row, i) {
 }
 
 /** A row with a line break allowed after each wide space at its top level (\quad before "(string tension)",
- *  between two equations of one row), where KaTeX by itself breaks only after relations and operators.
- *  A relation just after a wide space holds on to what follows it (no "K =" left at a line's end, its matrix on
- *  the next line), and so does the row's first relation when ``glue`` is set (the row is wider than its box
- *  however it breaks: "ω₁² =" then stays with the fraction too wide for a phone, in the box that scrolls); a value
- *  beside what it evaluates goes on to the next line with its ≈ before it ("≈ 5.747 s⁻²", never a bare number
- *  beginning a line). */
-export function breakable(row, glue = false) {
+ *  between two equations of one row), where KaTeX by itself breaks only after relations and operators, and before
+ *  a joining word of prose (\text{ with }: "for every δq" / "with δq(t₀) = δq(t₁) = 0").  A line never ends in a
+ *  relation (prof-l 7: no "=" at a line's end, its "0" alone on the next): each relation holds on to what
+ *  follows it, and a second relation of the same equation may begin the next line instead, as a textbook
+ *  continues a display ("= …" under the first).  So a value beside what it evaluates goes on to the next line
+ *  with its ≈ before it ("≈ 5.747 s⁻²", never a bare number beginning a line).  What must stay whole (a
+ *  condition δq(t₀) = δq(t₁) = 0) is one group in braces: nothing inside braces breaks.  ``loose``: for a row
+ *  wider than its box however it breaks so, a break after a relation as well (not after a wide space's first),
+ *  rather than a box that scrolls sideways. */
+export function breakable(row, loose = false) {
   let out = "";
   let braces = 0;
   let brackets = 0; // \left … \right: one piece for KaTeX, never broken inside
@@ -125,12 +178,19 @@ export function breakable(row, glue = false) {
     }
     const relation = top ? relationAt(row, i) : "";
     if (relation) {
+      // never a break after a relation; before one that continues an equation (a = b ⏎ = c, ≈ 5.7), allowed.
+      // Loose (a row wider than its box even so: "½ period = ∫ …" with a fraction nearly a phone wide): a break
+      // after a relation too, but after a wide space's and before a value's ≈ (as before prof-l 7)
       const approx = relation === "\\approx" && related;
-      const held = approx || (!related && (spaced || glue));
-      out += `${approx ? "\\allowbreak " : ""}${relation}${held ? "\\nobreak " : ""}`;
+      const held = loose ? approx || (!related && spaced) : true;
+      out += `${related && (!loose || approx) ? "\\allowbreak " : ""}${relation}${held ? "\\nobreak " : ""}`;
       i += relation.length - 1;
       related = true;
       continue;
+    }
+    // a joining word of prose at the top level (\text{ with }, its leading space says it joins): a break before it
+    if (top && /^\\text\{\s/.test(row.slice(i)) && out.trim() !== "") {
+      out += "\\allowbreak ";
     }
     if (c === "\\" && i + 1 < row.length) {
       // a control word or symbol kept whole (\left<, \{ are not relations)
@@ -149,7 +209,7 @@ export function breakDisplay(el, katex) {
   if (!tex || !katex) return false;
   // a formula broken for a narrower box is typeset whole again first: it may fit now
   if (el.dataset.broken) {
-    katex.render(tex, el, { displayMode: true, throwOnError: false });
+    katex.render(spacedRows(tex), el, { displayMode: true, throwOnError: false });
     delete el.dataset.broken;
   }
   if (el.scrollWidth <= el.clientWidth + 1 || el.querySelector(".katex-error")) return false;
@@ -157,15 +217,19 @@ export function breakDisplay(el, katex) {
   for (const row of alignedRows(tex)) {
     const line = document.createElement("div");
     line.className = "math-line";
+    // a row holding a fraction keeps a clear gap from its neighbours (site.css; prof-l 9), as spacedRows gives a
+    // display typeset whole
+    if (/\\d?frac(?![a-zA-Z])/.test(row)) line.classList.add("has-fraction");
     katex.render(`\\displaystyle ${breakable(row)}`, line, { displayMode: false, throwOnError: false });
     el.append(line);
-    // a row wider than the box however it breaks: its first relation kept with what it relates
+    // a row wider than the box however it breaks before its relations: then after them as well, rather than
+    // a box that scrolls sideways
     if (line.scrollWidth > line.clientWidth + 1) {
       katex.render(`\\displaystyle ${breakable(row, true)}`, line, { displayMode: false, throwOnError: false });
     }
   }
   if (el.querySelector(".katex-error")) {
-    katex.render(tex, el, { displayMode: true, throwOnError: false });
+    katex.render(spacedRows(tex), el, { displayMode: true, throwOnError: false });
     return false;
   }
   el.dataset.broken = "true";

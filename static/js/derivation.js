@@ -15,7 +15,7 @@
  * the browser tests look for.
  */
 
-import { breakDisplay } from "./breaking.js";
+import { breakDisplay, spacedRows } from "./breaking.js";
 
 export function typeset(root = document) {
   const katex = window.katex;
@@ -25,7 +25,8 @@ export function typeset(root = document) {
     // the server sends MathML (readable without JavaScript) with the TeX in data-tex
     const tex = el.dataset.tex ?? el.textContent;
     el.setAttribute("data-tex", tex);
-    katex.render(tex, el, { displayMode: el.classList.contains("math-display"), throwOnError: false });
+    const display = el.classList.contains("math-display");
+    katex.render(display ? spacedRows(tex) : tex, el, { displayMode: display, throwOnError: false });
     el.dataset.typeset = "1";
   }
   if (window.renderMathInElement) {

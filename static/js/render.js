@@ -56,5 +56,9 @@ export function drawFrame(player, i) {
   if (handle) drawHandle(ctx, handle, dpr);
   labelHandle(player, handle, dpr);
   canvas.dataset.handle = handle ? JSON.stringify({ x: Math.round(handle.x / dpr), y: Math.round(handle.y / dpr) }) : "";
-  if (i === 0) canvas.dataset.wheels = JSON.stringify(wheelsAt(player, 0).map(({ x, y, r }) => [x / dpr, y / dpr, r / dpr]));
+  if (i === 0) {
+    canvas.dataset.wheels = JSON.stringify(wheelsAt(player, 0).map(({ x, y, r }) => [x / dpr, y / dpr, r / dpr]));
+    // the rods, strings and springs at the first instant, CSS pixels: what the handle's words keep off (the tests)
+    canvas.dataset.links = JSON.stringify(spec.links.map((l) => [player.at(l.from, 0), player.at(l.to, 0)].map(([x, y]) => [x / dpr, y / dpr])));
+  }
 }

@@ -96,7 +96,13 @@ def test_phone_layout_and_relaxing_a_trial_path(browser, live_server, artifacts)
         phone.wait_for_function(f"document.querySelector('{PANEL}').dataset.relaxed === 'minimum'")
         phone.wait_for_timeout(200)
         readout = phone.locator(f"{PANEL} .readout").text_content()
-        assert "shooting solution" in readout and "minimum of the discrete action" in readout
+        method = phone.locator(f"{PANEL} .action-method p").text_content()
+        assert "minimum of the discrete action" in readout and "shooting solution" in method
+        # the lead first; the method's account behind "How this was computed", closed until asked for (prof-l 8)
+        assert readout.startswith("The relaxed path agrees with the true motion to within ") and "Newton" not in readout
+        disclosure = phone.locator(f"{PANEL} .action-method")
+        assert disclosure.is_visible() and disclosure.get_attribute("open") is None
+        assert disclosure.locator("summary").text_content() == "How this was computed"
         width = phone.evaluate("document.documentElement.scrollWidth")
         assert width <= 390
         phone.locator(PANEL).screenshot(path=artifacts / "action-relax-390.png")
@@ -138,7 +144,8 @@ def test_relax_refuses_a_path_no_motion_follows_and_starts_again_from_shooting(p
     if page.locator(PANEL).get_attribute("data-relaxed") != "not-found":
         # Newton's method may carry so wild a trial path to a true motion (one far from rest): then the page
         # may say so only because a shooting solution between the same ends runs along it
-        assert "is the path of a true motion between these ends" in readout and "runs along it to within" in readout
+        method = page.locator(f"{PANEL} .action-method p").text_content()
+        assert "is the path of a true motion between these ends" in readout and "runs along the relaxed path to within" in method
         assert not page.console_errors
         return
     assert readout.startswith("The path was not found.") and "No true motion runs along it" in readout
@@ -146,7 +153,7 @@ def test_relax_refuses_a_path_no_motion_follows_and_starts_again_from_shooting(p
     assert "minimum" not in readout and "about 0" not in readout
     page.locator("#action-from-shooting").click()
     page.wait_for_function(
-        f"document.querySelector('{PANEL} .readout').textContent.startsWith(\"Newton's method made\")"
+        f"document.querySelector('{PANEL} .readout').textContent.startsWith('The relaxed path agrees')"
     )
     assert page.locator(PANEL).get_attribute("data-relaxed") == "saddle"  # the true path, past the focus
     assert "θ̇(0) = 0 rad/s" in page.locator(f"{PANEL} .readout").text_content()
@@ -302,7 +309,7 @@ def test_relax_at_a_long_tau_says_what_it_is_doing(page):
     page.wait_for_function(f"document.querySelector('{PANEL}').dataset.relaxed")
     # the replay of every Newton step lasts at most 1.5 s of pauses (plus each frame's drawing)
     assert page.evaluate("performance.now()") - started < 6000
-    assert "Newton's method made the discrete action stationary" in page.locator(f"{PANEL} .readout").text_content()
+    assert "Newton's method made the discrete action stationary" in page.locator(f"{PANEL} .action-method p").text_content()
 
 
 def test_a_lazy_panel_says_it_loads_when_in_view(page):

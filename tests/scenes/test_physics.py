@@ -29,6 +29,21 @@ def test_damped_pendulum_loses_energy_at_the_rate_of_the_drag():
     assert same(force("damped-pendulum", "string tension"), force("simple-pendulum", "string tension"))
 
 
+def test_the_damped_pendulums_stated_drag_is_the_engines_generalized_force():
+    from app.scenes import SCENES
+
+    statement = SCENES["damped-pendulum"].statement
+    # the statement's model: a torque −b θ̇ about the pivot with b fixed, a force of magnitude (b/R)|θ̇| on the
+    # bob against its motion; never a coefficient b/R² that the length slider would change (prof-l 6)
+    assert "torque about the pivot is −b θ̇" in statement and "(b/R) |θ̇|" in statement and "R²) v" not in statement
+    d = derivation("damped-pendulum")
+    (position,) = d.mechanics.positions
+    tangent = sp.Matrix([sp.diff(c, theta) for c in position])  # ∂r/∂θ, of length R along the path
+    # the stated force: magnitude (b/R) θ̇ along −∂r/∂θ / R; its virtual work per δθ is Q_θ = F · ∂r/∂θ
+    force_on_bob = -(b / R) * theta_dot * tangent / R
+    assert same(force_on_bob.dot(tangent), d.mechanics.Q[0]) and same(d.mechanics.Q[0], -b * theta_dot)
+
+
 @pytest.mark.parametrize("theta0", [1.9, 2.3, 2.8])
 def test_conical_pendulum(theta0):
     """Steady circling at theta0 (below the pivot): Newton fixes the rate, the engine's U_eff is flat there."""

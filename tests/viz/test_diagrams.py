@@ -24,8 +24,11 @@ def test_every_family_is_drawn_both_ways_and_used_by_a_scene():
 
 
 def test_a_mark_adds_to_the_family_drawing():
-    # the drag drawn as the force on the bob (its torque about the pivot is Q_θ = −b θ̇)
-    assert "−(b/R) θ̇" in card("damped-pendulum") and "(b/R)" not in card("simple-pendulum")
+    # the drag drawn as the force on the bob (its torque about the pivot is Q_θ = −b θ̇), labelled with its
+    # magnitude against the velocity v drawn beside it: no sign on the label to read twice (prof-l 6)
+    damped = card("damped-pendulum")
+    assert "(b/R) |θ̇|" in damped and "−(b/R)" not in damped and ">v</text>" in damped
+    assert "(b/R)" not in card("simple-pendulum") and ">v</text>" not in card("simple-pendulum")
 
 
 @pytest.mark.parametrize("scene_id", sorted(SCENES))

@@ -76,7 +76,8 @@ def test_the_double_pendulum_is_drawn_with_a_pivot_and_two_rods(client):
     assert labels == ["mass 1", "mass 2", "pivot"] and not mech["points"][2]["mass"]
     rods = sorted((link["from"], link["to"]) for link in mech["links"] if link["style"] == "rod")
     assert rods == [(0, 1), (2, 0)]  # mass 1 - mass 2 and pivot - mass 1 (indices of points)
-    assert "rods that keep their distances fixed and the fixed pivot" in mech["caption"]
+    assert "each distance that stays fixed drawn as a rod (whatever holds it there" in mech["caption"]
+    assert "hoop the bead rides on) and the fixed pivot" in mech["caption"]
 
 
 def test_system_json_in_the_address_works_too(client):

@@ -91,3 +91,41 @@ def test_the_hoop_given_by_l_alone_names_h_and_no_e(client):
     note = re.search(r"The slider marks ([^<]*)\.</p>", page).group(1)
     # with L alone E is not defined: the mark names h, conserved, and says nothing of E
     assert ", by h (conserved here): just reaches θ = π" in note and "not E" not in note
+
+
+def _effective_potential_words(client, spec) -> str:
+    doc = client.post("/api/derive", json=spec).json()
+    (step,) = [s for s in doc["steps"] if s["key"] == "effective-potential"]
+    return step["explanation"]
+
+
+def test_the_effective_potential_says_it_comes_from_the_moving_constraint(client):
+    # the hoop has no cyclic coordinate: U_eff = −L at θ̇ = 0 = U − T₀, T₀ = ½ m R² w² sin²θ (prof-l 5)
+    spun = {key: value for key, value in HOOP.items() if key != "kinetic"} | {
+        "particles": [{"mass": "m", "position": ["R*sin(theta)*cos(w*t)", "R*sin(theta)*sin(w*t)", "-R*cos(theta)"]}],
+    }
+    for spec, source in ((spun, "the moving constraint (the positions contain t)"), (HOOP, "as written")):
+        words = _effective_potential_words(client, spec)
+        assert "No coordinate is cyclic here" in words and source in words
+        assert "U_eff = −L at θ̇ = 0 is U − T₀" in words and "cyclic motion" not in words
+
+
+def test_the_effective_potential_of_a_cyclic_coordinate_says_the_momentum_is_held(client):
+    # a particle on a frictionless table pulled by a spring from the centre: φ is cyclic, no constraint moves
+    table = {
+        "coordinates": ["r", "phi"],
+        "parameters": [{"name": "m", "value": 1.0, "unit": "kg", "min": 1e-9}, {"name": "k", "value": 4.0}],
+        "particles": [{"mass": "m", "position": ["r*cos(phi)", "r*sin(phi)", "0"]}],
+        "potential": "1/2*k*r^2",
+    }
+    words = _effective_potential_words(client, table)
+    assert words.startswith("With each conserved momentum held at its value") and "T₀" not in words
+    # one coordinate on a fixed circle: U_eff is U itself
+    pendulum = {
+        "coordinates": ["theta"],
+        "parameters": HOOP["parameters"][:3],
+        "particles": [{"mass": "m", "position": ["R*sin(theta)", "0", "-R*cos(theta)"]}],
+        "potential": "-m*g*R*cos(theta)",
+    }
+    words = _effective_potential_words(client, pendulum)
+    assert words.startswith("One coordinate on fixed constraints: U_eff is the potential energy U itself")

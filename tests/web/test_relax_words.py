@@ -44,12 +44,21 @@ def _said(lift: float) -> tuple[dict, dict]:
 def test_a_found_path_is_certified_with_named_numbers():
     answer, said = _said(3.0)
     assert answer["found"] and said["found"] and said["advice"] == []
-    text = said["text"]
-    assert text.startswith("Newton's method made the discrete action stationary in ")
-    assert "(the motion that starts with θ̇(0) = 0 rad/s)" in text  # the true motion starts at rest
-    assert re.search(r"runs along it to within [\d.]+ × 10⁻[⁰¹²³⁴⁵⁶⁷⁸⁹]+ rad;", text), text
+    text, method = said["text"], said["method"]
+    # the lead says what a second-year needs, with the panel's own number: the shooting solution's distance from
+    # the relaxed path (prof-l 8); the method's account (Newton, the grid) is the disclosure's, not the lead's
+    within = re.match(r"The relaxed path agrees with the true motion to within ([\d.]+) × 10⁻([⁰¹²³⁴⁵⁶⁷⁸⁹]+) rad: ", text)
+    assert within, text
+    digits = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹", "0123456789")
+    printed = float(within.group(1)) * 10 ** -int(within.group(2).translate(digits))
+    assert printed == pytest.approx(answer["difference"], rel=0.01)
+    assert "the motion that starts with θ̇(0) = 0 rad/s." in text  # the true motion starts at rest
     assert "not a minimum" in text and "past the kinetic focus" in text  # T = 2 s > t* = 1.07 s
-    assert not LOG_WORDS.search(text), text
+    assert "Newton" not in text and "grid" not in text and "extrapolated" not in text
+    assert method.startswith("Newton's method made the discrete action stationary in ")
+    assert "on a 200-step time grid" in method and "the extrapolated path shown is closer still" in method
+    assert re.search(r"runs along the relaxed path to within [\d.]+ × 10⁻[⁰¹²³⁴⁵⁶⁷⁸⁹]+ rad\.", method), method
+    assert not LOG_WORDS.search(text + method), text + method
 
 
 @pytest.mark.skipif(NODE is None, reason="node is installed by scripts/assets.sh")
@@ -65,4 +74,5 @@ def test_a_wrong_path_is_refused_with_the_reason_and_what_to_do():
         "shooting solution (the button “Start from the shooting solution”)."
     )
     assert "minimum" not in text and "saddle" not in text  # nothing is said of a path that was not found
+    assert said["method"] == ""  # and no account of a computation that found nothing
     assert not LOG_WORDS.search(text), text

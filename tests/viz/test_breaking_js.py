@@ -1,0 +1,72 @@
+"""How a display formula is prepared for KaTeX on the page (static/js/breaking.js, run with node): where a narrow
+page may break a row, and the room between stacked rows that hold fractions (issue 40, prof-l 7 and 9)."""
+
+import json
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from app.engine.action_step import action_step
+from app.engine.derive import derive
+from app.scenes import SCENES
+
+JS = Path(__file__).resolve().parents[2] / "static" / "js"
+
+pytestmark = pytest.mark.skipif(shutil.which("node") is None, reason="node is installed with the front-end assets")
+
+
+def node(body: str, data):
+    script = (
+        f"import * as m from {json.dumps((JS / 'breaking.js').as_uri())};"
+        "import { readFileSync } from 'node:fs';"
+        f"const data = JSON.parse(readFileSync(0, 'utf8')); console.log(JSON.stringify(({body})(m, data)));"
+    )
+    run = subprocess.run(
+        ["node", "--input-type=module", "-e", script],
+        input=json.dumps(data),
+        capture_output=True,
+        text=True,
+        timeout=30,
+    )
+    assert run.returncode == 0, run.stderr
+    return json.loads(run.stdout)
+
+
+def test_no_row_may_end_a_line_with_a_relation():
+    # the first step's condition: "δq(t₀) = δq(t₁) =" at a line's end and "0" alone on the next, on a phone
+    latex = action_step(derive(SCENES["simple-pendulum"].system))["latex"]
+    rows = node("(m, tex) => m.alignedRows(tex).map((r) => m.breakable(r))", latex)
+    condition = rows[1]
+    # the condition is one group: no break inside it, and a break allowed before its "with", after the wide space
+    assert r"\allowbreak \text{ with } {\delta q(t_0) = \delta q(t_1) = 0}" in condition
+    assert r"\quad\allowbreak " in condition
+    # the row's own relation holds what follows it
+    assert condition.startswith(r"\delta S =\nobreak  0")
+    # a chain a = b = c: each relation holds its right side; the second may begin the next line instead
+    chained = node("(m, row) => m.breakable(row)", r"E = \frac{a}{b} = c + d \approx 5.7")
+    assert chained == r"E =\nobreak  \frac{a}{b} \allowbreak =\nobreak  c + d \allowbreak \approx\nobreak  5.7"
+    # only a row wider than its box however it breaks so is broken after a relation as well (the page's second try)
+    loose = node("(m, row) => m.breakable(row, true)", r"E = \frac{a}{b} = c + d \approx 5.7")
+    assert loose == r"E = \frac{a}{b} = c + d \allowbreak \approx\nobreak  5.7"
+
+
+def test_stacked_fractions_get_room_between_their_rows():
+    latex = r"\begin{aligned}\ddot{x} &= \frac{a}{b} \\ \ddot{y} &= \frac{\begin{aligned}&c \\ &+ d\end{aligned}}{e}\end{aligned}"
+    spaced = node("(m, tex) => m.spacedRows(tex)", latex)
+    # KaTeX reads \\[0.6em] as a least depth, which a deep fraction passes: the first row ends instead in an
+    # invisible copy of itself (no alignment mark) lowered by the gap, so that it is that much deeper; the
+    # numerator's own lines, inside its braces, are left as they were, and the last row gets no copy
+    assert spaced == latex.replace(
+        r"\frac{a}{b} \\ ", r"\frac{a}{b} \raisebox{-0.6em}{$\displaystyle\vphantom{\ddot{x} = \frac{a}{b} }$} \\  ", 1
+    )
+    # rows without a fraction, a single formula, and the page's data-tex itself are left alone
+    plain = r"\begin{aligned}x &= 1 \\ y &= 2\end{aligned}"
+    assert node("(m, tex) => [m.spacedRows(tex), m.spacedRows('x = \\\\frac{1}{2}')]", plain) == [
+        plain,
+        r"x = \frac{1}{2}",
+    ]
+    # a separator's own space stays with it
+    gapped = r"\begin{aligned}a &= \frac{1}{2} \\[4pt] b &= 1\end{aligned}"
+    assert r"$} \\[4pt] " in node("(m, tex) => m.spacedRows(tex)", gapped)
