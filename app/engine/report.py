@@ -723,8 +723,12 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
             "effective-potential",
             "Effective potential",
             [
-                # the centrifugal piece first, as a textbook writes U_eff
-                rf"U_\text{{eff}}({rn}) = {pr.tex(effective_potential(d), red.momenta[0] if red.momenta else None)}",
+                # the centrifugal piece first, as a textbook writes U_eff; with no momentum held (a moving constraint:
+                # U_eff = U − T₀), each piece as its own term, as the equilibria's step prints the same U_eff
+                # (−mgR cos θ − ½mR²w² sin²θ, never −mR(g cos θ + ½Rw² sin²θ))
+                rf"U_\text{{eff}}({rn}) = "
+                + (pr.tex(effective_potential(d), red.momenta[0]) if red.momenta
+                   else pr.tex(display(sp.expand(red.effective_potential)))),
                 rf"m_\text{{eff}} = {pr.tex(red.effective_mass)}",
             ],
             [effective_potential(d), red.effective_mass],

@@ -4,15 +4,13 @@ then shows the formula typeset; "Show this step" stays for giving up. The same o
 
 from __future__ import annotations
 
-import unicodedata
-
 import pytest
 
 from tests.browser.test_classroom import (
     classes,  # noqa: F401 - the module's classes in a database of their own
     phone_page,
 )
-from tests.browser.test_practice import STEP, answer, sized_page, verdict_of
+from tests.browser.test_practice import STEP, answer, sized_page, verdict_of, words
 
 pytestmark = pytest.mark.browser
 
@@ -44,7 +42,7 @@ def test_the_correct_denominator_is_behind_a_tap_on_a_phone(browser, live_server
         verdict = verdict_of(page, key)
         part = verdict.locator("details.verdict-correct")
         part.wait_for(state="attached")
-        said = unicodedata.normalize("NFC", verdict.inner_text())
+        said = words(verdict)
         # the place and the kind of slip are named; the correct denominator is not printed
         assert "the denominator M + 4 m₁" in said and "where the correct one" not in said, said
         assert "M m₁ + M m₂" not in said and "4 m₁ m₂" not in said, said
@@ -76,7 +74,7 @@ def test_a_class_phone_shows_the_correct_stretch_behind_a_tap(browser, live_serv
         step.locator("textarea").fill(RAIL_SLIP)
         step.locator("textarea").press("Enter")
         step.locator('.practice-verdict[data-verdict="incorrect"]').wait_for()
-        said = unicodedata.normalize("NFC", step.locator(".practice-verdict").inner_text())
+        said = words(step.locator(".practice-verdict"))
         assert "the sign of l₀" in said and "x₂ − x₁ − l₀" not in said, said
         math = _closed_then_typeset(step.locator("details.verdict-correct"), "Show the correct stretch")
         assert "x_{2} - x_{1} - l_{0}" in math, math
