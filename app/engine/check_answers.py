@@ -22,6 +22,9 @@ if TYPE_CHECKING:  # the problem an answer is read for (imported for its type on
 
 STEPS = ("position", "kinetic", "potential", "lagrangian", "momentum", "equation", "acceleration", "hamiltonian", "omega_squared")
 PER_COORDINATE = frozenset({"momentum", "equation", "acceleration"})
+# how an answer may differ from the truth and still be physically the same
+# (a position from another origin is the figure's plus a constant, as another zero of U is)
+RELATIONS = {"position": "constant", "potential": "constant", "lagrangian": "constant", "hamiltonian": "constant", "equation": "factor"}
 # the steps answered per Cartesian component of a body (x, z, or x1, z2 … numbered by body), in the same field
 PER_COMPONENT = frozenset({"position"})
 # the steps whose answer names which one it is (a coordinate or a component): one record per name

@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from app.engine.check_answers import PER_COORDINATE, STEPS, CheckError, name_kinds
+from app.engine.check_answers import PER_COORDINATE, RELATIONS, STEPS, CheckError, name_kinds
 from app.engine.compare import Groups, Values
 from app.engine.derive import Derivation
 from app.engine.diagnose import catalogue
@@ -22,10 +22,6 @@ from app.engine.mistakes import absent_names, has_gravity, has_springs
 from app.engine.notation import text
 from app.engine.report import plain_name
 from app.engine.textbook import unicode_text
-
-# how an answer may differ from the truth and still be physically the same
-# (a position from another origin is the figure's plus a constant, as another zero of U is)
-RELATIONS = {"position": "constant", "potential": "constant", "lagrangian": "constant", "hamiltonian": "constant", "equation": "factor"}
 
 
 @dataclass(frozen=True)

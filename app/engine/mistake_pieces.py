@@ -29,6 +29,7 @@ from fractions import Fraction
 
 import sympy as sp
 
+from app.engine.check_answers import RELATIONS
 from app.engine.derive import Derivation
 from app.engine.dimensions import dimension
 from app.engine.mistake_families import (
@@ -155,6 +156,7 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
     """A factor, a sign or a swapped function on one piece of the truth, named by the piece."""
     if step == "omega_squared":
         return
+    moving = {*d.table.q, *d.table.qd, *d.table.qdd}
     base = f"{step}.piece"
     yield from _sums(truth, base, has_springs(d), d.table.q)
     if has_springs(d):
@@ -255,8 +257,13 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
                 f"the {name} terms four times too big: {_speed_doubled(d, s)}", group,
                 "check how far this body moves when the coordinates change", truth + 3 * group,
             )  # fmt: skip
-        # the student's own piece, twice the truth's, in the factored form a textbook prints (k (r − l)²)
-        yours = _factored(2 * group)
+        # the student's own piece, twice the truth's, in the factored form a textbook prints (k (r − l)²); where
+        # a constant is no part of the comparison, without the group's constant terms, which the student's answer
+        # need not have (the pulley's −M g (y₁ + y₂), never −M (y₁ + y₂ + 2 c) g: review student-m 6)
+        varying = group
+        if RELATIONS.get(step) == "constant":
+            varying = sp.Add(*(t for t in sp.Add.make_args(sp.expand(group)) if t.free_symbols & moving)) or group
+        yours = _factored(2 * varying)
         yield Mistake(
             # (in T a squared sum is a body's ½ m v², never a spring: student-i 1, the pulley's M (ẏ₁ + ẏ₂)²/4)
             f"{base}.group_doubled.{s.name}", "doubled",
@@ -499,6 +506,10 @@ def _sums(truth: sp.Expr, base: str, springs: bool, coordinates: Iterable[sp.Sym
                 changed, term = -changed, a - term
             if term.could_extract_minus_sign():
                 term = -term  # the sign of θ₂, not of −θ₂
+            # the sums without a common number (κ (2 x₁ − 2 x₂)/2, as ∂/∂x₁ of ½ κ (x₂ − x₁)² leaves it, is
+            # κ (x₁ − x₂)): the student never wrote the 2 (review student-m 2)
+            content = a.primitive()[0]
+            term = term / content
             why = (
                 "the angle between two directions is the difference of their angles from the same reference"
                 if angle
@@ -506,8 +517,8 @@ def _sums(truth: sp.Expr, base: str, springs: bool, coordinates: Iterable[sp.Sym
             )
             yield Mistake(
                 f"{base}.inner_sign.{slug(sp.sstr(a))[:32]}.{slug(sp.sstr(term))[:16]}", "inner_sign",
-                f"{sum_words(changed, coordinates)} where {sum_words(a, coordinates)} belongs: the sign of "
-                f"{spoken(term)} ({why})", a,
+                f"{sum_words(changed / content, coordinates)} where {sum_words(a / content, coordinates)} belongs: "
+                f"the sign of {spoken(term)} ({why})", a,
                 "draw the two directions and measure both angles from the same line" if angle
                 else "draw the two ends and ask which way each coordinate moves them", wrong,
             )  # fmt: skip
