@@ -105,7 +105,11 @@ def _inner_term_as_typed(
     terms = {sp.expand(t) for t in sp.Add.make_args(sp.expand(answer))}
     for term in right.args:
         changed = right - 2 * term
-        if not wrong.has(changed):
+        # only a sum the answer holds to the first power (a force κ (x₁ − x₂)): a square's sign changes more than
+        # one term once multiplied out, and is quoted as a sum or not at all
+        marker = sp.Dummy()
+        held = wrong.xreplace({changed: marker})
+        if not held.has(marker) or sp.diff(held, marker, 2) != 0 or sp.diff(held, marker).has(marker):
             continue
         # the truth is the mistake with the sum put right; they differ by twice the term's part, with its sign
         truth = wrong.xreplace({changed: right})
