@@ -724,9 +724,18 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
     for key, name, dT, dU in changes[: 2 * MAX_TRAVEL]:
         if step == "equation" and k is not None:
             # L = T − U changes by ΔT − ΔU, and the equation by its Euler–Lagrange expression
-            wrong = truth + euler_lagrange(d, k, dT - dU)
-            family = "rigid" if key.startswith("rigid") else "travelled"
-            yield Mistake(f"equation.{key}", family, name, None,
+            change = euler_lagrange(d, k, dT - dU)
+            wrong = truth + change
+            if key.startswith("rigid"):
+                yield Mistake(f"equation.{key}", "rigid", name, None,
+                              "your equation is what such a step gives: if your earlier step has that slip, fix it "
+                              "there and derive again", wrong)  # fmt: skip
+                continue
+            lost = _terms_lost(d, k, truth, change, dT - dU, name)
+            if lost is not None:
+                yield Mistake(f"equation.{key}", "terms_left_out", *lost, wrong)
+                continue
+            yield Mistake(f"equation.{key}", "travelled", name, None,
                           "your equation is what such a step gives: if your earlier step has that slip, fix it there "
                           "and derive again", wrong)  # fmt: skip
         elif step == "acceleration":
@@ -746,6 +755,59 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
                 yield Mistake(f"omega_squared.{key}", family, name, None,
                               f"your {w2} follows from it: {w2} is the effective potential's second derivative over "
                               "the effective mass, at the equilibrium", w)  # fmt: skip
+
+
+def _terms_lost(
+    d: Derivation, k: int, truth: sp.Expr, change: sp.Expr, dL: sp.Expr, slip: str
+) -> tuple[str, None, str] | None:
+    """A slip of T or U that, carried into the equation of q_k, only leaves some of the equation's terms out: named
+    by the terms of this equation that are missing, with where they come from, and the earlier step blamed only
+    conditionally and second (review student-m 3: a correct T was blamed for an equation's own dropped terms).
+
+    ``change`` is the equation's change, E(ΔL) with ΔL = ΔT − ΔU; ``slip`` is "a T that …" or "a U …"."""
+    lost = sp.expand(-change)
+    right = set(sp.Add.make_args(sp.expand(truth)))
+    if lost == 0 or not set(sp.Add.make_args(lost)) <= right or lost == sp.expand(truth):
+        return None
+    # the terms of T (or of U) left out that give these terms of the equation: the part of ΔL whose
+    # Euler–Lagrange expression for q_k is not zero
+    source = sp.Add(*(t for t in sp.Add.make_args(sp.expand(-dL)) if euler_lagrange(d, k, t) != 0))
+    piece, what = ("T", source) if slip.startswith("a T") else ("U", -source)
+    t = d.table
+    moving = (*t.q, *t.qd, *t.qdd)  # each product's coordinates after its constants: m₂ l₁ l₂ (θ̈₁ cos(θ₁ − θ₂) …)
+    several = len(sp.Add.make_args(lost)) > 1
+    terms = f"the terms {_constants_first(short_form(lost), moving)}" if several else f"the term {spoken(short_form(lost), moving)}"
+    # a term of T with two different velocities is the cross term of the squared velocity
+    cross = piece == "T" and len(sp.Add.make_args(what)) == 1 and sum(what.has(v) for v in t.qd) == 2
+    kind = "the cross term" if cross else "the terms" if len(sp.Add.make_args(what)) > 1 else "the term"
+    origin = f"{kind} {spoken(short_form(what), moving)} of {piece}"
+    own = slip.split(" ", 2)[2] if slip.startswith(("a T ", "a U ")) else slip
+    comes = "they come" if several else "it comes"
+    return (
+        f"{terms} left out",
+        None,
+        f"{comes} from {origin}. If your {piece} {_as_verb(own)}, that is where the slip is; if your {piece} has "
+        f"{kind.replace('the ', 'that ', 1).replace('terms', 'part')}, the slip is in differentiating it",
+    )
+
+
+def _constants_first(expr: sp.Expr, moving: tuple[sp.Symbol, ...]) -> str:
+    """A product of constants and a sum, the constants first: m₂ l₁ l₂ (θ̈₁ cos(θ₁ − θ₂) − θ̇₁² sin(θ₁ − θ₂))."""
+    constant, rest = sp.factor_terms(expr).as_independent(*moving, as_Add=False)
+    if constant == 1 or not rest.is_Add:
+        return spoken(expr, moving)
+    sign = "−" if constant.could_extract_minus_sign() else ""
+    return f"{sign}{spoken(-constant if sign else constant)} ({spoken(rest, moving)})"
+
+
+def _as_verb(clause: str) -> str:
+    """A clause after "a T" ("that leaves out …", "with … reversed") said after "if your T": "leaves out …",
+    "has … reversed"."""
+    if clause.startswith("that "):
+        return clause[len("that ") :]
+    if clause.startswith("with "):
+        return "has " + clause[len("with ") :]
+    return clause
 
 
 def _force_sign(d: Derivation, k: int, truth: sp.Expr, u: sp.Expr) -> Iterator[Mistake]:

@@ -3,8 +3,15 @@ student's own term, never the engine's unsimplified or constant-padded one."""
 
 from __future__ import annotations
 
+import unicodedata
+
 from app.engine.check import judge
 from tests.engine.test_check_slips import step_problem
+
+
+def nfc(text: str) -> str:
+    """Text as the page shows it, with each dotted letter as one character (ÿ₂ typed or composed alike)."""
+    return unicodedata.normalize("NFC", text)
 
 
 def test_a_coupling_terms_sign_is_quoted_as_the_student_multiplied_it_out():
@@ -26,3 +33,27 @@ def test_a_doubled_group_in_u_is_quoted_without_the_constant_the_student_never_w
     name = result["mistake"]["name"]
     assert name == "the M terms, −M (y₁ + y₂) g, twice what they should be", name
     assert "c" not in name.replace("twice", "").replace("should", ""), name
+
+
+def test_an_equations_dropped_coupling_terms_are_named_in_the_equation_and_t_blamed_only_if_it_has_the_slip():
+    # the student's T was right; the θ₂ equation was written as a simple pendulum's (review student-m #36)
+    result = judge(step_problem("double-pendulum", "equation", "theta2"), "m2*l2**2*theta2_ddot + m2*g*l2*sin(theta2)")
+    hint = nfc(result["hint"])
+    assert hint.startswith(
+        nfc(
+            "Your equation for θ₂ has the terms m₂ l₁ l₂ (θ̈₁ cos(θ₁ − θ₂) − θ̇₁² sin(θ₁ − θ₂)) left out: they come "
+            "from the cross term m₂ l₁ l₂ θ̇₁ θ̇₂ cos(θ₁ − θ₂) of T."
+        )
+    ), hint
+    # the earlier step only conditionally, and after this equation's terms
+    assert nfc("If your T leaves out the part of the lower bob's velocity that comes from θ̇₁, that is where") in hint
+    assert "fix it there" not in hint and not hint.startswith("Your equation for θ₂ follows from a T")
+
+
+def test_a_dropped_cross_acceleration_is_named_on_the_pulley_and_the_wedge():
+    pulley = judge(step_problem("pulley", "equation", "y1"), "(m1+M/4)*y1_ddot + m1*g - M*g/2")
+    assert nfc(pulley["mistake"]["name"]) == nfc("the term M ÿ₂/4 left out"), pulley["mistake"]
+    assert nfc("the cross term M ẏ₁ ẏ₂/4 of T") in nfc(pulley["hint"]), pulley["hint"]
+    wedge = judge(step_problem("movable-incline", "equation", "X"), "(M+m)*X_ddot")
+    assert nfc(wedge["mistake"]["name"]) == nfc("the term m D̈ cos(α) left out"), wedge["mistake"]
+    assert nfc("If your T leaves out the part of the block's velocity that comes from Ḋ") in nfc(wedge["hint"])
