@@ -57,3 +57,19 @@ def test_a_dropped_cross_acceleration_is_named_on_the_pulley_and_the_wedge():
     wedge = judge(step_problem("movable-incline", "equation", "X"), "(M+m)*X_ddot")
     assert nfc(wedge["mistake"]["name"]) == nfc("the term m D̈ cos(α) left out"), wedge["mistake"]
     assert nfc("If your T leaves out the part of the block's velocity that comes from Ḋ") in nfc(wedge["hint"])
+
+
+def test_a_squared_sum_in_a_one_body_denominator_is_named_as_that():
+    # review student-m #88: the helix's z̈ with (1 + αR)² for 1 + α²R²; no "every body the motion carries"
+    result = judge(step_problem("helix-bead", "acceleration", "z"), "-g/(1+alpha*R)^2")
+    assert result["mistake"]["key"] == "solved.square_of_a_sum", result["mistake"]
+    assert result["mistake"]["name"] == "(1 + R α)² where 1 + R² α² belongs: the square of a sum for a sum of squares"
+    assert "cross term 2 R α" in result["mistake"]["where"] and "every body" not in result["hint"], result["hint"]
+
+
+def test_an_acceleration_without_a_moving_bodys_mass_says_which_mass_is_missing():
+    # review student-m #52: an Atwood machine's result for the pulley, with m₂ nowhere in it
+    result = judge(step_problem("pulley", "acceleration", "y1"), "(M-2*m1)*g/(2*m1+M)")
+    where = nfc(result["mistake"]["where"])
+    assert where.startswith(nfc("your answer has no m₂, as if that body did not move")), where
+    assert nfc("here y₁ and y₂ both move") in where and "every body the motion carries" not in where, where
