@@ -54,6 +54,9 @@ class Problem:
     absent: dict[str, str] = field(default_factory=dict)
     # the document's letter for the frequency (ω, or Ω where ω is a parameter), for the words of the ω² step
     frequency: str = "ω"
+    # for ω²: the reduced coordinate and its value at the asked equilibrium (θ, 0), where an ω² typed with the
+    # coordinate still in it is evaluated (review student-m 4)
+    equilibrium: tuple[sp.Symbol, sp.Expr] | None = None
 
     def mistake(self, key: str) -> Mistake | None:
         return next((m for m, _, _ in self.mistakes if m.key == key), None)
@@ -190,6 +193,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         coordinate = None
 
     where: tuple[str, ...] = ()
+    equilibrium: tuple[sp.Symbol, sp.Expr] | None = None
     if step == "position":
         truths = (d.mechanics.positions[k // 3][k % 3],)  # type: ignore[operator]
     elif step == "kinetic":
@@ -208,6 +212,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         truths = (d.energetics.hamiltonian,)
     else:
         truths, where = (asked_equilibrium(d).omega_squared,), (where_asked(d),)
+        equilibrium = (table.namespace()[d.reduction.coordinate], asked_equilibrium(d).position)  # type: ignore[union-attr]
 
     momenta = conserved_momenta(d)
     kinds = name_kinds(table.names, table.parameter_names, tuple(p.name for p in momenta))
@@ -235,6 +240,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         has_gravity(d),
         absent_names(d),
         text("frequency", d),
+        equilibrium,
     )
 
 

@@ -192,8 +192,11 @@ def test_refusals_in_pure_python_name_the_steps_rules():
     assert (velocity.value.start, velocity.value.end) == (6, 15)
     with pytest.raises(CheckError, match="what you solve for"):
         check_answer("-g*sin(theta)/R + 0*theta_ddot", "acceleration", kinds)
-    with pytest.raises(CheckError, match="constant"):
-        check_answer("g*cos(theta)/R", "omega_squared", kinds)
+    # an ω² with θ still in it is read (and judged: not evaluated at the equilibrium); a velocity or t is refused
+    check_answer("g*cos(theta)/R", "omega_squared", kinds)
+    for typed in ("g/R + 0*theta_dot", "g/R + 0*t"):
+        with pytest.raises(CheckError, match="constant"):
+            check_answer(typed, "omega_squared", kinds)
     with pytest.raises(CheckError, match="allowed here: R, g, m, t, theta, theta_dot"):
         check_answer("m*x_dot", "kinetic", kinds)
 

@@ -5,8 +5,12 @@ from __future__ import annotations
 
 import unicodedata
 
-from app.engine.check import judge
-from tests.engine.test_check_slips import step_problem
+import pytest
+
+from app.engine.answer_sides import read_answer
+from app.engine.check import CheckError, judge
+from app.engine.exercises import exercise_json
+from tests.engine.test_check_slips import derivation, step_problem
 
 
 def nfc(text: str) -> str:
@@ -59,6 +63,24 @@ def test_a_dropped_cross_acceleration_is_named_on_the_pulley_and_the_wedge():
     assert nfc("If your T leaves out the part of the block's velocity that comes from Ḋ") in nfc(wedge["hint"])
 
 
+def test_gravity_written_twice_with_opposite_signs_is_named_as_two_terms_that_cancel():
+    # review student-m #113: the typed text holds −m g sin α and +m g sin α; built whole, SymPy cancels them
+    text = "m*D_ddot + m*X_ddot*cos(alpha) - m*g*sin(alpha) + m*g*sin(alpha)"
+    result = judge(step_problem("movable-incline", "equation", "D"), text)
+    assert result["verdict"] == "incorrect"
+    assert result["mistake"]["name"] == "your terms −m g sin(α) and +m g sin(α) cancel", result["mistake"]
+    assert result["hint"] == (
+        "In your equation for D, the terms −m g sin(α) and +m g sin(α) cancel: gravity's force enters once, as −∂U/∂D."
+    )
+    # the same answer typed without the pair is gravity left out, as before
+    plain = judge(step_problem("movable-incline", "equation", "D"), "m*D_ddot + m*X_ddot*cos(alpha)")
+    assert "cancel" not in plain["hint"], plain["hint"]
+    # beside another slip (the coupling's sign), with either term kept the answer is still wrong: no pair blamed
+    text = "m*D_ddot - m*X_ddot*cos(alpha) - m*g*sin(alpha) + m*g*sin(alpha)"
+    other = judge(step_problem("movable-incline", "equation", "D"), text)
+    assert other["verdict"] == "incorrect" and "cancel" not in other["hint"], other["hint"]
+
+
 def test_a_squared_sum_in_a_one_body_denominator_is_named_as_that():
     # review student-m #88: the helix's z̈ with (1 + αR)² for 1 + α²R²; no "every body the motion carries"
     result = judge(step_problem("helix-bead", "acceleration", "z"), "-g/(1+alpha*R)^2")
@@ -73,3 +95,24 @@ def test_an_acceleration_without_a_moving_bodys_mass_says_which_mass_is_missing(
     where = nfc(result["mistake"]["where"])
     assert where.startswith(nfc("your answer has no m₂, as if that body did not move")), where
     assert nfc("here y₁ and y₂ both move") in where and "every body the motion carries" not in where, where
+
+
+def test_an_omega_squared_with_the_coordinate_still_in_it_is_graded_and_named():
+    # review student-m #24: g cos(θ)/R was refused as "Not checked"; at θ = 0 it is the right ω²
+    pb = step_problem("simple-pendulum", "omega_squared", None)
+    result = judge(pb, read_answer("g/R*cos(theta)", "omega_squared", None, pb.kinds)[0])
+    assert result["verdict"] == "incorrect"
+    assert result["mistake"]["key"] == "omega_squared.not_at_equilibrium", result["mistake"]
+    assert (
+        result["hint"] == "Your ω² still depends on θ: ω² = U_eff″/m_eff not evaluated at the equilibrium: put θ = 0."
+    )
+    # wrong even at the equilibrium: graded wrong, with the rule, and no slip named
+    other = judge(pb, read_answer("2*g/R*cos(theta)", "omega_squared", None, pb.kinds)[0])
+    assert other["verdict"] == "incorrect" and other["mistake"] is None, other
+    assert other["hint"].startswith("Your ω² still depends on θ, but ω² at an equilibrium is a constant"), other
+    # the coordinate is read to name the slip, never offered among the names the step may use
+    omega = next(e for e in exercise_json(derivation("simple-pendulum"))["exercises"] if e["step"] == "omega_squared")
+    assert "theta" not in omega["names"] and "theta" not in " ".join(omega["names_said"]), omega["names"]
+    # the time is still refused
+    with pytest.raises(CheckError, match="ω² at an equilibrium is a constant"):
+        read_answer("g/R + 0*t", "omega_squared", None, pb.kinds)
