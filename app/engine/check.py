@@ -48,8 +48,10 @@ from app.engine.check_answers import (
     CheckError,
     allowed_names,
     answer_error,
+    cancelling_terms,
     check_answer,
     name_kinds,
+    offered_names,
     parse_answer,
 )
 from app.engine.check_problem import (
@@ -128,6 +130,7 @@ __all__ = [
     "Problem",
     "allowed_names",
     "answer_error",
+    "cancelling_terms",
     "check_answer",
     "checkable_equilibria",
     "conserved_momenta",
@@ -139,6 +142,7 @@ __all__ = [
     "judge_follow_up",
     "judge_of",
     "name_kinds",
+    "offered_names",
     "parse_answer",
     "problem",
     "verdict",
@@ -263,13 +267,16 @@ def _right(pb: Problem, answer: sp.Expr, a: Values, results: list[tuple[sp.Expr,
 def judge(pb: Problem, text: Parsed | str) -> dict[str, Any]:
     """The verdict on one answer (as ``check_answer`` read it, or its text): ``{"verdict", "message",
     "difference", "hint"}``; a system without a spring is not told about springs."""
-    return judge_of(pb, parse_answer(pb, text))
+    return judge_of(pb, parse_answer(pb, text), cancelling_terms(pb, text))
 
 
-def judge_of(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
+def judge_of(pb: Problem, answer: sp.Expr, cancelling: tuple[sp.Expr, sp.Expr] | None = None) -> dict[str, Any]:
     """``judge`` on an answer already built (``parse_answer``): a function of the expression alone, so answers
-    typed differently that build to one expression may share it."""
+    typed differently that build to one expression may share it; and of ``cancelling``, two typed terms that
+    cancel (``app.engine.check_answers.cancelling_terms``), which the built answer no longer shows."""
     verdict = _judge(pb, answer)
+    if cancelling is not None and verdict["verdict"] == "incorrect":
+        verdict = _cancelled(pb, answer, cancelling, verdict)
     if not pb.gravity and verdict.get("hint"):
         verdict["hint"] = without_gravity(verdict["hint"])
     if not pb.springs:
@@ -283,6 +290,71 @@ def judge_of(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
     return verdict
 
 
+def _not_at_equilibrium(pb: Problem, printer: Printer, answer: sp.Expr) -> dict[str, Any]:
+    """An ω² that still depends on a coordinate (g cos(θ)/R): graded wrong, and named as U_eff″/m_eff not
+    evaluated at the equilibrium where putting the equilibrium in makes it right (review student-m 4)."""
+    w = pb.frequency
+    moving = sorted(answer.free_symbols & set(pb.groups.positions), key=sp.default_sort_key)
+    said = " and ".join(spoken(s) for s in moving)
+    at = pb.where[0] if pb.where else "the equilibrium"
+    message = f"Incorrect: this is not {_noun(pb)}."
+    if pb.equilibrium is not None:
+        q, q0 = pb.equilibrium
+        # ω² = U_eff″(q₀)/m_eff(q₀): the second derivative and the effective mass taken at the equilibrium q₀
+        there = answer.subs(q, q0)
+        found = None if there.free_symbols & set(pb.groups.positions) else verdict_of(pb, there)
+        if found is not None and found["verdict"] == "correct":
+            name = f"{w}² = U_eff″/m_eff not evaluated at the equilibrium"
+            where = f"put {at}: {w}² at an equilibrium is a constant, U_eff″ and m_eff taken there"
+            mistake = Mistake(f"{pb.step}.not_at_equilibrium", "not_at_equilibrium", name, None, where, answer)
+            return _verdict(
+                "incorrect",
+                message,
+                _reveal(printer.pair(answer - pb.truths[0])),
+                f"Your {w}² still depends on {said}: {name}: put {at}.",
+                mistake=mistake_json(mistake, str),
+            )
+    return _verdict(
+        "incorrect",
+        message,
+        _reveal(printer.pair(answer - pb.truths[0])),
+        f"Your {w}² still depends on {said}, but {w}² at an equilibrium is a constant: take U_eff″ and m_eff at "
+        f"{at}, with the parameters (and conserved momenta) only.",
+    )
+
+
+def _cancelled(
+    pb: Problem, answer: sp.Expr, pair: tuple[sp.Expr, sp.Expr], verdict: dict[str, Any]
+) -> dict[str, Any]:
+    """A wrong answer that two of its typed terms cancelling made wrong: right with either one of them kept
+    (review student-m 10: gravity written twice with opposite signs was named as gravity left out). Said so,
+    as the student's own two terms; another wrong answer keeps its verdict."""
+    if not any(verdict_of(pb, answer + term) is not None for term in pair):
+        return verdict
+    moving = pb.groups.positions
+    shown = " and ".join(
+        f"−{spoken(-t, moving)}" if t.could_extract_minus_sign() else f"+{spoken(t, moving)}" for t in pair
+    )
+    gravity = any(s.name == "g" for s in pair[0].free_symbols)
+    if pb.step == "equation" and pb.coordinate:
+        q = unicode(pb.coordinate)
+        # the force of a potential along q is −∂U/∂q: it enters d/dt ∂L/∂q̇ − ∂L/∂q = 0 once, through −∂L/∂q
+        force = "gravity's force" if gravity else "this force"
+        where = f"{force} enters once, as −∂U/∂{q}"
+    else:
+        where = "each term enters once: two with opposite signs leave it out"
+    name = f"your terms {shown} cancel"
+    mistake = Mistake(f"{pb.step}.cancelling_terms", "cancelling_terms", name, None, where, answer)
+    label = short_label(pb.step, pb.label)
+    return {
+        **verdict,
+        "hint": f"In your {label}, the {name.removeprefix('your ')}: {where}.",
+        "mistake": mistake_json(mistake, str),
+        "partial": partial_json(mistake, label),
+        "follow_up": None,
+    }
+
+
 def _judge(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
     printer = Printer(pb.latex_names)
     a = values(answer, pb.groups)
@@ -290,6 +362,8 @@ def _judge(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
     right = _right(pb, answer, a, results)
     if right is not None:
         return right
+    if pb.step == "omega_squared" and answer.free_symbols & set(pb.groups.positions):
+        return _not_at_equilibrium(pb, printer, answer)
 
     truth, b = results[0]
     with display_budget(DISPLAY_WORK):

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 import sympy as sp
 
-from app.engine.parse import MAX_LENGTH, ExpressionError, Parsed, build, narrowed, read, typed
+from app.engine.parse import MAX_LENGTH, ExpressionError, Parsed, build, narrowed, read, typed, typed_terms
 from app.engine.reality import real_somewhere
 
 if TYPE_CHECKING:  # the problem an answer is read for (imported for its type only)
@@ -22,6 +22,9 @@ if TYPE_CHECKING:  # the problem an answer is read for (imported for its type on
 
 STEPS = ("position", "kinetic", "potential", "lagrangian", "momentum", "equation", "acceleration", "hamiltonian", "omega_squared")
 PER_COORDINATE = frozenset({"momentum", "equation", "acceleration"})
+# how an answer may differ from the truth and still be physically the same
+# (a position from another origin is the figure's plus a constant, as another zero of U is)
+RELATIONS = {"position": "constant", "potential": "constant", "lagrangian": "constant", "hamiltonian": "constant", "equation": "factor"}
 # the steps answered per Cartesian component of a body (x, z, or x1, z2 … numbered by body), in the same field
 PER_COMPONENT = frozenset({"position"})
 # the steps whose answer names which one it is (a coordinate or a component): one record per name
@@ -37,21 +40,26 @@ _KINDS = {
     "equation": {"parameter", "position", "velocity", "acceleration"},
     "acceleration": {"parameter", "position", "velocity"},
     "hamiltonian": {"parameter", "position", "velocity"},
-    "omega_squared": {"parameter", "momentum"},
+    # (a coordinate is read, and an ω² that still depends on it is judged: evaluated at the equilibrium, review
+    # student-m 4)
+    "omega_squared": {"parameter", "momentum", "position"},
 }
+# why an ω² may hold no velocity, acceleration or time
+_OMEGA_CONSTANT = "ω² at an equilibrium is a constant: write it with the parameters (and any conserved momentum) only"
 _WHY_NOT = {
     ("position", "velocity"): "a position depends on the coordinates (and t), not on the velocities",
     ("potential", "velocity"): "U depends on positions only, so a velocity cannot appear in it",
     ("acceleration", "acceleration"): "the acceleration is what you solve for: write it with the coordinates, "
     "velocities, parameters and t, without any acceleration q̈",
-    ("omega_squared", "position"): "ω² at an equilibrium is a constant: write it with the parameters "
-    "(and any conserved momentum) only",
-    ("omega_squared", "velocity"): "ω² at an equilibrium is a constant: write it with the parameters "
-    "(and any conserved momentum) only",
-    ("omega_squared", "acceleration"): "ω² at an equilibrium is a constant: write it with the parameters "
-    "(and any conserved momentum) only",
+    ("omega_squared", "velocity"): _OMEGA_CONSTANT,
+    ("omega_squared", "acceleration"): _OMEGA_CONSTANT,
 }
 _IDENTIFIER = re.compile(r"\b[A-Za-z_][A-Za-z0-9_]*")
+# a name of an allowed kind that a step still refuses, with why: an ω² may be typed with the coordinate still in
+# it (judged: it was not evaluated at the equilibrium), never with the time
+_NOT_HERE = {
+    ("t", "omega_squared"): _OMEGA_CONSTANT,
+}
 
 
 class CheckError(ExpressionError):
@@ -82,7 +90,17 @@ def name_kinds(coordinates: tuple[str, ...], parameters: tuple[str, ...], moment
 
 
 def allowed_names(step: str, kinds: dict[str, str]) -> list[str]:
-    return sorted(name for name, kind in kinds.items() if kind in _KINDS[step])
+    return sorted(name for name, kind in kinds.items() if kind in _KINDS[step] and (name, step) not in _NOT_HERE)
+
+
+# the kinds a step reads only to name a slip, never offered to the student (an ω² with θ still in it)
+_READ_NOT_OFFERED = {"omega_squared": frozenset({"position"})}
+
+
+def offered_names(step: str, kinds: dict[str, str]) -> list[str]:
+    """The names a step tells the student they may use: those it reads, less those read only to name a slip."""
+    hidden = _READ_NOT_OFFERED.get(step, frozenset())
+    return [name for name in allowed_names(step, kinds) if kinds[name] not in hidden]
 
 
 def answer_error(exc: ExpressionError) -> CheckError:
@@ -104,8 +122,8 @@ def check_answer(text: str, step: str, kinds: dict[str, str]) -> Parsed:
             raise answer_error(exc) from None
         for match in _IDENTIFIER.finditer(written.text):
             kind = kinds.get(match.group())
-            if kind is not None and kind not in _KINDS[step]:
-                why = _WHY_NOT.get((step, kind)) or (
+            if kind is not None and (kind not in _KINDS[step] or (match.group(), step) in _NOT_HERE):
+                why = _NOT_HERE.get((match.group(), step)) or _WHY_NOT.get((step, kind)) or (
                     "an acceleration appears only in the equation step"
                     if kind == "acceleration"
                     else f"a {kind} cannot appear in this step"
@@ -141,3 +159,22 @@ def parse_answer(pb: Problem, answer: Parsed | str, kind: str | None = None) -> 
         return real_somewhere(parsed.text, build(parsed, pb.namespace))
     except ExpressionError as exc:
         raise answer_error(exc) from None
+
+
+MAX_PAIRED = 12  # of an answer's typed terms, tried in pairs for two that cancel
+
+
+def cancelling_terms(pb: Problem, answer: Parsed | str) -> tuple[sp.Expr, sp.Expr] | None:
+    """Two terms of the answer as typed that cancel (− m g sin α and + m g sin α), which SymPy has merged away
+    when it built the answer whole; None where there are none (or more terms than are tried)."""
+    try:
+        parsed = check_answer(answer, pb.step, pb.kinds) if isinstance(answer, str) else answer
+        terms = typed_terms(narrowed(parsed, allowed_names(pb.step, pb.kinds)), pb.namespace)
+    except (CheckError, ExpressionError):
+        return None
+    terms = [t for t in terms if t != 0][:MAX_PAIRED]
+    for i, a in enumerate(terms):
+        for b in terms[i + 1 :]:
+            if sp.expand(a + b) == 0:
+                return a, b
+    return None

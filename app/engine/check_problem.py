@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from app.engine.check_answers import PER_COORDINATE, STEPS, CheckError, name_kinds
+from app.engine.check_answers import PER_COORDINATE, RELATIONS, STEPS, CheckError, name_kinds
 from app.engine.compare import Groups, Values
 from app.engine.derive import Derivation
 from app.engine.diagnose import catalogue
@@ -22,10 +22,6 @@ from app.engine.mistakes import absent_names, has_gravity, has_springs
 from app.engine.notation import text
 from app.engine.report import plain_name
 from app.engine.textbook import unicode_text
-
-# how an answer may differ from the truth and still be physically the same
-# (a position from another origin is the figure's plus a constant, as another zero of U is)
-RELATIONS = {"position": "constant", "potential": "constant", "lagrangian": "constant", "hamiltonian": "constant", "equation": "factor"}
 
 
 @dataclass(frozen=True)
@@ -58,6 +54,9 @@ class Problem:
     absent: dict[str, str] = field(default_factory=dict)
     # the document's letter for the frequency (ω, or Ω where ω is a parameter), for the words of the ω² step
     frequency: str = "ω"
+    # for ω²: the reduced coordinate and its value at the asked equilibrium (θ, 0), where an ω² typed with the
+    # coordinate still in it is evaluated (review student-m 4)
+    equilibrium: tuple[sp.Symbol, sp.Expr] | None = None
 
     def mistake(self, key: str) -> Mistake | None:
         return next((m for m, _, _ in self.mistakes if m.key == key), None)
@@ -194,6 +193,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         coordinate = None
 
     where: tuple[str, ...] = ()
+    equilibrium: tuple[sp.Symbol, sp.Expr] | None = None
     if step == "position":
         truths = (d.mechanics.positions[k // 3][k % 3],)  # type: ignore[operator]
     elif step == "kinetic":
@@ -212,6 +212,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         truths = (d.energetics.hamiltonian,)
     else:
         truths, where = (asked_equilibrium(d).omega_squared,), (where_asked(d),)
+        equilibrium = (table.namespace()[d.reduction.coordinate], asked_equilibrium(d).position)  # type: ignore[union-attr]
 
     momenta = conserved_momenta(d)
     kinds = name_kinds(table.names, table.parameter_names, tuple(p.name for p in momenta))
@@ -239,6 +240,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         has_gravity(d),
         absent_names(d),
         text("frequency", d),
+        equilibrium,
     )
 
 

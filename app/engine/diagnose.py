@@ -61,6 +61,7 @@ _OPENINGS = {
     "stretch_part": "Your {what} has {name}",
     "sin_cos": "Your {what} has {name}",
     "travelled": "Your {what} follows from {name}",
+    "terms_left_out": "Your {what} has {name}",
     "rigid": "Your {what} has {name}",
     "factor_left_out": "Your {what} has {name}",
     "units": "Your {what} has {name}",

@@ -9,7 +9,7 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine.check import allowed_names, conserved_momenta, exercises, problem
+from app.engine.check import conserved_momenta, exercises, offered_names, problem
 from app.engine.check_problem import asked_equilibrium, where_asked
 from app.engine.constraints import AXES
 from app.engine.derive import Derivation
@@ -46,9 +46,9 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
             "coordinate": name,
             "title": f"Position: {pb.label}" if step == "position" else _title(_about(d, step, pb.label)),
             "lhs": _lhs(step, name, pr, d),
-            "names": allowed_names(step, pb.kinds),
+            "names": offered_names(step, pb.kinds),
             # the names as the page prints them, each with how it is typed once (θ̇ (type theta_dot))
-            "names_said": said_all(allowed_names(step, pb.kinds)),
+            "names_said": said_all(offered_names(step, pb.kinds)),
             "answer": answer,
         }
         if step == "acceleration":

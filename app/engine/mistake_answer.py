@@ -40,6 +40,7 @@ from app.engine.compare import (
 )
 from app.engine.diagnose import MIN_POINTS, part_scales, rate_parts  # (MIN_POINTS: one home with the catalogue)
 from app.engine.mistake_families import Correct, monomial_words, said, spoken
+from app.engine.symbols import TIME
 from app.engine.textbook import unicode_text
 
 MAX_CANDIDATES = 24  # products and symbols of an answer tried as the one left unsquared
@@ -303,26 +304,69 @@ def solved_slip(answer: sp.Expr, truth: sp.Expr, groups: Groups, frequency: str 
             "the denominator is right",
             Correct("numerator", sp.expand(wrong)),
         )
+    if right is not None:
+        squares = _square_of_a_sum(bottom, right)
+        if squares is not None:
+            return _slip("square_of_a_sum", *squares, Correct("denominator", sp.expand(right)))
     numerators = "" if right is not None else f", and the numerator {spoken(top)} differs too"
     return _slip(
         "denominator",
         f"the denominator {spoken(bottom)}{numerators}",
-        _denominator_why(denominator, groups, frequency),
+        _denominator_why(denominator, groups, frequency, answer, truth),
         Correct("denominator", sp.expand(right)) if right is not None
         else Correct("denominator", denominator, "up to a constant factor"),
     )
 
 
-def _denominator_why(denominator: sp.Expr, groups: Groups, frequency: str | None) -> str:
+def _square_of_a_sum(bottom: sp.Expr, right: sp.Expr) -> tuple[str, str] | None:
+    """A denominator (a + b)² where a² + b² belongs, or the other way round: (1 + αR)² for the helix's 1 + α²R²
+    (review student-m 7), named with the cross term 2ab that tells them apart; None otherwise."""
+    for yours, correct, words in ((bottom, right, "the square of a sum for a sum of squares"),
+                                  (right, bottom, "a sum of squares for the square of a sum")):  # fmt: skip
+        square = sp.factor(yours)
+        if not (isinstance(square, sp.Pow) and square.exp == 2 and len(sp.Add.make_args(square.base)) == 2):
+            continue
+        a, b = sp.Add.make_args(square.base)
+        # (a + b)² = a² + 2ab + b²: a sum of squares lacks the cross term 2ab
+        if sp.expand(correct - a**2 - b**2) != 0:
+            continue
+        cross = spoken(sp.expand(2 * a * b))
+        shown = (spoken(square), spoken(sp.expand(correct))) if yours is bottom else (spoken(bottom), spoken(square))
+        # the place and the kind of slip; the correct denominator is kept for the student to ask for
+        return (
+            f"the denominator {shown[0]}: {words}",
+            f"({spoken(square.base)})² = {spoken(sp.expand(square))}, whose cross term {cross} "
+            f"{'is not in' if yours is bottom else 'is missing from'} the correct denominator: squaring the sum "
+            "adds that cross term, adding the squares has none",
+        )
+    return None
+
+
+def _denominator_why(
+    denominator: sp.Expr, groups: Groups, frequency: str | None, answer: sp.Expr, truth: sp.Expr
+) -> str:
     """What a solved answer's denominator is, in the step's own terms: an ω²'s the effective mass; a single
-    equation's acceleration its coefficient of q̈; coupled accelerations' (a sum) what solving them together gives."""
+    equation's acceleration its coefficient of q̈; coupled accelerations' (a sum) what solving them together gives,
+    and the body whose mass the answer leaves out, where one does (review student-m 7: the pulley's m₂)."""
     if frequency is not None:
         # ω² = U_eff″/m_eff at the equilibrium: one coordinate, no equations to solve together
         return (
             f"{frequency}² is the effective potential's second derivative over the effective mass (the coefficient "
             f"of ½ q̇² in T), both at the equilibrium: check each on its own"
         )
-    if len(groups.positions) > 1 and isinstance(sp.expand(denominator), sp.Add):
+    coordinates = [q for q in groups.positions if q != TIME]
+    if len(coordinates) > 1 and isinstance(sp.expand(denominator), sp.Add):
+        # a parameter of the correct answer the student's never holds: the equations solved as if without it
+        left = sorted(truth.free_symbols - answer.free_symbols - set(groups.positions), key=sp.default_sort_key)
+        if left:
+            names = " and ".join(spoken(s) for s in left)
+            others = ", ".join(spoken(q) for q in coordinates[:-1]) + f" and {spoken(coordinates[-1])}"
+            others += " both" if len(coordinates) == 2 else " all"
+            return (
+                f"your answer has no {names}, as if {'that body' if len(left) == 1 else 'those bodies'} did not move "
+                f"(another system's result, such as an Atwood machine's): here {others} move, and solving their "
+                f"equations together brings {names} into the denominator"
+            )
         return (
             "once the equations are solved together, the denominator collects every body the motion carries and "
             "every coupling of the accelerations"

@@ -29,6 +29,7 @@ from fractions import Fraction
 
 import sympy as sp
 
+from app.engine.check_answers import RELATIONS
 from app.engine.derive import Derivation
 from app.engine.dimensions import dimension
 from app.engine.mistake_families import (
@@ -156,6 +157,7 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
     """A factor, a sign or a swapped function on one piece of the truth, named by the piece."""
     if step == "omega_squared":
         return
+    moving = {*d.table.q, *d.table.qd, *d.table.qdd}
     base = f"{step}.piece"
     yield from _sums(truth, base, has_springs(d), d.table.q)
     if has_springs(d):
@@ -256,8 +258,13 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
                 f"the {name} terms four times too big: {_speed_doubled(d, s)}", group,
                 "check how far this body moves when the coordinates change", truth + 3 * group,
             )  # fmt: skip
-        # the student's own piece, twice the truth's, in the factored form a textbook prints (k (r − l)²)
-        yours = _factored(2 * group)
+        # the student's own piece, twice the truth's, in the factored form a textbook prints (k (r − l)²); where
+        # a constant is no part of the comparison, without the group's constant terms, which the student's answer
+        # need not have (the pulley's −M g (y₁ + y₂), never −M (y₁ + y₂ + 2 c) g: review student-m 6)
+        varying = group
+        if RELATIONS.get(step) == "constant":
+            varying = sp.Add(*(t for t in sp.Add.make_args(sp.expand(group)) if t.free_symbols & moving)) or group
+        yours = _factored(2 * varying)
         yield Mistake(
             # (in T a squared sum is a body's ½ m v², never a spring: student-i 1, the pulley's M (ẏ₁ + ẏ₂)²/4)
             f"{base}.group_doubled.{s.name}", "doubled",
@@ -500,6 +507,10 @@ def _sums(truth: sp.Expr, base: str, springs: bool, coordinates: Iterable[sp.Sym
                 changed, term = -changed, a - term
             if term.could_extract_minus_sign():
                 term = -term  # the sign of θ₂, not of −θ₂
+            # the sums without a common number (κ (2 x₁ − 2 x₂)/2, as ∂/∂x₁ of ½ κ (x₂ − x₁)² leaves it, is
+            # κ (x₁ − x₂)): the student never wrote the 2 (review student-m 2)
+            content = a.primitive()[0]
+            term = term / content
             why = (
                 "the angle between two directions is the difference of their angles from the same reference"
                 if angle
@@ -508,7 +519,7 @@ def _sums(truth: sp.Expr, base: str, springs: bool, coordinates: Iterable[sp.Sym
             # the sum as written and the sign at fault; the correct sum is kept for the student to ask for
             yield Mistake(
                 f"{base}.inner_sign.{slug(sp.sstr(a))[:32]}.{slug(sp.sstr(term))[:16]}", "inner_sign",
-                f"{sum_words(changed, coordinates)}: the sign of {spoken(term)} ({why})", a,
+                f"{sum_words(changed / content, coordinates)}: the sign of {spoken(term)} ({why})", a / content,
                 "draw the two directions and measure both angles from the same line" if angle
                 else "draw the two ends and ask which way each coordinate moves them", wrong,
                 correct=Correct("angle" if angle else "stretch", a),
@@ -723,9 +734,18 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
     for key, name, dT, dU, correct in changes[: 2 * MAX_TRAVEL]:
         if step == "equation" and k is not None:
             # L = T − U changes by ΔT − ΔU, and the equation by its Euler–Lagrange expression
-            wrong = truth + euler_lagrange(d, k, dT - dU)
-            family = "rigid" if key.startswith("rigid") else "travelled"
-            yield Mistake(f"equation.{key}", family, name, None,
+            change = euler_lagrange(d, k, dT - dU)
+            wrong = truth + change
+            if key.startswith("rigid"):
+                yield Mistake(f"equation.{key}", "rigid", name, None,
+                              "your equation is what such a step gives: if your earlier step has that slip, fix it "
+                              "there and derive again", wrong)  # fmt: skip
+                continue
+            lost = _terms_lost(d, k, truth, change, dT - dU, name)
+            if lost is not None:
+                yield Mistake(f"equation.{key}", "terms_left_out", *lost, wrong)
+                continue
+            yield Mistake(f"equation.{key}", "travelled", name, None,
                           "your equation is what such a step gives: if your earlier step has that slip, fix it there "
                           "and derive again", wrong, correct=correct)  # fmt: skip
         elif step == "acceleration":
@@ -745,6 +765,59 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
                 yield Mistake(f"omega_squared.{key}", family, name, None,
                               f"your {w2} follows from it: {w2} is the effective potential's second derivative over "
                               "the effective mass, at the equilibrium", w, correct=correct)  # fmt: skip
+
+
+def _terms_lost(
+    d: Derivation, k: int, truth: sp.Expr, change: sp.Expr, dL: sp.Expr, slip: str
+) -> tuple[str, None, str] | None:
+    """A slip of T or U that, carried into the equation of q_k, only leaves some of the equation's terms out: named
+    by the terms of this equation that are missing, with where they come from, and the earlier step blamed only
+    conditionally and second (review student-m 3: a correct T was blamed for an equation's own dropped terms).
+
+    ``change`` is the equation's change, E(ΔL) with ΔL = ΔT − ΔU; ``slip`` is "a T that …" or "a U …"."""
+    lost = sp.expand(-change)
+    right = set(sp.Add.make_args(sp.expand(truth)))
+    if lost == 0 or not set(sp.Add.make_args(lost)) <= right or lost == sp.expand(truth):
+        return None
+    # the terms of T (or of U) left out that give these terms of the equation: the part of ΔL whose
+    # Euler–Lagrange expression for q_k is not zero
+    source = sp.Add(*(t for t in sp.Add.make_args(sp.expand(-dL)) if euler_lagrange(d, k, t) != 0))
+    piece, what = ("T", source) if slip.startswith("a T") else ("U", -source)
+    t = d.table
+    moving = (*t.q, *t.qd, *t.qdd)  # each product's coordinates after its constants: m₂ l₁ l₂ (θ̈₁ cos(θ₁ − θ₂) …)
+    several = len(sp.Add.make_args(lost)) > 1
+    terms = f"the terms {_constants_first(short_form(lost), moving)}" if several else f"the term {spoken(short_form(lost), moving)}"
+    # a term of T with two different velocities is the cross term of the squared velocity
+    cross = piece == "T" and len(sp.Add.make_args(what)) == 1 and sum(what.has(v) for v in t.qd) == 2
+    kind = "the cross term" if cross else "the terms" if len(sp.Add.make_args(what)) > 1 else "the term"
+    origin = f"{kind} {spoken(short_form(what), moving)} of {piece}"
+    own = slip.split(" ", 2)[2] if slip.startswith(("a T ", "a U ")) else slip
+    comes = "they come" if several else "it comes"
+    return (
+        f"{terms} left out",
+        None,
+        f"{comes} from {origin}. If your {piece} {_as_verb(own)}, that is where the slip is; if your {piece} has "
+        f"{kind.replace('the ', 'that ', 1).replace('terms', 'part')}, the slip is in differentiating it",
+    )
+
+
+def _constants_first(expr: sp.Expr, moving: tuple[sp.Symbol, ...]) -> str:
+    """A product of constants and a sum, the constants first: m₂ l₁ l₂ (θ̈₁ cos(θ₁ − θ₂) − θ̇₁² sin(θ₁ − θ₂))."""
+    constant, rest = sp.factor_terms(expr).as_independent(*moving, as_Add=False)
+    if constant == 1 or not rest.is_Add:
+        return spoken(expr, moving)
+    sign = "−" if constant.could_extract_minus_sign() else ""
+    return f"{sign}{spoken(-constant if sign else constant)} ({spoken(rest, moving)})"
+
+
+def _as_verb(clause: str) -> str:
+    """A clause after "a T" ("that leaves out …", "with … reversed") said after "if your T": "leaves out …",
+    "has … reversed"."""
+    if clause.startswith("that "):
+        return clause[len("that ") :]
+    if clause.startswith("with "):
+        return "has " + clause[len("with ") :]
+    return clause
 
 
 def _force_sign(d: Derivation, k: int, truth: sp.Expr, u: sp.Expr) -> Iterator[Mistake]:

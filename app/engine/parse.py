@@ -42,7 +42,7 @@ should have been), ``parse_checker`` (gate 2's walk), ``parse_read`` (gates 1 an
 
 from __future__ import annotations
 
-from app.engine.parse_build import build, parse_expression
+from app.engine.parse_build import build, parse_expression, typed_terms
 from app.engine.parse_read import Node, Parsed, Size, check_expression, expression_size, narrowed, read
 from app.engine.parse_rules import (
     ALLOWED,
@@ -102,4 +102,5 @@ __all__ = [
     "parse_expression",
     "read",
     "typed",
+    "typed_terms",
 ]

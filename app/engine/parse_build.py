@@ -90,3 +90,24 @@ def build(parsed: Parsed, names: Mapping[str, sp.Symbol]) -> sp.Expr:
     if expr.has(sp.I):
         raise ExpressionError(f"the expression is not real: {stripped[:60]!r}", stripped[:60])
     return expr
+
+
+def _summands(node: Node, sign: int) -> list[tuple[int, Node]]:
+    """The terms of a sum as typed, each with its sign: a − (b + c) is +a, −b, −c; a product is one term."""
+    kind = node[0]
+    if kind in ("neg", "pos"):
+        return _summands(node[3], -sign if kind == "neg" else sign)
+    if kind == "chain" and node[4] and node[4][0][0] in ("+", "-"):
+        out = _summands(node[3], sign)
+        for op, operand in node[4]:
+            out += _summands(operand, sign if op == "+" else -sign)
+        return out
+    return [(sign, node)]
+
+
+def typed_terms(parsed: Parsed, names: Mapping[str, sp.Symbol]) -> list[sp.Expr]:
+    """The terms of an answer as typed, each built on its own (a term that another cancels is still there:
+    ``m g sin α − m g sin α`` is two terms here, nothing once built whole)."""
+    stripped, offset = placed(parsed.text)
+    builder = Builder(stripped, offset, names)
+    return [sign * builder.build(node) for sign, node in _summands(parsed.tree, 1)]

@@ -30,7 +30,7 @@ def as_typed(
 ) -> tuple[Mistake, str]:
     """``mistake`` and its ``hint`` with the term named as the student's answer holds it (an equation's)."""
     if mistake.family == "inner_sign" and mistake.piece is not None:
-        return _inner_as_typed(mistake, hint, answer, tuple(coordinates))
+        return _inner_as_typed(mistake, hint, answer, scale, tuple(coordinates))
     if step != "equation" or mistake.piece is None:
         return mistake, hint
     terms = {sp.expand(t) for t in sp.Add.make_args(sp.expand(answer))}
@@ -73,23 +73,67 @@ def _factor(answer: sp.Expr, wrong: sp.Expr | None, terms: set[sp.Expr]) -> tupl
 
 
 def _inner_as_typed(
-    mistake: Mistake, hint: str, answer: sp.Expr, coordinates: tuple[sp.Symbol, ...]
+    mistake: Mistake, hint: str, answer: sp.Expr, scale: sp.Expr, coordinates: tuple[sp.Symbol, ...]
 ) -> tuple[Mistake, str]:
     """A sum with one sign changed (a stretch x₁ − x₂ − l₀), quoted as the answer holds it: the answer's sum
-    whose square is that of the catalogue's changed sum (a stretch's sign as a whole does not matter)."""
+    whose square is that of the catalogue's changed sum (a stretch's sign as a whole does not matter); where
+    the answer holds no such sum (it multiplied it out), the answer's own term whose sign is wrong."""
     right = mistake.piece
     if right is None:
         return mistake, hint
+    content = right.primitive()[0] if isinstance(right, sp.Add) else sp.Integer(1)
     for typed in (a for a in sp.preorder_traversal(answer) if isinstance(a, sp.Add)):
         for term in right.args:
             changed = right - 2 * term
+<<<<<<< HEAD
             if sp.expand(typed**2 - changed**2) == 0:
                 if not mistake.name.startswith(f"{sum_words(changed, coordinates)}: "):
+=======
+            if any(sp.expand(typed**2 - c**2) == 0 for c in (changed, changed / content)):
+                if not mistake.name.startswith(f"{sum_words(changed / content, coordinates)} where "):
+>>>>>>> t-r
                     return mistake, hint
                 rest = mistake.name[len(sum_words(changed, coordinates)) :]
                 name = sum_words(typed, coordinates) + rest
                 return dataclasses.replace(mistake, name=name), _renamed(hint, mistake.name, name)
+    return _inner_term_as_typed(mistake, hint, answer, scale, coordinates)
+
+
+def _inner_term_as_typed(
+    mistake: Mistake, hint: str, answer: sp.Expr, scale: sp.Expr, coordinates: tuple[sp.Symbol, ...]
+) -> tuple[Mistake, str]:
+    """The sum's term of the wrong sign as the answer holds it multiplied out: (k + κ) x₁ + κ x₂ for
+    k x₁ + κ (x₁ − x₂) is "your term +κ x₂, which should be −κ x₂" (review student-m 2)."""
+    right, wrong = mistake.piece, mistake.expr
+    if right is None or wrong is None or " (" not in mistake.name:
+        return mistake, hint
+    terms = {sp.expand(t) for t in sp.Add.make_args(sp.expand(answer))}
+    for term in right.args:
+        changed = right - 2 * term
+        # only a sum the answer holds to the first power (a force κ (x₁ − x₂)): a square's sign changes more than
+        # one term once multiplied out, and is quoted as a sum or not at all
+        marker = sp.Dummy()
+        held = wrong.xreplace({changed: marker})
+        if not held.has(marker) or sp.diff(held, marker, 2) != 0 or sp.diff(held, marker).has(marker):
+            continue
+        # the truth is the mistake with the sum put right; they differ by twice the term's part, with its sign
+        truth = wrong.xreplace({changed: right})
+        part = sp.expand(truth - wrong) / 2
+        mine = sp.expand(-scale * part)
+        if len(sp.Add.make_args(part)) != 1 or mine not in terms:
+            continue
+        why = mistake.name[mistake.name.index(" (") :]
+        yours, should = _signed(mine, coordinates), _signed(-mine, coordinates)
+        name = f"your term {yours}, which should be {should}{why}"
+        return dataclasses.replace(mistake, name=name), hint.replace(
+            mistake.name, f"the term {yours}, which should be {should}{why}"
+        )
     return mistake, hint
+
+
+def _signed(term: sp.Expr, coordinates: tuple[sp.Symbol, ...]) -> str:
+    """A term with its sign written out, as it stands in a sum: +κ x₂, −κ x₂."""
+    return f"−{spoken(-term, coordinates)}" if term.could_extract_minus_sign() else f"+{spoken(term, coordinates)}"
 
 
 def _renamed(hint: str, old: str, new: str) -> str:

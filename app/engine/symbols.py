@@ -18,6 +18,9 @@ from app.engine.errors import DerivationError
 from app.engine.names import latex
 from app.engine.parse import check_name
 
+# the time, one symbol everywhere (a coordinate's group of symbols holds it beside the coordinates)
+TIME = sp.Symbol("t", real=True)
+
 
 @dataclass(frozen=True)
 class SymbolTable:
@@ -38,7 +41,7 @@ class SymbolTable:
 
     @property
     def t(self) -> sp.Symbol:
-        return sp.Symbol("t", real=True)
+        return TIME
 
     @property
     def q(self) -> tuple[sp.Symbol, ...]:

@@ -25,6 +25,7 @@ from typing import Any
 from app.engine.check import (
     CheckError,
     Problem,
+    cancelling_terms,
     follow_up_answer,
     follow_up_mistake,
     follow_up_of,
@@ -203,7 +204,9 @@ def check_job(key: str, blob: bytes, answer: Parsed | str, follow_up: str | None
         pb = loaded(key, blob)
         if follow_up is None:
             built = parse_answer(pb, answer)
-            return remembered((key, "judge", built), lambda: dumps(judge_of(pb, built)))
+            # two typed terms that cancel are gone from the built answer: they are part of what is judged
+            cancelling = cancelling_terms(pb, answer)
+            return remembered((key, "judge", built, cancelling), lambda: dumps(judge_of(pb, built, cancelling)))
         mistake = follow_up_mistake(pb, follow_up)
         built = follow_up_answer(pb, mistake, answer)
         return remembered((key, "follow-up", follow_up, built), lambda: dumps(follow_up_of(pb, mistake, built)))

@@ -13,7 +13,7 @@ from app.engine.check import STEPS, CheckError, check_answer, exercises, judge, 
 from app.engine.derive import Derivation, derive
 from app.engine.dimensions import dimension, system_dimensions
 from app.engine.exercises import exercise_json
-from app.engine.mistake_families import spoken
+from app.engine.mistake_families import spoken, sum_words
 from app.engine.mistakes import (
     CONSTANT_FACTOR_HINT,
     MISSING_FACTOR_HINT,
@@ -192,8 +192,11 @@ def test_refusals_in_pure_python_name_the_steps_rules():
     assert (velocity.value.start, velocity.value.end) == (6, 15)
     with pytest.raises(CheckError, match="what you solve for"):
         check_answer("-g*sin(theta)/R + 0*theta_ddot", "acceleration", kinds)
-    with pytest.raises(CheckError, match="constant"):
-        check_answer("g*cos(theta)/R", "omega_squared", kinds)
+    # an ω² with θ still in it is read (and judged: not evaluated at the equilibrium); a velocity or t is refused
+    check_answer("g*cos(theta)/R", "omega_squared", kinds)
+    for typed in ("g/R + 0*theta_dot", "g/R + 0*t"):
+        with pytest.raises(CheckError, match="constant"):
+            check_answer(typed, "omega_squared", kinds)
     with pytest.raises(CheckError, match="allowed here: R, g, m, t, theta, theta_dot"):
         check_answer("m*x_dot", "kinetic", kinds)
 
@@ -305,6 +308,9 @@ QUOTED = re.compile(
     # an angle's sign inside a function, quoted as typed: "has θ₁ + θ₂: the sign of θ₂"
     r"|has (?P<inner>.+?): the sign of "
 )
+# a stretch's term of the wrong sign, quoted as the student multiplied it out: "has the term +κ x₂, which should be
+# −κ x₂ (a stretch is …)", where the catalogue says "has x₁ + x₂ where x₁ − x₂ belongs: the sign of x₂ (a stretch …"
+SIGNED = re.compile(r"has the term (?P<signed>[+−].+?), which should be [+−].+? (?=\()")
 
 
 def typed_terms(typed: str, d: Derivation, kind: str) -> set[str]:
@@ -315,10 +321,12 @@ def typed_terms(typed: str, d: Derivation, kind: str) -> set[str]:
 
 
 def typed_arguments(typed: str, d: Derivation) -> set[str]:
-    """Every function's argument in a typed answer, as a hint prints it (θ₁ + θ₂ of cos(θ₁ + θ₂))."""
+    """Every function's argument in a typed answer, as a hint prints it (θ₁ + θ₂ of cos(θ₁ + θ₂)), and every sum
+    it holds, as a stretch is quoted (x₁ + x₂ + l₀ of k (l₀ + x₁ + x₂))."""
     names = {**d.table.namespace(), **{s.name: s for s in d.table.qdd}}
-    found = sp.preorder_traversal(parse_expression(typed, names))
-    return {spoken(a) for f in found if isinstance(f, sp.Function) for a in f.args}
+    found = list(sp.preorder_traversal(parse_expression(typed, names)))
+    sums = {sum_words(a, d.table.q) for a in found if isinstance(a, sp.Add)}
+    return {spoken(a) for f in found if isinstance(f, sp.Function) for a in f.args} | sums
 
 
 FAMILY_STEPS = [
@@ -344,7 +352,15 @@ def test_every_generated_mistake_typed_back_is_named(system, step, coordinate):
         # the catalogue's own mistake is named, by the catalogue's words
         assert result["mistake"] and result["mistake"]["key"] == mistake.key, (mistake.key, result)
         want = hint if pb.springs else without_springs(hint)
-        if result["hint"] != want:
+        signed = SIGNED.search(result["hint"])
+        if result["hint"] != want and signed and QUOTED.search(want) and QUOTED.search(want)["inner"]:
+            theirs = QUOTED.search(want)
+            # the same opening and the same reason; the term quoted is one of the student's, with its sign
+            assert result["hint"][: signed.start()] == want[: theirs.start()], (result["hint"], want)
+            assert result["hint"][signed.end() :] == want[want.index(" (", theirs.end()) + 1 :], (result["hint"], want)
+            quoted = signed["signed"][1:]
+            assert quoted in typed_terms(typed, derivation(system), "the sign of"), (typed, quoted)
+        elif result["hint"] != want:
             # a term is quoted as the student typed it, where the catalogue quotes the engine's piece: the rest of
             # the hint is the catalogue's, and the quoted term is one the student finds in their own answer
             mine, theirs = QUOTED.search(result["hint"]), QUOTED.search(want)

@@ -49,7 +49,7 @@ def test_a_declared_systems_answer_is_held_to_the_momenta_the_derivation_finds_c
     for answer in ("k/m - w**2 + 0*p_r", "  k/m - p_r**2"):
         refused = outcome(lambda a=answer: parse_answer(pb, check_answer(a, "omega_squared", web)))
         assert refused == outcome(lambda a=answer: parse_answer(pb, a))
-        assert refused[0] == "refused" and refused[1].startswith("answer: unknown name (allowed here: a, k, m, w, pi)")
+        assert refused[0] == "refused" and refused[1].startswith("answer: unknown name (allowed here: a, k, m, r, w, pi)")
         assert refused[3] == "p_r" and answer[refused[4] : refused[5]] == "p_r"
     right = parse_answer(pb, check_answer("k/m - w**2", "omega_squared", web))
     assert outcome(lambda: right) == outcome(lambda: parse_answer(pb, "k/m - w**2"))

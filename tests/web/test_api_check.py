@@ -258,3 +258,18 @@ def test_the_correct_part_comes_through_the_api_beside_the_named_slip(client):
     assert body["correct_part"]["what"] == "denominator" and body["correct_part"]["latex"], body["correct_part"]
     plain = check(client, {"step": "kinetic", "answer": "m*R**2*theta_dot**2"}).json()
     assert plain["correct_part"] is None
+
+
+def test_what_the_student_typed_reaches_the_verdict_through_the_worker(client):
+    # review student-m #113: two typed terms that cancel are judged apart from the same answer built without them
+    # (the worker remembers verdicts by the built answer), and #24: an ω² with θ still in it is graded, not refused
+    typed = "m*D_ddot + m*X_ddot*cos(alpha) - m*g*sin(alpha) + m*g*sin(alpha) = 0"
+    twice = check(client, {"step": "equation", "coordinate": "D", "answer": typed}, "movable-incline")
+    assert twice.status_code == 200, twice.text
+    assert twice.json()["mistake"]["key"] == "equation.cancelling_terms", twice.json()
+    plain = check(client, {"step": "equation", "coordinate": "D", "answer": "m*D_ddot + m*X_ddot*cos(alpha)"},
+                  "movable-incline").json()  # fmt: skip
+    assert plain["mistake"]["key"] != "equation.cancelling_terms", plain
+    omega = check(client, {"step": "omega_squared", "answer": "g/R*cos(theta)"})
+    assert omega.status_code == 200, omega.text
+    assert omega.json()["mistake"]["key"] == "omega_squared.not_at_equilibrium", omega.json()
