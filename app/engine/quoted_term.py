@@ -85,15 +85,11 @@ def _inner_as_typed(
     for typed in (a for a in sp.preorder_traversal(answer) if isinstance(a, sp.Add)):
         for term in right.args:
             changed = right - 2 * term
-<<<<<<< HEAD
-            if sp.expand(typed**2 - changed**2) == 0:
-                if not mistake.name.startswith(f"{sum_words(changed, coordinates)}: "):
-=======
             if any(sp.expand(typed**2 - c**2) == 0 for c in (changed, changed / content)):
-                if not mistake.name.startswith(f"{sum_words(changed / content, coordinates)} where "):
->>>>>>> t-r
+                written = sum_words(changed / content, coordinates)
+                if not mistake.name.startswith(f"{written}: "):
                     return mistake, hint
-                rest = mistake.name[len(sum_words(changed, coordinates)) :]
+                rest = mistake.name[len(written) :]
                 name = sum_words(typed, coordinates) + rest
                 return dataclasses.replace(mistake, name=name), _renamed(hint, mistake.name, name)
     return _inner_term_as_typed(mistake, hint, answer, scale, coordinates)
