@@ -217,7 +217,7 @@ SPHERICAL_PENDULUM: dict[str, str] = {
     "effective-potential": "Gravity plus the barrier p_φ²/(2 m R² sin² θ) that keeps the ball off the axis.",
     "energy-integral": "At fixed p_φ, θ moves in U_eff between two turning angles.",
     "time-integral": "The time between the turning angles is half the period of the nodding motion: down and up again is a whole one.",
-    "reduced-equilibria": "The conical motion sits at the bottom of U_eff, below the horizontal.",
+    "reduced-equilibria": "The conical motion sits at the bottom of U_eff, below the horizontal; U_eff′(θ₀) = 0 fixes p_φ by θ₀, so ω² is written in θ₀ alone.",
     "equilibria": "At rest the ball can hang at the bottom or balance at the top.",
     "steady-motion": "About the conical motion θ nods with the frequency given by U_eff″ at its bottom.",
     "constraints": "The string keeps the ball on the sphere of radius R about the pivot.",
