@@ -14,7 +14,8 @@ from app.engine.constraints import ConstraintForce
 from app.engine.derive import LARGE_FROM, Derivation
 from app.engine.errata import errata_json
 from app.engine.modes import NormalModes
-from app.engine.names import MASS_MATRIX, display_names, unicode
+from app.engine.names import MASS_MATRIX, display_names, latex, unicode
+from app.engine.parse import parse_expression
 from app.engine.report import (
     SCALED_CLAUSE,
     Printer,
@@ -135,6 +136,24 @@ def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[s
     return {}
 
 
+def _dependent_accelerations(d: Derivation, scene: Scene | None, pr: Printer) -> dict[str, Any]:
+    """The acceleration of each position the scene names that the coordinates fix (``Scene.dependent``), by name:
+    for Y(q, t), Ÿ = Σ ∂Y/∂q q̈ + Σ ∂²Y/∂q∂q′ q̇ q̇′ + …, the total time derivative taken twice with each q̈ put in
+    from the accelerations (none where they are not in closed form)."""
+    if scene is None or not scene.dependent or not d.equations.closed_form:
+        return {}
+    table = d.table
+    names = {s.name: s for s in (*table.q, *table.params, table.t)}
+    solved = dict(zip(table.qdd, d.equations.accelerations, strict=True))
+    out = {}
+    for name, text in scene.dependent.items():
+        position = parse_expression(text, names)
+        # Ÿ = d²Y/dt² along the motion, with the accelerations of the coordinates solved for
+        second = table.dt(table.dt(position)).xreplace(solved)
+        out[name] = pr.pair(_shown(meaning.by_coordinate(sp.factor(second), table.q)))
+    return out
+
+
 def _inequality(pr: Printer, relation: sp.Relational | None) -> dict[str, Any] | None:
     """b > a with each side in its textbook form (R ω² > g), as text and LaTeX; None for none."""
     if relation is None:
@@ -179,6 +198,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
             {"coordinate": name, **pair} for name, pair in zip(table.names, _equation_pairs(d, pr), strict=True)
         ],
         "accelerations": _accelerations(d, pr, skipped),
+        "dependent_accelerations": _dependent_accelerations(d, scene, pr),
         "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],
         "forcing": [pr.pair(_shown(x)) for x in eqs.forcing],
         "momenta": {name: pr.pair(momentum(d, k)) for k, name in enumerate(table.names)},
@@ -256,12 +276,28 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     if beyond:
         # built last, so that they never take the chapter's steps' share of the display budget
         add_beyond(d, scene, result, pr, skipped)
+    if result["dependent_accelerations"]:
+        result["steps"] = with_dependent(result["steps"], result["dependent_accelerations"])
     if scene is not None:
         # a chapter scene explains each step in its own terms; the generic sentence stays otherwise
         result["steps"] = explained(scene, result["steps"])
     result["steps"] = one_equilibria_step(d, result["steps"])
     result["skipped"] = [{"member": s.member, "reason": s.reason} for s in skipped]
     return result
+
+
+def with_dependent(steps: list[dict[str, Any]], dependent: dict[str, Any]) -> list[dict[str, Any]]:
+    """The accelerations step with a row for each position the coordinates fix (Ÿ under ÿ₁ and ÿ₂), aligned at
+    its '=' with theirs."""
+    out = []
+    for s in steps:
+        if s["key"] == "accelerations" and s["latex"].endswith(r"\end{aligned}"):
+            rows = "".join(rf" \\ {latex(name + '_ddot')} &= {pair['latex']}" for name, pair in dependent.items())
+            texts = "".join(f", {pair['sympy']}" for pair in dependent.values())
+            s = {**s, "latex": s["latex"].removesuffix(r"\end{aligned}") + rows + r"\end{aligned}",
+                 "sympy": s["sympy"].removesuffix("]") + texts + "]"}  # fmt: skip
+        out.append(s)
+    return out
 
 
 def explained(scene: Scene, steps: list[dict[str, Any]]) -> list[dict[str, Any]]:

@@ -244,3 +244,22 @@ def test_the_conical_motions_frequency_is_printed_in_its_angle_alone():
     value = served.xreplace({names["g"]: defaults["g"], names["R"]: defaults["R"], names["theta0"]: theta0})
     assert float(value) == pytest.approx(printed, abs=0.06)
 
+
+def test_the_pulleys_middle_mass_has_its_acceleration_typeset_in_results():
+    """prof-m 6: the statement asks for the accelerations of all three masses; Ÿ was only in the prose of the
+    accelerations step. It is derived from Y = −(y₁ + y₂)/2 − c and typeset in the step and in Results."""
+    from app.viz.page_model import _summary
+
+    doc = derivation_document("pulley")
+    served = doc["dependent_accelerations"]["Y"]
+    names = {n: sp.Symbol(n, real=True) for n in ("g", "M", "m1", "m2")}
+    Y_ddot = sp.sympify(served["sympy"], locals=names)
+    y1, y2 = (sp.sympify(doc["accelerations"][c]["sympy"], locals=names) for c in ("y1", "y2"))
+    # Ÿ = −(ÿ₁ + ÿ₂)/2 from the string's length, and the textbook's [4m₁m₂ − M(m₁ + m₂)] g/[4m₁m₂ + M(m₁ + m₂)]
+    g, M, m1, m2 = names.values()
+    assert sp.simplify(Y_ddot + (y1 + y2) / 2) == 0
+    assert sp.simplify(Y_ddot - (4 * m1 * m2 - M * (m1 + m2)) * g / (4 * m1 * m2 + M * (m1 + m2))) == 0
+    row = r"\ddot{Y} = " + served["latex"]
+    assert row in _summary(doc)["accelerations"]
+    step = next(s for s in doc["steps"] if s["key"] == "accelerations")
+    assert r"\ddot{Y} &= " + served["latex"] in step["latex"]
