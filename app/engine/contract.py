@@ -28,7 +28,7 @@ from app.engine.report import (
     momentum,
 )
 from app.engine.report import display as _show
-from app.engine.report_members import GREEK_CLAUSE, constraint_steps, new_lagrangian, transform_steps
+from app.engine.report_members import GREEK_CLAUSE, NORMALS_CLAUSE, constraint_steps, new_lagrangian, transform_steps
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.rods import fixed_distances
 from app.engine.root_forms import power_form, trig_cancelled
@@ -318,6 +318,9 @@ def explained(scene: Scene, steps: list[dict[str, Any]]) -> list[dict[str, Any]]
         # why the Cartesian letters are ξ, η, ζ is the engine's to say too (it knows which names are taken)
         if GREEK_CLAUSE in engine and GREEK_CLAUSE not in text:
             text = f"{text} {engine[engine.index(GREEK_CLAUSE) :]}"
+        # so is whether the equations for the multipliers are coupled (from their cross coefficients)
+        if NORMALS_CLAUSE in engine and NORMALS_CLAUSE not in text:
+            text = f"{text} {engine[engine.index(NORMALS_CLAUSE) :]}"
         out.append({**s, "explanation": text})
     return out
 
