@@ -167,7 +167,7 @@ def _vanishing(cp: Printer, c: sp.Expr, m: Multipliers) -> str:
         ratio = sp.cancel(c / g)
         if not ratio.free_symbols & set(m.positions):
             factor = "" if ratio == 1 else ("-" if ratio == -1 else _factor(cp, gathered(ratio)) + r"\,")
-            return rf"{shown} = {factor}{CONSTRAINT}_{{{a}}} = 0"
+            return rf"{shown} = {factor}{notation.surface(a)[0]} = 0"
     return f"{shown} = 0"
 
 
