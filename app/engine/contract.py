@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from typing import Any, TypeVar
 
 import sympy as sp
@@ -146,7 +147,7 @@ def _dependent_accelerations(d: Derivation, scene: Scene | None, pr: Printer) ->
     names = {s.name: s for s in (*table.q, *table.params, table.t)}
     solved = dict(zip(table.qdd, d.equations.accelerations, strict=True))
     out = {}
-    for name, text in scene.dependent.items():
+    for name, (text, _) in scene.dependent.items():
         position = parse_expression(text, names)
         # Ÿ = d²Y/dt² along the motion, with the accelerations of the coordinates solved for
         second = table.dt(table.dt(position)).xreplace(solved)
@@ -278,6 +279,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
         add_beyond(d, scene, result, pr, skipped)
     if result["dependent_accelerations"]:
         result["steps"] = with_dependent(result["steps"], result["dependent_accelerations"])
+        result["notation"] = with_dependent_letters(result["notation"], scene, d)
     if scene is not None:
         # a chapter scene explains each step in its own terms; the generic sentence stays otherwise
         result["steps"] = explained(scene, result["steps"])
@@ -298,6 +300,21 @@ def with_dependent(steps: list[dict[str, Any]], dependent: dict[str, Any]) -> li
                  "sympy": s["sympy"].removesuffix("]") + texts + "]"}  # fmt: skip
         out.append(s)
     return out
+
+
+def with_dependent_letters(rows: list[dict[str, Any]], scene: Scene | None, d: Derivation) -> list[dict[str, Any]]:
+    """The Symbols rows with one for each position the coordinates fix (Y, the middle mass's height), after the
+    coordinates' rows, in the unit of the coordinates it is made of."""
+    if scene is None:
+        return rows
+    units = {latex(n): r["unit"] for n in d.table.names for r in rows if r["latex"] == latex(n)}
+    added = []
+    for name, (text, what) in scene.dependent.items():
+        made_of = [n for n in d.table.names if re.search(rf"\b{n}\b", text)]
+        unit = units.get(latex(made_of[0]), "") if made_of else ""
+        added.append({"latex": latex(name), "unicode": unicode(name), "meaning": what, "unit": unit, "kind": "derived"})
+    after = max((i + 1 for i, r in enumerate(rows) if r["kind"] == "coordinate"), default=0)
+    return rows[:after] + added + rows[after:]
 
 
 def explained(scene: Scene, steps: list[dict[str, Any]]) -> list[dict[str, Any]]:

@@ -222,6 +222,7 @@ class Scene:
     # value, its angle from the downward vertical, π minus it, is given beside it
     upward_angles: tuple[str, ...] = ()
     # a position the statement names that the constraints fix by the coordinates (the pulley's middle mass,
-    # Y = −(y1 + y2)/2 − c), by name: its acceleration, derived from the coordinates', is printed beside theirs
-    # in the accelerations step and in Results, as the statement asks for it
-    dependent: Mapping[str, str] = field(default_factory=dict)
+    # Y = −(y1 + y2)/2 − c), by name, with what it is: its acceleration, derived from the coordinates', is printed
+    # beside theirs in the accelerations step and in Results, as the statement asks for it; the Symbols table says
+    # what the letter is
+    dependent: Mapping[str, tuple[str, str]] = field(default_factory=dict)

@@ -263,3 +263,6 @@ def test_the_pulleys_middle_mass_has_its_acceleration_typeset_in_results():
     assert row in _summary(doc)["accelerations"]
     step = next(s for s in doc["steps"] if s["key"] == "accelerations")
     assert r"\ddot{Y} &= " + served["latex"] in step["latex"]
+    # the letter has its Symbols row, in the unit of the heights it is made of
+    row = next(r for r in doc["notation"] if r["latex"] == "Y")
+    assert (row["meaning"], row["unit"]) == ("height of the middle mass M, measured upward", "m")
