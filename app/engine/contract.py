@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from typing import Any, TypeVar
 
 import sympy as sp
@@ -14,7 +15,8 @@ from app.engine.constraints import ConstraintForce
 from app.engine.derive import LARGE_FROM, Derivation
 from app.engine.errata import errata_json
 from app.engine.modes import NormalModes
-from app.engine.names import MASS_MATRIX, display_names, unicode
+from app.engine.names import MASS_MATRIX, display_names, latex, unicode
+from app.engine.parse import parse_expression
 from app.engine.report import (
     SCALED_CLAUSE,
     Printer,
@@ -28,7 +30,7 @@ from app.engine.report import (
     shown_accelerations,
 )
 from app.engine.report import display as _show
-from app.engine.report_members import GREEK_CLAUSE, constraint_steps, new_lagrangian, transform_steps
+from app.engine.report_members import GREEK_CLAUSE, NORMALS_CLAUSE, constraint_steps, new_lagrangian, transform_steps
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.rods import fixed_distances
 from app.engine.root_forms import power_form, trig_cancelled
@@ -138,6 +140,24 @@ def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[s
     return {}
 
 
+def _dependent_accelerations(d: Derivation, scene: Scene | None, pr: Printer) -> dict[str, Any]:
+    """The acceleration of each position the scene names that the coordinates fix (``Scene.dependent``), by name:
+    for Y(q, t), Ÿ = Σ ∂Y/∂q q̈ + Σ ∂²Y/∂q∂q′ q̇ q̇′ + …, the total time derivative taken twice with each q̈ put in
+    from the accelerations (none where they are not in closed form)."""
+    if scene is None or not scene.dependent or not d.equations.closed_form:
+        return {}
+    table = d.table
+    names = {s.name: s for s in (*table.q, *table.params, table.t)}
+    solved = dict(zip(table.qdd, d.equations.accelerations, strict=True))
+    out = {}
+    for name, (text, _) in scene.dependent.items():
+        position = parse_expression(text, names)
+        # Ÿ = d²Y/dt² along the motion, with the accelerations of the coordinates solved for
+        second = table.dt(table.dt(position)).xreplace(solved)
+        out[name] = pr.pair(_shown(meaning.by_coordinate(sp.factor(second), table.q)))
+    return out
+
+
 def _inequality(pr: Printer, relation: sp.Relational | None) -> dict[str, Any] | None:
     """b > a with each side in its textbook form (R ω² > g), as text and LaTeX; None for none."""
     if relation is None:
@@ -182,6 +202,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
             {"coordinate": name, **pair} for name, pair in zip(table.names, _equation_pairs(d, pr), strict=True)
         ],
         "accelerations": _accelerations(d, pr, skipped),
+        "dependent_accelerations": _dependent_accelerations(d, scene, pr),
         "mass_matrix": [[pr.pair(x) for x in row] for row in eqs.mass_matrix.tolist()],
         "forcing": [pr.pair(_shown(x)) for x in eqs.forcing],
         "momenta": {name: pr.pair(momentum(d, k)) for k, name in enumerate(table.names)},
@@ -259,12 +280,44 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     if beyond:
         # built last, so that they never take the chapter's steps' share of the display budget
         add_beyond(d, scene, result, pr, skipped)
+    if result["dependent_accelerations"]:
+        result["steps"] = with_dependent(result["steps"], result["dependent_accelerations"])
+        result["notation"] = with_dependent_letters(result["notation"], scene, d)
     if scene is not None:
         # a chapter scene explains each step in its own terms; the generic sentence stays otherwise
         result["steps"] = explained(scene, result["steps"])
     result["steps"] = one_equilibria_step(d, result["steps"])
     result["skipped"] = [{"member": s.member, "reason": s.reason} for s in skipped]
     return result
+
+
+def with_dependent(steps: list[dict[str, Any]], dependent: dict[str, Any]) -> list[dict[str, Any]]:
+    """The accelerations step with a row for each position the coordinates fix (Ÿ under ÿ₁ and ÿ₂), aligned at
+    its '=' with theirs."""
+    out = []
+    for s in steps:
+        if s["key"] == "accelerations" and s["latex"].endswith(r"\end{aligned}"):
+            rows = "".join(rf" \\ {latex(name + '_ddot')} &= {pair['latex']}" for name, pair in dependent.items())
+            texts = "".join(f", {pair['sympy']}" for pair in dependent.values())
+            s = {**s, "latex": s["latex"].removesuffix(r"\end{aligned}") + rows + r"\end{aligned}",
+                 "sympy": s["sympy"].removesuffix("]") + texts + "]"}  # fmt: skip
+        out.append(s)
+    return out
+
+
+def with_dependent_letters(rows: list[dict[str, Any]], scene: Scene | None, d: Derivation) -> list[dict[str, Any]]:
+    """The Symbols rows with one for each position the coordinates fix (Y, the middle mass's height), after the
+    coordinates' rows, in the unit of the coordinates it is made of."""
+    if scene is None:
+        return rows
+    units = {latex(n): r["unit"] for n in d.table.names for r in rows if r["latex"] == latex(n)}
+    added = []
+    for name, (text, what) in scene.dependent.items():
+        made_of = [n for n in d.table.names if re.search(rf"\b{n}\b", text)]
+        unit = units.get(latex(made_of[0]), "") if made_of else ""
+        added.append({"latex": latex(name), "unicode": unicode(name), "meaning": what, "unit": unit, "kind": "derived"})
+    after = max((i + 1 for i, r in enumerate(rows) if r["kind"] == "coordinate"), default=0)
+    return rows[:after] + added + rows[after:]
 
 
 def explained(scene: Scene, steps: list[dict[str, Any]]) -> list[dict[str, Any]]:
@@ -285,6 +338,9 @@ def explained(scene: Scene, steps: list[dict[str, Any]]) -> list[dict[str, Any]]
         # why the Cartesian letters are ξ, η, ζ is the engine's to say too (it knows which names are taken)
         if GREEK_CLAUSE in engine and GREEK_CLAUSE not in text:
             text = f"{text} {engine[engine.index(GREEK_CLAUSE) :]}"
+        # so is whether the equations for the multipliers are coupled (from their cross coefficients)
+        if NORMALS_CLAUSE in engine and NORMALS_CLAUSE not in text:
+            text = f"{text} {engine[engine.index(NORMALS_CLAUSE) :]}"
         out.append({**s, "explanation": text})
     return out
 

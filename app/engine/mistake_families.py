@@ -139,6 +139,9 @@ def _rank(factor: sp.Expr, coordinates: frozenset[sp.Symbol] = frozenset()) -> t
             return (1, 0, name.lower())
         if base in coordinates:
             return (2, 2, name.lower())
+        # the time last, after its rate: an angle that grows with time is ω t, never t ω (cos(ω t))
+        if name == "t":
+            return (2, 3, name)
         return (2, int(stem in _GREEK), name.lower())
     return (4, 0, sp.sstr(factor))
 

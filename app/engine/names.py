@@ -106,16 +106,25 @@ def latex(name: str) -> str:
     """A symbol name as LaTeX; a velocity's dot sits on the stem, not on the subscript."""
     for suffix, accent, _ in _DOTS:
         if name.endswith(suffix):
-            stem, sub = _tex_base(name[: -len(suffix)])
+            base = name[: -len(suffix)]
+            if "_" in base:
+                # a rate of a subscripted name: the dot on the letter, not over the subscript (p_theta_dot -> ṗ_θ,
+                # \dot{p}_{\theta}, as a textbook prints Hamilton's ṗ_θ = −∂H/∂θ)
+                head, _, tail = base.partition("_")
+                return f"{latex(head + suffix)}_{{{_tex_subscript(tail)}}}"
+            stem, sub = _tex_base(base)
             return rf"\{accent}{{{stem}}}" + (f"_{{{sub}}}" if sub else "")
     if "_" in name:
         head, _, tail = name.partition("_")
-        # a word as a subscript is upright text: U_eff -> U_{\text{eff}}
-        word = tail.isalpha() and len(tail) > 1 and tail not in GREEK
-        sub = r"\text{" + tail + "}" if word else latex(tail)
-        return f"{latex(head)}_{{{sub}}}"
+        return f"{latex(head)}_{{{_tex_subscript(tail)}}}"
     stem, sub = _tex_base(name)
     return stem + (f"_{{{sub}}}" if sub else "")
+
+
+def _tex_subscript(tail: str) -> str:
+    """What follows a name's ``_`` as its LaTeX subscript; a word is upright text: U_eff -> U_{\\text{eff}}."""
+    word = tail.isalpha() and len(tail) > 1 and tail not in GREEK
+    return r"\text{" + tail + "}" if word else latex(tail)
 
 
 def unicode(name: str) -> str:
@@ -125,7 +134,12 @@ def unicode(name: str) -> str:
         return " + ".join(unicode(part) for part in name.split(" + "))
     for suffix, _, mark in _DOTS:
         if name.endswith(suffix):
-            return _uni_base(name[: -len(suffix)], mark)
+            base = name[: -len(suffix)]
+            if "_" in base:
+                # the dot on the letter before the subscript: p_theta_dot -> ṗ_θ
+                head, _, tail = base.partition("_")
+                return unicode(f"{head}{suffix}") + "_" + unicode(tail)
+            return _uni_base(base, mark)
     if "_" in name:
         head, _, tail = name.partition("_")
         return _uni_base(head) + "_" + _uni_base(tail)

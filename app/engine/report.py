@@ -811,6 +811,25 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
             rows = [rf"U_\text{{eff}}' = {pr.tex(red.equilibrium_condition)} \neq 0", r"\text{no equilibrium}"]
             sym = [red.equilibrium_condition]
             why = f"U_eff′ does not depend on {unicode(red.coordinate)} and is not zero, so there is no equilibrium."
+        elif steady is not None:
+            # a steady motion whose root θ₀ has no closed form (the spherical pendulum's cone): the condition
+            # U_eff′(θ₀) = 0 still fixes the momentum, p² = −B(θ₀)/A(θ₀), and ω² = U_eff″/m_eff is written with it,
+            # in θ₀ and the parameters alone, as a textbook prints it (reduction._steady_omega_squared)
+            r0 = sp.Symbol(r.name + "0", real=True)
+            # over one denominator: −g(1 + 3 cos² θ₀)/(R cos θ₀), not −(1/cos θ₀ + 3 cos θ₀) g/R
+            at = sp.factor_terms(sp.together(trig_cancelled(steady.xreplace({r: r0}))))
+            condition = red.equilibrium_condition.xreplace({r: r0})
+            rows = [
+                rf"U_\text{{eff}}'({rn}_0) = {pr.tex(condition)} = 0",
+                rf"{omega}^2 = \frac{{U_\text{{eff}}''({rn}_0)}}{{m_\text{{eff}}}} = {pr.tex(at)}",
+            ]
+            sym = [condition, at]
+            momentum, root = unicode(red.momenta[0].name), unicode(r0.name)
+            why = (
+                f"A steady motion sits at a root {root} of U_eff′, here found numerically; about it, ω² = "
+                f"U_eff″/m_eff. The condition U_eff′({root}) = 0 fixes {momentum}² by {root}, and ω² is written "
+                f"with it, so it depends on {root} and the parameters alone."
+            )
         else:
             # both rows at the root θ₀ (the frequency is U_eff″ there, not at every θ)
             at_root = {r: sp.Symbol(r.name + "0")}

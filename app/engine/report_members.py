@@ -5,7 +5,7 @@ from __future__ import annotations
 import sympy as sp
 
 from app.engine import meaning, notation
-from app.engine.breaking import _group
+from app.engine.breaking import LIMIT, _group, width
 from app.engine.constraints import ConstraintForce
 from app.engine.constraints import display as constraint_display
 from app.engine.constraints import positive as constraint_positive
@@ -67,11 +67,23 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
         for mass, acc, rhs, f in zip(m.masses, m.accelerations, m.newton, m.applied, strict=True)
         if rhs != 0 or f != 0
     ]
+    k = len(forces)
+    # the cross coefficients Σ_i ∇_i𝒞_a · ∇_i𝒞_b / m_i (a ≠ b): zero where the normals are perpendicular; one that is
+    # a multiple of a constraint (the helix's −(2/m)(ξ sin αζ − η cos αζ) = −(2/m)𝒞₂) is zero on the motion
+    cross = {(a, b): m.normal[a, b] for a in range(k) for b in range(k) if a != b and m.normal[a, b] != 0}
+    on_motion = all(sp.simplify(c.xreplace(m.on_motion)) == 0 for c in cross.values())
+    zero = [_vanishing(cp, c, m) for (a, b), c in cross.items() if a < b] if on_motion else []
     normal = [
-        _terms([(_factor(cp, gathered(m.normal[a, b])), lam[b]) for b in range(len(forces)) if m.normal[a, b] != 0])
-        + rf" = {cp.tex(gathered(m.right[a]))}"
-        for a in range(len(forces))
+        _terms(
+            [
+                (_factor(cp, gathered(m.normal[a, b])), lam[b])
+                for b in range(k)
+                if m.normal[a, b] != 0 and not (on_motion and a != b)
+            ]
+        )
+        for a in range(k)
     ]
+    normal = [_right(cp, head, gathered(m.right[a])) for a, head in enumerate(normal)]
     positive = constraint_positive(d)
     solved = [constraint_display(e, positive) for e in m.solved]
     return [
@@ -99,11 +111,11 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
             "The multipliers along the normals",
             # 𝒞̈ = 0 said, not expanded: its expansion (a dozen terms on the turning parabola) is wider than a
             # page or a phone, and the equation for λ below is what it gives
-            [rf"\ddot{{{CONSTRAINT}}}_{{{a}}} = 0" for a in range(1, len(m.twice) + 1)] + normal,
+            [rf"\ddot{{{CONSTRAINT}}}_{{{a}}} = 0" for a in range(1, len(m.twice) + 1)] + zero + normal,
             [*m.twice, *m.right],
             "The constraint holds at every instant, so its second time derivative vanishes. Putting r̈ from "
             "Newton's law into it keeps only the component of the equations along ∇𝒞: an equation for λ alone, "
-            "with no acceleration left.",
+            "with no acceleration left." + (" " + _coupling_sentence(bool(cross), on_motion) if k > 1 else ""),
         ),
         _step(
             "multiplier",
@@ -127,6 +139,47 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
             "F = λ |∂𝒞/∂r_i| is a function of the coordinates and velocities alone, positive along the gradient.",
         ),
     ]
+
+
+# the sentence that says whether the equations for the multipliers are coupled: derived from the cross coefficients,
+# a scene's own reason for the step keeps it (contract.explained)
+NORMALS_CLAUSE = "The normals of the constraints are"
+
+
+def _coupling_sentence(crossed: bool, on_motion: bool) -> str:
+    """Whether the equations for λ₁, λ₂, … are coupled, as their cross coefficients Σ_i ∇_i𝒞_a · ∇_i𝒞_b / m_i say."""
+    normals = NORMALS_CLAUSE
+    if not crossed:
+        return f"{normals} perpendicular, so each λ comes from its own equation."
+    if on_motion:
+        return (
+            f"{normals} perpendicular here: each cross coefficient vanishes on the motion, so each λ comes from its "
+            "own equation."
+        )
+    return f"{normals} not perpendicular here, so the equations for the multipliers are coupled."
+
+
+def _vanishing(cp: Printer, c: sp.Expr, m: Multipliers) -> str:
+    """A cross coefficient that vanishes on the motion, shown vanishing: as a multiple of the constraint it is
+    (−(2/m)(ξ sin αζ − η cos αζ) = −(2/m)𝒞₂ = 0), else as it is, = 0."""
+    shown = cp.tex(gathered(c))
+    for a, g in enumerate(m.constraints, start=1):
+        ratio = sp.cancel(c / g)
+        if not ratio.free_symbols & set(m.positions):
+            factor = "" if ratio == 1 else ("-" if ratio == -1 else _factor(cp, gathered(ratio)) + r"\,")
+            return rf"{shown} = {factor}{notation.surface(a)[0]} = 0"
+    return f"{shown} = 0"
+
+
+def _right(cp: Printer, head: str, e: sp.Expr) -> str:
+    """The row ``head = e`` of an equation for λ; where it is too wide for a page, a constant times a long sum on the
+    right is multiplied out, so that the row breaks at its terms as every long row does (app.engine.breaking)."""
+    row = f"{head} = {cp.tex(e)}"
+    if isinstance(e, sp.Mul) and width(row) > LIMIT:
+        spread = sp.expand(e)
+        if isinstance(spread, sp.Add):
+            return f"{head} = {cp.tex(spread)}"
+    return row
 
 
 def _factor(cp: Printer, e: sp.Expr) -> str:

@@ -21,6 +21,7 @@ from app.engine.derive import Derivation
 from app.engine.dimensions import add_dims, parse_unit, system_dimensions, unit_latex, unit_text
 from app.engine.hamilton import Hamilton
 from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode, NormalModes, defaults
+from app.engine.names import latex
 from app.engine.reduction import Equilibrium as ReducedEquilibrium
 from app.engine.report import Printer, _step, display, plain_name
 from app.engine.stability import Linear
@@ -44,8 +45,8 @@ def _collapsed(expr: sp.Expr) -> sp.Expr:
 def hamilton_printer(d: Derivation, ham: Hamilton) -> Printer:
     """The derivation's printer, with the momentum of coordinate q printed p_q."""
     names = d.table.latex_names()
-    for q, P in zip(d.table.q, ham.momenta, strict=True):
-        names[P] = f"p_{{{names[q]}}}"
+    for P in ham.momenta:
+        names[P] = latex(P.name)
     return Printer(names)
 
 
@@ -54,6 +55,8 @@ def hamilton_steps(d: Derivation, ham: Hamilton) -> list[dict[str, str]]:
     pr = hamilton_printer(d, ham)
     qn = [pr.tex(s) for s in table.q]
     pn = [pr.tex(P) for P in ham.momenta]
+    # ṗ_θ: the dot on the p, not over its subscript (app.engine.names, the one home of a dotted name)
+    pdn = [latex(f"{P.name}_dot") for P in ham.momenta]
     vn = [pr.tex(v) for v in table.qd]
     velocities = [_show(v) for v in ham.velocities]
     H = _show(ham.hamiltonian)
@@ -88,7 +91,7 @@ def hamilton_steps(d: Derivation, ham: Hamilton) -> list[dict[str, str]]:
             "Hamilton's equations",
             [rf"{vn[k]} = \frac{{\partial H}}{{\partial {pn[k]}}} = {pr.tex(v)}" for k, v in enumerate(velocities)]
             + [
-                rf"\dot{{{pn[k]}}} = -\frac{{\partial H}}{{\partial {qn[k]}}}"
+                rf"{pdn[k]} = -\frac{{\partial H}}{{\partial {qn[k]}}}"
                 + (f" + Q_{{{qn[k]}}}" if d.mechanics.Q[k] != 0 else "")
                 + f" = {pr.tex(x)}"
                 for k, x in enumerate(p_dot)
@@ -456,7 +459,9 @@ def _how_found(nm: NormalModes, found: list[Equilibrium]) -> str:
     """How the list was found, and how far it can be trusted (never "exactly" unless provably complete)."""
     if nm.solved:
         return "These are all the equilibria: no other configuration makes every generalized force vanish" + (
-            "; where the conditions leave a coordinate free, every state that satisfies them is one." if nm.family else "."
+            "; where the conditions leave a coordinate free, every state that satisfies them is one."
+            if nm.family
+            else "."
         )
     some_exact = any(e.exact for e in found)
     where = f" (it looked at {nm.searched})" if nm.searched else ""
@@ -999,7 +1004,9 @@ def _one_coordinate_step(
         )
     if not moving and reduced is not None and reduced.exists is not None:
         # arccos(g/(Rw²)) is a place only when Rw² > g; there ω² has the sign the reduction proved
-        there = "" if reduced.stable is None else rf",\quad \text{{and there }} {wt}^2 {'>' if reduced.stable else '<'} 0"
+        there = (
+            "" if reduced.stable is None else rf",\quad \text{{and there }} {wt}^2 {'>' if reduced.stable else '<'} 0"
+        )
         rows.append(rf"\text{{exists only when }} {_relation(reduced.exists, pr)}{there}")
         why += f" This equilibrium exists only when {_relation_text(reduced.exists)}" + (
             f", and wherever it exists {wu}² is positive: it is stable wherever it exists."

@@ -127,7 +127,7 @@ HELIX_BEAD: dict[str, str] = {
     "equilibria": "Gravity along z never balances on a frictionless wire, so there is none.",
     "constraints": "The wire is two surfaces at once: the cylinder of radius R and the helicoid that winds it.",
     "multiplier-lagrangian": "Two multipliers, one for each surface: λ₁ pushes toward the axis, λ₂ across the helix.",
-    "multiplier-equation": "The two normals are not perpendicular in general, so the two equations for λ₁ and λ₂ are coupled.",
+    "multiplier-equation": "The cylinder's normal points toward the axis; the helicoid's lies in the cylinder's surface, across the helix.",
     "multiplier": "On the helix ξ = R cos αz and η = R sin αz: λ₁ carries the circular motion's ż², λ₂ the weight the slope does not take.",
     "constraint-forces": "The wire pushes toward the axis for the circular motion and across the helix to turn the bead.",
 }
@@ -217,7 +217,7 @@ SPHERICAL_PENDULUM: dict[str, str] = {
     "effective-potential": "Gravity plus the barrier p_φ²/(2 m R² sin² θ) that keeps the ball off the axis.",
     "energy-integral": "At fixed p_φ, θ moves in U_eff between two turning angles.",
     "time-integral": "The time between the turning angles is half the period of the nodding motion: down and up again is a whole one.",
-    "reduced-equilibria": "The conical motion sits at the bottom of U_eff, below the horizontal.",
+    "reduced-equilibria": "The conical motion sits at the bottom of U_eff, below the horizontal; U_eff′(θ₀) = 0 fixes p_φ by θ₀, so ω² is written in θ₀ alone.",
     "equilibria": "At rest the ball can hang at the bottom or balance at the top.",
     "steady-motion": "About the conical motion θ nods with the frequency given by U_eff″ at its bottom.",
     "constraints": "The string keeps the ball on the sphere of radius R about the pivot.",
@@ -314,7 +314,7 @@ MOVABLE_INCLINE: dict[str, str] = {
     "equilibria": "A frictionless slope cannot hold the block, so there is none.",
     "constraints": "With (x₁, z₁) the wedge's top corner and (x₂, z₂) the block, across and up in metres, the block stays on the slope and the wedge on the floor.",
     "multiplier-lagrangian": "Block and wedge free in the plane; λ₁ pushes them apart along the slope's normal, λ₂ holds the wedge on the floor.",
-    "multiplier-equation": "The slope's normal involves both bodies, so each λ₁ equation holds both masses; the floor couples λ₂ to it through the wedge.",
+    "multiplier-equation": "The slope's normal involves both bodies, so each λ₁ equation holds both masses.",
     "multiplier": "Both multipliers are constant: the contact and floor forces do not change while the block slides.",
     "constraint-forces": "The wedge's push on the block is less than m g cos α, because the wedge recoils.",
 }

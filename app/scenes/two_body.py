@@ -229,6 +229,7 @@ PULLEY = Scene(
         ),
     ),
     initial={"y1": 0.0, "y1_dot": 0.0, "y2": 0.0, "y2_dot": 0.0},
+    dependent={"Y": ("-(y1 + y2)/2 - c", "height of the middle mass M, measured upward")},
     t_end=2.0,
     errata=(
         Erratum(

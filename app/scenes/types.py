@@ -221,3 +221,8 @@ class Scene:
     # angles measured from the upward vertical (the spherical pendulum's θ): where a steady motion gives one's
     # value, its angle from the downward vertical, π minus it, is given beside it
     upward_angles: tuple[str, ...] = ()
+    # a position the statement names that the constraints fix by the coordinates (the pulley's middle mass,
+    # Y = −(y1 + y2)/2 − c), by name, with what it is: its acceleration, derived from the coordinates', is printed
+    # beside theirs in the accelerations step and in Results, as the statement asks for it; the Symbols table says
+    # what the letter is
+    dependent: Mapping[str, tuple[str, str]] = field(default_factory=dict)

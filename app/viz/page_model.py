@@ -148,7 +148,9 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
         "answers": _answers(doc),
         "equations": [e["latex"] for e in doc["equations_of_motion"]],
         # none in closed form for a large system (listed in "skipped"): M⁻¹f
+        # the coordinates' accelerations, then those of the positions they fix (the pulley's middle mass, Ÿ)
         "accelerations": [f"{ddot[c]} = {doc['accelerations'][c]['latex']}" for c in q]
+        + [f"{latex(n + '_ddot')} = {e['latex']}" for n, e in (doc.get("dependent_accelerations") or {}).items()]
         if doc["accelerations"]
         else [rf"\ddot{{q}} = {letter_of(doc, 'mass matrix', MASS_MATRIX[0])}^{{-1}} f"],
         "momenta": [f"{latex('p_' + c)} = {doc['momenta'][c]['latex']}" for c in q],

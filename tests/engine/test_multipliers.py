@@ -131,3 +131,30 @@ def test_the_multiplier_steps_print_their_expressions_as_a_textbook_does():
     )
     # a term's own sign is never taken out of a whole sum: −2λ₁η − λ₂ cos αζ, not −(2λ₁η + λ₂ cos αζ)
     assert r"m \ddot{\eta} &= - 2 \lambda_{1} \eta - \lambda_{2} \cos {\alpha \zeta}" in helix["multiplier-lagrangian"]
+
+
+def _multiplier_equation(scene_id):
+    return next(s for s in derivation_document(scene_id)["steps"] if s["key"] == "multiplier-equation")
+
+
+def test_the_helix_says_its_normals_are_perpendicular_and_decouples_the_multipliers():
+    """prof-m 2: the helix said its normals were "not perpendicular in general, so … coupled", over a system whose
+    cross coefficient −(2/m)(ξ sin αζ − η cos αζ) is −(2/m)𝒞₂, zero on the wire. The sentence follows the engine's
+    cross coefficient, which is shown vanishing, and each λ has its own equation."""
+    step = _multiplier_equation("helix-bead")
+    text, rows = step["explanation"], step["latex"].split(r" \\ ")
+    assert "not perpendicular" not in text and "coupled" not in text
+    assert "perpendicular here" in text and "each λ comes from its own equation" in text
+    assert any(r"= - \frac{2}{m}\,\mathcal{C}_{2} = 0" in r for r in rows)
+    lam1 = next(r for r in rows if r"\lambda_{1}" in r)
+    lam2 = next(r for r in rows if r"\lambda_{2}" in r)
+    assert r"\lambda_{2}" not in lam1 and r"\lambda_{1}" not in lam2
+    # the long right side is broken across lines as every long row is (a continuation line follows it)
+    assert rows[rows.index(lam2) + 1].startswith(r"&\quad ")
+
+
+def test_the_wedge_says_its_multipliers_are_coupled():
+    step = _multiplier_equation("movable-incline")
+    assert "not perpendicular here, so the equations for the multipliers are coupled" in step["explanation"]
+    rows = step["latex"].split(r" \\ ")
+    assert any(r"\lambda_{1}" in r and r"\lambda_{2}" in r for r in rows)

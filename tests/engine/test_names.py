@@ -47,3 +47,24 @@ def test_a_name_of_several_letters_is_greek_or_one_upright_name():
     assert latex("th") == r"\mathrm{th}" and latex("th_dot") == r"\dot{\mathrm{th}}"
     assert latex("th2_ddot") == r"\ddot{\mathrm{th}}_{2}" and latex("theta_dot") == r"\dot{\theta}"
     assert unicode("th_dot") == "th˙" and unicode("theta_dot") == "θ̇" and unicode("x1_dot") == "x\u0307\u2081"
+
+
+def test_a_momentums_rate_has_its_dot_on_the_p_not_over_the_subscript():
+    """prof-m 10a: Hamilton's equations set \\dot{p_θ}, the dot between p and θ; a textbook prints ṗ_θ."""
+    assert (latex("p_theta_dot"), unicode("p_theta_dot")) == (r"\dot{p}_{\theta}", "p\u0307_θ")
+    assert (latex("p_theta1_dot"), unicode("p_theta1_dot")) == (r"\dot{p}_{\theta_{1}}", "p\u0307_θ₁")
+    assert latex("p_phi_dot") == r"\dot{p}_{\varphi}" and latex("p_x_dot") == r"\dot{p}_{x}"
+    doc = derivation_json(derive(_spherical()))
+    rows = next(s for s in doc["steps"] if s["key"] == "hamilton-equations")["latex"]
+    assert r"\dot{p}_{\theta} &= -\frac{\partial H}{\partial \theta}" in rows
+    assert r"\dot{p}_{\varphi} &= -\frac{\partial H}{\partial \varphi} = 0" in rows
+    assert r"\dot{p_" not in rows
+
+
+def _spherical() -> System:
+    return System(
+        coordinates=("theta", "phi"),
+        parameters=(Parameter("m", 1.0, "kg", 0.01, 10.0), Parameter("R", 1.0, "m", 0.1, 10.0),
+                    Parameter("g", 9.81, "m/s²", 0.1, 30.0)),
+        lagrangian="m*R**2*(theta_dot**2 + phi_dot**2*sin(theta)**2)/2 - m*g*R*cos(theta)",
+    )  # fmt: skip

@@ -134,3 +134,12 @@ def test_a_g_is_refused_with_why_only_where_no_height_changes():
         read_answer("m g x1", "potential", None, level.kinds, level.absent)
     assert "g is not a name in this problem: the masses move on a horizontal line, so their heights never change " in str(refused.value)
     assert not level.gravity and problem(_derivation("simple-pendulum"), "potential", None, mistakes=False).gravity
+
+
+def test_an_angle_that_grows_with_time_is_said_rate_first():
+    # prof-m 7: the rotating wire's practice feedback read "the bead's position (ρ cos(t ω), ρ sin(t ω), α ρ²)
+    # changes along z": SymPy's order; a textbook prints ω t
+    d = _derivation("rotating-parabola")
+    wheres = [m.where for m in kinetic_mistakes(d) if m.family == "velocity_axis"]
+    assert wheres and all("(ρ cos(ω t), ρ sin(ω t), α ρ²)" in w for w in wheres), wheres
+    assert [w for w in wheres if "t ω" in w] == []

@@ -215,3 +215,54 @@ def test_running_text_prints_an_expression_in_the_order_of_its_latex(scene_id):
         assert _text_letters(text) == _tex_letters(tex), (text, tex)
         checked += 1
     assert checked >= 1
+
+
+def test_the_conical_motions_frequency_is_printed_in_its_angle_alone():
+    """prof-m 5: ω² about the spherical pendulum's cone was printed with p_φ in it, though U_eff′(θ₀) = 0 fixes
+    p_φ by θ₀. Derived here from U_eff (θ from the upward vertical): p_φ² = −m²gR³ sin⁴θ₀/cos θ₀, and
+    ω² = U_eff″/(mR²) = (g/R)(1 + 3 cos² θ₀)/(−cos θ₀)."""
+    m, g, R, th, p = (sp.Symbol(n, positive=True) for n in ("m", "g", "R", "theta0", "p_phi"))
+    U_eff = p**2 / (2 * m * R**2 * sp.sin(th) ** 2) + m * g * R * sp.cos(th)
+    p2 = sp.solve(sp.diff(U_eff, th), p**2)[0]
+    textbook = (g / R) * (1 + 3 * sp.cos(th) ** 2) / (-sp.cos(th))
+    assert sp.simplify((sp.diff(U_eff, th, 2) / (m * R**2)).subs(p**2, p2) - textbook) == 0
+    step = next(s for s in derivation_document("spherical-pendulum")["steps"] if s["key"] == "reduced-equilibria")
+    omega_row = step["latex"].split(r"\\")[-1]
+    assert "p_{" not in omega_row and r"\theta_{0}" in omega_row
+    assert r"\left(1 + 3 \cos^{2} {\theta_{0}}\right) g}{R \cos {\theta_{0}}}" in omega_row
+    served = sp.sympify(step["sympy"], locals={n: sp.Symbol(n, real=True) for n in ("g", "R", "theta0")})[-1]
+    assert not served.has(sp.Symbol("p_phi", real=True))
+    names = {s.name: s for s in served.free_symbols}
+    assert sp.simplify(served - textbook.xreplace({g: names["g"], R: names["R"], th: names["theta0"]})) == 0
+    assert "fixes p_φ by θ₀" in step["explanation"]
+    # the same value at the defaults as the steady motion's own step (θ₀ and ω² as it prints them)
+    doc = derivation_document("spherical-pendulum")
+    steady = next(s for s in doc["steps"] if s["key"] == "steady-motion:1")["latex"]
+    theta0 = float(re.search(r"\\theta &= ([0-9.]+)", steady).group(1))
+    printed = float(re.search(r"\\omega\^2 &= ([0-9.]+)", steady).group(1))
+    defaults = {p.name: p.default for p in SCENES["spherical-pendulum"].system.parameters}
+    value = served.xreplace({names["g"]: defaults["g"], names["R"]: defaults["R"], names["theta0"]: theta0})
+    assert float(value) == pytest.approx(printed, abs=0.06)
+
+
+def test_the_pulleys_middle_mass_has_its_acceleration_typeset_in_results():
+    """prof-m 6: the statement asks for the accelerations of all three masses; Ÿ was only in the prose of the
+    accelerations step. It is derived from Y = −(y₁ + y₂)/2 − c and typeset in the step and in Results."""
+    from app.viz.page_model import _summary
+
+    doc = derivation_document("pulley")
+    served = doc["dependent_accelerations"]["Y"]
+    names = {n: sp.Symbol(n, real=True) for n in ("g", "M", "m1", "m2")}
+    Y_ddot = sp.sympify(served["sympy"], locals=names)
+    y1, y2 = (sp.sympify(doc["accelerations"][c]["sympy"], locals=names) for c in ("y1", "y2"))
+    # Ÿ = −(ÿ₁ + ÿ₂)/2 from the string's length, and the textbook's [4m₁m₂ − M(m₁ + m₂)] g/[4m₁m₂ + M(m₁ + m₂)]
+    g, M, m1, m2 = names.values()
+    assert sp.simplify(Y_ddot + (y1 + y2) / 2) == 0
+    assert sp.simplify(Y_ddot - (4 * m1 * m2 - M * (m1 + m2)) * g / (4 * m1 * m2 + M * (m1 + m2))) == 0
+    row = r"\ddot{Y} = " + served["latex"]
+    assert row in _summary(doc)["accelerations"]
+    step = next(s for s in doc["steps"] if s["key"] == "accelerations")
+    assert r"\ddot{Y} &= " + served["latex"] in step["latex"]
+    # the letter has its Symbols row, in the unit of the heights it is made of
+    row = next(r for r in doc["notation"] if r["latex"] == "Y")
+    assert (row["meaning"], row["unit"]) == ("height of the middle mass M, measured upward", "m")

@@ -120,8 +120,8 @@ def test_the_incline_and_the_ball_are_named_one_way(client):
         ("coupled-oscillators", "mass-matrix", r"\kappa x_{2} - \left(k + \kappa\right) x_{1}"),
         # one fourth root of one fraction
         ("tabletop-spring", "reduced-equilibria", r"r_0 = \left(\frac{p_{\theta}^{2}}{m k}\right)^{1/4}"),
-        # the frequency at the root θ₀, not at every θ
-        ("spherical-pendulum", "reduced-equilibria", r"\frac{3 p_{\varphi}^{2}}{m^{2} R^{4} \sin^{4} {\theta_{0}}}"),
+        # the frequency at the root θ₀, not at every θ, with p_φ eliminated by U_eff′(θ₀) = 0 (prof-m 5)
+        ("spherical-pendulum", "reduced-equilibria", r"\frac{\left(1 + 3 \cos^{2} {\theta_{0}}\right) g}{R \cos {\theta_{0}}}"),
         # issue 40 (prof-h 6): 2/m_eff as one fraction, never 2 over m(M + m sin²α)/(M + m)
         (
             "movable-incline",
