@@ -572,6 +572,11 @@ NAMED = [
     # review student-k 6: a rigid body's slip of U is explained by U, never by T
     ("physical-pendulum", "potential", None, "-M*g*l*cos(theta)",
      r"^(?!.*v_centre).*centre at l in place of l/2.*the height of its centre"),
+    # review student-l 5: the coupling forgotten was "the force from spring energy (its ∂/∂x₁) (in the equation for
+    # x₁)": which spring, and its force over the mass
+    ("coupled-oscillators", "acceleration", "x1", "-k/m*x1",
+     r"^(?!.*\) \().*the coupling spring's force κ \(x₂ − x₁\)/m left out.*joins x₁ to x₂"),
+    ("coupled-oscillators", "equation", "x1", "m*x1_ddot + k*x1", r"the coupling spring's force κ \(x₂ − x₁\) left out"),
 ]
 SLIPS += NAMED
 
