@@ -577,6 +577,10 @@ NAMED = [
     ("coupled-oscillators", "acceleration", "x1", "-k/m*x1",
      r"^(?!.*\) \().*the coupling spring's force κ \(x₂ − x₁\)/m left out.*joins x₁ to x₂"),
     ("coupled-oscillators", "equation", "x1", "m*x1_ddot + k*x1", r"the coupling spring's force κ \(x₂ − x₁\) left out"),
+    # review student-l 9: the pendulum's θ̈ without 1/R, said in units
+    ("simple-pendulum", "acceleration", "theta", "-g*sin(theta)",
+     r"without a factor 1/R.*θ̈ is a squared rate \(1/s²\), but −g sin\(θ\) is an acceleration \(m/s²\), so it must "
+     r"still be divided by a length \(R\)"),
 ]
 SLIPS += NAMED
 
