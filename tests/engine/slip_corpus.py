@@ -577,6 +577,10 @@ NAMED = [
     ("coupled-oscillators", "acceleration", "x1", "-k/m*x1",
      r"^(?!.*\) \().*the coupling spring's force κ \(x₂ − x₁\)/m left out.*joins x₁ to x₂"),
     ("coupled-oscillators", "equation", "x1", "m*x1_ddot + k*x1", r"the coupling spring's force κ \(x₂ − x₁\) left out"),
+    # review student-l 5: the pulley's ÿ₁ as an Atwood machine, the right mass held still: named by that cause
+    ("pulley", "acceleration", "y1", "g*(M/2 - m1)/(m1 + M/4)",
+     r"^(?!.*denominator).*equation for y₁ alone, with ÿ₂ = 0, as if the right mass were held still"
+     r".*middle mass moves with both y₁ and y₂"),
     # review student-l 9: the pendulum's θ̈ without 1/R, said in units
     ("simple-pendulum", "acceleration", "theta", "-g*sin(theta)",
      r"without a factor 1/R.*θ̈ is a squared rate \(1/s²\), but −g sin\(θ\) is an acceleration \(m/s²\), so it must "
