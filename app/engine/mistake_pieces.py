@@ -30,7 +30,7 @@ from fractions import Fraction
 import sympy as sp
 
 from app.engine.derive import Derivation
-from app.engine.dimensions import add_dims, described, dimension, quantity, system_dimensions
+from app.engine.dimensions import STIFFNESS_WORDS, Dims, add_dims, dimension, quantity, system_dimensions
 from app.engine.mistake_families import (
     Mistake,
     kinetic_mistakes,
@@ -437,13 +437,28 @@ def _units_why(d: Derivation, step: str, k: int | None, p: sp.Expr, truth: sp.Ex
         want, got = dimension(truth, known), dimension(p / f, known)
         if not unit or want is None or got is None or add_dims(got, unit) != want:
             return None
-        said = f"in units, {what} is {described(want)}, but {spoken(p / f)} is {described(got)}, so "
-        if all(v < 0 for v in unit.values()):
+        # named quantities only, without their units' letters (a hint speaks in the page's own symbols): where one
+        # has no plain name, the geometry's reason stands
+        inverse = all(v < 0 for v in unit.values())
+        names = [_plain(x) for x in (want, got, add_dims({}, unit, Fraction(-1)) if inverse else unit)]
+        if None in names:
+            return None
+        said = f"in units, {what} is {names[0]}, but {spoken(p / f)} is {names[1]}, so "
+        if inverse:
             # f = 1/R: a division by a length
-            return said + f"it must still be divided by {quantity(add_dims({}, unit, Fraction(-1)))} ({spoken(1 / f)})"
-        return said + f"it still needs a factor with the units of {described(unit)}, {spoken(f)}"
+            return said + f"it must still be divided by {names[2]} ({spoken(1 / f)})"
+        return said + f"it still needs a factor with the units of {names[2]}, {spoken(f)}"
 
     return why
+
+
+def _plain(d: Dims) -> str | None:
+    """A dimension by its plain name without its unit ("a squared rate", "an acceleration", "a length"); None where it
+    has none, or a name a system without springs would not use (kg/s² is a spring constant only beside a spring)."""
+    words = quantity(d)
+    if words.startswith("a quantity in") or words == STIFFNESS_WORDS:
+        return None
+    return words.split(" (")[0]
 
 
 def _factors(

@@ -595,8 +595,8 @@ NAMED = [
      r"^(?!.*Everything else).*the bodies taken as one, ½ \(m₁ \+ m₂\) \(ẋ₁ \+ ẋ₂\)², without each body's own ½ m v²"),
     # review student-l 9: the pendulum's θ̈ without 1/R, said in units
     ("simple-pendulum", "acceleration", "theta", "-g*sin(theta)",
-     r"without a factor 1/R.*θ̈ is a squared rate \(1/s²\), but −g sin\(θ\) is an acceleration \(m/s²\), so it must "
-     r"still be divided by a length \(R\)"),
+     r"without a factor 1/R.*θ̈ is a squared rate, but −g sin\(θ\) is an acceleration, so it must still be divided by a "
+     r"length \(R\)"),
 ]
 SLIPS += NAMED
 
