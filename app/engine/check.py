@@ -78,7 +78,7 @@ from app.engine.compare import (
     values,
     without_constant,
 )
-from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json, sentence
+from app.engine.diagnose import agreement, follow_up_json, match, mistake_json, partial_json, rate_parts, sentence
 from app.engine.dimensions import (
     Own,
     add_dims,
@@ -484,8 +484,8 @@ def _units_verdict(
 
 def _whole_mistake(pb: Problem, a: Values, mistake: Mistake) -> bool:
     """Whether the answer is the mistake's own wrong answer (up to the step's accepted constant or factor)."""
-    if mistake.family in ("units", "other_coordinate", "limit") or mistake.expr is None:
-        return False  # (another question's answer: nothing "else" in it is right or wrong)
+    if mistake.family in ("units", "other_coordinate", "limit", "bodies_lumped") or mistake.expr is None:
+        return False  # (another question's answer, or the whole answer recast: nothing "else" in it is right or wrong)
     v = _known(mistake.expr, pb.groups)
     return (
         equal(a, v)
@@ -803,6 +803,12 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
     # slips read from the answer itself (app/engine/mistake_answer.py)
     if pb.step in ("kinetic", "lagrangian", "hamiltonian"):
         found = _budgeted(lambda: missing_square(answer, b, pb.groups), None, ANSWER_SLIP_WORK)
+        if found is None:
+            # the same rule on the answer grouped by its products of velocities, each coefficient factored: a part
+            # left unsquared inside one term (½ m (… + 2αρ ρ̇²) read as ½ m (1 + 2αρ) ρ̇² + …: student-l 5)
+            grouped = _budgeted(lambda: _grouped(answer, pb.groups), None, ANSWER_SLIP_WORK)
+            if grouped is not None and grouped != answer:
+                found = _budgeted(lambda: missing_square(grouped, b, pb.groups), None, ANSWER_SLIP_WORK)
         if found is not None:
             return found
     if pb.step == "kinetic":
@@ -835,6 +841,18 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
             return found
     # the step's rule in the document's letter for the frequency (Ω² on the rotating wire: student-i 6)
     return pointer(pb.step, pb.frequency)
+
+
+def _grouped(answer: sp.Expr, groups: Groups) -> sp.Expr | None:
+    """The answer as a sum over its products of velocities, each times its coefficient factored
+    (m (1 + 2 α ρ) ρ̇²/2 + m ω² ρ²/2); None where it is no polynomial in the velocities."""
+    try:
+        parts = rate_parts(answer, groups.rates)
+    except sp.PolynomialError:
+        return None
+    if parts is None:
+        return None
+    return sp.Add(*(monomial * sp.factor(coefficient) for monomial, coefficient in parts.items()))
 
 
 # the steps whose small-displacement form is named, and what each is called in the hint

@@ -30,7 +30,15 @@ from app.engine.derive import Derivation
 from app.engine.dimensions import mismatch, system_dimensions
 from app.engine.mistake_carried import carried_equations, lagrangian_pairs
 from app.engine.mistake_equations import generated
-from app.engine.mistake_families import Mistake, monomial_words, says_how, spoken, states_answer
+from app.engine.mistake_families import (
+    Mistake,
+    bodies_lumped,
+    height_mistakes,
+    monomial_words,
+    says_how,
+    spoken,
+    states_answer,
+)
 from app.engine.mistake_masses import wrong_masses
 from app.engine.mistake_other import held_still, other_coordinates
 from app.engine.mistake_pieces import effective_terms, inertia_in_potential, masses_of, piece_mistakes, travelled
@@ -75,6 +83,9 @@ _OPENINGS = {
     "position_other": "Your {what} is {name}",
     "position_coordinate": "Your {what} has {name}",
     "inertia_in_u": "Your {what} has {name}",
+    "height_axis": "Your {what} has {name}",
+    "height_squared": "Your {what} has {name}",
+    "bodies_lumped": "Your {what} has {name}",
 }
 
 
@@ -166,6 +177,12 @@ def catalogue(
     # a term of the wrong size
     found += [(m, sentence(m, label)) for m in wrong_masses(d, step, truth, masses_of(d, known))]
     found += pieces
+    # slips the step's own pieces do not explain, read from the positions (a height written wrong) and the
+    # velocities (the bodies taken as one)
+    if step == "potential":
+        found += [(m, sentence(m, label)) for m in height_mistakes(d)]
+    elif step == "kinetic":
+        found += [(m, sentence(m, label)) for m in bodies_lumped(d)]
     found += [x for x in made if x[0].family in GENERIC]
     if step == "omega_squared":
         # in the document's letter for the frequency (Ω where ω is a parameter: student-i 6)

@@ -35,6 +35,7 @@ from app.engine.mistake_families import (
     short_form,
     slug,
     spoken,
+    sum_words,
     term_key,
     velocity_monomials,
 )
@@ -256,17 +257,59 @@ def _dl_dq_mistakes(d: Derivation, k: int, E: sp.Expr) -> Iterator[Mistake]:
             if force == 0:
                 continue
             kind = kind_of_term(term, d)
+            spring = _joining_spring(d, term, q)
             yield Mistake(
                 f"equation.force_left_out.{term_key(term)}",
                 "force_left_out",
-                f"the force from {kind[4:]} (its ∂/∂{qn})",
+                spring[0] if spring else f"the force from {kind[4:]} (its ∂/∂{qn})",
                 short_form(force),
-                f"∂L/∂{qn} = ∂T/∂{qn} − ∂U/∂{qn}, and {kind} depends on {qn}",
+                spring[1] if spring else f"∂L/∂{qn} = ∂T/∂{qn} − ∂U/∂{qn}, and {kind} depends on {qn}",
                 sp.expand(E - force),
                 follow_up=FollowUp(
                     f"What is ∂U/∂{qn}?", "potential", sp.diff(m.U, q), "exact", spoken(short_form(sp.diff(m.U, q)))
                 ),
             )
+
+
+def _stretch(d: Derivation, term: sp.Expr, q: sp.Symbol) -> tuple[sp.Expr, sp.Expr] | None:
+    """(stiffness, stretch) of a spring's energy u whose force on q, −∂u/∂q, is stiffness × stretch, the stretch
+    with q's own term taken away (κ and x₂ − x₁ for ½ κ (x₂ − x₁)² on x₁); None where u is no such square."""
+    force = sp.factor(-sp.diff(term, q))
+    sums = [f for f in sp.Mul.make_args(force) if f.is_Add and f.free_symbols & set(d.table.q)]
+    if len(sums) != 1:
+        return None
+    stretch, stiffness = sums[0], force / sums[0]
+    # −κ (x₁ − x₂) read as κ (x₂ − x₁): the coordinate pulled on taken away, as the spring's pull says it
+    if sp.expand(stretch).coeff(q) > 0:
+        stretch, stiffness = -stretch, -stiffness
+    return stiffness, sp.expand(stretch)
+
+
+def _joining_spring(d: Derivation, term: sp.Expr, q: sp.Symbol, over: sp.Expr = sp.S.One) -> tuple[str, str] | None:
+    """(name, where) of the force left out from a spring that joins q to another coordinate (student-l 5: "the
+    force from spring energy (its ∂/∂x₁)" did not say which spring): the coupling spring, by its force (over
+    ``over``, the mass, in an acceleration); None for any other term of U."""
+    held = [c for c in d.table.q if term.has(c)]
+    found = _stretch(d, term, q)
+    if kind_of_term(term, d) != "the spring energy" or len(held) < 2 or found is None:
+        return None
+    stiffness, stretch = found
+    springs = [t for t in sp.Add.make_args(d.mechanics.U) if kind_of_term(t, d) == "the spring energy"]
+    owner = "the coupling spring's" if len(springs) > 1 else "the spring's"
+    others = " and ".join(unicode(c.name) for c in held if c != q)
+    qn, coordinates = unicode(q.name), d.table.q
+    stretched = f"({sum_words(stretch, coordinates)})"
+    # the force κ (x₂ − x₁), over the mass in an acceleration: κ (x₂ − x₁)/m
+    force = f"{spoken(stiffness, coordinates)} {stretched}" + ("" if over == 1 else f"/{spoken(over, coordinates)}")
+    # its energy as a textbook prints it, the ½ in front: ½ κ (x₂ − x₁)²
+    energy = sp.factor(term / stretch**2)
+    half = energy.as_coeff_Mul()[0] == sp.Rational(1, 2)
+    energy_words = f"½ {spoken(2 * energy)}" if half else spoken(energy)
+    return (
+        f"{owner} force {force} left out",
+        f"the spring joins {qn} to {others}, so its energy {energy_words} {stretched}² changes with {qn} too, and "
+        f"its force on {qn} is −∂/∂{qn} of that energy",
+    )
 
 
 def _lagrangian_terms(d: Derivation, k: int, E: sp.Expr) -> Iterator[Mistake]:
@@ -308,6 +351,12 @@ def acceleration_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
     eqs, table = d.equations, d.table
     n = len(table.names)
     zero = dict.fromkeys(table.qdd, sp.Integer(0))
+    dynamic = {*table.q, table.t}
+    springs = {f"equation.force_left_out.{term_key(u)}": u for u in sp.Add.make_args(d.mechanics.U or sp.S.Zero)
+               if u.free_symbols & dynamic}  # fmt: skip
+    # q̈_k alone in its equation (the mass matrix's row and column k diagonal): a force on q_k moves q_k alone, by
+    # the force over the mass, and is named so (κ (x₂ − x₁)/m, never "(in the equation for x₁)")
+    alone = all(eqs.mass_matrix[k, i] == 0 and eqs.mass_matrix[i, k] == 0 for i in range(n) if i != k)
     for j in range(n):
         for mistake in equation_mistakes(d, j):
             if mistake.family in ("half_momentum", "term_sign") or not mistake.expr.has(*table.qdd):
@@ -320,13 +369,17 @@ def acceleration_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
             forcing = sp.Matrix([-sp.expand(r).xreplace(zero) for r in wrong])
             solved = M.LUsolve(forcing)[k]
             where = f"in the equation for {unicode(table.names[j])}" if n > 1 else ""
+            # what happened to the piece said before where it happened: "… left out (in the equation for x₁)"
+            name, why = mistake.said + (f" ({where})" if where else ""), mistake.where
+            spring = springs.get(mistake.key)
+            if spring is not None and j == k and alone:
+                name, why = _joining_spring(d, spring, table.q[k], eqs.mass_matrix[k, k]) or (name, why)
             yield Mistake(
                 mistake.key.replace("equation.", "acceleration.", 1) + (f".{table.names[j]}" if n > 1 else ""),
                 mistake.family,
-                # what happened to the piece said before where it happened: "… left out (in the equation for x₁)"
-                mistake.said + (f" ({where})" if where else ""),
+                name,
                 mistake.piece,
-                mistake.where,
+                why,
                 solved,
                 mistake.approximation,
             )

@@ -483,6 +483,32 @@ def _cross_mistakes(d: Derivation, T: sp.Expr) -> Iterator[Mistake]:
         )
 
 
+def bodies_lumped(d: Derivation) -> Iterator[Mistake]:
+    """T as one body of the total mass moving with the sum of the bodies' velocities, ½ (m₁ + m₂)(ẋ₁ + ẋ₂)², where
+    each body has its own ½ m v² (student-l 5).  (Tried after the pieces of T, and never carried into a later
+    step.)"""
+    m = d.mechanics
+    if m.T is None or not m.velocities or len(m.masses) < 2:
+        return
+    total = sp.Add(*m.masses)
+    summed = [sp.Add(*(v[axis] for v in m.velocities)) for axis in range(3)]
+    lumped = sp.Rational(1, 2) * total * pythagoras(sum(c**2 for c in summed))
+    shown = sp.factor(lumped)
+    half = shown.as_coeff_Mul()[0] == sp.Rational(1, 2)
+    # the student's own form where it is short, the ½ in front (½ (m₁ + m₂) (ẋ₁ + ẋ₂)²), else in words
+    words = f"½ {spoken(2 * shown, d.table.q)}" if half else spoken(shown, d.table.q)
+    said = f", {words}," if sp.count_ops(shown) <= 12 else ", with the total mass and the summed velocity,"
+    yield Mistake(
+        "kinetic.bodies_lumped",
+        "bodies_lumped",
+        f"the bodies taken as one{said} without each body's own ½ m v²",
+        None,
+        "each body has its own ½ m v², with its own mass and its own velocity, and T adds them; squaring the sum "
+        "of the velocities mixes them",
+        sp.expand(lumped),
+    )
+
+
 def _parts_left_out(d: Derivation, expr: sp.Expr, step: str, letter: str) -> Iterator[Mistake]:
     for monomial, part in velocity_monomials(expr, d.table.qd).items():
         yield Mistake(
@@ -619,3 +645,64 @@ def potential_mistakes(d: Derivation) -> Iterator[Mistake]:
                 SIGN_OF_KIND.get(kind, "U is the work done against the force"),
                 sp.expand(U - 2 * term),
             )
+
+
+def _weights(d: Derivation) -> tuple[sp.Symbol, list[tuple[str, sp.Expr, tuple]]] | None:
+    """(g, [(body, mass, position)]) where U's gravity is Σ m g × z over the bodies, up to a constant; else None."""
+    m, U = d.mechanics, d.mechanics.U
+    g = next((s for s in U.free_symbols if s.name == "g"), None) if U is not None else None
+    if g is None or not m.positions or len(m.masses) != len(m.positions):
+        return None
+    dynamic = {*d.table.q, d.table.t}
+    weight = sum((mass * g * r[2] for mass, r in zip(m.masses, m.positions, strict=True)), sp.Integer(0))
+    gravity = sp.Add(*(t for t in sp.Add.make_args(sp.expand(U)) if t.has(g)))
+    if sp.expand(gravity - weight).free_symbols & dynamic:
+        return None
+    bodies = [(_body(d, i), mass, r) for i, (mass, r) in enumerate(zip(m.masses, m.positions, strict=True))]
+    return g, bodies
+
+
+def height_mistakes(d: Derivation) -> Iterator[Mistake]:
+    """U = Σ m g z with each body's height written wrong (student-l 5): its x or y taken for its height (the helix
+    bead's R sin(α z) for z), or a sine or cosine of its height squared (−m g R cos²θ), where a height holds each
+    to the first power; named from the positions, never by printing U.  (Tried after the pieces of U, and never
+    carried into a later step: a swapped sine there is named as a swap, a number off as a number.)"""
+    found = _weights(d)
+    if found is None:
+        return
+    g, bodies = found
+    U, dynamic = d.mechanics.U, {*d.table.q, d.table.t}
+    weight = sum((mass * g * r[2] for _, mass, r in bodies), sp.Integer(0))
+    for axis in (0, 1):
+        if not any(r[axis].free_symbols & dynamic for _, _, r in bodies):
+            continue
+        # U = Σ m g × (the body's x or y), where Σ m g z belongs
+        wrong = sp.expand(U - weight + sum((mass * g * r[axis] for _, mass, r in bodies), sp.Integer(0)))
+        if len(bodies) == 1:
+            body, _, r = bodies[0]
+            name = f"the {body}'s {_AXES[axis]}, {spoken(r[axis], d.table.q)}, taken for its height"
+            where = f"U is m g times the height, and the {body}'s height is its z, measured upward"
+        else:
+            name = f"each body's {_AXES[axis]} taken for its height"
+            where = "U is m g times each body's height, and a body's height is its z, measured upward"
+        yield Mistake(f"potential.height_axis.{_AXES[axis]}", "height_axis", name, None, where, wrong)
+    for body, mass, r in bodies:
+        height = sp.expand(r[2])
+        for f in sorted(height.atoms(sp.sin, sp.cos), key=sp.default_sort_key):
+            if not f.args[0].free_symbols & dynamic or sp.degree(height.xreplace({f: _F}), _F) != 1:
+                continue
+            # the height's sine or cosine squared: U changes by m g (z with f → f²) − m g z
+            wrong = sp.expand(U + mass * g * (height.xreplace({f: f**2}) - height))
+            kind = "cosine" if isinstance(f, sp.cos) else "sine"
+            yield Mistake(
+                f"potential.height_squared.{slug(body)}.{slug(sp.sstr(f))}",
+                "height_squared",
+                f"{spoken(f, d.table.q)} squared in the {body}'s height",
+                None,
+                f"U is m g times the height, and a height is linear in {spoken(f, d.table.q)} (a length times the "
+                f"{kind} of an angle, never its square)",
+                wrong,
+            )
+
+
+_F = sp.Dummy("f")  # a sine or cosine of a height, stood in for to read the height's degree in it

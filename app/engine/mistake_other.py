@@ -101,6 +101,8 @@ def held_still(d: Derivation, step: str, truth: sp.Expr, k: int | None = None) -
     for m in (*still, *light, *heavy):
         if sp.expand(m.expr - truth) != 0:
             yield m
+    if step == "acceleration" and k is not None:
+        yield from _own_equation_alone(d, k)
     if step == "acceleration":
         # a one-body limit taken at small angles as well (the upper bob as a simple pendulum, θ̈₁ = −g θ₁/l₁)
         for m in light:
@@ -111,6 +113,46 @@ def held_still(d: Derivation, step: str, truth: sp.Expr, k: int | None = None) -
                     None, f"{m.where}; and sin x ≈ x holds only near zero angle, while the exercise asks for the "
                     "full acceleration", small, approximation=True,
                 )  # fmt: skip
+
+
+def _own_equation_alone(d: Derivation, k: int) -> Iterator[Mistake]:
+    """q̈_k solved from q_k's own equation alone, every other acceleration in it set to zero, as if what those
+    coordinates move were held still (student-l 5: the pulley's ÿ₁ as an Atwood machine with the right mass
+    fixed, g (M/2 − m₁)/(m₁ + M/4)): where the equations are coupled through their accelerations."""
+    eqs, t = d.equations, d.table
+    others = [j for j in range(len(t.q)) if j != k and eqs.mass_matrix[k, j] != 0]
+    if not others or eqs.mass_matrix[k, k] == 0:
+        return
+    # M_kk q̈_k + f_k = 0, with f_k = E_k at q̈ = 0
+    forcing = sp.expand(eqs.residuals[k]).xreplace(dict.fromkeys(t.qdd, sp.Integer(0)))
+    alone = sp.cancel(-forcing / eqs.mass_matrix[k, k])
+    moved = {t.q[j] for j in others}
+    positions = d.mechanics.positions
+    labels = [p.label or f"body of mass {unicode(p.mass)}" for p in d.system.particles]
+    # the bodies the other coordinates alone move (held still), and those that move with both (which couple them)
+    held = [b for b, r in zip(labels, positions, strict=False) if (_moved(r, t) and _moved(r, t) <= moved)]
+    joint = [b for b, r in zip(labels, positions, strict=False) if t.q[k] in _moved(r, t) and _moved(r, t) & moved]
+    accelerations = " and ".join(unicode(t.qdd[j].name) for j in others)
+    coordinate = unicode(t.names[k])
+    together = " and ".join([coordinate, *(unicode(t.names[j]) for j in others)])
+    still = f"the {' and the '.join(held)} were held still" if held else f"{accelerations} were zero"
+    moves = f"the {' and the '.join(held)} moves too" if held else "the other coordinates change too"
+    couples = (
+        f"the {' and the '.join(joint)} moves with both {together}, which puts {accelerations} into the equation "
+        f"for {coordinate}"
+        if joint
+        else f"the equation for {coordinate} holds {accelerations}"
+    )
+    yield Mistake(
+        f"acceleration.limit.own_equation.{t.names[k]}", "limit",
+        f"the answer from the equation for {coordinate} alone, with {accelerations} = 0, as if {still}", None,
+        f"{moves}, so {accelerations} is not zero; {couples}, so the equations are solved together", alone,
+    )  # fmt: skip
+
+
+def _moved(r: tuple, t) -> set[sp.Symbol]:
+    """The coordinates a body's position holds."""
+    return {s for c in r for s in c.free_symbols if s in t.q}
 
 
 def linear(d: Derivation, expr: sp.Expr) -> sp.Expr | None:

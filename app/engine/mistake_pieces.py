@@ -24,14 +24,14 @@ answer gets the same words on an idle and on a busy machine.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
 
 import sympy as sp
 
 from app.engine.check_answers import RELATIONS
 from app.engine.derive import Derivation
-from app.engine.dimensions import dimension
+from app.engine.dimensions import STIFFNESS_WORDS, Dims, add_dims, dimension, quantity, system_dimensions
 from app.engine.mistake_families import (
     Correct,
     Mistake,
@@ -224,7 +224,7 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
             yield Mistake(f"{base}.sign.{key}", "term_sign", f"the sign of your term {spoken(-short)}", p, why,
                           truth - 2 * p)  # fmt: skip
         if step != "momentum":  # a momentum short of a factor is named by that factor (app.engine.check)
-            yield from _factors(p, truth, base, key, rates, d.table.params)
+            yield from _factors(p, truth, base, key, rates, d.table.params, _units_why(d, step, k, p, truth))
         if p.has(sp.sin, sp.cos):
             swapped = swap_sin_cos(p)
             # in an equation, a velocity-free term is a derivative of U (or of T by q): there a swap is a slip of
@@ -433,9 +433,53 @@ def _weight_left_out(d: Derivation, p: sp.Expr, truth: sp.Expr, k: int) -> tuple
             f"the {body} moves when {q} changes, so its weight also acts on {q}: the gravity term is {whole}")  # fmt: skip
 
 
-def _factors(p: sp.Expr, truth: sp.Expr, base: str, key: str, rates: tuple, params: tuple) -> Iterator[Mistake]:
+def _units_why(d: Derivation, step: str, k: int | None, p: sp.Expr, truth: sp.Expr) -> Callable[[sp.Expr], str | None]:
+    """Why a factor f with units is missing from the piece p, where p is the whole answer (a longer answer short of
+    it has terms whose units disagree, named before any mistake), said in units (student-l 9: −g sin θ for θ̈ is an
+    acceleration, where θ̈ is a squared rate): a function of f, None for a factor without units."""
+    what = unicode(d.table.qdd[k].name) if step == "acceleration" and k is not None else _label(step)
+    known = system_dimensions(d) if what and sp.expand(p - truth) == 0 else {}
+
+    def why(f: sp.Expr) -> str | None:
+        unit = dimension(f, known) if known else None
+        want, got = dimension(truth, known), dimension(p / f, known)
+        if not unit or want is None or got is None or add_dims(got, unit) != want:
+            return None
+        # named quantities only, without their units' letters (a hint speaks in the page's own symbols): where one
+        # has no plain name, the geometry's reason stands
+        inverse = all(v < 0 for v in unit.values())
+        names = [_plain(x) for x in (want, got, add_dims({}, unit, Fraction(-1)) if inverse else unit)]
+        if None in names:
+            return None
+        said = f"in units, {what} is {names[0]}, but {spoken(p / f)} is {names[1]}, so "
+        if inverse:
+            # f = 1/R: a division by a length
+            return said + f"it must still be divided by {names[2]} ({spoken(1 / f)})"
+        return said + f"it still needs a factor with the units of {names[2]}, {spoken(f)}"
+
+    return why
+
+
+def _plain(d: Dims) -> str | None:
+    """A dimension by its plain name without its unit ("a squared rate", "an acceleration", "a length"); None where it
+    has none, or a name a system without springs would not use (kg/s² is a spring constant only beside a spring)."""
+    words = quantity(d)
+    if words.startswith("a quantity in") or words == STIFFNESS_WORDS:
+        return None
+    return words.split(" (")[0]
+
+
+def _factors(
+    p: sp.Expr,
+    truth: sp.Expr,
+    base: str,
+    key: str,
+    rates: tuple,
+    params: tuple,
+    units: Callable[[sp.Expr], str | None] = lambda f: None,
+) -> Iterator[Mistake]:
     """One piece without one of its factors (sin α, sin²θ, 1/(1 + R² α²)), or with a parameter's square written
-    as the parameter itself (R for R²)."""
+    as the parameter itself (R for R²); a factor with units is explained by the units (``units``)."""
     factors = [f for f in sp.Mul.make_args(p) if not f.is_Number and not f.has(*rates)]
     for f in sorted(set(factors), key=sp.default_sort_key)[:MAX_SUMS]:
         if f.is_Symbol:
@@ -443,7 +487,8 @@ def _factors(p: sp.Expr, truth: sp.Expr, base: str, key: str, rates: tuple, para
         yield Mistake(
             f"{base}.factor_left_out.{key}.{slug(sp.sstr(f))[:24]}", "factor_left_out",
             f"your term {spoken(p / f)} without a factor {spoken(f)}", p,
-            "this factor comes from the geometry (a component of the position, or the chain rule)", truth - p + p / f,
+            units(f) or "this factor comes from the geometry (a component of the position, or the chain rule)",
+            truth - p + p / f,
         )  # fmt: skip
     for s in params:
         squared = s**2

@@ -572,6 +572,31 @@ NAMED = [
     # review student-k 6: a rigid body's slip of U is explained by U, never by T
     ("physical-pendulum", "potential", None, "-M*g*l*cos(theta)",
      r"^(?!.*v_centre).*centre at l in place of l/2.*the height of its centre"),
+    # review student-l 5: the coupling forgotten was "the force from spring energy (its ∂/∂x₁) (in the equation for
+    # x₁)": which spring, and its force over the mass
+    ("coupled-oscillators", "acceleration", "x1", "-k/m*x1",
+     r"^(?!.*\) \().*the coupling spring's force κ \(x₂ − x₁\)/m left out.*joins x₁ to x₂"),
+    ("coupled-oscillators", "equation", "x1", "m*x1_ddot + k*x1", r"the coupling spring's force κ \(x₂ − x₁\) left out"),
+    # review student-l 5: U written with another axis for the height, or a height's cosine squared, got the step's rule
+    ("helix-bead", "potential", None, "m*g*R*sin(alpha*z)",
+     r"the bead's y, R sin\(α z\), taken for its height.*U is m g times the height.*its z"),
+    ("simple-pendulum", "potential", None, "-m*g*R*cos(theta)**2",
+     r"cos\(θ\) squared in the bob's height.*a height is linear in cos\(θ\)"),
+    # review student-l 5: ż = 2αρρ̇ entered unsquared, typed as one term, got "the ρ̇² terms do not agree": named as the
+    # helix's is, the part and its square
+    ("rotating-parabola", "kinetic", None, "1/2*m*(rho_dot**2 + rho**2*omega**2 + 2*alpha*rho*rho_dot**2)",
+     r"You wrote 2αρ where T needs its square 4α²ρ²"),
+    # review student-l 5: the pulley's ÿ₁ as an Atwood machine, the right mass held still: named by that cause
+    ("pulley", "acceleration", "y1", "g*(M/2 - m1)/(m1 + M/4)",
+     r"^(?!.*denominator).*equation for y₁ alone, with ÿ₂ = 0, as if the right mass were held still"
+     r".*middle mass moves with both y₁ and y₂"),
+    # review student-l 5: the rail's two masses as one body got "no part of your answer agrees"
+    ("rail-two-body", "kinetic", None, "1/2*(m1+m2)*(x1_dot+x2_dot)**2",
+     r"^(?!.*Everything else).*the bodies taken as one, ½ \(m₁ \+ m₂\) \(ẋ₁ \+ ẋ₂\)², without each body's own ½ m v²"),
+    # review student-l 9: the pendulum's θ̈ without 1/R, said in units
+    ("simple-pendulum", "acceleration", "theta", "-g*sin(theta)",
+     r"without a factor 1/R.*θ̈ is a squared rate, but −g sin\(θ\) is an acceleration, so it must still be divided by a "
+     r"length \(R\)"),
 ]
 SLIPS += NAMED
 
