@@ -564,10 +564,10 @@ def _sums(truth: sp.Expr, base: str, springs: bool, coordinates: Iterable[sp.Sym
             # the sum as written and the sign at fault; the correct sum is kept for the student to ask for
             yield Mistake(
                 f"{base}.inner_sign.{slug(sp.sstr(a))[:32]}.{slug(sp.sstr(term))[:16]}", "inner_sign",
-                f"{sum_words(changed / content, coordinates)}: the sign of {spoken(term)} ({why})", a / content,
+                f"{sum_words(changed / content, coordinates)}: the sign of {spoken(term)} ({why})", a,
                 "draw the two directions and measure both angles from the same line" if angle
                 else "draw the two ends and ask which way each coordinate moves them", wrong,
-                correct=Correct("angle" if angle else "stretch", a),
+                correct=Correct("angle" if angle else "stretch", a / content),
             )  # fmt: skip
 
 

@@ -29,7 +29,9 @@ def test_a_coupling_terms_sign_is_quoted_as_the_student_multiplied_it_out():
 
 def test_a_sum_the_student_kept_whole_is_quoted_without_the_engines_common_factor():
     result = judge(step_problem("coupled-oscillators", "equation", "x1"), "m*x1_ddot + k*x1 + kappa*(x1 + x2)")
-    assert result["mistake"]["name"].startswith("x₁ + x₂ where x₁ − x₂ belongs: the sign of x₂"), result["mistake"]
+    # the place and the kind of slip named; the correct sum kept for the student to ask for (review student-l 3)
+    assert result["mistake"]["name"].startswith("x₁ + x₂: the sign of x₂"), result["mistake"]
+    assert "x_{1} - x_{2}" in result["correct_part"]["latex"], result["correct_part"]
 
 
 def test_a_doubled_group_in_u_is_quoted_without_the_constant_the_student_never_wrote():
@@ -85,7 +87,8 @@ def test_a_squared_sum_in_a_one_body_denominator_is_named_as_that():
     # review student-m #88: the helix's z̈ with (1 + αR)² for 1 + α²R²; no "every body the motion carries"
     result = judge(step_problem("helix-bead", "acceleration", "z"), "-g/(1+alpha*R)^2")
     assert result["mistake"]["key"] == "solved.square_of_a_sum", result["mistake"]
-    assert result["mistake"]["name"] == "(1 + R α)² where 1 + R² α² belongs: the square of a sum for a sum of squares"
+    assert result["mistake"]["name"] == "the denominator (1 + R α)²: the square of a sum for a sum of squares"
+    assert result["correct_part"]["what"] == "denominator", result["correct_part"]
     assert "cross term 2 R α" in result["mistake"]["where"] and "every body" not in result["hint"], result["hint"]
 
 
