@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from app.engine.parse_checker import Checker
-from app.engine.parse_read import Node, Parsed, placed, read
+from app.engine.parse_read import Node, Parsed, names_in_order, placed, read
 from app.engine.parse_rules import CONSTANTS, FUNCTIONS, ExpressionError
 
 
@@ -106,8 +106,15 @@ def _summands(node: Node, sign: int) -> list[tuple[int, Node]]:
 
 
 def typed_terms(parsed: Parsed, names: Mapping[str, sp.Symbol]) -> list[sp.Expr]:
-    """The terms of an answer as typed, each built on its own (a term that another cancels is still there:
-    ``m g sin α − m g sin α`` is two terms here, nothing once built whole)."""
+    """The terms of an answer as typed that another term could cancel, each built on its own (a term that another
+    cancels is still there: ``m g sin α − m g sin α`` is two terms here, nothing once built whole); the terms whose
+    names no other term holds are left out."""
     stripped, offset = placed(parsed.text)
+    summands = _summands(parsed.tree, 1)
+    # two terms cancel only if they hold the same names: without such a pair nothing is built (the answer is then
+    # built once, whole, by its check: typing m g sin α twice is rare, every answer's terms are not)
+    held = [frozenset(n[3] for n in names_in_order(node)) for _, node in summands]
+    if len(set(held)) == len(held):
+        return []
     builder = Builder(stripped, offset, names)
-    return [sign * builder.build(node) for sign, node in _summands(parsed.tree, 1)]
+    return [sign * builder.build(node) for (sign, node), h in zip(summands, held, strict=True) if held.count(h) > 1]

@@ -8,6 +8,8 @@ MASS = Parameter("m", 0.1, "kg", 0.001, 100.0, "mass of the bead")
 # the rotating wire is finite: its two ends lie this far from the axis, at ρ = ±WIRE_REACH (in metres); a bead
 # that the turning flings outward leaves the wire there, and the run ends (the animation draws the wire to them)
 WIRE_REACH = 1.0
+# the reach in words: "m" is the bead's mass in this statement, so the unit is written out
+REACH_WORDS = f"{WIRE_REACH:g} metre" + ("" if WIRE_REACH == 1 else "s")
 
 HELIX_BEAD = Scene(
     id="helix-bead",
@@ -79,7 +81,7 @@ ROTATING_PARABOLA = Scene(
         "so that the wire's plane makes the angle ω t with the x axis. A bead of mass m slides on it without "
         "friction. Heights z are "
         "measured upward from the bottom of the parabola, where U = 0. The wire ends "
-        f"{WIRE_REACH:g} m from the axis on either side (ρ = ±{WIRE_REACH:g} m): a bead that reaches an end flies "
+        f"{REACH_WORDS} from the axis on either side (ρ = ±{REACH_WORDS}): a bead that reaches an end flies "
         "off, and the motion studied here ends there. With ρ as the "
         "coordinate, derive the equation of motion, compare the energy function h with the energy E, and explain "
         "which one is conserved."

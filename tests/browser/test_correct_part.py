@@ -15,7 +15,7 @@ from tests.browser.test_practice import STEP, answer, sized_page, verdict_of, wo
 pytestmark = pytest.mark.browser
 
 # the pulley's ÿ₁ with the denominator of an Atwood machine (student-l 3)
-PULLEY_SLIP = "g*(M/2 - m1)/(m1 + M/4)"
+PULLEY_SLIP = "g*(M - 2*m1)/(M + 4*m1 + m2)"
 # the rail's spring with the natural length's sign reversed
 RAIL_SLIP = "k*(x2 - x1 + l0)**2/2"
 
@@ -44,7 +44,7 @@ def test_the_correct_denominator_is_behind_a_tap_on_a_phone(browser, live_server
         part.wait_for(state="attached")
         said = words(verdict)
         # the place and the kind of slip are named; the correct denominator is not printed
-        assert "the denominator M + 4 m₁" in said and "where the correct one" not in said, said
+        assert "the denominator M + m₂ + 4 m₁" in said and "where the correct one" not in said, said
         assert "M m₁ + M m₂" not in said and "4 m₁ m₂" not in said, said
         verdict.screenshot(path=artifacts / "practice-correct-part-closed-390.png")
         math = _closed_then_typeset(part, "Show the correct denominator")

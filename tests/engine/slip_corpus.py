@@ -496,7 +496,7 @@ SLIPS = [
     # the coupling force's sign, typed as m ẍ₁ = −k x₁ − κ(x₂ − x₁): the force is named, not a U never typed here
     ("coupled-oscillators", "equation", "x1", "m*x1_ddot - (-k*x1 - kappa*(x2 - x1))", r"^(?!.*a U with).*sign of the force \(x₁ − x₂\) κ.*is −∂/∂x₁ of it, \(x₂ − x₁\) κ"),
     # ---- a solved acceleration or ω² read against the truth (issue 41, student's review: 2): the part that differs
-    ("pulley", "acceleration", "y1", "(m2-m1)*g/(m1+m2)", r"denominator m₁ \+ m₂\b.*solved together"),
+    ("pulley", "acceleration", "y1", "(m2-m1)*g/(m1+m2)", r"denominator m₁ \+ m₂\b.*(solved|solving their equations) together"),
     ("movable-incline", "acceleration", "X", "-m*g*sin(alpha)*cos(alpha)/(M+m)", r"denominator M \+ m\b.*solved together"),
     ("helix-bead", "acceleration", "z", "-g*(1+alpha**2*R**2)", r"1 \+ R² α² upside down"),
     ("coupled-oscillators", "acceleration", "x1", "-(k+2*kappa)/m*x1", r"term of x₂ left out"),

@@ -19,7 +19,7 @@ def nfc(text: str) -> str:
 
 # (scene, step, coordinate, answer, the name's start, the part in words, the correct part as text)
 CASES = [
-    ("pulley", "acceleration", "y1", "g*(M/2 - m1)/(m1 + M/4)", "the denominator M + 4 m₁", "denominator",
+    ("pulley", "acceleration", "y1", "g*(M - 2*m1)/(M + 4*m1 + m2)", "the denominator M + m₂ + 4 m₁", "denominator",
      "Mm₁ + Mm₂ + 4m₁m₂"),
     ("helix-bead", "acceleration", "z", "-g*R**2*alpha**2/(1+R**2*alpha**2)", "the numerator −g R² α²", "numerator",
      "−g"),
@@ -46,7 +46,7 @@ def test_the_correct_part_is_its_own_field_and_not_in_the_words(scene, step, coo
 
 
 def test_a_denominator_up_to_a_constant_factor_says_so_beside_it():
-    part = judge(step_problem("pulley", "acceleration", "y1"), "g*(M/2 - m1)/(m1 + M/4)")["correct_part"]
+    part = judge(step_problem("pulley", "acceleration", "y1"), "g*(M - 2*m1)/(M + 4*m1 + m2)")["correct_part"]
     assert part["note"] == "up to a constant factor"
 
 

@@ -69,8 +69,12 @@ def test_the_reviews_omissions_read_left_out(scene, step, coordinate, answer, na
 
 def test_an_acceleration_carried_from_an_equation_says_left_out_before_where():
     # the coupled oscillators' ẍ₁ without the coupling spring's force: said where the piece went, then which equation
-    result = judge(step_problem("coupled-oscillators", "acceleration", "x1"), "-k/m*x1")
-    assert result["mistake"]["name"].endswith("left out (in the equation for x₁)"), result["mistake"]
+    # (a force on x₁ alone moves x₁ alone: its name says the force over the mass, and no equation)
+    name = judge(step_problem("coupled-oscillators", "acceleration", "x1"), "-k/m*x1")["mistake"]["name"]
+    assert name == "the coupling spring's force κ (x₂ − x₁)/m left out", name
+    for scene, coordinate, typed in [("coupled-oscillators", "x2", "-(k+kappa)/m*x2"), ("rail-two-body", "x1", "k*(x2-x1)/m1")]:
+        name = judge(step_problem(scene, "acceleration", coordinate), typed)["mistake"]["name"]
+        assert "left out" in name and ("(in the equation" not in name or "left out (in the equation" in name), name
 
 
 def test_a_piece_added_says_added():

@@ -251,10 +251,10 @@ def test_a_g_typed_where_the_masses_stay_level_is_refused_with_why(client):
 
 
 def test_the_correct_part_comes_through_the_api_beside_the_named_slip(client):
-    # review student-l 3: the pulley's ÿ₁ with an Atwood machine's denominator names it and keeps the correct one apart
-    body = check(client, {"step": "acceleration", "coordinate": "y1", "answer": "g*(M/2 - m1)/(m1 + M/4)"}, "pulley")
+    # review student-l 3: the pulley's ÿ₁ with a wrong denominator names it and keeps the correct one apart
+    body = check(client, {"step": "acceleration", "coordinate": "y1", "answer": "g*(M - 2*m1)/(M + 4*m1 + m2)"}, "pulley")
     body = body.json()
-    assert body["mistake"]["name"].startswith("the denominator M + 4 m₁") and "correct one" not in body["mistake"]["name"]
+    assert body["mistake"]["name"].startswith("the denominator M + m₂ + 4 m₁") and "correct one" not in body["mistake"]["name"]
     assert body["correct_part"]["what"] == "denominator" and body["correct_part"]["latex"], body["correct_part"]
     plain = check(client, {"step": "kinetic", "answer": "m*R**2*theta_dot**2"}).json()
     assert plain["correct_part"] is None
