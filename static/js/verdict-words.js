@@ -44,7 +44,7 @@ export function endOf(text) {
  * it opens with a symbol (α, z, ω², d/dt: capitals would be other symbols), ended with a full stop. */
 export function sentenceOf(text) {
   const t = (text || "").trim();
-  const word = /^(a|[a-z]{2,})(\s|,)/.test(t);
+  const word = /^(a|[a-z]{2,})(\s|,|'|’)/.test(t); // a word, or a word's possessive (gravity's)
   return t ? `${word ? t[0].toUpperCase() : t[0]}${t.slice(1)}${/[.!?]$/.test(t) ? "" : "."}` : "";
 }
 
