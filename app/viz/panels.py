@@ -212,7 +212,9 @@ PANELS: tuple[Panel, ...] = (
         "poincare",
         "Poincaré section",
         "Several orbits with the same energy, each marked where it crosses a plane in one direction. An orbit "
-        "that keeps to a curve is regular (quasi-periodic); one whose points scatter over an area is chaotic.",
+        "that keeps to a curve is regular (quasi-periodic); one whose points scatter over an area is chaotic. Which "
+        "you see depends on the energy: near a stable equilibrium nearly every orbit is regular, high above it nearly "
+        "every orbit is chaotic, and in between both lie side by side; the start sets the energy.",
         "two conservative degrees of freedom, no conserved momentum, and equations not linear (else the motion is "
         "integrable: the section would be closed curves)",
         lambda f: f.dof == 2 and f.conservative and can_be_chaotic(f),
