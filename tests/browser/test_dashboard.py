@@ -76,14 +76,20 @@ def _within_first_screen(page, selector: str, height: int) -> None:
     assert box is not None and box["y"] >= 0 and box["y"] + box["height"] <= height, (selector, box)
 
 
-def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_server, classes, artifacts):
-    context, page, errors = teacher_page(browser, live_server)
-    room = classes[0]
+def _dashboard_of_scripted_class(page, room):
+    """The scripted class's dashboard opened as its lecturer reopens it (the class kept in this browser)."""
     page.goto("/teach")
     code, key, people = _scripted_class(room)
     kept = json.dumps({"code": code, "key": key, "title": "Mechanics II, Tuesday"})
     page.evaluate(f"localStorage.setItem('lagrange-teach', {json.dumps(kept)})")
     page.reload()
+    return code, key, people
+
+
+def test_the_first_screen_names_the_stuck_step_and_the_mistake(browser, live_server, classes, artifacts):
+    context, page, errors = teacher_page(browser, live_server)
+    room = classes[0]
+    code, key, people = _dashboard_of_scripted_class(page, room)
     page.wait_for_selector("#now-stuck[data-step]")
     page.wait_for_selector("#now-mistake[data-count]")
     assert page.evaluate("window.scrollY") == 0
@@ -189,12 +195,7 @@ def test_on_a_phone_the_students_table_header_lines_up_with_its_rows(browser, li
     under them): the header's cells sit over the rows' cells, column by column, whatever each row's numbers."""
     context, page, errors = teacher_page(browser, live_server)
     page.set_viewport_size({"width": 390, "height": 844})
-    room = classes[0]
-    page.goto("/teach")
-    code, key, _people = _scripted_class(room)
-    kept = json.dumps({"code": code, "key": key, "title": "Mechanics II, Tuesday"})
-    page.evaluate(f"localStorage.setItem('lagrange-teach', {json.dumps(kept)})")
-    page.reload()
+    _dashboard_of_scripted_class(page, classes[0])
     page.wait_for_selector("#dash-students tbody tr:not(.dash-loading)", state="attached")
     page.click("#names-shown")
     page.locator("#dash-students").scroll_into_view_if_needed()
