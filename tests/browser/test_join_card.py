@@ -58,7 +58,8 @@ def test_a_students_card_says_each_outcome_in_words(browser, live_server, classe
     # 16: right; after a reload the card says it is done, in words
     assert _check(kinetic, RIGHT_T).startswith("Correct")
     label = kinetic.locator(".practice-done-label")
-    assert label.is_visible() and label.inner_text() == "Done: this step is answered right."
+    label.wait_for(state="visible")  # set once the record has answered, a moment after the verdict
+    assert label.inner_text() == "Done: this step is answered right."
     page.reload()
     kinetic.locator(".practice-done-label").wait_for(state="visible")
     assert page.locator('.practice-step[data-step="potential"] .practice-done-label').is_hidden()

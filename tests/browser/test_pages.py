@@ -50,7 +50,8 @@ def test_scene_page_loads_typesets_and_draws_every_panel(page, artifacts, scene_
     open_scene(page, scene_id)
     assert page.locator(".katex-error").count() == 0
     assert page.evaluate("document.body.dataset.katexErrors") == "0"
-    typeset = page.locator(".math .katex").count()
+    # every formula typeset (one may hold several KaTeX trees: a stacked display's rows spaced by raised copies)
+    typeset = page.locator(".math:has(.katex)").count()
     assert typeset == page.locator(".math").count() > 0
     for section in page.locator("[data-panel]").all():
         kind = section.get_attribute("data-panel")
