@@ -3,11 +3,12 @@
 A rigid body's kinetic energy splits into two pieces (König's theorem, Taylor § 10.1): the whole mass moving
 with the centre of mass, and the turning about the centre,
 
-    T = ½ M v_cm² + ½ I_cm ω²,
+    T = ½ M v_cm² + ½ I_cm θ̇²,
 
-where I_cm is the moment of inertia about the axis through the centre normal to the plane of motion and ω the
-rate at which the body turns.  Each uniform body's I_cm is a number times M size² (INERTIA, the one table of
-them); a declared body (app/scenes/types.py ``Body``) gives its kind, mass, size, centre and angle.
+where I_cm is the moment of inertia about the axis through the centre normal to the plane of motion and θ̇ the
+rate at which the body's angle θ turns (printed as that rate, never as ω, which the pages keep for frequencies).
+Each uniform body's I_cm is a number times M size² (INERTIA, the one table of them); a declared body
+(app/scenes/types.py ``Body``) gives its kind, mass, size, centre and angle.
 """
 
 from __future__ import annotations
@@ -47,7 +48,7 @@ class BodyMotion:
     centre: tuple[sp.Expr, ...]
     velocity: tuple[sp.Expr, ...]
     speed_squared: sp.Expr
-    omega: sp.Expr
+    turning_rate: sp.Expr
     inertia: sp.Expr
     translation: sp.Expr
     rotation: sp.Expr
@@ -58,7 +59,7 @@ class BodyMotion:
 
 
 def body_motion(index: int, body: Body, table: SymbolTable, read: Callable[[str, str], sp.Expr]) -> BodyMotion:
-    """The body's v_cm², ω, I_cm and its translational and rotational energies.
+    """The body's v_cm², turning rate θ̇, I_cm and its translational and rotational energies.
 
     ``read(text, where)`` parses a text of positions (no velocities) in the system's names."""
     where = f"body {index}" + (f" ({body.label})" if body.label else "")
@@ -74,11 +75,11 @@ def body_motion(index: int, body: Body, table: SymbolTable, read: Callable[[str,
     velocity = tuple(table.dt(c) for c in centre)
     # v_cm² = v_cm · v_cm, with sin² + cos² = 1 (app/engine/trig.py)
     speed_squared = merged(pythagoras(sum(c**2 for c in velocity)))
-    # ω = d(angle)/dt: the angle turns about the axis normal to the plane
-    omega = table.dt(angle)
+    # θ̇ = d(angle)/dt: the angle turns about the axis normal to the plane
+    turning_rate = table.dt(angle)
     # I_cm = (number) M size², from the one table
     inertia = INERTIA[body.kind] * mass * size**2
-    # T = ½ M v_cm² (the centre's motion) + ½ I_cm ω² (the turning about the centre)
+    # T = ½ M v_cm² (the centre's motion) + ½ I_cm θ̇² (the turning about the centre)
     translation = merged(sp.expand(sp.Rational(1, 2) * mass * speed_squared))
-    rotation = sp.expand(sp.Rational(1, 2) * inertia * omega**2)
-    return BodyMotion(body, mass, size, centre, velocity, speed_squared, omega, inertia, translation, rotation)
+    rotation = sp.expand(sp.Rational(1, 2) * inertia * turning_rate**2)
+    return BodyMotion(body, mass, size, centre, velocity, speed_squared, turning_rate, inertia, translation, rotation)

@@ -344,8 +344,8 @@ def _sometimes(
         # with a drag on one coordinate, the small motions about an equilibrium go as e^{σt} (app/engine/report_modes)
         if len(d.table.q) == 1:
             tex, uni = exponent(d)
-            rows.append(_row(tex, uni, f"exponent of a small motion {text('displacement', d)} ∝ e^({uni}t) about an "
-                             "equilibrium, a root of its auxiliary equation", "1/s" if energy else "", "derived"))  # fmt: skip
+            rows.append(_row(tex, uni, f"rate in one of the exponentials that make up a small motion {text('displacement', d)} "
+                             "about an equilibrium, a root of its auxiliary equation", "1/s" if energy else "", "derived"))  # fmt: skip
     if len(d.table.q) > 1:
         # printed only where an ω² is too long to hold its root whole (the double pendulum's); the page lists a
         # row only where its letter is printed (``printed``)

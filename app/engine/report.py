@@ -320,11 +320,18 @@ def _power_tex(n: int) -> str:
     return "" if n == 1 else f"^{{{n}}}"
 
 
-def _body_marks(bodies: tuple[BodyMotion, ...], i: int) -> tuple[str, str]:
-    """The subscripts of body i's v_cm and I_cm, and of its ω: cm alone for one body, numbered for several."""
-    if len(bodies) == 1:
-        return r"\mathrm{cm}", ""
-    return rf"\mathrm{{cm}},{i + 1}", rf"_{{{i + 1}}}"
+def _body_mark(bodies: tuple[BodyMotion, ...], i: int) -> str:
+    """The subscript of body i's v_cm and I_cm: cm alone for one body, numbered for several."""
+    return r"\mathrm{cm}" if len(bodies) == 1 else rf"\mathrm{{cm}},{i + 1}"
+
+
+def _turning_squared(b: BodyMotion, pr: Printer, tex: bool = True) -> str:
+    """The square of the body's turning rate written as the rate itself, θ̇² or (ẋ/R)², never ω² (the pages keep
+    ω for frequencies), in LaTeX or (``tex`` false) in running text: a sign inside is dropped, as (−a)² = a²."""
+    rate = -b.turning_rate if b.turning_rate.could_extract_minus_sign() else b.turning_rate
+    if not tex:
+        return f"{pr.text(rate)}²" if rate.is_Symbol else f"({pr.text(rate)})²"
+    return f"{pr.tex(rate)}^{{2}}" if rate.is_Symbol else rf"\left({pr.tex(rate)}\right)^{{2}}"
 
 
 def _bodies_step(bodies: tuple[BodyMotion, ...], pr: Printer) -> dict[str, str]:
@@ -332,16 +339,16 @@ def _bodies_step(bodies: tuple[BodyMotion, ...], pr: Printer) -> dict[str, str]:
     rows: list[str] = []
     data: list[sp.Expr] = []
     for i, b in enumerate(bodies):
-        cm, w = _body_marks(bodies, i)
+        cm = _body_mark(bodies, i)
         rows += [
             rf"\vec r_{{{cm}}} = \left({', '.join(pr.tex(_common_factor(c)) for c in b.centre)}\right)",
             rf"v_{{{cm}}}^2 = {pr.tex(b.speed_squared)}",
-            rf"\omega{w} = {pr.tex(b.omega)}",
             rf"I_{{{cm}}} = {pr.tex(b.inertia)}",
         ]
-        data += [*b.centre, b.speed_squared, b.omega, b.inertia]
+        data += [*b.centre, b.speed_squared, b.inertia]
     named = "; ".join(
-        f"the {b.body.label or b.body.kind}'s I_cm = {pr.text(b.inertia)} is {_INERTIA_WORDS[b.body.kind]}"
+        f"the {b.body.label or b.body.kind} turns at the rate {pr.text(b.turning_rate)}, and its "
+        f"I_cm = {pr.text(b.inertia)} is {_INERTIA_WORDS[b.body.kind]}"
         for b in bodies
     )
     return _step(
@@ -350,7 +357,7 @@ def _bodies_step(bodies: tuple[BodyMotion, ...], pr: Printer) -> dict[str, str]:
         rows,
         data,
         "A rigid body moves with its centre of mass and turns about it: the centre is placed and differentiated "
-        f"like a mass, ω is the rate at which the body's angle turns, and {named}.",
+        f"like a mass; {named}.",
     )
 
 
@@ -364,15 +371,15 @@ _INERTIA_WORDS = {
 
 
 def _body_pieces(bodies: tuple[BodyMotion, ...], pr: Printer) -> list[str]:
-    """One row per body: T_body = ½ M v_cm² + ½ I_cm ω² = its translation + its rotation."""
+    """One row per body: T_body = ½ M v_cm² + ½ I_cm θ̇² = its translation + its rotation."""
     rows = []
     for i, b in enumerate(bodies):
-        cm, w = _body_marks(bodies, i)
+        cm = _body_mark(bodies, i)
         name = b.body.label or b.body.kind
         rotation = pr.tex(b.rotation)
         rows.append(
             rf"T_{{\mathrm{{{name}}}}} = \tfrac{{1}}{{2}} {pr.tex(b.mass)} v_{{{cm}}}^2 + \tfrac{{1}}{{2}} I_{{{cm}}}"
-            rf" \omega{w}^2 = {pr.tex(b.translation)}"
+            rf" {_turning_squared(b, pr)} = {pr.tex(b.translation)}"
             + (rf" - {rotation[1:]}" if rotation.startswith("-") else rf" + {rotation}")
         )
     return rows
@@ -386,7 +393,8 @@ def _kinetic_explanation(m: Any, pr: Printer) -> str:
         return "T adds up one half of mass times squared speed."
     pieces = "; ".join(
         f"the {b.body.label or b.body.kind}'s is ½ M v_cm² = {pr.text(b.translation)} for the motion of its "
-        f"centre plus ½ I_cm ω² = {pr.text(b.rotation)} for its turning about the centre"
+        f"centre plus ½ I_cm {_turning_squared(b, pr, tex=False)} = {pr.text(b.rotation)} for its turning about the "
+        "centre"
         for b in m.bodies
     )
     masses = " plus one half of mass times squared speed for each point mass" if m.positions else ""
@@ -727,8 +735,11 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
                 # U_eff = U − T₀), each piece as its own term, as the equilibria's step prints the same U_eff
                 # (−mgR cos θ − ½mR²w² sin²θ, never −mR(g cos θ + ½Rw² sin²θ))
                 rf"U_\text{{eff}}({rn}) = "
-                + (pr.tex(effective_potential(d), red.momenta[0]) if red.momenta
-                   else pr.tex(display(sp.expand(red.effective_potential)))),
+                + (
+                    pr.tex(effective_potential(d), red.momenta[0])
+                    if red.momenta
+                    else pr.tex(display(sp.expand(red.effective_potential)))
+                ),
                 rf"m_\text{{eff}} = {pr.tex(red.effective_mass)}",
             ],
             [effective_potential(d), red.effective_mass],

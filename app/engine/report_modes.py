@@ -343,8 +343,8 @@ _KIND = {
     STABLE: "every ω² is positive, so each mode oscillates: a stable equilibrium",
     NEUTRAL: "one ω² is zero: along that mode nothing pulls back and the system drifts at constant speed "
     "(a neutral direction), while the other modes oscillate",
-    "unstable": "a negative ω² means that small displacements along that mode grow like exp(√(−ω²) t): "
-    "an unstable equilibrium",
+    "unstable": "a negative ω² means that small displacements along that mode grow exponentially, at the rate "
+    "√(−ω²): an unstable equilibrium",
 }
 
 
@@ -928,6 +928,12 @@ def _damped_rows(e: Equilibrium, pr: Printer, d: Derivation) -> list[str]:
     return rows
 
 
+def _rate_words(rate: sp.Expr | None, w2: float, pr: Printer) -> str:
+    """The rate √(−ω²) at which a displacement runs away, in running text: in closed form, √(3g/(2l)), where one
+    is known, else its value in s⁻¹."""
+    return pr.text(rate) if rate is not None else f"{_figures(math.sqrt(-w2))} s⁻¹"
+
+
 def _one_coordinate_step(
     e: Equilibrium, pr: Printer, d: Derivation, number: int, where: str, about: str
 ) -> dict[str, str]:
@@ -953,12 +959,12 @@ def _one_coordinate_step(
         what = "Small motions about"
         r = notation.exponent(d)[1]  # in a sentence, the Unicode letter
         why = (
-            f"Linearised about {about}, a small displacement varies as e^({r}t), and the velocity term (the damping) "
-            f"enters the equation for {r}: the real part of {r} is a rate of growth or decay (in s⁻¹), its imaginary "
-            "part an angular frequency. "
+            f"Linearised about {about}, a small displacement is a sum of exponentials in time, one for each root "
+            f"{r} of the auxiliary equation, which holds the velocity term (the damping): the real part of {r} is a "
+            "rate of growth or decay (in s⁻¹), its imaginary part an angular frequency. "
             + (
                 f"One {r} is positive, {r}₊ ≈ {_figures(max(x.real for x in lin.exponents))} s⁻¹: a small displacement "
-                f"grows like e^({r}₊t) at that rate instead of oscillating, an unstable equilibrium."
+                "grows exponentially at that rate instead of oscillating, an unstable equilibrium."
                 if grows
                 else f"Every {r} has a negative real part: a small motion dies away, an asymptotically stable equilibrium."
             )
@@ -984,9 +990,9 @@ def _one_coordinate_step(
         rows.append(r"\text{rate } \sqrt{-" + wt + "^2} = " + _closed(rate, math.sqrt(-w2), r"\,\mathrm{s}^{-1}", pr))
         what = "No oscillation about"
         why = (
-            f"Linearised about {about}, the small displacement {eu} from it obeys {eu}̈ = |{wu}²| {eu}: it grows like "
-            f"exp(√(−{wu}²) t) instead of oscillating, so the equilibrium is unstable"
-            + (" at the current parameters." if conditional is not None else ".")
+            f"Linearised about {about}, the small displacement {eu} from it obeys {eu}̈ = |{wu}²| {eu}: it grows "
+            f"exponentially at the rate {_rate_words(rate, w2, pr)} instead of oscillating, so the equilibrium is "
+            "unstable" + (" at the current parameters." if conditional is not None else ".")
         )
     else:
         rows.append(rf"{wt}^2 = 0")

@@ -360,7 +360,7 @@ def reason(reasons: Mapping[str, str], key: str) -> str | None:
 
 COUPLED_OSCILLATORS: dict[str, str] = {
     "action": "The two masses move so that ∫ L dt is stationary between two configurations; each mode is a spring-like oscillation, so past half the faster mode's period the true path is a saddle of S, not its least value.",
-    "positions": "Both masses stay on the line; each sits at its rest position (1 metre either side of the middle) plus its displacement.",
+    "positions": "Both masses stay on the line; each sits at its rest position (a distance d either side of the middle) plus its displacement.",
     "velocities": "A rest position does not move, so each mass's velocity is the rate of its own displacement.",
     "squared-speeds": "On a line each squared speed is just ẋ², with no term mixing the two masses.",
     "kinetic": "The two equal masses' kinetic energies add, and neither velocity is tied to the other.",

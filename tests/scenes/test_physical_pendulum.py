@@ -16,10 +16,12 @@ def _steps():
 def test_t_is_the_centres_motion_plus_the_turning_about_the_centre():
     steps = _steps()
     assert r"I_{\mathrm{cm}} &= \frac{M l^{2}}{12}" in steps["bodies"]["latex"]
+    # ω is the small-oscillation frequency on this page (ω² = 3g/(2l)): the rod's turning rate is θ̇, never ω
+    assert r"\omega" not in steps["bodies"]["latex"], steps["bodies"]["latex"]
     kinetic = steps["kinetic"]["latex"]
     # the rod's two pieces, M l² θ̇²/8 (its centre at l/2 moving at (l/2) θ̇) and M l² θ̇²/24 (its turning), then T
     assert (
-        r"T_{\mathrm{rod}} &= \tfrac{1}{2} M v_{\mathrm{cm}}^2 + \tfrac{1}{2} I_{\mathrm{cm}} \omega^2 = "
+        r"T_{\mathrm{rod}} &= \tfrac{1}{2} M v_{\mathrm{cm}}^2 + \tfrac{1}{2} I_{\mathrm{cm}} \dot{\theta}^{2} = "
         r"\frac{1}{8} M l^{2} \dot{\theta}^{2} + \frac{1}{24} M l^{2} \dot{\theta}^{2}"
     ) in kinetic
     assert kinetic.endswith(r"T &= \frac{1}{6} M l^{2} \dot{\theta}^{2}\end{aligned}")

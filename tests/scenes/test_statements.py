@@ -4,6 +4,8 @@ where the statement says it is."""
 
 from __future__ import annotations
 
+import re
+
 import pytest
 import sympy as sp
 
@@ -51,3 +53,18 @@ def test_the_statement_names_the_zero_of_u_and_the_engines_u_is_zero_there(scene
 def test_the_wedges_statement_says_where_the_blocks_height_is_measured():
     statement = SCENES["movable-incline"].statement
     assert "height z = −D sin α" in statement and "U = 0 with the block at that corner (D = 0)" in statement
+
+
+# a parameter's unit as the prose writes it out ("m" is a mass in these statements, so the metre is spelled)
+UNIT_WORDS = {"m": ("metre", "metres", "m"), "kg": ("kg", "kilogram", "kilograms"), "s": ("s", "second", "seconds")}
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_no_sentence_states_a_parameters_default_as_if_it_were_fixed(scene_id):
+    # issue 40, item 1: "each sits at its rest position (1 metre either side of the middle)" stayed 1 metre when d
+    # was changed; a sentence names the parameter (a distance d), never its default value
+    scene = SCENES[scene_id]
+    prose = " ".join([scene.statement, scene.figure, *scene.reasons.values()])
+    for p in scene.system.parameters:
+        for word in UNIT_WORDS.get(p.unit, (p.unit,) if p.unit else ()):
+            assert not re.search(rf"(?<![\d.]){p.default:g} {word}\b", prose), (p.name, word)

@@ -266,3 +266,19 @@ def test_the_pulleys_middle_mass_has_its_acceleration_typeset_in_results():
     # the letter has its Symbols row, in the unit of the heights it is made of
     row = next(r for r in doc["notation"] if r["latex"] == "Y")
     assert (row["meaning"], row["unit"]) == ("height of the middle mass M, measured upward", "m")
+
+
+@pytest.mark.parametrize("scene_id", ["simple-pendulum", "physical-pendulum", "damped-pendulum", "double-pendulum"])
+def test_no_sentence_writes_an_exponential_as_code(scene_id):
+    # issue 40, item 3: "varies as e^(σt)", "grows like exp(√(−ω²) t)" are code; the sentence says it in words
+    for step in derivation_document(scene_id)["steps"]:
+        for code in ("exp(", "e^(", "e^{"):
+            assert code not in step["explanation"], (step["title"], step["explanation"])
+
+
+def test_a_runaway_says_its_rate_in_closed_form():
+    # the physical pendulum standing up runs away at √(3g/(2l)), the rate the row beside the sentence prints
+    (step,) = [
+        s for s in derivation_document("physical-pendulum")["steps"] if s["title"] == "No oscillation about θ = π"
+    ]
+    assert "it grows exponentially at the rate √(3g/(2l)) instead of oscillating" in step["explanation"]

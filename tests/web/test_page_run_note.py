@@ -27,7 +27,7 @@ def test_the_double_pendulum_statement_is_physics_and_its_chaos_is_named_beside_
     for words in ("last digits", "tolerance", "Integration", "three times", "Lyapunov"):
         assert words not in statement, words
     said = _note(page)
-    assert "largest Lyapunov exponent is about" in said and "The run shown lasts 3 s" in said, said
+    assert "largest Lyapunov exponent is about" in said and "The default run lasts 3 s" in said, said
     assert "putting it back at that distance every 0.1 s" in said and "over 100 s" in said, said
 
 
