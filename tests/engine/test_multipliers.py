@@ -184,3 +184,21 @@ def test_the_constraint_steps_prose_uses_the_cartesian_letters_the_page_prints(s
             continue
         for letter, sub in _PROSE_CARTESIAN.findall(step["explanation"] or ""):
             assert letter + str(subscripts.index(sub)) not in renamed, (scene_id, step["key"], step["explanation"])
+
+
+def test_each_group_of_rows_for_the_multipliers_is_said_in_words():
+    """prof-n 3: the helix printed five bare lines. Each group has its words: each constraint differentiated twice,
+    the cross coefficient that vanishes, then the equation left for each λ."""
+    rows = _multiplier_equation("helix-bead")["latex"].split(r" \\ ")
+    said = [r for r in rows if r"\text{" in r]
+    assert [r.split(r"\text{")[1].split("}")[0] for r in said] == [
+        "differentiating each constraint twice:",
+        "the cross coefficient, zero here:",
+        "so, for each λ alone:",
+    ]
+    # the words stand before what they say: the 𝒞̈ rows, the vanishing coefficient, the λ rows
+    assert r"\ddot{\mathcal{C}}_{1}" in rows[rows.index(said[0]) + 1]
+    assert r"\mathcal{C}_{2} = 0" in rows[rows.index(said[1]) + 1]
+    assert r"\lambda_{1}" in rows[rows.index(said[2]) + 1]
+    wedge = _multiplier_equation("movable-incline")["latex"]
+    assert r"\text{so, for the multipliers together:}" in wedge
