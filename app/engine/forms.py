@@ -108,12 +108,41 @@ def _score(form: sp.Expr, angles: set[sp.Expr]) -> float:
     return ops + len(own - angles)
 
 
+# a mass's name (m, M, m₁, μ): the letter a textbook takes out of a sum first
+_MASS_NAME = re.compile(r"(m|M|mu)\d*")
+
+
+def mass_out(expr: sp.Expr) -> sp.Expr:
+    """A sum every term of which holds one mass, with one term the mass alone, written as that mass times
+    (1 + …), as a textbook writes it: m + mα²R² is m(1 + α²R²), 4mα²ρ² + m is m(1 + 4α²ρ²). Anything else as it is."""
+    if isinstance(expr, sp.Mul):
+        # each constant bracket of a product too: (m + mα²R²) z̈ is m(1 + α²R²) z̈
+        held = [mass_out(f) for f in expr.args]
+        if all(h is f for h, f in zip(held, expr.args, strict=True)):
+            return expr
+        return sp.Mul(*(a for h in held for a in sp.Mul.make_args(h)), evaluate=False)
+    if not isinstance(expr, sp.Add):
+        return expr
+    # m + m a = m (1 + a): the common factor taken out of every term
+    content, inner = sp.factor_terms(expr).as_coeff_Mul()
+    common, bracket = inner.as_independent(sp.Add, as_Add=False) if inner.is_Mul else (sp.Integer(1), inner)
+    if not (isinstance(bracket, sp.Add) and common.is_Symbol and _MASS_NAME.fullmatch(common.name)):
+        return expr
+    if sp.Integer(1) not in bracket.args:
+        return expr
+    return sp.Mul(content, common, bracket, evaluate=False) if content != 1 else sp.Mul(common, bracket, evaluate=False)
+
+
 def _simplest(const: sp.Expr) -> sp.Expr:
-    """A constant coefficient in its shortest form: as it is, common factors out, or cancelled."""
+    """A constant coefficient in its shortest form: as it is, common factors out, or cancelled; a mass times
+    (1 + …) taken out (mass_out) where the sum holds it."""
     if not isinstance(const, sp.Add):
         return const
 
     def shortest() -> sp.Expr:
+        held = mass_out(const)
+        if held is not const:
+            return held
         forms = [const, sp.factor_terms(const), sp.factor(const)]
         return min(forms, key=lambda e: (sp.count_ops(e), forms.index(e)))
 
@@ -596,7 +625,7 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, units
             return fallback
         best[0] = fallback
     # quotients as a textbook writes them: each term over its own denominator, no fraction in a denominator
-    found = textbook_quotients(like_terms_added(best[0], moving), moving)
+    found = mass_out(textbook_quotients(like_terms_added(best[0], moving), moving))
     if len(_CACHE) < _CACHE_SIZE:
         _CACHE[key] = found
     return settle(found, names)  # a form, formed again, stays as it is

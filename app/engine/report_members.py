@@ -111,7 +111,14 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
             "The multipliers along the normals",
             # 𝒞̈ = 0 said, not expanded: its expansion (a dozen terms on the turning parabola) is wider than a
             # page or a phone, and the equation for λ below is what it gives
-            [rf"\ddot{{{CONSTRAINT}}}_{{{a}}} = 0" for a in range(1, len(m.twice) + 1)] + zero + normal,
+            # each group of rows said in words, as the wedge's page reads: what is differentiated, what vanishes,
+            # what is left for the multipliers
+            [_said("differentiating each constraint twice:")]
+            + [rf"\ddot{{{CONSTRAINT}}}_{{{a}}} = 0" for a in range(1, len(m.twice) + 1)]
+            + ([_said(f"the cross coefficient{'s' if len(zero) > 1 else ''}, zero here:")] if zero else [])
+            + zero
+            + [_said(_left_for(k, bool(cross) and not on_motion))]
+            + normal,
             [*m.twice, *m.right],
             "The constraint holds at every instant, so its second time derivative vanishes. Putting r̈ from "
             "Newton's law into it keeps only the component of the equations along ∇𝒞: an equation for λ alone, "
@@ -157,6 +164,18 @@ def _coupling_sentence(crossed: bool, on_motion: bool) -> str:
             "own equation."
         )
     return f"{normals} not perpendicular here, so the equations for the multipliers are coupled."
+
+
+def _said(words: str) -> str:
+    """A row of words before the rows it introduces (set from the alignment column, as a row without "=" is)."""
+    return rf"\text{{{words}}}"
+
+
+def _left_for(k: int, coupled: bool) -> str:
+    """The words before the equations for the multipliers: λ₁ alone, each λ alone, or the multipliers together."""
+    if k == 1:
+        return "so for λ₁ alone:"
+    return "so, for the multipliers together:" if coupled else "so, for each λ alone:"
 
 
 def _vanishing(cp: Printer, c: sp.Expr, m: Multipliers) -> str:

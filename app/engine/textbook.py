@@ -93,6 +93,10 @@ class _Printer(LatexPrinter):
             # (m₁ + m₂)(l₁ + l₂), (m₁ + m₂)(l₁ − l₂)²
             lead = min(_parameter_rank(s.name) for s in base.free_symbols) if base.free_symbols else (9, "", "")
             return (-1, lead[0], f.is_Pow, sp.default_sort_key(f))
+        if base.is_Symbol and base not in self.moving and _MASS.fullmatch(base.name):
+            # a mass before a bracket of other parameters, as a textbook writes it: m(1 + α²R²) ż, ½ m(1 + 4α²ρ²) ρ̇²
+            # (a bracket holding a mass still leads: (m₁ + m₂) g l₁)
+            return (-1, 0.5, f.is_Pow, *_parameter_rank(base.name))
         if base.is_Symbol and base not in self.moving:
             # a parameter, or a constant of the motion (p_φ, E_r) after the parameters
             momentum = base.name.startswith("p_") or base.name.startswith("E_")

@@ -279,10 +279,10 @@ PULLEY: dict[str, str] = {
     **_hamiltonian("the kinetic energy written with the inverse mass matrix, plus the weights"),
     "equilibria": "The generalized forces are constant: with m₁ = m₂ = M/2 they vanish and every position is an equilibrium; otherwise (at the default masses, too) there is none.",
     "constraints": "With ζ₁, ζ₂, ζ₃ the heights of m₁, m₂ and M (ζ₁ = y₁, ζ₂ = y₂, ζ₃ = Y, all in metres), the string's length fixes ζ₁ + ζ₂ + 2ζ₃ = −2c, the constant c placing M below the end masses.",
-    "multiplier-lagrangian": "Three free masses, each pulled up by the string: λ on each end mass, 2λ on the movable pulley (∂𝒞/∂z₃ = 2).",
-    "multiplier-equation": "The string's length is fixed, so the accelerations obey z̈₁ + z̈₂ + 2 z̈₃ = 0: each mass's inertia enters through 1/m.",
+    "multiplier-lagrangian": "Three free masses, each pulled up by the string: λ on each end mass, 2λ on the movable pulley (∂𝒞/∂ζ₃ = 2).",
+    "multiplier-equation": "The string's length is fixed, so the accelerations obey ζ̈₁ + ζ̈₂ + 2 ζ̈₃ = 0: each mass's inertia enters through 1/m.",
     "multiplier": "No velocities enter: the tension is constant while the masses move.",
-    "constraint-forces": "Since ∂𝒞/∂z₁ = 1, λ itself is the tension: the string's upward pull on mass 1, the same along the whole string; on the movable pulley it pulls with twice that.",
+    "constraint-forces": "Since ∂𝒞/∂ζ₁ = 1, λ itself is the tension: the string's upward pull on mass 1, the same along the whole string; on the movable pulley it pulls with twice that.",
 }
 
 

@@ -110,3 +110,17 @@ def test_terms_differing_by_a_parameter_factor_are_one_term():
     inner = sp.Mul(-1, sp.Add(M * g * sp.sin(a), m1 * g * sp.sin(a), m1 * ad**2), evaluate=False)
     shown = forms.like_terms_added(inner, {a, ad})
     assert isinstance(shown, sp.Mul) and shown.args[0] == -1 and shown.has((M + m1) * g * sp.sin(a))
+
+
+def test_a_sum_that_is_a_mass_times_one_plus_more_is_printed_factored():
+    """prof-n 6: the helix wrote p_z = m(1 + α²R²) ż and, one line later, (m + mα²R²) z̈; the rotating wire
+    𝓜 = 4mα²ρ² + m. A sum whose terms share one mass, one of them the mass alone, is that mass times (1 + …)."""
+    shown = textbook_form(M + M * l1**2 * g**2, NAMES)
+    assert shown.args.count(M) == 1 and any(isinstance(f, sp.Add) and 1 in f.args for f in shown.args), shown
+    _equal(shown, M + M * l1**2 * g**2)
+    moving = textbook_form((M + M * l1**2 * g**2) * add, NAMES)
+    assert isinstance(moving, sp.Mul) and M in moving.args and add in moving.args, moving
+    coordinate = textbook_form(4 * M * l1**2 * a**2 + M, NAMES)
+    assert isinstance(coordinate, sp.Mul) and M in coordinate.args, coordinate
+    # two masses share nothing to take out: m₁ + m₂ stays
+    assert textbook_form(m1 + m2 * a**2, NAMES) == m1 + m2 * a**2

@@ -1,12 +1,16 @@
 """The multipliers derived from the Cartesian Lagrangian with the constraints agree with the engine's."""
 
 import random
+import re
 
 import pytest
 import sympy as sp
 
+from app.engine.constraints import cartesian_symbols
 from app.engine.derive import derive
 from app.engine.multipliers import derived_multipliers
+from app.engine.names import latex
+from app.engine.notation import cartesian_names
 from app.scenes import SCENES
 from app.service.derivations import derivation_document
 
@@ -158,3 +162,43 @@ def test_the_wedge_says_its_multipliers_are_coupled():
     assert "not perpendicular here, so the equations for the multipliers are coupled" in step["explanation"]
     rows = step["latex"].split(r" \\ ")
     assert any(r"\lambda_{1}" in r and r"\lambda_{2}" in r for r in rows)
+
+
+# a Cartesian letter as the prose writes it: x, y or z, any dots (combining marks), then a subscript digit
+_PROSE_CARTESIAN = re.compile("([xyz])[\u0307\u0308]*([₀₁₂₃₄₅₆₇₈₉])")
+
+
+@pytest.mark.parametrize("scene_id", CONSTRAINED)
+def test_the_constraint_steps_prose_uses_the_cartesian_letters_the_page_prints(scene_id):
+    """prof-n 4: the pulley announced ξᵢ, ηᵢ, ζᵢ and then wrote ∂𝒞/∂z₃ = 2 and z̈₁ + z̈₂ + 2z̈₃ = 0. Every body's
+    component the page renames (notation.cartesian_names) never appears under its old letter in those steps' words."""
+    d = derive(SCENES[scene_id].system)
+    every = [s.name for triple in cartesian_symbols(len(d.system.particles)) for s in triple]
+    printed = cartesian_names(every, {latex(s.name) for s in (*d.table.q, *d.table.params)})
+    # a renamed letter that is also the system's own coordinate (the pulley's y₁) may be written: it means that
+    own = {s.name for s in (*d.table.q, *d.table.params)}
+    renamed = {name for name, shown in printed.items() if shown != name and name not in own}
+    subscripts = "₀₁₂₃₄₅₆₇₈₉"
+    for step in derivation_document(scene_id)["steps"]:
+        if step["key"] not in DERIVATION:
+            continue
+        for letter, sub in _PROSE_CARTESIAN.findall(step["explanation"] or ""):
+            assert letter + str(subscripts.index(sub)) not in renamed, (scene_id, step["key"], step["explanation"])
+
+
+def test_each_group_of_rows_for_the_multipliers_is_said_in_words():
+    """prof-n 3: the helix printed five bare lines. Each group has its words: each constraint differentiated twice,
+    the cross coefficient that vanishes, then the equation left for each λ."""
+    rows = _multiplier_equation("helix-bead")["latex"].split(r" \\ ")
+    said = [r for r in rows if r"\text{" in r]
+    assert [r.split(r"\text{")[1].split("}")[0] for r in said] == [
+        "differentiating each constraint twice:",
+        "the cross coefficient, zero here:",
+        "so, for each λ alone:",
+    ]
+    # the words stand before what they say: the 𝒞̈ rows, the vanishing coefficient, the λ rows
+    assert r"\ddot{\mathcal{C}}_{1}" in rows[rows.index(said[0]) + 1]
+    assert r"\mathcal{C}_{2} = 0" in rows[rows.index(said[1]) + 1]
+    assert r"\lambda_{1}" in rows[rows.index(said[2]) + 1]
+    wedge = _multiplier_equation("movable-incline")["latex"]
+    assert r"\text{so, for the multipliers together:}" in wedge

@@ -101,3 +101,11 @@ def test_a_document_prints_each_expression_once_for_each_set_of_names(monkeypatc
         assert len(printed) == 3
     textbook.latex(expr, names)  # outside a document: printed each time
     assert len(printed) == 4
+
+
+def test_a_mass_comes_before_a_bracket_of_other_parameters():
+    """prof-n 6: the helix printed ½(1 + α²R²) m ż², computer-algebra order; a textbook writes ½ m(1 + α²R²) ż².
+    A bracket that holds a mass still leads: (m₁ + m₂) g l₁."""
+    assert tex((1 + g * R**2) * m * thd**2 / 2) == r"\frac{1}{2} m \left(1 + g R^{2}\right) \dot{\theta}^{2}"
+    assert tex((g - b**2 / 2) * m * theta**2) == r"m \left(g - \frac{b^{2}}{2}\right) \theta^{2}"
+    assert tex((m + b) * g * R) == r"\left(m + b\right) g R"

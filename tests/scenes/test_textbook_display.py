@@ -26,7 +26,7 @@ PINNED = {  # fmt: skip
         ],
     ),
     "helix-bead": (
-        "\\frac{1}{2} \\left(1 + \\alpha^{2} R^{2}\\right) m \\dot{z}^{2} - m g z",
+        "\\frac{1}{2} m \\left(1 + \\alpha^{2} R^{2}\\right) \\dot{z}^{2} - m g z",
         [
             "\\ddot{z} + \\frac{g}{1 + \\alpha^{2} R^{2}} = 0",
         ],
