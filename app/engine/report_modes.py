@@ -42,6 +42,17 @@ def _collapsed(expr: sp.Expr) -> sp.Expr:
     return collapsed if sp.count_ops(collapsed) < sp.count_ops(expr) else expr
 
 
+def _hamiltonian_shown(ham: Hamilton) -> sp.Expr:
+    """H as built, its completed squares (p_x + eBy/2)² kept whole: pulling common factors out of them would
+    print (2p_x + eBy)²/(8m), so each square of a sum holding a momentum stands in as one symbol meanwhile."""
+    squares = {
+        w: sp.Dummy()
+        for w in ham.hamiltonian.atoms(sp.Pow)
+        if w.exp == 2 and w.base.is_Add and w.base.has(*ham.momenta)
+    }
+    return _show(ham.hamiltonian.xreplace(squares)).xreplace({v: w for w, v in squares.items()})
+
+
 def hamilton_printer(d: Derivation, ham: Hamilton) -> Printer:
     """The derivation's printer, with the momentum of coordinate q printed p_q."""
     names = d.table.latex_names()
@@ -59,7 +70,7 @@ def hamilton_steps(d: Derivation, ham: Hamilton) -> list[dict[str, str]]:
     pdn = [latex(f"{P.name}_dot") for P in ham.momenta]
     vn = [pr.tex(v) for v in table.qd]
     velocities = [_show(v) for v in ham.velocities]
-    H = _show(ham.hamiltonian)
+    H = _hamiltonian_shown(ham)
     p_dot = [_show(x) for x in ham.p_dot]
     forced = any(f != 0 for f in d.mechanics.Q)
     offsets = any(b != 0 for b in ham.offsets)
@@ -106,7 +117,7 @@ def hamilton_steps(d: Derivation, ham: Hamilton) -> list[dict[str, str]]:
 def hamilton_json(d: Derivation, ham: Hamilton) -> dict[str, Any]:
     pr = hamilton_printer(d, ham)
     return {
-        "hamiltonian": pr.pair(_show(ham.hamiltonian)),
+        "hamiltonian": pr.pair(_hamiltonian_shown(ham)),
         "momenta": {name: P.name for name, P in zip(d.table.names, ham.momenta, strict=True)},
         "equations": [
             {"coordinate": name, "q_dot": pr.pair(_show(v)), "p_dot": pr.pair(_show(x))}
@@ -553,7 +564,9 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         )
     if nm.everywhere:
         why += (
-            "V does not depend on the coordinates and nothing else acts on a body at rest, so every configuration "
+            # the page's own letter for the potential (U, or U_eff where the rows above write U_eff), never a third
+            f"{'U' if plain else notation.rest_potential(d)[1]} does not depend on the coordinates and nothing else "
+            "acts on a body at rest, so every configuration "
             "is an equilibrium"
             + (
                 "; the velocity terms (a magnetic field, a Coriolis force) act only on moving bodies and turn them."

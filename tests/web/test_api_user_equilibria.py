@@ -35,6 +35,26 @@ def test_a_charge_in_a_uniform_magnetic_field_is_at_rest_anywhere(client):
     assert r"\text{any } x,\; y" in modes["latex"]
 
 
+def test_a_charge_in_a_magnetic_field_has_its_squares_completed_and_its_potential_named_as_on_the_page(client):
+    # prof-n 9: H printed (B²e²x²/4 + B²e²y²/4 + Be p_x y − Be p_y x + p_x² + p_y²)/(2m), and "V does not depend"
+    # beside rows that write U_eff
+    doc = derive(
+        client,
+        {
+            "coordinates": ["x", "y"],
+            "parameters": ["m", "B", "e"],
+            "lagrangian": "m*(x_dot**2 + y_dot**2)/2 + e*B*(x*y_dot - y*x_dot)/2",
+        },
+    )
+    (H,) = steps(doc, "hamiltonian-pq")
+    shown = H["latex"].split("=")[-1].replace(" ", "")
+    assert r"\left(p_{y}-Bex/2\right)^{2}" in shown and r"\left(Bey/2+p_{x}\right)^{2}" in shown
+    assert shown.endswith("{2m}") and "B^{2}" not in shown
+    (eq,) = steps(doc, "equilibria")
+    assert r"U_\text{eff} &= -L" in eq["latex"]
+    assert "U_eff does not depend on the coordinates" in eq["explanation"] and "V " not in eq["explanation"]
+
+
 def test_a_typed_spring_between_two_carts_has_a_family(client):
     doc = derive(
         client,
