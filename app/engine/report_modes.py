@@ -550,7 +550,7 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
     sym = {s.name: s for s in table.q}
     rows += _singular_points(nm, d, pr, vname)
     rows += _points(nm.kinks, sym, pr, rf"\quad (\text{{at a kink of }} {vname})")
-    rows += _points(nm.unclassified, sym, pr, r"\quad (\text{coefficients change with } t)")
+    rows += _points(nm.unclassified, sym, pr, r"\quad (\text{coefficients change with } t)", nm.unclassified_exact)
     why = "At rest (q̇ = 0) the state stays put where the Euler–Lagrange equations give q̈ = 0. "
     if not plain:
         why += (

@@ -301,3 +301,20 @@ def test_a_typed_pendulum_on_a_sliding_spring_mounted_pivot_prints_its_discrimin
     (el,) = steps(doc, "euler-lagrange")
     assert r"m l \ddot{\theta} \cos {\theta} - m l \dot{\theta}^{2} \sin {\theta}" in el["latex"]
     assert r"l \ddot{\theta} + \ddot{X} \cos {\theta} + g \sin {\theta} = 0" in el["latex"]
+
+
+def test_a_shaken_pivots_equilibria_are_printed_exactly(client):
+    # prof-n 9: "θ = 3.142 (coefficients change with t)" where the time-independent equilibria print π
+    doc = derive(
+        client,
+        {
+            "coordinates": ["theta"],
+            "parameters": ["m", "l", "g", "a", "w"],
+            "lagrangian": "m*(l**2*theta_dot**2 + 2*l*theta_dot*a*w*sin(w*t)*sin(theta) + a**2*w**2*sin(w*t)**2)/2"
+            " + m*g*(l*cos(theta) + a*cos(w*t))",
+        },
+    )
+    (eq,) = steps(doc, "equilibria")
+    assert r"\theta &= \pi\quad (\text{coefficients change with } t)" in eq["latex"]
+    assert r"\theta &= 0\quad (\text{coefficients change with } t)" in eq["latex"]
+    assert "3.142" not in eq["latex"]
