@@ -24,6 +24,7 @@ from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode,
 from app.engine.names import latex
 from app.engine.reduction import Equilibrium as ReducedEquilibrium
 from app.engine.report import Printer, _step, display, plain_name
+from app.engine.root_forms import trig_cancelled
 from app.engine.stability import Linear
 from app.engine.textbook import unicode_text
 
@@ -950,6 +951,20 @@ def _one_coordinate_step(
     mode = e.modes[0]
     w2 = mode.omega_squared
     name = e.coordinates[0]
+    exact = mode.exact
+    red = d.reduction
+    eliminated = ""
+    if e.momenta and exact is not None and red is not None and red.coordinate == name:
+        if red.omega_squared_steady is not None:
+            # about a steady motion, ω² in its coordinate r₀ with the momentum eliminated by U_eff′(r₀) = 0, as the
+            # steady motions' step prints it (3g cos a/r₀ in a cone), not the root put back into U_eff″/m_eff
+            r = next(s for s in d.table.q if s.name == name)
+            exact = trig_cancelled(red.omega_squared_steady.xreplace({r: sp.Symbol(name + "0", real=True)}))
+            r0, momentum = unicode_text(sp.Symbol(name + "0")), ", ".join(unicode_text(P) for P in red.momenta)
+            eliminated = (
+                f" {wu}² is written in {r0}, the steady motion's {plain_name(name)}, with {momentum} eliminated by "
+                f"U_eff′({r0}) = 0."
+            )
     moving = e.linear is not None and e.linear.moving
     rows = [where]
     # the reduction's verdict in symbols: where the place exists, and when ω² is positive (g > Rw² at the
@@ -979,7 +994,7 @@ def _one_coordinate_step(
         if grows:
             what = "No oscillation about"
     elif w2 > 0:
-        rows.append(f"{wt}^2 = " + _closed(mode.exact, w2, PER_SECOND_SQUARED, pr))
+        rows.append(f"{wt}^2 = " + _closed(exact, w2, PER_SECOND_SQUARED, pr))
         what = "Small oscillations about"
         why = (
             f"Linearised about {about}, the small displacement {eu} from it obeys {eu}̈ + {wu}² {eu} = 0: it "
@@ -988,8 +1003,8 @@ def _one_coordinate_step(
         )
     elif w2 < 0:
         # the rate √(−ω²) printed over the whole radicand, √(3g/(2l)), not SymPy's √6 √(g/l)/2
-        rate = sp.Pow(-mode.exact, sp.S.Half, evaluate=False) if mode.exact is not None else None
-        shown = pr.tex(mode.exact) if mode.exact is not None else _figures(w2) + PER_SECOND_SQUARED
+        rate = sp.Pow(-exact, sp.S.Half, evaluate=False) if exact is not None else None
+        shown = pr.tex(exact) if exact is not None else _figures(w2) + PER_SECOND_SQUARED
         # a sign that depends on the parameters is the sign at the current ones, said in the equation itself
         # (braced, so that a phone's line never breaks between "<" and "0")
         negative = r"{\;<\;0}\quad \text{at the current parameters}" if conditional is not None else "< 0"
@@ -1047,6 +1062,7 @@ def _one_coordinate_step(
                 if w2 < 0
                 else "."
             )
+            + eliminated
         )
         key = f"steady-motion:{number}"
     else:

@@ -318,3 +318,20 @@ def test_a_shaken_pivots_equilibria_are_printed_exactly(client):
     assert r"\theta &= \pi\quad (\text{coefficients change with } t)" in eq["latex"]
     assert r"\theta &= 0\quad (\text{coefficients change with } t)" in eq["latex"]
     assert "3.142" not in eq["latex"]
+
+
+def test_a_particle_in_a_cone_has_its_steady_motions_frequency_in_r0_alone(client):
+    # prof-n 9: ω² = 3 m^{2/3} g^{4/3} p_φ²/[(1/(sin²a cos a))^{4/3} sin²a |p_φ|^{8/3}] one step after 3g cos a/r₀
+    doc = derive(
+        client,
+        {
+            "coordinates": ["r", "phi"],
+            "parameters": ["m", "g", "a"],
+            "lagrangian": "m*(r_dot**2 + r**2*sin(a)**2*phi_dot**2)/2 - m*g*r*cos(a)",
+        },
+    )
+    (steady,) = steps(doc, "steady-motion")
+    (rows,) = [row for row in steady["latex"].split(r"\\") if r"\omega^2" in row]
+    assert r"\omega^2 &= \frac{3 g \cos {a}}{r_{0}} \approx" in rows
+    assert "p_{\\varphi}" not in rows and "frac{4}{3}" not in rows
+    assert "written in r₀, the steady motion's r, with p_φ eliminated by U_eff′(r₀) = 0" in steady["explanation"]
