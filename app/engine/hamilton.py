@@ -68,8 +68,14 @@ def hamilton(d: Derivation) -> Hamilton:
     # q_dot = M^-1 (p - b)
     Ar = A * r
     v = sp.Matrix([sp.factor_terms(pythagoras(x)) / D for x in Ar])
-    # H = 1/2 (p - b) . M^-1 (p - b) - L0, the kinetic part over one denominator
-    H = sp.factor_terms(pythagoras((r.T * Ar)[0, 0])) / (2 * D) - L0
+    # H = 1/2 (p - b) . M^-1 (p - b) - L0, the kinetic part over one denominator, the quadratic form built in
+    # u = p - b and each u_k then written back as (p_k - b_k): where L has terms linear in the velocities the
+    # squares stay completed, [(p_x + eBy/2)^2 + (p_y - eBx/2)^2]/(2m) for a charge in a magnetic field, as a
+    # textbook prints them, not multiplied out into p_x^2 + eB p_x y + ...
+    u = sp.Matrix([sp.Dummy(f"u_{name}") for name in table.names])
+    quadratic = sp.factor_terms(pythagoras((u.T * A * u)[0, 0]))
+    shifted = {uk: P[k] - sp.factor_terms(pythagoras(b[k])) for k, uk in enumerate(u)}
+    H = quadratic.xreplace(shifted) / (2 * D) - L0
     to_p = dict(zip(table.qd, v, strict=True))
     # p_dot = -dH/dq + Q = dL/dq + Q, at q_dot(q, p)
     p_dot = tuple((g + Q).xreplace(to_p) for g, Q in zip(eqs.dL_dq, mech.Q, strict=True))

@@ -112,6 +112,7 @@ class NormalModes:
     everywhere: bool = False  # V is constant and nothing else pushes: every configuration is an equilibrium
     singular_exact: tuple[dict[str, sp.Expr] | None, ...] = ()  # the closed forms of ``singular``, where known
     common_factor: bool = False  # M, G, K change with t by one common factor, divided out (app.engine.time_factor)
+    unclassified_exact: tuple[dict[str, sp.Expr] | None, ...] = ()  # the closed forms of ``unclassified`` (π)
 
 
 def defaults(d: Derivation) -> dict[sp.Symbol, float]:
@@ -215,6 +216,7 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
     singular_exact: list[dict[str, sp.Expr] | None] = []
     kinks: list[dict[str, float]] = []
     unclassified: list[dict[str, float]] = []
+    unclassified_exact: list[dict[str, sp.Expr] | None] = []
     common_factor = False
     damped = False
     # over the cap: the ones nearest q = 0, listed in order
@@ -228,6 +230,8 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
             t0 = common_factor_time((M, G, J), args, t, [*x, *k])
             if t0 is None:
                 unclassified.append(position)
+                found = exact if exact is not None else _recognized(g_exprs, q, x)
+                unclassified_exact.append({s.name: v for s, v in found.items()} if found is not None else None)
                 continue
             at, common_factor = {t: sp.nsimplify(t0)}, True
         e = _linearized(d, M.xreplace(at), J.xreplace(at), G.xreplace(at), exact, x, values)
@@ -274,7 +278,19 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
         all(e == 0 for e in g_exprs),
         tuple(singular_exact),
         common_factor,
+        tuple(unclassified_exact),
     )
+
+
+def _recognized(g_exprs: list[sp.Expr], q: list[sp.Symbol], x: np.ndarray) -> dict[sp.Symbol, sp.Expr] | None:
+    """A point found numerically, as a closed form where one is recognized (θ = π, not 3.142): each coordinate a
+    rational multiple of π or a small rational, kept only when every equilibrium condition vanishes there exactly,
+    for every t and every value of the parameters (the shaken pivot's m g l sin θ + m a l w² cos(wt) sin θ at π)."""
+    guess = {s: sp.nsimplify(float(v), [sp.pi], tolerance=1e-9, rational=False) for s, v in zip(q, x, strict=True)}
+    if any(sp.count_ops(v) > 4 for v in guess.values()):
+        return None
+    # the conditions at the guessed point, identically zero
+    return guess if all(sp.simplify(e.xreplace(guess)) == 0 for e in g_exprs) else None
 
 
 def _searched(names: tuple[str, ...], periodic: list[bool], nonnegative: set[int], k: list[float]) -> str:

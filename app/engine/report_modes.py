@@ -24,6 +24,7 @@ from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode,
 from app.engine.names import latex
 from app.engine.reduction import Equilibrium as ReducedEquilibrium
 from app.engine.report import Printer, _step, display, plain_name
+from app.engine.root_forms import trig_cancelled
 from app.engine.stability import Linear
 from app.engine.textbook import unicode_text
 
@@ -40,6 +41,17 @@ def _collapsed(expr: sp.Expr) -> sp.Expr:
     come back multiplied out, several times as long."""
     collapsed = pythagoras(expr)
     return collapsed if sp.count_ops(collapsed) < sp.count_ops(expr) else expr
+
+
+def _hamiltonian_shown(ham: Hamilton) -> sp.Expr:
+    """H as built, its completed squares (p_x + eBy/2)² kept whole: pulling common factors out of them would
+    print (2p_x + eBy)²/(8m), so each square of a sum holding a momentum stands in as one symbol meanwhile."""
+    squares = {
+        w: sp.Dummy()
+        for w in ham.hamiltonian.atoms(sp.Pow)
+        if w.exp == 2 and w.base.is_Add and w.base.has(*ham.momenta)
+    }
+    return _show(ham.hamiltonian.xreplace(squares)).xreplace({v: w for w, v in squares.items()})
 
 
 def hamilton_printer(d: Derivation, ham: Hamilton) -> Printer:
@@ -59,7 +71,7 @@ def hamilton_steps(d: Derivation, ham: Hamilton) -> list[dict[str, str]]:
     pdn = [latex(f"{P.name}_dot") for P in ham.momenta]
     vn = [pr.tex(v) for v in table.qd]
     velocities = [_show(v) for v in ham.velocities]
-    H = _show(ham.hamiltonian)
+    H = _hamiltonian_shown(ham)
     p_dot = [_show(x) for x in ham.p_dot]
     forced = any(f != 0 for f in d.mechanics.Q)
     offsets = any(b != 0 for b in ham.offsets)
@@ -106,7 +118,7 @@ def hamilton_steps(d: Derivation, ham: Hamilton) -> list[dict[str, str]]:
 def hamilton_json(d: Derivation, ham: Hamilton) -> dict[str, Any]:
     pr = hamilton_printer(d, ham)
     return {
-        "hamiltonian": pr.pair(_show(ham.hamiltonian)),
+        "hamiltonian": pr.pair(_hamiltonian_shown(ham)),
         "momenta": {name: P.name for name, P in zip(d.table.names, ham.momenta, strict=True)},
         "equations": [
             {"coordinate": name, "q_dot": pr.pair(_show(v)), "p_dot": pr.pair(_show(x))}
@@ -539,7 +551,7 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
     sym = {s.name: s for s in table.q}
     rows += _singular_points(nm, d, pr, vname)
     rows += _points(nm.kinks, sym, pr, rf"\quad (\text{{at a kink of }} {vname})")
-    rows += _points(nm.unclassified, sym, pr, r"\quad (\text{coefficients change with } t)")
+    rows += _points(nm.unclassified, sym, pr, r"\quad (\text{coefficients change with } t)", nm.unclassified_exact)
     why = "At rest (q̇ = 0) the state stays put where the Euler–Lagrange equations give q̈ = 0. "
     if not plain:
         why += (
@@ -553,7 +565,9 @@ def normal_mode_steps(d: Derivation, nm: NormalModes) -> list[dict[str, str]]:
         )
     if nm.everywhere:
         why += (
-            "V does not depend on the coordinates and nothing else acts on a body at rest, so every configuration "
+            # the page's own letter for the potential (U, or U_eff where the rows above write U_eff), never a third
+            f"{'U' if plain else notation.rest_potential(d)[1]} does not depend on the coordinates and nothing else "
+            "acts on a body at rest, so every configuration "
             "is an equilibrium"
             + (
                 "; the velocity terms (a magnetic field, a Coriolis force) act only on moving bodies and turn them."
@@ -943,6 +957,20 @@ def _one_coordinate_step(
     mode = e.modes[0]
     w2 = mode.omega_squared
     name = e.coordinates[0]
+    exact = mode.exact
+    red = d.reduction
+    eliminated = ""
+    if e.momenta and exact is not None and red is not None and red.coordinate == name:
+        if red.omega_squared_steady is not None:
+            # about a steady motion, ω² in its coordinate r₀ with the momentum eliminated by U_eff′(r₀) = 0, as the
+            # steady motions' step prints it (3g cos a/r₀ in a cone), not the root put back into U_eff″/m_eff
+            r = next(s for s in d.table.q if s.name == name)
+            exact = trig_cancelled(red.omega_squared_steady.xreplace({r: sp.Symbol(name + "0", real=True)}))
+            r0, momentum = unicode_text(sp.Symbol(name + "0")), ", ".join(unicode_text(P) for P in red.momenta)
+            eliminated = (
+                f" {wu}² is written in {r0}, the steady motion's {plain_name(name)}, with {momentum} eliminated by "
+                f"U_eff′({r0}) = 0."
+            )
     moving = e.linear is not None and e.linear.moving
     rows = [where]
     # the reduction's verdict in symbols: where the place exists, and when ω² is positive (g > Rw² at the
@@ -972,7 +1000,7 @@ def _one_coordinate_step(
         if grows:
             what = "No oscillation about"
     elif w2 > 0:
-        rows.append(f"{wt}^2 = " + _closed(mode.exact, w2, PER_SECOND_SQUARED, pr))
+        rows.append(f"{wt}^2 = " + _closed(exact, w2, PER_SECOND_SQUARED, pr))
         what = "Small oscillations about"
         why = (
             f"Linearised about {about}, the small displacement {eu} from it obeys {eu}̈ + {wu}² {eu} = 0: it "
@@ -981,8 +1009,8 @@ def _one_coordinate_step(
         )
     elif w2 < 0:
         # the rate √(−ω²) printed over the whole radicand, √(3g/(2l)), not SymPy's √6 √(g/l)/2
-        rate = sp.Pow(-mode.exact, sp.S.Half, evaluate=False) if mode.exact is not None else None
-        shown = pr.tex(mode.exact) if mode.exact is not None else _figures(w2) + PER_SECOND_SQUARED
+        rate = sp.Pow(-exact, sp.S.Half, evaluate=False) if exact is not None else None
+        shown = pr.tex(exact) if exact is not None else _figures(w2) + PER_SECOND_SQUARED
         # a sign that depends on the parameters is the sign at the current ones, said in the equation itself
         # (braced, so that a phone's line never breaks between "<" and "0")
         negative = r"{\;<\;0}\quad \text{at the current parameters}" if conditional is not None else "< 0"
@@ -1040,6 +1068,7 @@ def _one_coordinate_step(
                 if w2 < 0
                 else "."
             )
+            + eliminated
         )
         key = f"steady-motion:{number}"
     else:

@@ -385,8 +385,28 @@ def _inferred(
         axes=axes,
         fixed=(("pivot", ("0", "0", "0")),) if pivot else (),
         links=links,
-        caption=f"{what[0].upper()}{what[1:]} ({view}), with {TRAIL}.",
+        caption=f"{what[0].upper()}{what[1:]} ({view}), with {TRAIL}." + _undrawn(particles, coordinates, found),
     )
+
+
+def _undrawn(
+    particles: Sequence[tuple[str, Sequence[str]]], coordinates: Sequence[str], found: Sequence[tuple[Any, Any, bool]]
+) -> str:
+    """A body that moves along more axes than it has coordinates is held on a surface (a cone's) or a curve (a
+    wire's) that the positions give only through the coordinates: the picture cannot draw it, and says so
+    (prof-n 9). A body held by a distance drawn as a rod is left out: the rod shows what holds it."""
+    held = {i for a, b, _ in found for i in (a, b) if i is not None}
+    moving_names = set(coordinates) | {"t"}
+    kinds = set()
+    for i, (_, pos) in enumerate(particles):
+        axes = [x for x in pos if _names_in(x) & moving_names]
+        own = set().union(*(_names_in(x) for x in pos)) & set(coordinates)
+        if i not in held and 0 < len(own) < len(axes):
+            kinds.add("surface" if len(own) >= 2 else "curve")
+    if not kinds:
+        return ""
+    which = "surface or curve" if len(kinds) == 2 else kinds.pop()
+    return f" The {which} the coordinates hold a body on is not drawn: it is given only through the coordinates."
 
 
 def _view_name(axes: tuple[int, ...]) -> str:

@@ -191,3 +191,19 @@ def test_the_helix_opens_on_a_view_that_shows_its_turns():
     tall = 2 * env["R"] * math.sin(view["pitch"])
     apart = 2 * math.pi / env["alpha"] * math.cos(view["pitch"])
     assert tall >= 0.5 * apart, (tall, apart)
+
+
+def test_a_surface_given_only_through_the_coordinates_is_said_to_be_undrawn():
+    # prof-n 9: a particle inside a cone is drawn as a ball in space with no cone; the caption says why
+    cone = [("ball", ("r*sin(a)*cos(phi)", "r*sin(a)*sin(phi)", "r*cos(a)"))]
+    spec = mechanism("", cone, ["r", "phi"], True, defaults={"a": 0.5, "r": 1.0, "phi": 0.0})
+    assert spec["caption"].endswith(
+        "The surface the coordinates hold a body on is not drawn: it is given only through the coordinates."
+    )
+    wire = [("bead", ("x", "0", "x**2"))]
+    spec = mechanism("", wire, ["x"], False, defaults={"x": 0.5})
+    assert "The curve the coordinates hold a body on is not drawn" in spec["caption"]
+    # a free particle, and a pendulum whose rod shows what holds it, have nothing undrawn
+    free = mechanism("", [("ball", ("x", "y", "z"))], ["x", "y", "z"], True, defaults={})
+    rod = mechanism("", [("bob", ("l*sin(theta)", "0", "-l*cos(theta)"))], ["theta"], False, defaults={"l": 1.0})
+    assert "not drawn" not in free["caption"] and "not drawn" not in rod["caption"]

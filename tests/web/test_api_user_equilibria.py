@@ -35,6 +35,26 @@ def test_a_charge_in_a_uniform_magnetic_field_is_at_rest_anywhere(client):
     assert r"\text{any } x,\; y" in modes["latex"]
 
 
+def test_a_charge_in_a_magnetic_field_has_its_squares_completed_and_its_potential_named_as_on_the_page(client):
+    # prof-n 9: H printed (B²e²x²/4 + B²e²y²/4 + Be p_x y − Be p_y x + p_x² + p_y²)/(2m), and "V does not depend"
+    # beside rows that write U_eff
+    doc = derive(
+        client,
+        {
+            "coordinates": ["x", "y"],
+            "parameters": ["m", "B", "e"],
+            "lagrangian": "m*(x_dot**2 + y_dot**2)/2 + e*B*(x*y_dot - y*x_dot)/2",
+        },
+    )
+    (H,) = steps(doc, "hamiltonian-pq")
+    shown = H["latex"].split("=")[-1].replace(" ", "")
+    assert r"\left(p_{y}-Bex/2\right)^{2}" in shown and r"\left(Bey/2+p_{x}\right)^{2}" in shown
+    assert shown.endswith("{2m}") and "B^{2}" not in shown
+    (eq,) = steps(doc, "equilibria")
+    assert r"U_\text{eff} &= -L" in eq["latex"]
+    assert "U_eff does not depend on the coordinates" in eq["explanation"] and "V " not in eq["explanation"]
+
+
 def test_a_typed_spring_between_two_carts_has_a_family(client):
     doc = derive(
         client,
@@ -281,3 +301,37 @@ def test_a_typed_pendulum_on_a_sliding_spring_mounted_pivot_prints_its_discrimin
     (el,) = steps(doc, "euler-lagrange")
     assert r"m l \ddot{\theta} \cos {\theta} - m l \dot{\theta}^{2} \sin {\theta}" in el["latex"]
     assert r"l \ddot{\theta} + \ddot{X} \cos {\theta} + g \sin {\theta} = 0" in el["latex"]
+
+
+def test_a_shaken_pivots_equilibria_are_printed_exactly(client):
+    # prof-n 9: "θ = 3.142 (coefficients change with t)" where the time-independent equilibria print π
+    doc = derive(
+        client,
+        {
+            "coordinates": ["theta"],
+            "parameters": ["m", "l", "g", "a", "w"],
+            "lagrangian": "m*(l**2*theta_dot**2 + 2*l*theta_dot*a*w*sin(w*t)*sin(theta) + a**2*w**2*sin(w*t)**2)/2"
+            " + m*g*(l*cos(theta) + a*cos(w*t))",
+        },
+    )
+    (eq,) = steps(doc, "equilibria")
+    assert r"\theta &= \pi\quad (\text{coefficients change with } t)" in eq["latex"]
+    assert r"\theta &= 0\quad (\text{coefficients change with } t)" in eq["latex"]
+    assert "3.142" not in eq["latex"]
+
+
+def test_a_particle_in_a_cone_has_its_steady_motions_frequency_in_r0_alone(client):
+    # prof-n 9: ω² = 3 m^{2/3} g^{4/3} p_φ²/[(1/(sin²a cos a))^{4/3} sin²a |p_φ|^{8/3}] one step after 3g cos a/r₀
+    doc = derive(
+        client,
+        {
+            "coordinates": ["r", "phi"],
+            "parameters": ["m", "g", "a"],
+            "lagrangian": "m*(r_dot**2 + r**2*sin(a)**2*phi_dot**2)/2 - m*g*r*cos(a)",
+        },
+    )
+    (steady,) = steps(doc, "steady-motion")
+    (rows,) = [row for row in steady["latex"].split(r"\\") if r"\omega^2" in row]
+    assert r"\omega^2 &= \frac{3 g \cos {a}}{r_{0}} \approx" in rows
+    assert "p_{\\varphi}" not in rows and "frac{4}{3}" not in rows
+    assert "written in r₀, the steady motion's r, with p_φ eliminated by U_eff′(r₀) = 0" in steady["explanation"]
