@@ -114,6 +114,8 @@ class Settings(BaseSettings):
     """a class's checks in flight at once (judged or queued), whatever its network"""
     embed_ancestors: str = ""
     """sites whose pages may show /embed/ pages in a frame, comma-separated (https://lms.example.edu); empty: none"""
+    source_notes: bool = True
+    """pages name the source notes (section line, contents paragraph, table of their misprints); 0: a course from another book"""
 
     @field_validator("trusted_proxies")
     @classmethod

@@ -69,7 +69,7 @@ class Derivation:
         """Each coordinate's acceleration (q̈ = …), where the engine solved for them in closed form; empty where it
         did not (a large system: ``equations`` still hold them)."""
         names, accelerations = self.derived.table.names, self.derived.equations.accelerations
-        if len(accelerations) != len(names):  # no closed form (a large system): solve 𝓜 q̈ = f numerically
+        if len(accelerations) != len(names):  # no closed form (a large system): solve ℳ q̈ = f numerically
             return {}
         return {f"{q}_ddot": a for q, a in zip(names, accelerations, strict=True)}
 

@@ -634,7 +634,7 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, units
 def one_denominator(exprs: list[Any], names: Mapping[sp.Symbol, str] | None = None) -> list[Any]:
     """The explicit accelerations of one system in their textbook forms, over one denominator when they have one.
 
-    By Cramer's rule every q̈ₖ is a numerator over det 𝓜; each is formed on its own (``textbook_form``), and two
+    By Cramer's rule every q̈ₖ is a numerator over det ℳ; each is formed on its own (``textbook_form``), and two
     forms of one system may then print that denominator differently: the cart on a spring's Ẍ over M + m sin² φ
     and φ̈, linearised, over l(2M + m − m cos 2φ).  A careful text prints them over the same one, in sines and
     cosines of single angles.  So each acceleration is also written as the engine derived it: its numerator and

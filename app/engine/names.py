@@ -13,12 +13,13 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-# The mass matrix is 𝓜 (a calligraphic M) on every page: a body's mass is often M (the pulley's, the wedge's, a total
-# mass in an erratum), and one letter means one quantity throughout the book
-MASS_MATRIX = (r"\mathcal{M}", "𝓜")  # (LaTeX, Unicode)
+# The mass matrix is ℳ (a calligraphic M) on every page: a body's mass is often M (the pulley's, the wedge's, a total
+# mass in an erratum), and one letter means one quantity throughout the book.  Its Unicode is U+2133, the plain
+# script capital that KaTeX's \mathcal{M} draws, so the prose beside a formula shows the formula's glyph (not a bold one)
+MASS_MATRIX = (r"\mathcal{M}", "ℳ")  # (LaTeX, Unicode)
 
 # letters every page prints with a meaning of its own: a declared name spelled so would give one letter two
-# meanings on the page (a charge q beside the coordinates q of S[q] and 𝓜 q̈ = f), so a user's system is refused
+# meanings on the page (a charge q beside the coordinates q of S[q] and ℳ q̈ = f), so a user's system is refused
 # with a name to use instead (app/service/user_checks.py)
 PAGE_LETTERS: dict[str, tuple[str, str]] = {
     "q": (f"the generalized coordinates (S[q], {MASS_MATRIX[1]} q̈ = f)", "e"),

@@ -3,7 +3,7 @@
 A document's coordinates and parameters keep the names they were declared with.  The quantities the
 engine derives (the mass matrix, the stiffness matrix, a frequency of small oscillations) each have
 a list of letters a textbook uses for them; a document takes the first that no coordinate or
-parameter already has (the mass matrix is 𝓜 on every page, app/engine/names.MASS_MATRIX), so the rotating parabola, turning at the rate ω, writes its small-oscillation frequency Ω.
+parameter already has (the mass matrix is ℳ on every page, app/engine/names.MASS_MATRIX), so the rotating parabola, turning at the rate ω, writes its small-oscillation frequency Ω.
 
 Every step that prints one of these letters asks ``letter`` (LaTeX) or ``text`` (Unicode) for it,
 and ``table`` is the "Symbols" table the page shows and the API serves: each letter once, with what
@@ -192,7 +192,7 @@ class _PerCoordinate:
 
 
 def _derived_unit(concept: str, per: _PerCoordinate | None) -> str:
-    """The unit of a normal-mode letter: 𝓜 per entry J·s²/([q_j][q_k]), K J/([q_j][q_k]), η, a and A the coordinate's."""
+    """The unit of a normal-mode letter: ℳ per entry J·s²/([q_j][q_k]), K J/([q_j][q_k]), η, a and A the coordinate's."""
     if per is None:
         return ""
     if concept == "mass_matrix":

@@ -197,7 +197,7 @@ def equation_rows(d: Derivation, pr: Printer) -> list[str]:
 def equation_pairs(d: Derivation, pr: Printer) -> list[dict[str, Any]]:
     """The equations for the document: each one's text is the scaled residual its row typesets, and
     ``divided_by`` the factor it was divided by to be shown so (None when it is shown as derived), so that
-    a reader can go from the rows shown to 𝓜q̈ = f: row k of 𝓜 and f is equation k times its factor."""
+    a reader can go from the rows shown to ℳq̈ = f: row k of ℳ and f is equation k times its factor."""
     scales = equation_scales(d, pr)
     out = []
     for k, ((shown, row), r) in enumerate(zip(equations(d, pr), d.equations.residuals, strict=True)):
@@ -210,7 +210,7 @@ def equation_pairs(d: Derivation, pr: Printer) -> list[dict[str, Any]]:
 def equation_scales(d: Derivation, pr: Printer) -> list[sp.Expr] | None:
     """The one home of how each printed equation is scaled: residual k = (its printed form) × s_k, each s_k the
     factor common to its terms (the double pendulum's θ₁ equation: l₁); None when a factor would hold a
-    coordinate or a rate (then the rows are not a constant rescaling of 𝓜q̈ = f and no factor is claimed)."""
+    coordinate or a rate (then the rows are not a constant rescaling of ℳq̈ = f and no factor is claimed)."""
     shown = equations(d, pr)
     key = (tuple(d.equations.residuals), tuple(s for s, _ in shown))
 

@@ -1,7 +1,7 @@
 """POST /api/derive/equations: the first stage of a derivation, answered before the whole document.
 
 The same system as POST /api/derive; the answer holds the equations of motion, the accelerations (or the
-mass matrix and forcing when they stay 𝓜⁻¹f), the symbols and parameters, what was left out so far and what
+mass matrix and forcing when they stay ℳ⁻¹f), the symbols and parameters, what was left out so far and what
 POST /api/derive will add (``pending``).  A worker-pool job of its own under the derivation's limits
 (app/service/staged.py); when the whole document is cached, its members are answered at once.
 """

@@ -27,6 +27,7 @@ from app.service.fairness import COOKIE, COOKIE_MAX_AGE, Fairness
 from app.service.services import Services
 from app.service.simulation import Gates
 from app.service.user_systems import UserSystems
+from app.settings import Settings, settings
 from app.web.address import client_address
 from app.web.page_cache import PageCache
 
@@ -65,12 +66,18 @@ async def page_cache(request: Request) -> PageCache:
     return request.state.pages
 
 
+async def app_settings() -> Settings:
+    """The server's settings (app/settings.py); a test gives the routes settings of its own."""
+    return settings()
+
+
 UserSystemsDep = Annotated[UserSystems, Depends(user_systems_service)]
 CheckingDep = Annotated[Checking, Depends(checking_service)]
 GatesDep = Annotated[Gates, Depends(simulation_gates)]
 AnswersDep = Annotated[Answers, Depends(remembered_answers)]
 PagesDep = Annotated[PageCache, Depends(page_cache)]
 ChapterDep = Annotated[Scenes, Depends(scenes_chapter)]
+SettingsDep = Annotated[Settings, Depends(app_settings)]
 
 
 async def fairness_gate(users: UserSystemsDep) -> Fairness:

@@ -18,7 +18,7 @@ class PageCache:
     def __init__(self) -> None:
         self._models: dict[str, tuple[int, dict[str, Any]]] = {}
         self._cards: dict[str, str] = {}
-        self._pages: dict[str, tuple[dict[str, Any], bytes, bytes]] = {}
+        self._pages: dict[str, tuple[dict[str, Any], object, bytes, bytes]] = {}
         self._lock = threading.Lock()
 
     def model(self, scene_id: str, doc: object, build: Callable[[], dict[str, Any]]) -> dict[str, Any]:
@@ -42,13 +42,16 @@ class PageCache:
                 self._cards[scene_id] = found
         return found
 
-    def page(self, scene_id: str, model: dict[str, Any], render: Callable[[], bytes]) -> tuple[bytes, bytes]:
-        """The scene's page, plain and gzip-compressed, rendered by ``render`` only when ``model`` is new."""
+    def page(
+        self, scene_id: str, model: dict[str, Any], render: Callable[[], bytes], variant: object = None
+    ) -> tuple[bytes, bytes]:
+        """The scene's page, plain and gzip-compressed, rendered by ``render`` only when ``model`` is new or the
+        page's ``variant`` (a setting that changes what it shows) differs from the last render's."""
         with self._lock:
             cached = self._pages.get(scene_id)
-        if cached is None or cached[0] is not model:
+        if cached is None or cached[0] is not model or cached[1] != variant:
             body = render()
-            cached = (model, body, gzip.compress(body, 9))
+            cached = (model, variant, body, gzip.compress(body, 9))
             with self._lock:
                 self._pages[scene_id] = cached
-        return cached[1], cached[2]
+        return cached[2], cached[3]

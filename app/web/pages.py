@@ -24,7 +24,7 @@ from app.viz.chapter import table_of_contents
 from app.viz.diagrams import diagram
 from app.viz.page_model import scene_page
 from app.web.compression import negotiate
-from app.web.deps import AnswersDep, ChapterDep, PagesDep
+from app.web.deps import AnswersDep, ChapterDep, PagesDep, SettingsDep
 from app.web.errors import problem
 from app.web.page_cache import PageCache
 from app.web.templating import templates
@@ -64,7 +64,9 @@ def _card_diagram(s: Any) -> str:
 
 
 @router.get("/", response_class=HTMLResponse)
-def index(request: Request, pages: PagesDep, chapter: ChapterDep, answers: AnswersDep) -> HTMLResponse:
+def index(
+    request: Request, pages: PagesDep, chapter: ChapterDep, answers: AnswersDep, config: SettingsDep
+) -> HTMLResponse:
     # the panels each page shows (app/viz/panels.py) tell the contents where a section is illustrated
     scenes = [
         {
@@ -75,7 +77,8 @@ def index(request: Request, pages: PagesDep, chapter: ChapterDep, answers: Answe
         }
         for s in derivations.SCENES.values()
     ]
-    return templates.TemplateResponse(request, "index.html", {"toc": table_of_contents(scenes), "scenes": scenes})
+    context = {"toc": table_of_contents(scenes), "scenes": scenes, "notes": config.source_notes}
+    return templates.TemplateResponse(request, "index.html", context)
 
 
 @router.get("/scenes", response_class=RedirectResponse)
@@ -93,17 +96,18 @@ def unknown_scene(request: Request, exc: UnknownScene, prefix: str) -> HTMLRespo
 
 @router.get("/scenes/{scene_id}", response_class=HTMLResponse)
 def scene_page_route(
-    request: Request, scene_id: str, pages: PagesDep, chapter: ChapterDep, answers: AnswersDep
+    request: Request, scene_id: str, pages: PagesDep, chapter: ChapterDep, answers: AnswersDep, config: SettingsDep
 ) -> HTMLResponse:
     try:
         model = page_model(scene_id, pages, chapter, answers)
     except UnknownScene as exc:
         return unknown_scene(request, exc, "/scenes/")
-    # A scene page depends only on its model: render (and compress) it once per model, then serve the bytes.
+    # A scene page depends only on its model and whether it names the source notes: render (and compress) it
+    # once per both, then serve the bytes.
+    notes = config.source_notes
+    context = {"m": model, "scene": model["info"], "notes": notes}
     plain, compressed = pages.page(
-        scene_id,
-        model,
-        lambda: bytes(templates.TemplateResponse(request, "scene.html", {"m": model, "scene": model["info"]}).body),
+        scene_id, model, lambda: bytes(templates.TemplateResponse(request, "scene.html", context).body), notes
     )
     if negotiate(request.headers.get("accept-encoding", ""), offered=("gzip",)):
         return HTMLResponse(compressed, headers={"Content-Encoding": "gzip", "Vary": "Accept-Encoding"})

@@ -55,7 +55,7 @@ def first_view(doc: dict[str, Any], href: str, key: str) -> dict[str, Any]:
         "progress_url": f"/api/derive/progress/{key}",
         "cancel_url": f"/api/derive/cancel/{key}",
     }
-    # each equation's factor (app/engine/report.py equation_scales): said under the equations, so that 𝓜
+    # each equation's factor (app/engine/report.py equation_scales): said under the equations, so that ℳ
     # and f, of the equations undivided, can be read off the rows shown
     view["divided_by"] = [
         {"coordinate": latex(e["coordinate"]), "factor": e["divided_by"]["latex"]}
@@ -63,7 +63,7 @@ def first_view(doc: dict[str, Any], href: str, key: str) -> dict[str, Any]:
         if e.get("divided_by")
     ]
     if not accelerations:
-        # 𝓜 q̈ = f, with 𝓜 and f printed: what the numerics solves at each step
+        # ℳ q̈ = f, with ℳ and f printed: what the numerics solves at each step
         rows = [" & ".join(x["latex"] for x in row) for row in doc["mass_matrix"]]
         # the page's letter for the mass matrix (app/engine/notation.py, from app/engine/names.MASS_MATRIX)
         letter = letter_of(doc, "mass matrix", MASS_MATRIX[0])

@@ -226,7 +226,7 @@ class DerivationDocument(BaseModel):
     coordinates: list[str]
     notation: list[NotationEntry] = Field(
         description="the page's letters, each once: coordinates, parameters, then the derived quantities (the mass "
-        "matrix is 𝓜 where a body's mass is M, a small-oscillation frequency Ω where ω is a parameter)"
+        "matrix is ℳ where a body's mass is M, a small-oscillation frequency Ω where ω is a parameter)"
     )
     parameters: dict[str, ParameterInfo]
     kinetic: ExprPair | None

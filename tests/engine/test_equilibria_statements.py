@@ -86,10 +86,10 @@ def test_the_mass_matrix_is_not_m_where_a_body_has_mass_m(scene_id):
     doc = derivation_document(scene_id)
     assert "M" in doc["parameters"]
     mm = step(doc, "mass-matrix")
-    assert mm["latex"].startswith(r"\begin{aligned}\mathcal{M} &=") and "𝓜" in mm["explanation"]
+    assert mm["latex"].startswith(r"\begin{aligned}\mathcal{M} &=") and "ℳ" in mm["explanation"]
     assert "M is not diagonal" not in mm["explanation"]
     table = {row["unicode"]: row for row in doc["notation"]}
-    assert table["M"]["kind"] == "parameter" and table["𝓜"]["meaning"].startswith("mass matrix")
+    assert table["M"]["kind"] == "parameter" and table["ℳ"]["meaning"].startswith("mass matrix")
     assert len(table) == len(doc["notation"])
 
 

@@ -66,7 +66,7 @@ def test_no_letter_names_two_quantities(scene_id):
         seen[row["unicode"]] = row["meaning"]
     declared = {re.sub(r"[{}\s]", "", r["latex"]) for r in rows if r["kind"] in ("parameter", "coordinate")}
     defined = _defined(doc)
-    # the mass matrix's letter is none of the declaration's (𝓜 beside the wedge's mass M)
+    # the mass matrix's letter is none of the declaration's (ℳ beside the wedge's mass M)
     assert _mass_matrix_letter(rows) not in {r["unicode"] for r in rows if r["kind"] in ("parameter", "coordinate")}
     # a parameter's or a coordinate's letter is never the name of a result (ω² = 2gα − ω²): a result equal
     # to a coordinate's value is that coordinate's equilibrium (θ = π), which is no new quantity
@@ -149,7 +149,7 @@ def test_the_letters_of_a_constraint_are_read_from_one_home(monkeypatch):
 
 # the mass matrix written as a bare M: M q̈ = f, M⁻¹f, M^{-1} f, \mathcal-less M \ddot{q}, M = (matrix)
 _BARE_M = re.compile(r"(?<![\\\w{])M\s*(?:q̈|⁻¹|\^\{-1\}|\\ddot\{q\}|=\s*\\begin\{pmatrix\})")
-# a chain of three pendulums, the last bob of mass M: its accelerations stay 𝓜⁻¹f (too long in closed form)
+# a chain of three pendulums, the last bob of mass M: its accelerations stay ℳ⁻¹f (too long in closed form)
 _CHAIN = {
     "coordinates": ["a", "b", "c"],
     "parameters": [{"name": "m", "value": 1.0, "unit": "kg"}, {"name": "M", "value": 2.0, "unit": "kg"},
@@ -189,7 +189,7 @@ def test_a_scene_with_a_mass_m_writes_its_mass_matrix_with_another_letter(scene_
 
 
 def test_a_typed_system_with_a_mass_m_left_as_m_inverse_f_names_the_mass_matrix_apart():
-    # a typed chain whose last bob has the mass M: the first stage prints 𝓜 q̈ = f and 𝓜 = (…), never M q̈ = f
+    # a typed chain whose last bob has the mass M: the first stage prints ℳ q̈ = f and ℳ = (…), never M q̈ = f
     from app.engine.contract import first_stage
     from app.service.user_checks import InvalidSystem, checked
     from app.service.user_jobs import derive_checked

@@ -93,7 +93,7 @@ def test_a_typed_pendulum_names_the_top_pi(client):
     assert titles == ["Small oscillations about θ = 0", "No oscillation about θ = π"]
     # the letters of the page, each once, served with the document
     letters = [row["unicode"] for row in doc["notation"]]
-    assert len(letters) == len(set(letters)) and {"θ", "m", "g", "l", "𝓜", "K", "ω"} <= set(letters)
+    assert len(letters) == len(set(letters)) and {"θ", "m", "g", "l", "ℳ", "K", "ω"} <= set(letters)
 
 
 def test_a_typed_particle_on_a_cone_keeps_no_sin_squared_plus_cos_squared(client):
@@ -180,7 +180,7 @@ def test_where_the_numerical_search_looked_is_said_in_plain_words(client):
 
 
 def test_a_charge_in_a_magnetic_field_counts_its_zero_exponents_and_says_where_its_frequency_comes_from(client):
-    # prof-f 32, 33: "[[0, I], [−𝓜⁻¹K, −𝓜⁻¹G]]" in prose, "One is zero" beside s = 0, 0, 0 ± 2 i (m = 1, eB = 2)
+    # prof-f 32, 33: "[[0, I], [−ℳ⁻¹K, −ℳ⁻¹G]]" in prose, "One is zero" beside s = 0, 0, 0 ± 2 i (m = 1, eB = 2)
     doc = derive(
         client,
         {

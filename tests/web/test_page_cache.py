@@ -4,6 +4,7 @@ routes through ``Depends``: a test gives them a cache of its own."""
 import pytest
 
 from app.service import derivations
+from app.settings import Settings
 from app.web.deps import page_cache
 from app.web.page_cache import PageCache
 
@@ -18,7 +19,7 @@ def test_a_scene_page_fills_the_cache_the_route_is_given(client, override):
     assert first.status_code == 200
     doc = derivations.derivation_document("simple-pendulum")
     model = pages.model("simple-pendulum", doc, _never)  # the route's model, kept
-    plain, compressed = pages.page("simple-pendulum", model, _never)
+    plain, compressed = pages.page("simple-pendulum", model, _never, Settings().source_notes)
     assert plain == first.content and len(compressed) < len(plain) / 2
     zipped = client.get("/scenes/simple-pendulum", headers={"Accept-Encoding": "gzip"})
     assert zipped.content == plain  # the client decodes the kept gzip bytes into the same page
@@ -38,3 +39,13 @@ def test_a_new_model_renders_the_page_again():
     for model in (one, one, two):
         pages.page("s", model, lambda model=model: renders.append(model) or b"page %d" % len(renders))
     assert renders == [one, two]
+
+
+def test_a_setting_that_changes_the_page_renders_it_again():
+    # the source notes shown, then hidden (settings' source_notes), then shown: each render its own
+    pages = PageCache()
+    renders = []
+    model = {"m": 1}
+    for notes in (True, True, False, True):
+        pages.page("s", model, lambda notes=notes: renders.append(notes) or b"notes %d" % notes, notes)
+    assert renders == [True, False, True]

@@ -276,7 +276,7 @@ def test_nothing_conserved_names_the_cause_that_applies(client):
 def test_the_mass_matrix_has_one_letter_on_every_page(client, scene):
     doc = client.get(f"/api/scenes/{scene}/derivation").json()
     mass = next(r for r in doc["notation"] if r["meaning"].startswith("mass matrix"))
-    assert (mass["latex"], mass["unicode"]) == (r"\mathcal{M}", "𝓜")
+    assert (mass["latex"], mass["unicode"]) == (r"\mathcal{M}", "ℳ")
     shown = {t: x for t, _, x in steps_of(page(client, scene))}
     assert shown["Mass matrix and forcing"].removeprefix(r"\begin{aligned}").startswith(r"\mathcal{M} &= ")
     # the rail's errata may write M for the total mass: M is never the mass matrix

@@ -54,7 +54,7 @@ def units(page: str) -> dict[str, str]:
 
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
 def test_every_row_of_the_symbols_table_has_its_unit(client, scene_id):
-    # prof-g 4, 14, 18, 29: f, 𝓜, K, η, a, A, Q, 𝒞 and λ listed without a unit
+    # prof-g 4, 14, 18, 29: f, ℳ, K, η, a, A, Q, 𝒞 and λ listed without a unit
     cells = units(client.get(f"/scenes/{scene_id}").text)
     assert cells and all(cells.values()), {tex: unit for tex, unit in cells.items() if not unit}
 
@@ -90,3 +90,17 @@ def test_the_symbols_table_names_the_cartesian_letters_the_constraint_steps_prin
     body = client.get("/scenes/pulley").text
     table = body[body.index("Symbols") : body.index("</table>", body.index("Symbols"))]
     assert "Cartesian z of the left mass" in table and r'data-tex="\zeta_{1}"' in table and 'data-tex="z_{1}"' not in table
+
+
+def test_the_mass_matrix_is_one_glyph_in_the_symbol_column_and_the_prose(client):
+    # prof-n 11: the symbol column set \mathcal{M} (a plain script M) and the meaning beside f a bold script 𝓜
+    import unicodedata
+
+    from app.engine.names import MASS_MATRIX
+
+    page = client.get("/scenes/simple-pendulum").text
+    meanings = symbols(page)
+    assert MASS_MATRIX[0] in meanings and MASS_MATRIX[1] in meanings["f"]
+    # the letter KaTeX's \mathcal{M} draws: the plain script capital, never a bold one anywhere on the page
+    assert unicodedata.name(MASS_MATRIX[1]) == "SCRIPT CAPITAL M"
+    assert not [c for c in set(page) if unicodedata.name(c, "").startswith("MATHEMATICAL BOLD SCRIPT")]

@@ -75,7 +75,7 @@ def test_the_normal_modes_write_eta_for_the_displacement_epsilon_being_the_actio
         if key.startswith("normal-modes"):
             assert "ε" not in step["explanation"]
     explained = steps(client, "double-pendulum")["normal-modes:1"]["explanation"]
-    assert "𝓜 η̈ + K η = 0" in explained and "η = a cos ωt" in explained
+    assert "ℳ η̈ + K η = 0" in explained and "η = a cos ωt" in explained
 
 
 def test_generic_sentences_name_only_what_the_system_has(client):

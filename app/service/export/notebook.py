@@ -155,7 +155,7 @@ def notebook(source: Source) -> str:
     )
     cells.append(_engine("EL", naming.code_list(map(form, eqs.residuals)), "EL"))
 
-    # the page's letter for the mass matrix (𝓜: a body's mass may be M), the code's variable M
+    # the page's letter for the mass matrix (ℳ: a body's mass may be M), the code's variable M
     mass = notation.text("mass_matrix", d)
     cells.append(
         _md(
