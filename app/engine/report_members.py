@@ -173,9 +173,10 @@ def _said(words: str) -> str:
 
 def _left_for(k: int, coupled: bool) -> str:
     """The words before the equations for the multipliers: λ₁ alone, each λ alone, or the multipliers together."""
+    # (the row is LaTeX text: a letter of the mathematics leaves \text for math mode, as KaTeX's strict mode asks)
     if k == 1:
-        return "so for λ₁ alone:"
-    return "so, for the multipliers together:" if coupled else "so, for each λ alone:"
+        return r"so for }\lambda_1\text{ alone:"
+    return "so, for the multipliers together:" if coupled else r"so, for each }\lambda\text{ alone:"
 
 
 def _vanishing(cp: Printer, c: sp.Expr, m: Multipliers) -> str:

@@ -5,7 +5,7 @@ from app.scenes.common import GRAVITY
 from app.scenes.types import Body, Parameter, Particle, Scene, System
 
 # the double pendulum's default run, in seconds: within its tolerance to here (the reasons at its t_end below)
-DOUBLE_PENDULUM_SECONDS = 3.0
+DOUBLE_PENDULUM_RUN = 3.0  # s: the default run, which the statement names
 
 DOUBLE_PENDULUM = Scene(
     id="double-pendulum",
@@ -30,7 +30,7 @@ DOUBLE_PENDULUM = Scene(
     # the sentence on its largest Lyapunov exponent, measured at this start over 100 s, opens the note
     lyapunov_seconds=100.0,
     run_note=(
-        f"The default run lasts {DOUBLE_PENDULUM_SECONDS:g} s and stays within its "
+        f"The default run lasts {DOUBLE_PENDULUM_RUN:g} s and stays within its "
         "tolerance; a longer one, set under Integration, is one of many paths close to the true one, and the "
         "page then says by how much its error exceeds the tolerance."
     ),
@@ -61,7 +61,7 @@ DOUBLE_PENDULUM = Scene(
     # at the default tolerance the run's error is within it at 3 s, 4.4 times it at 5 s and 450 times at 10 s;
     # the default run stops at 3 s, within its tolerance (a longer one is the reader's choice, and the
     # statement says what it shows)
-    t_end=DOUBLE_PENDULUM_SECONDS,
+    t_end=DOUBLE_PENDULUM_RUN,
     panels=("poincare",),
     reasons=reasons.DOUBLE_PENDULUM,
 )

@@ -191,10 +191,10 @@ def test_each_group_of_rows_for_the_multipliers_is_said_in_words():
     the cross coefficient that vanishes, then the equation left for each λ."""
     rows = _multiplier_equation("helix-bead")["latex"].split(r" \\ ")
     said = [r for r in rows if r"\text{" in r]
-    assert [r.split(r"\text{")[1].split("}")[0] for r in said] == [
-        "differentiating each constraint twice:",
-        "the cross coefficient, zero here:",
-        "so, for each λ alone:",
+    assert [r.split(r"\text{", 1)[1] for r in said] == [
+        "differentiating each constraint twice:}",
+        "the cross coefficient, zero here:}",
+        r"so, for each }\lambda\text{ alone:}",
     ]
     # the words stand before what they say: the 𝒞̈ rows, the vanishing coefficient, the λ rows
     assert r"\ddot{\mathcal{C}}_{1}" in rows[rows.index(said[0]) + 1]
