@@ -46,43 +46,6 @@ function trailingBlock(row) {
   return -1;
 }
 
-/** The rows of an aligned block's body at its top level (a nested block, or a group in braces, is one piece),
- *  each as [the row as written, with its & marks; the row without them; its separator's space, "[4pt]" or ""]. */
-function outerRows(body) {
-  const rows = [];
-  let row = "";
-  let bare = "";
-  let braces = 0;
-  let envs = 0;
-  for (let i = 0; i < body.length; i++) {
-    const c = body[i];
-    if (c === "\\") {
-      if (body.startsWith("\\begin{", i)) envs += 1;
-      else if (body.startsWith("\\end{", i)) envs -= 1;
-      else if (body[i + 1] === "\\" && braces === 0 && envs === 0) {
-        // a row separator may carry a space (\\[4pt]), which stays with it
-        const close = body[i + 2] === "[" ? body.indexOf("]", i + 2) : -1;
-        rows.push([row, bare, close > 0 ? body.slice(i + 2, close + 1) : ""]);
-        row = "";
-        bare = "";
-        i = close > 0 ? close : i + 1;
-        continue;
-      }
-      // a control symbol (\{, \&, \,) is kept whole
-      row += c + (body[i + 1] ?? "");
-      bare += c + (body[i + 1] ?? "");
-      i += 1;
-      continue;
-    }
-    if (c === "{") braces += 1;
-    else if (c === "}") braces -= 1;
-    row += c;
-    if (!(c === "&" && braces === 0 && envs === 0)) bare += c;
-  }
-  rows.push([row, bare, ""]);
-  return rows;
-}
-
 export function alignedRows(tex) {
   const t = tex.trim();
   if (!t.startsWith(OPEN) || !t.endsWith(CLOSE)) {
@@ -92,7 +55,34 @@ export function alignedRows(tex) {
     const inner = alignedRows(t.slice(at));
     return [`${t.slice(0, at)}${inner[0] ?? ""}`, ...inner.slice(1)];
   }
-  const rows = outerRows(t.slice(OPEN.length, t.length - CLOSE.length)).map(([, bare]) => bare);
+  const body = t.slice(OPEN.length, t.length - CLOSE.length);
+  const rows = [];
+  let row = "";
+  let braces = 0;
+  let envs = 0;
+  for (let i = 0; i < body.length; i++) {
+    const c = body[i];
+    if (c === "\\") {
+      if (body.startsWith("\\begin{", i)) envs += 1;
+      else if (body.startsWith("\\end{", i)) envs -= 1;
+      else if (body[i + 1] === "\\" && braces === 0 && envs === 0) {
+        rows.push(row);
+        row = "";
+        i += 1;
+        // a row separator may carry a space: \\[4pt]
+        if (body[i + 1] === "[") i = body.indexOf("]", i + 1);
+        continue;
+      }
+      row += c + (body[i + 1] ?? ""); // a control symbol (\{, \&, \,) is kept whole
+      i += 1;
+      continue;
+    }
+    if (c === "{") braces += 1;
+    else if (c === "}") braces -= 1;
+    if (c === "&" && braces === 0 && envs === 0) continue;
+    row += c;
+  }
+  rows.push(row);
   // a row that is itself an aligned block, or ends in one, gives its own lines
   return rows.map((r) => r.trim()).filter(Boolean).flatMap((r) => (r.includes(OPEN) ? alignedRows(r) : [r]));
 }
@@ -110,7 +100,36 @@ export const ROW_GAP = "0.6em";
 export function spacedRows(tex) {
   const t = tex.trim();
   if (!t.startsWith(OPEN) || !t.endsWith(CLOSE) || !/\\d?frac(?![a-zA-Z])/.test(t)) return tex;
-  const rows = outerRows(t.slice(OPEN.length, t.length - CLOSE.length));
+  const body = t.slice(OPEN.length, t.length - CLOSE.length);
+  // the outer block's rows: each as written (with its &) and without its alignment marks (for the copy)
+  const rows = [];
+  let row = "";
+  let bare = "";
+  let braces = 0;
+  let envs = 0;
+  for (let i = 0; i < body.length; i++) {
+    const c = body[i];
+    if (c === "\\") {
+      if (body.startsWith("\\begin{", i)) envs += 1;
+      else if (body.startsWith("\\end{", i)) envs -= 1;
+      else if (body[i + 1] === "\\" && braces === 0 && envs === 0) {
+        // a separator's own space (\\[4pt]) stays with it
+        const close = body[i + 2] === "[" ? body.indexOf("]", i + 2) : -1;
+        rows.push([row, bare, close > 0 ? body.slice(i + 2, close + 1) : ""]);
+        row = ""; bare = "";
+        i = close > 0 ? close : i + 1;
+        continue;
+      }
+      row += c + (body[i + 1] ?? ""); bare += c + (body[i + 1] ?? "");
+      i += 1;
+      continue;
+    }
+    if (c === "{") braces += 1;
+    else if (c === "}") braces -= 1;
+    row += c;
+    if (!(c === "&" && braces === 0 && envs === 0)) bare += c;
+  }
+  rows.push([row, bare, ""]);
   if (rows.length < 2) return tex;
   const last = rows.length - 1;
   return OPEN + rows.map(([r, b, gap], k) => (k < last
