@@ -16,39 +16,17 @@
 /** Each row's least and greatest value over the run, in words; a row that never leaves its start "stays". */
 export function overTheRun(rows, t, resolution) {
   const parts = rows.map((r) => {
-    let lo = Infinity, hi = -Infinity, iLo = -1, iHi = -1;
-    r.values.forEach((v, i) => {
-      if (!Number.isFinite(v)) return;
-      if (v < lo) { lo = v; iLo = i; }
-      if (v > hi) { hi = v; iHi = i; }
-    });
+    let lo = Infinity, hi = -Infinity;
+    for (const v of r.values) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
     if (lo > hi) return `${r.name} has no finite value`;
-    // a spread within the run's energy resolution, or below the four digits shown, is no change; an end reached
-    // between two samples is known only to within sampling (samplingError): U's least value on a swing through
-    // the bottom reads "≈ 0", not the 1.391 × 10⁻⁵ J of the sample nearest the bottom
-    const [a, b] = [
-      fmtResolved(lo, Math.max(resolution, samplingError(r.values, iLo))),
-      fmtResolved(hi, Math.max(resolution, samplingError(r.values, iHi))),
-    ];
+    // a spread within the run's energy resolution, or below the four digits shown, is no change
+    const [a, b] = [fmtResolved(lo, resolution), fmtResolved(hi, resolution)];
     if (hi - lo <= resolution || a === b) return `${r.name} stays ${fmtResolved((lo + hi) / 2, resolution)} J`;
     return `${r.name} from ${a} to ${b} J`;
   });
   const end = t && t.length ? t[t.length - 1] : null;
   return `Over the ${end === null ? "" : `${fmt(Number(end.toPrecision(2)))} s `}run: ${parts.join(" · ")}.`;
 }
-/**
- * How far a series' extremum between samples may lie beyond its extreme sample i.  Near a smooth extremum the
- * series is a parabola, v(t) ≈ v* + c (t − t*)², and the sample nearest t* lies at most half a step from it, so
- * v_i − v* ≤ c (Δt/2)² while a neighbour one step away lies at least c (Δt/2)² beyond v*: the larger difference
- * to a neighbour, |v_{i±1} − v_i|, bounds the gap.  An extremum at the run's first or last sample is that sample
- * (the run starts or ends there): nothing lies beyond it.
- */
-export function samplingError(values, i) {
-  if (i <= 0 || i >= values.length - 1) return 0;
-  const steps = [values[i - 1] - values[i], values[i + 1] - values[i]].filter(Number.isFinite).map(Math.abs);
-  return steps.length ? Math.max(...steps) : 0;
-}
-
 import { COLORS } from "./plotkit.js";
 import { fmt, fmtResolved } from "./summaries.js";
 
