@@ -73,7 +73,7 @@ def test_the_playgrounds_box_reads_the_declared_systems_names(page):
     page.goto("/playground")
     page.locator("#practice-switch").check()
     box = '.practice-step[data-key="acceleration:x"]'
-    page.wait_for_selector(box)
+    page.wait_for_selector(box, timeout=150_000)  # the example's practice steps: its derivation, on a busy machine
     page.locator(box + " textarea[name]").fill("(F*cos(w*t) - b*x_dot - k*x)/m")
     page.wait_for_function(f"document.querySelector('{box}').dataset.typeset === 'read'")
     shown = page.locator(box + " .practice-preview-math annotation").text_content().removeprefix("\\displaystyle ")
