@@ -47,7 +47,9 @@ export class Camera {
     if (!Number.isFinite(ulo)) { ulo = -1; uhi = 1; vlo = -1; vhi = 1; }
     const pad = 24 * dpr;
     const su = Math.max(uhi - ulo, 1e-6), sv = Math.max(vhi - vlo, 1e-6);
-    const scale = Math.min((W - 2 * pad) / su, (H - 2 * pad) / sv);
+    // a canvas narrower than its padding (while the page is laid out) keeps a positive scale
+    const room = (side) => Math.max(side - 2 * pad, side / 2, 1);
+    const scale = Math.min(room(W) / su, room(H) / sv);
     this.frame = { scale, u0: (ulo + uhi) / 2, v0: (vlo + vhi) / 2, cx: W / 2, cy: H / 2 };
   }
 

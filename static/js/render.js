@@ -45,11 +45,14 @@ export function drawFrame(player, i) {
     message(ctx, canvas, dpr, `t = ${Number(event.t.toFixed(3))} s: ${event.message}`, 18 * dpr);
   }
   // the solid curves' extents with their hatching, CSS pixels: [left, top, right, bottom] by label
-  drawn.curves = curveCover(player, i, dpr).filter((c) => c.points.length).map(({ label, points }) => ({
-    label,
-    box: [Math.min(...points.map((p) => p[0])), Math.min(...points.map((p) => p[1])),
-      Math.max(...points.map((p) => p[0])), Math.max(...points.map((p) => p[1]))].map((v) => Math.round(v / dpr)),
-  }));
+  drawn.curves = curveCover(player, i, dpr).filter((c) => c.points.length).map(({ label, points }) => {
+    // a loop, not Math.min(...points): a long cover would pass the call stack's limit on arguments
+    const box = [Infinity, Infinity, -Infinity, -Infinity];
+    for (const [x, y] of points) {
+      box[0] = Math.min(box[0], x); box[1] = Math.min(box[1], y); box[2] = Math.max(box[2], x); box[3] = Math.max(box[3], y);
+    }
+    return { label, box: box.map((v) => Math.round(v / dpr)) };
+  });
   canvas.dataset.bodies = JSON.stringify(bodies);
   canvas.dataset.drawn = JSON.stringify(drawn);
   const handle = i === 0 ? player.drag.handle() : null;

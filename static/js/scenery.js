@@ -22,17 +22,37 @@ export function drawSolids(player, ctx, i, dpr) {
 const screenPoints = (camera, cols) =>
   Array.from(cols[0], (_, k) => camera.screenOf([cols[0][k], cols[1][k], cols[2] ? cols[2][k] : 0]));
 
+/** The part of the segment from (x0, y0) to (x1, y1) inside the canvas (W × H device pixels) widened by a margin m,
+ * as the segment's parameters [t0, t1] (0 at its start, 1 at its end), or null if none of it is (Liang–Barsky).
+ * A curve drawn far beyond the canvas (a rail reaching metres past a narrow view) then costs only what is seen. */
+function visiblePart(x0, y0, x1, y1, W, H, m) {
+  let t0 = 0, t1 = 1;
+  const dx = x1 - x0, dy = y1 - y0;
+  // each edge of the box: the segment is inside where p·t ≤ q
+  for (const [p, q] of [[-dx, x0 + m], [dx, W + m - x0], [-dy, y0 + m], [dy, H + m - y0]]) {
+    if (p === 0) { if (q < 0) return null; continue; }
+    const t = q / p;
+    if (p < 0) { if (t > t1) return null; if (t > t0) t0 = t; } else { if (t < t0) return null; if (t < t1) t1 = t; }
+  }
+  return [t0, t1];
+}
+
+const MARGIN = 20; // CSS pixels beyond the canvas's edge still covered: a hatch or a label reaching in from outside
+
 /** The short slanted hatches of the ground, a ceiling or a wall on the side away from the motion: each [[x, y], [x, y]]
- * in device pixels ([] for a wire or a guide). */
-function hatches(style, pts, dpr) {
+ * in device pixels ([] for a wire or a guide), only those on the canvas (W × H device pixels); each stays where it
+ * is on the line whatever part of the line is seen. */
+function hatches(style, pts, dpr, W, H) {
   const away = { ground: [-1, 1], ceiling: [1, -1], "wall-left": [-1, 1], "wall-right": [1, 1] }[style];
   if (!away || !pts.length) return [];
   const [x0, y0] = pts[0], [x1, y1] = pts[pts.length - 1], len = Math.hypot(x1 - x0, y1 - y0);
   if (!(len > 0)) return [];
   const gap = 10 * dpr, h = 7 * dpr, count = Math.floor(len / gap), vertical = style.startsWith("wall");
+  const seen = count > 0 ? visiblePart(x0, y0, x1, y1, W, H, MARGIN * dpr) : [0, 0];
+  if (!seen) return [];
   const out = [];
-  for (let k = 0; k <= count; k++) {
-    const x = x0 + ((x1 - x0) * k) / count, y = y0 + ((y1 - y0) * k) / count;
+  for (let k = Math.ceil(seen[0] * count); k <= Math.floor(seen[1] * count); k++) {
+    const x = count ? x0 + ((x1 - x0) * k) / count : x0, y = count ? y0 + ((y1 - y0) * k) / count : y0;
     out.push([[x, y], [x + (vertical ? away[0] * h : away[0] * h * 0.7), y + (vertical ? away[1] * h * 0.7 : away[1] * h)]]);
   }
   return out;
@@ -44,18 +64,23 @@ function hatches(style, pts, dpr) {
  * label (bodies.js) keeps off them — the coupled oscillators' "left mass" sat on the floor's hatching (prof-m 10).
  */
 export function curveCover(player, i, dpr) {
-  const out = [];
+  const out = [], W = player.canvas.width, H = player.canvas.height;
   for (const c of player.curveCols || []) {
     if (c.style === "guide") continue;
     const pts = screenPoints(player.camera, c.moving ? c.at(player.run.envAt(i)) : c.cols);
     const cover = [];
     pts.forEach(([x, y], k) => {
       if (!Number.isFinite(x) || !Number.isFinite(y)) return;
-      const [px, py] = k ? pts[k - 1] : [x, y];
-      const n = Number.isFinite(px) && Number.isFinite(py) ? Math.max(1, Math.ceil(Math.hypot(x - px, y - py) / (2 * dpr))) : 1;
-      for (let s = 1; s <= n; s++) cover.push([px + ((x - px) * s) / n, py + ((y - py) * s) / n]);
+      const [px, py] = k && Number.isFinite(pts[k - 1][0]) && Number.isFinite(pts[k - 1][1]) ? pts[k - 1] : [x, y];
+      // only the part on the canvas, sampled where it lies on the whole segment
+      const seen = visiblePart(px, py, x, y, W, H, MARGIN * dpr);
+      if (!seen) return;
+      const n = Math.max(1, Math.ceil(Math.hypot(x - px, y - py) / (2 * dpr)));
+      for (let s = Math.max(1, Math.ceil(seen[0] * n)); s <= Math.floor(seen[1] * n); s++) {
+        cover.push([px + ((x - px) * s) / n, py + ((y - py) * s) / n]);
+      }
     });
-    for (const [, end] of hatches(c.style, pts, dpr)) cover.push(end);
+    for (const [, end] of hatches(c.style, pts, dpr, W, H)) cover.push(end);
     out.push({ label: c.label, points: cover });
   }
   return out;
@@ -77,7 +102,7 @@ export function drawCurve(camera, ctx, c, cols, dpr) {
   ctx.stroke();
   ctx.setLineDash([]);
   // the ground, a ceiling or a wall: short slanted hatches on the side away from the motion
-  const marks = hatches(style, pts, dpr);
+  const marks = hatches(style, pts, dpr, ctx.canvas.width, ctx.canvas.height);
   if (!marks.length) return;
   ctx.lineWidth = 1.2 * dpr; ctx.strokeStyle = "#8c959f";
   ctx.beginPath();
