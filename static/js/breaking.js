@@ -4,11 +4,17 @@
  *   alignedRows(tex)          the rows of a formula: an aligned block (\begin{aligned} … \end{aligned}) gives
  *                             one row per line, its alignment marks (&) dropped; any other formula is one row
  *   breakable(row)            the row with a break allowed after each \\quad at its top level
+ *   fractionRow(row)          a row that ends in one fraction (θ̈₁ = \frac{…}{…}): what comes before it, its
+ *                             numerator and its denominator; else null
+ *   numeratorTerms(num)       a numerator's terms, split before each + and − at its top level
+ *   stackedFraction(f, n)     the row again with its numerator's terms on n lines, each under the first
  *   breakDisplay(el, katex)   typeset el's formula (data-tex) as a display; if it is wider than el, typeset
  *                             it again row by row, each row in text mode at display size (\displaystyle), so
  *                             that KaTeX's own line breaking applies: a row goes on to the next line after a
  *                             relation (=) or a binary operator (+, −) at its top level, continuation lines
- *                             indented (site.css, .math-line).  Returns whether it broke the formula.
+ *                             indented (site.css, .math-line).  A fraction, one piece for KaTeX, wider than the
+ *                             box even so has its numerator broken over more lines, as a textbook does on a
+ *                             narrow page.  Returns whether it broke the formula.
  *
  * What cannot break (a matrix, one bracket \left( … \right) wider than a phone) still overflows: the box then
  * scrolls and shows so (scrollboxes.js).
@@ -204,6 +210,126 @@ export function breakable(row, loose = false) {
   return out;
 }
 
+const FRAC = /\\d?frac(?![a-zA-Z])/y;
+
+/** The end of the group in braces opening at ``i`` (row[i] === "{"): the index of its closing brace, or -1. */
+function groupEnd(row, i) {
+  let depth = 0;
+  for (let j = i; j < row.length; j++) {
+    if (row[j] === "\\") j += 1;
+    else if (row[j] === "{") depth += 1;
+    else if (row[j] === "}" && --depth === 0) return j;
+  }
+  return -1;
+}
+
+export function fractionRow(row) {
+  const t = row.trim();
+  let braces = 0;
+  for (let i = 0; i < t.length; i++) {
+    const c = t[i];
+    if (c === "{") braces += 1;
+    else if (c === "}") braces -= 1;
+    else if (c === "\\") {
+      FRAC.lastIndex = i;
+      if (braces === 0 && FRAC.test(t) && t[FRAC.lastIndex] === "{") {
+        const numEnd = groupEnd(t, FRAC.lastIndex);
+        const denEnd = numEnd > 0 && t[numEnd + 1] === "{" ? groupEnd(t, numEnd + 1) : -1;
+        // the fraction must close the row: a row going on after it (a/b + c) breaks there already
+        if (denEnd !== t.length - 1) return null;
+        return { before: t.slice(0, i), num: t.slice(FRAC.lastIndex + 1, numEnd), den: t.slice(numEnd + 2, denEnd) };
+      }
+      i += 1;
+    }
+  }
+  return null;
+}
+
+export function numeratorTerms(num) {
+  // a numerator already set on lines (an aligned block, continuations after \quad) is one sum again
+  const whole = alignedRows(num.trim()).map((r) => r.replace(/^\\q?quad(?![a-zA-Z])/, "").trim()).join(" ");
+  const terms = [];
+  let term = "";
+  let braces = 0;
+  let brackets = 0; // \left … \right: never split inside
+  for (let i = 0; i < whole.length; i++) {
+    const c = whole[i];
+    if (c === "\\") {
+      const word = /^\\([a-zA-Z]+|.)/.exec(whole.slice(i))?.[0] ?? c;
+      if (word === "\\left") brackets += 1;
+      else if (word === "\\right") brackets -= 1;
+      term += word;
+      i += word.length - 1;
+      continue;
+    }
+    if (c === "{") braces += 1;
+    else if (c === "}") braces -= 1;
+    // a sign between two terms (not the first term's own sign, nor one after a relation or an opening bracket)
+    if ((c === "+" || c === "-") && braces === 0 && brackets === 0 && /[^\s=(\[{,]\s*$/.test(term)) {
+      terms.push(term.trim());
+      term = "";
+    }
+    term += c;
+  }
+  if (term.trim()) terms.push(term.trim());
+  return terms;
+}
+
+/** The terms in ``lines`` groups, in order, each about an equal share of the widths given (one per term). */
+function groupsOf(terms, widths, lines) {
+  const total = widths.reduce((a, b) => a + b, 0);
+  const groups = [];
+  let group = [];
+  let done = 0;
+  terms.forEach((term, k) => {
+    // a new line once this one has its share and enough terms are left for the lines still to come
+    const share = (total * (groups.length + 1)) / lines;
+    const left = terms.length - k;
+    if (group.length && (done + widths[k] / 2 > share || left === lines - groups.length - 1)) {
+      groups.push(group);
+      group = [];
+    }
+    group.push(term);
+    done += widths[k];
+  });
+  groups.push(group);
+  return groups;
+}
+
+export function stackedFraction(f, lines, widths = null) {
+  const terms = numeratorTerms(f.num);
+  const groups = groupsOf(terms, widths ?? terms.map((t) => t.length), Math.min(lines, terms.length));
+  // as Morin sets a numerator on a narrow page: each line under the first, beginning with its sign (no indent, which
+  // the engine's desktop form gives its second line: a phone has no room for it)
+  const rows = groups.map((g) => `&${g.join(" ")}`);
+  return `${f.before}\\frac{\\begin{aligned}${rows.join(" \\\\ ")}\\end{aligned}}{${f.den}}`;
+}
+
+/** A line still wider than its box, ending in a fraction: its numerator on as few lines as make it fit (each
+ *  term's width measured as KaTeX sets it), on one term a line at most. */
+function stackFraction(line, row, katex) {
+  const f = fractionRow(row);
+  if (!f) return;
+  const terms = numeratorTerms(f.num);
+  const had = alignedRows(f.num.trim()).length;
+  if (terms.length <= had) return;
+  const probe = document.createElement("span");
+  probe.style.cssText = "position:absolute;visibility:hidden;white-space:nowrap";
+  line.append(probe);
+  const widths = terms.map((t) => {
+    katex.render(`\\displaystyle ${t}`, probe, { displayMode: false, throwOnError: false });
+    return probe.getBoundingClientRect().width;
+  });
+  probe.remove();
+  for (let n = had + 1; n <= terms.length; n++) {
+    katex.render(`\\displaystyle ${breakable(stackedFraction(f, n, widths), true)}`, line, {
+      displayMode: false,
+      throwOnError: false,
+    });
+    if (line.scrollWidth <= line.clientWidth + 1) return;
+  }
+}
+
 export function breakDisplay(el, katex) {
   const tex = el.dataset.tex;
   if (!tex || !katex) return false;
@@ -227,6 +353,9 @@ export function breakDisplay(el, katex) {
     if (line.scrollWidth > line.clientWidth + 1) {
       katex.render(`\\displaystyle ${breakable(row, true)}`, line, { displayMode: false, throwOnError: false });
     }
+    // still wider, a row ending in a tall fraction (the double pendulum's θ̈₁ on a phone): its numerator over
+    // more lines
+    if (line.scrollWidth > line.clientWidth + 1) stackFraction(line, row, katex);
   }
   if (el.querySelector(".katex-error")) {
     katex.render(spacedRows(tex), el, { displayMode: true, throwOnError: false });

@@ -135,6 +135,43 @@ def test_stacked_long_fractions_do_not_touch(page, artifacts):
     print(json.dumps(found))
 
 
+ACCELERATIONS = """async () => {
+  const step = [...document.querySelectorAll('li.step')].find((s) => s.querySelector('.step-title')?.textContent === 'Accelerations');
+  step.scrollIntoView();
+  await new Promise((r) => setTimeout(r, 500));
+  const box = step.querySelector('.math-display');
+  // the outermost fractions' numerators: how many lines each is set on
+  const fracs = [...box.querySelectorAll('.mfrac')].filter((f) => !f.parentElement.closest('.mfrac'));
+  return { wide: box.scrollWidth - box.clientWidth, errors: box.querySelectorAll('.katex-error').length,
+           fractions: fracs.length, broken: box.dataset.broken === 'true',
+           rows: fracs.map((f) => [...f.querySelectorAll('.mtable .col-align-l > .vlist-t > .vlist-r > .vlist > span')]
+             .filter((s) => s.textContent.trim()).length) };
+}"""
+
+
+@pytest.mark.parametrize("size", ["phone", "laptop"])
+def test_the_double_pendulums_accelerations_fit_a_phone(browser, live_server, artifacts, size):
+    # prof-n 10: on a phone θ̈₁ and θ̈₂, each one fraction wider than the screen, ran off its right edge behind a
+    # sideways scroll; their numerators now go on over more lines.  A laptop keeps the engine's two lines.
+    context = browser.new_context(base_url=live_server, **(PHONE if size == "phone" else LAPTOP))
+    page = context.new_page()
+    page.set_default_timeout(120_000)
+    try:
+        page.goto("/scenes/double-pendulum")
+        page.wait_for_selector("body[data-katex-errors]", state="attached")
+        page.wait_for_function("document.fonts.status === 'loaded'")
+        found = page.evaluate(ACCELERATIONS)
+        print(size, json.dumps(found))
+        assert found["wide"] <= 1 and found["errors"] == 0 and found["fractions"] == 2, found
+        if size == "phone":
+            assert all(n > 2 for n in found["rows"]), found
+        else:
+            assert found["rows"] == [2, 2], found
+        page.screenshot(path=artifacts / f"double-pendulum-accelerations-{size}.png", full_page=False)
+    finally:
+        context.close()
+
+
 def _crosses_segment(box, a, b, margin=1.0) -> bool:
     """Whether the segment a–b passes through the box (x0, y0, x1, y1), sampled every half pixel."""
     x0, y0, x1, y1 = box

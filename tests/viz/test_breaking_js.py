@@ -70,3 +70,32 @@ def test_stacked_fractions_get_room_between_their_rows():
     # a separator's own space stays with it
     gapped = r"\begin{aligned}a &= \frac{1}{2} \\[4pt] b &= 1\end{aligned}"
     assert r"$} \\[4pt] " in node("(m, tex) => m.spacedRows(tex)", gapped)
+
+
+def test_a_fraction_too_wide_for_a_phone_has_its_numerator_set_on_more_lines():
+    # prof-n 10: the double pendulum's θ̈₁, a fraction whose numerator the engine sets on two lines, is still wider
+    # than a phone; the page sets its numerator's terms on more lines, each beginning with its sign
+    row = (
+        r"\ddot{\theta}_{1} = \frac{\begin{aligned}&a \cos{\left(\theta_{1} - \theta_{2} \right)} - \left(m_{1} + m_{2}"
+        r"\right) g \\ &\quad - b^{-2} \sin{\theta} + c\end{aligned}}{l_{1} \left(m_{1} - m_{2}\right)}"
+    )
+    found = node(
+        "(m, row) => { const f = m.fractionRow(row); return { f, terms: m.numeratorTerms(f.num),"
+        " two: m.stackedFraction(f, 2, [1, 1, 1, 1]), none: m.fractionRow(row + ' + d') }; }",
+        row,
+    )
+    assert found["f"]["before"] == r"\ddot{\theta}_{1} = "
+    assert found["f"]["den"] == r"l_{1} \left(m_{1} - m_{2}\right)"
+    # split before each + and − outside braces and brackets: not inside (θ₁ − θ₂), (m₁ + m₂) or the exponent −2
+    assert found["terms"] == [
+        r"a \cos{\left(\theta_{1} - \theta_{2} \right)}",
+        r"- \left(m_{1} + m_{2}\right) g",
+        r"- b^{-2} \sin{\theta}",
+        r"+ c",
+    ]
+    assert found["two"] == (
+        r"\ddot{\theta}_{1} = \frac{\begin{aligned}&a \cos{\left(\theta_{1} - \theta_{2} \right)} - \left(m_{1} + m_{2}"
+        r"\right) g \\ &- b^{-2} \sin{\theta} + c\end{aligned}}{l_{1} \left(m_{1} - m_{2}\right)}"
+    )
+    # a row going on after its fraction is not one fraction
+    assert found["none"] is None
