@@ -62,12 +62,21 @@ export function constantOrRange(values, unit = "") {
   if (lo > hi) return "no finite value";
   // constant when the spread is below 10⁻⁹ of the size (the values' round-off) or the 4 shown digits agree
   if (hi - lo <= 1e-9 * Math.max(Math.abs(lo), Math.abs(hi)) || fmt(lo) === fmt(hi)) return `is constant: ${fmt((lo + hi) / 2)}${u}`;
-  // a sampled end a thousand times smaller than the other is a zero the samples straddle (the helix's wire
-  // force toward the axis, m α² R ż², vanishes where ż changes sign): said as ≈ 0, not as a digit string
-  const small = (end, other) => Math.abs(end) < 1e-3 * Math.abs(other);
-  const from = lo >= 0 && small(lo, hi) ? "≈ 0" : fmt(lo);
-  const to = hi <= 0 && small(hi, lo) ? "≈ 0" : fmt(hi);
+  const [from, to] = rangeEnds(lo, hi);
   return `ranges from ${from} to ${to}${u}`;
+}
+
+// the share of a range's span below which its ends carry no figure: a thousandth, the last of the four digits shown
+export const RANGE_FIGURES = 1e-3;
+
+/** A range's two ends, each to the figures that mean something against the range's size: nothing finer than a
+ *  thousandth of the span (lo to hi), nor than ``floor`` (a run's energy resolution).  A sampled end that small is
+ *  a zero the samples straddle (the pendulum's U at the bottom of its swing, the helix's wire force m α² R ż²
+ *  where ż changes sign): "≈ 0", not the digits of the sample nearest it ("1.391 × 10⁻⁵", prof-n 11). */
+export function rangeEnds(lo, hi, floor = 0) {
+  // |end| ≤ max(floor, 10⁻³ (hi − lo)) reads "≈ 0"; a larger end keeps its digits down to that size
+  const known = Math.max(floor > 0 ? floor : 0, RANGE_FIGURES * Math.abs(hi - lo));
+  return [fmtResolved(lo, known), fmtResolved(hi, known)];
 }
 
 /** "10⁻⁸": the power of ten nearest a positive number (an order of magnitude, for a glance). */

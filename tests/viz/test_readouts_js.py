@@ -120,3 +120,26 @@ def test_a_box_value_that_prints_as_a_bound_is_that_bound():
     found = node("controls.js", "(m) => [m.snapToBounds(3.142, -Math.PI, Math.PI), m.snapToBounds(-3.142, -Math.PI, "
                  "Math.PI), m.snapToBounds(3.15, -Math.PI, Math.PI), m.snapToBounds(1.5, -Math.PI, Math.PI)]")
     assert found == [math.pi, -math.pi, 3.15, 1.5]
+
+
+def test_a_ranges_ends_carry_only_the_figures_its_size_gives():
+    # prof-n 11: "U from 1.391 × 10⁻⁵ to 4.51 J" on the simple pendulum, whose least U is 0, passed between samples.
+    # A parabola sampled every 0.1 s with its zero at 0.31 s, between two samples: its least sample, 1.05 × 10⁻⁴, is a
+    # thousandth of the span 0.4999 or less, so it reads ≈ 0; the greatest keeps its four digits
+    out = node(
+        "energybars.js",
+        "(m) => { const t = Array.from({ length: 11 }, (_, i) => i / 10);"
+        " return [m.overTheRun([{ name: 'U', values: t.map((s) => 1.05 * (s - 0.31) ** 2) }], t, 1e-9),"
+        " m.overTheRun([{ name: 'U', values: t.map((s) => 1.05 * (s - 0.31) ** 2 - 0.2) }], t, 1e-9)]; }",
+    )
+    assert out[0] == "Over the 1 s run: U from ≈ 0 to 0.4999 J.", out
+    # an end far from zero keeps its digits, however small its distance from the sample nearest it
+    assert out[1] == "Over the 1 s run: U from −0.1999 to 0.2999 J.", out
+    # one rule for a range's ends (summaries.js rangeEnds): both ends below a thousandth of the span read ≈ 0,
+    # a resolution larger than that share wins, and an end above keeps the digits down to that share
+    ends = node(
+        "summaries.js",
+        "(m) => [m.rangeEnds(1.391e-5, 4.51), m.rangeEnds(-2e-4, 4.51), m.rangeEnds(0.02, 4.51, 0.05),"
+        " m.rangeEnds(1.0004, 1.0009)]",
+    )
+    assert ends == [["≈ 0", "4.51"], ["≈ 0", "4.51"], ["≈ 0", "4.51"], ["1", "1.001"]], ends
