@@ -5,7 +5,7 @@
  *
  * urls.poincare(run) resolves to the server's section (app/service/poincare.py) on the energy
  * surface of the run's initial state, at the run's parameters: several orbits, each a set of
- * points (q, p) of one coordinate where the other crosses its plane upward.  Computed on the
+ * points (q, p) of one coordinate where the other crosses its plane upward (θ₂ = 0 with θ̇₂ > 0).  Computed on the
  * server (seconds, off the event loop) for the server's run only, and only once the panel is
  * in view; answers are kept per request so a repeated run costs nothing.
  */
@@ -68,7 +68,10 @@ export class PoincarePanel {
     }));
     const points = s.orbits.reduce((a, o) => a + o.q.length, 0);
     this.section.dataset.points = String(points);
-    const cut = `${lc} = ${fmt(s.value)}, crossing ${s.direction > 0 ? "upward" : "downward"}`;
+    // the plane and the side it is crossed from, as a textbook writes it: θ₂ = 0 with θ̇₂ > 0 (prof-m 9), not
+    // "crossing upward"
+    const rate = labels[`${s.coordinate}_dot`] || `d${lc}/dt`;
+    const cut = `${lc} = ${fmt(s.value)} with ${rate} ${s.direction > 0 ? ">" : "<"} 0`;
     // the orbits the server stopped before their full time, named as the legend and the table name them
     const named = (k) => `${k + 1} (${PALETTE_NAMES[k % PALETTE_NAMES.length]})`;
     const short = s.orbits.map((o, k) => (o.complete ? null : named(k))).filter((x) => x);

@@ -94,7 +94,10 @@ def test_the_poincare_panel_draws_points(page, path):
     page.wait_for_function("Number(document.getElementById('panel-poincare').dataset.points) > 100", timeout=90_000)
     orbits = page.evaluate("document.querySelector('#panel-poincare .plot').data.length")
     assert orbits == 6
-    assert "orbits with h =" in page.inner_text("#panel-poincare .readout")
+    readout = page.inner_text("#panel-poincare .readout")
+    assert "orbits with h =" in readout
+    # the plane and its side as a textbook writes them (prof-m 9: "crossing upward" before)
+    assert "where θ₂ = 0 with θ̇₂ > 0." in readout and "crossing" not in readout, readout
     assert [e for e in page.console_errors if "status of 429" not in e] == []
 
 
