@@ -52,62 +52,10 @@ function trailingBlock(row) {
   return -1;
 }
 
-export function alignedRows(tex) {
-  const t = tex.trim();
-  if (!t.startsWith(OPEN) || !t.endsWith(CLOSE)) {
-    // a row that goes on in an aligned block of its own (the engine's long sums): its first line, then the rest
-    const at = trailingBlock(t);
-    if (at <= 0) return [t];
-    const inner = alignedRows(t.slice(at));
-    return [`${t.slice(0, at)}${inner[0] ?? ""}`, ...inner.slice(1)];
-  }
-  const body = t.slice(OPEN.length, t.length - CLOSE.length);
-  const rows = [];
-  let row = "";
-  let braces = 0;
-  let envs = 0;
-  for (let i = 0; i < body.length; i++) {
-    const c = body[i];
-    if (c === "\\") {
-      if (body.startsWith("\\begin{", i)) envs += 1;
-      else if (body.startsWith("\\end{", i)) envs -= 1;
-      else if (body[i + 1] === "\\" && braces === 0 && envs === 0) {
-        rows.push(row);
-        row = "";
-        i += 1;
-        // a row separator may carry a space: \\[4pt]
-        if (body[i + 1] === "[") i = body.indexOf("]", i + 1);
-        continue;
-      }
-      row += c + (body[i + 1] ?? ""); // a control symbol (\{, \&, \,) is kept whole
-      i += 1;
-      continue;
-    }
-    if (c === "{") braces += 1;
-    else if (c === "}") braces -= 1;
-    if (c === "&" && braces === 0 && envs === 0) continue;
-    row += c;
-  }
-  rows.push(row);
-  // a row that is itself an aligned block, or ends in one, gives its own lines
-  return rows.map((r) => r.trim()).filter(Boolean).flatMap((r) => (r.includes(OPEN) ? alignedRows(r) : [r]));
-}
-
-// the space between the rows of a stacked display that holds a fraction (prof-l 9: the double pendulum's θ̈₁ and θ̈₂,
-// each a tall fraction, touched: θ̈₁'s denominator on θ̈₂'s numerator); a textbook leaves a clear gap there
-export const ROW_GAP = "0.6em";
-
-/** A display's TeX with room between the rows of its aligned block when a row holds a fraction at display size;
- *  any other formula as it is.  KaTeX, like LaTeX's arrays, reads \\[0.6em] as a least depth, which a deep
- *  fraction already passes (nothing changed); so each row but the last ends in an invisible copy of itself lowered
- *  by the gap (\raisebox{-0.6em}{$\displaystyle\vphantom{…}$}): the row is then exactly that much deeper, however
- *  deep it was.  Only the typeset form: the page's data-tex, which the tests and the reader's copy read, is left
- *  alone. */
-export function spacedRows(tex) {
-  const t = tex.trim();
-  if (!t.startsWith(OPEN) || !t.endsWith(CLOSE) || !/\\d?frac(?![a-zA-Z])/.test(t)) return tex;
-  const body = t.slice(OPEN.length, t.length - CLOSE.length);
-  // the outer block's rows: each as written (with its &) and without its alignment marks (for the copy)
+/** The rows of an aligned block's body at its top level: each [as written (with its &), without its alignment
+ *  marks, the space its separator carries (\\[4pt] gives "[4pt]", else "")]. A control symbol (\{, \&, \,) is
+ *  kept whole; a separator inside braces or an inner environment belongs to them. */
+function blockRows(body) {
   const rows = [];
   let row = "";
   let bare = "";
@@ -119,7 +67,6 @@ export function spacedRows(tex) {
       if (body.startsWith("\\begin{", i)) envs += 1;
       else if (body.startsWith("\\end{", i)) envs -= 1;
       else if (body[i + 1] === "\\" && braces === 0 && envs === 0) {
-        // a separator's own space (\\[4pt]) stays with it
         const close = body[i + 2] === "[" ? body.indexOf("]", i + 2) : -1;
         rows.push([row, bare, close > 0 ? body.slice(i + 2, close + 1) : ""]);
         row = ""; bare = "";
@@ -136,6 +83,38 @@ export function spacedRows(tex) {
     if (!(c === "&" && braces === 0 && envs === 0)) bare += c;
   }
   rows.push([row, bare, ""]);
+  return rows;
+}
+
+export function alignedRows(tex) {
+  const t = tex.trim();
+  if (!t.startsWith(OPEN) || !t.endsWith(CLOSE)) {
+    // a row that goes on in an aligned block of its own (the engine's long sums): its first line, then the rest
+    const at = trailingBlock(t);
+    if (at <= 0) return [t];
+    const inner = alignedRows(t.slice(at));
+    return [`${t.slice(0, at)}${inner[0] ?? ""}`, ...inner.slice(1)];
+  }
+  // a row that is itself an aligned block, or ends in one, gives its own lines
+  return blockRows(t.slice(OPEN.length, t.length - CLOSE.length)).map(([, bare]) => bare.trim()).filter(Boolean)
+    .flatMap((r) => (r.includes(OPEN) ? alignedRows(r) : [r]));
+}
+
+// the space between the rows of a stacked display that holds a fraction (prof-l 9: the double pendulum's θ̈₁ and θ̈₂,
+// each a tall fraction, touched: θ̈₁'s denominator on θ̈₂'s numerator); a textbook leaves a clear gap there
+export const ROW_GAP = "0.6em";
+
+/** A display's TeX with room between the rows of its aligned block when a row holds a fraction at display size;
+ *  any other formula as it is.  KaTeX, like LaTeX's arrays, reads \\[0.6em] as a least depth, which a deep
+ *  fraction already passes (nothing changed); so each row but the last ends in an invisible copy of itself lowered
+ *  by the gap (\raisebox{-0.6em}{$\displaystyle\vphantom{…}$}): the row is then exactly that much deeper, however
+ *  deep it was.  Only the typeset form: the page's data-tex, which the tests and the reader's copy read, is left
+ *  alone. */
+export function spacedRows(tex) {
+  const t = tex.trim();
+  if (!t.startsWith(OPEN) || !t.endsWith(CLOSE) || !/\\d?frac(?![a-zA-Z])/.test(t)) return tex;
+  // the outer block's rows: each as written (with its &) and without its alignment marks (for the copy)
+  const rows = blockRows(t.slice(OPEN.length, t.length - CLOSE.length));
   if (rows.length < 2) return tex;
   const last = rows.length - 1;
   return OPEN + rows.map(([r, b, gap], k) => (k < last
