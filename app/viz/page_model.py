@@ -17,7 +17,7 @@ from typing import Any
 from app.engine import notation
 from app.engine.dimensions import kind_of_unit
 from app.engine.names import MASS_MATRIX, latex, prose, unicode
-from app.engine.notation import printed
+from app.engine.notation import MASS_INERTIA, printed
 from app.engine.report import CORE_STEPS
 from app.engine.trees import TreeError, maybe_of_text, of_text
 from app.limits import DEFAULT_T_END
@@ -418,6 +418,8 @@ def _reduction(doc: dict[str, Any]) -> dict[str, Any] | None:
         ],
         "potential": _pair_tree(red["potential"], names),
         "mass": _pair_tree(red["mass"], names),
+        # the inertia's letter as the document prints it (I_eff for an angle, m_eff for a length: app/engine/notation.py)
+        "inertia": (red.get("inertia") or {}).get("unicode") or MASS_INERTIA.unicode,
         "condition": _pair_tree(red["condition"], names),
         "omega_squared": _pair_tree(red["omega_squared"], names),
         "equilibria": [

@@ -240,7 +240,7 @@ def test_m_eff_is_defined_as_what_the_results_print(client):
     # prof-f: the wedge's Symbols row said "∂²L/∂Ḋ²" (that is m) beside m_eff = (M + m sin²α) m/(M + m)
     page = client.get("/scenes/movable-incline").text
     assert "∂²L/∂Ḋ²" not in page
-    assert "effective inertia of D: the mass D moves with once the conserved momenta are held fixed" in page
+    assert "effective mass of D: the mass D moves with once the conserved momenta are held fixed" in page
 
 
 @pytest.mark.parametrize("scene", ["simple-pendulum", "damped-pendulum", "coupled-oscillators", "spherical-pendulum"])
