@@ -127,7 +127,8 @@ def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[s
     skipped.append(Skipped(
         "accelerations",
         f"The accelerations in closed form are left out: solving {MM} q̈ = f symbolically gives expressions too long "
-        f"to read ({eqs.closed_form_reason}), so they stay {MM}⁻¹f, with the mass matrix {MM} and the forcing f shown, "
+        f"to read ({eqs.closed_form_reason}), so they stay {MM}⁻¹f, with the mass matrix {MM} and f "
+        f"({notation.RIGHT_SIDE}) shown, "
         "solved numerically.",
     ))  # fmt: skip
     return {}

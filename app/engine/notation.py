@@ -66,6 +66,12 @@ def force(a: int) -> tuple[str, str]:
     return f"F_{{{a}}}", f"F{str(a).translate(SUBSCRIPT)}"
 
 
+# The Euler–Lagrange equations written as ℳ q̈ = f, in a textbook's words (Taylor, Morin), never a numerical
+# solver's "forcing": the step's title, and what f is. Every page, note and table row reads them here; the
+# document's members keep their names (mass_matrix, forcing).
+MATRIX_FORM = "The equations in matrix form"
+RIGHT_SIDE = "the terms without accelerations, moved to the right side"
+
 # quantities every document writes with one fixed letter
 FIXED: tuple[tuple[str, str, str], ...] = (
     ("T", "T", "kinetic energy"),
@@ -308,7 +314,7 @@ def table(
             rows.append(_row(tex, uni, meaning, "s" if uni == "t" else energy, "derived"))
     per = _PerCoordinate(d, dims) if energy else None
     rows.append(
-        _row("f", "f", f"right-hand side of the equations of motion, {text('mass_matrix', d)} q̈ = f",
+        _row("f", "f", f"{RIGHT_SIDE} of the equations of motion, {text('mass_matrix', d)} q̈ = f",
              per.unit(_ENERGY, 1, "J divided by its coordinate's unit") if per else "", "derived")  # fmt: skip
     )
     for concept, (meaning, _) in DERIVED.items():

@@ -540,7 +540,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     steps.append(
         _step(
             "mass-matrix",
-            "Mass matrix and forcing",
+            notation.MATRIX_FORM,
             # one coordinate: a number and a function, never a 1×1 matrix in brackets; a force linear in the
             # coordinates grouped by coordinate: κx₂ − (k + κ)x₁
             [
@@ -554,7 +554,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             ],
             [eqs.mass_matrix.tolist(), [display(meaning.by_coordinate(x, table.q)) for x in eqs.forcing]],
             f"The equations are linear in the accelerations: {Mu} q̈ = f, with {Mu} the mass matrix (the Hessian of L in "
-            "the velocities) and f the rest of each equation (the forces and the velocity terms) taken to the right"
+            f"the velocities) and f {notation.RIGHT_SIDE} (the forces and the velocity terms)"
             + _undivided(d, pr),
         )
     )

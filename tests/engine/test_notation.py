@@ -272,3 +272,54 @@ def test_the_inertias_letter_is_typed_in_one_place():
         typed += [f"{path.relative_to(root)}: {m.group()}" for m in _INERTIA_LETTER.finditer(code)]
     assert not typed, typed
     assert _INERTIA_LETTER.search(home.read_text(encoding="utf-8"))
+
+
+def _said(doc: object) -> list[str]:
+    """Every string a document gives a reader: its values, never its members' names (``forcing`` stays a key)."""
+    if isinstance(doc, dict):
+        return [s for v in doc.values() for s in _said(v)]
+    if isinstance(doc, list):
+        return [s for v in doc for s in _said(v)]
+    return [doc] if isinstance(doc, str) else []
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_the_matrix_form_is_named_in_a_textbooks_words(scene_id):
+    # prof-n 11: "Mass matrix and forcing" in every derivation; "forcing" is a numerical solver's word
+    doc = derivation_document(scene_id)
+    step = next(s for s in doc["steps"] if s["key"] == "mass-matrix")
+    assert step["title"] == "The equations in matrix form"
+    f = next(r for r in doc["notation"] if r["unicode"] == "f")
+    assert f["meaning"].startswith("the terms without accelerations, moved to the right side of the equations")
+    assert not [s for s in _said(doc) if re.search(r"\bforcing\b", s, re.I)]
+
+
+def test_a_system_left_as_m_inverse_f_says_what_f_is():
+    from app.engine.contract import first_stage
+    from app.service.user_checks import checked
+    from app.service.user_jobs import derive_checked
+
+    doc = first_stage(derive_checked(checked(_CHAIN)))
+    note = doc["skipped"][0]["reason"]
+    assert "f (the terms without accelerations, moved to the right side) shown" in note
+    assert not [s for s in _said(doc) if re.search(r"\bforcing\b", s, re.I)]
+
+
+def test_a_typed_systems_matrix_step_says_what_f_is():
+    # a typed system has no scene's sentence: the step's own words say what f is
+    from app.engine.contract import derivation_json
+    from app.engine.derive import derive
+    from app.engine.user_system import UserSystem
+
+    spec = {
+        "coordinates": ["x"],
+        "parameters": [{"name": "m", "value": 1.0, "unit": "kg"}, {"name": "k", "value": 2.0, "unit": "N/m"}],
+        "lagrangian": "m/2*x_dot**2 - k/2*x**2",
+    }
+    doc = derivation_json(derive(UserSystem.of(spec).system()))
+    step = next(s for s in doc["steps"] if s["key"] == "mass-matrix")
+    assert step["title"] == "The equations in matrix form"
+    assert "f the terms without accelerations, moved to the right side (the forces and the velocity terms)" in (
+        step["explanation"]
+    )
+    assert not [s for s in _said(doc) if re.search(r"\bforcing\b", s, re.I)]
