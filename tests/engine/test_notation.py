@@ -270,6 +270,10 @@ def test_the_inertias_letter_is_typed_in_one_place():
         # the script without its comments
         code = re.sub(r"/\*.*?\*/|//[^\n]*", "", path.read_text(encoding="utf-8"), flags=re.S)
         typed += [f"{path.relative_to(root)}: {m.group()}" for m in _INERTIA_LETTER.finditer(code)]
+    for path in sorted((root / "templates").rglob("*.html")):
+        # the template without its comments; LaTeX in a Jinja string has its backslashes doubled
+        page = re.sub(r"\{#.*?#\}", "", path.read_text(encoding="utf-8"), flags=re.S).replace("\\\\", "\\")
+        typed += [f"{path.relative_to(root)}: {m.group()}" for m in _INERTIA_LETTER.finditer(page)]
     assert not typed, typed
     assert _INERTIA_LETTER.search(home.read_text(encoding="utf-8"))
 
