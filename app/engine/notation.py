@@ -350,14 +350,15 @@ def _sometimes(
             add_dims({"kg": Fraction(1), "m": Fraction(2)}, dims[q], Fraction(-2)) if q in dims and energy else None
         )
         held = inertia(d, q.name)
-        what = "moment of inertia" if held is ANGLE_INERTIA else "mass"
+        # an angle turns with a moment of inertia, a length moves with a mass
+        what, does = ("moment of inertia", "turns") if held is ANGLE_INERTIA else ("mass", "moves")
         rows.append(
             _row(
                 held.latex,
                 held.unicode,
                 # with conserved momenta held, m_eff is not ∂²L/∂q̇² (the wedge's m): it is the inertia left in the
                 # reduced energy ½ m_eff q̇² + U_eff once the cyclic velocities are eliminated
-                f"{held.words} of {unicode(q.name)}: the {what} {unicode(q.name)} moves with once the conserved "
+                f"{held.words} of {unicode(q.name)}: the {what} {unicode(q.name)} {does} with once the conserved "
                 "momenta are held fixed (the inertia in its reduced energy)",
                 _unit(m_dims),
                 "derived",

@@ -220,7 +220,7 @@ def test_an_angles_inertia_is_a_moment_of_inertia_written_i():
     # prof-n 5: the simple pendulum printed m_eff = mR², a quantity in kg·m² written as a mass
     tex, rows = _reduction_rows("simple-pendulum")
     assert r"I_\text{eff} &= m R^{2}" in tex and r"m_\text{eff}" not in tex
-    assert rows["I_eff"]["meaning"].startswith("effective moment of inertia of θ")
+    assert rows["I_eff"]["meaning"].startswith("effective moment of inertia of θ: the moment of inertia θ turns with")
     assert rows["I_eff"]["latex"] == r"I_\text{eff}" and rows["I_eff"]["unit"] == "kg·m²"
     assert "m_eff" not in rows
 
