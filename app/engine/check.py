@@ -294,6 +294,8 @@ def _not_at_equilibrium(pb: Problem, printer: Printer, answer: sp.Expr) -> dict[
     """An ω² that still depends on a coordinate (g cos(θ)/R): graded wrong, and named as U_eff″/m_eff not
     evaluated at the equilibrium where putting the equilibrium in makes it right (review student-m 4)."""
     w = pb.frequency
+    # I_eff for an angle, m_eff for a length (app/engine/notation.inertia)
+    i = pb.inertia.unicode
     moving = sorted(answer.free_symbols & set(pb.groups.positions), key=sp.default_sort_key)
     said = " and ".join(spoken(s) for s in moving)
     at = pb.where[0] if pb.where else "the equilibrium"
@@ -304,8 +306,8 @@ def _not_at_equilibrium(pb: Problem, printer: Printer, answer: sp.Expr) -> dict[
         there = answer.subs(q, q0)
         found = None if there.free_symbols & set(pb.groups.positions) else verdict_of(pb, there)
         if found is not None and found["verdict"] == "correct":
-            name = f"{w}² = U_eff″/m_eff not evaluated at the equilibrium"
-            where = f"put {at}: {w}² at an equilibrium is a constant, U_eff″ and m_eff taken there"
+            name = f"{w}² = U_eff″/{i} not evaluated at the equilibrium"
+            where = f"put {at}: {w}² at an equilibrium is a constant, U_eff″ and {i} taken there"
             mistake = Mistake(f"{pb.step}.not_at_equilibrium", "not_at_equilibrium", name, None, where, answer)
             return _verdict(
                 "incorrect",
@@ -318,7 +320,7 @@ def _not_at_equilibrium(pb: Problem, printer: Printer, answer: sp.Expr) -> dict[
         "incorrect",
         message,
         _reveal(printer.pair(answer - pb.truths[0])),
-        f"Your {w}² still depends on {said}, but {w}² at an equilibrium is a constant: take U_eff″ and m_eff at "
+        f"Your {w}² still depends on {said}, but {w}² at an equilibrium is a constant: take U_eff″ and {i} at "
         f"{at}, with the parameters (and conserved momenta) only.",
     )
 
@@ -836,11 +838,11 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
             return found
     if pb.step in ("acceleration", "omega_squared"):
         frequency = pb.frequency if pb.step == "omega_squared" else None
-        found = _budgeted(lambda: solved_slip(answer, truth, pb.groups, frequency), None, ANSWER_SLIP_WORK)
+        found = _budgeted(lambda: solved_slip(answer, truth, pb.groups, frequency, pb.inertia), None, ANSWER_SLIP_WORK)
         if found is not None:
             return found
     # the step's rule in the document's letter for the frequency (Ω² on the rotating wire: student-i 6)
-    return pointer(pb.step, pb.frequency)
+    return pointer(pb.step, pb.frequency, pb.inertia)
 
 
 def _grouped(answer: sp.Expr, groups: Groups) -> sp.Expr | None:

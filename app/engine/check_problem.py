@@ -19,7 +19,7 @@ from app.engine.dimensions import Dims, system_dimensions
 from app.engine.mistake_families import Mistake
 from app.engine.mistake_positions import component_keys, position_label
 from app.engine.mistakes import absent_names, has_gravity, has_springs
-from app.engine.notation import text
+from app.engine.notation import MASS_INERTIA, Inertia, inertia, text
 from app.engine.report import plain_name
 from app.engine.textbook import unicode_text
 
@@ -57,6 +57,8 @@ class Problem:
     # for ω²: the reduced coordinate and its value at the asked equilibrium (θ, 0), where an ω² typed with the
     # coordinate still in it is evaluated (review student-m 4)
     equilibrium: tuple[sp.Symbol, sp.Expr] | None = None
+    # for ω²: the reduced coordinate's inertia, its letter and words (I_eff for an angle, m_eff for a length)
+    inertia: Inertia = MASS_INERTIA
 
     def mistake(self, key: str) -> Mistake | None:
         return next((m for m, _, _ in self.mistakes if m.key == key), None)
@@ -241,6 +243,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
         absent_names(d),
         text("frequency", d),
         equilibrium,
+        inertia(d),
     )
 
 

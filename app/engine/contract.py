@@ -82,13 +82,6 @@ def held_momenta(d: Derivation, scene: Scene | None) -> dict[str, float]:
     }
 
 
-def angle_coordinates(d: Derivation) -> list[str]:
-    """Coordinates that are angles: each is, alone, the argument of sin, cos or tan in the positions or in L."""
-    exprs = [c for r in d.mechanics.positions for c in r] + [d.mechanics.L]
-    arguments = {f.args[0] for e in exprs for f in sp.sympify(e).atoms(sp.sin, sp.cos, sp.tan)}
-    return [name for name, q in zip(d.table.names, d.table.q, strict=True) if q in arguments or -q in arguments]
-
-
 def symbol_names(d: Derivation) -> dict[str, dict[str, str]]:
     """How every name the document uses is written (LaTeX, Unicode, plain): read by pages, plots and exports."""
     q = d.table.names
@@ -134,7 +127,8 @@ def _accelerations(d: Derivation, pr: Printer, skipped: list[Skipped]) -> dict[s
     skipped.append(Skipped(
         "accelerations",
         f"The accelerations in closed form are left out: solving {MM} q̈ = f symbolically gives expressions too long "
-        f"to read ({eqs.closed_form_reason}), so they stay {MM}⁻¹f, with the mass matrix {MM} and the forcing f shown, "
+        f"to read ({eqs.closed_form_reason}), so they stay {MM}⁻¹f, with the mass matrix {MM} and f "
+        f"({notation.RIGHT_SIDE}) shown, "
         "solved numerically.",
     ))  # fmt: skip
     return {}
@@ -186,7 +180,7 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     no_steps: list[dict[str, str]] = []
     result: dict[str, Any] = {
         "coordinates": list(table.names),
-        "angles": angle_coordinates(d),
+        "angles": notation.angle_coordinates(d),
         "symbols": symbol_names(d),
         # every letter of the document once, with what it stands for (app/engine/notation.py)
         "notation": notation.table(
@@ -246,6 +240,8 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
             "momenta": [s.name for s in red.momenta],
             "potential": pr.pair(effective_potential(d), red.momenta[0] if red.momenta else None),
             "mass": pr.pair(red.effective_mass),
+            # its letter: I_eff for an angle, m_eff for a length (app/engine/notation.inertia)
+            "inertia": {"latex": notation.inertia(d).latex, "unicode": notation.inertia(d).unicode},
             "condition": pr.pair(red.equilibrium_condition),
             "omega_squared": pr.pair(red.omega_squared_at),
             "equilibria": [
@@ -574,7 +570,7 @@ def first_stage(d: Derivation) -> dict[str, Any]:
         document = {
             "stage": "equations",
             "coordinates": list(table.names),
-            "angles": angle_coordinates(d),
+            "angles": notation.angle_coordinates(d),
             "symbols": symbol_names(d),
             "notation": notation.table(d),
             "parameters": parameters_json(d.system.parameters),

@@ -152,7 +152,8 @@ def derive(system: System) -> Derivation:
     if eqs.velocity_dependent:
         # the reduction writes the reduced energy as ½ m_eff ṙ² + U_eff(r), true only for L quadratic in q̇
         skipped.append(Skipped("effective_potential", "The effective potential is left out: ∂²L/∂q̇² depends on "
-                               "the velocities, so the energy is not ½ m_eff ṙ² + U_eff(r)."))  # fmt: skip
+                               "the velocities, so the energy is not an inertia times half the velocity squared "
+                               "plus U_eff."))  # fmt: skip
         return Derivation(system, mech, eqs, en, None, tuple(skipped))
     # the one-coordinate reduction (effective potential, equilibria) is a refinement with its own bound
     red = bounded(

@@ -45,6 +45,7 @@ from app.engine.mistake_pieces import effective_terms, inertia_in_potential, mas
 from app.engine.mistake_positions import position_mistakes
 from app.engine.mistakes import OMEGA_HINT, RULES
 from app.engine.names import said_all
+from app.engine.notation import inertia
 from app.engine.notation import text as frequency_letter
 
 MIN_POINTS = 6
@@ -187,7 +188,7 @@ def catalogue(
     if step == "omega_squared":
         # in the document's letter for the frequency (Ω where ω is a parameter: student-i 6)
         w = frequency_letter("frequency", d)
-        hint = OMEGA_HINT.format(w=w)
+        hint = OMEGA_HINT.format(w=w, i=inertia(d).unicode)
         found += [
             (Mistake("omega_not_squared", "omega_not_squared", f"{w} in place of {w}²", sp.sqrt(w2), hint,
                      sp.sqrt(w2)), hint)
@@ -222,7 +223,7 @@ def whole_sign(d: Derivation, step: str, truth: sp.Expr) -> list[Mistake]:
         red = d.reduction
         alone = red is None or not has_u or sp.simplify(red.effective_potential - d.mechanics.U) == 0
         where = (
-            f"{w}² is the effective potential's second derivative over the effective mass, at the equilibrium; "
+            f"{w}² is the effective potential's second derivative over the {inertia(d).words}, at the equilibrium; "
             + ("the likely cause is U with its sign reversed, which turns a minimum into a maximum and "
                f"{w}² over" if has_u and alone else "check the sign of each term of the effective potential")
         )  # fmt: skip

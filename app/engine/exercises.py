@@ -18,7 +18,7 @@ from app.engine.equilibria_notes import equilibria_notes
 from app.engine.mistake_positions import body_name, component_keys
 from app.engine.mistakes import POINTERS, has_springs, pointer, without_springs
 from app.engine.names import said_all, unicode
-from app.engine.notation import letter
+from app.engine.notation import inertia, letter
 from app.engine.notation import text as frequency_letter
 from app.engine.report import Printer, display
 
@@ -62,7 +62,7 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
     # the rule of each step, without its words about springs where the system has none
     springs = has_springs(d)
     # (the frequency's rule in the document's letter: Ω² where ω is a parameter)
-    said = {step: pointer(step, frequency_letter("frequency", d)) for step in POINTERS}
+    said = {step: pointer(step, frequency_letter("frequency", d), inertia(d)) for step in POINTERS}
     rules = {step: rule if springs else (without_springs(rule) or rule) for step, rule in said.items()}
     return {"exercises": items, "symbols": {**symbols, "t": "t"}, "rules": rules}
 

@@ -40,6 +40,7 @@ from app.engine.compare import (
 )
 from app.engine.diagnose import MIN_POINTS, part_scales, rate_parts  # (MIN_POINTS: one home with the catalogue)
 from app.engine.mistake_families import Correct, monomial_words, said, spoken
+from app.engine.notation import MASS_INERTIA, Inertia
 from app.engine.symbols import TIME
 from app.engine.textbook import unicode_text
 
@@ -197,8 +198,11 @@ def _constant(expr: sp.Expr) -> bool:
     return not expr.free_symbols and expr != 0
 
 
-def solved_slip(answer: sp.Expr, truth: sp.Expr, groups: Groups, frequency: str | None = None) -> AnswerSlip | None:
-    """The slip in a solved acceleration (``frequency`` None) or ω² (its letter, ω or Ω), read by comparing the
+def solved_slip(
+    answer: sp.Expr, truth: sp.Expr, groups: Groups, frequency: str | None = None, inertia: Inertia = MASS_INERTIA
+) -> AnswerSlip | None:
+    """The slip in a solved acceleration (``frequency`` None) or ω² (its letter, ω or Ω, and ``inertia`` the
+    reduced coordinate's, an effective moment of inertia for an angle), read by comparing the
     answer with the truth: the sign of the whole, a factor upside down or squared, a term of the truth halved or
     doubled, another coordinate's term left out, then the numerator and the denominator compared each on its own;
     or None."""
@@ -312,7 +316,7 @@ def solved_slip(answer: sp.Expr, truth: sp.Expr, groups: Groups, frequency: str 
     return _slip(
         "denominator",
         f"the denominator {spoken(bottom)}{numerators}",
-        _denominator_why(denominator, groups, frequency, answer, truth),
+        _denominator_why(denominator, groups, frequency, answer, truth, inertia),
         Correct("denominator", sp.expand(right)) if right is not None
         else Correct("denominator", denominator, "up to a constant factor"),
     )
@@ -343,7 +347,12 @@ def _square_of_a_sum(bottom: sp.Expr, right: sp.Expr) -> tuple[str, str] | None:
 
 
 def _denominator_why(
-    denominator: sp.Expr, groups: Groups, frequency: str | None, answer: sp.Expr, truth: sp.Expr
+    denominator: sp.Expr,
+    groups: Groups,
+    frequency: str | None,
+    answer: sp.Expr,
+    truth: sp.Expr,
+    inertia: Inertia = MASS_INERTIA,
 ) -> str:
     """What a solved answer's denominator is, in the step's own terms: an ω²'s the effective mass; a single
     equation's acceleration its coefficient of q̈; coupled accelerations' (a sum) what solving them together gives,
@@ -351,7 +360,7 @@ def _denominator_why(
     if frequency is not None:
         # ω² = U_eff″/m_eff at the equilibrium: one coordinate, no equations to solve together
         return (
-            f"{frequency}² is the effective potential's second derivative over the effective mass (the coefficient "
+            f"{frequency}² is the effective potential's second derivative over the {inertia.words} (the coefficient "
             f"of ½ q̇² in T), both at the equilibrium: check each on its own"
         )
     coordinates = [q for q in groups.positions if q != TIME]

@@ -40,6 +40,7 @@ from app.engine.mistake_families import (
     velocity_monomials,
 )
 from app.engine.names import unicode
+from app.engine.notation import inertia
 from app.engine.textbook import unicode_text
 
 
@@ -408,7 +409,7 @@ def omega_mistakes(d: Derivation, asked: list) -> Iterator[Mistake]:
             "other_equilibrium",
             f"ω² at the other equilibrium {at}",
             e.omega_squared,
-            f"ω² (the effective potential's second derivative over the effective mass) is taken at the equilibrium asked for; {at} is another one{sign}",
+            f"ω² (the effective potential's second derivative over the {inertia(d).words}) is taken at the equilibrium asked for; {at} is another one{sign}",
             e.omega_squared,
         )
 

@@ -47,6 +47,7 @@ from app.engine.mistake_families import (
 from app.engine.mistake_other import linear
 from app.engine.mistakes import STIFFNESS_UNITS, has_springs
 from app.engine.names import unicode
+from app.engine.notation import inertia
 from app.engine.notation import text as frequency_letter
 
 MAX_PIECES = 12  # terms of a truth taken one at a time (a longer truth is left to the listed families)
@@ -809,7 +810,7 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
                 w2 = f"{frequency_letter('frequency', d)}²"  # Ω² where ω is a parameter (student-i 6)
                 yield Mistake(f"omega_squared.{key}", family, name, None,
                               f"your {w2} follows from it: {w2} is the effective potential's second derivative over "
-                              "the effective mass, at the equilibrium", w, correct=correct)  # fmt: skip
+                              f"the {inertia(d).words}, at the equilibrium", w, correct=correct)  # fmt: skip
 
 
 def _terms_lost(
@@ -963,7 +964,7 @@ def effective_terms(d: Derivation, asked: list) -> Iterator[Mistake]:
             yield Mistake(
                 f"omega_squared.effective_left_out.{term_key(u)}", "left_out", f"{what} of U_eff left out", u,
                 f"{frequency_letter('frequency', d)}² is the effective potential's second derivative at the "
-                "equilibrium over the effective mass: it "
+                f"equilibrium over the {inertia(d).words}: it "
                 "takes every term of the effective potential, the motion's (centrifugal) ones as well as U's", w - part,
             )  # fmt: skip
             yield Mistake(

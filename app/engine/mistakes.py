@@ -33,6 +33,7 @@ import sympy as sp
 
 from app.engine.derive import Derivation
 from app.engine.dimensions import STIFFNESS_PLAIN, STIFFNESS_WORDS
+from app.engine.notation import MASS_INERTIA, Inertia
 
 
 @dataclass(frozen=True)
@@ -133,7 +134,7 @@ POINTERS = {
     "hamiltonian": "h = Σ p_k q̇_k − L, written in the coordinates and velocities.",
     # {w}: the document's letter for the frequency (ω, or Ω where ω is a parameter: student-i 6), formatted where read
     "omega_squared": "About a stable equilibrium, where the effective potential has zero slope, {w}² is the effective "
-    "potential's second derivative there divided by the effective mass (the coefficient of ½ q̇² in T).",
+    "potential's second derivative there divided by the {inertia} (the coefficient of ½ q̇² in T).",
 }
 
 
@@ -344,13 +345,13 @@ RULES: tuple[Rule, ...] = (
     ),
 )
 
-# {w}: the document's letter for the frequency, as in POINTERS["omega_squared"]
-OMEGA_HINT = "This is {w}, not {w}²: square it ({w}² = U_eff″/m_eff at the equilibrium)."
+# {w}: the document's letter for the frequency, as in POINTERS["omega_squared"]; {i}: its inertia's (I_eff, m_eff)
+OMEGA_HINT = "This is {w}, not {w}²: square it ({w}² = U_eff″/{i} at the equilibrium)."
 
 
-def pointer(step: str, frequency: str = "ω") -> str:
-    """A step's rule, the frequency named by the document's letter."""
-    return POINTERS[step].format(w=frequency) if step == "omega_squared" else POINTERS[step]
+def pointer(step: str, frequency: str = "ω", inertia: Inertia = MASS_INERTIA) -> str:
+    """A step's rule, the frequency named by the document's letter and the inertia by its coordinate's words."""
+    return POINTERS[step].format(w=frequency, inertia=inertia.words) if step == "omega_squared" else POINTERS[step]
 
 
 # a momentum short of a factor: the factor is named, never the corrected momentum

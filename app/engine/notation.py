@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Mapping
 from fractions import Fraction
-from typing import Any
+from typing import Any, NamedTuple
 
 import sympy as sp
 
@@ -66,6 +66,12 @@ def force(a: int) -> tuple[str, str]:
     return f"F_{{{a}}}", f"F{str(a).translate(SUBSCRIPT)}"
 
 
+# The Euler–Lagrange equations written as ℳ q̈ = f, in a textbook's words (Taylor, Morin), never a numerical
+# solver's "forcing": the step's title, and what f is. Every page, note and table row reads them here; the
+# document's members keep their names (mass_matrix, forcing).
+MATRIX_FORM = "The equations in matrix form"
+RIGHT_SIDE = "the terms without accelerations, moved to the right side"
+
 # quantities every document writes with one fixed letter
 FIXED: tuple[tuple[str, str, str], ...] = (
     ("T", "T", "kinetic energy"),
@@ -103,6 +109,39 @@ def letter(concept: str, d: Derivation) -> str:
 def text(concept: str, d: Derivation) -> str:
     """The Unicode letter of a derived quantity in this document (for sentences)."""
     return _choice(concept, d)[1]
+
+
+class Inertia(NamedTuple):
+    """The letter (LaTeX, Unicode) of the inertia of a single coordinate, and its name in words."""
+
+    latex: str
+    unicode: str
+    words: str
+
+
+# The inertia a reduction leaves with its one coordinate, in the reduced energy ½ m_eff q̇² + U_eff: a mass for a
+# length; for an angle a moment of inertia (kg·m²), which Taylor and Morin write I (½ I θ̇²), never m.
+MASS_INERTIA = Inertia(r"m_\text{eff}", "m_eff", "effective mass")
+ANGLE_INERTIA = Inertia(r"I_\text{eff}", "I_eff", "effective moment of inertia")
+
+
+def angle_coordinates(d: Derivation) -> list[str]:
+    """Coordinates that are angles: each is, alone, the argument of sin, cos or tan in the positions or in L."""
+    exprs = [c for r in d.mechanics.positions for c in r] + [d.mechanics.L]
+    arguments = {f.args[0] for e in exprs for f in sp.sympify(e).atoms(sp.sin, sp.cos, sp.tan)}
+    return [name for name, q in zip(d.table.names, d.table.q, strict=True) if q in arguments or -q in arguments]
+
+
+def inertia(d: Derivation | None, name: str | None = None) -> Inertia:
+    """The inertia's letter and words for the coordinate ``name`` (the reduction's where not given): I_eff for an
+    angle, m_eff for a length or where no document says which (a sentence about every system)."""
+    if d is None:
+        return MASS_INERTIA
+    if name is None:
+        if d.reduction is None:
+            return MASS_INERTIA
+        name = d.reduction.coordinate
+    return ANGLE_INERTIA if name in angle_coordinates(d) else MASS_INERTIA
 
 
 # the exponents of a small motion η ∝ e^{λt}, the roots of its auxiliary equation: never r, which names the
@@ -275,7 +314,7 @@ def table(
             rows.append(_row(tex, uni, meaning, "s" if uni == "t" else energy, "derived"))
     per = _PerCoordinate(d, dims) if energy else None
     rows.append(
-        _row("f", "f", f"right-hand side of the equations of motion, {text('mass_matrix', d)} q̈ = f",
+        _row("f", "f", f"{RIGHT_SIDE} of the equations of motion, {text('mass_matrix', d)} q̈ = f",
              per.unit(_ENERGY, 1, "J divided by its coordinate's unit") if per else "", "derived")  # fmt: skip
     )
     for concept, (meaning, _) in DERIVED.items():
@@ -306,17 +345,20 @@ def _sometimes(
                 "derived",
             )
         )
-        # ½ m_eff q̇² is an energy: [m_eff] = J s² / [q]²
+        # ½ m_eff q̇² is an energy: [m_eff] = J s² / [q]² (kg·m² for an angle, its I_eff)
         m_dims = (
             add_dims({"kg": Fraction(1), "m": Fraction(2)}, dims[q], Fraction(-2)) if q in dims and energy else None
         )
+        held = inertia(d, q.name)
+        # an angle turns with a moment of inertia, a length moves with a mass
+        what, does = ("moment of inertia", "turns") if held is ANGLE_INERTIA else ("mass", "moves")
         rows.append(
             _row(
-                r"m_\text{eff}",
-                "m_eff",
+                held.latex,
+                held.unicode,
                 # with conserved momenta held, m_eff is not ∂²L/∂q̇² (the wedge's m): it is the inertia left in the
                 # reduced energy ½ m_eff q̇² + U_eff once the cyclic velocities are eliminated
-                f"effective inertia of {unicode(q.name)}: the mass {unicode(q.name)} moves with once the conserved "
+                f"{held.words} of {unicode(q.name)}: the {what} {unicode(q.name)} {does} with once the conserved "
                 "momenta are held fixed (the inertia in its reduced energy)",
                 _unit(m_dims),
                 "derived",

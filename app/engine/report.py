@@ -540,7 +540,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     steps.append(
         _step(
             "mass-matrix",
-            "Mass matrix and forcing",
+            notation.MATRIX_FORM,
             # one coordinate: a number and a function, never a 1×1 matrix in brackets; a force linear in the
             # coordinates grouped by coordinate: κx₂ − (k + κ)x₁
             [
@@ -554,7 +554,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             ],
             [eqs.mass_matrix.tolist(), [display(meaning.by_coordinate(x, table.q)) for x in eqs.forcing]],
             f"The equations are linear in the accelerations: {Mu} q̈ = f, with {Mu} the mass matrix (the Hessian of L in "
-            "the velocities) and f the rest of each equation (the forces and the velocity terms) taken to the right"
+            f"the velocities) and f {notation.RIGHT_SIDE} (the forces and the velocity terms)"
             + _undivided(d, pr),
         )
     )
@@ -666,7 +666,10 @@ def _effective_potential_why(d: Derivation) -> str:
     assert red is not None
     mech, table = d.mechanics, d.table
     name = unicode(red.coordinate)
-    moves = f"{name} moves like a particle of mass m_eff in the potential U_eff."
+    inertia = notation.inertia(d)
+    # a length moves like a particle of mass m_eff; an angle like a body of moment of inertia I_eff turning
+    body = "a particle of mass" if inertia is notation.MASS_INERTIA else "a body turning with moment of inertia"
+    moves = f"{name} moves like {body} {inertia.unicode} in the potential U_eff."
     held = "each conserved momentum held at its value, the cyclic velocities eliminated"
     if mech.T is None:
         # only L was given: T₀ and U cannot be told apart, U_eff is −L at q̇ = 0 (with the momenta held)
@@ -696,7 +699,7 @@ def _effective_potential_why(d: Derivation) -> str:
             f"is U − T₀, and {moves}"
         )
     return (
-        f"One coordinate on fixed constraints: U_eff is the potential energy U itself and m_eff the coefficient "
+        f"One coordinate on fixed constraints: U_eff is the potential energy U itself and {inertia.unicode} the coefficient "
         f"of ½{name}\u0307² in T, so {moves}"
     )
 
@@ -707,6 +710,8 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
     table = d.table
     r = table.q[table.names.index(red.coordinate)]
     rn = pr.tex(r)
+    # the inertia's letter: I_eff where r is an angle, m_eff where a length (app/engine/notation.inertia)
+    held = notation.inertia(d)
     # The constant of this first integral is the conserved energy E where h = E, else h itself (a rotating
     # frame's bead): the page's own letter for it, never a new E_r.
     level = "E" if d.energetics.h_equals_e else "h"
@@ -740,7 +745,7 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
                     if red.momenta
                     else pr.tex(display(sp.expand(red.effective_potential)))
                 ),
-                rf"m_\text{{eff}} = {pr.tex(red.effective_mass)}",
+                f"{held.latex} = {pr.tex(red.effective_mass)}",
             ],
             [effective_potential(d), red.effective_mass],
             _effective_potential_why(d),
@@ -764,14 +769,14 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
     # (2(M + m)/(m(M + m sin²α)), not 2 over m(M + m sin²α)/(M + m))
     integrand = rf"\frac{{d{rn}}}{{\sqrt{{{pr.tex(2 / red.effective_mass)}\left({energy_left}\right)}}}}"
     rows = [
-        rf"t = \int \sqrt{{\frac{{m_\text{{eff}}}}{{2\,\left({level} - U_\text{{eff}}({rn})\right)}}}}\, d{rn}",
+        rf"t = \int \sqrt{{\frac{{{held.latex}}}{{2\,\left({level} - U_\text{{eff}}({rn})\right)}}}}\, d{rn}",
         # the same integral with this system's m_eff and U_eff written in (what a problem asks for)
         rf" = \int {integrand}",
     ]
     integrals: list[sp.Expr] = [red.time_integral]
     why = (
         f"Separating variables in the energy integral gives the time to reach each {unicode(red.coordinate)}; "
-        "the second form writes in this system's m_eff and U_eff."
+        f"the second form writes in this system's {held.unicode} and U_eff."
     )
     steady = red.omega_squared_steady
     bounded = steady is not None and steady.is_nonpositive is not True
@@ -802,7 +807,7 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
         sym: Any = [c for _, c in powers] + [at]
         momentum = unicode(red.momenta[0].name)
         why = (
-            f"A steady motion sits where U_eff′ vanishes; about it, ω² = U_eff″/m_eff. The condition "
+            f"A steady motion sits where U_eff′ vanishes; about it, ω² = U_eff″/{held.unicode}. The condition "
             f"U_eff′({unicode(r0.name)}) = 0 gives {momentum}² in terms of {unicode(r0.name)}, and ω² is written "
             f"with it, so it depends on {unicode(r0.name)} and the parameters alone."
             + (" It is positive: the steady motion is stable." if all(e.stable for e in red.equilibria) else "")
@@ -815,7 +820,7 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
     elif red.equilibria:
         rows = [rf"{rn}_0 = {pr.root(e.position)},\quad {omega}^2 = {pr.tex(e.omega_squared)}" for e in red.equilibria]
         sym = [(e.position, e.omega_squared) for e in red.equilibria]
-        why = "Equilibria make U_eff′ vanish; about each, ω² = U_eff″/m_eff (oscillation when positive, instability when negative)."
+        why = f"Equilibria make U_eff′ vanish; about each, ω² = U_eff″/{held.unicode} (oscillation when positive, instability when negative)."
     else:
         if not red.equilibrium_condition.has(r):
             # a force that never vanishes: no equilibrium, so no frequency about one either
@@ -832,13 +837,13 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
             condition = red.equilibrium_condition.xreplace({r: r0})
             rows = [
                 rf"U_\text{{eff}}'({rn}_0) = {pr.tex(condition)} = 0",
-                rf"{omega}^2 = \frac{{U_\text{{eff}}''({rn}_0)}}{{m_\text{{eff}}}} = {pr.tex(at)}",
+                rf"{omega}^2 = \frac{{U_\text{{eff}}''({rn}_0)}}{{{held.latex}}} = {pr.tex(at)}",
             ]
             sym = [condition, at]
             momentum, root = unicode(red.momenta[0].name), unicode(r0.name)
             why = (
                 f"A steady motion sits at a root {root} of U_eff′, here found numerically; about it, ω² = "
-                f"U_eff″/m_eff. The condition U_eff′({root}) = 0 fixes {momentum}² by {root}, and ω² is written "
+                f"U_eff″/{held.unicode}. The condition U_eff′({root}) = 0 fixes {momentum}² by {root}, and ω² is written "
                 f"with it, so it depends on {root} and the parameters alone."
             )
         else:
@@ -846,7 +851,7 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
             at_root = {r: sp.Symbol(r.name + "0")}
             rows = [
                 rf"U_\text{{eff}}'({rn}_0) = {pr.tex(red.equilibrium_condition.xreplace(at_root))} = 0",
-                rf"{omega}^2 = \frac{{U_\text{{eff}}''({rn}_0)}}{{m_\text{{eff}}}} = {_at_root(pr, pythagoras(red.omega_squared_at), r)}",
+                rf"{omega}^2 = \frac{{U_\text{{eff}}''({rn}_0)}}{{{held.latex}}} = {_at_root(pr, pythagoras(red.omega_squared_at), r)}",
             ]
             sym = [red.equilibrium_condition, pythagoras(red.omega_squared_at)]
             why = (

@@ -824,7 +824,8 @@ def _equilibrium_step(e: Equilibrium, pr: Printer, d: Derivation, number: int, n
         title = f"Small oscillations about the steady motion at {plain_name(e.coordinates[0])} = {_figures(e.position[e.coordinates[0]])}"
         why = (
             "With the conserved momenta held at the values shown, the reduced coordinate sits at a minimum or maximum of "
-            f"U_eff: the body moves steadily (a circular or conical orbit), and {wu}² = U_eff''/m_eff. "
+            f"U_eff: the body moves steadily (a circular or conical orbit), and {wu}² = U_eff''/"
+            f"{notation.inertia(d).unicode}. "
         )
     else:
         key = f"normal-modes:{number}"
@@ -1060,7 +1061,8 @@ def _one_coordinate_step(
         title = f"Small oscillations about the steady motion at {at}"
         why = (
             "With the conserved momenta held at the values shown, the reduced coordinate sits at a minimum or maximum "
-            f"of U_eff: the body moves steadily (a circular or conical orbit), and {wu}² = U_eff″/m_eff"
+            f"of U_eff: the body moves steadily (a circular or conical orbit), and {wu}² = U_eff″/"
+            f"{notation.inertia(d).unicode}"
             + (
                 " is positive: a small displacement oscillates about it, a stable steady motion."
                 if w2 > 0

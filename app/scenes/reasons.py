@@ -83,7 +83,7 @@ DAMPED_PENDULUM: dict[str, str] = {
     "derivatives:theta": "The same derivatives as the simple pendulum: torque −m g R sin θ and angular momentum m R² θ̇.",
     "generalized-forces": "The drag's torque about the pivot is the generalized force on θ: Q_θ = −b θ̇, opposing the swing.",
     "euler-lagrange": "The drag adds (b/(m R²)) θ̇ to the pendulum's equation: a damping term.",
-    "mass-matrix": "ℳ = m R² as before; the forcing f now includes the drag −b θ̇.",
+    "mass-matrix": "ℳ = m R² as before; f now includes the drag −b θ̇.",
     "accelerations": "θ̈ = −(g/R) sin θ − (b/(m R²)) θ̇: gravity restores, drag slows.",
     "momenta": "p_θ = m R² θ̇, unchanged by the drag.",
     "time-dependence": "L has no t, yet h is not conserved because the drag does work.",

@@ -70,7 +70,8 @@ SECTIONS: tuple[Section, ...] = (
     Section(
         "4.9",
         "Small oscillations about an equilibrium",
-        "Near a minimum of the effective potential every system swings like a spring, with ω² = U_eff″/m_eff.",
+        "Near a minimum of the effective potential every system swings like a spring: ω² is U_eff″ over the "
+        "effective inertia (a mass for a length, a moment of inertia for an angle).",
         shown_by=("small-oscillations",),
     ),
 )

@@ -17,7 +17,7 @@ from typing import Any
 from app.engine import notation
 from app.engine.dimensions import kind_of_unit
 from app.engine.names import MASS_MATRIX, latex, prose, unicode
-from app.engine.notation import printed
+from app.engine.notation import MASS_INERTIA, printed
 from app.engine.report import CORE_STEPS
 from app.engine.trees import TreeError, maybe_of_text, of_text
 from app.limits import DEFAULT_T_END
@@ -170,6 +170,8 @@ def _summary(doc: dict[str, Any]) -> dict[str, Any]:
                 "coordinate_latex": latex(doc["effective_potential"]["coordinate"]) + " = ",
                 "root_latex": latex(doc["effective_potential"]["coordinate"]) + "_0",
                 "frequency_latex": letter_of(doc, "angular frequency", r"\omega"),
+                # the inertia's letter as the steps print it: I_eff for an angle, m_eff for a length
+                "inertia_latex": _inertia(doc["effective_potential"], "latex"),
             }
             if doc.get("effective_potential")
             else None
@@ -399,6 +401,12 @@ def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any
     return controls
 
 
+def _inertia(red: dict[str, Any], form: str) -> str:
+    """The reduced coordinate's inertia letter (``form`` "latex" or "unicode") as the document names it
+    (app/engine/notation.inertia); m_eff for a document from before it did."""
+    return (red.get("inertia") or {}).get(form) or getattr(MASS_INERTIA, form)
+
+
 def _reduction(doc: dict[str, Any]) -> dict[str, Any] | None:
     red = doc.get("effective_potential")
     if not red:
@@ -418,6 +426,8 @@ def _reduction(doc: dict[str, Any]) -> dict[str, Any] | None:
         ],
         "potential": _pair_tree(red["potential"], names),
         "mass": _pair_tree(red["mass"], names),
+        # the inertia's letter as the document prints it (I_eff for an angle, m_eff for a length: app/engine/notation.py)
+        "inertia": _inertia(red, "unicode"),
         "condition": _pair_tree(red["condition"], names),
         "omega_squared": _pair_tree(red["omega_squared"], names),
         "equilibria": [

@@ -194,7 +194,7 @@ PANELS: tuple[Panel, ...] = (
         "small-oscillations",
         "Small oscillations",
         "The frequency of small oscillations predicted at the nearest stable equilibrium (its square is "
-        "U_eff''/m_eff), beside the one measured from the simulated motion.",
+        "U_eff″ over the effective inertia), beside the one measured from the simulated motion.",
         "a reduction to one coordinate with a closed-form ω²",
         lambda f: f.reduction is not None and f.reduction.get("omega_squared") is not None,
         optional=True,

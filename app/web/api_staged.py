@@ -1,7 +1,7 @@
 """POST /api/derive/equations: the first stage of a derivation, answered before the whole document.
 
 The same system as POST /api/derive; the answer holds the equations of motion, the accelerations (or the
-mass matrix and forcing when they stay ℳ⁻¹f), the symbols and parameters, what was left out so far and what
+mass matrix and f of ℳ q̈ = f when they stay ℳ⁻¹f), the symbols and parameters, what was left out so far and what
 POST /api/derive will add (``pending``).  A worker-pool job of its own under the derivation's limits
 (app/service/staged.py); when the whole document is cached, its members are answered at once.
 """
@@ -16,6 +16,7 @@ from fastapi.responses import Response
 from pydantic import BaseModel, Field
 
 from app.engine.names import MASS_MATRIX
+from app.engine.notation import RIGHT_SIDE
 from app.errors import Refused
 from app.service import progress
 from app.service.staged import equations_bytes
@@ -50,7 +51,8 @@ class FirstStage(BaseModel):
     accelerations: dict[str, ExprPair] = Field(description=f"Empty when they stay {MM}⁻¹f (see `skipped`).")
     mass_matrix: list[list[ExprPair]]
     forcing: list[ExprPair] = Field(
-        description=f"f in {MM} q̈ = f, {MM} the mass matrix (a first stage gives it when the accelerations stay {MM}⁻¹f)."
+        description=f"f in {MM} q̈ = f, {RIGHT_SIDE}; {MM} the mass matrix (a first stage gives them when the "
+        f"accelerations stay {MM}⁻¹f)."
     )
     skipped: list[SkippedMember]
     pending: list[PendingMember] = Field(description="What POST /api/derive adds (empty when `stage` is whole).")
@@ -62,7 +64,7 @@ class FirstStage(BaseModel):
     summary="The equations of a system you declare, first",
     description=(
         "The same system as POST /api/derive. The answer comes before the whole derivation: the equations of "
-        "motion and the accelerations (or the mass matrix and the forcing), with the symbols and parameters, "
+        f"motion and the accelerations (or the mass matrix and f of {MM} q̈ = f), with the symbols and parameters, "
         "`skipped` so far and `pending` (what POST /api/derive adds). A worker job under the derivation's limits."
     ),
     response_model=FirstStage,

@@ -156,12 +156,22 @@ class Equilibrium(BaseModel):
     )
 
 
+class Letter(BaseModel):
+    latex: str
+    unicode: str
+
+
 class EffectivePotential(BaseModel):
     model_config = OPEN
     coordinate: str
     momenta: list[str]
     potential: ExprPair
     mass: ExprPair
+    inertia: Letter | None = Field(
+        default=None,
+        description="The letter the page prints `mass` with: I_eff, an effective moment of inertia, where the "
+        "coordinate is an angle; m_eff, an effective mass, where it is a length.",
+    )
     condition: ExprPair
     omega_squared: ExprPair
     equilibria: list[Equilibrium]

@@ -3,7 +3,7 @@
  *
  *   new EffectivePotentialPanel(section, data)   U_eff over the run's range, the energy level
  *                                                (E_r at the cursor), turning points, the current point
- *   new SmallOscillationsPanel(section, data)    ω from the engine's ω² = U_eff''/m_eff at the nearest
+ *   new SmallOscillationsPanel(section, data)    ω from the engine's ω² = U_eff''/m_eff (I_eff) at the nearest
  *                                                stable equilibrium, beside ω measured from the run
  *   reduced(run), equilibrium(run, red), measuredOmega(t, values)   the numbers behind them
  *
@@ -27,7 +27,8 @@ export function reduced(run) {
     const e = { ...run.envAt(i), ...P };
     return 0.5 * M(e) * e[`${r}_dot`] ** 2 + U(e);
   });
-  return { r, P, U: (x) => U(at(x)), at, Er, values: run.state[r] };
+  // the inertia's letter as the page prints it: I_eff where r is an angle, m_eff where a length
+  return { r, P, U: (x) => U(at(x)), at, Er, values: run.state[r], inertia: red.inertia };
 }
 
 function bisect(f, a, b) {
@@ -199,7 +200,7 @@ export class SmallOscillationsPanel extends PreviewPanel {
     const letter = run.data.frequency_letter || "ω";
     // words, never a raw null, where there is nothing to show
     const rows = [
-      [`predicted from ${letter}² = U_eff″/m_eff`, predicted ?? (eq ? "none: U_eff″ = 0 at the equilibrium" : "none: no stable equilibrium"), predicted ? (2 * Math.PI) / predicted : "–"],
+      [`predicted from ${letter}² = U_eff″/${red.inertia}`, predicted ?? (eq ? "none: U_eff″ = 0 at the equilibrium" : "none: no stable equilibrium"), predicted ? (2 * Math.PI) / predicted : "–"],
       ["measured from this run", measured ?? "none: no full oscillation in the run", measured ? (2 * Math.PI) / measured : "–"],
     ];
     table(this.summary, "Small-oscillation frequency", ["", `${letter} (rad/s)`, "period (s)"], rows);

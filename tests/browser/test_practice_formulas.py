@@ -45,10 +45,11 @@ def test_the_frequencys_rule_reads_with_subscripts_on_a_phone(browser, live_serv
         answer(page, key, "sqrt(g/R)")
         hint = verdict_of(page, key).locator(".verdict-hint")
         hint.wait_for()
-        # ω² = U_eff″/m_eff typeset, "eff" an upright subscript: no underscore is shown anywhere in the verdict
+        # ω² = U_eff″/I_eff typeset (θ an angle: its inertia is I), "eff" an upright subscript: no underscore
+        # is shown anywhere in the verdict
         rule = [a for a in hint.locator("annotation").all_text_contents() if "eff" in a]
         # (with the parenthesis the words open against it: no line ends on "(")
-        assert rule == ["(\\omega ^{2} = U_{\\text{eff}}'' /m_{\\text{eff}}"]
+        assert rule == ["(\\omega ^{2} = U_{\\text{eff}}'' /I_{\\text{eff}}"]
         shown = verdict_of(page, key).evaluate(
             "e => { const c = e.cloneNode(true); c.querySelectorAll('.katex-mathml').forEach((m) => m.remove());"
             " return c.textContent; }"

@@ -23,6 +23,7 @@ from app.engine.mistakes import (
     pointer,
     without_springs,
 )
+from app.engine.notation import MASS_INERTIA, Inertia
 from app.engine.parse import parse_expression
 from app.scenes import SCENES
 from app.scenes.types import Parameter, Particle, System
@@ -51,7 +52,7 @@ def derivation(name: str) -> Derivation:
     return derive(system_of(USER_SYSTEMS[name]) if name in USER_SYSTEMS else SCENES[name].system)
 
 
-def expected_hint(step: str, hint: str | None, frequency: str = "ω") -> str | None:
+def expected_hint(step: str, hint: str | None, frequency: str = "ω", inertia: Inertia = MASS_INERTIA) -> str | None:
     if hint is None:
         return None
     kind, _, factor = hint.partition(":")
@@ -60,9 +61,10 @@ def expected_hint(step: str, hint: str | None, frequency: str = "ω") -> str | N
     if kind == "units":
         return "units"
     if kind == "pointer":
-        return pointer(step, frequency)
+        return pointer(step, frequency, inertia)
     if kind == "omega":
-        return OMEGA_HINT.format(w=frequency)
+        # the reduced coordinate's inertia by its letter: I_eff for an angle (prof-n 5)
+        return OMEGA_HINT.format(w=frequency, i=inertia.unicode)
     if kind == "missing_factor":
         return MISSING_FACTOR_HINT.format(factor=factor)
     if kind == "constant_factor":
@@ -84,7 +86,7 @@ def test_corpus(system, step, coordinate, answer, verdict, difference, hint):
     fitted = (lambda text: text) if pb.springs else without_springs
     if hint is not None and hint.startswith("key:"):
         assert result["mistake"]["key"] == hint.removeprefix("key:"), result
-        assert result["hint"] not in {pointer(s, pb.frequency) for s in POINTERS}
+        assert result["hint"] not in {pointer(s, pb.frequency, pb.inertia) for s in POINTERS}
         # the piece kept for the reveal says what it is, or is not kept where the difference says it all; under
         # the name, nothing of the correct answer
         tex = result["reveal"]["piece"]
@@ -97,7 +99,7 @@ def test_corpus(system, step, coordinate, answer, verdict, difference, hint):
         # terms whose units disagree (θ̈ is 1/s², g sin θ an acceleration) are named as such
         assert result["hint"].startswith("Check the units") and result["mistake"]["key"] == "units.mismatch", result
     else:
-        assert result["hint"] == fitted(expected_hint(step, hint, pb.frequency))
+        assert result["hint"] == fitted(expected_hint(step, hint, pb.frequency, pb.inertia))
     if difference is None:
         assert result["reveal"] is None
     else:

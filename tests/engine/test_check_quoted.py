@@ -107,7 +107,7 @@ def test_an_omega_squared_with_the_coordinate_still_in_it_is_graded_and_named():
     assert result["verdict"] == "incorrect"
     assert result["mistake"]["key"] == "omega_squared.not_at_equilibrium", result["mistake"]
     assert (
-        result["hint"] == "Your ω² still depends on θ: ω² = U_eff″/m_eff not evaluated at the equilibrium: put θ = 0."
+        result["hint"] == "Your ω² still depends on θ: ω² = U_eff″/I_eff not evaluated at the equilibrium: put θ = 0."
     )
     # wrong even at the equilibrium: graded wrong, with the rule, and no slip named
     other = judge(pb, read_answer("2*g/R*cos(theta)", "omega_squared", None, pb.kinds)[0])

@@ -59,7 +59,7 @@ def outcome(slip: tuple) -> tuple[str, dict[str, Any]]:
     pb = step_problem(system, step, coordinate)
     result = judge(pb, answer)
     assert result["verdict"] == "incorrect", (slip, result)
-    if result["mistake"] is None and result["hint"] in {pointer(s, pb.frequency) for s in POINTERS}:
+    if result["mistake"] is None and result["hint"] in {pointer(s, pb.frequency, pb.inertia) for s in POINTERS}:
         return "general", result
     found = re.search(unicodedata.normalize("NFC", named), words(result), re.IGNORECASE)
     return ("named" if found else "misnamed"), result

@@ -7,8 +7,10 @@ chooses the letters.
 
 from __future__ import annotations
 
+import ast
 import json
 import re
+from pathlib import Path
 
 import pytest
 
@@ -206,3 +208,122 @@ def test_a_typed_system_with_a_mass_m_left_as_m_inverse_f_names_the_mass_matrix_
     with pytest.raises(InvalidSystem) as refused:
         checked({**_CHAIN, "parameters": [*_CHAIN["parameters"], {"name": "f", "value": 1.0, "unit": ""}]})
     assert "q̈ = f" in str(refused.value) and not _BARE_M.search(str(refused.value))
+
+
+def _reduction_rows(scene_id: str) -> tuple[str, dict[str, dict]]:
+    doc = derivation_document(scene_id)
+    step = next(s for s in doc["steps"] if s["key"] == "effective-potential")
+    return step["latex"], {r["unicode"]: r for r in doc["notation"]}
+
+
+def test_an_angles_inertia_is_a_moment_of_inertia_written_i():
+    # prof-n 5: the simple pendulum printed m_eff = mR², a quantity in kg·m² written as a mass
+    tex, rows = _reduction_rows("simple-pendulum")
+    assert r"I_\text{eff} &= m R^{2}" in tex and r"m_\text{eff}" not in tex
+    assert rows["I_eff"]["meaning"].startswith("effective moment of inertia of θ: the moment of inertia θ turns with")
+    assert rows["I_eff"]["latex"] == r"I_\text{eff}" and rows["I_eff"]["unit"] == "kg·m²"
+    assert "m_eff" not in rows
+
+
+def test_a_lengths_inertia_stays_an_effective_mass():
+    tex, rows = _reduction_rows("tabletop-spring")
+    assert r"m_\text{eff} &= m" in tex and r"I_\text{eff}" not in tex
+    assert rows["m_eff"]["meaning"].startswith("effective mass of r") and rows["m_eff"]["unit"] == "kg"
+    assert "I_eff" not in rows
+
+
+# the inertia's letter typed anywhere: m_eff, I_eff, m_\text{eff}, I_{\mathrm{eff}}
+_INERTIA_LETTER = re.compile(r"\b[mI]_(?:eff\b|\\text\{eff\}|\{\\(?:text|mathrm)\{eff\}\})")
+
+
+def _reader_strings(path: Path) -> list[tuple[int, str]]:
+    """The string constants of a module a reader can be shown: every literal and f-string piece, docstrings aside."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    docstrings = {
+        id(node.body[0].value)
+        for node in ast.walk(tree)
+        if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef))
+        and node.body
+        and isinstance(node.body[0], ast.Expr)
+        and isinstance(node.body[0].value, ast.Constant)
+    }
+    return [
+        (node.lineno, node.value)
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Constant) and isinstance(node.value, str) and id(node) not in docstrings
+    ]
+
+
+def test_the_inertias_letter_is_typed_in_one_place():
+    # issue 40: the letter (I_eff for an angle, m_eff for a length) is chosen in app/engine/notation.py alone;
+    # every step, sentence, hint and panel reads it from there
+    root = Path(__file__).resolve().parents[2]
+    home = root / "app" / "engine" / "notation.py"
+    typed = [
+        f"{path.relative_to(root)}:{line}: {text!r}"
+        for path in sorted((root / "app").rglob("*.py"))
+        if path != home
+        for line, text in _reader_strings(path)
+        if _INERTIA_LETTER.search(text)
+    ]
+    for path in sorted((root / "static" / "js").glob("*.js")):
+        # the script without its comments
+        code = re.sub(r"/\*.*?\*/|//[^\n]*", "", path.read_text(encoding="utf-8"), flags=re.S)
+        typed += [f"{path.relative_to(root)}: {m.group()}" for m in _INERTIA_LETTER.finditer(code)]
+    for path in sorted((root / "templates").rglob("*.html")):
+        # the template without its comments; LaTeX in a Jinja string has its backslashes doubled
+        page = re.sub(r"\{#.*?#\}", "", path.read_text(encoding="utf-8"), flags=re.S).replace("\\\\", "\\")
+        typed += [f"{path.relative_to(root)}: {m.group()}" for m in _INERTIA_LETTER.finditer(page)]
+    assert not typed, typed
+    assert _INERTIA_LETTER.search(home.read_text(encoding="utf-8"))
+
+
+def _said(doc: object) -> list[str]:
+    """Every string a document gives a reader: its values, never its members' names (``forcing`` stays a key)."""
+    if isinstance(doc, dict):
+        return [s for v in doc.values() for s in _said(v)]
+    if isinstance(doc, list):
+        return [s for v in doc for s in _said(v)]
+    return [doc] if isinstance(doc, str) else []
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_the_matrix_form_is_named_in_a_textbooks_words(scene_id):
+    # prof-n 11: "Mass matrix and forcing" in every derivation; "forcing" is a numerical solver's word
+    doc = derivation_document(scene_id)
+    step = next(s for s in doc["steps"] if s["key"] == "mass-matrix")
+    assert step["title"] == "The equations in matrix form"
+    f = next(r for r in doc["notation"] if r["unicode"] == "f")
+    assert f["meaning"].startswith("the terms without accelerations, moved to the right side of the equations")
+    assert not [s for s in _said(doc) if re.search(r"\bforcing\b", s, re.I)]
+
+
+def test_a_system_left_as_m_inverse_f_says_what_f_is():
+    from app.engine.contract import first_stage
+    from app.service.user_checks import checked
+    from app.service.user_jobs import derive_checked
+
+    doc = first_stage(derive_checked(checked(_CHAIN)))
+    note = doc["skipped"][0]["reason"]
+    assert "f (the terms without accelerations, moved to the right side) shown" in note
+    assert not [s for s in _said(doc) if re.search(r"\bforcing\b", s, re.I)]
+
+
+def test_a_typed_systems_matrix_step_says_what_f_is():
+    # a typed system has no scene's sentence: the step's own words say what f is
+    from app.engine.contract import derivation_json
+    from app.engine.derive import derive
+    from app.engine.user_system import UserSystem
+
+    spec = {
+        "coordinates": ["x"],
+        "parameters": [{"name": "m", "value": 1.0, "unit": "kg"}, {"name": "k", "value": 2.0, "unit": "N/m"}],
+        "lagrangian": "m/2*x_dot**2 - k/2*x**2",
+    }
+    doc = derivation_json(derive(UserSystem.of(spec).system()))
+    step = next(s for s in doc["steps"] if s["key"] == "mass-matrix")
+    assert step["title"] == "The equations in matrix form"
+    assert "f the terms without accelerations, moved to the right side (the forces and the velocity terms)" in (
+        step["explanation"]
+    )
+    assert not [s for s in _said(doc) if re.search(r"\bforcing\b", s, re.I)]

@@ -1,5 +1,6 @@
 """The playground's default start (issue 40, items 45 and 46): a cyclic coordinate turns at the steady motion's rate."""
 
+import json
 import math
 
 import pytest
@@ -54,3 +55,21 @@ def test_a_system_without_a_reduction_starts_at_rest():
               "kinetic": "m*x_dot**2/2", "potential": "k*x**2/2"}  # fmt: skip
     m = model(spring)
     assert start(m) == {"x": 1.0, "x_dot": 0.0} and "initial_note" not in m
+
+
+PENDULUM = {
+    "coordinates": ["theta"],
+    "parameters": [
+        {"name": "m", "value": 1.0, "unit": "kg"},
+        {"name": "g", "value": 9.8, "unit": "m/s^2"},
+        {"name": "R", "value": 1.0, "unit": "m"},
+    ],
+    "lagrangian": "m/2*R**2*theta_dot**2 + m*g*R*cos(theta)",
+}
+
+
+@pytest.mark.parametrize(("spec", "letter"), [(PENDULUM, "I_eff"), (KEPLER, "m_eff")])
+def test_the_small_oscillation_panel_names_the_inertia_as_the_steps_do(spec, letter):
+    # prof-n 5: "predicted from ω² = U_eff″/m_eff" beside a pendulum whose steps print I_eff = m R²
+    client = json.loads(model(spec)["client_json"])
+    assert client["reduction"]["inertia"] == letter

@@ -25,9 +25,10 @@ def test_the_frequencys_rule_has_real_subscripts(client):
     body = client.post(
         "/api/scenes/simple-pendulum/check", json={"step": "omega_squared", "answer": "sqrt(g/R)"}
     ).json()
-    assert "U_eff″/m_eff" in body["hint"]
+    # θ is an angle: its inertia is the moment of inertia I_eff (prof-n 5)
+    assert "U_eff″/I_eff" in body["hint"]
     shown = {f["text"]: f["latex"] for f in body["formulas"]}
-    assert shown["ω² = U_eff″/m_eff"] == r"\omega ^{2} = U_{\text{eff}}'' /m_{\text{eff}}"
+    assert shown["ω² = U_eff″/I_eff"] == r"\omega ^{2} = U_{\text{eff}}'' /I_{\text{eff}}"
 
 
 def test_a_right_reply_to_a_follow_up_is_echoed_as_typed(client):

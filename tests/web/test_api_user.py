@@ -122,6 +122,14 @@ def test_the_hoop_equilibria_say_where_they_exist_and_when_they_are_stable(clien
     assert by_position["pi"]["stable"] is False
 
 
+
+def test_the_hoops_inertia_is_served_as_a_moment_of_inertia(client):
+    # prof-n 5: θ is an angle, so its inertia m R² is the effective moment of inertia I_eff, never m_eff
+    red = derive(client, SPINNING_HOOP)["effective_potential"]
+    assert red["inertia"] == {"latex": r"I_\text{eff}", "unicode": "I_eff"}
+    assert red["mass"]["sympy"] == "R**2*m"
+
+
 @pytest.mark.usefixtures("fresh_mint_budget")
 def test_a_session_cookie_is_issued_and_kept(client):
     client.cookies.clear()

@@ -254,7 +254,7 @@ def test_the_coordinates_failing_at_a_pole_is_said_and_phi_is_not_listed_there(c
     assert r"\theta &= \pi:\quad \text{stable},\quad \omega^2 = \frac{g}{R} \\ &(\text{a minimum of } U" in eq
     assert r"&(\text{the coordinates fail: } \varphi \text{ has no value})" in eq
     assert r"\varphi = 0" not in eq and "singular" not in eq
-    mass = {t: x for t, _, x in steps_of(page(client, "simple-pendulum"))}["Mass matrix and forcing"]
+    mass = {t: x for t, _, x in steps_of(page(client, "simple-pendulum"))}["The equations in matrix form"]
     assert r"\begin{matrix}" not in mass and r"\left[" not in mass
 
 
@@ -278,7 +278,7 @@ def test_the_mass_matrix_has_one_letter_on_every_page(client, scene):
     mass = next(r for r in doc["notation"] if r["meaning"].startswith("mass matrix"))
     assert (mass["latex"], mass["unicode"]) == (r"\mathcal{M}", "ℳ")
     shown = {t: x for t, _, x in steps_of(page(client, scene))}
-    assert shown["Mass matrix and forcing"].removeprefix(r"\begin{aligned}").startswith(r"\mathcal{M} &= ")
+    assert shown["The equations in matrix form"].removeprefix(r"\begin{aligned}").startswith(r"\mathcal{M} &= ")
     # the rail's errata may write M for the total mass: M is never the mass matrix
     for erratum in doc["errata"]:
         assert r"\mathcal{M}" not in erratum.get("correct_latex", "")

@@ -240,7 +240,7 @@ def test_m_eff_is_defined_as_what_the_results_print(client):
     # prof-f: the wedge's Symbols row said "∂²L/∂Ḋ²" (that is m) beside m_eff = (M + m sin²α) m/(M + m)
     page = client.get("/scenes/movable-incline").text
     assert "∂²L/∂Ḋ²" not in page
-    assert "effective inertia of D: the mass D moves with once the conserved momenta are held fixed" in page
+    assert "effective mass of D: the mass D moves with once the conserved momenta are held fixed" in page
 
 
 @pytest.mark.parametrize("scene", ["simple-pendulum", "damped-pendulum", "coupled-oscillators", "spherical-pendulum"])
@@ -312,3 +312,12 @@ def test_a_slider_shows_a_usable_range_and_the_wider_typed_range_is_said_apart(c
     hint = re.search(r'<p class="hint"[^>]*>(.*?)</p>', control.group(0), re.S).group(1)
     assert hint == f"slider: {lo:g} to {hi:g} N/m; type any value from 0.01 to 100,000,000 N/m", hint
     assert "allowed: 0.01 to 100,000,000" not in page
+
+
+@pytest.mark.parametrize(("scene", "printed"), [("simple-pendulum", r"I_\text{eff} = m R^{2}"),
+                                               ("tabletop-spring", r"m_\text{eff} = m")])  # fmt: skip
+def test_the_results_name_an_angles_inertia_i_and_a_lengths_m(client, scene, printed):
+    # prof-n 5: the simple pendulum's Results printed m_eff = mR², a moment of inertia written as a mass
+    page = html.unescape(client.get(f"/scenes/{scene}").text)
+    results = page[page.index("<dt>Effective potential</dt>") :]
+    assert f'data-tex="{printed}"' in results[: results.index("</dd>")]
