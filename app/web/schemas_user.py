@@ -12,6 +12,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, create_model
 
+from app.engine.notation import ANGLE_INERTIA, MASS_INERTIA
 from app.engine.parse import FUNCTIONS, MAX_LENGTH
 from app.engine.trees import FUNCTIONS as TREE_FUNCTIONS
 from app.numerics import limits
@@ -169,8 +170,8 @@ class EffectivePotential(BaseModel):
     mass: ExprPair
     inertia: Letter | None = Field(
         default=None,
-        description="The letter the page prints `mass` with: I_eff, an effective moment of inertia, where the "
-        "coordinate is an angle; m_eff, an effective mass, where it is a length.",
+        description=f"The letter the page prints `mass` with: {ANGLE_INERTIA.unicode}, an {ANGLE_INERTIA.words}, where "
+        f"the coordinate is an angle; {MASS_INERTIA.unicode}, an {MASS_INERTIA.words}, where it is a length.",
     )
     condition: ExprPair
     omega_squared: ExprPair

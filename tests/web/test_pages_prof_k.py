@@ -106,4 +106,5 @@ def test_the_contents_page_lists_the_sections_it_has(client):
     served = client.get("/").text
     text = words(served)
     assert "sections 4.1 to 4.7 and 4.9" in text and "4.1 to 4.9" not in text
-    assert "U_eff''" not in text and "ω² = U<sub>eff</sub>″/m<sub>eff</sub>" in served
+    # U_eff″ typeset, over the inertia in words (a mass for a length, a moment of inertia for an angle: prof-n 5)
+    assert "U_eff''" not in text and "ω² is U<sub>eff</sub>″ over the effective inertia" in served
