@@ -114,7 +114,9 @@ _MASS_NAME = re.compile(r"(m|M|mu)\d*")
 
 def mass_out(expr: sp.Expr) -> sp.Expr:
     """A sum every term of which holds one mass, with one term the mass alone, written as that mass times
-    (1 + …), as a textbook writes it: m + mα²R² is m(1 + α²R²), 4mα²ρ² + m is m(1 + 4α²ρ²). Anything else as it is."""
+    (1 + …), as a textbook writes it: m + mα²R² is m(1 + α²R²), 4mα²ρ² + m is m(1 + 4α²ρ²). Anything else as it
+    is, its products' and its sums' members taken the same way: (4mα²ρ² + m) ρ̈ + 8mα²ρρ̇² is
+    m(1 + 4α²ρ²) ρ̈ + 8mα²ρρ̇²."""
     if isinstance(expr, sp.Mul):
         # each constant bracket of a product too: (m + mα²R²) z̈ is m(1 + α²R²) z̈
         held = [mass_out(f) for f in expr.args]
@@ -126,10 +128,14 @@ def mass_out(expr: sp.Expr) -> sp.Expr:
     # m + m a = m (1 + a): the common factor taken out of every term
     content, inner = sp.factor_terms(expr).as_coeff_Mul()
     common, bracket = inner.as_independent(sp.Add, as_Add=False) if inner.is_Mul else (sp.Integer(1), inner)
-    if not (isinstance(bracket, sp.Add) and common.is_Symbol and _MASS_NAME.fullmatch(common.name)):
-        return expr
-    if sp.Integer(1) not in bracket.args:
-        return expr
+    if not (isinstance(bracket, sp.Add) and common.is_Symbol and _MASS_NAME.fullmatch(common.name)) or (
+        sp.Integer(1) not in bracket.args
+    ):
+        # not itself a mass times (1 + …): each of its terms taken the same way
+        terms = [mass_out(t) for t in expr.args]
+        if all(h is t for h, t in zip(terms, expr.args, strict=True)):
+            return expr
+        return sp.Add(*terms, evaluate=False)
     return sp.Mul(content, common, bracket, evaluate=False) if content != 1 else sp.Mul(common, bracket, evaluate=False)
 
 

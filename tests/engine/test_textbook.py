@@ -109,3 +109,14 @@ def test_a_mass_comes_before_a_bracket_of_other_parameters():
     assert tex((1 + g * R**2) * m * thd**2 / 2) == r"\frac{1}{2} m \left(1 + g R^{2}\right) \dot{\theta}^{2}"
     assert tex((g - b**2 / 2) * m * theta**2) == r"m \left(g - \frac{b^{2}}{2}\right) \theta^{2}"
     assert tex((m + b) * g * R) == r"\left(m + b\right) g R"
+
+
+def test_a_velocity_comes_after_an_inertia_that_varies():
+    """prof-n 6: the rotating wire printed p_ρ = m ρ̇ (1 + 4α²ρ²) beside 𝓜 = m(1 + 4α²ρ²). A bracket that holds
+    positions only is an inertia: the velocity it multiplies comes after it, as the acceleration does. A bracket
+    that holds a rate keeps its place after the rates."""
+    inertia = 1 + 4 * b**2 * theta**2
+    assert tex(m * inertia * thd) == r"m \left(1 + 4 b^{2} \theta^{2}\right) \dot{\theta}"
+    assert tex(m * inertia * thd**2 / 2) == r"\frac{1}{2} m \left(1 + 4 b^{2} \theta^{2}\right) \dot{\theta}^{2}"
+    assert tex(m * inertia * thdd) == r"m \left(1 + 4 b^{2} \theta^{2}\right) \ddot{\theta}"
+    assert tex(m * theta * (g - thd**2)) == r"m \theta \left(g - \dot{\theta}^{2}\right)"
