@@ -209,7 +209,7 @@ def on_path_equations(m: Multipliers, cp: Printer, pr: Printer, lam: list[str]) 
     # the positions shown: those whose letter, or whose rate, the equations hold, each as the Positions step
     # prints it (R(1 − cos θ), not −R cos θ + R)
     shown = [s for s, v in zip(m.positions, m.velocities, strict=True) if {s, v} & held]
-    where = [f"{cp.tex(s)}={pr.tex(_common_factor(m.on_motion[s]))}" for s in shown]
+    where = [(cp.tex(s), pr.tex(_common_factor(m.on_motion[s]))) for s in shown]
     # Σ_b (Σ_i ∇_i𝒞_a · ∇_i𝒞_b / m_i) λ_b = Σ_i ∇_i𝒞_a · (∇_i U − F_i)/m_i − c_a, with r_i = r_i(q, t) and
     # ṙ_i = ṙ_i(q, q̇, t) put in: a cross coefficient that vanishes on the motion is left out, as above
     coefficient = m.normal.applyfunc(lambda e: sp.simplify(e.xreplace(m.on_motion)))
@@ -225,10 +225,12 @@ def on_path_equations(m: Multipliers, cp: Printer, pr: Printer, lam: list[str]) 
     equations = [
         sp.Eq(sum((coefficient[a, b] * m.multipliers[b] for b in range(k)), sp.Integer(0)), right[a]) for a in range(k)
     ]
-    words = rf"\text{{{ON_PATH}}}" + r",\ ".join(where) + r"\text{:}"
+    # each position one group ({ξ=R cos αz}: its "=" is not where the row aligns, nor where a phone breaks it),
+    # a phone's line break allowed after each \quad between them (static/js/breaking.js)
+    words = rf"\text{{{ON_PATH}}}" + r",\quad ".join(f"{{{name}={value}}}" for name, value in where) + r"\text{:}"
     if width(words) > LIMIT:
         # too wide for one line: the words alone, then one position a line
-        return [_said(ON_PATH.rstrip(", ") + ":"), *(w.replace("=", " = ", 1) for w in where), *rows], equations
+        return [_said(ON_PATH.rstrip(", ") + ":"), *(f"{name} = {value}" for name, value in where), *rows], equations
     return [words, *rows], equations
 
 

@@ -195,7 +195,7 @@ def test_each_group_of_rows_for_the_multipliers_is_said_in_words():
         "differentiating each constraint twice:}",
         "the cross coefficient, zero here:}",
         r"so, for each }\lambda\text{ alone:}",
-        r"on the path, }\xi=R \cos {\alpha z},\ \eta=R \sin {\alpha z},\ \zeta=z\text{:}",
+        r"on the path, }{\xi=R \cos {\alpha z}},\quad {\eta=R \sin {\alpha z}},\quad {\zeta=z}\text{:}",
     ]
     # the words stand before what they say: the 𝒞̈ rows, the vanishing coefficient, the λ rows
     assert r"\ddot{\mathcal{C}}_{1}" in rows[rows.index(said[0]) + 1]
@@ -210,7 +210,7 @@ def test_the_helix_puts_its_equations_for_the_multipliers_on_the_path():
     follow to the solved step. The same equations follow with the positions on the wire written in, each side in
     its short form: (4R²/m) λ₁ = 2α²R²ż² and ((1 + α²R²)/m) λ₂ = gαR, from which each λ is one division."""
     rows = _multiplier_equation("helix-bead")["latex"].removesuffix(r"\end{aligned}").split(r" \\ ")
-    words = r"&\text{on the path, }\xi=R \cos {\alpha z},\ \eta=R \sin {\alpha z},\ \zeta=z\text{:}"
+    words = r"&\text{on the path, }{\xi=R \cos {\alpha z}},\quad {\eta=R \sin {\alpha z}},\quad {\zeta=z}\text{:}"
     assert rows[-3:] == [
         words,
         r"\frac{4 R^{2}}{m} \lambda_{1} &= 2 \alpha^{2} R^{2} \dot{z}^{2}",
@@ -218,13 +218,13 @@ def test_the_helix_puts_its_equations_for_the_multipliers_on_the_path():
     ]
     wire = _multiplier_equation("rotating-parabola")["latex"].removesuffix(r"\end{aligned}").split(r" \\ ")
     assert wire[-3:] == [
-        r"&\text{on the path, }x=\rho \cos {\omega t},\ y=\rho \sin {\omega t}\text{:}",
+        r"&\text{on the path, }{x=\rho \cos {\omega t}},\quad {y=\rho \sin {\omega t}}\text{:}",
         r"\frac{1 + 4 \alpha^{2} \rho^{2}}{m} \lambda_{1} &= 2 \alpha \dot{\rho}^{2} + 2 \alpha \omega^{2} \rho^{2} + g",
         r"\frac{\lambda_{2}}{m} &= 2 \omega \dot{\rho}",
     ]
     # the pendulum's height as its Positions step prints it, R(1 − cos θ)
     pendulum = _multiplier_equation("simple-pendulum")["latex"]
-    assert r"\text{on the path, }x=R \sin {\theta},\ z=R \left(1 - \cos {\theta}\right)\text{:}" in pendulum
+    assert r"\text{on the path, }{x=R \sin {\theta}},\quad {z=R \left(1 - \cos {\theta}\right)}\text{:}" in pendulum
     # the words say why, after the scene's own reason for the step
     said = _multiplier_equation("helix-bead")["explanation"]
     assert said.startswith("The cylinder's normal") and "λ follows from it by one division" in said
