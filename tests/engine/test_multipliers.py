@@ -257,3 +257,18 @@ def test_the_equations_on_the_path_give_the_solved_multipliers(scene_id):
         # no Cartesian letter is left: the equation is in the coordinates
         assert not equation.free_symbols & cartesian, (scene_id, equation)
         assert sp.simplify(equation.lhs.xreplace(solved) - equation.rhs) == 0, (scene_id, equation)
+
+
+def test_positions_too_wide_for_one_line_stand_one_a_line(monkeypatch):
+    """Where the words and the positions would be wider than a page, the words stand alone and each position has
+    its own row, aligned at its = with the equations."""
+    from app.engine import report_members
+    from app.engine.report import Printer
+
+    d = derive(SCENES["helix-bead"].system)
+    m = derived_multipliers(d, d.constraint_forces)
+    pr = Printer(d.table.latex_names())
+    lam = [r"\lambda_{1}", r"\lambda_{2}"]
+    monkeypatch.setattr(report_members, "LIMIT", 10.0)
+    rows, _ = report_members.on_path_equations(m, report_members._cartesian_printer(m, pr), pr, lam)
+    assert rows[:4] == [r"\text{on the path:}", r"\xi = R \cos {\alpha z}", r"\eta = R \sin {\alpha z}", r"\zeta = z"]
