@@ -63,11 +63,23 @@ def use_names(names: Mapping[sp.Symbol, str]) -> None:
     _local.names = names
 
 
+def _remember(key: tuple[sp.Expr, frozenset[sp.Symbol]], form: sp.Expr) -> None:
+    """``form`` stored for ``key``; when the store is full, its oldest entry gives way, so that a form just
+    settled is always found again (a long-lived process fills the store: refused, a settled form was formed
+    again, and a momentum printed m ṙ(…) where its step had just built m r² θ̈ + 2 m r ṙ θ̇)."""
+    while key not in _CACHE and len(_CACHE) >= _CACHE_SIZE:
+        try:
+            del _CACHE[next(iter(_CACHE))]
+        except (KeyError, RuntimeError, StopIteration):  # another thread took it first
+            break
+    _CACHE[key] = form
+
+
 def settle(form: sp.Expr, names: Mapping[sp.Symbol, str] | None = None) -> sp.Expr:
     """Declare ``form`` a textbook form as it stands (h and E built from T's and U's forms): forming it
     again returns it unchanged."""
-    if isinstance(form, sp.Expr) and len(_CACHE) < _CACHE_SIZE:
-        _CACHE[(form, frozenset(moving_symbols(form, names)))] = form
+    if isinstance(form, sp.Expr):
+        _remember((form, frozenset(moving_symbols(form, names))), form)
     return form
 
 
@@ -632,8 +644,7 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, units
         best[0] = fallback
     # quotients as a textbook writes them: each term over its own denominator, no fraction in a denominator
     found = mass_out(textbook_quotients(like_terms_added(best[0], moving), moving))
-    if len(_CACHE) < _CACHE_SIZE:
-        _CACHE[key] = found
+    _remember(key, found)
     return settle(found, names)  # a form, formed again, stays as it is
 
 

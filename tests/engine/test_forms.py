@@ -137,3 +137,18 @@ def test_a_mass_times_one_plus_more_is_taken_out_within_a_sum_too():
     # a sum with nothing to take out is the same object
     plain = m1 * add + m2 * ad**2
     assert forms.mass_out(plain) is plain
+
+
+def test_a_settled_form_is_found_again_when_the_store_is_full(monkeypatch):
+    """A long-lived process fills the store of forms: a form settled then must still be the one printed (the
+    tabletop spring's d/dt ∂L/∂θ̇ = m r² θ̈ + 2 m r ṙ θ̇ was formed again into m r(r θ̈ + 2 ṙ θ̇) once it was full)."""
+    monkeypatch.setattr(forms, "_CACHE", {})
+    monkeypatch.setattr(forms, "_CACHE_SIZE", 3)
+    for k in range(1, 5):
+        textbook_form(k * m1 * ad**2 + a, NAMES)
+    assert len(forms._CACHE) == 3
+    # as built, not as the search would write it: m₁ a ȧ² + 2 m₁ a² ä, never m₁ a(ȧ² + 2 a ä)
+    built = sp.Add(m1 * a * ad**2, 2 * m1 * a**2 * add)
+    assert forms.settle(built, NAMES) is built
+    assert textbook_form(built, NAMES) is built
+    assert len(forms._CACHE) == 3
