@@ -172,8 +172,13 @@ class _Printer(LatexPrinter):
 
     # --- products --------------------------------------------------------------
     def _wrap(self, f: sp.Expr) -> str:
-        text = self._print(f)
-        return rf"\left({text}\right)" if isinstance(f, sp.Add) else text
+        if not isinstance(f, sp.Add):
+            return self._print(f)
+        outer, self.bracket = getattr(self, "bracket", False), True
+        try:
+            return rf"\left({self._print(f)}\right)"
+        finally:
+            self.bracket = outer
 
     def ordered_factors(self, factors: Sequence[sp.Expr]) -> list[sp.Expr]:
         """The factors of a product in the order the page prints them (the running text's too): m g R sin θ."""
@@ -236,6 +241,11 @@ class _Printer(LatexPrinter):
             return (lead + self._product(num)).strip() or "1"
         if self.depth > 0:
             return self._slashed(p, q, num, den)
+        if getattr(self, "bracket", False) and p == 1 and q == 2 and not den and len(num) == 1 and self.constant(num[0]):
+            # half of one parameter's power within a bracket as a textbook writes it: m(gα − ½ω²)ρ²
+            base = num[0].base if num[0].is_Pow else num[0]
+            if base.is_Symbol and not _MASS.fullmatch(base.name):
+                return rf"\tfrac{{1}}{{2}} {self._print(num[0])}"
         const_num = [f for f in num if self.constant(f)]
         const_den = [f for f in den if self.constant(f)]
         moving_den = [f for f in den if not self.constant(f)]

@@ -107,7 +107,11 @@ def test_a_mass_comes_before_a_bracket_of_other_parameters():
     """prof-n 6: the helix printed ½(1 + α²R²) m ż², computer-algebra order; a textbook writes ½ m(1 + α²R²) ż².
     A bracket that holds a mass still leads: (m₁ + m₂) g l₁."""
     assert tex((1 + g * R**2) * m * thd**2 / 2) == r"\frac{1}{2} m \left(1 + g R^{2}\right) \dot{\theta}^{2}"
-    assert tex((g - b**2 / 2) * m * theta**2) == r"m \left(g - \frac{b^{2}}{2}\right) \theta^{2}"
+    # half a parameter's square within the bracket as a textbook writes it: m(g − ½b²)θ², not m(g − b²/2)θ²;
+    # a mass's half, and a half of a product, keep their bar: (m₁ + M/4)
+    assert tex((g - b**2 / 2) * m * theta**2) == r"m \left(g - \tfrac{1}{2} b^{2}\right) \theta^{2}"
+    assert tex((g - m / 2) * theta) == r"\left(g - \frac{m}{2}\right) \theta"
+    assert tex((g - b * R / 2) * theta) == r"\left(g - \frac{b R}{2}\right) \theta"
     assert tex((m + b) * g * R) == r"\left(m + b\right) g R"
 
 

@@ -314,7 +314,10 @@ def test_the_helix_and_the_wire_print_each_inertia_in_one_form():
     ]
     assert wire["mass-matrix"][0] == rf"\mathcal{{M}} = {inertia}"
     assert wire["momenta"] == [rf"p_{{\rho}} = {inertia} \dot{{\rho}}"]
-    assert wire["effective-potential"][1] == rf"m_\text{{eff}} = {inertia}"
+    assert wire["effective-potential"] == [
+        r"U_\text{eff}(\rho) = m \left(g \alpha - \tfrac{1}{2} \omega^{2}\right) \rho^{2}",
+        rf"m_\text{{eff}} = {inertia}",
+    ]
     assert wire["energy-integral"][0].startswith(rf"h = \frac{{1}}{{2}} {inertia} \dot{{\rho}}^{{2}} + ")
 
 
