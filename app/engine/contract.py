@@ -30,7 +30,14 @@ from app.engine.report import (
     shown_accelerations,
 )
 from app.engine.report import display as _show
-from app.engine.report_members import GREEK_CLAUSE, NORMALS_CLAUSE, constraint_steps, new_lagrangian, transform_steps
+from app.engine.report_members import (
+    GREEK_CLAUSE,
+    NORMALS_CLAUSE,
+    ON_PATH_CLAUSE,
+    constraint_steps,
+    new_lagrangian,
+    transform_steps,
+)
 from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
 from app.engine.rods import fixed_distances
 from app.engine.root_forms import power_form, trig_cancelled
@@ -337,6 +344,9 @@ def explained(scene: Scene, steps: list[dict[str, Any]]) -> list[dict[str, Any]]
         # so is whether the equations for the multipliers are coupled (from their cross coefficients)
         if NORMALS_CLAUSE in engine and NORMALS_CLAUSE not in text:
             text = f"{text} {engine[engine.index(NORMALS_CLAUSE) :]}"
+        # and that the equations put on the path give each λ by one division (where the step puts them there)
+        if ON_PATH_CLAUSE in engine and ON_PATH_CLAUSE not in text:
+            text = f"{text} {engine[engine.index(ON_PATH_CLAUSE) :]}"
         out.append({**s, "explanation": text})
     return out
 

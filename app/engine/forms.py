@@ -63,11 +63,23 @@ def use_names(names: Mapping[sp.Symbol, str]) -> None:
     _local.names = names
 
 
+def _remember(key: tuple[sp.Expr, frozenset[sp.Symbol]], form: sp.Expr) -> None:
+    """``form`` stored for ``key``; when the store is full, its oldest entry gives way, so that a form just
+    settled is always found again (a long-lived process fills the store: refused, a settled form was formed
+    again, and a momentum printed m ṙ(…) where its step had just built m r² θ̈ + 2 m r ṙ θ̇)."""
+    while key not in _CACHE and len(_CACHE) >= _CACHE_SIZE:
+        try:
+            del _CACHE[next(iter(_CACHE))]
+        except (KeyError, RuntimeError, StopIteration):  # another thread took it first
+            break
+    _CACHE[key] = form
+
+
 def settle(form: sp.Expr, names: Mapping[sp.Symbol, str] | None = None) -> sp.Expr:
     """Declare ``form`` a textbook form as it stands (h and E built from T's and U's forms): forming it
     again returns it unchanged."""
-    if isinstance(form, sp.Expr) and len(_CACHE) < _CACHE_SIZE:
-        _CACHE[(form, frozenset(moving_symbols(form, names)))] = form
+    if isinstance(form, sp.Expr):
+        _remember((form, frozenset(moving_symbols(form, names))), form)
     return form
 
 
@@ -114,7 +126,9 @@ _MASS_NAME = re.compile(r"(m|M|mu)\d*")
 
 def mass_out(expr: sp.Expr) -> sp.Expr:
     """A sum every term of which holds one mass, with one term the mass alone, written as that mass times
-    (1 + …), as a textbook writes it: m + mα²R² is m(1 + α²R²), 4mα²ρ² + m is m(1 + 4α²ρ²). Anything else as it is."""
+    (1 + …), as a textbook writes it: m + mα²R² is m(1 + α²R²), 4mα²ρ² + m is m(1 + 4α²ρ²). Anything else as it
+    is, its products' and its sums' members taken the same way: (4mα²ρ² + m) ρ̈ + 8mα²ρρ̇² is
+    m(1 + 4α²ρ²) ρ̈ + 8mα²ρρ̇²."""
     if isinstance(expr, sp.Mul):
         # each constant bracket of a product too: (m + mα²R²) z̈ is m(1 + α²R²) z̈
         held = [mass_out(f) for f in expr.args]
@@ -126,10 +140,14 @@ def mass_out(expr: sp.Expr) -> sp.Expr:
     # m + m a = m (1 + a): the common factor taken out of every term
     content, inner = sp.factor_terms(expr).as_coeff_Mul()
     common, bracket = inner.as_independent(sp.Add, as_Add=False) if inner.is_Mul else (sp.Integer(1), inner)
-    if not (isinstance(bracket, sp.Add) and common.is_Symbol and _MASS_NAME.fullmatch(common.name)):
-        return expr
-    if sp.Integer(1) not in bracket.args:
-        return expr
+    if not (isinstance(bracket, sp.Add) and common.is_Symbol and _MASS_NAME.fullmatch(common.name)) or (
+        sp.Integer(1) not in bracket.args
+    ):
+        # not itself a mass times (1 + …): each of its terms taken the same way
+        terms = [mass_out(t) for t in expr.args]
+        if all(h is t for h, t in zip(terms, expr.args, strict=True)):
+            return expr
+        return sp.Add(*terms, evaluate=False)
     return sp.Mul(content, common, bracket, evaluate=False) if content != 1 else sp.Mul(common, bracket, evaluate=False)
 
 
@@ -626,8 +644,7 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, units
         best[0] = fallback
     # quotients as a textbook writes them: each term over its own denominator, no fraction in a denominator
     found = mass_out(textbook_quotients(like_terms_added(best[0], moving), moving))
-    if len(_CACHE) < _CACHE_SIZE:
-        _CACHE[key] = found
+    _remember(key, found)
     return settle(found, names)  # a form, formed again, stays as it is
 
 

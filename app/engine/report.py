@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -242,8 +243,26 @@ def energies(d: Derivation, pr: Printer) -> tuple[sp.Expr, sp.Expr]:
 
 
 def momentum(d: Derivation, k: int) -> sp.Expr:
-    """The k-th generalized momentum grouped by velocity, each coefficient factored: (M + m)Ẋ + mḊ cos α."""
-    return display(meaning.by_velocity(d.equations.momenta[k], d.table.qd))
+    """The k-th generalized momentum, ∂L/∂q̇ₖ, grouped by velocity: (M + m)Ẋ + mḊ cos α (``by_inertia``)."""
+    return by_inertia(d, d.equations.momenta[k], d.table.qd)
+
+
+def by_inertia(d: Derivation, expr: sp.Expr, rates: Sequence[sp.Symbol]) -> sp.Expr:
+    """A momentum pₖ = Σⱼ 𝓜ₖⱼ q̇ⱼ + …, or its rate of change Σⱼ 𝓜ₖⱼ q̈ⱼ + …, grouped by ``rates`` with each
+    coefficient, an entry of the mass matrix, in the form the mass matrix step prints it: one factor in one form
+    throughout a derivation, m(1 + 4α²ρ²) ρ̇ and m(1 + 4α²ρ²) ρ̈ + 8mα²ρρ̇² beside 𝓜 = m(1 + 4α²ρ²). An
+    expression not linear in them, or too large, in its own textbook form."""
+    grouped = meaning.by_velocity(expr, rates)
+    if grouped is expr:
+        return display(expr)
+    expanded = sp.expand(expr)
+    held = [s for s in rates if expanded.has(s)]
+    # pₖ = Σⱼ (∂pₖ/∂q̇ⱼ) q̇ⱼ + pₖ(q̇ = 0), each ∂pₖ/∂q̇ⱼ = 𝓜ₖⱼ formed as the mass matrix's entry is
+    coefficients = [sp.diff(expanded, s) for s in held]
+    rest = sp.expand(expanded - sum((c * s for c, s in zip(coefficients, held, strict=True)), sp.Integer(0)))
+    terms = [display(c) * s for c, s in zip(coefficients, held, strict=True)]
+    # the form is kept as built: formed again, it would be multiplied out (mρ̇ + 4mα²ρ²ρ̇)
+    return settle(sp.Add(*terms, display(rest)), d.table.latex_names())
 
 
 def effective_potential(d: Derivation) -> sp.Expr:
@@ -494,17 +513,20 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
     )
 
     for k, name in enumerate(table.names):
-        g, p, dp = eqs.dL_dq[k], eqs.momenta[k], eqs.ddt_momenta[k]
+        g = eqs.dL_dq[k]
+        # d/dt ∂L/∂q̇ = Σⱼ 𝓜ₖⱼ q̈ⱼ + …, its inertia printed as the momentum's
+        rate_of_momentum = by_inertia(d, eqs.ddt_momenta[k], table.qdd)
         steps.append(
             _step(
                 f"derivatives:{name}",
                 f"Derivatives for {plain_name(name)}",
                 [
                     rf"\frac{{\partial L}}{{\partial {qn[k]}}} = {pr.tex(display(g))}",
-                    rf"\frac{{\partial L}}{{\partial {qdn[k]}}} = {pr.tex(display(p))}",
-                    rf"\frac{{d}}{{dt}}\left(\frac{{\partial L}}{{\partial {qdn[k]}}}\right) = {pr.tex(display(dp))}",
+                    # ∂L/∂q̇ is the momentum: printed in its form, m(1 + 4α²ρ²) ρ̇, not mρ̇ + 4mα²ρ²ρ̇
+                    rf"\frac{{\partial L}}{{\partial {qdn[k]}}} = {pr.tex(momentum(d, k))}",
+                    rf"\frac{{d}}{{dt}}\left(\frac{{\partial L}}{{\partial {qdn[k]}}}\right) = {pr.tex(rate_of_momentum)}",
                 ],
-                [display(g), display(p), display(dp)],
+                [display(g), momentum(d, k), rate_of_momentum],
                 "The two partial derivatives the Euler–Lagrange equation needs, and the total time derivative of the second.",
             )
         )

@@ -14,7 +14,7 @@ from app.engine.forms import gathered
 from app.engine.multipliers import Multipliers, derived_multipliers
 from app.engine.names import latex
 from app.engine.notation import CONSTRAINT
-from app.engine.report import Printer, _mapping_step, _step, display
+from app.engine.report import Printer, _common_factor, _mapping_step, _step, display
 from app.engine.transform import Transformed, collected, compact
 
 
@@ -84,6 +84,7 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
         for a in range(k)
     ]
     normal = [_right(cp, head, gathered(m.right[a])) for a, head in enumerate(normal)]
+    path, on_path = on_path_equations(m, cp, pr, lam)
     positive = constraint_positive(d)
     solved = [constraint_display(e, positive) for e in m.solved]
     return [
@@ -118,11 +119,19 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
             + ([_said(f"the cross coefficient{'s' if len(zero) > 1 else ''}, zero here:")] if zero else [])
             + zero
             + [_said(_left_for(k, bool(cross) and not on_motion))]
-            + normal,
-            [*m.twice, *m.right],
+            + normal
+            + path,
+            [*m.twice, *m.right, *on_path],
             "The constraint holds at every instant, so its second time derivative vanishes. Putting r̈ from "
             "Newton's law into it keeps only the component of the equations along ∇𝒞: an equation for λ alone, "
-            "with no acceleration left." + (" " + _coupling_sentence(bool(cross), on_motion) if k > 1 else ""),
+            "with no acceleration left."
+            + (" " + _coupling_sentence(bool(cross), on_motion) if k > 1 else "")
+            + (
+                f" {ON_PATH_CLAUSE} the coordinates fix written in, each equation takes its short form, and λ "
+                "follows from it by one division."
+                if on_path
+                else ""
+            ),
         ),
         _step(
             "multiplier",
@@ -177,6 +186,52 @@ def _left_for(k: int, coupled: bool) -> str:
     if k == 1:
         return r"so for }\lambda_1\text{ alone:"
     return "so, for the multipliers together:" if coupled else r"so, for each }\lambda\text{ alone:"
+
+
+# the words before the equations for the multipliers put on the path, where the positions the coordinates fix are
+# written in for the Cartesian ones; and the sentence that says so, which a scene's own reason for the step keeps
+# (contract.explained)
+ON_PATH = "on the path, "
+ON_PATH_CLAUSE = "On the path, with the positions"
+
+
+def on_path_equations(m: Multipliers, cp: Printer, pr: Printer, lam: list[str]) -> tuple[list[str], list[sp.Eq]]:
+    """The equations for the multipliers once more, on the path: where they hold a Cartesian position or velocity,
+    each is written with the positions the coordinates fix (ξ = R cos αz, η = R sin αz, ζ = z on the helix, and
+    their rates), each side in its textbook form, so that the solved λ follows in one line:
+    (4R²/m) λ₁ = 2α²R²ż².  No rows where the equations hold none (the pulley's, the wedge's).  The rows, and the
+    equations they print (Σ_b coefficient λ_b = right side)."""
+    k = len(lam)
+    cartesian = set(m.positions) | set(m.velocities)
+    held = set().union(*(e.free_symbols for e in (*m.normal, *m.right)))
+    if not held & cartesian:
+        return [], []
+    # the positions shown: those whose letter, or whose rate, the equations hold, each as the Positions step
+    # prints it (R(1 − cos θ), not −R cos θ + R)
+    shown = [s for s, v in zip(m.positions, m.velocities, strict=True) if {s, v} & held]
+    where = [(cp.tex(s), pr.tex(_common_factor(m.on_motion[s]))) for s in shown]
+    # Σ_b (Σ_i ∇_i𝒞_a · ∇_i𝒞_b / m_i) λ_b = Σ_i ∇_i𝒞_a · (∇_i U − F_i)/m_i − c_a, with r_i = r_i(q, t) and
+    # ṙ_i = ṙ_i(q, q̇, t) put in: a cross coefficient that vanishes on the motion is left out, as above
+    coefficient = m.normal.applyfunc(lambda e: sp.simplify(e.xreplace(m.on_motion)))
+    right = [sp.simplify(m.right[a].xreplace(m.on_motion)) for a in range(k)]
+    rows = [
+        _right(
+            pr,
+            _terms([(_factor(pr, display(coefficient[a, b])), lam[b]) for b in range(k) if coefficient[a, b] != 0]),
+            display(right[a]),
+        )
+        for a in range(k)
+    ]
+    equations = [
+        sp.Eq(sum((coefficient[a, b] * m.multipliers[b] for b in range(k)), sp.Integer(0)), right[a]) for a in range(k)
+    ]
+    # each position one group ({ξ=R cos αz}: its "=" is not where the row aligns, nor where a phone breaks it),
+    # a phone's line break allowed after each \quad between them (static/js/breaking.js)
+    words = rf"\text{{{ON_PATH}}}" + r",\quad ".join(f"{{{name}={value}}}" for name, value in where) + r"\text{:}"
+    if width(words) > LIMIT:
+        # too wide for one line: the words alone, then one position a line
+        return [_said(ON_PATH.rstrip(", ") + ":"), *(f"{name} = {value}" for name, value in where), *rows], equations
+    return [words, *rows], equations
 
 
 def _vanishing(cp: Printer, c: sp.Expr, m: Multipliers) -> str:

@@ -48,6 +48,12 @@ def _acceleration(f: sp.Expr) -> bool:
     return bool(base.is_Symbol and _level(base) == 2)
 
 
+def _rate(f: sp.Expr) -> bool:
+    """A velocity or an acceleration (θ̇, θ̈), or a power of one."""
+    base = f.base if f.is_Pow else f
+    return bool(base.is_Symbol and _level(base) >= 1)
+
+
 def _parameter_rank(name: str) -> tuple[int, str, str]:
     rank = 0 if _MASS.fullmatch(name) else _FIRST.get(name, 3)
     return rank, name.lower(), name
@@ -166,15 +172,24 @@ class _Printer(LatexPrinter):
 
     # --- products --------------------------------------------------------------
     def _wrap(self, f: sp.Expr) -> str:
-        text = self._print(f)
-        return rf"\left({text}\right)" if isinstance(f, sp.Add) else text
+        if not isinstance(f, sp.Add):
+            return self._print(f)
+        outer, self.bracket = getattr(self, "bracket", False), True
+        try:
+            return rf"\left({self._print(f)}\right)"
+        finally:
+            self.bracket = outer
 
     def ordered_factors(self, factors: Sequence[sp.Expr]) -> list[sp.Expr]:
         """The factors of a product in the order the page prints them (the running text's too): m g R sin θ."""
         ordered = sorted(factors, key=self._factor_key)
-        if any(isinstance(f, sp.Add) and not self.constant(f) for f in ordered):
-            # an acceleration after a coefficient that moves, as a textbook writes it: (1 + 4α²ρ²) ρ̈
-            ordered = [f for f in ordered if not _acceleration(f)] + [f for f in ordered if _acceleration(f)]
+        brackets = [f for f in ordered if isinstance(f, sp.Add) and not self.constant(f)]
+        if brackets:
+            # an acceleration after a coefficient that moves, as a textbook writes it: (1 + 4α²ρ²) ρ̈; and a
+            # velocity after one that holds positions only, an inertia that varies, m(1 + 4α²ρ²) ρ̇, as
+            # ½ m(1 + 4α²ρ²) ρ̇² (a bracket holding a rate keeps its place after it: ρ(ω² − 4α²ρ̇²))
+            last = _rate if all(self.level(f) == 0 for f in brackets) else _acceleration
+            ordered = [f for f in ordered if not last(f)] + [f for f in ordered if last(f)]
         if (
             len(ordered) == 2 and isinstance(ordered[0], sp.Add) and self.constant(ordered[0])
             and ordered[1].is_Symbol and ordered[1] not in self.moving and _MASS.fullmatch(ordered[1].name)
@@ -226,6 +241,11 @@ class _Printer(LatexPrinter):
             return (lead + self._product(num)).strip() or "1"
         if self.depth > 0:
             return self._slashed(p, q, num, den)
+        if getattr(self, "bracket", False) and p == 1 and q == 2 and not den and len(num) == 1 and self.constant(num[0]):
+            # half of one parameter's power within a bracket as a textbook writes it: m(gα − ½ω²)ρ²
+            base = num[0].base if num[0].is_Pow else num[0]
+            if base.is_Symbol and not _MASS.fullmatch(base.name):
+                return rf"\tfrac{{1}}{{2}} {self._print(num[0])}"
         const_num = [f for f in num if self.constant(f)]
         const_den = [f for f in den if self.constant(f)]
         moving_den = [f for f in den if not self.constant(f)]

@@ -124,3 +124,31 @@ def test_a_sum_that_is_a_mass_times_one_plus_more_is_printed_factored():
     assert isinstance(coordinate, sp.Mul) and M in coordinate.args, coordinate
     # two masses share nothing to take out: m₁ + m₂ stays
     assert textbook_form(m1 + m2 * a**2, NAMES) == m1 + m2 * a**2
+
+
+def test_a_mass_times_one_plus_more_is_taken_out_within_a_sum_too():
+    """prof-n 6: the rotating wire printed d/dt ∂L/∂ρ̇ = (4mα²ρ² + m) ρ̈ + 8mα²ρρ̇²: the rule that writes
+    4mα²ρ² + m as m(1 + 4α²ρ²) reaches each term of a sum."""
+    expr = (4 * M * l1**2 * a**2 + M) * add + 8 * M * l1**2 * a * ad**2
+    shown = forms.mass_out(expr)
+    _equal(shown, expr)
+    inertia = next(t for t in sp.Add.make_args(shown) if t.has(add))
+    assert M in sp.Mul.make_args(inertia) and sp.Add(1, 4 * l1**2 * a**2) in sp.Mul.make_args(inertia), shown
+    # a sum with nothing to take out is the same object
+    plain = m1 * add + m2 * ad**2
+    assert forms.mass_out(plain) is plain
+
+
+def test_a_settled_form_is_found_again_when_the_store_is_full(monkeypatch):
+    """A long-lived process fills the store of forms: a form settled then must still be the one printed (the
+    tabletop spring's d/dt ∂L/∂θ̇ = m r² θ̈ + 2 m r ṙ θ̇ was formed again into m r(r θ̈ + 2 ṙ θ̇) once it was full)."""
+    monkeypatch.setattr(forms, "_CACHE", {})
+    monkeypatch.setattr(forms, "_CACHE_SIZE", 3)
+    for k in range(1, 5):
+        textbook_form(k * m1 * ad**2 + a, NAMES)
+    assert len(forms._CACHE) == 3
+    # as built, not as the search would write it: m₁ a ȧ² + 2 m₁ a² ä, never m₁ a(ȧ² + 2 a ä)
+    built = sp.Add(m1 * a * ad**2, 2 * m1 * a**2 * add)
+    assert forms.settle(built, NAMES) is built
+    assert textbook_form(built, NAMES) is built
+    assert len(forms._CACHE) == 3

@@ -195,6 +195,7 @@ def test_each_group_of_rows_for_the_multipliers_is_said_in_words():
         "differentiating each constraint twice:}",
         "the cross coefficient, zero here:}",
         r"so, for each }\lambda\text{ alone:}",
+        r"on the path, }{\xi=R \cos {\alpha z}},\quad {\eta=R \sin {\alpha z}},\quad {\zeta=z}\text{:}",
     ]
     # the words stand before what they say: the 𝒞̈ rows, the vanishing coefficient, the λ rows
     assert r"\ddot{\mathcal{C}}_{1}" in rows[rows.index(said[0]) + 1]
@@ -202,3 +203,72 @@ def test_each_group_of_rows_for_the_multipliers_is_said_in_words():
     assert r"\lambda_{1}" in rows[rows.index(said[2]) + 1]
     wedge = _multiplier_equation("movable-incline")["latex"]
     assert r"\text{so, for the multipliers together:}" in wedge
+
+
+def test_the_helix_puts_its_equations_for_the_multipliers_on_the_path():
+    """prof-n 3: the helix ended its step on the Cartesian equations for λ₁ and λ₂, five lines a student cannot
+    follow to the solved step. The same equations follow with the positions on the wire written in, each side in
+    its short form: (4R²/m) λ₁ = 2α²R²ż² and ((1 + α²R²)/m) λ₂ = gαR, from which each λ is one division."""
+    rows = _multiplier_equation("helix-bead")["latex"].removesuffix(r"\end{aligned}").split(r" \\ ")
+    words = r"&\text{on the path, }{\xi=R \cos {\alpha z}},\quad {\eta=R \sin {\alpha z}},\quad {\zeta=z}\text{:}"
+    assert rows[-3:] == [
+        words,
+        r"\frac{4 R^{2}}{m} \lambda_{1} &= 2 \alpha^{2} R^{2} \dot{z}^{2}",
+        r"\frac{1 + \alpha^{2} R^{2}}{m} \lambda_{2} &= g \alpha R",
+    ]
+    wire = _multiplier_equation("rotating-parabola")["latex"].removesuffix(r"\end{aligned}").split(r" \\ ")
+    assert wire[-3:] == [
+        r"&\text{on the path, }{x=\rho \cos {\omega t}},\quad {y=\rho \sin {\omega t}}\text{:}",
+        r"\frac{1 + 4 \alpha^{2} \rho^{2}}{m} \lambda_{1} &= 2 \alpha \dot{\rho}^{2} + 2 \alpha \omega^{2} \rho^{2} + g",
+        r"\frac{\lambda_{2}}{m} &= 2 \omega \dot{\rho}",
+    ]
+    # the pendulum's height as its Positions step prints it, R(1 − cos θ)
+    pendulum = _multiplier_equation("simple-pendulum")["latex"]
+    assert r"\text{on the path, }{x=R \sin {\theta}},\quad {z=R \left(1 - \cos {\theta}\right)}\text{:}" in pendulum
+    # the words say why, after the scene's own reason for the step
+    said = _multiplier_equation("helix-bead")["explanation"]
+    assert said.startswith("The cylinder's normal") and "λ follows from it by one division" in said
+    # the pulley's and the wedge's equations hold no position: nothing to put on the path
+    for scene_id in ("pulley", "movable-incline"):
+        step = _multiplier_equation(scene_id)
+        assert "on the path" not in step["latex"] and "On the path" not in step["explanation"]
+
+
+@pytest.mark.parametrize("scene_id", CONSTRAINED)
+def test_the_equations_on_the_path_give_the_solved_multipliers(scene_id):
+    """Each equation on the path, Σ_b coefficient λ_b = right side, holds with the solved λ's put in: its right
+    side is the solved λ times its coefficient."""
+    from app.engine.report import Printer
+    from app.engine.report_members import _cartesian_printer, on_path_equations
+
+    d = derive(SCENES[scene_id].system)
+    m = derived_multipliers(d, d.constraint_forces)
+    pr = Printer(d.table.latex_names())
+    lam = [f"\\lambda_{{{a}}}" for a in range(1, len(m.multipliers) + 1)]
+    rows, equations = on_path_equations(m, _cartesian_printer(m, pr), pr, lam)
+    if scene_id in ("pulley", "movable-incline", "incline-block"):
+        assert rows == [] and equations == []
+        return
+    assert len(equations) == len(m.multipliers) and len(rows) == len(equations) + 1
+    solved = dict(zip(m.multipliers, m.solved, strict=True))
+    # (a Cartesian letter that is also a coordinate, the helix's z, stays)
+    cartesian = (set(m.positions) | set(m.velocities)) - {*d.table.q, *d.table.qd}
+    for equation in equations:
+        # no Cartesian letter is left: the equation is in the coordinates
+        assert not equation.free_symbols & cartesian, (scene_id, equation)
+        assert sp.simplify(equation.lhs.xreplace(solved) - equation.rhs) == 0, (scene_id, equation)
+
+
+def test_positions_too_wide_for_one_line_stand_one_a_line(monkeypatch):
+    """Where the words and the positions would be wider than a page, the words stand alone and each position has
+    its own row, aligned at its = with the equations."""
+    from app.engine import report_members
+    from app.engine.report import Printer
+
+    d = derive(SCENES["helix-bead"].system)
+    m = derived_multipliers(d, d.constraint_forces)
+    pr = Printer(d.table.latex_names())
+    lam = [r"\lambda_{1}", r"\lambda_{2}"]
+    monkeypatch.setattr(report_members, "LIMIT", 10.0)
+    rows, _ = report_members.on_path_equations(m, report_members._cartesian_printer(m, pr), pr, lam)
+    assert rows[:4] == [r"\text{on the path:}", r"\xi = R \cos {\alpha z}", r"\eta = R \sin {\alpha z}", r"\zeta = z"]

@@ -107,5 +107,20 @@ def test_a_mass_comes_before_a_bracket_of_other_parameters():
     """prof-n 6: the helix printed ½(1 + α²R²) m ż², computer-algebra order; a textbook writes ½ m(1 + α²R²) ż².
     A bracket that holds a mass still leads: (m₁ + m₂) g l₁."""
     assert tex((1 + g * R**2) * m * thd**2 / 2) == r"\frac{1}{2} m \left(1 + g R^{2}\right) \dot{\theta}^{2}"
-    assert tex((g - b**2 / 2) * m * theta**2) == r"m \left(g - \frac{b^{2}}{2}\right) \theta^{2}"
+    # half a parameter's square within the bracket as a textbook writes it: m(g − ½b²)θ², not m(g − b²/2)θ²;
+    # a mass's half, and a half of a product, keep their bar: (m₁ + M/4)
+    assert tex((g - b**2 / 2) * m * theta**2) == r"m \left(g - \tfrac{1}{2} b^{2}\right) \theta^{2}"
+    assert tex((g - m / 2) * theta) == r"\left(g - \frac{m}{2}\right) \theta"
+    assert tex((g - b * R / 2) * theta) == r"\left(g - \frac{b R}{2}\right) \theta"
     assert tex((m + b) * g * R) == r"\left(m + b\right) g R"
+
+
+def test_a_velocity_comes_after_an_inertia_that_varies():
+    """prof-n 6: the rotating wire printed p_ρ = m ρ̇ (1 + 4α²ρ²) beside 𝓜 = m(1 + 4α²ρ²). A bracket that holds
+    positions only is an inertia: the velocity it multiplies comes after it, as the acceleration does. A bracket
+    that holds a rate keeps its place after the rates."""
+    inertia = 1 + 4 * b**2 * theta**2
+    assert tex(m * inertia * thd) == r"m \left(1 + 4 b^{2} \theta^{2}\right) \dot{\theta}"
+    assert tex(m * inertia * thd**2 / 2) == r"\frac{1}{2} m \left(1 + 4 b^{2} \theta^{2}\right) \dot{\theta}^{2}"
+    assert tex(m * inertia * thdd) == r"m \left(1 + 4 b^{2} \theta^{2}\right) \ddot{\theta}"
+    assert tex(m * theta * (g - thd**2)) == r"m \theta \left(g - \dot{\theta}^{2}\right)"

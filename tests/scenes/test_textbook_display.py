@@ -282,3 +282,52 @@ def test_a_runaway_says_its_rate_in_closed_form():
         s for s in derivation_document("physical-pendulum")["steps"] if s["title"] == "No oscillation about θ = π"
     ]
     assert "it grows exponentially at the rate √(3g/(2l)) instead of oscillating" in step["explanation"]
+
+
+def _rows(scene_id: str) -> dict[str, list[str]]:
+    """Each step's rows without their alignment marks."""
+    steps = derivation_document(scene_id)["steps"]
+    return {
+        s["key"]: s["latex"].removeprefix(r"\begin{aligned}").removesuffix(r"\end{aligned}").replace("&", "").split(r" \\ ")
+        for s in steps
+    }
+
+
+def test_the_helix_and_the_wire_print_each_inertia_in_one_form():
+    """prof-n 6: one factor in one form throughout a derivation, a mass first and then its bracket: the wire printed
+    ∂L/∂ρ̇ = mρ̇ + 4mα²ρ²ρ̇, (4mα²ρ² + m) ρ̈ and p_ρ = m ρ̇ (1 + 4α²ρ²) beside 𝓜 = m(1 + 4α²ρ²)."""
+    helix = _rows("helix-bead")
+    inertia = r"m \left(1 + \alpha^{2} R^{2}\right)"
+    assert helix["kinetic"] == [rf"T = \frac{{1}}{{2}} {inertia} \dot{{z}}^{{2}}"]
+    assert helix["derivatives:z"][1:] == [
+        rf"\frac{{\partial L}}{{\partial \dot{{z}}}} = {inertia} \dot{{z}}",
+        rf"\frac{{d}}{{dt}}\left(\frac{{\partial L}}{{\partial \dot{{z}}}}\right) = {inertia} \ddot{{z}}",
+    ]
+    assert helix["mass-matrix"][0] == rf"\mathcal{{M}} = {inertia}"
+    assert helix["momenta"] == [rf"p_{{z}} = {inertia} \dot{{z}}"]
+    wire = _rows("rotating-parabola")
+    inertia = r"m \left(1 + 4 \alpha^{2} \rho^{2}\right)"
+    assert wire["derivatives:rho"][1:] == [
+        rf"\frac{{\partial L}}{{\partial \dot{{\rho}}}} = {inertia} \dot{{\rho}}",
+        rf"\frac{{d}}{{dt}}\left(\frac{{\partial L}}{{\partial \dot{{\rho}}}}\right) = {inertia} \ddot{{\rho}} "
+        r"+ 8 m \alpha^{2} \rho \dot{\rho}^{2}",
+    ]
+    assert wire["mass-matrix"][0] == rf"\mathcal{{M}} = {inertia}"
+    assert wire["momenta"] == [rf"p_{{\rho}} = {inertia} \dot{{\rho}}"]
+    assert wire["effective-potential"] == [
+        r"U_\text{eff}(\rho) = m \left(g \alpha - \tfrac{1}{2} \omega^{2}\right) \rho^{2}",
+        rf"m_\text{{eff}} = {inertia}",
+    ]
+    assert wire["energy-integral"][0].startswith(rf"h = \frac{{1}}{{2}} {inertia} \dot{{\rho}}^{{2}} + ")
+
+
+def test_a_momentum_and_its_rate_print_the_mass_matrix_entries():
+    """∂L/∂q̇ₖ = Σⱼ 𝓜ₖⱼ q̇ⱼ + …: each coefficient as the mass matrix prints it (the pulley's m₁ + M/4, not
+    ¼(M + 4m₁)), and d/dt(m r² θ̇) = m r² θ̈ + 2 m r ṙ θ̇ as a textbook differentiates it."""
+    pulley = _rows("pulley")
+    assert r"\left(m_{1} + \frac{M}{4}\right) \dot{y}_{1}" in pulley["momenta"][0]
+    assert r"\left(m_{1} + \frac{M}{4}\right) \dot{y}_{1}" in pulley["derivatives:y1"][1]
+    assert r"\left(m_{1} + \frac{M}{4}\right) \ddot{y}_{1}" in pulley["derivatives:y1"][2]
+    assert r"m_{1} + \frac{M}{4}" in pulley["mass-matrix"][0]
+    spring = _rows("tabletop-spring")["derivatives:theta"]
+    assert spring[2] == r"\frac{d}{dt}\left(\frac{\partial L}{\partial \dot{\theta}}\right) = m r^{2} \ddot{\theta} + 2 m r \dot{r} \dot{\theta}"
