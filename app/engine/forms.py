@@ -51,6 +51,7 @@ NODE_BUDGET = 1500
 MAX_SUM_DEGREE = 3
 _CACHE: dict[tuple[sp.Expr, frozenset[sp.Symbol]], sp.Expr] = {}
 _CACHE_SIZE = 4096
+_SETTLED: dict[sp.Expr, sp.Expr] = {}  # forms settled as they stand (``settle``), by the form itself
 _local = threading.local()
 _LATE_LIMIT = ("forms", "late limit")  # in the document's memo: the smallest size whose late search ran out
 # a Lagrange multiplier's name (app/engine/multipliers.py): an unknown of the motion, never collected as a parameter
@@ -63,23 +64,25 @@ def use_names(names: Mapping[sp.Symbol, str]) -> None:
     _local.names = names
 
 
-def _remember(key: tuple[sp.Expr, frozenset[sp.Symbol]], form: sp.Expr) -> None:
+def _remember(store: dict, key: Any, form: sp.Expr) -> None:
     """``form`` stored for ``key``; when the store is full, its oldest entry gives way, so that a form just
-    settled is always found again (a long-lived process fills the store: refused, a settled form was formed
-    again, and a momentum printed m ṙ(…) where its step had just built m r² θ̈ + 2 m r ṙ θ̇)."""
-    while key not in _CACHE and len(_CACHE) >= _CACHE_SIZE:
+    settled is always found again (a long-lived process fills the store)."""
+    while key not in store and len(store) >= _CACHE_SIZE:
         try:
-            del _CACHE[next(iter(_CACHE))]
+            del store[next(iter(store))]
         except (KeyError, RuntimeError, StopIteration):  # another thread took it first
             break
-    _CACHE[key] = form
+    store[key] = form
 
 
 def settle(form: sp.Expr, names: Mapping[sp.Symbol, str] | None = None) -> sp.Expr:
     """Declare ``form`` a textbook form as it stands (h and E built from T's and U's forms): forming it
-    again returns it unchanged."""
+    again returns it unchanged. Settled forms have a store of their own, which only this writes and which
+    ``textbook_form`` reads first: a search of the same expression finishing in another thread (the warm-up
+    derives scenes side by side) cannot put its own form over one settled (the tabletop's d/dt ∂L/∂θ̇ was
+    printed m r(r θ̈ + 2 ṙ θ̇) by one server and m r² θ̈ + 2 m r ṙ θ̇ by another)."""
     if isinstance(form, sp.Expr):
-        _remember((form, frozenset(moving_symbols(form, names))), form)
+        _remember(_SETTLED, form, form)
     return form
 
 
@@ -600,6 +603,9 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, units
     """
     if not isinstance(expr, sp.Expr) or not expr.free_symbols or isinstance(expr, sp.Symbol):
         return expr
+    settled = _SETTLED.get(expr)
+    if settled is not None:
+        return settled
     names = names if names is not None else getattr(_local, "names", None)
     moving = moving_symbols(expr, names)
     key = (expr, frozenset(moving))
@@ -644,7 +650,7 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, units
         best[0] = fallback
     # quotients as a textbook writes them: each term over its own denominator, no fraction in a denominator
     found = mass_out(textbook_quotients(like_terms_added(best[0], moving), moving))
-    _remember(key, found)
+    _remember(_CACHE, key, found)
     return settle(found, names)  # a form, formed again, stays as it is
 
 

@@ -143,12 +143,27 @@ def test_a_settled_form_is_found_again_when_the_store_is_full(monkeypatch):
     """A long-lived process fills the store of forms: a form settled then must still be the one printed (the
     tabletop spring's d/dt ∂L/∂θ̇ = m r² θ̈ + 2 m r ṙ θ̇ was formed again into m r(r θ̈ + 2 ṙ θ̇) once it was full)."""
     monkeypatch.setattr(forms, "_CACHE", {})
+    monkeypatch.setattr(forms, "_SETTLED", {})
     monkeypatch.setattr(forms, "_CACHE_SIZE", 3)
     for k in range(1, 5):
-        textbook_form(k * m1 * ad**2 + a, NAMES)
-    assert len(forms._CACHE) == 3
+        forms.settle(textbook_form(k * m1 * ad**2 + a, NAMES), NAMES)
+    assert len(forms._CACHE) == 3 and len(forms._SETTLED) == 3
     # as built, not as the search would write it: m₁ a ȧ² + 2 m₁ a² ä, never m₁ a(ȧ² + 2 a ä)
     built = sp.Add(m1 * a * ad**2, 2 * m1 * a**2 * add)
     assert forms.settle(built, NAMES) is built
     assert textbook_form(built, NAMES) is built
-    assert len(forms._CACHE) == 3
+    assert len(forms._SETTLED) == 3
+
+
+def test_a_search_finishing_after_a_settle_does_not_replace_the_settled_form(monkeypatch):
+    """Two threads: one settles a form as built while the other's search of the same expression finishes and
+    stores its own (the warm-up derives scenes side by side): the settled form is still the one printed."""
+    monkeypatch.setattr(forms, "_CACHE", {})
+    monkeypatch.setattr(forms, "_SETTLED", {})
+    built = sp.Add(m1 * a * ad**2, 2 * m1 * a**2 * add)
+    searched = textbook_form(sp.expand(built), NAMES)
+    assert sp.srepr(searched) != sp.srepr(built)  # the search writes it another way: m₁ a(ȧ² + 2 a ä)
+    forms.settle(built, NAMES)
+    # the other thread's search, finishing now, stores its form under the same expression
+    forms._CACHE[(sp.expand(built), frozenset(forms.moving_symbols(built, NAMES)))] = searched
+    assert textbook_form(built, NAMES) is built
