@@ -38,7 +38,7 @@ DERIVED: dict[str, tuple[str, tuple[tuple[str, str], ...]]] = {
     # the small displacement of the normal modes: η (Goldstein's), never ε, the action panel's variation size
     "displacement": (
         "small displacement of the coordinates from an equilibrium",
-        ((r"\eta", "η"), (r"\xi", "ξ"), (r"\zeta", "ζ")),
+        ((r"\eta", "η"), (r"\xi", "ξ"), (r"\zeta", "ζ"), (r"\chi", "χ")),
     ),
     "amplitude": ("amplitudes of a normal mode (its shape)", (("a", "a"), (r"\mathbf{A}", "𝐀"))),
     "start": ("displacement the beats start from, the other coordinate at rest", (("A", "A"), ("B", "B"))),
@@ -90,7 +90,9 @@ def _taken(d: Derivation) -> set[str]:
 
 
 def _choice(concept: str, d: Derivation) -> tuple[str, str]:
-    return free_letter(concept, _taken(d))
+    # the small displacement's η must not be a Cartesian η the constraint steps print (the helix's, the pulley's)
+    extra = _cartesian_letters(d) if concept == "displacement" else set()
+    return free_letter(concept, _taken(d) | extra)
 
 
 def free_letter(concept: str, names: Iterable[str]) -> tuple[str, str]:
@@ -474,13 +476,33 @@ def cartesian_names(names: list[str], taken: set[str]) -> dict[str, str]:
     return {n: (_GREEK_AXES[n[0]] + n[1:] if greek else n) for n in names}
 
 
+def _printed_cartesian(
+    d: Derivation, forces: tuple[ConstraintForce, ...], velocities: bool = False
+) -> tuple[list[str], dict[str, str]]:
+    """The Cartesian components the constraint steps print (x, y1, … by name): those a constraint holds, one named
+    like a coordinate (the helix's z) still the body's Cartesian z; with ``velocities``, every body's three, whose
+    rates L′'s kinetic energy holds (the pulley's η̇₃). And the name each is printed by (ζ where z is taken)."""
+    every = [s.name for triple in cartesian_symbols(len(d.system.particles)) for s in triple]
+    held = {s.name for f in forces for s in f.g.free_symbols}
+    names = sorted(n for n in every if velocities or n in held) if forces else []
+    # decided over every body's three components, as the constraint steps decide it (y₁ taken makes z₁ ζ₁ too)
+    printed = cartesian_names(every, {latex(s.name) for s in (*d.table.q, *d.table.params)})
+    return names, printed
+
+
+def _cartesian_letters(d: Derivation) -> set[str]:
+    """The letters (Unicode) the constraint steps print for Cartesian coordinates: ξ, η, ζ on the helix."""
+    forces = d.constraint_forces
+    if not isinstance(forces, tuple) or not forces:  # none, or skipped (too costly)
+        return set()
+    names, printed = _printed_cartesian(d, forces, velocities=True)
+    # η₃ takes η: the letter, whatever body's it is
+    return {unicode(re.sub(r"\d+$", "", printed.get(n, n))) for n in names}
+
+
 def _cartesian(d: Derivation, forces: tuple[ConstraintForce, ...]) -> list[dict[str, Any]]:
     """The Cartesian coordinates the constraints are written in: x across, y, z up, of each body."""
-    known = {*d.table.q, *d.table.params, d.table.t}
-    names = sorted({s.name for f in forces for s in f.g.free_symbols if s not in known})
-    # decided over every body's three components, as the constraint steps decide it (y₁ taken makes z₁ ζ₁ too)
-    every = [s.name for triple in cartesian_symbols(len(d.system.particles)) for s in triple]
-    printed = cartesian_names(every, {latex(s.name) for s in (*d.table.q, *d.table.params)})
+    names, printed = _printed_cartesian(d, forces)
     rows = []
     for name in names:
         axis, number = name[0], name[1:]

@@ -14,8 +14,9 @@ from pathlib import Path
 
 import pytest
 
+from app.engine import notation
 from app.scenes import SCENES
-from app.service.derivations import derivation_document
+from app.service.derivations import derivation, derivation_document
 
 # a row's left side: a bare letter, maybe squared (ω², \Omega^2), maybe with a subscript (\omega_{1}, F_{1})
 _NAME = re.compile(r"^\s*&?\s*((?:\\[A-Za-z]+|[A-Za-z])(?:_\{?[0-9A-Za-z]+\}?)?)(?:\^\{?2\}?)?\s*&?=")
@@ -327,3 +328,14 @@ def test_a_typed_systems_matrix_step_says_what_f_is():
         step["explanation"]
     )
     assert not [s for s in _said(doc) if re.search(r"\bforcing\b", s, re.I)]
+
+
+@pytest.mark.parametrize(("scene_id", "cartesian"), [("helix-bead", {"ξ", "η", "ζ"}), ("pulley", {"ζ₁", "ζ₂", "ζ₃"})])
+def test_a_cartesian_letter_has_one_meaning_in_the_symbols_table(scene_id, cartesian):
+    """prof-o F2: the helix writes its constraints in ξ, η, ζ (z is its coordinate), the pulley its L′ in ξᵢ, ηᵢ, ζᵢ;
+    the table listed η as the modes' small displacement and left the helix's η and ζ out."""
+    d = derivation(scene_id)
+    rows = {r["unicode"]: r["meaning"] for r in notation.table(d, d.constraint_forces)}
+    assert all(rows.get(c, "").startswith("Cartesian") for c in cartesian), rows
+    # the small displacement takes a letter no Cartesian coordinate of the page is printed with
+    assert notation.text("displacement", d) not in {"ξ", "η", "ζ"}
