@@ -255,6 +255,7 @@ def _sources_of_t1_t0(mech: Mechanics, parts: dict[int, sp.Expr]) -> list[str]:
         causes.append("T has terms linear in the velocities as written (a gyroscopic or magnetic term), a part T₁")
     if free:
         causes.append(
-            "T has a part without velocities as written (such as a rotating frame's centrifugal term), a part T₀"
+            "T has a part T₀ without velocities as written: the kinetic energy of a motion the constraints impose "
+            "(a hoop or a wire turned at a set rate), which is there when every coordinate stands still"
         )
     return [causes[0][0].upper() + causes[0][1:], *causes[1:]] if causes else ["T has parts of degree 1 and 0"]

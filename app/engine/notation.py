@@ -342,7 +342,8 @@ def _sometimes(
             _row(
                 r"U_\text{eff}",
                 "U_eff",
-                f"effective potential in which {unicode(q.name)} moves as a single coordinate (conserved momenta held fixed)",
+                f"effective potential in which {unicode(q.name)} moves as a single coordinate"
+                + (" (conserved momenta held fixed)" if d.reduction.momenta else ""),
                 energy,
                 "derived",
             )
@@ -360,8 +361,9 @@ def _sometimes(
                 held.unicode,
                 # with conserved momenta held, m_eff is not ∂²L/∂q̇² (the wedge's m): it is the inertia left in the
                 # reduced energy ½ m_eff q̇² + U_eff once the cyclic velocities are eliminated
-                f"{held.words} of {unicode(q.name)}: the {what} {unicode(q.name)} {does} with once the conserved "
-                "momenta are held fixed (the inertia in its reduced energy)",
+                f"{held.words} of {unicode(q.name)}: the {what} {unicode(q.name)} {does} with"
+                + (" once the conserved momenta are held fixed" if d.reduction.momenta else "")
+                + " (the inertia in its reduced energy)",
                 _unit(m_dims),
                 "derived",
             )

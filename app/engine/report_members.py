@@ -73,17 +73,14 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
     cross = {(a, b): m.normal[a, b] for a in range(k) for b in range(k) if a != b and m.normal[a, b] != 0}
     on_motion = all(sp.simplify(c.xreplace(m.on_motion)) == 0 for c in cross.values())
     zero = [_vanishing(cp, c, m) for (a, b), c in cross.items() if a < b] if on_motion else []
+    shown = [[b for b in range(k) if m.normal[a, b] != 0 and not (on_motion and a != b)] for a in range(k)]
+    # each equation divided through by the number its two sides share: (2/m)(ξ² + η²) λ₁ = ξ̇² + η̇², not 4/m and 2
+    common = [_shared_number([m.normal[a, b] for b in shown[a]] + [m.right[a]]) for a in range(k)]
+    right = [m.right[a] / common[a] for a in range(k)]
     normal = [
-        _terms(
-            [
-                (_factor(cp, gathered(m.normal[a, b])), lam[b])
-                for b in range(k)
-                if m.normal[a, b] != 0 and not (on_motion and a != b)
-            ]
-        )
+        _right(cp, _terms([(_factor(cp, gathered(m.normal[a, b] / common[a])), lam[b]) for b in shown[a]]), gathered(right[a]))
         for a in range(k)
     ]
-    normal = [_right(cp, head, gathered(m.right[a])) for a, head in enumerate(normal)]
     path, on_path = on_path_equations(m, cp, pr, lam)
     positive = constraint_positive(d)
     solved = [constraint_display(e, positive) for e in m.solved]
@@ -121,14 +118,14 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
             + [_said(_left_for(k, bool(cross) and not on_motion))]
             + normal
             + path,
-            [*m.twice, *m.right, *on_path],
+            [*m.twice, *right, *on_path],
             "The constraint holds at every instant, so its second time derivative vanishes. Putting r̈ from "
             "Newton's law into it keeps only the component of the equations along ∇𝒞: an equation for λ alone, "
             "with no acceleration left."
             + (" " + _coupling_sentence(bool(cross), on_motion) if k > 1 else "")
             + (
-                f" {ON_PATH_CLAUSE} the coordinates fix written in, each equation takes its short form, and λ "
-                "follows from it by one division."
+                f" {ON_PATH_CLAUSE} the coordinates give put in, each equation becomes short, and dividing by "
+                "its coefficient gives λ."
                 if on_path
                 else ""
             ),
@@ -169,7 +166,7 @@ def _coupling_sentence(crossed: bool, on_motion: bool) -> str:
         return f"{normals} perpendicular, so each λ comes from its own equation."
     if on_motion:
         return (
-            f"{normals} perpendicular here: each cross coefficient vanishes on the motion, so each λ comes from its "
+            f"{normals} perpendicular here: on the path every cross coefficient is zero, so each λ comes from its "
             "own equation."
         )
     return f"{normals} not perpendicular here, so the equations for the multipliers are coupled."
@@ -199,7 +196,7 @@ def on_path_equations(m: Multipliers, cp: Printer, pr: Printer, lam: list[str]) 
     """The equations for the multipliers once more, on the path: where they hold a Cartesian position or velocity,
     each is written with the positions the coordinates fix (ξ = R cos αz, η = R sin αz, ζ = z on the helix, and
     their rates), each side in its textbook form, so that the solved λ follows in one line:
-    (4R²/m) λ₁ = 2α²R²ż².  No rows where the equations hold none (the pulley's, the wedge's).  The rows, and the
+    (2R²/m) λ₁ = α²R²ż².  No rows where the equations hold none (the pulley's, the wedge's).  The rows, and the
     equations they print (Σ_b coefficient λ_b = right side)."""
     k = len(lam)
     cartesian = set(m.positions) | set(m.velocities)
@@ -214,6 +211,11 @@ def on_path_equations(m: Multipliers, cp: Printer, pr: Printer, lam: list[str]) 
     # ṙ_i = ṙ_i(q, q̇, t) put in: a cross coefficient that vanishes on the motion is left out, as above
     coefficient = m.normal.applyfunc(lambda e: sp.simplify(e.xreplace(m.on_motion)))
     right = [sp.simplify(m.right[a].xreplace(m.on_motion)) for a in range(k)]
+    # each divided through by the number its two sides share: (2R²/m) λ₁ = R(Rθ̇² + g cos θ), not 4R²/m and 2R
+    for a in range(k):
+        c = _shared_number([coefficient[a, b] for b in range(k) if coefficient[a, b] != 0] + [right[a]])
+        coefficient[a, :] = coefficient[a, :] / c
+        right[a] = right[a] / c
     rows = [
         _right(
             pr,
@@ -232,6 +234,17 @@ def on_path_equations(m: Multipliers, cp: Printer, pr: Printer, lam: list[str]) 
         # too wide for one line: the words alone, then one position a line
         return [_said(ON_PATH.rstrip(", ") + ":"), *(f"{name} = {value}" for name, value in where), *rows], equations
     return [words, *rows], equations
+
+
+def _shared_number(sides: list[sp.Expr]) -> sp.Integer:
+    """The largest whole number that divides every term of every side (2 in 4/m λ = 2 ẋ²), 1 if none: an
+    equation a textbook divides through by it before printing."""
+    numbers = [sp.Rational(t.as_coeff_Mul()[0]) for e in sides if e != 0 for t in sp.Add.make_args(sp.expand(e))]
+    if not numbers or any(not n.is_Rational for n in numbers):
+        return sp.Integer(1)
+    shared = sp.gcd([abs(n.p) for n in numbers])
+    # only a whole number shared by every numerator, and no denominator made: (1/2)… stays as it is
+    return sp.Integer(shared) if shared > 1 and all(n.q == 1 or n.p % shared == 0 for n in numbers) else sp.Integer(1)
 
 
 def _vanishing(cp: Printer, c: sp.Expr, m: Multipliers) -> str:

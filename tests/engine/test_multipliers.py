@@ -111,10 +111,12 @@ def test_the_multiplier_steps_print_their_expressions_as_a_textbook_does():
     # square of the constraint kept as one, x² + (z − R)²; a right side's sign taken into its bracket
     pendulum = _served("simple-pendulum")
     assert r"m \ddot{z} &= 2 \lambda_{1} \left(R - z\right) - m g" in pendulum["multiplier-lagrangian"]
+    # prof-o F6: each equation for λ divided through by the number its two sides share (2/m, not 4/m and a 2)
     assert (
-        r"\frac{4}{m} \left(x^{2} + \left(z - R\right)^{2}\right) \lambda_{1} &= "
-        r"2 \left(\dot{x}^{2} + \dot{z}^{2} - g z + g R\right)"
+        r"\frac{2}{m} \left(x^{2} + \left(z - R\right)^{2}\right) \lambda_{1} &= "
+        r"\dot{x}^{2} + \dot{z}^{2} - g z + g R"
     ) in pendulum["multiplier-equation"]
+    assert r"\frac{2 R^{2}}{m} \lambda_{1} &= R \left(R \dot{\theta}^{2} + g \cos {\theta}\right)" in pendulum["multiplier-equation"]
     assert r"\lambda_{1} = \frac{m}{2 R} \left(R \dot{\theta}^{2} + g \cos {\theta}\right)" == pendulum["multiplier"]
     # a coefficient 1/m puts the multiplier over the bar: λ₁/m = g cos α, and the force is m g cos α
     incline = _served("incline-block")
@@ -208,12 +210,12 @@ def test_each_group_of_rows_for_the_multipliers_is_said_in_words():
 def test_the_helix_puts_its_equations_for_the_multipliers_on_the_path():
     """prof-n 3: the helix ended its step on the Cartesian equations for λ₁ and λ₂, five lines a student cannot
     follow to the solved step. The same equations follow with the positions on the wire written in, each side in
-    its short form: (4R²/m) λ₁ = 2α²R²ż² and ((1 + α²R²)/m) λ₂ = gαR, from which each λ is one division."""
+    its short form: (2R²/m) λ₁ = α²R²ż² and ((1 + α²R²)/m) λ₂ = gαR, from which each λ is one division."""
     rows = _multiplier_equation("helix-bead")["latex"].removesuffix(r"\end{aligned}").split(r" \\ ")
     words = r"&\text{on the path, }{\xi=R \cos {\alpha z}},\quad {\eta=R \sin {\alpha z}},\quad {\zeta=z}\text{:}"
     assert rows[-3:] == [
         words,
-        r"\frac{4 R^{2}}{m} \lambda_{1} &= 2 \alpha^{2} R^{2} \dot{z}^{2}",
+        r"\frac{2 R^{2}}{m} \lambda_{1} &= \alpha^{2} R^{2} \dot{z}^{2}",
         r"\frac{1 + \alpha^{2} R^{2}}{m} \lambda_{2} &= g \alpha R",
     ]
     wire = _multiplier_equation("rotating-parabola")["latex"].removesuffix(r"\end{aligned}").split(r" \\ ")
@@ -227,7 +229,7 @@ def test_the_helix_puts_its_equations_for_the_multipliers_on_the_path():
     assert r"\text{on the path, }{x=R \sin {\theta}},\quad {z=R \left(1 - \cos {\theta}\right)}\text{:}" in pendulum
     # the words say why, after the scene's own reason for the step
     said = _multiplier_equation("helix-bead")["explanation"]
-    assert said.startswith("The cylinder's normal") and "λ follows from it by one division" in said
+    assert said.startswith("The cylinder's normal") and "dividing by its coefficient gives λ" in said
     # the pulley's and the wedge's equations hold no position: nothing to put on the path
     for scene_id in ("pulley", "movable-incline"):
         step = _multiplier_equation(scene_id)

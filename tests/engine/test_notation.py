@@ -339,3 +339,12 @@ def test_a_cartesian_letter_has_one_meaning_in_the_symbols_table(scene_id, carte
     assert all(rows.get(c, "").startswith("Cartesian") for c in cartesian), rows
     # the small displacement takes a letter no Cartesian coordinate of the page is printed with
     assert notation.text("displacement", d) not in {"ξ", "η", "ζ"}
+
+
+def test_no_conserved_momentum_is_said_held_where_there_is_none():
+    """prof-o F8: the helix (no conserved momentum) read "(conserved momenta held fixed)" in its U_eff and m_eff rows;
+    the wedge, whose X is cyclic, still says it."""
+    helix = {r["unicode"]: r["meaning"] for r in notation.table(derivation("helix-bead"))}
+    assert helix["U_eff"] and "conserved momenta" not in helix["U_eff"] + helix["m_eff"]
+    wedge = {r["unicode"]: r["meaning"] for r in notation.table(derivation("movable-incline"))}
+    assert "conserved momenta" in wedge["U_eff"] and "conserved momenta" in wedge["m_eff"]
