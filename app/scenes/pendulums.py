@@ -38,7 +38,10 @@ SIMPLE_PENDULUM = Scene(
         "measured from the lowest point of the swing, x across and heights z measured upward, with U = 0 there. "
         "Derive the equation of motion and the frequency of small swings."
     ),
-    figure="A pivot at the top, a string of length R, the bob at angle θ from the downward vertical.",
+    figure=(
+        "A pivot at the top, a string of length R, the bob at angle θ from the downward vertical; the axes x across "
+        "and z up start at the lowest point of the swing, where positions are measured from."
+    ),
     system=System(
         coordinates=("theta",),
         parameters=(MASS, GRAVITY, LENGTH),
@@ -175,7 +178,7 @@ DAMPED_PENDULUM = Scene(
     ),
     figure=(
         "The simple pendulum's pivot, string and bob moving with velocity v, and the drag on the bob: an arrow along "
-        "the path against v, labelled with its magnitude."
+        "the path against v, labelled with its magnitude; the axes x across and z up start at the lowest point."
     ),
     system=System(
         coordinates=("theta",),

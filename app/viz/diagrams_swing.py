@@ -43,6 +43,13 @@ def pendulum(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()
     svg.circle(bx, by, 12, fill="#c9d8ea")
     svg.text(bx + 24, by + 4, "m", PARAM)
     _gravity(svg, 40, 150)
+    # the origin the statement measures positions from: the lowest point of the swing, x across and z up
+    ox, oy = px, py + length
+    svg.circle(ox, oy, 2.5, fill=INK)
+    svg.arrow(ox, oy, ox + 34, oy, width=1.5)
+    svg.text(ox + 44, oy + 5, "x", INK, 14)
+    svg.arrow(ox, oy, ox, oy - 30, width=1.5)
+    svg.text(ox - 10, oy - 30, "z", INK, 14)
     if "drag" in marks:
         # the bob drawn swinging outward (θ̇ > 0): its velocity v along +θ̂ = (cos θ, −sin θ) on the page (y down)
         vx, vy = math.cos(theta), -math.sin(theta)

@@ -78,3 +78,12 @@ def test_the_azimuth_is_drawn_from_a_named_x_axis(scene_id):
     # φ is an angle from the x axis: the axis is drawn and named, and φ labels an arc from it
     svg = card(scene_id)
     assert ">x</text>" in svg and ">φ</text>" in svg
+
+
+@pytest.mark.parametrize("scene_id", ["simple-pendulum", "damped-pendulum"])
+def test_the_pendulum_figure_marks_the_origin_its_statement_measures_from(scene_id):
+    """prof-o F9: the statement measures x across and z up from the lowest point of the swing; the figure drew
+    neither. Both axes are drawn from there, and the caption says so."""
+    svg = card(scene_id)
+    assert ">x</text>" in svg and ">z</text>" in svg
+    assert "lowest point" in SCENES[scene_id].statement and "lowest point" in SCENES[scene_id].figure
