@@ -51,6 +51,13 @@ SYSTEMS = {
         kinetic="m*((1+c**2)*r_dot**2 + r**2*phi_dot**2)/2",
         potential="m*g*c*r",
     ),
+    # a mass hung from a spring, x measured down from where the spring is unstretched
+    "hung-spring": System(
+        coordinates=("x",),
+        parameters=(_kg("m", 1.0), Parameter("k", 2.0, "N/m", 0.01, 100.0), G),
+        kinetic="m*x_dot**2/2",
+        potential="k*x**2/2 - m*g*x",
+    ),
 }
 
 
@@ -150,3 +157,14 @@ def test_the_cones_equation_is_cancelled_and_its_hamiltonian_factored():
     # the equation shown is the engine's residual divided by its factor m(1 + c²)
     factor = d.equations.mass_matrix[0, 0]
     _same(doc["equations_of_motion"][0]["sympy"], sp.expand(d.equations.residuals[0]) / factor)
+
+
+def test_an_effective_potential_that_is_u_prints_in_us_form():
+    """prof-o F8: one coordinate, nothing held: U_eff is U, in the step and in the results as U's step prints it
+    (½kx² − mgx, not x(½kx − mg))."""
+    d, doc = _document("hung-spring")
+    u = r"\frac{1}{2} k x^{2} - m g x"
+    assert _step(doc, "potential") == f"U = {u}"
+    assert doc["effective_potential"]["potential"]["latex"] == u
+    assert _step(doc, "effective-potential").startswith(rf"\begin{{aligned}}U_\text{{eff}}(x) &= {u} \\ ")
+    _same(doc["effective_potential"]["potential"]["sympy"], d.reduction.effective_potential)
