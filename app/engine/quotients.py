@@ -85,12 +85,21 @@ def cleared(expr: sp.Expr) -> sp.Expr:
 
 
 def denominators_grouped(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
-    """Every constant denominator ``grouped``: g/(M m₁ + M m₂ + 4 m₁ m₂) -> g/(4 m₁ m₂ + M (m₁ + m₂))."""
+    """Every constant denominator with the factor common to all its terms taken out, then ``grouped``:
+    p_r²/(2m + 2mc²) -> p_r²/(2m(1 + c²)), g/(M m₁ + M m₂ + 4 m₁ m₂) -> g/(4 m₁ m₂ + M (m₁ + m₂))."""
     if not isinstance(expr, sp.Expr) or not _small(expr):
         return expr
+
+    def group(e: sp.Pow) -> sp.Expr:
+        # 2m + 2mc² = 2m(1 + c²): what every term holds goes in front of the sum
+        common, rest = sp.factor_terms(e.base).as_independent(sp.Add, as_Add=False)
+        if isinstance(rest, sp.Add) and common != 1:
+            return sp.Pow(common * grouped(rest), e.exp)
+        return sp.Pow(grouped(e.base), e.exp)
+
     return expr.replace(
         lambda e: e.is_Pow and e.exp.is_negative and isinstance(e.base, sp.Add) and not (e.base.free_symbols & moving),
-        lambda e: sp.Pow(grouped(e.base), e.exp),
+        group,
     )
 
 

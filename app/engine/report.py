@@ -266,10 +266,20 @@ def by_inertia(d: Derivation, expr: sp.Expr, rates: Sequence[sp.Symbol]) -> sp.E
 
 
 def effective_potential(d: Derivation) -> sp.Expr:
-    """U_eff as its centrifugal piece plus the potential's: p_θ²/(2mr²) + ½kr²."""
+    """U_eff as its centrifugal piece plus the potential's: p_θ²/(2mr²) + ½kr²; U itself, as the potential's
+    step prints it, where U_eff is U (no momentum held, no constraint moving): the simple pendulum's
+    mgR(1 − cos θ) in every step and in the results alike."""
     red = d.reduction
     assert red is not None
+    if _is_potential(d, red.effective_potential):
+        return d.mechanics.U
     return meaning.pieces(red.effective_potential, red.momenta, d.table.q)
+
+
+def _is_potential(d: Derivation, expr: sp.Expr) -> bool:
+    """Whether ``expr`` is the potential energy U (identically)."""
+    U = d.mechanics.U
+    return U is not None and sp.expand(expr - U) == 0
 
 
 def conserved_form(d: Derivation, pr: Printer, expr: sp.Expr) -> sp.Expr:
@@ -758,13 +768,13 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
             "effective-potential",
             "Effective potential",
             [
-                # the centrifugal piece first, as a textbook writes U_eff; with no momentum held (a moving constraint:
-                # U_eff = U − T₀), each piece as its own term, as the equilibria's step prints the same U_eff
-                # (−mgR cos θ − ½mR²w² sin²θ, never −mR(g cos θ + ½Rw² sin²θ))
+                # the centrifugal piece first, as a textbook writes U_eff; U_eff = U in U's own form; with no
+                # momentum held and a moving constraint (U_eff = U − T₀), each piece as its own term, as the
+                # equilibria's step prints the same U_eff (−mgR cos θ − ½mR²w² sin²θ, never −mR(g cos θ + ½Rw² sin²θ))
                 rf"U_\text{{eff}}({rn}) = "
                 + (
-                    pr.tex(effective_potential(d), red.momenta[0])
-                    if red.momenta
+                    pr.tex(effective_potential(d), red.momenta[0] if red.momenta else None)
+                    if red.momenta or _is_potential(d, red.effective_potential)
                     else pr.tex(display(sp.expand(red.effective_potential)))
                 ),
                 f"{held.latex} = {pr.tex(red.effective_mass)}",

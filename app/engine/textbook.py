@@ -319,9 +319,14 @@ def latex(expr: Any, names: dict[sp.Symbol, str], first: sp.Symbol | None = None
 def _simplest(const: sp.Expr) -> sp.Expr:
     """The shortest of a constant coefficient's forms: as it is, common factors out, or cancelled."""
     # a product is worth rewriting only when a sum sits in it ((1 + 1/tan²a)/(1 + 1/tan²a)², not m g)
-    mixed = isinstance(const, sp.Mul) and any(isinstance(f.as_base_exp()[0], sp.Add) for f in sp.Mul.make_args(const))
+    mixed = isinstance(const, (sp.Mul, sp.Pow)) and any(
+        isinstance(f.as_base_exp()[0], sp.Add) for f in sp.Mul.make_args(const)
+    )
     if not (isinstance(const, sp.Add) or mixed) or larger_than(const, NODE_BUDGET // 4):
         return const
+    if sp.denom(const).could_extract_minus_sign():
+        # a denominator's sign in front, as a textbook writes it: −1/(1 + c²), not 1/(−c² − 1)
+        const = sp.factor_terms(const)
     forms = [const, sp.factor_terms(const), sp.cancel(const)]
     if const.has(sp.tan, sp.cot):
         # tan and cot as quotients of sin and cos, cancelled, then sin² + cos² = 1: a bead on a cone's
@@ -372,8 +377,11 @@ def normalised(
         if len(acc) == 1 and t.is_polynomial(acc[0]) and sp.degree(t, acc[0]) == 1:
             accelerations[acc[0]] = accelerations.get(acc[0], sp.Integer(0)) + t / acc[0]
             continue
+        # the term split into its constant factors and its moving ones, each taken as it stands: dividing t by
+        # its constant would leave −1/(1 + c²), which SymPy keeps as 1/(−1 − c²), half in the moving part
         const = sp.Mul(*(f for f in sp.Mul.make_args(t) if not (f.free_symbols & moving)))
-        groups[t / const] = groups.get(t / const, sp.Integer(0)) + const
+        part = sp.Mul(*(f for f in sp.Mul.make_args(t) if f.free_symbols & moving))
+        groups[part] = groups.get(part, sp.Integer(0)) + const
     # each acceleration with its coefficient; constants of like terms added
     leading = [sp.Mul(_simplest(c), a) for a, c in accelerations.items()]
     rest: list[sp.Expr] = []

@@ -2,7 +2,7 @@
 
 import sympy as sp
 
-from app.engine.quotients import cleared, grouped, own_denominators
+from app.engine.quotients import cleared, denominators_grouped, grouped, own_denominators
 from app.service.derivations import derivation_document
 
 r, m, k, R, g, b, M, m1, m2 = sp.symbols("r m k R g b M m1 m2", real=True)
@@ -70,3 +70,14 @@ def test_the_spherical_pendulum_orders_its_functions_as_its_coordinates_are_decl
         r"\vec r = \left(R \sin {\theta} \cos {\varphi}, R \sin {\theta} \sin {\varphi}, R \cos {\theta}\right)"
     )
     assert r"\sin {\varphi} \sin {\theta}" not in steps["velocities"]
+
+
+def test_a_factor_every_term_of_a_denominator_holds_goes_in_front():
+    """prof-o F5: Hamilton's p_r²/(2m + 2mc²) is printed p_r²/(2m(1 + c²)), as the velocities step writes m(1 + c²)."""
+    m, c, r, p = sp.symbols("m c r p_r", real=True)
+    out = denominators_grouped(p**2 / (2 * m + 2 * m * c**2) + r, {r, p})
+    assert out == p**2 / (2 * m * (1 + c**2)) + r
+    assert sp.denom(out - r) == 2 * m * (1 + c**2)
+    # a sum with no factor common to all its terms is left to ``grouped``
+    M, m1, m2 = sp.symbols("M m1 m2", positive=True)
+    assert denominators_grouped(1 / (M * m1 + M * m2 + 4 * m1 * m2), set()) == 1 / (4 * m1 * m2 + M * (m1 + m2))

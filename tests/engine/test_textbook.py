@@ -36,6 +36,17 @@ def test_equation_divided_by_its_accelerations_coefficient():
     assert tex(shown, first=thdd) == r"\ddot{\theta} + \frac{b}{m R^{2}} \dot{\theta} + \frac{g}{R} \sin {\theta}"
 
 
+def test_a_term_divided_by_a_sum_keeps_its_sign_in_front():
+    """prof-o F5: a term −m θ φ̇² divided by m(1 + b²) reads −θφ̇²/(1 + b²), never (−1 − b²)θφ̇²/(1 + b²)²
+    (SymPy keeps −1/(1 + b²) as 1/(−1 − b²), and the term divided by that left half of it in the moving part)."""
+    residual = m * (1 + b**2) * thdd - m * theta * phd**2 + m * g * b
+    shown = textbook.normalised(residual, m * (1 + b**2), True, NAMES, thdd)
+    assert sp.simplify(shown - residual / (m * (1 + b**2))) == 0
+    assert tex(shown, first=thdd) == (
+        r"\ddot{\theta} - \frac{\theta \dot{\varphi}^{2}}{1 + b^{2}} + \frac{g b}{1 + b^{2}}"
+    )
+
+
 def test_a_coordinate_dependent_sum_is_not_divided_out():
     residual = m * (1 + 4 * R**2 * theta**2) * thdd + m * g * theta
     shown = textbook.normalised(residual, m * (1 + 4 * R**2 * theta**2), True, NAMES, thdd)

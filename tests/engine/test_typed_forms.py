@@ -44,6 +44,20 @@ SYSTEMS = {
         ),
         potential="-M*g*s*sin(alpha) - m*g*(s*sin(alpha) + l*cos(theta))",
     ),
+    # a particle on a cone of slope c, typed as a reviewer typed it (prof-o F5)
+    "cone": System(
+        coordinates=("r", "phi"),
+        parameters=(_kg("m", 1.0), G, Parameter("c", 1.0, "", 0.01, 10.0)),
+        kinetic="m*((1+c**2)*r_dot**2 + r**2*phi_dot**2)/2",
+        potential="m*g*c*r",
+    ),
+    # a mass hung from a spring, x measured down from where the spring is unstretched
+    "hung-spring": System(
+        coordinates=("x",),
+        parameters=(_kg("m", 1.0), Parameter("k", 2.0, "N/m", 0.01, 100.0), G),
+        kinetic="m*x_dot**2/2",
+        potential="k*x**2/2 - m*g*x",
+    ),
 }
 
 
@@ -127,3 +141,30 @@ def test_double_angles_give_way_to_a_shorter_single_angle_form(name):
         assert r"2 \theta" not in form["latex"] and r"2 \alpha" not in form["latex"]
     for q, engine in zip(d.table.names, d.equations.accelerations, strict=True):
         _same(acc[q]["sympy"], engine)
+
+
+def test_the_cones_equation_is_cancelled_and_its_hamiltonian_factored():
+    d, doc = _document("cone")
+    # r̈ − rφ̇²/(1 + c²) + gc/(1 + c²) = 0, not r̈ − (1 + c²)/(1 + c²)² · rφ̇² + …
+    row = r"\ddot{r} - \frac{r \dot{\varphi}^{2}}{1 + c^{2}} + \frac{g c}{1 + c^{2}} = 0"
+    assert doc["equations_of_motion"][0]["latex"] == row
+    assert row in _step(doc, "euler-lagrange")
+    # H's denominator as the velocities step writes m(1 + c²): 2m(1 + c²), not 2m + 2mc²
+    H = doc["hamilton"]["hamiltonian"]["latex"]
+    assert H.startswith(r"\frac{p_{r}^{2}}{2 m \left(1 + c^{2}\right)} + ")
+    assert H in _step(doc, "hamiltonian-pq")
+    _same(doc["hamilton"]["hamiltonian"]["sympy"], d.hamilton.hamiltonian)
+    # the equation shown is the engine's residual divided by its factor m(1 + c²)
+    factor = d.equations.mass_matrix[0, 0]
+    _same(doc["equations_of_motion"][0]["sympy"], sp.expand(d.equations.residuals[0]) / factor)
+
+
+def test_an_effective_potential_that_is_u_prints_in_us_form():
+    """prof-o F8: one coordinate, nothing held: U_eff is U, in the step and in the results as U's step prints it
+    (½kx² − mgx, not x(½kx − mg))."""
+    d, doc = _document("hung-spring")
+    u = r"\frac{1}{2} k x^{2} - m g x"
+    assert _step(doc, "potential") == f"U = {u}"
+    assert doc["effective_potential"]["potential"]["latex"] == u
+    assert _step(doc, "effective-potential").startswith(rf"\begin{{aligned}}U_\text{{eff}}(x) &= {u} \\ ")
+    _same(doc["effective_potential"]["potential"]["sympy"], d.reduction.effective_potential)

@@ -331,3 +331,18 @@ def test_a_momentum_and_its_rate_print_the_mass_matrix_entries():
     assert r"m_{1} + \frac{M}{4}" in pulley["mass-matrix"][0]
     spring = _rows("tabletop-spring")["derivatives:theta"]
     assert spring[2] == r"\frac{d}{dt}\left(\frac{\partial L}{\partial \dot{\theta}}\right) = m r^{2} \ddot{\theta} + 2 m r \dot{r} \dot{\theta}"
+
+
+@pytest.mark.parametrize("scene_id", ["simple-pendulum", "physical-pendulum", "helix-bead"])
+def test_an_effective_potential_that_is_u_prints_in_us_form(scene_id):
+    """prof-o F8: with no momentum held and no constraint moving, U_eff is U, printed as the potential's step prints
+    it in the step and in the results alike: the simple pendulum's U_eff(θ) = mgR(1 − cos θ), never
+    −mgR cos θ + mgR beside U = mgR(1 − cos θ)."""
+    doc = derivation_document(scene_id)
+    rows = _rows(scene_id)
+    u = rows["potential"][0].removeprefix("U = ")
+    q = doc["effective_potential"]["coordinate"]
+    assert doc["effective_potential"]["momenta"] == []
+    assert rows["effective-potential"][0].endswith(f") = {u}")
+    assert doc["effective_potential"]["potential"]["latex"] == u == doc["potential"]["latex"]
+    assert q in {"theta", "z"}
