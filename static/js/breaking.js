@@ -128,12 +128,32 @@ export function spacedRows(tex) {
 }
 
 // a line the engine broke off a row: the separator of an aligned block, then the quad that indents the line
-const CONTINUATION = /\s*\\\\(?:\[[^\]]*\])?\s*&\\quad(?![a-zA-Z])\s*/g;
+const CONTINUATION = /\s*\\\\(?:\[[^\]]*\])?\s*&\\quad(?![a-zA-Z])\s*/y;
 
-/** The formula with each continuation line of an aligned block (``\\ &\quad - m g z``) back on the line before
- *  it (``… + λ₂(…) - m g z``): the rows as written, the engine's breaks undone. */
+/** The formula with each continuation line of its aligned block (``\\ &\quad - m g z``) back on the line before
+ *  it (``… + λ₂(…) - m g z``): the rows as written, the engine's breaks undone.  Only the display's own rows, at
+ *  the top level: a numerator the engine stacked inside a fraction (the double pendulum's θ̈₁) keeps its lines. */
 export function joinedRows(tex) {
-  return tex.replace(CONTINUATION, " ");
+  let braces = 0;
+  let last = 0;
+  let out = "";
+  for (let i = 0; i < tex.length; i++) {
+    const c = tex[i];
+    if (c === "{") braces += 1;
+    else if (c === "}") braces -= 1;
+    else if (c === "\\" || /\s/.test(c)) {
+      CONTINUATION.lastIndex = i;
+      const m = braces === 0 ? CONTINUATION.exec(tex) : null;
+      if (m && m.index === i) {
+        out += `${tex.slice(last, i)} `;
+        last = i + m[0].length;
+        i = last - 1;
+      } else if (c === "\\") {
+        i += 1; // a control symbol (\{, \}) is no brace
+      }
+    }
+  }
+  return out + tex.slice(last);
 }
 
 /** The relation written at ``i`` of a row (=, \\approx, \\equiv, \\le, \\ge …), or "". */
