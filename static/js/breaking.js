@@ -3,13 +3,18 @@
  *
  *   alignedRows(tex)          the rows of a formula: an aligned block (\begin{aligned} … \end{aligned}) gives
  *                             one row per line, its alignment marks (&) dropped; any other formula is one row
+ *   joinedRows(tex)           the formula with each line the engine broke off (a row "&\\quad …" of an aligned
+ *                             block, broken by a count of characters before the page knew its width) joined
+ *                             back onto the line before it
  *   breakable(row)            the row with a break allowed after each \\quad at its top level
  *   fractionRow(row)          a row that ends in one fraction (θ̈₁ = \frac{…}{…}): what comes before it, its
  *                             numerator and its denominator; else null
  *   numeratorTerms(num)       a numerator's terms, split before each + and − at its top level
  *   stackedFraction(f, n)     the row again with its numerator's terms on n lines, each under the first
- *   breakDisplay(el, katex)   typeset el's formula (data-tex) as a display; if it is wider than el, typeset
- *                             it again row by row, each row in text mode at display size (\displaystyle), so
+ *   breakDisplay(el, katex)   typeset el's formula (data-tex) as a display, on one line where the engine broke
+ *                             it if that fits el (a textbook never breaks a formula where there is room); else
+ *                             as the engine broke it; if that is wider than el too, typeset it again row by row
+ *                             (the engine's lines joined: KaTeX breaks them where the box needs), each row in text mode at display size (\displaystyle), so
  *                             that KaTeX's own line breaking applies: a row goes on to the next line after a
  *                             relation (=) or a binary operator (+, −) at its top level, continuation lines
  *                             indented (site.css, .math-line).  A fraction, one piece for KaTeX, wider than the
@@ -120,6 +125,35 @@ export function spacedRows(tex) {
   return OPEN + rows.map(([r, b, gap], k) => (k < last
     ? `${r}\\raisebox{-${ROW_GAP}}{$\\displaystyle\\vphantom{${b}}$} \\\\${gap} `
     : r)).join("") + CLOSE;
+}
+
+// a line the engine broke off a row: the separator of an aligned block, then the quad that indents the line
+const CONTINUATION = /\s*\\\\(?:\[[^\]]*\])?\s*&\\quad(?![a-zA-Z])\s*/y;
+
+/** The formula with each continuation line of its aligned block (``\\ &\quad - m g z``) back on the line before
+ *  it (``… + λ₂(…) - m g z``): the rows as written, the engine's breaks undone.  Only the display's own rows, at
+ *  the top level: a numerator the engine stacked inside a fraction (the double pendulum's θ̈₁) keeps its lines. */
+export function joinedRows(tex) {
+  let braces = 0;
+  let last = 0;
+  let out = "";
+  for (let i = 0; i < tex.length; i++) {
+    const c = tex[i];
+    if (c === "{") braces += 1;
+    else if (c === "}") braces -= 1;
+    else if (c === "\\" || /\s/.test(c)) {
+      CONTINUATION.lastIndex = i;
+      const m = braces === 0 ? CONTINUATION.exec(tex) : null;
+      if (m && m.index === i) {
+        out += `${tex.slice(last, i)} `;
+        last = i + m[0].length;
+        i = last - 1;
+      } else if (c === "\\") {
+        i += 1; // a control symbol (\{, \}) is no brace
+      }
+    }
+  }
+  return out + tex.slice(last);
 }
 
 /** The relation written at ``i`` of a row (=, \\approx, \\equiv, \\le, \\ge …), or "". */
@@ -313,13 +347,28 @@ export function breakDisplay(el, katex) {
   const tex = el.dataset.tex;
   if (!tex || !katex) return false;
   // a formula broken for a narrower box is typeset whole again first: it may fit now
-  if (el.dataset.broken) {
-    katex.render(spacedRows(tex), el, { displayMode: true, throwOnError: false });
-    delete el.dataset.broken;
+  const whole = (t) => katex.render(spacedRows(t), el, { displayMode: true, throwOnError: false });
+  const fits = () => el.scrollWidth <= el.clientWidth + 1;
+  // the engine broke long sums by a count of characters, before the page knew its width: joined again where the
+  // one line fits (F3: the rotating parabola's L′ with "− m g z" alone on a second line of a wide page)
+  const joined = joinedRows(tex);
+  if (joined !== tex) {
+    whole(joined);
+    if (fits() && !el.querySelector(".katex-error")) {
+      delete el.dataset.broken;
+      return false;
+    }
+    whole(tex);
+  } else if (el.dataset.broken) {
+    // a formula broken for a narrower box is typeset whole again first: it may fit now
+    whole(tex);
   }
-  if (el.scrollWidth <= el.clientWidth + 1 || el.querySelector(".katex-error")) return false;
+  delete el.dataset.broken;
+  if (fits() || el.querySelector(".katex-error")) return false;
   el.textContent = "";
-  for (const row of alignedRows(tex)) {
+  // too wide as the engine broke it too: each row whole (its continuation lines joined), broken by KaTeX where
+  // this box needs, rather than a line the engine broke for another width ("− m g z" alone after a gap)
+  for (const row of alignedRows(joined)) {
     const line = document.createElement("div");
     line.className = "math-line";
     // a row holding a fraction keeps a clear gap from its neighbours (site.css; prof-l 9), as spacedRows gives a

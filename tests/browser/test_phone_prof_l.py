@@ -98,8 +98,9 @@ def test_the_playgrounds_positions_have_the_width_on_a_phone(browser, live_serve
 GAP = """() => {
   const step = [...document.querySelectorAll('li.step')].find((s) => s.querySelector('.step-title')?.textContent === 'Accelerations');
   const box = step.querySelector('.math-display');
-  // the outermost fractions (θ̈₁'s and θ̈₂'s), not those inside them
-  const fracs = [...box.querySelectorAll('.mfrac')].filter((f) => !f.parentElement.closest('.mfrac'));
+  // the outermost fractions (θ̈₁'s and θ̈₂'s), not those inside them nor the invisible copies of the rows that
+  // hold the room below them (spacedRows' \vphantom, KaTeX's .rlap)
+  const fracs = [...box.querySelectorAll('.mfrac')].filter((f) => !f.parentElement.closest('.mfrac, .rlap'));
   const lines = fracs.map((f) => f.querySelector('.frac-line').getBoundingClientRect());
   // the glyphs' boxes (each text's font box) below θ̈₁'s fraction line and above θ̈₂'s
   const glyphs = (f) => {
@@ -140,8 +141,8 @@ ACCELERATIONS = """async () => {
   step.scrollIntoView();
   await new Promise((r) => setTimeout(r, 500));
   const box = step.querySelector('.math-display');
-  // the outermost fractions' numerators: how many lines each is set on
-  const fracs = [...box.querySelectorAll('.mfrac')].filter((f) => !f.parentElement.closest('.mfrac'));
+  // the outermost fractions' numerators (not the invisible copies of spacedRows): how many lines each is set on
+  const fracs = [...box.querySelectorAll('.mfrac')].filter((f) => !f.parentElement.closest('.mfrac, .rlap'));
   return { wide: box.scrollWidth - box.clientWidth, errors: box.querySelectorAll('.katex-error').length,
            fractions: fracs.length, broken: box.dataset.broken === 'true',
            rows: fracs.map((f) => [...f.querySelectorAll('.mtable .col-align-l > .vlist-t > .vlist-r > .vlist > span')]
