@@ -173,6 +173,14 @@ function relationAt(row, i) {
  *  condition δq(t₀) = δq(t₁) = 0) is one group in braces: nothing inside braces breaks.  ``loose``: for a row
  *  wider than its box however it breaks so, a break after a relation as well (not after a wide space's first),
  *  rather than a box that scrolls sideways. */
+/** Whether a + or − written after ``out`` joins two terms (binary), not a sign of the term after a relation, an
+ *  opening bracket, a comma, another sign, or at the start. */
+function binaryAt(out) {
+  const before = out.trimEnd();
+  if (!before || /\\nobreak$/.test(before) || /\\allowbreak$/.test(before)) return false;
+  return !/[=(\[{,+\-&<>]$|\\(left[.(\[|]?|quad|qquad|,|;|:|!|le|ge|leq|geq|approx|equiv|to|cdot|times)$/.test(before);
+}
+
 export function breakable(row, loose = false) {
   let out = "";
   let braces = 0;
@@ -210,6 +218,13 @@ export function breakable(row, loose = false) {
     // a joining word of prose at the top level (\text{ with }, its leading space says it joins): a break before it
     if (top && /^\\text\{\s/.test(row.slice(i)) && out.trim() !== "") {
       out += "\\allowbreak ";
+    }
+    // a + or − between two terms at the top level: the break goes before it, never after, so that a line's end
+    // never holds a sign the next line needs, and the next line begins with it, as a textbook sets it (prof-p 1: the
+    // wedge's H cut after a "−" that sat past a phone's edge)
+    if ((c === "+" || c === "-") && top && binaryAt(out)) {
+      out += `\\allowbreak ${c}\\nobreak `;
+      continue;
     }
     if (c === "\\" && i + 1 < row.length) {
       // a control word or symbol kept whole (\left<, \{ are not relations)

@@ -46,10 +46,22 @@ def test_no_row_may_end_a_line_with_a_relation():
     assert condition.startswith(r"\delta S =\nobreak  0")
     # a chain a = b = c: each relation holds its right side; the second may begin the next line instead
     chained = node("(m, row) => m.breakable(row)", r"E = \frac{a}{b} = c + d \approx 5.7")
-    assert chained == r"E =\nobreak  \frac{a}{b} \allowbreak =\nobreak  c + d \allowbreak \approx\nobreak  5.7"
+    assert chained == r"E =\nobreak  \frac{a}{b} \allowbreak =\nobreak  c \allowbreak +\nobreak  d \allowbreak \approx\nobreak  5.7"
     # only a row wider than its box however it breaks so is broken after a relation as well (the page's second try)
     loose = node("(m, row) => m.breakable(row, true)", r"E = \frac{a}{b} = c + d \approx 5.7")
-    assert loose == r"E = \frac{a}{b} = c + d \allowbreak \approx\nobreak  5.7"
+    assert loose == r"E = \frac{a}{b} = c \allowbreak +\nobreak  d \allowbreak \approx\nobreak  5.7"
+
+
+def test_a_line_breaks_before_a_sign_never_after_it():
+    """prof-p 1: on a phone the wedge's H broke after its "−", which sat past the box's edge, and the next line
+    began "m g D sin α" with no sign. A + or − between terms at the top level allows a break before it and holds
+    the term after it; a sign after a relation, an opening bracket or inside braces or brackets is left alone."""
+    row = r"H = \frac{p^{2}}{2 m} - m g D \sin {\alpha} + \left(a - b\right) + x_{1 - k}"
+    assert node("(m, row) => m.breakable(row)", row) == (
+        r"H =\nobreak  \frac{p^{2}}{2 m} \allowbreak -\nobreak  m g D \sin {\alpha} \allowbreak +\nobreak  "
+        r"\left(a - b\right) \allowbreak +\nobreak  x_{1 - k}"
+    )
+    assert node("(m, row) => m.breakable(row)", r"f = - 4 m g") == r"f =\nobreak  - 4 m g"
 
 
 def test_stacked_fractions_get_room_between_their_rows():
