@@ -196,18 +196,20 @@ function watchProgress() {
   const line = document.getElementById("derive-now");
   const part = document.getElementById("derive-part");
   const stop = document.getElementById("derive-cancel");
-  const state = { stopped: false, timer: null };
+  const state = { stopped: false, timer: null, ended: false };
   if (!line || !derived.dataset.progressUrl) return { end() {}, state };
   const seconds = (x) => `${Math.round(x)} s`;
   async function poll() {
     try {
       const now = await fetchJSON(derived.dataset.progressUrl);
+      // an answer that arrives after the watch ended (the derivation finished or was stopped) shows nothing
+      if (state.ended) return;
       if (now.running) {
         part.textContent = `Now: ${now.part} (for ${seconds(now.part_seconds)}; ${seconds(now.seconds)} in all).`;
         line.hidden = false;
       }
     } catch { /* the next second asks again */ }
-    state.timer = setTimeout(poll, 1000);
+    if (!state.ended) state.timer = setTimeout(poll, 1000);
   }
   stop.addEventListener("click", async () => {
     stop.disabled = true;
@@ -221,7 +223,7 @@ function watchProgress() {
     }
   });
   state.timer = setTimeout(poll, 1000);
-  return { end() { clearTimeout(state.timer); line.hidden = true; }, state };
+  return { end() { state.ended = true; clearTimeout(state.timer); line.hidden = true; }, state };
 }
 
 async function fillIn() {

@@ -13,7 +13,7 @@ from __future__ import annotations
 # the server starts.
 import sympy as sp
 
-from app.engine import notation
+from app.engine import notation, report
 from app.engine.forms import textbook_form
 from app.service.export.action_cells import action_cells
 from app.service.export.code import (
@@ -172,7 +172,9 @@ def notebook(source: Source) -> str:
     cells.append(_md("## Generalized momenta", "p = ∂L/∂q̇ for each coordinate."))
     # each momentum named after its coordinate, as on the page: p_θ₁ (not after the velocity)
     cells.append(_code("for qk, pk in zip(q, p):", "    show('p_{' + sp.latex(qk, symbol_names=LATEX) + '}', pk)"))
-    cells.append(_engine("momenta", naming.code_list(map(form, eqs.momenta)), "p"))
+    # grouped by velocity as the page prints them ((M + m)Ẋ + mḊ cos α): one rule (report.momentum), so that a
+    # notebook made in a worker and one made in this process print the same momenta
+    cells.append(_engine("momenta", naming.code_list(report.momentum(d, k) for k in range(len(eqs.momenta))), "p"))
 
     energy_lines = ["h = sum(pk * vk for pk, vk in zip(p, v)) - L", "show('h', h)"]
     if m.T is not None:
