@@ -12,19 +12,20 @@ def derive(client, body):
     return response.json()
 
 
+# a charge e in a uniform magnetic field B along z (vector potential ½B(−y, x, 0)), no potential
+CHARGE_IN_FIELD = {
+    "coordinates": ["x", "y"],
+    "parameters": ["m", "B", "e"],
+    "lagrangian": "m*(x_dot**2 + y_dot**2)/2 + e*B*(x*y_dot - y*x_dot)/2",
+}
+
+
 def steps(doc, prefix):
     return [s for s in doc["steps"] if s["key"].startswith(prefix)]
 
 
 def test_a_charge_in_a_uniform_magnetic_field_is_at_rest_anywhere(client):
-    doc = derive(
-        client,
-        {
-            "coordinates": ["x", "y"],
-            "parameters": ["m", "B", "e"],
-            "lagrangian": "m*(x_dot**2 + y_dot**2)/2 + e*B*(x*y_dot - y*x_dot)/2",
-        },
-    )
+    doc = derive(client, CHARGE_IN_FIELD)
     (eq,) = steps(doc, "equilibria")
     assert r"\text{every configuration is an equilibrium}" in eq["latex"]
     # not one point picked out as if it were the only one
@@ -38,14 +39,7 @@ def test_a_charge_in_a_uniform_magnetic_field_is_at_rest_anywhere(client):
 def test_a_charge_in_a_magnetic_field_has_its_squares_completed_and_its_potential_named_as_on_the_page(client):
     # prof-n 9: H printed (B²e²x²/4 + B²e²y²/4 + Be p_x y − Be p_y x + p_x² + p_y²)/(2m), and "V does not depend"
     # beside rows that write U_eff
-    doc = derive(
-        client,
-        {
-            "coordinates": ["x", "y"],
-            "parameters": ["m", "B", "e"],
-            "lagrangian": "m*(x_dot**2 + y_dot**2)/2 + e*B*(x*y_dot - y*x_dot)/2",
-        },
-    )
+    doc = derive(client, CHARGE_IN_FIELD)
     (H,) = steps(doc, "hamiltonian-pq")
     shown = H["latex"].split("=")[-1].replace(" ", "")
     assert r"\left(p_{y}-Bex/2\right)^{2}" in shown and r"\left(Bey/2+p_{x}\right)^{2}" in shown
