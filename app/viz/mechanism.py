@@ -34,7 +34,10 @@ class Family:
     # position uses t or a coordinate moves with the run and is drawn again at every frame
     curves: tuple[tuple[str, str, str, tuple[str, str, str], str], ...] = ()
     solids: tuple[tuple[str, tuple[str, ...]], ...] = ()  # (label, corner labels): a filled body (a ramp, a wedge)
-    wheels: tuple[tuple[str, str, str], ...] = ()  # (centre label, radius, "top" | "bottom": where the string wraps)
+    # (centre label, radius, "top" | "bottom" | "none": where a string wraps, if any[, the wheel's turning angle]):
+    # a wheel given its angle (a massive pulley, a rolling cylinder) is drawn with a spoke turned by it, so that
+    # its rotation is seen; the angle is counter-clockwise in the view, as the body's declared angle
+    wheels: tuple[tuple[str, ...], ...] = ()
     points: tuple[tuple[str, tuple[str, str, str]], ...] = ()  # replaces the particles when given
     axis_names: tuple[str, ...] = ("x", "y", "z")
     slack: str = ""  # the constraint force whose negative value means the strings are slack
@@ -481,8 +484,11 @@ def mechanism(
             )
         for name, corners in family.solids:
             spec.solids.append({"label": name, "corners": [index[c] for c in corners]})
-        for centre, radius, wrap in family.wheels:
-            spec.wheels.append({"at": index[centre], "radius": of_text(radius), "wrap": wrap})
+        for centre, radius, wrap, *turn in family.wheels:
+            wheel = {"at": index[centre], "radius": of_text(radius), "wrap": wrap}
+            if turn:
+                wheel["turn"] = of_text(turn[0])
+            spec.wheels.append(wheel)
     except TreeError:
         return None
     where = dict(family.applied)

@@ -64,7 +64,7 @@ export class Player {
     this.tilts = spec.points.map((p) => (p.block ? compile(p.block) : null)); // blocks: the slope they rest on
     this.masses = spec.points.map((p, i) => (p.mass ? i : -1)).filter((i) => i >= 0);
     this.fixed = spec.points.map((p, i) => (p.mass || p.hidden ? -1 : i)).filter((i) => i >= 0);
-    this.wheels = (spec.wheels || []).map((w) => ({ ...w, r: compile(w.radius) }));
+    this.wheels = (spec.wheels || []).map((w) => ({ ...w, r: compile(w.radius), turn: w.turn ? compile(w.turn) : null }));
     this.showForces = root.querySelector("input.show-forces");
     this.showForces?.addEventListener("change", () => { if (this.run) this.draw(this.index); });
     this.selected = 0;

@@ -48,23 +48,35 @@ export function wheelsAt(player, i) {
     const [x, y] = player.at(w.at, i);
     // a frame not laid out yet (a folded panel's canvas) may carry a negative scale: the wheel's size is its magnitude
     const r = Math.abs(w.r(player.run.envAt(i)) * player.camera.frame.scale);
-    if (Number.isFinite(r) && r > 0) out.push({ x, y, r, wrap: w.wrap });
+    // the turning angle, counter-clockwise in the view (the canvas's y points down: drawn clockwise on it)
+    const turn = w.turn ? w.turn(player.run.envAt(i)) : null;
+    if (Number.isFinite(r) && r > 0) out.push({ x, y, r, wrap: w.wrap, turn: Number.isFinite(turn) ? turn : null });
   }
   return out;
 }
 
-/** The wheels at instant i: the rim, the hub, and the string wrapped over its top (a fixed pulley) or
- * under its bottom (the movable one); the number drawn. */
+/** The wheels at instant i: the rim, the spokes of one whose turning is given, the hub, and the string wrapped
+ * over its top (a fixed pulley) or under its bottom (the movable one), none for a rolling wheel; the number drawn. */
 export function drawWheels(player, ctx, i, dpr, slack) {
   let count = 0;
   for (const w of wheelsAt(player, i)) {
     const { x, y, r } = w;
     ctx.fillStyle = "#fff"; ctx.strokeStyle = "#6b747e"; ctx.lineWidth = 2 * dpr;
     ctx.beginPath(); ctx.arc(x, y, r, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+    if (w.turn !== null) {
+      // two spokes across the wheel at right angles, one of them dark, turned with the wheel: its rotation seen
+      const c = Math.cos(w.turn), s = -Math.sin(w.turn);
+      ctx.lineWidth = 1.5 * dpr;
+      for (const [dx, dy, colour] of [[c, s, "#1b1f24"], [-s, c, "#9aa3ad"]]) {
+        ctx.strokeStyle = colour; ctx.beginPath();
+        ctx.moveTo(x - r * dx, y - r * dy); ctx.lineTo(x + r * dx, y + r * dy); ctx.stroke();
+      }
+    }
     ctx.fillStyle = "#6b747e"; ctx.beginPath(); ctx.arc(x, y, 3 * dpr, 0, 2 * Math.PI); ctx.fill();
     ctx.strokeStyle = slack ? "#c26100" : "#1b1f24"; ctx.lineWidth = 1.5 * dpr;
     ctx.beginPath();
-    if (w.wrap === "top") ctx.arc(x, y, r, Math.PI, 2 * Math.PI); else ctx.arc(x, y, r, 0, Math.PI);
+    if (w.wrap === "top") ctx.arc(x, y, r, Math.PI, 2 * Math.PI);
+    else if (w.wrap === "bottom") ctx.arc(x, y, r, 0, Math.PI);
     ctx.stroke();
     count++;
   }

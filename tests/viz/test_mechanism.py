@@ -207,3 +207,19 @@ def test_a_surface_given_only_through_the_coordinates_is_said_to_be_undrawn():
     free = mechanism("", [("ball", ("x", "y", "z"))], ["x", "y", "z"], True, defaults={})
     rod = mechanism("", [("bob", ("l*sin(theta)", "0", "-l*cos(theta)"))], ["theta"], False, defaults={"l": 1.0})
     assert "not drawn" not in free["caption"] and "not drawn" not in rod["caption"]
+
+
+def test_a_wheel_given_its_turning_angle_carries_it_and_one_without_does_not(monkeypatch):
+    from app.viz import mechanism as module
+
+    # a disc of radius R rolling along x without slipping: its centre at x, turned by −x/R (clockwise as it rolls)
+    family = module.Family(
+        points=(("disc", ("x", "0", "R")),),
+        wheels=(("disc", "R", "none", "-x/R"),),
+    )
+    monkeypatch.setitem(module.FAMILIES, "rolling-test", family)
+    spec = mechanism("rolling-test", [("disc", ("x", "0", "R"))], ("x",), False)
+    (wheel,) = spec["wheels"]
+    assert wheel["wrap"] == "none"
+    assert evaluate(wheel["turn"], {"x": 0.5, "R": 0.25, "t": 0.0}) == pytest.approx(-2.0)
+    assert "turn" not in spec_of("pulley")["wheels"][0]
