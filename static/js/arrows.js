@@ -180,7 +180,34 @@ export const HANDLE_WORDS_REACH = 40;
  * place on one line that covers the fewest points drawn. One home: the words (labelHandle) and the bodies' labels
  * that keep clear of them (bodies.js) both place them here.
  */
+/** The points in square cells ``cell`` device pixels wide, so that a box asks only the cells it overlaps:
+ * ``count(x0, y0, x1, y1)`` the points inside the closed box (exactly: each point of those cells is compared). The
+ * places tried for the handle's words are thousands, the points drawn as many (a wedge's inside every 8 px): compared
+ * pairwise they cost the sliding wedge 100 ms a frame. */
+export function pointGrid(points, cell) {
+  const cells = new Map();
+  const key = (i, j) => i * 65536 + j;
+  for (const p of points) {
+    const k = key(Math.floor(p[0] / cell), Math.floor(p[1] / cell));
+    const list = cells.get(k);
+    if (list) list.push(p); else cells.set(k, [p]);
+  }
+  const count = (x0, y0, x1, y1, stop = Infinity) => {
+    let n = 0;
+    for (let i = Math.floor(x0 / cell), i1 = Math.floor(x1 / cell); i <= i1; i++) {
+      for (let j = Math.floor(y0 / cell), j1 = Math.floor(y1 / cell); j <= j1; j++) {
+        for (const [x, y] of cells.get(key(i, j)) || []) {
+          if (x >= x0 && x <= x1 && y >= y0 && y <= y1 && ++n >= stop) return n;
+        }
+      }
+    }
+    return n;
+  };
+  return { count, any: (x0, y0, x1, y1) => count(x0, y0, x1, y1, 1) > 0 };
+}
+
 export function handleWordsBox(grip, wide, canvas, placed, dpr, lines = [], wide2 = 0) {
+  const grid = pointGrid(lines, 32 * dpr);
   const gap = (HANDLE_RADIUS + 6) * dpr, clear = 12 * dpr;
   const own = placed.reduce((k, [x, y], j) => (k < 0 || Math.hypot(x - grip.x, y - grip.y) < Math.hypot(placed[k][0] - grip.x, placed[k][1] - grip.y) ? j : k), -1);
   const others = placed.filter((_, j) => j !== own);
@@ -200,7 +227,8 @@ export function handleWordsBox(grip, wide, canvas, placed, dpr, lines = [], wide
     // bodies.js sets beside it, up to 26 px above or below (the pulleys' middle mass lost its label under the words)
     const free = (x0, y0) => away(placed.slice(own, own + 1), ownRoom)(x0, y0) && away(others, LABEL_ROOM * dpr)(x0, y0)
       && away(arrow, 4 * dpr)(x0, y0) && away([[grip.x, grip.y]], (HANDLE_RADIUS + 3) * dpr)(x0, y0);
-    const uncrossed = away(lines, 2 * dpr);
+    // no point drawn inside the box widened by 2 px (as away(lines, 2 px), asked of the grid)
+    const uncrossed = (x0, y0) => !grid.any(x0 - 2 * dpr, y0 - 2 * dpr, x0 + wide + 2 * dpr, y0 + high + 2 * dpr);
     // centred on the handle, moved inside the canvas (on a phone neither side may have room)
     const centred = Math.min(Math.max(0, grip.x - wide / 2), canvas.width - wide);
     // beside the handle first, then one, two, three lines higher or lower: past the bodies hung side by side at the
@@ -245,7 +273,7 @@ export function handleWordsBox(grip, wide, canvas, placed, dpr, lines = [], wide
   }
   // of the places clear of the bodies, the one that covers the fewest points of lines and wheels (the first such in
   // the order above), never simply the first
-  const covered = ([x, y]) => lines.filter(([bx, by]) => bx >= x - 2 * dpr && bx <= x + wide + 2 * dpr && by >= y - 2 * dpr && by <= y + high + 2 * dpr).length;
+  const covered = ([x, y]) => grid.count(x - 2 * dpr, y - 2 * dpr, x + wide + 2 * dpr, y + high + 2 * dpr);
   const right = grip.x + gap, left = grip.x - gap - wide, above = grip.y - high - 2 * dpr;
   const [x0, y0] = one.room.reduce((best, spot) => (best === null || covered(spot) < covered(best) ? spot : best), null)
     // none clear: above, to the right unless that leaves the canvas (as before any body was looked at)
