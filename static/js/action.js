@@ -19,6 +19,7 @@
  * The browser's numbers: static/js/action-live.js.
  */
 import { fetchJSON } from "./api.js";
+import { SETTLE_MS } from "./controls.js";
 import { axis, CONFIG, drawWhenVisible, layout, PALETTE, rateUnit } from "./plotkit.js";
 import { compileLagrangian, focus, focusAlone, liveAction, openingDuration, path, T_STEPS } from "./action-live.js";
 import { focusSentences } from "./action-focus.js";
@@ -35,8 +36,7 @@ function flatWithin(s) {
 }
 
 const CURVE = 41; // ε values on the S(ε) curve
-const REST_MS = 120; // a scene's preview inputs this far apart count as resting (the panel then follows)
-const SETTLE_MS = 250; // the server's numbers are asked for once the input has rested this long
+const ASK_MS = 250; // the server's numbers are asked for once the input has rested this long
 const CONTROLS = 4; // points of a trial path besides its two ends
 const RELAX_STEPS = 200; // steps of the relaxed path
 const FIND_PAD = 0.04; // of τ, either side of the time axis in "Find the path" (room for the end points' markers)
@@ -194,9 +194,17 @@ export class ActionPanel {
     if (!this.fns) { await this.ask(true); return; } // the first answer brings the generated functions
     clearTimeout(this.restTimer);
     // while a slider is dragged every panel repaints from the browser's preview on each input; this one,
-    // the costliest (a new true path and its S(ε) curve), follows once the input rests
-    if (this.previewing) this.restTimer = setTimeout(() => this.update(true), REST_MS);
-    else this.update(true);
+    // the costliest (a new true path and its S(ε) curve), follows once the input rests as long as the server's run
+    // waits (controls.js SETTLE_MS): sooner, a slow drag's next input waited behind it (40–160 ms on a busy machine)
+    if (this.previewing) this.restTimer = setTimeout(() => this.update(true), SETTLE_MS);
+    // the server's run for the settings the rest already drew: the same start and parameters, so the same true path
+    else this.update(!this.live || this.pathKey !== this.keyOf());
+  }
+
+  /** The true path's key: τ, the start and the parameters. */
+  keyOf(y0 = null, k = null) {
+    if (!y0) ({ y0, k } = this.setup());
+    return `${this.T}|${Array.from(y0)}|${Array.from(k)}`;
   }
 
   /** Recompute in the browser; a new path (T, k, start) also asks the server once the input rests. */
@@ -211,7 +219,7 @@ export class ActionPanel {
       const tStar = this.data.kinetic_focus_possible === false ? null : this.focusAt;
       if (!this.TChosen) { this.T = openingDuration(this.tEnd, tStar); this.TInput.value = String(this.T); newPath = true; }
     }
-    const key = `${this.T}|${Array.from(y0)}|${Array.from(k)}`;
+    const key = this.keyOf(y0, k);
     if (newPath || !this.live || this.pathKey !== key) {
       const p = path(this.fns.rhs, y0, k, this.T);
       if (!p) { this.readout.textContent = "The true path leaves the region where L can be evaluated; choose a shorter τ."; return; }
@@ -224,7 +232,7 @@ export class ActionPanel {
       this.pathKey = key; this.cachedPath = p;
       this.server = null;
       clearTimeout(this.timer);
-      this.timer = setTimeout(() => this.ask(false), SETTLE_MS);
+      this.timer = setTimeout(() => this.ask(false), ASK_MS);
     }
     if (newPath || !this.epsilons || this.epsilons[0] !== -this.epsMax) {
       this.epsilons = Array.from({ length: CURVE }, (_, i) => ((2 * i) / (CURVE - 1) - 1) * this.epsMax);
@@ -261,7 +269,7 @@ export class ActionPanel {
 
   settle() {
     clearTimeout(this.timer);
-    this.timer = setTimeout(() => this.ask(false), SETTLE_MS);
+    this.timer = setTimeout(() => this.ask(false), ASK_MS);
   }
 
   /** The request body for the action over [0, tEnd] varying coordinate c (the page's parameters and start). */

@@ -162,7 +162,11 @@ export function setControl(form, name, value) {
  * is wrong instead.  Returns {fire(now), set(values)}: set({name: value, ...}) moves
  * controls as if the user had (dragging a body in the animation does this).
  */
-export function bindControls(form, handlers, delay = 150) {
+/** How long an input rests (ms) before it counts as settled: the server's run is asked for then, and the panels
+ *  that follow only a resting input (the action panel) follow then too. */
+export const SETTLE_MS = 150;
+
+export function bindControls(form, handlers, delay = SETTLE_MS) {
   const { onInput = null, onSettle = () => {}, onInvalid = () => {} } =
     typeof handlers === "function" ? { onSettle: handlers } : handlers;
   let timer = null;
