@@ -14,14 +14,12 @@ answers instead, for the run and the reference, and ``Outcome.path`` says so.
 
 from __future__ import annotations
 
-import os
-import threading
 import time
 from collections.abc import Callable, Sequence
-from concurrent.futures import Future, ThreadPoolExecutor
+from concurrent.futures import Future
 from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 
@@ -50,62 +48,22 @@ class Outcome:
     alongside: Any = None  # what ``run``'s ``alongside`` returned for the final trajectory (None if not called)
 
 
-def _machine_load() -> float:
-    try:
-        return os.getloadavg()[0]
-    except (AttributeError, OSError):  # no load average on this platform: count only our own threads
-        return 0.0
+class Beside(Protocol):
+    """How a run may use a second core, given by its caller (a server counts its busy cores and keeps the
+    threads): ``own()`` is held around the run's own stepping; ``submit(work)`` runs ``work`` (the error
+    estimate's reference) in another thread and returns its future, or None when no core is free (the
+    reference then runs after the run). Without one, a run uses the caller's thread alone."""
+
+    def own(self) -> AbstractContextManager: ...
+
+    def submit(self, work: Callable[[], Trajectory]) -> Future | None: ...
 
 
-IDLE_NEEDED = 0.5  # of a core, on average over the last minute, for a reference to run beside its run
-
-
-class _Cores:
-    """Busy threads of this module (runs and references) against the machine's cores: a reference
-    runs beside its run only while a core is free, since the compiled kernels release the GIL.
-    A core is free when this module's threads leave one and the machine's load average (other
-    processes included) leaves at least half a core idle: on a busy shared machine a second thread
-    only adds switching (measured: 4.0-6.1x /healthz instead of 2.9-4.0x at a load average of 7 on
-    2 cores).  The load average counts this server's own runs of the last minute, so one client
-    sending requests back to back holds it near 1; a threshold of cores - 1 (the rule before) took
-    the second core from that client on a 2-core machine, and its estimate ran after its run."""
-
-    def __init__(self, count: int | None = None, load: Callable[[], float] | None = None) -> None:
-        self.count = count or os.cpu_count() or 1
-        self.load = load  # the machine's load average (``_machine_load`` when not given)
-        self.busy = 0
-        self.lock = threading.Lock()
-
-    def take(self, force: bool = False) -> bool:
-        with self.lock:
-            load = (self.load or _machine_load)()
-            if not force and (self.busy >= self.count or load > self.count - IDLE_NEEDED):
-                return False
-            self.busy += 1
-            return True
-
-    def give(self) -> None:
-        with self.lock:
-            self.busy -= 1
-
-
-CORES = _Cores()
-_AHEAD = ThreadPoolExecutor(max_workers=CORES.count, thread_name_prefix="reference")
-
-
-def _reference_ahead(problem: Problem) -> Future | None:
-    """Start the compiled reference of a non-stiff adaptive run in another thread, if a core is free."""
-    if not CORES.take():
-        return None
+def _reference_ahead(problem: Problem, beside: Beside) -> Future | None:
+    """Start the compiled reference of a non-stiff adaptive run beside it, if the caller has a core free."""
     name, tight = reference_problem(problem, stiff=False, compiled=True)
     tight.max_steps = _budget_for(name)
-    try:
-        future = _AHEAD.submit(METHODS[name].integrate, tight)
-    except RuntimeError:  # the interpreter is shutting down
-        CORES.give()
-        return None
-    future.add_done_callback(lambda _: CORES.give())
-    return future
+    return beside.submit(lambda: METHODS[name].integrate(tight))
 
 
 def _budget_for(method_name: str) -> int:
@@ -135,10 +93,11 @@ def simulate(
     estimate: bool = True,
     wait_for_compile: bool = True,
     events: Sequence[terminal.EventFunction] = (),
+    beside: Beside | None = None,
 ) -> Outcome:
     """Plan and run in one call (scripts and tests); a server plans first to take its throttles (see ``run``)."""
     planned = plan(system, k, y0, t_end, samples, method, rtol, atol, estimate, wait_for_compile)
-    return run(planned, wall_seconds, events=events)
+    return run(planned, wall_seconds, events=events, beside=beside)
 
 
 def run(
@@ -148,8 +107,9 @@ def run(
     events: Sequence[terminal.EventFunction] = (),
     elsewhere: Callable[[Plan, float], Outcome] | None = None,
     alongside: Callable[[Trajectory], Any] | None = None,
+    beside: Beside | None = None,
 ) -> Outcome:
-    """Run a plan under one deadline.  ``python_loop()`` is entered around a Python step loop the plan did not
+    """Run a plan under one deadline, on the caller's thread.  ``python_loop()`` is entered around a Python step loop the plan did not
     foresee (the stiff hand-over to scipy's Radau while the compiled one is not ready); the caller holds it already when ``plan.python_loop``.
 
     ``elsewhere(plan, wall_seconds)``, when given, runs a plan that steps in Python (a scipy method, as
@@ -159,7 +119,10 @@ def run(
 
     ``alongside(trajectory)``, when given, is called on the final trajectory while the reference that
     started beside the main run is still finishing (a server computes the observables there); its
-    result is ``Outcome.alongside``.  A run handed to ``elsewhere`` does not call it."""
+    result is ``Outcome.alongside``.  A run handed to ``elsewhere`` does not call it.
+
+    ``beside`` (see ``Beside``), when given, may run the error estimate's reference in another thread while the
+    run steps; the estimate is the same either way."""
     wall_seconds = limits.WALL_SECONDS if wall_seconds is None else wall_seconds
     if elsewhere is not None and plan.python_loop and plan.path != "scipy-fallback":
         return elsewhere(plan, wall_seconds)
@@ -186,27 +149,27 @@ def run(
 
     problem = Problem(system, k, y0, t, plan.rtol, atol_vector, bounds(system, y0), deadline, _budget_for(name))
     options = {"stop_on_stiff": True} if plan.watch_stiffness else {}
-    # the reference of a non-stiff adaptive compiled run does not depend on the run: start it now
+    # the reference of a non-stiff adaptive compiled run does not depend on the run: with a second core
+    # (``beside``), it starts now
     adaptive = path == "compiled" and not isinstance(chosen, FixedStep)
-    CORES.take(force=True)  # this run's own core
-    ahead = _reference_ahead(problem) if estimate and adaptive and not plan.stiff else None
-    try:
-        trajectory = chosen.integrate(problem, **options)
-    except TooMuchWork as exc:
-        if plan.requested != AUTO:
-            raise
-        if isinstance(chosen, FixedStep):
-            # auto never refuses what another method can do: its symplectic pick past its step limit
-            # hands the run to the adaptive default in what is left of the deadline
-            instead = plan.instead_of_symplectic(_why(exc))
-            return run(instead, max(deadline - time.perf_counter(), 0.0), events=events, elsewhere=elsewhere,
-                       alongside=alongside)  # fmt: skip
-        if exc.partial is None:
-            raise
-        # auto's adaptive run out of budget: it answers with the samples it reached, saying how far it got
-        trajectory = exc.partial
-    finally:
-        CORES.give()
+    start_ahead = estimate and adaptive and not plan.stiff
+    with beside.own() if beside is not None else nullcontext():  # this run's own core
+        ahead = _reference_ahead(problem, beside) if beside is not None and start_ahead else None
+        try:
+            trajectory = chosen.integrate(problem, **options)
+        except TooMuchWork as exc:
+            if plan.requested != AUTO:
+                raise
+            if isinstance(chosen, FixedStep):
+                # auto never refuses what another method can do: its symplectic pick past its step limit
+                # hands the run to the adaptive default in what is left of the deadline
+                instead = plan.instead_of_symplectic(_why(exc))
+                return run(instead, max(deadline - time.perf_counter(), 0.0), events=events, elsewhere=elsewhere,
+                           alongside=alongside, beside=beside)  # fmt: skip
+            if exc.partial is None:
+                raise
+            # auto's adaptive run out of budget: it answers with the samples it reached, saying how far it got
+            trajectory = exc.partial
     if trajectory.stiff_detected and not trajectory.complete and options:
         # the explicit run found h |lambda| at its stability limit for 15 steps in a row: redo it with Radau IIA
         # in what is left of the deadline (the reference started beside it is dropped)
@@ -214,7 +177,7 @@ def run(
         with python_loop() if handed.python_loop else nullcontext():
             outcome = run(
                 handed, max(deadline - time.perf_counter(), 0.0), events=events, elsewhere=elsewhere,
-                alongside=alongside,
+                alongside=alongside, beside=beside,
             )  # fmt: skip
         outcome.compile_seconds += compile_seconds
         return outcome

@@ -10,6 +10,7 @@ from typing import Any
 from app.numerics.plan import Plan
 from app.numerics.simulate import Outcome, run
 from app.scenes import SCENES
+from app.service.cores import CORES
 
 
 def load_scenes() -> int:
@@ -27,4 +28,4 @@ def run_scene_plan(scene_id: str, portable: dict[str, Any], wall_seconds: float)
 
     system, _ = PROCESS_SCENES.system(scene_id)
     events = PROCESS_SCENES.compiled.events(SCENES[scene_id], system)
-    return run(Plan.rebuilt(system, portable), wall_seconds, events=events)
+    return run(Plan.rebuilt(system, portable), wall_seconds, events=events, beside=CORES)

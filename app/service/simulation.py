@@ -31,6 +31,7 @@ from app.numerics.simulate import Outcome, run
 from app.numerics.start import why_not_at_start
 from app.scenes import SCENES, Scene
 from app.service.compiled import Compiled
+from app.service.cores import CORES
 from app.service.gates import GATES, SLOTS, Gates
 from app.service.scene_jobs import load_scenes, run_scene_plan
 from app.service.simulate_request import (
@@ -123,7 +124,7 @@ def simulate_derivation(
         held.enter_context(gates.any())
         outcome = run(
             planned, gates.wall_seconds, python_loop=gates.python_loop, events=compiled.events(scene, system),
-            elsewhere=elsewhere,
+            elsewhere=elsewhere, beside=CORES,
             # the series while the error estimate's reference run finishes beside
             alongside=lambda trajectory: observe(system, observables, trajectory, k, rtol, precision),
         )  # fmt: skip

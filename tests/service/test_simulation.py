@@ -210,21 +210,21 @@ def test_scripts_without_a_server_compile_in_line():
 
 
 def test_reference_run_beside_the_run_gives_the_same_estimate(monkeypatch):
-    from app.numerics import simulate as numerics_simulate
+    from app.service import cores
 
     started = []
-    original = numerics_simulate._reference_ahead
+    original = cores.CORES.submit
 
-    def spy(problem):
-        future = original(problem)
+    def spy(work):
+        future = original(work)
         started.append(future is not None)
         return future
 
-    monkeypatch.setattr(numerics_simulate, "_reference_ahead", spy)
-    monkeypatch.setattr(numerics_simulate, "_machine_load", lambda: 0.0)
-    monkeypatch.setattr(numerics_simulate.CORES, "count", 2)
+    monkeypatch.setattr(cores.CORES, "submit", spy)
+    monkeypatch.setattr(cores.CORES, "load", lambda: 0.0)
+    monkeypatch.setattr(cores.CORES, "count", 2)
     beside = simulation.simulate_scene("spherical-pendulum", request(t_end=3.0))
-    monkeypatch.setattr(numerics_simulate.CORES, "count", 1)  # no free core: the reference runs after
+    monkeypatch.setattr(cores.CORES, "count", 1)  # no free core: the reference runs after
     after = simulation.simulate_scene("spherical-pendulum", request(t_end=3.0))
     assert started == [True, False]
     assert beside["stats"]["error_estimate"] == after["stats"]["error_estimate"]
@@ -233,9 +233,9 @@ def test_reference_run_beside_the_run_gives_the_same_estimate(monkeypatch):
 
 @pytest.mark.parametrize(("load", "busy", "free"), [(0.0, 0, True), (1.2, 0, True), (1.6, 0, False), (0.0, 2, False)])
 def test_a_reference_runs_beside_only_while_half_a_core_is_idle(load, busy, free):
-    from app.numerics import simulate as numerics_simulate
+    from app.service.cores import Cores
 
-    cores = numerics_simulate._Cores(2, load=lambda: load)
+    cores = Cores(2, load=lambda: load)
     cores.busy = busy
     assert cores.take() is free
     assert cores.take(force=True) and cores.busy == busy + 1 + free  # a run's own core is always taken
