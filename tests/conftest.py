@@ -1,6 +1,7 @@
 """Shared fixtures: an in-process client for the ASGI app."""
 
 import os
+import re
 
 # No warm-up thread in tests: it would compile and derive beside every test.  Set before the app
 # (and its settings) are imported; the tests that need the start-up behaviour set it up themselves.
@@ -41,3 +42,28 @@ def fresh_mint_budget():
     app.dependency_overrides[fairness_gate] = lambda: gate
     yield gate
     app.dependency_overrides.pop(fairness_gate, None)
+
+
+# a module's own marks, on one line near its top: ``pytestmark = pytest.mark.slow`` or a list of marks
+MODULE_MARKS = re.compile(r"^pytestmark = (.*)$", re.MULTILINE)
+
+
+def excluded_marks(markexpr: str) -> set[str]:
+    """The marks a ``-m`` expression of the form "not a and not b …" leaves out (none for any other form)."""
+    terms = [term.strip() for term in markexpr.split(" and ")] if markexpr else []
+    if not terms or not all(re.fullmatch(r"not \w+", term) for term in terms):
+        return set()
+    return {term.split()[1] for term in terms}
+
+
+def pytest_ignore_collect(collection_path, config):
+    """A module whose own marks the ``-m`` expression leaves out is not even imported: each of its tests would be
+    deselected, and importing the heavy ones took most of the fast tier's time (scripts/test-fast.sh)."""
+    if collection_path.suffix != ".py" or not collection_path.name.startswith("test_"):
+        return None
+    excluded = excluded_marks(config.getoption("markexpr", ""))
+    if not excluded:
+        return None
+    found = MODULE_MARKS.search(collection_path.read_text(encoding="utf-8"))
+    marks = set(re.findall(r"pytest\.mark\.(\w+)", found.group(1))) if found else set()
+    return True if marks & excluded else None

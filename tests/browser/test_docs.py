@@ -4,6 +4,8 @@ from urllib.parse import urlsplit
 
 import pytest
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 
 @pytest.mark.parametrize("path", ["/docs", "/scenes/simple-pendulum", "/playground"])
 def test_no_request_leaves_the_server_and_the_policy_blocks_nothing(page, path):

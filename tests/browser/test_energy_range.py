@@ -3,6 +3,10 @@ size (prof-n 11): the simple pendulum's least U, 0 at the bottom of the swing, p
 
 from __future__ import annotations
 
+import pytest
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 DONE = '#run-status[data-state="ready"], #run-status[data-state="untrusted"], #run-status[data-state="warning"]'
 
 

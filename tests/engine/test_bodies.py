@@ -13,6 +13,8 @@ from app.engine.report import build_steps
 from app.scenes.types import Body, CoordinateChange, Parameter, Particle, System
 from tests.reference import lagranges_method, numerically_equal, reference_accelerations
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 M, m, m1, m2, g, length, R, r, alpha = (
     Parameter(n, 1.0, min=0.1) for n in ("M", "m", "m1", "m2", "g", "l", "R", "r", "alpha")
 )

@@ -9,6 +9,8 @@ import sympy as sp
 
 from app.engine import budget
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 x, y = sp.symbols("x y")
 
 

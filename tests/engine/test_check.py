@@ -29,6 +29,8 @@ from app.scenes import SCENES
 from app.scenes.types import Parameter, Particle, System
 from tests.engine.check_corpus import CORPUS, TYPICAL, USER_SYSTEMS
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 HINTS = {rule.mistake: rule.hint for rule in RULES}
 
 

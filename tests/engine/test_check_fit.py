@@ -17,6 +17,8 @@ from app.scenes import SCENES
 from tests.engine.slip_corpus import SLIPS
 from tests.engine.test_check_slips import derivation, step_problem
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 SPRING_WORDS = re.compile(r"spring|stretch|natural length", re.IGNORECASE)
 
 

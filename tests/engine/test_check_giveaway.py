@@ -15,6 +15,8 @@ import sympy as sp
 from app.engine.check import judge, judge_follow_up
 from tests.engine.test_check_slips import SLIPS, step_problem
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 
 def read(result: dict) -> str:
     """Everything a student reads of a verdict, as one text."""

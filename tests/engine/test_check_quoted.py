@@ -12,6 +12,8 @@ from app.engine.check import CheckError, judge
 from app.engine.exercises import exercise_json
 from tests.engine.test_check_slips import derivation, step_problem
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 
 def nfc(text: str) -> str:
     """Text as the page shows it, with each dotted letter as one character (ÿ₂ typed or composed alike)."""

@@ -17,6 +17,8 @@ from app.scenes import SCENES
 from app.scenes.types import Parameter, Particle, System
 from tests.engine.slip_corpus import CORRECT, NAMED, SLIPS, SYSTEMS
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 
 def system_of(spec: dict) -> System:
     """The engine's declaration of a system given in the API's request shape (with units)."""

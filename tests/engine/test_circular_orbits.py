@@ -21,6 +21,8 @@ from app.numerics.simulate import simulate
 from app.numerics.system import numeric_system
 from app.scenes.types import Parameter, System
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 M_, K_, A_, P = 1.0, 1.0, 2.0, 1.0
 YUKAWA = System(
     coordinates=("r", "phi"),

@@ -13,11 +13,14 @@ from __future__ import annotations
 
 import re
 
+import pytest
 import sympy as sp
 
 from app.engine.derive import derive
 from app.engine.user_system import UserSystem
 from tests.reference import numerically_equal, reference_accelerations
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 ATWOOD = {
     "coordinates": ["x", "y", "z"],

@@ -18,6 +18,8 @@ from app.scenes.types import Constraint, Parameter, Particle, System
 from tests.reference import numerically_equal
 from tests.scenes.common import forces
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 CONSTRAINED = sorted(sid for sid, s in SCENES.items() if s.system.constraints)
 
 

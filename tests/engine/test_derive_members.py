@@ -2,6 +2,7 @@
 
 import pickle
 
+import pytest
 import sympy as sp
 
 from app.engine import derive as derive_module
@@ -13,6 +14,8 @@ from app.engine.derive import derive, value_or
 from app.engine.hamilton import Hamilton
 from app.engine.modes import NormalModes
 from app.scenes import SCENES
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 
 def test_members_are_typed_and_computed_once():

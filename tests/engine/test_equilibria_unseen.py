@@ -25,6 +25,8 @@ from tests.cases import case_list
 from tests.engine import equilibria_systems
 from tests.engine.equilibria_systems import MU, SYSTEMS
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 g = 9.81
 
 

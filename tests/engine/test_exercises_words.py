@@ -13,6 +13,8 @@ from app.engine.exercises import exercise_json, position_note
 from app.engine.names import unicode
 from app.scenes import SCENES
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 
 @pytest.mark.parametrize(
     ("scene_id", "example"),

@@ -2,11 +2,14 @@
 
 import random
 
+import pytest
 import sympy as sp
 
 from app.engine import forms, work
 from app.engine.forms import textbook_form
 from app.engine.symbols import SymbolTable
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 TABLE = SymbolTable(("a", "b", "x1", "x2"), ("m1", "m2", "l1", "l2", "g", "k", "l0", "M"))
 NAMES = TABLE.latex_names()

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import random
 
+import pytest
 import sympy as sp
 from sympy.simplify.fu import TR8
 
@@ -12,6 +13,8 @@ from app.engine.budget import display_budget, memoized
 from app.engine.contract import derivation_json
 from app.engine.derive import derive
 from tests.engine.test_staged import chain
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 x, y, z, a = sp.symbols("x y z a")
 ANGLES = [x, y, z, x - y, 2 * x - 2 * y, x + y - z, 3 * z, x / 2]

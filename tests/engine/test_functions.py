@@ -14,6 +14,8 @@ from app.scenes.types import Parameter, Particle, System
 from app.viz.exprtree import evaluate
 from tests.reference import numerically_equal, reference_accelerations
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 x, y, a = (sp.Symbol(n, real=True) for n in ("x", "y", "a"))
 NAMES = {"x": x, "y": y, "a": a}
 

@@ -13,6 +13,8 @@ from app.scenes import SCENES
 from tests.engine.systems import TEST_SYSTEMS
 from tests.reference import numerically_equal
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 SYSTEMS = {**{f"scene:{k}": s.system for k, s in SCENES.items()}, **TEST_SYSTEMS}
 
 

@@ -7,6 +7,8 @@ import pytest
 from app.engine.check import judge
 from tests.engine.test_check_slips import step_problem
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 
 @pytest.mark.parametrize(
     ("scene", "answer", "part", "square"),

@@ -10,6 +10,8 @@ from app.engine.check import exercises, judge, problem
 from app.scenes import SCENES
 from tests.engine.test_check_slips import derivation
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 POSITION_STEPS = [
     (name, coordinate) for name in (*SCENES, "free-cart", "elastic-pendulum") for step, coordinate in exercises(derivation(name))
     if step == "position"

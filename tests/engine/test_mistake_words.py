@@ -21,6 +21,8 @@ from app.engine.mistake_families import ADDS, LEAVES_OUT
 from app.scenes import SCENES
 from tests.engine.test_check_slips import derivation, step_problem
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 OMITTED = re.compile(r"\b(left out|leaves out|missing)\b")
 ADDED = re.compile(r"\b(added|counted twice)\b")
 

@@ -14,6 +14,8 @@ from app.engine.notation import cartesian_names
 from app.scenes import SCENES
 from app.service.derivations import derivation_document
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 CONSTRAINED = sorted(sid for sid, s in SCENES.items() if s.system.constraints)
 DERIVATION = ["constraints", "multiplier-lagrangian", "multiplier-equation", "multiplier", "constraint-forces"]
 

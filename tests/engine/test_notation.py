@@ -18,6 +18,8 @@ from app.engine import notation
 from app.scenes import SCENES
 from app.service.derivations import derivation, derivation_document
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 # a row's left side: a bare letter, maybe squared (ω², \Omega^2), maybe with a subscript (\omega_{1}, F_{1})
 _NAME = re.compile(r"^\s*&?\s*((?:\\[A-Za-z]+|[A-Za-z])(?:_\{?[0-9A-Za-z]+\}?)?)(?:\^\{?2\}?)?\s*&?=")
 # a unit as the document typesets it: \mathrm{s}^{-2}, \mathrm{kg\,m^{2}\,s^{-1}}

@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+import pytest
+
 from app.engine import progress
 from app.engine.contract import derivation_json
 from app.engine.derive import derive
 from app.scenes import SCENES
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 
 def test_a_derivation_tells_its_parts_in_order():

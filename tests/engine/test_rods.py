@@ -10,6 +10,8 @@ from app.engine.rods import fixed_distances
 from app.scenes import SCENES
 from app.scenes.types import Parameter, Particle, System
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 
 def test_the_double_pendulum_has_a_rod_to_the_pivot_and_one_between_the_bobs():
     assert fixed_distances(derive(SCENES["double-pendulum"].system)) == [{"from": None, "to": 0}, {"from": 0, "to": 1}]

@@ -13,6 +13,8 @@ from app.scenes import SCENES
 from app.scenes.types import Parameter, Particle, System
 from tests.engine.scaling import check_scaled_accelerations, factors_for, scaling_cases
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 G = Parameter("g", 9.81, "m/s²", 0.1, 100.0)
 
 

@@ -10,6 +10,8 @@ from sympy.core.exprtools import Factors
 
 from app.engine import sympy_fixes
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 x, y, z, m, g, l = sp.symbols("x y z m g l")  # noqa: E741
 
 

@@ -12,6 +12,8 @@ from app.engine.check import judge, problem
 from app.engine.derive import derive
 from app.scenes import SCENES
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 
 @cache
 def _problem(scene: str, step: str, coordinate: str | None):

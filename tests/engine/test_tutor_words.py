@@ -20,6 +20,8 @@ from app.engine.mistake_families import kinetic_mistakes, potential_mistakes
 from app.engine.mistake_pieces import travelled
 from app.scenes import SCENES
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 SCENE_IDS = ("simple-pendulum", "double-pendulum")
 # code a student should never read: a name's Python spelling, SymPy's function, Python's power
 CODE = re.compile(r"_d?dot|Abs|\*\*")

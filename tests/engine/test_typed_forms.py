@@ -17,6 +17,8 @@ from app.engine.contract import derivation_json
 from app.engine.derive import derive
 from app.scenes.types import Parameter, Particle, System
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 
 def _kg(name: str, value: float) -> Parameter:
     return Parameter(name, value, "kg", 1e-3, 1e3)

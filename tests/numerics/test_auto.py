@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from app.engine.derive import derive
 from app.numerics import limits as numerics_limits
@@ -13,6 +14,8 @@ from app.numerics.simulate import simulate
 from app.numerics.system import numeric_system
 from app.scenes.types import Parameter, System
 from tests.numerics.extreme_cases import pendulum_period, system_for
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 # two masses on springs, 1e-9 and 1e9: a fast mode (|λ| ≈ 1.4e5/s) far above the slow one (≈ 3e-5/s)
 LOPSIDED = System(

@@ -13,6 +13,8 @@ from app.scenes.types import Parameter, System
 from tests.numerics.extreme_cases import system_for
 from tests.numerics.systems import DOUBLE_PENDULUM
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 KEYS = sorted(SCENES) + ["stiff-spring"]
 
 

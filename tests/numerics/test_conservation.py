@@ -10,6 +10,8 @@ from app.numerics.simulate import simulate
 from app.scenes import SCENES
 from tests.numerics.extreme_cases import system_for
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 RTOL, ATOL = 1e-9, 1e-12
 # relative drift allowed at rtol = 1e-9 over a few seconds: the largest seen is 1.8e-8 (BDF on the
 # tabletop spring); the explicit and symplectic methods stay below 6e-9 (print them with -s)

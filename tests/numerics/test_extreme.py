@@ -8,6 +8,8 @@ from app.scenes import SCENES
 from tests.numerics.extreme_cases import CASES
 from tests.numerics.extreme_cases import run as run_case
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 ALL_SCENES = set(SCENES)
 _results = {}
 

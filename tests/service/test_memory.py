@@ -5,7 +5,11 @@ from __future__ import annotations
 import gc
 import threading
 
+import pytest
+
 from app.service.memory import freeze_imported, freeze_when_done
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 
 def test_what_the_imports_left_is_frozen_at_the_start():

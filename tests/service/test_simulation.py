@@ -15,6 +15,8 @@ from app.service.derivations import derivation
 from app.service.encoding import dumps
 from app.web.errors import problem
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 
 def request(**fields):
     base = {"parameters": {}, "initial": {}, "t_end": None, "method": "auto", "rtol": None, "atol": None, "samples": 50}

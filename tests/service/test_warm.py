@@ -6,9 +6,13 @@ import sys
 import threading
 from pathlib import Path
 
+import pytest
+
 from app.numerics.methods import NONSTIFF
 from app.service import compiled as compiled_systems
 from app.service import gates, simulation, warm_kernels
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 ROOT = Path(__file__).resolve().parents[2]
 

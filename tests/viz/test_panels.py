@@ -6,6 +6,8 @@ from app.scenes import SCENES
 from app.service.derivations import derivation_document
 from app.viz.panels import BY_NAME, NAMES, OPTIONAL, PANELS, Facts, linear_equations, shown
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 
 def facts(scene_id, scene=True):
     doc = derivation_document(scene_id)

@@ -13,6 +13,8 @@ from app.web.deps import checking_service
 from tests.engine.check_corpus import CART_PENDULUM, SPRING_ROD
 from tests.engine.slip_corpus import FREE_CART
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 HINTS = {rule.mistake: rule.hint for rule in RULES}
 
 

@@ -13,6 +13,8 @@ from app.main import app
 from app.web.api_classes import classroom as classroom_dep
 from tests.classes import classroom
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 SCENE = "simple-pendulum"
 WRONG_T = "m*R**2*theta_dot**2"  # twice T: the named mistake missing_half
 RIGHT_T = "m*R**2*theta_dot**2/2"

@@ -11,6 +11,8 @@ import pytest
 
 from tests.web.test_api_classes import RIGHT_T, SCENE, WRONG_T, bearer, check
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 
 @pytest.fixture
 def classes(classes_on_both):

@@ -15,6 +15,8 @@ from app.web.api_classes import classroom as classroom_dep
 from tests.classes import classroom
 from tests.web.test_api_classes import RIGHT_T, SCENE, WRONG_T, bearer, join
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 RIGHT_U = "-m*g*R*cos(theta)"
 SPRING = {"coordinates": ["x"], "parameters": ["m", "k"], "kinetic": "m*x_dot**2/2", "potential": "k*x**2/2"}
 SETUP = "x is the stretch of the spring from its natural length; U = 0 at x = 0."

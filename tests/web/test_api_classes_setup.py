@@ -8,6 +8,8 @@ import pytest
 
 from tests.web.test_api_classes import bearer, new_class
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 SPRING = {"coordinates": ["x"], "parameters": ["m", "k"], "kinetic": "m*x_dot**2/2", "potential": "k*x**2/2"}
 SETUP = "x is the stretch of the spring from its natural length, positive to the right.\nU = 0 at x = 0."
 PENDULUM = {"coordinates": ["theta"], "parameters": ["m", "l", "g", "b"],

@@ -10,6 +10,8 @@ from app.service.export.source import FORMATS
 from tests.service.export.common import USER_SYSTEMS, exported
 from tests.web.test_api_user_hostile import CORPUS
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 STARTS = {"ipynb": "{", "py": "#!/usr/bin/env python3", "tex": "\\documentclass"}
 
 

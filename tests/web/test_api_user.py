@@ -15,6 +15,8 @@ from app.web.deps import user_systems_service
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, REFUSED_REQUESTS, SPINNING_HOOP
 from tests.reference import numerically_equal, reference_accelerations
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 
 def symbols_of(doc):
     names = {"t": sp.Symbol("t", real=True)}

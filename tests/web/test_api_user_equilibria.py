@@ -3,7 +3,10 @@ every configuration (V ≡ 0), a family, none, isolated points in closed form, e
 
 from __future__ import annotations
 
+import pytest
 import sympy as sp
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 
 def derive(client, body):

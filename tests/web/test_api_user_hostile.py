@@ -13,6 +13,8 @@ import pytest
 from app.settings import settings
 from app.web.api_user import MAX_BODY_BYTES
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 CANARY = "/tmp/lagrange-canary-{id}"
 
 

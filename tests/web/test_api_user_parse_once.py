@@ -19,6 +19,8 @@ from app.web.examples_user import DOUBLE_PENDULUM
 from app.web.schemas_user import SystemSpec
 from tests.web.parse_counting import Counted, PicklingPool
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 # a double pendulum no cache holds (a worker keeps its last derivations, and this process is the worker here)
 PENDULUM = {
     **DOUBLE_PENDULUM,

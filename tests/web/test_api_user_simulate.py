@@ -12,6 +12,8 @@ from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING, SIMULATE_EXAMP
 from tests.numerics.systems import LOPSIDED_CHAIN, STIFF_SOFT_CHAIN
 from tests.web.test_api_user_equilibria import CONE_BY_ITS_AXIS
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 
 def simulate(client, body):
     response = client.post("/api/simulate", json=body)

@@ -18,6 +18,8 @@ import pytest
 from app.engine.errors import DerivationError
 from app.service.worker import UNEXPECTED, JobFailed, WorkerPool
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 ROOT = Path(__file__).resolve().parents[2]
 
 

@@ -23,6 +23,8 @@ from app.web.api_classes import classroom as classroom_dep
 from app.web.deps import ServicesDep
 from tests.browser.conftest import live_server  # noqa: F401  (the session's uvicorn server)
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 STUDENTS = 60
 AT_ONCE = 10
 # a loopback address per test, so no other test's joins or sessions count against it

@@ -2,8 +2,12 @@
 
 import inspect
 
+import pytest
+
 from app import main
 from app.service import simulation
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 
 def test_healthz_runs_on_the_event_loop_and_does_no_work():

@@ -9,6 +9,8 @@ import pytest
 
 from app.scenes import SCENES
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 ALL = list(SCENES)
 
 

@@ -10,6 +10,8 @@ import re
 import pytest
 import sympy as sp
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 SCENES_WITH_A_REDUCTION = ["tabletop-spring", "spherical-pendulum", "rotating-parabola", "helix-bead"]
 
 

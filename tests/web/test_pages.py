@@ -22,6 +22,8 @@ from app.viz.panels import NAMES
 from app.web.pages import page_model
 from app.web.prose import prose_html
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 ROOT = Path(__file__).resolve().parents[2]
 
 

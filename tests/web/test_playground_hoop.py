@@ -10,6 +10,8 @@ import pytest
 
 from app.web.playground_form import form_of, query_of
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 R, G, W = 0.5, 9.81, 6.0
 HOOP = {
     "coordinates": ["theta"],

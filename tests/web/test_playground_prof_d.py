@@ -8,6 +8,8 @@ import pytest
 
 from app.web.playground_form import form_of, query_of
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 MAGNETIC = {
     "coordinates": ["x", "y"],
     "parameters": [

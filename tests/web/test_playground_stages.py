@@ -6,9 +6,13 @@ import json
 import re
 from urllib.parse import urlencode
 
+import pytest
+
 from app.service.user_checks import checked, spec_key
 from app.web.playground_form import form_of, query_of, spec_of
 from app.web.playground_stages import first_view, whole_href
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 TRIPLE = {
     "coordinates": ["a", "b", "c"],

@@ -12,6 +12,8 @@ from app.web.limits import BodyLimit
 from app.web.server_options import options
 from app.web.slow_clients import HeaderDeadline
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 SECONDS = 0.5
 
 

@@ -2,9 +2,13 @@
 
 import threading
 
+import pytest
+
 from app.service import user_systems
 from app.service.answers import examples_cache
 from app.web import playground
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 
 def test_examples_are_derived_once_then_loaded_from_disk(tmp_path):

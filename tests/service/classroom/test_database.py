@@ -17,6 +17,8 @@ from app.service.classroom.models import AttemptRow, ClassRow
 from app.settings import Settings
 from tests.postgres import postgres_server  # noqa: F401 - the session fixture
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 TABLES = {"classes", "students", "assignments", "attempts", "class_assignments", "hints", "alembic_version"}
 HEAD = "0010"  # the newest revision
 

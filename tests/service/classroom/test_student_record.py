@@ -16,6 +16,8 @@ from app.service.classroom.grades import gradebook
 from app.service.classroom.reports import own_record, students
 from app.settings import Settings
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 STEPS = [{"step": "kinetic", "coordinate": None}, {"step": "potential", "coordinate": None}]
 ITEMS = [{"item": "simple-pendulum", "system": None, "parameters": {}, "steps": STEPS}]
 RIGHT_T = "m*l**2*theta_dot**2/2"

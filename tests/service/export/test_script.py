@@ -10,6 +10,8 @@ import pytest
 
 from tests.service.export.common import CASES, HOSTILE_TEXT, USER_SYSTEMS, app_end_state, exported
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
+
 ALLOWED_IMPORTS = {"json", "numpy", "sympy", "scipy.integrate"}
 
 
