@@ -160,7 +160,9 @@ def test_the_rolling_cylinder_rests_on_the_wedges_slope_and_turns_as_it_rolls(al
     assert wheel["at"] == 1 and wheel["wrap"] == "none"  # the cylinder is the wheel, and no string wraps it
     top, foot = labels.index("wedge top"), labels.index("wedge foot")
     for X in (-2.0, 0.0, 1.5):
-        env = env_of("rolling-cylinder-wedge", X=X, alpha=alpha, r=r) | _ranges("s", smin, smax) | _ranges("X", -2.0, 1.5)
+        env = (
+            env_of("rolling-cylinder-wedge", X=X, alpha=alpha, r=r) | _ranges("s", smin, smax) | _ranges("X", -2.0, 1.5)
+        )
         (tx, tz), (fx, fz) = at(spec, top, env), at(spec, foot, env)
         slope = math.hypot(fx - tx, fz - tz)
         for s in [smin + (smax - smin) * f for f in (0.0, 0.5, 1.0)]:
