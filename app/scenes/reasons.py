@@ -333,7 +333,7 @@ ROLLING_CYLINDER_WEDGE: dict[str, str] = {
     "derivatives:s": "∂L/∂s = m g sin α is gravity along the slope; ∂L/∂ṡ holds the turning's extra ½ m ṡ.",
     "euler-lagrange": "The first says the total horizontal momentum is constant; the second is the roll, with the friction that makes the cylinder turn hidden in the rolling condition.",
     "mass-matrix": "The mass matrix ℳ is not diagonal: rolling the cylinder pushes the wedge back. Its corner 3m/2 is the cylinder's inertia along the slope, m for its centre and m/2 for its turning.",
-    "accelerations": "Both accelerations are constant. Compared with a block sliding on the same wedge, (M + m) g sin α/(M + m sin² α), the cylinder's denominator gains (M + m)/2 from its turning, so it rolls down more slowly and pushes the wedge back less; with the wedge held fixed (M → ∞) s̈ is 2g sin α/3, a block's g sin α.",
+    "accelerations": "Both accelerations are constant. Halved above and below, s̈ is (M + m) g sin α over M + m sin² α + (M + m)/2: a block sliding on the same wedge has the same over M + m sin² α alone, so the turning adds (M + m)/2 to the denominator, and the cylinder rolls down more slowly and pushes the wedge back less. With the wedge held fixed (M → ∞) s̈ is 2g sin α/3, a block's g sin α.",
     "momenta": "p_X = (M + m) Ẋ + m ṡ cos α is the total horizontal momentum; p_s is not conserved, gravity acts along s.",
     "cyclic": "The floor is uniform, so p_X is conserved: starting from rest, the wedge moves back as the cylinder moves forward, their centre of mass staying at the same horizontal place.",
     "time-dependence": "Nothing is driven, so L has no t.",
