@@ -732,9 +732,11 @@ def _declared_body_alternatives(d: Derivation) -> list[tuple[str, str, sp.Expr, 
             if other is not None:
                 # I_cm of the other kind: the rotation's piece scaled by the ratio of the two moments of inertia
                 wrong = INERTIA[other] * b.mass * b.size**2
+                # the body's own I_cm is what the student works out: named by the slip, shown on request
+                own = Correct("moment of inertia about the axis", b.inertia)
                 out.append((f"rigid.taken_as_{other}.{i}", f"the {label} taken as a {_KIND_WORDS[other]}: I = "
                             f"{spoken(wrong)} in place of a {_KIND_WORDS[b.body.kind]}'s moment of inertia about its "
-                            "axis", sp.expand(b.rotation * (wrong / b.inertia - 1)), sp.Integer(0), None))  # fmt: skip
+                            "axis", sp.expand(b.rotation * (wrong / b.inertia - 1)), sp.Integer(0), own))  # fmt: skip
         centre = set().union(*(c.free_symbols for c in b.centre)) & set(d.table.q)
         for j, position in enumerate(d.mechanics.positions):
             carrier = d.system.particles[j].label or f"mass {j + 1}"
