@@ -667,7 +667,7 @@ def one_denominator(exprs: list[Any], names: Mapping[sp.Symbol, str] | None = No
     taken when they share one denominator, unless the formed ones share one too and are shorter on the whole
     (double angles only where they are shorter): the double pendulum's single-angle forms, over
     l₁(m₁ + m₂ sin²(θ₁ − θ₂)), count 35 and 37 operations against 39 and 39 over l₁(2m₁ + m₂ − m₂ cos(2θ₁ − 2θ₂))."""
-    formed = [textbook_form(e, names) for e in exprs]
+    formed = [_whole_denominator(textbook_form(e, names)) for e in exprs]
     quotients = [e for e in exprs if isinstance(e, sp.Expr)]
     if len(formed) < 2 or len(quotients) < len(formed):
         return formed
@@ -682,6 +682,22 @@ def one_denominator(exprs: list[Any], names: Mapping[sp.Symbol, str] | None = No
     if _same_denominator(formed, moving) and sum(_ops(f)[0] for f in formed) < sum(_ops(p)[0] for p in plain):
         return formed
     return [settle(p, names) for p in plain]
+
+
+def _whole_denominator(expr: Any) -> Any:
+    """A quotient whose denominator is a sum with fractions in it, written with whole numbers there, as a textbook
+    does: a rolling cylinder's s̈ = 2(M + m) g sin α/(3M + m + 2m sin² α), not (M + m) g sin α/(3M/2 + m/2 + m sin² α).
+    Anything else is returned as it is."""
+    if not isinstance(expr, sp.Expr) or not expr.free_symbols:
+        return expr
+    num, den = sp.fraction(expr)
+    if not isinstance(den, sp.Add):
+        return expr
+    # the least common multiple of the denominators of the sum's numbers: (3M/2 + m/2 + m sin² α) × 2
+    scale = sp.ilcm(1, *(sp.fraction(t.as_coeff_Mul()[0])[1] for t in den.args))
+    if scale == 1:
+        return expr
+    return sp.Mul(num * scale, sp.Pow(sp.expand(den * scale), -1))
 
 
 def _differ_by_a_parameter(total: sp.Expr) -> bool:

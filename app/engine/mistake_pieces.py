@@ -29,6 +29,7 @@ from fractions import Fraction
 
 import sympy as sp
 
+from app.engine.bodies import INERTIA
 from app.engine.check_answers import RELATIONS
 from app.engine.derive import Derivation
 from app.engine.dimensions import STIFFNESS_WORDS, Dims, add_dims, dimension, quantity, system_dimensions
@@ -655,6 +656,8 @@ def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp
     c m L² q̇² (a body turning about a pivot: a rod about its end, a disc or a ring about its rim or centre)
     or c m q̇² with c > ½ (a disc or a ring rolling: ½ m v² + ½ I (v/R)²)."""
     T, U = d.mechanics.T, d.mechanics.U
+    if T is not None and d.mechanics.bodies and (d.system.particles or len(d.table.q) != 1):
+        return _declared_body_alternatives(d)
     if T is None or d.system.particles or len(d.table.q) != 1:
         return []
     v = d.table.qd[0]
@@ -702,6 +705,50 @@ def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp
             out.append((f"rigid.rolling_{other}", f"a {other}'s moment of inertia ({spoken(sp.nsimplify(k_other))} m R²)"
                         f" in place of a {body}'s", (m * (1 + sp.nsimplify(k_other)) - a) * v**2 / 2, sp.Integer(0),
                         None))  # fmt: skip
+    return out
+
+
+# the body a student takes a declared body for, by kind: a solid disc (a cylinder) for a thin ring (a hoop), and back
+_MISTAKEN_FOR = {"disc": "ring", "ring": "disc"}
+_KIND_WORDS = {"disc": "solid cylinder", "ring": "hoop"}
+
+
+def _declared_body_alternatives(d: Derivation) -> list[tuple[str, str, sp.Expr, sp.Expr, Correct | None]]:
+    """The slips a declared rigid body invites where it moves with other bodies or in several coordinates (a cylinder
+    rolling on a sliding wedge), read from its own two pieces of T, ½ m v_cm² + ½ I_cm θ̇²: its turning forgotten,
+    a hoop's I for a solid cylinder's (or back), and the motion of the body that carries it left out of v_cm."""
+    out: list[tuple[str, str, sp.Expr, sp.Expr, Correct | None]] = []
+    for i, b in enumerate(d.mechanics.bodies):
+        label = b.body.label or b.body.kind
+        if b.rotation != 0:
+            # T without ½ I_cm θ̇²: the body slides as a point at its centre; its rate said as the rate itself (ṡ/r),
+            # a sign inside dropped as the square drops it
+            rate = -b.turning_rate if b.turning_rate.could_extract_minus_sign() else b.turning_rate
+            rate_words = spoken(rate) if rate.is_Symbol else f"({spoken(rate)})"
+            out.append((f"rigid.turning_forgotten.{i}", f"the {label}'s turning forgotten: T has only ½ m v_cm² for "
+                        f"the motion of its centre, with no ½ I_cm {rate_words}² for its turning about the centre",
+                        -b.rotation, sp.Integer(0), None))  # fmt: skip
+            other = _MISTAKEN_FOR.get(b.body.kind)
+            if other is not None:
+                # I_cm of the other kind: the rotation's piece scaled by the ratio of the two moments of inertia
+                wrong = INERTIA[other] * b.mass * b.size**2
+                # the body's own I_cm is what the student works out: named by the slip, shown on request
+                own = Correct("moment of inertia about the axis", b.inertia)
+                out.append((f"rigid.taken_as_{other}.{i}", f"the {label} taken as a {_KIND_WORDS[other]}: I = "
+                            f"{spoken(wrong)} in place of a {_KIND_WORDS[b.body.kind]}'s moment of inertia about its "
+                            "axis", sp.expand(b.rotation * (wrong / b.inertia - 1)), sp.Integer(0), own))  # fmt: skip
+        centre = set().union(*(c.free_symbols for c in b.centre)) & set(d.table.q)
+        for j, position in enumerate(d.mechanics.positions):
+            carrier = d.system.particles[j].label or f"mass {j + 1}"
+            shared = [q for q in d.table.q if q in centre and any(q in c.free_symbols for c in position)]
+            for q in shared:
+                # v_cm taken relative to the carrier, as if it stood still: the translation without q's rate
+                rate = d.table.qd[d.table.q.index(q)]
+                change = sp.expand(b.translation.xreplace({rate: 0}) - b.translation)
+                if change != 0:
+                    out.append((f"rigid.carrier_left_out.{i}.{j}", f"the {carrier}'s motion left out of the "
+                                f"{label}'s velocity: the {carrier} carries the {label}'s centre, so v_cm has "
+                                f"{unicode(rate.name)} in it as well", change, sp.Integer(0), None))  # fmt: skip
     return out
 
 

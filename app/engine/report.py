@@ -406,9 +406,17 @@ def _body_pieces(bodies: tuple[BodyMotion, ...], pr: Printer) -> list[str]:
         cm = _body_mark(bodies, i)
         name = b.body.label or b.body.kind
         rotation = pr.tex(b.rotation)
+        # a centre moving in two ways at once (a cylinder rolling on a sliding wedge) keeps its v_cm² whole, as a
+        # textbook writes it: ½ m (Ẋ² + ṡ² + 2 Ẋ ṡ cos α), not m (½ Ẋ² + ½ ṡ² + Ẋ ṡ cos α)
+        whole = isinstance(b.speed_squared, sp.Add) and sp.expand(b.mass * b.speed_squared / 2 - b.translation) == 0
+        translation = (
+            rf"\tfrac{{1}}{{2}} {pr.tex(b.mass)} \left({pr.tex(b.speed_squared)}\right)"
+            if whole
+            else pr.tex(b.translation)
+        )
         rows.append(
             rf"T_{{\mathrm{{{name}}}}} = \tfrac{{1}}{{2}} {pr.tex(b.mass)} v_{{{cm}}}^2 + \tfrac{{1}}{{2}} I_{{{cm}}}"
-            rf" {_turning_squared(b, pr)} = {pr.tex(b.translation)}"
+            rf" {_turning_squared(b, pr)} = {translation}"
             + (rf" - {rotation[1:]}" if rotation.startswith("-") else rf" + {rotation}")
         )
     return rows

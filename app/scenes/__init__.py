@@ -2,7 +2,7 @@
 
 from app.scenes.beads import HELIX_BEAD, ROTATING_PARABOLA
 from app.scenes.beyond import COUPLED_OSCILLATORS, DOUBLE_PENDULUM, PHYSICAL_PENDULUM
-from app.scenes.inclines import INCLINE_BLOCK, MOVABLE_INCLINE
+from app.scenes.inclines import INCLINE_BLOCK, MOVABLE_INCLINE, ROLLING_CYLINDER_WEDGE
 from app.scenes.pendulums import DAMPED_PENDULUM, SIMPLE_PENDULUM, SPHERICAL_PENDULUM
 from app.scenes.two_body import PULLEY, RAIL_TWO_BODY, TABLETOP_SPRING
 from app.scenes.types import Body, Constraint, CoordinateChange, Erratum, Event, Parameter, Particle, Scene, System
@@ -19,6 +19,7 @@ SCENES: dict[str, Scene] = {
         RAIL_TWO_BODY,
         PULLEY,
         MOVABLE_INCLINE,
+        ROLLING_CYLINDER_WEDGE,
         ROTATING_PARABOLA,
         COUPLED_OSCILLATORS,
         DOUBLE_PENDULUM,

@@ -1,8 +1,9 @@
-"""Blocks on frictionless inclines: a fixed one, and a wedge free to slide on the floor."""
+"""Blocks on frictionless inclines: a fixed one, and a wedge free to slide on the floor; and a cylinder rolling
+on such a wedge."""
 
 from app.scenes import reasons
 from app.scenes.common import GRAVITY
-from app.scenes.types import Constraint, Erratum, Event, Parameter, Particle, Scene, System
+from app.scenes.types import Body, Constraint, Erratum, Event, Parameter, Particle, Scene, System
 
 MASS = Parameter("m", 1.0, "kg", 0.001, 1000.0, "mass of the block")
 ANGLE = Parameter("alpha", 0.5, "rad", 0.01, 1.5, "angle of the incline above the horizontal")
@@ -160,6 +161,67 @@ MOVABLE_INCLINE = Scene(
                 "does use sin² α."
             ),
             check="point-acceleration:2:z",
+        ),
+    ),
+)
+
+ROLLING_CYLINDER_WEDGE = Scene(
+    id="rolling-cylinder-wedge",
+    coordinate_meanings={
+        "X": "displacement of the wedge along the floor from where it started",
+        "s": "distance the cylinder's centre has moved down the slope, measured along the wedge from where it started",
+    },
+    title="Cylinder rolling on a sliding wedge",
+    section="4.5",
+    family="rolling-wedge",
+    reasons=reasons.ROLLING_CYLINDER_WEDGE,
+    beyond_chapter=True,
+    summary="The sliding wedge again, with a cylinder that rolls: part of its energy goes into turning, and it falls slower.",
+    statement=(
+        "A uniform solid cylinder of mass m and radius r rolls without slipping down the slope of a wedge of mass M "
+        "and angle α; the wedge slides without friction on a horizontal floor. X is the horizontal displacement of "
+        "the wedge from where it started, and s the distance the cylinder's centre has moved down the slope, "
+        "measured along the wedge; rolling without slipping, the cylinder has turned through the angle s/r. "
+        "Heights are measured upward, and U = 0 with the cylinder where it started (s = 0); the wedge does not rise "
+        "or fall. Find the accelerations of the cylinder along the slope and of the wedge, say which momentum is "
+        "conserved, and compare them with those of a block that slides without friction on the same wedge."
+    ),
+    figure=(
+        "A wedge of angle α on a floor, its top corner displaced by X; a cylinder of radius r resting on the slope, "
+        "its centre s down the slope from where it started, turned by s/r as it rolls; arrows mark s along the slope "
+        "and X from where the wedge started, and g."
+    ),
+    system=System(
+        coordinates=("X", "s"),
+        parameters=(
+            Parameter("m", 1.0, "kg", 0.001, 1000.0, "mass of the cylinder"),
+            Parameter("M", 3.0, "kg", 0.001, 1000.0, "mass of the wedge"),
+            Parameter("r", 0.3, "m", 0.01, 10.0, "radius of the cylinder"),
+            GRAVITY,
+            ANGLE,
+        ),
+        # the wedge's top corner, as for the sliding wedge
+        particles=(Particle("M", ("X", "0", "0"), "wedge"),),
+        # the centre is s down the slope from the corner and r out from the slope along its normal (sin α, cos α);
+        # rolling down the slope, to the right in the picture, the cylinder turns clockwise: its angle is −s/r
+        bodies=(
+            Body(
+                "disc",
+                "m",
+                "r",
+                ("X + s*cos(alpha) + r*sin(alpha)", "0", "r*cos(alpha) - s*sin(alpha)"),
+                "-s/r",
+                "cylinder",
+            ),
+        ),
+        potential="-m*g*s*sin(alpha)",
+    ),
+    initial={"X": 0.0, "X_dot": 0.0, "s": 0.0, "s_dot": 0.0},
+    t_end=1.5,
+    # s = 0 puts the cylinder against the top corner: above it the cylinder would leave the slope
+    events=(
+        Event(
+            "top corner", "s", "The cylinder reached the wedge's top corner and leaves its slope; the run ends there."
         ),
     ),
 )

@@ -320,6 +320,36 @@ MOVABLE_INCLINE: dict[str, str] = {
 }
 
 
+ROLLING_CYLINDER_WEDGE: dict[str, str] = {
+    "action": "Cylinder and wedge move so that ∫ L dt is stationary between two configurations; every force is constant, so there is no kinetic focus and the true path is a minimum of the action for every duration.",
+    "positions": "The wedge's top corner is at X; only its horizontal position changes.",
+    "velocities": "The wedge moves along the floor at Ẋ.",
+    "squared-speeds": "The wedge's squared speed is Ẋ² alone.",
+    "bodies": "The cylinder's centre is s down the slope and r out from it, so it moves with the wedge's Ẋ and its own ṡ along the slope, at angle α to each other; rolling without slipping, it turns at the rate ṡ/r, and a uniform solid cylinder's I_cm is m r²/2.",
+    "kinetic": "The centre's motion gives ½ m (Ẋ² + ṡ² + 2 Ẋ ṡ cos α), with the cross term coupling the cylinder to the wedge, and the turning adds ½ (½ m r²)(ṡ/r)² = ¼ m ṡ²: the cylinder's inertia along the slope is 3m/2, not m.",
+    "potential": "The cylinder's centre descends s sin α; the wedge's height does not change.",
+    "lagrangian": "X appears only through Ẋ: the floor is the same everywhere.",
+    "derivatives:X": "∂L/∂X = 0: the horizontal momentum of the pair is conserved.",
+    "derivatives:s": "∂L/∂s = m g sin α is gravity along the slope; ∂L/∂ṡ holds the turning's extra ½ m ṡ.",
+    "euler-lagrange": "The first says the total horizontal momentum is constant; the second is the roll, with the friction that makes the cylinder turn hidden in the rolling condition.",
+    "mass-matrix": "The mass matrix ℳ is not diagonal: rolling the cylinder pushes the wedge back. Its corner 3m/2 is the cylinder's inertia along the slope, m for its centre and m/2 for its turning.",
+    "accelerations": "Both accelerations are constant. Halved above and below, s̈ is (M + m) g sin α over M + m sin² α + (M + m)/2: a block sliding on the same wedge has the same over M + m sin² α alone, so the turning adds (M + m)/2 to the denominator, and the cylinder rolls down more slowly and pushes the wedge back less. With the wedge held fixed (M → ∞) s̈ is 2g sin α/3, a block's g sin α.",
+    "momenta": "p_X = (M + m) Ẋ + m ṡ cos α is the total horizontal momentum; p_s is not conserved, gravity acts along s.",
+    "cyclic": "The floor is uniform, so p_X is conserved: starting from rest, the wedge moves back as the cylinder moves forward, their centre of mass staying at the same horizontal place.",
+    "time-dependence": "Nothing is driven, so L has no t.",
+    "hamiltonian": "T is quadratic in the velocities, so h is T + U.",
+    "energy": "The wedge's kinetic energy, the cylinder's motion and turning, and the cylinder's gravitational energy, −m g s sin α; rolling without slipping does no work, so no energy is lost.",
+    "h-vs-e": _h_is_e("The positions do not depend on t"),
+    **_hamiltonian("the kinetic energy written with the inverse mass matrix, minus m g s sin α"),
+    "cyclic-velocities": "Ẋ follows from the conserved p_X and the cylinder's ṡ.",
+    "effective-potential": "At fixed p_X the roll s moves in a linear potential with a reduced inertia; the term p_X²/(2 (M + m)) is a constant, so only −m g s sin α pushes, and it has no minimum.",
+    "energy-integral": "Energy at fixed p_X gives ṡ from s.",
+    "time-integral": "The integral gives the uniformly accelerated roll s(t).",
+    "reduced-equilibria": "U_eff′ is constant and non-zero: the cylinder always rolls.",
+    "equilibria": "The slope cannot hold the cylinder still, so there is none.",
+}
+
+
 ROTATING_PARABOLA: dict[str, str] = {
     "action": "Along the turning wire the bead moves so that ∫ L dt is stationary, the wire's rotation built into L; whether it stays the least for long times depends on whether gravity or the spin wins.",
     "positions": "The bead is at signed horizontal distance ρ from the axis on the parabola z = α ρ² (negative on the other branch), turned by the angle ω t.",

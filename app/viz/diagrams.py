@@ -30,6 +30,7 @@ FAMILIES: dict[str, Family] = {
     "rotating-wire": swing.rotating_parabola,
     "incline": blocks.incline,
     "wedge": blocks.movable_incline,
+    "rolling-wedge": blocks.rolling_wedge,
     "tabletop-spring": blocks.tabletop,
     "two-body-rail": blocks.rail_two_body,
     "pulleys": blocks.pulley,

@@ -52,9 +52,9 @@ def incline(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ())
     return svg
 
 
-def movable_incline(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
-    svg = Svg()
-    alpha = p.get("alpha", math.pi / 6)
+def _wedge_on_floor(svg: Svg, alpha: float) -> tuple[float, float, float]:
+    """The hatched floor and a wedge of angle alpha on it, its slope falling to the right from the top corner; its
+    mass M and the angle marked. Returns the top corner (x, y) and the wedge's height."""
     floor = 206.0
     svg.line(10, floor, 310, floor, INK, 2)
     for i in range(16):
@@ -62,10 +62,22 @@ def movable_incline(p: dict[str, float], q: dict[str, float], marks: Sequence[st
     x0, base = 86.0, 200.0
     height = min(base * math.tan(alpha), 150.0)
     base = height / math.tan(alpha)
-    apex = (x0, floor - height)
-    svg.polygon([(x0, floor), (x0 + base, floor), apex], fill="#eef1f4")
+    svg.polygon([(x0, floor), (x0 + base, floor), (x0, floor - height)], fill="#eef1f4")
     svg.text(x0 + base * 0.32, floor - height * 0.22, "M", PARAM, 16)
     _angle_mark(svg, x0 + base, floor, alpha, "α", leftward=True)
+    # the wedge's displacement X along the floor, from where it started
+    svg.line(20, floor - 6, 20, floor - 60, GUIDE, 1.2, dash=True)
+    svg.arrow(20, floor - 40, x0, floor - 40, color=ACCENT)
+    svg.text(48, floor - 52, "X", ACCENT, 17)
+    svg.arrow(290, 40, 290, 76, color=PARAM)
+    svg.text(302, 60, "g", PARAM)
+    return x0, floor - height, height
+
+
+def movable_incline(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
+    svg = Svg()
+    alpha = p.get("alpha", math.pi / 6)
+    *apex, height = _wedge_on_floor(svg, alpha)
     d = 0.45 * height / math.sin(alpha)
     bx, by = apex[0] + d * math.cos(alpha), apex[1] + d * math.sin(alpha)
     cx, cy = _block_on_slope(svg, bx, by, -alpha)
@@ -78,11 +90,36 @@ def movable_incline(p: dict[str, float], q: dict[str, float], marks: Sequence[st
         color=ACCENT,
     )
     svg.text((apex[0] + bx) / 2 + 22, (apex[1] + by) / 2 - 30, "D", ACCENT, 17)
-    svg.line(20, floor - 6, 20, floor - 60, GUIDE, 1.2, dash=True)
-    svg.arrow(20, floor - 40, x0, floor - 40, color=ACCENT)
-    svg.text(48, floor - 52, "X", ACCENT, 17)
-    svg.arrow(290, 40, 290, 76, color=PARAM)
-    svg.text(302, 60, "g", PARAM)
+    return svg
+
+
+def rolling_wedge(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
+    """The sliding wedge with a cylinder rolling on its slope: the cylinder drawn as a disc touching the slope,
+    its radius r to the point of contact, a spoke that turns with it and the way it turns as it rolls down."""
+    svg = Svg()
+    alpha = p.get("alpha", math.pi / 6)
+    *apex, height = _wedge_on_floor(svg, alpha)
+    ux, uy = math.cos(alpha), math.sin(alpha)  # down the slope (the drawing's y points down)
+    nx, ny = math.sin(alpha), -math.cos(alpha)  # out of the slope, away from the wedge
+    radius = 22.0
+    # the point of contact, 0.45 of the slope down from the top corner, and the centre r out from it
+    d = 0.45 * height / math.sin(alpha)
+    bx, by = apex[0] + d * ux, apex[1] + d * uy
+    cx, cy = bx + radius * nx, by + radius * ny
+    svg.circle(cx, cy, radius, fill="#c9d8ea")
+    # the radius r to the point of contact, and a spoke across that turns with the cylinder
+    svg.line(cx, cy, bx, by, PARAM, 1.5)
+    svg.text(cx + 0.5 * radius * nx - 8 * ux, cy - 0.5 * radius * ny - 12 * uy + 26, "r", PARAM, 14)
+    svg.line(cx - radius * ux, cy - radius * uy, cx + radius * ux, cy + radius * uy, INK, 1.5)
+    svg.circle(cx, cy, 2.5)
+    svg.text(cx - 1.7 * radius * ux, cy - 1.7 * radius * uy - 6, "m", PARAM, 14)
+    # it turns clockwise as it rolls down the slope, by the angle s/r
+    start = math.atan2(ny, nx)
+    svg.arc(cx, cy, radius + 9, start - 0.9, start + 0.5, arrow=True)
+    # s: the centre's distance down the slope, drawn parallel to the slope beyond the cylinder
+    off = 2 * radius + 16
+    svg.arrow(apex[0] + off * nx, apex[1] + off * ny, cx + (radius + 16) * nx, cy + (radius + 16) * ny, color=ACCENT)
+    svg.text((apex[0] + cx) / 2 + (off + 12) * nx, (apex[1] + cy) / 2 + (off + 12) * ny, "s", ACCENT, 17)
     return svg
 
 

@@ -97,6 +97,10 @@ _TOP = _max(_max("qmax_y1", "qmax_y2"), f"-(qmin_y1 + qmin_y2)/2 - c + {_HANG} +
 # above the corner still has slope under it), the foot a little beyond the block's farthest reach.
 _WEDGE_TOP = "((qmin_D - Abs(qmin_D))/2)"
 _WEDGE_FOOT = "(1.15*Abs(qmax_D) + 0.5)"
+# The rolling cylinder's wedge: as the sliding wedge's, with s for D, and its foot far enough down the slope for the
+# cylinder's point of contact (its centre's s) at the farthest point of the run, and a diameter to spare.
+_ROLL_TOP = "((qmin_s - Abs(qmin_s))/2)"
+_ROLL_FOOT = "(1.15*Abs(qmax_s) + 0.5 + 2*r)"
 # by family (the name a scene gives as ``Scene.family``), never by scene
 FAMILIES: dict[str, Family] = {
     "pendulum": PENDULUM,
@@ -297,6 +301,42 @@ FAMILIES: dict[str, Family] = {
         caption=(
             f"Side view: the wedge sliding on the floor and the block on its slope, with {TRAIL} "
             "(the wedge's trail follows its middle)."
+        ),
+    ),
+    "rolling-wedge": Family(
+        # The sliding wedge's drawing with the block made a cylinder: the wedge drawn at its middle, the cylinder at
+        # its centre, r out from the slope, as a wheel whose spokes turn with it by −s/r (clockwise as it rolls
+        # down, to the right).
+        points=(
+            (
+                "wedge",
+                (
+                    f"X + ({_ROLL_TOP} + {_ROLL_TOP} + {_ROLL_FOOT})*cos(alpha)/3",
+                    "0",
+                    f"-({_ROLL_TOP} + 2*{_ROLL_FOOT})*sin(alpha)/3",
+                ),
+            ),
+            ("cylinder", ("X + s*cos(alpha) + r*sin(alpha)", "0", "r*cos(alpha) - s*sin(alpha)")),
+        ),
+        anchors=(
+            ("wedge top", (f"X + {_ROLL_TOP}*cos(alpha)", "0", f"-{_ROLL_TOP}*sin(alpha)")),
+            ("wedge foot", (f"X + {_ROLL_FOOT}*cos(alpha)", "0", f"-{_ROLL_FOOT}*sin(alpha)")),
+            ("wedge corner", (f"X + {_ROLL_TOP}*cos(alpha)", "0", f"-{_ROLL_FOOT}*sin(alpha)")),
+        ),
+        solids=(("wedge", ("wedge top", "wedge foot", "wedge corner")),),
+        wheels=(("cylinder", "r", "none", "-s/r"),),
+        curves=(
+            (
+                "floor",
+                f"qmin_X + {_ROLL_TOP}*cos(alpha) - 0.5",
+                f"qmax_X + {_ROLL_FOOT}*cos(alpha) + 0.5",
+                ("s", "0", f"-{_ROLL_FOOT}*sin(alpha)"),
+                "ground",
+            ),
+        ),
+        caption=(
+            "Side view: the wedge sliding on the floor and the cylinder rolling down its slope, its two spokes "
+            f"turning with it, with {TRAIL} (the wedge's trail follows its middle)."
         ),
     ),
 }

@@ -158,7 +158,10 @@ export function drawBodies(player, ctx, i, dpr, placed) {
       ctx.lineTo(b[0] + H * nx, b[1] + H * ny); ctx.lineTo(a[0] + H * nx, a[1] + H * ny);
       ctx.closePath(); ctx.fill(); ctx.stroke();
     } else {
-      ctx.beginPath(); ctx.arc(x, y, 10 * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+      // a body that is itself a turning wheel (a rolling cylinder): a small dot at its centre, so that its rim and
+      // its spokes stay in sight; any other body a ball
+      const hub = player.wheels.some((w) => w.at === p && w.turn);
+      ctx.beginPath(); ctx.arc(x, y, (hub ? 5 : 10) * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
     }
     const body = { label: player.spec.points[p].label, x: Math.round(x / dpr), y: Math.round(y / dpr) };
     // a block's base, in CSS pixels (the geometry a test checks against its slope)

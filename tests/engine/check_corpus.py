@@ -335,6 +335,35 @@ CORPUS = [
         "key:kinetic.rigid.rod_point_mass",
     ),
     ("physical-pendulum", "omega_squared", None, "3*g/(2*l)", "correct", None, None),
+    # beyond the chapter: a cylinder rolling on a sliding wedge (issue 42), its T the centre's motion, carried by the
+    # wedge, plus its turning; the turning forgotten leaves out ¼ m ṡ²
+    (
+        "rolling-cylinder-wedge",
+        "kinetic",
+        None,
+        "(M + m)*X_dot**2/2 + m*X_dot*s_dot*cos(alpha) + 3*m*s_dot**2/4",
+        "correct",
+        None,
+        None,
+    ),
+    (
+        "rolling-cylinder-wedge",
+        "kinetic",
+        None,
+        "M*X_dot**2/2 + m*(X_dot**2 + s_dot**2 + 2*X_dot*s_dot*cos(alpha))/2",
+        "incorrect",
+        "-m*s_dot**2/4",
+        "key:kinetic.rigid.turning_forgotten.0",
+    ),
+    (
+        "rolling-cylinder-wedge",
+        "acceleration",
+        "s",
+        "2*(M + m)*g*sin(alpha)/(3*M + m + 2*m*sin(alpha)**2)",
+        "correct",
+        None,
+        None,
+    ),
     # beyond the chapter: the double pendulum and two masses between three springs
     (
         "double-pendulum",
@@ -453,6 +482,30 @@ TYPICAL = [
         "theta1",
         "(m1 + m2)*l1**2*theta1_ddot + m2*l1*l2*cos(theta1 - theta2)*theta2_ddot + (m1 + m2)*g*l1*sin(theta1)",
         "equation.chain_rule.theta2",
+    ),
+    # the cylinder rolling on a sliding wedge: its turning forgotten, taken as a hoop, the wedge's motion left out of
+    # its velocity, each carried into the equation for s
+    (
+        "rolling-cylinder-wedge",
+        "kinetic",
+        None,
+        "M*X_dot**2/2 + m*(X_dot**2 + s_dot**2 + 2*X_dot*s_dot*cos(alpha))/2",
+        "kinetic.rigid.turning_forgotten.0",
+    ),
+    (
+        "rolling-cylinder-wedge",
+        "kinetic",
+        None,
+        "M*X_dot**2/2 + m*(X_dot**2 + s_dot**2 + 2*X_dot*s_dot*cos(alpha))/2 + m*s_dot**2/2",
+        "kinetic.rigid.taken_as_ring.0",
+    ),
+    ("rolling-cylinder-wedge", "kinetic", None, "M*X_dot**2/2 + 3*m*s_dot**2/4", "kinetic.rigid.carrier_left_out.0.0"),
+    (
+        "rolling-cylinder-wedge",
+        "equation",
+        "s",
+        "m*s_ddot + m*X_ddot*cos(alpha) - m*g*sin(alpha)",
+        "equation.rigid.turning_forgotten.0",
     ),
     # the rod's spin about its centre forgotten, its I about the centre put for its I about the pivot, the rod
     # taken as a bob at its end

@@ -597,6 +597,34 @@ NAMED = [
     ("simple-pendulum", "acceleration", "theta", "-g*sin(theta)",
      r"without a factor 1/R.*θ̈ is a squared rate, but −g sin\(θ\) is an acceleration, so it must still be divided by a "
      r"length \(R\)"),
+    # issue 42: a solid cylinder rolling on a sliding wedge, declared as a rigid body: its turning forgotten, taken as
+    # a hoop, the wedge's motion left out of its velocity, the cross term's sign, each named in T and in the equation
+    (
+        "rolling-cylinder-wedge",
+        "kinetic",
+        None,
+        "M*X_dot**2/2 + m*(X_dot**2 + s_dot**2 + 2*X_dot*s_dot*cos(alpha))/2",
+        r"cylinder's turning forgotten.*½ I_cm \(ṡ/r\)²",
+    ),
+    (
+        "rolling-cylinder-wedge",
+        "kinetic",
+        None,
+        "M*X_dot**2/2 + m*(X_dot**2 + s_dot**2 + 2*X_dot*s_dot*cos(alpha))/2 + m*s_dot**2/2",
+        r"taken as a hoop.*I = m r²",
+    ),
+    ("rolling-cylinder-wedge", "kinetic", None, "M*X_dot**2/2 + 3*m*s_dot**2/4", r"wedge's motion left out.*Ẋ"),
+    (
+        "rolling-cylinder-wedge",
+        "kinetic",
+        None,
+        "(M + m)*X_dot**2/2 - m*X_dot*s_dot*cos(alpha) + 3*m*s_dot**2/4",
+        rf"({SIGN}).*Ẋ cos\(α\)",
+    ),
+    ("rolling-cylinder-wedge", "equation", "s", "m*s_ddot + m*X_ddot*cos(alpha) - m*g*sin(alpha)", r"turning forgotten"),
+    ("rolling-cylinder-wedge", "equation", "s", "2*m*s_ddot + m*X_ddot*cos(alpha) - m*g*sin(alpha)", r"hoop"),
+    ("rolling-cylinder-wedge", "equation", "s", "3*m*s_ddot/2 - m*g*sin(alpha)", r"wedge's motion left out"),
+    ("rolling-cylinder-wedge", "equation", "s", "3*m*s_ddot/2 - m*X_ddot*cos(alpha) - m*g*sin(alpha)", SIGN),
 ]
 SLIPS += NAMED
 
@@ -686,6 +714,14 @@ CORRECT = [
     ("physical-pendulum", "omega_squared", None, "3*g/(2*l)"),
     ("physical-pendulum", "potential", None, "M*g*l*(1 - cos(theta))/2"),
     ("rolling-disc", "kinetic", None, "M*x_dot**2/2 + (M*R**2/2)*(x_dot/R)**2/2"),
+    (
+        "rolling-cylinder-wedge",
+        "kinetic",
+        None,
+        "M*X_dot**2/2 + m*(X_dot**2 + s_dot**2 + 2*X_dot*s_dot*cos(alpha))/2 + (m*r**2/2)*(s_dot/r)**2/2",
+    ),
+    ("rolling-cylinder-wedge", "equation", "s", "3*s_ddot + 2*X_ddot*cos(alpha) - 2*g*sin(alpha)"),
+    ("rolling-cylinder-wedge", "acceleration", "s", "2*(M + m)*g*sin(alpha)/(3*M + m + 2*m*sin(alpha)**2)"),
     ("rolling-disc", "omega_squared", None, "2*k/(3*M)"),
     ("rolling-disc", "equation", "x", "x_ddot + 2*k*x/(3*M) - 2*g*sin(alpha)/3"),
     ("elastic-pendulum", "potential", None, "k*(l - r)**2/2 - m*g*r*cos(phi)"),

@@ -22,6 +22,7 @@ pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): ov
         ("double-pendulum", "such as + l₁,"),
         ("coupled-oscillators", "such as + d,"),
         ("physical-pendulum", "such as + l,"),
+        ("rolling-cylinder-wedge", "such as + r,"),
         ("simple-pendulum", "such as + R,"),
         # no length among the wedge's or the rotating wire's parameters: no example, and never an R
         ("movable-incline", "with its units,"),

@@ -154,6 +154,21 @@ PINNED = {  # fmt: skip
             "x2": "(kappa*x1 + x2*(-k - kappa))/m",
         },
     },
+    "rolling-cylinder-wedge": {
+        # the cylinder's ½ m v_cm² + ½ (½ m r²)(ṡ/r)²: its inertia along the slope is 3m/2
+        "kinetic": "X_dot**2*(M + m)/2 + X_dot*m*s_dot*cos(alpha) + 3*m*s_dot**2/4",
+        "potential": "-g*m*s*sin(alpha)",
+        "hamiltonian": "X_dot**2*(M + m)/2 + X_dot*m*s_dot*cos(alpha) - g*m*s*sin(alpha) + 3*m*s_dot**2/4",
+        "equations": [
+            "X_ddot*(M + m) + m*s_ddot*cos(alpha)",
+            "X_ddot*cos(alpha) - g*sin(alpha) + 3*s_ddot/2",
+        ],
+        # over whole numbers, as a textbook prints them: 2(M + m) g sin α/(3M + m + 2m sin² α)
+        "accelerations": {
+            "X": "-2*g*m*sin(alpha)*cos(alpha)/(3*M + 2*m*sin(alpha)**2 + m)",
+            "s": "2*g*(M + m)*sin(alpha)/(3*M + 2*m*sin(alpha)**2 + m)",
+        },
+    },
     "physical-pendulum": {
         "kinetic": "M*l**2*theta_dot**2/6",
         "potential": "-M*g*l*cos(theta)/2",

@@ -74,7 +74,7 @@ def test_which_scenes_have_which_equilibria():
     (conical,) = derivation_document("spherical-pendulum")["normal_modes"]
     assert conical["momenta"] == {"p_phi": pytest.approx(2.0 * math.sin(2.2) ** 2)}
     assert conical["equilibrium"]["theta"] > 0
-    for sid in ("helix-bead", "incline-block", "pulley", "movable-incline"):
+    for sid in ("helix-bead", "incline-block", "pulley", "movable-incline", "rolling-cylinder-wedge"):
         assert kinds[sid] == []
 
 

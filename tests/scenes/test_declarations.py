@@ -23,10 +23,22 @@ TABLE = {
     "double-pendulum": (("theta1", "theta2"), ("m1", "m2", "l1", "l2", "g")),
     "coupled-oscillators": (("x1", "x2"), ("m", "k", "kappa", "d")),
     "physical-pendulum": (("theta",), ("M", "l", "g")),
+    "rolling-cylinder-wedge": (("X", "s"), ("m", "M", "r", "g", "alpha")),
 }
-BEYOND_CHAPTER = {"double-pendulum", "coupled-oscillators", "damped-pendulum", "physical-pendulum"}
+BEYOND_CHAPTER = {
+    "double-pendulum",
+    "coupled-oscillators",
+    "damped-pendulum",
+    "physical-pendulum",
+    "rolling-cylinder-wedge",
+}
 # what the engine must find: cyclic coordinates and whether h = E
-CYCLIC = {"tabletop-spring": ("theta",), "spherical-pendulum": ("phi",), "movable-incline": ("X",)}
+CYCLIC = {
+    "tabletop-spring": ("theta",),
+    "spherical-pendulum": ("phi",),
+    "movable-incline": ("X",),
+    "rolling-cylinder-wedge": ("X",),
+}
 MOVING_CONSTRAINT = {"rotating-parabola"}
 # the rotating parabola too: in the lab frame its bead goes round the axis with the wire
 THREE_D = {"spherical-pendulum", "helix-bead", "rotating-parabola"}

@@ -151,6 +151,35 @@ def test_the_wedge_holds_the_block_on_its_slope_wherever_the_run_takes_it(alpha,
 
 
 @pytest.mark.parametrize("alpha", ALPHAS)
+@pytest.mark.parametrize(("smin", "smax", "r"), [(0.0, 0.0, 0.3), (0.0, 4.0, 0.3), (-1.0, 3.0, 0.05), (0.0, 2.0, 2.0)])
+def test_the_rolling_cylinder_rests_on_the_wedges_slope_and_turns_as_it_rolls(alpha, smin, smax, r):
+    spec = spec_of("rolling-cylinder-wedge")
+    labels = [p["label"] for p in spec["points"]]
+    assert labels[:2] == ["wedge", "cylinder"]
+    (wheel,) = spec["wheels"]
+    assert wheel["at"] == 1 and wheel["wrap"] == "none"  # the cylinder is the wheel, and no string wraps it
+    top, foot = labels.index("wedge top"), labels.index("wedge foot")
+    for X in (-2.0, 0.0, 1.5):
+        env = (
+            env_of("rolling-cylinder-wedge", X=X, alpha=alpha, r=r) | _ranges("s", smin, smax) | _ranges("X", -2.0, 1.5)
+        )
+        (tx, tz), (fx, fz) = at(spec, top, env), at(spec, foot, env)
+        slope = math.hypot(fx - tx, fz - tz)
+        for s in [smin + (smax - smin) * f for f in (0.0, 0.5, 1.0)]:
+            here = env | {"s": s}
+            cx, cz = at(spec, 1, here)
+            assert evaluate(wheel["radius"], here) == pytest.approx(r)
+            # the centre is r above the slope line (on the side away from the wedge), its foot on the slope between
+            # the top corner and the wedge's foot, with a diameter to spare
+            above = ((cz - tz) * (fx - tx) - (cx - tx) * (fz - tz)) / slope
+            assert above == pytest.approx(r)
+            along = ((cx - tx) * (fx - tx) + (cz - tz) * (fz - tz)) / slope
+            assert along == pytest.approx(s - min(smin, 0.0)) and along <= slope - r
+            # rolling down the slope (to the right) it turns clockwise: by −s/r, counter-clockwise in the view
+            assert evaluate(wheel["turn"], here) == pytest.approx(-s / r)
+
+
+@pytest.mark.parametrize("alpha", ALPHAS)
 @pytest.mark.parametrize("xmax", [0.0, 0.5, 3.0, 10.0])
 def test_the_ramp_holds_the_block_from_its_foot_to_the_top_of_the_run(alpha, xmax):
     spec = spec_of("incline-block")
