@@ -406,10 +406,15 @@ def _body_pieces(bodies: tuple[BodyMotion, ...], pr: Printer) -> list[str]:
         cm = _body_mark(bodies, i)
         name = b.body.label or b.body.kind
         rotation = pr.tex(b.rotation)
+        # a centre on a fixed axle (a pulley's) does not move: its piece is 0, and the body only turns
+        pieces = (
+            rotation
+            if b.translation == 0
+            else pr.tex(b.translation) + (rf" - {rotation[1:]}" if rotation.startswith("-") else rf" + {rotation}")
+        )
         rows.append(
             rf"T_{{\mathrm{{{name}}}}} = \tfrac{{1}}{{2}} {pr.tex(b.mass)} v_{{{cm}}}^2 + \tfrac{{1}}{{2}} I_{{{cm}}}"
-            rf" {_turning_squared(b, pr)} = {pr.tex(b.translation)}"
-            + (rf" - {rotation[1:]}" if rotation.startswith("-") else rf" + {rotation}")
+            rf" {_turning_squared(b, pr)} = {pieces}"
         )
     return rows
 

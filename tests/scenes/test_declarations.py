@@ -23,8 +23,9 @@ TABLE = {
     "double-pendulum": (("theta1", "theta2"), ("m1", "m2", "l1", "l2", "g")),
     "coupled-oscillators": (("x1", "x2"), ("m", "k", "kappa", "d")),
     "physical-pendulum": (("theta",), ("M", "l", "g")),
+    "massive-pulley": (("y",), ("m1", "m2", "M", "R", "g", "d")),
 }
-BEYOND_CHAPTER = {"double-pendulum", "coupled-oscillators", "damped-pendulum", "physical-pendulum"}
+BEYOND_CHAPTER = {"double-pendulum", "coupled-oscillators", "damped-pendulum", "physical-pendulum", "massive-pulley"}
 # what the engine must find: cyclic coordinates and whether h = E
 CYCLIC = {"tabletop-spring": ("theta",), "spherical-pendulum": ("phi",), "movable-incline": ("X",)}
 MOVING_CONSTRAINT = {"rotating-parabola"}

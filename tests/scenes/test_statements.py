@@ -29,6 +29,7 @@ ZEROS = {
     "coupled-oscillators": {"x1": 0, "x2": 0},
     "double-pendulum": {"theta1": sp.pi / 2, "theta2": sp.pi / 2},
     "physical-pendulum": {"theta": sp.pi / 2},  # the rod's centre level with the pivot
+    "massive-pulley": {"y": 0},  # the start, both masses level
 }
 
 
