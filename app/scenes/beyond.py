@@ -185,7 +185,7 @@ MASSIVE_PULLEY = Scene(
             Parameter("M", 1.0, "kg", 0.0, 100.0, "mass of the pulley"),
             Parameter("R", 0.2, "m", 0.01, 10.0, "radius of the pulley"),
             GRAVITY,
-            Parameter("d", 3.0, "m", 0.1, 100.0, "depth of the masses below the axle at the start"),
+            Parameter("d", 1.0, "m", 0.1, 100.0, "depth of the masses below the axle at the start"),
         ),
         # heights upward from the masses' starting level, the axle d above it: m₁ on the left side of the rim
         # has gone down by y, m₂ on the right up by y, and the rim (with the string) moved by y, so the pulley
@@ -198,8 +198,9 @@ MASSIVE_PULLEY = Scene(
         potential="-m1*g*y + m2*g*y",
     ),
     initial={"y": 0.0, "y_dot": 0.0},
-    # with the defaults ÿ = g/6: m₂ reaches the axle's level (y = d = 3 m) after about 1.9 s
-    t_end=1.8,
+    # with the defaults ÿ = g/6 ≈ 1.6 m/s², so y = ½ ÿ t² = 0.82 m at 1 s: m₂ would reach the axle's level
+    # (y = d = 1 m) after about 1.1 s, and the run stops just short of it
+    t_end=1.0,
     # a mass that has risen to the axle's level has reached the pulley: the string can run no further
     events=(
         Event(
