@@ -25,6 +25,8 @@ CASES = [
      "−g"),
     ("physical-pendulum", "kinetic", None, "M*l**2*theta_dot**2/2", "the rod taken as a point mass at its end",
      "moment of inertia about the end", "Ml²/3"),
+    ("massive-pulley", "kinetic", None, "(m1 + m2)*y_dot**2/2", "the pulley's turning energy ½ I (ẏ/R)² left out",
+     "moment of inertia of the pulley about its axle", "MR²/2"),
     ("rail-two-body", "potential", None, "k*(x2 - x1 + l0)**2/2", "x₂ − x₁ + l₀: the sign of l₀", "stretch",
      "x₂ − x₁ − l₀"),
     ("double-pendulum", "kinetic", None,
