@@ -755,7 +755,11 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
     # ½ m_eff ṙ² followed by U_eff exactly as the step before prints it (centrifugal piece first)
     rd = table.qd[table.names.index(red.coordinate)]
     u_eff = pr.tex(effective_potential(d), red.momenta[0] if red.momenta else None)
-    kinetic = pr.tex(sp.factor_terms(red.radial_energy - red.effective_potential), rd)
+    # ½ m_eff ṙ² factored, or in its textbook form where that is shorter (½(m₁ + m₂ + M/2) ẏ², as T prints it,
+    # not ¼(M + 2m₁ + 2m₂) ẏ²); a tie keeps the factored one
+    piece = red.radial_energy - red.effective_potential
+    forms = [sp.factor_terms(piece), display(piece)]
+    kinetic = pr.tex(min(forms, key=lambda e: (sp.count_ops(e), forms.index(e))), rd)
     radial = f"{kinetic} {u_eff}" if u_eff.startswith("-") else f"{kinetic} + {u_eff}"
     out: list[dict[str, str]] = []
     if red.cyclic_velocities:

@@ -151,6 +151,9 @@ class _Printer(LatexPrinter):
     def ordered_terms(self, expr: sp.Add, top: bool) -> list[tuple[bool, sp.Expr]]:
         """The terms of a sum as (negative, |term|) in the order the page prints them (the running text's too)."""
         signed = [self.split_sign(t) for t in expr.args]
+        # a sum of constants alone (a mass matrix's entry, m_eff) is ordered as in a bracket, masses first:
+        # m₁ + m₂ + M/2, not M/2 + m₁ + m₂
+        top = top and not all(self.constant(t) for _, t in signed)
         # a bracket whose moving terms are all negative starts with its constants: (2m₁ + m₂ − m₂ cos 2Δ); so
         # does a bracket below a fraction bar, as a textbook writes a determinant: l(M + m sin² φ)
         below = getattr(self, "below", False) and any(not self.constant(t) for _, t in signed)

@@ -198,9 +198,9 @@ MASSIVE_PULLEY = Scene(
         potential="-m1*g*y + m2*g*y",
     ),
     initial={"y": 0.0, "y_dot": 0.0},
-    # with the defaults ÿ = g/6 ≈ 1.6 m/s², so y = ½ ÿ t² = 0.82 m at 1 s: m₂ would reach the axle's level
-    # (y = d = 1 m) after about 1.1 s, and the run stops just short of it
-    t_end=1.0,
+    # with the defaults ÿ = g/6 ≈ 1.6 m/s², so y = ½ ÿ t²: m₂ reaches the axle's level (y = d = 1 m) after about
+    # 1.1 s, where the event below ends the default run; a lighter m₁ runs the other way to the same end
+    t_end=1.5,
     # a mass that has risen to the axle's level has reached the pulley: the string can run no further
     events=(
         Event(

@@ -71,3 +71,11 @@ def test_the_equation_and_the_acceleration_read_as_one_fraction():
         r"\ddot{y} - \frac{\left(m_{1} - m_{2}\right) g}{m_{1} + m_{2} + M / 2} = 0"
     ]
     assert doc["accelerations"]["y"]["latex"] == r"\frac{\left(m_{1} - m_{2}\right) g}{m_{1} + m_{2} + M / 2}"
+
+
+def test_the_inertia_reads_m1_plus_m2_plus_half_m_everywhere():
+    # the mass matrix, m_eff and the energy integral print the inertia as T does, masses first: m₁ + m₂ + M/2
+    steps = {s["key"]: s["latex"] for s in derivation_document("massive-pulley")["steps"]}
+    assert r"\mathcal{M} &= m_{1} + m_{2} + \frac{M}{2}" in steps["mass-matrix"]
+    assert r"m_\text{eff} &= m_{1} + m_{2} + \frac{M}{2}" in steps["effective-potential"]
+    assert steps["energy-integral"].startswith(r"E = \frac{1}{2} \left(m_{1} + m_{2} + \frac{M}{2}\right) \dot{y}^{2}")
