@@ -168,8 +168,8 @@ MASSIVE_PULLEY = Scene(
         "slip on the pulley, so the pulley's rim moves with the string. The masses hang from the two sides of the "
         "rim and are level at the start, a distance d below the axle. The coordinate y is the distance m₁ has "
         "descended from its start: m₂ has then risen by y and the pulley has turned through the angle y/R. "
-        "Heights are measured upward, and U = 0 at the start (y = 0); the pulley's centre does not move, so its "
-        "weight adds nothing to U that changes. Derive the equation of motion, find the acceleration of m₁, and "
+        "Heights are measured upward from the level where the masses start, and U = 0 at the start (y = 0); the "
+        "pulley's centre does not move, so its weight adds nothing to U that changes. Derive the equation of motion, find the acceleration of m₁, and "
         "compare it with the same machine on a massless pulley (M → 0)."
     ),
     figure=(
