@@ -12,9 +12,11 @@ still named by what changed:
 * sin and cos swapped, in one piece or throughout (positions written with them exchanged);
 * the small-angle approximation of an acceleration;
 * a rigid body's moment of inertia (a rod, a disc, a ring: about its centre, about a pivot, as a
-  point mass, its spin forgotten) and a rod's centre at l for l/2, read from T and U typed directly;
+  point mass, its spin forgotten) and a rod's centre at l for l/2, read from T and U typed directly; and a
+  declared wheel on a fixed axle (a massive pulley), read from the body: its turning left out, a ring's I for
+  a disc's (or its mass moving with the string), its centre taken to move;
 * mistakes that travel: a mistake of T or U carried into the equation of motion and into ω²
-  ("your equation follows from a T that …");
+  ("your equation follows from a T that …"), and a rigid body's into the momentum;
 * ω² with one term of U_eff left out or of the wrong sign (the centrifugal term, the spring's).
 
 Every family is bounded by counts (pieces, parameters, candidates), never by time, so the same
