@@ -165,6 +165,12 @@ def _simplest(const: sp.Expr) -> sp.Expr:
         if held is not const:
             return held
         forms = [const, sp.factor_terms(const), sp.factor(const)]
+        # the number most terms carry taken out, the others left over it: M/4 + m₁/2 + m₂/2 is ½(m₁ + m₂ + M/2),
+        # the massive pulley's T, where taking out all of them gives (M + 2m₁ + 2m₂)/4
+        numbers = [t.as_coeff_Mul()[0] for t in const.args]
+        most = max(sorted(set(numbers), key=sp.default_sort_key), key=numbers.count)
+        if most.is_Rational and most not in (1, -1):
+            forms.append(sp.Mul(most, sp.expand(const / most), evaluate=False))
         return min(forms, key=lambda e: (sp.count_ops(e), forms.index(e)))
 
     # a document meets the same coefficient in many candidates (m₁ + m₂ in every row of the double pendulum)

@@ -12,9 +12,11 @@ still named by what changed:
 * sin and cos swapped, in one piece or throughout (positions written with them exchanged);
 * the small-angle approximation of an acceleration;
 * a rigid body's moment of inertia (a rod, a disc, a ring: about its centre, about a pivot, as a
-  point mass, its spin forgotten) and a rod's centre at l for l/2, read from T and U typed directly;
+  point mass, its spin forgotten) and a rod's centre at l for l/2, read from T and U typed directly; and a
+  declared wheel on a fixed axle (a massive pulley), read from the body: its turning left out, a ring's I for
+  a disc's (or its mass moving with the string), its centre taken to move;
 * mistakes that travel: a mistake of T or U carried into the equation of motion and into ω²
-  ("your equation follows from a T that …");
+  ("your equation follows from a T that …"), and a rigid body's into the momentum;
 * ω² with one term of U_eff left out or of the wrong sign (the centrifugal term, the spring's).
 
 Every family is bounded by counts (pieces, parameters, candidates), never by time, so the same
@@ -651,19 +653,58 @@ def masses_of(d: Derivation, known) -> list[sp.Symbol]:
     return _lengths_and_masses(d, known)[1]
 
 
+def axle_alternatives(d: Derivation) -> list[tuple[str, str, sp.Expr, sp.Expr, Correct | None]]:
+    """(key, name, ΔT, ΔU, the correct part) for each declared wheel on a fixed axle (a massive pulley: a disc or a
+    ring whose centre does not move, turned by a string that does not slip), read from the body itself: its
+    turning left out, the other kind's moment of inertia (a disc's turning ½ (M R²)(v/R)² = ½ M v², a ring's, which
+    is also what its whole mass moving with the string would give), and its centre taken to move with the string."""
+    out: list[tuple[str, str, sp.Expr, sp.Expr, Correct | None]] = []
+    for b in d.mechanics.bodies:
+        if b.translation != 0 or b.rotation == 0 or b.body.kind not in ("disc", "ring"):
+            continue
+        name, rate = b.body.label or b.body.kind, spoken(b.turning_rate)
+        # the rim's speed R × (turning rate) is the string's: ½ M (rim speed)² is the whole mass moving with it
+        moving = sp.expand(b.mass * b.size**2 * b.turning_rate**2 / 2)
+        inertia_about_axle = Correct(f"moment of inertia of the {name} about its axle", b.inertia)
+        out.append((
+            "rigid.axle_turning_forgotten", f"the {name}'s turning energy ½ I ({rate})² left out: the string does not "
+            f"slip, so the {name} turns as the string runs, I its moment of inertia about the axle", -b.rotation,
+            sp.Integer(0), inertia_about_axle,
+        ))  # fmt: skip
+        if b.body.kind == "disc":
+            # I = M R² for ½ M R²: the turning energy doubled, ½ M v² for ¼ M v²
+            out.append((
+                "rigid.axle_ring", f"the {name}'s turning energy taken as {spoken(moving)}, as if the {name} were a "
+                f"ring (I = {spoken(b.mass * b.size**2)}) or its whole mass moved with the string, in place of a "
+                f"uniform disc's turning", moving - b.rotation, sp.Integer(0), inertia_about_axle,
+            ))  # fmt: skip
+        else:
+            out.append((
+                "rigid.axle_disc", f"a uniform disc's moment of inertia for the {name}, which is a ring: all its mass "
+                "is at the rim", -b.rotation / 2, sp.Integer(0), inertia_about_axle,
+            ))  # fmt: skip
+        out.append((
+            "rigid.axle_centre_moving", f"the {name}'s centre taken to move with the string ({spoken(moving)} added): "
+            f"the centre is on the fixed axle and does not move, so only the {name}'s turning counts", moving,
+            sp.Integer(0), None,
+        ))  # fmt: skip
+    return out
+
+
 def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp.Expr, Correct | None]]:
     """(key, name, ΔT, ΔU, the correct part the name points at) for the slips a rigid body typed in T (and U) invites, read from T's q̇² terms:
     c m L² q̇² (a body turning about a pivot: a rod about its end, a disc or a ring about its rim or centre)
     or c m q̇² with c > ½ (a disc or a ring rolling: ½ m v² + ½ I (v/R)²)."""
     T, U = d.mechanics.T, d.mechanics.U
+    # a declared wheel on a fixed axle names its own slips, beside the particles the string carries
+    out = axle_alternatives(d)
     if T is not None and d.mechanics.bodies and (d.system.particles or len(d.table.q) != 1):
-        return _declared_body_alternatives(d)
+        return out + _declared_body_alternatives(d)
     if T is None or d.system.particles or len(d.table.q) != 1:
-        return []
+        return out
     v = d.table.qd[0]
     lengths, masses = _lengths_and_masses(d, known)
     a = sp.expand(sp.diff(T, v, 2))  # I or m_eff
-    out: list[tuple[str, str, sp.Expr, sp.Expr, Correct | None]] = []
     for m in masses:
         for L in lengths:
             c = sp.nsimplify(a / (m * L**2))
@@ -719,6 +760,8 @@ def _declared_body_alternatives(d: Derivation) -> list[tuple[str, str, sp.Expr, 
     a hoop's I for a solid cylinder's (or back), and the motion of the body that carries it left out of v_cm."""
     out: list[tuple[str, str, sp.Expr, sp.Expr, Correct | None]] = []
     for i, b in enumerate(d.mechanics.bodies):
+        if b.translation == 0:
+            continue  # a wheel on a fixed axle: axle_alternatives names its slips
         label = b.body.label or b.body.kind
         if b.rotation != 0:
             # T without ½ I_cm θ̇²: the body slides as a point at its centre; its rate said as the rate itself (ṡ/r),
@@ -808,6 +851,16 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
             if change != 0:
                 yield Mistake(f"{step}.{key}", "rigid", name, None, why, truth + change,
                               correct=correct if step == "kinetic" else None)  # fmt: skip
+        return
+    if step == "momentum" and k is not None:
+        # p = ∂L/∂q̇ of a T with a rigid body's slip: p changes by ∂(ΔT)/∂q̇ (the pulley's turning forgotten gives
+        # (m₁ + m₂) ẏ), named as that slip
+        for key, name, dT, dU, correct in rigid:
+            change = sp.expand(sp.diff(dT - dU, d.table.qd[k]))
+            if change != 0:
+                yield Mistake(f"momentum.{key}", "rigid", name, None,
+                              "your momentum is what such a T gives: p = ∂L/∂q̇ keeps every term of T with this "
+                              "velocity in it", truth + change, correct=correct)  # fmt: skip
         return
     if step not in ("equation", "acceleration", "omega_squared"):
         return

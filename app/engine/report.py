@@ -414,10 +414,15 @@ def _body_pieces(bodies: tuple[BodyMotion, ...], pr: Printer) -> list[str]:
             if whole
             else pr.tex(b.translation)
         )
+        # a centre on a fixed axle (a pulley's) does not move: its piece is 0, and the body only turns
+        pieces = (
+            rotation
+            if b.translation == 0
+            else translation + (rf" - {rotation[1:]}" if rotation.startswith("-") else rf" + {rotation}")
+        )
         rows.append(
             rf"T_{{\mathrm{{{name}}}}} = \tfrac{{1}}{{2}} {pr.tex(b.mass)} v_{{{cm}}}^2 + \tfrac{{1}}{{2}} I_{{{cm}}}"
-            rf" {_turning_squared(b, pr)} = {translation}"
-            + (rf" - {rotation[1:]}" if rotation.startswith("-") else rf" + {rotation}")
+            rf" {_turning_squared(b, pr)} = {pieces}"
         )
     return rows
 
@@ -758,7 +763,11 @@ def _reduction_steps(d: Derivation, pr: Printer) -> list[dict[str, str]]:
     # ½ m_eff ṙ² followed by U_eff exactly as the step before prints it (centrifugal piece first)
     rd = table.qd[table.names.index(red.coordinate)]
     u_eff = pr.tex(effective_potential(d), red.momenta[0] if red.momenta else None)
-    kinetic = pr.tex(sp.factor_terms(red.radial_energy - red.effective_potential), rd)
+    # ½ m_eff ṙ² factored, or in its textbook form where that is shorter (½(m₁ + m₂ + M/2) ẏ², as T prints it,
+    # not ¼(M + 2m₁ + 2m₂) ẏ²); a tie keeps the factored one
+    piece = red.radial_energy - red.effective_potential
+    forms = [sp.factor_terms(piece), display(piece)]
+    kinetic = pr.tex(min(forms, key=lambda e: (sp.count_ops(e), forms.index(e))), rd)
     radial = f"{kinetic} {u_eff}" if u_eff.startswith("-") else f"{kinetic} + {u_eff}"
     out: list[dict[str, str]] = []
     if red.cyclic_velocities:

@@ -151,6 +151,9 @@ class _Printer(LatexPrinter):
     def ordered_terms(self, expr: sp.Add, top: bool) -> list[tuple[bool, sp.Expr]]:
         """The terms of a sum as (negative, |term|) in the order the page prints them (the running text's too)."""
         signed = [self.split_sign(t) for t in expr.args]
+        # a sum of constants alone (a mass matrix's entry, m_eff) is ordered as in a bracket, masses first:
+        # m₁ + m₂ + M/2, not M/2 + m₁ + m₂
+        top = top and not all(self.constant(t) for _, t in signed)
         # a bracket whose moving terms are all negative starts with its constants: (2m₁ + m₂ − m₂ cos 2Δ); so
         # does a bracket below a fraction bar, as a textbook writes a determinant: l(M + m sin² φ)
         below = getattr(self, "below", False) and any(not self.constant(t) for _, t in signed)
@@ -388,7 +391,7 @@ def normalised(
     for part, const in groups.items():
         if part == 1:
             # terms free of the coordinates stay separate terms; a single one is written in its simplest form
-            rest += list(sp.Add.make_args(const)) if isinstance(const, sp.Add) else [_simplest(const)]
+            rest += _over_one_sum(const) if isinstance(const, sp.Add) else [_simplest(const)]
         else:
             rest.append(sp.Mul(_simplest(const), part))
     if len(rest) > 1:
@@ -401,6 +404,24 @@ def normalised(
     if leading and leading[0].could_extract_minus_sign():
         out = [-e for e in out]
     return sp.Add(*out, evaluate=False) if len(out) > 1 else out[0]
+
+
+def _over_one_sum(const: sp.Expr) -> list[sp.Expr]:
+    """The constant terms of an equation: separate terms, unless all stand over one sum, which a textbook writes
+    once: ÿ − (m₁ − m₂) g/(m₁ + m₂ + M/2), not ÿ + m₂ g/(m₁ + m₂ + M/2) − m₁ g/(m₁ + m₂ + M/2); a numerator
+    led by a minus written with its sign in front of the fraction."""
+    denominators = {sp.denom(t) for t in const.args}
+    (den,) = denominators if len(denominators) == 1 else (None,)
+    if not isinstance(den, sp.Add):
+        return list(const.args)
+    # each term times the one denominator is its numerator: the numerators added, their common factor out
+    top = sp.factor_terms(sp.Add(*(t * den for t in const.args)))
+    held = [f for f in sp.Mul.make_args(top) if isinstance(f, sp.Add)]
+    if len(held) == 1 and held[0].could_extract_minus_sign():
+        # (m₂ − m₁) g is −(m₁ − m₂) g: the bracket as the acceleration prints it, the sign in front
+        rest = [-f if f is held[0] else f for f in sp.Mul.make_args(top)]
+        return [sp.Mul(-1, *rest, 1 / den, evaluate=False)]
+    return [sp.Mul(top, 1 / den, evaluate=False)]
 
 
 _SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")

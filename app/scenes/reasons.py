@@ -461,3 +461,29 @@ PHYSICAL_PENDULUM: dict[str, str] = {
     "equilibria": "sin θ = 0 with the rod straight down or straight up, and nowhere else.",
     "normal-modes": "Linearising sin θ about each equilibrium gives ω² = 3g/(2l) hanging down and −3g/(2l) standing up.",
 }
+
+
+MASSIVE_PULLEY: dict[str, str] = {
+    "action": "The masses and the pulley move so that ∫ (T − U) dt is stationary between two positions; every force is a constant weight, so there is no kinetic focus and the true motion is a minimum of the action for every duration.",
+    "positions": "The string hangs from the two sides of the rim, R either side of the axle: m₁ has gone down by y and, the string being inextensible, m₂ up by as much.",
+    "velocities": "Both masses move vertically at the string's speed ẏ, m₁ down and m₂ up.",
+    "squared-speeds": "Each mass moves at ẏ, so each squared speed is ẏ².",
+    "bodies": "The pulley's centre is on the fixed axle, so it does not move; the string does not slip, so the rim moves at ẏ and the disc turns at ẏ/R; a uniform disc's I_cm is M R²/2.",
+    "kinetic": "The masses give ½ m₁ ẏ² + ½ m₂ ẏ²; the pulley only turns, ½ (½ M R²)(ẏ/R)² = ¼ M ẏ²: R drops out, and the pulley counts as a mass M/2 moving with the string.",
+    "potential": "m₁ is y lower and m₂ y higher than at the start; the pulley's centre stays at the axle, so its weight adds nothing that changes.",
+    "lagrangian": "T − U with one coordinate: the string and the pulley's grip on it leave the whole machine a single degree of freedom.",
+    "derivatives:y": "∂L/∂y = (m₁ − m₂) g is the net weight pulling the string m₁'s way; ∂L/∂ẏ is the momentum of the masses plus the pulley's angular momentum ½ M R² (ẏ/R) divided by R.",
+    "euler-lagrange": "The net weight (m₁ − m₂) g accelerates all three: the masses with their full m₁ + m₂, the pulley with M/2.",
+    "mass-matrix": "One coordinate: ℳ = m₁ + m₂ + M/2 is the machine's inertia along the string, and f = (m₁ − m₂) g the net weight.",
+    "accelerations": "ÿ = (m₁ − m₂) g/(m₁ + m₂ + M/2), a constant; as M → 0 it becomes the massless pulley's (m₁ − m₂) g/(m₁ + m₂), so a massive pulley slows the machine, and its radius does not matter.",
+    "momenta": "p_y = (m₁ + m₂ + M/2) ẏ: the masses' momenta along the string plus the pulley's angular momentum about the axle divided by R.",
+    "time-dependence": "The axle is fixed and nothing in the set-up changes with time, so L has no t in it.",
+    "hamiltonian": "T is quadratic in ẏ, so h is T + U.",
+    "energy": "The kinetic energy of the masses and of the pulley's turning, plus the masses' gravitational energy.",
+    "h-vs-e": _h_is_e("The positions do not depend on t"),
+    **_hamiltonian("p_y²/(2 (m₁ + m₂ + M/2)) + (m₂ − m₁) g y"),
+    "effective-potential": "With a single coordinate there is nothing to fold in: U_eff is U itself, a straight line in y, and the effective mass m₁ + m₂ + M/2.",
+    "energy-integral": "Energy conservation gives ẏ as a function of y: from rest the speed grows as the square root of the distance run, as under any constant force.",
+    "time-integral": "From rest the integral gives y = ½ ÿ t², the motion under the constant acceleration found above.",
+    "equilibria": "U changes at the constant rate (m₂ − m₁) g: with unequal masses there is no equilibrium, and with m₁ = m₂ every position is one.",
+}

@@ -36,6 +36,7 @@ FAMILIES: dict[str, Family] = {
     "pulleys": blocks.pulley,
     "double-pendulum": swing.double_pendulum,
     "physical-pendulum": swing.physical_pendulum,
+    "disc-pulley": blocks.disc_pulley,
     "three-springs": blocks.coupled_oscillators,
 }
 

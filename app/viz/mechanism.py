@@ -235,6 +235,25 @@ FAMILIES: dict[str, Family] = {
             "would be a sliver, then farther apart; a string with negative tension is drawn slack."
         ),
     ),
+    "disc-pulley": Family(
+        # the pulley's axle d above the level where the masses start (their heights' zero), the masses on vertical
+        # strings from the two sides of the rim; the wheel turns by y/R, counter-clockwise as m₁ on the left goes
+        # down, so that its rim keeps pace with the string
+        fixed=(("axle", ("0", "0", "d")),),
+        anchors=(
+            ("left side", ("-R", "0", "d")),
+            ("right side", ("R", "0", "d")),
+            ("mount", ("0", "0", "d + 2*R")),
+        ),
+        links=(("left side", "#0", "string"), ("right side", "#1", "string"), ("axle", "mount", "rod")),
+        wheels=(("axle", "R", "top", "y/R"),),
+        curves=(("ceiling", "-2*R", "2*R", ("s", "0", "d + 2*R"), "ceiling"),),
+        caption=(
+            "Side view: the pulley on its fixed axle, turning with the string (its two spokes turn with it), and "
+            f"the two masses on vertical strings from the sides of its rim, with {TRAIL}. A run in which a mass "
+            "reaches the pulley ends there."
+        ),
+    ),
     "double-pendulum": Family(
         fixed=(("pivot", ("0", "0", "0")),),
         links=(("pivot", "#0", "rod"), ("#0", "#1", "rod")),

@@ -159,7 +159,7 @@ def test_each_mass_label_sits_nearer_its_mass_than_any_other_body_or_the_handle(
         context.close()
 
 
-@pytest.mark.parametrize("scene_id", ["pulley", "double-pendulum", "rolling-cylinder-wedge"])
+@pytest.mark.parametrize("scene_id", ["pulley", "double-pendulum", "rolling-cylinder-wedge", "massive-pulley"])
 def test_the_handle_words_keep_off_the_wheels_the_bodies_and_their_labels(browser, live_server, artifacts, scene_id):
     # prof-k 12: on a phone the pulleys' "drag: initial velocity (now 0)" lay across the movable pulley; the words
     # stay beside the handle (test_embed_views) and cover no wheel, no body and no body's label
@@ -175,8 +175,8 @@ def test_the_handle_words_keep_off_the_wheels_the_bodies_and_their_labels(browse
         left, top = w["x"] - c["x"], w["y"] - c["y"]
         right, bottom = left + w["width"], top + w["height"]
         wheels = json.loads(canvas.get_attribute("data-wheels") or "[]")
-        # the pulleys' three wheels, the rolling cylinder drawn as one
-        assert len(wheels) == {"pulley": 3, "rolling-cylinder-wedge": 1}.get(scene_id, 0), wheels
+        # the pulleys' three wheels, the rolling cylinder drawn as one, the massive pulley's one
+        assert len(wheels) == {"pulley": 3, "rolling-cylinder-wedge": 1, "massive-pulley": 1}.get(scene_id, 0), wheels
         for x, y, r in wheels:
             # the nearest point of the words' box to the wheel's centre lies outside its rim
             nx, ny = min(max(x, left), right), min(max(y, top), bottom)

@@ -23,6 +23,7 @@ pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): ov
         ("coupled-oscillators", "such as + d,"),
         ("physical-pendulum", "such as + l,"),
         ("rolling-cylinder-wedge", "such as + r,"),
+        ("massive-pulley", "such as + R,"),
         ("simple-pendulum", "such as + R,"),
         # no length among the wedge's or the rotating wire's parameters: no example, and never an R
         ("movable-incline", "with its units,"),
@@ -32,13 +33,16 @@ pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): ov
 def test_the_shift_of_origin_is_shown_with_a_length_of_the_scene(scene_id, example):
     note = position_note(derive(SCENES[scene_id].system))
     assert example in note and "never a bare number" in note
-    if scene_id != "simple-pendulum":
+    if scene_id not in ("simple-pendulum", "massive-pulley"):
         assert "+ R" not in note
 
 
 def test_the_pulleys_coordinates_are_said_to_be_heights():
     note = position_note(derive(SCENES["pulley"].system))
     assert "Here y₁, y₂ are heights (measured up, along z), not the third direction." in note
+    # the massive pulley's y, how far m₁ has gone down, is a vertical distance and not a height
+    note = position_note(derive(SCENES["massive-pulley"].system))
+    assert "Here y is a vertical distance (along z), not the third direction." in note and "height" not in note
     # a scene whose coordinates are no heights named y says nothing of the kind
     assert "height" not in position_note(derive(SCENES["double-pendulum"].system))
 

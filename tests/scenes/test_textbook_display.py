@@ -93,8 +93,9 @@ CHAPTER = sorted(sid for sid, s in SCENES.items() if not s.beyond_chapter or sid
 
 def test_the_scenes_with_reasons_of_their_own_are_the_chapter_and_the_damped_pendulum():
     # and, since prof-g 44 and 51, the coupled oscillators and the double pendulum, whose generic captions went;
-    # and the physical pendulum (issue 42), the first rigid body, and the cylinder rolling on a sliding wedge
-    beyond = ["coupled-oscillators", "double-pendulum", "physical-pendulum", "rolling-cylinder-wedge"]
+    # and the physical pendulum (issue 42), the first rigid body, the cylinder rolling on a sliding wedge and the
+    # massive pulley
+    beyond = ["coupled-oscillators", "double-pendulum", "physical-pendulum", "rolling-cylinder-wedge", "massive-pulley"]
     assert sorted(sid for sid, s in SCENES.items() if s.reasons) == sorted([*CHAPTER, *beyond])
 
 
@@ -116,7 +117,7 @@ def test_lagrangian_and_equations_in_textbook_form(scene_id):
         assert row.replace(" = 0", "") in steps["Euler–Lagrange equations"]
 
 
-@pytest.mark.parametrize("scene_id", [*CHAPTER, "physical-pendulum", "rolling-cylinder-wedge"])
+@pytest.mark.parametrize("scene_id", [*CHAPTER, "physical-pendulum", "rolling-cylinder-wedge", "massive-pulley"])
 def test_every_step_has_a_reason_of_its_own(scene_id):
     doc = derivation_document(scene_id)
     table, kinds = SCENES[scene_id].reasons, set()

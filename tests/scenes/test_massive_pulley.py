@@ -1,0 +1,81 @@
+"""The Atwood machine with a massive pulley (issue 42): two masses on a string over a uniform disc on a fixed
+axle, derived as a rigid body and printed as a textbook prints it (Morin § 8.2, Taylor § 10.1):
+T = ½(m₁ + m₂ + M/2) ẏ², ÿ = (m₁ − m₂) g/(m₁ + m₂ + M/2).
+
+The derivation is checked against sympy.physics.mechanics built here from the physics, not from the scene's
+declaration: a RigidBody with its own inertia dyadic about the axle, turned by y/R as the string does not slip.
+"""
+
+import sympy as sp
+import sympy.physics.mechanics as me
+
+from app.service.derivations import derivation, derivation_document
+from tests.scenes.common import S
+
+m1, m2, M, R, g = (S(n) for n in ("m1", "m2", "M", "R", "g"))
+y, y_dot = S("y"), S("y_dot")
+
+
+def _reference() -> tuple[sp.Expr, sp.Expr]:
+    """T and ÿ from LagrangesMethod: the pulley a RigidBody turning about the fixed axle N.y, the masses Particles."""
+    q = me.dynamicsymbols("q")
+    t = me.dynamicsymbols._t
+    N = me.ReferenceFrame("N")
+    axle = me.Point("axle")
+    axle.set_vel(N, 0)
+    # the rim, and the string with it, moves by q when the disc turns by q/R: no slipping
+    disc = N.orientnew("disc", "Axis", [q / R, N.y])
+    # a uniform disc in the x–z plane: M R²/2 about its axis (y), M R²/4 about each diameter
+    pulley = me.RigidBody("pulley", axle, disc, M, (me.inertia(disc, M * R**2 / 4, M * R**2 / 2, M * R**2 / 4), axle))
+    left = axle.locatenew("left", -R * N.x - q * N.z)
+    right = axle.locatenew("right", R * N.x + q * N.z)
+    for point in (left, right):
+        point.set_vel(N, point.pos_from(axle).dt(N))
+    masses = me.Particle("m1", left, m1), me.Particle("m2", right, m2)
+    # heights from the start: m₁ at −q, m₂ at +q; the axle's height is fixed
+    U = -m1 * g * q + m2 * g * q
+    T = me.kinetic_energy(N, pulley, *masses)
+    lm = me.LagrangesMethod(T - U, [q])
+    lm.form_lagranges_equations()
+    (acceleration,) = lm.mass_matrix.LUsolve(lm.forcing)
+    plain = {q.diff(t): y_dot, q: y}
+    return T.subs(plain), acceleration.subs(plain)
+
+
+def test_the_engine_agrees_with_sympy_physics_mechanics():
+    d = derivation("massive-pulley")
+    T, acceleration = _reference()
+    assert sp.simplify(d.mechanics.T - T) == 0
+    (engine,) = d.equations.accelerations
+    assert sp.simplify(engine - acceleration) == 0
+    # the textbook result, and the massless pulley's (m₁ − m₂) g/(m₁ + m₂) as M → 0
+    assert sp.simplify(engine - (m1 - m2) * g / (m1 + m2 + M / 2)) == 0
+    assert sp.simplify(engine.subs(M, 0) - (m1 - m2) * g / (m1 + m2)) == 0
+
+
+def test_t_is_the_masses_and_the_pulleys_turning_printed_as_a_textbook_does():
+    steps = {s["key"]: s for s in derivation_document("massive-pulley")["steps"]}
+    assert r"I_{\mathrm{cm}} &= \frac{M R^{2}}{2}" in steps["bodies"]["latex"]
+    kinetic = steps["kinetic"]["latex"]
+    # the pulley only turns: ½ (½ M R²)(ẏ/R)² = ¼ M ẏ², with no "0 +" for its centre on the axle
+    assert (
+        r"T_{\mathrm{pulley}} &= \tfrac{1}{2} M v_{\mathrm{cm}}^2 + \tfrac{1}{2} I_{\mathrm{cm}} "
+        r"\left(\frac{\dot{y}}{R}\right)^{2} = \frac{1}{4} M \dot{y}^{2}"
+    ) in kinetic
+    assert kinetic.endswith(r"T &= \frac{1}{2} \left(m_{1} + m_{2} + \frac{M}{2}\right) \dot{y}^{2}\end{aligned}")
+
+
+def test_the_equation_and_the_acceleration_read_as_one_fraction():
+    doc = derivation_document("massive-pulley")
+    assert [e["latex"] for e in doc["equations_of_motion"]] == [
+        r"\ddot{y} - \frac{\left(m_{1} - m_{2}\right) g}{m_{1} + m_{2} + M / 2} = 0"
+    ]
+    assert doc["accelerations"]["y"]["latex"] == r"\frac{\left(m_{1} - m_{2}\right) g}{m_{1} + m_{2} + M / 2}"
+
+
+def test_the_inertia_reads_m1_plus_m2_plus_half_m_everywhere():
+    # the mass matrix, m_eff and the energy integral print the inertia as T does, masses first: m₁ + m₂ + M/2
+    steps = {s["key"]: s["latex"] for s in derivation_document("massive-pulley")["steps"]}
+    assert r"\mathcal{M} &= m_{1} + m_{2} + \frac{M}{2}" in steps["mass-matrix"]
+    assert r"m_\text{eff} &= m_{1} + m_{2} + \frac{M}{2}" in steps["effective-potential"]
+    assert steps["energy-integral"].startswith(r"E = \frac{1}{2} \left(m_{1} + m_{2} + \frac{M}{2}\right) \dot{y}^{2}")
