@@ -691,8 +691,8 @@ def one_denominator(exprs: list[Any], names: Mapping[sp.Symbol, str] | None = No
 
 
 def _whole_denominator(expr: Any) -> Any:
-    """A quotient whose denominator is a sum with fractions in it, written with whole numbers there, as a textbook
-    does: a rolling cylinder's s̈ = 2(M + m) g sin α/(3M + m + 2m sin² α), not (M + m) g sin α/(3M/2 + m/2 + m sin² α).
+    """A quotient whose denominator is a sum with two or more fractions in it, written with whole numbers there, as a
+    textbook does: a rolling cylinder's s̈ = 2(M + m) g sin α/(3M + m + 2m sin² α), not (M + m) g sin α/(3M/2 + m/2 + m sin² α).
     Anything else is returned as it is."""
     if not isinstance(expr, sp.Expr) or not expr.free_symbols:
         return expr
@@ -700,8 +700,11 @@ def _whole_denominator(expr: Any) -> Any:
     if not isinstance(den, sp.Add):
         return expr
     # the least common multiple of the denominators of the sum's numbers: (3M/2 + m/2 + m sin² α) × 2
-    scale = sp.ilcm(1, *(sp.fraction(t.as_coeff_Mul()[0])[1] for t in den.args))
-    if scale == 1:
+    below = [sp.fraction(t.as_coeff_Mul()[0])[1] for t in den.args]
+    scale = sp.ilcm(1, *below)
+    # one fraction among whole terms is an added inertia a textbook keeps in sight: the massive pulley's
+    # (m₁ − m₂) g/(m₁ + m₂ + M/2), as its T = ½(m₁ + m₂ + M/2) ẏ² and its equation print it
+    if scale == 1 or sum(b != 1 for b in below) < 2:
         return expr
     return sp.Mul(num * scale, sp.Pow(sp.expand(den * scale), -1))
 
