@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import os
 import re
-from functools import cache
 
 import pytest
 import sympy as sp
@@ -26,32 +25,13 @@ from app.engine.mistakes import (
 from app.engine.notation import MASS_INERTIA, Inertia
 from app.engine.parse import parse_expression
 from app.scenes import SCENES
-from app.scenes.types import Parameter, Particle, System
+from app.scenes.types import Parameter, System
 from tests.engine.check_corpus import CORPUS, TYPICAL, USER_SYSTEMS
+from tests.engine.declared import derivation
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 HINTS = {rule.mistake: rule.hint for rule in RULES}
-
-
-def system_of(spec: dict) -> System:
-    """The engine's declaration of a system given in the API's request shape."""
-    return System(
-        coordinates=tuple(spec["coordinates"]),
-        parameters=tuple(Parameter(p["name"], p["value"], min=p["min"]) for p in spec["parameters"]),
-        particles=tuple(
-            Particle(p["mass"], tuple(p["position"]), p.get("label", "")) for p in spec.get("particles", [])
-        ),
-        kinetic=spec.get("kinetic"),
-        potential=spec.get("potential"),
-        lagrangian=spec.get("lagrangian"),
-        forces=dict(spec.get("forces", {})),
-    )
-
-
-@cache
-def derivation(name: str) -> Derivation:
-    return derive(system_of(USER_SYSTEMS[name]) if name in USER_SYSTEMS else SCENES[name].system)
 
 
 def expected_hint(step: str, hint: str | None, frequency: str = "ω", inertia: Inertia = MASS_INERTIA) -> str | None:

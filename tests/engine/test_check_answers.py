@@ -9,7 +9,7 @@ import pytest
 
 from app.engine.check import CheckError, allowed_names, check_answer, name_kinds, parse_answer, problem
 from app.engine.parse import Parsed
-from tests.engine.test_check import derivation
+from tests.engine.declared import derivation
 
 
 def outcome(work) -> tuple:

@@ -14,28 +14,10 @@ from app.engine.check import judge, problem
 from app.engine.derive import Derivation, derive
 from app.engine.mistakes import POINTERS, pointer
 from app.scenes import SCENES
-from app.scenes.types import Parameter, Particle, System
+from tests.engine.declared import system_of
 from tests.engine.slip_corpus import CORRECT, NAMED, SLIPS, SYSTEMS
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
-
-
-def system_of(spec: dict) -> System:
-    """The engine's declaration of a system given in the API's request shape (with units)."""
-    return System(
-        coordinates=tuple(spec["coordinates"]),
-        parameters=tuple(
-            Parameter(p["name"], p["value"], unit=p.get("unit", ""), min=p["min"], max=p.get("max"))
-            for p in spec["parameters"]
-        ),
-        particles=tuple(
-            Particle(p["mass"], tuple(p["position"]), p.get("label", "")) for p in spec.get("particles", [])
-        ),
-        kinetic=spec.get("kinetic"),
-        potential=spec.get("potential"),
-        lagrangian=spec.get("lagrangian"),
-        forces=dict(spec.get("forces", {})),
-    )
 
 
 @cache

@@ -12,7 +12,7 @@ from app.engine.check import exercises, problem
 from app.engine.names import unicode
 from app.engine.notation import text
 from app.scenes import SCENES
-from tests.engine.test_check import derivation
+from tests.engine.declared import derivation
 
 # one letter standing alone as a symbol (Greek or Latin, with its dot and subscript digits): not part of a word,
 # not the s of an apostrophe's "'s"

@@ -18,6 +18,8 @@ from app.numerics.simulate import simulate
 from app.numerics.system import numeric_system
 from tests.engine.test_equilibria_unseen import LISTED, derived, modes, state
 
+pytestmark = pytest.mark.slow  # out of the fast tier: its cases are listed at import by deriving unseen systems
+
 START = 1e-6
 
 

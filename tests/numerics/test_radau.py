@@ -157,7 +157,7 @@ def test_compiled_jacobian_against_differences(key):
         assert np.any(J != 0.0)
 
 
-@njit(RHS_SIG)
+@njit(RHS_SIG, cache=True)
 def robertson(t, y, k, out):
     # Robertson's chemical kinetics: A -> B (0.04), B + B -> C + B (3e7), B + C -> A + C (1e4)
     out[0] = -0.04 * y[0] + 1.0e4 * y[1] * y[2]
@@ -165,7 +165,7 @@ def robertson(t, y, k, out):
     out[2] = 3.0e7 * y[1] * y[1]
 
 
-@njit(RHS_SIG)
+@njit(RHS_SIG, cache=True)
 def robertson_jacobian(t, y, k, out):
     out[0], out[1], out[2] = -0.04, 1.0e4 * y[2], 1.0e4 * y[1]
     out[3], out[4], out[5] = 0.04, -1.0e4 * y[2] - 6.0e7 * y[1], -1.0e4 * y[1]

@@ -1,0 +1,37 @@
+"""Systems given in the API's request shape, as the engine declares them, and the check corpus's derivations.
+
+A light module: the tests that need one derivation import it from here, not from a test module whose
+module-level case lists derive every scene."""
+
+from __future__ import annotations
+
+from functools import cache
+
+from app.engine.derive import Derivation, derive
+from app.scenes import SCENES
+from app.scenes.types import Parameter, Particle, System
+from tests.engine.check_corpus import USER_SYSTEMS
+
+
+def system_of(spec: dict) -> System:
+    """The engine's declaration of a system given in the API's request shape (with units, where given)."""
+    return System(
+        coordinates=tuple(spec["coordinates"]),
+        parameters=tuple(
+            Parameter(p["name"], p["value"], unit=p.get("unit", ""), min=p["min"], max=p.get("max"))
+            for p in spec["parameters"]
+        ),
+        particles=tuple(
+            Particle(p["mass"], tuple(p["position"]), p.get("label", "")) for p in spec.get("particles", [])
+        ),
+        kinetic=spec.get("kinetic"),
+        potential=spec.get("potential"),
+        lagrangian=spec.get("lagrangian"),
+        forces=dict(spec.get("forces", {})),
+    )
+
+
+@cache
+def derivation(name: str) -> Derivation:
+    """A scene's derivation, or one of the check corpus's own systems (USER_SYSTEMS)."""
+    return derive(system_of(USER_SYSTEMS[name]) if name in USER_SYSTEMS else SCENES[name].system)
