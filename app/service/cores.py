@@ -5,10 +5,9 @@ of a non-stiff compiled run in another thread while the run goes on (the compile
 GIL). This is the server's ``Beside``: a reference runs beside its run only while a core is free.
 A core is free when this process's runs and references leave one and the machine's load average
 (other processes included) leaves at least half a core idle: on a busy shared machine a second thread
-only adds switching (4.0–6.1× /healthz instead of 2.9–4.0× at a load average of 7 on 2 cores). The
-load average counts this server's own runs of the last minute, so one client sending requests back
-to back holds it near 1; a threshold of cores − 1 would take the second core from that client on a
-2-core machine, and its estimate would run after its run.
+only adds switching. The load average counts this server's own runs of the last minute, so one client
+sending requests back to back holds it near 1: the half core keeps the second core for that client's
+reference on a 2-core machine.
 """
 
 from __future__ import annotations

@@ -195,7 +195,7 @@ export class ActionPanel {
     clearTimeout(this.restTimer);
     // while a slider is dragged every panel repaints from the browser's preview on each input; this one,
     // the costliest (a new true path and its S(ε) curve), follows once the input rests as long as the server's run
-    // waits (controls.js SETTLE_MS): sooner, a slow drag's next input waited behind it (40–160 ms on a busy machine)
+    // waits (controls.js SETTLE_MS), so that a slow drag's next input does not wait behind it
     if (this.previewing) this.restTimer = setTimeout(() => this.update(true), SETTLE_MS);
     // the server's run for the settings the rest already drew: the same start and parameters, so the same true path
     else this.update(!this.live || this.pathKey !== this.keyOf());

@@ -182,8 +182,8 @@ export const HANDLE_WORDS_REACH = 40;
  */
 /** The points in square cells ``cell`` device pixels wide, so that a box asks only the cells it overlaps:
  * ``count(x0, y0, x1, y1)`` the points inside the closed box (exactly: each point of those cells is compared). The
- * places tried for the handle's words are thousands, the points drawn as many (a wedge's inside every 8 px): compared
- * pairwise they cost the sliding wedge 100 ms a frame. */
+ * places tried for the handle's words are thousands and the points drawn as many (a wedge's inside, every 8 px):
+ * each place asks only the few cells it covers. */
 export function pointGrid(points, cell) {
   const cells = new Map();
   const key = (i, j) => i * 65536 + j;
