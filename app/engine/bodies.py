@@ -52,6 +52,7 @@ class BodyMotion:
     inertia: sp.Expr
     translation: sp.Expr
     rotation: sp.Expr
+    angle: sp.Expr = sp.Integer(0)  # the turning angle as declared, whose rate is turning_rate
 
     @property
     def kinetic(self) -> sp.Expr:
@@ -82,4 +83,6 @@ def body_motion(index: int, body: Body, table: SymbolTable, read: Callable[[str,
     # T = ½ M v_cm² (the centre's motion) + ½ I_cm θ̇² (the turning about the centre)
     translation = merged(sp.expand(sp.Rational(1, 2) * mass * speed_squared))
     rotation = sp.expand(sp.Rational(1, 2) * inertia * turning_rate**2)
-    return BodyMotion(body, mass, size, centre, velocity, speed_squared, turning_rate, inertia, translation, rotation)
+    return BodyMotion(
+        body, mass, size, centre, velocity, speed_squared, turning_rate, inertia, translation, rotation, angle
+    )

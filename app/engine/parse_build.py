@@ -14,7 +14,7 @@ import sympy as sp
 
 from app.engine.parse_checker import Checker
 from app.engine.parse_read import Node, Parsed, names_in_order, placed, read
-from app.engine.parse_rules import CONSTANTS, FUNCTIONS, ExpressionError
+from app.engine.parse_rules import CONSTANTS, FUNCTIONS, MAX_BITS, MAX_DEGREE, MAX_DIGITS, ExpressionError
 
 
 @dataclass(frozen=True)
@@ -53,7 +53,27 @@ class Builder:
         if kind == "pow":
             return self.real(node, self.build(node[3]) ** self.build(node[4]))
         assert kind == "call"
-        return self.real(node, FUNCTIONS[node[3]](*(self.build(a) for a in node[4])))
+        args = [self.build(a) for a in node[4]]
+        if node[3] == "exp":
+            self.exp_powers(node, args[0])
+        return self.real(node, FUNCTIONS[node[3]](*args))
+
+    def exp_powers(self, node: Node, argument: sp.Expr) -> None:
+        """Refuse exp(c log u + …) whose power u**c, which SymPy forms at once, is past the limits: gate 2 bounds
+        the c it can read as a number, but a c that is one only once built (``(x - x + 10**15)*log(2)``) meets
+        its bound here, before SymPy computes 2**(10**15)."""
+        for term in sp.Add.make_args(argument):
+            c, rest = term.as_coeff_Mul()
+            logs = [f for f in sp.Mul.make_args(rest) if isinstance(f, sp.log)]
+            if len(logs) != 1 or abs(c) <= 1:
+                continue
+            if abs(c) > MAX_DEGREE:
+                raise self.refuse(
+                    node, f"the powers here grow too large (degree {abs(c)} once combined; at most {MAX_DEGREE})"
+                )
+            u = logs[0].args[0]
+            if u.is_Rational and max(abs(u.p).bit_length(), u.q.bit_length()) * abs(c) > MAX_BITS:
+                raise self.refuse(node, f"this number is too large (more than {MAX_DIGITS} digits)")
 
     def refuse(self, node: Node, why: str) -> ExpressionError:
         return self.checker.refuse(_Span(node[1], node[2]), why)  # type: ignore[arg-type]

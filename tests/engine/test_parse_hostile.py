@@ -66,6 +66,9 @@ hostile = st.recursive(leaves, _extend, max_leaves=10)
 @example("((-1)+(10**15))**-(exp((-1)*log(10**15)))")
 # a constant's power through exp and log, raised again past the degree limit (found by this fuzzer)
 @example("exp((-52)*log(tan(-52)))**tan(-52)")
+# an exponent that is a number only once SymPy cancels x - x (found by this fuzzer: a hang, and x**10**15)
+@example("exp((((x - x))+(10**15))*log(2))")
+@example("exp((((x - x))+(10**15))*log(x))")
 def test_hostile_expressions_are_refused_or_built_quickly_and_real(text):
     try:
         with clock_limit(HANG_GUARD):

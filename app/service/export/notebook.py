@@ -107,24 +107,38 @@ def notebook(source: Source) -> str:
         _code(*HELPER_LINES, *naming.symbol_lines(), f"LATEX = {{{latex_entries}}}", "", "", *DT_LINES, *CHECK_LINES)
     )
 
-    if m.positions:
+    if m.positions or m.bodies:
         cells.append(
             _md(
                 "## Positions, velocities and kinetic energy",
                 "Each mass in Cartesian coordinates; its velocity is the total time derivative of its position, "
-                "and T = Σ ½ m v².",
+                "and T = Σ ½ m v²"
+                + (
+                    "; each rigid body adds ½ M v_cm² for its centre and ½ I_cm θ̇² for its turning about the "
+                    "centre, θ̇ the time derivative of its turning angle."
+                    if m.bodies
+                    else "."
+                ),
             )
         )
         lines = [f"masses = {naming.code_list(m.masses)}", "r = ["]
         lines += [f"    sp.Matrix({naming.code_list(r)})," for r in m.positions]
-        lines += [
-            "]",
-            "velocities = [ri.applyfunc(dt) for ri in r]",
-            "T = sum(mi * vi.dot(vi) for mi, vi in zip(masses, velocities)) / 2",
-            f"U = {naming.code(m.U)}",
-            "show('T', T)",
-            "show('U', U)",
-        ]
+        lines += ["]", "velocities = [ri.applyfunc(dt) for ri in r]"]
+        lines += ["T = sum(mi * vi.dot(vi) for mi, vi in zip(masses, velocities)) / 2"]
+        if m.bodies:
+            # (mass, centre, I_cm, turning angle) of each rigid body
+            lines += ["bodies = ["]
+            lines += [
+                f"    ({naming.code(b.mass)}, sp.Matrix({naming.code_list(b.centre)}), {naming.code(b.inertia)}, "
+                f"{naming.code(b.angle)}),"
+                for b in m.bodies
+            ]
+            lines += [
+                "]",
+                "T += sum(Mb * rb.applyfunc(dt).dot(rb.applyfunc(dt)) / 2 + Ib * dt(ab) ** 2 / 2 "
+                "for Mb, rb, Ib, ab in bodies)",
+            ]
+        lines += [f"U = {naming.code(m.U)}", "show('T', T)", "show('U', U)"]
         cells.append(_code(*lines))
     elif m.T is not None:
         cells.append(_md("## Kinetic and potential energy", "T and U as declared."))
