@@ -12,9 +12,10 @@ still named by what changed:
 * sin and cos swapped, in one piece or throughout (positions written with them exchanged);
 * the small-angle approximation of an acceleration;
 * a rigid body's moment of inertia (a rod, a disc, a ring: about its centre, about a pivot, as a
-  point mass, its spin forgotten) and a rod's centre at l for l/2, read from T and U typed directly; and a
-  declared wheel on a fixed axle (a massive pulley), read from the body: its turning left out, a ring's I for
-  a disc's (or its mass moving with the string), its centre taken to move;
+  point mass, its spin forgotten, another kind's I_cm) and a rod's centre at l for l/2, read from T and U typed
+  directly; and a declared wheel on a fixed axle (a massive pulley), read from the body: its turning left out, a
+  ring's I for a disc's (or its mass moving with the string), another kind's I_cm, its centre taken to move; each
+  explained by T = ½ M v_cm² + ½ I_cm θ̇² in the body's own symbols (rigid_kinetic_rule);
 * mistakes that travel: a mistake of T or U carried into the equation of motion and into ω²
   ("your equation follows from a T that …"), and a rigid body's into the momentum;
 * ω² with one term of U_eff left out or of the wrong sign (the centrifugal term, the spring's).
@@ -324,6 +325,26 @@ def _cross_why(d: Derivation, p: sp.Expr) -> str | None:
         return (
             f"the cross term comes from the {_body_name(d, i)}'s position, {where}: {parts}, and squaring gives "
             "twice the product of the two parts, with the signs this geometry gives them"
+        )
+    return _body_cross_why(d, (qa, a), (qb, b))
+
+
+def _body_cross_why(
+    d: Derivation, first: tuple[sp.Symbol, sp.Symbol], second: tuple[sp.Symbol, sp.Symbol]
+) -> str | None:
+    """Where a cross term of a rigid body's T comes from: its ½ M v_cm², with v_cm² the sum of the squares of the
+    centre's velocity components (read from the body, as the derivation writes them), one of which holds both
+    rates: expanding that square gives the cross term and its sign. ``first`` and ``second``: (coordinate, rate)."""
+    (qa, a), (qb, b_rate) = first, second
+    for b in d.mechanics.bodies:
+        # the components of v_cm whose rate has both a q̇_a part and a q̇_b part
+        if not any(sp.diff(c, qa) != 0 and sp.diff(c, qb) != 0 for c in b.centre):
+            continue
+        # each component squared, a sign in front dropped as the square drops it: (−ṡ sin α)² = (ṡ sin α)²
+        squares = " + ".join(f"({spoken(-c if c.could_extract_minus_sign() else c)})²" for c in b.velocity if c != 0)
+        return (
+            f"the cross term comes from the {b.body.label or b.body.kind}'s ½ {spoken(b.mass)} v_cm², with "
+            f"v_cm² = {squares}: expand the square that holds both {spoken(a)} and {spoken(b_rate)}"
         )
     return None
 
@@ -638,6 +659,14 @@ def _whole(d: Derivation, step: str, truth: sp.Expr, base: str) -> Iterator[Mist
 
 # ---- rigid bodies ----------------------------------------------------------------------------------
 
+# the body a student takes a declared body for, by kind: a solid disc (a cylinder) for a thin ring (a hoop), and back
+_MISTAKEN_FOR = {"disc": "ring", "ring": "disc"}
+# each kind of INERTIA (app/engine/bodies.py) in words, in the plane (a rod, a pulley) and as a body that rolls (the
+# cylinder on the wedge), and the name of any other kind's I_cm put in for a body's
+_KIND_WORDS = {"rod": "uniform rod", "disc": "uniform disc", "ring": "thin ring", "sphere": "solid sphere"}
+_ROLLING_WORDS = {**_KIND_WORDS, "disc": "solid cylinder", "ring": "hoop"}
+_WRONG_INERTIA = "the turning energy with the wrong moment of inertia:"
+
 # I/(m L²) about the centre of each body a student meets, L its length or radius
 _CENTRE = {"rod": Fraction(1, 12), "disc": Fraction(1, 2), "ring": Fraction(1)}
 
@@ -651,6 +680,52 @@ def _lengths_and_masses(d: Derivation, known) -> tuple[list[sp.Symbol], list[sp.
 def masses_of(d: Derivation, known) -> list[sp.Symbol]:
     """The parameters whose declared unit is a mass."""
     return _lengths_and_masses(d, known)[1]
+
+
+def _rate_squared(rate: sp.Expr) -> str:
+    """A turning rate squared as the derivation writes it, θ̇² or (ṡ/r)², never ω² (the pages keep ω for
+    frequencies): a sign inside is dropped, as (−a)² = a²."""
+    rate = -rate if rate.could_extract_minus_sign() else rate
+    return f"{spoken(rate)}²" if rate.is_Symbol else f"({spoken(rate)})²"
+
+
+def _typed_turning_rate(d: Derivation, known) -> sp.Expr | None:
+    """The rate a rigid body typed in T turns at, read from T's q̇² term as rigid_alternatives reads it: q̇ itself
+    for a body turning about a pivot (c m L² q̇²), q̇/R for one rolling (c m q̇², R the one length)."""
+    T = d.mechanics.T
+    if T is None or len(d.table.q) != 1:
+        return None
+    v = d.table.qd[0]
+    lengths, masses = _lengths_and_masses(d, known)
+    a = sp.expand(sp.diff(T, v, 2))
+    if any(sp.nsimplify(a / (m * L**2)).is_Rational for m in masses for L in lengths):
+        return v
+    if len(lengths) == 1 and any(sp.nsimplify(a / m).is_Rational for m in masses):
+        # rolling without slipping: the rim's speed R × (turning rate) is the centre's, q̇
+        return v / lengths[0]
+    return None
+
+
+def rigid_kinetic_rule(d: Derivation, known) -> str:
+    """The rule a rigid body's slip of T breaks, in the page's own symbols: T = ½ M v_cm² + ½ I_cm θ̇² (König's
+    theorem, app/engine/bodies.py), with the body's own mass letter and its own turning rate (θ̇, ẏ/R, ṡ/r) as the
+    derivation prints them."""
+    if d.mechanics.bodies:
+        pieces = "; ".join(
+            f"the {b.body.label or b.body.kind}'s T is ½ {spoken(b.mass)} v_cm² + ½ I_cm {_rate_squared(b.turning_rate)}"
+            for b in d.mechanics.bodies
+        )
+        return (
+            f"{pieces}, the motion of its centre plus its turning about it, I_cm its moment of inertia about the centre"
+        )
+    masses = masses_of(d, known)
+    mass = spoken(masses[0]) if len(masses) == 1 else "m"
+    rate = _typed_turning_rate(d, known)
+    turning = f"½ I_cm {_rate_squared(rate)}" if rate is not None else "½ I_cm × (its rate of turning)²"
+    return (
+        f"a rigid body's T is ½ {mass} v_cm² + {turning}, the motion of its centre plus its turning about it, I_cm "
+        "its moment of inertia about the centre"
+    )
 
 
 def axle_alternatives(d: Derivation) -> list[tuple[str, str, sp.Expr, sp.Expr, Correct | None]]:
@@ -683,6 +758,15 @@ def axle_alternatives(d: Derivation) -> list[tuple[str, str, sp.Expr, sp.Expr, C
                 "rigid.axle_disc", f"a uniform disc's moment of inertia for the {name}, which is a ring: all its mass "
                 "is at the rim", -b.rotation / 2, sp.Integer(0), inertia_about_axle,
             ))  # fmt: skip
+        # any other kind's I_cm (a sphere's ⅖ M R²): the turning energy scaled by the ratio of the two
+        for kind in INERTIA:
+            if kind not in ("disc", "ring"):
+                wrong = INERTIA[kind] * b.mass * b.size**2
+                out.append((
+                    f"rigid.axle_taken_as_{kind}", f"{_WRONG_INERTIA} I_cm of a {_KIND_WORDS[kind]}, {spoken(wrong)}, "
+                    f"in place of a {_KIND_WORDS[b.body.kind]}'s", sp.expand(b.rotation * (wrong / b.inertia - 1)),
+                    sp.Integer(0), inertia_about_axle,
+                ))  # fmt: skip
         out.append((
             "rigid.axle_centre_moving", f"the {name}'s centre taken to move with the string ({spoken(moving)} added): "
             f"the centre is on the fixed axle and does not move, so only the {name}'s turning counts", moving,
@@ -724,9 +808,19 @@ def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp
                             f"counted twice, since I about the pivot, {spoken(m * L**2 / 3)}, already holds it "
                             f"({spoken(m * L**2 / 3)} = {spoken(m * L**2 / 12)} + {spoken(m * (L / 2) ** 2)})",
                             dT(m * L**2 / 3 + m * (L / 2) ** 2), sp.Integer(0), None))  # fmt: skip
-                out.append(("rigid.rod_spin_forgotten", f"only the motion of the rod's centre, {spoken(m * (L / 2)**2)}"
-                            f" θ̇²/2: its spin about the centre, with moment of inertia {spoken(m * L**2 / 12)}, is "
-                            "forgotten", dT(m * (L / 2) ** 2), sp.Integer(0), None))  # fmt: skip
+                # the centre, l/2 from the pivot, moves at (l/2) θ̇: ½ M (l/2)² θ̇² = M l² θ̇²/8, printed both ways
+                centre_only = f"½ {spoken(m)} ({spoken(L / 2)})² {spoken(v)}² = {spoken(m * L**2 * v**2 / 8)}"
+                # another kind's I_cm put in for the rod's, the parallel-axis term M (l/2)² added to it as it should be
+                centre = Correct("moment of inertia about the centre", m * L**2 / 12)
+                for kind in INERTIA:
+                    if kind != "rod":
+                        wrong = INERTIA[kind] * m * L**2
+                        out.append((f"rigid.rod_taken_as_{kind}", f"{_WRONG_INERTIA} I_cm of a {_KIND_WORDS[kind]}, "
+                                    f"{spoken(wrong)}, in place of a {_KIND_WORDS['rod']}'s",
+                                    dT(wrong + m * (L / 2) ** 2), sp.Integer(0), centre))  # fmt: skip
+                out.append(("rigid.rod_spin_forgotten", f"only the motion of the rod's centre, {centre_only}: its "
+                            f"spin about the centre, with moment of inertia {spoken(m * L**2 / 12)}, is forgotten",
+                            dT(m * (L / 2) ** 2), sp.Integer(0), None))  # fmt: skip
                 if U is not None and U.has(L):
                     # the centre at l rather than l/2: every l of U doubled
                     dU = U.xreplace({L: 2 * L}) - U
@@ -740,8 +834,13 @@ def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp
             body = "disc" if c == sp.Rational(3, 2) else "ring"
             other = "ring" if body == "disc" else "disc"
             k_other = _CENTRE[other]
+            # rolling without slipping: it turns at q̇/R, R its radius (the one length), never said as ω
+            rate = _typed_turning_rate(d, known)
+            turning = (
+                f"½ I_cm {_rate_squared(rate)}" if rate is not None and rate != v else "½ I_cm × (rate of turning)²"
+            )
             out.append(("rigid.rolling_spin_forgotten", f"the {body}'s spin forgotten: it rolls, so T also has "
-                        f"½ I ω² with ω = v/R and I its moment of inertia", (m - a) * v**2 / 2, sp.Integer(0),
+                        f"{turning}, I_cm its moment of inertia about its centre", (m - a) * v**2 / 2, sp.Integer(0),
                         None))  # fmt: skip
             out.append((f"rigid.rolling_{other}", f"a {other}'s moment of inertia ({spoken(sp.nsimplify(k_other))} m R²)"
                         f" in place of a {body}'s", (m * (1 + sp.nsimplify(k_other)) - a) * v**2 / 2, sp.Integer(0),
@@ -749,37 +848,38 @@ def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp
     return out
 
 
-# the body a student takes a declared body for, by kind: a solid disc (a cylinder) for a thin ring (a hoop), and back
-_MISTAKEN_FOR = {"disc": "ring", "ring": "disc"}
-_KIND_WORDS = {"disc": "solid cylinder", "ring": "hoop"}
-
-
 def _declared_body_alternatives(d: Derivation) -> list[tuple[str, str, sp.Expr, sp.Expr, Correct | None]]:
     """The slips a declared rigid body invites where it moves with other bodies or in several coordinates (a cylinder
     rolling on a sliding wedge), read from its own two pieces of T, ½ m v_cm² + ½ I_cm θ̇²: its turning forgotten,
-    a hoop's I for a solid cylinder's (or back), and the motion of the body that carries it left out of v_cm."""
+    a hoop's I for a solid cylinder's (or back), any other kind's I_cm (a sphere's), and the motion of the body that
+    carries it left out of v_cm."""
     out: list[tuple[str, str, sp.Expr, sp.Expr, Correct | None]] = []
     for i, b in enumerate(d.mechanics.bodies):
         if b.translation == 0:
             continue  # a wheel on a fixed axle: axle_alternatives names its slips
         label = b.body.label or b.body.kind
         if b.rotation != 0:
-            # T without ½ I_cm θ̇²: the body slides as a point at its centre; its rate said as the rate itself (ṡ/r),
-            # a sign inside dropped as the square drops it
-            rate = -b.turning_rate if b.turning_rate.could_extract_minus_sign() else b.turning_rate
-            rate_words = spoken(rate) if rate.is_Symbol else f"({spoken(rate)})"
-            out.append((f"rigid.turning_forgotten.{i}", f"the {label}'s turning forgotten: T has only ½ m v_cm² for "
-                        f"the motion of its centre, with no ½ I_cm {rate_words}² for its turning about the centre",
+            # T without ½ I_cm θ̇²: the body slides as a point at its centre; its rate said as the rate itself (ṡ/r)
+            out.append((f"rigid.turning_forgotten.{i}", f"the {label}'s turning forgotten: T has only "
+                        f"½ {spoken(b.mass)} v_cm² for the motion of its centre, with no "
+                        f"½ I_cm {_rate_squared(b.turning_rate)} for its turning about the centre",
                         -b.rotation, sp.Integer(0), None))  # fmt: skip
             other = _MISTAKEN_FOR.get(b.body.kind)
+            # the body's own I_cm is what the student works out: named by the slip, shown on request
+            own = Correct("moment of inertia about the axis", b.inertia)
             if other is not None:
                 # I_cm of the other kind: the rotation's piece scaled by the ratio of the two moments of inertia
                 wrong = INERTIA[other] * b.mass * b.size**2
-                # the body's own I_cm is what the student works out: named by the slip, shown on request
-                own = Correct("moment of inertia about the axis", b.inertia)
-                out.append((f"rigid.taken_as_{other}.{i}", f"the {label} taken as a {_KIND_WORDS[other]}: I = "
-                            f"{spoken(wrong)} in place of a {_KIND_WORDS[b.body.kind]}'s moment of inertia about its "
+                out.append((f"rigid.taken_as_{other}.{i}", f"the {label} taken as a {_ROLLING_WORDS[other]}: I = "
+                            f"{spoken(wrong)} in place of a {_ROLLING_WORDS[b.body.kind]}'s moment of inertia about its "
                             "axis", sp.expand(b.rotation * (wrong / b.inertia - 1)), sp.Integer(0), own))  # fmt: skip
+            # any other kind's I_cm (a sphere's ⅖ m r² for a cylinder's): the rotation's piece scaled as above
+            for kind in INERTIA:
+                if kind not in (b.body.kind, other):
+                    wrong = INERTIA[kind] * b.mass * b.size**2
+                    out.append((f"rigid.taken_as_{kind}.{i}", f"{_WRONG_INERTIA} I_cm of a {_ROLLING_WORDS[kind]}, "
+                                f"{spoken(wrong)}, in place of a {_ROLLING_WORDS[b.body.kind]}'s",
+                                sp.expand(b.rotation * (wrong / b.inertia - 1)), sp.Integer(0), own))  # fmt: skip
         centre = set().union(*(c.free_symbols for c in b.centre)) & set(d.table.q)
         for j, position in enumerate(d.mechanics.positions):
             carrier = d.system.particles[j].label or f"mass {j + 1}"
@@ -844,7 +944,7 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
             change = dT if step == "kinetic" else dU
             # the reason is the step's own: T's for a slip of T, U's for a slip of U (review student-k 6)
             why = (
-                "a rigid body's T is ½ m v_centre² + ½ I ω², with I about its centre"
+                rigid_kinetic_rule(d, known)
                 if step == "kinetic"
                 else "a rigid body's U is its mass × g × the height of its centre, where its weight acts"
             )
@@ -905,6 +1005,10 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
                               "there and derive again",
                               sp.cancel(-E.subs(d.table.qdd[0], 0) / a), correct=correct)  # fmt: skip
         elif step == "omega_squared":
+            if name.startswith(_WRONG_INERTIA):
+                # another kind's I_cm only scales ω² by a number, which has many causes (the rod's 2g/(3l), a disc's
+                # I_cm, is also the number 2/3 upside down: review student-k 1): named at T and the equation alone
+                continue
             for w in _omega_changed(d, dT, dU, asked):
                 family = "rigid" if key.startswith("rigid") else "travelled"
                 w2 = f"{frequency_letter('frequency', d)}²"  # Ω² where ω is a parameter (student-i 6)

@@ -524,6 +524,15 @@ TYPICAL = [
     ("physical-pendulum", "kinetic", None, "M*l**2*theta_dot**2/8", "kinetic.rigid.rod_spin_forgotten"),
     ("physical-pendulum", "kinetic", None, "M*l**2*theta_dot**2/24", "kinetic.rigid.rod_centre_axis"),
     ("physical-pendulum", "kinetic", None, "M*l**2*theta_dot**2/2", "kinetic.rigid.rod_point_mass"),
+    # another kind's I_cm for the rod's, the cylinder's, the pulley's (review prof-q 7): a disc's, a sphere's
+    ("physical-pendulum", "kinetic", None, "3*M*l**2*theta_dot**2/8", "kinetic.rigid.rod_taken_as_disc"),
+    (
+        "rolling-cylinder-wedge",
+        "kinetic",
+        None,
+        "M*X_dot**2/2 + m*(X_dot**2 + s_dot**2 + 2*X_dot*s_dot*cos(alpha))/2 + m*s_dot**2/5",
+        "kinetic.rigid.taken_as_sphere.0",
+    ),
     # the pulley's turning forgotten, the pulley taken as a ring (or its mass as moving with the string), its centre
     # taken to move with the string, one mass's U with the wrong sign, the turning forgotten carried into ÿ and p
     ("massive-pulley", "kinetic", None, "(m1 + m2)*y_dot**2/2", "kinetic.rigid.axle_turning_forgotten"),

@@ -637,6 +637,79 @@ NAMED = [
     ("rolling-cylinder-wedge", "equation", "s", "2*m*s_ddot + m*X_ddot*cos(alpha) - m*g*sin(alpha)", r"hoop"),
     ("rolling-cylinder-wedge", "equation", "s", "3*m*s_ddot/2 - m*g*sin(alpha)", r"wedge's motion left out"),
     ("rolling-cylinder-wedge", "equation", "s", "3*m*s_ddot/2 - m*X_ddot*cos(alpha) - m*g*sin(alpha)", SIGN),
+    # review prof-q 6: a rigid body's slip of T is printed as the derivation prints it (½ M (l/2)² θ̇², never
+    # Ml²/4θ̇²/2), and its rule in the page's own symbols: the body's mass letter, v_cm, its own turning rate, never ω
+    (
+        "physical-pendulum",
+        "kinetic",
+        None,
+        "M*(l/2)**2*theta_dot**2/2",
+        r"^(?!.*(ω|v_centre|l²/4 θ̇²/2)).*only the motion of the rod's centre, ½ M \(l/2\)² θ̇² = M l² θ̇²/8"
+        r".*the rod's T is ½ M v_cm² \+ ½ I_cm θ̇²",
+    ),
+    (
+        "physical-pendulum",
+        "kinetic",
+        None,
+        "M*l**2*theta_dot**2/2",
+        r"^(?!.*(ω|v_centre)).*point mass.*the rod's T is ½ M v_cm² \+ ½ I_cm θ̇²",
+    ),
+    (
+        "rod-pendulum",
+        "kinetic",
+        None,
+        "m*(l/2)**2*theta_dot**2/2",
+        r"^(?!.*(ω|v_centre)).*½ m \(l/2\)² θ̇² = m l² θ̇²/8.*T is ½ m v_cm² \+ ½ I_cm θ̇²",
+    ),
+    ("rolling-disc", "kinetic", None, "M*x_dot**2/2", r"^(?!.*(ω|v_centre)).*spin forgotten.*½ I_cm \(ẋ/R\)²"),
+    (
+        "rolling-cylinder-wedge",
+        "kinetic",
+        None,
+        "M*X_dot**2/2 + m*(X_dot**2 + s_dot**2 + 2*X_dot*s_dot*cos(alpha))/2",
+        r"^(?!.*(ω|v_centre)).*the cylinder's T is ½ m v_cm² \+ ½ I_cm \(ṡ/r\)²",
+    ),
+    # review prof-q 7: another kind's moment of inertia named as that, without the body's own I_cm: a disc's for the
+    # rod's (with the parallel-axis term), a sphere's for the cylinder's, in T and carried into the equation
+    (
+        "physical-pendulum",
+        "kinetic",
+        None,
+        "M*l**2*theta_dot**2/8 + M*l**2*theta_dot**2/4",
+        r"^(?!.*M l²/12).*the turning energy with the wrong moment of inertia: I_cm of a uniform disc, M l²/2, in place "
+        r"of a uniform rod's",
+    ),
+    (
+        "physical-pendulum",
+        "equation",
+        "theta",
+        "3*M*l**2*theta_ddot/4 + M*g*l*sin(theta)/2",
+        r"wrong moment of inertia: I_cm of a uniform disc",
+    ),
+    (
+        "rolling-cylinder-wedge",
+        "kinetic",
+        None,
+        "M*X_dot**2/2 + m*(X_dot**2 + s_dot**2 + 2*X_dot*s_dot*cos(alpha))/2 + (2*m*r**2/5)*(s_dot/r)**2/2",
+        r"^(?!.*m r²/2).*the turning energy with the wrong moment of inertia: I_cm of a solid sphere, 2 m r²/5, in "
+        r"place of a solid cylinder's",
+    ),
+    (
+        "rolling-cylinder-wedge",
+        "equation",
+        "s",
+        "7*m*s_ddot/5 + m*X_ddot*cos(alpha) - m*g*sin(alpha)",
+        r"wrong moment of inertia: I_cm of a solid sphere",
+    ),
+    # review prof-q 7: the cross term's sign explained by the square it comes from, read from the body's velocity
+    (
+        "rolling-cylinder-wedge",
+        "kinetic",
+        None,
+        "(M + m)*X_dot**2/2 - m*X_dot*s_dot*cos(alpha) + 3*m*s_dot**2/4",
+        r"^(?!.*sum of squares).*½ m v_cm², with v_cm² = \(Ẋ \+ ṡ cos\(α\)\)² \+ \(ṡ sin\(α\)\)²: expand the square "
+        r"that holds both Ẋ and ṡ",
+    ),
 ]
 SLIPS += NAMED
 

@@ -13,6 +13,7 @@ import pytest
 from app.engine.check import judge, problem
 from app.engine.derive import Derivation, derive
 from app.engine.mistakes import POINTERS, pointer
+from app.engine.names import unicode
 from app.scenes import SCENES
 from tests.engine.declared import system_of
 from tests.engine.slip_corpus import CORRECT, NAMED, SLIPS, SYSTEMS
@@ -93,6 +94,24 @@ def test_a_named_slip_is_named_rightly(slip):
 def test_a_slip_the_review_found_unnamed_is_named(slip):
     kind, result = outcome(slip)
     assert kind == "named", (slip, words(result))
+
+
+def test_the_pulleys_rule_is_said_in_its_own_symbols():
+    # review prof-q 6: ½ M v_cm² + ½ I_cm (ẏ/R)², the pulley's mass letter and its own turning rate, never ω; the
+    # coordinate is read from the scene
+    q = SCENES["massive-pulley"].system.coordinates[0]
+    result = judge(step_problem("massive-pulley", "kinetic", None), f"(m1 + m2)*{q}_dot**2/2")
+    said = words(result)
+    rule = unicodedata.normalize("NFC", f"the pulley's T is ½ M v_cm² + ½ I_cm ({unicode(q + '_dot')}/R)²")
+    assert rule in said and "ω" not in said, said
+    # review prof-q 7: a sphere's I_cm for the disc's, named without the disc's own
+    sphere = words(judge(step_problem("massive-pulley", "kinetic", None), f"(m1 + m2)*{q}_dot**2/2 + M*{q}_dot**2/5"))
+    assert (
+        "the turning energy with the wrong moment of inertia: I_cm of a solid sphere, 2 M R²/5, in place of a "
+        "uniform disc's"
+        in sphere
+        and "M R²/2" not in sphere
+    ), sphere
 
 
 @pytest.mark.slow
