@@ -479,7 +479,12 @@ export function breakDisplay(el, katex) {
     if (line.scrollWidth > line.clientWidth + 1) stackFraction(line, row, katex);
     // still wider, a vector written across (the rolling cylinder's r⃗_cm on a phone): set as a column
     const vector = line.scrollWidth > line.clientWidth + 1 ? vectorRow(row) : null;
-    if (vector) katex.render(`\\displaystyle ${columnVector(vector)}`, line, { displayMode: false, throwOnError: false });
+    if (vector) {
+      // beside its name (v⃗ = ⎛…⎞) where that fits, else the column under it (a phone too narrow for both)
+      katex.render(`\\displaystyle ${breakable(columnVector(vector))}`, line, { displayMode: false, throwOnError: false });
+      const wide = line.scrollWidth > line.clientWidth + 1;
+      if (wide) katex.render(`\\displaystyle ${columnVector(vector)}`, line, { displayMode: false, throwOnError: false });
+    }
     // still wider: a relation that continues the equation may end a line too (the break after it), kept only where
     // that is narrower (a line's "=" at its end is better than a box that scrolls further)
     else if (line.scrollWidth > line.clientWidth + 1) {
