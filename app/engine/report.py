@@ -382,7 +382,7 @@ def _bodies_step(bodies: tuple[BodyMotion, ...], pr: Printer) -> dict[str, str]:
     )
     return _step(
         "bodies",
-        "Rigid bodies",
+        "Centre of mass and moment of inertia",
         rows,
         data,
         "A rigid body moves with its centre of mass and turns about it: the centre is placed and differentiated "

@@ -28,7 +28,9 @@ class Family:
     axes: tuple[int, ...] = (0, 2)  # which Cartesian components the view shows
     fixed: tuple[tuple[str, tuple[str, str, str]], ...] = ()  # (label, position) drawn but not particles
     anchors: tuple[tuple[str, tuple[str, str, str]], ...] = ()  # (label, position) used by links, not drawn
-    links: tuple[tuple[str, str, str], ...] = ()  # (from label, to label, style: rod | spring | string)
+    # (from label, to label, style: rod | spring | string | bar); a bar is a rigid body's own length (the physical
+    # pendulum's rod), drawn wide as the set-up figure draws it, where a rod is a light link holding a bob
+    links: tuple[tuple[str, str, str], ...] = ()
     # (label, s from, s to, position of s, style): a guide (dashed path), a wire (solid) or the ground
     # (solid, hatched on the side away from the motion: "ground" below, "ceiling" above); a curve whose
     # position uses t or a coordinate moves with the run and is drawn again at every frame
@@ -39,6 +41,9 @@ class Family:
     # its rotation is seen; the angle is counter-clockwise in the view, as the body's declared angle
     wheels: tuple[tuple[str, ...], ...] = ()
     points: tuple[tuple[str, tuple[str, str, str]], ...] = ()  # replaces the particles when given
+    # the points (indices into the drawn bodies) that are a body's centre of mass, drawn as a small mark on the
+    # body (a bar) rather than as a ball, which would read as a bob on a string
+    centres: tuple[int, ...] = ()
     axis_names: tuple[str, ...] = ("x", "y", "z")
     slack: str = ""  # the constraint force whose negative value means the strings are slack
     caption: str = ""  # what the animation shows, in words
@@ -260,15 +265,16 @@ FAMILIES: dict[str, Family] = {
         caption=f"Side view: the pivot, the two rods and the two bobs, with {TRAIL}.",
     ),
     "physical-pendulum": Family(
-        # the rod from the pivot to its free end, the point drawn at its centre of mass
+        # the rod from the pivot to its free end drawn as a bar, its centre of mass a small mark halfway down
         points=(("centre of mass", ("l*sin(theta)/2", "0", "-l*cos(theta)/2")),),
+        centres=(0,),
         fixed=(("pivot", ("0", "0", "0")),),
         anchors=(("end", ("l*sin(theta)", "0", "-l*cos(theta)")),),
-        links=(("pivot", "end", "rod"),),
+        links=(("pivot", "end", "bar"),),
         curves=(("path of the centre", "0", "2*pi", ("l*sin(s)/2", "0", "-l*cos(s)/2"), "guide"),),
         caption=(
-            f"Side view: the pivot, the rod, its centre of mass halfway down, the circle the centre can reach "
-            f"(dashed) and {TRAIL}."
+            f"Side view: the pivot, the rod drawn as a bar, its centre of mass marked halfway down, the circle the "
+            f"centre can reach (dashed) and {TRAIL}."
         ),
     ),
     "three-springs": Family(
@@ -517,6 +523,8 @@ def mechanism(
             if k in tilt:
                 point["block"] = of_text(tilt[k][0])
                 point["base"] = tilt[k][1]
+            if k in family.centres:
+                point["centre"] = True
             spec.points.append(point)
         for drawn, group in ((True, family.fixed), (False, family.anchors)):
             for name, pos in group:

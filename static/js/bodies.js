@@ -139,6 +139,22 @@ export function blockBase(player, p, i, dpr, x, y) {
   return { a, b, middle: [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2], nx, ny };
 }
 
+/** A body's centre of mass at (x, y): the textbook's mark, a small circle with two opposite quarters filled, in the
+ * body's colour (ringed when selected), small enough that the bar it sits on stays the body seen. */
+function centreMark(ctx, x, y, dpr, colour, selected) {
+  const r = CENTRE_RADIUS * dpr;
+  ctx.fillStyle = "#fff";
+  ctx.beginPath(); ctx.arc(x, y, r, 0, 2 * Math.PI); ctx.fill();
+  ctx.fillStyle = colour;
+  for (const start of [0, Math.PI]) {
+    ctx.beginPath(); ctx.moveTo(x, y); ctx.arc(x, y, r, start, start + Math.PI / 2); ctx.closePath(); ctx.fill();
+  }
+  ctx.lineWidth = (selected ? 3 : 1.5) * dpr;
+  ctx.beginPath(); ctx.arc(x, y, r, 0, 2 * Math.PI); ctx.stroke();
+}
+
+const CENTRE_RADIUS = 6; // a centre-of-mass mark's radius, CSS pixels
+
 /** The bodies at their screen positions `placed` (the selected one ringed while the canvas has focus);
  * returns each body's label and position in CSS pixels. */
 export function drawBodies(player, ctx, i, dpr, placed) {
@@ -157,6 +173,8 @@ export function drawBodies(player, ctx, i, dpr, placed) {
       ctx.moveTo(a[0], a[1]); ctx.lineTo(b[0], b[1]);
       ctx.lineTo(b[0] + H * nx, b[1] + H * ny); ctx.lineTo(a[0] + H * nx, a[1] + H * ny);
       ctx.closePath(); ctx.fill(); ctx.stroke();
+    } else if (player.spec.points[p].centre) {
+      centreMark(ctx, x, y, dpr, ctx.fillStyle, selected);
     } else {
       // a body that is itself a turning wheel (a rolling cylinder): a small dot at its centre, so that its rim and
       // its spokes stay in sight; any other body a ball
@@ -164,6 +182,8 @@ export function drawBodies(player, ctx, i, dpr, placed) {
       ctx.beginPath(); ctx.arc(x, y, (hub ? 5 : 10) * dpr, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
     }
     const body = { label: player.spec.points[p].label, x: Math.round(x / dpr), y: Math.round(y / dpr) };
+    // a centre of mass drawn as its mark on the body, not as a ball (the tests read which)
+    if (player.spec.points[p].centre) body.mark = "centre of mass";
     // a block's base, in CSS pixels (the geometry a test checks against its slope)
     if (base) body.base = [base.a, base.b].map(([u, v]) => [Math.round(u / dpr), Math.round(v / dpr)]);
     bodies.push(body);

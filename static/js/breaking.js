@@ -7,10 +7,13 @@
  *                             block, broken by a count of characters before the page knew its width) joined
  *                             back onto the line before it
  *   breakable(row)            the row with a break allowed after each \\quad at its top level
- *   fractionRow(row)          a row that ends in one fraction (θ̈₁ = \frac{…}{…}): what comes before it, its
- *                             numerator and its denominator; else null
+ *   fractionRow(row)          a row's widest fraction at its top level (θ̈₁ = \frac{…}{…}, H = \frac{…}{…} − mgs sin α):
+ *                             what comes before it, its numerator, its denominator and what comes after it; else null
  *   numeratorTerms(num)       a numerator's terms, split before each + and − at its top level
  *   stackedFraction(f, n)     the row again with its numerator's terms on n lines, each under the first
+ *   vectorRow(row)            a row that ends in a vector written across, \vec r = \left(a, b, c\right): what comes
+ *                             before it and its components; else null
+ *   columnVector(v)           the row again with the vector set as a column, its components one under the other
  *   breakDisplay(el, katex)   typeset el's formula (data-tex) as a display, on one line where the engine broke
  *                             it if that fits el (a textbook never breaks a formula where there is room); else
  *                             as the engine broke it; if that is wider than el too, typeset it again row by row
@@ -19,7 +22,8 @@
  *                             relation (=) or a binary operator (+, −) at its top level, continuation lines
  *                             indented (site.css, .math-line).  A fraction, one piece for KaTeX, wider than the
  *                             box even so has its numerator broken over more lines, as a textbook does on a
- *                             narrow page.  Returns whether it broke the formula.
+ *                             narrow page; a vector wider than the box is set as a column.  Returns whether
+ *                             it broke the formula.
  *
  * What cannot break (a matrix, one bracket \left( … \right) wider than a phone) still overflows: the box then
  * scrolls and shows so (scrollboxes.js).
@@ -207,10 +211,16 @@ export function breakable(row, loose = false) {
     if (relation) {
       // never a break after a relation; before one that continues an equation (a = b ⏎ = c, ≈ 5.7), allowed.
       // Loose (a row wider than its box even so: "½ period = ∫ …" with a fraction nearly a phone wide): a break
-      // after a relation too, but after a wide space's and before a value's ≈ (as before prof-l 7)
+      // after the row's first relation too (not after a wide space's first, as before prof-l 7). Never after a
+      // relation that begins its row (an aligned block's "= ∫ …" under "t = …"): it would stand alone on its line
+      // (prof-q 5); nor after one that continues an equation ("H = Σ p q̇ − L =" at a line's end, its fraction
+      // below, prof-q 5): that one begins the next line with what follows it.  ``loose`` "after", the last try for a
+      // row still too wide: a continuing relation may end a line as well (the break after it), but a value's ≈ not
+      const first = out.trim() === "";
       const approx = relation === "\\approx" && related;
-      const held = loose ? approx || (!related && spaced) : true;
-      out += `${related && (!loose || approx) ? "\\allowbreak " : ""}${relation}${held ? "\\nobreak " : ""}`;
+      const after = loose === "after";
+      const held = !loose || first || (after ? approx || (!related && spaced) : related || spaced);
+      out += `${related && (!after || approx) ? "\\allowbreak " : ""}${relation}${held ? "\\nobreak " : ""}`;
       i += relation.length - 1;
       related = true;
       continue;
@@ -254,23 +264,34 @@ function groupEnd(row, i) {
 export function fractionRow(row) {
   const t = row.trim();
   let braces = 0;
+  let brackets = 0; // \left … \right: a fraction inside brackets is not the row's
+  let best = null;
   for (let i = 0; i < t.length; i++) {
     const c = t[i];
     if (c === "{") braces += 1;
     else if (c === "}") braces -= 1;
     else if (c === "\\") {
+      if (/^\\left(?![a-zA-Z])/.test(t.slice(i))) brackets += 1;
+      else if (/^\\right(?![a-zA-Z])/.test(t.slice(i))) brackets -= 1;
       FRAC.lastIndex = i;
-      if (braces === 0 && FRAC.test(t) && t[FRAC.lastIndex] === "{") {
+      if (braces === 0 && brackets === 0 && FRAC.test(t) && t[FRAC.lastIndex] === "{") {
         const numEnd = groupEnd(t, FRAC.lastIndex);
         const denEnd = numEnd > 0 && t[numEnd + 1] === "{" ? groupEnd(t, numEnd + 1) : -1;
-        // the fraction must close the row: a row going on after it (a/b + c) breaks there already
-        if (denEnd !== t.length - 1) return null;
-        return { before: t.slice(0, i), num: t.slice(FRAC.lastIndex + 1, numEnd), den: t.slice(numEnd + 2, denEnd) };
+        if (denEnd > 0) {
+          // the widest: the one with the longest numerator (its numerator is what breaks over lines)
+          const f = {
+            before: t.slice(0, i), num: t.slice(FRAC.lastIndex + 1, numEnd), den: t.slice(numEnd + 2, denEnd),
+            after: t.slice(denEnd + 1),
+          };
+          if (!best || f.num.length > best.num.length) best = f;
+          i = denEnd;
+          continue;
+        }
       }
       i += 1;
     }
   }
-  return null;
+  return best;
 }
 
 export function numeratorTerms(num) {
@@ -330,12 +351,69 @@ export function stackedFraction(f, lines, widths = null) {
   // as Morin sets a numerator on a narrow page: each line under the first, beginning with its sign (no indent, which
   // the engine's desktop form gives its second line: a phone has no room for it)
   const rows = groups.map((g) => `&${g.join(" ")}`);
-  return `${f.before}\\frac{\\begin{aligned}${rows.join(" \\\\ ")}\\end{aligned}}{${f.den}}`;
+  return `${f.before}\\frac{\\begin{aligned}${rows.join(" \\\\ ")}\\end{aligned}}{${f.den}}${f.after ?? ""}`;
+}
+
+/** The components of a bracket's inside, split at its commas at the top level (not inside braces or inner
+ *  brackets). */
+function components(inside) {
+  const parts = [];
+  let part = "";
+  let braces = 0;
+  let brackets = 0;
+  for (let i = 0; i < inside.length; i++) {
+    const c = inside[i];
+    if (c === "\\") {
+      const word = /^\\([a-zA-Z]+|.)/.exec(inside.slice(i))?.[0] ?? c;
+      if (word === "\\left") brackets += 1;
+      else if (word === "\\right") brackets -= 1;
+      part += word;
+      i += word.length - 1;
+      continue;
+    }
+    if (c === "{") braces += 1;
+    else if (c === "}") braces -= 1;
+    if (c === "," && braces === 0 && brackets === 0) {
+      parts.push(part.trim());
+      part = "";
+      continue;
+    }
+    part += c;
+  }
+  parts.push(part.trim());
+  return parts;
+}
+
+export function vectorRow(row) {
+  const t = row.trim();
+  const close = "\\right)";
+  if (!t.endsWith(close)) return null;
+  // the \left( that the row's last \right) closes
+  let depth = 0;
+  for (let i = t.length - close.length; i >= 0; i--) {
+    if (t.startsWith("\\right", i) && !/[a-zA-Z]/.test(t[i + 6] ?? "")) depth += 1;
+    else if (t.startsWith("\\left", i) && !/[a-zA-Z]/.test(t[i + 5] ?? "")) {
+      depth -= 1;
+      if (depth === 0) {
+        const before = t.slice(0, i);
+        // a vector given by its components after a relation (\vec r = (…)), not a product's bracket (m (a + b))
+        if (t[i + 5] !== "(" || !/=\s*$/.test(before)) return null;
+        const parts = components(t.slice(i + 6, t.length - close.length));
+        return parts.length > 1 && parts.every(Boolean) ? { before, parts } : null;
+      }
+    }
+  }
+  return null;
+}
+
+export function columnVector(v) {
+  // as a textbook sets a vector on a narrow page: a column, its components one under the other
+  return `${v.before}\\begin{pmatrix}${v.parts.join(" \\\\ ")}\\end{pmatrix}`;
 }
 
 /** A line still wider than its box, ending in a fraction: its numerator on as few lines as make it fit (each
  *  term's width measured as KaTeX sets it), on one term a line at most. */
-function stackFraction(line, row, katex) {
+function stackFraction(line, row, katex, loose = true) {
   const f = fractionRow(row);
   if (!f) return;
   const terms = numeratorTerms(f.num);
@@ -350,7 +428,7 @@ function stackFraction(line, row, katex) {
   });
   probe.remove();
   for (let n = had + 1; n <= terms.length; n++) {
-    katex.render(`\\displaystyle ${breakable(stackedFraction(f, n, widths), true)}`, line, {
+    katex.render(`\\displaystyle ${breakable(stackedFraction(f, n, widths), loose)}`, line, {
       displayMode: false,
       throwOnError: false,
     });
@@ -399,6 +477,22 @@ export function breakDisplay(el, katex) {
     // still wider, a row ending in a tall fraction (the double pendulum's θ̈₁ on a phone): its numerator over
     // more lines
     if (line.scrollWidth > line.clientWidth + 1) stackFraction(line, row, katex);
+    // still wider, a vector written across (the rolling cylinder's r⃗_cm on a phone): set as a column
+    const vector = line.scrollWidth > line.clientWidth + 1 ? vectorRow(row) : null;
+    if (vector) {
+      // beside its name (v⃗ = ⎛…⎞) where that fits, else the column under it (a phone too narrow for both)
+      katex.render(`\\displaystyle ${breakable(columnVector(vector))}`, line, { displayMode: false, throwOnError: false });
+      const wide = line.scrollWidth > line.clientWidth + 1;
+      if (wide) katex.render(`\\displaystyle ${columnVector(vector)}`, line, { displayMode: false, throwOnError: false });
+    }
+    // still wider: a relation that continues the equation may end a line too (the break after it), kept only where
+    // that is narrower (a line's "=" at its end is better than a box that scrolls further)
+    else if (line.scrollWidth > line.clientWidth + 1) {
+      const kept = line.innerHTML, width = line.scrollWidth;
+      katex.render(`\\displaystyle ${breakable(row, "after")}`, line, { displayMode: false, throwOnError: false });
+      if (line.scrollWidth > line.clientWidth + 1) stackFraction(line, row, katex, "after");
+      if (line.scrollWidth >= width) line.innerHTML = kept;
+    }
   }
   if (el.querySelector(".katex-error")) {
     katex.render(spacedRows(tex), el, { displayMode: true, throwOnError: false });

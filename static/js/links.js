@@ -1,7 +1,7 @@
 /**
  * links.js — what joins a mechanism's points, drawn on the canvas (animation.js): rods, springs (a
  * zigzag that stretches with them), strings (slack where the tension the engine derives for them is
- * negative) and wheels (a pulley's rim and hub with the string wrapped over or under it).
+ * negative), bars (a rigid body's own length, as the physical pendulum's rod) and wheels (a pulley's rim and hub with the string wrapped over or under it).
  */
 
 /** The links at instant i (those whose length the run confirms); the number drawn. */
@@ -10,6 +10,7 @@ export function drawLinks(player, ctx, i, dpr, slack) {
   player.spec.links.forEach((link, j) => {
     if (player.unsteady.has(j)) return;
     const [x0, y0] = player.at(link.from, i), [x1, y1] = player.at(link.to, i);
+    if (link.style === "bar") { drawBar(ctx, x0, y0, x1, y1, dpr); count++; return; }
     const string = link.style === "string";
     ctx.strokeStyle = string && slack ? "#c26100" : "#1b1f24";
     ctx.lineWidth = (string ? 1.5 : link.style === "spring" ? 1.8 : 3) * dpr;
@@ -28,6 +29,19 @@ export function drawLinks(player, ctx, i, dpr, slack) {
   ctx.setLineDash([]);
   return count;
 }
+
+/** A bar from (x0, y0) to (x1, y1): a body with a width, as the set-up figure draws it (a light fill inside a dark
+ * outline, rounded at its ends), not the thin line of a light rod that holds a bob. */
+function drawBar(ctx, x0, y0, x1, y1, dpr) {
+  ctx.setLineDash([]);
+  ctx.lineCap = "round";
+  for (const [colour, width] of [["#1b1f24", BAR_WIDTH + 3], ["#c9d8ea", BAR_WIDTH]]) {
+    ctx.strokeStyle = colour; ctx.lineWidth = width * dpr;
+    ctx.beginPath(); ctx.moveTo(x0, y0); ctx.lineTo(x1, y1); ctx.stroke();
+  }
+}
+
+const BAR_WIDTH = 9; // a bar's width inside its outline, CSS pixels
 
 function zigzag(ctx, x0, y0, x1, y1, dpr) {
   const dx = x1 - x0, dy = y1 - y0, len = Math.hypot(dx, dy) || 1;

@@ -152,3 +152,55 @@ def test_the_double_pendulums_normal_modes_read_on_a_phone(browser, live_server,
         page.screenshot(path=artifacts / "phone-double-pendulum-modes.png", full_page=True)
     finally:
         context.close()
+
+
+PIECES = """(start) => {
+  // each display whose TeX begins with one of ``start``: whether it is wider than its box, and its lines as they show
+  // (KaTeX's pieces grouped by the height they sit at)
+  const out = [];
+  for (const box of document.querySelectorAll('.scene .math-display')) {
+    if (!start.some((s) => (box.dataset.tex || '').startsWith(s))) continue;
+    const lines = [];
+    for (const row of box.querySelectorAll('.math-line')) {
+      let line = null;
+      for (const b of row.querySelectorAll('.katex-html > .base, .katex-html > .katex-base')) {
+        const r = b.getBoundingClientRect();
+        if (!line || r.top >= line.bottom - 2) { line = { text: '', bottom: r.bottom }; lines.push(line); }
+        line.text += b.textContent;
+        line.bottom = Math.max(line.bottom, r.bottom);
+      }
+    }
+    out.push({ tex: box.dataset.tex.slice(0, 40), wide: box.scrollWidth > box.clientWidth + 1,
+               lines: lines.map((l) => l.text.replace(/\\u200b/g, '').trim()) });
+  }
+  return out;
+}"""
+
+
+@pytest.mark.parametrize("scene_id", ["rolling-cylinder-wedge", "massive-pulley"])
+def test_the_rigid_bodies_vectors_and_hamiltonians_fit_a_phone_and_no_line_is_a_bare_relation(
+    browser, live_server, artifacts, scene_id
+):
+    # prof-q 5: on a phone the cylinder's r⃗_cm was clipped (now a column), its H's numerator was clipped (now
+    # stacked, the term after the fraction kept), and "Time as an integral" left "=" alone on a line above the integral
+    context = browser.new_context(
+        base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True
+    )
+    page = context.new_page()
+    page.set_default_timeout(120_000)
+    try:
+        page.goto(f"/scenes/{scene_id}")
+        page.wait_for_selector("body[data-katex-errors]", state="attached")
+        page.evaluate(MEASURE)
+        starts = [r"\begin{aligned}\vec r_{\mathrm{cm}}", r"H = \sum_k", r"\begin{aligned}t &= \int"]
+        vector, hamiltonian, integral = page.evaluate(PIECES, starts)
+        if scene_id == "rolling-cylinder-wedge":
+            assert not vector["wide"] and not hamiltonian["wide"], (vector, hamiltonian)
+        # the integral is broken after its first row; no line is a relation alone, nor ends with one (the integral's
+        # "=" keeps its ∫; H's second "=" begins a line)
+        assert len(integral["lines"]) >= 2, integral
+        for display in (vector, hamiltonian, integral):
+            assert not any(line in ("=", "≈") or line.endswith("=") for line in display["lines"]), display
+        page.screenshot(path=artifacts / f"phone-rigid-{scene_id}.png", full_page=True)
+    finally:
+        context.close()

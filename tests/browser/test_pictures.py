@@ -78,6 +78,31 @@ def test_the_double_pendulum_example_has_two_rods_and_a_pivot(page):
     assert [p["label"] for p in spec["points"] if not p["mass"]] == ["pivot"]
 
 
+def test_the_physical_pendulum_draws_its_rod_as_a_bar(page, artifacts):
+    # prof-q 9: the rod is drawn wide (as the set-up figure draws it), its centre of mass a small mark on it, not a
+    # thin line with a ball at its middle
+    page.goto("/scenes/physical-pendulum")
+    page.wait_for_selector(READY, state="attached")
+    (((x0, y0), (x1, y1)),) = json.loads(page.evaluate(f"{CANVAS}.dataset.links"))
+    (body,) = json.loads(page.evaluate(f"{CANVAS}.dataset.bodies"))
+    assert body["mark"] == "centre of mass"
+    length = math.hypot(x1 - x0, y1 - y0)
+    nx, ny = -(y1 - y0) / length, (x1 - x0) / length
+    # three quarters down the rod, 3 px either side of its line: inside the bar, away from the mark and the trail
+    colours = page.evaluate(
+        """([points]) => {
+          const canvas = document.querySelector('[data-panel^=animation] canvas'), dpr = window.devicePixelRatio || 1;
+          const ctx = canvas.getContext('2d');
+          return points.map(([x, y]) => Array.from(ctx.getImageData(Math.round(x * dpr), Math.round(y * dpr), 1, 1).data));
+        }""",
+        [[[x0 + 0.75 * (x1 - x0) + s * 3 * nx, y0 + 0.75 * (y1 - y0) + s * 3 * ny] for s in (-1, 1)]],
+    )
+    for r, g, b, alpha in colours:
+        # the bar's light fill, not the white canvas beside a thin line
+        assert alpha == 255 and (r, g, b) != (255, 255, 255) and b > r, colours
+    page.locator("[data-panel^=animation] canvas").screenshot(path=artifacts / "physical-pendulum-bar.png")
+
+
 def test_a_system_given_by_l_alone_says_it_has_no_picture(page):
     page.goto("/playground?" + urlencode(query_of(form_of(SPINNING_HOOP)), doseq=True))
     page.wait_for_selector(READY, state="attached")

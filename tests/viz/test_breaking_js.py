@@ -48,8 +48,20 @@ def test_no_row_may_end_a_line_with_a_relation():
     chained = node("(m, row) => m.breakable(row)", r"E = \frac{a}{b} = c + d \approx 5.7")
     assert chained == r"E =\nobreak  \frac{a}{b} \allowbreak =\nobreak  c \allowbreak +\nobreak  d \allowbreak \approx\nobreak  5.7"
     # only a row wider than its box however it breaks so is broken after a relation as well (the page's second try)
+    # the first relation lets go of what follows it; one that continues the equation still begins the next line
+    # with what follows it (prof-q 5: the cylinder's "H = Σ p q̇ − L =" ended a line, its fraction below)
     loose = node("(m, row) => m.breakable(row, true)", r"E = \frac{a}{b} = c + d \approx 5.7")
-    assert loose == r"E = \frac{a}{b} = c \allowbreak +\nobreak  d \allowbreak \approx\nobreak  5.7"
+    assert loose == (
+        r"E = \frac{a}{b} \allowbreak =\nobreak  c \allowbreak +\nobreak  d \allowbreak \approx\nobreak  5.7"
+    )
+    # the last try for a row still too wide: a continuing relation may end a line too, kept where that is narrower
+    last = node("(m, row) => m.breakable(row, 'after')", r"E = \frac{a}{b} = c + d \approx 5.7")
+    assert last == r"E = \frac{a}{b} = c \allowbreak +\nobreak  d \allowbreak \approx\nobreak  5.7"
+    # prof-q 5: a row that begins with its relation (an aligned block's "= ∫ …" under "t = …") never leaves it
+    # alone on a line, however wide the row
+    assert node("(m, row) => m.breakable(row, true)", r"= \int \frac{dy}{\sqrt{E}}") == (
+        r"=\nobreak  \int \frac{dy}{\sqrt{E}}"
+    )
 
 
 def test_a_line_breaks_before_a_sign_never_after_it():
@@ -93,7 +105,8 @@ def test_a_fraction_too_wide_for_a_phone_has_its_numerator_set_on_more_lines():
     )
     found = node(
         "(m, row) => { const f = m.fractionRow(row); return { f, terms: m.numeratorTerms(f.num),"
-        " two: m.stackedFraction(f, 2, [1, 1, 1, 1]), none: m.fractionRow(row + ' + d') }; }",
+        " two: m.stackedFraction(f, 2, [1, 1, 1, 1]), after: m.fractionRow(row + ' + d').after,"
+        " none: m.fractionRow('x = \\\\left(\\\\frac{a}{b} + c\\\\right)') }; }",
         row,
     )
     assert found["f"]["before"] == r"\ddot{\theta}_{1} = "
@@ -109,5 +122,42 @@ def test_a_fraction_too_wide_for_a_phone_has_its_numerator_set_on_more_lines():
         r"\ddot{\theta}_{1} = \frac{\begin{aligned}&a \cos{\left(\theta_{1} - \theta_{2} \right)} - \left(m_{1} + m_{2}"
         r"\right) g \\ &- b^{-2} \sin{\theta} + c\end{aligned}}{l_{1} \left(m_{1} - m_{2}\right)}"
     )
-    # a row going on after its fraction is not one fraction
-    assert found["none"] is None
+    # a row going on after its fraction keeps what follows; no fraction at the row's top level, none (one inside
+    # a bracket is the bracket's)
+    assert found["after"] == " + d" and found["none"] is None
+
+
+def test_a_fraction_with_a_term_after_it_has_its_numerator_stacked_and_the_term_kept():
+    # prof-q 5: the rolling cylinder's H, a fraction followed by − m g s sin α, was clipped on a phone: its numerator
+    # is set on lines as a fraction that ends the row is, the term after it kept
+    row = r"H = \sum_k p_k \dot{q}_k - L = \frac{a p^{2} + b q^{2} - c p q \cos{\alpha}}{2 m} - \frac{x}{y} - m g s \sin{\alpha}"
+    found = node("(m, row) => { const f = m.fractionRow(row); return { f, two: m.stackedFraction(f, 2) }; }", row)
+    # the widest fraction (the longest numerator), not the first or the last
+    assert found["f"] == {
+        "before": r"H = \sum_k p_k \dot{q}_k - L = ",
+        "num": r"a p^{2} + b q^{2} - c p q \cos{\alpha}",
+        "den": "2 m",
+        "after": r" - \frac{x}{y} - m g s \sin{\alpha}",
+    }
+    assert found["two"] == (
+        r"H = \sum_k p_k \dot{q}_k - L = \frac{\begin{aligned}&a p^{2} + b q^{2} \\ &- c p q \cos{\alpha}\end{aligned}}{2 m}"
+        r" - \frac{x}{y} - m g s \sin{\alpha}"
+    )
+
+
+def test_a_vector_too_wide_for_a_phone_is_set_as_a_column():
+    # prof-q 5: the rolling cylinder's r⃗_cm = (X + s cos α + r sin α, 0, −s sin α + r cos α) was clipped on a phone;
+    # a vector given by its components after its = is set as a column, split at its top-level commas only
+    rows = [
+        r"\vec r_{\mathrm{cm}} = \left(X + s \cos {\alpha}, 0, - s \sin {\alpha} + r \cos {\alpha}\right)",
+        r"\vec v = \left(f\left(a, b\right), c_{1, 2}\right)",
+        r"T = m \left(a + b\right)",
+        r"x = \left(a, b\right) + c",
+    ]
+    found = node("(m, rows) => rows.map((r) => { const v = m.vectorRow(r); return v && m.columnVector(v); })", rows)
+    assert found == [
+        r"\vec r_{\mathrm{cm}} = \begin{pmatrix}X + s \cos {\alpha} \\ 0 \\ - s \sin {\alpha} + r \cos {\alpha}\end{pmatrix}",
+        r"\vec v = \begin{pmatrix}f\left(a, b\right) \\ c_{1, 2}\end{pmatrix}",
+        None,
+        None,
+    ]

@@ -272,3 +272,21 @@ def test_the_massive_pulley_turns_with_its_string_and_its_strands_hang_from_the_
         hanging += za - zb
     # what one strand gains the other loses: the two hang 2d in all whatever y
     assert hanging == pytest.approx(2 * env["d"])
+
+
+def test_the_physical_pendulum_is_a_bar_with_its_centre_of_mass_marked():
+    # prof-q 9: a thin rod with a ball at its middle read as a bob on a string; the rod is a body (a bar) from the
+    # pivot to its free end, and the point at its middle is its centre of mass, drawn as a mark on it
+    spec = spec_of("physical-pendulum")
+    labels = [p["label"] for p in spec["points"]]
+    (bar,) = spec["links"]
+    assert bar["style"] == "bar" and (labels[bar["from"]], labels[bar["to"]]) == ("pivot", "end")
+    (centre,) = [p for p in spec["points"] if p["mass"]]
+    assert centre["label"] == "centre of mass" and centre["centre"] is True
+    env = env_of("physical-pendulum", theta=0.7)
+    ends = [at(spec, k, env) for k in (bar["from"], bar["to"])]
+    assert at(spec, 0, env) == pytest.approx([(a + b) / 2 for a, b in zip(*ends, strict=True)])
+    # no other scene's body is drawn as a centre mark, nor joined by a bar
+    others = [spec_of(s) for s in sorted(SCENES) if s != "physical-pendulum"]
+    assert not any(p.get("centre") for o in others for p in o["points"])
+    assert not any(link["style"] == "bar" for o in others for link in o["links"])

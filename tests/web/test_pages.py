@@ -240,7 +240,7 @@ def test_the_core_steps_are_never_folded(pages, scene_id):
     folded = {title for title, a in zip(titles, steps, strict=True) if "bookkeeping" in a["class"].split()}
     assert {"Lagrangian", "Euler–Lagrange equations", "Accelerations"}.isdisjoint(folded)
     # the kinematics is bookkeeping: the particles' positions, or a rigid body's centre and turning
-    assert {"Positions", "Rigid bodies"} & folded and len(folded) < len(titles)
+    assert {"Positions", "Centre of mass and moment of inertia"} & folded and len(folded) < len(titles)
 
 
 def test_a_scene_page_is_sent_compressed(client):
