@@ -637,6 +637,14 @@ NAMED = [
     ("rolling-cylinder-wedge", "equation", "s", "2*m*s_ddot + m*X_ddot*cos(alpha) - m*g*sin(alpha)", r"hoop"),
     ("rolling-cylinder-wedge", "equation", "s", "3*m*s_ddot/2 - m*g*sin(alpha)", r"wedge's motion left out"),
     ("rolling-cylinder-wedge", "equation", "s", "3*m*s_ddot/2 - m*X_ddot*cos(alpha) - m*g*sin(alpha)", SIGN),
+    # review prof-q 1: the fixed wedge's s̈ = 2g sin α/3 is the answer with the wedge held fixed (never "another
+    # system's, such as an Atwood machine's"), and a sliding block's s̈ and Ẍ are the cylinder's turning forgotten
+    ("rolling-cylinder-wedge", "acceleration", "s", "2*g*sin(alpha)/3",
+     r"^(?!.*Atwood).*wedge held fixed \(M → ∞\).*the wedge recoils, so the X and s equations are solved together"),
+    ("rolling-cylinder-wedge", "acceleration", "s", "(M + m)*g*sin(alpha)/(M + m*sin(alpha)**2)",
+     r"cylinder's turning forgotten.*slides without turning, such as a block"),
+    ("rolling-cylinder-wedge", "acceleration", "X", "-m*g*sin(alpha)*cos(alpha)/(M + m*sin(alpha)**2)",
+     r"cylinder's turning forgotten.*slides without turning, such as a block"),
 ]
 SLIPS += NAMED
 
