@@ -645,6 +645,11 @@ NAMED = [
      r"cylinder's turning forgotten.*slides without turning, such as a block"),
     ("rolling-cylinder-wedge", "acceleration", "X", "-m*g*sin(alpha)*cos(alpha)/(M + m*sin(alpha)**2)",
      r"cylinder's turning forgotten.*slides without turning, such as a block"),
+    # review prof-q 3: the cylinder's centre is asked, where the wedge's motion enters: its X left out, sin and cos
+    # swapped
+    ("rolling-cylinder-wedge", "position", "x2", "s*cos(alpha) + r*sin(alpha)", r"wedge's x left out.*carries"),
+    ("rolling-cylinder-wedge", "position", "x2", "X + s*sin(alpha) + r*cos(alpha)", SWAP),
+    ("rolling-cylinder-wedge", "position", "z2", "r*sin(alpha) - s*cos(alpha)", SWAP),
 ]
 SLIPS += NAMED
 
@@ -746,6 +751,7 @@ CORRECT = [
     ),
     ("rolling-cylinder-wedge", "equation", "s", "3*s_ddot + 2*X_ddot*cos(alpha) - 2*g*sin(alpha)"),
     ("rolling-cylinder-wedge", "acceleration", "s", "2*(M + m)*g*sin(alpha)/(3*M + m + 2*m*sin(alpha)**2)"),
+    ("rolling-cylinder-wedge", "position", "x2", "X + s*cos(alpha)"),
     ("rolling-disc", "omega_squared", None, "2*k/(3*M)"),
     ("rolling-disc", "equation", "x", "x_ddot + 2*k*x/(3*M) - 2*g*sin(alpha)/3"),
     ("elastic-pendulum", "potential", None, "k*(l - r)**2/2 - m*g*r*cos(phi)"),
