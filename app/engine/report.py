@@ -363,14 +363,15 @@ def _turning_squared(b: BodyMotion, pr: Printer, tex: bool = True) -> str:
     return f"{pr.tex(rate)}^{{2}}" if rate.is_Symbol else rf"\left({pr.tex(rate)}\right)^{{2}}"
 
 
-def _bodies_step(bodies: tuple[BodyMotion, ...], pr: Printer) -> dict[str, str]:
-    """Each rigid body's centre, the squared speed of its centre, its angular velocity and I_cm from the table."""
+def _bodies_step(bodies: tuple[BodyMotion, ...], pr: Printer, vector: str = r"\vec r") -> dict[str, str]:
+    """Each rigid body's centre (``vector`` the page's position letter, app/engine/notation.position), the squared
+    speed of its centre, its angular velocity and I_cm from the table."""
     rows: list[str] = []
     data: list[sp.Expr] = []
     for i, b in enumerate(bodies):
         cm = _body_mark(bodies, i)
         rows += [
-            rf"\vec r_{{{cm}}} = \left({', '.join(pr.tex(_common_factor(c)) for c in b.centre)}\right)",
+            rf"{vector}_{{{cm}}} = \left({', '.join(pr.tex(_common_factor(c)) for c in b.centre)}\right)",
             rf"v_{{{cm}}}^2 = {pr.tex(b.speed_squared)}",
             rf"I_{{{cm}}} = {pr.tex(b.inertia)}",
         ]
@@ -457,10 +458,10 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         label = (lambda i: rf"_{{{i + 1}}}") if n > 1 else (lambda i: "")
 
         def vectors(letter: str, of_masses: Any) -> tuple[list[str], list[tuple[sp.Expr, ...]]]:
-            """Each mass's vector (its position or its velocity) as a LaTeX row and as data."""
+            """Each mass's vector (its position or its velocity, ``letter`` in LaTeX) as a LaTeX row and as data."""
             rows = [
                 # a common factor taken out, as a textbook writes a position: R(1 − cos θ), not −R cos θ + R
-                rf"\vec {letter}{label(i)} = \left({', '.join(pr.tex(_common_factor(c)) for c in vector)}\right)"
+                rf"{letter}{label(i)} = \left({', '.join(pr.tex(_common_factor(c)) for c in vector)}\right)"
                 for i, vector in enumerate(of_masses)
             ]
             return rows, [tuple(vector) for vector in of_masses]
@@ -469,7 +470,8 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             _step(
                 "positions",
                 "Positions",
-                *vectors("r", m.positions),
+                # r⃗, or R⃗ where r is a parameter (the rolling cylinder's radius): app/engine/notation.position
+                *vectors(notation.position(d)[0], m.positions),
                 "Each mass is placed in Cartesian coordinates as a function of the generalized coordinates"
                 + (
                     " and of time, because a constraint moves."
@@ -482,7 +484,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             _step(
                 "velocities",
                 "Velocities",
-                *vectors("v", m.velocities),
+                *vectors(r"\vec v", m.velocities),
                 "Differentiating each position along the motion (chain rule through every coordinate) gives its velocity.",
             )
         )
@@ -502,7 +504,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             )
         )
     if m.bodies:
-        steps.append(_bodies_step(m.bodies, pr))
+        steps.append(_bodies_step(m.bodies, pr, notation.position(d)[0]))
     if m.T is not None:
         steps.append(
             _step(
