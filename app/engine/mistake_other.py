@@ -271,3 +271,18 @@ def _fixed_in_energy(d: Derivation, bodies: list, truth: sp.Expr, step: str) -> 
             f"here the {body} moves{carries}, so {letter} has the {body}'s own ½ {shown} v² and the {rate} terms of "
             "every body it moves", fixed,
         )  # fmt: skip
+
+
+def held_fixed(d: Derivation) -> list[sp.Symbol]:
+    """The mass of each body that carries another and is held fixed as its mass → ∞ (its one coordinate's
+    acceleration then vanishes), where the figure has another body: the wedge's M under the block or the cylinder."""
+    namespace = d.table.namespace()
+    bodies = [(i, namespace[p.mass]) for i, p in enumerate(d.system.particles) if p.mass in namespace][:MAX_BODIES]
+    if len(bodies) + len(d.mechanics.bodies) < 2 or not d.equations.closed_form:
+        return []
+    return [M for i, M in bodies if _held(d, i, M)]
+
+
+def limit(expr: sp.Expr, M: sp.Symbol) -> sp.Expr | None:
+    """lim_{M→∞} of a rational function of M, zero included; None where it is not finite."""
+    return _at(expr, M, sp.oo, allow_zero=True)

@@ -17,7 +17,7 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine import meaning, notation, textbook
+from app.engine import comparisons, meaning, notation, textbook
 from app.engine.action_step import KEY as ACTION_KEY
 from app.engine.action_step import action_step
 from app.engine.bodies import BodyMotion
@@ -33,7 +33,7 @@ from app.engine.trees import maybe_of_sympy
 # Lagrangian, its equations of motion, the accelerations and what is conserved.  The others are bookkeeping a
 # page may fold away.
 CORE_STEPS = frozenset(
-    {"kinetic", "potential", "lagrangian", "generalized-forces", "euler-lagrange", "accelerations", "cyclic",
+    {"kinetic", "potential", "lagrangian", "generalized-forces", "euler-lagrange", "accelerations", "comparison", "cyclic",
      "h-vs-e", "energy-integral", ACTION_KEY}
 )  # fmt: skip
 
@@ -444,6 +444,37 @@ def _kinetic_explanation(m: Any, pr: Printer) -> str:
     return f"T adds up each rigid body's two pieces{masses}: {pieces}."
 
 
+def _comparison_step(d: Derivation, pr: Printer, acc: list[sp.Expr]) -> dict[str, str] | None:
+    """Each acceleration beside a carried body's that slides without turning and beside the carrier held fixed
+    (app/engine/comparisons.py), where a carried body rolls: the comparison its statement asks for."""
+    slid = comparisons.sliding(d) if acc else None
+    if slid is None:
+        return None
+    table = d.table
+    rows, data = [], []
+    body = next(b.body.label or b.body.kind for b in d.mechanics.bodies if b.rotation != 0)
+    for k, q in enumerate(table.qdd):
+        rows.append(rf"{pr.tex(q)} = {pr.tex(acc[k])}")
+        rows.append(rf"{pr.tex(q)}_{{\text{{sliding}}}} = {pr.tex(display(slid[k]))}")
+        data += [acc[k], slid[k]]
+    fixed = []
+    for M, limits in comparisons.held(d):
+        for k, q in enumerate(table.qdd):
+            if limits[k] is not None and limits[k] != 0:
+                rows.append(rf"{pr.tex(q)}_{{{pr.tex(M)} \to \infty}} = {pr.tex(display(limits[k]))}")
+                data.append(limits[k])
+        fixed.append(f"with {pr.text(M)} → ∞")
+    held = f", and the limit {' and '.join(fixed)}, where the body that carries it stays still" if fixed else ""
+    return _step(
+        "comparison",
+        "The accelerations compared",
+        rows,
+        data,
+        f"Each acceleration beside the same with the {body}'s turning left out, a body that slides without turning"
+        f"{held}.",
+    )
+
+
 def build_steps(d: Derivation) -> list[dict[str, str]]:
     m, eqs, en, red, table = d.mechanics, d.equations, d.energetics, d.reduction, d.table
     pr = Printer(table.latex_names())
@@ -626,6 +657,9 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             f"numerics solve {Mu} q̈ = f by LU at every step.",
         )
     )
+    compared = _comparison_step(d, pr, acc)
+    if compared is not None:
+        steps.append(compared)
     steps.append(
         _step(
             "momenta",

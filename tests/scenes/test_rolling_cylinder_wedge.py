@@ -130,3 +130,21 @@ def test_the_cylinder_never_leaves_the_slope():
     normal = sp.factor(sp.simplify(mm * (gg * sp.cos(aa) + Xdd * sp.sin(aa))))
     # N = m g cos α (3M + m)/(3M + m + 2m sin² α): positive for every mass and every angle below π/2
     assert sp.simplify(normal - mm * gg * sp.cos(aa) * (3 * MM + mm) / (3 * MM + mm + 2 * mm * sp.sin(aa) ** 2)) == 0
+
+
+def test_the_results_show_the_comparison_with_a_block_and_with_a_fixed_wedge():
+    # review prof-q 10: the statement asks for the comparison with a block; the Results show it first, the block's
+    # accelerations read from the chapter's own sliding wedge (D along the slope, as s is)
+    step = _steps()["comparison"]
+    rolled, slid, fixed = (sp.sympify(x, locals={"M": M, "m": m, "g": g, "alpha": alpha}) for x in
+                           sp.sstr(step["sympy"]).strip("[]").split(", ")[2:5])  # fmt: skip
+    block = derivation("movable-incline").equations.accelerations
+    names = {s.name: s for s in (*block[0].free_symbols, *block[1].free_symbols)}
+    assert sp.simplify(slid - block[1].xreplace({names[n]: S(n) for n in ("M", "m", "g", "alpha")})) == 0
+    assert sp.simplify(rolled - derivation(SCENE).equations.accelerations[1]) == 0
+    assert sp.simplify(fixed - sp.limit(rolled, M, sp.oo)) == 0
+    assert r"\ddot{s}_{\text{sliding}}" in step["latex"] and r"\ddot{s}_{M \to \infty}" in step["latex"]
+    assert "What the statement asks" in step["explanation"]
+    assert derivation_document(SCENE)["scene"]["answers"] == ["comparison"]
+    # the garbled sentence of the accelerations' reason (review prof-q 10)
+    assert "has the same numerator over M + m sin² α alone" in _steps()["accelerations"]["explanation"]
