@@ -310,8 +310,7 @@ MOVABLE_INCLINE: dict[str, str] = {
     "effective-potential": "At fixed p_X the slide D moves in a linear potential with a reduced inertia; the term p_X²/(2 (M + m)) is a constant (the kinetic energy the conserved momentum locks in), so only −m g D sin α pushes, and it has no minimum.",
     "energy-integral": "Energy at fixed p_X gives Ḋ from D.",
     "time-integral": "The integral gives the uniformly accelerated slide D(t).",
-    "reduced-equilibria": "U_eff′ is constant and non-zero: the block always slides.",
-    "equilibria": "A frictionless slope cannot hold the block, so there is none.",
+    "equilibria": "A frictionless slope cannot hold the block, so there is none; with p_X held, U_eff′ is a non-zero constant too: the block always slides.",
     "constraints": "With (x₁, z₁) the wedge's top corner and (x₂, z₂) the block, across and up in metres, the block stays on the slope and the wedge on the floor.",
     "multiplier-lagrangian": "Block and wedge free in the plane; λ₁ pushes them apart along the slope's normal, λ₂ holds the wedge on the floor.",
     "multiplier-equation": "The slope's normal involves both bodies, so each λ₁ equation holds both masses.",
@@ -346,8 +345,7 @@ ROLLING_CYLINDER_WEDGE: dict[str, str] = {
     "effective-potential": "At fixed p_X the roll s moves in a linear potential with a reduced inertia; the term p_X²/(2 (M + m)) is a constant, so only −m g s sin α pushes, and it has no minimum.",
     "energy-integral": "Energy at fixed p_X gives ṡ from s.",
     "time-integral": "The integral gives the uniformly accelerated roll s(t).",
-    "reduced-equilibria": "U_eff′ is constant and non-zero: the cylinder always rolls.",
-    "equilibria": "The slope cannot hold the cylinder still, so there is none.",
+    "equilibria": "The slope cannot hold the cylinder still, so there is none; with p_X held, U_eff′ is a non-zero constant too: the cylinder always rolls.",
 }
 
 

@@ -148,3 +148,10 @@ def test_the_results_show_the_comparison_with_a_block_and_with_a_fixed_wedge():
     assert derivation_document(SCENE)["scene"]["answers"] == ["comparison"]
     # the garbled sentence of the accelerations' reason (review prof-q 10)
     assert "has the same numerator over M + m sin² α alone" in _steps()["accelerations"]["explanation"]
+
+
+def test_that_there_is_no_equilibrium_is_said_once():
+    # review prof-q 12: U_eff′ ≠ 0 with p_X held and ∂U/∂s ≠ 0 are one fact; the Equilibria step says it
+    steps = derivation_document(SCENE)["steps"]
+    assert sum(s["latex"].count(r"\text{no equilibrium}") for s in steps) == 1
+    assert "reduced-equilibria" not in [s["key"] for s in steps]
