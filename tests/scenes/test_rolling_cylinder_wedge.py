@@ -155,3 +155,12 @@ def test_that_there_is_no_equilibrium_is_said_once():
     steps = derivation_document(SCENE)["steps"]
     assert sum(s["latex"].count(r"\text{no equilibrium}") for s in steps) == 1
     assert "reduced-equilibria" not in [s["key"] for s in steps]
+
+
+def test_the_rates_from_the_momenta_print_the_determinant_as_h_does():
+    # review prof-q 8: one form of det ℳ on the page, over whole numbers (never 3M/2 + m/2 + m sin² α)
+    steps = _steps()
+    shown = r"m + 3 M + 2 m \sin^{2} {\alpha}"
+    for key in ("legendre", "hamilton-equations", "hamiltonian-pq", "accelerations"):
+        assert shown in steps[key]["latex"], (key, steps[key]["latex"])
+        assert "M / 2" not in steps[key]["latex"] and "m / 2" not in steps[key]["latex"], key
