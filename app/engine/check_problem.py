@@ -17,7 +17,7 @@ from app.engine.derive import Derivation
 from app.engine.diagnose import catalogue
 from app.engine.dimensions import Dims, system_dimensions
 from app.engine.mistake_families import Mistake
-from app.engine.mistake_positions import component_keys, position_label
+from app.engine.mistake_positions import component_keys, points, position_label
 from app.engine.mistakes import absent_names, has_gravity, has_springs
 from app.engine.notation import MASS_INERTIA, Inertia, inertia, text
 from app.engine.report import plain_name
@@ -197,7 +197,7 @@ def problem(d: Derivation, step: str, coordinate: str | None = None, mistakes: b
     where: tuple[str, ...] = ()
     equilibrium: tuple[sp.Symbol, sp.Expr] | None = None
     if step == "position":
-        truths = (d.mechanics.positions[k // 3][k % 3],)  # type: ignore[operator]
+        truths = (points(d)[k // 3][k % 3],)  # type: ignore[operator]
     elif step == "kinetic":
         truths = (d.mechanics.T,)
     elif step == "potential":

@@ -362,6 +362,11 @@ def one_equilibria_step(d: Derivation, steps: list[dict[str, Any]]) -> list[dict
         return steps
     i = keys.index("reduced-equilibria")
     if red.momenta:
+        # no steady motion where the system has no equilibrium either: "none" said once, by the Equilibria step
+        # (the cylinder on the wedge: U_eff′ = −m g sin α beside ∂U/∂s = −m g sin α; review prof-q 12)
+        none = r"\text{no equilibrium}"
+        if not red.equilibria and "equilibria" in keys and none in steps[keys.index("equilibria")]["latex"]:
+            return [*steps[:i], *steps[i + 1 :]]
         return [*steps[:i], {**steps[i], "title": "Steady motions and small oscillations"}, *steps[i + 1 :]]
     if "equilibria" not in keys or steps[keys.index("equilibria")]["latex"] == r"\text{not computed}":
         return steps

@@ -15,7 +15,7 @@ from app.engine.constraints import AXES
 from app.engine.derive import Derivation
 from app.engine.dimensions import system_dimensions
 from app.engine.equilibria_notes import equilibria_notes
-from app.engine.mistake_positions import body_name, component_keys
+from app.engine.mistake_positions import body_name, component_keys, points
 from app.engine.mistakes import POINTERS, has_springs, pointer, without_springs
 from app.engine.names import said_all, unicode
 from app.engine.notation import inertia, letter
@@ -127,7 +127,7 @@ def _lhs(step: str, name: str | None, pr: Printer, d: Derivation) -> str:
     if step == "position":
         # x, or x with the body's name where there are several (never x₂, which may be a coordinate's name)
         i, a = next((i, a) for key, i, a in component_keys(d) if key == name)
-        many = len(d.mechanics.positions) > 1
+        many = len(points(d)) > 1
         return AXES[a] + (rf"_{{\text{{{body_name(d, i).removeprefix('the ')}}}}}" if many else "")
     if name is not None:
         q = d.table.q[d.table.names.index(name)]

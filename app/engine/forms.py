@@ -697,16 +697,27 @@ def _whole_denominator(expr: Any) -> Any:
     if not isinstance(expr, sp.Expr) or not expr.free_symbols:
         return expr
     num, den = sp.fraction(expr)
-    if not isinstance(den, sp.Add):
+    # the sum may stand beside other factors: m(3M/2 + m/2 + m sin² α), the rolling cylinder's ṡ from its momenta
+    sums = [f for f in sp.Mul.make_args(den) if isinstance(f, sp.Add)]
+    if len(sums) != 1:
         return expr
     # the least common multiple of the denominators of the sum's numbers: (3M/2 + m/2 + m sin² α) × 2
-    below = [sp.fraction(t.as_coeff_Mul()[0])[1] for t in den.args]
+    below = [sp.fraction(t.as_coeff_Mul()[0])[1] for t in sums[0].args]
     scale = sp.ilcm(1, *below)
     # one fraction among whole terms is an added inertia a textbook keeps in sight: the massive pulley's
     # (m₁ − m₂) g/(m₁ + m₂ + M/2), as its T = ½(m₁ + m₂ + M/2) ẏ² and its equation print it
     if scale == 1 or sum(b != 1 for b in below) < 2:
         return expr
-    return sp.Mul(num * scale, sp.Pow(sp.expand(den * scale), -1))
+    rest = sp.Mul(*(f for f in sp.Mul.make_args(den) if f is not sums[0]))
+    # the numerator times the same number, its own fractions cleared too (3 p_X/2 − p_s cos α → 3 p_X − 2 p_s cos α)
+    top = sp.expand(num * scale) if isinstance(num, sp.Add) else num * scale
+    return sp.Mul(top, sp.Pow(rest * sp.expand(sums[0] * scale), -1))
+
+
+def whole_denominator(expr: Any) -> Any:
+    """A quotient with the fractions in its denominator's sum cleared, where two or more terms carry one (the
+    accelerations' rule, read by Hamilton's velocities too)."""
+    return _whole_denominator(expr)
 
 
 def _differ_by_a_parameter(total: sp.Expr) -> bool:

@@ -60,7 +60,10 @@ def held_still(d: Derivation, step: str, truth: sp.Expr, k: int | None = None) -
     (but for a body held still), and differs from the truth.  An equation: the held body's coordinate fixed."""
     namespace = d.table.namespace()
     bodies = [(i, p.mass, p.label) for i, p in enumerate(d.system.particles) if p.mass in namespace][:MAX_BODIES]
-    if len(bodies) < 2:
+    # a declared rigid body counts among the bodies in an acceleration, though its own mass is not tried (the
+    # cylinder on the wedge: its equation and T name the wedge's motion left out of v_cm, mistake_pieces)
+    carried = len(d.mechanics.bodies) if step == "acceleration" else 0
+    if len(bodies) + carried < 2:
         return  # one body: nothing else to hold still or to leave out
     if step == "equation" and k is not None:
         yield from _fixed_in_equation(d, bodies, truth, k)
@@ -86,7 +89,15 @@ def held_still(d: Derivation, step: str, truth: sp.Expr, k: int | None = None) -
         infinite = _at(truth, M, sp.oo, allow_zero=held)
         if infinite is None:
             continue
-        if held:
+        if held and step == "acceleration":
+            # the carrier's acceleration → 0 as M → ∞: the answer of the carrier held fixed (the fixed wedge's
+            # s̈ = 2g sin α/3), where its recoil couples the equations (prof-q 1)
+            equations = " and ".join(unicode(q) for q in d.table.names)
+            still.append(Mistake(
+                f"{key}.held_still.{mass_name}", "limit", f"the acceleration with the {body} held fixed ({shown} → ∞)",
+                None, f"here the {body} recoils, so the {equations} equations are solved together", infinite,
+            ))  # fmt: skip
+        elif held:
             still.append(Mistake(
                 f"{key}.held_still.{mass_name}", "limit", f"the answer with the {body} treated as fixed, as if held "
                 f"still ({shown} → ∞)", None, f"here the {body} is free to move and recoils as the rest moves, so "
@@ -260,3 +271,18 @@ def _fixed_in_energy(d: Derivation, bodies: list, truth: sp.Expr, step: str) -> 
             f"here the {body} moves{carries}, so {letter} has the {body}'s own ½ {shown} v² and the {rate} terms of "
             "every body it moves", fixed,
         )  # fmt: skip
+
+
+def held_fixed(d: Derivation) -> list[sp.Symbol]:
+    """The mass of each body that carries another and is held fixed as its mass → ∞ (its one coordinate's
+    acceleration then vanishes), where the figure has another body: the wedge's M under the block or the cylinder."""
+    namespace = d.table.namespace()
+    bodies = [(i, namespace[p.mass]) for i, p in enumerate(d.system.particles) if p.mass in namespace][:MAX_BODIES]
+    if len(bodies) + len(d.mechanics.bodies) < 2 or not d.equations.closed_form:
+        return []
+    return [M for i, M in bodies if _held(d, i, M)]
+
+
+def limit(expr: sp.Expr, M: sp.Symbol) -> sp.Expr | None:
+    """lim_{M→∞} of a rational function of M, zero included; None where it is not finite."""
+    return _at(expr, M, sp.oo, allow_zero=True)

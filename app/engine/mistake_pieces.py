@@ -964,8 +964,11 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
         return
     if step not in ("equation", "acceleration", "omega_squared"):
         return
-    if step == "acceleration" and len(d.table.q) != 1:
-        return  # coupled accelerations: the equations' mistakes are carried by mistake_equations
+    if step == "acceleration" and k is not None and len(d.table.q) != 1:
+        # coupled accelerations: the equations' mistakes are carried by mistake_equations; a rigid body's slip
+        # changes the mass matrix too, so its equations are solved anew (the turning forgotten: a block's s̈)
+        yield from _rigid_coupled(d, k, rigid)
+        return
     changes: list[tuple[str, str, sp.Expr, sp.Expr, Correct | None]] = list(rigid)
     T, U = d.mechanics.T, d.mechanics.U
     for m in list(kinetic_mistakes(d))[:MAX_TRAVEL]:
@@ -1015,6 +1018,28 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
                 yield Mistake(f"omega_squared.{key}", family, name, None,
                               f"your {w2} follows from it: {w2} is the effective potential's second derivative over "
                               f"the {inertia(d).words}, at the equilibrium", w, correct=correct)  # fmt: skip
+
+
+# the turning forgotten leaves a body that slides as a point, as a block does: its accelerations are a block's
+_SLIDES = "that is the acceleration of a body that slides without turning, such as a block"
+
+
+def _rigid_coupled(d: Derivation, k: int, rigid: list) -> Iterator[Mistake]:
+    """q̈_k from every equation of an L with a rigid body's slip, solved together: M' q̈ = f'."""
+    t = d.table
+    zero = dict.fromkeys(t.qdd, sp.Integer(0))
+    for key, name, dT, dU, correct in rigid:
+        # each equation changes by the Euler–Lagrange expression of ΔL = ΔT − ΔU
+        wrong = [sp.expand(r + euler_lagrange(d, j, dT - dU)) for j, r in enumerate(d.equations.residuals)]
+        M = sp.Matrix([[sp.diff(r, a) for a in t.qdd] for r in wrong])
+        if M.det() == 0:
+            continue
+        solved = sp.factor(M.LUsolve(sp.Matrix([-r.xreplace(zero) for r in wrong]))[k])
+        why = _SLIDES if key.startswith("rigid.turning_forgotten") else "your acceleration is what such a T gives"
+        # the slip by its short name (the part before its own colon): a hint's sentence holds one colon
+        yield Mistake(f"acceleration.{key}", "rigid", name.split(": ")[0], None,
+                      f"{why}. If your T has that slip, fix it there and derive again", solved,
+                      correct=correct)  # fmt: skip
 
 
 def _terms_lost(

@@ -28,24 +28,52 @@ _AXIS_WORDS = {
 }
 
 
+def points(d: Derivation) -> tuple[tuple[sp.Expr, ...], ...]:
+    """The position of every point a positions step asks about: each particle's, then the centre of each declared
+    rigid body that moves (the cylinder's on the wedge, where the wedge's motion enters its velocity); a wheel
+    turning on a fixed axle has no centre that moves."""
+    centres = tuple(b.centre for b in d.mechanics.bodies if b.translation != 0)
+    return (*d.mechanics.positions, *centres)
+
+
+def _moving(d: Derivation, i: int, a: int) -> sp.Expr:
+    """The part of body i's component a that moves (its constant lengths dropped: the origin's choice)."""
+    return sp.Add(*_moving_terms(points(d)[i][a], (*d.table.q, d.table.t)))
+
+
 def component_keys(d: Derivation) -> list[tuple[str, int, int]]:
     """(key, body, axis) of every component that moves: x, y, z for one body; x1, z2, … for several (the
     constraints' names, ``app.engine.constraints.cartesian_symbols``). A component that is a constant (a
-    planar figure's y = 0, a fixed pulley's x) has nothing to derive and is left out."""
-    positions = d.mechanics.positions
+    planar figure's y = 0, a fixed pulley's x) has nothing to derive and is left out; so is a carrier's component
+    that is a coordinate itself (the wedge's x = X), which the carried body's own component holds (its x is
+    X + …): that one is asked, where the carrier's motion enters (review prof-q 3)."""
+    found = d.mechanics.positions and points(d)
     moving = (*d.table.q, d.table.t)
     out = []
-    for i, triple in enumerate(cartesian_symbols(len(positions))):
+    for i, triple in enumerate(cartesian_symbols(len(found))):
         for a, symbol in enumerate(triple):
-            if positions[i][a].has(*moving):
+            if found[i][a].has(*moving) and not _carrier_coordinate(d, i, a):
                 out.append((symbol.name, i, a))
     return out
 
 
+def _carrier_coordinate(d: Derivation, i: int, a: int) -> bool:
+    """Whether body i's component a is a coordinate alone that another body's same component holds as a term."""
+    own = _moving(d, i, a)
+    if own not in d.table.q:
+        return False
+    moving = (*d.table.q, d.table.t)
+    return any(j != i and own in _moving_terms(r[a], moving) for j, r in enumerate(points(d)))
+
+
 def body_name(d: Derivation, i: int) -> str:
-    """The body as the page names it: the block, the upper bob; else particle 2."""
+    """The body as the page names it: the block, the upper bob, the cylinder's centre; else particle 2."""
     particles = d.system.particles
-    label = particles[i].label if i < len(particles) else ""
+    if i >= len(particles):
+        moving = [b for b in d.mechanics.bodies if b.translation != 0]
+        b = moving[i - len(particles)]
+        return f"the {b.body.label or b.body.kind}'s centre"
+    label = particles[i].label
     return f"the {label}" if label else f"particle {i + 1}"
 
 
@@ -76,7 +104,7 @@ def _moving_terms(expr: sp.Expr, moving: tuple[sp.Symbol, ...]) -> list[sp.Expr]
 
 def position_mistakes(d: Derivation, i: int, a: int) -> Iterator[Mistake]:
     """The plausible wrong answers for body i's component a, most specific first."""
-    positions, table = d.mechanics.positions, d.table
+    positions, table = points(d), d.table
     axis, body = AXES[a], body_name(d, i)
     moving = (*table.q, table.t)
     terms = _moving_terms(positions[i][a], moving)[:MAX_TERMS]

@@ -146,6 +146,20 @@ def inertia(d: Derivation | None, name: str | None = None) -> Inertia:
     return ANGLE_INERTIA if name in angle_coordinates(d) else MASS_INERTIA
 
 
+# The position vector of a point: r⃗, as Taylor and Morin write it. Where a parameter is called r (the rolling
+# cylinder's radius), R⃗, the letter Goldstein gives the centre of mass's position, so that r is never a fixed
+# length and a vector on one page; ρ⃗ where R is a parameter too. A coordinate r keeps r⃗: it is the vector's own
+# length (the puck's r⃗ = (r cos θ, r sin θ, 0)).
+POSITION: tuple[tuple[str, str], ...] = ((r"\vec r", "r⃗"), (r"\vec R", "R⃗"), (r"\vec \rho", "ρ⃗"))
+
+
+def position(d: Derivation) -> tuple[str, str]:
+    """The letter (LaTeX, Unicode) of the position vectors on this page: r⃗, unless a parameter is r."""
+    taken = {unicode(p.name) for p in d.system.parameters}
+    # a vector's letter is taken where its bare letter names a parameter
+    return next((c for c in POSITION if c[1].removesuffix("\u20d7") not in taken), POSITION[-1])
+
+
 # the exponents of a small motion η ∝ e^{λt}, the roots of its auxiliary equation: never r, which names the
 # positions r⃗ on every page, nor s, the unit beside them (s⁻¹); λ as in an eigenvalue problem, σ where λ is taken
 # (a constraint's multipliers λ₁, λ₂, …, or a parameter called λ)

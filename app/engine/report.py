@@ -17,7 +17,7 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine import meaning, notation, textbook
+from app.engine import comparisons, meaning, notation, textbook
 from app.engine.action_step import KEY as ACTION_KEY
 from app.engine.action_step import action_step
 from app.engine.bodies import BodyMotion
@@ -33,7 +33,7 @@ from app.engine.trees import maybe_of_sympy
 # Lagrangian, its equations of motion, the accelerations and what is conserved.  The others are bookkeeping a
 # page may fold away.
 CORE_STEPS = frozenset(
-    {"kinetic", "potential", "lagrangian", "generalized-forces", "euler-lagrange", "accelerations", "cyclic",
+    {"kinetic", "potential", "lagrangian", "generalized-forces", "euler-lagrange", "accelerations", "comparison", "cyclic",
      "h-vs-e", "energy-integral", ACTION_KEY}
 )  # fmt: skip
 
@@ -363,14 +363,15 @@ def _turning_squared(b: BodyMotion, pr: Printer, tex: bool = True) -> str:
     return f"{pr.tex(rate)}^{{2}}" if rate.is_Symbol else rf"\left({pr.tex(rate)}\right)^{{2}}"
 
 
-def _bodies_step(bodies: tuple[BodyMotion, ...], pr: Printer) -> dict[str, str]:
-    """Each rigid body's centre, the squared speed of its centre, its angular velocity and I_cm from the table."""
+def _bodies_step(bodies: tuple[BodyMotion, ...], pr: Printer, vector: str = r"\vec r") -> dict[str, str]:
+    """Each rigid body's centre (``vector`` the page's position letter, app/engine/notation.position), the squared
+    speed of its centre, its angular velocity and I_cm from the table."""
     rows: list[str] = []
     data: list[sp.Expr] = []
     for i, b in enumerate(bodies):
         cm = _body_mark(bodies, i)
         rows += [
-            rf"\vec r_{{{cm}}} = \left({', '.join(pr.tex(_common_factor(c)) for c in b.centre)}\right)",
+            rf"{vector}_{{{cm}}} = \left({', '.join(pr.tex(_common_factor(c)) for c in b.centre)}\right)",
             rf"v_{{{cm}}}^2 = {pr.tex(b.speed_squared)}",
             rf"I_{{{cm}}} = {pr.tex(b.inertia)}",
         ]
@@ -443,6 +444,37 @@ def _kinetic_explanation(m: Any, pr: Printer) -> str:
     return f"T adds up each rigid body's two pieces{masses}: {pieces}."
 
 
+def _comparison_step(d: Derivation, pr: Printer, acc: list[sp.Expr]) -> dict[str, str] | None:
+    """Each acceleration beside a carried body's that slides without turning and beside the carrier held fixed
+    (app/engine/comparisons.py), where a carried body rolls: the comparison its statement asks for."""
+    slid = comparisons.sliding(d) if acc else None
+    if slid is None:
+        return None
+    table = d.table
+    rows, data = [], []
+    body = next(b.body.label or b.body.kind for b in d.mechanics.bodies if b.rotation != 0)
+    for k, q in enumerate(table.qdd):
+        rows.append(rf"{pr.tex(q)} = {pr.tex(acc[k])}")
+        rows.append(rf"{pr.tex(q)}_{{\text{{sliding}}}} = {pr.tex(display(slid[k]))}")
+        data += [acc[k], slid[k]]
+    fixed = []
+    for M, limits in comparisons.held(d):
+        for k, q in enumerate(table.qdd):
+            if limits[k] is not None and limits[k] != 0:
+                rows.append(rf"{pr.tex(q)}_{{{pr.tex(M)} \to \infty}} = {pr.tex(display(limits[k]))}")
+                data.append(limits[k])
+        fixed.append(f"with {pr.text(M)} → ∞")
+    held = f", and the limit {' and '.join(fixed)}, where the body that carries it stays still" if fixed else ""
+    return _step(
+        "comparison",
+        "The accelerations compared",
+        rows,
+        data,
+        f"Each acceleration beside the same with the {body}'s turning left out, a body that slides without turning"
+        f"{held}.",
+    )
+
+
 def build_steps(d: Derivation) -> list[dict[str, str]]:
     m, eqs, en, red, table = d.mechanics, d.equations, d.energetics, d.reduction, d.table
     pr = Printer(table.latex_names())
@@ -457,10 +489,10 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
         label = (lambda i: rf"_{{{i + 1}}}") if n > 1 else (lambda i: "")
 
         def vectors(letter: str, of_masses: Any) -> tuple[list[str], list[tuple[sp.Expr, ...]]]:
-            """Each mass's vector (its position or its velocity) as a LaTeX row and as data."""
+            """Each mass's vector (its position or its velocity, ``letter`` in LaTeX) as a LaTeX row and as data."""
             rows = [
                 # a common factor taken out, as a textbook writes a position: R(1 − cos θ), not −R cos θ + R
-                rf"\vec {letter}{label(i)} = \left({', '.join(pr.tex(_common_factor(c)) for c in vector)}\right)"
+                rf"{letter}{label(i)} = \left({', '.join(pr.tex(_common_factor(c)) for c in vector)}\right)"
                 for i, vector in enumerate(of_masses)
             ]
             return rows, [tuple(vector) for vector in of_masses]
@@ -469,7 +501,8 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             _step(
                 "positions",
                 "Positions",
-                *vectors("r", m.positions),
+                # r⃗, or R⃗ where r is a parameter (the rolling cylinder's radius): app/engine/notation.position
+                *vectors(notation.position(d)[0], m.positions),
                 "Each mass is placed in Cartesian coordinates as a function of the generalized coordinates"
                 + (
                     " and of time, because a constraint moves."
@@ -482,7 +515,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             _step(
                 "velocities",
                 "Velocities",
-                *vectors("v", m.velocities),
+                *vectors(r"\vec v", m.velocities),
                 "Differentiating each position along the motion (chain rule through every coordinate) gives its velocity.",
             )
         )
@@ -502,7 +535,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             )
         )
     if m.bodies:
-        steps.append(_bodies_step(m.bodies, pr))
+        steps.append(_bodies_step(m.bodies, pr, notation.position(d)[0]))
     if m.T is not None:
         steps.append(
             _step(
@@ -624,6 +657,9 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
             f"numerics solve {Mu} q̈ = f by LU at every step.",
         )
     )
+    compared = _comparison_step(d, pr, acc)
+    if compared is not None:
+        steps.append(compared)
     steps.append(
         _step(
             "momenta",

@@ -19,6 +19,7 @@ from app.engine.budget import memoized, pythagoras
 from app.engine.damping import damped
 from app.engine.derive import Derivation
 from app.engine.dimensions import add_dims, parse_unit, system_dimensions, unit_latex, unit_text
+from app.engine.forms import whole_denominator
 from app.engine.hamilton import Hamilton
 from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode, NormalModes, defaults
 from app.engine.names import latex
@@ -70,7 +71,8 @@ def hamilton_steps(d: Derivation, ham: Hamilton) -> list[dict[str, str]]:
     # ṗ_θ: the dot on the p, not over its subscript (app.engine.names, the one home of a dotted name)
     pdn = [latex(f"{P.name}_dot") for P in ham.momenta]
     vn = [pr.tex(v) for v in table.qd]
-    velocities = [_show(v) for v in ham.velocities]
+    # over whole numbers, as the accelerations are: the rolling cylinder's ṡ over m(3M + m + 2m sin² α)/2's double
+    velocities = [whole_denominator(_show(v)) for v in ham.velocities]
     H = _hamiltonian_shown(ham)
     p_dot = [_show(x) for x in ham.p_dot]
     forced = any(f != 0 for f in d.mechanics.Q)

@@ -126,7 +126,11 @@ class _Printer(LatexPrinter):
                 return (not own, -1.5, negative, min(held), sp.default_sort_key(term))
             # the term holding ``first`` leads whatever its level (U_eff's centrifugal piece before −mgD sin α)
             return (not own, -self.level(term), negative, sp.default_sort_key(term))
-        rank = _parameter_rank(term.name) if term.is_Symbol and term not in self.moving else (9, "", "")
+        # a parameter times a whole number ranks as the parameter: 3M + m + 2m sin² α, as a textbook writes a
+        # determinant (a fraction of one, an added inertia M/2, stays after the masses: m₁ + m₂ + M/2)
+        coeff, alone = term.as_coeff_Mul()
+        named = alone if alone.is_Symbol and alone not in self.moving and coeff.is_Integer else None
+        rank = _parameter_rank(named.name) if named is not None else (9, "", "")
         if getattr(self, "_constants_first", False):
             return (negative, not self.constant(term), rank, sp.default_sort_key(term))
         return (self.constant(term) and not term.is_Number, negative, rank, sp.default_sort_key(term))

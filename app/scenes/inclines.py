@@ -176,6 +176,8 @@ ROLLING_CYLINDER_WEDGE = Scene(
     family="rolling-wedge",
     reasons=reasons.ROLLING_CYLINDER_WEDGE,
     beyond_chapter=True,
+    # the comparison the statement asks for, with a block and with a fixed wedge, first in the Results
+    answers=("comparison",),
     summary="The sliding wedge again, with a cylinder that rolls: part of its energy goes into turning, and it falls slower.",
     statement=(
         "A uniform solid cylinder of mass m and radius r rolls without slipping down the slope of a wedge of mass M "

@@ -310,8 +310,7 @@ MOVABLE_INCLINE: dict[str, str] = {
     "effective-potential": "At fixed p_X the slide D moves in a linear potential with a reduced inertia; the term p_X²/(2 (M + m)) is a constant (the kinetic energy the conserved momentum locks in), so only −m g D sin α pushes, and it has no minimum.",
     "energy-integral": "Energy at fixed p_X gives Ḋ from D.",
     "time-integral": "The integral gives the uniformly accelerated slide D(t).",
-    "reduced-equilibria": "U_eff′ is constant and non-zero: the block always slides.",
-    "equilibria": "A frictionless slope cannot hold the block, so there is none.",
+    "equilibria": "A frictionless slope cannot hold the block, so there is none; with p_X held, U_eff′ is a non-zero constant too: the block always slides.",
     "constraints": "With (x₁, z₁) the wedge's top corner and (x₂, z₂) the block, across and up in metres, the block stays on the slope and the wedge on the floor.",
     "multiplier-lagrangian": "Block and wedge free in the plane; λ₁ pushes them apart along the slope's normal, λ₂ holds the wedge on the floor.",
     "multiplier-equation": "The slope's normal involves both bodies, so each λ₁ equation holds both masses.",
@@ -333,7 +332,8 @@ ROLLING_CYLINDER_WEDGE: dict[str, str] = {
     "derivatives:s": "∂L/∂s = m g sin α is gravity along the slope; ∂L/∂ṡ holds the turning's extra ½ m ṡ.",
     "euler-lagrange": "The first says the total horizontal momentum is constant; the second is the roll, with the friction that makes the cylinder turn hidden in the rolling condition.",
     "mass-matrix": "The mass matrix ℳ is not diagonal: rolling the cylinder pushes the wedge back. Its corner 3m/2 is the cylinder's inertia along the slope, m for its centre and m/2 for its turning.",
-    "accelerations": "Both accelerations are constant. Halved above and below, s̈ is (M + m) g sin α over M + m sin² α + (M + m)/2: a block sliding on the same wedge has the same over M + m sin² α alone, so the turning adds (M + m)/2 to the denominator, and the cylinder rolls down more slowly and pushes the wedge back less. With the wedge held fixed (M → ∞) s̈ is 2g sin α/3, a block's g sin α.",
+    "accelerations": "Both accelerations are constant. Halved above and below, s̈ is (M + m) g sin α over M + m sin² α + (M + m)/2: a block sliding on the same wedge has the same numerator over M + m sin² α alone, so the turning adds (M + m)/2 to the denominator, and the cylinder rolls down more slowly and pushes the wedge back less. With the wedge held fixed (M → ∞) s̈ is 2g sin α/3, a block's g sin α.",
+    "comparison": "What the statement asks: beside the cylinder, a block sliding without friction on the same wedge (the cylinder with its turning left out) and the wedge held fixed (M → ∞). The block's accelerations have M + m sin² α below, the cylinder's a larger denominator, so the cylinder rolls down more slowly and pushes the wedge back less; on a fixed wedge the cylinder's s̈ is 2g sin α/3, a block's g sin α.",
     "momenta": "p_X = (M + m) Ẋ + m ṡ cos α is the total horizontal momentum; p_s is not conserved, gravity acts along s.",
     "cyclic": "The floor is uniform, so p_X is conserved: starting from rest, the wedge moves back as the cylinder moves forward, their centre of mass staying at the same horizontal place.",
     "time-dependence": "Nothing is driven, so L has no t.",
@@ -345,8 +345,7 @@ ROLLING_CYLINDER_WEDGE: dict[str, str] = {
     "effective-potential": "At fixed p_X the roll s moves in a linear potential with a reduced inertia; the term p_X²/(2 (M + m)) is a constant, so only −m g s sin α pushes, and it has no minimum.",
     "energy-integral": "Energy at fixed p_X gives ṡ from s.",
     "time-integral": "The integral gives the uniformly accelerated roll s(t).",
-    "reduced-equilibria": "U_eff′ is constant and non-zero: the cylinder always rolls.",
-    "equilibria": "The slope cannot hold the cylinder still, so there is none.",
+    "equilibria": "The slope cannot hold the cylinder still, so there is none; with p_X held, U_eff′ is a non-zero constant too: the cylinder always rolls.",
 }
 
 

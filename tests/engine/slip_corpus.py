@@ -710,6 +710,19 @@ NAMED = [
         r"^(?!.*sum of squares).*½ m v_cm², with v_cm² = \(Ẋ \+ ṡ cos\(α\)\)² \+ \(ṡ sin\(α\)\)²: expand the square "
         r"that holds both Ẋ and ṡ",
     ),
+    # review prof-q 1: the fixed wedge's s̈ = 2g sin α/3 is the answer with the wedge held fixed (never "another
+    # system's, such as an Atwood machine's"), and a sliding block's s̈ and Ẍ are the cylinder's turning forgotten
+    ("rolling-cylinder-wedge", "acceleration", "s", "2*g*sin(alpha)/3",
+     r"^(?!.*Atwood).*wedge held fixed \(M → ∞\).*the wedge recoils, so the X and s equations are solved together"),
+    ("rolling-cylinder-wedge", "acceleration", "s", "(M + m)*g*sin(alpha)/(M + m*sin(alpha)**2)",
+     r"cylinder's turning forgotten.*slides without turning, such as a block"),
+    ("rolling-cylinder-wedge", "acceleration", "X", "-m*g*sin(alpha)*cos(alpha)/(M + m*sin(alpha)**2)",
+     r"cylinder's turning forgotten.*slides without turning, such as a block"),
+    # review prof-q 3: the cylinder's centre is asked, where the wedge's motion enters: its X left out, sin and cos
+    # swapped
+    ("rolling-cylinder-wedge", "position", "x2", "s*cos(alpha) + r*sin(alpha)", r"wedge's x left out.*carries"),
+    ("rolling-cylinder-wedge", "position", "x2", "X + s*sin(alpha) + r*cos(alpha)", SWAP),
+    ("rolling-cylinder-wedge", "position", "z2", "r*sin(alpha) - s*cos(alpha)", SWAP),
 ]
 SLIPS += NAMED
 
@@ -811,6 +824,7 @@ CORRECT = [
     ),
     ("rolling-cylinder-wedge", "equation", "s", "3*s_ddot + 2*X_ddot*cos(alpha) - 2*g*sin(alpha)"),
     ("rolling-cylinder-wedge", "acceleration", "s", "2*(M + m)*g*sin(alpha)/(3*M + m + 2*m*sin(alpha)**2)"),
+    ("rolling-cylinder-wedge", "position", "x2", "X + s*cos(alpha)"),
     ("rolling-disc", "omega_squared", None, "2*k/(3*M)"),
     ("rolling-disc", "equation", "x", "x_ddot + 2*k*x/(3*M) - 2*g*sin(alpha)/3"),
     ("elastic-pendulum", "potential", None, "k*(l - r)**2/2 - m*g*r*cos(phi)"),

@@ -350,3 +350,17 @@ def test_no_conserved_momentum_is_said_held_where_there_is_none():
     assert helix["U_eff"] and "conserved momenta" not in helix["U_eff"] + helix["m_eff"]
     wedge = {r["unicode"]: r["meaning"] for r in notation.table(derivation("movable-incline"))}
     assert "conserved momenta" in wedge["U_eff"] and "conserved momenta" in wedge["m_eff"]
+
+
+@pytest.mark.parametrize("scene_id", sorted(SCENES))
+def test_a_position_vector_is_never_written_with_a_parameters_letter(scene_id):
+    # review prof-q 4: the cylinder's radius is r, so its page writes the positions R⃗ (R⃗ = (X, 0, 0) for the
+    # wedge, R⃗_cm for the cylinder's centre); every other page keeps r⃗, the puck's too, whose coordinate r is the
+    # vector's own length
+    doc = derivation_document(scene_id)
+    parameters = {r["unicode"] for r in doc["notation"] if r["kind"] == "parameter"}
+    rows = [s["latex"] for s in doc["steps"] if s["key"] in ("positions", "bodies")]
+    vectors = {m.group(1) for tex in rows for m in re.finditer(r"\\vec\s*\\?([A-Za-z]+)", tex)}
+    assert vectors, rows
+    assert not {("ρ" if v == "rho" else v) for v in vectors} & parameters, (vectors, parameters)
+    assert vectors == ({"R"} if scene_id == "rolling-cylinder-wedge" else {"r"}), vectors

@@ -111,8 +111,8 @@ def test_t_is_the_centres_motion_plus_the_turning_about_the_centre():
 def test_the_accelerations_and_the_conserved_momentum_as_a_textbook_prints_them():
     steps = _steps()
     assert steps["accelerations"]["latex"] == (
-        r"\begin{aligned}\ddot{X} &= - \frac{2 m g \sin {\alpha} \cos {\alpha}}{m + 3 M + 2 m \sin^{2} {\alpha}} \\ "
-        r"\ddot{s} &= \frac{2 \left(M + m\right) g \sin {\alpha}}{m + 3 M + 2 m \sin^{2} {\alpha}}\end{aligned}"
+        r"\begin{aligned}\ddot{X} &= - \frac{2 m g \sin {\alpha} \cos {\alpha}}{3 M + m + 2 m \sin^{2} {\alpha}} \\ "
+        r"\ddot{s} &= \frac{2 \left(M + m\right) g \sin {\alpha}}{3 M + m + 2 m \sin^{2} {\alpha}}\end{aligned}"
     )
     assert steps["cyclic"]["latex"] == (
         r"\frac{\partial L}{\partial X} = 0 \;\Rightarrow\; p_{X} = \left(M + m\right) \dot{X} + m \dot{s} \cos {\alpha}"
@@ -130,3 +130,37 @@ def test_the_cylinder_never_leaves_the_slope():
     normal = sp.factor(sp.simplify(mm * (gg * sp.cos(aa) + Xdd * sp.sin(aa))))
     # N = m g cos α (3M + m)/(3M + m + 2m sin² α): positive for every mass and every angle below π/2
     assert sp.simplify(normal - mm * gg * sp.cos(aa) * (3 * MM + mm) / (3 * MM + mm + 2 * mm * sp.sin(aa) ** 2)) == 0
+
+
+def test_the_results_show_the_comparison_with_a_block_and_with_a_fixed_wedge():
+    # review prof-q 10: the statement asks for the comparison with a block; the Results show it first, the block's
+    # accelerations read from the chapter's own sliding wedge (D along the slope, as s is)
+    step = _steps()["comparison"]
+    rolled, slid, fixed = (sp.sympify(x, locals={"M": M, "m": m, "g": g, "alpha": alpha}) for x in
+                           sp.sstr(step["sympy"]).strip("[]").split(", ")[2:5])  # fmt: skip
+    block = derivation("movable-incline").equations.accelerations
+    names = {s.name: s for s in (*block[0].free_symbols, *block[1].free_symbols)}
+    assert sp.simplify(slid - block[1].xreplace({names[n]: S(n) for n in ("M", "m", "g", "alpha")})) == 0
+    assert sp.simplify(rolled - derivation(SCENE).equations.accelerations[1]) == 0
+    assert sp.simplify(fixed - sp.limit(rolled, M, sp.oo)) == 0
+    assert r"\ddot{s}_{\text{sliding}}" in step["latex"] and r"\ddot{s}_{M \to \infty}" in step["latex"]
+    assert "What the statement asks" in step["explanation"]
+    assert derivation_document(SCENE)["scene"]["answers"] == ["comparison"]
+    # the garbled sentence of the accelerations' reason (review prof-q 10)
+    assert "has the same numerator over M + m sin² α alone" in _steps()["accelerations"]["explanation"]
+
+
+def test_that_there_is_no_equilibrium_is_said_once():
+    # review prof-q 12: U_eff′ ≠ 0 with p_X held and ∂U/∂s ≠ 0 are one fact; the Equilibria step says it
+    steps = derivation_document(SCENE)["steps"]
+    assert sum(s["latex"].count(r"\text{no equilibrium}") for s in steps) == 1
+    assert "reduced-equilibria" not in [s["key"] for s in steps]
+
+
+def test_the_rates_from_the_momenta_print_the_determinant_as_h_does():
+    # review prof-q 8: one form of det ℳ on the page, over whole numbers (never 3M/2 + m/2 + m sin² α)
+    steps = _steps()
+    shown = r"3 M + m + 2 m \sin^{2} {\alpha}"
+    for key in ("legendre", "hamilton-equations", "hamiltonian-pq", "accelerations"):
+        assert shown in steps[key]["latex"], (key, steps[key]["latex"])
+        assert "M / 2" not in steps[key]["latex"] and "m / 2" not in steps[key]["latex"], key
