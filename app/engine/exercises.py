@@ -93,17 +93,9 @@ def position_note(d: Derivation) -> str:
         and any(r[2].has(q) for r in positions)
         and not any(r[1].has(q) for r in positions)
     ]
-    # one that takes a body down as it grows (the massive pulley's y, how far m₁ has descended: z = −y) is a
-    # vertical distance, not a height
-    down = [q for q in heights if any(sp.expand(r[2] + q) == 0 for r in positions)]
-    said = ""
-    for group, one, many, how in (
-        ([q for q in heights if q not in down], "is a height", "are heights", "measured up, along z"),
-        (down, "is a vertical distance", "are vertical distances", "along z"),
-    ):
-        if group:
-            names = ", ".join(unicode(q.name) for q in group)
-            said += f" Here {names} {many if len(group) > 1 else one} ({how}), not the third direction."
+    said = ", ".join(unicode(q.name) for q in heights)
+    if heights:
+        said = f" Here {said} {'are heights' if len(heights) > 1 else 'is a height'} (measured up, along z), not the third direction."
     return POSITION_NOTE.format(heights=said, example=example)
 
 
