@@ -11,7 +11,9 @@ Display only: the SymPy strings of the contract are untouched; only the LaTeX ch
   within a bracket, positive terms before negative ones: ``(1 − cos θ)``, ``(x₂ − x₁ − l₀)``.
 * A fraction inside a fraction is written with a slash, so nothing shrinks to script size.
 * ``equation`` divides an Euler–Lagrange residual by its acceleration's coefficient when the
-  mass matrix is diagonal (``θ̈ + (g/R) sin θ = 0``), and by its parameter factor otherwise.
+  mass matrix is diagonal and that coefficient is a single term (``θ̈ + (g/R) sin θ = 0``), keeps
+  an inertia that adds masses as 𝓜 q̈ = f (``(m₁ + m₂ + M/2) z̈ = (m₁ − m₂) g``), and divides by its
+  parameter factor otherwise.
 
 Bounded and deterministic: an expression of more than ``NODE_BUDGET`` nodes is printed by
 SymPy's own ``latex``; every ordering ends on SymPy's canonical sort key.
@@ -350,6 +352,19 @@ def _content(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     return sp.Mul(*(f for f in common.args if not isinstance(f, sp.Add) and not (f.free_symbols & moving)))
 
 
+def masses_summed(coefficient: sp.Expr) -> bool:
+    """Whether an acceleration's coefficient is an inertia that adds masses: m₁ + m₂ + M/2, l²(m₁ + m₂); not a
+    single term (M l²/3) nor a sum with anything but masses in it (m(1 + c²))."""
+    sums = [f for f in sp.Mul.make_args(sp.factor_terms(coefficient)) if isinstance(f, sp.Add)]
+    return bool(sums) and all(
+        isinstance(t.as_coeff_Mul()[1], sp.Symbol)
+        and t.as_coeff_Mul()[0].is_Rational
+        and _MASS.fullmatch(t.as_coeff_Mul()[1].name) is not None
+        for f in sums
+        for t in f.args
+    )
+
+
 def normalised(
     residual: sp.Expr, coefficient: sp.Expr, diagonal: bool, names: dict[sp.Symbol, str], own: sp.Symbol | None = None
 ) -> sp.Expr:
@@ -369,7 +384,12 @@ def normalised(
     expanded = sp.expand(residual)
     scaled_by = sp.factor_terms(coefficient)
     product = not any(isinstance(f, sp.Add) and f.free_symbols & moving for f in sp.Mul.make_args(scaled_by))
-    scale = scaled_by if diagonal and product else _content(expanded, moving)
+    # an inertia that is a single term is divided out, θ̈ + (3g/2l) sin θ = 0; one that is a sum of masses is kept
+    # in sight, 𝓜 q̈ = f as the Euler–Lagrange equation gives it: (m₁ + m₂ + M/2) z̈ = (m₁ − m₂) g
+    if diagonal and masses_summed(coefficient):
+        scale = sp.Integer(1)
+    else:
+        scale = scaled_by if diagonal and product else _content(expanded, moving)
     if scale == 0:
         return residual
     accelerations: dict[sp.Expr, sp.Expr] = {}
@@ -404,6 +424,16 @@ def normalised(
     if leading and leading[0].could_extract_minus_sign():
         out = [-e for e in out]
     return sp.Add(*out, evaluate=False) if len(out) > 1 else out[0]
+
+
+def inertia_sides(shown: sp.Expr, names: dict[sp.Symbol, str]) -> tuple[sp.Expr, sp.Expr]:
+    """An equation kept undivided (its inertia a sum of masses) as 𝓜 q̈ = f: the acceleration's term on the left,
+    the rest moved to the right with a common factor taken out, (m₁ + m₂ + M/2) z̈ = (m₁ − m₂) g."""
+    moving = _moving(names, shown)
+    left = [t for t in sp.Add.make_args(shown) if any(_level(s) == 2 for s in t.free_symbols & moving)]
+    right = [-t for t in sp.Add.make_args(shown) if t not in left]
+    force = sp.factor_terms(sp.Add(*right)) if right else sp.Integer(0)
+    return sp.Add(*left, evaluate=False) if len(left) > 1 else left[0], force
 
 
 def _over_one_sum(const: sp.Expr) -> list[sp.Expr]:

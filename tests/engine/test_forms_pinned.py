@@ -181,7 +181,7 @@ PINNED = {  # fmt: skip
         "kinetic": "z_dot**2*(M/2 + m1 + m2)/2",
         "potential": "g*z*(-m1 + m2)",
         "hamiltonian": "g*z*(-m1 + m2) + z_dot**2*(M/2 + m1 + m2)/2",
-        "equations": ["-g*(m1 - m2)/(M/2 + m1 + m2) + z_ddot"],
+        "equations": ["-g*(m1 - m2) + z_ddot*(M/2 + m1 + m2)"],
         "accelerations": {"z": "g*(m1 - m2)/(M/2 + m1 + m2)"},
     },
     "double-pendulum": {

@@ -65,11 +65,14 @@ def test_t_is_the_masses_and_the_pulleys_turning_printed_as_a_textbook_does():
     assert kinetic.endswith(r"T &= \frac{1}{2} \left(m_{1} + m_{2} + \frac{M}{2}\right) \dot{z}^{2}\end{aligned}")
 
 
-def test_the_equation_and_the_acceleration_read_as_one_fraction():
+def test_the_equation_keeps_its_inertia_and_the_acceleration_reads_as_one_fraction():
     doc = derivation_document("massive-pulley")
-    assert [e["latex"] for e in doc["equations_of_motion"]] == [
-        r"\ddot{z} - \frac{\left(m_{1} - m_{2}\right) g}{m_{1} + m_{2} + M / 2} = 0"
-    ]
+    # 𝓜 z̈ = f as the Euler–Lagrange equation gives it (prof-q 8), not z̈ − (m₁ − m₂) g/(m₁ + m₂ + M/2) = 0
+    (equation,) = doc["equations_of_motion"]
+    assert equation["latex"] == r"\left(m_{1} + m_{2} + \frac{M}{2}\right) \ddot{z} = \left(m_{1} - m_{2}\right) g"
+    assert equation["divided_by"] is None
+    steps = {s["key"]: s["latex"] for s in doc["steps"]}
+    assert steps["euler-lagrange"] == equation["latex"]
     assert doc["accelerations"]["z"]["latex"] == r"\frac{\left(m_{1} - m_{2}\right) g}{m_{1} + m_{2} + M / 2}"
 
 
