@@ -21,7 +21,6 @@ SymPy's own ``latex``; every ordering ends on SymPy's canonical sort key.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Sequence
 from typing import Any
 
@@ -30,12 +29,11 @@ from sympy.printing.latex import LatexPrinter
 from sympy.printing.str import StrPrinter
 
 from app.engine.budget import larger_than, memoized, pythagoras
-from app.engine.names import tex_greek, unicode
+from app.engine.names import MASS_NAME, tex_greek, unicode
 
 NODE_BUDGET = 600
 
-# A reader's order of parameter names: masses, then gravity, then stiffnesses and drags.
-_MASS = re.compile(r"(m|M|mu)\d*")
+# A reader's order of parameter names: masses (MASS_NAME), then gravity, then stiffnesses and drags.
 _FIRST = {"g": 1, "k": 2, "kappa": 2, "b": 2}
 
 
@@ -57,7 +55,7 @@ def _rate(f: sp.Expr) -> bool:
 
 
 def _parameter_rank(name: str) -> tuple[int, str, str]:
-    rank = 0 if _MASS.fullmatch(name) else _FIRST.get(name, 3)
+    rank = 0 if MASS_NAME.fullmatch(name) else _FIRST.get(name, 3)
     return rank, name.lower(), name
 
 
@@ -101,7 +99,7 @@ class _Printer(LatexPrinter):
             # (m₁ + m₂)(l₁ + l₂), (m₁ + m₂)(l₁ − l₂)²
             lead = min(_parameter_rank(s.name) for s in base.free_symbols) if base.free_symbols else (9, "", "")
             return (-1, lead[0], f.is_Pow, sp.default_sort_key(f))
-        if base.is_Symbol and base not in self.moving and _MASS.fullmatch(base.name):
+        if base.is_Symbol and base not in self.moving and MASS_NAME.fullmatch(base.name):
             # a mass before a bracket of other parameters, as a textbook writes it: m(1 + α²R²) ż, ½ m(1 + 4α²ρ²) ρ̇²
             # (a bracket holding a mass still leads: (m₁ + m₂) g l₁)
             return (-1, 0.5, f.is_Pow, *_parameter_rank(base.name))
@@ -197,7 +195,7 @@ class _Printer(LatexPrinter):
             ordered = [f for f in ordered if not last(f)] + [f for f in ordered if last(f)]
         if (
             len(ordered) == 2 and isinstance(ordered[0], sp.Add) and self.constant(ordered[0])
-            and ordered[1].is_Symbol and ordered[1] not in self.moving and _MASS.fullmatch(ordered[1].name)
+            and ordered[1].is_Symbol and ordered[1] not in self.moving and MASS_NAME.fullmatch(ordered[1].name)
         ):  # fmt: skip
             # a mass times a sum of parameters, alone, as a textbook writes it: M(m₁ + m₂), m(1 + α²R²)
             ordered.reverse()
@@ -249,7 +247,7 @@ class _Printer(LatexPrinter):
         if getattr(self, "bracket", False) and p == 1 and q == 2 and not den and len(num) == 1 and self.constant(num[0]):
             # half of one parameter's power within a bracket as a textbook writes it: m(gα − ½ω²)ρ²
             base = num[0].base if num[0].is_Pow else num[0]
-            if base.is_Symbol and not _MASS.fullmatch(base.name):
+            if base.is_Symbol and not MASS_NAME.fullmatch(base.name):
                 return rf"\tfrac{{1}}{{2}} {self._print(num[0])}"
         const_num = [f for f in num if self.constant(f)]
         const_den = [f for f in den if self.constant(f)]
@@ -359,7 +357,7 @@ def masses_summed(coefficient: sp.Expr) -> bool:
     return bool(sums) and all(
         isinstance(t.as_coeff_Mul()[1], sp.Symbol)
         and t.as_coeff_Mul()[0].is_Rational
-        and _MASS.fullmatch(t.as_coeff_Mul()[1].name) is not None
+        and MASS_NAME.fullmatch(t.as_coeff_Mul()[1].name) is not None
         for f in sums
         for t in f.args
     )
