@@ -161,6 +161,9 @@ MASSIVE_PULLEY = Scene(
     family="disc-pulley",
     reasons=reasons.MASSIVE_PULLEY,
     beyond_chapter=True,
+    # what the statement asks: the acceleration, compared with the massless pulley's (M → 0), stated in Results
+    limits=(("M", 0.0),),
+    answers=("limits",),
     summary="The pulley is a disc that turns with the string: its turning adds M/2 to the masses the weights pull.",
     statement=(
         "Two masses m₁ and m₂ hang on the ends of a light string that runs over a pulley, a uniform disc of mass "

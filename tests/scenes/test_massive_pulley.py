@@ -9,7 +9,9 @@ declaration: a RigidBody with its own inertia dyadic about the axle, turned by z
 import sympy as sp
 import sympy.physics.mechanics as me
 
+from app.scenes import SCENES
 from app.service.derivations import derivation, derivation_document
+from app.viz.page_model import _answers
 from tests.scenes.common import S
 
 m1, m2, M, R, g = (S(n) for n in ("m1", "m2", "M", "R", "g"))
@@ -82,3 +84,21 @@ def test_the_inertia_reads_m1_plus_m2_plus_half_m_everywhere():
     assert r"\mathcal{M} &= m_{1} + m_{2} + \frac{M}{2}" in steps["mass-matrix"]
     assert r"m_\text{eff} &= m_{1} + m_{2} + \frac{M}{2}" in steps["effective-potential"]
     assert steps["energy-integral"].startswith(r"E = \frac{1}{2} \left(m_{1} + m_{2} + \frac{M}{2}\right) \dot{z}^{2}")
+
+
+def test_results_state_the_acceleration_beside_the_massless_pulleys():
+    # prof-q 10: the comparison the statement asks for (M → 0) stated where Results say what the problem asks
+    doc = derivation_document("massive-pulley")
+    (answer,) = _answers(doc)
+    assert answer["title"] == "The acceleration and its limit as M → 0"
+    # the numbers beside the closed forms are the defaults' values, to four figures
+    p = {q.name: q.default for q in SCENES["massive-pulley"].system.parameters}
+    massive = (p["m1"] - p["m2"]) * p["g"] / (p["m1"] + p["m2"] + p["M"] / 2)
+    massless = (p["m1"] - p["m2"]) * p["g"] / (p["m1"] + p["m2"])
+    assert answer["latex"] == (
+        r"\begin{aligned}\ddot{z} &= \frac{\left(m_{1} - m_{2}\right) g}{m_{1} + m_{2} + M / 2} "
+        rf"\approx {massive:.4g}\,\mathrm{{m}}\,\mathrm{{s}}^{{-2}}\quad \text{{at the defaults}} \\ "
+        r"\lim_{M \to 0} \ddot{z} &= \frac{\left(m_{1} - m_{2}\right) g}{m_{1} + m_{2}} "
+        rf"\approx {massless:.4g}\,\mathrm{{m}}\,\mathrm{{s}}^{{-2}}\end{{aligned}}"
+    )
+    assert "massless pulley" in answer["explanation"]
