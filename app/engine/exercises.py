@@ -115,12 +115,20 @@ def _where_tex(d: Derivation, pr: Printer) -> str:
     return f"{pr.tex(r)} = {pr.tex(asked_equilibrium(d).position)}"
 
 
+def _body_tex(d: Derivation, i: int) -> str:
+    """A body's name for a subscript's text, a parameter in it set as mathematics: mass $m_{1}$ (KaTeX sets no
+    Unicode subscript ₁ in text)."""
+    names = {unicode(s.name): tex for s, tex in d.table.latex_names().items() if s in d.table.params}
+    words = body_name(d, i).removeprefix("the ").split(" ")
+    return " ".join(f"${names[w]}$" if w in names else w for w in words)
+
+
 def _lhs(step: str, name: str | None, pr: Printer, d: Derivation) -> str:
     if step == "position":
         # x, or x with the body's name where there are several (never x₂, which may be a coordinate's name)
         i, a = next((i, a) for key, i, a in component_keys(d) if key == name)
         many = len(d.mechanics.positions) > 1
-        return AXES[a] + (rf"_{{\text{{{body_name(d, i).removeprefix('the ')}}}}}" if many else "")
+        return AXES[a] + (rf"_{{\text{{{_body_tex(d, i)}}}}}" if many else "")
     if name is not None:
         q = d.table.q[d.table.names.index(name)]
         qdd = d.table.qdd[d.table.names.index(name)]
