@@ -116,11 +116,22 @@ def _where_tex(d: Derivation, pr: Printer) -> str:
 
 
 def _body_tex(d: Derivation, i: int) -> str:
-    """A body's name for a subscript's text, a parameter in it set as mathematics: mass $m_{1}$ (KaTeX sets no
-    Unicode subscript ₁ in text)."""
+    """A body's name as a subscript, its words as text and a parameter in it as mathematics: \\text{mass } m_{1}
+    (KaTeX sets no Unicode subscript ₁ in text), \\text{left mass}."""
     names = {unicode(s.name): tex for s, tex in d.table.latex_names().items() if s in d.table.params}
-    words = body_name(d, i).removeprefix("the ").split(" ")
-    return " ".join(f"${names[w]}$" if w in names else w for w in words)
+    out: list[str] = []
+    words: list[str] = []
+    for w in [*body_name(d, i).removeprefix("the ").split(" "), ""]:
+        if w and w not in names:
+            words.append(w)
+            continue
+        # the words so far as one text, then the parameter (or the end)
+        if words:
+            out.append(rf"\text{{{' '.join(words)}{' ' if w else ''}}}")
+        if w:
+            out.append(names[w])
+        words = []
+    return " ".join(out)
 
 
 def _lhs(step: str, name: str | None, pr: Printer, d: Derivation) -> str:
@@ -128,7 +139,7 @@ def _lhs(step: str, name: str | None, pr: Printer, d: Derivation) -> str:
         # x, or x with the body's name where there are several (never x₂, which may be a coordinate's name)
         i, a = next((i, a) for key, i, a in component_keys(d) if key == name)
         many = len(d.mechanics.positions) > 1
-        return AXES[a] + (rf"_{{\text{{{_body_tex(d, i)}}}}}" if many else "")
+        return AXES[a] + (f"_{{{_body_tex(d, i)}}}" if many else "")
     if name is not None:
         q = d.table.q[d.table.names.index(name)]
         qdd = d.table.qdd[d.table.names.index(name)]
