@@ -170,12 +170,17 @@ export class Player {
     }, this.canvas.width, this.canvas.height, dpr, this.messageRoom(dpr));
   }
 
-  /** Device pixels kept free at the top for the band that says why the run ended (drawn on its last frame), so
-   * that it covers no part of the drawing (the massive pulley's ceiling and its hatching lay under it). */
+  /** Device pixels kept free at the top for the band that says why a run ended (drawn on its last frame), so that
+   * it covers no part of the drawing (the massive pulley's ceiling and its hatching lay under it). Kept for every
+   * event the scene declares, whether or not this run met one, so the view stays put from run to run. */
   messageRoom(dpr) {
-    const event = this.run.stats && this.run.stats.event;
-    if (!event) return 0;
-    const bottom = messageBottom(this.canvas.getContext("2d"), this.canvas, dpr, eventLine(event));
+    const end = this.run.t[this.run.n - 1];
+    const lines = (this.run.data.events || []).map((e) => eventLine({ t: end, message: e.message }));
+    const ended = this.run.stats && this.run.stats.event;
+    if (ended) lines.push(eventLine(ended));
+    if (!lines.length) return 0;
+    const ctx = this.canvas.getContext("2d");
+    const bottom = Math.max(...lines.map((line) => messageBottom(ctx, this.canvas, dpr, line)));
     // the drawing's top edge already stands MARGIN down (Camera.fit's); a ceiling's hatching reaches HATCH above
     // it, and stays 6 px below the band
     return Math.max(0, bottom + (HATCH + 6 - MARGIN) * dpr);
