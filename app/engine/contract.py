@@ -38,7 +38,7 @@ from app.engine.report_members import (
     new_lagrangian,
     transform_steps,
 )
-from app.engine.report_modes import hamilton_json, hamilton_steps, normal_mode_steps, normal_modes_json
+from app.engine.report_modes import hamilton_json, hamilton_steps, limits_step, normal_mode_steps, normal_modes_json
 from app.engine.rods import fixed_distances
 from app.engine.root_forms import power_form, trig_cancelled
 from app.engine.transform import Transformed
@@ -286,6 +286,11 @@ def _derivation_json(d: Derivation, scene: Scene | None, beyond: bool = True) ->
     if result["dependent_accelerations"]:
         result["steps"] = with_dependent(result["steps"], result["dependent_accelerations"])
         result["notation"] = with_dependent_letters(result["notation"], scene, d)
+    if scene is not None and scene.limits and (compared := limits_step(d, pr, scene.limits)) is not None:
+        # the comparison the statement asks for, after the accelerations it compares (Results state it)
+        keys = [s["key"] for s in result["steps"]]
+        at = keys.index("accelerations") + 1 if "accelerations" in keys else len(keys)
+        result["steps"] = [*result["steps"][:at], compared, *result["steps"][at:]]
     if scene is not None:
         # a chapter scene explains each step in its own terms; the generic sentence stays otherwise
         result["steps"] = explained(scene, result["steps"])

@@ -93,17 +93,9 @@ def position_note(d: Derivation) -> str:
         and any(r[2].has(q) for r in positions)
         and not any(r[1].has(q) for r in positions)
     ]
-    # one that takes a body down as it grows (the massive pulley's y, how far m₁ has descended: z = −y) is a
-    # vertical distance, not a height
-    down = [q for q in heights if any(sp.expand(r[2] + q) == 0 for r in positions)]
-    said = ""
-    for group, one, many, how in (
-        ([q for q in heights if q not in down], "is a height", "are heights", "measured up, along z"),
-        (down, "is a vertical distance", "are vertical distances", "along z"),
-    ):
-        if group:
-            names = ", ".join(unicode(q.name) for q in group)
-            said += f" Here {names} {many if len(group) > 1 else one} ({how}), not the third direction."
+    said = ", ".join(unicode(q.name) for q in heights)
+    if heights:
+        said = f" Here {said} {'are heights' if len(heights) > 1 else 'is a height'} (measured up, along z), not the third direction."
     return POSITION_NOTE.format(heights=said, example=example)
 
 
@@ -123,12 +115,31 @@ def _where_tex(d: Derivation, pr: Printer) -> str:
     return f"{pr.tex(r)} = {pr.tex(asked_equilibrium(d).position)}"
 
 
+def _body_tex(d: Derivation, i: int) -> str:
+    """A body's name as a subscript, its words as text and a parameter in it as mathematics: \\text{mass } m_{1}
+    (KaTeX sets no Unicode subscript ₁ in text), \\text{left mass}."""
+    names = {unicode(s.name): tex for s, tex in d.table.latex_names().items() if s in d.table.params}
+    out: list[str] = []
+    words: list[str] = []
+    for w in [*body_name(d, i).removeprefix("the ").split(" "), ""]:
+        if w and w not in names:
+            words.append(w)
+            continue
+        # the words so far as one text, then the parameter (or the end)
+        if words:
+            out.append(rf"\text{{{' '.join(words)}{' ' if w else ''}}}")
+        if w:
+            out.append(names[w])
+        words = []
+    return " ".join(out)
+
+
 def _lhs(step: str, name: str | None, pr: Printer, d: Derivation) -> str:
     if step == "position":
         # x, or x with the body's name where there are several (never x₂, which may be a coordinate's name)
         i, a = next((i, a) for key, i, a in component_keys(d) if key == name)
         many = len(points(d)) > 1
-        return AXES[a] + (rf"_{{\text{{{body_name(d, i).removeprefix('the ')}}}}}" if many else "")
+        return AXES[a] + (f"_{{{_body_tex(d, i)}}}" if many else "")
     if name is not None:
         q = d.table.q[d.table.names.index(name)]
         qdd = d.table.qdd[d.table.names.index(name)]

@@ -36,6 +36,7 @@ from sympy.simplify.fu import TR8, TR10i
 
 from app.engine import budget
 from app.engine.budget import memoized, pythagoras, tidy, within_budget
+from app.engine.names import MASS_NAME
 from app.engine.quotients import textbook_quotients
 from app.limits import FALLBACK_WORK, FORM_WORK, LATE_WORK
 
@@ -123,8 +124,6 @@ def _score(form: sp.Expr, angles: set[sp.Expr]) -> float:
     return ops + len(own - angles)
 
 
-# a mass's name (m, M, m₁, μ): the letter a textbook takes out of a sum first
-_MASS_NAME = re.compile(r"(m|M|mu)\d*")
 
 
 def mass_out(expr: sp.Expr) -> sp.Expr:
@@ -143,7 +142,7 @@ def mass_out(expr: sp.Expr) -> sp.Expr:
     # m + m a = m (1 + a): the common factor taken out of every term
     content, inner = sp.factor_terms(expr).as_coeff_Mul()
     common, bracket = inner.as_independent(sp.Add, as_Add=False) if inner.is_Mul else (sp.Integer(1), inner)
-    if not (isinstance(bracket, sp.Add) and common.is_Symbol and _MASS_NAME.fullmatch(common.name)) or (
+    if not (isinstance(bracket, sp.Add) and common.is_Symbol and MASS_NAME.fullmatch(common.name)) or (
         sp.Integer(1) not in bracket.args
     ):
         # not itself a mass times (1 + …): each of its terms taken the same way

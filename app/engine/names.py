@@ -17,6 +17,8 @@ from collections.abc import Iterable
 # mass in an erratum), and one letter means one quantity throughout the book.  Its Unicode is U+2133, the plain
 # script capital that KaTeX's \mathcal{M} draws, so the prose beside a formula shows the formula's glyph (not a bold one)
 MASS_MATRIX = (r"\mathcal{M}", "ℳ")  # (LaTeX, Unicode)
+# a mass's name (m, M, m₁, μ): masses come first in a product and a textbook takes them out of a sum first
+MASS_NAME = re.compile(r"(m|M|mu)\d*")
 
 # letters every page prints with a meaning of its own: a declared name spelled so would give one letter two
 # meanings on the page (a charge q beside the coordinates q of S[q] and ℳ q̈ = f), so a user's system is refused

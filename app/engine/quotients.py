@@ -19,6 +19,8 @@ from __future__ import annotations
 
 import sympy as sp
 
+from app.engine.names import MASS_NAME
+
 MAX_NODES = 300  # larger expressions are left as they are (each term's cancellation is then not cheap)
 
 
@@ -63,6 +65,18 @@ def grouped(den: sp.Expr) -> sp.Expr:
     return sp.Add(*rest, best * sp.Add(*(t / best for t in inside)))
 
 
+def _number_most_masses_carry(den: sp.Expr) -> sp.Integer | None:
+    """The whole number most terms of a sum of masses carry (M + 2m₁ + 2m₂: 2), where not all carry it; else None."""
+    if not isinstance(den, sp.Add) or not all(
+        t.as_coeff_Mul()[0].is_Integer and t.as_coeff_Mul()[0] > 0 and MASS_NAME.fullmatch(str(t.as_coeff_Mul()[1]))
+        for t in den.args
+    ):
+        return None
+    numbers = [t.as_coeff_Mul()[0] for t in den.args]
+    most = max(sorted(set(numbers), key=sp.default_sort_key), key=numbers.count)
+    return most if most != 1 and numbers.count(most) * 2 > len(numbers) and len(set(numbers)) > 1 else None
+
+
 def cleared(expr: sp.Expr) -> sp.Expr:
     """Every denominator holding a fraction multiplied through: 1/(a + b/c) = c/(ac + b), the new denominator
     ``grouped``."""
@@ -95,6 +109,11 @@ def denominators_grouped(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
         common, rest = sp.factor_terms(e.base).as_independent(sp.Add, as_Add=False)
         if isinstance(rest, sp.Add) and common != 1:
             return sp.Pow(common * grouped(rest), e.exp)
+        most = _number_most_masses_carry(e.base)
+        if most is not None:
+            # a sum of masses with the number most of them carry in front, so that the inertia reads as it does
+            # in T and 𝓜: M + 2m₁ + 2m₂ = 2(m₁ + m₂ + M/2), H = p²/(2(m₁ + m₂ + M/2)) = p²/2𝓜
+            return sp.Pow(most, e.exp) * sp.Pow(sp.expand(e.base / most), e.exp)
         return sp.Pow(grouped(e.base), e.exp)
 
     return expr.replace(

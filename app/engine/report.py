@@ -187,6 +187,13 @@ def _equations(d: Derivation, pr: Printer) -> list[tuple[sp.Expr, str]]:
         own, residual = d.table.qdd[k], pr.form(r)
         with unbudgeted():
             shown = textbook.normalised(residual, M[k, k], diagonal, pr.names, own)
+            if diagonal and textbook.masses_summed(M[k, k]):
+                # an inertia that adds masses is kept in sight, 𝓜 q̈ = f: (m₁ + m₂ + M/2) z̈ = (m₁ − m₂) g
+                left, force = textbook.inertia_sides(shown, pr.names)
+                shown = sp.Add(left, -force, evaluate=False)
+                row = f"{textbook.latex(left, pr.names, first=own)} = {textbook.latex(force, pr.names)}"
+                out.append((shown, row))
+                continue
             out.append((shown, f"{textbook.latex(shown, pr.names, first=own)} = 0"))
     return out
 

@@ -1120,3 +1120,44 @@ def normal_modes_json(nm: NormalModes, pr: Printer) -> list[dict[str, Any]]:
         }
         for e in nm.equilibria
     ]
+
+
+def limits_step(d: Derivation, pr: Printer, limits: tuple[tuple[str, float], ...]) -> dict[str, str] | None:
+    """Each acceleration beside its limit as a parameter goes to a value (the statement's comparison, the
+    massive pulley's z̈ → (m₁ − m₂) g/(m₁ + m₂) as M → 0), each with its value at the defaults where it is a
+    constant; None where the accelerations are not in closed form or no named parameter is the system's."""
+    params = {s.name: s for s in d.table.params}
+    chosen = [(params[name], value) for name, value in limits if name in params]
+    if not chosen or not d.equations.closed_form:
+        return None
+    values = defaults(d)
+    moving = {*d.table.q, *d.table.qd, *d.table.qdd, d.table.t}
+    rows, data = [], []
+    for k, acceleration in enumerate(d.equations.accelerations):
+        name = d.table.names[k]
+        qdd = pr.tex(d.table.qdd[k])
+        unit = coordinate_unit(d, name)
+        # a number only where the acceleration is a constant of the motion (a constant force, as here)
+        per = (rf"\,\mathrm{{{unit}}}" if unit and unit != "rad" else "") + PER_SECOND_SQUARED
+
+        def at_defaults(expr: sp.Expr, unit: str = per) -> str:
+            if expr.free_symbols & moving:
+                return ""
+            return rf" \approx {_figures(float(sp.N(expr.xreplace(values))))}{unit}"
+
+        number = at_defaults(acceleration)
+        rows.append(rf"{qdd} = {pr.tex(acceleration)}{number}{AT_DEFAULTS if number else ''}")
+        for symbol, value in chosen:
+            # the limit, not the value put in: a parameter in a denominator may vanish there
+            limit = sp.factor_terms(sp.limit(acceleration, symbol, value))
+            shown = sp.Float(value) if not float(value).is_integer() else sp.Integer(int(value))
+            rows.append(rf"\lim_{{{pr.tex(symbol)} \to {pr.tex(shown)}}} {qdd} = {pr.tex(limit)}{at_defaults(limit)}")
+            data.append([acceleration, limit])
+    names = ", ".join(f"{pr.text(symbol)} → {pr.text(sp.nsimplify(value))}" for symbol, value in chosen)
+    return _step(
+        "limits",
+        f"The acceleration and its limit as {names}" if len(d.table.q) == 1 else f"The accelerations as {names}",
+        rows,
+        data,
+        "Each acceleration beside its limit, the comparison the problem asks for.",
+    )

@@ -11,7 +11,9 @@ Display only: the SymPy strings of the contract are untouched; only the LaTeX ch
   within a bracket, positive terms before negative ones: ``(1 − cos θ)``, ``(x₂ − x₁ − l₀)``.
 * A fraction inside a fraction is written with a slash, so nothing shrinks to script size.
 * ``equation`` divides an Euler–Lagrange residual by its acceleration's coefficient when the
-  mass matrix is diagonal (``θ̈ + (g/R) sin θ = 0``), and by its parameter factor otherwise.
+  mass matrix is diagonal and that coefficient is a single term (``θ̈ + (g/R) sin θ = 0``), keeps
+  an inertia that adds masses as 𝓜 q̈ = f (``(m₁ + m₂ + M/2) z̈ = (m₁ − m₂) g``), and divides by its
+  parameter factor otherwise.
 
 Bounded and deterministic: an expression of more than ``NODE_BUDGET`` nodes is printed by
 SymPy's own ``latex``; every ordering ends on SymPy's canonical sort key.
@@ -19,7 +21,6 @@ SymPy's own ``latex``; every ordering ends on SymPy's canonical sort key.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Sequence
 from typing import Any
 
@@ -28,12 +29,11 @@ from sympy.printing.latex import LatexPrinter
 from sympy.printing.str import StrPrinter
 
 from app.engine.budget import larger_than, memoized, pythagoras
-from app.engine.names import tex_greek, unicode
+from app.engine.names import MASS_NAME, tex_greek, unicode
 
 NODE_BUDGET = 600
 
-# A reader's order of parameter names: masses, then gravity, then stiffnesses and drags.
-_MASS = re.compile(r"(m|M|mu)\d*")
+# A reader's order of parameter names: masses (MASS_NAME), then gravity, then stiffnesses and drags.
 _FIRST = {"g": 1, "k": 2, "kappa": 2, "b": 2}
 
 
@@ -55,7 +55,7 @@ def _rate(f: sp.Expr) -> bool:
 
 
 def _parameter_rank(name: str) -> tuple[int, str, str]:
-    rank = 0 if _MASS.fullmatch(name) else _FIRST.get(name, 3)
+    rank = 0 if MASS_NAME.fullmatch(name) else _FIRST.get(name, 3)
     return rank, name.lower(), name
 
 
@@ -99,7 +99,7 @@ class _Printer(LatexPrinter):
             # (m₁ + m₂)(l₁ + l₂), (m₁ + m₂)(l₁ − l₂)²
             lead = min(_parameter_rank(s.name) for s in base.free_symbols) if base.free_symbols else (9, "", "")
             return (-1, lead[0], f.is_Pow, sp.default_sort_key(f))
-        if base.is_Symbol and base not in self.moving and _MASS.fullmatch(base.name):
+        if base.is_Symbol and base not in self.moving and MASS_NAME.fullmatch(base.name):
             # a mass before a bracket of other parameters, as a textbook writes it: m(1 + α²R²) ż, ½ m(1 + 4α²ρ²) ρ̇²
             # (a bracket holding a mass still leads: (m₁ + m₂) g l₁)
             return (-1, 0.5, f.is_Pow, *_parameter_rank(base.name))
@@ -199,7 +199,7 @@ class _Printer(LatexPrinter):
             ordered = [f for f in ordered if not last(f)] + [f for f in ordered if last(f)]
         if (
             len(ordered) == 2 and isinstance(ordered[0], sp.Add) and self.constant(ordered[0])
-            and ordered[1].is_Symbol and ordered[1] not in self.moving and _MASS.fullmatch(ordered[1].name)
+            and ordered[1].is_Symbol and ordered[1] not in self.moving and MASS_NAME.fullmatch(ordered[1].name)
         ):  # fmt: skip
             # a mass times a sum of parameters, alone, as a textbook writes it: M(m₁ + m₂), m(1 + α²R²)
             ordered.reverse()
@@ -251,7 +251,7 @@ class _Printer(LatexPrinter):
         if getattr(self, "bracket", False) and p == 1 and q == 2 and not den and len(num) == 1 and self.constant(num[0]):
             # half of one parameter's power within a bracket as a textbook writes it: m(gα − ½ω²)ρ²
             base = num[0].base if num[0].is_Pow else num[0]
-            if base.is_Symbol and not _MASS.fullmatch(base.name):
+            if base.is_Symbol and not MASS_NAME.fullmatch(base.name):
                 return rf"\tfrac{{1}}{{2}} {self._print(num[0])}"
         const_num = [f for f in num if self.constant(f)]
         const_den = [f for f in den if self.constant(f)]
@@ -354,6 +354,19 @@ def _content(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
     return sp.Mul(*(f for f in common.args if not isinstance(f, sp.Add) and not (f.free_symbols & moving)))
 
 
+def masses_summed(coefficient: sp.Expr) -> bool:
+    """Whether an acceleration's coefficient is an inertia that adds masses: m₁ + m₂ + M/2, l²(m₁ + m₂); not a
+    single term (M l²/3) nor a sum with anything but masses in it (m(1 + c²))."""
+    sums = [f for f in sp.Mul.make_args(sp.factor_terms(coefficient)) if isinstance(f, sp.Add)]
+    return bool(sums) and all(
+        isinstance(t.as_coeff_Mul()[1], sp.Symbol)
+        and t.as_coeff_Mul()[0].is_Rational
+        and MASS_NAME.fullmatch(t.as_coeff_Mul()[1].name) is not None
+        for f in sums
+        for t in f.args
+    )
+
+
 def normalised(
     residual: sp.Expr, coefficient: sp.Expr, diagonal: bool, names: dict[sp.Symbol, str], own: sp.Symbol | None = None
 ) -> sp.Expr:
@@ -373,7 +386,12 @@ def normalised(
     expanded = sp.expand(residual)
     scaled_by = sp.factor_terms(coefficient)
     product = not any(isinstance(f, sp.Add) and f.free_symbols & moving for f in sp.Mul.make_args(scaled_by))
-    scale = scaled_by if diagonal and product else _content(expanded, moving)
+    # an inertia that is a single term is divided out, θ̈ + (3g/2l) sin θ = 0; one that is a sum of masses is kept
+    # in sight, 𝓜 q̈ = f as the Euler–Lagrange equation gives it: (m₁ + m₂ + M/2) z̈ = (m₁ − m₂) g
+    if diagonal and masses_summed(coefficient):
+        scale = sp.Integer(1)
+    else:
+        scale = scaled_by if diagonal and product else _content(expanded, moving)
     if scale == 0:
         return residual
     accelerations: dict[sp.Expr, sp.Expr] = {}
@@ -408,6 +426,16 @@ def normalised(
     if leading and leading[0].could_extract_minus_sign():
         out = [-e for e in out]
     return sp.Add(*out, evaluate=False) if len(out) > 1 else out[0]
+
+
+def inertia_sides(shown: sp.Expr, names: dict[sp.Symbol, str]) -> tuple[sp.Expr, sp.Expr]:
+    """An equation kept undivided (its inertia a sum of masses) as 𝓜 q̈ = f: the acceleration's term on the left,
+    the rest moved to the right with a common factor taken out, (m₁ + m₂ + M/2) z̈ = (m₁ − m₂) g."""
+    moving = _moving(names, shown)
+    left = [t for t in sp.Add.make_args(shown) if any(_level(s) == 2 for s in t.free_symbols & moving)]
+    right = [-t for t in sp.Add.make_args(shown) if t not in left]
+    force = sp.factor_terms(sp.Add(*right)) if right else sp.Integer(0)
+    return sp.Add(*left, evaluate=False) if len(left) > 1 else left[0], force
 
 
 def _over_one_sum(const: sp.Expr) -> list[sp.Expr]:

@@ -154,31 +154,34 @@ PHYSICAL_PENDULUM = Scene(
 MASSIVE_PULLEY = Scene(
     id="massive-pulley",
     coordinate_meanings={
-        "y": "distance mass m1 has descended from its start (m2 has risen as far)",
+        "z": "height m2 has risen from its start (m1 has descended as far)",
     },
     title="Atwood machine with a massive pulley",
     section="4.5",
     family="disc-pulley",
     reasons=reasons.MASSIVE_PULLEY,
     beyond_chapter=True,
+    # what the statement asks: the acceleration, compared with the massless pulley's (M → 0), stated in Results
+    limits=(("M", 0.0),),
+    answers=("limits",),
     summary="The pulley is a disc that turns with the string: its turning adds M/2 to the masses the weights pull.",
     statement=(
         "Two masses m₁ and m₂ hang on the ends of a light string that runs over a pulley, a uniform disc of mass "
         "M and radius R turning on a fixed frictionless horizontal axle. The string does not stretch and does not "
         "slip on the pulley, so the pulley's rim moves with the string. The masses hang from the two sides of the "
-        "rim and are level at the start, a distance d below the axle. The coordinate y is the distance m₁ has "
-        "descended from its start: m₂ has then risen by y and the pulley has turned through the angle y/R. "
-        "Heights are measured upward from the level where the masses start, and U = 0 at the start (y = 0); the "
+        "rim and are level at the start, a distance d below the axle. The coordinate z is the height m₂ has risen from its "
+        "start: m₁ has then descended by z and the pulley has turned through the angle z/R. Heights are measured "
+        "upward from the level where the masses start, and U = 0 at the start (z = 0); the "
         "pulley's centre does not move, so its weight adds nothing to U that changes. Derive the equation of motion, find the acceleration of m₁, and "
         "compare it with the same machine on a massless pulley (M → 0)."
     ),
     figure=(
         "A disc pulley of mass M and radius R on a fixed axle; m₁ hangs from the left side of its rim, m₂ from the "
-        "right, both on vertical strands; y measured downward for m₁ from the dashed level where both start, "
-        "a distance d below the axle, and the pulley's turning y/R marked on a spoke."
+        "right, both on vertical strands; z measured upward for m₂ from the dashed level where both start (m₁ as "
+        "far below it), a distance d below the axle, and the pulley's turning z/R marked on a spoke."
     ),
     system=System(
-        coordinates=("y",),
+        coordinates=("z",),
         parameters=(
             Parameter("m1", 1.5, "kg", 0.01, 100.0, "mass on the left side"),
             Parameter("m2", 1.0, "kg", 0.01, 100.0, "mass on the right side"),
@@ -187,25 +190,25 @@ MASSIVE_PULLEY = Scene(
             GRAVITY,
             Parameter("d", 1.0, "m", 0.1, 100.0, "depth of the masses below the axle at the start"),
         ),
-        # heights upward from the masses' starting level, the axle d above it: m₁ on the left side of the rim
-        # has gone down by y, m₂ on the right up by y, and the rim (with the string) moved by y, so the pulley
-        # turned by y/R (counter-clockwise seen from the front, its left side going down)
+        # heights upward from the masses' starting level, the axle d above it: m₂ on the right side of the rim
+        # has gone up by z, m₁ on the left down by z, and the rim (with the string) moved by z, so the pulley
+        # turned by z/R (counter-clockwise seen from the front, its left side going down)
         particles=(
-            Particle("m1", ("-R", "0", "-y"), "left mass"),
-            Particle("m2", ("R", "0", "y"), "right mass"),
+            Particle("m1", ("-R", "0", "-z"), "mass m₁"),
+            Particle("m2", ("R", "0", "z"), "mass m₂"),
         ),
-        bodies=(Body("disc", "M", "R", ("0", "0", "d"), "y/R", "pulley"),),
-        potential="-m1*g*y + m2*g*y",
+        bodies=(Body("disc", "M", "R", ("0", "0", "d"), "z/R", "pulley"),),
+        potential="m2*g*z - m1*g*z",
     ),
-    initial={"y": 0.0, "y_dot": 0.0},
-    # with the defaults ÿ = g/6 ≈ 1.6 m/s², so y = ½ ÿ t²: m₂ reaches the axle's level (y = d = 1 m) after about
+    initial={"z": 0.0, "z_dot": 0.0},
+    # with the defaults z̈ = g/6 ≈ 1.6 m/s², so z = ½ z̈ t²: m₂ reaches the axle's level (z = d = 1 m) after about
     # 1.1 s, where the event below ends the default run; a lighter m₁ runs the other way to the same end
     t_end=1.5,
     # a mass that has risen to the axle's level has reached the pulley: the string can run no further
     events=(
         Event(
             "mass at the pulley",
-            "d**2 - y**2",
+            "d**2 - z**2",
             "A mass reached the pulley and the string can run no further; the run ends there.",
         ),
     ),

@@ -206,6 +206,10 @@ class Scene:
     marks: tuple[str, ...] = ()
     reasons: Mapping[str, str] = field(default_factory=dict)
     answers: tuple[str, ...] = ()
+    # the limits the statement asks the accelerations compared with, a parameter and the value it goes to (the
+    # massive pulley's M → 0, the massless pulley): the engine's "limits" step states each acceleration and its
+    # limit, with their values at the defaults
+    limits: tuple[tuple[str, float], ...] = ()
     # where the small-oscillation frequency is exact at every amplitude, the sentence saying so and why (the
     # small-oscillation panel says it in place of "holds as the amplitude goes to zero")
     exact_frequency: str = ""

@@ -228,8 +228,8 @@ def pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) 
 
 def disc_pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
     """An Atwood machine on a massive pulley: a disc of mass M and radius R on a fixed axle, m₁ and m₂ on vertical
-    strands from the two sides of its rim, m₁ drawn a distance y below the level where both started (m₂ as far
-    above it), and a spoke turned by y/R from the upward vertical."""
+    strands from the two sides of its rim, m₂ drawn a height z above the level where both started (m₁ as far
+    below it), and a spoke turned by z/R from the upward vertical."""
     svg = Svg()
     ceiling, cx, cy, r = 14.0, 160.0, 62.0, 32.0
     svg.line(132, ceiling, 188, ceiling, INK, 3)
@@ -239,20 +239,20 @@ def disc_pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] =
     svg.circle(cx, cy, r, fill="#c9d8ea")
     # the string over the top half of the rim, where it grips the pulley
     svg.arc(cx, cy, r, math.pi, 2 * math.pi, color=INK)
-    # the turning: a dashed radius where the spoke started (straight up) and the spoke turned from it by y/R,
+    # the turning: a dashed radius where the spoke started (straight up) and the spoke turned from it by z/R,
     # counter-clockwise as the left side goes down with m₁ (SVG angles: y down, so up is −π/2)
     turn = 0.9
     svg.line(cx, cy, cx, cy - r, GUIDE, 1.2, dash=True)
     svg.line(cx, cy, cx + r * math.cos(-math.pi / 2 - turn), cy + r * math.sin(-math.pi / 2 - turn), INK, 2)
     svg.arc(cx, cy, r * 0.62, -math.pi / 2, -math.pi / 2 - turn, arrow=True)
-    svg.text(cx - r - 4, cy - r - 2, "y/R", ACCENT, 14, anchor="end")
+    svg.text(cx - r - 4, cy - r - 2, "z/R", ACCENT, 14, anchor="end")
     svg.circle(cx, cy, 3.5)
     # the radius, from the hub to the rim on the right, below the spoke
     svg.arrow(cx, cy, cx + r * math.cos(0.5), cy + r * math.sin(0.5), color=PARAM, width=1.4, head=6)
     svg.text(cx + 14, cy + 18, "R", PARAM, 14)
     svg.text(cx + r + 16, cy - r + 4, "M", PARAM, 15)
-    # the masses started level, a depth d below the axle (the dashed line, where U = 0); m₁ has gone down by y
-    # and m₂ up by as much
+    # the masses started level, a depth d below the axle (the dashed line, where U = 0); m₂ has gone up by z
+    # and m₁ down by as much
     base, shift, half = 160.0, 34.0, 15.0
     left, right = cx - r, cx + r
     y1, y2 = base + shift, base - shift  # the masses' centres
@@ -265,9 +265,9 @@ def disc_pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] =
     svg.line(40, base, 290, base, GUIDE, 1.2, dash=True)
     svg.text(60, base + 12, "U = 0", GUIDE, 12)
     svg.arrow(left - 30, base, left - 30, y1, color=ACCENT)
-    svg.text(left - 42, (base + y1) / 2, "y", ACCENT, 16)
+    svg.text(left - 42, (base + y1) / 2, "z", ACCENT, 16)
     svg.arrow(right + 30, base, right + 30, y2, color=ACCENT)
-    svg.text(right + 42, (base + y2) / 2, "y", ACCENT, 16)
+    svg.text(right + 42, (base + y2) / 2, "z", ACCENT, 16)
     # d: from the axle's level down to the starting level, on the far right
     svg.line(cx + 6, cy, 292, cy, GUIDE, 1, dash=True)
     svg.arrow(280, cy, 280, base, color=PARAM, width=1.4, head=6)

@@ -242,8 +242,8 @@ FAMILIES: dict[str, Family] = {
     ),
     "disc-pulley": Family(
         # the pulley's axle d above the level where the masses start (their heights' zero), the masses on vertical
-        # strings from the two sides of the rim; the wheel turns by y/R, counter-clockwise as m₁ on the left goes
-        # down, so that its rim keeps pace with the string
+        # strings from the two sides of the rim; the wheel turns by z/R, counter-clockwise as m₂ on the right goes
+        # up, so that its rim keeps pace with the string
         fixed=(("axle", ("0", "0", "d")),),
         anchors=(
             ("left side", ("-R", "0", "d")),
@@ -251,7 +251,7 @@ FAMILIES: dict[str, Family] = {
             ("mount", ("0", "0", "d + 2*R")),
         ),
         links=(("left side", "#0", "string"), ("right side", "#1", "string"), ("axle", "mount", "rod")),
-        wheels=(("axle", "R", "top", "y/R"),),
+        wheels=(("axle", "R", "top", "z/R"),),
         curves=(("ceiling", "-2*R", "2*R", ("s", "0", "d + 2*R"), "ceiling"),),
         caption=(
             "Side view: the pulley on its fixed axle, turning with the string (its two spokes turn with it), and "

@@ -22,13 +22,14 @@
  * For tests and tools: root.dataset.frame is the sample shown, root.dataset.playing whether it
  * plays; render.js records what it drew on the canvas's dataset.
  */
-import { Camera } from "./camera.js";
+import { Camera, MARGIN } from "./camera.js";
 import { Clock } from "./clock.js";
 import { Drag } from "./drag.js";
 import { compile, symbolsOf } from "./expr.js";
 import { forceSeries } from "./arrows.js";
 import { Input } from "./input.js";
 import { drawFrame } from "./render.js";
+import { HATCH, eventLine, messageBottom } from "./scenery.js";
 
 const TRAIL_SECONDS = 1.5;
 const MAX_TRAIL = 90;
@@ -154,7 +155,7 @@ export class Player {
   fit() {
     // everything the run visits in view: the bodies along the run, the curves (a moving one at 24 instants)
     if (!this.xyz) return;
-    const n = this.run.n;
+    const n = this.run.n, dpr = window.devicePixelRatio || 1;
     this.camera.fit((grow) => {
       const stride = Math.max(1, Math.floor(n / 400));
       for (const a of this.xyz) for (let i = 0; i < n; i += stride) grow(a[0][i], a[1][i], a[2] ? a[2][i] : 0);
@@ -166,7 +167,23 @@ export class Player {
           for (let k = 0; k < cols[0].length; k++) grow(cols[0][k], cols[1][k], cols[2] ? cols[2][k] : 0);
         }
       }
-    }, this.canvas.width, this.canvas.height, window.devicePixelRatio || 1);
+    }, this.canvas.width, this.canvas.height, dpr, this.messageRoom(dpr));
+  }
+
+  /** Device pixels kept free at the top for the band that says why a run ended (drawn on its last frame), so that
+   * it covers no part of the drawing (the massive pulley's ceiling and its hatching lay under it). Kept for every
+   * event the scene declares, whether or not this run met one, so the view stays put from run to run. */
+  messageRoom(dpr) {
+    const end = this.run.t[this.run.n - 1];
+    const lines = (this.run.data.events || []).map((e) => eventLine({ t: end, message: e.message }));
+    const ended = this.run.stats && this.run.stats.event;
+    if (ended) lines.push(eventLine(ended));
+    if (!lines.length) return 0;
+    const ctx = this.canvas.getContext("2d");
+    const bottom = Math.max(...lines.map((line) => messageBottom(ctx, this.canvas, dpr, line)));
+    // the drawing's top edge already stands MARGIN down (Camera.fit's); a ceiling's hatching reaches HATCH above
+    // it, and stays 6 px below the band
+    return Math.max(0, bottom + (HATCH + 6 - MARGIN) * dpr);
   }
 
   load(run) {

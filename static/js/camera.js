@@ -2,14 +2,18 @@
  * camera.js — how the mechanism's world coordinates land on the canvas (animation.js).
  *
  *   const camera = new Camera(dim, view);   view: {yaw, pitch} the page opens on (3-D), or null
- *   camera.fit(visit, width, height, dpr)   equal scales on both screen axes, everything visit(grow)
- *                                           passes to grow(x, y, z) in view, with a margin
+ *   camera.fit(visit, width, height, dpr, top)  equal scales on both screen axes, everything visit(grow)
+ *                                           passes to grow(x, y, z) in view, with a margin, and `top`
+ *                                           device pixels more kept free at the top (a message's band)
  *   camera.screenOf([x, y, z])              device pixels on the canvas
  *   camera.turn(start, dx, dy, dpr)         3-D: the view turned by a drag of (dx, dy) pixels
  *
  * 2-D mechanisms use the spec's two axes (the second points up); 3-D ones an orthographic view
  * turned about the vertical axis (yaw), then tilted (pitch).
  */
+// the margin kept about the drawing, CSS pixels
+export const MARGIN = 24;
+
 export class Camera {
   constructor(dim, view = null) {
     this.dim = dim;
@@ -37,7 +41,7 @@ export class Camera {
     return this.toScreen(u, v);
   }
 
-  fit(visit, W, H, dpr) {
+  fit(visit, W, H, dpr, top = 0) {
     let ulo = Infinity, uhi = -Infinity, vlo = Infinity, vhi = -Infinity;
     visit((x, y, z) => {
       const [u, v] = this.project(x, y, z);
@@ -45,12 +49,13 @@ export class Camera {
       ulo = Math.min(ulo, u); uhi = Math.max(uhi, u); vlo = Math.min(vlo, v); vhi = Math.max(vhi, v);
     });
     if (!Number.isFinite(ulo)) { ulo = -1; uhi = 1; vlo = -1; vhi = 1; }
-    const pad = 24 * dpr;
+    const pad = MARGIN * dpr;
     const su = Math.max(uhi - ulo, 1e-6), sv = Math.max(vhi - vlo, 1e-6);
     // a canvas narrower than its padding (while the page is laid out) keeps a positive scale
-    const room = (side) => Math.max(side - 2 * pad, side / 2, 1);
-    const scale = Math.min(room(W) / su, room(H) / sv);
-    this.frame = { scale, u0: (ulo + uhi) / 2, v0: (vlo + vhi) / 2, cx: W / 2, cy: H / 2 };
+    const room = (side, kept = 0) => Math.max(side - 2 * pad - kept, side / 2, 1);
+    const scale = Math.min(room(W) / su, room(H, top) / sv);
+    // the drawing centred in what is left below the kept band
+    this.frame = { scale, u0: (ulo + uhi) / 2, v0: (vlo + vhi) / 2, cx: W / 2, cy: (H + Math.min(top, H / 2)) / 2 };
   }
 
   turn(start, dx, dy, dpr) {

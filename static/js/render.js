@@ -12,7 +12,7 @@
 import { drawForces, drawHandle, labelHandle } from "./arrows.js";
 import { drawBodies, drawFixed, drawLabels, drawTrails } from "./bodies.js";
 import { drawLinks, drawWheels, wheelsAt } from "./links.js";
-import { curveCover, drawCurve, drawSolids, message, scaleBar } from "./scenery.js";
+import { MESSAGE_Y, curveCover, drawCurve, drawSolids, eventLine, message, scaleBar } from "./scenery.js";
 
 export function drawFrame(player, i) {
   const canvas = player.canvas, ctx = player.ctx, dpr = window.devicePixelRatio || 1, run = player.run, spec = player.spec;
@@ -38,11 +38,12 @@ export function drawFrame(player, i) {
   if (player.masses.length > 1) drawLabels(player, ctx, i, dpr, placed, i === 0 ? player.drag.handle() : null);
   const bodies = drawBodies(player, ctx, i, dpr, placed);
   if (player.showForces?.checked) drawn.forces = drawForces(player, ctx, i, dpr);
-  if (slack) message(ctx, canvas, dpr, "The string is slack (its tension would be negative).", 18 * dpr);
+  if (slack) message(ctx, canvas, dpr, "The string is slack (its tension would be negative).", MESSAGE_Y * dpr);
   const event = run.stats && run.stats.event;
   if (event && i === run.n - 1) {
     drawn.event = event.name;
-    message(ctx, canvas, dpr, `t = ${Number(event.t.toFixed(3))} s: ${event.message}`, 18 * dpr);
+    // the band's bottom edge, CSS pixels: the view keeps the drawing below it (Player.messageRoom)
+    drawn.band = Math.round(message(ctx, canvas, dpr, eventLine(event), MESSAGE_Y * dpr) / dpr);
   }
   // the solid curves' extents with their hatching, CSS pixels: [left, top, right, bottom] by label
   drawn.curves = curveCover(player, i, dpr).filter((c) => c.points.length).map(({ label, points }) => {

@@ -42,12 +42,15 @@ const MARGIN = 20; // CSS pixels beyond the canvas's edge still covered: a hatch
 /** The short slanted hatches of the ground, a ceiling or a wall on the side away from the motion: each [[x, y], [x, y]]
  * in device pixels ([] for a wire or a guide), only those on the canvas (W × H device pixels); each stays where it
  * is on the line whatever part of the line is seen. */
+// how far a hatch reaches out from its ground, ceiling or wall, CSS pixels
+export const HATCH = 7;
+
 function hatches(style, pts, dpr, W, H) {
   const away = { ground: [-1, 1], ceiling: [1, -1], "wall-left": [-1, 1], "wall-right": [1, 1] }[style];
   if (!away || !pts.length) return [];
   const [x0, y0] = pts[0], [x1, y1] = pts[pts.length - 1], len = Math.hypot(x1 - x0, y1 - y0);
   if (!(len > 0)) return [];
-  const gap = 10 * dpr, h = 7 * dpr, count = Math.floor(len / gap), vertical = style.startsWith("wall");
+  const gap = 10 * dpr, h = HATCH * dpr, count = Math.floor(len / gap), vertical = style.startsWith("wall");
   const seen = count > 0 ? visiblePart(x0, y0, x1, y1, W, H, MARGIN * dpr) : [0, 0];
   if (!seen) return [];
   const out = [];
@@ -110,8 +113,16 @@ export function drawCurve(camera, ctx, c, cols, dpr) {
   ctx.stroke();
 }
 
-/** Text across the canvas at height y (wrapped to its width), on a white band. */
-export function message(ctx, canvas, dpr, text, y) {
+/** The line a run that an event ended says on its last frame. */
+export function eventLine(event) {
+  return `t = ${Number(event.t.toFixed(3))} s: ${event.message}`;
+}
+
+// a message band's top line sits this far from the canvas's top (CSS pixels): message() and messageBottom()
+export const MESSAGE_Y = 18;
+
+/** A message's lines (wrapped to the canvas's width), their widest and the band's top, device pixels. */
+function band(ctx, canvas, dpr, text, y) {
   ctx.font = `${13 * dpr}px system-ui, sans-serif`;
   const room = canvas.width - 24 * dpr, lines = [];
   for (const word of text.split(" ")) {
@@ -120,11 +131,25 @@ export function message(ctx, canvas, dpr, text, y) {
     else lines.push(word);
   }
   const h = 17 * dpr, w = Math.min(room, Math.max(...lines.map((l) => ctx.measureText(l).width)));
-  const x = (canvas.width - w) / 2, top = Math.max(4 * dpr, y - 14 * dpr - ((lines.length - 1) * h) / 2);
+  const top = Math.max(4 * dpr, y - 14 * dpr - ((lines.length - 1) * h) / 2);
+  return { lines, h, w, room, top, bottom: top + lines.length * h + 6 * dpr };
+}
+
+/** Text across the canvas at height y (wrapped to its width), on a white band; returns the band's bottom edge,
+ * device pixels. */
+export function message(ctx, canvas, dpr, text, y) {
+  const { lines, h, w, room, top, bottom } = band(ctx, canvas, dpr, text, y);
+  const x = (canvas.width - w) / 2;
   ctx.fillStyle = "rgba(255,255,255,0.9)";
-  ctx.fillRect(x - 6 * dpr, top, w + 12 * dpr, lines.length * h + 6 * dpr);
+  ctx.fillRect(x - 6 * dpr, top, w + 12 * dpr, bottom - top);
   ctx.fillStyle = "#1b1f24";
   lines.forEach((line, k) => ctx.fillText(line, x, top + 14 * dpr + k * h, room));
+  return bottom;
+}
+
+/** Where a message's band ends below the canvas's top, device pixels: the room a view keeps free for it. */
+export function messageBottom(ctx, canvas, dpr, text) {
+  return band(ctx, canvas, dpr, text, MESSAGE_Y * dpr).bottom;
 }
 
 export function scaleBar(ctx, canvas, scale, dpr) {

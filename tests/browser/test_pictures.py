@@ -293,3 +293,27 @@ def test_the_masses_labels_keep_off_the_floor_and_the_walls(browser, live_server
                 canvas.screenshot(path=artifacts / f"coupled-labels-{width}.png")
     finally:
         context.close()
+
+
+@pytest.mark.parametrize(("width", "height"), [(1366, 768), (390, 844)])
+def test_the_massive_pulleys_end_of_run_band_leaves_the_ceiling_clear(browser, live_server, artifacts, width, height):
+    # prof-q 11: the band saying why the run ended lay over the ceiling's hatching; the bodies named as the
+    # statement names them, m₁ and m₂
+    context = browser.new_context(base_url=live_server, viewport={"width": width, "height": height})
+    page = context.new_page()
+    page.set_default_timeout(60_000)
+    try:
+        page.goto("/scenes/massive-pulley")
+        page.wait_for_selector(READY, state="attached")
+        canvas = page.locator("[data-panel^=animation] canvas")
+        assert {lb["label"] for lb in json.loads(canvas.get_attribute("data-labels"))} == {"mass m₁", "mass m₂"}
+        to_end(page)
+        page.wait_for_timeout(100)
+        drawn = page.evaluate(DRAWN)
+        assert drawn["event"] == "mass at the pulley"
+        (ceiling,) = [c["box"] for c in drawn["curves"] if c["label"] == "ceiling"]
+        # the ceiling's line with its hatching above it starts below the band's bottom edge
+        assert ceiling[1] > drawn["band"], (ceiling, drawn["band"])
+        canvas.screenshot(path=artifacts / f"massive-pulley-end-{width}.png")
+    finally:
+        context.close()

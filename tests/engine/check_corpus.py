@@ -365,17 +365,17 @@ CORPUS = [
         None,
     ),
     # beyond the chapter: an Atwood machine on a disc pulley (issue 42), the pulley turning with the string
-    ("massive-pulley", "kinetic", None, "(m1 + m2 + M/2)*y_dot**2/2", "correct", None, None),
+    ("massive-pulley", "kinetic", None, "(m1 + m2 + M/2)*z_dot**2/2", "correct", None, None),
     (
         "massive-pulley",
         "kinetic",
         None,
-        "(m1 + m2)*y_dot**2/2",
+        "(m1 + m2)*z_dot**2/2",
         "incorrect",
-        "-M*y_dot**2/4",
+        "-M*z_dot**2/4",
         "key:kinetic.rigid.axle_turning_forgotten",
     ),
-    ("massive-pulley", "acceleration", "y", "2*(m1 - m2)*g/(2*m1 + 2*m2 + M)", "correct", None, None),
+    ("massive-pulley", "acceleration", "z", "2*(m1 - m2)*g/(2*m1 + 2*m2 + M)", "correct", None, None),
     # beyond the chapter: the double pendulum and two masses between three springs
     (
         "double-pendulum",
@@ -535,12 +535,12 @@ TYPICAL = [
     ),
     # the pulley's turning forgotten, the pulley taken as a ring (or its mass as moving with the string), its centre
     # taken to move with the string, one mass's U with the wrong sign, the turning forgotten carried into ÿ and p
-    ("massive-pulley", "kinetic", None, "(m1 + m2)*y_dot**2/2", "kinetic.rigid.axle_turning_forgotten"),
-    ("massive-pulley", "kinetic", None, "(m1 + m2 + M)*y_dot**2/2", "kinetic.rigid.axle_ring"),
-    ("massive-pulley", "kinetic", None, "(m1 + m2)*y_dot**2/2 + 3*M*y_dot**2/4", "kinetic.rigid.axle_centre_moving"),
-    ("massive-pulley", "potential", None, "-(m1 + m2)*g*y", "potential.piece.sign.g_m2_y"),
-    ("massive-pulley", "acceleration", "y", "(m1 - m2)*g/(m1 + m2)", "acceleration.rigid.axle_turning_forgotten"),
-    ("massive-pulley", "momentum", "y", "(m1 + m2)*y_dot", "momentum.rigid.axle_turning_forgotten"),
+    ("massive-pulley", "kinetic", None, "(m1 + m2)*z_dot**2/2", "kinetic.rigid.axle_turning_forgotten"),
+    ("massive-pulley", "kinetic", None, "(m1 + m2 + M)*z_dot**2/2", "kinetic.rigid.axle_ring"),
+    ("massive-pulley", "kinetic", None, "(m1 + m2)*z_dot**2/2 + 3*M*z_dot**2/4", "kinetic.rigid.axle_centre_moving"),
+    ("massive-pulley", "potential", None, "-(m1 + m2)*g*z", "potential.piece.sign.g_m2_z"),
+    ("massive-pulley", "acceleration", "z", "(m1 - m2)*g/(m1 + m2)", "acceleration.rigid.axle_turning_forgotten"),
+    ("massive-pulley", "momentum", "z", "(m1 + m2)*z_dot", "momentum.rigid.axle_turning_forgotten"),
     ("cart-pendulum", "kinetic", None, "M*x_dot**2/2 + m*l**2*phi_dot**2/2", "kinetic.velocity_part.bob.x"),
     (
         "cart-pendulum",

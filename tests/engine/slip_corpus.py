@@ -339,16 +339,16 @@ SLIPS = [
     ("physical-pendulum", "omega_squared", None, "g/l", r"point mass|rod|moment of inertia|centre"),
     # an Atwood machine on a disc pulley (issue 42): the pulley's turning forgotten, taken as a ring's (or its whole
     # mass as moving with the string), its centre taken to move; one mass's U of the wrong sign
-    ("massive-pulley", "kinetic", None, "(m1 + m2)*y_dot**2/2", r"pulley's turning energy ½ I \(ẏ/R\)² left out"),
-    ("massive-pulley", "kinetic", None, "(m1 + m2 + M)*y_dot**2/2", r"pulley.*ring \(I = M R²\).*moved with the string"),
-    ("massive-pulley", "kinetic", None, "(m1 + m2 + M/2)*y_dot**2/2 + M*y_dot**2/2", r"pulley's centre.*fixed axle"),
-    ("massive-pulley", "potential", None, "-(m1 + m2)*g*y", r"sign of your term −m₂ g y"),
-    ("massive-pulley", "potential", None, "(m1 + m2)*g*y", r"sign of your term m₁ g y"),
-    ("massive-pulley", "equation", "y", "(m1 + m2)*y_ddot - (m1 - m2)*g", r"pulley's turning energy .* left out"),
-    ("massive-pulley", "equation", "y", "(m1 + m2 + M)*y_ddot - (m1 - m2)*g", r"pulley.*ring"),
-    ("massive-pulley", "acceleration", "y", "(m1 - m2)*g/(m1 + m2)", r"pulley's turning energy .* left out"),
-    ("massive-pulley", "acceleration", "y", "(m1 - m2)*g/(m1 + m2 + M)", r"pulley.*ring"),
-    ("massive-pulley", "momentum", "y", "(m1 + m2)*y_dot", r"pulley's turning energy .* left out"),
+    ("massive-pulley", "kinetic", None, "(m1 + m2)*z_dot**2/2", r"pulley's turning energy ½ I \(ż/R\)² left out"),
+    ("massive-pulley", "kinetic", None, "(m1 + m2 + M)*z_dot**2/2", r"pulley.*ring \(I = M R²\).*moved with the string"),
+    ("massive-pulley", "kinetic", None, "(m1 + m2 + M/2)*z_dot**2/2 + M*z_dot**2/2", r"pulley's centre.*fixed axle"),
+    ("massive-pulley", "potential", None, "-(m1 + m2)*g*z", r"sign of your term −m₂ g z"),
+    ("massive-pulley", "potential", None, "(m1 + m2)*g*z", r"sign of your term m₁ g z"),
+    ("massive-pulley", "equation", "z", "(m1 + m2)*z_ddot - (m1 - m2)*g", r"pulley's turning energy .* left out"),
+    ("massive-pulley", "equation", "z", "(m1 + m2 + M)*z_ddot - (m1 - m2)*g", r"pulley.*ring"),
+    ("massive-pulley", "acceleration", "z", "(m1 - m2)*g/(m1 + m2)", r"pulley's turning energy .* left out"),
+    ("massive-pulley", "acceleration", "z", "(m1 - m2)*g/(m1 + m2 + M)", r"pulley.*ring"),
+    ("massive-pulley", "momentum", "z", "(m1 + m2)*z_dot", r"pulley's turning energy .* left out"),
     # ---- a disc rolling on an incline, on a spring (T and U typed)
     ("rolling-disc", "kinetic", None, "M*x_dot**2/2", r"spin|roll|rotation|moment of inertia"),
     ("rolling-disc", "kinetic", None, "M*x_dot**2/2 + M*R**2*x_dot**2/4", UNITS_WORDS),
@@ -811,10 +811,10 @@ CORRECT = [
     ("physical-pendulum", "equation", "theta", "2*l*theta_ddot + 3*g*sin(theta)"),
     ("physical-pendulum", "omega_squared", None, "3*g/(2*l)"),
     ("physical-pendulum", "potential", None, "M*g*l*(1 - cos(theta))/2"),
-    ("massive-pulley", "kinetic", None, "(m1 + m2)*y_dot**2/2 + (M*R**2/2)*(y_dot/R)**2/2"),
-    ("massive-pulley", "potential", None, "-m1*g*(d + y) - m2*g*(d - y)"),  # heights from the axle
-    ("massive-pulley", "equation", "y", "(2*m1 + 2*m2 + M)*y_ddot + 2*(m2 - m1)*g"),
-    ("massive-pulley", "acceleration", "y", "2*(m1 - m2)*g/(2*m1 + 2*m2 + M)"),
+    ("massive-pulley", "kinetic", None, "(m1 + m2)*z_dot**2/2 + (M*R**2/2)*(z_dot/R)**2/2"),
+    ("massive-pulley", "potential", None, "-m1*g*(d + z) - m2*g*(d - z)"),  # heights from the axle
+    ("massive-pulley", "equation", "z", "(2*m1 + 2*m2 + M)*z_ddot + 2*(m2 - m1)*g"),
+    ("massive-pulley", "acceleration", "z", "2*(m1 - m2)*g/(2*m1 + 2*m2 + M)"),
     ("rolling-disc", "kinetic", None, "M*x_dot**2/2 + (M*R**2/2)*(x_dot/R)**2/2"),
     (
         "rolling-cylinder-wedge",

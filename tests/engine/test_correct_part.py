@@ -28,7 +28,7 @@ CASES = [
     ("rolling-cylinder-wedge", "kinetic", None,
      "M*X_dot**2/2 + m*(X_dot**2 + s_dot**2 + 2*X_dot*s_dot*cos(alpha))/2 + m*s_dot**2/2",
      "the cylinder taken as a hoop", "moment of inertia about the axis", "mr²/2"),
-    ("massive-pulley", "kinetic", None, "(m1 + m2)*y_dot**2/2", "the pulley's turning energy ½ I (ẏ/R)² left out",
+    ("massive-pulley", "kinetic", None, "(m1 + m2)*z_dot**2/2", "the pulley's turning energy ½ I (ż/R)² left out",
      "moment of inertia of the pulley about its axle", "MR²/2"),
     ("rail-two-body", "potential", None, "k*(x2 - x1 + l0)**2/2", "x₂ − x₁ + l₀: the sign of l₀", "stretch",
      "x₂ − x₁ − l₀"),

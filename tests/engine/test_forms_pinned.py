@@ -177,12 +177,12 @@ PINNED = {  # fmt: skip
         "accelerations": {"theta": "-3*g*sin(theta)/(2*l)"},
     },
     "massive-pulley": {
-        # ½(m₁ + m₂ + M/2) ẏ² (Morin § 8.2): the pulley's turning adds M/2 to the masses the string carries
-        "kinetic": "y_dot**2*(M/2 + m1 + m2)/2",
-        "potential": "g*y*(-m1 + m2)",
-        "hamiltonian": "g*y*(-m1 + m2) + y_dot**2*(M/2 + m1 + m2)/2",
-        "equations": ["-g*(m1 - m2)/(M/2 + m1 + m2) + y_ddot"],
-        "accelerations": {"y": "g*(m1 - m2)/(M/2 + m1 + m2)"},
+        # ½(m₁ + m₂ + M/2) ż² (Morin § 8.2): the pulley's turning adds M/2 to the masses the string carries
+        "kinetic": "z_dot**2*(M/2 + m1 + m2)/2",
+        "potential": "g*z*(-m1 + m2)",
+        "hamiltonian": "g*z*(-m1 + m2) + z_dot**2*(M/2 + m1 + m2)/2",
+        "equations": ["-g*(m1 - m2) + z_ddot*(M/2 + m1 + m2)"],
+        "accelerations": {"z": "g*(m1 - m2)/(M/2 + m1 + m2)"},
     },
     "double-pendulum": {
         "kinetic": "l1**2*theta1_dot**2*(m1 + m2)/2 + l1*l2*m2*theta1_dot*theta2_dot*cos(theta1 - theta2) + l2**2*m2*theta2_dot**2/2",

@@ -81,3 +81,17 @@ def test_a_factor_every_term_of_a_denominator_holds_goes_in_front():
     # a sum with no factor common to all its terms is left to ``grouped``
     M, m1, m2 = sp.symbols("M m1 m2", positive=True)
     assert denominators_grouped(1 / (M * m1 + M * m2 + 4 * m1 * m2), set()) == 1 / (4 * m1 * m2 + M * (m1 + m2))
+
+
+def test_a_sum_of_masses_below_keeps_the_inertia_as_t_prints_it():
+    # the massive pulley's H: p²/(M + 2m₁ + 2m₂) is p²/(2(m₁ + m₂ + M/2)), the 𝓜 = m₁ + m₂ + M/2 of T and 𝓜 q̈ = f
+    p = sp.Symbol("p_z", real=True)
+    out = denominators_grouped(p**2 / (M + 2 * m1 + 2 * m2), {p})
+    assert sp.Mul.make_args(out)[0] == sp.Rational(1, 2) and 1 / (m1 + m2 + M / 2) in sp.Mul.make_args(out)
+    # every mass carrying the same number, or no number most carry: nothing to take out this way
+    assert denominators_grouped(1 / (M + m1 + m2), set()) == 1 / (M + m1 + m2)
+    assert denominators_grouped(1 / (M + 2 * m1 + 3 * m2), set()) == 1 / (M + 2 * m1 + 3 * m2)
+    hamiltonian = {s["key"]: s["latex"] for s in derivation_document("massive-pulley")["steps"]}["hamiltonian-pq"]
+    assert hamiltonian.endswith(
+        r"= \frac{p_{z}^{2}}{2 \left(m_{1} + m_{2} + M / 2\right)} + \left(m_{2} - m_{1}\right) g z"
+    )

@@ -135,3 +135,13 @@ def test_a_velocity_comes_after_an_inertia_that_varies():
     assert tex(m * inertia * thd**2 / 2) == r"\frac{1}{2} m \left(1 + 4 b^{2} \theta^{2}\right) \dot{\theta}^{2}"
     assert tex(m * inertia * thdd) == r"m \left(1 + 4 b^{2} \theta^{2}\right) \ddot{\theta}"
     assert tex(m * theta * (g - thd**2)) == r"m \theta \left(g - \dot{\theta}^{2}\right)"
+
+
+def test_an_inertia_is_divided_out_when_a_single_term_and_kept_when_it_adds_masses():
+    m1, m2, M, length, c = sp.symbols("m1 m2 M l c", positive=True)
+    # the massive pulley's m₁ + m₂ + M/2 and two masses on one rod, l²(m₁ + m₂): 𝓜 q̈ = f
+    assert textbook.masses_summed(m1 + m2 + M / 2)
+    assert textbook.masses_summed(length**2 * (m1 + m2))
+    # the physical pendulum's M l²/3 is one term; m(1 + c²) adds a length ratio, not masses: both divided out
+    assert not textbook.masses_summed(M * length**2 / 3)
+    assert not textbook.masses_summed(m * (1 + c**2))

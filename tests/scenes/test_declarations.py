@@ -24,7 +24,7 @@ TABLE = {
     "coupled-oscillators": (("x1", "x2"), ("m", "k", "kappa", "d")),
     "physical-pendulum": (("theta",), ("M", "l", "g")),
     "rolling-cylinder-wedge": (("X", "s"), ("m", "M", "r", "g", "alpha")),
-    "massive-pulley": (("y",), ("m1", "m2", "M", "R", "g", "d")),
+    "massive-pulley": (("z",), ("m1", "m2", "M", "R", "g", "d")),
 }
 BEYOND_CHAPTER = {
     "double-pendulum",

@@ -30,7 +30,7 @@ ZEROS = {
     "double-pendulum": {"theta1": sp.pi / 2, "theta2": sp.pi / 2},
     "physical-pendulum": {"theta": sp.pi / 2},  # the rod's centre level with the pivot
     "rolling-cylinder-wedge": {"X": 0, "s": 0},  # the cylinder where it started
-    "massive-pulley": {"y": 0},  # the start, both masses level
+    "massive-pulley": {"z": 0},  # the start, both masses level
 }
 
 

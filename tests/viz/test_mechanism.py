@@ -254,13 +254,13 @@ def test_a_wheel_given_its_turning_angle_carries_it_and_one_without_does_not(mon
     assert "turn" not in spec_of("pulley")["wheels"][0]
 
 
-@pytest.mark.parametrize("y", [0.0, 0.7, -1.2])
-def test_the_massive_pulley_turns_with_its_string_and_its_strands_hang_from_the_rim(y):
+@pytest.mark.parametrize("z", [0.0, 0.7, -1.2])
+def test_the_massive_pulley_turns_with_its_string_and_its_strands_hang_from_the_rim(z):
     spec = spec_of("massive-pulley")
-    env = env_of("massive-pulley", y=y)
+    env = env_of("massive-pulley", z=z)
     (wheel,) = spec["wheels"]
-    # the string does not slip: the rim turns through the string's travel, R × (the turning angle) = y
-    assert evaluate(wheel["turn"], env) * env["R"] == pytest.approx(y)
+    # the string does not slip: the rim turns through the string's travel, R × (the turning angle) = z
+    assert evaluate(wheel["turn"], env) * env["R"] == pytest.approx(z)
     assert wheel["wrap"] == "top" and evaluate(wheel["radius"], env) == pytest.approx(env["R"])
     strings = [link for link in spec["links"] if link["style"] == "string"]
     assert len(strings) == 2
@@ -270,7 +270,7 @@ def test_the_massive_pulley_turns_with_its_string_and_its_strands_hang_from_the_
         # vertical, from one side of the rim
         assert xa == pytest.approx(xb, abs=1e-12) and abs(xa) == pytest.approx(env["R"])
         hanging += za - zb
-    # what one strand gains the other loses: the two hang 2d in all whatever y
+    # what one strand gains the other loses: the two hang 2d in all whatever z
     assert hanging == pytest.approx(2 * env["d"])
 
 
