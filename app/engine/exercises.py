@@ -11,14 +11,13 @@ import sympy as sp
 
 from app.engine.check import conserved_momenta, exercises, offered_names, problem
 from app.engine.check_problem import asked_equilibrium, where_asked
-from app.engine.constraints import AXES
 from app.engine.derive import Derivation
 from app.engine.dimensions import system_dimensions
 from app.engine.equilibria_notes import equilibria_notes
 from app.engine.mistake_positions import body_name, component_keys, points
 from app.engine.mistakes import POINTERS, has_springs, pointer, without_springs
-from app.engine.names import said_all, unicode
-from app.engine.notation import inertia, letter
+from app.engine.names import latex, said_all, unicode
+from app.engine.notation import inertia, letter, practice_axes
 from app.engine.notation import text as frequency_letter
 from app.engine.report import Printer, display
 
@@ -63,6 +62,9 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
     springs = has_springs(d)
     # (the frequency's rule in the document's letter: Ω² where ω is a parameter)
     said = {step: pointer(step, frequency_letter("frequency", d), inertia(d)) for step in POINTERS}
+    # the positions' rule in the step's letters for the axes (ξ across and ζ up where a coordinate is named z)
+    x, _, z = (unicode(n) for n in practice_axes(d))
+    said["position"] = said["position"].replace("x across and z up", f"{x} across and {z} up")
     rules = {step: rule if springs else (without_springs(rule) or rule) for step, rule in said.items()}
     return {"exercises": items, "symbols": {**symbols, "t": "t"}, "rules": rules}
 
@@ -70,7 +72,7 @@ def exercise_json(d: Derivation) -> dict[str, Any]:
 # what a positions step is judged against, said on the step; the set-up figure draws no axes, so the directions
 # and the origin are said in words (the origin is the one the problem statement names)
 POSITION_NOTE = (
-    "Measure x across and z up (y is the third direction), from the origin the problem statement names; a position "
+    "Measure {x} across and {z} up ({y} is the third direction), from the origin the problem statement names; a position "
     "measured from another origin, the correct one plus a constant length ({example}never a bare number), is "
     "accepted as equivalent.{heights}"
 )
@@ -96,7 +98,8 @@ def position_note(d: Derivation) -> str:
     said = ", ".join(unicode(q.name) for q in heights)
     if heights:
         said = f" Here {said} {'are heights' if len(heights) > 1 else 'is a height'} (measured up, along z), not the third direction."
-    return POSITION_NOTE.format(heights=said, example=example)
+    x, y, z = (unicode(n) for n in practice_axes(d))
+    return POSITION_NOTE.format(heights=said, example=example, x=x, y=y, z=z)
 
 
 def _title(label: str) -> str:
@@ -139,7 +142,7 @@ def _lhs(step: str, name: str | None, pr: Printer, d: Derivation) -> str:
         # x, or x with the body's name where there are several (never x₂, which may be a coordinate's name)
         i, a = next((i, a) for key, i, a in component_keys(d) if key == name)
         many = len(points(d)) > 1
-        return AXES[a] + (f"_{{{_body_tex(d, i)}}}" if many else "")
+        return latex(practice_axes(d)[a]) + (f"_{{{_body_tex(d, i)}}}" if many else "")
     if name is not None:
         q = d.table.q[d.table.names.index(name)]
         qdd = d.table.qdd[d.table.names.index(name)]

@@ -17,15 +17,17 @@ from app.engine.constraints import AXES, cartesian_symbols
 from app.engine.derive import Derivation
 from app.engine.mistake_families import Mistake, spoken
 from app.engine.names import unicode
+from app.engine.notation import practice_axes
 
 MAX_TERMS = 8  # terms of one component tried one at a time
 
 # how the figure draws each axis
-_AXIS_WORDS = {
-    "x": "x is measured across, to the right, as the figure draws it",
-    "y": "y is measured along the figure's third axis (into the page for a flat figure)",
-    "z": "z is measured upward, as the figure draws it: a point below the origin has z < 0",
-}
+# what each axis means, by index, in the step's letter for it (x or ξ, y or η, z or ζ: notation.practice_axes)
+_AXIS_WORDS = (
+    "{0} is measured across, to the right, as the figure draws it",
+    "{0} is measured along the figure's third axis (into the page for a flat figure)",
+    "{0} is measured upward, as the figure draws it: a point below the origin has {0} < 0",
+)
 
 
 def points(d: Derivation) -> tuple[tuple[sp.Expr, ...], ...]:
@@ -78,8 +80,8 @@ def body_name(d: Derivation, i: int) -> str:
 
 
 def position_label(d: Derivation, i: int, a: int) -> str:
-    """The step's label: 'x of the block'."""
-    return f"{AXES[a]} of {body_name(d, i)}"
+    """The step's label: 'x of the block' (ζ where a coordinate is named z: ``notation.practice_axes``)."""
+    return f"{unicode(practice_axes(d)[a])} of {body_name(d, i)}"
 
 
 def _swap(expr: sp.Expr) -> sp.Expr:
@@ -105,7 +107,8 @@ def _moving_terms(expr: sp.Expr, moving: tuple[sp.Symbol, ...]) -> list[sp.Expr]
 def position_mistakes(d: Derivation, i: int, a: int) -> Iterator[Mistake]:
     """The plausible wrong answers for body i's component a, most specific first."""
     positions, table = points(d), d.table
-    axis, body = AXES[a], body_name(d, i)
+    axes = tuple(unicode(n) for n in practice_axes(d))
+    axis, body = axes[a], body_name(d, i)
     moving = (*table.q, table.t)
     terms = _moving_terms(positions[i][a], moving)[:MAX_TERMS]
     # the moving part only: a position is judged up to a constant (its origin), so the figure's constant lengths
@@ -143,7 +146,9 @@ def position_mistakes(d: Derivation, i: int, a: int) -> Iterator[Mistake]:
     yield Mistake(f"{base}.doubled", "doubled", f"twice the correct motion: {body} moving as far as the points that "
                   "carry it" if halves else "a component twice the size it should be", None, where, truth + varying)  # fmt: skip
     yield Mistake(f"{base}.halved", "halved", "half the correct motion", None, where, truth - varying / 2)
-    yield Mistake(f"{base}.sign", "position_sign", "the wrong sign", None, _AXIS_WORDS[axis], truth - 2 * varying)
+    yield Mistake(
+        f"{base}.sign", "position_sign", "the wrong sign", None, _AXIS_WORDS[a].format(axis), truth - 2 * varying
+    )
     if truth.has(sp.sin, sp.cos):
         yield Mistake(f"{base}.sin_cos", "sin_cos", "sin and cos swapped", None, _SWAP_WHY, _swap(truth))
         # one angle's sine and cosine swapped, the others' right (the spherical pendulum's θ in R sin θ cos φ)
@@ -159,9 +164,9 @@ def position_mistakes(d: Derivation, i: int, a: int) -> Iterator[Mistake]:
             yield Mistake(
                 f"{base}.other_component.{AXES[b]}",
                 "position_other",
-                f"{body}'s {AXES[b]}, not its {axis}",
+                f"{body}'s {axes[b]}, not its {axis}",
                 None,
-                _AXIS_WORDS[axis],
+                _AXIS_WORDS[a].format(axis),
                 other,
             )
 
@@ -173,7 +178,7 @@ def position_mistakes(d: Derivation, i: int, a: int) -> Iterator[Mistake]:
             yield Mistake(f"{base}.left_out.{_key(t)}", "left_out", f"the part that moves with {what} left out", None,
                           f"{body}'s {axis} changes with {what} through this part too", truth - t)  # fmt: skip
             yield Mistake(f"{base}.term_sign.{_key(t)}", "term_sign", f"the sign of your term {spoken(-t)}", -t,
-                          _AXIS_WORDS[axis], truth - 2 * t)  # fmt: skip
+                          _AXIS_WORDS[a].format(axis), truth - 2 * t)  # fmt: skip
             if t.has(sp.sin, sp.cos):
                 swapped = _swap(t)
                 yield Mistake(f"{base}.sin_cos.{_key(t)}", "sin_cos", f"sin and cos swapped in your term {spoken(swapped)}",

@@ -492,6 +492,23 @@ def cartesian_names(names: list[str], taken: set[str]) -> dict[str, str]:
     return {n: (_GREEK_AXES[n[0]] + n[1:] if greek else n) for n in names}
 
 
+def practice_axes(d: Derivation) -> tuple[str, str, str]:
+    """The letters (names) a positions step in practice calls the Cartesian axes by: x, y, z, or ξ, η, ζ where a
+    coordinate takes one of those names without being each body's displacement along that axis (the massive
+    pulley's z, m₂'s height, puts −z in m₁'s z: "ζ of the mass m₁ = −z", never "z of the mass m₁ = −z"; the helix's
+    z turns the bead in x and y too). A cart's x that moves every body it carries along x keeps x."""
+    points = [*d.mechanics.positions, *(b.centre for b in d.mechanics.bodies if b.translation != 0)]
+    for q in d.table.q:
+        if q.name not in ("x", "y", "z"):
+            continue
+        own = "xyz".index(q.name)
+        # ∂r/∂q is the unit vector along q's own axis for every point q moves
+        for r in points:
+            if any(c.has(q) for c in r) and any(sp.diff(c, q) != (a == own) for a, c in enumerate(r)):
+                return ("xi", "eta", "zeta")
+    return ("x", "y", "z")
+
+
 def _printed_cartesian(
     d: Derivation, forces: tuple[ConstraintForce, ...], velocities: bool = False
 ) -> tuple[list[str], dict[str, str]]:

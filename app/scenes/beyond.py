@@ -172,7 +172,7 @@ MASSIVE_PULLEY = Scene(
         "rim and are level at the start, a distance d below the axle. The coordinate z is the height m₂ has risen from its "
         "start: m₁ has then descended by z and the pulley has turned through the angle z/R. Heights are measured "
         "upward from the level where the masses start, and U = 0 at the start (z = 0); the "
-        "pulley's centre does not move, so its weight adds nothing to U that changes. Derive the equation of motion, find the acceleration of m₁, and "
+        "pulley's centre does not move, so its weight adds nothing to U that changes. Derive the equation of motion, find the acceleration z̈, with which m₂ rises and m₁ falls, and "
         "compare it with the same machine on a massless pulley (M → 0)."
     ),
     figure=(

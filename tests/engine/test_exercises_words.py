@@ -70,4 +70,5 @@ def test_a_position_steps_side_is_plain_latex(scene_id):
     sides = [e["lhs"] for e in exercise_json(derive(SCENES[scene_id].system))["exercises"] if e["step"] == "position"]
     assert sides and all(side.isascii() for side in sides), sides
     if scene_id == "massive-pulley":
-        assert sides == [r"z_{\text{mass } m_{1}}", r"z_{\text{mass } m_{2}}"]
+        # the coordinate z is m₂'s height, so the heights asked are ζ (notation.practice_axes; prof-r 1)
+        assert sides == [r"\zeta_{\text{mass } m_{1}}", r"\zeta_{\text{mass } m_{2}}"]

@@ -364,3 +364,22 @@ def test_a_position_vector_is_never_written_with_a_parameters_letter(scene_id):
     assert vectors, rows
     assert not {("ρ" if v == "rho" else v) for v in vectors} & parameters, (vectors, parameters)
     assert vectors == ({"R"} if scene_id == "rolling-cylinder-wedge" else {"r"}), vectors
+
+
+def test_practice_names_the_axes_greek_only_where_a_coordinate_takes_an_axis_name_without_being_that_displacement():
+    from app.engine.derive import derive
+    from app.engine.notation import practice_axes
+    from app.scenes.types import Parameter, Particle, System
+
+    # the massive pulley's z is m₂'s height, so m₁'s z is −z (prof-r 1); the helix's z turns the bead in x and y too
+    assert practice_axes(derive(SCENES["massive-pulley"].system)) == ("xi", "eta", "zeta")
+    assert practice_axes(derive(SCENES["helix-bead"].system)) == ("xi", "eta", "zeta")
+    # a cart's x carries the cart and the bob along x alone: the axes keep their letters
+    cart = System(
+        coordinates=("x", "phi"),
+        parameters=tuple(Parameter(n, 1.0, min=0.1) for n in ("M", "m", "l", "g")),
+        particles=(Particle("M", ("x", "0", "0"), "cart"), Particle("m", ("x + l*sin(phi)", "0", "-l*cos(phi)"), "bob")),
+        potential="-m*g*l*cos(phi)",
+    )
+    assert practice_axes(derive(cart)) == ("x", "y", "z")
+    assert practice_axes(derive(SCENES["simple-pendulum"].system)) == ("x", "y", "z")
