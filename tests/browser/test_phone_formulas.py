@@ -192,7 +192,9 @@ def test_the_rigid_bodies_vectors_and_hamiltonians_fit_a_phone_and_no_line_is_a_
         page.goto(f"/scenes/{scene_id}")
         page.wait_for_selector("body[data-katex-errors]", state="attached")
         page.evaluate(MEASURE)
-        starts = [r"\begin{aligned}\vec r_{\mathrm{cm}}", r"H = \sum_k", r"\begin{aligned}t &= \int"]
+        # the position vector's letter: R where the radius is r (notation.position)
+        letter = "R" if scene_id == "rolling-cylinder-wedge" else "r"
+        starts = [rf"\begin{{aligned}}\vec {letter}_{{\mathrm{{cm}}}}", r"H = \sum_k", r"\begin{aligned}t &= \int"]
         vector, hamiltonian, integral = page.evaluate(PIECES, starts)
         if scene_id == "rolling-cylinder-wedge":
             assert not vector["wide"] and not hamiltonian["wide"], (vector, hamiltonian)
