@@ -340,11 +340,11 @@ def _body_cross_why(
         # the components of v_cm whose rate has both a q̇_a part and a q̇_b part
         if not any(sp.diff(c, qa) != 0 and sp.diff(c, qb) != 0 for c in b.centre):
             continue
-        # each component squared, a sign in front dropped as the square drops it: (−ṡ sin α)² = (ṡ sin α)²
-        squares = " + ".join(f"({spoken(-c if c.could_extract_minus_sign() else c)})²" for c in b.velocity if c != 0)
+        # where the term comes from, never the components themselves: v_cm² is the answer's larger part (prof-r 3)
         return (
-            f"the cross term comes from the {b.body.label or b.body.kind}'s ½ {spoken(b.mass)} v_cm², with "
-            f"v_cm² = {squares}: expand the square that holds both {spoken(a)} and {spoken(b_rate)}"
+            f"the cross term comes from the {b.body.label or b.body.kind}'s ½ {spoken(b.mass)} v_cm²: write v⃗_cm "
+            f"component by component ({spoken(a)} and {spoken(b_rate)} both appear in one of them), square each and "
+            "add, and the square that holds both rates gives the cross term with its sign"
         )
     return None
 

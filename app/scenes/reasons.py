@@ -441,7 +441,7 @@ PHYSICAL_PENDULUM: dict[str, str] = {
     "action": "Of all the ways the rod could swing from one angle to another in the same time, the real swing makes ∫ (T − U) dt stationary.",
     "bodies": "The centre of mass is halfway down the rod, l/2 from the pivot, so it moves on a circle at speed (l/2) θ̇; the rod turns at the rate θ̇, and a uniform rod's I_cm is M l²/12.",
     "kinetic": "The centre's motion gives ½ M (l/2)² θ̇² = M l² θ̇²/8 and the turning about the centre M l² θ̇²/24; together M l² θ̇²/6, which is ½ I θ̇² with I = M l²/3 about the pivot.",
-    "potential": "The centre of mass is l cos θ/2 below the pivot, so U = −½ M g l cos θ: the whole weight acts at the centre.",
+    "potential": "The centre of mass is (l/2) cos θ below the pivot, so U = −½ M g l cos θ: the whole weight acts at the centre.",
     "lagrangian": "T − U with one coordinate, as for the simple pendulum, but with the rod's own moment of inertia.",
     "derivatives:theta": "∂L/∂θ = −½ M g l sin θ is gravity's torque about the pivot; ∂L/∂θ̇ = M l² θ̇/3 is the rod's angular momentum about it.",
     "euler-lagrange": "Angular momentum about the pivot changes at the rate of the torque; divided by M l²/3 the mass drops out.",

@@ -701,14 +701,15 @@ NAMED = [
         "7*m*s_ddot/5 + m*X_ddot*cos(alpha) - m*g*sin(alpha)",
         r"wrong moment of inertia: I_cm of a solid sphere",
     ),
-    # review prof-q 7: the cross term's sign explained by the square it comes from, read from the body's velocity
+    # review prof-q 7: the cross term's sign explained by the square it comes from, read from the body's velocity;
+    # prof-r 3: without printing v_cm², the step's answer
     (
         "rolling-cylinder-wedge",
         "kinetic",
         None,
         "(M + m)*X_dot**2/2 - m*X_dot*s_dot*cos(alpha) + 3*m*s_dot**2/4",
-        r"^(?!.*sum of squares).*½ m v_cm², with v_cm² = \(Ẋ \+ ṡ cos\(α\)\)² \+ \(ṡ sin\(α\)\)²: expand the square "
-        r"that holds both Ẋ and ṡ",
+        r"^(?!.*(sum of squares|v_cm² =|ṡ sin)).*½ m v_cm²: write v⃗_cm component by component \(Ẋ and ṡ both appear "
+        r"in one of them\), square each and add",
     ),
     # review prof-q 1: the fixed wedge's s̈ = 2g sin α/3 is the answer with the wedge held fixed (never "another
     # system's, such as an Atwood machine's"), and a sliding block's s̈ and Ẍ are the cylinder's turning forgotten
