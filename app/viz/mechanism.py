@@ -106,6 +106,34 @@ _WEDGE_FOOT = "(1.15*Abs(qmax_D) + 0.5)"
 # cylinder's point of contact (its centre's s) at the farthest point of the run, and a diameter to spare.
 _ROLL_TOP = "((qmin_s - Abs(qmin_s))/2)"
 _ROLL_FOOT = "(1.15*Abs(qmax_s) + 0.5 + 2*r)"
+
+
+def _wedge_middle(top: str, foot: str) -> tuple[str, tuple[str, str, str]]:
+    """The sliding wedge's point, drawn at the centroid of its triangle (top corner, foot, right-angle corner),
+    its slope running from ``top`` to ``foot`` along the slope (falling to the right at alpha), X its position."""
+    return ("wedge", (f"X + ({top} + {top} + {foot})*cos(alpha)/3", "0", f"-({top} + 2*{foot})*sin(alpha)/3"))
+
+
+def _wedge_corners(top: str, foot: str) -> tuple[tuple[str, tuple[str, str, str]], ...]:
+    """The wedge's three corners, as anchors of its solid."""
+    return (
+        ("wedge top", (f"X + {top}*cos(alpha)", "0", f"-{top}*sin(alpha)")),
+        ("wedge foot", (f"X + {foot}*cos(alpha)", "0", f"-{foot}*sin(alpha)")),
+        ("wedge corner", (f"X + {top}*cos(alpha)", "0", f"-{foot}*sin(alpha)")),
+    )
+
+
+def _wedge_floor(top: str, foot: str) -> tuple[str, str, str, tuple[str, str, str], str]:
+    """The floor under the wedge, as long as the wedge's whole run."""
+    return (
+        "floor",
+        f"qmin_X + {top}*cos(alpha) - 0.5",
+        f"qmax_X + {foot}*cos(alpha) + 0.5",
+        ("s", "0", f"-{foot}*sin(alpha)"),
+        "ground",
+    )
+
+
 # by family (the name a scene gives as ``Scene.family``), never by scene
 FAMILIES: dict[str, Family] = {
     "pendulum": PENDULUM,
@@ -292,21 +320,9 @@ FAMILIES: dict[str, Family] = {
         # The wedge's top corner is where D = 0 (higher when a run has D < 0); its slope is long enough for the
         # block's whole run. The wedge is drawn at its middle (the centroid of the triangle), the block on
         # the slope below the top corner, so the two labels sit by their own bodies.
-        points=(
-            (
-                "wedge",
-                (
-                    f"X + ({_WEDGE_TOP} + {_WEDGE_TOP} + {_WEDGE_FOOT})*cos(alpha)/3",
-                    "0",
-                    f"-({_WEDGE_TOP} + 2*{_WEDGE_FOOT})*sin(alpha)/3",
-                ),
-            ),
-            ("block", ("X + D*cos(alpha)", "0", "-D*sin(alpha)")),
-        ),
+        points=(_wedge_middle(_WEDGE_TOP, _WEDGE_FOOT), ("block", ("X + D*cos(alpha)", "0", "-D*sin(alpha)"))),
         anchors=(
-            ("wedge top", (f"X + {_WEDGE_TOP}*cos(alpha)", "0", f"-{_WEDGE_TOP}*sin(alpha)")),
-            ("wedge foot", (f"X + {_WEDGE_FOOT}*cos(alpha)", "0", f"-{_WEDGE_FOOT}*sin(alpha)")),
-            ("wedge corner", (f"X + {_WEDGE_TOP}*cos(alpha)", "0", f"-{_WEDGE_FOOT}*sin(alpha)")),
+            *_wedge_corners(_WEDGE_TOP, _WEDGE_FOOT),
             # the floor pushes on the whole base; its resultant is drawn from the base's middle
             ("wedge base", (f"X + ({_WEDGE_TOP} + {_WEDGE_FOOT})*cos(alpha)/2", "0", f"-{_WEDGE_FOOT}*sin(alpha)")),
         ),
@@ -314,15 +330,7 @@ FAMILIES: dict[str, Family] = {
         solids=(("wedge", ("wedge top", "wedge foot", "wedge corner")),),
         # the block rests on the wedge's slope, which falls to the right at alpha; it lies down the slope from D
         blocks=((1, "-alpha", "ahead"),),
-        curves=(
-            (
-                "floor",
-                f"qmin_X + {_WEDGE_TOP}*cos(alpha) - 0.5",
-                f"qmax_X + {_WEDGE_FOOT}*cos(alpha) + 0.5",
-                ("s", "0", f"-{_WEDGE_FOOT}*sin(alpha)"),
-                "ground",
-            ),
-        ),
+        curves=(_wedge_floor(_WEDGE_TOP, _WEDGE_FOOT),),
         caption=(
             f"Side view: the wedge sliding on the floor and the block on its slope, with {TRAIL} "
             "(the wedge's trail follows its middle)."
@@ -333,32 +341,13 @@ FAMILIES: dict[str, Family] = {
         # its centre, r out from the slope, as a wheel whose spokes turn with it by −s/r (clockwise as it rolls
         # down, to the right).
         points=(
-            (
-                "wedge",
-                (
-                    f"X + ({_ROLL_TOP} + {_ROLL_TOP} + {_ROLL_FOOT})*cos(alpha)/3",
-                    "0",
-                    f"-({_ROLL_TOP} + 2*{_ROLL_FOOT})*sin(alpha)/3",
-                ),
-            ),
+            _wedge_middle(_ROLL_TOP, _ROLL_FOOT),
             ("cylinder", ("X + s*cos(alpha) + r*sin(alpha)", "0", "r*cos(alpha) - s*sin(alpha)")),
         ),
-        anchors=(
-            ("wedge top", (f"X + {_ROLL_TOP}*cos(alpha)", "0", f"-{_ROLL_TOP}*sin(alpha)")),
-            ("wedge foot", (f"X + {_ROLL_FOOT}*cos(alpha)", "0", f"-{_ROLL_FOOT}*sin(alpha)")),
-            ("wedge corner", (f"X + {_ROLL_TOP}*cos(alpha)", "0", f"-{_ROLL_FOOT}*sin(alpha)")),
-        ),
+        anchors=_wedge_corners(_ROLL_TOP, _ROLL_FOOT),
         solids=(("wedge", ("wedge top", "wedge foot", "wedge corner")),),
         wheels=(("cylinder", "r", "none", "-s/r"),),
-        curves=(
-            (
-                "floor",
-                f"qmin_X + {_ROLL_TOP}*cos(alpha) - 0.5",
-                f"qmax_X + {_ROLL_FOOT}*cos(alpha) + 0.5",
-                ("s", "0", f"-{_ROLL_FOOT}*sin(alpha)"),
-                "ground",
-            ),
-        ),
+        curves=(_wedge_floor(_ROLL_TOP, _ROLL_FOOT),),
         caption=(
             "Side view: the wedge sliding on the floor and the cylinder rolling down its slope, its two spokes "
             f"turning with it, with {TRAIL} (the wedge's trail follows its middle)."
