@@ -818,9 +818,10 @@ def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp
                         out.append((f"rigid.rod_taken_as_{kind}", f"{_WRONG_INERTIA} I_cm of a {_KIND_WORDS[kind]}, "
                                     f"{spoken(wrong)}, in place of a {_KIND_WORDS['rod']}'s",
                                     dT(wrong + m * (L / 2) ** 2), sp.Integer(0), centre))  # fmt: skip
+                # its I_cm behind the disclosure, as on the other rigid bodies' pages (prof-r 3), never in the name
                 out.append(("rigid.rod_spin_forgotten", f"only the motion of the rod's centre, {centre_only}: its "
-                            f"spin about the centre, with moment of inertia {spoken(m * L**2 / 12)}, is forgotten",
-                            dT(m * (L / 2) ** 2), sp.Integer(0), None))  # fmt: skip
+                            f"spin about the centre, ½ I_cm {spoken(v)}², is forgotten",
+                            dT(m * (L / 2) ** 2), sp.Integer(0), centre))  # fmt: skip
                 if U is not None and U.has(L):
                     # the centre at l rather than l/2: every l of U doubled
                     dU = U.xreplace({L: 2 * L}) - U

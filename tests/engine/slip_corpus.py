@@ -644,7 +644,7 @@ NAMED = [
         "kinetic",
         None,
         "M*(l/2)**2*theta_dot**2/2",
-        r"^(?!.*(ω|v_centre|l²/4 θ̇²/2)).*only the motion of the rod's centre, ½ M \(l/2\)² θ̇² = M l² θ̇²/8"
+        r"^(?!.*(ω|v_centre|l²/4 θ̇²/2|M l²/12)).*only the motion of the rod's centre, ½ M \(l/2\)² θ̇² = M l² θ̇²/8"
         r".*the rod's T is ½ M v_cm² \+ ½ I_cm θ̇²",
     ),
     (
