@@ -529,7 +529,7 @@ def _factors(
 LEFT_OUT_WHY = {
     "kinetic": "every body's ½ m v² gives all of its terms, one for each coordinate that moves it and the cross terms "
     "between them",
-    "potential": "U adds m g × height for every mass and ½ k × stretch² for every spring",
+    "potential": "U adds mass × g × height for every mass and ½ k × stretch² for every spring",
     "lagrangian": "L = T − U keeps every term of T and of U",
     "momentum": "p = ∂L/∂q̇ takes every term of L that holds this velocity",
     "equation": "d/dt(∂L/∂q̇) and ∂L/∂q each give terms: differentiate every term of L that holds this coordinate or "
@@ -539,7 +539,7 @@ LEFT_OUT_WHY = {
 }
 SIGN_WHY = {
     "kinetic": "½ m v² is a sum of squares: its terms are positive, and a cross term takes the sign of its cosine",
-    "potential": "U is +m g × height with the height measured upward: check which way the coordinate moves the mass",
+    "potential": "U is + mass × g × height, with the height measured upward: check which way the coordinate moves the mass",
     "lagrangian": "L = T − U: U's terms change sign in L",
     "momentum": "p = ∂L/∂q̇ keeps the sign each term has in L",
     "equation": "in d/dt(∂L/∂q̇) − ∂L/∂q = Q the terms of ∂L/∂q change sign",
