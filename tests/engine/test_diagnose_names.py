@@ -21,10 +21,11 @@ SYMBOL = re.compile(
     r"(?<![A-Za-zα-ωΑ-Ω0-9_'’\u0307\u0308])([A-Za-zα-ωΑ-Ω])[\u0307\u0308]?([₀-₉]*)(?![A-Za-zα-ωΑ-Ω0-9_\u0307\u0308₀-₉])"
 )
 # the letters of the rules every system shares, which name no quantity of the page: T, U, L and h; p, q, Q and
-# the generalized velocity; ½ m v², m g × height, ½ k × stretch², ½ I ω²; d/dt, Σ; the figure's axes x, y, z;
+# the generalized velocity; ½ m v², m g × height, ½ k × stretch², ½ I ω²; d/dt, Σ; the figure's axes x, y, z (ξ, η, ζ
+# where a coordinate takes an axis's name: notation.practice_axes, said in the positions' note);
 # the r of a position vector (∂r/∂q); the article a and A; T₂, T₁, T₀, the parts of T of degree 2, 1 and 0 in the
 # velocities (h = T₂ − T₀ + U where a constraint moves); the number π
-GENERIC = frozenset("T U L h H E p q Q v m g k I ω d t Σ x y z r a A T₀ T₁ T₂ π".split())
+GENERIC = frozenset("T U L h H E p q Q v m g k I ω d t Σ x y z ξ η ζ r a A T₀ T₁ T₂ π".split())
 
 
 def _letters(text: str) -> set[str]:
