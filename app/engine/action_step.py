@@ -46,21 +46,21 @@ def kinetic_focus_possible(d: Derivation) -> bool:
 def action_step(d: Derivation) -> dict[str, str]:
     forced = any(Q != 0 for Q in d.mechanics.Q)
     # the condition on the variations is one group (in braces): a narrow page breaks before its "with", never
-    # inside it, so no "0" is left alone on a line (prof-l 7)
+    # inside it, so no "0" is left alone on a line
     ends = r"\text{ with } {\delta q(t_0) = \delta q(t_1) = 0}"
     rows = [
         r"S[q] = \int_{t_0}^{t_1} L(q, \dot q, t)\,dt",
         rf"\delta S = 0 \quad \text{{for every }} \delta q {ends}"
         if not forced
         # with forces Q the variation of S is minus their work; written δS = −∫ Q·δq dt, both rows start with
-        # their left side and their = signs line up (prof-c S12)
+        # their left side and their = signs line up
         else rf"\delta S = -\int_{{t_0}}^{{t_1}} Q\cdot\delta q\,dt \quad \text{{for every }} \delta q {ends}",
     ]
     latex = r"\begin{aligned}" + r" \\ ".join(row.replace(" = ", " &= ", 1) for row in rows) + r"\end{aligned}"
     focus = (
         "The true path is a minimum of S only up to the first kinetic focus; for longer times it is a saddle."
         + (
-            # that focus is of every variation together; a family that varies fewer coordinates has its own (prof-e 17)
+            # that focus is of every variation together; a family that varies fewer coordinates has its own
             " That focus is the first for all the coordinates varied together; varying one coordinate alone, the "
             "others kept on the true path, its focus comes then or later, or never."
             if len(d.table.q) > 1

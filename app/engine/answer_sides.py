@@ -129,7 +129,7 @@ def _in_words(
         split = advice.group(1) if advice else ""
         out = f"{exc.part} is not a name in this problem; the names you may use are {allowed} and pi"
         if exc.part in absent:
-            # why the problem has no such name: g where the masses stay level (issue 41, 4)
+            # why the problem has no such name: g where the masses stay level
             out = f"{exc.part} is not a name in this problem: {absent[exc.part]}; the names you may use are {allowed} and pi"
         if split:
             out += f" ({split})"

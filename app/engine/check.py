@@ -292,7 +292,7 @@ def judge_of(pb: Problem, answer: sp.Expr, cancelling: tuple[sp.Expr, sp.Expr] |
 
 def _not_at_equilibrium(pb: Problem, printer: Printer, answer: sp.Expr) -> dict[str, Any]:
     """An ω² that still depends on a coordinate (g cos(θ)/R): graded wrong, and named as U_eff″/m_eff not
-    evaluated at the equilibrium where putting the equilibrium in makes it right (review student-m 4)."""
+    evaluated at the equilibrium where putting the equilibrium in makes it right."""
     w = pb.frequency
     # I_eff for an angle, m_eff for a length (app/engine/notation.inertia)
     i = pb.inertia.unicode
@@ -329,7 +329,7 @@ def _cancelled(
     pb: Problem, answer: sp.Expr, pair: tuple[sp.Expr, sp.Expr], verdict: dict[str, Any]
 ) -> dict[str, Any]:
     """A wrong answer that two of its typed terms cancelling made wrong: right with either one of them kept
-    (review student-m 10: gravity written twice with opposite signs was named as gravity left out). Said so,
+    (gravity written twice with opposite signs was named as gravity left out). Said so,
     as the student's own two terms; another wrong answer keeps its verdict."""
     if not any(verdict_of(pb, answer + term) is not None for term in pair):
         return verdict
@@ -382,7 +382,7 @@ def _judge(pb: Problem, answer: sp.Expr) -> dict[str, Any]:
         keep = _keeps_a_right_acceleration(pb, answer, truth)
         if pb.step == "momentum" and differ_by_factor(b, a):
             # a momentum short of a whole factor (m ż for m ż (1 + α²R²)) is named by that factor below, never as
-            # one of the terms its factor expands into (issue 41, 4)
+            # one of the terms its factor expands into
             keep = lambda m: m.family != "left_out"  # noqa: E731
         found = match(pb.mistakes, a, b, pb.relation, _at_engines_scale(pb, answer, a, truth), keep)
     more = None
@@ -548,7 +548,7 @@ def _units(pb: Problem, answer: sp.Expr, truth: sp.Expr | None) -> tuple[Mistake
 
 def _more_after_units(pb: Problem, answer: sp.Expr, truth: sp.Expr, b: Values) -> str | None:
     """A whole of the wrong units put right by a parameter of the units it lacks (or has too many): where every
-    answer so corrected still differs from the truth, at least one more slip remains (review student-k 2: m R θ̇²
+    answer so corrected still differs from the truth, at least one more slip remains (m R θ̇²
     for ½ m R² θ̇², the R named and the ½ not); named where it is a slip of the step's catalogue, else said so."""
     got, want = dimension(answer, pb.dimensions), dimension(truth, pb.dimensions)
     if got is None or want is None or got == want:
@@ -701,8 +701,8 @@ def _follow_up_slip(pb: Problem, fu: FollowUp, answer: sp.Expr) -> str | None:
     if fu.kind != "momentum" or not fu.question.startswith("What is the time derivative"):
         return None
     rates = [v for v in pb.groups.rates if v.name.endswith("_dot") and not v.name.endswith("_ddot")]
-    # the chain rule's whole factor left out, where the argument holds several coordinates (student-h 9:
-    # −sin(θ₁ − θ₂) for d/dt cos(θ₁ − θ₂), whose answer is −sin(θ₁ − θ₂)(θ̇₁ − θ̇₂))
+    # the chain rule's whole factor left out, where the argument holds several coordinates
+    # (−sin(θ₁ − θ₂) for d/dt cos(θ₁ − θ₂), whose answer is −sin(θ₁ − θ₂)(θ̇₁ − θ̇₂))
     factor = _budgeted(lambda: sp.cancel(fu.truth / answer), None, FACTOR_WORK) if answer != 0 else None
     if (
         factor is not None
@@ -807,7 +807,7 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
         found = _budgeted(lambda: missing_square(answer, b, pb.groups), None, ANSWER_SLIP_WORK)
         if found is None:
             # the same rule on the answer grouped by its products of velocities, each coefficient factored: a part
-            # left unsquared inside one term (½ m (… + 2αρ ρ̇²) read as ½ m (1 + 2αρ) ρ̇² + …: student-l 5)
+            # left unsquared inside one term (½ m (… + 2αρ ρ̇²) read as ½ m (1 + 2αρ) ρ̇² + …)
             grouped = _budgeted(lambda: _grouped(answer, pb.groups), None, ANSWER_SLIP_WORK)
             if grouped is not None and grouped != answer:
                 found = _budgeted(lambda: missing_square(grouped, b, pb.groups), None, ANSWER_SLIP_WORK)
@@ -831,7 +831,7 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
             return found
     if pb.step in _SMALL_FORMS or pb.step == "position":
         # the small-angle form where the exact one is asked (the equation's own is named by linearised, above); a
-        # position too (student-h 188: R θ²/2 for the bob's z)
+        # position too (R θ²/2 for the bob's z)
         what, constant = _SMALL_FORMS.get(pb.step, pb.label), pb.relation == "constant"
         found = _budgeted(lambda: small_angle(a, truth, pb.groups, what, constant), None, ANSWER_SLIP_WORK)
         if found is not None:
@@ -841,7 +841,7 @@ def _hint(pb: Problem, answer: sp.Expr, a, b, truth: sp.Expr) -> str | AnswerSli
         found = _budgeted(lambda: solved_slip(answer, truth, pb.groups, frequency, pb.inertia), None, ANSWER_SLIP_WORK)
         if found is not None:
             return found
-    # the step's rule in the document's letter for the frequency (Ω² on the rotating wire: student-i 6)
+    # the step's rule in the document's letter for the frequency (Ω² on the rotating wire)
     return pointer(pb.step, pb.frequency, pb.inertia)
 
 

@@ -40,8 +40,7 @@ _KINDS = {
     "equation": {"parameter", "position", "velocity", "acceleration"},
     "acceleration": {"parameter", "position", "velocity"},
     "hamiltonian": {"parameter", "position", "velocity"},
-    # (a coordinate is read, and an ω² that still depends on it is judged: evaluated at the equilibrium, review
-    # student-m 4)
+    # (a coordinate is read, and an ω² that still depends on it is judged: evaluated at the equilibrium)
     "omega_squared": {"parameter", "momentum", "position"},
 }
 # why an ω² may hold no velocity, acceleration or time

@@ -45,7 +45,7 @@ class Problem:
     # ½ k × stretch² are given only then)
     springs: bool = True
     # the bodies whose height never changes as the coordinates do, (label, mass): a wedge sliding on the floor
-    # has no term in U (issue 41, 2)
+    # has no term in U
     level: tuple[tuple[str, sp.Expr], ...] = ()
     # whether the system has gravity (a g), as ``springs`` says whether it has springs
     gravity: bool = True
@@ -55,7 +55,7 @@ class Problem:
     # the document's letter for the frequency (ω, or Ω where ω is a parameter), for the words of the ω² step
     frequency: str = "ω"
     # for ω²: the reduced coordinate and its value at the asked equilibrium (θ, 0), where an ω² typed with the
-    # coordinate still in it is evaluated (review student-m 4)
+    # coordinate still in it is evaluated
     equilibrium: tuple[sp.Symbol, sp.Expr] | None = None
     # for ω²: the reduced coordinate's inertia, its letter and words (I_eff for an angle, m_eff for a length)
     inertia: Inertia = MASS_INERTIA
@@ -77,7 +77,7 @@ def checkable_equilibria(d: Derivation) -> list:
 def asked_equilibrium(d: Derivation):
     """The one equilibrium the ω² step asks about, named on the step ("about θ = 0"): the first not known to be
     unstable that exists for every value of the parameters, else the first not known to be unstable.  One box, one
-    equilibrium: ω² at another one is a named mistake, not a right answer (inst-b 10 and 21)."""
+    equilibrium: ω² at another one is a named mistake, not a right answer."""
     found = checkable_equilibria(d)
     return next((e for e in found if e.exists is None and not _inverse(e.position)), found[0])
 

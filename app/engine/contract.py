@@ -368,7 +368,7 @@ def one_equilibria_step(d: Derivation, steps: list[dict[str, Any]]) -> list[dict
     i = keys.index("reduced-equilibria")
     if red.momenta:
         # no steady motion where the system has no equilibrium either: "none" said once, by the Equilibria step
-        # (the cylinder on the wedge: U_eff′ = −m g sin α beside ∂U/∂s = −m g sin α; review prof-q 12)
+        # (the cylinder on the wedge: U_eff′ = −m g sin α beside ∂U/∂s = −m g sin α)
         none = r"\text{no equilibrium}"
         if not red.equilibria and "equilibria" in keys and none in steps[keys.index("equilibria")]["latex"]:
             return [*steps[:i], *steps[i + 1 :]]

@@ -166,7 +166,7 @@ def catalogue(
     # another question's right answer (another coordinate's, a body held still) is named as that, before all
     found = [(m, sentence(m, label)) for m in (*other_coordinates(d, step, k), *held_still(d, step, truth, k))]
     # a solved acceleration turned over whole is named one way on every system, before a rule's cause (the sign of
-    # ∂L/∂q) that an answer typed as q̈ = … never shows (review student-k 5); ω² after its other equilibria
+    # ∂L/∂q) that an answer typed as q̈ = … never shows; ω² after its other equilibria
     whole = [(m, sentence(m, label)) for m in whole_sign(d, step, truth)]
     found += whole if step == "acceleration" else []
     found += [x for x in made if x[0].family not in GENERIC]
@@ -186,7 +186,7 @@ def catalogue(
         found += [(m, sentence(m, label)) for m in bodies_lumped(d)]
     found += [x for x in made if x[0].family in GENERIC]
     if step == "omega_squared":
-        # in the document's letter for the frequency (Ω where ω is a parameter: student-i 6)
+        # in the document's letter for the frequency (Ω where ω is a parameter)
         w = frequency_letter("frequency", d)
         hint = OMEGA_HINT.format(w=w, i=inertia(d).unicode)
         found += [
@@ -218,7 +218,7 @@ def whole_sign(d: Derivation, step: str, truth: sp.Expr) -> list[Mistake]:
     else:
         # ω² = U_eff″/m_eff at the equilibrium: U turned over makes a minimum a maximum and turns ω² over, but only
         # where U_eff is U; where U_eff holds more (the rotating wire's −½ m ω² ρ²), a U turned over alone does not
-        # give the whole answer turned over (student-l 1: it was said so on the rotating parabola)
+        # give the whole answer turned over (it was said so on the rotating parabola)
         w = frequency_letter("frequency", d)
         red = d.reduction
         alone = red is None or not has_u or sp.simplify(red.effective_potential - d.mechanics.U) == 0
@@ -247,7 +247,7 @@ def _kept(
             continue  # terms whose units disagree: the units name it first (app.engine.check)
         fu = mistake.follow_up
         if fu is not None and states_answer(" ".join((hint, mistake.name, mistake.where)), fu):
-            # a question whose answer the line above it already prints is not asked (issue 41: "of speed R α ż",
+            # a question whose answer the line above it already prints is not asked ("of speed R α ż",
             # then "What is the bead's speed along x and y?")
             mistake = replace(mistake, follow_up=None)
         v = values(mistake.expr, groups)

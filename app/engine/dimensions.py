@@ -86,7 +86,7 @@ _SUPER = str.maketrans("-0123456789/", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹ᐟ")
 # Words for a dimension that one step names its own way, before _WORDS: (dimension, words) pairs
 Own = tuple[tuple[Dims, str], ...]
 
-# a lone base unit spelled out: "(m)" beside a mass m reads as "multiply by the mass" (issue 41, 1)
+# a lone base unit spelled out: "(m)" beside a mass m reads as "multiply by the mass"
 _SPELLED = {"m": "metres", "kg": "kilograms", "s": "seconds"}
 
 
@@ -127,8 +127,8 @@ def unit_text(d: Dims) -> str:
     def show(parts: list[tuple[str, Fraction]]) -> str:
         return "·".join(k + (str(v).translate(_SUPER) if v != 1 else "") for k, v in parts)
 
-    # a denominator of several units in brackets, so that none reads as a factor of the top (student-i 5:
-    # "1/m·s²" for 1/(m·s²))
+    # a denominator of several units in brackets, so that none reads as a factor of the top
+    # ("1/m·s²" for 1/(m·s²))
     under = show(bottom) if len(bottom) == 1 else f"({show(bottom)})"
     return (show(top) or "1") + (f"/{under}" if bottom else "")
 
@@ -298,7 +298,7 @@ def mismatch(
     if sp.count_ops(expr) > MAX_NODES:
         return None
     # a bare number beside terms with units, in the whole or in any sum inside it: m g (z + 3) adds 3 to a
-    # length as surely as m g z + 3 adds it to an energy (student-h 3: it read as "another zero of U")
+    # length as surely as m g z + 3 adds it to an energy (it read as "another zero of U")
     bare = next((b for a in sp.preorder_traversal(expr) if (b := _bare_number(a, known, own)) is not None), None)
     if bare is not None:
         return bare
@@ -331,7 +331,7 @@ def mismatch(
 
 
 def _missing_factor(missing: Dims, known: Mapping[sp.Symbol, Dims], own: Own, examples: Iterable[sp.Symbol]) -> str:
-    """A missing factor in words that never read as one of the problem's symbols (issue 41: "a factor of length
+    """A missing factor in words that never read as one of the problem's symbols ("a factor of length
     (m)" read as "multiply by the mass m"): its units spelled out, and a parameter of those units where there is
     one ("a length such as R")."""
     kind = quantity(missing, own)
@@ -367,7 +367,7 @@ def _bare_number(expr: sp.Expr, known: Mapping[sp.Symbol, Dims], own: Own = ()) 
 
 
 def _meant(term: sp.Expr, got: Dims, missing: Dims, whole: sp.Expr, known: Mapping[sp.Symbol, Dims]) -> str | None:
-    """What a term of a sum whose units disagree with the rest was likely meant to be (issue 41, 4): the term times
+    """What a term of a sum whose units disagree with the rest was likely meant to be: the term times
     one name of the sum, once or squared, whose units are exactly the ones it lacks, where that makes the term a
     square (α R² for α² R², a length beside 1; R² α² for R² α² ż², the square of the helix bead's x–y speed R α ż).
     None where no one name does that."""

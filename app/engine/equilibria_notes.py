@@ -1,5 +1,5 @@
 """What the ω² step's answer says beside its formula: whether the equilibrium asked about is stable, and the
-system's other equilibria, each with where it exists and whether it is stable (inst-b 10).
+system's other equilibria, each with where it exists and whether it is stable.
 
 Sentences of plain Unicode (they wrap on a phone, as a formula does not): "θ = 0 is stable while g > Rw²; where
 ω² is negative it is unstable…", "The other equilibria: θ = ±arccos(g/(Rw²)), which exist only when Rw² > g, with

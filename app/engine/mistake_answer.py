@@ -87,7 +87,7 @@ def missing_square(answer: sp.Expr, truth: Values, groups: Groups) -> AnswerSlip
     for part in sp.preorder_traversal(answer):
         if len(seen) >= MAX_CANDIDATES:
             break
-        # a name, a product, or a function of the coordinates (sin θ where T needs sin²θ: student-h 158)
+        # a name, a product, or a function of the coordinates (sin θ where T needs sin²θ)
         if not (part.is_Symbol or part.is_Mul or isinstance(part, sp.Function)) or part in seen or part.free_symbols & rates:
             continue
         if not part.free_symbols or part.could_extract_minus_sign():
@@ -112,7 +112,7 @@ def missing_square(answer: sp.Expr, truth: Values, groups: Groups) -> AnswerSlip
 
 
 def extra_cross_term(answer: sp.Expr, truth: sp.Expr, groups: Groups) -> AnswerSlip | None:
-    """The slip naming a cross term of two rates the correct T has none of (student-h 131: ½ m (ẋ₁ + ẋ₂)² for two
+    """The slip naming a cross term of two rates the correct T has none of (½ m (ẋ₁ + ẋ₂)² for two
     masses that move apart, each with its own ½ m v²), or None."""
     extra = sp.expand(answer - truth)
     if extra == 0 or len(sp.Add.make_args(extra)) != 1:
@@ -138,7 +138,7 @@ def extra_cross_term(answer: sp.Expr, truth: sp.Expr, groups: Groups) -> AnswerS
 def level_body_term(
     answer: sp.Expr, truth: sp.Expr, groups: Groups, level: tuple[tuple[str, sp.Expr], ...]
 ) -> AnswerSlip | None:
-    """The slip naming a term of U for a body whose height never changes (issue 41, 2: −M g X sin α for the wedge,
+    """The slip naming a term of U for a body whose height never changes (−M g X sin α for the wedge,
     which slides on the floor), or None."""
     moving = set(groups.positions)
     # what the answer adds to U, less a constant (U is defined up to one)
@@ -292,7 +292,7 @@ def solved_slip(
                 "the correct answer does not have",
                 "every term of the correct answer is in yours",
             )
-        # the student's terms named; the correct ones kept for the student to ask for (student-l 3)
+        # the student's terms named; the correct ones kept for the student to ask for
         return _slip(
             "terms",
             f"the terms {spoken(answer, factored=False)}",
@@ -323,8 +323,8 @@ def solved_slip(
 
 
 def _square_of_a_sum(bottom: sp.Expr, right: sp.Expr) -> tuple[str, str] | None:
-    """A denominator (a + b)² where a² + b² belongs, or the other way round: (1 + αR)² for the helix's 1 + α²R²
-    (review student-m 7), named with the cross term 2ab that tells them apart; None otherwise."""
+    """A denominator (a + b)² where a² + b² belongs, or the other way round: (1 + αR)² for the helix's 1 + α²R²,
+    named with the cross term 2ab that tells them apart; None otherwise."""
     for yours, correct, words in ((bottom, right, "the square of a sum for a sum of squares"),
                                   (right, bottom, "a sum of squares for the square of a sum")):  # fmt: skip
         square = sp.factor(yours)
@@ -356,7 +356,7 @@ def _denominator_why(
 ) -> str:
     """What a solved answer's denominator is, in the step's own terms: an ω²'s the effective mass; a single
     equation's acceleration its coefficient of q̈; coupled accelerations' (a sum) what solving them together gives,
-    and the body whose mass the answer leaves out, where one does (review student-m 7: the pulley's m₂)."""
+    and the body whose mass the answer leaves out, where one does (the pulley's m₂)."""
     if frequency is not None:
         # ω² = U_eff″/m_eff at the equilibrium: one coordinate, no equations to solve together
         return (

@@ -143,7 +143,7 @@ def _equation_mistakes(d: Derivation, k: int) -> Iterator[Mistake]:
             if rate is not None
             else None,
         )
-    # every velocity-squared term left out at once (issue 41, 4: the rotating wire's 4 m α² ρ ρ̇²): the chain rule's
+    # every velocity-squared term left out at once (the rotating wire's 4 m α² ρ ρ̇²): the chain rule's
     # terms Σ_j (∂p_k/∂q_j) q̇_j of d/dt p_k, less the velocity part of ∂T/∂q_k they partly cancel
     chain = sp.expand(sum((sp.diff(p, q) * qd for q, qd in zip(table.q, table.qd, strict=True)), sp.Integer(0)))
     rates = set(table.qd)
@@ -287,7 +287,7 @@ def _stretch(d: Derivation, term: sp.Expr, q: sp.Symbol) -> tuple[sp.Expr, sp.Ex
 
 
 def _joining_spring(d: Derivation, term: sp.Expr, q: sp.Symbol, over: sp.Expr = sp.S.One) -> tuple[str, str] | None:
-    """(name, where) of the force left out from a spring that joins q to another coordinate (student-l 5: "the
+    """(name, where) of the force left out from a spring that joins q to another coordinate ("the
     force from spring energy (its ∂/∂x₁)" did not say which spring): the coupling spring, by its force (over
     ``over``, the mass, in an acceleration); None for any other term of U."""
     held = [c for c in d.table.q if term.has(c)]
@@ -396,7 +396,7 @@ def omega_mistakes(d: Derivation, asked: list) -> Iterator[Mistake]:
             continue
         at = f"{r} = {unicode_text(e.position)}"  # θ = π, θ = arccos(g/(Rw²)): as the step's answer prints it
         # the other equilibrium's ω² the asked one's turned over (−g/R beside g/R): a U of the wrong sign gives it
-        # too, so that cause is said beside it (review student-k 5)
+        # too, so that cause is said beside it
         # (only where U_eff is U: where it holds more, a U turned over alone gives another answer)
         alone = d.mechanics.U is not None and sp.simplify(red.effective_potential - d.mechanics.U) == 0
         turned = alone and any(

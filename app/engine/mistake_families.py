@@ -68,7 +68,7 @@ def states_answer(words: str, fu: FollowUp) -> bool:
 class Correct:
     """The correct part a mistake's name points at (the denominator, the stretch, a rod's I about its end), kept
     out of the name: the verdict names the place and the kind of slip, and the student opens this one part only
-    by asking for it (student-l 3: "the denominator M + 4 m₁, where the correct one is …" gave the answer away)."""
+    by asking for it ("the denominator M + 4 m₁, where the correct one is …" gave the answer away)."""
 
     what: str  # the part in words, after "the correct": "denominator", "stretch", "moment of inertia about the end"
     expr: sp.Expr
@@ -96,7 +96,7 @@ class Mistake:
 
 # How a family's slip changes the answer: it leaves a piece out, or it adds one (a piece counted again). A family's
 # name says which piece; the words the student reads say what happened to it ("the cross term in Ẋ Ḋ left out"),
-# since a bare piece reads as one the student wrote (student-l 4: "The mistake: the cross term in Ẋ Ḋ", where the
+# since a bare piece reads as one the student wrote ("The mistake: the cross term in Ẋ Ḋ", where the
 # answer had no cross term). The one home of that rule, for every family of every step.
 LEAVES_OUT = frozenset({
     "velocity_part", "moving_constraint", "body_forgotten", "velocity_axis", "cross_term", "part_left_out",
@@ -188,7 +188,7 @@ def spoken(expr: sp.Expr, coordinates: Iterable[sp.Symbol] = (), factored: bool 
 
 
 # a mistake's name that already says how its piece is wrong ("the ½ of ½ k × stretch² left out of the term k x₂²"):
-# a sentence composed around it says "with …" or "has …", never "leaves out … left out" (issue 41, 3)
+# a sentence composed around it says "with …" or "has …", never "leaves out … left out"
 _SAYS_HOW = re.compile(r"\b(left out|leaves out|missing|without|swapped|twice|reversed|added)\b")
 
 
@@ -485,7 +485,7 @@ def _cross_mistakes(d: Derivation, T: sp.Expr) -> Iterator[Mistake]:
 
 def bodies_lumped(d: Derivation) -> Iterator[Mistake]:
     """T as one body of the total mass moving with the sum of the bodies' velocities, ½ (m₁ + m₂)(ẋ₁ + ẋ₂)², where
-    each body has its own ½ m v² (student-l 5).  (Tried after the pieces of T, and never carried into a later
+    each body has its own ½ m v².  (Tried after the pieces of T, and never carried into a later
     step.)"""
     m = d.mechanics
     if m.T is None or not m.velocities or len(m.masses) < 2:
@@ -558,8 +558,8 @@ def _in(term: sp.Expr, d: Derivation) -> str:
 
 
 def _whose(term: sp.Expr, kind: str, d: Derivation) -> str:
-    """A term of U in words, saying whose energy it is where the system has others of its kind (student-h 60,
-    126: "the gravitational energy in y₁ and y₂" named the pulley's end masses' coordinates, not the middle mass
+    """A term of U in words, saying whose energy it is where the system has others of its kind
+    ("the gravitational energy in y₁ and y₂" named the pulley's end masses' coordinates, not the middle mass
     whose term was left out): "the gravitational energy of the middle mass", "the energy of the spring κ"; else
     the kind alone."""
     names = {s.name for s in term.free_symbols}
@@ -583,7 +583,7 @@ def potential_mistakes(d: Derivation) -> Iterator[Mistake]:
     terms = [t for t in sp.Add.make_args(U) if t.free_symbols & dynamic]
     halves = [t for t in terms if kind_of_term(t, d) == "the spring energy" and t.as_coeff_Mul()[0].q == 2]
     if len(terms) > 1 and len(halves) == len(terms):
-        # every spring's ½ lost at once (student-i 3: k x₁² + k x₂² + κ (x₂ − x₁)² got the step's rule)
+        # every spring's ½ lost at once (k x₁² + k x₂² + κ (x₂ − x₁)² got the step's rule)
         yield Mistake(
             "potential.spring_half.all",
             "doubled",
@@ -663,7 +663,7 @@ def _weights(d: Derivation) -> tuple[sp.Symbol, list[tuple[str, sp.Expr, tuple]]
 
 
 def height_mistakes(d: Derivation) -> Iterator[Mistake]:
-    """U = Σ m g z with each body's height written wrong (student-l 5): its x or y taken for its height (the helix
+    """U = Σ m g z with each body's height written wrong: its x or y taken for its height (the helix
     bead's R sin(α z) for z), or a sine or cosine of its height squared (−m g R cos²θ), where a height holds each
     to the first power; named from the positions, never by printing U.  (Tried after the pieces of U, and never
     carried into a later step: a swapped sine there is named as a swap, a number off as a number.)"""

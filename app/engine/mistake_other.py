@@ -91,7 +91,7 @@ def held_still(d: Derivation, step: str, truth: sp.Expr, k: int | None = None) -
             continue
         if held and step == "acceleration":
             # the carrier's acceleration → 0 as M → ∞: the answer of the carrier held fixed (the fixed wedge's
-            # s̈ = 2g sin α/3), where its recoil couples the equations (prof-q 1)
+            # s̈ = 2g sin α/3), where its recoil couples the equations
             equations = " and ".join(unicode(q) for q in d.table.names)
             still.append(Mistake(
                 f"{key}.held_still.{mass_name}", "limit", f"the acceleration with the {body} held fixed ({shown} → ∞)",
@@ -128,7 +128,7 @@ def held_still(d: Derivation, step: str, truth: sp.Expr, k: int | None = None) -
 
 def _own_equation_alone(d: Derivation, k: int) -> Iterator[Mistake]:
     """q̈_k solved from q_k's own equation alone, every other acceleration in it set to zero, as if what those
-    coordinates move were held still (student-l 5: the pulley's ÿ₁ as an Atwood machine with the right mass
+    coordinates move were held still (the pulley's ÿ₁ as an Atwood machine with the right mass
     fixed, g (M/2 − m₁)/(m₁ + M/4)): where the equations are coupled through their accelerations."""
     eqs, t = d.equations, d.table
     others = [j for j in range(len(t.q)) if j != k and eqs.mass_matrix[k, j] != 0]

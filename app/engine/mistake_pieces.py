@@ -208,7 +208,7 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
                       why or LEFT_OUT_WHY.get(step, "this term belongs in the answer"), truth - p)  # fmt: skip
         if step == "hamiltonian" and not p.has(*rates):
             # a term of U keeps its sign in h = T₂ − T₀ + U; a term of T free of the velocities (T₀) changes it
-            # (student-i 2: the sign of the rotating wire's m g α ρ² was explained by the centrifugal term's reason)
+            # (the sign of the rotating wire's m g α ρ² was explained by the centrifugal term's reason)
             u_terms = set(sp.Add.make_args(sp.expand(d.mechanics.U))) if d.mechanics.U is not None else set()
             from_u = bool(u_terms) and set(sp.Add.make_args(sp.expand(p))) <= u_terms
             yield Mistake(
@@ -240,7 +240,7 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
                 else "check which component of the position has the sine and which the cosine, at a small angle"
             )
             # a solved acceleration's quotient whose numerator a swap leaves as it is (sin α cos α): the swap is in
-            # the denominator, the inertia T gives, not in a component of gravity (student-l 2: it was said so)
+            # the denominator, the inertia T gives, not in a component of gravity (it was said so)
             num, den = sp.fraction(sp.factor(p))
             if step == "acceleration" and den != 1 and sp.simplify(swap_sin_cos(num) - num) == 0 \
                     and sp.simplify(swap_sin_cos(den) - den) != 0:
@@ -265,13 +265,13 @@ def piece_mistakes(d: Derivation, step: str, k: int | None, truth: sp.Expr) -> I
             )  # fmt: skip
         # the student's own piece, twice the truth's, in the factored form a textbook prints (k (r − l)²); where
         # a constant is no part of the comparison, without the group's constant terms, which the student's answer
-        # need not have (the pulley's −M g (y₁ + y₂), never −M (y₁ + y₂ + 2 c) g: review student-m 6)
+        # need not have (the pulley's −M g (y₁ + y₂), never −M (y₁ + y₂ + 2 c) g)
         varying = group
         if RELATIONS.get(step) == "constant":
             varying = sp.Add(*(t for t in sp.Add.make_args(sp.expand(group)) if t.free_symbols & moving)) or group
         yours = _factored(2 * varying)
         yield Mistake(
-            # (in T a squared sum is a body's ½ m v², never a spring: student-i 1, the pulley's M (ẏ₁ + ẏ₂)²/4)
+            # (in T a squared sum is a body's ½ m v², never a spring: the pulley's M (ẏ₁ + ẏ₂)²/4)
             f"{base}.group_doubled.{s.name}", "doubled",
             _doubled_name(name, yours, group, step != "kinetic" and _spring(group, s)), group,
             _half_why(step, group, s), truth + group,
@@ -284,7 +284,7 @@ _DOTTED = {"x": "ẋ", "y": "ẏ", "z": "ż"}
 
 
 def _speed_doubled(d: Derivation, mass: sp.Symbol) -> str:
-    """Why a body's ½ m v² is four times too big, in its own velocity where it moves along one line (issue 41, 5:
+    """Why a body's ½ m v² is four times too big, in its own velocity where it moves along one line (
     the pulley's middle mass moves at (ẏ₁ + ẏ₂)/2, half the sum of the end masses' speeds)."""
     t = d.table
     for particle, r in zip(d.system.particles, d.mechanics.positions, strict=False):
@@ -340,7 +340,7 @@ def _body_cross_why(
         # the components of v_cm whose rate has both a q̇_a part and a q̇_b part
         if not any(sp.diff(c, qa) != 0 and sp.diff(c, qb) != 0 for c in b.centre):
             continue
-        # where the term comes from, never the components themselves: v_cm² is the answer's larger part (prof-r 3)
+        # where the term comes from, never the components themselves: v_cm² is the answer's larger part
         return (
             f"the cross term comes from the {b.body.label or b.body.kind}'s ½ {spoken(b.mass)} v_cm²: write v⃗_cm "
             f"component by component ({spoken(a)} and {spoken(b_rate)} both appear in one of them), square each and "
@@ -433,13 +433,13 @@ def _left_out(
     if rates:
         monomial = sp.Mul(*(x for x in sp.Mul.make_args(p) if x.has(*t.qd, *t.qdd)))
         return f"a {spoken(monomial)} term left out", None
-    # the term itself, as a textbook prints it (κ x₂/m, −k l₀/m₁, m Ẍ), never a list of its letters (issue 41, 1)
+    # the term itself, as a textbook prints it (κ x₂/m, −k l₀/m₁, m Ẍ), never a list of its letters
     return f"the term {spoken(short_form(p), t.q)} left out", None
 
 
 def _weight_left_out(d: Derivation, p: sp.Expr, truth: sp.Expr, k: int) -> tuple[str, str] | None:
     """A velocity-free term of q_k's equation holding g and one body's mass alone, left out: that body's weight,
-    which acts on q_k too (issue 41, 4: the lower bob's m₂ g l₁ sin θ₁ in the equation for θ₁)."""
+    which acts on q_k too (the lower bob's m₂ g l₁ sin θ₁ in the equation for θ₁)."""
     t = d.table
     if not any(s.name == "g" for s in p.free_symbols):
         return None
@@ -460,7 +460,7 @@ def _weight_left_out(d: Derivation, p: sp.Expr, truth: sp.Expr, k: int) -> tuple
 
 def _units_why(d: Derivation, step: str, k: int | None, p: sp.Expr, truth: sp.Expr) -> Callable[[sp.Expr], str | None]:
     """Why a factor f with units is missing from the piece p, where p is the whole answer (a longer answer short of
-    it has terms whose units disagree, named before any mistake), said in units (student-l 9: −g sin θ for θ̈ is an
+    it has terms whose units disagree, named before any mistake), said in units (−g sin θ for θ̈ is an
     acceleration, where θ̈ is a squared rate): a function of f, None for a factor without units."""
     what = unicode(d.table.qdd[k].name) if step == "acceleration" and k is not None else _label(step)
     known = system_dimensions(d) if what and sp.expand(p - truth) == 0 else {}
@@ -578,7 +578,7 @@ def _sums(truth: sp.Expr, base: str, springs: bool, coordinates: Iterable[sp.Sym
             if term.could_extract_minus_sign():
                 term = -term  # the sign of θ₂, not of −θ₂
             # the sums without a common number (κ (2 x₁ − 2 x₂)/2, as ∂/∂x₁ of ½ κ (x₂ − x₁)² leaves it, is
-            # κ (x₁ − x₂)): the student never wrote the 2 (review student-m 2)
+            # κ (x₁ − x₂)): the student never wrote the 2
             content = a.primitive()[0]
             term = term / content
             why = (
@@ -597,7 +597,7 @@ def _sums(truth: sp.Expr, base: str, springs: bool, coordinates: Iterable[sp.Sym
 
 
 def _stretch_parts(d: Derivation, truth: sp.Expr, base: str) -> Iterator[Mistake]:
-    """One end's coordinate left out of a spring's stretch between two moving ends (issue 41, 1: ½ κ x₂² for the
+    """One end's coordinate left out of a spring's stretch between two moving ends (½ κ x₂² for the
     middle spring, whose stretch is x₂ − x₁): the spring named by its stiffness where the system has several."""
     q = d.table.q
     stiff = [p.name for p in d.system.parameters if p.unit.replace(" ", "") in STIFFNESS_UNITS]
@@ -818,7 +818,7 @@ def rigid_alternatives(d: Derivation, known) -> list[tuple[str, str, sp.Expr, sp
                         out.append((f"rigid.rod_taken_as_{kind}", f"{_WRONG_INERTIA} I_cm of a {_KIND_WORDS[kind]}, "
                                     f"{spoken(wrong)}, in place of a {_KIND_WORDS['rod']}'s",
                                     dT(wrong + m * (L / 2) ** 2), sp.Integer(0), centre))  # fmt: skip
-                # its I_cm behind the disclosure, as on the other rigid bodies' pages (prof-r 3), never in the name
+                # its I_cm behind the disclosure, as on the other rigid bodies' pages, never in the name
                 out.append(("rigid.rod_spin_forgotten", f"only the motion of the rod's centre, {centre_only}: its "
                             f"spin about the centre, ½ I_cm {spoken(v)}², is forgotten",
                             dT(m * (L / 2) ** 2), sp.Integer(0), centre))  # fmt: skip
@@ -898,7 +898,7 @@ def _declared_body_alternatives(d: Derivation) -> list[tuple[str, str, sp.Expr, 
 
 def inertia_in_potential(d: Derivation, truth: sp.Expr, known) -> Iterator[Mistake]:
     """U times a pure-number sum that multiplies a velocity squared in T (the helix's 1 + R² α²): a factor of
-    inertia, which a constraint's extra motion adds to T, put into U as if it added weight (review student-k 4). A
+    inertia, which a constraint's extra motion adds to T, put into U as if it added weight. A
     sum with units (a mass M + 4 m₁) in U is a units slip, named so first."""
     T, rates = d.mechanics.T, d.table.qd
     if T is None or truth == 0 or not truth.free_symbols & set(d.table.q):
@@ -943,7 +943,7 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
     if step in ("kinetic", "potential"):
         for key, name, dT, dU, correct in rigid:
             change = dT if step == "kinetic" else dU
-            # the reason is the step's own: T's for a slip of T, U's for a slip of U (review student-k 6)
+            # the reason is the step's own: T's for a slip of T, U's for a slip of U
             why = (
                 rigid_kinetic_rule(d, known)
                 if step == "kinetic"
@@ -1011,11 +1011,11 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
         elif step == "omega_squared":
             if name.startswith(_WRONG_INERTIA):
                 # another kind's I_cm only scales ω² by a number, which has many causes (the rod's 2g/(3l), a disc's
-                # I_cm, is also the number 2/3 upside down: review student-k 1): named at T and the equation alone
+                # I_cm, is also the number 2/3 upside down): named at T and the equation alone
                 continue
             for w in _omega_changed(d, dT, dU, asked):
                 family = "rigid" if key.startswith("rigid") else "travelled"
-                w2 = f"{frequency_letter('frequency', d)}²"  # Ω² where ω is a parameter (student-i 6)
+                w2 = f"{frequency_letter('frequency', d)}²"  # Ω² where ω is a parameter
                 yield Mistake(f"omega_squared.{key}", family, name, None,
                               f"your {w2} follows from it: {w2} is the effective potential's second derivative over "
                               f"the {inertia(d).words}, at the equilibrium", w, correct=correct)  # fmt: skip
@@ -1048,7 +1048,7 @@ def _terms_lost(
 ) -> tuple[str, None, str] | None:
     """A slip of T or U that, carried into the equation of q_k, only leaves some of the equation's terms out: named
     by the terms of this equation that are missing, with where they come from, and the earlier step blamed only
-    conditionally and second (review student-m 3: a correct T was blamed for an equation's own dropped terms).
+    conditionally and second (a correct T was blamed for an equation's own dropped terms).
 
     ``change`` is the equation's change, E(ΔL) with ΔL = ΔT − ΔU; ``slip`` is "a T that …" or "a U …"."""
     lost = sp.expand(-change)
@@ -1118,7 +1118,7 @@ def _one_term_doubled(m: Mistake, U: sp.Expr) -> bool:
 
 
 def _force_twice(d: Derivation, k: int, truth: sp.Expr, u: sp.Expr) -> Iterator[Mistake]:
-    """A force from one term u of U written twice in the equation (issue 41, 3: m ẍ₂ = −k x₂ − κ (x₂ − x₁) − k x₂).
+    """A force from one term u of U written twice in the equation (m ẍ₂ = −k x₂ − κ (x₂ − x₁) − k x₂).
     The same equation follows from a U with u doubled (a spring's ½ lost), so both causes are said."""
     q = d.table.q[k]
     # the generalized force of u along q is −∂u/∂q; the equation d/dt(∂L/∂q̇) − ∂L/∂q holds +∂u/∂q once

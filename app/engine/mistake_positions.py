@@ -48,7 +48,7 @@ def component_keys(d: Derivation) -> list[tuple[str, int, int]]:
     constraints' names, ``app.engine.constraints.cartesian_symbols``). A component that is a constant (a
     planar figure's y = 0, a fixed pulley's x) has nothing to derive and is left out; so is a carrier's component
     that is a coordinate itself (the wedge's x = X), which the carried body's own component holds (its x is
-    X + …): that one is asked, where the carrier's motion enters (review prof-q 3)."""
+    X + …): that one is asked, where the carrier's motion enters."""
     found = d.mechanics.positions and points(d)
     moving = (*d.table.q, d.table.t)
     out = []

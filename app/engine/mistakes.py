@@ -63,7 +63,7 @@ SPRING_CLAUSES = (
 )
 
 
-# the step's rule for U names gravity first; where the system has no g (masses on a horizontal line: student-i 3)
+# the step's rule for U names gravity first; where the system has no g (masses on a horizontal line)
 # it names the springs alone
 GRAVITY_CLAUSE = (
     "m g times the height of each mass above a level of your choice (height measured upward, against gravity), "
@@ -80,7 +80,7 @@ def has_gravity(d: Derivation) -> bool:
 
 def why_no_gravity(d: Derivation) -> str:
     """Why a system without g has no gravity term, where its bodies show it: every height stays the same, so the
-    weights do no work (issue 41, 4: the coupled oscillators' masses on a horizontal line); "" where they do not."""
+    weights do no work (the coupled oscillators' masses on a horizontal line); "" where they do not."""
     moving = {*d.table.q, d.table.t}
     positions = d.mechanics.positions
     if has_gravity(d) or not positions or any(r[2].free_symbols & moving for r in positions):
@@ -132,7 +132,7 @@ POINTERS = {
     "acceleration": "Write the Euler–Lagrange equations and solve them for q̈; when coordinates are coupled (a "
     "mass matrix with off-diagonal terms), solve the equations together.",
     "hamiltonian": "h = Σ p_k q̇_k − L, written in the coordinates and velocities.",
-    # {w}: the document's letter for the frequency (ω, or Ω where ω is a parameter: student-i 6), formatted where read
+    # {w}: the document's letter for the frequency (ω, or Ω where ω is a parameter), formatted where read
     "omega_squared": "About a stable equilibrium, where the effective potential has zero slope, {w}² is the effective "
     "potential's second derivative there divided by the {inertia} (the coefficient of ½ q̇² in T).",
 }

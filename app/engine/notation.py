@@ -486,7 +486,7 @@ _GREEK_AXES = {"x": "xi", "y": "eta", "z": "zeta"}
 def cartesian_names(names: list[str], taken: set[str]) -> dict[str, str]:
     """The name each body's Cartesian component is printed by (x1 → x1, or → xi1): x, y, z, or ξ, η, ζ for all of
     them where the system already prints one of their names (the pulley's coordinates are its end masses' heights
-    y₁, y₂: prof-h 2), so that ẏ₁ never means two things. ``taken``: the LaTeX the document prints for its own
+    y₁, y₂), so that ẏ₁ never means two things. ``taken``: the LaTeX the document prints for its own
     names. One home: the constraint steps (report_members) and the Symbols table both read it."""
     greek = any(latex(n) in taken or n in taken for n in names)
     return {n: (_GREEK_AXES[n[0]] + n[1:] if greek else n) for n in names}

@@ -99,7 +99,7 @@ def _inner_term_as_typed(
     mistake: Mistake, hint: str, answer: sp.Expr, scale: sp.Expr, coordinates: tuple[sp.Symbol, ...]
 ) -> tuple[Mistake, str]:
     """The sum's term of the wrong sign as the answer holds it multiplied out: (k + κ) x₁ + κ x₂ for
-    k x₁ + κ (x₁ − x₂) is "your term +κ x₂, which should be −κ x₂" (review student-m 2)."""
+    k x₁ + κ (x₁ − x₂) is "your term +κ x₂, which should be −κ x₂"."""
     right, wrong = mistake.piece, mistake.expr
     if right is None or wrong is None or " (" not in mistake.name:
         return mistake, hint

@@ -118,7 +118,7 @@ def _aligned(rows: list[str]) -> str:
         return rows[0]
     # rows holding a block of lines (an equation broken across lines) are set flush left, not at their '=';
     # so are equations that each read "… = 0" (Euler–Lagrange equations): aligned at "= 0" their left sides
-    # start at ragged places (prof-c S12), flush left they read as a textbook stacks them
+    # start at ragged places, flush left they read as a textbook stacks them
     flush = any(row.startswith("\\begin{aligned}") for row in rows) or all(
         row.endswith(" = 0") and row.count(" = ") == 1 for row in rows
     )
@@ -749,7 +749,7 @@ def build_steps(d: Derivation) -> list[dict[str, str]]:
 def _effective_potential_why(d: Derivation) -> str:
     """Where U_eff comes from, in words, by case: cyclic coordinates held at their momenta, a moving constraint
     (a part T₀ of T without velocities), both, or neither (the bead on a spun hoop has no cyclic coordinate:
-    its U_eff is U − T₀, prof-l 5)."""
+    its U_eff is U − T₀)."""
     red = d.reduction
     assert red is not None
     mech, table = d.mechanics, d.table

@@ -131,7 +131,7 @@ def hamilton_json(d: Derivation, ham: Hamilton) -> dict[str, Any]:
 
 def _figures(x: float) -> str:
     """A number found numerically, as a textbook prints a measured-looking value: four significant figures (an
-    equilibrium's θ = 2.486 and held p_φ = 1.307, a mode's ω², prof-k 13: not θ = 2.48602, p_φ = 1.30733)."""
+    equilibrium's θ = 2.486 and held p_φ = 1.307, a mode's ω²: not θ = 2.48602, p_φ = 1.30733)."""
     return f"{x:.4g}"
 
 

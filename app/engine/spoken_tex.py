@@ -1,4 +1,4 @@
-"""A formula the tutor's words quote, typeset as it is printed there (issue 41, student-l 6, 7).
+"""A formula the tutor's words quote, typeset as it is printed there.
 
 The words of a verdict print a formula in Unicode, in the order the student wrote it ("your term
 −m g cos(α) sin(α)/(M + m cos²(α))", "I = M l² in place of …", "ω² = U_eff″/m_eff").  A page sets those words in

@@ -169,7 +169,7 @@ def rail_two_body(p: dict[str, float], q: dict[str, float], marks: Sequence[str]
 def pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) -> Svg:
     svg = Svg()
     ceiling = 22.0
-    # every strand vertical, as the constraint assumes (prof-k 3: a V of slanted strands has loop length
+    # every strand vertical, as the constraint assumes (a V of slanted strands has loop length
     # 2√(a² + h²), not linear in Y): the end masses hang d either side of the middle, the movable pulley's two
     # strands rise straight to the fixed pulleys, so each fixed pulley spans from an end mass's strand to one of
     # the movable pulley's, radius (d − r)/2
@@ -182,7 +182,7 @@ def pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) 
         svg.line(cx, ceiling, cx, top, INK, 1.5)
         svg.circle(cx, top, big, fill="#eef1f4")
     # the end masses above the dashed line where U = 0 (y₁, y₂ > 0) and M below it: the string makes
-    # Y = −(y₁ + y₂)/2 − c, negative while the end masses are above the line (prof-h 2: all three were drawn above it)
+    # Y = −(y₁ + y₂)/2 − c, negative while the end masses are above the line (all three were drawn above it)
     base = 150.0
     y1, y2, centre = 118.0, 100.0, 221.0
     ym = centre - 22 - r  # the movable pulley's centre, M's box hung below it
@@ -211,7 +211,7 @@ def pulley(p: dict[str, float], q: dict[str, float], marks: Sequence[str] = ()) 
     svg.arrow(right + 30, base, right + 30, y2, color=ACCENT)
     svg.text(right + 40, (base + y2) / 2, "y₂", ACCENT, 16)
     # the third height, Y, of M's centre, measured upward like the others: negative, so the arrow from the line
-    # down to M is −Y, a positive depth, and is labelled so (prof-l 2: "Y" on a downward arrow invites U = −MgY)
+    # down to M is −Y, a positive depth, and is labelled so ("Y" on a downward arrow invites U = −MgY)
     svg.arrow(mid + 34, base, mid + 34, centre, color=ACCENT)
     svg.line(mid + 17, centre, mid + 40, centre, GUIDE, 1, dash=True)
     svg.text(mid + 50, (base + centre) / 2, "−Y", ACCENT, 16)

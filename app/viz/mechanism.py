@@ -429,7 +429,7 @@ def _inferred(
     if found:
         # the positions prove a distance fixed, not what holds it: a rod, a taut string or a hoop the bead rides
         # on are the same to the equations, and one particle at a fixed distance from a point may sweep a whole
-        # sphere, so the drawing shows the distance (a rod) and the caption says so (prof-l 5)
+        # sphere, so the drawing shows the distance (a rod) and the caption says so
         what += (
             ", each distance that stays fixed drawn as a rod (whatever holds it there: a rod, a taut string, "
             "or a hoop the bead rides on)" + (" and the fixed pivot" if pivot else "")
@@ -450,8 +450,8 @@ def _undrawn(
     particles: Sequence[tuple[str, Sequence[str]]], coordinates: Sequence[str], found: Sequence[tuple[Any, Any, bool]]
 ) -> str:
     """A body that moves along more axes than it has coordinates is held on a surface (a cone's) or a curve (a
-    wire's) that the positions give only through the coordinates: the picture cannot draw it, and says so
-    (prof-n 9). A body held by a distance drawn as a rod is left out: the rod shows what holds it."""
+    wire's) that the positions give only through the coordinates: the picture cannot draw it, and says so.
+    A body held by a distance drawn as a rod is left out: the rod shows what holds it."""
     held = {i for a, b, _ in found for i in (a, b) if i is not None}
     moving_names = set(coordinates) | {"t"}
     kinds = set()

@@ -21,7 +21,7 @@ _SUBSCRIPTED = re.compile(
 )
 _PRIMES = {"''": "″", "'": "′", "″": "″", "′": "′", None: ""}
 
-# a formula's sign stays with what it signs (prof-k 12: a phone broke "Y = −" | "(y₁ + y₂)/2 − c"): a minus sign
+# a formula's sign stays with what it signs (a phone broke "Y = −" | "(y₁ + y₂)/2 − c"): a minus sign
 # written against its term (−(y₁ …), −c) is joined to it by a word joiner, U+2060, and to a relation before it
 # ("= −", "< −") by a no-break space; a minus between spaced terms (a − b) breaks as a word would
 _SIGNED = re.compile(r"(?:([=<>≈≤≥]) )?−(?=[^\s])")

@@ -52,7 +52,7 @@ export function verdict(f, { q, label, unit, rateUnit, T, steps: gridSteps, star
     const what = f.kind === "minimum"
       ? "It is a minimum of the discrete action: every small change of the path raises S."
       : `It is a saddle of the discrete action, not a minimum: ${f.negative_directions} direction${f.negative_directions > 1 ? "s" : ""} of change lower${f.negative_directions > 1 ? "" : "s"} S, because τ = ${fmt(T)} s is past the kinetic focus.`;
-    // what a second-year needs first (prof-l 8): how close the relaxed path is to the true motion, the shooting
+    // what a second-year needs first: how close the relaxed path is to the true motion, the shooting
     // solution's distance from it (the panel's own number), and what kind of stationary point it is
     const text = `The relaxed path agrees with the true motion to within ${bound(f.difference, unit)}: it is the path of a true motion between these ends, ${start}. ${what}`;
     // the method's account, behind "How this was computed"

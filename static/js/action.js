@@ -51,7 +51,7 @@ export class ActionPanel {
     this.plot = section.querySelector(".plot");
     this.readout = proseReadout(section.querySelector(".readout"));
     // how a found path was computed (Newton's steps, the grid, shooting), behind a disclosure under the readout's
-    // lead (prof-l 8); any other sentence in the readout hides it
+    // lead; any other sentence in the readout hides it
     this.method = Object.assign(document.createElement("details"), { className: "action-method", hidden: true });
     this.method.append(Object.assign(document.createElement("summary"), { textContent: "How this was computed" }));
     this.methodText = proseReadout(this.method.appendChild(document.createElement("p")));

@@ -1,6 +1,6 @@
 /**
  * answer-box.js — the one box an answer is typed in: a practice step's, its follow-up question's and a class
- * page's step (issue 41, 4).  A one-line input scrolls a long answer sideways on a phone and hides its start;
+ * page's step.  A one-line input scrolls a long answer sideways on a phone and hides its start;
  * this box is a textarea of one line that grows to as many lines as the answer needs, so all of it shows.
  * Enter checks, as it did in the one-line input (``onEnter``, by default the box's form is submitted); a line
  * break pasted in becomes a space, as the parser reads one, so nothing typed is lost.

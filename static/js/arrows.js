@@ -111,8 +111,8 @@ export function drawHandle(ctx, h, dpr) {
 export const HANDLE_LABEL = "drag: initial velocity";
 
 /** Points along every rod, string and spring at the first instant, about 8 CSS pixels apart, the fixed points
- * (pivots, anchors), each wheel's hub and rim (a pulley: prof-k 12, the words lay across the movable one on a
- * phone), the fixed solids' outlines and insides (a wedge: prof-l 7, the words sat over it on a phone) and the
+ * (pivots, anchors), each wheel's hub and rim (a pulley: the words lay across the movable one on a
+ * phone), the fixed solids' outlines and insides (a wedge: the words sat over it on a phone) and the
  * curves (the ground and its hatching, wires, guides): what the handle's words should not cover where there is
  * room (handleWordsBox). */
 export function linePoints(player, dpr) {
@@ -174,9 +174,9 @@ export const HANDLE_WORDS_REACH = 40;
  * handle and above it, left, centred; the same below it; then one to three lines higher or lower; then any place
  * whose nearest point is within HANDLE_WORDS_REACH of the handle, nearest first — that stays inside the canvas and
  * covers no body (``placed``, the bodies' centres) — a body at the top of the view, the double pendulum's lower bob
- * at 2 rad, was hidden under them (prof-h 7) — nor the handle and its arrow, and, where a place allows it, nothing
+ * at 2 rad, was hidden under them — nor the handle and its arrow, and, where a place allows it, nothing
  * drawn (``lines``, from linePoints: the physical pendulum's rod ran under them on a phone, the pulley's strings and
- * the wedge on a phone, prof-l 7). Where one line finds no such place, two lines are tried; where neither does, the
+ * the wedge on a phone). Where one line finds no such place, two lines are tried; where neither does, the
  * place on one line that covers the fewest points drawn. One home: the words (labelHandle) and the bodies' labels
  * that keep clear of them (bodies.js) both place them here.
  */

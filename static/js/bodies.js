@@ -46,7 +46,7 @@ export function drawLabels(player, ctx, i, dpr, placed, grip) {
   // bodies and stays inside the canvas, with a white halo so that bodies that meet keep readable labels
   const segments = player.spec.links.map((link) => [player.at(link.from, i), player.at(link.to, i)]);
   // the outlines of the fixed solids (a wedge's slope) and of the blocks: a label with its white halo over a
-  // slope hides the ground a block stands on, and the block looks perched on a corner (prof-h 8)
+  // slope hides the ground a block stands on, and the block looks perched on a corner
   const edges = [];
   const outline = (corners) => corners.forEach((c, k) => edges.push([c, corners[(k + 1) % corners.length]]));
   for (const solid of player.spec.solids || []) outline(solid.corners.map((p) => player.at(p, i)));

@@ -109,7 +109,7 @@ export function alignedRows(tex) {
     .flatMap((r) => (r.includes(OPEN) ? alignedRows(r) : [r]));
 }
 
-// the space between the rows of a stacked display that holds a fraction (prof-l 9: the double pendulum's θ̈₁ and θ̈₂,
+// the space between the rows of a stacked display that holds a fraction (the double pendulum's θ̈₁ and θ̈₂,
 // each a tall fraction, touched: θ̈₁'s denominator on θ̈₂'s numerator); a textbook leaves a clear gap there
 export const ROW_GAP = "0.6em";
 
@@ -170,7 +170,7 @@ function relationAt(row, i) {
 /** A row with a line break allowed after each wide space at its top level (\quad before "(string tension)",
  *  between two equations of one row), where KaTeX by itself breaks only after relations and operators, and before
  *  a joining word of prose (\text{ with }: "for every δq" / "with δq(t₀) = δq(t₁) = 0").  A line never ends in a
- *  relation (prof-l 7: no "=" at a line's end, its "0" alone on the next): each relation holds on to what
+ *  relation (no "=" at a line's end, its "0" alone on the next): each relation holds on to what
  *  follows it, and a second relation of the same equation may begin the next line instead, as a textbook
  *  continues a display ("= …" under the first).  So a value beside what it evaluates goes on to the next line
  *  with its ≈ before it ("≈ 5.747 s⁻²", never a bare number beginning a line).  What must stay whole (a
@@ -211,10 +211,10 @@ export function breakable(row, loose = false) {
     if (relation) {
       // never a break after a relation; before one that continues an equation (a = b ⏎ = c, ≈ 5.7), allowed.
       // Loose (a row wider than its box even so: "½ period = ∫ …" with a fraction nearly a phone wide): a break
-      // after the row's first relation too (not after a wide space's first, as before prof-l 7). Never after a
+      // after the row's first relation too (not after a wide space's first). Never after a
       // relation that begins its row (an aligned block's "= ∫ …" under "t = …"): it would stand alone on its line
-      // (prof-q 5); nor after one that continues an equation ("H = Σ p q̇ − L =" at a line's end, its fraction
-      // below, prof-q 5): that one begins the next line with what follows it.  ``loose`` "after", the last try for a
+      //; nor after one that continues an equation ("H = Σ p q̇ − L =" at a line's end, its fraction
+      // below): that one begins the next line with what follows it.  ``loose`` "after", the last try for a
       // row still too wide: a continuing relation may end a line as well (the break after it), but a value's ≈ not
       const first = out.trim() === "";
       const approx = relation === "\\approx" && related;
@@ -230,7 +230,7 @@ export function breakable(row, loose = false) {
       out += "\\allowbreak ";
     }
     // a + or − between two terms at the top level: the break goes before it, never after, so that a line's end
-    // never holds a sign the next line needs, and the next line begins with it, as a textbook sets it (prof-p 1: the
+    // never holds a sign the next line needs, and the next line begins with it, as a textbook sets it (the
     // wedge's H cut after a "−" that sat past a phone's edge)
     if ((c === "+" || c === "-") && top && binaryAt(out)) {
       out += `\\allowbreak ${c}\\nobreak `;
@@ -464,7 +464,7 @@ export function breakDisplay(el, katex) {
   for (const row of alignedRows(joined)) {
     const line = document.createElement("div");
     line.className = "math-line";
-    // a row holding a fraction keeps a clear gap from its neighbours (site.css; prof-l 9), as spacedRows gives a
+    // a row holding a fraction keeps a clear gap from its neighbours (site.css), as spacedRows gives a
     // display typeset whole
     if (/\\d?frac(?![a-zA-Z])/.test(row)) line.classList.add("has-fraction");
     katex.render(`\\displaystyle ${breakable(row)}`, line, { displayMode: false, throwOnError: false });

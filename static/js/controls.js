@@ -83,7 +83,7 @@ function parts(ctl) {
 
 /**
  * A number read from a control's box: one that prints as a bound (3.142 for π) is that bound, since the box holds
- * values rounded to 4 figures (tidy): the slider's own end, put in the box as 3.142, was refused as beyond π (prof-l 1).
+ * values rounded to 4 figures (tidy): the slider's own end, put in the box as 3.142, was refused as beyond π.
  */
 export function snapToBounds(value, lo, hi) {
   for (const bound of [lo, hi]) if (Number.isFinite(value) && Number.isFinite(bound) && tidy(value) === tidy(bound)) return bound;

@@ -20,7 +20,7 @@ export function overTheRun(rows, t, resolution) {
     for (const v of r.values) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
     if (lo > hi) return `${r.name} has no finite value`;
     // a spread within the run's energy resolution, or below the four digits shown, is no change; each end to the
-    // figures that mean something against the range's size (U from ≈ 0, not from 1.391 × 10⁻⁵ J, prof-n 11)
+    // figures that mean something against the range's size (U from ≈ 0, not from 1.391 × 10⁻⁵ J)
     const [a, b] = rangeEnds(lo, hi, resolution);
     if (hi - lo <= resolution || a === b) return `${r.name} stays ${fmtResolved((lo + hi) / 2, resolution)} J`;
     return `${r.name} from ${a} to ${b} J`;

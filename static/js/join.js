@@ -198,7 +198,7 @@ function stepView(a, item, practice, s, index) {
   const shown = el("div", { className: "practice-engine", hidden: "" });
   const box = el("div", { className: "practice-verdict", role: "status", "aria-live": "polite" });
   // the answer typeset as it is typed, by the checker's own reading (as on a scene page in practice mode): a student
-  // sees how ^, ' and a fraction were read before the answer is recorded (inst-b 25, student-f 22)
+  // sees how ^, ' and a fraction were read before the answer is recorded
   const preview = el("div", { className: "practice-preview", id: `${id}-preview`, "aria-label": "Your answer, typeset" });
   const note = el("p", { className: "help practice-preview-note", text: "What you type appears here, typeset." });
   input.setAttribute("aria-describedby", `${id}-preview`);
@@ -231,7 +231,7 @@ function stepView(a, item, practice, s, index) {
     reveal.textContent = shown.hidden ? "Show this step" : "Hide this step";
     if (!recordOf(key).shown) await load(); // recorded as shown: the step's words and the count say so
   });
-  // where the step stands, in words, not by the border's colour alone (inst-c 16); from the record (stepMark)
+  // where the step stands, in words, not by the border's colour alone; from the record (stepMark)
   const doneLabel = el("p", { className: "practice-done-label" });
   form.insertBefore(doneLabel, form.querySelector(".practice-row"));
   form.dataset.key = key;
@@ -256,7 +256,7 @@ function stepView(a, item, practice, s, index) {
     event.preventDefault();
     const answer = input.value.trim();
     if (!answer) {
-      // nothing to check: the old verdict goes, and the box says what to do (inst-c 15)
+      // nothing to check: the old verdict goes, and the box says what to do
       box.dataset.verdict = "empty";
       box.replaceChildren(el("p", { text: "Type an answer first." }));
       input.focus();
@@ -336,7 +336,7 @@ async function drawItems() {
       const section = el("section", { className: "class-panel join-item" });
       const heading = item.scene ? titleOf[item.scene] || item.scene : item.name;
       section.append(el("h3", { text: heading }));
-      // the page in practice mode, in a tab of its own: the set-up and the figure, the derivation hidden (inst-b 24:
+      // the page in practice mode, in a tab of its own: the set-up and the figure, the derivation hidden (
       // the plain page printed every answer of the assignment), and the class page stays where it was
       if (item.scene) section.append(el("p", {}, el("a", { href: `/scenes/${item.scene}#practice=on`, target: "_blank", rel: "noopener", text: "The scene's set-up and figure" }), " (in a new tab, the derivation hidden)."));
       else section.append(setupView(item));
@@ -417,8 +417,8 @@ $("join-form").addEventListener("submit", async (event) => {
   const code = $("join-code").value.trim();
   const name = $("join-name").value.trim();
   const button = $("join-form").querySelector("button[type=submit]");
-  // said here, in the form's own words, before anything is sent: a pseudonym of spaces is no pseudonym (inst-b 4,
-  // student-f 25: the server's "name: String should have …", or an earlier message about the code, stayed)
+  // said here, in the form's own words, before anything is sent: a pseudonym of spaces is no pseudonym (the
+  // server's "name: String should have …", or an earlier message about the code, stayed)
   if (!name) {
     $("join-status").textContent = "Type a pseudonym: the name your teacher will see (not your real name unless you wish).";
     $("join-name").focus();

@@ -14,7 +14,7 @@
  * Everything it needs is in the page: #scene-data (the client JSON of app/viz/page_model.py)
  * and #playground-system (the request the page derived).
  *
- * The derivation comes in two stages (issue 35): when the whole document is not ready, the page
+ * The derivation comes in two stages: when the whole document is not ready, the page
  * arrives with the equations and accelerations in #derived[data-stage="equations"] and a "still
  * working on" line; this module asks for the same address with stage=whole and puts its #derived
  * (steps, results, simulation, skipped notes) in place, or shows its refusal at the field it

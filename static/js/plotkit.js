@@ -21,7 +21,7 @@ export const COARSE = typeof matchMedia === "function" && matchMedia("(pointer: 
 
 export const CONFIG = {
   responsive: true, displaylogo: false, showSendToCloud: false, showEditInChartStudio: false, showLink: false,
-  // no tool bar on any plot (a book's figure carries no camera or home icons, prof-c S12): a double click
+  // no tool bar on any plot (a book's figure carries no camera or home icons): a double click
   // resets the axes after a zoom
   scrollZoom: false, displayModeBar: false, doubleClick: "reset+autosize",
 };
@@ -45,8 +45,8 @@ export function layout(extra = {}) {
 export const AXIS_FORMAT = { exponentformat: "power", showexponent: "all", separatethousands: false };
 // automargin with a standoff keeps the title clear of the tick labels, however wide they are (10⁻⁹ on a phone)
 // an axis title and a legend name set their subscripts as the page's sentences do (prose.js): U_eff -> U<sub>eff</sub>
-// the tick labels stand outside the plotting area, past a short tick mark, so no curve runs through them (prof-k
-// 13: a curve starting at t = 0 ran through the energy plot's 0, 1, 2, 3, 4); automargin makes room for them
+// the tick labels stand outside the plotting area, past a short tick mark, so no curve runs through them
+// (a curve starting at t = 0 ran through the energy plot's 0, 1, 2, 3, 4); automargin makes room for them
 export const TICKS = { ticks: "outside", ticklen: 5, tickcolor: "#b8bec5", ticklabelposition: "outside" };
 export const axis = (text, extra = {}) => ({ title: { text: proseHTML(text), standoff: 6 }, automargin: true, gridcolor: "#e6e8eb", zerolinecolor: "#b8bec5", ...TICKS, ...AXIS_FORMAT, ...extra });
 

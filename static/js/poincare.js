@@ -68,7 +68,7 @@ export class PoincarePanel {
     }));
     const points = s.orbits.reduce((a, o) => a + o.q.length, 0);
     this.section.dataset.points = String(points);
-    // the plane and the side it is crossed from, as a textbook writes it: θ₂ = 0 with θ̇₂ > 0 (prof-m 9), not
+    // the plane and the side it is crossed from, as a textbook writes it: θ₂ = 0 with θ̇₂ > 0, not
     // "crossing upward"
     const rate = labels[`${s.coordinate}_dot`] || `d${lc}/dt`;
     const cut = `${lc} = ${fmt(s.value)} with ${rate} ${s.direction > 0 ? ">" : "<"} 0`;

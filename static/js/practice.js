@@ -256,7 +256,7 @@ function followUpBox(item, followUp, formulas = []) {
     }, TYPESET_DELAY_MS);
   });
   // the names, folded to one line: the step's own list stands just above, and a wrong answer's verdict on a phone
-  // grew two screens tall with it said again (student-k 11)
+  // grew two screens tall with it said again
   const names = element("details", { class: "help follow-up-names" });
   names.append(element("summary", {}, "Names you may use"), element("p", {}, `${namesSaid(followUp)}, pi.`));
   box.append(label, row, names, shown, status);
@@ -385,7 +385,7 @@ async function preview(item, signal) {
 const TYPESET_DELAY_MS = 150; // after the last keystroke
 
 /** ``folded``: a position's note said in full on an earlier box, folded here under "How to write a position"
- * (student-l 8: on a phone the same paragraph under every position box was screens of scrolling). */
+ * (on a phone the same paragraph under every position box was screens of scrolling). */
 function buildItem(exercise, index, folded = false) {
   const key = keyOf(exercise);
   const id = `practice-${index}`;
@@ -396,7 +396,7 @@ function buildItem(exercise, index, folded = false) {
   const title = element("h3", { id: `${id}-title` });
   title.append(element("span", { class: "practice-number" }, `Step ${index + 1}:`), " ",
     element("span", { class: "practice-title" }, exercise.title));
-  // the heading shows the title: the label says it to a screen reader only (student-e, 18)
+  // the heading shows the title: the label says it to a screen reader only (18)
   const label = element("label", { for: `${id}-answer`, class: "visually-hidden" }, `Your answer: ${exercise.title}`);
   const row = element("div", { class: "practice-row" });
   const lhs = element("span", { class: "practice-lhs", "aria-hidden": "true" });

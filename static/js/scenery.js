@@ -64,7 +64,7 @@ function hatches(style, pts, dpr, W, H) {
 /**
  * What the solid curves (the ground, a ceiling, walls, wires: not the dashed guides) cover on screen at instant i:
  * per curve, its label and its points about 2 device pixels apart with the ends of its hatches, so that a body's
- * label (bodies.js) keeps off them — the coupled oscillators' "left mass" sat on the floor's hatching (prof-m 10).
+ * label (bodies.js) keeps off them — the coupled oscillators' "left mass" sat on the floor's hatching.
  */
 export function curveCover(player, i, dpr) {
   const out = [], W = player.canvas.width, H = player.canvas.height;

@@ -102,7 +102,7 @@ export function keyboardScroll(root = document) {
     timer = setTimeout(() => { timer = null; if (again) { again = false; later(); } }, 500);
   };
   // a plot redraws its own SVG at every frame while it is dragged or played: nothing in it is a box, and a
-  // check then would force a layout in the middle of Plotly's (the all-plots frame time of issue 47)
+  // check then would force a layout in the middle of Plotly's (it would cost the all-plots frame time)
   const inPlot = (node) => node.nodeType === 1 && node.closest(PLOTS) !== null;
   const added = (r) => !inPlot(r.target) && [...r.addedNodes].some((n) => n.nodeType === 1 && !n.matches(PLOTS));
   // an element shown (its hidden attribute removed): the boxes in it now have a width to measure

@@ -12,7 +12,7 @@
 import { proseHTML } from "./prose.js";
 
 // the significant digits of a number read off a run or a formula, as a textbook prints it (6.414 rad/s), and
-// of a relative difference, itself the small difference of two such numbers (−6.22 %, not −6.221 %: prof-k 13)
+// of a relative difference, itself the small difference of two such numbers (−6.22 %, not −6.221 %)
 export const DIGITS = 4;
 export const DIFFERENCE_DIGITS = 3;
 
@@ -72,7 +72,7 @@ export const RANGE_FIGURES = 1e-3;
 /** A range's two ends, each to the figures that mean something against the range's size: nothing finer than a
  *  thousandth of the span (lo to hi), nor than ``floor`` (a run's energy resolution).  A sampled end that small is
  *  a zero the samples straddle (the pendulum's U at the bottom of its swing, the helix's wire force m α² R ż²
- *  where ż changes sign): "≈ 0", not the digits of the sample nearest it ("1.391 × 10⁻⁵", prof-n 11). */
+ *  where ż changes sign): "≈ 0", not the digits of the sample nearest it ("1.391 × 10⁻⁵"). */
 export function rangeEnds(lo, hi, floor = 0) {
   // |end| ≤ max(floor, 10⁻³ (hi − lo)) reads "≈ 0"; a larger end keeps its digits down to that size
   const known = Math.max(floor > 0 ? floor : 0, RANGE_FIGURES * Math.abs(hi - lo));

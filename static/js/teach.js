@@ -284,7 +284,7 @@ const opened = new Set(); // the lists of names the instructor opened: they stay
 function whoList(names, what, where, since = []) {
   if (!names.length) return null;
   const id = `${where}|${what}`;
-  // a mistake's list marks who has since answered right (instr-j 11: it mixed them with those still wrong)
+  // a mistake's list marks who has since answered right (it mixed them with those still wrong)
   const said = names.map((n) => (since.includes(n) ? `${n} (right since)` : n));
   const box = el("details", { className: "now-who" },
     el("summary", { text: `${what} (${names.length})` }),
@@ -995,7 +995,7 @@ if (fragment.get("class") && fragment.get("recover")) {
   open(current.code, current.key).then((how) => how === "refused" && forget());
 }
 // a teacher link pasted into this tab changes only the fragment, and the browser does not load the page again:
-// read it as a fresh load would (inst-b 18: after a cut link, the whole one pasted here did nothing)
+// read it as a fresh load would (after a cut link, the whole one pasted here did nothing)
 window.addEventListener("hashchange", () => {
   if (new URLSearchParams(window.location.hash.slice(1)).get("class")) window.location.reload();
 });

@@ -1,5 +1,5 @@
 """A student's institution login, which a class may ask for so its grades import into an LMS without matching
-pseudonyms by hand (inst-b 12): the one home of the column names a class may choose and of what a login may be.
+pseudonyms by hand: the one home of the column names a class may choose and of what a login may be.
 
 The instructor chooses the column's name the LMS matches rows by: Canvas's "SIS Login ID", Moodle's "username",
 or a plain "Login" for another.  The grades file then has that column first, under that header.

@@ -224,7 +224,7 @@ def summary(db: Database, class_id: int, series: list[dict[str, Any]]) -> dict[s
             total["count"] += count
             total["steps"].append(_item_of(entry) | {"count": count, "students": len(by_mistake[key][mistake])})
             total["students"] |= by_mistake[key][mistake]
-            # still without a right answer on a step where they made it (instr-j 11: the list mixed them with
+            # still without a right answer on a step where they made it (the list mixed them with
             # the students who have since put it right)
             total["still"] |= by_mistake[key][mistake] - {s for (s, k) in right_at if k == key}
     # the mistake most students made first (then the most answers): a student who makes it twice is one student
