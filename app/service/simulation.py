@@ -4,8 +4,8 @@
 a scene's derivation, the user-system worker with a user's.  It checks the
 request against the system's declared ranges (``simulate_request``), takes
 (once per system and process) the numeric functions (``compiled``), waits for
-a slot (``gates``), runs ``app.numerics.simulate`` and returns the
-documented JSON:
+a slot (``gates``), runs the plan where it belongs (``simulation_run``) and
+returns the documented JSON:
 
     {"t", "state": {q, q_dot}, "energy", "hamiltonian", "conserved": {name: [...]},
      "constraint_forces": {name: [...]}, "stats": {...}}
@@ -27,7 +27,7 @@ from app.numerics import limits, methods
 from app.numerics.errors import SimulationError
 from app.numerics.methods import AUTO
 from app.numerics.plan import Plan, plan
-from app.numerics.simulate import Outcome, run
+from app.numerics.simulate import Outcome
 from app.numerics.start import why_not_at_start
 from app.scenes import SCENES, Scene
 from app.service.compiled import Compiled
@@ -41,6 +41,7 @@ from app.service.simulate_request import (
     setting,
 )
 from app.service.simulation_result import document, observe
+from app.service.simulation_run import run_served, steps_in_python
 from app.service.warm_kernels import start_warming, warm_all
 from app.settings import settings
 
@@ -117,18 +118,18 @@ def simulate_derivation(
             )  # fmt: skip
 
     with ExitStack() as held:
-        if planned.python_loop:
+        if steps_in_python(planned):
             held.enter_context(gates.python_loop())
         elif heavy:
             held.enter_context(gates.heavy_run())
         held.enter_context(gates.any())
-        outcome = run(
-            planned, gates.wall_seconds, python_loop=gates.python_loop, events=compiled.events(scene, system),
-            elsewhere=elsewhere, beside=CORES,
+        outcome, observed = run_served(
+            planned, gates.wall_seconds, compiled.events(scene, system), CORES, throttle=gates.python_loop,
+            elsewhere=elsewhere,
             # the series while the error estimate's reference run finishes beside
             alongside=lambda trajectory: observe(system, observables, trajectory, k, rtol, precision),
         )  # fmt: skip
-    return document(system, observables, outcome, k, rtol, precision)
+    return document(system, observables, outcome, k, rtol, precision, observed)
 
 
 def simulate_scene(

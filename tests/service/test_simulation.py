@@ -139,7 +139,9 @@ def test_work_precision_without_an_exact_solution_checks_its_reference():
 @pytest.mark.parametrize("scene_id", ["coupled-oscillators", "rail-two-body"])
 def test_work_precision_of_a_linear_scene_measures_against_its_exact_solution(scene_id):
     data = work_precision.compute(scene_id, sweep=[1e-6, 1e-10], methods=["DOP853-compiled"])
-    assert data["reference"].startswith("exact solution of the linear equations") and "no exact" not in data["reference"]
+    assert (
+        data["reference"].startswith("exact solution of the linear equations") and "no exact" not in data["reference"]
+    )
     by = {r["rtol"]: r["error"] for r in data["runs"]}
     # errors against the exact motion fall with the tolerance, and the tight run is far below the loose one
     assert by[1e-10] < 1e-2 * by[1e-6]
@@ -246,7 +248,7 @@ def test_a_reference_runs_beside_only_while_half_a_core_is_idle(load, busy, free
 @pytest.mark.parametrize("scene_id", ["double-pendulum", "incline-block"])  # the block's run ends at an event
 @pytest.mark.parametrize("precision", ["full", "display"])
 def test_series_made_while_the_reference_runs_are_those_of_the_final_trajectory(monkeypatch, scene_id, precision):
-    original = simulation.run
+    original = simulation.run_served
     calls = []
 
     def after(*args, alongside=None, **kwargs):  # the document computes them itself
@@ -259,9 +261,9 @@ def test_series_made_while_the_reference_runs_are_those_of_the_final_trajectory(
 
         return original(*args, alongside=observe, **kwargs)
 
-    monkeypatch.setattr(simulation, "run", spy)
+    monkeypatch.setattr(simulation, "run_served", spy)
     beside = json.loads(dumps(simulation.simulate_scene(scene_id, request(precision=precision))))
-    monkeypatch.setattr(simulation, "run", after)
+    monkeypatch.setattr(simulation, "run_served", after)
     later = json.loads(dumps(simulation.simulate_scene(scene_id, request(precision=precision))))
     assert calls == [len(beside["t"])]
     for key in ("t", "energy", "hamiltonian", "conserved", "constraint_forces", "state"):
@@ -306,7 +308,8 @@ def test_auto_stiff_handover_takes_the_python_loop_slot_only_for_scipy(monkeypat
     from app.numerics import jit
     from app.numerics import plan as plan_module
     from app.numerics.methods import FALLBACK_STIFF, METHODS, NONSTIFF, STIFF
-    from app.numerics.simulate import run
+    from app.service.cores import Cores
+    from app.service.simulation_run import run_served, steps_in_python
     from tests.numerics.extreme_cases import circular_radius, system_for
 
     s = system_for("stiff-spring")
@@ -314,6 +317,7 @@ def test_auto_stiff_handover_takes_the_python_loop_slot_only_for_scipy(monkeypat
     y0 = np.array([circular_radius(1e6, 1.0, 1.0) * (1 + 1e-9), 0.0, 0.0, 1.0])
     monkeypatch.setattr(plan_module, "choose", lambda system, analysis: (NONSTIFF, "forced for the test"))
     entered = []
+    cores = Cores(1)
 
     @contextmanager
     def spy():
@@ -321,13 +325,13 @@ def test_auto_stiff_handover_takes_the_python_loop_slot_only_for_scipy(monkeypat
         yield
 
     planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4, estimate=False)
-    assert not planned.python_loop
-    outcome = run(planned, python_loop=spy)
+    assert not steps_in_python(planned)
+    outcome, _ = run_served(planned, limits.WALL_SECONDS, (), cores, throttle=spy)
     assert outcome.method == STIFF and "detected stiffness" in outcome.reason and entered == []
     serving = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4, estimate=False, wait_for_compile=False)
     ready = jit.ready
     monkeypatch.setattr(jit, "ready", lambda name: name != METHODS[STIFF].kernel_module and ready(name))
-    outcome = run(serving, python_loop=spy)
+    outcome, _ = run_served(serving, limits.WALL_SECONDS, (), cores, throttle=spy)
     assert outcome.method == FALLBACK_STIFF and entered == [True]
 
 
@@ -391,6 +395,8 @@ def test_the_stiff_hand_over_is_run_elsewhere_as_a_stiff_plan(monkeypatch):
     from app.numerics.methods import FALLBACK_STIFF, METHODS, NONSTIFF, STIFF
     from app.numerics.plan import Plan
     from app.numerics.simulate import run
+    from app.service.cores import Cores
+    from app.service.simulation_run import run_served, steps_in_python
     from tests.numerics.extreme_cases import circular_radius, system_for
 
     s = system_for("stiff-spring")
@@ -404,16 +410,17 @@ def test_the_stiff_hand_over_is_run_elsewhere_as_a_stiff_plan(monkeypatch):
         rebuilt = Plan.rebuilt(s, pickle.loads(pickle.dumps(handed.portable())))
         return pickle.loads(pickle.dumps(run(rebuilt, wall_seconds)))
 
+    cores = Cores(1)
     planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4)
-    away = run(planned, elsewhere=elsewhere)
+    away, _ = run_served(planned, limits.WALL_SECONDS, (), cores, elsewhere=elsewhere)
     assert sent == [] and away.method == STIFF and away.path == "compiled"
     # a server still compiling the Radau kernel: the explicit run is compiled and stays, what it hands over goes
     ready = jit.ready
     monkeypatch.setattr(jit, "ready", lambda name: name != METHODS[STIFF].kernel_module and ready(name))
     planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4, estimate=False, wait_for_compile=False)
     assert planned.path == "compiled"  # Vern8 loaded by the run above
-    away, here = run(planned, elsewhere=elsewhere), run(planned)
-    assert [p.name for p in sent] == [FALLBACK_STIFF] and sent[0].stiff and sent[0].python_loop
+    (away, _), here = run_served(planned, limits.WALL_SECONDS, (), cores, elsewhere=elsewhere), run(planned)
+    assert [p.name for p in sent] == [FALLBACK_STIFF] and sent[0].stiff and steps_in_python(sent[0])
     assert away.method == here.method == FALLBACK_STIFF and "detected stiffness" in away.reason
     assert away.reason == here.reason
     np.testing.assert_array_equal(away.trajectory.y, here.trajectory.y)
