@@ -64,8 +64,8 @@ def section_of_derivation(
     if direction not in (1, -1):
         raise SimulationError("direction must be 1 (crossing upward) or -1 (downward)", "direction")
     value = check_number(value, "value")
-    count = int(setting(count, DEFAULT_COUNT, 1, COUNT_MAX, "count"))
-    t_end = setting(t_end, DEFAULT_T_END, 1e-6, T_END_MAX, "t_end")
+    count = int(setting(count, DEFAULT_COUNT, limits.Range(1, COUNT_MAX), "count"))
+    t_end = setting(t_end, DEFAULT_T_END, limits.Range(1e-6, T_END_MAX), "t_end")
     k = parameter_vector(d, parameters or {})
     system, observables = (PROCESS_SCENES.compiled if compiled is None else compiled).get(key, d)
     if energy is None:

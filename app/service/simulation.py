@@ -80,10 +80,12 @@ def simulate_derivation(
     scene: Scene | None = SCENES.get(scene_id) if scene_id else None
     k = parameter_vector(derivation, request.parameters or {})
     y0 = initial_state(derivation, request.initial or {}, scene.initial if scene else {})
-    t_end = setting(request.t_end, scene.t_end if scene else DEFAULT_T_END, 1e-9, limits.T_END_MAX, "t_end")
-    rtol = setting(request.rtol, limits.RTOL_DEFAULT, limits.RTOL_MIN, limits.RTOL_MAX, "rtol")
-    atol = setting(request.atol, limits.ATOL_DEFAULT, limits.ATOL_MIN, limits.ATOL_MAX, "atol")
-    samples = int(setting(request.samples, limits.SAMPLES_DEFAULT, limits.SAMPLES_MIN, limits.SAMPLES_MAX, "samples"))
+    # the ranges the API's schema documents (limits.RANGES): a caller without the schema is held to them too
+    ranges = limits.RANGES
+    t_end = setting(request.t_end, scene.t_end if scene else DEFAULT_T_END, ranges["t_end"], "t_end")
+    rtol = setting(request.rtol, limits.RTOL_DEFAULT, ranges["rtol"], "rtol")
+    atol = setting(request.atol, limits.ATOL_DEFAULT, ranges["atol"], "atol")
+    samples = int(setting(request.samples, limits.SAMPLES_DEFAULT, ranges["samples"], "samples"))
     method = request.method or AUTO
     precision = getattr(request, "precision", None) or "full"
     if method != AUTO:
