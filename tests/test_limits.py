@@ -95,6 +95,7 @@ def test_the_api_documents_the_range_the_service_holds_a_request_to(name):
 
     from app.numerics.errors import SimulationError
     from app.web.schemas_simulate import SimulateRequest
+    from tests.served import scene_run
 
     documented = SimulateRequest.model_json_schema()["properties"][name]["anyOf"][0]
     low, high = documented["minimum"], documented["maximum"]
@@ -102,6 +103,6 @@ def test_the_api_documents_the_range_the_service_holds_a_request_to(name):
     for beyond in (low / 10, high * 10):
         request = SimpleNamespace(**{**asked, "samples": None, name: beyond})
         with pytest.raises(SimulationError, match=rf"\[{low:g}, {high:g}\]"):
-            simulation.simulate_scene("simple-pendulum", request)
+            scene_run("simple-pendulum", request)
         with pytest.raises(ValidationError):
             SimulateRequest(initial={}, **{name: beyond})

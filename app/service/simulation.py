@@ -32,7 +32,7 @@ from app.numerics.start import why_not_at_start
 from app.scenes import SCENES, Scene
 from app.service.compiled import Compiled
 from app.service.cores import CORES
-from app.service.gates import GATES, SLOTS, Gates
+from app.service.gates import SLOTS, Gates
 from app.service.scene_jobs import load_scenes, run_scene_plan
 from app.service.simulate_request import (
     SimulationInput,
@@ -53,7 +53,7 @@ if TYPE_CHECKING:
 # document (simulation_result), the warm-up (warm_kernels) and the scenes' worker jobs (scene_jobs). The app's
 # start, its services and the worker pool name these through this module:
 __all__ = [
-    "GATES", "SLOTS", "Gates", "load_scenes", "simulate_derivation", "simulate_scene", "start_warming", "warm_all",
+    "SLOTS", "Gates", "load_scenes", "simulate_derivation", "simulate_scene", "start_warming", "warm_all",
 ]  # fmt: skip
 
 HEAVY_SPAN = 10  # times the scene's t_end (or the default 10 s)
@@ -64,19 +64,16 @@ def simulate_derivation(
     derivation: Derivation,
     request: SimulationInput,
     *,
+    gates: Gates,
+    compiled: Compiled,
     constraint_forces: Sequence[ConstraintForce] | None = None,
     scene_id: str | None = None,
-    gates: Gates = GATES,
-    compiled: Compiled | None = None,
 ) -> dict[str, Any]:
     """Simulate a derived system as the request asks; a refusal raises SimulationError, a full server OverCapacity.
 
-    ``constraint_forces``: the forces observed along the run (by default the derivation's own); ``compiled``:
-    where its numeric system is kept (the scenes' of the app, by default this process's)."""
-    if compiled is None:
-        from app.service.derivations import PROCESS_SCENES
-
-        compiled = PROCESS_SCENES.compiled
+    ``gates``: how many run at once (the app's, or a worker's own); ``compiled``: where its numeric system is
+    kept (the app's scenes', or the worker's); ``constraint_forces``: the forces observed along the run (by
+    default the derivation's own)."""
     scene: Scene | None = SCENES.get(scene_id) if scene_id else None
     k = parameter_vector(derivation, request.parameters or {})
     y0 = initial_state(derivation, request.initial or {}, scene.initial if scene else {})
@@ -134,15 +131,11 @@ def simulate_derivation(
     return document(system, observables, outcome, k, rtol, precision, observed)
 
 
-def simulate_scene(
-    scene_id: str, request: SimulationInput, gates: Gates = GATES, scenes: Scenes | None = None
-) -> dict[str, Any]:
-    """Simulate a chapter scene; ``scenes``: where its derivation and system are kept (the app's, by default
-    this process's)."""
-    from app.service.derivations import PROCESS_SCENES, scene
+def simulate_scene(scene_id: str, request: SimulationInput, gates: Gates, scenes: Scenes) -> dict[str, Any]:
+    """Simulate a chapter scene; ``scenes``: where its derivation and system are kept (the app's)."""
+    from app.service.derivations import scene
 
     scene(scene_id)
-    scenes = PROCESS_SCENES if scenes is None else scenes
     with gates.in_flight.serving():  # the warm-up thread waits meanwhile
         return simulate_derivation(
             scenes.derivation(scene_id), request, scene_id=scene_id, gates=gates, compiled=scenes.compiled
@@ -150,5 +143,7 @@ def simulate_scene(
 
 
 if __name__ == "__main__":  # at image build: python -m app.service.simulation
-    for name, seconds in warm_all().items():
+    from app.service.derivations import PROCESS_SCENES
+
+    for name, seconds in warm_all(PROCESS_SCENES).items():
         print(f"{name}: {seconds:.2f} s")
