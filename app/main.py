@@ -9,6 +9,7 @@ from typing import Any
 from fastapi import FastAPI
 
 from app.service import resident, simulation
+from app.service.derivations import PROCESS_SCENES
 from app.service.memory import freeze_imported, freeze_when_done
 from app.service.services import Services
 from app.settings import settings
@@ -32,7 +33,8 @@ from app.web.templating import static_app
 async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
     # the services (worker pool, user systems, checking, simulation slots), given to the routes by app/web/deps.py
     config = settings()
-    services = Services.start(config)
+    # the chapter's scenes: this process's one copy (app/service/derivations.py), handed to the routes from here
+    services = Services.start(config, PROCESS_SCENES)
     recording = resident.start_recording(config)  # this process's size, for the memory budget of the workers it starts
     # Fill the derivation cache, then load the compiled integrators and the scenes'
     # right-hand sides, in the background: the server answers at once, with scipy

@@ -85,3 +85,24 @@ def test_a_changed_limit_changes_the_caches_fingerprint(monkeypatch, tmp_path):
     before = cache.source_fingerprint("engine")
     (tmp_path / "limits.py").write_text("SOLVE_WORK = 50_000\n")
     assert cache.source_fingerprint("engine") != before
+
+
+@pytest.mark.parametrize("name", ["t_end", "rtol", "atol", "samples"])
+def test_the_api_documents_the_range_the_service_holds_a_request_to(name):
+    """One table of a simulation request's ranges (limits.RANGES): the schema's documented bounds are those the
+    service names when it refuses a request that did not pass through the schema (a worker's, a script's)."""
+    from types import SimpleNamespace
+
+    from app.numerics.errors import SimulationError
+    from app.web.schemas_simulate import SimulateRequest
+    from tests.served import scene_run
+
+    documented = SimulateRequest.model_json_schema()["properties"][name]["anyOf"][0]
+    low, high = documented["minimum"], documented["maximum"]
+    asked = {"parameters": {}, "initial": {}, "t_end": None, "method": "auto", "rtol": None, "atol": None}
+    for beyond in (low / 10, high * 10):
+        request = SimpleNamespace(**{**asked, "samples": None, name: beyond})
+        with pytest.raises(SimulationError, match=rf"\[{low:g}, {high:g}\]"):
+            scene_run("simple-pendulum", request)
+        with pytest.raises(ValidationError):
+            SimulateRequest(initial={}, **{name: beyond})

@@ -141,3 +141,40 @@ def test_what_moved_is_no_longer_in_its_module():
         assert name not in state_of((ROOT / module).read_text()), (module, name)
     assert "scene_export" not in state_of((ROOT / "app/service/exporting.py").read_text())
     assert Path(DOC).is_file()
+
+
+def _resolves_to(node: ast.expr | None, state: set[str]) -> str | None:
+    """The module state a default names: ``GATES``, ``derivations.PROCESS_SCENES``, ``PROCESS_SCENES.compiled``,
+    or ``X if p is None else p`` choosing it when nothing is given."""
+    while isinstance(node, ast.Attribute):  # derivations.PROCESS_SCENES, PROCESS_SCENES.compiled
+        if node.attr in state:
+            return node.attr
+        node = node.value
+    if isinstance(node, ast.Name) and node.id in state:
+        return node.id
+    if isinstance(node, ast.IfExp):
+        return _resolves_to(node.body, state) or _resolves_to(node.orelse, state)
+    return None
+
+
+def test_no_function_takes_module_state_as_its_default():
+    """Module state (a process's scenes, gates, cores) is passed explicitly: the app's services give theirs, a
+    worker's job or a script its own; no parameter or dataclass field falls back to it when not given."""
+    modules = {path: ast.parse(path.read_text()) for path in sorted(APP.rglob("*.py"))}
+    state = set().union(*(state_of(path.read_text()) for path in modules))
+    found = []
+    for path, tree in modules.items():
+        for node in ast.walk(tree):
+            where = f"{path.relative_to(ROOT)}:{getattr(node, 'lineno', 0)}"
+            if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef):
+                defaults = [*node.args.defaults, *node.args.kw_defaults]
+                found += [f"{where} {node.name}: {name}" for d in defaults if (name := _resolves_to(d, state))]
+            # a parameter resolved in the body: ``chapter = PROCESS_SCENES if chapter is None else chapter``
+            if isinstance(node, ast.IfExp) and isinstance(node.test, ast.Compare):
+                given = node.test.comparators[0] if node.test.comparators else None
+                if isinstance(given, ast.Constant) and given.value is None and (name := _resolves_to(node, state)):
+                    found.append(f"{where} {name} when None")
+            if isinstance(node, ast.ClassDef):
+                fields = [n for n in node.body if isinstance(n, ast.AnnAssign)]
+                found += [f"{where} {node.name}: {name}" for f in fields if (name := _resolves_to(f.value, state))]
+    assert found == []

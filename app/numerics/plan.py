@@ -2,13 +2,14 @@
 
 Deciding comes before running, so whoever runs the plan can look at the
 concrete methods: ``auto`` resolved (``choose``), the scipy fallback taken
-while the compiled code is not ready, the reference named.  The service takes
-its "one Python step loop at a time" throttle from ``Plan.python_loop``, which
-is right whatever was asked for (``auto`` choosing a scipy method is a Python loop).
+while the compiled code is not ready, the reference named.  Whoever runs it
+can tell from them where it should run (a server keeps scipy's Python step
+loops apart, whatever was asked for: ``auto`` choosing a scipy method is one).
 
-Only a run that meets stiffness on the way (``auto``'s explicit method hands
-over to the compiled Radau IIA) changes method after planning: ``Plan.handed_over`` is the plan
-it continues with, and ``app.numerics.simulate`` asks for the throttle then.
+Only a run that cannot go on as planned changes method after planning:
+``Plan.handed_over`` is the plan ``auto``'s explicit method continues with when
+it meets stiffness (Radau IIA), ``Plan.instead_of_symplectic`` the one its
+symplectic pick continues with past its step limit.
 
 A plan travels to a worker process by ``portable`` (everything but the system,
 methods by name) and ``rebuilt`` there on that process's own copy of the system.
@@ -54,11 +55,6 @@ class Plan:
         return self.method.name
 
     @property
-    def python_loop(self) -> bool:
-        """True when the run or its reference steps in Python (scipy), holding the GIL throughout."""
-        return not self.method.compiled or (self.reference is not None and not self.reference.compiled)
-
-    @property
     def watch_stiffness(self) -> bool:
         """``auto``'s explicit default stops when it meets stiffness, to be redone with Radau."""
         return self.requested == AUTO and self.method.name == NONSTIFF
@@ -73,9 +69,7 @@ class Plan:
             f"{self.reason}; but {self.name} detected stiffness at t = {t:.4g} s (step size held at its "
             f"stability limit), so the run was redone with the implicit {stiff.name} method"
         )
-        reference = (
-            METHODS[reference_name(stiff=True, compiled=stiff.compiled)] if self.reference is not None else None
-        )
+        reference = METHODS[reference_name(stiff=True, compiled=stiff.compiled)] if self.reference is not None else None
         # the path says what ran: scipy's Radau steps in Python, never "compiled"
         path = "compiled" if stiff.compiled else "scipy"
         return replace(self, method=stiff, reason=reason, reference=reference, stiff=True, path=path)

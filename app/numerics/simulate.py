@@ -1,25 +1,29 @@
-"""One simulation: plan it (``app.numerics.plan``), run it under the budget, estimate its global error.
+"""One simulation, as ``solve_ivp`` runs one: a plan (``app.numerics.plan``) in, an ``Outcome`` out, on the caller's thread.
 
-Order of work: the plan (analyse the start, choose, name the reference), run the
-method (switching to the compiled Radau IIA if ``auto``'s explicit method meets stiffness on the way),
-run the reference for the error estimate, compare.  Everything shares one
-deadline.  The main run exceeding it is an error (too much work); the
-reference exceeding it only costs the estimate, with a warning.
+``run`` composes four pieces, and a caller that wants to place them (a server: which thread, which process)
+composes the same pieces itself:
 
-A server passes ``wait_for_compile=False`` to the plan: when ``auto`` picks a
-compiled method whose numba code is not ready in this process yet (a background
-thread is compiling it), scipy's DOP853 on the generated scalar right-hand side
-answers instead, for the run and the reference, and ``Outcome.path`` says so.
+* ``start(plan, wall_seconds)``: the compiled code made ready (before the clock starts), the deadline set, the problem posed;
+* ``integrate(started, events)``: the chosen method steps to the end (or to a terminal event); a run that
+  cannot go on with its plan says which plan it continues with instead (``Continued``): ``auto``'s explicit
+  method meeting stiffness hands over to Radau IIA, its symplectic pick past its step limit to the adaptive pair;
+* ``reference_first(started)``: the error estimate's reference of a non-stiff adaptive compiled run, which does
+  not depend on the run, so it may run before or beside it (``Started.independent_reference`` says when);
+* ``finish(stepped, reference)``: the reference run (unless it was run already), the comparison, the warnings.
+
+Everything shares one deadline.  The main run exceeding it is an error (too much work); the reference
+exceeding it only costs the estimate, with a warning.
+
+A server passes ``wait_for_compile=False`` to the plan: when ``auto`` picks a compiled method whose numba
+code is not ready in this process yet, scipy's DOP853 on the generated scalar right-hand side answers
+instead, for the run and the reference, and ``Outcome.path`` says so.
 """
 
 from __future__ import annotations
 
 import time
-from collections.abc import Callable, Sequence
-from concurrent.futures import Future
-from contextlib import AbstractContextManager, nullcontext
+from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Any, Protocol
 
 import numpy as np
 
@@ -45,25 +49,48 @@ class Outcome:
     compile_seconds: float = 0.0
     path: str = "compiled"  # "compiled", "scipy" (a scipy method was asked for or chosen), "scipy-fallback"
     event: terminal.Hit | None = None  # the terminal event that ended the run, if one did
-    alongside: Any = None  # what ``run``'s ``alongside`` returned for the final trajectory (None if not called)
 
 
-class Beside(Protocol):
-    """How a run may use a second core, given by its caller (a server counts its busy cores and keeps the
-    threads): ``own()`` is held around the run's own stepping; ``submit(work)`` runs ``work`` (the error
-    estimate's reference) in another thread and returns its future, or None when no core is free (the
-    reference then runs after the run). Without one, a run uses the caller's thread alone."""
+@dataclass
+class Started:
+    """A plan ready to step: its compiled code loaded, its deadline set, its problem posed."""
 
-    def own(self) -> AbstractContextManager: ...
+    plan: Plan
+    problem: Problem
+    compile_seconds: float
+    warnings: list[str]
 
-    def submit(self, work: Callable[[], Trajectory]) -> Future | None: ...
+    @property
+    def independent_reference(self) -> bool:
+        """True when the error estimate's reference does not depend on the run (a non-stiff adaptive
+        compiled run, whose reference is a tighter run of the compiled pair): it may run before or beside it."""
+        p = self.plan
+        adaptive = p.path == "compiled" and not isinstance(p.method, FixedStep)
+        return p.reference is not None and adaptive and not p.stiff
 
 
-def _reference_ahead(problem: Problem, beside: Beside) -> Future | None:
-    """Start the compiled reference of a non-stiff adaptive run beside it, if the caller has a core free."""
-    name, tight = reference_problem(problem, stiff=False, compiled=True)
-    tight.max_steps = _budget_for(name)
-    return beside.submit(lambda: METHODS[name].integrate(tight))
+@dataclass
+class Stepped:
+    """A plan's main run, stepped to its end, to its terminal event or as far as its budget allowed."""
+
+    started: Started
+    trajectory: Trajectory  # ended at the terminal event, if one was hit
+    compared: Trajectory  # the samples the estimate compares: those before the event
+    hit: terminal.Hit | None
+    warnings: list[str]
+
+
+@dataclass
+class Continued:
+    """A run that goes on with another plan, in what is left of its deadline."""
+
+    plan: Plan
+    deadline: float  # time.perf_counter() value
+    compile_seconds: float  # spent on the plan it leaves, counted in the outcome
+
+    def wall_seconds(self) -> float:
+        """What is left of the deadline, now."""
+        return max(self.deadline - time.perf_counter(), 0.0)
 
 
 def _budget_for(method_name: str) -> int:
@@ -93,94 +120,74 @@ def simulate(
     estimate: bool = True,
     wait_for_compile: bool = True,
     events: Sequence[terminal.EventFunction] = (),
-    beside: Beside | None = None,
 ) -> Outcome:
-    """Plan and run in one call (scripts and tests); a server plans first to take its throttles (see ``run``)."""
+    """Plan and run in one call (scripts and tests); a server plans first to choose where the run goes."""
     planned = plan(system, k, y0, t_end, samples, method, rtol, atol, estimate, wait_for_compile)
-    return run(planned, wall_seconds, events=events, beside=beside)
+    return run(planned, wall_seconds, events=events)
 
 
-def run(
-    plan: Plan,
-    wall_seconds: float | None = None,
-    python_loop: Callable[[], AbstractContextManager] = nullcontext,
-    events: Sequence[terminal.EventFunction] = (),
-    elsewhere: Callable[[Plan, float], Outcome] | None = None,
-    alongside: Callable[[Trajectory], Any] | None = None,
-    beside: Beside | None = None,
-) -> Outcome:
-    """Run a plan under one deadline, on the caller's thread.  ``python_loop()`` is entered around a Python step loop the plan did not
-    foresee (the stiff hand-over to scipy's Radau while the compiled one is not ready); the caller holds it already when ``plan.python_loop``.
+def run(plan: Plan, wall_seconds: float | None = None, events: Sequence[terminal.EventFunction] = ()) -> Outcome:
+    """Run a plan under one deadline, on the caller's thread: start, integrate (continuing with the plan a
+    hand-over gives), and finish with the error estimate."""
+    stepped = integrate(start(plan, wall_seconds), events)
+    if isinstance(stepped, Continued):
+        return carried(run(stepped.plan, stepped.wall_seconds(), events), stepped)
+    return finish(stepped)
 
-    ``elsewhere(plan, wall_seconds)``, when given, runs a plan that steps in Python (a scipy method, as
-    asked for or chosen, or after the hand-over) in another process and returns its outcome: a server
-    keeps such loops out of its web process, where they would hold the GIL the event loop needs.  The
-    scipy fallback while compiling stays here (short runs, and a worker would first have to start).
 
-    ``alongside(trajectory)``, when given, is called on the final trajectory while the reference that
-    started beside the main run is still finishing (a server computes the observables there); its
-    result is ``Outcome.alongside``.  A run handed to ``elsewhere`` does not call it.
+def carried(outcome: Outcome, continued: Continued) -> Outcome:
+    """The outcome of the plan a run continued with, counting the compile time of the plan it left."""
+    outcome.compile_seconds += continued.compile_seconds
+    return outcome
 
-    ``beside`` (see ``Beside``), when given, may run the error estimate's reference in another thread while the
-    run steps; the estimate is the same either way."""
+
+def start(plan: Plan, wall_seconds: float | None = None) -> Started:
+    """Load the plan's compiled code (compiling, on first use in this process, before the clock starts),
+    set the deadline ``wall_seconds`` from now and pose the problem."""
     wall_seconds = limits.WALL_SECONDS if wall_seconds is None else wall_seconds
-    if elsewhere is not None and plan.python_loop and plan.path != "scipy-fallback":
-        return elsewhere(plan, wall_seconds)
-    system, k, y0 = plan.system, plan.k, plan.y0
-    t = np.linspace(0.0, plan.t_end, plan.samples)
-    atol_vector = np.full(y0.size, plan.atol)
-    name, reason, chosen, path, analysis = plan.name, plan.reason, plan.method, plan.path, plan.analysis
-    estimate = plan.reference is not None
-
+    system, y0, analysis = plan.system, plan.y0, plan.analysis
     warnings: list[str] = []
-    if analysis.unresolvable and chosen.implicit:
+    if analysis.unresolvable and plan.method.implicit:
         warnings.append(
             f"a fast mode (|λ| = {analysis.spectral_radius:.3g}/s) swings at the start by about "
             f"{analysis.fast_amplitude:.2g} times the tolerance; the implicit method damps it, so the samples show "
             "the slow motion without that swing"
         )
-    # compiling (first use in this process, or after a change) happens before the clock starts
     before = time.perf_counter()
-    for needed in (chosen, plan.reference):
+    for needed in (plan.method, plan.reference):
         if needed is not None and needed.compiled:
             needed.prepare(system)
     compile_seconds = time.perf_counter() - before
     deadline = time.perf_counter() + wall_seconds
+    t = np.linspace(0.0, plan.t_end, plan.samples)
+    atol = np.full(y0.size, plan.atol)
+    problem = Problem(system, plan.k, y0, t, plan.rtol, atol, bounds(system, y0), deadline, _budget_for(plan.name))
+    return Started(plan, problem, compile_seconds, warnings)
 
-    problem = Problem(system, k, y0, t, plan.rtol, atol_vector, bounds(system, y0), deadline, _budget_for(name))
+
+def integrate(started: Started, events: Sequence[terminal.EventFunction] = ()) -> Stepped | Continued:
+    """Step the plan's method over the problem; ``Continued`` when the run goes on with another plan."""
+    plan, problem = started.plan, started.problem
+    chosen, name = plan.method, plan.name
     options = {"stop_on_stiff": True} if plan.watch_stiffness else {}
-    # the reference of a non-stiff adaptive compiled run does not depend on the run: with a second core
-    # (``beside``), it starts now
-    adaptive = path == "compiled" and not isinstance(chosen, FixedStep)
-    start_ahead = estimate and adaptive and not plan.stiff
-    with beside.own() if beside is not None else nullcontext():  # this run's own core
-        ahead = _reference_ahead(problem, beside) if beside is not None and start_ahead else None
-        try:
-            trajectory = chosen.integrate(problem, **options)
-        except TooMuchWork as exc:
-            if plan.requested != AUTO:
-                raise
-            if isinstance(chosen, FixedStep):
-                # auto never refuses what another method can do: its symplectic pick past its step limit
-                # hands the run to the adaptive default in what is left of the deadline
-                instead = plan.instead_of_symplectic(_why(exc))
-                return run(instead, max(deadline - time.perf_counter(), 0.0), events=events, elsewhere=elsewhere,
-                           alongside=alongside, beside=beside)  # fmt: skip
-            if exc.partial is None:
-                raise
-            # auto's adaptive run out of budget: it answers with the samples it reached, saying how far it got
-            trajectory = exc.partial
+    try:
+        trajectory = chosen.integrate(problem, **options)
+    except TooMuchWork as exc:
+        if plan.requested != AUTO:
+            raise
+        if isinstance(chosen, FixedStep):
+            # auto never refuses what another method can do: its symplectic pick past its step limit
+            # hands the run to the adaptive default in what is left of the deadline
+            return Continued(plan.instead_of_symplectic(_why(exc)), problem.deadline, 0.0)
+        if exc.partial is None:
+            raise
+        # auto's adaptive run out of budget: it answers with the samples it reached, saying how far it got
+        trajectory = exc.partial
     if trajectory.stiff_detected and not trajectory.complete and options:
         # the explicit run found h |lambda| at its stability limit for 15 steps in a row: redo it with Radau IIA
-        # in what is left of the deadline (the reference started beside it is dropped)
-        handed = plan.handed_over(trajectory.t_reached)
-        with python_loop() if handed.python_loop else nullcontext():
-            outcome = run(
-                handed, max(deadline - time.perf_counter(), 0.0), events=events, elsewhere=elsewhere,
-                alongside=alongside, beside=beside,
-            )  # fmt: skip
-        outcome.compile_seconds += compile_seconds
-        return outcome
+        # in what is left of the deadline
+        return Continued(plan.handed_over(trajectory.t_reached), problem.deadline, started.compile_seconds)
+    warnings = list(started.warnings)
     if trajectory.stiff_detected:
         warnings.append(
             f"{name} detected stiffness (its step size is held at the stability limit): an implicit method "
@@ -188,22 +195,45 @@ def run(
         )
     # a terminal event (the block at the foot of its ramp) ends the run there: the estimate
     # compares the samples before it, the run keeps them and the state at the event
-    hit = terminal.first_hit(system, events, trajectory, k) if events else None
+    hit = terminal.first_hit(plan.system, events, trajectory, plan.k) if events else None
     compared = terminal.before(trajectory, hit) if hit is not None else trajectory
     if not trajectory.complete and hit is None:
         warnings.append(trajectory.stop_reason)
     if hit is not None:
         trajectory = terminal.ended(trajectory, hit)
-    # the caller's work on the final trajectory, on this core while the reference finishes on the other
-    done_alongside = alongside(trajectory) if alongside is not None else None
-    compiled = path != "scipy-fallback"
+    return Stepped(started, trajectory, compared, hit, warnings)
+
+
+def reference_first(started: Started) -> Trajectory:
+    """The reference of a run whose reference does not depend on it (``Started.independent_reference``),
+    run before or beside the run; it raises ``TooMuchWork`` as the reference in ``finish`` would."""
+    assert started.independent_reference
+    name, tight = reference_problem(started.problem, stiff=False, compiled=True)
+    tight.max_steps = _budget_for(name)
+    return METHODS[name].integrate(tight)
+
+
+def finish(stepped: Stepped, reference: Trajectory | TooMuchWork | None = None) -> Outcome:
+    """The outcome: the run's trajectory and its error estimate.  ``reference``: the reference's run when it
+    was made already (``reference_first``: its trajectory, or the ``TooMuchWork`` that stopped it); else
+    it runs here, in what is left of the budget."""
+    started = stepped.started
+    plan, problem = started.plan, started.problem
+    warnings = list(stepped.warnings)
+    compiled = plan.path != "scipy-fallback"
     result = (
-        estimate_error(system, problem, chosen, compared, plan.stiff, warnings, compiled, ahead) if estimate else None
+        estimate_error(plan.system, problem, plan.method, stepped.compared, plan.stiff, warnings, compiled, reference)
+        if plan.reference is not None
+        else None
     )
-    fixed = isinstance(chosen, FixedStep)
-    if result is not None and (note := above_tolerance(result, compared, problem.rtol, problem.atol, fixed)):
+    fixed = isinstance(plan.method, FixedStep)
+    if result is not None and (note := above_tolerance(result, stepped.compared, problem.rtol, problem.atol, fixed)):
         warnings.append(note)  # the run did not deliver the tolerance asked for: say so, and why
-    return Outcome(trajectory, name, reason, analysis, result, warnings, compile_seconds, path, hit, done_alongside)
+    trajectory = stepped.trajectory
+    return Outcome(
+        trajectory, plan.name, plan.reason, plan.analysis, result, warnings, started.compile_seconds, plan.path,
+        stepped.hit,
+    )  # fmt: skip
 
 
 def _why(exc: TooMuchWork) -> str:
@@ -220,9 +250,9 @@ def estimate_error(
     stiff: bool,
     warnings: list[str],
     compiled: bool = True,
-    ahead: Future | None = None,
+    reference: Trajectory | TooMuchWork | None = None,
 ) -> Estimate | None:
-    """Run the reference (see ``estimate``) in what is left of the budget and compare."""
+    """Run the reference (see ``estimate``) in what is left of the budget, unless it was run already, and compare."""
     if isinstance(method, FixedStep):
         ref_name, ref_problem, factor = method.name, problem, 1.0 / (1.0 - 2.0**-method.order)
         # a fixed-step run records its substeps and step size
@@ -236,10 +266,12 @@ def estimate_error(
         ref_problem.max_steps = _budget_for(ref_name)
         factor, options = 1.0, {}
         label = f"{ref_name} at rtol={ref_problem.rtol:.1e}, atol={float(ref_problem.atol.max()):.1e}"
-    try:
-        # the same run, already started beside the main one (see _reference_ahead)
-        reference = ahead.result() if ahead is not None else METHODS[ref_name].integrate(ref_problem, **options)
-    except TooMuchWork:
+    if reference is None:  # else the same run, made already before or beside the main one (reference_first)
+        try:
+            reference = METHODS[ref_name].integrate(ref_problem, **options)
+        except TooMuchWork as exc:
+            reference = exc
+    if isinstance(reference, TooMuchWork):
         warnings.append("no error estimate: the reference run did not fit in the time budget")
         return None
     if reference.t.size < trajectory.t.size:

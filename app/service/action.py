@@ -29,8 +29,8 @@ from app.numerics.errors import SimulationError
 from app.numerics.simulate import simulate
 from app.service.cache import Recent
 from app.service.compiled import Compiled
-from app.service.derivations import PROCESS_SCENES, Scenes, held
-from app.service.gates import GATES, Gates, slot
+from app.service.derivations import Scenes
+from app.service.gates import Gates, slot
 from app.service.sentences import as_sentence
 from app.service.simulate_request import check_number, initial_state, parameter_vector
 
@@ -57,12 +57,13 @@ def action_of_derivation(
     key: str | None = None,
     defaults: Mapping[str, float] | None = None,
     span: float = DEFAULT_T_END,
-    gates: Gates = GATES,
-    compiled: Compiled | None = None,
+    gates: Gates,
+    compiled: Compiled,
 ) -> dict[str, Any]:
     """S(ε) of the varied paths of one coordinate, and what the second variation says; refusals raise SimulationError.
 
-    ``compiled``: where the numeric system is kept (the app's scenes', by default this process's)."""
+    ``gates``: how many run at once; ``compiled``: where the numeric system is kept (the app's scenes', or a
+    worker's)."""
     names = list(d.table.names)
     coordinate = names[0] if coordinate is None else coordinate
     if coordinate not in names:
@@ -87,7 +88,7 @@ def action_of_derivation(
     eps = [check_number(e, f"epsilons.{i}") for i, e in enumerate(epsilons)]
     kv = parameter_vector(d, parameters or {})
     y0 = initial_state(d, initial or {}, defaults or {})
-    system, _ = (PROCESS_SCENES.compiled if compiled is None else compiled).get(key, d)
+    system, _ = compiled.get(key, d)
     with slot(gates.slots, "too many simulations are running at once; try again in a few seconds"):
         result = action_of(
             system, kv, y0, T, names.index(coordinate), k, eps, wait_for_compile=not gates.answer_while_compiling
@@ -155,8 +156,8 @@ def relax_of_derivation(
     key: str | None = None,
     defaults: Mapping[str, float] | None = None,
     span: float = DEFAULT_T_END,
-    gates: Gates = GATES,
-    compiled: Compiled | None = None,
+    gates: Gates,
+    compiled: Compiled,
 ) -> dict[str, Any]:
     """The path between two fixed ends that makes the discrete action stationary, beside the shooting solution.
 
@@ -168,7 +169,7 @@ def relax_of_derivation(
     if isinstance(steps, bool) or not isinstance(steps, int) or not 4 <= steps <= STEPS_MAX:
         raise SimulationError(f"steps must be a whole number from 4 to {STEPS_MAX}", "steps")
     kv = parameter_vector(d, parameters or {})
-    system, _ = (PROCESS_SCENES.compiled if compiled is None else compiled).get(key, d)
+    system, _ = compiled.get(key, d)
     terms = action_terms(system)
     n = system.n
     with slot(gates.slots, "too many simulations are running at once; try again in a few seconds"):
@@ -242,13 +243,13 @@ def _of_scene(
     scene_id: str,
     gates: Gates,
     options: dict[str, Any],
-    chapter: Scenes | None = None,
+    chapter: Scenes,
 ):
     """``compute`` (the action, or a relaxed path) on a chapter scene: its derivation, defaults and run length,
-    from ``chapter`` (the app's scenes, by default this process's)."""
+    from ``chapter`` (the app's scenes)."""
     from app.service.derivations import scene
 
-    s, chapter = scene(scene_id), held(chapter)
+    s = scene(scene_id)
     d = chapter.derivation(scene_id)
     return compute(d, key=scene_id, defaults=s.initial, span=s.t_end, gates=gates, compiled=chapter.compiled, **options)
 
@@ -259,9 +260,7 @@ def _of_user(compute: Callable[..., dict[str, Any]], user: Any, options: dict[st
     return derived_job(user, compute, options)
 
 
-def relax_of_scene(
-    scene_id: str, gates: Gates = GATES, chapter: Scenes | None = None, **options: Any
-) -> dict[str, Any]:
+def relax_of_scene(scene_id: str, gates: Gates, chapter: Scenes, **options: Any) -> dict[str, Any]:
     return _of_scene(relax_of_derivation, scene_id, gates, options, chapter)
 
 
@@ -270,9 +269,7 @@ def relax_job(user: Any, options: dict[str, Any]) -> bytes:
     return _of_user(relax_of_derivation, user, options)
 
 
-def action_of_scene(
-    scene_id: str, gates: Gates = GATES, chapter: Scenes | None = None, **options: Any
-) -> dict[str, Any]:
+def action_of_scene(scene_id: str, gates: Gates, chapter: Scenes, **options: Any) -> dict[str, Any]:
     return _of_scene(action_of_derivation, scene_id, gates, options, chapter)
 
 
@@ -280,7 +277,7 @@ CACHED_ANSWERS = 64  # the size of the app's ``Recent`` of actions (app/service/
 
 
 def cached_action_of_scene(
-    scene_id: str, gates: Gates, remembered: Recent, chapter: Scenes | None = None, **options: Any
+    scene_id: str, gates: Gates, remembered: Recent, chapter: Scenes, **options: Any
 ) -> dict[str, Any]:
     """``action_of_scene`` through ``remembered``, the app's last CACHED_ANSWERS answers (a panel asks again
     for the same T)."""

@@ -1,8 +1,8 @@
 """The cores a simulation may use: its own, and a second one for its error estimate's reference run.
 
-``app.numerics.simulate.run`` steps on the caller's thread; given a ``Beside`` it starts the reference
-of a non-stiff compiled run in another thread while the run goes on (the compiled kernels release the
-GIL). This is the server's ``Beside``: a reference runs beside its run only while a core is free.
+A run steps on the caller's thread; ``app.service.simulation_run`` starts the reference of a non-stiff
+compiled run in another thread while the run goes on (the compiled kernels release the GIL), but only
+while a core is free.
 A core is free when this process's runs and references leave one and the machine's load average
 (other processes included) leaves at least half a core idle: on a busy shared machine a second thread
 only adds switching. The load average counts this server's own runs of the last minute, so one client

@@ -2,10 +2,11 @@
 
 A ``Scenes`` holds in memory what the disk caches keep between processes (the pickled derivations,
 the JSON documents, the generated sources).  The web app's services hold one (``Services.chapter``,
-given to routes through ``app.web.deps.ChapterDep``, to the warm-up as an argument); it is this
-process's ``PROCESS_SCENES``, which a worker process or a script (no app) and the service functions
-that are not given one read too, so the web process keeps one copy of each scene's SymPy objects and
-compiled system (docs/state.md says why).  A test builds its own, on a temporary disk if it likes.
+given to routes through ``app.web.deps.ChapterDep``, to the warm-up as an argument); the lifespan gives
+it this process's ``PROCESS_SCENES``, which a worker process or a script (no app) passes explicitly too,
+and which the code the app does not reach reads, so the web process keeps one copy of each scene's SymPy
+objects and compiled system (docs/state.md says why).  A test passes this one or builds its own, on a
+temporary disk if it likes.
 """
 
 from __future__ import annotations
@@ -116,11 +117,6 @@ class Scenes:
 
 # this process's: the web app's services hold it, a worker process or a script (no app) reads it (docs/state.md)
 PROCESS_SCENES = Scenes()
-
-
-def held(chapter: Scenes | None) -> Scenes:
-    """The ``Scenes`` a service function was given (the app's), else this process's."""
-    return PROCESS_SCENES if chapter is None else chapter
 
 
 def derivation(scene_id: str) -> Derivation:

@@ -81,7 +81,7 @@ class Gates:
 
     ``answer_while_compiling`` (a server that compiles its kernels in the background): an ``auto``
     request whose compiled method is not ready yet is answered by scipy instead of waiting on numba.
-    A worker process or a script uses ``GATES``, which runs everything in line and compiles first.
+    A worker's job or a script builds its own (``Gates()``), which runs everything in line and compiles first.
 
     ``wall_seconds``: one run's time budget (``limits.WALL_SECONDS``; a test gives a short one).
     ``compiled``: whether a method's compiled code for a system is ready in this process (its own
@@ -129,6 +129,3 @@ class Gates:
             "or ask for a compiled method",
             self.wall_seconds,
         )
-
-
-GATES = Gates()  # this process's, where no app gives its own (a worker, a script): docs/state.md

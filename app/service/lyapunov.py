@@ -18,7 +18,7 @@ from app.limits import LYAPUNOV_SECONDS
 from app.numerics.errors import TooMuchWork
 from app.numerics.lyapunov import largest_exponent
 from app.service.cache import JsonCache, source_fingerprint
-from app.service.derivations import Scenes, held, scene
+from app.service.derivations import Scenes, scene
 from app.service.simulate_request import parameter_vector
 from app.viz.page_model import power_of_ten
 from app.viz.units import coordinate_units
@@ -29,11 +29,11 @@ def lyapunov_cache(folder: Path | None = None) -> JsonCache:
     return JsonCache("lyapunov", source_fingerprint("engine", "scenes", "numerics"), folder)
 
 
-def measure_scene(scene_id: str, cache: JsonCache | None = None, chapter: Scenes | None = None) -> dict[str, Any]:
+def measure_scene(scene_id: str, cache: JsonCache | None, chapter: Scenes) -> dict[str, Any]:
     """The largest Lyapunov exponent of a scene's default start, with how it was measured (computed once, then
-    from ``cache``, by default the disk's): {"value" (1/s), "t_end", "gap", "every", "settle", "method", "coordinate"}."""
+    from ``cache``, by default the disk's; ``chapter``: the app's scenes, the process's at image build):
+    {"value" (1/s), "t_end", "gap", "every", "settle", "method", "coordinate"}."""
     s = scene(scene_id)
-    chapter = held(chapter)
 
     def compute() -> dict[str, Any]:
         d = chapter.derivation(scene_id)
@@ -74,12 +74,12 @@ def sentence(measured: dict[str, Any], unit: str) -> str:
     )
 
 
-def run_note(scene_id: str, cache: JsonCache | None = None, chapter: Scenes | None = None) -> str:
+def run_note(scene_id: str, cache: JsonCache | None, chapter: Scenes) -> str:
     """The scene's run note, opened by its measured exponent when the scene asks for one."""
     s = scene(scene_id)
     if not s.lyapunov_seconds:
         return s.run_note
-    units = coordinate_units(held(chapter).document(scene_id), scene=True)["units"]
+    units = coordinate_units(chapter.document(scene_id), scene=True)["units"]
     unit = units[s.system.coordinates[0]]
     try:
         measured = measure_scene(scene_id, cache, chapter)
@@ -92,9 +92,9 @@ def run_note(scene_id: str, cache: JsonCache | None = None, chapter: Scenes | No
 
 def warm_all() -> None:
     """Measure every scene that asks for its exponent (run at set-up, see app.service.warm)."""
-    from app.service.derivations import SCENES
+    from app.service.derivations import PROCESS_SCENES, SCENES
 
     cache = lyapunov_cache()
     for scene_id, s in SCENES.items():
         if s.lyapunov_seconds:
-            measure_scene(scene_id, cache)
+            measure_scene(scene_id, cache, PROCESS_SCENES)

@@ -42,8 +42,8 @@ from app.numerics.frequency import measured_omega
 from app.numerics.simulate import simulate
 from app.service.cache import JsonCache, Recent, source_fingerprint
 from app.service.compiled import Compiled
-from app.service.derivations import PROCESS_SCENES, Scenes, held
-from app.service.gates import GATES, Gates
+from app.service.derivations import Scenes
+from app.service.gates import Gates
 from app.service.simulate_request import parameter_vector
 from app.viz.panels import oscillating_equilibria
 
@@ -90,31 +90,35 @@ def from_document(block: Sequence[Mapping[str, Any]]) -> list[AtRest]:
 def measure(
     d: Derivation,
     doc: Mapping[str, Any],
+    *,
+    gates: Gates,
+    compiled: Compiled,
     key: str | None = None,
-    gates: Gates = GATES,
     parameters: Mapping[str, float] | None = None,
 ) -> list[dict[str, Any]]:
     """``measured`` of a derivation document's ``normal_modes`` block (a user system's, in a worker)."""
-    return measured(d, from_document(doc.get("normal_modes") or []), key, gates, parameters)
+    equilibria = from_document(doc.get("normal_modes") or [])
+    return measured(d, equilibria, gates=gates, compiled=compiled, key=key, parameters=parameters)
 
 
 def measured(
     d: Derivation,
     equilibria: Sequence[AtRest],
+    *,
+    gates: Gates,
+    compiled: Compiled,
     key: str | None = None,
-    gates: Gates = GATES,
     parameters: Mapping[str, float] | None = None,
-    compiled: Compiled | None = None,
 ) -> list[dict[str, Any]]:
     """Predicted and measured omega of every oscillating mode at every equilibrium at rest.
 
     ``equilibria`` are at ``parameters`` (default: the declared values); ``compiled``: where the numeric
-    system is kept (the app's scenes', by default this process's)."""
+    system is kept (the app's scenes', or a worker's)."""
     names = list(d.table.names)
     n = len(names)
     k = parameter_vector(d, parameters or {})
     used = dict(zip((p.name for p in d.system.parameters), map(float, k), strict=True))
-    system, _ = (PROCESS_SCENES.compiled if compiled is None else compiled).get(key, d)
+    system, _ = compiled.get(key, d)
     out = []
     for e in equilibria:
         modes = []
@@ -254,44 +258,40 @@ AT_CACHE_SIZE = 256  # the size of the app's ``Recent`` of modes at given values
 def modes_at(
     scene_id: str,
     parameters: Mapping[str, float],
-    gates: Gates = GATES,
-    remembered: Recent | None = None,
-    chapter: Scenes | None = None,
+    gates: Gates,
+    remembered: Recent | None,
+    chapter: Scenes,
 ) -> list[dict[str, Any]]:
     """A scene's modes, predicted and measured, at the given parameter values (the rest at their defaults),
-    through ``remembered`` (the app's recent answers) when given; ``chapter``: the app's scenes (by default
-    this process's)."""
-    chapter = held(chapter)
+    through ``remembered`` (the app's recent answers) when given; ``chapter``: the app's scenes."""
     d = chapter.derivation(scene_id)
     k = parameter_vector(d, parameters)  # refuses unknown names and values out of range
 
     def compute() -> list[dict[str, Any]]:
         given = dict(zip((p.name for p in d.system.parameters), map(float, k), strict=True))
-        return measured(d, predicted_at(scene_id, d, k), scene_id, gates, given, chapter.compiled)
+        equilibria = predicted_at(scene_id, d, k)
+        return measured(d, equilibria, gates=gates, compiled=chapter.compiled, key=scene_id, parameters=given)
 
     return compute() if remembered is None else remembered.get((scene_id, tuple(map(float, k))), compute)
 
 
-def measure_scene(
-    scene_id: str, gates: Gates = GATES, cache: JsonCache | None = None, chapter: Scenes | None = None
-) -> list[dict[str, Any]]:
+def measure_scene(scene_id: str, gates: Gates, cache: JsonCache | None, chapter: Scenes) -> list[dict[str, Any]]:
     """A scene's measured modes (computed once, then from ``cache``, by default the disk's); ``chapter``: the
-    app's scenes (by default this process's)."""
-    chapter = held(chapter)
+    app's scenes (the process's at image build)."""
 
     def compute() -> list[dict[str, Any]]:
         d = chapter.derivation(scene_id)
-        return measured(d, at_rest(scene_modes(scene_id)), scene_id, gates, compiled=chapter.compiled)
+        return measured(d, at_rest(scene_modes(scene_id)), gates=gates, compiled=chapter.compiled, key=scene_id)
 
     return (cache or measured_cache()).get(scene_id, compute)
 
 
 def warm_all() -> None:
     """Measure every scene that has an equilibrium with an oscillating mode (run at set-up, see app.service.warm)."""
-    from app.service.derivations import SCENES
+    from app.service.derivations import PROCESS_SCENES, SCENES
 
-    cache = measured_cache()
+    cache, gates = measured_cache(), Gates()  # a script's: in line, compiled first
     for scene_id in SCENES:
         if at_rest(scene_modes(scene_id)):
-            measure_scene(scene_id, cache=cache)
+            measure_scene(scene_id, gates, cache, PROCESS_SCENES)
             _parametric(scene_id)  # the closed forms the sliders' modes are evaluated from

@@ -27,8 +27,8 @@ from app.numerics.errors import SimulationError
 from app.numerics.poincare import hamiltonian, section
 from app.service.cache import Recent
 from app.service.compiled import Compiled
-from app.service.derivations import PROCESS_SCENES, Scenes, held
-from app.service.gates import GATES, Gates
+from app.service.derivations import Scenes
+from app.service.gates import Gates
 from app.service.simulate_request import check_number, initial_state, parameter_vector, setting
 
 COUNT_MAX = 12  # orbits per section
@@ -49,12 +49,13 @@ def section_of_derivation(
     t_end: float = DEFAULT_T_END,
     key: str | None = None,
     defaults: Mapping[str, float] | None = None,
-    gates: Gates = GATES,
-    compiled: Compiled | None = None,
+    gates: Gates,
+    compiled: Compiled,
 ) -> dict[str, Any]:
     """The section q_coordinate = value of orbits with h = energy (or h at ``initial``); refusals raise SimulationError.
 
-    ``compiled``: where the numeric system is kept (the app's scenes', by default this process's)."""
+    ``gates``: how many run at once; ``compiled``: where the numeric system is kept (the app's scenes', or a
+    worker's)."""
     names = list(d.table.names)
     if len(names) < 2:
         raise SimulationError("a Poincaré section needs at least two coordinates; this system has one", "coordinate")
@@ -64,10 +65,10 @@ def section_of_derivation(
     if direction not in (1, -1):
         raise SimulationError("direction must be 1 (crossing upward) or -1 (downward)", "direction")
     value = check_number(value, "value")
-    count = int(setting(count, DEFAULT_COUNT, 1, COUNT_MAX, "count"))
-    t_end = setting(t_end, DEFAULT_T_END, 1e-6, T_END_MAX, "t_end")
+    count = int(setting(count, DEFAULT_COUNT, limits.Range(1, COUNT_MAX), "count"))
+    t_end = setting(t_end, DEFAULT_T_END, limits.Range(1e-6, T_END_MAX), "t_end")
     k = parameter_vector(d, parameters or {})
-    system, observables = (PROCESS_SCENES.compiled if compiled is None else compiled).get(key, d)
+    system, observables = compiled.get(key, d)
     if energy is None:
         y0 = initial_state(d, initial or {}, defaults or {})
         energy = float(hamiltonian(observables, y0, k)[0])
@@ -112,14 +113,12 @@ def section_of_derivation(
     }
 
 
-def section_of_scene(
-    scene_id: str, gates: Gates = GATES, chapter: Scenes | None = None, **options: Any
-) -> dict[str, Any]:
+def section_of_scene(scene_id: str, gates: Gates, chapter: Scenes, **options: Any) -> dict[str, Any]:
     """A scene's Poincaré section; the energy defaults to h at the scene's initial state.  ``chapter``: the
-    app's scenes (by default this process's)."""
+    app's scenes."""
     from app.service.derivations import scene
 
-    s, chapter = scene(scene_id), held(chapter)
+    s = scene(scene_id)
     d = chapter.derivation(scene_id)
     return section_of_derivation(d, key=scene_id, defaults=s.initial, gates=gates, compiled=chapter.compiled, **options)
 
@@ -128,7 +127,7 @@ CACHED_SECTIONS = 32  # the size of the app's ``Recent`` of sections (app/servic
 
 
 def cached_section_of_scene(
-    scene_id: str, gates: Gates, remembered: Recent, chapter: Scenes | None = None, **options: Any
+    scene_id: str, gates: Gates, remembered: Recent, chapter: Scenes, **options: Any
 ) -> dict[str, Any]:
     """``section_of_scene`` through ``remembered``, the app's last CACHED_SECTIONS answers (a page asks again
     after each run)."""

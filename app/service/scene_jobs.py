@@ -8,9 +8,10 @@ from __future__ import annotations
 from typing import Any
 
 from app.numerics.plan import Plan
-from app.numerics.simulate import Outcome, run
+from app.numerics.simulate import Outcome
 from app.scenes import SCENES
 from app.service.cores import CORES
+from app.service.simulation_run import run_served
 
 
 def load_scenes() -> int:
@@ -28,4 +29,5 @@ def run_scene_plan(scene_id: str, portable: dict[str, Any], wall_seconds: float)
 
     system, _ = PROCESS_SCENES.system(scene_id)
     events = PROCESS_SCENES.compiled.events(SCENES[scene_id], system)
-    return run(Plan.rebuilt(system, portable), wall_seconds, events=events, beside=CORES)
+    outcome, _ = run_served(Plan.rebuilt(system, portable), wall_seconds, events, CORES)
+    return outcome

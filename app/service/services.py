@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from app.service.answers import Answers
 from app.service.checking import Checking
 from app.service.classroom.service import Classroom
-from app.service.derivations import PROCESS_SCENES, Scenes
+from app.service.derivations import Scenes
 from app.service.simulation import Gates, load_scenes
 from app.service.user_systems import UserSystems
 from app.service.worker import WorkerPool
@@ -36,13 +36,13 @@ class Services:
     answers: Answers  # what the app remembers of scenes' answers and the examples (app/service/answers.py)
     # the scenes' derivations, documents and compiled systems (app/service/derivations.py); the scenes' worker
     # process (``scenes`` above) keeps its own
-    chapter: Scenes = PROCESS_SCENES
+    chapter: Scenes
 
     @classmethod
-    def start(cls, config: Settings, chapter: Scenes | None = None) -> Services:
-        """The services of an app; ``chapter``: the scenes' state it serves, by default this process's (one copy
-        of the chapter's SymPy objects and systems per process, shared with the code the app does not reach,
-        docs/state.md); a test may give its own."""
+    def start(cls, config: Settings, chapter: Scenes) -> Services:
+        """The services of an app; ``chapter``: the scenes' state it serves (the lifespan gives this process's,
+        one copy of the chapter's SymPy objects and systems per process, shared with the code the app does not
+        reach, docs/state.md; a test may give its own)."""
         pool = WorkerPool(config.worker_count, config.job_memory_mb, retire_mb=config.retire_rss_mb)
         users = UserSystems(pool, config=config)
         # a scene's run that steps in Python (scipy) holds the GIL for its whole run: in the web
@@ -56,7 +56,7 @@ class Services:
         checking = Checking(users, config)
         return cls(
             pool, users, checking, gates, scenes, Classroom(checking, config), Answers.start(config.cache_dir),
-            PROCESS_SCENES if chapter is None else chapter,
+            chapter,
         )  # fmt: skip
 
     def warm(self, after: threading.Thread | None = None) -> threading.Thread:

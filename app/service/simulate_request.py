@@ -71,8 +71,11 @@ def initial_state(d: Derivation, given: Mapping[str, float], defaults: Mapping[s
     return y0
 
 
-def setting(value: Any, default: float, low: float, high: float, where: str) -> float:
+def setting(value: Any, default: float, allowed: limits.Range, where: str) -> float:
+    """A request's setting (its default when not given), refused outside ``allowed``."""
     value = default if value is None else check_number(value, where)
-    if not low <= value <= high:
-        raise SimulationError(f"{where} = {value:g} is outside the allowed range [{low:g}, {high:g}]", where)
+    if not allowed.low <= value <= allowed.high:
+        raise SimulationError(
+            f"{where} = {value:g} is outside the allowed range [{allowed.low:g}, {allowed.high:g}]", where
+        )
     return value

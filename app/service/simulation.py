@@ -4,8 +4,8 @@
 a scene's derivation, the user-system worker with a user's.  It checks the
 request against the system's declared ranges (``simulate_request``), takes
 (once per system and process) the numeric functions (``compiled``), waits for
-a slot (``gates``), runs ``app.numerics.simulate`` and returns the
-documented JSON:
+a slot (``gates``), runs the plan where it belongs (``simulation_run``) and
+returns the documented JSON:
 
     {"t", "state": {q, q_dot}, "energy", "hamiltonian", "conserved": {name: [...]},
      "constraint_forces": {name: [...]}, "stats": {...}}
@@ -27,12 +27,12 @@ from app.numerics import limits, methods
 from app.numerics.errors import SimulationError
 from app.numerics.methods import AUTO
 from app.numerics.plan import Plan, plan
-from app.numerics.simulate import Outcome, run
+from app.numerics.simulate import Outcome
 from app.numerics.start import why_not_at_start
 from app.scenes import SCENES, Scene
 from app.service.compiled import Compiled
 from app.service.cores import CORES
-from app.service.gates import GATES, SLOTS, Gates
+from app.service.gates import SLOTS, Gates
 from app.service.scene_jobs import load_scenes, run_scene_plan
 from app.service.simulate_request import (
     SimulationInput,
@@ -41,6 +41,7 @@ from app.service.simulate_request import (
     setting,
 )
 from app.service.simulation_result import document, observe
+from app.service.simulation_run import run_served, steps_in_python
 from app.service.warm_kernels import start_warming, warm_all
 from app.settings import settings
 
@@ -52,7 +53,7 @@ if TYPE_CHECKING:
 # document (simulation_result), the warm-up (warm_kernels) and the scenes' worker jobs (scene_jobs). The app's
 # start, its services and the worker pool name these through this module:
 __all__ = [
-    "GATES", "SLOTS", "Gates", "load_scenes", "simulate_derivation", "simulate_scene", "start_warming", "warm_all",
+    "SLOTS", "Gates", "load_scenes", "simulate_derivation", "simulate_scene", "start_warming", "warm_all",
 ]  # fmt: skip
 
 HEAVY_SPAN = 10  # times the scene's t_end (or the default 10 s)
@@ -63,26 +64,25 @@ def simulate_derivation(
     derivation: Derivation,
     request: SimulationInput,
     *,
+    gates: Gates,
+    compiled: Compiled,
     constraint_forces: Sequence[ConstraintForce] | None = None,
     scene_id: str | None = None,
-    gates: Gates = GATES,
-    compiled: Compiled | None = None,
 ) -> dict[str, Any]:
     """Simulate a derived system as the request asks; a refusal raises SimulationError, a full server OverCapacity.
 
-    ``constraint_forces``: the forces observed along the run (by default the derivation's own); ``compiled``:
-    where its numeric system is kept (the scenes' of the app, by default this process's)."""
-    if compiled is None:
-        from app.service.derivations import PROCESS_SCENES
-
-        compiled = PROCESS_SCENES.compiled
+    ``gates``: how many run at once (the app's, or a worker's own); ``compiled``: where its numeric system is
+    kept (the app's scenes', or the worker's); ``constraint_forces``: the forces observed along the run (by
+    default the derivation's own)."""
     scene: Scene | None = SCENES.get(scene_id) if scene_id else None
     k = parameter_vector(derivation, request.parameters or {})
     y0 = initial_state(derivation, request.initial or {}, scene.initial if scene else {})
-    t_end = setting(request.t_end, scene.t_end if scene else DEFAULT_T_END, 1e-9, limits.T_END_MAX, "t_end")
-    rtol = setting(request.rtol, limits.RTOL_DEFAULT, limits.RTOL_MIN, limits.RTOL_MAX, "rtol")
-    atol = setting(request.atol, limits.ATOL_DEFAULT, limits.ATOL_MIN, limits.ATOL_MAX, "atol")
-    samples = int(setting(request.samples, limits.SAMPLES_DEFAULT, limits.SAMPLES_MIN, limits.SAMPLES_MAX, "samples"))
+    # the ranges the API's schema documents (limits.RANGES): a caller without the schema is held to them too
+    ranges = limits.RANGES
+    t_end = setting(request.t_end, scene.t_end if scene else DEFAULT_T_END, ranges["t_end"], "t_end")
+    rtol = setting(request.rtol, limits.RTOL_DEFAULT, ranges["rtol"], "rtol")
+    atol = setting(request.atol, limits.ATOL_DEFAULT, ranges["atol"], "atol")
+    samples = int(setting(request.samples, limits.SAMPLES_DEFAULT, ranges["samples"], "samples"))
     method = request.method or AUTO
     precision = getattr(request, "precision", None) or "full"
     if method != AUTO:
@@ -117,29 +117,25 @@ def simulate_derivation(
             )  # fmt: skip
 
     with ExitStack() as held:
-        if planned.python_loop:
+        if steps_in_python(planned):
             held.enter_context(gates.python_loop())
         elif heavy:
             held.enter_context(gates.heavy_run())
         held.enter_context(gates.any())
-        outcome = run(
-            planned, gates.wall_seconds, python_loop=gates.python_loop, events=compiled.events(scene, system),
-            elsewhere=elsewhere, beside=CORES,
+        outcome, observed = run_served(
+            planned, gates.wall_seconds, compiled.events(scene, system), CORES, throttle=gates.python_loop,
+            elsewhere=elsewhere,
             # the series while the error estimate's reference run finishes beside
             alongside=lambda trajectory: observe(system, observables, trajectory, k, rtol, precision),
         )  # fmt: skip
-    return document(system, observables, outcome, k, rtol, precision)
+    return document(system, observables, outcome, k, rtol, precision, observed)
 
 
-def simulate_scene(
-    scene_id: str, request: SimulationInput, gates: Gates = GATES, scenes: Scenes | None = None
-) -> dict[str, Any]:
-    """Simulate a chapter scene; ``scenes``: where its derivation and system are kept (the app's, by default
-    this process's)."""
-    from app.service.derivations import PROCESS_SCENES, scene
+def simulate_scene(scene_id: str, request: SimulationInput, gates: Gates, scenes: Scenes) -> dict[str, Any]:
+    """Simulate a chapter scene; ``scenes``: where its derivation and system are kept (the app's)."""
+    from app.service.derivations import scene
 
     scene(scene_id)
-    scenes = PROCESS_SCENES if scenes is None else scenes
     with gates.in_flight.serving():  # the warm-up thread waits meanwhile
         return simulate_derivation(
             scenes.derivation(scene_id), request, scene_id=scene_id, gates=gates, compiled=scenes.compiled
@@ -147,5 +143,7 @@ def simulate_scene(
 
 
 if __name__ == "__main__":  # at image build: python -m app.service.simulation
-    for name, seconds in warm_all().items():
+    from app.service.derivations import PROCESS_SCENES
+
+    for name, seconds in warm_all(PROCESS_SCENES).items():
         print(f"{name}: {seconds:.2f} s")

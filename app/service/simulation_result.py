@@ -52,13 +52,18 @@ def observe(
 
 
 def document(
-    system: NumericSystem, observables: Observables, outcome, k: np.ndarray, rtol: float, precision: str = "full"
+    system: NumericSystem,
+    observables: Observables,
+    outcome,
+    k: np.ndarray,
+    rtol: float,
+    precision: str = "full",
+    observed: Observed | None = None,
 ) -> dict[str, Any]:
     """The result document; ``precision="display"`` rounds the state and forces (never ``stats``, E, h or the
-    conserved momenta, whose changes are plotted) to DISPLAY_DIGITS."""
+    conserved momenta, whose changes are plotted) to DISPLAY_DIGITS.  ``observed``: the series already made
+    of the outcome's trajectory (while the reference ran, see simulate_derivation); else they are made here."""
     tr = outcome.trajectory
-    # the series, made while the reference ran (see simulate_derivation) unless the run went elsewhere
-    observed = outcome.alongside
     if observed is None:
         observed = observe(system, observables, tr, k, rtol, precision)
     summary = dict(observed.summary)
@@ -92,7 +97,9 @@ def document(
     return {
         **observed.series,
         "stats": _finite(stats),
-        "trust": _finite(judge(stats["error_estimate"], stats["error_estimate_by_coordinate"], system.coordinates, tr.y)),
+        "trust": _finite(
+            judge(stats["error_estimate"], stats["error_estimate_by_coordinate"], system.coordinates, tr.y)
+        ),
         # the same right-hand side as JavaScript: the page integrates a preview while an input moves
         "preview": {
             "rhs": system.browser,

@@ -124,6 +124,16 @@ def guarded(job: Callable[[], Any], encode: Callable[[Any], bytes] = dumps) -> b
         ) from None
 
 
+def in_this_worker() -> dict[str, Any]:
+    """What a job runs with in a worker process, which has no app: gates of its own (a worker runs one job at
+    a time, in line, compiling first) and the process's compiled systems (``PROCESS_SCENES``, which lives as
+    long as the worker), given to the service functions as ``gates`` and ``compiled``."""
+    from app.service.derivations import PROCESS_SCENES
+    from app.service.gates import Gates
+
+    return {"gates": Gates(), "compiled": PROCESS_SCENES.compiled}
+
+
 def derive_job(user: UserSystem) -> bytes:
     """Worker job: the derivation JSON of a user system (as for a scene), telling the page which part it is on
     (app/service/progress.py, under the same key as the derivation's cache)."""
@@ -143,16 +153,14 @@ def simulate_job(user: UserSystem, request: Any) -> bytes:
     def run() -> dict[str, Any]:
         d = derive_checked(user)
         try:
-            return simulate_derivation(d, request)
+            return simulate_derivation(d, request, **in_this_worker())
         except SimulationError as exc:
             raise located(exc, simulation_loc(user, exc.part)) from None
 
     return guarded(run)
 
 
-def export_job(
-    user: UserSystem, fmt: str, initial: dict[str, float], t_end: float | None, document: bytes
-) -> bytes:
+def export_job(user: UserSystem, fmt: str, initial: dict[str, float], t_end: float | None, document: bytes) -> bytes:
     """Worker job: a user system as a notebook, script or LaTeX document (JSON-wrapped).
 
     ``document`` is the system's derivation JSON (from ``derive_job``), so only printing is left to do."""
@@ -181,7 +189,7 @@ def derived_job(user: UserSystem, compute: Callable[..., dict[str, Any]], option
     def run() -> dict[str, Any]:
         d = derive_checked(user)
         try:
-            return compute(d, **options)
+            return compute(d, **in_this_worker(), **options)
         except SimulationError as exc:
             raise located(exc, simulation_loc(user, exc.part)) from None
 
@@ -203,6 +211,6 @@ def modes_job(user: UserSystem, normal_modes: list[dict[str, Any]]) -> bytes:
     from app.service.modes import measure
 
     def run() -> list[dict[str, Any]]:
-        return measure(derive_checked(user), {"normal_modes": normal_modes})
+        return measure(derive_checked(user), {"normal_modes": normal_modes}, **in_this_worker())
 
     return guarded(run)

@@ -18,7 +18,7 @@ def main(more: Sequence[tuple[str, Callable[[], object]]] = ()) -> None:
     """Each step in turn, with its time; ``more``: steps of the layers above (app.web.warm)."""
     steps: list[tuple[str, Callable[[], object]]] = [
         ("derivations", derivations.warm_all),
-        ("compiled integrators", simulation.warm_all),
+        ("compiled integrators", lambda: simulation.warm_all(derivations.PROCESS_SCENES)),  # this process's scenes
         ("work-precision reports", work_precision.warm_all),
         ("measured normal modes", modes.warm_all),
         ("Lyapunov exponents", lyapunov.warm_all),

@@ -17,7 +17,7 @@ if TYPE_CHECKING:
     from app.service.derivations import Scenes
 
 
-def warm_all(give_way: Callable[[], object] = lambda: None, scenes: Scenes | None = None) -> dict[str, float]:
+def warm_all(scenes: Scenes, give_way: Callable[[], object] = lambda: None) -> dict[str, float]:
     """Compile (or load from numba's disk cache) every kernel and every scene's right-hand sides.
 
     Run in the background at start-up and at image build (``python -m app.service.simulation``).
@@ -25,11 +25,8 @@ def warm_all(give_way: Callable[[], object] = lambda: None, scenes: Scenes | Non
     derivation and numeric system, then ``auto``'s compiled default (``NONSTIFF``: what it picks most
     often, and the error reference) on it; then the other compiled kernels.  A method is used the
     moment it is ready.  ``give_way`` runs between steps (the server's: wait while requests are being
-    served).  ``scenes``: whose systems (the app's; by default this process's).  Returns the seconds spent
-    per item."""
-    from app.service.derivations import PROCESS_SCENES
-
-    scenes = PROCESS_SCENES if scenes is None else scenes
+    served).  ``scenes``: whose systems (the app's, or the process's at image build).  Returns the seconds
+    spent per item."""
     spent: dict[str, float] = {}
     # scipy first: it answers while the kernels load, and once imported here (under its lock) no kernel
     # module that reads scipy's tables can be importing it half-way beside a request's fallback
@@ -68,7 +65,7 @@ def start_warming(scenes: Scenes, gates: Gates) -> threading.Thread:
     the app's ``Gates`` answer from scipy meanwhile (``answer_while_compiling``, app/service/services.py)."""
     thread = threading.Thread(
         target=warm_all,
-        args=(lambda: gates.in_flight.wait_quiet(GIVE_WAY_SECONDS), scenes),
+        args=(scenes, lambda: gates.in_flight.wait_quiet(GIVE_WAY_SECONDS)),
         name="warm-up",
         daemon=True,
     )

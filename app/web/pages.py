@@ -38,12 +38,12 @@ def scene_info(scene_id: str, doc: dict[str, Any]) -> dict[str, Any]:
 
 
 def page_model(
-    scene_id: str, pages: PageCache | None = None, chapter: Scenes | None = None, answers: Answers | None = None
+    scene_id: str, pages: PageCache | None, chapter: Scenes, answers: Answers | None = None
 ) -> dict[str, Any]:
-    """The scene's page model, through the app's ``pages`` (rebuilt there only if its derivation document changed);
-    the document from the app's ``chapter`` (by default this process's), what was measured from the app's
-    ``answers`` (by default the disk's caches)."""
-    doc = (derivations.PROCESS_SCENES if chapter is None else chapter).document(scene_id)
+    """The scene's page model, through the app's ``pages`` (rebuilt there only if its derivation document changed;
+    None: built anew); the document from the app's ``chapter``, what was measured from the app's ``answers``
+    (by default the disk's caches)."""
+    doc = chapter.document(scene_id)
 
     def build() -> dict[str, Any]:
         s = derivations.scene(scene_id)

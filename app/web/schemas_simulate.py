@@ -1,7 +1,8 @@
 """Request and response models of POST /api/scenes/{id}/simulate (and the user-system twin).
 
 Every float is finite (JSON's NaN and Infinity, which Python's json accepts,
-are a 422); the ranges are the numerics' own limits (app/numerics/limits.py).
+are a 422); the settings' ranges are ``limits.RANGES`` (app/numerics/limits.py),
+the table the service's checks read too.
 Ranges that depend on the system (parameter ranges, which names exist) are
 checked by app.service.simulation with messages naming the field.
 """
@@ -23,6 +24,12 @@ Values = Annotated[
     dict[Annotated[str, Field(max_length=40)], Annotated[float, Field(ge=-limits.VALUE_MAX, le=limits.VALUE_MAX)]],
     Field(max_length=limits.MAX_NAMES),
 ]
+
+
+def within(name: str) -> dict[str, float]:
+    """A setting's range (``limits.RANGES``) as a field's bounds."""
+    allowed = limits.RANGES[name]
+    return {"ge": allowed.low, "le": allowed.high}
 
 
 class SimulateRequest(BaseModel):
@@ -47,13 +54,11 @@ class SimulateRequest(BaseModel):
     initial: Values = Field(
         description="Initial coordinates and velocities by name (q and q_dot); missing ones default from the scene."
     )
-    t_end: float | None = Field(None, gt=0, le=limits.T_END_MAX, description="End time in seconds.")
+    t_end: float | None = Field(None, **within("t_end"), description="End time in seconds.")
     method: Method = Field("auto", description="'auto' chooses per scene and request and says why in stats.reason.")
-    rtol: float | None = Field(None, ge=limits.RTOL_MIN, le=limits.RTOL_MAX, description="Relative tolerance.")
-    atol: float | None = Field(None, ge=limits.ATOL_MIN, le=limits.ATOL_MAX, description="Absolute tolerance.")
-    samples: int | None = Field(
-        None, ge=limits.SAMPLES_MIN, le=limits.SAMPLES_MAX, description="Evenly spaced output times from 0 to t_end."
-    )
+    rtol: float | None = Field(None, **within("rtol"), description="Relative tolerance.")
+    atol: float | None = Field(None, **within("atol"), description="Absolute tolerance.")
+    samples: int | None = Field(None, **within("samples"), description="Evenly spaced output times from 0 to t_end.")
     precision: Precision = Field(
         "full",
         description="'full': every float as computed; 'display': the state and constraint forces rounded to 7 "

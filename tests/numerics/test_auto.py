@@ -87,13 +87,13 @@ def test_the_stiff_hand_over_goes_to_the_compiled_radau_or_scipys_while_it_compi
     assert planned.path == "compiled" and planned.watch_stiffness
     handed = planned.handed_over(3.0)
     assert handed.name == STIFF and handed.path == "compiled" and handed.reference.name == STIFF
-    assert not handed.python_loop
+    assert handed.method.compiled and handed.reference.compiled
     # a server that answers while compiling: before the kernel is loaded, scipy's Radau takes the run over
     serving = plan(s, np.array([1.0, 9.81, 1.0])[: len(s.parameter_names)], np.array([1.0, 0.0]), 10.0, 50,
                    "auto", 1e-8, 1e-10, wait_for_compile=False)  # fmt: skip
     monkeypatch.setattr(jit, "ready", lambda name: False)
     handed = serving.handed_over(3.0)
-    assert handed.name == FALLBACK_STIFF and handed.path == "scipy" and handed.python_loop
+    assert handed.name == FALLBACK_STIFF and handed.path == "scipy" and not handed.method.compiled
 
 
 def test_auto_out_of_time_answers_with_what_it_reached(monkeypatch):

@@ -8,8 +8,9 @@ import pytest
 
 from app.numerics.simulate import simulate
 from app.scenes import SCENES
-from app.service import compiled, simulation
+from app.service import compiled
 from app.service.derivations import derivation
+from tests.served import scene_run
 
 G, ALPHA = 9.81, 0.5
 
@@ -20,7 +21,7 @@ def request(**fields):
 
 
 def test_the_block_stops_at_the_foot_with_the_defaults():
-    doc = simulation.simulate_scene("incline-block", request())
+    doc = scene_run("incline-block", request())
     event = doc["stats"]["event"]
     # up the slope at 3 m/s and back: X = 0 again at t = 2 v0 / (g sin alpha)
     assert event["name"] == "foot of the ramp"
@@ -33,17 +34,17 @@ def test_the_block_stops_at_the_foot_with_the_defaults():
 
 
 def test_a_run_that_stays_on_the_ramp_has_no_event():
-    doc = simulation.simulate_scene("incline-block", request(t_end=1.0, samples=100))
+    doc = scene_run("incline-block", request(t_end=1.0, samples=100))
     assert doc["stats"]["event"] is None and len(doc["t"]) == 100 and doc["t"][-1] == 1.0
 
 
 def test_a_start_below_the_foot_ends_at_once():
-    doc = simulation.simulate_scene("incline-block", request(initial={"X": -0.5}))
+    doc = scene_run("incline-block", request(initial={"X": -0.5}))
     assert doc["stats"]["event"]["t"] == 0.0 and list(doc["t"]) == [0.0]
 
 
 def test_scenes_without_events_run_to_the_end():
-    doc = simulation.simulate_scene("simple-pendulum", request(samples=50))
+    doc = scene_run("simple-pendulum", request(samples=50))
     assert doc["stats"]["event"] is None and doc["t"][-1] == 10.0
 
 
@@ -60,7 +61,7 @@ def test_every_method_stops_at_the_same_instant():
 
 def test_the_wedge_block_pushed_up_stops_at_the_top_corner():
     """D < 0 would put the block above the wedge's top corner, off its slope (prof-f 12): the run ends at D = 0."""
-    doc = simulation.simulate_scene("movable-incline", request(initial={"D": 0.2, "D_dot": 3.0 * -1}))
+    doc = scene_run("movable-incline", request(initial={"D": 0.2, "D_dot": 3.0 * -1}))
     event = doc["stats"]["event"]
     assert event["name"] == "top corner" and "top corner" in event["message"]
     D = np.array(doc["state"]["D"])

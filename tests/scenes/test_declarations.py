@@ -4,7 +4,7 @@ import pytest
 
 from app.engine.dimensions import number_beside_units, system_dimensions
 from app.scenes import SCENES
-from app.service.derivations import derivation, derivation_document
+from app.service.derivations import PROCESS_SCENES, derivation, derivation_document
 from app.viz.panels import OPTIONAL, constant_accelerations
 from app.web.pages import page_model
 
@@ -78,7 +78,7 @@ def test_panels_are_what_the_scene_needs(scene_id):
     d = derivation(scene_id)
     # a scene declares only optional panels; the page adds every other panel its derivation supports
     assert set(s.panels) <= set(OPTIONAL) and len(set(s.panels)) == len(s.panels)
-    panels = set(page_model(scene_id)["panels"])
+    panels = set(page_model(scene_id, None, PROCESS_SCENES)["panels"])
     assert "energy" in panels and "phase" in panels
     # the error-against-run-time chart only where the motion is not a polynomial in t
     assert ("work-precision" in panels) == (not constant_accelerations(derivation_document(scene_id)))

@@ -6,6 +6,7 @@ import pytest
 
 from app.service import action, simulation
 from app.service.cache import Recent
+from app.service.derivations import PROCESS_SCENES
 from app.service.user_checks import InvalidSystem, checked
 
 OSCILLATOR = {
@@ -18,12 +19,20 @@ OSCILLATOR = {
 def test_scene_answers_are_kept_per_request():
     options = {"t_end": 0.5, "epsilons": [0.1]}
     remembered = Recent(action.CACHED_ANSWERS)  # the app's own, as app/service/answers.py builds it
-    first = action.cached_action_of_scene("simple-pendulum", simulation.GATES, remembered, **options)
-    assert action.cached_action_of_scene("simple-pendulum", simulation.GATES, remembered, **options) is first
-    other = action.cached_action_of_scene("simple-pendulum", simulation.GATES, remembered, t_end=0.6, epsilons=[0.1])
+    first = action.cached_action_of_scene("simple-pendulum", simulation.Gates(), remembered, PROCESS_SCENES, **options)
+    assert (
+        action.cached_action_of_scene("simple-pendulum", simulation.Gates(), remembered, PROCESS_SCENES, **options)
+        is first
+    )
+    other = action.cached_action_of_scene(
+        "simple-pendulum", simulation.Gates(), remembered, PROCESS_SCENES, t_end=0.6, epsilons=[0.1]
+    )
     assert other is not first
     # another app's memory is its own
-    assert action.cached_action_of_scene("simple-pendulum", simulation.GATES, Recent(4), **options) is not first
+    assert (
+        action.cached_action_of_scene("simple-pendulum", simulation.Gates(), Recent(4), PROCESS_SCENES, **options)
+        is not first
+    )
 
 
 def test_the_job_answers_for_a_user_system_and_locates_refusals():

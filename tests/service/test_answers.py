@@ -5,14 +5,14 @@ import pytest
 
 from app.service import exporting
 from app.service.answers import Answers
-from app.service.derivations import derivation_document
+from app.service.derivations import PROCESS_SCENES, derivation_document
 from app.service.services import Services
 from app.settings import Settings
 
 
 def test_each_app_remembers_its_own_answers(tmp_path):
     config = Settings(cache_dir=tmp_path, warm=False)
-    first, second = Services.start(config), Services.start(config)
+    first, second = Services.start(config, PROCESS_SCENES), Services.start(config, PROCESS_SCENES)
     try:
         assert first.answers is not second.answers
         exported = exporting.scene_export("simple-pendulum", "py", derivation_document, first.answers.exports)

@@ -3,6 +3,7 @@
 from app.numerics.errors import TooMuchWork
 from app.scenes import SCENES
 from app.service import lyapunov
+from app.service.derivations import PROCESS_SCENES
 
 
 def test_a_measurement_cut_short_leaves_the_note_without_it_and_nothing_cached(monkeypatch):
@@ -12,6 +13,7 @@ def test_a_measurement_cut_short_leaves_the_note_without_it_and_nothing_cached(m
         raise TooMuchWork("the run beside the start stopped at t = 3 s")
 
     monkeypatch.setattr(lyapunov, "largest_exponent", busy)
+
     class Empty:  # a cache that holds nothing yet, and keeps only what is computed
         held: dict = {}
 
@@ -19,5 +21,5 @@ def test_a_measurement_cut_short_leaves_the_note_without_it_and_nothing_cached(m
             return self.held[key] if key in self.held else compute()
 
     cache = Empty()
-    assert lyapunov.run_note(scene.id, cache) == scene.run_note
+    assert lyapunov.run_note(scene.id, cache, PROCESS_SCENES) == scene.run_note
     assert cache.held == {}

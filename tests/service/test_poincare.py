@@ -5,11 +5,13 @@ import math
 import pytest
 
 from app.numerics.errors import SimulationError
+from app.service.derivations import PROCESS_SCENES
+from app.service.gates import Gates
 from app.service.poincare import COUNT_MAX, section_of_scene
 
 
 def test_scene_section_document():
-    doc = section_of_scene("coupled-oscillators", count=2, t_end=20.0)
+    doc = section_of_scene("coupled-oscillators", Gates(), PROCESS_SCENES, count=2, t_end=20.0)
     assert doc["coordinate"] == "x2" and doc["value"] == 0.0 and doc["direction"] == 1
     assert doc["axes"] == {"q": "x1", "q_dot": "x1_dot", "p": "p_x1"}
     # the energy defaults to h at the scene's initial state: k x1²/2 + κ x1²/2 with x1 = 0.2
@@ -39,4 +41,4 @@ def test_scene_section_document():
 )
 def test_bad_options_are_refused_with_a_reason(scene_id, options, message):
     with pytest.raises(SimulationError, match=message):
-        section_of_scene(scene_id, **options)
+        section_of_scene(scene_id, Gates(), PROCESS_SCENES, **options)

@@ -11,9 +11,10 @@ from app.numerics import limits
 from app.numerics.errors import SimulationError, TooMuchWork
 from app.scenes import SCENES
 from app.service import rounding, simulation, work_precision
-from app.service.derivations import derivation
+from app.service.derivations import PROCESS_SCENES, derivation
 from app.service.encoding import dumps
 from app.web.errors import problem
+from tests.served import derivation_run, scene_run
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
@@ -24,7 +25,7 @@ def request(**fields):
 
 
 def test_document_shape_for_a_scene():
-    doc = simulation.simulate_scene("spherical-pendulum", request(t_end=2.0))
+    doc = scene_run("spherical-pendulum", request(t_end=2.0))
     assert len(doc["t"]) == 50 and doc["t"][0] == 0.0 and doc["t"][-1] == 2.0
     assert set(doc["state"]) == {"theta", "theta_dot", "phi", "phi_dot"}
     assert set(doc["conserved"]) == {"p_phi", "E"}
@@ -37,7 +38,7 @@ def test_document_shape_for_a_scene():
 
 
 def test_defaults_come_from_the_scene():
-    doc = simulation.simulate_scene("simple-pendulum", request(samples=None))
+    doc = scene_run("simple-pendulum", request(samples=None))
     assert len(doc["t"]) == limits.SAMPLES_DEFAULT and doc["t"][-1] == 10.0
     assert doc["state"]["theta"][0] == 1.0
 
@@ -58,24 +59,24 @@ def test_defaults_come_from_the_scene():
 )
 def test_bad_requests_are_refused_with_a_message(fields, message):
     with pytest.raises(SimulationError) as info:
-        simulation.simulate_scene("simple-pendulum", request(**fields))
+        scene_run("simple-pendulum", request(**fields))
     assert message in str(info.value)
     assert problem(info.value).status == 422
 
 
 def test_singular_start_is_refused():
     with pytest.raises(SimulationError, match=r"mass matrix is singular at this initial state \(r = 0\)"):
-        simulation.simulate_scene("tabletop-spring", request(initial={"r": 0.0, "theta_dot": 1.0}))
+        scene_run("tabletop-spring", request(initial={"r": 0.0, "theta_dot": 1.0}))
 
 
 def test_method_that_does_not_apply_is_refused():
     with pytest.raises(SimulationError, match="Yoshida4 cannot integrate this system"):
-        simulation.simulate_scene("spherical-pendulum", request(method="Yoshida4"))
+        scene_run("spherical-pendulum", request(method="Yoshida4"))
 
 
 def test_too_much_work_is_a_clear_refusal():
     with pytest.raises(TooMuchWork, match="too much work for RK45") as info:
-        simulation.simulate_scene(
+        scene_run(
             "tabletop-spring",
             request(parameters={"k": 1000.0}, t_end=1000.0, method="RK45", rtol=1e-10),
             simulation.Gates(wall_seconds=0.3),  # a short time budget
@@ -85,7 +86,7 @@ def test_too_much_work_is_a_clear_refusal():
 
 def test_slack_string_is_flagged():
     """From near the top at rest the string tension m (R theta_dot^2 + g cos theta) starts negative."""
-    doc = simulation.simulate_scene("simple-pendulum", request(initial={"theta": 3.0}, t_end=1.0))
+    doc = scene_run("simple-pendulum", request(initial={"theta": 3.0}, t_end=1.0))
     assert min(doc["constraint_forces"]["string tension"]) < 0
     assert any("string tension becomes negative" in w.lower() for w in doc["stats"]["warnings"])
     # prof-f: every warning is served as a sentence (a capital letter, a full stop), never a bare clause
@@ -96,7 +97,7 @@ def test_user_systems_go_through_the_same_function():
     from app.engine.derive import derive
     from tests.numerics.systems import DOUBLE_PENDULUM
 
-    doc = simulation.simulate_derivation(derive(DOUBLE_PENDULUM), request(initial={"a": 1.0}, t_end=3.0))
+    doc = derivation_run(derive(DOUBLE_PENDULUM), request(initial={"a": 1.0}, t_end=3.0))
     assert set(doc["state"]) == {"a", "a_dot", "c", "c_dot"} and doc["constraint_forces"] == {}
     assert doc["stats"]["error_estimate"] is not None
 
@@ -106,7 +107,7 @@ def test_constraint_forces_are_the_derivations_typed_members():
 
     d = derivation("simple-pendulum")
     (force,) = value_or(d.constraint_forces, ())
-    doc = simulation.simulate_derivation(d, request(t_end=1.0), scene_id=None)
+    doc = derivation_run(d, request(t_end=1.0), scene_id=None)
     assert list(doc["constraint_forces"]) == [force.constraint.name]
     # the series is the engine's expression itself, evaluated along the run (no text read back)
     values = {s.name: s for s in (*d.table.q, *d.table.qd, *d.table.params)}
@@ -114,7 +115,7 @@ def test_constraint_forces_are_the_derivations_typed_members():
     at_start.update({s: p.default for s, p in zip(d.table.params, d.system.parameters, strict=True)})
     assert doc["constraint_forces"][force.constraint.name][0] == pytest.approx(float(force.force.xreplace(at_start)))
     # none asked for, none observed
-    none = simulation.simulate_derivation(d, request(t_end=1.0), constraint_forces=(), scene_id=None)
+    none = derivation_run(d, request(t_end=1.0), constraint_forces=(), scene_id=None)
     assert none["constraint_forces"] == {}
 
 
@@ -139,7 +140,9 @@ def test_work_precision_without_an_exact_solution_checks_its_reference():
 @pytest.mark.parametrize("scene_id", ["coupled-oscillators", "rail-two-body"])
 def test_work_precision_of_a_linear_scene_measures_against_its_exact_solution(scene_id):
     data = work_precision.compute(scene_id, sweep=[1e-6, 1e-10], methods=["DOP853-compiled"])
-    assert data["reference"].startswith("exact solution of the linear equations") and "no exact" not in data["reference"]
+    assert (
+        data["reference"].startswith("exact solution of the linear equations") and "no exact" not in data["reference"]
+    )
     by = {r["rtol"]: r["error"] for r in data["runs"]}
     # errors against the exact motion fall with the tolerance, and the tight run is far below the loose one
     assert by[1e-10] < 1e-2 * by[1e-6]
@@ -188,12 +191,12 @@ def test_while_kernels_compile_scipy_answers_and_says_so(scene_id):
     import numpy as np
 
     nothing_compiled = simulation.Gates(answer_while_compiling=True, compiled=lambda method, system: False)
-    fallback = simulation.simulate_scene(scene_id, request(t_end=3.0), nothing_compiled)
+    fallback = scene_run(scene_id, request(t_end=3.0), nothing_compiled)
     server = simulation.Gates(answer_while_compiling=True)  # the same server once compiled (what jit has loaded)
     stats = fallback["stats"]
     assert stats["path"] == "scipy-fallback" and stats["method"] == "DOP853"
     assert "still being compiled" in stats["reason"] and stats["error_reference"].startswith("DOP853 at")
-    compiled = simulation.simulate_scene(scene_id, request(t_end=3.0), server)
+    compiled = scene_run(scene_id, request(t_end=3.0), server)
     assert compiled["stats"]["path"] == "compiled"
     # the same motion within the two runs' error estimates
     bound = stats["error_estimate"] + compiled["stats"]["error_estimate"]
@@ -205,9 +208,9 @@ SCENES_COORDINATES = {"simple-pendulum": ["theta"], "spherical-pendulum": ["thet
 
 
 def test_scripts_without_a_server_compile_in_line():
-    assert simulation.GATES.answer_while_compiling is False  # a script's gates
+    assert simulation.Gates().answer_while_compiling is False  # a script's gates
     script = simulation.Gates(compiled=lambda method, system: False)  # not compiled yet: a script waits for it
-    doc = simulation.simulate_scene("simple-pendulum", request(t_end=1.0), script)
+    doc = scene_run("simple-pendulum", request(t_end=1.0), script)
     assert doc["stats"]["path"] == "compiled"
 
 
@@ -225,9 +228,9 @@ def test_reference_run_beside_the_run_gives_the_same_estimate(monkeypatch):
     monkeypatch.setattr(cores.CORES, "submit", spy)
     monkeypatch.setattr(cores.CORES, "load", lambda: 0.0)
     monkeypatch.setattr(cores.CORES, "count", 2)
-    beside = simulation.simulate_scene("spherical-pendulum", request(t_end=3.0))
+    beside = scene_run("spherical-pendulum", request(t_end=3.0))
     monkeypatch.setattr(cores.CORES, "count", 1)  # no free core: the reference runs after
-    after = simulation.simulate_scene("spherical-pendulum", request(t_end=3.0))
+    after = scene_run("spherical-pendulum", request(t_end=3.0))
     assert started == [True, False]
     assert beside["stats"]["error_estimate"] == after["stats"]["error_estimate"]
     assert beside["stats"]["error_reference"] == after["stats"]["error_reference"]
@@ -246,7 +249,7 @@ def test_a_reference_runs_beside_only_while_half_a_core_is_idle(load, busy, free
 @pytest.mark.parametrize("scene_id", ["double-pendulum", "incline-block"])  # the block's run ends at an event
 @pytest.mark.parametrize("precision", ["full", "display"])
 def test_series_made_while_the_reference_runs_are_those_of_the_final_trajectory(monkeypatch, scene_id, precision):
-    original = simulation.run
+    original = simulation.run_served
     calls = []
 
     def after(*args, alongside=None, **kwargs):  # the document computes them itself
@@ -259,10 +262,10 @@ def test_series_made_while_the_reference_runs_are_those_of_the_final_trajectory(
 
         return original(*args, alongside=observe, **kwargs)
 
-    monkeypatch.setattr(simulation, "run", spy)
-    beside = json.loads(dumps(simulation.simulate_scene(scene_id, request(precision=precision))))
-    monkeypatch.setattr(simulation, "run", after)
-    later = json.loads(dumps(simulation.simulate_scene(scene_id, request(precision=precision))))
+    monkeypatch.setattr(simulation, "run_served", spy)
+    beside = json.loads(dumps(scene_run(scene_id, request(precision=precision))))
+    monkeypatch.setattr(simulation, "run_served", after)
+    later = json.loads(dumps(scene_run(scene_id, request(precision=precision))))
     assert calls == [len(beside["t"])]
     for key in ("t", "energy", "hamiltonian", "conserved", "constraint_forces", "state"):
         assert beside[key] == later[key], key
@@ -289,12 +292,12 @@ def test_auto_choosing_the_compiled_radau_does_not_wait_for_the_python_loop_slot
     gates = simulation.Gates(wall_seconds=2.0)
     assert gates.python.acquire(timeout=1.0)  # another scipy run is in progress
     try:
-        doc = simulation.simulate_derivation(d, quiet, gates=gates)
+        doc = derivation_run(d, quiet, gates=gates)
         assert doc["stats"]["method"] == STIFF and doc["stats"]["path"] == "compiled"
         assert doc["stats"]["reason"].startswith("stiff")
         by_name = request(initial=initial, t_end=1.0, rtol=1e-6, atol=1e-8, method="Radau")
         with pytest.raises(OverCapacity, match="Python step loop"):
-            simulation.simulate_derivation(d, by_name, gates=gates)
+            derivation_run(d, by_name, gates=gates)
     finally:
         gates.python.release()
 
@@ -306,7 +309,8 @@ def test_auto_stiff_handover_takes_the_python_loop_slot_only_for_scipy(monkeypat
     from app.numerics import jit
     from app.numerics import plan as plan_module
     from app.numerics.methods import FALLBACK_STIFF, METHODS, NONSTIFF, STIFF
-    from app.numerics.simulate import run
+    from app.service.cores import Cores
+    from app.service.simulation_run import run_served, steps_in_python
     from tests.numerics.extreme_cases import circular_radius, system_for
 
     s = system_for("stiff-spring")
@@ -314,6 +318,7 @@ def test_auto_stiff_handover_takes_the_python_loop_slot_only_for_scipy(monkeypat
     y0 = np.array([circular_radius(1e6, 1.0, 1.0) * (1 + 1e-9), 0.0, 0.0, 1.0])
     monkeypatch.setattr(plan_module, "choose", lambda system, analysis: (NONSTIFF, "forced for the test"))
     entered = []
+    cores = Cores(1)
 
     @contextmanager
     def spy():
@@ -321,13 +326,13 @@ def test_auto_stiff_handover_takes_the_python_loop_slot_only_for_scipy(monkeypat
         yield
 
     planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4, estimate=False)
-    assert not planned.python_loop
-    outcome = run(planned, python_loop=spy)
+    assert not steps_in_python(planned)
+    outcome, _ = run_served(planned, limits.WALL_SECONDS, (), cores, throttle=spy)
     assert outcome.method == STIFF and "detected stiffness" in outcome.reason and entered == []
     serving = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4, estimate=False, wait_for_compile=False)
     ready = jit.ready
     monkeypatch.setattr(jit, "ready", lambda name: name != METHODS[STIFF].kernel_module and ready(name))
-    outcome = run(serving, python_loop=spy)
+    outcome, _ = run_served(serving, limits.WALL_SECONDS, (), cores, throttle=spy)
     assert outcome.method == FALLBACK_STIFF and entered == [True]
 
 
@@ -350,7 +355,7 @@ def test_the_apps_scene_runs_go_to_a_worker_of_their_own_never_to_the_users_pool
     from app.service.services import Services
     from app.settings import Settings
 
-    services = Services.start(Settings(memory_budget_mb=4000, warm=False))
+    services = Services.start(Settings(memory_budget_mb=4000, warm=False), PROCESS_SCENES)
     sent = []
     to_worker = services.gates.offload
 
@@ -363,20 +368,20 @@ def test_the_apps_scene_runs_go_to_a_worker_of_their_own_never_to_the_users_pool
         services.warm().join()
         assert "could not be warmed" not in caplog.text
         asked = request(method="RK45", t_end=5.0)
-        away = simulation.simulate_scene("incline-block", asked, services.gates)
+        away = scene_run("incline-block", asked, services.gates)
         assert sent == ["run_scene_plan"] and to_worker.__self__ is services.scenes
         assert services.pool._pool is None  # noqa: SLF001 - the users' pool never started
     finally:
         services.stop()
     assert away["stats"]["event"] is not None and away["stats"]["method"] == "RK45"
-    _same_document(away, simulation.simulate_scene("incline-block", asked))
+    _same_document(away, scene_run("incline-block", asked))
 
 
 def test_a_compiled_run_stays_in_the_web_process():
     def offload(job, *args, timeout):
         raise AssertionError("a compiled run was sent to a worker")
 
-    doc = simulation.simulate_scene("simple-pendulum", request(t_end=2.0), simulation.Gates(offload=offload))
+    doc = scene_run("simple-pendulum", request(t_end=2.0), simulation.Gates(offload=offload))
     assert doc["stats"]["path"] == "compiled"
 
 
@@ -391,6 +396,8 @@ def test_the_stiff_hand_over_is_run_elsewhere_as_a_stiff_plan(monkeypatch):
     from app.numerics.methods import FALLBACK_STIFF, METHODS, NONSTIFF, STIFF
     from app.numerics.plan import Plan
     from app.numerics.simulate import run
+    from app.service.cores import Cores
+    from app.service.simulation_run import run_served, steps_in_python
     from tests.numerics.extreme_cases import circular_radius, system_for
 
     s = system_for("stiff-spring")
@@ -404,16 +411,17 @@ def test_the_stiff_hand_over_is_run_elsewhere_as_a_stiff_plan(monkeypatch):
         rebuilt = Plan.rebuilt(s, pickle.loads(pickle.dumps(handed.portable())))
         return pickle.loads(pickle.dumps(run(rebuilt, wall_seconds)))
 
+    cores = Cores(1)
     planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4)
-    away = run(planned, elsewhere=elsewhere)
+    away, _ = run_served(planned, limits.WALL_SECONDS, (), cores, elsewhere=elsewhere)
     assert sent == [] and away.method == STIFF and away.path == "compiled"
     # a server still compiling the Radau kernel: the explicit run is compiled and stays, what it hands over goes
     ready = jit.ready
     monkeypatch.setattr(jit, "ready", lambda name: name != METHODS[STIFF].kernel_module and ready(name))
     planned = plan_module.plan(s, k, y0, 10.0, 101, "auto", 1e-4, 1e-4, estimate=False, wait_for_compile=False)
     assert planned.path == "compiled"  # Vern8 loaded by the run above
-    away, here = run(planned, elsewhere=elsewhere), run(planned)
-    assert [p.name for p in sent] == [FALLBACK_STIFF] and sent[0].stiff and sent[0].python_loop
+    (away, _), here = run_served(planned, limits.WALL_SECONDS, (), cores, elsewhere=elsewhere), run(planned)
+    assert [p.name for p in sent] == [FALLBACK_STIFF] and sent[0].stiff and steps_in_python(sent[0])
     assert away.method == here.method == FALLBACK_STIFF and "detected stiffness" in away.reason
     assert away.reason == here.reason
     np.testing.assert_array_equal(away.trajectory.y, here.trajectory.y)
@@ -423,5 +431,5 @@ def test_the_stiff_hand_over_is_run_elsewhere_as_a_stiff_plan(monkeypatch):
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
 def test_every_default_run_meets_its_own_tolerance(scene_id):
     """prof-f 22, 18: the double pendulum's default run missed its tolerance 450 times, the parabola's 1.7 times."""
-    doc = simulation.simulate_scene(scene_id, request())
+    doc = scene_run(scene_id, request())
     assert not [w for w in doc["stats"]["warnings"] if "times the tolerance" in w], doc["stats"]["warnings"]

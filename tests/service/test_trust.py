@@ -3,9 +3,9 @@
 import numpy as np
 import pytest
 
-from app.service.simulation import simulate_scene
 from app.service.trust import judge
 from app.web.schemas_simulate import SimulateRequest
+from tests.served import scene_run
 
 
 def test_an_error_comparable_to_the_motion_is_not_trusted():
@@ -24,10 +24,8 @@ def test_a_small_error_is_trusted_and_no_estimate_is_no_verdict():
 
 
 def test_the_simulate_result_carries_the_verdict():
-    good = simulate_scene("simple-pendulum", SimulateRequest(initial={}))
+    good = scene_run("simple-pendulum", SimulateRequest(initial={}))
     assert good["trust"]["trusted"] is True and good["trust"]["message"] is None
-    loose = simulate_scene(
-        "double-pendulum", SimulateRequest(initial={"theta1": 2.0, "theta2": 2.0}, t_end=60.0, rtol=1e-3)
-    )
+    loose = scene_run("double-pendulum", SimulateRequest(initial={"theta1": 2.0, "theta2": 2.0}, t_end=60.0, rtol=1e-3))
     assert loose["trust"]["trusted"] is False, loose["trust"]
     assert "Choose a smaller tolerance" in loose["trust"]["message"]

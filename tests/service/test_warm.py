@@ -11,6 +11,7 @@ import pytest
 from app.numerics.methods import NONSTIFF
 from app.service import compiled as compiled_systems
 from app.service import gates, simulation, warm_kernels
+from app.service.derivations import PROCESS_SCENES
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
@@ -52,7 +53,7 @@ def fake_methods(monkeypatch, log):
 def test_warm_up_goes_scene_by_scene_with_the_first_method_and_gives_way_between_steps(monkeypatch):
     log: list[str] = []
     fake_methods(monkeypatch, log)
-    spent = warm_kernels.warm_all(give_way=lambda: log.append("give way"))
+    spent = warm_kernels.warm_all(PROCESS_SCENES, give_way=lambda: log.append("give way"))
     assert log == [
         "give way",  # before the simple pendulum's system
         "give way",
@@ -71,11 +72,11 @@ def test_warm_up_goes_scene_by_scene_with_the_first_method_and_gives_way_between
 def test_the_warm_up_waits_while_a_simulation_is_being_served(monkeypatch):
     log: list[str] = []
     fake_methods(monkeypatch, log)
-    warm_kernels.warm_all()  # the systems are built: what is left to do is preparing the methods
+    warm_kernels.warm_all(PROCESS_SCENES)  # the systems are built: what is left to do is preparing the methods
     log.clear()
     gate = gates.Gates().in_flight  # an app's
     with gate.serving():
-        warming = threading.Thread(target=warm_kernels.warm_all, args=(lambda: gate.wait_quiet(30.0),))
+        warming = threading.Thread(target=warm_kernels.warm_all, args=(PROCESS_SCENES, lambda: gate.wait_quiet(30.0)))
         warming.start()
         warming.join(timeout=0.5)
         assert warming.is_alive() and log == []  # waiting for the request to finish
@@ -95,7 +96,7 @@ def test_a_scene_simulation_counts_as_in_flight(monkeypatch):
 
     monkeypatch.setattr(simulation, "simulate_derivation", spy)
     request = {"parameters": {}, "initial": {}, "t_end": 0.5, "method": "auto", "rtol": None, "atol": None}
-    simulation.simulate_scene("simple-pendulum", type("R", (), {**request, "samples": 10})(), served)
+    simulation.simulate_scene("simple-pendulum", type("R", (), {**request, "samples": 10})(), served, PROCESS_SCENES)
     assert seen == [False] and served.in_flight.wait_quiet(0.0)
 
 

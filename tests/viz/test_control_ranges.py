@@ -7,13 +7,13 @@ import sympy as sp
 
 from app.scenes import SCENES
 from app.scenes.beads import WIRE_REACH
-from app.service.derivations import derivation_document
+from app.service.derivations import PROCESS_SCENES, derivation_document
 from app.viz.control_ranges import useful_range
 from app.web.pages import page_model
 
 
 def control(scene_id, name):
-    m = page_model(scene_id)
+    m = page_model(scene_id, None, PROCESS_SCENES)
     return next(c for c in m["parameters"] + m["initial"] if c["name"] == name)
 
 
@@ -61,7 +61,7 @@ def test_the_pendulums_rate_marks_the_separatrix():
 
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
 def test_sliders_stay_inside_the_allowed_range(scene_id):
-    for c in page_model(scene_id)["parameters"]:
+    for c in page_model(scene_id, None, PROCESS_SCENES)["parameters"]:
         assert (
             float(c["min"]) <= float(c["slider_min"]) <= float(c["value"]) <= float(c["slider_max"]) <= float(c["max"])
         )
@@ -75,7 +75,7 @@ def test_useful_range_is_a_decade_about_the_default():
 
 def test_work_precision_only_where_the_reference_is_not_a_polynomial():
     for scene_id in SCENES:
-        shown = "work-precision" in page_model(scene_id)["panels"]
+        shown = "work-precision" in page_model(scene_id, None, PROCESS_SCENES)["panels"]
         # a coordinate is a name of the acceleration's expression, not a letter in its text (the s of sin α)
         coordinates = set(derivation_document(scene_id)["coordinates"])
         constant = all(

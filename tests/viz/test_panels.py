@@ -105,9 +105,10 @@ def test_the_phase_text_speaks_of_angles_only_where_a_coordinate_is_one(client):
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
 def test_a_poincare_section_is_shown_only_where_the_motion_can_be_chaotic(scene_id):
     """prof-f 20, 38: sections of integrable systems (linear, or a conserved momentum) are closed curves only."""
+    from app.service.derivations import PROCESS_SCENES
     from app.web.pages import page_model
 
-    assert ("poincare" in page_model(scene_id)["panels"]) == (scene_id == "double-pendulum")
+    assert ("poincare" in page_model(scene_id, None, PROCESS_SCENES)["panels"]) == (scene_id == "double-pendulum")
 
 
 def test_typed_systems_get_a_poincare_section_only_where_the_motion_can_be_chaotic():

@@ -12,7 +12,8 @@ import pytest
 
 from app.scenes import SCENES
 from app.service.action import action_of_scene
-from app.service.derivations import derivation_document
+from app.service.derivations import PROCESS_SCENES, derivation_document
+from app.service.gates import Gates
 from app.viz.names import label
 
 NODE = shutil.which("node")
@@ -40,8 +41,10 @@ def _case(scene: str, c: int, T: float) -> dict:
     doc = derivation_document(scene)
     names = doc["coordinates"]
     labels = [label(q) for q in names]
-    run = action_of_scene(scene, t_end=SCENES[scene].t_end, epsilons=[0.0], coordinate=names[c])
-    at = action_of_scene(scene, t_end=T, epsilons=[0.0], coordinate=names[c])
+    run = action_of_scene(
+        scene, Gates(), PROCESS_SCENES, t_end=SCENES[scene].t_end, epsilons=[0.0], coordinate=names[c]
+    )
+    at = action_of_scene(scene, Gates(), PROCESS_SCENES, t_end=T, epsilons=[0.0], coordinate=names[c])
     return {
         "labels": labels, "c": c, "T": T, "tEnd": SCENES[scene].t_end, "tAll": run["conjugate_time"],
         "tAlone": run["varied_conjugate_time"], "kind": at["kind"], "never": not doc["kinetic_focus_possible"],

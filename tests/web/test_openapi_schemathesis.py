@@ -42,7 +42,7 @@ def generated_requests_services(client, tmp_path_factory):
     users = UserSystems(session.pool)
     checking = Checking(users)
     classes = Classroom(checking, Settings(data_dir=tmp_path_factory.mktemp("classes")))
-    return Services(session.pool, users, checking, Gates(), session.scenes, classes, session.answers)
+    return Services(session.pool, users, checking, Gates(), session.scenes, classes, session.answers, session.chapter)
 
 
 # operations that derive, simulate or judge (each case a worker job of up to seconds): few examples each, so

@@ -14,7 +14,7 @@ import sympy as sp
 from app.engine.names import prose
 from app.engine.trees import TreeError, of_text
 from app.scenes import SCENES
-from app.service.derivations import derivation_document
+from app.service.derivations import PROCESS_SCENES, derivation_document
 from app.viz.chapter import SECTIONS, section_numbers, table_of_contents
 from app.viz.exprtree import evaluate
 from app.viz.names import label
@@ -49,7 +49,7 @@ def parse(html: str) -> Tags:
 
 
 def shown_panels(scene_id: str) -> list[str]:
-    return page_model(scene_id)["panels"]
+    return page_model(scene_id, None, PROCESS_SCENES)["panels"]
 
 
 @pytest.fixture(scope="module")
@@ -257,7 +257,9 @@ def test_the_damped_pendulum_is_marked_as_ours(client):
     assert SCENES["damped-pendulum"].beyond_chapter and SCENES["damped-pendulum"].section == "4.1"
     page = client.get("/scenes/damped-pendulum").text
     assert "Further example, extending section 4.1" in page and "our example" not in page
-    assert "Beyond the chapter" not in client.get("/scenes/simple-pendulum").text.split("<main")[1].split("</header>")[0]
+    assert (
+        "Beyond the chapter" not in client.get("/scenes/simple-pendulum").text.split("<main")[1].split("</header>")[0]
+    )
 
 
 @pytest.mark.parametrize("scene_id", ["pulley", "rotating-parabola"])
@@ -291,11 +293,11 @@ def test_T_and_U_are_shown_without_asking_for_all_steps(client, scene_id):
 
 def test_the_wedge_block_starts_on_the_slope():
     """D(0) runs from the top corner (0) down: a start above the corner contradicted the picture (prof-f 12)."""
-    (D,) = [c for c in page_model("movable-incline")["initial"] if c["name"] == "D"]
+    (D,) = [c for c in page_model("movable-incline", None, PROCESS_SCENES)["initial"] if c["name"] == "D"]
     assert float(D["min"]) == 0.0 and float(D["max"]) > 0 and D["allowed"].startswith("0 to")
 
 
 def test_the_tabletop_spring_constant_has_a_tabletop_range():
     """prof-e 20: "0.01 to 100,000,000 N/m" is no table's spring."""
-    (k,) = [c for c in page_model("tabletop-spring")["parameters"] if c["name"] == "k"]
+    (k,) = [c for c in page_model("tabletop-spring", None, PROCESS_SCENES)["parameters"] if c["name"] == "k"]
     assert k["allowed"] == "0.01 to 1,000 N/m"

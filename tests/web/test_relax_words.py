@@ -12,6 +12,8 @@ from pathlib import Path
 import pytest
 
 from app.service.action import relax_of_scene
+from app.service.derivations import PROCESS_SCENES
+from app.service.gates import Gates
 
 NODE = shutil.which("node")
 VERDICT = Path(__file__).resolve().parents[2] / "static" / "js" / "action-verdict.js"
@@ -27,11 +29,13 @@ LOG_WORDS = re.compile(r"about 0\b|\d[eE][+-]?\d|NaN|undefined|null")
 
 
 def _said(lift: float) -> tuple[dict, dict]:
-    true = relax_of_scene("simple-pendulum", t_end=T, initial={"theta": 1.0})
+    true = relax_of_scene("simple-pendulum", Gates(), PROCESS_SCENES, t_end=T, initial={"theta": 1.0})
     trial = [
         q + lift * math.sin(math.pi * t / T) for t, q in zip(true["t"], true["shooting"]["q"]["theta"], strict=True)
     ]
-    answer = relax_of_scene("simple-pendulum", t_end=T, initial={"theta": 1.0}, trial={"theta": trial})
+    answer = relax_of_scene(
+        "simple-pendulum", Gates(), PROCESS_SCENES, t_end=T, initial={"theta": 1.0}, trial={"theta": trial}
+    )
     run = subprocess.run(
         [NODE, "--input-type=module", "-e", RUN, VERDICT.as_uri()],
         input=json.dumps({"answer": answer, "context": CONTEXT}), capture_output=True, text=True, timeout=60,
@@ -47,7 +51,9 @@ def test_a_found_path_is_certified_with_named_numbers():
     text, method = said["text"], said["method"]
     # the lead says what a second-year needs, with the panel's own number: the shooting solution's distance from
     # the relaxed path (prof-l 8); the method's account (Newton, the grid) is the disclosure's, not the lead's
-    within = re.match(r"The relaxed path agrees with the true motion to within ([\d.]+) × 10⁻([⁰¹²³⁴⁵⁶⁷⁸⁹]+) rad: ", text)
+    within = re.match(
+        r"The relaxed path agrees with the true motion to within ([\d.]+) × 10⁻([⁰¹²³⁴⁵⁶⁷⁸⁹]+) rad: ", text
+    )
     assert within, text
     digits = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹", "0123456789")
     printed = float(within.group(1)) * 10 ** -int(within.group(2).translate(digits))

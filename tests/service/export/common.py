@@ -9,10 +9,11 @@ from typing import Any
 from app.engine.contract import derivation_json
 from app.engine.derive import Derivation, derive
 from app.scenes import SCENES
-from app.service import derivations, exporting, simulation, user_jobs
+from app.service import derivations, exporting, user_jobs
 from app.service.user_checks import checked
 from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING
 from app.web.schemas_user import SystemSpec
+from tests.served import derivation_run, scene_run
 
 RTOL, ATOL = 1e-10, 1e-12
 
@@ -69,9 +70,9 @@ def app_end_state(case: str) -> tuple[float, dict[str, float]]:
     """The app's own simulation with scipy's DOP853 at the script's tolerances: (t_end, last state)."""
     request = SimpleNamespace(parameters={}, initial={}, t_end=None, method="DOP853", rtol=RTOL, atol=ATOL, samples=2)
     if case in SCENES:
-        doc = simulation.simulate_scene(case, request)
+        doc = scene_run(case, request)
     else:
         _, initial, t_end = USER_SYSTEMS[case]
         request.initial, request.t_end = initial, t_end
-        doc = simulation.simulate_derivation(user_derivation(case), request)
+        doc = derivation_run(user_derivation(case), request)
     return doc["t"][-1], {name: values[-1] for name, values in doc["state"].items()}
