@@ -23,7 +23,7 @@ from collections.abc import Iterable
 
 import sympy as sp
 
-from app.engine.budget import within_budget
+from app.engine.budget import memoized, within_budget
 from app.engine.forms import moving_symbols, squares
 from app.limits import FORM_WORK  # one rewriting gets the work of one expression's textbook form
 
@@ -139,16 +139,16 @@ def by_coordinate(expr: sp.Expr, coordinates: Iterable[sp.Symbol]) -> sp.Expr:
         return expr
 
     def work() -> sp.Expr:
-        expanded = sp.expand(expr)
         # linear: each ∂/∂q_k is free of every coordinate, and what is left holds none
         # constant coefficients: free of every coordinate, rate and t (r̈ = r(θ̇² − k/m) stays as it is)
         moving = moving_symbols(expr) | set(q)
-        derivatives = [sp.diff(expanded, s) for s in q]
-        # a derivative whose value changes with what moves is no constant coefficient, whatever form factoring
-        # would give it: told at once, without factoring (the costly part for a pendulum's accelerations)
-        if any(varies(c, moving) for c in derivatives):
+        # a ∂/∂q_k whose value changes with what moves is no constant coefficient, whatever form factoring would
+        # give it: told at once from the expression as it stands, without expanding or factoring (the costly
+        # part for a pendulum's accelerations)
+        if any(varies(sp.diff(expr, s), moving) for s in q):
             return expr
-        coefficients = [sp.factor(c) for c in derivatives]
+        expanded = sp.expand(expr)
+        coefficients = [sp.factor(sp.diff(expanded, s)) for s in q]
         if any(c.free_symbols & moving for c in coefficients):
             return expr
         rest = sp.factor(sp.expand(expanded - sum(c * s for c, s in zip(coefficients, q, strict=True))))
@@ -162,4 +162,5 @@ def by_coordinate(expr: sp.Expr, coordinates: Iterable[sp.Symbol]) -> sp.Expr:
             return sp.Mul(inside, sp.Pow(den, -1), evaluate=False)
         return sp.Add(*(c * s for c, s in zip(coefficients, q, strict=True)), rest)
 
-    return within_budget(work, expr, FORM_WORK)
+    # the same acceleration is grouped for the results box and for its step: once per document
+    return within_budget(lambda: memoized("by-coordinate", (expr, tuple(q)), work), expr, FORM_WORK)
