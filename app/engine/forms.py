@@ -871,7 +871,7 @@ def _radicand(base: sp.Expr) -> sp.Expr:
         return base
     # the same radicand comes back at every equilibrium of a pair (K and −K) and in both roots of each: worked
     # out once per document
-    return memoized("radicand", base, lambda: _radicand_forms(base))
+    return memoized("radicand", base, lambda: _radicand_forms(base), charged=True)
 
 
 def _radicand_forms(base: sp.Expr) -> sp.Expr:

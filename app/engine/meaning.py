@@ -163,4 +163,4 @@ def by_coordinate(expr: sp.Expr, coordinates: Iterable[sp.Symbol]) -> sp.Expr:
         return sp.Add(*(c * s for c, s in zip(coefficients, q, strict=True)), rest)
 
     # the same acceleration is grouped for the results box and for its step: once per document
-    return within_budget(lambda: memoized("by-coordinate", (expr, tuple(q)), work), expr, FORM_WORK)
+    return within_budget(lambda: memoized("by-coordinate", (expr, tuple(q)), work, charged=True), expr, FORM_WORK)
