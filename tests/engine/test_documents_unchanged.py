@@ -4,7 +4,8 @@ The engine's speed work (issue 47: the document at LagrangesMethod's speed) comp
 skips work whose outcome is known; none of it may change what a reader sees.  Each document (every member:
 forms, conservation, equilibria, normal modes, Hamilton's equations, steps) is hashed and compared with the
 hash of the document the engine printed before that work (main at eeb4d1a), after an emptied SymPy cache, as
-a pool worker prints it.
+a pool worker prints it.  A change meant to alter what a reader sees updates these hashes in the same commit,
+saying so; a change meant only to make the engine faster never does.
 """
 
 import hashlib
