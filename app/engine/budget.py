@@ -165,17 +165,25 @@ def document_memo() -> dict[Any, Any] | None:
     return memo
 
 
-def memoized(kind: str, key: Hashable, compute: Callable[[], T]) -> T:
+def memoized(kind: str, key: Hashable, compute: Callable[[], T], charged: bool = False) -> T:
     """``compute()``, remembered under (kind, key) for the rest of the current document (the outermost
     ``display_budget`` block); outside any document, computed every time.  Only for pure work: a result that
-    depends on a bound must not be remembered here."""
+    depends on a bound must not be remembered here.
+
+    ``charged``: each later use counts the work the computation counted (``work.charge``), so every bound
+    around it ends where it did when the work was done at each use: the document is the same, only faster."""
     memo: dict[tuple[str, Hashable], Any] | None = getattr(_local, "memo", None)
     if memo is None:
         return compute()
     if (kind, key) in memo:
-        return memo[(kind, key)]
+        if not charged:
+            return memo[(kind, key)]
+        value, units = memo[(kind, key)]
+        counted.charge(units)
+        return value
+    started = counted.done()
     value = compute()
-    memo[(kind, key)] = value
+    memo[(kind, key)] = (value, counted.done() - started) if charged else value
     return value
 
 

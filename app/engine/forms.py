@@ -869,6 +869,12 @@ def _radicand(base: sp.Expr) -> sp.Expr:
     """A polynomial under a root in its shortest form: as it is, factored, or grouped in one of its factors."""
     if not base.free_symbols or not base.is_polynomial(*base.free_symbols):
         return base
+    # the same radicand comes back at every equilibrium of a pair (K and −K) and in both roots of each: worked
+    # out once per document
+    return memoized("radicand", base, lambda: _radicand_forms(base), charged=True)
+
+
+def _radicand_forms(base: sp.Expr) -> sp.Expr:
     factored = sp.factor(base)
     forms = [base, factored]
     _, factors = sp.factor_list(base)

@@ -17,11 +17,13 @@ Each returns an expression equal to the one given (identically); the printers th
 
 from __future__ import annotations
 
+import cmath
+import math
 from collections.abc import Iterable
 
 import sympy as sp
 
-from app.engine.budget import within_budget
+from app.engine.budget import memoized, within_budget
 from app.engine.forms import moving_symbols, squares
 from app.limits import FORM_WORK  # one rewriting gets the work of one expression's textbook form
 
@@ -106,6 +108,28 @@ def springs(expr: sp.Expr, coordinates: Iterable[sp.Symbol]) -> sp.Expr:
     return within_budget(work, expr, FORM_WORK)
 
 
+def varies(expr: sp.Expr, moving: set[sp.Symbol]) -> bool:
+    """Whether ``expr`` takes two different values at two points that differ only in the symbols of ``moving``:
+    then it depends on them, and so does every form of it (a False says nothing: the values agreed, or one of
+    them could not be computed)."""
+    inside = sorted(expr.free_symbols & moving, key=str)
+    if not inside:
+        return False
+    # fixed points (the answer never depends on a random draw): every symbol a rational of its own, then
+    # each moving one another
+    others = sorted(expr.free_symbols - set(inside), key=str)
+    fixed = {s: sp.Rational(7 + 2 * k, 5 + 3 * k) for k, s in enumerate(others)}
+    first = {**fixed, **{s: sp.Rational(3 + 5 * k, 11 + 4 * k) for k, s in enumerate(inside)}}
+    second = {**fixed, **{s: sp.Rational(13 + 3 * k, 17 + 7 * k) for k, s in enumerate(inside)}}
+    a, b = (expr.xreplace(point).evalf(30) for point in (first, second))
+    try:
+        # the difference taken at thirty digits, then rounded: one far above their rounding is a true one
+        difference, size = complex(a - b), 1 + abs(complex(a)) + abs(complex(b))
+    except TypeError:  # a value that is no number (a pole, 0/0): nothing said
+        return False
+    return cmath.isfinite(difference) and math.isfinite(size) and abs(difference) > 1e-12 * size
+
+
 def by_coordinate(expr: sp.Expr, coordinates: Iterable[sp.Symbol]) -> sp.Expr:
     """A force or an acceleration linear in the coordinates with constant coefficients, as a textbook groups it:
     Σ c_k q_k + rest, each coefficient factored and a denominator they all share taken out,
@@ -115,10 +139,15 @@ def by_coordinate(expr: sp.Expr, coordinates: Iterable[sp.Symbol]) -> sp.Expr:
         return expr
 
     def work() -> sp.Expr:
-        expanded = sp.expand(expr)
         # linear: each ∂/∂q_k is free of every coordinate, and what is left holds none
         # constant coefficients: free of every coordinate, rate and t (r̈ = r(θ̇² − k/m) stays as it is)
         moving = moving_symbols(expr) | set(q)
+        # a ∂/∂q_k whose value changes with what moves is no constant coefficient, whatever form factoring would
+        # give it: told at once from the expression as it stands, without expanding or factoring (the costly
+        # part for a pendulum's accelerations)
+        if any(varies(sp.diff(expr, s), moving) for s in q):
+            return expr
+        expanded = sp.expand(expr)
         coefficients = [sp.factor(sp.diff(expanded, s)) for s in q]
         if any(c.free_symbols & moving for c in coefficients):
             return expr
@@ -133,4 +162,5 @@ def by_coordinate(expr: sp.Expr, coordinates: Iterable[sp.Symbol]) -> sp.Expr:
             return sp.Mul(inside, sp.Pow(den, -1), evaluate=False)
         return sp.Add(*(c * s for c, s in zip(coefficients, q, strict=True)), rest)
 
-    return within_budget(work, expr, FORM_WORK)
+    # the same acceleration is grouped for the results box and for its step: once per document
+    return within_budget(lambda: memoized("by-coordinate", (expr, tuple(q)), work, charged=True), expr, FORM_WORK)

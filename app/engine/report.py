@@ -259,6 +259,11 @@ def by_inertia(d: Derivation, expr: sp.Expr, rates: Sequence[sp.Symbol]) -> sp.E
     coefficient, an entry of the mass matrix, in the form the mass matrix step prints it: one factor in one form
     throughout a derivation, m(1 + 4α²ρ²) ρ̇ and m(1 + 4α²ρ²) ρ̈ + 8mα²ρρ̇² beside 𝓜 = m(1 + 4α²ρ²). An
     expression not linear in them, or too large, in its own textbook form."""
+    # each momentum is printed in the results, the Euler–Lagrange step and the momenta's step: grouped once
+    return memoized("by-inertia", (expr, tuple(rates)), lambda: _by_inertia(d, expr, rates), charged=True)
+
+
+def _by_inertia(d: Derivation, expr: sp.Expr, rates: Sequence[sp.Symbol]) -> sp.Expr:
     grouped = meaning.by_velocity(expr, rates)
     if grouped is expr:
         return display(expr)

@@ -50,6 +50,17 @@ def left() -> int | None:
     return None if _count.limit is None else max(_count.limit - _count.done, 0)
 
 
+def charge(units: int) -> None:
+    """Count ``units`` of work as done now: work remembered from an earlier computation, counted again where its
+    result is used again, so that every bound ends where it ended when the work was done twice.  Past the
+    innermost limit it raises WorkExceeded, the count standing one past the limit as if the work had run into it."""
+    count = _count
+    count.done += units
+    if count.limit is not None and count.done > count.limit:
+        count.done = count.limit + 1
+        raise WorkExceeded
+
+
 @contextmanager
 def limit(units: float) -> Iterator[None]:
     """Raise WorkExceeded in the block once ``units`` more units of work are done in this thread.

@@ -100,3 +100,27 @@ def test_a_product_with_one_function_is_not_simplified_and_simplify_would_not_ch
         assert not budget._product(expr)
         budget.tidy(expr)
     assert len(calls) == 3
+
+
+def test_a_charged_memo_counts_the_remembered_work_again_and_runs_into_a_limit_as_the_work_would():
+    from app.engine import work
+
+    x, y = sp.symbols("x y")
+    computed = []
+
+    def compute() -> sp.Expr:
+        computed.append(1)
+        return sp.expand((x + y) ** 6)
+
+    with budget.display_budget(10**9):
+        start = work.done()
+        first = budget.memoized("test-charged", "key", compute, charged=True)
+        cost = work.done() - start
+        again = work.done()
+        assert budget.memoized("test-charged", "key", compute, charged=True) == first
+        # computed once, counted twice
+        assert computed == [1] and cost > 0 and work.done() - again == cost
+        # within a limit too small for the work, the remembered result is refused as the work would be
+        with pytest.raises(work.WorkExceeded), work.limit(cost // 2):
+            budget.memoized("test-charged", "key", compute, charged=True)
+        assert computed == [1]
