@@ -17,21 +17,22 @@ import json
 from typing import Any
 
 from app.engine.contract import first_stage
+from app.engine.document import Document, FirstStage
 from app.engine.user_system import UserSystem
 from app.service.encoding import dumps
 from app.service.user_checks import spec_key
-from app.service.user_jobs import derive_checked, engine_budget, guarded
+from app.service.user_jobs import derive_checked, encoded, engine_budget, guarded
 from app.service.user_systems import UserSystems
 
 
 def equations_job(user: UserSystem) -> bytes:
     """Worker job: the first stage of a user system's derivation document (as JSON bytes)."""
 
-    def run() -> dict[str, Any]:
+    def run() -> FirstStage:
         with engine_budget(user):
-            return first_stage(derive_checked(user))
+            return FirstStage.model_validate(first_stage(derive_checked(user)))
 
-    return guarded(run)
+    return guarded(run, encoded)
 
 
 async def equations_or_whole(users: UserSystems, user: UserSystem, client: str, address: str) -> dict[str, Any]:
@@ -54,8 +55,9 @@ FIRST_MEMBERS = ("coordinates", "angles", "symbols", "parameters", "equations_of
 
 def _from_whole(whole: bytes) -> bytes:
     """The first stage's members of a whole document (``"stage": "whole"``, nothing pending), as JSON bytes."""
-    document = json.loads(whole)
-    return dumps({"stage": "whole", **{key: document[key] for key in FIRST_MEMBERS}, "pending": []})
+    document = Document.model_validate_json(whole)
+    members = {key: getattr(document, key) for key in FIRST_MEMBERS}
+    return dumps(FirstStage(stage="whole", **members, pending=[]).as_json())
 
 
 async def equations_bytes(users: UserSystems, user: UserSystem, client: str, address: str) -> bytes:

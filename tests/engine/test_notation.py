@@ -175,7 +175,7 @@ def _mass_matrix_letter(rows: list[dict]) -> str:
 @pytest.mark.parametrize("scene_id", ["movable-incline", "pulley"])
 def test_a_scene_with_a_mass_m_writes_its_mass_matrix_with_another_letter(scene_id):
     # issue 40: the wedge's (the pulley's) mass is M; the mass matrix its page and its notebook print is not
-    from app.service.derivations import derivation
+    from app.service.derivations import derivation, scene_document
     from app.service.export.notebook import notebook
     from app.service.export.source import scene_source
 
@@ -187,7 +187,7 @@ def test_a_scene_with_a_mass_m_writes_its_mass_matrix_with_another_letter(scene_
     assert not [m.group() for m in _BARE_M.finditer(json.dumps(doc, ensure_ascii=False))]
     scene = SCENES[scene_id]
     d = derivation(scene_id)
-    words = notebook(scene_source(scene, d, doc, tuple(float(x) for x in range(2 * len(d.table.q)))))
+    words = notebook(scene_source(scene, d, scene_document(scene_id), tuple(float(x) for x in range(2 * len(d.table.q)))))
     markdown = [" ".join(c["source"]) if isinstance(c["source"], list) else c["source"] for c in json.loads(words)["cells"] if c["cell_type"] == "markdown"]  # fmt: skip
     assert any("mass matrix" in text for text in markdown)
     assert not [text for text in markdown if _BARE_M.search(text)]
