@@ -79,7 +79,7 @@ def run_note(scene_id: str, cache: JsonCache | None = None, chapter: Scenes | No
     s = scene(scene_id)
     if not s.lyapunov_seconds:
         return s.run_note
-    units = coordinate_units(held(chapter).document(scene_id).as_json(), scene=True)["units"]
+    units = coordinate_units(held(chapter).document(scene_id), scene=True)["units"]
     unit = units[s.system.coordinates[0]]
     try:
         measured = measure_scene(scene_id, cache, chapter)

@@ -13,8 +13,6 @@ Only the web layer's routes call this; SymPy runs in the worker pool, never here
 from __future__ import annotations
 
 import asyncio
-import json
-from typing import Any
 
 from app.engine.contract import first_stage
 from app.engine.document import Document, FirstStage
@@ -35,17 +33,16 @@ def equations_job(user: UserSystem) -> bytes:
     return guarded(run, encoded)
 
 
-async def equations_or_whole(users: UserSystems, user: UserSystem, client: str, address: str) -> dict[str, Any]:
-    """The whole document when it is cached already, else the first stage (a job of its own, cached too).
-
-    The whole document carries ``"stage": "whole"`` so that a caller knows it need not ask again."""
+async def equations_or_whole(users: UserSystems, user: UserSystem, client: str, address: str) -> Document | FirstStage:
+    """The whole document when it is cached already, else the first stage (a job of its own, cached too); each
+    read from its JSON off the event loop."""
     whole = users.derivations.get(spec_key(user))
     if whole is not None:
-        return {**await asyncio.to_thread(json.loads, whole), "stage": "whole"}
+        return await asyncio.to_thread(Document.model_validate_json, whole)
     body = await users.run_job(
         users.derivations, spec_key(user, "equations"), client, address, users.derive_seconds, equations_job, user
     )
-    return await asyncio.to_thread(json.loads, body)
+    return await asyncio.to_thread(FirstStage.model_validate_json, body)
 
 
 # The members of the first stage, which a whole document holds too (an API caller gets the same shape either way).

@@ -52,7 +52,7 @@ def page_model(
         info = scene_info(scene_id, doc)
         if s.lyapunov_seconds:  # a chaotic scene's measured exponent opens its run note
             info["run_note"] = lyapunov.run_note(scene_id, answers.lyapunov if answers else None, chapter)
-        return scene_page(doc.as_json(), info, particles, CHOICES, s.system.nonnegative)
+        return scene_page(doc, info, particles, CHOICES, s.system.nonnegative)
 
     return build() if pages is None else pages.model(scene_id, doc, build)
 
