@@ -10,10 +10,10 @@ from fastapi.responses import Response
 from app.engine.contract import scene_json
 from app.engine.document import Document
 from app.service import derivations, exporting
+from app.service.encoding import dumps
 from app.service.export.source import FORMATS
 from app.service.exporting import Exported
 from app.web.deps import AnswersDep, ChapterDep
-from app.web.responses import FastJSONResponse
 from app.web.schemas import Problem, SceneSummary
 from app.web.schemas_export import FORMAT_HELP, ExportFormat
 
@@ -33,8 +33,10 @@ def list_scenes() -> list[dict[str, Any]]:
 )
 def scene_derivation(scene_id: str, chapter: ChapterDep) -> Response:
     # A plain `def`: FastAPI runs it in its thread pool, so a first (uncached) derivation and the document's
-    # encoding (orjson, in FastJSONResponse) never block the event loop; the model is the OpenAPI's description.
-    return FastJSONResponse(chapter.document(scene_id).as_json())
+    # encoding (orjson) never block the event loop; the model is the OpenAPI's description. The bytes go out
+    # uncompressed, so that the ETag (a digest of them, app/web/etags.py) is one for every coding; ApiCompression
+    # compresses them after it.
+    return Response(dumps(chapter.document(scene_id).as_json()), media_type="application/json")
 
 
 def download(exported: Exported) -> Response:
