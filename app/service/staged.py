@@ -45,16 +45,16 @@ async def equations_or_whole(users: UserSystems, user: UserSystem, client: str, 
     return await asyncio.to_thread(FirstStage.model_validate_json, body)
 
 
-# The members of the first stage, which a whole document holds too (an API caller gets the same shape either way).
-FIRST_MEMBERS = ("coordinates", "angles", "symbols", "parameters", "equations_of_motion", "accelerations",
-                 "mass_matrix", "forcing", "skipped")  # fmt: skip
-
-
 def _from_whole(whole: bytes) -> bytes:
-    """The first stage's members of a whole document (``"stage": "whole"``, nothing pending), as JSON bytes."""
-    document = Document.model_validate_json(whole)
-    members = {key: getattr(document, key) for key in FIRST_MEMBERS}
-    return dumps(FirstStage(stage="whole", **members, pending=[]).as_json())
+    """The first stage's members of a whole document (``"stage": "whole"``, nothing pending), as JSON bytes: an
+    API caller gets the same shape either way (the whole document's notation is not repeated)."""
+    d = Document.model_validate_json(whole)
+    stage = FirstStage(
+        stage="whole", coordinates=d.coordinates, angles=d.angles, symbols=d.symbols, parameters=d.parameters,
+        equations_of_motion=d.equations_of_motion, accelerations=d.accelerations, mass_matrix=d.mass_matrix,
+        forcing=d.forcing, skipped=d.skipped, pending=[],
+    )  # fmt: skip
+    return dumps(stage.as_json())
 
 
 async def equations_bytes(users: UserSystems, user: UserSystem, client: str, address: str) -> bytes:
