@@ -109,8 +109,8 @@ class FixedDistance(BaseModel):
     """Two particles (or a particle and the origin, ``from`` null) at a distance proven constant: a rod to draw."""
 
     model_config = SHAPE
-    start: int | None = Field(alias="from", description="The particle's number from 1; null for the origin.")
-    to: int
+    start: int | None = Field(alias="from", description="The first particle's index (from 0); null for the origin.")
+    to: int = Field(description="The other particle's index (from 0).")
 
 
 class Conserved(BaseModel):

@@ -35,3 +35,18 @@ def test_a_document_that_changes_shape_is_refused():
         Document.model_validate({**served, "steps": [{k: v for k, v in served["steps"][0].items() if k != "title"}]})
     with pytest.raises(ValidationError, match="note"):
         Document.model_validate({**served, "steps": [{**served["steps"][0], "note": ""}]})
+
+
+def test_a_first_stage_has_the_models_shape_and_bytes():
+    from app.engine.contract import first_stage
+    from app.engine.document import FirstStage
+    from app.service.user_checks import checked
+    from app.service.user_jobs import derive_checked
+    from app.web.examples_user import SPINNING_HOOP
+
+    printed = first_stage(derive_checked(checked(SPINNING_HOOP)))
+    stage = FirstStage.model_validate(printed)
+    assert stage.stage == "equations" and stage.notation is not None
+    assert orjson.dumps(stage.as_json()) == orjson.dumps(printed)
+    with pytest.raises(ValidationError, match="steps"):
+        FirstStage.model_validate({**printed, "steps": []})  # a member of the whole document only
