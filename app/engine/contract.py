@@ -13,6 +13,7 @@ from app.engine.action_step import kinetic_focus_possible
 from app.engine.budget import Skipped, bounded, display_budget, display_work_left, is_zero, pythagoras, within_budget
 from app.engine.constraints import ConstraintForce
 from app.engine.derive import LARGE_FROM, Derivation
+from app.engine.document import Document
 from app.engine.errata import errata_json
 from app.engine.modes import NormalModes
 from app.engine.names import MASS_MATRIX, display_names, latex, unicode
@@ -74,6 +75,14 @@ def derivation_json(d: Derivation, scene: Scene | None = None, beyond: bool = Tr
     units = DISPLAY_WORK if len(d.table.names) < LARGE_FROM else LARGE_DISPLAY_WORK
     with display_budget(units):
         return _derivation_json(d, scene, beyond)
+
+
+def printed_document(d: Derivation, scene: Scene | None = None, beyond: bool = True) -> Document:
+    """The document of a derivation as the typed model every reader takes (``app.engine.document``): printed
+    once by ``derivation_json`` and validated once against the model (a fraction of a millisecond); a
+    chapter scene's carries its ``id``."""
+    printed = derivation_json(d, scene, beyond)
+    return Document.model_validate({"id": scene.id, **printed} if scene is not None else printed)
 
 
 def held_momenta(d: Derivation, scene: Scene | None) -> dict[str, float]:

@@ -11,14 +11,16 @@ temporary disk if it likes.
 
 from __future__ import annotations
 
+import json
 import pickle
 import threading
 from pathlib import Path
 from typing import Any
 
 from app.engine.budget import patience
-from app.engine.contract import derivation_json
+from app.engine.contract import printed_document
 from app.engine.derive import Derivation, derive
+from app.engine.document import Document
 from app.errors import UnknownScene
 from app.limits import SCENE_PATIENCE
 from app.numerics.observables import Observables
@@ -35,11 +37,23 @@ def scene(scene_id: str) -> Scene:
         raise UnknownScene(scene_id, tuple(sorted(SCENES))) from None
 
 
-def _document(s: Scene, d: Derivation) -> dict[str, Any]:
+def _document(s: Scene, d: Derivation) -> Document:
     # a scene's document is printed once per version and kept on disk: its bounds are patient, so what the
     # book prints does not depend on how loaded the machine was (members, Hamilton's forms, the modes)
     with patience(SCENE_PATIENCE):
-        return {"id": s.id, **derivation_json(d, scene=s)}
+        return printed_document(d, scene=s)
+
+
+class DocumentCache(JsonCache):
+    """The chapter's documents: the model in memory, its JSON on disk (the same file as the dict it replaced)."""
+
+    @staticmethod
+    def decode(data: bytes) -> Document:
+        return Document.model_validate_json(data)
+
+    @staticmethod
+    def encode(value: Document) -> bytes:
+        return json.dumps(value.as_json()).encode()
 
 
 class Scenes:
@@ -50,13 +64,13 @@ class Scenes:
 
     def __init__(self, folder: Path | None = None) -> None:
         self.folder = folder
-        self.documents = JsonCache("derivations", source_fingerprint("engine", "scenes"), folder)
+        self.documents = DocumentCache("derivations", source_fingerprint("engine", "scenes"), folder)
         self.compiled = Compiled(sources=scene_sources(folder))
         self._derivations: dict[str, Derivation] = {}
         self._guard = threading.Lock()  # guards ``_locks``, held only briefly
         self._locks: dict[str, threading.Lock] = {}
         # documents printed while a derivation was made (which computes its members), until ``document`` takes them
-        self._printed: dict[str, dict[str, Any]] = {}
+        self._printed: dict[str, Document] = {}
 
     def object_path(self, scene_id: str) -> Path:
         """Where a scene's pickled derivation is kept (keyed by the engine's and scenes' source)."""
@@ -91,12 +105,12 @@ class Scenes:
                 found = self._derivations[scene_id] = self.derived(scene_id)
             return found
 
-    def document(self, scene_id: str) -> dict[str, Any]:
-        """The contract JSON of a scene's derivation (memory and disk cached): for printing only; every
+    def document(self, scene_id: str) -> Document:
+        """The printed document of a scene's derivation (memory and disk cached): for printing only; every
         other reader takes the derivation's typed members (``derivation``)."""
         s = scene(scene_id)
 
-        def printed() -> dict[str, Any]:
+        def printed() -> Document:
             d = self.derivation(scene_id)
             return self._printed.pop(scene_id, None) or _document(s, d)
 
@@ -124,9 +138,15 @@ def derivation(scene_id: str) -> Derivation:
     return PROCESS_SCENES.derivation(scene_id)
 
 
-def derivation_document(scene_id: str) -> dict[str, Any]:
+def scene_document(scene_id: str) -> Document:
     """The process's document of a scene's derivation (``Scenes.document``)."""
     return PROCESS_SCENES.document(scene_id)
+
+
+def derivation_document(scene_id: str) -> dict[str, Any]:
+    """The JSON of the process's document of a scene, as GET /api/scenes/{id}/derivation sends it: what a script
+    or a test of the served contract reads."""
+    return PROCESS_SCENES.document(scene_id).as_json()
 
 
 def warm_all() -> None:

@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import Any
 
 from app.engine.derive import Derivation
+from app.engine.document import Document
 from app.limits import DEFAULT_T_END
 from app.service import derivations
 from app.service.cache import Recent
@@ -38,13 +38,13 @@ CACHED_EXPORTS = 64  # the size of the app's ``Recent`` of exports (app/service/
 
 
 def scene_export(
-    scene_id: str, fmt: str, printed: Callable[[str], dict[str, Any]], remembered: Recent | None = None
+    scene_id: str, fmt: str, printed: Callable[[str], Document], remembered: Recent | None = None
 ) -> Exported:
     """A scene's derivation as a file (run in a thread: the first call may derive), through ``remembered``
     (the app's recent exports) when given.
 
     An export prints the derivation's printed document (its LaTeX, its steps) again in another format;
-    ``printed`` gives a scene's document (the web layer's ``derivation_document``)."""
+    ``printed`` gives a scene's document (the app's ``Scenes.document``)."""
     _check_format(fmt)
 
     def make() -> Exported:
@@ -58,7 +58,7 @@ def scene_export(
 
 
 def system_export(
-    d: Derivation, document: dict[str, Any], fmt: str, initial: Mapping[str, float], t_end: float | None
+    d: Derivation, document: Document, fmt: str, initial: Mapping[str, float], t_end: float | None
 ) -> dict[str, str]:
     """A user system's derivation (and its JSON document) as a file, made in a worker.
 

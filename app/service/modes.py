@@ -45,7 +45,6 @@ from app.service.compiled import Compiled
 from app.service.derivations import Scenes
 from app.service.gates import Gates
 from app.service.simulate_request import parameter_vector
-from app.viz.panels import oscillating_equilibria
 
 AMPLITUDE = 1e-4  # of the largest component, in the coordinate's own unit
 CYCLES = 20  # of the mode measured
@@ -79,26 +78,17 @@ def at_rest(nm: NormalModes | Skipped) -> list[AtRest]:
     ]  # fmt: skip
 
 
-def from_document(block: Sequence[Mapping[str, Any]]) -> list[AtRest]:
-    """The same from a derivation document's ``normal_modes`` block (a user system's, sent to a worker)."""
-    return [
-        AtRest(dict(e["equilibrium"]), e["kind"], tuple((m["omega_squared"], dict(m["shape"])) for m in e["modes"]))
-        for e in oscillating_equilibria({"normal_modes": list(block)})
-    ]
-
-
 def measure(
     d: Derivation,
-    doc: Mapping[str, Any],
     *,
     gates: Gates,
     compiled: Compiled,
     key: str | None = None,
     parameters: Mapping[str, float] | None = None,
 ) -> list[dict[str, Any]]:
-    """``measured`` of a derivation document's ``normal_modes`` block (a user system's, in a worker)."""
-    equilibria = from_document(doc.get("normal_modes") or [])
-    return measured(d, equilibria, gates=gates, compiled=compiled, key=key, parameters=parameters)
+    """``measured`` of a derivation's own normal modes (a user system's, in a worker): no momentum is held, as
+    its document's are printed (the same member, computed once per derivation)."""
+    return measured(d, at_rest(d.normal_modes({})), gates=gates, compiled=compiled, key=key, parameters=parameters)
 
 
 def measured(

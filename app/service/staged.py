@@ -13,49 +13,48 @@ Only the web layer's routes call this; SymPy runs in the worker pool, never here
 from __future__ import annotations
 
 import asyncio
-import json
-from typing import Any
 
 from app.engine.contract import first_stage
+from app.engine.document import Document, FirstStage
 from app.engine.user_system import UserSystem
 from app.service.encoding import dumps
 from app.service.user_checks import spec_key
-from app.service.user_jobs import derive_checked, engine_budget, guarded
+from app.service.user_jobs import derive_checked, encoded, engine_budget, guarded
 from app.service.user_systems import UserSystems
 
 
 def equations_job(user: UserSystem) -> bytes:
     """Worker job: the first stage of a user system's derivation document (as JSON bytes)."""
 
-    def run() -> dict[str, Any]:
+    def run() -> FirstStage:
         with engine_budget(user):
-            return first_stage(derive_checked(user))
+            return FirstStage.model_validate(first_stage(derive_checked(user)))
 
-    return guarded(run)
+    return guarded(run, encoded)
 
 
-async def equations_or_whole(users: UserSystems, user: UserSystem, client: str, address: str) -> dict[str, Any]:
-    """The whole document when it is cached already, else the first stage (a job of its own, cached too).
-
-    The whole document carries ``"stage": "whole"`` so that a caller knows it need not ask again."""
+async def equations_or_whole(users: UserSystems, user: UserSystem, client: str, address: str) -> Document | FirstStage:
+    """The whole document when it is cached already, else the first stage (a job of its own, cached too); each
+    read from its JSON off the event loop."""
     whole = users.derivations.get(spec_key(user))
     if whole is not None:
-        return {**await asyncio.to_thread(json.loads, whole), "stage": "whole"}
+        return await asyncio.to_thread(Document.model_validate_json, whole)
     body = await users.run_job(
         users.derivations, spec_key(user, "equations"), client, address, users.derive_seconds, equations_job, user
     )
-    return await asyncio.to_thread(json.loads, body)
-
-
-# The members of the first stage, which a whole document holds too (an API caller gets the same shape either way).
-FIRST_MEMBERS = ("coordinates", "angles", "symbols", "parameters", "equations_of_motion", "accelerations",
-                 "mass_matrix", "forcing", "skipped")  # fmt: skip
+    return await asyncio.to_thread(FirstStage.model_validate_json, body)
 
 
 def _from_whole(whole: bytes) -> bytes:
-    """The first stage's members of a whole document (``"stage": "whole"``, nothing pending), as JSON bytes."""
-    document = json.loads(whole)
-    return dumps({"stage": "whole", **{key: document[key] for key in FIRST_MEMBERS}, "pending": []})
+    """The first stage's members of a whole document (``"stage": "whole"``, nothing pending), as JSON bytes: an
+    API caller gets the same shape either way (the whole document's notation is not repeated)."""
+    d = Document.model_validate_json(whole)
+    stage = FirstStage(
+        stage="whole", coordinates=d.coordinates, angles=d.angles, symbols=d.symbols, parameters=d.parameters,
+        equations_of_motion=d.equations_of_motion, accelerations=d.accelerations, mass_matrix=d.mass_matrix,
+        forcing=d.forcing, skipped=d.skipped, pending=[],
+    )  # fmt: skip
+    return dumps(stage.as_json())
 
 
 async def equations_bytes(users: UserSystems, user: UserSystem, client: str, address: str) -> bytes:

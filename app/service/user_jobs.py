@@ -9,7 +9,6 @@ input comes back as a located refusal, never as a server error.
 
 from __future__ import annotations
 
-import json
 import logging
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -18,8 +17,9 @@ from typing import Any
 from cachetools import LRUCache
 
 from app.engine.budget import OutOfTime, clock_limit
-from app.engine.contract import derivation_json
+from app.engine.contract import printed_document
 from app.engine.derive import Derivation, derive
+from app.engine.document import Document, FirstStage
 from app.engine.errors import DerivationError
 from app.engine.parse import ExpressionError, build
 from app.engine.symbols import SymbolTable
@@ -106,6 +106,11 @@ def derive_checked(user: UserSystem) -> Derivation:
     return d
 
 
+def encoded(document: Document | FirstStage) -> bytes:
+    """A printed document as the JSON the API sends (its model's JSON: the same bytes as the dict it replaced)."""
+    return dumps(document.as_json())
+
+
 def guarded(job: Callable[[], Any], encode: Callable[[Any], bytes] = dumps) -> bytes:
     """Run a job; an engine failure on user input is a refusal, never a server error.  Its result is sent
     as JSON, or as ``encode`` makes it (a step's problem: a pickle, for later jobs)."""
@@ -138,11 +143,11 @@ def derive_job(user: UserSystem) -> bytes:
     """Worker job: the derivation JSON of a user system (as for a scene), telling the page which part it is on
     (app/service/progress.py, under the same key as the derivation's cache)."""
 
-    def run() -> dict[str, Any]:
+    def run() -> Document:
         with progress.reported(spec_key(user)), engine_budget(user):
-            return derivation_json(derive_checked(user))
+            return printed_document(derive_checked(user))
 
-    return guarded(run)
+    return guarded(run, encoded)
 
 
 def simulate_job(user: UserSystem, request: Any) -> bytes:
@@ -163,7 +168,8 @@ def simulate_job(user: UserSystem, request: Any) -> bytes:
 def export_job(user: UserSystem, fmt: str, initial: dict[str, float], t_end: float | None, document: bytes) -> bytes:
     """Worker job: a user system as a notebook, script or LaTeX document (JSON-wrapped).
 
-    ``document`` is the system's derivation JSON (from ``derive_job``), so only printing is left to do."""
+    ``document`` is the system's derivation JSON (from ``derive_job``, as the cache holds it), so only printing
+    is left to do."""
     from app.numerics.errors import SimulationError
     from app.service.export.code import ExportError
     from app.service.exporting import system_export
@@ -171,7 +177,7 @@ def export_job(user: UserSystem, fmt: str, initial: dict[str, float], t_end: flo
     def run() -> dict[str, str]:
         d = derive_checked(user)
         try:
-            return system_export(d, json.loads(document), fmt, initial, t_end)
+            return system_export(d, Document.model_validate_json(document), fmt, initial, t_end)
         except SimulationError as exc:
             raise located(exc, simulation_loc(user, exc.part)) from None
         except ExportError as exc:
@@ -203,14 +209,12 @@ def poincare_job(user: UserSystem, options: dict[str, Any]) -> bytes:
     return derived_job(user, section_of_derivation, options)
 
 
-def modes_job(user: UserSystem, normal_modes: list[dict[str, Any]]) -> bytes:
-    """Worker job: predicted against measured normal-mode frequencies of a user system (app.service.modes).
-
-    ``normal_modes`` is the derivation document's block (the parent has the document cached).
-    """
+def modes_job(user: UserSystem) -> bytes:
+    """Worker job: predicted against measured normal-mode frequencies of a user system (app.service.modes), from
+    its derivation's own normal modes (the member its document prints)."""
     from app.service.modes import measure
 
     def run() -> list[dict[str, Any]]:
-        return measure(derive_checked(user), {"normal_modes": normal_modes}, **in_this_worker())
+        return measure(derive_checked(user), **in_this_worker())
 
     return guarded(run)

@@ -11,7 +11,6 @@ and a request identical to one already running waits for that job.
 from __future__ import annotations
 
 import asyncio
-import json
 import threading
 from collections.abc import Callable
 from typing import Any
@@ -189,10 +188,9 @@ class UserSystems:
         cached = self.simulations.get(key)
         if cached is not None:
             return cached
-        normal_modes = json.loads(await self.derive(user, client, address)).get("normal_modes") or []
-        return await self._run(
-            self.simulations, key, client, address, self.simulate_seconds, modes_job, user, normal_modes
-        )
+        # the derivation first, under its own limit (a refusal is the derivation's); the job measures its modes
+        await self.derive(user, client, address)
+        return await self._run(self.simulations, key, client, address, self.simulate_seconds, modes_job, user)
 
     async def export(
         self, user: UserSystem, fmt: str, initial: dict[str, float], t_end: float | None, client: str, address: str

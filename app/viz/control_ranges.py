@@ -21,9 +21,10 @@ import math
 from collections.abc import Sequence
 from typing import Any
 
+from app.engine.document import Document, NormalModesAt, Root
 from app.engine.names import unicode
 from app.engine.trees import Tree, TreeError, of_text
-from app.viz.exprtree import document_tree, evaluate, leaves
+from app.viz.exprtree import Expression, document_tree, evaluate, leaves
 from app.viz.units import coordinate_units
 
 DECADE = 10.0  # the useful range reaches this factor either side of a positive default
@@ -31,25 +32,25 @@ LOG_SPAN = 50.0  # a useful range wider than this factor moves on a log scale
 SCAN = 240  # points of the scan for a change of stability
 
 
-def formula(pair: dict[str, Any]) -> str:
+def formula(pair: Root) -> str:
     """A document expression as a label's text: the engine's running-text form (app/engine/report.Printer.text),
     its factors in the order of the LaTeX beside it (2gα − ω², as 2 g α − ω² reads)."""
-    return str(pair["unicode"])
+    return pair.unicode
 
 
-def _env(doc: dict[str, Any], **extra: float) -> dict[str, float]:
-    env = {k: float(v["default"]) for k, v in doc["parameters"].items()}
-    env.update(t=0.0, **{q: 0.0 for q in doc["coordinates"]}, **{f"{q}_dot": 0.0 for q in doc["coordinates"]})
+def _env(doc: Document, **extra: float) -> dict[str, float]:
+    env = {k: float(v.default) for k, v in doc.parameters.items()}
+    env.update(t=0.0, **{q: 0.0 for q in doc.coordinates}, **{f"{q}_dot": 0.0 for q in doc.coordinates})
     env.update(extra)
     return env
 
 
-def _names(doc: dict[str, Any]) -> list[str]:
-    q = doc["coordinates"]
-    return [*q, *(f"{c}_dot" for c in q), *doc["parameters"], "t"]
+def _names(doc: Document) -> list[str]:
+    q = doc.coordinates
+    return [*q, *(f"{c}_dot" for c in q), *doc.parameters, "t"]
 
 
-def _value(pair: dict[str, Any] | None, doc: dict[str, Any], env: dict[str, float]) -> float | None:
+def _value(pair: Expression | None, doc: Document, env: dict[str, float]) -> float | None:
     """A document expression's value at ``env`` (None when it has no tree or no finite value there)."""
     node = document_tree(pair, _names(doc))
     if node is None:
@@ -61,8 +62,8 @@ def _value(pair: dict[str, Any] | None, doc: dict[str, Any], env: dict[str, floa
     return v if math.isfinite(v) else None
 
 
-def _stable_modes(doc: dict[str, Any]) -> list[dict[str, Any]]:
-    return [e for e in doc.get("normal_modes") or [] if e.get("kind") == "stable" and e.get("modes")]
+def _stable_modes(doc: Document) -> list[NormalModesAt]:
+    return [e for e in doc.normal_modes if e.kind == "stable" and e.modes]
 
 
 def drag_coefficient(tree: Tree | None, q: str) -> str | None:
@@ -80,20 +81,20 @@ def drag_coefficient(tree: Tree | None, q: str) -> str | None:
     return c if isinstance(c, str) else None
 
 
-def damping_marks(doc: dict[str, Any]) -> dict[str, list[dict[str, Any]]]:
+def damping_marks(doc: Document) -> dict[str, list[dict[str, Any]]]:
     """Critical damping of each drag force Q_q = −c q̇ whose c is a single parameter."""
     marks: dict[str, list[dict[str, Any]]] = {}
     stable = _stable_modes(doc)
-    names = doc["coordinates"]
-    for q, force in (doc.get("generalized_forces") or {}).items():
+    names = doc.coordinates
+    for q, force in doc.generalized_forces.items():
         c = drag_coefficient(document_tree(force), q)
-        if c is None or c not in doc["parameters"] or not stable:
+        if c is None or c not in doc.parameters or not stable:
             continue
         e = stable[0]
         k = names.index(q)
-        env = _env(doc, **{c: float(v) for c, v in e["equilibrium"].items()})
-        mass = _value(doc["mass_matrix"][k][k], doc, env)
-        w2 = e["modes"][0]["omega_squared"] if len(e["modes"]) == 1 else None
+        env = _env(doc, **{c: float(v) for c, v in e.equilibrium.items()})
+        mass = _value(doc.mass_matrix[k][k], doc, env)
+        w2 = e.modes[0].omega_squared if len(e.modes) == 1 else None
         if mass and w2 and w2 > 0:
             value = 2 * mass * math.sqrt(w2)
             # critical for the equation linearised about the equilibrium: the full pendulum has no sharp threshold
@@ -101,15 +102,16 @@ def damping_marks(doc: dict[str, Any]) -> dict[str, list[dict[str, Any]]]:
     return marks
 
 
-def stability_marks(doc: dict[str, Any], ranges: dict[str, tuple[float, float]]) -> dict[str, list[dict[str, Any]]]:
+def stability_marks(doc: Document, ranges: dict[str, tuple[float, float]]) -> dict[str, list[dict[str, Any]]]:
     """Parameter values at which an equilibrium of the reduction changes stability (its ω² changes sign)."""
-    red = doc.get("effective_potential") or {}
+    red = doc.effective_potential
     marks: dict[str, list[dict[str, Any]]] = {}
-    coordinate = str(red.get("coordinate") or "")
-    for e in red.get("equilibria") or []:
-        w2_pair = e.get("omega_squared") or {}
-        w2, where = w2_pair.get("sympy"), e.get("position")
-        if not w2 or not where:
+    if red is None:
+        return marks
+    coordinate = red.coordinate
+    for e in red.equilibria:
+        w2_pair, where = e.omega_squared, e.position
+        if not w2_pair.sympy:
             continue
         tree = document_tree(w2_pair)
         for p, (lo, hi) in ranges.items():
@@ -128,7 +130,7 @@ def stability_marks(doc: dict[str, Any], ranges: dict[str, tuple[float, float]])
 START = "{start}"  # where a separatrix label names the starting value (filled here, and by static/js/separatrix.js)
 
 
-def separatrix_spec(doc: dict[str, Any]) -> dict[str, Any] | None:
+def separatrix_spec(doc: Document) -> dict[str, Any] | None:
     """What fixes the separatrix marks of a one-coordinate system's initial rate, as trees the browser can evaluate
     again when the start or a parameter changes (static/js/separatrix.js); None where nothing is conserved.
 
@@ -136,31 +138,31 @@ def separatrix_spec(doc: dict[str, Any]) -> dict[str, Any] | None:
     which is E = T + U only when no constraint moves; at rest h is U_eff = −L|_{q̇=0}, so
     h = ½ M(q) q̇² + U_eff(q).  Where h is not conserved (L depends on t, or a force does work) there is no level
     to reach, and no mark."""
-    if len(doc["coordinates"]) != 1 or not doc.get("hamiltonian_conserved") or doc.get("generalized_forces"):
+    if len(doc.coordinates) != 1 or not doc.hamiltonian_conserved or doc.generalized_forces:
         return None
-    q = doc["coordinates"][0]
-    h, mass = document_tree(doc.get("hamiltonian"), _names(doc)), document_tree(doc["mass_matrix"][0][0], _names(doc))
-    red = doc.get("effective_potential") or {}
-    if h is None or mass is None or red.get("coordinate") != q:
+    q = doc.coordinates[0]
+    h, mass = document_tree(doc.hamiltonian, _names(doc)), document_tree(doc.mass_matrix[0][0], _names(doc))
+    red = doc.effective_potential
+    if h is None or mass is None or red is None or red.coordinate != q:
         return None
     unit = coordinate_units(doc, scene=True)["units"].get(q, "")
     # the rate depends on where the run starts: the mark says which start it is for, and by which quantity
     # which quantity, where it is not E: h ≠ E on a moving constraint; with L alone E is not defined (None)
-    equal = doc.get("hamiltonian_equals_energy")
+    equal = doc.hamiltonian_equals_energy
     by = "" if equal else (", by h (conserved here, not E)" if equal is False else ", by h (conserved here)")
     tops = []
-    for e in red.get("equilibria") or []:
-        position, w2 = document_tree(e.get("position"), _names(doc)), document_tree(e.get("omega_squared"), _names(doc))
+    for e in red.equilibria:
+        position, w2 = document_tree(e.position, _names(doc)), document_tree(e.omega_squared, _names(doc))
         if position is None or w2 is None:
             continue
-        where = f"{unicode(q)} = {formula(e['position'])}"
+        where = f"{unicode(q)} = {formula(e.position)}"
         label = f"separatrix from {unicode(q)}(0) = {START}{f' {unit}' if unit else ''}{by}: just reaches {where}"
         tops.append({"position": position, "omega_squared": w2, "label": label})
     return {"coordinate": q, "h": h, "mass": mass, "tops": tops} if tops else None
 
 
 def separatrix_marks(
-    doc: dict[str, Any], initial: dict[str, float], parameters: dict[str, float] | None = None
+    doc: Document, initial: dict[str, float], parameters: dict[str, float] | None = None
 ) -> dict[str, list[dict[str, Any]]]:
     """The initial rates whose h just reaches an unstable equilibrium, for a one-coordinate system, from the
     start ``initial`` at the ``parameters`` (the defaults where not given)."""
@@ -196,9 +198,7 @@ def separatrix_marks(
     return {f"{q}_dot": marks} if marks else {}
 
 
-def held_span(
-    doc: dict[str, Any], expression: str, q: str, value: float, lo: float, hi: float
-) -> tuple[float, float]:
+def held_span(doc: Document, expression: str, q: str, value: float, lo: float, hi: float) -> tuple[float, float]:
     """The part of [lo, hi] about ``value`` where a set-up's event g (positive while the set-up holds: the bead
     still on its wire, g = R² − ρ²) is not negative, as a function of the coordinate ``q`` at the default
     parameters with every rate zero; [lo, hi] itself where g does not hold at ``value`` or has no tree."""
@@ -267,13 +267,12 @@ def useful_range(
     return low, high, False
 
 
-def ticks(doc: dict[str, Any], initial: dict[str, float]) -> dict[str, list[dict[str, Any]]]:
+def ticks(doc: Document, initial: dict[str, float]) -> dict[str, list[dict[str, Any]]]:
     """Every mark for every control, by control name."""
-    params = doc["parameters"]
     allowed = {
-        p: (float(info["min"]), float(info["max"]))
-        for p, info in params.items()
-        if info.get("min") is not None and info.get("max") is not None
+        p: (float(info.min), float(info.max))
+        for p, info in doc.parameters.items()
+        if info.min is not None and info.max is not None
     }
     marks = damping_marks(doc)
     for name, found in stability_marks(doc, allowed).items():

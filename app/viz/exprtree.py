@@ -12,19 +12,25 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
-from typing import Any
+from typing import Any, Protocol
 
 from app.engine.trees import Tree
 
 _RECIPROCALS = {"cot": "tan", "sec": "cos", "csc": "sin"}
 
 
-def document_tree(pair: dict[str, Any] | None, names: Iterable[str] | None = None) -> Tree | None:
-    """The tree of one of the document's expressions (``{"sympy", "latex", "tree"}``), or None when it
-    has none or uses a name outside ``names`` (the figure that needed it is then left out)."""
-    if not isinstance(pair, dict) or pair.get("tree") is None:
+class Expression(Protocol):
+    """One of the document's expressions (app.engine.document: a Pair, a Root, a conserved quantity...)."""
+
+    tree: Any
+
+
+def document_tree(pair: Expression | None, names: Iterable[str] | None = None) -> Tree | None:
+    """The tree of one of the document's expressions, or None when it has none or uses a name outside
+    ``names`` (the figure that needed it is then left out)."""
+    tree = None if pair is None else pair.tree
+    if tree is None:
         return None
-    tree = pair["tree"]
     return tree if names is None or leaves(tree) <= set(names) else None
 
 

@@ -16,6 +16,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+from app.engine.document import ConstraintForce, FixedDistance
 from app.engine.trees import TreeError, of_text
 from app.scenes.beads import WIRE_REACH
 from app.viz.exprtree import leaves
@@ -413,7 +414,7 @@ def _inferred(
     coordinates: Sequence[str],
     dim: int,
     defaults: Mapping[str, float],
-    proven: Sequence[Mapping[str, Any]],
+    proven: Sequence[FixedDistance],
     potential: Any = None,
 ) -> Family:
     """A system without a drawing of its own: its particles, with the rods, springs and pivot their motion implies."""
@@ -476,9 +477,9 @@ def mechanism(
     particles: Sequence[tuple[str, Sequence[str]]],
     coordinates: Sequence[str],
     three_d: bool,
-    forces: Sequence[dict[str, Any]] = (),
+    forces: Sequence[ConstraintForce] = (),
     defaults: Mapping[str, float] | None = None,
-    proven: Sequence[Mapping[str, Any]] = (),
+    proven: Sequence[FixedDistance] = (),
     potential: Any = None,
 ) -> dict[str, Any] | None:
     """The animation spec of a scene drawn as ``family_name`` (its ``Scene.family``; None when its positions
@@ -550,24 +551,22 @@ def mechanism(
     where = dict(family.applied)
     for f in forces:
         # every body the force acts on (a string pulls each mass it holds, twice as hard where it runs round a
-        # movable wheel); a document without "acts_on" gives the force on its own particle only
-        acting = f.get("acts_on") or [
-            {"particle": f.get("particle", 1), "direction_trees": f.get("direction_trees"), "ratio_tree": None}
+        # movable wheel); a force with none listed acts on its own particle only
+        acting = [(a.particle, a.direction_trees, a.ratio_tree) for a in f.acts_on] or [
+            (f.particle, f.direction_trees, None)
         ]
-        for share in acting:
-            k = int(share.get("particle", 1)) - 1
-            direction = share.get("direction_trees")
+        for particle, direction, ratio in acting:
+            k = particle - 1
             if not direction or not 0 <= k < len(own):
                 continue
             arrow = [direction[i] for i in family.axes]
             if any(a is None for a in arrow):
                 continue  # this force is left without an arrow
-            force = {"name": f["name"], "on": k, "direction": arrow}
-            ratio = share.get("ratio_tree")
+            force = {"name": f.name, "on": k, "direction": arrow}
             if ratio is not None and ratio != 1:
                 force["ratio"] = ratio
-            if k == int(f.get("particle", 1)) - 1 and f["name"] in where and where[f["name"]] in index:
-                force["at"] = index[where[f["name"]]]
+            if k == f.particle - 1 and f.name in where and where[f.name] in index:
+                force["at"] = index[where[f.name]]
             spec.forces.append(force)
     if not spec.points:
         return None

@@ -16,8 +16,9 @@ from typing import Any
 
 from app.engine import notation
 from app.engine.dimensions import kind_of_unit
+from app.engine.document import Document, EffectivePotential, FirstStage, ParameterInfo
 from app.engine.names import MASS_MATRIX, latex, prose, unicode
-from app.engine.notation import MASS_INERTIA, printed
+from app.engine.notation import printed
 from app.engine.report import CORE_STEPS
 from app.engine.trees import TreeError, maybe_of_text, of_text
 from app.limits import DEFAULT_T_END
@@ -25,7 +26,7 @@ from app.numerics import limits
 from app.numerics.methods import LABELS
 from app.viz.control_ranges import held_span, separatrix_spec, ticks, useful_range
 from app.viz.diagrams import diagram
-from app.viz.exprtree import document_tree, leaves
+from app.viz.exprtree import Expression, document_tree, leaves
 from app.viz.mechanism import mechanism
 from app.viz.names import label
 from app.viz.panels import Facts, folded, oscillating_equilibria, shown, texts
@@ -47,12 +48,12 @@ def power_of_ten(value: str) -> str:
 DEFAULT_RTOL = f"1e{round(math.log10(limits.RTOL_DEFAULT))}"
 
 
-def _names(doc: dict[str, Any], extra: Sequence[str] = ()) -> list[str]:
-    q = doc["coordinates"]
-    return [*q, *(f"{c}_dot" for c in q), *doc["parameters"], "t", *extra]
+def _names(doc: Document, extra: Sequence[str] = ()) -> list[str]:
+    q = doc.coordinates
+    return [*q, *(f"{c}_dot" for c in q), *doc.parameters, "t", *extra]
 
 
-def _pair_tree(pair: dict[str, Any] | None, names: Sequence[str]) -> Any:
+def _pair_tree(pair: Expression | None, names: Sequence[str]) -> Any:
     return document_tree(pair, names)
 
 
@@ -70,128 +71,125 @@ def shown_length(tex: str) -> tuple[int, int]:
     return rows, len(_SILENT.sub("", re.sub(r"\\[A-Za-z]+", "x", _SILENT.sub("", tex))))
 
 
-def _steps(doc: dict[str, Any]) -> list[dict[str, Any]]:
+def _steps(doc: Document) -> list[dict[str, Any]]:
     out = []
-    for i, s in enumerate(doc["steps"]):
-        rows, chars = shown_length(s["latex"])
+    for i, s in enumerate(doc.steps):
+        rows, chars = shown_length(s.latex)
         out.append(
             {
                 "number": i + 1,
-                "title": s["title"],
-                "latex": s["latex"],
-                "explanation": s["explanation"],
+                "title": s.title,
+                "latex": s.latex,
+                "explanation": s.explanation,
                 # folded only when long as read (two short lines never hide behind a button); a core step (L, the
                 # equations, the accelerations) is never folded: long ones are broken across lines
-                "long": (chars > LONG_STEP or rows > LONG_ROWS) and s["key"] not in CORE_STEPS,
+                "long": (chars > LONG_STEP or rows > LONG_ROWS) and s.key not in CORE_STEPS,
                 "rows": rows,
-                "core": s["key"] in CORE_STEPS,
+                "core": s.key in CORE_STEPS,
             }
         )
     return out
 
 
-def letter_of(doc: dict[str, Any], meaning: str, default: str, form: str = "latex") -> str:
+def letter_of(doc: Document | FirstStage, meaning: str, default: str, form: str = "latex") -> str:
     """The document's letter for a derived quantity (``form`` "latex" or "unicode"), from its Symbols table
     (app/engine/notation.py)."""
     return next(
-        (r[form] for r in doc.get("notation") or [] if r["kind"] == "derived" and r["meaning"].startswith(meaning)),
+        (getattr(r, form) for r in doc.notation or () if r.kind == "derived" and r.meaning.startswith(meaning)),
         default,
     )
 
 
-def depends_on_time(doc: dict[str, Any]) -> bool:
+def depends_on_time(doc: Document) -> bool:
     """Whether L depends explicitly on time (∂L/∂t ≠ 0): then h changes along a run and has no level sets to follow."""
-    return (doc.get("explicit_time_derivative") or {}).get("sympy", "0") != "0"
+    return doc.explicit_time_derivative.sympy != "0"
 
 
-def nothing_conserved(doc: dict[str, Any]) -> str:
+def nothing_conserved(doc: Document) -> str:
     """Why nothing is conserved, naming only the causes this system has: L depends on time, a force does work."""
     causes = []
     if depends_on_time(doc):
         causes.append("L depends explicitly on time (∂L/∂t ≠ 0)")
-    if doc.get("generalized_forces"):
-        on = ", ".join(unicode(q) for q in doc["generalized_forces"])
+    if doc.generalized_forces:
+        on = ", ".join(unicode(q) for q in doc.generalized_forces)
         causes.append(f"a generalized force that no potential describes acts on {on} and does work")
     if not causes:
         return "Nothing is conserved here: no coordinate is cyclic and no symmetry of L was found."
     return f"Nothing is conserved here: {' and '.join(causes)}, so h changes, and no momentum stays constant."
 
 
-def _answers(doc: dict[str, Any]) -> list[dict[str, Any]]:
+def _answers(doc: Document) -> list[dict[str, Any]]:
     """The steps that answer the scene's question (``Scene.answers``, by key as the reasons go: ``normal-modes``
     is every ``normal-modes:N``), for the Results box; an explanation already given above is not repeated."""
-    keys = (doc.get("scene") or {}).get("answers") or []
+    keys = doc.scene.answers if doc.scene else []
     said: set[str] = set()
     out = []
-    for s in doc["steps"]:
-        if any(s["key"] == k or s["key"].startswith(k + ":") for k in keys):
+    for s in doc.steps:
+        if any(s.key == k or s.key.startswith(k + ":") for k in keys):
             out.append(
                 {
-                    "title": s["title"],
-                    "latex": s["latex"],
-                    "explanation": "" if s["explanation"] in said else s["explanation"],
+                    "title": s.title,
+                    "latex": s.latex,
+                    "explanation": "" if s.explanation in said else s.explanation,
                 }
             )
-            said.add(s["explanation"])
+            said.add(s.explanation)
     return out
 
 
-def _summary(doc: dict[str, Any]) -> dict[str, Any]:
-    q = doc["coordinates"]
-    conserved = [
-        {"latex": f"{c.get('latex_name') or c['name']} = {c['latex']}", "reason": c["reason"]}
-        for c in doc.get("conserved", [])
-    ]
+def _summary(doc: Document) -> dict[str, Any]:
+    q = doc.coordinates
+    conserved = [{"latex": f"{c.latex_name or c.name} = {c.latex}", "reason": c.reason} for c in doc.conserved]
     ddot = {c: latex(f"{c}_ddot") for c in q}
     return {
         # what the statement asks, stated first (never only behind "Show all steps")
         "answers": _answers(doc),
-        "equations": [e["latex"] for e in doc["equations_of_motion"]],
+        "equations": [e.latex for e in doc.equations_of_motion],
         # none in closed form for a large system (listed in "skipped"): M⁻¹f
         # the coordinates' accelerations, then those of the positions they fix (the pulley's middle mass, Ÿ)
-        "accelerations": [f"{ddot[c]} = {doc['accelerations'][c]['latex']}" for c in q]
-        + [f"{latex(n + '_ddot')} = {e['latex']}" for n, e in (doc.get("dependent_accelerations") or {}).items()]
-        if doc["accelerations"]
+        "accelerations": [f"{ddot[c]} = {doc.accelerations[c].latex}" for c in q]
+        + [f"{latex(n + '_ddot')} = {e.latex}" for n, e in doc.dependent_accelerations.items()]
+        if doc.accelerations
         else [rf"\ddot{{q}} = {letter_of(doc, 'mass matrix', MASS_MATRIX[0])}^{{-1}} f"],
-        "momenta": [f"{latex('p_' + c)} = {doc['momenta'][c]['latex']}" for c in q],
+        "momenta": [f"{latex('p_' + c)} = {doc.momenta[c].latex}" for c in q],
         # members of the document left out within their own bounds, each with its reason
-        "skipped": [s["reason"] for s in doc.get("skipped") or []],
+        "skipped": [s.reason for s in doc.skipped],
         "conserved": conserved,
         "nothing_conserved": nothing_conserved(doc),
-        "h_equals_e": doc["hamiltonian_equals_energy"],
-        "h_reason": doc["hamiltonian_energy_reason"],
-        "h_conserved": doc.get("hamiltonian_conserved"),
-        "h_conserved_reason": doc.get("hamiltonian_conserved_reason"),
-        "hamiltonian": "h = " + doc["hamiltonian"]["latex"],
-        "energy_minus_h": (doc.get("energy_minus_hamiltonian") or {}).get("latex"),
+        "h_equals_e": doc.hamiltonian_equals_energy,
+        "h_reason": doc.hamiltonian_energy_reason,
+        "h_conserved": doc.hamiltonian_conserved,
+        "h_conserved_reason": doc.hamiltonian_conserved_reason,
+        "hamiltonian": "h = " + doc.hamiltonian.latex,
+        "energy_minus_h": doc.energy_minus_hamiltonian.latex,
         "effective_potential": (
             {
-                **doc["effective_potential"],
-                "coordinate_latex": latex(doc["effective_potential"]["coordinate"]) + " = ",
-                "root_latex": latex(doc["effective_potential"]["coordinate"]) + "_0",
+                **doc.effective_potential.model_dump(),
+                "coordinate_latex": latex(doc.effective_potential.coordinate) + " = ",
+                "root_latex": latex(doc.effective_potential.coordinate) + "_0",
                 "frequency_latex": letter_of(doc, "angular frequency", r"\omega"),
                 # the inertia's letter as the steps print it: I_eff for an angle, m_eff for a length
-                "inertia_latex": _inertia(doc["effective_potential"], "latex"),
+                "inertia_latex": _inertia(doc.effective_potential, "latex"),
             }
-            if doc.get("effective_potential")
+            if doc.effective_potential
             else None
         ),
         # each force with its letter, F₁ = …, as the Symbols table defines it (app/engine/notation.py)
         "constraint_forces": [
-            {**c, "symbol": notation.force(k)[0], "latex": f"{notation.force(k)[0]} = {c['latex']}"}
-            for k, c in enumerate(doc.get("constraint_forces") or [], start=1)
+            {**c.model_dump(), "symbol": notation.force(k)[0], "latex": f"{notation.force(k)[0]} = {c.latex}"}
+            for k, c in enumerate(doc.constraint_forces, start=1)
         ],
         # every letter of the page once, with what it stands for
-        "symbols": doc.get("notation") or [],
+        "symbols": [n.model_dump() for n in doc.notation],
     }
 
 
-def _transformed(doc: dict[str, Any]) -> list[dict[str, Any]] | None:
+def _transformed(doc: Document) -> list[dict[str, Any]] | None:
     """The derivation in other coordinates (the rail's centre of mass and separation), as labelled rows of LaTeX."""
-    tr = doc.get("transformed")
+    tr = doc.transformed
     if not tr:
         return None
-    q = tr.get("coordinates", [])
+    q = tr.coordinates
     sym = {c: latex(c) for c in q}
     rows: list[dict[str, Any]] = []
 
@@ -199,23 +197,22 @@ def _transformed(doc: dict[str, Any]) -> list[dict[str, Any]] | None:
         if items:
             rows.append({"title": title, "latex": items})
 
-    add("New coordinates", [f"{sym.get(c, c)} = {e['latex']}" for c, e in tr.get("definitions", {}).items()])
-    add("Old coordinates in the new", [f"{latex(c)} = {e['latex']}" for c, e in tr.get("inverse", {}).items()])
-    if "lagrangian" in tr:
-        add("Lagrangian", [f"L = {tr['lagrangian']['latex']}"])
-    add("Cyclic coordinates", [", ".join(sym.get(c, c) for c in tr.get("cyclic", []))] if tr.get("cyclic") else [])
-    if "reduced_mass" in tr:
-        add("Reduced mass", [rf"\mu = {tr['reduced_mass']['latex']}"])
-    if rel := tr.get("relative_motion"):
+    add("New coordinates", [f"{sym.get(c, c)} = {e.latex}" for c, e in tr.definitions.items()])
+    add("Old coordinates in the new", [f"{latex(c)} = {e.latex}" for c, e in tr.inverse.items()])
+    add("Lagrangian", [f"L = {tr.lagrangian.latex}"])
+    add("Cyclic coordinates", [", ".join(sym.get(c, c) for c in tr.cyclic)] if tr.cyclic else [])
+    if tr.reduced_mass is not None:
+        add("Reduced mass", [rf"\mu = {tr.reduced_mass.latex}"])
+    if rel := tr.relative_motion:
         # the separation moves as one body of the reduced mass: what the rail's problem asks to show
-        add("Relative motion", [rel["equation"], rel["frequency"]])
-    add("Accelerations", [rf"\ddot{{{sym.get(c, c)}}} = {e['latex']}" for c, e in tr.get("accelerations", {}).items()])
-    add("Momenta", [f"p_{{{sym.get(c, c)}}} = {e['latex']}" for c, e in tr.get("momenta", {}).items()])
+        add("Relative motion", [rel.equation, rel.frequency])
+    add("Accelerations", [rf"\ddot{{{sym.get(c, c)}}} = {e.latex}" for c, e in tr.accelerations.items()])
+    add("Momenta", [f"p_{{{sym.get(c, c)}}} = {e.latex}" for c, e in tr.momenta.items()])
     conserved = []
-    for c in tr.get("conserved", []):
-        text = f"{c.get('latex_name') or c['name']} = {c['latex']}"
-        if c.get("original") and c["name"].startswith("p_"):
-            text += f" = {c['original']['latex']}"  # the same momentum in the old coordinates
+    for c in tr.conserved:
+        text = f"{c.latex_name or c.name} = {c.latex}"
+        if c.name.startswith("p_"):
+            text += f" = {c.original.latex}"  # the same momentum in the old coordinates
         conserved.append(text)
     add("Conserved", conserved)
     return rows
@@ -282,24 +279,20 @@ def unit_latex(unit: str) -> str:
     return r"\,\mathrm{" + printed.replace("·", r"\,") + "}"
 
 
-def angles(doc: dict[str, Any]) -> set[str]:
+def angles(doc: Document) -> set[str]:
     """Coordinates that are angles, as the derivation document records them."""
-    return set(doc.get("angles") or [])
+    return set(doc.angles)
 
 
-def _polar(doc: dict[str, Any], q: str) -> bool:
+def _polar(doc: Document, q: str) -> bool:
     """Whether the angle ``q`` is a polar angle: sin²q multiplies another coordinate's entry of the mass
     matrix (m R² sin²θ for φ), so q = 0 and q = π are the poles of the coordinates."""
-    rows = doc.get("mass_matrix") or []
-    return any(
-        f"sin({q})**2" in str(rows[k][k].get("sympy", ""))
-        for k, c in enumerate(doc["coordinates"])
-        if c != q and k < len(rows)
-    )
+    rows = doc.mass_matrix
+    return any(f"sin({q})**2" in rows[k][k].sympy for k, c in enumerate(doc.coordinates) if c != q and k < len(rows))
 
 
 def _initial_controls(
-    doc: dict[str, Any],
+    doc: Document,
     initial: dict[str, float],
     nonnegative: Sequence[str],
     angular: set[str],
@@ -312,10 +305,10 @@ def _initial_controls(
     # a set-up that ends where a coordinate falls below zero (the block at the foot of its ramp) starts
     # only where it holds: that coordinate's slider begins at 0
     held = {e["expression"].strip() for e in events}
-    lengths = [p["default"] for p in doc["parameters"].values() if p.get("unit") == "m" and p["default"] > 0]
+    lengths = [p.default for p in doc.parameters.values() if p.unit == "m" and p.default > 0]
     scale = max([1.0, *lengths])
     controls = []
-    for q in doc["coordinates"]:
+    for q in doc.coordinates:
         angle = q in angular or units.get(q) == "rad"
         value, rate = float(initial.get(q, 0.0)), float(initial.get(f"{q}_dot", 0.0))
         if angle:
@@ -362,16 +355,16 @@ def _marks(found: Sequence[dict[str, Any]], unit: str) -> list[dict[str, Any]]:
     return out
 
 
-def _described(info: dict[str, Any]) -> str:
+def _described(info: ParameterInfo) -> str:
     """What a parameter without a description is, by its unit (so that a label never repeats the name: "m m")."""
-    return info.get("description") or kind_of_unit(info.get("unit") or "") or "a parameter"
+    return info.description or kind_of_unit(info.unit) or "a parameter"
 
 
-def _open_range(default: float, info: dict[str, Any]) -> tuple[float, float]:
+def _open_range(default: float, info: ParameterInfo) -> tuple[float, float]:
     """The range of a parameter whose declaration leaves it open: an angle between 0 and π/2 (a cone's half-angle,
     an incline's slope) stays in that quarter turn, another angle within a half turn either way; any other
     quantity ± a round power of ten (_round_reach)."""
-    if (info.get("unit") or "").strip() == "rad":
+    if info.unit.strip() == "rad":
         if 0 < default <= math.pi / 2:
             return ABOVE_ZERO / 1000, math.pi / 2
         return -math.pi, math.pi
@@ -379,18 +372,18 @@ def _open_range(default: float, info: dict[str, Any]) -> tuple[float, float]:
     return -reach, reach
 
 
-def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any]]]) -> list[dict[str, Any]]:
+def _parameter_controls(doc: Document, marks: dict[str, list[dict[str, Any]]]) -> list[dict[str, Any]]:
     controls = []
-    for name, info in doc["parameters"].items():
-        default = float(info["default"])
+    for name, info in doc.parameters.items():
+        default = float(info.default)
         # a bound the declaration leaves open is a round one, ± a power of ten at least ten times the default
         # (a mass of 1 kg: up to 10 kg; g = 9.81 m/s²: up to 100), never the default plus ten
         lo_open, hi_open = _open_range(default, info)
-        lo = info.get("min") if info.get("min") is not None else lo_open
-        hi = info.get("max") if info.get("max") is not None else hi_open
+        lo = info.min if info.min is not None else lo_open
+        hi = info.max if info.max is not None else hi_open
         found = [m for m in marks.get(name, []) if lo <= m["value"] <= hi]
         slider_lo, slider_hi, log = useful_range(default, float(lo), float(hi), found)
-        unit = info.get("unit") or ""
+        unit = info.unit
         controls.append(
             {"name": name, "label": label(name), "latex": latex(name), "unit": unit,
              "min": _fmt(lo), "max": _fmt(hi), "value": _fmt(default), "log": log,
@@ -401,49 +394,49 @@ def _parameter_controls(doc: dict[str, Any], marks: dict[str, list[dict[str, Any
     return controls
 
 
-def _inertia(red: dict[str, Any], form: str) -> str:
+def _inertia(red: EffectivePotential, form: str) -> str:
     """The reduced coordinate's inertia letter (``form`` "latex" or "unicode") as the document names it
-    (app/engine/notation.inertia); m_eff for a document from before it did."""
-    return (red.get("inertia") or {}).get(form) or getattr(MASS_INERTIA, form)
+    (app/engine/notation.inertia)."""
+    return str(getattr(red.inertia, form))
 
 
-def _reduction(doc: dict[str, Any]) -> dict[str, Any] | None:
-    red = doc.get("effective_potential")
+def _reduction(doc: Document) -> dict[str, Any] | None:
+    red = doc.effective_potential
     if not red:
         return None
-    momenta = [m for m in red.get("momenta", [])]
+    momenta = list(red.momenta)
     names = _names(doc, momenta)
     coordinate_of = {m: m[2:] for m in momenta if m.startswith("p_")}
     out = {
-        "coordinate": red["coordinate"],
+        "coordinate": red.coordinate,
         "momenta": [
             {
                 "symbol": m,
                 "coordinate": coordinate_of.get(m),
-                "tree": _pair_tree(doc["momenta"].get(coordinate_of.get(m, "")), names),
+                "tree": _pair_tree(doc.momenta.get(coordinate_of.get(m, "")), names),
             }
             for m in momenta
         ],
-        "potential": _pair_tree(red["potential"], names),
-        "mass": _pair_tree(red["mass"], names),
+        "potential": _pair_tree(red.potential, names),
+        "mass": _pair_tree(red.mass, names),
         # the inertia's letter as the document prints it (I_eff for an angle, m_eff for a length: app/engine/notation.py)
         "inertia": _inertia(red, "unicode"),
-        "condition": _pair_tree(red["condition"], names),
-        "omega_squared": _pair_tree(red["omega_squared"], names),
+        "condition": _pair_tree(red.condition, names),
+        "omega_squared": _pair_tree(red.omega_squared, names),
         "equilibria": [
             {
-                "position": _pair_tree(e["position"], names),
-                "omega_squared": _pair_tree(e["omega_squared"], names),
-                "stable": e.get("stable"),
+                "position": _pair_tree(e.position, names),
+                "omega_squared": _pair_tree(e.omega_squared, names),
+                "stable": e.stable,
             }
-            for e in red.get("equilibria", [])
+            for e in red.equilibria
         ],  # fmt: skip
     }
     essential = [out["potential"], out["mass"], *(m["tree"] for m in out["momenta"])]
     return out if all(x is not None for x in essential) else None
 
 
-def _separatrix(doc: dict[str, Any], rate_units: dict[str, str]) -> dict[str, Any] | None:
+def _separatrix(doc: Document, rate_units: dict[str, str]) -> dict[str, Any] | None:
     """control_ranges.separatrix_spec with the unit its note prints the rates in (static/js/separatrix.js)."""
     spec = separatrix_spec(doc)
     if spec is None:
@@ -451,9 +444,9 @@ def _separatrix(doc: dict[str, Any], rate_units: dict[str, str]) -> dict[str, An
     return {**spec, "unit": unit_text(rate_units.get(spec["coordinate"]) or rate_unit(""))}
 
 
-def _focus_possible(doc: dict[str, Any]) -> bool:
+def _focus_possible(doc: Document) -> bool:
     """The engine's verdict (app/engine/action_step.py); a document from before it counts as "possible"."""
-    return doc.get("kinetic_focus_possible", True) is not False
+    return doc.kinetic_focus_possible
 
 
 def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bool = True) -> dict[str, Any]:
@@ -461,55 +454,52 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bo
     # rad for an angle, m where the dimensions say so, nothing where they cannot tell (app/viz/units.py)
     known = coordinate_units(doc, scene)
     units = known["units"]
-    conserved = [
-        {"name": c["name"], "label": label(c["name"]), "tree": document_tree(c, names)}
-        for c in doc.get("conserved", [])
-    ]
+    conserved = [{"name": c.name, "label": label(c.name), "tree": document_tree(c, names)} for c in doc.conserved]
     return {
-        "id": doc.get("id"),
-        "coordinates": doc["coordinates"],
-        "labels": {n: label(n) for n in [*names, *(c["name"] for c in doc.get("conserved", []))] if n != "t"},
+        "id": doc.id,
+        "coordinates": doc.coordinates,
+        "labels": {n: label(n) for n in [*names, *(c.name for c in doc.conserved)] if n != "t"},
         "units": units,
         # the letter of a small-oscillation frequency on this page (Ω where ω is the parabola's turning rate)
         "frequency_letter": letter_of(doc, "angular frequency", "ω", "unicode"),
         "rate_units": known["rate_units"],
         "momentum_units": known["momentum_units"],
         "nonnegative": list(nonnegative),
-        "parameters": {k: v["default"] for k, v in doc["parameters"].items()},
-        "parameter_units": {k: v.get("unit", "") for k, v in doc["parameters"].items()},
+        "parameters": {k: v.default for k, v in doc.parameters.items()},
+        "parameter_units": {k: v.unit for k, v in doc.parameters.items()},
         "initial": info.get("initial", {}),
         "t_end": info.get("t_end", DEFAULT_T_END),
         "panels": info["panels"],
         # a frequency exact at every amplitude (the tabletop's radial motion), said in its own words
         "exact_frequency": info.get("exact_frequency", ""),
         "trees": {
-            "kinetic": _pair_tree(doc.get("kinetic"), names),
-            "potential": _pair_tree(doc.get("potential"), names),
-            "hamiltonian": _pair_tree(doc.get("hamiltonian"), names),
-            "energy": _pair_tree(doc.get("energy"), names),
-            "momenta": {q: _pair_tree(doc["momenta"][q], names) for q in doc["coordinates"]},
+            "kinetic": _pair_tree(doc.kinetic, names),
+            "potential": _pair_tree(doc.potential, names),
+            "hamiltonian": _pair_tree(doc.hamiltonian, names),
+            "energy": _pair_tree(doc.energy, names),
+            "momenta": {q: _pair_tree(doc.momenta[q], names) for q in doc.coordinates},
         },
-        "cyclic": doc.get("cyclic", []),
+        "cyclic": doc.cyclic,
         "conserved": conserved,
         "nothing_conserved": nothing_conserved(doc),
-        "h_equals_e": doc["hamiltonian_equals_energy"],
-        "forced": bool(doc.get("generalized_forces")),
+        "h_equals_e": doc.hamiltonian_equals_energy,
+        "forced": bool(doc.generalized_forces),
         "time_dependent": depends_on_time(doc),
         # whether a true path can reach a kinetic focus (the action panel says none exists where it cannot)
         "kinetic_focus_possible": _focus_possible(doc),
         # each generalized force Q that no potential describes, by coordinate (the action panel's ∫ Q δq dt)
-        "forces": {q: _pair_tree(pair, names) for q, pair in (doc.get("generalized_forces") or {}).items()},
+        "forces": {q: _pair_tree(pair, names) for q, pair in doc.generalized_forces.items()},
         "reduction": reduction,
         # what the initial rate's separatrix marks are worked out from, again in the browser as the start changes
         "separatrix": _separatrix(doc, known["rate_units"]),
         "constraint_forces": [
             {
-                "name": c["name"],
-                "label": label(c["name"]),
-                "convention": c.get("convention", ""),
-                "slack_when_negative": bool(c.get("slack_when_negative")),
+                "name": c.name,
+                "label": label(c.name),
+                "convention": c.convention,
+                "slack_when_negative": c.slack_when_negative,
             }
-            for c in doc.get("constraint_forces") or []
+            for c in doc.constraint_forces
         ],  # fmt: skip
         "mechanism": spec,
         # where the set-up ends (the browser's preview stops there too, as the server's run does)
@@ -520,11 +510,11 @@ def _client(doc, info, reduction, spec, methods, nonnegative, angular, scene: bo
         "methods": list(methods),
         "method_labels": {m: LABELS.get(m, m) for m in (*methods, *LABELS)},
         # equilibria at rest with an oscillating mode (numbers at the default parameters), for the modes panel
-        "normal_modes": oscillating_equilibria(doc),
+        "normal_modes": [e.model_dump() for e in oscillating_equilibria(doc)],
     }
 
 
-def _panels(declared: Sequence[str], doc: dict[str, Any], reduction, spec, scene: bool) -> tuple[list[str], list[str]]:
+def _panels(declared: Sequence[str], doc: Document, reduction, spec, scene: bool) -> tuple[list[str], list[str]]:
     """The panels this page shows (app/viz/panels.py): every available one, optional ones where declared; and
     those of them that sit closed under "details" (the method comparison where the method does not matter)."""
     facts = Facts(doc, reduction, spec["dim"] if spec is not None else None, scene)
@@ -578,7 +568,7 @@ def page_symbols(model: dict[str, Any]) -> list[dict[str, Any]]:
 
 
 def scene_page(
-    doc: dict[str, Any],
+    doc: Document,
     info: dict[str, Any],
     particles: Sequence[tuple[str, Sequence[str]]] = (),
     methods: Sequence[str] = ("auto",),
@@ -591,16 +581,16 @@ def scene_page(
     """
     declared = list(info.get("panels", ()))
     reduction = _reduction(doc)
-    defaults = {k: v["default"] for k, v in doc["parameters"].items()}
+    defaults = {k: v.default for k, v in doc.parameters.items()}
     spec = mechanism(
         info.get("family", ""),
         particles,
-        doc["coordinates"],
-        moves_in_3d(particles, doc["coordinates"]),
-        forces=doc.get("constraint_forces") or (),
+        doc.coordinates,
+        moves_in_3d(particles, doc.coordinates),
+        forces=doc.constraint_forces,
         defaults=defaults,
-        proven=doc.get("fixed_distances") or (),
-        potential=document_tree(doc.get("potential")),
+        proven=doc.fixed_distances,
+        potential=document_tree(doc.potential),
     )
     panels, closed = _panels(declared, doc, reduction, spec, scene)
     # symbol names in the scene's prose as a reader writes them (m₁, x₂)
@@ -614,10 +604,10 @@ def scene_page(
         "panels": panels,
         "folded_panels": closed,
         "panel_text": texts(
-            bool(doc.get("generalized_forces")),
-            angles=bool(doc.get("angles")),
+            bool(doc.generalized_forces),
+            angles=bool(doc.angles),
             focus=_focus_possible(doc),
-            several=len(doc["coordinates"]) > 1,
+            several=len(doc.coordinates) > 1,
         ),
         "diagram": diagram(
             info.get("family", ""),
@@ -625,7 +615,7 @@ def scene_page(
             info.get("figure", ""),
             defaults,
             info.get("initial", {}),
-            doc["coordinates"],
+            doc.coordinates,
             particles,
             marks=info.get("marks", ()),
         ),  # fmt: skip
@@ -635,7 +625,7 @@ def scene_page(
         "animation_none": bool(spec and spec.get("none")),
         "steps": _steps(doc),
         "summary": _summary(doc),
-        "errata": [{**e, "reason": prose(e["reason"])} for e in doc.get("errata") or []],
+        "errata": [{**e.model_dump(), "reason": prose(e.reason)} for e in doc.errata],
         "transformed": _transformed(doc),
         "parameters": _parameter_controls(doc, marks),
         "initial": _initial_controls(

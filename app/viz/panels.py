@@ -15,6 +15,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from app.engine.document import Document, NormalModesAt
 from app.viz.exprtree import document_tree, evaluate, leaves
 
 
@@ -22,56 +23,52 @@ from app.viz.exprtree import document_tree, evaluate, leaves
 class Facts:
     """What the rules look at: the derivation document and what the page model built from it."""
 
-    doc: dict[str, Any]
+    doc: Document
     reduction: dict[str, Any] | None  # the page's one-coordinate reduction (expression trees), if any
     mechanism_dim: int | None  # 2 or 3 when the mechanism can be drawn
     scene: bool  # a chapter scene (with a work-precision report), not a user's system
 
     @property
     def dof(self) -> int:
-        return len(self.doc["coordinates"])
+        return len(self.doc.coordinates)
 
     @property
     def conservative(self) -> bool:
         """No generalized force and no explicit time: h is conserved."""
-        return not self.doc.get("generalized_forces") and bool(self.doc.get("hamiltonian_conserved"))
+        return not self.doc.generalized_forces and self.doc.hamiltonian_conserved
 
 
-def constant_accelerations(doc: dict[str, Any]) -> bool:
+def constant_accelerations(doc: Document) -> bool:
     """Whether every acceleration is a constant (no coordinate, velocity or t in it): motion in t².
 
     Such a motion is integrated exactly by any method of order two or more, so an error
     against run time chart would show round-off and timing noise only."""
-    q = doc["coordinates"]
+    q = doc.coordinates
     moving = [*q, *(f"{c}_dot" for c in q), "t"]
-    names = [*moving, *doc["parameters"]]
-    trees = [document_tree(pair, names) for pair in doc["accelerations"].values()]
+    names = [*moving, *doc.parameters]
+    trees = [document_tree(pair, names) for pair in doc.accelerations.values()]
     # no closed form (M⁻¹f kept factored, a large system) is never constant here
     return bool(trees) and all(t is not None and not (leaves(t) & set(moving)) for t in trees)
 
 
-def oscillating_equilibria(doc: dict[str, Any]) -> list[dict[str, Any]]:
+def oscillating_equilibria(doc: Document) -> list[NormalModesAt]:
     """Equilibria at rest (not steady motions of a reduction) with at least one mode that oscillates."""
-    return [
-        e
-        for e in doc.get("normal_modes") or []
-        if e.get("stable") and not e.get("momenta") and any(m["omega_squared"] > 0 for m in e["modes"])
-    ]
+    return [e for e in doc.normal_modes if e.stable and not e.momenta and any(m.omega_squared > 0 for m in e.modes)]
 
 
-def linear_equations(doc: dict[str, Any]) -> bool:
+def linear_equations(doc: Document) -> bool:
     """Whether every acceleration is linear (affine) in the coordinates and velocities, at the default parameters.
 
     Tested on the document's own trees: an affine a(y) satisfies a(u + v) = a(u) + a(v) - a(0) at any u, v;
     three pairs of points in general position, to 10⁻⁹ of the values' size."""
-    q = doc["coordinates"]
+    q = doc.coordinates
     moving = [*q, *(f"{c}_dot" for c in q)]
-    names = [*moving, "t", *doc["parameters"]]
-    found = [document_tree(pair, names) for pair in doc["accelerations"].values()]
+    names = [*moving, "t", *doc.parameters]
+    found = [document_tree(pair, names) for pair in doc.accelerations.values()]
     trees = [t for t in found if t is not None]
     if not trees or len(trees) < len(found):
         return False
-    base = {k: float(v.get("default", 1.0)) for k, v in doc["parameters"].items()} | {"t": 0.0}
+    base = {k: float(v.default) for k, v in doc.parameters.items()} | {"t": 0.0}
     zero = base | dict.fromkeys(moving, 0.0)
     for k in range(3):
         u = base | {n: 0.31 + 0.17 * k + 0.07 * i for i, n in enumerate(moving)}
@@ -101,7 +98,7 @@ def can_be_chaotic(f: Facts) -> bool:
     A conserved momentum (a cyclic coordinate's) leaves one degree of freedom of two (the cone, the spherical
     pendulum); linear equations separate into normal modes (the coupled oscillators). Either way the motion is
     integrable: a Poincaré section would be closed curves only, and every method integrates it well."""
-    momenta = any(c["name"].startswith("p_") for c in f.doc.get("conserved", []))
+    momenta = any(c.name.startswith("p_") for c in f.doc.conserved)
     return f.dof >= 2 and not momenta and not linear_equations(f.doc)
 
 
@@ -158,7 +155,7 @@ PANELS: tuple[Panel, ...] = (
         "With a constraint that moves, or a term in T linear in the velocities, h and E differ, and when L does "
         "not depend on time h is the one conserved; the lower plot shows the difference E − h.",
         "h and E differ",
-        lambda f: f.doc.get("hamiltonian_equals_energy") is False,
+        lambda f: f.doc.hamiltonian_equals_energy is False,
     ),
     Panel(
         "momenta",
@@ -167,7 +164,7 @@ PANELS: tuple[Panel, ...] = (
         "momentum J of a rotation that leaves L unchanged) and, below, their change since t = 0, which only "
         "numerical error can produce.",
         "a generalized momentum is conserved",
-        lambda f: any(c["name"].startswith(("p_", "P_", "J")) for c in f.doc.get("conserved", [])),
+        lambda f: any(c.name.startswith(("p_", "P_", "J")) for c in f.doc.conserved),
     ),
     Panel(
         "phase",
@@ -225,7 +222,7 @@ PANELS: tuple[Panel, ...] = (
         "Force of constraint",
         "The force that holds the constraint, derived with a Lagrange multiplier and evaluated along the run.",
         "a constraint force is derived",
-        lambda f: bool(f.doc.get("constraint_forces")),
+        lambda f: bool(f.doc.constraint_forces),
     ),
     Panel(
         "action",

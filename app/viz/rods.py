@@ -18,6 +18,7 @@ import random
 from collections.abc import Mapping, Sequence
 from typing import Any
 
+from app.engine.document import FixedDistance
 from app.engine.trees import TreeError, of_text
 from app.viz.exprtree import evaluate, leaves
 
@@ -57,10 +58,10 @@ def rods(
     particles: Sequence[tuple[str, Sequence[str]]],
     coordinates: Sequence[str],
     defaults: Mapping[str, float],
-    proven: Sequence[Mapping[str, Any]] = (),
+    proven: Sequence[FixedDistance] = (),
 ) -> list[tuple[int | None, int, bool]]:
     """(from, to, checked numerically) for each rod: from None is the origin (a pivot), else a particle's index."""
-    known = {(p.get("from"), p.get("to")) for p in proven}
+    known = {(p.start, p.to) for p in proven}
     positions = [_position(pos) for _, pos in particles]
     moving = {*coordinates, "t"}
     rng = random.Random(20261123)

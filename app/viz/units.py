@@ -21,6 +21,7 @@ from typing import Any
 
 from app.engine.dimensions import Dims, parse_unit
 from app.engine.dimensions import add_dims as _add
+from app.engine.document import Document
 from app.viz.exprtree import document_tree
 
 __all__ = ["Dims", "coordinate_units", "dims_of", "parse_unit"]
@@ -63,14 +64,14 @@ def dims_of(tree: Any, known: Mapping[str, Dims | None]) -> Dims | None:
 ANGLE_NAMES = re.compile(r"(theta|phi|psi|alpha|beta|gamma|chi|varphi|vartheta)_?\d*")
 
 
-def coordinate_units(doc: Mapping[str, Any], scene: bool) -> dict[str, dict[str, str]]:
-    coordinates = list(doc["coordinates"])
-    angles = set(doc.get("angles") or []) | {q for q in coordinates if ANGLE_NAMES.fullmatch(q)}
-    known: dict[str, Dims | None] = {n: parse_unit(p.get("unit", "")) for n, p in doc["parameters"].items()}
+def coordinate_units(doc: Document, scene: bool) -> dict[str, dict[str, str]]:
+    coordinates = list(doc.coordinates)
+    angles = set(doc.angles) | {q for q in coordinates if ANGLE_NAMES.fullmatch(q)}
+    known: dict[str, Dims | None] = {n: parse_unit(p.unit) for n, p in doc.parameters.items()}
     known.update({a: {} for a in angles})  # an angle is dimensionless
     energy = {"kg": Fraction(1), "m": Fraction(2)}  # kg·m² (T times s²)
     units: dict[str, str] = {q: "rad" if q in angles else ("m" if scene else "") for q in coordinates}
-    matrix = doc.get("mass_matrix") or []
+    matrix = doc.mass_matrix
     # each pass may resolve a coordinate another one's M_qq needs (r before theta in m r² theta_dot²)
     for _ in range(len(coordinates)):
         for i, q in enumerate(coordinates):

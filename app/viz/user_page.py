@@ -13,6 +13,7 @@ from dataclasses import asdict
 from typing import Any
 
 from app.engine.distances import distance_events
+from app.engine.document import Document
 from app.engine.names import unicode
 from app.engine.user_system import UserSystem
 from app.viz.exprtree import document_tree, evaluate
@@ -24,7 +25,7 @@ PANELS = ("effective-potential", "small-oscillations", "poincare")
 NEAR = 1.1  # a cyclic coordinate's run starts this many times the steady motion's radius out (a visible oscillation)
 
 
-def model_of(user: UserSystem, doc: dict[str, Any], methods: Sequence[str]) -> dict[str, Any]:
+def model_of(user: UserSystem, doc: Document, methods: Sequence[str]) -> dict[str, Any]:
     """The scene page model for a user system (pure Python: expression trees, no SymPy)."""
     initial: dict[str, float] = {q: 1.0 for q in user.coordinates}
     info: dict[str, Any] = {
@@ -44,7 +45,7 @@ def model_of(user: UserSystem, doc: dict[str, Any], methods: Sequence[str]) -> d
     # nothing: the first coordinate starts moving at a rate of 1 in its own unit (m/s, rad/s), and the page says why
     note = ""
     rates = coordinate_units(doc, scene=False)["rate_units"]
-    if any(e.get("everywhere") for e in doc.get("normal_modes") or []):
+    if any(e.everywhere for e in doc.normal_modes):
         first = user.coordinates[0]
         initial[f"{first}_dot"] = 1.0
         note = (
@@ -55,8 +56,7 @@ def model_of(user: UserSystem, doc: dict[str, Any], methods: Sequence[str]) -> d
     # start on the steady motion itself makes every plot a point. So the run keeps the conserved momentum of the
     # steady motion through r = 1 (U_eff′ = 0 there) and starts NEAR times farther out: r oscillates about 1
     elif (steady := steady_start(doc, initial, {p.name: p.default for p in user.parameters}, NEAR)) is not None:
-        rate, value = steady
-        r = doc["effective_potential"]["coordinate"]
+        rate, value, r = steady
         steady_at = initial[r]
         initial[r] = NEAR * steady_at
         initial[rate] = value
@@ -93,27 +93,28 @@ def _root(f: Any, lo: float, hi: float) -> float | None:
 
 
 def steady_start(
-    doc: dict[str, Any], initial: dict[str, float], params: dict[str, float], near: float = 1.0
-) -> tuple[str, float] | None:
-    """(the cyclic coordinate's rate, its value) with the momentum of the steady motion through r(0), starting
-    from near·r(0) (near = 1: on the steady motion), or None.
+    doc: Document, initial: dict[str, float], params: dict[str, float], near: float = 1.0
+) -> tuple[str, float, str] | None:
+    """(the cyclic coordinate's rate, its value, the reduced coordinate r) with the momentum of the steady motion
+    through r(0), starting from near·r(0) (near = 1: on the steady motion), or None.
 
     With one conserved momentum p_c the reduction's U_eff′(r; p_c) = 0 is solved for p_c at r(0) (p_c > 0), and
     p_c = ∂L/∂q̇_c, affine in q̇_c, is solved for q̇_c at near·r(0).  Pure Python on the document's expression
     trees."""
-    red = doc.get("effective_potential")
-    if not red or len(red.get("momenta") or []) != 1 or not red["momenta"][0].startswith("p_"):
+    red = doc.effective_potential
+    if red is None or len(red.momenta) != 1 or not red.momenta[0].startswith("p_"):
         return None
-    cyclic = red["momenta"][0][2:]
-    condition = document_tree(red.get("condition"))
-    momentum = document_tree((doc.get("momenta") or {}).get(cyclic))
+    held = red.momenta[0]
+    cyclic = held[2:]
+    condition = document_tree(red.condition)
+    momentum = document_tree(doc.momenta.get(cyclic))
     if condition is None or momentum is None:
         return None
     state = {**params, **initial, "t": 0.0}
-    state.update({f"{q}_dot": initial.get(f"{q}_dot", 0.0) for q in doc["coordinates"]})
+    state.update({f"{q}_dot": initial.get(f"{q}_dot", 0.0) for q in doc.coordinates})
 
     def at(p: float) -> float:
-        return evaluate(condition, {**state, red["momenta"][0]: p})
+        return evaluate(condition, {**state, held: p})
 
     # the momentum scale: search p in (0, 10⁶] on a log grid for a change of sign, then bisect
     grid = [10.0**k for k in range(-6, 7)]
@@ -124,7 +125,7 @@ def steady_start(
     else:
         return None
     rate = f"{cyclic}_dot"
-    r = red["coordinate"]
+    r = red.coordinate
     state[r] = near * state[r]
     # p_c(q̇_c) = p0 + p1 q̇_c, at the starting radius
     p0 = evaluate(momentum, {**state, rate: 0.0})
@@ -132,4 +133,4 @@ def steady_start(
     if not (math.isfinite(p0) and math.isfinite(p1)) or p1 == 0:
         return None
     value = (p - p0) / p1
-    return (rate, value) if math.isfinite(value) else None
+    return (rate, value, r) if math.isfinite(value) else None

@@ -8,7 +8,9 @@ from fastapi import APIRouter, Query
 from fastapi.responses import Response
 
 from app.engine.contract import scene_json
+from app.engine.document import Document
 from app.service import derivations, exporting
+from app.service.encoding import dumps
 from app.service.export.source import FORMATS
 from app.service.exporting import Exported
 from app.web.deps import AnswersDep, ChapterDep
@@ -26,12 +28,15 @@ def list_scenes() -> list[dict[str, Any]]:
 @router.get(
     "/scenes/{scene_id}/derivation",
     summary="The step-by-step derivation of a scene",
+    response_model=Document,
     responses={404: {"model": Problem, "description": "No scene has this id."}},
 )
-def scene_derivation(scene_id: str, chapter: ChapterDep) -> dict[str, Any]:
-    # A plain `def`: FastAPI runs it in its thread pool, so a first (uncached)
-    # derivation never blocks the event loop.
-    return chapter.document(scene_id)
+def scene_derivation(scene_id: str, chapter: ChapterDep) -> Response:
+    # A plain `def`: FastAPI runs it in its thread pool, so a first (uncached) derivation and the document's
+    # encoding (orjson) never block the event loop; the model is the OpenAPI's description. The bytes go out
+    # uncompressed, so that the ETag (a digest of them, app/web/etags.py) is one for every coding; ApiCompression
+    # compresses them after it.
+    return Response(dumps(chapter.document(scene_id).as_json()), media_type="application/json")
 
 
 def download(exported: Exported) -> Response:

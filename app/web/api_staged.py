@@ -9,14 +9,13 @@ POST /api/derive will add (``pending``).  A worker-pool job of its own under the
 from __future__ import annotations
 
 import asyncio
-from typing import Annotated, Literal
+from typing import Annotated
 
 from fastapi import APIRouter, Body
 from fastapi.responses import Response
 from pydantic import BaseModel, Field
 
-from app.engine.names import MASS_MATRIX
-from app.engine.notation import RIGHT_SIDE
+from app.engine.document import MM, FirstStage
 from app.errors import Refused
 from app.service import progress
 from app.service.staged import equations_bytes
@@ -25,37 +24,10 @@ from app.web.api_user import answer, system_route
 from app.web.deps import ClientDep, UserSystemsDep
 from app.web.errors import json_problem
 from app.web.examples_user import DERIVE_EXAMPLES
-from app.web.schemas import ParameterInfo, Problem
-from app.web.schemas_user import OPEN, EquationOfMotion, ExprPair, SkippedMember, SystemSpec
+from app.web.schemas import Problem
+from app.web.schemas_user import SystemSpec
 
 router = APIRouter(prefix="/api", tags=["your systems"])
-# the mass matrix's letter on every page, in the descriptions too
-MM = MASS_MATRIX[1]
-
-
-class PendingMember(BaseModel):
-    member: str = Field(description="A member of the whole document not in this answer (steps, hamilton, …).")
-    name: str = Field(description="The member as the playground names it while it waits.")
-
-
-class FirstStage(BaseModel):
-    """The first stage of the derivation JSON: the members below are as in POST /api/derive's answer."""
-
-    model_config = OPEN
-    stage: Literal["equations", "whole"] = Field(
-        description="`equations` for a first stage; `whole` when the whole document was ready (nothing pending)."
-    )
-    coordinates: list[str]
-    parameters: dict[str, ParameterInfo]
-    equations_of_motion: list[EquationOfMotion]
-    accelerations: dict[str, ExprPair] = Field(description=f"Empty when they stay {MM}⁻¹f (see `skipped`).")
-    mass_matrix: list[list[ExprPair]]
-    forcing: list[ExprPair] = Field(
-        description=f"f in {MM} q̈ = f, {RIGHT_SIDE}; {MM} the mass matrix (a first stage gives them when the "
-        f"accelerations stay {MM}⁻¹f)."
-    )
-    skipped: list[SkippedMember]
-    pending: list[PendingMember] = Field(description="What POST /api/derive adds (empty when `stage` is whole).")
 
 
 @system_route(
@@ -77,7 +49,9 @@ async def derive_equations(
 
 class Progress(BaseModel):
     running: bool = Field(description="Whether a derivation of this key runs on this server now.")
-    part: str | None = Field(None, description="The part it is on, as the playground names it (`Hamilton's equations`).")
+    part: str | None = Field(
+        None, description="The part it is on, as the playground names it (`Hamilton's equations`)."
+    )
     part_seconds: float | None = Field(None, description="How long it has been on that part (s).")
     seconds: float | None = Field(None, description="How long the derivation has run (s).")
 

@@ -17,6 +17,7 @@ from typing import Annotated, Any
 from fastapi import APIRouter, Body
 from fastapi.responses import Response
 
+from app.engine.document import Document
 from app.service.exporting import Exported
 from app.service.user_checks import InvalidSystem, checked
 from app.web.api_scenes import EXPORT_CONTENT, download
@@ -29,7 +30,6 @@ from app.web.schemas import SESSION_COOKIE, Problem
 from app.web.schemas_export import ExportRequest
 from app.web.schemas_simulate import SimulateResponse
 from app.web.schemas_user import (
-    DerivationDocument,
     SystemSpec,
     UserSimulateRequest,
     simulate_request,
@@ -126,7 +126,7 @@ async def answer(
         "symbol convention q, q_dot, q_ddot, t and parameters by name. Expressions are parsed by an allowlist "
         "(never evaluated as code); the derivation runs in a worker process with a time and memory limit."
     ),
-    response_model=DerivationDocument,
+    response_model=Document,
     example=DERIVE_RESPONSE,
 )
 async def derive_system(

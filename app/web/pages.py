@@ -15,6 +15,7 @@ from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, RedirectResponse
 
 from app.engine.contract import scene_json
+from app.engine.document import Document
 from app.errors import UnknownScene
 from app.numerics.methods import CHOICES
 from app.service import derivations, lyapunov
@@ -32,9 +33,9 @@ from app.web.templating import templates
 router = APIRouter(tags=["pages"], include_in_schema=False)
 
 
-def scene_info(scene_id: str, doc: dict[str, Any]) -> dict[str, Any]:
+def scene_info(scene_id: str, doc: Document) -> dict[str, Any]:
     """Title, section, statement, figure, panels, initial state, t_end, events and family of a scene."""
-    return {**scene_json(derivations.scene(scene_id)), **(doc.get("scene") or {})}
+    return {**scene_json(derivations.scene(scene_id)), **(doc.scene.model_dump() if doc.scene else {})}
 
 
 def page_model(

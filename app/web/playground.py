@@ -24,6 +24,7 @@ from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
 from starlette.concurrency import run_in_threadpool
 
+from app.engine.document import Document, FirstStage
 from app.engine.parse import FUNCTIONS
 from app.engine.user_system import UserSystem
 from app.numerics.methods import CHOICES
@@ -214,10 +215,11 @@ async def playground(request: Request, client: ClientDep, users: UserSystemsDep)
         else:
             user = checked(spec_of(form))
             if request.query_params.get("stage") == "whole":
-                doc = json.loads(await users.derive(user, client.key, client.address))
+                whole = await users.derive(user, client.key, client.address)
+                doc = await run_in_threadpool(Document.model_validate_json, whole)
             else:  # the equations first, unless the whole document is ready (the page asks for the rest)
                 doc = await equations_or_whole(users, user, client.key, client.address)
-            if doc.get("stage") == "equations":
+            if isinstance(doc, FirstStage):
                 # the rest is asked for with the form's own query (the default system's page has none)
                 first = first_view(doc, whole_href(urlencode(query_of(form), doseq=True)), spec_key(user))
             else:

@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import Any
 from urllib.parse import parse_qsl, urlencode
 
+from app.engine.document import FirstStage
 from app.engine.names import MASS_MATRIX, latex
 from app.viz.page_model import letter_of
 
@@ -37,20 +38,20 @@ def _listed(names: list[str]) -> str:
     return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
 
 
-def first_view(doc: dict[str, Any], href: str, key: str) -> dict[str, Any]:
+def first_view(doc: FirstStage, href: str, key: str) -> dict[str, Any]:
     """The first stage as the page shows it: LaTeX of the equations and of the accelerations (or of M and f,
     when the accelerations stay M⁻¹f), the notes of what is left out, and what is still being worked on;
     ``key``, the whole derivation's, addresses its progress and its cancelling (app/web/api_staged.py)."""
-    q = doc["coordinates"]
-    accelerations = doc["accelerations"]
+    q = doc.coordinates
+    accelerations = doc.accelerations
     view: dict[str, Any] = {
-        "equations": [e["latex"] for e in doc["equations_of_motion"]],
-        "accelerations": [rf"{latex(c + '_ddot')} = {accelerations[c]['latex']}" for c in q if c in accelerations],
+        "equations": [e.latex for e in doc.equations_of_motion],
+        "accelerations": [rf"{latex(c + '_ddot')} = {accelerations[c].latex}" for c in q if c in accelerations],
         "mass_matrix": None,
         "forcing": [],
-        "skipped": [s["reason"] for s in doc.get("skipped") or []],
+        "skipped": [s.reason for s in doc.skipped],
         # the page shows the simulation with the whole document too
-        "pending": _listed([*(p["name"] for p in doc.get("pending") or []), "the simulation"]),
+        "pending": _listed([*(p.name for p in doc.pending), "the simulation"]),
         "whole_href": href,
         "progress_url": f"/api/derive/progress/{key}",
         "cancel_url": f"/api/derive/cancel/{key}",
@@ -58,17 +59,17 @@ def first_view(doc: dict[str, Any], href: str, key: str) -> dict[str, Any]:
     # each equation's factor (app/engine/report.py equation_scales): said under the equations, so that ℳ
     # and f, of the equations undivided, can be read off the rows shown
     view["divided_by"] = [
-        {"coordinate": latex(e["coordinate"]), "factor": e["divided_by"]["latex"]}
-        for e in doc["equations_of_motion"]
-        if e.get("divided_by")
+        {"coordinate": latex(e.coordinate), "factor": e.divided_by.latex}
+        for e in doc.equations_of_motion
+        if e.divided_by is not None
     ]
     if not accelerations:
         # ℳ q̈ = f, with ℳ and f printed: what the numerics solves at each step
-        rows = [" & ".join(x["latex"] for x in row) for row in doc["mass_matrix"]]
+        rows = [" & ".join(x.latex for x in row) for row in doc.mass_matrix]
         # the page's letter for the mass matrix (app/engine/notation.py, from app/engine/names.MASS_MATRIX)
         letter = letter_of(doc, "mass matrix", MASS_MATRIX[0])
         view["letter"] = letter
         view["system"] = letter + r" \ddot{q} = f"
         view["mass_matrix"] = letter + r" = \begin{pmatrix} " + r" \\ ".join(rows) + r" \end{pmatrix}"
-        view["forcing"] = [f"f_{{{latex(c)}}} = {f['latex']}" for c, f in zip(q, doc["forcing"], strict=True)]
+        view["forcing"] = [f"f_{{{latex(c)}}} = {f.latex}" for c, f in zip(q, doc.forcing, strict=True)]
     return view

@@ -6,6 +6,7 @@ from typing import Any
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from app.engine.document import ParameterInfo
 from app.service.fairness import COOKIE
 
 # The session cookie the server issues for fair sharing; any other value (tampered, expired,
@@ -48,14 +49,6 @@ class Problem(BaseModel):
     kind: str | None = Field(None, description="timeout or memory when the work exceeded a limit.")
     errors: list[ValidationIssue] | None = Field(None, description="Shape errors (never echoing the input).")
     retry_after: int | None = Field(None, description="Seconds to wait (429, 503); also in the Retry-After header.")
-
-
-class ParameterInfo(BaseModel):
-    default: float
-    unit: str
-    min: float | None
-    max: float | None
-    description: str
 
 
 class SceneSummary(BaseModel):

@@ -2,6 +2,7 @@
 
 from app.engine.contract import derivation_json
 from app.engine.derive import derive
+from app.engine.document import Document
 from app.engine.names import latex, plain, prose, unicode
 from app.scenes.types import Parameter, System
 from app.viz.page_model import scene_page
@@ -34,7 +35,7 @@ def test_omega_is_the_same_letter_in_steps_controls_and_document():
     lagrangian = next(s for s in doc["steps"] if s["title"] == "Lagrangian")["latex"]
     assert r"\Omega^{2}" in lagrangian and "Omega" not in lagrangian.replace(r"\Omega", "")
     info = {"id": "hoop", "title": "Hoop", "panels": ["energy"], "initial": {"theta": 0.5}, "t_end": 5.0}
-    model = scene_page(doc, info)
+    model = scene_page(Document.model_validate(doc), info)
     control = next(c for c in model["parameters"] if c["name"] == "Omega")
     assert (control["latex"], control["label"]) == (r"\Omega", "Ω")
     assert next(c for c in model["initial"] if c["name"] == "theta")["unit"] == "rad"

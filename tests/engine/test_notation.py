@@ -15,6 +15,7 @@ from pathlib import Path
 import pytest
 
 from app.engine import notation
+from app.engine.document import Document, FirstStage
 from app.scenes import SCENES
 from app.service.derivations import derivation, derivation_document
 
@@ -147,7 +148,7 @@ def test_the_letters_of_a_constraint_are_read_from_one_home(monkeypatch):
     steps = " ".join(s["latex"] for s in constraint_steps(d, forces, Printer(d.table.latex_names())))
     assert r"\Sigma_{1} &= " in steps and r"G_{2} &= \mu_{2} \left|\frac{\partial \Sigma_{2}}" in steps
     assert r"\lambda_{" not in steps and "F_{" not in steps and r"\mathcal{C}_{" not in steps
-    shown = scene_page(doc, {"title": "helix"})["summary"]["constraint_forces"]
+    shown = scene_page(Document.model_validate(doc), {"title": "helix"})["summary"]["constraint_forces"]
     assert [f["symbol"] for f in shown] == ["G_{1}", "G_{2}"]
     assert all(f["latex"].startswith(f["symbol"] + " = ") for f in shown)
 
@@ -175,7 +176,7 @@ def _mass_matrix_letter(rows: list[dict]) -> str:
 @pytest.mark.parametrize("scene_id", ["movable-incline", "pulley"])
 def test_a_scene_with_a_mass_m_writes_its_mass_matrix_with_another_letter(scene_id):
     # issue 40: the wedge's (the pulley's) mass is M; the mass matrix its page and its notebook print is not
-    from app.service.derivations import derivation
+    from app.service.derivations import derivation, scene_document
     from app.service.export.notebook import notebook
     from app.service.export.source import scene_source
 
@@ -187,7 +188,7 @@ def test_a_scene_with_a_mass_m_writes_its_mass_matrix_with_another_letter(scene_
     assert not [m.group() for m in _BARE_M.finditer(json.dumps(doc, ensure_ascii=False))]
     scene = SCENES[scene_id]
     d = derivation(scene_id)
-    words = notebook(scene_source(scene, d, doc, tuple(float(x) for x in range(2 * len(d.table.q)))))
+    words = notebook(scene_source(scene, d, scene_document(scene_id), tuple(float(x) for x in range(2 * len(d.table.q)))))
     markdown = [" ".join(c["source"]) if isinstance(c["source"], list) else c["source"] for c in json.loads(words)["cells"] if c["cell_type"] == "markdown"]  # fmt: skip
     assert any("mass matrix" in text for text in markdown)
     assert not [text for text in markdown if _BARE_M.search(text)]
@@ -204,7 +205,7 @@ def test_a_typed_system_with_a_mass_m_left_as_m_inverse_f_names_the_mass_matrix_
     assert doc["accelerations"] == {} and len(doc["mass_matrix"]) == 3
     letter = _mass_matrix_letter(doc["notation"])
     assert letter != "M" and letter in doc["skipped"][0]["reason"]
-    view = first_view(doc, "/playground?stage=whole", "key")
+    view = first_view(FirstStage.model_validate(doc), "/playground?stage=whole", "key")
     assert view["system"].startswith(r"\mathcal{M} \ddot{q} = f") and view["mass_matrix"].startswith(r"\mathcal{M} = ")
     assert not [m.group() for m in _BARE_M.finditer(json.dumps([doc, view], ensure_ascii=False))]
     # the same system with a parameter called f is refused: the refusal names the page's f without a bare M

@@ -4,7 +4,7 @@ import pytest
 
 from app.engine.dimensions import number_beside_units, system_dimensions
 from app.scenes import SCENES
-from app.service.derivations import PROCESS_SCENES, derivation, derivation_document
+from app.service.derivations import PROCESS_SCENES, derivation, scene_document
 from app.viz.panels import OPTIONAL, constant_accelerations
 from app.web.pages import page_model
 
@@ -81,7 +81,7 @@ def test_panels_are_what_the_scene_needs(scene_id):
     panels = set(page_model(scene_id, None, PROCESS_SCENES)["panels"])
     assert "energy" in panels and "phase" in panels
     # the error-against-run-time chart only where the motion is not a polynomial in t
-    assert ("work-precision" in panels) == (not constant_accelerations(derivation_document(scene_id)))
+    assert ("work-precision" in panels) == (not constant_accelerations(scene_document(scene_id)))
     # 3-D only where the motion is 3-D; exactly one animation
     assert ("animation-3d" in panels) == (scene_id in THREE_D)
     assert ("animation-2d" in panels) != ("animation-3d" in panels)

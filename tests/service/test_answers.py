@@ -5,7 +5,7 @@ import pytest
 
 from app.service import exporting
 from app.service.answers import Answers
-from app.service.derivations import PROCESS_SCENES, derivation_document
+from app.service.derivations import PROCESS_SCENES, scene_document
 from app.service.services import Services
 from app.settings import Settings
 
@@ -15,11 +15,11 @@ def test_each_app_remembers_its_own_answers(tmp_path):
     first, second = Services.start(config, PROCESS_SCENES), Services.start(config, PROCESS_SCENES)
     try:
         assert first.answers is not second.answers
-        exported = exporting.scene_export("simple-pendulum", "py", derivation_document, first.answers.exports)
+        exported = exporting.scene_export("simple-pendulum", "py", scene_document, first.answers.exports)
         assert (
-            exporting.scene_export("simple-pendulum", "py", derivation_document, first.answers.exports) is exported
+            exporting.scene_export("simple-pendulum", "py", scene_document, first.answers.exports) is exported
         )  # remembered
-        again = exporting.scene_export("simple-pendulum", "py", derivation_document, second.answers.exports)
+        again = exporting.scene_export("simple-pendulum", "py", scene_document, second.answers.exports)
         assert again is not exported and again == exported  # the other app made its own, the same file
     finally:
         first.stop()
@@ -27,14 +27,14 @@ def test_each_app_remembers_its_own_answers(tmp_path):
 
 
 def test_without_an_apps_memory_nothing_is_kept():
-    exported = exporting.scene_export("simple-pendulum", "tex", derivation_document)
-    assert exporting.scene_export("simple-pendulum", "tex", derivation_document) is not exported
+    exported = exporting.scene_export("simple-pendulum", "tex", scene_document)
+    assert exporting.scene_export("simple-pendulum", "tex", scene_document) is not exported
 
 
 def test_a_refused_format_is_refused_before_any_memory_is_touched(tmp_path):
     answers = Answers.start(tmp_path)
     with pytest.raises(ValueError, match="unknown export format"):
-        exporting.scene_export("simple-pendulum", "docx", derivation_document, answers.exports)
+        exporting.scene_export("simple-pendulum", "docx", scene_document, answers.exports)
 
 
 def test_the_disk_caches_are_under_the_folder_given(tmp_path):

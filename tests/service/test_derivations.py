@@ -1,6 +1,7 @@
 """A scene's derivation is pickled with its members, so a process that loads it never computes them again;
 each ``Scenes`` (an app's, or this test's on a temporary disk) holds its own."""
 
+import json
 import pickle
 
 from app.engine.constraints import ConstraintForce
@@ -12,7 +13,7 @@ def test_the_pickled_derivation_carries_the_members_its_document_printed(tmp_pat
     scenes = Scenes(tmp_path)
     made = scenes.derived("pulley")  # a miss: derived, printed, pickled
     printed = scenes._printed["pulley"]  # the document printed with it, for ``document``
-    assert printed["id"] == "pulley"
+    assert printed.id == "pulley"
     (path,) = (tmp_path / "derivation-objects").glob("pulley-*.pickle")
     loaded = pickle.loads(path.read_bytes())
     assert set(loaded._members) == set(made._members) >= {"constraint_forces", "hamilton", "transformed"}
@@ -41,3 +42,14 @@ def test_each_holder_remembers_its_own():
     assert mine.system("simple-pendulum")[0] is system and list(mine.compiled.items) == ["simple-pendulum"]
     assert PROCESS_SCENES.compiled.items.get("simple-pendulum", (None,))[0] is not system
     assert mine.document("simple-pendulum") == PROCESS_SCENES.document("simple-pendulum")
+
+
+def test_the_chapter_holds_the_model_and_the_disk_its_json(tmp_path):
+    from app.engine.document import Document
+
+    document = Scenes(tmp_path).document("simple-pendulum")
+    assert isinstance(document, Document) and document.id == "simple-pendulum"
+    # the file on the disk is the model's JSON, and a new holder reads it back as the model
+    on_disk = next((tmp_path / "derivations").glob("simple-pendulum-*.json")).read_bytes()
+    assert on_disk == json.dumps(document.as_json()).encode()
+    assert Scenes(tmp_path).document("simple-pendulum") == document

@@ -3,12 +3,12 @@
 import pytest
 
 from app.scenes import SCENES
-from app.service.derivations import PROCESS_SCENES, derivation_document
+from app.service.derivations import PROCESS_SCENES, scene_document
 from app.service.gates import Gates
 from app.service.modes import measure_scene, modes_at
 from app.viz.panels import oscillating_equilibria
 
-WITH_MODES = sorted(s for s in SCENES if oscillating_equilibria(derivation_document(s)))
+WITH_MODES = sorted(s for s in SCENES if oscillating_equilibria(scene_document(s)))
 
 
 def test_the_scenes_with_oscillating_equilibria():
@@ -19,7 +19,7 @@ def test_the_scenes_with_oscillating_equilibria():
 @pytest.mark.parametrize("scene_id", WITH_MODES)
 def test_measured_frequencies_are_within_one_percent(scene_id):
     found = measure_scene(scene_id, Gates(), None, PROCESS_SCENES)
-    assert len(found) == len(oscillating_equilibria(derivation_document(scene_id)))
+    assert len(found) == len(oscillating_equilibria(scene_document(scene_id)))
     for eq in found:
         for m in eq["modes"]:
             if m["omega_squared"] > 0:
@@ -33,13 +33,11 @@ def test_measured_frequencies_are_within_one_percent(scene_id):
 @pytest.mark.parametrize("scene_id", WITH_MODES)
 def test_modes_at_the_defaults_are_the_engines(scene_id):
     at = modes_at(scene_id, {}, Gates(), None, PROCESS_SCENES)
-    doc = oscillating_equilibria(derivation_document(scene_id))
+    doc = oscillating_equilibria(scene_document(scene_id))
     assert len(at) == len(doc)
     for mine, engine in zip(at, doc, strict=True):
-        assert mine["equilibrium"] == pytest.approx(engine["equilibrium"])
-        assert [m["omega_squared"] for m in mine["modes"]] == pytest.approx(
-            [m["omega_squared"] for m in engine["modes"]]
-        )
+        assert mine["equilibrium"] == pytest.approx(engine.equilibrium)
+        assert [m["omega_squared"] for m in mine["modes"]] == pytest.approx([m.omega_squared for m in engine.modes])
 
 
 def test_double_pendulum_modes_follow_its_lengths():

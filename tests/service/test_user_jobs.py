@@ -53,3 +53,18 @@ def test_a_job_whose_clock_fired_is_refused_and_leaves_nothing_poorer_behind(mon
     document = json.loads(user_jobs.derive_job(user))
     assert document["skipped"] == []
     assert document == _fresh_document()
+
+
+def test_the_modes_job_measures_the_normal_modes_the_derivation_holds():
+    """The worker measures the derivation's own normal modes (the member the document prints), with nothing
+    sent to it but the system: each predicted ω² is the document's, and each is measured."""
+    from app.web.examples_user import SPINNING_HOOP
+
+    for spec in (SPINNING_HOOP, DOUBLE_PENDULUM):
+        user = checked(spec)
+        found = json.loads(user_jobs.modes_job(user))
+        document = json.loads(user_jobs.derive_job(user))
+        printed = [m["omega_squared"] for e in document["normal_modes"] if e["stable"] and not e["momenta"]
+                   for m in e["modes"] if m["omega_squared"] > 0]  # fmt: skip
+        assert [m["omega_squared"] for e in found for m in e["modes"] if m["omega_squared"] > 0] == printed
+        assert printed and all(m["measured"] is not None for e in found for m in e["modes"] if m["omega_squared"] > 0)

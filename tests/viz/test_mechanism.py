@@ -5,6 +5,7 @@ import math
 import pytest
 import sympy as sp
 
+from app.engine.document import ConstraintForce
 from app.engine.trees import of_sympy
 from app.scenes import SCENES
 from app.scenes.beads import WIRE_REACH
@@ -94,7 +95,11 @@ def test_the_turning_wire_is_drawn_to_its_ends_however_far_the_run_goes(reach):
 def test_constraint_forces_become_arrows_on_their_particle():
     alpha = sp.Symbol("alpha")
     unit = [-sp.sin(alpha), sp.Integer(0), sp.cos(alpha)]  # as the document carries it: trees the engine wrote
-    forces = [{"name": "normal force", "particle": 1, "direction_trees": [of_sympy(e) for e in unit]}]
+    forces = [
+        ConstraintForce.model_construct(
+            name="normal force", particle=1, direction_trees=[of_sympy(e) for e in unit], acts_on=[]
+        )
+    ]
     spec = spec_of("incline-block", forces)
     assert spec["forces"] == [
         {"name": "normal force", "on": 0, "direction": [["neg", ["sin", "alpha"]], ["cos", "alpha"]]}
@@ -197,10 +202,9 @@ def test_the_ramp_holds_the_block_from_its_foot_to_the_top_of_the_run(alpha, xma
 
 
 def test_the_string_pulls_every_mass_it_holds():
-    from app.service.derivations import derivation_document
+    from app.service.derivations import scene_document
 
-    doc = derivation_document("pulley")
-    spec = spec_of("pulley", doc["constraint_forces"])
+    spec = spec_of("pulley", scene_document("pulley").constraint_forces)
     tension = [f for f in spec["forces"] if f["name"] == "string tension"]
     assert sorted(f["on"] for f in tension) == [0, 1, 2]  # the left, right and middle masses
     env = env_of("pulley", y1=0.3, y2=-0.2)

@@ -3,15 +3,15 @@
 import pytest
 
 from app.scenes import SCENES
-from app.service.derivations import derivation_document
+from app.service.derivations import scene_document
 from app.viz.panels import BY_NAME, NAMES, OPTIONAL, PANELS, Facts, linear_equations, shown
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 
 def facts(scene_id, scene=True):
-    doc = derivation_document(scene_id)
-    return Facts(doc, {"omega_squared": None} if doc.get("effective_potential") else None, 2, scene)
+    doc = scene_document(scene_id)
+    return Facts(doc, {"omega_squared": None} if doc.effective_potential else None, 2, scene)
 
 
 def test_names_are_unique_and_every_panel_explains_itself():
@@ -74,7 +74,7 @@ METHOD_MATTERS = {"damped-pendulum", "double-pendulum"}
 
 
 def test_linear_equations_are_told_from_nonlinear_ones():
-    linear = {sid for sid in SCENES if linear_equations(derivation_document(sid))}
+    linear = {sid for sid in SCENES if linear_equations(scene_document(sid))}
     assert {"coupled-oscillators", "rail-two-body", "pulley", "incline-block", "movable-incline"} <= linear
     assert not linear & {"simple-pendulum", "double-pendulum", "damped-pendulum", "spherical-pendulum"}
 

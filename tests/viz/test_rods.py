@@ -3,6 +3,7 @@
 import pytest
 
 from app.engine.derive import derive
+from app.engine.document import FixedDistance
 from app.engine.rods import fixed_distances
 from app.scenes.types import Parameter, Particle, System
 from app.viz.mechanism import NO_PICTURE, mechanism
@@ -34,7 +35,7 @@ def test_double_pendulum_symbolically_from_the_engine():
     )
     proven = fixed_distances(derive(system))
     assert proven == [{"from": None, "to": 0}, {"from": 0, "to": 1}]
-    found = rods(DOUBLE, ["theta1", "theta2"], LENGTHS, proven)
+    found = rods(DOUBLE, ["theta1", "theta2"], LENGTHS, [FixedDistance.model_validate(p) for p in proven])
     assert found == [(None, 0, False), (0, 1, False)]
 
 

@@ -4,6 +4,7 @@ from fractions import Fraction
 
 import pytest
 
+from app.engine.document import Document, Pair, ParameterInfo
 from app.viz.units import coordinate_units, parse_unit
 
 
@@ -26,12 +27,13 @@ def test_units_are_read_as_dimensions(text, dims):
 
 
 def doc(coordinates, parameters, mass_matrix, angles=()):
-    return {
-        "coordinates": coordinates,
-        "angles": list(angles),
-        "parameters": {n: {"unit": u} for n, u in parameters.items()},
-        "mass_matrix": [[{"tree": t} for t in row] for row in mass_matrix],
-    }
+    """A document with only the members the units are read from (the model's types, nothing else filled in)."""
+    return Document.model_construct(
+        coordinates=coordinates,
+        angles=list(angles),
+        parameters={n: ParameterInfo.model_construct(unit=u) for n, u in parameters.items()},
+        mass_matrix=[[Pair.model_construct(tree=t) for t in row] for row in mass_matrix],
+    )
 
 
 def test_kepler_r_in_metres_theta_in_radians():

@@ -5,7 +5,7 @@ import math
 
 import pytest
 
-from app.engine.contract import derivation_json
+from app.engine.contract import printed_document
 from app.engine.derive import derive
 from app.engine.user_system import UserSystem
 from app.viz.user_page import model_of
@@ -21,7 +21,7 @@ KEPLER = {
 
 def model(spec):
     user = UserSystem.of(spec)
-    return model_of(user, derivation_json(derive(user.system())), ["auto"])
+    return model_of(user, printed_document(derive(user.system())), ["auto"])
 
 
 def start(m) -> dict[str, float]:

@@ -63,3 +63,19 @@ def test_unknown_scene_is_404_with_a_message(client):
 
 def test_health(client):
     assert client.get("/healthz").json() == {"status": "ok"}
+
+
+def test_the_openapi_describes_the_derivations_by_the_document_model(client):
+    """The served documents' schema is the model they are built from (app/engine/document.py), closed to keys it
+    does not name."""
+    spec = client.get("/openapi.json").json()
+    for path, method, model in (
+        ("/api/scenes/{scene_id}/derivation", "get", "Document"),
+        ("/api/derive", "post", "Document"),
+        ("/api/derive/equations", "post", "FirstStage"),
+    ):
+        schema = spec["paths"][path][method]["responses"]["200"]["content"]["application/json"]["schema"]
+        assert schema == {"$ref": f"#/components/schemas/{model}"}
+    schemas = spec["components"]["schemas"]
+    assert schemas["Document"]["additionalProperties"] is False and "DerivationDocument" not in schemas
+    assert schemas["Step"]["required"] == ["key", "title", "latex", "sympy", "explanation"]

@@ -219,3 +219,21 @@ def test_openapi_documents_every_answer(client, path):
     examples = operation["requestBody"]["content"]["application/json"]["examples"]
     assert {"double-pendulum", "forced-spring"} <= set(examples)
     json.dumps(schema)
+
+
+@pytest.mark.parametrize(
+    "spec",
+    [DOUBLE_PENDULUM, FORCED_SPRING, SPINNING_HOOP, examples_user.RELATIVISTIC_OSCILLATOR],
+    ids=["double-pendulum", "forced-spring", "spinning-hoop", "relativistic"],
+)
+def test_each_examples_answer_is_the_document_model_byte_for_byte(client, spec):
+    """The answer has exactly the shape of app.engine.document.Document (extra keys forbidden), and the model's
+    JSON is the answer's bytes: the OpenAPI's response_model describes what is sent."""
+    import orjson
+
+    from app.engine.document import Document
+
+    response = client.post("/api/derive", json=spec)
+    assert response.status_code == 200, response.text
+    document = Document.model_validate_json(response.content)
+    assert orjson.dumps(document.as_json()) == response.content

@@ -30,7 +30,7 @@ def test_the_app_serves_the_one_copy_of_the_process(services):
 def test_the_scene_routes_read_the_scenes_they_are_given(client, override):
     mine = override(scenes_chapter, Asked())
     override(remembered_answers, Answers.start())  # nothing remembered from another test's requests
-    assert client.get("/api/scenes/pulley/derivation").json() == PROCESS_SCENES.document("pulley")
+    assert client.get("/api/scenes/pulley/derivation").json() == PROCESS_SCENES.document("pulley").as_json()
     assert client.get("/scenes/incline-block").status_code == 200
     simulated = client.post("/api/scenes/simple-pendulum/simulate", json={"initial": {}, "samples": 20})
     assert simulated.status_code == 200, simulated.text

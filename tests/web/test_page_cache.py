@@ -17,7 +17,7 @@ def test_a_scene_page_fills_the_cache_the_route_is_given(client, override):
     pages = override(page_cache, PageCache())
     first = client.get("/scenes/simple-pendulum", headers={"Accept-Encoding": "identity"})
     assert first.status_code == 200
-    doc = derivations.derivation_document("simple-pendulum")
+    doc = derivations.scene_document("simple-pendulum")  # the model the route was given
     model = pages.model("simple-pendulum", doc, _never)  # the route's model, kept
     plain, compressed = pages.page("simple-pendulum", model, _never, Settings().source_notes)
     assert plain == first.content and len(compressed) < len(plain) / 2

@@ -287,6 +287,7 @@ def test_the_mass_matrix_has_one_letter_on_every_page(client, scene):
 
 
 def test_the_potential_energys_sentence_is_true_of_a_driven_support_and_nothing_conserved_names_time(client):
+    from app.engine.document import Document
     from app.viz.page_model import nothing_conserved
 
     driven = {
@@ -301,7 +302,7 @@ def test_the_potential_energys_sentence_is_true_of_a_driven_support_and_nothing_
     potential = next(s for s in doc["steps"] if s["key"] == "potential")
     assert "positions only" not in potential["explanation"] and "explicitly, on the time t" in potential["explanation"]
     assert doc["conserved"] == []
-    assert nothing_conserved(doc) == (
+    assert nothing_conserved(Document.model_validate(doc)) == (
         "Nothing is conserved here: L depends explicitly on time (∂L/∂t ≠ 0), so h changes, and no momentum stays constant."
     )
 

@@ -8,6 +8,7 @@ from urllib.parse import urlencode
 
 import pytest
 
+from app.engine.document import Equation, FirstStage, Pair, Pending
 from app.service.user_checks import checked, spec_key
 from app.web.playground_form import form_of, query_of, spec_of
 from app.web.playground_stages import first_view, whole_href
@@ -77,16 +78,16 @@ def test_the_whole_stage_answers_a_refusal_as_the_page_does(client):
 
 
 def test_the_first_view_lists_what_is_pending_and_links_to_the_rest():
-    doc = {
-        "coordinates": ["x"],
-        "equations_of_motion": [{"latex": "m \\ddot{x} + k x = 0"}],
-        "accelerations": {"x": {"latex": "- \\frac{k x}{m}"}},
-        "mass_matrix": [[{"latex": "m"}]],
-        "forcing": [],
-        "skipped": [],
-        "pending": [{"member": "steps", "name": "the steps"}, {"member": "hamilton", "name": "Hamilton's equations"},
-                    {"member": "normal_modes", "name": "the normal modes"}],
-    }  # fmt: skip
+    doc = FirstStage.model_construct(
+        coordinates=["x"],
+        equations_of_motion=[Equation.model_construct(coordinate="x", latex="m \\ddot{x} + k x = 0", divided_by=None)],
+        accelerations={"x": Pair.model_construct(latex="- \\frac{k x}{m}")},
+        mass_matrix=[[Pair.model_construct(latex="m")]],
+        forcing=[],
+        skipped=[],
+        pending=[Pending(member="steps", name="the steps"), Pending(member="hamilton", name="Hamilton's equations"),
+                 Pending(member="normal_modes", name="the normal modes")],
+    )  # fmt: skip
     view = first_view(doc, whole_href("q=x&stage=whole&T=m"), "ab" * 32)
     assert view["pending"] == "the steps, Hamilton's equations, the normal modes and the simulation"
     assert view["accelerations"] == ["\\ddot{x} = - \\frac{k x}{m}"] and view["mass_matrix"] is None

@@ -119,35 +119,35 @@ def _symbol(name: str) -> str:
 def _results(source: Source) -> list[str]:
     doc, table = source.document, source.derivation.table
     out = [r"\section*{Results}", r"\subsection*{Equations of motion}"]
-    out.append(_display([eq["latex"] for eq in doc["equations_of_motion"]]))
+    out.append(_display([eq.latex for eq in doc.equations_of_motion]))
     tex = table.latex_names()
     out.append("and, solved for the accelerations,")
     out.append(
         _display(
-            [f"{tex[a]} = {doc['accelerations'][q]['latex']}" for q, a in zip(table.names, table.qdd, strict=True)]
+            [f"{tex[a]} = {doc.accelerations[q].latex}" for q, a in zip(table.names, table.qdd, strict=True)]
         )
     )
     out.append(r"\subsection*{Generalized momenta}")
     out.append(
-        _display([f"p_{{{tex[s]}}} = {doc['momenta'][q]['latex']}" for q, s in zip(table.names, table.q, strict=True)])
+        _display([f"p_{{{tex[s]}}} = {doc.momenta[q].latex}" for q, s in zip(table.names, table.q, strict=True)])
     )
     out.append(r"\subsection*{Conserved quantities}")
-    if doc["conserved"]:
-        for c in doc["conserved"]:
-            out.append(_align(f"{c['latex_name']} = {c['latex']}"))
-            out.append(latex_text(c["reason"]))
+    if doc.conserved:
+        for c in doc.conserved:
+            out.append(_align(f"{c.latex_name} = {c.latex}"))
+            out.append(latex_text(c.reason))
     else:
         out.append("None: no coordinate is cyclic, and h changes with time.")
-    out += [r"\subsection*{Is $h$ equal to $E$?}", latex_text(doc["hamiltonian_energy_reason"])]
-    eff = doc.get("effective_potential")
+    out += [r"\subsection*{Is $h$ equal to $E$?}", latex_text(doc.hamiltonian_energy_reason)]
+    eff = doc.effective_potential
     if eff:
-        out += [r"\subsection*{Effective potential}", _align(r"U_\text{eff} = " + eff["potential"]["latex"])]
-    forces = doc.get("constraint_forces") or []
+        out += [r"\subsection*{Effective potential}", _align(r"U_\text{eff} = " + eff.potential.latex)]
+    forces = doc.constraint_forces
     if forces:
         out.append(r"\subsection*{Forces of constraint}")
         for f in forces:
-            out.append(latex_text(f"{f['name']}: {f['convention']}"))
-            out.append(_align("F = " + f["latex"]))
+            out.append(latex_text(f"{f.name}: {f.convention}"))
+            out.append(_align("F = " + f.latex))
     return out
 
 
@@ -170,11 +170,11 @@ def latex(source: Source) -> str:
     body += _parameters(source)
     body.append(f"The simulation starts from {start} and runs to $t = {source.t_end!r}$ s.")
     body.append(r"\section*{Derivation}")
-    for step in doc["steps"]:
+    for step in doc.steps:
         body += [
-            rf"\subsection*{{{latex_text(step['title'])}}}",
-            latex_text(step["explanation"]),
-            _align(step["latex"]),
+            rf"\subsection*{{{latex_text(step.title)}}}",
+            latex_text(step.explanation),
+            _align(step.latex),
         ]
     body += _results(source)
     if source.errata:
@@ -182,25 +182,25 @@ def latex(source: Source) -> str:
         body.append(r"\begin{itemize}")
         for e in source.errata:
             # both formulas typeset, as on the page (never as code)
-            chapter, correct = e.get("chapter_latex"), e.get("correct_latex")
-            if e.get("chapter_words") and correct:
+            chapter, correct = e.chapter_latex, e.correct_latex
+            if e.chapter_words and correct:
                 # the chapter's fault is in its words: they are quoted as prose
                 body.append(
-                    rf"\item {latex_text(e['chapter'])} Correct is {_display([correct])}"
-                    + latex_text(e["reason"])
+                    rf"\item {latex_text(e.chapter)} Correct is {_display([correct])}"
+                    + latex_text(e.reason)
                 )
             elif chapter and correct:
                 body.append(
                     # an approximation (small swings) is what holds, never "correct" as it stands
                     rf"\item The chapter writes {_display([chapter])} "
-                    + ("what holds is" if e.get("approximate") else "correct is")
+                    + ("what holds is" if e.approximate else "correct is")
                     + rf" {_display([correct])}"
-                    + latex_text(e["reason"])
+                    + latex_text(e.reason)
                 )
             else:
                 body.append(
-                    rf"\item The chapter writes \texttt{{{latex_text(e['chapter'])}}}; correct is "
-                    rf"\texttt{{{latex_text(e['correct'])}}}. {latex_text(e['reason'])}"
+                    rf"\item The chapter writes \texttt{{{latex_text(e.chapter)}}}; correct is "
+                    rf"\texttt{{{latex_text(e.correct)}}}. {latex_text(e.reason)}"
                 )
         body.append(r"\end{itemize}")
     body.append(r"\end{document}")

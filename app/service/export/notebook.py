@@ -255,11 +255,11 @@ def _problem(source: Source) -> list[str]:
 def _conserved(source: Source) -> list[str]:
     doc = source.document
     lines = ["### What is conserved"]
-    for c in doc["conserved"]:
-        lines.append(f"- ${c['latex_name']} = {c['latex']}$: {markdown_text(c['reason'])}")
-    if not doc["conserved"]:
+    for c in doc.conserved:
+        lines.append(f"- ${c.latex_name} = {c.latex}$: {markdown_text(c.reason)}")
+    if not doc.conserved:
         lines.append("Nothing: no coordinate is cyclic and h changes (forces or an explicit time dependence).")
-    lines += ["", f"**h and E.** {markdown_text(doc['hamiltonian_energy_reason'])}"]
+    lines += ["", f"**h and E.** {markdown_text(doc.hamiltonian_energy_reason)}"]
     return lines
 
 

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
 
 from app.engine.derive import Derivation
+from app.engine.document import Document, Erratum
 from app.scenes.types import Event, Parameter, Scene
 from app.viz.names import label
 
@@ -21,7 +21,7 @@ class Source:
     """One derivation with the problem around it; ``initial`` is q then q_dot, in coordinate order."""
 
     derivation: Derivation
-    document: dict[str, Any]
+    document: Document
     stem: str  # the file name without its extension
     title: str
     statement: str
@@ -29,7 +29,7 @@ class Source:
     t_end: float
     section: str = ""
     figure: str = ""
-    errata: tuple[dict[str, str], ...] = field(default=())
+    errata: tuple[Erratum, ...] = field(default=())
     events: tuple[Event, ...] = ()  # where the set-up ends (the exported run stops there, as the app's does)
 
     @property
@@ -37,7 +37,7 @@ class Source:
         return self.derivation.system.parameters
 
 
-def scene_source(scene: Scene, d: Derivation, document: dict[str, Any], initial: tuple[float, ...]) -> Source:
+def scene_source(scene: Scene, d: Derivation, document: Document, initial: tuple[float, ...]) -> Source:
     return Source(
         derivation=d,
         document=document,
@@ -48,12 +48,12 @@ def scene_source(scene: Scene, d: Derivation, document: dict[str, Any], initial:
         t_end=scene.t_end,
         section=scene.section,
         figure=scene.figure,
-        errata=tuple(document.get("errata") or ()),
+        errata=tuple(document.errata),
         events=scene.events,
     )
 
 
-def system_source(d: Derivation, document: dict[str, Any], initial: tuple[float, ...], t_end: float) -> Source:
+def system_source(d: Derivation, document: Document, initial: tuple[float, ...], t_end: float) -> Source:
     """A user's system: the statement is written here from its names and form, never from typed prose."""
     system = d.system
     coordinates = ", ".join(label(n) for n in system.coordinates)

@@ -6,7 +6,7 @@ from functools import cache
 from types import SimpleNamespace
 from typing import Any
 
-from app.engine.contract import derivation_json
+from app.engine.contract import printed_document
 from app.engine.derive import Derivation, derive
 from app.scenes import SCENES
 from app.service import derivations, exporting, user_jobs
@@ -60,10 +60,10 @@ def user_derivation(name: str) -> Derivation:
 def exported(case: str, fmt: str) -> str:
     """The file for a scene (as the scene route serves it) or a user system (as the worker job makes it)."""
     if case in SCENES:
-        return exporting.scene_export(case, fmt, derivations.derivation_document).content.decode()
+        return exporting.scene_export(case, fmt, derivations.scene_document).content.decode()
     _, initial, t_end = USER_SYSTEMS[case]
     d = user_derivation(case)
-    return exporting.system_export(d, derivation_json(d), fmt, initial, t_end)["content"]
+    return exporting.system_export(d, printed_document(d), fmt, initial, t_end)["content"]
 
 
 def app_end_state(case: str) -> tuple[float, dict[str, float]]:
