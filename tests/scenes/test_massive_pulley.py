@@ -10,7 +10,7 @@ import sympy as sp
 import sympy.physics.mechanics as me
 
 from app.scenes import SCENES
-from app.service.derivations import derivation, derivation_document
+from app.service.derivations import derivation, derivation_document, scene_document
 from app.viz.page_model import _answers
 from tests.scenes.common import S
 
@@ -68,7 +68,7 @@ def test_t_is_the_masses_and_the_pulleys_turning_printed_as_a_textbook_does():
 
 
 def test_the_equation_keeps_its_inertia_and_the_acceleration_reads_as_one_fraction():
-    doc = derivation_document("massive-pulley")
+    doc = scene_document("massive-pulley")
     # 𝓜 z̈ = f as the Euler–Lagrange equation gives it (prof-q 8), not z̈ − (m₁ − m₂) g/(m₁ + m₂ + M/2) = 0
     (equation,) = doc["equations_of_motion"]
     assert equation["latex"] == r"\left(m_{1} + m_{2} + \frac{M}{2}\right) \ddot{z} = \left(m_{1} - m_{2}\right) g"
@@ -88,7 +88,7 @@ def test_the_inertia_reads_m1_plus_m2_plus_half_m_everywhere():
 
 def test_results_state_the_acceleration_beside_the_massless_pulleys():
     # prof-q 10: the comparison the statement asks for (M → 0) stated where Results say what the problem asks
-    doc = derivation_document("massive-pulley")
+    doc = scene_document("massive-pulley")
     (answer,) = _answers(doc)
     assert answer["title"] == "The acceleration and its limit as M → 0"
     # the numbers beside the closed forms are the defaults' values, to four figures
