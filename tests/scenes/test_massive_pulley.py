@@ -68,7 +68,7 @@ def test_t_is_the_masses_and_the_pulleys_turning_printed_as_a_textbook_does():
 
 
 def test_the_equation_keeps_its_inertia_and_the_acceleration_reads_as_one_fraction():
-    doc = scene_document("massive-pulley")
+    doc = derivation_document("massive-pulley")
     # 𝓜 z̈ = f as the Euler–Lagrange equation gives it (prof-q 8), not z̈ − (m₁ − m₂) g/(m₁ + m₂ + M/2) = 0
     (equation,) = doc["equations_of_motion"]
     assert equation["latex"] == r"\left(m_{1} + m_{2} + \frac{M}{2}\right) \ddot{z} = \left(m_{1} - m_{2}\right) g"
