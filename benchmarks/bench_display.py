@@ -26,7 +26,7 @@ from typing import Any
 import sympy as sp
 from sympy.core.cache import clear_cache
 
-from app.engine import budget, forms, report
+from app.engine import forms, report, simplify
 from app.engine.contract import derivation_json
 from app.engine.derive import Derivation, derive
 from app.scenes import SCENES
@@ -42,7 +42,7 @@ def _identity(expr: Any, names: Any = None, seconds: float = 0.0) -> Any:
 def _before(expr: Any, names: Any = None, seconds: float = 0.0) -> Any:
     if not isinstance(expr, sp.Expr) or not expr.free_symbols:
         return expr
-    return budget.tidy(budget.pythagoras(expr))
+    return simplify.tidy(simplify.pythagoras(expr))
 
 
 @contextmanager
@@ -61,7 +61,7 @@ def _display(kind: str):
 def _cold() -> None:
     clear_cache()
     forms._CACHE.clear()
-    budget._TIDY_CACHE.clear()
+    simplify._TIDY_CACHE.clear()
 
 
 def _time(d: Derivation, kind: str, scene: Any) -> float:

@@ -18,8 +18,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from app.engine.budget import pythagoras
 from app.engine.errors import DerivationError
+from app.engine.simplify import pythagoras
 from app.engine.symbols import SymbolTable
 from app.engine.trig import merged
 from app.scenes.types import Body

@@ -39,7 +39,7 @@ from typing import Any
 import sympy as sp
 
 from app.engine import textbook
-from app.engine.budget import display_budget, tidy, unbudgeted, work_limit
+from app.engine.budget import display_budget, unbudgeted, work_limit
 from app.engine.check_answers import (
     KEYED,
     PER_COMPONENT,
@@ -99,7 +99,7 @@ from app.engine.mistake_answer import (
     solved_slip,
 )
 from app.engine.mistake_box import piece_box
-from app.engine.mistake_families import Correct, FollowUp, Mistake, spoken
+from app.engine.mistake_families import Correct, FollowUp, Mistake
 from app.engine.mistakes import (
     CONSTANT_FACTOR_HINT,
     HALF_MOMENTUM_HINT,
@@ -112,6 +112,8 @@ from app.engine.names import unicode
 from app.engine.parse import Parsed
 from app.engine.quoted_term import as_typed
 from app.engine.report import Printer, display
+from app.engine.simplify import tidy
+from app.engine.spoken import spoken
 from app.engine.spoken_tex import formulas
 from app.engine.textbook import unicode_text
 from app.engine.work import WorkExceeded

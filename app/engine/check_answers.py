@@ -10,15 +10,27 @@ without reading the text again (docs/parsing.md).
 from __future__ import annotations
 
 import re
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 import sympy as sp
 
 from app.engine.parse import MAX_LENGTH, ExpressionError, Parsed, build, narrowed, read, typed, typed_terms
 from app.engine.reality import real_somewhere
 
-if TYPE_CHECKING:  # the problem an answer is read for (imported for its type only)
-    from app.engine.check_problem import Problem
+
+class Asked(Protocol):
+    """What reading an answer needs of the problem it answers (app/engine/check_problem.py's ``Problem``): the
+    step, the kind of each name it may use, and the SymPy symbol of each name."""
+
+    @property
+    def step(self) -> str: ...
+
+    @property
+    def kinds(self) -> dict[str, str]: ...
+
+    @property
+    def namespace(self) -> dict[str, sp.Symbol]: ...
+
 
 STEPS = ("position", "kinetic", "potential", "lagrangian", "momentum", "equation", "acceleration", "hamiltonian", "omega_squared")
 PER_COORDINATE = frozenset({"momentum", "equation", "acceleration"})
@@ -137,7 +149,7 @@ def check_answer(text: str, step: str, kinds: dict[str, str]) -> Parsed:
         raise answer_error(exc) from None
 
 
-def parse_answer(pb: Problem, answer: Parsed | str, kind: str | None = None) -> sp.Expr:
+def parse_answer(pb: Asked, answer: Parsed | str, kind: str | None = None) -> sp.Expr:
     """The answer in SymPy (CheckError on the ``answer`` field when it is not allowed); ``kind`` is the step
     whose names it may use (a follow-up question's), by default the problem's own.
 
@@ -163,7 +175,7 @@ def parse_answer(pb: Problem, answer: Parsed | str, kind: str | None = None) -> 
 MAX_PAIRED = 12  # of an answer's typed terms, tried in pairs for two that cancel
 
 
-def cancelling_terms(pb: Problem, answer: Parsed | str) -> tuple[sp.Expr, sp.Expr] | None:
+def cancelling_terms(pb: Asked, answer: Parsed | str) -> tuple[sp.Expr, sp.Expr] | None:
     """Two terms of the answer as typed that cancel (− m g sin α and + m g sin α), which SymPy has merged away
     when it built the answer whole; None where there are none (or more terms than are tried)."""
     try:

@@ -23,8 +23,8 @@ from math import prod
 import symengine as se
 import sympy as sp
 
-from app.engine.budget import pythagoras
 from app.engine.fast import Fast, convertible, expand
+from app.engine.simplify import pythagoras
 
 # The longest acceleration, in characters of its plain form, still shown as a closed form (the double
 # pendulum's longer one is 306).

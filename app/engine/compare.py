@@ -26,8 +26,9 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
-from app.engine.budget import pythagoras, within_budget, work_limit
+from app.engine.budget import within_budget, work_limit
 from app.engine.kinks import away_from_kinks
+from app.engine.simplify import pythagoras
 from app.engine.work import WorkExceeded
 from app.limits import SYMBOLIC_WORK
 

@@ -25,11 +25,11 @@ from itertools import combinations
 
 import sympy as sp
 
-from app.engine.budget import is_zero, tidy
 from app.engine.lagrange import Equations
 from app.engine.mechanics import Mechanics
 from app.engine.names import unicode
 from app.engine.noether import symmetries
+from app.engine.simplify import is_zero, tidy
 
 
 @dataclass(frozen=True)

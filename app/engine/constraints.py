@@ -30,11 +30,13 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from app.engine.budget import is_zero, pythagoras, tidy
-from app.engine.derive import Derivation, positive_names
 from app.engine.errors import DerivationError
+from app.engine.lagrange import Equations
+from app.engine.mechanics import Mechanics, positive_names
 from app.engine.parse import ExpressionError, parse_expression
-from app.scenes.types import Constraint
+from app.engine.simplify import is_zero, pythagoras, tidy
+from app.engine.symbols import SymbolTable
+from app.scenes.types import Constraint, System
 
 AXES = ("x", "y", "z")
 
@@ -58,8 +60,7 @@ def cartesian_symbols(count: int) -> tuple[tuple[sp.Symbol, sp.Symbol, sp.Symbol
     return tuple(tuple(sp.Symbol(f"{a}{suffix(i)}", real=True) for a in AXES) for i in range(count))
 
 
-def _namespace(d: Derivation, cart) -> dict[str, sp.Symbol]:
-    table = d.table
+def _namespace(table: SymbolTable, cart) -> dict[str, sp.Symbol]:
     names = {s.name: s for s in (*table.params, table.t)}
     for triple in cart:
         for s in triple:
@@ -79,9 +80,10 @@ def _parse(text: str, names: dict[str, sp.Symbol], where: str) -> sp.Expr:
         raise ExpressionError(f"{where}: {exc}", exc.part) from None
 
 
-def positive(d: Derivation) -> dict[sp.Symbol, sp.Symbol]:
-    wanted = positive_names(d.system)
-    return {s: sp.Symbol(s.name, positive=True) for s in (*d.table.params, *d.table.q) if s.name in wanted}
+def positive(system: System, table: SymbolTable) -> dict[sp.Symbol, sp.Symbol]:
+    """Positive stand-ins for the parameters and coordinates the system declares positive."""
+    wanted = positive_names(system)
+    return {s: sp.Symbol(s.name, positive=True) for s in (*table.params, *table.q) if s.name in wanted}
 
 
 def display(expr: sp.Expr, positive: dict[sp.Symbol, sp.Symbol]) -> sp.Expr:
@@ -109,18 +111,17 @@ def _tangent_residual(residual: sp.Matrix, J: sp.Matrix, scale: sp.Matrix, symbo
     return True
 
 
-def constraint_forces(d: Derivation) -> tuple[ConstraintForce, ...]:
-    """The force of each declared constraint, with the engine's accelerations substituted."""
-    system = d.system
+def constraint_forces(system: System, mech: Mechanics, eqs: Equations) -> tuple[ConstraintForce, ...]:
+    """The force of each declared constraint, with the engine's accelerations (``eqs``) substituted."""
     if not system.constraints:
         return ()
-    mech, table = d.mechanics, d.table
+    table = mech.table
     if not mech.positions:
         raise DerivationError("constraint forces need the particles form (Cartesian positions of each mass)")
     if system.cartesian_potential is None:
         raise DerivationError("constraint forces need cartesian_potential: U in the particles' Cartesian coordinates")
     cart = cartesian_symbols(len(mech.positions))
-    names = _namespace(d, cart)
+    names = _namespace(table, cart)
     # r_i = r_i(q, t): the Cartesian coordinates in terms of the generalized ones
     on_motion = {s: c for triple, r in zip(cart, mech.positions, strict=True) for s, c in zip(triple, r, strict=True)}
     flat = [s for triple in cart for s in triple]
@@ -142,7 +143,7 @@ def constraint_forces(d: Derivation) -> tuple[ConstraintForce, ...]:
         gs.append(g)
 
     # r_i'' = d/dt v_i, with q_ddot from the Euler-Lagrange equations
-    accelerations = dict(zip(table.qdd, d.equations.accelerations, strict=True))
+    accelerations = dict(zip(table.qdd, eqs.accelerations, strict=True))
     r_ddot = [table.dt(v).xreplace(accelerations) for vel in mech.velocities for v in vel]
     masses = [m for m in mech.masses for _ in AXES]
     # b = m_i r_i'' + grad_i U  (the part of m a that the applied forces do not explain)
@@ -162,7 +163,7 @@ def constraint_forces(d: Derivation) -> tuple[ConstraintForce, ...]:
             "is missing (declare every constraint whose force is not zero, and the full Cartesian potential)"
         )
 
-    held = positive(d)
+    held = positive(system, table)
     forces = []
     for a, (c, g) in enumerate(zip(system.constraints, gs, strict=True)):
         grad_on = tuple(G[3 * (c.on - 1) + i, a] for i in range(3))

@@ -10,9 +10,9 @@ import sympy as sp
 
 from app.engine import meaning, notation, progress
 from app.engine.action_step import kinetic_focus_possible
-from app.engine.budget import Skipped, bounded, display_budget, display_work_left, is_zero, pythagoras, within_budget
+from app.engine.budget import Skipped, bounded, display_budget, display_work_left, within_budget
 from app.engine.constraints import ConstraintForce
-from app.engine.derive import LARGE_FROM, Derivation
+from app.engine.derive import LARGE_FROM, Derivation, Transformed
 from app.engine.document import Document
 from app.engine.errata import errata_json
 from app.engine.modes import NormalModes
@@ -42,7 +42,7 @@ from app.engine.report_members import (
 from app.engine.report_modes import hamilton_json, hamilton_steps, limits_step, normal_mode_steps, normal_modes_json
 from app.engine.rods import fixed_distances
 from app.engine.root_forms import power_form, trig_cancelled
-from app.engine.transform import Transformed
+from app.engine.simplify import is_zero, pythagoras
 from app.engine.trees import maybe_of_sympy
 from app.limits import DISPLAY_WORK, FIRST_DISPLAY_WORK, LARGE_DISPLAY_WORK
 from app.scenes.reasons import reason

@@ -21,8 +21,9 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from app.engine.budget import tidy, within_budget
+from app.engine.budget import within_budget
 from app.engine.derive import Derivation
+from app.engine.simplify import tidy
 from app.limits import SOLVE_WORK
 
 

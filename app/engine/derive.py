@@ -4,7 +4,8 @@
 reduction).  The members beyond it (the forces of constraint, the derivation in declared new
 coordinates, Hamilton's equations, the equilibria and normal modes) are computed on first use, each
 within its own bound of work (MEMBER_WORK), and kept on the derivation: each is either its value or a
-``Skipped`` saying why it is left out.  The document (``app.engine.contract``) prints them; numerics,
+``Skipped`` saying why it is left out.  Each analysis takes what it needs (the system, its mechanics,
+its equations, the reduction), never the derivation: the derivation calls them.  The document (``app.engine.contract``) prints them; numerics,
 viz, the service and the exports read them from here.
 """
 
@@ -12,26 +13,24 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, TypeVar
+from typing import Any, TypeVar
 
 import sympy as sp
 
 from app.engine import work as counted
 from app.engine.budget import Skipped, bounded
 from app.engine.conservation import Energetics, energetics
+from app.engine.constraints import ConstraintForce, constraint_forces
+from app.engine.hamilton import Hamilton, hamilton
 from app.engine.lagrange import Equations, euler_lagrange
-from app.engine.mechanics import Mechanics, build_mechanics
+from app.engine.mechanics import Mechanics, build_mechanics, positive_names
+from app.engine.modes import NormalModes, normal_modes
 from app.engine.names import MASS_MATRIX
 from app.engine.reduction import Reduction, reduce_to_one
 from app.engine.symbols import SymbolTable
+from app.engine.transform import inertia, new_coordinates
 from app.limits import MEMBER_RESERVE_WORK, MEMBER_WORK, REDUCTION_WORK
-from app.scenes.types import System
-
-if TYPE_CHECKING:
-    from app.engine.constraints import ConstraintForce
-    from app.engine.hamilton import Hamilton
-    from app.engine.modes import NormalModes
-    from app.engine.transform import Transformed
+from app.scenes.types import CoordinateChange, System
 
 T = TypeVar("T")
 
@@ -88,24 +87,18 @@ class Derivation:
         """The force of each declared constraint (chapter § 4.2), by Lagrange multipliers.
 
         Raises DerivationError when the declared constraints do not fit the system."""
-        from app.engine.constraints import constraint_forces
-
         return self._member("constraint_forces", "constraint_forces", "The forces of constraint",
-                            lambda: constraint_forces(self))  # fmt: skip
+                            lambda: constraint_forces(self.system, self.mechanics, self.equations))  # fmt: skip
 
     @property
     def transformed(self) -> Transformed | None | Skipped:
         """The derivation in the declared new coordinates (None when none is declared)."""
-        from app.engine.transform import transform
-
         return self._member("transformed", "transformed", "The derivation in the declared new coordinates",
                             lambda: transform(self.system))  # fmt: skip
 
     @property
     def hamilton(self) -> Hamilton | Skipped:
         """H(q, p, t) and Hamilton's equations."""
-        from app.engine.hamilton import hamilton
-
         if self.equations.velocity_dependent:
             return Skipped("hamilton", "Hamilton's equations are left out: ∂²L/∂q̇² depends on the velocities, so "
                            "p = ∂L/∂q̇ is not linear in q̇ and the engine does not invert it for q̇(q, p); "
@@ -113,29 +106,56 @@ class Derivation:
         if not self.equations.closed_form and not self.equations.mass_matrix.is_diagonal():
             return Skipped("hamilton", f"Hamilton's equations are left out: q̇ = {MASS_MATRIX[1]}⁻¹(p − b) has no closed form "
                            "short enough to read for this many coordinates (as with the accelerations).")  # fmt: skip
-        return self._member("hamilton", "hamilton", "Hamilton's equations", lambda: hamilton(self))
+        return self._member("hamilton", "hamilton", "Hamilton's equations", lambda: hamilton(self.mechanics, self.equations))
 
     def normal_modes(self, momenta: Mapping[str, float] | None = None) -> NormalModes | Skipped:
         """The equilibria, their stability and normal modes at the default parameters.
 
         ``momenta`` holds the conserved momenta of the reduction's relative equilibria (1 each when
         not given; a scene holds them at its initial state); each set is computed once."""
-        from app.engine.modes import normal_modes
-
         held = dict(momenta or {})
         key = ("normal_modes", tuple(sorted(held.items())))
-        return self._member(key, "normal_modes", "The equilibria and normal modes", lambda: normal_modes(self, held))
+        return self._member(key, "normal_modes", "The equilibria and normal modes",
+                            lambda: normal_modes(self.system, self.mechanics, self.equations, self.reduction, held))  # fmt: skip
+
+
+@dataclass(frozen=True)
+class Transformed:
+    """The derivation in the new coordinates, with the maps between the two sets."""
+
+    change: CoordinateChange
+    original: SymbolTable
+    definitions: tuple[sp.Expr, ...]
+    inverse: dict[sp.Symbol, sp.Expr]
+    system: System
+    derivation: Derivation
+    inertia: tuple[sp.Expr, ...]
+    decoupled: bool
+    reduced_mass: sp.Expr | None
+
+    def to_original(self, expr: sp.Expr) -> sp.Expr:
+        """Write an expression of the new coordinates and velocities in the old ones."""
+        forward: dict[sp.Symbol, sp.Expr] = {}
+        for Q, Qd, f in zip(self.derivation.table.q, self.derivation.table.qd, self.definitions, strict=True):
+            # Q = f(q, t)  and  Q_dot = d/dt f(q, t)
+            forward[Q] = f
+            forward[Qd] = self.original.dt(f)
+        return expr.xreplace(forward)
+
+
+def transform(system: System) -> Transformed | None:
+    """Derive the system again in its declared new coordinates (None when it declares none)."""
+    new = new_coordinates(system)
+    if new is None:
+        return None
+    d = derive(new.system)
+    diagonal, decoupled, reduced = inertia(new.change, d.equations.mass_matrix)
+    return Transformed(new.change, new.original, new.definitions, new.inverse, new.system, d, diagonal, decoupled, reduced)
 
 
 def value_or(member: T | Skipped, fallback: T) -> T:
     """A member's value, or ``fallback`` when it was skipped."""
     return fallback if isinstance(member, Skipped) else member
-
-
-def positive_names(system: System) -> set[str]:
-    """Parameters whose allowed range is positive, and coordinates declared as distances."""
-    names = {p.name for p in system.parameters if p.min is not None and p.min > 0}
-    return names | set(system.nonnegative)
 
 
 def accelerations_only(system: System) -> Equations:

@@ -21,8 +21,8 @@ from typing import TYPE_CHECKING
 
 import sympy as sp
 
-from app.engine.mistake_families import spoken
 from app.engine.names import unicode
+from app.engine.spoken import spoken
 
 if TYPE_CHECKING:
     from app.engine.derive import Derivation

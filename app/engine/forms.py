@@ -35,9 +35,10 @@ from sympy.polys.polyerrors import BasePolynomialError
 from sympy.simplify.fu import TR8, TR10i
 
 from app.engine import budget
-from app.engine.budget import memoized, pythagoras, tidy, within_budget
+from app.engine.budget import memoized, within_budget
 from app.engine.names import MASS_NAME
 from app.engine.quotients import textbook_quotients
+from app.engine.simplify import pythagoras, tidy
 from app.limits import FALLBACK_WORK, FORM_WORK, LATE_WORK
 
 ENGINE_BONUS = 1.5
@@ -618,7 +619,7 @@ def textbook_form(expr: Any, names: Mapping[sp.Symbol, str] | None = None, units
         return _CACHE[key]
     nodes = _nodes(expr, NODE_BUDGET)
     # once the shared budget is spent, a small expression still gets LATE_WORK; a large one only its fallback
-    shared = budget._remaining(units)
+    shared = budget.display_work_left(units)
     late = shared < min(units, LATE_WORK)
     left = max(shared, min(units, LATE_WORK) if nodes < 4 * SMALL else 0.0)
     memo = budget.document_memo()

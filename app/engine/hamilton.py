@@ -27,8 +27,9 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from app.engine.budget import pythagoras
-from app.engine.derive import Derivation
+from app.engine.lagrange import Equations
+from app.engine.mechanics import Mechanics
+from app.engine.simplify import pythagoras
 
 
 @dataclass(frozen=True)
@@ -54,8 +55,9 @@ def _inverse(M: sp.Matrix) -> tuple[sp.Matrix, sp.Expr]:
     return M.inv(method="LU"), sp.Integer(1)
 
 
-def hamilton(d: Derivation) -> Hamilton:
-    table, eqs, mech = d.table, d.equations, d.mechanics
+def hamilton(mech: Mechanics, eqs: Equations) -> Hamilton:
+    """H(q, p, t) and Hamilton's equations from L's mechanics and its Euler-Lagrange equations."""
+    table = mech.table
     zero_v = dict.fromkeys(table.qd, sp.Integer(0))
     P = momentum_symbols(table.names)
     M = eqs.mass_matrix

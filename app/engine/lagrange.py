@@ -23,12 +23,13 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from app.engine.budget import larger_than, pythagoras
 from app.engine.closed_form import by_cramer
 from app.engine.errors import DerivationError
 from app.engine.fast import Fast, convertible, diff, expand
 from app.engine.mechanics import Mechanics
 from app.engine.names import unicode
+from app.engine.simplify import larger_than, pythagoras
+from app.engine.symbols import SymbolTable
 
 # Closed forms by Cramer's rule up to this many coordinates; LU elimination beyond.
 CRAMER_MAX = 2
@@ -236,3 +237,12 @@ def euler_lagrange(mech: Mechanics) -> Equations:
     return Equations(
         dL_dq, momenta, ddt, residuals, M, forcing, tuple(solved), closed_form, reason, velocity_dependent
     )
+
+
+def euler_lagrange_of(t: SymbolTable, k: int, L: sp.Expr) -> sp.Expr:
+    """d/dt ∂L/∂q̇_k − ∂L/∂q_k of an expression L (linear in L: for a change of L, the change of the equation)."""
+    p = sp.diff(L, t.qd[k])
+    # the total time derivative: through every coordinate, velocity and t itself
+    dp = sum((sp.diff(p, q) * v + sp.diff(p, v) * a for q, v, a in zip(t.q, t.qd, t.qdd, strict=True)),
+             sp.diff(p, t.t))  # fmt: skip
+    return sp.expand(dp - sp.diff(L, t.q[k]))

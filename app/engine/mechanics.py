@@ -8,9 +8,9 @@ from dataclasses import dataclass
 import sympy as sp
 
 from app.engine.bodies import BodyMotion, body_motion
-from app.engine.budget import pythagoras
 from app.engine.errors import DerivationError
 from app.engine.parse import ExpressionError, parse_expression
+from app.engine.simplify import pythagoras
 from app.engine.symbols import SymbolTable
 from app.engine.trig import merged
 from app.scenes.types import System
@@ -107,3 +107,9 @@ def build_mechanics(system: System) -> Mechanics:
     # L = T - U
     L = T - U
     return Mechanics(table, tuple(positions), tuple(masses), tuple(velocities), tuple(speeds), T, U, L, Q, bodies)
+
+
+def positive_names(system: System) -> set[str]:
+    """Parameters whose allowed range is positive, and coordinates declared as distances."""
+    names = {p.name for p in system.parameters if p.min is not None and p.min > 0}
+    return names | set(system.nonnegative)

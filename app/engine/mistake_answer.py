@@ -39,8 +39,9 @@ from app.engine.compare import (
     values,
 )
 from app.engine.diagnose import MIN_POINTS, part_scales, rate_parts  # (MIN_POINTS: one home with the catalogue)
-from app.engine.mistake_families import Correct, monomial_words, said, spoken
+from app.engine.mistake_families import Correct, monomial_words, said
 from app.engine.notation import MASS_INERTIA, Inertia
+from app.engine.spoken import spoken
 from app.engine.symbols import TIME
 from app.engine.textbook import unicode_text
 

@@ -21,8 +21,9 @@ from collections.abc import Iterator
 import sympy as sp
 
 from app.engine.derive import Derivation
+from app.engine.lagrange import euler_lagrange_of
 from app.engine.mistake_families import Mistake
-from app.engine.mistake_pieces import euler_lagrange, piece_mistakes, swap_sin_cos
+from app.engine.mistake_pieces import piece_mistakes, swap_sin_cos
 
 MAX_SLIPS = 4  # slips of T, and of U, carried on (each alone, and each of T with each of U)
 _KINDS = ("sin_cos",)  # families of a step's own slips that are carried, besides a term's sign
@@ -98,7 +99,7 @@ def carried_equations(d: Derivation, k: int, truth: sp.Expr) -> Iterator[Mistake
     """The equation of coordinate k derived correctly from an L with the slips of T and U: the right equation
     for that L (one mistake, in the earlier step, however many slips that L holds)."""
     for key, words, dL, _ in lagrangian_changes(d):
-        change = euler_lagrange(d, k, dL)
+        change = euler_lagrange_of(d.table, k, dL)
         if change == 0:
             continue
         yield Mistake(f"equation.carried.{key}", "travelled", f"an L with {words}", None, _CARRIED_WHY,

@@ -16,8 +16,9 @@ from collections.abc import Iterator
 import sympy as sp
 
 from app.engine.derive import Derivation
-from app.engine.mistake_families import Mistake, short_form, slug, spoken
+from app.engine.mistake_families import Mistake, short_form, slug
 from app.engine.names import unicode
+from app.engine.spoken import spoken
 
 MAX_TERMS = 12
 MAX_MASSES = 4

@@ -16,11 +16,11 @@ from collections.abc import Iterator
 
 import sympy as sp
 
+from app.engine.comparisons import MAX_BODIES, mass_limit, stops_when_heavy
 from app.engine.derive import Derivation
-from app.engine.mistake_families import Mistake, spoken
+from app.engine.mistake_families import Mistake
 from app.engine.names import unicode
-
-MAX_BODIES = 4  # bodies whose held-still limit is tried, per step
+from app.engine.spoken import spoken
 
 
 def other_coordinates(d: Derivation, step: str, k: int | None) -> Iterator[Mistake]:
@@ -78,15 +78,15 @@ def held_still(d: Derivation, step: str, truth: sp.Expr, k: int | None = None) -
         M, shown = namespace[mass_name], unicode(mass_name)
         body = label or f"body of mass {shown}"
         key = f"{step}.limit"
-        zero = _at(truth, M, 0)
+        zero = mass_limit(truth, M, 0)
         if zero is not None:
             light.append(Mistake(
                 f"{key}.massless.{mass_name}", "limit", f"{spoken(zero)}, the answer if the {body} had no mass "
                 f"({shown} → 0)", None, f"the {body} has mass {shown} and pushes or pulls on the rest, so {shown} "
                 "stays in the answer", zero,
             ))  # fmt: skip
-        held = _held(d, i, M)
-        infinite = _at(truth, M, sp.oo, allow_zero=held)
+        held = stops_when_heavy(d, i, M)
+        infinite = mass_limit(truth, M, sp.oo, allow_zero=held)
         if infinite is None:
             continue
         if held and step == "acceleration":
@@ -181,46 +181,13 @@ def linear(d: Derivation, expr: sp.Expr) -> sp.Expr | None:
     return sp.expand(sp.cancel(out))
 
 
-def _held(d: Derivation, i: int, M: sp.Symbol) -> bool:
-    """Whether body i's position moves with one coordinate alone, whose acceleration vanishes as M → ∞."""
-    moves = {s for c in d.mechanics.positions[i] for s in c.free_symbols if s in d.table.q}
-    if len(moves) != 1:
-        return False
-    j = d.table.q.index(next(iter(moves)))
-    return _at(d.equations.accelerations[j], M, sp.oo, allow_zero=True) == 0
-
-
-def _at(expr: sp.Expr, M: sp.Symbol, to: sp.Expr, allow_zero: bool = False) -> sp.Expr | None:
-    """lim_{M→to} of a rational function of M (to is 0 or ∞), or None where it is not finite, is zero (unless
-    allowed) or still holds M."""
-    num, den = sp.fraction(sp.cancel(sp.together(expr)))
-    try:
-        top, bottom = sp.Poly(num, M), sp.Poly(den, M)
-    except sp.PolynomialError:
-        return None
-    if to == 0:
-        # lim_{M→0} (a_0 + a_1 M + …)/(b_0 + b_1 M + …) = a_0 / b_0, finite where b_0 ≠ 0
-        a0, b0 = top.eval(0), bottom.eval(0)
-        limit = None if b0 == 0 else sp.factor(a0 / b0)
-    elif top.degree() > bottom.degree():
-        limit = None
-    elif top.degree() < bottom.degree():
-        limit = sp.Integer(0)
-    else:
-        # lim_{M→∞} (a_n Mⁿ + …)/(b_n Mⁿ + …) = a_n / b_n
-        limit = sp.factor(top.LC() / bottom.LC())
-    if limit is None or (limit == 0 and not allow_zero) or limit.has(M):
-        return None
-    return limit
-
-
 def _fixed_in_equation(d: Derivation, bodies: list, truth: sp.Expr, k: int) -> Iterator[Mistake]:
     """q_k's equation with a body held still: that body's one coordinate q_j neither moving nor accelerating
     (q̇_j = q̈_j = 0), as if its mass were infinite; j ≠ k."""
     namespace, t = d.table.namespace(), d.table
     for i, mass_name, label in bodies:
         M, shown = namespace[mass_name], unicode(mass_name)
-        if not _held(d, i, M):
+        if not stops_when_heavy(d, i, M):
             continue
         moves = {s for c in d.mechanics.positions[i] for s in c.free_symbols if s in t.q}
         j = t.q.index(next(iter(moves)))
@@ -247,7 +214,7 @@ def _fixed_in_energy(d: Derivation, bodies: list, truth: sp.Expr, step: str) -> 
     whole = "the kinetic energy" if step == "kinetic" else "the Lagrangian"
     for i, mass_name, label in bodies:
         M, shown = namespace[mass_name], unicode(mass_name)
-        if not _held(d, i, M):
+        if not stops_when_heavy(d, i, M):
             continue
         q = next(s for c in d.mechanics.positions[i] for s in c.free_symbols if s in t.q)
         j = t.q.index(q)
@@ -271,18 +238,3 @@ def _fixed_in_energy(d: Derivation, bodies: list, truth: sp.Expr, step: str) -> 
             f"here the {body} moves{carries}, so {letter} has the {body}'s own ½ {shown} v² and the {rate} terms of "
             "every body it moves", fixed,
         )  # fmt: skip
-
-
-def held_fixed(d: Derivation) -> list[sp.Symbol]:
-    """The mass of each body that carries another and is held fixed as its mass → ∞ (its one coordinate's
-    acceleration then vanishes), where the figure has another body: the wedge's M under the block or the cylinder."""
-    namespace = d.table.namespace()
-    bodies = [(i, namespace[p.mass]) for i, p in enumerate(d.system.particles) if p.mass in namespace][:MAX_BODIES]
-    if len(bodies) + len(d.mechanics.bodies) < 2 or not d.equations.closed_form:
-        return []
-    return [M for i, M in bodies if _held(d, i, M)]
-
-
-def limit(expr: sp.Expr, M: sp.Symbol) -> sp.Expr | None:
-    """lim_{M→∞} of a rational function of M, zero included; None where it is not finite."""
-    return _at(expr, M, sp.oo, allow_zero=True)

@@ -36,6 +36,7 @@ from app.engine.bodies import INERTIA
 from app.engine.check_answers import RELATIONS
 from app.engine.derive import Derivation
 from app.engine.dimensions import STIFFNESS_WORDS, Dims, add_dims, dimension, quantity, system_dimensions
+from app.engine.lagrange import euler_lagrange_of
 from app.engine.mistake_families import (
     Correct,
     Mistake,
@@ -924,16 +925,6 @@ def inertia_in_potential(d: Derivation, truth: sp.Expr, known) -> Iterator[Mista
 # ---- mistakes that travel --------------------------------------------------------------------------
 
 
-def euler_lagrange(d: Derivation, k: int, L: sp.Expr) -> sp.Expr:
-    """d/dt ∂L/∂q̇_k − ∂L/∂q_k for a change of L (linear in L, so the change of the equation)."""
-    t = d.table
-    p = sp.diff(L, t.qd[k])
-    # the total time derivative: through every coordinate, velocity and t itself
-    dp = sum((sp.diff(p, q) * v + sp.diff(p, v) * a for q, v, a in zip(t.q, t.qd, t.qdd, strict=True)),
-             sp.diff(p, t.t))  # fmt: skip
-    return sp.expand(dp - sp.diff(L, t.q[k]))
-
-
 def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, asked: list) -> Iterator[Mistake]:
     """A rigid body's slips in T and U, and the mistakes of T and U (generated, and a rigid body's) carried
     into the equation and into ω²."""
@@ -984,7 +975,7 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
     for key, name, dT, dU, correct in changes[: 2 * MAX_TRAVEL]:
         if step == "equation" and k is not None:
             # L = T − U changes by ΔT − ΔU, and the equation by its Euler–Lagrange expression
-            change = euler_lagrange(d, k, dT - dU)
+            change = euler_lagrange_of(d.table, k, dT - dU)
             wrong = truth + change
             if key.startswith("rigid"):
                 yield Mistake(f"equation.{key}", "rigid", name, None,
@@ -1000,7 +991,7 @@ def travelled(d: Derivation, step: str, k: int | None, truth: sp.Expr, known, as
                           "and derive again", wrong, correct=correct)  # fmt: skip
         elif step == "acceleration":
             # one coordinate: E' = a q̈ + f, so q̈ = −f/a
-            E = d.equations.residuals[0] + euler_lagrange(d, 0, dT - dU)
+            E = d.equations.residuals[0] + euler_lagrange_of(d.table, 0, dT - dU)
             a = sp.diff(E, d.table.qdd[0])
             if a != 0:
                 family = "rigid" if key.startswith("rigid") else "travelled"
@@ -1031,7 +1022,7 @@ def _rigid_coupled(d: Derivation, k: int, rigid: list) -> Iterator[Mistake]:
     zero = dict.fromkeys(t.qdd, sp.Integer(0))
     for key, name, dT, dU, correct in rigid:
         # each equation changes by the Euler–Lagrange expression of ΔL = ΔT − ΔU
-        wrong = [sp.expand(r + euler_lagrange(d, j, dT - dU)) for j, r in enumerate(d.equations.residuals)]
+        wrong = [sp.expand(r + euler_lagrange_of(d.table, j, dT - dU)) for j, r in enumerate(d.equations.residuals)]
         M = sp.Matrix([[sp.diff(r, a) for a in t.qdd] for r in wrong])
         if M.det() == 0:
             continue
@@ -1057,7 +1048,7 @@ def _terms_lost(
         return None
     # the terms of T (or of U) left out that give these terms of the equation: the part of ΔL whose
     # Euler–Lagrange expression for q_k is not zero
-    source = sp.Add(*(t for t in sp.Add.make_args(sp.expand(-dL)) if euler_lagrange(d, k, t) != 0))
+    source = sp.Add(*(t for t in sp.Add.make_args(sp.expand(-dL)) if euler_lagrange_of(d.table, k, t) != 0))
     piece, what = ("T", source) if slip.startswith("a T") else ("U", -source)
     t = d.table
     moving = (*t.q, *t.qd, *t.qdd)  # each product's coordinates after its constants: m₂ l₁ l₂ (θ̈₁ cos(θ₁ − θ₂) …)

@@ -15,9 +15,10 @@ import sympy as sp
 
 from app.engine.constraints import AXES, cartesian_symbols
 from app.engine.derive import Derivation
-from app.engine.mistake_families import Mistake, spoken
+from app.engine.mistake_families import Mistake
 from app.engine.names import unicode
 from app.engine.notation import practice_axes
+from app.engine.spoken import spoken
 
 MAX_TERMS = 8  # terms of one component tried one at a time
 

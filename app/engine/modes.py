@@ -41,53 +41,32 @@ from __future__ import annotations
 
 import logging
 import math
-from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from collections.abc import Mapping
+from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
 
 from app.engine import modes_exact, roots
 from app.engine.budget import work_limit
-from app.engine.derive import Derivation
-from app.engine.kinks import away_from_kinks
+from app.engine.equilibrium import MAX_EQUILIBRIA, Equilibrium, array, defaults, function, modes_of, numeric, vanishes
+from app.engine.lagrange import Equations
+from app.engine.mechanics import Mechanics
 from app.engine.names import unicode
-from app.engine.stability import NEUTRAL, STABLE, UNSTABLE, Linear, linearize
+from app.engine.reduction import Reduction
+from app.engine.stability import NEUTRAL, STABLE, UNSTABLE, linearize
+from app.engine.steady import relative
+from app.engine.symbols import SymbolTable
 from app.engine.time_factor import TIMES, common_factor_time
 from app.engine.work import WorkExceeded
 from app.limits import MODES_WORK, SEARCH_EVALUATIONS
+from app.scenes.types import System
 
-__all__ = ["NEUTRAL", "STABLE", "UNSTABLE", "Equilibrium", "Mode", "NormalModes", "defaults", "normal_modes"]
+__all__ = ["NEUTRAL", "STABLE", "UNSTABLE", "NormalModes", "normal_modes"]
 
 log = logging.getLogger(__name__)
 
-MAX_EQUILIBRIA = 8  # equilibria linearized (a polynomial condition can have many roots)
 MAX_SYMBOLIC_SIZE = 3  # coordinates up to which M and K are kept symbolic at an exact equilibrium
-
-
-@dataclass(frozen=True)
-class Mode:
-    omega_squared: float
-    shape: tuple[float, ...]  # largest component 1
-    exact: sp.Expr | None = None
-
-
-@dataclass(frozen=True)
-class Equilibrium:
-    position: dict[str, float]
-    exact: dict[str, sp.Expr] | None  # the symbolic position, when solved
-    kind: str  # stable, neutral or unstable (from the full linearization, velocity terms included)
-    mass: sp.Matrix  # M at the equilibrium (symbolic when the position is)
-    stiffness: sp.Matrix  # K at the equilibrium
-    modes: tuple[Mode, ...]
-    coordinates: tuple[str, ...]  # the coordinates the modes are written in
-    momenta: dict[str, float] = field(default_factory=dict)  # conserved momenta held fixed (reduction)
-    linear: Linear | None = None  # exponents, frequencies and the gyroscopic verdict
-
-    @property
-    def stable(self) -> bool:
-        """No direction grows exponentially (neutral directions drift, but do not run away)."""
-        return self.kind != UNSTABLE
 
 
 @dataclass(frozen=True)
@@ -115,34 +94,11 @@ class NormalModes:
     unclassified_exact: tuple[dict[str, sp.Expr] | None, ...] = ()  # the closed forms of ``unclassified`` (π)
 
 
-def defaults(d: Derivation) -> dict[sp.Symbol, float]:
-    return {s: float(p.default) for s, p in zip(d.table.params, d.system.parameters, strict=True)}
-
-
-def _numeric(expr: sp.Expr, values: Mapping[sp.Symbol, float]) -> complex:
-    return complex(sp.N(sp.sympify(expr).xreplace(dict(values))))
-
-
-def _array(matrix: sp.Matrix, values: Mapping[sp.Symbol, float]) -> np.ndarray:
-    out = np.array([[_numeric(x, values) for x in row] for row in matrix.tolist()], dtype=complex)
-    if np.any(np.abs(out.imag) > 1e-9 * max(1.0, float(np.abs(out.real).max()))):
-        return np.full(out.shape, np.nan)
-    return out.real
-
-
-def _function(exprs: list, args: list[sp.Symbol]) -> Callable[..., np.ndarray]:
-    # dummify: user names never reach the generated source
-    # (a piecewise-smooth U, with Abs, has Dirac deltas in its Hessian: 0 off the kinks)
-    exprs = [[away_from_kinks(x) for x in row] if isinstance(row, list) else away_from_kinks(row) for row in exprs]
-    f = sp.lambdify(args, exprs, modules=["numpy"], dummify=True)
-    return lambda *x: np.asarray(f(*x), dtype=float)
-
-
 def _time_free(exprs: list[sp.Expr], args: list[sp.Symbol], t: sp.Symbol, k: list[float]) -> bool:
     """The expressions take the same values at several times (sin²ωt + cos²ωt left over counts as free of t)."""
     if not any(sp.sympify(e).has(t) for e in exprs):
         return True
-    f = _function(exprs, [*args, t])
+    f = function(exprs, [*args, t])
     rng = np.random.default_rng(7)
     for _ in range(3):
         x = rng.uniform(-1.3, 1.3, len(args) - len(k))
@@ -157,15 +113,22 @@ def _failed(reason: str) -> NormalModes:
     return NormalModes(sp.Integer(0), (), False, (), (), False, reason, failed=reason)
 
 
-def normal_modes(d: Derivation, momenta: Mapping[str, float] | None = None) -> NormalModes:
+def normal_modes(
+    system: System,
+    mech: Mechanics,
+    eqs: Equations,
+    reduction: Reduction | None,
+    momenta: Mapping[str, float] | None = None,
+) -> NormalModes:
     """Equilibria, their classification and normal modes, with numbers at the default parameters.
 
-    ``momenta`` gives values of the conserved momenta for the reduction's relative
+    From the declared system (its default parameters and nonnegative distances), L's mechanics, its
+    Euler-Lagrange equations and the one-coordinate reduction (for the steady motions).  ``momenta`` gives values of the conserved momenta for the reduction's relative
     equilibria (1 each when not given).  Never raises: a failure is reported in ``failed``.
     """
     try:
         with work_limit(MODES_WORK):
-            return _normal_modes(d, momenta or {})
+            return _normal_modes(system, mech, eqs, reduction, momenta or {})
     except WorkExceeded:
         return _failed(
             "Finding the equilibria needs more work than the engine allows this step, so they are left out; "
@@ -179,8 +142,10 @@ def normal_modes(d: Derivation, momenta: Mapping[str, float] | None = None) -> N
         )
 
 
-def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
-    table, eqs, mech = d.table, d.equations, d.mechanics
+def _normal_modes(
+    system: System, mech: Mechanics, eqs: Equations, reduction: Reduction | None, momenta: Mapping[str, float]
+) -> NormalModes:
+    table = mech.table
     q, t = list(table.q), table.t
     zero_v = dict.fromkeys(table.qd, sp.Integer(0))
     # V = -L(q, q_dot = 0) = U - T0
@@ -196,7 +161,7 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
     M = eqs.mass_matrix.xreplace(zero_v)
     # G = -d f/d q_dot at rest: damping and gyroscopic terms of M q_ddot = f
     G = sp.Matrix([[-sp.diff(f, v) for v in table.qd] for f in eqs.forcing]).xreplace(zero_v)
-    values = defaults(d)
+    values = defaults(system, table)
     k = [values[s] for s in table.params]
     args = [*q, *table.params]
     # explicit t that cancels numerically (sin² + cos² of a rotation) is set to 0; what remains truly depends on t
@@ -206,9 +171,9 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
     timed_lin = not _time_free([*M, *G], args, t, k)
     if not timed_lin:
         M, G = M.xreplace({t: 0}), G.xreplace({t: 0})
-    nonnegative = {i for i, name in enumerate(table.names) if name in d.system.nonnegative}
+    nonnegative = {i for i, name in enumerate(table.names) if name in system.nonnegative}
 
-    points, complete, periodic, families = _equilibria(d, g_exprs, q, t, timed_g, nonnegative, values, k)
+    points, complete, periodic, families = _equilibria(system, table, g_exprs, q, t, timed_g, nonnegative, values, k)
     # K = dg/dq
     J = sp.Matrix([[sp.diff(e, s) for s in q] for e in g_exprs])
     equilibria: list[Equilibrium] = []
@@ -234,7 +199,7 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
                 unclassified_exact.append({s.name: v for s, v in found.items()} if found is not None else None)
                 continue
             at, common_factor = {t: sp.nsimplify(t0)}, True
-        e = _linearized(d, M.xreplace(at), J.xreplace(at), G.xreplace(at), exact, x, values)
+        e = _linearized(system, table, M.xreplace(at), J.xreplace(at), G.xreplace(at), exact, x, values)
         if e is None:
             singular.append(position)
             singular_exact.append({s.name: v for s, v in exact.items()} if exact is not None else None)
@@ -245,10 +210,7 @@ def _normal_modes(d: Derivation, momenta: Mapping[str, float]) -> NormalModes:
             damped = damped or bool(e.linear and e.linear.moving)
             equilibria.append(e)
     if not (timed_g or timed_lin):
-        # (imported here: the steady motions build on this module's Equilibrium and helpers)
-        from app.engine.steady import relative
-
-        equilibria.extend(_without_mirrors(d, relative(d, momenta)))
+        equilibria.extend(_without_mirrors(system, table, relative(system, table, reduction, momenta)))
     note = ""
     if not (equilibria or singular or kinks or unclassified):
         note = (
@@ -315,7 +277,8 @@ def _plain(x: float) -> str:
 
 
 def _equilibria(
-    d: Derivation,
+    system: System,
+    table: SymbolTable,
     g_exprs: list[sp.Expr],
     q: list[sp.Symbol],
     t: sp.Symbol,
@@ -331,15 +294,15 @@ def _equilibria(
     if all(e == 0 for e in g_exprs):
         # nothing ever pushes: every configuration is an equilibrium (shown at q = 0)
         return [({s: sp.Integer(0) for s in q}, np.zeros(len(q)))], True, [False] * len(q), [{}]
-    args = [*q, *d.table.params]
+    args = [*q, *table.params]
     at_zero = [e.xreplace({t: 0}) for e in g_exprs]
     J = [[sp.diff(e, s) for s in q] for e in at_zero]
-    g = _function(at_zero, args)
-    jac = _function(J, args)
+    g = function(at_zero, args)
+    jac = function(J, args)
     found, periodic = roots.search(g, jac, len(q), k, nonnegative, SEARCH_EVALUATIONS)
     if timed:
         # at rest for all t: the condition holds at every one of several instants
-        every = _function(g_exprs, [*args, t])
+        every = function(g_exprs, [*args, t])
         with np.errstate(all="ignore"):
             found = [
                 x
@@ -349,18 +312,18 @@ def _equilibria(
                 )
             ]
         return [(None, x) for x in found], False, periodic, []
-    solutions = modes_exact.solve(g_exprs, q, d)
+    solutions = modes_exact.solve(g_exprs, q, system, table)
     exact_points: list[tuple[dict[sp.Symbol, sp.Expr], np.ndarray]] = []
     for sol in solutions or []:
         exact = {s: sol.get(s, sp.Integer(0)).xreplace({r: 0 for r in q if r not in sol}) for s in q}
         try:
-            xc = np.array([_numeric(exact[s], values) for s in q])
+            xc = np.array([numeric(exact[s], values) for s in q])
         except (TypeError, ValueError):
             continue
         if np.any(np.abs(xc.imag) > 1e-12 * np.maximum(1, np.abs(xc.real))) or not np.all(np.isfinite(xc.real)):
             continue
         x = xc.real
-        if any(x[i] < -1e-12 for i in nonnegative) or not _vanishes(g, jac, x, k):
+        if any(x[i] < -1e-12 for i in nonnegative) or not vanishes(g, jac, x, k):
             continue
         wrapped = roots.wrap(x, periodic)
         if not np.allclose(wrapped, x, rtol=0, atol=1e-12):
@@ -418,27 +381,15 @@ def _on_family(
     """A root of the search lies on a closed-form family of equilibria (a coordinate left free)."""
     point = {**values, **dict(zip(q, (float(v) for v in x), strict=True))}
     try:
-        y = np.array([_numeric(sol[s], point).real if s in sol else float(v) for s, v in zip(q, x, strict=True)])
+        y = np.array([numeric(sol[s], point).real if s in sol else float(v) for s, v in zip(q, x, strict=True)])
     except (TypeError, ValueError):
         return False
     return bool(np.all(np.isfinite(y))) and roots.same_point(x, y, periodic)
 
 
-def _vanishes(g: Callable[..., np.ndarray], jac: Callable[..., np.ndarray], x: np.ndarray, k: list[float]) -> bool:
-    """The equilibrium condition holds at a point (each equation relative to its own row of K there)."""
-    with np.errstate(all="ignore"):
-        r, j = np.asarray(g(*x, *k), dtype=float).ravel(), np.asarray(jac(*x, *k), dtype=float)
-    if not (np.all(np.isfinite(r)) and np.all(np.isfinite(j))):
-        return False
-    j = j.reshape(len(r), -1)
-    rows = np.abs(j).max(axis=1)
-    rows = np.where(rows > 0, rows, max(float(rows.max()), 1.0))
-    size = max(1.0, float(np.abs(x).max())) if len(x) else 1.0
-    return bool(np.all(np.abs(r) <= 1e-9 * rows * size + 1e-300))
-
-
 def _linearized(
-    d: Derivation,
+    system: System,
+    table: SymbolTable,
     M: sp.Matrix,
     J: sp.Matrix,
     G: sp.Matrix,
@@ -447,7 +398,6 @@ def _linearized(
     values: Mapping[sp.Symbol, float],
 ) -> Equilibrium | str | None:
     """The equilibrium with its verdict and modes; None where M is singular, "kink" at a kink of V."""
-    table = d.table
     q = list(table.q)
     symbolic = exact is not None and len(q) <= MAX_SYMBOLIC_SIZE
     at = {s: (exact[s] if exact is not None else sp.Float(float(v))) for s, v in zip(q, x, strict=True)}
@@ -461,7 +411,7 @@ def _linearized(
         # U = |x| at x = 0: the force jumps there, so no quadratic approximation (and no omega) exists
         return "kink"
     G0 = G.xreplace(at)
-    lin = linearize(_array(M0, values), _array(K0, values), _array(G0, values))
+    lin = linearize(array(M0, values), array(K0, values), array(G0, values))
     if lin is None:
         return None
     return Equilibrium(
@@ -470,47 +420,23 @@ def _linearized(
         lin.kind,
         M0,
         K0,
-        _modes(M0, K0, lin, values, symbolic, modes_exact.positive(d)),
+        modes_of(M0, K0, lin, values, symbolic, modes_exact.positive(system, table)),
         tuple(table.names),
         linear=lin,
     )
 
 
-def _modes(
-    M: sp.Matrix,
-    K: sp.Matrix,
-    lin: Linear,
-    values: Mapping[sp.Symbol, float],
-    exact: bool,
-    assume: Mapping[sp.Symbol, sp.Symbol],
-) -> tuple[Mode, ...]:
-    """omega^2 and shapes from the numbers, each matched to a closed form when one is found in time."""
-    closed = modes_exact.eigenvalues(M, K, assume) if exact else []
-    out = []
-    for w, shape in zip(lin.omega_squared, lin.shapes, strict=True):
-        match = None
-        for c in closed:
-            value = _numeric(c, values)
-            if abs(value.imag) <= 1e-9 * max(1.0, abs(value)) and abs(value.real - w) <= 1e-8 * max(1.0, abs(w)):
-                match = c
-                closed.remove(c)
-                break
-        out.append(Mode(float(w), shape, match))
-    return tuple(out)
-
-
-def _without_mirrors(d: Derivation, steady: list[Equilibrium]) -> list[Equilibrium]:
+def _without_mirrors(system: System, table: SymbolTable, steady: list[Equilibrium]) -> list[Equilibrium]:
     """Each steady motion once: r₀ < 0 is left out when r₀ > 0 is listed and every body is at the same place at
     (−r, φ + π) as at (r, φ), φ each cyclic angle (the spherical pendulum's cone at −θ₀ is the cone at θ₀ traced
     from the other side).  Decided on the bodies' positions, so only for systems declared by their particles."""
-    particles = d.system.particles
+    particles = system.particles
     if not particles or not steady:
         return steady
-    table = d.table
     r = table.q[table.names.index(steady[0].coordinates[0])]
     shift = {s: s + sp.pi for s in table.q if s != r}
     flip = {r: -r, **shift}
-    values = defaults(d)
+    values = defaults(system, table)
     rng = np.random.default_rng(11)
     for particle in particles:
         for axis in particle.position:
@@ -518,7 +444,7 @@ def _without_mirrors(d: Derivation, steady: list[Equilibrium]) -> list[Equilibri
             # the same position after the map, at a few random configurations
             for _ in range(3):
                 point = {**values, **{s: float(v) for s, v in zip(table.q, rng.uniform(-1.3, 1.3, len(table.q)), strict=True)}}
-                if abs(_numeric(x.xreplace(flip), point) - _numeric(x, point)) > 1e-9 * max(1.0, abs(_numeric(x, point))):
+                if abs(numeric(x.xreplace(flip), point) - numeric(x, point)) > 1e-9 * max(1.0, abs(numeric(x, point))):
                     return steady
     kept = []
     for e in steady:

@@ -13,20 +13,21 @@ from collections.abc import Mapping
 import sympy as sp
 
 from app.engine.budget import document_memo, memoized, within_budget
-from app.engine.derive import Derivation, positive_names
 from app.engine.forms import roots_compacted, settle
+from app.engine.mechanics import positive_names
+from app.engine.symbols import SymbolTable
 from app.limits import CANCEL_WORK, EIGEN_WORK
 from app.limits import EQUILIBRIA_SOLVE_WORK as SOLVE_WORK
+from app.scenes.types import System
 
 MAX_SOLVE_OPS = 400  # larger conditions go straight to the numeric search
 MAX_EXACT_OPS = 80  # closed forms of omega^2 longer than this are given as numbers only
 
 
-def positive(d: Derivation) -> dict[sp.Symbol, sp.Symbol]:
+def positive(system: System, table: SymbolTable) -> dict[sp.Symbol, sp.Symbol]:
     """Stand-ins carrying the declared signs (positive parameters, nonnegative distances)."""
-    names = positive_names(d.system)
-    table = d.table
-    nonnegative = {p.name for p in d.system.parameters if p.min is not None and p.min == 0}
+    names = positive_names(system)
+    nonnegative = {p.name for p in system.parameters if p.min is not None and p.min == 0}
     out = {s: sp.Symbol(s.name, nonnegative=True) for s in table.params if s.name in nonnegative}
     out.update({s: sp.Symbol(s.name, positive=True) for s in table.params if s.name in names})
     out.update({s: sp.Symbol(s.name, nonnegative=True) for s in table.q if s.name in names})
@@ -42,13 +43,15 @@ def polynomial(g_exprs: list[sp.Expr], q: list[sp.Symbol]) -> bool:
     return True
 
 
-def solve(g_exprs: list[sp.Expr], q: list[sp.Symbol], d: Derivation) -> list[dict[sp.Symbol, sp.Expr]] | None:
+def solve(
+    g_exprs: list[sp.Expr], q: list[sp.Symbol], system: System, table: SymbolTable
+) -> list[dict[sp.Symbol, sp.Expr]] | None:
     """Closed-form equilibria (free coordinates left out), or None if SymPy cannot tell in time."""
     if all(e == 0 for e in g_exprs):
         return [{}]
     if sp.count_ops(g_exprs) > MAX_SOLVE_OPS:
         return None
-    assume = positive(d)
+    assume = positive(system, table)
     back = {v: k for k, v in assume.items()}
     unknowns = [assume.get(s, s) for s in q]
     found = within_budget(

@@ -29,10 +29,10 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from app.engine.budget import pythagoras
 from app.engine.constraints import AXES, ConstraintForce, cartesian_symbols
 from app.engine.derive import Derivation
 from app.engine.parse import parse_expression
+from app.engine.simplify import pythagoras
 
 
 @dataclass(frozen=True)

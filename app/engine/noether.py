@@ -30,10 +30,10 @@ from itertools import combinations
 
 import sympy as sp
 
-from app.engine.budget import is_zero
 from app.engine.lagrange import Equations
 from app.engine.mechanics import Mechanics
 from app.engine.names import unicode
+from app.engine.simplify import is_zero
 from app.engine.textbook import unicode_text
 
 # the most coordinates whose translations and rotations are tried (n + n(n − 1)/2 candidates)

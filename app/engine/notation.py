@@ -20,11 +20,10 @@ from typing import Any, NamedTuple
 import sympy as sp
 
 from app.engine.constraints import ConstraintForce, cartesian_symbols
-from app.engine.derive import Derivation
+from app.engine.derive import Derivation, Transformed
 from app.engine.dimensions import Dims, add_dims, dimension, kind_of_unit, system_dimensions, unit_text
 from app.engine.names import MASS_MATRIX, SUBSCRIPT, latex, prose, unicode
 from app.engine.textbook import unicode_text
-from app.engine.transform import Transformed
 
 # concept -> (what it is, candidate letters as (LaTeX, Unicode), first free one used)
 DERIVED: dict[str, tuple[str, tuple[tuple[str, str], ...]]] = {

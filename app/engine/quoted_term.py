@@ -17,8 +17,9 @@ from collections.abc import Iterable
 
 import sympy as sp
 
-from app.engine.mistake_families import Mistake, spoken
+from app.engine.mistake_families import Mistake
 from app.engine.mistake_pieces import sum_words, swap_sin_cos
+from app.engine.spoken import spoken
 
 # the families whose name quotes one of the answer's terms by its sign
 _SIGN_FAMILIES = frozenset({"term_sign"})

@@ -23,10 +23,11 @@ from functools import partial
 
 import sympy as sp
 
-from app.engine.budget import pythagoras, tidy, within_budget
+from app.engine.budget import within_budget
 from app.engine.conservation import Energetics
 from app.engine.lagrange import Equations
 from app.engine.mechanics import Mechanics
+from app.engine.simplify import pythagoras, tidy
 from app.limits import SOLVE_WORK
 
 

@@ -22,11 +22,12 @@ from app.engine.action_step import KEY as ACTION_KEY
 from app.engine.action_step import action_step
 from app.engine.bodies import BodyMotion
 from app.engine.breaking import broken, broken_row, single
-from app.engine.budget import is_zero, memoized, pythagoras, unbudgeted
+from app.engine.budget import memoized, unbudgeted
 from app.engine.derive import Derivation
 from app.engine.forms import one_denominator, settle, textbook_form, use_names
 from app.engine.names import unicode
 from app.engine.root_forms import power_form, trig_cancelled
+from app.engine.simplify import is_zero, pythagoras
 from app.engine.trees import maybe_of_sympy
 
 # The steps (by key) a reader needs to follow the argument: T and U (where students go wrong most), the

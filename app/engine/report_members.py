@@ -9,13 +9,13 @@ from app.engine.breaking import LIMIT, _group, width
 from app.engine.constraints import ConstraintForce
 from app.engine.constraints import display as constraint_display
 from app.engine.constraints import positive as constraint_positive
-from app.engine.derive import Derivation
+from app.engine.derive import Derivation, Transformed
 from app.engine.forms import gathered
 from app.engine.multipliers import Multipliers, derived_multipliers
 from app.engine.names import latex
 from app.engine.notation import CONSTRAINT
 from app.engine.report import Printer, _common_factor, _mapping_step, _step, display
-from app.engine.transform import Transformed, collected, compact
+from app.engine.transform import collected, compact
 
 
 def _cartesian_printer(m: Multipliers, pr: Printer) -> Printer:
@@ -82,7 +82,7 @@ def constraint_steps(d: Derivation, forces: tuple[ConstraintForce, ...], pr: Pri
         for a in range(k)
     ]
     path, on_path = on_path_equations(m, cp, pr, lam)
-    positive = constraint_positive(d)
+    positive = constraint_positive(d.system, d.table)
     solved = [constraint_display(e, positive) for e in m.solved]
     return [
         _step(

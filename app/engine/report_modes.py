@@ -15,17 +15,19 @@ import sympy as sp
 
 from app.engine import notation
 from app.engine.breaking import PHONE, width
-from app.engine.budget import memoized, pythagoras
+from app.engine.budget import memoized
 from app.engine.damping import damped
 from app.engine.derive import Derivation
 from app.engine.dimensions import add_dims, parse_unit, system_dimensions, unit_latex, unit_text
+from app.engine.equilibrium import MAX_EQUILIBRIA, Equilibrium, Mode, defaults
 from app.engine.forms import whole_denominator
 from app.engine.hamilton import Hamilton
-from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, Equilibrium, Mode, NormalModes, defaults
+from app.engine.modes import NEUTRAL, STABLE, NormalModes
 from app.engine.names import latex
 from app.engine.reduction import Equilibrium as ReducedEquilibrium
 from app.engine.report import Printer, _step, display, plain_name
 from app.engine.root_forms import trig_cancelled
+from app.engine.simplify import pythagoras
 from app.engine.stability import Linear
 from app.engine.textbook import unicode_text
 
@@ -895,7 +897,7 @@ def _damped_rows(e: Equilibrium, pr: Printer, d: Derivation) -> list[str]:
     if found is None:
         return []
     eta, r, w = notation.letter("displacement", d), exponent_letter(d), notation.letter("frequency", d)
-    values = defaults(d)
+    values = defaults(d.system, d.table)
     beta_value = float(sp.N(found.beta.xreplace(values)))
     w0_value = float(sp.N(found.omega0_squared.xreplace(values)))
     if w0_value < 0:
@@ -1130,7 +1132,7 @@ def limits_step(d: Derivation, pr: Printer, limits: tuple[tuple[str, float], ...
     chosen = [(params[name], value) for name, value in limits if name in params]
     if not chosen or not d.equations.closed_form:
         return None
-    values = defaults(d)
+    values = defaults(d.system, d.table)
     moving = {*d.table.q, *d.table.qd, *d.table.qdd, d.table.t}
     rows, data = [], []
     for k, acceleration in enumerate(d.equations.accelerations):

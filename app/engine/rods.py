@@ -14,8 +14,8 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine.budget import is_zero
 from app.engine.derive import Derivation
+from app.engine.simplify import is_zero
 
 MAX_PAIRS = 28  # eight particles and the origin: far more than a drawing needs
 

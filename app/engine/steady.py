@@ -17,49 +17,42 @@ import numpy as np
 import sympy as sp
 
 from app.engine import modes_exact, roots
-from app.engine.derive import Derivation
-from app.engine.modes import (
-    MAX_EQUILIBRIA,
-    SEARCH_EVALUATIONS,
-    Equilibrium,
-    _array,
-    _function,
-    _modes,
-    _numeric,
-    _vanishes,
-    defaults,
-)
+from app.engine.equilibrium import MAX_EQUILIBRIA, Equilibrium, array, defaults, function, modes_of, numeric, vanishes
+from app.engine.reduction import Reduction
 from app.engine.stability import linearize
+from app.engine.symbols import SymbolTable
+from app.limits import SEARCH_EVALUATIONS
+from app.scenes.types import System
 
 
-def relative(d: Derivation, momenta: Mapping[str, float]) -> list[Equilibrium]:
+def relative(
+    system: System, table: SymbolTable, red: Reduction | None, momenta: Mapping[str, float]
+) -> list[Equilibrium]:
     """Relative equilibria of the one-coordinate reduction: U_eff'(r0) = 0 at the given conserved momenta."""
-    red = d.reduction
     if red is None or not red.momenta:
         return []
-    table = d.table
     r = table.q[table.names.index(red.coordinate)]
-    values = defaults(d)
+    values = defaults(system, table)
     values.update({P: float(momenta.get(P.name, 1.0)) for P in red.momenta})
     held = {P.name: values[P] for P in red.momenta}
     dU = red.equilibrium_condition
     if not dU.has(r):
         return []
-    nonnegative = {0} if red.coordinate in d.system.nonnegative else set()
+    nonnegative = {0} if red.coordinate in system.nonnegative else set()
     # the cyclic coordinates may still appear in an unsimplified form (sin² ψ + cos² ψ): any value will do
     others = {s: sp.Integer(0) for s in table.q if s != r}
     values.update(others)
     at_values = sp.sympify(dU).xreplace(dict(values))
-    g = _function([at_values], [r])
-    jac = _function([[sp.diff(at_values, r)]], [r])
+    g = function([at_values], [r])
+    jac = function([[sp.diff(at_values, r)]], [r])
     found, periodic = roots.search(g, jac, 1, [], nonnegative, SEARCH_EVALUATIONS)
     points: list[tuple[sp.Expr | None, float]] = []
     for e in red.equilibria:
-        v = _numeric(e.position, values)
+        v = numeric(e.position, values)
         if abs(v.imag) > 1e-12 * max(1.0, abs(v)) or not math.isfinite(v.real):
             continue
         x = np.array([v.real])
-        if (nonnegative and v.real < -1e-12) or not _vanishes(g, jac, x, []):
+        if (nonnegative and v.real < -1e-12) or not vanishes(g, jac, x, []):
             continue
         if np.allclose(roots.wrap(x, periodic), x, atol=1e-12) and not any(
             roots.same_point(x, np.array([y]), periodic) for _, y in points
@@ -88,7 +81,7 @@ def relative(d: Derivation, momenta: Mapping[str, float]) -> list[Equilibrium]:
             k0 = sp.sympify(k0.xreplace(values)).evalf()
         Mm, Km = sp.Matrix([[m0]]), sp.Matrix([[k0]])
         # the reduced motion has no velocity term (a linear one is a total derivative in one dimension)
-        lin = linearize(_array(Mm, values), _array(Km, values), np.zeros((1, 1)))
+        lin = linearize(array(Mm, values), array(Km, values), np.zeros((1, 1)))
         if lin is None:
             continue
         out.append(
@@ -98,7 +91,7 @@ def relative(d: Derivation, momenta: Mapping[str, float]) -> list[Equilibrium]:
                 lin.kind,
                 Mm,
                 Km,
-                _modes(Mm, Km, lin, values, exact is not None, modes_exact.positive(d)),
+                modes_of(Mm, Km, lin, values, exact is not None, modes_exact.positive(system, table)),
                 (red.coordinate,),
                 held,
                 lin,
@@ -111,12 +104,12 @@ def _snap(condition: sp.Expr, r: sp.Symbol, x0: float) -> sp.Expr | None:
     """0 or +-pi when x0 is within rounding of it and the condition's limit there is 0."""
     for c in (sp.Integer(0), sp.pi, -sp.pi):
         if abs(x0 - float(c)) < 1e-5:
-            value = abs(_numeric(condition, {r: c}))
+            value = abs(numeric(condition, {r: c}))
             if not math.isfinite(value):
                 # 0/0 at c: the values just beside it, against those a step away (continuity)
                 # (a root there shrinks in proportion: a thousandth of the step, a thousandth of the value)
-                near = max(abs(_numeric(condition, {r: c + s * sp.Float(1e-4)})) for s in (1, -1))
-                far = max(abs(_numeric(condition, {r: c + s * sp.Float(0.1)})) for s in (1, -1))
+                near = max(abs(numeric(condition, {r: c + s * sp.Float(1e-4)})) for s in (1, -1))
+                far = max(abs(numeric(condition, {r: c + s * sp.Float(0.1)})) for s in (1, -1))
                 if math.isfinite(far) and near <= 1e-2 * far:
                     return c
             elif value <= 1e-9:
@@ -133,10 +126,10 @@ def _finite(
     taken numerically from both sides with Richardson's extrapolation (no point at r = at is used).
     """
     value = sp.diff(expr, r, 2).xreplace({r: at}) if second else sp.sympify(expr).xreplace({r: at})
-    number = _numeric(value, values)
+    number = numeric(value, values)
     if math.isfinite(number.real) and math.isfinite(number.imag):
         return value
-    f = _function([sp.sympify(expr).xreplace(dict(values))], [r])
+    f = function([sp.sympify(expr).xreplace(dict(values))], [r])
     x0 = float(at)
 
     def estimate(h: float) -> float:

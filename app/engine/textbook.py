@@ -28,8 +28,9 @@ import sympy as sp
 from sympy.printing.latex import LatexPrinter
 from sympy.printing.str import StrPrinter
 
-from app.engine.budget import larger_than, memoized, pythagoras
+from app.engine.budget import memoized
 from app.engine.names import MASS_NAME, tex_greek, unicode
+from app.engine.simplify import larger_than, pythagoras
 
 NODE_BUDGET = 600
 

@@ -1,4 +1,4 @@
-"""A change of generalized coordinates, and the derivation again in the new ones.
+"""A change of generalized coordinates: the declaration written again in the new ones.
 
 A declaration may name new coordinates Q_j = f_j(q, t) (for two bodies on a
 line: the centre of mass X = (m1 x1 + m2 x2)/(m1 + m2) and the separation
@@ -9,10 +9,11 @@ rule,
 
     Q'_j = sum_k Q_k dq_k/dQ_j,
 
-and derives everything again from the new declaration: nothing about the
-result is assumed.  A coordinate that drops out of the new L is then found
-cyclic by the usual test, and the mass matrix in the new coordinates shows the
-inertia each one carries (for the separation, the reduced mass).
+and the derivation (``app.engine.derive``) derives everything again from the new
+declaration: nothing about the result is assumed.  A coordinate that drops out
+of the new L is then found cyclic by the usual test, and the mass matrix in the
+new coordinates shows the inertia each one carries (``inertia``: for the
+separation, the reduced mass).
 """
 
 from __future__ import annotations
@@ -21,37 +22,24 @@ from dataclasses import dataclass, replace
 
 import sympy as sp
 
-from app.engine.budget import is_zero, tidy, within_budget
-from app.engine.derive import Derivation, derive
+from app.engine.budget import within_budget
 from app.engine.errors import DerivationError
 from app.engine.parse import ExpressionError, parse_expression
+from app.engine.simplify import is_zero, tidy
 from app.engine.symbols import SymbolTable
 from app.limits import SOLVE_WORK
 from app.scenes.types import CoordinateChange, Particle, System
 
 
 @dataclass(frozen=True)
-class Transformed:
-    """The derivation in the new coordinates, with the maps between the two sets."""
+class NewCoordinates:
+    """The declaration written in the new coordinates, with the maps between the two sets."""
 
     change: CoordinateChange
     original: SymbolTable
-    definitions: tuple[sp.Expr, ...]
-    inverse: dict[sp.Symbol, sp.Expr]
-    system: System
-    derivation: Derivation
-    inertia: tuple[sp.Expr, ...]
-    decoupled: bool
-    reduced_mass: sp.Expr | None
-
-    def to_original(self, expr: sp.Expr) -> sp.Expr:
-        """Write an expression of the new coordinates and velocities in the old ones."""
-        forward: dict[sp.Symbol, sp.Expr] = {}
-        for Q, Qd, f in zip(self.derivation.table.q, self.derivation.table.qd, self.definitions, strict=True):
-            # Q = f(q, t)  and  Q_dot = d/dt f(q, t)
-            forward[Q] = f
-            forward[Qd] = self.original.dt(f)
-        return expr.xreplace(forward)
+    definitions: tuple[sp.Expr, ...]  # Q_j = f_j(q, t)
+    inverse: dict[sp.Symbol, sp.Expr]  # q = q(Q, t)
+    system: System  # the declaration in the new coordinates
 
 
 def _text(expr: sp.Expr, names: dict[str, sp.Symbol]) -> str:
@@ -78,8 +66,8 @@ def compact(expr: sp.Expr) -> sp.Expr:
     return min((tidy(expr), factored), key=sp.count_ops)
 
 
-def transform(system: System) -> Transformed | None:
-    """Derive the system again in its declared new coordinates (None when it declares none)."""
+def new_coordinates(system: System) -> NewCoordinates | None:
+    """The system declared again in its declared new coordinates (None when it declares none)."""
     change = system.coordinate_change
     if change is None:
         return None
@@ -155,14 +143,19 @@ def transform(system: System) -> Transformed | None:
         nonnegative=(),
         coordinate_change=None,
     )
-    d = derive(moved_system)
-    M = d.equations.mass_matrix
-    inertia = tuple(tidy(M[i, i]) for i in range(M.shape[0]))
+    return NewCoordinates(change, old, defs, inverse, moved_system)
+
+
+def inertia(change: CoordinateChange, M: sp.Matrix) -> tuple[tuple[sp.Expr, ...], bool, sp.Expr | None]:
+    """The inertia each new coordinate carries (the diagonal of the mass matrix M in the new coordinates),
+    whether M is diagonal (the new coordinates decoupled in T), and the relative coordinate's inertia, the
+    reduced mass, when it is declared and decoupled."""
+    diagonal = tuple(tidy(M[i, i]) for i in range(M.shape[0]))
     decoupled = all(is_zero(M[i, j]) for i in range(M.shape[0]) for j in range(M.shape[1]) if i != j)
     reduced = None
     if change.relative is not None:
         if change.relative not in change.coordinates:
             raise DerivationError(f"'relative' names {change.relative!r}, which is not a new coordinate")
         if decoupled:
-            reduced = inertia[change.coordinates.index(change.relative)]
-    return Transformed(change, old, defs, inverse, moved_system, d, inertia, decoupled, reduced)
+            reduced = diagonal[change.coordinates.index(change.relative)]
+    return diagonal, decoupled, reduced

@@ -7,7 +7,7 @@ import time
 import pytest
 import sympy as sp
 
-from app.engine import budget
+from app.engine import budget, simplify
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
@@ -19,7 +19,7 @@ def slow_simplify(monkeypatch):
     """sympy.simplify as the budget calls it: SymPy work for up to 2 s (far more than the bounds below allow,
     so the bound ends it), counting its calls."""
     calls = []
-    budget.tidy((x + 3) ** 2 / (x + y))  # first calls load code (SymPy's units, the cheap step's): not in the budgets
+    simplify.tidy((x + 3) ** 2 / (x + y))  # first calls load code (SymPy's units, the cheap step's): not in the budgets
 
     def slow(expr, *args, **kwargs):
         calls.append(expr)
@@ -28,25 +28,25 @@ def slow_simplify(monkeypatch):
             sp.expand((x + y) ** 3)
         return expr
 
-    monkeypatch.setattr(budget.sp, "simplify", slow)
-    monkeypatch.setattr(budget, "_TIDY_CACHE", {})
+    monkeypatch.setattr(simplify.sp, "simplify", slow)
+    monkeypatch.setattr(simplify, "_TIDY_CACHE", {})
     return calls
 
 
 def test_a_simplification_out_of_its_own_time_is_not_tried_again(slow_simplify):
     expr = (x + 1) ** 2 / (x + y)
-    first = budget.tidy(expr, units=2_000)
+    first = simplify.tidy(expr, units=2_000)
     assert len(slow_simplify) == 1
-    assert budget.tidy(expr, units=2_000) == first
+    assert simplify.tidy(expr, units=2_000) == first
     assert len(slow_simplify) == 1  # remembered: the same attempt would run out again
 
 
 def test_one_cut_short_by_a_shared_budget_is_tried_again_later(slow_simplify):
     expr = (x + 2) ** 2 / (x - y)
     with budget.display_budget(2_000):  # less than the expression's own 4,000 units: the shared budget cut it
-        budget.tidy(expr, units=4_000)
+        simplify.tidy(expr, units=4_000)
     assert len(slow_simplify) == 1
-    budget.tidy(expr, units=4_000)
+    simplify.tidy(expr, units=4_000)
     assert len(slow_simplify) == 2
 
 
@@ -88,17 +88,17 @@ def _random_products(count: int) -> list[sp.Expr]:
 
 def test_a_product_with_one_function_is_not_simplified_and_simplify_would_not_change_it(monkeypatch):
     products = _random_products(120)
-    assert all(budget._product(e) for e in products)
+    assert all(simplify._product(e) for e in products)
     # what the shortcut leaves out: simplify would have returned each one as it is
     assert [e for e in products if sp.simplify(e) != e] == []
     calls = []
-    monkeypatch.setattr(budget, "_TIDY_CACHE", {})
-    monkeypatch.setattr(budget.sp, "simplify", lambda e, *a, **k: calls.append(e) or e)
-    assert [budget.tidy(e) for e in products] == products and calls == []
+    monkeypatch.setattr(simplify, "_TIDY_CACHE", {})
+    monkeypatch.setattr(simplify.sp, "simplify", lambda e, *a, **k: calls.append(e) or e)
+    assert [simplify.tidy(e) for e in products] == products and calls == []
     # a sum, two functions or a root still go to simplify
     for expr in (x + y, sp.sin(x) * sp.cos(x), sp.sqrt(x**2 * y)):
-        assert not budget._product(expr)
-        budget.tidy(expr)
+        assert not simplify._product(expr)
+        simplify.tidy(expr)
     assert len(calls) == 3
 
 

@@ -12,7 +12,7 @@ from app.engine.check import STEPS, CheckError, check_answer, exercises, judge, 
 from app.engine.derive import Derivation, derive
 from app.engine.dimensions import dimension, system_dimensions
 from app.engine.exercises import exercise_json
-from app.engine.mistake_families import spoken, sum_words
+from app.engine.mistake_families import sum_words
 from app.engine.mistakes import (
     CONSTANT_FACTOR_HINT,
     MISSING_FACTOR_HINT,
@@ -24,6 +24,7 @@ from app.engine.mistakes import (
 )
 from app.engine.notation import MASS_INERTIA, Inertia
 from app.engine.parse import parse_expression
+from app.engine.spoken import spoken
 from app.scenes import SCENES
 from app.scenes.types import Parameter, System
 from tests.engine.check_corpus import CORPUS, TYPICAL, USER_SYSTEMS
@@ -390,7 +391,7 @@ def test_the_double_pendulums_missing_velocity_squared_term_is_the_whole_differe
 
 
 def test_names_of_pieces_read_as_mathematics_not_code():
-    from app.engine.mistake_families import spoken
+    from app.engine.spoken import spoken
 
     names = {**derivation("double-pendulum").table.namespace()}
     expr = parse_expression(

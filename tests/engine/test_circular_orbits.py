@@ -52,7 +52,8 @@ def test_the_hand_roots_are_the_issues():
 
 @pytest.fixture(scope="module")
 def orbits():
-    nm = normal_modes(derive(YUKAWA), {"p_phi": P})
+    d = derive(YUKAWA)
+    nm = normal_modes(d.system, d.mechanics, d.equations, d.reduction, {"p_phi": P})
     return sorted((e for e in nm.equilibria if e.momenta), key=lambda e: e.position["r"])
 
 

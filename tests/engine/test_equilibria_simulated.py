@@ -13,7 +13,8 @@ from functools import cache
 import numpy as np
 import pytest
 
-from app.engine.modes import NEUTRAL, STABLE, UNSTABLE, defaults
+from app.engine.equilibrium import defaults
+from app.engine.modes import NEUTRAL, STABLE, UNSTABLE
 from app.numerics.simulate import simulate
 from app.numerics.system import numeric_system
 from tests.engine.test_equilibria_unseen import LISTED, derived, modes, state
@@ -49,7 +50,7 @@ def test_verdicts_agree_with_simulations(name, index):
     else:
         growth = max(s.real for s in lin.exponents)
         t_end = min(30 / growth, 2000.0)
-    k = np.array([defaults(d)[s] for s in table.params])
+    k = np.array([defaults(d.system, d.table)[s] for s in table.params])
     out = simulate(numeric(name), k, y0, t_end, 4000, "DOP853", rtol=1e-11, atol=1e-14, estimate=False)
     deviation = np.abs(out.trajectory.y[:, watched] - q[watched]).max()
     if e.kind == STABLE:

@@ -121,7 +121,7 @@ def test_a_bead_on_a_turning_hoop_sits_at_acos_without_trigonometry_of_atan():
         potential="-m*g*R*cos(theta)",
     )
     d = derive(system)
-    nm = normal_modes(d)
+    nm = normal_modes(d.system, d.mechanics, d.equations, d.reduction)
     assert not nm.failed
     m, g, R, w = (sp.Symbol(n, real=True) for n in ("m", "g", "R", "w"))
     tilted = [e for e in nm.equilibria if abs(e.position["theta"]) not in (0.0, pytest.approx(3.141592653589793))]

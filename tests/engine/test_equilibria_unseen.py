@@ -19,7 +19,8 @@ import sympy as sp
 
 from app.engine.contract import derivation_json
 from app.engine.derive import derive
-from app.engine.modes import MAX_EQUILIBRIA, NEUTRAL, STABLE, UNSTABLE, defaults, normal_modes
+from app.engine.equilibrium import MAX_EQUILIBRIA, defaults
+from app.engine.modes import NEUTRAL, STABLE, UNSTABLE, normal_modes
 from app.engine.report_modes import normal_mode_steps
 from tests.cases import case_list
 from tests.engine import equilibria_systems
@@ -37,7 +38,8 @@ def derived(name):
 
 @cache
 def modes(name):
-    return normal_modes(derived(name))
+    d = derived(name)
+    return normal_modes(d.system, d.mechanics, d.equations, d.reduction)
 
 
 def rest(name):
@@ -375,7 +377,7 @@ def accelerations(name):
     d = derived(name)
     table = d.table
     f = sp.lambdify([*table.q, *table.qd, *table.params, table.t], list(d.equations.accelerations), modules="numpy")
-    return lambda q, v, t: np.array(f(*q, *v, *[defaults(d)[s] for s in table.params], t), dtype=float)
+    return lambda q, v, t: np.array(f(*q, *v, *[defaults(d.system, d.table)[s] for s in table.params], t), dtype=float)
 
 
 def state(name, e):
@@ -387,7 +389,7 @@ def state(name, e):
     for i, n in enumerate(table.names):
         q[i] = e.position.get(n, 0.0)
     if e.momenta:
-        at = {**defaults(d), **{sp.Symbol(p, real=True): x for p, x in e.momenta.items()}}
+        at = {**defaults(d.system, d.table), **{sp.Symbol(p, real=True): x for p, x in e.momenta.items()}}
         at.update(dict(zip(table.q, q, strict=True)))
         for velocity, expr in d.reduction.cyclic_velocities.items():
             v[table.qd.index(velocity)] = float(sp.sympify(expr).xreplace(at))
@@ -413,7 +415,7 @@ def test_every_listed_equilibrium_satisfies_the_equations_at_all_times(name, ind
         d = derived(name)
         red = d.reduction
         r = d.table.q[d.table.names.index(red.coordinate)]
-        at = {**defaults(d), **{sp.Symbol(p, real=True): x for p, x in found[index].momenta.items()}}
+        at = {**defaults(d.system, d.table), **{sp.Symbol(p, real=True): x for p, x in found[index].momenta.items()}}
         at.update({s: 0.3 for s in d.table.q if s != r})
         du = sp.lambdify(r, sp.sympify(red.equilibrium_condition).xreplace(at))
         x0 = found[index].position[red.coordinate]
@@ -430,11 +432,11 @@ def test_gyroscopic_modes_are_complex_and_solve_the_full_linearization():
     for name in ("penning-trap", "rotating-frame-oscillator", "restricted-three-body"):
         for e in modes(name).equilibria:
             d = derived(name)
-            M = np.array(e.mass.xreplace(defaults(d)).evalf().tolist(), dtype=float)
-            K = np.array(e.stiffness.xreplace(defaults(d)).evalf().tolist(), dtype=float)
+            M = np.array(e.mass.xreplace(defaults(d.system, d.table)).evalf().tolist(), dtype=float)
+            K = np.array(e.stiffness.xreplace(defaults(d.system, d.table)).evalf().tolist(), dtype=float)
             # G from the equations of motion written out independently: M q'' = f, G = -df/dq_dot at rest
             zero = dict.fromkeys(d.table.qd, 0)
-            at = {**defaults(d), **dict(zip(d.table.q, e.position.values(), strict=True))}
+            at = {**defaults(d.system, d.table), **dict(zip(d.table.q, e.position.values(), strict=True))}
             G = np.array(
                 [[float(-sp.diff(f, v).xreplace(zero).xreplace(at)) for v in d.table.qd] for f in d.equations.forcing]
             )

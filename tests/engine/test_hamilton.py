@@ -21,7 +21,7 @@ SYSTEMS = {**{f"scene:{k}": s.system for k, s in SCENES.items()}, **TEST_SYSTEMS
 @cache
 def derived(name):
     d = derive(SYSTEMS[name])
-    return d, hamilton(d)
+    return d, hamilton(d.mechanics, d.equations)
 
 
 def state_symbols(d, ham):

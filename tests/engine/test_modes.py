@@ -10,7 +10,8 @@ import sympy.physics.mechanics as me
 
 from app.engine.contract import held_momenta
 from app.engine.derive import derive
-from app.engine.modes import NEUTRAL, STABLE, UNSTABLE, defaults, normal_modes
+from app.engine.equilibrium import defaults
+from app.engine.modes import NEUTRAL, STABLE, UNSTABLE, normal_modes
 from app.numerics.simulate import simulate
 from app.numerics.system import numeric_system
 from app.scenes import SCENES
@@ -33,7 +34,7 @@ def derived(name):
 def modes(name):
     d = derived(name)
     scene = SCENES.get(name.removeprefix("scene:")) if name.startswith("scene:") else None
-    return normal_modes(d, held_momenta(d, scene))
+    return normal_modes(d.system, d.mechanics, d.equations, d.reduction, held_momenta(d, scene))
 
 
 @cache
@@ -98,7 +99,7 @@ def test_every_system_with_a_fixed_point_has_one():
 def test_mass_stiffness_and_frequencies_match_the_linearizer(name, index):
     d = derived(name)
     e = modes(name).equilibria[index]
-    values = defaults(d)
+    values = defaults(d.system, d.table)
     M_ref, K_ref = reference_matrices(name, e.position)
     M, K = numbers(e.mass, values), numbers(e.stiffness, values)
     assert np.allclose(M, numbers(M_ref, values), rtol=1e-9, atol=1e-12), (M, M_ref)
@@ -212,7 +213,7 @@ def test_small_amplitude_runs_oscillate_at_the_predicted_frequency(name, index, 
     e = modes(name).equilibria[index]
     m = e.modes[mode]
     table = d.table
-    values = defaults(d)
+    values = defaults(d.system, d.table)
     k = np.array([values[s] for s in table.params])
     n = len(table.names)
     y0 = np.zeros(2 * n)

@@ -42,7 +42,8 @@ def test_by_hand_agrees_with_lagranges_method():
 
 
 def test_caldirola_kanai_has_constant_exponents_after_dividing_by_its_factor():
-    nm = normal_modes(derive(CALDIROLA_KANAI))
+    d = derive(CALDIROLA_KANAI)
+    nm = normal_modes(d.system, d.mechanics, d.equations, d.reduction)
     assert not nm.unclassified
     [e] = nm.equilibria
     assert e.position["x"] == pytest.approx(0.0, abs=1e-12)
@@ -68,6 +69,7 @@ def test_the_verdict_agrees_with_a_simulation():
 
 
 def test_a_factor_that_is_not_common_leaves_no_frequencies():
-    nm = normal_modes(derive(STIFFENING))
+    d = derive(STIFFENING)
+    nm = normal_modes(d.system, d.mechanics, d.equations, d.reduction)
     assert not nm.equilibria and [p["x"] for p in nm.unclassified] == [pytest.approx(0.0, abs=1e-12)]
     assert not nm.common_factor

@@ -4,7 +4,7 @@ import numpy as np
 import sympy as sp
 
 from app.engine import roots
-from app.engine.modes import _function
+from app.engine.equilibrium import function
 
 q, k = sp.symbols("q k")
 
@@ -14,7 +14,7 @@ def _pointwise(g, grid):
 
 
 def _scalar(expr):
-    f = _function([expr], [q, k])
+    f = function([expr], [q, k])
     return lambda x: np.asarray(f(*x, 2.0), dtype=float).ravel()
 
 

@@ -8,20 +8,10 @@ import time
 import pytest
 import sympy as sp
 
-from app.engine.budget import (
-    PYTHAGORAS_MAX_NODES,
-    OutOfTime,
-    Skipped,
-    bounded,
-    clock_limit,
-    is_zero,
-    larger_than,
-    nonzero_somewhere,
-    pythagoras,
-    work_limit,
-)
+from app.engine.budget import OutOfTime, Skipped, bounded, clock_limit, work_limit
 from app.engine.contract import derivation_json
 from app.engine.derive import derive
+from app.engine.simplify import PYTHAGORAS_MAX_NODES, is_zero, larger_than, nonzero_somewhere, pythagoras
 from app.scenes.types import Parameter, Particle, System
 
 

@@ -3,9 +3,8 @@
 import pytest
 import sympy as sp
 
-from app.engine.derive import derive
+from app.engine.derive import derive, transform
 from app.engine.errors import DerivationError
-from app.engine.transform import transform
 from app.scenes.types import CoordinateChange, Parameter, Particle, System
 from tests.reference import numerically_equal
 

@@ -8,7 +8,7 @@ from functools import cache
 import sympy as sp
 
 from app.engine.constraints import ConstraintForce, constraint_forces
-from app.engine.transform import Transformed, transform
+from app.engine.derive import Transformed, transform
 from app.scenes import SCENES
 from app.service.derivations import derivation
 
@@ -22,7 +22,8 @@ def S(name: str) -> sp.Symbol:
 
 @cache
 def forces(scene_id: str) -> tuple[ConstraintForce, ...]:
-    return constraint_forces(derivation(scene_id))
+    d = derivation(scene_id)
+    return constraint_forces(d.system, d.mechanics, d.equations)
 
 
 @cache

@@ -21,8 +21,8 @@ def test_the_pickled_derivation_carries_the_members_its_document_printed(tmp_pat
     def never(*args):
         raise AssertionError("a member computed again after loading")
 
-    monkeypatch.setattr("app.engine.constraints.constraint_forces", never)
-    monkeypatch.setattr("app.engine.hamilton.hamilton", never)
+    monkeypatch.setattr("app.engine.derive.constraint_forces", never)
+    monkeypatch.setattr("app.engine.derive.hamilton", never)
     again = Scenes(tmp_path).derived("pulley")  # a hit: from the disk
     forces = again.constraint_forces
     assert isinstance(forces, tuple) and all(isinstance(f, ConstraintForce) for f in forces) and forces
