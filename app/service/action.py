@@ -254,19 +254,8 @@ def _of_scene(
     return compute(d, key=scene_id, defaults=s.initial, span=s.t_end, gates=gates, compiled=chapter.compiled, **options)
 
 
-def _of_user(compute: Callable[..., dict[str, Any]], user: Any, options: dict[str, Any]) -> bytes:
-    from app.service.user_jobs import derived_job
-
-    return derived_job(user, compute, options)
-
-
 def relax_of_scene(scene_id: str, gates: Gates, chapter: Scenes, **options: Any) -> dict[str, Any]:
     return _of_scene(relax_of_derivation, scene_id, gates, options, chapter)
-
-
-def relax_job(user: Any, options: dict[str, Any]) -> bytes:
-    """Worker job: the relaxed path of a user system."""
-    return _of_user(relax_of_derivation, user, options)
 
 
 def action_of_scene(scene_id: str, gates: Gates, chapter: Scenes, **options: Any) -> dict[str, Any]:
@@ -283,8 +272,3 @@ def cached_action_of_scene(
     for the same T)."""
     key = json.dumps([scene_id, options], sort_keys=True, default=str)
     return remembered.get(key, lambda: action_of_scene(scene_id, gates, chapter, **options))
-
-
-def action_job(user: Any, options: dict[str, Any]) -> bytes:
-    """Worker job: the action of a user system (parameter values from its declaration unless given)."""
-    return _of_user(action_of_derivation, user, options)

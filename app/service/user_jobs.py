@@ -202,6 +202,21 @@ def derived_job(user: UserSystem, compute: Callable[..., dict[str, Any]], option
     return guarded(run)
 
 
+def action_job(user: UserSystem, options: dict[str, Any]) -> bytes:
+    """Worker job: the action of a user system (app.service.action; parameter values from its declaration
+    unless given)."""
+    from app.service.action import action_of_derivation
+
+    return derived_job(user, action_of_derivation, options)
+
+
+def relax_job(user: UserSystem, options: dict[str, Any]) -> bytes:
+    """Worker job: the relaxed path of a user system (app.service.action)."""
+    from app.service.action import relax_of_derivation
+
+    return derived_job(user, relax_of_derivation, options)
+
+
 def poincare_job(user: UserSystem, options: dict[str, Any]) -> bytes:
     """Worker job: the Poincaré section of a user system (app.service.poincare)."""
     from app.service.poincare import section_of_derivation

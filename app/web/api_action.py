@@ -12,7 +12,7 @@ from typing import Annotated, Any
 from fastapi import APIRouter, Body
 from fastapi.responses import Response
 
-from app.service import action
+from app.service import action, user_jobs
 from app.service.user_checks import checked
 from app.web.api_simulate import scene_route
 from app.web.api_user import answer, system_route
@@ -66,7 +66,7 @@ async def user_action(client: ClientDep, users: UserSystemsDep, body: Annotated[
     spec, options = body.system.to_spec(), action_options(body)
     return await answer(
         client,
-        lambda key, address: users.simulation_job("action", action.action_job, checked(spec), options, key, address),
+        lambda key, address: users.simulation_job("action", user_jobs.action_job, checked(spec), options, key, address),
     )
 
 
@@ -99,5 +99,5 @@ async def user_relax(client: ClientDep, users: UserSystemsDep, body: Annotated[U
     spec, options = body.system.to_spec(), relax_options(body)
     return await answer(
         client,
-        lambda key, address: users.simulation_job("relax", action.relax_job, checked(spec), options, key, address),
+        lambda key, address: users.simulation_job("relax", user_jobs.relax_job, checked(spec), options, key, address),
     )

@@ -4,7 +4,7 @@ import json
 
 import pytest
 
-from app.service import action, simulation
+from app.service import action, simulation, user_jobs
 from app.service.cache import Recent
 from app.service.derivations import PROCESS_SCENES
 from app.service.user_checks import InvalidSystem, checked
@@ -37,14 +37,14 @@ def test_scene_answers_are_kept_per_request():
 
 def test_the_job_answers_for_a_user_system_and_locates_refusals():
     user = checked(OSCILLATOR)
-    answer = json.loads(action.action_job(user, {"t_end": 2.0, "initial": {"x": 0.3}, "epsilons": []}))
+    answer = json.loads(user_jobs.action_job(user, {"t_end": 2.0, "initial": {"x": 0.3}, "epsilons": []}))
     assert answer["kind"] == "saddle" and answer["conjugate_time"] == pytest.approx(3.141592653589793 / 2, rel=1e-8)
     with pytest.raises(InvalidSystem) as refused:
-        action.action_job(user, {"t_end": 1.0, "epsilons": [0.0] * (action.EPSILONS_MAX + 1)})
+        user_jobs.action_job(user, {"t_end": 1.0, "epsilons": [0.0] * (action.EPSILONS_MAX + 1)})
     assert f"at most {action.EPSILONS_MAX}" in str(refused.value) and refused.value.loc == ("epsilons",)
 
 
 def test_relax_job_for_a_user_system():
     user = checked(OSCILLATOR)
-    answer = json.loads(action.relax_job(user, {"t_end": 0.5, "start": {"x": 0.0}, "end": {"x": 0.2}, "steps": 50}))
+    answer = json.loads(user_jobs.relax_job(user, {"t_end": 0.5, "start": {"x": 0.0}, "end": {"x": 0.2}, "steps": 50}))
     assert answer["kind"] == "minimum" and answer["difference"] < 1e-6
