@@ -43,8 +43,9 @@ class Recent:
 
 _MISSING = object()
 
-# the ``app`` package whose sources fingerprint a cache (beside site-packages once installed)
-APP_SOURCE = Path(__file__).resolve().parents[1]
+# the ``app`` package whose sources fingerprint a cache (beside site-packages once installed): the nearest
+# folder named app above this file, wherever in the service this module sits
+APP_SOURCE = next(folder for folder in Path(__file__).resolve().parents if folder.name == "app")
 
 
 def cache_dir() -> Path:
