@@ -80,6 +80,19 @@ def bounds(system: NumericSystem, y0: np.ndarray) -> np.ndarray:
     return bound
 
 
+def sample_times(t_end: float, samples: int) -> np.ndarray:
+    """The samples' times, t_i = i h with h = t_end / (samples - 1), the last exactly t_end: the numbers
+    ``np.linspace(0, t_end, samples)`` gives (its own steps, in its order), without its general
+    function's work, which took 30-80 us of a default simulation right after other work."""
+    step = t_end / (samples - 1) if samples > 1 else 0.0
+    if not step > 0.0:
+        return np.linspace(0.0, t_end, samples)  # no step (one sample), or t_end at or below zero
+    t = np.arange(samples, dtype=np.float64)
+    t *= step
+    t[-1] = t_end
+    return t
+
+
 def simulate(
     system: NumericSystem,
     k: np.ndarray,
@@ -127,7 +140,7 @@ def run(
     if elsewhere is not None and plan.python_loop and plan.path != "scipy-fallback":
         return elsewhere(plan, wall_seconds)
     system, k, y0 = plan.system, plan.k, plan.y0
-    t = np.linspace(0.0, plan.t_end, plan.samples)
+    t = sample_times(plan.t_end, plan.samples)
     atol_vector = np.full(y0.size, plan.atol)
     name, reason, chosen, path, analysis = plan.name, plan.reason, plan.method, plan.path, plan.analysis
     estimate = plan.reference is not None
