@@ -146,8 +146,9 @@ def eigenvalues(J: np.ndarray) -> list[complex]:
 
 
 def analyse(
-    system: NumericSystem, k: np.ndarray, y0: np.ndarray, t_end: float, rtol: float, atol: np.ndarray
+    system: NumericSystem, k: np.ndarray, y0: np.ndarray, t_end: float, rtol: float, atol: np.ndarray | float
 ) -> Analysis:
+    """The linearisation's facts at the start (see the module's note); ``atol`` per component, or one number for all."""
     try:
         J = jacobian(system, 0.0, y0, k)
         F = system.f(0.0, y0, k)

@@ -73,9 +73,7 @@ class Plan:
             f"{self.reason}; but {self.name} detected stiffness at t = {t:.4g} s (step size held at its "
             f"stability limit), so the run was redone with the implicit {stiff.name} method"
         )
-        reference = (
-            METHODS[reference_name(stiff=True, compiled=stiff.compiled)] if self.reference is not None else None
-        )
+        reference = METHODS[reference_name(stiff=True, compiled=stiff.compiled)] if self.reference is not None else None
         # the path says what ran: scipy's Radau steps in Python, never "compiled"
         path = "compiled" if stiff.compiled else "scipy"
         return replace(self, method=stiff, reason=reason, reference=reference, stiff=True, path=path)
@@ -125,7 +123,7 @@ def plan(
     ``ready(method, system)``: whether that code is ready (by default the method's own ``ready``, what this
     process has compiled; a server's gates may give another, app/service/gates.py)."""
     is_ready = ready or (lambda m, s: m.ready(s))
-    analysis = analyse(system, k, y0, t_end, rtol, np.full(y0.size, atol))
+    analysis = analyse(system, k, y0, t_end, rtol, atol)  # one atol for every component
     if requested == AUTO:
         name, reason = choose(system, analysis)
     else:
