@@ -12,7 +12,7 @@ from numba.core.types.function_type import WrapperAddressProtocol
 from numba.experimental.function_type import _get_wrapper_address
 from numba.extending import typeof_impl
 
-from app.numerics.kernels.common import F64, JIT, RHS, VEC, address
+from app.numerics.kernels.common import F64, I64, JIT, VEC, address, rhs_at
 
 
 class Bound(WrapperAddressProtocol):
@@ -35,13 +35,13 @@ class Bound(WrapperAddressProtocol):
         took 40-70 us right after other work (the ctypes objects of three addresses and the checks
         in Python), the trampoline 10-20 us, for the same machine code and the same numbers."""
         try:
-            _call(self, float(t), y, k, out)
+            _call(self.address, float(t), y, k, out)
         except TypeError:
             for a in (y, k, out):
                 if not (isinstance(a, np.ndarray) and a.dtype == np.float64 and a.flags.c_contiguous):
                     raise TypeError("a compiled generated function takes contiguous float64 arrays") from None
             # read-only arguments, which the trampoline's signature does not take: their copies
-            _call(self, float(t), y.copy(), k.copy(), out)
+            _call(self.address, float(t), y.copy(), k.copy(), out)
 
     def __wrapper_address__(self) -> int:
         return self.address
@@ -50,9 +50,10 @@ class Bound(WrapperAddressProtocol):
         return self.sig
 
 
-@njit(types.void(RHS, F64, VEC, VEC, VEC), **JIT)
-def _call(f, t, y, k, out):
-    f(t, address(y), address(k), address(out))
+@njit(types.void(I64, F64, VEC, VEC, VEC), **JIT)
+def _call(at, t, y, k, out):
+    # the function by its address, an integer (see kernels.common.rhs_at)
+    rhs_at(at)(t, address(y), address(k), address(out))
 
 
 @typeof_impl.register(Bound)

@@ -1,13 +1,17 @@
-"""The default path's shortcuts around the kernel give numpy's own numbers: the samples' times and the
-spectrum of the start."""
+"""The default path's shortcuts around the kernel give the general path's numbers: the samples' times and
+the spectrum of the start as numpy computes them, the kernel called with its right-hand side's address
+as with the right-hand side itself."""
 
+import importlib
 import math
 
 import numpy as np
 import pytest
 
 from app.numerics.choose import eigenvalues
+from app.numerics.kernels.common import DONE, RUNNING
 from app.numerics.simulate import sample_times
+from tests.numerics.extreme_cases import system_for
 
 
 @pytest.mark.parametrize("t_end", [329.5939, 50.0, 1e5, 1e-3, 1.0 / 3.0, 7.123456789])
@@ -41,3 +45,33 @@ def test_eigenvalues_refuse_what_numpy_refuses(bad):
         np.linalg.eigvals(J)
     with pytest.raises(np.linalg.LinAlgError):
         eigenvalues(J)
+
+
+@pytest.mark.parametrize("kernel_name", ["vern8", "dop853"])
+@pytest.mark.parametrize(
+    ("key", "k", "y0", "t_end", "samples"),
+    [
+        ("simple-pendulum", [1.0, 9.81, 1.0], [2.5, 0.0], 30.0, 2),
+        ("simple-pendulum", [1.0, 9.81, 1.0], [3.1, 0.0], 20.0, 1001),
+        ("double-pendulum", [1.0, 1.0, 1.0, 1.0, 9.81], [1.0, 0.0, 0.0, 0.0], 20.0, 777),
+    ],
+)
+def test_the_kernel_by_address_is_the_kernel_by_bound(kernel_name, key, k, y0, t_end, samples):
+    """``run_at`` (the right-hand side by its address, what the default path calls) fills the same samples
+    and ends in the same state, bit for bit, as ``run`` with the ``Bound`` itself, chunk after chunk."""
+    kernel = importlib.import_module(f"app.numerics.kernels.{kernel_name}")
+    system = system_for(key)
+    rhs = system.bound("rhs")
+    k, y0 = np.array(k), np.array(y0)
+    t = np.linspace(0.0, t_end, samples)
+    atol, bound = np.full(y0.size, 1e-10), np.full(y0.size, 1e8)
+
+    def chunks(call):
+        y, fy, st, Y = y0.copy(), np.empty(y0.size), np.zeros(kernel.STATE_SIZE), np.full((samples, y0.size), np.nan)
+        statuses = [call(k, t, 1e-8, atol, bound, 1, 40, y, fy, st, Y) for _ in range(200)]
+        return Y.tobytes(), y.tobytes(), st.tobytes(), statuses
+
+    general = chunks(lambda *args: kernel.run(rhs, *args))
+    fast = chunks(lambda *args: kernel.run_at(rhs.address, *args))
+    assert general[3].count(RUNNING) >= 3 and general[3][-1] == DONE
+    assert fast == general

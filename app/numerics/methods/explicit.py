@@ -33,7 +33,7 @@ class CompiledExplicit(Method):
             self,
             problem,
             kernel,
-            lambda chunk: kernel.run(rhs, *args, chunk, y, fy, st, Y),
+            lambda chunk: kernel.run_at(rhs.address, *args, chunk, y, fy, st, Y),  # run, f by its address
             (st, Y, y),
             stiff_detected=kernel.STIFF_SEEN,
         )
