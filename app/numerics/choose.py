@@ -52,12 +52,16 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
-from numpy.linalg import _umath_linalg
 
 from app import late
 from app.numerics import limits
 from app.numerics.methods import NONSTIFF, STIFF, symplectic_for
 from app.numerics.system import NumericSystem
+
+try:  # numpy's own eigenvalue ufunc, private: without it, its public wrapper (see ``eigenvalues``)
+    from numpy.linalg import _umath_linalg
+except ImportError:  # pragma: no cover - a numpy that moved it
+    _umath_linalg = None  # type: ignore[assignment]
 
 STIFF_RATIO = 1.0e3
 EXPLICIT_STABILITY = 5.864  # |R(-x)| = 1 for Vern8 at x = 5.864 (app/numerics/kernels/vern8.py)
@@ -138,6 +142,8 @@ def eigenvalues(J: np.ndarray) -> list[complex]:
     conversion took 30-150 us of a default simulation, the routine itself 10-40 us.  A matrix with an
     infinite or undefined entry is refused as ``np.linalg.eigvals`` refuses it (LinAlgError); a
     routine that does not converge gives NaN eigenvalues, which ``analyse`` treats as the refusal."""
+    if _umath_linalg is None:
+        return np.linalg.eigvals(J).astype(complex).tolist()
     if not np.isfinite(J).all():
         raise np.linalg.LinAlgError("Array must not contain infs or NaNs")
     # numpy's own settings around the routine: its floating-point flags are no one's warning
