@@ -174,7 +174,7 @@ def plan_costs(system, k, y0, t_end, rtol, between: Callable[[], object], rounds
     parts = {
         "the plan": lambda: plan(system, k, y0, t_end, 2, "auto", rtol, rtol / 100, False, True),
         "the analysis of the start": lambda: choose.analyse(system, k, y0, t_end, rtol, atol),
-        "its eigenvalues": lambda: np.linalg.eigvals(jacobian),
+        "its eigenvalues": lambda: choose.eigenvalues(jacobian),
         "its right-hand side call": lambda: system.f(0.0, y0, k),
     }
     for name, part in parts.items():

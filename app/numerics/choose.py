@@ -58,6 +58,11 @@ from app.numerics import limits
 from app.numerics.methods import NONSTIFF, STIFF, symplectic_for
 from app.numerics.system import NumericSystem
 
+try:  # numpy's own eigenvalue ufunc, private: without it, its public wrapper (see ``eigenvalues``)
+    from numpy.linalg import _umath_linalg
+except ImportError:  # pragma: no cover - a numpy that moved it
+    _umath_linalg = None  # type: ignore[assignment]
+
 STIFF_RATIO = 1.0e3
 EXPLICIT_STABILITY = 5.864  # |R(-x)| = 1 for Vern8 at x = 5.864 (app/numerics/kernels/vern8.py)
 # beyond the compiled step limit an explicit run is refused: only the implicit method can finish then
@@ -130,18 +135,35 @@ def fast_swing(J: np.ndarray, F: np.ndarray, threshold: float) -> np.ndarray:
     return np.abs(basis @ W) @ np.abs(c)
 
 
+def eigenvalues(J: np.ndarray) -> list[complex]:
+    """The eigenvalues of a real square matrix, the numbers ``np.linalg.eigvals`` returns (the same LAPACK
+    routine, dgeev, through numpy's own ufunc), without its wrapper: right after other work, as in a
+    server between requests, the wrapper's checks, its error-state context and its real-or-complex
+    conversion took 30-150 us of a default simulation, the routine itself 10-40 us.  A matrix with an
+    infinite or undefined entry is refused as ``np.linalg.eigvals`` refuses it (LinAlgError); a
+    routine that does not converge gives NaN eigenvalues, which ``analyse`` treats as the refusal."""
+    if _umath_linalg is None:
+        return np.linalg.eigvals(J).astype(complex).tolist()
+    if not np.isfinite(J).all():
+        raise np.linalg.LinAlgError("Array must not contain infs or NaNs")
+    # numpy's own settings around the routine: its floating-point flags are no one's warning
+    with np.errstate(all="ignore"):
+        return _umath_linalg.eigvals(J, signature="d->D").tolist()
+
+
 def analyse(
-    system: NumericSystem, k: np.ndarray, y0: np.ndarray, t_end: float, rtol: float, atol: np.ndarray
+    system: NumericSystem, k: np.ndarray, y0: np.ndarray, t_end: float, rtol: float, atol: np.ndarray | float
 ) -> Analysis:
+    """The linearisation's facts at the start (see the module's note); ``atol`` per component, or one number for all."""
     try:
         J = jacobian(system, 0.0, y0, k)
         F = system.f(0.0, y0, k)
-        lam = np.linalg.eigvals(J)
+        lam = eigenvalues(J)
     except (ArithmeticError, ValueError, np.linalg.LinAlgError):
         return Analysis(math.nan, math.nan, math.inf, False, 0.0)
     # the spectrum's few numbers as Python floats: numpy's per-call overhead on arrays of 2-12 entries was
     # most of this function's time (about 65 us of a default simulation's 200 us outside the kernel)
-    pairs = [(abs(x), x.real, x.imag) for x in lam.tolist()]
+    pairs = [(abs(x), x.real, x.imag) for x in lam]
     if not all(math.isfinite(size) for size, _, _ in pairs) or not all(math.isfinite(v) for v in F.tolist()):
         return Analysis(math.nan, math.nan, math.inf, False, 0.0)
     rho = max(size for size, _, _ in pairs)
@@ -194,9 +216,11 @@ def choose(system: NumericSystem, analysis: Analysis) -> tuple[str, str]:
     # symplectic methods step at a fixed size: only where no fast mode (excited, since not stiff) would force
     # that size down over the whole run -- a chain with masses 1e-9 and 1e9 took Yoshida-4 past its step limit
     fast_mode = a.mode_gap > STIFF_RATIO
-    symplectic = symplectic_for(system)
     long_or_saddle = a.characteristic_times >= LONG_RUN or a.near_saddle
-    if symplectic is not None and system.energy_name is not None and not fast_mode and long_or_saddle:
+    # the symplectic method is looked for (every method asked whether it applies) only where one would run
+    wanted = system.energy_name is not None and not fast_mode and long_or_saddle
+    symplectic = symplectic_for(system) if wanted else None
+    if symplectic is not None:
         name = symplectic.name
         why = f"{name} is the highest-order symplectic method that applies" + (
             " (H separates into T(p) + U(q))" if system.separable else " (H(q, p) does not separate)"

@@ -119,7 +119,7 @@ def plan(
     ``ready(method, system)``: whether that code is ready (by default the method's own ``ready``, what this
     process has compiled; a server's gates may give another, app/service/gates.py)."""
     is_ready = ready or (lambda m, s: m.ready(s))
-    analysis = analyse(system, k, y0, t_end, rtol, np.full(y0.size, atol))
+    analysis = analyse(system, k, y0, t_end, rtol, atol)  # one atol for every component
     if requested == AUTO:
         name, reason = choose(system, analysis)
     else:

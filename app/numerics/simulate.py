@@ -100,11 +100,25 @@ def _budget_for(method_name: str) -> int:
 def bounds(system: NumericSystem, y0: np.ndarray) -> np.ndarray:
     """|y_i| limits: a coordinate that is not an angle may not exceed RUNAWAY_FACTOR times its starting scale."""
     n = system.n
-    bound = np.full(2 * n, limits.STATE_BOUND)
+    bound = np.empty(2 * n)
+    bound.fill(limits.STATE_BOUND)  # np.full's numbers without its Python (10-20 us right after other work)
     for i in range(n):
         if not (system.periodic and system.periodic[i]):
             bound[i] = limits.RUNAWAY_FACTOR * max(1.0, abs(float(y0[i])))
     return bound
+
+
+def sample_times(t_end: float, samples: int) -> np.ndarray:
+    """The samples' times, t_i = i h with h = t_end / (samples - 1), the last exactly t_end: the numbers
+    ``np.linspace(0, t_end, samples)`` gives (its own steps, in its order), without its general
+    function's work, which took 30-80 us of a default simulation right after other work."""
+    step = t_end / (samples - 1) if samples > 1 else 0.0
+    if not step > 0.0:
+        return np.linspace(0.0, t_end, samples)  # no step (one sample), or t_end at or below zero
+    t = np.arange(samples, dtype=np.float64)
+    t *= step
+    t[-1] = t_end
+    return t
 
 
 def simulate(
@@ -159,8 +173,9 @@ def start(plan: Plan, wall_seconds: float | None = None) -> Started:
             needed.prepare(system)
     compile_seconds = time.perf_counter() - before
     deadline = time.perf_counter() + wall_seconds
-    t = np.linspace(0.0, plan.t_end, plan.samples)
-    atol = np.full(y0.size, plan.atol)
+    t = sample_times(plan.t_end, plan.samples)
+    atol = np.empty(y0.size)
+    atol.fill(plan.atol)  # np.full's numbers without its Python
     problem = Problem(system, plan.k, y0, t, plan.rtol, atol, bounds(system, y0), deadline, _budget_for(plan.name))
     return Started(plan, problem, compile_seconds, warnings)
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 from numba import njit, types
+from numba.core import cgutils
 from numba.extending import intrinsic
 
 from app.numerics.paths import configure_numba
@@ -62,6 +63,26 @@ def address(typingctx, array):
         return context.make_array(sig.args[0])(context, builder, args[0]).data
 
     return signature, codegen
+
+
+@intrinsic
+def rhs_at(typingctx, address):
+    """The generated function at ``address`` (an integer, ``Bound.address``) as the kernels' ``RHS``.
+
+    What numba builds when a ``Bound`` is passed in, without its work at every call from Python: there
+    the argument is typed and unboxed in Python (numba's ``typeof``, then two look-ups of the address
+    that read back its signature), 5-20 us per kernel call; an integer crosses in C.  The value holds
+    the same C entry (``c_addr``) and no Python object nor numba entry (``py_addr``, ``jit_addr``), as a
+    ``Bound``'s does, so a call through it runs the same code."""
+    if not isinstance(address, types.Integer):
+        return None
+
+    def codegen(context, builder, sig, args):
+        value = cgutils.create_struct_proxy(RHS)(context, builder)
+        value.c_addr = builder.inttoptr(args[0], context.get_value_type(types.voidptr))
+        return value._getvalue()
+
+    return RHS(address), codegen
 
 
 @njit(types.boolean(VEC, VEC), **JIT)

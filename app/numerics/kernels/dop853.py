@@ -36,6 +36,7 @@ from app.numerics.kernels.common import (
     address,
     initial_step,
     outside,
+    rhs_at,
 )
 
 A = np.ascontiguousarray(tab.A, dtype=np.float64)
@@ -217,3 +218,10 @@ def run(f, k, t_out, rtol, atol, bound, stop_on_stiff, chunk, y, fy, st, Y):
             return BOUND
         if stop_on_stiff != 0 and st[STIFF_SEEN] != 0.0:
             return STIFF
+
+
+@njit(I64(I64, VEC, VEC, F64, VEC, VEC, I64, I64, VEC, VEC, VEC, MAT), **JIT)
+def run_at(at, k, t_out, rtol, atol, bound, stop_on_stiff, chunk, y, fy, st, Y):
+    """``run`` with the right-hand side at the address ``at`` (``Bound.address``): the same loop, called
+    from Python without the per-call work a first-class function argument costs (see common.rhs_at)."""
+    return run(rhs_at(at), k, t_out, rtol, atol, bound, stop_on_stiff, chunk, y, fy, st, Y)

@@ -36,6 +36,7 @@ from app.numerics.kernels.common import (
     VEC,
     address,
     initial_step,
+    rhs_at,
 )
 from app.numerics.kernels.vern8_stages import combine, extra, stages
 
@@ -222,3 +223,10 @@ def run(f, k, t_out, rtol, atol, bound, stop_on_stiff, chunk, y, fy, st, Y):
     st[STIFF_RUN], st[CALM_RUN], st[STIFF_SEEN] = stiff_run, calm_run, stiff_seen
     st[LOG_PREVIOUS] = log_previous
     return status
+
+
+@njit(I64(I64, VEC, VEC, F64, VEC, VEC, I64, I64, VEC, VEC, VEC, MAT), **JIT)
+def run_at(at, k, t_out, rtol, atol, bound, stop_on_stiff, chunk, y, fy, st, Y):
+    """``run`` with the right-hand side at the address ``at`` (``Bound.address``): the same loop, called
+    from Python without the per-call work a first-class function argument costs (see common.rhs_at)."""
+    return run(rhs_at(at), k, t_out, rtol, atol, bound, stop_on_stiff, chunk, y, fy, st, Y)

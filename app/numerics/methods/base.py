@@ -10,9 +10,11 @@ saying where and why.  Running out of budget raises ``TooMuchWork``.
 
 from __future__ import annotations
 
+import importlib
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from types import ModuleType
 from typing import Any
 
 import numpy as np
@@ -79,13 +81,19 @@ class Method:
     def prepare(self, system: NumericSystem) -> None:
         """Compile (or load from the disk cache) what the method runs, before any clock starts."""
         if self.compiled:
-            import importlib
-
             from app.numerics import jit
 
             system.compiled()
-            importlib.import_module(self.kernel_module)
+            self.loop()
             jit.mark_ready(self.kernel_module)
+
+    def loop(self) -> ModuleType:
+        """The module of the compiled loop, imported (so compiled or loaded) on first use and kept: importing
+        it again at every run, though only a lookup, went through importlib's machinery each time."""
+        found = self.__dict__.get("_kernel")
+        if found is None:
+            found = self._kernel = importlib.import_module(self.kernel_module)
+        return found
 
     def ready(self, system: NumericSystem) -> bool:
         """True when ``prepare`` would return at once: nothing left to compile for this system."""
@@ -207,7 +215,9 @@ def stop_sentence(problem: Problem, status: int, where: str, last: np.ndarray | 
     at = ""
     if last is not None:
         coords = problem.system.coordinates
-        at = ", at " + ", ".join(f"{unicode(q)} = {float(v):.3g}" for q, v in zip(coords, last[: len(coords)], strict=True))
+        at = ", at " + ", ".join(
+            f"{unicode(q)} = {float(v):.3g}" for q, v in zip(coords, last[: len(coords)], strict=True)
+        )
     why = _WHY_STOPPED.get(name, "the equations cannot be followed further")
     return f"the run stops at {where}{at}: {why}"
 

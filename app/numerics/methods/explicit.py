@@ -5,7 +5,6 @@ driver serves them; a method names only its kernel."""
 
 from __future__ import annotations
 
-import importlib
 from typing import Any
 
 import numpy as np
@@ -22,9 +21,9 @@ class CompiledExplicit(Method):
     def _run(self, problem: Problem, **options: Any) -> Trajectory:
         # stop_on_stiff: give up at the first sign of stiffness (auto then tries an implicit method)
         stop_on_stiff = bool(options.get("stop_on_stiff", False))
-        kernel = importlib.import_module(self.kernel_module)
+        kernel = self.loop()
         rhs = problem.system.bound("rhs")
-        y = problem.y0.astype(float).copy()
+        y = np.array(problem.y0, dtype=np.float64)  # the kernel's own copy, advanced in place
         fy = np.empty_like(y)
         st = np.zeros(kernel.STATE_SIZE)
         Y = np.empty((problem.t.size, y.size))
@@ -34,7 +33,7 @@ class CompiledExplicit(Method):
             self,
             problem,
             kernel,
-            lambda chunk: kernel.run(rhs, *args, chunk, y, fy, st, Y),
+            lambda chunk: kernel.run_at(rhs.address, *args, chunk, y, fy, st, Y),  # run, f by its address
             (st, Y, y),
             stiff_detected=kernel.STIFF_SEEN,
         )
