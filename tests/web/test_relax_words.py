@@ -13,6 +13,8 @@ import pytest
 
 from app.service.action import relax_of_scene
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
+
 NODE = shutil.which("node")
 VERDICT = Path(__file__).resolve().parents[2] / "static" / "js" / "action-verdict.js"
 RUN = """
