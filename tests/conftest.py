@@ -44,8 +44,9 @@ def fresh_mint_budget():
     app.dependency_overrides.pop(fairness_gate, None)
 
 
-# a module's own marks, on one line near its top: ``pytestmark = pytest.mark.slow`` or a list of marks
-MODULE_MARKS = re.compile(r"^pytestmark = (.*)$", re.MULTILINE)
+# a module's own marks near its top: ``pytestmark = pytest.mark.slow`` or a list of marks, whose lines after the
+# first are indented or close the list
+MODULE_MARKS = re.compile(r"^pytestmark = (.*(?:\n[ )\]].*)*)", re.MULTILINE)
 
 
 def excluded_marks(markexpr: str) -> set[str]:

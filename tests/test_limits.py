@@ -56,6 +56,7 @@ def test_no_bound_inside_the_engine_reads_a_clock():
     assert len(budget_lines) == 3  # clock_limit's: the outer clock, its start, the re-armed outer one
 
 
+@pytest.mark.slow
 def test_the_keep_alive_is_a_setting_the_server_options_pass_on():
     env = {"PYTHONPATH": str(ROOT), "PATH": "/usr/bin:/bin", "LAGRANGE_KEEP_ALIVE_SECONDS": "31"}
     given = subprocess.run(

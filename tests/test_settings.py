@@ -18,6 +18,7 @@ def test_a_setting_is_read_from_its_lagrange_variable(monkeypatch):
     assert read.derive_seconds == 12.5 and read.warm is False
 
 
+@pytest.mark.slow
 def test_the_docs_list_every_setting_as_settings_defines_it():
     check = subprocess.run(
         [sys.executable, "scripts/settings_table.py", "--check"],

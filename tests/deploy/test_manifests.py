@@ -71,6 +71,7 @@ def test_the_memory_budget_fits_the_kubernetes_limits():
     assert "initialDelaySeconds" not in container["livenessProbe"]
 
 
+@pytest.mark.slow
 def test_the_kubernetes_manifest_validates_against_the_api_schemas():
     """Every document of deploy/kubernetes.yaml against the Kubernetes API's own schemas (kubernetes-validate,
     offline), strictly: a misspelt or misplaced field fails."""

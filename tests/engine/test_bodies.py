@@ -13,8 +13,6 @@ from app.engine.report import build_steps
 from app.scenes.types import Body, CoordinateChange, Parameter, Particle, System
 from tests.reference import lagranges_method, numerically_equal, reference_accelerations
 
-pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
-
 M, m, m1, m2, g, length, R, r, alpha = (
     Parameter(n, 1.0, min=0.1) for n in ("M", "m", "m1", "m2", "g", "l", "R", "r", "alpha")
 )
@@ -72,6 +70,7 @@ def _symbols(*exprs):
     return sorted(set().union(*(e.free_symbols for e in exprs)) | {sp.Symbol("t", real=True)}, key=str)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(SYSTEMS))
 def test_accelerations_match_lagranges_method_with_rigid_bodies(name):
     system = SYSTEMS[name]
@@ -81,6 +80,7 @@ def test_accelerations_match_lagranges_method_with_rigid_bodies(name):
         assert numerically_equal(a, b, _symbols(a, b)), (name, a, b)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(SYSTEMS))
 def test_kinetic_energy_matches_the_rigid_bodies_of_sympy_mechanics(name):
     system = SYSTEMS[name]
@@ -92,6 +92,7 @@ def test_kinetic_energy_matches_the_rigid_bodies_of_sympy_mechanics(name):
     assert numerically_equal(T, theirs, _symbols(T, theirs)), (name, T, theirs)
 
 
+@pytest.mark.slow
 def test_each_body_has_its_translation_and_rotation_and_the_step_names_them():
     d = derive(SYSTEMS["atwood-pulley"])
     (pulley,) = d.mechanics.bodies
@@ -114,6 +115,7 @@ def test_each_body_has_its_translation_and_rotation_and_the_step_names_them():
     assert "point mass" in kinetic["explanation"]
 
 
+@pytest.mark.slow
 def test_two_bodies_are_numbered():
     system = System(
         coordinates=("theta",),

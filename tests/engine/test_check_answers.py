@@ -26,6 +26,7 @@ def test_what_is_read_is_checked_against_the_steps_names():
     assert parsed.names == frozenset(allowed_names("potential", kinds)) == {"R", "g", "m", "t", "theta"}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     ("step", "coordinate", "answer"),
     [
@@ -41,6 +42,7 @@ def test_a_scene_answer_read_in_the_web_process_builds_as_reading_it_in_the_work
     assert outcome(lambda: parse_answer(pb, sent)) == outcome(lambda: parse_answer(pb, answer))
 
 
+@pytest.mark.slow
 def test_a_declared_systems_answer_is_held_to_the_momenta_the_derivation_finds_conserved():
     """Before deriving, the web process lets an ω² name the momentum of every coordinate; the spring rod's r is not
     cyclic, so the worker refuses p_r as reading the text against the problem's names does, word for word."""

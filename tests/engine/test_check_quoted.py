@@ -12,14 +12,13 @@ from app.engine.check import CheckError, judge
 from app.engine.exercises import exercise_json
 from tests.engine.test_check_slips import derivation, step_problem
 
-pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
-
 
 def nfc(text: str) -> str:
     """Text as the page shows it, with each dotted letter as one character (ÿ₂ typed or composed alike)."""
     return unicodedata.normalize("NFC", text)
 
 
+@pytest.mark.slow
 def test_a_coupling_terms_sign_is_quoted_as_the_student_multiplied_it_out():
     # ∂/∂x₁ of ½ κ (x₂ − x₁)² is κ (2 x₁ − 2 x₂)/2 in the engine's form: the student wrote κ x₂, never a 2
     result = judge(step_problem("coupled-oscillators", "equation", "x1"), "m*x1_ddot + (k+kappa)*x1 + kappa*x2")
@@ -36,6 +35,7 @@ def test_a_sum_the_student_kept_whole_is_quoted_without_the_engines_common_facto
     assert "x_{1} - x_{2}" in result["correct_part"]["latex"], result["correct_part"]
 
 
+@pytest.mark.slow
 def test_a_doubled_group_in_u_is_quoted_without_the_constant_the_student_never_wrote():
     result = judge(step_problem("pulley", "potential", None), "m1*g*y1 + m2*g*y2 - M*g*(y1+y2)")
     name = result["mistake"]["name"]
@@ -43,6 +43,7 @@ def test_a_doubled_group_in_u_is_quoted_without_the_constant_the_student_never_w
     assert "c" not in name.replace("twice", "").replace("should", ""), name
 
 
+@pytest.mark.slow
 def test_an_equations_dropped_coupling_terms_are_named_in_the_equation_and_t_blamed_only_if_it_has_the_slip():
     # the student's T was right; the θ₂ equation was written as a simple pendulum's (review student-m #36)
     result = judge(step_problem("double-pendulum", "equation", "theta2"), "m2*l2**2*theta2_ddot + m2*g*l2*sin(theta2)")
@@ -58,6 +59,7 @@ def test_an_equations_dropped_coupling_terms_are_named_in_the_equation_and_t_bla
     assert "fix it there" not in hint and not hint.startswith("Your equation for θ₂ follows from a T")
 
 
+@pytest.mark.slow
 def test_a_dropped_cross_acceleration_is_named_on_the_pulley_and_the_wedge():
     pulley = judge(step_problem("pulley", "equation", "y1"), "(m1+M/4)*y1_ddot + m1*g - M*g/2")
     assert nfc(pulley["mistake"]["name"]) == nfc("the term M ÿ₂/4 left out"), pulley["mistake"]
@@ -67,6 +69,7 @@ def test_a_dropped_cross_acceleration_is_named_on_the_pulley_and_the_wedge():
     assert nfc("If your T leaves out the part of the block's velocity that comes from Ḋ") in nfc(wedge["hint"])
 
 
+@pytest.mark.slow
 def test_gravity_written_twice_with_opposite_signs_is_named_as_two_terms_that_cancel():
     # review student-m #113: the typed text holds −m g sin α and +m g sin α; built whole, SymPy cancels them
     text = "m*D_ddot + m*X_ddot*cos(alpha) - m*g*sin(alpha) + m*g*sin(alpha)"
@@ -94,6 +97,7 @@ def test_a_squared_sum_in_a_one_body_denominator_is_named_as_that():
     assert "cross term 2 R α" in result["mistake"]["where"] and "every body" not in result["hint"], result["hint"]
 
 
+@pytest.mark.slow
 def test_an_acceleration_without_a_moving_bodys_mass_says_which_mass_is_missing():
     # review student-m #52: an Atwood machine's result for the pulley, with m₂ nowhere in it
     result = judge(step_problem("pulley", "acceleration", "y1"), "(M-2*m1)*g/(2*m1+M)")

@@ -4,11 +4,15 @@ what it is and is in the scale of the answer, a wrong follow-up gets a new hint,
 
 from __future__ import annotations
 
+import pytest
+
 from app.engine.check import judge, judge_follow_up
 from app.engine.check_problem import problem
 from app.engine.exercises import exercise_json
 from app.engine.notation import letter, text
 from tests.engine.test_check_slips import derivation, step_problem
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
 
 INCLINE_T = "M*X_dot**2/2 + m*D_dot**2/2"
 

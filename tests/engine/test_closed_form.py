@@ -20,8 +20,6 @@ from app.engine.derive import derive
 from app.engine.user_system import UserSystem
 from tests.reference import numerically_equal, reference_accelerations
 
-pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
-
 ATWOOD = {
     "coordinates": ["x", "y", "z"],
     "parameters": [{"name": n, "value": v} for n, v in (("m1", 1), ("m2", 2), ("m3", 3), ("m4", 4), ("g", 9.81))],
@@ -37,6 +35,7 @@ BY_HAND = {
 }
 
 
+@pytest.mark.slow
 def test_by_hand_agrees_with_lagranges_method():
     reference, _ = reference_accelerations(UserSystem.of(ATWOOD).system())
     symbols = (m1, m2, m3, m4, g)
@@ -44,6 +43,7 @@ def test_by_hand_agrees_with_lagranges_method():
         assert numerically_equal(acc, BY_HAND[name], symbols)
 
 
+@pytest.mark.slow
 def test_three_coordinate_atwood_gets_its_short_closed_forms(client):
     r = client.post("/api/derive", json=ATWOOD)
     assert r.status_code == 200, r.text
@@ -66,6 +66,7 @@ def test_the_engine_keeps_the_short_forms_and_says_how_long_they_are():
     assert eqs.closed_form_reason == f"the longest one is {max(lengths)} characters"
 
 
+@pytest.mark.slow
 def test_a_three_link_chain_is_left_out_with_its_measured_length(client):
     chain = {
         "coordinates": ["a", "b", "c"],

@@ -12,6 +12,8 @@ from app.engine.check import judge
 from tests.engine.test_check_giveaway import read
 from tests.engine.test_check_slips import step_problem
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
+
 
 def nfc(text: str) -> str:
     return unicodedata.normalize("NFC", text)

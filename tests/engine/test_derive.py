@@ -33,6 +33,7 @@ def test_simple_pendulum_by_hand():
     assert same(eq[sp.pi].omega_squared, -g / R) and eq[sp.pi].stable is False
 
 
+@pytest.mark.slow
 def test_spherical_pendulum_by_hand():
     d = derive(SCENES["spherical-pendulum"].system)
     m, g, R, th, thd, phd = S["m"], S["g"], S["R"], S["theta"], S["theta_dot"], S["phi_dot"]
@@ -48,6 +49,7 @@ def test_spherical_pendulum_by_hand():
     assert same(d.reduction.effective_potential, P**2 / (2 * m * R**2 * sp.sin(th) ** 2) + m * g * R * sp.cos(th))
 
 
+@pytest.mark.slow
 def test_cyclic_coordinate_and_circular_orbit():
     d = derive(TABLETOP)
     m, k = S["m"], S["k"]

@@ -2,6 +2,8 @@
 
 from fractions import Fraction
 
+import pytest
+
 from app.engine.check import judge
 from app.engine.dimensions import ENERGY, equation_words, quantity, unit_text
 from tests.engine.test_check_slips import step_problem
@@ -17,6 +19,7 @@ def test_a_denominator_of_several_units_is_bracketed():
     assert unit_text({}) == "1"
 
 
+@pytest.mark.slow
 def test_a_missing_unit_never_reads_as_a_symbol_of_the_problem():
     # issue 41: "A factor of length (m) is missing" read as "multiply by the mass m"
     hint = judge(step_problem("simple-pendulum", "potential", None), "m*g*cos(theta)")["hint"]
@@ -24,6 +27,7 @@ def test_a_missing_unit_never_reads_as_a_symbol_of_the_problem():
     assert "(m)" not in hint
 
 
+@pytest.mark.slow
 def test_a_term_of_an_angles_equation_is_a_torque_never_an_energy():
     hint = judge(step_problem("simple-pendulum", "equation", "theta"), "m*R**2*theta_ddot + m*g*sin(theta)")["hint"]
     assert "adds a force (m g sin(θ)) to a torque (m R² θ̈)" in hint, hint

@@ -1,5 +1,7 @@
 """Why h differs from E, named from where T1 and T0 come from; h = E left undecided when only L is given (issue 19)."""
 
+import pytest
+
 from app.engine.derive import derive
 from app.scenes.types import Parameter, Particle, System
 
@@ -10,6 +12,7 @@ def energetics(**declaration):
     return derive(System(parameters=P, **declaration)).energetics
 
 
+@pytest.mark.slow
 def test_a_magnetic_term_in_T_is_named_and_no_moving_constraint_is_invented():
     # a charge in a uniform magnetic field B along z, the symmetric gauge A = B (-y, x, 0)/2
     en = energetics(
@@ -22,6 +25,7 @@ def test_a_magnetic_term_in_T_is_named_and_no_moving_constraint_is_invented():
     assert en.h_conserved and [c.name for c in en.conserved if c.name in ("E", "h")] == ["h"]
 
 
+@pytest.mark.slow
 def test_a_moving_constraint_is_named_with_the_particle_that_moves():
     # a bead on a rod spun at a fixed rate
     en = energetics(
@@ -42,6 +46,7 @@ def test_a_moving_constraint_is_named_with_the_particle_that_moves():
     assert "the position of particle 1 contains t" in two.reason
 
 
+@pytest.mark.slow
 def test_both_sources_are_named():
     # a velocity-linear magnetic term and a drive that makes T depend on time (a moving support)
     en = energetics(

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import pytest
 import sympy as sp
 
 from app.engine import lagrange
@@ -26,6 +27,7 @@ def test_only_smooth_functions_go_to_symengine():
     assert not convertible([sp.sign(x) * x])
 
 
+@pytest.mark.slow
 def test_symengine_and_sympy_derive_the_same_equations(monkeypatch):
     mech = build_mechanics(chain(3))
     on_symengine = lagrange._on_symengine(mech)

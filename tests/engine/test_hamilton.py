@@ -13,8 +13,6 @@ from app.scenes import SCENES
 from tests.engine.systems import TEST_SYSTEMS
 from tests.reference import numerically_equal
 
-pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
-
 SYSTEMS = {**{f"scene:{k}": s.system for k, s in SCENES.items()}, **TEST_SYSTEMS}
 
 
@@ -28,6 +26,7 @@ def state_symbols(d, ham):
     return sorted({*d.table.q, *d.table.qd, *d.table.params, d.table.t, *ham.momenta}, key=str)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(SYSTEMS))
 def test_hamiltonian_is_h_under_the_legendre_map(name):
     d, ham = derived(name)
@@ -38,6 +37,7 @@ def test_hamiltonian_is_h_under_the_legendre_map(name):
     assert [P.name for P in ham.momenta] == [f"p_{q}" for q in d.table.names]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(SYSTEMS))
 def test_equations_are_the_derivatives_of_h(name):
     d, ham = derived(name)
@@ -69,6 +69,7 @@ def _lambdify(d, ham):
     return rhs, acc, mom
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(SYSTEMS))
 def test_hamiltons_equations_give_the_euler_lagrange_motion(name):
     d, ham = derived(name)

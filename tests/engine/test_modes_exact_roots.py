@@ -72,6 +72,7 @@ def test_an_irreducible_numeric_cubic_keeps_its_closed_forms() -> None:
     assert all(abs(a - b) < 1e-9 for a, b in zip(values, expected, strict=True))
 
 
+@pytest.mark.slow
 def test_equilibria_with_opposite_stiffness_factor_one_discriminant(monkeypatch) -> None:
     from app.engine.budget import display_budget
 
@@ -112,6 +113,7 @@ def _double_pendulum() -> tuple[sp.Matrix, sp.Matrix, dict[sp.Symbol, sp.Symbol]
     return M, K, {s: sp.Symbol(s.name, positive=True) for s in (m1, m2, l1, l2, g)}
 
 
+@pytest.mark.slow
 def test_the_double_pendulums_frequencies_print_compactly_with_the_same_values() -> None:
     """ω² = g[(m₁ + m₂)(l₁ + l₂) ∓ √(…)]/(2m₁l₁l₂): one square root (never √(m₁ + m₂) √(…)), the shared
     m₁ + m₂ taken out of the sum beside it and out of the radicand; equal to the quadratic formula's roots."""
@@ -139,6 +141,7 @@ def test_the_double_pendulums_frequencies_print_compactly_with_the_same_values()
         assert new == pytest.approx(want, rel=1e-12)
 
 
+@pytest.mark.slow
 def test_a_product_of_roots_is_one_root_only_where_that_holds() -> None:
     """√a √b = √(ab) when a ≥ 0 (by the declared signs); √(x − y) √(y − x) stays, neither known ≥ 0 (where
     both radicands are negative, √a √b = −√(ab))."""

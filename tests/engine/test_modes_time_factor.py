@@ -31,6 +31,7 @@ CALDIROLA_KANAI = System(
 STIFFENING = System(coordinates=("x",), parameters=(), lagrangian="x_dot**2/2 - (1 + t)*x**2/2")
 
 
+@pytest.mark.slow
 def test_by_hand_agrees_with_lagranges_method():
     lm, qs, read = lagranges_method(CALDIROLA_KANAI)
     t = sp.Symbol("t")
@@ -41,6 +42,7 @@ def test_by_hand_agrees_with_lagranges_method():
     assert sp.simplify(equation - (xt.diff(t) + gamma * xt + k / m * x)) == 0
 
 
+@pytest.mark.slow
 def test_caldirola_kanai_has_constant_exponents_after_dividing_by_its_factor():
     d = derive(CALDIROLA_KANAI)
     nm = normal_modes(d.system, d.mechanics, d.equations, d.reduction)

@@ -14,8 +14,6 @@ from app.engine.notation import cartesian_names
 from app.scenes import SCENES
 from app.service.derivations import derivation_document
 
-pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
-
 CONSTRAINED = sorted(sid for sid, s in SCENES.items() if s.system.constraints)
 DERIVATION = ["constraints", "multiplier-lagrangian", "multiplier-equation", "multiplier", "constraint-forces"]
 
@@ -27,6 +25,7 @@ def test_the_constrained_scenes_are_the_chapters_seven_and_the_damped_pendulum()
     )  # fmt: skip
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scene_id", CONSTRAINED)
 def test_the_derived_multipliers_equal_the_engines(scene_id):
     d = derive(SCENES[scene_id].system)
@@ -84,6 +83,7 @@ def test_the_symbols_table_gives_each_multiplier_its_unit(scene_id, units):
     assert rows["λ"]["unit"] and rows["𝒞"]["unit"]
 
 
+@pytest.mark.slow
 def test_the_cartesian_names_never_print_as_a_coordinate_of_the_system():
     """prof-h 2: the pulley's coordinates are the heights y₁, y₂, and its Lagrangian with multipliers printed
     ½ m₁ ẏ₁² for the first body's Cartesian y: one letter, two quantities. There the bodies' Cartesian
@@ -238,6 +238,7 @@ def test_the_helix_puts_its_equations_for_the_multipliers_on_the_path():
         assert "on the path" not in step["latex"] and "On the path" not in step["explanation"]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scene_id", CONSTRAINED)
 def test_the_equations_on_the_path_give_the_solved_multipliers(scene_id):
     """Each equation on the path, Σ_b coefficient λ_b = right side, holds with the solved λ's put in: its right

@@ -1,5 +1,7 @@
 """Display names have one home: LaTeX, Unicode and plain forms agree everywhere."""
 
+import pytest
+
 from app.engine.contract import derivation_json
 from app.engine.derive import derive
 from app.engine.document import Document
@@ -22,6 +24,7 @@ def test_names_in_prose_are_written_as_a_reader_writes_them():
     assert prose(text) == "Two masses m₁ and m₂ at x₁, x₂ with rest length l₀; start at θ₀ (section 4.5, Ex. 4.2)."
 
 
+@pytest.mark.slow
 def test_omega_is_the_same_letter_in_steps_controls_and_document():
     hoop = System(
         coordinates=("theta",),
@@ -50,6 +53,7 @@ def test_a_name_of_several_letters_is_greek_or_one_upright_name():
     assert unicode("th_dot") == "th˙" and unicode("theta_dot") == "θ̇" and unicode("x1_dot") == "x\u0307\u2081"
 
 
+@pytest.mark.slow
 def test_a_momentums_rate_has_its_dot_on_the_p_not_over_the_subscript():
     """prof-m 10a: Hamilton's equations set \\dot{p_θ}, the dot between p and θ; a textbook prints ṗ_θ."""
     assert (latex("p_theta_dot"), unicode("p_theta_dot")) == (r"\dot{p}_{\theta}", "p\u0307_θ")

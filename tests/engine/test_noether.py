@@ -1,6 +1,7 @@
 """Conserved quantities from the symmetries of L beyond cyclic coordinates: rotations and translations (issue 40,
 item 38), each checked along the equations of motion before it is listed."""
 
+import pytest
 import sympy as sp
 
 from app.engine.derive import derive
@@ -30,6 +31,7 @@ def test_a_charge_in_a_magnetic_field_keeps_its_angular_momentum_and_its_guiding
     assert "h" in found
 
 
+@pytest.mark.slow
 def test_a_system_without_the_symmetry_lists_none():
     # an anisotropic oscillator: turning (x, y) changes U, and moving x or y changes U, by no total derivative
     found = conserved(coordinates=("x", "y"), kinetic="m/2*(x_dot**2 + y_dot**2)", potential="k/2*x**2 + kappa/2*y**2")
@@ -47,6 +49,7 @@ def test_a_force_along_the_symmetry_breaks_it():
     assert "P_y" in found
 
 
+@pytest.mark.slow
 def test_angles_are_not_turned():
     # a spherical pendulum's θ and φ: φ is cyclic (its momentum is listed), and no "rotation" of (θ, φ) is tried
     found = conserved(

@@ -19,8 +19,6 @@ from app.engine.document import Document, FirstStage
 from app.scenes import SCENES
 from app.service.derivations import derivation, derivation_document
 
-pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
-
 # a row's left side: a bare letter, maybe squared (ω², \Omega^2), maybe with a subscript (\omega_{1}, F_{1})
 _NAME = re.compile(r"^\s*&?\s*((?:\\[A-Za-z]+|[A-Za-z])(?:_\{?[0-9A-Za-z]+\}?)?)(?:\^\{?2\}?)?\s*&?=")
 # a unit as the document typesets it: \mathrm{s}^{-2}, \mathrm{kg\,m^{2}\,s^{-1}}
@@ -125,6 +123,7 @@ def test_metres_are_written_out_in_prose_where_m_is_a_mass(scene_id):
 
 
 
+@pytest.mark.slow
 def test_the_letters_of_a_constraint_are_read_from_one_home(monkeypatch):
     # issue 40: F₁, λ₁ and 𝒞₁ were each spelled in the Symbols table, the steps of the forces of constraint and
     # the page's Results; with other letters given in notation.py, all three print those and none of the old.
@@ -194,6 +193,7 @@ def test_a_scene_with_a_mass_m_writes_its_mass_matrix_with_another_letter(scene_
     assert not [text for text in markdown if _BARE_M.search(text)]
 
 
+@pytest.mark.slow
 def test_a_typed_system_with_a_mass_m_left_as_m_inverse_f_names_the_mass_matrix_apart():
     # a typed chain whose last bob has the mass M: the first stage prints ℳ q̈ = f and ℳ = (…), never M q̈ = f
     from app.engine.contract import first_stage
@@ -258,6 +258,7 @@ def _reader_strings(path: Path) -> list[tuple[int, str]]:
     ]
 
 
+@pytest.mark.slow
 def test_the_inertias_letter_is_typed_in_one_place():
     # issue 40: the letter (I_eff for an angle, m_eff for a length) is chosen in app/engine/notation.py alone;
     # every step, sentence, hint and panel reads it from there
@@ -302,6 +303,7 @@ def test_the_matrix_form_is_named_in_a_textbooks_words(scene_id):
     assert not [s for s in _said(doc) if re.search(r"\bforcing\b", s, re.I)]
 
 
+@pytest.mark.slow
 def test_a_system_left_as_m_inverse_f_says_what_f_is():
     from app.engine.contract import first_stage
     from app.service.user_checks import checked
@@ -313,6 +315,7 @@ def test_a_system_left_as_m_inverse_f_says_what_f_is():
     assert not [s for s in _said(doc) if re.search(r"\bforcing\b", s, re.I)]
 
 
+@pytest.mark.slow
 def test_a_typed_systems_matrix_step_says_what_f_is():
     # a typed system has no scene's sentence: the step's own words say what f is
     from app.engine.contract import derivation_json
@@ -367,6 +370,7 @@ def test_a_position_vector_is_never_written_with_a_parameters_letter(scene_id):
     assert vectors == ({"R"} if scene_id == "rolling-cylinder-wedge" else {"r"}), vectors
 
 
+@pytest.mark.slow
 def test_practice_names_the_axes_greek_only_where_a_coordinate_takes_an_axis_name_without_being_that_displacement():
     from app.engine.derive import derive
     from app.engine.notation import practice_axes

@@ -7,12 +7,15 @@ inverse functions outside their domain.  Every one must either be refused with
 an ExpressionError or build within a hang guard into a real expression.
 """
 
+import pytest
 import sympy as sp
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from app.engine.budget import OutOfTime, clock_limit
 from app.engine.parse import MAX_DEGREE, ExpressionError, parse_expression
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
 
 NAMES = {n: sp.Symbol(n, real=True) for n in ("x", "y", "a", "t")}
 SETTINGS = settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])

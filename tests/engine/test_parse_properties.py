@@ -2,6 +2,7 @@
 
 import math
 
+import pytest
 import sympy as sp
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -14,6 +15,8 @@ from app.engine.parse import (
     check_name,
     parse_expression,
 )
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
 
 NAMES = {n: sp.Symbol(n, real=True) for n in ("x", "x_dot", "y", "m", "t")}
 SETTINGS = settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])

@@ -36,6 +36,7 @@ TEXTS = [
 ]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("text", TEXTS)
 def test_every_narrower_set_of_names_gives_what_reading_again_gives(text):
     for k in range(len(NAMES) + 1):
@@ -72,6 +73,7 @@ expressions = st.recursive(
 )
 
 
+@pytest.mark.slow
 @SETTINGS
 @given(expressions, st.sets(st.sampled_from(NAMES)))
 def test_narrowing_any_expression_is_reading_it_again(text, fewer):

@@ -70,6 +70,7 @@ def test_refused_with_what_to_write(case):
     assert not refused.value.readings
 
 
+@pytest.mark.slow
 def test_the_worker_builds_what_the_web_process_read():
     # the reading crosses to the worker as a Parsed (never the text) and builds the same expression there
     import pickle
@@ -170,6 +171,7 @@ def test_refusals_point_at_the_text_as_typed(text, start, end):
     assert refused.value.part == text[start:end]
 
 
+@pytest.mark.slow
 @settings(max_examples=300, deadline=None, derandomize=True)
 @given(st.from_regex(r"[A-Za-z][A-Za-z0-9]{0,15}", fullmatch=True))
 def test_a_declared_name_is_never_split(name):
@@ -187,6 +189,7 @@ def test_a_declared_name_is_never_split(name):
 STUDENT = sorted(ALLOWED_CHARACTERS) + list("^'′’″θφωαπ·×−²³⁻₁\u0307\u0308ẋ{}[]=\"½ｓ")
 
 
+@pytest.mark.slow
 @settings(max_examples=600, deadline=None, derandomize=True)
 @given(st.text(alphabet=STUDENT, max_size=40))
 def test_student_text_is_read_within_the_allowlist_or_refused(text):

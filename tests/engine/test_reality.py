@@ -52,6 +52,7 @@ def test_nowhere_real_returns_a_point_only_when_no_sample_is_real():
     assert real_somewhere("x", x) == x
 
 
+@pytest.mark.slow
 def test_the_checker_refuses_an_answer_real_nowhere():
     d = derive(SYSTEMS["hoop-slow"])
     pb = problem(d, "lagrangian")
@@ -61,6 +62,7 @@ def test_the_checker_refuses_an_answer_real_nowhere():
     assert parse_answer(pb, "m*R**2*phi_dot**2/2") is not None
 
 
+@pytest.mark.slow
 def test_l_equal_to_u_minus_t_derives_and_its_modes_say_so():
     # the "negative mass" case: derived, and the equilibrium is the oscillator's
     from app.engine.contract import derivation_json

@@ -1,6 +1,7 @@
 """The numerical search for equilibria: the one-coordinate scan's grid evaluated in one call."""
 
 import numpy as np
+import pytest
 import sympy as sp
 
 from app.engine import roots
@@ -18,6 +19,7 @@ def _scalar(expr):
     return lambda x: np.asarray(f(*x, 2.0), dtype=float).ravel()
 
 
+@pytest.mark.slow
 def test_the_grid_in_one_call_is_the_grid_point_by_point():
     grid = np.linspace(-np.pi - 0.05, np.pi + 0.05, roots.SCAN_POINTS)
     for expr in (

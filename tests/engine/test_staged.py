@@ -39,6 +39,7 @@ def test_larger_than_stops_at_its_limit():
     assert larger_than(a + b + a * b, 3)
 
 
+@pytest.mark.slow
 def test_pythagoras_leaves_a_large_solved_acceleration_as_it_is():
     # an LU-solved triple-pendulum acceleration: expanding it did not finish in 300 s (issue 35)
     d = derive(chain(3))

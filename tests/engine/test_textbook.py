@@ -1,5 +1,6 @@
 """The display canonicaliser: reader's order, divided equations, no nested fractions, bounded."""
 
+import pytest
 import sympy as sp
 
 from app.engine import textbook
@@ -64,6 +65,7 @@ def test_a_bracket_of_negative_terms_is_written_positive():
     assert tex(g * R * (-m - b) * sp.cos(theta)) == r"- \left(m + b\right) g R \cos {\theta}"
 
 
+@pytest.mark.slow
 def test_deterministic_and_bounded():
     expr = sp.expand((theta + phi + thd + phd + m + g) ** 7)  # far beyond the node budget
     assert tex(expr) == sp.latex(expr, symbol_names=NAMES)

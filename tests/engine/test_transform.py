@@ -15,6 +15,7 @@ def test_no_change_declared():
     assert transform(System(coordinates=("x",), kinetic="x_dot**2/2", potential="0")) is None
 
 
+@pytest.mark.slow
 def test_forces_and_velocities_follow_the_chain_rule():
     # a damped spring, re-described by u = 2 x + 1: Q_u = Q_x dx/du = -b x_dot / 2
     system = System(
@@ -54,6 +55,7 @@ def test_time_dependent_change_into_a_rotating_frame():
     assert not en.h_equals_e
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     ("change", "message"),
     [

@@ -27,6 +27,7 @@ def test_text_reads_like_python(text):
     assert math.isclose(evaluate(of_text(text, ENV), ENV), eval(text, FUNCTIONS, dict(ENV)), rel_tol=1e-12)
 
 
+@pytest.mark.slow
 def test_a_long_derived_sum_is_one_flat_node():
     # a sum of thousands of terms, as a derivation may produce
     expr = sp.log(sp.Add(*(i * x * x_dot for i in range(1, 3301))) + y**2)
@@ -42,6 +43,7 @@ def test_a_long_sum_of_text_is_one_flat_node():
     assert math.isclose(evaluate(result, ENV), eval(text, {}, dict(ENV)), rel_tol=1e-12)
 
 
+@pytest.mark.slow
 def test_deep_nesting_is_refused_not_overflowed():
     deep = x
     for _ in range(MAX_DEPTH + 1):
@@ -96,6 +98,7 @@ expressions = st.recursive(
 )
 
 
+@pytest.mark.slow
 @settings(max_examples=200, deadline=None)
 @given(expressions)
 def test_both_ways_agree_with_python_on_generated_expressions(text):

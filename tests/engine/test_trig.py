@@ -48,6 +48,7 @@ def test_terms_that_do_not_pair_stay_as_they_are() -> None:
         assert merged(expr) == expr
 
 
+@pytest.mark.slow
 def test_random_sums_merge_into_equal_and_never_longer_expressions() -> None:
     rng = random.Random(11)
     angles = [a, b, c, a - b]
@@ -64,6 +65,7 @@ def test_random_sums_merge_into_equal_and_never_longer_expressions() -> None:
         assert sp.count_ops(out) <= sp.count_ops(expr), expr
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [2, 3, 5])
 def test_a_chains_kinetic_energy_holds_cosines_of_differences(n: int) -> None:
     """v² of a chain's last bob: lᵢ lⱼ θ̇ᵢ θ̇ⱼ cos(θᵢ − θⱼ) for each pair, no product of sines or cosines left."""

@@ -107,6 +107,7 @@ def test_large_pendulum_against_an_independent_quadrature(pendulum, eps):
     assert r.action[0] == pytest.approx(expected, rel=1e-8)
 
 
+@pytest.mark.slow
 def test_tabletop_spring_against_an_independent_quadrature():
     system = numeric_system(derivation("tabletop-spring"))
     m, kk = 1.0, 4.0
@@ -189,6 +190,7 @@ COUPLED = System(
 )
 
 
+@pytest.mark.slow
 def test_the_varied_coordinate_alone_has_its_own_focus():
     # L = ½(ẋ² + ẏ²) − ½ω²(x² + y²) − c x y: the normal modes x ± y have ω² ± c, so all variations together reach
     # their first focus at π/√(ω² + c); varying x alone (y kept on the true path) the Jacobi equation is

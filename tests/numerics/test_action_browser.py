@@ -13,6 +13,8 @@ from app.numerics.action import action_of, action_terms
 from app.numerics.system import numeric_system
 from app.service.derivations import derivation
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
+
 NODE = shutil.which("node")
 LIVE = Path(__file__).resolve().parents[2] / "static" / "js" / "action-live.js"
 RUN = """

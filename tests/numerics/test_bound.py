@@ -5,6 +5,8 @@ import pytest
 
 from tests.numerics.extreme_cases import system_for
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
+
 
 def test_python_calls_write_what_the_python_twin_computes():
     s = system_for("double-pendulum")

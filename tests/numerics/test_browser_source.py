@@ -15,6 +15,8 @@ from tests.numerics.extreme_cases import system_for
 from tests.numerics.systems import DOUBLE_PENDULUM
 from tests.numerics.test_codegen import KEYS, random_point
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
+
 NODE = shutil.which("node")
 RUN = """
 const cases = JSON.parse(require("fs").readFileSync(0, "utf8"));

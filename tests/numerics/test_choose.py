@@ -24,6 +24,7 @@ def test_short_run_is_explicit():
     assert name == NONSTIFF and "non-stiff" in reason
 
 
+@pytest.mark.slow
 def test_long_conservative_run_is_symplectic():
     name, reason = pick("simple-pendulum", PENDULUM, np.array([2.5, 0.0]), 1e4 * pendulum_period(2.5))
     assert name == "Gauss-Legendre" and "long run" in reason and "separates" in reason
@@ -42,6 +43,7 @@ def test_start_next_to_a_saddle_is_symplectic():
     assert name == "Gauss-Legendre" and "unstable equilibrium" in reason
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("k_over_m", [1e6, 1e8])
 def test_stiff_spring(k_over_m):
     k = np.array([1.0, k_over_m, 1.0])
@@ -53,6 +55,7 @@ def test_stiff_spring(k_over_m):
     assert name != STIFF
 
 
+@pytest.mark.slow
 def test_detected_stiffness_switches_to_radau(monkeypatch):
     """If auto's explicit run meets stiffness on the way (here: forced), the run is redone with Radau IIA.
 

@@ -35,6 +35,7 @@ CHEAP = ["auto", "DOP853-compiled", "Yoshida4", "Gauss-Legendre"]
 THETAS = [1.0, 2.5, math.pi - 1e-3, math.pi - 1e-6]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("theta0", THETAS)
 @pytest.mark.parametrize("method", CHEAP)
 @pytest.mark.parametrize("rtol", [1e-4, 1e-8, 1e-11])
@@ -44,6 +45,7 @@ def test_pendulum_compiled_methods(theta0, method, rtol):
     check(out, pendulum_reference(theta0), 1)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("theta0", THETAS)
 @pytest.mark.parametrize("method", ["Verlet", "RK45", "DOP853", "LSODA"])
 @pytest.mark.parametrize("rtol", [1e-4, 1e-8])
@@ -53,6 +55,7 @@ def test_pendulum_other_methods(theta0, method, rtol):
     check(out, pendulum_reference(theta0), 1)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("theta0", [1.0, 2.5])
 @pytest.mark.parametrize("method", ["Radau", "BDF"])
 @pytest.mark.parametrize("rtol", [1e-4, 1e-7])

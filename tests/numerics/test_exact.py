@@ -57,6 +57,7 @@ def test_near_separatrix_the_pendulum_lingers_at_the_top():
     assert sol(np.array([10.0]))[0, 0] < 0.0  # on the other side after one half period
 
 
+@pytest.mark.slow
 def test_recognising_the_exact_cases():
     k = np.array([2.0, 9.81, 0.5])
     assert pendulum_frequency(system_for("simple-pendulum"), k) == pytest.approx(9.81 / 0.5, rel=1e-12)
@@ -74,6 +75,7 @@ def test_recognising_the_exact_cases():
     assert exact_solution(system_for("tabletop-spring"), np.ones(2), np.array([1.0, 0, 0, 1.0])) is None
 
 
+@pytest.mark.slow
 def test_linear_systems_are_recognised_and_solved_by_their_normal_modes():
     from app.numerics.exact import linear_coefficients
 

@@ -64,6 +64,7 @@ def test_coefficients():
     assert abs(radau.E @ Z) < 1e-14
 
 
+@pytest.mark.slow
 def test_exact_for_polynomials_of_degree_five():
     """Collocation at three Radau points integrates y' = g(t) exactly for g of degree 4 (quadrature order 5),
     not for degree 5: y' = 5 t^4 ends at t^5 to round-off, y' = 6 t^5 does not (coarse steps)."""
@@ -89,6 +90,7 @@ def test_exact_for_polynomials_of_degree_five():
     assert errors[0] < 1e-12 < 1e-6 < errors[1]
 
 
+@pytest.mark.slow
 def test_two_modes_against_the_matrix_exponential(two_modes):
     """k/m = 1 and 1e8, both damped, both excited at the start: every sample within a few times rtol of
     exp(A t) y0, in far fewer steps than the fast period would need (2 pi / 1e4 s over 10 s: 1e5 periods)."""
@@ -118,6 +120,7 @@ def test_order_five_at_the_step_ends(two_modes):
     assert -6.0 < slope < -4.2, (slope, steps, errors)
 
 
+@pytest.mark.slow
 def test_dense_output_between_the_steps(two_modes):
     """Samples inside the steps come from the collocation cubic: at rtol 1e-6 every one of 4001 samples is
     within 1e-6 of the exact motion (a straight line between step ends would be off by about 1e-5 here)."""
@@ -208,6 +211,7 @@ def test_robertson_against_a_tight_scipy_radau():
     assert (np.abs(Y_fd - reference.y.T) / (atol + 1e-7 * np.abs(reference.y.T))).max() < 10.0
 
 
+@pytest.mark.slow
 def test_auto_estimate_bounds_the_true_error(two_modes):
     """auto on a stiff start (the fast mode quiet) picks the compiled Radau, and its reported error estimate
     (the compiled Radau again, 1000x tighter) is above the true error and not far above it."""

@@ -25,12 +25,14 @@ def test_a_particle_of_zero_mass_is_named_too():
     assert "m = 0" in why(system, [1.0, 0.0], [0.0])
 
 
+@pytest.mark.slow
 def test_a_function_outside_its_domain_names_the_function_and_the_value():
     system = System(("x",), kinetic="x_dot**2/2", potential="acos(x)")
     message = why(system, [2.0, 0.0])
     assert "acos(x) is not defined at x = 2" in message and "[−1, 1]" in message
 
 
+@pytest.mark.slow
 def test_an_overflow_names_the_expression_that_overflows():
     system = System(("x",), kinetic="x_dot**2/2", potential="exp(exp(exp(exp(x))))")
     message = why(system, [5.0, 0.0])
@@ -42,6 +44,7 @@ def test_a_division_by_zero_names_the_denominator():
     assert "1/r divides by zero at r = 0" in why(system, [0.0, 0.0])
 
 
+@pytest.mark.slow
 def test_a_singular_point_of_the_coordinates_is_still_called_that():
     system = System(("r", "theta"), kinetic="(r_dot**2 + r**2*theta_dot**2)/2", potential="r**2/2")
     message = why(system, [0.0, 0.0, 0.0, 1.0])

@@ -152,6 +152,7 @@ def test_stiffness_is_detected():
     assert run.complete and not run.stiff_detected
 
 
+@pytest.mark.slow
 def test_kernel_follows_the_exact_pendulum():
     s = system_for("simple-pendulum")
     y0 = np.array([2.5, 0.0])

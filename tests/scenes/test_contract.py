@@ -40,6 +40,7 @@ def test_scene_block_and_errata(scene_id):
     assert all(not e["chapter_latex"] for e in doc["errata"] if e["chapter_words"])
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
 def test_constraint_forces_are_functions_of_the_state(scene_id):
     doc = derivation_document(scene_id)

@@ -190,6 +190,7 @@ def test_the_tabletop_radial_speed_has_both_signs_and_the_pages_letter(client):
     assert "E_{r}" not in speed + integrand and "2 E -" in speed.replace("\\left(", "")
 
 
+@pytest.mark.slow
 def test_errata_quote_words_as_words_and_vectors_in_textbook_order(client):
     # prof-e 15: a remark about the chapter's statement typeset in the maths font
     first = client.get("/api/scenes/incline-block/derivation").json()["errata"][0]

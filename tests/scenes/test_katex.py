@@ -12,10 +12,14 @@ from app.service.derivations import derivation_document
 
 ROOT = Path(__file__).resolve().parents[2]
 
-pytestmark = pytest.mark.skipif(
-    shutil.which("node") is None or not (ROOT / "node_modules" / "katex").is_dir(),
-    reason="node and katex are installed with the front-end assets",
-)
+# slow: out of the fast tier (scripts/test-fast.sh), each test over 0.3 s (docs/testing.md)
+pytestmark = [
+    pytest.mark.slow,
+    pytest.mark.skipif(
+        shutil.which("node") is None or not (ROOT / "node_modules" / "katex").is_dir(),
+        reason="node and katex are installed with the front-end assets",
+    ),
+]
 
 
 def formulas(doc):

@@ -6,6 +6,7 @@ The derivation is checked against sympy.physics.mechanics built here from the ph
 declaration: a RigidBody with its own inertia dyadic about the axle, turned by z/R as the string does not slip.
 """
 
+import pytest
 import sympy as sp
 import sympy.physics.mechanics as me
 
@@ -44,6 +45,7 @@ def _reference() -> tuple[sp.Expr, sp.Expr]:
     return T.subs(plain), acceleration.subs(plain)
 
 
+@pytest.mark.slow
 def test_the_engine_agrees_with_sympy_physics_mechanics():
     d = derivation("massive-pulley")
     T, acceleration = _reference()

@@ -16,11 +16,13 @@ def same(a, b):
     return sp.simplify(a - b) == 0
 
 
+@pytest.mark.slow
 def test_simple_pendulum_tension():
     # radial Newton's law with the string along -r_hat: T - m g cos(theta) = m R theta_dot^2
     assert same(force("simple-pendulum", "string tension"), m * R * theta_dot**2 + m * g * sp.cos(theta))
 
 
+@pytest.mark.slow
 def test_damped_pendulum_loses_energy_at_the_rate_of_the_drag():
     d = derivation("damped-pendulum")
     # dE/dt = Q theta_dot = -b theta_dot^2
@@ -44,6 +46,7 @@ def test_the_damped_pendulums_stated_drag_is_the_engines_generalized_force():
     assert same(force_on_bob.dot(tangent), d.mechanics.Q[0]) and same(d.mechanics.Q[0], -b * theta_dot)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("theta0", [1.9, 2.3, 2.8])
 def test_conical_pendulum(theta0):
     """Steady circling at theta0 (below the pivot): Newton fixes the rate, the engine's U_eff is flat there."""
@@ -65,11 +68,13 @@ def test_conical_pendulum(theta0):
     assert close(force("spherical-pendulum", "string tension"), tension, state)
 
 
+@pytest.mark.slow
 def test_spherical_pendulum_tension():
     expected = m * R * (theta_dot**2 + sp.sin(theta) ** 2 * phi_dot**2) - m * g * sp.cos(theta)
     assert same(force("spherical-pendulum", "string tension"), expected)
 
 
+@pytest.mark.slow
 def test_helix_bead():
     d = derivation("helix-bead")
     # along the wire s = z sqrt(1 + R^2 alpha^2), gravity's share is g / sqrt(1 + R^2 alpha^2)
@@ -82,12 +87,14 @@ def test_helix_bead():
     assert same(force("helix-bead", "wire force across the helix"), expected)
 
 
+@pytest.mark.slow
 def test_incline_block():
     d = derivation("incline-block")
     assert same(d.equations.accelerations[0], -g * sp.sin(alpha))
     assert same(force("incline-block", "normal force"), m * g * sp.cos(alpha))
 
 
+@pytest.mark.slow
 def test_movable_incline_against_newton():
     d = derivation("movable-incline")
     A, xb, zb, N = sp.symbols("A xb zb N")
@@ -113,6 +120,7 @@ def test_movable_incline_against_newton():
     assert same(force("movable-incline", "floor force on the wedge"), M * g + solution[N] * sp.cos(alpha))
 
 
+@pytest.mark.slow
 def test_pulley_against_newton():
     d = derivation("pulley")
     a1, a2, T = sp.symbols("a1 a2 T")
@@ -131,6 +139,7 @@ def test_pulley_against_newton():
     assert same(force("pulley", "string tension").subs(balanced), m1 * g)
 
 
+@pytest.mark.slow
 def test_rail_two_body_reduced_mass():
     d = derivation("rail-two-body")
     x1, x2 = S("x1"), S("x2")
@@ -152,6 +161,7 @@ def test_rail_two_body_reduced_mass():
     assert same(eq.position, l0) and same(eq.omega_squared, k / mu)
 
 
+@pytest.mark.slow
 def test_tabletop_reduction():
     d = derivation("tabletop-spring")
     red = d.reduction
@@ -172,6 +182,7 @@ def test_tabletop_reduction():
     assert same(orbit.omega_squared, 4 * k / m) and orbit.stable
 
 
+@pytest.mark.slow
 def test_rotating_parabola_h_conserved_energy_not():
     d = derivation("rotating-parabola")
     en = d.energetics

@@ -3,6 +3,7 @@ declared as a rigid body on a moving support, its derivation checked against Sym
 (``sympy.physics.mechanics``: a ``RigidBody`` and ``LagrangesMethod``) and its accelerations against a closed form
 worked out by hand with Newton's laws, then compared with the block that slides on the chapter's wedge."""
 
+import pytest
 import sympy as sp
 from sympy.physics import mechanics as me
 
@@ -52,6 +53,7 @@ def _as_engine(expr, d, functions):
     return expr.subs({Xd: qd[0], sd: qd[1]}).subs({X: q[0], s: q[1]})
 
 
+@pytest.mark.slow
 def test_t_and_the_accelerations_are_those_of_sympy_mechanics():
     d = derivation(SCENE)
     T, (Xdd, sdd), functions = _sympy_mechanics()
@@ -120,6 +122,7 @@ def test_the_accelerations_and_the_conserved_momentum_as_a_textbook_prints_them(
     )
 
 
+@pytest.mark.slow
 def test_the_cylinder_never_leaves_the_slope():
     # the slope's push N along its outward normal n = (sin α, cos α): m a_cm · n = N − m g cos α, and
     # a_cm = (Ẍ + s̈ cos α, −s̈ sin α) gives a_cm · n = Ẍ sin α, so N = m (g cos α + Ẍ sin α)

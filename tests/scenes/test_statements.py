@@ -38,6 +38,7 @@ def test_every_scene_has_its_zero_of_u_listed():
     assert set(ZEROS) == set(SCENES)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
 def test_the_statement_names_the_zero_of_u_and_the_engines_u_is_zero_there(scene_id):
     scene = SCENES[scene_id]

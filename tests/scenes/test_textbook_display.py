@@ -219,6 +219,7 @@ def test_running_text_prints_an_expression_in_the_order_of_its_latex(scene_id):
     assert checked >= 1
 
 
+@pytest.mark.slow
 def test_the_conical_motions_frequency_is_printed_in_its_angle_alone():
     """prof-m 5: ω² about the spherical pendulum's cone was printed with p_φ in it, though U_eff′(θ₀) = 0 fixes
     p_φ by θ₀. Derived here from U_eff (θ from the upward vertical): p_φ² = −m²gR³ sin⁴θ₀/cos θ₀, and
@@ -247,6 +248,7 @@ def test_the_conical_motions_frequency_is_printed_in_its_angle_alone():
     assert float(value) == pytest.approx(printed, abs=0.06)
 
 
+@pytest.mark.slow
 def test_the_pulleys_middle_mass_has_its_acceleration_typeset_in_results():
     """prof-m 6: the statement asks for the accelerations of all three masses; Ÿ was only in the prose of the
     accelerations step. It is derived from Y = −(y₁ + y₂)/2 − c and typeset in the step and in Results."""

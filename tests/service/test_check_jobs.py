@@ -43,6 +43,7 @@ def read(pb, text: str):
     return read_answer(text, pb.step, pb.coordinate, pb.kinds)[0]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     "spellings",
     [
@@ -60,6 +61,7 @@ def test_one_expression_in_many_spellings_is_judged_once_with_each_ones_own_verd
     assert fresh_worker["judge_of"] == 1
 
 
+@pytest.mark.slow
 def test_different_answers_are_judged_apart(fresh_worker):
     key, blob, pb = job("simple-pendulum", "kinetic", None)
     right = orjson.loads(check_job(key, blob, read(pb, "m*R**2*theta_dot**2/2")))
@@ -72,6 +74,7 @@ def test_different_answers_are_judged_apart(fresh_worker):
     assert fresh_worker["judge_of"] == 3
 
 
+@pytest.mark.slow
 def test_the_first_verdict_from_the_truth_alone_is_shared_too(fresh_worker):
     key, blob, pb = job("simple-pendulum", "potential", None)
     for text in ("m*g*R*(1 - cos(theta))", "g*m*R*(1 - cos(theta)) + 0*3", "m*g*R - m*g*R*cos(theta)"):
@@ -92,6 +95,7 @@ def test_a_refusal_is_said_in_each_texts_own_words_and_never_remembered(fresh_wo
     assert fresh_worker["judge_of"] == 0 and not check_jobs._verdicts
 
 
+@pytest.mark.slow
 def test_a_follow_up_reply_is_shared_by_its_spellings_and_kept_apart_from_the_step(fresh_worker):
     key, blob, pb = job("movable-incline", "kinetic", None)
     mistake = orjson.loads(check_job(key, blob, read(pb, INCLINE_T)))["follow_up"]["key"]
@@ -104,6 +108,7 @@ def test_a_follow_up_reply_is_shared_by_its_spellings_and_kept_apart_from_the_st
     assert fresh_worker["judge_of"] == 2
 
 
+@pytest.mark.slow
 def test_a_worker_remembers_at_most_its_bound(fresh_worker, monkeypatch):
     monkeypatch.setattr(check_jobs, "MAX_WORKER_VERDICTS", 2)
     key, blob, pb = job("simple-pendulum", "kinetic", None)

@@ -19,6 +19,8 @@ from app.service.user_systems import UserSystems
 from app.settings import Settings
 from tests.web.parse_counting import WORKER, PicklingPool
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
+
 RIGHT_T = "m*R**2*theta_dot**2/2"
 WRONG_T = "m*R**2*theta_dot**2"  # the ½ of ½ m v² left out: a named mistake
 

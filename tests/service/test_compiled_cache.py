@@ -10,6 +10,8 @@ from app.service.compiled import Compiled, system_key
 from app.service.derivations import derivation
 from tests.engine.test_staged import chain
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
+
 
 def test_a_warm_user_system_is_found_without_generating_code(monkeypatch):
     d = derive(chain(2))

@@ -4,11 +4,14 @@ each ``Scenes`` (an app's, or this test's on a temporary disk) holds its own."""
 import json
 import pickle
 
+import pytest
+
 from app.engine.constraints import ConstraintForce
 from app.engine.hamilton import Hamilton
 from app.service.derivations import PROCESS_SCENES, Scenes
 
 
+@pytest.mark.slow
 def test_the_pickled_derivation_carries_the_members_its_document_printed(tmp_path, monkeypatch):
     scenes = Scenes(tmp_path)
     made = scenes.derived("pulley")  # a miss: derived, printed, pickled

@@ -1,9 +1,13 @@
 """The run note of a scene that asks for its Lyapunov exponent, when the exponent cannot be measured now."""
 
+import pytest
+
 from app.numerics.errors import TooMuchWork
 from app.scenes import SCENES
 from app.service import lyapunov
 from app.service.derivations import PROCESS_SCENES
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
 
 
 def test_a_measurement_cut_short_leaves_the_note_without_it_and_nothing_cached(monkeypatch):

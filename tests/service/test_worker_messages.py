@@ -23,6 +23,7 @@ def pool():
     p.stop()
 
 
+@pytest.mark.slow
 def test_a_worker_stopped_by_a_signal_says_so_and_names_it(pool):
     with pytest.raises(JobFailed) as caught:
         pool.run(signal_self, signal.SIGUSR1, timeout=60)
@@ -32,6 +33,7 @@ def test_a_worker_stopped_by_a_signal_says_so_and_names_it(pool):
     assert pool.run(abs, -3, timeout=60) == 3  # the pool heals
 
 
+@pytest.mark.slow
 def test_a_worker_that_exits_gives_its_exit_code_and_does_not_blame_memory(pool):
     with pytest.raises(JobFailed) as caught:
         pool.run(exit_with, 3, timeout=60)

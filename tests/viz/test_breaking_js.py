@@ -14,7 +14,11 @@ from app.scenes import SCENES
 
 JS = Path(__file__).resolve().parents[2] / "static" / "js"
 
-pytestmark = pytest.mark.skipif(shutil.which("node") is None, reason="node is installed with the front-end assets")
+# slow: out of the fast tier (scripts/test-fast.sh), each test over 0.3 s (docs/testing.md)
+pytestmark = [
+    pytest.mark.slow,
+    pytest.mark.skipif(shutil.which("node") is None, reason="node is installed with the front-end assets"),
+]
 
 
 def node(body: str, data):
@@ -46,7 +50,10 @@ def test_no_row_may_end_a_line_with_a_relation():
     assert condition.startswith(r"\delta S =\nobreak  0")
     # a chain a = b = c: each relation holds its right side; the second may begin the next line instead
     chained = node("(m, row) => m.breakable(row)", r"E = \frac{a}{b} = c + d \approx 5.7")
-    assert chained == r"E =\nobreak  \frac{a}{b} \allowbreak =\nobreak  c \allowbreak +\nobreak  d \allowbreak \approx\nobreak  5.7"
+    assert (
+        chained
+        == r"E =\nobreak  \frac{a}{b} \allowbreak =\nobreak  c \allowbreak +\nobreak  d \allowbreak \approx\nobreak  5.7"
+    )
     # only a row wider than its box however it breaks so is broken after a relation as well (the page's second try)
     # the first relation lets go of what follows it; one that continues the equation still begins the next line
     # with what follows it (prof-q 5: the cylinder's "H = Σ p q̇ − L =" ended a line, its fraction below)

@@ -73,6 +73,7 @@ def test_useful_range_is_a_decade_about_the_default():
     assert useful_range(-2.0, -10.0, 10.0) == (-10.0, 10.0, False)  # a signed quantity keeps its range
 
 
+@pytest.mark.slow
 def test_work_precision_only_where_the_reference_is_not_a_polynomial():
     for scene_id in SCENES:
         shown = "work-precision" in page_model(scene_id, None, PROCESS_SCENES)["panels"]

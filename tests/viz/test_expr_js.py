@@ -12,7 +12,11 @@ from app.viz.exprtree import evaluate
 
 EXPR_JS = Path(__file__).resolve().parents[2] / "static" / "js" / "expr.js"
 
-pytestmark = pytest.mark.skipif(shutil.which("node") is None, reason="node is installed with the front-end assets")
+# slow: out of the fast tier (scripts/test-fast.sh), each test over 0.3 s (docs/testing.md)
+pytestmark = [
+    pytest.mark.slow,
+    pytest.mark.skipif(shutil.which("node") is None, reason="node is installed with the front-end assets"),
+]
 
 
 def test_expr_js_evaluates_every_function_like_python():

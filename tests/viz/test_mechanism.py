@@ -31,6 +31,7 @@ def at(spec, index, env):
     return [evaluate(c, env) for c in spec["points"][index]["xyz"]]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("y1, y2", [(0.0, 0.0), (2.5, -3.0), (-1.0, 3.7)])
 def test_pulley_strings_are_vertical_and_keep_their_length(y1, y2):
     spec = spec_of("pulley")
@@ -48,6 +49,7 @@ def test_pulley_strings_are_vertical_and_keep_their_length(y1, y2):
     assert total == pytest.approx(total0, rel=1e-12)
 
 
+@pytest.mark.slow
 def test_pulley_is_as_wide_as_a_fraction_of_its_motion():
     spec = spec_of("pulley")
     env = env_of("pulley", y1=0.0, y2=0.0)  # extents -3..4 on both: W = 0.3 * 14 = 4.2
@@ -106,6 +108,7 @@ def test_constraint_forces_become_arrows_on_their_particle():
     ]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
 def test_every_family_has_a_caption_of_what_it_draws(scene_id):
     assert SCENES[scene_id].family in FAMILIES
@@ -201,6 +204,7 @@ def test_the_ramp_holds_the_block_from_its_foot_to_the_top_of_the_run(alpha, xma
         assert math.hypot(bx - fx, bz - fz) <= slope - 0.15 * xmax - 0.5 + 1e-9
 
 
+@pytest.mark.slow
 def test_the_string_pulls_every_mass_it_holds():
     from app.service.derivations import scene_document
 
@@ -242,6 +246,7 @@ def test_a_surface_given_only_through_the_coordinates_is_said_to_be_undrawn():
     assert "not drawn" not in free["caption"] and "not drawn" not in rod["caption"]
 
 
+@pytest.mark.slow
 def test_a_wheel_given_its_turning_angle_carries_it_and_one_without_does_not(monkeypatch):
     from app.viz import mechanism as module
 
@@ -278,6 +283,7 @@ def test_the_massive_pulley_turns_with_its_string_and_its_strands_hang_from_the_
     assert hanging == pytest.approx(2 * env["d"])
 
 
+@pytest.mark.slow
 def test_the_physical_pendulum_is_a_bar_with_its_centre_of_mass_marked():
     # prof-q 9: a thin rod with a ball at its middle read as a bob on a string; the rod is a body (a bar) from the
     # pivot to its free end, and the point at its middle is its centre of mass, drawn as a mark on it

@@ -20,6 +20,7 @@ def node(module: str, body: str):
     return json.loads(run.stdout)
 
 
+@pytest.mark.slow
 def test_pendulum_turning_points_are_unique_and_bracket_the_motion():
     # released from rest at θ = 1: the level is U(1), the well is [−1, 1], and θ = 1 is both start and turning point
     pts = node(
@@ -42,6 +43,7 @@ def test_only_the_well_that_holds_the_motion():
     assert found == pytest.approx([inner, outer], abs=1e-9)
 
 
+@pytest.mark.slow
 def test_one_sided_and_none():
     one = node("reduction.js", "(m) => m.turningPoints((x) => x - 1, -4, 4, 0)")  # a slope: turns at x = 1 only
     assert one == pytest.approx([1], abs=1e-9)
@@ -81,6 +83,7 @@ def test_values_below_their_resolution_read_as_zero():
     assert out == ["≈ 0", "0.25", "−5 × 10⁻⁷"]
 
 
+@pytest.mark.slow
 def test_the_run_status_says_what_its_error_is_of_and_in_which_unit():
     # prof-e 3: "Simulated 10 s · error ≈ 10⁻⁸ · computed in 0.53 ms" named no quantity and no unit, and a run
     # time is no part of the physics
@@ -115,6 +118,7 @@ def test_a_number_shows_no_digit_finer_than_its_resolution_and_a_difference_thre
     assert out == ["−6.22 %", "−6.22 %", "−6.2 %", "≈ 0 %", "2.486", "2.486", "2.486", "−1.23 × 10⁶"]
 
 
+@pytest.mark.slow
 def test_a_box_value_that_prints_as_a_bound_is_that_bound():
     # prof-l 1: the angle slider at its end puts 3.142 in the box, which is past π; read as π, it is allowed
     found = node("controls.js", "(m) => [m.snapToBounds(3.142, -Math.PI, Math.PI), m.snapToBounds(-3.142, -Math.PI, "
@@ -122,6 +126,7 @@ def test_a_box_value_that_prints_as_a_bound_is_that_bound():
     assert found == [math.pi, -math.pi, 3.15, 1.5]
 
 
+@pytest.mark.slow
 def test_a_ranges_ends_carry_only_the_figures_its_size_gives():
     # prof-n 11: "U from 1.391 × 10⁻⁵ to 4.51 J" on the simple pendulum, whose least U is 0, passed between samples.
     # A parabola sampled every 0.1 s with its zero at 0.31 s, between two samples: its least sample, 1.05 × 10⁻⁴, is a

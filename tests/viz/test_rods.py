@@ -26,6 +26,7 @@ def test_double_pendulum_numerically_two_rods_and_a_pivot():
     assert spec["axes"] == ["x", "y"]  # the example's vertical is y
 
 
+@pytest.mark.slow
 def test_double_pendulum_symbolically_from_the_engine():
     system = System(
         coordinates=("theta1", "theta2"),

@@ -29,6 +29,7 @@ def start(m) -> dict[str, float]:
     return {c["name"]: float(c["value"]) for c in m["initial"]}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     ("spec", "rate"),
     [
@@ -68,6 +69,7 @@ PENDULUM = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("spec", "letter"), [(PENDULUM, "I_eff"), (KEPLER, "m_eff")])
 def test_the_small_oscillation_panel_names_the_inertia_as_the_steps_do(spec, letter):
     # prof-n 5: "predicted from ω² = U_eff″/m_eff" beside a pendulum whose steps print I_eff = m R²

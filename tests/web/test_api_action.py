@@ -33,6 +33,7 @@ def test_scene_action_is_a_saddle_past_the_focus(client):
     assert a["conjugate_time"] == pytest.approx(math.pi / math.sqrt(9.81), rel=1e-4)
 
 
+@pytest.mark.slow
 def test_user_system_action_runs_in_the_pool(client):
     T = 1.5
     r = client.post(
@@ -52,6 +53,7 @@ CYCLOTRON = {
 }
 
 
+@pytest.mark.slow
 def test_cyclotron_focus_where_det_j_only_touches_zero(client):
     # a charge in a uniform field, ω_c = qB/m = 2: every path from a point meets it again after 2π/ω_c = π,
     # while det J = 2(1 - cos ω_c t)/ω_c² never turns negative
@@ -80,6 +82,7 @@ def test_bad_requests_are_refused_with_a_reason(client, body, words):
     assert r.status_code == 422 and words in r.json()["detail"], r.text
 
 
+@pytest.mark.slow
 def test_unknown_scene_and_user_refusals(client):
     assert client.post("/api/scenes/nope/action", json={"t_end": 1}).status_code == 404
     r = client.post("/api/action", json={"system": OSCILLATOR, "t_end": 1, "coordinate": "y"})
@@ -110,6 +113,7 @@ def test_bad_relax_requests_are_refused(client, body, words):
     assert r.status_code == 422 and words in r.json()["detail"], r.text
 
 
+@pytest.mark.slow
 def test_user_system_relax_runs_in_the_pool(client):
     r = client.post("/api/action/relax", json={"system": OSCILLATOR, "t_end": 0.5, "start": {"x": 0}, "end": {"x": 1}})
     assert r.status_code == 200, r.text

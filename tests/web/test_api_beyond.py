@@ -63,6 +63,7 @@ def test_scene_modes_refuse_bad_parameters(client, body, status, words):
     assert r.status_code == status and words in r.text
 
 
+@pytest.mark.slow
 def test_user_system_modes_and_section_run_in_the_pool(client):
     r = client.post("/api/modes", json=SYSTEM)
     assert r.status_code == 200

@@ -53,6 +53,7 @@ def once_each(counted: Counted, text: str) -> None:
     assert counted.sympy_reads[text] == 0
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     ("step", "coordinate", "answer", "verdict"),
     [
@@ -70,6 +71,7 @@ def test_a_scene_answer_is_read_once_and_built_once(client, pool, counted, step,
     once_each(counted, answer)  # (the gates read the text without its surrounding spaces)
 
 
+@pytest.mark.slow
 def test_a_follow_up_answer_on_a_scene_is_read_once_and_built_once(client, pool, counted):
     question = client.post(URL, json={"step": "kinetic", "answer": WRONG_T}).json()["follow_up"]
     assert question is not None
@@ -101,6 +103,7 @@ def test_a_typeset_answer_is_read_once_and_built_once(client, pool, counted):
     once_each(counted, answer)
 
 
+@pytest.mark.slow
 def test_a_follow_up_on_a_declared_system_is_read_once_in_the_worker(client, pool, counted):
     """A declared system's mistakes (and so the names a follow-up's answer may use) are known only once it is
     derived: that answer is read in the worker, once, and built there once."""

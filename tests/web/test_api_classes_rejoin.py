@@ -14,6 +14,7 @@ from tests.web.test_api_classes import RIGHT_T, WRONG_T, bearer, check, new_clas
 CODE = re.compile(r"[ACEFHKMNPRTWXY3479]{4}-[ACEFHKMNPRTWXY3479]{4}-[ACEFHKMNPRTWXY3479]{4}")
 
 
+@pytest.mark.slow
 def test_a_student_gets_back_to_their_record_on_another_device(client, classes):
     code, teacher = new_class(client)
     joined = client.post(f"/api/classes/{code}/join", json={"name": "ana"}).json()
@@ -69,6 +70,7 @@ def test_a_wrong_code_or_name_opens_nothing_and_says_why(client, classes, name, 
     assert client.get(f"/api/classes/{code}/me", headers=bearer(ana["student_key"])).status_code == 200
 
 
+@pytest.mark.slow
 def test_the_teacher_gives_a_student_a_new_code(client, classes):
     code, teacher = new_class(client)
     ana = client.post(f"/api/classes/{code}/join", json={"name": "ana"}).json()

@@ -15,6 +15,8 @@ from app.settings import Settings
 from app.web.api_classes import classroom as classroom_dep
 from tests.web.test_api_classes import RIGHT_T, SCENE, WRONG_T, bearer, check
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
+
 
 @pytest.fixture
 def classes(classes_on_both):

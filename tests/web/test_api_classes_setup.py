@@ -8,8 +8,6 @@ import pytest
 
 from tests.web.test_api_classes import bearer, new_class
 
-pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
-
 SPRING = {"coordinates": ["x"], "parameters": ["m", "k"], "kinetic": "m*x_dot**2/2", "potential": "k*x**2/2"}
 SETUP = "x is the stretch of the spring from its natural length, positive to the right.\nU = 0 at x = 0."
 PENDULUM = {"coordinates": ["theta"], "parameters": ["m", "l", "g", "b"],
@@ -67,6 +65,7 @@ def test_students_see_the_set_up_and_what_the_system_is_defined_by(client, class
     assert mine["assignments"][0]["items"][0]["given"] == item["given"]
 
 
+@pytest.mark.slow
 def test_particles_and_forces_are_typeset_as_typed(client, classes):
     code, teacher = new_class(client)
     setup = "θ is the angle of the rod from the downward vertical; U = 0 at the pivot's height."

@@ -3,7 +3,11 @@
 
 from __future__ import annotations
 
+import pytest
+
 from app.engine.names import unicode
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
 
 
 def test_the_quoted_term_comes_with_its_latex_in_the_students_order(client):

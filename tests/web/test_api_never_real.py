@@ -14,6 +14,7 @@ def test_a_potential_real_nowhere_is_a_422_naming_it(client, potential):
     assert "not a real number anywhere" in text and "at x = " in text and "potential" in text
 
 
+@pytest.mark.slow
 def test_l_equal_to_u_minus_t_derives_with_its_equilibrium(client):
     body = {"coordinates": ["x"], "parameters": ["m", "k"], "lagrangian": "k*x**2/2 - m*x_dot**2/2"}
     response = client.post("/api/derive", json=body)

@@ -3,9 +3,12 @@ its slips named, another origin accepted, and a bad component refused with what 
 
 from __future__ import annotations
 
+import pytest
+
 from tests.engine.check_corpus import CART_PENDULUM
 
 
+@pytest.mark.slow
 def test_the_wedges_practice_starts_with_the_positions_and_says_the_axes(client):
     body = client.get("/api/scenes/movable-incline/practice").json()
     first = [(e["step"], e["coordinate"]) for e in body["exercises"][:4]]
@@ -19,6 +22,7 @@ def test_the_wedges_practice_starts_with_the_positions_and_says_the_axes(client)
     assert body["exercises"][2].get("note") is None
 
 
+@pytest.mark.slow
 def test_the_cylinders_practice_asks_its_centre_where_the_wedges_motion_enters(client):
     body = client.get("/api/scenes/rolling-cylinder-wedge/practice").json()
     first = [(e["step"], e["coordinate"], e["title"]) for e in body["exercises"][:3]]
@@ -35,6 +39,7 @@ def test_the_cylinders_practice_asks_its_centre_where_the_wedges_motion_enters(c
     assert right.json()["verdict"] == "correct", right.text
 
 
+@pytest.mark.slow
 def test_the_wedges_x_left_out_of_the_blocks_is_named(client):
     url = "/api/scenes/movable-incline/check"
     wrong = client.post(url, json={"step": "position", "coordinate": "x2", "answer": "D*cos(alpha)"})
@@ -62,6 +67,7 @@ def test_another_origin_is_equivalent_and_says_so(client):
     )
 
 
+@pytest.mark.slow
 def test_a_declared_system_with_particles_has_positions_and_the_same_tutor(client):
     listed = client.post("/api/practice", json=CART_PENDULUM)
     assert listed.status_code == 200, listed.text

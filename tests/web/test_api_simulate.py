@@ -38,6 +38,7 @@ def test_simulate_every_scene(client, scene_id):
     assert isinstance(doc["conserved"], dict) and isinstance(doc["constraint_forces"], dict)
 
 
+@pytest.mark.slow
 def test_requested_method_and_tolerances(client):
     body = {"initial": {"theta": 2.0}, "method": "RK45", "rtol": 1e-6, "atol": 1e-9, "samples": 11, "t_end": 2.0}
     doc = client.post("/api/scenes/simple-pendulum/simulate", json=body).json()
@@ -94,6 +95,7 @@ def test_unknown_scene_is_404(client):
     assert client.get("/api/scenes/nope/work-precision").status_code == 404
 
 
+@pytest.mark.slow
 def test_too_much_work_is_422_not_a_hang(client, services, override):
     override(simulation_gates, Gates(offload=services.scenes.run, wall_seconds=0.3))  # a short time budget
     body = {"initial": {}, "parameters": {"k": 1000}, "t_end": 1000, "method": "LSODA", "rtol": 1e-10}
@@ -128,6 +130,7 @@ def test_the_bead_flung_out_leaves_the_wire_at_its_end(client):
     assert client.post("/api/scenes/rotating-parabola/simulate", json=body).json()["stats"]["event"] is None
 
 
+@pytest.mark.slow
 def test_runaway_stops_with_a_message(client):
     # an inverted oscillator, ẍ = x: x grows as e^t with nothing to end it
     body = {"coordinates": ["x"], "parameters": [], "lagrangian": "x_dot**2/2 + x**2/2", "initial": {"x": 0.5},
@@ -137,6 +140,7 @@ def test_runaway_stops_with_a_message(client):
     assert len(doc["t"]) < 500 and any("ran away" in w for w in doc["stats"]["warnings"])
 
 
+@pytest.mark.slow
 def test_work_precision_endpoint(client, monkeypatch, tmp_path, override):
     monkeypatch.setattr(work_precision, "SWEEP", [1e-3, 1e-6])
     override(remembered_answers, Answers.start(tmp_path))  # the route's caches, empty, on a disk of their own

@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import pytest
+
 from tests.engine.check_corpus import CART_PENDULUM
 
 
+@pytest.mark.slow
 def test_a_scene_mistake_is_named_and_its_follow_up_is_checked(client):
     url = "/api/scenes/spherical-pendulum/check"
     wrong = client.post(url, json={"step": "kinetic", "answer": "m*R**2*theta_dot**2/2"})
@@ -36,6 +39,7 @@ def test_an_unknown_follow_up_is_refused_naming_the_field(client):
     assert response.json()["loc"] == ["body", "follow_up"] and "nonsense" in response.json()["detail"]
 
 
+@pytest.mark.slow
 def test_a_declared_system_gets_the_same_tutor(client):
     wrong = client.post(
         "/api/check",
@@ -52,6 +56,7 @@ def test_a_declared_system_gets_the_same_tutor(client):
     assert answer.json()["verdict"] == "correct"
 
 
+@pytest.mark.slow
 def test_an_unmatched_answer_says_which_parts_agree(client):
     body = client.post(
         "/api/scenes/spherical-pendulum/check",

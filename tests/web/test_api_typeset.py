@@ -19,6 +19,7 @@ def typeset(client, text: str, **context):
     return client.post("/api/typeset", json={"text": text, **(context or SCENE)})
 
 
+@pytest.mark.slow
 def test_the_corpus_is_accepted_and_refused_as_the_checker_does(client):
     for text in CORPUS["accepted"]:
         response = typeset(client, text)
@@ -31,6 +32,7 @@ def test_the_corpus_is_accepted_and_refused_as_the_checker_does(client):
         assert case["says"] in refusal["detail"] and refusal["loc"] == ["body", "text"], case
 
 
+@pytest.mark.slow
 def test_a_refusal_is_word_for_word_the_checkers(client):
     url = f"/api/scenes/{CORPUS['scene']}/check"
     for case in CORPUS["refused"]:

@@ -7,6 +7,8 @@ import pytest
 from app.web.playground_form import form_of, query_of
 from tests.engine.test_energetics import KAPITZA
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
+
 
 def lagrangian_spec(lagrangian):
     return {

@@ -44,6 +44,7 @@ def test_an_empty_form_says_what_to_enter(client):
     assert 'action="/playground#outcome"' in html
 
 
+@pytest.mark.slow
 def test_derive_lands_on_the_result_and_labels_are_not_doubled(client):
     html = client.get("/playground?" + urlencode({**query_of(form_of(SPINNING_HOOP)), "stage": "whole"}, doseq=True)).text
     # the anchor "Derive" lands on sits just before the simulation
@@ -52,6 +53,7 @@ def test_derive_lands_on_the_result_and_labels_are_not_doubled(client):
     assert labels and all(sym.strip() != desc.strip() for sym, desc in labels)
 
 
+@pytest.mark.slow
 def test_the_page_derives_and_renders_the_steps(client):
     response = client.get("/playground?" + urlencode({**query_of(form_of(SPINNING_HOOP)), "stage": "whole"}, doseq=True))
     assert response.status_code == 200
@@ -66,6 +68,7 @@ def test_the_page_derives_and_renders_the_steps(client):
     assert system["lagrangian"] == SPINNING_HOOP["lagrangian"]
 
 
+@pytest.mark.slow
 def test_the_double_pendulum_is_drawn_with_a_pivot_and_two_rods(client):
     response = client.get("/playground?" + urlencode({**query_of(form_of(DOUBLE_PENDULUM)), "stage": "whole"}, doseq=True))
     data = json.loads(
@@ -80,6 +83,7 @@ def test_the_double_pendulum_is_drawn_with_a_pivot_and_two_rods(client):
     assert "hoop the bead rides on) and the fixed pivot" in mech["caption"]
 
 
+@pytest.mark.slow
 def test_system_json_in_the_address_works_too(client):
     response = client.get("/playground?" + urlencode({"system": json.dumps(FORCED_SPRING)}))
     assert response.status_code == 200 and 'value="x"' in response.text
@@ -140,6 +144,7 @@ def test_the_page_issues_a_session(client):
     assert "lagrange_session" in response.cookies
 
 
+@pytest.mark.slow
 def test_parameter_ranges_read_as_a_reader_writes_them(client):
     """A positive quantity left without bounds is "more than 0, up to" a round power of ten, with its unit typeset
     (never "1e-09 to 11 kg" or "m/s^2"); a signed one a symmetric round range with a true minus sign."""
@@ -157,6 +162,7 @@ def test_parameter_ranges_read_as_a_reader_writes_them(client):
     assert not any("e-0" in text or "^" in text for text in hints.values()), hints
 
 
+@pytest.mark.slow
 def test_a_charge_in_a_uniform_field_starts_moving_and_the_page_says_why(client):
     """V ≡ 0: every configuration is an equilibrium, so a start at rest would show nothing; the playground starts
     x moving at 1 m/s and says so under the initial conditions, with the rate's unit (prof-f 35: "1 per second")."""
@@ -177,6 +183,7 @@ def test_a_charge_in_a_uniform_field_starts_moving_and_the_page_says_why(client)
     assert start and float(start[1]) == 1.0
 
 
+@pytest.mark.slow
 def test_a_name_of_several_letters_is_one_upright_name_with_the_dot_over_all_of_it(client):
     # prof-g 56: a coordinate th was typeset as t·ḣ ("r² tḣ²", "cos th", "∂L/∂tḣ"); theta stays θ
     response = client.post(

@@ -106,6 +106,7 @@ def test_a_lagrangian_singular_at_rest_is_a_422_saying_why(client):
     assert "singular at rest (ẋ = 0)" in detail and "invertible at q̇ = 0" in detail
 
 
+@pytest.mark.slow
 def test_the_playground_lists_the_example_and_derives_it(client):
     page = client.get("/playground")
     assert "Relativistic oscillator" in page.text

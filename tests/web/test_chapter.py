@@ -1,6 +1,8 @@
 """The scenes' derivations, documents and compiled systems reach the routes as the app's ``Scenes``
 (``Services.chapter``, ``ChapterDep``); a test gives the routes its own instead of patching a module."""
 
+import pytest
+
 from app.service.answers import Answers
 from app.service.derivations import PROCESS_SCENES, Scenes
 from app.web.deps import remembered_answers, scenes_chapter
@@ -27,6 +29,7 @@ def test_the_app_serves_the_one_copy_of_the_process(services):
     assert services.chapter is PROCESS_SCENES
 
 
+@pytest.mark.slow
 def test_the_scene_routes_read_the_scenes_they_are_given(client, override):
     mine = override(scenes_chapter, Asked())
     override(remembered_answers, Answers.start())  # nothing remembered from another test's requests

@@ -9,8 +9,12 @@ import io
 import re
 from datetime import timedelta
 
+import pytest
+
 from app.service.classroom import store
 from app.service.classroom.database import now
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
 
 SCENE = "simple-pendulum"
 RIGHT_T = "m*R**2*theta_dot**2/2"

@@ -39,6 +39,7 @@ def test_an_embed_page_holds_the_mechanism_and_its_controls_and_nothing_else(cli
     assert '<form id="controls" class="controls" aria-label="Simulation settings" novalidate>' in html
 
 
+@pytest.mark.slow
 def test_the_compact_view_keeps_the_animation_and_one_panel_and_hides_the_form(client):
     page = client.get("/embed/scenes/pulley?view=compact&panel=energy")
     assert page.status_code == 200

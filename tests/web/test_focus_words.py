@@ -85,6 +85,7 @@ def test_no_page_denies_a_focus_the_server_finds_before_the_run_ends():
             assert "no kinetic focus comes before" not in said["focus"], (scene, said["focus"])
 
 
+@pytest.mark.slow
 def test_the_tabletop_names_which_variations_reach_a_focus():
     # prof-e 17: "Vary r" said "No kinetic focus before 10 s" while the derivation puts the focus at π √(m/k);
     # the focus of r and θ together is a touch of det J (the server's), and r or θ alone reaches none in the run
@@ -109,6 +110,7 @@ def test_the_tabletop_names_which_variations_reach_a_focus():
     assert said_past["marks"] == [{"t": pytest.approx(1.5707963, rel=1e-6), "text": "focus: r and θ together"}]
 
 
+@pytest.mark.slow
 def test_the_spherical_pendulum_marks_each_focus_with_its_family():
     # prof-e 22: the t* marker (0.8159 s) was on the plot without saying which variations it refers to
     case = _case("spherical-pendulum", 0, 2.0)

@@ -5,6 +5,7 @@ import pytest
 from app.web.headers import CSP
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     ("method", "path", "status"),
     [

@@ -95,6 +95,7 @@ def test_a_body_that_is_not_json_gets_415(client, media):
     assert "application/json" in body["detail"] and response.headers["accept-post"] == "application/json"
 
 
+@pytest.mark.slow
 def test_json_under_another_json_media_type_is_read(client):
     response = client.post(
         "/api/typeset",
@@ -104,6 +105,7 @@ def test_json_under_another_json_media_type_is_read(client):
     assert response.status_code == 200, response.text
 
 
+@pytest.mark.slow
 def test_a_created_class_says_where_it_is(client, classes):
     response = client.post("/api/classes", json={"title": "Mechanics"})
     assert response.status_code == 201
@@ -135,6 +137,7 @@ def test_a_compressed_answer_has_the_same_etag(client):
     assert packed.headers.get("content-encoding") == "gzip" and packed.headers["etag"] == plain.headers["etag"]
 
 
+@pytest.mark.slow
 def test_class_answers_are_never_given_an_etag(client, classes):
     created = client.post("/api/classes", json={"title": "Mechanics"}).json()
     view = client.get(

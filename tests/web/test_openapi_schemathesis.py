@@ -23,6 +23,10 @@ from app.service.user_systems import UserSystems
 from app.settings import Settings
 from app.web import deps
 
+# every test here is slow; marked as a module, the module is not even imported in the fast tier, where building
+# its generated cases took most of the collection's time
+pytestmark = pytest.mark.slow
+
 # The schema comes from the app object itself: no request and no start-up (``from_asgi`` runs the app's
 # lifespan while the suite is collected).  schemathesis.pytest.from_fixture would defer it to a fixture,
 # but fails under pytest 9 (it sets ``node._nodeid``).
@@ -67,14 +71,12 @@ def _conforms(case, services) -> None:
         app.dependency_overrides.pop(deps.services)
 
 
-@pytest.mark.slow
 @light.parametrize()
 @settings(max_examples=30, deadline=None, suppress_health_check=list(HealthCheck), derandomize=True)
 def test_every_light_operation_conforms_to_its_schema(case, generated_requests_services):
     _conforms(case, generated_requests_services)
 
 
-@pytest.mark.slow
 @heavy.parametrize()
 @settings(max_examples=6, deadline=None, suppress_health_check=list(HealthCheck), derandomize=True)
 def test_every_heavy_operation_conforms_to_its_schema(case, generated_requests_services):

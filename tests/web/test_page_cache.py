@@ -13,6 +13,7 @@ def _never():
     pytest.fail("built again although the app's cache holds it")
 
 
+@pytest.mark.slow
 def test_a_scene_page_fills_the_cache_the_route_is_given(client, override):
     pages = override(page_cache, PageCache())
     first = client.get("/scenes/simple-pendulum", headers={"Accept-Encoding": "identity"})
@@ -25,6 +26,7 @@ def test_a_scene_page_fills_the_cache_the_route_is_given(client, override):
     assert zipped.content == plain  # the client decodes the kept gzip bytes into the same page
 
 
+@pytest.mark.slow
 def test_the_contents_page_keeps_each_cards_diagram(client, override):
     pages = override(page_cache, PageCache())
     assert client.get("/").status_code == 200

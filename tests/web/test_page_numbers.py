@@ -5,11 +5,14 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import pytest
+
 from app.viz.page_model import SLIDER_STEPS
 
 JS = Path(__file__).resolve().parents[2] / "static" / "js"
 
 
+@pytest.mark.slow
 def test_every_slider_has_the_servers_resolution(client):
     html = client.get("/scenes/double-pendulum").text
     maxima = set(re.findall(r'<input type="range" id="ctl-[^"]+-range" min="0" max="(\d+)"', html))

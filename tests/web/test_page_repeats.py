@@ -11,6 +11,7 @@ from app.scenes import SCENES
 from app.viz.chapter import ABOUT
 
 
+@pytest.mark.slow
 def test_what_the_chapter_is_is_said_on_the_contents_page_and_pointed_to_from_a_scene(client):
     # prof-f 25: the Errata's paragraph about the chapter was copied onto every scene page
     contents = client.get("/").text
@@ -23,6 +24,7 @@ def test_what_the_chapter_is_is_said_on_the_contents_page_and_pointed_to_from_a_
         assert '<a href="/#about-chapter">about the chapter</a>' in page, scene_id
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
 def test_the_reason_h_is_conserved_is_given_once(client, scene_id):
     # prof-f 27: "h is conserved. (The reason is given with the conserved quantities above.)" on every page

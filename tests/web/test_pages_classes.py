@@ -3,6 +3,8 @@
 import json
 import re
 
+import pytest
+
 from app.service import derivations
 
 
@@ -47,6 +49,7 @@ def test_the_qr_code_is_the_short_link_on_this_server(client):
     assert r.content != qr_svg("http://testserver/j/ACK3X9", "QR code of http://testserver/j/ACK3X7")
 
 
+@pytest.mark.slow
 def test_the_home_page_and_the_header_lead_to_the_classes(client):
     home = client.get("/").text
     body = home.split("</header>", 1)[1]  # past the site's header: the home page's own words

@@ -91,6 +91,7 @@ def test_the_panels_speak_plain_words_and_the_focus_families_only_where_there_ar
     assert "family of variations" not in spherical
 
 
+@pytest.mark.slow
 def test_the_practice_says_the_axes_and_origin_in_words_the_figure_supports(client):
     # prof-k 14: "Use the figure's axes … and its origin", beside a figure that draws neither
     served = client.get("/api/scenes/simple-pendulum/practice").json()

@@ -15,6 +15,8 @@ from app.service.action import relax_of_scene
 from app.service.derivations import PROCESS_SCENES
 from app.service.gates import Gates
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
+
 NODE = shutil.which("node")
 VERDICT = Path(__file__).resolve().parents[2] / "static" / "js" / "action-verdict.js"
 RUN = """

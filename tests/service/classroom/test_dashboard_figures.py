@@ -6,11 +6,15 @@ from __future__ import annotations
 
 from datetime import UTC, datetime, timedelta
 
+import pytest
+
 from app.service.classroom import store
 from app.service.classroom.database import Database
 from app.service.classroom.grades import gradebook
 from app.service.classroom.reports import students, summary
 from app.settings import Settings
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
 
 TU = [{"item": "simple-pendulum", "system": None, "parameters": {},
        "steps": [{"step": "kinetic", "coordinate": None}, {"step": "potential", "coordinate": None}]}]

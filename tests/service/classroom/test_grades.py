@@ -8,6 +8,8 @@ import csv
 import io
 from datetime import timedelta
 
+import pytest
+
 from app.service.classroom import store
 from app.service.classroom.database import Database, now
 from app.service.classroom.grades import gradebook, gradebook_csv
@@ -16,6 +18,7 @@ from app.settings import Settings
 T = [{"item": "simple-pendulum", "system": None, "parameters": {}, "steps": [{"step": "kinetic", "coordinate": None}]}]
 
 
+@pytest.mark.slow
 def test_a_blank_before_the_due_time_a_zero_after_it(tmp_path):
     db = Database(Settings(data_dir=tmp_path))
     try:

@@ -7,11 +7,15 @@ import csv
 import io
 import json
 
+import pytest
+
 from app.service.classroom import store
 from app.service.classroom.database import Database
 from app.service.classroom.grades import gradebook
 from app.service.classroom.reports import export_csv, students, summary
 from app.settings import Settings
+
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
 
 T = [{"item": "simple-pendulum", "system": None, "parameters": {}, "steps": [{"step": "kinetic", "coordinate": None}]}]
 SCENE = "simple-pendulum"

@@ -11,6 +11,8 @@ from app.service.classroom import store
 from app.service.classroom.database import Database
 from app.settings import Settings
 
+pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
+
 
 def test_joining_closed_and_answers_stopped_are_kept_in_the_class(tmp_path):
     db = Database(Settings(data_dir=tmp_path))
