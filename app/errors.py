@@ -2,7 +2,7 @@
 
 Each kind says what went wrong in words for the person who asked; none carries
 an HTTP status.  The web layer maps each kind to one response, for JSON and HTML
-routes alike (app/web/errors.py):
+routes alike (app/web/api/errors.py):
 
 * ``Refused``: the input is not allowed; ``loc`` locates the field, ``part`` and
   ``start``/``end`` the offending piece of its text;

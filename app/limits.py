@@ -15,11 +15,11 @@ DEFAULT_T_END = 10.0  # a run that gives no end time (a scene declares its own, 
 POINCARE_T_END = 200.0  # per orbit of a Poincaré section that gives no end time
 POINCARE_PIECE = 50.0  # simulated time per compiled run of a section (a budget that ends it keeps earlier pieces)
 
-# Bounds of the engine's symbolic work, in units of work (app/engine/work.py: SymPy expressions built,
+# Bounds of the engine's symbolic work, in units of work (app/engine/algebra/work.py: SymPy expressions built,
 # counted whether SymPy's cache answers them or not), never in seconds: what a document holds, how it is
 # shown and what the tutor says are then a function of the input alone, on an idle machine or a loaded one.
 # A bound used up leaves its member out with a note, or keeps a plainer form, never a refusal
-# of the system (app/engine/budget.py); the one clock is the worker job's, at the edge (Settings.derive_seconds).
+# of the system (app/engine/algebra/budget.py); the one clock is the worker job's, at the edge (Settings.derive_seconds).
 # This machine, idle, does about WORK_PER_SECOND units a second on the chapter's derivations (measured on
 # all twelve scenes' documents, CPU time), and each bound below is the time bound it replaced times that
 # rate, so that it ends about where that one did on an idle machine (the seconds are in the comments).
@@ -30,10 +30,10 @@ DISPLAY_WORK = 120_000  # 6 s: the display simplifications of one document, shar
 LARGE_DISPLAY_WORK = 30_000  # 1.5 s
 # The display simplifications of the playground's first stage (the equations and accelerations) share at
 # most this much: the equations are shown in their textbook rows when that is quick, else as the engine
-# wrote them; the whole document shows them again with its own, larger budget (app/service/staged.py).
+# wrote them; the whole document shows them again with its own, larger budget (app/service/users/staged.py).
 FIRST_DISPLAY_WORK = LARGE_DISPLAY_WORK
 # Each member of the document beyond the equations has its own bound; one that uses it up is left out
-# with a note in "skipped" (app/engine/contract.py).
+# with a note in "skipped" (app/engine/document/contract.py).
 MEMBER_WORK = {
     "steps": 160_000,  # 8 s
     "constraint_forces": 60_000,  # 3 s
@@ -62,7 +62,7 @@ CANCEL_WORK = 4_000  # 0.2 s: one cancellation of a quotient while looking for e
 # start's Newton steps), not seconds: the search ends after the start at which this many were used.
 SEARCH_EVALUATIONS = 20_000
 
-# Checking a student's step (app/engine/check.py)
+# Checking a student's step (app/engine/tutor/check.py)
 CHECK_DISPLAY_WORK = 2_400  # 0.12 s: typesetting a difference: past it, the difference is shown expanded
 DIFFERENCE_WORK = 10_000  # 0.5 s at most: a difference's cancelling and trigonometry (what cancels never shows)
 PARTS_WORK = 2_000  # 0.1 s: comparing an unmatched answer part by part

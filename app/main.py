@@ -8,32 +8,39 @@ from typing import Any
 
 from fastapi import FastAPI
 
-from app.service import resident, simulation
-from app.service.derivations import PROCESS_SCENES
-from app.service.memory import freeze_imported, freeze_when_done
+from app.service.chapter.derivations import PROCESS_SCENES
+from app.service.runtime import resident
+from app.service.runtime.memory import freeze_imported, freeze_when_done
 from app.service.services import Services
+from app.service.simulations import simulation
 from app.settings import settings
-from app.web import api_action, api_beyond, api_scenes, docs, embed, errors, limits, openapi, pages, slow_clients
-from app.web.api_check import router as check_router
-from app.web.api_simulate import router as simulate_router
-from app.web.api_staged import router as staged_router
-from app.web.api_typeset import router as typeset_router
-from app.web.api_user import router as user_router
-from app.web.compression import ApiCompression
-from app.web.etags import ETags
-from app.web.headers import SecurityHeaders
-from app.web.page_cache import PageCache
-from app.web.pages_classes import router as classes_router
-from app.web.playground import router as playground_router
-from app.web.playground import warm_examples
-from app.web.templating import static_app
+from app.web.api import action as api_action
+from app.web.api import beyond as api_beyond
+from app.web.api import docs, errors, limits, openapi
+from app.web.api import scenes as api_scenes
+from app.web.api.check import router as check_router
+from app.web.api.simulate import router as simulate_router
+from app.web.api.staged import router as staged_router
+from app.web.api.typeset import router as typeset_router
+from app.web.api.user import router as user_router
+from app.web.http import slow_clients
+from app.web.http.compression import ApiCompression
+from app.web.http.etags import ETags
+from app.web.http.headers import SecurityHeaders
+from app.web.pages import chapter as pages
+from app.web.pages import embed
+from app.web.pages.classes import router as classes_router
+from app.web.pages.playground import router as playground_router
+from app.web.pages.playground import warm_examples
+from app.web.rendering.page_cache import PageCache
+from app.web.rendering.templating import static_app
 
 
 @asynccontextmanager
 async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
-    # the services (worker pool, user systems, checking, simulation slots), given to the routes by app/web/deps.py
+    # the services (worker pool, user systems, checking, simulation slots), given to the routes by app/web/api/deps.py
     config = settings()
-    # the chapter's scenes: this process's one copy (app/service/derivations.py), handed to the routes from here
+    # the chapter's scenes: this process's one copy (app/service/chapter/derivations.py), handed to the routes from here
     services = Services.start(config, PROCESS_SCENES)
     recording = resident.start_recording(config)  # this process's size, for the memory budget of the workers it starts
     # Fill the derivation cache, then load the compiled integrators and the scenes'
@@ -51,7 +58,7 @@ async def lifespan(app: FastAPI) -> AsyncIterator[dict[str, Any]]:
         # then what they loaded lives for the process: out of the garbage collector's full scans
         freeze_when_done(warming, examples)
     try:
-        # the scene pages' models and rendered bytes beside them (app/web/page_cache.py, app/web/deps.py)
+        # the scene pages' models and rendered bytes beside them (app/web/rendering/page_cache.py, app/web/api/deps.py)
         yield {"services": services, "pages": PageCache()}
     finally:
         recording.set()
@@ -63,7 +70,7 @@ app = FastAPI(
     summary="An interactive textbook of Lagrangian mechanics: derivations, simulations and their errors.",
     version="0.1.0",
     lifespan=lifespan,
-    docs_url=None,  # app/web/docs.py serves /docs from our own copy of swagger-ui
+    docs_url=None,  # app/web/api/docs.py serves /docs from our own copy of swagger-ui
     redoc_url=None,  # FastAPI's ReDoc page loads from a CDN
     generate_unique_id_function=openapi.operation_id,
 )

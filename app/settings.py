@@ -171,7 +171,7 @@ class Settings(BaseSettings):
     #     P * (web_process_mb + worker_base_mb + (worker_base_mb + S) + W * (worker_base_mb + J))  <=  budget,
     # so J defaults to the largest value that fits (at most 1024 MB), and a W that leaves a job
     # less than 128 MB is lowered until it does not (a configured J that does not fit, too).  A worker that ends a job above
-    # worker_base_mb + J / 2 resident retires (app/service/worker.py).  P defaults to one per
+    # worker_base_mb + J / 2 resident retires (app/service/runtime/worker.py).  P defaults to one per
     # CPU (at most 2), fewer if the budget cannot give each a worker with a 128 MB job.
     @property
     def web_process_count(self) -> int:

@@ -12,10 +12,10 @@ from __future__ import annotations
 
 import time
 
-from app.engine.budget import display_budget
-from app.engine.contract import DISPLAY_WORK, add_beyond, derivation_json
-from app.engine.derive import derive
-from app.engine.report import Printer
+from app.engine.algebra.budget import display_budget
+from app.engine.derivation.derive import derive
+from app.engine.document.contract import DISPLAY_WORK, add_beyond, derivation_json
+from app.engine.document.report import Printer
 from app.scenes import SCENES
 
 GOAL = 0.25

@@ -27,7 +27,7 @@ from fastapi.testclient import TestClient
 
 from app.main import app
 from app.scenes import SCENES
-from app.service.check_jobs import scene_problem
+from app.service.tutor.check_jobs import scene_problem
 from tests.engine.slip_corpus import CORRECT, SLIPS
 
 ROUNDS = 2

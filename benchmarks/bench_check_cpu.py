@@ -2,8 +2,8 @@
 
 Each tree is measured in a process of its own (``PYTHONPATH`` set to it, its caches read from a copy so nothing
 is written into it): the double pendulum's ten practice steps (bench_classroom's hall), each step's problem
-built as ``app.service.check_jobs`` builds it and sent as its pickle, and every answer read as the web process
-reads it (``read_answer``), then judged as a worker does (``app.service.worker.execute`` of ``check_job``: the
+built as ``app.service.tutor.check_jobs`` builds it and sent as its pickle, and every answer read as the web process
+reads it (``read_answer``), then judged as a worker does (``app.service.runtime.worker.execute`` of ``check_job``: the
 SymPy cache emptied first).  CPU seconds (``time.process_time``) per check, by kind of answer:
 
 * the hall's answers: the engine's step and the step doubled (``2*(…)``), each made a distinct text with
@@ -53,10 +53,11 @@ def measure(checks: int, profile: int) -> dict:
     import io
     import pstats
 
-    from app.engine.answer_sides import read_answer
-    from app.engine.exercises import exercise_json
-    from app.service import check_jobs, derivations
-    from app.service.worker import execute
+    from app.engine.tutor.answer_sides import read_answer
+    from app.engine.tutor.exercises import exercise_json
+    from app.service.chapter import derivations
+    from app.service.runtime.worker import execute
+    from app.service.tutor import check_jobs
 
     steps = []
     for e in exercise_json(derivations.derivation(SCENE))["exercises"][:STEPS]:
@@ -112,12 +113,13 @@ def verdicts() -> dict[str, list[str]]:
     answers (the verdict's bytes, or the refusal's words), whole and of what it decides."""
     import hashlib
 
-    from app.engine.answer_sides import read_answer
-    from app.engine.check import CheckError
-    from app.engine.exercises import exercise_json
+    from app.engine.tutor.answer_sides import read_answer
+    from app.engine.tutor.check import CheckError
+    from app.engine.tutor.exercises import exercise_json
     from app.scenes import SCENES
-    from app.service import check_jobs, derivations
-    from app.service.worker import execute
+    from app.service.chapter import derivations
+    from app.service.runtime.worker import execute
+    from app.service.tutor import check_jobs
     from tests.engine.slip_corpus import CORRECT, SLIPS
 
     out = {}

@@ -7,7 +7,7 @@ emptied before each build:
 * ``none``      every expression printed as the engine made it (no display simplification at all);
 * ``before``    the display simplification this project had before the textbook forms (sin² + cos² = 1
                 collapsed, then SymPy's ``simplify`` within its budget: ``tidy(pythagoras(expr))``);
-* ``forms``     the textbook forms (app.engine.forms), as served.
+* ``forms``     the textbook forms (app.engine.display.forms), as served.
 
 It reports each time, ``forms / none`` (what the forms add over printing alone) and ``forms / before``
 (the goal: no more than before, ≤ 1).  Times are the minimum of REPEATS runs; note the load average.
@@ -26,9 +26,11 @@ from typing import Any
 import sympy as sp
 from sympy.core.cache import clear_cache
 
-from app.engine import forms, report, simplify
-from app.engine.contract import derivation_json
-from app.engine.derive import Derivation, derive
+from app.engine.algebra import simplify
+from app.engine.derivation.derive import Derivation, derive
+from app.engine.display import forms
+from app.engine.document import report
+from app.engine.document.contract import derivation_json
 from app.scenes import SCENES
 from tests.engine.unseen_systems import UNSEEN
 

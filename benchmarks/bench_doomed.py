@@ -1,6 +1,6 @@
 """How much a doomed request delays another session's small derivation (at most 2 s).
 
-The scenario of tests/service/test_doomed_session.py (the service path: cache, fair-share gate, a pool of
+The scenario of tests/service/runtime/test_doomed_session.py (the service path: cache, fair-share gate, a pool of
 two workers): session A sends a twelve-link chain that runs into its hard limit; one second into it, session
 B derives a one-link pendulum no cache holds.  Printed: B's derivation alone and beside the doomed job, and
 the difference (the delay), for each of REPEATS fresh pools, with the load average.
@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import statistics
 
-from tests.service.test_doomed_session import beside_doomed
+from tests.service.runtime.test_doomed_session import beside_doomed
 
 REPEATS = 3
 

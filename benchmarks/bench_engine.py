@@ -17,7 +17,7 @@ import time
 
 from sympy.core.cache import clear_cache
 
-from app.engine.derive import accelerations_only
+from app.engine.derivation.derive import accelerations_only
 from app.scenes import SCENES
 from app.scenes.types import Parameter, Particle, System
 from tests.engine.systems import DOUBLE_PENDULUM

@@ -26,7 +26,7 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from app.engine.derive import derive
+from app.engine.derivation.derive import derive
 from app.numerics.exact import pendulum
 from app.numerics.methods import METHODS, NONSTIFF, Problem
 from app.numerics.observables import build

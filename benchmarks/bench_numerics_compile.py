@@ -26,7 +26,7 @@ for name in ("vern8", "dop853", "composition", "gauss"):  # auto's default first
     t = time.perf_counter()
     __import__(f"app.numerics.kernels.{name}")
     timings[f"kernel {name}"] = time.perf_counter() - t
-from app.engine.derive import derive
+from app.engine.derivation.derive import derive
 from app.numerics.system import numeric_system
 from app.scenes import SCENES
 for scene in ("simple-pendulum", "spherical-pendulum"):

@@ -25,12 +25,12 @@ import time
 from fastapi.testclient import TestClient
 from sympy.core.cache import clear_cache
 
-from app.engine.mechanics import build_mechanics
+from app.engine.equations.mechanics import build_mechanics
 from app.main import app
-from app.service import user_jobs
-from app.service.user_checks import checked
-from app.web.examples_user import DOUBLE_PENDULUM, SPINNING_HOOP
-from app.web.schemas_user import SystemSpec
+from app.service.users import user_jobs
+from app.service.users.user_checks import checked
+from app.web.api.examples_user import DOUBLE_PENDULUM, SPINNING_HOOP
+from app.web.schemas.user import SystemSpec
 
 ROUNDS = 5
 

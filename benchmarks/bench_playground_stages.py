@@ -101,7 +101,7 @@ def warm_workers(base: str) -> None:
     calls): two triple pendulums of other names derived at once through the API, so each worker takes one."""
     from starlette.datastructures import QueryParams
 
-    from app.web.playground_form import read_form, spec_of
+    from app.web.pages.playground_form import read_form, spec_of
 
     def derive(n: int) -> None:
         spec = spec_of(read_form(QueryParams(urlencode(triple(n), doseq=True))))

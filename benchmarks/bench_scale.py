@@ -31,11 +31,11 @@ import sympy.physics.mechanics as me
 from fastapi.testclient import TestClient
 from sympy.core.cache import clear_cache
 
-from app.engine.derive import accelerations_only
+from app.engine.derivation.derive import accelerations_only
 from app.main import app
-from app.service.user_systems import UserSystems
+from app.service.users.user_systems import UserSystems
 from app.settings import Settings
-from app.web.deps import user_systems_service
+from app.web.api.deps import user_systems_service
 
 
 def chain_request(n: int, g: float = 9.81) -> dict[str, Any]:
@@ -81,7 +81,7 @@ def lagranges_method(n: int) -> float:
 
 def first_stage(n: int) -> float:
     """Seconds for the engine's first stage (T, equations, M and f) on the same chain, in this process."""
-    from app.engine.user_system import UserSystem
+    from app.engine.parser.user_system import UserSystem
 
     system = UserSystem.of(chain_request(n)).system()
     clear_cache()

@@ -32,11 +32,11 @@ from fastapi.testclient import TestClient
 
 from app.main import app
 from app.scenes import SCENES
-from app.service import simulation
-from app.service.derivations import PROCESS_SCENES
-from app.service.encoding import dumps
-from app.web.compression import CODINGS, compress
-from app.web.schemas_simulate import SimulateRequest
+from app.service.chapter.derivations import PROCESS_SCENES
+from app.service.runtime.encoding import dumps
+from app.service.simulations import simulation
+from app.web.http.compression import CODINGS, compress
+from app.web.schemas.simulate import SimulateRequest
 
 ROUNDS = 60
 WARMUP = 5

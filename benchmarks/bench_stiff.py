@@ -32,8 +32,8 @@ import time
 
 import numpy as np
 
-from app.engine.derive import derive
-from app.engine.user_system import UserSystem
+from app.engine.derivation.derive import derive
+from app.engine.parser.user_system import UserSystem
 from app.numerics.errors import TooMuchWork
 from app.numerics.methods import METHODS, STIFF, Problem
 from app.numerics.simulate import simulate

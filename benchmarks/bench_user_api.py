@@ -4,7 +4,7 @@
 
 Prints how long every refusal of the hostile corpora takes, sent to the app
 served by uvicorn on a loopback port (the probes of tests/web/test_hostile_corpus.py
-that expect a 4xx, and tests/web/test_api_user_hostile.py's corpus): p50, p99
+that expect a 4xx, and tests/web/api/test_api_user_hostile.py's corpus): p50, p99
 and max, with the slowest probes named.  Then, through the app in-process
 (TestClient): each example system's first (uncached) and repeated (cached)
 derivation, its simulation, and how long the pool takes to answer again after a
@@ -21,11 +21,11 @@ import time
 from fastapi.testclient import TestClient
 
 from app.main import app
-from app.service import user_systems
+from app.service.users import user_systems
 from app.settings import Settings
-from app.web import examples_user
-from app.web.deps import user_systems_service
-from tests.web.test_api_user_hostile import CORPUS, _body
+from app.web.api import examples_user
+from app.web.api.deps import user_systems_service
+from tests.web.api.test_api_user_hostile import CORPUS, _body
 from tests.web.test_hostile_corpus import PROBES, lagrangian, send
 
 

@@ -9,9 +9,9 @@ from typing import Any
 
 import sympy as sp
 
-from app.engine.contract import derivation_json
-from app.engine.derive import Derivation as Derived
-from app.engine.derive import derive as derive_system
+from app.engine.derivation.derive import Derivation as Derived
+from app.engine.derivation.derive import derive as derive_system
+from app.engine.document.contract import derivation_json
 from lagrange.system import System
 
 
@@ -39,7 +39,7 @@ class Derivation:
 
     def __init__(self, system: System, derived: Derived) -> None:
         self.system = system
-        self.derived = derived  # the engine's own value (app/engine/derive.py)
+        self.derived = derived  # the engine's own value (app/engine/derivation/derive.py)
 
     @cached_property
     def document(self) -> dict[str, Any]:

@@ -12,7 +12,7 @@ from app.numerics.methods import AUTO
 from app.numerics.simulate import Outcome
 from app.numerics.simulate import simulate as integrate
 from app.numerics.system import numeric_system
-from app.service.simulate_request import initial_state, parameter_vector
+from app.service.simulations.simulate_request import initial_state, parameter_vector
 from lagrange.derivation import Derivation
 
 

@@ -6,12 +6,12 @@ import json
 from collections.abc import Iterable, Mapping
 from typing import Any
 
-from app.engine.user_system import UserSystem
+from app.engine.parser.user_system import UserSystem
 from app.scenes import SCENES
 from app.scenes.types import Scene
 from app.scenes.types import System as Declared
-from app.service.user_checks import checked
-from app.service.user_jobs import build_system
+from app.service.users.user_checks import checked
+from app.service.users.user_jobs import build_system
 
 
 class System:

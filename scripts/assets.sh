@@ -19,7 +19,7 @@ cp node_modules/katex/dist/contrib/auto-render.min.js "$vendor/katex/contrib/"
 cp -r node_modules/katex/dist/fonts "$vendor/katex/fonts"
 # the basic bundle (scatter, bar; about 0.36 MB gzipped): every plot is 2-D, the mechanism is drawn on our own canvas
 cp node_modules/plotly.js-basic-dist-min/plotly-basic.min.js "$vendor/plotly/plotly.min.js"
-# the API reference at /docs (app/web/docs.py)
+# the API reference at /docs (app/web/api/docs.py)
 cp node_modules/swagger-ui-dist/swagger-ui-bundle.js node_modules/swagger-ui-dist/swagger-ui.css "$vendor/swagger-ui/"
-# Precompressed copies, served to browsers that accept gzip (app/web/templating.py).
+# Precompressed copies, served to browsers that accept gzip (app/web/rendering/templating.py).
 find "$vendor" -type f \( -name '*.js' -o -name '*.css' \) -exec gzip -9 -k -f {} +

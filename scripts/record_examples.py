@@ -1,7 +1,7 @@
 """Record the user-system API's documented examples: run the API on them, write what it answers.
 
-Usage: python scripts/record_examples.py   (writes app/web/examples/user_api.json;
-tests/web/test_api_user.py fails while the file is stale).  It lives outside the
+Usage: python scripts/record_examples.py   (writes app/web/api/examples/user_api.json;
+tests/web/api/test_api_user.py fails while the file is stale).  It lives outside the
 app, so no app module imports the app it runs.
 """
 
@@ -13,11 +13,11 @@ from typing import Any
 from fastapi.testclient import TestClient
 
 from app.main import app
-from app.service.fairness import COOKIE
-from app.service.user_systems import UserSystems
+from app.service.runtime.fairness import COOKIE
+from app.service.users.user_systems import UserSystems
 from app.settings import Settings
-from app.web.deps import user_systems_service
-from app.web.examples_user import (
+from app.web.api.deps import user_systems_service
+from app.web.api.examples_user import (
     EXAMPLES_FILE,
     FORCED_SPRING,
     JSON,
@@ -30,7 +30,7 @@ from app.web.examples_user import (
     UNCACHED_DOUBLE_PENDULUM,
     UNREADABLE,
 )
-from app.web.limits import MAX_BODY_BYTES
+from app.web.api.limits import MAX_BODY_BYTES
 
 
 def record() -> dict[str, Any]:

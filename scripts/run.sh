@@ -14,4 +14,4 @@ fi
 export LAGRANGE_WEB_PROCESSES="${WORKERS:-1}"
 # shellcheck disable=SC2046 # the options are words
 exec .venv/bin/uvicorn app.main:app --host "${HOST:-127.0.0.1}" --port "${PORT:-8000}" \
-    $(.venv/bin/python -m app.web.server_options)
+    $(.venv/bin/python -m app.web.http.server_options)

@@ -21,7 +21,7 @@ from typing import Any
 
 import sympy
 
-from app.service.cache import JsonCache, source_fingerprint
+from app.service.runtime.cache import JsonCache, source_fingerprint
 
 
 def stored(name: str, compute: Callable[[], Any], sources: tuple[str | Path, ...], packages: tuple[str, ...]) -> Any:

@@ -5,8 +5,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from pathlib import Path
 
-from app.service.checking import Checking
 from app.service.classroom.service import Classroom
+from app.service.tutor.checking import Checking
 from app.settings import Settings
 
 BACKENDS = ("sqlite", "postgresql")

@@ -35,8 +35,8 @@ def fresh_mint_budget():
     of the shared gate's budget is left would depend on how many tests ran in the last minute, and how fast.
     The gate signs with the same secret as the app's, so the sessions it mints verify everywhere.
     """
-    from app.service.fairness import Fairness
-    from app.web.deps import fairness_gate
+    from app.service.runtime.fairness import Fairness
+    from app.web.api.deps import fairness_gate
 
     gate = Fairness(capacity=4)
     app.dependency_overrides[fairness_gate] = lambda: gate

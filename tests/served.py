@@ -3,9 +3,9 @@ compiled first) and this process's scenes (``PROCESS_SCENES``, the one copy of t
 
 from typing import Any
 
-from app.service import simulation
-from app.service.derivations import PROCESS_SCENES
-from app.service.gates import Gates
+from app.service.chapter.derivations import PROCESS_SCENES
+from app.service.runtime.gates import Gates
+from app.service.simulations import simulation
 
 
 def scene_run(scene_id: str, asked: Any, gates: Gates | None = None) -> dict[str, Any]:

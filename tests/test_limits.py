@@ -7,13 +7,13 @@ import pytest
 from pydantic import ValidationError
 
 from app import limits as shared
-from app.engine import reduction, transform
+from app.engine.equations import reduction, transform
 from app.numerics import limits
 from app.scenes import SCENES, Scene
-from app.service import poincare, simulation
+from app.service.simulations import poincare, simulation
 from app.settings import ROOT
 from app.viz.page_model import DEFAULT_RTOL, RTOLS
-from app.web.schemas_user import ParameterSpec
+from app.web.schemas.user import ParameterSpec
 
 
 def test_the_page_offers_the_tolerances_the_api_accepts_with_its_default_chosen():
@@ -51,8 +51,8 @@ def test_no_bound_inside_the_engine_reads_a_clock():
         ["grep", "-rnE", r"time\.(monotonic|perf_counter|process_time|time|thread_time)\(|getitimer", "app/engine",
          "--include=*.py"], cwd=ROOT, capture_output=True, text=True,
     ).stdout.splitlines()  # fmt: skip
-    assert [line for line in found if not line.startswith("app/engine/budget.py:")] == []
-    budget_lines = [line for line in found if line.startswith("app/engine/budget.py:")]
+    assert [line for line in found if not line.startswith("app/engine/algebra/budget.py:")] == []
+    budget_lines = [line for line in found if line.startswith("app/engine/algebra/budget.py:")]
     assert len(budget_lines) == 3  # clock_limit's: the outer clock, its start, the re-armed outer one
 
 
@@ -60,7 +60,7 @@ def test_no_bound_inside_the_engine_reads_a_clock():
 def test_the_keep_alive_is_a_setting_the_server_options_pass_on():
     env = {"PYTHONPATH": str(ROOT), "PATH": "/usr/bin:/bin", "LAGRANGE_KEEP_ALIVE_SECONDS": "31"}
     given = subprocess.run(
-        [sys.executable, "-m", "app.web.server_options"], cwd=ROOT, capture_output=True, text=True, env=env, check=True
+        [sys.executable, "-m", "app.web.http.server_options"], cwd=ROOT, capture_output=True, text=True, env=env, check=True
     ).stdout.split()
     assert given[given.index("--timeout-keep-alive") + 1] == "31"
 
@@ -72,12 +72,12 @@ def test_no_module_of_the_app_defines_a_time_bound_of_its_own():
     ).stdout.splitlines()  # fmt: skip
     # numerics/limits.py holds the bounds of a simulation request (its WALL_SECONDS among them); the example
     # file's short limit is an example's, not the program's
-    allowed = ("app/limits.py:", "app/numerics/limits.py:", "app/web/examples_user.py:")
+    allowed = ("app/limits.py:", "app/numerics/limits.py:", "app/web/api/examples_user.py:")
     assert [line for line in found if not line.startswith(allowed)] == []
 
 
 def test_a_changed_limit_changes_the_caches_fingerprint(monkeypatch, tmp_path):
-    from app.service import cache
+    from app.service.runtime import cache
 
     (tmp_path / "engine").mkdir()
     (tmp_path / "engine" / "a.py").write_text("X = 1\n")
@@ -95,7 +95,7 @@ def test_the_api_documents_the_range_the_service_holds_a_request_to(name):
     from types import SimpleNamespace
 
     from app.numerics.errors import SimulationError
-    from app.web.schemas_simulate import SimulateRequest
+    from app.web.schemas.simulate import SimulateRequest
     from tests.served import scene_run
 
     documented = SimulateRequest.model_json_schema()["properties"][name]["anyOf"][0]

@@ -122,24 +122,24 @@ def setter():
 def test_what_moved_is_no_longer_in_its_module():
     """The caches docs/state.md says moved to the app are gone from their modules."""
     for module, name in [
-        ("app/web/pages.py", "_models"),
-        ("app/web/pages.py", "_pages"),
-        ("app/web/templating.py", "_gzipped"),
-        ("app/web/playground.py", "_EXAMPLES_CACHE"),
-        ("app/service/modes.py", "_at_cache"),
-        ("app/service/poincare.py", "_sections"),
-        ("app/service/action.py", "_answers"),
-        ("app/service/work_precision.py", "_cache"),
-        ("app/service/derivations.py", "_json_cache"),
-        ("app/service/derivations.py", "_derivation"),
-        ("app/service/derivations.py", "_locks"),
-        ("app/service/compiled.py", "COMPILED"),
-        ("app/service/compiled.py", "_SOURCES"),
-        ("app/service/compiled.py", "_EVENTS"),
-        ("app/service/gates.py", "IN_FLIGHT"),
+        ("app/web/pages/chapter.py", "_models"),
+        ("app/web/pages/chapter.py", "_pages"),
+        ("app/web/rendering/templating.py", "_gzipped"),
+        ("app/web/pages/playground.py", "_EXAMPLES_CACHE"),
+        ("app/service/simulations/modes.py", "_at_cache"),
+        ("app/service/simulations/poincare.py", "_sections"),
+        ("app/service/simulations/action.py", "_answers"),
+        ("app/service/simulations/work_precision.py", "_cache"),
+        ("app/service/chapter/derivations.py", "_json_cache"),
+        ("app/service/chapter/derivations.py", "_derivation"),
+        ("app/service/chapter/derivations.py", "_locks"),
+        ("app/service/chapter/compiled.py", "COMPILED"),
+        ("app/service/chapter/compiled.py", "_SOURCES"),
+        ("app/service/chapter/compiled.py", "_EVENTS"),
+        ("app/service/runtime/gates.py", "IN_FLIGHT"),
     ]:
         assert name not in state_of((ROOT / module).read_text()), (module, name)
-    assert "scene_export" not in state_of((ROOT / "app/service/exporting.py").read_text())
+    assert "scene_export" not in state_of((ROOT / "app/service/export/exporting.py").read_text())
     assert Path(DOC).is_file()
 
 

@@ -47,13 +47,13 @@ _COMPILED = "numba compiles its functions to machine code, which leaves no Pytho
 OUTSIDE: dict[str, str] = {
     **{f"app/numerics/kernels/{name}.py": _COMPILED for name in ("common", "composition", "dop853", "gauss", "radau")},
     **{f"app/numerics/kernels/{name}.py": _COMPILED for name in ("vern8", "vern8_stages")},
-    "app/service/scene_jobs.py": "runs in the scenes' worker processes, which the trace does not follow",
-    "app/service/worker_warmup.py": "runs in a worker process as it starts, which the trace does not follow",
-    "app/service/memory.py": "the server's start-up after warming; tests/service/test_memory.py (slow)",
+    "app/service/simulations/scene_jobs.py": "runs in the scenes' worker processes, which the trace does not follow",
+    "app/service/users/worker_warmup.py": "runs in a worker process as it starts, which the trace does not follow",
+    "app/service/runtime/memory.py": "the server's start-up after warming; tests/service/runtime/test_memory.py (slow)",
     "app/service/warm.py": "the warm-up, off in the tests (LAGRANGE_WARM=0); tests/service/test_warm.py (slow)",
-    "app/service/warm_kernels.py": "the warm-up, off in the tests (LAGRANGE_WARM=0); tests/service/test_warm.py (slow)",
+    "app/service/simulations/warm_kernels.py": "the warm-up, off in the tests (LAGRANGE_WARM=0); tests/service/test_warm.py (slow)",
     "app/web/warm.py": "the command python -m app.web.warm; tests/web/test_warm.py (slow)",
-    "app/web/server_options.py": "run as a command by scripts/serve.sh; tests/test_limits.py runs it so (slow)",
+    "app/web/http/server_options.py": "run as a command by scripts/serve.sh; tests/test_limits.py runs it so (slow)",
 }
 
 

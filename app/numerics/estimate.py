@@ -32,7 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from app.engine.names import unicode
+from app.engine.display.names import unicode
 from app.numerics.methods import FALLBACK, FALLBACK_STIFF, REFERENCE, STIFF, Problem, Trajectory
 
 TIGHTER = 1.0e-3

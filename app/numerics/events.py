@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from app.engine.errors import DerivationError
-from app.engine.parse import parse_expression
+from app.engine.parser.parse import parse_expression
 from app.numerics import jit
 from app.numerics.generate import Names, observables_source
 from app.numerics.methods import Trajectory

@@ -24,9 +24,9 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from app.engine.derive import Derivation
-from app.engine.kinks import away_from_kinks
-from app.engine.lagrange import Equations
+from app.engine.algebra.kinks import away_from_kinks
+from app.engine.derivation.derive import Derivation
+from app.engine.equations.lagrange import Equations
 from app.numerics.codegen import (
     ArrayPrinter,
     Block,

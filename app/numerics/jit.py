@@ -79,7 +79,7 @@ def compiled_functions(sources: dict[str, str]) -> ModuleType:
         folder = generated_dir()
         path = folder / f"rhs_{key}.py"
         if path.exists():
-            path.touch()  # its last use, for the bounded cache of users' systems (app/service/disk.py)
+            path.touch()  # its last use, for the bounded cache of users' systems (app/service/runtime/disk.py)
         else:
             # write then rename: a concurrent reader never sees half a file
             with tempfile.NamedTemporaryFile("w", dir=folder, delete=False, suffix=".tmp") as handle:

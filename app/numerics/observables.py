@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from app.engine.constraints import ConstraintForce
+from app.engine.equations.constraints import ConstraintForce
 from app.numerics import jit
 from app.numerics.generate import Names, observables_source
 from app.numerics.system import NumericSystem

@@ -8,7 +8,7 @@ a per-user folder under the system's temporary directory.
 
 The worker processes that run users' systems write theirs under
 ``.../generated-user`` instead (``use_user_folder``): that folder and its numba
-cache are bounded in size (app/service/disk.py), while the chapter's stay.
+cache are bounded in size (app/service/runtime/disk.py), while the chapter's stay.
 """
 
 from __future__ import annotations

@@ -117,7 +117,7 @@ def plan(
     whose reference's code) is not ready yet in this process runs scipy's DOP853 on the generated
     scalar right-hand side instead, run and reference; asking for a method by name always runs it.
     ``ready(method, system)``: whether that code is ready (by default the method's own ``ready``, what this
-    process has compiled; a server's gates may give another, app/service/gates.py)."""
+    process has compiled; a server's gates may give another, app/service/runtime/gates.py)."""
     is_ready = ready or (lambda m, s: m.ready(s))
     analysis = analyse(system, k, y0, t_end, rtol, atol)  # one atol for every component
     if requested == AUTO:

@@ -26,8 +26,8 @@ import numpy as np
 import sympy as sp
 from sympy.printing.str import StrPrinter
 
-from app.engine.derive import Derivation
-from app.engine.names import unicode
+from app.engine.derivation.derive import Derivation
+from app.engine.display.names import unicode
 
 DOUBLE_MAX = "1.8·10³⁰⁸"
 GENERAL = (
@@ -44,7 +44,7 @@ class _Undefined(ArithmeticError):
         self.node, self.why, self.detail = node, why, detail
 
 
-# the float twins of the functions the parser allows (app/engine/parse.py), with the domain each has
+# the float twins of the functions the parser allows (app/engine/parser/parse.py), with the domain each has
 _FUNCTIONS: dict[str, Callable[..., float]] = {
     "sin": math.sin, "cos": math.cos, "tan": math.tan, "exp": math.exp, "log": math.log,
     "asin": math.asin, "acos": math.acos, "atan": math.atan, "sinh": math.sinh, "cosh": math.cosh,

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import sympy as sp
 
-from app.engine.derive import Derivation
+from app.engine.derivation.derive import Derivation
 from app.numerics import jit
 from app.numerics.generate import Names, browser_source, hamilton_source, jacobian_source, momenta_source, rhs_source
 

@@ -3,7 +3,7 @@
 Each table belongs to one scene, which holds it as its ``reasons`` (``Scene.reasons``).
 
 A scene's page explains every step with the sentence here instead of the engine's generic
-one (which stays for user systems).  Keys are the steps' keys (app/engine/report.py), never
+one (which stays for user systems).  Keys are the steps' keys (app/engine/document/report.py), never
 their titles; a key without a colon (``normal-modes``) also matches every step of that kind
 (``normal-modes:1``, ``normal-modes:2``) that has no reason of its own.
 """

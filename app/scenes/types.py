@@ -43,7 +43,7 @@ class Body:
     """A rigid body moving in the x–z plane: its kind, mass, size, where its centre is and how it is turned.
 
     ``kind`` is one of ``rod``, ``disc``, ``ring``, ``sphere`` (uniform; the engine holds each kind's moment of
-    inertia about its centre, app/engine/bodies.py).  ``size`` is the rod's length, or the radius of the disc,
+    inertia about its centre, app/engine/equations/bodies.py).  ``size`` is the rod's length, or the radius of the disc,
     ring or sphere.  ``centre`` is the centre of mass as expressions of q and t, ``angle`` the body's rotation
     about the axis through its centre normal to the plane (the y axis), so that its angular velocity is
     ω = d(angle)/dt.  ``label`` names it in the derivation ("rod", "pulley").
@@ -220,7 +220,7 @@ class Scene:
     # simulation's settings, never in the statement of the problem
     run_note: str = ""
     # a chaotic scene: its largest Lyapunov exponent is measured at the default start over this many seconds
-    # (app/service/lyapunov.py), and the sentence saying it opens the run note
+    # (app/service/simulations/lyapunov.py), and the sentence saying it opens the run note
     lyapunov_seconds: float = 0.0
     # angles measured from the upward vertical (the spherical pendulum's θ): where a steady motion gives one's
     # value, its angle from the downward vertical, π minus it, is given beside it

@@ -1,7 +1,7 @@
 """The answers one running app remembers about the chapter's scenes and the playground's examples.
 
 Each is a cache the app's ``Services`` hold (built in ``app.main``'s lifespan) and
-the routes are given through ``Depends`` (``app.web.deps.AnswersDep``), then pass
+the routes are given through ``Depends`` (``app.web.api.deps.AnswersDep``), then pass
 down to the service function that fills it: none is a module global, so two apps
 (or a test's own) never share one, and a test hands a route a cache of its own
 (an empty one, or one whose disk is a temporary folder) with
@@ -18,12 +18,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from app.service import action, exporting, lyapunov, modes, poincare, work_precision
-from app.service.cache import BytesCache, JsonCache, Recent, source_fingerprint
+from app.service.export import exporting
+from app.service.runtime.cache import BytesCache, JsonCache, Recent, source_fingerprint
+from app.service.simulations import action, lyapunov, modes, poincare, work_precision
 
 
 def examples_cache(folder: Path | None = None) -> BytesCache:
-    """The playground examples' derivation documents (app/web/playground.py), keyed by the engine's and the
+    """The playground examples' derivation documents (app/web/pages/playground.py), keyed by the engine's and the
     service's source, so a restarted server loads them instead of deriving them again."""
     return BytesCache("example-derivations", source_fingerprint("engine", "service"), folder)
 

@@ -1,7 +1,7 @@
 """The long-lived services of one running app, built at its start and stopped at its end.
 
 ``app.main``'s lifespan builds one ``Services`` and hands it to the routes as
-lifespan state (``app.web.deps`` reads it from the request); nothing here is a
+lifespan state (``app.web.api.deps`` reads it from the request); nothing here is a
 module global, so two apps (or a test's own service) never share a pool by accident.
 The users' pool starts its processes with its first job, the scenes' worker with
 the warm-up (``warm``) or its first run; none starts here.
@@ -14,12 +14,12 @@ import threading
 from dataclasses import dataclass
 
 from app.service.answers import Answers
-from app.service.checking import Checking
+from app.service.chapter.derivations import Scenes
 from app.service.classroom.service import Classroom
-from app.service.derivations import Scenes
-from app.service.simulation import Gates, load_scenes
-from app.service.user_systems import UserSystems
-from app.service.worker import WorkerPool
+from app.service.runtime.worker import WorkerPool
+from app.service.simulations.simulation import Gates, load_scenes
+from app.service.tutor.checking import Checking
+from app.service.users.user_systems import UserSystems
 from app.settings import Settings
 
 log = logging.getLogger(__name__)
@@ -34,7 +34,7 @@ class Services:
     scenes: WorkerPool  # one process for the scenes' runs that step in Python (scipy), off the event loop's GIL
     classes: Classroom  # classes and their recorded attempts (a database, connected at first use)
     answers: Answers  # what the app remembers of scenes' answers and the examples (app/service/answers.py)
-    # the scenes' derivations, documents and compiled systems (app/service/derivations.py); the scenes' worker
+    # the scenes' derivations, documents and compiled systems (app/service/chapter/derivations.py); the scenes' worker
     # process (``scenes`` above) keeps its own
     chapter: Scenes
 

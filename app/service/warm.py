@@ -11,7 +11,9 @@ the tutor's catalogues of mistakes for every scene's steps (pickles on disk).
 import time
 from collections.abc import Callable, Sequence
 
-from app.service import check_jobs, derivations, lyapunov, modes, simulation, work_precision
+from app.service.chapter import derivations
+from app.service.simulations import lyapunov, modes, simulation, work_precision
+from app.service.tutor import check_jobs
 
 
 def main(more: Sequence[tuple[str, Callable[[], object]]] = ()) -> None:

@@ -21,9 +21,9 @@ import math
 from collections.abc import Sequence
 from typing import Any
 
-from app.engine.document import Document, NormalModesAt, Root
-from app.engine.names import unicode
-from app.engine.trees import Tree, TreeError, of_text
+from app.engine.display.names import unicode
+from app.engine.document.model import Document, NormalModesAt, Root
+from app.engine.document.trees import Tree, TreeError, of_text
 from app.viz.exprtree import Expression, document_tree, evaluate, leaves
 from app.viz.units import coordinate_units
 

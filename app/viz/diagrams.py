@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 
-from app.engine.trees import TreeError, of_text
+from app.engine.document.trees import TreeError, of_text
 from app.viz import diagrams_blocks as blocks
 from app.viz import diagrams_swing as swing
 from app.viz.exprtree import evaluate

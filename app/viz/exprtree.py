@@ -1,8 +1,8 @@
-"""Expression trees (app/engine/trees.py writes them) as the figures and the browser read them.
+"""Expression trees (app/engine/document/trees.py writes them) as the figures and the browser read them.
 
 The derivation document carries each expression as a tree beside its LaTeX and ``sympy`` string,
 built from the SymPy object; the scenes' and the figures' own expressions (particle positions, the
-drawings' helpers) become trees through the parser's gates (``app.engine.trees.of_text``).  Here:
+drawings' helpers) become trees through the parser's gates (``app.engine.document.trees.of_text``).  Here:
 the tree of a document's expression restricted to the names a page gives values to
 (``document_tree``), the names in a tree (``leaves``), and its value in Python (``evaluate``, which
 the tests compare with the browser's static/js/expr.js).
@@ -14,13 +14,13 @@ import math
 from collections.abc import Iterable
 from typing import Any, Protocol
 
-from app.engine.trees import Tree
+from app.engine.document.trees import Tree
 
 _RECIPROCALS = {"cot": "tan", "sec": "cos", "csc": "sin"}
 
 
 class Expression(Protocol):
-    """One of the document's expressions (app.engine.document: a Pair, a Root, a conserved quantity...)."""
+    """One of the document's expressions (app.engine.document.model: a Pair, a Root, a conserved quantity...)."""
 
     tree: Any
 

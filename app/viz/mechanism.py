@@ -16,8 +16,8 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from app.engine.document import ConstraintForce, FixedDistance
-from app.engine.trees import TreeError, of_text
+from app.engine.document.model import ConstraintForce, FixedDistance
+from app.engine.document.trees import TreeError, of_text
 from app.scenes.beads import WIRE_REACH
 from app.viz.exprtree import leaves
 from app.viz.rods import rods, springs

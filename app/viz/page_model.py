@@ -14,13 +14,12 @@ import re
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from app.engine import notation
-from app.engine.dimensions import kind_of_unit
-from app.engine.document import Document, EffectivePotential, FirstStage, ParameterInfo
-from app.engine.names import MASS_MATRIX, latex, prose, unicode
-from app.engine.notation import printed
-from app.engine.report import CORE_STEPS
-from app.engine.trees import TreeError, maybe_of_text, of_text
+from app.engine.derivation.dimensions import kind_of_unit
+from app.engine.display.names import MASS_MATRIX, latex, prose, unicode
+from app.engine.document.model import Document, EffectivePotential, FirstStage, ParameterInfo, notation
+from app.engine.document.notation import printed
+from app.engine.document.report import CORE_STEPS
+from app.engine.document.trees import TreeError, maybe_of_text, of_text
 from app.limits import DEFAULT_T_END
 from app.numerics import limits
 from app.numerics.methods import LABELS
@@ -93,7 +92,7 @@ def _steps(doc: Document) -> list[dict[str, Any]]:
 
 def letter_of(doc: Document | FirstStage, meaning: str, default: str, form: str = "latex") -> str:
     """The document's letter for a derived quantity (``form`` "latex" or "unicode"), from its Symbols table
-    (app/engine/notation.py)."""
+    (app/engine/document/notation.py)."""
     return next(
         (getattr(r, form) for r in doc.notation or () if r.kind == "derived" and r.meaning.startswith(meaning)),
         default,
@@ -174,7 +173,7 @@ def _summary(doc: Document) -> dict[str, Any]:
             if doc.effective_potential
             else None
         ),
-        # each force with its letter, F₁ = …, as the Symbols table defines it (app/engine/notation.py)
+        # each force with its letter, F₁ = …, as the Symbols table defines it (app/engine/document/notation.py)
         "constraint_forces": [
             {**c.model_dump(), "symbol": notation.force(k)[0], "latex": f"{notation.force(k)[0]} = {c.latex}"}
             for k, c in enumerate(doc.constraint_forces, start=1)
@@ -419,7 +418,7 @@ def _reduction(doc: Document) -> dict[str, Any] | None:
         ],
         "potential": _pair_tree(red.potential, names),
         "mass": _pair_tree(red.mass, names),
-        # the inertia's letter as the document prints it (I_eff for an angle, m_eff for a length: app/engine/notation.py)
+        # the inertia's letter as the document prints it (I_eff for an angle, m_eff for a length: app/engine/document/notation.py)
         "inertia": _inertia(red, "unicode"),
         "condition": _pair_tree(red.condition, names),
         "omega_squared": _pair_tree(red.omega_squared, names),
@@ -445,7 +444,7 @@ def _separatrix(doc: Document, rate_units: dict[str, str]) -> dict[str, Any] | N
 
 
 def _focus_possible(doc: Document) -> bool:
-    """The engine's verdict (app/engine/action_step.py); a document from before it counts as "possible"."""
+    """The engine's verdict (app/engine/document/action_step.py); a document from before it counts as "possible"."""
     return doc.kinetic_focus_possible
 
 

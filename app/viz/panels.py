@@ -15,7 +15,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from app.engine.document import Document, NormalModesAt
+from app.engine.document.model import Document, NormalModesAt
 from app.viz.exprtree import document_tree, evaluate, leaves
 
 
@@ -236,7 +236,7 @@ PANELS: tuple[Panel, ...] = (
         several_text="Varying one coordinate alone, with the others kept on the true path, has a focus of its own. "
         "It comes at the same time as the focus for all the coordinates varied together, or later, or never; the "
         "readout says which variation each focus belongs to.",
-        # where no true path reaches a kinetic focus (app/engine/action_step.py decides, the derivation's first
+        # where no true path reaches a kinetic focus (app/engine/document/action_step.py decides, the derivation's first
         # step says the same), the sentence about moving τ past one would be false
         no_focus_text="Hamilton's principle: the true motion makes the action S = ∫ L dt stationary among paths "
         "with the same ends. Drag the dashed path (or use ε) to vary one coordinate by ε sin(nπt/τ) over a time τ "

@@ -3,7 +3,7 @@
 A particle whose distance to the origin, or to another particle, stays the same
 whatever the coordinates and time gets a rod to it (to the origin: a rod from a
 drawn pivot).  The engine proves such distances on the positions
-(``fixed_distances`` of the derivation document, app/engine/rods.py); a pair it
+(``fixed_distances`` of the derivation document, app/engine/derivation/rods.py); a pair it
 could not decide is tried numerically here: the squared distance
 D = |r_j − r_i|² is evaluated at ``SAMPLES`` seeded random states (coordinates
 in [−2, 2], t in [0, 10], parameters at their defaults) and counts as fixed
@@ -18,8 +18,8 @@ import random
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from app.engine.document import FixedDistance
-from app.engine.trees import TreeError, of_text
+from app.engine.document.model import FixedDistance
+from app.engine.document.trees import TreeError, of_text
 from app.viz.exprtree import evaluate, leaves
 
 SAMPLES = 12

@@ -19,9 +19,9 @@ from collections.abc import Mapping
 from fractions import Fraction
 from typing import Any
 
-from app.engine.dimensions import Dims, parse_unit
-from app.engine.dimensions import add_dims as _add
-from app.engine.document import Document
+from app.engine.derivation.dimensions import Dims, parse_unit
+from app.engine.derivation.dimensions import add_dims as _add
+from app.engine.document.model import Document
 from app.viz.exprtree import document_tree
 
 __all__ = ["Dims", "coordinate_units", "dims_of", "parse_unit"]

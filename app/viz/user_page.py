@@ -12,10 +12,10 @@ from collections.abc import Sequence
 from dataclasses import asdict
 from typing import Any
 
-from app.engine.distances import distance_events
-from app.engine.document import Document
-from app.engine.names import unicode
-from app.engine.user_system import UserSystem
+from app.engine.display.names import unicode
+from app.engine.document.model import Document
+from app.engine.equations.distances import distance_events
+from app.engine.parser.user_system import UserSystem
 from app.viz.exprtree import document_tree, evaluate
 from app.viz.page_model import scene_page
 from app.viz.units import coordinate_units, with_unit

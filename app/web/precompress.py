@@ -3,7 +3,7 @@
 scripts/setup.sh runs it after scripts/assets.sh has copied KaTeX, plotly.js and swagger-ui into
 static/vendor (and written their ``.gz`` copies); the Dockerfile runs it while building the image. It writes
 each ``.js`` and ``.css`` file's zstd copy beside it (``name.js.zst``, ``compression.STATIC``'s level), which
-the static files app (app/web/templating.py) sends to a browser that accepts zstd. A copy older than its file
+the static files app (app/web/rendering/templating.py) sends to a browser that accepts zstd. A copy older than its file
 is written again; the vendor folder is made anew by scripts/assets.sh, so no copy outlives its file.
 """
 
@@ -12,8 +12,8 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from app.web.compression import STATIC, compress_once
-from app.web.templating import STATIC_DIR
+from app.web.http.compression import STATIC, compress_once
+from app.web.rendering.templating import STATIC_DIR
 
 
 def precompress(folder: Path, coding: str = "zstd") -> list[Path]:

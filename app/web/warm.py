@@ -8,7 +8,7 @@ server loads all of them from disk and derives nothing.
 """
 
 from app.service import warm
-from app.web.playground import example_derivations
+from app.web.pages.playground import example_derivations
 
 
 def main() -> None:

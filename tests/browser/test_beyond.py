@@ -7,8 +7,8 @@ from urllib.parse import urlencode
 
 import pytest
 
-from app.web.examples_user import DOUBLE_PENDULUM
-from app.web.playground import form_of, query_of
+from app.web.api.examples_user import DOUBLE_PENDULUM
+from app.web.pages.playground import form_of, query_of
 
 pytestmark = pytest.mark.browser
 

@@ -11,7 +11,7 @@ import json
 
 import pytest
 
-from app.web.examples_user import SPINNING_HOOP
+from app.web.api.examples_user import SPINNING_HOOP
 from tests.browser.test_classroom import (
     DESK,
     PHONE,

@@ -10,8 +10,8 @@ import pytest
 from app.main import app
 from app.service.classroom.service import Classroom
 from app.settings import Settings
-from app.web.api_classes import classroom as classroom_dep
-from app.web.deps import ServicesDep
+from app.web.api.classes import classroom as classroom_dep
+from app.web.api.deps import ServicesDep
 
 pytestmark = pytest.mark.browser
 

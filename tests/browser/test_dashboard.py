@@ -21,8 +21,8 @@ from app.main import app
 from app.service.classroom import store
 from app.service.classroom.service import Classroom
 from app.settings import Settings
-from app.web.api_classes import classroom as classroom_dep
-from app.web.deps import ServicesDep
+from app.web.api.classes import classroom as classroom_dep
+from app.web.api.deps import ServicesDep
 from tests.browser.test_classroom import teacher_page
 
 pytestmark = pytest.mark.browser

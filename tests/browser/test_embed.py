@@ -10,7 +10,7 @@ from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 
 import pytest
 
-from tests.web.test_classes_processes import _free_port, server
+from tests.web.api.test_classes_processes import _free_port, server
 
 pytestmark = [pytest.mark.browser, pytest.mark.slow]
 

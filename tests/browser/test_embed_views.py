@@ -10,8 +10,8 @@ from urllib.parse import urlencode
 import pytest
 
 from app.scenes import SCENES
-from app.web.embed_views import VIEWS
-from app.web.playground_form import form_of, query_of
+from app.web.pages.playground_form import form_of, query_of
+from app.web.rendering.embed_views import VIEWS
 
 pytestmark = pytest.mark.browser
 

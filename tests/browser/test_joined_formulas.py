@@ -15,7 +15,7 @@ pytestmark = [pytest.mark.browser, pytest.mark.slow]
 
 READY = "body[data-katex-errors]"
 
-# the engine's continuation of a row (app/engine/breaking.py, _block): a row separator, then the quad indenting it
+# the engine's continuation of a row (app/engine/display/breaking.py, _block): a row separator, then the quad indenting it
 CONTINUATION = re.compile(r"\s*\\\\(?:\[[^\]]*\])?\s*&\\quad(?![a-zA-Z])\s*")
 
 SHOW_ALL = """async () => {

@@ -9,7 +9,7 @@ from urllib.parse import urlencode
 
 import pytest
 
-from app.web.playground_form import form_of, query_of
+from app.web.pages.playground_form import form_of, query_of
 
 pytestmark = pytest.mark.browser
 

@@ -9,8 +9,8 @@ from urllib.parse import urlencode
 
 import pytest
 
-from app.web.examples_user import DOUBLE_PENDULUM, SPINNING_HOOP
-from app.web.playground import form_of, query_of
+from app.web.api.examples_user import DOUBLE_PENDULUM, SPINNING_HOOP
+from app.web.pages.playground import form_of, query_of
 from tests.browser.test_live import READY, painted_events
 
 pytestmark = pytest.mark.browser

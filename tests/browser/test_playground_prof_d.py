@@ -6,9 +6,9 @@ from urllib.parse import urlencode
 
 import pytest
 
-from app.web.examples_user import FORCED_SPRING
-from app.web.playground_form import form_of, query_of
-from tests.web.test_playground_prof_d import MAGNETIC
+from app.web.api.examples_user import FORCED_SPRING
+from app.web.pages.playground_form import form_of, query_of
+from tests.web.pages.test_playground_prof_d import MAGNETIC
 
 pytestmark = pytest.mark.browser
 
@@ -56,7 +56,7 @@ def test_on_a_phone_every_cell_of_the_form_reads_back_whole(browser, live_server
 def test_a_driven_pendulum_draws_no_level_sets_of_h(page):
     # prof-f: L depends on time, yet the phase portrait drew level sets of h, a separatrix and
     # "it swings back and forth"; h changes along the run, so no orbit follows a level set
-    from tests.web.test_playground_prof_d import DRIVEN
+    from tests.web.pages.test_playground_prof_d import DRIVEN
 
     page.goto(address(DRIVEN))
     page.wait_for_selector(READY, state="attached", timeout=120_000)

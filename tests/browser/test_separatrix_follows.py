@@ -7,10 +7,10 @@ from urllib.parse import urlencode
 
 import pytest
 
-from app.service.derivations import derivation_document
+from app.service.chapter.derivations import derivation_document
 from app.viz.control_ranges import separatrix_marks
-from app.web.playground_form import form_of, query_of
-from tests.web.test_playground_hoop import HOOP
+from app.web.pages.playground_form import form_of, query_of
+from tests.web.pages.test_playground_hoop import HOOP
 
 pytestmark = pytest.mark.browser
 

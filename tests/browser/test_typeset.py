@@ -1,6 +1,6 @@
 """The practice box typesets through the checker's parser: the shared corpus (tests/data/expressions.json) typed
-into the page is accepted and refused exactly as app/engine/parse.py accepts and refuses it (the Python side:
-tests/service/test_typesetting.py, tests/web/test_api_typeset.py)."""
+into the page is accepted and refused exactly as app/engine/parser/parse.py accepts and refuses it (the Python side:
+tests/service/tutor/test_typesetting.py, tests/web/api/test_api_typeset.py)."""
 
 from __future__ import annotations
 

@@ -33,8 +33,8 @@ def test_serve_script_takes_port_and_workers_from_the_environment():
 
 @pytest.mark.parametrize("script", ["serve.sh", "run.sh"])
 def test_the_scripts_bound_slow_clients_with_the_settings_options(script):
-    # keep-alive, connection cap and header deadline: app/web/server_options.py, one home for both scripts
-    assert "-m app.web.server_options" in (ROOT / "scripts" / script).read_text()
+    # keep-alive, connection cap and header deadline: app/web/http/server_options.py, one home for both scripts
+    assert "-m app.web.http.server_options" in (ROOT / "scripts" / script).read_text()
 
 
 def _mebibytes(quantity: str) -> int:

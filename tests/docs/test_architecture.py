@@ -21,9 +21,9 @@ def project_files() -> list[Path]:
 
 
 FILES = project_files()
-# `engine/derive.derive`: a module (its path's tail) and a name defined in it
+# `engine/derivation/derive.derive`: a module (its path's tail) and a name defined in it
 NAMED = re.compile(r"`([\w/]+)\.(\w+)`")
-# `engine/parse_read.py`, `_derivation.html`, `scripts/lint.sh`: a file (its path's tail)
+# `engine/parser/read.py`, `_derivation.html`, `scripts/lint.sh`: a file (its path's tail)
 FILE = re.compile(r"`([\w/.-]+\.(?:py|html|sh|md|toml))`")
 
 

@@ -4,8 +4,8 @@ Each entry: (system, step, coordinate, answer, verdict, difference, hint).
 ``system`` is a scene id or one of the two systems below; ``difference`` is
 answer − truth as an expression in the API's syntax (``None`` when there is
 none); ``hint`` is ``"key:<mistake key>"`` (a mistake generated from the
-system's derivation, app/engine/mistake_families.py, which the answer must be
-diagnosed as), a mistake of ``app.engine.mistakes.RULES``, ``"pointer"`` (the
+system's derivation, app/engine/tutor/mistake_families.py, which the answer must be
+diagnosed as), a mistake of ``app.engine.tutor.mistakes.RULES``, ``"pointer"`` (the
 step's general rule), ``"omega"``, ``"missing_factor:<factor>"`` or
 ``"constant_factor:<factor>"``, or ``None``.  ``TYPICAL`` adds at least three
 typical mistakes for every scene and both systems, each with the diagnosis it must

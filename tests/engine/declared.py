@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from functools import cache
 
-from app.engine.derive import Derivation, derive
+from app.engine.derivation.derive import Derivation, derive
 from app.scenes import SCENES
 from app.scenes.types import Parameter, Particle, System
 from tests.engine.check_corpus import USER_SYSTEMS

@@ -12,7 +12,7 @@ import dataclasses
 
 import sympy as sp
 
-from app.engine.derive import accelerations_only
+from app.engine.derivation.derive import accelerations_only
 from app.scenes.types import Particle, System
 from tests.reference import random_point
 

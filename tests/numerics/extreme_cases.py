@@ -18,7 +18,7 @@ from functools import cache
 import mpmath
 import numpy as np
 
-from app.engine.derive import derive
+from app.engine.derivation.derive import derive
 from app.numerics.exact import constant_acceleration, constant_accelerations, pendulum
 from app.numerics.methods import STIFF as STIFF_METHOD
 from app.numerics.observables import build, summarize

@@ -7,11 +7,11 @@ import numpy as np
 import pytest
 from scipy.integrate import quad, solve_ivp
 
-from app.engine.derive import derive
+from app.engine.derivation.derive import derive
 from app.numerics.action import action_of, action_terms, conjugate_time
 from app.numerics.system import numeric_system
 from app.scenes.types import Parameter, System
-from app.service.derivations import derivation
+from app.service.chapter.derivations import derivation
 
 M, W = 2.0, 3.0
 OSCILLATOR = System(

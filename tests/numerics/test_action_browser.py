@@ -11,7 +11,7 @@ import pytest
 
 from app.numerics.action import action_of, action_terms
 from app.numerics.system import numeric_system
-from app.service.derivations import derivation
+from app.service.chapter.derivations import derivation
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
 

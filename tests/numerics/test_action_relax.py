@@ -10,7 +10,7 @@ from app.numerics.action import action_terms
 from app.numerics.action_relax import find_path, relax
 from app.numerics.simulate import simulate
 from app.numerics.system import numeric_system
-from app.service.derivations import derivation
+from app.service.chapter.derivations import derivation
 
 K = np.array([1.0, 9.81, 1.0])  # m, g, R of the simple pendulum
 FOCUS = 1.0695688  # the first kinetic focus from theta = 1, at rest (POST .../action's conjugate_time)

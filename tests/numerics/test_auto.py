@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from app.engine.derive import derive
+from app.engine.derivation.derive import derive
 from app.numerics import limits as numerics_limits
 from app.numerics.choose import analyse, choose
 from app.numerics.errors import TooMuchWork

@@ -9,7 +9,7 @@ import subprocess
 import numpy as np
 import pytest
 
-from app.engine.derive import derive
+from app.engine.derivation.derive import derive
 from app.numerics.system import numeric_system
 from tests.numerics.extreme_cases import system_for
 from tests.numerics.systems import DOUBLE_PENDULUM

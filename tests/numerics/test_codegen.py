@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from app.engine.derive import derive
+from app.engine.derivation.derive import derive
 from app.numerics.system import numeric_system
 from app.scenes import SCENES
 from app.scenes.types import Parameter, System

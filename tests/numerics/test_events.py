@@ -8,8 +8,8 @@ import pytest
 
 from app.numerics.simulate import simulate
 from app.scenes import SCENES
-from app.service import compiled
-from app.service.derivations import derivation
+from app.service.chapter import compiled
+from app.service.chapter.derivations import derivation
 from tests.served import scene_run
 
 G, ALPHA = 9.81, 0.5

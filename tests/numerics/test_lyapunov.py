@@ -7,8 +7,8 @@ import math
 import numpy as np
 
 from app.numerics.lyapunov import largest_exponent
-from app.service.derivations import PROCESS_SCENES
-from app.service.simulate_request import parameter_vector
+from app.service.chapter.derivations import PROCESS_SCENES
+from app.service.simulations.simulate_request import parameter_vector
 
 
 def _pendulum():

@@ -6,7 +6,7 @@ from functools import cache
 import numpy as np
 import pytest
 
-from app.engine.derive import derive
+from app.engine.derivation.derive import derive
 from app.numerics.errors import SimulationError
 from app.numerics.observables import build
 from app.numerics.poincare import energy_starts, hamiltonian, section

@@ -1,6 +1,6 @@
 """Numerics is pure, as ``solve_ivp`` is: a run takes a problem and returns a result on the caller's thread.
 Threads, processes, the machine's load and the throttle belong to the service, which composes numerics' pieces
-(``app.service.simulation_run``; ``app.service.cores`` gives a run its second core)."""
+(``app.service.simulations.simulation_run``; ``app.service.runtime.cores`` gives a run its second core)."""
 
 import ast
 import pathlib

@@ -9,7 +9,7 @@ from numba import njit
 from scipy.integrate import solve_ivp
 from scipy.linalg import expm
 
-from app.engine.derive import derive
+from app.engine.derivation.derive import derive
 from app.numerics.bound import Bound
 from app.numerics.choose import central_differences
 from app.numerics.kernels import radau

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from app.engine.derive import derive
+from app.engine.derivation.derive import derive
 from app.numerics.start import GENERAL, value_of, why_not_at_start, written
 from app.scenes.types import Parameter, Particle, System
 

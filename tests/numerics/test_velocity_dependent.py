@@ -8,7 +8,7 @@ The relativistic oscillator L = −mc²√(1 − ẋ²/c²) − ½kx²: its p = 
 import numpy as np
 import pytest
 
-from app.engine.derive import derive
+from app.engine.derivation.derive import derive
 from app.numerics.errors import SimulationError
 from app.numerics.methods import METHODS, symplectic_for
 from app.numerics.simulate import simulate

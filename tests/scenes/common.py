@@ -7,10 +7,10 @@ from functools import cache
 
 import sympy as sp
 
-from app.engine.constraints import ConstraintForce, constraint_forces
-from app.engine.derive import Transformed, transform
+from app.engine.derivation.derive import Transformed, transform
+from app.engine.equations.constraints import ConstraintForce, constraint_forces
 from app.scenes import SCENES
-from app.service.derivations import derivation
+from app.service.chapter.derivations import derivation
 
 FUNCTIONS = {"sin", "cos", "tan", "sqrt", "exp", "log", "pi", "Abs"}
 

@@ -3,9 +3,9 @@
 import pytest
 import sympy as sp
 
-from app.engine.parse import parse_expression
+from app.engine.parser.parse import parse_expression
 from app.scenes import SCENES
-from app.service.derivations import derivation, derivation_document
+from app.service.chapter.derivations import derivation, derivation_document
 from tests.reference import numerically_equal
 from tests.scenes.common import forces
 

@@ -2,11 +2,11 @@
 
 import pytest
 
-from app.engine.dimensions import number_beside_units, system_dimensions
+from app.engine.derivation.dimensions import number_beside_units, system_dimensions
 from app.scenes import SCENES
-from app.service.derivations import PROCESS_SCENES, derivation, scene_document
+from app.service.chapter.derivations import PROCESS_SCENES, derivation, scene_document
 from app.viz.panels import OPTIONAL, constant_accelerations
-from app.web.pages import page_model
+from app.web.pages.chapter import page_model
 
 # id -> (coordinates, parameters), exactly as the API promises them
 TABLE = {

@@ -5,9 +5,9 @@ import re
 import pytest
 import sympy as sp
 
-from app.engine.derive import substitute_cyclic
+from app.engine.derivation.derive import substitute_cyclic
 from app.scenes import SCENES
-from app.service.derivations import derivation
+from app.service.chapter.derivations import derivation
 from tests.reference import numerically_equal, random_point
 from tests.scenes.common import S, read, transformed
 

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from app.scenes import SCENES
-from app.service.derivations import derivation_document
+from app.service.chapter.derivations import derivation_document
 
 ROOT = Path(__file__).resolve().parents[2]
 

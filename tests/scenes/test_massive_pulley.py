@@ -11,7 +11,7 @@ import sympy as sp
 import sympy.physics.mechanics as me
 
 from app.scenes import SCENES
-from app.service.derivations import derivation, derivation_document, scene_document
+from app.service.chapter.derivations import derivation, derivation_document, scene_document
 from app.viz.page_model import _answers
 from tests.scenes.common import S
 

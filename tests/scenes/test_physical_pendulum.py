@@ -3,7 +3,7 @@ as a textbook prints it (Taylor § 10.1, Morin § 8.3): T = ⅙ M l² θ̇², U 
 
 import sympy as sp
 
-from app.service.derivations import derivation, derivation_document
+from app.service.chapter.derivations import derivation, derivation_document
 from tests.scenes.common import S
 
 g, length = S("g"), S("l")

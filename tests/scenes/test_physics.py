@@ -3,8 +3,8 @@
 import pytest
 import sympy as sp
 
-from app.engine.derive import substitute_cyclic
-from app.service.derivations import derivation
+from app.engine.derivation.derive import substitute_cyclic
+from app.service.chapter.derivations import derivation
 from tests.scenes.common import S, along_motion, close, force, transformed
 
 m, M, g, R, k, b, alpha, omega = (S(n) for n in ("m", "M", "g", "R", "k", "b", "alpha", "omega"))

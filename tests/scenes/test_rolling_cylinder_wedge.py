@@ -7,7 +7,7 @@ import pytest
 import sympy as sp
 from sympy.physics import mechanics as me
 
-from app.service.derivations import derivation, derivation_document
+from app.service.chapter.derivations import derivation, derivation_document
 from tests.scenes.common import S
 
 SCENE = "rolling-cylinder-wedge"

@@ -9,7 +9,7 @@ import re
 import pytest
 import sympy as sp
 
-from app.engine.derive import derive
+from app.engine.derivation.derive import derive
 from app.scenes import SCENES
 
 # the configuration at which each statement puts U = 0 (its coordinates; a parameter by name)

@@ -1,6 +1,6 @@
 """The chapter scenes' Lagrangians and equations of motion in textbook form, pinned as LaTeX.
 
-The strings were produced by running the display canonicaliser (``app.engine.textbook``) and
+The strings were produced by running the display canonicaliser (``app.engine.display.textbook``) and
 checked by eye: factors in a reader's order (½ m R² θ̇², m g R (1 − cos θ)), each
 Euler–Lagrange equation divided by its acceleration's coefficient where the mass matrix is
 diagonal (θ̈ + (g/R) sin θ = 0).  A change of the printer that changes a page shows up here.
@@ -11,13 +11,13 @@ import re
 import pytest
 import sympy as sp
 
-from app.engine.document import Document
-from app.engine.names import unicode
-from app.engine.report import SCALED_CLAUSE
-from app.engine.textbook import unicode_text
+from app.engine.display.names import unicode
+from app.engine.display.textbook import unicode_text
+from app.engine.document.model import Document
+from app.engine.document.report import SCALED_CLAUSE
 from app.scenes import SCENES
 from app.scenes.reasons import reason
-from app.service.derivations import derivation_document
+from app.service.chapter.derivations import derivation_document
 
 PINNED = {  # fmt: skip
     "damped-pendulum": (

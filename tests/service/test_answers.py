@@ -3,9 +3,9 @@ service functions fill the one they are given, never a module's."""
 
 import pytest
 
-from app.service import exporting
 from app.service.answers import Answers
-from app.service.derivations import PROCESS_SCENES, scene_document
+from app.service.chapter.derivations import PROCESS_SCENES, scene_document
+from app.service.export import exporting
 from app.service.services import Services
 from app.settings import Settings
 

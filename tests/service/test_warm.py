@@ -9,9 +9,10 @@ from pathlib import Path
 import pytest
 
 from app.numerics.methods import NONSTIFF
-from app.service import compiled as compiled_systems
-from app.service import gates, simulation, warm_kernels
-from app.service.derivations import PROCESS_SCENES
+from app.service.chapter import compiled as compiled_systems
+from app.service.chapter.derivations import PROCESS_SCENES
+from app.service.runtime import gates
+from app.service.simulations import simulation, warm_kernels
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
@@ -101,7 +102,7 @@ def test_a_scene_simulation_counts_as_in_flight(monkeypatch):
 
 
 def test_a_scene_does_not_wait_while_another_scene_is_being_built(monkeypatch):
-    from app.service.derivations import derivation
+    from app.service.chapter.derivations import derivation
 
     compiled = compiled_systems.Compiled()
     release = threading.Event()

@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from app.engine.action_step import action_step
-from app.engine.derive import derive
+from app.engine.derivation.derive import derive
+from app.engine.document.action_step import action_step
 from app.scenes import SCENES
 
 JS = Path(__file__).resolve().parents[2] / "static" / "js"

@@ -7,9 +7,9 @@ import sympy as sp
 
 from app.scenes import SCENES
 from app.scenes.beads import WIRE_REACH
-from app.service.derivations import PROCESS_SCENES, derivation_document
+from app.service.chapter.derivations import PROCESS_SCENES, derivation_document
 from app.viz.control_ranges import useful_range
-from app.web.pages import page_model
+from app.web.pages.chapter import page_model
 
 
 def control(scene_id, name):

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from app.engine.trees import FUNCTIONS
+from app.engine.document.trees import FUNCTIONS
 from app.viz.exprtree import evaluate
 
 EXPR_JS = Path(__file__).resolve().parents[2] / "static" / "js" / "expr.js"
@@ -21,7 +21,7 @@ pytestmark = [
 
 def test_expr_js_evaluates_every_function_like_python():
     env = {"x": 0.7, "y": -0.4}
-    # one node of each function the engine's trees may hold (app/engine/trees.py), x = 0.7, y = -0.4
+    # one node of each function the engine's trees may hold (app/engine/document/trees.py), x = 0.7, y = -0.4
     trees = [["atan2", "y", "x"] if name == "atan2" else [name, "x"] for name in sorted(FUNCTIONS)]
     texts = [f"{t[0]}({', '.join(t[1:])})" for t in trees]
     script = (

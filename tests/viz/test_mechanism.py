@@ -5,8 +5,8 @@ import math
 import pytest
 import sympy as sp
 
-from app.engine.document import ConstraintForce
-from app.engine.trees import of_sympy
+from app.engine.document.model import ConstraintForce
+from app.engine.document.trees import of_sympy
 from app.scenes import SCENES
 from app.scenes.beads import WIRE_REACH
 from app.viz.exprtree import evaluate
@@ -206,7 +206,7 @@ def test_the_ramp_holds_the_block_from_its_foot_to_the_top_of_the_run(alpha, xma
 
 @pytest.mark.slow
 def test_the_string_pulls_every_mass_it_holds():
-    from app.service.derivations import scene_document
+    from app.service.chapter.derivations import scene_document
 
     spec = spec_of("pulley", scene_document("pulley").constraint_forces)
     tension = [f for f in spec["forces"] if f["name"] == "string tension"]

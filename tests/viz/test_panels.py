@@ -3,7 +3,7 @@
 import pytest
 
 from app.scenes import SCENES
-from app.service.derivations import scene_document
+from app.service.chapter.derivations import scene_document
 from app.viz.panels import BY_NAME, NAMES, OPTIONAL, PANELS, Facts, linear_equations, shown
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
@@ -105,15 +105,15 @@ def test_the_phase_text_speaks_of_angles_only_where_a_coordinate_is_one(client):
 @pytest.mark.parametrize("scene_id", sorted(SCENES))
 def test_a_poincare_section_is_shown_only_where_the_motion_can_be_chaotic(scene_id):
     """prof-f 20, 38: sections of integrable systems (linear, or a conserved momentum) are closed curves only."""
-    from app.service.derivations import PROCESS_SCENES
-    from app.web.pages import page_model
+    from app.service.chapter.derivations import PROCESS_SCENES
+    from app.web.pages.chapter import page_model
 
     assert ("poincare" in page_model(scene_id, None, PROCESS_SCENES)["panels"]) == (scene_id == "double-pendulum")
 
 
 def test_typed_systems_get_a_poincare_section_only_where_the_motion_can_be_chaotic():
     from tests.viz.test_user_page import model
-    from tests.web.test_playground_prof_d import CONE
+    from tests.web.pages.test_playground_prof_d import CONE
 
     # the cone: φ is cyclic, p_φ is conserved, one degree of freedom is left (prof-f 38)
     assert "poincare" not in model(CONE)["panels"]

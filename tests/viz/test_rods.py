@@ -2,9 +2,9 @@
 
 import pytest
 
-from app.engine.derive import derive
-from app.engine.document import FixedDistance
-from app.engine.rods import fixed_distances
+from app.engine.derivation.derive import derive
+from app.engine.derivation.rods import fixed_distances
+from app.engine.document.model import FixedDistance
 from app.scenes.types import Parameter, Particle, System
 from app.viz.mechanism import NO_PICTURE, mechanism
 from app.viz.rods import rods
@@ -71,7 +71,7 @@ def test_a_system_without_particles_has_no_picture():
 
 
 def test_an_elastic_pendulum_hangs_on_a_spring_from_a_pivot():
-    from app.engine.trees import of_text
+    from app.engine.document.trees import of_text
     from app.viz.mechanism import mechanism
 
     particles = [("bob", ("r*sin(theta)", "0", "-r*cos(theta)"))]

@@ -4,7 +4,7 @@ from fractions import Fraction
 
 import pytest
 
-from app.engine.document import Document, Pair, ParameterInfo
+from app.engine.document.model import Document, Pair, ParameterInfo
 from app.viz.units import coordinate_units, parse_unit
 
 

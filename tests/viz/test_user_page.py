@@ -5,11 +5,11 @@ import math
 
 import pytest
 
-from app.engine.contract import printed_document
-from app.engine.derive import derive
-from app.engine.user_system import UserSystem
+from app.engine.derivation.derive import derive
+from app.engine.document.contract import printed_document
+from app.engine.parser.user_system import UserSystem
 from app.viz.user_page import model_of
-from tests.web.test_playground_prof_d import CONE
+from tests.web.pages.test_playground_prof_d import CONE
 
 KEPLER = {
     "coordinates": ["r", "phi"],

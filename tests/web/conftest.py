@@ -7,7 +7,7 @@ import pytest
 
 from app.main import app
 from app.service.services import Services
-from app.web.api_classes import classroom as classroom_dep
+from app.web.api.classes import classroom as classroom_dep
 from tests.classes import BACKENDS, classroom
 from tests.postgres import postgres_server  # noqa: F401 - the session fixture of classes_on_both
 
@@ -21,7 +21,7 @@ def services(client) -> Services:
 @pytest.fixture
 def override() -> Iterator[Callable[[Callable[..., Any], Any], Any]]:
     """``override(dependency, value)``: the routes are given ``value`` for ``dependency`` (a function of
-    app/web/deps.py) during the test, through ``app.dependency_overrides``, instead of a patched module."""
+    app/web/api/deps.py) during the test, through ``app.dependency_overrides``, instead of a patched module."""
     given: list[Callable[..., Any]] = []
 
     def give(dependency: Callable[..., Any], value: Any) -> Any:

@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Any
 from urllib.parse import quote
 
-from app.web.limits import MAX_BODY_BYTES, MAX_JSON_DEPTH
+from app.web.api.limits import MAX_BODY_BYTES, MAX_JSON_DEPTH
 
 
 def issue_34_probes(Probe: Any, json_headers: list[tuple[bytes, bytes]]) -> list[Any]:  # noqa: N803

@@ -5,8 +5,8 @@ arguments and result still cross a pickle boundary, as they do on their way to a
 Its jobs run on threads named ``worker``, so a count can tell the web process's work from the worker's.
 
 ``Counted`` records, by text and by the thread it ran on, every ``ast.parse`` (the parser's one reading of
-a text, app/engine/parse_read.py), every construction of SymPy from a checked tree (the parser's gate 3,
-app/engine/parse_build.py) and every reading by SymPy's own parser.
+a text, app/engine/parser/read.py), every construction of SymPy from a checked tree (the parser's gate 3,
+app/engine/parser/build.py) and every reading by SymPy's own parser.
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 from sympy.parsing import sympy_parser
 
-from app.engine import parse_build
+from app.engine.parser import build as parse_build
 
 WORKER = "worker"  # the prefix of the names of the pool's threads
 

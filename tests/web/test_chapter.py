@@ -4,8 +4,8 @@
 import pytest
 
 from app.service.answers import Answers
-from app.service.derivations import PROCESS_SCENES, Scenes
-from app.web.deps import remembered_answers, scenes_chapter
+from app.service.chapter.derivations import PROCESS_SCENES, Scenes
+from app.web.api.deps import remembered_answers, scenes_chapter
 
 
 class Asked(Scenes):

@@ -1,7 +1,7 @@
 """Connections from one address beyond its cap: slowloris and slow-read do not take the server from another address.
 
 The app is served by plain uvicorn (no options: ``uvicorn app.main:app`` as the README's layout allows),
-so the caps and deadlines come from the app itself (app/web/slow_clients.py).  The attacker is
+so the caps and deadlines come from the app itself (app/web/http/slow_clients.py).  The attacker is
 127.0.0.1; the other address is 127.0.0.2 (httpx binds it as its source address).
 """
 
@@ -17,7 +17,7 @@ import pytest
 import uvicorn
 
 from app.main import app
-from app.web.slow_clients import GUARD, REFUSAL
+from app.web.http.slow_clients import GUARD, REFUSAL
 
 pytestmark = pytest.mark.slow
 

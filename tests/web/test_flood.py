@@ -5,7 +5,7 @@ import inspect
 import pytest
 
 from app import main
-from app.service import simulation
+from app.service.simulations import simulation
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 

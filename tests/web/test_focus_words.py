@@ -11,9 +11,9 @@ from pathlib import Path
 import pytest
 
 from app.scenes import SCENES
-from app.service.action import action_of_scene
-from app.service.derivations import PROCESS_SCENES, derivation_document
-from app.service.gates import Gates
+from app.service.chapter.derivations import PROCESS_SCENES, derivation_document
+from app.service.runtime.gates import Gates
+from app.service.simulations.action import action_of_scene
 from app.viz.names import label
 
 NODE = shutil.which("node")

@@ -22,7 +22,7 @@ from urllib.parse import quote, urlencode
 import pytest
 
 from app.settings import settings
-from app.web.limits import MAX_BODY_BYTES, MAX_JSON_DEPTH
+from app.web.api.limits import MAX_BODY_BYTES, MAX_JSON_DEPTH
 from tests.browser.conftest import live_server  # noqa: F401  (the session's uvicorn server)
 from tests.web.hostile_issue_34 import issue_34_probes
 

@@ -11,9 +11,9 @@ from pathlib import Path
 
 import pytest
 
-from app.service.action import relax_of_scene
-from app.service.derivations import PROCESS_SCENES
-from app.service.gates import Gates
+from app.service.chapter.derivations import PROCESS_SCENES
+from app.service.runtime.gates import Gates
+from app.service.simulations.action import relax_of_scene
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): each test over 0.3 s (docs/testing.md)
 

@@ -8,7 +8,7 @@ import re
 from app.scenes import SCENES
 from app.settings import Settings
 from app.viz.chapter import ABOUT
-from app.web.deps import app_settings
+from app.web.api.deps import app_settings
 
 
 def _text(page: str) -> str:

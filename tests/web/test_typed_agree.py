@@ -11,9 +11,9 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from app.engine.check import check_answer
-from app.engine.typed_latex import typed_latex
-from app.service.typesetting import system_kinds
+from app.engine.tutor.check import check_answer
+from app.engine.tutor.typed_latex import typed_latex
+from app.service.tutor.typesetting import system_kinds
 
 DATA = json.loads((Path(__file__).parents[1] / "data" / "typed_expressions.json").read_text())
 COORDINATES, PARAMETERS = DATA["coordinates"], DATA["parameters"]
@@ -67,7 +67,7 @@ def test_checker_preview_and_playground_read_alike(client, case):
         return
     expr = meant(case["reads"])
     assert preview.status_code == 200, preview.text
-    # the preview: what it read, printed as typed (app/engine/typed_latex.py), never rewritten
+    # the preview: what it read, printed as typed (app/engine/tutor/typed_latex.py), never rewritten
     kinds = system_kinds(tuple(COORDINATES), tuple(PARAMETERS))
     assert preview.json()["latex"] == typed_latex(check_answer(text, "lagrangian", kinds))
     # the checker: its verdict on L, and the difference it shows, give back what it read

@@ -9,7 +9,7 @@ from fastapi import FastAPI
 from fastapi.responses import HTMLResponse
 from fastapi.testclient import TestClient
 
-from app.web import errors
+from app.web.api import errors
 
 SYSTEMS = {
     "lagrangian": ('{"coordinates": ["x"], "lagrangian": "x_dot**2/2 - x**2/2\\ud800"}', "f-L"),

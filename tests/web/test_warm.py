@@ -4,9 +4,9 @@ import threading
 
 import pytest
 
-from app.service import user_systems
 from app.service.answers import examples_cache
-from app.web import playground
+from app.service.users import user_systems
+from app.web.pages import playground
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 

@@ -208,7 +208,7 @@ _WHY_STOPPED = {
 def stop_sentence(problem: Problem, status: int, where: str, last: np.ndarray | None) -> str:
     """Why a run ended early, where, and at which coordinates: "the run stops at t = 1.102 s, at r = 0.0003 m,
     φ = 2.1: no step, however small, could follow the equations from there: …"."""
-    from app.engine.names import unicode
+    from app.engine.display.names import unicode
     from app.numerics.kernels.common import STATUS_NAMES
 
     name = STATUS_NAMES.get(status, "stopped")

@@ -19,11 +19,11 @@ import re
 from datetime import UTC, datetime
 from typing import Any
 
-from app.engine.check import KEYED, PER_COMPONENT, PER_COORDINATE, STEPS
+from app.engine.tutor.check import KEYED, PER_COMPONENT, PER_COORDINATE, STEPS
 from app.errors import Refused, UnknownScene
-from app.service.checking import Checking, declared
 from app.service.classroom.setup import checked_setup
-from app.service.user_checks import InvalidSystem
+from app.service.tutor.checking import Checking, declared
+from app.service.users.user_checks import InvalidSystem
 
 MAX_ITEMS = 20
 MAX_STEPS = 40

@@ -1,6 +1,6 @@
 """Joins and checks per minute, per class and per client: a sliding window of one minute per key.
 
-The fair share of the worker pool (app/service/fairness.py) already keeps one
+The fair share of the worker pool (app/service/runtime/fairness.py) already keeps one
 check in flight per student and a few per address; these windows bound the
 rate of what the classes' database records: a class accepts at most so many
 joins and checks a minute (one code cannot flood the disk), and each client

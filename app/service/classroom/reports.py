@@ -19,8 +19,8 @@ from typing import Any
 
 from sqlalchemy import case, func, literal, null, select, union_all
 
-from app.engine.check_problem import step_heading
-from app.engine.mistake_teacher import for_teacher
+from app.engine.tutor.check_problem import step_heading
+from app.engine.tutor.mistake_teacher import for_teacher
 from app.scenes import SCENES
 from app.service.classroom.database import Database
 from app.service.classroom.models import AttemptRow, HintRow, StudentRow

@@ -2,7 +2,7 @@
 grade, assign (a series of assignments), delete.
 
 Every database call runs in a thread (``asyncio.to_thread``); the event loop
-only awaits.  A student's check is practice mode's check (app/service/checking.py,
+only awaits.  A student's check is practice mode's check (app/service/tutor/checking.py,
 the same worker pool, answer cache and fair share, keyed on the student), then
 the verdict is recorded and committed before the answer goes back: what a
 student has been told is on disk.
@@ -17,18 +17,18 @@ from typing import Any, TypeVar
 
 import orjson
 
-from app.engine.check import KEYED
-from app.engine.mistakes import RULES
+from app.engine.tutor.check import KEYED
+from app.engine.tutor.mistakes import RULES
 from app.errors import ClassClosed, NoKey, Refused, WrongKey
-from app.service.checking import Checking, declared
 from app.service.classroom import grades, keys, reports, store
 from app.service.classroom.assignments import checked_due, checked_items, find_target
 from app.service.classroom.database import Database
 from app.service.classroom.rates import Window
 from app.service.classroom.setup import givens
 from app.service.classroom.shared_rates import SharedWindow, Store
-from app.service.fairness import CLASS, shared
-from app.service.user_checks import InvalidSystem
+from app.service.runtime.fairness import CLASS, shared
+from app.service.tutor.checking import Checking, declared
+from app.service.users.user_checks import InvalidSystem
 from app.settings import Settings
 
 T = TypeVar("T")

@@ -5,7 +5,7 @@ A system the instructor types is a name and expressions; a student cannot answer
 is and from where it is measured.  So an assigned system needs a ``setup`` text (refused with what to write when
 missing), and the page shows, under it, the system's defining data printed as a textbook prints it (the
 particles' masses and positions, T, U or L, the generalized forces) from the parser's reading, never evaluated
-(app/engine/typed_latex.py: pure Python, no SymPy).  What an assigned step asks for is not shown: a T step hides T
+(app/engine/tutor/typed_latex.py: pure Python, no SymPy).  What an assigned step asks for is not shown: a T step hides T
 (and L, which holds it), a U step hides U (and L), an L step hides T, U and L; the positions are the geometry,
 shown always.
 """
@@ -14,10 +14,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from app.engine.names import latex as name_latex
-from app.engine.typed_latex import typed_latex
+from app.engine.display.names import latex as name_latex
+from app.engine.tutor.typed_latex import typed_latex
 from app.errors import Refused
-from app.service.checking import declared
+from app.service.tutor.checking import declared
 
 MAX_SETUP = 1000  # characters of a set-up
 # the expressions each step would give away if shown, by the system's field

@@ -2,7 +2,7 @@
 
 Pure functions of a ``Source`` (a derivation, its JSON document and the
 problem's data); ``render`` picks one by format.  The service glue that feeds
-them scenes and user systems is ``app.service.exporting``.
+them scenes and user systems is ``app.service.export.exporting``.
 """
 
 from __future__ import annotations

@@ -21,8 +21,8 @@ from dataclasses import dataclass, field
 import sympy as sp
 from sympy.printing.pycode import SymPyPrinter
 
-from app.engine.derive import Derivation
-from app.engine.parse import ExpressionError, check_name, parse_expression
+from app.engine.derivation.derive import Derivation
+from app.engine.parser.parse import ExpressionError, check_name, parse_expression
 from app.errors import Refused
 from app.scenes.types import Event
 
@@ -169,7 +169,7 @@ class Naming:
 
 
 # The total time derivative along a motion, d/dt f = ∂f/∂t + Σ_k (∂f/∂q_k) q̇_k + (∂f/∂q̇_k) q̈_k,
-# the engine's own rule (app.engine.symbols), written out for the reader.
+# the engine's own rule (app.engine.parser.symbols), written out for the reader.
 DT_LINES = [
     "def dt(f):",
     '    """The total time derivative of f(t, q, v) along a motion: chain rule through every coordinate."""',

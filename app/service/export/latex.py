@@ -12,7 +12,7 @@ import re
 
 import sympy as sp
 
-from app.engine.breaking import LIMIT, broken_row
+from app.engine.display.breaking import LIMIT, broken_row
 from app.service.export.source import Source
 from app.service.export.text import latex_text
 
@@ -34,7 +34,7 @@ PREAMBLE = r"""\documentclass[11pt]{article}
 # environment (a matrix, a stacked numerator) stay in align*.
 LONG_ROW = 250
 # ems a row may take on the page (11 pt, 2 cm margins): the engine's own limit, so that the export breaks
-# rows where the page does (app.engine.breaking)
+# rows where the page does (app.engine.display.breaking)
 PAGE_EMS = LIMIT
 
 

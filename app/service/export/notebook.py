@@ -13,8 +13,8 @@ from __future__ import annotations
 # the server starts.
 import sympy as sp
 
-from app.engine import notation, report
-from app.engine.forms import textbook_form
+from app.engine.display.forms import textbook_form
+from app.engine.document import notation, report
 from app.service.export.action_cells import action_cells
 from app.service.export.code import (
     ACCELERATION_LINES,

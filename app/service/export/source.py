@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from app.engine.derive import Derivation
-from app.engine.document import Document, Erratum
+from app.engine.derivation.derive import Derivation
+from app.engine.document.model import Document, Erratum
 from app.scenes.types import Event, Parameter, Scene
 from app.viz.names import label
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 import string
 import unicodedata
 
-from app.engine.names import GREEK, latex
+from app.engine.display.names import GREEK, latex
 
 # CommonMark lets any ASCII punctuation be escaped with a backslash; escaping all of it
 # leaves no emphasis, link, HTML tag, heading, list, table or math ($) to open.

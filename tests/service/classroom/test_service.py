@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from app.engine.mistakes import RULES
+from app.engine.tutor.mistakes import RULES
 from app.errors import Refused
 from app.service.classroom import keys
 from app.service.classroom.assignments import find_item

@@ -6,13 +6,15 @@ from functools import cache
 from types import SimpleNamespace
 from typing import Any
 
-from app.engine.contract import printed_document
-from app.engine.derive import Derivation, derive
+from app.engine.derivation.derive import Derivation, derive
+from app.engine.document.contract import printed_document
 from app.scenes import SCENES
-from app.service import derivations, exporting, user_jobs
-from app.service.user_checks import checked
-from app.web.examples_user import DOUBLE_PENDULUM, FORCED_SPRING
-from app.web.schemas_user import SystemSpec
+from app.service.chapter import derivations
+from app.service.export import exporting
+from app.service.users import user_jobs
+from app.service.users.user_checks import checked
+from app.web.api.examples_user import DOUBLE_PENDULUM, FORCED_SPRING
+from app.web.schemas.user import SystemSpec
 from tests.served import derivation_run, scene_run
 
 RTOL, ATOL = 1e-10, 1e-12

@@ -1,0 +1,1 @@
+"""The derivation printed: its steps, its notation and the JSON document the API serves."""

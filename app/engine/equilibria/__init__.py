@@ -1,0 +1,1 @@
+"""Equilibria, their stability and normal modes; steady motions of the reduction."""

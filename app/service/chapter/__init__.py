@@ -1,0 +1,1 @@
+"""The chapter's scenes as a process serves them: derivations, documents, compiled systems."""

@@ -1,0 +1,1 @@
+"""What runs the work: the worker pool, cores and gates, fair shares, memory, caches and progress."""

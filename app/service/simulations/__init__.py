@@ -1,0 +1,1 @@
+"""Simulations and what is measured from them: runs, their trust, Poincaré sections, modes, the action."""

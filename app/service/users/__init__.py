@@ -1,0 +1,1 @@
+"""Systems users type in: checked, derived and simulated in the worker pool."""

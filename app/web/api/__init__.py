@@ -1,0 +1,1 @@
+"""The JSON API's routes, their dependencies, errors, body limits and the OpenAPI document."""

@@ -1,0 +1,1 @@
+"""HTTP itself: addresses, content codings, ETags, security headers, slow clients, lean responses."""

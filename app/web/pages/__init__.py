@@ -1,0 +1,1 @@
+"""The HTML pages: the chapter, the playground, the classes' pages, the embeds."""

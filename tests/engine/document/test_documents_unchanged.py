@@ -1,0 +1,62 @@
+"""The whole document of a user's N-link pendulum, byte for byte as it was before the engine was made faster.
+
+The engine's speed work (issue 47: the document at LagrangesMethod's speed) computes shared pieces once and
+skips work whose outcome is known; none of it may change what a reader sees.  Each document (every member:
+forms, conservation, equilibria, normal modes, Hamilton's equations, steps) is hashed and compared with the
+hash of the document the engine printed before that work (main at eeb4d1a), after an emptied SymPy cache, as
+a pool worker prints it.  A change meant to alter what a reader sees updates these hashes in the same commit,
+saying so; a change meant only to make the engine faster never does.
+"""
+
+import hashlib
+import json
+
+import pytest
+
+from app.engine.algebra.work import start_afresh
+from app.engine.derivation.derive import derive
+from app.engine.document.contract import derivation_json
+from app.engine.parser.user_system import UserSystem
+
+
+def chain(n: int) -> dict:
+    """The n-link pendulum as a user declares it (as benchmarks/bench_scale.py sends it): particles at the
+    ends of the links, U = Σ m g y."""
+    x, y, particles, potential = "", "", [], []
+    for i in range(1, n + 1):
+        x = f"{x} + l{i}*sin(q{i})" if x else f"l{i}*sin(q{i})"
+        y = f"{y} - l{i}*cos(q{i})" if y else f"-l{i}*cos(q{i})"
+        particles.append({"mass": f"m{i}", "position": [x, "0", y]})
+        potential.append(f"m{i}*g*({y})")
+    parameters = [{"name": f"m{i}", "value": 1.0, "unit": "kg", "min": 0.01} for i in range(1, n + 1)]
+    parameters += [{"name": f"l{i}", "value": 1.0, "unit": "m", "min": 0.01} for i in range(1, n + 1)]
+    parameters.append({"name": "g", "value": 9.81, "unit": "m/s^2", "min": 0.01})
+    return {
+        "coordinates": [f"q{i}" for i in range(1, n + 1)],
+        "parameters": parameters,
+        "particles": particles,
+        "potential": " + ".join(potential),
+    }
+
+
+def digest(document: dict) -> str:
+    return hashlib.sha256(json.dumps(document, sort_keys=True, ensure_ascii=False).encode()).hexdigest()
+
+
+# the sha256 of each document as printed by the engine before the speed work
+BEFORE = {
+    2: "70163cb2238ee6cb7210629386b20dfe488a4131227e0abca9f694bad033ef26",
+    3: "9898e084b0212cbc2f21086340c5f583ed118c0777c36b7d50da0a92e3dab21c",
+    4: "51b7cbfc236c3097195574ac2575de84a58cb0c5d865e4fc26874a4c2de996ef",
+    5: "8b6d5a4f89c28ada5a12dc015e890b07bbc83a1d17343771b928257cf425b78b",
+}
+
+
+def document(n: int) -> dict:
+    start_afresh()  # as a worker does before each job: the count of work, and so each bound's outcome, its own
+    return derivation_json(derive(UserSystem.of(chain(n)).system()))
+
+
+@pytest.mark.parametrize("n", [2, 3, pytest.param(4, marks=pytest.mark.slow), pytest.param(5, marks=pytest.mark.slow)])
+def test_the_n_link_documents_are_unchanged(n):
+    assert digest(document(n)) == BEFORE[n]
