@@ -1,5 +1,5 @@
 /**
- * embed.js — the entry module of an embed page (templates/embed.html, app/web/embed.py).
+ * embed.js — the entry module of an embed page (templates/embed.html, app/web/pages/embed.py).
  *
  * The scene's simulation alone: the animation, its controls and at most one plot panel,
  * bound as on the scene page (simulation.js); no derivation to typeset or fold.  A fragment

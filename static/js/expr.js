@@ -13,7 +13,7 @@
  *   seriesOf(tree, envAt, n);         // Float64Array of f(envAt(i)) for i < n
  */
 
-// How the browser computes each function a tree may hold: the parser's allowlist (app/engine/parse.py,
+// How the browser computes each function a tree may hold: the parser's allowlist (app/engine/parser/parse.py,
 // its one home) plus sign. tests/viz/test_expr_js.py fails if a name there has no implementation here.
 const FUNCS = {
   sin: Math.sin, cos: Math.cos, tan: Math.tan, asin: Math.asin, acos: Math.acos, atan: Math.atan,

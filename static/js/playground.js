@@ -191,7 +191,7 @@ async function fetchWhole() {
 }
 
 /** While the rest is worked out: which part the server is on and for how long, each second, with a button that
- *  stops it (app/web/api_staged.py).  Returns what ends the watch, and whether the reader stopped it. */
+ *  stops it (app/web/api/staged.py).  Returns what ends the watch, and whether the reader stopped it. */
 function watchProgress() {
   const line = document.getElementById("derive-now");
   const part = document.getElementById("derive-part");

@@ -3,7 +3,7 @@
  *
  *   new PoincarePanel(section, data, urls)   the plots.js interface: draw(run), cursor(i, run)
  *
- * urls.poincare(run) resolves to the server's section (app/service/poincare.py) on the energy
+ * urls.poincare(run) resolves to the server's section (app/service/simulations/poincare.py) on the energy
  * surface of the run's initial state, at the run's parameters: several orbits, each a set of
  * points (q, p) of one coordinate where the other crosses its plane upward (θ₂ = 0 with θ̇₂ > 0).  Computed on the
  * server (seconds, off the event loop) for the server's run only, and only once the panel is

@@ -1,6 +1,6 @@
 /**
  * prose.js — a symbol's subscript in a sentence the browser composes, set as the server sets it
- * (app/web/prose.py, the rule's home): U_eff -> U<sub>eff</sub>, p_θ -> p<sub>θ</sub>, U_eff'' -> U<sub>eff</sub>″.
+ * (app/web/rendering/prose.py, the rule's home): U_eff -> U<sub>eff</sub>, p_θ -> p<sub>θ</sub>, U_eff'' -> U<sub>eff</sub>″.
  *
  *   import { proseHTML, setProse } from "/static/js/prose.js";
  *   setProse(element, "p_θ stays at 1 kg·m²/s.");   // escapes, then sets the subscripts
@@ -52,7 +52,7 @@ const escapeRegExp = (s) => s.replace(/[.*+?^${}()|[\]\\]/g, "\\$&");
 
 /**
  * A verdict's sentence cut into its words and the formulas it quotes (``formulas``: the verdict's own list, each
- * {text, latex}, longest first, app/engine/spoken_tex.py): [{text}, {latex, text}, {text}, …] in order.
+ * {text, latex}, longest first, app/engine/tutor/spoken_tex.py): [{text}, {latex, text}, {text}, …] in order.
  */
 export function proseParts(text, formulas = []) {
   let parts = [{ text: String(text ?? "") }];

@@ -77,7 +77,7 @@ export function prepareRun(data, request, result) {
   if (!T && U && energy) T = energy.map((e, i) => e - U[i]);
   const momenta = {};
   for (const c of data.conserved) {
-    // momenta: a cyclic coordinate's p, a translation's P, a rotation's angular momentum J (app/engine/noether.py)
+    // momenta: a cyclic coordinate's p, a translation's P, a rotation's angular momentum J (app/engine/equations/noether.py)
     if (!/^(p_|P_|J)/.test(c.name)) continue;
     momenta[c.name] = (result.conserved && result.conserved[c.name]) || seriesOrNull(c.tree, envs);
   }

@@ -7,7 +7,7 @@
 // the verdict's own word, where a message does not open with it
 const LABELS = { correct: "Correct", equivalent: "Equivalent", incorrect: "Not yet" };
 
-// what each box takes (app/engine/answer_sides.py): an equation as a textbook writes it, else the right-hand side
+// what each box takes (app/engine/tutor/answer_sides.py): an equation as a textbook writes it, else the right-hand side
 const HOW = {
   equation: "Type the equation as lhs = rhs, or as one expression equal to zero.",
   acceleration: "Type {a} = … ({a} is typed {q}_ddot), or only the right-hand side.",
