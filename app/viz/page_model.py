@@ -16,7 +16,8 @@ from typing import Any
 
 from app.engine.derivation.dimensions import kind_of_unit
 from app.engine.display.names import MASS_MATRIX, latex, prose, unicode
-from app.engine.document.model import Document, EffectivePotential, FirstStage, ParameterInfo, notation
+from app.engine.document import notation
+from app.engine.document.model import Document, EffectivePotential, FirstStage, ParameterInfo
 from app.engine.document.notation import printed
 from app.engine.document.report import CORE_STEPS
 from app.engine.document.trees import TreeError, maybe_of_text, of_text

@@ -16,9 +16,10 @@ from app.engine.derivation.rods import fixed_distances
 from app.engine.display import meaning
 from app.engine.display.names import MASS_MATRIX, display_names, latex, unicode
 from app.engine.display.root_forms import power_form, trig_cancelled
+from app.engine.document import notation
 from app.engine.document.action_step import kinetic_focus_possible
 from app.engine.document.errata import errata_json
-from app.engine.document.model import Document, notation
+from app.engine.document.model import Document
 from app.engine.document.report import (
     SCALED_CLAUSE,
     Printer,

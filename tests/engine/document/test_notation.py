@@ -14,7 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from app.engine.document.model import Document, FirstStage, notation
+from app.engine.document import notation
+from app.engine.document.model import Document, FirstStage
 from app.scenes import SCENES
 from app.service.chapter.derivations import derivation, derivation_document
 
