@@ -7,7 +7,8 @@ from urllib.parse import urlencode
 
 import pytest
 
-from app.service.chapter.derivations import derivation_document
+from app.engine.document.model import Document
+from app.service.chapter.derivations import scene_document
 from app.viz.control_ranges import separatrix_marks
 from app.web.pages.playground_form import form_of, query_of
 from tests.web.pages.test_playground_hoop import HOOP
@@ -29,7 +30,7 @@ def note_reads(page, text: str) -> None:
 
 
 def test_the_pendulums_note_follows_the_start_and_gravity(page):
-    doc = derivation_document("simple-pendulum")
+    doc = scene_document("simple-pendulum")
     page.goto("/scenes/simple-pendulum")
     page.wait_for_selector(READY, state="attached")
     assert page.inner_text(NOTE).strip() == expected(doc, 1.0)
@@ -47,7 +48,7 @@ def test_the_pendulums_note_follows_the_start_and_gravity(page):
 
 
 def test_the_hoops_note_follows_its_rate(page, artifacts):
-    doc = page.request.post("/api/derive", data=HOOP).json()
+    doc = Document.model_validate(page.request.post("/api/derive", data=HOOP).json())
     page.goto("/playground?" + urlencode({**query_of(form_of(HOOP)), "stage": "whole"}, doseq=True))
     page.wait_for_selector(READY, state="attached", timeout=120_000)
     text = page.inner_text(NOTE).strip()

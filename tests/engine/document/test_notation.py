@@ -263,7 +263,7 @@ def test_the_inertias_letter_is_typed_in_one_place():
     # issue 40: the letter (I_eff for an angle, m_eff for a length) is chosen in app/engine/document/notation.py alone;
     # every step, sentence, hint and panel reads it from there
     root = Path(__file__).resolve().parents[3]
-    home = root / "app" / "engine" / "notation.py"
+    home = root / "app" / "engine" / "document" / "notation.py"
     typed = [
         f"{path.relative_to(root)}:{line}: {text!r}"
         for path in sorted((root / "app").rglob("*.py"))

@@ -52,5 +52,7 @@ def test_a_jobs_work_is_the_same_after_itself_and_after_another_job():
     counted(triple)
     after_another = counted(double)
     # Without an emptied cache: 5,600 units after itself against 8,900 after another job.  With it, what
-    # remains is hash order and the assumptions long-lived symbols keep, well under a percent.
-    assert abs(after_itself - after_another) <= 0.01 * after_another, (after_itself, after_another)
+    # remains is hash order and the assumptions long-lived symbols keep: up to 2.1 % over 16 hash seeds, as a
+    # document's memo charges a remembered result's first count again at each use (budget.memoized), which
+    # repeats that count's own variation (under 0.4 % before the memo charged).
+    assert abs(after_itself - after_another) <= 0.03 * after_another, (after_itself, after_another)
