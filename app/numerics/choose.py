@@ -58,9 +58,13 @@ from app.numerics import limits
 from app.numerics.methods import NONSTIFF, STIFF, symplectic_for
 from app.numerics.system import NumericSystem
 
-try:  # numpy's own eigenvalue ufunc, private: without it, its public wrapper (see ``eigenvalues``)
+try:  # numpy's own eigenvalue ufunc, private: used only where it answers as its public wrapper does
     from numpy.linalg import _umath_linalg
-except ImportError:  # pragma: no cover - a numpy that moved it
+
+    _PROBE = np.array([[0.0, 1.0], [-2.0, -0.5]])
+    if _umath_linalg.eigvals(_PROBE, signature="d->D").tolist() != np.linalg.eigvals(_PROBE).astype(complex).tolist():
+        _umath_linalg = None  # type: ignore[assignment]  # pragma: no cover - a numpy whose ufunc answers otherwise
+except Exception:  # pragma: no cover - a numpy that moved it or changed its signature
     _umath_linalg = None  # type: ignore[assignment]
 
 STIFF_RATIO = 1.0e3
