@@ -17,26 +17,7 @@ from app.engine.algebra.work import start_afresh
 from app.engine.derivation.derive import derive
 from app.engine.document.contract import derivation_json
 from app.engine.parser.user_system import UserSystem
-
-
-def chain(n: int) -> dict:
-    """The n-link pendulum as a user declares it (as benchmarks/bench_scale.py sends it): particles at the
-    ends of the links, U = Σ m g y."""
-    x, y, particles, potential = "", "", [], []
-    for i in range(1, n + 1):
-        x = f"{x} + l{i}*sin(q{i})" if x else f"l{i}*sin(q{i})"
-        y = f"{y} - l{i}*cos(q{i})" if y else f"-l{i}*cos(q{i})"
-        particles.append({"mass": f"m{i}", "position": [x, "0", y]})
-        potential.append(f"m{i}*g*({y})")
-    parameters = [{"name": f"m{i}", "value": 1.0, "unit": "kg", "min": 0.01} for i in range(1, n + 1)]
-    parameters += [{"name": f"l{i}", "value": 1.0, "unit": "m", "min": 0.01} for i in range(1, n + 1)]
-    parameters.append({"name": "g", "value": 9.81, "unit": "m/s^2", "min": 0.01})
-    return {
-        "coordinates": [f"q{i}" for i in range(1, n + 1)],
-        "parameters": parameters,
-        "particles": particles,
-        "potential": " + ".join(potential),
-    }
+from tests.chains import chain_request
 
 
 def digest(document: dict) -> str:
@@ -54,7 +35,7 @@ BEFORE = {
 
 def document(n: int) -> dict:
     start_afresh()  # as a worker does before each job: the count of work, and so each bound's outcome, its own
-    return derivation_json(derive(UserSystem.of(chain(n)).system()))
+    return derivation_json(derive(UserSystem.of(chain_request(n)).system()))
 
 
 @pytest.mark.parametrize("n", [2, 3, pytest.param(4, marks=pytest.mark.slow), pytest.param(5, marks=pytest.mark.slow)])
