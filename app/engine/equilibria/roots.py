@@ -121,8 +121,10 @@ def _scan_1d(g: Callable[[np.ndarray], np.ndarray], lo: float, hi: float) -> lis
         if ya == 0:
             found.append(float(a))
         elif ya * yb < 0:
+            # disp=False: where rounding in a steep g keeps Brent's method from meeting the tolerance it
+            # returns its best estimate instead of raising; the test below decides whether it is a root
             with np.errstate(all="ignore"):
-                x0 = opt.brentq(f, a, b, xtol=1e-15)
+                x0 = opt.brentq(f, a, b, xtol=1e-15, disp=False)
             # a sign change across a pole is not a root
             if abs(f(x0)) <= 1e-8 * max(abs(ya), abs(yb), 1.0):
                 found.append(float(x0))

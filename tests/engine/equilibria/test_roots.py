@@ -47,3 +47,11 @@ def test_the_scan_finds_what_it_found_point_by_point(monkeypatch):
     assert np.allclose(sorted(found), [-np.pi, 0.0, np.pi, np.pi], atol=1e-12)
     monkeypatch.setattr(roots, "_on_grid", _pointwise)
     assert roots._scan_1d(g, -np.pi - 0.05, np.pi + 0.05) == found
+
+
+def test_a_root_where_brents_method_stalls_is_still_found():
+    # 8 (q + 1)⁷, the push of a user's L = ẋ² + (x + ẋ + 1)⁸: about its sevenfold root g is below 10⁻²⁰ and
+    # Brent's method could not meet its tolerance (a RuntimeError, and the system refused as a failure)
+    g = _scalar(8 * (q + 1) ** 7)
+    found = roots._scan_1d(g, -3.0, 3.0)
+    assert found and all(abs(x + 1) < 0.05 for x in found), found
