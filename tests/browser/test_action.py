@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import pytest
 
-from app.scenes import SCENES
 from tests.browser.conftest import unfold_panels
 
 pytestmark = pytest.mark.browser
@@ -320,22 +319,6 @@ def test_a_lazy_panel_says_it_loads_when_in_view(page):
         page.wait_for_function(
             f"document.querySelector('{panel} .readout').textContent.includes('is drawn when you scroll to it')"
         )
-
-
-@pytest.mark.slow
-@pytest.mark.parametrize("scene", sorted(SCENES))
-def test_the_panel_opens_before_the_first_kinetic_focus(page, live_server, scene):
-    """The opening τ is the ordinary case: before the start's first kinetic focus (the server's t* over the whole
-    run), so the true path drawn is a minimum of S (the rail's default once opened at τ = 1 s past t* = 0.81 s)."""
-    t_end = SCENES[scene].t_end
-    answer = page.request.post(f"{live_server}/api/scenes/{scene}/action", data={"t_end": t_end, "epsilons": [0]}).json()
-    _open(page, f"/scenes/{scene}")
-    tau = float(page.locator("#action-T").input_value())
-    t_star = answer["conjugate_time"]
-    if t_star is not None:
-        assert tau < t_star, (scene, tau, t_star)
-    assert page.locator(PANEL).get_attribute("data-kind") == "minimum", (scene, tau, t_star)
-    assert not page.console_errors
 
 
 @pytest.mark.parametrize("width", [1366, 390])

@@ -5,48 +5,19 @@ a phone (390×844) the lines KaTeX wraps keep clear of each other: no fraction t
 
 from __future__ import annotations
 
-import re
-
 import pytest
 
-from app.scenes import SCENES
+from tests.browser.reading import CONTINUATION, JOINED, joined
 
 pytestmark = [pytest.mark.browser, pytest.mark.slow]
 
 READY = "body[data-katex-errors]"
-
-# the engine's continuation of a row (app/engine/display/breaking.py, _block): a row separator, then the quad indenting it
-CONTINUATION = re.compile(r"\s*\\\\(?:\[[^\]]*\])?\s*&\\quad(?![a-zA-Z])\s*")
 
 SHOW_ALL = """async () => {
   for (const d of document.querySelectorAll('details')) d.open = true;
   for (const b of document.querySelectorAll('button.all-steps[aria-expanded=false]')) b.click();
   await document.fonts.ready;
   for (let i = 0; i < 3; i++) await new Promise((r) => requestAnimationFrame(r));
-}"""
-
-# Each shown display the engine broke: the TeX KaTeX typeset (its annotation, or its lines' when broken apart),
-# whether its one-line form (given) fits a box of the same width, and whether the display overflows.
-JOINED = """async (joined) => {
-  const out = [];
-  for (const el of document.querySelectorAll('.math-display')) {
-    const tex = el.dataset.tex || '';
-    if (!(tex in joined) || el.offsetParent === null) continue;
-    // the one line's own width (an inline box beside the display, in its type), against the display's room
-    const probe = document.createElement('span');
-    const style = getComputedStyle(el);
-    probe.style.cssText = `position:absolute;left:0;top:0;visibility:hidden;white-space:nowrap;font-size:${style.fontSize}`;
-    document.body.append(probe);
-    window.katex.render("\\\\displaystyle " + joined[tex], probe, { displayMode: false, throwOnError: false });
-    const room = el.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight);
-    const fits = probe.getBoundingClientRect().width <= room + 1;
-    probe.remove();
-    const typeset = [...el.querySelectorAll('annotation')].map((a) => a.textContent).join(' ');
-    // set apart in lines of its own (breaking.js's .math-line), or typeset whole
-    const lines = el.querySelectorAll('.math-line').length;
-    out.push({ tex: tex.slice(0, 70), fits, typeset, lines, wide: el.scrollWidth > el.clientWidth + 1 });
-  }
-  return out;
 }"""
 
 # Pairs of fractions on different lines of one display (different pieces KaTeX laid out, .katex-base) that
@@ -72,21 +43,6 @@ GAPS = """() => {
 }"""
 
 
-def _joined(tex: str) -> str:
-    """The display's own rows joined (at the top level: a numerator stacked inside a fraction keeps its lines)."""
-    out, depth, last, i = [], 0, 0, 0
-    while i < len(tex):
-        c = tex[i]
-        m = CONTINUATION.match(tex, i) if depth == 0 else None
-        if m:
-            out.append(tex[last:i] + " ")
-            last = i = m.end()
-            continue
-        depth += (c == "{") - (c == "}")
-        i += 2 if c == "\\" else 1
-    return "".join(out) + tex[last:]
-
-
 def _open(browser, live_server, path, width, height, phone):
     context = browser.new_context(
         base_url=live_server, viewport={"width": width, "height": height}, has_touch=phone, is_mobile=phone
@@ -100,21 +56,6 @@ def _open(browser, live_server, path, width, height, phone):
     return context, page
 
 
-@pytest.mark.parametrize("sid", list(SCENES))
-def test_a_formula_the_engine_broke_is_one_line_where_that_fits(browser, live_server, sid):
-    context, page = _open(browser, live_server, f"/scenes/{sid}", 1366, 768, False)
-    try:
-        texs = page.evaluate("() => [...document.querySelectorAll('.math-display')].map((e) => e.dataset.tex || '')")
-        joined = {t: _joined(t) for t in texs if _joined(t) != t}
-        found = page.evaluate(JOINED, joined)
-        # broken while its one line fits: the continuation still in what KaTeX typeset, or the rows set apart
-        broken = [f["tex"] for f in found if f["fits"] and (CONTINUATION.search(f["typeset"]) or f["lines"])]
-        assert broken == [], broken
-        assert [f["tex"] for f in found if f["wide"]] == []
-    finally:
-        context.close()
-
-
 def test_the_rotating_parabola_lagrangian_is_one_line_on_a_wide_page(browser, live_server):
     # prof-o F3: "− m g z" stood alone on a second line, half the column empty above it
     context, page = _open(browser, live_server, "/scenes/rotating-parabola", 1366, 768, False)
@@ -122,7 +63,7 @@ def test_the_rotating_parabola_lagrangian_is_one_line_on_a_wide_page(browser, li
         texs = page.evaluate("() => [...document.querySelectorAll('.math-display')].map((e) => e.dataset.tex || '')")
         lagrangian = [t for t in texs if t.startswith(r"\begin{aligned}L' &=") and "m g z" in t]
         assert lagrangian and CONTINUATION.search(lagrangian[0]), "the engine no longer breaks L′: test another"
-        found = page.evaluate(JOINED, {lagrangian[0]: _joined(lagrangian[0])})
+        found = page.evaluate(JOINED, {lagrangian[0]: joined(lagrangian[0])})
         assert found[0]["fits"]
         assert found[0]["lines"] == 0
         assert "- m g z" in found[0]["typeset"] and not CONTINUATION.search(found[0]["typeset"])

@@ -6,13 +6,12 @@ from urllib.parse import urlsplit
 
 import pytest
 
-from app.scenes import SCENES
 from tests.browser.conftest import unfold_panels
 
 pytestmark = pytest.mark.browser
 
 READY = '#run-status[data-state="ready"]'
-PAGES = ["/", "/playground", *(f"/scenes/{s}" for s in sorted(SCENES))]
+PAGES = ["/", "/playground"]  # the scene pages: test_scene_read.py (no_overflow)
 
 
 @pytest.fixture

@@ -1,79 +1,16 @@
 """On a phone (390×844) a display formula too wide for its box is broken across lines, after its = and + signs,
-and tables fit: every scene with every step shown.  What cannot break (a matrix, one bracket wider than the
+and tables fit: the cases a professor found (every scene: test_scene_read.py, phone_formulas).  What cannot break (a matrix, one bracket wider than the
 screen) scrolls inside its box, which then shows so: its edge fades and a round arrow points the way it goes on."""
 
 from __future__ import annotations
 
 import pytest
 
-from app.scenes import SCENES
+from tests.browser.reading import PHONE
 
 pytestmark = [pytest.mark.browser, pytest.mark.slow]
 
-MEASURE = """async () => {
-  for (const d of document.querySelectorAll('details')) d.open = true;
-  for (const b of document.querySelectorAll('button.all-steps[aria-expanded=false]')) b.click();
-  await document.fonts.ready;
-  for (let i = 0; i < 4; i++) await new Promise((r) => requestAnimationFrame(r));
-  await new Promise((r) => setTimeout(r, 300));
-  const cue = (el) => {
-    const style = getComputedStyle(el);
-    return (el.dataset.more || '').includes('right')
-      && (style.maskImage || style.webkitMaskImage || 'none') !== 'none' && style.backgroundImage.includes('svg');
-  };
-  const formulas = [];
-  for (const el of document.querySelectorAll('.scene .math-display')) {
-    if (!el.querySelector('.katex') || el.offsetParent === null) continue;
-    formulas.push({
-      step: el.closest('li.step')?.id || '', tex: (el.dataset.tex || '').slice(0, 70),
-      wide: el.scrollWidth > el.clientWidth + 1, broken: el.dataset.broken === 'true', cue: cue(el),
-    });
-  }
-  const tables = [];
-  for (const t of document.querySelectorAll('.scene table')) {
-    if (t.offsetParent === null) continue;
-    const box = t.closest('.table-scroll, .data-summary .table, .frequencies') || t.parentElement;
-    const clipped = [...t.querySelectorAll('th, td')].filter((c) => c.scrollWidth > c.clientWidth + 1
-      && !c.querySelector('.math-display')).length;
-    tables.push({ name: t.className || t.closest('section')?.id || '', wide: box.scrollWidth > box.clientWidth + 1,
-      cue: cue(box), clipped, right: t.getBoundingClientRect().right });
-  }
-  return { formulas, tables };
-}"""
-
-
-@pytest.mark.parametrize("scene_id", sorted(SCENES))
-def test_a_phone_breaks_wide_formulas_and_fits_its_tables(browser, live_server, artifacts, scene_id):
-    context = browser.new_context(
-        base_url=live_server, viewport={"width": 390, "height": 844}, has_touch=True, is_mobile=True
-    )
-    page = context.new_page()
-    page.set_default_timeout(120_000)
-    try:
-        page.goto(f"/scenes/{scene_id}")
-        page.wait_for_selector("body[data-katex-errors]", state="attached")
-        page.wait_for_selector("#derivation .math-display .katex", state="attached")
-        found = page.evaluate(MEASURE)
-        formulas, tables = found["formulas"], found["tables"]
-        assert formulas
-        wide = [f for f in formulas if f["wide"]]
-        print(f"{scene_id}: {len(formulas)} displays, {sum(f['broken'] for f in formulas)} broken, {len(wide)} scroll")
-        # what still overflows scrolls with the fade and the arrow
-        assert all(f["cue"] for f in wide), [f["tex"] for f in wide if not f["cue"]]
-        # and a formula that fits shows no cue
-        assert not any(f["cue"] for f in formulas if not f["wide"])
-        # the first step's two lines (S[q] = ∫ L dt, δS = 0 for every δq …) break rather than scroll
-        first = [f for f in formulas if f["step"] == "step-1"]
-        assert first and not any(f["wide"] for f in first), first
-        # every table fits its box or scrolls with the cue; the parameters and the errata always fit; no cell clipped
-        for t in tables:
-            assert t["clipped"] == 0, t
-            assert not t["wide"] or t["cue"], t
-            if t["name"] in ("parameters", "errata"):
-                assert not t["wide"] and t["right"] <= 390, t
-        page.screenshot(path=artifacts / f"phone-formulas-{scene_id}.png", full_page=True)
-    finally:
-        context.close()
+MEASURE = PHONE  # each display and table as a phone shows them (tests/browser/reading.py)
 
 
 # the tabletop's equilibria block fits since the words about r = 0 (the coordinates fail there) have a row of their own
@@ -144,7 +81,9 @@ def test_the_double_pendulums_normal_modes_read_on_a_phone(browser, live_server,
         assert not any(t[:1].isdigit() and not texts[i - 1].endswith(("+", "−")) for i, t in enumerate(texts)), texts
         assert sum("≈" in t for t in texts) == 2, texts
         # the matrices on lines of their own
-        assert any(t.startswith("M=") or t.startswith("ℳ=") for t in texts) and any(t.startswith("K=") for t in texts), texts
+        assert any(t.startswith("M=") or t.startswith("ℳ=") for t in texts) and any(
+            t.startswith("K=") for t in texts
+        ), texts
         # issue 40: the long radicand is named on a line of its own (Δ = …), so that each ω² fits the phone:
         # nothing goes past the screen's edge and the box never scrolls sideways
         assert any(t.startswith("Δ=") for t in texts), texts

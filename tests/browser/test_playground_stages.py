@@ -8,7 +8,7 @@ from urllib.parse import urlencode
 
 import pytest
 
-from tests.browser.test_axe import AXE, violations
+from tests.browser.reading import AXE, axe_violations
 
 pytestmark = pytest.mark.browser
 
@@ -73,11 +73,11 @@ def test_a_triple_pendulum_shows_its_equations_before_the_rest(sized, artifacts)
     assert all(equations.nth(i).locator(".katex").count() >= 1 for i in range(3))
     assert page.locator(".katex-error").count() == 0
     page.screenshot(path=artifacts / f"playground-stages-equations-{name}.png", full_page=False)
-    if AXE.exists():  # the first stage's view on its own: no serious or critical violation (tests/browser/test_axe.py)
+    if AXE.exists():  # the first stage's view on its own: no serious or critical violation (tests/browser/reading.py)
         # once KaTeX's fonts are in: a formula widens then, and its box becomes a keyboard region (derivation.js);
         # on a fresh machine the fonts arrive after the first stage's formulas (a race the CI found)
         page.evaluate("document.fonts.ready.then(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))))")
-        assert violations(page) == []
+        assert axe_violations(page) == []
     # then the whole derivation in its place, the line replaced by what was left out and where it says why
     page.wait_for_selector(WHOLE)
     assert page.locator('#derived[data-stage="equations"]').count() == 0

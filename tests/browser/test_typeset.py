@@ -1,6 +1,7 @@
-"""The practice box typesets through the checker's parser: the shared corpus (tests/data/expressions.json) typed
-into the page is accepted and refused exactly as app/engine/parser/parse.py accepts and refuses it (the Python side:
-tests/service/tutor/test_typesetting.py, tests/web/api/test_api_typeset.py)."""
+"""The practice box typesets through the checker's parser: texts of the shared corpus (tests/data/expressions.json)
+typed into the page are accepted and refused as app/engine/parser/parse.py accepts and refuses them.  The page shows
+the server's verdict, so a sample of each kind is typed here; every text of the corpus is read by the engine
+(tests/service/tutor/test_typesetting.py) and through the API (tests/web/api/test_api_typeset.py)."""
 
 from __future__ import annotations
 
@@ -14,6 +15,9 @@ pytestmark = pytest.mark.browser
 
 CORPUS = json.loads((Path(__file__).parents[1] / "data" / "expressions.json").read_text())
 BOX = f'.practice-step[data-key="{CORPUS["step"]}"]'
+# every fifth text of each kind: the corpus's first (plain products and powers) and its later groups (θ, θ', ^,
+# implicit products, names the step does not know)
+SAMPLE = 5
 
 
 def typed(page, text: str) -> str:
@@ -26,19 +30,19 @@ def typed(page, text: str) -> str:
     return page.locator(BOX).get_attribute("data-typeset")
 
 
-def test_the_box_accepts_and_refuses_the_corpus_as_the_parser_does(page, artifacts):
+def test_the_box_accepts_and_refuses_a_sample_of_the_corpus_as_the_parser_does(page, artifacts):
     page.set_viewport_size({"width": 1366, "height": 768})
     page.goto(f"/scenes/{CORPUS['scene']}?practice")
     page.wait_for_selector(BOX)
     preview = page.locator(BOX + " .practice-preview")
-    for text in CORPUS["accepted"]:
+    for text in CORPUS["accepted"][::SAMPLE]:
         assert typed(page, text) == "read", text
         assert (
             preview.locator(".practice-preview-math .katex").count() == 1
             and preview.locator(".katex-error").count() == 0
         )
         assert preview.locator(".practice-preview-note").inner_text() == ""
-    for case in CORPUS["refused"]:
+    for case in CORPUS["refused"][::SAMPLE]:
         assert typed(page, case["text"]) == "refused", case
         # the page leaves out the column (the part is marked where it was typed), the API says it
         said = re.sub(r" at column \d+", "", case["says"])
