@@ -1,5 +1,5 @@
-"""The summary is one snapshot (issue 44, item 4): read 2,000 times back to back while answers and students
-arrive, on SQLite and on PostgreSQL, it never fails and its figures always add up.
+"""The summary is one snapshot: read back to back for as long as answers and students arrive (and at least 200
+times), on SQLite and on PostgreSQL, it never fails and its figures always add up.
 
 Writers record answers straight into the class's store (as a check does after its verdict), several at once:
 right and wrong ones, named mistakes, and steps never answered before (a new coordinate each time), while new
@@ -22,7 +22,7 @@ from tests.postgres import postgres_server  # noqa: F401 - the session fixture
 
 pytestmark = pytest.mark.slow
 
-POLLS = 2000
+POLLS = 200  # at least: the reads go on until the last writer is done
 WRITERS = 3
 STUDENTS_EACH = 60  # each writer's students (a lecture hall in all), their answers spread over the polls
 PACE = 0.1  # seconds between one writer's students
@@ -78,7 +78,10 @@ def test_the_summary_adds_up_while_answers_arrive(client, services, tmp_path, re
         broken: list[tuple[int, list[str]]] = []
         last = (0, 0)
         states: set[tuple[int, int]] = set()
-        for i in range(POLLS):
+        i = 0
+        # every read while the writers write (a read after they stop sees one state, and checks nothing more)
+        while i < POLLS or any(thread.is_alive() for thread in writers):
+            i += 1
             r = client.get(f"/api/classes/{code}/summary", headers=headers)
             statuses[r.status_code] = statuses.get(r.status_code, 0) + 1
             if r.status_code != 200:
@@ -95,7 +98,7 @@ def test_the_summary_adds_up_while_answers_arrive(client, services, tmp_path, re
         for thread in writers:
             thread.join(30)
         assert not failures, failures
-        assert statuses == {200: POLLS}, statuses
+        assert statuses == {200: i} and i >= POLLS, statuses
         assert not broken, broken[:5]
         assert len(states) > 50  # the answers did arrive during the polls: the summaries saw many states
         final = client.get(f"/api/classes/{code}/summary", headers=headers).json()
