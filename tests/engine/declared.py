@@ -31,7 +31,21 @@ def system_of(spec: dict) -> System:
     )
 
 
+def declared(name: str) -> System:
+    """A scene's system, or one of the check corpus's own systems (USER_SYSTEMS), as declared."""
+    return system_of(USER_SYSTEMS[name]) if name in USER_SYSTEMS else SCENES[name].system
+
+
 @cache
 def derivation(name: str) -> Derivation:
     """A scene's derivation, or one of the check corpus's own systems (USER_SYSTEMS)."""
-    return derive(system_of(USER_SYSTEMS[name]) if name in USER_SYSTEMS else SCENES[name].system)
+    return derive(declared(name))
+
+
+def family_steps(name: str) -> list[tuple[str, str | None]]:
+    """The steps whose mistakes a family generates (T and U where they are declared apart, an equation for each
+    coordinate), read from the declaration: a module lists its cases without deriving while it is collected
+    (tests/engine/tutor/test_check.py holds this list to the tutor's own ``exercises``)."""
+    system = declared(name)
+    apart = [("kinetic", None), ("potential", None)] if system.lagrangian is None else []
+    return apart + [("equation", q) for q in system.coordinates]

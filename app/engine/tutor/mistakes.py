@@ -34,6 +34,7 @@ import sympy as sp
 from app.engine.derivation.derive import Derivation
 from app.engine.derivation.dimensions import STIFFNESS_PLAIN, STIFFNESS_WORDS
 from app.engine.document.notation import MASS_INERTIA, Inertia
+from app.scenes.types import System
 
 
 @dataclass(frozen=True)
@@ -49,9 +50,14 @@ STIFFNESS_UNITS = ("N/m", "kg/s²", "kg/s^2", "kg s⁻²")
 
 
 def has_springs(d: Derivation) -> bool:
-    """Whether the system may hold a spring: a parameter with a stiffness's unit, or no parameter with a unit.
-    The one answer to "does this problem have springs" for every message family."""
-    units = [p.unit for p in d.system.parameters if p.unit]
+    """Whether the system may hold a spring (springs_possible of its declaration).  The one answer to "does this
+    problem have springs" for every message family."""
+    return springs_possible(d.system)
+
+
+def springs_possible(system: System) -> bool:
+    """Whether a declared system may hold a spring: a parameter with a stiffness's unit, or no parameter with a unit."""
+    units = [p.unit for p in system.parameters if p.unit]
     return not units or any(u.replace(" ", "") in STIFFNESS_UNITS for u in units)
 
 

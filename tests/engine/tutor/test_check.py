@@ -28,7 +28,7 @@ from app.engine.tutor.mistakes import (
 from app.scenes import SCENES
 from app.scenes.types import Parameter, System
 from tests.engine.check_corpus import CORPUS, TYPICAL, USER_SYSTEMS
-from tests.engine.declared import derivation
+from tests.engine.declared import derivation, family_steps
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
@@ -314,12 +314,13 @@ def typed_arguments(typed: str, d: Derivation) -> set[str]:
     return {spoken(a) for f in found if isinstance(f, sp.Function) for a in f.args} | sums
 
 
-FAMILY_STEPS = [
-    (name, step, coordinate)
-    for name in (*SCENES, *USER_SYSTEMS)
-    for step, coordinate in exercises(derivation(name))
-    if step in ("kinetic", "potential", "equation")
-]
+FAMILY_STEPS = [(name, step, coordinate) for name in (*SCENES, *USER_SYSTEMS) for step, coordinate in family_steps(name)]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", [*SCENES, *USER_SYSTEMS])
+def test_the_family_steps_listed_from_the_declaration_are_the_tutors_exercises(name):
+    assert family_steps(name) == [e for e in exercises(derivation(name)) if e[0] in ("kinetic", "potential", "equation")]
 
 
 @pytest.mark.slow

@@ -12,10 +12,10 @@ import pytest
 from app.engine.derivation.derive import derive
 from app.engine.tutor.check import judge
 from app.engine.tutor.exercises import exercise_json
-from app.engine.tutor.mistakes import OMEGA_HINT, POINTERS, has_springs, pointer
+from app.engine.tutor.mistakes import OMEGA_HINT, POINTERS, pointer, springs_possible
 from app.scenes import SCENES
 from tests.engine.slip_corpus import SLIPS
-from tests.engine.tutor.test_check_slips import derivation, step_problem
+from tests.engine.tutor.test_check_slips import declared, step_problem
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
@@ -28,7 +28,7 @@ def shown(result: dict) -> str:
     return f"{result['hint']} | {m['name']} | {m['where']}"
 
 
-SPRINGLESS = [s for s in SLIPS if not has_springs(derivation(s[0]))]
+SPRINGLESS = [s for s in SLIPS if not springs_possible(declared(s[0]))]
 
 
 @pytest.mark.parametrize("slip", SPRINGLESS, ids=[f"{s[0]}-{s[1]}-{i}" for i, s in enumerate(SPRINGLESS)])

@@ -15,15 +15,21 @@ from app.engine.display.names import unicode
 from app.engine.tutor.check import judge, problem
 from app.engine.tutor.mistakes import POINTERS, pointer
 from app.scenes import SCENES
+from app.scenes.types import System
 from tests.engine.declared import system_of
 from tests.engine.slip_corpus import CORRECT, NAMED, SLIPS, SYSTEMS
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
 
+def declared(name: str) -> System:
+    """A scene's system or one of the slip corpus's own, as declared."""
+    return system_of(SYSTEMS[name]) if name in SYSTEMS else SCENES[name].system
+
+
 @cache
 def derivation(name: str) -> Derivation:
-    return derive(system_of(SYSTEMS[name]) if name in SYSTEMS else SCENES[name].system)
+    return derive(declared(name))
 
 
 @cache
