@@ -30,5 +30,10 @@ scripts/lint.sh
 # tests left to an idle worker, so one long module does not keep the other core waiting.
 .venv/bin/python -m pytest -n "${TEST_WORKERS:-auto}" --dist worksteal -m "not load" "$@"
 # the tests that load the machine on purpose (busy processes beside a server) run alone, so that their load
-# slows no other test; exit 5 (none selected, when arguments chose other tests) is not a failure
+# slows no other test; only the modules that hold one are collected (the marker is a module's pytestmark), unless
+# arguments choose the tests; exit 5 (none selected, when arguments chose other tests) is not a failure
+if [ $# -eq 0 ]; then
+    mapfile -t loaded < <(grep -rlE 'pytest\.mark\.load\b' tests --include='test_*.py')
+    set -- "${loaded[@]}"
+fi
 .venv/bin/python -m pytest -n 0 -m load "$@" || [ $? -eq 5 ]

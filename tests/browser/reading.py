@@ -7,6 +7,8 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from playwright.sync_api import TimeoutError as PlaywrightTimeout
+
 # the first run has been drawn (or said why it is not trusted)
 DONE = '#run-status[data-state="ready"], #run-status[data-state="untrusted"], #run-status[data-state="warning"]'
 # every formula on the page has been typeset (the count of KaTeX errors is written)
@@ -161,10 +163,20 @@ def code_speak(page) -> list[str]:
     return [t for t in page.evaluate(TEXTS) if CODE_SPEAK.search(t)]
 
 
+# every plot shown has its data (the work-precision chart draws once its report is measured: not waited for)
+PLOTS_DRAWN = """() => [...document.querySelectorAll('section.panel:not(#panel-work-precision) .plot')]
+  .filter((p) => p.offsetParent !== null).every((p) => p.data && p.data.length > 0)"""
+
+
 def draw_panels(page) -> None:
-    """Every plot panel scrolled into view: each draws when it first comes into view (or when the browser is idle)."""
+    """Every plot panel scrolled into view, and drawn: each draws when it first comes into view (or when the browser
+    is idle).  After 5 s the page is read as it stands (the checks then say what is missing)."""
     for section in page.locator("section.panel").all():
         section.scroll_into_view_if_needed()
+    try:
+        page.wait_for_function(PLOTS_DRAWN, timeout=5_000)
+    except PlaywrightTimeout:
+        pass
 
 
 # the engine's continuation of a row (app/engine/display/breaking.py, _block): a row separator, then the quad indenting it

@@ -176,9 +176,8 @@ def action_panel(r: Reading) -> None:
 
 
 def axe(r: Reading) -> None:
-    draw_panels(r.page)
     r.page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
-    r.page.wait_for_timeout(1500)
+    draw_panels(r.page)
     assert axe_violations(r.page) == []
 
 

@@ -8,14 +8,22 @@ import sympy as sp
 
 from app.engine.tutor.check import exercises, judge, problem
 from app.scenes import SCENES
+from tests.cases import case_list
+from tests.engine import slip_corpus
 from tests.engine.tutor.test_check_slips import derivation
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
-POSITION_STEPS = [
-    (name, coordinate) for name in (*SCENES, "free-cart", "elastic-pendulum") for step, coordinate in exercises(derivation(name))
-    if step == "position"
-]  # fmt: skip
+# (system, component) for each position step (the list kept on disk between runs: tests/cases.py)
+POSITION_STEPS = case_list(
+    "position-steps",
+    lambda: [
+        (name, coordinate) for name in (*SCENES, "free-cart", "elastic-pendulum")
+        for step, coordinate in exercises(derivation(name)) if step == "position"
+    ],
+    __file__,
+    slip_corpus.__file__,
+)  # fmt: skip
 
 
 @pytest.mark.parametrize(("system", "coordinate"), POSITION_STEPS, ids=["-".join(c) for c in POSITION_STEPS])
