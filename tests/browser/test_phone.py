@@ -3,11 +3,8 @@ line each), controls, set-up figure with parameters, then the derivation; the st
 
 from __future__ import annotations
 
-import json
-
 import pytest
 
-from app.scenes import SCENES
 from tests.browser.conftest import unfold_panels
 
 pytestmark = pytest.mark.browser
@@ -104,74 +101,3 @@ def test_a_wide_screen_shows_every_panel_unfolded(page):
     assert page.locator(".panels > section.panel.folded").count() == 0
 
 
-MANY_BODIES = sorted(s.id for s in SCENES.values() if len(s.system.particles) > 1)
-
-
-@pytest.mark.parametrize("scene_id", MANY_BODIES)
-def test_each_mass_label_sits_nearer_its_mass_than_any_other_body_or_the_handle(
-    browser, live_server, artifacts, scene_id
-):
-    # prof-g 31: on the phone the rail's "mass 1" sat over the velocity handle, its "mass 2" under the handle's words
-    context, page = _phone_page(browser, live_server, scene_id)
-    try:
-        canvas = page.locator("canvas.mechanism").first
-        canvas.scroll_into_view_if_needed()
-        page.wait_for_function("document.querySelector('canvas.mechanism').dataset.labels !== undefined")
-        page.wait_for_timeout(300)
-        canvas.screenshot(path=artifacts / f"labels-phone-{scene_id}.png")
-        labels = {x["label"]: x["box"] for x in json.loads(canvas.get_attribute("data-labels"))}
-        bodies = {b["label"]: (b["x"], b["y"]) for b in json.loads(canvas.get_attribute("data-bodies"))}
-        handle = canvas.get_attribute("data-handle")
-        others = {"the velocity handle": tuple(json.loads(handle).values())} if handle else {}
-        for label, (x0, y0, x1, y1) in labels.items():
-            cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-            own = ((bodies[label][0] - cx) ** 2 + (bodies[label][1] - cy) ** 2) ** 0.5
-            for name, (x, y) in {**{k: v for k, v in bodies.items() if k != label}, **others}.items():
-                assert own <= ((x - cx) ** 2 + (y - cy) ** 2) ** 0.5, (label, name, labels, bodies, handle)
-        # and no label lies under the handle's own words ("drag: initial velocity")
-        words = page.locator(".handle-label")
-        if words.count() and words.first.is_visible():
-            w, c = words.first.bounding_box(), canvas.bounding_box()
-            left, top = w["x"] - c["x"], w["y"] - c["y"]
-            right, bottom = left + w["width"], top + w["height"]
-            for label, (x0, y0, x1, y1) in labels.items():
-                assert not (x0 < right and x1 > left and y0 < bottom and y1 > top), (label, labels, w)
-            # nor any body (prof-h 7: the double pendulum's lower bob, at the top of the view, was under them)
-            for label, (x, y) in bodies.items():
-                assert not (left - 6 < x < right + 6 and top - 6 < y < bottom + 6), (label, bodies, w)
-    finally:
-        context.close()
-
-
-@pytest.mark.parametrize("scene_id", ["pulley", "double-pendulum", "rolling-cylinder-wedge", "massive-pulley"])
-def test_the_handle_words_keep_off_the_wheels_the_bodies_and_their_labels(browser, live_server, artifacts, scene_id):
-    # prof-k 12: on a phone the pulleys' "drag: initial velocity (now 0)" lay across the movable pulley; the words
-    # stay beside the handle (test_embed_views) and cover no wheel, no body and no body's label
-    context, page = _phone_page(browser, live_server, scene_id)
-    try:
-        canvas = page.locator("canvas.mechanism").first
-        canvas.scroll_into_view_if_needed()
-        page.wait_for_function("document.querySelector('canvas.mechanism').dataset.labels !== undefined")
-        page.wait_for_selector(".handle-label", state="visible")
-        page.wait_for_timeout(300)
-        canvas.screenshot(path=artifacts / f"handle-words-phone-{scene_id}.png")
-        w, c = page.locator(".handle-label").first.bounding_box(), canvas.bounding_box()
-        left, top = w["x"] - c["x"], w["y"] - c["y"]
-        right, bottom = left + w["width"], top + w["height"]
-        wheels = json.loads(canvas.get_attribute("data-wheels") or "[]")
-        # the pulleys' three wheels, the rolling cylinder drawn as one, the massive pulley's one
-        assert len(wheels) == {"pulley": 3, "rolling-cylinder-wedge": 1, "massive-pulley": 1}.get(scene_id, 0), wheels
-        for x, y, r in wheels:
-            # the nearest point of the words' box to the wheel's centre lies outside its rim
-            nx, ny = min(max(x, left), right), min(max(y, top), bottom)
-            assert (nx - x) ** 2 + (ny - y) ** 2 > r**2, (wheels, w)
-        for label, (x, y) in {
-            b["label"]: (b["x"], b["y"]) for b in json.loads(canvas.get_attribute("data-bodies"))
-        }.items():
-            assert not (left - 6 < x < right + 6 and top - 6 < y < bottom + 6), (label, w)
-        for label, (x0, y0, x1, y1) in {
-            x["label"]: x["box"] for x in json.loads(canvas.get_attribute("data-labels"))
-        }.items():
-            assert not (x0 < right and x1 > left and y0 < bottom and y1 > top), (label, w)
-    finally:
-        context.close()

@@ -11,6 +11,8 @@ What each check holds (its name says where it came from):
 - ``no_overflow`` (phone): nothing in the page goes past the screen's right edge, the page never scrolls sideways.
 - ``reads_in_order`` (phone): title, statement, animation, plots, controls, figure, parameters, derivation, in
   that order, the statement on the first screen.
+- ``labels_clear`` (phone): each mass's label nearer its mass than any other body or the velocity handle; the
+  handle's words over no label, body or wheel.
 - ``phase_caption`` (desktop): the phase portrait's sentence agrees with the run (a named turning point is the
   run's extreme, a run stopped by its event is said to end there, nothing is sent to infinity).
 - ``action_panel`` (desktop): the action panel opens before the start's first kinetic focus, on a minimum.
@@ -135,6 +137,49 @@ def reads_in_order(r: Reading) -> None:
     assert r.page.locator(".scene .statement").bounding_box()["y"] < 844  # the statement on the first screen
 
 
+# the wheels each scene draws (the pulleys' three, the rolling cylinder, the massive pulley's one)
+WHEELS = {"pulley": 3, "rolling-cylinder-wedge": 1, "massive-pulley": 1}
+
+
+def labels_clear(r: Reading) -> None:
+    # prof-g 31, prof-h 7, prof-k 12: on a phone each mass's label sits nearer its mass than any other body or the
+    # velocity handle; the handle's words ("drag: initial velocity") cover no label, no body and no wheel
+    page = r.page
+    canvas = page.locator("canvas.mechanism").first
+    canvas.scroll_into_view_if_needed()
+    page.wait_for_function("document.querySelector('canvas.mechanism').dataset.bodies !== undefined")
+    page.wait_for_timeout(300)
+    bodies = {b["label"]: (b["x"], b["y"]) for b in json.loads(canvas.get_attribute("data-bodies"))}
+    # a scene of several masses labels each (one mass is not labelled)
+    labels = {x["label"]: x["box"] for x in json.loads(canvas.get_attribute("data-labels") or "[]")}
+    assert labels or len(bodies) < 2, bodies
+    wheels = json.loads(canvas.get_attribute("data-wheels") or "[]")
+    if r.scene_id in WHEELS:
+        assert len(wheels) == WHEELS[r.scene_id], wheels
+    handle = canvas.get_attribute("data-handle")
+    others = {"the velocity handle": tuple(json.loads(handle).values())} if handle else {}
+    if len(bodies) > 1:
+        for label, (x0, y0, x1, y1) in labels.items():
+            cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+            own = ((bodies[label][0] - cx) ** 2 + (bodies[label][1] - cy) ** 2) ** 0.5
+            for name, (x, y) in {**{k: v for k, v in bodies.items() if k != label}, **others}.items():
+                assert own <= ((x - cx) ** 2 + (y - cy) ** 2) ** 0.5, (label, name, labels, bodies, handle)
+    words = page.locator(".handle-label")
+    if not (words.count() and words.first.is_visible()):
+        return
+    w, c = words.first.bounding_box(), canvas.bounding_box()
+    left, top = w["x"] - c["x"], w["y"] - c["y"]
+    right, bottom = left + w["width"], top + w["height"]
+    for label, (x0, y0, x1, y1) in labels.items():
+        assert not (x0 < right and x1 > left and y0 < bottom and y1 > top), ("words over a label", label, labels, w)
+    for label, (x, y) in bodies.items():
+        assert not (left - 6 < x < right + 6 and top - 6 < y < bottom + 6), ("words over a body", label, bodies, w)
+    for x, y, radius in wheels:
+        # the nearest point of the words' box to the wheel's centre lies outside its rim
+        nx, ny = min(max(x, left), right), min(max(y, top), bottom)
+        assert (nx - x) ** 2 + (ny - y) ** 2 > radius**2, ("words over a wheel", wheels, w)
+
+
 def phase_caption(r: Reading) -> None:
     page = r.page
     if not page.locator("#panel-phase").count():
@@ -251,6 +296,7 @@ CHECKS = {
         loads,
         no_overflow,
         reads_in_order,
+        labels_clear,
         axe,
         formula_widths,
         phone_formulas,
@@ -290,3 +336,9 @@ def test_a_scene_page_read_once(browser, live_server, artifacts, scene_id, size)
     finally:
         context.close()
     assert not failed, "\n".join(f"{name}: {why}" for name, why in failed.items())
+
+
+def test_every_check_the_module_describes_runs():
+    # a check written but left out of CHECKS would pass without running: the docstring's list is the module's
+    described = set(re.findall(r"^- ``(\w+)``", __doc__, re.MULTILINE))
+    assert described == {check.__name__ for checks in CHECKS.values() for check in checks}
