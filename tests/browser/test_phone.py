@@ -1,5 +1,6 @@
-"""A phone (390×844) in the order a student reads: title, problem statement, animation, its plots (folded, one
-line each), controls, set-up figure with parameters, then the derivation; the statement on the first screen."""
+"""A phone (390×844): the plots sit under the animation, folded to one line each, and unfold in place; the energy
+panel fits after scrolling through.  The reading order, the labels and the handle's words are checked on every
+scene page by tests/browser/test_scene_read.py."""
 
 from __future__ import annotations
 
@@ -10,16 +11,6 @@ from tests.browser.conftest import unfold_panels
 pytestmark = pytest.mark.browser
 
 READY = '#run-status[data-state="ready"], #run-status[data-state="untrusted"], #run-status[data-state="warning"]'
-ORDER = [
-    "h1",
-    ".statement",
-    "canvas.mechanism",
-    ".panels",
-    "#controls",
-    "figure.setup",
-    "table.parameters",
-    "#derivation",
-]
 
 
 def _phone_page(browser, live_server, scene_id: str):
@@ -99,5 +90,3 @@ def test_a_wide_screen_shows_every_panel_unfolded(page):
     page.wait_for_selector(READY, state="attached")
     assert page.locator(".panels button.fold").count() == 0
     assert page.locator(".panels > section.panel.folded").count() == 0
-
-
