@@ -77,7 +77,13 @@ def test_the_playgrounds_box_reads_the_declared_systems_names(page):
     page.goto("/playground")
     page.locator("#practice-switch").check()
     box = '.practice-step[data-key="acceleration:x"]'
-    page.wait_for_selector(box, timeout=150_000)  # the example's practice steps: its derivation, on a busy machine
+    # the example's practice steps (its derivation, on a busy machine), or the page's word that they could not load
+    page.wait_for_function(
+        f"document.querySelector('{box}') || /could not be loaded/.test("
+        "document.getElementById('practice-status')?.textContent || '')",
+        timeout=150_000,
+    )
+    assert page.locator(box).count() == 1, page.locator("#practice-status").text_content()
     page.locator(box + " textarea[name]").fill("(F*cos(w*t) - b*x_dot - k*x)/m")
     page.wait_for_function(f"document.querySelector('{box}').dataset.typeset === 'read'")
     shown = page.locator(box + " .practice-preview-math annotation").text_content().removeprefix("\\displaystyle ")
