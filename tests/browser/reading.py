@@ -31,13 +31,14 @@ def axe_violations(page) -> list[str]:
 
 
 # Every step shown and every "details" open, once the fonts are in and the page has laid them out.
-SHOW_ALL = """async () => {
+OPEN_ALL = """
   for (const d of document.querySelectorAll('details')) d.open = true;
   for (const b of document.querySelectorAll('button.all-steps[aria-expanded=false]')) b.click();
   await document.fonts.ready;
   for (let i = 0; i < 4; i++) await new Promise((r) => requestAnimationFrame(r));
   await new Promise((r) => setTimeout(r, 300));
-}"""
+"""
+SHOW_ALL = "async () => {" + OPEN_ALL + "}"
 
 # the page marks a box that scrolls (data-more) at the frame after its layout changes: they agree once it has
 CUES_SETTLED = (
@@ -88,13 +89,10 @@ def width_problems(found: list[dict], phone: bool) -> list:
 
 # On a phone: each shown display (its step, whether it is wider than its box, broken by the page, showing the cue)
 # and each table (wider than its box, the cue, cells clipped, its right edge).
-PHONE = """async () => {
-  for (const d of document.querySelectorAll('details')) d.open = true;
-  for (const b of document.querySelectorAll('button.all-steps[aria-expanded=false]')) b.click();
-  await document.fonts.ready;
-  for (let i = 0; i < 4; i++) await new Promise((r) => requestAnimationFrame(r));
-  await new Promise((r) => setTimeout(r, 300));
-  const cue = (el) => {
+PHONE = (
+    "async () => {"
+    + OPEN_ALL
+    + """  const cue = (el) => {
     const style = getComputedStyle(el);
     return (el.dataset.more || '').includes('right')
       && (style.maskImage || style.webkitMaskImage || 'none') !== 'none' && style.backgroundImage.includes('svg');
@@ -118,6 +116,7 @@ PHONE = """async () => {
   }
   return { formulas, tables };
 }"""
+)
 
 
 def phone_problems(found: dict) -> list:

@@ -7,18 +7,11 @@ from __future__ import annotations
 
 import pytest
 
-from tests.browser.reading import CONTINUATION, JOINED, joined
+from tests.browser.reading import CONTINUATION, JOINED, SHOW_ALL, joined
 
 pytestmark = [pytest.mark.browser, pytest.mark.slow]
 
 READY = "body[data-katex-errors]"
-
-SHOW_ALL = """async () => {
-  for (const d of document.querySelectorAll('details')) d.open = true;
-  for (const b of document.querySelectorAll('button.all-steps[aria-expanded=false]')) b.click();
-  await document.fonts.ready;
-  for (let i = 0; i < 3; i++) await new Promise((r) => requestAnimationFrame(r));
-}"""
 
 # Pairs of fractions on different lines of one display (different pieces KaTeX laid out, .katex-base) that
 # overlap sideways: the vertical gap between their boxes (the fraction's vlist, as tall as numerator over
