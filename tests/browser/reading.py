@@ -17,17 +17,45 @@ TYPESET = "body[data-katex-errors]"
 AXE = Path(__file__).resolve().parents[2] / "node_modules" / "axe-core" / "axe.min.js"
 
 
-def axe_violations(page) -> list[str]:
+def axe_violations(page, contrast: bool = True) -> list[str]:
     """axe-core's serious and critical violations on the page as it stands (axe is installed from npm by
-    scripts/assets.sh and put into the page here, never served by the app)."""
+    scripts/assets.sh and put into the page here, never served by the app); ``contrast=False`` leaves out colour
+    contrast (most of axe's time on a page of many formulas: it lays a grid over every element of the page)."""
     if not AXE.exists():
         raise AssertionError("axe-core is not installed: run scripts/assets.sh (npm ci installs it)")
     page.evaluate(AXE.read_text())
     return page.evaluate(
-        """async () => (await axe.run(document, { resultTypes: ['violations'] })).violations
-             .filter((v) => v.impact === 'serious' || v.impact === 'critical')
-             .map((v) => `${v.impact} ${v.id}: ${v.nodes.length} × ${v.nodes[0].target.join(' ')} (${v.help})`)"""
+        """async (contrast) => (await axe.run(document, { resultTypes: ['violations'],
+                                                            rules: { 'color-contrast': { enabled: contrast } } }))
+             .violations.filter((v) => v.impact === 'serious' || v.impact === 'critical')
+             .map((v) => `${v.impact} ${v.id}: ${v.nodes.length} × ${v.nodes[0].target.join(' ')} (${v.help})`)""",
+        contrast,
     )
+
+
+# WCAG's contrast ratio of the text of each visible element ``selectors`` name against the first opaque background
+# behind it (its own or an ancestor's; the page's white where none is): each under 4.5 (3 for large text: 24 px, or
+# 18.66 px bold) with its ratio.  For elements drawn on plain backgrounds, as axe's rule finds them there.
+CONTRAST = """(selectors) => {
+  const rgb = (c) => (c.match(/[\\d.]+/g) || []).map(Number);
+  const lum = ([r, g, b]) => { const f = (v) => { v /= 255; return v <= 0.03928 ? v / 12.92 : ((v + 0.055) / 1.055) ** 2.4; };
+                               return 0.2126 * f(r) + 0.7152 * f(g) + 0.0722 * f(b); };
+  const out = [];
+  for (const el of document.querySelectorAll(selectors.join(','))) {
+    if (!el.textContent.trim() || !el.getClientRects().length) continue;
+    const style = getComputedStyle(el);
+    let bg = [255, 255, 255];
+    for (let a = el; a; a = a.parentElement) {
+      const c = rgb(getComputedStyle(a).backgroundColor);
+      if (c.length === 3 || (c.length === 4 && c[3] === 1)) { bg = c.slice(0, 3); break; }
+    }
+    const [hi, lo] = [lum(rgb(style.color).slice(0, 3)), lum(bg)].sort((x, y) => y - x);
+    const ratio = (hi + 0.05) / (lo + 0.05);
+    const size = parseFloat(style.fontSize), bold = Number(style.fontWeight) >= 700;
+    if (ratio < (size >= 24 || (bold && size >= 18.66) ? 3 : 4.5)) out.push([el.textContent.trim().slice(0, 30), ratio.toFixed(2)]);
+  }
+  return out;
+}"""
 
 
 # Every step shown and every "details" open, once the fonts are in and the page has laid them out.
@@ -244,3 +272,64 @@ def extreme(t: list[float], x: list[float], highest: bool) -> float:
         if curve != 0:
             return b - (c - a) ** 2 / (8 * curve)
     return x[k]
+
+
+# The lines of the displays whose TeX begins with one of ``start`` (or of the first display holding ``has`` in the
+# first step whose title begins with ``step``, or of the display ``selector`` names), as they show: KaTeX's pieces (.base) grouped by the height they sit at (``text`` trimmed, ``bare``
+# without any space); whether the page broke the display, whether it is wider than its box (it scrolls), where its
+# box ends.
+LINES = """({ start = [], step, has = '', selector }) => {
+  const titled = step && [...document.querySelectorAll('li.step')].find((s) => s.querySelector('.step-title')?.textContent.startsWith(step));
+  const boxes = selector ? [document.querySelector(selector)] : step ? [[...titled.querySelectorAll('.math-display')].find((b) => (b.dataset.tex || '').includes(has))]
+    : [...document.querySelectorAll('.scene .math-display')].filter((b) => start.some((s) => (b.dataset.tex || '').startsWith(s)));
+  return boxes.map((box) => {
+    const lines = [];
+    for (const row of box.querySelectorAll('.math-line')) {
+      let line = null;
+      for (const b of row.querySelectorAll('.katex-html > .base, .katex-html > .katex-base')) {
+        const r = b.getBoundingClientRect();
+        if (!line || r.top >= line.bottom - 2) { line = { text: '', right: 0, bottom: r.bottom }; lines.push(line); }
+        line.text += b.textContent;
+        line.right = Math.max(line.right, r.right);
+        line.bottom = Math.max(line.bottom, r.bottom);
+      }
+    }
+    return { tex: (box.dataset.tex || '').slice(0, 60), broken: box.dataset.broken === 'true',
+             wide: box.scrollWidth > box.clientWidth + 1, edge: box.getBoundingClientRect().right,
+             lines: lines.map((l) => ({ text: l.text.replace(/\\u200b/g, '').trim(), bare: l.text.replace(/[\\u200b\\s]/g, ''),
+                                        right: l.right })) };
+  });
+}"""
+
+# The double pendulum's accelerations: how wide their display is past its box, and on how many lines each of the
+# outermost fractions' numerators is set (not the invisible copies of spacedRows' rows).
+ACCELERATIONS = """() => {
+  const step = [...document.querySelectorAll('li.step')].find((s) => s.querySelector('.step-title')?.textContent === 'Accelerations');
+  const box = step.querySelector('.math-display');
+  const fracs = [...box.querySelectorAll('.mfrac')].filter((f) => !f.parentElement.closest('.mfrac, .rlap'));
+  return { wide: box.scrollWidth - box.clientWidth, errors: box.querySelectorAll('.katex-error').length,
+           fractions: fracs.length, broken: box.dataset.broken === 'true',
+           rows: fracs.map((f) => [...f.querySelectorAll('.mtable .col-align-l > .vlist-t > .vlist-r > .vlist > span')]
+             .filter((s) => s.textContent.trim()).length) };
+}"""
+
+# The room between the double pendulum's two stacked accelerations: from the lowest glyph box under θ̈₁'s fraction
+# line to the highest over θ̈₂'s (the outermost fractions, not those inside them nor spacedRows' invisible copies).
+FRACTION_GAP = """() => {
+  const step = [...document.querySelectorAll('li.step')].find((s) => s.querySelector('.step-title')?.textContent === 'Accelerations');
+  const box = step.querySelector('.math-display');
+  const fracs = [...box.querySelectorAll('.mfrac')].filter((f) => !f.parentElement.closest('.mfrac, .rlap'));
+  const lines = fracs.map((f) => f.querySelector('.frac-line').getBoundingClientRect());
+  const glyphs = (f) => {
+    const out = [], walk = document.createTreeWalker(f, NodeFilter.SHOW_TEXT);
+    while (walk.nextNode()) {
+      if (!walk.currentNode.textContent.trim()) continue;
+      const range = document.createRange(); range.selectNodeContents(walk.currentNode);
+      out.push(range.getBoundingClientRect());
+    }
+    return out;
+  };
+  const den = glyphs(fracs[0]).filter((r) => r.top >= lines[0].bottom);
+  const num = glyphs(fracs[1]).filter((r) => r.bottom <= lines[1].top);
+  return { count: fracs.length, gap: Math.min(...num.map((r) => r.top)) - Math.max(...den.map((r) => r.bottom)) };
+}"""

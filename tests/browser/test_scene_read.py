@@ -16,11 +16,23 @@ What each check holds (its name says where it came from):
 - ``phase_caption`` (desktop): the phase portrait's sentence agrees with the run (a named turning point is the
   run's extreme, a run stopped by its event is said to end there, nothing is sent to infinity).
 - ``action_panel`` (desktop): the action panel opens before the start's first kinetic focus, on a minimum.
-- ``axe``: no serious or critical axe-core violation once the panels are drawn.
+- ``axe``: no serious or critical axe-core violation once the panels are drawn (on a phone, colour contrast is
+  measured only where the phone's colours differ from the desktop's, ``PHONE_ONLY``).
 - ``formula_widths``: with every step shown, no formula wider than its box on a desktop; on a phone what is
   wider scrolls in a box the keyboard reaches and that shows it goes on.
 - ``phone_formulas`` (phone): wide formulas broken where they can be, tables fit or scroll with the cue.
 - ``joined_formulas`` (desktop): a formula the engine broke by its length is one line where that line fits.
+- ``first_step_whole`` (phone): the first step's condition δq(t₀) = δq(t₁) = 0 on one line, no line beginning
+  with a bare 0 or ending in a relation.
+- ``no_sideways_formula`` (phone; the scenes of ``NO_SIDEWAYS``): no display formula scrolls sideways but the
+  named ones.
+- ``modes_lines`` (phone; the double pendulum): each matrix and each ω² on a line of its own, the radicand named
+  (Δ = …), no value alone at a line's start, nothing past the screen's edge.
+- ``rigid_pieces`` (phone; the rolling cylinder and the massive pulley): the centre of mass's vector, H and the
+  time as an integral fit, and no line is a relation alone or ends in one.
+- ``accelerations_fit`` (the double pendulum): θ̈₁ and θ̈₂ fit their box, their numerators on two lines on a
+  desktop and on more on a phone.
+- ``fractions_apart`` (desktop; the double pendulum): θ̈₁'s denominator and θ̈₂'s numerator 8 px apart or more.
 - ``no_code_speak``: no sentence types a subscript as code (U_eff, p_θ, r_i …).
 - ``no_noise_after_play`` (phone): after Play no null, NaN, undefined or rounding noise shown as an energy; the
   energy plotted at full precision; the run's status on two lines at most.
@@ -39,10 +51,14 @@ from playwright.sync_api import TimeoutError as PlaywrightTimeout
 from app.scenes import SCENES
 from tests.browser.conftest import unfold_panels
 from tests.browser.reading import (
+    ACCELERATIONS,
     CONTINUATION,
+    CONTRAST,
     CUES_SETTLED,
     DONE,
+    FRACTION_GAP,
     JOINED,
+    LINES,
     NUMBER,
     PHONE,
     SHOW_ALL,
@@ -83,6 +99,7 @@ class Reading:
     def __init__(self, page, base: str, scene_id: str, size: str, run: dict, errors: list[str]):
         self.page, self.base, self.scene_id, self.size, self.run, self.errors = page, base, scene_id, size, run, errors
         self.phone = SIZES[size][2]
+        self.measured: dict = {"formulas": []}  # the phone's displays and tables (``phone_formulas``)
 
 
 def loads(r: Reading) -> None:
@@ -220,10 +237,18 @@ def action_panel(r: Reading) -> None:
     assert page.locator(panel).get_attribute("data-kind") == "minimum", (tau, answer["conjugate_time"])
 
 
+# What a phone shows that a desktop does not, in colours of its own: the panels' fold buttons and the errata set as
+# cards.  No other colour of static/css depends on the screen's size, so the rest of the page's colour contrast is
+# the desktop reading's (axe's colour contrast is two thirds of its time on a page of many formulas).
+PHONE_ONLY = [".panels > .panel > h3 > button.fold", ".errata td"]
+
+
 def axe(r: Reading) -> None:
     r.page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
     draw_panels(r.page)
-    assert axe_violations(r.page) == []
+    assert axe_violations(r.page, contrast=not r.phone) == []
+    if r.phone:
+        assert r.page.evaluate(CONTRAST, PHONE_ONLY) == []
 
 
 def formula_widths(r: Reading) -> None:
@@ -236,7 +261,8 @@ def formula_widths(r: Reading) -> None:
 
 
 def phone_formulas(r: Reading) -> None:
-    assert (problems := phone_problems(r.page.evaluate(PHONE))) == [], problems[:5]
+    r.measured = r.page.evaluate(PHONE)
+    assert (problems := phone_problems(r.measured)) == [], problems[:5]
 
 
 def joined_formulas(r: Reading) -> None:
@@ -245,6 +271,96 @@ def joined_formulas(r: Reading) -> None:
     # broken while its one line fits: the continuation still in what KaTeX typeset, or the rows set apart
     assert [f["tex"] for f in found if f["fits"] and (CONTINUATION.search(f["typeset"]) or f["lines"])] == []
     assert [f["tex"] for f in found if f["wide"]] == []
+
+
+def first_step_whole(r: Reading) -> None:
+    # prof-l 7: "δS = 0 / for every δq with δq(t₀) = δq(t₁) = / 0", the 0 alone on a line
+    (found,) = r.page.evaluate(LINES, {"selector": "#step-1 .math-display"})
+    lines = [line["bare"] for line in found["lines"]]
+    assert found["broken"] and not found["wide"], found
+    assert not any(line.startswith("0") or line.endswith("=") for line in lines), lines
+    assert any(line.endswith("δq(t0)=δq(t1)=0") for line in lines), lines
+
+
+# the scenes none of whose display formulas scrolls on a phone (prof-c S11: the simple pendulum's steps 14, 15, 28
+# and the tabletop's 3, 16, 17 were cut at the right edge), but those that begin as named: the tabletop's velocity
+# is one bracket, and the helix's two equations for its multipliers (a linear system in λ₁, λ₂) are not broken yet
+NO_SIDEWAYS = {
+    "simple-pendulum": (),
+    "helix-bead": (r"\begin{aligned}\ddot{\mathcal{C}}_{1} &= 0",),
+    "rail-two-body": (),
+    "tabletop-spring": (r"\vec v = \left(",),
+}
+
+
+def no_sideways_formula(r: Reading) -> None:
+    if r.scene_id not in NO_SIDEWAYS:
+        return
+    wide = [f["tex"] for f in r.measured["formulas"] if f["wide"]]
+    assert [w for w in wide if not w.startswith(NO_SIDEWAYS[r.scene_id])] == [], wide
+
+
+def modes_lines(r: Reading) -> None:
+    # prof-h (issue 40): each matrix and each ω² on its own line, no "K =" left at a line's end, a value on the line
+    # of its ≈ ("≈ 5.747 s⁻²"), what is wider than the screen inside a box that scrolls and says so
+    if r.scene_id != "double-pendulum":
+        return
+    (modes,) = r.page.evaluate(LINES, {"step": "Normal modes about", "has": "omega_"})
+    texts = [line["text"] for line in modes["lines"]]
+    assert modes["broken"] and texts, modes
+    # no line ends in a relation with what it relates on the next line (K =, ω₁² =)
+    assert not any(t.endswith(("=", "≈")) for t in texts), texts
+    # no line begins with a bare value: the frequencies' numbers follow their ≈ (a sum's next term, 4(m₁ + m₂)…
+    # after a line ending in its +, may begin with its number)
+    assert not any(t[:1].isdigit() and not texts[i - 1].endswith(("+", "−")) for i, t in enumerate(texts)), texts
+    assert sum("≈" in t for t in texts) == 2, texts
+    assert any(t.startswith(("M=", "ℳ=")) for t in texts) and any(t.startswith("K=") for t in texts), texts
+    # issue 40: the long radicand is named on a line of its own (Δ = …), so that each ω² fits the phone: nothing
+    # goes past the screen's edge and the box never scrolls sideways
+    assert any(t.startswith("Δ=") for t in texts), texts
+    assert not modes["wide"] and all(line["right"] <= modes["edge"] + 1 for line in modes["lines"]), modes
+
+
+def rigid_pieces(r: Reading) -> None:
+    # prof-q 5: on a phone the cylinder's r⃗_cm was clipped (now a column), its H's numerator was clipped (now
+    # stacked, the term after the fraction kept), and "Time as an integral" left "=" alone on a line above the integral
+    if r.scene_id not in ("rolling-cylinder-wedge", "massive-pulley"):
+        return
+    # the position vector's letter: R where the radius is r (notation.position)
+    letter = "R" if r.scene_id == "rolling-cylinder-wedge" else "r"
+    starts = [rf"\begin{{aligned}}\vec {letter}_{{\mathrm{{cm}}}}", r"H = \sum_k", r"\begin{aligned}t &= \int"]
+    vector, hamiltonian, integral = (r.page.evaluate(LINES, {"start": [s]})[0] for s in starts)
+    if r.scene_id == "rolling-cylinder-wedge":
+        assert not vector["wide"] and not hamiltonian["wide"], (vector, hamiltonian)
+    # the integral is broken after its first row; no line is a relation alone, nor ends with one (the integral's
+    # "=" keeps its ∫; H's second "=" begins a line)
+    assert len(integral["lines"]) >= 2, integral
+    for display in (vector, hamiltonian, integral):
+        texts = [line["text"] for line in display["lines"]]
+        assert not any(t in ("=", "≈") or t.endswith("=") for t in texts), display
+
+
+def accelerations_fit(r: Reading) -> None:
+    # prof-n 10: on a phone θ̈₁ and θ̈₂, each one fraction wider than the screen, ran off its right edge behind a
+    # sideways scroll; their numerators now go on over more lines.  A desktop keeps the engine's two lines.
+    if r.scene_id != "double-pendulum":
+        return
+    found = r.page.evaluate(ACCELERATIONS)
+    assert found["wide"] <= 1 and found["errors"] == 0 and found["fractions"] == 2, found
+    if r.phone:
+        assert all(n > 2 for n in found["rows"]), found
+    else:
+        assert found["rows"] == [2, 2], found
+
+
+def fractions_apart(r: Reading) -> None:
+    # prof-l 9: on a laptop θ̈₁'s denominator touched θ̈₂'s numerator.  The glyphs' own boxes (taller than their ink)
+    # half a line apart: room between the rows, not fractions touching (1 px apart before; the page's 7 px between
+    # the lines of a broken display)
+    if r.scene_id != "double-pendulum":
+        return
+    found = r.page.evaluate(FRACTION_GAP)
+    assert found["count"] == 2 and found["gap"] >= 8, found
 
 
 def no_code_speak(r: Reading) -> None:
@@ -289,6 +405,8 @@ CHECKS = {
         axe,
         formula_widths,
         joined_formulas,
+        accelerations_fit,
+        fractions_apart,
         no_code_speak,
         no_console_error,
     ],
@@ -300,6 +418,11 @@ CHECKS = {
         axe,
         formula_widths,
         phone_formulas,
+        first_step_whole,
+        no_sideways_formula,
+        modes_lines,
+        rigid_pieces,
+        accelerations_fit,
         no_code_speak,
         no_noise_after_play,
         no_console_error,
