@@ -18,12 +18,17 @@ POINCARE_PIECE = 50.0  # simulated time per compiled run of a section (a budget 
 # Bounds of the engine's symbolic work, in units of work (app/engine/algebra/work.py: SymPy expressions built,
 # counted whether SymPy's cache answers them or not), never in seconds: what a document holds, how it is
 # shown and what the tutor says are then a function of the input alone, on an idle machine or a loaded one.
-# A bound used up leaves its member out with a note, or keeps a plainer form, never a refusal
-# of the system (app/engine/algebra/budget.py); the one clock is the worker job's, at the edge (Settings.derive_seconds).
+# A bound used up leaves its member out with a note, or keeps a plainer form, never a refusal of the system
+# (app/engine/algebra/budget.py), but for the equations of motion themselves (EQUATIONS_WORK); the one clock is
+# the worker job's, at the edge (Settings.derive_seconds).
 # This machine, idle, does about WORK_PER_SECOND units a second on the chapter's derivations (measured on
 # all twelve scenes' documents, CPU time), and each bound below is the time bound it replaced times that
 # rate, so that it ends about where that one did on an idle machine (the seconds are in the comments).
 WORK_PER_SECOND = 20_000
+# The equations of motion have no plainer form to fall back to: a system whose equations need more than this is
+# refused, at the same count on any machine at any load, where the job's clock would refuse it later, by the
+# load of the moment.  Ten times the 12-link chain's (65,550 units); (x + ẋ + 1)⁶⁰ in L needs 925,673.
+EQUATIONS_WORK = 400_000  # 20 s
 DISPLAY_WORK = 120_000  # 6 s: the display simplifications of one document, shared
 # From three coordinates on (no chapter scene has more than two), the display simplifications share less:
 # the residuals and forces of a chain rarely simplify beyond sin² + cos² = 1, and the user waits for them.

@@ -1,6 +1,6 @@
 """Errors the engine raises for declarations it cannot derive."""
 
-from app.errors import Refused
+from app.errors import Refused, TooMuchWork
 
 
 def excerpt(text: object, limit: int = 40) -> str:
@@ -17,3 +17,8 @@ class DerivationError(Refused):
 
     def __init__(self, message: str, part: str = ""):
         super().__init__(message, part)
+
+
+class EquationsTooCostly(DerivationError, TooMuchWork):
+    """A system whose equations of motion need more work than the engine gives them (``EQUATIONS_WORK``): refused
+    at the same count of work on an idle machine and a loaded one."""

@@ -18,7 +18,8 @@ from typing import Any, TypeVar
 import sympy as sp
 
 from app.engine.algebra import work as counted
-from app.engine.algebra.budget import Skipped, bounded
+from app.engine.algebra.budget import Skipped, bounded, work_limit
+from app.engine.algebra.work import WorkExceeded
 from app.engine.display.names import MASS_MATRIX
 from app.engine.equations.conservation import Energetics, energetics
 from app.engine.equations.constraints import ConstraintForce, constraint_forces
@@ -28,8 +29,9 @@ from app.engine.equations.mechanics import Mechanics, build_mechanics, positive_
 from app.engine.equations.reduction import Reduction, reduce_to_one
 from app.engine.equations.transform import inertia, new_coordinates
 from app.engine.equilibria.modes import NormalModes, normal_modes
+from app.engine.errors import EquationsTooCostly
 from app.engine.parser.symbols import SymbolTable
-from app.limits import MEMBER_RESERVE_WORK, MEMBER_WORK, REDUCTION_WORK
+from app.limits import EQUATIONS_WORK, MEMBER_RESERVE_WORK, MEMBER_WORK, REDUCTION_WORK
 from app.scenes.types import CoordinateChange, System
 
 T = TypeVar("T")
@@ -158,15 +160,28 @@ def value_or(member: T | Skipped, fallback: T) -> T:
     return fallback if isinstance(member, Skipped) else member
 
 
+def equations_of_motion(mech: Mechanics) -> Equations:
+    """The Euler-Lagrange equations and the accelerations, within EQUATIONS_WORK: past it, the system is refused
+    (EquationsTooCostly) at the same count of work at any load."""
+    try:
+        with work_limit(EQUATIONS_WORK):
+            return euler_lagrange(mech)
+    except WorkExceeded:
+        raise EquationsTooCostly(
+            "the equations of motion of this system need more algebra than this server's engine gives one system "
+            "(a limit of the engine, not a mistake in the system); a form with fewer terms may derive"
+        ) from None
+
+
 def accelerations_only(system: System) -> Equations:
     """The fast path to q_ddot (what the numerics needs), without the later steps."""
-    return euler_lagrange(build_mechanics(system))
+    return equations_of_motion(build_mechanics(system))
 
 
 def derive(system: System) -> Derivation:
     """Derive T, U, L, the Euler-Lagrange equations, conservation laws and the reduction."""
     mech = build_mechanics(system)
-    eqs = euler_lagrange(mech)
+    eqs = equations_of_motion(mech)
     en = energetics(mech, eqs)
     skipped: list[Skipped] = []
     if eqs.velocity_dependent:

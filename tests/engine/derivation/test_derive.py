@@ -3,8 +3,11 @@
 import pytest
 import sympy as sp
 
+from app.engine.algebra import work
+from app.engine.derivation import derive as derive_module
 from app.engine.derivation.derive import derive
-from app.engine.errors import DerivationError
+from app.engine.errors import DerivationError, EquationsTooCostly
+from app.errors import TooMuchWork
 from app.scenes import SCENES
 from app.scenes.types import Parameter, System
 from tests.engine.systems import DAMPED_SPRING, LAGRANGIAN_ONLY, SPINNING_ROD, TABLETOP
@@ -117,3 +120,16 @@ def test_names_are_checked():
         derive(System(coordinates=("x", "x"), lagrangian="x_dot**2"))
     with pytest.raises(DerivationError, match="reserved"):
         derive(System(coordinates=("sin",), lagrangian="x_dot**2"))
+
+
+def test_equations_past_their_bound_of_work_are_refused_at_that_count(monkeypatch):
+    # the equations have no plainer form to fall back to: past EQUATIONS_WORK the system is refused, at a count of
+    # work (the same on an idle machine and a loaded one), as a refusal for too much work
+    spring = System(coordinates=("x",), parameters=(), lagrangian="x_dot**2 + (x + x_dot + 1)**8")
+    counted = work.done()
+    derive(spring)  # 7,645 units of equations: well inside the bound
+    assert work.done() > counted
+    monkeypatch.setattr(derive_module, "EQUATIONS_WORK", 2_000)
+    with pytest.raises(EquationsTooCostly, match="need more algebra than") as refused:
+        derive(spring)
+    assert isinstance(refused.value, TooMuchWork)
