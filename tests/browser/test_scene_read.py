@@ -33,6 +33,13 @@ What each check holds (its name says where it came from):
 - ``accelerations_fit`` (the double pendulum): θ̈₁ and θ̈₂ fit their box, their numerators on two lines on a
   desktop and on more on a phone.
 - ``fractions_apart`` (desktop; the double pendulum): θ̈₁'s denominator and θ̈₂'s numerator 8 px apart or more.
+- ``block_on_slope`` (the two inclines): the block's base on the slope and between its ends, a rectangle (the
+  pixel over the middle of its base is the block's colour), and on the wedge no label hides the slope.
+- ``wheel_wrap`` (desktop; the pulley): the middle mass's string wraps under its wheel.
+- ``labels_off_the_ground`` (the coupled oscillators): at the start, a third of the way and the end, each mass's
+  label covers no floor, wall or hatching.
+- ``band_under_ceiling`` (the massive pulley): the masses named m₁ and m₂; at the run's end the band saying why
+  it ended lies below the ceiling's hatching.
 - ``no_code_speak``: no sentence types a subscript as code (U_eff, p_θ, r_i …).
 - ``no_noise_after_play`` (phone): after Play no null, NaN, undefined or rounding noise shown as an energy; the
   energy plotted at full precision; the run's status on two lines at most.
@@ -42,6 +49,7 @@ What each check holds (its name says where it came from):
 from __future__ import annotations
 
 import json
+import math
 import re
 
 import pytest
@@ -363,6 +371,101 @@ def fractions_apart(r: Reading) -> None:
     assert found["count"] == 2 and found["gap"] >= 8, found
 
 
+CANVAS = "document.querySelector('[data-panel^=animation] canvas')"
+DRAWN = f"JSON.parse({CANVAS}.dataset.drawn)"
+
+
+def _frame(page, at: str) -> None:
+    """The animation scrubbed to frame ``at`` (a JS expression of the scrubber ``s``), drawn."""
+    page.evaluate(
+        f"() => {{ const s = document.querySelector('input.scrub'); s.value = {at}; s.dispatchEvent(new Event('input')); }}"
+    )
+    page.wait_for_timeout(100)
+
+
+def block_on_slope(r: Reading) -> None:
+    # at the default start (X = 0: the foot of the ramp; D = 0: the top corner of the wedge); further down the
+    # slope: tests/browser/test_pictures.py
+    if r.scene_id not in ("incline-block", "movable-incline"):
+        return
+    canvas = r.page.locator("[data-panel^=animation] canvas")
+    drawn, bodies = json.loads(canvas.get_attribute("data-drawn")), json.loads(canvas.get_attribute("data-bodies"))
+    block = next(b for b in bodies if b["label"] == "block")
+    (solid,) = drawn["solids"]
+    # the sloping side: the two corners that are neither vertically nor horizontally aligned
+    (ax, ay), (bx, by) = next((p, q) for p in solid for q in solid if abs(p[0] - q[0]) > 2 and abs(p[1] - q[1]) > 2)
+    length = math.hypot(bx - ax, by - ay)
+    floor = max(y for _, y in solid)
+    for x, y in block["base"]:
+        # each end of the block's base is on the slope (within rounding) and between its ends
+        assert abs((x - ax) * (by - ay) - (y - ay) * (bx - ax)) / length <= 1.5, (x, y, solid)
+        assert min(ax, bx) - 1.5 <= x <= max(ax, bx) + 1.5 and y <= floor + 1, (x, y, solid)
+    # a rectangle, not a disc: the pixel just above the middle of its base, off the slope's normal, is the block's
+    # colour (a disc of radius 10 px would not reach it)
+    middle = [(a + b) / 2 for a, b in zip(*block["base"], strict=True)]
+    colour = r.page.evaluate(
+        """([x, y]) => { const c = document.querySelector('[data-panel^=animation] canvas'), k = c.width / c.clientWidth;
+                        return Array.from(c.getContext('2d').getImageData(Math.round(x * k), Math.round(y * k), 1, 1).data); }""",
+        [middle[0], middle[1] - 15],
+    )
+    assert colour[3] == 255 and colour[:3] != [255, 255, 255], colour
+    if r.scene_id == "movable-incline":
+        wedge = next(b for b in bodies if b["label"] == "wedge")
+        assert min(p[0] for p in solid) < wedge["x"] < max(p[0] for p in solid)  # its label's body is inside it
+        # prof-h 8: no label (drawn with a white halo) hides the slope, else at D = 0 the slope under the block's
+        # far half vanished behind "block" and the block looked perched on the wedge's corner
+        steps = math.ceil(length)
+        for box in (lb["box"] for lb in json.loads(canvas.get_attribute("data-labels"))):
+            hidden = [
+                k for k in range(steps + 1)
+                if box[0] <= ax + (bx - ax) * k / steps <= box[2] and box[1] <= ay + (by - ay) * k / steps <= box[3]
+            ]  # fmt: skip
+            assert not hidden, (box, (ax, ay), (bx, by))
+
+
+def wheel_wrap(r: Reading) -> None:
+    if r.scene_id != "pulley":
+        return
+    spec = r.page.evaluate("JSON.parse(document.getElementById('scene-data').textContent).mechanism")
+    assert spec["wheels"][2]["wrap"] == "bottom", spec["wheels"]
+
+
+def labels_off_the_ground(r: Reading) -> None:
+    # prof-m 10: "left mass" sat on the floor's hatching; a label goes where it covers no ground, wall or wire
+    if r.scene_id != "coupled-oscillators":
+        return
+    canvas = r.page.locator("[data-panel^=animation] canvas")
+    for frame in ("0", "Math.floor(s.max / 3)", "s.max"):
+        _frame(r.page, frame)
+        drawn = r.page.evaluate(DRAWN)
+        labels = json.loads(canvas.get_attribute("data-labels"))
+        curves = {c["label"]: c["box"] for c in drawn["curves"]}
+        assert set(curves) == {"floor", "left wall", "right wall"}, curves
+        assert curves["floor"][3] - curves["floor"][1] >= 5  # the floor's line and the hatching below it
+        assert {lb["label"] for lb in labels} == {"left mass", "right mass"}, labels
+        for lb in labels:
+            x0, y0, x1, y1 = lb["box"]
+            for name, (a0, b0, a1, b1) in curves.items():
+                assert x1 < a0 or x0 > a1 or y1 < b0 or y0 > b1, (frame, lb, name, (a0, b0, a1, b1))
+    _frame(r.page, "0")
+
+
+def band_under_ceiling(r: Reading) -> None:
+    # prof-q 11: the band saying why the run ended lay over the ceiling's hatching; the bodies named as the
+    # statement names them, m₁ and m₂
+    if r.scene_id != "massive-pulley":
+        return
+    canvas = r.page.locator("[data-panel^=animation] canvas")
+    assert {lb["label"] for lb in json.loads(canvas.get_attribute("data-labels"))} == {"mass m₁", "mass m₂"}
+    _frame(r.page, "s.max")
+    drawn = r.page.evaluate(DRAWN)
+    assert drawn["event"] == "mass at the pulley", drawn["event"]
+    (ceiling,) = [c["box"] for c in drawn["curves"] if c["label"] == "ceiling"]
+    # the ceiling's line with its hatching above it starts below the band's bottom edge
+    assert ceiling[1] > drawn["band"], (ceiling, drawn["band"])
+    _frame(r.page, "0")
+
+
 def no_code_speak(r: Reading) -> None:
     assert (found := code_speak(r.page)) == [], found[:5]
 
@@ -407,6 +510,10 @@ CHECKS = {
         joined_formulas,
         accelerations_fit,
         fractions_apart,
+        block_on_slope,
+        wheel_wrap,
+        labels_off_the_ground,
+        band_under_ceiling,
         no_code_speak,
         no_console_error,
     ],
@@ -423,6 +530,9 @@ CHECKS = {
         modes_lines,
         rigid_pieces,
         accelerations_fit,
+        block_on_slope,
+        labels_off_the_ground,
+        band_under_ceiling,
         no_code_speak,
         no_noise_after_play,
         no_console_error,
