@@ -8,6 +8,7 @@ from __future__ import annotations
 from functools import cache
 
 from app.engine.derivation.derive import Derivation, derive
+from app.engine.tutor.check import Problem, problem
 from app.scenes import SCENES
 from app.scenes.types import Parameter, Particle, System
 from tests.engine.check_corpus import USER_SYSTEMS
@@ -40,6 +41,13 @@ def declared(name: str) -> System:
 def derivation(name: str) -> Derivation:
     """A scene's derivation, or one of the check corpus's own systems (USER_SYSTEMS)."""
     return derive(declared(name))
+
+
+@cache
+def problem_of(name: str, step: str, coordinate: str | None = None) -> Problem:
+    """The problem of one step of ``derivation(name)``, built once per test process: judging never changes a
+    problem, and building one is most of a check test's time when each test builds its own."""
+    return problem(derivation(name), step, coordinate)
 
 
 def family_steps(name: str) -> list[tuple[str, str | None]]:

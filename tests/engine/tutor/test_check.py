@@ -28,7 +28,7 @@ from app.engine.tutor.mistakes import (
 from app.scenes import SCENES
 from app.scenes.types import Parameter, System
 from tests.engine.check_corpus import CORPUS, TYPICAL, USER_SYSTEMS
-from tests.engine.declared import derivation, family_steps
+from tests.engine.declared import derivation, family_steps, problem_of
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
 
@@ -62,7 +62,7 @@ def expected_hint(step: str, hint: str | None, frequency: str = "ω", inertia: I
 )
 def test_corpus(system, step, coordinate, answer, verdict, difference, hint):
     d = derivation(system)
-    pb = problem(d, step, coordinate)
+    pb = problem_of(system, step, coordinate)
     result = judge(pb, answer)
     assert result["verdict"] == verdict, result
     # a system with no spring is told nothing about springs (mistakes.without_springs)
@@ -130,14 +130,14 @@ def test_equivalent_messages_say_how():
     wrong = judge(problem(d, "equation", "theta"), "theta_ddot - g*sin(theta)/R")
     assert "scaling" not in wrong["message"] and "mR²" not in wrong["message"], wrong["message"]
     spherical = judge(
-        problem(derivation("spherical-pendulum"), "equation", "phi"),
+        problem_of("spherical-pendulum", "equation", "phi"),
         "sin(theta)*phi_ddot + 2*cos(theta)*theta_dot*phi_dot",
     )
     assert "depends on the coordinates" in spherical["message"] and "sin θ" in spherical["message"]
 
 
 def test_an_incorrect_equation_is_compared_at_the_students_scale():
-    result = judge(problem(derivation("simple-pendulum"), "equation", "theta"), "theta_ddot - g*sin(theta)/R")
+    result = judge(problem_of("simple-pendulum", "equation", "theta"), "theta_ddot - g*sin(theta)/R")
     # compared at the student's scale (the difference shown is theirs), the scale 1/(mR²) never said
     assert "mR²" not in result["message"] and "R" not in result["reveal"]["difference"]["sympy"].split("/")[0]
 
@@ -188,7 +188,9 @@ def test_refusals_in_pure_python_name_the_steps_rules():
 
 def test_an_unknown_or_inapplicable_step_or_coordinate_lists_the_allowed_ones():
     damped = derivation("damped-pendulum")
-    with pytest.raises(CheckError, match="the steps are: position, kinetic, potential, lagrangian, momentum, equation") as e:
+    with pytest.raises(
+        CheckError, match="the steps are: position, kinetic, potential, lagrangian, momentum, equation"
+    ) as e:
         problem(damped, "omega_squared")
     assert e.value.field == "step"
     with pytest.raises(CheckError, match="unknown step 'jerk'"):
@@ -199,13 +201,13 @@ def test_an_unknown_or_inapplicable_step_or_coordinate_lists_the_allowed_ones():
     with pytest.raises(CheckError, match="'x' is not a coordinate of this system; the coordinates are: theta"):
         problem(damped, "equation", "x")
     with pytest.raises(CheckError, match="given by its Lagrangian alone"):
-        problem(derivation("spring-rod"), "kinetic")
+        problem_of("spring-rod", "kinetic")
     # a position names its component: the moving ones are listed (a flat figure's y is not)
     with pytest.raises(CheckError, match=r"'y' is not one of this system's moving position components: x, z \(") as e:
         problem(damped, "position", "y")
     assert e.value.field == "coordinate"
     with pytest.raises(CheckError, match="given by its energies, not by its bodies' positions"):
-        problem(derivation("spring-rod"), "position", "x")
+        problem_of("spring-rod", "position", "x")
 
 
 def test_exercises_follow_the_chapter_and_carry_the_engines_answers():
@@ -232,9 +234,7 @@ def test_exercises_follow_the_chapter_and_carry_the_engines_answers():
     for item in doc["exercises"]:
         # the engine's own answer passes its own checker
         assert (
-            judge(problem(derivation("tabletop-spring"), item["step"], item["coordinate"]), item["answer"]["sympy"])[
-                "verdict"
-            ]
+            judge(problem_of("tabletop-spring", item["step"], item["coordinate"]), item["answer"]["sympy"])["verdict"]
             == "correct"
         )
 
@@ -245,7 +245,7 @@ def test_exercises_follow_the_chapter_and_carry_the_engines_answers():
     ids=[f"{c[0]}-{c[1]}-{c[2] or ''}-{c[4]}" for c in TYPICAL],
 )
 def test_typical_mistakes_get_their_specific_diagnosis(system, step, coordinate, answer, key):
-    result = judge(problem(derivation(system), step, coordinate), answer)
+    result = judge(problem_of(system, step, coordinate), answer)
     assert result["verdict"] == "incorrect", result
     assert result["mistake"] is not None and result["mistake"]["key"] == key, result
     # never only the step's general rule: the hint names this mistake, and a piece typeset says what it is
@@ -260,9 +260,7 @@ def test_every_scene_and_both_systems_have_three_typical_mistakes():
 
 
 def test_the_half_lost_in_differentiating_the_square_is_not_a_force_counted_twice():
-    result = judge(
-        problem(derivation("simple-pendulum"), "equation", "theta"), "m*R**2*theta_ddot/2 + m*g*R*sin(theta)"
-    )
+    result = judge(problem_of("simple-pendulum", "equation", "theta"), "m*R**2*theta_ddot/2 + m*g*R*sin(theta)")
     assert "counted twice" not in result["hint"] and "differentiating the square" in result["hint"]
 
 
@@ -314,13 +312,17 @@ def typed_arguments(typed: str, d: Derivation) -> set[str]:
     return {spoken(a) for f in found if isinstance(f, sp.Function) for a in f.args} | sums
 
 
-FAMILY_STEPS = [(name, step, coordinate) for name in (*SCENES, *USER_SYSTEMS) for step, coordinate in family_steps(name)]
+FAMILY_STEPS = [
+    (name, step, coordinate) for name in (*SCENES, *USER_SYSTEMS) for step, coordinate in family_steps(name)
+]
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name", [*SCENES, *USER_SYSTEMS])
 def test_the_family_steps_listed_from_the_declaration_are_the_tutors_exercises(name):
-    assert family_steps(name) == [e for e in exercises(derivation(name)) if e[0] in ("kinetic", "potential", "equation")]
+    assert family_steps(name) == [
+        e for e in exercises(derivation(name)) if e[0] in ("kinetic", "potential", "equation")
+    ]
 
 
 @pytest.mark.slow
@@ -328,7 +330,7 @@ def test_the_family_steps_listed_from_the_declaration_are_the_tutors_exercises(n
     ("system", "step", "coordinate"), FAMILY_STEPS, ids=["-".join(filter(None, c)) for c in FAMILY_STEPS]
 )
 def test_every_generated_mistake_typed_back_is_named(system, step, coordinate):
-    pb = problem(derivation(system), step, coordinate)
+    pb = problem_of(system, step, coordinate)
     generated = [(m, hint) for m, hint, _ in pb.mistakes if "." in m.key]
     assert generated or step == "potential"
     for mistake, hint in generated:
@@ -404,13 +406,15 @@ def test_names_of_pieces_read_as_mathematics_not_code():
 
 def test_an_unmatched_answer_is_compared_part_by_part():
     result = judge(
-        problem(derivation("double-pendulum"), "kinetic"), "(m1 + m2)*l1**2*theta1_dot**2/2 + 7*m2*l2**2*theta2_dot**2"
+        problem_of("double-pendulum", "kinetic"), "(m1 + m2)*l1**2*theta1_dot**2/2 + 7*m2*l2**2*theta2_dot**2"
     )
     assert result["mistake"] is None
     assert result["partial"]["differ"] and "the θ̇₁ θ̇₂ terms" in result["partial"]["differ"]
     # two groups that differ are joined as a reader lists them, never run together with a comma
     (agree,), (one, other) = result["partial"]["agree"], result["partial"]["differ"]
-    assert result["partial"]["message"] == f"Part by part: {agree} agree with the correct ones; {one} and {other} do not."
+    assert (
+        result["partial"]["message"] == f"Part by part: {agree} agree with the correct ones; {one} and {other} do not."
+    )
 
 
 def test_a_constant_difference_is_said_with_its_unit_and_what_it_changes():

@@ -16,7 +16,8 @@ from app.engine.tutor.check import judge, problem
 from app.engine.tutor.mistakes import POINTERS, pointer
 from app.scenes import SCENES
 from app.scenes.types import System
-from tests.engine.declared import system_of
+from tests.engine.declared import derivation as declared_derivation
+from tests.engine.declared import problem_of, system_of
 from tests.engine.slip_corpus import CORRECT, NAMED, SLIPS, SYSTEMS
 
 pytestmark = pytest.mark.slow  # out of the fast tier (scripts/test-fast.sh): over 1.5 s of work in all
@@ -29,12 +30,14 @@ def declared(name: str) -> System:
 
 @cache
 def derivation(name: str) -> Derivation:
-    return derive(declared(name))
+    # a scene's is the one the check corpus's tests derive (tests/engine/declared.py)
+    return derive(declared(name)) if name in SYSTEMS else declared_derivation(name)
 
 
 @cache
 def step_problem(name: str, step: str, coordinate: str | None):
-    return problem(derivation(name), step, coordinate)
+    # a scene's step is the one problem the check corpus's tests build too, built once per test process
+    return problem(derivation(name), step, coordinate) if name in SYSTEMS else problem_of(name, step, coordinate)
 
 
 def words(result: dict[str, Any]) -> str:

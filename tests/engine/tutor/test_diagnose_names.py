@@ -10,9 +10,9 @@ import pytest
 
 from app.engine.display.names import unicode
 from app.engine.document.notation import text
-from app.engine.tutor.check import exercises, problem
+from app.engine.tutor.check import exercises
 from app.scenes import SCENES
-from tests.engine.declared import derivation
+from tests.engine.declared import derivation, problem_of
 
 # one letter standing alone as a symbol (Greek or Latin, with its dot and subscript digits): not part of a word,
 # not the s of an apostrophe's "'s"
@@ -46,7 +46,7 @@ def test_every_hint_names_only_the_scenes_own_symbols(name):
     own = {unicode(s.name) for s in (*d.table.params, *d.table.q)} | {text("frequency", d)}
     strays = {}
     for step, coordinate in exercises(d):
-        for _, hint, _ in problem(d, step, coordinate).mistakes:
+        for _, hint, _ in problem_of(name, step, coordinate).mistakes:
             for letter in _letters(hint) - own:
                 if letter not in GENERIC:
                     strays.setdefault(letter, hint)
