@@ -17,25 +17,28 @@ TYPESET = "body[data-katex-errors]"
 AXE = Path(__file__).resolve().parents[2] / "node_modules" / "axe-core" / "axe.min.js"
 
 
-def axe_violations(page, contrast: bool = True) -> list[str]:
+def axe_violations(page, contrast: bool = True, exclude: tuple[str, ...] = ()) -> list[str]:
     """axe-core's serious and critical violations on the page as it stands (axe is installed from npm by
     scripts/assets.sh and put into the page here, never served by the app); ``contrast=False`` leaves out colour
-    contrast (most of axe's time on a page of many formulas: it lays a grid over every element of the page)."""
+    contrast (most of axe's time on a page of many formulas: it lays a grid over every element of the page);
+    ``exclude``: elements axe does not read (with what is inside them)."""
     if not AXE.exists():
         raise AssertionError("axe-core is not installed: run scripts/assets.sh (npm ci installs it)")
     page.evaluate(AXE.read_text())
     return page.evaluate(
-        """async (contrast) => (await axe.run(document, { resultTypes: ['violations'],
-                                                            rules: { 'color-contrast': { enabled: contrast } } }))
+        """async ([contrast, exclude]) => (await axe.run({ include: [document], exclude: exclude.map((s) => [s]) },
+                                                         { resultTypes: ['violations'],
+                                                           rules: { 'color-contrast': { enabled: contrast } } }))
              .violations.filter((v) => v.impact === 'serious' || v.impact === 'critical')
              .map((v) => `${v.impact} ${v.id}: ${v.nodes.length} × ${v.nodes[0].target.join(' ')} (${v.help})`)""",
-        contrast,
+        [contrast, list(exclude)],
     )
 
 
 # WCAG's contrast ratio of the text of each visible element ``selectors`` name against the first opaque background
 # behind it (its own or an ancestor's; the page's white where none is): each under 4.5 (3 for large text: 24 px, or
-# 18.66 px bold) with its ratio.  For elements drawn on plain backgrounds, as axe's rule finds them there.
+# 18.66 px bold) with its ratio.  For elements drawn on plain backgrounds, as axe's rule finds them there; text of a
+# transparent colour (KaTeX's invisible copies that hold a row's room) is not read.
 CONTRAST = """(selectors) => {
   const rgb = (c) => (c.match(/[\\d.]+/g) || []).map(Number);
   const lum = ([r, g, b]) => { const f = (v) => { v /= 255; return v <= 0.03928 ? v / 12.92 : ((v + 0.055) / 1.055) ** 2.4; };
@@ -44,12 +47,14 @@ CONTRAST = """(selectors) => {
   for (const el of document.querySelectorAll(selectors.join(','))) {
     if (!el.textContent.trim() || !el.getClientRects().length) continue;
     const style = getComputedStyle(el);
+    const fg = rgb(style.color);
+    if (fg.length === 4 && fg[3] === 0) continue;
     let bg = [255, 255, 255];
     for (let a = el; a; a = a.parentElement) {
       const c = rgb(getComputedStyle(a).backgroundColor);
       if (c.length === 3 || (c.length === 4 && c[3] === 1)) { bg = c.slice(0, 3); break; }
     }
-    const [hi, lo] = [lum(rgb(style.color).slice(0, 3)), lum(bg)].sort((x, y) => y - x);
+    const [hi, lo] = [lum(fg.slice(0, 3)), lum(bg)].sort((x, y) => y - x);
     const ratio = (hi + 0.05) / (lo + 0.05);
     const size = parseFloat(style.fontSize), bold = Number(style.fontWeight) >= 700;
     if (ratio < (size >= 24 || (bold && size >= 18.66) ? 3 : 4.5)) out.push([el.textContent.trim().slice(0, 30), ratio.toFixed(2)]);
