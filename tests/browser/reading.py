@@ -81,13 +81,11 @@ CUES_SETTLED = (
 
 # Each typeset display formula: its own width, the width of the box it sits in, and whether that box scrolls
 # and can be focused (tabindex, label) -- the one place a wide formula may go on a phone.
-WIDTHS = """async () => {
-  for (const d of document.querySelectorAll('details')) d.open = true;
-  for (const b of document.querySelectorAll('button.all-steps[aria-expanded=false]')) b.click();
-  // the page marks wide boxes as they appear (a ResizeObserver) and once the fonts are in: let it see them
-  await document.fonts.ready;
-  for (let i = 0; i < 3; i++) await new Promise((r) => requestAnimationFrame(r));
-  const out = [];
+# (the page marks wide boxes as they appear, a ResizeObserver, and once the fonts are in: OPEN_ALL lets it see them)
+WIDTHS = (
+    "async () => {"
+    + OPEN_ALL
+    + """  const out = [];
   for (const el of document.querySelectorAll('.math-display')) {
     if (!el.querySelector('.katex') || el.offsetParent === null) continue;
     const style = getComputedStyle(el);
@@ -104,6 +102,7 @@ WIDTHS = """async () => {
   }
   return out;
 }"""
+)
 
 
 def width_problems(found: list[dict], phone: bool) -> list:
@@ -306,24 +305,33 @@ LINES = """({ start = [], step, has = '', selector }) => {
   });
 }"""
 
-# The double pendulum's accelerations: how wide their display is past its box, and on how many lines each of the
-# outermost fractions' numerators is set (not the invisible copies of spacedRows' rows).
-ACCELERATIONS = """() => {
+# The double pendulum's "Accelerations" display (``box``) and its outermost fractions (``fracs``: not those inside
+# them nor the invisible copies of spacedRows' rows, KaTeX's .rlap).
+ACCELERATION_FRACTIONS = """
   const step = [...document.querySelectorAll('li.step')].find((s) => s.querySelector('.step-title')?.textContent === 'Accelerations');
   const box = step.querySelector('.math-display');
   const fracs = [...box.querySelectorAll('.mfrac')].filter((f) => !f.parentElement.closest('.mfrac, .rlap'));
+"""
+
+# The double pendulum's accelerations: how wide their display is past its box, and on how many lines each of the
+# outermost fractions' numerators is set (not the invisible copies of spacedRows' rows).
+ACCELERATIONS = (
+    "() => {"
+    + ACCELERATION_FRACTIONS
+    + """
   return { wide: box.scrollWidth - box.clientWidth, errors: box.querySelectorAll('.katex-error').length,
            fractions: fracs.length, broken: box.dataset.broken === 'true',
            rows: fracs.map((f) => [...f.querySelectorAll('.mtable .col-align-l > .vlist-t > .vlist-r > .vlist > span')]
              .filter((s) => s.textContent.trim()).length) };
 }"""
+)
 
 # The room between the double pendulum's two stacked accelerations: from the lowest glyph box under θ̈₁'s fraction
 # line to the highest over θ̈₂'s (the outermost fractions, not those inside them nor spacedRows' invisible copies).
-FRACTION_GAP = """() => {
-  const step = [...document.querySelectorAll('li.step')].find((s) => s.querySelector('.step-title')?.textContent === 'Accelerations');
-  const box = step.querySelector('.math-display');
-  const fracs = [...box.querySelectorAll('.mfrac')].filter((f) => !f.parentElement.closest('.mfrac, .rlap'));
+FRACTION_GAP = (
+    "() => {"
+    + ACCELERATION_FRACTIONS
+    + """
   const lines = fracs.map((f) => f.querySelector('.frac-line').getBoundingClientRect());
   const glyphs = (f) => {
     const out = [], walk = document.createTreeWalker(f, NodeFilter.SHOW_TEXT);
@@ -338,3 +346,4 @@ FRACTION_GAP = """() => {
   const num = glyphs(fracs[1]).filter((r) => r.bottom <= lines[1].top);
   return { count: fracs.length, gap: Math.min(...num.map((r) => r.top)) - Math.max(...den.map((r) => r.bottom)) };
 }"""
+)
