@@ -74,16 +74,24 @@ def test_a_refused_text_clears_the_last_rendering_and_shows_the_parsers_message(
 
 
 def test_the_playgrounds_box_reads_the_declared_systems_names(page):
+    # what the server answered the page's request for the steps: a busy server's 429s and 503s, each with its
+    # Retry-After, are waited out by the page (static/js/api.js, six tries) before it says they could not be loaded
+    answers: list[tuple[int, str | None]] = []
+    page.on(
+        "response",
+        lambda r: answers.append((r.status, r.headers.get("retry-after"))) if r.url.endswith("/api/practice") else None,
+    )
     page.goto("/playground")
     page.locator("#practice-switch").check()
     box = '.practice-step[data-key="acceleration:x"]'
     # the example's practice steps (its derivation, on a busy machine), or the page's word that they could not load
+    # (two rehearsals on a fresh clone waited 150 s for neither: the server's answers are kept to say why)
     page.wait_for_function(
         f"document.querySelector('{box}') || /could not be loaded/.test("
         "document.getElementById('practice-status')?.textContent || '')",
-        timeout=150_000,
+        timeout=400_000,
     )
-    assert page.locator(box).count() == 1, page.locator("#practice-status").text_content()
+    assert page.locator(box).count() == 1, (page.locator("#practice-status").text_content(), answers)
     page.locator(box + " textarea[name]").fill("(F*cos(w*t) - b*x_dot - k*x)/m")
     page.wait_for_function(f"document.querySelector('{box}').dataset.typeset === 'read'")
     shown = page.locator(box + " .practice-preview-math annotation").text_content().removeprefix("\\displaystyle ")
