@@ -10,7 +10,7 @@
  *   - simulates the derived system through POST /api/simulate (the declared system with
  *     the controls' parameter values, plus initial, t_end, method, rtol, samples) and draws
  *     it with simulation.js's connectSimulation (the same live preview as a scene page);
- *     a 429/503 is retried (api.js fetchJSON).
+ *     a 429/503 is retried (api.js fetchJSON), and the page's jobs go to the server one at a time (api.js inTurn).
  * Everything it needs is in the page: #scene-data (the client JSON of app/viz/page_model.py)
  * and #playground-system (the request the page derived).
  *
@@ -21,7 +21,7 @@
  * concerns.  The form is never touched: whatever the reader typed meanwhile stays.
  */
 import { foldSteps, printReady, whenTypeset } from "./derivation.js";
-import { fetchJSON, fetchRetrying } from "./api.js";
+import { fetchJSON, fetchRetrying, inTurn } from "./api.js";
 import { connectSimulation } from "./simulation.js";
 import { bindViewLink, restoreControls, restoreView } from "./statelink.js";
 import { keyboardScroll } from "./scrollboxes.js";
@@ -109,14 +109,8 @@ function body(request) {
 }
 
 function post(request, signal) {
-  return fetchJSON(root.dataset.simulateUrl, { body: body(request), signal });
-}
-
-let queue = Promise.resolve();
-function oneAtATime(job) {
-  const next = queue.then(job, job);
-  queue = next.catch(() => null);
-  return next;
+  // in the session's turn, after the derivation being fetched: the server would answer it 429 meanwhile
+  return inTurn(() => fetchJSON(root.dataset.simulateUrl, { body: body(request), signal }));
 }
 
 function connect() {
@@ -135,9 +129,9 @@ function connect() {
     urls: {
       // the modes are the declared system's (its parameter values); a section is at the run's values.
       // One at a time: the worker pool runs one job per session.
-      modes: () => oneAtATime(() => fetchJSON(root.dataset.modesUrl, { body: system })),
+      modes: () => inTurn(() => fetchJSON(root.dataset.modesUrl, { body: system })),
       modesFollow: false,
-      poincare: ({ parameters, initial }) => oneAtATime(() =>
+      poincare: ({ parameters, initial }) => inTurn(() =>
         fetchJSON(root.dataset.poincareUrl, { body: { ...system, parameters: body({ parameters }).parameters, initial } })),
     },
   });
@@ -186,7 +180,8 @@ function showRefusal(page, status) {
 /** The same address with stage=whole: the whole derivation, or its refusal, as a page. */
 async function fetchWhole() {
   const url = derived.dataset.wholeUrl.split("#")[0];
-  const res = await fetchRetrying(url, { headers: { Accept: "text/html" } }, { tries: 9 });
+  // in the session's turn: the practice steps, modes and sections asked for meanwhile follow it, not race it
+  const res = await inTurn(() => fetchRetrying(url, { headers: { Accept: "text/html" } }, { tries: 9 }));
   return { status: res.status, page: new DOMParser().parseFromString(await res.text(), "text/html") };
 }
 

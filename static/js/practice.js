@@ -16,7 +16,7 @@
  * (?practice&m=2&R=0.5), which are set on the controls before the first run.
  */
 import { answerBox, fit } from "./answer-box.js";
-import { RequestError, fetchJSON } from "./api.js";
+import { RequestError, fetchJSON, inTurn } from "./api.js";
 import { readRequest, setControl } from "./controls.js";
 import { setMathProse } from "./prose.js";
 import { correctPartWords, endOf, howTo, namesSaid, numbered, refusalWords, verdictWords, wordsOf } from "./verdict-words.js";
@@ -62,23 +62,17 @@ const record = Object.assign({ on: false, answers: {}, verdicts: {} }, load());
 // ---- the page -----------------------------------------------------------------------------------
 
 /** The API's answer {ok, status, answer}: a refusal's JSON is an answer too (its message is shown in place). */
-async function request(url, body, signal) {
+async function request(url, body, signal, onWait) {
   try {
-    return { ok: true, status: 200, answer: await fetchJSON(url, { body, signal }) };
+    return { ok: true, status: 200, answer: await fetchJSON(url, { body, signal, onWait }) };
   } catch (error) {
     if (!(error instanceof RequestError)) throw error;
     return { ok: false, status: error.status, answer: error.answer };
   }
 }
 
-// The session runs one job at a time on the server: the page's typesetting and checking wait their turn
-// here rather than be told to wait (429) there.
-let turn = Promise.resolve();
-function inTurn(job) {
-  const next = turn.then(job, job);
-  turn = next.catch(() => null);
-  return next;
-}
+// The session runs one job at a time on the server: the page's typesetting and checking wait their turn in the
+// page's one queue (api.js inTurn, shared with the playground's derivation) rather than be told to wait there.
 
 function katexInto(el, latex, display = false) {
   if (window.katex) window.katex.render(latex, el, { displayMode: display, throwOnError: false });
@@ -523,7 +517,11 @@ function showProgress() {
 async function loadSteps() {
   const status = document.getElementById("practice-status");
   const list = document.getElementById("practice-steps");
-  const { ok, answer } = await inTurn(() => request(root.dataset.practiceUrl, system || undefined));
+  // a busy server asks the page to come back later: say so, and when, rather than wait in silence
+  const waiting = (seconds) => {
+    status.textContent = `The server is busy; the steps are asked for again in ${seconds} s.`;
+  };
+  const { ok, answer } = await inTurn(() => request(root.dataset.practiceUrl, system || undefined, undefined, waiting));
   if (!ok) {
     status.textContent = `The steps could not be loaded: ${endOf(wordsOf(answer?.detail) || "no answer from the server")}`;
     return;

@@ -685,3 +685,24 @@ def test_a_long_answer_on_a_phone_shows_its_start_in_a_box_that_grows(browser, l
         assert box.input_value() == text
     finally:
         context.close()
+
+
+def test_a_busy_server_is_said_while_the_steps_wait(page):
+    """A 429 for the steps (the server busy) is waited out with its Retry-After, and the page says so meanwhile."""
+    refused: list[str] = []
+
+    def once_busy(route):
+        if not refused:
+            refused.append(route.request.url)
+            route.fulfill(status=429, headers={"Retry-After": "3", "Content-Type": "application/json"},
+                          body='{"detail": "the server is busy with other users\' systems; try again shortly"}')
+        else:
+            route.continue_()
+
+    page.route("**/api/scenes/simple-pendulum/practice", once_busy)
+    page.goto("/scenes/simple-pendulum?practice")
+    page.wait_for_function("/busy/.test(document.getElementById('practice-status').textContent)")
+    assert page.locator("#practice-status").inner_text() == "The server is busy; the steps are asked for again in 3 s."
+    page.wait_for_selector(STEP.format("lagrangian"), timeout=60_000)
+    assert len(refused) == 1
+    assert "steps to derive" in page.locator("#practice-status").inner_text()

@@ -74,8 +74,9 @@ def test_a_refused_text_clears_the_last_rendering_and_shows_the_parsers_message(
 
 
 def test_the_playgrounds_box_reads_the_declared_systems_names(page):
-    # what the server answered the page's request for the steps: a busy server's 429s and 503s, each with its
-    # Retry-After, are waited out by the page (static/js/api.js, six tries) before it says they could not be loaded
+    # what the server answered the page's request for the steps: the page asks for them after its derivation and
+    # its simulation (static/js/api.js inTurn), so its own jobs do not make the server refuse it; a busy server's
+    # 429s and 503s, each with its Retry-After, are waited out (six tries) with the wait said in the status
     answers: list[tuple[int, str | None]] = []
     page.on(
         "response",
@@ -85,7 +86,7 @@ def test_the_playgrounds_box_reads_the_declared_systems_names(page):
     page.locator("#practice-switch").check()
     box = '.practice-step[data-key="acceleration:x"]'
     # the example's practice steps (its derivation, on a busy machine), or the page's word that they could not load
-    # (two rehearsals on a fresh clone waited 150 s for neither: the server's answers are kept to say why)
+    # (the server's answers are kept to say why)
     page.wait_for_function(
         f"document.querySelector('{box}') || /could not be loaded/.test("
         "document.getElementById('practice-status')?.textContent || '')",
