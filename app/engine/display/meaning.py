@@ -50,19 +50,41 @@ def _small(expr: sp.Expr) -> bool:
     return sp.count_ops(expr) <= MAX_NODES
 
 
+def _held(expr: sp.Expr, velocities: Iterable[sp.Symbol]) -> list[sp.Symbol]:
+    """The velocities ``expr`` holds, in their order; none when it is too large to split."""
+    v = [s for s in velocities if expr.has(s)]
+    return v if v and _small(expr) else []
+
+
+def _split(expr: sp.Expr, v: list[sp.Symbol]) -> tuple[list[sp.Expr], sp.Expr] | None:
+    expanded = sp.expand(expr)
+    # p = Σ_k (∂p/∂q̇_k) q̇_k + p(q̇ = 0) when p is linear in the velocities
+    coefficients = [sp.diff(expanded, s) for s in v]
+    if any(c.has(*v) for c in coefficients):
+        return None  # not linear in the velocities: not a momentum of this kind
+    return coefficients, sp.expand(expanded - sum(c * s for c, s in zip(coefficients, v, strict=True)))
+
+
+def linear_split(expr: sp.Expr, velocities: Iterable[sp.Symbol]) -> tuple[list[sp.Symbol], list[sp.Expr], sp.Expr] | None:
+    """(v, c, rest) with expr = Σ_k c_k v_k + rest, each c_k and rest free of the velocities ``v`` (those of
+    ``velocities`` that ``expr`` holds, in their order); None when it holds none, is too large, or is not
+    linear in them."""
+    v = _held(expr, velocities)
+    split = _split(expr, v) if v else None
+    return (v, *split) if split is not None else None
+
+
 def by_velocity(expr: sp.Expr, velocities: Iterable[sp.Symbol]) -> sp.Expr:
     """A momentum (linear in the velocities) as Σ c_k q̇_k + rest, each coefficient c_k factored."""
-    v = [s for s in velocities if expr.has(s)]
-    if not v or not _small(expr):
+    v = _held(expr, velocities)
+    if not v:
         return expr
 
     def work() -> sp.Expr:
-        expanded = sp.expand(expr)
-        # p = Σ_k (∂p/∂q̇_k) q̇_k + p(q̇ = 0) when p is linear in the velocities
-        coefficients = [sp.diff(expanded, s) for s in v]
-        if any(c.has(*v) for c in coefficients):
-            return expr  # not linear in the velocities: not a momentum of this kind
-        rest = sp.expand(expanded - sum(c * s for c, s in zip(coefficients, v, strict=True)))
+        split = _split(expr, v)
+        if split is None:
+            return expr
+        coefficients, rest = split
         return sp.Add(*(sp.factor(c) * s for c, s in zip(coefficients, v, strict=True)), sp.factor(rest))
 
     return within_budget(work, expr, FORM_WORK)

@@ -371,7 +371,15 @@ def masses_summed(coefficient: sp.Expr) -> bool:
 def normalised(
     residual: sp.Expr, coefficient: sp.Expr, diagonal: bool, names: dict[sp.Symbol, str], own: sp.Symbol | None = None
 ) -> sp.Expr:
-    """An Euler–Lagrange residual scaled for display (the equation residual = 0 is unchanged).
+    """An Euler–Lagrange residual scaled for display (``scaled``'s first part)."""
+    return scaled(residual, coefficient, diagonal, names, own)[0]
+
+
+def scaled(
+    residual: sp.Expr, coefficient: sp.Expr, diagonal: bool, names: dict[sp.Symbol, str], own: sp.Symbol | None = None
+) -> tuple[sp.Expr, sp.Expr]:
+    """An Euler–Lagrange residual scaled for display (the equation residual = 0 is unchanged), and the factor s
+    it was scaled by: residual = s × (the form returned).
 
     Divided by its acceleration's coefficient when the mass matrix is diagonal and that
     coefficient is a product (θ̈ + (g/R) sin θ), else by the constant factor common to its
@@ -379,7 +387,7 @@ def normalised(
     ((2gα − ω²) ρ), a common parameter factor of the rest taken out ((k/m₁)(x₁ − x₂ + l₀)).
     """
     if larger_than(residual, NODE_BUDGET):
-        return residual
+        return residual, sp.Integer(1)
     # sin²α + cos²α = 1 of one argument never survives into an equation (a particle on a cone: r̈, not
     # r̈/(sin²α + cos²α)): collapsed in the residual and in the coefficient it is divided by
     residual, coefficient = pythagoras(residual), pythagoras(coefficient)
@@ -394,7 +402,7 @@ def normalised(
     else:
         scale = scaled_by if diagonal and product else _content(expanded, moving)
     if scale == 0:
-        return residual
+        return residual, sp.Integer(1)
     accelerations: dict[sp.Expr, sp.Expr] = {}
     groups: dict[sp.Expr, sp.Expr] = {}
     for term in sp.Add.make_args(expanded):
@@ -425,8 +433,8 @@ def normalised(
     leading.sort(key=lambda e: own is None or not e.has(own))
     out = leading + rest
     if leading and leading[0].could_extract_minus_sign():
-        out = [-e for e in out]
-    return sp.Add(*out, evaluate=False) if len(out) > 1 else out[0]
+        out, scale = [-e for e in out], -scale
+    return (sp.Add(*out, evaluate=False) if len(out) > 1 else out[0]), scale
 
 
 def inertia_sides(shown: sp.Expr, names: dict[sp.Symbol, str]) -> tuple[sp.Expr, sp.Expr]:

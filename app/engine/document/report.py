@@ -177,27 +177,32 @@ def shown_accelerations(d: Derivation) -> list[sp.Expr]:
 def equations(d: Derivation, pr: Printer) -> list[tuple[sp.Expr, str]]:
     """Each Euler–Lagrange equation as a textbook prints it, θ̈ + (g/R) sin θ = 0: the residual in its
     textbook form scaled for display (the equation residual = 0 is unchanged), and its LaTeX row."""
+    return [(shown, row) for shown, row, _ in _scaled_equations(d, pr)]
+
+
+def _scaled_equations(d: Derivation, pr: Printer) -> list[tuple[sp.Expr, str, sp.Expr]]:
+    """``equations``' rows, each with the factor its residual was divided by (residual = factor × shown)."""
     # the results box and the steps show the same rows: worked out once per document
     key = (tuple(d.equations.residuals), tuple(d.table.qdd), tuple(pr.names.items()))
     return memoized("equations", key, lambda: _equations(d, pr))
 
 
-def _equations(d: Derivation, pr: Printer) -> list[tuple[sp.Expr, str]]:
+def _equations(d: Derivation, pr: Printer) -> list[tuple[sp.Expr, str, sp.Expr]]:
     eqs = d.equations
     M, diagonal = eqs.mass_matrix, eqs.mass_matrix.is_diagonal()
     out = []
     for k, r in enumerate(eqs.residuals):
         own, residual = d.table.qdd[k], pr.form(r)
         with unbudgeted():
-            shown = textbook.normalised(residual, M[k, k], diagonal, pr.names, own)
+            shown, factor = textbook.scaled(residual, M[k, k], diagonal, pr.names, own)
             if diagonal and textbook.masses_summed(M[k, k]):
                 # an inertia that adds masses is kept in sight, 𝓜 q̈ = f: (m₁ + m₂ + M/2) z̈ = (m₁ − m₂) g
                 left, force = textbook.inertia_sides(shown, pr.names)
                 shown = sp.Add(left, -force, evaluate=False)
                 row = f"{textbook.latex(left, pr.names, first=own)} = {textbook.latex(force, pr.names)}"
-                out.append((shown, row))
+                out.append((shown, row, factor))
                 continue
-            out.append((shown, f"{textbook.latex(shown, pr.names, first=own)} = 0"))
+            out.append((shown, f"{textbook.latex(shown, pr.names, first=own)} = 0", factor))
     return out
 
 
@@ -222,12 +227,18 @@ def equation_scales(d: Derivation, pr: Printer) -> list[sp.Expr] | None:
     """The one home of how each printed equation is scaled: residual k = (its printed form) × s_k, each s_k the
     factor common to its terms (the double pendulum's θ₁ equation: l₁); None when a factor would hold a
     coordinate or a rate (then the rows are not a constant rescaling of ℳq̈ = f and no factor is claimed)."""
-    shown = equations(d, pr)
-    key = (tuple(d.equations.residuals), tuple(s for s, _ in shown))
+    shown = _scaled_equations(d, pr)
+    key = (tuple(d.equations.residuals), tuple(s for s, _, _ in shown))
+
+    def scale(r: sp.Expr, s: sp.Expr, factor: sp.Expr) -> sp.Expr:
+        # r/s in lowest terms: the factor the display divided by when r − factor·s multiplies out to zero (then
+        # r/s and that factor are one rational function, and their lowest terms are the same), else r/s itself
+        # (a form that used sin² + cos² = 1 is no rational multiple of r), cancelled as a whole (the slow way)
+        return sp.factor(sp.cancel(factor if sp.expand(r - factor * s) == 0 else r / s))
 
     def scales() -> list[sp.Expr] | None:
         with unbudgeted():
-            out = [sp.factor(sp.cancel(r / s)) for r, (s, _) in zip(d.equations.residuals, shown, strict=True)]
+            out = [scale(r, s, f) for r, (s, _, f) in zip(d.equations.residuals, shown, strict=True)]
         return None if any(s.free_symbols & {*d.table.q, *d.table.qd, *d.table.qdd} for s in out) else out
 
     return memoized("equation-scales", key, scales)
@@ -267,14 +278,12 @@ def by_inertia(d: Derivation, expr: sp.Expr, rates: Sequence[sp.Symbol]) -> sp.E
 
 
 def _by_inertia(d: Derivation, expr: sp.Expr, rates: Sequence[sp.Symbol]) -> sp.Expr:
-    grouped = meaning.by_velocity(expr, rates)
-    if grouped is expr:
+    # pₖ = Σⱼ (∂pₖ/∂q̇ⱼ) q̇ⱼ + pₖ(q̇ = 0), each ∂pₖ/∂q̇ⱼ = 𝓜ₖⱼ formed as the mass matrix's entry is (not
+    # factored on its own first: ``meaning.by_velocity``'s factoring was thrown away here, 0.9 s of a 5-link chain)
+    split = meaning.linear_split(expr, rates)
+    if split is None:
         return display(expr)
-    expanded = sp.expand(expr)
-    held = [s for s in rates if expanded.has(s)]
-    # pₖ = Σⱼ (∂pₖ/∂q̇ⱼ) q̇ⱼ + pₖ(q̇ = 0), each ∂pₖ/∂q̇ⱼ = 𝓜ₖⱼ formed as the mass matrix's entry is
-    coefficients = [sp.diff(expanded, s) for s in held]
-    rest = sp.expand(expanded - sum((c * s for c, s in zip(coefficients, held, strict=True)), sp.Integer(0)))
+    held, coefficients, rest = split
     terms = [display(c) * s for c, s in zip(coefficients, held, strict=True)]
     # the form is kept as built: formed again, it would be multiplied out (mρ̇ + 4mα²ρ²ρ̇)
     return settle(sp.Add(*terms, display(rest)), d.table.latex_names())
