@@ -789,7 +789,9 @@ def like_terms_added(expr: sp.Expr, moving: set[sp.Symbol]) -> sp.Expr:
         rest = sp.Add(*constants)
         lump = _simplest(rest) if len(constants) > 1 and _differ_by_a_parameter(rest) else rest
         # never longer, and never a sign taken out of the whole: −ω² − g/R stays, not −(ω² + g/R)
-        if sp.count_ops(lump) >= sp.count_ops(rest) or (lump.could_extract_minus_sign() and isinstance(-lump, sp.Add)):
+        if lump is not rest and (
+            sp.count_ops(lump) >= sp.count_ops(rest) or (lump.could_extract_minus_sign() and isinstance(-lump, sp.Add))
+        ):
             lump = rest
         if lump is rest and all(len(consts) == 1 for consts in groups.values()):
             return total
