@@ -861,7 +861,11 @@ def _compacted(expr: sp.Expr, signs: Mapping[sp.Symbol, sp.Symbol]) -> sp.Expr:
 
 
 def _grouped(total: sp.Expr) -> sp.Expr:
-    return _shortest([total, sp.factor_terms(total), sp.gcd_terms(total)])
+    # the same sums come back in both roots of an equilibrium and at the paired equilibria (K and −K): grouped
+    # once per document, each later use charged the work of the first, so every bound ends where it did
+    return memoized(
+        "grouped", total, lambda: _shortest([total, sp.factor_terms(total), sp.gcd_terms(total)]), charged=True
+    )
 
 
 def _square_root(e: sp.Expr) -> bool:
