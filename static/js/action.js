@@ -18,7 +18,7 @@
  *
  * The browser's numbers: static/js/action-live.js.
  */
-import { fetchJSON } from "./api.js";
+import { fetchJSON, inTurn } from "./api.js";
 import { SETTLE_MS } from "./controls.js";
 import { axis, CONFIG, drawWhenVisible, layout, PALETTE, rateUnit } from "./plotkit.js";
 import { compileLagrangian, focus, focusAlone, liveAction, openingDuration, path, T_STEPS } from "./action-live.js";
@@ -273,6 +273,13 @@ export class ActionPanel {
   }
 
   /** The request body for the action over [0, tEnd] varying coordinate c (the page's parameters and start). */
+  /** POST to the panel's address (or `path` after it): a user system's action is a job of the reader's session on
+   *  the server, which runs one at a time, so it waits its turn in the page's queue (api.js inTurn); a scene's is not. */
+  post(body, path = "") {
+    const send = () => fetchJSON(`${this.url}${path}`, { body });
+    return this.system ? inTurn(send) : send();
+  }
+
   requestBody(tEnd, c, k, epsilons) {
     const { params, initial } = this.fns ? this.setup() : { params: { ...this.data.parameters, ...(this.run?.request?.parameters || {}) }, initial: { ...this.data.initial, ...(this.run?.request?.initial || {}) } };
     const request = { initial, t_end: tEnd, coordinate: this.data.coordinates[c], shape: "sine", k, epsilons };
@@ -290,7 +297,7 @@ export class ActionPanel {
     if (!this.foci.has(key)) {
       if (this.foci.size > 16) this.foci.clear();
       this.foci.set(key, undefined);
-      fetchJSON(this.url, { body: this.requestBody(this.tEnd, c, 1, [0]) }).then((a) => {
+      this.post(this.requestBody(this.tEnd, c, 1, [0])).then((a) => {
         this.foci.set(key, { all: a.conjugate_time, alone: a.varied_conjugate_time });
         if (key !== `${this.coordinate}|${this.focusKey}`) return;
         // the panel opens before the first focus of all coordinates together (openingDuration), now the server's
@@ -314,7 +321,7 @@ export class ActionPanel {
     try {
       answer = this.answers.get(key);
       if (!answer) {
-        answer = fetchJSON(this.url, { body });
+        answer = this.post(body);
         this.answers.set(key, answer);
         if (this.answers.size > 32) this.answers.delete(this.answers.keys().next().value);
       }
@@ -515,7 +522,7 @@ export class ActionPanel {
     const ticker = setInterval(() => { if (!this.found) this.readout.textContent = waiting(); }, 1000);
     try {
       this.found = null;
-      const answer = await fetchJSON(`${this.url}/relax`, { body }).finally(() => clearInterval(ticker));
+      const answer = await this.post(body, "/relax").finally(() => clearInterval(ticker));
       this.found = answer;
       // the iterates one after another, then the result beside the shooting solution: the whole replay at most
       // REPLAY_MS, however many steps Newton's method took
