@@ -9,6 +9,7 @@ and uncaught exceptions.  Screenshots go to ``test-artifacts/``.
 
 from __future__ import annotations
 
+import json
 import socket
 import threading
 import time
@@ -77,6 +78,23 @@ def unfold_panels(page, selector: str = ".panels > section.panel") -> None:
         "(sel) => { for (const b of document.querySelectorAll(sel + ' > h3 > button.fold[aria-expanded=false]')) b.click(); }",
         selector,
     )
+
+
+def busy_once(page, pattern: str, retry_after: int, detail: str) -> list[str]:
+    """The first request to ``pattern`` is answered 429 with ``Retry-After`` and ``detail`` (as a busy server
+    answers); the later ones go through.  Returns the refused requests' addresses (one, once it happened)."""
+    refused: list[str] = []
+
+    def answer(route) -> None:
+        if refused:
+            route.continue_()
+            return
+        refused.append(route.request.url)
+        route.fulfill(status=429, headers={"Retry-After": str(retry_after), "Content-Type": "application/json"},
+                      body=json.dumps({"detail": detail}))  # fmt: skip
+
+    page.route(pattern, answer)
+    return refused
 
 
 @pytest.fixture(scope="session")

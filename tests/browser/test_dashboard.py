@@ -23,6 +23,7 @@ from app.service.classroom.service import Classroom
 from app.settings import Settings
 from app.web.api.classes import classroom as classroom_dep
 from app.web.api.deps import ServicesDep
+from tests.browser.conftest import busy_once
 from tests.browser.test_classroom import teacher_page
 
 pytestmark = pytest.mark.browser
@@ -217,17 +218,10 @@ def test_the_join_page_brings_a_session_and_waits_out_a_busy_minute(browser, liv
     page = context.new_page()
     page.set_default_timeout(60_000)
     code = page.request.post("/api/classes", data={"title": "Busy minute"}).json()["code"]
-    refused: list[str] = []
-
-    def once_busy(route):
-        if not refused:  # the first try meets a full minute
-            refused.append(route.request.url)
-            route.fulfill(status=429, headers={"Retry-After": "2", "Content-Type": "application/json"},
-                          body='{"detail": "joins from your network address: at most 300 a minute; try again in 2 s"}')
-        else:
-            route.continue_()
-
-    page.route("**/api/classes/*/join", once_busy)
+    # the first try meets a full minute
+    refused = busy_once(
+        page, "**/api/classes/*/join", 2, "joins from your network address: at most 300 a minute; try again in 2 s"
+    )
     page.goto(f"/join?code={code}")
     assert any(c["name"] == "lagrange_session" for c in context.cookies())  # the session, before joining
     page.fill("#join-name", "Ada")

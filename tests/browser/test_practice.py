@@ -7,7 +7,7 @@ import unicodedata
 import pytest
 from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
-from tests.browser.conftest import unfold_panels
+from tests.browser.conftest import busy_once, unfold_panels
 
 pytestmark = pytest.mark.browser
 
@@ -689,17 +689,9 @@ def test_a_long_answer_on_a_phone_shows_its_start_in_a_box_that_grows(browser, l
 
 def test_a_busy_server_is_said_while_the_steps_wait(page):
     """A 429 for the steps (the server busy) is waited out with its Retry-After, and the page says so meanwhile."""
-    refused: list[str] = []
-
-    def once_busy(route):
-        if not refused:
-            refused.append(route.request.url)
-            route.fulfill(status=429, headers={"Retry-After": "3", "Content-Type": "application/json"},
-                          body='{"detail": "the server is busy with other users\' systems; try again shortly"}')
-        else:
-            route.continue_()
-
-    page.route("**/api/scenes/simple-pendulum/practice", once_busy)
+    refused = busy_once(
+        page, "**/api/scenes/simple-pendulum/practice", 3, "the server is busy with other users' systems; try again shortly"
+    )
     page.goto("/scenes/simple-pendulum?practice")
     page.wait_for_function("/busy/.test(document.getElementById('practice-status').textContent)")
     assert page.locator("#practice-status").inner_text() == "The server is busy; the steps are asked for again in 3 s."
