@@ -151,6 +151,27 @@ def normal_modes(
         )
 
 
+def _at_rest(expr: sp.Expr, v: sp.Symbol, zero_v: Mapping[sp.Symbol, sp.Expr]) -> sp.Expr:
+    """∂expr/∂v at rest (every velocity 0).
+
+    The other velocities are set to 0 before the derivative is taken: ∂/∂v does not touch them, so the order does
+    not change the value, and the expression differentiated is only its part that survives at rest in all but v
+    (a 7-link chain's f holds 28 products of velocities; each ∂f/∂v at rest needs none of them)."""
+    alone = expr.xreplace({w: z for w, z in zero_v.items() if w != v})
+    # term by term, the sum of the derivatives at v = 0: a term without v gives 0, c·v gives c, c·vⁿ (n ≥ 2) gives
+    # 0 (a chain's centripetal terms: not differentiated only to be set to 0), any other is differentiated
+    terms = []
+    for term in sp.Add.make_args(alone):
+        if not term.has(v):
+            continue
+        coefficient, part = term.as_independent(v, as_Add=False)
+        if part == v:
+            terms.append(coefficient)
+        elif not (part.is_Pow and part.base == v and part.exp.is_Integer and part.exp >= 2):
+            terms.append(sp.diff(term, v).xreplace({v: zero_v[v]}))
+    return sp.Add(*terms)
+
+
 def _normal_modes(
     system: System, mech: Mechanics, eqs: Equations, reduction: Reduction | None, momenta: Mapping[str, float]
 ) -> NormalModes:
@@ -160,7 +181,7 @@ def _normal_modes(
     # V = -L(q, q_dot = 0) = U - T0
     V = -mech.L.xreplace(zero_v)
     # b = dL/dq_dot at rest; d/dt of the momentum at rest is db/dt
-    b_t = [sp.diff(sp.diff(mech.L, v).xreplace(zero_v), t) for v in table.qd]
+    b_t = [sp.diff(_at_rest(mech.L, v, zero_v), t) for v in table.qd]
     Q0 = [f.xreplace(zero_v) for f in mech.Q]
     # the equilibrium condition dV/dq + db/dt - Q(q, 0) = 0
     g_exprs = [sp.diff(V, s) + bt - f for s, bt, f in zip(q, b_t, Q0, strict=True)]
@@ -169,7 +190,7 @@ def _normal_modes(
     # linearising W(q, q̇) q̈ about a rest point, where q̈ = 0, leaves W(q₀, 0) δq̈)
     M = eqs.mass_matrix.xreplace(zero_v)
     # G = -d f/d q_dot at rest: damping and gyroscopic terms of M q_ddot = f
-    G = sp.Matrix([[-sp.diff(f, v) for v in table.qd] for f in eqs.forcing]).xreplace(zero_v)
+    G = sp.Matrix([[-_at_rest(f, v, zero_v) for v in table.qd] for f in eqs.forcing])
     values = defaults(system, table)
     k = [values[s] for s in table.params]
     args = [*q, *table.params]
