@@ -272,7 +272,6 @@ export class ActionPanel {
     this.timer = setTimeout(() => this.ask(false), ASK_MS);
   }
 
-  /** The request body for the action over [0, tEnd] varying coordinate c (the page's parameters and start). */
   /** POST to the panel's address (or `path` after it): a user system's action is a job of the reader's session on
    *  the server, which runs one at a time, so it waits its turn in the page's queue (api.js inTurn); a scene's is not. */
   post(body, path = "") {
@@ -280,6 +279,7 @@ export class ActionPanel {
     return this.system ? inTurn(send) : send();
   }
 
+  /** The request body for the action over [0, tEnd] varying coordinate c (the page's parameters and start). */
   requestBody(tEnd, c, k, epsilons) {
     const { params, initial } = this.fns ? this.setup() : { params: { ...this.data.parameters, ...(this.run?.request?.parameters || {}) }, initial: { ...this.data.initial, ...(this.run?.request?.initial || {}) } };
     const request = { initial, t_end: tEnd, coordinate: this.data.coordinates[c], shape: "sine", k, epsilons };

@@ -156,7 +156,7 @@ def _at_rest(expr: sp.Expr, v: sp.Symbol, zero_v: Mapping[sp.Symbol, sp.Expr]) -
 
     The other velocities are set to 0 before the derivative is taken: ∂/∂v does not touch them, so the order does
     not change the value, and the expression differentiated is only its part that survives at rest in all but v
-    (a 7-link chain's f holds 28 products of velocities; each ∂f/∂v at rest needs none of them)."""
+    (a chain's forces hold products of velocities; no ∂f/∂v at rest needs them)."""
     alone = expr.xreplace({w: z for w, z in zero_v.items() if w != v})
     # term by term, the sum of the derivatives at v = 0: a term without v gives 0, c·v gives c, c·vⁿ (n ≥ 2) gives
     # 0 (a chain's centripetal terms: not differentiated only to be set to 0), any other is differentiated

@@ -55,6 +55,22 @@ def test_a_coordinate_dependent_sum_is_not_divided_out():
     assert tex(shown, first=thdd).startswith(r"\left(1 + 4 R^{2} \theta^{2}\right) \ddot{\theta}")
 
 
+@pytest.mark.parametrize(
+    ("residual", "coefficient", "diagonal", "factor"),
+    [
+        (R * m * (R * thdd + g * sp.sin(theta)) + b * thd, m * R**2, True, m * R**2),
+        (m * (1 + 4 * R**2 * theta**2) * thdd + m * g * theta, m * (1 + 4 * R**2 * theta**2), True, m),
+        # a leading term with a minus sign: the whole equation is negated, and so is its factor
+        (-m * R * thdd - m * g * sp.sin(theta) + m * R * phdd, m * R, False, -m),
+    ],
+)
+def test_the_display_says_the_factor_it_divided_by(residual, coefficient, diagonal, factor):
+    """residual = factor × display: the factor ``report.equation_scales`` prints ("the θ equation by mR²")."""
+    shown, s = textbook.scaled(residual, coefficient, diagonal, NAMES, thdd)
+    assert sp.expand(residual - s * shown) == 0
+    assert sp.simplify(s - factor) == 0
+
+
 def test_no_fraction_inside_a_fraction():
     inner = 1 / sp.sqrt((2 * g - phd**2 / (m * R**2 * sp.sin(theta) ** 2)) / (m * R**2))
     out = tex(inner)

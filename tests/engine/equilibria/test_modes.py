@@ -11,7 +11,7 @@ import sympy.physics.mechanics as me
 from app.engine.derivation.derive import derive
 from app.engine.document.contract import held_momenta
 from app.engine.equilibria.equilibrium import defaults
-from app.engine.equilibria.modes import NEUTRAL, STABLE, UNSTABLE, normal_modes
+from app.engine.equilibria.modes import NEUTRAL, STABLE, UNSTABLE, _at_rest, normal_modes
 from app.numerics.simulate import simulate
 from app.numerics.system import numeric_system
 from app.scenes import SCENES
@@ -250,3 +250,24 @@ def test_a_failing_equilibria_step_leaves_the_rest_of_the_document(monkeypatch):
     assert doc["normal_modes"] == [] and doc["accelerations"] and doc["hamilton"]
     (step,) = [s for s in doc["steps"] if s["title"] == "Equilibria"]
     assert "left out" in step["explanation"] and "rest of the derivation is complete" in step["explanation"]
+
+
+@pytest.mark.parametrize(
+    "expr",
+    [
+        # a chain's force: centripetal terms (squares of velocities), gravity, no term linear in a velocity
+        sp.Symbol("m") * sp.Symbol("l") * sp.sin(sp.Symbol("a") - sp.Symbol("b")) * sp.Symbol("b_dot") ** 2
+        - sp.Symbol("g") * sp.sin(sp.Symbol("a")),
+        # damping, a gyroscopic pair, a product of two velocities, a velocity inside a function and a square of a sum
+        -sp.Symbol("c") * sp.Symbol("a_dot") + sp.Symbol("B") * sp.Symbol("b_dot")
+        + sp.Symbol("a_dot") * sp.Symbol("b_dot") + sp.sin(sp.Symbol("a_dot")) * sp.Symbol("k")
+        + (sp.Symbol("a_dot") + sp.Symbol("k")) ** 2,
+        sp.Integer(0),
+    ],
+)
+def test_a_derivative_at_rest_is_the_derivative_set_to_rest(expr):
+    """``modes._at_rest``: ∂e/∂v at q̇ = 0, taken term by term with the other velocities set to 0 first, equals the
+    derivative of the whole expression set to rest afterwards."""
+    zero = {sp.Symbol("a_dot"): sp.Integer(0), sp.Symbol("b_dot"): sp.Integer(0)}
+    for v in zero:
+        assert sp.simplify(_at_rest(expr, v, zero) - sp.diff(expr, v).xreplace(zero)) == 0, v
